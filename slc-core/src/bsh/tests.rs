@@ -1,0 +1,278 @@
+//! Tests of [`super`]: its properties against brute force and closed forms.
+
+use super::*;
+
+fn pt(x: f32, y: f32, z: f32) -> LightBound {
+    LightBound { center: Vec3::new(x, y, z), extent: 0.0 }
+}
+
+#[test]
+fn links_form_preorder() {
+    let b: Vec<_> = (0..7).map(|i| pt(i as f32, 0.0, 0.0)).collect();
+    let t = Bsh::build(&b).unwrap();
+    let n = t.nodes();
+    assert_eq!(n.len(), 13);
+    assert_eq!(n[0].next, BSH_NONE);
+    for (i, node) in n.iter().enumerate() {
+        if node.child != BSH_NONE {
+            assert_eq!(node.child, i as u32 + 1);
+            assert_eq!(bsh_range_bound(*node), 0.0, "no range before the first refit");
+        } else {
+            assert!(node.light < 7);
+        }
+    }
+    // Every light appears in exactly one leaf.
+    let mut seen = [0; 7];
+    for node in n.iter().filter(|n| n.child == BSH_NONE) {
+        seen[node.light as usize] += 1;
+    }
+    assert_eq!(seen, [1; 7]);
+}
+
+/// The split refit (subtrees above the grain refitted through `join`,
+/// here the second before the first, which their independence allows)
+/// leaves the same nodes as the serial one, bit for bit, over 300
+/// lights with heavy-tailed ranges, an unbalanced count and extents, at
+/// every grain; every light's leaf is its own.
+#[test]
+fn split_refit_equals_serial_refit() {
+    use rand_core::{RngCore, SeedableRng};
+    let mut rng = rand_pcg::Pcg32::seed_from_u64(5);
+    let mut u = move || rng.next_u32() as f32 / 4294967296.0;
+    let b: Vec<_> = (0..300)
+        .map(|_| LightBound { center: Vec3::new(u(), u(), u()) * 10.0, extent: u() * 0.1 })
+        .collect();
+    let r2: Vec<f32> = (0..300).map(|_| 0.01 / (1.0 - u()).max(1e-6)).collect();
+    let mut serial = Bsh::build(&b).unwrap();
+    serial.refit(&r2).unwrap();
+    let reversed: &Join = &|a, b| {
+        b();
+        a();
+    };
+    for grain in [0, 1, 2, 7, 64, 1000] {
+        let mut split = Bsh::build(&b).unwrap();
+        split.refit_split(&r2, grain, reversed).unwrap();
+        assert!(serial.nodes() == split.nodes(), "grain {grain}");
+    }
+    for l in 0..300 {
+        assert!(serial.leaf(l).child == BSH_NONE && serial.leaf(l).light == l as u32);
+    }
+    assert!(serial.refit_split(&[1.0], 8, reversed).is_err());
+}
+
+#[test]
+fn empty_and_single() {
+    let t = Bsh::build(&[]).unwrap();
+    let mut hits = 0;
+    t.for_each_containing(Vec3::ZERO, |_| hits += 1);
+    assert_eq!(hits, 0);
+    let mut t = Bsh::build(&[pt(1.0, 2.0, 3.0)]).unwrap();
+    t.refit(&[4.0]).unwrap();
+    let mut got = Vec::new();
+    t.for_each_containing(Vec3::new(1.0, 2.0, 4.5), |i| got.push(i));
+    assert_eq!(got, [0]);
+    got.clear();
+    t.for_each_containing(Vec3::new(1.0, 2.0, 5.5), |i| got.push(i));
+    assert!(got.is_empty());
+}
+
+#[test]
+fn rejects_bad_input() {
+    assert_eq!(Bsh::build(&[pt(f32::NAN, 0.0, 0.0)]), Err(BshError::NonFiniteCenter(0)));
+    assert_eq!(
+        Bsh::build(&[pt(0.0, 0.0, 0.0), pt(f32::INFINITY, 0.0, 0.0)]),
+        Err(BshError::NonFiniteCenter(1))
+    );
+    // Queries with NaN or a negative radius match nothing (regression:
+    // fuzz/bsh_vs_brute found a negative query radius answered
+    // inconsistently by leaves and their parents).
+    let mut t2 = Bsh::build(&[pt(0.0, 0.0, 0.0), pt(1.0, 0.0, 0.0)]).unwrap();
+    t2.refit(&[1.0, 1.0]).unwrap();
+    let mut hits = 0;
+    t2.for_each_overlapping_sphere(Sphere::new(Vec3::ZERO, -5.0), |_| hits += 1);
+    t2.for_each_overlapping_sphere(Sphere::new(Vec3::ZERO, f32::NAN), |_| hits += 1);
+    t2.for_each_containing(Vec3::NAN, |_| hits += 1);
+    t2.for_each_overlapping_aabb(Aabb { min: Vec3::NAN, max: Vec3::ONE }, |_| hits += 1);
+    assert_eq!(hits, 0);
+    let neg = LightBound { center: Vec3::ZERO, extent: -1.0 };
+    assert!(matches!(Bsh::build(&[neg]), Err(BshError::BadExtent(0, _))));
+    let mut t = Bsh::build(&[pt(0.0, 0.0, 0.0)]).unwrap();
+    assert!(t.refit(&[]).is_err());
+    assert!(t.refit(&[f32::NAN]).is_err());
+    assert!(t.refit(&[-1.0]).is_err());
+    assert!(t.refit(&[f32::INFINITY]).is_ok());
+}
+
+/// Queries equal brute force at every scale from 10³⁸ down to
+/// subnormal spacings (regression: fuzz/bsh_vs_brute found lights
+/// 10⁻²³ apart where squares underflow and a parent missed a point its
+/// child held; before the absolute padding floor, ~1% of these failed).
+/// The lights a query visits, sorted.
+fn sorted(query: impl FnOnce(&mut dyn FnMut(u32))) -> Vec<u32> {
+    let mut got = Vec::new();
+    query(&mut |i| got.push(i));
+    got.sort_unstable();
+    got
+}
+
+#[test]
+fn queries_match_brute_force_at_every_scale() {
+    use rand_core::{RngCore, SeedableRng};
+    let mut rng = rand_pcg::Pcg32::seed_from_u64(19);
+    let mut u = move || rng.next_u32() as f32 / 4294967296.0;
+    let mut mismatches = 0;
+    for _ in 0..20_000 {
+        let scale = 10f32.powf(38.0 - 83.0 * u());
+        let n = 2 + (u() * 6.0) as usize;
+        let b: Vec<LightBound> = (0..n)
+            .map(|_| LightBound {
+                center: (Vec3::new(u(), u(), u()) - 0.5) * scale,
+                extent: if u() < 0.5 { 0.0 } else { u() * scale },
+            })
+            .collect();
+        let r2: Vec<f32> = (0..n).map(|_| (u() * scale).powi(2)).collect();
+        let mut t = Bsh::build(&b).unwrap();
+        t.refit(&r2).unwrap();
+        let spheres: Vec<Sphere> = b.iter().zip(&r2).map(|(b, &r)| b.range_sphere(r)).collect();
+        let brute = |test: &dyn Fn(&Sphere) -> bool| -> Vec<u32> {
+            (0..n as u32).filter(|&i| test(&spheres[i as usize])).collect()
+        };
+        let x = (Vec3::new(u(), u(), u()) - 0.5) * scale;
+        let q = Sphere::new(x, u() * scale);
+        let bx = Aabb { min: x, max: x + Vec3::new(u(), u(), u()) * scale * 0.1 };
+        mismatches += (sorted(|f| t.for_each_containing(x, f)) != brute(&|s| s.contains(x))) as u32;
+        mismatches += (sorted(|f| t.for_each_overlapping_sphere(q, f))
+            != brute(&|s| s.overlaps_sphere(&q))) as u32;
+        mismatches += (sorted(|f| t.for_each_overlapping_aabb(bx, f))
+            != brute(&|s| s.overlaps_aabb(&bx))) as u32;
+    }
+    assert_eq!(mismatches, 0);
+}
+/// An inner node's scale ([`walk::bsh_inner_scale`]) is never below
+/// [`crate::importance::range_scale_toward`] of the same sphere (which
+/// the leaves below take), and exceeds it by little (at most 10%, where
+/// a mirror-like lobe's scale is steepest): receivers from
+/// mirror-like (roughness 0.05) to rough, spheres from points to ones
+/// holding the receiver, mirror directions grazing the sphere's cone.
+#[test]
+fn inner_scale_bounds_the_exact_scale_tightly() {
+    use crate::brdf::{mirror_dir, range_lobe, receiver_lobe};
+    use crate::importance::range_scale_toward;
+    use rand_core::{RngCore, SeedableRng};
+    let mut rng = rand_pcg::Pcg32::seed_from_u64(29);
+    let mut u = move || rng.next_u32() as f32 / 4294967296.0;
+    let (mut below, mut worst, mut tested) = (0, 1.0f32, 0);
+    for k in 0..200_000 {
+        let nrm = (Vec3::new(u(), u(), u()) - 0.5).normalize();
+        let view = (Vec3::new(u(), u(), u()) - 0.5 + nrm).normalize();
+        let alpha = (0.05 + 0.95 * u() * u()).powi(2);
+        let lobe = receiver_lobe(
+            Vec3::splat(0.8),
+            if u() < 0.5 { 1.0 } else { 0.0 },
+            Vec3::splat(0.04),
+            1.0,
+            alpha,
+            nrm.dot(view),
+        );
+        let (r, rl) = (mirror_dir(nrm, view), range_lobe(lobe));
+        if rl.w <= 1.0 {
+            continue;
+        }
+        let x = Vec3::new(u(), u(), u()) - 0.5;
+        // Every fourth centre lies near the mirror direction's cone edge.
+        let dist = 0.01 + 2.0 * u();
+        let radius = dist * [0.0, 0.01, 0.3, 1.2][k % 4] * u();
+        let c = if k % 4 == 0 {
+            x + (r + (Vec3::new(u(), u(), u()) - 0.5) * 0.02).normalize() * dist
+        } else {
+            x + (Vec3::new(u(), u(), u()) - 0.5).normalize() * dist
+        };
+        let v = c - x;
+        let exact = range_scale_toward(rl, c, radius, x, r);
+        let inner = walk::bsh_inner_scale(radius, v, v.dot(v), r, rl);
+        below += (inner < exact) as u32;
+        worst = worst.max(inner / exact);
+        tested += 1;
+    }
+    assert!(tested > 50_000, "{tested}");
+    assert_eq!(below, 0);
+    // 2e-6 in the cosine near a mirror-like lobe's peak, where the
+    // scale changes fastest (`∂ ln s/∂ cos θ` up to about `1/t`).
+    assert!(worst < 1.1, "inner scale up to {worst}× the exact one");
+}
+
+/// A glossy receiver's walk ([`Bsh::for_each_reaching`]) finds exactly
+/// the lights whose own sphere, scaled by the receiver's scale toward
+/// that light ([`crate::importance::range_scale_toward`]), holds the
+/// point: every light tested by brute force, for random receivers
+/// (roughness 0.05 to 1, metallic and dielectric, any view) among
+/// clustered lights whose heavy-tailed ranges inflate the inner spheres.
+/// Some lights get less than the receiver's peak scale, some the peak.
+#[test]
+fn glossy_walk_matches_brute_force() {
+    use crate::brdf::{range_lobe, range_scale, receiver_lobe};
+    use crate::importance::range_scale_toward;
+    use rand_core::{RngCore, SeedableRng};
+    let mut rng = rand_pcg::Pcg32::seed_from_u64(23);
+    let mut u = move || rng.next_u32() as f32 / 4294967296.0;
+    let (mut mismatches, mut found, mut below_peak, mut at_peak) = (0, 0, 0, 0);
+    for _ in 0..2_000 {
+        let n = 2 + (u() * 60.0) as usize;
+        let b: Vec<LightBound> = (0..n)
+            .map(|_| LightBound {
+                center: Vec3::new(u(), u(), u()) - 0.5,
+                extent: if u() < 0.5 { 0.0 } else { 0.02 * u() },
+            })
+            .collect();
+        let r2: Vec<f32> = (0..n).map(|_| (0.05 / (1.0 - u()).sqrt()).powi(2)).collect();
+        let mut t = Bsh::build(&b).unwrap();
+        t.refit(&r2).unwrap();
+        let x = Vec3::new(u(), u(), u()) - 0.5;
+        let nrm = (Vec3::new(u(), u(), u()) - 0.5).normalize();
+        let v = (Vec3::new(u(), u(), u()) - 0.5 + nrm).normalize();
+        let alpha = (0.05 + 0.95 * u()).powi(2);
+        let lobe = receiver_lobe(
+            Vec3::splat(0.8),
+            if u() < 0.5 { 1.0 } else { 0.0 },
+            Vec3::splat(0.04),
+            1.0,
+            alpha,
+            nrm.dot(v),
+        );
+        let r = crate::brdf::mirror_dir(nrm, v);
+        let rl = range_lobe(lobe);
+        let peak = range_scale(lobe);
+        let leaves: Vec<BshNode> = (0..n)
+            .map(|i| {
+                *t.nodes().iter().find(|l| l.child == BSH_NONE && l.light == i as u32).unwrap()
+            })
+            .collect();
+        let mut brute = Vec::new();
+        for i in 0..n {
+            let s = range_scale_toward(rl, b[i].center, b[i].extent, x, r);
+            if s < 0.9 * peak {
+                below_peak += 1;
+            } else if peak > 1.0 {
+                at_peak += 1;
+            }
+            // The leaf's test is the scaled sphere's, up to rounding.
+            let (d, radius) = ((x - b[i].center).length(), b[i].extent + s.sqrt() * r2[i].sqrt());
+            let reaches = walk::bsh_reaches(leaves[i], x, r, rl);
+            if (d - radius).abs() > 1e-5 * radius {
+                mismatches += (reaches != (d <= radius)) as u32;
+            }
+            if reaches {
+                brute.push(i as u32);
+            }
+        }
+        // The walk misses no leaf that reaches the point.
+        let got = sorted(|f| t.for_each_reaching(x, r, rl, f));
+        mismatches += (got != brute) as u32;
+        found += got.len();
+    }
+    assert_eq!(mismatches, 0);
+    assert!(
+        found > 500 && below_peak > 1_000 && at_peak > 100,
+        "{found} found, {below_peak} below the peak, {at_peak} at it"
+    );
+}
