@@ -247,6 +247,7 @@ fn render(a: RenderArgs) -> anyhow::Result<()> {
         st.total_ms, st.shading_ms, st.gbuffer_ms, st.rsm_ms, st.direct_ms, st.denoise_ms
     );
     println!("  lights/px   {:.1} tested, {:.1} kept", st.lights_per_pixel, st.kept_per_pixel);
+    print_work(&st);
     if let Some((rmse, none_ms)) = versus_none {
         println!(
             "  RMSE        {rmse:.5} against the unculled interleaved image ({none_ms:.1} ms shading, {})",
@@ -260,6 +261,15 @@ fn render(a: RenderArgs) -> anyhow::Result<()> {
         t0.elapsed().as_secs_f64()
     );
     Ok(())
+}
+
+/// The far and near fields' work per pixel, where the frame counted it.
+fn print_work(st: &slc_scene::vpl::VplStats) {
+    for (name, w) in [("far field", &st.far_work), ("near field", &st.near_work)] {
+        if w.pixels > 0 {
+            println!("  {name:<11} {}", report::Work::of(w).line());
+        }
+    }
 }
 
 /// `slc render --backend gpu`: the whole VPL frame on the GPU, every stage timed.

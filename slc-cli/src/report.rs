@@ -3,6 +3,7 @@
 
 use anyhow::Context;
 use serde::{Deserialize, Serialize};
+use slc_scene::vpl::WorkCounts;
 use std::path::Path;
 
 /// One configuration's measurements.
@@ -272,4 +273,51 @@ pub struct SuiteRow {
     pub time_per_sample_vs_uniform: f64,
     /// Net RMSE over uniform sampling's on the same scene.
     pub rmse_vs_uniform: f64,
+}
+
+/// One field's work per shaded pixel (`slc_scene::vpl::WorkCounts` divided
+/// by the shaded pixels), as reports write it.
+#[derive(Serialize, Deserialize, Clone, Copy, Debug, PartialEq, Default)]
+pub struct Work {
+    /// Group boxes tested, per pixel (a tile's tests over its pixels).
+    pub group_tests: f64,
+    /// Cluster boxes tested, per pixel.
+    pub cluster_tests: f64,
+    /// Light spheres tested, per pixel.
+    pub sphere_tests: f64,
+    /// Lights the shading loop tested, per pixel.
+    pub tested: f64,
+    /// Lights it kept, per pixel.
+    pub kept: f64,
+}
+
+impl Work {
+    /// `w` per shaded pixel.
+    pub fn of(w: &WorkCounts) -> Work {
+        Work {
+            group_tests: w.per_pixel(w.group_tests),
+            cluster_tests: w.per_pixel(w.cluster_tests),
+            sphere_tests: w.per_pixel(w.sphere_tests),
+            tested: w.per_pixel(w.tested),
+            kept: w.per_pixel(w.kept),
+        }
+    }
+
+    /// Culling tests of every kind per pixel.
+    pub fn culling_tests(&self) -> f64 {
+        self.group_tests + self.cluster_tests + self.sphere_tests
+    }
+
+    /// One line: tests per pixel by kind, lights tested and kept.
+    pub fn line(&self) -> String {
+        format!(
+            "{:.1} culling tests/px ({:.2} groups, {:.1} clusters, {:.1} spheres), {:.1} lights tested, {:.1} kept",
+            self.culling_tests(),
+            self.group_tests,
+            self.cluster_tests,
+            self.sphere_tests,
+            self.tested,
+            self.kept
+        )
+    }
 }

@@ -75,6 +75,14 @@ crate::shared! {
         return interleave_subset(tx, ty, period) * side * side + (ty / period) * side + tx / period;
     }
 
+    /// The side of one interleaved subset's image of an `s × s` map
+    /// (`s` a multiple of `P`) in the light buffer: `s/P` padded to a
+    /// multiple of 8, so its map order ([`crate::cluster::map_index`]) has
+    /// whole 8×8 clusters; the padding holds no VPL.
+    pub fn subset_side(size: u32, period: u32) -> u32 {
+        return (size / period + 7) / 8 * 8;
+    }
+
     /// Index of VPL `i` of a list (no RSM position) in the same buffer, for
     /// `P² · per_subset` VPLs: subset `i mod P²`, entry `i / P²` in it.
     pub fn interleave_slot_linear(i: u32, per_subset: u32, period: u32) -> u32 {

@@ -22,6 +22,9 @@
 //! | [`mis`] | balance and power heuristics, cosine pdf and cosine-weighted directions (light pdfs include `p_rr`) |
 //! | [`ray`] | ray–box and ray–triangle tests for the GPU's geometry BVH |
 //! | [`path`] | the camera ray and Russian roulette on path length of both path tracers |
+//! | [`interleave`] | the VPL frame's interleaved sampling (subsets, slots, the per-frame shift) and the near-field split |
+//! | [`cluster`] | clusters of 64 lights and groups of clusters: the two-level box hierarchy both backends cull VPLs with |
+//! | [`frame`] | the VPL frame's direct light and composition |
 //! | [`denoise`] | the cross-bilateral filter weight of the VPL denoise |
 //! | [`temporal`] | temporal accumulation: reprojection, history matching, change response from luminance moments, the moving average's weight |
 //! | [`wgsl`] | the shared-code macro, WGSL built-ins in Rust, the assembled WGSL library |
@@ -53,6 +56,7 @@ pub mod wgsl;
 
 pub mod brdf;
 pub mod bsh;
+pub mod cluster;
 pub mod denoise;
 pub mod estimator;
 pub mod frame;

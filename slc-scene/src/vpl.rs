@@ -116,6 +116,65 @@ pub fn check_frame(
     Ok(min_distance)
 }
 
+/// The culling and shading work of one field of a VPL frame (the
+/// interleaved far field, or the near field), counted the same way on both
+/// backends: per tile with a shaded pixel, the tests its traversal of the
+/// lights' box hierarchy made (`slc_core::cluster`: every group box, the
+/// cluster boxes of the groups it met, the spheres of the lit lights of the
+/// clusters it met), and per shaded pixel the lights its loop tested (the
+/// tile's list) and kept. The per-pixel figures divide by the shaded
+/// pixels; a tile's tests count for each of its pixels as tests/pixels.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub struct WorkCounts {
+    /// Tiles with a shaded pixel (those that traverse).
+    pub tiles: u64,
+    /// Group boxes tested.
+    pub group_tests: u64,
+    /// Cluster boxes tested.
+    pub cluster_tests: u64,
+    /// Light spheres tested.
+    pub sphere_tests: u64,
+    /// Lights the shading loops tested, summed over the shaded pixels.
+    pub tested: u64,
+    /// Lights the shading loops kept, summed over the shaded pixels.
+    pub kept: u64,
+    /// Pixels shaded.
+    pub pixels: u64,
+}
+
+impl WorkCounts {
+    /// Culling tests of every kind (groups, clusters, spheres).
+    pub fn culling_tests(&self) -> u64 {
+        self.group_tests + self.cluster_tests + self.sphere_tests
+    }
+
+    /// `count` per shaded pixel (0 without one).
+    pub fn per_pixel(&self, count: u64) -> f64 {
+        count as f64 / self.pixels.max(1) as f64
+    }
+}
+
+impl std::ops::Add for WorkCounts {
+    type Output = WorkCounts;
+    fn add(self, o: WorkCounts) -> WorkCounts {
+        WorkCounts {
+            tiles: self.tiles + o.tiles,
+            group_tests: self.group_tests + o.group_tests,
+            cluster_tests: self.cluster_tests + o.cluster_tests,
+            sphere_tests: self.sphere_tests + o.sphere_tests,
+            tested: self.tested + o.tested,
+            kept: self.kept + o.kept,
+            pixels: self.pixels + o.pixels,
+        }
+    }
+}
+
+impl std::iter::Sum for WorkCounts {
+    fn sum<I: Iterator<Item = WorkCounts>>(iter: I) -> WorkCounts {
+        iter.fold(WorkCounts::default(), |a, b| a + b)
+    }
+}
+
 /// Timings (milliseconds) and work counts of one frame.
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
 pub struct VplStats {
@@ -139,6 +198,10 @@ pub struct VplStats {
     pub kept_per_pixel: f64,
     /// Light evaluations in the shading loop.
     pub evaluations: u64,
+    /// The far field's work (the interleaved shading).
+    pub far_work: WorkCounts,
+    /// The near field's work.
+    pub near_work: WorkCounts,
 }
 
 impl VplStats {
@@ -184,6 +247,11 @@ pub struct Shaded {
     pub kept: Vec<u32>,
     /// Light evaluations of the shading loop.
     pub evaluations: u64,
+    /// The far field's work (empty for the reference and where a backend
+    /// does not count).
+    pub far_work: WorkCounts,
+    /// The near field's work (likewise).
+    pub near_work: WorkCounts,
     /// Shading time (ms).
     pub shading_ms: f64,
     /// `Some(ms)` when the backend has already denoised `irradiance` (the

@@ -1167,6 +1167,7 @@ impl GpuVplFrame {
                 .sum::<f64>()
                 / shaded,
             evaluations: 0,
+            ..VplStats::default()
         };
         Ok(FrameRender { image, stages: times, timing, stats })
     }

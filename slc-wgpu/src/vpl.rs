@@ -391,6 +391,8 @@ impl GpuVpl {
             specular_near: Vec::new(),
             kept,
             evaluations,
+            far_work: Default::default(),
+            near_work: Default::default(),
             shading_ms,
             denoised_ms: denoise_ms,
         })

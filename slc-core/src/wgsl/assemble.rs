@@ -56,10 +56,11 @@ const NUMERIC_PRELUDE: &str = numeric_helpers!();
 const IES_TABLE: &str = concat!(composable_table_binding!(), table_reader!());
 
 /// Every module's name and shared items, in dependency order, as raw text.
-const MODULES: [(&str, &str); 17] = [
+const MODULES: [(&str, &str); 18] = [
     ("xi", crate::xi::WGSL),
     ("range", crate::range::WGSL),
     ("sphere", crate::sphere::WGSL),
+    ("cluster", crate::cluster::WGSL),
     ("light", crate::light::WGSL),
     ("ies", crate::ies::lookup::WGSL),
     ("bsh", crate::bsh::WGSL),

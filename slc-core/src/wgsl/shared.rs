@@ -38,7 +38,7 @@ macro_rules! shared {
         $($rest:tt)*) => {
         $(#[$m])*
         #[inline $(($mode))?]
-        #[allow(clippy::needless_return, unused_mut, clippy::collapsible_else_if, clippy::assign_op_pattern, clippy::manual_range_contains)]
+        #[allow(clippy::needless_return, unused_mut, clippy::collapsible_else_if, clippy::assign_op_pattern, clippy::manual_range_contains, clippy::manual_div_ceil)]
         pub fn $name($($arg: $aty),*) -> $ret $body
         $crate::shared!(@acc [$($w,)* stringify!(fn $name($($arg: $aty),*) -> $ret $body)] $($rest)*);
     };

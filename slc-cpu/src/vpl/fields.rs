@@ -2,18 +2,19 @@
 //! pixel) and the interleaved far field with the near field of the split,
 //! each culled per tile.
 
+use super::VplContext;
 use super::shade::{self, Cull, Glossy, LightList};
 use super::tiling::{NO_RECEIVER, PartTiles, Tiling};
-use super::{SUPER, VplContext};
 use glam::Vec3;
 use rayon::prelude::*;
+use slc_core::cluster::{CLUSTER, ClusterGrid, cluster_x, cluster_y};
 use slc_core::interleave::{
-    interleave_flux_scale, interleave_shift, shifted_subset, vpl_near_range2,
+    interleave_flux_scale, interleave_shift, shifted_subset, subset_side, vpl_near_range2,
 };
 use slc_core::light::vpl_threshold_range2;
 use slc_core::range::{CullKind, random_range2};
 use slc_core::xi::frame_xi;
-use slc_scene::vpl::{Culling, PERIOD, VplSettings};
+use slc_scene::vpl::{Culling, PERIOD, VplSettings, WorkCounts};
 
 /// What the shading of a frame's pixels returns (fields of [`Shaded`]):
 /// irradiance (the near field included) and the near field alone, the
@@ -27,6 +28,8 @@ pub(super) struct Fields {
     pub(super) specular_near: Vec<Vec3>,
     pub(super) kept: Vec<u32>,
     pub(super) evaluations: u64,
+    pub(super) far_work: WorkCounts,
+    pub(super) near_work: WorkCounts,
 }
 
 impl VplContext {
@@ -66,6 +69,7 @@ impl VplContext {
             specular_near: Vec::new(),
             kept: out.iter().map(|o| o.1).collect(),
             evaluations: shaded * v.len() as u64,
+            ..Fields::default()
         }
     }
 
@@ -101,7 +105,7 @@ impl VplContext {
         let tiling = if s.tile as usize == self.from_gbuffer.far_tile {
             &self.from_gbuffer.far
         } else {
-            owned = Tiling::interleaved(gb, p, s.tile as usize, SUPER);
+            owned = Tiling::interleaved(gb, p, s.tile as usize);
             &owned
         };
         let min_d2 = self.inputs.min_d2;
@@ -167,10 +171,20 @@ impl VplContext {
         let specular =
             pixels(!far.spec.is_empty(), &|i| far.specular_at(tiling, i) + near.specular_at(nt, i));
         let specular_near = pixels(!near.spec.is_empty(), &|i| near.specular_at(nt, i));
-        let evaluations = near.evals + far.evals;
+        let (far_work, near_work) = (far.work, near.work);
+        let evaluations = far_work.tested + near_work.tested;
         (reused.far, reused.near, reused.near_lights) = (far, near, near_lights);
         self.keep_reused(reused);
-        Fields { irradiance, near: near_field, specular, specular_near, kept, evaluations }
+        Fields {
+            irradiance,
+            near: near_field,
+            specular,
+            specular_near,
+            kept,
+            evaluations,
+            far_work,
+            near_work,
+        }
     }
 
     /// Each VPL's interleaved ranges `(r_t², r²)` under the frame's
@@ -183,11 +197,12 @@ impl VplContext {
     }
 
     /// The far field's lights of VPL subset `sub` (`sy·P + sx`) into `all`
-    /// (emptied first): its VPLs at the interleaved flux (each pixel sees
-    /// 1/P² of the VPLs, so each counts P²×) with
-    /// their interleaved `ranges`, in 4×4 blocks of subset texels, so each
-    /// chunk of 16 consecutive lights is a small patch of the RSM
-    /// (spatially coherent), and their chunk boxes.
+    /// (emptied first): its lit VPLs at the interleaved flux (each pixel
+    /// sees 1/P² of the VPLs, so each counts P²×) with their interleaved
+    /// `ranges`, as a box hierarchy over the subset's image in map order
+    /// ([`slc_core::cluster`]: clusters of 8×8 subset texels, groups of
+    /// 8×8 clusters; the image padded to a multiple of 8 texels, its
+    /// padding and unlit texels left out), the GPU's order.
     pub(super) fn subset_lights_into(
         &self,
         all: &mut LightList,
@@ -197,29 +212,28 @@ impl VplContext {
         let v = &self.inputs.vpls;
         let (p, size) = (PERIOD as usize, v.size as usize);
         let (sx, sy, m) = (sub % p, sub / p, size / p);
+        let side = subset_side(v.size, PERIOD);
         let scale = interleave_flux_scale(PERIOD);
-        all.clear();
-        for by in (0..m).step_by(4) {
-            for bx in (0..m).step_by(4) {
-                for (u, w) in
-                    (0..16).map(|k| (bx + k % 4, by + k / 4)).filter(|&(u, w)| u < m && w < m)
-                {
-                    let i = (sy + w * p) * size + sx + u * p;
-                    let (rt2, r2) = ranges[i];
-                    all.push(v.position[i], v.normal[i], v.flux[i] * scale, rt2, r2);
-                }
+        map_order_tree(all, side, |all, u, w| {
+            if u >= m || w >= m {
+                return;
             }
-        }
-        all.build_chunks();
+            let i = (sy + w * p) * size + sx + u * p;
+            if v.flux[i] != Vec3::ZERO {
+                let (rt2, r2) = ranges[i];
+                all.push(v.position[i], v.normal[i], v.flux[i] * scale, rt2, r2);
+            }
+        });
     }
 
-    /// The near field's lights into `all` (emptied first): the VPLs of
-    /// every subset at their own flux, in near-block order (so chunks are
-    /// small RSM patches), with the ranges `cull` gives them (from the
-    /// interleaved `ranges`: SLC with each VPL's own ranges and the far
-    /// field's ξ, [`slc_core::interleave::vpl_near_range2`]; clamp at its
-    /// range; none not at all) and their chunk boxes. Empty when
-    /// `near_r2 = 0`.
+    /// The near field's lights into `all` (emptied first): the lit VPLs of
+    /// every subset at their own flux, as a box hierarchy over the RSM in
+    /// map order ([`slc_core::cluster`]: clusters of 8×8 texels, groups of
+    /// 8×8 clusters), the GPU's order, with the ranges `cull` gives them
+    /// (from the interleaved `ranges`: SLC with each VPL's own ranges and
+    /// the far field's ξ, [`slc_core::interleave::vpl_near_range2`]; clamp
+    /// at its range; none not at all) and culling spheres of radius
+    /// `min(r, R_n)`. Empty when `near_r2 = 0`.
     pub(super) fn near_lights_into(
         &self,
         all: &mut LightList,
@@ -232,7 +246,9 @@ impl VplContext {
             return;
         }
         let v = &self.inputs.vpls;
-        for i in v.near_order() {
+        let size = v.size as usize;
+        map_order_tree(all, v.size, |all, tx, ty| {
+            let i = ty * size + tx;
             if v.flux[i] != Vec3::ZERO {
                 // The interleaved light's ranges, then the VPL's own.
                 let (rt2, r2) = ranges[i];
@@ -243,8 +259,7 @@ impl VplContext {
                 };
                 all.push_near(v.position[i], v.normal[i], v.flux[i], rt2, r2, near_r2);
             }
-        }
-        all.build_chunks();
+        });
     }
 
     /// The near field of the split ([`slc_core::interleave::vpl_near_weight`]):
@@ -282,10 +297,10 @@ impl VplContext {
 /// Shades the receivers of one part of a tiling with the lights of `all`
 /// under `cull` into `out` (`(irradiance, kept)`) and, at its glossy
 /// receivers, the specular correction into `spec` (both the part's range
-/// of a per-receiver buffer); returns the loop evaluations. With
-/// `cull_lists`, each group culls `all` to its box
-/// ([`LightList::cull_chunked_into`]) and each tile that list to its own
-/// ([`LightList::cull_into`]); without, every tile takes every light.
+/// of a per-receiver buffer); returns the work. With `cull_lists`, each
+/// tile culls `all` to its box through the list's box hierarchy
+/// ([`LightList::cull_tree_into`], counted); without, every tile takes
+/// every light.
 #[allow(clippy::too_many_arguments)]
 fn shade_part(
     part: &PartTiles,
@@ -297,31 +312,53 @@ fn shade_part(
     out: &mut [(Vec3, u32)],
     spec: &mut [Vec3],
     lists: &mut CullLists,
-) -> u64 {
-    let CullLists { coarse, fine, hits, shaded } = lists;
-    let mut evals = 0u64;
-    for group in &part.groups {
-        if cull_lists {
-            all.cull_chunked_into(group.lo, group.hi, hits, coarse);
+) -> WorkCounts {
+    let CullLists { fine, hits, shaded } = lists;
+    let mut work = WorkCounts::default();
+    for tile in &part.tiles {
+        let lights = if cull_lists {
+            work = work + all.cull_tree_into(tile.lo, tile.hi, hits, fine);
+            &*fine
+        } else {
+            all
+        };
+        let r = tile.receivers.clone();
+        shaded.clear();
+        shade::shade_all(lights, &part.points[r.clone()], min_d2, near_r2, cull, shaded);
+        out[r.clone()].copy_from_slice(shaded);
+        for (k, g) in &part.glossy[tile.glossy.clone()] {
+            spec[*k] = shade::shade_specular(lights, g, min_d2, near_r2, cull);
         }
-        for tile in &part.tiles[group.items.clone()] {
-            let lights = if cull_lists {
-                coarse.cull_into(tile.lo, tile.hi, hits, fine);
-                &*fine
-            } else {
-                all
-            };
-            let r = tile.receivers.clone();
-            shaded.clear();
-            shade::shade_all(lights, &part.points[r.clone()], min_d2, near_r2, cull, shaded);
-            out[r.clone()].copy_from_slice(shaded);
-            for (k, g) in &part.glossy[tile.glossy.clone()] {
-                spec[*k] = shade::shade_specular(lights, g, min_d2, near_r2, cull);
-            }
-            evals += (lights.len_unpadded() * r.len()) as u64;
-        }
+        work.tested += (lights.len_unpadded() * r.len()) as u64;
+        work.kept += shaded.iter().map(|s| s.1 as u64).sum::<u64>();
+        work.pixels += r.len() as u64;
     }
-    evals
+    work
+}
+
+/// Builds `all` (emptied first) as a box hierarchy over a `side × side`
+/// map in map order ([`slc_core::cluster::map_index`]): for every cluster
+/// of [`ClusterGrid::map`] in turn, `push(all, tx, ty)` for its 8×8
+/// texels row-major (pushing the texel's light where it has one), then the
+/// cluster is closed; the boxes last.
+fn map_order_tree(
+    all: &mut LightList,
+    side: u32,
+    mut push: impl FnMut(&mut LightList, usize, usize),
+) {
+    let grid = ClusterGrid::map(side);
+    all.begin_tree(grid);
+    for c in 0..grid.clusters() {
+        let (bx, by) = (
+            cluster_x(c, grid.bw, grid.bh, grid.gw, grid.gh),
+            cluster_y(c, grid.bw, grid.bh, grid.gw, grid.gh),
+        );
+        for k in 0..CLUSTER {
+            push(all, (bx * 8 + k % 8) as usize, (by * 8 + k / 8) as usize);
+        }
+        all.close_cluster();
+    }
+    all.build_tree();
 }
 
 /// One worker's reused memory: a part's own light list (the far field's
@@ -332,10 +369,9 @@ pub(super) struct Scratch {
     lists: CullLists,
 }
 
-/// [`shade_part`]'s culled lists, hit indices and loop results, reused.
+/// [`shade_part`]'s culled list, hit indices and loop results, reused.
 #[derive(Default)]
 struct CullLists {
-    coarse: LightList,
     fine: LightList,
     hits: Vec<u32>,
     shaded: Vec<(Vec3, u32)>,
@@ -348,7 +384,7 @@ struct CullLists {
 pub(super) struct PerReceiver {
     pub(super) out: Vec<(Vec3, u32)>,
     pub(super) spec: Vec<Vec3>,
-    pub(super) evals: u64,
+    pub(super) work: WorkCounts,
 }
 
 impl PerReceiver {
@@ -356,19 +392,19 @@ impl PerReceiver {
     pub(super) fn clear(&mut self) {
         self.out.clear();
         self.spec.clear();
-        self.evals = 0;
+        self.work = WorkCounts::default();
     }
 
     /// Every part `k` of `tiling` shaded by `shade(k, part, out, spec,
     /// scratch)` in parallel (into its range of the per-receiver buffers,
-    /// with a worker's reused lists; returning its loop evaluations), into
+    /// with a worker's reused lists; returning its work), into
     /// this one's memory. Every receiver's `out` is written by its part;
     /// `spec` starts at zero where the tiling has glossy receivers and is
     /// empty where it has none.
     pub(super) fn shade_parts(
         &mut self,
         tiling: &Tiling,
-        shade: impl Fn(usize, &PartTiles, &mut [(Vec3, u32)], &mut [Vec3], &mut Scratch) -> u64
+        shade: impl Fn(usize, &PartTiles, &mut [(Vec3, u32)], &mut [Vec3], &mut Scratch) -> WorkCounts
         + Sync
         + Send,
     ) {
@@ -380,7 +416,7 @@ impl PerReceiver {
         if tiling.has_glossy() {
             self.spec.resize(n, Vec3::ZERO);
         }
-        self.evals = tiling
+        self.work = tiling
             .parts
             .par_iter()
             .zip(tiling.split(&mut self.out))

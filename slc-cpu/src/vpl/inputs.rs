@@ -5,7 +5,7 @@
 use super::denoise::Denoiser;
 use super::direct::direct_light;
 use super::tiling::Tiling;
-use super::{NEAR_REGION, NEAR_TILE, SUPER, ms, rsm};
+use super::{NEAR_REGION, NEAR_TILE, ms, rsm};
 use crate::gbuffer::render_gbuffer_into;
 use crate::geometry::Geometry;
 use glam::Vec3;
@@ -31,7 +31,7 @@ pub(super) struct FromGBuffer {
 impl FromGBuffer {
     pub(super) fn build(&mut self, gb: &GBuffer) {
         self.far_tile = VplSettings::default().tile as usize;
-        self.far.interleaved_into(gb, PERIOD as usize, self.far_tile, SUPER);
+        self.far.interleaved_into(gb, PERIOD as usize, self.far_tile);
         self.near.regions_into(gb, NEAR_REGION, NEAR_TILE);
         self.denoiser.get_mut().unwrap_or_else(PoisonError::into_inner).set_gbuffer(gb);
     }

@@ -87,9 +87,6 @@ impl FrameHistory {
     }
 }
 
-/// Super-tile size in tiles for the first culling level.
-pub const SUPER: usize = 2;
-
 /// Everything that does not depend on the method: geometry, G-buffer, VPLs
 /// and direct light, computed once.
 pub struct VplContext {
@@ -234,6 +231,8 @@ impl VplContext {
             specular_near: f.specular_near,
             kept: f.kept,
             evaluations: f.evaluations,
+            far_work: f.far_work,
+            near_work: f.near_work,
             shading_ms: ms(t),
             denoised_ms: None,
         })
@@ -316,6 +315,7 @@ impl VplContext {
         let shaded_px =
             (0..gb.position.len()).into_par_iter().filter(|&i| gb.valid(i)).count().max(1) as f64;
         stats.evaluations = shaded.evaluations;
+        (stats.far_work, stats.near_work) = (shaded.far_work, shaded.near_work);
         stats.lights_per_pixel = shaded.evaluations as f64 / shaded_px;
         stats.kept_per_pixel =
             shaded.kept.par_iter().map(|&k| k as u64).sum::<u64>() as f64 / shaded_px;

@@ -15,14 +15,17 @@
 
 use glam::Vec3;
 use slc_core::brdf::{ggx_alpha, specular_correction};
+use slc_core::cluster::{CLUSTER, ClusterGrid, box_overlaps_box};
 use slc_core::interleave::{
     vpl_far_fixed_share, vpl_far_slc_share, vpl_far_weight, vpl_near_cull_range2,
     vpl_near_fixed_share, vpl_near_slc_share,
 };
 use slc_core::light::vpl_transfer;
 use slc_core::range::{CullKind, cull_radius};
+use slc_core::ray::F32_MAX;
 use slc_core::sphere::sphere_overlaps_aabb;
 use slc_scene::vpl::GBuffer;
+use slc_scene::vpl::WorkCounts;
 
 pub use crate::simd::SimdPath;
 
@@ -91,15 +94,28 @@ pub struct LightList {
     pub(crate) rt2: Vec<f32>,
     pub(crate) r2: Vec<f32>,
     pub(crate) radius: Vec<f32>,
-    /// Per chunk of [`CHUNK`] consecutive lights: the box holding their
-    /// range spheres (empty until [`LightList::build_chunks`]).
-    chunks: Vec<(Vec3, Vec3)>,
+    /// The box hierarchy over the list, when it was built as one
+    /// ([`LightList::begin_tree`]).
+    tree: Tree,
     /// Real lights when the list was padded by culling (else `len()`).
     real: usize,
 }
 
-/// Lights per chunk in [`LightList::cull_chunked_into`].
-pub const CHUNK: usize = 16;
+/// The two-level box hierarchy over a list ([`slc_core::cluster`]):
+/// clusters of the grid's numbering, the lights of cluster `c` at
+/// `starts[c]..starts[c + 1]` (its lit lights only: a cluster may hold none),
+/// each cluster's and each group's box of its lights' culling spheres
+/// (empty, `[F32_MAX, −F32_MAX]`, where it holds none).
+#[derive(Clone, Debug, Default)]
+struct Tree {
+    grid: Option<ClusterGrid>,
+    starts: Vec<u32>,
+    clusters: Vec<(Vec3, Vec3)>,
+    groups: Vec<(Vec3, Vec3)>,
+}
+
+/// The empty box of a reduction over no point.
+const EMPTY: (Vec3, Vec3) = (Vec3::splat(F32_MAX), Vec3::splat(-F32_MAX));
 
 impl LightList {
     /// Empties the list, keeping its memory.
@@ -120,7 +136,71 @@ impl LightList {
         ] {
             v.clear();
         }
-        self.chunks.clear();
+        self.tree.grid = None;
+        self.tree.starts.clear();
+    }
+
+    /// Starts a list culled as a box hierarchy over `grid` (emptied first):
+    /// push the lit lights of cluster 0, [`LightList::close_cluster`], and
+    /// so on for every cluster of the grid's numbering in turn; then
+    /// [`LightList::build_tree`].
+    pub fn begin_tree(&mut self, grid: ClusterGrid) {
+        self.clear();
+        self.tree.grid = Some(grid);
+        self.tree.starts.push(0);
+    }
+
+    /// Ends the current cluster: the lights pushed since the last call
+    /// (or [`LightList::begin_tree`]) are its lights.
+    pub fn close_cluster(&mut self) {
+        self.tree.starts.push(self.len() as u32);
+    }
+
+    /// Computes the boxes of every cluster (its lights' culling spheres,
+    /// `centre ± radius`) and of every group (its clusters' boxes), for
+    /// [`LightList::cull_tree_into`].
+    ///
+    /// # Panics
+    /// When the list was not begun as a tree, or not every cluster of its
+    /// grid was closed (a bug of the caller, never input).
+    pub fn build_tree(&mut self) {
+        let t = &mut self.tree;
+        let grid = t.grid.expect("a list begun with begin_tree");
+        assert_eq!(t.starts.len() as u32, grid.clusters() + 1, "every cluster closed");
+        t.clusters.clear();
+        for c in 0..grid.clusters() as usize {
+            let mut b = EMPTY;
+            for j in t.starts[c] as usize..t.starts[c + 1] as usize {
+                let (p, r) = (Vec3::new(self.px[j], self.py[j], self.pz[j]), self.radius[j]);
+                b = (b.0.min(p - r), b.1.max(p + r));
+            }
+            t.clusters.push(b);
+        }
+        t.groups.clear();
+        for g in 0..grid.groups() {
+            let b = grid.group_range(g).fold(EMPTY, |b, c| {
+                let (lo, hi) = t.clusters[c as usize];
+                (b.0.min(lo), b.1.max(hi))
+            });
+            t.groups.push(b);
+        }
+    }
+
+    /// Tile culling through the box hierarchy ([`LightList::build_tree`]):
+    /// replaces `out` with the lights whose culling sphere overlaps the box
+    /// `[lo, hi]`, testing every group box, the cluster boxes of the groups
+    /// that meet it and the spheres of the clusters that meet it, as the
+    /// GPU's kernels do; returns those tests. `hits` is scratch memory.
+    pub fn cull_tree_into(
+        &self,
+        lo: Vec3,
+        hi: Vec3,
+        hits: &mut Vec<u32>,
+        out: &mut LightList,
+    ) -> WorkCounts {
+        let (k, counts) = SimdPath::best().run(TreeCullOp { list: self, lo, hi, hits: &mut *hits });
+        self.gather_into(&hits[..k], out);
+        counts
     }
 
     /// Appends one light; its culling sphere has radius
@@ -153,40 +233,13 @@ impl LightList {
         self.r2.push(r2);
     }
 
-    /// Computes the box of every chunk of [`CHUNK`] consecutive lights'
-    /// range spheres (`centre ± r` per light), for [`LightList::cull_chunked_into`].
-    pub fn build_chunks(&mut self) {
-        self.chunks.clear();
-        for c in (0..self.len()).step_by(CHUNK) {
-            let mut lo = Vec3::INFINITY;
-            let mut hi = Vec3::NEG_INFINITY;
-            for j in c..(c + CHUNK).min(self.len()) {
-                let p = Vec3::new(self.px[j], self.py[j], self.pz[j]);
-                lo = lo.min(p - self.radius[j]);
-                hi = hi.max(p + self.radius[j]);
-            }
-            self.chunks.push((lo, hi));
-        }
-    }
-
-    /// [`LightList::cull_into`] that first skips every chunk whose box misses
-    /// `[lo, hi]`; the result is the same set (the chunk box contains its
-    /// lights' spheres). Needs [`LightList::build_chunks`]. `hits` is
-    /// scratch memory for the indices.
-    pub fn cull_chunked_into(&self, lo: Vec3, hi: Vec3, hits: &mut Vec<u32>, out: &mut LightList) {
-        let k =
-            SimdPath::best().run(CullOp { list: self, lo, hi, chunked: true, hits: &mut *hits });
-        self.gather_into(&hits[..k], out);
-    }
-
     /// Tile culling: replaces `out` with the lights whose range sphere
     /// `(p, √r²)` overlaps the box `[lo, hi]`
     /// ([`slc_core::sphere::sphere_overlaps_aabb`]). The test runs on the
     /// CPU's best [`SimdPath`] over all lights, then each array is gathered
     /// in one pass. `hits` is scratch memory for the indices.
     pub fn cull_into(&self, lo: Vec3, hi: Vec3, hits: &mut Vec<u32>, out: &mut LightList) {
-        let k =
-            SimdPath::best().run(CullOp { list: self, lo, hi, chunked: false, hits: &mut *hits });
+        let k = SimdPath::best().run(CullOp { list: self, lo, hi, hits: &mut *hits });
         self.gather_into(&hits[..k], out);
     }
 
@@ -195,7 +248,8 @@ impl LightList {
     /// no flux (`r² = 0`, `Φ = 0`), so the shading loop has no scalar tail.
     /// [`LightList::len_unpadded`] still counts only real lights.
     fn gather_into(&self, hits: &[u32], out: &mut LightList) {
-        out.chunks.clear();
+        out.tree.grid = None;
+        out.tree.starts.clear();
         out.real = hits.len();
         let len = hits.len().next_multiple_of(LANES);
         SimdPath::best().run(GatherOp { from: self, hits, to: out, len });
@@ -222,17 +276,14 @@ impl LightList {
     }
 }
 
-/// The culling test of [`LightList::cull_into`] (every light) or
-/// [`LightList::cull_chunked_into`] (the lights of chunks whose box meets
-/// the tile's) as a pulp operation: a branch-free pass writes each light's
-/// overlap flag (vectorized across lights), a second compacts the indices
-/// into `hits[..k]` and returns `k` (`hits` only grows: its old entries
-/// need no zeroing).
+/// The culling test of [`LightList::cull_into`] as a pulp operation: a
+/// branch-free pass writes each light's overlap flag (vectorized across
+/// lights), a second compacts the indices into `hits[..k]` and returns `k`
+/// (`hits` only grows: its old entries need no zeroing).
 struct CullOp<'a> {
     list: &'a LightList,
     lo: Vec3,
     hi: Vec3,
-    chunked: bool,
     hits: &'a mut Vec<u32>,
 }
 
@@ -241,34 +292,86 @@ impl pulp::WithSimd for CullOp<'_> {
 
     #[inline(always)]
     fn with_simd<S: pulp::Simd>(self, _: S) -> usize {
-        let (l, lo, hi) = (self.list, self.lo, self.hi);
-        let n = l.len();
-        let mut flags = [0u8; CHUNK];
+        let n = self.list.len();
         if self.hits.len() <= n {
             self.hits.resize(n + 1, 0);
         }
+        cull_range(self.list, 0..n, self.lo, self.hi, self.hits, 0)
+    }
+}
+
+/// Lights per pass of [`cull_range`]'s flag loop: a cluster.
+const FLAGS: usize = CLUSTER as usize;
+
+/// The lights of `range` whose culling sphere overlaps `[lo, hi]`, their
+/// indices appended to `hits` from `k` on; returns the new `k`. Plain
+/// loops over runs of [`FLAGS`] (a closure would not be compiled with the
+/// caller's target features).
+#[inline(always)]
+fn cull_range(
+    l: &LightList,
+    range: std::ops::Range<usize>,
+    lo: Vec3,
+    hi: Vec3,
+    hits: &mut [u32],
+    mut k: usize,
+) -> usize {
+    let mut flags = [0u8; FLAGS];
+    for a in range.clone().step_by(FLAGS) {
+        let b = (a + FLAGS).min(range.end);
+        let (px, py, pz, r) = (&l.px[a..b], &l.py[a..b], &l.pz[a..b], &l.radius[a..b]);
+        for ((((f, &x), &y), &z), &r) in flags.iter_mut().zip(px).zip(py).zip(pz).zip(r) {
+            *f = sphere_overlaps_aabb(Vec3::new(x, y, z), r, lo, hi) as u8;
+        }
+        for (j, &f) in (a..b).zip(&flags) {
+            // Branch-free compaction: always write, advance on a hit.
+            hits[k] = j as u32;
+            k += f as usize;
+        }
+    }
+    k
+}
+
+/// [`LightList::cull_tree_into`]'s traversal as a pulp operation: every
+/// group box, then the cluster boxes of the groups that meet the tile,
+/// then [`cull_range`] over the lights of the clusters that meet it.
+struct TreeCullOp<'a> {
+    list: &'a LightList,
+    lo: Vec3,
+    hi: Vec3,
+    hits: &'a mut Vec<u32>,
+}
+
+impl pulp::WithSimd for TreeCullOp<'_> {
+    type Output = (usize, WorkCounts);
+
+    #[inline(always)]
+    fn with_simd<S: pulp::Simd>(self, _: S) -> (usize, WorkCounts) {
+        let (l, lo, hi) = (self.list, self.lo, self.hi);
+        let t = &l.tree;
+        let grid = t.grid.expect("a list built with build_tree");
+        if self.hits.len() <= l.len() {
+            self.hits.resize(l.len() + 1, 0);
+        }
+        let mut counts = WorkCounts { tiles: 1, ..WorkCounts::default() };
         let mut k = 0;
-        // Plain loops over chunk-sized runs: a closure would not be compiled
-        // with the path's target features.
-        for c in 0..n.div_ceil(CHUNK) {
-            if self.chunked {
-                let (clo, chi) = l.chunks[c];
-                if !(clo.cmple(hi).all() && lo.cmple(chi).all()) {
+        for (g, &(glo, ghi)) in t.groups.iter().enumerate() {
+            counts.group_tests += 1;
+            if !box_overlaps_box(glo, ghi, lo, hi) {
+                continue;
+            }
+            for c in grid.group_range(g as u32) {
+                counts.cluster_tests += 1;
+                let (clo, chi) = t.clusters[c as usize];
+                if !box_overlaps_box(clo, chi, lo, hi) {
                     continue;
                 }
-            }
-            let (a, b) = (c * CHUNK, ((c + 1) * CHUNK).min(n));
-            let (px, py, pz, r) = (&l.px[a..b], &l.py[a..b], &l.pz[a..b], &l.radius[a..b]);
-            for ((((f, &x), &y), &z), &r) in flags.iter_mut().zip(px).zip(py).zip(pz).zip(r) {
-                *f = sphere_overlaps_aabb(Vec3::new(x, y, z), r, lo, hi) as u8;
-            }
-            for (j, &f) in (a..b).zip(&flags) {
-                // Branch-free compaction: always write, advance on a hit.
-                self.hits[k] = j as u32;
-                k += f as usize;
+                let range = t.starts[c as usize] as usize..t.starts[c as usize + 1] as usize;
+                counts.sphere_tests += range.len() as u64;
+                k = cull_range(l, range, lo, hi, self.hits, k);
             }
         }
-        k
+        (k, counts)
     }
 }
 

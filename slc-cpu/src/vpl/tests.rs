@@ -268,7 +268,7 @@ fn culled_near_field_expectation_equals_unculled() {
     let near = |s: &VplSettings| {
         let f = near_field(&ctx, &ctx.from_gbuffer.near, near_r2, s);
         let (e, kept) = f.per_pixel(&ctx.from_gbuffer.near);
-        (e, kept, f.evals)
+        (e, kept, f.work.tested)
     };
     let (truth, truth_kept, truth_evals) = near(&VplSettings { culling: Culling::None, ..s });
     let fixed = |x: f32| near(&VplSettings { fixed_xi: Some(x), ..s });

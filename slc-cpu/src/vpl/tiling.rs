@@ -1,9 +1,9 @@
-//! The pixels a frame shades, grouped once per G-buffer for two-level tile
-//! culling: parts (the unit of parallel work) hold groups (a first culling
-//! level: super-tiles of a sub-image, regions of the image), groups hold
-//! tiles (the second level), tiles hold receivers (the pixels that see a
-//! surface, with position, normal and, where the material has one, the
-//! specular lobe). Every level stores the box of its receivers' positions.
+//! The pixels a frame shades, grouped once per G-buffer for tile culling:
+//! parts (the unit of parallel work: a sub-image of the interleaving, a
+//! region of the image) hold tiles (the unit of culling, each with the box
+//! of its receivers' positions), tiles hold receivers (the pixels that see
+//! a surface, with position, normal and, where the material has one, the
+//! specular lobe).
 //!
 //! A frame's shading reads this instead of walking the G-buffer again:
 //! the boxes, receiver lists and lobes depend on the camera alone, so
@@ -23,14 +23,6 @@ use std::sync::atomic::{AtomicU32, Ordering};
 /// Marks a pixel without a receiver in [`Tiling::receiver`].
 pub(crate) const NO_RECEIVER: u32 = u32::MAX;
 
-/// A box and the range of the next level's entries it holds.
-#[derive(Clone, Debug)]
-pub(crate) struct Bin {
-    pub lo: Vec3,
-    pub hi: Vec3,
-    pub items: Range<usize>,
-}
-
 /// A tile: its box, receivers and glossy receivers (ranges of its part).
 #[derive(Clone, Debug)]
 pub(crate) struct Tile {
@@ -40,11 +32,9 @@ pub(crate) struct Tile {
     pub glossy: Range<usize>,
 }
 
-/// One part's groups, tiles and receivers (indices local to the part).
+/// One part's tiles and receivers (indices local to the part).
 #[derive(Clone, Debug, Default)]
 pub(crate) struct PartTiles {
-    /// Tiles of each group.
-    pub groups: Vec<Bin>,
     pub tiles: Vec<Tile>,
     /// Pixel of each receiver.
     pub pixel: Vec<u32>,
@@ -67,48 +57,36 @@ pub(crate) struct Tiling {
 }
 
 impl Tiling {
-    /// The interleaved far field's tiling: one part per VPL subset of the
-    /// `period × period` interleaving (subset `sy·P + sx` holds pixels
-    /// `(sx + P·i, sy + P·j)`), its sub-image cut into groups of
-    /// `(super_tiles · tile)²` sub-image pixels and those into tiles of
-    /// `tile²`.
-    pub fn interleaved(gb: &GBuffer, period: usize, tile: usize, super_tiles: usize) -> Tiling {
+    /// The interleaved far field's tiling: one part per pixel class of the
+    /// `period × period` interleaving (class `sy·P + sx` holds pixels
+    /// `(sx + P·i, sy + P·j)`, its sub-image), its sub-image cut into
+    /// tiles of `tile²` sub-image pixels, row-major from the origin (the
+    /// GPU's workgroups at the same tile size).
+    pub fn interleaved(gb: &GBuffer, period: usize, tile: usize) -> Tiling {
         let mut t = Tiling::default();
-        t.interleaved_into(gb, period, tile, super_tiles);
+        t.interleaved_into(gb, period, tile);
         t
     }
 
     /// [`Tiling::interleaved`] in place, reusing this tiling's memory.
-    pub fn interleaved_into(
-        &mut self,
-        gb: &GBuffer,
-        period: usize,
-        tile: usize,
-        super_tiles: usize,
-    ) {
+    pub fn interleaved_into(&mut self, gb: &GBuffer, period: usize, tile: usize) {
         let (w, h) = (gb.width as usize, gb.height as usize);
-        let big = tile * super_tiles;
         self.fill_parts(gb, period * period, |sub, t| {
             let (sx, sy) = (sub % period, sub / period);
             let (sw, sh) = ((w + period - 1 - sx) / period, (h + period - 1 - sy) / period);
-            for by in (0..sh).step_by(big) {
-                for bx in (0..sw).step_by(big) {
-                    t.begin_group();
-                    for ty in (by..(by + big).min(sh)).step_by(tile) {
-                        for tx in (bx..(bx + big).min(sw)).step_by(tile) {
-                            let rows =
-                                (ty..(ty + tile).min(sh)).map(|j| (sy + j * period) * w + sx);
-                            t.push_tile(gb, rows, tx..(tx + tile).min(sw), period);
-                        }
-                    }
-                    t.end_group();
+            for ty in (0..sh).step_by(tile) {
+                for tx in (0..sw).step_by(tile) {
+                    let rows = (ty..(ty + tile).min(sh)).map(|j| (sy + j * period) * w + sx);
+                    t.push_tile(gb, rows, tx..(tx + tile).min(sw), period);
                 }
             }
         });
     }
 
-    /// The near field's tiling: one part and group per `region²` pixels of
-    /// the image, cut into tiles of `tile²` pixels.
+    /// The near field's tiling: one part per `region²` pixels of the image
+    /// (`region` a multiple of `tile`, so the tiles are the image's, from
+    /// the origin: the GPU's workgroups at the same tile size), cut into
+    /// tiles of `tile²` pixels.
     #[cfg(test)]
     pub fn regions(gb: &GBuffer, region: usize, tile: usize) -> Tiling {
         let mut t = Tiling::default();
@@ -123,7 +101,6 @@ impl Tiling {
         self.fill_parts(gb, across * h.div_ceil(region), |k, t| {
             let (x0, y0) = ((k % across) * region, (k / across) * region);
             let (x1, y1) = ((x0 + region).min(w), (y0 + region).min(h));
-            t.begin_group();
             for ty in (y0..y1).step_by(tile) {
                 for tx in (x0..x1).step_by(tile) {
                     t.push_tile(
@@ -134,7 +111,6 @@ impl Tiling {
                     );
                 }
             }
-            t.end_group();
         });
     }
 
@@ -216,26 +192,10 @@ impl Tiling {
 
 impl PartTiles {
     fn clear(&mut self) {
-        self.groups.clear();
         self.tiles.clear();
         self.pixel.clear();
         self.points.clear();
         self.glossy.clear();
-    }
-
-    fn begin_group(&mut self) {
-        let n = self.tiles.len();
-        self.groups.push(Bin { lo: Vec3::INFINITY, hi: Vec3::NEG_INFINITY, items: n..n });
-    }
-
-    /// Closes the group; drops it when no tile of it has a receiver.
-    fn end_group(&mut self) {
-        let n = self.tiles.len();
-        let g = self.groups.last_mut().expect("begin_group first");
-        g.items.end = n;
-        if g.items.is_empty() {
-            self.groups.pop();
-        }
     }
 
     /// Appends a tile of the pixels `row + i·step` (each `row` start of
@@ -273,8 +233,6 @@ impl PartTiles {
             receivers: r0..self.pixel.len(),
             glossy: s0..self.glossy.len(),
         });
-        let g = self.groups.last_mut().expect("begin_group first");
-        (g.lo, g.hi) = (g.lo.min(lo), g.hi.max(hi));
     }
 }
 
@@ -284,37 +242,30 @@ mod tests {
     use crate::vpl::VplContext;
     use slc_scene::scene::Scene;
 
-    /// Every pixel that sees a surface is exactly one receiver, each level's
-    /// box holds its receivers, and the ranges nest and cover in order.
+    /// Every pixel that sees a surface is exactly one receiver, each tile's
+    /// box holds its receivers, and the ranges cover in order.
     #[test]
     fn tilings_cover_every_surface_pixel_once_with_boxes_that_hold_them() {
         let ctx = VplContext::new(&Scene::cornell_box_glossy(), 37, 29, 64, None).unwrap();
         let gb = ctx.gbuffer();
         for t in [
-            Tiling::interleaved(gb, 8, 4, 2),
-            Tiling::interleaved(gb, 8, 3, 1),
+            Tiling::interleaved(gb, 8, 4),
+            Tiling::interleaved(gb, 8, 3),
             Tiling::regions(gb, 32, 8),
-            Tiling::regions(gb, 7, 3),
+            Tiling::regions(gb, 9, 3),
         ] {
             let valid = (0..gb.position.len()).filter(|&i| gb.valid(i)).count();
             assert_eq!(t.len(), valid);
             for (p, &o) in t.parts.iter().zip(&t.offsets) {
                 let mut next = 0;
-                for g in &p.groups {
-                    for tile in &p.tiles[g.items.clone()] {
-                        assert_eq!(tile.receivers.start, next);
-                        next = tile.receivers.end;
-                        for &(x, _) in &p.points[tile.receivers.clone()] {
-                            assert!(
-                                tile.lo.cmple(x).all()
-                                    && x.cmple(tile.hi).all()
-                                    && g.lo.cmple(x).all()
-                                    && x.cmple(g.hi).all()
-                            );
-                        }
-                        for &(k, _) in &p.glossy[tile.glossy.clone()] {
-                            assert!(tile.receivers.contains(&k));
-                        }
+                for tile in &p.tiles {
+                    assert_eq!(tile.receivers.start, next);
+                    next = tile.receivers.end;
+                    for &(x, _) in &p.points[tile.receivers.clone()] {
+                        assert!(tile.lo.cmple(x).all() && x.cmple(tile.hi).all());
+                    }
+                    for &(k, _) in &p.glossy[tile.glossy.clone()] {
+                        assert!(tile.receivers.contains(&k));
                     }
                 }
                 assert_eq!(next, p.pixel.len());
