@@ -30,8 +30,9 @@
 //! keeps this meaning of ε; a renderer that needs the bound on its glossiest
 //! surface divides ε by `π·P_max` there, at the cost of culling. The tests
 //! check `max σ = π·P·ε` through the roulette itself
-//! (`brdf::tests::slc_deviation_on_a_glossy_receiver_is_pi_p_epsilon`); the
-//! README measures what it lets through in a rendered image.
+//! (`brdf::tests::slc_deviation_on_a_glossy_receiver_is_pi_p_epsilon`);
+//! `docs/results/glossy-error-bound.md` measures what it lets through in a
+//! rendered image.
 //!
 //! Defined edge behaviour (tested):
 //! - zero intensity ⇒ `r_t² = r² = 0` ⇒ never kept (`d² < 0` is false);

@@ -7,7 +7,10 @@
 //! |---|---|
 //! | [`scene`] | the scene model: triangles with optional vertex normals, materials, camera, primary light, validation |
 //! | [`cornell`], `obj`, `gltf`, `scene_file` | the built-in Cornell box; OBJ+MTL through tobj, glTF 2.0 (`.gltf`/`.glb`) through the gltf crate and TOML scene files (feature `io`, on by default) |
-//! | `shapes` | built-in shapes of scene files (the unit sphere; feature `io`) |
+//! | [`shapes`] | built-in shapes (the unit sphere, midpoint subdivision; no I/O, so not behind `io`) |
+//! | [`placement`] | seeded placement on a scene's surfaces, the same on every machine |
+//! | `light_cloud` | a scene file's `[[light_cloud]]`: many seeded punctual lights (feature `io`) |
+//! | [`error_bound`] | the path tracer's ε set from the scene itself |
 //! | [`lights`] | a light set with its BSH and power alias table; emissive triangles → triangle lights |
 //! | [`light_bvh`] | the light BVH of the `lightbvh` baseline (built here, sampled by slc-core on both backends) |
 //! | [`alias`] | Walker's alias table (the `power` baseline) |

@@ -1,7 +1,8 @@
 //! Application B of the paper: progressive path tracing with many lights.
 //!
-//! Diffuse surfaces; at every vertex next-event estimation (NEE) by the
-//! chosen light-selection method, combined with cosine BSDF sampling by
+//! Lambertian and GGX surfaces; at every vertex next-event estimation (NEE)
+//! by the chosen light-selection method, combined with BSDF sampling (cosine
+//! for the diffuse lobe, GGX visible normals for the specular one) by
 //! multiple importance sampling (power heuristic); Russian roulette on path
 //! length; one ξ per light per pass (progressive); tile-parallel with rayon;
 //! deterministic for a seed.

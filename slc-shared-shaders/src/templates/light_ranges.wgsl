@@ -2,8 +2,8 @@
 // Per record of the direct pass: every light's threshold range r_t² (from
 // its peak, ε and the exposure with stochastic culling; +∞ otherwise) and
 // random range r² (r_t²/(1−ξ) with ξ = xi_for(seed, frame, light), the CPU's
-// numbers; a clamp range R² or +∞ otherwise), computed here so that each
-// record's culling lives in its own uniform slot.
+// numbers; a clamp range R² or +∞ otherwise), computed on the device from the
+// record's own parameters just before the record shades with them.
 {{ engine }}
 
 {{ bindings }}
