@@ -84,10 +84,11 @@ impl GpuDirect {
             p4[i] = [p.x, p.y, p.z, if p.is_nan() { 0.0 } else { 1.0 }];
             n4[i] = normals[i].extend(0.0).to_array();
         }
-        let upload =
-            |label: &str, data: &[[f32; 4]]| crate::frame::upload_rgba32(&gpu, label, (w, h), data);
+        let upload = |label: &str, data: &[[f32; 4]]| {
+            crate::texture::upload_rgba32(&gpu, label, (w, h), data)
+        };
         let (position, normal) = (upload("slc points", &p4), upload("slc normals", &n4));
-        let output = crate::frame::rgba32_target(
+        let output = crate::texture::rgba32_target(
             &gpu,
             "slc direct",
             (w, h),
@@ -111,7 +112,7 @@ impl GpuDirect {
             &DirectSettings { culling: Culling::Stochastic(*params), seed, frame },
         )?;
         gpu.queue.submit([enc.finish()]);
-        let data = crate::frame::read_texture(&gpu, &output)?;
+        let data = crate::texture::read_texture(&gpu, &output)?;
         Ok(data[..n]
             .iter()
             .map(|d| Direct { irradiance: Vec3::new(d[0], d[1], d[2]), in_range: d[3] as u32 })

@@ -42,13 +42,16 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-use crate::kernel::{KernelLayout, Timer, Uploads, check_kernels, read_back, storage, zeroed};
-use crate::passes::indirect::{Dispatch, Recording};
+use crate::kernel::{KernelLayout, check_kernels, read_back, storage, zeroed};
 use crate::passes::{
     Culling, GBuffer, IndirectInputs, IndirectMaterials, IndirectPass, IndirectPassDesc,
     IndirectSettings, Surface, SurfaceDesc, TemporalInputs, TemporalPass, TemporalPassDesc,
     VplInput, VplSourceDesc,
 };
+use crate::record::{Dispatch, Recording, Uploads};
+use crate::texture::{DEPTH, F16, F32, R32, Target, read_texture, target, tex};
+pub use crate::timing::{Stage, StageTime};
+use crate::timing::{TIMED_PASSES, Timer};
 use crate::{GpuContext, GpuError};
 use glam::{Mat4, Vec3, Vec4};
 use slc_scene::backend::Timing;
@@ -66,10 +69,6 @@ use wgpu::util::DeviceExt;
 
 /// Tile edge of the 2-D kernels.
 const TILE: u32 = crate::vpl::TILE;
-const F32: wgpu::TextureFormat = wgpu::TextureFormat::Rgba32Float;
-const F16: wgpu::TextureFormat = wgpu::TextureFormat::Rgba16Float;
-const R32: wgpu::TextureFormat = wgpu::TextureFormat::R32Float;
-const DEPTH: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;
 
 /// What a [`GpuVplFrame`] is built for.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -86,96 +85,6 @@ pub struct FrameDesc {
     pub shadow_size: u32,
     /// Clamp distance of the VPL fall-off (`None`: 1% of the scene's diagonal).
     pub min_distance: Option<f32>,
-}
-
-/// The frame's stages, in the order a frame runs them (a frame runs a
-/// subset: `light update` with SLC only, `denoise` and `near field` when
-/// asked for).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Stage {
-    /// The camera's G-buffer (raster).
-    GBuffer,
-    /// The primary light's reflective shadow map (raster).
-    Rsm,
-    /// The primary light's shadow map (raster).
-    ShadowMap,
-    /// VPLs from the RSM.
-    VplGeneration,
-    /// Random ranges from ξ.
-    LightUpdate,
-    /// Tiled SLC shading of the interleaved sub-images.
-    Shading,
-    /// The cross-bilateral filter (twice in a glossy frame: the
-    /// irradiance, then the specular correction).
-    Denoise,
-    /// The near field of the VPL split.
-    NearField,
-    /// The irradiance into the frame's texture.
-    IrradianceExport,
-    /// Temporal accumulation of the irradiance (when asked for).
-    Temporal,
-    /// The primary light's shadowed direct term.
-    Direct,
-    /// Direct plus indirect light into the HDR target.
-    Composition,
-}
-
-impl Stage {
-    /// Every stage, in order: the timer holds a timestamp pair for each.
-    pub const ALL: [Stage; 12] = [
-        Stage::GBuffer,
-        Stage::Rsm,
-        Stage::ShadowMap,
-        Stage::VplGeneration,
-        Stage::LightUpdate,
-        Stage::Shading,
-        Stage::Denoise,
-        Stage::NearField,
-        Stage::IrradianceExport,
-        Stage::Temporal,
-        Stage::Direct,
-        Stage::Composition,
-    ];
-
-    /// The stage's name as reports print it.
-    pub fn name(self) -> &'static str {
-        match self {
-            Stage::GBuffer => "G-buffer",
-            Stage::Rsm => "RSM",
-            Stage::ShadowMap => "shadow map",
-            Stage::VplGeneration => "VPL generation",
-            Stage::LightUpdate => "light update",
-            Stage::Shading => "shading",
-            Stage::Denoise => "denoise",
-            Stage::NearField => "near field",
-            Stage::IrradianceExport => "irradiance export",
-            Stage::Temporal => "temporal",
-            Stage::Direct => "direct",
-            Stage::Composition => "composition",
-        }
-    }
-}
-
-/// Timestamp pairs a frame's timer holds: one per stage, and two more
-/// for the glossy frame's second denoise and second temporal
-/// accumulation (the specular correction's).
-const TIMED_PASSES: u32 = Stage::ALL.len() as u32 + 2;
-
-/// One stage's time.
-#[derive(Clone, Debug, PartialEq)]
-pub struct StageTime {
-    /// The stage.
-    pub stage: Stage,
-    /// Its name ([`Stage::name`]).
-    pub name: &'static str,
-    /// Milliseconds.
-    pub ms: f64,
-}
-
-impl StageTime {
-    fn new(stage: Stage, ms: f64) -> StageTime {
-        StageTime { stage, name: stage.name(), ms }
-    }
 }
 
 /// The indirect pass's settings for the CPU frame's VPL settings at clamp
@@ -220,36 +129,6 @@ pub struct FrameRender {
     /// VPL count. The GPU does not count loop evaluations (`evaluations`
     /// and `lights_per_pixel` are 0).
     pub stats: VplStats,
-}
-
-struct Target {
-    texture: wgpu::Texture,
-    view: wgpu::TextureView,
-}
-
-fn target(
-    gpu: &GpuContext,
-    label: &str,
-    (w, h): (u32, u32),
-    format: wgpu::TextureFormat,
-    usage: wgpu::TextureUsages,
-) -> Target {
-    let texture = gpu.device.create_texture(&wgpu::TextureDescriptor {
-        label: Some(label),
-        size: wgpu::Extent3d { width: w, height: h, depth_or_array_layers: 1 },
-        mip_level_count: 1,
-        sample_count: 1,
-        dimension: wgpu::TextureDimension::D2,
-        format,
-        usage,
-        view_formats: &[],
-    });
-    let view = texture.create_view(&Default::default());
-    Target { texture, view }
-}
-
-fn tex(t: &Target) -> wgpu::BindingResource<'_> {
-    wgpu::BindingResource::TextureView(&t.view)
 }
 
 fn columns(m: Mat4) -> [Vec4; 4] {
@@ -1326,125 +1205,4 @@ impl Step {
             Step::Compute(d) => d.stage,
         }
     }
-}
-
-/// Bytes per texel and per padded row of a read-back of `t`
-/// (`Rgba32Float` or `Rgba16Float`).
-fn readback_rows(t: &wgpu::Texture) -> Result<(u32, u32), GpuError> {
-    let texel = match t.format() {
-        F32 => 16,
-        F16 => 8,
-        f => return Err(GpuError::Setting(format!("cannot read back {f:?}"))),
-    };
-    let row = (t.width() * texel).div_ceil(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT)
-        * wgpu::COPY_BYTES_PER_ROW_ALIGNMENT;
-    Ok((texel, row))
-}
-
-/// A mappable buffer for [`read_texture_via`] of `t` (an `Rgba32Float` or
-/// `Rgba16Float` texture; rows padded to the copy alignment).
-pub(crate) fn texture_staging(gpu: &GpuContext, t: &wgpu::Texture) -> wgpu::Buffer {
-    let row = readback_rows(t).map_or(16 * t.width(), |(_, row)| row);
-    zeroed(
-        gpu,
-        "slc texture readback",
-        row as u64 * t.height() as u64,
-        wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
-    )
-}
-
-/// Reads an `Rgba32Float` or `Rgba16Float` texture back as `[f32; 4]` per
-/// texel (rows padded to the copy alignment on the GPU side).
-pub(crate) fn read_texture(gpu: &GpuContext, t: &wgpu::Texture) -> Result<Vec<[f32; 4]>, GpuError> {
-    read_texture_via(gpu, t, &texture_staging(gpu, t))
-}
-
-/// [`read_texture`] through `staging`, a [`texture_staging`] buffer of `t`
-/// (kept by a caller that reads back every frame).
-pub(crate) fn read_texture_via(
-    gpu: &GpuContext,
-    t: &wgpu::Texture,
-    staging: &wgpu::Buffer,
-) -> Result<Vec<[f32; 4]>, GpuError> {
-    let (w, h) = (t.width(), t.height());
-    let (texel, row) = readback_rows(t)?;
-    if staging.size() < row as u64 * h as u64 {
-        return Err(GpuError::Setting(format!(
-            "a read-back buffer of {} bytes for {} rows of {row}",
-            staging.size(),
-            h
-        )));
-    }
-    let mut enc = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor {
-        label: Some("slc texture readback"),
-    });
-    enc.copy_texture_to_buffer(
-        t.as_image_copy(),
-        wgpu::TexelCopyBufferInfo {
-            buffer: staging,
-            layout: wgpu::TexelCopyBufferLayout {
-                offset: 0,
-                bytes_per_row: Some(row),
-                rows_per_image: None,
-            },
-        },
-        t.size(),
-    );
-    gpu.queue.submit([enc.finish()]);
-    let slice = staging.slice(..);
-    slice.map_async(wgpu::MapMode::Read, |_| {});
-    gpu.wait()?;
-    let bytes = slice.get_mapped_range().map_err(|e| GpuError::Device(e.to_string()))?.to_vec();
-    staging.unmap();
-    let mut out = Vec::with_capacity((w * h) as usize);
-    for y in 0..h as usize {
-        let r = &bytes[y * row as usize..y * row as usize + (w * texel) as usize];
-        if texel == 16 {
-            out.extend(bytemuck::pod_collect_to_vec::<u8, [f32; 4]>(r));
-        } else {
-            let halves: Vec<u16> = bytemuck::pod_collect_to_vec(r);
-            out.extend(
-                halves
-                    .chunks_exact(4)
-                    .map(|c| [0, 1, 2, 3].map(|k| half::f16::from_bits(c[k]).to_f32())),
-            );
-        }
-    }
-    Ok(out)
-}
-
-/// An `Rgba32Float` texture of `size` with `usage`.
-pub(crate) fn rgba32_target(
-    gpu: &GpuContext,
-    label: &str,
-    size: (u32, u32),
-    usage: wgpu::TextureUsages,
-) -> wgpu::Texture {
-    target(gpu, label, size, F32, usage).texture
-}
-
-/// An `Rgba32Float` texture (`TEXTURE_BINDING`) holding `texels`, row-major.
-pub(crate) fn upload_rgba32(
-    gpu: &GpuContext,
-    label: &str,
-    size: (u32, u32),
-    texels: &[[f32; 4]],
-) -> wgpu::Texture {
-    let t = rgba32_target(
-        gpu,
-        label,
-        size,
-        wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
-    );
-    gpu.queue.write_texture(
-        t.as_image_copy(),
-        bytemuck::cast_slice(texels),
-        wgpu::TexelCopyBufferLayout {
-            offset: 0,
-            bytes_per_row: Some(size.0 * 16),
-            rows_per_image: None,
-        },
-        t.size(),
-    );
-    t
 }

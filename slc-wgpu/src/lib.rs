@@ -56,6 +56,9 @@ mod kernel;
 mod lights;
 pub mod passes;
 pub mod pt;
+mod record;
+mod texture;
+pub mod timing;
 pub mod vpl;
 
 pub use context::{GpuContext, pick_adapter};

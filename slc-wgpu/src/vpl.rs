@@ -22,12 +22,12 @@
 //! correction at the pixels with a specular lobe, zero elsewhere; denoised
 //! on the GPU when the irradiance is).
 
-use crate::kernel::Timer;
 use crate::kernel::storage;
 use crate::passes::{
     Culling, GBuffer, IndirectInputs, IndirectMaterials, IndirectPass, IndirectPassDesc,
     IndirectSettings, Surface, SurfaceDesc, VplInput, VplSourceDesc,
 };
+use crate::timing::Timer;
 use crate::{GpuContext, GpuError};
 use glam::Vec3;
 use slc_scene::backend::IndirectShader;
@@ -60,8 +60,8 @@ enum Part {
 impl Part {
     const ALL: [Part; 5] = [Part::Setup, Part::Shading, Part::Denoise, Part::Near, Part::Export];
 
-    fn of(stage: crate::frame::Stage) -> Part {
-        use crate::frame::Stage;
+    fn of(stage: crate::timing::Stage) -> Part {
+        use crate::timing::Stage;
         match stage {
             Stage::LightUpdate | Stage::Shading => Part::Shading,
             Stage::Denoise => Part::Denoise,
@@ -191,7 +191,8 @@ impl GpuVpl {
         )?;
         let v4 = |v: Vec3, w: f32| [v.x, v.y, v.z, w];
         let upload = |label: &str, size: (u32, u32), texels: Vec<[f32; 4]>| {
-            crate::frame::upload_rgba32(gpu, label, size, &texels).create_view(&Default::default())
+            crate::texture::upload_rgba32(gpu, label, size, &texels)
+                .create_view(&Default::default())
         };
         let valid: Vec<bool> = (0..n).map(|i| gb.valid(i)).collect();
         let position = upload(
@@ -212,15 +213,15 @@ impl GpuVpl {
             upload("slc vpl rsm normal", s, v.normal.iter().map(|&x| v4(x, 0.0)).collect()),
             upload("slc vpl rsm flux", s, v.flux.iter().map(|&x| v4(x, 0.0)).collect()),
         ];
-        let output = crate::frame::rgba32_target(
+        let output = crate::texture::rgba32_target(
             gpu,
             "slc vpl irradiance",
             (w, h),
             wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::COPY_SRC,
         );
-        let staging = crate::frame::texture_staging(gpu, &output);
+        let staging = crate::texture::texture_staging(gpu, &output);
         let glossy = glossy.then(|| {
-            let output = crate::frame::rgba32_target(
+            let output = crate::texture::rgba32_target(
                 gpu,
                 "slc vpl specular",
                 (w, h),
@@ -234,7 +235,7 @@ impl GpuVpl {
                     wgpu::BufferUsages::empty(),
                 ),
                 view: output.create_view(&Default::default()),
-                staging: crate::frame::texture_staging(gpu, &output),
+                staging: crate::texture::texture_staging(gpu, &output),
                 output,
             }
         });
@@ -367,7 +368,7 @@ impl GpuVpl {
             denoise_ms =
                 timed.iter().zip(&d).find(|(p, _)| **p == Part::Denoise).map(|(_, &ms)| ms);
         }
-        let data = crate::frame::read_texture_via(&gpu, &self.output, &self.staging)?;
+        let data = crate::texture::read_texture_via(&gpu, &self.output, &self.staging)?;
         let mut irradiance = Vec::with_capacity(data.len());
         let mut kept = Vec::with_capacity(data.len());
         let mut evaluations = 0u64;
@@ -377,7 +378,7 @@ impl GpuVpl {
             evaluations += valid as u64 * d[3] as u64;
         }
         let specular = match &self.glossy {
-            Some(g) => crate::frame::read_texture_via(&gpu, &g.output, &g.staging)?
+            Some(g) => crate::texture::read_texture_via(&gpu, &g.output, &g.staging)?
                 .iter()
                 .zip(&self.valid)
                 .map(|(d, &valid)| if valid { Vec3::new(d[0], d[1], d[2]) } else { Vec3::ZERO })

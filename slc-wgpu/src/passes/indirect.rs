@@ -107,8 +107,9 @@ use super::{
     Culling, FLOAT_INPUTS, GBuffer, SurfaceDesc, ViewCache, check_optional, check_size, check_view,
     kernel_form, output_format,
 };
-use crate::frame::Stage;
-use crate::kernel::{KernelLayout, UniformSlots, Uploads, check_kernels, storage, zeroed};
+use crate::kernel::{KernelLayout, UniformSlots, check_kernels, storage, zeroed};
+use crate::record::{Dispatch, Recording, Uploads};
+use crate::timing::Stage;
 use crate::{GpuContext, GpuError};
 use slc_core::interleave::{NEAR_BLOCK, interleave_shift};
 use slc_scene::vpl::{NEAR_FACTOR, PERIOD};
@@ -290,73 +291,6 @@ impl IndirectSettings {
     fn near_r2(&self) -> f32 {
         let r = self.near_radius.unwrap_or(NEAR_FACTOR * self.min_distance);
         r * r
-    }
-}
-
-/// A record of a pass: its uniforms, copied into place first, then its
-/// dispatches.
-pub(crate) struct Recording {
-    /// The record's uniform values.
-    pub(crate) uploads: Uploads,
-    /// Its dispatches, in order.
-    pub(crate) dispatches: Vec<Dispatch>,
-}
-
-impl Recording {
-    /// Records the uploads, then one compute pass (`label`) of every
-    /// dispatch.
-    pub(crate) fn record(&self, gpu: &GpuContext, encoder: &mut wgpu::CommandEncoder, label: &str) {
-        self.uploads.record(gpu, encoder);
-        let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
-            label: Some(label),
-            timestamp_writes: None,
-        });
-        for d in &self.dispatches {
-            d.record(&mut pass);
-        }
-    }
-}
-
-/// One recorded dispatch of a pass: its stage, pipeline, bind group (group
-/// 0) with its dynamic offset (none when `offsets` is empty), and workgroup counts.
-pub(crate) struct Dispatch {
-    pub(crate) stage: Stage,
-    pipeline: wgpu::ComputePipeline,
-    group: wgpu::BindGroup,
-    offsets: Vec<u32>,
-    groups: [u32; 3],
-}
-
-impl Dispatch {
-    /// Records the dispatch into `pass`.
-    pub(crate) fn record(&self, pass: &mut wgpu::ComputePass) {
-        pass.set_pipeline(&self.pipeline);
-        pass.set_bind_group(0, &self.group, &self.offsets);
-        pass.dispatch_workgroups(self.groups[0], self.groups[1], self.groups[2]);
-    }
-
-    /// A dispatch of `pipeline` with `group` at uniform offset `offset`
-    /// over `groups` workgroups.
-    pub(crate) fn new(
-        stage: Stage,
-        pipeline: &wgpu::ComputePipeline,
-        group: wgpu::BindGroup,
-        offset: Option<u32>,
-        groups: [u32; 3],
-    ) -> Self {
-        Dispatch::with_offsets(stage, pipeline, group, offset.into_iter().collect(), groups)
-    }
-
-    /// [`Dispatch::new`] with a dynamic offset per dynamic uniform of the
-    /// group, in binding order.
-    fn with_offsets(
-        stage: Stage,
-        pipeline: &wgpu::ComputePipeline,
-        group: wgpu::BindGroup,
-        offsets: Vec<u32>,
-        groups: [u32; 3],
-    ) -> Self {
-        Dispatch { stage, pipeline: pipeline.clone(), group, offsets, groups }
     }
 }
 
