@@ -35,11 +35,7 @@ use slc_scene::vpl::{Shaded, Specular, VplInputs, VplSettings};
 use slc_shared_shaders::layout::GpuMaterial;
 use std::time::Instant;
 
-/// Tile edge of `vpl_tiled` in sub-image pixels.
-pub const TILE: u32 = 8;
-/// Default capacity of the tile light list (8 KiB of workgroup memory): a
-/// subset with more lights is culled and shaded in chunks of this size.
-pub const TILE_LIST: u32 = 2048;
+pub use crate::passes::indirect::{TILE, TILE_LIST};
 
 /// Which of a shade's submissions a stage of the pass belongs to: each is
 /// submitted (and timed) on its own.

@@ -118,8 +118,13 @@ use slc_shared_shaders::layout::{
 };
 use slc_shared_shaders::{CullKind, Features, Kernel, LightTypes, VplSource};
 
-/// Tile edge of the 2-D kernels, in pixels.
-const TILE: u32 = crate::vpl::TILE;
+/// Tile edge of the 2-D kernels (`vpl_tiled`'s in sub-image pixels), in
+/// pixels.
+pub const TILE: u32 = 8;
+/// Default capacity of `vpl_tiled`'s tile light list
+/// ([`IndirectPassDesc::tile_list`]; 8 KiB of workgroup memory): a subset
+/// with more lights is culled and shaded in chunks of this size.
+pub const TILE_LIST: u32 = 2048;
 /// Workgroup size of the 1-D kernels.
 const WG: u32 = 64;
 
@@ -170,7 +175,7 @@ pub struct IndirectPassDesc {
     pub interleaved: bool,
     /// Capacity of `vpl_tiled`'s per-tile light list, in lights (at least
     /// 1; 4 bytes of workgroup memory each): a subset with more lights
-    /// streams through it in chunks. Default [`TILE_LIST`](crate::vpl::TILE_LIST).
+    /// streams through it in chunks. Default [`TILE_LIST`].
     pub tile_list: u32,
     /// Built with the material input (see the module docs): every record
     /// takes [`IndirectInputs::materials`] and also writes the specular
@@ -191,7 +196,7 @@ impl IndirectPassDesc {
             vpls,
             output_format: wgpu::TextureFormat::Rgba16Float,
             interleaved: true,
-            tile_list: crate::vpl::TILE_LIST,
+            tile_list: TILE_LIST,
             glossy: false,
         }
     }
