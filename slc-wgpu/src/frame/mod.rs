@@ -93,8 +93,8 @@ pub struct FrameDesc {
 /// The indirect pass's settings for the CPU frame's VPL settings at clamp
 /// distance `min_distance` ([`GpuVplFrame::min_distance`] for a frame):
 /// the same culling, seed, frame, fixed ξ, denoise and near field; the
-/// reference is refused here ([`crate::vpl::GpuVpl`] shades it), and the
-/// CPU's `tile` (its tile size) has no GPU counterpart.
+/// reference is refused here ([`GpuVplFrame::render_reference`] renders
+/// it), and the CPU's `tile` (its tile size) has no GPU counterpart.
 pub fn indirect_settings(
     settings: &VplSettings,
     min_distance: f32,
@@ -102,7 +102,7 @@ pub fn indirect_settings(
     settings.validate().map_err(|e| GpuError::Setting(e.to_string()))?;
     if settings.culling == Culling::Reference {
         return Err(GpuError::Setting(
-            "the GPU frame runs slc, clamp or none (the reference is GpuVpl's)".into(),
+            "the GPU frame runs slc, clamp or none (the reference is render_reference's)".into(),
         ));
     }
     Ok(IndirectSettings {
@@ -145,6 +145,9 @@ pub struct GpuVplFrame {
     /// The scene on the device, its raster pipelines, uniforms and targets.
     raster: Raster,
     indirect: IndirectPass,
+    /// The same pass built without interleaving, for
+    /// [`GpuVplFrame::render_reference`] (built at its first use).
+    reference: Option<IndirectPass>,
     /// The indirect pass's irradiance.
     irradiance: Target,
     /// The VPLs' specular correction (a scene with glossy materials).
@@ -156,9 +159,6 @@ pub struct GpuVplFrame {
     /// The primary light moved since the last recorded frame (a reported
     /// change for the temporal stage).
     lighting_changed: std::cell::Cell<bool>,
-    /// The primary light the uniforms hold (the host-side composition's
-    /// direction to it).
-    primary: std::cell::Cell<PrimaryLight>,
     /// GPU timestamps around the stages, sized for every [`Stage`] (and
     /// the glossy frame's second denoise, `TIMED_PASSES`); `None`
     /// where the frame times by the host's clock.
@@ -221,12 +221,12 @@ impl GpuVplFrame {
             recorded_min_distance: min_distance,
             raster,
             indirect,
+            reference: None,
             irradiance,
             specular,
             compose,
             temporal: None,
             lighting_changed: std::cell::Cell::new(false),
-            primary: std::cell::Cell::new(scene.primary),
             // A software adapter's timestamps do not bracket the work its
             // worker threads do (lavapipe reports microseconds for
             // 10⁸-evaluation dispatches): time it by the clock instead.
@@ -267,7 +267,6 @@ impl GpuVplFrame {
         primary.validate().map_err(|e| GpuError::Setting(e.to_string()))?;
         self.raster.set_primary(&self.gpu, primary);
         self.lighting_changed.set(true);
-        self.primary.set(*primary);
         Ok(())
     }
 
@@ -357,7 +356,7 @@ impl GpuVplFrame {
         encoder: &mut wgpu::CommandEncoder,
         settings: &IndirectSettings,
     ) -> Result<bool, GpuError> {
-        let (uploads, steps) = self.steps(settings)?;
+        let (uploads, steps) = self.steps(settings, false)?;
         uploads.record(&self.gpu, encoder);
         let mut timer = self.timer.take();
         match timer.as_mut() {
@@ -415,8 +414,32 @@ impl GpuVplFrame {
     }
 
     /// The frame's uniforms (recorded first) and its steps for `st`, each
-    /// recordable on its own.
-    fn steps(&mut self, st: &IndirectSettings) -> Result<(Uploads, Vec<Step>), GpuError> {
+    /// recordable on its own; with `reference`, the reference's steps
+    /// ([`GpuVplFrame::render_reference`]).
+    fn steps(
+        &mut self,
+        st: &IndirectSettings,
+        reference: bool,
+    ) -> Result<(Uploads, Vec<Step>), GpuError> {
+        let st = &if reference {
+            if self.reference.is_none() {
+                let desc = IndirectPassDesc { interleaved: false, ..*self.indirect.desc() };
+                self.reference = Some(IndirectPass::new(&self.gpu, &desc)?);
+            }
+            IndirectSettings {
+                culling: Culling::None,
+                fixed_xi: None,
+                denoise: false,
+                near_radius: Some(0.0),
+                ..*st
+            }
+        } else {
+            *st
+        };
+        let pass = match (reference, self.reference.as_mut()) {
+            (true, Some(r)) => r,
+            _ => &mut self.indirect,
+        };
         let (gb, rsm) = (&self.raster.gbuffer.colors, &self.raster.rsm.colors);
         let inputs = IndirectInputs {
             gbuffer: GBuffer {
@@ -435,8 +458,7 @@ impl GpuVplFrame {
                 specular: &sp.view,
             }),
         };
-        let Recording { mut uploads, dispatches: indirect } =
-            self.indirect.dispatches(&inputs, st)?;
+        let Recording { mut uploads, dispatches: indirect } = pass.dispatches(&inputs, st)?;
         self.recorded_min_distance = st.min_distance;
         let mut steps = vec![
             Step::Raster(Stage::GBuffer),
@@ -445,7 +467,7 @@ impl GpuVplFrame {
         ];
         steps.extend(indirect.into_iter().map(Step::Compute));
         let mut compose = None;
-        if let Some(t) = &mut self.temporal {
+        if let Some(t) = self.temporal.as_mut().filter(|_| !reference) {
             let (camera, (w, h)) = (self.raster.camera(), self.raster.size());
             let view = TemporalView::of_camera(camera, w, h);
             let ts =
@@ -496,7 +518,7 @@ impl GpuVplFrame {
         encoder: &mut wgpu::CommandEncoder,
         settings: &IndirectSettings,
     ) -> Result<(), GpuError> {
-        let (uploads, steps) = self.steps(settings)?;
+        let (uploads, steps) = self.steps(settings, false)?;
         uploads.record(&self.gpu, encoder);
         for step in &steps {
             self.record_step(encoder, step, None);
@@ -508,7 +530,30 @@ impl GpuVplFrame {
     /// times every stage (GPU timestamps, else each stage submitted alone
     /// under the host clock).
     pub fn render(&mut self, settings: &IndirectSettings) -> Result<FrameRender, GpuError> {
-        let (uploads, steps) = self.steps(settings)?;
+        let (uploads, steps) = self.steps(settings, false)?;
+        self.run(uploads, steps)
+    }
+
+    /// The frame's reference, rendered as [`GpuVplFrame::render`] renders
+    /// a frame: every VPL at every pixel of the frame's own G-buffer and
+    /// RSM (an [`IndirectPass`] built with `interleaved: false` at the
+    /// first call, recorded unculled, undenoised, without the near-field
+    /// split: [`IndirectPassDesc::interleaved`]), composed with the
+    /// frame's direct light by its own composition; no temporal stage. Of
+    /// `settings` only the clamp distance matters (seed and frame choose
+    /// nothing in an unculled, uninterleaved frame); its culling, fixed ξ,
+    /// denoise and near radius are the reference's.
+    pub fn render_reference(
+        &mut self,
+        settings: &IndirectSettings,
+    ) -> Result<FrameRender, GpuError> {
+        let (uploads, steps) = self.steps(settings, true)?;
+        self.run(uploads, steps)
+    }
+
+    /// Submits `uploads` and `steps`, times every stage and reads the
+    /// image back.
+    fn run(&mut self, uploads: Uploads, steps: Vec<Step>) -> Result<FrameRender, GpuError> {
         let gpu = self.gpu.clone();
         let mut encoder = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor {
             label: Some("slc frame uniforms"),
@@ -600,40 +645,6 @@ impl GpuVplFrame {
     /// The primary light's direct irradiance of the last frame, per pixel.
     pub fn read_direct(&self) -> Result<Vec<Vec3>, GpuError> {
         self.compose.read_direct(&self.gpu)
-    }
-
-    /// The image this frame would show with indirect irradiance
-    /// `indirect` and specular correction `specular` (e.g. the
-    /// reference's [`Shaded`](slc_scene::vpl::Shaded), shaded from
-    /// [`Self::read_inputs`]) instead of its own: `L_e + ρ/π·(E_direct +
-    /// E)` on the host with the last frame's G-buffer and direct light, and
-    /// at pixels with a specular lobe `L_e + f(v, l)·E_direct + c_diff/π·E
-    /// + S` (as the frame composes them: [`GBuffer::radiance`](slc_scene::vpl::GBuffer::radiance);
-    /// `specular` empty: every pixel Lambertian).
-    pub fn compose_with(
-        &self,
-        inputs: &VplInputs,
-        indirect: &[Vec3],
-        specular: &[Vec3],
-    ) -> Result<Image, GpuError> {
-        let direct = self.read_direct()?;
-        let gb = &inputs.gbuffer;
-        if indirect.len() != direct.len()
-            || gb.position.len() != direct.len()
-            || !(specular.is_empty() || specular.len() == direct.len())
-        {
-            return Err(GpuError::Setting(format!(
-                "{} irradiance and {} specular values for {} pixels",
-                indirect.len(),
-                specular.len(),
-                direct.len()
-            )));
-        }
-        let primary = self.primary.get();
-        let data = (0..direct.len())
-            .map(|i| gb.radiance(i, &primary, direct[i], indirect[i], specular.get(i).copied()))
-            .collect();
-        Ok(Image { width: gb.width, height: gb.height, data })
     }
 }
 

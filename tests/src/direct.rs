@@ -1,0 +1,127 @@
+//! [`GpuDirect`]: direct light from many lights at arbitrary shading points
+//! on the GPU, a thin caller of slc-wgpu's [`DirectPass`] through its
+//! public API: the points and normals are uploaded as a position G-buffer
+//! (point `i` at texel `i`, row-major, so its random streams are the
+//! pass's pixel `i`), the pass is recorded with uniform picks of `k =`
+//! [`DIRECT_K`] (the CPU's reservoir), and the output is read back.
+//! Unshadowed, the counterpart of the CPU backend's
+//! `slc_cpu::direct::DirectLights`, which draws the same random numbers.
+
+use crate::engine;
+use slc_core::light::Light;
+use slc_core::range::RangeParams;
+use slc_scene::lights::{DIRECT_K, Direct, LightSet};
+use slc_wgpu::glam::Vec3;
+use slc_wgpu::passes::{
+    Culling, DirectInputs, DirectPass, DirectPassDesc, DirectSelection, DirectSettings, GBuffer,
+    Surface, SurfaceDesc,
+};
+use slc_wgpu::{GpuContext, GpuError, LightTypes};
+
+/// Texels per row of the point textures.
+const ROW: u32 = 256;
+
+/// The lights of a [`LightSet`] and a [`DirectPass`] sized for the last
+/// call's points.
+pub struct GpuDirect {
+    gpu: GpuContext,
+    lights: LightSet,
+    pass: Option<DirectPass>,
+}
+
+/// The light types of `lights` (what the pass compiles).
+fn light_types(lights: &[Light]) -> LightTypes {
+    let has = |f: fn(&Light) -> bool| lights.iter().any(f);
+    LightTypes {
+        point: has(|l| matches!(l, Light::Point(_))),
+        spot: has(|l| matches!(l, Light::Spot(_))),
+        ies: has(|l| matches!(l, Light::Ies(_))),
+        triangle: has(|l| matches!(l, Light::Triangle(_))),
+        vpl: has(|l| matches!(l, Light::Vpl(_))),
+    }
+}
+
+impl GpuDirect {
+    /// Keeps the lights; the pass is built at the first [`GpuDirect::shade`]
+    /// (and again when the number of rows of points changes), checking the
+    /// device's limits for them then.
+    pub fn new(gpu: &GpuContext, lights: &LightSet) -> Result<Self, GpuError> {
+        Ok(GpuDirect { gpu: gpu.clone(), lights: lights.clone(), pass: None })
+    }
+
+    /// Direct light at `points` (unit `normals`) for frame `frame` of
+    /// `seed`, number for number as the CPU's `DirectLights::shade`.
+    pub fn shade(
+        &mut self,
+        points: &[Vec3],
+        normals: &[Vec3],
+        params: &RangeParams,
+        seed: u32,
+        frame: u32,
+    ) -> Result<Vec<Direct>, GpuError> {
+        if points.len() != normals.len() {
+            return Err(GpuError::Setting(format!(
+                "{} points but {} normals",
+                points.len(),
+                normals.len()
+            )));
+        }
+        if points.is_empty() {
+            return Ok(Vec::new());
+        }
+        let gpu = self.gpu.clone();
+        let n = points.len();
+        let (w, h) = (ROW.min(n as u32), (n as u32).div_ceil(ROW));
+        gpu.require(
+            "max_texture_dimension_2d (point rows)",
+            h as u64,
+            gpu.limits.max_texture_dimension_2d as u64,
+        )?;
+        if self.pass.as_ref().is_none_or(|p| (p.desc().width, p.desc().height) != (w, h)) {
+            let desc = DirectPassDesc {
+                surface: SurfaceDesc::Position,
+                output_format: wgpu::TextureFormat::Rgba32Float,
+                selection: DirectSelection::Uniform { k: DIRECT_K as u32 },
+                light_types: light_types(self.lights.lights()),
+                ..DirectPassDesc::new(w, h)
+            };
+            self.pass = Some(DirectPass::new(&gpu, &self.lights, &desc)?);
+        }
+        let Some(pass) = self.pass.as_mut() else {
+            return Err(GpuError::Setting("no pass".into()));
+        };
+        // w = 1 marks a valid point; NaN coordinates are shaded as nothing, as on the CPU.
+        let texels = (w * h) as usize;
+        let mut p4 = vec![[0.0f32; 4]; texels];
+        let mut n4 = vec![[0.0f32; 4]; texels];
+        for i in 0..n {
+            let p = points[i];
+            p4[i] = [p.x, p.y, p.z, if p.is_nan() { 0.0 } else { 1.0 }];
+            n4[i] = normals[i].extend(0.0).to_array();
+        }
+        let (pv, nv) = (
+            engine::upload(&gpu, "slc points", (w, h), &p4),
+            engine::upload(&gpu, "slc normals", (w, h), &n4),
+        );
+        let output = engine::output(&gpu, (w, h));
+        let ov = output.create_view(&Default::default());
+        let inputs = DirectInputs::new(
+            GBuffer { surface: Surface::Position(&pv), normal: &nv, eye: Vec3::ZERO },
+            &ov,
+        );
+        let mut enc = gpu
+            .device
+            .create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("slc direct") });
+        pass.record(
+            &mut enc,
+            &inputs,
+            &DirectSettings { culling: Culling::Stochastic(*params), seed, frame },
+        )?;
+        gpu.queue.submit([enc.finish()]);
+        let data = engine::read(&gpu, &output)?;
+        Ok(data[..n]
+            .iter()
+            .map(|d| Direct { irradiance: Vec3::new(d[0], d[1], d[2]), in_range: d[3] as u32 })
+            .collect())
+    }
+}
