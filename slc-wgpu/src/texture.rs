@@ -133,39 +133,3 @@ pub(crate) fn read_texture_via(
     }
     Ok(out)
 }
-
-/// An `Rgba32Float` texture of `size` with `usage`.
-pub(crate) fn rgba32_target(
-    gpu: &GpuContext,
-    label: &str,
-    size: (u32, u32),
-    usage: wgpu::TextureUsages,
-) -> wgpu::Texture {
-    target(gpu, label, size, F32, usage).texture
-}
-
-/// An `Rgba32Float` texture (`TEXTURE_BINDING`) holding `texels`, row-major.
-pub(crate) fn upload_rgba32(
-    gpu: &GpuContext,
-    label: &str,
-    size: (u32, u32),
-    texels: &[[f32; 4]],
-) -> wgpu::Texture {
-    let t = rgba32_target(
-        gpu,
-        label,
-        size,
-        wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
-    );
-    gpu.queue.write_texture(
-        t.as_image_copy(),
-        bytemuck::cast_slice(texels),
-        wgpu::TexelCopyBufferLayout {
-            offset: 0,
-            bytes_per_row: Some(size.0 * 16),
-            rows_per_image: None,
-        },
-        t.size(),
-    );
-    t
-}
