@@ -40,7 +40,6 @@ use slc_core::range::{CullKind, random_range2};
 use slc_core::ray::surface_offset;
 use slc_core::xi::frame_xi;
 use slc_scene::RenderError;
-use slc_scene::backend::IndirectShader;
 use slc_scene::image::Image;
 use slc_scene::scene::{Camera, PrimaryLight, Scene};
 use slc_scene::temporal::{TemporalSettings, TemporalView};
@@ -961,18 +960,6 @@ fn direct_light(scene: &Scene, geo: &Geometry, gb: &GBuffer, geo_n: &[Vec3], out
         out.par_iter_mut().enumerate().for_each(|(i, e)| *e = pixel(i));
     } else {
         *out = (0..gb.position.len()).into_par_iter().map(pixel).collect();
-    }
-}
-
-impl IndirectShader for VplContext {
-    type Error = RenderError;
-
-    fn describe(&self) -> String {
-        format!("cpu ({} threads)", rayon::current_num_threads())
-    }
-
-    fn shade(&mut self, settings: &VplSettings) -> Result<Shaded, RenderError> {
-        VplContext::shade(self, settings)
     }
 }
 
