@@ -2,14 +2,13 @@
 //! per stage, and the crate's GPU timestamp timer (`Timer`, the frame's and
 //! the path tracer's).
 //!
-//! **Contract**: a rendered frame ([`crate::frame::GpuVplFrame::render`],
-//! or [`stage_times`](crate::frame::GpuVplFrame::stage_times) after a
-//! timed record) reports one [`StageTime`] per stage it ran, in the order
-//! it ran them: a subset of [`Stage::ALL`] (`light update` with SLC only,
-//! `denoise`, `near field` and `temporal` when asked for), the glossy
-//! frame's second denoise and temporal accumulation (the specular
-//! correction's) each with a time of its own. Each time is the stage's
-//! own duration, never a running total.
+//! **Contract**: a rendered frame (`GpuVplFrame::render`, or
+//! `GpuVplFrame::stage_times` after a timed record) reports one
+//! [`StageTime`] per stage it ran, in the order it ran them: a subset of
+//! [`Stage::ALL`] (`light update` with SLC only, `denoise`, `near field`
+//! and `temporal` when asked for), the glossy frame's second denoise and
+//! temporal accumulation (the specular correction's) each with a time of
+//! its own. Each time is the stage's own duration, never a running total.
 //!
 //! **How**: where the adapter has usable GPU timestamps, a timestamp pair
 //! brackets each stage's render or compute pass
