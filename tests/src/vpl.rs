@@ -60,6 +60,7 @@ struct Readable {
 }
 
 impl Readable {
+    /// An output of `size` and its read-back buffer.
     fn new(gpu: &GpuContext, size: (u32, u32)) -> Readable {
         let texture = engine::output(gpu, size);
         let staging = engine::staging(gpu, &texture);

@@ -17,8 +17,11 @@ use slc_shared_shaders::{Features, Kernel};
 pub(crate) struct Compose {
     /// The primary light's direct irradiance per pixel.
     direct: wgpu::Buffer,
+    /// `primary_direct` and its bindings (fixed).
     direct_pipeline: wgpu::ComputePipeline,
     direct_group: wgpu::BindGroup,
+    /// `frame_compose` and its layout (the temporal stage binds its own
+    /// group).
     pipeline: wgpu::ComputePipeline,
     layout: KernelLayout,
     /// The composition reading the indirect pass's own targets.
@@ -33,11 +36,13 @@ pub(crate) struct Compose {
 /// light, materials and the HDR target.
 struct ComposeInputs<'a> {
     gpu: &'a GpuContext,
+    /// `frame_compose`'s layout.
     layout: &'a KernelLayout,
     /// The image uniforms, the G-buffer, the materials and the primary
     /// light's map uniforms (the glossy composition's direction to the
     /// light).
     raster: &'a Raster,
+    /// The direct light and the HDR target.
     direct: &'a wgpu::Buffer,
     output: &'a Target,
 }

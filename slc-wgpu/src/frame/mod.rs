@@ -489,6 +489,7 @@ impl GpuVplFrame {
         Ok((uploads, steps))
     }
 
+    /// Records `step` into `encoder`, with a timestamp pair from `timer`.
     fn record_step(
         &self,
         encoder: &mut wgpu::CommandEncoder,
@@ -675,6 +676,7 @@ enum Step {
 }
 
 impl Step {
+    /// The stage the step belongs to.
     fn stage(&self) -> Stage {
         match self {
             Step::Raster(s) => *s,

@@ -23,10 +23,13 @@ use wgpu::util::DeviceExt;
 pub(crate) struct RasterView {
     /// The view's [`MapParams`].
     pub(crate) params: wgpu::Buffer,
+    /// The uniforms and the materials, bound.
     group: wgpu::BindGroup,
+    /// `scene_raster` with the view's fragment entry point.
     pipeline: wgpu::RenderPipeline,
     /// The color targets, in the fragment entry point's order.
     pub(crate) colors: Vec<Target>,
+    /// The depth attachment (not stored).
     depth: Target,
 }
 
@@ -38,11 +41,14 @@ pub(crate) struct Raster {
     /// The materials as the kernels read them (raster, composition, the
     /// glossy indirect pass).
     pub(crate) material_table: wgpu::Buffer,
+    /// The triangles, three vertices each ([`GpuVertex`]).
     vertices: wgpu::Buffer,
     vertex_count: u32,
+    /// The scene's bounds (the views' depth ranges and the light's map).
     bounds: (Vec3, Vec3),
     /// Image width and height.
     size: (u32, u32),
+    /// The RSM's and the shadow map's edges.
     rsm_size: u32,
     shadow_size: u32,
     /// The camera the next frame renders from, and its raster uniforms.
