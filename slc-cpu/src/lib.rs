@@ -7,8 +7,7 @@
 //! - [`vpl`]: real-time indirect illumination with VPLs (reflective shadow
 //!   map, 8×8 interleaved sampling, tiled stochastic light culling,
 //!   cross-bilateral denoise), with the clamped-range and unculled baselines
-//!   and the all-VPL reference; [`vpl::VplContext`] is an
-//!   [`slc_scene::backend::IndirectShader`].
+//!   and the all-VPL reference ([`vpl::VplContext`]).
 //! - [`geometry`], [`gbuffer`]: BVH ray casting (obvhs) and the G-buffer.
 //! - [`pt`]: progressive path tracing with many triangle, point, spot and
 //!   IES lights: SLC over the BSH (all candidates or a k-slot reservoir),

@@ -1,12 +1,14 @@
-//! The contract both backends implement, one trait per application. The
-//! CLI and the cross-backend tests program against these traits; each
-//! backend builds its implementor from slc-scene data (a [`VplInputs`], a
-//! [`PtScene`]) and never from the other backend's types.
+//! The contract both backends implement for the path tracer
+//! (application B): the CLI programs against [`PathTracer`], and each
+//! backend builds its implementor from slc-scene data (a [`PtScene`]),
+//! never from the other backend's types. Application A has no trait: the
+//! CPU frame and the GPU's passes take different inputs (a scene's
+//! ray-cast G-buffer, an engine's textures) and return [`Shaded`] or
+//! textures.
 
 use crate::pt::{PtRender, PtSettings};
-use crate::vpl::{Shaded, VplSettings};
 #[cfg(doc)]
-use crate::{pt::PtScene, vpl::VplInputs};
+use crate::{pt::PtScene, vpl::Shaded};
 
 /// How a backend timed its work.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -15,31 +17,6 @@ pub enum Timing {
     Wall,
     /// GPU timestamps around the submitted passes.
     GpuTimestamps,
-}
-
-/// Application A: indirect irradiance at every G-buffer pixel from the VPLs
-/// of the [`VplInputs`] the shader was built for (8×8 interleaved subsets,
-/// tiled culling, optionally denoised by the backend).
-pub trait IndirectShader {
-    /// The backend's error.
-    type Error: std::error::Error + Send + Sync + 'static;
-    /// The backend, for reports (`"cpu (2 threads)"`, the GPU adapter).
-    fn describe(&self) -> String;
-    /// Shades one frame. `Shaded::denoised_ms` is `Some` when the backend
-    /// already applied the cross-bilateral filter. Takes `&mut self`, as
-    /// [`PathTracer::render`] does: a GPU backend records into buffers and
-    /// uniform slots it owns, so one frame at a time, without a lock.
-    fn shade(&mut self, settings: &VplSettings) -> Result<Shaded, Self::Error>;
-}
-
-impl<T: IndirectShader + ?Sized> IndirectShader for &mut T {
-    type Error = T::Error;
-    fn describe(&self) -> String {
-        (**self).describe()
-    }
-    fn shade(&mut self, settings: &VplSettings) -> Result<Shaded, Self::Error> {
-        (**self).shade(settings)
-    }
 }
 
 /// Application B: progressive path tracing of the [`PtScene`] the tracer
@@ -51,7 +28,9 @@ pub trait PathTracer {
     fn describe(&self) -> String;
     /// Renders `passes` more passes of one sample per pixel into `acc`.
     /// Pass numbers continue from `acc.passes`, so a render split over calls
-    /// equals one call.
+    /// equals one call. Takes `&mut self`: a GPU backend records into
+    /// buffers and uniform slots it owns, so one render at a time, without
+    /// a lock.
     fn render(
         &mut self,
         acc: &mut PtRender,
@@ -60,27 +39,8 @@ pub trait PathTracer {
     ) -> Result<Timing, Self::Error>;
 }
 
-/// A backend error with its type erased (see [`DynIndirectShader`]).
+/// A backend error with its type erased (see [`DynPathTracer`]).
 pub type BoxError = Box<dyn std::error::Error + Send + Sync>;
-
-/// [`IndirectShader`] with its error boxed: object safe, for callers that
-/// choose the backend at run time (`Box<dyn DynIndirectShader>`). Every
-/// `IndirectShader` is one.
-pub trait DynIndirectShader {
-    /// [`IndirectShader::describe`].
-    fn describe(&self) -> String;
-    /// [`IndirectShader::shade`].
-    fn shade(&mut self, settings: &VplSettings) -> Result<Shaded, BoxError>;
-}
-
-impl<T: IndirectShader> DynIndirectShader for T {
-    fn describe(&self) -> String {
-        IndirectShader::describe(self)
-    }
-    fn shade(&mut self, settings: &VplSettings) -> Result<Shaded, BoxError> {
-        IndirectShader::shade(self, settings).map_err(Into::into)
-    }
-}
 
 /// [`PathTracer`] with its error boxed: object safe, for callers that choose
 /// the backend at run time. Every `PathTracer` is one.

@@ -19,10 +19,9 @@
 //! backends draw their per-path random numbers differently, so they agree in
 //! expectation (the tests crate checks it), not pixel by pixel.
 
-use crate::kernel::{
-    Timer, UniformSlots, bind_group, bind_layout, pipeline, read_back, storage, zeroed,
-};
+use crate::kernel::{UniformSlots, bind_group, bind_layout, pipeline, read_back, storage, zeroed};
 use crate::lights::{GpuLightSet, WG};
+use crate::timing::Timer;
 use crate::{GpuContext, GpuError};
 use glam::Vec3;
 use obvhs::BvhBuildParams;

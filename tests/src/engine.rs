@@ -110,3 +110,62 @@ pub fn materials(gpu: &GpuContext, materials: &[slc_wgpu::passes::GpuMaterial]) 
         usage: wgpu::BufferUsages::STORAGE,
     })
 }
+
+/// Bytes per padded row of a read-back of `Rgba32Float` texture `t`.
+fn padded_row(t: &wgpu::Texture) -> u32 {
+    (t.width() * 16).next_multiple_of(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT)
+}
+
+/// A mappable buffer for [`read_via`] of `Rgba32Float` texture `t` (any
+/// width: rows padded to the copy alignment).
+pub fn staging(gpu: &GpuContext, t: &wgpu::Texture) -> wgpu::Buffer {
+    gpu.device.create_buffer(&wgpu::BufferDescriptor {
+        label: Some("staging"),
+        size: padded_row(t) as u64 * t.height() as u64,
+        usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
+        mapped_at_creation: false,
+    })
+}
+
+/// Reads `Rgba32Float` texture `t` back through `staging` (a [`staging`]
+/// buffer of `t`, kept by a caller that reads back every frame), once the
+/// work submitted before has run.
+pub fn read_via(
+    gpu: &GpuContext,
+    t: &wgpu::Texture,
+    staging: &wgpu::Buffer,
+) -> Result<Vec<[f32; 4]>, slc_wgpu::GpuError> {
+    let (w, h, row) = (t.width() as usize, t.height(), padded_row(t));
+    let mut enc = gpu
+        .device
+        .create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("read back") });
+    enc.copy_texture_to_buffer(
+        t.as_image_copy(),
+        wgpu::TexelCopyBufferInfo {
+            buffer: staging,
+            layout: wgpu::TexelCopyBufferLayout {
+                offset: 0,
+                bytes_per_row: Some(row),
+                rows_per_image: None,
+            },
+        },
+        t.size(),
+    );
+    gpu.queue.submit([enc.finish()]);
+    let slice = staging.slice(..);
+    slice.map_async(wgpu::MapMode::Read, |_| {});
+    gpu.wait()?;
+    let bytes =
+        slice.get_mapped_range().map_err(|e| slc_wgpu::GpuError::Device(e.to_string()))?.to_vec();
+    staging.unmap();
+    Ok(bytes
+        .chunks_exact(row as usize)
+        .flat_map(|r| bytemuck::pod_collect_to_vec::<u8, [f32; 4]>(&r[..w * 16]))
+        .take(w * h as usize)
+        .collect())
+}
+
+/// [`read_via`] through a buffer made for the call.
+pub fn read(gpu: &GpuContext, t: &wgpu::Texture) -> Result<Vec<[f32; 4]>, slc_wgpu::GpuError> {
+    read_via(gpu, t, &staging(gpu, t))
+}

@@ -19,7 +19,9 @@
 
 use std::sync::OnceLock;
 
+pub mod direct;
 pub mod engine;
+pub mod vpl;
 
 /// The shared GPU context once made, or why there is none.
 static CTX: OnceLock<Result<slc_wgpu::GpuContext, String>> = OnceLock::new();

@@ -225,7 +225,7 @@ fn path_tracer_and_direct_light_settings() {
         );
     }
     let d = LightSet::new(vec![light]).unwrap();
-    let mut gd = slc_wgpu::direct::GpuDirect::new(g, &d).unwrap();
+    let mut gd = slc_tests::direct::GpuDirect::new(g, &d).unwrap();
     rejects(
         "gpu points vs normals",
         "normals",

@@ -30,8 +30,8 @@ use slc_core::light::{IesLight, Light, PointLight, SpotLight, TriangleLight};
 use slc_core::range::RangeParams;
 use slc_cpu::direct::DirectLights;
 use slc_scene::lights::LightSet;
+use slc_tests::direct::GpuDirect;
 use slc_tests::{gpu, shared_data};
-use slc_wgpu::direct::GpuDirect;
 use std::sync::{Arc, OnceLock};
 
 fn ies() -> Arc<IesProfile> {

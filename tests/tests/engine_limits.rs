@@ -127,7 +127,7 @@ fn downlevel_constructors_are_typed_errors() {
                 slc_wgpu::frame::GpuVplFrame::new(&gpu, &scene, &desc).map(|_| ())
             }),
         ),
-        ("GpuVpl", Box::new(|| slc_wgpu::vpl::GpuVpl::new(&gpu, cpu.inputs()).map(|_| ()))),
+        ("GpuVpl", Box::new(|| slc_tests::vpl::GpuVpl::new(&gpu, cpu.inputs()).map(|_| ()))),
         (
             "IndirectPass (RSM, glossy)",
             Box::new(|| {
@@ -141,7 +141,7 @@ fn downlevel_constructors_are_typed_errors() {
         (
             "GpuDirect",
             Box::new(|| {
-                let mut d = slc_wgpu::direct::GpuDirect::new(&gpu, &set)?;
+                let mut d = slc_tests::direct::GpuDirect::new(&gpu, &set)?;
                 d.shade(&[Vec3::ZERO], &[Vec3::Y], &RangeParams::new(0.01, 1.0).unwrap(), 1, 0)
                     .map(|_| ())
             }),
@@ -294,7 +294,7 @@ fn ten_thousand_records_allocate_nothing() {
 /// groups, pipelines, buffers and their memory: nothing accumulates).
 fn gpu_vpl_shades_allocate_nothing(gpu: &GpuContext, scene: &Scene) {
     let ctx = slc_cpu::vpl::VplContext::new(scene, 16, 16, 8, None).unwrap();
-    let mut gv = slc_wgpu::vpl::GpuVpl::new(gpu, ctx.inputs()).unwrap();
+    let mut gv = slc_tests::vpl::GpuVpl::new(gpu, ctx.inputs()).unwrap();
     let base =
         VplSettings { culling: Culling::stochastic(0.01, 1.0).unwrap(), ..VplSettings::default() };
     let kinds = [
@@ -352,7 +352,7 @@ fn glossy_pass_fits_webgpu_default_limits() {
     let gpu = GpuContext::from_device(device.clone(), queue);
     let scene = Scene::cornell_box_glossy();
     let ctx = slc_cpu::vpl::VplContext::new(&scene, 16, 16, 8, None).unwrap();
-    let mut gv = slc_wgpu::vpl::GpuVpl::new(&gpu, ctx.inputs()).unwrap();
+    let mut gv = slc_tests::vpl::GpuVpl::new(&gpu, ctx.inputs()).unwrap();
     let culling = Culling::stochastic(0.01, 1.0).unwrap();
     let shaded = gv.shade(&VplSettings { culling, ..VplSettings::default() }).unwrap();
     assert!(shaded.specular.iter().any(|s| s.abs().max_element() > 0.0), "no specular correction");

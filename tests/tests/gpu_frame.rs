@@ -19,6 +19,7 @@ use slc_scene::scene::{Camera, PrimaryLight, Scene};
 use slc_scene::temporal::TemporalSettings;
 use slc_scene::vpl::{Culling, VplSettings};
 use slc_tests::gpu;
+use slc_tests::vpl::GpuVpl;
 use slc_wgpu::frame::{FrameDesc, GpuVplFrame, Stage, indirect_settings};
 use slc_wgpu::passes::IndirectSettings;
 
@@ -572,6 +573,54 @@ fn timestamp_path_times_every_stage() {
     assert_eq!(frame.stage_times().unwrap().expect("timed").len(), want.len());
 }
 
+/// [`GpuVplFrame::render_reference`] (every VPL at every pixel of the
+/// frame's own G-buffer and RSM, composed on the GPU) is what the CLI
+/// composed on the host before it: the frame's inputs read back
+/// ([`GpuVplFrame::read_inputs`]), shaded by `GpuVpl`'s reference and
+/// composed with the frame's direct light ([`GpuVplFrame::read_direct`],
+/// `GBuffer::radiance`), pixel for pixel within 1e-4 relative (the
+/// GPU's composition and BRDF round differently), Lambertian and glossy.
+/// The reference has no culling, denoise, near field or temporal stage,
+/// and leaves the frame's own frames as they were.
+fn reference_matches_the_host_composition() {
+    let Some(gpu) = gpu() else { return };
+    let desc =
+        FrameDesc { width: W, height: H, rsm_size: RSM, shadow_size: 1024, min_distance: None };
+    for scene in [Scene::cornell_box(), Scene::cornell_box_glossy()] {
+        let mut frame = GpuVplFrame::new(gpu, &scene, &desc).unwrap();
+        frame.set_temporal(Some(TemporalSettings::default())).unwrap();
+        let st = on(&frame, &settings(culling("slc"), true));
+        let out = frame.render_reference(&st).unwrap();
+        let stages: Vec<Stage> = out.stages.iter().map(|t| t.stage).collect();
+        for absent in [Stage::LightUpdate, Stage::Denoise, Stage::NearField, Stage::Temporal] {
+            assert!(!stages.contains(&absent), "{}: the reference ran {absent:?}", scene.name);
+        }
+        let inputs = frame.read_inputs().unwrap();
+        let direct = frame.read_direct().unwrap();
+        let s = settings(Culling::Reference, false);
+        let shaded = GpuVpl::new(gpu, &inputs).unwrap().shade(&s).unwrap();
+        let glossy = scene.materials.iter().any(|m| m.has_specular());
+        assert_eq!(shaded.specular.is_empty(), !glossy, "{}: specular correction", scene.name);
+        let gb = &inputs.gbuffer;
+        let (mut worst, mut lit) = (0.0f32, 0);
+        for i in 0..direct.len() {
+            let sp = shaded.specular.get(i).copied();
+            let host = gb.radiance(i, &scene.primary, direct[i], shaded.irradiance[i], sp);
+            let d = (out.image.data[i] - host).abs().max_element();
+            worst = worst.max(d / host.max_element().max(1e-6));
+            lit += (host.max_element() > 0.0) as usize;
+        }
+        eprintln!("{} reference vs host composition: worst relative {worst:.2e}", scene.name);
+        assert!(lit * 2 > direct.len(), "{}: {lit} lit pixels", scene.name);
+        assert!(worst <= 1e-4, "{}: reference differs by {worst:.3e}", scene.name);
+        // The frame's own frames are unchanged by a reference in between.
+        frame.set_temporal(None).unwrap();
+        let a = frame.render(&st).unwrap().image;
+        frame.render_reference(&st).unwrap();
+        assert_eq!(frame.render(&st).unwrap().image.data, a.data, "{}", scene.name);
+    }
+}
+
 slc_tests::harness!(
     Gpu: timestamp_path_times_every_stage,
     Gpu: spot_frame_matches_the_cpu_frame,
@@ -585,4 +634,5 @@ slc_tests::harness!(
     Gpu: moved_light_renders_as_a_new_frame,
     Gpu: moved_camera_renders_as_a_new_frame,
     Gpu: temporal_frame_is_the_mean_of_its_frames,
+    Gpu: reference_matches_the_host_composition,
 );

@@ -20,13 +20,13 @@ use slc_scene::scene::Scene;
 use slc_scene::vpl::{Culling, PERIOD, Shaded, VplSettings};
 use slc_tests::engine::{self, texture, upload};
 use slc_tests::gpu;
+use slc_tests::vpl::GpuVpl;
 use slc_wgpu::GpuContext;
 use slc_wgpu::GpuError;
 use slc_wgpu::passes::{
     GBuffer, GpuMaterial, GpuVplRecord, IndirectInputs, IndirectMaterials, IndirectPass,
     IndirectPassDesc, Surface, SurfaceDesc, VplInput, VplSourceDesc, vpl_buffer,
 };
-use slc_wgpu::vpl::GpuVpl;
 
 const W: u32 = 64;
 const H: u32 = 48;

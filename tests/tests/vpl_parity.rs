@@ -27,7 +27,7 @@ use slc_cpu::vpl::VplContext;
 use slc_scene::scene::Scene;
 use slc_scene::vpl::{Culling, NEAR_FACTOR, Shaded, VplSettings};
 use slc_tests::gpu;
-use slc_wgpu::vpl::GpuVpl;
+use slc_tests::vpl::GpuVpl;
 use std::sync::{Mutex, MutexGuard, OnceLock};
 
 fn cpu_ctx() -> &'static VplContext {

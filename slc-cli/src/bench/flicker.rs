@@ -192,10 +192,9 @@ impl Frames for CpuFrames {
     }
 }
 
-/// The GPU's: a plain frame (spatial filter, unculled, the reference's
-/// inputs) and two accumulating ones.
+/// The GPU's: a plain frame (spatial filter, unculled, and the reference:
+/// `GpuVplFrame::render_reference`) and two accumulating ones.
 struct GpuFrames {
-    gpu: slc_wgpu::GpuContext,
     plain: slc_wgpu::frame::GpuVplFrame,
     accumulated: slc_wgpu::frame::GpuVplFrame,
     independent: slc_wgpu::frame::GpuVplFrame,
@@ -218,12 +217,9 @@ impl Frames for GpuFrames {
     }
 
     fn reference(&mut self) -> anyhow::Result<Image> {
-        let s = VplSettings { culling: Culling::None, ..VplSettings::default() };
-        self.plain.render(&slc_wgpu::frame::indirect_settings(&s, self.plain.min_distance())?)?;
-        let inputs = self.plain.read_inputs()?;
-        let shaded = slc_wgpu::vpl::GpuVpl::new(&self.gpu, &inputs)?
-            .shade(&VplSettings { culling: Culling::Reference, ..s })?;
-        Ok(self.plain.compose_with(&inputs, &shaded.irradiance, &shaded.specular)?)
+        let min_distance = self.plain.min_distance();
+        let all = slc_wgpu::passes::IndirectSettings { min_distance, ..Default::default() };
+        Ok(self.plain.render_reference(&all)?.image)
     }
 
     fn methods(&mut self, slc: &VplSettings, fresh: &VplSettings) -> anyhow::Result<Vec<Image>> {
@@ -285,7 +281,7 @@ pub fn run(a: &BenchArgs, frames: u32) -> anyhow::Result<()> {
         };
         let (plain, accumulated, independent) = (make(false)?, make(true)?, make(true)?);
         let backend = format!("gpu: {}", g.describe());
-        (Box::new(GpuFrames { gpu: g, plain, accumulated, independent, pose: None }), backend)
+        (Box::new(GpuFrames { plain, accumulated, independent, pose: None }), backend)
     } else {
         let ctx = slc_cpu::vpl::VplContext::new(
             &r.scene,

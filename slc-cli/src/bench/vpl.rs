@@ -162,9 +162,9 @@ pub(super) fn run_cpu(a: BenchArgs) -> anyhow::Result<()> {
 
 /// `slc bench --backend gpu`: the whole VPL frame on the GPU per
 /// configuration, every stage timed; the reference is every VPL at every
-/// pixel of the frame's own rasterized G-buffer and RSM (shaded on the GPU,
-/// composed with the frame's direct light), so the RMSE measures the
-/// methods, not rasterization against ray casting.
+/// pixel of the frame's own rasterized G-buffer and RSM, shaded and
+/// composed on the GPU (`GpuVplFrame::render_reference`), so the RMSE
+/// measures the methods, not rasterization against ray casting.
 pub(super) fn run_gpu(a: BenchArgs) -> anyhow::Result<()> {
     let r = a.scene.resolve()?;
     let gpu = gpu_context(Backend::Gpu)?.context("no GPU context")?;
@@ -172,15 +172,11 @@ pub(super) fn run_gpu(a: BenchArgs) -> anyhow::Result<()> {
     let configs = vpl_configs(&a, r.exposure)?;
     let bar = progress(configs.len())?;
     bar.set_message("reference (all VPLs at every pixel, on the GPU)");
-    let warm = VplSettings { culling: Culling::None, ..VplSettings::default() };
     // The CLI's settings into the frame's own (its indirect pass's).
     let min_distance = frame.min_distance();
     let pass_settings = |s: &VplSettings| slc_wgpu::frame::indirect_settings(s, min_distance);
-    frame.render(&pass_settings(&warm)?)?;
-    let inputs = frame.read_inputs()?;
-    let mut all = slc_wgpu::vpl::GpuVpl::new(&gpu, &inputs)?;
-    let shaded = all.shade(&VplSettings { culling: Culling::Reference, ..warm })?;
-    let reference = frame.compose_with(&inputs, &shaded.irradiance, &shaded.specular)?;
+    let all = slc_wgpu::passes::IndirectSettings { min_distance, ..Default::default() };
+    let reference = frame.render_reference(&all)?.image;
     bar.inc(1);
     let mut runs = Vec::new();
     let mut timing = slc_scene::backend::Timing::Wall;

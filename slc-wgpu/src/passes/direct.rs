@@ -90,8 +90,9 @@
 use super::{
     Culling, GBuffer, SurfaceDesc, ViewCache, check_size, check_view, kernel_form, output_format,
 };
-use crate::kernel::{KernelLayout, UniformSlots, Uploads, check_kernels};
+use crate::kernel::{KernelLayout, UniformSlots, check_kernels};
 use crate::lights::{GpuLightSet, TABLES, WG, check_light_limits, light_set, types_within};
+use crate::record::Uploads;
 use crate::{GpuContext, GpuError};
 use glam::Vec3;
 use slc_core::light::Light;

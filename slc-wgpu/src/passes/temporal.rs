@@ -33,9 +33,9 @@ use super::{
     FLOAT_INPUTS, GBuffer, SurfaceDesc, ViewCache, check_optional, check_size, check_view,
     output_format,
 };
-use crate::frame::Stage;
-use crate::kernel::{KernelLayout, UniformSlots, Uploads, check_kernels, zeroed};
-use crate::passes::indirect::Dispatch;
+use crate::kernel::{KernelLayout, UniformSlots, check_kernels, zeroed};
+use crate::record::{Dispatch, Uploads};
+use crate::timing::Stage;
 use crate::{GpuContext, GpuError};
 use slc_scene::temporal::{TemporalSettings, TemporalView};
 use slc_shared_shaders::layout::{TemporalParams, ViewParams};

@@ -1,19 +1,22 @@
-//! Direct light from many lights at arbitrary shading points on the GPU, a
-//! thin caller of the engine's [`DirectPass`]: the points and normals are
-//! uploaded as a position G-buffer (point `i` at texel `i`, row-major, so
-//! its random streams are the pass's pixel `i`), the pass is recorded with
-//! uniform picks of `k =` [`DIRECT_K`] (the CPU's reservoir), and the
-//! output is read back. Unshadowed, the counterpart of the CPU backend's
+//! [`GpuDirect`]: direct light from many lights at arbitrary shading points
+//! on the GPU, a thin caller of slc-wgpu's [`DirectPass`] through its
+//! public API: the points and normals are uploaded as a position G-buffer
+//! (point `i` at texel `i`, row-major, so its random streams are the
+//! pass's pixel `i`), the pass is recorded with uniform picks of `k =`
+//! [`DIRECT_K`] (the CPU's reservoir), and the output is read back.
+//! Unshadowed, the counterpart of the CPU backend's
 //! `slc_cpu::direct::DirectLights`, which draws the same random numbers.
 
-use crate::passes::{
+use crate::engine;
+use slc_core::light::Light;
+use slc_core::range::RangeParams;
+use slc_scene::lights::{DIRECT_K, Direct, LightSet};
+use slc_wgpu::glam::Vec3;
+use slc_wgpu::passes::{
     Culling, DirectInputs, DirectPass, DirectPassDesc, DirectSelection, DirectSettings, GBuffer,
     Surface, SurfaceDesc,
 };
-use crate::{GpuContext, GpuError};
-use glam::Vec3;
-use slc_core::range::RangeParams;
-use slc_scene::lights::{DIRECT_K, Direct, LightSet};
+use slc_wgpu::{GpuContext, GpuError, LightTypes};
 
 /// Texels per row of the point textures.
 const ROW: u32 = 256;
@@ -26,11 +29,23 @@ pub struct GpuDirect {
     pass: Option<DirectPass>,
 }
 
+/// The light types of `lights` (what the pass compiles).
+fn light_types(lights: &[Light]) -> LightTypes {
+    let has = |f: fn(&Light) -> bool| lights.iter().any(f);
+    LightTypes {
+        point: has(|l| matches!(l, Light::Point(_))),
+        spot: has(|l| matches!(l, Light::Spot(_))),
+        ies: has(|l| matches!(l, Light::Ies(_))),
+        triangle: has(|l| matches!(l, Light::Triangle(_))),
+        vpl: has(|l| matches!(l, Light::Vpl(_))),
+    }
+}
+
 impl GpuDirect {
     /// Keeps the lights; the pass is built at the first [`GpuDirect::shade`]
-    /// (and again when the number of rows of points changes).
+    /// (and again when the number of rows of points changes), checking the
+    /// device's limits for them then.
     pub fn new(gpu: &GpuContext, lights: &LightSet) -> Result<Self, GpuError> {
-        crate::lights::check_light_limits(gpu, lights.len() as u64, 0)?;
         Ok(GpuDirect { gpu: gpu.clone(), lights: lights.clone(), pass: None })
     }
 
@@ -67,7 +82,7 @@ impl GpuDirect {
                 surface: SurfaceDesc::Position,
                 output_format: wgpu::TextureFormat::Rgba32Float,
                 selection: DirectSelection::Uniform { k: DIRECT_K as u32 },
-                light_types: crate::lights::light_set(self.lights.lights()),
+                light_types: light_types(self.lights.lights()),
                 ..DirectPassDesc::new(w, h)
             };
             self.pass = Some(DirectPass::new(&gpu, &self.lights, &desc)?);
@@ -84,20 +99,12 @@ impl GpuDirect {
             p4[i] = [p.x, p.y, p.z, if p.is_nan() { 0.0 } else { 1.0 }];
             n4[i] = normals[i].extend(0.0).to_array();
         }
-        let upload =
-            |label: &str, data: &[[f32; 4]]| crate::frame::upload_rgba32(&gpu, label, (w, h), data);
-        let (position, normal) = (upload("slc points", &p4), upload("slc normals", &n4));
-        let output = crate::frame::rgba32_target(
-            &gpu,
-            "slc direct",
-            (w, h),
-            wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::COPY_SRC,
+        let (pv, nv) = (
+            engine::upload(&gpu, "slc points", (w, h), &p4),
+            engine::upload(&gpu, "slc normals", (w, h), &n4),
         );
-        let (pv, nv, ov) = (
-            position.create_view(&Default::default()),
-            normal.create_view(&Default::default()),
-            output.create_view(&Default::default()),
-        );
+        let output = engine::output(&gpu, (w, h));
+        let ov = output.create_view(&Default::default());
         let inputs = DirectInputs::new(
             GBuffer { surface: Surface::Position(&pv), normal: &nv, eye: Vec3::ZERO },
             &ov,
@@ -111,7 +118,7 @@ impl GpuDirect {
             &DirectSettings { culling: Culling::Stochastic(*params), seed, frame },
         )?;
         gpu.queue.submit([enc.finish()]);
-        let data = crate::frame::read_texture(&gpu, &output)?;
+        let data = engine::read(&gpu, &output)?;
         Ok(data[..n]
             .iter()
             .map(|d| Direct { irradiance: Vec3::new(d[0], d[1], d[2]), in_range: d[3] as u32 })

@@ -103,262 +103,33 @@
 //! # Ok(()) }
 //! ```
 
-use super::{
-    Culling, FLOAT_INPUTS, GBuffer, SurfaceDesc, ViewCache, check_optional, check_size, check_view,
-    kernel_form, output_format,
-};
-use crate::frame::Stage;
-use crate::kernel::{KernelLayout, UniformSlots, Uploads, check_kernels, storage, zeroed};
+mod inputs;
+
+#[cfg(doc)]
+use super::SurfaceDesc;
+use super::{Culling, ViewCache, check_size, kernel_form, output_format};
+use crate::kernel::{KernelLayout, UniformSlots, check_kernels, zeroed};
+use crate::record::{Dispatch, Recording, Uploads};
+use crate::timing::Stage;
 use crate::{GpuContext, GpuError};
-use slc_core::interleave::{NEAR_BLOCK, interleave_shift};
-use slc_scene::vpl::{NEAR_FACTOR, PERIOD};
-use slc_shared_shaders::layout::{
-    FrameParams, GpuLight, GpuMaterial, GpuNearBox, GpuVplRecord, PackParams, ViewParams, VplParams,
+pub use inputs::{
+    IndirectInputs, IndirectMaterials, IndirectPassDesc, IndirectSettings, TILE_LIST, VplInput,
+    VplSourceDesc, vpl_buffer,
 };
+use slc_core::interleave::{NEAR_BLOCK, interleave_shift};
+use slc_scene::vpl::PERIOD;
+use slc_shared_shaders::layout::{
+    FrameParams, GpuLight, GpuNearBox, PackParams, ViewParams, VplParams,
+};
+#[cfg(doc)]
+use slc_shared_shaders::layout::{GpuMaterial, GpuVplRecord};
 use slc_shared_shaders::{CullKind, Features, Kernel, LightTypes, VplSource};
 
-/// Tile edge of the 2-D kernels, in pixels.
-const TILE: u32 = crate::vpl::TILE;
+/// Tile edge of the 2-D kernels (`vpl_tiled`'s in sub-image pixels), in
+/// pixels.
+pub const TILE: u32 = 8;
 /// Workgroup size of the 1-D kernels.
 const WG: u32 = 64;
-
-/// Where the indirect pass gets its VPLs, fixed at creation.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum VplSourceDesc {
-    /// A reflective shadow map of `size × size` texels (`size` a multiple of
-    /// 8): one VPL per texel.
-    Rsm {
-        /// Edge in texels.
-        size: u32,
-    },
-    /// A buffer of `count` [`GpuVplRecord`]s (`count` a multiple of 64).
-    Buffer {
-        /// Number of VPLs.
-        count: u32,
-    },
-}
-
-impl VplSourceDesc {
-    fn count(self) -> u64 {
-        match self {
-            VplSourceDesc::Rsm { size } => size as u64 * size as u64,
-            VplSourceDesc::Buffer { count } => count as u64,
-        }
-    }
-}
-
-/// What an [`IndirectPass`] is built for.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct IndirectPassDesc {
-    /// G-buffer and output width.
-    pub width: u32,
-    /// G-buffer and output height.
-    pub height: u32,
-    /// Where the G-buffer's surface comes from.
-    pub surface: SurfaceDesc,
-    /// The VPL source.
-    pub vpls: VplSourceDesc,
-    /// Format of the output storage texture: `Rgba16Float` or `Rgba32Float`.
-    pub output_format: wgpu::TextureFormat,
-    /// Interleaved sampling (the paper's): each pixel of an 8×8 block
-    /// shades its own subset of 1/64 of the VPLs at 64 times their flux,
-    /// and the denoise filters over the block. `false`: every VPL at every
-    /// pixel (period 1), 64 times the work: with [`Culling::None`], no
-    /// denoise and no near field (`near_radius: Some(0.0)`), the exact sum,
-    /// a reference to measure the interleaved image against.
-    pub interleaved: bool,
-    /// Capacity of `vpl_tiled`'s per-tile light list, in lights (at least
-    /// 1; 4 bytes of workgroup memory each): a subset with more lights
-    /// streams through it in chunks. Default [`TILE_LIST`](crate::vpl::TILE_LIST).
-    pub tile_list: u32,
-    /// Built with the material input (see the module docs): every record
-    /// takes [`IndirectInputs::materials`] and also writes the specular
-    /// correction `S` of glossy pixels. `false` (the default): Lambertian,
-    /// no material input.
-    pub glossy: bool,
-}
-
-impl IndirectPassDesc {
-    /// `width × height` with VPLs from `vpls`, a `Depth32Float` depth
-    /// buffer, `Rgba16Float` output, interleaved, the default tile list,
-    /// Lambertian (no material input).
-    pub fn new(width: u32, height: u32, vpls: VplSourceDesc) -> IndirectPassDesc {
-        IndirectPassDesc {
-            width,
-            height,
-            surface: SurfaceDesc::Depth { format: wgpu::TextureFormat::Depth32Float },
-            vpls,
-            output_format: wgpu::TextureFormat::Rgba16Float,
-            interleaved: true,
-            tile_list: crate::vpl::TILE_LIST,
-            glossy: false,
-        }
-    }
-
-    /// The interleave period: [`PERIOD`], or 1 when not interleaved.
-    fn period(&self) -> u32 {
-        if self.interleaved { PERIOD } else { 1 }
-    }
-}
-
-/// The VPLs of one frame.
-#[derive(Clone, Copy, Debug)]
-pub enum VplInput<'a> {
-    /// RSM textures (see the module table).
-    Rsm {
-        /// World position of the texel's surface.
-        position: &'a wgpu::TextureView,
-        /// Its unit normal.
-        normal: &'a wgpu::TextureView,
-        /// Reflected flux (rgb).
-        flux: &'a wgpu::TextureView,
-    },
-    /// A storage buffer of [`GpuVplRecord`]s.
-    Buffer(&'a wgpu::Buffer),
-}
-
-/// The material input of a glossy pass ([`IndirectPassDesc::glossy`]).
-#[derive(Clone, Copy, Debug)]
-pub struct IndirectMaterials<'a> {
-    /// [`GpuMaterial`]s; a pixel's index is its normal texel's `w`.
-    pub table: &'a wgpu::Buffer,
-    /// Where the specular correction `S` goes (the output's format and size,
-    /// `STORAGE_BINDING`).
-    pub specular: &'a wgpu::TextureView,
-}
-
-/// The engine's resources for one record.
-#[derive(Clone, Copy, Debug)]
-pub struct IndirectInputs<'a> {
-    /// The G-buffer.
-    pub gbuffer: GBuffer<'a>,
-    /// The VPLs.
-    pub vpls: VplInput<'a>,
-    /// Where the irradiance goes.
-    pub output: &'a wgpu::TextureView,
-    /// The materials and the specular output: required by a glossy pass,
-    /// refused by a Lambertian one (`None`).
-    pub materials: Option<IndirectMaterials<'a>>,
-}
-
-/// Per-record settings of the indirect pass: all it honours.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct IndirectSettings {
-    /// How VPLs are culled (stochastic, clamped or not at all).
-    pub culling: Culling,
-    /// Seed of the per-VPL ξ.
-    pub seed: u32,
-    /// Frame number (a new ξ set and a new shift of the subset map per
-    /// frame).
-    pub frame: u32,
-    /// Give every VPL this ξ (in `[0, 1)`) instead of its own
-    /// `xi_for(seed, frame, i)`: not an estimator on its own, but averaging
-    /// records over a grid of ξ is quadrature of the expectation over ξ
-    /// (how the tests prove the pass unbiased). `None` (the default) for
-    /// rendering.
-    pub fixed_xi: Option<f32>,
-    /// Cross-bilateral filter over the interleaving window.
-    pub denoise: bool,
-    /// Clamp distance of the VPL fall-off `1/max(d², min_distance²)`
-    /// (scene units, finite, ≥ 0).
-    pub min_distance: f32,
-    /// Near-field radius `R_n`: VPLs closer than it are shaded at every
-    /// pixel, unscaled and undenoised (`None`:
-    /// [`NEAR_FACTOR`] × `min_distance`; `Some(0)`: no split).
-    pub near_radius: Option<f32>,
-}
-
-impl Default for IndirectSettings {
-    /// Stochastic culling at the default error bound
-    /// ([`Culling::default`]), exposure 1; seed 1, frame 0; denoised; 5 cm
-    /// clamp distance, the default near field.
-    fn default() -> Self {
-        IndirectSettings {
-            culling: Culling::default(),
-            seed: 1,
-            frame: 0,
-            fixed_xi: None,
-            denoise: true,
-            min_distance: 0.05,
-            near_radius: None,
-        }
-    }
-}
-
-impl IndirectSettings {
-    /// `R_n²` of the near-field split.
-    fn near_r2(&self) -> f32 {
-        let r = self.near_radius.unwrap_or(NEAR_FACTOR * self.min_distance);
-        r * r
-    }
-}
-
-/// A record of a pass: its uniforms, copied into place first, then its
-/// dispatches.
-pub(crate) struct Recording {
-    /// The record's uniform values.
-    pub(crate) uploads: Uploads,
-    /// Its dispatches, in order.
-    pub(crate) dispatches: Vec<Dispatch>,
-}
-
-impl Recording {
-    /// Records the uploads, then one compute pass (`label`) of every
-    /// dispatch.
-    pub(crate) fn record(&self, gpu: &GpuContext, encoder: &mut wgpu::CommandEncoder, label: &str) {
-        self.uploads.record(gpu, encoder);
-        let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
-            label: Some(label),
-            timestamp_writes: None,
-        });
-        for d in &self.dispatches {
-            d.record(&mut pass);
-        }
-    }
-}
-
-/// One recorded dispatch of a pass: its stage, pipeline, bind group (group
-/// 0) with its dynamic offset (none when `offsets` is empty), and workgroup counts.
-pub(crate) struct Dispatch {
-    pub(crate) stage: Stage,
-    pipeline: wgpu::ComputePipeline,
-    group: wgpu::BindGroup,
-    offsets: Vec<u32>,
-    groups: [u32; 3],
-}
-
-impl Dispatch {
-    /// Records the dispatch into `pass`.
-    pub(crate) fn record(&self, pass: &mut wgpu::ComputePass) {
-        pass.set_pipeline(&self.pipeline);
-        pass.set_bind_group(0, &self.group, &self.offsets);
-        pass.dispatch_workgroups(self.groups[0], self.groups[1], self.groups[2]);
-    }
-
-    /// A dispatch of `pipeline` with `group` at uniform offset `offset`
-    /// over `groups` workgroups.
-    pub(crate) fn new(
-        stage: Stage,
-        pipeline: &wgpu::ComputePipeline,
-        group: wgpu::BindGroup,
-        offset: Option<u32>,
-        groups: [u32; 3],
-    ) -> Self {
-        Dispatch::with_offsets(stage, pipeline, group, offset.into_iter().collect(), groups)
-    }
-
-    /// [`Dispatch::new`] with a dynamic offset per dynamic uniform of the
-    /// group, in binding order.
-    fn with_offsets(
-        stage: Stage,
-        pipeline: &wgpu::ComputePipeline,
-        group: wgpu::BindGroup,
-        offsets: Vec<u32>,
-        groups: [u32; 3],
-    ) -> Self {
-        Dispatch { stage, pipeline: pipeline.clone(), group, offsets, groups }
-    }
-}
 
 /// The bind groups of the kernels that read the engine's G-buffer in place
 /// (besides the export, whose group also binds the output), for one pair
@@ -598,85 +369,7 @@ impl IndirectPass {
 
     /// Checks `inputs` against the descriptor (formats, sizes, usages).
     pub fn check(&self, inputs: &IndirectInputs) -> Result<(), GpuError> {
-        self.check_inputs(inputs, 0, 0).map(|_| ())
-    }
-
-    fn check_inputs(
-        &self,
-        inputs: &IndirectInputs,
-        seed: u32,
-        frame: u32,
-    ) -> Result<ViewParams, GpuError> {
-        let size = (self.desc.width, self.desc.height);
-        let tex = wgpu::TextureUsages::TEXTURE_BINDING;
-        let view = inputs.gbuffer.check(self.desc.surface, size, seed, frame)?;
-        check_view(
-            "output",
-            inputs.output,
-            size,
-            &[self.desc.output_format],
-            wgpu::TextureUsages::STORAGE_BINDING,
-        )?;
-        check_optional(
-            "materials",
-            inputs.materials.is_some(),
-            self.desc.glossy,
-            "a material table and a specular output",
-            "IndirectPassDesc::glossy",
-        )?;
-        if let Some(m) = inputs.materials {
-            check_view(
-                "specular output",
-                m.specular,
-                size,
-                &[self.desc.output_format],
-                wgpu::TextureUsages::STORAGE_BINDING,
-            )?;
-            let entry = std::mem::size_of::<GpuMaterial>() as u64;
-            if m.table.size() < entry || !m.table.usage().contains(wgpu::BufferUsages::STORAGE) {
-                return Err(GpuError::Binding {
-                    name: "material table",
-                    expected: format!(
-                        "at least {entry} bytes (one GpuMaterial) with STORAGE usage"
-                    ),
-                    found: format!("{} bytes, {:?}", m.table.size(), m.table.usage()),
-                });
-            }
-        }
-        match (inputs.vpls, self.desc.vpls) {
-            (VplInput::Rsm { position, normal, flux }, VplSourceDesc::Rsm { size }) => {
-                check_view("RSM position", position, (size, size), &FLOAT_INPUTS, tex)?;
-                check_view("RSM normal", normal, (size, size), &FLOAT_INPUTS, tex)?;
-                check_view("RSM flux", flux, (size, size), &FLOAT_INPUTS, tex)?;
-            }
-            (VplInput::Buffer(b), VplSourceDesc::Buffer { count }) => {
-                let need = count as u64 * std::mem::size_of::<GpuVplRecord>() as u64;
-                if b.size() < need || !b.usage().contains(wgpu::BufferUsages::STORAGE) {
-                    return Err(GpuError::Binding {
-                        name: "VPL buffer",
-                        expected: format!(
-                            "at least {need} bytes ({count} GpuVplRecords) with STORAGE usage"
-                        ),
-                        found: format!("{} bytes, {:?}", b.size(), b.usage()),
-                    });
-                }
-            }
-            (VplInput::Rsm { .. }, VplSourceDesc::Buffer { .. }) => {
-                return Err(GpuError::Binding {
-                    name: "VPLs",
-                    expected: "a VPL buffer (the pass was built for one)".into(),
-                    found: "RSM textures".into(),
-                });
-            }
-            (VplInput::Buffer(_), VplSourceDesc::Rsm { .. }) => {
-                return Err(GpuError::Binding {
-                    name: "VPLs",
-                    expected: "RSM textures (the pass was built for an RSM)".into(),
-                    found: "a buffer".into(),
-                });
-            }
-        }
-        Ok(view)
+        inputs.check(&self.desc, 0, 0).map(|_| ())
     }
 
     /// Records the frame into `encoder`: its uniforms' copy, then one
@@ -701,7 +394,7 @@ impl IndirectPass {
         inputs: &IndirectInputs,
         st: &IndirectSettings,
     ) -> Result<Recording, GpuError> {
-        let view = self.check_inputs(inputs, st.seed, st.frame)?;
+        let view = inputs.check(&self.desc, st.seed, st.frame)?;
         let (slc, fixed_r2) = kernel_form(&st.culling)?;
         if !(st.min_distance.is_finite() && st.min_distance >= 0.0) {
             return Err(GpuError::Setting(format!(
@@ -971,10 +664,4 @@ impl IndirectPass {
         ));
         Ok(Recording { uploads, dispatches: out })
     }
-}
-
-/// Uploads `records` as a storage buffer of the device (a helper for
-/// engines and tests that make VPL records on the host).
-pub fn vpl_buffer(gpu: &GpuContext, records: &[GpuVplRecord]) -> wgpu::Buffer {
-    storage(gpu, "slc vpl records", bytemuck::cast_slice(records), wgpu::BufferUsages::empty())
 }
