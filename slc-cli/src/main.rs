@@ -511,6 +511,8 @@ fn shaders(out: &Path, lights: &str, reservoir_k: u32) -> anyhow::Result<()> {
         Kernel::VplDenoise,
         Kernel::VplNear,
         Kernel::VplPack,
+        Kernel::VplClusters,
+        Kernel::VplGroups,
         Kernel::IrradianceExport,
         Kernel::SceneRaster,
         Kernel::PrimaryDirect,

@@ -41,6 +41,13 @@ pub struct Run {
     /// The unculled run's whole frame over this one's.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub frame_speedup: Option<f64>,
+    /// The far field's culling work per shaded pixel (both backends count
+    /// it: the CPU as it shades, the GPU with its counting kernels).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub far_work: Option<Work>,
+    /// The near field's.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub near_work: Option<Work>,
 }
 
 /// One stage's time in a [`Run`].
@@ -48,8 +55,15 @@ pub struct Run {
 pub struct StageMs {
     /// Stage name (`G-buffer`, `RSM`, `shading`, …).
     pub name: String,
-    /// Milliseconds.
+    /// Milliseconds: the fastest frame's (CPU, or a GPU without
+    /// timestamps), or the median of the frames timed back to back (GPU).
     pub ms: f64,
+    /// GPU frames timed back to back: the fastest frame's milliseconds.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub min_ms: Option<f64>,
+    /// The slowest frame's.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub max_ms: Option<f64>,
 }
 
 /// The JSON written by `slc bench`.

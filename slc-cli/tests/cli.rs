@@ -382,7 +382,7 @@ fn gltf_and_glossy_scenes_render() {
 fn shaders_command_exports_every_kernel() {
     let d = tempdir("shaders");
     let text = ok(&d, &["shaders", "--out", "k", "--lights", "point,triangle"]);
-    assert!(text.contains("25 kernels"), "{text}");
+    assert!(text.contains("27 kernels"), "{text}");
     for entry in ["vs_main", "fs_gbuffer", "fs_rsm", "fs_shadow"] {
         let p = d.join("k").join(format!("scene_raster.{entry}.glsl"));
         assert!(
@@ -405,6 +405,8 @@ fn shaders_command_exports_every_kernel() {
         "vpl_denoise",
         "vpl_near",
         "vpl_pack",
+        "vpl_clusters",
+        "vpl_groups",
         "irradiance_export",
         "primary_direct",
         "frame_compose",
@@ -432,7 +434,7 @@ fn shaders_command_exports_every_kernel() {
         }
     }
     // slc-core's modules (brdf included), as naga_oil and as WESL modules.
-    assert!(text.contains("18 naga_oil modules") && text.contains("18 WESL modules"), "{text}");
+    assert!(text.contains("19 naga_oil modules") && text.contains("19 WESL modules"), "{text}");
     let wesl = std::fs::read_to_string(d.join("k/wesl/slc/range.wesl")).unwrap();
     assert!(wesl.contains("public fn slc_keep("), "{wesl}");
     let range = std::fs::read_to_string(d.join("k/slc/range.wgsl")).unwrap();

@@ -14,9 +14,13 @@
 //! at their own flux, and its interleaved subset skips them, with a smooth
 //! partition of unity between ([`vpl_near_weight`]): each VPL's transfer is
 //! still counted exactly once per pixel (near) or once per `P × P` window
-//! at `P²` times its flux (far), so the split changes no expectation. The near VPLs are found by blocks of [`NEAR_BLOCK`]
-//! lights, `8 × 8` RSM texels each ([`near_block_index`]), whose boxes are
-//! culled against a tile first.
+//! at `P²` times its flux (far), so the split changes no expectation.
+//!
+//! **Culling order.** Both fields are culled through the box hierarchy of
+//! [`crate::cluster`]: the far field's light buffer holds each subset's
+//! image in map order ([`interleave_slot`]), the near field's index lists
+//! the whole map in map order ([`crate::cluster::map_index`] on the RSM),
+//! so every cluster is an 8×8 patch of texels and every group 64×64.
 //!
 //! **A shifted map per frame.** A fixed pixel-to-subset map is a
 //! structured subsampling: the RSM's texel grid and the screen's pixel
@@ -29,10 +33,11 @@
 //! uniform and stratified over frames (frames `0..P²` take every shift
 //! once). Over frames each pixel shades every subset equally often: the
 //! interleaved estimator is unbiased per pixel, as the culling is, and its
-//! residual pattern changes every frame. The slots, the near blocks and
+//! residual pattern changes every frame. The slots, the clusters and
 //! the denoise's window (one pixel of every class, so of every subset)
 //! are unchanged.
 
+use crate::cluster::{CLUSTER, map_index};
 use crate::light::{INV_PI, MAX_INTENSITY};
 use crate::range::{clamp_keep, slc_keep, slc_weight};
 use crate::ray::finite3;
@@ -66,15 +71,6 @@ crate::shared! {
         return flux.x >= 0.0 && flux.y >= 0.0 && flux.z >= 0.0 && max(max(flux.x, flux.y), flux.z) * INV_PI <= MAX_INTENSITY;
     }
 
-    /// Index of RSM texel `(tx, ty)` of an `s × s` map (`s` a multiple of
-    /// `P > 0`) in the light buffer that stores subset after subset, each
-    /// subset row-major in `(tx / P, ty / P)`: `subset · (s/P)² +
-    /// (ty/P)·(s/P) + tx/P`.
-    pub fn interleave_slot(tx: u32, ty: u32, size: u32, period: u32) -> u32 {
-        let side: u32 = size / period;
-        return interleave_subset(tx, ty, period) * side * side + (ty / period) * side + tx / period;
-    }
-
     /// The side of one interleaved subset's image of an `s × s` map
     /// (`s` a multiple of `P`) in the light buffer: `s/P` padded to a
     /// multiple of 8, so its map order ([`crate::cluster::map_index`]) has
@@ -83,8 +79,28 @@ crate::shared! {
         return (size / period + 7) / 8 * 8;
     }
 
-    /// Index of VPL `i` of a list (no RSM position) in the same buffer, for
-    /// `P² · per_subset` VPLs: subset `i mod P²`, entry `i / P²` in it.
+    /// Index of RSM texel `(tx, ty)` of an `s × s` map (`s` a multiple of
+    /// `P > 0`) in the light buffer that stores subset after subset, each
+    /// subset's image `(tx / P, ty / P)` in map order on its padded side
+    /// `m` ([`subset_side`]): `subset · m² + map_index(tx/P, ty/P, m)`.
+    /// A subset's clusters and groups ([`crate::cluster`]) are then runs of
+    /// consecutive slots.
+    pub fn interleave_slot(tx: u32, ty: u32, size: u32, period: u32) -> u32 {
+        let side: u32 = subset_side(size, period);
+        return interleave_subset(tx, ty, period) * side * side + map_index(tx / period, ty / period, side);
+    }
+
+    /// Slots per subset of a list of `count` VPLs (a multiple of `P²`, no
+    /// RSM position): `count / P²` padded to whole clusters of
+    /// [`CLUSTER`]; the padding holds no VPL.
+    pub fn subset_slots_linear(count: u32, period: u32) -> u32 {
+        let per: u32 = count / (period * period);
+        return (per + CLUSTER - 1) / CLUSTER * CLUSTER;
+    }
+
+    /// Index of VPL `i` of a list (no RSM position) in the same buffer,
+    /// `per_subset` slots per subset ([`subset_slots_linear`]): subset
+    /// `i mod P²`, entry `i / P²` in it.
     pub fn interleave_slot_linear(i: u32, per_subset: u32, period: u32) -> u32 {
         let subsets: u32 = period * period;
         return (i % subsets) * per_subset + i / subsets;
@@ -95,29 +111,6 @@ crate::shared! {
     /// (the near field, shaded by every pixel, undoes it).
     pub fn interleave_flux_scale(period: u32) -> f32 {
         return to_f32(period * period);
-    }
-
-    /// Lights per near-field block: an `8 × 8` patch of RSM texels, or 64
-    /// consecutive VPLs of a list.
-    pub const NEAR_BLOCK: u32 = 64;
-
-    /// Index of RSM texel `(tx, ty)` of an `s × s` map (`s` a multiple of 8)
-    /// in near-block order: block `(tx/8, ty/8)` row-major, then the texel
-    /// row-major inside it, `((ty/8)·(s/8) + tx/8)·64 + (ty mod 8)·8 + tx mod 8`.
-    pub fn near_block_index(tx: u32, ty: u32, size: u32) -> u32 {
-        let side: u32 = size / 8;
-        return ((ty / 8) * side + tx / 8) * NEAR_BLOCK + (ty % 8) * 8 + tx % 8;
-    }
-
-    /// Texel column of near-block index `q` in an `s × s` map (the inverse
-    /// of [`near_block_index`] with [`near_block_ty`]).
-    pub fn near_block_tx(q: u32, size: u32) -> u32 {
-        return ((q / NEAR_BLOCK) % (size / 8)) * 8 + q % 8;
-    }
-
-    /// Texel row of near-block index `q` in an `s × s` map.
-    pub fn near_block_ty(q: u32, size: u32) -> u32 {
-        return ((q / NEAR_BLOCK) / (size / 8)) * 8 + (q % NEAR_BLOCK) / 8;
     }
 
     /// The near-field split's share of a VPL at squared distance `d²` from
@@ -239,39 +232,40 @@ mod tests {
         assert_eq!(shifted_subset(60, 7, 8), 3);
     }
 
-    /// The slots of an `s × s` map are a permutation, and each subset holds
-    /// exactly the texels congruent to it mod `P`.
+    /// The slots of an `s × s` map are distinct, each subset holds
+    /// exactly the texels congruent to it mod `P`, and each cluster of
+    /// slots is an 8×8 patch of its subset's image; padded sides (`s/P`
+    /// not a multiple of 8) leave slots free.
     #[test]
-    fn slots_are_a_permutation_grouped_by_subset() {
-        let (s, p) = (32u32, 8u32);
-        let per = (s / p) * (s / p);
-        let mut seen = vec![false; (s * s) as usize];
-        for ty in 0..s {
-            for tx in 0..s {
-                let slot = interleave_slot(tx, ty, s, p);
-                assert!(!seen[slot as usize], "slot {slot} twice");
-                seen[slot as usize] = true;
-                assert_eq!(slot / per, interleave_subset(tx, ty, p));
+    fn slots_are_distinct_grouped_by_subset_in_patches() {
+        for (s, p) in [(128u32, 8u32), (72, 8), (64, 1), (16, 2)] {
+            let m = subset_side(s, p);
+            let per = m * m;
+            let mut seen = vec![false; (per * p * p) as usize];
+            for ty in 0..s {
+                for tx in 0..s {
+                    let slot = interleave_slot(tx, ty, s, p);
+                    assert!(!seen[slot as usize], "slot {slot} twice");
+                    seen[slot as usize] = true;
+                    assert_eq!(slot / per, interleave_subset(tx, ty, p));
+                    let q = slot % per;
+                    assert_eq!(
+                        (crate::cluster::map_x(q, m), crate::cluster::map_y(q, m)),
+                        (tx / p, ty / p)
+                    );
+                }
             }
+            let used = seen.iter().filter(|&&b| b).count() as u32;
+            assert_eq!(used, s * s);
         }
-        assert!(seen.iter().all(|&b| b));
+        assert_eq!(subset_side(72, 8), 16);
+        assert_eq!(subset_slots_linear(64 * 65, 8), 128);
+        assert_eq!(interleave_slot_linear(64 + 3, 128, 8), 3 * 128 + 1);
     }
 
-    /// Near-block order is a permutation whose blocks are `8 × 8` patches.
+    /// The near field's split weight.
     #[test]
-    fn near_blocks_are_patches() {
-        let s = 32u32;
-        let mut seen = vec![false; (s * s) as usize];
-        for ty in 0..s {
-            for tx in 0..s {
-                let q = near_block_index(tx, ty, s);
-                assert!(!seen[q as usize], "index {q} twice");
-                seen[q as usize] = true;
-                assert_eq!(q / NEAR_BLOCK, (ty / 8) * (s / 8) + tx / 8);
-                assert_eq!((near_block_tx(q, s), near_block_ty(q, s)), (tx, ty));
-            }
-        }
-        assert!(seen.iter().all(|&b| b));
+    fn near_weight_is_a_smooth_partition() {
         assert_eq!(vpl_near_weight(0.25, 1.0), 1.0);
         assert_eq!(vpl_near_weight(0.0, 1.0), 1.0);
         assert_eq!(vpl_near_weight(1.0, 1.0), 0.0);

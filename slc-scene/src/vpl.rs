@@ -411,36 +411,6 @@ pub struct Vpls {
 }
 
 impl Vpls {
-    /// Near-block order ([`slc_core::interleave::near_block_index`]): entry
-    /// `q` is the index (`ty · size + tx`) of the VPL at position `q`, so
-    /// each run of [`NEAR_BLOCK`](slc_core::interleave::NEAR_BLOCK) entries
-    /// is an `8 × 8` patch of RSM texels.
-    pub fn near_order(&self) -> Vec<usize> {
-        let size = self.size;
-        let mut order = vec![0; self.len()];
-        for ty in 0..size {
-            for tx in 0..size {
-                order[slc_core::interleave::near_block_index(tx, ty, size) as usize] =
-                    (ty * size + tx) as usize;
-            }
-        }
-        order
-    }
-
-    /// Per near block, the box `(lo, hi)` of the positions of its VPLs that
-    /// carry flux (`lo > hi` when none does), as `vpl_pack` reduces it.
-    pub fn near_boxes(&self) -> Vec<(Vec3, Vec3)> {
-        self.near_order()
-            .chunks(slc_core::interleave::NEAR_BLOCK as usize)
-            .map(|block| {
-                block.iter().filter(|&&i| self.flux[i] != Vec3::ZERO).fold(
-                    (Vec3::splat(slc_core::ray::F32_MAX), Vec3::splat(-slc_core::ray::F32_MAX)),
-                    |(lo, hi), &i| (lo.min(self.position[i]), hi.max(self.position[i])),
-                )
-            })
-            .collect()
-    }
-
     /// Number of VPLs.
     pub fn len(&self) -> usize {
         self.position.len()
@@ -463,22 +433,4 @@ pub struct VplInputs {
     pub vpls: Vpls,
     /// Squared clamp distance of the VPL fall-off.
     pub min_d2: f32,
-}
-
-impl VplInputs {
-    /// The interleaved light order: entry `k` is the RSM texel index
-    /// (`ty · size + tx`) of the VPL stored at slot `k` of the subset-after-
-    /// subset buffer ([`slc_core::interleave::interleave_slot`]; pixel
-    /// `(x, y)` uses subset `(y mod P)·P + x mod P`).
-    pub fn interleaved_order(&self) -> Vec<usize> {
-        let size = self.vpls.size;
-        let mut order = vec![0; self.vpls.len()];
-        for ty in 0..size {
-            for tx in 0..size {
-                order[slc_core::interleave::interleave_slot(tx, ty, size, PERIOD) as usize] =
-                    (ty * size + tx) as usize;
-            }
-        }
-        order
-    }
 }

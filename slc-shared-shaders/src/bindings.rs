@@ -179,6 +179,18 @@ const fn materials(binding: u32) -> Binding {
     )
 }
 
+/// The counting variant's work counters ([`Features::counters`]).
+const fn counters(binding: u32) -> Binding {
+    b(
+        0,
+        binding,
+        "counters",
+        Resource::ReadWrite("array<atomic<u32>>"),
+        "counting variant: the work counters, 64-bit (low, high) per field",
+        "this kernel",
+    )
+}
+
 /// The bindings of `kernel` specialised to `f`, in declaration order.
 pub fn bindings(kernel: Kernel, f: &Features) -> Vec<Binding> {
     let ies = f.lights.ies;
@@ -207,19 +219,23 @@ pub fn bindings(kernel: Kernel, f: &Features) -> Vec<Binding> {
             b(0, 4, "bsh_nodes", Resource::ReadWrite("array<BshNode>"), "the BSH", "host (build), this kernel (refit)"),
         ],
         Kernel::VplTiled => {
-            let mut v = vec![uniform(0, "params", "VplParams", true, "image size, VPLs per subset, clamp distance, near field")];
+            let mut v = vec![uniform(0, "params", "VplParams", true, "image size, slots per subset, clamp distance, near field, the culling grids")];
             v.extend(gbuffer_in(1, f.surface));
             v.extend([
-                read(4, "lights", "array<GpuLight>", "VPLs by subset, flux × period²", "`vpl_pack`"),
+                read(4, "lights", "array<GpuLight>", "VPLs by subset in map order, flux × period²", "`vpl_pack`"),
                 read(5, "rt2", "array<f32>", "threshold range²", "`vpl_pack`"),
                 read(6, "r2", "array<f32>", "random range² (clamp: R²)", "`light_update` or `vpl_pack`"),
-                write(7, "irradiance", vec4, "irradiance (rgb), lights kept (w); 0 where no surface is"),
+                read(7, "boxes", "array<GpuBox>", "cluster and group boxes of both fields", "`vpl_clusters`, `vpl_groups`"),
+                write(8, "irradiance", vec4, "irradiance (rgb), lights kept (w); 0 where no surface is"),
             ]);
             if f.glossy {
                 v.extend([
-                    materials(8),
-                    write(9, "specular", vec4, "glossy variant: specular correction `S` (rgb); 0 where no surface with a specular lobe is"),
+                    materials(9),
+                    write(10, "specular", vec4, "glossy variant: specular correction `S` (rgb); 0 where no surface with a specular lobe is"),
                 ]);
+            }
+            if f.counters {
+                v.push(counters(11));
             }
             v
         }
@@ -230,12 +246,12 @@ pub fn bindings(kernel: Kernel, f: &Features) -> Vec<Binding> {
             v
         }
         Kernel::VplNear => {
-            let mut v = vec![uniform(0, "params", "VplParams", true, "image size, `R_n²`, near blocks")];
+            let mut v = vec![uniform(0, "params", "VplParams", true, "image size, `R_n²`, the near field's grid")];
             v.extend(gbuffer_in(1, f.surface));
             v.extend([
-                read(4, "lights", "array<GpuLight>", "VPLs by subset, flux × period²", "`vpl_pack`"),
-                read(5, "near_slots", "array<u32>", "slot in `lights` of each VPL in near-block order", "`vpl_pack`"),
-                read(6, "near_boxes", "array<GpuNearBox>", "box of each near block", "`vpl_pack`"),
+                read(4, "lights", "array<GpuLight>", "VPLs by subset in map order, flux × period²", "`vpl_pack`"),
+                read(5, "near_slots", "array<u32>", "slot in `lights` of each VPL in the RSM's map order", "`vpl_pack`"),
+                read(6, "boxes", "array<GpuBox>", "cluster and group boxes of both fields", "`vpl_clusters`, `vpl_groups`"),
                 read(7, "rt2", "array<f32>", "threshold range² (as `vpl_tiled`'s)", "`vpl_pack`"),
                 read(8, "r2", "array<f32>", "range² (as `vpl_tiled`'s)", "`light_update` (SLC) or `vpl_pack`"),
                 write(9, "irradiance", vec4, "the (denoised) far field, the near field added"),
@@ -243,8 +259,22 @@ pub fn bindings(kernel: Kernel, f: &Features) -> Vec<Binding> {
             if f.glossy {
                 v.extend([materials(10), write(11, "specular", vec4, "glossy variant: the (denoised) far field's `S`, the near field's added")]);
             }
+            if f.counters {
+                v.push(counters(12));
+            }
             v
         }
+        Kernel::VplClusters => vec![
+            uniform(0, "params", "VplParams", true, "`R_n²`, where each field's boxes start"),
+            read(1, "lights", "array<GpuLight>", "VPLs by subset in map order, flux × period²", "`vpl_pack`"),
+            read(2, "r2", "array<f32>", "range²", "`light_update` (SLC) or `vpl_pack`"),
+            read(3, "near_slots", "array<u32>", "slot in `lights` of each VPL in the RSM's map order", "`vpl_pack`"),
+            write(4, "boxes", "array<GpuBox>", "each cluster's box of its lit VPLs' culling spheres"),
+        ],
+        Kernel::VplGroups => vec![
+            uniform(0, "params", "VplParams", true, "the culling grids, where each field's boxes start"),
+            write(1, "boxes", "array<GpuBox>", "each group's box of its clusters' boxes (reads the cluster boxes)"),
+        ],
         Kernel::BshReservoir => {
             let mut v = vec![
                 uniform(0, "params", "ShadeParams", false, "point count, seed, frame, shadow-ray offset"),
@@ -345,7 +375,7 @@ pub fn bindings(kernel: Kernel, f: &Features) -> Vec<Binding> {
             return v;
         }
         Kernel::VplPack => {
-            let mut v = vec![uniform(0, "params", "PackParams", true, "count, RSM size, subset size, SLC parameters")];
+            let mut v = vec![uniform(0, "params", "PackParams", true, "count, RSM size, slots per subset, SLC parameters")];
             match f.vpl_source {
                 VplSource::Rsm => v.extend([
                     texture(1, "rsm_position", "RSM world position", "engine (RSM)"),
@@ -359,8 +389,7 @@ pub fn bindings(kernel: Kernel, f: &Features) -> Vec<Binding> {
                 write(5, "ids", "array<u32>", "ξ id of each VPL"),
                 write(6, "rt2", "array<f32>", "threshold range² (0 when not SLC)"),
                 write(7, "r2", "array<f32>", "the fixed r² when not SLC"),
-                write(8, "near_slots", "array<u32>", "slot of each VPL in near-block order"),
-                write(9, "near_boxes", "array<GpuNearBox>", "box of each near block"),
+                write(8, "near_slots", "array<u32>", "slot of each VPL in the RSM's map order (records: record order)"),
             ]);
             v
         }

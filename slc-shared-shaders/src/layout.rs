@@ -212,30 +212,50 @@ slc_core::shared! {
         pub pad1: u32,
     }
 
-    /// Uniforms of `vpl_tiled`, `vpl_near` and `vpl_denoise`.
+    /// Uniforms of `vpl_tiled`, `vpl_near`, `vpl_denoise`, `vpl_clusters`
+    /// and `vpl_groups`, 80 bytes. `boxes` holds the far field's cluster
+    /// boxes (subset after subset), its group boxes, the near field's
+    /// cluster boxes and its group boxes, in that order
+    /// ([`slc_core::cluster`]).
     pub struct VplParams {
         /// Image width.
         pub width: u32,
         /// Image height.
         pub height: u32,
-        /// VPLs per interleaved subset (stored subset after subset).
+        /// Slots per interleaved subset (stored subset after subset; whole
+        /// clusters of 64, the padding holding no VPL).
         pub lights_per_subset: u32,
         /// Squared clamp distance of the VPL fall-off.
         pub min_d2: f32,
         /// `R_n²` of the near-field split (0: none).
         pub near_r2: f32,
-        /// Near blocks of [`NEAR_BLOCK`](slc_core::interleave::NEAR_BLOCK) VPLs.
-        pub near_blocks: u32,
         /// The frame's shift of the pixel-to-subset map
         /// ([`slc_core::interleave::interleave_shift`]).
         pub subset_shift: u32,
+        /// Index in `boxes` of the far field's first group box (so also
+        /// the far field's cluster count).
+        pub far_groups_at: u32,
+        /// Index in `boxes` of the near field's first cluster box.
+        pub near_clusters_at: u32,
+        /// Index in `boxes` of the near field's first group box.
+        pub near_groups_at: u32,
+        /// Boxes in `boxes` (the near field's end; equal to
+        /// `near_groups_at` and `near_clusters_at` without a near field).
+        pub box_count: u32,
+        /// Padding.
+        pub pad0: u32,
         /// Padding.
         pub pad1: u32,
+        /// One subset's cluster grid: clusters across and down, clusters
+        /// across and down a group ([`slc_core::cluster::ClusterGrid`]).
+        pub far_grid: vec4u,
+        /// The near field's cluster grid.
+        pub near_grid: vec4u,
     }
 
-    /// The box of one near block's VPL positions (`lo > hi` when every VPL
-    /// of the block carries zero flux), 32 bytes.
-    pub struct GpuNearBox {
+    /// A box of the VPL frame's culling hierarchies (`lo > hi` when it
+    /// holds no lit VPL), 32 bytes.
+    pub struct GpuBox {
         /// Lower corner.
         pub lo: vec3f,
         /// Padding.
@@ -269,7 +289,8 @@ slc_core::shared! {
         pub count: u32,
         /// Edge of the RSM in texels (0 for a VPL buffer).
         pub size: u32,
-        /// VPLs per interleaved subset.
+        /// Slots per interleaved subset of a VPL buffer
+        /// ([`slc_core::interleave::subset_slots_linear`]; unused for an RSM).
         pub per_subset: u32,
         /// Intensity measure of `vpl_rt2` (`IntensityMeasure::mode`).
         pub mode: u32,

@@ -52,6 +52,7 @@ pub mod wesl;
 
 use minijinja::{Environment, context};
 use naga::valid::{Capabilities, ModuleInfo, ValidationFlags, Validator};
+use slc_core::cluster::CLUSTER;
 use thiserror::Error;
 
 /// What went wrong while generating or translating a kernel.
@@ -179,6 +180,12 @@ pub enum Kernel {
     VplNear,
     /// VPLs (from an RSM or a VPL buffer) into the interleaved light buffer.
     VplPack,
+    /// The cluster boxes of the VPL frame's culling hierarchies, every
+    /// frame once the ranges are drawn.
+    VplClusters,
+    /// The group boxes of the VPL frame's culling hierarchies, from the
+    /// cluster boxes.
+    VplGroups,
     /// The irradiance into an engine's storage texture.
     IrradianceExport,
     /// The VPL frame's raster passes (vertex `vs_main`, fragments
@@ -204,7 +211,7 @@ pub enum Kernel {
 
 impl Kernel {
     /// All kernels.
-    pub const ALL: [Kernel; 16] = [
+    pub const ALL: [Kernel; 18] = [
         Kernel::LightUpdate,
         Kernel::BshRefit,
         Kernel::VplTiled,
@@ -214,6 +221,8 @@ impl Kernel {
         Kernel::PtConnect,
         Kernel::PtExtend,
         Kernel::VplPack,
+        Kernel::VplClusters,
+        Kernel::VplGroups,
         Kernel::IrradianceExport,
         Kernel::SceneRaster,
         Kernel::PrimaryDirect,
@@ -235,6 +244,8 @@ impl Kernel {
             Kernel::VplDenoise => "vpl_denoise",
             Kernel::VplNear => "vpl_near",
             Kernel::VplPack => "vpl_pack",
+            Kernel::VplClusters => "vpl_clusters",
+            Kernel::VplGroups => "vpl_groups",
             Kernel::IrradianceExport => "irradiance_export",
             Kernel::SceneRaster => "scene_raster",
             Kernel::PrimaryDirect => "primary_direct",
@@ -255,6 +266,8 @@ impl Kernel {
                 | Kernel::VplDenoise
                 | Kernel::VplNear
                 | Kernel::VplPack
+                | Kernel::VplClusters
+                | Kernel::VplGroups
                 | Kernel::IrradianceExport
                 | Kernel::SceneRaster
                 | Kernel::PrimaryDirect
@@ -421,6 +434,11 @@ pub struct Features {
     /// (`glossy_radiance`). `vpl_denoise` is the same kernel for `S`.
     /// `false`: Lambertian kernels (`ρ/π·E`), unchanged.
     pub glossy: bool,
+    /// The counting variant of `vpl_tiled` and `vpl_near`: every culling
+    /// test, light tested and light kept is counted into `counters`
+    /// (slc-scene's `WorkCounts`, 64-bit per field). Lambertian only (the
+    /// counts do not depend on the material); never in a timed frame.
+    pub counters: bool,
     /// `temporal` reprojects by the engine's motion vectors (`motion_tex`,
     /// current minus previous UV in xy) instead of the previous
     /// view-projection.
@@ -445,12 +463,13 @@ impl Default for Features {
             surface: SurfaceSource::Position,
             direct_output: DirectOutput::Irradiance,
             glossy: false,
+            counters: false,
             motion_vectors: false,
         }
     }
 }
 
-const TEMPLATES: [(&str, &str); 28] = [
+const TEMPLATES: [(&str, &str); 33] = [
     ("header.wgsl", include_str!("templates/header.wgsl")),
     ("workgroup_box.wgsl", include_str!("templates/workgroup_box.wgsl")),
     ("lights.wgsl", include_str!("templates/lights.wgsl")),
@@ -467,6 +486,11 @@ const TEMPLATES: [(&str, &str); 28] = [
     ("pt_mis.wgsl", include_str!("templates/pt_mis.wgsl")),
     ("pt_extend", include_str!("templates/pt_extend.wgsl")),
     ("vpl_pack", include_str!("templates/vpl_pack.wgsl")),
+    ("vpl_clusters", include_str!("templates/vpl_clusters.wgsl")),
+    ("vpl_groups", include_str!("templates/vpl_groups.wgsl")),
+    ("vpl_ranges.wgsl", include_str!("templates/vpl_ranges.wgsl")),
+    ("cluster_cull.wgsl", include_str!("templates/cluster_cull.wgsl")),
+    ("work_counters.wgsl", include_str!("templates/work_counters.wgsl")),
     ("irradiance_export", include_str!("templates/irradiance_export.wgsl")),
     ("scene_raster", include_str!("templates/scene_raster.wgsl")),
     ("primary_direct", include_str!("templates/primary_direct.wgsl")),
@@ -487,12 +511,21 @@ pub fn templates() -> impl Iterator<Item = (&'static str, &'static str)> {
     TEMPLATES.iter().copied().filter(|(n, _)| *n != "layout")
 }
 
-/// Workgroup memory of `vpl_tiled` in bytes for a `tile × tile` workgroup
-/// and a light list of `max_tile_lights` slots: two `vec3f` (16 bytes each)
-/// per invocation for the tile's box, the list, its counter (checked
-/// against naga's layout of the generated kernel in the tests).
-pub fn vpl_tiled_workgroup_bytes(tile_size: u32, max_tile_lights: u32) -> u64 {
-    32 * tile_size as u64 * tile_size as u64 + 4 * max_tile_lights as u64 + 4
+/// Workgroup memory in bytes of `vpl_tiled` or `vpl_near` (0 for any
+/// other kernel) specialised to `f`: two `vec3f` (16 bytes each) per
+/// invocation and the box for the tile's box; with culling (always in
+/// `vpl_near`) the light list of `max_tile_lights` slots, the hits of a
+/// group's clusters and two counters; the counting variant's 7 counts
+/// (checked against naga's layout of the generated kernels in the tests).
+pub fn vpl_workgroup_bytes(kernel: Kernel, f: &Features) -> u64 {
+    let threads = f.tile_size as u64 * f.tile_size as u64;
+    let culled = kernel == Kernel::VplNear || f.method != CullKind::None;
+    let list = if culled { 4 * f.max_tile_lights as u64 + 4 + 4 * CLUSTER as u64 + 4 } else { 0 };
+    let counts = if f.counters { 4 * 7 } else { 0 };
+    match kernel {
+        Kernel::VplTiled | Kernel::VplNear => 32 * threads + 32 + list + counts,
+        _ => 0,
+    }
 }
 
 /// Checks the feature ranges and the combinations a kernel supports.
@@ -520,45 +553,48 @@ pub fn check(kernel: Kernel, f: &Features) -> Result<(), ShaderError> {
                 f.interleave
             ));
         }
-        Kernel::VplTiled => {
+        Kernel::VplTiled | Kernel::VplNear => {
+            let name = kernel.name();
             if f.lights != (LightTypes { vpl: true, ..LightTypes::default() }) {
                 return bad(format!(
-                    "vpl_tiled shades VPLs only; the scene asks for [{}]",
+                    "{name} shades VPLs only; the scene asks for [{}]",
                     f.lights.names().join(", ")
                 ));
             }
-            if !(1..=16).contains(&f.tile_size) || !f.tile_size.is_power_of_two() {
-                return bad(format!("tile size {} must be a power of two in 1..=16", f.tile_size));
+            // One invocation per light of a cluster (cluster_cull.wgsl).
+            if f.tile_size * f.tile_size != CLUSTER {
+                return bad(format!(
+                    "{name}: tile size {} must be 8 (one invocation per light of a {CLUSTER}-light cluster)",
+                    f.tile_size
+                ));
             }
             if !(1..=16).contains(&f.interleave) {
-                return bad(format!("interleave period {} must be in 1..=16", f.interleave));
-            }
-            let bytes = vpl_tiled_workgroup_bytes(f.tile_size, f.max_tile_lights);
-            if f.max_tile_lights == 0 || bytes > 16384 {
                 return bad(format!(
-                    "tile {0}x{0} with {1} list slots needs {bytes} bytes of workgroup memory (WebGPU guarantees 16384)",
-                    f.tile_size, f.max_tile_lights
+                    "{name}: interleave period {} must be in 1..=16",
+                    f.interleave
+                ));
+            }
+            if f.max_tile_lights < CLUSTER {
+                return bad(format!(
+                    "{name}: the tile light list must hold a cluster's {CLUSTER} lights, not {}",
+                    f.max_tile_lights
+                ));
+            }
+            if f.counters && f.glossy {
+                return bad(format!(
+                    "{name}: the counting variant is Lambertian (the counts do not depend on the material)"
+                ));
+            }
+            let bytes = vpl_workgroup_bytes(kernel, f);
+            if bytes > 16384 {
+                return bad(format!(
+                    "{name}: {0} list slots need {bytes} bytes of workgroup memory (WebGPU guarantees 16384)",
+                    f.max_tile_lights
                 ));
             }
         }
-        Kernel::VplNear => {
-            if f.lights != (LightTypes { vpl: true, ..LightTypes::default() }) {
-                return bad(format!(
-                    "vpl_near shades VPLs only; the scene asks for [{}]",
-                    f.lights.names().join(", ")
-                ));
-            }
-            // Workgroup memory: two vec3f and a block slot per thread, the
-            // light list of one block, two counters; at most 256 threads.
-            if !(1..=16).contains(&f.tile_size)
-                || !f.tile_size.is_power_of_two()
-                || !(1..=16).contains(&f.interleave)
-            {
-                return bad(format!(
-                    "vpl_near: tile {} must be a power of two in 1..=16, period {} in 1..=16",
-                    f.tile_size, f.interleave
-                ));
-            }
+        Kernel::VplClusters | Kernel::VplGroups if !(1..=16).contains(&f.interleave) => {
+            return bad(format!("{}: period {} must be in 1..=16", kernel.name(), f.interleave));
         }
         Kernel::DirectLight => {
             if f.lights.is_empty() {
@@ -646,6 +682,7 @@ pub fn generate_module(kernel: Kernel, features: &Features) -> Result<Generated,
         out_format => features.output_format.wgsl(),
         shadows => features.shadows,
         glossy => features.glossy,
+        counters => features.counters,
         motion => features.motion_vectors,
         pbr => match features.direct_output { DirectOutput::Irradiance => "none", DirectOutput::Radiance => "radiance", DirectOutput::Split => "split", DirectOutput::BevyRadiance => "bevy" },
         surface => match features.surface { SurfaceSource::Position => "position", SurfaceSource::Depth => "depth", SurfaceSource::R32Depth => "r32" },

@@ -80,11 +80,17 @@ fn rust_twins_match_naga_layout() {
             lights_per_subset,
             min_d2,
             near_r2,
-            near_blocks,
             subset_shift,
-            pad1
+            far_groups_at,
+            near_clusters_at,
+            near_groups_at,
+            box_count,
+            pad0,
+            pad1,
+            far_grid,
+            near_grid
         ),
-        fields!(GpuNearBox, lo, pad0, hi, pad1),
+        fields!(GpuBox, lo, pad0, hi, pad1),
         fields!(ShadeParams, point_count, seed, frame, eps),
         fields!(GpuVplRecord, position, pad0, normal, pad1, flux, pad2),
         fields!(
@@ -152,42 +158,43 @@ fn rust_twins_match_naga_layout() {
     }
 }
 
-/// `vpl_tiled_workgroup_bytes`, which the host checks against the adapter's
+/// `vpl_workgroup_bytes`, which the host checks against the adapter's
 /// `max_compute_workgroup_storage_size`, is the size naga lays out for the
-/// generated `vpl_tiled`'s workgroup variables, for every tile size and a
-/// few list capacities.
+/// generated `vpl_tiled`'s and `vpl_near`'s workgroup variables, for every
+/// culling kind, with and without counters, and a few list capacities.
 #[test]
-fn vpl_tiled_workgroup_bytes_match_naga() {
+fn vpl_workgroup_bytes_match_naga() {
     use slc_shared_shaders::{
-        CullKind, Features, Kernel, LightTypes, generate_module, vpl_tiled_workgroup_bytes,
+        CullKind, Features, Kernel, LightTypes, generate_module, vpl_workgroup_bytes,
     };
-    for tile in [1u32, 2, 4, 8, 16] {
-        for list in [1u32, 100, 1024] {
-            let f = Features {
-                lights: LightTypes { vpl: true, ..LightTypes::default() },
-                tile_size: tile,
-                max_tile_lights: list,
-                method: CullKind::Stochastic,
-                ..Features::default()
-            };
-            if vpl_tiled_workgroup_bytes(tile, list) > 16384 {
-                continue;
+    for kernel in [Kernel::VplTiled, Kernel::VplNear] {
+        for method in CullKind::ALL {
+            for counters in [false, true] {
+                for list in [64u32, 100, 2048] {
+                    let f = Features {
+                        lights: LightTypes { vpl: true, ..LightTypes::default() },
+                        max_tile_lights: list,
+                        method,
+                        counters,
+                        ..Features::default()
+                    };
+                    let g = generate_module(kernel, &f).unwrap();
+                    let mut layouter = Layouter::default();
+                    layouter.update(g.module.to_ctx()).unwrap();
+                    let naga_bytes: u64 = g
+                        .module
+                        .global_variables
+                        .iter()
+                        .filter(|(_, v)| v.space == naga::AddressSpace::WorkGroup)
+                        .map(|(_, v)| layouter[v.ty].size as u64)
+                        .sum();
+                    assert_eq!(
+                        vpl_workgroup_bytes(kernel, &f),
+                        naga_bytes,
+                        "{kernel:?} {method:?} counters {counters} list {list}"
+                    );
+                }
             }
-            let g = generate_module(Kernel::VplTiled, &f).unwrap();
-            let mut layouter = Layouter::default();
-            layouter.update(g.module.to_ctx()).unwrap();
-            let naga_bytes: u64 = g
-                .module
-                .global_variables
-                .iter()
-                .filter(|(_, v)| v.space == naga::AddressSpace::WorkGroup)
-                .map(|(_, v)| layouter[v.ty].size as u64)
-                .sum();
-            assert_eq!(
-                vpl_tiled_workgroup_bytes(tile, list),
-                naga_bytes,
-                "tile {tile}, list {list}"
-            );
         }
     }
 }

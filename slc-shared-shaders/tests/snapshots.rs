@@ -36,6 +36,22 @@ fn variants() -> Vec<(&'static str, Kernel, Features)> {
             Features { lights: vpl, method: CullKind::Clamped, ..Features::default() },
         ),
         (
+            "vpl_near-slc-tile8-p8-counters",
+            Kernel::VplNear,
+            Features { lights: vpl, counters: true, ..Features::default() },
+        ),
+        (
+            "vpl_tiled-slc-tile8-p8-counters",
+            Kernel::VplTiled,
+            Features { lights: vpl, counters: true, ..Features::default() },
+        ),
+        (
+            "vpl_clusters-slc-p8",
+            Kernel::VplClusters,
+            Features { lights: vpl, ..Features::default() },
+        ),
+        ("vpl_groups", Kernel::VplGroups, Features { lights: vpl, ..Features::default() }),
+        (
             "vpl_tiled-slc-tile8-p8-glossy",
             Kernel::VplTiled,
             Features { lights: vpl, glossy: true, ..Features::default() },

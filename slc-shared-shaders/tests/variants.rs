@@ -72,29 +72,62 @@ fn every_bsh_variant_validates() {
 
 #[test]
 fn every_vpl_variant_validates() {
-    for tile in [1, 2, 4, 8, 16] {
-        for period in [1, 4, 8, 16] {
-            for method in CullKind::ALL {
-                for max_tile_lights in [64, 1024, 2048] {
-                    let f = Features {
-                        lights: vpl_only(),
-                        tile_size: tile,
-                        interleave: period,
-                        method,
-                        max_tile_lights,
-                        ..Features::default()
-                    };
-                    let r = generate_module(Kernel::VplTiled, &f);
-                    let bytes = 32 * tile * tile + 4 * max_tile_lights + 4;
-                    if bytes > 16384 {
-                        assert!(
-                            matches!(r, Err(ShaderError::Unsupported(_))),
-                            "{f:?} should not fit workgroup memory"
-                        );
-                    } else {
-                        r.unwrap_or_else(|e| panic!("{f:?}: {e}"));
+    for kernel in [Kernel::VplTiled, Kernel::VplNear] {
+        for tile in [1, 2, 4, 8, 16] {
+            for period in [1, 4, 8, 16] {
+                for method in CullKind::ALL {
+                    for max_tile_lights in [32, 64, 1024, 2048, 4000] {
+                        for (glossy, counters) in
+                            [(false, false), (true, false), (false, true), (true, true)]
+                        {
+                            let f = Features {
+                                lights: vpl_only(),
+                                tile_size: tile,
+                                interleave: period,
+                                method,
+                                max_tile_lights,
+                                glossy,
+                                counters,
+                                ..Features::default()
+                            };
+                            let r = generate_module(kernel, &f);
+                            // One invocation per light of a cluster, a list
+                            // that takes a cluster, within 16 KiB, and a
+                            // Lambertian counting variant.
+                            let supported = tile == 8
+                                && max_tile_lights >= 64
+                                && vpl_workgroup_bytes(kernel, &f) <= 16384
+                                && !(glossy && counters);
+                            if supported {
+                                r.unwrap_or_else(|e| panic!("{kernel:?} {f:?}: {e}"));
+                            } else {
+                                assert!(
+                                    matches!(r, Err(ShaderError::Unsupported(_))),
+                                    "{kernel:?} {f:?} should be unsupported"
+                                );
+                            }
+                        }
                     }
                 }
+            }
+        }
+    }
+    assert!(
+        vpl_workgroup_bytes(
+            Kernel::VplTiled,
+            &Features { max_tile_lights: 4000, ..Features::default() }
+        ) > 16384
+    );
+    for kernel in [Kernel::VplClusters, Kernel::VplGroups] {
+        for period in [1, 4, 8, 16] {
+            for method in CullKind::ALL {
+                let f = Features {
+                    lights: vpl_only(),
+                    interleave: period,
+                    method,
+                    ..Features::default()
+                };
+                generate_module(kernel, &f).unwrap_or_else(|e| panic!("{kernel:?} {f:?}: {e}"));
             }
         }
     }

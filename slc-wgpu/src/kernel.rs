@@ -57,7 +57,9 @@ pub(crate) fn check_kernels(
             | Kernel::BshReservoir
             | Kernel::PtConnect
             | Kernel::PtExtend => (f.workgroup_size, 1),
-            Kernel::VplPack => (slc_core::interleave::NEAR_BLOCK, 1),
+            Kernel::VplPack | Kernel::VplClusters | Kernel::VplGroups => {
+                (slc_core::cluster::CLUSTER, 1)
+            }
             Kernel::SceneRaster => (1, 1),
             _ => (f.tile_size, f.tile_size),
         };

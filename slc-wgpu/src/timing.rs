@@ -36,6 +36,9 @@ pub enum Stage {
     VplGeneration,
     /// Random ranges from ξ.
     LightUpdate,
+    /// The boxes of the VPL culling hierarchies (`vpl_clusters`,
+    /// `vpl_groups`), from the frame's ranges.
+    Bounds,
     /// Tiled SLC shading of the interleaved sub-images.
     Shading,
     /// The cross-bilateral filter (twice in a glossy frame: the
@@ -55,12 +58,13 @@ pub enum Stage {
 
 impl Stage {
     /// Every stage, in order: the timer holds a timestamp pair for each.
-    pub const ALL: [Stage; 12] = [
+    pub const ALL: [Stage; 13] = [
         Stage::GBuffer,
         Stage::Rsm,
         Stage::ShadowMap,
         Stage::VplGeneration,
         Stage::LightUpdate,
+        Stage::Bounds,
         Stage::Shading,
         Stage::Denoise,
         Stage::NearField,
@@ -78,6 +82,7 @@ impl Stage {
             Stage::ShadowMap => "shadow map",
             Stage::VplGeneration => "VPL generation",
             Stage::LightUpdate => "light update",
+            Stage::Bounds => "culling boxes",
             Stage::Shading => "shading",
             Stage::Denoise => "denoise",
             Stage::NearField => "near field",
@@ -89,10 +94,11 @@ impl Stage {
     }
 }
 
-/// Timestamp pairs a frame's timer holds: one per stage, and two more
-/// for the glossy frame's second denoise and second temporal
+/// Timestamp pairs a frame's timer holds: one per stage, one more for the
+/// culling boxes' second dispatch (`vpl_groups` after `vpl_clusters`), and
+/// two more for the glossy frame's second denoise and second temporal
 /// accumulation (the specular correction's).
-pub(crate) const TIMED_PASSES: u32 = Stage::ALL.len() as u32 + 2;
+pub(crate) const TIMED_PASSES: u32 = Stage::ALL.len() as u32 + 3;
 
 /// One stage's time.
 #[derive(Clone, Debug, PartialEq)]

@@ -21,7 +21,7 @@
 //! and `denoised_ms` is `Some(0.0)` when the GPU denoised.
 
 use crate::engine;
-use slc_scene::vpl::{Shaded, Specular, VplInputs, VplSettings};
+use slc_scene::vpl::{Shaded, Specular, VplInputs, VplSettings, WorkCounts};
 use slc_wgpu::glam::Vec3;
 use slc_wgpu::passes::indirect::TILE_LIST;
 use slc_wgpu::passes::{
@@ -191,6 +191,31 @@ impl GpuVpl {
         };
         gpu.wait()?;
         Ok(g)
+    }
+
+    /// The culling work of [`GpuVpl::shade`]`(settings)`, far field then
+    /// near field, from the pass's counting kernels
+    /// ([`IndirectPass::count_work`]); not for the reference.
+    pub fn count_work(
+        &mut self,
+        settings: &VplSettings,
+    ) -> Result<(WorkCounts, WorkCounts), GpuError> {
+        let st = slc_wgpu::frame::indirect_settings(settings, self.min_distance)?;
+        let inputs = IndirectInputs {
+            gbuffer: GBuffer {
+                surface: Surface::Position(&self.position),
+                normal: &self.normal,
+                eye: self.eye,
+            },
+            vpls: VplInput::Rsm {
+                position: &self.rsm[0],
+                normal: &self.rsm[1],
+                flux: &self.rsm[2],
+            },
+            output: &self.output.view,
+            materials: None,
+        };
+        self.pass.count_work(&inputs, &st)
     }
 
     /// Indirect irradiance on the GPU for `settings` (the same ξ as the

@@ -266,6 +266,8 @@ fn every_stage_is_timed() {
             "shadow map",
             "VPL generation",
             "light update",
+            "culling boxes",
+            "culling boxes",
             "shading",
             "denoise",
             "near field",
@@ -499,10 +501,11 @@ fn bad_frames_are_errors() {
 
 /// The timestamp path, forced on whatever adapter runs the tests (lavapipe
 /// has timestamps, though their values do not bracket its threads' work):
-/// with the near field on, the frame has all eleven stages, the timer holds
-/// a pair for each (it once held one fewer, and the composition got none while
-/// names and times were zipped out of step), and every stage gets its own
-/// duration, in order, from both `render` and `record_timed`.
+/// with the near field on, the frame has every stage (the culling boxes in
+/// two passes), the timer holds a pair for each pass (it once held one
+/// fewer, and the composition got none while names and times were zipped
+/// out of step), and every pass gets its own duration, in order, from
+/// `render`, `record_timed` and, frame after frame, `time_sequence`.
 fn timestamp_path_times_every_stage() {
     let Some(gpu) = gpu() else { return };
     if !gpu.timestamps {
@@ -521,8 +524,15 @@ fn timestamp_path_times_every_stage() {
     let s = on(&frame, &settings(culling("slc"), true));
     let out = frame.render(&s).unwrap();
     assert_eq!(out.timing, Timing::GpuTimestamps);
-    // Every stage but the temporal accumulation (off unless asked for).
-    let all: Vec<Stage> = Stage::ALL.iter().copied().filter(|&st| st != Stage::Temporal).collect();
+    // Every stage but the temporal accumulation (off unless asked for), the
+    // culling boxes twice (clusters, then groups).
+    let twice = |st: Stage, dup: &[Stage]| if dup.contains(&st) { vec![st, st] } else { vec![st] };
+    let all: Vec<Stage> = Stage::ALL
+        .iter()
+        .copied()
+        .filter(|&st| st != Stage::Temporal)
+        .flat_map(|st| twice(st, &[Stage::Bounds]))
+        .collect();
     assert_eq!(
         out.stages.iter().map(|t| t.stage).collect::<Vec<_>>(),
         all,
@@ -544,7 +554,27 @@ fn timestamp_path_times_every_stage() {
     let want: Vec<Stage> =
         all.iter().copied().filter(|st| !matches!(st, Stage::Denoise | Stage::NearField)).collect();
     assert_eq!(out.stages.iter().map(|t| t.stage).collect::<Vec<_>>(), want);
+    // Frames timed back to back after a warm-up: each frame holds the
+    // frame's passes in order, and every stage's spread is ordered.
+    let seq =
+        frame.time_sequence(&s, std::time::Duration::from_millis(30), 5).unwrap().expect("timed");
+    assert_eq!(seq.frames.len(), 5);
+    assert!(seq.warmup_frames >= 4, "{} warm-up frames", seq.warmup_frames);
+    for f in &seq.frames {
+        assert_eq!(f.iter().map(|t| t.stage).collect::<Vec<_>>(), want);
+    }
+    let spreads = seq.stages();
+    assert_eq!(spreads.len(), want.iter().filter(|&&st| st != Stage::Bounds).count() + 1);
+    for st in &spreads {
+        assert!(
+            0.0 <= st.min_ms && st.min_ms <= st.median_ms && st.median_ms <= st.max_ms,
+            "{st:?}"
+        );
+    }
+    let (median, lo, hi) = seq.spread(&[]);
+    assert!(lo <= median && median <= hi && hi.is_finite(), "{lo} {median} {hi}");
     assert!(!frame.use_timestamps(false));
+    assert_eq!(frame.time_sequence(&s, std::time::Duration::ZERO, 5).unwrap(), None);
     assert_eq!(frame.stage_times().unwrap(), None);
     // The glossy frame with temporal accumulation denoises and accumulates
     // twice (irradiance, then the specular correction): every stage of
@@ -558,14 +588,12 @@ fn timestamp_path_times_every_stage() {
     let out = frame.render(&s).unwrap();
     let want: Vec<Stage> = Stage::ALL
         .iter()
-        .flat_map(|&st| {
-            if matches!(st, Stage::Denoise | Stage::Temporal) { vec![st, st] } else { vec![st] }
-        })
+        .flat_map(|&st| twice(st, &[Stage::Denoise, Stage::Temporal, Stage::Bounds]))
         .collect();
     assert_eq!(
         out.stages.iter().map(|t| t.stage).collect::<Vec<_>>(),
         want,
-        "every stage, the denoise and the accumulation twice"
+        "every stage, the culling boxes, the denoise and the accumulation twice"
     );
     let mut enc = gpu.device.create_command_encoder(&Default::default());
     assert!(frame.record_timed(&mut enc, &s).unwrap());

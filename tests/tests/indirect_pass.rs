@@ -14,7 +14,7 @@
 //! - clamp and none draw no ξ: the same decisions everywhere.
 
 use glam::Vec3;
-use slc_core::interleave::interleave_slot;
+use slc_core::cluster::{map_x, map_y};
 use slc_cpu::vpl::VplContext;
 use slc_scene::scene::Scene;
 use slc_scene::vpl::{Culling, PERIOD, Shaded, VplSettings};
@@ -96,21 +96,22 @@ fn engine(gpu: &GpuContext, ctx: &VplContext) -> Engine {
             &v.flux.iter().map(|&f| v4(f, 0.0)).collect::<Vec<_>>(),
         ),
     ];
-    // Records ordered so that the buffer's subsets are the RSM's: record j
-    // lands in slot (j mod P²)·per + j / P², texel t in interleave_slot(t).
-    let subsets = (PERIOD * PERIOD) as usize;
-    let per = v.len() / subsets;
-    let mut records = vec![GpuVplRecord::default(); v.len()];
-    for t in 0..v.len() {
-        let slot = interleave_slot(t as u32 % RSM, t as u32 / RSM, RSM, PERIOD) as usize;
-        let j = (slot % per) * subsets + slot / per;
-        records[j] = GpuVplRecord {
-            position: v.position[t],
-            normal: v.normal[t],
-            flux: v.flux[t],
-            ..GpuVplRecord::default()
-        };
-    }
+    // Records in the RSM's map order (record q is texel (map_x(q), map_y(q))):
+    // record q's subset, q mod P², is its texel's (P = 8: the texel's place
+    // in its 8×8 cluster), its entry q / P² its cluster's index, so each
+    // subset holds the RSM subset's VPLs in the same order, and each run of
+    // 64 records (a near cluster of the buffer) is a near cluster of the RSM.
+    let records: Vec<GpuVplRecord> = (0..v.len() as u32)
+        .map(|q| {
+            let t = (map_y(q, RSM) * RSM + map_x(q, RSM)) as usize;
+            GpuVplRecord {
+                position: v.position[t],
+                normal: v.normal[t],
+                flux: v.flux[t],
+                ..GpuVplRecord::default()
+            }
+        })
+        .collect();
     let output = engine::output(gpu, (W, H));
     Engine {
         position: upload(gpu, "gb position", (W, H), &pos),

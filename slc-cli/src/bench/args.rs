@@ -68,6 +68,14 @@ pub struct BenchArgs {
     /// Frames per flicker sequence.
     #[arg(long, default_value_t = 48)]
     pub frames: u32,
+    /// `--backend gpu`: seconds of continuous frames before each
+    /// configuration's timed frames, so the GPU's clock rises and settles.
+    #[arg(long, default_value_t = 0.5)]
+    pub warmup: f64,
+    /// `--backend gpu`: frames timed back to back per configuration, in
+    /// one submission (each stage's median and spread over them).
+    #[arg(long, default_value_t = 32)]
+    pub timed_frames: u32,
     /// CPU: run the hot loops on this instruction set instead of the best
     /// one the CPU has (avx512, avx2 or baseline), to measure a lower one.
     #[arg(long, value_parser = simd_path)]

@@ -5,9 +5,9 @@ use super::args::{BenchArgs, progress};
 use super::measure::{Spread, fastest, fastest_frames};
 use crate::backends::{Backend, gpu_context};
 use crate::reference::vpl_reference;
-use crate::report::{Report, Run, StageMs, write_vpl_csv};
+use crate::report::{Report, Run, StageMs, Work, write_vpl_csv};
 use anyhow::Context;
-use slc_scene::vpl::{Culling, VplFrame, VplSettings};
+use slc_scene::vpl::{Culling, VplFrame, VplSettings, WorkCounts};
 
 /// The configurations of a VPL bench: `none`, then `slc` per error bound,
 /// then `clamp` per range, with their settings and parameter (ε or `R`).
@@ -43,6 +43,7 @@ fn vpl_run(
     st: &slc_scene::vpl::VplStats,
     rmse: Spread,
     stages: Vec<StageMs>,
+    work: (WorkCounts, WorkCounts),
 ) -> Run {
     Run {
         method: settings.culling.name().to_string(),
@@ -57,6 +58,8 @@ fn vpl_run(
         stages,
         shading_speedup: None,
         frame_speedup: None,
+        far_work: Some(Work::of(&work.0)),
+        near_work: (work.1.pixels > 0).then(|| Work::of(&work.1)),
     }
 }
 
@@ -121,9 +124,9 @@ pub(super) fn run_cpu(a: BenchArgs) -> anyhow::Result<()> {
             ("shading", st.shading_ms),
             ("denoise", st.denoise_ms),
         ]
-        .map(|(name, ms)| StageMs { name: name.into(), ms })
+        .map(|(name, ms)| StageMs { name: name.into(), ms, min_ms: None, max_ms: None })
         .to_vec();
-        runs.push(vpl_run(&settings, param, st, rmse, stages));
+        runs.push(vpl_run(&settings, param, st, rmse, stages, (st.far_work, st.near_work)));
         bar.inc(1);
     }
     // The unculled loop's own speed: `none` without the near field, whose
@@ -161,13 +164,29 @@ pub(super) fn run_cpu(a: BenchArgs) -> anyhow::Result<()> {
 }
 
 /// `slc bench --backend gpu`: the whole VPL frame on the GPU per
-/// configuration, every stage timed; the reference is every VPL at every
-/// pixel of the frame's own rasterized G-buffer and RSM, shaded and
-/// composed on the GPU (`GpuVplFrame::render_reference`), so the RMSE
-/// measures the methods, not rasterization against ray casting.
+/// configuration. Timed with the GPU's clock held
+/// (`GpuVplFrame::time_sequence`: a continuous warm-up of `--warmup`
+/// seconds, then `--timed-frames` frames back to back in one submission,
+/// their timestamps resolved after the last; each stage's median and
+/// spread); where the adapter has no timestamps, the fastest of
+/// `--repeat` frames by wall clock, a wait after every stage. The RMSE
+/// comes from `--repeat` frames rendered and read back apart (frames 0,
+/// 1, …), against every VPL at every pixel of the frame's own rasterized
+/// G-buffer and RSM, shaded and composed on the GPU
+/// (`GpuVplFrame::render_reference`), so it measures the methods, not
+/// rasterization against ray casting. The work counters come from the
+/// counting kernels (`GpuVplFrame::count_work`), outside the timed frames.
 pub(super) fn run_gpu(a: BenchArgs) -> anyhow::Result<()> {
+    use slc_wgpu::frame::Stage;
     let r = a.scene.resolve()?;
     let gpu = gpu_context(Backend::Gpu)?.context("no GPU context")?;
+    if !(a.warmup >= 0.0 && a.warmup.is_finite()) || a.timed_frames == 0 {
+        anyhow::bail!(
+            "--warmup {} must be finite and >= 0, --timed-frames {} at least 1",
+            a.warmup,
+            a.timed_frames
+        );
+    }
     let mut frame = a.scene.gpu_frame(&gpu, &r)?;
     let configs = vpl_configs(&a, r.exposure)?;
     let bar = progress(configs.len())?;
@@ -180,10 +199,13 @@ pub(super) fn run_gpu(a: BenchArgs) -> anyhow::Result<()> {
     bar.inc(1);
     let mut runs = Vec::new();
     let mut timing = slc_scene::backend::Timing::Wall;
+    let mut held = true;
+    let vpl_stages = [Stage::LightUpdate, Stage::Bounds, Stage::Shading, Stage::NearField];
     for (param, settings) in configs {
         bar.set_message(run_label(&settings, param));
-        // One untimed frame first: drivers compile a pipeline at its first use.
-        frame.render(&pass_settings(&settings)?)?;
+        let st = pass_settings(&settings)?;
+        // One frame first: drivers compile a pipeline at its first use.
+        frame.render(&st)?;
         let (f, rmse) = fastest_frames(
             a.repeat,
             |k| {
@@ -194,14 +216,58 @@ pub(super) fn run_gpu(a: BenchArgs) -> anyhow::Result<()> {
             |f: &slc_wgpu::frame::FrameRender| f.stats.shading_ms,
             |f: &slc_wgpu::frame::FrameRender| f.image.rmse(&reference),
         )?;
-        timing = f.timing;
-        let stages =
-            f.stages.iter().map(|s| StageMs { name: s.name.to_string(), ms: s.ms }).collect();
-        runs.push(vpl_run(&settings, param, &f.stats, rmse, stages));
+        let work = frame.count_work(&st)?;
+        let sequence = frame.time_sequence(
+            &st,
+            std::time::Duration::from_secs_f64(a.warmup),
+            a.timed_frames,
+        )?;
+        let mut stats = f.stats;
+        let stages = match &sequence {
+            Some(seq) => {
+                timing = slc_scene::backend::Timing::GpuTimestamps;
+                stats.shading_ms = seq.spread(&vpl_stages[..]).0;
+                stats.total_ms = seq.spread(&[]).0;
+                seq.stages()
+                    .iter()
+                    .map(|s| StageMs {
+                        name: s.name.to_string(),
+                        ms: s.median_ms,
+                        min_ms: Some(s.min_ms),
+                        max_ms: Some(s.max_ms),
+                    })
+                    .collect()
+            }
+            None => {
+                held = false;
+                timing = f.timing;
+                f.stages
+                    .iter()
+                    .map(|s| StageMs {
+                        name: s.name.to_string(),
+                        ms: s.ms,
+                        min_ms: None,
+                        max_ms: None,
+                    })
+                    .collect()
+            }
+        };
+        runs.push(vpl_run(&settings, param, &stats, rmse, stages, work));
         bar.inc(1);
     }
     bar.finish_and_clear();
     speedups(&mut runs);
+    let how = if held {
+        format!(
+            "GPU timestamps, the clock held: {:.1} s of continuous frames, then {} frames back to back in one submission, each stage's median (min..max in the JSON); shading = light update + culling boxes + shading + near field",
+            a.warmup, a.timed_frames
+        )
+    } else {
+        format!(
+            "{}; the clock is not held: the fastest of --repeat frames by shading time",
+            crate::notes::timing_note(timing)
+        )
+    };
     let report = Report {
         app: "vpl".into(),
         backend: format!("gpu: {}", gpu.describe()),
@@ -209,19 +275,24 @@ pub(super) fn run_gpu(a: BenchArgs) -> anyhow::Result<()> {
         width: r.width,
         height: r.height,
         lights: (r.rsm_size as usize).pow(2),
-        timing: format!(
-            "{}; the whole frame on the GPU; fastest of --repeat frames (0, 1, …: RMSE their mean) by shading time",
-            crate::notes::timing_note(timing)
-        ),
+        timing: format!("{how}; RMSE: the mean over --repeat frames read back apart (0, 1, …)"),
         threads: std::thread::available_parallelism().map_or(1, |n| n.get()),
         reference_from_cache: false,
         simd: None,
         unculled_loop_evaluations_per_second: None,
         runs,
     };
+    println!("adapter: {}", gpu.describe());
+    println!("timing: {}", report.timing);
     for run in &report.runs {
-        let stages: Vec<String> =
-            run.stages.iter().map(|s| format!("{} {:.3}", s.name, s.ms)).collect();
+        let stages: Vec<String> = run
+            .stages
+            .iter()
+            .map(|s| match (s.min_ms, s.max_ms) {
+                (Some(lo), Some(hi)) => format!("{} {:.3} ({lo:.3}..{hi:.3})", s.name, s.ms),
+                _ => format!("{} {:.3}", s.name, s.ms),
+            })
+            .collect();
         println!(
             "{:>6} {:>8}: RMSE {:.5}, frame {:.3} ms ({})",
             run.method,
@@ -306,6 +377,16 @@ fn write_report(a: &BenchArgs, report: &Report) -> anyhow::Result<()> {
                 r.param.map_or("-".into(), |p| p.to_string()),
                 ms.join(", ")
             );
+        }
+    }
+    println!("work per shaded pixel (counted; the same on every machine):");
+    for r in &report.runs {
+        let label = format!("{} {}", r.method, r.param.map_or("-".into(), |p| p.to_string()));
+        if let Some(w) = &r.far_work {
+            println!("  {label:<14} far:  {}", w.line());
+        }
+        if let Some(w) = &r.near_work {
+            println!("  {label:<14} near: {}", w.line());
         }
     }
     if let Some(speed) = report.unculled_loop_evaluations_per_second {

@@ -25,6 +25,10 @@ pub fn vec4f(x: f32, y: f32, z: f32, w: f32) -> glam::Vec4 {
     glam::Vec4::new(x, y, z, w)
 }
 
+/// Rust spelling of WGSL's `vec4u`.
+#[allow(non_camel_case_types)]
+pub type vec4u = glam::UVec4;
+
 /// A read-only table of `f32` indexed with `u32`: a slice on the CPU. In WGSL
 /// the same parameter is a dummy `u32` and [`at`] reads the module-scope
 /// storage buffer `slc_table` (see [`PRELUDE`](super::PRELUDE)).

@@ -33,11 +33,12 @@ pub(super) struct Fields {
 }
 
 impl VplContext {
-    /// Every VPL at every pixel.
+    /// Every lit VPL at every pixel (an unlit one adds nothing; neither
+    /// backend loops over it).
     pub(super) fn shade_reference(&self) -> Fields {
         let v = &self.inputs.vpls;
         let mut list = LightList::default();
-        for i in 0..v.len() {
+        for i in (0..v.len()).filter(|&i| v.flux[i] != Vec3::ZERO) {
             list.push(v.position[i], v.normal[i], v.flux[i], f32::INFINITY, f32::INFINITY);
         }
         let gb = &self.inputs.gbuffer;
@@ -68,7 +69,7 @@ impl VplContext {
             specular,
             specular_near: Vec::new(),
             kept: out.iter().map(|o| o.1).collect(),
-            evaluations: shaded * v.len() as u64,
+            evaluations: shaded * list.len_unpadded() as u64,
             ..Fields::default()
         }
     }

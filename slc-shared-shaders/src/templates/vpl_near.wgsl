@@ -14,11 +14,11 @@
 // not at all (r2 holds a range beyond every distance), vpl_near_fixed_share.
 {% endif %}
 // Workgroup (x, y) is a {{ tile }}x{{ tile }} tile of full-resolution pixels: the
-// box of its G-buffer positions is reduced in workgroup memory; then, a
-// chunk of NEAR_CHUNK near blocks at a time, one thread per block tests the
-// block's box (widened by R_n) and, where it meets the tile's box, puts
-// the block's VPLs whose culling sphere (radius min(r, R_n),
-// vpl_near_cull_range2) meets it into a list every pixel loops over.
+// box of its G-buffer positions is reduced in workgroup memory, then the
+// near field's box hierarchy over the whole RSM in map order (near_slots;
+// vpl_clusters, vpl_groups) is culled against it (cluster_cull.wgsl), each
+// VPL's culling sphere of radius min(r, R_n) (vpl_ranges.wgsl): a tile
+// visits the clusters its box meets, not every VPL of the frame.
 {% if glossy %}
 // Glossy variant: the near field's specular correction S is added to
 // `specular` as its irradiance is to `irradiance` (vpl_tiled's glossy
@@ -30,28 +30,67 @@ const TILE: u32 = {{ tile }}u;
 const THREADS: u32 = TILE * TILE;
 const BOX_THREADS: u32 = THREADS;
 {% include "workgroup_box.wgsl" %}
-// Near blocks per chunk: one per thread, at most 32 (16 for 16x16 tiles,
-// so the list fits WebGPU's 16 KiB of workgroup memory).
-const NEAR_CHUNK: u32 = {% if tile * tile < 32 %}THREADS{% elif tile > 8 %}16u{% else %}32u{% endif %};
+const MAX_TILE_LIGHTS: u32 = {{ max_tile_lights }}u;
 
 {{ bindings }}
 {% include "gbuffer_read.wgsl" %}
 {% if glossy %}
 {% include "vpl_glossy.wgsl" %}
 {% endif %}
+{% include "vpl_ranges.wgsl" %}
+{% if counters %}
+{% include "work_counters.wgsl" %}
+{% endif %}
 
-/// The r^2 the near field keeps light `slot` by: its own range at the VPL's
-/// flux (slc), or the interleaved light's fixed range (clamp, none).
-fn near_r2_of(slot: u32) -> f32 {
+// This invocation's pixel and sums.
+var<private> pos: vec3f;
+var<private> nrm: vec3f;
+var<private> valid: bool;
+var<private> e: vec3f;
+var<private> kept: u32;
+{% if glossy %}
+var<private> s: vec3f;
+var<private> g: Glossy;
+{% endif %}
+
+fn cluster_slot(c: u32, k: u32) -> u32 {
+    return near_slots[(c - params.near_clusters_at) * CLUSTER + k];
+}
+
+fn cull_r2_of(slot: u32) -> f32 {
+    return near_cull_r2_of(slot, params.near_r2);
+}
+
+fn shade_list(count: u32) {
+    if !valid {
+        return;
+    }
+    // The flux the light buffer holds is P^2 times the VPL's own.
+    let unscale = 1.0 / interleave_flux_scale(P);
+    for (var m = 0u; m < count; m++) {
+        let slot = tile_lights[m];
+        let l = lights[slot];
+        let v = pos - l.p0;
 {% if method == "slc" %}
-    return vpl_near_range2(r2[slot], P);
+        let share = vpl_near_slc_share(vpl_near_range2(rt2[slot], P), near_r2_of(slot), dot(v, v), params.near_r2);
 {% else %}
-    return r2[slot];
+        let share = vpl_near_fixed_share(r2[slot], dot(v, v), params.near_r2);
+{% endif %}
+        if share > 0.0 {
+            let t = vpl_transfer(l.p1, nrm, v, params.min_d2) * share * unscale;
+            e += l.intensity * t;
+{% if glossy %}
+            s += glossy_term(g, l, nrm, v, t);
+{% endif %}
+            kept += 1u;
+        }
+    }
+{% if counters %}
+    count_add(COUNT_TESTED, count);
 {% endif %}
 }
 
-var<workgroup> light_count: atomic<u32>;
-var<workgroup> light_list: array<u32, NEAR_CHUNK * NEAR_BLOCK>;
+{% include "cluster_cull.wgsl" %}
 
 @compute @workgroup_size({{ tile }}, {{ tile }}, 1)
 fn main(
@@ -63,72 +102,38 @@ fn main(
     let py = wg.y * TILE + lid.y;
     let inside = px < params.width && py < params.height;
     let pix = py * params.width + px;
-    var pos = vec4f(0.0);
-    var nrm = vec3f(0.0);
+    var p = vec4f(0.0);
     if inside {
-        let g = gbuffer_at(pix);
-        pos = g.position;
-        nrm = g.normal.xyz;
+        let gb = gbuffer_at(pix);
+        p = gb.position;
+        nrm = gb.normal.xyz;
     }
-    let valid = inside && pos.w > 0.0;
-    let tile_box = workgroup_box(li, pos.xyz, valid);
-    let lo = tile_box.lo;
-    let hi = tile_box.hi;
-    let radius = cull_radius(params.near_r2);
-    // The flux the light buffer holds is P^2 times the VPL's own.
-    let unscale = 1.0 / interleave_flux_scale(P);
-    var e = vec3f(0.0);
-    var kept = 0u;
+    pos = p.xyz;
+    valid = inside && p.w > 0.0;
 {% if glossy %}
-    var s = vec3f(0.0);
-    var g: Glossy;
     if valid {
-        g = glossy_at(pix, pos.xyz);
+        g = glossy_at(pix, pos);
     }
 {% endif %}
-    for (var first = 0u; first < params.near_blocks; first += NEAR_CHUNK) {
-        if li == 0u {
-            atomicStore(&light_count, 0u);
-        }
-        workgroupBarrier();
-        let b = first + li;
-        if li < NEAR_CHUNK && b < params.near_blocks {
-            let nb = near_boxes[b];
-            if all(nb.lo - vec3f(radius) <= hi) && all(lo <= nb.hi + vec3f(radius)) {
-                for (var m = 0u; m < NEAR_BLOCK; m++) {
-                    let slot = near_slots[b * NEAR_BLOCK + m];
-                    let l = lights[slot];
-                    let cull = cull_radius(vpl_near_cull_range2(near_r2_of(slot), params.near_r2));
-                    if any(l.intensity != vec3f(0.0)) && sphere_overlaps_aabb(l.p0, cull, lo, hi) {
-                        light_list[atomicAdd(&light_count, 1u)] = slot;
-                    }
-                }
-            }
-        }
-        let count = workgroupUniformLoad(&light_count);
-        if valid {
-            for (var m = 0u; m < count; m++) {
-                let slot = light_list[m];
-                let l = lights[slot];
-                let v = pos.xyz - l.p0;
-{% if method == "slc" %}
-                let share = vpl_near_slc_share(vpl_near_range2(rt2[slot], P), near_r2_of(slot), dot(v, v), params.near_r2);
-{% else %}
-                let share = vpl_near_fixed_share(r2[slot], dot(v, v), params.near_r2);
-{% endif %}
-                if share > 0.0 {
-                    let t = vpl_transfer(l.p1, nrm, v, params.min_d2) * share * unscale;
-                    e += l.intensity * t;
-{% if glossy %}
-                    s += glossy_term(g, l, nrm, v, t);
-{% endif %}
-                    kept += 1u;
-                }
-            }
-        }
-        // Every thread is done with the list before the next chunk refills it.
-        workgroupBarrier();
+{% if counters %}
+    counts_begin(li);
+    if valid {
+        count_one(COUNT_PIXELS);
     }
+{% endif %}
+    let tile_box = workgroup_box(li, pos, valid);
+    if !box_is_empty(tile_box) {
+{% if counters %}
+        count_tests(li, COUNT_TILES, 1u);
+{% endif %}
+        cull_tile(li, tile_box.lo, tile_box.hi, params.near_grid, params.near_clusters_at, params.near_groups_at);
+    }
+{% if counters %}
+    if valid {
+        count_add(COUNT_KEPT, kept);
+    }
+    counts_end(li);
+{% endif %}
     if valid {
         let old = irradiance[pix];
         irradiance[pix] = vec4f(old.xyz + e, old.w + f32(kept));

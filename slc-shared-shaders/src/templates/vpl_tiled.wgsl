@@ -4,13 +4,18 @@
 // interleaved sampling: workgroup (x, y, s) is tile (x, y) of sub-image s,
 // which holds the pixels (s mod P + P·i, s / P + P·j) and shades them with
 // VPL subset shifted_subset(s, subset_shift) (VPLs stored subset after
-// subset, flux already scaled by P²).
-// The tile's box of G-buffer positions is reduced in workgroup memory, the
-// subset's range spheres are culled against it into a workgroup list (a
-// chunk of the subset at a time), then each pixel loops over the list with
-// the keep test and 1/p weight. Each light's transfer is weighted by its far
-// share vpl_far_weight (the near share is vpl_near's): vpl_far_slc_share,
-// vpl_far_fixed_share.
+// subset, each subset's image in map order, flux already scaled by P²).
+// The tile's box of G-buffer positions is reduced in workgroup memory;
+{% if method == "none" %}
+// unculled, every pixel loops over the subset's lit VPLs.
+{% else %}
+// the subset's box hierarchy (vpl_clusters, vpl_groups) is culled against
+// it into a workgroup list (cluster_cull.wgsl), which each pixel loops over
+// with the keep test and 1/p weight. A tile without a surface culls
+// nothing.
+{% endif %}
+// Each light's transfer is weighted by its far share vpl_far_weight (the
+// near share is vpl_near's): vpl_far_slc_share, vpl_far_fixed_share.
 {% if glossy %}
 // Glossy variant: each pixel's material from `materials`; where it has a
 // specular lobe the same kept lights, transfer and shares also sum the
@@ -29,9 +34,65 @@ const MAX_TILE_LIGHTS: u32 = {{ max_tile_lights }}u;
 {% if glossy %}
 {% include "vpl_glossy.wgsl" %}
 {% endif %}
+{% if counters %}
+{% include "work_counters.wgsl" %}
+{% endif %}
 
-var<workgroup> tile_count: atomic<u32>;
-var<workgroup> tile_lights: array<u32, MAX_TILE_LIGHTS>;
+// This invocation's pixel and sums.
+var<private> pos: vec3f;
+var<private> nrm: vec3f;
+var<private> valid: bool;
+var<private> e: vec3f;
+var<private> kept: u32;
+{% if glossy %}
+var<private> s: vec3f;
+var<private> g: Glossy;
+{% endif %}
+
+/// Adds light `j`'s far share at this pixel.
+fn shade_light(j: u32) {
+    let l = lights[j];
+    let v = pos - l.p0;
+{% if method == "slc" %}
+    let share = vpl_far_slc_share(rt2[j], r2[j], dot(v, v), params.near_r2);
+{% elif method == "clamp" %}
+    let share = vpl_far_fixed_share(r2[j], dot(v, v), params.near_r2);
+{% else %}
+    // Unculled: the far share alone.
+    let share = vpl_far_weight(dot(v, v), params.near_r2);
+{% endif %}
+    if share > 0.0 {
+        let t = vpl_transfer(l.p1, nrm, v, params.min_d2) * share;
+        e += l.intensity * t;
+{% if glossy %}
+        s += glossy_term(g, l, nrm, v, t);
+{% endif %}
+        kept += 1u;
+    }
+}
+
+{% if method != "none" %}
+fn cluster_slot(c: u32, k: u32) -> u32 {
+    return c * CLUSTER + k;
+}
+
+fn cull_r2_of(slot: u32) -> f32 {
+    return r2[slot];
+}
+
+fn shade_list(count: u32) {
+    if valid {
+        for (var k = 0u; k < count; k++) {
+            shade_light(tile_lights[k]);
+        }
+{% if counters %}
+        count_add(COUNT_TESTED, count);
+{% endif %}
+    }
+}
+
+{% include "cluster_cull.wgsl" %}
+{% endif %}
 
 @compute @workgroup_size({{ tile }}, {{ tile }}, 1)
 fn main(
@@ -44,86 +105,61 @@ fn main(
     let py = sub / P + (wg.y * TILE + lid.y) * P;
     let inside = px < params.width && py < params.height;
     let pix = py * params.width + px;
-    var pos = vec4f(0.0);
-    var nrm = vec3f(0.0);
+    var p = vec4f(0.0);
     if inside {
-        let g = gbuffer_at(pix);
-        pos = g.position;
-        nrm = g.normal.xyz;
+        let gb = gbuffer_at(pix);
+        p = gb.position;
+        nrm = gb.normal.xyz;
     }
-    let valid = inside && pos.w > 0.0;
-    let tile_box = workgroup_box(li, pos.xyz, valid);
-    let lo = tile_box.lo;
-    let hi = tile_box.hi;
-    // This frame's map: pixel class `sub` shades a shifted subset.
-    let base = shifted_subset(sub, params.subset_shift, P) * params.lights_per_subset;
-    var e = vec3f(0.0);
-    var kept = 0u;
+    pos = p.xyz;
+    valid = inside && p.w > 0.0;
 {% if glossy %}
-    var s = vec3f(0.0);
-    var g: Glossy;
     if valid {
-        g = glossy_at(pix, pos.xyz);
+        g = glossy_at(pix, pos);
     }
 {% endif %}
+{% if counters %}
+    counts_begin(li);
+    if valid {
+        count_one(COUNT_PIXELS);
+    }
+{% endif %}
+    let tile_box = workgroup_box(li, pos, valid);
+    // This frame's map: pixel class `sub` shades a shifted subset.
+    let subset = shifted_subset(sub, params.subset_shift, P);
 {% if method == "none" %}
     if valid {
+        let base = subset * params.lights_per_subset;
         for (var j = base; j < base + params.lights_per_subset; j++) {
-            let l = lights[j];
-            let v = pos.xyz - l.p0;
-            // Unculled: the far share alone.
-            let share = vpl_far_weight(dot(v, v), params.near_r2);
-            if share > 0.0 {
-                let t = vpl_transfer(l.p1, nrm, v, params.min_d2) * share;
-                e += l.intensity * t;
-{% if glossy %}
-                s += glossy_term(g, l, nrm, v, t);
+            if any(lights[j].intensity != vec3f(0.0)) {
+                shade_light(j);
+{% if counters %}
+                count_one(COUNT_TESTED);
 {% endif %}
-                kept += 1u;
             }
         }
     }
 {% else %}
-    // The subset streams through the list MAX_TILE_LIGHTS lights at a time,
-    // so any subset size fits the workgroup memory.
-    for (var first = 0u; first < params.lights_per_subset; first += MAX_TILE_LIGHTS) {
-        let end = min(first + MAX_TILE_LIGHTS, params.lights_per_subset);
-        if li == 0u {
-            atomicStore(&tile_count, 0u);
-        }
-        workgroupBarrier();
-        for (var j = first + li; j < end; j += THREADS) {
-            if sphere_overlaps_aabb(lights[base + j].p0, cull_radius(r2[base + j]), lo, hi) {
-                let slot = atomicAdd(&tile_count, 1u);
-                if slot < MAX_TILE_LIGHTS {
-                    tile_lights[slot] = j;
-                }
-            }
-        }
-        let count = min(workgroupUniformLoad(&tile_count), MAX_TILE_LIGHTS);
-        if valid {
-            for (var k = 0u; k < count; k++) {
-                let j = base + tile_lights[k];
-                let l = lights[j];
-                let v = pos.xyz - l.p0;
-{% if method == "slc" %}
-                let share = vpl_far_slc_share(rt2[j], r2[j], dot(v, v), params.near_r2);
-{% else %}
-                let share = vpl_far_fixed_share(r2[j], dot(v, v), params.near_r2);
+    if !box_is_empty(tile_box) {
+{% if counters %}
+        count_tests(li, COUNT_TILES, 1u);
 {% endif %}
-                if share > 0.0 {
-                    let t = vpl_transfer(l.p1, nrm, v, params.min_d2) * share;
-                    e += l.intensity * t;
-{% if glossy %}
-                    s += glossy_term(g, l, nrm, v, t);
-{% endif %}
-                    kept += 1u;
-                }
-            }
-        }
-        // Every thread is done with the list before the next chunk refills it.
-        workgroupBarrier();
+        let grid = params.far_grid;
+        cull_tile(
+            li,
+            tile_box.lo,
+            tile_box.hi,
+            grid,
+            subset * (params.lights_per_subset / CLUSTER),
+            params.far_groups_at + subset * group_count(grid.x, grid.y, grid.z, grid.w),
+        );
     }
+{% endif %}
+{% if counters %}
+    if valid {
+        count_add(COUNT_KEPT, kept);
+    }
+    counts_end(li);
 {% endif %}
     // Every pixel is written (zero where no surface is): nothing else
     // clears the irradiance of the last record.

@@ -25,6 +25,8 @@ const CULL_RADIUS_SCALE: f32 = 1.000001f;
 const SPHERE_PAD: f32 = 0.00000047683716f;
 const SPHERE_HUGE: f32 = 340282350000000000000000000000000000000f;
 const SPHERE_PAD_ABS: f32 = 0.000000000000000001f;
+const CLUSTER: u32 = 64u;
+const GROUP_SIDE: u32 = 8u;
 const INV_PI: f32 = 0.31830987f;
 const MIN_D2_: f32 = 0.000000000001f;
 const MAX_INTENSITY: f32 = 72057594000000000f;
@@ -38,7 +40,6 @@ const F32_MAX: f32 = 340282350000000000000000000000000000000f;
 const DEPTH_NONE: f32 = 1000000000000000000000000000000f;
 const DEPTH_SIGMA: f32 = 0.05f;
 const COVER_WEIGHT: f32 = 0.1f;
-const NEAR_BLOCK: u32 = 64u;
 const ROULETTE_DEPTH: u32 = 2u;
 const TEMPORAL_MAX_HISTORY: f32 = 32f;
 const TEMPORAL_DEPTH_TOLERANCE: f32 = 0.01f;
@@ -276,18 +277,129 @@ fn sphere_union(c1_1: vec3<f32>, r1_1: f32, c2_1: vec3<f32>, r2_3: f32) -> vec4<
         return vec4<f32>(c2_1.x, c2_1.y, c2_1.z, (rm + _e58));
     }
     let r0_ = (0.5f * ((d_10 + r1_1) + r2_3));
-    let c_13 = (c1_1 + (v_16 * ((r0_ - r1_1) / d_10)));
-    let e1_ = (c_13 - c1_1);
-    let e2_ = (c_13 - c2_1);
+    let c_15 = (c1_1 + (v_16 * ((r0_ - r1_1) / d_10)));
+    let e1_ = (c_15 - c1_1);
+    let e2_ = (c_15 - c2_1);
     let r_10 = max(r0_, max((sqrt(dot(e1_, e1_)) + r1_1), (sqrt(dot(e2_, e2_)) + r2_3)));
-    let _e82 = sphere_pad(r_10, c_13);
-    return vec4<f32>(c_13.x, c_13.y, c_13.z, (r_10 + _e82));
+    let _e82 = sphere_pad(r_10, c_15);
+    return vec4<f32>(c_15.x, c_15.y, c_15.z, (r_10 + _e82));
 }
 
 fn sphere_overlaps_aabb(c_2: vec3<f32>, r_2: f32, bmin: vec3<f32>, bmax: vec3<f32>) -> bool {
     let q_4 = clamp(c_2, bmin, bmax);
     let v_17 = (q_4 - c_2);
     return (dot(v_17, v_17) <= (r_2 * r_2));
+}
+
+fn groups_across(bw: u32, gw: u32) -> u32 {
+    return (((bw + gw) - 1u) / gw);
+}
+
+fn group_count(bw_1: u32, bh: u32, gw_1: u32, gh: u32) -> u32 {
+    let _e4 = groups_across(bw_1, gw_1);
+    let _e5 = groups_across(bh, gh);
+    return (_e4 * _e5);
+}
+
+fn group_first(g: u32, bw_2: u32, bh_1: u32, gw_2: u32, gh_1: u32) -> u32 {
+    let _e5 = groups_across(bw_2, gw_2);
+    let gx = (g % _e5);
+    let gy = (g / _e5);
+    let h_2 = min(gh_1, (bh_1 - (gh_1 * gy)));
+    return (((gy * gh_1) * bw_2) + ((gx * gw_2) * h_2));
+}
+
+fn group_clusters(g_1: u32, bw_3: u32, bh_2: u32, gw_3: u32, gh_2: u32) -> u32 {
+    let _e5 = groups_across(bw_3, gw_3);
+    let gx_1 = (g_1 % _e5);
+    let gy_1 = (g_1 / _e5);
+    return (min(gw_3, (bw_3 - (gw_3 * gx_1))) * min(gh_2, (bh_2 - (gh_2 * gy_1))));
+}
+
+fn cluster_index(bx: u32, by: u32, bw_4: u32, bh_3: u32, gw_4: u32, gh_3: u32) -> u32 {
+    let gx_2 = (bx / gw_4);
+    let gy_2 = (by / gh_3);
+    let w_13 = min(gw_4, (bw_4 - (gw_4 * gx_2)));
+    let _e11 = groups_across(bw_4, gw_4);
+    let g_2 = ((gy_2 * _e11) + gx_2);
+    let _e14 = group_first(g_2, bw_4, bh_3, gw_4, gh_3);
+    return ((_e14 + ((by - (gh_3 * gy_2)) * w_13)) + (bx - (gw_4 * gx_2)));
+}
+
+fn cluster_x(c_3: u32, bw_5: u32, bh_4: u32, gw_5: u32, gh_4: u32) -> u32 {
+    let gy_3 = (c_3 / (gh_4 * bw_5));
+    let h_3 = min(gh_4, (bh_4 - (gh_4 * gy_3)));
+    let rest = (c_3 - ((gy_3 * gh_4) * bw_5));
+    let gx_3 = (rest / (gw_5 * h_3));
+    let w_14 = min(gw_5, (bw_5 - (gw_5 * gx_3)));
+    return ((gx_3 * gw_5) + ((rest - ((gx_3 * gw_5) * h_3)) % w_14));
+}
+
+fn cluster_y(c_4: u32, bw_6: u32, bh_5: u32, gw_6: u32, gh_5: u32) -> u32 {
+    let gy_4 = (c_4 / (gh_5 * bw_6));
+    let h_4 = min(gh_5, (bh_5 - (gh_5 * gy_4)));
+    let rest_1 = (c_4 - ((gy_4 * gh_5) * bw_6));
+    let gx_4 = (rest_1 / (gw_6 * h_4));
+    let w_15 = min(gw_6, (bw_6 - (gw_6 * gx_4)));
+    return ((gy_4 * gh_5) + ((rest_1 - ((gx_4 * gw_6) * h_4)) / w_15));
+}
+
+fn map_index(tx: u32, ty: u32, side: u32) -> u32 {
+    let b_7 = (side / 8u);
+    let _e11 = cluster_index((tx / 8u), (ty / 8u), b_7, b_7, GROUP_SIDE, GROUP_SIDE);
+    return (((_e11 * CLUSTER) + ((ty % 8u) * 8u)) + (tx % 8u));
+}
+
+fn map_x(q: u32, side_1: u32) -> u32 {
+    let b_8 = (side_1 / 8u);
+    let _e8 = cluster_x((q / CLUSTER), b_8, b_8, GROUP_SIDE, GROUP_SIDE);
+    return ((_e8 * 8u) + (q % 8u));
+}
+
+fn map_y(q_1: u32, side_2: u32) -> u32 {
+    let b_9 = (side_2 / 8u);
+    let _e8 = cluster_y((q_1 / CLUSTER), b_9, b_9, GROUP_SIDE, GROUP_SIDE);
+    return ((_e8 * 8u) + ((q_1 % CLUSTER) / 8u));
+}
+
+fn box_overlaps_box(lo1_: vec3<f32>, hi1_: vec3<f32>, lo2_: vec3<f32>, hi2_: vec3<f32>) -> bool {
+    var local_1: bool;
+    var local_2: bool;
+    var local_3: bool;
+    var local_4: bool;
+    var local_5: bool;
+
+    if (lo1_.x <= hi2_.x) {
+        local_1 = (lo2_.x <= hi1_.x);
+    } else {
+        local_1 = false;
+    }
+    let _e13 = local_1;
+    if _e13 {
+        local_2 = (lo1_.y <= hi2_.y);
+    } else {
+        local_2 = false;
+    }
+    let _e20 = local_2;
+    if _e20 {
+        local_3 = (lo2_.y <= hi1_.y);
+    } else {
+        local_3 = false;
+    }
+    let _e27 = local_3;
+    if _e27 {
+        local_4 = (lo1_.z <= hi2_.z);
+    } else {
+        local_4 = false;
+    }
+    let _e34 = local_4;
+    if _e34 {
+        local_5 = (lo2_.z <= hi1_.z);
+    } else {
+        local_5 = false;
+    }
+    let _e41 = local_5;
+    return _e41;
 }
 
 fn vpl_rt2_(flux: vec3<f32>, exposure_1: f32, error_bound_1: f32, mode_1: u32) -> f32 {
@@ -311,29 +423,29 @@ fn connection_factor(cos_x: f32, d2_6: f32, rt2_3: f32, w: f32) -> f32 {
 }
 
 fn connection_cosine(x_6: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, r2_5: f32) -> f32 {
-    var local_1: bool;
-    var local_2: bool;
+    var local_6: bool;
+    var local_7: bool;
 
     let v_18 = (x_6 - y);
     let d2_17 = dot(v_18, v_18);
     let _e7 = slc_keep(r2_5, d2_17);
     if !(!(_e7)) {
-        local_1 = !((d2_17 > 0f));
+        local_6 = !((d2_17 > 0f));
     } else {
-        local_1 = true;
+        local_6 = true;
     }
-    let _e16 = local_1;
+    let _e16 = local_6;
     if _e16 {
         return 0f;
     }
-    let w_13 = (v_18 / vec3(sqrt(d2_17)));
-    let cos_x_1 = -(dot(n, w_13));
+    let w_16 = (v_18 / vec3(sqrt(d2_17)));
+    let cos_x_1 = -(dot(n, w_16));
     if !((cos_x_1 <= 0f)) {
-        local_2 = (dot(ng, w_13) >= 0f);
+        local_7 = (dot(ng, w_16) >= 0f);
     } else {
-        local_2 = true;
+        local_7 = true;
     }
-    let _e32 = local_2;
+    let _e32 = local_7;
     if _e32 {
         return 0f;
     }
@@ -361,19 +473,19 @@ fn triangle_lobe(n_2: vec3<f32>, area: f32, w_2: vec3<f32>) -> f32 {
     return (area * max(dot(n_2, w_2), 0f));
 }
 
-fn triangle_sample(a_2: vec3<f32>, b_2: vec3<f32>, c_3: vec3<f32>, u1_: f32, u2_: f32) -> vec3<f32> {
+fn triangle_sample(a_2: vec3<f32>, b_2: vec3<f32>, c_5: vec3<f32>, u1_: f32, u2_: f32) -> vec3<f32> {
     let su = sqrt(u1_);
     let b0_ = (1f - su);
     let b1_ = (u2_ * su);
-    return (((a_2 * b0_) + (b_2 * b1_)) + (c_3 * ((1f - b0_) - b1_)));
+    return (((a_2 * b0_) + (b_2 * b1_)) + (c_5 * ((1f - b0_) - b1_)));
 }
 
 fn area_to_solid_angle_pdf(pdf_area: f32, d2_7: f32, cos_light: f32) -> f32 {
-    let c_14 = abs(cos_light);
-    if (c_14 <= 0f) {
+    let c_16 = abs(cos_light);
+    if (c_16 <= 0f) {
         return 0f;
     }
-    return ((pdf_area * d2_7) / c_14);
+    return ((pdf_area * d2_7) / c_16);
 }
 
 fn atan_portable(x_7: f32) -> f32 {
@@ -421,10 +533,10 @@ fn atan2_portable(y_1: f32, x_8: f32) -> f32 {
     return (_e12 - 3.1415927f);
 }
 
-fn ies_fold_c(c_4: f32, h_first: f32, h_last: f32) -> f32 {
+fn ies_fold_c(c_6: f32, h_first: f32, h_last: f32) -> f32 {
     var a_3: f32;
 
-    a_3 = (c_4 - (360f * floor((c_4 / 360f))));
+    a_3 = (c_6 - (360f * floor((c_6 / 360f))));
     if (h_last <= 0f) {
         return 0f;
     }
@@ -508,8 +620,8 @@ fn ies_lerp_t(a0_: f32, a1_: f32, x_10: f32) -> f32 {
     return saturate(((x_10 - a0_) / (a1_ - a0_)));
 }
 
-fn ies_candela(tab_2: u32, base_1: u32, gamma: f32, c_5: f32) -> f32 {
-    var local_3: bool;
+fn ies_candela(tab_2: u32, base_1: u32, gamma: f32, c_7: f32) -> f32 {
+    var local_8: bool;
 
     let _e4 = at(tab_2, base_1);
     let _e5 = to_u32_(_e4);
@@ -521,17 +633,17 @@ fn ies_candela(tab_2: u32, base_1: u32, gamma: f32, c_5: f32) -> f32 {
     let _e14 = at(tab_2, v0_);
     if !((gamma < _e14)) {
         let _e22 = at(tab_2, ((v0_ + _e5) - 1u));
-        local_3 = (gamma > _e22);
+        local_8 = (gamma > _e22);
     } else {
-        local_3 = true;
+        local_8 = true;
     }
-    let _e25 = local_3;
+    let _e25 = local_8;
     if _e25 {
         return 0f;
     }
     let _e27 = at(tab_2, h0_);
     let _e31 = at(tab_2, ((h0_ + _e9) - 1u));
-    let _e32 = ies_fold_c(c_5, _e27, _e31);
+    let _e32 = ies_fold_c(c_7, _e27, _e31);
     let _e33 = ies_segment(tab_2, v0_, _e5, gamma);
     let _e34 = ies_segment(tab_2, h0_, _e9, _e32);
     let iv1_ = min((_e33 + 1u), (_e5 - 1u));
@@ -547,8 +659,8 @@ fn ies_candela(tab_2: u32, base_1: u32, gamma: f32, c_5: f32) -> f32 {
     let a_11 = ((_e58 * (1f - _e49)) + (_e65 * _e49));
     let _e71 = at(tab_2, ((c0_2 + (ih1_ * _e5)) + _e33));
     let _e78 = at(tab_2, ((c0_2 + (ih1_ * _e5)) + iv1_));
-    let b_7 = ((_e71 * (1f - _e49)) + (_e78 * _e49));
-    return ((a_11 * (1f - _e54)) + (b_7 * _e54));
+    let b_10 = ((_e71 * (1f - _e49)) + (_e78 * _e49));
+    return ((a_11 * (1f - _e54)) + (b_10 * _e54));
 }
 
 fn ies_candela_dir(tab_3: u32, base_2: u32, wn: f32, wr: f32, ws: f32) -> f32 {
@@ -556,14 +668,14 @@ fn ies_candela_dir(tab_3: u32, base_2: u32, wn: f32, wr: f32, ws: f32) -> f32 {
     let gamma_1 = degrees(_e9);
     let on_axis = ((abs(wr) + abs(ws)) <= 0f);
     let _e16 = atan2_portable(ws, wr);
-    let c_15 = select(degrees(_e16), 0f, on_axis);
-    let _e20 = ies_candela(tab_3, base_2, gamma_1, c_15);
+    let c_17 = select(degrees(_e16), 0f, on_axis);
+    let _e20 = ies_candela(tab_3, base_2, gamma_1, c_17);
     return _e20;
 }
 
 fn ies_light_candela(tab_4: u32, base_3: u32, nadir: vec3<f32>, reference: vec3<f32>, w_3: vec3<f32>) -> f32 {
-    let side = cross(reference, nadir);
-    let _e9 = ies_candela_dir(tab_4, base_3, dot(w_3, nadir), dot(w_3, reference), dot(w_3, side));
+    let side_3 = cross(reference, nadir);
+    let _e9 = ies_candela_dir(tab_4, base_3, dot(w_3, nadir), dot(w_3, reference), dot(w_3, side_3));
     return _e9;
 }
 
@@ -640,15 +752,15 @@ fn weighted_pick_weight(w_sum_1: f32, w_5: f32, k_2: u32) -> f32 {
 
 fn reservoir_select_pdf(seen: u32, in_range: bool, k_3: u32) -> f32 {
     var others: u32;
-    var local_4: bool;
+    var local_9: bool;
 
     others = seen;
     if in_range {
-        local_4 = (seen > 0u);
+        local_9 = (seen > 0u);
     } else {
-        local_4 = false;
+        local_9 = false;
     }
-    let _e9 = local_4;
+    let _e9 = local_9;
     if _e9 {
         others = (seen - 1u);
     }
@@ -685,21 +797,21 @@ fn mis_power(pdf_a_1: f32, pdf_b_1: f32) -> f32 {
 }
 
 fn light_strategy_pdf(select_: f32, rt2_4: f32, d2_8: f32, area_1: f32, cos_y: f32) -> f32 {
-    var local_5: bool;
-    var local_6: bool;
+    var local_10: bool;
+    var local_11: bool;
 
     if !((d2_8 <= 0f)) {
-        local_5 = (area_1 <= 0f);
+        local_10 = (area_1 <= 0f);
     } else {
-        local_5 = true;
+        local_10 = true;
     }
-    let _e13 = local_5;
+    let _e13 = local_10;
     if !(_e13) {
-        local_6 = (cos_y <= 0f);
+        local_11 = (cos_y <= 0f);
     } else {
-        local_6 = true;
+        local_11 = true;
     }
-    let _e20 = local_6;
+    let _e20 = local_11;
     if _e20 {
         return 0f;
     }
@@ -766,14 +878,14 @@ fn smith_root(cos_: f32, alpha_1: f32) -> f32 {
 }
 
 fn smith_visibility(n_l_1: f32, n_v: f32, alpha_2: f32) -> f32 {
-    var local_7: bool;
+    var local_12: bool;
 
     if !((n_l_1 <= 0f)) {
-        local_7 = (n_v <= 0f);
+        local_12 = (n_v <= 0f);
     } else {
-        local_7 = true;
+        local_12 = true;
     }
-    let _e11 = local_7;
+    let _e11 = local_12;
     if _e11 {
         return 0f;
     }
@@ -783,9 +895,9 @@ fn smith_visibility(n_l_1: f32, n_v: f32, alpha_2: f32) -> f32 {
 }
 
 fn fresnel_schlick(f0_: vec3<f32>, f90_: f32, v_h: f32) -> vec3<f32> {
-    let c_16 = saturate((1f - v_h));
-    let c2_3 = (c_16 * c_16);
-    return (f0_ + ((vec3<f32>(f90_, f90_, f90_) - f0_) * ((c2_3 * c2_3) * c_16)));
+    let c_18 = saturate((1f - v_h));
+    let c2_3 = (c_18 * c_18);
+    return (f0_ + ((vec3<f32>(f90_, f90_, f90_) - f0_) * ((c2_3 * c2_3) * c_18)));
 }
 
 fn specular_fresnel(base_4: vec3<f32>, metallic: f32, f0_d: vec3<f32>, f90_d: f32, v_h_1: f32) -> vec3<f32> {
@@ -800,34 +912,34 @@ fn diffuse_brdf(base_5: vec3<f32>, metallic_1: f32, f0_d_1: vec3<f32>, f90_d_1: 
 }
 
 fn half_cosine(v_3: vec3<f32>, l: vec3<f32>) -> f32 {
-    let h_2 = (v_3 + l);
-    let len2_ = dot(h_2, h_2);
+    let h_5 = (v_3 + l);
+    let len2_ = dot(h_5, h_5);
     if (len2_ <= 0f) {
         return 0f;
     }
-    return saturate((dot(v_3, h_2) / sqrt(len2_)));
+    return saturate((dot(v_3, h_5) / sqrt(len2_)));
 }
 
 fn specular_brdf(base_6: vec3<f32>, metallic_2: f32, f0_d_2: vec3<f32>, f90_d_2: f32, alpha_3: f32, n_14: vec3<f32>, v_4: vec3<f32>, l_1: vec3<f32>) -> vec3<f32> {
-    var local_8: bool;
+    var local_13: bool;
 
     let n_l_2 = dot(n_14, l_1);
     let n_v_3 = dot(n_14, v_4);
     if !((n_l_2 <= 0f)) {
-        local_8 = (n_v_3 <= 0f);
+        local_13 = (n_v_3 <= 0f);
     } else {
-        local_8 = true;
+        local_13 = true;
     }
-    let _e18 = local_8;
+    let _e18 = local_13;
     if _e18 {
         return vec3<f32>(0f, 0f, 0f);
     }
     let hs = (v_4 + l_1);
     let inv = (1f / sqrt(dot(hs, hs)));
-    let h_3 = (hs * inv);
-    let c_17 = cross(n_14, h_3);
-    let _e32 = ggx_d(dot(n_14, h_3), dot(c_17, c_17), alpha_3);
-    let _e34 = specular_fresnel(base_6, metallic_2, f0_d_2, f90_d_2, dot(v_4, h_3));
+    let h_6 = (hs * inv);
+    let c_19 = cross(n_14, h_6);
+    let _e32 = ggx_d(dot(n_14, h_6), dot(c_19, c_19), alpha_3);
+    let _e34 = specular_fresnel(base_6, metallic_2, f0_d_2, f90_d_2, dot(v_4, h_6));
     let _e35 = smith_visibility(n_l_2, n_v_3, alpha_3);
     return (_e34 * (_e32 * _e35));
 }
@@ -853,40 +965,40 @@ fn specular_correction(base_9: vec3<f32>, metallic_5: f32, f0_d_4: vec3<f32>, f9
 }
 
 fn has_specular(metallic_6: f32, f0_d_5: vec3<f32>, f90_d_5: f32) -> bool {
-    var local_9: bool;
-    var local_10: bool;
+    var local_14: bool;
+    var local_15: bool;
 
     if !((metallic_6 > 0f)) {
-        local_9 = (f90_d_5 > 0f);
+        local_14 = (f90_d_5 > 0f);
     } else {
-        local_9 = true;
+        local_14 = true;
     }
-    let _e11 = local_9;
+    let _e11 = local_14;
     if !(_e11) {
-        local_10 = (max(max(f0_d_5.x, f0_d_5.y), f0_d_5.z) > 0f);
+        local_15 = (max(max(f0_d_5.x, f0_d_5.y), f0_d_5.z) > 0f);
     } else {
-        local_10 = true;
+        local_15 = true;
     }
-    let _e23 = local_10;
+    let _e23 = local_15;
     return _e23;
 }
 
-fn channel_mean(c_6: vec3<f32>) -> f32 {
-    return (((c_6.x + c_6.y) + c_6.z) * 0.33333334f);
+fn channel_mean(c_8: vec3<f32>) -> f32 {
+    return (((c_8.x + c_8.y) + c_8.z) * 0.33333334f);
 }
 
 fn receiver_lobe(base_10: vec3<f32>, metallic_7: f32, f0_d_6: vec3<f32>, f90_d_6: f32, alpha_6: f32, n_v_1: f32) -> vec4<f32> {
-    var local_11: bool;
+    var local_16: bool;
 
     let _e10 = fresnel_schlick(f0_d_6, f90_d_6, n_v_1);
     let _e16 = channel_mean((((vec3<f32>(1f, 1f, 1f) - _e10) * base_10) * (1f - metallic_7)));
     if !((n_v_1 <= 0f)) {
         let _e22 = has_specular(metallic_7, f0_d_6, f90_d_6);
-        local_11 = !(_e22);
+        local_16 = !(_e22);
     } else {
-        local_11 = true;
+        local_16 = true;
     }
-    let _e25 = local_11;
+    let _e25 = local_16;
     if _e25 {
         return vec4<f32>(_e16, 0f, alpha_6, n_v_1);
     }
@@ -947,9 +1059,9 @@ fn bounded_vndf_k(wi: vec3<f32>, alpha_7: f32) -> f32 {
 fn ggx_vndf_sample(wi_1: vec3<f32>, alpha_8: f32, u1_2: f32, u2_2: f32) -> vec3<f32> {
     let wi_std = normalize(vec3<f32>((wi_1.x * alpha_8), (wi_1.y * alpha_8), wi_1.z));
     let _e12 = bounded_vndf_k(wi_1, alpha_8);
-    let b_8 = select(wi_std.z, (_e12 * wi_std.z), (wi_1.z > 0f));
+    let b_11 = select(wi_std.z, (_e12 * wi_std.z), (wi_1.z > 0f));
     let phi_6 = (6.2831855f * u1_2);
-    let z_4 = (((1f - u2_2) * (1f + b_8)) - b_8);
+    let z_4 = (((1f - u2_2) * (1f + b_11)) - b_11);
     let sin_t = sqrt(saturate((1f - (z_4 * z_4))));
     let m_std = (wi_std + vec3<f32>((sin_t * cos(phi_6)), (sin_t * sin(phi_6)), z_4));
     let m_1 = normalize(vec3<f32>((m_std.x * alpha_8), (m_std.y * alpha_8), m_std.z));
@@ -957,14 +1069,14 @@ fn ggx_vndf_sample(wi_1: vec3<f32>, alpha_8: f32, u1_2: f32, u2_2: f32) -> vec3<
 }
 
 fn ggx_vndf_pdf(wi_2: vec3<f32>, wo: vec3<f32>, alpha_9: f32) -> f32 {
-    var local_12: bool;
+    var local_17: bool;
 
     if !((wi_2.z <= 0f)) {
-        local_12 = (wo.z <= 0f);
+        local_17 = (wo.z <= 0f);
     } else {
-        local_12 = true;
+        local_17 = true;
     }
-    let _e13 = local_12;
+    let _e13 = local_17;
     if _e13 {
         return 0f;
     }
@@ -1025,9 +1137,9 @@ fn bevy_brdf(base_11: vec3<f32>, metallic_8: f32, r_4: f32, reflectance_1: f32, 
     }
     let _e15 = bevy_alpha(r_4);
     let n_v_4 = max(dot(n_20, v_10), 0.0001f);
-    let h_4 = normalize((l_5 + v_10));
-    let n_h = saturate(dot(n_20, h_4));
-    let l_h = saturate(dot(l_5, h_4));
+    let h_7 = normalize((l_5 + v_10));
+    let n_h = saturate(dot(n_20, h_7));
+    let l_h = saturate(dot(l_5, h_7));
     let f90_d_7 = (0.5f + (((2f * _e15) * l_h) * l_h));
     let _e35 = fresnel_schlick(vec3<f32>(1f, 1f, 1f), f90_d_7, n_l_3);
     let _e41 = fresnel_schlick(vec3<f32>(1f, 1f, 1f), f90_d_7, n_v_4);
@@ -1093,28 +1205,28 @@ fn emitter_importance(center_1: vec3<f32>, radius_1: f32, phi: f32, axis_1: vec3
 }
 
 fn cone_cos_of(v_11: vec3<f32>, d2_9: f32, a_5: f32, d_1: vec3<f32>) -> f32 {
-    var local_13: bool;
-    var local_14: bool;
+    var local_18: bool;
+    var local_19: bool;
 
     let vd = dot(v_11, d_1);
     let h2_ = (d2_9 - (a_5 * a_5));
     if !((h2_ <= 0f)) {
         if (vd >= 0f) {
-            local_14 = ((vd * vd) >= h2_);
+            local_19 = ((vd * vd) >= h2_);
         } else {
-            local_14 = false;
+            local_19 = false;
         }
-        let _e19 = local_14;
-        local_13 = _e19;
+        let _e19 = local_19;
+        local_18 = _e19;
     } else {
-        local_13 = true;
+        local_18 = true;
     }
-    let _e21 = local_13;
+    let _e21 = local_18;
     if _e21 {
         return 1f;
     }
-    let c_18 = cross(v_11, d_1);
-    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_18, c_18)) * a_5)) / d2_9), 1f);
+    let c_20 = cross(v_11, d_1);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_20, c_20)) * a_5)) / d2_9), 1f);
 }
 
 fn cone_cos_toward(center_2: vec3<f32>, radius_2: f32, p_2: vec3<f32>, d_2: vec3<f32>) -> f32 {
@@ -1159,16 +1271,16 @@ fn light_importance(center_4: vec3<f32>, radius_4: f32, phi_1: f32, axis_2: vec3
 }
 
 fn glossy_importance(center_5: vec3<f32>, radius_5: f32, phi_2: f32, axis_3: vec3<f32>, cos_o_3: f32, cos_e_2: f32, p_5: vec3<f32>, n_22: vec3<f32>, r_6: vec3<f32>, lobe_5: vec4<f32>) -> f32 {
-    var local_15: bool;
+    var local_20: bool;
 
     let _e10 = emitter_importance(center_5, radius_5, phi_2, axis_3, cos_o_3, cos_e_2, p_5);
     let _e11 = cone_cos_toward(center_5, radius_5, p_5, n_22);
     if !((_e10 <= 0f)) {
-        local_15 = (_e11 <= 0f);
+        local_20 = (_e11 <= 0f);
     } else {
-        local_15 = true;
+        local_20 = true;
     }
-    let _e20 = local_15;
+    let _e20 = local_20;
     if _e20 {
         return 0f;
     }
@@ -1231,21 +1343,21 @@ fn bvh_remap_u(u_5: f32, p0_: f32, first: bool) -> f32 {
 }
 
 fn finite3_(v_12: vec3<f32>) -> bool {
-    var local_16: bool;
-    var local_17: bool;
+    var local_21: bool;
+    var local_22: bool;
 
     if (abs(v_12.x) <= F32_MAX) {
-        local_16 = (abs(v_12.y) <= F32_MAX);
+        local_21 = (abs(v_12.y) <= F32_MAX);
     } else {
-        local_16 = false;
+        local_21 = false;
     }
-    let _e12 = local_16;
+    let _e12 = local_21;
     if _e12 {
-        local_17 = (abs(v_12.z) <= F32_MAX);
+        local_22 = (abs(v_12.z) <= F32_MAX);
     } else {
-        local_17 = false;
+        local_22 = false;
     }
-    let _e20 = local_17;
+    let _e20 = local_22;
     return _e20;
 }
 
@@ -1285,17 +1397,17 @@ fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin_1: vec3<f32>, bmax_1: vec3<f32>
     return -1f;
 }
 
-fn triangle_normal(a_6: vec3<f32>, b_4: vec3<f32>, c_7: vec3<f32>) -> vec3<f32> {
-    var local_18: bool;
+fn triangle_normal(a_6: vec3<f32>, b_4: vec3<f32>, c_9: vec3<f32>) -> vec3<f32> {
+    var local_23: bool;
 
-    let n_37 = cross((b_4 - a_6), (c_7 - a_6));
+    let n_37 = cross((b_4 - a_6), (c_9 - a_6));
     let l2_ = dot(n_37, n_37);
     if !(!((l2_ > 0f))) {
-        local_18 = !((l2_ < 300000000000000000000000000000000000000f));
+        local_23 = !((l2_ < 300000000000000000000000000000000000000f));
     } else {
-        local_18 = true;
+        local_23 = true;
     }
-    let _e17 = local_18;
+    let _e17 = local_23;
     if _e17 {
         return vec3<f32>(0f, 0f, 0f);
     }
@@ -1306,9 +1418,9 @@ fn face_against(n_25: vec3<f32>, dir: vec3<f32>) -> vec3<f32> {
     return select(n_25, -(n_25), (dot(n_25, dir) > 0f));
 }
 
-fn barycentric(p_8: vec3<f32>, a_7: vec3<f32>, b_5: vec3<f32>, c_8: vec3<f32>) -> vec3<f32> {
+fn barycentric(p_8: vec3<f32>, a_7: vec3<f32>, b_5: vec3<f32>, c_10: vec3<f32>) -> vec3<f32> {
     let e1_1 = (b_5 - a_7);
-    let e2_1 = (c_8 - a_7);
+    let e2_1 = (c_10 - a_7);
     let q_5 = (p_8 - a_7);
     let d11_ = dot(e1_1, e1_1);
     let d12_ = dot(e1_1, e2_1);
@@ -1323,16 +1435,16 @@ fn barycentric(p_8: vec3<f32>, a_7: vec3<f32>, b_5: vec3<f32>, c_8: vec3<f32>) -
 }
 
 fn shading_normal(n0_: vec3<f32>, n1_: vec3<f32>, n2_: vec3<f32>, w_8: vec3<f32>, facing: vec3<f32>) -> vec3<f32> {
-    var local_19: bool;
+    var local_24: bool;
 
     let s_6 = (((n0_ * w_8.x) + (n1_ * w_8.y)) + (n2_ * w_8.z));
     let l2_1 = dot(s_6, s_6);
     if !(!((l2_1 > 0.000000000001f))) {
-        local_19 = !((l2_1 < 300000000000000000000000000000000000000f));
+        local_24 = !((l2_1 < 300000000000000000000000000000000000000f));
     } else {
-        local_19 = true;
+        local_24 = true;
     }
-    let _e24 = local_19;
+    let _e24 = local_24;
     if _e24 {
         return facing;
     }
@@ -1340,13 +1452,13 @@ fn shading_normal(n0_: vec3<f32>, n1_: vec3<f32>, n2_: vec3<f32>, w_8: vec3<f32>
     return select(n_38, -(n_38), (dot(n_38, facing) < 0f));
 }
 
-fn ray_triangle(o_1: vec3<f32>, d_4: vec3<f32>, a_8: vec3<f32>, b_6: vec3<f32>, c_9: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
-    var local_20: bool;
-    var local_21: bool;
-    var local_22: bool;
+fn ray_triangle(o_1: vec3<f32>, d_4: vec3<f32>, a_8: vec3<f32>, b_6: vec3<f32>, c_11: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
+    var local_25: bool;
+    var local_26: bool;
+    var local_27: bool;
 
     let e1_2 = (b_6 - a_8);
-    let e2_2 = (c_9 - a_8);
+    let e2_2 = (c_11 - a_8);
     let p_12 = cross(d_4, e2_2);
     let det = dot(e1_2, p_12);
     if (abs(det) <= 0f) {
@@ -1356,32 +1468,32 @@ fn ray_triangle(o_1: vec3<f32>, d_4: vec3<f32>, a_8: vec3<f32>, b_6: vec3<f32>, 
     let s_7 = (o_1 - a_8);
     let u_7 = (dot(s_7, p_12) * inv_1);
     if !((u_7 < 0f)) {
-        local_20 = (u_7 > 1f);
+        local_25 = (u_7 > 1f);
     } else {
-        local_20 = true;
+        local_25 = true;
     }
-    let _e28 = local_20;
+    let _e28 = local_25;
     if _e28 {
         return -1f;
     }
     let q_6 = cross(s_7, e1_2);
     let v_23 = (dot(d_4, q_6) * inv_1);
     if !((v_23 < 0f)) {
-        local_21 = ((u_7 + v_23) > 1f);
+        local_26 = ((u_7 + v_23) > 1f);
     } else {
-        local_21 = true;
+        local_26 = true;
     }
-    let _e42 = local_21;
+    let _e42 = local_26;
     if _e42 {
         return -1f;
     }
     let t_6 = (dot(e2_2, q_6) * inv_1);
     if (t_6 > t_min) {
-        local_22 = (t_6 < t_max_1);
+        local_27 = (t_6 < t_max_1);
     } else {
-        local_22 = false;
+        local_27 = false;
     }
-    let _e51 = local_22;
+    let _e51 = local_27;
     if _e51 {
         return t_6;
     }
@@ -1435,78 +1547,75 @@ fn shifted_subset(pixel_class: u32, shift: u32, period_3: u32) -> u32 {
 }
 
 fn vpl_record_ok(position: vec3<f32>, normal: vec3<f32>, flux_1: vec3<f32>) -> bool {
-    var local_23: bool;
-    var local_24: bool;
-    var local_25: bool;
-    var local_26: bool;
-    var local_27: bool;
+    var local_28: bool;
+    var local_29: bool;
+    var local_30: bool;
+    var local_31: bool;
+    var local_32: bool;
 
     let _e3 = finite3_(position);
     if _e3 {
         let _e6 = finite3_(normal);
-        local_23 = _e6;
+        local_28 = _e6;
     } else {
-        local_23 = false;
+        local_28 = false;
     }
-    let _e8 = local_23;
+    let _e8 = local_28;
     if _e8 {
         let _e11 = finite3_(flux_1);
-        local_24 = _e11;
+        local_29 = _e11;
     } else {
-        local_24 = false;
+        local_29 = false;
     }
-    let _e13 = local_24;
+    let _e13 = local_29;
     if !(_e13) {
         return false;
     }
     if (flux_1.x >= 0f) {
-        local_25 = (flux_1.y >= 0f);
+        local_30 = (flux_1.y >= 0f);
     } else {
-        local_25 = false;
+        local_30 = false;
     }
-    let _e25 = local_25;
+    let _e25 = local_30;
     if _e25 {
-        local_26 = (flux_1.z >= 0f);
+        local_31 = (flux_1.z >= 0f);
     } else {
-        local_26 = false;
+        local_31 = false;
     }
-    let _e32 = local_26;
+    let _e32 = local_31;
     if _e32 {
-        local_27 = ((max(max(flux_1.x, flux_1.y), flux_1.z) * INV_PI) <= MAX_INTENSITY);
+        local_32 = ((max(max(flux_1.x, flux_1.y), flux_1.z) * INV_PI) <= MAX_INTENSITY);
     } else {
-        local_27 = false;
+        local_32 = false;
     }
-    let _e45 = local_27;
+    let _e45 = local_32;
     return _e45;
 }
 
-fn interleave_slot(tx: u32, ty: u32, size_2: u32, period_4: u32) -> u32 {
-    let side_1 = (size_2 / period_4);
-    let _e5 = interleave_subset(tx, ty, period_4);
-    return ((((_e5 * side_1) * side_1) + ((ty / period_4) * side_1)) + (tx / period_4));
+fn subset_side(size_2: u32, period_4: u32) -> u32 {
+    return ((((size_2 / period_4) + 7u) / 8u) * 8u);
 }
 
-fn interleave_slot_linear(i_1: u32, per_subset: u32, period_5: u32) -> u32 {
-    let subsets = (period_5 * period_5);
+fn interleave_slot(tx_1: u32, ty_1: u32, size_3: u32, period_5: u32) -> u32 {
+    let _e4 = subset_side(size_3, period_5);
+    let _e5 = interleave_subset(tx_1, ty_1, period_5);
+    let _e10 = map_index((tx_1 / period_5), (ty_1 / period_5), _e4);
+    return (((_e5 * _e4) * _e4) + _e10);
+}
+
+fn subset_slots_linear(count: u32, period_6: u32) -> u32 {
+    let per = (count / (period_6 * period_6));
+    return ((((per + CLUSTER) - 1u) / CLUSTER) * CLUSTER);
+}
+
+fn interleave_slot_linear(i_1: u32, per_subset: u32, period_7: u32) -> u32 {
+    let subsets = (period_7 * period_7);
     return (((i_1 % subsets) * per_subset) + (i_1 / subsets));
 }
 
-fn interleave_flux_scale(period_6: u32) -> f32 {
-    let _e2 = to_f32_((period_6 * period_6));
+fn interleave_flux_scale(period_8: u32) -> f32 {
+    let _e2 = to_f32_((period_8 * period_8));
     return _e2;
-}
-
-fn near_block_index(tx_1: u32, ty_1: u32, size_3: u32) -> u32 {
-    let side_2 = (size_3 / 8u);
-    return ((((((ty_1 / 8u) * side_2) + (tx_1 / 8u)) * NEAR_BLOCK) + ((ty_1 % 8u) * 8u)) + (tx_1 % 8u));
-}
-
-fn near_block_tx(q: u32, size_4: u32) -> u32 {
-    return ((((q / NEAR_BLOCK) % (size_4 / 8u)) * 8u) + (q % 8u));
-}
-
-fn near_block_ty(q_1: u32, size_5: u32) -> u32 {
-    return ((((q_1 / NEAR_BLOCK) / (size_5 / 8u)) * 8u) + ((q_1 % NEAR_BLOCK) / 8u));
 }
 
 fn vpl_near_weight(d2_11: f32, near_r2_: f32) -> f32 {
@@ -1535,8 +1644,8 @@ fn vpl_far_fixed_share(range2_2: f32, d2_14: f32, near_r2_3: f32) -> f32 {
     return select(0f, _e3, (_e4 & (_e3 > 0f)));
 }
 
-fn vpl_near_range2_(r2_8: f32, period_7: u32) -> f32 {
-    let _e2 = interleave_flux_scale(period_7);
+fn vpl_near_range2_(r2_8: f32, period_9: u32) -> f32 {
+    let _e2 = interleave_flux_scale(period_9);
     return (r2_8 / _e2);
 }
 
@@ -1577,14 +1686,14 @@ fn sees_emission(gn: vec3<f32>, dir_1: vec3<f32>) -> bool {
 }
 
 fn continues_path(nd: vec3<f32>, n_27: vec3<f32>, ng_1: vec3<f32>) -> bool {
-    var local_28: bool;
+    var local_33: bool;
 
     if (dot(nd, n_27) > 0f) {
-        local_28 = (dot(nd, ng_1) > 0f);
+        local_33 = (dot(nd, ng_1) > 0f);
     } else {
-        local_28 = false;
+        local_33 = false;
     }
-    let _e12 = local_28;
+    let _e12 = local_33;
     return _e12;
 }
 
@@ -1592,15 +1701,15 @@ fn path_survival(beta: vec3<f32>) -> f32 {
     return clamp(max(max(beta.x, beta.y), beta.z), 0.05f, 0.95f);
 }
 
-fn light_map_coord(t_1: u32, size_6: u32) -> f32 {
+fn light_map_coord(t_1: u32, size_4: u32) -> f32 {
     let _e2 = to_f32_(t_1);
-    let _e7 = to_f32_(size_6);
+    let _e7 = to_f32_(size_4);
     return (((2f * (_e2 + 0.5f)) / _e7) - 1f);
 }
 
-fn light_map_texel(a_9: f32, size_7: u32) -> u32 {
-    let _e6 = to_f32_(size_7);
-    let _e9 = to_f32_(size_7);
+fn light_map_texel(a_9: f32, size_5: u32) -> u32 {
+    let _e6 = to_f32_(size_5);
+    let _e9 = to_f32_(size_5);
     let _e14 = to_u32_(clamp(floor((((a_9 + 1f) * 0.5f) * _e6)), 0f, (_e9 - 1f)));
     return _e14;
 }
@@ -1634,28 +1743,28 @@ fn directional_irradiance(e_1: vec3<f32>, n_29: vec3<f32>, to_light: vec3<f32>) 
     return (e_1 * max(dot(n_29, to_light), 0f));
 }
 
-fn perspective_texel_width(extent_3: f32, d_5: f32, z_2: f32, size_8: f32) -> f32 {
-    return ((((2f * extent_3) * d_5) * d_5) / (size_8 * z_2));
+fn perspective_texel_width(extent_3: f32, d_5: f32, z_2: f32, size_6: f32) -> f32 {
+    return ((((2f * extent_3) * d_5) * d_5) / (size_6 * z_2));
 }
 
-fn ortho_texel_width(extent_4: f32, size_9: f32) -> f32 {
-    return ((2f * extent_4) / size_9);
+fn ortho_texel_width(extent_4: f32, size_7: f32) -> f32 {
+    return ((2f * extent_4) / size_7);
 }
 
 fn shadow_bias(texel: f32, cos_light_1: f32) -> f32 {
-    let c_19 = clamp(cos_light_1, 0.02f, 1f);
-    return (texel * (1.5f + (sqrt((1f - (c_19 * c_19))) / c_19)));
+    let c_21 = clamp(cos_light_1, 0.02f, 1f);
+    return (texel * (1.5f + (sqrt((1f - (c_21 * c_21))) / c_21)));
 }
 
 fn shadow_lit(d_6: f32, d_map: f32, bias: f32) -> bool {
-    var local_29: bool;
+    var local_34: bool;
 
     if !((d_map <= 0f)) {
-        local_29 = (d_6 <= (d_map + bias));
+        local_34 = (d_6 <= (d_map + bias));
     } else {
-        local_29 = true;
+        local_34 = true;
     }
-    let _e11 = local_29;
+    let _e11 = local_34;
     return _e11;
 }
 
@@ -1664,16 +1773,16 @@ fn diffuse_radiance(albedo: vec3<f32>, emission: vec3<f32>, e_2: vec3<f32>) -> v
 }
 
 fn primary_light_dir(x_17: vec3<f32>, origin: vec3<f32>, axis_8: vec3<f32>, perspective_2: bool) -> vec3<f32> {
-    var local_30: bool;
+    var local_35: bool;
 
     let v_25 = (origin - x_17);
     let d2_20 = dot(v_25, v_25);
     if perspective_2 {
-        local_30 = (d2_20 > 0f);
+        local_35 = (d2_20 > 0f);
     } else {
-        local_30 = false;
+        local_35 = false;
     }
-    let _e11 = local_30;
+    let _e11 = local_35;
     if _e11 {
         return (v_25 / vec3(sqrt(d2_20)));
     }
@@ -1685,8 +1794,8 @@ fn glossy_radiance(base_12: vec3<f32>, emission_1: vec3<f32>, metallic_9: f32, f
     return (((emission_1 + (f_direct * direct)) + ((_e9 * INV_PI) * indirect)) + specular);
 }
 
-fn luminance(c_10: vec3<f32>) -> f32 {
-    return dot(c_10, vec3<f32>(0.2126f, 0.7152f, 0.0722f));
+fn luminance(c_12: vec3<f32>) -> f32 {
+    return dot(c_12, vec3<f32>(0.2126f, 0.7152f, 0.0722f));
 }
 
 fn reproject(c0_1: vec4<f32>, c1_3: vec4<f32>, c2_2: vec4<f32>, c3_: vec4<f32>, p_9: vec3<f32>, width: f32, height: f32) -> vec3<f32> {
@@ -1710,10 +1819,10 @@ fn bilinear_weight(fx: f32, fy: f32, dx: u32, dy: u32) -> f32 {
 }
 
 fn history_tap(q_2: vec3<f32>, k_5: u32, width_2: f32, height_2: f32) -> vec4<f32> {
-    var local_31: bool;
-    var local_32: bool;
-    var local_33: bool;
-    var local_34: bool;
+    var local_36: bool;
+    var local_37: bool;
+    var local_38: bool;
+    var local_39: bool;
 
     let x0_ = floor(q_2.x);
     let y0_ = floor(q_2.y);
@@ -1724,29 +1833,29 @@ fn history_tap(q_2: vec3<f32>, k_5: u32, width_2: f32, height_2: f32) -> vec4<f3
     let _e14 = to_f32_(dy_1);
     let ty_2 = (y0_ + _e14);
     if (q_2.z > 0f) {
-        local_31 = (tx_2 >= 0f);
+        local_36 = (tx_2 >= 0f);
     } else {
-        local_31 = false;
+        local_36 = false;
     }
-    let _e24 = local_31;
+    let _e24 = local_36;
     if _e24 {
-        local_32 = (ty_2 >= 0f);
+        local_37 = (ty_2 >= 0f);
     } else {
-        local_32 = false;
+        local_37 = false;
     }
-    let _e30 = local_32;
+    let _e30 = local_37;
     if _e30 {
-        local_33 = (tx_2 < width_2);
+        local_38 = (tx_2 < width_2);
     } else {
-        local_33 = false;
+        local_38 = false;
     }
-    let _e35 = local_33;
+    let _e35 = local_38;
     if _e35 {
-        local_34 = (ty_2 < height_2);
+        local_39 = (ty_2 < height_2);
     } else {
-        local_34 = false;
+        local_39 = false;
     }
-    let inside = local_34;
+    let inside = local_39;
     let _e45 = bilinear_weight((q_2.x - x0_), (q_2.y - y0_), dx_1, dy_1);
     return vec4<f32>(tx_2, ty_2, _e45, select(0f, 1f, inside));
 }
@@ -1759,14 +1868,14 @@ fn history_mean(sum_1: vec4<f32>, weight_1: f32) -> vec4<f32> {
 }
 
 fn history_matches(n_30: vec3<f32>, nh: vec3<f32>, p_10: vec3<f32>, oh: f32, d_7: f32) -> bool {
-    var local_35: bool;
+    var local_40: bool;
 
     if (abs((dot(nh, p_10) - oh)) <= (TEMPORAL_DEPTH_TOLERANCE * d_7)) {
-        local_35 = (dot(n_30, nh) >= TEMPORAL_NORMAL_COS);
+        local_40 = (dot(n_30, nh) >= TEMPORAL_NORMAL_COS);
     } else {
-        local_35 = false;
+        local_40 = false;
     }
-    let _e17 = local_35;
+    let _e17 = local_40;
     return _e17;
 }
 
@@ -1788,34 +1897,34 @@ fn temporal_alpha(n_33: f32) -> f32 {
 }
 
 fn history_tap_weight(w_10: f32, n_34: vec3<f32>, nh_1: vec3<f32>, p_11: vec3<f32>, oh_1: f32, d_8: f32, len_1: f32) -> f32 {
-    var local_36: bool;
+    var local_41: bool;
 
     if (len_1 > 0f) {
         let _e11 = history_matches(n_34, nh_1, p_11, oh_1, d_8);
-        local_36 = _e11;
+        local_41 = _e11;
     } else {
-        local_36 = false;
+        local_41 = false;
     }
-    let _e13 = local_36;
+    let _e13 = local_41;
     return select(0f, w_10, _e13);
 }
 
 fn history_tap_weight_motion(w_11: f32, n_35: vec3<f32>, nh_2: vec3<f32>, d_9: f32, dh: f32, len_2: f32) -> f32 {
-    var local_37: bool;
-    var local_38: bool;
+    var local_42: bool;
+    var local_43: bool;
 
     if (len_2 > 0f) {
-        local_37 = (abs((dh - d_9)) <= (TEMPORAL_MOTION_DEPTH_TOLERANCE * d_9));
+        local_42 = (abs((dh - d_9)) <= (TEMPORAL_MOTION_DEPTH_TOLERANCE * d_9));
     } else {
-        local_37 = false;
+        local_42 = false;
     }
-    let _e16 = local_37;
+    let _e16 = local_42;
     if _e16 {
-        local_38 = (dot(n_35, nh_2) >= TEMPORAL_NORMAL_COS);
+        local_43 = (dot(n_35, nh_2) >= TEMPORAL_NORMAL_COS);
     } else {
-        local_38 = false;
+        local_43 = false;
     }
-    let _e23 = local_38;
+    let _e23 = local_43;
     return select(0f, w_11, _e23);
 }
 
@@ -1828,21 +1937,21 @@ fn persistent_change(l_7: f32, last: f32, m1_1: f32, noise_1: f32, n_36: f32) ->
     return min(_e11, _e12);
 }
 
-fn temporal_color(c_11: vec3<f32>, h_1: vec4<f32>, noise_2: f32, last_1: f32, max_history_1: f32) -> vec4<f32> {
+fn temporal_color(c_13: vec3<f32>, h_1: vec4<f32>, noise_2: f32, last_1: f32, max_history_1: f32) -> vec4<f32> {
     let hc = vec3<f32>(h_1.x, h_1.y, h_1.z);
-    let _e9 = luminance(c_11);
+    let _e9 = luminance(c_13);
     let _e10 = luminance(hc);
     let _e12 = persistent_change(_e9, last_1, _e10, noise_2, h_1.w);
     let _e14 = next_history_length(h_1.w, _e12, max_history_1);
     let _e15 = temporal_alpha(_e14);
-    let v_26 = ((hc * (1f - _e15)) + (c_11 * _e15));
+    let v_26 = ((hc * (1f - _e15)) + (c_13 * _e15));
     return vec4<f32>(v_26.x, v_26.y, v_26.z, _e14);
 }
 
-fn temporal_moments(c_12: vec3<f32>, last_2: f32, noise_3: f32, prev_len: f32, len_3: f32, depth_1: f32) -> vec4<f32> {
-    var local_39: bool;
+fn temporal_moments(c_14: vec3<f32>, last_2: f32, noise_3: f32, prev_len: f32, len_3: f32, depth_1: f32) -> vec4<f32> {
+    var local_44: bool;
 
-    let _e6 = luminance(c_12);
+    let _e6 = luminance(c_14);
     if (prev_len <= 0f) {
         return vec4<f32>(_e6, 0f, depth_1, 0f);
     }
@@ -1850,11 +1959,11 @@ fn temporal_moments(c_12: vec3<f32>, last_2: f32, noise_3: f32, prev_len: f32, l
     let d2_21 = ((0.5f * d_12) * d_12);
     let cap = (16f * noise_3);
     if (prev_len >= TEMPORAL_MIN_MOMENTS) {
-        local_39 = (noise_3 > 0f);
+        local_44 = (noise_3 > 0f);
     } else {
-        local_39 = false;
+        local_44 = false;
     }
-    let _e26 = local_39;
+    let _e26 = local_44;
     let sample = select(d2_21, min(d2_21, cap), _e26);
     let _e31 = temporal_alpha((len_3 - 1f));
     return vec4<f32>(_e6, (noise_3 + ((sample - noise_3) * _e31)), depth_1, 0f);

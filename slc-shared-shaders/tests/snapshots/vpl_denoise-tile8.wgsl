@@ -4,9 +4,15 @@ struct VplParams {
     lights_per_subset: u32,
     min_d2_: f32,
     near_r2_: f32,
-    near_blocks: u32,
     subset_shift: u32,
+    far_groups_at: u32,
+    near_clusters_at: u32,
+    near_groups_at: u32,
+    box_count: u32,
+    pad0_: u32,
     pad1_: u32,
+    far_grid: vec4<u32>,
+    near_grid: vec4<u32>,
 }
 
 struct ViewParams {
@@ -51,6 +57,8 @@ const CULL_RADIUS_SCALE: f32 = 1.000001f;
 const SPHERE_PAD: f32 = 0.00000047683716f;
 const SPHERE_HUGE: f32 = 340282350000000000000000000000000000000f;
 const SPHERE_PAD_ABS: f32 = 0.000000000000000001f;
+const CLUSTER: u32 = 64u;
+const GROUP_SIDE: u32 = 8u;
 const INV_PI: f32 = 0.31830987f;
 const MIN_D2_: f32 = 0.000000000001f;
 const MAX_INTENSITY: f32 = 72057594000000000f;
@@ -64,7 +72,6 @@ const F32_MAX: f32 = 340282350000000000000000000000000000000f;
 const DEPTH_NONE: f32 = 1000000000000000000000000000000f;
 const DEPTH_SIGMA: f32 = 0.05f;
 const COVER_WEIGHT: f32 = 0.1f;
-const NEAR_BLOCK: u32 = 64u;
 const ROULETTE_DEPTH: u32 = 2u;
 const TEMPORAL_MAX_HISTORY: f32 = 32f;
 const TEMPORAL_DEPTH_TOLERANCE: f32 = 0.01f;

@@ -15,12 +15,18 @@ struct VplParams {
     lights_per_subset: u32,
     min_d2_: f32,
     near_r2_: f32,
-    near_blocks: u32,
     subset_shift: u32,
+    far_groups_at: u32,
+    near_clusters_at: u32,
+    near_groups_at: u32,
+    box_count: u32,
+    pad0_: u32,
     pad1_: u32,
+    far_grid: vec4<u32>,
+    near_grid: vec4<u32>,
 }
 
-struct GpuNearBox {
+struct GpuBox {
     lo: vec3<f32>,
     pad0_: f32,
     hi: vec3<f32>,
@@ -83,6 +89,8 @@ const CULL_RADIUS_SCALE: f32 = 1.000001f;
 const SPHERE_PAD: f32 = 0.00000047683716f;
 const SPHERE_HUGE: f32 = 340282350000000000000000000000000000000f;
 const SPHERE_PAD_ABS: f32 = 0.000000000000000001f;
+const CLUSTER: u32 = 64u;
+const GROUP_SIDE: u32 = 8u;
 const INV_PI: f32 = 0.31830987f;
 const MIN_D2_: f32 = 0.000000000001f;
 const MAX_INTENSITY: f32 = 72057594000000000f;
@@ -96,7 +104,6 @@ const F32_MAX: f32 = 340282350000000000000000000000000000000f;
 const DEPTH_NONE: f32 = 1000000000000000000000000000000f;
 const DEPTH_SIGMA: f32 = 0.05f;
 const COVER_WEIGHT: f32 = 0.1f;
-const NEAR_BLOCK: u32 = 64u;
 const ROULETTE_DEPTH: u32 = 2u;
 const TEMPORAL_MAX_HISTORY: f32 = 32f;
 const TEMPORAL_DEPTH_TOLERANCE: f32 = 0.01f;
@@ -111,10 +118,11 @@ const P: u32 = 8u;
 const TILE: u32 = 8u;
 const THREADS: u32 = 64u;
 const BOX_THREADS: u32 = 64u;
-const NEAR_CHUNK: u32 = 32u;
+const MAX_TILE_LIGHTS: u32 = 1024u;
 
 var<workgroup> wg_lo: array<vec3<f32>, 64>;
 var<workgroup> wg_hi: array<vec3<f32>, 64>;
+var<workgroup> wg_box: WorkgroupBox;
 @group(0) @binding(0) 
 var<uniform> params: VplParams;
 @group(0) @binding(1) 
@@ -128,7 +136,7 @@ var<storage> lights: array<GpuLight>;
 @group(0) @binding(5) 
 var<storage> near_slots: array<u32>;
 @group(0) @binding(6) 
-var<storage> near_boxes: array<GpuNearBox>;
+var<storage> boxes: array<GpuBox>;
 @group(0) @binding(7) 
 var<storage> rt2_2: array<f32>;
 @group(0) @binding(8) 
@@ -139,8 +147,17 @@ var<storage, read_write> irradiance: array<vec4<f32>>;
 var<storage> materials: array<GpuMaterial>;
 @group(0) @binding(11) 
 var<storage, read_write> specular: array<vec4<f32>>;
-var<workgroup> light_count: atomic<u32>;
-var<workgroup> light_list: array<u32, 2048>;
+var<private> pos: vec3<f32>;
+var<private> nrm: vec3<f32>;
+var<private> valid: bool;
+var<private> e: vec3<f32>;
+var<private> kept: u32;
+var<private> s: vec3<f32>;
+var<private> g_4: Glossy;
+var<workgroup> tile_lights: array<u32, 1024>;
+var<workgroup> list_count: atomic<u32>;
+var<workgroup> cluster_hits: array<u32, 64>;
+var<workgroup> hit_count: atomic<u32>;
 
 fn to_f32_(u: u32) -> f32 {
     return f32(u);
@@ -167,9 +184,74 @@ fn sphere_overlaps_aabb(c: vec3<f32>, r: f32, bmin: vec3<f32>, bmax: vec3<f32>) 
     return (dot(v_6, v_6) <= (r * r));
 }
 
+fn groups_across(bw: u32, gw: u32) -> u32 {
+    return (((bw + gw) - 1u) / gw);
+}
+
+fn group_count(bw_1: u32, bh: u32, gw_1: u32, gh: u32) -> u32 {
+    let _e4 = groups_across(bw_1, gw_1);
+    let _e5 = groups_across(bh, gh);
+    return (_e4 * _e5);
+}
+
+fn group_first(g: u32, bw_2: u32, bh_1: u32, gw_2: u32, gh_1: u32) -> u32 {
+    let _e5 = groups_across(bw_2, gw_2);
+    let gx = (g % _e5);
+    let gy = (g / _e5);
+    let h_1 = min(gh_1, (bh_1 - (gh_1 * gy)));
+    return (((gy * gh_1) * bw_2) + ((gx * gw_2) * h_1));
+}
+
+fn group_clusters(g_1: u32, bw_3: u32, bh_2: u32, gw_3: u32, gh_2: u32) -> u32 {
+    let _e5 = groups_across(bw_3, gw_3);
+    let gx_1 = (g_1 % _e5);
+    let gy_1 = (g_1 / _e5);
+    return (min(gw_3, (bw_3 - (gw_3 * gx_1))) * min(gh_2, (bh_2 - (gh_2 * gy_1))));
+}
+
+fn box_overlaps_box(lo1_: vec3<f32>, hi1_: vec3<f32>, lo2_: vec3<f32>, hi2_: vec3<f32>) -> bool {
+    var local_2: bool;
+    var local_3: bool;
+    var local_4: bool;
+    var local_5: bool;
+    var local_6: bool;
+
+    if (lo1_.x <= hi2_.x) {
+        local_2 = (lo2_.x <= hi1_.x);
+    } else {
+        local_2 = false;
+    }
+    let _e13 = local_2;
+    if _e13 {
+        local_3 = (lo1_.y <= hi2_.y);
+    } else {
+        local_3 = false;
+    }
+    let _e20 = local_3;
+    if _e20 {
+        local_4 = (lo2_.y <= hi1_.y);
+    } else {
+        local_4 = false;
+    }
+    let _e27 = local_4;
+    if _e27 {
+        local_5 = (lo1_.z <= hi2_.z);
+    } else {
+        local_5 = false;
+    }
+    let _e34 = local_5;
+    if _e34 {
+        local_6 = (lo2_.z <= hi1_.z);
+    } else {
+        local_6 = false;
+    }
+    let _e41 = local_6;
+    return _e41;
+}
+
 fn vpl_transfer(n_l: vec3<f32>, n_x: vec3<f32>, v: vec3<f32>, min_d2_: f32) -> f32 {
-    let m_2 = max(dot(v, v), max(min_d2_, MIN_D2_));
-    return (((max(dot(n_l, v), 0f) * max(-(dot(n_x, v)), 0f)) * INV_PI) / (m_2 * m_2));
+    let m_1 = max(dot(v, v), max(min_d2_, MIN_D2_));
+    return (((max(dot(n_l, v), 0f) * max(-(dot(n_x, v)), 0f)) * INV_PI) / (m_1 * m_1));
 }
 
 fn ggx_d(cos_h: f32, sin2_h: f32, alpha: f32) -> f32 {
@@ -187,14 +269,14 @@ fn smith_root(cos_: f32, alpha_1: f32) -> f32 {
 }
 
 fn smith_visibility(n_l_1: f32, n_v: f32, alpha_2: f32) -> f32 {
-    var local_5: bool;
+    var local_7: bool;
 
     if !((n_l_1 <= 0f)) {
-        local_5 = (n_v <= 0f);
+        local_7 = (n_v <= 0f);
     } else {
-        local_5 = true;
+        local_7 = true;
     }
-    let _e11 = local_5;
+    let _e11 = local_7;
     if _e11 {
         return 0f;
     }
@@ -204,9 +286,9 @@ fn smith_visibility(n_l_1: f32, n_v: f32, alpha_2: f32) -> f32 {
 }
 
 fn fresnel_schlick(f0_: vec3<f32>, f90_: f32, v_h: f32) -> vec3<f32> {
-    let c_1 = saturate((1f - v_h));
-    let c2_ = (c_1 * c_1);
-    return (f0_ + ((vec3<f32>(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_1)));
+    let c_2 = saturate((1f - v_h));
+    let c2_ = (c_2 * c_2);
+    return (f0_ + ((vec3<f32>(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_2)));
 }
 
 fn specular_fresnel(base: vec3<f32>, metallic: f32, f0_d: vec3<f32>, f90_d: f32, v_h_1: f32) -> vec3<f32> {
@@ -221,34 +303,34 @@ fn diffuse_brdf(base_1: vec3<f32>, metallic_1: f32, f0_d_1: vec3<f32>, f90_d_1: 
 }
 
 fn half_cosine(v_1: vec3<f32>, l: vec3<f32>) -> f32 {
-    let h = (v_1 + l);
-    let len2_ = dot(h, h);
+    let h_2 = (v_1 + l);
+    let len2_ = dot(h_2, h_2);
     if (len2_ <= 0f) {
         return 0f;
     }
-    return saturate((dot(v_1, h) / sqrt(len2_)));
+    return saturate((dot(v_1, h_2) / sqrt(len2_)));
 }
 
 fn specular_brdf(base_2: vec3<f32>, metallic_2: f32, f0_d_2: vec3<f32>, f90_d_2: f32, alpha_3: f32, n: vec3<f32>, v_2: vec3<f32>, l_1: vec3<f32>) -> vec3<f32> {
-    var local_6: bool;
+    var local_8: bool;
 
     let n_l_2 = dot(n, l_1);
     let n_v_1 = dot(n, v_2);
     if !((n_l_2 <= 0f)) {
-        local_6 = (n_v_1 <= 0f);
+        local_8 = (n_v_1 <= 0f);
     } else {
-        local_6 = true;
+        local_8 = true;
     }
-    let _e18 = local_6;
+    let _e18 = local_8;
     if _e18 {
         return vec3<f32>(0f, 0f, 0f);
     }
     let hs = (v_2 + l_1);
     let inv = (1f / sqrt(dot(hs, hs)));
-    let h_1 = (hs * inv);
-    let c_2 = cross(n, h_1);
-    let _e32 = ggx_d(dot(n, h_1), dot(c_2, c_2), alpha_3);
-    let _e34 = specular_fresnel(base_2, metallic_2, f0_d_2, f90_d_2, dot(v_2, h_1));
+    let h_3 = (hs * inv);
+    let c_3 = cross(n, h_3);
+    let _e32 = ggx_d(dot(n, h_3), dot(c_3, c_3), alpha_3);
+    let _e34 = specular_fresnel(base_2, metallic_2, f0_d_2, f90_d_2, dot(v_2, h_3));
     let _e35 = smith_visibility(n_l_2, n_v_1, alpha_3);
     return (_e34 * (_e32 * _e35));
 }
@@ -274,21 +356,21 @@ fn specular_correction(base_5: vec3<f32>, metallic_5: f32, f0_d_4: vec3<f32>, f9
 }
 
 fn has_specular(metallic_6: f32, f0_d_5: vec3<f32>, f90_d_5: f32) -> bool {
-    var local_7: bool;
-    var local_8: bool;
+    var local_9: bool;
+    var local_10: bool;
 
     if !((metallic_6 > 0f)) {
-        local_7 = (f90_d_5 > 0f);
+        local_9 = (f90_d_5 > 0f);
     } else {
-        local_7 = true;
+        local_9 = true;
     }
-    let _e11 = local_7;
+    let _e11 = local_9;
     if !(_e11) {
-        local_8 = (max(max(f0_d_5.x, f0_d_5.y), f0_d_5.z) > 0f);
+        local_10 = (max(max(f0_d_5.x, f0_d_5.y), f0_d_5.z) > 0f);
     } else {
-        local_8 = true;
+        local_10 = true;
     }
-    let _e23 = local_8;
+    let _e23 = local_10;
     return _e23;
 }
 
@@ -321,49 +403,62 @@ fn vpl_near_slc_share(rt2_1: f32, r2_4: f32, d2_3: f32, near_r2_2: f32) -> f32 {
     return select(0f, (_e4 * _e5), (_e7 & (_e4 > 0f)));
 }
 
-fn workgroup_box(li_1: u32, p: vec3<f32>, has: bool) -> WorkgroupBox {
+fn workgroup_bounds(li_1: u32, lo: vec3<f32>, hi: vec3<f32>) -> WorkgroupBox {
     var stride: u32 = 32u;
 
-    wg_lo[li_1] = select(vec3(340282350000000000000000000000000000000f), p, has);
-    wg_hi[li_1] = select(vec3(-340282350000000000000000000000000000000f), p, has);
+    wg_lo[li_1] = lo;
+    wg_hi[li_1] = hi;
     workgroupBarrier();
     loop {
-        let _e15 = stride;
-        if (_e15 > 0u) {
+        let _e9 = stride;
+        if (_e9 > 0u) {
         } else {
             break;
         }
         {
-            let _e18 = stride;
-            if (li_1 < _e18) {
-                let _e24 = wg_lo[li_1];
-                let _e26 = stride;
-                let _e29 = wg_lo[(li_1 + _e26)];
-                wg_lo[li_1] = min(_e24, _e29);
-                let _e35 = wg_hi[li_1];
-                let _e37 = stride;
-                let _e40 = wg_hi[(li_1 + _e37)];
-                wg_hi[li_1] = max(_e35, _e40);
+            let _e12 = stride;
+            if (li_1 < _e12) {
+                let _e18 = wg_lo[li_1];
+                let _e20 = stride;
+                let _e23 = wg_lo[(li_1 + _e20)];
+                wg_lo[li_1] = min(_e18, _e23);
+                let _e29 = wg_hi[li_1];
+                let _e31 = stride;
+                let _e34 = wg_hi[(li_1 + _e31)];
+                wg_hi[li_1] = max(_e29, _e34);
             }
             workgroupBarrier();
         }
         continuing {
-            let _e42 = stride;
-            stride = (_e42 / 2u);
+            let _e36 = stride;
+            stride = (_e36 / 2u);
         }
     }
-    let _e47 = wg_lo[0];
-    let _e50 = wg_hi[0];
-    return WorkgroupBox(_e47, _e50);
+    if (li_1 == 0u) {
+        let _e44 = wg_lo[0];
+        let _e47 = wg_hi[0];
+        wg_box = WorkgroupBox(_e44, _e47);
+    }
+    let _e50 = workgroupUniformLoad((&wg_box));
+    return _e50;
+}
+
+fn workgroup_box(li_2: u32, p_1: vec3<f32>, has: bool) -> WorkgroupBox {
+    let _e9 = workgroup_bounds(li_2, select(vec3(340282350000000000000000000000000000000f), p_1, has), select(vec3(-340282350000000000000000000000000000000f), p_1, has));
+    return _e9;
+}
+
+fn box_is_empty(b: WorkgroupBox) -> bool {
+    return (b.lo.x > b.hi.x);
 }
 
 fn surface_at(texel: vec2<i32>) -> vec4<f32> {
-    let p_1 = textureLoad(position_tex, texel, 0i);
-    return select(vec4(0f), vec4<f32>(p_1.xyz, 1f), (p_1.w > 0f));
+    let p_2 = textureLoad(position_tex, texel, 0i);
+    return select(vec4(0f), vec4<f32>(p_2.xyz, 1f), (p_2.w > 0f));
 }
 
 fn gbuffer_at(i: u32) -> GbTexel {
-    var local_9: bool;
+    var local_11: bool;
 
     let _e3 = view.width;
     let _e8 = view.width;
@@ -373,15 +468,15 @@ fn gbuffer_at(i: u32) -> GbTexel {
     let n_4 = _e15.xyz;
     let len2_1 = dot(n_4, n_4);
     if (_e12.w > 0f) {
-        local_9 = (len2_1 > 0f);
+        local_11 = (len2_1 > 0f);
     } else {
-        local_9 = false;
+        local_11 = false;
     }
-    let valid = local_9;
+    let valid_1 = local_11;
     let _e30 = view.eye;
     let v_7 = (_e12.xyz - _e30);
-    let position = vec4<f32>(_e12.xyz, select(0f, 1f, valid));
-    let normal = select(vec4<f32>(0f, 0f, 0f, 1000000000000000000000000000000f), vec4<f32>((n_4 / vec3(sqrt(len2_1))), sqrt(dot(v_7, v_7))), valid);
+    let position = vec4<f32>(_e12.xyz, select(0f, 1f, valid_1));
+    let normal = select(vec4<f32>(0f, 0f, 0f, 1000000000000000000000000000000f), vec4<f32>((n_4 / vec3(sqrt(len2_1))), sqrt(dot(v_7, v_7))), valid_1);
     return GbTexel(position, normal);
 }
 
@@ -390,25 +485,25 @@ fn glossy_at(i_1: u32, x: vec3<f32>) -> Glossy {
     let _e9 = view.width;
     let texel_2 = vec2<i32>(i32((i_1 % _e4)), i32((i_1 / _e9)));
     let _e16 = textureLoad(normal_tex, texel_2, 0i);
-    let m_3 = materials[u32(_e16.w)];
+    let m_2 = materials[u32(_e16.w)];
     let _e23 = view.eye;
-    let _e29 = has_specular(m_3.metallic, m_3.f0_, m_3.f90_);
-    return Glossy(m_3, normalize((_e23 - x)), _e29);
+    let _e29 = has_specular(m_2.metallic, m_2.f0_, m_2.f90_);
+    return Glossy(m_2, normalize((_e23 - x)), _e29);
 }
 
-fn glossy_term(g_1: Glossy, l_4: GpuLight, n_3: vec3<f32>, v_5: vec3<f32>, t: f32) -> vec3<f32> {
-    var local_10: bool;
+fn glossy_term(g_2: Glossy, l_4: GpuLight, n_3: vec3<f32>, v_5: vec3<f32>, t: f32) -> vec3<f32> {
+    var local_12: bool;
 
-    if !(!(g_1.on)) {
-        local_10 = (t <= 0f);
+    if !(!(g_2.on)) {
+        local_12 = (t <= 0f);
     } else {
-        local_10 = true;
+        local_12 = true;
     }
-    let _e13 = local_10;
+    let _e13 = local_12;
     if _e13 {
         return vec3(0f);
     }
-    let _e30 = specular_correction(g_1.m.albedo, g_1.m.metallic, g_1.m.f0_, g_1.m.f90_, g_1.m.alpha, n_3, g_1.v, normalize(-(v_5)));
+    let _e30 = specular_correction(g_2.m.albedo, g_2.m.metallic, g_2.m.f0_, g_2.m.f90_, g_2.m.alpha, n_3, g_2.v, normalize(-(v_5)));
     return ((l_4.intensity * _e30) * t);
 }
 
@@ -418,22 +513,166 @@ fn near_r2_of(slot: u32) -> f32 {
     return _e5;
 }
 
+fn near_cull_r2_of(slot_1: u32, near_r2_3: f32) -> f32 {
+    let _e2 = near_r2_of(slot_1);
+    let _e3 = vpl_near_cull_range2_(_e2, near_r2_3);
+    return _e3;
+}
+
+fn cluster_slot(c_1: u32, k: u32) -> u32 {
+    let _e5 = params.near_clusters_at;
+    let _e11 = near_slots[(((c_1 - _e5) * CLUSTER) + k)];
+    return _e11;
+}
+
+fn cull_r2_of(slot_2: u32) -> f32 {
+    let _e3 = params.near_r2_;
+    let _e4 = near_cull_r2_of(slot_2, _e3);
+    return _e4;
+}
+
+fn shade_list(count: u32) {
+    var m: u32 = 0u;
+
+    let _e2 = valid;
+    if !(_e2) {
+        return;
+    }
+    let _e5 = interleave_flux_scale(P);
+    let unscale = (1f / _e5);
+    loop {
+        let _e10 = m;
+        if (_e10 < count) {
+        } else {
+            break;
+        }
+        {
+            let _e13 = m;
+            let slot_3 = tile_lights[_e13];
+            let l_5 = lights[slot_3];
+            let _e20 = pos;
+            let v_8 = (_e20 - l_5.p0_);
+            let _e25 = rt2_2[slot_3];
+            let _e27 = vpl_near_range2_(_e25, P);
+            let _e28 = near_r2_of(slot_3);
+            let _e32 = params.near_r2_;
+            let _e33 = vpl_near_slc_share(_e27, _e28, dot(v_8, v_8), _e32);
+            if (_e33 > 0f) {
+                let _e38 = nrm;
+                let _e41 = params.min_d2_;
+                let _e42 = vpl_transfer(l_5.p1_, _e38, v_8, _e41);
+                let t_3 = ((_e42 * _e33) * unscale);
+                let _e46 = e;
+                e = (_e46 + (l_5.intensity * t_3));
+                let _e51 = s;
+                let _e53 = g_4;
+                let _e55 = nrm;
+                let _e56 = glossy_term(_e53, l_5, _e55, v_8, t_3);
+                s = (_e51 + _e56);
+                let _e59 = kept;
+                kept = (_e59 + 1u);
+            }
+        }
+        continuing {
+            let _e63 = m;
+            m = (_e63 + 1u);
+        }
+    }
+    return;
+}
+
+fn cull_tile(li_3: u32, lo_1: vec3<f32>, hi_1: vec3<f32>, grid: vec4<u32>, clusters_at: u32, groups_at: u32) {
+    var g_3: u32 = 0u;
+    var h: u32;
+
+    if (li_3 == 0u) {
+        atomicStore((&list_count), 0u);
+    }
+    let _e14 = group_count(grid.x, grid.y, grid.z, grid.w);
+    loop {
+        let _e17 = g_3;
+        if (_e17 < _e14) {
+        } else {
+            break;
+        }
+        {
+            let _e20 = g_3;
+            let gb = boxes[(groups_at + _e20)];
+            let _e26 = box_overlaps_box(gb.lo, gb.hi, lo_1, hi_1);
+            if !(_e26) {
+                continue;
+            }
+            let _e28 = g_3;
+            let _e33 = group_first(_e28, grid.x, grid.y, grid.z, grid.w);
+            let first = (clusters_at + _e33);
+            let _e35 = g_3;
+            let _e40 = group_clusters(_e35, grid.x, grid.y, grid.z, grid.w);
+            if (li_3 == 0u) {
+                atomicStore((&hit_count), 0u);
+            }
+            workgroupBarrier();
+            if (li_3 < _e40) {
+                let cb = boxes[(first + li_3)];
+                let _e52 = box_overlaps_box(cb.lo, cb.hi, lo_1, hi_1);
+                if _e52 {
+                    let _e56 = atomicAdd((&hit_count), 1u);
+                    cluster_hits[_e56] = (first + li_3);
+                }
+            }
+            let _e60 = workgroupUniformLoad((&hit_count));
+            h = 0u;
+            loop {
+                let _e63 = h;
+                if (_e63 < _e60) {
+                } else {
+                    break;
+                }
+                {
+                    let _e66 = workgroupUniformLoad((&list_count));
+                    if ((_e66 + CLUSTER) > MAX_TILE_LIGHTS) {
+                        shade_list(_e66);
+                        workgroupBarrier();
+                        if (li_3 == 0u) {
+                            atomicStore((&list_count), 0u);
+                        }
+                        workgroupBarrier();
+                    }
+                    let _e76 = h;
+                    let _e78 = cluster_hits[_e76];
+                    let _e79 = cluster_slot(_e78, li_3);
+                    let l_6 = lights[_e79];
+                    if any((l_6.intensity != vec3(0f))) {
+                        let _e89 = cull_r2_of(_e79);
+                        let _e90 = cull_radius(_e89);
+                        let _e91 = sphere_overlaps_aabb(l_6.p0_, _e90, lo_1, hi_1);
+                        if _e91 {
+                            let _e95 = atomicAdd((&list_count), 1u);
+                            tile_lights[_e95] = _e79;
+                        }
+                    }
+                }
+                continuing {
+                    let _e98 = h;
+                    h = (_e98 + 1u);
+                }
+            }
+            workgroupBarrier();
+        }
+        continuing {
+            let _e101 = g_3;
+            g_3 = (_e101 + 1u);
+        }
+    }
+    let _e104 = workgroupUniformLoad((&list_count));
+    shade_list(_e104);
+    return;
+}
+
 @compute @workgroup_size(8, 8, 1) 
 fn main(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id) lid: vec3<u32>, @builtin(local_invocation_index) li: u32) {
     var local: bool;
-    var pos: vec4<f32> = vec4(0f);
-    var nrm: vec3<f32> = vec3(0f);
+    var p: vec4<f32> = vec4(0f);
     var local_1: bool;
-    var e: vec3<f32> = vec3(0f);
-    var kept: u32 = 0u;
-    var s: vec3<f32> = vec3(0f);
-    var g: Glossy;
-    var first: u32 = 0u;
-    var local_2: bool;
-    var local_3: bool;
-    var m: u32;
-    var local_4: bool;
-    var m_1: u32;
 
     let px = ((wg.x * TILE) + lid.x);
     let py = ((wg.y * TILE) + lid.y);
@@ -448,151 +687,45 @@ fn main(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id) lid:
     let _e27 = params.width;
     let pix = ((py * _e27) + px);
     if inside {
-        let _e36 = gbuffer_at(pix);
-        pos = _e36.position;
-        nrm = _e36.normal.xyz;
+        let _e33 = gbuffer_at(pix);
+        p = _e33.position;
+        nrm = _e33.normal.xyz;
     }
+    let _e39 = p;
+    pos = _e39.xyz;
     if inside {
-        let _e43 = pos.w;
-        local_1 = (_e43 > 0f);
+        let _e45 = p.w;
+        local_1 = (_e45 > 0f);
     } else {
         local_1 = false;
     }
-    let valid_1 = local_1;
-    let _e48 = pos;
-    let _e50 = workgroup_box(li, _e48.xyz, valid_1);
-    let lo = _e50.lo;
-    let hi = _e50.hi;
-    let _e55 = params.near_r2_;
-    let _e56 = cull_radius(_e55);
-    let _e58 = interleave_flux_scale(P);
-    let unscale = (1f / _e58);
-    if valid_1 {
-        let _e70 = pos;
-        let _e72 = glossy_at(pix, _e70.xyz);
-        g = _e72;
+    let _e49 = local_1;
+    valid = _e49;
+    let _e51 = valid;
+    if _e51 {
+        let _e54 = pos;
+        let _e55 = glossy_at(pix, _e54);
+        g_4 = _e55;
     }
-    loop {
-        let _e75 = first;
-        let _e78 = params.near_blocks;
-        if (_e75 < _e78) {
-        } else {
-            break;
-        }
-        {
-            if (li == 0u) {
-                atomicStore((&light_count), 0u);
-            }
-            workgroupBarrier();
-            let _e84 = first;
-            let b = (_e84 + li);
-            if (li < NEAR_CHUNK) {
-                let _e92 = params.near_blocks;
-                local_2 = (b < _e92);
-            } else {
-                local_2 = false;
-            }
-            let _e95 = local_2;
-            if _e95 {
-                let nb = near_boxes[b];
-                if all(((nb.lo - vec3(_e56)) <= hi)) {
-                    local_3 = all((lo <= (nb.hi + vec3(_e56))));
-                } else {
-                    local_3 = false;
-                }
-                let _e112 = local_3;
-                if _e112 {
-                    m = 0u;
-                    loop {
-                        let _e115 = m;
-                        if (_e115 < NEAR_BLOCK) {
-                        } else {
-                            break;
-                        }
-                        {
-                            let _e121 = m;
-                            let slot_1 = near_slots[((b * NEAR_BLOCK) + _e121)];
-                            let l_5 = lights[slot_1];
-                            let _e128 = near_r2_of(slot_1);
-                            let _e131 = params.near_r2_;
-                            let _e132 = vpl_near_cull_range2_(_e128, _e131);
-                            let _e133 = cull_radius(_e132);
-                            if any((l_5.intensity != vec3(0f))) {
-                                let _e142 = sphere_overlaps_aabb(l_5.p0_, _e133, lo, hi);
-                                local_4 = _e142;
-                            } else {
-                                local_4 = false;
-                            }
-                            let _e144 = local_4;
-                            if _e144 {
-                                let _e148 = atomicAdd((&light_count), 1u);
-                                light_list[_e148] = slot_1;
-                            }
-                        }
-                        continuing {
-                            let _e151 = m;
-                            m = (_e151 + 1u);
-                        }
-                    }
-                }
-            }
-            let _e154 = workgroupUniformLoad((&light_count));
-            if valid_1 {
-                m_1 = 0u;
-                loop {
-                    let _e157 = m_1;
-                    if (_e157 < _e154) {
-                    } else {
-                        break;
-                    }
-                    {
-                        let _e160 = m_1;
-                        let slot_2 = light_list[_e160];
-                        let l_6 = lights[slot_2];
-                        let _e166 = pos;
-                        let v_8 = (_e166.xyz - l_6.p0_);
-                        let _e172 = rt2_2[slot_2];
-                        let _e174 = vpl_near_range2_(_e172, P);
-                        let _e175 = near_r2_of(slot_2);
-                        let _e179 = params.near_r2_;
-                        let _e180 = vpl_near_slc_share(_e174, _e175, dot(v_8, v_8), _e179);
-                        if (_e180 > 0f) {
-                            let _e184 = nrm;
-                            let _e187 = params.min_d2_;
-                            let _e188 = vpl_transfer(l_6.p1_, _e184, v_8, _e187);
-                            let t_3 = ((_e188 * _e180) * unscale);
-                            let _e191 = e;
-                            e = (_e191 + (l_6.intensity * t_3));
-                            let _e195 = s;
-                            let _e196 = g;
-                            let _e197 = nrm;
-                            let _e198 = glossy_term(_e196, l_6, _e197, v_8, t_3);
-                            s = (_e195 + _e198);
-                            let _e200 = kept;
-                            kept = (_e200 + 1u);
-                        }
-                    }
-                    continuing {
-                        let _e204 = m_1;
-                        m_1 = (_e204 + 1u);
-                    }
-                }
-            }
-            workgroupBarrier();
-        }
-        continuing {
-            let _e206 = first;
-            first = (_e206 + NEAR_CHUNK);
-        }
+    let _e57 = pos;
+    let _e59 = valid;
+    let _e60 = workgroup_box(li, _e57, _e59);
+    let _e61 = box_is_empty(_e60);
+    if !(_e61) {
+        let _e67 = params.near_grid;
+        let _e70 = params.near_clusters_at;
+        let _e73 = params.near_groups_at;
+        cull_tile(li, _e60.lo, _e60.hi, _e67, _e70, _e73);
     }
-    if valid_1 {
+    let _e75 = valid;
+    if _e75 {
         let old = irradiance[pix];
-        let _e215 = e;
-        let _e218 = kept;
-        irradiance[pix] = vec4<f32>((old.xyz + _e215), (old.w + f32(_e218)));
-        let _e226 = specular[pix];
-        let _e228 = s;
-        specular[pix] = vec4<f32>((_e226.xyz + _e228), 0f);
+        let _e83 = e;
+        let _e87 = kept;
+        irradiance[pix] = vec4<f32>((old.xyz + _e83), (old.w + f32(_e87)));
+        let _e95 = specular[pix];
+        let _e98 = s;
+        specular[pix] = vec4<f32>((_e95.xyz + _e98), 0f);
         return;
     } else {
         return;

@@ -15,12 +15,18 @@ struct VplParams {
     lights_per_subset: u32,
     min_d2_: f32,
     near_r2_: f32,
-    near_blocks: u32,
     subset_shift: u32,
+    far_groups_at: u32,
+    near_clusters_at: u32,
+    near_groups_at: u32,
+    box_count: u32,
+    pad0_: u32,
     pad1_: u32,
+    far_grid: vec4<u32>,
+    near_grid: vec4<u32>,
 }
 
-struct GpuNearBox {
+struct GpuBox {
     lo: vec3<f32>,
     pad0_: f32,
     hi: vec3<f32>,
@@ -68,6 +74,8 @@ const CULL_RADIUS_SCALE: f32 = 1.000001f;
 const SPHERE_PAD: f32 = 0.00000047683716f;
 const SPHERE_HUGE: f32 = 340282350000000000000000000000000000000f;
 const SPHERE_PAD_ABS: f32 = 0.000000000000000001f;
+const CLUSTER: u32 = 64u;
+const GROUP_SIDE: u32 = 8u;
 const INV_PI: f32 = 0.31830987f;
 const MIN_D2_: f32 = 0.000000000001f;
 const MAX_INTENSITY: f32 = 72057594000000000f;
@@ -81,7 +89,6 @@ const F32_MAX: f32 = 340282350000000000000000000000000000000f;
 const DEPTH_NONE: f32 = 1000000000000000000000000000000f;
 const DEPTH_SIGMA: f32 = 0.05f;
 const COVER_WEIGHT: f32 = 0.1f;
-const NEAR_BLOCK: u32 = 64u;
 const ROULETTE_DEPTH: u32 = 2u;
 const TEMPORAL_MAX_HISTORY: f32 = 32f;
 const TEMPORAL_DEPTH_TOLERANCE: f32 = 0.01f;
@@ -96,10 +103,11 @@ const P: u32 = 8u;
 const TILE: u32 = 8u;
 const THREADS: u32 = 64u;
 const BOX_THREADS: u32 = 64u;
-const NEAR_CHUNK: u32 = 32u;
+const MAX_TILE_LIGHTS: u32 = 1024u;
 
 var<workgroup> wg_lo: array<vec3<f32>, 64>;
 var<workgroup> wg_hi: array<vec3<f32>, 64>;
+var<workgroup> wg_box: WorkgroupBox;
 @group(0) @binding(0) 
 var<uniform> params: VplParams;
 @group(0) @binding(1) 
@@ -113,15 +121,22 @@ var<storage> lights: array<GpuLight>;
 @group(0) @binding(5) 
 var<storage> near_slots: array<u32>;
 @group(0) @binding(6) 
-var<storage> near_boxes: array<GpuNearBox>;
+var<storage> boxes: array<GpuBox>;
 @group(0) @binding(7) 
 var<storage> rt2_2: array<f32>;
 @group(0) @binding(8) 
 var<storage> r2_5: array<f32>;
 @group(0) @binding(9) 
 var<storage, read_write> irradiance: array<vec4<f32>>;
-var<workgroup> light_count: atomic<u32>;
-var<workgroup> light_list: array<u32, 2048>;
+var<private> pos: vec3<f32>;
+var<private> nrm: vec3<f32>;
+var<private> valid: bool;
+var<private> e: vec3<f32>;
+var<private> kept: u32;
+var<workgroup> tile_lights: array<u32, 1024>;
+var<workgroup> list_count: atomic<u32>;
+var<workgroup> cluster_hits: array<u32, 64>;
+var<workgroup> hit_count: atomic<u32>;
 
 fn to_f32_(u: u32) -> f32 {
     return f32(u);
@@ -148,9 +163,74 @@ fn sphere_overlaps_aabb(c: vec3<f32>, r: f32, bmin: vec3<f32>, bmax: vec3<f32>) 
     return (dot(v_1, v_1) <= (r * r));
 }
 
+fn groups_across(bw: u32, gw: u32) -> u32 {
+    return (((bw + gw) - 1u) / gw);
+}
+
+fn group_count(bw_1: u32, bh: u32, gw_1: u32, gh: u32) -> u32 {
+    let _e4 = groups_across(bw_1, gw_1);
+    let _e5 = groups_across(bh, gh);
+    return (_e4 * _e5);
+}
+
+fn group_first(g: u32, bw_2: u32, bh_1: u32, gw_2: u32, gh_1: u32) -> u32 {
+    let _e5 = groups_across(bw_2, gw_2);
+    let gx = (g % _e5);
+    let gy = (g / _e5);
+    let h_1 = min(gh_1, (bh_1 - (gh_1 * gy)));
+    return (((gy * gh_1) * bw_2) + ((gx * gw_2) * h_1));
+}
+
+fn group_clusters(g_1: u32, bw_3: u32, bh_2: u32, gw_3: u32, gh_2: u32) -> u32 {
+    let _e5 = groups_across(bw_3, gw_3);
+    let gx_1 = (g_1 % _e5);
+    let gy_1 = (g_1 / _e5);
+    return (min(gw_3, (bw_3 - (gw_3 * gx_1))) * min(gh_2, (bh_2 - (gh_2 * gy_1))));
+}
+
+fn box_overlaps_box(lo1_: vec3<f32>, hi1_: vec3<f32>, lo2_: vec3<f32>, hi2_: vec3<f32>) -> bool {
+    var local_2: bool;
+    var local_3: bool;
+    var local_4: bool;
+    var local_5: bool;
+    var local_6: bool;
+
+    if (lo1_.x <= hi2_.x) {
+        local_2 = (lo2_.x <= hi1_.x);
+    } else {
+        local_2 = false;
+    }
+    let _e13 = local_2;
+    if _e13 {
+        local_3 = (lo1_.y <= hi2_.y);
+    } else {
+        local_3 = false;
+    }
+    let _e20 = local_3;
+    if _e20 {
+        local_4 = (lo2_.y <= hi1_.y);
+    } else {
+        local_4 = false;
+    }
+    let _e27 = local_4;
+    if _e27 {
+        local_5 = (lo1_.z <= hi2_.z);
+    } else {
+        local_5 = false;
+    }
+    let _e34 = local_5;
+    if _e34 {
+        local_6 = (lo2_.z <= hi1_.z);
+    } else {
+        local_6 = false;
+    }
+    let _e41 = local_6;
+    return _e41;
+}
+
 fn vpl_transfer(n_l: vec3<f32>, n_x: vec3<f32>, v: vec3<f32>, min_d2_: f32) -> f32 {
-    let m_2 = max(dot(v, v), max(min_d2_, MIN_D2_));
-    return (((max(dot(n_l, v), 0f) * max(-(dot(n_x, v)), 0f)) * INV_PI) / (m_2 * m_2));
+    let m_1 = max(dot(v, v), max(min_d2_, MIN_D2_));
+    return (((max(dot(n_l, v), 0f) * max(-(dot(n_x, v)), 0f)) * INV_PI) / (m_1 * m_1));
 }
 
 fn interleave_flux_scale(period: u32) -> f32 {
@@ -182,49 +262,62 @@ fn vpl_near_slc_share(rt2_1: f32, r2_4: f32, d2_3: f32, near_r2_2: f32) -> f32 {
     return select(0f, (_e4 * _e5), (_e7 & (_e4 > 0f)));
 }
 
-fn workgroup_box(li_1: u32, p: vec3<f32>, has: bool) -> WorkgroupBox {
+fn workgroup_bounds(li_1: u32, lo: vec3<f32>, hi: vec3<f32>) -> WorkgroupBox {
     var stride: u32 = 32u;
 
-    wg_lo[li_1] = select(vec3(340282350000000000000000000000000000000f), p, has);
-    wg_hi[li_1] = select(vec3(-340282350000000000000000000000000000000f), p, has);
+    wg_lo[li_1] = lo;
+    wg_hi[li_1] = hi;
     workgroupBarrier();
     loop {
-        let _e15 = stride;
-        if (_e15 > 0u) {
+        let _e9 = stride;
+        if (_e9 > 0u) {
         } else {
             break;
         }
         {
-            let _e18 = stride;
-            if (li_1 < _e18) {
-                let _e24 = wg_lo[li_1];
-                let _e26 = stride;
-                let _e29 = wg_lo[(li_1 + _e26)];
-                wg_lo[li_1] = min(_e24, _e29);
-                let _e35 = wg_hi[li_1];
-                let _e37 = stride;
-                let _e40 = wg_hi[(li_1 + _e37)];
-                wg_hi[li_1] = max(_e35, _e40);
+            let _e12 = stride;
+            if (li_1 < _e12) {
+                let _e18 = wg_lo[li_1];
+                let _e20 = stride;
+                let _e23 = wg_lo[(li_1 + _e20)];
+                wg_lo[li_1] = min(_e18, _e23);
+                let _e29 = wg_hi[li_1];
+                let _e31 = stride;
+                let _e34 = wg_hi[(li_1 + _e31)];
+                wg_hi[li_1] = max(_e29, _e34);
             }
             workgroupBarrier();
         }
         continuing {
-            let _e42 = stride;
-            stride = (_e42 / 2u);
+            let _e36 = stride;
+            stride = (_e36 / 2u);
         }
     }
-    let _e47 = wg_lo[0];
-    let _e50 = wg_hi[0];
-    return WorkgroupBox(_e47, _e50);
+    if (li_1 == 0u) {
+        let _e44 = wg_lo[0];
+        let _e47 = wg_hi[0];
+        wg_box = WorkgroupBox(_e44, _e47);
+    }
+    let _e50 = workgroupUniformLoad((&wg_box));
+    return _e50;
+}
+
+fn workgroup_box(li_2: u32, p_1: vec3<f32>, has: bool) -> WorkgroupBox {
+    let _e9 = workgroup_bounds(li_2, select(vec3(340282350000000000000000000000000000000f), p_1, has), select(vec3(-340282350000000000000000000000000000000f), p_1, has));
+    return _e9;
+}
+
+fn box_is_empty(b: WorkgroupBox) -> bool {
+    return (b.lo.x > b.hi.x);
 }
 
 fn surface_at(texel: vec2<i32>) -> vec4<f32> {
-    let p_1 = textureLoad(position_tex, texel, 0i);
-    return select(vec4(0f), vec4<f32>(p_1.xyz, 1f), (p_1.w > 0f));
+    let p_2 = textureLoad(position_tex, texel, 0i);
+    return select(vec4(0f), vec4<f32>(p_2.xyz, 1f), (p_2.w > 0f));
 }
 
 fn gbuffer_at(i: u32) -> GbTexel {
-    var local_5: bool;
+    var local_7: bool;
 
     let _e3 = view.width;
     let _e8 = view.width;
@@ -234,15 +327,15 @@ fn gbuffer_at(i: u32) -> GbTexel {
     let n = _e15.xyz;
     let len2_ = dot(n, n);
     if (_e12.w > 0f) {
-        local_5 = (len2_ > 0f);
+        local_7 = (len2_ > 0f);
     } else {
-        local_5 = false;
+        local_7 = false;
     }
-    let valid = local_5;
+    let valid_1 = local_7;
     let _e30 = view.eye;
     let v_2 = (_e12.xyz - _e30);
-    let position = vec4<f32>(_e12.xyz, select(0f, 1f, valid));
-    let normal = select(vec4<f32>(0f, 0f, 0f, 1000000000000000000000000000000f), vec4<f32>((n / vec3(sqrt(len2_))), sqrt(dot(v_2, v_2))), valid);
+    let position = vec4<f32>(_e12.xyz, select(0f, 1f, valid_1));
+    let normal = select(vec4<f32>(0f, 0f, 0f, 1000000000000000000000000000000f), vec4<f32>((n / vec3(sqrt(len2_))), sqrt(dot(v_2, v_2))), valid_1);
     return GbTexel(position, normal);
 }
 
@@ -252,20 +345,161 @@ fn near_r2_of(slot: u32) -> f32 {
     return _e5;
 }
 
+fn near_cull_r2_of(slot_1: u32, near_r2_3: f32) -> f32 {
+    let _e2 = near_r2_of(slot_1);
+    let _e3 = vpl_near_cull_range2_(_e2, near_r2_3);
+    return _e3;
+}
+
+fn cluster_slot(c_1: u32, k: u32) -> u32 {
+    let _e5 = params.near_clusters_at;
+    let _e11 = near_slots[(((c_1 - _e5) * CLUSTER) + k)];
+    return _e11;
+}
+
+fn cull_r2_of(slot_2: u32) -> f32 {
+    let _e3 = params.near_r2_;
+    let _e4 = near_cull_r2_of(slot_2, _e3);
+    return _e4;
+}
+
+fn shade_list(count: u32) {
+    var m: u32 = 0u;
+
+    let _e2 = valid;
+    if !(_e2) {
+        return;
+    }
+    let _e5 = interleave_flux_scale(P);
+    let unscale = (1f / _e5);
+    loop {
+        let _e10 = m;
+        if (_e10 < count) {
+        } else {
+            break;
+        }
+        {
+            let _e13 = m;
+            let slot_3 = tile_lights[_e13];
+            let l = lights[slot_3];
+            let _e20 = pos;
+            let v_3 = (_e20 - l.p0_);
+            let _e25 = rt2_2[slot_3];
+            let _e27 = vpl_near_range2_(_e25, P);
+            let _e28 = near_r2_of(slot_3);
+            let _e32 = params.near_r2_;
+            let _e33 = vpl_near_slc_share(_e27, _e28, dot(v_3, v_3), _e32);
+            if (_e33 > 0f) {
+                let _e38 = nrm;
+                let _e41 = params.min_d2_;
+                let _e42 = vpl_transfer(l.p1_, _e38, v_3, _e41);
+                let t_1 = ((_e42 * _e33) * unscale);
+                let _e46 = e;
+                e = (_e46 + (l.intensity * t_1));
+                let _e51 = kept;
+                kept = (_e51 + 1u);
+            }
+        }
+        continuing {
+            let _e55 = m;
+            m = (_e55 + 1u);
+        }
+    }
+    return;
+}
+
+fn cull_tile(li_3: u32, lo_1: vec3<f32>, hi_1: vec3<f32>, grid: vec4<u32>, clusters_at: u32, groups_at: u32) {
+    var g_2: u32 = 0u;
+    var h: u32;
+
+    if (li_3 == 0u) {
+        atomicStore((&list_count), 0u);
+    }
+    let _e14 = group_count(grid.x, grid.y, grid.z, grid.w);
+    loop {
+        let _e17 = g_2;
+        if (_e17 < _e14) {
+        } else {
+            break;
+        }
+        {
+            let _e20 = g_2;
+            let gb = boxes[(groups_at + _e20)];
+            let _e26 = box_overlaps_box(gb.lo, gb.hi, lo_1, hi_1);
+            if !(_e26) {
+                continue;
+            }
+            let _e28 = g_2;
+            let _e33 = group_first(_e28, grid.x, grid.y, grid.z, grid.w);
+            let first = (clusters_at + _e33);
+            let _e35 = g_2;
+            let _e40 = group_clusters(_e35, grid.x, grid.y, grid.z, grid.w);
+            if (li_3 == 0u) {
+                atomicStore((&hit_count), 0u);
+            }
+            workgroupBarrier();
+            if (li_3 < _e40) {
+                let cb = boxes[(first + li_3)];
+                let _e52 = box_overlaps_box(cb.lo, cb.hi, lo_1, hi_1);
+                if _e52 {
+                    let _e56 = atomicAdd((&hit_count), 1u);
+                    cluster_hits[_e56] = (first + li_3);
+                }
+            }
+            let _e60 = workgroupUniformLoad((&hit_count));
+            h = 0u;
+            loop {
+                let _e63 = h;
+                if (_e63 < _e60) {
+                } else {
+                    break;
+                }
+                {
+                    let _e66 = workgroupUniformLoad((&list_count));
+                    if ((_e66 + CLUSTER) > MAX_TILE_LIGHTS) {
+                        shade_list(_e66);
+                        workgroupBarrier();
+                        if (li_3 == 0u) {
+                            atomicStore((&list_count), 0u);
+                        }
+                        workgroupBarrier();
+                    }
+                    let _e76 = h;
+                    let _e78 = cluster_hits[_e76];
+                    let _e79 = cluster_slot(_e78, li_3);
+                    let l_1 = lights[_e79];
+                    if any((l_1.intensity != vec3(0f))) {
+                        let _e89 = cull_r2_of(_e79);
+                        let _e90 = cull_radius(_e89);
+                        let _e91 = sphere_overlaps_aabb(l_1.p0_, _e90, lo_1, hi_1);
+                        if _e91 {
+                            let _e95 = atomicAdd((&list_count), 1u);
+                            tile_lights[_e95] = _e79;
+                        }
+                    }
+                }
+                continuing {
+                    let _e98 = h;
+                    h = (_e98 + 1u);
+                }
+            }
+            workgroupBarrier();
+        }
+        continuing {
+            let _e101 = g_2;
+            g_2 = (_e101 + 1u);
+        }
+    }
+    let _e104 = workgroupUniformLoad((&list_count));
+    shade_list(_e104);
+    return;
+}
+
 @compute @workgroup_size(8, 8, 1) 
 fn main(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id) lid: vec3<u32>, @builtin(local_invocation_index) li: u32) {
     var local: bool;
-    var pos: vec4<f32> = vec4(0f);
-    var nrm: vec3<f32> = vec3(0f);
+    var p: vec4<f32> = vec4(0f);
     var local_1: bool;
-    var e: vec3<f32> = vec3(0f);
-    var kept: u32 = 0u;
-    var first: u32 = 0u;
-    var local_2: bool;
-    var local_3: bool;
-    var m: u32;
-    var local_4: bool;
-    var m_1: u32;
 
     let px = ((wg.x * TILE) + lid.x);
     let py = ((wg.y * TILE) + lid.y);
@@ -280,138 +514,36 @@ fn main(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id) lid:
     let _e27 = params.width;
     let pix = ((py * _e27) + px);
     if inside {
-        let _e36 = gbuffer_at(pix);
-        pos = _e36.position;
-        nrm = _e36.normal.xyz;
+        let _e33 = gbuffer_at(pix);
+        p = _e33.position;
+        nrm = _e33.normal.xyz;
     }
+    let _e39 = p;
+    pos = _e39.xyz;
     if inside {
-        let _e43 = pos.w;
-        local_1 = (_e43 > 0f);
+        let _e45 = p.w;
+        local_1 = (_e45 > 0f);
     } else {
         local_1 = false;
     }
-    let valid_1 = local_1;
-    let _e48 = pos;
-    let _e50 = workgroup_box(li, _e48.xyz, valid_1);
-    let lo = _e50.lo;
-    let hi = _e50.hi;
-    let _e55 = params.near_r2_;
-    let _e56 = cull_radius(_e55);
-    let _e58 = interleave_flux_scale(P);
-    let unscale = (1f / _e58);
-    loop {
-        let _e68 = first;
-        let _e71 = params.near_blocks;
-        if (_e68 < _e71) {
-        } else {
-            break;
-        }
-        {
-            if (li == 0u) {
-                atomicStore((&light_count), 0u);
-            }
-            workgroupBarrier();
-            let _e77 = first;
-            let b = (_e77 + li);
-            if (li < NEAR_CHUNK) {
-                let _e85 = params.near_blocks;
-                local_2 = (b < _e85);
-            } else {
-                local_2 = false;
-            }
-            let _e88 = local_2;
-            if _e88 {
-                let nb = near_boxes[b];
-                if all(((nb.lo - vec3(_e56)) <= hi)) {
-                    local_3 = all((lo <= (nb.hi + vec3(_e56))));
-                } else {
-                    local_3 = false;
-                }
-                let _e105 = local_3;
-                if _e105 {
-                    m = 0u;
-                    loop {
-                        let _e108 = m;
-                        if (_e108 < NEAR_BLOCK) {
-                        } else {
-                            break;
-                        }
-                        {
-                            let _e114 = m;
-                            let slot_1 = near_slots[((b * NEAR_BLOCK) + _e114)];
-                            let l = lights[slot_1];
-                            let _e121 = near_r2_of(slot_1);
-                            let _e124 = params.near_r2_;
-                            let _e125 = vpl_near_cull_range2_(_e121, _e124);
-                            let _e126 = cull_radius(_e125);
-                            if any((l.intensity != vec3(0f))) {
-                                let _e135 = sphere_overlaps_aabb(l.p0_, _e126, lo, hi);
-                                local_4 = _e135;
-                            } else {
-                                local_4 = false;
-                            }
-                            let _e137 = local_4;
-                            if _e137 {
-                                let _e141 = atomicAdd((&light_count), 1u);
-                                light_list[_e141] = slot_1;
-                            }
-                        }
-                        continuing {
-                            let _e144 = m;
-                            m = (_e144 + 1u);
-                        }
-                    }
-                }
-            }
-            let _e147 = workgroupUniformLoad((&light_count));
-            if valid_1 {
-                m_1 = 0u;
-                loop {
-                    let _e150 = m_1;
-                    if (_e150 < _e147) {
-                    } else {
-                        break;
-                    }
-                    {
-                        let _e153 = m_1;
-                        let slot_2 = light_list[_e153];
-                        let l_1 = lights[slot_2];
-                        let _e159 = pos;
-                        let v_3 = (_e159.xyz - l_1.p0_);
-                        let _e165 = rt2_2[slot_2];
-                        let _e167 = vpl_near_range2_(_e165, P);
-                        let _e168 = near_r2_of(slot_2);
-                        let _e172 = params.near_r2_;
-                        let _e173 = vpl_near_slc_share(_e167, _e168, dot(v_3, v_3), _e172);
-                        if (_e173 > 0f) {
-                            let _e177 = nrm;
-                            let _e180 = params.min_d2_;
-                            let _e181 = vpl_transfer(l_1.p1_, _e177, v_3, _e180);
-                            let t_1 = ((_e181 * _e173) * unscale);
-                            let _e184 = e;
-                            e = (_e184 + (l_1.intensity * t_1));
-                            let _e188 = kept;
-                            kept = (_e188 + 1u);
-                        }
-                    }
-                    continuing {
-                        let _e192 = m_1;
-                        m_1 = (_e192 + 1u);
-                    }
-                }
-            }
-            workgroupBarrier();
-        }
-        continuing {
-            let _e194 = first;
-            first = (_e194 + NEAR_CHUNK);
-        }
+    let _e49 = local_1;
+    valid = _e49;
+    let _e51 = pos;
+    let _e53 = valid;
+    let _e54 = workgroup_box(li, _e51, _e53);
+    let _e55 = box_is_empty(_e54);
+    if !(_e55) {
+        let _e61 = params.near_grid;
+        let _e64 = params.near_clusters_at;
+        let _e67 = params.near_groups_at;
+        cull_tile(li, _e54.lo, _e54.hi, _e61, _e64, _e67);
     }
-    if valid_1 {
+    let _e69 = valid;
+    if _e69 {
         let old = irradiance[pix];
-        let _e203 = e;
-        let _e206 = kept;
-        irradiance[pix] = vec4<f32>((old.xyz + _e203), (old.w + f32(_e206)));
+        let _e77 = e;
+        let _e81 = kept;
+        irradiance[pix] = vec4<f32>((old.xyz + _e77), (old.w + f32(_e81)));
         return;
     } else {
         return;

@@ -9,13 +9,6 @@ struct GpuLight {
     ies_base: u32,
 }
 
-struct GpuNearBox {
-    lo: vec3<f32>,
-    pad0_: f32,
-    hi: vec3<f32>,
-    pad1_: f32,
-}
-
 struct GpuVplRecord {
     position: vec3<f32>,
     pad0_: f32,
@@ -40,11 +33,6 @@ struct PackParams {
     pad2_: u32,
 }
 
-struct WorkgroupBox {
-    lo: vec3<f32>,
-    hi: vec3<f32>,
-}
-
 const LIGHT_POINT: u32 = 0u;
 const LIGHT_SPOT: u32 = 1u;
 const LIGHT_IES: u32 = 2u;
@@ -61,6 +49,8 @@ const CULL_RADIUS_SCALE: f32 = 1.000001f;
 const SPHERE_PAD: f32 = 0.00000047683716f;
 const SPHERE_HUGE: f32 = 340282350000000000000000000000000000000f;
 const SPHERE_PAD_ABS: f32 = 0.000000000000000001f;
+const CLUSTER: u32 = 64u;
+const GROUP_SIDE: u32 = 8u;
 const INV_PI: f32 = 0.31830987f;
 const MIN_D2_: f32 = 0.000000000001f;
 const MAX_INTENSITY: f32 = 72057594000000000f;
@@ -74,7 +64,6 @@ const F32_MAX: f32 = 340282350000000000000000000000000000000f;
 const DEPTH_NONE: f32 = 1000000000000000000000000000000f;
 const DEPTH_SIGMA: f32 = 0.05f;
 const COVER_WEIGHT: f32 = 0.1f;
-const NEAR_BLOCK: u32 = 64u;
 const ROULETTE_DEPTH: u32 = 2u;
 const TEMPORAL_MAX_HISTORY: f32 = 32f;
 const TEMPORAL_DEPTH_TOLERANCE: f32 = 0.01f;
@@ -86,7 +75,6 @@ const TEMPORAL_CHANGE_LOW: f32 = 4f;
 const TEMPORAL_CHANGE_HIGH: f32 = 8f;
 const TEMPORAL_MIN_WEIGHT: f32 = 0.01f;
 const P: u32 = 8u;
-const BOX_THREADS: u32 = 64u;
 
 @group(0) @binding(0) 
 var<uniform> params: PackParams;
@@ -102,10 +90,6 @@ var<storage, read_write> rt2_: array<f32>;
 var<storage, read_write> r2_: array<f32>;
 @group(0) @binding(8) 
 var<storage, read_write> near_slots: array<u32>;
-@group(0) @binding(9) 
-var<storage, read_write> near_boxes: array<GpuNearBox>;
-var<workgroup> wg_lo: array<vec3<f32>, 64>;
-var<workgroup> wg_hi: array<vec3<f32>, 64>;
 
 fn threshold_range2_(intensity: f32, exposure: f32, error_bound: f32) -> f32 {
     if (intensity <= 0f) {
@@ -128,67 +112,67 @@ fn vpl_rt2_(flux_1: vec3<f32>, exposure_1: f32, error_bound_1: f32, mode_1: u32)
 }
 
 fn finite3_(v: vec3<f32>) -> bool {
+    var local: bool;
     var local_1: bool;
-    var local_2: bool;
 
     if (abs(v.x) <= F32_MAX) {
-        local_1 = (abs(v.y) <= F32_MAX);
+        local = (abs(v.y) <= F32_MAX);
+    } else {
+        local = false;
+    }
+    let _e12 = local;
+    if _e12 {
+        local_1 = (abs(v.z) <= F32_MAX);
     } else {
         local_1 = false;
     }
-    let _e12 = local_1;
-    if _e12 {
-        local_2 = (abs(v.z) <= F32_MAX);
-    } else {
-        local_2 = false;
-    }
-    let _e20 = local_2;
+    let _e20 = local_1;
     return _e20;
 }
 
-fn vpl_record_ok(position_1: vec3<f32>, normal_1: vec3<f32>, flux_2: vec3<f32>) -> bool {
+fn vpl_record_ok(position: vec3<f32>, normal_1: vec3<f32>, flux_2: vec3<f32>) -> bool {
+    var local_2: bool;
     var local_3: bool;
     var local_4: bool;
     var local_5: bool;
     var local_6: bool;
-    var local_7: bool;
 
-    let _e3 = finite3_(position_1);
+    let _e3 = finite3_(position);
     if _e3 {
         let _e6 = finite3_(normal_1);
-        local_3 = _e6;
+        local_2 = _e6;
+    } else {
+        local_2 = false;
+    }
+    let _e8 = local_2;
+    if _e8 {
+        let _e11 = finite3_(flux_2);
+        local_3 = _e11;
     } else {
         local_3 = false;
     }
-    let _e8 = local_3;
-    if _e8 {
-        let _e11 = finite3_(flux_2);
-        local_4 = _e11;
-    } else {
-        local_4 = false;
-    }
-    let _e13 = local_4;
+    let _e13 = local_3;
     if !(_e13) {
         return false;
     }
     if (flux_2.x >= 0f) {
-        local_5 = (flux_2.y >= 0f);
+        local_4 = (flux_2.y >= 0f);
+    } else {
+        local_4 = false;
+    }
+    let _e25 = local_4;
+    if _e25 {
+        local_5 = (flux_2.z >= 0f);
     } else {
         local_5 = false;
     }
-    let _e25 = local_5;
-    if _e25 {
-        local_6 = (flux_2.z >= 0f);
+    let _e32 = local_5;
+    if _e32 {
+        local_6 = ((max(max(flux_2.x, flux_2.y), flux_2.z) * INV_PI) <= MAX_INTENSITY);
     } else {
         local_6 = false;
     }
-    let _e32 = local_6;
-    if _e32 {
-        local_7 = ((max(max(flux_2.x, flux_2.y), flux_2.z) * INV_PI) <= MAX_INTENSITY);
-    } else {
-        local_7 = false;
-    }
-    let _e45 = local_7;
+    let _e45 = local_6;
     return _e45;
 }
 
@@ -197,107 +181,50 @@ fn interleave_slot_linear(i: u32, per_subset: u32, period: u32) -> u32 {
     return (((i % subsets) * per_subset) + (i / subsets));
 }
 
-fn workgroup_box(li_1: u32, p_1: vec3<f32>, has: bool) -> WorkgroupBox {
-    var stride: u32 = 32u;
-
-    wg_lo[li_1] = select(vec3(340282350000000000000000000000000000000f), p_1, has);
-    wg_hi[li_1] = select(vec3(-340282350000000000000000000000000000000f), p_1, has);
-    workgroupBarrier();
-    loop {
-        let _e15 = stride;
-        if (_e15 > 0u) {
-        } else {
-            break;
-        }
-        {
-            let _e18 = stride;
-            if (li_1 < _e18) {
-                let _e24 = wg_lo[li_1];
-                let _e26 = stride;
-                let _e29 = wg_lo[(li_1 + _e26)];
-                wg_lo[li_1] = min(_e24, _e29);
-                let _e35 = wg_hi[li_1];
-                let _e37 = stride;
-                let _e40 = wg_hi[(li_1 + _e37)];
-                wg_hi[li_1] = max(_e35, _e40);
-            }
-            workgroupBarrier();
-        }
-        continuing {
-            let _e42 = stride;
-            stride = (_e42 / 2u);
-        }
-    }
-    let _e47 = wg_lo[0];
-    let _e50 = wg_hi[0];
-    return WorkgroupBox(_e47, _e50);
-}
-
 @compute @workgroup_size(64, 1, 1) 
-fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_index) li: u32) {
-    var position: vec3<f32> = vec3(0f);
-    var lit: bool = false;
+fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     var p: vec3<f32>;
     var normal: vec3<f32>;
     var flux: vec3<f32>;
-    var local: bool;
 
     let i_1 = gid.x;
-    let _e6 = params.count;
-    let inside = (i_1 < _e6);
-    if inside {
-        let r = records[i_1];
-        p = r.position;
-        normal = r.normal;
-        flux = r.flux;
-        let _e24 = params.per_subset;
-        let _e26 = interleave_slot_linear(i_1, _e24, P);
-        let _e27 = p;
-        let _e28 = normal;
-        let _e29 = flux;
-        let _e30 = vpl_record_ok(_e27, _e28, _e29);
-        if !(_e30) {
-            p = vec3(0f);
-            normal = vec3(0f);
-            flux = vec3(0f);
-        }
-        let _e38 = p;
-        position = _e38;
-        let _e39 = flux;
-        let _e42 = params.scale;
-        flux = (_e39 * _e42);
-        let _e46 = position;
-        let _e48 = normal;
-        let _e51 = flux;
-        lights[_e26] = GpuLight(_e46, LIGHT_VPL, _e48, 0f, vec3(0f), 0f, _e51, 0u);
-        ids[_e26] = i_1;
-        let _e60 = params.slc;
-        let slc = (_e60 != 0u);
-        let _e65 = flux;
-        let _e68 = params.exposure;
-        let _e71 = params.error_bound;
-        let _e74 = params.mode;
-        let _e75 = vpl_rt2_(_e65, _e68, _e71, _e74);
-        rt2_[_e26] = select(0f, _e75, slc);
-        let _e82 = params.fixed_r2_;
-        r2_[_e26] = select(_e82, 0f, slc);
-        near_slots[i_1] = _e26;
-        let _e87 = flux;
-        lit = any((_e87 != vec3(0f)));
-    }
-    let _e92 = position;
-    let _e93 = lit;
-    let _e94 = workgroup_box(li, _e92, _e93);
-    if (li == 0u) {
-        local = inside;
-    } else {
-        local = false;
-    }
-    let _e100 = local;
-    if _e100 {
-        near_boxes[wg.x] = GpuNearBox(_e94.lo, 0f, _e94.hi, 0f);
-        return;
-    } else {
+    let _e4 = params.count;
+    if (i_1 >= _e4) {
         return;
     }
+    let r = records[i_1];
+    p = r.position;
+    normal = r.normal;
+    flux = r.flux;
+    let _e17 = params.per_subset;
+    let _e19 = interleave_slot_linear(i_1, _e17, P);
+    let _e20 = p;
+    let _e21 = normal;
+    let _e22 = flux;
+    let _e23 = vpl_record_ok(_e20, _e21, _e22);
+    if !(_e23) {
+        p = vec3(0f);
+        normal = vec3(0f);
+        flux = vec3(0f);
+    }
+    let _e31 = flux;
+    let _e34 = params.scale;
+    flux = (_e31 * _e34);
+    let _e38 = p;
+    let _e40 = normal;
+    let _e43 = flux;
+    lights[_e19] = GpuLight(_e38, LIGHT_VPL, _e40, 0f, vec3(0f), 0f, _e43, 0u);
+    ids[_e19] = i_1;
+    let _e52 = params.slc;
+    let slc = (_e52 != 0u);
+    let _e57 = flux;
+    let _e60 = params.exposure;
+    let _e63 = params.error_bound;
+    let _e66 = params.mode;
+    let _e67 = vpl_rt2_(_e57, _e60, _e63, _e66);
+    rt2_[_e19] = select(0f, _e67, slc);
+    let _e74 = params.fixed_r2_;
+    r2_[_e19] = select(_e74, 0f, slc);
+    near_slots[i_1] = _e19;
+    return;
 }

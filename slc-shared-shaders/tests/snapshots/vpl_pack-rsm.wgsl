@@ -9,13 +9,6 @@ struct GpuLight {
     ies_base: u32,
 }
 
-struct GpuNearBox {
-    lo: vec3<f32>,
-    pad0_: f32,
-    hi: vec3<f32>,
-    pad1_: f32,
-}
-
 struct PackParams {
     count: u32,
     size: u32,
@@ -29,11 +22,6 @@ struct PackParams {
     pad0_: u32,
     pad1_: u32,
     pad2_: u32,
-}
-
-struct WorkgroupBox {
-    lo: vec3<f32>,
-    hi: vec3<f32>,
 }
 
 const LIGHT_POINT: u32 = 0u;
@@ -52,6 +40,8 @@ const CULL_RADIUS_SCALE: f32 = 1.000001f;
 const SPHERE_PAD: f32 = 0.00000047683716f;
 const SPHERE_HUGE: f32 = 340282350000000000000000000000000000000f;
 const SPHERE_PAD_ABS: f32 = 0.000000000000000001f;
+const CLUSTER: u32 = 64u;
+const GROUP_SIDE: u32 = 8u;
 const INV_PI: f32 = 0.31830987f;
 const MIN_D2_: f32 = 0.000000000001f;
 const MAX_INTENSITY: f32 = 72057594000000000f;
@@ -65,7 +55,6 @@ const F32_MAX: f32 = 340282350000000000000000000000000000000f;
 const DEPTH_NONE: f32 = 1000000000000000000000000000000f;
 const DEPTH_SIGMA: f32 = 0.05f;
 const COVER_WEIGHT: f32 = 0.1f;
-const NEAR_BLOCK: u32 = 64u;
 const ROULETTE_DEPTH: u32 = 2u;
 const TEMPORAL_MAX_HISTORY: f32 = 32f;
 const TEMPORAL_DEPTH_TOLERANCE: f32 = 0.01f;
@@ -77,7 +66,6 @@ const TEMPORAL_CHANGE_LOW: f32 = 4f;
 const TEMPORAL_CHANGE_HIGH: f32 = 8f;
 const TEMPORAL_MIN_WEIGHT: f32 = 0.01f;
 const P: u32 = 8u;
-const BOX_THREADS: u32 = 64u;
 
 @group(0) @binding(0) 
 var<uniform> params: PackParams;
@@ -97,10 +85,6 @@ var<storage, read_write> rt2_: array<f32>;
 var<storage, read_write> r2_: array<f32>;
 @group(0) @binding(8) 
 var<storage, read_write> near_slots: array<u32>;
-@group(0) @binding(9) 
-var<storage, read_write> near_boxes: array<GpuNearBox>;
-var<workgroup> wg_lo: array<vec3<f32>, 64>;
-var<workgroup> wg_hi: array<vec3<f32>, 64>;
 
 fn threshold_range2_(intensity: f32, exposure: f32, error_bound: f32) -> f32 {
     if (intensity <= 0f) {
@@ -116,6 +100,64 @@ fn intensity_measure(rgb: vec3<f32>, mode: u32) -> f32 {
     return max(rgb.x, max(rgb.y, rgb.z));
 }
 
+fn groups_across(bw: u32, gw: u32) -> u32 {
+    return (((bw + gw) - 1u) / gw);
+}
+
+fn group_first(g: u32, bw_1: u32, bh: u32, gw_1: u32, gh: u32) -> u32 {
+    let _e5 = groups_across(bw_1, gw_1);
+    let gx = (g % _e5);
+    let gy = (g / _e5);
+    let h = min(gh, (bh - (gh * gy)));
+    return (((gy * gh) * bw_1) + ((gx * gw_1) * h));
+}
+
+fn cluster_index(bx: u32, by: u32, bw_2: u32, bh_1: u32, gw_2: u32, gh_1: u32) -> u32 {
+    let gx_1 = (bx / gw_2);
+    let gy_1 = (by / gh_1);
+    let w = min(gw_2, (bw_2 - (gw_2 * gx_1)));
+    let _e11 = groups_across(bw_2, gw_2);
+    let g_1 = ((gy_1 * _e11) + gx_1);
+    let _e14 = group_first(g_1, bw_2, bh_1, gw_2, gh_1);
+    return ((_e14 + ((by - (gh_1 * gy_1)) * w)) + (bx - (gw_2 * gx_1)));
+}
+
+fn cluster_x(c: u32, bw_3: u32, bh_2: u32, gw_3: u32, gh_2: u32) -> u32 {
+    let gy_2 = (c / (gh_2 * bw_3));
+    let h_1 = min(gh_2, (bh_2 - (gh_2 * gy_2)));
+    let rest = (c - ((gy_2 * gh_2) * bw_3));
+    let gx_2 = (rest / (gw_3 * h_1));
+    let w_1 = min(gw_3, (bw_3 - (gw_3 * gx_2)));
+    return ((gx_2 * gw_3) + ((rest - ((gx_2 * gw_3) * h_1)) % w_1));
+}
+
+fn cluster_y(c_1: u32, bw_4: u32, bh_3: u32, gw_4: u32, gh_3: u32) -> u32 {
+    let gy_3 = (c_1 / (gh_3 * bw_4));
+    let h_2 = min(gh_3, (bh_3 - (gh_3 * gy_3)));
+    let rest_1 = (c_1 - ((gy_3 * gh_3) * bw_4));
+    let gx_3 = (rest_1 / (gw_4 * h_2));
+    let w_2 = min(gw_4, (bw_4 - (gw_4 * gx_3)));
+    return ((gy_3 * gh_3) + ((rest_1 - ((gx_3 * gw_4) * h_2)) / w_2));
+}
+
+fn map_index(tx: u32, ty: u32, side: u32) -> u32 {
+    let b = (side / 8u);
+    let _e11 = cluster_index((tx / 8u), (ty / 8u), b, b, GROUP_SIDE, GROUP_SIDE);
+    return (((_e11 * CLUSTER) + ((ty % 8u) * 8u)) + (tx % 8u));
+}
+
+fn map_x(q: u32, side_1: u32) -> u32 {
+    let b_1 = (side_1 / 8u);
+    let _e8 = cluster_x((q / CLUSTER), b_1, b_1, GROUP_SIDE, GROUP_SIDE);
+    return ((_e8 * 8u) + (q % 8u));
+}
+
+fn map_y(q_1: u32, side_2: u32) -> u32 {
+    let b_2 = (side_2 / 8u);
+    let _e8 = cluster_y((q_1 / CLUSTER), b_2, b_2, GROUP_SIDE, GROUP_SIDE);
+    return ((_e8 * 8u) + ((q_1 % CLUSTER) / 8u));
+}
+
 fn vpl_rt2_(flux_1: vec3<f32>, exposure_1: f32, error_bound_1: f32, mode_1: u32) -> f32 {
     let _e6 = intensity_measure((flux_1 * INV_PI), mode_1);
     let _e7 = threshold_range2_(_e6, exposure_1, error_bound_1);
@@ -123,21 +165,21 @@ fn vpl_rt2_(flux_1: vec3<f32>, exposure_1: f32, error_bound_1: f32, mode_1: u32)
 }
 
 fn finite3_(v: vec3<f32>) -> bool {
+    var local: bool;
     var local_1: bool;
-    var local_2: bool;
 
     if (abs(v.x) <= F32_MAX) {
-        local_1 = (abs(v.y) <= F32_MAX);
+        local = (abs(v.y) <= F32_MAX);
+    } else {
+        local = false;
+    }
+    let _e12 = local;
+    if _e12 {
+        local_1 = (abs(v.z) <= F32_MAX);
     } else {
         local_1 = false;
     }
-    let _e12 = local_1;
-    if _e12 {
-        local_2 = (abs(v.z) <= F32_MAX);
-    } else {
-        local_2 = false;
-    }
-    let _e20 = local_2;
+    let _e20 = local_1;
     return _e20;
 }
 
@@ -145,176 +187,116 @@ fn interleave_subset(x: u32, y: u32, period: u32) -> u32 {
     return (((y % period) * period) + (x % period));
 }
 
-fn vpl_record_ok(position_1: vec3<f32>, normal_1: vec3<f32>, flux_2: vec3<f32>) -> bool {
+fn vpl_record_ok(position: vec3<f32>, normal_1: vec3<f32>, flux_2: vec3<f32>) -> bool {
+    var local_2: bool;
     var local_3: bool;
     var local_4: bool;
     var local_5: bool;
     var local_6: bool;
-    var local_7: bool;
 
-    let _e3 = finite3_(position_1);
+    let _e3 = finite3_(position);
     if _e3 {
         let _e6 = finite3_(normal_1);
-        local_3 = _e6;
+        local_2 = _e6;
+    } else {
+        local_2 = false;
+    }
+    let _e8 = local_2;
+    if _e8 {
+        let _e11 = finite3_(flux_2);
+        local_3 = _e11;
     } else {
         local_3 = false;
     }
-    let _e8 = local_3;
-    if _e8 {
-        let _e11 = finite3_(flux_2);
-        local_4 = _e11;
-    } else {
-        local_4 = false;
-    }
-    let _e13 = local_4;
+    let _e13 = local_3;
     if !(_e13) {
         return false;
     }
     if (flux_2.x >= 0f) {
-        local_5 = (flux_2.y >= 0f);
+        local_4 = (flux_2.y >= 0f);
+    } else {
+        local_4 = false;
+    }
+    let _e25 = local_4;
+    if _e25 {
+        local_5 = (flux_2.z >= 0f);
     } else {
         local_5 = false;
     }
-    let _e25 = local_5;
-    if _e25 {
-        local_6 = (flux_2.z >= 0f);
+    let _e32 = local_5;
+    if _e32 {
+        local_6 = ((max(max(flux_2.x, flux_2.y), flux_2.z) * INV_PI) <= MAX_INTENSITY);
     } else {
         local_6 = false;
     }
-    let _e32 = local_6;
-    if _e32 {
-        local_7 = ((max(max(flux_2.x, flux_2.y), flux_2.z) * INV_PI) <= MAX_INTENSITY);
-    } else {
-        local_7 = false;
-    }
-    let _e45 = local_7;
+    let _e45 = local_6;
     return _e45;
 }
 
-fn interleave_slot(tx: u32, ty: u32, size: u32, period_1: u32) -> u32 {
-    let side = (size / period_1);
-    let _e5 = interleave_subset(tx, ty, period_1);
-    return ((((_e5 * side) * side) + ((ty / period_1) * side)) + (tx / period_1));
+fn subset_side(size: u32, period_1: u32) -> u32 {
+    return ((((size / period_1) + 7u) / 8u) * 8u);
 }
 
-fn near_block_tx(q: u32, size_1: u32) -> u32 {
-    return ((((q / NEAR_BLOCK) % (size_1 / 8u)) * 8u) + (q % 8u));
-}
-
-fn near_block_ty(q_1: u32, size_2: u32) -> u32 {
-    return ((((q_1 / NEAR_BLOCK) / (size_2 / 8u)) * 8u) + ((q_1 % NEAR_BLOCK) / 8u));
-}
-
-fn workgroup_box(li_1: u32, p_1: vec3<f32>, has: bool) -> WorkgroupBox {
-    var stride: u32 = 32u;
-
-    wg_lo[li_1] = select(vec3(340282350000000000000000000000000000000f), p_1, has);
-    wg_hi[li_1] = select(vec3(-340282350000000000000000000000000000000f), p_1, has);
-    workgroupBarrier();
-    loop {
-        let _e15 = stride;
-        if (_e15 > 0u) {
-        } else {
-            break;
-        }
-        {
-            let _e18 = stride;
-            if (li_1 < _e18) {
-                let _e24 = wg_lo[li_1];
-                let _e26 = stride;
-                let _e29 = wg_lo[(li_1 + _e26)];
-                wg_lo[li_1] = min(_e24, _e29);
-                let _e35 = wg_hi[li_1];
-                let _e37 = stride;
-                let _e40 = wg_hi[(li_1 + _e37)];
-                wg_hi[li_1] = max(_e35, _e40);
-            }
-            workgroupBarrier();
-        }
-        continuing {
-            let _e42 = stride;
-            stride = (_e42 / 2u);
-        }
-    }
-    let _e47 = wg_lo[0];
-    let _e50 = wg_hi[0];
-    return WorkgroupBox(_e47, _e50);
+fn interleave_slot(tx_1: u32, ty_1: u32, size_1: u32, period_2: u32) -> u32 {
+    let _e4 = subset_side(size_1, period_2);
+    let _e5 = interleave_subset(tx_1, ty_1, period_2);
+    let _e10 = map_index((tx_1 / period_2), (ty_1 / period_2), _e4);
+    return (((_e5 * _e4) * _e4) + _e10);
 }
 
 @compute @workgroup_size(64, 1, 1) 
-fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_index) li: u32) {
-    var position: vec3<f32> = vec3(0f);
-    var lit: bool = false;
+fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     var p: vec3<f32>;
     var normal: vec3<f32>;
     var flux: vec3<f32>;
-    var local: bool;
 
     let q_2 = gid.x;
-    let _e6 = params.count;
-    let inside = (q_2 < _e6);
-    if inside {
-        let _e15 = params.size;
-        let _e16 = near_block_tx(q_2, _e15);
-        let _e19 = params.size;
-        let _e20 = near_block_ty(q_2, _e19);
-        let _e23 = params.size;
-        let i = ((_e20 * _e23) + _e16);
-        let texel = vec2<i32>(i32(_e16), i32(_e20));
-        let _e31 = textureLoad(rsm_position, texel, 0i);
-        p = _e31.xyz;
-        let _e36 = textureLoad(rsm_normal, texel, 0i);
-        normal = _e36.xyz;
-        let _e41 = textureLoad(rsm_flux, texel, 0i);
-        flux = _e41.xyz;
-        let _e46 = params.size;
-        let _e48 = interleave_slot(_e16, _e20, _e46, P);
-        let _e49 = p;
-        let _e50 = normal;
-        let _e51 = flux;
-        let _e52 = vpl_record_ok(_e49, _e50, _e51);
-        if !(_e52) {
-            p = vec3(0f);
-            normal = vec3(0f);
-            flux = vec3(0f);
-        }
-        let _e60 = p;
-        position = _e60;
-        let _e61 = flux;
-        let _e64 = params.scale;
-        flux = (_e61 * _e64);
-        let _e68 = position;
-        let _e70 = normal;
-        let _e73 = flux;
-        lights[_e48] = GpuLight(_e68, LIGHT_VPL, _e70, 0f, vec3(0f), 0f, _e73, 0u);
-        ids[_e48] = i;
-        let _e82 = params.slc;
-        let slc = (_e82 != 0u);
-        let _e87 = flux;
-        let _e90 = params.exposure;
-        let _e93 = params.error_bound;
-        let _e96 = params.mode;
-        let _e97 = vpl_rt2_(_e87, _e90, _e93, _e96);
-        rt2_[_e48] = select(0f, _e97, slc);
-        let _e104 = params.fixed_r2_;
-        r2_[_e48] = select(_e104, 0f, slc);
-        near_slots[q_2] = _e48;
-        let _e109 = flux;
-        lit = any((_e109 != vec3(0f)));
-    }
-    let _e114 = position;
-    let _e115 = lit;
-    let _e116 = workgroup_box(li, _e114, _e115);
-    if (li == 0u) {
-        local = inside;
-    } else {
-        local = false;
-    }
-    let _e122 = local;
-    if _e122 {
-        near_boxes[wg.x] = GpuNearBox(_e116.lo, 0f, _e116.hi, 0f);
-        return;
-    } else {
+    let _e4 = params.count;
+    if (q_2 >= _e4) {
         return;
     }
+    let _e8 = params.size;
+    let _e9 = map_x(q_2, _e8);
+    let _e12 = params.size;
+    let _e13 = map_y(q_2, _e12);
+    let _e16 = params.size;
+    let i = ((_e13 * _e16) + _e9);
+    let texel = vec2<i32>(i32(_e9), i32(_e13));
+    let _e24 = textureLoad(rsm_position, texel, 0i);
+    p = _e24.xyz;
+    let _e29 = textureLoad(rsm_normal, texel, 0i);
+    normal = _e29.xyz;
+    let _e34 = textureLoad(rsm_flux, texel, 0i);
+    flux = _e34.xyz;
+    let _e39 = params.size;
+    let _e41 = interleave_slot(_e9, _e13, _e39, P);
+    let _e42 = p;
+    let _e43 = normal;
+    let _e44 = flux;
+    let _e45 = vpl_record_ok(_e42, _e43, _e44);
+    if !(_e45) {
+        p = vec3(0f);
+        normal = vec3(0f);
+        flux = vec3(0f);
+    }
+    let _e53 = flux;
+    let _e56 = params.scale;
+    flux = (_e53 * _e56);
+    let _e60 = p;
+    let _e62 = normal;
+    let _e65 = flux;
+    lights[_e41] = GpuLight(_e60, LIGHT_VPL, _e62, 0f, vec3(0f), 0f, _e65, 0u);
+    ids[_e41] = i;
+    let _e74 = params.slc;
+    let slc = (_e74 != 0u);
+    let _e79 = flux;
+    let _e82 = params.exposure;
+    let _e85 = params.error_bound;
+    let _e88 = params.mode;
+    let _e89 = vpl_rt2_(_e79, _e82, _e85, _e88);
+    rt2_[_e41] = select(0f, _e89, slc);
+    let _e96 = params.fixed_r2_;
+    r2_[_e41] = select(_e96, 0f, slc);
+    near_slots[q_2] = _e41;
+    return;
 }

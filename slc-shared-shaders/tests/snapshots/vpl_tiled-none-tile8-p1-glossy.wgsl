@@ -15,9 +15,15 @@ struct VplParams {
     lights_per_subset: u32,
     min_d2_: f32,
     near_r2_: f32,
-    near_blocks: u32,
     subset_shift: u32,
+    far_groups_at: u32,
+    near_clusters_at: u32,
+    near_groups_at: u32,
+    box_count: u32,
+    pad0_: u32,
     pad1_: u32,
+    far_grid: vec4<u32>,
+    near_grid: vec4<u32>,
 }
 
 struct GpuMaterial {
@@ -76,6 +82,8 @@ const CULL_RADIUS_SCALE: f32 = 1.000001f;
 const SPHERE_PAD: f32 = 0.00000047683716f;
 const SPHERE_HUGE: f32 = 340282350000000000000000000000000000000f;
 const SPHERE_PAD_ABS: f32 = 0.000000000000000001f;
+const CLUSTER: u32 = 64u;
+const GROUP_SIDE: u32 = 8u;
 const INV_PI: f32 = 0.31830987f;
 const MIN_D2_: f32 = 0.000000000001f;
 const MAX_INTENSITY: f32 = 72057594000000000f;
@@ -89,7 +97,6 @@ const F32_MAX: f32 = 340282350000000000000000000000000000000f;
 const DEPTH_NONE: f32 = 1000000000000000000000000000000f;
 const DEPTH_SIGMA: f32 = 0.05f;
 const COVER_WEIGHT: f32 = 0.1f;
-const NEAR_BLOCK: u32 = 64u;
 const ROULETTE_DEPTH: u32 = 2u;
 const TEMPORAL_MAX_HISTORY: f32 = 32f;
 const TEMPORAL_DEPTH_TOLERANCE: f32 = 0.01f;
@@ -108,6 +115,7 @@ const MAX_TILE_LIGHTS: u32 = 1024u;
 
 var<workgroup> wg_lo: array<vec3<f32>, 64>;
 var<workgroup> wg_hi: array<vec3<f32>, 64>;
+var<workgroup> wg_box: WorkgroupBox;
 @group(0) @binding(0) 
 var<uniform> params: VplParams;
 @group(0) @binding(1) 
@@ -118,12 +126,19 @@ var position_tex: texture_2d<f32>;
 var normal_tex: texture_2d<f32>;
 @group(0) @binding(4) 
 var<storage> lights: array<GpuLight>;
-@group(0) @binding(7) 
-var<storage, read_write> irradiance: array<vec4<f32>>;
 @group(0) @binding(8) 
-var<storage> materials: array<GpuMaterial>;
+var<storage, read_write> irradiance: array<vec4<f32>>;
 @group(0) @binding(9) 
+var<storage> materials: array<GpuMaterial>;
+@group(0) @binding(10) 
 var<storage, read_write> specular: array<vec4<f32>>;
+var<private> pos: vec3<f32>;
+var<private> nrm: vec3<f32>;
+var<private> valid: bool;
+var<private> e: vec3<f32>;
+var<private> kept: u32;
+var<private> s: vec3<f32>;
+var<private> g_1: Glossy;
 
 fn vpl_transfer(n_l: vec3<f32>, n_x: vec3<f32>, v: vec3<f32>, min_d2_: f32) -> f32 {
     let m = max(dot(v, v), max(min_d2_, MIN_D2_));
@@ -267,45 +282,54 @@ fn vpl_far_weight(d2_1: f32, near_r2_1: f32) -> f32 {
     return (1f - _e2);
 }
 
-fn workgroup_box(li_1: u32, p: vec3<f32>, has: bool) -> WorkgroupBox {
+fn workgroup_bounds(li_1: u32, lo: vec3<f32>, hi: vec3<f32>) -> WorkgroupBox {
     var stride: u32 = 32u;
 
-    wg_lo[li_1] = select(vec3(340282350000000000000000000000000000000f), p, has);
-    wg_hi[li_1] = select(vec3(-340282350000000000000000000000000000000f), p, has);
+    wg_lo[li_1] = lo;
+    wg_hi[li_1] = hi;
     workgroupBarrier();
     loop {
-        let _e15 = stride;
-        if (_e15 > 0u) {
+        let _e9 = stride;
+        if (_e9 > 0u) {
         } else {
             break;
         }
         {
-            let _e18 = stride;
-            if (li_1 < _e18) {
-                let _e24 = wg_lo[li_1];
-                let _e26 = stride;
-                let _e29 = wg_lo[(li_1 + _e26)];
-                wg_lo[li_1] = min(_e24, _e29);
-                let _e35 = wg_hi[li_1];
-                let _e37 = stride;
-                let _e40 = wg_hi[(li_1 + _e37)];
-                wg_hi[li_1] = max(_e35, _e40);
+            let _e12 = stride;
+            if (li_1 < _e12) {
+                let _e18 = wg_lo[li_1];
+                let _e20 = stride;
+                let _e23 = wg_lo[(li_1 + _e20)];
+                wg_lo[li_1] = min(_e18, _e23);
+                let _e29 = wg_hi[li_1];
+                let _e31 = stride;
+                let _e34 = wg_hi[(li_1 + _e31)];
+                wg_hi[li_1] = max(_e29, _e34);
             }
             workgroupBarrier();
         }
         continuing {
-            let _e42 = stride;
-            stride = (_e42 / 2u);
+            let _e36 = stride;
+            stride = (_e36 / 2u);
         }
     }
-    let _e47 = wg_lo[0];
-    let _e50 = wg_hi[0];
-    return WorkgroupBox(_e47, _e50);
+    if (li_1 == 0u) {
+        let _e44 = wg_lo[0];
+        let _e47 = wg_hi[0];
+        wg_box = WorkgroupBox(_e44, _e47);
+    }
+    let _e50 = workgroupUniformLoad((&wg_box));
+    return _e50;
+}
+
+fn workgroup_box(li_2: u32, p_1: vec3<f32>, has: bool) -> WorkgroupBox {
+    let _e9 = workgroup_bounds(li_2, select(vec3(340282350000000000000000000000000000000f), p_1, has), select(vec3(-340282350000000000000000000000000000000f), p_1, has));
+    return _e9;
 }
 
 fn surface_at(texel: vec2<i32>) -> vec4<f32> {
-    let p_1 = textureLoad(position_tex, texel, 0i);
-    return select(vec4(0f), vec4<f32>(p_1.xyz, 1f), (p_1.w > 0f));
+    let p_2 = textureLoad(position_tex, texel, 0i);
+    return select(vec4(0f), vec4<f32>(p_2.xyz, 1f), (p_2.w > 0f));
 }
 
 fn gbuffer_at(i: u32) -> GbTexel {
@@ -323,11 +347,11 @@ fn gbuffer_at(i: u32) -> GbTexel {
     } else {
         local_6 = false;
     }
-    let valid = local_6;
+    let valid_1 = local_6;
     let _e30 = view.eye;
     let v_6 = (_e12.xyz - _e30);
-    let position = vec4<f32>(_e12.xyz, select(0f, 1f, valid));
-    let normal = select(vec4<f32>(0f, 0f, 0f, 1000000000000000000000000000000f), vec4<f32>((n_4 / vec3(sqrt(len2_1))), sqrt(dot(v_6, v_6))), valid);
+    let position = vec4<f32>(_e12.xyz, select(0f, 1f, valid_1));
+    let normal = select(vec4<f32>(0f, 0f, 0f, 1000000000000000000000000000000f), vec4<f32>((n_4 / vec3(sqrt(len2_1))), sqrt(dot(v_6, v_6))), valid_1);
     return GbTexel(position, normal);
 }
 
@@ -342,10 +366,10 @@ fn glossy_at(i_1: u32, x: vec3<f32>) -> Glossy {
     return Glossy(m_1, normalize((_e23 - x)), _e29);
 }
 
-fn glossy_term(g_1: Glossy, l_4: GpuLight, n_3: vec3<f32>, v_5: vec3<f32>, t: f32) -> vec3<f32> {
+fn glossy_term(g: Glossy, l_4: GpuLight, n_3: vec3<f32>, v_5: vec3<f32>, t: f32) -> vec3<f32> {
     var local_7: bool;
 
-    if !(!(g_1.on)) {
+    if !(!(g.on)) {
         local_7 = (t <= 0f);
     } else {
         local_7 = true;
@@ -354,20 +378,41 @@ fn glossy_term(g_1: Glossy, l_4: GpuLight, n_3: vec3<f32>, v_5: vec3<f32>, t: f3
     if _e13 {
         return vec3(0f);
     }
-    let _e30 = specular_correction(g_1.m.albedo, g_1.m.metallic, g_1.m.f0_, g_1.m.f90_, g_1.m.alpha, n_3, g_1.v, normalize(-(v_5)));
+    let _e30 = specular_correction(g.m.albedo, g.m.metallic, g.m.f0_, g.m.f90_, g.m.alpha, n_3, g.v, normalize(-(v_5)));
     return ((l_4.intensity * _e30) * t);
+}
+
+fn shade_light(j_1: u32) {
+    let l_5 = lights[j_1];
+    let _e5 = pos;
+    let v_7 = (_e5 - l_5.p0_);
+    let _e11 = params.near_r2_;
+    let _e12 = vpl_far_weight(dot(v_7, v_7), _e11);
+    if (_e12 > 0f) {
+        let _e17 = nrm;
+        let _e20 = params.min_d2_;
+        let _e21 = vpl_transfer(l_5.p1_, _e17, v_7, _e20);
+        let t_3 = (_e21 * _e12);
+        let _e24 = e;
+        e = (_e24 + (l_5.intensity * t_3));
+        let _e29 = s;
+        let _e31 = g_1;
+        let _e33 = nrm;
+        let _e34 = glossy_term(_e31, l_5, _e33, v_7, t_3);
+        s = (_e29 + _e34);
+        let _e37 = kept;
+        kept = (_e37 + 1u);
+        return;
+    } else {
+        return;
+    }
 }
 
 @compute @workgroup_size(8, 8, 1) 
 fn main(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id) lid: vec3<u32>, @builtin(local_invocation_index) li: u32) {
     var local: bool;
-    var pos: vec4<f32> = vec4(0f);
-    var nrm: vec3<f32> = vec3(0f);
+    var p: vec4<f32> = vec4(0f);
     var local_1: bool;
-    var e: vec3<f32> = vec3(0f);
-    var kept: u32 = 0u;
-    var s: vec3<f32> = vec3(0f);
-    var g: Glossy;
     var j: u32;
 
     let sub = wg.z;
@@ -384,74 +429,63 @@ fn main(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id) lid:
     let _e38 = params.width;
     let pix = ((py * _e38) + px);
     if inside {
-        let _e47 = gbuffer_at(pix);
-        pos = _e47.position;
-        nrm = _e47.normal.xyz;
+        let _e44 = gbuffer_at(pix);
+        p = _e44.position;
+        nrm = _e44.normal.xyz;
     }
+    let _e50 = p;
+    pos = _e50.xyz;
     if inside {
-        let _e54 = pos.w;
-        local_1 = (_e54 > 0f);
+        let _e56 = p.w;
+        local_1 = (_e56 > 0f);
     } else {
         local_1 = false;
     }
-    let valid_1 = local_1;
-    let _e59 = pos;
-    let _e61 = workgroup_box(li, _e59.xyz, valid_1);
-    let lo = _e61.lo;
-    let hi = _e61.hi;
-    let _e66 = params.subset_shift;
-    let _e68 = shifted_subset(sub, _e66, P);
-    let _e71 = params.lights_per_subset;
-    let base_6 = (_e68 * _e71);
-    if valid_1 {
-        let _e82 = pos;
-        let _e84 = glossy_at(pix, _e82.xyz);
-        g = _e84;
+    let _e60 = local_1;
+    valid = _e60;
+    let _e62 = valid;
+    if _e62 {
+        let _e65 = pos;
+        let _e66 = glossy_at(pix, _e65);
+        g_1 = _e66;
     }
-    if valid_1 {
+    let _e68 = pos;
+    let _e70 = valid;
+    let _e71 = workgroup_box(li, _e68, _e70);
+    let _e74 = params.subset_shift;
+    let _e76 = shifted_subset(sub, _e74, P);
+    let _e78 = valid;
+    if _e78 {
+        let _e81 = params.lights_per_subset;
+        let base_6 = (_e76 * _e81);
         j = base_6;
         loop {
-            let _e86 = j;
-            let _e89 = params.lights_per_subset;
-            if (_e86 < (base_6 + _e89)) {
+            let _e84 = j;
+            let _e87 = params.lights_per_subset;
+            if (_e84 < (base_6 + _e87)) {
             } else {
                 break;
             }
             {
-                let _e93 = j;
-                let l_5 = lights[_e93];
-                let _e96 = pos;
-                let v_7 = (_e96.xyz - l_5.p0_);
-                let _e103 = params.near_r2_;
-                let _e104 = vpl_far_weight(dot(v_7, v_7), _e103);
-                if (_e104 > 0f) {
-                    let _e108 = nrm;
-                    let _e111 = params.min_d2_;
-                    let _e112 = vpl_transfer(l_5.p1_, _e108, v_7, _e111);
-                    let t_3 = (_e112 * _e104);
-                    let _e114 = e;
-                    e = (_e114 + (l_5.intensity * t_3));
-                    let _e118 = s;
-                    let _e119 = g;
-                    let _e120 = nrm;
-                    let _e121 = glossy_term(_e119, l_5, _e120, v_7, t_3);
-                    s = (_e118 + _e121);
-                    let _e123 = kept;
-                    kept = (_e123 + 1u);
+                let _e91 = j;
+                let _e94 = lights[_e91].intensity;
+                if any((_e94 != vec3(0f))) {
+                    let _e99 = j;
+                    shade_light(_e99);
                 }
             }
             continuing {
-                let _e127 = j;
-                j = (_e127 + 1u);
+                let _e101 = j;
+                j = (_e101 + 1u);
             }
         }
     }
     if inside {
-        let _e131 = e;
-        let _e132 = kept;
-        irradiance[pix] = vec4<f32>(_e131, f32(_e132));
-        let _e137 = s;
-        specular[pix] = vec4<f32>(_e137, 0f);
+        let _e106 = e;
+        let _e108 = kept;
+        irradiance[pix] = vec4<f32>(_e106, f32(_e108));
+        let _e114 = s;
+        specular[pix] = vec4<f32>(_e114, 0f);
         return;
     } else {
         return;

@@ -15,9 +15,22 @@ struct VplParams {
     lights_per_subset: u32,
     min_d2_: f32,
     near_r2_: f32,
-    near_blocks: u32,
     subset_shift: u32,
+    far_groups_at: u32,
+    near_clusters_at: u32,
+    near_groups_at: u32,
+    box_count: u32,
+    pad0_: u32,
     pad1_: u32,
+    far_grid: vec4<u32>,
+    near_grid: vec4<u32>,
+}
+
+struct GpuBox {
+    lo: vec3<f32>,
+    pad0_: f32,
+    hi: vec3<f32>,
+    pad1_: f32,
 }
 
 struct GpuMaterial {
@@ -76,6 +89,8 @@ const CULL_RADIUS_SCALE: f32 = 1.000001f;
 const SPHERE_PAD: f32 = 0.00000047683716f;
 const SPHERE_HUGE: f32 = 340282350000000000000000000000000000000f;
 const SPHERE_PAD_ABS: f32 = 0.000000000000000001f;
+const CLUSTER: u32 = 64u;
+const GROUP_SIDE: u32 = 8u;
 const INV_PI: f32 = 0.31830987f;
 const MIN_D2_: f32 = 0.000000000001f;
 const MAX_INTENSITY: f32 = 72057594000000000f;
@@ -89,7 +104,6 @@ const F32_MAX: f32 = 340282350000000000000000000000000000000f;
 const DEPTH_NONE: f32 = 1000000000000000000000000000000f;
 const DEPTH_SIGMA: f32 = 0.05f;
 const COVER_WEIGHT: f32 = 0.1f;
-const NEAR_BLOCK: u32 = 64u;
 const ROULETTE_DEPTH: u32 = 2u;
 const TEMPORAL_MAX_HISTORY: f32 = 32f;
 const TEMPORAL_DEPTH_TOLERANCE: f32 = 0.01f;
@@ -108,6 +122,7 @@ const MAX_TILE_LIGHTS: u32 = 1024u;
 
 var<workgroup> wg_lo: array<vec3<f32>, 64>;
 var<workgroup> wg_hi: array<vec3<f32>, 64>;
+var<workgroup> wg_box: WorkgroupBox;
 @group(0) @binding(0) 
 var<uniform> params: VplParams;
 @group(0) @binding(1) 
@@ -123,13 +138,24 @@ var<storage> rt2_2: array<f32>;
 @group(0) @binding(6) 
 var<storage> r2_3: array<f32>;
 @group(0) @binding(7) 
-var<storage, read_write> irradiance: array<vec4<f32>>;
+var<storage> boxes: array<GpuBox>;
 @group(0) @binding(8) 
-var<storage> materials: array<GpuMaterial>;
+var<storage, read_write> irradiance: array<vec4<f32>>;
 @group(0) @binding(9) 
+var<storage> materials: array<GpuMaterial>;
+@group(0) @binding(10) 
 var<storage, read_write> specular: array<vec4<f32>>;
-var<workgroup> tile_count: atomic<u32>;
+var<private> pos: vec3<f32>;
+var<private> nrm: vec3<f32>;
+var<private> valid: bool;
+var<private> e: vec3<f32>;
+var<private> kept: u32;
+var<private> s: vec3<f32>;
+var<private> g_4: Glossy;
 var<workgroup> tile_lights: array<u32, 1024>;
+var<workgroup> list_count: atomic<u32>;
+var<workgroup> cluster_hits: array<u32, 64>;
+var<workgroup> hit_count: atomic<u32>;
 
 fn slc_weight(rt2_: f32, d2_: f32) -> f32 {
     if (d2_ <= rt2_) {
@@ -152,6 +178,71 @@ fn sphere_overlaps_aabb(c: vec3<f32>, r: f32, bmin: vec3<f32>, bmax: vec3<f32>) 
     return (dot(v_6, v_6) <= (r * r));
 }
 
+fn groups_across(bw: u32, gw: u32) -> u32 {
+    return (((bw + gw) - 1u) / gw);
+}
+
+fn group_count(bw_1: u32, bh: u32, gw_1: u32, gh: u32) -> u32 {
+    let _e4 = groups_across(bw_1, gw_1);
+    let _e5 = groups_across(bh, gh);
+    return (_e4 * _e5);
+}
+
+fn group_first(g: u32, bw_2: u32, bh_1: u32, gw_2: u32, gh_1: u32) -> u32 {
+    let _e5 = groups_across(bw_2, gw_2);
+    let gx = (g % _e5);
+    let gy = (g / _e5);
+    let h_1 = min(gh_1, (bh_1 - (gh_1 * gy)));
+    return (((gy * gh_1) * bw_2) + ((gx * gw_2) * h_1));
+}
+
+fn group_clusters(g_1: u32, bw_3: u32, bh_2: u32, gw_3: u32, gh_2: u32) -> u32 {
+    let _e5 = groups_across(bw_3, gw_3);
+    let gx_1 = (g_1 % _e5);
+    let gy_1 = (g_1 / _e5);
+    return (min(gw_3, (bw_3 - (gw_3 * gx_1))) * min(gh_2, (bh_2 - (gh_2 * gy_1))));
+}
+
+fn box_overlaps_box(lo1_: vec3<f32>, hi1_: vec3<f32>, lo2_: vec3<f32>, hi2_: vec3<f32>) -> bool {
+    var local_2: bool;
+    var local_3: bool;
+    var local_4: bool;
+    var local_5: bool;
+    var local_6: bool;
+
+    if (lo1_.x <= hi2_.x) {
+        local_2 = (lo2_.x <= hi1_.x);
+    } else {
+        local_2 = false;
+    }
+    let _e13 = local_2;
+    if _e13 {
+        local_3 = (lo1_.y <= hi2_.y);
+    } else {
+        local_3 = false;
+    }
+    let _e20 = local_3;
+    if _e20 {
+        local_4 = (lo2_.y <= hi1_.y);
+    } else {
+        local_4 = false;
+    }
+    let _e27 = local_4;
+    if _e27 {
+        local_5 = (lo1_.z <= hi2_.z);
+    } else {
+        local_5 = false;
+    }
+    let _e34 = local_5;
+    if _e34 {
+        local_6 = (lo2_.z <= hi1_.z);
+    } else {
+        local_6 = false;
+    }
+    let _e41 = local_6;
+    return _e41;
+}
+
 fn vpl_transfer(n_l: vec3<f32>, n_x: vec3<f32>, v: vec3<f32>, min_d2_: f32) -> f32 {
     let m = max(dot(v, v), max(min_d2_, MIN_D2_));
     return (((max(dot(n_l, v), 0f) * max(-(dot(n_x, v)), 0f)) * INV_PI) / (m * m));
@@ -172,14 +263,14 @@ fn smith_root(cos_: f32, alpha_1: f32) -> f32 {
 }
 
 fn smith_visibility(n_l_1: f32, n_v: f32, alpha_2: f32) -> f32 {
-    var local_2: bool;
+    var local_7: bool;
 
     if !((n_l_1 <= 0f)) {
-        local_2 = (n_v <= 0f);
+        local_7 = (n_v <= 0f);
     } else {
-        local_2 = true;
+        local_7 = true;
     }
-    let _e11 = local_2;
+    let _e11 = local_7;
     if _e11 {
         return 0f;
     }
@@ -189,9 +280,9 @@ fn smith_visibility(n_l_1: f32, n_v: f32, alpha_2: f32) -> f32 {
 }
 
 fn fresnel_schlick(f0_: vec3<f32>, f90_: f32, v_h: f32) -> vec3<f32> {
-    let c_1 = saturate((1f - v_h));
-    let c2_ = (c_1 * c_1);
-    return (f0_ + ((vec3<f32>(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_1)));
+    let c_2 = saturate((1f - v_h));
+    let c2_ = (c_2 * c_2);
+    return (f0_ + ((vec3<f32>(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_2)));
 }
 
 fn specular_fresnel(base: vec3<f32>, metallic: f32, f0_d: vec3<f32>, f90_d: f32, v_h_1: f32) -> vec3<f32> {
@@ -206,34 +297,34 @@ fn diffuse_brdf(base_1: vec3<f32>, metallic_1: f32, f0_d_1: vec3<f32>, f90_d_1: 
 }
 
 fn half_cosine(v_1: vec3<f32>, l: vec3<f32>) -> f32 {
-    let h = (v_1 + l);
-    let len2_ = dot(h, h);
+    let h_2 = (v_1 + l);
+    let len2_ = dot(h_2, h_2);
     if (len2_ <= 0f) {
         return 0f;
     }
-    return saturate((dot(v_1, h) / sqrt(len2_)));
+    return saturate((dot(v_1, h_2) / sqrt(len2_)));
 }
 
 fn specular_brdf(base_2: vec3<f32>, metallic_2: f32, f0_d_2: vec3<f32>, f90_d_2: f32, alpha_3: f32, n: vec3<f32>, v_2: vec3<f32>, l_1: vec3<f32>) -> vec3<f32> {
-    var local_3: bool;
+    var local_8: bool;
 
     let n_l_2 = dot(n, l_1);
     let n_v_1 = dot(n, v_2);
     if !((n_l_2 <= 0f)) {
-        local_3 = (n_v_1 <= 0f);
+        local_8 = (n_v_1 <= 0f);
     } else {
-        local_3 = true;
+        local_8 = true;
     }
-    let _e18 = local_3;
+    let _e18 = local_8;
     if _e18 {
         return vec3<f32>(0f, 0f, 0f);
     }
     let hs = (v_2 + l_1);
     let inv = (1f / sqrt(dot(hs, hs)));
-    let h_1 = (hs * inv);
-    let c_2 = cross(n, h_1);
-    let _e32 = ggx_d(dot(n, h_1), dot(c_2, c_2), alpha_3);
-    let _e34 = specular_fresnel(base_2, metallic_2, f0_d_2, f90_d_2, dot(v_2, h_1));
+    let h_3 = (hs * inv);
+    let c_3 = cross(n, h_3);
+    let _e32 = ggx_d(dot(n, h_3), dot(c_3, c_3), alpha_3);
+    let _e34 = specular_fresnel(base_2, metallic_2, f0_d_2, f90_d_2, dot(v_2, h_3));
     let _e35 = smith_visibility(n_l_2, n_v_1, alpha_3);
     return (_e34 * (_e32 * _e35));
 }
@@ -259,21 +350,21 @@ fn specular_correction(base_5: vec3<f32>, metallic_5: f32, f0_d_4: vec3<f32>, f9
 }
 
 fn has_specular(metallic_6: f32, f0_d_5: vec3<f32>, f90_d_5: f32) -> bool {
-    var local_4: bool;
-    var local_5: bool;
+    var local_9: bool;
+    var local_10: bool;
 
     if !((metallic_6 > 0f)) {
-        local_4 = (f90_d_5 > 0f);
+        local_9 = (f90_d_5 > 0f);
     } else {
-        local_4 = true;
+        local_9 = true;
     }
-    let _e11 = local_4;
+    let _e11 = local_9;
     if !(_e11) {
-        local_5 = (max(max(f0_d_5.x, f0_d_5.y), f0_d_5.z) > 0f);
+        local_10 = (max(max(f0_d_5.x, f0_d_5.y), f0_d_5.z) > 0f);
     } else {
-        local_5 = true;
+        local_10 = true;
     }
-    let _e23 = local_5;
+    let _e23 = local_10;
     return _e23;
 }
 
@@ -301,49 +392,62 @@ fn vpl_far_slc_share(rt2_1: f32, r2_2: f32, d2_4: f32, near_r2_2: f32) -> f32 {
     return select(0f, (_e4 * _e5), (_e7 & (_e4 > 0f)));
 }
 
-fn workgroup_box(li_1: u32, p: vec3<f32>, has: bool) -> WorkgroupBox {
+fn workgroup_bounds(li_1: u32, lo: vec3<f32>, hi: vec3<f32>) -> WorkgroupBox {
     var stride: u32 = 32u;
 
-    wg_lo[li_1] = select(vec3(340282350000000000000000000000000000000f), p, has);
-    wg_hi[li_1] = select(vec3(-340282350000000000000000000000000000000f), p, has);
+    wg_lo[li_1] = lo;
+    wg_hi[li_1] = hi;
     workgroupBarrier();
     loop {
-        let _e15 = stride;
-        if (_e15 > 0u) {
+        let _e9 = stride;
+        if (_e9 > 0u) {
         } else {
             break;
         }
         {
-            let _e18 = stride;
-            if (li_1 < _e18) {
-                let _e24 = wg_lo[li_1];
-                let _e26 = stride;
-                let _e29 = wg_lo[(li_1 + _e26)];
-                wg_lo[li_1] = min(_e24, _e29);
-                let _e35 = wg_hi[li_1];
-                let _e37 = stride;
-                let _e40 = wg_hi[(li_1 + _e37)];
-                wg_hi[li_1] = max(_e35, _e40);
+            let _e12 = stride;
+            if (li_1 < _e12) {
+                let _e18 = wg_lo[li_1];
+                let _e20 = stride;
+                let _e23 = wg_lo[(li_1 + _e20)];
+                wg_lo[li_1] = min(_e18, _e23);
+                let _e29 = wg_hi[li_1];
+                let _e31 = stride;
+                let _e34 = wg_hi[(li_1 + _e31)];
+                wg_hi[li_1] = max(_e29, _e34);
             }
             workgroupBarrier();
         }
         continuing {
-            let _e42 = stride;
-            stride = (_e42 / 2u);
+            let _e36 = stride;
+            stride = (_e36 / 2u);
         }
     }
-    let _e47 = wg_lo[0];
-    let _e50 = wg_hi[0];
-    return WorkgroupBox(_e47, _e50);
+    if (li_1 == 0u) {
+        let _e44 = wg_lo[0];
+        let _e47 = wg_hi[0];
+        wg_box = WorkgroupBox(_e44, _e47);
+    }
+    let _e50 = workgroupUniformLoad((&wg_box));
+    return _e50;
+}
+
+fn workgroup_box(li_2: u32, p_1: vec3<f32>, has: bool) -> WorkgroupBox {
+    let _e9 = workgroup_bounds(li_2, select(vec3(340282350000000000000000000000000000000f), p_1, has), select(vec3(-340282350000000000000000000000000000000f), p_1, has));
+    return _e9;
+}
+
+fn box_is_empty(b: WorkgroupBox) -> bool {
+    return (b.lo.x > b.hi.x);
 }
 
 fn surface_at(texel: vec2<i32>) -> vec4<f32> {
-    let p_1 = textureLoad(position_tex, texel, 0i);
-    return select(vec4(0f), vec4<f32>(p_1.xyz, 1f), (p_1.w > 0f));
+    let p_2 = textureLoad(position_tex, texel, 0i);
+    return select(vec4(0f), vec4<f32>(p_2.xyz, 1f), (p_2.w > 0f));
 }
 
 fn gbuffer_at(i: u32) -> GbTexel {
-    var local_6: bool;
+    var local_11: bool;
 
     let _e3 = view.width;
     let _e8 = view.width;
@@ -353,15 +457,15 @@ fn gbuffer_at(i: u32) -> GbTexel {
     let n_4 = _e15.xyz;
     let len2_1 = dot(n_4, n_4);
     if (_e12.w > 0f) {
-        local_6 = (len2_1 > 0f);
+        local_11 = (len2_1 > 0f);
     } else {
-        local_6 = false;
+        local_11 = false;
     }
-    let valid = local_6;
+    let valid_1 = local_11;
     let _e30 = view.eye;
     let v_7 = (_e12.xyz - _e30);
-    let position = vec4<f32>(_e12.xyz, select(0f, 1f, valid));
-    let normal = select(vec4<f32>(0f, 0f, 0f, 1000000000000000000000000000000f), vec4<f32>((n_4 / vec3(sqrt(len2_1))), sqrt(dot(v_7, v_7))), valid);
+    let position = vec4<f32>(_e12.xyz, select(0f, 1f, valid_1));
+    let normal = select(vec4<f32>(0f, 0f, 0f, 1000000000000000000000000000000f), vec4<f32>((n_4 / vec3(sqrt(len2_1))), sqrt(dot(v_7, v_7))), valid_1);
     return GbTexel(position, normal);
 }
 
@@ -376,35 +480,178 @@ fn glossy_at(i_1: u32, x: vec3<f32>) -> Glossy {
     return Glossy(m_1, normalize((_e23 - x)), _e29);
 }
 
-fn glossy_term(g_1: Glossy, l_4: GpuLight, n_3: vec3<f32>, v_5: vec3<f32>, t: f32) -> vec3<f32> {
-    var local_7: bool;
+fn glossy_term(g_2: Glossy, l_4: GpuLight, n_3: vec3<f32>, v_5: vec3<f32>, t: f32) -> vec3<f32> {
+    var local_12: bool;
 
-    if !(!(g_1.on)) {
-        local_7 = (t <= 0f);
+    if !(!(g_2.on)) {
+        local_12 = (t <= 0f);
     } else {
-        local_7 = true;
+        local_12 = true;
     }
-    let _e13 = local_7;
+    let _e13 = local_12;
     if _e13 {
         return vec3(0f);
     }
-    let _e30 = specular_correction(g_1.m.albedo, g_1.m.metallic, g_1.m.f0_, g_1.m.f90_, g_1.m.alpha, n_3, g_1.v, normalize(-(v_5)));
+    let _e30 = specular_correction(g_2.m.albedo, g_2.m.metallic, g_2.m.f0_, g_2.m.f90_, g_2.m.alpha, n_3, g_2.v, normalize(-(v_5)));
     return ((l_4.intensity * _e30) * t);
+}
+
+fn shade_light(j: u32) {
+    let l_5 = lights[j];
+    let _e5 = pos;
+    let v_8 = (_e5 - l_5.p0_);
+    let _e10 = rt2_2[j];
+    let _e13 = r2_3[j];
+    let _e17 = params.near_r2_;
+    let _e18 = vpl_far_slc_share(_e10, _e13, dot(v_8, v_8), _e17);
+    if (_e18 > 0f) {
+        let _e23 = nrm;
+        let _e26 = params.min_d2_;
+        let _e27 = vpl_transfer(l_5.p1_, _e23, v_8, _e26);
+        let t_3 = (_e27 * _e18);
+        let _e30 = e;
+        e = (_e30 + (l_5.intensity * t_3));
+        let _e35 = s;
+        let _e37 = g_4;
+        let _e39 = nrm;
+        let _e40 = glossy_term(_e37, l_5, _e39, v_8, t_3);
+        s = (_e35 + _e40);
+        let _e43 = kept;
+        kept = (_e43 + 1u);
+        return;
+    } else {
+        return;
+    }
+}
+
+fn cluster_slot(c_1: u32, k: u32) -> u32 {
+    return ((c_1 * CLUSTER) + k);
+}
+
+fn cull_r2_of(slot: u32) -> f32 {
+    let _e3 = r2_3[slot];
+    return _e3;
+}
+
+fn shade_list(count: u32) {
+    var k_1: u32 = 0u;
+
+    let _e2 = valid;
+    if _e2 {
+        loop {
+            let _e5 = k_1;
+            if (_e5 < count) {
+            } else {
+                break;
+            }
+            {
+                let _e8 = k_1;
+                let _e10 = tile_lights[_e8];
+                shade_light(_e10);
+            }
+            continuing {
+                let _e12 = k_1;
+                k_1 = (_e12 + 1u);
+            }
+        }
+        return;
+    } else {
+        return;
+    }
+}
+
+fn cull_tile(li_3: u32, lo_1: vec3<f32>, hi_1: vec3<f32>, grid: vec4<u32>, clusters_at: u32, groups_at: u32) {
+    var g_3: u32 = 0u;
+    var h: u32;
+
+    if (li_3 == 0u) {
+        atomicStore((&list_count), 0u);
+    }
+    let _e14 = group_count(grid.x, grid.y, grid.z, grid.w);
+    loop {
+        let _e17 = g_3;
+        if (_e17 < _e14) {
+        } else {
+            break;
+        }
+        {
+            let _e20 = g_3;
+            let gb = boxes[(groups_at + _e20)];
+            let _e26 = box_overlaps_box(gb.lo, gb.hi, lo_1, hi_1);
+            if !(_e26) {
+                continue;
+            }
+            let _e28 = g_3;
+            let _e33 = group_first(_e28, grid.x, grid.y, grid.z, grid.w);
+            let first = (clusters_at + _e33);
+            let _e35 = g_3;
+            let _e40 = group_clusters(_e35, grid.x, grid.y, grid.z, grid.w);
+            if (li_3 == 0u) {
+                atomicStore((&hit_count), 0u);
+            }
+            workgroupBarrier();
+            if (li_3 < _e40) {
+                let cb = boxes[(first + li_3)];
+                let _e52 = box_overlaps_box(cb.lo, cb.hi, lo_1, hi_1);
+                if _e52 {
+                    let _e56 = atomicAdd((&hit_count), 1u);
+                    cluster_hits[_e56] = (first + li_3);
+                }
+            }
+            let _e60 = workgroupUniformLoad((&hit_count));
+            h = 0u;
+            loop {
+                let _e63 = h;
+                if (_e63 < _e60) {
+                } else {
+                    break;
+                }
+                {
+                    let _e66 = workgroupUniformLoad((&list_count));
+                    if ((_e66 + CLUSTER) > MAX_TILE_LIGHTS) {
+                        shade_list(_e66);
+                        workgroupBarrier();
+                        if (li_3 == 0u) {
+                            atomicStore((&list_count), 0u);
+                        }
+                        workgroupBarrier();
+                    }
+                    let _e76 = h;
+                    let _e78 = cluster_hits[_e76];
+                    let _e79 = cluster_slot(_e78, li_3);
+                    let l_6 = lights[_e79];
+                    if any((l_6.intensity != vec3(0f))) {
+                        let _e89 = cull_r2_of(_e79);
+                        let _e90 = cull_radius(_e89);
+                        let _e91 = sphere_overlaps_aabb(l_6.p0_, _e90, lo_1, hi_1);
+                        if _e91 {
+                            let _e95 = atomicAdd((&list_count), 1u);
+                            tile_lights[_e95] = _e79;
+                        }
+                    }
+                }
+                continuing {
+                    let _e98 = h;
+                    h = (_e98 + 1u);
+                }
+            }
+            workgroupBarrier();
+        }
+        continuing {
+            let _e101 = g_3;
+            g_3 = (_e101 + 1u);
+        }
+    }
+    let _e104 = workgroupUniformLoad((&list_count));
+    shade_list(_e104);
+    return;
 }
 
 @compute @workgroup_size(8, 8, 1) 
 fn main(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id) lid: vec3<u32>, @builtin(local_invocation_index) li: u32) {
     var local: bool;
-    var pos: vec4<f32> = vec4(0f);
-    var nrm: vec3<f32> = vec3(0f);
+    var p: vec4<f32> = vec4(0f);
     var local_1: bool;
-    var e: vec3<f32> = vec3(0f);
-    var kept: u32 = 0u;
-    var s: vec3<f32> = vec3(0f);
-    var g: Glossy;
-    var first: u32 = 0u;
-    var j: u32;
-    var k: u32;
 
     let sub = wg.z;
     let px = ((sub % P) + (((wg.x * TILE) + lid.x) * P));
@@ -420,129 +667,45 @@ fn main(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id) lid:
     let _e38 = params.width;
     let pix = ((py * _e38) + px);
     if inside {
-        let _e47 = gbuffer_at(pix);
-        pos = _e47.position;
-        nrm = _e47.normal.xyz;
+        let _e44 = gbuffer_at(pix);
+        p = _e44.position;
+        nrm = _e44.normal.xyz;
     }
+    let _e50 = p;
+    pos = _e50.xyz;
     if inside {
-        let _e54 = pos.w;
-        local_1 = (_e54 > 0f);
+        let _e56 = p.w;
+        local_1 = (_e56 > 0f);
     } else {
         local_1 = false;
     }
-    let valid_1 = local_1;
-    let _e59 = pos;
-    let _e61 = workgroup_box(li, _e59.xyz, valid_1);
-    let lo = _e61.lo;
-    let hi = _e61.hi;
-    let _e66 = params.subset_shift;
-    let _e68 = shifted_subset(sub, _e66, P);
-    let _e71 = params.lights_per_subset;
-    let base_6 = (_e68 * _e71);
-    if valid_1 {
-        let _e82 = pos;
-        let _e84 = glossy_at(pix, _e82.xyz);
-        g = _e84;
+    let _e60 = local_1;
+    valid = _e60;
+    let _e62 = valid;
+    if _e62 {
+        let _e65 = pos;
+        let _e66 = glossy_at(pix, _e65);
+        g_4 = _e66;
     }
-    loop {
-        let _e87 = first;
-        let _e90 = params.lights_per_subset;
-        if (_e87 < _e90) {
-        } else {
-            break;
-        }
-        {
-            let _e92 = first;
-            let _e97 = params.lights_per_subset;
-            let end = min((_e92 + MAX_TILE_LIGHTS), _e97);
-            if (li == 0u) {
-                atomicStore((&tile_count), 0u);
-            }
-            workgroupBarrier();
-            let _e103 = first;
-            j = (_e103 + li);
-            loop {
-                let _e106 = j;
-                if (_e106 < end) {
-                } else {
-                    break;
-                }
-                {
-                    let _e109 = j;
-                    let _e113 = lights[(base_6 + _e109)].p0_;
-                    let _e115 = j;
-                    let _e118 = r2_3[(base_6 + _e115)];
-                    let _e119 = cull_radius(_e118);
-                    let _e120 = sphere_overlaps_aabb(_e113, _e119, lo, hi);
-                    if _e120 {
-                        let _e123 = atomicAdd((&tile_count), 1u);
-                        if (_e123 < MAX_TILE_LIGHTS) {
-                            let _e128 = j;
-                            tile_lights[_e123] = _e128;
-                        }
-                    }
-                }
-                continuing {
-                    let _e129 = j;
-                    j = (_e129 + THREADS);
-                }
-            }
-            let _e133 = workgroupUniformLoad((&tile_count));
-            let count = min(_e133, MAX_TILE_LIGHTS);
-            if valid_1 {
-                k = 0u;
-                loop {
-                    let _e138 = k;
-                    if (_e138 < count) {
-                    } else {
-                        break;
-                    }
-                    {
-                        let _e141 = k;
-                        let _e143 = tile_lights[_e141];
-                        let j_1 = (base_6 + _e143);
-                        let l_5 = lights[j_1];
-                        let _e148 = pos;
-                        let v_8 = (_e148.xyz - l_5.p0_);
-                        let _e154 = rt2_2[j_1];
-                        let _e157 = r2_3[j_1];
-                        let _e161 = params.near_r2_;
-                        let _e162 = vpl_far_slc_share(_e154, _e157, dot(v_8, v_8), _e161);
-                        if (_e162 > 0f) {
-                            let _e166 = nrm;
-                            let _e169 = params.min_d2_;
-                            let _e170 = vpl_transfer(l_5.p1_, _e166, v_8, _e169);
-                            let t_3 = (_e170 * _e162);
-                            let _e172 = e;
-                            e = (_e172 + (l_5.intensity * t_3));
-                            let _e176 = s;
-                            let _e177 = g;
-                            let _e178 = nrm;
-                            let _e179 = glossy_term(_e177, l_5, _e178, v_8, t_3);
-                            s = (_e176 + _e179);
-                            let _e181 = kept;
-                            kept = (_e181 + 1u);
-                        }
-                    }
-                    continuing {
-                        let _e185 = k;
-                        k = (_e185 + 1u);
-                    }
-                }
-            }
-            workgroupBarrier();
-        }
-        continuing {
-            let _e187 = first;
-            first = (_e187 + MAX_TILE_LIGHTS);
-        }
+    let _e68 = pos;
+    let _e70 = valid;
+    let _e71 = workgroup_box(li, _e68, _e70);
+    let _e74 = params.subset_shift;
+    let _e76 = shifted_subset(sub, _e74, P);
+    let _e77 = box_is_empty(_e71);
+    if !(_e77) {
+        let grid_1 = params.far_grid;
+        let _e86 = params.lights_per_subset;
+        let _e92 = params.far_groups_at;
+        let _e97 = group_count(grid_1.x, grid_1.y, grid_1.z, grid_1.w);
+        cull_tile(li, _e71.lo, _e71.hi, grid_1, (_e76 * (_e86 / CLUSTER)), (_e92 + (_e76 * _e97)));
     }
     if inside {
-        let _e192 = e;
-        let _e193 = kept;
-        irradiance[pix] = vec4<f32>(_e192, f32(_e193));
-        let _e198 = s;
-        specular[pix] = vec4<f32>(_e198, 0f);
+        let _e103 = e;
+        let _e105 = kept;
+        irradiance[pix] = vec4<f32>(_e103, f32(_e105));
+        let _e111 = s;
+        specular[pix] = vec4<f32>(_e111, 0f);
         return;
     } else {
         return;

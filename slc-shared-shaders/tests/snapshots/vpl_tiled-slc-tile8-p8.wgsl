@@ -15,9 +15,22 @@ struct VplParams {
     lights_per_subset: u32,
     min_d2_: f32,
     near_r2_: f32,
-    near_blocks: u32,
     subset_shift: u32,
+    far_groups_at: u32,
+    near_clusters_at: u32,
+    near_groups_at: u32,
+    box_count: u32,
+    pad0_: u32,
     pad1_: u32,
+    far_grid: vec4<u32>,
+    near_grid: vec4<u32>,
+}
+
+struct GpuBox {
+    lo: vec3<f32>,
+    pad0_: f32,
+    hi: vec3<f32>,
+    pad1_: f32,
 }
 
 struct ViewParams {
@@ -61,6 +74,8 @@ const CULL_RADIUS_SCALE: f32 = 1.000001f;
 const SPHERE_PAD: f32 = 0.00000047683716f;
 const SPHERE_HUGE: f32 = 340282350000000000000000000000000000000f;
 const SPHERE_PAD_ABS: f32 = 0.000000000000000001f;
+const CLUSTER: u32 = 64u;
+const GROUP_SIDE: u32 = 8u;
 const INV_PI: f32 = 0.31830987f;
 const MIN_D2_: f32 = 0.000000000001f;
 const MAX_INTENSITY: f32 = 72057594000000000f;
@@ -74,7 +89,6 @@ const F32_MAX: f32 = 340282350000000000000000000000000000000f;
 const DEPTH_NONE: f32 = 1000000000000000000000000000000f;
 const DEPTH_SIGMA: f32 = 0.05f;
 const COVER_WEIGHT: f32 = 0.1f;
-const NEAR_BLOCK: u32 = 64u;
 const ROULETTE_DEPTH: u32 = 2u;
 const TEMPORAL_MAX_HISTORY: f32 = 32f;
 const TEMPORAL_DEPTH_TOLERANCE: f32 = 0.01f;
@@ -93,6 +107,7 @@ const MAX_TILE_LIGHTS: u32 = 1024u;
 
 var<workgroup> wg_lo: array<vec3<f32>, 64>;
 var<workgroup> wg_hi: array<vec3<f32>, 64>;
+var<workgroup> wg_box: WorkgroupBox;
 @group(0) @binding(0) 
 var<uniform> params: VplParams;
 @group(0) @binding(1) 
@@ -108,9 +123,18 @@ var<storage> rt2_2: array<f32>;
 @group(0) @binding(6) 
 var<storage> r2_3: array<f32>;
 @group(0) @binding(7) 
+var<storage> boxes: array<GpuBox>;
+@group(0) @binding(8) 
 var<storage, read_write> irradiance: array<vec4<f32>>;
-var<workgroup> tile_count: atomic<u32>;
+var<private> pos: vec3<f32>;
+var<private> nrm: vec3<f32>;
+var<private> valid: bool;
+var<private> e: vec3<f32>;
+var<private> kept: u32;
 var<workgroup> tile_lights: array<u32, 1024>;
+var<workgroup> list_count: atomic<u32>;
+var<workgroup> cluster_hits: array<u32, 64>;
+var<workgroup> hit_count: atomic<u32>;
 
 fn slc_weight(rt2_: f32, d2_: f32) -> f32 {
     if (d2_ <= rt2_) {
@@ -131,6 +155,71 @@ fn sphere_overlaps_aabb(c: vec3<f32>, r: f32, bmin: vec3<f32>, bmax: vec3<f32>) 
     let q = clamp(c, bmin, bmax);
     let v_1 = (q - c);
     return (dot(v_1, v_1) <= (r * r));
+}
+
+fn groups_across(bw: u32, gw: u32) -> u32 {
+    return (((bw + gw) - 1u) / gw);
+}
+
+fn group_count(bw_1: u32, bh: u32, gw_1: u32, gh: u32) -> u32 {
+    let _e4 = groups_across(bw_1, gw_1);
+    let _e5 = groups_across(bh, gh);
+    return (_e4 * _e5);
+}
+
+fn group_first(g: u32, bw_2: u32, bh_1: u32, gw_2: u32, gh_1: u32) -> u32 {
+    let _e5 = groups_across(bw_2, gw_2);
+    let gx = (g % _e5);
+    let gy = (g / _e5);
+    let h_1 = min(gh_1, (bh_1 - (gh_1 * gy)));
+    return (((gy * gh_1) * bw_2) + ((gx * gw_2) * h_1));
+}
+
+fn group_clusters(g_1: u32, bw_3: u32, bh_2: u32, gw_3: u32, gh_2: u32) -> u32 {
+    let _e5 = groups_across(bw_3, gw_3);
+    let gx_1 = (g_1 % _e5);
+    let gy_1 = (g_1 / _e5);
+    return (min(gw_3, (bw_3 - (gw_3 * gx_1))) * min(gh_2, (bh_2 - (gh_2 * gy_1))));
+}
+
+fn box_overlaps_box(lo1_: vec3<f32>, hi1_: vec3<f32>, lo2_: vec3<f32>, hi2_: vec3<f32>) -> bool {
+    var local_2: bool;
+    var local_3: bool;
+    var local_4: bool;
+    var local_5: bool;
+    var local_6: bool;
+
+    if (lo1_.x <= hi2_.x) {
+        local_2 = (lo2_.x <= hi1_.x);
+    } else {
+        local_2 = false;
+    }
+    let _e13 = local_2;
+    if _e13 {
+        local_3 = (lo1_.y <= hi2_.y);
+    } else {
+        local_3 = false;
+    }
+    let _e20 = local_3;
+    if _e20 {
+        local_4 = (lo2_.y <= hi1_.y);
+    } else {
+        local_4 = false;
+    }
+    let _e27 = local_4;
+    if _e27 {
+        local_5 = (lo1_.z <= hi2_.z);
+    } else {
+        local_5 = false;
+    }
+    let _e34 = local_5;
+    if _e34 {
+        local_6 = (lo2_.z <= hi1_.z);
+    } else {
+        local_6 = false;
+    }
+    let _e41 = local_6;
+    return _e41;
 }
 
 fn vpl_transfer(n_l: vec3<f32>, n_x: vec3<f32>, v: vec3<f32>, min_d2_: f32) -> f32 {
@@ -162,49 +251,62 @@ fn vpl_far_slc_share(rt2_1: f32, r2_2: f32, d2_4: f32, near_r2_2: f32) -> f32 {
     return select(0f, (_e4 * _e5), (_e7 & (_e4 > 0f)));
 }
 
-fn workgroup_box(li_1: u32, p: vec3<f32>, has: bool) -> WorkgroupBox {
+fn workgroup_bounds(li_1: u32, lo: vec3<f32>, hi: vec3<f32>) -> WorkgroupBox {
     var stride: u32 = 32u;
 
-    wg_lo[li_1] = select(vec3(340282350000000000000000000000000000000f), p, has);
-    wg_hi[li_1] = select(vec3(-340282350000000000000000000000000000000f), p, has);
+    wg_lo[li_1] = lo;
+    wg_hi[li_1] = hi;
     workgroupBarrier();
     loop {
-        let _e15 = stride;
-        if (_e15 > 0u) {
+        let _e9 = stride;
+        if (_e9 > 0u) {
         } else {
             break;
         }
         {
-            let _e18 = stride;
-            if (li_1 < _e18) {
-                let _e24 = wg_lo[li_1];
-                let _e26 = stride;
-                let _e29 = wg_lo[(li_1 + _e26)];
-                wg_lo[li_1] = min(_e24, _e29);
-                let _e35 = wg_hi[li_1];
-                let _e37 = stride;
-                let _e40 = wg_hi[(li_1 + _e37)];
-                wg_hi[li_1] = max(_e35, _e40);
+            let _e12 = stride;
+            if (li_1 < _e12) {
+                let _e18 = wg_lo[li_1];
+                let _e20 = stride;
+                let _e23 = wg_lo[(li_1 + _e20)];
+                wg_lo[li_1] = min(_e18, _e23);
+                let _e29 = wg_hi[li_1];
+                let _e31 = stride;
+                let _e34 = wg_hi[(li_1 + _e31)];
+                wg_hi[li_1] = max(_e29, _e34);
             }
             workgroupBarrier();
         }
         continuing {
-            let _e42 = stride;
-            stride = (_e42 / 2u);
+            let _e36 = stride;
+            stride = (_e36 / 2u);
         }
     }
-    let _e47 = wg_lo[0];
-    let _e50 = wg_hi[0];
-    return WorkgroupBox(_e47, _e50);
+    if (li_1 == 0u) {
+        let _e44 = wg_lo[0];
+        let _e47 = wg_hi[0];
+        wg_box = WorkgroupBox(_e44, _e47);
+    }
+    let _e50 = workgroupUniformLoad((&wg_box));
+    return _e50;
+}
+
+fn workgroup_box(li_2: u32, p_1: vec3<f32>, has: bool) -> WorkgroupBox {
+    let _e9 = workgroup_bounds(li_2, select(vec3(340282350000000000000000000000000000000f), p_1, has), select(vec3(-340282350000000000000000000000000000000f), p_1, has));
+    return _e9;
+}
+
+fn box_is_empty(b: WorkgroupBox) -> bool {
+    return (b.lo.x > b.hi.x);
 }
 
 fn surface_at(texel: vec2<i32>) -> vec4<f32> {
-    let p_1 = textureLoad(position_tex, texel, 0i);
-    return select(vec4(0f), vec4<f32>(p_1.xyz, 1f), (p_1.w > 0f));
+    let p_2 = textureLoad(position_tex, texel, 0i);
+    return select(vec4(0f), vec4<f32>(p_2.xyz, 1f), (p_2.w > 0f));
 }
 
 fn gbuffer_at(i: u32) -> GbTexel {
-    var local_2: bool;
+    var local_7: bool;
 
     let _e3 = view.width;
     let _e8 = view.width;
@@ -214,29 +316,169 @@ fn gbuffer_at(i: u32) -> GbTexel {
     let n = _e15.xyz;
     let len2_ = dot(n, n);
     if (_e12.w > 0f) {
-        local_2 = (len2_ > 0f);
+        local_7 = (len2_ > 0f);
     } else {
-        local_2 = false;
+        local_7 = false;
     }
-    let valid = local_2;
+    let valid_1 = local_7;
     let _e30 = view.eye;
     let v_2 = (_e12.xyz - _e30);
-    let position = vec4<f32>(_e12.xyz, select(0f, 1f, valid));
-    let normal = select(vec4<f32>(0f, 0f, 0f, 1000000000000000000000000000000f), vec4<f32>((n / vec3(sqrt(len2_))), sqrt(dot(v_2, v_2))), valid);
+    let position = vec4<f32>(_e12.xyz, select(0f, 1f, valid_1));
+    let normal = select(vec4<f32>(0f, 0f, 0f, 1000000000000000000000000000000f), vec4<f32>((n / vec3(sqrt(len2_))), sqrt(dot(v_2, v_2))), valid_1);
     return GbTexel(position, normal);
+}
+
+fn shade_light(j: u32) {
+    let l = lights[j];
+    let _e5 = pos;
+    let v_3 = (_e5 - l.p0_);
+    let _e10 = rt2_2[j];
+    let _e13 = r2_3[j];
+    let _e17 = params.near_r2_;
+    let _e18 = vpl_far_slc_share(_e10, _e13, dot(v_3, v_3), _e17);
+    if (_e18 > 0f) {
+        let _e23 = nrm;
+        let _e26 = params.min_d2_;
+        let _e27 = vpl_transfer(l.p1_, _e23, v_3, _e26);
+        let t_1 = (_e27 * _e18);
+        let _e30 = e;
+        e = (_e30 + (l.intensity * t_1));
+        let _e35 = kept;
+        kept = (_e35 + 1u);
+        return;
+    } else {
+        return;
+    }
+}
+
+fn cluster_slot(c_1: u32, k: u32) -> u32 {
+    return ((c_1 * CLUSTER) + k);
+}
+
+fn cull_r2_of(slot: u32) -> f32 {
+    let _e3 = r2_3[slot];
+    return _e3;
+}
+
+fn shade_list(count: u32) {
+    var k_1: u32 = 0u;
+
+    let _e2 = valid;
+    if _e2 {
+        loop {
+            let _e5 = k_1;
+            if (_e5 < count) {
+            } else {
+                break;
+            }
+            {
+                let _e8 = k_1;
+                let _e10 = tile_lights[_e8];
+                shade_light(_e10);
+            }
+            continuing {
+                let _e12 = k_1;
+                k_1 = (_e12 + 1u);
+            }
+        }
+        return;
+    } else {
+        return;
+    }
+}
+
+fn cull_tile(li_3: u32, lo_1: vec3<f32>, hi_1: vec3<f32>, grid: vec4<u32>, clusters_at: u32, groups_at: u32) {
+    var g_2: u32 = 0u;
+    var h: u32;
+
+    if (li_3 == 0u) {
+        atomicStore((&list_count), 0u);
+    }
+    let _e14 = group_count(grid.x, grid.y, grid.z, grid.w);
+    loop {
+        let _e17 = g_2;
+        if (_e17 < _e14) {
+        } else {
+            break;
+        }
+        {
+            let _e20 = g_2;
+            let gb = boxes[(groups_at + _e20)];
+            let _e26 = box_overlaps_box(gb.lo, gb.hi, lo_1, hi_1);
+            if !(_e26) {
+                continue;
+            }
+            let _e28 = g_2;
+            let _e33 = group_first(_e28, grid.x, grid.y, grid.z, grid.w);
+            let first = (clusters_at + _e33);
+            let _e35 = g_2;
+            let _e40 = group_clusters(_e35, grid.x, grid.y, grid.z, grid.w);
+            if (li_3 == 0u) {
+                atomicStore((&hit_count), 0u);
+            }
+            workgroupBarrier();
+            if (li_3 < _e40) {
+                let cb = boxes[(first + li_3)];
+                let _e52 = box_overlaps_box(cb.lo, cb.hi, lo_1, hi_1);
+                if _e52 {
+                    let _e56 = atomicAdd((&hit_count), 1u);
+                    cluster_hits[_e56] = (first + li_3);
+                }
+            }
+            let _e60 = workgroupUniformLoad((&hit_count));
+            h = 0u;
+            loop {
+                let _e63 = h;
+                if (_e63 < _e60) {
+                } else {
+                    break;
+                }
+                {
+                    let _e66 = workgroupUniformLoad((&list_count));
+                    if ((_e66 + CLUSTER) > MAX_TILE_LIGHTS) {
+                        shade_list(_e66);
+                        workgroupBarrier();
+                        if (li_3 == 0u) {
+                            atomicStore((&list_count), 0u);
+                        }
+                        workgroupBarrier();
+                    }
+                    let _e76 = h;
+                    let _e78 = cluster_hits[_e76];
+                    let _e79 = cluster_slot(_e78, li_3);
+                    let l_1 = lights[_e79];
+                    if any((l_1.intensity != vec3(0f))) {
+                        let _e89 = cull_r2_of(_e79);
+                        let _e90 = cull_radius(_e89);
+                        let _e91 = sphere_overlaps_aabb(l_1.p0_, _e90, lo_1, hi_1);
+                        if _e91 {
+                            let _e95 = atomicAdd((&list_count), 1u);
+                            tile_lights[_e95] = _e79;
+                        }
+                    }
+                }
+                continuing {
+                    let _e98 = h;
+                    h = (_e98 + 1u);
+                }
+            }
+            workgroupBarrier();
+        }
+        continuing {
+            let _e101 = g_2;
+            g_2 = (_e101 + 1u);
+        }
+    }
+    let _e104 = workgroupUniformLoad((&list_count));
+    shade_list(_e104);
+    return;
 }
 
 @compute @workgroup_size(8, 8, 1) 
 fn main(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id) lid: vec3<u32>, @builtin(local_invocation_index) li: u32) {
     var local: bool;
-    var pos: vec4<f32> = vec4(0f);
-    var nrm: vec3<f32> = vec3(0f);
+    var p: vec4<f32> = vec4(0f);
     var local_1: bool;
-    var e: vec3<f32> = vec3(0f);
-    var kept: u32 = 0u;
-    var first: u32 = 0u;
-    var j: u32;
-    var k: u32;
 
     let sub = wg.z;
     let px = ((sub % P) + (((wg.x * TILE) + lid.x) * P));
@@ -252,117 +494,37 @@ fn main(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id) lid:
     let _e38 = params.width;
     let pix = ((py * _e38) + px);
     if inside {
-        let _e47 = gbuffer_at(pix);
-        pos = _e47.position;
-        nrm = _e47.normal.xyz;
+        let _e44 = gbuffer_at(pix);
+        p = _e44.position;
+        nrm = _e44.normal.xyz;
     }
+    let _e50 = p;
+    pos = _e50.xyz;
     if inside {
-        let _e54 = pos.w;
-        local_1 = (_e54 > 0f);
+        let _e56 = p.w;
+        local_1 = (_e56 > 0f);
     } else {
         local_1 = false;
     }
-    let valid_1 = local_1;
-    let _e59 = pos;
-    let _e61 = workgroup_box(li, _e59.xyz, valid_1);
-    let lo = _e61.lo;
-    let hi = _e61.hi;
-    let _e66 = params.subset_shift;
-    let _e68 = shifted_subset(sub, _e66, P);
-    let _e71 = params.lights_per_subset;
-    let base = (_e68 * _e71);
-    loop {
-        let _e80 = first;
-        let _e83 = params.lights_per_subset;
-        if (_e80 < _e83) {
-        } else {
-            break;
-        }
-        {
-            let _e85 = first;
-            let _e90 = params.lights_per_subset;
-            let end = min((_e85 + MAX_TILE_LIGHTS), _e90);
-            if (li == 0u) {
-                atomicStore((&tile_count), 0u);
-            }
-            workgroupBarrier();
-            let _e96 = first;
-            j = (_e96 + li);
-            loop {
-                let _e99 = j;
-                if (_e99 < end) {
-                } else {
-                    break;
-                }
-                {
-                    let _e102 = j;
-                    let _e106 = lights[(base + _e102)].p0_;
-                    let _e108 = j;
-                    let _e111 = r2_3[(base + _e108)];
-                    let _e112 = cull_radius(_e111);
-                    let _e113 = sphere_overlaps_aabb(_e106, _e112, lo, hi);
-                    if _e113 {
-                        let _e116 = atomicAdd((&tile_count), 1u);
-                        if (_e116 < MAX_TILE_LIGHTS) {
-                            let _e121 = j;
-                            tile_lights[_e116] = _e121;
-                        }
-                    }
-                }
-                continuing {
-                    let _e122 = j;
-                    j = (_e122 + THREADS);
-                }
-            }
-            let _e126 = workgroupUniformLoad((&tile_count));
-            let count = min(_e126, MAX_TILE_LIGHTS);
-            if valid_1 {
-                k = 0u;
-                loop {
-                    let _e131 = k;
-                    if (_e131 < count) {
-                    } else {
-                        break;
-                    }
-                    {
-                        let _e134 = k;
-                        let _e136 = tile_lights[_e134];
-                        let j_1 = (base + _e136);
-                        let l = lights[j_1];
-                        let _e141 = pos;
-                        let v_3 = (_e141.xyz - l.p0_);
-                        let _e147 = rt2_2[j_1];
-                        let _e150 = r2_3[j_1];
-                        let _e154 = params.near_r2_;
-                        let _e155 = vpl_far_slc_share(_e147, _e150, dot(v_3, v_3), _e154);
-                        if (_e155 > 0f) {
-                            let _e159 = nrm;
-                            let _e162 = params.min_d2_;
-                            let _e163 = vpl_transfer(l.p1_, _e159, v_3, _e162);
-                            let t_1 = (_e163 * _e155);
-                            let _e165 = e;
-                            e = (_e165 + (l.intensity * t_1));
-                            let _e169 = kept;
-                            kept = (_e169 + 1u);
-                        }
-                    }
-                    continuing {
-                        let _e173 = k;
-                        k = (_e173 + 1u);
-                    }
-                }
-            }
-            workgroupBarrier();
-        }
-        continuing {
-            let _e175 = first;
-            first = (_e175 + MAX_TILE_LIGHTS);
-        }
+    let _e60 = local_1;
+    valid = _e60;
+    let _e62 = pos;
+    let _e64 = valid;
+    let _e65 = workgroup_box(li, _e62, _e64);
+    let _e68 = params.subset_shift;
+    let _e70 = shifted_subset(sub, _e68, P);
+    let _e71 = box_is_empty(_e65);
+    if !(_e71) {
+        let grid_1 = params.far_grid;
+        let _e80 = params.lights_per_subset;
+        let _e86 = params.far_groups_at;
+        let _e91 = group_count(grid_1.x, grid_1.y, grid_1.z, grid_1.w);
+        cull_tile(li, _e65.lo, _e65.hi, grid_1, (_e70 * (_e80 / CLUSTER)), (_e86 + (_e70 * _e91)));
     }
     if inside {
-        let _e180 = e;
-        let _e181 = kept;
-        irradiance[pix] = vec4<f32>(_e180, f32(_e181));
+        let _e97 = e;
+        let _e99 = kept;
+        irradiance[pix] = vec4<f32>(_e97, f32(_e99));
         return;
     } else {
         return;

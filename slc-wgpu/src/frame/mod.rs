@@ -48,6 +48,9 @@
 
 mod compose;
 mod raster;
+mod sequence;
+
+pub use sequence::{FrameSequence, StageSpread};
 
 use crate::kernel::check_kernels;
 use crate::passes::indirect::TILE;
@@ -69,7 +72,7 @@ use slc_scene::backend::Timing;
 use slc_scene::image::Image;
 use slc_scene::scene::{Camera, Material, PrimaryLight, Scene};
 use slc_scene::temporal::{TemporalSettings, TemporalView};
-use slc_scene::vpl::{PERIOD, VplInputs, VplSettings, VplStats};
+use slc_scene::vpl::{PERIOD, VplInputs, VplSettings, VplStats, WorkCounts};
 use slc_shared_shaders::{Features, Kernel, LightTypes, OutputFormat};
 use std::time::Instant;
 
@@ -440,25 +443,9 @@ impl GpuVplFrame {
             (true, Some(r)) => r,
             _ => &mut self.indirect,
         };
-        let (gb, rsm) = (&self.raster.gbuffer.colors, &self.raster.rsm.colors);
-        let inputs = IndirectInputs {
-            gbuffer: GBuffer {
-                surface: Surface::Position(&gb[0].view),
-                normal: &gb[1].view,
-                eye: self.raster.camera().position,
-            },
-            vpls: VplInput::Rsm {
-                position: &rsm[0].view,
-                normal: &rsm[1].view,
-                flux: &rsm[2].view,
-            },
-            output: &self.irradiance.view,
-            materials: self.specular.as_ref().map(|sp| IndirectMaterials {
-                table: &self.raster.material_table,
-                specular: &sp.view,
-            }),
-        };
-        let Recording { mut uploads, dispatches: indirect } = pass.dispatches(&inputs, st)?;
+        let inputs = frame_inputs(&self.raster, &self.irradiance, self.specular.as_ref());
+        let Recording { mut uploads, dispatches: indirect } =
+            pass.dispatches(&inputs, st, false)?;
         self.recorded_min_distance = st.min_distance;
         let mut steps = vec![
             Step::Raster(Stage::GBuffer),
@@ -613,7 +600,7 @@ impl GpuVplFrame {
             // The CPU's "direct" includes its shadow rays.
             direct_ms: sum(&[Stage::ShadowMap, Stage::Direct]),
             rsm_ms: sum(&[Stage::Rsm, Stage::VplGeneration]),
-            shading_ms: sum(&[Stage::LightUpdate, Stage::Shading, Stage::NearField]),
+            shading_ms: sum(&[Stage::LightUpdate, Stage::Bounds, Stage::Shading, Stage::NearField]),
             denoise_ms: sum(&[
                 Stage::Denoise,
                 Stage::IrradianceExport,
@@ -647,6 +634,47 @@ impl GpuVplFrame {
     /// The primary light's direct irradiance of the last frame, per pixel.
     pub fn read_direct(&self) -> Result<Vec<Vec3>, GpuError> {
         self.compose.read_direct(&self.gpu)
+    }
+
+    /// The culling work of a frame of `settings`, far field then near
+    /// field (slc-scene's [`WorkCounts`]): the frame's G-buffer and RSM
+    /// rasterized, then its indirect pass recorded with counting kernels
+    /// ([`IndirectPass::count_work`]). Never timed; nothing is composed.
+    pub fn count_work(
+        &mut self,
+        settings: &IndirectSettings,
+    ) -> Result<(WorkCounts, WorkCounts), GpuError> {
+        let mut encoder = self.gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor {
+            label: Some("slc frame inputs"),
+        });
+        for stage in [Stage::GBuffer, Stage::Rsm] {
+            self.raster.record(&mut encoder, stage, None);
+        }
+        self.gpu.queue.submit([encoder.finish()]);
+        let inputs = frame_inputs(&self.raster, &self.irradiance, self.specular.as_ref());
+        self.indirect.count_work(&inputs, settings)
+    }
+}
+
+/// The indirect pass's inputs in a frame: the rasterized G-buffer and RSM,
+/// the frame's irradiance target and, in a glossy frame, its material
+/// table and specular target.
+fn frame_inputs<'a>(
+    raster: &'a Raster,
+    irradiance: &'a Target,
+    specular: Option<&'a Target>,
+) -> IndirectInputs<'a> {
+    let (gb, rsm) = (&raster.gbuffer.colors, &raster.rsm.colors);
+    IndirectInputs {
+        gbuffer: GBuffer {
+            surface: Surface::Position(&gb[0].view),
+            normal: &gb[1].view,
+            eye: raster.camera().position,
+        },
+        vpls: VplInput::Rsm { position: &rsm[0].view, normal: &rsm[1].view, flux: &rsm[2].view },
+        output: &irradiance.view,
+        materials: specular
+            .map(|sp| IndirectMaterials { table: &raster.material_table, specular: &sp.view }),
     }
 }
 

@@ -19,11 +19,17 @@ struct VplParams {
     uint lights_per_subset;
     float min_d2_;
     float near_r2_;
-    uint near_blocks;
     uint subset_shift;
+    uint far_groups_at;
+    uint near_clusters_at;
+    uint near_groups_at;
+    uint box_count;
+    uint pad0_;
     uint pad1_;
+    uvec4 far_grid;
+    uvec4 near_grid;
 };
-struct GpuNearBox {
+struct GpuBox {
     vec3 lo;
     float pad0_;
     vec3 hi;
@@ -80,6 +86,8 @@ const float CULL_RADIUS_SCALE = 1.000001;
 const float SPHERE_PAD = 4.7683716e-7;
 const float SPHERE_HUGE = 3.4028235e38;
 const float SPHERE_PAD_ABS = 1e-18;
+const uint CLUSTER = 64u;
+const uint GROUP_SIDE = 8u;
 const float INV_PI = 0.31830987;
 const float MIN_D2_ = 1e-12;
 const float MAX_INTENSITY = 7.2057594e16;
@@ -93,7 +101,6 @@ const float F32_MAX = 3.4028235e38;
 const float DEPTH_NONE = 1e30;
 const float DEPTH_SIGMA = 0.05;
 const float COVER_WEIGHT = 0.1;
-const uint NEAR_BLOCK = 64u;
 const uint ROULETTE_DEPTH = 2u;
 const float TEMPORAL_MAX_HISTORY = 32.0;
 const float TEMPORAL_DEPTH_TOLERANCE = 0.01;
@@ -108,11 +115,13 @@ const uint P = 8u;
 const uint TILE = 8u;
 const uint THREADS = 64u;
 const uint BOX_THREADS = 64u;
-const uint NEAR_CHUNK = 32u;
+const uint MAX_TILE_LIGHTS = 1024u;
 
 shared vec3 wg_lo[64];
 
 shared vec3 wg_hi[64];
+
+shared WorkgroupBox wg_box;
 
 layout(std140) uniform VplParams_block_0Compute { VplParams _group_0_binding_0_cs; };
 
@@ -122,25 +131,43 @@ uniform sampler2D _group_0_binding_2_cs;
 
 uniform sampler2D _group_0_binding_3_cs;
 
-layout(std430) readonly buffer type_8_block_2Compute { GpuLight _group_0_binding_4_cs[]; };
+layout(std430) readonly buffer type_9_block_2Compute { GpuLight _group_0_binding_4_cs[]; };
 
-layout(std430) readonly buffer type_9_block_3Compute { uint _group_0_binding_5_cs[]; };
+layout(std430) readonly buffer type_10_block_3Compute { uint _group_0_binding_5_cs[]; };
 
-layout(std430) readonly buffer type_10_block_4Compute { GpuNearBox _group_0_binding_6_cs[]; };
+layout(std430) readonly buffer type_11_block_4Compute { GpuBox _group_0_binding_6_cs[]; };
 
-layout(std430) readonly buffer type_4_block_5Compute { float _group_0_binding_7_cs[]; };
+layout(std430) readonly buffer type_5_block_5Compute { float _group_0_binding_7_cs[]; };
 
-layout(std430) readonly buffer type_4_block_6Compute { float _group_0_binding_8_cs[]; };
+layout(std430) readonly buffer type_5_block_6Compute { float _group_0_binding_8_cs[]; };
 
-layout(std430) buffer type_11_block_7Compute { vec4 _group_0_binding_9_cs[]; };
+layout(std430) buffer type_12_block_7Compute { vec4 _group_0_binding_9_cs[]; };
 
-layout(std430) readonly buffer type_12_block_8Compute { GpuMaterial _group_0_binding_10_cs[]; };
+layout(std430) readonly buffer type_13_block_8Compute { GpuMaterial _group_0_binding_10_cs[]; };
 
-layout(std430) buffer type_11_block_9Compute { vec4 _group_0_binding_11_cs[]; };
+layout(std430) buffer type_12_block_9Compute { vec4 _group_0_binding_11_cs[]; };
 
-shared uint light_count;
+vec3 pos = vec3(0.0);
 
-shared uint light_list[2048];
+vec3 nrm = vec3(0.0);
+
+bool valid = false;
+
+vec3 e = vec3(0.0);
+
+uint kept = 0u;
+
+vec3 s = vec3(0.0);
+
+Glossy g_4 = Glossy(GpuMaterial(vec3(0.0), 0.0, vec3(0.0), 0.0, vec3(0.0), 0.0), vec3(0.0), false);
+
+shared uint tile_lights[1024];
+
+shared uint list_count;
+
+shared uint cluster_hits[64];
+
+shared uint hit_count;
 
 
 float to_f32_(uint u) {
@@ -168,9 +195,73 @@ bool sphere_overlaps_aabb(vec3 c, float r, vec3 bmin, vec3 bmax) {
     return (dot(v_6, v_6) <= (r * r));
 }
 
+uint groups_across(uint bw, uint gw) {
+    return (((bw + gw) - 1u) / gw);
+}
+
+uint group_count(uint bw_1, uint bh, uint gw_1, uint gh) {
+    uint _e4 = groups_across(bw_1, gw_1);
+    uint _e5 = groups_across(bh, gh);
+    return (_e4 * _e5);
+}
+
+uint group_first(uint g, uint bw_2, uint bh_1, uint gw_2, uint gh_1) {
+    uint _e5 = groups_across(bw_2, gw_2);
+    uint gx = (g % _e5);
+    uint gy = (g / _e5);
+    uint h_1 = min(gh_1, (bh_1 - (gh_1 * gy)));
+    return (((gy * gh_1) * bw_2) + ((gx * gw_2) * h_1));
+}
+
+uint group_clusters(uint g_1, uint bw_3, uint bh_2, uint gw_3, uint gh_2) {
+    uint _e5 = groups_across(bw_3, gw_3);
+    uint gx_1 = (g_1 % _e5);
+    uint gy_1 = (g_1 / _e5);
+    return (min(gw_3, (bw_3 - (gw_3 * gx_1))) * min(gh_2, (bh_2 - (gh_2 * gy_1))));
+}
+
+bool box_overlaps_box(vec3 lo1_, vec3 hi1_, vec3 lo2_, vec3 hi2_) {
+    bool local_2 = false;
+    bool local_3 = false;
+    bool local_4 = false;
+    bool local_5 = false;
+    bool local_6 = false;
+    if ((lo1_.x <= hi2_.x)) {
+        local_2 = (lo2_.x <= hi1_.x);
+    } else {
+        local_2 = false;
+    }
+    bool _e13 = local_2;
+    if (_e13) {
+        local_3 = (lo1_.y <= hi2_.y);
+    } else {
+        local_3 = false;
+    }
+    bool _e20 = local_3;
+    if (_e20) {
+        local_4 = (lo2_.y <= hi1_.y);
+    } else {
+        local_4 = false;
+    }
+    bool _e27 = local_4;
+    if (_e27) {
+        local_5 = (lo1_.z <= hi2_.z);
+    } else {
+        local_5 = false;
+    }
+    bool _e34 = local_5;
+    if (_e34) {
+        local_6 = (lo2_.z <= hi1_.z);
+    } else {
+        local_6 = false;
+    }
+    bool _e41 = local_6;
+    return _e41;
+}
+
 float vpl_transfer(vec3 n_l, vec3 n_x, vec3 v, float min_d2_) {
-    float m_2 = max(dot(v, v), max(min_d2_, MIN_D2_));
-    return (((max(dot(n_l, v), 0.0) * max(-(dot(n_x, v)), 0.0)) * INV_PI) / (m_2 * m_2));
+    float m_1 = max(dot(v, v), max(min_d2_, MIN_D2_));
+    return (((max(dot(n_l, v), 0.0) * max(-(dot(n_x, v)), 0.0)) * INV_PI) / (m_1 * m_1));
 }
 
 float ggx_d(float cos_h, float sin2_h, float alpha) {
@@ -188,13 +279,13 @@ float smith_root(float cos_, float alpha_1) {
 }
 
 float smith_visibility(float n_l_1, float n_v, float alpha_2) {
-    bool local_5 = false;
+    bool local_7 = false;
     if (!((n_l_1 <= 0.0))) {
-        local_5 = (n_v <= 0.0);
+        local_7 = (n_v <= 0.0);
     } else {
-        local_5 = true;
+        local_7 = true;
     }
-    bool _e11 = local_5;
+    bool _e11 = local_7;
     if (_e11) {
         return 0.0;
     }
@@ -204,9 +295,9 @@ float smith_visibility(float n_l_1, float n_v, float alpha_2) {
 }
 
 vec3 fresnel_schlick(vec3 f0_, float f90_, float v_h) {
-    float c_1 = clamp((1.0 - v_h), 0.0, 1.0);
-    float c2_ = (c_1 * c_1);
-    return (f0_ + ((vec3(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_1)));
+    float c_2 = clamp((1.0 - v_h), 0.0, 1.0);
+    float c2_ = (c_2 * c_2);
+    return (f0_ + ((vec3(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_2)));
 }
 
 vec3 specular_fresnel(vec3 base, float metallic, vec3 f0_d, float f90_d, float v_h_1) {
@@ -221,33 +312,33 @@ vec3 diffuse_brdf(vec3 base_1, float metallic_1, vec3 f0_d_1, float f90_d_1, flo
 }
 
 float half_cosine(vec3 v_1, vec3 l) {
-    vec3 h = (v_1 + l);
-    float len2_ = dot(h, h);
+    vec3 h_2 = (v_1 + l);
+    float len2_ = dot(h_2, h_2);
     if ((len2_ <= 0.0)) {
         return 0.0;
     }
-    return clamp((dot(v_1, h) / sqrt(len2_)), 0.0, 1.0);
+    return clamp((dot(v_1, h_2) / sqrt(len2_)), 0.0, 1.0);
 }
 
 vec3 specular_brdf(vec3 base_2, float metallic_2, vec3 f0_d_2, float f90_d_2, float alpha_3, vec3 n, vec3 v_2, vec3 l_1) {
-    bool local_6 = false;
+    bool local_8 = false;
     float n_l_2 = dot(n, l_1);
     float n_v_1 = dot(n, v_2);
     if (!((n_l_2 <= 0.0))) {
-        local_6 = (n_v_1 <= 0.0);
+        local_8 = (n_v_1 <= 0.0);
     } else {
-        local_6 = true;
+        local_8 = true;
     }
-    bool _e18 = local_6;
+    bool _e18 = local_8;
     if (_e18) {
         return vec3(0.0, 0.0, 0.0);
     }
     vec3 hs = (v_2 + l_1);
     float inv = (1.0 / sqrt(dot(hs, hs)));
-    vec3 h_1 = (hs * inv);
-    vec3 c_2 = cross(n, h_1);
-    float _e32 = ggx_d(dot(n, h_1), dot(c_2, c_2), alpha_3);
-    vec3 _e34 = specular_fresnel(base_2, metallic_2, f0_d_2, f90_d_2, dot(v_2, h_1));
+    vec3 h_3 = (hs * inv);
+    vec3 c_3 = cross(n, h_3);
+    float _e32 = ggx_d(dot(n, h_3), dot(c_3, c_3), alpha_3);
+    vec3 _e34 = specular_fresnel(base_2, metallic_2, f0_d_2, f90_d_2, dot(v_2, h_3));
     float _e35 = smith_visibility(n_l_2, n_v_1, alpha_3);
     return (_e34 * (_e32 * _e35));
 }
@@ -273,20 +364,20 @@ vec3 specular_correction(vec3 base_5, float metallic_5, vec3 f0_d_4, float f90_d
 }
 
 bool has_specular(float metallic_6, vec3 f0_d_5, float f90_d_5) {
-    bool local_7 = false;
-    bool local_8 = false;
+    bool local_9 = false;
+    bool local_10 = false;
     if (!((metallic_6 > 0.0))) {
-        local_7 = (f90_d_5 > 0.0);
+        local_9 = (f90_d_5 > 0.0);
     } else {
-        local_7 = true;
+        local_9 = true;
     }
-    bool _e11 = local_7;
+    bool _e11 = local_9;
     if (!(_e11)) {
-        local_8 = (max(max(f0_d_5.x, f0_d_5.y), f0_d_5.z) > 0.0);
+        local_10 = (max(max(f0_d_5.x, f0_d_5.y), f0_d_5.z) > 0.0);
     } else {
-        local_8 = true;
+        local_10 = true;
     }
-    bool _e23 = local_8;
+    bool _e23 = local_10;
     return _e23;
 }
 
@@ -319,52 +410,69 @@ float vpl_near_slc_share(float rt2_1, float r2_4, float d2_3, float near_r2_2) {
     return ((_e7 && (_e4 > 0.0)) ? (_e4 * _e5) : 0.0);
 }
 
-WorkgroupBox workgroup_box(uint li_1, vec3 p, bool has) {
+WorkgroupBox workgroup_bounds(uint li_1, vec3 lo, vec3 hi) {
     uint stride = 32u;
-    wg_lo[li_1] = (has ? p : vec3(3.4028235e38));
-    wg_hi[li_1] = (has ? p : vec3(-3.4028235e38));
+    wg_lo[li_1] = lo;
+    wg_hi[li_1] = hi;
     memoryBarrierShared();
     barrier();
     bool loop_init = true;
     while(true) {
         if (!loop_init) {
-            uint _e42 = stride;
-            stride = (_e42 / 2u);
+            uint _e36 = stride;
+            stride = (_e36 / 2u);
         }
         loop_init = false;
-        uint _e15 = stride;
-        if ((_e15 > 0u)) {
+        uint _e9 = stride;
+        if ((_e9 > 0u)) {
         } else {
             break;
         }
         {
-            uint _e18 = stride;
-            if ((li_1 < _e18)) {
-                vec3 _e24 = wg_lo[li_1];
-                uint _e26 = stride;
-                vec3 _e29 = wg_lo[(li_1 + _e26)];
-                wg_lo[li_1] = min(_e24, _e29);
-                vec3 _e35 = wg_hi[li_1];
-                uint _e37 = stride;
-                vec3 _e40 = wg_hi[(li_1 + _e37)];
-                wg_hi[li_1] = max(_e35, _e40);
+            uint _e12 = stride;
+            if ((li_1 < _e12)) {
+                vec3 _e18 = wg_lo[li_1];
+                uint _e20 = stride;
+                vec3 _e23 = wg_lo[(li_1 + _e20)];
+                wg_lo[li_1] = min(_e18, _e23);
+                vec3 _e29 = wg_hi[li_1];
+                uint _e31 = stride;
+                vec3 _e34 = wg_hi[(li_1 + _e31)];
+                wg_hi[li_1] = max(_e29, _e34);
             }
             memoryBarrierShared();
             barrier();
         }
     }
-    vec3 _e47 = wg_lo[0];
-    vec3 _e50 = wg_hi[0];
-    return WorkgroupBox(_e47, _e50);
+    if ((li_1 == 0u)) {
+        vec3 _e44 = wg_lo[0];
+        vec3 _e47 = wg_hi[0];
+        wg_box = WorkgroupBox(_e44, _e47);
+    }
+    memoryBarrierShared();
+    barrier();
+    WorkgroupBox _e50 = wg_box;
+    memoryBarrierShared();
+    barrier();
+    return _e50;
+}
+
+WorkgroupBox workgroup_box(uint li_2, vec3 p_1, bool has) {
+    WorkgroupBox _e9 = workgroup_bounds(li_2, (has ? p_1 : vec3(3.4028235e38)), (has ? p_1 : vec3(-3.4028235e38)));
+    return _e9;
+}
+
+bool box_is_empty(WorkgroupBox b) {
+    return (b.lo.x > b.hi.x);
 }
 
 vec4 surface_at(ivec2 texel) {
-    vec4 p_1 = texelFetch(_group_0_binding_2_cs, texel, 0);
-    return ((p_1.w > 0.0) ? vec4(p_1.xyz, 1.0) : vec4(0.0));
+    vec4 p_2 = texelFetch(_group_0_binding_2_cs, texel, 0);
+    return ((p_2.w > 0.0) ? vec4(p_2.xyz, 1.0) : vec4(0.0));
 }
 
 GbTexel gbuffer_at(uint i) {
-    bool local_9 = false;
+    bool local_11 = false;
     uint _e3 = _group_0_binding_1_cs.width;
     uint _e8 = _group_0_binding_1_cs.width;
     ivec2 texel_1 = ivec2(int((i % _e3)), int((i / _e8)));
@@ -373,15 +481,15 @@ GbTexel gbuffer_at(uint i) {
     vec3 n_4 = _e15.xyz;
     float len2_1 = dot(n_4, n_4);
     if ((_e12.w > 0.0)) {
-        local_9 = (len2_1 > 0.0);
+        local_11 = (len2_1 > 0.0);
     } else {
-        local_9 = false;
+        local_11 = false;
     }
-    bool valid = local_9;
+    bool valid_1 = local_11;
     vec3 _e30 = _group_0_binding_1_cs.eye;
     vec3 v_7 = (_e12.xyz - _e30);
-    vec4 position = vec4(_e12.xyz, (valid ? 1.0 : 0.0));
-    vec4 normal = (valid ? vec4((n_4 / vec3(sqrt(len2_1))), sqrt(dot(v_7, v_7))) : vec4(0.0, 0.0, 0.0, 1e30));
+    vec4 position = vec4(_e12.xyz, (valid_1 ? 1.0 : 0.0));
+    vec4 normal = (valid_1 ? vec4((n_4 / vec3(sqrt(len2_1))), sqrt(dot(v_7, v_7))) : vec4(0.0, 0.0, 0.0, 1e30));
     return GbTexel(position, normal);
 }
 
@@ -390,24 +498,24 @@ Glossy glossy_at(uint i_1, vec3 x) {
     uint _e9 = _group_0_binding_1_cs.width;
     ivec2 texel_2 = ivec2(int((i_1 % _e4)), int((i_1 / _e9)));
     vec4 _e16 = texelFetch(_group_0_binding_3_cs, texel_2, 0);
-    GpuMaterial m_3 = _group_0_binding_10_cs[uint(_e16.w)];
+    GpuMaterial m_2 = _group_0_binding_10_cs[uint(_e16.w)];
     vec3 _e23 = _group_0_binding_1_cs.eye;
-    bool _e29 = has_specular(m_3.metallic, m_3.f0_, m_3.f90_);
-    return Glossy(m_3, normalize((_e23 - x)), _e29);
+    bool _e29 = has_specular(m_2.metallic, m_2.f0_, m_2.f90_);
+    return Glossy(m_2, normalize((_e23 - x)), _e29);
 }
 
-vec3 glossy_term(Glossy g_1, GpuLight l_4, vec3 n_3, vec3 v_5, float t) {
-    bool local_10 = false;
-    if (!(!(g_1.on))) {
-        local_10 = (t <= 0.0);
+vec3 glossy_term(Glossy g_2, GpuLight l_4, vec3 n_3, vec3 v_5, float t) {
+    bool local_12 = false;
+    if (!(!(g_2.on))) {
+        local_12 = (t <= 0.0);
     } else {
-        local_10 = true;
+        local_12 = true;
     }
-    bool _e13 = local_10;
+    bool _e13 = local_12;
     if (_e13) {
         return vec3(0.0);
     }
-    vec3 _e30 = specular_correction(g_1.m.albedo, g_1.m.metallic, g_1.m.f0_, g_1.m.f90_, g_1.m.alpha, n_3, g_1.v, normalize(-(v_5)));
+    vec3 _e30 = specular_correction(g_2.m.albedo, g_2.m.metallic, g_2.m.f0_, g_2.m.f90_, g_2.m.alpha, n_3, g_2.v, normalize(-(v_5)));
     return ((l_4.intensity * _e30) * t);
 }
 
@@ -417,12 +525,190 @@ float near_r2_of(uint slot) {
     return _e5;
 }
 
+float near_cull_r2_of(uint slot_1, float near_r2_3) {
+    float _e2 = near_r2_of(slot_1);
+    float _e3 = vpl_near_cull_range2_(_e2, near_r2_3);
+    return _e3;
+}
+
+uint cluster_slot(uint c_1, uint k) {
+    uint _e5 = _group_0_binding_0_cs.near_clusters_at;
+    uint _e11 = _group_0_binding_5_cs[(((c_1 - _e5) * CLUSTER) + k)];
+    return _e11;
+}
+
+float cull_r2_of(uint slot_2) {
+    float _e3 = _group_0_binding_0_cs.near_r2_;
+    float _e4 = near_cull_r2_of(slot_2, _e3);
+    return _e4;
+}
+
+void shade_list(uint count) {
+    uint m = 0u;
+    bool _e2 = valid;
+    if (!(_e2)) {
+        return;
+    }
+    float _e5 = interleave_flux_scale(P);
+    float unscale = (1.0 / _e5);
+    bool loop_init_1 = true;
+    while(true) {
+        if (!loop_init_1) {
+            uint _e63 = m;
+            m = (_e63 + 1u);
+        }
+        loop_init_1 = false;
+        uint _e10 = m;
+        if ((_e10 < count)) {
+        } else {
+            break;
+        }
+        {
+            uint _e13 = m;
+            uint slot_3 = tile_lights[_e13];
+            GpuLight l_5 = _group_0_binding_4_cs[slot_3];
+            vec3 _e20 = pos;
+            vec3 v_8 = (_e20 - l_5.p0_);
+            float _e25 = _group_0_binding_7_cs[slot_3];
+            float _e27 = vpl_near_range2_(_e25, P);
+            float _e28 = near_r2_of(slot_3);
+            float _e32 = _group_0_binding_0_cs.near_r2_;
+            float _e33 = vpl_near_slc_share(_e27, _e28, dot(v_8, v_8), _e32);
+            if ((_e33 > 0.0)) {
+                vec3 _e38 = nrm;
+                float _e41 = _group_0_binding_0_cs.min_d2_;
+                float _e42 = vpl_transfer(l_5.p1_, _e38, v_8, _e41);
+                float t_3 = ((_e42 * _e33) * unscale);
+                vec3 _e46 = e;
+                e = (_e46 + (l_5.intensity * t_3));
+                vec3 _e51 = s;
+                Glossy _e53 = g_4;
+                vec3 _e55 = nrm;
+                vec3 _e56 = glossy_term(_e53, l_5, _e55, v_8, t_3);
+                s = (_e51 + _e56);
+                uint _e59 = kept;
+                kept = (_e59 + 1u);
+            }
+        }
+    }
+    return;
+}
+
+void cull_tile(uint li_3, vec3 lo_1, vec3 hi_1, uvec4 grid, uint clusters_at, uint groups_at) {
+    uint g_3 = 0u;
+    uint h = 0u;
+    if ((li_3 == 0u)) {
+        atomicExchange(list_count, 0u);
+    }
+    uint _e14 = group_count(grid.x, grid.y, grid.z, grid.w);
+    bool loop_init_2 = true;
+    while(true) {
+        if (!loop_init_2) {
+            uint _e101 = g_3;
+            g_3 = (_e101 + 1u);
+        }
+        loop_init_2 = false;
+        uint _e17 = g_3;
+        if ((_e17 < _e14)) {
+        } else {
+            break;
+        }
+        {
+            uint _e20 = g_3;
+            GpuBox gb = _group_0_binding_6_cs[(groups_at + _e20)];
+            bool _e26 = box_overlaps_box(gb.lo, gb.hi, lo_1, hi_1);
+            if (!(_e26)) {
+                continue;
+            }
+            uint _e28 = g_3;
+            uint _e33 = group_first(_e28, grid.x, grid.y, grid.z, grid.w);
+            uint first = (clusters_at + _e33);
+            uint _e35 = g_3;
+            uint _e40 = group_clusters(_e35, grid.x, grid.y, grid.z, grid.w);
+            if ((li_3 == 0u)) {
+                atomicExchange(hit_count, 0u);
+            }
+            memoryBarrierShared();
+            barrier();
+            if ((li_3 < _e40)) {
+                GpuBox cb = _group_0_binding_6_cs[(first + li_3)];
+                bool _e52 = box_overlaps_box(cb.lo, cb.hi, lo_1, hi_1);
+                if (_e52) {
+                    uint _e56 = atomicAdd(hit_count, 1u);
+                    cluster_hits[_e56] = (first + li_3);
+                }
+            }
+            memoryBarrierShared();
+            barrier();
+            uint _e60 = hit_count;
+            memoryBarrierShared();
+            barrier();
+            h = 0u;
+            bool loop_init_3 = true;
+            while(true) {
+                if (!loop_init_3) {
+                    uint _e98 = h;
+                    h = (_e98 + 1u);
+                }
+                loop_init_3 = false;
+                uint _e63 = h;
+                if ((_e63 < _e60)) {
+                } else {
+                    break;
+                }
+                {
+                    memoryBarrierShared();
+                    barrier();
+                    uint _e66 = list_count;
+                    memoryBarrierShared();
+                    barrier();
+                    if (((_e66 + CLUSTER) > MAX_TILE_LIGHTS)) {
+                        shade_list(_e66);
+                        memoryBarrierShared();
+                        barrier();
+                        if ((li_3 == 0u)) {
+                            atomicExchange(list_count, 0u);
+                        }
+                        memoryBarrierShared();
+                        barrier();
+                    }
+                    uint _e76 = h;
+                    uint _e78 = cluster_hits[_e76];
+                    uint _e79 = cluster_slot(_e78, li_3);
+                    GpuLight l_6 = _group_0_binding_4_cs[_e79];
+                    if (any(notEqual(l_6.intensity, vec3(0.0)))) {
+                        float _e89 = cull_r2_of(_e79);
+                        float _e90 = cull_radius(_e89);
+                        bool _e91 = sphere_overlaps_aabb(l_6.p0_, _e90, lo_1, hi_1);
+                        if (_e91) {
+                            uint _e95 = atomicAdd(list_count, 1u);
+                            tile_lights[_e95] = _e79;
+                        }
+                    }
+                }
+            }
+            memoryBarrierShared();
+            barrier();
+        }
+    }
+    memoryBarrierShared();
+    barrier();
+    uint _e104 = list_count;
+    memoryBarrierShared();
+    barrier();
+    shade_list(_e104);
+    return;
+}
+
 void main() {
     if (gl_LocalInvocationID == uvec3(0u)) {
         wg_lo = vec3[64](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
         wg_hi = vec3[64](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
-        light_count = 0u;
-        light_list = uint[2048](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
+        wg_box = WorkgroupBox(vec3(0.0), vec3(0.0));
+        tile_lights = uint[1024](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
+        list_count = 0u;
+        cluster_hits = uint[64](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
+        hit_count = 0u;
     }
     memoryBarrierShared();
     barrier();
@@ -430,19 +716,8 @@ void main() {
     uvec3 lid = gl_LocalInvocationID;
     uint li = gl_LocalInvocationIndex;
     bool local = false;
-    vec4 pos = vec4(0.0);
-    vec3 nrm = vec3(0.0);
+    vec4 p = vec4(0.0);
     bool local_1 = false;
-    vec3 e = vec3(0.0);
-    uint kept = 0u;
-    vec3 s = vec3(0.0);
-    Glossy g = Glossy(GpuMaterial(vec3(0.0), 0.0, vec3(0.0), 0.0, vec3(0.0), 0.0), vec3(0.0), false);
-    uint first = 0u;
-    bool local_2 = false;
-    bool local_3 = false;
-    uint m = 0u;
-    bool local_4 = false;
-    uint m_1 = 0u;
     uint px = ((wg.x * TILE) + lid.x);
     uint py = ((wg.y * TILE) + lid.y);
     uint _e15 = _group_0_binding_0_cs.width;
@@ -456,163 +731,45 @@ void main() {
     uint _e27 = _group_0_binding_0_cs.width;
     uint pix = ((py * _e27) + px);
     if (inside) {
-        GbTexel _e36 = gbuffer_at(pix);
-        pos = _e36.position;
-        nrm = _e36.normal.xyz;
+        GbTexel _e33 = gbuffer_at(pix);
+        p = _e33.position;
+        nrm = _e33.normal.xyz;
     }
+    vec4 _e39 = p;
+    pos = _e39.xyz;
     if (inside) {
-        float _e43 = pos.w;
-        local_1 = (_e43 > 0.0);
+        float _e45 = p.w;
+        local_1 = (_e45 > 0.0);
     } else {
         local_1 = false;
     }
-    bool valid_1 = local_1;
-    vec4 _e48 = pos;
-    WorkgroupBox _e50 = workgroup_box(li, _e48.xyz, valid_1);
-    vec3 lo = _e50.lo;
-    vec3 hi = _e50.hi;
-    float _e55 = _group_0_binding_0_cs.near_r2_;
-    float _e56 = cull_radius(_e55);
-    float _e58 = interleave_flux_scale(P);
-    float unscale = (1.0 / _e58);
-    if (valid_1) {
-        vec4 _e70 = pos;
-        Glossy _e72 = glossy_at(pix, _e70.xyz);
-        g = _e72;
+    bool _e49 = local_1;
+    valid = _e49;
+    bool _e51 = valid;
+    if (_e51) {
+        vec3 _e54 = pos;
+        Glossy _e55 = glossy_at(pix, _e54);
+        g_4 = _e55;
     }
-    bool loop_init_1 = true;
-    while(true) {
-        if (!loop_init_1) {
-            uint _e206 = first;
-            first = (_e206 + NEAR_CHUNK);
-        }
-        loop_init_1 = false;
-        uint _e75 = first;
-        uint _e78 = _group_0_binding_0_cs.near_blocks;
-        if ((_e75 < _e78)) {
-        } else {
-            break;
-        }
-        {
-            if ((li == 0u)) {
-                atomicExchange(light_count, 0u);
-            }
-            memoryBarrierShared();
-            barrier();
-            uint _e84 = first;
-            uint b = (_e84 + li);
-            if ((li < NEAR_CHUNK)) {
-                uint _e92 = _group_0_binding_0_cs.near_blocks;
-                local_2 = (b < _e92);
-            } else {
-                local_2 = false;
-            }
-            bool _e95 = local_2;
-            if (_e95) {
-                GpuNearBox nb = _group_0_binding_6_cs[b];
-                if (all(lessThanEqual((nb.lo - vec3(_e56)), hi))) {
-                    local_3 = all(lessThanEqual(lo, (nb.hi + vec3(_e56))));
-                } else {
-                    local_3 = false;
-                }
-                bool _e112 = local_3;
-                if (_e112) {
-                    m = 0u;
-                    bool loop_init_2 = true;
-                    while(true) {
-                        if (!loop_init_2) {
-                            uint _e151 = m;
-                            m = (_e151 + 1u);
-                        }
-                        loop_init_2 = false;
-                        uint _e115 = m;
-                        if ((_e115 < NEAR_BLOCK)) {
-                        } else {
-                            break;
-                        }
-                        {
-                            uint _e121 = m;
-                            uint slot_1 = _group_0_binding_5_cs[((b * NEAR_BLOCK) + _e121)];
-                            GpuLight l_5 = _group_0_binding_4_cs[slot_1];
-                            float _e128 = near_r2_of(slot_1);
-                            float _e131 = _group_0_binding_0_cs.near_r2_;
-                            float _e132 = vpl_near_cull_range2_(_e128, _e131);
-                            float _e133 = cull_radius(_e132);
-                            if (any(notEqual(l_5.intensity, vec3(0.0)))) {
-                                bool _e142 = sphere_overlaps_aabb(l_5.p0_, _e133, lo, hi);
-                                local_4 = _e142;
-                            } else {
-                                local_4 = false;
-                            }
-                            bool _e144 = local_4;
-                            if (_e144) {
-                                uint _e148 = atomicAdd(light_count, 1u);
-                                light_list[_e148] = slot_1;
-                            }
-                        }
-                    }
-                }
-            }
-            memoryBarrierShared();
-            barrier();
-            uint _e154 = light_count;
-            memoryBarrierShared();
-            barrier();
-            if (valid_1) {
-                m_1 = 0u;
-                bool loop_init_3 = true;
-                while(true) {
-                    if (!loop_init_3) {
-                        uint _e204 = m_1;
-                        m_1 = (_e204 + 1u);
-                    }
-                    loop_init_3 = false;
-                    uint _e157 = m_1;
-                    if ((_e157 < _e154)) {
-                    } else {
-                        break;
-                    }
-                    {
-                        uint _e160 = m_1;
-                        uint slot_2 = light_list[_e160];
-                        GpuLight l_6 = _group_0_binding_4_cs[slot_2];
-                        vec4 _e166 = pos;
-                        vec3 v_8 = (_e166.xyz - l_6.p0_);
-                        float _e172 = _group_0_binding_7_cs[slot_2];
-                        float _e174 = vpl_near_range2_(_e172, P);
-                        float _e175 = near_r2_of(slot_2);
-                        float _e179 = _group_0_binding_0_cs.near_r2_;
-                        float _e180 = vpl_near_slc_share(_e174, _e175, dot(v_8, v_8), _e179);
-                        if ((_e180 > 0.0)) {
-                            vec3 _e184 = nrm;
-                            float _e187 = _group_0_binding_0_cs.min_d2_;
-                            float _e188 = vpl_transfer(l_6.p1_, _e184, v_8, _e187);
-                            float t_3 = ((_e188 * _e180) * unscale);
-                            vec3 _e191 = e;
-                            e = (_e191 + (l_6.intensity * t_3));
-                            vec3 _e195 = s;
-                            Glossy _e196 = g;
-                            vec3 _e197 = nrm;
-                            vec3 _e198 = glossy_term(_e196, l_6, _e197, v_8, t_3);
-                            s = (_e195 + _e198);
-                            uint _e200 = kept;
-                            kept = (_e200 + 1u);
-                        }
-                    }
-                }
-            }
-            memoryBarrierShared();
-            barrier();
-        }
+    vec3 _e57 = pos;
+    bool _e59 = valid;
+    WorkgroupBox _e60 = workgroup_box(li, _e57, _e59);
+    bool _e61 = box_is_empty(_e60);
+    if (!(_e61)) {
+        uvec4 _e67 = _group_0_binding_0_cs.near_grid;
+        uint _e70 = _group_0_binding_0_cs.near_clusters_at;
+        uint _e73 = _group_0_binding_0_cs.near_groups_at;
+        cull_tile(li, _e60.lo, _e60.hi, _e67, _e70, _e73);
     }
-    if (valid_1) {
+    bool _e75 = valid;
+    if (_e75) {
         vec4 old = _group_0_binding_9_cs[pix];
-        vec3 _e215 = e;
-        uint _e218 = kept;
-        _group_0_binding_9_cs[pix] = vec4((old.xyz + _e215), (old.w + float(_e218)));
-        vec4 _e226 = _group_0_binding_11_cs[pix];
-        vec3 _e228 = s;
-        _group_0_binding_11_cs[pix] = vec4((_e226.xyz + _e228), 0.0);
+        vec3 _e83 = e;
+        uint _e87 = kept;
+        _group_0_binding_9_cs[pix] = vec4((old.xyz + _e83), (old.w + float(_e87)));
+        vec4 _e95 = _group_0_binding_11_cs[pix];
+        vec3 _e98 = s;
+        _group_0_binding_11_cs[pix] = vec4((_e95.xyz + _e98), 0.0);
         return;
     } else {
         return;

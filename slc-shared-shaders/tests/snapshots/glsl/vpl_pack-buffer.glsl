@@ -13,12 +13,6 @@ struct GpuLight {
     vec3 intensity;
     uint ies_base;
 };
-struct GpuNearBox {
-    vec3 lo;
-    float pad0_;
-    vec3 hi;
-    float pad1_;
-};
 struct GpuVplRecord {
     vec3 position;
     float pad0_;
@@ -41,10 +35,6 @@ struct PackParams {
     uint pad1_;
     uint pad2_;
 };
-struct WorkgroupBox {
-    vec3 lo;
-    vec3 hi;
-};
 const uint LIGHT_POINT = 0u;
 const uint LIGHT_SPOT = 1u;
 const uint LIGHT_IES = 2u;
@@ -61,6 +51,8 @@ const float CULL_RADIUS_SCALE = 1.000001;
 const float SPHERE_PAD = 4.7683716e-7;
 const float SPHERE_HUGE = 3.4028235e38;
 const float SPHERE_PAD_ABS = 1e-18;
+const uint CLUSTER = 64u;
+const uint GROUP_SIDE = 8u;
 const float INV_PI = 0.31830987;
 const float MIN_D2_ = 1e-12;
 const float MAX_INTENSITY = 7.2057594e16;
@@ -74,7 +66,6 @@ const float F32_MAX = 3.4028235e38;
 const float DEPTH_NONE = 1e30;
 const float DEPTH_SIGMA = 0.05;
 const float COVER_WEIGHT = 0.1;
-const uint NEAR_BLOCK = 64u;
 const uint ROULETTE_DEPTH = 2u;
 const float TEMPORAL_MAX_HISTORY = 32.0;
 const float TEMPORAL_DEPTH_TOLERANCE = 0.01;
@@ -86,7 +77,6 @@ const float TEMPORAL_CHANGE_LOW = 4.0;
 const float TEMPORAL_CHANGE_HIGH = 8.0;
 const float TEMPORAL_MIN_WEIGHT = 0.01;
 const uint P = 8u;
-const uint BOX_THREADS = 64u;
 
 layout(std140) uniform PackParams_block_0Compute { PackParams _group_0_binding_0_cs; };
 
@@ -101,12 +91,6 @@ layout(std430) buffer type_3_block_4Compute { float _group_0_binding_6_cs[]; };
 layout(std430) buffer type_3_block_5Compute { float _group_0_binding_7_cs[]; };
 
 layout(std430) buffer type_7_block_6Compute { uint _group_0_binding_8_cs[]; };
-
-layout(std430) buffer type_8_block_7Compute { GpuNearBox _group_0_binding_9_cs[]; };
-
-shared vec3 wg_lo[64];
-
-shared vec3 wg_hi[64];
 
 
 float threshold_range2_(float intensity, float exposure, float error_bound) {
@@ -130,65 +114,65 @@ float vpl_rt2_(vec3 flux_1, float exposure_1, float error_bound_1, uint mode_1) 
 }
 
 bool finite3_(vec3 v) {
+    bool local = false;
     bool local_1 = false;
-    bool local_2 = false;
     if ((abs(v.x) <= F32_MAX)) {
-        local_1 = (abs(v.y) <= F32_MAX);
+        local = (abs(v.y) <= F32_MAX);
+    } else {
+        local = false;
+    }
+    bool _e12 = local;
+    if (_e12) {
+        local_1 = (abs(v.z) <= F32_MAX);
     } else {
         local_1 = false;
     }
-    bool _e12 = local_1;
-    if (_e12) {
-        local_2 = (abs(v.z) <= F32_MAX);
-    } else {
-        local_2 = false;
-    }
-    bool _e20 = local_2;
+    bool _e20 = local_1;
     return _e20;
 }
 
-bool vpl_record_ok(vec3 position_1, vec3 normal_1, vec3 flux_2) {
+bool vpl_record_ok(vec3 position, vec3 normal_1, vec3 flux_2) {
+    bool local_2 = false;
     bool local_3 = false;
     bool local_4 = false;
     bool local_5 = false;
     bool local_6 = false;
-    bool local_7 = false;
-    bool _e3 = finite3_(position_1);
+    bool _e3 = finite3_(position);
     if (_e3) {
         bool _e6 = finite3_(normal_1);
-        local_3 = _e6;
+        local_2 = _e6;
+    } else {
+        local_2 = false;
+    }
+    bool _e8 = local_2;
+    if (_e8) {
+        bool _e11 = finite3_(flux_2);
+        local_3 = _e11;
     } else {
         local_3 = false;
     }
-    bool _e8 = local_3;
-    if (_e8) {
-        bool _e11 = finite3_(flux_2);
-        local_4 = _e11;
-    } else {
-        local_4 = false;
-    }
-    bool _e13 = local_4;
+    bool _e13 = local_3;
     if (!(_e13)) {
         return false;
     }
     if ((flux_2.x >= 0.0)) {
-        local_5 = (flux_2.y >= 0.0);
+        local_4 = (flux_2.y >= 0.0);
+    } else {
+        local_4 = false;
+    }
+    bool _e25 = local_4;
+    if (_e25) {
+        local_5 = (flux_2.z >= 0.0);
     } else {
         local_5 = false;
     }
-    bool _e25 = local_5;
-    if (_e25) {
-        local_6 = (flux_2.z >= 0.0);
+    bool _e32 = local_5;
+    if (_e32) {
+        local_6 = ((max(max(flux_2.x, flux_2.y), flux_2.z) * INV_PI) <= MAX_INTENSITY);
     } else {
         local_6 = false;
     }
-    bool _e32 = local_6;
-    if (_e32) {
-        local_7 = ((max(max(flux_2.x, flux_2.y), flux_2.z) * INV_PI) <= MAX_INTENSITY);
-    } else {
-        local_7 = false;
-    }
-    bool _e45 = local_7;
+    bool _e45 = local_6;
     return _e45;
 }
 
@@ -197,118 +181,50 @@ uint interleave_slot_linear(uint i, uint per_subset, uint period) {
     return (((i % subsets) * per_subset) + (i / subsets));
 }
 
-WorkgroupBox workgroup_box(uint li_1, vec3 p_1, bool has) {
-    uint stride = 32u;
-    wg_lo[li_1] = (has ? p_1 : vec3(3.4028235e38));
-    wg_hi[li_1] = (has ? p_1 : vec3(-3.4028235e38));
-    memoryBarrierShared();
-    barrier();
-    bool loop_init = true;
-    while(true) {
-        if (!loop_init) {
-            uint _e42 = stride;
-            stride = (_e42 / 2u);
-        }
-        loop_init = false;
-        uint _e15 = stride;
-        if ((_e15 > 0u)) {
-        } else {
-            break;
-        }
-        {
-            uint _e18 = stride;
-            if ((li_1 < _e18)) {
-                vec3 _e24 = wg_lo[li_1];
-                uint _e26 = stride;
-                vec3 _e29 = wg_lo[(li_1 + _e26)];
-                wg_lo[li_1] = min(_e24, _e29);
-                vec3 _e35 = wg_hi[li_1];
-                uint _e37 = stride;
-                vec3 _e40 = wg_hi[(li_1 + _e37)];
-                wg_hi[li_1] = max(_e35, _e40);
-            }
-            memoryBarrierShared();
-            barrier();
-        }
-    }
-    vec3 _e47 = wg_lo[0];
-    vec3 _e50 = wg_hi[0];
-    return WorkgroupBox(_e47, _e50);
-}
-
 void main() {
-    if (gl_LocalInvocationID == uvec3(0u)) {
-        wg_lo = vec3[64](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
-        wg_hi = vec3[64](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
-    }
-    memoryBarrierShared();
-    barrier();
     uvec3 gid = gl_GlobalInvocationID;
-    uvec3 wg = gl_WorkGroupID;
-    uint li = gl_LocalInvocationIndex;
-    vec3 position = vec3(0.0);
-    bool lit = false;
     vec3 p = vec3(0.0);
     vec3 normal = vec3(0.0);
     vec3 flux = vec3(0.0);
-    bool local = false;
     uint i_1 = gid.x;
-    uint _e6 = _group_0_binding_0_cs.count;
-    bool inside = (i_1 < _e6);
-    if (inside) {
-        GpuVplRecord r = _group_0_binding_1_cs[i_1];
-        p = r.position;
-        normal = r.normal;
-        flux = r.flux;
-        uint _e24 = _group_0_binding_0_cs.per_subset;
-        uint _e26 = interleave_slot_linear(i_1, _e24, P);
-        vec3 _e27 = p;
-        vec3 _e28 = normal;
-        vec3 _e29 = flux;
-        bool _e30 = vpl_record_ok(_e27, _e28, _e29);
-        if (!(_e30)) {
-            p = vec3(0.0);
-            normal = vec3(0.0);
-            flux = vec3(0.0);
-        }
-        vec3 _e38 = p;
-        position = _e38;
-        vec3 _e39 = flux;
-        float _e42 = _group_0_binding_0_cs.scale;
-        flux = (_e39 * _e42);
-        vec3 _e46 = position;
-        vec3 _e48 = normal;
-        vec3 _e51 = flux;
-        _group_0_binding_4_cs[_e26] = GpuLight(_e46, LIGHT_VPL, _e48, 0.0, vec3(0.0), 0.0, _e51, 0u);
-        _group_0_binding_5_cs[_e26] = i_1;
-        uint _e60 = _group_0_binding_0_cs.slc;
-        bool slc = (_e60 != 0u);
-        vec3 _e65 = flux;
-        float _e68 = _group_0_binding_0_cs.exposure;
-        float _e71 = _group_0_binding_0_cs.error_bound;
-        uint _e74 = _group_0_binding_0_cs.mode;
-        float _e75 = vpl_rt2_(_e65, _e68, _e71, _e74);
-        _group_0_binding_6_cs[_e26] = (slc ? _e75 : 0.0);
-        float _e82 = _group_0_binding_0_cs.fixed_r2_;
-        _group_0_binding_7_cs[_e26] = (slc ? 0.0 : _e82);
-        _group_0_binding_8_cs[i_1] = _e26;
-        vec3 _e87 = flux;
-        lit = any(notEqual(_e87, vec3(0.0)));
-    }
-    vec3 _e92 = position;
-    bool _e93 = lit;
-    WorkgroupBox _e94 = workgroup_box(li, _e92, _e93);
-    if ((li == 0u)) {
-        local = inside;
-    } else {
-        local = false;
-    }
-    bool _e100 = local;
-    if (_e100) {
-        _group_0_binding_9_cs[wg.x] = GpuNearBox(_e94.lo, 0.0, _e94.hi, 0.0);
-        return;
-    } else {
+    uint _e4 = _group_0_binding_0_cs.count;
+    if ((i_1 >= _e4)) {
         return;
     }
+    GpuVplRecord r = _group_0_binding_1_cs[i_1];
+    p = r.position;
+    normal = r.normal;
+    flux = r.flux;
+    uint _e17 = _group_0_binding_0_cs.per_subset;
+    uint _e19 = interleave_slot_linear(i_1, _e17, P);
+    vec3 _e20 = p;
+    vec3 _e21 = normal;
+    vec3 _e22 = flux;
+    bool _e23 = vpl_record_ok(_e20, _e21, _e22);
+    if (!(_e23)) {
+        p = vec3(0.0);
+        normal = vec3(0.0);
+        flux = vec3(0.0);
+    }
+    vec3 _e31 = flux;
+    float _e34 = _group_0_binding_0_cs.scale;
+    flux = (_e31 * _e34);
+    vec3 _e38 = p;
+    vec3 _e40 = normal;
+    vec3 _e43 = flux;
+    _group_0_binding_4_cs[_e19] = GpuLight(_e38, LIGHT_VPL, _e40, 0.0, vec3(0.0), 0.0, _e43, 0u);
+    _group_0_binding_5_cs[_e19] = i_1;
+    uint _e52 = _group_0_binding_0_cs.slc;
+    bool slc = (_e52 != 0u);
+    vec3 _e57 = flux;
+    float _e60 = _group_0_binding_0_cs.exposure;
+    float _e63 = _group_0_binding_0_cs.error_bound;
+    uint _e66 = _group_0_binding_0_cs.mode;
+    float _e67 = vpl_rt2_(_e57, _e60, _e63, _e66);
+    _group_0_binding_6_cs[_e19] = (slc ? _e67 : 0.0);
+    float _e74 = _group_0_binding_0_cs.fixed_r2_;
+    _group_0_binding_7_cs[_e19] = (slc ? 0.0 : _e74);
+    _group_0_binding_8_cs[i_1] = _e19;
+    return;
 }
 

@@ -19,9 +19,21 @@ struct VplParams {
     uint lights_per_subset;
     float min_d2_;
     float near_r2_;
-    uint near_blocks;
     uint subset_shift;
+    uint far_groups_at;
+    uint near_clusters_at;
+    uint near_groups_at;
+    uint box_count;
+    uint pad0_;
     uint pad1_;
+    uvec4 far_grid;
+    uvec4 near_grid;
+};
+struct GpuBox {
+    vec3 lo;
+    float pad0_;
+    vec3 hi;
+    float pad1_;
 };
 struct ViewParams {
     vec4 c0_;
@@ -61,6 +73,8 @@ const float CULL_RADIUS_SCALE = 1.000001;
 const float SPHERE_PAD = 4.7683716e-7;
 const float SPHERE_HUGE = 3.4028235e38;
 const float SPHERE_PAD_ABS = 1e-18;
+const uint CLUSTER = 64u;
+const uint GROUP_SIDE = 8u;
 const float INV_PI = 0.31830987;
 const float MIN_D2_ = 1e-12;
 const float MAX_INTENSITY = 7.2057594e16;
@@ -74,7 +88,6 @@ const float F32_MAX = 3.4028235e38;
 const float DEPTH_NONE = 1e30;
 const float DEPTH_SIGMA = 0.05;
 const float COVER_WEIGHT = 0.1;
-const uint NEAR_BLOCK = 64u;
 const uint ROULETTE_DEPTH = 2u;
 const float TEMPORAL_MAX_HISTORY = 32.0;
 const float TEMPORAL_DEPTH_TOLERANCE = 0.01;
@@ -95,6 +108,8 @@ shared vec3 wg_lo[64];
 
 shared vec3 wg_hi[64];
 
+shared WorkgroupBox wg_box;
+
 layout(std140) uniform VplParams_block_0Compute { VplParams _group_0_binding_0_cs; };
 
 layout(std140) uniform ViewParams_block_1Compute { ViewParams _group_0_binding_1_cs; };
@@ -103,15 +118,31 @@ uniform sampler2D _group_0_binding_2_cs;
 
 uniform sampler2D _group_0_binding_3_cs;
 
-layout(std430) readonly buffer type_8_block_2Compute { GpuLight _group_0_binding_4_cs[]; };
+layout(std430) readonly buffer type_9_block_2Compute { GpuLight _group_0_binding_4_cs[]; };
 
-layout(std430) readonly buffer type_4_block_3Compute { float _group_0_binding_6_cs[]; };
+layout(std430) readonly buffer type_5_block_3Compute { float _group_0_binding_6_cs[]; };
 
-layout(std430) buffer type_9_block_4Compute { vec4 _group_0_binding_7_cs[]; };
+layout(std430) readonly buffer type_10_block_4Compute { GpuBox _group_0_binding_7_cs[]; };
 
-shared uint tile_count;
+layout(std430) buffer type_11_block_5Compute { vec4 _group_0_binding_8_cs[]; };
+
+vec3 pos = vec3(0.0);
+
+vec3 nrm = vec3(0.0);
+
+bool valid = false;
+
+vec3 e = vec3(0.0);
+
+uint kept = 0u;
 
 shared uint tile_lights[1024];
+
+shared uint list_count;
+
+shared uint cluster_hits[64];
+
+shared uint hit_count;
 
 
 bool clamp_keep(float range2_, float d2_) {
@@ -126,6 +157,70 @@ bool sphere_overlaps_aabb(vec3 c, float r, vec3 bmin, vec3 bmax) {
     vec3 q = clamp(c, bmin, bmax);
     vec3 v_1 = (q - c);
     return (dot(v_1, v_1) <= (r * r));
+}
+
+uint groups_across(uint bw, uint gw) {
+    return (((bw + gw) - 1u) / gw);
+}
+
+uint group_count(uint bw_1, uint bh, uint gw_1, uint gh) {
+    uint _e4 = groups_across(bw_1, gw_1);
+    uint _e5 = groups_across(bh, gh);
+    return (_e4 * _e5);
+}
+
+uint group_first(uint g, uint bw_2, uint bh_1, uint gw_2, uint gh_1) {
+    uint _e5 = groups_across(bw_2, gw_2);
+    uint gx = (g % _e5);
+    uint gy = (g / _e5);
+    uint h_1 = min(gh_1, (bh_1 - (gh_1 * gy)));
+    return (((gy * gh_1) * bw_2) + ((gx * gw_2) * h_1));
+}
+
+uint group_clusters(uint g_1, uint bw_3, uint bh_2, uint gw_3, uint gh_2) {
+    uint _e5 = groups_across(bw_3, gw_3);
+    uint gx_1 = (g_1 % _e5);
+    uint gy_1 = (g_1 / _e5);
+    return (min(gw_3, (bw_3 - (gw_3 * gx_1))) * min(gh_2, (bh_2 - (gh_2 * gy_1))));
+}
+
+bool box_overlaps_box(vec3 lo1_, vec3 hi1_, vec3 lo2_, vec3 hi2_) {
+    bool local_2 = false;
+    bool local_3 = false;
+    bool local_4 = false;
+    bool local_5 = false;
+    bool local_6 = false;
+    if ((lo1_.x <= hi2_.x)) {
+        local_2 = (lo2_.x <= hi1_.x);
+    } else {
+        local_2 = false;
+    }
+    bool _e13 = local_2;
+    if (_e13) {
+        local_3 = (lo1_.y <= hi2_.y);
+    } else {
+        local_3 = false;
+    }
+    bool _e20 = local_3;
+    if (_e20) {
+        local_4 = (lo2_.y <= hi1_.y);
+    } else {
+        local_4 = false;
+    }
+    bool _e27 = local_4;
+    if (_e27) {
+        local_5 = (lo1_.z <= hi2_.z);
+    } else {
+        local_5 = false;
+    }
+    bool _e34 = local_5;
+    if (_e34) {
+        local_6 = (lo2_.z <= hi1_.z);
+    } else {
+        local_6 = false;
+    }
+    bool _e41 = local_6;
+    return _e41;
 }
 
 float vpl_transfer(vec3 n_l, vec3 n_x, vec3 v, float min_d2_) {
@@ -156,52 +251,69 @@ float vpl_far_fixed_share(float range2_1, float d2_3, float near_r2_2) {
     return ((_e4 && (_e3 > 0.0)) ? _e3 : 0.0);
 }
 
-WorkgroupBox workgroup_box(uint li_1, vec3 p, bool has) {
+WorkgroupBox workgroup_bounds(uint li_1, vec3 lo, vec3 hi) {
     uint stride = 32u;
-    wg_lo[li_1] = (has ? p : vec3(3.4028235e38));
-    wg_hi[li_1] = (has ? p : vec3(-3.4028235e38));
+    wg_lo[li_1] = lo;
+    wg_hi[li_1] = hi;
     memoryBarrierShared();
     barrier();
     bool loop_init = true;
     while(true) {
         if (!loop_init) {
-            uint _e42 = stride;
-            stride = (_e42 / 2u);
+            uint _e36 = stride;
+            stride = (_e36 / 2u);
         }
         loop_init = false;
-        uint _e15 = stride;
-        if ((_e15 > 0u)) {
+        uint _e9 = stride;
+        if ((_e9 > 0u)) {
         } else {
             break;
         }
         {
-            uint _e18 = stride;
-            if ((li_1 < _e18)) {
-                vec3 _e24 = wg_lo[li_1];
-                uint _e26 = stride;
-                vec3 _e29 = wg_lo[(li_1 + _e26)];
-                wg_lo[li_1] = min(_e24, _e29);
-                vec3 _e35 = wg_hi[li_1];
-                uint _e37 = stride;
-                vec3 _e40 = wg_hi[(li_1 + _e37)];
-                wg_hi[li_1] = max(_e35, _e40);
+            uint _e12 = stride;
+            if ((li_1 < _e12)) {
+                vec3 _e18 = wg_lo[li_1];
+                uint _e20 = stride;
+                vec3 _e23 = wg_lo[(li_1 + _e20)];
+                wg_lo[li_1] = min(_e18, _e23);
+                vec3 _e29 = wg_hi[li_1];
+                uint _e31 = stride;
+                vec3 _e34 = wg_hi[(li_1 + _e31)];
+                wg_hi[li_1] = max(_e29, _e34);
             }
             memoryBarrierShared();
             barrier();
         }
     }
-    vec3 _e47 = wg_lo[0];
-    vec3 _e50 = wg_hi[0];
-    return WorkgroupBox(_e47, _e50);
+    if ((li_1 == 0u)) {
+        vec3 _e44 = wg_lo[0];
+        vec3 _e47 = wg_hi[0];
+        wg_box = WorkgroupBox(_e44, _e47);
+    }
+    memoryBarrierShared();
+    barrier();
+    WorkgroupBox _e50 = wg_box;
+    memoryBarrierShared();
+    barrier();
+    return _e50;
+}
+
+WorkgroupBox workgroup_box(uint li_2, vec3 p_1, bool has) {
+    WorkgroupBox _e9 = workgroup_bounds(li_2, (has ? p_1 : vec3(3.4028235e38)), (has ? p_1 : vec3(-3.4028235e38)));
+    return _e9;
+}
+
+bool box_is_empty(WorkgroupBox b) {
+    return (b.lo.x > b.hi.x);
 }
 
 vec4 surface_at(ivec2 texel) {
-    vec4 p_1 = texelFetch(_group_0_binding_2_cs, texel, 0);
-    return ((p_1.w > 0.0) ? vec4(p_1.xyz, 1.0) : vec4(0.0));
+    vec4 p_2 = texelFetch(_group_0_binding_2_cs, texel, 0);
+    return ((p_2.w > 0.0) ? vec4(p_2.xyz, 1.0) : vec4(0.0));
 }
 
 GbTexel gbuffer_at(uint i) {
-    bool local_2 = false;
+    bool local_7 = false;
     uint _e3 = _group_0_binding_1_cs.width;
     uint _e8 = _group_0_binding_1_cs.width;
     ivec2 texel_1 = ivec2(int((i % _e3)), int((i / _e8)));
@@ -210,24 +322,192 @@ GbTexel gbuffer_at(uint i) {
     vec3 n = _e15.xyz;
     float len2_ = dot(n, n);
     if ((_e12.w > 0.0)) {
-        local_2 = (len2_ > 0.0);
+        local_7 = (len2_ > 0.0);
     } else {
-        local_2 = false;
+        local_7 = false;
     }
-    bool valid = local_2;
+    bool valid_1 = local_7;
     vec3 _e30 = _group_0_binding_1_cs.eye;
     vec3 v_2 = (_e12.xyz - _e30);
-    vec4 position = vec4(_e12.xyz, (valid ? 1.0 : 0.0));
-    vec4 normal = (valid ? vec4((n / vec3(sqrt(len2_))), sqrt(dot(v_2, v_2))) : vec4(0.0, 0.0, 0.0, 1e30));
+    vec4 position = vec4(_e12.xyz, (valid_1 ? 1.0 : 0.0));
+    vec4 normal = (valid_1 ? vec4((n / vec3(sqrt(len2_))), sqrt(dot(v_2, v_2))) : vec4(0.0, 0.0, 0.0, 1e30));
     return GbTexel(position, normal);
+}
+
+void shade_light(uint j) {
+    GpuLight l = _group_0_binding_4_cs[j];
+    vec3 _e5 = pos;
+    vec3 v_3 = (_e5 - l.p0_);
+    float _e10 = _group_0_binding_6_cs[j];
+    float _e14 = _group_0_binding_0_cs.near_r2_;
+    float _e15 = vpl_far_fixed_share(_e10, dot(v_3, v_3), _e14);
+    if ((_e15 > 0.0)) {
+        vec3 _e20 = nrm;
+        float _e23 = _group_0_binding_0_cs.min_d2_;
+        float _e24 = vpl_transfer(l.p1_, _e20, v_3, _e23);
+        float t_1 = (_e24 * _e15);
+        vec3 _e27 = e;
+        e = (_e27 + (l.intensity * t_1));
+        uint _e32 = kept;
+        kept = (_e32 + 1u);
+        return;
+    } else {
+        return;
+    }
+}
+
+uint cluster_slot(uint c_1, uint k) {
+    return ((c_1 * CLUSTER) + k);
+}
+
+float cull_r2_of(uint slot) {
+    float _e3 = _group_0_binding_6_cs[slot];
+    return _e3;
+}
+
+void shade_list(uint count) {
+    uint k_1 = 0u;
+    bool _e2 = valid;
+    if (_e2) {
+        bool loop_init_1 = true;
+        while(true) {
+            if (!loop_init_1) {
+                uint _e12 = k_1;
+                k_1 = (_e12 + 1u);
+            }
+            loop_init_1 = false;
+            uint _e5 = k_1;
+            if ((_e5 < count)) {
+            } else {
+                break;
+            }
+            {
+                uint _e8 = k_1;
+                uint _e10 = tile_lights[_e8];
+                shade_light(_e10);
+            }
+        }
+        return;
+    } else {
+        return;
+    }
+}
+
+void cull_tile(uint li_3, vec3 lo_1, vec3 hi_1, uvec4 grid, uint clusters_at, uint groups_at) {
+    uint g_2 = 0u;
+    uint h = 0u;
+    if ((li_3 == 0u)) {
+        atomicExchange(list_count, 0u);
+    }
+    uint _e14 = group_count(grid.x, grid.y, grid.z, grid.w);
+    bool loop_init_2 = true;
+    while(true) {
+        if (!loop_init_2) {
+            uint _e101 = g_2;
+            g_2 = (_e101 + 1u);
+        }
+        loop_init_2 = false;
+        uint _e17 = g_2;
+        if ((_e17 < _e14)) {
+        } else {
+            break;
+        }
+        {
+            uint _e20 = g_2;
+            GpuBox gb = _group_0_binding_7_cs[(groups_at + _e20)];
+            bool _e26 = box_overlaps_box(gb.lo, gb.hi, lo_1, hi_1);
+            if (!(_e26)) {
+                continue;
+            }
+            uint _e28 = g_2;
+            uint _e33 = group_first(_e28, grid.x, grid.y, grid.z, grid.w);
+            uint first = (clusters_at + _e33);
+            uint _e35 = g_2;
+            uint _e40 = group_clusters(_e35, grid.x, grid.y, grid.z, grid.w);
+            if ((li_3 == 0u)) {
+                atomicExchange(hit_count, 0u);
+            }
+            memoryBarrierShared();
+            barrier();
+            if ((li_3 < _e40)) {
+                GpuBox cb = _group_0_binding_7_cs[(first + li_3)];
+                bool _e52 = box_overlaps_box(cb.lo, cb.hi, lo_1, hi_1);
+                if (_e52) {
+                    uint _e56 = atomicAdd(hit_count, 1u);
+                    cluster_hits[_e56] = (first + li_3);
+                }
+            }
+            memoryBarrierShared();
+            barrier();
+            uint _e60 = hit_count;
+            memoryBarrierShared();
+            barrier();
+            h = 0u;
+            bool loop_init_3 = true;
+            while(true) {
+                if (!loop_init_3) {
+                    uint _e98 = h;
+                    h = (_e98 + 1u);
+                }
+                loop_init_3 = false;
+                uint _e63 = h;
+                if ((_e63 < _e60)) {
+                } else {
+                    break;
+                }
+                {
+                    memoryBarrierShared();
+                    barrier();
+                    uint _e66 = list_count;
+                    memoryBarrierShared();
+                    barrier();
+                    if (((_e66 + CLUSTER) > MAX_TILE_LIGHTS)) {
+                        shade_list(_e66);
+                        memoryBarrierShared();
+                        barrier();
+                        if ((li_3 == 0u)) {
+                            atomicExchange(list_count, 0u);
+                        }
+                        memoryBarrierShared();
+                        barrier();
+                    }
+                    uint _e76 = h;
+                    uint _e78 = cluster_hits[_e76];
+                    uint _e79 = cluster_slot(_e78, li_3);
+                    GpuLight l_1 = _group_0_binding_4_cs[_e79];
+                    if (any(notEqual(l_1.intensity, vec3(0.0)))) {
+                        float _e89 = cull_r2_of(_e79);
+                        float _e90 = cull_radius(_e89);
+                        bool _e91 = sphere_overlaps_aabb(l_1.p0_, _e90, lo_1, hi_1);
+                        if (_e91) {
+                            uint _e95 = atomicAdd(list_count, 1u);
+                            tile_lights[_e95] = _e79;
+                        }
+                    }
+                }
+            }
+            memoryBarrierShared();
+            barrier();
+        }
+    }
+    memoryBarrierShared();
+    barrier();
+    uint _e104 = list_count;
+    memoryBarrierShared();
+    barrier();
+    shade_list(_e104);
+    return;
 }
 
 void main() {
     if (gl_LocalInvocationID == uvec3(0u)) {
         wg_lo = vec3[64](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
         wg_hi = vec3[64](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
-        tile_count = 0u;
+        wg_box = WorkgroupBox(vec3(0.0), vec3(0.0));
         tile_lights = uint[1024](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
+        list_count = 0u;
+        cluster_hits = uint[64](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
+        hit_count = 0u;
     }
     memoryBarrierShared();
     barrier();
@@ -235,14 +515,8 @@ void main() {
     uvec3 lid = gl_LocalInvocationID;
     uint li = gl_LocalInvocationIndex;
     bool local = false;
-    vec4 pos = vec4(0.0);
-    vec3 nrm = vec3(0.0);
+    vec4 p = vec4(0.0);
     bool local_1 = false;
-    vec3 e = vec3(0.0);
-    uint kept = 0u;
-    uint first = 0u;
-    uint j = 0u;
-    uint k = 0u;
     uint sub = wg.z;
     uint px = ((sub % P) + (((wg.x * TILE) + lid.x) * P));
     uint py = ((sub / P) + (((wg.y * TILE) + lid.y) * P));
@@ -257,128 +531,37 @@ void main() {
     uint _e38 = _group_0_binding_0_cs.width;
     uint pix = ((py * _e38) + px);
     if (inside) {
-        GbTexel _e47 = gbuffer_at(pix);
-        pos = _e47.position;
-        nrm = _e47.normal.xyz;
+        GbTexel _e44 = gbuffer_at(pix);
+        p = _e44.position;
+        nrm = _e44.normal.xyz;
     }
+    vec4 _e50 = p;
+    pos = _e50.xyz;
     if (inside) {
-        float _e54 = pos.w;
-        local_1 = (_e54 > 0.0);
+        float _e56 = p.w;
+        local_1 = (_e56 > 0.0);
     } else {
         local_1 = false;
     }
-    bool valid_1 = local_1;
-    vec4 _e59 = pos;
-    WorkgroupBox _e61 = workgroup_box(li, _e59.xyz, valid_1);
-    vec3 lo = _e61.lo;
-    vec3 hi = _e61.hi;
-    uint _e66 = _group_0_binding_0_cs.subset_shift;
-    uint _e68 = shifted_subset(sub, _e66, P);
-    uint _e71 = _group_0_binding_0_cs.lights_per_subset;
-    uint base = (_e68 * _e71);
-    bool loop_init_1 = true;
-    while(true) {
-        if (!loop_init_1) {
-            uint _e172 = first;
-            first = (_e172 + MAX_TILE_LIGHTS);
-        }
-        loop_init_1 = false;
-        uint _e80 = first;
-        uint _e83 = _group_0_binding_0_cs.lights_per_subset;
-        if ((_e80 < _e83)) {
-        } else {
-            break;
-        }
-        {
-            uint _e85 = first;
-            uint _e90 = _group_0_binding_0_cs.lights_per_subset;
-            uint end = min((_e85 + MAX_TILE_LIGHTS), _e90);
-            if ((li == 0u)) {
-                atomicExchange(tile_count, 0u);
-            }
-            memoryBarrierShared();
-            barrier();
-            uint _e96 = first;
-            j = (_e96 + li);
-            bool loop_init_2 = true;
-            while(true) {
-                if (!loop_init_2) {
-                    uint _e122 = j;
-                    j = (_e122 + THREADS);
-                }
-                loop_init_2 = false;
-                uint _e99 = j;
-                if ((_e99 < end)) {
-                } else {
-                    break;
-                }
-                {
-                    uint _e102 = j;
-                    vec3 _e106 = _group_0_binding_4_cs[(base + _e102)].p0_;
-                    uint _e108 = j;
-                    float _e111 = _group_0_binding_6_cs[(base + _e108)];
-                    float _e112 = cull_radius(_e111);
-                    bool _e113 = sphere_overlaps_aabb(_e106, _e112, lo, hi);
-                    if (_e113) {
-                        uint _e116 = atomicAdd(tile_count, 1u);
-                        if ((_e116 < MAX_TILE_LIGHTS)) {
-                            uint _e121 = j;
-                            tile_lights[_e116] = _e121;
-                        }
-                    }
-                }
-            }
-            memoryBarrierShared();
-            barrier();
-            uint _e126 = tile_count;
-            memoryBarrierShared();
-            barrier();
-            uint count = min(_e126, MAX_TILE_LIGHTS);
-            if (valid_1) {
-                k = 0u;
-                bool loop_init_3 = true;
-                while(true) {
-                    if (!loop_init_3) {
-                        uint _e170 = k;
-                        k = (_e170 + 1u);
-                    }
-                    loop_init_3 = false;
-                    uint _e131 = k;
-                    if ((_e131 < count)) {
-                    } else {
-                        break;
-                    }
-                    {
-                        uint _e134 = k;
-                        uint _e136 = tile_lights[_e134];
-                        uint j_1 = (base + _e136);
-                        GpuLight l = _group_0_binding_4_cs[j_1];
-                        vec4 _e141 = pos;
-                        vec3 v_3 = (_e141.xyz - l.p0_);
-                        float _e147 = _group_0_binding_6_cs[j_1];
-                        float _e151 = _group_0_binding_0_cs.near_r2_;
-                        float _e152 = vpl_far_fixed_share(_e147, dot(v_3, v_3), _e151);
-                        if ((_e152 > 0.0)) {
-                            vec3 _e156 = nrm;
-                            float _e159 = _group_0_binding_0_cs.min_d2_;
-                            float _e160 = vpl_transfer(l.p1_, _e156, v_3, _e159);
-                            float t_1 = (_e160 * _e152);
-                            vec3 _e162 = e;
-                            e = (_e162 + (l.intensity * t_1));
-                            uint _e166 = kept;
-                            kept = (_e166 + 1u);
-                        }
-                    }
-                }
-            }
-            memoryBarrierShared();
-            barrier();
-        }
+    bool _e60 = local_1;
+    valid = _e60;
+    vec3 _e62 = pos;
+    bool _e64 = valid;
+    WorkgroupBox _e65 = workgroup_box(li, _e62, _e64);
+    uint _e68 = _group_0_binding_0_cs.subset_shift;
+    uint _e70 = shifted_subset(sub, _e68, P);
+    bool _e71 = box_is_empty(_e65);
+    if (!(_e71)) {
+        uvec4 grid_1 = _group_0_binding_0_cs.far_grid;
+        uint _e80 = _group_0_binding_0_cs.lights_per_subset;
+        uint _e86 = _group_0_binding_0_cs.far_groups_at;
+        uint _e91 = group_count(grid_1.x, grid_1.y, grid_1.z, grid_1.w);
+        cull_tile(li, _e65.lo, _e65.hi, grid_1, (_e70 * (_e80 / CLUSTER)), (_e86 + (_e70 * _e91)));
     }
     if (inside) {
-        vec3 _e177 = e;
-        uint _e178 = kept;
-        _group_0_binding_7_cs[pix] = vec4(_e177, float(_e178));
+        vec3 _e97 = e;
+        uint _e99 = kept;
+        _group_0_binding_8_cs[pix] = vec4(_e97, float(_e99));
         return;
     } else {
         return;

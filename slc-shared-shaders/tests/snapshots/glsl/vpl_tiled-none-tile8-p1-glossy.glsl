@@ -19,9 +19,15 @@ struct VplParams {
     uint lights_per_subset;
     float min_d2_;
     float near_r2_;
-    uint near_blocks;
     uint subset_shift;
+    uint far_groups_at;
+    uint near_clusters_at;
+    uint near_groups_at;
+    uint box_count;
+    uint pad0_;
     uint pad1_;
+    uvec4 far_grid;
+    uvec4 near_grid;
 };
 struct GpuMaterial {
     vec3 albedo;
@@ -74,6 +80,8 @@ const float CULL_RADIUS_SCALE = 1.000001;
 const float SPHERE_PAD = 4.7683716e-7;
 const float SPHERE_HUGE = 3.4028235e38;
 const float SPHERE_PAD_ABS = 1e-18;
+const uint CLUSTER = 64u;
+const uint GROUP_SIDE = 8u;
 const float INV_PI = 0.31830987;
 const float MIN_D2_ = 1e-12;
 const float MAX_INTENSITY = 7.2057594e16;
@@ -87,7 +95,6 @@ const float F32_MAX = 3.4028235e38;
 const float DEPTH_NONE = 1e30;
 const float DEPTH_SIGMA = 0.05;
 const float COVER_WEIGHT = 0.1;
-const uint NEAR_BLOCK = 64u;
 const uint ROULETTE_DEPTH = 2u;
 const float TEMPORAL_MAX_HISTORY = 32.0;
 const float TEMPORAL_DEPTH_TOLERANCE = 0.01;
@@ -108,6 +115,8 @@ shared vec3 wg_lo[64];
 
 shared vec3 wg_hi[64];
 
+shared WorkgroupBox wg_box;
+
 layout(std140) uniform VplParams_block_0Compute { VplParams _group_0_binding_0_cs; };
 
 layout(std140) uniform ViewParams_block_1Compute { ViewParams _group_0_binding_1_cs; };
@@ -116,13 +125,27 @@ uniform sampler2D _group_0_binding_2_cs;
 
 uniform sampler2D _group_0_binding_3_cs;
 
-layout(std430) readonly buffer type_7_block_2Compute { GpuLight _group_0_binding_4_cs[]; };
+layout(std430) readonly buffer type_8_block_2Compute { GpuLight _group_0_binding_4_cs[]; };
 
-layout(std430) buffer type_8_block_3Compute { vec4 _group_0_binding_7_cs[]; };
+layout(std430) buffer type_9_block_3Compute { vec4 _group_0_binding_8_cs[]; };
 
-layout(std430) readonly buffer type_9_block_4Compute { GpuMaterial _group_0_binding_8_cs[]; };
+layout(std430) readonly buffer type_10_block_4Compute { GpuMaterial _group_0_binding_9_cs[]; };
 
-layout(std430) buffer type_8_block_5Compute { vec4 _group_0_binding_9_cs[]; };
+layout(std430) buffer type_9_block_5Compute { vec4 _group_0_binding_10_cs[]; };
+
+vec3 pos = vec3(0.0);
+
+vec3 nrm = vec3(0.0);
+
+bool valid = false;
+
+vec3 e = vec3(0.0);
+
+uint kept = 0u;
+
+vec3 s = vec3(0.0);
+
+Glossy g_1 = Glossy(GpuMaterial(vec3(0.0), 0.0, vec3(0.0), 0.0, vec3(0.0), 0.0), vec3(0.0), false);
 
 
 float vpl_transfer(vec3 n_l, vec3 n_x, vec3 v, float min_d2_) {
@@ -264,48 +287,61 @@ float vpl_far_weight(float d2_1, float near_r2_1) {
     return (1.0 - _e2);
 }
 
-WorkgroupBox workgroup_box(uint li_1, vec3 p, bool has) {
+WorkgroupBox workgroup_bounds(uint li_1, vec3 lo, vec3 hi) {
     uint stride = 32u;
-    wg_lo[li_1] = (has ? p : vec3(3.4028235e38));
-    wg_hi[li_1] = (has ? p : vec3(-3.4028235e38));
+    wg_lo[li_1] = lo;
+    wg_hi[li_1] = hi;
     memoryBarrierShared();
     barrier();
     bool loop_init = true;
     while(true) {
         if (!loop_init) {
-            uint _e42 = stride;
-            stride = (_e42 / 2u);
+            uint _e36 = stride;
+            stride = (_e36 / 2u);
         }
         loop_init = false;
-        uint _e15 = stride;
-        if ((_e15 > 0u)) {
+        uint _e9 = stride;
+        if ((_e9 > 0u)) {
         } else {
             break;
         }
         {
-            uint _e18 = stride;
-            if ((li_1 < _e18)) {
-                vec3 _e24 = wg_lo[li_1];
-                uint _e26 = stride;
-                vec3 _e29 = wg_lo[(li_1 + _e26)];
-                wg_lo[li_1] = min(_e24, _e29);
-                vec3 _e35 = wg_hi[li_1];
-                uint _e37 = stride;
-                vec3 _e40 = wg_hi[(li_1 + _e37)];
-                wg_hi[li_1] = max(_e35, _e40);
+            uint _e12 = stride;
+            if ((li_1 < _e12)) {
+                vec3 _e18 = wg_lo[li_1];
+                uint _e20 = stride;
+                vec3 _e23 = wg_lo[(li_1 + _e20)];
+                wg_lo[li_1] = min(_e18, _e23);
+                vec3 _e29 = wg_hi[li_1];
+                uint _e31 = stride;
+                vec3 _e34 = wg_hi[(li_1 + _e31)];
+                wg_hi[li_1] = max(_e29, _e34);
             }
             memoryBarrierShared();
             barrier();
         }
     }
-    vec3 _e47 = wg_lo[0];
-    vec3 _e50 = wg_hi[0];
-    return WorkgroupBox(_e47, _e50);
+    if ((li_1 == 0u)) {
+        vec3 _e44 = wg_lo[0];
+        vec3 _e47 = wg_hi[0];
+        wg_box = WorkgroupBox(_e44, _e47);
+    }
+    memoryBarrierShared();
+    barrier();
+    WorkgroupBox _e50 = wg_box;
+    memoryBarrierShared();
+    barrier();
+    return _e50;
+}
+
+WorkgroupBox workgroup_box(uint li_2, vec3 p_1, bool has) {
+    WorkgroupBox _e9 = workgroup_bounds(li_2, (has ? p_1 : vec3(3.4028235e38)), (has ? p_1 : vec3(-3.4028235e38)));
+    return _e9;
 }
 
 vec4 surface_at(ivec2 texel) {
-    vec4 p_1 = texelFetch(_group_0_binding_2_cs, texel, 0);
-    return ((p_1.w > 0.0) ? vec4(p_1.xyz, 1.0) : vec4(0.0));
+    vec4 p_2 = texelFetch(_group_0_binding_2_cs, texel, 0);
+    return ((p_2.w > 0.0) ? vec4(p_2.xyz, 1.0) : vec4(0.0));
 }
 
 GbTexel gbuffer_at(uint i) {
@@ -322,11 +358,11 @@ GbTexel gbuffer_at(uint i) {
     } else {
         local_6 = false;
     }
-    bool valid = local_6;
+    bool valid_1 = local_6;
     vec3 _e30 = _group_0_binding_1_cs.eye;
     vec3 v_6 = (_e12.xyz - _e30);
-    vec4 position = vec4(_e12.xyz, (valid ? 1.0 : 0.0));
-    vec4 normal = (valid ? vec4((n_4 / vec3(sqrt(len2_1))), sqrt(dot(v_6, v_6))) : vec4(0.0, 0.0, 0.0, 1e30));
+    vec4 position = vec4(_e12.xyz, (valid_1 ? 1.0 : 0.0));
+    vec4 normal = (valid_1 ? vec4((n_4 / vec3(sqrt(len2_1))), sqrt(dot(v_6, v_6))) : vec4(0.0, 0.0, 0.0, 1e30));
     return GbTexel(position, normal);
 }
 
@@ -335,15 +371,15 @@ Glossy glossy_at(uint i_1, vec3 x) {
     uint _e9 = _group_0_binding_1_cs.width;
     ivec2 texel_2 = ivec2(int((i_1 % _e4)), int((i_1 / _e9)));
     vec4 _e16 = texelFetch(_group_0_binding_3_cs, texel_2, 0);
-    GpuMaterial m_1 = _group_0_binding_8_cs[uint(_e16.w)];
+    GpuMaterial m_1 = _group_0_binding_9_cs[uint(_e16.w)];
     vec3 _e23 = _group_0_binding_1_cs.eye;
     bool _e29 = has_specular(m_1.metallic, m_1.f0_, m_1.f90_);
     return Glossy(m_1, normalize((_e23 - x)), _e29);
 }
 
-vec3 glossy_term(Glossy g_1, GpuLight l_4, vec3 n_3, vec3 v_5, float t) {
+vec3 glossy_term(Glossy g, GpuLight l_4, vec3 n_3, vec3 v_5, float t) {
     bool local_7 = false;
-    if (!(!(g_1.on))) {
+    if (!(!(g.on))) {
         local_7 = (t <= 0.0);
     } else {
         local_7 = true;
@@ -352,14 +388,41 @@ vec3 glossy_term(Glossy g_1, GpuLight l_4, vec3 n_3, vec3 v_5, float t) {
     if (_e13) {
         return vec3(0.0);
     }
-    vec3 _e30 = specular_correction(g_1.m.albedo, g_1.m.metallic, g_1.m.f0_, g_1.m.f90_, g_1.m.alpha, n_3, g_1.v, normalize(-(v_5)));
+    vec3 _e30 = specular_correction(g.m.albedo, g.m.metallic, g.m.f0_, g.m.f90_, g.m.alpha, n_3, g.v, normalize(-(v_5)));
     return ((l_4.intensity * _e30) * t);
+}
+
+void shade_light(uint j_1) {
+    GpuLight l_5 = _group_0_binding_4_cs[j_1];
+    vec3 _e5 = pos;
+    vec3 v_7 = (_e5 - l_5.p0_);
+    float _e11 = _group_0_binding_0_cs.near_r2_;
+    float _e12 = vpl_far_weight(dot(v_7, v_7), _e11);
+    if ((_e12 > 0.0)) {
+        vec3 _e17 = nrm;
+        float _e20 = _group_0_binding_0_cs.min_d2_;
+        float _e21 = vpl_transfer(l_5.p1_, _e17, v_7, _e20);
+        float t_3 = (_e21 * _e12);
+        vec3 _e24 = e;
+        e = (_e24 + (l_5.intensity * t_3));
+        vec3 _e29 = s;
+        Glossy _e31 = g_1;
+        vec3 _e33 = nrm;
+        vec3 _e34 = glossy_term(_e31, l_5, _e33, v_7, t_3);
+        s = (_e29 + _e34);
+        uint _e37 = kept;
+        kept = (_e37 + 1u);
+        return;
+    } else {
+        return;
+    }
 }
 
 void main() {
     if (gl_LocalInvocationID == uvec3(0u)) {
         wg_lo = vec3[64](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
         wg_hi = vec3[64](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
+        wg_box = WorkgroupBox(vec3(0.0), vec3(0.0));
     }
     memoryBarrierShared();
     barrier();
@@ -367,13 +430,8 @@ void main() {
     uvec3 lid = gl_LocalInvocationID;
     uint li = gl_LocalInvocationIndex;
     bool local = false;
-    vec4 pos = vec4(0.0);
-    vec3 nrm = vec3(0.0);
+    vec4 p = vec4(0.0);
     bool local_1 = false;
-    vec3 e = vec3(0.0);
-    uint kept = 0u;
-    vec3 s = vec3(0.0);
-    Glossy g = Glossy(GpuMaterial(vec3(0.0), 0.0, vec3(0.0), 0.0, vec3(0.0), 0.0), vec3(0.0), false);
     uint j = 0u;
     uint sub = wg.z;
     uint px = ((sub % P) + (((wg.x * TILE) + lid.x) * P));
@@ -389,76 +447,65 @@ void main() {
     uint _e38 = _group_0_binding_0_cs.width;
     uint pix = ((py * _e38) + px);
     if (inside) {
-        GbTexel _e47 = gbuffer_at(pix);
-        pos = _e47.position;
-        nrm = _e47.normal.xyz;
+        GbTexel _e44 = gbuffer_at(pix);
+        p = _e44.position;
+        nrm = _e44.normal.xyz;
     }
+    vec4 _e50 = p;
+    pos = _e50.xyz;
     if (inside) {
-        float _e54 = pos.w;
-        local_1 = (_e54 > 0.0);
+        float _e56 = p.w;
+        local_1 = (_e56 > 0.0);
     } else {
         local_1 = false;
     }
-    bool valid_1 = local_1;
-    vec4 _e59 = pos;
-    WorkgroupBox _e61 = workgroup_box(li, _e59.xyz, valid_1);
-    vec3 lo = _e61.lo;
-    vec3 hi = _e61.hi;
-    uint _e66 = _group_0_binding_0_cs.subset_shift;
-    uint _e68 = shifted_subset(sub, _e66, P);
-    uint _e71 = _group_0_binding_0_cs.lights_per_subset;
-    uint base_6 = (_e68 * _e71);
-    if (valid_1) {
-        vec4 _e82 = pos;
-        Glossy _e84 = glossy_at(pix, _e82.xyz);
-        g = _e84;
+    bool _e60 = local_1;
+    valid = _e60;
+    bool _e62 = valid;
+    if (_e62) {
+        vec3 _e65 = pos;
+        Glossy _e66 = glossy_at(pix, _e65);
+        g_1 = _e66;
     }
-    if (valid_1) {
+    vec3 _e68 = pos;
+    bool _e70 = valid;
+    WorkgroupBox _e71 = workgroup_box(li, _e68, _e70);
+    uint _e74 = _group_0_binding_0_cs.subset_shift;
+    uint _e76 = shifted_subset(sub, _e74, P);
+    bool _e78 = valid;
+    if (_e78) {
+        uint _e81 = _group_0_binding_0_cs.lights_per_subset;
+        uint base_6 = (_e76 * _e81);
         j = base_6;
         bool loop_init_1 = true;
         while(true) {
             if (!loop_init_1) {
-                uint _e127 = j;
-                j = (_e127 + 1u);
+                uint _e101 = j;
+                j = (_e101 + 1u);
             }
             loop_init_1 = false;
-            uint _e86 = j;
-            uint _e89 = _group_0_binding_0_cs.lights_per_subset;
-            if ((_e86 < (base_6 + _e89))) {
+            uint _e84 = j;
+            uint _e87 = _group_0_binding_0_cs.lights_per_subset;
+            if ((_e84 < (base_6 + _e87))) {
             } else {
                 break;
             }
             {
-                uint _e93 = j;
-                GpuLight l_5 = _group_0_binding_4_cs[_e93];
-                vec4 _e96 = pos;
-                vec3 v_7 = (_e96.xyz - l_5.p0_);
-                float _e103 = _group_0_binding_0_cs.near_r2_;
-                float _e104 = vpl_far_weight(dot(v_7, v_7), _e103);
-                if ((_e104 > 0.0)) {
-                    vec3 _e108 = nrm;
-                    float _e111 = _group_0_binding_0_cs.min_d2_;
-                    float _e112 = vpl_transfer(l_5.p1_, _e108, v_7, _e111);
-                    float t_3 = (_e112 * _e104);
-                    vec3 _e114 = e;
-                    e = (_e114 + (l_5.intensity * t_3));
-                    vec3 _e118 = s;
-                    Glossy _e119 = g;
-                    vec3 _e120 = nrm;
-                    vec3 _e121 = glossy_term(_e119, l_5, _e120, v_7, t_3);
-                    s = (_e118 + _e121);
-                    uint _e123 = kept;
-                    kept = (_e123 + 1u);
+                uint _e91 = j;
+                vec3 _e94 = _group_0_binding_4_cs[_e91].intensity;
+                if (any(notEqual(_e94, vec3(0.0)))) {
+                    uint _e99 = j;
+                    shade_light(_e99);
                 }
             }
         }
     }
     if (inside) {
-        vec3 _e131 = e;
-        uint _e132 = kept;
-        _group_0_binding_7_cs[pix] = vec4(_e131, float(_e132));
-        vec3 _e137 = s;
-        _group_0_binding_9_cs[pix] = vec4(_e137, 0.0);
+        vec3 _e106 = e;
+        uint _e108 = kept;
+        _group_0_binding_8_cs[pix] = vec4(_e106, float(_e108));
+        vec3 _e114 = s;
+        _group_0_binding_10_cs[pix] = vec4(_e114, 0.0);
         return;
     } else {
         return;

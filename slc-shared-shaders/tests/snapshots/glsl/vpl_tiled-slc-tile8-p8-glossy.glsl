@@ -19,9 +19,21 @@ struct VplParams {
     uint lights_per_subset;
     float min_d2_;
     float near_r2_;
-    uint near_blocks;
     uint subset_shift;
+    uint far_groups_at;
+    uint near_clusters_at;
+    uint near_groups_at;
+    uint box_count;
+    uint pad0_;
     uint pad1_;
+    uvec4 far_grid;
+    uvec4 near_grid;
+};
+struct GpuBox {
+    vec3 lo;
+    float pad0_;
+    vec3 hi;
+    float pad1_;
 };
 struct GpuMaterial {
     vec3 albedo;
@@ -74,6 +86,8 @@ const float CULL_RADIUS_SCALE = 1.000001;
 const float SPHERE_PAD = 4.7683716e-7;
 const float SPHERE_HUGE = 3.4028235e38;
 const float SPHERE_PAD_ABS = 1e-18;
+const uint CLUSTER = 64u;
+const uint GROUP_SIDE = 8u;
 const float INV_PI = 0.31830987;
 const float MIN_D2_ = 1e-12;
 const float MAX_INTENSITY = 7.2057594e16;
@@ -87,7 +101,6 @@ const float F32_MAX = 3.4028235e38;
 const float DEPTH_NONE = 1e30;
 const float DEPTH_SIGMA = 0.05;
 const float COVER_WEIGHT = 0.1;
-const uint NEAR_BLOCK = 64u;
 const uint ROULETTE_DEPTH = 2u;
 const float TEMPORAL_MAX_HISTORY = 32.0;
 const float TEMPORAL_DEPTH_TOLERANCE = 0.01;
@@ -108,6 +121,8 @@ shared vec3 wg_lo[64];
 
 shared vec3 wg_hi[64];
 
+shared WorkgroupBox wg_box;
+
 layout(std140) uniform VplParams_block_0Compute { VplParams _group_0_binding_0_cs; };
 
 layout(std140) uniform ViewParams_block_1Compute { ViewParams _group_0_binding_1_cs; };
@@ -116,21 +131,41 @@ uniform sampler2D _group_0_binding_2_cs;
 
 uniform sampler2D _group_0_binding_3_cs;
 
-layout(std430) readonly buffer type_8_block_2Compute { GpuLight _group_0_binding_4_cs[]; };
+layout(std430) readonly buffer type_9_block_2Compute { GpuLight _group_0_binding_4_cs[]; };
 
-layout(std430) readonly buffer type_4_block_3Compute { float _group_0_binding_5_cs[]; };
+layout(std430) readonly buffer type_5_block_3Compute { float _group_0_binding_5_cs[]; };
 
-layout(std430) readonly buffer type_4_block_4Compute { float _group_0_binding_6_cs[]; };
+layout(std430) readonly buffer type_5_block_4Compute { float _group_0_binding_6_cs[]; };
 
-layout(std430) buffer type_9_block_5Compute { vec4 _group_0_binding_7_cs[]; };
+layout(std430) readonly buffer type_10_block_5Compute { GpuBox _group_0_binding_7_cs[]; };
 
-layout(std430) readonly buffer type_10_block_6Compute { GpuMaterial _group_0_binding_8_cs[]; };
+layout(std430) buffer type_11_block_6Compute { vec4 _group_0_binding_8_cs[]; };
 
-layout(std430) buffer type_9_block_7Compute { vec4 _group_0_binding_9_cs[]; };
+layout(std430) readonly buffer type_12_block_7Compute { GpuMaterial _group_0_binding_9_cs[]; };
 
-shared uint tile_count;
+layout(std430) buffer type_11_block_8Compute { vec4 _group_0_binding_10_cs[]; };
+
+vec3 pos = vec3(0.0);
+
+vec3 nrm = vec3(0.0);
+
+bool valid = false;
+
+vec3 e = vec3(0.0);
+
+uint kept = 0u;
+
+vec3 s = vec3(0.0);
+
+Glossy g_4 = Glossy(GpuMaterial(vec3(0.0), 0.0, vec3(0.0), 0.0, vec3(0.0), 0.0), vec3(0.0), false);
 
 shared uint tile_lights[1024];
+
+shared uint list_count;
+
+shared uint cluster_hits[64];
+
+shared uint hit_count;
 
 
 float slc_weight(float rt2_, float d2_) {
@@ -154,6 +189,70 @@ bool sphere_overlaps_aabb(vec3 c, float r, vec3 bmin, vec3 bmax) {
     return (dot(v_6, v_6) <= (r * r));
 }
 
+uint groups_across(uint bw, uint gw) {
+    return (((bw + gw) - 1u) / gw);
+}
+
+uint group_count(uint bw_1, uint bh, uint gw_1, uint gh) {
+    uint _e4 = groups_across(bw_1, gw_1);
+    uint _e5 = groups_across(bh, gh);
+    return (_e4 * _e5);
+}
+
+uint group_first(uint g, uint bw_2, uint bh_1, uint gw_2, uint gh_1) {
+    uint _e5 = groups_across(bw_2, gw_2);
+    uint gx = (g % _e5);
+    uint gy = (g / _e5);
+    uint h_1 = min(gh_1, (bh_1 - (gh_1 * gy)));
+    return (((gy * gh_1) * bw_2) + ((gx * gw_2) * h_1));
+}
+
+uint group_clusters(uint g_1, uint bw_3, uint bh_2, uint gw_3, uint gh_2) {
+    uint _e5 = groups_across(bw_3, gw_3);
+    uint gx_1 = (g_1 % _e5);
+    uint gy_1 = (g_1 / _e5);
+    return (min(gw_3, (bw_3 - (gw_3 * gx_1))) * min(gh_2, (bh_2 - (gh_2 * gy_1))));
+}
+
+bool box_overlaps_box(vec3 lo1_, vec3 hi1_, vec3 lo2_, vec3 hi2_) {
+    bool local_2 = false;
+    bool local_3 = false;
+    bool local_4 = false;
+    bool local_5 = false;
+    bool local_6 = false;
+    if ((lo1_.x <= hi2_.x)) {
+        local_2 = (lo2_.x <= hi1_.x);
+    } else {
+        local_2 = false;
+    }
+    bool _e13 = local_2;
+    if (_e13) {
+        local_3 = (lo1_.y <= hi2_.y);
+    } else {
+        local_3 = false;
+    }
+    bool _e20 = local_3;
+    if (_e20) {
+        local_4 = (lo2_.y <= hi1_.y);
+    } else {
+        local_4 = false;
+    }
+    bool _e27 = local_4;
+    if (_e27) {
+        local_5 = (lo1_.z <= hi2_.z);
+    } else {
+        local_5 = false;
+    }
+    bool _e34 = local_5;
+    if (_e34) {
+        local_6 = (lo2_.z <= hi1_.z);
+    } else {
+        local_6 = false;
+    }
+    bool _e41 = local_6;
+    return _e41;
+}
+
 float vpl_transfer(vec3 n_l, vec3 n_x, vec3 v, float min_d2_) {
     float m = max(dot(v, v), max(min_d2_, MIN_D2_));
     return (((max(dot(n_l, v), 0.0) * max(-(dot(n_x, v)), 0.0)) * INV_PI) / (m * m));
@@ -174,13 +273,13 @@ float smith_root(float cos_, float alpha_1) {
 }
 
 float smith_visibility(float n_l_1, float n_v, float alpha_2) {
-    bool local_2 = false;
+    bool local_7 = false;
     if (!((n_l_1 <= 0.0))) {
-        local_2 = (n_v <= 0.0);
+        local_7 = (n_v <= 0.0);
     } else {
-        local_2 = true;
+        local_7 = true;
     }
-    bool _e11 = local_2;
+    bool _e11 = local_7;
     if (_e11) {
         return 0.0;
     }
@@ -190,9 +289,9 @@ float smith_visibility(float n_l_1, float n_v, float alpha_2) {
 }
 
 vec3 fresnel_schlick(vec3 f0_, float f90_, float v_h) {
-    float c_1 = clamp((1.0 - v_h), 0.0, 1.0);
-    float c2_ = (c_1 * c_1);
-    return (f0_ + ((vec3(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_1)));
+    float c_2 = clamp((1.0 - v_h), 0.0, 1.0);
+    float c2_ = (c_2 * c_2);
+    return (f0_ + ((vec3(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_2)));
 }
 
 vec3 specular_fresnel(vec3 base, float metallic, vec3 f0_d, float f90_d, float v_h_1) {
@@ -207,33 +306,33 @@ vec3 diffuse_brdf(vec3 base_1, float metallic_1, vec3 f0_d_1, float f90_d_1, flo
 }
 
 float half_cosine(vec3 v_1, vec3 l) {
-    vec3 h = (v_1 + l);
-    float len2_ = dot(h, h);
+    vec3 h_2 = (v_1 + l);
+    float len2_ = dot(h_2, h_2);
     if ((len2_ <= 0.0)) {
         return 0.0;
     }
-    return clamp((dot(v_1, h) / sqrt(len2_)), 0.0, 1.0);
+    return clamp((dot(v_1, h_2) / sqrt(len2_)), 0.0, 1.0);
 }
 
 vec3 specular_brdf(vec3 base_2, float metallic_2, vec3 f0_d_2, float f90_d_2, float alpha_3, vec3 n, vec3 v_2, vec3 l_1) {
-    bool local_3 = false;
+    bool local_8 = false;
     float n_l_2 = dot(n, l_1);
     float n_v_1 = dot(n, v_2);
     if (!((n_l_2 <= 0.0))) {
-        local_3 = (n_v_1 <= 0.0);
+        local_8 = (n_v_1 <= 0.0);
     } else {
-        local_3 = true;
+        local_8 = true;
     }
-    bool _e18 = local_3;
+    bool _e18 = local_8;
     if (_e18) {
         return vec3(0.0, 0.0, 0.0);
     }
     vec3 hs = (v_2 + l_1);
     float inv = (1.0 / sqrt(dot(hs, hs)));
-    vec3 h_1 = (hs * inv);
-    vec3 c_2 = cross(n, h_1);
-    float _e32 = ggx_d(dot(n, h_1), dot(c_2, c_2), alpha_3);
-    vec3 _e34 = specular_fresnel(base_2, metallic_2, f0_d_2, f90_d_2, dot(v_2, h_1));
+    vec3 h_3 = (hs * inv);
+    vec3 c_3 = cross(n, h_3);
+    float _e32 = ggx_d(dot(n, h_3), dot(c_3, c_3), alpha_3);
+    vec3 _e34 = specular_fresnel(base_2, metallic_2, f0_d_2, f90_d_2, dot(v_2, h_3));
     float _e35 = smith_visibility(n_l_2, n_v_1, alpha_3);
     return (_e34 * (_e32 * _e35));
 }
@@ -259,20 +358,20 @@ vec3 specular_correction(vec3 base_5, float metallic_5, vec3 f0_d_4, float f90_d
 }
 
 bool has_specular(float metallic_6, vec3 f0_d_5, float f90_d_5) {
-    bool local_4 = false;
-    bool local_5 = false;
+    bool local_9 = false;
+    bool local_10 = false;
     if (!((metallic_6 > 0.0))) {
-        local_4 = (f90_d_5 > 0.0);
+        local_9 = (f90_d_5 > 0.0);
     } else {
-        local_4 = true;
+        local_9 = true;
     }
-    bool _e11 = local_4;
+    bool _e11 = local_9;
     if (!(_e11)) {
-        local_5 = (max(max(f0_d_5.x, f0_d_5.y), f0_d_5.z) > 0.0);
+        local_10 = (max(max(f0_d_5.x, f0_d_5.y), f0_d_5.z) > 0.0);
     } else {
-        local_5 = true;
+        local_10 = true;
     }
-    bool _e23 = local_5;
+    bool _e23 = local_10;
     return _e23;
 }
 
@@ -300,52 +399,69 @@ float vpl_far_slc_share(float rt2_1, float r2_2, float d2_4, float near_r2_2) {
     return ((_e7 && (_e4 > 0.0)) ? (_e4 * _e5) : 0.0);
 }
 
-WorkgroupBox workgroup_box(uint li_1, vec3 p, bool has) {
+WorkgroupBox workgroup_bounds(uint li_1, vec3 lo, vec3 hi) {
     uint stride = 32u;
-    wg_lo[li_1] = (has ? p : vec3(3.4028235e38));
-    wg_hi[li_1] = (has ? p : vec3(-3.4028235e38));
+    wg_lo[li_1] = lo;
+    wg_hi[li_1] = hi;
     memoryBarrierShared();
     barrier();
     bool loop_init = true;
     while(true) {
         if (!loop_init) {
-            uint _e42 = stride;
-            stride = (_e42 / 2u);
+            uint _e36 = stride;
+            stride = (_e36 / 2u);
         }
         loop_init = false;
-        uint _e15 = stride;
-        if ((_e15 > 0u)) {
+        uint _e9 = stride;
+        if ((_e9 > 0u)) {
         } else {
             break;
         }
         {
-            uint _e18 = stride;
-            if ((li_1 < _e18)) {
-                vec3 _e24 = wg_lo[li_1];
-                uint _e26 = stride;
-                vec3 _e29 = wg_lo[(li_1 + _e26)];
-                wg_lo[li_1] = min(_e24, _e29);
-                vec3 _e35 = wg_hi[li_1];
-                uint _e37 = stride;
-                vec3 _e40 = wg_hi[(li_1 + _e37)];
-                wg_hi[li_1] = max(_e35, _e40);
+            uint _e12 = stride;
+            if ((li_1 < _e12)) {
+                vec3 _e18 = wg_lo[li_1];
+                uint _e20 = stride;
+                vec3 _e23 = wg_lo[(li_1 + _e20)];
+                wg_lo[li_1] = min(_e18, _e23);
+                vec3 _e29 = wg_hi[li_1];
+                uint _e31 = stride;
+                vec3 _e34 = wg_hi[(li_1 + _e31)];
+                wg_hi[li_1] = max(_e29, _e34);
             }
             memoryBarrierShared();
             barrier();
         }
     }
-    vec3 _e47 = wg_lo[0];
-    vec3 _e50 = wg_hi[0];
-    return WorkgroupBox(_e47, _e50);
+    if ((li_1 == 0u)) {
+        vec3 _e44 = wg_lo[0];
+        vec3 _e47 = wg_hi[0];
+        wg_box = WorkgroupBox(_e44, _e47);
+    }
+    memoryBarrierShared();
+    barrier();
+    WorkgroupBox _e50 = wg_box;
+    memoryBarrierShared();
+    barrier();
+    return _e50;
+}
+
+WorkgroupBox workgroup_box(uint li_2, vec3 p_1, bool has) {
+    WorkgroupBox _e9 = workgroup_bounds(li_2, (has ? p_1 : vec3(3.4028235e38)), (has ? p_1 : vec3(-3.4028235e38)));
+    return _e9;
+}
+
+bool box_is_empty(WorkgroupBox b) {
+    return (b.lo.x > b.hi.x);
 }
 
 vec4 surface_at(ivec2 texel) {
-    vec4 p_1 = texelFetch(_group_0_binding_2_cs, texel, 0);
-    return ((p_1.w > 0.0) ? vec4(p_1.xyz, 1.0) : vec4(0.0));
+    vec4 p_2 = texelFetch(_group_0_binding_2_cs, texel, 0);
+    return ((p_2.w > 0.0) ? vec4(p_2.xyz, 1.0) : vec4(0.0));
 }
 
 GbTexel gbuffer_at(uint i) {
-    bool local_6 = false;
+    bool local_11 = false;
     uint _e3 = _group_0_binding_1_cs.width;
     uint _e8 = _group_0_binding_1_cs.width;
     ivec2 texel_1 = ivec2(int((i % _e3)), int((i / _e8)));
@@ -354,15 +470,15 @@ GbTexel gbuffer_at(uint i) {
     vec3 n_4 = _e15.xyz;
     float len2_1 = dot(n_4, n_4);
     if ((_e12.w > 0.0)) {
-        local_6 = (len2_1 > 0.0);
+        local_11 = (len2_1 > 0.0);
     } else {
-        local_6 = false;
+        local_11 = false;
     }
-    bool valid = local_6;
+    bool valid_1 = local_11;
     vec3 _e30 = _group_0_binding_1_cs.eye;
     vec3 v_7 = (_e12.xyz - _e30);
-    vec4 position = vec4(_e12.xyz, (valid ? 1.0 : 0.0));
-    vec4 normal = (valid ? vec4((n_4 / vec3(sqrt(len2_1))), sqrt(dot(v_7, v_7))) : vec4(0.0, 0.0, 0.0, 1e30));
+    vec4 position = vec4(_e12.xyz, (valid_1 ? 1.0 : 0.0));
+    vec4 normal = (valid_1 ? vec4((n_4 / vec3(sqrt(len2_1))), sqrt(dot(v_7, v_7))) : vec4(0.0, 0.0, 0.0, 1e30));
     return GbTexel(position, normal);
 }
 
@@ -371,33 +487,207 @@ Glossy glossy_at(uint i_1, vec3 x) {
     uint _e9 = _group_0_binding_1_cs.width;
     ivec2 texel_2 = ivec2(int((i_1 % _e4)), int((i_1 / _e9)));
     vec4 _e16 = texelFetch(_group_0_binding_3_cs, texel_2, 0);
-    GpuMaterial m_1 = _group_0_binding_8_cs[uint(_e16.w)];
+    GpuMaterial m_1 = _group_0_binding_9_cs[uint(_e16.w)];
     vec3 _e23 = _group_0_binding_1_cs.eye;
     bool _e29 = has_specular(m_1.metallic, m_1.f0_, m_1.f90_);
     return Glossy(m_1, normalize((_e23 - x)), _e29);
 }
 
-vec3 glossy_term(Glossy g_1, GpuLight l_4, vec3 n_3, vec3 v_5, float t) {
-    bool local_7 = false;
-    if (!(!(g_1.on))) {
-        local_7 = (t <= 0.0);
+vec3 glossy_term(Glossy g_2, GpuLight l_4, vec3 n_3, vec3 v_5, float t) {
+    bool local_12 = false;
+    if (!(!(g_2.on))) {
+        local_12 = (t <= 0.0);
     } else {
-        local_7 = true;
+        local_12 = true;
     }
-    bool _e13 = local_7;
+    bool _e13 = local_12;
     if (_e13) {
         return vec3(0.0);
     }
-    vec3 _e30 = specular_correction(g_1.m.albedo, g_1.m.metallic, g_1.m.f0_, g_1.m.f90_, g_1.m.alpha, n_3, g_1.v, normalize(-(v_5)));
+    vec3 _e30 = specular_correction(g_2.m.albedo, g_2.m.metallic, g_2.m.f0_, g_2.m.f90_, g_2.m.alpha, n_3, g_2.v, normalize(-(v_5)));
     return ((l_4.intensity * _e30) * t);
+}
+
+void shade_light(uint j) {
+    GpuLight l_5 = _group_0_binding_4_cs[j];
+    vec3 _e5 = pos;
+    vec3 v_8 = (_e5 - l_5.p0_);
+    float _e10 = _group_0_binding_5_cs[j];
+    float _e13 = _group_0_binding_6_cs[j];
+    float _e17 = _group_0_binding_0_cs.near_r2_;
+    float _e18 = vpl_far_slc_share(_e10, _e13, dot(v_8, v_8), _e17);
+    if ((_e18 > 0.0)) {
+        vec3 _e23 = nrm;
+        float _e26 = _group_0_binding_0_cs.min_d2_;
+        float _e27 = vpl_transfer(l_5.p1_, _e23, v_8, _e26);
+        float t_3 = (_e27 * _e18);
+        vec3 _e30 = e;
+        e = (_e30 + (l_5.intensity * t_3));
+        vec3 _e35 = s;
+        Glossy _e37 = g_4;
+        vec3 _e39 = nrm;
+        vec3 _e40 = glossy_term(_e37, l_5, _e39, v_8, t_3);
+        s = (_e35 + _e40);
+        uint _e43 = kept;
+        kept = (_e43 + 1u);
+        return;
+    } else {
+        return;
+    }
+}
+
+uint cluster_slot(uint c_1, uint k) {
+    return ((c_1 * CLUSTER) + k);
+}
+
+float cull_r2_of(uint slot) {
+    float _e3 = _group_0_binding_6_cs[slot];
+    return _e3;
+}
+
+void shade_list(uint count) {
+    uint k_1 = 0u;
+    bool _e2 = valid;
+    if (_e2) {
+        bool loop_init_1 = true;
+        while(true) {
+            if (!loop_init_1) {
+                uint _e12 = k_1;
+                k_1 = (_e12 + 1u);
+            }
+            loop_init_1 = false;
+            uint _e5 = k_1;
+            if ((_e5 < count)) {
+            } else {
+                break;
+            }
+            {
+                uint _e8 = k_1;
+                uint _e10 = tile_lights[_e8];
+                shade_light(_e10);
+            }
+        }
+        return;
+    } else {
+        return;
+    }
+}
+
+void cull_tile(uint li_3, vec3 lo_1, vec3 hi_1, uvec4 grid, uint clusters_at, uint groups_at) {
+    uint g_3 = 0u;
+    uint h = 0u;
+    if ((li_3 == 0u)) {
+        atomicExchange(list_count, 0u);
+    }
+    uint _e14 = group_count(grid.x, grid.y, grid.z, grid.w);
+    bool loop_init_2 = true;
+    while(true) {
+        if (!loop_init_2) {
+            uint _e101 = g_3;
+            g_3 = (_e101 + 1u);
+        }
+        loop_init_2 = false;
+        uint _e17 = g_3;
+        if ((_e17 < _e14)) {
+        } else {
+            break;
+        }
+        {
+            uint _e20 = g_3;
+            GpuBox gb = _group_0_binding_7_cs[(groups_at + _e20)];
+            bool _e26 = box_overlaps_box(gb.lo, gb.hi, lo_1, hi_1);
+            if (!(_e26)) {
+                continue;
+            }
+            uint _e28 = g_3;
+            uint _e33 = group_first(_e28, grid.x, grid.y, grid.z, grid.w);
+            uint first = (clusters_at + _e33);
+            uint _e35 = g_3;
+            uint _e40 = group_clusters(_e35, grid.x, grid.y, grid.z, grid.w);
+            if ((li_3 == 0u)) {
+                atomicExchange(hit_count, 0u);
+            }
+            memoryBarrierShared();
+            barrier();
+            if ((li_3 < _e40)) {
+                GpuBox cb = _group_0_binding_7_cs[(first + li_3)];
+                bool _e52 = box_overlaps_box(cb.lo, cb.hi, lo_1, hi_1);
+                if (_e52) {
+                    uint _e56 = atomicAdd(hit_count, 1u);
+                    cluster_hits[_e56] = (first + li_3);
+                }
+            }
+            memoryBarrierShared();
+            barrier();
+            uint _e60 = hit_count;
+            memoryBarrierShared();
+            barrier();
+            h = 0u;
+            bool loop_init_3 = true;
+            while(true) {
+                if (!loop_init_3) {
+                    uint _e98 = h;
+                    h = (_e98 + 1u);
+                }
+                loop_init_3 = false;
+                uint _e63 = h;
+                if ((_e63 < _e60)) {
+                } else {
+                    break;
+                }
+                {
+                    memoryBarrierShared();
+                    barrier();
+                    uint _e66 = list_count;
+                    memoryBarrierShared();
+                    barrier();
+                    if (((_e66 + CLUSTER) > MAX_TILE_LIGHTS)) {
+                        shade_list(_e66);
+                        memoryBarrierShared();
+                        barrier();
+                        if ((li_3 == 0u)) {
+                            atomicExchange(list_count, 0u);
+                        }
+                        memoryBarrierShared();
+                        barrier();
+                    }
+                    uint _e76 = h;
+                    uint _e78 = cluster_hits[_e76];
+                    uint _e79 = cluster_slot(_e78, li_3);
+                    GpuLight l_6 = _group_0_binding_4_cs[_e79];
+                    if (any(notEqual(l_6.intensity, vec3(0.0)))) {
+                        float _e89 = cull_r2_of(_e79);
+                        float _e90 = cull_radius(_e89);
+                        bool _e91 = sphere_overlaps_aabb(l_6.p0_, _e90, lo_1, hi_1);
+                        if (_e91) {
+                            uint _e95 = atomicAdd(list_count, 1u);
+                            tile_lights[_e95] = _e79;
+                        }
+                    }
+                }
+            }
+            memoryBarrierShared();
+            barrier();
+        }
+    }
+    memoryBarrierShared();
+    barrier();
+    uint _e104 = list_count;
+    memoryBarrierShared();
+    barrier();
+    shade_list(_e104);
+    return;
 }
 
 void main() {
     if (gl_LocalInvocationID == uvec3(0u)) {
         wg_lo = vec3[64](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
         wg_hi = vec3[64](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
-        tile_count = 0u;
+        wg_box = WorkgroupBox(vec3(0.0), vec3(0.0));
         tile_lights = uint[1024](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
+        list_count = 0u;
+        cluster_hits = uint[64](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
+        hit_count = 0u;
     }
     memoryBarrierShared();
     barrier();
@@ -405,16 +695,8 @@ void main() {
     uvec3 lid = gl_LocalInvocationID;
     uint li = gl_LocalInvocationIndex;
     bool local = false;
-    vec4 pos = vec4(0.0);
-    vec3 nrm = vec3(0.0);
+    vec4 p = vec4(0.0);
     bool local_1 = false;
-    vec3 e = vec3(0.0);
-    uint kept = 0u;
-    vec3 s = vec3(0.0);
-    Glossy g = Glossy(GpuMaterial(vec3(0.0), 0.0, vec3(0.0), 0.0, vec3(0.0), 0.0), vec3(0.0), false);
-    uint first = 0u;
-    uint j = 0u;
-    uint k = 0u;
     uint sub = wg.z;
     uint px = ((sub % P) + (((wg.x * TILE) + lid.x) * P));
     uint py = ((sub / P) + (((wg.y * TILE) + lid.y) * P));
@@ -429,141 +711,45 @@ void main() {
     uint _e38 = _group_0_binding_0_cs.width;
     uint pix = ((py * _e38) + px);
     if (inside) {
-        GbTexel _e47 = gbuffer_at(pix);
-        pos = _e47.position;
-        nrm = _e47.normal.xyz;
+        GbTexel _e44 = gbuffer_at(pix);
+        p = _e44.position;
+        nrm = _e44.normal.xyz;
     }
+    vec4 _e50 = p;
+    pos = _e50.xyz;
     if (inside) {
-        float _e54 = pos.w;
-        local_1 = (_e54 > 0.0);
+        float _e56 = p.w;
+        local_1 = (_e56 > 0.0);
     } else {
         local_1 = false;
     }
-    bool valid_1 = local_1;
-    vec4 _e59 = pos;
-    WorkgroupBox _e61 = workgroup_box(li, _e59.xyz, valid_1);
-    vec3 lo = _e61.lo;
-    vec3 hi = _e61.hi;
-    uint _e66 = _group_0_binding_0_cs.subset_shift;
-    uint _e68 = shifted_subset(sub, _e66, P);
-    uint _e71 = _group_0_binding_0_cs.lights_per_subset;
-    uint base_6 = (_e68 * _e71);
-    if (valid_1) {
-        vec4 _e82 = pos;
-        Glossy _e84 = glossy_at(pix, _e82.xyz);
-        g = _e84;
+    bool _e60 = local_1;
+    valid = _e60;
+    bool _e62 = valid;
+    if (_e62) {
+        vec3 _e65 = pos;
+        Glossy _e66 = glossy_at(pix, _e65);
+        g_4 = _e66;
     }
-    bool loop_init_1 = true;
-    while(true) {
-        if (!loop_init_1) {
-            uint _e187 = first;
-            first = (_e187 + MAX_TILE_LIGHTS);
-        }
-        loop_init_1 = false;
-        uint _e87 = first;
-        uint _e90 = _group_0_binding_0_cs.lights_per_subset;
-        if ((_e87 < _e90)) {
-        } else {
-            break;
-        }
-        {
-            uint _e92 = first;
-            uint _e97 = _group_0_binding_0_cs.lights_per_subset;
-            uint end = min((_e92 + MAX_TILE_LIGHTS), _e97);
-            if ((li == 0u)) {
-                atomicExchange(tile_count, 0u);
-            }
-            memoryBarrierShared();
-            barrier();
-            uint _e103 = first;
-            j = (_e103 + li);
-            bool loop_init_2 = true;
-            while(true) {
-                if (!loop_init_2) {
-                    uint _e129 = j;
-                    j = (_e129 + THREADS);
-                }
-                loop_init_2 = false;
-                uint _e106 = j;
-                if ((_e106 < end)) {
-                } else {
-                    break;
-                }
-                {
-                    uint _e109 = j;
-                    vec3 _e113 = _group_0_binding_4_cs[(base_6 + _e109)].p0_;
-                    uint _e115 = j;
-                    float _e118 = _group_0_binding_6_cs[(base_6 + _e115)];
-                    float _e119 = cull_radius(_e118);
-                    bool _e120 = sphere_overlaps_aabb(_e113, _e119, lo, hi);
-                    if (_e120) {
-                        uint _e123 = atomicAdd(tile_count, 1u);
-                        if ((_e123 < MAX_TILE_LIGHTS)) {
-                            uint _e128 = j;
-                            tile_lights[_e123] = _e128;
-                        }
-                    }
-                }
-            }
-            memoryBarrierShared();
-            barrier();
-            uint _e133 = tile_count;
-            memoryBarrierShared();
-            barrier();
-            uint count = min(_e133, MAX_TILE_LIGHTS);
-            if (valid_1) {
-                k = 0u;
-                bool loop_init_3 = true;
-                while(true) {
-                    if (!loop_init_3) {
-                        uint _e185 = k;
-                        k = (_e185 + 1u);
-                    }
-                    loop_init_3 = false;
-                    uint _e138 = k;
-                    if ((_e138 < count)) {
-                    } else {
-                        break;
-                    }
-                    {
-                        uint _e141 = k;
-                        uint _e143 = tile_lights[_e141];
-                        uint j_1 = (base_6 + _e143);
-                        GpuLight l_5 = _group_0_binding_4_cs[j_1];
-                        vec4 _e148 = pos;
-                        vec3 v_8 = (_e148.xyz - l_5.p0_);
-                        float _e154 = _group_0_binding_5_cs[j_1];
-                        float _e157 = _group_0_binding_6_cs[j_1];
-                        float _e161 = _group_0_binding_0_cs.near_r2_;
-                        float _e162 = vpl_far_slc_share(_e154, _e157, dot(v_8, v_8), _e161);
-                        if ((_e162 > 0.0)) {
-                            vec3 _e166 = nrm;
-                            float _e169 = _group_0_binding_0_cs.min_d2_;
-                            float _e170 = vpl_transfer(l_5.p1_, _e166, v_8, _e169);
-                            float t_3 = (_e170 * _e162);
-                            vec3 _e172 = e;
-                            e = (_e172 + (l_5.intensity * t_3));
-                            vec3 _e176 = s;
-                            Glossy _e177 = g;
-                            vec3 _e178 = nrm;
-                            vec3 _e179 = glossy_term(_e177, l_5, _e178, v_8, t_3);
-                            s = (_e176 + _e179);
-                            uint _e181 = kept;
-                            kept = (_e181 + 1u);
-                        }
-                    }
-                }
-            }
-            memoryBarrierShared();
-            barrier();
-        }
+    vec3 _e68 = pos;
+    bool _e70 = valid;
+    WorkgroupBox _e71 = workgroup_box(li, _e68, _e70);
+    uint _e74 = _group_0_binding_0_cs.subset_shift;
+    uint _e76 = shifted_subset(sub, _e74, P);
+    bool _e77 = box_is_empty(_e71);
+    if (!(_e77)) {
+        uvec4 grid_1 = _group_0_binding_0_cs.far_grid;
+        uint _e86 = _group_0_binding_0_cs.lights_per_subset;
+        uint _e92 = _group_0_binding_0_cs.far_groups_at;
+        uint _e97 = group_count(grid_1.x, grid_1.y, grid_1.z, grid_1.w);
+        cull_tile(li, _e71.lo, _e71.hi, grid_1, (_e76 * (_e86 / CLUSTER)), (_e92 + (_e76 * _e97)));
     }
     if (inside) {
-        vec3 _e192 = e;
-        uint _e193 = kept;
-        _group_0_binding_7_cs[pix] = vec4(_e192, float(_e193));
-        vec3 _e198 = s;
-        _group_0_binding_9_cs[pix] = vec4(_e198, 0.0);
+        vec3 _e103 = e;
+        uint _e105 = kept;
+        _group_0_binding_8_cs[pix] = vec4(_e103, float(_e105));
+        vec3 _e111 = s;
+        _group_0_binding_10_cs[pix] = vec4(_e111, 0.0);
         return;
     } else {
         return;

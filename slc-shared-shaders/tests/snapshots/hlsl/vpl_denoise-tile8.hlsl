@@ -4,9 +4,15 @@ struct VplParams {
     uint lights_per_subset;
     float min_d2_;
     float near_r2_;
-    uint near_blocks;
     uint subset_shift;
+    uint far_groups_at;
+    uint near_clusters_at;
+    uint near_groups_at;
+    uint box_count;
+    uint pad0_;
     uint pad1_;
+    uint4 far_grid;
+    uint4 near_grid;
 };
 
 struct ViewParams {
@@ -54,6 +60,8 @@ static const float CULL_RADIUS_SCALE = 1.000001;
 static const float SPHERE_PAD = 4.7683716e-7;
 static const float SPHERE_HUGE = 3.4028235e38;
 static const float SPHERE_PAD_ABS = 1e-18;
+static const uint CLUSTER = 64u;
+static const uint GROUP_SIDE = 8u;
 static const float INV_PI = 0.31830987;
 static const float MIN_D2_ = 1e-12;
 static const float MAX_INTENSITY = 7.2057594e16;
@@ -67,7 +75,6 @@ static const float F32_MAX = 3.4028235e38;
 static const float DEPTH_NONE = 1e30;
 static const float DEPTH_SIGMA = 0.05;
 static const float COVER_WEIGHT = 0.1;
-static const uint NEAR_BLOCK = 64u;
 static const uint ROULETTE_DEPTH = 2u;
 static const float TEMPORAL_MAX_HISTORY = 32.0;
 static const float TEMPORAL_DEPTH_TOLERANCE = 0.01;

@@ -15,12 +15,18 @@ struct VplParams {
     uint lights_per_subset;
     float min_d2_;
     float near_r2_;
-    uint near_blocks;
     uint subset_shift;
+    uint far_groups_at;
+    uint near_clusters_at;
+    uint near_groups_at;
+    uint box_count;
+    uint pad0_;
     uint pad1_;
+    uint4 far_grid;
+    uint4 near_grid;
 };
 
-struct GpuNearBox {
+struct GpuBox {
     float3 lo;
     float pad0_;
     float3 hi;
@@ -70,6 +76,8 @@ static const float CULL_RADIUS_SCALE = 1.000001;
 static const float SPHERE_PAD = 4.7683716e-7;
 static const float SPHERE_HUGE = 3.4028235e38;
 static const float SPHERE_PAD_ABS = 1e-18;
+static const uint CLUSTER = 64u;
+static const uint GROUP_SIDE = 8u;
 static const float INV_PI = 0.31830987;
 static const float MIN_D2_ = 1e-12;
 static const float MAX_INTENSITY = 7.2057594e16;
@@ -83,7 +91,6 @@ static const float F32_MAX = 3.4028235e38;
 static const float DEPTH_NONE = 1e30;
 static const float DEPTH_SIGMA = 0.05;
 static const float COVER_WEIGHT = 0.1;
-static const uint NEAR_BLOCK = 64u;
 static const uint ROULETTE_DEPTH = 2u;
 static const float TEMPORAL_MAX_HISTORY = 32.0;
 static const float TEMPORAL_DEPTH_TOLERANCE = 0.01;
@@ -98,21 +105,29 @@ static const uint P = 8u;
 static const uint TILE = 8u;
 static const uint THREADS = 64u;
 static const uint BOX_THREADS = 64u;
-static const uint NEAR_CHUNK = 32u;
+static const uint MAX_TILE_LIGHTS = 1024u;
 
 groupshared float3 wg_lo[64];
 groupshared float3 wg_hi[64];
+groupshared WorkgroupBox wg_box;
 cbuffer params : register(b0) { VplParams params; }
 cbuffer view : register(b1) { ViewParams view; }
 Texture2D<float4> position_tex : register(t2);
 Texture2D<float4> normal_tex : register(t3);
 ByteAddressBuffer lights : register(t4);
 ByteAddressBuffer near_slots : register(t5);
-ByteAddressBuffer near_boxes : register(t6);
+ByteAddressBuffer boxes : register(t6);
 ByteAddressBuffer r2_2 : register(t8);
 RWByteAddressBuffer irradiance : register(u9);
-groupshared uint light_count;
-groupshared uint light_list[2048];
+static float3 pos = (float3)0;
+static float3 nrm = (float3)0;
+static bool valid = (bool)0;
+static float3 e = (float3)0;
+static uint kept = (uint)0;
+groupshared uint tile_lights[1024];
+groupshared uint list_count;
+groupshared uint cluster_hits[64];
+groupshared uint hit_count;
 
 float to_f32_(uint u)
 {
@@ -136,10 +151,88 @@ bool sphere_overlaps_aabb(float3 c, float r, float3 bmin, float3 bmax)
     return (dot(v_1, v_1) <= (r * r));
 }
 
+uint naga_div(uint lhs, uint rhs) {
+    return lhs / (rhs == 0u ? 1u : rhs);
+}
+
+uint groups_across(uint bw, uint gw)
+{
+    return naga_div(((bw + gw) - 1u), gw);
+}
+
+uint group_count(uint bw_1, uint bh, uint gw_1, uint gh)
+{
+    const uint _e4 = groups_across(bw_1, gw_1);
+    const uint _e5 = groups_across(bh, gh);
+    return (_e4 * _e5);
+}
+
+uint naga_mod(uint lhs, uint rhs) {
+    return lhs % (rhs == 0u ? 1u : rhs);
+}
+
+uint group_first(uint g, uint bw_2, uint bh_1, uint gw_2, uint gh_1)
+{
+    const uint _e5 = groups_across(bw_2, gw_2);
+    uint gx = naga_mod(g, _e5);
+    uint gy = naga_div(g, _e5);
+    uint h_1 = min(gh_1, (bh_1 - (gh_1 * gy)));
+    return (((gy * gh_1) * bw_2) + ((gx * gw_2) * h_1));
+}
+
+uint group_clusters(uint g_1, uint bw_3, uint bh_2, uint gw_3, uint gh_2)
+{
+    const uint _e5 = groups_across(bw_3, gw_3);
+    uint gx_1 = naga_mod(g_1, _e5);
+    uint gy_1 = naga_div(g_1, _e5);
+    return (min(gw_3, (bw_3 - (gw_3 * gx_1))) * min(gh_2, (bh_2 - (gh_2 * gy_1))));
+}
+
+bool box_overlaps_box(float3 lo1_, float3 hi1_, float3 lo2_, float3 hi2_)
+{
+    bool local_2 = (bool)0;
+    bool local_3 = (bool)0;
+    bool local_4 = (bool)0;
+    bool local_5 = (bool)0;
+    bool local_6 = (bool)0;
+
+    if ((lo1_.x <= hi2_.x)) {
+        local_2 = (lo2_.x <= hi1_.x);
+    } else {
+        local_2 = false;
+    }
+    bool _e13 = local_2;
+    if (_e13) {
+        local_3 = (lo1_.y <= hi2_.y);
+    } else {
+        local_3 = false;
+    }
+    bool _e20 = local_3;
+    if (_e20) {
+        local_4 = (lo2_.y <= hi1_.y);
+    } else {
+        local_4 = false;
+    }
+    bool _e27 = local_4;
+    if (_e27) {
+        local_5 = (lo1_.z <= hi2_.z);
+    } else {
+        local_5 = false;
+    }
+    bool _e34 = local_5;
+    if (_e34) {
+        local_6 = (lo2_.z <= hi1_.z);
+    } else {
+        local_6 = false;
+    }
+    bool _e41 = local_6;
+    return _e41;
+}
+
 float vpl_transfer(float3 n_l, float3 n_x, float3 v, float min_d2_)
 {
-    float m_2 = max(dot(v, v), max(min_d2_, MIN_D2_));
-    return (((max(dot(n_l, v), 0.0) * max(-(dot(n_x, v)), 0.0)) * INV_PI) / (m_2 * m_2));
+    float m_1 = max(dot(v, v), max(min_d2_, MIN_D2_));
+    return (((max(dot(n_l, v), 0.0) * max(-(dot(n_x, v)), 0.0)) * INV_PI) / (m_1 * m_1));
 }
 
 float interleave_flux_scale(uint period)
@@ -169,10 +262,6 @@ float vpl_near_fixed_share(float range2_1, float d2_2, float near_r2_2)
     return ((_e4 & (_e3 > 0.0)) ? _e3 : 0.0);
 }
 
-uint naga_div(uint lhs, uint rhs) {
-    return lhs / (rhs == 0u ? 1u : rhs);
-}
-
 WorkgroupBox ConstructWorkgroupBox(float3 arg0, float3 arg1) {
     WorkgroupBox ret = (WorkgroupBox)0;
     ret.lo = arg0;
@@ -180,12 +269,12 @@ WorkgroupBox ConstructWorkgroupBox(float3 arg0, float3 arg1) {
     return ret;
 }
 
-WorkgroupBox workgroup_box(uint li_1, float3 p, bool has)
+WorkgroupBox workgroup_bounds(uint li_1, float3 lo, float3 hi)
 {
     uint stride = 32u;
 
-    wg_lo[min(uint(li_1), 63u)] = (has ? p : (3.4028235e38).xxx);
-    wg_hi[min(uint(li_1), 63u)] = (has ? p : (-3.4028235e38).xxx);
+    wg_lo[min(uint(li_1), 63u)] = lo;
+    wg_hi[min(uint(li_1), 63u)] = hi;
     GroupMemoryBarrierWithGroupSync();
     uint2 loop_bound = uint2(4294967295u, 4294967295u);
     bool loop_init = true;
@@ -193,44 +282,58 @@ WorkgroupBox workgroup_box(uint li_1, float3 p, bool has)
         if (all(loop_bound == uint2(0u, 0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         if (!loop_init) {
-            uint _e42 = stride;
-            stride = naga_div(_e42, 2u);
+            uint _e36 = stride;
+            stride = naga_div(_e36, 2u);
         }
         loop_init = false;
-        uint _e15 = stride;
-        if ((_e15 > 0u)) {
+        uint _e9 = stride;
+        if ((_e9 > 0u)) {
         } else {
             break;
         }
         {
-            uint _e18 = stride;
-            if ((li_1 < _e18)) {
-                float3 _e24 = wg_lo[min(uint(li_1), 63u)];
-                uint _e26 = stride;
-                float3 _e29 = wg_lo[min(uint((li_1 + _e26)), 63u)];
-                wg_lo[min(uint(li_1), 63u)] = min(_e24, _e29);
-                float3 _e35 = wg_hi[min(uint(li_1), 63u)];
-                uint _e37 = stride;
-                float3 _e40 = wg_hi[min(uint((li_1 + _e37)), 63u)];
-                wg_hi[min(uint(li_1), 63u)] = max(_e35, _e40);
+            uint _e12 = stride;
+            if ((li_1 < _e12)) {
+                float3 _e18 = wg_lo[min(uint(li_1), 63u)];
+                uint _e20 = stride;
+                float3 _e23 = wg_lo[min(uint((li_1 + _e20)), 63u)];
+                wg_lo[min(uint(li_1), 63u)] = min(_e18, _e23);
+                float3 _e29 = wg_hi[min(uint(li_1), 63u)];
+                uint _e31 = stride;
+                float3 _e34 = wg_hi[min(uint((li_1 + _e31)), 63u)];
+                wg_hi[min(uint(li_1), 63u)] = max(_e29, _e34);
             }
             GroupMemoryBarrierWithGroupSync();
         }
     }
-    float3 _e47 = wg_lo[0];
-    float3 _e50 = wg_hi[0];
-    const WorkgroupBox workgroupbox = ConstructWorkgroupBox(_e47, _e50);
+    if ((li_1 == 0u)) {
+        float3 _e44 = wg_lo[0];
+        float3 _e47 = wg_hi[0];
+        wg_box = ConstructWorkgroupBox(_e44, _e47);
+    }
+    GroupMemoryBarrierWithGroupSync();
+    WorkgroupBox _e50 = wg_box;
+    GroupMemoryBarrierWithGroupSync();
+    const WorkgroupBox workgroupbox = _e50;
     return workgroupbox;
+}
+
+WorkgroupBox workgroup_box(uint li_2, float3 p_1, bool has)
+{
+    const WorkgroupBox _e9 = workgroup_bounds(li_2, (has ? p_1 : (3.4028235e38).xxx), (has ? p_1 : (-3.4028235e38).xxx));
+    const WorkgroupBox workgroupbox_1 = _e9;
+    return workgroupbox_1;
+}
+
+bool box_is_empty(WorkgroupBox b)
+{
+    return (b.lo.x > b.hi.x);
 }
 
 float4 surface_at(int2 texel)
 {
-    float4 p_1 = position_tex.Load(int3(texel, int(0)));
-    return ((p_1.w > 0.0) ? float4(p_1.xyz, 1.0) : (0.0).xxxx);
-}
-
-uint naga_mod(uint lhs, uint rhs) {
-    return lhs % (rhs == 0u ? 1u : rhs);
+    float4 p_2 = position_tex.Load(int3(texel, int(0)));
+    return ((p_2.w > 0.0) ? float4(p_2.xyz, 1.0) : (0.0).xxxx);
 }
 
 GbTexel ConstructGbTexel(float4 arg0, float4 arg1) {
@@ -242,7 +345,7 @@ GbTexel ConstructGbTexel(float4 arg0, float4 arg1) {
 
 GbTexel gbuffer_at(uint i)
 {
-    bool local_5 = (bool)0;
+    bool local_7 = (bool)0;
 
     uint _e3 = view.width;
     uint _e8 = view.width;
@@ -252,15 +355,15 @@ GbTexel gbuffer_at(uint i)
     float3 n = _e15.xyz;
     float len2_ = dot(n, n);
     if ((_e12.w > 0.0)) {
-        local_5 = (len2_ > 0.0);
+        local_7 = (len2_ > 0.0);
     } else {
-        local_5 = false;
+        local_7 = false;
     }
-    bool valid = local_5;
+    bool valid_1 = local_7;
     float3 _e30 = view.eye;
     float3 v_2 = (_e12.xyz - _e30);
-    float4 position = float4(_e12.xyz, (valid ? 1.0 : 0.0));
-    float4 normal = (valid ? float4((n / (sqrt(len2_)).xxx), sqrt(dot(v_2, v_2))) : float4(0.0, 0.0, 0.0, 1e30));
+    float4 position = float4(_e12.xyz, (valid_1 ? 1.0 : 0.0));
+    float4 normal = (valid_1 ? float4((n / (sqrt(len2_)).xxx), sqrt(dot(v_2, v_2))) : float4(0.0, 0.0, 0.0, 1e30));
     const GbTexel gbtexel = ConstructGbTexel(position, normal);
     return gbtexel;
 }
@@ -271,13 +374,25 @@ float near_r2_of(uint slot)
     return _e3;
 }
 
-GpuNearBox ConstructGpuNearBox(float3 arg0, float arg1, float3 arg2, float arg3) {
-    GpuNearBox ret = (GpuNearBox)0;
-    ret.lo = arg0;
-    ret.pad0_ = arg1;
-    ret.hi = arg2;
-    ret.pad1_ = arg3;
-    return ret;
+float near_cull_r2_of(uint slot_1, float near_r2_3)
+{
+    const float _e2 = near_r2_of(slot_1);
+    const float _e3 = vpl_near_cull_range2_(_e2, near_r2_3);
+    return _e3;
+}
+
+uint cluster_slot(uint c_1, uint k)
+{
+    uint _e5 = params.near_clusters_at;
+    uint _e11 = asuint(near_slots.Load((((c_1 - _e5) * CLUSTER) + k)*4));
+    return _e11;
+}
+
+float cull_r2_of(uint slot_2)
+{
+    float _e3 = params.near_r2_;
+    const float _e4 = near_cull_r2_of(slot_2, _e3);
+    return _e4;
 }
 
 GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, float3 arg4, float arg5, float3 arg6, uint arg7) {
@@ -293,28 +408,184 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
     return ret;
 }
 
+void shade_list(uint count)
+{
+    uint m = 0u;
+
+    bool _e2 = valid;
+    if (!(_e2)) {
+        return;
+    }
+    const float _e5 = interleave_flux_scale(P);
+    float unscale = (1.0 / _e5);
+    uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
+    bool loop_init_1 = true;
+    while(true) {
+        if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
+        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+        if (!loop_init_1) {
+            uint _e52 = m;
+            m = (_e52 + 1u);
+        }
+        loop_init_1 = false;
+        uint _e10 = m;
+        if ((_e10 < count)) {
+        } else {
+            break;
+        }
+        {
+            uint _e13 = m;
+            uint slot_3 = tile_lights[min(uint(_e13), 1023u)];
+            GpuLight l = ConstructGpuLight(asfloat(lights.Load3(slot_3*64+0)), asuint(lights.Load(slot_3*64+12)), asfloat(lights.Load3(slot_3*64+16)), asfloat(lights.Load(slot_3*64+28)), asfloat(lights.Load3(slot_3*64+32)), asfloat(lights.Load(slot_3*64+44)), asfloat(lights.Load3(slot_3*64+48)), asuint(lights.Load(slot_3*64+60)));
+            float3 _e20 = pos;
+            float3 v_3 = (_e20 - l.p0_);
+            float _e25 = asfloat(r2_2.Load(slot_3*4));
+            float _e29 = params.near_r2_;
+            const float _e30 = vpl_near_fixed_share(_e25, dot(v_3, v_3), _e29);
+            if ((_e30 > 0.0)) {
+                float3 _e35 = nrm;
+                float _e38 = params.min_d2_;
+                const float _e39 = vpl_transfer(l.p1_, _e35, v_3, _e38);
+                float t_1 = ((_e39 * _e30) * unscale);
+                float3 _e43 = e;
+                e = (_e43 + (l.intensity * t_1));
+                uint _e48 = kept;
+                kept = (_e48 + 1u);
+            }
+        }
+    }
+    return;
+}
+
+GpuBox ConstructGpuBox(float3 arg0, float arg1, float3 arg2, float arg3) {
+    GpuBox ret = (GpuBox)0;
+    ret.lo = arg0;
+    ret.pad0_ = arg1;
+    ret.hi = arg2;
+    ret.pad1_ = arg3;
+    return ret;
+}
+
+void cull_tile(uint li_3, float3 lo_1, float3 hi_1, uint4 grid, uint clusters_at, uint groups_at)
+{
+    uint g_2 = 0u;
+    uint h = (uint)0;
+
+    if ((li_3 == 0u)) {
+        { uint dummy = 0; InterlockedExchange(list_count, 0u, dummy); }
+    }
+    const uint _e14 = group_count(grid.x, grid.y, grid.z, grid.w);
+    uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
+    bool loop_init_2 = true;
+    while(true) {
+        if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
+        loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
+        if (!loop_init_2) {
+            uint _e101 = g_2;
+            g_2 = (_e101 + 1u);
+        }
+        loop_init_2 = false;
+        uint _e17 = g_2;
+        if ((_e17 < _e14)) {
+        } else {
+            break;
+        }
+        {
+            uint _e20 = g_2;
+            GpuBox gb = ConstructGpuBox(asfloat(boxes.Load3((groups_at + _e20)*32+0)), asfloat(boxes.Load((groups_at + _e20)*32+12)), asfloat(boxes.Load3((groups_at + _e20)*32+16)), asfloat(boxes.Load((groups_at + _e20)*32+28)));
+            const bool _e26 = box_overlaps_box(gb.lo, gb.hi, lo_1, hi_1);
+            if (!(_e26)) {
+                continue;
+            }
+            uint _e28 = g_2;
+            const uint _e33 = group_first(_e28, grid.x, grid.y, grid.z, grid.w);
+            uint first = (clusters_at + _e33);
+            uint _e35 = g_2;
+            const uint _e40 = group_clusters(_e35, grid.x, grid.y, grid.z, grid.w);
+            if ((li_3 == 0u)) {
+                { uint dummy_1 = 0; InterlockedExchange(hit_count, 0u, dummy_1); }
+            }
+            GroupMemoryBarrierWithGroupSync();
+            if ((li_3 < _e40)) {
+                GpuBox cb = ConstructGpuBox(asfloat(boxes.Load3((first + li_3)*32+0)), asfloat(boxes.Load((first + li_3)*32+12)), asfloat(boxes.Load3((first + li_3)*32+16)), asfloat(boxes.Load((first + li_3)*32+28)));
+                const bool _e52 = box_overlaps_box(cb.lo, cb.hi, lo_1, hi_1);
+                if (_e52) {
+                    uint _e56; InterlockedAdd(hit_count, 1u, _e56);
+                    cluster_hits[min(uint(_e56), 63u)] = (first + li_3);
+                }
+            }
+            GroupMemoryBarrierWithGroupSync();
+            uint _e60 = hit_count;
+            GroupMemoryBarrierWithGroupSync();
+            h = 0u;
+            uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
+            bool loop_init_3 = true;
+            while(true) {
+                if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
+                loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+                if (!loop_init_3) {
+                    uint _e98 = h;
+                    h = (_e98 + 1u);
+                }
+                loop_init_3 = false;
+                uint _e63 = h;
+                if ((_e63 < _e60)) {
+                } else {
+                    break;
+                }
+                {
+                    GroupMemoryBarrierWithGroupSync();
+                    uint _e66 = list_count;
+                    GroupMemoryBarrierWithGroupSync();
+                    if (((_e66 + CLUSTER) > MAX_TILE_LIGHTS)) {
+                        shade_list(_e66);
+                        GroupMemoryBarrierWithGroupSync();
+                        if ((li_3 == 0u)) {
+                            { uint dummy_2 = 0; InterlockedExchange(list_count, 0u, dummy_2); }
+                        }
+                        GroupMemoryBarrierWithGroupSync();
+                    }
+                    uint _e76 = h;
+                    uint _e78 = cluster_hits[min(uint(_e76), 63u)];
+                    const uint _e79 = cluster_slot(_e78, li_3);
+                    GpuLight l_1 = ConstructGpuLight(asfloat(lights.Load3(_e79*64+0)), asuint(lights.Load(_e79*64+12)), asfloat(lights.Load3(_e79*64+16)), asfloat(lights.Load(_e79*64+28)), asfloat(lights.Load3(_e79*64+32)), asfloat(lights.Load(_e79*64+44)), asfloat(lights.Load3(_e79*64+48)), asuint(lights.Load(_e79*64+60)));
+                    if (any((l_1.intensity != (0.0).xxx))) {
+                        const float _e89 = cull_r2_of(_e79);
+                        const float _e90 = cull_radius(_e89);
+                        const bool _e91 = sphere_overlaps_aabb(l_1.p0_, _e90, lo_1, hi_1);
+                        if (_e91) {
+                            uint _e95; InterlockedAdd(list_count, 1u, _e95);
+                            tile_lights[min(uint(_e95), 1023u)] = _e79;
+                        }
+                    }
+                }
+            }
+            GroupMemoryBarrierWithGroupSync();
+        }
+    }
+    GroupMemoryBarrierWithGroupSync();
+    uint _e104 = list_count;
+    GroupMemoryBarrierWithGroupSync();
+    shade_list(_e104);
+    return;
+}
+
 [numthreads(8, 8, 1)]
 void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_GroupIndex)
 {
     if (li == 0) {
         wg_lo = (float3[64])0;
         wg_hi = (float3[64])0;
-        light_count = (uint)0;
-        light_list = (uint[2048])0;
+        wg_box = (WorkgroupBox)0;
+        tile_lights = (uint[1024])0;
+        list_count = (uint)0;
+        cluster_hits = (uint[64])0;
+        hit_count = (uint)0;
     }
     GroupMemoryBarrierWithGroupSync();
     bool local = (bool)0;
-    float4 pos = (0.0).xxxx;
-    float3 nrm = (0.0).xxx;
+    float4 p = (0.0).xxxx;
     bool local_1 = (bool)0;
-    float3 e = (0.0).xxx;
-    uint kept = 0u;
-    uint first = 0u;
-    bool local_2 = (bool)0;
-    bool local_3 = (bool)0;
-    uint m = (uint)0;
-    bool local_4 = (bool)0;
-    uint m_1 = (uint)0;
 
     uint px = ((wg.x * TILE) + lid.x);
     uint py = ((wg.y * TILE) + lid.y);
@@ -329,153 +600,36 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
     uint _e27 = params.width;
     uint pix = ((py * _e27) + px);
     if (inside) {
-        const GbTexel _e36 = gbuffer_at(pix);
-        pos = _e36.position;
-        nrm = _e36.normal.xyz;
+        const GbTexel _e33 = gbuffer_at(pix);
+        p = _e33.position;
+        nrm = _e33.normal.xyz;
     }
+    float4 _e39 = p;
+    pos = _e39.xyz;
     if (inside) {
-        float _e43 = pos.w;
-        local_1 = (_e43 > 0.0);
+        float _e45 = p.w;
+        local_1 = (_e45 > 0.0);
     } else {
         local_1 = false;
     }
-    bool valid_1 = local_1;
-    float4 _e48 = pos;
-    const WorkgroupBox _e50 = workgroup_box(li, _e48.xyz, valid_1);
-    float3 lo = _e50.lo;
-    float3 hi = _e50.hi;
-    float _e55 = params.near_r2_;
-    const float _e56 = cull_radius(_e55);
-    const float _e58 = interleave_flux_scale(P);
-    float unscale = (1.0 / _e58);
-    uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
-    bool loop_init_1 = true;
-    while(true) {
-        if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
-        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
-        if (!loop_init_1) {
-            uint _e191 = first;
-            first = (_e191 + NEAR_CHUNK);
-        }
-        loop_init_1 = false;
-        uint _e68 = first;
-        uint _e71 = params.near_blocks;
-        if ((_e68 < _e71)) {
-        } else {
-            break;
-        }
-        {
-            if ((li == 0u)) {
-                { uint dummy = 0; InterlockedExchange(light_count, 0u, dummy); }
-            }
-            GroupMemoryBarrierWithGroupSync();
-            uint _e77 = first;
-            uint b = (_e77 + li);
-            if ((li < NEAR_CHUNK)) {
-                uint _e85 = params.near_blocks;
-                local_2 = (b < _e85);
-            } else {
-                local_2 = false;
-            }
-            bool _e88 = local_2;
-            if (_e88) {
-                GpuNearBox nb = ConstructGpuNearBox(asfloat(near_boxes.Load3(b*32+0)), asfloat(near_boxes.Load(b*32+12)), asfloat(near_boxes.Load3(b*32+16)), asfloat(near_boxes.Load(b*32+28)));
-                if (all(((nb.lo - (_e56).xxx) <= hi))) {
-                    local_3 = all((lo <= (nb.hi + (_e56).xxx)));
-                } else {
-                    local_3 = false;
-                }
-                bool _e105 = local_3;
-                if (_e105) {
-                    m = 0u;
-                    uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
-                    bool loop_init_2 = true;
-                    while(true) {
-                        if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
-                        loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
-                        if (!loop_init_2) {
-                            uint _e144 = m;
-                            m = (_e144 + 1u);
-                        }
-                        loop_init_2 = false;
-                        uint _e108 = m;
-                        if ((_e108 < NEAR_BLOCK)) {
-                        } else {
-                            break;
-                        }
-                        {
-                            uint _e114 = m;
-                            uint slot_1 = asuint(near_slots.Load(((b * NEAR_BLOCK) + _e114)*4));
-                            GpuLight l = ConstructGpuLight(asfloat(lights.Load3(slot_1*64+0)), asuint(lights.Load(slot_1*64+12)), asfloat(lights.Load3(slot_1*64+16)), asfloat(lights.Load(slot_1*64+28)), asfloat(lights.Load3(slot_1*64+32)), asfloat(lights.Load(slot_1*64+44)), asfloat(lights.Load3(slot_1*64+48)), asuint(lights.Load(slot_1*64+60)));
-                            const float _e121 = near_r2_of(slot_1);
-                            float _e124 = params.near_r2_;
-                            const float _e125 = vpl_near_cull_range2_(_e121, _e124);
-                            const float _e126 = cull_radius(_e125);
-                            if (any((l.intensity != (0.0).xxx))) {
-                                const bool _e135 = sphere_overlaps_aabb(l.p0_, _e126, lo, hi);
-                                local_4 = _e135;
-                            } else {
-                                local_4 = false;
-                            }
-                            bool _e137 = local_4;
-                            if (_e137) {
-                                uint _e141; InterlockedAdd(light_count, 1u, _e141);
-                                light_list[min(uint(_e141), 2047u)] = slot_1;
-                            }
-                        }
-                    }
-                }
-            }
-            GroupMemoryBarrierWithGroupSync();
-            uint _e147 = light_count;
-            GroupMemoryBarrierWithGroupSync();
-            if (valid_1) {
-                m_1 = 0u;
-                uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
-                bool loop_init_3 = true;
-                while(true) {
-                    if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
-                    loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-                    if (!loop_init_3) {
-                        uint _e189 = m_1;
-                        m_1 = (_e189 + 1u);
-                    }
-                    loop_init_3 = false;
-                    uint _e150 = m_1;
-                    if ((_e150 < _e147)) {
-                    } else {
-                        break;
-                    }
-                    {
-                        uint _e153 = m_1;
-                        uint slot_2 = light_list[min(uint(_e153), 2047u)];
-                        GpuLight l_1 = ConstructGpuLight(asfloat(lights.Load3(slot_2*64+0)), asuint(lights.Load(slot_2*64+12)), asfloat(lights.Load3(slot_2*64+16)), asfloat(lights.Load(slot_2*64+28)), asfloat(lights.Load3(slot_2*64+32)), asfloat(lights.Load(slot_2*64+44)), asfloat(lights.Load3(slot_2*64+48)), asuint(lights.Load(slot_2*64+60)));
-                        float4 _e159 = pos;
-                        float3 v_3 = (_e159.xyz - l_1.p0_);
-                        float _e165 = asfloat(r2_2.Load(slot_2*4));
-                        float _e169 = params.near_r2_;
-                        const float _e170 = vpl_near_fixed_share(_e165, dot(v_3, v_3), _e169);
-                        if ((_e170 > 0.0)) {
-                            float3 _e174 = nrm;
-                            float _e177 = params.min_d2_;
-                            const float _e178 = vpl_transfer(l_1.p1_, _e174, v_3, _e177);
-                            float t_1 = ((_e178 * _e170) * unscale);
-                            float3 _e181 = e;
-                            e = (_e181 + (l_1.intensity * t_1));
-                            uint _e185 = kept;
-                            kept = (_e185 + 1u);
-                        }
-                    }
-                }
-            }
-            GroupMemoryBarrierWithGroupSync();
-        }
+    bool _e49 = local_1;
+    valid = _e49;
+    float3 _e51 = pos;
+    bool _e53 = valid;
+    const WorkgroupBox _e54 = workgroup_box(li, _e51, _e53);
+    const bool _e55 = box_is_empty(_e54);
+    if (!(_e55)) {
+        uint4 _e61 = params.near_grid;
+        uint _e64 = params.near_clusters_at;
+        uint _e67 = params.near_groups_at;
+        cull_tile(li, _e54.lo, _e54.hi, _e61, _e64, _e67);
     }
-    if (valid_1) {
+    bool _e69 = valid;
+    if (_e69) {
         float4 old = asfloat(irradiance.Load4(pix*16));
-        float3 _e200 = e;
-        uint _e203 = kept;
-        irradiance.Store4(pix*16, asuint(float4((old.xyz + _e200), (old.w + float(_e203)))));
+        float3 _e77 = e;
+        uint _e81 = kept;
+        irradiance.Store4(pix*16, asuint(float4((old.xyz + _e77), (old.w + float(_e81)))));
         return;
     } else {
         return;

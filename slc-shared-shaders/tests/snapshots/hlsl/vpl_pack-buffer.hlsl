@@ -9,13 +9,6 @@ struct GpuLight {
     uint ies_base;
 };
 
-struct GpuNearBox {
-    float3 lo;
-    float pad0_;
-    float3 hi;
-    float pad1_;
-};
-
 struct GpuVplRecord {
     float3 position;
     float pad0_;
@@ -40,13 +33,6 @@ struct PackParams {
     uint pad2_;
 };
 
-struct WorkgroupBox {
-    float3 lo;
-    int _pad1_0;
-    float3 hi;
-    int _end_pad_0;
-};
-
 static const uint LIGHT_POINT = 0u;
 static const uint LIGHT_SPOT = 1u;
 static const uint LIGHT_IES = 2u;
@@ -63,6 +49,8 @@ static const float CULL_RADIUS_SCALE = 1.000001;
 static const float SPHERE_PAD = 4.7683716e-7;
 static const float SPHERE_HUGE = 3.4028235e38;
 static const float SPHERE_PAD_ABS = 1e-18;
+static const uint CLUSTER = 64u;
+static const uint GROUP_SIDE = 8u;
 static const float INV_PI = 0.31830987;
 static const float MIN_D2_ = 1e-12;
 static const float MAX_INTENSITY = 7.2057594e16;
@@ -76,7 +64,6 @@ static const float F32_MAX = 3.4028235e38;
 static const float DEPTH_NONE = 1e30;
 static const float DEPTH_SIGMA = 0.05;
 static const float COVER_WEIGHT = 0.1;
-static const uint NEAR_BLOCK = 64u;
 static const uint ROULETTE_DEPTH = 2u;
 static const float TEMPORAL_MAX_HISTORY = 32.0;
 static const float TEMPORAL_DEPTH_TOLERANCE = 0.01;
@@ -88,7 +75,6 @@ static const float TEMPORAL_CHANGE_LOW = 4.0;
 static const float TEMPORAL_CHANGE_HIGH = 8.0;
 static const float TEMPORAL_MIN_WEIGHT = 0.01;
 static const uint P = 8u;
-static const uint BOX_THREADS = 64u;
 
 cbuffer params : register(b0) { PackParams params; }
 ByteAddressBuffer records : register(t1);
@@ -97,9 +83,6 @@ RWByteAddressBuffer ids : register(u5);
 RWByteAddressBuffer rt2_ : register(u6);
 RWByteAddressBuffer r2_ : register(u7);
 RWByteAddressBuffer near_slots : register(u8);
-RWByteAddressBuffer near_boxes : register(u9);
-groupshared float3 wg_lo[64];
-groupshared float3 wg_hi[64];
 
 float threshold_range2_(float intensity, float exposure, float error_bound)
 {
@@ -126,68 +109,68 @@ float vpl_rt2_(float3 flux_1, float exposure_1, float error_bound_1, uint mode_1
 
 bool finite3_(float3 v)
 {
+    bool local = (bool)0;
     bool local_1 = (bool)0;
-    bool local_2 = (bool)0;
 
     if ((abs(v.x) <= F32_MAX)) {
-        local_1 = (abs(v.y) <= F32_MAX);
+        local = (abs(v.y) <= F32_MAX);
+    } else {
+        local = false;
+    }
+    bool _e12 = local;
+    if (_e12) {
+        local_1 = (abs(v.z) <= F32_MAX);
     } else {
         local_1 = false;
     }
-    bool _e12 = local_1;
-    if (_e12) {
-        local_2 = (abs(v.z) <= F32_MAX);
-    } else {
-        local_2 = false;
-    }
-    bool _e20 = local_2;
+    bool _e20 = local_1;
     return _e20;
 }
 
-bool vpl_record_ok(float3 position_1, float3 normal_1, float3 flux_2)
+bool vpl_record_ok(float3 position, float3 normal_1, float3 flux_2)
 {
+    bool local_2 = (bool)0;
     bool local_3 = (bool)0;
     bool local_4 = (bool)0;
     bool local_5 = (bool)0;
     bool local_6 = (bool)0;
-    bool local_7 = (bool)0;
 
-    const bool _e3 = finite3_(position_1);
+    const bool _e3 = finite3_(position);
     if (_e3) {
         const bool _e6 = finite3_(normal_1);
-        local_3 = _e6;
+        local_2 = _e6;
+    } else {
+        local_2 = false;
+    }
+    bool _e8 = local_2;
+    if (_e8) {
+        const bool _e11 = finite3_(flux_2);
+        local_3 = _e11;
     } else {
         local_3 = false;
     }
-    bool _e8 = local_3;
-    if (_e8) {
-        const bool _e11 = finite3_(flux_2);
-        local_4 = _e11;
-    } else {
-        local_4 = false;
-    }
-    bool _e13 = local_4;
+    bool _e13 = local_3;
     if (!(_e13)) {
         return false;
     }
     if ((flux_2.x >= 0.0)) {
-        local_5 = (flux_2.y >= 0.0);
+        local_4 = (flux_2.y >= 0.0);
+    } else {
+        local_4 = false;
+    }
+    bool _e25 = local_4;
+    if (_e25) {
+        local_5 = (flux_2.z >= 0.0);
     } else {
         local_5 = false;
     }
-    bool _e25 = local_5;
-    if (_e25) {
-        local_6 = (flux_2.z >= 0.0);
+    bool _e32 = local_5;
+    if (_e32) {
+        local_6 = ((max(max(flux_2.x, flux_2.y), flux_2.z) * INV_PI) <= MAX_INTENSITY);
     } else {
         local_6 = false;
     }
-    bool _e32 = local_6;
-    if (_e32) {
-        local_7 = ((max(max(flux_2.x, flux_2.y), flux_2.z) * INV_PI) <= MAX_INTENSITY);
-    } else {
-        local_7 = false;
-    }
-    bool _e45 = local_7;
+    bool _e45 = local_6;
     return _e45;
 }
 
@@ -205,56 +188,6 @@ uint interleave_slot_linear(uint i, uint per_subset, uint period)
     return ((naga_mod(i, subsets) * per_subset) + naga_div(i, subsets));
 }
 
-WorkgroupBox ConstructWorkgroupBox(float3 arg0, float3 arg1) {
-    WorkgroupBox ret = (WorkgroupBox)0;
-    ret.lo = arg0;
-    ret.hi = arg1;
-    return ret;
-}
-
-WorkgroupBox workgroup_box(uint li_1, float3 p_1, bool has)
-{
-    uint stride = 32u;
-
-    wg_lo[min(uint(li_1), 63u)] = (has ? p_1 : (3.4028235e38).xxx);
-    wg_hi[min(uint(li_1), 63u)] = (has ? p_1 : (-3.4028235e38).xxx);
-    GroupMemoryBarrierWithGroupSync();
-    uint2 loop_bound = uint2(4294967295u, 4294967295u);
-    bool loop_init = true;
-    while(true) {
-        if (all(loop_bound == uint2(0u, 0u))) { break; }
-        loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        if (!loop_init) {
-            uint _e42 = stride;
-            stride = naga_div(_e42, 2u);
-        }
-        loop_init = false;
-        uint _e15 = stride;
-        if ((_e15 > 0u)) {
-        } else {
-            break;
-        }
-        {
-            uint _e18 = stride;
-            if ((li_1 < _e18)) {
-                float3 _e24 = wg_lo[min(uint(li_1), 63u)];
-                uint _e26 = stride;
-                float3 _e29 = wg_lo[min(uint((li_1 + _e26)), 63u)];
-                wg_lo[min(uint(li_1), 63u)] = min(_e24, _e29);
-                float3 _e35 = wg_hi[min(uint(li_1), 63u)];
-                uint _e37 = stride;
-                float3 _e40 = wg_hi[min(uint((li_1 + _e37)), 63u)];
-                wg_hi[min(uint(li_1), 63u)] = max(_e35, _e40);
-            }
-            GroupMemoryBarrierWithGroupSync();
-        }
-    }
-    float3 _e47 = wg_lo[0];
-    float3 _e50 = wg_hi[0];
-    const WorkgroupBox workgroupbox = ConstructWorkgroupBox(_e47, _e50);
-    return workgroupbox;
-}
-
 GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, float3 arg4, float arg5, float3 arg6, uint arg7) {
     GpuLight ret = (GpuLight)0;
     ret.p0_ = arg0;
@@ -265,15 +198,6 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
     ret.b = arg5;
     ret.intensity = arg6;
     ret.ies_base = arg7;
-    return ret;
-}
-
-GpuNearBox ConstructGpuNearBox(float3 arg0, float arg1, float3 arg2, float arg3) {
-    GpuNearBox ret = (GpuNearBox)0;
-    ret.lo = arg0;
-    ret.pad0_ = arg1;
-    ret.hi = arg2;
-    ret.pad1_ = arg3;
     return ret;
 }
 
@@ -289,92 +213,60 @@ GpuVplRecord ConstructGpuVplRecord(float3 arg0, float arg1, float3 arg2, float a
 }
 
 [numthreads(64, 1, 1)]
-void main(uint3 gid : SV_DispatchThreadID, uint3 wg : SV_GroupID, uint li : SV_GroupIndex)
+void main(uint3 gid : SV_DispatchThreadID)
 {
-    if (li == 0) {
-        wg_lo = (float3[64])0;
-        wg_hi = (float3[64])0;
-    }
-    GroupMemoryBarrierWithGroupSync();
-    float3 position = (0.0).xxx;
-    bool lit_ = false;
     float3 p = (float3)0;
     float3 normal = (float3)0;
     float3 flux = (float3)0;
-    bool local = (bool)0;
 
     uint i_1 = gid.x;
-    uint _e6 = params.count;
-    bool inside = (i_1 < _e6);
-    if (inside) {
-        GpuVplRecord r = ConstructGpuVplRecord(asfloat(records.Load3(i_1*48+0)), asfloat(records.Load(i_1*48+12)), asfloat(records.Load3(i_1*48+16)), asfloat(records.Load(i_1*48+28)), asfloat(records.Load3(i_1*48+32)), asfloat(records.Load(i_1*48+44)));
-        p = r.position;
-        normal = r.normal;
-        flux = r.flux;
-        uint _e24 = params.per_subset;
-        const uint _e26 = interleave_slot_linear(i_1, _e24, P);
-        float3 _e27 = p;
-        float3 _e28 = normal;
-        float3 _e29 = flux;
-        const bool _e30 = vpl_record_ok(_e27, _e28, _e29);
-        if (!(_e30)) {
-            p = (0.0).xxx;
-            normal = (0.0).xxx;
-            flux = (0.0).xxx;
-        }
-        float3 _e38 = p;
-        position = _e38;
-        float3 _e39 = flux;
-        float _e42 = params.scale;
-        flux = (_e39 * _e42);
-        float3 _e46 = position;
-        float3 _e48 = normal;
-        float3 _e51 = flux;
-        {
-            GpuLight _value3 = ConstructGpuLight(_e46, LIGHT_VPL, _e48, 0.0, (0.0).xxx, 0.0, _e51, 0u);
-            lights.Store3(_e26*64+0, asuint(_value3.p0_));
-            lights.Store(_e26*64+12, asuint(_value3.kind));
-            lights.Store3(_e26*64+16, asuint(_value3.p1_));
-            lights.Store(_e26*64+28, asuint(_value3.a));
-            lights.Store3(_e26*64+32, asuint(_value3.p2_));
-            lights.Store(_e26*64+44, asuint(_value3.b));
-            lights.Store3(_e26*64+48, asuint(_value3.intensity));
-            lights.Store(_e26*64+60, asuint(_value3.ies_base));
-        }
-        ids.Store(_e26*4, asuint(i_1));
-        uint _e60 = params.slc;
-        bool slc = (_e60 != 0u);
-        float3 _e65 = flux;
-        float _e68 = params.exposure;
-        float _e71 = params.error_bound;
-        uint _e74 = params.mode;
-        const float _e75 = vpl_rt2_(_e65, _e68, _e71, _e74);
-        rt2_.Store(_e26*4, asuint((slc ? _e75 : 0.0)));
-        float _e82 = params.fixed_r2_;
-        r2_.Store(_e26*4, asuint((slc ? 0.0 : _e82)));
-        near_slots.Store(i_1*4, asuint(_e26));
-        float3 _e87 = flux;
-        lit_ = any((_e87 != (0.0).xxx));
-    }
-    float3 _e92 = position;
-    bool _e93 = lit_;
-    const WorkgroupBox _e94 = workgroup_box(li, _e92, _e93);
-    if ((li == 0u)) {
-        local = inside;
-    } else {
-        local = false;
-    }
-    bool _e100 = local;
-    if (_e100) {
-        {
-            GpuNearBox _value3 = ConstructGpuNearBox(_e94.lo, 0.0, _e94.hi, 0.0);
-            near_boxes.Store3(wg.x*32+0, asuint(_value3.lo));
-            near_boxes.Store(wg.x*32+12, asuint(_value3.pad0_));
-            near_boxes.Store3(wg.x*32+16, asuint(_value3.hi));
-            near_boxes.Store(wg.x*32+28, asuint(_value3.pad1_));
-        }
-        return;
-    } else {
+    uint _e4 = params.count;
+    if ((i_1 >= _e4)) {
         return;
     }
+    GpuVplRecord r = ConstructGpuVplRecord(asfloat(records.Load3(i_1*48+0)), asfloat(records.Load(i_1*48+12)), asfloat(records.Load3(i_1*48+16)), asfloat(records.Load(i_1*48+28)), asfloat(records.Load3(i_1*48+32)), asfloat(records.Load(i_1*48+44)));
+    p = r.position;
+    normal = r.normal;
+    flux = r.flux;
+    uint _e17 = params.per_subset;
+    const uint _e19 = interleave_slot_linear(i_1, _e17, P);
+    float3 _e20 = p;
+    float3 _e21 = normal;
+    float3 _e22 = flux;
+    const bool _e23 = vpl_record_ok(_e20, _e21, _e22);
+    if (!(_e23)) {
+        p = (0.0).xxx;
+        normal = (0.0).xxx;
+        flux = (0.0).xxx;
+    }
+    float3 _e31 = flux;
+    float _e34 = params.scale;
+    flux = (_e31 * _e34);
+    float3 _e38 = p;
+    float3 _e40 = normal;
+    float3 _e43 = flux;
+    {
+        GpuLight _value2 = ConstructGpuLight(_e38, LIGHT_VPL, _e40, 0.0, (0.0).xxx, 0.0, _e43, 0u);
+        lights.Store3(_e19*64+0, asuint(_value2.p0_));
+        lights.Store(_e19*64+12, asuint(_value2.kind));
+        lights.Store3(_e19*64+16, asuint(_value2.p1_));
+        lights.Store(_e19*64+28, asuint(_value2.a));
+        lights.Store3(_e19*64+32, asuint(_value2.p2_));
+        lights.Store(_e19*64+44, asuint(_value2.b));
+        lights.Store3(_e19*64+48, asuint(_value2.intensity));
+        lights.Store(_e19*64+60, asuint(_value2.ies_base));
+    }
+    ids.Store(_e19*4, asuint(i_1));
+    uint _e52 = params.slc;
+    bool slc = (_e52 != 0u);
+    float3 _e57 = flux;
+    float _e60 = params.exposure;
+    float _e63 = params.error_bound;
+    uint _e66 = params.mode;
+    const float _e67 = vpl_rt2_(_e57, _e60, _e63, _e66);
+    rt2_.Store(_e19*4, asuint((slc ? _e67 : 0.0)));
+    float _e74 = params.fixed_r2_;
+    r2_.Store(_e19*4, asuint((slc ? 0.0 : _e74)));
+    near_slots.Store(i_1*4, asuint(_e19));
+    return;
 }

@@ -15,9 +15,22 @@ struct VplParams {
     uint lights_per_subset;
     float min_d2_;
     float near_r2_;
-    uint near_blocks;
     uint subset_shift;
+    uint far_groups_at;
+    uint near_clusters_at;
+    uint near_groups_at;
+    uint box_count;
+    uint pad0_;
     uint pad1_;
+    uint4 far_grid;
+    uint4 near_grid;
+};
+
+struct GpuBox {
+    float3 lo;
+    float pad0_;
+    float3 hi;
+    float pad1_;
 };
 
 struct ViewParams {
@@ -63,6 +76,8 @@ static const float CULL_RADIUS_SCALE = 1.000001;
 static const float SPHERE_PAD = 4.7683716e-7;
 static const float SPHERE_HUGE = 3.4028235e38;
 static const float SPHERE_PAD_ABS = 1e-18;
+static const uint CLUSTER = 64u;
+static const uint GROUP_SIDE = 8u;
 static const float INV_PI = 0.31830987;
 static const float MIN_D2_ = 1e-12;
 static const float MAX_INTENSITY = 7.2057594e16;
@@ -76,7 +91,6 @@ static const float F32_MAX = 3.4028235e38;
 static const float DEPTH_NONE = 1e30;
 static const float DEPTH_SIGMA = 0.05;
 static const float COVER_WEIGHT = 0.1;
-static const uint NEAR_BLOCK = 64u;
 static const uint ROULETTE_DEPTH = 2u;
 static const float TEMPORAL_MAX_HISTORY = 32.0;
 static const float TEMPORAL_DEPTH_TOLERANCE = 0.01;
@@ -95,15 +109,24 @@ static const uint MAX_TILE_LIGHTS = 1024u;
 
 groupshared float3 wg_lo[64];
 groupshared float3 wg_hi[64];
+groupshared WorkgroupBox wg_box;
 cbuffer params : register(b0) { VplParams params; }
 cbuffer view : register(b1) { ViewParams view; }
 Texture2D<float4> position_tex : register(t2);
 Texture2D<float4> normal_tex : register(t3);
 ByteAddressBuffer lights : register(t4);
 ByteAddressBuffer r2_1 : register(t6);
-RWByteAddressBuffer irradiance : register(u7);
-groupshared uint tile_count;
+ByteAddressBuffer boxes : register(t7);
+RWByteAddressBuffer irradiance : register(u8);
+static float3 pos = (float3)0;
+static float3 nrm = (float3)0;
+static bool valid = (bool)0;
+static float3 e = (float3)0;
+static uint kept = (uint)0;
 groupshared uint tile_lights[1024];
+groupshared uint list_count;
+groupshared uint cluster_hits[64];
+groupshared uint hit_count;
 
 bool clamp_keep(float range2_, float d2_)
 {
@@ -122,14 +145,88 @@ bool sphere_overlaps_aabb(float3 c, float r, float3 bmin, float3 bmax)
     return (dot(v_1, v_1) <= (r * r));
 }
 
-float vpl_transfer(float3 n_l, float3 n_x, float3 v, float min_d2_)
+uint naga_div(uint lhs, uint rhs) {
+    return lhs / (rhs == 0u ? 1u : rhs);
+}
+
+uint groups_across(uint bw, uint gw)
 {
-    float m = max(dot(v, v), max(min_d2_, MIN_D2_));
-    return (((max(dot(n_l, v), 0.0) * max(-(dot(n_x, v)), 0.0)) * INV_PI) / (m * m));
+    return naga_div(((bw + gw) - 1u), gw);
+}
+
+uint group_count(uint bw_1, uint bh, uint gw_1, uint gh)
+{
+    const uint _e4 = groups_across(bw_1, gw_1);
+    const uint _e5 = groups_across(bh, gh);
+    return (_e4 * _e5);
 }
 
 uint naga_mod(uint lhs, uint rhs) {
     return lhs % (rhs == 0u ? 1u : rhs);
+}
+
+uint group_first(uint g, uint bw_2, uint bh_1, uint gw_2, uint gh_1)
+{
+    const uint _e5 = groups_across(bw_2, gw_2);
+    uint gx = naga_mod(g, _e5);
+    uint gy = naga_div(g, _e5);
+    uint h_1 = min(gh_1, (bh_1 - (gh_1 * gy)));
+    return (((gy * gh_1) * bw_2) + ((gx * gw_2) * h_1));
+}
+
+uint group_clusters(uint g_1, uint bw_3, uint bh_2, uint gw_3, uint gh_2)
+{
+    const uint _e5 = groups_across(bw_3, gw_3);
+    uint gx_1 = naga_mod(g_1, _e5);
+    uint gy_1 = naga_div(g_1, _e5);
+    return (min(gw_3, (bw_3 - (gw_3 * gx_1))) * min(gh_2, (bh_2 - (gh_2 * gy_1))));
+}
+
+bool box_overlaps_box(float3 lo1_, float3 hi1_, float3 lo2_, float3 hi2_)
+{
+    bool local_2 = (bool)0;
+    bool local_3 = (bool)0;
+    bool local_4 = (bool)0;
+    bool local_5 = (bool)0;
+    bool local_6 = (bool)0;
+
+    if ((lo1_.x <= hi2_.x)) {
+        local_2 = (lo2_.x <= hi1_.x);
+    } else {
+        local_2 = false;
+    }
+    bool _e13 = local_2;
+    if (_e13) {
+        local_3 = (lo1_.y <= hi2_.y);
+    } else {
+        local_3 = false;
+    }
+    bool _e20 = local_3;
+    if (_e20) {
+        local_4 = (lo2_.y <= hi1_.y);
+    } else {
+        local_4 = false;
+    }
+    bool _e27 = local_4;
+    if (_e27) {
+        local_5 = (lo1_.z <= hi2_.z);
+    } else {
+        local_5 = false;
+    }
+    bool _e34 = local_5;
+    if (_e34) {
+        local_6 = (lo2_.z <= hi1_.z);
+    } else {
+        local_6 = false;
+    }
+    bool _e41 = local_6;
+    return _e41;
+}
+
+float vpl_transfer(float3 n_l, float3 n_x, float3 v, float min_d2_)
+{
+    float m = max(dot(v, v), max(min_d2_, MIN_D2_));
+    return (((max(dot(n_l, v), 0.0) * max(-(dot(n_x, v)), 0.0)) * INV_PI) / (m * m));
 }
 
 uint shifted_subset(uint pixel_class, uint shift, uint period)
@@ -159,10 +256,6 @@ float vpl_far_fixed_share(float range2_1, float d2_3, float near_r2_2)
     return ((_e4 & (_e3 > 0.0)) ? _e3 : 0.0);
 }
 
-uint naga_div(uint lhs, uint rhs) {
-    return lhs / (rhs == 0u ? 1u : rhs);
-}
-
 WorkgroupBox ConstructWorkgroupBox(float3 arg0, float3 arg1) {
     WorkgroupBox ret = (WorkgroupBox)0;
     ret.lo = arg0;
@@ -170,12 +263,12 @@ WorkgroupBox ConstructWorkgroupBox(float3 arg0, float3 arg1) {
     return ret;
 }
 
-WorkgroupBox workgroup_box(uint li_1, float3 p, bool has)
+WorkgroupBox workgroup_bounds(uint li_1, float3 lo, float3 hi)
 {
     uint stride = 32u;
 
-    wg_lo[min(uint(li_1), 63u)] = (has ? p : (3.4028235e38).xxx);
-    wg_hi[min(uint(li_1), 63u)] = (has ? p : (-3.4028235e38).xxx);
+    wg_lo[min(uint(li_1), 63u)] = lo;
+    wg_hi[min(uint(li_1), 63u)] = hi;
     GroupMemoryBarrierWithGroupSync();
     uint2 loop_bound = uint2(4294967295u, 4294967295u);
     bool loop_init = true;
@@ -183,40 +276,58 @@ WorkgroupBox workgroup_box(uint li_1, float3 p, bool has)
         if (all(loop_bound == uint2(0u, 0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         if (!loop_init) {
-            uint _e42 = stride;
-            stride = naga_div(_e42, 2u);
+            uint _e36 = stride;
+            stride = naga_div(_e36, 2u);
         }
         loop_init = false;
-        uint _e15 = stride;
-        if ((_e15 > 0u)) {
+        uint _e9 = stride;
+        if ((_e9 > 0u)) {
         } else {
             break;
         }
         {
-            uint _e18 = stride;
-            if ((li_1 < _e18)) {
-                float3 _e24 = wg_lo[min(uint(li_1), 63u)];
-                uint _e26 = stride;
-                float3 _e29 = wg_lo[min(uint((li_1 + _e26)), 63u)];
-                wg_lo[min(uint(li_1), 63u)] = min(_e24, _e29);
-                float3 _e35 = wg_hi[min(uint(li_1), 63u)];
-                uint _e37 = stride;
-                float3 _e40 = wg_hi[min(uint((li_1 + _e37)), 63u)];
-                wg_hi[min(uint(li_1), 63u)] = max(_e35, _e40);
+            uint _e12 = stride;
+            if ((li_1 < _e12)) {
+                float3 _e18 = wg_lo[min(uint(li_1), 63u)];
+                uint _e20 = stride;
+                float3 _e23 = wg_lo[min(uint((li_1 + _e20)), 63u)];
+                wg_lo[min(uint(li_1), 63u)] = min(_e18, _e23);
+                float3 _e29 = wg_hi[min(uint(li_1), 63u)];
+                uint _e31 = stride;
+                float3 _e34 = wg_hi[min(uint((li_1 + _e31)), 63u)];
+                wg_hi[min(uint(li_1), 63u)] = max(_e29, _e34);
             }
             GroupMemoryBarrierWithGroupSync();
         }
     }
-    float3 _e47 = wg_lo[0];
-    float3 _e50 = wg_hi[0];
-    const WorkgroupBox workgroupbox = ConstructWorkgroupBox(_e47, _e50);
+    if ((li_1 == 0u)) {
+        float3 _e44 = wg_lo[0];
+        float3 _e47 = wg_hi[0];
+        wg_box = ConstructWorkgroupBox(_e44, _e47);
+    }
+    GroupMemoryBarrierWithGroupSync();
+    WorkgroupBox _e50 = wg_box;
+    GroupMemoryBarrierWithGroupSync();
+    const WorkgroupBox workgroupbox = _e50;
     return workgroupbox;
+}
+
+WorkgroupBox workgroup_box(uint li_2, float3 p_1, bool has)
+{
+    const WorkgroupBox _e9 = workgroup_bounds(li_2, (has ? p_1 : (3.4028235e38).xxx), (has ? p_1 : (-3.4028235e38).xxx));
+    const WorkgroupBox workgroupbox_1 = _e9;
+    return workgroupbox_1;
+}
+
+bool box_is_empty(WorkgroupBox b)
+{
+    return (b.lo.x > b.hi.x);
 }
 
 float4 surface_at(int2 texel)
 {
-    float4 p_1 = position_tex.Load(int3(texel, int(0)));
-    return ((p_1.w > 0.0) ? float4(p_1.xyz, 1.0) : (0.0).xxxx);
+    float4 p_2 = position_tex.Load(int3(texel, int(0)));
+    return ((p_2.w > 0.0) ? float4(p_2.xyz, 1.0) : (0.0).xxxx);
 }
 
 GbTexel ConstructGbTexel(float4 arg0, float4 arg1) {
@@ -228,7 +339,7 @@ GbTexel ConstructGbTexel(float4 arg0, float4 arg1) {
 
 GbTexel gbuffer_at(uint i)
 {
-    bool local_2 = (bool)0;
+    bool local_7 = (bool)0;
 
     uint _e3 = view.width;
     uint _e8 = view.width;
@@ -238,15 +349,15 @@ GbTexel gbuffer_at(uint i)
     float3 n = _e15.xyz;
     float len2_ = dot(n, n);
     if ((_e12.w > 0.0)) {
-        local_2 = (len2_ > 0.0);
+        local_7 = (len2_ > 0.0);
     } else {
-        local_2 = false;
+        local_7 = false;
     }
-    bool valid = local_2;
+    bool valid_1 = local_7;
     float3 _e30 = view.eye;
     float3 v_2 = (_e12.xyz - _e30);
-    float4 position = float4(_e12.xyz, (valid ? 1.0 : 0.0));
-    float4 normal = (valid ? float4((n / (sqrt(len2_)).xxx), sqrt(dot(v_2, v_2))) : float4(0.0, 0.0, 0.0, 1e30));
+    float4 position = float4(_e12.xyz, (valid_1 ? 1.0 : 0.0));
+    float4 normal = (valid_1 ? float4((n / (sqrt(len2_)).xxx), sqrt(dot(v_2, v_2))) : float4(0.0, 0.0, 0.0, 1e30));
     const GbTexel gbtexel = ConstructGbTexel(position, normal);
     return gbtexel;
 }
@@ -264,25 +375,202 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
     return ret;
 }
 
+void shade_light(uint j)
+{
+    GpuLight l = ConstructGpuLight(asfloat(lights.Load3(j*64+0)), asuint(lights.Load(j*64+12)), asfloat(lights.Load3(j*64+16)), asfloat(lights.Load(j*64+28)), asfloat(lights.Load3(j*64+32)), asfloat(lights.Load(j*64+44)), asfloat(lights.Load3(j*64+48)), asuint(lights.Load(j*64+60)));
+    float3 _e5 = pos;
+    float3 v_3 = (_e5 - l.p0_);
+    float _e10 = asfloat(r2_1.Load(j*4));
+    float _e14 = params.near_r2_;
+    const float _e15 = vpl_far_fixed_share(_e10, dot(v_3, v_3), _e14);
+    if ((_e15 > 0.0)) {
+        float3 _e20 = nrm;
+        float _e23 = params.min_d2_;
+        const float _e24 = vpl_transfer(l.p1_, _e20, v_3, _e23);
+        float t_1 = (_e24 * _e15);
+        float3 _e27 = e;
+        e = (_e27 + (l.intensity * t_1));
+        uint _e32 = kept;
+        kept = (_e32 + 1u);
+        return;
+    } else {
+        return;
+    }
+}
+
+uint cluster_slot(uint c_1, uint k)
+{
+    return ((c_1 * CLUSTER) + k);
+}
+
+float cull_r2_of(uint slot)
+{
+    float _e3 = asfloat(r2_1.Load(slot*4));
+    return _e3;
+}
+
+void shade_list(uint count)
+{
+    uint k_1 = 0u;
+
+    bool _e2 = valid;
+    if (_e2) {
+        uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
+        bool loop_init_1 = true;
+        while(true) {
+            if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
+            loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+            if (!loop_init_1) {
+                uint _e12 = k_1;
+                k_1 = (_e12 + 1u);
+            }
+            loop_init_1 = false;
+            uint _e5 = k_1;
+            if ((_e5 < count)) {
+            } else {
+                break;
+            }
+            {
+                uint _e8 = k_1;
+                uint _e10 = tile_lights[min(uint(_e8), 1023u)];
+                shade_light(_e10);
+            }
+        }
+        return;
+    } else {
+        return;
+    }
+}
+
+GpuBox ConstructGpuBox(float3 arg0, float arg1, float3 arg2, float arg3) {
+    GpuBox ret = (GpuBox)0;
+    ret.lo = arg0;
+    ret.pad0_ = arg1;
+    ret.hi = arg2;
+    ret.pad1_ = arg3;
+    return ret;
+}
+
+void cull_tile(uint li_3, float3 lo_1, float3 hi_1, uint4 grid, uint clusters_at, uint groups_at)
+{
+    uint g_2 = 0u;
+    uint h = (uint)0;
+
+    if ((li_3 == 0u)) {
+        { uint dummy = 0; InterlockedExchange(list_count, 0u, dummy); }
+    }
+    const uint _e14 = group_count(grid.x, grid.y, grid.z, grid.w);
+    uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
+    bool loop_init_2 = true;
+    while(true) {
+        if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
+        loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
+        if (!loop_init_2) {
+            uint _e101 = g_2;
+            g_2 = (_e101 + 1u);
+        }
+        loop_init_2 = false;
+        uint _e17 = g_2;
+        if ((_e17 < _e14)) {
+        } else {
+            break;
+        }
+        {
+            uint _e20 = g_2;
+            GpuBox gb = ConstructGpuBox(asfloat(boxes.Load3((groups_at + _e20)*32+0)), asfloat(boxes.Load((groups_at + _e20)*32+12)), asfloat(boxes.Load3((groups_at + _e20)*32+16)), asfloat(boxes.Load((groups_at + _e20)*32+28)));
+            const bool _e26 = box_overlaps_box(gb.lo, gb.hi, lo_1, hi_1);
+            if (!(_e26)) {
+                continue;
+            }
+            uint _e28 = g_2;
+            const uint _e33 = group_first(_e28, grid.x, grid.y, grid.z, grid.w);
+            uint first = (clusters_at + _e33);
+            uint _e35 = g_2;
+            const uint _e40 = group_clusters(_e35, grid.x, grid.y, grid.z, grid.w);
+            if ((li_3 == 0u)) {
+                { uint dummy_1 = 0; InterlockedExchange(hit_count, 0u, dummy_1); }
+            }
+            GroupMemoryBarrierWithGroupSync();
+            if ((li_3 < _e40)) {
+                GpuBox cb = ConstructGpuBox(asfloat(boxes.Load3((first + li_3)*32+0)), asfloat(boxes.Load((first + li_3)*32+12)), asfloat(boxes.Load3((first + li_3)*32+16)), asfloat(boxes.Load((first + li_3)*32+28)));
+                const bool _e52 = box_overlaps_box(cb.lo, cb.hi, lo_1, hi_1);
+                if (_e52) {
+                    uint _e56; InterlockedAdd(hit_count, 1u, _e56);
+                    cluster_hits[min(uint(_e56), 63u)] = (first + li_3);
+                }
+            }
+            GroupMemoryBarrierWithGroupSync();
+            uint _e60 = hit_count;
+            GroupMemoryBarrierWithGroupSync();
+            h = 0u;
+            uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
+            bool loop_init_3 = true;
+            while(true) {
+                if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
+                loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+                if (!loop_init_3) {
+                    uint _e98 = h;
+                    h = (_e98 + 1u);
+                }
+                loop_init_3 = false;
+                uint _e63 = h;
+                if ((_e63 < _e60)) {
+                } else {
+                    break;
+                }
+                {
+                    GroupMemoryBarrierWithGroupSync();
+                    uint _e66 = list_count;
+                    GroupMemoryBarrierWithGroupSync();
+                    if (((_e66 + CLUSTER) > MAX_TILE_LIGHTS)) {
+                        shade_list(_e66);
+                        GroupMemoryBarrierWithGroupSync();
+                        if ((li_3 == 0u)) {
+                            { uint dummy_2 = 0; InterlockedExchange(list_count, 0u, dummy_2); }
+                        }
+                        GroupMemoryBarrierWithGroupSync();
+                    }
+                    uint _e76 = h;
+                    uint _e78 = cluster_hits[min(uint(_e76), 63u)];
+                    const uint _e79 = cluster_slot(_e78, li_3);
+                    GpuLight l_1 = ConstructGpuLight(asfloat(lights.Load3(_e79*64+0)), asuint(lights.Load(_e79*64+12)), asfloat(lights.Load3(_e79*64+16)), asfloat(lights.Load(_e79*64+28)), asfloat(lights.Load3(_e79*64+32)), asfloat(lights.Load(_e79*64+44)), asfloat(lights.Load3(_e79*64+48)), asuint(lights.Load(_e79*64+60)));
+                    if (any((l_1.intensity != (0.0).xxx))) {
+                        const float _e89 = cull_r2_of(_e79);
+                        const float _e90 = cull_radius(_e89);
+                        const bool _e91 = sphere_overlaps_aabb(l_1.p0_, _e90, lo_1, hi_1);
+                        if (_e91) {
+                            uint _e95; InterlockedAdd(list_count, 1u, _e95);
+                            tile_lights[min(uint(_e95), 1023u)] = _e79;
+                        }
+                    }
+                }
+            }
+            GroupMemoryBarrierWithGroupSync();
+        }
+    }
+    GroupMemoryBarrierWithGroupSync();
+    uint _e104 = list_count;
+    GroupMemoryBarrierWithGroupSync();
+    shade_list(_e104);
+    return;
+}
+
 [numthreads(8, 8, 1)]
 void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_GroupIndex)
 {
     if (li == 0) {
         wg_lo = (float3[64])0;
         wg_hi = (float3[64])0;
-        tile_count = (uint)0;
+        wg_box = (WorkgroupBox)0;
         tile_lights = (uint[1024])0;
+        list_count = (uint)0;
+        cluster_hits = (uint[64])0;
+        hit_count = (uint)0;
     }
     GroupMemoryBarrierWithGroupSync();
     bool local = (bool)0;
-    float4 pos = (0.0).xxxx;
-    float3 nrm = (0.0).xxx;
+    float4 p = (0.0).xxxx;
     bool local_1 = (bool)0;
-    float3 e = (0.0).xxx;
-    uint kept = 0u;
-    uint first = 0u;
-    uint j = (uint)0;
-    uint k = (uint)0;
 
     uint sub = wg.z;
     uint px = (naga_mod(sub, P) + (((wg.x * TILE) + lid.x) * P));
@@ -298,133 +586,37 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
     uint _e38 = params.width;
     uint pix = ((py * _e38) + px);
     if (inside) {
-        const GbTexel _e47 = gbuffer_at(pix);
-        pos = _e47.position;
-        nrm = _e47.normal.xyz;
+        const GbTexel _e44 = gbuffer_at(pix);
+        p = _e44.position;
+        nrm = _e44.normal.xyz;
     }
+    float4 _e50 = p;
+    pos = _e50.xyz;
     if (inside) {
-        float _e54 = pos.w;
-        local_1 = (_e54 > 0.0);
+        float _e56 = p.w;
+        local_1 = (_e56 > 0.0);
     } else {
         local_1 = false;
     }
-    bool valid_1 = local_1;
-    float4 _e59 = pos;
-    const WorkgroupBox _e61 = workgroup_box(li, _e59.xyz, valid_1);
-    float3 lo = _e61.lo;
-    float3 hi = _e61.hi;
-    uint _e66 = params.subset_shift;
-    const uint _e68 = shifted_subset(sub, _e66, P);
-    uint _e71 = params.lights_per_subset;
-    uint base = (_e68 * _e71);
-    uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
-    bool loop_init_1 = true;
-    while(true) {
-        if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
-        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
-        if (!loop_init_1) {
-            uint _e172 = first;
-            first = (_e172 + MAX_TILE_LIGHTS);
-        }
-        loop_init_1 = false;
-        uint _e80 = first;
-        uint _e83 = params.lights_per_subset;
-        if ((_e80 < _e83)) {
-        } else {
-            break;
-        }
-        {
-            uint _e85 = first;
-            uint _e90 = params.lights_per_subset;
-            uint end = min((_e85 + MAX_TILE_LIGHTS), _e90);
-            if ((li == 0u)) {
-                { uint dummy = 0; InterlockedExchange(tile_count, 0u, dummy); }
-            }
-            GroupMemoryBarrierWithGroupSync();
-            uint _e96 = first;
-            j = (_e96 + li);
-            uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
-            bool loop_init_2 = true;
-            while(true) {
-                if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
-                loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
-                if (!loop_init_2) {
-                    uint _e122 = j;
-                    j = (_e122 + THREADS);
-                }
-                loop_init_2 = false;
-                uint _e99 = j;
-                if ((_e99 < end)) {
-                } else {
-                    break;
-                }
-                {
-                    uint _e102 = j;
-                    float3 _e106 = asfloat(lights.Load3(0+(base + _e102)*64));
-                    uint _e108 = j;
-                    float _e111 = asfloat(r2_1.Load((base + _e108)*4));
-                    const float _e112 = cull_radius(_e111);
-                    const bool _e113 = sphere_overlaps_aabb(_e106, _e112, lo, hi);
-                    if (_e113) {
-                        uint _e116; InterlockedAdd(tile_count, 1u, _e116);
-                        if ((_e116 < MAX_TILE_LIGHTS)) {
-                            uint _e121 = j;
-                            tile_lights[min(uint(_e116), 1023u)] = _e121;
-                        }
-                    }
-                }
-            }
-            GroupMemoryBarrierWithGroupSync();
-            uint _e126 = tile_count;
-            GroupMemoryBarrierWithGroupSync();
-            uint count = min(_e126, MAX_TILE_LIGHTS);
-            if (valid_1) {
-                k = 0u;
-                uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
-                bool loop_init_3 = true;
-                while(true) {
-                    if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
-                    loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-                    if (!loop_init_3) {
-                        uint _e170 = k;
-                        k = (_e170 + 1u);
-                    }
-                    loop_init_3 = false;
-                    uint _e131 = k;
-                    if ((_e131 < count)) {
-                    } else {
-                        break;
-                    }
-                    {
-                        uint _e134 = k;
-                        uint _e136 = tile_lights[min(uint(_e134), 1023u)];
-                        uint j_1 = (base + _e136);
-                        GpuLight l = ConstructGpuLight(asfloat(lights.Load3(j_1*64+0)), asuint(lights.Load(j_1*64+12)), asfloat(lights.Load3(j_1*64+16)), asfloat(lights.Load(j_1*64+28)), asfloat(lights.Load3(j_1*64+32)), asfloat(lights.Load(j_1*64+44)), asfloat(lights.Load3(j_1*64+48)), asuint(lights.Load(j_1*64+60)));
-                        float4 _e141 = pos;
-                        float3 v_3 = (_e141.xyz - l.p0_);
-                        float _e147 = asfloat(r2_1.Load(j_1*4));
-                        float _e151 = params.near_r2_;
-                        const float _e152 = vpl_far_fixed_share(_e147, dot(v_3, v_3), _e151);
-                        if ((_e152 > 0.0)) {
-                            float3 _e156 = nrm;
-                            float _e159 = params.min_d2_;
-                            const float _e160 = vpl_transfer(l.p1_, _e156, v_3, _e159);
-                            float t_1 = (_e160 * _e152);
-                            float3 _e162 = e;
-                            e = (_e162 + (l.intensity * t_1));
-                            uint _e166 = kept;
-                            kept = (_e166 + 1u);
-                        }
-                    }
-                }
-            }
-            GroupMemoryBarrierWithGroupSync();
-        }
+    bool _e60 = local_1;
+    valid = _e60;
+    float3 _e62 = pos;
+    bool _e64 = valid;
+    const WorkgroupBox _e65 = workgroup_box(li, _e62, _e64);
+    uint _e68 = params.subset_shift;
+    const uint _e70 = shifted_subset(sub, _e68, P);
+    const bool _e71 = box_is_empty(_e65);
+    if (!(_e71)) {
+        uint4 grid_1 = params.far_grid;
+        uint _e80 = params.lights_per_subset;
+        uint _e86 = params.far_groups_at;
+        const uint _e91 = group_count(grid_1.x, grid_1.y, grid_1.z, grid_1.w);
+        cull_tile(li, _e65.lo, _e65.hi, grid_1, (_e70 * naga_div(_e80, CLUSTER)), (_e86 + (_e70 * _e91)));
     }
     if (inside) {
-        float3 _e177 = e;
-        uint _e178 = kept;
-        irradiance.Store4(pix*16, asuint(float4(_e177, float(_e178))));
+        float3 _e97 = e;
+        uint _e99 = kept;
+        irradiance.Store4(pix*16, asuint(float4(_e97, float(_e99))));
         return;
     } else {
         return;

@@ -15,9 +15,15 @@ struct VplParams {
     uint lights_per_subset;
     float min_d2_;
     float near_r2_;
-    uint near_blocks;
     uint subset_shift;
+    uint far_groups_at;
+    uint near_clusters_at;
+    uint near_groups_at;
+    uint box_count;
+    uint pad0_;
     uint pad1_;
+    uint4 far_grid;
+    uint4 near_grid;
 };
 
 struct GpuMaterial {
@@ -78,6 +84,8 @@ static const float CULL_RADIUS_SCALE = 1.000001;
 static const float SPHERE_PAD = 4.7683716e-7;
 static const float SPHERE_HUGE = 3.4028235e38;
 static const float SPHERE_PAD_ABS = 1e-18;
+static const uint CLUSTER = 64u;
+static const uint GROUP_SIDE = 8u;
 static const float INV_PI = 0.31830987;
 static const float MIN_D2_ = 1e-12;
 static const float MAX_INTENSITY = 7.2057594e16;
@@ -91,7 +99,6 @@ static const float F32_MAX = 3.4028235e38;
 static const float DEPTH_NONE = 1e30;
 static const float DEPTH_SIGMA = 0.05;
 static const float COVER_WEIGHT = 0.1;
-static const uint NEAR_BLOCK = 64u;
 static const uint ROULETTE_DEPTH = 2u;
 static const float TEMPORAL_MAX_HISTORY = 32.0;
 static const float TEMPORAL_DEPTH_TOLERANCE = 0.01;
@@ -110,14 +117,22 @@ static const uint MAX_TILE_LIGHTS = 1024u;
 
 groupshared float3 wg_lo[64];
 groupshared float3 wg_hi[64];
+groupshared WorkgroupBox wg_box;
 cbuffer params : register(b0) { VplParams params; }
 cbuffer view : register(b1) { ViewParams view; }
 Texture2D<float4> position_tex : register(t2);
 Texture2D<float4> normal_tex : register(t3);
 ByteAddressBuffer lights : register(t4);
-RWByteAddressBuffer irradiance : register(u7);
-ByteAddressBuffer materials : register(t8);
-RWByteAddressBuffer specular : register(u9);
+RWByteAddressBuffer irradiance : register(u8);
+ByteAddressBuffer materials : register(t9);
+RWByteAddressBuffer specular : register(u10);
+static float3 pos = (float3)0;
+static float3 nrm = (float3)0;
+static bool valid = (bool)0;
+static float3 e = (float3)0;
+static uint kept = (uint)0;
+static float3 s = (float3)0;
+static Glossy g_1 = (Glossy)0;
 
 float vpl_transfer(float3 n_l, float3 n_x, float3 v, float min_d2_)
 {
@@ -292,12 +307,12 @@ WorkgroupBox ConstructWorkgroupBox(float3 arg0, float3 arg1) {
     return ret;
 }
 
-WorkgroupBox workgroup_box(uint li_1, float3 p, bool has)
+WorkgroupBox workgroup_bounds(uint li_1, float3 lo, float3 hi)
 {
     uint stride = 32u;
 
-    wg_lo[min(uint(li_1), 63u)] = (has ? p : (3.4028235e38).xxx);
-    wg_hi[min(uint(li_1), 63u)] = (has ? p : (-3.4028235e38).xxx);
+    wg_lo[min(uint(li_1), 63u)] = lo;
+    wg_hi[min(uint(li_1), 63u)] = hi;
     GroupMemoryBarrierWithGroupSync();
     uint2 loop_bound = uint2(4294967295u, 4294967295u);
     bool loop_init = true;
@@ -305,40 +320,53 @@ WorkgroupBox workgroup_box(uint li_1, float3 p, bool has)
         if (all(loop_bound == uint2(0u, 0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         if (!loop_init) {
-            uint _e42 = stride;
-            stride = naga_div(_e42, 2u);
+            uint _e36 = stride;
+            stride = naga_div(_e36, 2u);
         }
         loop_init = false;
-        uint _e15 = stride;
-        if ((_e15 > 0u)) {
+        uint _e9 = stride;
+        if ((_e9 > 0u)) {
         } else {
             break;
         }
         {
-            uint _e18 = stride;
-            if ((li_1 < _e18)) {
-                float3 _e24 = wg_lo[min(uint(li_1), 63u)];
-                uint _e26 = stride;
-                float3 _e29 = wg_lo[min(uint((li_1 + _e26)), 63u)];
-                wg_lo[min(uint(li_1), 63u)] = min(_e24, _e29);
-                float3 _e35 = wg_hi[min(uint(li_1), 63u)];
-                uint _e37 = stride;
-                float3 _e40 = wg_hi[min(uint((li_1 + _e37)), 63u)];
-                wg_hi[min(uint(li_1), 63u)] = max(_e35, _e40);
+            uint _e12 = stride;
+            if ((li_1 < _e12)) {
+                float3 _e18 = wg_lo[min(uint(li_1), 63u)];
+                uint _e20 = stride;
+                float3 _e23 = wg_lo[min(uint((li_1 + _e20)), 63u)];
+                wg_lo[min(uint(li_1), 63u)] = min(_e18, _e23);
+                float3 _e29 = wg_hi[min(uint(li_1), 63u)];
+                uint _e31 = stride;
+                float3 _e34 = wg_hi[min(uint((li_1 + _e31)), 63u)];
+                wg_hi[min(uint(li_1), 63u)] = max(_e29, _e34);
             }
             GroupMemoryBarrierWithGroupSync();
         }
     }
-    float3 _e47 = wg_lo[0];
-    float3 _e50 = wg_hi[0];
-    const WorkgroupBox workgroupbox = ConstructWorkgroupBox(_e47, _e50);
+    if ((li_1 == 0u)) {
+        float3 _e44 = wg_lo[0];
+        float3 _e47 = wg_hi[0];
+        wg_box = ConstructWorkgroupBox(_e44, _e47);
+    }
+    GroupMemoryBarrierWithGroupSync();
+    WorkgroupBox _e50 = wg_box;
+    GroupMemoryBarrierWithGroupSync();
+    const WorkgroupBox workgroupbox = _e50;
     return workgroupbox;
+}
+
+WorkgroupBox workgroup_box(uint li_2, float3 p_1, bool has)
+{
+    const WorkgroupBox _e9 = workgroup_bounds(li_2, (has ? p_1 : (3.4028235e38).xxx), (has ? p_1 : (-3.4028235e38).xxx));
+    const WorkgroupBox workgroupbox_1 = _e9;
+    return workgroupbox_1;
 }
 
 float4 surface_at(int2 texel)
 {
-    float4 p_1 = position_tex.Load(int3(texel, int(0)));
-    return ((p_1.w > 0.0) ? float4(p_1.xyz, 1.0) : (0.0).xxxx);
+    float4 p_2 = position_tex.Load(int3(texel, int(0)));
+    return ((p_2.w > 0.0) ? float4(p_2.xyz, 1.0) : (0.0).xxxx);
 }
 
 GbTexel ConstructGbTexel(float4 arg0, float4 arg1) {
@@ -364,11 +392,11 @@ GbTexel gbuffer_at(uint i)
     } else {
         local_6 = false;
     }
-    bool valid = local_6;
+    bool valid_1 = local_6;
     float3 _e30 = view.eye;
     float3 v_6 = (_e12.xyz - _e30);
-    float4 position = float4(_e12.xyz, (valid ? 1.0 : 0.0));
-    float4 normal = (valid ? float4((n_4 / (sqrt(len2_1)).xxx), sqrt(dot(v_6, v_6))) : float4(0.0, 0.0, 0.0, 1e30));
+    float4 position = float4(_e12.xyz, (valid_1 ? 1.0 : 0.0));
+    float4 normal = (valid_1 ? float4((n_4 / (sqrt(len2_1)).xxx), sqrt(dot(v_6, v_6))) : float4(0.0, 0.0, 0.0, 1e30));
     const GbTexel gbtexel = ConstructGbTexel(position, normal);
     return gbtexel;
 }
@@ -409,11 +437,11 @@ Glossy glossy_at(uint i_1, float3 x)
     return glossy;
 }
 
-float3 glossy_term(Glossy g_1, GpuLight l_4, float3 n_3, float3 v_5, float t)
+float3 glossy_term(Glossy g, GpuLight l_4, float3 n_3, float3 v_5, float t)
 {
     bool local_7 = (bool)0;
 
-    if (!(!(g_1.on))) {
+    if (!(!(g.on))) {
         local_7 = (t <= 0.0);
     } else {
         local_7 = true;
@@ -422,7 +450,7 @@ float3 glossy_term(Glossy g_1, GpuLight l_4, float3 n_3, float3 v_5, float t)
     if (_e13) {
         return (0.0).xxx;
     }
-    const float3 _e30 = specular_correction(g_1.m.albedo, g_1.m.metallic, g_1.m.f0_, g_1.m.f90_, g_1.m.alpha, n_3, g_1.v, normalize(-(v_5)));
+    const float3 _e30 = specular_correction(g.m.albedo, g.m.metallic, g.m.f0_, g.m.f90_, g.m.alpha, n_3, g.v, normalize(-(v_5)));
     return ((l_4.intensity * _e30) * t);
 }
 
@@ -439,22 +467,45 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
     return ret;
 }
 
+void shade_light(uint j_1)
+{
+    GpuLight l_5 = ConstructGpuLight(asfloat(lights.Load3(j_1*64+0)), asuint(lights.Load(j_1*64+12)), asfloat(lights.Load3(j_1*64+16)), asfloat(lights.Load(j_1*64+28)), asfloat(lights.Load3(j_1*64+32)), asfloat(lights.Load(j_1*64+44)), asfloat(lights.Load3(j_1*64+48)), asuint(lights.Load(j_1*64+60)));
+    float3 _e5 = pos;
+    float3 v_7 = (_e5 - l_5.p0_);
+    float _e11 = params.near_r2_;
+    const float _e12 = vpl_far_weight(dot(v_7, v_7), _e11);
+    if ((_e12 > 0.0)) {
+        float3 _e17 = nrm;
+        float _e20 = params.min_d2_;
+        const float _e21 = vpl_transfer(l_5.p1_, _e17, v_7, _e20);
+        float t_3 = (_e21 * _e12);
+        float3 _e24 = e;
+        e = (_e24 + (l_5.intensity * t_3));
+        float3 _e29 = s;
+        Glossy _e31 = g_1;
+        float3 _e33 = nrm;
+        const float3 _e34 = glossy_term(_e31, l_5, _e33, v_7, t_3);
+        s = (_e29 + _e34);
+        uint _e37 = kept;
+        kept = (_e37 + 1u);
+        return;
+    } else {
+        return;
+    }
+}
+
 [numthreads(8, 8, 1)]
 void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_GroupIndex)
 {
     if (li == 0) {
         wg_lo = (float3[64])0;
         wg_hi = (float3[64])0;
+        wg_box = (WorkgroupBox)0;
     }
     GroupMemoryBarrierWithGroupSync();
     bool local = (bool)0;
-    float4 pos = (0.0).xxxx;
-    float3 nrm = (0.0).xxx;
+    float4 p = (0.0).xxxx;
     bool local_1 = (bool)0;
-    float3 e = (0.0).xxx;
-    uint kept = 0u;
-    float3 s = (0.0).xxx;
-    Glossy g = (Glossy)0;
     uint j = (uint)0;
 
     uint sub = wg.z;
@@ -471,31 +522,35 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
     uint _e38 = params.width;
     uint pix = ((py * _e38) + px);
     if (inside) {
-        const GbTexel _e47 = gbuffer_at(pix);
-        pos = _e47.position;
-        nrm = _e47.normal.xyz;
+        const GbTexel _e44 = gbuffer_at(pix);
+        p = _e44.position;
+        nrm = _e44.normal.xyz;
     }
+    float4 _e50 = p;
+    pos = _e50.xyz;
     if (inside) {
-        float _e54 = pos.w;
-        local_1 = (_e54 > 0.0);
+        float _e56 = p.w;
+        local_1 = (_e56 > 0.0);
     } else {
         local_1 = false;
     }
-    bool valid_1 = local_1;
-    float4 _e59 = pos;
-    const WorkgroupBox _e61 = workgroup_box(li, _e59.xyz, valid_1);
-    float3 lo = _e61.lo;
-    float3 hi = _e61.hi;
-    uint _e66 = params.subset_shift;
-    const uint _e68 = shifted_subset(sub, _e66, P);
-    uint _e71 = params.lights_per_subset;
-    uint base_6 = (_e68 * _e71);
-    if (valid_1) {
-        float4 _e82 = pos;
-        const Glossy _e84 = glossy_at(pix, _e82.xyz);
-        g = _e84;
+    bool _e60 = local_1;
+    valid = _e60;
+    bool _e62 = valid;
+    if (_e62) {
+        float3 _e65 = pos;
+        const Glossy _e66 = glossy_at(pix, _e65);
+        g_1 = _e66;
     }
-    if (valid_1) {
+    float3 _e68 = pos;
+    bool _e70 = valid;
+    const WorkgroupBox _e71 = workgroup_box(li, _e68, _e70);
+    uint _e74 = params.subset_shift;
+    const uint _e76 = shifted_subset(sub, _e74, P);
+    bool _e78 = valid;
+    if (_e78) {
+        uint _e81 = params.lights_per_subset;
+        uint base_6 = (_e76 * _e81);
         j = base_6;
         uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
         bool loop_init_1 = true;
@@ -503,47 +558,32 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
             if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
             loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
             if (!loop_init_1) {
-                uint _e127 = j;
-                j = (_e127 + 1u);
+                uint _e101 = j;
+                j = (_e101 + 1u);
             }
             loop_init_1 = false;
-            uint _e86 = j;
-            uint _e89 = params.lights_per_subset;
-            if ((_e86 < (base_6 + _e89))) {
+            uint _e84 = j;
+            uint _e87 = params.lights_per_subset;
+            if ((_e84 < (base_6 + _e87))) {
             } else {
                 break;
             }
             {
-                uint _e93 = j;
-                GpuLight l_5 = ConstructGpuLight(asfloat(lights.Load3(_e93*64+0)), asuint(lights.Load(_e93*64+12)), asfloat(lights.Load3(_e93*64+16)), asfloat(lights.Load(_e93*64+28)), asfloat(lights.Load3(_e93*64+32)), asfloat(lights.Load(_e93*64+44)), asfloat(lights.Load3(_e93*64+48)), asuint(lights.Load(_e93*64+60)));
-                float4 _e96 = pos;
-                float3 v_7 = (_e96.xyz - l_5.p0_);
-                float _e103 = params.near_r2_;
-                const float _e104 = vpl_far_weight(dot(v_7, v_7), _e103);
-                if ((_e104 > 0.0)) {
-                    float3 _e108 = nrm;
-                    float _e111 = params.min_d2_;
-                    const float _e112 = vpl_transfer(l_5.p1_, _e108, v_7, _e111);
-                    float t_3 = (_e112 * _e104);
-                    float3 _e114 = e;
-                    e = (_e114 + (l_5.intensity * t_3));
-                    float3 _e118 = s;
-                    Glossy _e119 = g;
-                    float3 _e120 = nrm;
-                    const float3 _e121 = glossy_term(_e119, l_5, _e120, v_7, t_3);
-                    s = (_e118 + _e121);
-                    uint _e123 = kept;
-                    kept = (_e123 + 1u);
+                uint _e91 = j;
+                float3 _e94 = asfloat(lights.Load3(48+_e91*64));
+                if (any((_e94 != (0.0).xxx))) {
+                    uint _e99 = j;
+                    shade_light(_e99);
                 }
             }
         }
     }
     if (inside) {
-        float3 _e131 = e;
-        uint _e132 = kept;
-        irradiance.Store4(pix*16, asuint(float4(_e131, float(_e132))));
-        float3 _e137 = s;
-        specular.Store4(pix*16, asuint(float4(_e137, 0.0)));
+        float3 _e106 = e;
+        uint _e108 = kept;
+        irradiance.Store4(pix*16, asuint(float4(_e106, float(_e108))));
+        float3 _e114 = s;
+        specular.Store4(pix*16, asuint(float4(_e114, 0.0)));
         return;
     } else {
         return;

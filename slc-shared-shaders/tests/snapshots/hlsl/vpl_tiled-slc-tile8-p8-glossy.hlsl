@@ -15,9 +15,22 @@ struct VplParams {
     uint lights_per_subset;
     float min_d2_;
     float near_r2_;
-    uint near_blocks;
     uint subset_shift;
+    uint far_groups_at;
+    uint near_clusters_at;
+    uint near_groups_at;
+    uint box_count;
+    uint pad0_;
     uint pad1_;
+    uint4 far_grid;
+    uint4 near_grid;
+};
+
+struct GpuBox {
+    float3 lo;
+    float pad0_;
+    float3 hi;
+    float pad1_;
 };
 
 struct GpuMaterial {
@@ -78,6 +91,8 @@ static const float CULL_RADIUS_SCALE = 1.000001;
 static const float SPHERE_PAD = 4.7683716e-7;
 static const float SPHERE_HUGE = 3.4028235e38;
 static const float SPHERE_PAD_ABS = 1e-18;
+static const uint CLUSTER = 64u;
+static const uint GROUP_SIDE = 8u;
 static const float INV_PI = 0.31830987;
 static const float MIN_D2_ = 1e-12;
 static const float MAX_INTENSITY = 7.2057594e16;
@@ -91,7 +106,6 @@ static const float F32_MAX = 3.4028235e38;
 static const float DEPTH_NONE = 1e30;
 static const float DEPTH_SIGMA = 0.05;
 static const float COVER_WEIGHT = 0.1;
-static const uint NEAR_BLOCK = 64u;
 static const uint ROULETTE_DEPTH = 2u;
 static const float TEMPORAL_MAX_HISTORY = 32.0;
 static const float TEMPORAL_DEPTH_TOLERANCE = 0.01;
@@ -110,6 +124,7 @@ static const uint MAX_TILE_LIGHTS = 1024u;
 
 groupshared float3 wg_lo[64];
 groupshared float3 wg_hi[64];
+groupshared WorkgroupBox wg_box;
 cbuffer params : register(b0) { VplParams params; }
 cbuffer view : register(b1) { ViewParams view; }
 Texture2D<float4> position_tex : register(t2);
@@ -117,11 +132,21 @@ Texture2D<float4> normal_tex : register(t3);
 ByteAddressBuffer lights : register(t4);
 ByteAddressBuffer rt2_2 : register(t5);
 ByteAddressBuffer r2_3 : register(t6);
-RWByteAddressBuffer irradiance : register(u7);
-ByteAddressBuffer materials : register(t8);
-RWByteAddressBuffer specular : register(u9);
-groupshared uint tile_count;
+ByteAddressBuffer boxes : register(t7);
+RWByteAddressBuffer irradiance : register(u8);
+ByteAddressBuffer materials : register(t9);
+RWByteAddressBuffer specular : register(u10);
+static float3 pos = (float3)0;
+static float3 nrm = (float3)0;
+static bool valid = (bool)0;
+static float3 e = (float3)0;
+static uint kept = (uint)0;
+static float3 s = (float3)0;
+static Glossy g_4 = (Glossy)0;
 groupshared uint tile_lights[1024];
+groupshared uint list_count;
+groupshared uint cluster_hits[64];
+groupshared uint hit_count;
 
 float slc_weight(float rt2_, float d2_)
 {
@@ -148,6 +173,84 @@ bool sphere_overlaps_aabb(float3 c, float r, float3 bmin, float3 bmax)
     return (dot(v_6, v_6) <= (r * r));
 }
 
+uint naga_div(uint lhs, uint rhs) {
+    return lhs / (rhs == 0u ? 1u : rhs);
+}
+
+uint groups_across(uint bw, uint gw)
+{
+    return naga_div(((bw + gw) - 1u), gw);
+}
+
+uint group_count(uint bw_1, uint bh, uint gw_1, uint gh)
+{
+    const uint _e4 = groups_across(bw_1, gw_1);
+    const uint _e5 = groups_across(bh, gh);
+    return (_e4 * _e5);
+}
+
+uint naga_mod(uint lhs, uint rhs) {
+    return lhs % (rhs == 0u ? 1u : rhs);
+}
+
+uint group_first(uint g, uint bw_2, uint bh_1, uint gw_2, uint gh_1)
+{
+    const uint _e5 = groups_across(bw_2, gw_2);
+    uint gx = naga_mod(g, _e5);
+    uint gy = naga_div(g, _e5);
+    uint h_1 = min(gh_1, (bh_1 - (gh_1 * gy)));
+    return (((gy * gh_1) * bw_2) + ((gx * gw_2) * h_1));
+}
+
+uint group_clusters(uint g_1, uint bw_3, uint bh_2, uint gw_3, uint gh_2)
+{
+    const uint _e5 = groups_across(bw_3, gw_3);
+    uint gx_1 = naga_mod(g_1, _e5);
+    uint gy_1 = naga_div(g_1, _e5);
+    return (min(gw_3, (bw_3 - (gw_3 * gx_1))) * min(gh_2, (bh_2 - (gh_2 * gy_1))));
+}
+
+bool box_overlaps_box(float3 lo1_, float3 hi1_, float3 lo2_, float3 hi2_)
+{
+    bool local_2 = (bool)0;
+    bool local_3 = (bool)0;
+    bool local_4 = (bool)0;
+    bool local_5 = (bool)0;
+    bool local_6 = (bool)0;
+
+    if ((lo1_.x <= hi2_.x)) {
+        local_2 = (lo2_.x <= hi1_.x);
+    } else {
+        local_2 = false;
+    }
+    bool _e13 = local_2;
+    if (_e13) {
+        local_3 = (lo1_.y <= hi2_.y);
+    } else {
+        local_3 = false;
+    }
+    bool _e20 = local_3;
+    if (_e20) {
+        local_4 = (lo2_.y <= hi1_.y);
+    } else {
+        local_4 = false;
+    }
+    bool _e27 = local_4;
+    if (_e27) {
+        local_5 = (lo1_.z <= hi2_.z);
+    } else {
+        local_5 = false;
+    }
+    bool _e34 = local_5;
+    if (_e34) {
+        local_6 = (lo2_.z <= hi1_.z);
+    } else {
+        local_6 = false;
+    }
+    bool _e41 = local_6;
+    return _e41;
+}
+
 float vpl_transfer(float3 n_l, float3 n_x, float3 v, float min_d2_)
 {
     float m = max(dot(v, v), max(min_d2_, MIN_D2_));
@@ -172,14 +275,14 @@ float smith_root(float cos_, float alpha_1)
 
 float smith_visibility(float n_l_1, float n_v, float alpha_2)
 {
-    bool local_2 = (bool)0;
+    bool local_7 = (bool)0;
 
     if (!((n_l_1 <= 0.0))) {
-        local_2 = (n_v <= 0.0);
+        local_7 = (n_v <= 0.0);
     } else {
-        local_2 = true;
+        local_7 = true;
     }
-    bool _e11 = local_2;
+    bool _e11 = local_7;
     if (_e11) {
         return 0.0;
     }
@@ -190,9 +293,9 @@ float smith_visibility(float n_l_1, float n_v, float alpha_2)
 
 float3 fresnel_schlick(float3 f0_, float f90_, float v_h)
 {
-    float c_1 = saturate((1.0 - v_h));
-    float c2_ = (c_1 * c_1);
-    return (f0_ + ((float3(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_1)));
+    float c_2 = saturate((1.0 - v_h));
+    float c2_ = (c_2 * c_2);
+    return (f0_ + ((float3(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_2)));
 }
 
 float3 specular_fresnel(float3 base, float metallic, float3 f0_d, float f90_d, float v_h_1)
@@ -210,35 +313,35 @@ float3 diffuse_brdf(float3 base_1, float metallic_1, float3 f0_d_1, float f90_d_
 
 float half_cosine(float3 v_1, float3 l)
 {
-    float3 h = (v_1 + l);
-    float len2_ = dot(h, h);
+    float3 h_2 = (v_1 + l);
+    float len2_ = dot(h_2, h_2);
     if ((len2_ <= 0.0)) {
         return 0.0;
     }
-    return saturate((dot(v_1, h) / sqrt(len2_)));
+    return saturate((dot(v_1, h_2) / sqrt(len2_)));
 }
 
 float3 specular_brdf(float3 base_2, float metallic_2, float3 f0_d_2, float f90_d_2, float alpha_3, float3 n, float3 v_2, float3 l_1)
 {
-    bool local_3 = (bool)0;
+    bool local_8 = (bool)0;
 
     float n_l_2 = dot(n, l_1);
     float n_v_1 = dot(n, v_2);
     if (!((n_l_2 <= 0.0))) {
-        local_3 = (n_v_1 <= 0.0);
+        local_8 = (n_v_1 <= 0.0);
     } else {
-        local_3 = true;
+        local_8 = true;
     }
-    bool _e18 = local_3;
+    bool _e18 = local_8;
     if (_e18) {
         return float3(0.0, 0.0, 0.0);
     }
     float3 hs = (v_2 + l_1);
     float inv = (1.0 / sqrt(dot(hs, hs)));
-    float3 h_1 = (hs * inv);
-    float3 c_2 = cross(n, h_1);
-    const float _e32 = ggx_d(dot(n, h_1), dot(c_2, c_2), alpha_3);
-    const float3 _e34 = specular_fresnel(base_2, metallic_2, f0_d_2, f90_d_2, dot(v_2, h_1));
+    float3 h_3 = (hs * inv);
+    float3 c_3 = cross(n, h_3);
+    const float _e32 = ggx_d(dot(n, h_3), dot(c_3, c_3), alpha_3);
+    const float3 _e34 = specular_fresnel(base_2, metallic_2, f0_d_2, f90_d_2, dot(v_2, h_3));
     const float _e35 = smith_visibility(n_l_2, n_v_1, alpha_3);
     return (_e34 * (_e32 * _e35));
 }
@@ -268,26 +371,22 @@ float3 specular_correction(float3 base_5, float metallic_5, float3 f0_d_4, float
 
 bool has_specular(float metallic_6, float3 f0_d_5, float f90_d_5)
 {
-    bool local_4 = (bool)0;
-    bool local_5 = (bool)0;
+    bool local_9 = (bool)0;
+    bool local_10 = (bool)0;
 
     if (!((metallic_6 > 0.0))) {
-        local_4 = (f90_d_5 > 0.0);
+        local_9 = (f90_d_5 > 0.0);
     } else {
-        local_4 = true;
+        local_9 = true;
     }
-    bool _e11 = local_4;
+    bool _e11 = local_9;
     if (!(_e11)) {
-        local_5 = (max(max(f0_d_5.x, f0_d_5.y), f0_d_5.z) > 0.0);
+        local_10 = (max(max(f0_d_5.x, f0_d_5.y), f0_d_5.z) > 0.0);
     } else {
-        local_5 = true;
+        local_10 = true;
     }
-    bool _e23 = local_5;
+    bool _e23 = local_10;
     return _e23;
-}
-
-uint naga_mod(uint lhs, uint rhs) {
-    return lhs % (rhs == 0u ? 1u : rhs);
 }
 
 uint shifted_subset(uint pixel_class, uint shift, uint period)
@@ -318,10 +417,6 @@ float vpl_far_slc_share(float rt2_1, float r2_2, float d2_4, float near_r2_2)
     return ((_e7 & (_e4 > 0.0)) ? (_e4 * _e5) : 0.0);
 }
 
-uint naga_div(uint lhs, uint rhs) {
-    return lhs / (rhs == 0u ? 1u : rhs);
-}
-
 WorkgroupBox ConstructWorkgroupBox(float3 arg0, float3 arg1) {
     WorkgroupBox ret = (WorkgroupBox)0;
     ret.lo = arg0;
@@ -329,12 +424,12 @@ WorkgroupBox ConstructWorkgroupBox(float3 arg0, float3 arg1) {
     return ret;
 }
 
-WorkgroupBox workgroup_box(uint li_1, float3 p, bool has)
+WorkgroupBox workgroup_bounds(uint li_1, float3 lo, float3 hi)
 {
     uint stride = 32u;
 
-    wg_lo[min(uint(li_1), 63u)] = (has ? p : (3.4028235e38).xxx);
-    wg_hi[min(uint(li_1), 63u)] = (has ? p : (-3.4028235e38).xxx);
+    wg_lo[min(uint(li_1), 63u)] = lo;
+    wg_hi[min(uint(li_1), 63u)] = hi;
     GroupMemoryBarrierWithGroupSync();
     uint2 loop_bound = uint2(4294967295u, 4294967295u);
     bool loop_init = true;
@@ -342,40 +437,58 @@ WorkgroupBox workgroup_box(uint li_1, float3 p, bool has)
         if (all(loop_bound == uint2(0u, 0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         if (!loop_init) {
-            uint _e42 = stride;
-            stride = naga_div(_e42, 2u);
+            uint _e36 = stride;
+            stride = naga_div(_e36, 2u);
         }
         loop_init = false;
-        uint _e15 = stride;
-        if ((_e15 > 0u)) {
+        uint _e9 = stride;
+        if ((_e9 > 0u)) {
         } else {
             break;
         }
         {
-            uint _e18 = stride;
-            if ((li_1 < _e18)) {
-                float3 _e24 = wg_lo[min(uint(li_1), 63u)];
-                uint _e26 = stride;
-                float3 _e29 = wg_lo[min(uint((li_1 + _e26)), 63u)];
-                wg_lo[min(uint(li_1), 63u)] = min(_e24, _e29);
-                float3 _e35 = wg_hi[min(uint(li_1), 63u)];
-                uint _e37 = stride;
-                float3 _e40 = wg_hi[min(uint((li_1 + _e37)), 63u)];
-                wg_hi[min(uint(li_1), 63u)] = max(_e35, _e40);
+            uint _e12 = stride;
+            if ((li_1 < _e12)) {
+                float3 _e18 = wg_lo[min(uint(li_1), 63u)];
+                uint _e20 = stride;
+                float3 _e23 = wg_lo[min(uint((li_1 + _e20)), 63u)];
+                wg_lo[min(uint(li_1), 63u)] = min(_e18, _e23);
+                float3 _e29 = wg_hi[min(uint(li_1), 63u)];
+                uint _e31 = stride;
+                float3 _e34 = wg_hi[min(uint((li_1 + _e31)), 63u)];
+                wg_hi[min(uint(li_1), 63u)] = max(_e29, _e34);
             }
             GroupMemoryBarrierWithGroupSync();
         }
     }
-    float3 _e47 = wg_lo[0];
-    float3 _e50 = wg_hi[0];
-    const WorkgroupBox workgroupbox = ConstructWorkgroupBox(_e47, _e50);
+    if ((li_1 == 0u)) {
+        float3 _e44 = wg_lo[0];
+        float3 _e47 = wg_hi[0];
+        wg_box = ConstructWorkgroupBox(_e44, _e47);
+    }
+    GroupMemoryBarrierWithGroupSync();
+    WorkgroupBox _e50 = wg_box;
+    GroupMemoryBarrierWithGroupSync();
+    const WorkgroupBox workgroupbox = _e50;
     return workgroupbox;
+}
+
+WorkgroupBox workgroup_box(uint li_2, float3 p_1, bool has)
+{
+    const WorkgroupBox _e9 = workgroup_bounds(li_2, (has ? p_1 : (3.4028235e38).xxx), (has ? p_1 : (-3.4028235e38).xxx));
+    const WorkgroupBox workgroupbox_1 = _e9;
+    return workgroupbox_1;
+}
+
+bool box_is_empty(WorkgroupBox b)
+{
+    return (b.lo.x > b.hi.x);
 }
 
 float4 surface_at(int2 texel)
 {
-    float4 p_1 = position_tex.Load(int3(texel, int(0)));
-    return ((p_1.w > 0.0) ? float4(p_1.xyz, 1.0) : (0.0).xxxx);
+    float4 p_2 = position_tex.Load(int3(texel, int(0)));
+    return ((p_2.w > 0.0) ? float4(p_2.xyz, 1.0) : (0.0).xxxx);
 }
 
 GbTexel ConstructGbTexel(float4 arg0, float4 arg1) {
@@ -387,7 +500,7 @@ GbTexel ConstructGbTexel(float4 arg0, float4 arg1) {
 
 GbTexel gbuffer_at(uint i)
 {
-    bool local_6 = (bool)0;
+    bool local_11 = (bool)0;
 
     uint _e3 = view.width;
     uint _e8 = view.width;
@@ -397,15 +510,15 @@ GbTexel gbuffer_at(uint i)
     float3 n_4 = _e15.xyz;
     float len2_1 = dot(n_4, n_4);
     if ((_e12.w > 0.0)) {
-        local_6 = (len2_1 > 0.0);
+        local_11 = (len2_1 > 0.0);
     } else {
-        local_6 = false;
+        local_11 = false;
     }
-    bool valid = local_6;
+    bool valid_1 = local_11;
     float3 _e30 = view.eye;
     float3 v_7 = (_e12.xyz - _e30);
-    float4 position = float4(_e12.xyz, (valid ? 1.0 : 0.0));
-    float4 normal = (valid ? float4((n_4 / (sqrt(len2_1)).xxx), sqrt(dot(v_7, v_7))) : float4(0.0, 0.0, 0.0, 1e30));
+    float4 position = float4(_e12.xyz, (valid_1 ? 1.0 : 0.0));
+    float4 normal = (valid_1 ? float4((n_4 / (sqrt(len2_1)).xxx), sqrt(dot(v_7, v_7))) : float4(0.0, 0.0, 0.0, 1e30));
     const GbTexel gbtexel = ConstructGbTexel(position, normal);
     return gbtexel;
 }
@@ -446,20 +559,20 @@ Glossy glossy_at(uint i_1, float3 x)
     return glossy;
 }
 
-float3 glossy_term(Glossy g_1, GpuLight l_4, float3 n_3, float3 v_5, float t)
+float3 glossy_term(Glossy g_2, GpuLight l_4, float3 n_3, float3 v_5, float t)
 {
-    bool local_7 = (bool)0;
+    bool local_12 = (bool)0;
 
-    if (!(!(g_1.on))) {
-        local_7 = (t <= 0.0);
+    if (!(!(g_2.on))) {
+        local_12 = (t <= 0.0);
     } else {
-        local_7 = true;
+        local_12 = true;
     }
-    bool _e13 = local_7;
+    bool _e13 = local_12;
     if (_e13) {
         return (0.0).xxx;
     }
-    const float3 _e30 = specular_correction(g_1.m.albedo, g_1.m.metallic, g_1.m.f0_, g_1.m.f90_, g_1.m.alpha, n_3, g_1.v, normalize(-(v_5)));
+    const float3 _e30 = specular_correction(g_2.m.albedo, g_2.m.metallic, g_2.m.f0_, g_2.m.f90_, g_2.m.alpha, n_3, g_2.v, normalize(-(v_5)));
     return ((l_4.intensity * _e30) * t);
 }
 
@@ -476,27 +589,208 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
     return ret;
 }
 
+void shade_light(uint j)
+{
+    GpuLight l_5 = ConstructGpuLight(asfloat(lights.Load3(j*64+0)), asuint(lights.Load(j*64+12)), asfloat(lights.Load3(j*64+16)), asfloat(lights.Load(j*64+28)), asfloat(lights.Load3(j*64+32)), asfloat(lights.Load(j*64+44)), asfloat(lights.Load3(j*64+48)), asuint(lights.Load(j*64+60)));
+    float3 _e5 = pos;
+    float3 v_8 = (_e5 - l_5.p0_);
+    float _e10 = asfloat(rt2_2.Load(j*4));
+    float _e13 = asfloat(r2_3.Load(j*4));
+    float _e17 = params.near_r2_;
+    const float _e18 = vpl_far_slc_share(_e10, _e13, dot(v_8, v_8), _e17);
+    if ((_e18 > 0.0)) {
+        float3 _e23 = nrm;
+        float _e26 = params.min_d2_;
+        const float _e27 = vpl_transfer(l_5.p1_, _e23, v_8, _e26);
+        float t_3 = (_e27 * _e18);
+        float3 _e30 = e;
+        e = (_e30 + (l_5.intensity * t_3));
+        float3 _e35 = s;
+        Glossy _e37 = g_4;
+        float3 _e39 = nrm;
+        const float3 _e40 = glossy_term(_e37, l_5, _e39, v_8, t_3);
+        s = (_e35 + _e40);
+        uint _e43 = kept;
+        kept = (_e43 + 1u);
+        return;
+    } else {
+        return;
+    }
+}
+
+uint cluster_slot(uint c_1, uint k)
+{
+    return ((c_1 * CLUSTER) + k);
+}
+
+float cull_r2_of(uint slot)
+{
+    float _e3 = asfloat(r2_3.Load(slot*4));
+    return _e3;
+}
+
+void shade_list(uint count)
+{
+    uint k_1 = 0u;
+
+    bool _e2 = valid;
+    if (_e2) {
+        uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
+        bool loop_init_1 = true;
+        while(true) {
+            if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
+            loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+            if (!loop_init_1) {
+                uint _e12 = k_1;
+                k_1 = (_e12 + 1u);
+            }
+            loop_init_1 = false;
+            uint _e5 = k_1;
+            if ((_e5 < count)) {
+            } else {
+                break;
+            }
+            {
+                uint _e8 = k_1;
+                uint _e10 = tile_lights[min(uint(_e8), 1023u)];
+                shade_light(_e10);
+            }
+        }
+        return;
+    } else {
+        return;
+    }
+}
+
+GpuBox ConstructGpuBox(float3 arg0, float arg1, float3 arg2, float arg3) {
+    GpuBox ret = (GpuBox)0;
+    ret.lo = arg0;
+    ret.pad0_ = arg1;
+    ret.hi = arg2;
+    ret.pad1_ = arg3;
+    return ret;
+}
+
+void cull_tile(uint li_3, float3 lo_1, float3 hi_1, uint4 grid, uint clusters_at, uint groups_at)
+{
+    uint g_3 = 0u;
+    uint h = (uint)0;
+
+    if ((li_3 == 0u)) {
+        { uint dummy = 0; InterlockedExchange(list_count, 0u, dummy); }
+    }
+    const uint _e14 = group_count(grid.x, grid.y, grid.z, grid.w);
+    uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
+    bool loop_init_2 = true;
+    while(true) {
+        if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
+        loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
+        if (!loop_init_2) {
+            uint _e101 = g_3;
+            g_3 = (_e101 + 1u);
+        }
+        loop_init_2 = false;
+        uint _e17 = g_3;
+        if ((_e17 < _e14)) {
+        } else {
+            break;
+        }
+        {
+            uint _e20 = g_3;
+            GpuBox gb = ConstructGpuBox(asfloat(boxes.Load3((groups_at + _e20)*32+0)), asfloat(boxes.Load((groups_at + _e20)*32+12)), asfloat(boxes.Load3((groups_at + _e20)*32+16)), asfloat(boxes.Load((groups_at + _e20)*32+28)));
+            const bool _e26 = box_overlaps_box(gb.lo, gb.hi, lo_1, hi_1);
+            if (!(_e26)) {
+                continue;
+            }
+            uint _e28 = g_3;
+            const uint _e33 = group_first(_e28, grid.x, grid.y, grid.z, grid.w);
+            uint first = (clusters_at + _e33);
+            uint _e35 = g_3;
+            const uint _e40 = group_clusters(_e35, grid.x, grid.y, grid.z, grid.w);
+            if ((li_3 == 0u)) {
+                { uint dummy_1 = 0; InterlockedExchange(hit_count, 0u, dummy_1); }
+            }
+            GroupMemoryBarrierWithGroupSync();
+            if ((li_3 < _e40)) {
+                GpuBox cb = ConstructGpuBox(asfloat(boxes.Load3((first + li_3)*32+0)), asfloat(boxes.Load((first + li_3)*32+12)), asfloat(boxes.Load3((first + li_3)*32+16)), asfloat(boxes.Load((first + li_3)*32+28)));
+                const bool _e52 = box_overlaps_box(cb.lo, cb.hi, lo_1, hi_1);
+                if (_e52) {
+                    uint _e56; InterlockedAdd(hit_count, 1u, _e56);
+                    cluster_hits[min(uint(_e56), 63u)] = (first + li_3);
+                }
+            }
+            GroupMemoryBarrierWithGroupSync();
+            uint _e60 = hit_count;
+            GroupMemoryBarrierWithGroupSync();
+            h = 0u;
+            uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
+            bool loop_init_3 = true;
+            while(true) {
+                if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
+                loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+                if (!loop_init_3) {
+                    uint _e98 = h;
+                    h = (_e98 + 1u);
+                }
+                loop_init_3 = false;
+                uint _e63 = h;
+                if ((_e63 < _e60)) {
+                } else {
+                    break;
+                }
+                {
+                    GroupMemoryBarrierWithGroupSync();
+                    uint _e66 = list_count;
+                    GroupMemoryBarrierWithGroupSync();
+                    if (((_e66 + CLUSTER) > MAX_TILE_LIGHTS)) {
+                        shade_list(_e66);
+                        GroupMemoryBarrierWithGroupSync();
+                        if ((li_3 == 0u)) {
+                            { uint dummy_2 = 0; InterlockedExchange(list_count, 0u, dummy_2); }
+                        }
+                        GroupMemoryBarrierWithGroupSync();
+                    }
+                    uint _e76 = h;
+                    uint _e78 = cluster_hits[min(uint(_e76), 63u)];
+                    const uint _e79 = cluster_slot(_e78, li_3);
+                    GpuLight l_6 = ConstructGpuLight(asfloat(lights.Load3(_e79*64+0)), asuint(lights.Load(_e79*64+12)), asfloat(lights.Load3(_e79*64+16)), asfloat(lights.Load(_e79*64+28)), asfloat(lights.Load3(_e79*64+32)), asfloat(lights.Load(_e79*64+44)), asfloat(lights.Load3(_e79*64+48)), asuint(lights.Load(_e79*64+60)));
+                    if (any((l_6.intensity != (0.0).xxx))) {
+                        const float _e89 = cull_r2_of(_e79);
+                        const float _e90 = cull_radius(_e89);
+                        const bool _e91 = sphere_overlaps_aabb(l_6.p0_, _e90, lo_1, hi_1);
+                        if (_e91) {
+                            uint _e95; InterlockedAdd(list_count, 1u, _e95);
+                            tile_lights[min(uint(_e95), 1023u)] = _e79;
+                        }
+                    }
+                }
+            }
+            GroupMemoryBarrierWithGroupSync();
+        }
+    }
+    GroupMemoryBarrierWithGroupSync();
+    uint _e104 = list_count;
+    GroupMemoryBarrierWithGroupSync();
+    shade_list(_e104);
+    return;
+}
+
 [numthreads(8, 8, 1)]
 void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_GroupIndex)
 {
     if (li == 0) {
         wg_lo = (float3[64])0;
         wg_hi = (float3[64])0;
-        tile_count = (uint)0;
+        wg_box = (WorkgroupBox)0;
         tile_lights = (uint[1024])0;
+        list_count = (uint)0;
+        cluster_hits = (uint[64])0;
+        hit_count = (uint)0;
     }
     GroupMemoryBarrierWithGroupSync();
     bool local = (bool)0;
-    float4 pos = (0.0).xxxx;
-    float3 nrm = (0.0).xxx;
+    float4 p = (0.0).xxxx;
     bool local_1 = (bool)0;
-    float3 e = (0.0).xxx;
-    uint kept = 0u;
-    float3 s = (0.0).xxx;
-    Glossy g = (Glossy)0;
-    uint first = 0u;
-    uint j = (uint)0;
-    uint k = (uint)0;
 
     uint sub = wg.z;
     uint px = (naga_mod(sub, P) + (((wg.x * TILE) + lid.x) * P));
@@ -512,146 +806,45 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
     uint _e38 = params.width;
     uint pix = ((py * _e38) + px);
     if (inside) {
-        const GbTexel _e47 = gbuffer_at(pix);
-        pos = _e47.position;
-        nrm = _e47.normal.xyz;
+        const GbTexel _e44 = gbuffer_at(pix);
+        p = _e44.position;
+        nrm = _e44.normal.xyz;
     }
+    float4 _e50 = p;
+    pos = _e50.xyz;
     if (inside) {
-        float _e54 = pos.w;
-        local_1 = (_e54 > 0.0);
+        float _e56 = p.w;
+        local_1 = (_e56 > 0.0);
     } else {
         local_1 = false;
     }
-    bool valid_1 = local_1;
-    float4 _e59 = pos;
-    const WorkgroupBox _e61 = workgroup_box(li, _e59.xyz, valid_1);
-    float3 lo = _e61.lo;
-    float3 hi = _e61.hi;
-    uint _e66 = params.subset_shift;
-    const uint _e68 = shifted_subset(sub, _e66, P);
-    uint _e71 = params.lights_per_subset;
-    uint base_6 = (_e68 * _e71);
-    if (valid_1) {
-        float4 _e82 = pos;
-        const Glossy _e84 = glossy_at(pix, _e82.xyz);
-        g = _e84;
+    bool _e60 = local_1;
+    valid = _e60;
+    bool _e62 = valid;
+    if (_e62) {
+        float3 _e65 = pos;
+        const Glossy _e66 = glossy_at(pix, _e65);
+        g_4 = _e66;
     }
-    uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
-    bool loop_init_1 = true;
-    while(true) {
-        if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
-        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
-        if (!loop_init_1) {
-            uint _e187 = first;
-            first = (_e187 + MAX_TILE_LIGHTS);
-        }
-        loop_init_1 = false;
-        uint _e87 = first;
-        uint _e90 = params.lights_per_subset;
-        if ((_e87 < _e90)) {
-        } else {
-            break;
-        }
-        {
-            uint _e92 = first;
-            uint _e97 = params.lights_per_subset;
-            uint end = min((_e92 + MAX_TILE_LIGHTS), _e97);
-            if ((li == 0u)) {
-                { uint dummy = 0; InterlockedExchange(tile_count, 0u, dummy); }
-            }
-            GroupMemoryBarrierWithGroupSync();
-            uint _e103 = first;
-            j = (_e103 + li);
-            uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
-            bool loop_init_2 = true;
-            while(true) {
-                if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
-                loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
-                if (!loop_init_2) {
-                    uint _e129 = j;
-                    j = (_e129 + THREADS);
-                }
-                loop_init_2 = false;
-                uint _e106 = j;
-                if ((_e106 < end)) {
-                } else {
-                    break;
-                }
-                {
-                    uint _e109 = j;
-                    float3 _e113 = asfloat(lights.Load3(0+(base_6 + _e109)*64));
-                    uint _e115 = j;
-                    float _e118 = asfloat(r2_3.Load((base_6 + _e115)*4));
-                    const float _e119 = cull_radius(_e118);
-                    const bool _e120 = sphere_overlaps_aabb(_e113, _e119, lo, hi);
-                    if (_e120) {
-                        uint _e123; InterlockedAdd(tile_count, 1u, _e123);
-                        if ((_e123 < MAX_TILE_LIGHTS)) {
-                            uint _e128 = j;
-                            tile_lights[min(uint(_e123), 1023u)] = _e128;
-                        }
-                    }
-                }
-            }
-            GroupMemoryBarrierWithGroupSync();
-            uint _e133 = tile_count;
-            GroupMemoryBarrierWithGroupSync();
-            uint count = min(_e133, MAX_TILE_LIGHTS);
-            if (valid_1) {
-                k = 0u;
-                uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
-                bool loop_init_3 = true;
-                while(true) {
-                    if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
-                    loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-                    if (!loop_init_3) {
-                        uint _e185 = k;
-                        k = (_e185 + 1u);
-                    }
-                    loop_init_3 = false;
-                    uint _e138 = k;
-                    if ((_e138 < count)) {
-                    } else {
-                        break;
-                    }
-                    {
-                        uint _e141 = k;
-                        uint _e143 = tile_lights[min(uint(_e141), 1023u)];
-                        uint j_1 = (base_6 + _e143);
-                        GpuLight l_5 = ConstructGpuLight(asfloat(lights.Load3(j_1*64+0)), asuint(lights.Load(j_1*64+12)), asfloat(lights.Load3(j_1*64+16)), asfloat(lights.Load(j_1*64+28)), asfloat(lights.Load3(j_1*64+32)), asfloat(lights.Load(j_1*64+44)), asfloat(lights.Load3(j_1*64+48)), asuint(lights.Load(j_1*64+60)));
-                        float4 _e148 = pos;
-                        float3 v_8 = (_e148.xyz - l_5.p0_);
-                        float _e154 = asfloat(rt2_2.Load(j_1*4));
-                        float _e157 = asfloat(r2_3.Load(j_1*4));
-                        float _e161 = params.near_r2_;
-                        const float _e162 = vpl_far_slc_share(_e154, _e157, dot(v_8, v_8), _e161);
-                        if ((_e162 > 0.0)) {
-                            float3 _e166 = nrm;
-                            float _e169 = params.min_d2_;
-                            const float _e170 = vpl_transfer(l_5.p1_, _e166, v_8, _e169);
-                            float t_3 = (_e170 * _e162);
-                            float3 _e172 = e;
-                            e = (_e172 + (l_5.intensity * t_3));
-                            float3 _e176 = s;
-                            Glossy _e177 = g;
-                            float3 _e178 = nrm;
-                            const float3 _e179 = glossy_term(_e177, l_5, _e178, v_8, t_3);
-                            s = (_e176 + _e179);
-                            uint _e181 = kept;
-                            kept = (_e181 + 1u);
-                        }
-                    }
-                }
-            }
-            GroupMemoryBarrierWithGroupSync();
-        }
+    float3 _e68 = pos;
+    bool _e70 = valid;
+    const WorkgroupBox _e71 = workgroup_box(li, _e68, _e70);
+    uint _e74 = params.subset_shift;
+    const uint _e76 = shifted_subset(sub, _e74, P);
+    const bool _e77 = box_is_empty(_e71);
+    if (!(_e77)) {
+        uint4 grid_1 = params.far_grid;
+        uint _e86 = params.lights_per_subset;
+        uint _e92 = params.far_groups_at;
+        const uint _e97 = group_count(grid_1.x, grid_1.y, grid_1.z, grid_1.w);
+        cull_tile(li, _e71.lo, _e71.hi, grid_1, (_e76 * naga_div(_e86, CLUSTER)), (_e92 + (_e76 * _e97)));
     }
     if (inside) {
-        float3 _e192 = e;
-        uint _e193 = kept;
-        irradiance.Store4(pix*16, asuint(float4(_e192, float(_e193))));
-        float3 _e198 = s;
-        specular.Store4(pix*16, asuint(float4(_e198, 0.0)));
+        float3 _e103 = e;
+        uint _e105 = kept;
+        irradiance.Store4(pix*16, asuint(float4(_e103, float(_e105))));
+        float3 _e111 = s;
+        specular.Store4(pix*16, asuint(float4(_e111, 0.0)));
         return;
     } else {
         return;

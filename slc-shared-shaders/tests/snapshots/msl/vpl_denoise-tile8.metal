@@ -15,9 +15,15 @@ struct VplParams {
     uint lights_per_subset;
     float min_d2_;
     float near_r2_;
-    uint near_blocks;
     uint subset_shift;
+    uint far_groups_at;
+    uint near_clusters_at;
+    uint near_groups_at;
+    uint box_count;
+    uint pad0_;
     uint pad1_;
+    metal::uint4 far_grid;
+    metal::uint4 near_grid;
 };
 struct ViewParams {
     metal::float4 c0_;
@@ -33,7 +39,7 @@ struct ViewParams {
     metal::packed_float3 f0_d;
     float f90_d;
 };
-typedef metal::float4 type_6[1];
+typedef metal::float4 type_7[1];
 struct GbTexel {
     metal::float4 position;
     metal::float4 normal;
@@ -60,6 +66,8 @@ constant float CULL_RADIUS_SCALE = 1.000001;
 constant float SPHERE_PAD = 0.00000047683716;
 constant float SPHERE_HUGE = 340282350000000000000000000000000000000.0;
 constant float SPHERE_PAD_ABS = 0.000000000000000001;
+constant uint CLUSTER = 64u;
+constant uint GROUP_SIDE = 8u;
 constant float INV_PI = 0.31830987;
 constant float MIN_D2_ = 0.000000000001;
 constant float MAX_INTENSITY = 72057594000000000.0;
@@ -73,7 +81,6 @@ constant float F32_MAX = 340282350000000000000000000000000000000.0;
 constant float DEPTH_NONE = 1000000000000000000000000000000.0;
 constant float DEPTH_SIGMA = 0.05;
 constant float COVER_WEIGHT = 0.1;
-constant uint NEAR_BLOCK = 64u;
 constant uint ROULETTE_DEPTH = 2u;
 constant float TEMPORAL_MAX_HISTORY = 32.0;
 constant float TEMPORAL_DEPTH_TOLERANCE = 0.01;
@@ -202,7 +209,7 @@ Window window_sum(
     constant ViewParams& view,
     metal::texture2d<float, metal::access::sample> position_tex,
     metal::texture2d<float, metal::access::sample> normal_tex,
-    device type_6 const& irradiance,
+    device type_7 const& irradiance,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Window win = {};
@@ -279,8 +286,8 @@ kernel void main_(
 , constant ViewParams& view [[user(fake0)]]
 , metal::texture2d<float, metal::access::sample> position_tex [[user(fake0)]]
 , metal::texture2d<float, metal::access::sample> normal_tex [[user(fake0)]]
-, device type_6 const& irradiance [[user(fake0)]]
-, device type_6& filtered [[user(fake0)]]
+, device type_7 const& irradiance [[user(fake0)]]
+, device type_7& filtered [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
     bool local = {};

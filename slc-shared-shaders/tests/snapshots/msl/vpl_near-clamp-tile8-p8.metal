@@ -5,11 +5,11 @@
 using metal::uint;
 
 struct _mslBufferSizes {
-    uint size6;
     uint size7;
     uint size8;
     uint size9;
     uint size10;
+    uint size11;
 };
 
 struct GpuLight {
@@ -28,11 +28,17 @@ struct VplParams {
     uint lights_per_subset;
     float min_d2_;
     float near_r2_;
-    uint near_blocks;
     uint subset_shift;
+    uint far_groups_at;
+    uint near_clusters_at;
+    uint near_groups_at;
+    uint box_count;
+    uint pad0_;
     uint pad1_;
+    metal::uint4 far_grid;
+    metal::uint4 near_grid;
 };
-struct GpuNearBox {
+struct GpuBox {
     metal::packed_float3 lo;
     float pad0_;
     metal::packed_float3 hi;
@@ -52,24 +58,27 @@ struct ViewParams {
     metal::packed_float3 f0_d;
     float f90_d;
 };
-typedef float type_4[1];
-struct type_6 {
+typedef float type_5[1];
+struct type_7 {
     metal::float3 inner[64];
 };
 struct WorkgroupBox {
     metal::float3 lo;
     metal::float3 hi;
 };
-typedef GpuLight type_8[1];
-typedef uint type_9[1];
-typedef GpuNearBox type_10[1];
-typedef metal::float4 type_11[1];
+typedef GpuLight type_9[1];
+typedef uint type_10[1];
+typedef GpuBox type_11[1];
+typedef metal::float4 type_12[1];
 struct GbTexel {
     metal::float4 position;
     metal::float4 normal;
 };
 struct type_14 {
-    uint inner[2048];
+    uint inner[1024];
+};
+struct type_16 {
+    uint inner[64];
 };
 constant uint LIGHT_POINT = 0u;
 constant uint LIGHT_SPOT = 1u;
@@ -87,6 +96,8 @@ constant float CULL_RADIUS_SCALE = 1.000001;
 constant float SPHERE_PAD = 0.00000047683716;
 constant float SPHERE_HUGE = 340282350000000000000000000000000000000.0;
 constant float SPHERE_PAD_ABS = 0.000000000000000001;
+constant uint CLUSTER = 64u;
+constant uint GROUP_SIDE = 8u;
 constant float INV_PI = 0.31830987;
 constant float MIN_D2_ = 0.000000000001;
 constant float MAX_INTENSITY = 72057594000000000.0;
@@ -100,7 +111,6 @@ constant float F32_MAX = 340282350000000000000000000000000000000.0;
 constant float DEPTH_NONE = 1000000000000000000000000000000.0;
 constant float DEPTH_SIGMA = 0.05;
 constant float COVER_WEIGHT = 0.1;
-constant uint NEAR_BLOCK = 64u;
 constant uint ROULETTE_DEPTH = 2u;
 constant float TEMPORAL_MAX_HISTORY = 32.0;
 constant float TEMPORAL_DEPTH_TOLERANCE = 0.01;
@@ -115,7 +125,7 @@ constant uint P = 8u;
 constant uint TILE = 8u;
 constant uint THREADS = 64u;
 constant uint BOX_THREADS = 64u;
-constant uint NEAR_CHUNK = 32u;
+constant uint MAX_TILE_LIGHTS = 1024u;
 
 float to_f32_(
     uint u
@@ -147,14 +157,111 @@ bool sphere_overlaps_aabb(
     return metal::dot(v_1, v_1) <= (r * r);
 }
 
+uint naga_div(uint lhs, uint rhs) {
+    return lhs / metal::select(rhs, 1u, rhs == 0u);
+}
+
+uint groups_across(
+    uint bw,
+    uint gw
+) {
+    return naga_div((bw + gw) - 1u, gw);
+}
+
+uint group_count(
+    uint bw_1,
+    uint bh,
+    uint gw_1,
+    uint gh
+) {
+    uint _e4 = groups_across(bw_1, gw_1);
+    uint _e5 = groups_across(bh, gh);
+    return _e4 * _e5;
+}
+
+uint naga_mod(uint lhs, uint rhs) {
+    return lhs % metal::select(rhs, 1u, rhs == 0u);
+}
+
+uint group_first(
+    uint g,
+    uint bw_2,
+    uint bh_1,
+    uint gw_2,
+    uint gh_1
+) {
+    uint _e5 = groups_across(bw_2, gw_2);
+    uint gx = naga_mod(g, _e5);
+    uint gy = naga_div(g, _e5);
+    uint h_1 = metal::min(gh_1, bh_1 - (gh_1 * gy));
+    return ((gy * gh_1) * bw_2) + ((gx * gw_2) * h_1);
+}
+
+uint group_clusters(
+    uint g_1,
+    uint bw_3,
+    uint bh_2,
+    uint gw_3,
+    uint gh_2
+) {
+    uint _e5 = groups_across(bw_3, gw_3);
+    uint gx_1 = naga_mod(g_1, _e5);
+    uint gy_1 = naga_div(g_1, _e5);
+    return metal::min(gw_3, bw_3 - (gw_3 * gx_1)) * metal::min(gh_2, bh_2 - (gh_2 * gy_1));
+}
+
+bool box_overlaps_box(
+    metal::float3 lo1_,
+    metal::float3 hi1_,
+    metal::float3 lo2_,
+    metal::float3 hi2_
+) {
+    bool local_2 = {};
+    bool local_3 = {};
+    bool local_4 = {};
+    bool local_5 = {};
+    bool local_6 = {};
+    if (lo1_.x <= hi2_.x) {
+        local_2 = lo2_.x <= hi1_.x;
+    } else {
+        local_2 = false;
+    }
+    bool _e13 = local_2;
+    if (_e13) {
+        local_3 = lo1_.y <= hi2_.y;
+    } else {
+        local_3 = false;
+    }
+    bool _e20 = local_3;
+    if (_e20) {
+        local_4 = lo2_.y <= hi1_.y;
+    } else {
+        local_4 = false;
+    }
+    bool _e27 = local_4;
+    if (_e27) {
+        local_5 = lo1_.z <= hi2_.z;
+    } else {
+        local_5 = false;
+    }
+    bool _e34 = local_5;
+    if (_e34) {
+        local_6 = lo2_.z <= hi1_.z;
+    } else {
+        local_6 = false;
+    }
+    bool _e41 = local_6;
+    return _e41;
+}
+
 float vpl_transfer(
     metal::float3 n_l,
     metal::float3 n_x,
     metal::float3 v,
     float min_d2_
 ) {
-    float m_2 = metal::max(metal::dot(v, v), metal::max(min_d2_, MIN_D2_));
-    return ((metal::max(metal::dot(n_l, v), 0.0) * metal::max(-(metal::dot(n_x, v)), 0.0)) * INV_PI) / (m_2 * m_2);
+    float m_1 = metal::max(metal::dot(v, v), metal::max(min_d2_, MIN_D2_));
+    return ((metal::max(metal::dot(n_l, v), 0.0) * metal::max(-(metal::dot(n_x, v)), 0.0)) * INV_PI) / (m_1 * m_1);
 }
 
 float interleave_flux_scale(
@@ -192,20 +299,17 @@ float vpl_near_fixed_share(
     return (_e4 & (_e3 > 0.0)) ? _e3 : 0.0;
 }
 
-uint naga_div(uint lhs, uint rhs) {
-    return lhs / metal::select(rhs, 1u, rhs == 0u);
-}
-
-WorkgroupBox workgroup_box(
+WorkgroupBox workgroup_bounds(
     uint li_1,
-    metal::float3 p,
-    bool has,
-    threadgroup type_6& wg_lo,
-    threadgroup type_6& wg_hi
+    metal::float3 lo,
+    metal::float3 hi,
+    threadgroup type_7& wg_lo,
+    threadgroup type_7& wg_hi,
+    threadgroup WorkgroupBox& wg_box
 ) {
     uint stride = 32u;
-    wg_lo.inner[li_1] = has ? p : metal::float3(340282350000000000000000000000000000000.0);
-    wg_hi.inner[li_1] = has ? p : metal::float3(-340282350000000000000000000000000000000.0);
+    wg_lo.inner[li_1] = lo;
+    wg_hi.inner[li_1] = hi;
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
     uint2 loop_bound = uint2(4294967295u);
     bool loop_init = true;
@@ -213,45 +317,65 @@ WorkgroupBox workgroup_box(
         if (metal::all(loop_bound == uint2(0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         if (!loop_init) {
-            uint _e42 = stride;
-            stride = naga_div(_e42, 2u);
+            uint _e36 = stride;
+            stride = naga_div(_e36, 2u);
         }
         loop_init = false;
-        uint _e15 = stride;
-        if (_e15 > 0u) {
+        uint _e9 = stride;
+        if (_e9 > 0u) {
         } else {
             break;
         }
         {
-            uint _e18 = stride;
-            if (li_1 < _e18) {
-                metal::float3 _e24 = wg_lo.inner[li_1];
-                uint _e26 = stride;
-                metal::float3 _e29 = wg_lo.inner[li_1 + _e26];
-                wg_lo.inner[li_1] = metal::min(_e24, _e29);
-                metal::float3 _e35 = wg_hi.inner[li_1];
-                uint _e37 = stride;
-                metal::float3 _e40 = wg_hi.inner[li_1 + _e37];
-                wg_hi.inner[li_1] = metal::max(_e35, _e40);
+            uint _e12 = stride;
+            if (li_1 < _e12) {
+                metal::float3 _e18 = wg_lo.inner[li_1];
+                uint _e20 = stride;
+                metal::float3 _e23 = wg_lo.inner[li_1 + _e20];
+                wg_lo.inner[li_1] = metal::min(_e18, _e23);
+                metal::float3 _e29 = wg_hi.inner[li_1];
+                uint _e31 = stride;
+                metal::float3 _e34 = wg_hi.inner[li_1 + _e31];
+                wg_hi.inner[li_1] = metal::max(_e29, _e34);
             }
             metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
         }
     }
-    metal::float3 _e47 = wg_lo.inner[0];
-    metal::float3 _e50 = wg_hi.inner[0];
-    return WorkgroupBox {_e47, _e50};
+    if (li_1 == 0u) {
+        metal::float3 _e44 = wg_lo.inner[0];
+        metal::float3 _e47 = wg_hi.inner[0];
+        wg_box = WorkgroupBox {_e44, _e47};
+    }
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    WorkgroupBox unnamed = wg_box;
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    return unnamed;
+}
+
+WorkgroupBox workgroup_box(
+    uint li_2,
+    metal::float3 p_1,
+    bool has,
+    threadgroup type_7& wg_lo,
+    threadgroup type_7& wg_hi,
+    threadgroup WorkgroupBox& wg_box
+) {
+    WorkgroupBox _e9 = workgroup_bounds(li_2, has ? p_1 : metal::float3(340282350000000000000000000000000000000.0), has ? p_1 : metal::float3(-340282350000000000000000000000000000000.0), wg_lo, wg_hi, wg_box);
+    return _e9;
+}
+
+bool box_is_empty(
+    WorkgroupBox b
+) {
+    return b.lo.x > b.hi.x;
 }
 
 metal::float4 surface_at(
     metal::int2 texel,
     metal::texture2d<float, metal::access::sample> position_tex
 ) {
-    metal::float4 p_1 = position_tex.read(metal::uint2(texel), 0);
-    return (p_1.w > 0.0) ? metal::float4(p_1.xyz, 1.0) : metal::float4(0.0);
-}
-
-uint naga_mod(uint lhs, uint rhs) {
-    return lhs % metal::select(rhs, 1u, rhs == 0u);
+    metal::float4 p_2 = position_tex.read(metal::uint2(texel), 0);
+    return (p_2.w > 0.0) ? metal::float4(p_2.xyz, 1.0) : metal::float4(0.0);
 }
 
 GbTexel gbuffer_at(
@@ -260,7 +384,7 @@ GbTexel gbuffer_at(
     metal::texture2d<float, metal::access::sample> position_tex,
     metal::texture2d<float, metal::access::sample> normal_tex
 ) {
-    bool local_5 = {};
+    bool local_7 = {};
     uint _e3 = view.width;
     uint _e8 = view.width;
     metal::int2 texel_1 = metal::int2(static_cast<int>(naga_mod(i, _e3)), static_cast<int>(naga_div(i, _e8)));
@@ -269,25 +393,242 @@ GbTexel gbuffer_at(
     metal::float3 n = _e15.xyz;
     float len2_ = metal::dot(n, n);
     if (_e12.w > 0.0) {
-        local_5 = len2_ > 0.0;
+        local_7 = len2_ > 0.0;
     } else {
-        local_5 = false;
+        local_7 = false;
     }
-    bool valid = local_5;
+    bool valid_1 = local_7;
     metal::float3 _e30 = view.eye;
     metal::float3 v_2 = _e12.xyz - _e30;
-    metal::float4 position = metal::float4(_e12.xyz, valid ? 1.0 : 0.0);
-    metal::float4 normal = valid ? metal::float4(n / metal::float3(metal::sqrt(len2_)), metal::sqrt(metal::dot(v_2, v_2))) : metal::float4(0.0, 0.0, 0.0, 1000000000000000000000000000000.0);
+    metal::float4 position = metal::float4(_e12.xyz, valid_1 ? 1.0 : 0.0);
+    metal::float4 normal = valid_1 ? metal::float4(n / metal::float3(metal::sqrt(len2_)), metal::sqrt(metal::dot(v_2, v_2))) : metal::float4(0.0, 0.0, 0.0, 1000000000000000000000000000000.0);
     return GbTexel {position, normal};
 }
 
 float near_r2_of(
     uint slot,
-    device type_4 const& r2_2,
+    device type_5 const& r2_2,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     float _e3 = r2_2[slot];
     return _e3;
+}
+
+float near_cull_r2_of(
+    uint slot_1,
+    float near_r2_3,
+    device type_5 const& r2_2,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float _e2 = near_r2_of(slot_1, r2_2, _buffer_sizes);
+    float _e3 = vpl_near_cull_range2_(_e2, near_r2_3);
+    return _e3;
+}
+
+uint cluster_slot(
+    uint c_1,
+    uint k,
+    constant VplParams& params,
+    device type_10 const& near_slots,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e5 = params.near_clusters_at;
+    uint _e11 = near_slots[((c_1 - _e5) * CLUSTER) + k];
+    return _e11;
+}
+
+float cull_r2_of(
+    uint slot_2,
+    constant VplParams& params,
+    device type_5 const& r2_2,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float _e3 = params.near_r2_;
+    float _e4 = near_cull_r2_of(slot_2, _e3, r2_2, _buffer_sizes);
+    return _e4;
+}
+
+void shade_list(
+    uint count,
+    constant VplParams& params,
+    device type_9 const& lights,
+    device type_5 const& r2_2,
+    thread metal::float3& pos,
+    thread metal::float3& nrm,
+    thread bool& valid,
+    thread metal::float3& e,
+    thread uint& kept,
+    threadgroup type_14& tile_lights,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint m = 0u;
+    bool _e2 = valid;
+    if (!(_e2)) {
+        return;
+    }
+    float _e5 = interleave_flux_scale(P);
+    float unscale = 1.0 / _e5;
+    uint2 loop_bound_1 = uint2(4294967295u);
+    bool loop_init_1 = true;
+    while(true) {
+        if (metal::all(loop_bound_1 == uint2(0u))) { break; }
+        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+        if (!loop_init_1) {
+            uint _e52 = m;
+            m = _e52 + 1u;
+        }
+        loop_init_1 = false;
+        uint _e10 = m;
+        if (_e10 < count) {
+        } else {
+            break;
+        }
+        {
+            uint _e13 = m;
+            uint slot_3 = tile_lights.inner[_e13];
+            GpuLight l = lights[slot_3];
+            metal::float3 _e20 = pos;
+            metal::float3 v_3 = _e20 - l.p0_;
+            float _e25 = r2_2[slot_3];
+            float _e29 = params.near_r2_;
+            float _e30 = vpl_near_fixed_share(_e25, metal::dot(v_3, v_3), _e29);
+            if (_e30 > 0.0) {
+                metal::float3 _e35 = nrm;
+                float _e38 = params.min_d2_;
+                float _e39 = vpl_transfer(l.p1_, _e35, v_3, _e38);
+                float t_1 = (_e39 * _e30) * unscale;
+                metal::float3 _e43 = e;
+                e = _e43 + (l.intensity * t_1);
+                uint _e48 = kept;
+                kept = _e48 + 1u;
+            }
+        }
+    }
+    return;
+}
+
+void cull_tile(
+    uint li_3,
+    metal::float3 lo_1,
+    metal::float3 hi_1,
+    metal::uint4 grid,
+    uint clusters_at,
+    uint groups_at,
+    constant VplParams& params,
+    device type_9 const& lights,
+    device type_10 const& near_slots,
+    device type_11 const& boxes,
+    device type_5 const& r2_2,
+    thread metal::float3& pos,
+    thread metal::float3& nrm,
+    thread bool& valid,
+    thread metal::float3& e,
+    thread uint& kept,
+    threadgroup type_14& tile_lights,
+    threadgroup metal::atomic_uint& list_count,
+    threadgroup type_16& cluster_hits,
+    threadgroup metal::atomic_uint& hit_count,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint g_2 = 0u;
+    uint h = {};
+    if (li_3 == 0u) {
+        metal::atomic_store_explicit(&list_count, 0u, metal::memory_order_relaxed);
+    }
+    uint _e14 = group_count(grid.x, grid.y, grid.z, grid.w);
+    uint2 loop_bound_2 = uint2(4294967295u);
+    bool loop_init_2 = true;
+    while(true) {
+        if (metal::all(loop_bound_2 == uint2(0u))) { break; }
+        loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
+        if (!loop_init_2) {
+            uint _e101 = g_2;
+            g_2 = _e101 + 1u;
+        }
+        loop_init_2 = false;
+        uint _e17 = g_2;
+        if (_e17 < _e14) {
+        } else {
+            break;
+        }
+        {
+            uint _e20 = g_2;
+            GpuBox gb = boxes[groups_at + _e20];
+            bool _e26 = box_overlaps_box(gb.lo, gb.hi, lo_1, hi_1);
+            if (!(_e26)) {
+                continue;
+            }
+            uint _e28 = g_2;
+            uint _e33 = group_first(_e28, grid.x, grid.y, grid.z, grid.w);
+            uint first = clusters_at + _e33;
+            uint _e35 = g_2;
+            uint _e40 = group_clusters(_e35, grid.x, grid.y, grid.z, grid.w);
+            if (li_3 == 0u) {
+                metal::atomic_store_explicit(&hit_count, 0u, metal::memory_order_relaxed);
+            }
+            metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+            if (li_3 < _e40) {
+                GpuBox cb = boxes[first + li_3];
+                bool _e52 = box_overlaps_box(cb.lo, cb.hi, lo_1, hi_1);
+                if (_e52) {
+                    uint _e56 = metal::atomic_fetch_add_explicit(&hit_count, 1u, metal::memory_order_relaxed);
+                    cluster_hits.inner[_e56] = first + li_3;
+                }
+            }
+            metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+            uint unnamed_1 = metal::atomic_load_explicit(&hit_count, metal::memory_order_relaxed);
+            metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+            h = 0u;
+            uint2 loop_bound_3 = uint2(4294967295u);
+            bool loop_init_3 = true;
+            while(true) {
+                if (metal::all(loop_bound_3 == uint2(0u))) { break; }
+                loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+                if (!loop_init_3) {
+                    uint _e98 = h;
+                    h = _e98 + 1u;
+                }
+                loop_init_3 = false;
+                uint _e63 = h;
+                if (_e63 < unnamed_1) {
+                } else {
+                    break;
+                }
+                {
+                    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+                    uint unnamed_2 = metal::atomic_load_explicit(&list_count, metal::memory_order_relaxed);
+                    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+                    if ((unnamed_2 + CLUSTER) > MAX_TILE_LIGHTS) {
+                        shade_list(unnamed_2, params, lights, r2_2, pos, nrm, valid, e, kept, tile_lights, _buffer_sizes);
+                        metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+                        if (li_3 == 0u) {
+                            metal::atomic_store_explicit(&list_count, 0u, metal::memory_order_relaxed);
+                        }
+                        metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+                    }
+                    uint _e76 = h;
+                    uint _e78 = cluster_hits.inner[_e76];
+                    uint _e79 = cluster_slot(_e78, li_3, params, near_slots, _buffer_sizes);
+                    GpuLight l_1 = lights[_e79];
+                    if (metal::any(l_1.intensity != metal::float3(0.0))) {
+                        float _e89 = cull_r2_of(_e79, params, r2_2, _buffer_sizes);
+                        float _e90 = cull_radius(_e89);
+                        bool _e91 = sphere_overlaps_aabb(l_1.p0_, _e90, lo_1, hi_1);
+                        if (_e91) {
+                            uint _e95 = metal::atomic_fetch_add_explicit(&list_count, 1u, metal::memory_order_relaxed);
+                            tile_lights.inner[_e95] = _e79;
+                        }
+                    }
+                }
+            }
+            metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+        }
+    }
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    uint unnamed_3 = metal::atomic_load_explicit(&list_count, metal::memory_order_relaxed);
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    shade_list(unnamed_3, params, lights, r2_2, pos, nrm, valid, e, kept, tile_lights, _buffer_sizes);
+    return;
 }
 
 struct main_Input {
@@ -296,40 +637,42 @@ kernel void main_(
   metal::uint3 wg [[threadgroup_position_in_grid]]
 , metal::uint3 lid [[thread_position_in_threadgroup]]
 , uint li [[thread_index_in_threadgroup]]
-, threadgroup type_6& wg_lo
-, threadgroup type_6& wg_hi
+, threadgroup type_7& wg_lo
+, threadgroup type_7& wg_hi
+, threadgroup WorkgroupBox& wg_box
 , constant VplParams& params [[user(fake0)]]
 , constant ViewParams& view [[user(fake0)]]
 , metal::texture2d<float, metal::access::sample> position_tex [[user(fake0)]]
 , metal::texture2d<float, metal::access::sample> normal_tex [[user(fake0)]]
-, device type_8 const& lights [[user(fake0)]]
-, device type_9 const& near_slots [[user(fake0)]]
-, device type_10 const& near_boxes [[user(fake0)]]
-, device type_4 const& r2_2 [[user(fake0)]]
-, device type_11& irradiance [[user(fake0)]]
-, threadgroup metal::atomic_uint& light_count
-, threadgroup type_14& light_list
+, device type_9 const& lights [[user(fake0)]]
+, device type_10 const& near_slots [[user(fake0)]]
+, device type_11 const& boxes [[user(fake0)]]
+, device type_5 const& r2_2 [[user(fake0)]]
+, device type_12& irradiance [[user(fake0)]]
+, threadgroup type_14& tile_lights
+, threadgroup metal::atomic_uint& list_count
+, threadgroup type_16& cluster_hits
+, threadgroup metal::atomic_uint& hit_count
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
+    metal::float3 pos = {};
+    metal::float3 nrm = {};
+    bool valid = {};
+    metal::float3 e = {};
+    uint kept = {};
     if (li == 0u) {
         wg_lo = {};
         wg_hi = {};
-        metal::atomic_store_explicit(&light_count, 0, metal::memory_order_relaxed);
-        light_list = {};
+        wg_box = {};
+        tile_lights = {};
+        metal::atomic_store_explicit(&list_count, 0, metal::memory_order_relaxed);
+        cluster_hits = {};
+        metal::atomic_store_explicit(&hit_count, 0, metal::memory_order_relaxed);
     }
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
     bool local = {};
-    metal::float4 pos = metal::float4(0.0);
-    metal::float3 nrm = metal::float3(0.0);
+    metal::float4 p = metal::float4(0.0);
     bool local_1 = {};
-    metal::float3 e = metal::float3(0.0);
-    uint kept = 0u;
-    uint first = 0u;
-    bool local_2 = {};
-    bool local_3 = {};
-    uint m = {};
-    bool local_4 = {};
-    uint m_1 = {};
     uint px = (wg.x * TILE) + lid.x;
     uint py = (wg.y * TILE) + lid.y;
     uint _e15 = params.width;
@@ -343,153 +686,36 @@ kernel void main_(
     uint _e27 = params.width;
     uint pix = (py * _e27) + px;
     if (inside) {
-        GbTexel _e36 = gbuffer_at(pix, view, position_tex, normal_tex);
-        pos = _e36.position;
-        nrm = _e36.normal.xyz;
+        GbTexel _e33 = gbuffer_at(pix, view, position_tex, normal_tex);
+        p = _e33.position;
+        nrm = _e33.normal.xyz;
     }
+    metal::float4 _e39 = p;
+    pos = _e39.xyz;
     if (inside) {
-        float _e43 = pos.w;
-        local_1 = _e43 > 0.0;
+        float _e45 = p.w;
+        local_1 = _e45 > 0.0;
     } else {
         local_1 = false;
     }
-    bool valid_1 = local_1;
-    metal::float4 _e48 = pos;
-    WorkgroupBox _e50 = workgroup_box(li, _e48.xyz, valid_1, wg_lo, wg_hi);
-    metal::float3 lo = _e50.lo;
-    metal::float3 hi = _e50.hi;
-    float _e55 = params.near_r2_;
-    float _e56 = cull_radius(_e55);
-    float _e58 = interleave_flux_scale(P);
-    float unscale = 1.0 / _e58;
-    uint2 loop_bound_1 = uint2(4294967295u);
-    bool loop_init_1 = true;
-    while(true) {
-        if (metal::all(loop_bound_1 == uint2(0u))) { break; }
-        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
-        if (!loop_init_1) {
-            uint _e191 = first;
-            first = _e191 + NEAR_CHUNK;
-        }
-        loop_init_1 = false;
-        uint _e68 = first;
-        uint _e71 = params.near_blocks;
-        if (_e68 < _e71) {
-        } else {
-            break;
-        }
-        {
-            if (li == 0u) {
-                metal::atomic_store_explicit(&light_count, 0u, metal::memory_order_relaxed);
-            }
-            metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-            uint _e77 = first;
-            uint b = _e77 + li;
-            if (li < NEAR_CHUNK) {
-                uint _e85 = params.near_blocks;
-                local_2 = b < _e85;
-            } else {
-                local_2 = false;
-            }
-            bool _e88 = local_2;
-            if (_e88) {
-                GpuNearBox nb = near_boxes[b];
-                if (metal::all((nb.lo - metal::float3(_e56)) <= hi)) {
-                    local_3 = metal::all(lo <= (nb.hi + metal::float3(_e56)));
-                } else {
-                    local_3 = false;
-                }
-                bool _e105 = local_3;
-                if (_e105) {
-                    m = 0u;
-                    uint2 loop_bound_2 = uint2(4294967295u);
-                    bool loop_init_2 = true;
-                    while(true) {
-                        if (metal::all(loop_bound_2 == uint2(0u))) { break; }
-                        loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
-                        if (!loop_init_2) {
-                            uint _e144 = m;
-                            m = _e144 + 1u;
-                        }
-                        loop_init_2 = false;
-                        uint _e108 = m;
-                        if (_e108 < NEAR_BLOCK) {
-                        } else {
-                            break;
-                        }
-                        {
-                            uint _e114 = m;
-                            uint slot_1 = near_slots[(b * NEAR_BLOCK) + _e114];
-                            GpuLight l = lights[slot_1];
-                            float _e121 = near_r2_of(slot_1, r2_2, _buffer_sizes);
-                            float _e124 = params.near_r2_;
-                            float _e125 = vpl_near_cull_range2_(_e121, _e124);
-                            float _e126 = cull_radius(_e125);
-                            if (metal::any(l.intensity != metal::float3(0.0))) {
-                                bool _e135 = sphere_overlaps_aabb(l.p0_, _e126, lo, hi);
-                                local_4 = _e135;
-                            } else {
-                                local_4 = false;
-                            }
-                            bool _e137 = local_4;
-                            if (_e137) {
-                                uint _e141 = metal::atomic_fetch_add_explicit(&light_count, 1u, metal::memory_order_relaxed);
-                                light_list.inner[_e141] = slot_1;
-                            }
-                        }
-                    }
-                }
-            }
-            metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-            uint unnamed = metal::atomic_load_explicit(&light_count, metal::memory_order_relaxed);
-            metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-            if (valid_1) {
-                m_1 = 0u;
-                uint2 loop_bound_3 = uint2(4294967295u);
-                bool loop_init_3 = true;
-                while(true) {
-                    if (metal::all(loop_bound_3 == uint2(0u))) { break; }
-                    loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-                    if (!loop_init_3) {
-                        uint _e189 = m_1;
-                        m_1 = _e189 + 1u;
-                    }
-                    loop_init_3 = false;
-                    uint _e150 = m_1;
-                    if (_e150 < unnamed) {
-                    } else {
-                        break;
-                    }
-                    {
-                        uint _e153 = m_1;
-                        uint slot_2 = light_list.inner[_e153];
-                        GpuLight l_1 = lights[slot_2];
-                        metal::float4 _e159 = pos;
-                        metal::float3 v_3 = _e159.xyz - l_1.p0_;
-                        float _e165 = r2_2[slot_2];
-                        float _e169 = params.near_r2_;
-                        float _e170 = vpl_near_fixed_share(_e165, metal::dot(v_3, v_3), _e169);
-                        if (_e170 > 0.0) {
-                            metal::float3 _e174 = nrm;
-                            float _e177 = params.min_d2_;
-                            float _e178 = vpl_transfer(l_1.p1_, _e174, v_3, _e177);
-                            float t_1 = (_e178 * _e170) * unscale;
-                            metal::float3 _e181 = e;
-                            e = _e181 + (l_1.intensity * t_1);
-                            uint _e185 = kept;
-                            kept = _e185 + 1u;
-                        }
-                    }
-                }
-            }
-            metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-        }
+    bool _e49 = local_1;
+    valid = _e49;
+    metal::float3 _e51 = pos;
+    bool _e53 = valid;
+    WorkgroupBox _e54 = workgroup_box(li, _e51, _e53, wg_lo, wg_hi, wg_box);
+    bool _e55 = box_is_empty(_e54);
+    if (!(_e55)) {
+        metal::uint4 _e61 = params.near_grid;
+        uint _e64 = params.near_clusters_at;
+        uint _e67 = params.near_groups_at;
+        cull_tile(li, _e54.lo, _e54.hi, _e61, _e64, _e67, params, lights, near_slots, boxes, r2_2, pos, nrm, valid, e, kept, tile_lights, list_count, cluster_hits, hit_count, _buffer_sizes);
     }
-    if (valid_1) {
+    bool _e69 = valid;
+    if (_e69) {
         metal::float4 old = irradiance[pix];
-        metal::float3 _e200 = e;
-        uint _e203 = kept;
-        irradiance[pix] = metal::float4(old.xyz + _e200, old.w + static_cast<float>(_e203));
+        metal::float3 _e77 = e;
+        uint _e81 = kept;
+        irradiance[pix] = metal::float4(old.xyz + _e77, old.w + static_cast<float>(_e81));
         return;
     } else {
         return;

@@ -5,7 +5,6 @@
 using metal::uint;
 
 struct _mslBufferSizes {
-    uint size6;
     uint size7;
     uint size8;
     uint size9;
@@ -13,6 +12,7 @@ struct _mslBufferSizes {
     uint size11;
     uint size12;
     uint size13;
+    uint size14;
 };
 
 struct GpuLight {
@@ -31,11 +31,17 @@ struct VplParams {
     uint lights_per_subset;
     float min_d2_;
     float near_r2_;
-    uint near_blocks;
     uint subset_shift;
+    uint far_groups_at;
+    uint near_clusters_at;
+    uint near_groups_at;
+    uint box_count;
+    uint pad0_;
     uint pad1_;
+    metal::uint4 far_grid;
+    metal::uint4 near_grid;
 };
-struct GpuNearBox {
+struct GpuBox {
     metal::packed_float3 lo;
     float pad0_;
     metal::packed_float3 hi;
@@ -63,19 +69,19 @@ struct ViewParams {
     metal::packed_float3 f0_d;
     float f90_d;
 };
-typedef float type_4[1];
-struct type_6 {
+typedef float type_5[1];
+struct type_7 {
     metal::float3 inner[64];
 };
 struct WorkgroupBox {
     metal::float3 lo;
     metal::float3 hi;
 };
-typedef GpuLight type_8[1];
-typedef uint type_9[1];
-typedef GpuNearBox type_10[1];
-typedef metal::float4 type_11[1];
-typedef GpuMaterial type_12[1];
+typedef GpuLight type_9[1];
+typedef uint type_10[1];
+typedef GpuBox type_11[1];
+typedef metal::float4 type_12[1];
+typedef GpuMaterial type_13[1];
 struct GbTexel {
     metal::float4 position;
     metal::float4 normal;
@@ -87,7 +93,10 @@ struct Glossy {
     char _pad3[3];
 };
 struct type_15 {
-    uint inner[2048];
+    uint inner[1024];
+};
+struct type_17 {
+    uint inner[64];
 };
 constant uint LIGHT_POINT = 0u;
 constant uint LIGHT_SPOT = 1u;
@@ -105,6 +114,8 @@ constant float CULL_RADIUS_SCALE = 1.000001;
 constant float SPHERE_PAD = 0.00000047683716;
 constant float SPHERE_HUGE = 340282350000000000000000000000000000000.0;
 constant float SPHERE_PAD_ABS = 0.000000000000000001;
+constant uint CLUSTER = 64u;
+constant uint GROUP_SIDE = 8u;
 constant float INV_PI = 0.31830987;
 constant float MIN_D2_ = 0.000000000001;
 constant float MAX_INTENSITY = 72057594000000000.0;
@@ -118,7 +129,6 @@ constant float F32_MAX = 340282350000000000000000000000000000000.0;
 constant float DEPTH_NONE = 1000000000000000000000000000000.0;
 constant float DEPTH_SIGMA = 0.05;
 constant float COVER_WEIGHT = 0.1;
-constant uint NEAR_BLOCK = 64u;
 constant uint ROULETTE_DEPTH = 2u;
 constant float TEMPORAL_MAX_HISTORY = 32.0;
 constant float TEMPORAL_DEPTH_TOLERANCE = 0.01;
@@ -133,7 +143,7 @@ constant uint P = 8u;
 constant uint TILE = 8u;
 constant uint THREADS = 64u;
 constant uint BOX_THREADS = 64u;
-constant uint NEAR_CHUNK = 32u;
+constant uint MAX_TILE_LIGHTS = 1024u;
 
 float to_f32_(
     uint u
@@ -175,14 +185,111 @@ bool sphere_overlaps_aabb(
     return metal::dot(v_6, v_6) <= (r * r);
 }
 
+uint naga_div(uint lhs, uint rhs) {
+    return lhs / metal::select(rhs, 1u, rhs == 0u);
+}
+
+uint groups_across(
+    uint bw,
+    uint gw
+) {
+    return naga_div((bw + gw) - 1u, gw);
+}
+
+uint group_count(
+    uint bw_1,
+    uint bh,
+    uint gw_1,
+    uint gh
+) {
+    uint _e4 = groups_across(bw_1, gw_1);
+    uint _e5 = groups_across(bh, gh);
+    return _e4 * _e5;
+}
+
+uint naga_mod(uint lhs, uint rhs) {
+    return lhs % metal::select(rhs, 1u, rhs == 0u);
+}
+
+uint group_first(
+    uint g,
+    uint bw_2,
+    uint bh_1,
+    uint gw_2,
+    uint gh_1
+) {
+    uint _e5 = groups_across(bw_2, gw_2);
+    uint gx = naga_mod(g, _e5);
+    uint gy = naga_div(g, _e5);
+    uint h_1 = metal::min(gh_1, bh_1 - (gh_1 * gy));
+    return ((gy * gh_1) * bw_2) + ((gx * gw_2) * h_1);
+}
+
+uint group_clusters(
+    uint g_1,
+    uint bw_3,
+    uint bh_2,
+    uint gw_3,
+    uint gh_2
+) {
+    uint _e5 = groups_across(bw_3, gw_3);
+    uint gx_1 = naga_mod(g_1, _e5);
+    uint gy_1 = naga_div(g_1, _e5);
+    return metal::min(gw_3, bw_3 - (gw_3 * gx_1)) * metal::min(gh_2, bh_2 - (gh_2 * gy_1));
+}
+
+bool box_overlaps_box(
+    metal::float3 lo1_,
+    metal::float3 hi1_,
+    metal::float3 lo2_,
+    metal::float3 hi2_
+) {
+    bool local_2 = {};
+    bool local_3 = {};
+    bool local_4 = {};
+    bool local_5 = {};
+    bool local_6 = {};
+    if (lo1_.x <= hi2_.x) {
+        local_2 = lo2_.x <= hi1_.x;
+    } else {
+        local_2 = false;
+    }
+    bool _e13 = local_2;
+    if (_e13) {
+        local_3 = lo1_.y <= hi2_.y;
+    } else {
+        local_3 = false;
+    }
+    bool _e20 = local_3;
+    if (_e20) {
+        local_4 = lo2_.y <= hi1_.y;
+    } else {
+        local_4 = false;
+    }
+    bool _e27 = local_4;
+    if (_e27) {
+        local_5 = lo1_.z <= hi2_.z;
+    } else {
+        local_5 = false;
+    }
+    bool _e34 = local_5;
+    if (_e34) {
+        local_6 = lo2_.z <= hi1_.z;
+    } else {
+        local_6 = false;
+    }
+    bool _e41 = local_6;
+    return _e41;
+}
+
 float vpl_transfer(
     metal::float3 n_l,
     metal::float3 n_x,
     metal::float3 v,
     float min_d2_
 ) {
-    float m_2 = metal::max(metal::dot(v, v), metal::max(min_d2_, MIN_D2_));
-    return ((metal::max(metal::dot(n_l, v), 0.0) * metal::max(-(metal::dot(n_x, v)), 0.0)) * INV_PI) / (m_2 * m_2);
+    float m_1 = metal::max(metal::dot(v, v), metal::max(min_d2_, MIN_D2_));
+    return ((metal::max(metal::dot(n_l, v), 0.0) * metal::max(-(metal::dot(n_x, v)), 0.0)) * INV_PI) / (m_1 * m_1);
 }
 
 float ggx_d(
@@ -211,13 +318,13 @@ float smith_visibility(
     float n_v,
     float alpha_2
 ) {
-    bool local_5 = {};
+    bool local_7 = {};
     if (!((n_l_1 <= 0.0))) {
-        local_5 = n_v <= 0.0;
+        local_7 = n_v <= 0.0;
     } else {
-        local_5 = true;
+        local_7 = true;
     }
-    bool _e11 = local_5;
+    bool _e11 = local_7;
     if (_e11) {
         return 0.0;
     }
@@ -231,9 +338,9 @@ metal::float3 fresnel_schlick(
     float f90_,
     float v_h
 ) {
-    float c_1 = metal::saturate(1.0 - v_h);
-    float c2_ = c_1 * c_1;
-    return f0_ + ((metal::float3(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_1));
+    float c_2 = metal::saturate(1.0 - v_h);
+    float c2_ = c_2 * c_2;
+    return f0_ + ((metal::float3(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_2));
 }
 
 metal::float3 specular_fresnel(
@@ -263,12 +370,12 @@ float half_cosine(
     metal::float3 v_1,
     metal::float3 l
 ) {
-    metal::float3 h = v_1 + l;
-    float len2_ = metal::dot(h, h);
+    metal::float3 h_2 = v_1 + l;
+    float len2_ = metal::dot(h_2, h_2);
     if (len2_ <= 0.0) {
         return 0.0;
     }
-    return metal::saturate(metal::dot(v_1, h) / metal::sqrt(len2_));
+    return metal::saturate(metal::dot(v_1, h_2) / metal::sqrt(len2_));
 }
 
 metal::float3 specular_brdf(
@@ -281,24 +388,24 @@ metal::float3 specular_brdf(
     metal::float3 v_2,
     metal::float3 l_1
 ) {
-    bool local_6 = {};
+    bool local_8 = {};
     float n_l_2 = metal::dot(n, l_1);
     float n_v_1 = metal::dot(n, v_2);
     if (!((n_l_2 <= 0.0))) {
-        local_6 = n_v_1 <= 0.0;
+        local_8 = n_v_1 <= 0.0;
     } else {
-        local_6 = true;
+        local_8 = true;
     }
-    bool _e18 = local_6;
+    bool _e18 = local_8;
     if (_e18) {
         return metal::float3(0.0, 0.0, 0.0);
     }
     metal::float3 hs = v_2 + l_1;
     float inv = 1.0 / metal::sqrt(metal::dot(hs, hs));
-    metal::float3 h_1 = hs * inv;
-    metal::float3 c_2 = metal::cross(n, h_1);
-    float _e32 = ggx_d(metal::dot(n, h_1), metal::dot(c_2, c_2), alpha_3);
-    metal::float3 _e34 = specular_fresnel(base_2, metallic_2, f0_d_2, f90_d_2, metal::dot(v_2, h_1));
+    metal::float3 h_3 = hs * inv;
+    metal::float3 c_3 = metal::cross(n, h_3);
+    float _e32 = ggx_d(metal::dot(n, h_3), metal::dot(c_3, c_3), alpha_3);
+    metal::float3 _e34 = specular_fresnel(base_2, metallic_2, f0_d_2, f90_d_2, metal::dot(v_2, h_3));
     float _e35 = smith_visibility(n_l_2, n_v_1, alpha_3);
     return _e34 * (_e32 * _e35);
 }
@@ -349,20 +456,20 @@ bool has_specular(
     metal::float3 f0_d_5,
     float f90_d_5
 ) {
-    bool local_7 = {};
-    bool local_8 = {};
+    bool local_9 = {};
+    bool local_10 = {};
     if (!((metallic_6 > 0.0))) {
-        local_7 = f90_d_5 > 0.0;
+        local_9 = f90_d_5 > 0.0;
     } else {
-        local_7 = true;
+        local_9 = true;
     }
-    bool _e11 = local_7;
+    bool _e11 = local_9;
     if (!(_e11)) {
-        local_8 = metal::max(metal::max(f0_d_5.x, f0_d_5.y), f0_d_5.z) > 0.0;
+        local_10 = metal::max(metal::max(f0_d_5.x, f0_d_5.y), f0_d_5.z) > 0.0;
     } else {
-        local_8 = true;
+        local_10 = true;
     }
-    bool _e23 = local_8;
+    bool _e23 = local_10;
     return _e23;
 }
 
@@ -411,20 +518,17 @@ float vpl_near_slc_share(
     return (_e7 & (_e4 > 0.0)) ? (_e4 * _e5) : 0.0;
 }
 
-uint naga_div(uint lhs, uint rhs) {
-    return lhs / metal::select(rhs, 1u, rhs == 0u);
-}
-
-WorkgroupBox workgroup_box(
+WorkgroupBox workgroup_bounds(
     uint li_1,
-    metal::float3 p,
-    bool has,
-    threadgroup type_6& wg_lo,
-    threadgroup type_6& wg_hi
+    metal::float3 lo,
+    metal::float3 hi,
+    threadgroup type_7& wg_lo,
+    threadgroup type_7& wg_hi,
+    threadgroup WorkgroupBox& wg_box
 ) {
     uint stride = 32u;
-    wg_lo.inner[li_1] = has ? p : metal::float3(340282350000000000000000000000000000000.0);
-    wg_hi.inner[li_1] = has ? p : metal::float3(-340282350000000000000000000000000000000.0);
+    wg_lo.inner[li_1] = lo;
+    wg_hi.inner[li_1] = hi;
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
     uint2 loop_bound = uint2(4294967295u);
     bool loop_init = true;
@@ -432,45 +536,65 @@ WorkgroupBox workgroup_box(
         if (metal::all(loop_bound == uint2(0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         if (!loop_init) {
-            uint _e42 = stride;
-            stride = naga_div(_e42, 2u);
+            uint _e36 = stride;
+            stride = naga_div(_e36, 2u);
         }
         loop_init = false;
-        uint _e15 = stride;
-        if (_e15 > 0u) {
+        uint _e9 = stride;
+        if (_e9 > 0u) {
         } else {
             break;
         }
         {
-            uint _e18 = stride;
-            if (li_1 < _e18) {
-                metal::float3 _e24 = wg_lo.inner[li_1];
-                uint _e26 = stride;
-                metal::float3 _e29 = wg_lo.inner[li_1 + _e26];
-                wg_lo.inner[li_1] = metal::min(_e24, _e29);
-                metal::float3 _e35 = wg_hi.inner[li_1];
-                uint _e37 = stride;
-                metal::float3 _e40 = wg_hi.inner[li_1 + _e37];
-                wg_hi.inner[li_1] = metal::max(_e35, _e40);
+            uint _e12 = stride;
+            if (li_1 < _e12) {
+                metal::float3 _e18 = wg_lo.inner[li_1];
+                uint _e20 = stride;
+                metal::float3 _e23 = wg_lo.inner[li_1 + _e20];
+                wg_lo.inner[li_1] = metal::min(_e18, _e23);
+                metal::float3 _e29 = wg_hi.inner[li_1];
+                uint _e31 = stride;
+                metal::float3 _e34 = wg_hi.inner[li_1 + _e31];
+                wg_hi.inner[li_1] = metal::max(_e29, _e34);
             }
             metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
         }
     }
-    metal::float3 _e47 = wg_lo.inner[0];
-    metal::float3 _e50 = wg_hi.inner[0];
-    return WorkgroupBox {_e47, _e50};
+    if (li_1 == 0u) {
+        metal::float3 _e44 = wg_lo.inner[0];
+        metal::float3 _e47 = wg_hi.inner[0];
+        wg_box = WorkgroupBox {_e44, _e47};
+    }
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    WorkgroupBox unnamed = wg_box;
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    return unnamed;
+}
+
+WorkgroupBox workgroup_box(
+    uint li_2,
+    metal::float3 p_1,
+    bool has,
+    threadgroup type_7& wg_lo,
+    threadgroup type_7& wg_hi,
+    threadgroup WorkgroupBox& wg_box
+) {
+    WorkgroupBox _e9 = workgroup_bounds(li_2, has ? p_1 : metal::float3(340282350000000000000000000000000000000.0), has ? p_1 : metal::float3(-340282350000000000000000000000000000000.0), wg_lo, wg_hi, wg_box);
+    return _e9;
+}
+
+bool box_is_empty(
+    WorkgroupBox b
+) {
+    return b.lo.x > b.hi.x;
 }
 
 metal::float4 surface_at(
     metal::int2 texel,
     metal::texture2d<float, metal::access::sample> position_tex
 ) {
-    metal::float4 p_1 = position_tex.read(metal::uint2(texel), 0);
-    return (p_1.w > 0.0) ? metal::float4(p_1.xyz, 1.0) : metal::float4(0.0);
-}
-
-uint naga_mod(uint lhs, uint rhs) {
-    return lhs % metal::select(rhs, 1u, rhs == 0u);
+    metal::float4 p_2 = position_tex.read(metal::uint2(texel), 0);
+    return (p_2.w > 0.0) ? metal::float4(p_2.xyz, 1.0) : metal::float4(0.0);
 }
 
 GbTexel gbuffer_at(
@@ -479,7 +603,7 @@ GbTexel gbuffer_at(
     metal::texture2d<float, metal::access::sample> position_tex,
     metal::texture2d<float, metal::access::sample> normal_tex
 ) {
-    bool local_9 = {};
+    bool local_11 = {};
     uint _e3 = view.width;
     uint _e8 = view.width;
     metal::int2 texel_1 = metal::int2(static_cast<int>(naga_mod(i, _e3)), static_cast<int>(naga_div(i, _e8)));
@@ -488,15 +612,15 @@ GbTexel gbuffer_at(
     metal::float3 n_4 = _e15.xyz;
     float len2_1 = metal::dot(n_4, n_4);
     if (_e12.w > 0.0) {
-        local_9 = len2_1 > 0.0;
+        local_11 = len2_1 > 0.0;
     } else {
-        local_9 = false;
+        local_11 = false;
     }
-    bool valid = local_9;
+    bool valid_1 = local_11;
     metal::float3 _e30 = view.eye;
     metal::float3 v_7 = _e12.xyz - _e30;
-    metal::float4 position = metal::float4(_e12.xyz, valid ? 1.0 : 0.0);
-    metal::float4 normal = valid ? metal::float4(n_4 / metal::float3(metal::sqrt(len2_1)), metal::sqrt(metal::dot(v_7, v_7))) : metal::float4(0.0, 0.0, 0.0, 1000000000000000000000000000000.0);
+    metal::float4 position = metal::float4(_e12.xyz, valid_1 ? 1.0 : 0.0);
+    metal::float4 normal = valid_1 ? metal::float4(n_4 / metal::float3(metal::sqrt(len2_1)), metal::sqrt(metal::dot(v_7, v_7))) : metal::float4(0.0, 0.0, 0.0, 1000000000000000000000000000000.0);
     return GbTexel {position, normal};
 }
 
@@ -509,48 +633,278 @@ Glossy glossy_at(
     metal::float3 x,
     constant ViewParams& view,
     metal::texture2d<float, metal::access::sample> normal_tex,
-    device type_12 const& materials,
+    device type_13 const& materials,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e4 = view.width;
     uint _e9 = view.width;
     metal::int2 texel_2 = metal::int2(static_cast<int>(naga_mod(i_1, _e4)), static_cast<int>(naga_div(i_1, _e9)));
     metal::float4 _e16 = normal_tex.read(metal::uint2(texel_2), 0);
-    GpuMaterial m_3 = materials[naga_f2u32(_e16.w)];
+    GpuMaterial m_2 = materials[naga_f2u32(_e16.w)];
     metal::float3 _e23 = view.eye;
-    bool _e29 = has_specular(m_3.metallic, m_3.f0_, m_3.f90_);
-    return Glossy {m_3, metal::normalize(_e23 - x), _e29};
+    bool _e29 = has_specular(m_2.metallic, m_2.f0_, m_2.f90_);
+    return Glossy {m_2, metal::normalize(_e23 - x), _e29};
 }
 
 metal::float3 glossy_term(
-    Glossy g_1,
+    Glossy g_2,
     GpuLight l_4,
     metal::float3 n_3,
     metal::float3 v_5,
     float t
 ) {
-    bool local_10 = {};
-    if (!(!(g_1.on))) {
-        local_10 = t <= 0.0;
+    bool local_12 = {};
+    if (!(!(g_2.on))) {
+        local_12 = t <= 0.0;
     } else {
-        local_10 = true;
+        local_12 = true;
     }
-    bool _e13 = local_10;
+    bool _e13 = local_12;
     if (_e13) {
         return metal::float3(0.0);
     }
-    metal::float3 _e30 = specular_correction(g_1.m.albedo, g_1.m.metallic, g_1.m.f0_, g_1.m.f90_, g_1.m.alpha, n_3, g_1.v, metal::normalize(-(v_5)));
+    metal::float3 _e30 = specular_correction(g_2.m.albedo, g_2.m.metallic, g_2.m.f0_, g_2.m.f90_, g_2.m.alpha, n_3, g_2.v, metal::normalize(-(v_5)));
     return (l_4.intensity * _e30) * t;
 }
 
 float near_r2_of(
     uint slot,
-    device type_4 const& r2_5,
+    device type_5 const& r2_5,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     float _e3 = r2_5[slot];
     float _e5 = vpl_near_range2_(_e3, P);
     return _e5;
+}
+
+float near_cull_r2_of(
+    uint slot_1,
+    float near_r2_3,
+    device type_5 const& r2_5,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float _e2 = near_r2_of(slot_1, r2_5, _buffer_sizes);
+    float _e3 = vpl_near_cull_range2_(_e2, near_r2_3);
+    return _e3;
+}
+
+uint cluster_slot(
+    uint c_1,
+    uint k,
+    constant VplParams& params,
+    device type_10 const& near_slots,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e5 = params.near_clusters_at;
+    uint _e11 = near_slots[((c_1 - _e5) * CLUSTER) + k];
+    return _e11;
+}
+
+float cull_r2_of(
+    uint slot_2,
+    constant VplParams& params,
+    device type_5 const& r2_5,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float _e3 = params.near_r2_;
+    float _e4 = near_cull_r2_of(slot_2, _e3, r2_5, _buffer_sizes);
+    return _e4;
+}
+
+void shade_list(
+    uint count,
+    constant VplParams& params,
+    device type_9 const& lights,
+    device type_5 const& rt2_2,
+    device type_5 const& r2_5,
+    thread metal::float3& pos,
+    thread metal::float3& nrm,
+    thread bool& valid,
+    thread metal::float3& e,
+    thread uint& kept,
+    thread metal::float3& s,
+    thread Glossy& g_4,
+    threadgroup type_15& tile_lights,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint m = 0u;
+    bool _e2 = valid;
+    if (!(_e2)) {
+        return;
+    }
+    float _e5 = interleave_flux_scale(P);
+    float unscale = 1.0 / _e5;
+    uint2 loop_bound_1 = uint2(4294967295u);
+    bool loop_init_1 = true;
+    while(true) {
+        if (metal::all(loop_bound_1 == uint2(0u))) { break; }
+        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+        if (!loop_init_1) {
+            uint _e63 = m;
+            m = _e63 + 1u;
+        }
+        loop_init_1 = false;
+        uint _e10 = m;
+        if (_e10 < count) {
+        } else {
+            break;
+        }
+        {
+            uint _e13 = m;
+            uint slot_3 = tile_lights.inner[_e13];
+            GpuLight l_5 = lights[slot_3];
+            metal::float3 _e20 = pos;
+            metal::float3 v_8 = _e20 - l_5.p0_;
+            float _e25 = rt2_2[slot_3];
+            float _e27 = vpl_near_range2_(_e25, P);
+            float _e28 = near_r2_of(slot_3, r2_5, _buffer_sizes);
+            float _e32 = params.near_r2_;
+            float _e33 = vpl_near_slc_share(_e27, _e28, metal::dot(v_8, v_8), _e32);
+            if (_e33 > 0.0) {
+                metal::float3 _e38 = nrm;
+                float _e41 = params.min_d2_;
+                float _e42 = vpl_transfer(l_5.p1_, _e38, v_8, _e41);
+                float t_3 = (_e42 * _e33) * unscale;
+                metal::float3 _e46 = e;
+                e = _e46 + (l_5.intensity * t_3);
+                metal::float3 _e51 = s;
+                Glossy _e53 = g_4;
+                metal::float3 _e55 = nrm;
+                metal::float3 _e56 = glossy_term(_e53, l_5, _e55, v_8, t_3);
+                s = _e51 + _e56;
+                uint _e59 = kept;
+                kept = _e59 + 1u;
+            }
+        }
+    }
+    return;
+}
+
+void cull_tile(
+    uint li_3,
+    metal::float3 lo_1,
+    metal::float3 hi_1,
+    metal::uint4 grid,
+    uint clusters_at,
+    uint groups_at,
+    constant VplParams& params,
+    device type_9 const& lights,
+    device type_10 const& near_slots,
+    device type_11 const& boxes,
+    device type_5 const& rt2_2,
+    device type_5 const& r2_5,
+    thread metal::float3& pos,
+    thread metal::float3& nrm,
+    thread bool& valid,
+    thread metal::float3& e,
+    thread uint& kept,
+    thread metal::float3& s,
+    thread Glossy& g_4,
+    threadgroup type_15& tile_lights,
+    threadgroup metal::atomic_uint& list_count,
+    threadgroup type_17& cluster_hits,
+    threadgroup metal::atomic_uint& hit_count,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint g_3 = 0u;
+    uint h = {};
+    if (li_3 == 0u) {
+        metal::atomic_store_explicit(&list_count, 0u, metal::memory_order_relaxed);
+    }
+    uint _e14 = group_count(grid.x, grid.y, grid.z, grid.w);
+    uint2 loop_bound_2 = uint2(4294967295u);
+    bool loop_init_2 = true;
+    while(true) {
+        if (metal::all(loop_bound_2 == uint2(0u))) { break; }
+        loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
+        if (!loop_init_2) {
+            uint _e101 = g_3;
+            g_3 = _e101 + 1u;
+        }
+        loop_init_2 = false;
+        uint _e17 = g_3;
+        if (_e17 < _e14) {
+        } else {
+            break;
+        }
+        {
+            uint _e20 = g_3;
+            GpuBox gb = boxes[groups_at + _e20];
+            bool _e26 = box_overlaps_box(gb.lo, gb.hi, lo_1, hi_1);
+            if (!(_e26)) {
+                continue;
+            }
+            uint _e28 = g_3;
+            uint _e33 = group_first(_e28, grid.x, grid.y, grid.z, grid.w);
+            uint first = clusters_at + _e33;
+            uint _e35 = g_3;
+            uint _e40 = group_clusters(_e35, grid.x, grid.y, grid.z, grid.w);
+            if (li_3 == 0u) {
+                metal::atomic_store_explicit(&hit_count, 0u, metal::memory_order_relaxed);
+            }
+            metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+            if (li_3 < _e40) {
+                GpuBox cb = boxes[first + li_3];
+                bool _e52 = box_overlaps_box(cb.lo, cb.hi, lo_1, hi_1);
+                if (_e52) {
+                    uint _e56 = metal::atomic_fetch_add_explicit(&hit_count, 1u, metal::memory_order_relaxed);
+                    cluster_hits.inner[_e56] = first + li_3;
+                }
+            }
+            metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+            uint unnamed_1 = metal::atomic_load_explicit(&hit_count, metal::memory_order_relaxed);
+            metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+            h = 0u;
+            uint2 loop_bound_3 = uint2(4294967295u);
+            bool loop_init_3 = true;
+            while(true) {
+                if (metal::all(loop_bound_3 == uint2(0u))) { break; }
+                loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+                if (!loop_init_3) {
+                    uint _e98 = h;
+                    h = _e98 + 1u;
+                }
+                loop_init_3 = false;
+                uint _e63 = h;
+                if (_e63 < unnamed_1) {
+                } else {
+                    break;
+                }
+                {
+                    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+                    uint unnamed_2 = metal::atomic_load_explicit(&list_count, metal::memory_order_relaxed);
+                    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+                    if ((unnamed_2 + CLUSTER) > MAX_TILE_LIGHTS) {
+                        shade_list(unnamed_2, params, lights, rt2_2, r2_5, pos, nrm, valid, e, kept, s, g_4, tile_lights, _buffer_sizes);
+                        metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+                        if (li_3 == 0u) {
+                            metal::atomic_store_explicit(&list_count, 0u, metal::memory_order_relaxed);
+                        }
+                        metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+                    }
+                    uint _e76 = h;
+                    uint _e78 = cluster_hits.inner[_e76];
+                    uint _e79 = cluster_slot(_e78, li_3, params, near_slots, _buffer_sizes);
+                    GpuLight l_6 = lights[_e79];
+                    if (metal::any(l_6.intensity != metal::float3(0.0))) {
+                        float _e89 = cull_r2_of(_e79, params, r2_5, _buffer_sizes);
+                        float _e90 = cull_radius(_e89);
+                        bool _e91 = sphere_overlaps_aabb(l_6.p0_, _e90, lo_1, hi_1);
+                        if (_e91) {
+                            uint _e95 = metal::atomic_fetch_add_explicit(&list_count, 1u, metal::memory_order_relaxed);
+                            tile_lights.inner[_e95] = _e79;
+                        }
+                    }
+                }
+            }
+            metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+        }
+    }
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    uint unnamed_3 = metal::atomic_load_explicit(&list_count, metal::memory_order_relaxed);
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    shade_list(unnamed_3, params, lights, rt2_2, r2_5, pos, nrm, valid, e, kept, s, g_4, tile_lights, _buffer_sizes);
+    return;
 }
 
 struct main_Input {
@@ -559,45 +913,47 @@ kernel void main_(
   metal::uint3 wg [[threadgroup_position_in_grid]]
 , metal::uint3 lid [[thread_position_in_threadgroup]]
 , uint li [[thread_index_in_threadgroup]]
-, threadgroup type_6& wg_lo
-, threadgroup type_6& wg_hi
+, threadgroup type_7& wg_lo
+, threadgroup type_7& wg_hi
+, threadgroup WorkgroupBox& wg_box
 , constant VplParams& params [[user(fake0)]]
 , constant ViewParams& view [[user(fake0)]]
 , metal::texture2d<float, metal::access::sample> position_tex [[user(fake0)]]
 , metal::texture2d<float, metal::access::sample> normal_tex [[user(fake0)]]
-, device type_8 const& lights [[user(fake0)]]
-, device type_9 const& near_slots [[user(fake0)]]
-, device type_10 const& near_boxes [[user(fake0)]]
-, device type_4 const& rt2_2 [[user(fake0)]]
-, device type_4 const& r2_5 [[user(fake0)]]
-, device type_11& irradiance [[user(fake0)]]
-, device type_12 const& materials [[user(fake0)]]
-, device type_11& specular [[user(fake0)]]
-, threadgroup metal::atomic_uint& light_count
-, threadgroup type_15& light_list
+, device type_9 const& lights [[user(fake0)]]
+, device type_10 const& near_slots [[user(fake0)]]
+, device type_11 const& boxes [[user(fake0)]]
+, device type_5 const& rt2_2 [[user(fake0)]]
+, device type_5 const& r2_5 [[user(fake0)]]
+, device type_12& irradiance [[user(fake0)]]
+, device type_13 const& materials [[user(fake0)]]
+, device type_12& specular [[user(fake0)]]
+, threadgroup type_15& tile_lights
+, threadgroup metal::atomic_uint& list_count
+, threadgroup type_17& cluster_hits
+, threadgroup metal::atomic_uint& hit_count
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
+    metal::float3 pos = {};
+    metal::float3 nrm = {};
+    bool valid = {};
+    metal::float3 e = {};
+    uint kept = {};
+    metal::float3 s = {};
+    Glossy g_4 = {};
     if (li == 0u) {
         wg_lo = {};
         wg_hi = {};
-        metal::atomic_store_explicit(&light_count, 0, metal::memory_order_relaxed);
-        light_list = {};
+        wg_box = {};
+        tile_lights = {};
+        metal::atomic_store_explicit(&list_count, 0, metal::memory_order_relaxed);
+        cluster_hits = {};
+        metal::atomic_store_explicit(&hit_count, 0, metal::memory_order_relaxed);
     }
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
     bool local = {};
-    metal::float4 pos = metal::float4(0.0);
-    metal::float3 nrm = metal::float3(0.0);
+    metal::float4 p = metal::float4(0.0);
     bool local_1 = {};
-    metal::float3 e = metal::float3(0.0);
-    uint kept = 0u;
-    metal::float3 s = metal::float3(0.0);
-    Glossy g = {};
-    uint first = 0u;
-    bool local_2 = {};
-    bool local_3 = {};
-    uint m = {};
-    bool local_4 = {};
-    uint m_1 = {};
     uint px = (wg.x * TILE) + lid.x;
     uint py = (wg.y * TILE) + lid.y;
     uint _e15 = params.width;
@@ -611,168 +967,45 @@ kernel void main_(
     uint _e27 = params.width;
     uint pix = (py * _e27) + px;
     if (inside) {
-        GbTexel _e36 = gbuffer_at(pix, view, position_tex, normal_tex);
-        pos = _e36.position;
-        nrm = _e36.normal.xyz;
+        GbTexel _e33 = gbuffer_at(pix, view, position_tex, normal_tex);
+        p = _e33.position;
+        nrm = _e33.normal.xyz;
     }
+    metal::float4 _e39 = p;
+    pos = _e39.xyz;
     if (inside) {
-        float _e43 = pos.w;
-        local_1 = _e43 > 0.0;
+        float _e45 = p.w;
+        local_1 = _e45 > 0.0;
     } else {
         local_1 = false;
     }
-    bool valid_1 = local_1;
-    metal::float4 _e48 = pos;
-    WorkgroupBox _e50 = workgroup_box(li, _e48.xyz, valid_1, wg_lo, wg_hi);
-    metal::float3 lo = _e50.lo;
-    metal::float3 hi = _e50.hi;
-    float _e55 = params.near_r2_;
-    float _e56 = cull_radius(_e55);
-    float _e58 = interleave_flux_scale(P);
-    float unscale = 1.0 / _e58;
-    if (valid_1) {
-        metal::float4 _e70 = pos;
-        Glossy _e72 = glossy_at(pix, _e70.xyz, view, normal_tex, materials, _buffer_sizes);
-        g = _e72;
+    bool _e49 = local_1;
+    valid = _e49;
+    bool _e51 = valid;
+    if (_e51) {
+        metal::float3 _e54 = pos;
+        Glossy _e55 = glossy_at(pix, _e54, view, normal_tex, materials, _buffer_sizes);
+        g_4 = _e55;
     }
-    uint2 loop_bound_1 = uint2(4294967295u);
-    bool loop_init_1 = true;
-    while(true) {
-        if (metal::all(loop_bound_1 == uint2(0u))) { break; }
-        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
-        if (!loop_init_1) {
-            uint _e206 = first;
-            first = _e206 + NEAR_CHUNK;
-        }
-        loop_init_1 = false;
-        uint _e75 = first;
-        uint _e78 = params.near_blocks;
-        if (_e75 < _e78) {
-        } else {
-            break;
-        }
-        {
-            if (li == 0u) {
-                metal::atomic_store_explicit(&light_count, 0u, metal::memory_order_relaxed);
-            }
-            metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-            uint _e84 = first;
-            uint b = _e84 + li;
-            if (li < NEAR_CHUNK) {
-                uint _e92 = params.near_blocks;
-                local_2 = b < _e92;
-            } else {
-                local_2 = false;
-            }
-            bool _e95 = local_2;
-            if (_e95) {
-                GpuNearBox nb = near_boxes[b];
-                if (metal::all((nb.lo - metal::float3(_e56)) <= hi)) {
-                    local_3 = metal::all(lo <= (nb.hi + metal::float3(_e56)));
-                } else {
-                    local_3 = false;
-                }
-                bool _e112 = local_3;
-                if (_e112) {
-                    m = 0u;
-                    uint2 loop_bound_2 = uint2(4294967295u);
-                    bool loop_init_2 = true;
-                    while(true) {
-                        if (metal::all(loop_bound_2 == uint2(0u))) { break; }
-                        loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
-                        if (!loop_init_2) {
-                            uint _e151 = m;
-                            m = _e151 + 1u;
-                        }
-                        loop_init_2 = false;
-                        uint _e115 = m;
-                        if (_e115 < NEAR_BLOCK) {
-                        } else {
-                            break;
-                        }
-                        {
-                            uint _e121 = m;
-                            uint slot_1 = near_slots[(b * NEAR_BLOCK) + _e121];
-                            GpuLight l_5 = lights[slot_1];
-                            float _e128 = near_r2_of(slot_1, r2_5, _buffer_sizes);
-                            float _e131 = params.near_r2_;
-                            float _e132 = vpl_near_cull_range2_(_e128, _e131);
-                            float _e133 = cull_radius(_e132);
-                            if (metal::any(l_5.intensity != metal::float3(0.0))) {
-                                bool _e142 = sphere_overlaps_aabb(l_5.p0_, _e133, lo, hi);
-                                local_4 = _e142;
-                            } else {
-                                local_4 = false;
-                            }
-                            bool _e144 = local_4;
-                            if (_e144) {
-                                uint _e148 = metal::atomic_fetch_add_explicit(&light_count, 1u, metal::memory_order_relaxed);
-                                light_list.inner[_e148] = slot_1;
-                            }
-                        }
-                    }
-                }
-            }
-            metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-            uint unnamed = metal::atomic_load_explicit(&light_count, metal::memory_order_relaxed);
-            metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-            if (valid_1) {
-                m_1 = 0u;
-                uint2 loop_bound_3 = uint2(4294967295u);
-                bool loop_init_3 = true;
-                while(true) {
-                    if (metal::all(loop_bound_3 == uint2(0u))) { break; }
-                    loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-                    if (!loop_init_3) {
-                        uint _e204 = m_1;
-                        m_1 = _e204 + 1u;
-                    }
-                    loop_init_3 = false;
-                    uint _e157 = m_1;
-                    if (_e157 < unnamed) {
-                    } else {
-                        break;
-                    }
-                    {
-                        uint _e160 = m_1;
-                        uint slot_2 = light_list.inner[_e160];
-                        GpuLight l_6 = lights[slot_2];
-                        metal::float4 _e166 = pos;
-                        metal::float3 v_8 = _e166.xyz - l_6.p0_;
-                        float _e172 = rt2_2[slot_2];
-                        float _e174 = vpl_near_range2_(_e172, P);
-                        float _e175 = near_r2_of(slot_2, r2_5, _buffer_sizes);
-                        float _e179 = params.near_r2_;
-                        float _e180 = vpl_near_slc_share(_e174, _e175, metal::dot(v_8, v_8), _e179);
-                        if (_e180 > 0.0) {
-                            metal::float3 _e184 = nrm;
-                            float _e187 = params.min_d2_;
-                            float _e188 = vpl_transfer(l_6.p1_, _e184, v_8, _e187);
-                            float t_3 = (_e188 * _e180) * unscale;
-                            metal::float3 _e191 = e;
-                            e = _e191 + (l_6.intensity * t_3);
-                            metal::float3 _e195 = s;
-                            Glossy _e196 = g;
-                            metal::float3 _e197 = nrm;
-                            metal::float3 _e198 = glossy_term(_e196, l_6, _e197, v_8, t_3);
-                            s = _e195 + _e198;
-                            uint _e200 = kept;
-                            kept = _e200 + 1u;
-                        }
-                    }
-                }
-            }
-            metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-        }
+    metal::float3 _e57 = pos;
+    bool _e59 = valid;
+    WorkgroupBox _e60 = workgroup_box(li, _e57, _e59, wg_lo, wg_hi, wg_box);
+    bool _e61 = box_is_empty(_e60);
+    if (!(_e61)) {
+        metal::uint4 _e67 = params.near_grid;
+        uint _e70 = params.near_clusters_at;
+        uint _e73 = params.near_groups_at;
+        cull_tile(li, _e60.lo, _e60.hi, _e67, _e70, _e73, params, lights, near_slots, boxes, rt2_2, r2_5, pos, nrm, valid, e, kept, s, g_4, tile_lights, list_count, cluster_hits, hit_count, _buffer_sizes);
     }
-    if (valid_1) {
+    bool _e75 = valid;
+    if (_e75) {
         metal::float4 old = irradiance[pix];
-        metal::float3 _e215 = e;
-        uint _e218 = kept;
-        irradiance[pix] = metal::float4(old.xyz + _e215, old.w + static_cast<float>(_e218));
-        metal::float4 _e226 = specular[pix];
-        metal::float3 _e228 = s;
-        specular[pix] = metal::float4(_e226.xyz + _e228, 0.0);
+        metal::float3 _e83 = e;
+        uint _e87 = kept;
+        irradiance[pix] = metal::float4(old.xyz + _e83, old.w + static_cast<float>(_e87));
+        metal::float4 _e95 = specular[pix];
+        metal::float3 _e98 = s;
+        specular[pix] = metal::float4(_e95.xyz + _e98, 0.0);
         return;
     } else {
         return;

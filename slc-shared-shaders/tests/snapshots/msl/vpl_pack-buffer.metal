@@ -11,7 +11,6 @@ struct _mslBufferSizes {
     uint size4;
     uint size5;
     uint size6;
-    uint size7;
 };
 
 struct GpuLight {
@@ -23,12 +22,6 @@ struct GpuLight {
     float b;
     metal::packed_float3 intensity;
     uint ies_base;
-};
-struct GpuNearBox {
-    metal::packed_float3 lo;
-    float pad0_;
-    metal::packed_float3 hi;
-    float pad1_;
 };
 struct GpuVplRecord {
     metal::packed_float3 position;
@@ -56,14 +49,6 @@ typedef float type_3[1];
 typedef GpuVplRecord type_5[1];
 typedef GpuLight type_6[1];
 typedef uint type_7[1];
-typedef GpuNearBox type_8[1];
-struct type_9 {
-    metal::float3 inner[64];
-};
-struct WorkgroupBox {
-    metal::float3 lo;
-    metal::float3 hi;
-};
 constant uint LIGHT_POINT = 0u;
 constant uint LIGHT_SPOT = 1u;
 constant uint LIGHT_IES = 2u;
@@ -80,6 +65,8 @@ constant float CULL_RADIUS_SCALE = 1.000001;
 constant float SPHERE_PAD = 0.00000047683716;
 constant float SPHERE_HUGE = 340282350000000000000000000000000000000.0;
 constant float SPHERE_PAD_ABS = 0.000000000000000001;
+constant uint CLUSTER = 64u;
+constant uint GROUP_SIDE = 8u;
 constant float INV_PI = 0.31830987;
 constant float MIN_D2_ = 0.000000000001;
 constant float MAX_INTENSITY = 72057594000000000.0;
@@ -93,7 +80,6 @@ constant float F32_MAX = 340282350000000000000000000000000000000.0;
 constant float DEPTH_NONE = 1000000000000000000000000000000.0;
 constant float DEPTH_SIGMA = 0.05;
 constant float COVER_WEIGHT = 0.1;
-constant uint NEAR_BLOCK = 64u;
 constant uint ROULETTE_DEPTH = 2u;
 constant float TEMPORAL_MAX_HISTORY = 32.0;
 constant float TEMPORAL_DEPTH_TOLERANCE = 0.01;
@@ -105,7 +91,6 @@ constant float TEMPORAL_CHANGE_LOW = 4.0;
 constant float TEMPORAL_CHANGE_HIGH = 8.0;
 constant float TEMPORAL_MIN_WEIGHT = 0.01;
 constant uint P = 8u;
-constant uint BOX_THREADS = 64u;
 
 float threshold_range2_(
     float intensity,
@@ -142,69 +127,69 @@ float vpl_rt2_(
 bool finite3_(
     metal::float3 v
 ) {
+    bool local = {};
     bool local_1 = {};
-    bool local_2 = {};
     if (metal::abs(v.x) <= F32_MAX) {
-        local_1 = metal::abs(v.y) <= F32_MAX;
+        local = metal::abs(v.y) <= F32_MAX;
+    } else {
+        local = false;
+    }
+    bool _e12 = local;
+    if (_e12) {
+        local_1 = metal::abs(v.z) <= F32_MAX;
     } else {
         local_1 = false;
     }
-    bool _e12 = local_1;
-    if (_e12) {
-        local_2 = metal::abs(v.z) <= F32_MAX;
-    } else {
-        local_2 = false;
-    }
-    bool _e20 = local_2;
+    bool _e20 = local_1;
     return _e20;
 }
 
 bool vpl_record_ok(
-    metal::float3 position_1,
+    metal::float3 position,
     metal::float3 normal_1,
     metal::float3 flux_2
 ) {
+    bool local_2 = {};
     bool local_3 = {};
     bool local_4 = {};
     bool local_5 = {};
     bool local_6 = {};
-    bool local_7 = {};
-    bool _e3 = finite3_(position_1);
+    bool _e3 = finite3_(position);
     if (_e3) {
         bool _e6 = finite3_(normal_1);
-        local_3 = _e6;
+        local_2 = _e6;
+    } else {
+        local_2 = false;
+    }
+    bool _e8 = local_2;
+    if (_e8) {
+        bool _e11 = finite3_(flux_2);
+        local_3 = _e11;
     } else {
         local_3 = false;
     }
-    bool _e8 = local_3;
-    if (_e8) {
-        bool _e11 = finite3_(flux_2);
-        local_4 = _e11;
-    } else {
-        local_4 = false;
-    }
-    bool _e13 = local_4;
+    bool _e13 = local_3;
     if (!(_e13)) {
         return false;
     }
     if (flux_2.x >= 0.0) {
-        local_5 = flux_2.y >= 0.0;
+        local_4 = flux_2.y >= 0.0;
+    } else {
+        local_4 = false;
+    }
+    bool _e25 = local_4;
+    if (_e25) {
+        local_5 = flux_2.z >= 0.0;
     } else {
         local_5 = false;
     }
-    bool _e25 = local_5;
-    if (_e25) {
-        local_6 = flux_2.z >= 0.0;
+    bool _e32 = local_5;
+    if (_e32) {
+        local_6 = (metal::max(metal::max(flux_2.x, flux_2.y), flux_2.z) * INV_PI) <= MAX_INTENSITY;
     } else {
         local_6 = false;
     }
-    bool _e32 = local_6;
-    if (_e32) {
-        local_7 = (metal::max(metal::max(flux_2.x, flux_2.y), flux_2.z) * INV_PI) <= MAX_INTENSITY;
-    } else {
-        local_7 = false;
-    }
-    bool _e45 = local_7;
+    bool _e45 = local_6;
     return _e45;
 }
 
@@ -225,58 +210,10 @@ uint interleave_slot_linear(
     return (naga_mod(i, subsets) * per_subset) + naga_div(i, subsets);
 }
 
-WorkgroupBox workgroup_box(
-    uint li_1,
-    metal::float3 p_1,
-    bool has,
-    threadgroup type_9& wg_lo,
-    threadgroup type_9& wg_hi
-) {
-    uint stride = 32u;
-    wg_lo.inner[li_1] = has ? p_1 : metal::float3(340282350000000000000000000000000000000.0);
-    wg_hi.inner[li_1] = has ? p_1 : metal::float3(-340282350000000000000000000000000000000.0);
-    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-    uint2 loop_bound = uint2(4294967295u);
-    bool loop_init = true;
-    while(true) {
-        if (metal::all(loop_bound == uint2(0u))) { break; }
-        loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        if (!loop_init) {
-            uint _e42 = stride;
-            stride = naga_div(_e42, 2u);
-        }
-        loop_init = false;
-        uint _e15 = stride;
-        if (_e15 > 0u) {
-        } else {
-            break;
-        }
-        {
-            uint _e18 = stride;
-            if (li_1 < _e18) {
-                metal::float3 _e24 = wg_lo.inner[li_1];
-                uint _e26 = stride;
-                metal::float3 _e29 = wg_lo.inner[li_1 + _e26];
-                wg_lo.inner[li_1] = metal::min(_e24, _e29);
-                metal::float3 _e35 = wg_hi.inner[li_1];
-                uint _e37 = stride;
-                metal::float3 _e40 = wg_hi.inner[li_1 + _e37];
-                wg_hi.inner[li_1] = metal::max(_e35, _e40);
-            }
-            metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-        }
-    }
-    metal::float3 _e47 = wg_lo.inner[0];
-    metal::float3 _e50 = wg_hi.inner[0];
-    return WorkgroupBox {_e47, _e50};
-}
-
 struct main_Input {
 };
 kernel void main_(
   metal::uint3 gid [[thread_position_in_grid]]
-, metal::uint3 wg [[threadgroup_position_in_grid]]
-, uint li [[thread_index_in_threadgroup]]
 , constant PackParams& params [[user(fake0)]]
 , device type_5 const& records [[user(fake0)]]
 , device type_6& lights [[user(fake0)]]
@@ -284,78 +221,49 @@ kernel void main_(
 , device type_3& rt2_ [[user(fake0)]]
 , device type_3& r2_ [[user(fake0)]]
 , device type_7& near_slots [[user(fake0)]]
-, device type_8& near_boxes [[user(fake0)]]
-, threadgroup type_9& wg_lo
-, threadgroup type_9& wg_hi
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
-    if (li == 0u) {
-        wg_lo = {};
-        wg_hi = {};
-    }
-    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-    metal::float3 position = metal::float3(0.0);
-    bool lit = false;
     metal::float3 p = {};
     metal::float3 normal = {};
     metal::float3 flux = {};
-    bool local = {};
     uint i_1 = gid.x;
-    uint _e6 = params.count;
-    bool inside = i_1 < _e6;
-    if (inside) {
-        GpuVplRecord r = records[i_1];
-        p = r.position;
-        normal = r.normal;
-        flux = r.flux;
-        uint _e24 = params.per_subset;
-        uint _e26 = interleave_slot_linear(i_1, _e24, P);
-        metal::float3 _e27 = p;
-        metal::float3 _e28 = normal;
-        metal::float3 _e29 = flux;
-        bool _e30 = vpl_record_ok(_e27, _e28, _e29);
-        if (!(_e30)) {
-            p = metal::float3(0.0);
-            normal = metal::float3(0.0);
-            flux = metal::float3(0.0);
-        }
-        metal::float3 _e38 = p;
-        position = _e38;
-        metal::float3 _e39 = flux;
-        float _e42 = params.scale;
-        flux = _e39 * _e42;
-        metal::float3 _e46 = position;
-        metal::float3 _e48 = normal;
-        metal::float3 _e51 = flux;
-        lights[_e26] = GpuLight {_e46, LIGHT_VPL, _e48, 0.0, metal::float3(0.0), 0.0, _e51, 0u};
-        ids[_e26] = i_1;
-        uint _e60 = params.slc;
-        bool slc = _e60 != 0u;
-        metal::float3 _e65 = flux;
-        float _e68 = params.exposure;
-        float _e71 = params.error_bound;
-        uint _e74 = params.mode;
-        float _e75 = vpl_rt2_(_e65, _e68, _e71, _e74);
-        rt2_[_e26] = slc ? _e75 : 0.0;
-        float _e82 = params.fixed_r2_;
-        r2_[_e26] = slc ? 0.0 : _e82;
-        near_slots[i_1] = _e26;
-        metal::float3 _e87 = flux;
-        lit = metal::any(_e87 != metal::float3(0.0));
-    }
-    metal::float3 _e92 = position;
-    bool _e93 = lit;
-    WorkgroupBox _e94 = workgroup_box(li, _e92, _e93, wg_lo, wg_hi);
-    if (li == 0u) {
-        local = inside;
-    } else {
-        local = false;
-    }
-    bool _e100 = local;
-    if (_e100) {
-        near_boxes[wg.x] = GpuNearBox {_e94.lo, 0.0, _e94.hi, 0.0};
-        return;
-    } else {
+    uint _e4 = params.count;
+    if (i_1 >= _e4) {
         return;
     }
+    GpuVplRecord r = records[i_1];
+    p = r.position;
+    normal = r.normal;
+    flux = r.flux;
+    uint _e17 = params.per_subset;
+    uint _e19 = interleave_slot_linear(i_1, _e17, P);
+    metal::float3 _e20 = p;
+    metal::float3 _e21 = normal;
+    metal::float3 _e22 = flux;
+    bool _e23 = vpl_record_ok(_e20, _e21, _e22);
+    if (!(_e23)) {
+        p = metal::float3(0.0);
+        normal = metal::float3(0.0);
+        flux = metal::float3(0.0);
+    }
+    metal::float3 _e31 = flux;
+    float _e34 = params.scale;
+    flux = _e31 * _e34;
+    metal::float3 _e38 = p;
+    metal::float3 _e40 = normal;
+    metal::float3 _e43 = flux;
+    lights[_e19] = GpuLight {_e38, LIGHT_VPL, _e40, 0.0, metal::float3(0.0), 0.0, _e43, 0u};
+    ids[_e19] = i_1;
+    uint _e52 = params.slc;
+    bool slc = _e52 != 0u;
+    metal::float3 _e57 = flux;
+    float _e60 = params.exposure;
+    float _e63 = params.error_bound;
+    uint _e66 = params.mode;
+    float _e67 = vpl_rt2_(_e57, _e60, _e63, _e66);
+    rt2_[_e19] = slc ? _e67 : 0.0;
+    float _e74 = params.fixed_r2_;
+    r2_[_e19] = slc ? 0.0 : _e74;
+    near_slots[i_1] = _e19;
+    return;
 }

@@ -10,7 +10,6 @@ struct _mslBufferSizes {
     uint size6;
     uint size7;
     uint size8;
-    uint size9;
 };
 
 struct GpuLight {
@@ -22,12 +21,6 @@ struct GpuLight {
     float b;
     metal::packed_float3 intensity;
     uint ies_base;
-};
-struct GpuNearBox {
-    metal::packed_float3 lo;
-    float pad0_;
-    metal::packed_float3 hi;
-    float pad1_;
 };
 struct PackParams {
     uint count;
@@ -46,14 +39,6 @@ struct PackParams {
 typedef float type_3[1];
 typedef GpuLight type_6[1];
 typedef uint type_7[1];
-typedef GpuNearBox type_8[1];
-struct type_9 {
-    metal::float3 inner[64];
-};
-struct WorkgroupBox {
-    metal::float3 lo;
-    metal::float3 hi;
-};
 constant uint LIGHT_POINT = 0u;
 constant uint LIGHT_SPOT = 1u;
 constant uint LIGHT_IES = 2u;
@@ -70,6 +55,8 @@ constant float CULL_RADIUS_SCALE = 1.000001;
 constant float SPHERE_PAD = 0.00000047683716;
 constant float SPHERE_HUGE = 340282350000000000000000000000000000000.0;
 constant float SPHERE_PAD_ABS = 0.000000000000000001;
+constant uint CLUSTER = 64u;
+constant uint GROUP_SIDE = 8u;
 constant float INV_PI = 0.31830987;
 constant float MIN_D2_ = 0.000000000001;
 constant float MAX_INTENSITY = 72057594000000000.0;
@@ -83,7 +70,6 @@ constant float F32_MAX = 340282350000000000000000000000000000000.0;
 constant float DEPTH_NONE = 1000000000000000000000000000000.0;
 constant float DEPTH_SIGMA = 0.05;
 constant float COVER_WEIGHT = 0.1;
-constant uint NEAR_BLOCK = 64u;
 constant uint ROULETTE_DEPTH = 2u;
 constant float TEMPORAL_MAX_HISTORY = 32.0;
 constant float TEMPORAL_DEPTH_TOLERANCE = 0.01;
@@ -95,7 +81,6 @@ constant float TEMPORAL_CHANGE_LOW = 4.0;
 constant float TEMPORAL_CHANGE_HIGH = 8.0;
 constant float TEMPORAL_MIN_WEIGHT = 0.01;
 constant uint P = 8u;
-constant uint BOX_THREADS = 64u;
 
 float threshold_range2_(
     float intensity,
@@ -118,6 +103,110 @@ float intensity_measure(
     return metal::max(rgb.x, metal::max(rgb.y, rgb.z));
 }
 
+uint naga_div(uint lhs, uint rhs) {
+    return lhs / metal::select(rhs, 1u, rhs == 0u);
+}
+
+uint groups_across(
+    uint bw,
+    uint gw
+) {
+    return naga_div((bw + gw) - 1u, gw);
+}
+
+uint naga_mod(uint lhs, uint rhs) {
+    return lhs % metal::select(rhs, 1u, rhs == 0u);
+}
+
+uint group_first(
+    uint g,
+    uint bw_1,
+    uint bh,
+    uint gw_1,
+    uint gh
+) {
+    uint _e5 = groups_across(bw_1, gw_1);
+    uint gx = naga_mod(g, _e5);
+    uint gy = naga_div(g, _e5);
+    uint h = metal::min(gh, bh - (gh * gy));
+    return ((gy * gh) * bw_1) + ((gx * gw_1) * h);
+}
+
+uint cluster_index(
+    uint bx,
+    uint by,
+    uint bw_2,
+    uint bh_1,
+    uint gw_2,
+    uint gh_1
+) {
+    uint gx_1 = naga_div(bx, gw_2);
+    uint gy_1 = naga_div(by, gh_1);
+    uint w = metal::min(gw_2, bw_2 - (gw_2 * gx_1));
+    uint _e11 = groups_across(bw_2, gw_2);
+    uint g_1 = (gy_1 * _e11) + gx_1;
+    uint _e14 = group_first(g_1, bw_2, bh_1, gw_2, gh_1);
+    return (_e14 + ((by - (gh_1 * gy_1)) * w)) + (bx - (gw_2 * gx_1));
+}
+
+uint cluster_x(
+    uint c,
+    uint bw_3,
+    uint bh_2,
+    uint gw_3,
+    uint gh_2
+) {
+    uint gy_2 = naga_div(c, gh_2 * bw_3);
+    uint h_1 = metal::min(gh_2, bh_2 - (gh_2 * gy_2));
+    uint rest = c - ((gy_2 * gh_2) * bw_3);
+    uint gx_2 = naga_div(rest, gw_3 * h_1);
+    uint w_1 = metal::min(gw_3, bw_3 - (gw_3 * gx_2));
+    return (gx_2 * gw_3) + naga_mod(rest - ((gx_2 * gw_3) * h_1), w_1);
+}
+
+uint cluster_y(
+    uint c_1,
+    uint bw_4,
+    uint bh_3,
+    uint gw_4,
+    uint gh_3
+) {
+    uint gy_3 = naga_div(c_1, gh_3 * bw_4);
+    uint h_2 = metal::min(gh_3, bh_3 - (gh_3 * gy_3));
+    uint rest_1 = c_1 - ((gy_3 * gh_3) * bw_4);
+    uint gx_3 = naga_div(rest_1, gw_4 * h_2);
+    uint w_2 = metal::min(gw_4, bw_4 - (gw_4 * gx_3));
+    return (gy_3 * gh_3) + naga_div(rest_1 - ((gx_3 * gw_4) * h_2), w_2);
+}
+
+uint map_index(
+    uint tx,
+    uint ty,
+    uint side
+) {
+    uint b = naga_div(side, 8u);
+    uint _e11 = cluster_index(naga_div(tx, 8u), naga_div(ty, 8u), b, b, GROUP_SIDE, GROUP_SIDE);
+    return ((_e11 * CLUSTER) + (naga_mod(ty, 8u) * 8u)) + naga_mod(tx, 8u);
+}
+
+uint map_x(
+    uint q,
+    uint side_1
+) {
+    uint b_1 = naga_div(side_1, 8u);
+    uint _e8 = cluster_x(naga_div(q, CLUSTER), b_1, b_1, GROUP_SIDE, GROUP_SIDE);
+    return (_e8 * 8u) + naga_mod(q, 8u);
+}
+
+uint map_y(
+    uint q_1,
+    uint side_2
+) {
+    uint b_2 = naga_div(side_2, 8u);
+    uint _e8 = cluster_y(naga_div(q_1, CLUSTER), b_2, b_2, GROUP_SIDE, GROUP_SIDE);
+    return (_e8 * 8u) + naga_div(naga_mod(q_1, CLUSTER), 8u);
+}
+
 float vpl_rt2_(
     metal::float3 flux_1,
     float exposure_1,
@@ -132,25 +221,21 @@ float vpl_rt2_(
 bool finite3_(
     metal::float3 v
 ) {
+    bool local = {};
     bool local_1 = {};
-    bool local_2 = {};
     if (metal::abs(v.x) <= F32_MAX) {
-        local_1 = metal::abs(v.y) <= F32_MAX;
+        local = metal::abs(v.y) <= F32_MAX;
+    } else {
+        local = false;
+    }
+    bool _e12 = local;
+    if (_e12) {
+        local_1 = metal::abs(v.z) <= F32_MAX;
     } else {
         local_1 = false;
     }
-    bool _e12 = local_1;
-    if (_e12) {
-        local_2 = metal::abs(v.z) <= F32_MAX;
-    } else {
-        local_2 = false;
-    }
-    bool _e20 = local_2;
+    bool _e20 = local_1;
     return _e20;
-}
-
-uint naga_mod(uint lhs, uint rhs) {
-    return lhs % metal::select(rhs, 1u, rhs == 0u);
 }
 
 uint interleave_subset(
@@ -162,135 +247,77 @@ uint interleave_subset(
 }
 
 bool vpl_record_ok(
-    metal::float3 position_1,
+    metal::float3 position,
     metal::float3 normal_1,
     metal::float3 flux_2
 ) {
+    bool local_2 = {};
     bool local_3 = {};
     bool local_4 = {};
     bool local_5 = {};
     bool local_6 = {};
-    bool local_7 = {};
-    bool _e3 = finite3_(position_1);
+    bool _e3 = finite3_(position);
     if (_e3) {
         bool _e6 = finite3_(normal_1);
-        local_3 = _e6;
+        local_2 = _e6;
+    } else {
+        local_2 = false;
+    }
+    bool _e8 = local_2;
+    if (_e8) {
+        bool _e11 = finite3_(flux_2);
+        local_3 = _e11;
     } else {
         local_3 = false;
     }
-    bool _e8 = local_3;
-    if (_e8) {
-        bool _e11 = finite3_(flux_2);
-        local_4 = _e11;
-    } else {
-        local_4 = false;
-    }
-    bool _e13 = local_4;
+    bool _e13 = local_3;
     if (!(_e13)) {
         return false;
     }
     if (flux_2.x >= 0.0) {
-        local_5 = flux_2.y >= 0.0;
+        local_4 = flux_2.y >= 0.0;
+    } else {
+        local_4 = false;
+    }
+    bool _e25 = local_4;
+    if (_e25) {
+        local_5 = flux_2.z >= 0.0;
     } else {
         local_5 = false;
     }
-    bool _e25 = local_5;
-    if (_e25) {
-        local_6 = flux_2.z >= 0.0;
+    bool _e32 = local_5;
+    if (_e32) {
+        local_6 = (metal::max(metal::max(flux_2.x, flux_2.y), flux_2.z) * INV_PI) <= MAX_INTENSITY;
     } else {
         local_6 = false;
     }
-    bool _e32 = local_6;
-    if (_e32) {
-        local_7 = (metal::max(metal::max(flux_2.x, flux_2.y), flux_2.z) * INV_PI) <= MAX_INTENSITY;
-    } else {
-        local_7 = false;
-    }
-    bool _e45 = local_7;
+    bool _e45 = local_6;
     return _e45;
 }
 
-uint naga_div(uint lhs, uint rhs) {
-    return lhs / metal::select(rhs, 1u, rhs == 0u);
-}
-
-uint interleave_slot(
-    uint tx,
-    uint ty,
+uint subset_side(
     uint size,
     uint period_1
 ) {
-    uint side = naga_div(size, period_1);
-    uint _e5 = interleave_subset(tx, ty, period_1);
-    return (((_e5 * side) * side) + (naga_div(ty, period_1) * side)) + naga_div(tx, period_1);
+    return naga_div(naga_div(size, period_1) + 7u, 8u) * 8u;
 }
 
-uint near_block_tx(
-    uint q,
-    uint size_1
+uint interleave_slot(
+    uint tx_1,
+    uint ty_1,
+    uint size_1,
+    uint period_2
 ) {
-    return (naga_mod(naga_div(q, NEAR_BLOCK), naga_div(size_1, 8u)) * 8u) + naga_mod(q, 8u);
-}
-
-uint near_block_ty(
-    uint q_1,
-    uint size_2
-) {
-    return (naga_div(naga_div(q_1, NEAR_BLOCK), naga_div(size_2, 8u)) * 8u) + naga_div(naga_mod(q_1, NEAR_BLOCK), 8u);
-}
-
-WorkgroupBox workgroup_box(
-    uint li_1,
-    metal::float3 p_1,
-    bool has,
-    threadgroup type_9& wg_lo,
-    threadgroup type_9& wg_hi
-) {
-    uint stride = 32u;
-    wg_lo.inner[li_1] = has ? p_1 : metal::float3(340282350000000000000000000000000000000.0);
-    wg_hi.inner[li_1] = has ? p_1 : metal::float3(-340282350000000000000000000000000000000.0);
-    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-    uint2 loop_bound = uint2(4294967295u);
-    bool loop_init = true;
-    while(true) {
-        if (metal::all(loop_bound == uint2(0u))) { break; }
-        loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        if (!loop_init) {
-            uint _e42 = stride;
-            stride = naga_div(_e42, 2u);
-        }
-        loop_init = false;
-        uint _e15 = stride;
-        if (_e15 > 0u) {
-        } else {
-            break;
-        }
-        {
-            uint _e18 = stride;
-            if (li_1 < _e18) {
-                metal::float3 _e24 = wg_lo.inner[li_1];
-                uint _e26 = stride;
-                metal::float3 _e29 = wg_lo.inner[li_1 + _e26];
-                wg_lo.inner[li_1] = metal::min(_e24, _e29);
-                metal::float3 _e35 = wg_hi.inner[li_1];
-                uint _e37 = stride;
-                metal::float3 _e40 = wg_hi.inner[li_1 + _e37];
-                wg_hi.inner[li_1] = metal::max(_e35, _e40);
-            }
-            metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-        }
-    }
-    metal::float3 _e47 = wg_lo.inner[0];
-    metal::float3 _e50 = wg_hi.inner[0];
-    return WorkgroupBox {_e47, _e50};
+    uint _e4 = subset_side(size_1, period_2);
+    uint _e5 = interleave_subset(tx_1, ty_1, period_2);
+    uint _e10 = map_index(naga_div(tx_1, period_2), naga_div(ty_1, period_2), _e4);
+    return ((_e5 * _e4) * _e4) + _e10;
 }
 
 struct main_Input {
 };
 kernel void main_(
   metal::uint3 gid [[thread_position_in_grid]]
-, metal::uint3 wg [[threadgroup_position_in_grid]]
-, uint li [[thread_index_in_threadgroup]]
 , constant PackParams& params [[user(fake0)]]
 , metal::texture2d<float, metal::access::sample> rsm_position [[user(fake0)]]
 , metal::texture2d<float, metal::access::sample> rsm_normal [[user(fake0)]]
@@ -300,87 +327,58 @@ kernel void main_(
 , device type_3& rt2_ [[user(fake0)]]
 , device type_3& r2_ [[user(fake0)]]
 , device type_7& near_slots [[user(fake0)]]
-, device type_8& near_boxes [[user(fake0)]]
-, threadgroup type_9& wg_lo
-, threadgroup type_9& wg_hi
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
-    if (li == 0u) {
-        wg_lo = {};
-        wg_hi = {};
-    }
-    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-    metal::float3 position = metal::float3(0.0);
-    bool lit = false;
     metal::float3 p = {};
     metal::float3 normal = {};
     metal::float3 flux = {};
-    bool local = {};
     uint q_2 = gid.x;
-    uint _e6 = params.count;
-    bool inside = q_2 < _e6;
-    if (inside) {
-        uint _e15 = params.size;
-        uint _e16 = near_block_tx(q_2, _e15);
-        uint _e19 = params.size;
-        uint _e20 = near_block_ty(q_2, _e19);
-        uint _e23 = params.size;
-        uint i = (_e20 * _e23) + _e16;
-        metal::int2 texel = metal::int2(static_cast<int>(_e16), static_cast<int>(_e20));
-        metal::float4 _e31 = rsm_position.read(metal::uint2(texel), 0);
-        p = _e31.xyz;
-        metal::float4 _e36 = rsm_normal.read(metal::uint2(texel), 0);
-        normal = _e36.xyz;
-        metal::float4 _e41 = rsm_flux.read(metal::uint2(texel), 0);
-        flux = _e41.xyz;
-        uint _e46 = params.size;
-        uint _e48 = interleave_slot(_e16, _e20, _e46, P);
-        metal::float3 _e49 = p;
-        metal::float3 _e50 = normal;
-        metal::float3 _e51 = flux;
-        bool _e52 = vpl_record_ok(_e49, _e50, _e51);
-        if (!(_e52)) {
-            p = metal::float3(0.0);
-            normal = metal::float3(0.0);
-            flux = metal::float3(0.0);
-        }
-        metal::float3 _e60 = p;
-        position = _e60;
-        metal::float3 _e61 = flux;
-        float _e64 = params.scale;
-        flux = _e61 * _e64;
-        metal::float3 _e68 = position;
-        metal::float3 _e70 = normal;
-        metal::float3 _e73 = flux;
-        lights[_e48] = GpuLight {_e68, LIGHT_VPL, _e70, 0.0, metal::float3(0.0), 0.0, _e73, 0u};
-        ids[_e48] = i;
-        uint _e82 = params.slc;
-        bool slc = _e82 != 0u;
-        metal::float3 _e87 = flux;
-        float _e90 = params.exposure;
-        float _e93 = params.error_bound;
-        uint _e96 = params.mode;
-        float _e97 = vpl_rt2_(_e87, _e90, _e93, _e96);
-        rt2_[_e48] = slc ? _e97 : 0.0;
-        float _e104 = params.fixed_r2_;
-        r2_[_e48] = slc ? 0.0 : _e104;
-        near_slots[q_2] = _e48;
-        metal::float3 _e109 = flux;
-        lit = metal::any(_e109 != metal::float3(0.0));
-    }
-    metal::float3 _e114 = position;
-    bool _e115 = lit;
-    WorkgroupBox _e116 = workgroup_box(li, _e114, _e115, wg_lo, wg_hi);
-    if (li == 0u) {
-        local = inside;
-    } else {
-        local = false;
-    }
-    bool _e122 = local;
-    if (_e122) {
-        near_boxes[wg.x] = GpuNearBox {_e116.lo, 0.0, _e116.hi, 0.0};
-        return;
-    } else {
+    uint _e4 = params.count;
+    if (q_2 >= _e4) {
         return;
     }
+    uint _e8 = params.size;
+    uint _e9 = map_x(q_2, _e8);
+    uint _e12 = params.size;
+    uint _e13 = map_y(q_2, _e12);
+    uint _e16 = params.size;
+    uint i = (_e13 * _e16) + _e9;
+    metal::int2 texel = metal::int2(static_cast<int>(_e9), static_cast<int>(_e13));
+    metal::float4 _e24 = rsm_position.read(metal::uint2(texel), 0);
+    p = _e24.xyz;
+    metal::float4 _e29 = rsm_normal.read(metal::uint2(texel), 0);
+    normal = _e29.xyz;
+    metal::float4 _e34 = rsm_flux.read(metal::uint2(texel), 0);
+    flux = _e34.xyz;
+    uint _e39 = params.size;
+    uint _e41 = interleave_slot(_e9, _e13, _e39, P);
+    metal::float3 _e42 = p;
+    metal::float3 _e43 = normal;
+    metal::float3 _e44 = flux;
+    bool _e45 = vpl_record_ok(_e42, _e43, _e44);
+    if (!(_e45)) {
+        p = metal::float3(0.0);
+        normal = metal::float3(0.0);
+        flux = metal::float3(0.0);
+    }
+    metal::float3 _e53 = flux;
+    float _e56 = params.scale;
+    flux = _e53 * _e56;
+    metal::float3 _e60 = p;
+    metal::float3 _e62 = normal;
+    metal::float3 _e65 = flux;
+    lights[_e41] = GpuLight {_e60, LIGHT_VPL, _e62, 0.0, metal::float3(0.0), 0.0, _e65, 0u};
+    ids[_e41] = i;
+    uint _e74 = params.slc;
+    bool slc = _e74 != 0u;
+    metal::float3 _e79 = flux;
+    float _e82 = params.exposure;
+    float _e85 = params.error_bound;
+    uint _e88 = params.mode;
+    float _e89 = vpl_rt2_(_e79, _e82, _e85, _e88);
+    rt2_[_e41] = slc ? _e89 : 0.0;
+    float _e96 = params.fixed_r2_;
+    r2_[_e41] = slc ? 0.0 : _e96;
+    near_slots[q_2] = _e41;
+    return;
 }

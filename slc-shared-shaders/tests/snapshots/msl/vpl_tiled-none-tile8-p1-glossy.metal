@@ -5,10 +5,10 @@
 using metal::uint;
 
 struct _mslBufferSizes {
-    uint size6;
     uint size7;
     uint size8;
     uint size9;
+    uint size10;
 };
 
 struct GpuLight {
@@ -27,9 +27,15 @@ struct VplParams {
     uint lights_per_subset;
     float min_d2_;
     float near_r2_;
-    uint near_blocks;
     uint subset_shift;
+    uint far_groups_at;
+    uint near_clusters_at;
+    uint near_groups_at;
+    uint box_count;
+    uint pad0_;
     uint pad1_;
+    metal::uint4 far_grid;
+    metal::uint4 near_grid;
 };
 struct GpuMaterial {
     metal::packed_float3 albedo;
@@ -53,16 +59,16 @@ struct ViewParams {
     metal::packed_float3 f0_d;
     float f90_d;
 };
-struct type_5 {
+struct type_6 {
     metal::float3 inner[64];
 };
 struct WorkgroupBox {
     metal::float3 lo;
     metal::float3 hi;
 };
-typedef GpuLight type_7[1];
-typedef metal::float4 type_8[1];
-typedef GpuMaterial type_9[1];
+typedef GpuLight type_8[1];
+typedef metal::float4 type_9[1];
+typedef GpuMaterial type_10[1];
 struct GbTexel {
     metal::float4 position;
     metal::float4 normal;
@@ -89,6 +95,8 @@ constant float CULL_RADIUS_SCALE = 1.000001;
 constant float SPHERE_PAD = 0.00000047683716;
 constant float SPHERE_HUGE = 340282350000000000000000000000000000000.0;
 constant float SPHERE_PAD_ABS = 0.000000000000000001;
+constant uint CLUSTER = 64u;
+constant uint GROUP_SIDE = 8u;
 constant float INV_PI = 0.31830987;
 constant float MIN_D2_ = 0.000000000001;
 constant float MAX_INTENSITY = 72057594000000000.0;
@@ -102,7 +110,6 @@ constant float F32_MAX = 340282350000000000000000000000000000000.0;
 constant float DEPTH_NONE = 1000000000000000000000000000000.0;
 constant float DEPTH_SIGMA = 0.05;
 constant float COVER_WEIGHT = 0.1;
-constant uint NEAR_BLOCK = 64u;
 constant uint ROULETTE_DEPTH = 2u;
 constant float TEMPORAL_MAX_HISTORY = 32.0;
 constant float TEMPORAL_DEPTH_TOLERANCE = 0.01;
@@ -345,16 +352,17 @@ uint naga_div(uint lhs, uint rhs) {
     return lhs / metal::select(rhs, 1u, rhs == 0u);
 }
 
-WorkgroupBox workgroup_box(
+WorkgroupBox workgroup_bounds(
     uint li_1,
-    metal::float3 p,
-    bool has,
-    threadgroup type_5& wg_lo,
-    threadgroup type_5& wg_hi
+    metal::float3 lo,
+    metal::float3 hi,
+    threadgroup type_6& wg_lo,
+    threadgroup type_6& wg_hi,
+    threadgroup WorkgroupBox& wg_box
 ) {
     uint stride = 32u;
-    wg_lo.inner[li_1] = has ? p : metal::float3(340282350000000000000000000000000000000.0);
-    wg_hi.inner[li_1] = has ? p : metal::float3(-340282350000000000000000000000000000000.0);
+    wg_lo.inner[li_1] = lo;
+    wg_hi.inner[li_1] = hi;
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
     uint2 loop_bound = uint2(4294967295u);
     bool loop_init = true;
@@ -362,41 +370,59 @@ WorkgroupBox workgroup_box(
         if (metal::all(loop_bound == uint2(0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         if (!loop_init) {
-            uint _e42 = stride;
-            stride = naga_div(_e42, 2u);
+            uint _e36 = stride;
+            stride = naga_div(_e36, 2u);
         }
         loop_init = false;
-        uint _e15 = stride;
-        if (_e15 > 0u) {
+        uint _e9 = stride;
+        if (_e9 > 0u) {
         } else {
             break;
         }
         {
-            uint _e18 = stride;
-            if (li_1 < _e18) {
-                metal::float3 _e24 = wg_lo.inner[li_1];
-                uint _e26 = stride;
-                metal::float3 _e29 = wg_lo.inner[li_1 + _e26];
-                wg_lo.inner[li_1] = metal::min(_e24, _e29);
-                metal::float3 _e35 = wg_hi.inner[li_1];
-                uint _e37 = stride;
-                metal::float3 _e40 = wg_hi.inner[li_1 + _e37];
-                wg_hi.inner[li_1] = metal::max(_e35, _e40);
+            uint _e12 = stride;
+            if (li_1 < _e12) {
+                metal::float3 _e18 = wg_lo.inner[li_1];
+                uint _e20 = stride;
+                metal::float3 _e23 = wg_lo.inner[li_1 + _e20];
+                wg_lo.inner[li_1] = metal::min(_e18, _e23);
+                metal::float3 _e29 = wg_hi.inner[li_1];
+                uint _e31 = stride;
+                metal::float3 _e34 = wg_hi.inner[li_1 + _e31];
+                wg_hi.inner[li_1] = metal::max(_e29, _e34);
             }
             metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
         }
     }
-    metal::float3 _e47 = wg_lo.inner[0];
-    metal::float3 _e50 = wg_hi.inner[0];
-    return WorkgroupBox {_e47, _e50};
+    if (li_1 == 0u) {
+        metal::float3 _e44 = wg_lo.inner[0];
+        metal::float3 _e47 = wg_hi.inner[0];
+        wg_box = WorkgroupBox {_e44, _e47};
+    }
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    WorkgroupBox unnamed = wg_box;
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    return unnamed;
+}
+
+WorkgroupBox workgroup_box(
+    uint li_2,
+    metal::float3 p_1,
+    bool has,
+    threadgroup type_6& wg_lo,
+    threadgroup type_6& wg_hi,
+    threadgroup WorkgroupBox& wg_box
+) {
+    WorkgroupBox _e9 = workgroup_bounds(li_2, has ? p_1 : metal::float3(340282350000000000000000000000000000000.0), has ? p_1 : metal::float3(-340282350000000000000000000000000000000.0), wg_lo, wg_hi, wg_box);
+    return _e9;
 }
 
 metal::float4 surface_at(
     metal::int2 texel,
     metal::texture2d<float, metal::access::sample> position_tex
 ) {
-    metal::float4 p_1 = position_tex.read(metal::uint2(texel), 0);
-    return (p_1.w > 0.0) ? metal::float4(p_1.xyz, 1.0) : metal::float4(0.0);
+    metal::float4 p_2 = position_tex.read(metal::uint2(texel), 0);
+    return (p_2.w > 0.0) ? metal::float4(p_2.xyz, 1.0) : metal::float4(0.0);
 }
 
 GbTexel gbuffer_at(
@@ -418,11 +444,11 @@ GbTexel gbuffer_at(
     } else {
         local_6 = false;
     }
-    bool valid = local_6;
+    bool valid_1 = local_6;
     metal::float3 _e30 = view.eye;
     metal::float3 v_6 = _e12.xyz - _e30;
-    metal::float4 position = metal::float4(_e12.xyz, valid ? 1.0 : 0.0);
-    metal::float4 normal = valid ? metal::float4(n_4 / metal::float3(metal::sqrt(len2_1)), metal::sqrt(metal::dot(v_6, v_6))) : metal::float4(0.0, 0.0, 0.0, 1000000000000000000000000000000.0);
+    metal::float4 position = metal::float4(_e12.xyz, valid_1 ? 1.0 : 0.0);
+    metal::float4 normal = valid_1 ? metal::float4(n_4 / metal::float3(metal::sqrt(len2_1)), metal::sqrt(metal::dot(v_6, v_6))) : metal::float4(0.0, 0.0, 0.0, 1000000000000000000000000000000.0);
     return GbTexel {position, normal};
 }
 
@@ -435,7 +461,7 @@ Glossy glossy_at(
     metal::float3 x,
     constant ViewParams& view,
     metal::texture2d<float, metal::access::sample> normal_tex,
-    device type_9 const& materials,
+    device type_10 const& materials,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e4 = view.width;
@@ -449,14 +475,14 @@ Glossy glossy_at(
 }
 
 metal::float3 glossy_term(
-    Glossy g_1,
+    Glossy g,
     GpuLight l_4,
     metal::float3 n_3,
     metal::float3 v_5,
     float t
 ) {
     bool local_7 = {};
-    if (!(!(g_1.on))) {
+    if (!(!(g.on))) {
         local_7 = t <= 0.0;
     } else {
         local_7 = true;
@@ -465,8 +491,45 @@ metal::float3 glossy_term(
     if (_e13) {
         return metal::float3(0.0);
     }
-    metal::float3 _e30 = specular_correction(g_1.m.albedo, g_1.m.metallic, g_1.m.f0_, g_1.m.f90_, g_1.m.alpha, n_3, g_1.v, metal::normalize(-(v_5)));
+    metal::float3 _e30 = specular_correction(g.m.albedo, g.m.metallic, g.m.f0_, g.m.f90_, g.m.alpha, n_3, g.v, metal::normalize(-(v_5)));
     return (l_4.intensity * _e30) * t;
+}
+
+void shade_light(
+    uint j_1,
+    constant VplParams& params,
+    device type_8 const& lights,
+    thread metal::float3& pos,
+    thread metal::float3& nrm,
+    thread metal::float3& e,
+    thread uint& kept,
+    thread metal::float3& s,
+    thread Glossy& g_1,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    GpuLight l_5 = lights[j_1];
+    metal::float3 _e5 = pos;
+    metal::float3 v_7 = _e5 - l_5.p0_;
+    float _e11 = params.near_r2_;
+    float _e12 = vpl_far_weight(metal::dot(v_7, v_7), _e11);
+    if (_e12 > 0.0) {
+        metal::float3 _e17 = nrm;
+        float _e20 = params.min_d2_;
+        float _e21 = vpl_transfer(l_5.p1_, _e17, v_7, _e20);
+        float t_3 = _e21 * _e12;
+        metal::float3 _e24 = e;
+        e = _e24 + (l_5.intensity * t_3);
+        metal::float3 _e29 = s;
+        Glossy _e31 = g_1;
+        metal::float3 _e33 = nrm;
+        metal::float3 _e34 = glossy_term(_e31, l_5, _e33, v_7, t_3);
+        s = _e29 + _e34;
+        uint _e37 = kept;
+        kept = _e37 + 1u;
+        return;
+    } else {
+        return;
+    }
 }
 
 struct main_Input {
@@ -475,31 +538,35 @@ kernel void main_(
   metal::uint3 wg [[threadgroup_position_in_grid]]
 , metal::uint3 lid [[thread_position_in_threadgroup]]
 , uint li [[thread_index_in_threadgroup]]
-, threadgroup type_5& wg_lo
-, threadgroup type_5& wg_hi
+, threadgroup type_6& wg_lo
+, threadgroup type_6& wg_hi
+, threadgroup WorkgroupBox& wg_box
 , constant VplParams& params [[user(fake0)]]
 , constant ViewParams& view [[user(fake0)]]
 , metal::texture2d<float, metal::access::sample> position_tex [[user(fake0)]]
 , metal::texture2d<float, metal::access::sample> normal_tex [[user(fake0)]]
-, device type_7 const& lights [[user(fake0)]]
-, device type_8& irradiance [[user(fake0)]]
-, device type_9 const& materials [[user(fake0)]]
-, device type_8& specular [[user(fake0)]]
+, device type_8 const& lights [[user(fake0)]]
+, device type_9& irradiance [[user(fake0)]]
+, device type_10 const& materials [[user(fake0)]]
+, device type_9& specular [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
+    metal::float3 pos = {};
+    metal::float3 nrm = {};
+    bool valid = {};
+    metal::float3 e = {};
+    uint kept = {};
+    metal::float3 s = {};
+    Glossy g_1 = {};
     if (li == 0u) {
         wg_lo = {};
         wg_hi = {};
+        wg_box = {};
     }
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
     bool local = {};
-    metal::float4 pos = metal::float4(0.0);
-    metal::float3 nrm = metal::float3(0.0);
+    metal::float4 p = metal::float4(0.0);
     bool local_1 = {};
-    metal::float3 e = metal::float3(0.0);
-    uint kept = 0u;
-    metal::float3 s = metal::float3(0.0);
-    Glossy g = {};
     uint j = {};
     uint sub = wg.z;
     uint px = naga_mod(sub, P) + (((wg.x * TILE) + lid.x) * P);
@@ -515,31 +582,35 @@ kernel void main_(
     uint _e38 = params.width;
     uint pix = (py * _e38) + px;
     if (inside) {
-        GbTexel _e47 = gbuffer_at(pix, view, position_tex, normal_tex);
-        pos = _e47.position;
-        nrm = _e47.normal.xyz;
+        GbTexel _e44 = gbuffer_at(pix, view, position_tex, normal_tex);
+        p = _e44.position;
+        nrm = _e44.normal.xyz;
     }
+    metal::float4 _e50 = p;
+    pos = _e50.xyz;
     if (inside) {
-        float _e54 = pos.w;
-        local_1 = _e54 > 0.0;
+        float _e56 = p.w;
+        local_1 = _e56 > 0.0;
     } else {
         local_1 = false;
     }
-    bool valid_1 = local_1;
-    metal::float4 _e59 = pos;
-    WorkgroupBox _e61 = workgroup_box(li, _e59.xyz, valid_1, wg_lo, wg_hi);
-    metal::float3 lo = _e61.lo;
-    metal::float3 hi = _e61.hi;
-    uint _e66 = params.subset_shift;
-    uint _e68 = shifted_subset(sub, _e66, P);
-    uint _e71 = params.lights_per_subset;
-    uint base_6 = _e68 * _e71;
-    if (valid_1) {
-        metal::float4 _e82 = pos;
-        Glossy _e84 = glossy_at(pix, _e82.xyz, view, normal_tex, materials, _buffer_sizes);
-        g = _e84;
+    bool _e60 = local_1;
+    valid = _e60;
+    bool _e62 = valid;
+    if (_e62) {
+        metal::float3 _e65 = pos;
+        Glossy _e66 = glossy_at(pix, _e65, view, normal_tex, materials, _buffer_sizes);
+        g_1 = _e66;
     }
-    if (valid_1) {
+    metal::float3 _e68 = pos;
+    bool _e70 = valid;
+    WorkgroupBox _e71 = workgroup_box(li, _e68, _e70, wg_lo, wg_hi, wg_box);
+    uint _e74 = params.subset_shift;
+    uint _e76 = shifted_subset(sub, _e74, P);
+    bool _e78 = valid;
+    if (_e78) {
+        uint _e81 = params.lights_per_subset;
+        uint base_6 = _e76 * _e81;
         j = base_6;
         uint2 loop_bound_1 = uint2(4294967295u);
         bool loop_init_1 = true;
@@ -547,47 +618,32 @@ kernel void main_(
             if (metal::all(loop_bound_1 == uint2(0u))) { break; }
             loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
             if (!loop_init_1) {
-                uint _e127 = j;
-                j = _e127 + 1u;
+                uint _e101 = j;
+                j = _e101 + 1u;
             }
             loop_init_1 = false;
-            uint _e86 = j;
-            uint _e89 = params.lights_per_subset;
-            if (_e86 < (base_6 + _e89)) {
+            uint _e84 = j;
+            uint _e87 = params.lights_per_subset;
+            if (_e84 < (base_6 + _e87)) {
             } else {
                 break;
             }
             {
-                uint _e93 = j;
-                GpuLight l_5 = lights[_e93];
-                metal::float4 _e96 = pos;
-                metal::float3 v_7 = _e96.xyz - l_5.p0_;
-                float _e103 = params.near_r2_;
-                float _e104 = vpl_far_weight(metal::dot(v_7, v_7), _e103);
-                if (_e104 > 0.0) {
-                    metal::float3 _e108 = nrm;
-                    float _e111 = params.min_d2_;
-                    float _e112 = vpl_transfer(l_5.p1_, _e108, v_7, _e111);
-                    float t_3 = _e112 * _e104;
-                    metal::float3 _e114 = e;
-                    e = _e114 + (l_5.intensity * t_3);
-                    metal::float3 _e118 = s;
-                    Glossy _e119 = g;
-                    metal::float3 _e120 = nrm;
-                    metal::float3 _e121 = glossy_term(_e119, l_5, _e120, v_7, t_3);
-                    s = _e118 + _e121;
-                    uint _e123 = kept;
-                    kept = _e123 + 1u;
+                uint _e91 = j;
+                metal::float3 _e94 = lights[_e91].intensity;
+                if (metal::any(_e94 != metal::float3(0.0))) {
+                    uint _e99 = j;
+                    shade_light(_e99, params, lights, pos, nrm, e, kept, s, g_1, _buffer_sizes);
                 }
             }
         }
     }
     if (inside) {
-        metal::float3 _e131 = e;
-        uint _e132 = kept;
-        irradiance[pix] = metal::float4(_e131, static_cast<float>(_e132));
-        metal::float3 _e137 = s;
-        specular[pix] = metal::float4(_e137, 0.0);
+        metal::float3 _e106 = e;
+        uint _e108 = kept;
+        irradiance[pix] = metal::float4(_e106, static_cast<float>(_e108));
+        metal::float3 _e114 = s;
+        specular[pix] = metal::float4(_e114, 0.0);
         return;
     } else {
         return;

@@ -5,10 +5,11 @@
 using metal::uint;
 
 struct _mslBufferSizes {
-    uint size6;
     uint size7;
     uint size8;
     uint size9;
+    uint size10;
+    uint size11;
 };
 
 struct GpuLight {
@@ -27,9 +28,21 @@ struct VplParams {
     uint lights_per_subset;
     float min_d2_;
     float near_r2_;
-    uint near_blocks;
     uint subset_shift;
+    uint far_groups_at;
+    uint near_clusters_at;
+    uint near_groups_at;
+    uint box_count;
+    uint pad0_;
     uint pad1_;
+    metal::uint4 far_grid;
+    metal::uint4 near_grid;
+};
+struct GpuBox {
+    metal::packed_float3 lo;
+    float pad0_;
+    metal::packed_float3 hi;
+    float pad1_;
 };
 struct ViewParams {
     metal::float4 c0_;
@@ -45,22 +58,26 @@ struct ViewParams {
     metal::packed_float3 f0_d;
     float f90_d;
 };
-typedef float type_4[1];
-struct type_6 {
+typedef float type_5[1];
+struct type_7 {
     metal::float3 inner[64];
 };
 struct WorkgroupBox {
     metal::float3 lo;
     metal::float3 hi;
 };
-typedef GpuLight type_8[1];
-typedef metal::float4 type_9[1];
+typedef GpuLight type_9[1];
+typedef GpuBox type_10[1];
+typedef metal::float4 type_11[1];
 struct GbTexel {
     metal::float4 position;
     metal::float4 normal;
 };
-struct type_12 {
+struct type_13 {
     uint inner[1024];
+};
+struct type_15 {
+    uint inner[64];
 };
 constant uint LIGHT_POINT = 0u;
 constant uint LIGHT_SPOT = 1u;
@@ -78,6 +95,8 @@ constant float CULL_RADIUS_SCALE = 1.000001;
 constant float SPHERE_PAD = 0.00000047683716;
 constant float SPHERE_HUGE = 340282350000000000000000000000000000000.0;
 constant float SPHERE_PAD_ABS = 0.000000000000000001;
+constant uint CLUSTER = 64u;
+constant uint GROUP_SIDE = 8u;
 constant float INV_PI = 0.31830987;
 constant float MIN_D2_ = 0.000000000001;
 constant float MAX_INTENSITY = 72057594000000000.0;
@@ -91,7 +110,6 @@ constant float F32_MAX = 340282350000000000000000000000000000000.0;
 constant float DEPTH_NONE = 1000000000000000000000000000000.0;
 constant float DEPTH_SIGMA = 0.05;
 constant float COVER_WEIGHT = 0.1;
-constant uint NEAR_BLOCK = 64u;
 constant uint ROULETTE_DEPTH = 2u;
 constant float TEMPORAL_MAX_HISTORY = 32.0;
 constant float TEMPORAL_DEPTH_TOLERANCE = 0.01;
@@ -142,6 +160,103 @@ bool sphere_overlaps_aabb(
     return metal::dot(v_1, v_1) <= (r * r);
 }
 
+uint naga_div(uint lhs, uint rhs) {
+    return lhs / metal::select(rhs, 1u, rhs == 0u);
+}
+
+uint groups_across(
+    uint bw,
+    uint gw
+) {
+    return naga_div((bw + gw) - 1u, gw);
+}
+
+uint group_count(
+    uint bw_1,
+    uint bh,
+    uint gw_1,
+    uint gh
+) {
+    uint _e4 = groups_across(bw_1, gw_1);
+    uint _e5 = groups_across(bh, gh);
+    return _e4 * _e5;
+}
+
+uint naga_mod(uint lhs, uint rhs) {
+    return lhs % metal::select(rhs, 1u, rhs == 0u);
+}
+
+uint group_first(
+    uint g,
+    uint bw_2,
+    uint bh_1,
+    uint gw_2,
+    uint gh_1
+) {
+    uint _e5 = groups_across(bw_2, gw_2);
+    uint gx = naga_mod(g, _e5);
+    uint gy = naga_div(g, _e5);
+    uint h_1 = metal::min(gh_1, bh_1 - (gh_1 * gy));
+    return ((gy * gh_1) * bw_2) + ((gx * gw_2) * h_1);
+}
+
+uint group_clusters(
+    uint g_1,
+    uint bw_3,
+    uint bh_2,
+    uint gw_3,
+    uint gh_2
+) {
+    uint _e5 = groups_across(bw_3, gw_3);
+    uint gx_1 = naga_mod(g_1, _e5);
+    uint gy_1 = naga_div(g_1, _e5);
+    return metal::min(gw_3, bw_3 - (gw_3 * gx_1)) * metal::min(gh_2, bh_2 - (gh_2 * gy_1));
+}
+
+bool box_overlaps_box(
+    metal::float3 lo1_,
+    metal::float3 hi1_,
+    metal::float3 lo2_,
+    metal::float3 hi2_
+) {
+    bool local_2 = {};
+    bool local_3 = {};
+    bool local_4 = {};
+    bool local_5 = {};
+    bool local_6 = {};
+    if (lo1_.x <= hi2_.x) {
+        local_2 = lo2_.x <= hi1_.x;
+    } else {
+        local_2 = false;
+    }
+    bool _e13 = local_2;
+    if (_e13) {
+        local_3 = lo1_.y <= hi2_.y;
+    } else {
+        local_3 = false;
+    }
+    bool _e20 = local_3;
+    if (_e20) {
+        local_4 = lo2_.y <= hi1_.y;
+    } else {
+        local_4 = false;
+    }
+    bool _e27 = local_4;
+    if (_e27) {
+        local_5 = lo1_.z <= hi2_.z;
+    } else {
+        local_5 = false;
+    }
+    bool _e34 = local_5;
+    if (_e34) {
+        local_6 = lo2_.z <= hi1_.z;
+    } else {
+        local_6 = false;
+    }
+    bool _e41 = local_6;
+    return _e41;
+}
+
 float vpl_transfer(
     metal::float3 n_l,
     metal::float3 n_x,
@@ -150,10 +265,6 @@ float vpl_transfer(
 ) {
     float m = metal::max(metal::dot(v, v), metal::max(min_d2_, MIN_D2_));
     return ((metal::max(metal::dot(n_l, v), 0.0) * metal::max(-(metal::dot(n_x, v)), 0.0)) * INV_PI) / (m * m);
-}
-
-uint naga_mod(uint lhs, uint rhs) {
-    return lhs % metal::select(rhs, 1u, rhs == 0u);
 }
 
 uint shifted_subset(
@@ -195,20 +306,17 @@ float vpl_far_slc_share(
     return (_e7 & (_e4 > 0.0)) ? (_e4 * _e5) : 0.0;
 }
 
-uint naga_div(uint lhs, uint rhs) {
-    return lhs / metal::select(rhs, 1u, rhs == 0u);
-}
-
-WorkgroupBox workgroup_box(
+WorkgroupBox workgroup_bounds(
     uint li_1,
-    metal::float3 p,
-    bool has,
-    threadgroup type_6& wg_lo,
-    threadgroup type_6& wg_hi
+    metal::float3 lo,
+    metal::float3 hi,
+    threadgroup type_7& wg_lo,
+    threadgroup type_7& wg_hi,
+    threadgroup WorkgroupBox& wg_box
 ) {
     uint stride = 32u;
-    wg_lo.inner[li_1] = has ? p : metal::float3(340282350000000000000000000000000000000.0);
-    wg_hi.inner[li_1] = has ? p : metal::float3(-340282350000000000000000000000000000000.0);
+    wg_lo.inner[li_1] = lo;
+    wg_hi.inner[li_1] = hi;
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
     uint2 loop_bound = uint2(4294967295u);
     bool loop_init = true;
@@ -216,41 +324,65 @@ WorkgroupBox workgroup_box(
         if (metal::all(loop_bound == uint2(0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         if (!loop_init) {
-            uint _e42 = stride;
-            stride = naga_div(_e42, 2u);
+            uint _e36 = stride;
+            stride = naga_div(_e36, 2u);
         }
         loop_init = false;
-        uint _e15 = stride;
-        if (_e15 > 0u) {
+        uint _e9 = stride;
+        if (_e9 > 0u) {
         } else {
             break;
         }
         {
-            uint _e18 = stride;
-            if (li_1 < _e18) {
-                metal::float3 _e24 = wg_lo.inner[li_1];
-                uint _e26 = stride;
-                metal::float3 _e29 = wg_lo.inner[li_1 + _e26];
-                wg_lo.inner[li_1] = metal::min(_e24, _e29);
-                metal::float3 _e35 = wg_hi.inner[li_1];
-                uint _e37 = stride;
-                metal::float3 _e40 = wg_hi.inner[li_1 + _e37];
-                wg_hi.inner[li_1] = metal::max(_e35, _e40);
+            uint _e12 = stride;
+            if (li_1 < _e12) {
+                metal::float3 _e18 = wg_lo.inner[li_1];
+                uint _e20 = stride;
+                metal::float3 _e23 = wg_lo.inner[li_1 + _e20];
+                wg_lo.inner[li_1] = metal::min(_e18, _e23);
+                metal::float3 _e29 = wg_hi.inner[li_1];
+                uint _e31 = stride;
+                metal::float3 _e34 = wg_hi.inner[li_1 + _e31];
+                wg_hi.inner[li_1] = metal::max(_e29, _e34);
             }
             metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
         }
     }
-    metal::float3 _e47 = wg_lo.inner[0];
-    metal::float3 _e50 = wg_hi.inner[0];
-    return WorkgroupBox {_e47, _e50};
+    if (li_1 == 0u) {
+        metal::float3 _e44 = wg_lo.inner[0];
+        metal::float3 _e47 = wg_hi.inner[0];
+        wg_box = WorkgroupBox {_e44, _e47};
+    }
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    WorkgroupBox unnamed = wg_box;
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    return unnamed;
+}
+
+WorkgroupBox workgroup_box(
+    uint li_2,
+    metal::float3 p_1,
+    bool has,
+    threadgroup type_7& wg_lo,
+    threadgroup type_7& wg_hi,
+    threadgroup WorkgroupBox& wg_box
+) {
+    WorkgroupBox _e9 = workgroup_bounds(li_2, has ? p_1 : metal::float3(340282350000000000000000000000000000000.0), has ? p_1 : metal::float3(-340282350000000000000000000000000000000.0), wg_lo, wg_hi, wg_box);
+    return _e9;
+}
+
+bool box_is_empty(
+    WorkgroupBox b
+) {
+    return b.lo.x > b.hi.x;
 }
 
 metal::float4 surface_at(
     metal::int2 texel,
     metal::texture2d<float, metal::access::sample> position_tex
 ) {
-    metal::float4 p_1 = position_tex.read(metal::uint2(texel), 0);
-    return (p_1.w > 0.0) ? metal::float4(p_1.xyz, 1.0) : metal::float4(0.0);
+    metal::float4 p_2 = position_tex.read(metal::uint2(texel), 0);
+    return (p_2.w > 0.0) ? metal::float4(p_2.xyz, 1.0) : metal::float4(0.0);
 }
 
 GbTexel gbuffer_at(
@@ -259,7 +391,7 @@ GbTexel gbuffer_at(
     metal::texture2d<float, metal::access::sample> position_tex,
     metal::texture2d<float, metal::access::sample> normal_tex
 ) {
-    bool local_2 = {};
+    bool local_7 = {};
     uint _e3 = view.width;
     uint _e8 = view.width;
     metal::int2 texel_1 = metal::int2(static_cast<int>(naga_mod(i, _e3)), static_cast<int>(naga_div(i, _e8)));
@@ -268,16 +400,234 @@ GbTexel gbuffer_at(
     metal::float3 n = _e15.xyz;
     float len2_ = metal::dot(n, n);
     if (_e12.w > 0.0) {
-        local_2 = len2_ > 0.0;
+        local_7 = len2_ > 0.0;
     } else {
-        local_2 = false;
+        local_7 = false;
     }
-    bool valid = local_2;
+    bool valid_1 = local_7;
     metal::float3 _e30 = view.eye;
     metal::float3 v_2 = _e12.xyz - _e30;
-    metal::float4 position = metal::float4(_e12.xyz, valid ? 1.0 : 0.0);
-    metal::float4 normal = valid ? metal::float4(n / metal::float3(metal::sqrt(len2_)), metal::sqrt(metal::dot(v_2, v_2))) : metal::float4(0.0, 0.0, 0.0, 1000000000000000000000000000000.0);
+    metal::float4 position = metal::float4(_e12.xyz, valid_1 ? 1.0 : 0.0);
+    metal::float4 normal = valid_1 ? metal::float4(n / metal::float3(metal::sqrt(len2_)), metal::sqrt(metal::dot(v_2, v_2))) : metal::float4(0.0, 0.0, 0.0, 1000000000000000000000000000000.0);
     return GbTexel {position, normal};
+}
+
+void shade_light(
+    uint j,
+    constant VplParams& params,
+    device type_9 const& lights,
+    device type_5 const& rt2_2,
+    device type_5 const& r2_3,
+    thread metal::float3& pos,
+    thread metal::float3& nrm,
+    thread metal::float3& e,
+    thread uint& kept,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    GpuLight l = lights[j];
+    metal::float3 _e5 = pos;
+    metal::float3 v_3 = _e5 - l.p0_;
+    float _e10 = rt2_2[j];
+    float _e13 = r2_3[j];
+    float _e17 = params.near_r2_;
+    float _e18 = vpl_far_slc_share(_e10, _e13, metal::dot(v_3, v_3), _e17);
+    if (_e18 > 0.0) {
+        metal::float3 _e23 = nrm;
+        float _e26 = params.min_d2_;
+        float _e27 = vpl_transfer(l.p1_, _e23, v_3, _e26);
+        float t_1 = _e27 * _e18;
+        metal::float3 _e30 = e;
+        e = _e30 + (l.intensity * t_1);
+        uint _e35 = kept;
+        kept = _e35 + 1u;
+        return;
+    } else {
+        return;
+    }
+}
+
+uint cluster_slot(
+    uint c_1,
+    uint k
+) {
+    return (c_1 * CLUSTER) + k;
+}
+
+float cull_r2_of(
+    uint slot,
+    device type_5 const& r2_3,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float _e3 = r2_3[slot];
+    return _e3;
+}
+
+void shade_list(
+    uint count,
+    constant VplParams& params,
+    device type_9 const& lights,
+    device type_5 const& rt2_2,
+    device type_5 const& r2_3,
+    thread metal::float3& pos,
+    thread metal::float3& nrm,
+    thread bool& valid,
+    thread metal::float3& e,
+    thread uint& kept,
+    threadgroup type_13& tile_lights,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint k_1 = 0u;
+    bool _e2 = valid;
+    if (_e2) {
+        uint2 loop_bound_1 = uint2(4294967295u);
+        bool loop_init_1 = true;
+        while(true) {
+            if (metal::all(loop_bound_1 == uint2(0u))) { break; }
+            loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+            if (!loop_init_1) {
+                uint _e12 = k_1;
+                k_1 = _e12 + 1u;
+            }
+            loop_init_1 = false;
+            uint _e5 = k_1;
+            if (_e5 < count) {
+            } else {
+                break;
+            }
+            {
+                uint _e8 = k_1;
+                uint _e10 = tile_lights.inner[_e8];
+                shade_light(_e10, params, lights, rt2_2, r2_3, pos, nrm, e, kept, _buffer_sizes);
+            }
+        }
+        return;
+    } else {
+        return;
+    }
+}
+
+void cull_tile(
+    uint li_3,
+    metal::float3 lo_1,
+    metal::float3 hi_1,
+    metal::uint4 grid,
+    uint clusters_at,
+    uint groups_at,
+    constant VplParams& params,
+    device type_9 const& lights,
+    device type_5 const& rt2_2,
+    device type_5 const& r2_3,
+    device type_10 const& boxes,
+    thread metal::float3& pos,
+    thread metal::float3& nrm,
+    thread bool& valid,
+    thread metal::float3& e,
+    thread uint& kept,
+    threadgroup type_13& tile_lights,
+    threadgroup metal::atomic_uint& list_count,
+    threadgroup type_15& cluster_hits,
+    threadgroup metal::atomic_uint& hit_count,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint g_2 = 0u;
+    uint h = {};
+    if (li_3 == 0u) {
+        metal::atomic_store_explicit(&list_count, 0u, metal::memory_order_relaxed);
+    }
+    uint _e14 = group_count(grid.x, grid.y, grid.z, grid.w);
+    uint2 loop_bound_2 = uint2(4294967295u);
+    bool loop_init_2 = true;
+    while(true) {
+        if (metal::all(loop_bound_2 == uint2(0u))) { break; }
+        loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
+        if (!loop_init_2) {
+            uint _e101 = g_2;
+            g_2 = _e101 + 1u;
+        }
+        loop_init_2 = false;
+        uint _e17 = g_2;
+        if (_e17 < _e14) {
+        } else {
+            break;
+        }
+        {
+            uint _e20 = g_2;
+            GpuBox gb = boxes[groups_at + _e20];
+            bool _e26 = box_overlaps_box(gb.lo, gb.hi, lo_1, hi_1);
+            if (!(_e26)) {
+                continue;
+            }
+            uint _e28 = g_2;
+            uint _e33 = group_first(_e28, grid.x, grid.y, grid.z, grid.w);
+            uint first = clusters_at + _e33;
+            uint _e35 = g_2;
+            uint _e40 = group_clusters(_e35, grid.x, grid.y, grid.z, grid.w);
+            if (li_3 == 0u) {
+                metal::atomic_store_explicit(&hit_count, 0u, metal::memory_order_relaxed);
+            }
+            metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+            if (li_3 < _e40) {
+                GpuBox cb = boxes[first + li_3];
+                bool _e52 = box_overlaps_box(cb.lo, cb.hi, lo_1, hi_1);
+                if (_e52) {
+                    uint _e56 = metal::atomic_fetch_add_explicit(&hit_count, 1u, metal::memory_order_relaxed);
+                    cluster_hits.inner[_e56] = first + li_3;
+                }
+            }
+            metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+            uint unnamed_1 = metal::atomic_load_explicit(&hit_count, metal::memory_order_relaxed);
+            metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+            h = 0u;
+            uint2 loop_bound_3 = uint2(4294967295u);
+            bool loop_init_3 = true;
+            while(true) {
+                if (metal::all(loop_bound_3 == uint2(0u))) { break; }
+                loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+                if (!loop_init_3) {
+                    uint _e98 = h;
+                    h = _e98 + 1u;
+                }
+                loop_init_3 = false;
+                uint _e63 = h;
+                if (_e63 < unnamed_1) {
+                } else {
+                    break;
+                }
+                {
+                    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+                    uint unnamed_2 = metal::atomic_load_explicit(&list_count, metal::memory_order_relaxed);
+                    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+                    if ((unnamed_2 + CLUSTER) > MAX_TILE_LIGHTS) {
+                        shade_list(unnamed_2, params, lights, rt2_2, r2_3, pos, nrm, valid, e, kept, tile_lights, _buffer_sizes);
+                        metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+                        if (li_3 == 0u) {
+                            metal::atomic_store_explicit(&list_count, 0u, metal::memory_order_relaxed);
+                        }
+                        metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+                    }
+                    uint _e76 = h;
+                    uint _e78 = cluster_hits.inner[_e76];
+                    uint _e79 = cluster_slot(_e78, li_3);
+                    GpuLight l_1 = lights[_e79];
+                    if (metal::any(l_1.intensity != metal::float3(0.0))) {
+                        float _e89 = cull_r2_of(_e79, r2_3, _buffer_sizes);
+                        float _e90 = cull_radius(_e89);
+                        bool _e91 = sphere_overlaps_aabb(l_1.p0_, _e90, lo_1, hi_1);
+                        if (_e91) {
+                            uint _e95 = metal::atomic_fetch_add_explicit(&list_count, 1u, metal::memory_order_relaxed);
+                            tile_lights.inner[_e95] = _e79;
+                        }
+                    }
+                }
+            }
+            metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+        }
+    }
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    uint unnamed_3 = metal::atomic_load_explicit(&list_count, metal::memory_order_relaxed);
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    shade_list(unnamed_3, params, lights, rt2_2, r2_3, pos, nrm, valid, e, kept, tile_lights, _buffer_sizes);
+    return;
 }
 
 struct main_Input {
@@ -286,36 +636,42 @@ kernel void main_(
   metal::uint3 wg [[threadgroup_position_in_grid]]
 , metal::uint3 lid [[thread_position_in_threadgroup]]
 , uint li [[thread_index_in_threadgroup]]
-, threadgroup type_6& wg_lo
-, threadgroup type_6& wg_hi
+, threadgroup type_7& wg_lo
+, threadgroup type_7& wg_hi
+, threadgroup WorkgroupBox& wg_box
 , constant VplParams& params [[user(fake0)]]
 , constant ViewParams& view [[user(fake0)]]
 , metal::texture2d<float, metal::access::sample> position_tex [[user(fake0)]]
 , metal::texture2d<float, metal::access::sample> normal_tex [[user(fake0)]]
-, device type_8 const& lights [[user(fake0)]]
-, device type_4 const& rt2_2 [[user(fake0)]]
-, device type_4 const& r2_3 [[user(fake0)]]
-, device type_9& irradiance [[user(fake0)]]
-, threadgroup metal::atomic_uint& tile_count
-, threadgroup type_12& tile_lights
+, device type_9 const& lights [[user(fake0)]]
+, device type_5 const& rt2_2 [[user(fake0)]]
+, device type_5 const& r2_3 [[user(fake0)]]
+, device type_10 const& boxes [[user(fake0)]]
+, device type_11& irradiance [[user(fake0)]]
+, threadgroup type_13& tile_lights
+, threadgroup metal::atomic_uint& list_count
+, threadgroup type_15& cluster_hits
+, threadgroup metal::atomic_uint& hit_count
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
+    metal::float3 pos = {};
+    metal::float3 nrm = {};
+    bool valid = {};
+    metal::float3 e = {};
+    uint kept = {};
     if (li == 0u) {
         wg_lo = {};
         wg_hi = {};
-        metal::atomic_store_explicit(&tile_count, 0, metal::memory_order_relaxed);
+        wg_box = {};
         tile_lights = {};
+        metal::atomic_store_explicit(&list_count, 0, metal::memory_order_relaxed);
+        cluster_hits = {};
+        metal::atomic_store_explicit(&hit_count, 0, metal::memory_order_relaxed);
     }
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
     bool local = {};
-    metal::float4 pos = metal::float4(0.0);
-    metal::float3 nrm = metal::float3(0.0);
+    metal::float4 p = metal::float4(0.0);
     bool local_1 = {};
-    metal::float3 e = metal::float3(0.0);
-    uint kept = 0u;
-    uint first = 0u;
-    uint j = {};
-    uint k = {};
     uint sub = wg.z;
     uint px = naga_mod(sub, P) + (((wg.x * TILE) + lid.x) * P);
     uint py = naga_div(sub, P) + (((wg.y * TILE) + lid.y) * P);
@@ -330,134 +686,37 @@ kernel void main_(
     uint _e38 = params.width;
     uint pix = (py * _e38) + px;
     if (inside) {
-        GbTexel _e47 = gbuffer_at(pix, view, position_tex, normal_tex);
-        pos = _e47.position;
-        nrm = _e47.normal.xyz;
+        GbTexel _e44 = gbuffer_at(pix, view, position_tex, normal_tex);
+        p = _e44.position;
+        nrm = _e44.normal.xyz;
     }
+    metal::float4 _e50 = p;
+    pos = _e50.xyz;
     if (inside) {
-        float _e54 = pos.w;
-        local_1 = _e54 > 0.0;
+        float _e56 = p.w;
+        local_1 = _e56 > 0.0;
     } else {
         local_1 = false;
     }
-    bool valid_1 = local_1;
-    metal::float4 _e59 = pos;
-    WorkgroupBox _e61 = workgroup_box(li, _e59.xyz, valid_1, wg_lo, wg_hi);
-    metal::float3 lo = _e61.lo;
-    metal::float3 hi = _e61.hi;
-    uint _e66 = params.subset_shift;
-    uint _e68 = shifted_subset(sub, _e66, P);
-    uint _e71 = params.lights_per_subset;
-    uint base = _e68 * _e71;
-    uint2 loop_bound_1 = uint2(4294967295u);
-    bool loop_init_1 = true;
-    while(true) {
-        if (metal::all(loop_bound_1 == uint2(0u))) { break; }
-        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
-        if (!loop_init_1) {
-            uint _e175 = first;
-            first = _e175 + MAX_TILE_LIGHTS;
-        }
-        loop_init_1 = false;
-        uint _e80 = first;
-        uint _e83 = params.lights_per_subset;
-        if (_e80 < _e83) {
-        } else {
-            break;
-        }
-        {
-            uint _e85 = first;
-            uint _e90 = params.lights_per_subset;
-            uint end = metal::min(_e85 + MAX_TILE_LIGHTS, _e90);
-            if (li == 0u) {
-                metal::atomic_store_explicit(&tile_count, 0u, metal::memory_order_relaxed);
-            }
-            metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-            uint _e96 = first;
-            j = _e96 + li;
-            uint2 loop_bound_2 = uint2(4294967295u);
-            bool loop_init_2 = true;
-            while(true) {
-                if (metal::all(loop_bound_2 == uint2(0u))) { break; }
-                loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
-                if (!loop_init_2) {
-                    uint _e122 = j;
-                    j = _e122 + THREADS;
-                }
-                loop_init_2 = false;
-                uint _e99 = j;
-                if (_e99 < end) {
-                } else {
-                    break;
-                }
-                {
-                    uint _e102 = j;
-                    metal::float3 _e106 = lights[base + _e102].p0_;
-                    uint _e108 = j;
-                    float _e111 = r2_3[base + _e108];
-                    float _e112 = cull_radius(_e111);
-                    bool _e113 = sphere_overlaps_aabb(_e106, _e112, lo, hi);
-                    if (_e113) {
-                        uint _e116 = metal::atomic_fetch_add_explicit(&tile_count, 1u, metal::memory_order_relaxed);
-                        if (_e116 < MAX_TILE_LIGHTS) {
-                            uint _e121 = j;
-                            tile_lights.inner[_e116] = _e121;
-                        }
-                    }
-                }
-            }
-            metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-            uint unnamed = metal::atomic_load_explicit(&tile_count, metal::memory_order_relaxed);
-            metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-            uint count = metal::min(unnamed, MAX_TILE_LIGHTS);
-            if (valid_1) {
-                k = 0u;
-                uint2 loop_bound_3 = uint2(4294967295u);
-                bool loop_init_3 = true;
-                while(true) {
-                    if (metal::all(loop_bound_3 == uint2(0u))) { break; }
-                    loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-                    if (!loop_init_3) {
-                        uint _e173 = k;
-                        k = _e173 + 1u;
-                    }
-                    loop_init_3 = false;
-                    uint _e131 = k;
-                    if (_e131 < count) {
-                    } else {
-                        break;
-                    }
-                    {
-                        uint _e134 = k;
-                        uint _e136 = tile_lights.inner[_e134];
-                        uint j_1 = base + _e136;
-                        GpuLight l = lights[j_1];
-                        metal::float4 _e141 = pos;
-                        metal::float3 v_3 = _e141.xyz - l.p0_;
-                        float _e147 = rt2_2[j_1];
-                        float _e150 = r2_3[j_1];
-                        float _e154 = params.near_r2_;
-                        float _e155 = vpl_far_slc_share(_e147, _e150, metal::dot(v_3, v_3), _e154);
-                        if (_e155 > 0.0) {
-                            metal::float3 _e159 = nrm;
-                            float _e162 = params.min_d2_;
-                            float _e163 = vpl_transfer(l.p1_, _e159, v_3, _e162);
-                            float t_1 = _e163 * _e155;
-                            metal::float3 _e165 = e;
-                            e = _e165 + (l.intensity * t_1);
-                            uint _e169 = kept;
-                            kept = _e169 + 1u;
-                        }
-                    }
-                }
-            }
-            metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-        }
+    bool _e60 = local_1;
+    valid = _e60;
+    metal::float3 _e62 = pos;
+    bool _e64 = valid;
+    WorkgroupBox _e65 = workgroup_box(li, _e62, _e64, wg_lo, wg_hi, wg_box);
+    uint _e68 = params.subset_shift;
+    uint _e70 = shifted_subset(sub, _e68, P);
+    bool _e71 = box_is_empty(_e65);
+    if (!(_e71)) {
+        metal::uint4 grid_1 = params.far_grid;
+        uint _e80 = params.lights_per_subset;
+        uint _e86 = params.far_groups_at;
+        uint _e91 = group_count(grid_1.x, grid_1.y, grid_1.z, grid_1.w);
+        cull_tile(li, _e65.lo, _e65.hi, grid_1, _e70 * naga_div(_e80, CLUSTER), _e86 + (_e70 * _e91), params, lights, rt2_2, r2_3, boxes, pos, nrm, valid, e, kept, tile_lights, list_count, cluster_hits, hit_count, _buffer_sizes);
     }
     if (inside) {
-        metal::float3 _e180 = e;
-        uint _e181 = kept;
-        irradiance[pix] = metal::float4(_e180, static_cast<float>(_e181));
+        metal::float3 _e97 = e;
+        uint _e99 = kept;
+        irradiance[pix] = metal::float4(_e97, static_cast<float>(_e99));
         return;
     } else {
         return;

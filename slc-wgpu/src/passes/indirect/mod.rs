@@ -3,14 +3,20 @@
 //! SLC shading of VPLs (the paper's first application) on the engine's
 //! G-buffer, into a texture the engine owns. Recorded dispatches, in one
 //! compute pass: `vpl_pack` (RSM texels or VPL records → the light
-//! buffer, subset after subset, flux × P², `r_t²`), `light_update` (SLC:
-//! `r² = r_t²/(1−ξ)` with `ξ = xi_for(seed, frame, id)`, the CPU's
-//! numbers), `vpl_tiled` (tiled culling and shading per 8×8 interleaved
-//! sub-image, the far field of the near-field split; it also writes zero
-//! where no surface is), `vpl_denoise` (cross-bilateral, when
-//! `settings.denoise`), `vpl_near` (the near field: every VPL closer than
-//! `R_n` at every pixel, added after the denoise; when `R_n > 0`) and
-//! `irradiance_export`.
+//! buffer, subset after subset, each subset's image in map order, flux ×
+//! P², `r_t²`), `light_update` (SLC: `r² = r_t²/(1−ξ)` with `ξ =
+//! xi_for(seed, frame, id)`, the CPU's numbers), `vpl_clusters` and
+//! `vpl_groups` (the boxes of the two culling hierarchies, slc-core's
+//! `cluster`: each subset's clusters of 8×8 texels and groups of 8×8
+//! clusters for the far field, the whole RSM's for the near field),
+//! `vpl_tiled` (per 8×8 tile of an interleaved sub-image, the subset's
+//! hierarchy culled into the tile's light list and shaded: the far field
+//! of the near-field split; it also writes zero where no surface is),
+//! `vpl_denoise` (cross-bilateral, when `settings.denoise`), `vpl_near`
+//! (the near field: every VPL closer than `R_n`, culled through the
+//! RSM's hierarchy per 8×8 tile, added after the denoise; when `R_n > 0`)
+//! and `irradiance_export`. [`IndirectPass::count_work`] runs a record
+//! with counting kernels and returns the culling work both fields did.
 //!
 //! | input | format | size | usage | content |
 //! |---|---|---|---|---|
@@ -103,6 +109,8 @@
 //! # Ok(()) }
 //! ```
 
+mod counting;
+mod hierarchy;
 mod inputs;
 
 #[cfg(doc)]
@@ -112,14 +120,17 @@ use crate::kernel::{KernelLayout, UniformSlots, check_kernels, zeroed};
 use crate::record::{Dispatch, Recording, Uploads};
 use crate::timing::Stage;
 use crate::{GpuContext, GpuError};
+use counting::{CountGroups, Counting};
+use hierarchy::Hierarchy;
 pub use inputs::{
     IndirectInputs, IndirectMaterials, IndirectPassDesc, IndirectSettings, TILE_LIST, VplInput,
     VplSourceDesc, vpl_buffer,
 };
-use slc_core::interleave::{NEAR_BLOCK, interleave_shift};
-use slc_scene::vpl::PERIOD;
+use slc_core::cluster::CLUSTER;
+use slc_core::interleave::interleave_shift;
+use slc_scene::vpl::{PERIOD, WorkCounts};
 use slc_shared_shaders::layout::{
-    FrameParams, GpuLight, GpuNearBox, PackParams, ViewParams, VplParams,
+    FrameParams, GpuBox, GpuLight, PackParams, ViewParams, VplParams,
 };
 #[cfg(doc)]
 use slc_shared_shaders::layout::{GpuMaterial, GpuVplRecord};
@@ -163,9 +174,21 @@ pub struct IndirectPass {
     gpu: GpuContext,
     desc: IndirectPassDesc,
     count: u32,
-    per_subset: u32,
+    /// The light buffer's slots and the culling hierarchies' boxes.
+    hierarchy: Hierarchy,
+    /// The pass's features (the counting kernels' base).
+    features: Features,
     pack: Pipe,
     update: Pipe,
+    /// `vpl_clusters` per culling kind (the near field's radii) and its
+    /// bind group.
+    clusters: Vec<(CullKind, wgpu::ComputePipeline)>,
+    clusters_group: wgpu::BindGroup,
+    /// `vpl_groups` and its bind group.
+    groups: Pipe,
+    groups_group: wgpu::BindGroup,
+    /// The counting kernels, built at the first [`IndirectPass::count_work`].
+    counting: Option<Counting>,
     tiled_layout: KernelLayout,
     tiled: Vec<(CullKind, wgpu::ComputePipeline)>,
     denoise: Pipe,
@@ -194,7 +217,9 @@ pub struct IndirectPass {
     filtered: wgpu::Buffer,
     /// The specular correction, raw and denoised (glossy pass).
     specular: Option<[wgpu::Buffer; 2]>,
-    pack_outputs: [wgpu::Buffer; 6],
+    pack_outputs: [wgpu::Buffer; 5],
+    /// Both hierarchies' cluster and group boxes.
+    boxes: wgpu::Buffer,
 }
 
 /// What `vpl_pack`'s cached bind group binds: RSM views or a buffer.
@@ -212,13 +237,14 @@ impl IndirectPass {
     pub fn new(gpu: &GpuContext, desc: &IndirectPassDesc) -> Result<Self, GpuError> {
         let (w, h) = (desc.width, desc.height);
         check_size(gpu, "indirect pass", (w, h), TILE)?;
-        // Near blocks are 8×8 texels or 64 records, interleaved or not.
+        // Near clusters are 8×8 texels or 64 records, interleaved or not.
         let subsets = PERIOD * PERIOD;
         let period = desc.period();
-        if desc.tile_list == 0 {
-            return Err(GpuError::Setting(
-                "indirect pass: the tile light list must hold at least 1 light".into(),
-            ));
+        if desc.tile_list < CLUSTER {
+            return Err(GpuError::Setting(format!(
+                "indirect pass: the tile light list must hold a cluster's {CLUSTER} lights, not {}",
+                desc.tile_list
+            )));
         }
         let (count, vpl_source) = match desc.vpls {
             VplSourceDesc::Rsm { size } if size == 0 || size % PERIOD != 0 => {
@@ -243,9 +269,11 @@ impl IndirectPass {
             w as u64 * h as u64 * 16,
             max_binding,
         )?;
+        let hierarchy = Hierarchy::new(desc.vpls, period);
+        let slots = hierarchy.slots();
         gpu.require(
             "max_storage_buffer_binding_size (lights)",
-            count * std::mem::size_of::<GpuLight>() as u64,
+            slots * std::mem::size_of::<GpuLight>() as u64,
             max_binding,
         )?;
         gpu.require(
@@ -253,14 +281,12 @@ impl IndirectPass {
             count.div_ceil(WG as u64),
             lim.max_compute_workgroups_per_dimension as u64,
         )?;
-        let per_subset = (count / (period * period) as u64) as u32;
-        let list = per_subset.clamp(1, desc.tile_list);
-        let wg_bytes = slc_shared_shaders::vpl_tiled_workgroup_bytes(TILE, list);
         gpu.require(
-            "max_compute_workgroup_storage_size (tile light list)",
-            wg_bytes,
-            lim.max_compute_workgroup_storage_size as u64,
+            "max_compute_workgroups_per_dimension (light update)",
+            slots.div_ceil(WG as u64),
+            lim.max_compute_workgroups_per_dimension as u64,
         )?;
+        let list = desc.tile_list;
 
         let vpl = LightTypes { vpl: true, ..LightTypes::default() };
         let base = Features {
@@ -275,9 +301,18 @@ impl IndirectPass {
             glossy: desc.glossy,
             ..Features::default()
         };
+        for kernel in [Kernel::VplTiled, Kernel::VplNear] {
+            gpu.require(
+                "max_compute_workgroup_storage_size (tile light list)",
+                slc_shared_shaders::vpl_workgroup_bytes(kernel, &base),
+                lim.max_compute_workgroup_storage_size as u64,
+            )?;
+        }
         let kernels = [
             Kernel::VplPack,
             Kernel::LightUpdate,
+            Kernel::VplClusters,
+            Kernel::VplGroups,
             Kernel::VplTiled,
             Kernel::VplDenoise,
             Kernel::VplNear,
@@ -287,10 +322,13 @@ impl IndirectPass {
         let mut tiled = Vec::new();
         let tiled_layout = KernelLayout::new(gpu, Kernel::VplTiled, &base)?;
         let near_layout = KernelLayout::new(gpu, Kernel::VplNear, &base)?;
-        let mut near = Vec::new();
-        for m in [CullKind::Stochastic, CullKind::Clamped, CullKind::None] {
-            tiled.push((m, tiled_layout.pipeline(gpu, &Features { method: m, ..base }, None)?));
-            near.push((m, near_layout.pipeline(gpu, &Features { method: m, ..base }, None)?));
+        let clusters_layout = KernelLayout::new(gpu, Kernel::VplClusters, &base)?;
+        let (mut near, mut clusters) = (Vec::new(), Vec::new());
+        for m in CullKind::ALL {
+            let fm = Features { method: m, ..base };
+            tiled.push((m, tiled_layout.pipeline(gpu, &fm, None)?));
+            near.push((m, near_layout.pipeline(gpu, &fm, None)?));
+            clusters.push((m, clusters_layout.pipeline(gpu, &fm, None)?));
         }
         let pixels = w as u64 * h as u64 * 16;
         let rw = wgpu::BufferUsages::STORAGE;
@@ -306,22 +344,33 @@ impl IndirectPass {
                 zeroed(gpu, "slc specular filtered", pixels, rw),
             ]
         });
-        let lights = zeroed(gpu, "slc lights", count * std::mem::size_of::<GpuLight>() as u64, rw);
-        let ids = zeroed(gpu, "slc ids", count * 4, rw);
-        let rt2 = zeroed(gpu, "slc rt2", count * 4, rw);
-        let r2 = zeroed(gpu, "slc r2", count * 4, rw);
+        // Slots no VPL fills (a subset's padding) keep these zeros: no flux.
+        let lights = zeroed(gpu, "slc lights", slots * std::mem::size_of::<GpuLight>() as u64, rw);
+        let ids = zeroed(gpu, "slc ids", slots * 4, rw);
+        let rt2 = zeroed(gpu, "slc rt2", slots * 4, rw);
+        let r2 = zeroed(gpu, "slc r2", slots * 4, rw);
         let near_slots = zeroed(gpu, "slc near_slots", count * 4, rw);
-        let near_boxes = zeroed(
-            gpu,
-            "slc near_boxes",
-            count / NEAR_BLOCK as u64 * std::mem::size_of::<GpuNearBox>() as u64,
-            rw,
-        );
+        let boxes =
+            zeroed(gpu, "slc boxes", hierarchy.boxes() * std::mem::size_of::<GpuBox>() as u64, rw);
         let pack = Pipe::new(gpu, Kernel::VplPack, &base)?;
         let update = Pipe::new(gpu, Kernel::LightUpdate, &base)?;
         let denoise = Pipe::new(gpu, Kernel::VplDenoise, &base)?;
         let export = Pipe::new(gpu, Kernel::IrradianceExport, &base)?;
+        let groups = Pipe::new(gpu, Kernel::VplGroups, &base)?;
         let b = crate::kernel::whole;
+        let clusters_group = clusters_layout.group(
+            gpu,
+            0,
+            &[
+                ("params", vpl_params.binding()),
+                ("lights", b(&lights)),
+                ("r2", b(&r2)),
+                ("near_slots", b(&near_slots)),
+                ("boxes", b(&boxes)),
+            ],
+        );
+        let groups_group =
+            groups.layout.group(gpu, 0, &[("params", vpl_params.binding()), ("boxes", b(&boxes))]);
         let update_group = update.layout.group(
             gpu,
             0,
@@ -336,9 +385,15 @@ impl IndirectPass {
             gpu: gpu.clone(),
             desc: *desc,
             count: count as u32,
-            per_subset,
+            hierarchy,
+            features: base,
             pack,
             update,
+            clusters,
+            clusters_group,
+            groups,
+            groups_group,
+            counting: None,
             tiled_layout,
             tiled,
             denoise,
@@ -353,7 +408,8 @@ impl IndirectPass {
             gbuffer_cache: ViewCache::new(),
             pack_cache: ViewCache::new(),
             export_cache: ViewCache::new(),
-            pack_outputs: [lights, ids, rt2, r2, near_slots, near_boxes],
+            pack_outputs: [lights, ids, rt2, r2, near_slots],
+            boxes,
             irradiance,
             filtered,
             specular,
@@ -383,8 +439,37 @@ impl IndirectPass {
         inputs: &IndirectInputs,
         settings: &IndirectSettings,
     ) -> Result<(), GpuError> {
-        self.dispatches(inputs, settings)?.record(&self.gpu, encoder, "slc indirect");
+        self.dispatches(inputs, settings, false)?.record(&self.gpu, encoder, "slc indirect");
         Ok(())
+    }
+
+    /// The culling work of one record of `settings` on `inputs`, far field
+    /// then near field (slc-scene's [`WorkCounts`]; the near field's is
+    /// zero without one, the far field's culling tests zero when it is
+    /// unculled): records it with counting kernels (built at the first
+    /// call), submits it and waits. The engine's inputs must be ready (their
+    /// passes submitted); the output is written as by [`IndirectPass::record`]
+    /// (Lambertian: a glossy pass's specular target is left alone). Never
+    /// part of a timed frame: counting costs atomics in every loop.
+    pub fn count_work(
+        &mut self,
+        inputs: &IndirectInputs,
+        settings: &IndirectSettings,
+    ) -> Result<(WorkCounts, WorkCounts), GpuError> {
+        if self.counting.is_none() {
+            self.counting = Some(Counting::new(&self.gpu, &self.features)?);
+        }
+        let recording = self.dispatches(inputs, settings, true)?;
+        let gpu = self.gpu.clone();
+        let counting = self.counting.as_ref().expect("built above");
+        let mut encoder = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor {
+            label: Some("slc indirect counted"),
+        });
+        counting.clear(&mut encoder);
+        recording.record(&gpu, &mut encoder, "slc indirect counted");
+        counting.copy_out(&mut encoder);
+        gpu.queue.submit([encoder.finish()]);
+        counting.read(&gpu)
     }
 
     /// The record's uniforms and dispatches in order (only those its
@@ -393,6 +478,7 @@ impl IndirectPass {
         &mut self,
         inputs: &IndirectInputs,
         st: &IndirectSettings,
+        counted: bool,
     ) -> Result<Recording, GpuError> {
         let view = inputs.check(&self.desc, st.seed, st.frame)?;
         let (slc, fixed_r2) = kernel_form(&st.culling)?;
@@ -424,7 +510,6 @@ impl IndirectPass {
         };
         let min_d2 = st.min_distance * st.min_distance;
         let near_r2 = st.near_r2();
-        let near_blocks = count / NEAR_BLOCK;
         let gpu = &self.gpu;
         let mut uploads = Uploads::default();
         uploads.push(&self.view, &view);
@@ -433,7 +518,7 @@ impl IndirectPass {
             &PackParams {
                 count,
                 size: rsm_size,
-                per_subset: self.per_subset,
+                per_subset: self.hierarchy.per_subset,
                 mode,
                 exposure,
                 error_bound,
@@ -449,25 +534,22 @@ impl IndirectPass {
         uploads.push(
             &self.frame_params,
             &FrameParams {
-                light_count: count,
+                light_count: self.hierarchy.slots() as u32,
                 seed: st.seed,
                 frame: st.frame,
                 fixed_xi: st.fixed_xi.unwrap_or(-1.0),
             },
         );
-        uploads.push(
-            &self.vpl_params,
-            &VplParams {
-                width: w,
-                height: h,
-                lights_per_subset: self.per_subset,
-                min_d2,
-                near_r2,
-                near_blocks,
-                subset_shift: interleave_shift(st.seed, st.frame, self.desc.period()),
-                pad1: 0,
-            },
-        );
+        let mut vpl_params = VplParams {
+            width: w,
+            height: h,
+            min_d2,
+            near_r2,
+            subset_shift: interleave_shift(st.seed, st.frame, self.desc.period()),
+            ..bytemuck::Zeroable::zeroed()
+        };
+        self.hierarchy.fill(&mut vpl_params, near_r2 > 0.0);
+        uploads.push(&self.vpl_params, &vpl_params);
         let tex = wgpu::BindingResource::TextureView;
         let b = crate::kernel::whole;
         let g = inputs.gbuffer;
@@ -475,49 +557,68 @@ impl IndirectPass {
             (&self.view, &self.vpl_params, &self.irradiance, &self.filtered);
         let (tiled_layout, denoise_layout, near_layout, outs) =
             (&self.tiled_layout, &self.denoise.layout, &self.near_layout, &self.pack_outputs);
-        let [lights, _, rt2, r2, near_slots, near_boxes] = outs;
+        let [lights, _, rt2, r2, near_slots] = outs;
+        let boxes = &self.boxes;
         let specular = self.specular.as_ref();
         let table = inputs.materials.map(|m| m.table);
+        /// The G-buffer readers' common bindings, then `rest`.
+        fn with<'b>(
+            base: &[(&'static str, wgpu::BindingResource<'b>)],
+            rest: &[(&'static str, &'b wgpu::Buffer)],
+        ) -> Vec<(&'static str, wgpu::BindingResource<'b>)> {
+            base.iter()
+                .cloned()
+                .chain(rest.iter().map(|&(name, buf)| (name, buf.as_entire_binding())))
+                .collect()
+        }
+        let base = || {
+            [
+                ("params", vpl_slots.binding()),
+                ("view", view_slots.binding()),
+                (g.surface_name(), tex(g.surface_view())),
+                ("normal_tex", tex(g.normal)),
+            ]
+        };
+        // The buffers `vpl_tiled` and `vpl_near` bind besides the G-buffer,
+        // before the glossy or counting ones; `vpl_near` adds to the raw
+        // (0) or the denoised (1) irradiance.
+        let tiled_rest = || {
+            vec![
+                ("lights", lights),
+                ("rt2", rt2),
+                ("r2", r2),
+                ("boxes", boxes),
+                ("irradiance", irradiance),
+            ]
+        };
+        let near_rest = |k: usize| {
+            let target = [irradiance, filtered][k];
+            vec![
+                ("lights", lights),
+                ("near_slots", near_slots),
+                ("boxes", boxes),
+                ("rt2", rt2),
+                ("r2", r2),
+                ("irradiance", target),
+            ]
+        };
         // The kernels that read the G-buffer in place: bound to the
         // engine's views (and material table), cached by them.
         let groups = self.gbuffer_cache.get(
             (g.surface_view().clone(), g.normal.clone(), table.cloned()),
             || {
-                /// The G-buffer readers' common bindings, then `rest`.
-                fn with<'b>(
-                    base: &[(&'static str, wgpu::BindingResource<'b>)],
-                    rest: &[(&'static str, &'b wgpu::Buffer)],
-                ) -> Vec<(&'static str, wgpu::BindingResource<'b>)> {
-                    base.iter()
-                        .cloned()
-                        .chain(rest.iter().map(|&(name, buf)| (name, buf.as_entire_binding())))
-                        .collect()
-                }
-                let base = [
-                    ("params", vpl_slots.binding()),
-                    ("view", view_slots.binding()),
-                    (g.surface_name(), tex(g.surface_view())),
-                    ("normal_tex", tex(g.normal)),
-                ];
+                let base = base();
                 // The glossy kernels' material table and specular target.
                 let glossy = |k: usize| match (table, specular) {
                     (Some(t), Some(sp)) => vec![("materials", t), ("specular", &sp[k])],
                     _ => Vec::new(),
                 };
-                let near = |target: &wgpu::Buffer, k: usize| {
-                    let mut rest = vec![
-                        ("lights", lights),
-                        ("near_slots", near_slots),
-                        ("near_boxes", near_boxes),
-                        ("rt2", rt2),
-                        ("r2", r2),
-                        ("irradiance", target),
-                    ];
+                let near = |k: usize| {
+                    let mut rest = near_rest(k);
                     rest.extend(glossy(k));
                     near_layout.group(gpu, 0, &with(&base, &rest))
                 };
-                let mut tiled =
-                    vec![("lights", lights), ("rt2", rt2), ("r2", r2), ("irradiance", irradiance)];
+                let mut tiled = tiled_rest();
                 tiled.extend(glossy(0));
                 GbufferGroups {
                     tiled: tiled_layout.group(gpu, 0, &with(&base, &tiled)),
@@ -533,10 +634,36 @@ impl IndirectPass {
                             &with(&base, &[("irradiance", &sp[0]), ("filtered", &sp[1])]),
                         )
                     }),
-                    near: [near(irradiance, 0), near(filtered, 1)],
+                    near: [near(0), near(1)],
                 }
             },
         );
+        // The counting kernels' groups: the same buffers, Lambertian, and
+        // each field's counters.
+        let counted = match (counted, self.counting.as_mut()) {
+            (false, _) => None,
+            (true, None) => {
+                return Err(GpuError::Setting("indirect pass: counting kernels not built".into()));
+            }
+            (true, Some(c)) => {
+                let (tl, nl, counters) = (&c.tiled_layout, &c.near_layout, &c.counters);
+                let groups = c.groups.get((g.surface_view().clone(), g.normal.clone()), || {
+                    let base = base();
+                    let near = |k| {
+                        let mut rest = near_rest(k);
+                        rest.push(("counters", &counters[1]));
+                        nl.group(gpu, 0, &with(&base, &rest))
+                    };
+                    let mut tiled = tiled_rest();
+                    tiled.push(("counters", &counters[0]));
+                    CountGroups {
+                        tiled: tl.group(gpu, 0, &with(&base, &tiled)),
+                        near: [near(0), near(1)],
+                    }
+                });
+                Some((groups, &c.tiled, &c.near))
+            }
+        };
         let (pack, pack_slots) = (&self.pack.layout, &self.pack_params);
         let key = match inputs.vpls {
             VplInput::Rsm { position, normal, flux } => {
@@ -554,9 +681,7 @@ impl IndirectPass {
                 ]),
                 VplInput::Buffer(buf) => res.push(("records", b(buf))),
             }
-            for (name, buf) in
-                ["lights", "ids", "rt2", "r2", "near_slots", "near_boxes"].into_iter().zip(outs)
-            {
+            for (name, buf) in ["lights", "ids", "rt2", "r2", "near_slots"].into_iter().zip(outs) {
                 res.push((name, b(buf)));
             }
             pack.group(gpu, 0, &res)
@@ -588,18 +713,17 @@ impl IndirectPass {
             export.group(gpu, 0, &res)
         });
         let method = st.culling.kind();
-        let tiled = &self
-            .tiled
-            .iter()
-            .find(|(m, _)| *m == method)
-            .ok_or(GpuError::Setting("unknown method".into()))?
-            .1;
-        let near = &self
-            .near
-            .iter()
-            .find(|(m, _)| *m == method)
-            .ok_or(GpuError::Setting("unknown method".into()))?
-            .1;
+        let (tiled_group, near_groups, tiled, near) = match counted {
+            Some((c, tiled, near)) => {
+                (c.tiled, c.near, Pipe::find(tiled, method)?, Pipe::find(near, method)?)
+            }
+            None => (
+                groups.tiled,
+                groups.near,
+                Pipe::find(&self.tiled, method)?,
+                Pipe::find(&self.near, method)?,
+            ),
+        };
         let (gx, gy) = (w.div_ceil(TILE), h.div_ceil(TILE));
         let p = self.desc.period();
         let (sub_w, sub_h) = (w.div_ceil(p), h.div_ceil(p));
@@ -614,7 +738,7 @@ impl IndirectPass {
             &self.pack.pipeline,
             pack_group,
             off(&self.pack_params),
-            [near_blocks, 1, 1],
+            [count.div_ceil(CLUSTER), 1, 1],
         )];
         if slc {
             out.push(d(
@@ -622,13 +746,33 @@ impl IndirectPass {
                 &self.update.pipeline,
                 self.update_group.clone(),
                 off(&self.frame_params),
-                [count.div_ceil(WG), 1, 1],
+                [(self.hierarchy.slots() as u32).div_ceil(WG), 1, 1],
+            ));
+        }
+        // The culling hierarchies' boxes, once the ranges are drawn: the
+        // far field's when it is culled, the near field's when there is one.
+        let near_field = near_r2 > 0.0;
+        if method != CullKind::None || near_field {
+            let max_dim = self.gpu.limits.max_compute_workgroups_per_dimension;
+            out.push(d(
+                Stage::Bounds,
+                Pipe::find(&self.clusters, method)?,
+                self.clusters_group.clone(),
+                off(&self.vpl_params),
+                self.hierarchy.cluster_dispatch(near_field, max_dim),
+            ));
+            out.push(d(
+                Stage::Bounds,
+                &self.groups.pipeline,
+                self.groups_group.clone(),
+                off(&self.vpl_params),
+                self.hierarchy.group_dispatch(near_field, max_dim),
             ));
         }
         out.push(d2(
             Stage::Shading,
             tiled,
-            groups.tiled,
+            tiled_group,
             both(),
             [sub_w.div_ceil(TILE), sub_h.div_ceil(TILE), p * p],
         ));
@@ -645,8 +789,8 @@ impl IndirectPass {
                 out.push(d2(Stage::Denoise, &self.denoise.pipeline, group, both(), [gx, gy, 1]));
             }
         }
-        if near_r2 > 0.0 {
-            let [raw, denoised] = groups.near;
+        if near_field {
+            let [raw, denoised] = near_groups;
             out.push(d2(
                 Stage::NearField,
                 near,

@@ -1,0 +1,54 @@
+// The counting variant's work counters (slc_scene::vpl::WorkCounts): each
+// field summed over the workgroup in workgroup memory, then added by one
+// invocation to `counters` as a 64-bit count (low word at 2f, high at
+// 2f + 1, the carry added where the low word wraps). Never in a timed
+// frame.
+
+const COUNT_TILES: u32 = 0u;
+const COUNT_GROUP_TESTS: u32 = 1u;
+const COUNT_CLUSTER_TESTS: u32 = 2u;
+const COUNT_SPHERE_TESTS: u32 = 3u;
+const COUNT_TESTED: u32 = 4u;
+const COUNT_KEPT: u32 = 5u;
+const COUNT_PIXELS: u32 = 6u;
+const COUNT_FIELDS: u32 = 7u;
+
+var<workgroup> wg_counts: array<atomic<u32>, COUNT_FIELDS>;
+
+/// Clears the workgroup's counts; every invocation calls it first.
+fn counts_begin(li: u32) {
+    if li < COUNT_FIELDS {
+        atomicStore(&wg_counts[li], 0u);
+    }
+    workgroupBarrier();
+}
+
+/// Adds `n` to field `f` (any invocation).
+fn count_add(f: u32, n: u32) {
+    atomicAdd(&wg_counts[f], n);
+}
+
+/// Adds 1 to field `f`.
+fn count_one(f: u32) {
+    atomicAdd(&wg_counts[f], 1u);
+}
+
+/// Adds `n` tests the whole workgroup made together (counted once).
+fn count_tests(li: u32, f: u32, n: u32) {
+    if li == 0u {
+        atomicAdd(&wg_counts[f], n);
+    }
+}
+
+/// Adds the workgroup's counts to `counters`; every invocation calls it
+/// last.
+fn counts_end(li: u32) {
+    workgroupBarrier();
+    if li < COUNT_FIELDS {
+        let n = atomicLoad(&wg_counts[li]);
+        let old = atomicAdd(&counters[2u * li], n);
+        if old + n < old {
+            atomicAdd(&counters[2u * li + 1u], 1u);
+        }
+    }
+}

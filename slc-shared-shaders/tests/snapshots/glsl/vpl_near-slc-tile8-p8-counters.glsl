@@ -1,0 +1,674 @@
+#version 430 core
+#extension GL_ARB_compute_shader : require
+#extension GL_ARB_shader_storage_buffer_object : require
+layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
+
+struct GpuLight {
+    vec3 p0_;
+    uint kind;
+    vec3 p1_;
+    float a;
+    vec3 p2_;
+    float b;
+    vec3 intensity;
+    uint ies_base;
+};
+struct VplParams {
+    uint width;
+    uint height;
+    uint lights_per_subset;
+    float min_d2_;
+    float near_r2_;
+    uint subset_shift;
+    uint far_groups_at;
+    uint near_clusters_at;
+    uint near_groups_at;
+    uint box_count;
+    uint pad0_;
+    uint pad1_;
+    uvec4 far_grid;
+    uvec4 near_grid;
+};
+struct GpuBox {
+    vec3 lo;
+    float pad0_;
+    vec3 hi;
+    float pad1_;
+};
+struct ViewParams {
+    vec4 c0_;
+    vec4 c1_;
+    vec4 c2_;
+    vec4 c3_;
+    vec3 eye;
+    uint width;
+    uint height;
+    uint pad0_;
+    uint seed;
+    uint frame;
+    vec3 f0_d;
+    float f90_d;
+};
+struct WorkgroupBox {
+    vec3 lo;
+    vec3 hi;
+};
+struct GbTexel {
+    vec4 position;
+    vec4 normal;
+};
+const uint LIGHT_POINT = 0u;
+const uint LIGHT_SPOT = 1u;
+const uint LIGHT_IES = 2u;
+const uint LIGHT_TRIANGLE = 3u;
+const uint LIGHT_VPL = 4u;
+const uint NO_LIGHT = 4294967295u;
+const uint MAP_CAMERA = 0u;
+const uint MAP_PERSPECTIVE = 1u;
+const uint MAP_ORTHOGRAPHIC = 2u;
+const float XI_STEP = 5.9604645e-8;
+const uint PICK_STREAM = 2654435769u;
+const float TWO_PI = 6.2831855;
+const float CULL_RADIUS_SCALE = 1.000001;
+const float SPHERE_PAD = 4.7683716e-7;
+const float SPHERE_HUGE = 3.4028235e38;
+const float SPHERE_PAD_ABS = 1e-18;
+const uint CLUSTER = 64u;
+const uint GROUP_SIDE = 8u;
+const float INV_PI = 0.31830987;
+const float MIN_D2_ = 1e-12;
+const float MAX_INTENSITY = 7.2057594e16;
+const uint BSH_NONE = 4294967295u;
+const uint RESERVOIR_FULL = 4294967295u;
+const float GGX_ALPHA_MIN = 0.001;
+const float RANGE_SCALE_MAX = 64.0;
+const uint LIGHT_BVH_LEAF = 4294967295u;
+const float ONE_MINUS_EPSILON = 0.99999994;
+const float F32_MAX = 3.4028235e38;
+const float DEPTH_NONE = 1e30;
+const float DEPTH_SIGMA = 0.05;
+const float COVER_WEIGHT = 0.1;
+const uint ROULETTE_DEPTH = 2u;
+const float TEMPORAL_MAX_HISTORY = 32.0;
+const float TEMPORAL_DEPTH_TOLERANCE = 0.01;
+const float TEMPORAL_MOTION_DEPTH_TOLERANCE = 0.05;
+const float TEMPORAL_NORMAL_COS = 0.9;
+const float TEMPORAL_MIN_MOMENTS = 8.0;
+const float TEMPORAL_CHANGED_HISTORY = 1.0;
+const float TEMPORAL_CHANGE_LOW = 4.0;
+const float TEMPORAL_CHANGE_HIGH = 8.0;
+const float TEMPORAL_MIN_WEIGHT = 0.01;
+const uint P = 8u;
+const uint TILE = 8u;
+const uint THREADS = 64u;
+const uint BOX_THREADS = 64u;
+const uint MAX_TILE_LIGHTS = 1024u;
+const uint COUNT_TILES = 0u;
+const uint COUNT_GROUP_TESTS = 1u;
+const uint COUNT_CLUSTER_TESTS = 2u;
+const uint COUNT_SPHERE_TESTS = 3u;
+const uint COUNT_TESTED = 4u;
+const uint COUNT_KEPT = 5u;
+const uint COUNT_PIXELS = 6u;
+const uint COUNT_FIELDS = 7u;
+
+shared vec3 wg_lo[64];
+
+shared vec3 wg_hi[64];
+
+shared WorkgroupBox wg_box;
+
+layout(std140) uniform VplParams_block_0Compute { VplParams _group_0_binding_0_cs; };
+
+layout(std140) uniform ViewParams_block_1Compute { ViewParams _group_0_binding_1_cs; };
+
+uniform sampler2D _group_0_binding_2_cs;
+
+uniform sampler2D _group_0_binding_3_cs;
+
+layout(std430) readonly buffer type_9_block_2Compute { GpuLight _group_0_binding_4_cs[]; };
+
+layout(std430) readonly buffer type_10_block_3Compute { uint _group_0_binding_5_cs[]; };
+
+layout(std430) readonly buffer type_11_block_4Compute { GpuBox _group_0_binding_6_cs[]; };
+
+layout(std430) readonly buffer type_5_block_5Compute { float _group_0_binding_7_cs[]; };
+
+layout(std430) readonly buffer type_5_block_6Compute { float _group_0_binding_8_cs[]; };
+
+layout(std430) buffer type_12_block_7Compute { vec4 _group_0_binding_9_cs[]; };
+
+layout(std430) buffer type_14_block_8Compute { uint _group_0_binding_12_cs[]; };
+
+shared uint wg_counts[7];
+
+vec3 pos = vec3(0.0);
+
+vec3 nrm = vec3(0.0);
+
+bool valid = false;
+
+vec3 e = vec3(0.0);
+
+uint kept = 0u;
+
+shared uint tile_lights[1024];
+
+shared uint list_count;
+
+shared uint cluster_hits[64];
+
+shared uint hit_count;
+
+
+float to_f32_(uint u) {
+    return float(u);
+}
+
+float slc_weight(float rt2_, float d2_) {
+    if ((d2_ <= rt2_)) {
+        return 1.0;
+    }
+    return (d2_ / rt2_);
+}
+
+bool slc_keep(float r2_, float d2_1) {
+    return (d2_1 < r2_);
+}
+
+float cull_radius(float r2_1) {
+    return (sqrt(r2_1) * CULL_RADIUS_SCALE);
+}
+
+bool sphere_overlaps_aabb(vec3 c, float r, vec3 bmin, vec3 bmax) {
+    vec3 q = clamp(c, bmin, bmax);
+    vec3 v_1 = (q - c);
+    return (dot(v_1, v_1) <= (r * r));
+}
+
+uint groups_across(uint bw, uint gw) {
+    return (((bw + gw) - 1u) / gw);
+}
+
+uint group_count(uint bw_1, uint bh, uint gw_1, uint gh) {
+    uint _e4 = groups_across(bw_1, gw_1);
+    uint _e5 = groups_across(bh, gh);
+    return (_e4 * _e5);
+}
+
+uint group_first(uint g, uint bw_2, uint bh_1, uint gw_2, uint gh_1) {
+    uint _e5 = groups_across(bw_2, gw_2);
+    uint gx = (g % _e5);
+    uint gy = (g / _e5);
+    uint h_1 = min(gh_1, (bh_1 - (gh_1 * gy)));
+    return (((gy * gh_1) * bw_2) + ((gx * gw_2) * h_1));
+}
+
+uint group_clusters(uint g_1, uint bw_3, uint bh_2, uint gw_3, uint gh_2) {
+    uint _e5 = groups_across(bw_3, gw_3);
+    uint gx_1 = (g_1 % _e5);
+    uint gy_1 = (g_1 / _e5);
+    return (min(gw_3, (bw_3 - (gw_3 * gx_1))) * min(gh_2, (bh_2 - (gh_2 * gy_1))));
+}
+
+bool box_overlaps_box(vec3 lo1_, vec3 hi1_, vec3 lo2_, vec3 hi2_) {
+    bool local_2 = false;
+    bool local_3 = false;
+    bool local_4 = false;
+    bool local_5 = false;
+    bool local_6 = false;
+    if ((lo1_.x <= hi2_.x)) {
+        local_2 = (lo2_.x <= hi1_.x);
+    } else {
+        local_2 = false;
+    }
+    bool _e13 = local_2;
+    if (_e13) {
+        local_3 = (lo1_.y <= hi2_.y);
+    } else {
+        local_3 = false;
+    }
+    bool _e20 = local_3;
+    if (_e20) {
+        local_4 = (lo2_.y <= hi1_.y);
+    } else {
+        local_4 = false;
+    }
+    bool _e27 = local_4;
+    if (_e27) {
+        local_5 = (lo1_.z <= hi2_.z);
+    } else {
+        local_5 = false;
+    }
+    bool _e34 = local_5;
+    if (_e34) {
+        local_6 = (lo2_.z <= hi1_.z);
+    } else {
+        local_6 = false;
+    }
+    bool _e41 = local_6;
+    return _e41;
+}
+
+float vpl_transfer(vec3 n_l, vec3 n_x, vec3 v, float min_d2_) {
+    float m_1 = max(dot(v, v), max(min_d2_, MIN_D2_));
+    return (((max(dot(n_l, v), 0.0) * max(-(dot(n_x, v)), 0.0)) * INV_PI) / (m_1 * m_1));
+}
+
+float interleave_flux_scale(uint period) {
+    float _e2 = to_f32_((period * period));
+    return _e2;
+}
+
+float vpl_near_weight(float d2_2, float near_r2_) {
+    if ((near_r2_ <= 0.0)) {
+        return 0.0;
+    }
+    float t = clamp(((near_r2_ - d2_2) / (0.75 * near_r2_)), 0.0, 1.0);
+    return ((t * t) * (3.0 - (2.0 * t)));
+}
+
+float vpl_near_range2_(float r2_2, uint period_1) {
+    float _e2 = interleave_flux_scale(period_1);
+    return (r2_2 / _e2);
+}
+
+float vpl_near_cull_range2_(float r2_3, float near_r2_1) {
+    return min(r2_3, near_r2_1);
+}
+
+float vpl_near_slc_share(float rt2_1, float r2_4, float d2_3, float near_r2_2) {
+    float _e4 = vpl_near_weight(d2_3, near_r2_2);
+    float _e5 = slc_weight(rt2_1, d2_3);
+    bool _e7 = slc_keep(r2_4, d2_3);
+    return ((_e7 && (_e4 > 0.0)) ? (_e4 * _e5) : 0.0);
+}
+
+WorkgroupBox workgroup_bounds(uint li_1, vec3 lo, vec3 hi) {
+    uint stride = 32u;
+    wg_lo[li_1] = lo;
+    wg_hi[li_1] = hi;
+    memoryBarrierShared();
+    barrier();
+    bool loop_init = true;
+    while(true) {
+        if (!loop_init) {
+            uint _e36 = stride;
+            stride = (_e36 / 2u);
+        }
+        loop_init = false;
+        uint _e9 = stride;
+        if ((_e9 > 0u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e12 = stride;
+            if ((li_1 < _e12)) {
+                vec3 _e18 = wg_lo[li_1];
+                uint _e20 = stride;
+                vec3 _e23 = wg_lo[(li_1 + _e20)];
+                wg_lo[li_1] = min(_e18, _e23);
+                vec3 _e29 = wg_hi[li_1];
+                uint _e31 = stride;
+                vec3 _e34 = wg_hi[(li_1 + _e31)];
+                wg_hi[li_1] = max(_e29, _e34);
+            }
+            memoryBarrierShared();
+            barrier();
+        }
+    }
+    if ((li_1 == 0u)) {
+        vec3 _e44 = wg_lo[0];
+        vec3 _e47 = wg_hi[0];
+        wg_box = WorkgroupBox(_e44, _e47);
+    }
+    memoryBarrierShared();
+    barrier();
+    WorkgroupBox _e50 = wg_box;
+    memoryBarrierShared();
+    barrier();
+    return _e50;
+}
+
+WorkgroupBox workgroup_box(uint li_2, vec3 p_1, bool has) {
+    WorkgroupBox _e9 = workgroup_bounds(li_2, (has ? p_1 : vec3(3.4028235e38)), (has ? p_1 : vec3(-3.4028235e38)));
+    return _e9;
+}
+
+bool box_is_empty(WorkgroupBox b) {
+    return (b.lo.x > b.hi.x);
+}
+
+vec4 surface_at(ivec2 texel) {
+    vec4 p_2 = texelFetch(_group_0_binding_2_cs, texel, 0);
+    return ((p_2.w > 0.0) ? vec4(p_2.xyz, 1.0) : vec4(0.0));
+}
+
+GbTexel gbuffer_at(uint i) {
+    bool local_7 = false;
+    uint _e3 = _group_0_binding_1_cs.width;
+    uint _e8 = _group_0_binding_1_cs.width;
+    ivec2 texel_1 = ivec2(int((i % _e3)), int((i / _e8)));
+    vec4 _e12 = surface_at(texel_1);
+    vec4 _e15 = texelFetch(_group_0_binding_3_cs, texel_1, 0);
+    vec3 n_2 = _e15.xyz;
+    float len2_ = dot(n_2, n_2);
+    if ((_e12.w > 0.0)) {
+        local_7 = (len2_ > 0.0);
+    } else {
+        local_7 = false;
+    }
+    bool valid_1 = local_7;
+    vec3 _e30 = _group_0_binding_1_cs.eye;
+    vec3 v_2 = (_e12.xyz - _e30);
+    vec4 position = vec4(_e12.xyz, (valid_1 ? 1.0 : 0.0));
+    vec4 normal = (valid_1 ? vec4((n_2 / vec3(sqrt(len2_))), sqrt(dot(v_2, v_2))) : vec4(0.0, 0.0, 0.0, 1e30));
+    return GbTexel(position, normal);
+}
+
+float near_r2_of(uint slot) {
+    float _e3 = _group_0_binding_8_cs[slot];
+    float _e5 = vpl_near_range2_(_e3, P);
+    return _e5;
+}
+
+float near_cull_r2_of(uint slot_1, float near_r2_3) {
+    float _e2 = near_r2_of(slot_1);
+    float _e3 = vpl_near_cull_range2_(_e2, near_r2_3);
+    return _e3;
+}
+
+void counts_begin(uint li_3) {
+    if ((li_3 < COUNT_FIELDS)) {
+        atomicExchange(wg_counts[li_3], 0u);
+    }
+    memoryBarrierShared();
+    barrier();
+    return;
+}
+
+void count_add(uint f, uint n) {
+    uint _e4 = atomicAdd(wg_counts[f], n);
+    return;
+}
+
+void count_one(uint f_1) {
+    uint _e4 = atomicAdd(wg_counts[f_1], 1u);
+    return;
+}
+
+void count_tests(uint li_4, uint f_2, uint n_1) {
+    if ((li_4 == 0u)) {
+        uint _e7 = atomicAdd(wg_counts[f_2], n_1);
+        return;
+    } else {
+        return;
+    }
+}
+
+void counts_end(uint li_5) {
+    memoryBarrierShared();
+    barrier();
+    if ((li_5 < COUNT_FIELDS)) {
+        uint n_3 = atomicOr(wg_counts[li_5], 0u);
+        uint _e10 = atomicAdd(_group_0_binding_12_cs[(2u * li_5)], n_3);
+        if (((_e10 + n_3) < _e10)) {
+            uint _e20 = atomicAdd(_group_0_binding_12_cs[((2u * li_5) + 1u)], 1u);
+            return;
+        } else {
+            return;
+        }
+    } else {
+        return;
+    }
+}
+
+uint cluster_slot(uint c_1, uint k) {
+    uint _e5 = _group_0_binding_0_cs.near_clusters_at;
+    uint _e11 = _group_0_binding_5_cs[(((c_1 - _e5) * CLUSTER) + k)];
+    return _e11;
+}
+
+float cull_r2_of(uint slot_2) {
+    float _e3 = _group_0_binding_0_cs.near_r2_;
+    float _e4 = near_cull_r2_of(slot_2, _e3);
+    return _e4;
+}
+
+void shade_list(uint count) {
+    uint m = 0u;
+    bool _e2 = valid;
+    if (!(_e2)) {
+        return;
+    }
+    float _e5 = interleave_flux_scale(P);
+    float unscale = (1.0 / _e5);
+    bool loop_init_1 = true;
+    while(true) {
+        if (!loop_init_1) {
+            uint _e55 = m;
+            m = (_e55 + 1u);
+        }
+        loop_init_1 = false;
+        uint _e10 = m;
+        if ((_e10 < count)) {
+        } else {
+            break;
+        }
+        {
+            uint _e13 = m;
+            uint slot_3 = tile_lights[_e13];
+            GpuLight l = _group_0_binding_4_cs[slot_3];
+            vec3 _e20 = pos;
+            vec3 v_3 = (_e20 - l.p0_);
+            float _e25 = _group_0_binding_7_cs[slot_3];
+            float _e27 = vpl_near_range2_(_e25, P);
+            float _e28 = near_r2_of(slot_3);
+            float _e32 = _group_0_binding_0_cs.near_r2_;
+            float _e33 = vpl_near_slc_share(_e27, _e28, dot(v_3, v_3), _e32);
+            if ((_e33 > 0.0)) {
+                vec3 _e38 = nrm;
+                float _e41 = _group_0_binding_0_cs.min_d2_;
+                float _e42 = vpl_transfer(l.p1_, _e38, v_3, _e41);
+                float t_1 = ((_e42 * _e33) * unscale);
+                vec3 _e46 = e;
+                e = (_e46 + (l.intensity * t_1));
+                uint _e51 = kept;
+                kept = (_e51 + 1u);
+            }
+        }
+    }
+    count_add(COUNT_TESTED, count);
+    return;
+}
+
+void cull_tile(uint li_6, vec3 lo_1, vec3 hi_1, uvec4 grid, uint clusters_at, uint groups_at) {
+    uint g_2 = 0u;
+    uint h = 0u;
+    if ((li_6 == 0u)) {
+        atomicExchange(list_count, 0u);
+    }
+    uint _e14 = group_count(grid.x, grid.y, grid.z, grid.w);
+    count_tests(li_6, COUNT_GROUP_TESTS, _e14);
+    bool loop_init_2 = true;
+    while(true) {
+        if (!loop_init_2) {
+            uint _e104 = g_2;
+            g_2 = (_e104 + 1u);
+        }
+        loop_init_2 = false;
+        uint _e18 = g_2;
+        if ((_e18 < _e14)) {
+        } else {
+            break;
+        }
+        {
+            uint _e21 = g_2;
+            GpuBox gb = _group_0_binding_6_cs[(groups_at + _e21)];
+            bool _e27 = box_overlaps_box(gb.lo, gb.hi, lo_1, hi_1);
+            if (!(_e27)) {
+                continue;
+            }
+            uint _e29 = g_2;
+            uint _e34 = group_first(_e29, grid.x, grid.y, grid.z, grid.w);
+            uint first = (clusters_at + _e34);
+            uint _e36 = g_2;
+            uint _e41 = group_clusters(_e36, grid.x, grid.y, grid.z, grid.w);
+            count_tests(li_6, COUNT_CLUSTER_TESTS, _e41);
+            if ((li_6 == 0u)) {
+                atomicExchange(hit_count, 0u);
+            }
+            memoryBarrierShared();
+            barrier();
+            if ((li_6 < _e41)) {
+                GpuBox cb = _group_0_binding_6_cs[(first + li_6)];
+                bool _e54 = box_overlaps_box(cb.lo, cb.hi, lo_1, hi_1);
+                if (_e54) {
+                    uint _e58 = atomicAdd(hit_count, 1u);
+                    cluster_hits[_e58] = (first + li_6);
+                }
+            }
+            memoryBarrierShared();
+            barrier();
+            uint _e62 = hit_count;
+            memoryBarrierShared();
+            barrier();
+            h = 0u;
+            bool loop_init_3 = true;
+            while(true) {
+                if (!loop_init_3) {
+                    uint _e101 = h;
+                    h = (_e101 + 1u);
+                }
+                loop_init_3 = false;
+                uint _e65 = h;
+                if ((_e65 < _e62)) {
+                } else {
+                    break;
+                }
+                {
+                    memoryBarrierShared();
+                    barrier();
+                    uint _e68 = list_count;
+                    memoryBarrierShared();
+                    barrier();
+                    if (((_e68 + CLUSTER) > MAX_TILE_LIGHTS)) {
+                        shade_list(_e68);
+                        memoryBarrierShared();
+                        barrier();
+                        if ((li_6 == 0u)) {
+                            atomicExchange(list_count, 0u);
+                        }
+                        memoryBarrierShared();
+                        barrier();
+                    }
+                    uint _e78 = h;
+                    uint _e80 = cluster_hits[_e78];
+                    uint _e81 = cluster_slot(_e80, li_6);
+                    GpuLight l_1 = _group_0_binding_4_cs[_e81];
+                    if (any(notEqual(l_1.intensity, vec3(0.0)))) {
+                        count_one(COUNT_SPHERE_TESTS);
+                        float _e92 = cull_r2_of(_e81);
+                        float _e93 = cull_radius(_e92);
+                        bool _e94 = sphere_overlaps_aabb(l_1.p0_, _e93, lo_1, hi_1);
+                        if (_e94) {
+                            uint _e98 = atomicAdd(list_count, 1u);
+                            tile_lights[_e98] = _e81;
+                        }
+                    }
+                }
+            }
+            memoryBarrierShared();
+            barrier();
+        }
+    }
+    memoryBarrierShared();
+    barrier();
+    uint _e107 = list_count;
+    memoryBarrierShared();
+    barrier();
+    shade_list(_e107);
+    return;
+}
+
+void main() {
+    if (gl_LocalInvocationID == uvec3(0u)) {
+        wg_lo = vec3[64](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
+        wg_hi = vec3[64](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
+        wg_box = WorkgroupBox(vec3(0.0), vec3(0.0));
+        wg_counts = uint[7](0u, 0u, 0u, 0u, 0u, 0u, 0u);
+        tile_lights = uint[1024](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
+        list_count = 0u;
+        cluster_hits = uint[64](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
+        hit_count = 0u;
+    }
+    memoryBarrierShared();
+    barrier();
+    uvec3 wg = gl_WorkGroupID;
+    uvec3 lid = gl_LocalInvocationID;
+    uint li = gl_LocalInvocationIndex;
+    bool local = false;
+    vec4 p = vec4(0.0);
+    bool local_1 = false;
+    uint px = ((wg.x * TILE) + lid.x);
+    uint py = ((wg.y * TILE) + lid.y);
+    uint _e15 = _group_0_binding_0_cs.width;
+    if ((px < _e15)) {
+        uint _e21 = _group_0_binding_0_cs.height;
+        local = (py < _e21);
+    } else {
+        local = false;
+    }
+    bool inside = local;
+    uint _e27 = _group_0_binding_0_cs.width;
+    uint pix = ((py * _e27) + px);
+    if (inside) {
+        GbTexel _e33 = gbuffer_at(pix);
+        p = _e33.position;
+        nrm = _e33.normal.xyz;
+    }
+    vec4 _e39 = p;
+    pos = _e39.xyz;
+    if (inside) {
+        float _e45 = p.w;
+        local_1 = (_e45 > 0.0);
+    } else {
+        local_1 = false;
+    }
+    bool _e49 = local_1;
+    valid = _e49;
+    counts_begin(li);
+    bool _e51 = valid;
+    if (_e51) {
+        count_one(COUNT_PIXELS);
+    }
+    vec3 _e54 = pos;
+    bool _e56 = valid;
+    WorkgroupBox _e57 = workgroup_box(li, _e54, _e56);
+    bool _e58 = box_is_empty(_e57);
+    if (!(_e58)) {
+        count_tests(li, COUNT_TILES, 1u);
+        uvec4 _e66 = _group_0_binding_0_cs.near_grid;
+        uint _e69 = _group_0_binding_0_cs.near_clusters_at;
+        uint _e72 = _group_0_binding_0_cs.near_groups_at;
+        cull_tile(li, _e57.lo, _e57.hi, _e66, _e69, _e72);
+    }
+    bool _e74 = valid;
+    if (_e74) {
+        uint _e77 = kept;
+        count_add(COUNT_KEPT, _e77);
+    }
+    counts_end(li);
+    bool _e79 = valid;
+    if (_e79) {
+        vec4 old = _group_0_binding_9_cs[pix];
+        vec3 _e87 = e;
+        uint _e91 = kept;
+        _group_0_binding_9_cs[pix] = vec4((old.xyz + _e87), (old.w + float(_e91)));
+        return;
+    } else {
+        return;
+    }
+}
+

@@ -1,0 +1,823 @@
+// language: metal1.0
+#include <metal_stdlib>
+#include <simd/simd.h>
+
+using metal::uint;
+
+struct _mslBufferSizes {
+    uint size7;
+    uint size8;
+    uint size9;
+    uint size10;
+    uint size11;
+    uint size12;
+};
+
+struct GpuLight {
+    metal::packed_float3 p0_;
+    uint kind;
+    metal::packed_float3 p1_;
+    float a;
+    metal::packed_float3 p2_;
+    float b;
+    metal::packed_float3 intensity;
+    uint ies_base;
+};
+struct VplParams {
+    uint width;
+    uint height;
+    uint lights_per_subset;
+    float min_d2_;
+    float near_r2_;
+    uint subset_shift;
+    uint far_groups_at;
+    uint near_clusters_at;
+    uint near_groups_at;
+    uint box_count;
+    uint pad0_;
+    uint pad1_;
+    metal::uint4 far_grid;
+    metal::uint4 near_grid;
+};
+struct GpuBox {
+    metal::packed_float3 lo;
+    float pad0_;
+    metal::packed_float3 hi;
+    float pad1_;
+};
+struct ViewParams {
+    metal::float4 c0_;
+    metal::float4 c1_;
+    metal::float4 c2_;
+    metal::float4 c3_;
+    metal::packed_float3 eye;
+    uint width;
+    uint height;
+    uint pad0_;
+    uint seed;
+    uint frame;
+    metal::packed_float3 f0_d;
+    float f90_d;
+};
+typedef float type_5[1];
+struct type_7 {
+    metal::float3 inner[64];
+};
+struct WorkgroupBox {
+    metal::float3 lo;
+    metal::float3 hi;
+};
+typedef GpuLight type_9[1];
+typedef GpuBox type_10[1];
+typedef metal::float4 type_11[1];
+typedef metal::atomic_uint type_13[1];
+struct GbTexel {
+    metal::float4 position;
+    metal::float4 normal;
+};
+struct type_15 {
+    metal::atomic_uint inner[7];
+};
+struct type_16 {
+    uint inner[1024];
+};
+struct type_17 {
+    uint inner[64];
+};
+constant uint LIGHT_POINT = 0u;
+constant uint LIGHT_SPOT = 1u;
+constant uint LIGHT_IES = 2u;
+constant uint LIGHT_TRIANGLE = 3u;
+constant uint LIGHT_VPL = 4u;
+constant uint NO_LIGHT = 4294967295u;
+constant uint MAP_CAMERA = 0u;
+constant uint MAP_PERSPECTIVE = 1u;
+constant uint MAP_ORTHOGRAPHIC = 2u;
+constant float XI_STEP = 0.000000059604645;
+constant uint PICK_STREAM = 2654435769u;
+constant float TWO_PI = 6.2831855;
+constant float CULL_RADIUS_SCALE = 1.000001;
+constant float SPHERE_PAD = 0.00000047683716;
+constant float SPHERE_HUGE = 340282350000000000000000000000000000000.0;
+constant float SPHERE_PAD_ABS = 0.000000000000000001;
+constant uint CLUSTER = 64u;
+constant uint GROUP_SIDE = 8u;
+constant float INV_PI = 0.31830987;
+constant float MIN_D2_ = 0.000000000001;
+constant float MAX_INTENSITY = 72057594000000000.0;
+constant uint BSH_NONE = 4294967295u;
+constant uint RESERVOIR_FULL = 4294967295u;
+constant float GGX_ALPHA_MIN = 0.001;
+constant float RANGE_SCALE_MAX = 64.0;
+constant uint LIGHT_BVH_LEAF = 4294967295u;
+constant float ONE_MINUS_EPSILON = 0.99999994;
+constant float F32_MAX = 340282350000000000000000000000000000000.0;
+constant float DEPTH_NONE = 1000000000000000000000000000000.0;
+constant float DEPTH_SIGMA = 0.05;
+constant float COVER_WEIGHT = 0.1;
+constant uint ROULETTE_DEPTH = 2u;
+constant float TEMPORAL_MAX_HISTORY = 32.0;
+constant float TEMPORAL_DEPTH_TOLERANCE = 0.01;
+constant float TEMPORAL_MOTION_DEPTH_TOLERANCE = 0.05;
+constant float TEMPORAL_NORMAL_COS = 0.9;
+constant float TEMPORAL_MIN_MOMENTS = 8.0;
+constant float TEMPORAL_CHANGED_HISTORY = 1.0;
+constant float TEMPORAL_CHANGE_LOW = 4.0;
+constant float TEMPORAL_CHANGE_HIGH = 8.0;
+constant float TEMPORAL_MIN_WEIGHT = 0.01;
+constant uint P = 8u;
+constant uint TILE = 8u;
+constant uint THREADS = 64u;
+constant uint BOX_THREADS = 64u;
+constant uint MAX_TILE_LIGHTS = 1024u;
+constant uint COUNT_TILES = 0u;
+constant uint COUNT_GROUP_TESTS = 1u;
+constant uint COUNT_CLUSTER_TESTS = 2u;
+constant uint COUNT_SPHERE_TESTS = 3u;
+constant uint COUNT_TESTED = 4u;
+constant uint COUNT_KEPT = 5u;
+constant uint COUNT_PIXELS = 6u;
+constant uint COUNT_FIELDS = 7u;
+
+float slc_weight(
+    float rt2_,
+    float d2_
+) {
+    if (d2_ <= rt2_) {
+        return 1.0;
+    }
+    return d2_ / rt2_;
+}
+
+bool slc_keep(
+    float r2_,
+    float d2_1
+) {
+    return d2_1 < r2_;
+}
+
+float cull_radius(
+    float r2_1
+) {
+    return metal::sqrt(r2_1) * CULL_RADIUS_SCALE;
+}
+
+bool sphere_overlaps_aabb(
+    metal::float3 c,
+    float r,
+    metal::float3 bmin,
+    metal::float3 bmax
+) {
+    metal::float3 q = metal::clamp(c, bmin, bmax);
+    metal::float3 v_1 = q - c;
+    return metal::dot(v_1, v_1) <= (r * r);
+}
+
+uint naga_div(uint lhs, uint rhs) {
+    return lhs / metal::select(rhs, 1u, rhs == 0u);
+}
+
+uint groups_across(
+    uint bw,
+    uint gw
+) {
+    return naga_div((bw + gw) - 1u, gw);
+}
+
+uint group_count(
+    uint bw_1,
+    uint bh,
+    uint gw_1,
+    uint gh
+) {
+    uint _e4 = groups_across(bw_1, gw_1);
+    uint _e5 = groups_across(bh, gh);
+    return _e4 * _e5;
+}
+
+uint naga_mod(uint lhs, uint rhs) {
+    return lhs % metal::select(rhs, 1u, rhs == 0u);
+}
+
+uint group_first(
+    uint g,
+    uint bw_2,
+    uint bh_1,
+    uint gw_2,
+    uint gh_1
+) {
+    uint _e5 = groups_across(bw_2, gw_2);
+    uint gx = naga_mod(g, _e5);
+    uint gy = naga_div(g, _e5);
+    uint h_1 = metal::min(gh_1, bh_1 - (gh_1 * gy));
+    return ((gy * gh_1) * bw_2) + ((gx * gw_2) * h_1);
+}
+
+uint group_clusters(
+    uint g_1,
+    uint bw_3,
+    uint bh_2,
+    uint gw_3,
+    uint gh_2
+) {
+    uint _e5 = groups_across(bw_3, gw_3);
+    uint gx_1 = naga_mod(g_1, _e5);
+    uint gy_1 = naga_div(g_1, _e5);
+    return metal::min(gw_3, bw_3 - (gw_3 * gx_1)) * metal::min(gh_2, bh_2 - (gh_2 * gy_1));
+}
+
+bool box_overlaps_box(
+    metal::float3 lo1_,
+    metal::float3 hi1_,
+    metal::float3 lo2_,
+    metal::float3 hi2_
+) {
+    bool local_2 = {};
+    bool local_3 = {};
+    bool local_4 = {};
+    bool local_5 = {};
+    bool local_6 = {};
+    if (lo1_.x <= hi2_.x) {
+        local_2 = lo2_.x <= hi1_.x;
+    } else {
+        local_2 = false;
+    }
+    bool _e13 = local_2;
+    if (_e13) {
+        local_3 = lo1_.y <= hi2_.y;
+    } else {
+        local_3 = false;
+    }
+    bool _e20 = local_3;
+    if (_e20) {
+        local_4 = lo2_.y <= hi1_.y;
+    } else {
+        local_4 = false;
+    }
+    bool _e27 = local_4;
+    if (_e27) {
+        local_5 = lo1_.z <= hi2_.z;
+    } else {
+        local_5 = false;
+    }
+    bool _e34 = local_5;
+    if (_e34) {
+        local_6 = lo2_.z <= hi1_.z;
+    } else {
+        local_6 = false;
+    }
+    bool _e41 = local_6;
+    return _e41;
+}
+
+float vpl_transfer(
+    metal::float3 n_l,
+    metal::float3 n_x,
+    metal::float3 v,
+    float min_d2_
+) {
+    float m = metal::max(metal::dot(v, v), metal::max(min_d2_, MIN_D2_));
+    return ((metal::max(metal::dot(n_l, v), 0.0) * metal::max(-(metal::dot(n_x, v)), 0.0)) * INV_PI) / (m * m);
+}
+
+uint shifted_subset(
+    uint pixel_class,
+    uint shift,
+    uint period
+) {
+    return naga_mod(pixel_class + shift, period * period);
+}
+
+float vpl_near_weight(
+    float d2_2,
+    float near_r2_
+) {
+    if (near_r2_ <= 0.0) {
+        return 0.0;
+    }
+    float t = metal::clamp((near_r2_ - d2_2) / (0.75 * near_r2_), 0.0, 1.0);
+    return (t * t) * (3.0 - (2.0 * t));
+}
+
+float vpl_far_weight(
+    float d2_3,
+    float near_r2_1
+) {
+    float _e2 = vpl_near_weight(d2_3, near_r2_1);
+    return 1.0 - _e2;
+}
+
+float vpl_far_slc_share(
+    float rt2_1,
+    float r2_2,
+    float d2_4,
+    float near_r2_2
+) {
+    float _e4 = vpl_far_weight(d2_4, near_r2_2);
+    float _e5 = slc_weight(rt2_1, d2_4);
+    bool _e7 = slc_keep(r2_2, d2_4);
+    return (_e7 & (_e4 > 0.0)) ? (_e4 * _e5) : 0.0;
+}
+
+WorkgroupBox workgroup_bounds(
+    uint li_1,
+    metal::float3 lo,
+    metal::float3 hi,
+    threadgroup type_7& wg_lo,
+    threadgroup type_7& wg_hi,
+    threadgroup WorkgroupBox& wg_box
+) {
+    uint stride = 32u;
+    wg_lo.inner[li_1] = lo;
+    wg_hi.inner[li_1] = hi;
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    uint2 loop_bound = uint2(4294967295u);
+    bool loop_init = true;
+    while(true) {
+        if (metal::all(loop_bound == uint2(0u))) { break; }
+        loop_bound -= uint2(loop_bound.y == 0u, 1u);
+        if (!loop_init) {
+            uint _e36 = stride;
+            stride = naga_div(_e36, 2u);
+        }
+        loop_init = false;
+        uint _e9 = stride;
+        if (_e9 > 0u) {
+        } else {
+            break;
+        }
+        {
+            uint _e12 = stride;
+            if (li_1 < _e12) {
+                metal::float3 _e18 = wg_lo.inner[li_1];
+                uint _e20 = stride;
+                metal::float3 _e23 = wg_lo.inner[li_1 + _e20];
+                wg_lo.inner[li_1] = metal::min(_e18, _e23);
+                metal::float3 _e29 = wg_hi.inner[li_1];
+                uint _e31 = stride;
+                metal::float3 _e34 = wg_hi.inner[li_1 + _e31];
+                wg_hi.inner[li_1] = metal::max(_e29, _e34);
+            }
+            metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+        }
+    }
+    if (li_1 == 0u) {
+        metal::float3 _e44 = wg_lo.inner[0];
+        metal::float3 _e47 = wg_hi.inner[0];
+        wg_box = WorkgroupBox {_e44, _e47};
+    }
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    WorkgroupBox unnamed = wg_box;
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    return unnamed;
+}
+
+WorkgroupBox workgroup_box(
+    uint li_2,
+    metal::float3 p_1,
+    bool has,
+    threadgroup type_7& wg_lo,
+    threadgroup type_7& wg_hi,
+    threadgroup WorkgroupBox& wg_box
+) {
+    WorkgroupBox _e9 = workgroup_bounds(li_2, has ? p_1 : metal::float3(340282350000000000000000000000000000000.0), has ? p_1 : metal::float3(-340282350000000000000000000000000000000.0), wg_lo, wg_hi, wg_box);
+    return _e9;
+}
+
+bool box_is_empty(
+    WorkgroupBox b
+) {
+    return b.lo.x > b.hi.x;
+}
+
+metal::float4 surface_at(
+    metal::int2 texel,
+    metal::texture2d<float, metal::access::sample> position_tex
+) {
+    metal::float4 p_2 = position_tex.read(metal::uint2(texel), 0);
+    return (p_2.w > 0.0) ? metal::float4(p_2.xyz, 1.0) : metal::float4(0.0);
+}
+
+GbTexel gbuffer_at(
+    uint i,
+    constant ViewParams& view,
+    metal::texture2d<float, metal::access::sample> position_tex,
+    metal::texture2d<float, metal::access::sample> normal_tex
+) {
+    bool local_7 = {};
+    uint _e3 = view.width;
+    uint _e8 = view.width;
+    metal::int2 texel_1 = metal::int2(static_cast<int>(naga_mod(i, _e3)), static_cast<int>(naga_div(i, _e8)));
+    metal::float4 _e12 = surface_at(texel_1, position_tex);
+    metal::float4 _e15 = normal_tex.read(metal::uint2(texel_1), 0);
+    metal::float3 n_2 = _e15.xyz;
+    float len2_ = metal::dot(n_2, n_2);
+    if (_e12.w > 0.0) {
+        local_7 = len2_ > 0.0;
+    } else {
+        local_7 = false;
+    }
+    bool valid_1 = local_7;
+    metal::float3 _e30 = view.eye;
+    metal::float3 v_2 = _e12.xyz - _e30;
+    metal::float4 position = metal::float4(_e12.xyz, valid_1 ? 1.0 : 0.0);
+    metal::float4 normal = valid_1 ? metal::float4(n_2 / metal::float3(metal::sqrt(len2_)), metal::sqrt(metal::dot(v_2, v_2))) : metal::float4(0.0, 0.0, 0.0, 1000000000000000000000000000000.0);
+    return GbTexel {position, normal};
+}
+
+void counts_begin(
+    uint li_3,
+    threadgroup type_15& wg_counts
+) {
+    if (li_3 < COUNT_FIELDS) {
+        metal::atomic_store_explicit(&wg_counts.inner[li_3], 0u, metal::memory_order_relaxed);
+    }
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    return;
+}
+
+void count_add(
+    uint f,
+    uint n,
+    threadgroup type_15& wg_counts
+) {
+    uint _e4 = metal::atomic_fetch_add_explicit(&wg_counts.inner[f], n, metal::memory_order_relaxed);
+    return;
+}
+
+void count_one(
+    uint f_1,
+    threadgroup type_15& wg_counts
+) {
+    uint _e4 = metal::atomic_fetch_add_explicit(&wg_counts.inner[f_1], 1u, metal::memory_order_relaxed);
+    return;
+}
+
+void count_tests(
+    uint li_4,
+    uint f_2,
+    uint n_1,
+    threadgroup type_15& wg_counts
+) {
+    if (li_4 == 0u) {
+        uint _e7 = metal::atomic_fetch_add_explicit(&wg_counts.inner[f_2], n_1, metal::memory_order_relaxed);
+        return;
+    } else {
+        return;
+    }
+}
+
+void counts_end(
+    uint li_5,
+    device type_13& counters,
+    threadgroup type_15& wg_counts,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    if (li_5 < COUNT_FIELDS) {
+        uint n_3 = metal::atomic_load_explicit(&wg_counts.inner[li_5], metal::memory_order_relaxed);
+        uint _e10 = metal::atomic_fetch_add_explicit(&counters[2u * li_5], n_3, metal::memory_order_relaxed);
+        if ((_e10 + n_3) < _e10) {
+            uint _e20 = metal::atomic_fetch_add_explicit(&counters[(2u * li_5) + 1u], 1u, metal::memory_order_relaxed);
+            return;
+        } else {
+            return;
+        }
+    } else {
+        return;
+    }
+}
+
+void shade_light(
+    uint j,
+    constant VplParams& params,
+    device type_9 const& lights,
+    device type_5 const& rt2_2,
+    device type_5 const& r2_3,
+    thread metal::float3& pos,
+    thread metal::float3& nrm,
+    thread metal::float3& e,
+    thread uint& kept,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    GpuLight l = lights[j];
+    metal::float3 _e5 = pos;
+    metal::float3 v_3 = _e5 - l.p0_;
+    float _e10 = rt2_2[j];
+    float _e13 = r2_3[j];
+    float _e17 = params.near_r2_;
+    float _e18 = vpl_far_slc_share(_e10, _e13, metal::dot(v_3, v_3), _e17);
+    if (_e18 > 0.0) {
+        metal::float3 _e23 = nrm;
+        float _e26 = params.min_d2_;
+        float _e27 = vpl_transfer(l.p1_, _e23, v_3, _e26);
+        float t_1 = _e27 * _e18;
+        metal::float3 _e30 = e;
+        e = _e30 + (l.intensity * t_1);
+        uint _e35 = kept;
+        kept = _e35 + 1u;
+        return;
+    } else {
+        return;
+    }
+}
+
+uint cluster_slot(
+    uint c_1,
+    uint k
+) {
+    return (c_1 * CLUSTER) + k;
+}
+
+float cull_r2_of(
+    uint slot,
+    device type_5 const& r2_3,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float _e3 = r2_3[slot];
+    return _e3;
+}
+
+void shade_list(
+    uint count,
+    constant VplParams& params,
+    device type_9 const& lights,
+    device type_5 const& rt2_2,
+    device type_5 const& r2_3,
+    threadgroup type_15& wg_counts,
+    thread metal::float3& pos,
+    thread metal::float3& nrm,
+    thread bool& valid,
+    thread metal::float3& e,
+    thread uint& kept,
+    threadgroup type_16& tile_lights,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint k_1 = 0u;
+    bool _e2 = valid;
+    if (_e2) {
+        uint2 loop_bound_1 = uint2(4294967295u);
+        bool loop_init_1 = true;
+        while(true) {
+            if (metal::all(loop_bound_1 == uint2(0u))) { break; }
+            loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+            if (!loop_init_1) {
+                uint _e12 = k_1;
+                k_1 = _e12 + 1u;
+            }
+            loop_init_1 = false;
+            uint _e5 = k_1;
+            if (_e5 < count) {
+            } else {
+                break;
+            }
+            {
+                uint _e8 = k_1;
+                uint _e10 = tile_lights.inner[_e8];
+                shade_light(_e10, params, lights, rt2_2, r2_3, pos, nrm, e, kept, _buffer_sizes);
+            }
+        }
+        count_add(COUNT_TESTED, count, wg_counts);
+        return;
+    } else {
+        return;
+    }
+}
+
+void cull_tile(
+    uint li_6,
+    metal::float3 lo_1,
+    metal::float3 hi_1,
+    metal::uint4 grid,
+    uint clusters_at,
+    uint groups_at,
+    constant VplParams& params,
+    device type_9 const& lights,
+    device type_5 const& rt2_2,
+    device type_5 const& r2_3,
+    device type_10 const& boxes,
+    threadgroup type_15& wg_counts,
+    thread metal::float3& pos,
+    thread metal::float3& nrm,
+    thread bool& valid,
+    thread metal::float3& e,
+    thread uint& kept,
+    threadgroup type_16& tile_lights,
+    threadgroup metal::atomic_uint& list_count,
+    threadgroup type_17& cluster_hits,
+    threadgroup metal::atomic_uint& hit_count,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint g_2 = 0u;
+    uint h = {};
+    if (li_6 == 0u) {
+        metal::atomic_store_explicit(&list_count, 0u, metal::memory_order_relaxed);
+    }
+    uint _e14 = group_count(grid.x, grid.y, grid.z, grid.w);
+    count_tests(li_6, COUNT_GROUP_TESTS, _e14, wg_counts);
+    uint2 loop_bound_2 = uint2(4294967295u);
+    bool loop_init_2 = true;
+    while(true) {
+        if (metal::all(loop_bound_2 == uint2(0u))) { break; }
+        loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
+        if (!loop_init_2) {
+            uint _e104 = g_2;
+            g_2 = _e104 + 1u;
+        }
+        loop_init_2 = false;
+        uint _e18 = g_2;
+        if (_e18 < _e14) {
+        } else {
+            break;
+        }
+        {
+            uint _e21 = g_2;
+            GpuBox gb = boxes[groups_at + _e21];
+            bool _e27 = box_overlaps_box(gb.lo, gb.hi, lo_1, hi_1);
+            if (!(_e27)) {
+                continue;
+            }
+            uint _e29 = g_2;
+            uint _e34 = group_first(_e29, grid.x, grid.y, grid.z, grid.w);
+            uint first = clusters_at + _e34;
+            uint _e36 = g_2;
+            uint _e41 = group_clusters(_e36, grid.x, grid.y, grid.z, grid.w);
+            count_tests(li_6, COUNT_CLUSTER_TESTS, _e41, wg_counts);
+            if (li_6 == 0u) {
+                metal::atomic_store_explicit(&hit_count, 0u, metal::memory_order_relaxed);
+            }
+            metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+            if (li_6 < _e41) {
+                GpuBox cb = boxes[first + li_6];
+                bool _e54 = box_overlaps_box(cb.lo, cb.hi, lo_1, hi_1);
+                if (_e54) {
+                    uint _e58 = metal::atomic_fetch_add_explicit(&hit_count, 1u, metal::memory_order_relaxed);
+                    cluster_hits.inner[_e58] = first + li_6;
+                }
+            }
+            metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+            uint unnamed_1 = metal::atomic_load_explicit(&hit_count, metal::memory_order_relaxed);
+            metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+            h = 0u;
+            uint2 loop_bound_3 = uint2(4294967295u);
+            bool loop_init_3 = true;
+            while(true) {
+                if (metal::all(loop_bound_3 == uint2(0u))) { break; }
+                loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+                if (!loop_init_3) {
+                    uint _e101 = h;
+                    h = _e101 + 1u;
+                }
+                loop_init_3 = false;
+                uint _e65 = h;
+                if (_e65 < unnamed_1) {
+                } else {
+                    break;
+                }
+                {
+                    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+                    uint unnamed_2 = metal::atomic_load_explicit(&list_count, metal::memory_order_relaxed);
+                    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+                    if ((unnamed_2 + CLUSTER) > MAX_TILE_LIGHTS) {
+                        shade_list(unnamed_2, params, lights, rt2_2, r2_3, wg_counts, pos, nrm, valid, e, kept, tile_lights, _buffer_sizes);
+                        metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+                        if (li_6 == 0u) {
+                            metal::atomic_store_explicit(&list_count, 0u, metal::memory_order_relaxed);
+                        }
+                        metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+                    }
+                    uint _e78 = h;
+                    uint _e80 = cluster_hits.inner[_e78];
+                    uint _e81 = cluster_slot(_e80, li_6);
+                    GpuLight l_1 = lights[_e81];
+                    if (metal::any(l_1.intensity != metal::float3(0.0))) {
+                        count_one(COUNT_SPHERE_TESTS, wg_counts);
+                        float _e92 = cull_r2_of(_e81, r2_3, _buffer_sizes);
+                        float _e93 = cull_radius(_e92);
+                        bool _e94 = sphere_overlaps_aabb(l_1.p0_, _e93, lo_1, hi_1);
+                        if (_e94) {
+                            uint _e98 = metal::atomic_fetch_add_explicit(&list_count, 1u, metal::memory_order_relaxed);
+                            tile_lights.inner[_e98] = _e81;
+                        }
+                    }
+                }
+            }
+            metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+        }
+    }
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    uint unnamed_3 = metal::atomic_load_explicit(&list_count, metal::memory_order_relaxed);
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    shade_list(unnamed_3, params, lights, rt2_2, r2_3, wg_counts, pos, nrm, valid, e, kept, tile_lights, _buffer_sizes);
+    return;
+}
+
+struct main_Input {
+};
+kernel void main_(
+  metal::uint3 wg [[threadgroup_position_in_grid]]
+, metal::uint3 lid [[thread_position_in_threadgroup]]
+, uint li [[thread_index_in_threadgroup]]
+, threadgroup type_7& wg_lo
+, threadgroup type_7& wg_hi
+, threadgroup WorkgroupBox& wg_box
+, constant VplParams& params [[user(fake0)]]
+, constant ViewParams& view [[user(fake0)]]
+, metal::texture2d<float, metal::access::sample> position_tex [[user(fake0)]]
+, metal::texture2d<float, metal::access::sample> normal_tex [[user(fake0)]]
+, device type_9 const& lights [[user(fake0)]]
+, device type_5 const& rt2_2 [[user(fake0)]]
+, device type_5 const& r2_3 [[user(fake0)]]
+, device type_10 const& boxes [[user(fake0)]]
+, device type_11& irradiance [[user(fake0)]]
+, device type_13& counters [[user(fake0)]]
+, threadgroup type_15& wg_counts
+, threadgroup type_16& tile_lights
+, threadgroup metal::atomic_uint& list_count
+, threadgroup type_17& cluster_hits
+, threadgroup metal::atomic_uint& hit_count
+, constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
+) {
+    metal::float3 pos = {};
+    metal::float3 nrm = {};
+    bool valid = {};
+    metal::float3 e = {};
+    uint kept = {};
+    if (li == 0u) {
+        wg_lo = {};
+        wg_hi = {};
+        wg_box = {};
+        for (int __i0 = 0; __i0 < 7; __i0++) {
+            metal::atomic_store_explicit(&wg_counts.inner[__i0], 0, metal::memory_order_relaxed);
+        }
+        tile_lights = {};
+        metal::atomic_store_explicit(&list_count, 0, metal::memory_order_relaxed);
+        cluster_hits = {};
+        metal::atomic_store_explicit(&hit_count, 0, metal::memory_order_relaxed);
+    }
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    bool local = {};
+    metal::float4 p = metal::float4(0.0);
+    bool local_1 = {};
+    uint sub = wg.z;
+    uint px = naga_mod(sub, P) + (((wg.x * TILE) + lid.x) * P);
+    uint py = naga_div(sub, P) + (((wg.y * TILE) + lid.y) * P);
+    uint _e26 = params.width;
+    if (px < _e26) {
+        uint _e32 = params.height;
+        local = py < _e32;
+    } else {
+        local = false;
+    }
+    bool inside = local;
+    uint _e38 = params.width;
+    uint pix = (py * _e38) + px;
+    if (inside) {
+        GbTexel _e44 = gbuffer_at(pix, view, position_tex, normal_tex);
+        p = _e44.position;
+        nrm = _e44.normal.xyz;
+    }
+    metal::float4 _e50 = p;
+    pos = _e50.xyz;
+    if (inside) {
+        float _e56 = p.w;
+        local_1 = _e56 > 0.0;
+    } else {
+        local_1 = false;
+    }
+    bool _e60 = local_1;
+    valid = _e60;
+    counts_begin(li, wg_counts);
+    bool _e62 = valid;
+    if (_e62) {
+        count_one(COUNT_PIXELS, wg_counts);
+    }
+    metal::float3 _e65 = pos;
+    bool _e67 = valid;
+    WorkgroupBox _e68 = workgroup_box(li, _e65, _e67, wg_lo, wg_hi, wg_box);
+    uint _e71 = params.subset_shift;
+    uint _e73 = shifted_subset(sub, _e71, P);
+    bool _e74 = box_is_empty(_e68);
+    if (!(_e74)) {
+        count_tests(li, COUNT_TILES, 1u, wg_counts);
+        metal::uint4 grid_1 = params.far_grid;
+        uint _e85 = params.lights_per_subset;
+        uint _e91 = params.far_groups_at;
+        uint _e96 = group_count(grid_1.x, grid_1.y, grid_1.z, grid_1.w);
+        cull_tile(li, _e68.lo, _e68.hi, grid_1, _e73 * naga_div(_e85, CLUSTER), _e91 + (_e73 * _e96), params, lights, rt2_2, r2_3, boxes, wg_counts, pos, nrm, valid, e, kept, tile_lights, list_count, cluster_hits, hit_count, _buffer_sizes);
+    }
+    bool _e100 = valid;
+    if (_e100) {
+        uint _e103 = kept;
+        count_add(COUNT_KEPT, _e103, wg_counts);
+    }
+    counts_end(li, counters, wg_counts, _buffer_sizes);
+    if (inside) {
+        metal::float3 _e107 = e;
+        uint _e109 = kept;
+        irradiance[pix] = metal::float4(_e107, static_cast<float>(_e109));
+        return;
+    } else {
+        return;
+    }
+}
