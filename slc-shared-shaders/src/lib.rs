@@ -469,7 +469,7 @@ impl Default for Features {
     }
 }
 
-const TEMPLATES: [(&str, &str); 33] = [
+const TEMPLATES: [(&str, &str); 34] = [
     ("header.wgsl", include_str!("templates/header.wgsl")),
     ("workgroup_box.wgsl", include_str!("templates/workgroup_box.wgsl")),
     ("lights.wgsl", include_str!("templates/lights.wgsl")),
@@ -491,6 +491,7 @@ const TEMPLATES: [(&str, &str); 33] = [
     ("vpl_ranges.wgsl", include_str!("templates/vpl_ranges.wgsl")),
     ("cluster_cull.wgsl", include_str!("templates/cluster_cull.wgsl")),
     ("work_counters.wgsl", include_str!("templates/work_counters.wgsl")),
+    ("vpl_receiver.wgsl", include_str!("templates/vpl_receiver.wgsl")),
     ("irradiance_export", include_str!("templates/irradiance_export.wgsl")),
     ("scene_raster", include_str!("templates/scene_raster.wgsl")),
     ("primary_direct", include_str!("templates/primary_direct.wgsl")),

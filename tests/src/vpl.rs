@@ -38,6 +38,16 @@ pub struct GpuVpl {
     pass: IndirectPass,
     /// Not interleaved (the reference), built at its first use.
     reference: Option<IndirectPass>,
+    /// The uploaded inputs and the outputs.
+    io: Io,
+    min_distance: f32,
+    /// Pixels that see a surface.
+    valid: Vec<bool>,
+}
+
+/// What a record of the pass binds: the uploaded G-buffer and RSM, the
+/// outputs.
+struct Io {
     position: wgpu::TextureView,
     normal: wgpu::TextureView,
     rsm: [wgpu::TextureView; 3],
@@ -46,9 +56,30 @@ pub struct GpuVpl {
     /// A glossy G-buffer's material table and specular output.
     glossy: Option<(wgpu::Buffer, Readable)>,
     eye: Vec3,
-    min_distance: f32,
-    /// Pixels that see a surface.
-    valid: Vec<bool>,
+}
+
+impl Io {
+    /// The pass's inputs (with the material table and specular target
+    /// where the G-buffer is glossy).
+    fn inputs(&self) -> IndirectInputs<'_> {
+        IndirectInputs {
+            gbuffer: GBuffer {
+                surface: Surface::Position(&self.position),
+                normal: &self.normal,
+                eye: self.eye,
+            },
+            vpls: VplInput::Rsm {
+                position: &self.rsm[0],
+                normal: &self.rsm[1],
+                flux: &self.rsm[2],
+            },
+            output: &self.output.view,
+            materials: self
+                .glossy
+                .as_ref()
+                .map(|(table, sp)| IndirectMaterials { table, specular: &sp.view }),
+        }
+    }
 }
 
 /// An `Rgba32Float` output texture, its view and its read-back buffer
@@ -180,12 +211,14 @@ impl GpuVpl {
             gpu: gpu.clone(),
             pass,
             reference: None,
-            position,
-            normal,
-            rsm,
-            output: Readable::new(gpu, (w, h)),
-            glossy,
-            eye: gb.eye,
+            io: Io {
+                position,
+                normal,
+                rsm,
+                output: Readable::new(gpu, (w, h)),
+                glossy,
+                eye: gb.eye,
+            },
             min_distance,
             valid,
         };
@@ -201,21 +234,7 @@ impl GpuVpl {
         settings: &VplSettings,
     ) -> Result<(WorkCounts, WorkCounts), GpuError> {
         let st = slc_wgpu::frame::indirect_settings(settings, self.min_distance)?;
-        let inputs = IndirectInputs {
-            gbuffer: GBuffer {
-                surface: Surface::Position(&self.position),
-                normal: &self.normal,
-                eye: self.eye,
-            },
-            vpls: VplInput::Rsm {
-                position: &self.rsm[0],
-                normal: &self.rsm[1],
-                flux: &self.rsm[2],
-            },
-            output: &self.output.view,
-            materials: None,
-        };
-        self.pass.count_work(&inputs, &st)
+        self.pass.count_work(&self.io.inputs(), &st)
     }
 
     /// Indirect irradiance on the GPU for `settings` (the same ξ as the
@@ -246,33 +265,17 @@ impl GpuVpl {
             (true, Some(r)) => r,
             _ => &mut self.pass,
         };
-        let inputs = IndirectInputs {
-            gbuffer: GBuffer {
-                surface: Surface::Position(&self.position),
-                normal: &self.normal,
-                eye: self.eye,
-            },
-            vpls: VplInput::Rsm {
-                position: &self.rsm[0],
-                normal: &self.rsm[1],
-                flux: &self.rsm[2],
-            },
-            output: &self.output.view,
-            materials: self
-                .glossy
-                .as_ref()
-                .map(|(table, sp)| IndirectMaterials { table, specular: &sp.view }),
-        };
+        let inputs = self.io.inputs();
         let mut enc = gpu
             .device
             .create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("slc vpl") });
         pass.record(&mut enc, &inputs, &st)?;
         gpu.queue.submit([enc.finish()]);
-        let data = self.output.read(&gpu, &self.valid)?;
+        let data = self.io.output.read(&gpu, &self.valid)?;
         let irradiance = data.iter().map(|d| Vec3::new(d[0], d[1], d[2])).collect();
         let kept: Vec<u32> = data.iter().map(|d| d[3] as u32).collect();
         let evaluations = kept.iter().map(|&k| k as u64).sum();
-        let specular = match &self.glossy {
+        let specular = match &self.io.glossy {
             Some((_, sp)) => {
                 sp.read(&gpu, &self.valid)?.iter().map(|d| Vec3::new(d[0], d[1], d[2])).collect()
             }

@@ -42,16 +42,7 @@ const MAX_TILE_LIGHTS: u32 = {{ max_tile_lights }}u;
 {% include "work_counters.wgsl" %}
 {% endif %}
 
-// This invocation's pixel and sums.
-var<private> pos: vec3f;
-var<private> nrm: vec3f;
-var<private> valid: bool;
-var<private> e: vec3f;
-var<private> kept: u32;
-{% if glossy %}
-var<private> s: vec3f;
-var<private> g: Glossy;
-{% endif %}
+{% include "vpl_receiver.wgsl" %}
 
 fn cluster_slot(c: u32, k: u32) -> u32 {
     return near_slots[(c - params.near_clusters_at) * CLUSTER + k];
@@ -102,26 +93,7 @@ fn main(
     let py = wg.y * TILE + lid.y;
     let inside = px < params.width && py < params.height;
     let pix = py * params.width + px;
-    var p = vec4f(0.0);
-    if inside {
-        let gb = gbuffer_at(pix);
-        p = gb.position;
-        nrm = gb.normal.xyz;
-    }
-    pos = p.xyz;
-    valid = inside && p.w > 0.0;
-{% if glossy %}
-    if valid {
-        g = glossy_at(pix, pos);
-    }
-{% endif %}
-{% if counters %}
-    counts_begin(li);
-    if valid {
-        count_one(COUNT_PIXELS);
-    }
-{% endif %}
-    let tile_box = workgroup_box(li, pos, valid);
+    let tile_box = load_receiver(li, pix, inside);
     if !box_is_empty(tile_box) {
 {% if counters %}
         count_tests(li, COUNT_TILES, 1u);
@@ -129,10 +101,7 @@ fn main(
         cull_tile(li, tile_box.lo, tile_box.hi, params.near_grid, params.near_clusters_at, params.near_groups_at);
     }
 {% if counters %}
-    if valid {
-        count_add(COUNT_KEPT, kept);
-    }
-    counts_end(li);
+    count_receiver(li);
 {% endif %}
     if valid {
         let old = irradiance[pix];

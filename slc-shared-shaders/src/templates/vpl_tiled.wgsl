@@ -38,16 +38,7 @@ const MAX_TILE_LIGHTS: u32 = {{ max_tile_lights }}u;
 {% include "work_counters.wgsl" %}
 {% endif %}
 
-// This invocation's pixel and sums.
-var<private> pos: vec3f;
-var<private> nrm: vec3f;
-var<private> valid: bool;
-var<private> e: vec3f;
-var<private> kept: u32;
-{% if glossy %}
-var<private> s: vec3f;
-var<private> g: Glossy;
-{% endif %}
+{% include "vpl_receiver.wgsl" %}
 
 /// Adds light `j`'s far share at this pixel.
 fn shade_light(j: u32) {
@@ -105,26 +96,7 @@ fn main(
     let py = sub / P + (wg.y * TILE + lid.y) * P;
     let inside = px < params.width && py < params.height;
     let pix = py * params.width + px;
-    var p = vec4f(0.0);
-    if inside {
-        let gb = gbuffer_at(pix);
-        p = gb.position;
-        nrm = gb.normal.xyz;
-    }
-    pos = p.xyz;
-    valid = inside && p.w > 0.0;
-{% if glossy %}
-    if valid {
-        g = glossy_at(pix, pos);
-    }
-{% endif %}
-{% if counters %}
-    counts_begin(li);
-    if valid {
-        count_one(COUNT_PIXELS);
-    }
-{% endif %}
-    let tile_box = workgroup_box(li, pos, valid);
+    let tile_box = load_receiver(li, pix, inside);
     // This frame's map: pixel class `sub` shades a shifted subset.
     let subset = shifted_subset(sub, params.subset_shift, P);
 {% if method == "none" %}
@@ -156,10 +128,7 @@ fn main(
     }
 {% endif %}
 {% if counters %}
-    if valid {
-        count_add(COUNT_KEPT, kept);
-    }
-    counts_end(li);
+    count_receiver(li);
 {% endif %}
     // Every pixel is written (zero where no surface is): nothing else
     // clears the irradiance of the last record.

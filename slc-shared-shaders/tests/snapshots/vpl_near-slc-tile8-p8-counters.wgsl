@@ -200,42 +200,42 @@ fn group_clusters(g_1: u32, bw_3: u32, bh_2: u32, gw_3: u32, gh_2: u32) -> u32 {
 }
 
 fn box_overlaps_box(lo1_: vec3<f32>, hi1_: vec3<f32>, lo2_: vec3<f32>, hi2_: vec3<f32>) -> bool {
+    var local_1: bool;
     var local_2: bool;
     var local_3: bool;
     var local_4: bool;
     var local_5: bool;
-    var local_6: bool;
 
     if (lo1_.x <= hi2_.x) {
-        local_2 = (lo2_.x <= hi1_.x);
+        local_1 = (lo2_.x <= hi1_.x);
+    } else {
+        local_1 = false;
+    }
+    let _e13 = local_1;
+    if _e13 {
+        local_2 = (lo1_.y <= hi2_.y);
     } else {
         local_2 = false;
     }
-    let _e13 = local_2;
-    if _e13 {
-        local_3 = (lo1_.y <= hi2_.y);
+    let _e20 = local_2;
+    if _e20 {
+        local_3 = (lo2_.y <= hi1_.y);
     } else {
         local_3 = false;
     }
-    let _e20 = local_3;
-    if _e20 {
-        local_4 = (lo2_.y <= hi1_.y);
+    let _e27 = local_3;
+    if _e27 {
+        local_4 = (lo1_.z <= hi2_.z);
     } else {
         local_4 = false;
     }
-    let _e27 = local_4;
-    if _e27 {
-        local_5 = (lo1_.z <= hi2_.z);
+    let _e34 = local_4;
+    if _e34 {
+        local_5 = (lo2_.z <= hi1_.z);
     } else {
         local_5 = false;
     }
-    let _e34 = local_5;
-    if _e34 {
-        local_6 = (lo2_.z <= hi1_.z);
-    } else {
-        local_6 = false;
-    }
-    let _e41 = local_6;
+    let _e41 = local_5;
     return _e41;
 }
 
@@ -313,8 +313,8 @@ fn workgroup_bounds(li_1: u32, lo: vec3<f32>, hi: vec3<f32>) -> WorkgroupBox {
     return _e50;
 }
 
-fn workgroup_box(li_2: u32, p_1: vec3<f32>, has: bool) -> WorkgroupBox {
-    let _e9 = workgroup_bounds(li_2, select(vec3(340282350000000000000000000000000000000f), p_1, has), select(vec3(-340282350000000000000000000000000000000f), p_1, has));
+fn workgroup_box(li_2: u32, p: vec3<f32>, has: bool) -> WorkgroupBox {
+    let _e9 = workgroup_bounds(li_2, select(vec3(340282350000000000000000000000000000000f), p, has), select(vec3(-340282350000000000000000000000000000000f), p, has));
     return _e9;
 }
 
@@ -328,7 +328,7 @@ fn surface_at(texel: vec2<i32>) -> vec4<f32> {
 }
 
 fn gbuffer_at(i: u32) -> GbTexel {
-    var local_7: bool;
+    var local_6: bool;
 
     let _e3 = view.width;
     let _e8 = view.width;
@@ -338,11 +338,11 @@ fn gbuffer_at(i: u32) -> GbTexel {
     let n_2 = _e15.xyz;
     let len2_ = dot(n_2, n_2);
     if (_e12.w > 0f) {
-        local_7 = (len2_ > 0f);
+        local_6 = (len2_ > 0f);
     } else {
-        local_7 = false;
+        local_6 = false;
     }
-    let valid_1 = local_7;
+    let valid_1 = local_6;
     let _e30 = view.eye;
     let v_2 = (_e12.xyz - _e30);
     let position = vec4<f32>(_e12.xyz, select(0f, 1f, valid_1));
@@ -405,6 +405,46 @@ fn counts_end(li_5: u32) {
     }
 }
 
+fn load_receiver(li_6: u32, pix: u32, inside: bool) -> WorkgroupBox {
+    var p_1: vec4<f32> = vec4(0f);
+    var local_7: bool;
+
+    if inside {
+        let _e6 = gbuffer_at(pix);
+        p_1 = _e6.position;
+        nrm = _e6.normal.xyz;
+    }
+    let _e12 = p_1;
+    pos = _e12.xyz;
+    if inside {
+        let _e18 = p_1.w;
+        local_7 = (_e18 > 0f);
+    } else {
+        local_7 = false;
+    }
+    let _e22 = local_7;
+    valid = _e22;
+    counts_begin(li_6);
+    let _e24 = valid;
+    if _e24 {
+        count_one(COUNT_PIXELS);
+    }
+    let _e27 = pos;
+    let _e29 = valid;
+    let _e30 = workgroup_box(li_6, _e27, _e29);
+    return _e30;
+}
+
+fn count_receiver(li_7: u32) {
+    let _e2 = valid;
+    if _e2 {
+        let _e5 = kept;
+        count_add(COUNT_KEPT, _e5);
+    }
+    counts_end(li_7);
+    return;
+}
+
 fn cluster_slot(c_1: u32, k: u32) -> u32 {
     let _e5 = params.near_clusters_at;
     let _e11 = near_slots[(((c_1 - _e5) * CLUSTER) + k)];
@@ -463,15 +503,15 @@ fn shade_list(count: u32) {
     return;
 }
 
-fn cull_tile(li_6: u32, lo_1: vec3<f32>, hi_1: vec3<f32>, grid: vec4<u32>, clusters_at: u32, groups_at: u32) {
+fn cull_tile(li_8: u32, lo_1: vec3<f32>, hi_1: vec3<f32>, grid: vec4<u32>, clusters_at: u32, groups_at: u32) {
     var g_2: u32 = 0u;
     var h: u32;
 
-    if (li_6 == 0u) {
+    if (li_8 == 0u) {
         atomicStore((&list_count), 0u);
     }
     let _e14 = group_count(grid.x, grid.y, grid.z, grid.w);
-    count_tests(li_6, COUNT_GROUP_TESTS, _e14);
+    count_tests(li_8, COUNT_GROUP_TESTS, _e14);
     loop {
         let _e18 = g_2;
         if (_e18 < _e14) {
@@ -490,17 +530,17 @@ fn cull_tile(li_6: u32, lo_1: vec3<f32>, hi_1: vec3<f32>, grid: vec4<u32>, clust
             let first = (clusters_at + _e34);
             let _e36 = g_2;
             let _e41 = group_clusters(_e36, grid.x, grid.y, grid.z, grid.w);
-            count_tests(li_6, COUNT_CLUSTER_TESTS, _e41);
-            if (li_6 == 0u) {
+            count_tests(li_8, COUNT_CLUSTER_TESTS, _e41);
+            if (li_8 == 0u) {
                 atomicStore((&hit_count), 0u);
             }
             workgroupBarrier();
-            if (li_6 < _e41) {
-                let cb = boxes[(first + li_6)];
+            if (li_8 < _e41) {
+                let cb = boxes[(first + li_8)];
                 let _e54 = box_overlaps_box(cb.lo, cb.hi, lo_1, hi_1);
                 if _e54 {
                     let _e58 = atomicAdd((&hit_count), 1u);
-                    cluster_hits[_e58] = (first + li_6);
+                    cluster_hits[_e58] = (first + li_8);
                 }
             }
             let _e62 = workgroupUniformLoad((&hit_count));
@@ -516,14 +556,14 @@ fn cull_tile(li_6: u32, lo_1: vec3<f32>, hi_1: vec3<f32>, grid: vec4<u32>, clust
                     if ((_e68 + CLUSTER) > MAX_TILE_LIGHTS) {
                         shade_list(_e68);
                         workgroupBarrier();
-                        if (li_6 == 0u) {
+                        if (li_8 == 0u) {
                             atomicStore((&list_count), 0u);
                         }
                         workgroupBarrier();
                     }
                     let _e78 = h;
                     let _e80 = cluster_hits[_e78];
-                    let _e81 = cluster_slot(_e80, li_6);
+                    let _e81 = cluster_slot(_e80, li_8);
                     let l_1 = lights[_e81];
                     if any((l_1.intensity != vec3(0f))) {
                         count_one(COUNT_SPHERE_TESTS);
@@ -556,8 +596,6 @@ fn cull_tile(li_6: u32, lo_1: vec3<f32>, hi_1: vec3<f32>, grid: vec4<u32>, clust
 @compute @workgroup_size(8, 8, 1) 
 fn main(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id) lid: vec3<u32>, @builtin(local_invocation_index) li: u32) {
     var local: bool;
-    var p: vec4<f32> = vec4(0f);
-    var local_1: bool;
 
     let px = ((wg.x * TILE) + lid.x);
     let py = ((wg.y * TILE) + lid.y);
@@ -568,52 +606,25 @@ fn main(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id) lid:
     } else {
         local = false;
     }
-    let inside = local;
+    let inside_1 = local;
     let _e27 = params.width;
-    let pix = ((py * _e27) + px);
-    if inside {
-        let _e33 = gbuffer_at(pix);
-        p = _e33.position;
-        nrm = _e33.normal.xyz;
-    }
-    let _e39 = p;
-    pos = _e39.xyz;
-    if inside {
-        let _e45 = p.w;
-        local_1 = (_e45 > 0f);
-    } else {
-        local_1 = false;
-    }
-    let _e49 = local_1;
-    valid = _e49;
-    counts_begin(li);
-    let _e51 = valid;
-    if _e51 {
-        count_one(COUNT_PIXELS);
-    }
-    let _e54 = pos;
-    let _e56 = valid;
-    let _e57 = workgroup_box(li, _e54, _e56);
-    let _e58 = box_is_empty(_e57);
-    if !(_e58) {
+    let pix_1 = ((py * _e27) + px);
+    let _e30 = load_receiver(li, pix_1, inside_1);
+    let _e31 = box_is_empty(_e30);
+    if !(_e31) {
         count_tests(li, COUNT_TILES, 1u);
-        let _e66 = params.near_grid;
-        let _e69 = params.near_clusters_at;
-        let _e72 = params.near_groups_at;
-        cull_tile(li, _e57.lo, _e57.hi, _e66, _e69, _e72);
+        let _e39 = params.near_grid;
+        let _e42 = params.near_clusters_at;
+        let _e45 = params.near_groups_at;
+        cull_tile(li, _e30.lo, _e30.hi, _e39, _e42, _e45);
     }
-    let _e74 = valid;
-    if _e74 {
-        let _e77 = kept;
-        count_add(COUNT_KEPT, _e77);
-    }
-    counts_end(li);
-    let _e79 = valid;
-    if _e79 {
-        let old = irradiance[pix];
-        let _e87 = e;
-        let _e91 = kept;
-        irradiance[pix] = vec4<f32>((old.xyz + _e87), (old.w + f32(_e91)));
+    count_receiver(li);
+    let _e47 = valid;
+    if _e47 {
+        let old = irradiance[pix_1];
+        let _e55 = e;
+        let _e59 = kept;
+        irradiance[pix_1] = vec4<f32>((old.xyz + _e55), (old.w + f32(_e59)));
         return;
     } else {
         return;

@@ -210,42 +210,42 @@ fn group_clusters(g_1: u32, bw_3: u32, bh_2: u32, gw_3: u32, gh_2: u32) -> u32 {
 }
 
 fn box_overlaps_box(lo1_: vec3<f32>, hi1_: vec3<f32>, lo2_: vec3<f32>, hi2_: vec3<f32>) -> bool {
+    var local_1: bool;
     var local_2: bool;
     var local_3: bool;
     var local_4: bool;
     var local_5: bool;
-    var local_6: bool;
 
     if (lo1_.x <= hi2_.x) {
-        local_2 = (lo2_.x <= hi1_.x);
+        local_1 = (lo2_.x <= hi1_.x);
+    } else {
+        local_1 = false;
+    }
+    let _e13 = local_1;
+    if _e13 {
+        local_2 = (lo1_.y <= hi2_.y);
     } else {
         local_2 = false;
     }
-    let _e13 = local_2;
-    if _e13 {
-        local_3 = (lo1_.y <= hi2_.y);
+    let _e20 = local_2;
+    if _e20 {
+        local_3 = (lo2_.y <= hi1_.y);
     } else {
         local_3 = false;
     }
-    let _e20 = local_3;
-    if _e20 {
-        local_4 = (lo2_.y <= hi1_.y);
+    let _e27 = local_3;
+    if _e27 {
+        local_4 = (lo1_.z <= hi2_.z);
     } else {
         local_4 = false;
     }
-    let _e27 = local_4;
-    if _e27 {
-        local_5 = (lo1_.z <= hi2_.z);
+    let _e34 = local_4;
+    if _e34 {
+        local_5 = (lo2_.z <= hi1_.z);
     } else {
         local_5 = false;
     }
-    let _e34 = local_5;
-    if _e34 {
-        local_6 = (lo2_.z <= hi1_.z);
-    } else {
-        local_6 = false;
-    }
-    let _e41 = local_6;
+    let _e41 = local_5;
     return _e41;
 }
 
@@ -269,14 +269,14 @@ fn smith_root(cos_: f32, alpha_1: f32) -> f32 {
 }
 
 fn smith_visibility(n_l_1: f32, n_v: f32, alpha_2: f32) -> f32 {
-    var local_7: bool;
+    var local_6: bool;
 
     if !((n_l_1 <= 0f)) {
-        local_7 = (n_v <= 0f);
+        local_6 = (n_v <= 0f);
     } else {
-        local_7 = true;
+        local_6 = true;
     }
-    let _e11 = local_7;
+    let _e11 = local_6;
     if _e11 {
         return 0f;
     }
@@ -312,16 +312,16 @@ fn half_cosine(v_1: vec3<f32>, l: vec3<f32>) -> f32 {
 }
 
 fn specular_brdf(base_2: vec3<f32>, metallic_2: f32, f0_d_2: vec3<f32>, f90_d_2: f32, alpha_3: f32, n: vec3<f32>, v_2: vec3<f32>, l_1: vec3<f32>) -> vec3<f32> {
-    var local_8: bool;
+    var local_7: bool;
 
     let n_l_2 = dot(n, l_1);
     let n_v_1 = dot(n, v_2);
     if !((n_l_2 <= 0f)) {
-        local_8 = (n_v_1 <= 0f);
+        local_7 = (n_v_1 <= 0f);
     } else {
-        local_8 = true;
+        local_7 = true;
     }
-    let _e18 = local_8;
+    let _e18 = local_7;
     if _e18 {
         return vec3<f32>(0f, 0f, 0f);
     }
@@ -356,21 +356,21 @@ fn specular_correction(base_5: vec3<f32>, metallic_5: f32, f0_d_4: vec3<f32>, f9
 }
 
 fn has_specular(metallic_6: f32, f0_d_5: vec3<f32>, f90_d_5: f32) -> bool {
+    var local_8: bool;
     var local_9: bool;
-    var local_10: bool;
 
     if !((metallic_6 > 0f)) {
-        local_9 = (f90_d_5 > 0f);
+        local_8 = (f90_d_5 > 0f);
+    } else {
+        local_8 = true;
+    }
+    let _e11 = local_8;
+    if !(_e11) {
+        local_9 = (max(max(f0_d_5.x, f0_d_5.y), f0_d_5.z) > 0f);
     } else {
         local_9 = true;
     }
-    let _e11 = local_9;
-    if !(_e11) {
-        local_10 = (max(max(f0_d_5.x, f0_d_5.y), f0_d_5.z) > 0f);
-    } else {
-        local_10 = true;
-    }
-    let _e23 = local_10;
+    let _e23 = local_9;
     return _e23;
 }
 
@@ -443,8 +443,8 @@ fn workgroup_bounds(li_1: u32, lo: vec3<f32>, hi: vec3<f32>) -> WorkgroupBox {
     return _e50;
 }
 
-fn workgroup_box(li_2: u32, p_1: vec3<f32>, has: bool) -> WorkgroupBox {
-    let _e9 = workgroup_bounds(li_2, select(vec3(340282350000000000000000000000000000000f), p_1, has), select(vec3(-340282350000000000000000000000000000000f), p_1, has));
+fn workgroup_box(li_2: u32, p: vec3<f32>, has: bool) -> WorkgroupBox {
+    let _e9 = workgroup_bounds(li_2, select(vec3(340282350000000000000000000000000000000f), p, has), select(vec3(-340282350000000000000000000000000000000f), p, has));
     return _e9;
 }
 
@@ -458,7 +458,7 @@ fn surface_at(texel: vec2<i32>) -> vec4<f32> {
 }
 
 fn gbuffer_at(i: u32) -> GbTexel {
-    var local_11: bool;
+    var local_10: bool;
 
     let _e3 = view.width;
     let _e8 = view.width;
@@ -468,11 +468,11 @@ fn gbuffer_at(i: u32) -> GbTexel {
     let n_4 = _e15.xyz;
     let len2_1 = dot(n_4, n_4);
     if (_e12.w > 0f) {
-        local_11 = (len2_1 > 0f);
+        local_10 = (len2_1 > 0f);
     } else {
-        local_11 = false;
+        local_10 = false;
     }
-    let valid_1 = local_11;
+    let valid_1 = local_10;
     let _e30 = view.eye;
     let v_7 = (_e12.xyz - _e30);
     let position = vec4<f32>(_e12.xyz, select(0f, 1f, valid_1));
@@ -492,14 +492,14 @@ fn glossy_at(i_1: u32, x: vec3<f32>) -> Glossy {
 }
 
 fn glossy_term(g_2: Glossy, l_4: GpuLight, n_3: vec3<f32>, v_5: vec3<f32>, t: f32) -> vec3<f32> {
-    var local_12: bool;
+    var local_11: bool;
 
     if !(!(g_2.on)) {
-        local_12 = (t <= 0f);
+        local_11 = (t <= 0f);
     } else {
-        local_12 = true;
+        local_11 = true;
     }
-    let _e13 = local_12;
+    let _e13 = local_11;
     if _e13 {
         return vec3(0f);
     }
@@ -517,6 +517,37 @@ fn near_cull_r2_of(slot_1: u32, near_r2_3: f32) -> f32 {
     let _e2 = near_r2_of(slot_1);
     let _e3 = vpl_near_cull_range2_(_e2, near_r2_3);
     return _e3;
+}
+
+fn load_receiver(li_3: u32, pix: u32, inside: bool) -> WorkgroupBox {
+    var p_1: vec4<f32> = vec4(0f);
+    var local_12: bool;
+
+    if inside {
+        let _e6 = gbuffer_at(pix);
+        p_1 = _e6.position;
+        nrm = _e6.normal.xyz;
+    }
+    let _e12 = p_1;
+    pos = _e12.xyz;
+    if inside {
+        let _e18 = p_1.w;
+        local_12 = (_e18 > 0f);
+    } else {
+        local_12 = false;
+    }
+    let _e22 = local_12;
+    valid = _e22;
+    let _e24 = valid;
+    if _e24 {
+        let _e27 = pos;
+        let _e28 = glossy_at(pix, _e27);
+        g_4 = _e28;
+    }
+    let _e30 = pos;
+    let _e32 = valid;
+    let _e33 = workgroup_box(li_3, _e30, _e32);
+    return _e33;
 }
 
 fn cluster_slot(c_1: u32, k: u32) -> u32 {
@@ -581,11 +612,11 @@ fn shade_list(count: u32) {
     return;
 }
 
-fn cull_tile(li_3: u32, lo_1: vec3<f32>, hi_1: vec3<f32>, grid: vec4<u32>, clusters_at: u32, groups_at: u32) {
+fn cull_tile(li_4: u32, lo_1: vec3<f32>, hi_1: vec3<f32>, grid: vec4<u32>, clusters_at: u32, groups_at: u32) {
     var g_3: u32 = 0u;
     var h: u32;
 
-    if (li_3 == 0u) {
+    if (li_4 == 0u) {
         atomicStore((&list_count), 0u);
     }
     let _e14 = group_count(grid.x, grid.y, grid.z, grid.w);
@@ -607,16 +638,16 @@ fn cull_tile(li_3: u32, lo_1: vec3<f32>, hi_1: vec3<f32>, grid: vec4<u32>, clust
             let first = (clusters_at + _e33);
             let _e35 = g_3;
             let _e40 = group_clusters(_e35, grid.x, grid.y, grid.z, grid.w);
-            if (li_3 == 0u) {
+            if (li_4 == 0u) {
                 atomicStore((&hit_count), 0u);
             }
             workgroupBarrier();
-            if (li_3 < _e40) {
-                let cb = boxes[(first + li_3)];
+            if (li_4 < _e40) {
+                let cb = boxes[(first + li_4)];
                 let _e52 = box_overlaps_box(cb.lo, cb.hi, lo_1, hi_1);
                 if _e52 {
                     let _e56 = atomicAdd((&hit_count), 1u);
-                    cluster_hits[_e56] = (first + li_3);
+                    cluster_hits[_e56] = (first + li_4);
                 }
             }
             let _e60 = workgroupUniformLoad((&hit_count));
@@ -632,14 +663,14 @@ fn cull_tile(li_3: u32, lo_1: vec3<f32>, hi_1: vec3<f32>, grid: vec4<u32>, clust
                     if ((_e66 + CLUSTER) > MAX_TILE_LIGHTS) {
                         shade_list(_e66);
                         workgroupBarrier();
-                        if (li_3 == 0u) {
+                        if (li_4 == 0u) {
                             atomicStore((&list_count), 0u);
                         }
                         workgroupBarrier();
                     }
                     let _e76 = h;
                     let _e78 = cluster_hits[_e76];
-                    let _e79 = cluster_slot(_e78, li_3);
+                    let _e79 = cluster_slot(_e78, li_4);
                     let l_6 = lights[_e79];
                     if any((l_6.intensity != vec3(0f))) {
                         let _e89 = cull_r2_of(_e79);
@@ -671,8 +702,6 @@ fn cull_tile(li_3: u32, lo_1: vec3<f32>, hi_1: vec3<f32>, grid: vec4<u32>, clust
 @compute @workgroup_size(8, 8, 1) 
 fn main(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id) lid: vec3<u32>, @builtin(local_invocation_index) li: u32) {
     var local: bool;
-    var p: vec4<f32> = vec4(0f);
-    var local_1: bool;
 
     let px = ((wg.x * TILE) + lid.x);
     let py = ((wg.y * TILE) + lid.y);
@@ -683,49 +712,26 @@ fn main(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id) lid:
     } else {
         local = false;
     }
-    let inside = local;
+    let inside_1 = local;
     let _e27 = params.width;
-    let pix = ((py * _e27) + px);
-    if inside {
-        let _e33 = gbuffer_at(pix);
-        p = _e33.position;
-        nrm = _e33.normal.xyz;
+    let pix_1 = ((py * _e27) + px);
+    let _e30 = load_receiver(li, pix_1, inside_1);
+    let _e31 = box_is_empty(_e30);
+    if !(_e31) {
+        let _e37 = params.near_grid;
+        let _e40 = params.near_clusters_at;
+        let _e43 = params.near_groups_at;
+        cull_tile(li, _e30.lo, _e30.hi, _e37, _e40, _e43);
     }
-    let _e39 = p;
-    pos = _e39.xyz;
-    if inside {
-        let _e45 = p.w;
-        local_1 = (_e45 > 0f);
-    } else {
-        local_1 = false;
-    }
-    let _e49 = local_1;
-    valid = _e49;
-    let _e51 = valid;
-    if _e51 {
-        let _e54 = pos;
-        let _e55 = glossy_at(pix, _e54);
-        g_4 = _e55;
-    }
-    let _e57 = pos;
-    let _e59 = valid;
-    let _e60 = workgroup_box(li, _e57, _e59);
-    let _e61 = box_is_empty(_e60);
-    if !(_e61) {
-        let _e67 = params.near_grid;
-        let _e70 = params.near_clusters_at;
-        let _e73 = params.near_groups_at;
-        cull_tile(li, _e60.lo, _e60.hi, _e67, _e70, _e73);
-    }
-    let _e75 = valid;
-    if _e75 {
-        let old = irradiance[pix];
-        let _e83 = e;
-        let _e87 = kept;
-        irradiance[pix] = vec4<f32>((old.xyz + _e83), (old.w + f32(_e87)));
-        let _e95 = specular[pix];
-        let _e98 = s;
-        specular[pix] = vec4<f32>((_e95.xyz + _e98), 0f);
+    let _e45 = valid;
+    if _e45 {
+        let old = irradiance[pix_1];
+        let _e53 = e;
+        let _e57 = kept;
+        irradiance[pix_1] = vec4<f32>((old.xyz + _e53), (old.w + f32(_e57)));
+        let _e65 = specular[pix_1];
+        let _e68 = s;
+        specular[pix_1] = vec4<f32>((_e65.xyz + _e68), 0f);
         return;
     } else {
         return;

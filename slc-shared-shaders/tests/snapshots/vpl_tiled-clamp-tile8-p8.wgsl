@@ -174,42 +174,42 @@ fn group_clusters(g_1: u32, bw_3: u32, bh_2: u32, gw_3: u32, gh_2: u32) -> u32 {
 }
 
 fn box_overlaps_box(lo1_: vec3<f32>, hi1_: vec3<f32>, lo2_: vec3<f32>, hi2_: vec3<f32>) -> bool {
+    var local_1: bool;
     var local_2: bool;
     var local_3: bool;
     var local_4: bool;
     var local_5: bool;
-    var local_6: bool;
 
     if (lo1_.x <= hi2_.x) {
-        local_2 = (lo2_.x <= hi1_.x);
+        local_1 = (lo2_.x <= hi1_.x);
+    } else {
+        local_1 = false;
+    }
+    let _e13 = local_1;
+    if _e13 {
+        local_2 = (lo1_.y <= hi2_.y);
     } else {
         local_2 = false;
     }
-    let _e13 = local_2;
-    if _e13 {
-        local_3 = (lo1_.y <= hi2_.y);
+    let _e20 = local_2;
+    if _e20 {
+        local_3 = (lo2_.y <= hi1_.y);
     } else {
         local_3 = false;
     }
-    let _e20 = local_3;
-    if _e20 {
-        local_4 = (lo2_.y <= hi1_.y);
+    let _e27 = local_3;
+    if _e27 {
+        local_4 = (lo1_.z <= hi2_.z);
     } else {
         local_4 = false;
     }
-    let _e27 = local_4;
-    if _e27 {
-        local_5 = (lo1_.z <= hi2_.z);
+    let _e34 = local_4;
+    if _e34 {
+        local_5 = (lo2_.z <= hi1_.z);
     } else {
         local_5 = false;
     }
-    let _e34 = local_5;
-    if _e34 {
-        local_6 = (lo2_.z <= hi1_.z);
-    } else {
-        local_6 = false;
-    }
-    let _e41 = local_6;
+    let _e41 = local_5;
     return _e41;
 }
 
@@ -281,8 +281,8 @@ fn workgroup_bounds(li_1: u32, lo: vec3<f32>, hi: vec3<f32>) -> WorkgroupBox {
     return _e50;
 }
 
-fn workgroup_box(li_2: u32, p_1: vec3<f32>, has: bool) -> WorkgroupBox {
-    let _e9 = workgroup_bounds(li_2, select(vec3(340282350000000000000000000000000000000f), p_1, has), select(vec3(-340282350000000000000000000000000000000f), p_1, has));
+fn workgroup_box(li_2: u32, p: vec3<f32>, has: bool) -> WorkgroupBox {
+    let _e9 = workgroup_bounds(li_2, select(vec3(340282350000000000000000000000000000000f), p, has), select(vec3(-340282350000000000000000000000000000000f), p, has));
     return _e9;
 }
 
@@ -296,7 +296,7 @@ fn surface_at(texel: vec2<i32>) -> vec4<f32> {
 }
 
 fn gbuffer_at(i: u32) -> GbTexel {
-    var local_7: bool;
+    var local_6: bool;
 
     let _e3 = view.width;
     let _e8 = view.width;
@@ -306,16 +306,41 @@ fn gbuffer_at(i: u32) -> GbTexel {
     let n = _e15.xyz;
     let len2_ = dot(n, n);
     if (_e12.w > 0f) {
-        local_7 = (len2_ > 0f);
+        local_6 = (len2_ > 0f);
     } else {
-        local_7 = false;
+        local_6 = false;
     }
-    let valid_1 = local_7;
+    let valid_1 = local_6;
     let _e30 = view.eye;
     let v_2 = (_e12.xyz - _e30);
     let position = vec4<f32>(_e12.xyz, select(0f, 1f, valid_1));
     let normal = select(vec4<f32>(0f, 0f, 0f, 1000000000000000000000000000000f), vec4<f32>((n / vec3(sqrt(len2_))), sqrt(dot(v_2, v_2))), valid_1);
     return GbTexel(position, normal);
+}
+
+fn load_receiver(li_3: u32, pix: u32, inside: bool) -> WorkgroupBox {
+    var p_1: vec4<f32> = vec4(0f);
+    var local_7: bool;
+
+    if inside {
+        let _e6 = gbuffer_at(pix);
+        p_1 = _e6.position;
+        nrm = _e6.normal.xyz;
+    }
+    let _e12 = p_1;
+    pos = _e12.xyz;
+    if inside {
+        let _e18 = p_1.w;
+        local_7 = (_e18 > 0f);
+    } else {
+        local_7 = false;
+    }
+    let _e22 = local_7;
+    valid = _e22;
+    let _e24 = pos;
+    let _e26 = valid;
+    let _e27 = workgroup_box(li_3, _e24, _e26);
+    return _e27;
 }
 
 fn shade_light(j: u32) {
@@ -376,11 +401,11 @@ fn shade_list(count: u32) {
     }
 }
 
-fn cull_tile(li_3: u32, lo_1: vec3<f32>, hi_1: vec3<f32>, grid: vec4<u32>, clusters_at: u32, groups_at: u32) {
+fn cull_tile(li_4: u32, lo_1: vec3<f32>, hi_1: vec3<f32>, grid: vec4<u32>, clusters_at: u32, groups_at: u32) {
     var g_2: u32 = 0u;
     var h: u32;
 
-    if (li_3 == 0u) {
+    if (li_4 == 0u) {
         atomicStore((&list_count), 0u);
     }
     let _e14 = group_count(grid.x, grid.y, grid.z, grid.w);
@@ -402,16 +427,16 @@ fn cull_tile(li_3: u32, lo_1: vec3<f32>, hi_1: vec3<f32>, grid: vec4<u32>, clust
             let first = (clusters_at + _e33);
             let _e35 = g_2;
             let _e40 = group_clusters(_e35, grid.x, grid.y, grid.z, grid.w);
-            if (li_3 == 0u) {
+            if (li_4 == 0u) {
                 atomicStore((&hit_count), 0u);
             }
             workgroupBarrier();
-            if (li_3 < _e40) {
-                let cb = boxes[(first + li_3)];
+            if (li_4 < _e40) {
+                let cb = boxes[(first + li_4)];
                 let _e52 = box_overlaps_box(cb.lo, cb.hi, lo_1, hi_1);
                 if _e52 {
                     let _e56 = atomicAdd((&hit_count), 1u);
-                    cluster_hits[_e56] = (first + li_3);
+                    cluster_hits[_e56] = (first + li_4);
                 }
             }
             let _e60 = workgroupUniformLoad((&hit_count));
@@ -427,14 +452,14 @@ fn cull_tile(li_3: u32, lo_1: vec3<f32>, hi_1: vec3<f32>, grid: vec4<u32>, clust
                     if ((_e66 + CLUSTER) > MAX_TILE_LIGHTS) {
                         shade_list(_e66);
                         workgroupBarrier();
-                        if (li_3 == 0u) {
+                        if (li_4 == 0u) {
                             atomicStore((&list_count), 0u);
                         }
                         workgroupBarrier();
                     }
                     let _e76 = h;
                     let _e78 = cluster_hits[_e76];
-                    let _e79 = cluster_slot(_e78, li_3);
+                    let _e79 = cluster_slot(_e78, li_4);
                     let l_1 = lights[_e79];
                     if any((l_1.intensity != vec3(0f))) {
                         let _e89 = cull_r2_of(_e79);
@@ -466,8 +491,6 @@ fn cull_tile(li_3: u32, lo_1: vec3<f32>, hi_1: vec3<f32>, grid: vec4<u32>, clust
 @compute @workgroup_size(8, 8, 1) 
 fn main(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id) lid: vec3<u32>, @builtin(local_invocation_index) li: u32) {
     var local: bool;
-    var p: vec4<f32> = vec4(0f);
-    var local_1: bool;
 
     let sub = wg.z;
     let px = ((sub % P) + (((wg.x * TILE) + lid.x) * P));
@@ -479,41 +502,24 @@ fn main(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id) lid:
     } else {
         local = false;
     }
-    let inside = local;
+    let inside_1 = local;
     let _e38 = params.width;
-    let pix = ((py * _e38) + px);
-    if inside {
-        let _e44 = gbuffer_at(pix);
-        p = _e44.position;
-        nrm = _e44.normal.xyz;
-    }
-    let _e50 = p;
-    pos = _e50.xyz;
-    if inside {
-        let _e56 = p.w;
-        local_1 = (_e56 > 0f);
-    } else {
-        local_1 = false;
-    }
-    let _e60 = local_1;
-    valid = _e60;
-    let _e62 = pos;
-    let _e64 = valid;
-    let _e65 = workgroup_box(li, _e62, _e64);
-    let _e68 = params.subset_shift;
-    let _e70 = shifted_subset(sub, _e68, P);
-    let _e71 = box_is_empty(_e65);
-    if !(_e71) {
+    let pix_1 = ((py * _e38) + px);
+    let _e41 = load_receiver(li, pix_1, inside_1);
+    let _e44 = params.subset_shift;
+    let _e46 = shifted_subset(sub, _e44, P);
+    let _e47 = box_is_empty(_e41);
+    if !(_e47) {
         let grid_1 = params.far_grid;
-        let _e80 = params.lights_per_subset;
-        let _e86 = params.far_groups_at;
-        let _e91 = group_count(grid_1.x, grid_1.y, grid_1.z, grid_1.w);
-        cull_tile(li, _e65.lo, _e65.hi, grid_1, (_e70 * (_e80 / CLUSTER)), (_e86 + (_e70 * _e91)));
+        let _e56 = params.lights_per_subset;
+        let _e62 = params.far_groups_at;
+        let _e67 = group_count(grid_1.x, grid_1.y, grid_1.z, grid_1.w);
+        cull_tile(li, _e41.lo, _e41.hi, grid_1, (_e46 * (_e56 / CLUSTER)), (_e62 + (_e46 * _e67)));
     }
-    if inside {
-        let _e97 = e;
-        let _e99 = kept;
-        irradiance[pix] = vec4<f32>(_e97, f32(_e99));
+    if inside_1 {
+        let _e73 = e;
+        let _e75 = kept;
+        irradiance[pix_1] = vec4<f32>(_e73, f32(_e75));
         return;
     } else {
         return;

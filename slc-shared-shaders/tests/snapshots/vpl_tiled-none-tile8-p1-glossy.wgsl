@@ -160,14 +160,14 @@ fn smith_root(cos_: f32, alpha_1: f32) -> f32 {
 }
 
 fn smith_visibility(n_l_1: f32, n_v: f32, alpha_2: f32) -> f32 {
-    var local_2: bool;
+    var local_1: bool;
 
     if !((n_l_1 <= 0f)) {
-        local_2 = (n_v <= 0f);
+        local_1 = (n_v <= 0f);
     } else {
-        local_2 = true;
+        local_1 = true;
     }
-    let _e11 = local_2;
+    let _e11 = local_1;
     if _e11 {
         return 0f;
     }
@@ -203,16 +203,16 @@ fn half_cosine(v_1: vec3<f32>, l: vec3<f32>) -> f32 {
 }
 
 fn specular_brdf(base_2: vec3<f32>, metallic_2: f32, f0_d_2: vec3<f32>, f90_d_2: f32, alpha_3: f32, n: vec3<f32>, v_2: vec3<f32>, l_1: vec3<f32>) -> vec3<f32> {
-    var local_3: bool;
+    var local_2: bool;
 
     let n_l_2 = dot(n, l_1);
     let n_v_1 = dot(n, v_2);
     if !((n_l_2 <= 0f)) {
-        local_3 = (n_v_1 <= 0f);
+        local_2 = (n_v_1 <= 0f);
     } else {
-        local_3 = true;
+        local_2 = true;
     }
-    let _e18 = local_3;
+    let _e18 = local_2;
     if _e18 {
         return vec3<f32>(0f, 0f, 0f);
     }
@@ -247,21 +247,21 @@ fn specular_correction(base_5: vec3<f32>, metallic_5: f32, f0_d_4: vec3<f32>, f9
 }
 
 fn has_specular(metallic_6: f32, f0_d_5: vec3<f32>, f90_d_5: f32) -> bool {
+    var local_3: bool;
     var local_4: bool;
-    var local_5: bool;
 
     if !((metallic_6 > 0f)) {
-        local_4 = (f90_d_5 > 0f);
+        local_3 = (f90_d_5 > 0f);
+    } else {
+        local_3 = true;
+    }
+    let _e11 = local_3;
+    if !(_e11) {
+        local_4 = (max(max(f0_d_5.x, f0_d_5.y), f0_d_5.z) > 0f);
     } else {
         local_4 = true;
     }
-    let _e11 = local_4;
-    if !(_e11) {
-        local_5 = (max(max(f0_d_5.x, f0_d_5.y), f0_d_5.z) > 0f);
-    } else {
-        local_5 = true;
-    }
-    let _e23 = local_5;
+    let _e23 = local_4;
     return _e23;
 }
 
@@ -322,8 +322,8 @@ fn workgroup_bounds(li_1: u32, lo: vec3<f32>, hi: vec3<f32>) -> WorkgroupBox {
     return _e50;
 }
 
-fn workgroup_box(li_2: u32, p_1: vec3<f32>, has: bool) -> WorkgroupBox {
-    let _e9 = workgroup_bounds(li_2, select(vec3(340282350000000000000000000000000000000f), p_1, has), select(vec3(-340282350000000000000000000000000000000f), p_1, has));
+fn workgroup_box(li_2: u32, p: vec3<f32>, has: bool) -> WorkgroupBox {
+    let _e9 = workgroup_bounds(li_2, select(vec3(340282350000000000000000000000000000000f), p, has), select(vec3(-340282350000000000000000000000000000000f), p, has));
     return _e9;
 }
 
@@ -333,7 +333,7 @@ fn surface_at(texel: vec2<i32>) -> vec4<f32> {
 }
 
 fn gbuffer_at(i: u32) -> GbTexel {
-    var local_6: bool;
+    var local_5: bool;
 
     let _e3 = view.width;
     let _e8 = view.width;
@@ -343,11 +343,11 @@ fn gbuffer_at(i: u32) -> GbTexel {
     let n_4 = _e15.xyz;
     let len2_1 = dot(n_4, n_4);
     if (_e12.w > 0f) {
-        local_6 = (len2_1 > 0f);
+        local_5 = (len2_1 > 0f);
     } else {
-        local_6 = false;
+        local_5 = false;
     }
-    let valid_1 = local_6;
+    let valid_1 = local_5;
     let _e30 = view.eye;
     let v_6 = (_e12.xyz - _e30);
     let position = vec4<f32>(_e12.xyz, select(0f, 1f, valid_1));
@@ -367,19 +367,50 @@ fn glossy_at(i_1: u32, x: vec3<f32>) -> Glossy {
 }
 
 fn glossy_term(g: Glossy, l_4: GpuLight, n_3: vec3<f32>, v_5: vec3<f32>, t: f32) -> vec3<f32> {
-    var local_7: bool;
+    var local_6: bool;
 
     if !(!(g.on)) {
-        local_7 = (t <= 0f);
+        local_6 = (t <= 0f);
     } else {
-        local_7 = true;
+        local_6 = true;
     }
-    let _e13 = local_7;
+    let _e13 = local_6;
     if _e13 {
         return vec3(0f);
     }
     let _e30 = specular_correction(g.m.albedo, g.m.metallic, g.m.f0_, g.m.f90_, g.m.alpha, n_3, g.v, normalize(-(v_5)));
     return ((l_4.intensity * _e30) * t);
+}
+
+fn load_receiver(li_3: u32, pix: u32, inside: bool) -> WorkgroupBox {
+    var p_1: vec4<f32> = vec4(0f);
+    var local_7: bool;
+
+    if inside {
+        let _e6 = gbuffer_at(pix);
+        p_1 = _e6.position;
+        nrm = _e6.normal.xyz;
+    }
+    let _e12 = p_1;
+    pos = _e12.xyz;
+    if inside {
+        let _e18 = p_1.w;
+        local_7 = (_e18 > 0f);
+    } else {
+        local_7 = false;
+    }
+    let _e22 = local_7;
+    valid = _e22;
+    let _e24 = valid;
+    if _e24 {
+        let _e27 = pos;
+        let _e28 = glossy_at(pix, _e27);
+        g_1 = _e28;
+    }
+    let _e30 = pos;
+    let _e32 = valid;
+    let _e33 = workgroup_box(li_3, _e30, _e32);
+    return _e33;
 }
 
 fn shade_light(j_1: u32) {
@@ -411,8 +442,6 @@ fn shade_light(j_1: u32) {
 @compute @workgroup_size(8, 8, 1) 
 fn main(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id) lid: vec3<u32>, @builtin(local_invocation_index) li: u32) {
     var local: bool;
-    var p: vec4<f32> = vec4(0f);
-    var local_1: bool;
     var j: u32;
 
     let sub = wg.z;
@@ -425,67 +454,44 @@ fn main(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id) lid:
     } else {
         local = false;
     }
-    let inside = local;
+    let inside_1 = local;
     let _e38 = params.width;
-    let pix = ((py * _e38) + px);
-    if inside {
-        let _e44 = gbuffer_at(pix);
-        p = _e44.position;
-        nrm = _e44.normal.xyz;
-    }
-    let _e50 = p;
-    pos = _e50.xyz;
-    if inside {
-        let _e56 = p.w;
-        local_1 = (_e56 > 0f);
-    } else {
-        local_1 = false;
-    }
-    let _e60 = local_1;
-    valid = _e60;
-    let _e62 = valid;
-    if _e62 {
-        let _e65 = pos;
-        let _e66 = glossy_at(pix, _e65);
-        g_1 = _e66;
-    }
-    let _e68 = pos;
-    let _e70 = valid;
-    let _e71 = workgroup_box(li, _e68, _e70);
-    let _e74 = params.subset_shift;
-    let _e76 = shifted_subset(sub, _e74, P);
-    let _e78 = valid;
-    if _e78 {
-        let _e81 = params.lights_per_subset;
-        let base_6 = (_e76 * _e81);
+    let pix_1 = ((py * _e38) + px);
+    let _e41 = load_receiver(li, pix_1, inside_1);
+    let _e44 = params.subset_shift;
+    let _e46 = shifted_subset(sub, _e44, P);
+    let _e48 = valid;
+    if _e48 {
+        let _e51 = params.lights_per_subset;
+        let base_6 = (_e46 * _e51);
         j = base_6;
         loop {
-            let _e84 = j;
-            let _e87 = params.lights_per_subset;
-            if (_e84 < (base_6 + _e87)) {
+            let _e54 = j;
+            let _e57 = params.lights_per_subset;
+            if (_e54 < (base_6 + _e57)) {
             } else {
                 break;
             }
             {
-                let _e91 = j;
-                let _e94 = lights[_e91].intensity;
-                if any((_e94 != vec3(0f))) {
-                    let _e99 = j;
-                    shade_light(_e99);
+                let _e61 = j;
+                let _e64 = lights[_e61].intensity;
+                if any((_e64 != vec3(0f))) {
+                    let _e69 = j;
+                    shade_light(_e69);
                 }
             }
             continuing {
-                let _e101 = j;
-                j = (_e101 + 1u);
+                let _e71 = j;
+                j = (_e71 + 1u);
             }
         }
     }
-    if inside {
-        let _e106 = e;
-        let _e108 = kept;
-        irradiance[pix] = vec4<f32>(_e106, f32(_e108));
-        let _e114 = s;
-        specular[pix] = vec4<f32>(_e114, 0f);
+    if inside_1 {
+        let _e76 = e;
+        let _e78 = kept;
+        irradiance[pix_1] = vec4<f32>(_e76, f32(_e78));
+        let _e84 = s;
+        specular[pix_1] = vec4<f32>(_e84, 0f);
         return;
     } else {
         return;

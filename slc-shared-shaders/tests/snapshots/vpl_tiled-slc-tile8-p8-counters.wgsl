@@ -194,42 +194,42 @@ fn group_clusters(g_1: u32, bw_3: u32, bh_2: u32, gw_3: u32, gh_2: u32) -> u32 {
 }
 
 fn box_overlaps_box(lo1_: vec3<f32>, hi1_: vec3<f32>, lo2_: vec3<f32>, hi2_: vec3<f32>) -> bool {
+    var local_1: bool;
     var local_2: bool;
     var local_3: bool;
     var local_4: bool;
     var local_5: bool;
-    var local_6: bool;
 
     if (lo1_.x <= hi2_.x) {
-        local_2 = (lo2_.x <= hi1_.x);
+        local_1 = (lo2_.x <= hi1_.x);
+    } else {
+        local_1 = false;
+    }
+    let _e13 = local_1;
+    if _e13 {
+        local_2 = (lo1_.y <= hi2_.y);
     } else {
         local_2 = false;
     }
-    let _e13 = local_2;
-    if _e13 {
-        local_3 = (lo1_.y <= hi2_.y);
+    let _e20 = local_2;
+    if _e20 {
+        local_3 = (lo2_.y <= hi1_.y);
     } else {
         local_3 = false;
     }
-    let _e20 = local_3;
-    if _e20 {
-        local_4 = (lo2_.y <= hi1_.y);
+    let _e27 = local_3;
+    if _e27 {
+        local_4 = (lo1_.z <= hi2_.z);
     } else {
         local_4 = false;
     }
-    let _e27 = local_4;
-    if _e27 {
-        local_5 = (lo1_.z <= hi2_.z);
+    let _e34 = local_4;
+    if _e34 {
+        local_5 = (lo2_.z <= hi1_.z);
     } else {
         local_5 = false;
     }
-    let _e34 = local_5;
-    if _e34 {
-        local_6 = (lo2_.z <= hi1_.z);
-    } else {
-        local_6 = false;
-    }
-    let _e41 = local_6;
+    let _e41 = local_5;
     return _e41;
 }
 
@@ -302,8 +302,8 @@ fn workgroup_bounds(li_1: u32, lo: vec3<f32>, hi: vec3<f32>) -> WorkgroupBox {
     return _e50;
 }
 
-fn workgroup_box(li_2: u32, p_1: vec3<f32>, has: bool) -> WorkgroupBox {
-    let _e9 = workgroup_bounds(li_2, select(vec3(340282350000000000000000000000000000000f), p_1, has), select(vec3(-340282350000000000000000000000000000000f), p_1, has));
+fn workgroup_box(li_2: u32, p: vec3<f32>, has: bool) -> WorkgroupBox {
+    let _e9 = workgroup_bounds(li_2, select(vec3(340282350000000000000000000000000000000f), p, has), select(vec3(-340282350000000000000000000000000000000f), p, has));
     return _e9;
 }
 
@@ -317,7 +317,7 @@ fn surface_at(texel: vec2<i32>) -> vec4<f32> {
 }
 
 fn gbuffer_at(i: u32) -> GbTexel {
-    var local_7: bool;
+    var local_6: bool;
 
     let _e3 = view.width;
     let _e8 = view.width;
@@ -327,11 +327,11 @@ fn gbuffer_at(i: u32) -> GbTexel {
     let n_2 = _e15.xyz;
     let len2_ = dot(n_2, n_2);
     if (_e12.w > 0f) {
-        local_7 = (len2_ > 0f);
+        local_6 = (len2_ > 0f);
     } else {
-        local_7 = false;
+        local_6 = false;
     }
-    let valid_1 = local_7;
+    let valid_1 = local_6;
     let _e30 = view.eye;
     let v_2 = (_e12.xyz - _e30);
     let position = vec4<f32>(_e12.xyz, select(0f, 1f, valid_1));
@@ -380,6 +380,46 @@ fn counts_end(li_5: u32) {
     } else {
         return;
     }
+}
+
+fn load_receiver(li_6: u32, pix: u32, inside: bool) -> WorkgroupBox {
+    var p_1: vec4<f32> = vec4(0f);
+    var local_7: bool;
+
+    if inside {
+        let _e6 = gbuffer_at(pix);
+        p_1 = _e6.position;
+        nrm = _e6.normal.xyz;
+    }
+    let _e12 = p_1;
+    pos = _e12.xyz;
+    if inside {
+        let _e18 = p_1.w;
+        local_7 = (_e18 > 0f);
+    } else {
+        local_7 = false;
+    }
+    let _e22 = local_7;
+    valid = _e22;
+    counts_begin(li_6);
+    let _e24 = valid;
+    if _e24 {
+        count_one(COUNT_PIXELS);
+    }
+    let _e27 = pos;
+    let _e29 = valid;
+    let _e30 = workgroup_box(li_6, _e27, _e29);
+    return _e30;
+}
+
+fn count_receiver(li_7: u32) {
+    let _e2 = valid;
+    if _e2 {
+        let _e5 = kept;
+        count_add(COUNT_KEPT, _e5);
+    }
+    counts_end(li_7);
+    return;
 }
 
 fn shade_light(j: u32) {
@@ -442,15 +482,15 @@ fn shade_list(count: u32) {
     }
 }
 
-fn cull_tile(li_6: u32, lo_1: vec3<f32>, hi_1: vec3<f32>, grid: vec4<u32>, clusters_at: u32, groups_at: u32) {
+fn cull_tile(li_8: u32, lo_1: vec3<f32>, hi_1: vec3<f32>, grid: vec4<u32>, clusters_at: u32, groups_at: u32) {
     var g_2: u32 = 0u;
     var h: u32;
 
-    if (li_6 == 0u) {
+    if (li_8 == 0u) {
         atomicStore((&list_count), 0u);
     }
     let _e14 = group_count(grid.x, grid.y, grid.z, grid.w);
-    count_tests(li_6, COUNT_GROUP_TESTS, _e14);
+    count_tests(li_8, COUNT_GROUP_TESTS, _e14);
     loop {
         let _e18 = g_2;
         if (_e18 < _e14) {
@@ -469,17 +509,17 @@ fn cull_tile(li_6: u32, lo_1: vec3<f32>, hi_1: vec3<f32>, grid: vec4<u32>, clust
             let first = (clusters_at + _e34);
             let _e36 = g_2;
             let _e41 = group_clusters(_e36, grid.x, grid.y, grid.z, grid.w);
-            count_tests(li_6, COUNT_CLUSTER_TESTS, _e41);
-            if (li_6 == 0u) {
+            count_tests(li_8, COUNT_CLUSTER_TESTS, _e41);
+            if (li_8 == 0u) {
                 atomicStore((&hit_count), 0u);
             }
             workgroupBarrier();
-            if (li_6 < _e41) {
-                let cb = boxes[(first + li_6)];
+            if (li_8 < _e41) {
+                let cb = boxes[(first + li_8)];
                 let _e54 = box_overlaps_box(cb.lo, cb.hi, lo_1, hi_1);
                 if _e54 {
                     let _e58 = atomicAdd((&hit_count), 1u);
-                    cluster_hits[_e58] = (first + li_6);
+                    cluster_hits[_e58] = (first + li_8);
                 }
             }
             let _e62 = workgroupUniformLoad((&hit_count));
@@ -495,14 +535,14 @@ fn cull_tile(li_6: u32, lo_1: vec3<f32>, hi_1: vec3<f32>, grid: vec4<u32>, clust
                     if ((_e68 + CLUSTER) > MAX_TILE_LIGHTS) {
                         shade_list(_e68);
                         workgroupBarrier();
-                        if (li_6 == 0u) {
+                        if (li_8 == 0u) {
                             atomicStore((&list_count), 0u);
                         }
                         workgroupBarrier();
                     }
                     let _e78 = h;
                     let _e80 = cluster_hits[_e78];
-                    let _e81 = cluster_slot(_e80, li_6);
+                    let _e81 = cluster_slot(_e80, li_8);
                     let l_1 = lights[_e81];
                     if any((l_1.intensity != vec3(0f))) {
                         count_one(COUNT_SPHERE_TESTS);
@@ -535,8 +575,6 @@ fn cull_tile(li_6: u32, lo_1: vec3<f32>, hi_1: vec3<f32>, grid: vec4<u32>, clust
 @compute @workgroup_size(8, 8, 1) 
 fn main(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id) lid: vec3<u32>, @builtin(local_invocation_index) li: u32) {
     var local: bool;
-    var p: vec4<f32> = vec4(0f);
-    var local_1: bool;
 
     let sub = wg.z;
     let px = ((sub % P) + (((wg.x * TILE) + lid.x) * P));
@@ -548,53 +586,26 @@ fn main(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id) lid:
     } else {
         local = false;
     }
-    let inside = local;
+    let inside_1 = local;
     let _e38 = params.width;
-    let pix = ((py * _e38) + px);
-    if inside {
-        let _e44 = gbuffer_at(pix);
-        p = _e44.position;
-        nrm = _e44.normal.xyz;
-    }
-    let _e50 = p;
-    pos = _e50.xyz;
-    if inside {
-        let _e56 = p.w;
-        local_1 = (_e56 > 0f);
-    } else {
-        local_1 = false;
-    }
-    let _e60 = local_1;
-    valid = _e60;
-    counts_begin(li);
-    let _e62 = valid;
-    if _e62 {
-        count_one(COUNT_PIXELS);
-    }
-    let _e65 = pos;
-    let _e67 = valid;
-    let _e68 = workgroup_box(li, _e65, _e67);
-    let _e71 = params.subset_shift;
-    let _e73 = shifted_subset(sub, _e71, P);
-    let _e74 = box_is_empty(_e68);
-    if !(_e74) {
+    let pix_1 = ((py * _e38) + px);
+    let _e41 = load_receiver(li, pix_1, inside_1);
+    let _e44 = params.subset_shift;
+    let _e46 = shifted_subset(sub, _e44, P);
+    let _e47 = box_is_empty(_e41);
+    if !(_e47) {
         count_tests(li, COUNT_TILES, 1u);
         let grid_1 = params.far_grid;
-        let _e85 = params.lights_per_subset;
-        let _e91 = params.far_groups_at;
-        let _e96 = group_count(grid_1.x, grid_1.y, grid_1.z, grid_1.w);
-        cull_tile(li, _e68.lo, _e68.hi, grid_1, (_e73 * (_e85 / CLUSTER)), (_e91 + (_e73 * _e96)));
+        let _e58 = params.lights_per_subset;
+        let _e64 = params.far_groups_at;
+        let _e69 = group_count(grid_1.x, grid_1.y, grid_1.z, grid_1.w);
+        cull_tile(li, _e41.lo, _e41.hi, grid_1, (_e46 * (_e58 / CLUSTER)), (_e64 + (_e46 * _e69)));
     }
-    let _e100 = valid;
-    if _e100 {
-        let _e103 = kept;
-        count_add(COUNT_KEPT, _e103);
-    }
-    counts_end(li);
-    if inside {
-        let _e107 = e;
-        let _e109 = kept;
-        irradiance[pix] = vec4<f32>(_e107, f32(_e109));
+    count_receiver(li);
+    if inside_1 {
+        let _e75 = e;
+        let _e77 = kept;
+        irradiance[pix_1] = vec4<f32>(_e75, f32(_e77));
         return;
     } else {
         return;

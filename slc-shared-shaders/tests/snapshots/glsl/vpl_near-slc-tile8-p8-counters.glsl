@@ -212,41 +212,41 @@ uint group_clusters(uint g_1, uint bw_3, uint bh_2, uint gw_3, uint gh_2) {
 }
 
 bool box_overlaps_box(vec3 lo1_, vec3 hi1_, vec3 lo2_, vec3 hi2_) {
+    bool local_1 = false;
     bool local_2 = false;
     bool local_3 = false;
     bool local_4 = false;
     bool local_5 = false;
-    bool local_6 = false;
     if ((lo1_.x <= hi2_.x)) {
-        local_2 = (lo2_.x <= hi1_.x);
+        local_1 = (lo2_.x <= hi1_.x);
+    } else {
+        local_1 = false;
+    }
+    bool _e13 = local_1;
+    if (_e13) {
+        local_2 = (lo1_.y <= hi2_.y);
     } else {
         local_2 = false;
     }
-    bool _e13 = local_2;
-    if (_e13) {
-        local_3 = (lo1_.y <= hi2_.y);
+    bool _e20 = local_2;
+    if (_e20) {
+        local_3 = (lo2_.y <= hi1_.y);
     } else {
         local_3 = false;
     }
-    bool _e20 = local_3;
-    if (_e20) {
-        local_4 = (lo2_.y <= hi1_.y);
+    bool _e27 = local_3;
+    if (_e27) {
+        local_4 = (lo1_.z <= hi2_.z);
     } else {
         local_4 = false;
     }
-    bool _e27 = local_4;
-    if (_e27) {
-        local_5 = (lo1_.z <= hi2_.z);
+    bool _e34 = local_4;
+    if (_e34) {
+        local_5 = (lo2_.z <= hi1_.z);
     } else {
         local_5 = false;
     }
-    bool _e34 = local_5;
-    if (_e34) {
-        local_6 = (lo2_.z <= hi1_.z);
-    } else {
-        local_6 = false;
-    }
-    bool _e41 = local_6;
+    bool _e41 = local_5;
     return _e41;
 }
 
@@ -331,8 +331,8 @@ WorkgroupBox workgroup_bounds(uint li_1, vec3 lo, vec3 hi) {
     return _e50;
 }
 
-WorkgroupBox workgroup_box(uint li_2, vec3 p_1, bool has) {
-    WorkgroupBox _e9 = workgroup_bounds(li_2, (has ? p_1 : vec3(3.4028235e38)), (has ? p_1 : vec3(-3.4028235e38)));
+WorkgroupBox workgroup_box(uint li_2, vec3 p, bool has) {
+    WorkgroupBox _e9 = workgroup_bounds(li_2, (has ? p : vec3(3.4028235e38)), (has ? p : vec3(-3.4028235e38)));
     return _e9;
 }
 
@@ -346,7 +346,7 @@ vec4 surface_at(ivec2 texel) {
 }
 
 GbTexel gbuffer_at(uint i) {
-    bool local_7 = false;
+    bool local_6 = false;
     uint _e3 = _group_0_binding_1_cs.width;
     uint _e8 = _group_0_binding_1_cs.width;
     ivec2 texel_1 = ivec2(int((i % _e3)), int((i / _e8)));
@@ -355,11 +355,11 @@ GbTexel gbuffer_at(uint i) {
     vec3 n_2 = _e15.xyz;
     float len2_ = dot(n_2, n_2);
     if ((_e12.w > 0.0)) {
-        local_7 = (len2_ > 0.0);
+        local_6 = (len2_ > 0.0);
     } else {
-        local_7 = false;
+        local_6 = false;
     }
-    bool valid_1 = local_7;
+    bool valid_1 = local_6;
     vec3 _e30 = _group_0_binding_1_cs.eye;
     vec3 v_2 = (_e12.xyz - _e30);
     vec4 position = vec4(_e12.xyz, (valid_1 ? 1.0 : 0.0));
@@ -424,6 +424,45 @@ void counts_end(uint li_5) {
     }
 }
 
+WorkgroupBox load_receiver(uint li_6, uint pix, bool inside) {
+    vec4 p_1 = vec4(0.0);
+    bool local_7 = false;
+    if (inside) {
+        GbTexel _e6 = gbuffer_at(pix);
+        p_1 = _e6.position;
+        nrm = _e6.normal.xyz;
+    }
+    vec4 _e12 = p_1;
+    pos = _e12.xyz;
+    if (inside) {
+        float _e18 = p_1.w;
+        local_7 = (_e18 > 0.0);
+    } else {
+        local_7 = false;
+    }
+    bool _e22 = local_7;
+    valid = _e22;
+    counts_begin(li_6);
+    bool _e24 = valid;
+    if (_e24) {
+        count_one(COUNT_PIXELS);
+    }
+    vec3 _e27 = pos;
+    bool _e29 = valid;
+    WorkgroupBox _e30 = workgroup_box(li_6, _e27, _e29);
+    return _e30;
+}
+
+void count_receiver(uint li_7) {
+    bool _e2 = valid;
+    if (_e2) {
+        uint _e5 = kept;
+        count_add(COUNT_KEPT, _e5);
+    }
+    counts_end(li_7);
+    return;
+}
+
 uint cluster_slot(uint c_1, uint k) {
     uint _e5 = _group_0_binding_0_cs.near_clusters_at;
     uint _e11 = _group_0_binding_5_cs[(((c_1 - _e5) * CLUSTER) + k)];
@@ -483,14 +522,14 @@ void shade_list(uint count) {
     return;
 }
 
-void cull_tile(uint li_6, vec3 lo_1, vec3 hi_1, uvec4 grid, uint clusters_at, uint groups_at) {
+void cull_tile(uint li_8, vec3 lo_1, vec3 hi_1, uvec4 grid, uint clusters_at, uint groups_at) {
     uint g_2 = 0u;
     uint h = 0u;
-    if ((li_6 == 0u)) {
+    if ((li_8 == 0u)) {
         atomicExchange(list_count, 0u);
     }
     uint _e14 = group_count(grid.x, grid.y, grid.z, grid.w);
-    count_tests(li_6, COUNT_GROUP_TESTS, _e14);
+    count_tests(li_8, COUNT_GROUP_TESTS, _e14);
     bool loop_init_2 = true;
     while(true) {
         if (!loop_init_2) {
@@ -515,18 +554,18 @@ void cull_tile(uint li_6, vec3 lo_1, vec3 hi_1, uvec4 grid, uint clusters_at, ui
             uint first = (clusters_at + _e34);
             uint _e36 = g_2;
             uint _e41 = group_clusters(_e36, grid.x, grid.y, grid.z, grid.w);
-            count_tests(li_6, COUNT_CLUSTER_TESTS, _e41);
-            if ((li_6 == 0u)) {
+            count_tests(li_8, COUNT_CLUSTER_TESTS, _e41);
+            if ((li_8 == 0u)) {
                 atomicExchange(hit_count, 0u);
             }
             memoryBarrierShared();
             barrier();
-            if ((li_6 < _e41)) {
-                GpuBox cb = _group_0_binding_6_cs[(first + li_6)];
+            if ((li_8 < _e41)) {
+                GpuBox cb = _group_0_binding_6_cs[(first + li_8)];
                 bool _e54 = box_overlaps_box(cb.lo, cb.hi, lo_1, hi_1);
                 if (_e54) {
                     uint _e58 = atomicAdd(hit_count, 1u);
-                    cluster_hits[_e58] = (first + li_6);
+                    cluster_hits[_e58] = (first + li_8);
                 }
             }
             memoryBarrierShared();
@@ -557,7 +596,7 @@ void cull_tile(uint li_6, vec3 lo_1, vec3 hi_1, uvec4 grid, uint clusters_at, ui
                         shade_list(_e68);
                         memoryBarrierShared();
                         barrier();
-                        if ((li_6 == 0u)) {
+                        if ((li_8 == 0u)) {
                             atomicExchange(list_count, 0u);
                         }
                         memoryBarrierShared();
@@ -565,7 +604,7 @@ void cull_tile(uint li_6, vec3 lo_1, vec3 hi_1, uvec4 grid, uint clusters_at, ui
                     }
                     uint _e78 = h;
                     uint _e80 = cluster_hits[_e78];
-                    uint _e81 = cluster_slot(_e80, li_6);
+                    uint _e81 = cluster_slot(_e80, li_8);
                     GpuLight l_1 = _group_0_binding_4_cs[_e81];
                     if (any(notEqual(l_1.intensity, vec3(0.0)))) {
                         count_one(COUNT_SPHERE_TESTS);
@@ -609,8 +648,6 @@ void main() {
     uvec3 lid = gl_LocalInvocationID;
     uint li = gl_LocalInvocationIndex;
     bool local = false;
-    vec4 p = vec4(0.0);
-    bool local_1 = false;
     uint px = ((wg.x * TILE) + lid.x);
     uint py = ((wg.y * TILE) + lid.y);
     uint _e15 = _group_0_binding_0_cs.width;
@@ -620,52 +657,25 @@ void main() {
     } else {
         local = false;
     }
-    bool inside = local;
+    bool inside_1 = local;
     uint _e27 = _group_0_binding_0_cs.width;
-    uint pix = ((py * _e27) + px);
-    if (inside) {
-        GbTexel _e33 = gbuffer_at(pix);
-        p = _e33.position;
-        nrm = _e33.normal.xyz;
-    }
-    vec4 _e39 = p;
-    pos = _e39.xyz;
-    if (inside) {
-        float _e45 = p.w;
-        local_1 = (_e45 > 0.0);
-    } else {
-        local_1 = false;
-    }
-    bool _e49 = local_1;
-    valid = _e49;
-    counts_begin(li);
-    bool _e51 = valid;
-    if (_e51) {
-        count_one(COUNT_PIXELS);
-    }
-    vec3 _e54 = pos;
-    bool _e56 = valid;
-    WorkgroupBox _e57 = workgroup_box(li, _e54, _e56);
-    bool _e58 = box_is_empty(_e57);
-    if (!(_e58)) {
+    uint pix_1 = ((py * _e27) + px);
+    WorkgroupBox _e30 = load_receiver(li, pix_1, inside_1);
+    bool _e31 = box_is_empty(_e30);
+    if (!(_e31)) {
         count_tests(li, COUNT_TILES, 1u);
-        uvec4 _e66 = _group_0_binding_0_cs.near_grid;
-        uint _e69 = _group_0_binding_0_cs.near_clusters_at;
-        uint _e72 = _group_0_binding_0_cs.near_groups_at;
-        cull_tile(li, _e57.lo, _e57.hi, _e66, _e69, _e72);
+        uvec4 _e39 = _group_0_binding_0_cs.near_grid;
+        uint _e42 = _group_0_binding_0_cs.near_clusters_at;
+        uint _e45 = _group_0_binding_0_cs.near_groups_at;
+        cull_tile(li, _e30.lo, _e30.hi, _e39, _e42, _e45);
     }
-    bool _e74 = valid;
-    if (_e74) {
-        uint _e77 = kept;
-        count_add(COUNT_KEPT, _e77);
-    }
-    counts_end(li);
-    bool _e79 = valid;
-    if (_e79) {
-        vec4 old = _group_0_binding_9_cs[pix];
-        vec3 _e87 = e;
-        uint _e91 = kept;
-        _group_0_binding_9_cs[pix] = vec4((old.xyz + _e87), (old.w + float(_e91)));
+    count_receiver(li);
+    bool _e47 = valid;
+    if (_e47) {
+        vec4 old = _group_0_binding_9_cs[pix_1];
+        vec3 _e55 = e;
+        uint _e59 = kept;
+        _group_0_binding_9_cs[pix_1] = vec4((old.xyz + _e55), (old.w + float(_e59)));
         return;
     } else {
         return;

@@ -221,41 +221,41 @@ uint group_clusters(uint g_1, uint bw_3, uint bh_2, uint gw_3, uint gh_2) {
 }
 
 bool box_overlaps_box(vec3 lo1_, vec3 hi1_, vec3 lo2_, vec3 hi2_) {
+    bool local_1 = false;
     bool local_2 = false;
     bool local_3 = false;
     bool local_4 = false;
     bool local_5 = false;
-    bool local_6 = false;
     if ((lo1_.x <= hi2_.x)) {
-        local_2 = (lo2_.x <= hi1_.x);
+        local_1 = (lo2_.x <= hi1_.x);
+    } else {
+        local_1 = false;
+    }
+    bool _e13 = local_1;
+    if (_e13) {
+        local_2 = (lo1_.y <= hi2_.y);
     } else {
         local_2 = false;
     }
-    bool _e13 = local_2;
-    if (_e13) {
-        local_3 = (lo1_.y <= hi2_.y);
+    bool _e20 = local_2;
+    if (_e20) {
+        local_3 = (lo2_.y <= hi1_.y);
     } else {
         local_3 = false;
     }
-    bool _e20 = local_3;
-    if (_e20) {
-        local_4 = (lo2_.y <= hi1_.y);
+    bool _e27 = local_3;
+    if (_e27) {
+        local_4 = (lo1_.z <= hi2_.z);
     } else {
         local_4 = false;
     }
-    bool _e27 = local_4;
-    if (_e27) {
-        local_5 = (lo1_.z <= hi2_.z);
+    bool _e34 = local_4;
+    if (_e34) {
+        local_5 = (lo2_.z <= hi1_.z);
     } else {
         local_5 = false;
     }
-    bool _e34 = local_5;
-    if (_e34) {
-        local_6 = (lo2_.z <= hi1_.z);
-    } else {
-        local_6 = false;
-    }
-    bool _e41 = local_6;
+    bool _e41 = local_5;
     return _e41;
 }
 
@@ -279,13 +279,13 @@ float smith_root(float cos_, float alpha_1) {
 }
 
 float smith_visibility(float n_l_1, float n_v, float alpha_2) {
-    bool local_7 = false;
+    bool local_6 = false;
     if (!((n_l_1 <= 0.0))) {
-        local_7 = (n_v <= 0.0);
+        local_6 = (n_v <= 0.0);
     } else {
-        local_7 = true;
+        local_6 = true;
     }
-    bool _e11 = local_7;
+    bool _e11 = local_6;
     if (_e11) {
         return 0.0;
     }
@@ -321,15 +321,15 @@ float half_cosine(vec3 v_1, vec3 l) {
 }
 
 vec3 specular_brdf(vec3 base_2, float metallic_2, vec3 f0_d_2, float f90_d_2, float alpha_3, vec3 n, vec3 v_2, vec3 l_1) {
-    bool local_8 = false;
+    bool local_7 = false;
     float n_l_2 = dot(n, l_1);
     float n_v_1 = dot(n, v_2);
     if (!((n_l_2 <= 0.0))) {
-        local_8 = (n_v_1 <= 0.0);
+        local_7 = (n_v_1 <= 0.0);
     } else {
-        local_8 = true;
+        local_7 = true;
     }
-    bool _e18 = local_8;
+    bool _e18 = local_7;
     if (_e18) {
         return vec3(0.0, 0.0, 0.0);
     }
@@ -364,20 +364,20 @@ vec3 specular_correction(vec3 base_5, float metallic_5, vec3 f0_d_4, float f90_d
 }
 
 bool has_specular(float metallic_6, vec3 f0_d_5, float f90_d_5) {
+    bool local_8 = false;
     bool local_9 = false;
-    bool local_10 = false;
     if (!((metallic_6 > 0.0))) {
-        local_9 = (f90_d_5 > 0.0);
+        local_8 = (f90_d_5 > 0.0);
+    } else {
+        local_8 = true;
+    }
+    bool _e11 = local_8;
+    if (!(_e11)) {
+        local_9 = (max(max(f0_d_5.x, f0_d_5.y), f0_d_5.z) > 0.0);
     } else {
         local_9 = true;
     }
-    bool _e11 = local_9;
-    if (!(_e11)) {
-        local_10 = (max(max(f0_d_5.x, f0_d_5.y), f0_d_5.z) > 0.0);
-    } else {
-        local_10 = true;
-    }
-    bool _e23 = local_10;
+    bool _e23 = local_9;
     return _e23;
 }
 
@@ -457,8 +457,8 @@ WorkgroupBox workgroup_bounds(uint li_1, vec3 lo, vec3 hi) {
     return _e50;
 }
 
-WorkgroupBox workgroup_box(uint li_2, vec3 p_1, bool has) {
-    WorkgroupBox _e9 = workgroup_bounds(li_2, (has ? p_1 : vec3(3.4028235e38)), (has ? p_1 : vec3(-3.4028235e38)));
+WorkgroupBox workgroup_box(uint li_2, vec3 p, bool has) {
+    WorkgroupBox _e9 = workgroup_bounds(li_2, (has ? p : vec3(3.4028235e38)), (has ? p : vec3(-3.4028235e38)));
     return _e9;
 }
 
@@ -472,7 +472,7 @@ vec4 surface_at(ivec2 texel) {
 }
 
 GbTexel gbuffer_at(uint i) {
-    bool local_11 = false;
+    bool local_10 = false;
     uint _e3 = _group_0_binding_1_cs.width;
     uint _e8 = _group_0_binding_1_cs.width;
     ivec2 texel_1 = ivec2(int((i % _e3)), int((i / _e8)));
@@ -481,11 +481,11 @@ GbTexel gbuffer_at(uint i) {
     vec3 n_4 = _e15.xyz;
     float len2_1 = dot(n_4, n_4);
     if ((_e12.w > 0.0)) {
-        local_11 = (len2_1 > 0.0);
+        local_10 = (len2_1 > 0.0);
     } else {
-        local_11 = false;
+        local_10 = false;
     }
-    bool valid_1 = local_11;
+    bool valid_1 = local_10;
     vec3 _e30 = _group_0_binding_1_cs.eye;
     vec3 v_7 = (_e12.xyz - _e30);
     vec4 position = vec4(_e12.xyz, (valid_1 ? 1.0 : 0.0));
@@ -505,13 +505,13 @@ Glossy glossy_at(uint i_1, vec3 x) {
 }
 
 vec3 glossy_term(Glossy g_2, GpuLight l_4, vec3 n_3, vec3 v_5, float t) {
-    bool local_12 = false;
+    bool local_11 = false;
     if (!(!(g_2.on))) {
-        local_12 = (t <= 0.0);
+        local_11 = (t <= 0.0);
     } else {
-        local_12 = true;
+        local_11 = true;
     }
-    bool _e13 = local_12;
+    bool _e13 = local_11;
     if (_e13) {
         return vec3(0.0);
     }
@@ -529,6 +529,36 @@ float near_cull_r2_of(uint slot_1, float near_r2_3) {
     float _e2 = near_r2_of(slot_1);
     float _e3 = vpl_near_cull_range2_(_e2, near_r2_3);
     return _e3;
+}
+
+WorkgroupBox load_receiver(uint li_3, uint pix, bool inside) {
+    vec4 p_1 = vec4(0.0);
+    bool local_12 = false;
+    if (inside) {
+        GbTexel _e6 = gbuffer_at(pix);
+        p_1 = _e6.position;
+        nrm = _e6.normal.xyz;
+    }
+    vec4 _e12 = p_1;
+    pos = _e12.xyz;
+    if (inside) {
+        float _e18 = p_1.w;
+        local_12 = (_e18 > 0.0);
+    } else {
+        local_12 = false;
+    }
+    bool _e22 = local_12;
+    valid = _e22;
+    bool _e24 = valid;
+    if (_e24) {
+        vec3 _e27 = pos;
+        Glossy _e28 = glossy_at(pix, _e27);
+        g_4 = _e28;
+    }
+    vec3 _e30 = pos;
+    bool _e32 = valid;
+    WorkgroupBox _e33 = workgroup_box(li_3, _e30, _e32);
+    return _e33;
 }
 
 uint cluster_slot(uint c_1, uint k) {
@@ -594,10 +624,10 @@ void shade_list(uint count) {
     return;
 }
 
-void cull_tile(uint li_3, vec3 lo_1, vec3 hi_1, uvec4 grid, uint clusters_at, uint groups_at) {
+void cull_tile(uint li_4, vec3 lo_1, vec3 hi_1, uvec4 grid, uint clusters_at, uint groups_at) {
     uint g_3 = 0u;
     uint h = 0u;
-    if ((li_3 == 0u)) {
+    if ((li_4 == 0u)) {
         atomicExchange(list_count, 0u);
     }
     uint _e14 = group_count(grid.x, grid.y, grid.z, grid.w);
@@ -625,17 +655,17 @@ void cull_tile(uint li_3, vec3 lo_1, vec3 hi_1, uvec4 grid, uint clusters_at, ui
             uint first = (clusters_at + _e33);
             uint _e35 = g_3;
             uint _e40 = group_clusters(_e35, grid.x, grid.y, grid.z, grid.w);
-            if ((li_3 == 0u)) {
+            if ((li_4 == 0u)) {
                 atomicExchange(hit_count, 0u);
             }
             memoryBarrierShared();
             barrier();
-            if ((li_3 < _e40)) {
-                GpuBox cb = _group_0_binding_6_cs[(first + li_3)];
+            if ((li_4 < _e40)) {
+                GpuBox cb = _group_0_binding_6_cs[(first + li_4)];
                 bool _e52 = box_overlaps_box(cb.lo, cb.hi, lo_1, hi_1);
                 if (_e52) {
                     uint _e56 = atomicAdd(hit_count, 1u);
-                    cluster_hits[_e56] = (first + li_3);
+                    cluster_hits[_e56] = (first + li_4);
                 }
             }
             memoryBarrierShared();
@@ -666,7 +696,7 @@ void cull_tile(uint li_3, vec3 lo_1, vec3 hi_1, uvec4 grid, uint clusters_at, ui
                         shade_list(_e66);
                         memoryBarrierShared();
                         barrier();
-                        if ((li_3 == 0u)) {
+                        if ((li_4 == 0u)) {
                             atomicExchange(list_count, 0u);
                         }
                         memoryBarrierShared();
@@ -674,7 +704,7 @@ void cull_tile(uint li_3, vec3 lo_1, vec3 hi_1, uvec4 grid, uint clusters_at, ui
                     }
                     uint _e76 = h;
                     uint _e78 = cluster_hits[_e76];
-                    uint _e79 = cluster_slot(_e78, li_3);
+                    uint _e79 = cluster_slot(_e78, li_4);
                     GpuLight l_6 = _group_0_binding_4_cs[_e79];
                     if (any(notEqual(l_6.intensity, vec3(0.0)))) {
                         float _e89 = cull_r2_of(_e79);
@@ -716,8 +746,6 @@ void main() {
     uvec3 lid = gl_LocalInvocationID;
     uint li = gl_LocalInvocationIndex;
     bool local = false;
-    vec4 p = vec4(0.0);
-    bool local_1 = false;
     uint px = ((wg.x * TILE) + lid.x);
     uint py = ((wg.y * TILE) + lid.y);
     uint _e15 = _group_0_binding_0_cs.width;
@@ -727,49 +755,26 @@ void main() {
     } else {
         local = false;
     }
-    bool inside = local;
+    bool inside_1 = local;
     uint _e27 = _group_0_binding_0_cs.width;
-    uint pix = ((py * _e27) + px);
-    if (inside) {
-        GbTexel _e33 = gbuffer_at(pix);
-        p = _e33.position;
-        nrm = _e33.normal.xyz;
+    uint pix_1 = ((py * _e27) + px);
+    WorkgroupBox _e30 = load_receiver(li, pix_1, inside_1);
+    bool _e31 = box_is_empty(_e30);
+    if (!(_e31)) {
+        uvec4 _e37 = _group_0_binding_0_cs.near_grid;
+        uint _e40 = _group_0_binding_0_cs.near_clusters_at;
+        uint _e43 = _group_0_binding_0_cs.near_groups_at;
+        cull_tile(li, _e30.lo, _e30.hi, _e37, _e40, _e43);
     }
-    vec4 _e39 = p;
-    pos = _e39.xyz;
-    if (inside) {
-        float _e45 = p.w;
-        local_1 = (_e45 > 0.0);
-    } else {
-        local_1 = false;
-    }
-    bool _e49 = local_1;
-    valid = _e49;
-    bool _e51 = valid;
-    if (_e51) {
-        vec3 _e54 = pos;
-        Glossy _e55 = glossy_at(pix, _e54);
-        g_4 = _e55;
-    }
-    vec3 _e57 = pos;
-    bool _e59 = valid;
-    WorkgroupBox _e60 = workgroup_box(li, _e57, _e59);
-    bool _e61 = box_is_empty(_e60);
-    if (!(_e61)) {
-        uvec4 _e67 = _group_0_binding_0_cs.near_grid;
-        uint _e70 = _group_0_binding_0_cs.near_clusters_at;
-        uint _e73 = _group_0_binding_0_cs.near_groups_at;
-        cull_tile(li, _e60.lo, _e60.hi, _e67, _e70, _e73);
-    }
-    bool _e75 = valid;
-    if (_e75) {
-        vec4 old = _group_0_binding_9_cs[pix];
-        vec3 _e83 = e;
-        uint _e87 = kept;
-        _group_0_binding_9_cs[pix] = vec4((old.xyz + _e83), (old.w + float(_e87)));
-        vec4 _e95 = _group_0_binding_11_cs[pix];
-        vec3 _e98 = s;
-        _group_0_binding_11_cs[pix] = vec4((_e95.xyz + _e98), 0.0);
+    bool _e45 = valid;
+    if (_e45) {
+        vec4 old = _group_0_binding_9_cs[pix_1];
+        vec3 _e53 = e;
+        uint _e57 = kept;
+        _group_0_binding_9_cs[pix_1] = vec4((old.xyz + _e53), (old.w + float(_e57)));
+        vec4 _e65 = _group_0_binding_11_cs[pix_1];
+        vec3 _e68 = s;
+        _group_0_binding_11_cs[pix_1] = vec4((_e65.xyz + _e68), 0.0);
         return;
     } else {
         return;

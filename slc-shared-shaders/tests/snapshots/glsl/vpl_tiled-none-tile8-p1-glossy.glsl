@@ -168,13 +168,13 @@ float smith_root(float cos_, float alpha_1) {
 }
 
 float smith_visibility(float n_l_1, float n_v, float alpha_2) {
-    bool local_2 = false;
+    bool local_1 = false;
     if (!((n_l_1 <= 0.0))) {
-        local_2 = (n_v <= 0.0);
+        local_1 = (n_v <= 0.0);
     } else {
-        local_2 = true;
+        local_1 = true;
     }
-    bool _e11 = local_2;
+    bool _e11 = local_1;
     if (_e11) {
         return 0.0;
     }
@@ -210,15 +210,15 @@ float half_cosine(vec3 v_1, vec3 l) {
 }
 
 vec3 specular_brdf(vec3 base_2, float metallic_2, vec3 f0_d_2, float f90_d_2, float alpha_3, vec3 n, vec3 v_2, vec3 l_1) {
-    bool local_3 = false;
+    bool local_2 = false;
     float n_l_2 = dot(n, l_1);
     float n_v_1 = dot(n, v_2);
     if (!((n_l_2 <= 0.0))) {
-        local_3 = (n_v_1 <= 0.0);
+        local_2 = (n_v_1 <= 0.0);
     } else {
-        local_3 = true;
+        local_2 = true;
     }
-    bool _e18 = local_3;
+    bool _e18 = local_2;
     if (_e18) {
         return vec3(0.0, 0.0, 0.0);
     }
@@ -253,20 +253,20 @@ vec3 specular_correction(vec3 base_5, float metallic_5, vec3 f0_d_4, float f90_d
 }
 
 bool has_specular(float metallic_6, vec3 f0_d_5, float f90_d_5) {
+    bool local_3 = false;
     bool local_4 = false;
-    bool local_5 = false;
     if (!((metallic_6 > 0.0))) {
-        local_4 = (f90_d_5 > 0.0);
+        local_3 = (f90_d_5 > 0.0);
+    } else {
+        local_3 = true;
+    }
+    bool _e11 = local_3;
+    if (!(_e11)) {
+        local_4 = (max(max(f0_d_5.x, f0_d_5.y), f0_d_5.z) > 0.0);
     } else {
         local_4 = true;
     }
-    bool _e11 = local_4;
-    if (!(_e11)) {
-        local_5 = (max(max(f0_d_5.x, f0_d_5.y), f0_d_5.z) > 0.0);
-    } else {
-        local_5 = true;
-    }
-    bool _e23 = local_5;
+    bool _e23 = local_4;
     return _e23;
 }
 
@@ -334,8 +334,8 @@ WorkgroupBox workgroup_bounds(uint li_1, vec3 lo, vec3 hi) {
     return _e50;
 }
 
-WorkgroupBox workgroup_box(uint li_2, vec3 p_1, bool has) {
-    WorkgroupBox _e9 = workgroup_bounds(li_2, (has ? p_1 : vec3(3.4028235e38)), (has ? p_1 : vec3(-3.4028235e38)));
+WorkgroupBox workgroup_box(uint li_2, vec3 p, bool has) {
+    WorkgroupBox _e9 = workgroup_bounds(li_2, (has ? p : vec3(3.4028235e38)), (has ? p : vec3(-3.4028235e38)));
     return _e9;
 }
 
@@ -345,7 +345,7 @@ vec4 surface_at(ivec2 texel) {
 }
 
 GbTexel gbuffer_at(uint i) {
-    bool local_6 = false;
+    bool local_5 = false;
     uint _e3 = _group_0_binding_1_cs.width;
     uint _e8 = _group_0_binding_1_cs.width;
     ivec2 texel_1 = ivec2(int((i % _e3)), int((i / _e8)));
@@ -354,11 +354,11 @@ GbTexel gbuffer_at(uint i) {
     vec3 n_4 = _e15.xyz;
     float len2_1 = dot(n_4, n_4);
     if ((_e12.w > 0.0)) {
-        local_6 = (len2_1 > 0.0);
+        local_5 = (len2_1 > 0.0);
     } else {
-        local_6 = false;
+        local_5 = false;
     }
-    bool valid_1 = local_6;
+    bool valid_1 = local_5;
     vec3 _e30 = _group_0_binding_1_cs.eye;
     vec3 v_6 = (_e12.xyz - _e30);
     vec4 position = vec4(_e12.xyz, (valid_1 ? 1.0 : 0.0));
@@ -378,18 +378,48 @@ Glossy glossy_at(uint i_1, vec3 x) {
 }
 
 vec3 glossy_term(Glossy g, GpuLight l_4, vec3 n_3, vec3 v_5, float t) {
-    bool local_7 = false;
+    bool local_6 = false;
     if (!(!(g.on))) {
-        local_7 = (t <= 0.0);
+        local_6 = (t <= 0.0);
     } else {
-        local_7 = true;
+        local_6 = true;
     }
-    bool _e13 = local_7;
+    bool _e13 = local_6;
     if (_e13) {
         return vec3(0.0);
     }
     vec3 _e30 = specular_correction(g.m.albedo, g.m.metallic, g.m.f0_, g.m.f90_, g.m.alpha, n_3, g.v, normalize(-(v_5)));
     return ((l_4.intensity * _e30) * t);
+}
+
+WorkgroupBox load_receiver(uint li_3, uint pix, bool inside) {
+    vec4 p_1 = vec4(0.0);
+    bool local_7 = false;
+    if (inside) {
+        GbTexel _e6 = gbuffer_at(pix);
+        p_1 = _e6.position;
+        nrm = _e6.normal.xyz;
+    }
+    vec4 _e12 = p_1;
+    pos = _e12.xyz;
+    if (inside) {
+        float _e18 = p_1.w;
+        local_7 = (_e18 > 0.0);
+    } else {
+        local_7 = false;
+    }
+    bool _e22 = local_7;
+    valid = _e22;
+    bool _e24 = valid;
+    if (_e24) {
+        vec3 _e27 = pos;
+        Glossy _e28 = glossy_at(pix, _e27);
+        g_1 = _e28;
+    }
+    vec3 _e30 = pos;
+    bool _e32 = valid;
+    WorkgroupBox _e33 = workgroup_box(li_3, _e30, _e32);
+    return _e33;
 }
 
 void shade_light(uint j_1) {
@@ -430,8 +460,6 @@ void main() {
     uvec3 lid = gl_LocalInvocationID;
     uint li = gl_LocalInvocationIndex;
     bool local = false;
-    vec4 p = vec4(0.0);
-    bool local_1 = false;
     uint j = 0u;
     uint sub = wg.z;
     uint px = ((sub % P) + (((wg.x * TILE) + lid.x) * P));
@@ -443,69 +471,46 @@ void main() {
     } else {
         local = false;
     }
-    bool inside = local;
+    bool inside_1 = local;
     uint _e38 = _group_0_binding_0_cs.width;
-    uint pix = ((py * _e38) + px);
-    if (inside) {
-        GbTexel _e44 = gbuffer_at(pix);
-        p = _e44.position;
-        nrm = _e44.normal.xyz;
-    }
-    vec4 _e50 = p;
-    pos = _e50.xyz;
-    if (inside) {
-        float _e56 = p.w;
-        local_1 = (_e56 > 0.0);
-    } else {
-        local_1 = false;
-    }
-    bool _e60 = local_1;
-    valid = _e60;
-    bool _e62 = valid;
-    if (_e62) {
-        vec3 _e65 = pos;
-        Glossy _e66 = glossy_at(pix, _e65);
-        g_1 = _e66;
-    }
-    vec3 _e68 = pos;
-    bool _e70 = valid;
-    WorkgroupBox _e71 = workgroup_box(li, _e68, _e70);
-    uint _e74 = _group_0_binding_0_cs.subset_shift;
-    uint _e76 = shifted_subset(sub, _e74, P);
-    bool _e78 = valid;
-    if (_e78) {
-        uint _e81 = _group_0_binding_0_cs.lights_per_subset;
-        uint base_6 = (_e76 * _e81);
+    uint pix_1 = ((py * _e38) + px);
+    WorkgroupBox _e41 = load_receiver(li, pix_1, inside_1);
+    uint _e44 = _group_0_binding_0_cs.subset_shift;
+    uint _e46 = shifted_subset(sub, _e44, P);
+    bool _e48 = valid;
+    if (_e48) {
+        uint _e51 = _group_0_binding_0_cs.lights_per_subset;
+        uint base_6 = (_e46 * _e51);
         j = base_6;
         bool loop_init_1 = true;
         while(true) {
             if (!loop_init_1) {
-                uint _e101 = j;
-                j = (_e101 + 1u);
+                uint _e71 = j;
+                j = (_e71 + 1u);
             }
             loop_init_1 = false;
-            uint _e84 = j;
-            uint _e87 = _group_0_binding_0_cs.lights_per_subset;
-            if ((_e84 < (base_6 + _e87))) {
+            uint _e54 = j;
+            uint _e57 = _group_0_binding_0_cs.lights_per_subset;
+            if ((_e54 < (base_6 + _e57))) {
             } else {
                 break;
             }
             {
-                uint _e91 = j;
-                vec3 _e94 = _group_0_binding_4_cs[_e91].intensity;
-                if (any(notEqual(_e94, vec3(0.0)))) {
-                    uint _e99 = j;
-                    shade_light(_e99);
+                uint _e61 = j;
+                vec3 _e64 = _group_0_binding_4_cs[_e61].intensity;
+                if (any(notEqual(_e64, vec3(0.0)))) {
+                    uint _e69 = j;
+                    shade_light(_e69);
                 }
             }
         }
     }
-    if (inside) {
-        vec3 _e106 = e;
-        uint _e108 = kept;
-        _group_0_binding_8_cs[pix] = vec4(_e106, float(_e108));
-        vec3 _e114 = s;
-        _group_0_binding_10_cs[pix] = vec4(_e114, 0.0);
+    if (inside_1) {
+        vec3 _e76 = e;
+        uint _e78 = kept;
+        _group_0_binding_8_cs[pix_1] = vec4(_e76, float(_e78));
+        vec3 _e84 = s;
+        _group_0_binding_10_cs[pix_1] = vec4(_e84, 0.0);
         return;
     } else {
         return;

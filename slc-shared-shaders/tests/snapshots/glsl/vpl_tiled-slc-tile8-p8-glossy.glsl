@@ -215,41 +215,41 @@ uint group_clusters(uint g_1, uint bw_3, uint bh_2, uint gw_3, uint gh_2) {
 }
 
 bool box_overlaps_box(vec3 lo1_, vec3 hi1_, vec3 lo2_, vec3 hi2_) {
+    bool local_1 = false;
     bool local_2 = false;
     bool local_3 = false;
     bool local_4 = false;
     bool local_5 = false;
-    bool local_6 = false;
     if ((lo1_.x <= hi2_.x)) {
-        local_2 = (lo2_.x <= hi1_.x);
+        local_1 = (lo2_.x <= hi1_.x);
+    } else {
+        local_1 = false;
+    }
+    bool _e13 = local_1;
+    if (_e13) {
+        local_2 = (lo1_.y <= hi2_.y);
     } else {
         local_2 = false;
     }
-    bool _e13 = local_2;
-    if (_e13) {
-        local_3 = (lo1_.y <= hi2_.y);
+    bool _e20 = local_2;
+    if (_e20) {
+        local_3 = (lo2_.y <= hi1_.y);
     } else {
         local_3 = false;
     }
-    bool _e20 = local_3;
-    if (_e20) {
-        local_4 = (lo2_.y <= hi1_.y);
+    bool _e27 = local_3;
+    if (_e27) {
+        local_4 = (lo1_.z <= hi2_.z);
     } else {
         local_4 = false;
     }
-    bool _e27 = local_4;
-    if (_e27) {
-        local_5 = (lo1_.z <= hi2_.z);
+    bool _e34 = local_4;
+    if (_e34) {
+        local_5 = (lo2_.z <= hi1_.z);
     } else {
         local_5 = false;
     }
-    bool _e34 = local_5;
-    if (_e34) {
-        local_6 = (lo2_.z <= hi1_.z);
-    } else {
-        local_6 = false;
-    }
-    bool _e41 = local_6;
+    bool _e41 = local_5;
     return _e41;
 }
 
@@ -273,13 +273,13 @@ float smith_root(float cos_, float alpha_1) {
 }
 
 float smith_visibility(float n_l_1, float n_v, float alpha_2) {
-    bool local_7 = false;
+    bool local_6 = false;
     if (!((n_l_1 <= 0.0))) {
-        local_7 = (n_v <= 0.0);
+        local_6 = (n_v <= 0.0);
     } else {
-        local_7 = true;
+        local_6 = true;
     }
-    bool _e11 = local_7;
+    bool _e11 = local_6;
     if (_e11) {
         return 0.0;
     }
@@ -315,15 +315,15 @@ float half_cosine(vec3 v_1, vec3 l) {
 }
 
 vec3 specular_brdf(vec3 base_2, float metallic_2, vec3 f0_d_2, float f90_d_2, float alpha_3, vec3 n, vec3 v_2, vec3 l_1) {
-    bool local_8 = false;
+    bool local_7 = false;
     float n_l_2 = dot(n, l_1);
     float n_v_1 = dot(n, v_2);
     if (!((n_l_2 <= 0.0))) {
-        local_8 = (n_v_1 <= 0.0);
+        local_7 = (n_v_1 <= 0.0);
     } else {
-        local_8 = true;
+        local_7 = true;
     }
-    bool _e18 = local_8;
+    bool _e18 = local_7;
     if (_e18) {
         return vec3(0.0, 0.0, 0.0);
     }
@@ -358,20 +358,20 @@ vec3 specular_correction(vec3 base_5, float metallic_5, vec3 f0_d_4, float f90_d
 }
 
 bool has_specular(float metallic_6, vec3 f0_d_5, float f90_d_5) {
+    bool local_8 = false;
     bool local_9 = false;
-    bool local_10 = false;
     if (!((metallic_6 > 0.0))) {
-        local_9 = (f90_d_5 > 0.0);
+        local_8 = (f90_d_5 > 0.0);
+    } else {
+        local_8 = true;
+    }
+    bool _e11 = local_8;
+    if (!(_e11)) {
+        local_9 = (max(max(f0_d_5.x, f0_d_5.y), f0_d_5.z) > 0.0);
     } else {
         local_9 = true;
     }
-    bool _e11 = local_9;
-    if (!(_e11)) {
-        local_10 = (max(max(f0_d_5.x, f0_d_5.y), f0_d_5.z) > 0.0);
-    } else {
-        local_10 = true;
-    }
-    bool _e23 = local_10;
+    bool _e23 = local_9;
     return _e23;
 }
 
@@ -446,8 +446,8 @@ WorkgroupBox workgroup_bounds(uint li_1, vec3 lo, vec3 hi) {
     return _e50;
 }
 
-WorkgroupBox workgroup_box(uint li_2, vec3 p_1, bool has) {
-    WorkgroupBox _e9 = workgroup_bounds(li_2, (has ? p_1 : vec3(3.4028235e38)), (has ? p_1 : vec3(-3.4028235e38)));
+WorkgroupBox workgroup_box(uint li_2, vec3 p, bool has) {
+    WorkgroupBox _e9 = workgroup_bounds(li_2, (has ? p : vec3(3.4028235e38)), (has ? p : vec3(-3.4028235e38)));
     return _e9;
 }
 
@@ -461,7 +461,7 @@ vec4 surface_at(ivec2 texel) {
 }
 
 GbTexel gbuffer_at(uint i) {
-    bool local_11 = false;
+    bool local_10 = false;
     uint _e3 = _group_0_binding_1_cs.width;
     uint _e8 = _group_0_binding_1_cs.width;
     ivec2 texel_1 = ivec2(int((i % _e3)), int((i / _e8)));
@@ -470,11 +470,11 @@ GbTexel gbuffer_at(uint i) {
     vec3 n_4 = _e15.xyz;
     float len2_1 = dot(n_4, n_4);
     if ((_e12.w > 0.0)) {
-        local_11 = (len2_1 > 0.0);
+        local_10 = (len2_1 > 0.0);
     } else {
-        local_11 = false;
+        local_10 = false;
     }
-    bool valid_1 = local_11;
+    bool valid_1 = local_10;
     vec3 _e30 = _group_0_binding_1_cs.eye;
     vec3 v_7 = (_e12.xyz - _e30);
     vec4 position = vec4(_e12.xyz, (valid_1 ? 1.0 : 0.0));
@@ -494,18 +494,48 @@ Glossy glossy_at(uint i_1, vec3 x) {
 }
 
 vec3 glossy_term(Glossy g_2, GpuLight l_4, vec3 n_3, vec3 v_5, float t) {
-    bool local_12 = false;
+    bool local_11 = false;
     if (!(!(g_2.on))) {
-        local_12 = (t <= 0.0);
+        local_11 = (t <= 0.0);
     } else {
-        local_12 = true;
+        local_11 = true;
     }
-    bool _e13 = local_12;
+    bool _e13 = local_11;
     if (_e13) {
         return vec3(0.0);
     }
     vec3 _e30 = specular_correction(g_2.m.albedo, g_2.m.metallic, g_2.m.f0_, g_2.m.f90_, g_2.m.alpha, n_3, g_2.v, normalize(-(v_5)));
     return ((l_4.intensity * _e30) * t);
+}
+
+WorkgroupBox load_receiver(uint li_3, uint pix, bool inside) {
+    vec4 p_1 = vec4(0.0);
+    bool local_12 = false;
+    if (inside) {
+        GbTexel _e6 = gbuffer_at(pix);
+        p_1 = _e6.position;
+        nrm = _e6.normal.xyz;
+    }
+    vec4 _e12 = p_1;
+    pos = _e12.xyz;
+    if (inside) {
+        float _e18 = p_1.w;
+        local_12 = (_e18 > 0.0);
+    } else {
+        local_12 = false;
+    }
+    bool _e22 = local_12;
+    valid = _e22;
+    bool _e24 = valid;
+    if (_e24) {
+        vec3 _e27 = pos;
+        Glossy _e28 = glossy_at(pix, _e27);
+        g_4 = _e28;
+    }
+    vec3 _e30 = pos;
+    bool _e32 = valid;
+    WorkgroupBox _e33 = workgroup_box(li_3, _e30, _e32);
+    return _e33;
 }
 
 void shade_light(uint j) {
@@ -573,10 +603,10 @@ void shade_list(uint count) {
     }
 }
 
-void cull_tile(uint li_3, vec3 lo_1, vec3 hi_1, uvec4 grid, uint clusters_at, uint groups_at) {
+void cull_tile(uint li_4, vec3 lo_1, vec3 hi_1, uvec4 grid, uint clusters_at, uint groups_at) {
     uint g_3 = 0u;
     uint h = 0u;
-    if ((li_3 == 0u)) {
+    if ((li_4 == 0u)) {
         atomicExchange(list_count, 0u);
     }
     uint _e14 = group_count(grid.x, grid.y, grid.z, grid.w);
@@ -604,17 +634,17 @@ void cull_tile(uint li_3, vec3 lo_1, vec3 hi_1, uvec4 grid, uint clusters_at, ui
             uint first = (clusters_at + _e33);
             uint _e35 = g_3;
             uint _e40 = group_clusters(_e35, grid.x, grid.y, grid.z, grid.w);
-            if ((li_3 == 0u)) {
+            if ((li_4 == 0u)) {
                 atomicExchange(hit_count, 0u);
             }
             memoryBarrierShared();
             barrier();
-            if ((li_3 < _e40)) {
-                GpuBox cb = _group_0_binding_7_cs[(first + li_3)];
+            if ((li_4 < _e40)) {
+                GpuBox cb = _group_0_binding_7_cs[(first + li_4)];
                 bool _e52 = box_overlaps_box(cb.lo, cb.hi, lo_1, hi_1);
                 if (_e52) {
                     uint _e56 = atomicAdd(hit_count, 1u);
-                    cluster_hits[_e56] = (first + li_3);
+                    cluster_hits[_e56] = (first + li_4);
                 }
             }
             memoryBarrierShared();
@@ -645,7 +675,7 @@ void cull_tile(uint li_3, vec3 lo_1, vec3 hi_1, uvec4 grid, uint clusters_at, ui
                         shade_list(_e66);
                         memoryBarrierShared();
                         barrier();
-                        if ((li_3 == 0u)) {
+                        if ((li_4 == 0u)) {
                             atomicExchange(list_count, 0u);
                         }
                         memoryBarrierShared();
@@ -653,7 +683,7 @@ void cull_tile(uint li_3, vec3 lo_1, vec3 hi_1, uvec4 grid, uint clusters_at, ui
                     }
                     uint _e76 = h;
                     uint _e78 = cluster_hits[_e76];
-                    uint _e79 = cluster_slot(_e78, li_3);
+                    uint _e79 = cluster_slot(_e78, li_4);
                     GpuLight l_6 = _group_0_binding_4_cs[_e79];
                     if (any(notEqual(l_6.intensity, vec3(0.0)))) {
                         float _e89 = cull_r2_of(_e79);
@@ -695,8 +725,6 @@ void main() {
     uvec3 lid = gl_LocalInvocationID;
     uint li = gl_LocalInvocationIndex;
     bool local = false;
-    vec4 p = vec4(0.0);
-    bool local_1 = false;
     uint sub = wg.z;
     uint px = ((sub % P) + (((wg.x * TILE) + lid.x) * P));
     uint py = ((sub / P) + (((wg.y * TILE) + lid.y) * P));
@@ -707,49 +735,26 @@ void main() {
     } else {
         local = false;
     }
-    bool inside = local;
+    bool inside_1 = local;
     uint _e38 = _group_0_binding_0_cs.width;
-    uint pix = ((py * _e38) + px);
-    if (inside) {
-        GbTexel _e44 = gbuffer_at(pix);
-        p = _e44.position;
-        nrm = _e44.normal.xyz;
-    }
-    vec4 _e50 = p;
-    pos = _e50.xyz;
-    if (inside) {
-        float _e56 = p.w;
-        local_1 = (_e56 > 0.0);
-    } else {
-        local_1 = false;
-    }
-    bool _e60 = local_1;
-    valid = _e60;
-    bool _e62 = valid;
-    if (_e62) {
-        vec3 _e65 = pos;
-        Glossy _e66 = glossy_at(pix, _e65);
-        g_4 = _e66;
-    }
-    vec3 _e68 = pos;
-    bool _e70 = valid;
-    WorkgroupBox _e71 = workgroup_box(li, _e68, _e70);
-    uint _e74 = _group_0_binding_0_cs.subset_shift;
-    uint _e76 = shifted_subset(sub, _e74, P);
-    bool _e77 = box_is_empty(_e71);
-    if (!(_e77)) {
+    uint pix_1 = ((py * _e38) + px);
+    WorkgroupBox _e41 = load_receiver(li, pix_1, inside_1);
+    uint _e44 = _group_0_binding_0_cs.subset_shift;
+    uint _e46 = shifted_subset(sub, _e44, P);
+    bool _e47 = box_is_empty(_e41);
+    if (!(_e47)) {
         uvec4 grid_1 = _group_0_binding_0_cs.far_grid;
-        uint _e86 = _group_0_binding_0_cs.lights_per_subset;
-        uint _e92 = _group_0_binding_0_cs.far_groups_at;
-        uint _e97 = group_count(grid_1.x, grid_1.y, grid_1.z, grid_1.w);
-        cull_tile(li, _e71.lo, _e71.hi, grid_1, (_e76 * (_e86 / CLUSTER)), (_e92 + (_e76 * _e97)));
+        uint _e56 = _group_0_binding_0_cs.lights_per_subset;
+        uint _e62 = _group_0_binding_0_cs.far_groups_at;
+        uint _e67 = group_count(grid_1.x, grid_1.y, grid_1.z, grid_1.w);
+        cull_tile(li, _e41.lo, _e41.hi, grid_1, (_e46 * (_e56 / CLUSTER)), (_e62 + (_e46 * _e67)));
     }
-    if (inside) {
-        vec3 _e103 = e;
-        uint _e105 = kept;
-        _group_0_binding_8_cs[pix] = vec4(_e103, float(_e105));
-        vec3 _e111 = s;
-        _group_0_binding_10_cs[pix] = vec4(_e111, 0.0);
+    if (inside_1) {
+        vec3 _e73 = e;
+        uint _e75 = kept;
+        _group_0_binding_8_cs[pix_1] = vec4(_e73, float(_e75));
+        vec3 _e81 = s;
+        _group_0_binding_10_cs[pix_1] = vec4(_e81, 0.0);
         return;
     } else {
         return;

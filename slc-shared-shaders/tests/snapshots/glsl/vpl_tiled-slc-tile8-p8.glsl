@@ -194,41 +194,41 @@ uint group_clusters(uint g_1, uint bw_3, uint bh_2, uint gw_3, uint gh_2) {
 }
 
 bool box_overlaps_box(vec3 lo1_, vec3 hi1_, vec3 lo2_, vec3 hi2_) {
+    bool local_1 = false;
     bool local_2 = false;
     bool local_3 = false;
     bool local_4 = false;
     bool local_5 = false;
-    bool local_6 = false;
     if ((lo1_.x <= hi2_.x)) {
-        local_2 = (lo2_.x <= hi1_.x);
+        local_1 = (lo2_.x <= hi1_.x);
+    } else {
+        local_1 = false;
+    }
+    bool _e13 = local_1;
+    if (_e13) {
+        local_2 = (lo1_.y <= hi2_.y);
     } else {
         local_2 = false;
     }
-    bool _e13 = local_2;
-    if (_e13) {
-        local_3 = (lo1_.y <= hi2_.y);
+    bool _e20 = local_2;
+    if (_e20) {
+        local_3 = (lo2_.y <= hi1_.y);
     } else {
         local_3 = false;
     }
-    bool _e20 = local_3;
-    if (_e20) {
-        local_4 = (lo2_.y <= hi1_.y);
+    bool _e27 = local_3;
+    if (_e27) {
+        local_4 = (lo1_.z <= hi2_.z);
     } else {
         local_4 = false;
     }
-    bool _e27 = local_4;
-    if (_e27) {
-        local_5 = (lo1_.z <= hi2_.z);
+    bool _e34 = local_4;
+    if (_e34) {
+        local_5 = (lo2_.z <= hi1_.z);
     } else {
         local_5 = false;
     }
-    bool _e34 = local_5;
-    if (_e34) {
-        local_6 = (lo2_.z <= hi1_.z);
-    } else {
-        local_6 = false;
-    }
-    bool _e41 = local_6;
+    bool _e41 = local_5;
     return _e41;
 }
 
@@ -308,8 +308,8 @@ WorkgroupBox workgroup_bounds(uint li_1, vec3 lo, vec3 hi) {
     return _e50;
 }
 
-WorkgroupBox workgroup_box(uint li_2, vec3 p_1, bool has) {
-    WorkgroupBox _e9 = workgroup_bounds(li_2, (has ? p_1 : vec3(3.4028235e38)), (has ? p_1 : vec3(-3.4028235e38)));
+WorkgroupBox workgroup_box(uint li_2, vec3 p, bool has) {
+    WorkgroupBox _e9 = workgroup_bounds(li_2, (has ? p : vec3(3.4028235e38)), (has ? p : vec3(-3.4028235e38)));
     return _e9;
 }
 
@@ -323,7 +323,7 @@ vec4 surface_at(ivec2 texel) {
 }
 
 GbTexel gbuffer_at(uint i) {
-    bool local_7 = false;
+    bool local_6 = false;
     uint _e3 = _group_0_binding_1_cs.width;
     uint _e8 = _group_0_binding_1_cs.width;
     ivec2 texel_1 = ivec2(int((i % _e3)), int((i / _e8)));
@@ -332,16 +332,40 @@ GbTexel gbuffer_at(uint i) {
     vec3 n = _e15.xyz;
     float len2_ = dot(n, n);
     if ((_e12.w > 0.0)) {
-        local_7 = (len2_ > 0.0);
+        local_6 = (len2_ > 0.0);
     } else {
-        local_7 = false;
+        local_6 = false;
     }
-    bool valid_1 = local_7;
+    bool valid_1 = local_6;
     vec3 _e30 = _group_0_binding_1_cs.eye;
     vec3 v_2 = (_e12.xyz - _e30);
     vec4 position = vec4(_e12.xyz, (valid_1 ? 1.0 : 0.0));
     vec4 normal = (valid_1 ? vec4((n / vec3(sqrt(len2_))), sqrt(dot(v_2, v_2))) : vec4(0.0, 0.0, 0.0, 1e30));
     return GbTexel(position, normal);
+}
+
+WorkgroupBox load_receiver(uint li_3, uint pix, bool inside) {
+    vec4 p_1 = vec4(0.0);
+    bool local_7 = false;
+    if (inside) {
+        GbTexel _e6 = gbuffer_at(pix);
+        p_1 = _e6.position;
+        nrm = _e6.normal.xyz;
+    }
+    vec4 _e12 = p_1;
+    pos = _e12.xyz;
+    if (inside) {
+        float _e18 = p_1.w;
+        local_7 = (_e18 > 0.0);
+    } else {
+        local_7 = false;
+    }
+    bool _e22 = local_7;
+    valid = _e22;
+    vec3 _e24 = pos;
+    bool _e26 = valid;
+    WorkgroupBox _e27 = workgroup_box(li_3, _e24, _e26);
+    return _e27;
 }
 
 void shade_light(uint j) {
@@ -404,10 +428,10 @@ void shade_list(uint count) {
     }
 }
 
-void cull_tile(uint li_3, vec3 lo_1, vec3 hi_1, uvec4 grid, uint clusters_at, uint groups_at) {
+void cull_tile(uint li_4, vec3 lo_1, vec3 hi_1, uvec4 grid, uint clusters_at, uint groups_at) {
     uint g_2 = 0u;
     uint h = 0u;
-    if ((li_3 == 0u)) {
+    if ((li_4 == 0u)) {
         atomicExchange(list_count, 0u);
     }
     uint _e14 = group_count(grid.x, grid.y, grid.z, grid.w);
@@ -435,17 +459,17 @@ void cull_tile(uint li_3, vec3 lo_1, vec3 hi_1, uvec4 grid, uint clusters_at, ui
             uint first = (clusters_at + _e33);
             uint _e35 = g_2;
             uint _e40 = group_clusters(_e35, grid.x, grid.y, grid.z, grid.w);
-            if ((li_3 == 0u)) {
+            if ((li_4 == 0u)) {
                 atomicExchange(hit_count, 0u);
             }
             memoryBarrierShared();
             barrier();
-            if ((li_3 < _e40)) {
-                GpuBox cb = _group_0_binding_7_cs[(first + li_3)];
+            if ((li_4 < _e40)) {
+                GpuBox cb = _group_0_binding_7_cs[(first + li_4)];
                 bool _e52 = box_overlaps_box(cb.lo, cb.hi, lo_1, hi_1);
                 if (_e52) {
                     uint _e56 = atomicAdd(hit_count, 1u);
-                    cluster_hits[_e56] = (first + li_3);
+                    cluster_hits[_e56] = (first + li_4);
                 }
             }
             memoryBarrierShared();
@@ -476,7 +500,7 @@ void cull_tile(uint li_3, vec3 lo_1, vec3 hi_1, uvec4 grid, uint clusters_at, ui
                         shade_list(_e66);
                         memoryBarrierShared();
                         barrier();
-                        if ((li_3 == 0u)) {
+                        if ((li_4 == 0u)) {
                             atomicExchange(list_count, 0u);
                         }
                         memoryBarrierShared();
@@ -484,7 +508,7 @@ void cull_tile(uint li_3, vec3 lo_1, vec3 hi_1, uvec4 grid, uint clusters_at, ui
                     }
                     uint _e76 = h;
                     uint _e78 = cluster_hits[_e76];
-                    uint _e79 = cluster_slot(_e78, li_3);
+                    uint _e79 = cluster_slot(_e78, li_4);
                     GpuLight l_1 = _group_0_binding_4_cs[_e79];
                     if (any(notEqual(l_1.intensity, vec3(0.0)))) {
                         float _e89 = cull_r2_of(_e79);
@@ -526,8 +550,6 @@ void main() {
     uvec3 lid = gl_LocalInvocationID;
     uint li = gl_LocalInvocationIndex;
     bool local = false;
-    vec4 p = vec4(0.0);
-    bool local_1 = false;
     uint sub = wg.z;
     uint px = ((sub % P) + (((wg.x * TILE) + lid.x) * P));
     uint py = ((sub / P) + (((wg.y * TILE) + lid.y) * P));
@@ -538,41 +560,24 @@ void main() {
     } else {
         local = false;
     }
-    bool inside = local;
+    bool inside_1 = local;
     uint _e38 = _group_0_binding_0_cs.width;
-    uint pix = ((py * _e38) + px);
-    if (inside) {
-        GbTexel _e44 = gbuffer_at(pix);
-        p = _e44.position;
-        nrm = _e44.normal.xyz;
-    }
-    vec4 _e50 = p;
-    pos = _e50.xyz;
-    if (inside) {
-        float _e56 = p.w;
-        local_1 = (_e56 > 0.0);
-    } else {
-        local_1 = false;
-    }
-    bool _e60 = local_1;
-    valid = _e60;
-    vec3 _e62 = pos;
-    bool _e64 = valid;
-    WorkgroupBox _e65 = workgroup_box(li, _e62, _e64);
-    uint _e68 = _group_0_binding_0_cs.subset_shift;
-    uint _e70 = shifted_subset(sub, _e68, P);
-    bool _e71 = box_is_empty(_e65);
-    if (!(_e71)) {
+    uint pix_1 = ((py * _e38) + px);
+    WorkgroupBox _e41 = load_receiver(li, pix_1, inside_1);
+    uint _e44 = _group_0_binding_0_cs.subset_shift;
+    uint _e46 = shifted_subset(sub, _e44, P);
+    bool _e47 = box_is_empty(_e41);
+    if (!(_e47)) {
         uvec4 grid_1 = _group_0_binding_0_cs.far_grid;
-        uint _e80 = _group_0_binding_0_cs.lights_per_subset;
-        uint _e86 = _group_0_binding_0_cs.far_groups_at;
-        uint _e91 = group_count(grid_1.x, grid_1.y, grid_1.z, grid_1.w);
-        cull_tile(li, _e65.lo, _e65.hi, grid_1, (_e70 * (_e80 / CLUSTER)), (_e86 + (_e70 * _e91)));
+        uint _e56 = _group_0_binding_0_cs.lights_per_subset;
+        uint _e62 = _group_0_binding_0_cs.far_groups_at;
+        uint _e67 = group_count(grid_1.x, grid_1.y, grid_1.z, grid_1.w);
+        cull_tile(li, _e41.lo, _e41.hi, grid_1, (_e46 * (_e56 / CLUSTER)), (_e62 + (_e46 * _e67)));
     }
-    if (inside) {
-        vec3 _e97 = e;
-        uint _e99 = kept;
-        _group_0_binding_8_cs[pix] = vec4(_e97, float(_e99));
+    if (inside_1) {
+        vec3 _e73 = e;
+        uint _e75 = kept;
+        _group_0_binding_8_cs[pix_1] = vec4(_e73, float(_e75));
         return;
     } else {
         return;

@@ -190,42 +190,42 @@ uint group_clusters(uint g_1, uint bw_3, uint bh_2, uint gw_3, uint gh_2)
 
 bool box_overlaps_box(float3 lo1_, float3 hi1_, float3 lo2_, float3 hi2_)
 {
+    bool local_1 = (bool)0;
     bool local_2 = (bool)0;
     bool local_3 = (bool)0;
     bool local_4 = (bool)0;
     bool local_5 = (bool)0;
-    bool local_6 = (bool)0;
 
     if ((lo1_.x <= hi2_.x)) {
-        local_2 = (lo2_.x <= hi1_.x);
+        local_1 = (lo2_.x <= hi1_.x);
+    } else {
+        local_1 = false;
+    }
+    bool _e13 = local_1;
+    if (_e13) {
+        local_2 = (lo1_.y <= hi2_.y);
     } else {
         local_2 = false;
     }
-    bool _e13 = local_2;
-    if (_e13) {
-        local_3 = (lo1_.y <= hi2_.y);
+    bool _e20 = local_2;
+    if (_e20) {
+        local_3 = (lo2_.y <= hi1_.y);
     } else {
         local_3 = false;
     }
-    bool _e20 = local_3;
-    if (_e20) {
-        local_4 = (lo2_.y <= hi1_.y);
+    bool _e27 = local_3;
+    if (_e27) {
+        local_4 = (lo1_.z <= hi2_.z);
     } else {
         local_4 = false;
     }
-    bool _e27 = local_4;
-    if (_e27) {
-        local_5 = (lo1_.z <= hi2_.z);
+    bool _e34 = local_4;
+    if (_e34) {
+        local_5 = (lo2_.z <= hi1_.z);
     } else {
         local_5 = false;
     }
-    bool _e34 = local_5;
-    if (_e34) {
-        local_6 = (lo2_.z <= hi1_.z);
-    } else {
-        local_6 = false;
-    }
-    bool _e41 = local_6;
+    bool _e41 = local_5;
     return _e41;
 }
 
@@ -318,9 +318,9 @@ WorkgroupBox workgroup_bounds(uint li_1, float3 lo, float3 hi)
     return workgroupbox;
 }
 
-WorkgroupBox workgroup_box(uint li_2, float3 p_1, bool has)
+WorkgroupBox workgroup_box(uint li_2, float3 p, bool has)
 {
-    const WorkgroupBox _e9 = workgroup_bounds(li_2, (has ? p_1 : (3.4028235e38).xxx), (has ? p_1 : (-3.4028235e38).xxx));
+    const WorkgroupBox _e9 = workgroup_bounds(li_2, (has ? p : (3.4028235e38).xxx), (has ? p : (-3.4028235e38).xxx));
     const WorkgroupBox workgroupbox_1 = _e9;
     return workgroupbox_1;
 }
@@ -345,7 +345,7 @@ GbTexel ConstructGbTexel(float4 arg0, float4 arg1) {
 
 GbTexel gbuffer_at(uint i)
 {
-    bool local_7 = (bool)0;
+    bool local_6 = (bool)0;
 
     uint _e3 = view.width;
     uint _e8 = view.width;
@@ -355,11 +355,11 @@ GbTexel gbuffer_at(uint i)
     float3 n = _e15.xyz;
     float len2_ = dot(n, n);
     if ((_e12.w > 0.0)) {
-        local_7 = (len2_ > 0.0);
+        local_6 = (len2_ > 0.0);
     } else {
-        local_7 = false;
+        local_6 = false;
     }
-    bool valid_1 = local_7;
+    bool valid_1 = local_6;
     float3 _e30 = view.eye;
     float3 v_2 = (_e12.xyz - _e30);
     float4 position = float4(_e12.xyz, (valid_1 ? 1.0 : 0.0));
@@ -379,6 +379,33 @@ float near_cull_r2_of(uint slot_1, float near_r2_3)
     const float _e2 = near_r2_of(slot_1);
     const float _e3 = vpl_near_cull_range2_(_e2, near_r2_3);
     return _e3;
+}
+
+WorkgroupBox load_receiver(uint li_3, uint pix, bool inside)
+{
+    float4 p_1 = (0.0).xxxx;
+    bool local_7 = (bool)0;
+
+    if (inside) {
+        const GbTexel _e6 = gbuffer_at(pix);
+        p_1 = _e6.position;
+        nrm = _e6.normal.xyz;
+    }
+    float4 _e12 = p_1;
+    pos = _e12.xyz;
+    if (inside) {
+        float _e18 = p_1.w;
+        local_7 = (_e18 > 0.0);
+    } else {
+        local_7 = false;
+    }
+    bool _e22 = local_7;
+    valid = _e22;
+    float3 _e24 = pos;
+    bool _e26 = valid;
+    const WorkgroupBox _e27 = workgroup_box(li_3, _e24, _e26);
+    const WorkgroupBox workgroupbox_2 = _e27;
+    return workgroupbox_2;
 }
 
 uint cluster_slot(uint c_1, uint k)
@@ -466,12 +493,12 @@ GpuBox ConstructGpuBox(float3 arg0, float arg1, float3 arg2, float arg3) {
     return ret;
 }
 
-void cull_tile(uint li_3, float3 lo_1, float3 hi_1, uint4 grid, uint clusters_at, uint groups_at)
+void cull_tile(uint li_4, float3 lo_1, float3 hi_1, uint4 grid, uint clusters_at, uint groups_at)
 {
     uint g_2 = 0u;
     uint h = (uint)0;
 
-    if ((li_3 == 0u)) {
+    if ((li_4 == 0u)) {
         { uint dummy = 0; InterlockedExchange(list_count, 0u, dummy); }
     }
     const uint _e14 = group_count(grid.x, grid.y, grid.z, grid.w);
@@ -502,16 +529,16 @@ void cull_tile(uint li_3, float3 lo_1, float3 hi_1, uint4 grid, uint clusters_at
             uint first = (clusters_at + _e33);
             uint _e35 = g_2;
             const uint _e40 = group_clusters(_e35, grid.x, grid.y, grid.z, grid.w);
-            if ((li_3 == 0u)) {
+            if ((li_4 == 0u)) {
                 { uint dummy_1 = 0; InterlockedExchange(hit_count, 0u, dummy_1); }
             }
             GroupMemoryBarrierWithGroupSync();
-            if ((li_3 < _e40)) {
-                GpuBox cb = ConstructGpuBox(asfloat(boxes.Load3((first + li_3)*32+0)), asfloat(boxes.Load((first + li_3)*32+12)), asfloat(boxes.Load3((first + li_3)*32+16)), asfloat(boxes.Load((first + li_3)*32+28)));
+            if ((li_4 < _e40)) {
+                GpuBox cb = ConstructGpuBox(asfloat(boxes.Load3((first + li_4)*32+0)), asfloat(boxes.Load((first + li_4)*32+12)), asfloat(boxes.Load3((first + li_4)*32+16)), asfloat(boxes.Load((first + li_4)*32+28)));
                 const bool _e52 = box_overlaps_box(cb.lo, cb.hi, lo_1, hi_1);
                 if (_e52) {
                     uint _e56; InterlockedAdd(hit_count, 1u, _e56);
-                    cluster_hits[min(uint(_e56), 63u)] = (first + li_3);
+                    cluster_hits[min(uint(_e56), 63u)] = (first + li_4);
                 }
             }
             GroupMemoryBarrierWithGroupSync();
@@ -540,14 +567,14 @@ void cull_tile(uint li_3, float3 lo_1, float3 hi_1, uint4 grid, uint clusters_at
                     if (((_e66 + CLUSTER) > MAX_TILE_LIGHTS)) {
                         shade_list(_e66);
                         GroupMemoryBarrierWithGroupSync();
-                        if ((li_3 == 0u)) {
+                        if ((li_4 == 0u)) {
                             { uint dummy_2 = 0; InterlockedExchange(list_count, 0u, dummy_2); }
                         }
                         GroupMemoryBarrierWithGroupSync();
                     }
                     uint _e76 = h;
                     uint _e78 = cluster_hits[min(uint(_e76), 63u)];
-                    const uint _e79 = cluster_slot(_e78, li_3);
+                    const uint _e79 = cluster_slot(_e78, li_4);
                     GpuLight l_1 = ConstructGpuLight(asfloat(lights.Load3(_e79*64+0)), asuint(lights.Load(_e79*64+12)), asfloat(lights.Load3(_e79*64+16)), asfloat(lights.Load(_e79*64+28)), asfloat(lights.Load3(_e79*64+32)), asfloat(lights.Load(_e79*64+44)), asfloat(lights.Load3(_e79*64+48)), asuint(lights.Load(_e79*64+60)));
                     if (any((l_1.intensity != (0.0).xxx))) {
                         const float _e89 = cull_r2_of(_e79);
@@ -584,8 +611,6 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
     }
     GroupMemoryBarrierWithGroupSync();
     bool local = (bool)0;
-    float4 p = (0.0).xxxx;
-    bool local_1 = (bool)0;
 
     uint px = ((wg.x * TILE) + lid.x);
     uint py = ((wg.y * TILE) + lid.y);
@@ -596,40 +621,23 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
     } else {
         local = false;
     }
-    bool inside = local;
+    bool inside_1 = local;
     uint _e27 = params.width;
-    uint pix = ((py * _e27) + px);
-    if (inside) {
-        const GbTexel _e33 = gbuffer_at(pix);
-        p = _e33.position;
-        nrm = _e33.normal.xyz;
+    uint pix_1 = ((py * _e27) + px);
+    const WorkgroupBox _e30 = load_receiver(li, pix_1, inside_1);
+    const bool _e31 = box_is_empty(_e30);
+    if (!(_e31)) {
+        uint4 _e37 = params.near_grid;
+        uint _e40 = params.near_clusters_at;
+        uint _e43 = params.near_groups_at;
+        cull_tile(li, _e30.lo, _e30.hi, _e37, _e40, _e43);
     }
-    float4 _e39 = p;
-    pos = _e39.xyz;
-    if (inside) {
-        float _e45 = p.w;
-        local_1 = (_e45 > 0.0);
-    } else {
-        local_1 = false;
-    }
-    bool _e49 = local_1;
-    valid = _e49;
-    float3 _e51 = pos;
-    bool _e53 = valid;
-    const WorkgroupBox _e54 = workgroup_box(li, _e51, _e53);
-    const bool _e55 = box_is_empty(_e54);
-    if (!(_e55)) {
-        uint4 _e61 = params.near_grid;
-        uint _e64 = params.near_clusters_at;
-        uint _e67 = params.near_groups_at;
-        cull_tile(li, _e54.lo, _e54.hi, _e61, _e64, _e67);
-    }
-    bool _e69 = valid;
-    if (_e69) {
-        float4 old = asfloat(irradiance.Load4(pix*16));
-        float3 _e77 = e;
-        uint _e81 = kept;
-        irradiance.Store4(pix*16, asuint(float4((old.xyz + _e77), (old.w + float(_e81)))));
+    bool _e45 = valid;
+    if (_e45) {
+        float4 old = asfloat(irradiance.Load4(pix_1*16));
+        float3 _e53 = e;
+        uint _e57 = kept;
+        irradiance.Store4(pix_1*16, asuint(float4((old.xyz + _e53), (old.w + float(_e57)))));
         return;
     } else {
         return;

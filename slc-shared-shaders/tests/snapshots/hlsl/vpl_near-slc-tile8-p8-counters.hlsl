@@ -209,42 +209,42 @@ uint group_clusters(uint g_1, uint bw_3, uint bh_2, uint gw_3, uint gh_2)
 
 bool box_overlaps_box(float3 lo1_, float3 hi1_, float3 lo2_, float3 hi2_)
 {
+    bool local_1 = (bool)0;
     bool local_2 = (bool)0;
     bool local_3 = (bool)0;
     bool local_4 = (bool)0;
     bool local_5 = (bool)0;
-    bool local_6 = (bool)0;
 
     if ((lo1_.x <= hi2_.x)) {
-        local_2 = (lo2_.x <= hi1_.x);
+        local_1 = (lo2_.x <= hi1_.x);
+    } else {
+        local_1 = false;
+    }
+    bool _e13 = local_1;
+    if (_e13) {
+        local_2 = (lo1_.y <= hi2_.y);
     } else {
         local_2 = false;
     }
-    bool _e13 = local_2;
-    if (_e13) {
-        local_3 = (lo1_.y <= hi2_.y);
+    bool _e20 = local_2;
+    if (_e20) {
+        local_3 = (lo2_.y <= hi1_.y);
     } else {
         local_3 = false;
     }
-    bool _e20 = local_3;
-    if (_e20) {
-        local_4 = (lo2_.y <= hi1_.y);
+    bool _e27 = local_3;
+    if (_e27) {
+        local_4 = (lo1_.z <= hi2_.z);
     } else {
         local_4 = false;
     }
-    bool _e27 = local_4;
-    if (_e27) {
-        local_5 = (lo1_.z <= hi2_.z);
+    bool _e34 = local_4;
+    if (_e34) {
+        local_5 = (lo2_.z <= hi1_.z);
     } else {
         local_5 = false;
     }
-    bool _e34 = local_5;
-    if (_e34) {
-        local_6 = (lo2_.z <= hi1_.z);
-    } else {
-        local_6 = false;
-    }
-    bool _e41 = local_6;
+    bool _e41 = local_5;
     return _e41;
 }
 
@@ -344,9 +344,9 @@ WorkgroupBox workgroup_bounds(uint li_1, float3 lo, float3 hi)
     return workgroupbox;
 }
 
-WorkgroupBox workgroup_box(uint li_2, float3 p_1, bool has)
+WorkgroupBox workgroup_box(uint li_2, float3 p, bool has)
 {
-    const WorkgroupBox _e9 = workgroup_bounds(li_2, (has ? p_1 : (3.4028235e38).xxx), (has ? p_1 : (-3.4028235e38).xxx));
+    const WorkgroupBox _e9 = workgroup_bounds(li_2, (has ? p : (3.4028235e38).xxx), (has ? p : (-3.4028235e38).xxx));
     const WorkgroupBox workgroupbox_1 = _e9;
     return workgroupbox_1;
 }
@@ -371,7 +371,7 @@ GbTexel ConstructGbTexel(float4 arg0, float4 arg1) {
 
 GbTexel gbuffer_at(uint i)
 {
-    bool local_7 = (bool)0;
+    bool local_6 = (bool)0;
 
     uint _e3 = view.width;
     uint _e8 = view.width;
@@ -381,11 +381,11 @@ GbTexel gbuffer_at(uint i)
     float3 n_2 = _e15.xyz;
     float len2_ = dot(n_2, n_2);
     if ((_e12.w > 0.0)) {
-        local_7 = (len2_ > 0.0);
+        local_6 = (len2_ > 0.0);
     } else {
-        local_7 = false;
+        local_6 = false;
     }
-    bool valid_1 = local_7;
+    bool valid_1 = local_6;
     float3 _e30 = view.eye;
     float3 v_2 = (_e12.xyz - _e30);
     float4 position = float4(_e12.xyz, (valid_1 ? 1.0 : 0.0));
@@ -454,6 +454,49 @@ void counts_end(uint li_5)
     } else {
         return;
     }
+}
+
+WorkgroupBox load_receiver(uint li_6, uint pix, bool inside)
+{
+    float4 p_1 = (0.0).xxxx;
+    bool local_7 = (bool)0;
+
+    if (inside) {
+        const GbTexel _e6 = gbuffer_at(pix);
+        p_1 = _e6.position;
+        nrm = _e6.normal.xyz;
+    }
+    float4 _e12 = p_1;
+    pos = _e12.xyz;
+    if (inside) {
+        float _e18 = p_1.w;
+        local_7 = (_e18 > 0.0);
+    } else {
+        local_7 = false;
+    }
+    bool _e22 = local_7;
+    valid = _e22;
+    counts_begin(li_6);
+    bool _e24 = valid;
+    if (_e24) {
+        count_one(COUNT_PIXELS);
+    }
+    float3 _e27 = pos;
+    bool _e29 = valid;
+    const WorkgroupBox _e30 = workgroup_box(li_6, _e27, _e29);
+    const WorkgroupBox workgroupbox_2 = _e30;
+    return workgroupbox_2;
+}
+
+void count_receiver(uint li_7)
+{
+    bool _e2 = valid;
+    if (_e2) {
+        uint _e5 = kept;
+        count_add(COUNT_KEPT, _e5);
+    }
+    counts_end(li_7);
+    return;
 }
 
 uint cluster_slot(uint c_1, uint k)
@@ -544,16 +587,16 @@ GpuBox ConstructGpuBox(float3 arg0, float arg1, float3 arg2, float arg3) {
     return ret;
 }
 
-void cull_tile(uint li_6, float3 lo_1, float3 hi_1, uint4 grid, uint clusters_at, uint groups_at)
+void cull_tile(uint li_8, float3 lo_1, float3 hi_1, uint4 grid, uint clusters_at, uint groups_at)
 {
     uint g_2 = 0u;
     uint h = (uint)0;
 
-    if ((li_6 == 0u)) {
+    if ((li_8 == 0u)) {
         { uint dummy_1 = 0; InterlockedExchange(list_count, 0u, dummy_1); }
     }
     const uint _e14 = group_count(grid.x, grid.y, grid.z, grid.w);
-    count_tests(li_6, COUNT_GROUP_TESTS, _e14);
+    count_tests(li_8, COUNT_GROUP_TESTS, _e14);
     uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
     bool loop_init_2 = true;
     while(true) {
@@ -581,17 +624,17 @@ void cull_tile(uint li_6, float3 lo_1, float3 hi_1, uint4 grid, uint clusters_at
             uint first = (clusters_at + _e34);
             uint _e36 = g_2;
             const uint _e41 = group_clusters(_e36, grid.x, grid.y, grid.z, grid.w);
-            count_tests(li_6, COUNT_CLUSTER_TESTS, _e41);
-            if ((li_6 == 0u)) {
+            count_tests(li_8, COUNT_CLUSTER_TESTS, _e41);
+            if ((li_8 == 0u)) {
                 { uint dummy_2 = 0; InterlockedExchange(hit_count, 0u, dummy_2); }
             }
             GroupMemoryBarrierWithGroupSync();
-            if ((li_6 < _e41)) {
-                GpuBox cb = ConstructGpuBox(asfloat(boxes.Load3((first + li_6)*32+0)), asfloat(boxes.Load((first + li_6)*32+12)), asfloat(boxes.Load3((first + li_6)*32+16)), asfloat(boxes.Load((first + li_6)*32+28)));
+            if ((li_8 < _e41)) {
+                GpuBox cb = ConstructGpuBox(asfloat(boxes.Load3((first + li_8)*32+0)), asfloat(boxes.Load((first + li_8)*32+12)), asfloat(boxes.Load3((first + li_8)*32+16)), asfloat(boxes.Load((first + li_8)*32+28)));
                 const bool _e54 = box_overlaps_box(cb.lo, cb.hi, lo_1, hi_1);
                 if (_e54) {
                     uint _e58; InterlockedAdd(hit_count, 1u, _e58);
-                    cluster_hits[min(uint(_e58), 63u)] = (first + li_6);
+                    cluster_hits[min(uint(_e58), 63u)] = (first + li_8);
                 }
             }
             GroupMemoryBarrierWithGroupSync();
@@ -620,14 +663,14 @@ void cull_tile(uint li_6, float3 lo_1, float3 hi_1, uint4 grid, uint clusters_at
                     if (((_e68 + CLUSTER) > MAX_TILE_LIGHTS)) {
                         shade_list(_e68);
                         GroupMemoryBarrierWithGroupSync();
-                        if ((li_6 == 0u)) {
+                        if ((li_8 == 0u)) {
                             { uint dummy_3 = 0; InterlockedExchange(list_count, 0u, dummy_3); }
                         }
                         GroupMemoryBarrierWithGroupSync();
                     }
                     uint _e78 = h;
                     uint _e80 = cluster_hits[min(uint(_e78), 63u)];
-                    const uint _e81 = cluster_slot(_e80, li_6);
+                    const uint _e81 = cluster_slot(_e80, li_8);
                     GpuLight l_1 = ConstructGpuLight(asfloat(lights.Load3(_e81*64+0)), asuint(lights.Load(_e81*64+12)), asfloat(lights.Load3(_e81*64+16)), asfloat(lights.Load(_e81*64+28)), asfloat(lights.Load3(_e81*64+32)), asfloat(lights.Load(_e81*64+44)), asfloat(lights.Load3(_e81*64+48)), asuint(lights.Load(_e81*64+60)));
                     if (any((l_1.intensity != (0.0).xxx))) {
                         count_one(COUNT_SPHERE_TESTS);
@@ -666,8 +709,6 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
     }
     GroupMemoryBarrierWithGroupSync();
     bool local = (bool)0;
-    float4 p = (0.0).xxxx;
-    bool local_1 = (bool)0;
 
     uint px = ((wg.x * TILE) + lid.x);
     uint py = ((wg.y * TILE) + lid.y);
@@ -678,52 +719,25 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
     } else {
         local = false;
     }
-    bool inside = local;
+    bool inside_1 = local;
     uint _e27 = params.width;
-    uint pix = ((py * _e27) + px);
-    if (inside) {
-        const GbTexel _e33 = gbuffer_at(pix);
-        p = _e33.position;
-        nrm = _e33.normal.xyz;
-    }
-    float4 _e39 = p;
-    pos = _e39.xyz;
-    if (inside) {
-        float _e45 = p.w;
-        local_1 = (_e45 > 0.0);
-    } else {
-        local_1 = false;
-    }
-    bool _e49 = local_1;
-    valid = _e49;
-    counts_begin(li);
-    bool _e51 = valid;
-    if (_e51) {
-        count_one(COUNT_PIXELS);
-    }
-    float3 _e54 = pos;
-    bool _e56 = valid;
-    const WorkgroupBox _e57 = workgroup_box(li, _e54, _e56);
-    const bool _e58 = box_is_empty(_e57);
-    if (!(_e58)) {
+    uint pix_1 = ((py * _e27) + px);
+    const WorkgroupBox _e30 = load_receiver(li, pix_1, inside_1);
+    const bool _e31 = box_is_empty(_e30);
+    if (!(_e31)) {
         count_tests(li, COUNT_TILES, 1u);
-        uint4 _e66 = params.near_grid;
-        uint _e69 = params.near_clusters_at;
-        uint _e72 = params.near_groups_at;
-        cull_tile(li, _e57.lo, _e57.hi, _e66, _e69, _e72);
+        uint4 _e39 = params.near_grid;
+        uint _e42 = params.near_clusters_at;
+        uint _e45 = params.near_groups_at;
+        cull_tile(li, _e30.lo, _e30.hi, _e39, _e42, _e45);
     }
-    bool _e74 = valid;
-    if (_e74) {
-        uint _e77 = kept;
-        count_add(COUNT_KEPT, _e77);
-    }
-    counts_end(li);
-    bool _e79 = valid;
-    if (_e79) {
-        float4 old = asfloat(irradiance.Load4(pix*16));
-        float3 _e87 = e;
-        uint _e91 = kept;
-        irradiance.Store4(pix*16, asuint(float4((old.xyz + _e87), (old.w + float(_e91)))));
+    count_receiver(li);
+    bool _e47 = valid;
+    if (_e47) {
+        float4 old = asfloat(irradiance.Load4(pix_1*16));
+        float3 _e55 = e;
+        uint _e59 = kept;
+        irradiance.Store4(pix_1*16, asuint(float4((old.xyz + _e55), (old.w + float(_e59)))));
         return;
     } else {
         return;

@@ -158,14 +158,14 @@ float smith_root(float cos_, float alpha_1)
 
 float smith_visibility(float n_l_1, float n_v, float alpha_2)
 {
-    bool local_2 = (bool)0;
+    bool local_1 = (bool)0;
 
     if (!((n_l_1 <= 0.0))) {
-        local_2 = (n_v <= 0.0);
+        local_1 = (n_v <= 0.0);
     } else {
-        local_2 = true;
+        local_1 = true;
     }
-    bool _e11 = local_2;
+    bool _e11 = local_1;
     if (_e11) {
         return 0.0;
     }
@@ -206,16 +206,16 @@ float half_cosine(float3 v_1, float3 l)
 
 float3 specular_brdf(float3 base_2, float metallic_2, float3 f0_d_2, float f90_d_2, float alpha_3, float3 n, float3 v_2, float3 l_1)
 {
-    bool local_3 = (bool)0;
+    bool local_2 = (bool)0;
 
     float n_l_2 = dot(n, l_1);
     float n_v_1 = dot(n, v_2);
     if (!((n_l_2 <= 0.0))) {
-        local_3 = (n_v_1 <= 0.0);
+        local_2 = (n_v_1 <= 0.0);
     } else {
-        local_3 = true;
+        local_2 = true;
     }
-    bool _e18 = local_3;
+    bool _e18 = local_2;
     if (_e18) {
         return float3(0.0, 0.0, 0.0);
     }
@@ -254,21 +254,21 @@ float3 specular_correction(float3 base_5, float metallic_5, float3 f0_d_4, float
 
 bool has_specular(float metallic_6, float3 f0_d_5, float f90_d_5)
 {
+    bool local_3 = (bool)0;
     bool local_4 = (bool)0;
-    bool local_5 = (bool)0;
 
     if (!((metallic_6 > 0.0))) {
-        local_4 = (f90_d_5 > 0.0);
+        local_3 = (f90_d_5 > 0.0);
+    } else {
+        local_3 = true;
+    }
+    bool _e11 = local_3;
+    if (!(_e11)) {
+        local_4 = (max(max(f0_d_5.x, f0_d_5.y), f0_d_5.z) > 0.0);
     } else {
         local_4 = true;
     }
-    bool _e11 = local_4;
-    if (!(_e11)) {
-        local_5 = (max(max(f0_d_5.x, f0_d_5.y), f0_d_5.z) > 0.0);
-    } else {
-        local_5 = true;
-    }
-    bool _e23 = local_5;
+    bool _e23 = local_4;
     return _e23;
 }
 
@@ -356,9 +356,9 @@ WorkgroupBox workgroup_bounds(uint li_1, float3 lo, float3 hi)
     return workgroupbox;
 }
 
-WorkgroupBox workgroup_box(uint li_2, float3 p_1, bool has)
+WorkgroupBox workgroup_box(uint li_2, float3 p, bool has)
 {
-    const WorkgroupBox _e9 = workgroup_bounds(li_2, (has ? p_1 : (3.4028235e38).xxx), (has ? p_1 : (-3.4028235e38).xxx));
+    const WorkgroupBox _e9 = workgroup_bounds(li_2, (has ? p : (3.4028235e38).xxx), (has ? p : (-3.4028235e38).xxx));
     const WorkgroupBox workgroupbox_1 = _e9;
     return workgroupbox_1;
 }
@@ -378,7 +378,7 @@ GbTexel ConstructGbTexel(float4 arg0, float4 arg1) {
 
 GbTexel gbuffer_at(uint i)
 {
-    bool local_6 = (bool)0;
+    bool local_5 = (bool)0;
 
     uint _e3 = view.width;
     uint _e8 = view.width;
@@ -388,11 +388,11 @@ GbTexel gbuffer_at(uint i)
     float3 n_4 = _e15.xyz;
     float len2_1 = dot(n_4, n_4);
     if ((_e12.w > 0.0)) {
-        local_6 = (len2_1 > 0.0);
+        local_5 = (len2_1 > 0.0);
     } else {
-        local_6 = false;
+        local_5 = false;
     }
-    bool valid_1 = local_6;
+    bool valid_1 = local_5;
     float3 _e30 = view.eye;
     float3 v_6 = (_e12.xyz - _e30);
     float4 position = float4(_e12.xyz, (valid_1 ? 1.0 : 0.0));
@@ -439,19 +439,52 @@ Glossy glossy_at(uint i_1, float3 x)
 
 float3 glossy_term(Glossy g, GpuLight l_4, float3 n_3, float3 v_5, float t)
 {
-    bool local_7 = (bool)0;
+    bool local_6 = (bool)0;
 
     if (!(!(g.on))) {
-        local_7 = (t <= 0.0);
+        local_6 = (t <= 0.0);
     } else {
-        local_7 = true;
+        local_6 = true;
     }
-    bool _e13 = local_7;
+    bool _e13 = local_6;
     if (_e13) {
         return (0.0).xxx;
     }
     const float3 _e30 = specular_correction(g.m.albedo, g.m.metallic, g.m.f0_, g.m.f90_, g.m.alpha, n_3, g.v, normalize(-(v_5)));
     return ((l_4.intensity * _e30) * t);
+}
+
+WorkgroupBox load_receiver(uint li_3, uint pix, bool inside)
+{
+    float4 p_1 = (0.0).xxxx;
+    bool local_7 = (bool)0;
+
+    if (inside) {
+        const GbTexel _e6 = gbuffer_at(pix);
+        p_1 = _e6.position;
+        nrm = _e6.normal.xyz;
+    }
+    float4 _e12 = p_1;
+    pos = _e12.xyz;
+    if (inside) {
+        float _e18 = p_1.w;
+        local_7 = (_e18 > 0.0);
+    } else {
+        local_7 = false;
+    }
+    bool _e22 = local_7;
+    valid = _e22;
+    bool _e24 = valid;
+    if (_e24) {
+        float3 _e27 = pos;
+        const Glossy _e28 = glossy_at(pix, _e27);
+        g_1 = _e28;
+    }
+    float3 _e30 = pos;
+    bool _e32 = valid;
+    const WorkgroupBox _e33 = workgroup_box(li_3, _e30, _e32);
+    const WorkgroupBox workgroupbox_2 = _e33;
+    return workgroupbox_2;
 }
 
 GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, float3 arg4, float arg5, float3 arg6, uint arg7) {
@@ -504,8 +537,6 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
     }
     GroupMemoryBarrierWithGroupSync();
     bool local = (bool)0;
-    float4 p = (0.0).xxxx;
-    bool local_1 = (bool)0;
     uint j = (uint)0;
 
     uint sub = wg.z;
@@ -518,39 +549,16 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
     } else {
         local = false;
     }
-    bool inside = local;
+    bool inside_1 = local;
     uint _e38 = params.width;
-    uint pix = ((py * _e38) + px);
-    if (inside) {
-        const GbTexel _e44 = gbuffer_at(pix);
-        p = _e44.position;
-        nrm = _e44.normal.xyz;
-    }
-    float4 _e50 = p;
-    pos = _e50.xyz;
-    if (inside) {
-        float _e56 = p.w;
-        local_1 = (_e56 > 0.0);
-    } else {
-        local_1 = false;
-    }
-    bool _e60 = local_1;
-    valid = _e60;
-    bool _e62 = valid;
-    if (_e62) {
-        float3 _e65 = pos;
-        const Glossy _e66 = glossy_at(pix, _e65);
-        g_1 = _e66;
-    }
-    float3 _e68 = pos;
-    bool _e70 = valid;
-    const WorkgroupBox _e71 = workgroup_box(li, _e68, _e70);
-    uint _e74 = params.subset_shift;
-    const uint _e76 = shifted_subset(sub, _e74, P);
-    bool _e78 = valid;
-    if (_e78) {
-        uint _e81 = params.lights_per_subset;
-        uint base_6 = (_e76 * _e81);
+    uint pix_1 = ((py * _e38) + px);
+    const WorkgroupBox _e41 = load_receiver(li, pix_1, inside_1);
+    uint _e44 = params.subset_shift;
+    const uint _e46 = shifted_subset(sub, _e44, P);
+    bool _e48 = valid;
+    if (_e48) {
+        uint _e51 = params.lights_per_subset;
+        uint base_6 = (_e46 * _e51);
         j = base_6;
         uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
         bool loop_init_1 = true;
@@ -558,32 +566,32 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
             if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
             loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
             if (!loop_init_1) {
-                uint _e101 = j;
-                j = (_e101 + 1u);
+                uint _e71 = j;
+                j = (_e71 + 1u);
             }
             loop_init_1 = false;
-            uint _e84 = j;
-            uint _e87 = params.lights_per_subset;
-            if ((_e84 < (base_6 + _e87))) {
+            uint _e54 = j;
+            uint _e57 = params.lights_per_subset;
+            if ((_e54 < (base_6 + _e57))) {
             } else {
                 break;
             }
             {
-                uint _e91 = j;
-                float3 _e94 = asfloat(lights.Load3(48+_e91*64));
-                if (any((_e94 != (0.0).xxx))) {
-                    uint _e99 = j;
-                    shade_light(_e99);
+                uint _e61 = j;
+                float3 _e64 = asfloat(lights.Load3(48+_e61*64));
+                if (any((_e64 != (0.0).xxx))) {
+                    uint _e69 = j;
+                    shade_light(_e69);
                 }
             }
         }
     }
-    if (inside) {
-        float3 _e106 = e;
-        uint _e108 = kept;
-        irradiance.Store4(pix*16, asuint(float4(_e106, float(_e108))));
-        float3 _e114 = s;
-        specular.Store4(pix*16, asuint(float4(_e114, 0.0)));
+    if (inside_1) {
+        float3 _e76 = e;
+        uint _e78 = kept;
+        irradiance.Store4(pix_1*16, asuint(float4(_e76, float(_e78))));
+        float3 _e84 = s;
+        specular.Store4(pix_1*16, asuint(float4(_e84, 0.0)));
         return;
     } else {
         return;

@@ -193,42 +193,42 @@ uint group_clusters(uint g_1, uint bw_3, uint bh_2, uint gw_3, uint gh_2)
 
 bool box_overlaps_box(float3 lo1_, float3 hi1_, float3 lo2_, float3 hi2_)
 {
+    bool local_1 = (bool)0;
     bool local_2 = (bool)0;
     bool local_3 = (bool)0;
     bool local_4 = (bool)0;
     bool local_5 = (bool)0;
-    bool local_6 = (bool)0;
 
     if ((lo1_.x <= hi2_.x)) {
-        local_2 = (lo2_.x <= hi1_.x);
+        local_1 = (lo2_.x <= hi1_.x);
+    } else {
+        local_1 = false;
+    }
+    bool _e13 = local_1;
+    if (_e13) {
+        local_2 = (lo1_.y <= hi2_.y);
     } else {
         local_2 = false;
     }
-    bool _e13 = local_2;
-    if (_e13) {
-        local_3 = (lo1_.y <= hi2_.y);
+    bool _e20 = local_2;
+    if (_e20) {
+        local_3 = (lo2_.y <= hi1_.y);
     } else {
         local_3 = false;
     }
-    bool _e20 = local_3;
-    if (_e20) {
-        local_4 = (lo2_.y <= hi1_.y);
+    bool _e27 = local_3;
+    if (_e27) {
+        local_4 = (lo1_.z <= hi2_.z);
     } else {
         local_4 = false;
     }
-    bool _e27 = local_4;
-    if (_e27) {
-        local_5 = (lo1_.z <= hi2_.z);
+    bool _e34 = local_4;
+    if (_e34) {
+        local_5 = (lo2_.z <= hi1_.z);
     } else {
         local_5 = false;
     }
-    bool _e34 = local_5;
-    if (_e34) {
-        local_6 = (lo2_.z <= hi1_.z);
-    } else {
-        local_6 = false;
-    }
-    bool _e41 = local_6;
+    bool _e41 = local_5;
     return _e41;
 }
 
@@ -322,9 +322,9 @@ WorkgroupBox workgroup_bounds(uint li_1, float3 lo, float3 hi)
     return workgroupbox;
 }
 
-WorkgroupBox workgroup_box(uint li_2, float3 p_1, bool has)
+WorkgroupBox workgroup_box(uint li_2, float3 p, bool has)
 {
-    const WorkgroupBox _e9 = workgroup_bounds(li_2, (has ? p_1 : (3.4028235e38).xxx), (has ? p_1 : (-3.4028235e38).xxx));
+    const WorkgroupBox _e9 = workgroup_bounds(li_2, (has ? p : (3.4028235e38).xxx), (has ? p : (-3.4028235e38).xxx));
     const WorkgroupBox workgroupbox_1 = _e9;
     return workgroupbox_1;
 }
@@ -349,7 +349,7 @@ GbTexel ConstructGbTexel(float4 arg0, float4 arg1) {
 
 GbTexel gbuffer_at(uint i)
 {
-    bool local_7 = (bool)0;
+    bool local_6 = (bool)0;
 
     uint _e3 = view.width;
     uint _e8 = view.width;
@@ -359,17 +359,44 @@ GbTexel gbuffer_at(uint i)
     float3 n = _e15.xyz;
     float len2_ = dot(n, n);
     if ((_e12.w > 0.0)) {
-        local_7 = (len2_ > 0.0);
+        local_6 = (len2_ > 0.0);
     } else {
-        local_7 = false;
+        local_6 = false;
     }
-    bool valid_1 = local_7;
+    bool valid_1 = local_6;
     float3 _e30 = view.eye;
     float3 v_2 = (_e12.xyz - _e30);
     float4 position = float4(_e12.xyz, (valid_1 ? 1.0 : 0.0));
     float4 normal = (valid_1 ? float4((n / (sqrt(len2_)).xxx), sqrt(dot(v_2, v_2))) : float4(0.0, 0.0, 0.0, 1e30));
     const GbTexel gbtexel = ConstructGbTexel(position, normal);
     return gbtexel;
+}
+
+WorkgroupBox load_receiver(uint li_3, uint pix, bool inside)
+{
+    float4 p_1 = (0.0).xxxx;
+    bool local_7 = (bool)0;
+
+    if (inside) {
+        const GbTexel _e6 = gbuffer_at(pix);
+        p_1 = _e6.position;
+        nrm = _e6.normal.xyz;
+    }
+    float4 _e12 = p_1;
+    pos = _e12.xyz;
+    if (inside) {
+        float _e18 = p_1.w;
+        local_7 = (_e18 > 0.0);
+    } else {
+        local_7 = false;
+    }
+    bool _e22 = local_7;
+    valid = _e22;
+    float3 _e24 = pos;
+    bool _e26 = valid;
+    const WorkgroupBox _e27 = workgroup_box(li_3, _e24, _e26);
+    const WorkgroupBox workgroupbox_2 = _e27;
+    return workgroupbox_2;
 }
 
 GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, float3 arg4, float arg5, float3 arg6, uint arg7) {
@@ -462,12 +489,12 @@ GpuBox ConstructGpuBox(float3 arg0, float arg1, float3 arg2, float arg3) {
     return ret;
 }
 
-void cull_tile(uint li_3, float3 lo_1, float3 hi_1, uint4 grid, uint clusters_at, uint groups_at)
+void cull_tile(uint li_4, float3 lo_1, float3 hi_1, uint4 grid, uint clusters_at, uint groups_at)
 {
     uint g_2 = 0u;
     uint h = (uint)0;
 
-    if ((li_3 == 0u)) {
+    if ((li_4 == 0u)) {
         { uint dummy = 0; InterlockedExchange(list_count, 0u, dummy); }
     }
     const uint _e14 = group_count(grid.x, grid.y, grid.z, grid.w);
@@ -498,16 +525,16 @@ void cull_tile(uint li_3, float3 lo_1, float3 hi_1, uint4 grid, uint clusters_at
             uint first = (clusters_at + _e33);
             uint _e35 = g_2;
             const uint _e40 = group_clusters(_e35, grid.x, grid.y, grid.z, grid.w);
-            if ((li_3 == 0u)) {
+            if ((li_4 == 0u)) {
                 { uint dummy_1 = 0; InterlockedExchange(hit_count, 0u, dummy_1); }
             }
             GroupMemoryBarrierWithGroupSync();
-            if ((li_3 < _e40)) {
-                GpuBox cb = ConstructGpuBox(asfloat(boxes.Load3((first + li_3)*32+0)), asfloat(boxes.Load((first + li_3)*32+12)), asfloat(boxes.Load3((first + li_3)*32+16)), asfloat(boxes.Load((first + li_3)*32+28)));
+            if ((li_4 < _e40)) {
+                GpuBox cb = ConstructGpuBox(asfloat(boxes.Load3((first + li_4)*32+0)), asfloat(boxes.Load((first + li_4)*32+12)), asfloat(boxes.Load3((first + li_4)*32+16)), asfloat(boxes.Load((first + li_4)*32+28)));
                 const bool _e52 = box_overlaps_box(cb.lo, cb.hi, lo_1, hi_1);
                 if (_e52) {
                     uint _e56; InterlockedAdd(hit_count, 1u, _e56);
-                    cluster_hits[min(uint(_e56), 63u)] = (first + li_3);
+                    cluster_hits[min(uint(_e56), 63u)] = (first + li_4);
                 }
             }
             GroupMemoryBarrierWithGroupSync();
@@ -536,14 +563,14 @@ void cull_tile(uint li_3, float3 lo_1, float3 hi_1, uint4 grid, uint clusters_at
                     if (((_e66 + CLUSTER) > MAX_TILE_LIGHTS)) {
                         shade_list(_e66);
                         GroupMemoryBarrierWithGroupSync();
-                        if ((li_3 == 0u)) {
+                        if ((li_4 == 0u)) {
                             { uint dummy_2 = 0; InterlockedExchange(list_count, 0u, dummy_2); }
                         }
                         GroupMemoryBarrierWithGroupSync();
                     }
                     uint _e76 = h;
                     uint _e78 = cluster_hits[min(uint(_e76), 63u)];
-                    const uint _e79 = cluster_slot(_e78, li_3);
+                    const uint _e79 = cluster_slot(_e78, li_4);
                     GpuLight l_1 = ConstructGpuLight(asfloat(lights.Load3(_e79*64+0)), asuint(lights.Load(_e79*64+12)), asfloat(lights.Load3(_e79*64+16)), asfloat(lights.Load(_e79*64+28)), asfloat(lights.Load3(_e79*64+32)), asfloat(lights.Load(_e79*64+44)), asfloat(lights.Load3(_e79*64+48)), asuint(lights.Load(_e79*64+60)));
                     if (any((l_1.intensity != (0.0).xxx))) {
                         const float _e89 = cull_r2_of(_e79);
@@ -580,8 +607,6 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
     }
     GroupMemoryBarrierWithGroupSync();
     bool local = (bool)0;
-    float4 p = (0.0).xxxx;
-    bool local_1 = (bool)0;
 
     uint sub = wg.z;
     uint px = (naga_mod(sub, P) + (((wg.x * TILE) + lid.x) * P));
@@ -593,41 +618,24 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
     } else {
         local = false;
     }
-    bool inside = local;
+    bool inside_1 = local;
     uint _e38 = params.width;
-    uint pix = ((py * _e38) + px);
-    if (inside) {
-        const GbTexel _e44 = gbuffer_at(pix);
-        p = _e44.position;
-        nrm = _e44.normal.xyz;
-    }
-    float4 _e50 = p;
-    pos = _e50.xyz;
-    if (inside) {
-        float _e56 = p.w;
-        local_1 = (_e56 > 0.0);
-    } else {
-        local_1 = false;
-    }
-    bool _e60 = local_1;
-    valid = _e60;
-    float3 _e62 = pos;
-    bool _e64 = valid;
-    const WorkgroupBox _e65 = workgroup_box(li, _e62, _e64);
-    uint _e68 = params.subset_shift;
-    const uint _e70 = shifted_subset(sub, _e68, P);
-    const bool _e71 = box_is_empty(_e65);
-    if (!(_e71)) {
+    uint pix_1 = ((py * _e38) + px);
+    const WorkgroupBox _e41 = load_receiver(li, pix_1, inside_1);
+    uint _e44 = params.subset_shift;
+    const uint _e46 = shifted_subset(sub, _e44, P);
+    const bool _e47 = box_is_empty(_e41);
+    if (!(_e47)) {
         uint4 grid_1 = params.far_grid;
-        uint _e80 = params.lights_per_subset;
-        uint _e86 = params.far_groups_at;
-        const uint _e91 = group_count(grid_1.x, grid_1.y, grid_1.z, grid_1.w);
-        cull_tile(li, _e65.lo, _e65.hi, grid_1, (_e70 * naga_div(_e80, CLUSTER)), (_e86 + (_e70 * _e91)));
+        uint _e56 = params.lights_per_subset;
+        uint _e62 = params.far_groups_at;
+        const uint _e67 = group_count(grid_1.x, grid_1.y, grid_1.z, grid_1.w);
+        cull_tile(li, _e41.lo, _e41.hi, grid_1, (_e46 * naga_div(_e56, CLUSTER)), (_e62 + (_e46 * _e67)));
     }
-    if (inside) {
-        float3 _e97 = e;
-        uint _e99 = kept;
-        irradiance.Store4(pix*16, asuint(float4(_e97, float(_e99))));
+    if (inside_1) {
+        float3 _e73 = e;
+        uint _e75 = kept;
+        irradiance.Store4(pix_1*16, asuint(float4(_e73, float(_e75))));
         return;
     } else {
         return;

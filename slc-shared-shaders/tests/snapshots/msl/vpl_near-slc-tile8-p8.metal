@@ -227,41 +227,41 @@ bool box_overlaps_box(
     metal::float3 lo2_,
     metal::float3 hi2_
 ) {
+    bool local_1 = {};
     bool local_2 = {};
     bool local_3 = {};
     bool local_4 = {};
     bool local_5 = {};
-    bool local_6 = {};
     if (lo1_.x <= hi2_.x) {
-        local_2 = lo2_.x <= hi1_.x;
+        local_1 = lo2_.x <= hi1_.x;
+    } else {
+        local_1 = false;
+    }
+    bool _e13 = local_1;
+    if (_e13) {
+        local_2 = lo1_.y <= hi2_.y;
     } else {
         local_2 = false;
     }
-    bool _e13 = local_2;
-    if (_e13) {
-        local_3 = lo1_.y <= hi2_.y;
+    bool _e20 = local_2;
+    if (_e20) {
+        local_3 = lo2_.y <= hi1_.y;
     } else {
         local_3 = false;
     }
-    bool _e20 = local_3;
-    if (_e20) {
-        local_4 = lo2_.y <= hi1_.y;
+    bool _e27 = local_3;
+    if (_e27) {
+        local_4 = lo1_.z <= hi2_.z;
     } else {
         local_4 = false;
     }
-    bool _e27 = local_4;
-    if (_e27) {
-        local_5 = lo1_.z <= hi2_.z;
+    bool _e34 = local_4;
+    if (_e34) {
+        local_5 = lo2_.z <= hi1_.z;
     } else {
         local_5 = false;
     }
-    bool _e34 = local_5;
-    if (_e34) {
-        local_6 = lo2_.z <= hi1_.z;
-    } else {
-        local_6 = false;
-    }
-    bool _e41 = local_6;
+    bool _e41 = local_5;
     return _e41;
 }
 
@@ -375,13 +375,13 @@ WorkgroupBox workgroup_bounds(
 
 WorkgroupBox workgroup_box(
     uint li_2,
-    metal::float3 p_1,
+    metal::float3 p,
     bool has,
     threadgroup type_7& wg_lo,
     threadgroup type_7& wg_hi,
     threadgroup WorkgroupBox& wg_box
 ) {
-    WorkgroupBox _e9 = workgroup_bounds(li_2, has ? p_1 : metal::float3(340282350000000000000000000000000000000.0), has ? p_1 : metal::float3(-340282350000000000000000000000000000000.0), wg_lo, wg_hi, wg_box);
+    WorkgroupBox _e9 = workgroup_bounds(li_2, has ? p : metal::float3(340282350000000000000000000000000000000.0), has ? p : metal::float3(-340282350000000000000000000000000000000.0), wg_lo, wg_hi, wg_box);
     return _e9;
 }
 
@@ -405,7 +405,7 @@ GbTexel gbuffer_at(
     metal::texture2d<float, metal::access::sample> position_tex,
     metal::texture2d<float, metal::access::sample> normal_tex
 ) {
-    bool local_7 = {};
+    bool local_6 = {};
     uint _e3 = view.width;
     uint _e8 = view.width;
     metal::int2 texel_1 = metal::int2(static_cast<int>(naga_mod(i, _e3)), static_cast<int>(naga_div(i, _e8)));
@@ -414,11 +414,11 @@ GbTexel gbuffer_at(
     metal::float3 n = _e15.xyz;
     float len2_ = metal::dot(n, n);
     if (_e12.w > 0.0) {
-        local_7 = len2_ > 0.0;
+        local_6 = len2_ > 0.0;
     } else {
-        local_7 = false;
+        local_6 = false;
     }
-    bool valid_1 = local_7;
+    bool valid_1 = local_6;
     metal::float3 _e30 = view.eye;
     metal::float3 v_2 = _e12.xyz - _e30;
     metal::float4 position = metal::float4(_e12.xyz, valid_1 ? 1.0 : 0.0);
@@ -445,6 +445,43 @@ float near_cull_r2_of(
     float _e2 = near_r2_of(slot_1, r2_5, _buffer_sizes);
     float _e3 = vpl_near_cull_range2_(_e2, near_r2_3);
     return _e3;
+}
+
+WorkgroupBox load_receiver(
+    uint li_3,
+    uint pix,
+    bool inside,
+    threadgroup type_7& wg_lo,
+    threadgroup type_7& wg_hi,
+    threadgroup WorkgroupBox& wg_box,
+    constant ViewParams& view,
+    metal::texture2d<float, metal::access::sample> position_tex,
+    metal::texture2d<float, metal::access::sample> normal_tex,
+    thread metal::float3& pos,
+    thread metal::float3& nrm,
+    thread bool& valid
+) {
+    metal::float4 p_1 = metal::float4(0.0);
+    bool local_7 = {};
+    if (inside) {
+        GbTexel _e6 = gbuffer_at(pix, view, position_tex, normal_tex);
+        p_1 = _e6.position;
+        nrm = _e6.normal.xyz;
+    }
+    metal::float4 _e12 = p_1;
+    pos = _e12.xyz;
+    if (inside) {
+        float _e18 = p_1.w;
+        local_7 = _e18 > 0.0;
+    } else {
+        local_7 = false;
+    }
+    bool _e22 = local_7;
+    valid = _e22;
+    metal::float3 _e24 = pos;
+    bool _e26 = valid;
+    WorkgroupBox _e27 = workgroup_box(li_3, _e24, _e26, wg_lo, wg_hi, wg_box);
+    return _e27;
 }
 
 uint cluster_slot(
@@ -533,7 +570,7 @@ void shade_list(
 }
 
 void cull_tile(
-    uint li_3,
+    uint li_4,
     metal::float3 lo_1,
     metal::float3 hi_1,
     metal::uint4 grid,
@@ -558,7 +595,7 @@ void cull_tile(
 ) {
     uint g_2 = 0u;
     uint h = {};
-    if (li_3 == 0u) {
+    if (li_4 == 0u) {
         metal::atomic_store_explicit(&list_count, 0u, metal::memory_order_relaxed);
     }
     uint _e14 = group_count(grid.x, grid.y, grid.z, grid.w);
@@ -589,16 +626,16 @@ void cull_tile(
             uint first = clusters_at + _e33;
             uint _e35 = g_2;
             uint _e40 = group_clusters(_e35, grid.x, grid.y, grid.z, grid.w);
-            if (li_3 == 0u) {
+            if (li_4 == 0u) {
                 metal::atomic_store_explicit(&hit_count, 0u, metal::memory_order_relaxed);
             }
             metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-            if (li_3 < _e40) {
-                GpuBox cb = boxes[first + li_3];
+            if (li_4 < _e40) {
+                GpuBox cb = boxes[first + li_4];
                 bool _e52 = box_overlaps_box(cb.lo, cb.hi, lo_1, hi_1);
                 if (_e52) {
                     uint _e56 = metal::atomic_fetch_add_explicit(&hit_count, 1u, metal::memory_order_relaxed);
-                    cluster_hits.inner[_e56] = first + li_3;
+                    cluster_hits.inner[_e56] = first + li_4;
                 }
             }
             metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
@@ -627,14 +664,14 @@ void cull_tile(
                     if ((unnamed_2 + CLUSTER) > MAX_TILE_LIGHTS) {
                         shade_list(unnamed_2, params, lights, rt2_2, r2_5, pos, nrm, valid, e, kept, tile_lights, _buffer_sizes);
                         metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-                        if (li_3 == 0u) {
+                        if (li_4 == 0u) {
                             metal::atomic_store_explicit(&list_count, 0u, metal::memory_order_relaxed);
                         }
                         metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
                     }
                     uint _e76 = h;
                     uint _e78 = cluster_hits.inner[_e76];
-                    uint _e79 = cluster_slot(_e78, li_3, params, near_slots, _buffer_sizes);
+                    uint _e79 = cluster_slot(_e78, li_4, params, near_slots, _buffer_sizes);
                     GpuLight l_1 = lights[_e79];
                     if (metal::any(l_1.intensity != metal::float3(0.0))) {
                         float _e89 = cull_r2_of(_e79, params, r2_5, _buffer_sizes);
@@ -698,8 +735,6 @@ kernel void main_(
     }
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
     bool local = {};
-    metal::float4 p = metal::float4(0.0);
-    bool local_1 = {};
     uint px = (wg.x * TILE) + lid.x;
     uint py = (wg.y * TILE) + lid.y;
     uint _e15 = params.width;
@@ -709,40 +744,23 @@ kernel void main_(
     } else {
         local = false;
     }
-    bool inside = local;
+    bool inside_1 = local;
     uint _e27 = params.width;
-    uint pix = (py * _e27) + px;
-    if (inside) {
-        GbTexel _e33 = gbuffer_at(pix, view, position_tex, normal_tex);
-        p = _e33.position;
-        nrm = _e33.normal.xyz;
+    uint pix_1 = (py * _e27) + px;
+    WorkgroupBox _e30 = load_receiver(li, pix_1, inside_1, wg_lo, wg_hi, wg_box, view, position_tex, normal_tex, pos, nrm, valid);
+    bool _e31 = box_is_empty(_e30);
+    if (!(_e31)) {
+        metal::uint4 _e37 = params.near_grid;
+        uint _e40 = params.near_clusters_at;
+        uint _e43 = params.near_groups_at;
+        cull_tile(li, _e30.lo, _e30.hi, _e37, _e40, _e43, params, lights, near_slots, boxes, rt2_2, r2_5, pos, nrm, valid, e, kept, tile_lights, list_count, cluster_hits, hit_count, _buffer_sizes);
     }
-    metal::float4 _e39 = p;
-    pos = _e39.xyz;
-    if (inside) {
-        float _e45 = p.w;
-        local_1 = _e45 > 0.0;
-    } else {
-        local_1 = false;
-    }
-    bool _e49 = local_1;
-    valid = _e49;
-    metal::float3 _e51 = pos;
-    bool _e53 = valid;
-    WorkgroupBox _e54 = workgroup_box(li, _e51, _e53, wg_lo, wg_hi, wg_box);
-    bool _e55 = box_is_empty(_e54);
-    if (!(_e55)) {
-        metal::uint4 _e61 = params.near_grid;
-        uint _e64 = params.near_clusters_at;
-        uint _e67 = params.near_groups_at;
-        cull_tile(li, _e54.lo, _e54.hi, _e61, _e64, _e67, params, lights, near_slots, boxes, rt2_2, r2_5, pos, nrm, valid, e, kept, tile_lights, list_count, cluster_hits, hit_count, _buffer_sizes);
-    }
-    bool _e69 = valid;
-    if (_e69) {
-        metal::float4 old = irradiance[pix];
-        metal::float3 _e77 = e;
-        uint _e81 = kept;
-        irradiance[pix] = metal::float4(old.xyz + _e77, old.w + static_cast<float>(_e81));
+    bool _e45 = valid;
+    if (_e45) {
+        metal::float4 old = irradiance[pix_1];
+        metal::float3 _e53 = e;
+        uint _e57 = kept;
+        irradiance[pix_1] = metal::float4(old.xyz + _e53, old.w + static_cast<float>(_e57));
         return;
     } else {
         return;

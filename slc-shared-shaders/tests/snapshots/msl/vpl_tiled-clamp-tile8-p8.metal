@@ -208,41 +208,41 @@ bool box_overlaps_box(
     metal::float3 lo2_,
     metal::float3 hi2_
 ) {
+    bool local_1 = {};
     bool local_2 = {};
     bool local_3 = {};
     bool local_4 = {};
     bool local_5 = {};
-    bool local_6 = {};
     if (lo1_.x <= hi2_.x) {
-        local_2 = lo2_.x <= hi1_.x;
+        local_1 = lo2_.x <= hi1_.x;
+    } else {
+        local_1 = false;
+    }
+    bool _e13 = local_1;
+    if (_e13) {
+        local_2 = lo1_.y <= hi2_.y;
     } else {
         local_2 = false;
     }
-    bool _e13 = local_2;
-    if (_e13) {
-        local_3 = lo1_.y <= hi2_.y;
+    bool _e20 = local_2;
+    if (_e20) {
+        local_3 = lo2_.y <= hi1_.y;
     } else {
         local_3 = false;
     }
-    bool _e20 = local_3;
-    if (_e20) {
-        local_4 = lo2_.y <= hi1_.y;
+    bool _e27 = local_3;
+    if (_e27) {
+        local_4 = lo1_.z <= hi2_.z;
     } else {
         local_4 = false;
     }
-    bool _e27 = local_4;
-    if (_e27) {
-        local_5 = lo1_.z <= hi2_.z;
+    bool _e34 = local_4;
+    if (_e34) {
+        local_5 = lo2_.z <= hi1_.z;
     } else {
         local_5 = false;
     }
-    bool _e34 = local_5;
-    if (_e34) {
-        local_6 = lo2_.z <= hi1_.z;
-    } else {
-        local_6 = false;
-    }
-    bool _e41 = local_6;
+    bool _e41 = local_5;
     return _e41;
 }
 
@@ -348,13 +348,13 @@ WorkgroupBox workgroup_bounds(
 
 WorkgroupBox workgroup_box(
     uint li_2,
-    metal::float3 p_1,
+    metal::float3 p,
     bool has,
     threadgroup type_7& wg_lo,
     threadgroup type_7& wg_hi,
     threadgroup WorkgroupBox& wg_box
 ) {
-    WorkgroupBox _e9 = workgroup_bounds(li_2, has ? p_1 : metal::float3(340282350000000000000000000000000000000.0), has ? p_1 : metal::float3(-340282350000000000000000000000000000000.0), wg_lo, wg_hi, wg_box);
+    WorkgroupBox _e9 = workgroup_bounds(li_2, has ? p : metal::float3(340282350000000000000000000000000000000.0), has ? p : metal::float3(-340282350000000000000000000000000000000.0), wg_lo, wg_hi, wg_box);
     return _e9;
 }
 
@@ -378,7 +378,7 @@ GbTexel gbuffer_at(
     metal::texture2d<float, metal::access::sample> position_tex,
     metal::texture2d<float, metal::access::sample> normal_tex
 ) {
-    bool local_7 = {};
+    bool local_6 = {};
     uint _e3 = view.width;
     uint _e8 = view.width;
     metal::int2 texel_1 = metal::int2(static_cast<int>(naga_mod(i, _e3)), static_cast<int>(naga_div(i, _e8)));
@@ -387,16 +387,53 @@ GbTexel gbuffer_at(
     metal::float3 n = _e15.xyz;
     float len2_ = metal::dot(n, n);
     if (_e12.w > 0.0) {
-        local_7 = len2_ > 0.0;
+        local_6 = len2_ > 0.0;
     } else {
-        local_7 = false;
+        local_6 = false;
     }
-    bool valid_1 = local_7;
+    bool valid_1 = local_6;
     metal::float3 _e30 = view.eye;
     metal::float3 v_2 = _e12.xyz - _e30;
     metal::float4 position = metal::float4(_e12.xyz, valid_1 ? 1.0 : 0.0);
     metal::float4 normal = valid_1 ? metal::float4(n / metal::float3(metal::sqrt(len2_)), metal::sqrt(metal::dot(v_2, v_2))) : metal::float4(0.0, 0.0, 0.0, 1000000000000000000000000000000.0);
     return GbTexel {position, normal};
+}
+
+WorkgroupBox load_receiver(
+    uint li_3,
+    uint pix,
+    bool inside,
+    threadgroup type_7& wg_lo,
+    threadgroup type_7& wg_hi,
+    threadgroup WorkgroupBox& wg_box,
+    constant ViewParams& view,
+    metal::texture2d<float, metal::access::sample> position_tex,
+    metal::texture2d<float, metal::access::sample> normal_tex,
+    thread metal::float3& pos,
+    thread metal::float3& nrm,
+    thread bool& valid
+) {
+    metal::float4 p_1 = metal::float4(0.0);
+    bool local_7 = {};
+    if (inside) {
+        GbTexel _e6 = gbuffer_at(pix, view, position_tex, normal_tex);
+        p_1 = _e6.position;
+        nrm = _e6.normal.xyz;
+    }
+    metal::float4 _e12 = p_1;
+    pos = _e12.xyz;
+    if (inside) {
+        float _e18 = p_1.w;
+        local_7 = _e18 > 0.0;
+    } else {
+        local_7 = false;
+    }
+    bool _e22 = local_7;
+    valid = _e22;
+    metal::float3 _e24 = pos;
+    bool _e26 = valid;
+    WorkgroupBox _e27 = workgroup_box(li_3, _e24, _e26, wg_lo, wg_hi, wg_box);
+    return _e27;
 }
 
 void shade_light(
@@ -491,7 +528,7 @@ void shade_list(
 }
 
 void cull_tile(
-    uint li_3,
+    uint li_4,
     metal::float3 lo_1,
     metal::float3 hi_1,
     metal::uint4 grid,
@@ -514,7 +551,7 @@ void cull_tile(
 ) {
     uint g_2 = 0u;
     uint h = {};
-    if (li_3 == 0u) {
+    if (li_4 == 0u) {
         metal::atomic_store_explicit(&list_count, 0u, metal::memory_order_relaxed);
     }
     uint _e14 = group_count(grid.x, grid.y, grid.z, grid.w);
@@ -545,16 +582,16 @@ void cull_tile(
             uint first = clusters_at + _e33;
             uint _e35 = g_2;
             uint _e40 = group_clusters(_e35, grid.x, grid.y, grid.z, grid.w);
-            if (li_3 == 0u) {
+            if (li_4 == 0u) {
                 metal::atomic_store_explicit(&hit_count, 0u, metal::memory_order_relaxed);
             }
             metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-            if (li_3 < _e40) {
-                GpuBox cb = boxes[first + li_3];
+            if (li_4 < _e40) {
+                GpuBox cb = boxes[first + li_4];
                 bool _e52 = box_overlaps_box(cb.lo, cb.hi, lo_1, hi_1);
                 if (_e52) {
                     uint _e56 = metal::atomic_fetch_add_explicit(&hit_count, 1u, metal::memory_order_relaxed);
-                    cluster_hits.inner[_e56] = first + li_3;
+                    cluster_hits.inner[_e56] = first + li_4;
                 }
             }
             metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
@@ -583,14 +620,14 @@ void cull_tile(
                     if ((unnamed_2 + CLUSTER) > MAX_TILE_LIGHTS) {
                         shade_list(unnamed_2, params, lights, r2_1, pos, nrm, valid, e, kept, tile_lights, _buffer_sizes);
                         metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-                        if (li_3 == 0u) {
+                        if (li_4 == 0u) {
                             metal::atomic_store_explicit(&list_count, 0u, metal::memory_order_relaxed);
                         }
                         metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
                     }
                     uint _e76 = h;
                     uint _e78 = cluster_hits.inner[_e76];
-                    uint _e79 = cluster_slot(_e78, li_3);
+                    uint _e79 = cluster_slot(_e78, li_4);
                     GpuLight l_1 = lights[_e79];
                     if (metal::any(l_1.intensity != metal::float3(0.0))) {
                         float _e89 = cull_r2_of(_e79, r2_1, _buffer_sizes);
@@ -652,8 +689,6 @@ kernel void main_(
     }
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
     bool local = {};
-    metal::float4 p = metal::float4(0.0);
-    bool local_1 = {};
     uint sub = wg.z;
     uint px = naga_mod(sub, P) + (((wg.x * TILE) + lid.x) * P);
     uint py = naga_div(sub, P) + (((wg.y * TILE) + lid.y) * P);
@@ -664,41 +699,24 @@ kernel void main_(
     } else {
         local = false;
     }
-    bool inside = local;
+    bool inside_1 = local;
     uint _e38 = params.width;
-    uint pix = (py * _e38) + px;
-    if (inside) {
-        GbTexel _e44 = gbuffer_at(pix, view, position_tex, normal_tex);
-        p = _e44.position;
-        nrm = _e44.normal.xyz;
-    }
-    metal::float4 _e50 = p;
-    pos = _e50.xyz;
-    if (inside) {
-        float _e56 = p.w;
-        local_1 = _e56 > 0.0;
-    } else {
-        local_1 = false;
-    }
-    bool _e60 = local_1;
-    valid = _e60;
-    metal::float3 _e62 = pos;
-    bool _e64 = valid;
-    WorkgroupBox _e65 = workgroup_box(li, _e62, _e64, wg_lo, wg_hi, wg_box);
-    uint _e68 = params.subset_shift;
-    uint _e70 = shifted_subset(sub, _e68, P);
-    bool _e71 = box_is_empty(_e65);
-    if (!(_e71)) {
+    uint pix_1 = (py * _e38) + px;
+    WorkgroupBox _e41 = load_receiver(li, pix_1, inside_1, wg_lo, wg_hi, wg_box, view, position_tex, normal_tex, pos, nrm, valid);
+    uint _e44 = params.subset_shift;
+    uint _e46 = shifted_subset(sub, _e44, P);
+    bool _e47 = box_is_empty(_e41);
+    if (!(_e47)) {
         metal::uint4 grid_1 = params.far_grid;
-        uint _e80 = params.lights_per_subset;
-        uint _e86 = params.far_groups_at;
-        uint _e91 = group_count(grid_1.x, grid_1.y, grid_1.z, grid_1.w);
-        cull_tile(li, _e65.lo, _e65.hi, grid_1, _e70 * naga_div(_e80, CLUSTER), _e86 + (_e70 * _e91), params, lights, r2_1, boxes, pos, nrm, valid, e, kept, tile_lights, list_count, cluster_hits, hit_count, _buffer_sizes);
+        uint _e56 = params.lights_per_subset;
+        uint _e62 = params.far_groups_at;
+        uint _e67 = group_count(grid_1.x, grid_1.y, grid_1.z, grid_1.w);
+        cull_tile(li, _e41.lo, _e41.hi, grid_1, _e46 * naga_div(_e56, CLUSTER), _e62 + (_e46 * _e67), params, lights, r2_1, boxes, pos, nrm, valid, e, kept, tile_lights, list_count, cluster_hits, hit_count, _buffer_sizes);
     }
-    if (inside) {
-        metal::float3 _e97 = e;
-        uint _e99 = kept;
-        irradiance[pix] = metal::float4(_e97, static_cast<float>(_e99));
+    if (inside_1) {
+        metal::float3 _e73 = e;
+        uint _e75 = kept;
+        irradiance[pix_1] = metal::float4(_e73, static_cast<float>(_e75));
         return;
     } else {
         return;

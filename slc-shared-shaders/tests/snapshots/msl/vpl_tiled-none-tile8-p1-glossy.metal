@@ -162,13 +162,13 @@ float smith_visibility(
     float n_v,
     float alpha_2
 ) {
-    bool local_2 = {};
+    bool local_1 = {};
     if (!((n_l_1 <= 0.0))) {
-        local_2 = n_v <= 0.0;
+        local_1 = n_v <= 0.0;
     } else {
-        local_2 = true;
+        local_1 = true;
     }
-    bool _e11 = local_2;
+    bool _e11 = local_1;
     if (_e11) {
         return 0.0;
     }
@@ -232,15 +232,15 @@ metal::float3 specular_brdf(
     metal::float3 v_2,
     metal::float3 l_1
 ) {
-    bool local_3 = {};
+    bool local_2 = {};
     float n_l_2 = metal::dot(n, l_1);
     float n_v_1 = metal::dot(n, v_2);
     if (!((n_l_2 <= 0.0))) {
-        local_3 = n_v_1 <= 0.0;
+        local_2 = n_v_1 <= 0.0;
     } else {
-        local_3 = true;
+        local_2 = true;
     }
-    bool _e18 = local_3;
+    bool _e18 = local_2;
     if (_e18) {
         return metal::float3(0.0, 0.0, 0.0);
     }
@@ -300,20 +300,20 @@ bool has_specular(
     metal::float3 f0_d_5,
     float f90_d_5
 ) {
+    bool local_3 = {};
     bool local_4 = {};
-    bool local_5 = {};
     if (!((metallic_6 > 0.0))) {
-        local_4 = f90_d_5 > 0.0;
+        local_3 = f90_d_5 > 0.0;
+    } else {
+        local_3 = true;
+    }
+    bool _e11 = local_3;
+    if (!(_e11)) {
+        local_4 = metal::max(metal::max(f0_d_5.x, f0_d_5.y), f0_d_5.z) > 0.0;
     } else {
         local_4 = true;
     }
-    bool _e11 = local_4;
-    if (!(_e11)) {
-        local_5 = metal::max(metal::max(f0_d_5.x, f0_d_5.y), f0_d_5.z) > 0.0;
-    } else {
-        local_5 = true;
-    }
-    bool _e23 = local_5;
+    bool _e23 = local_4;
     return _e23;
 }
 
@@ -407,13 +407,13 @@ WorkgroupBox workgroup_bounds(
 
 WorkgroupBox workgroup_box(
     uint li_2,
-    metal::float3 p_1,
+    metal::float3 p,
     bool has,
     threadgroup type_6& wg_lo,
     threadgroup type_6& wg_hi,
     threadgroup WorkgroupBox& wg_box
 ) {
-    WorkgroupBox _e9 = workgroup_bounds(li_2, has ? p_1 : metal::float3(340282350000000000000000000000000000000.0), has ? p_1 : metal::float3(-340282350000000000000000000000000000000.0), wg_lo, wg_hi, wg_box);
+    WorkgroupBox _e9 = workgroup_bounds(li_2, has ? p : metal::float3(340282350000000000000000000000000000000.0), has ? p : metal::float3(-340282350000000000000000000000000000000.0), wg_lo, wg_hi, wg_box);
     return _e9;
 }
 
@@ -431,7 +431,7 @@ GbTexel gbuffer_at(
     metal::texture2d<float, metal::access::sample> position_tex,
     metal::texture2d<float, metal::access::sample> normal_tex
 ) {
-    bool local_6 = {};
+    bool local_5 = {};
     uint _e3 = view.width;
     uint _e8 = view.width;
     metal::int2 texel_1 = metal::int2(static_cast<int>(naga_mod(i, _e3)), static_cast<int>(naga_div(i, _e8)));
@@ -440,11 +440,11 @@ GbTexel gbuffer_at(
     metal::float3 n_4 = _e15.xyz;
     float len2_1 = metal::dot(n_4, n_4);
     if (_e12.w > 0.0) {
-        local_6 = len2_1 > 0.0;
+        local_5 = len2_1 > 0.0;
     } else {
-        local_6 = false;
+        local_5 = false;
     }
-    bool valid_1 = local_6;
+    bool valid_1 = local_5;
     metal::float3 _e30 = view.eye;
     metal::float3 v_6 = _e12.xyz - _e30;
     metal::float4 position = metal::float4(_e12.xyz, valid_1 ? 1.0 : 0.0);
@@ -481,18 +481,64 @@ metal::float3 glossy_term(
     metal::float3 v_5,
     float t
 ) {
-    bool local_7 = {};
+    bool local_6 = {};
     if (!(!(g.on))) {
-        local_7 = t <= 0.0;
+        local_6 = t <= 0.0;
     } else {
-        local_7 = true;
+        local_6 = true;
     }
-    bool _e13 = local_7;
+    bool _e13 = local_6;
     if (_e13) {
         return metal::float3(0.0);
     }
     metal::float3 _e30 = specular_correction(g.m.albedo, g.m.metallic, g.m.f0_, g.m.f90_, g.m.alpha, n_3, g.v, metal::normalize(-(v_5)));
     return (l_4.intensity * _e30) * t;
+}
+
+WorkgroupBox load_receiver(
+    uint li_3,
+    uint pix,
+    bool inside,
+    threadgroup type_6& wg_lo,
+    threadgroup type_6& wg_hi,
+    threadgroup WorkgroupBox& wg_box,
+    constant ViewParams& view,
+    metal::texture2d<float, metal::access::sample> position_tex,
+    metal::texture2d<float, metal::access::sample> normal_tex,
+    device type_10 const& materials,
+    thread metal::float3& pos,
+    thread metal::float3& nrm,
+    thread bool& valid,
+    thread Glossy& g_1,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float4 p_1 = metal::float4(0.0);
+    bool local_7 = {};
+    if (inside) {
+        GbTexel _e6 = gbuffer_at(pix, view, position_tex, normal_tex);
+        p_1 = _e6.position;
+        nrm = _e6.normal.xyz;
+    }
+    metal::float4 _e12 = p_1;
+    pos = _e12.xyz;
+    if (inside) {
+        float _e18 = p_1.w;
+        local_7 = _e18 > 0.0;
+    } else {
+        local_7 = false;
+    }
+    bool _e22 = local_7;
+    valid = _e22;
+    bool _e24 = valid;
+    if (_e24) {
+        metal::float3 _e27 = pos;
+        Glossy _e28 = glossy_at(pix, _e27, view, normal_tex, materials, _buffer_sizes);
+        g_1 = _e28;
+    }
+    metal::float3 _e30 = pos;
+    bool _e32 = valid;
+    WorkgroupBox _e33 = workgroup_box(li_3, _e30, _e32, wg_lo, wg_hi, wg_box);
+    return _e33;
 }
 
 void shade_light(
@@ -565,8 +611,6 @@ kernel void main_(
     }
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
     bool local = {};
-    metal::float4 p = metal::float4(0.0);
-    bool local_1 = {};
     uint j = {};
     uint sub = wg.z;
     uint px = naga_mod(sub, P) + (((wg.x * TILE) + lid.x) * P);
@@ -578,39 +622,16 @@ kernel void main_(
     } else {
         local = false;
     }
-    bool inside = local;
+    bool inside_1 = local;
     uint _e38 = params.width;
-    uint pix = (py * _e38) + px;
-    if (inside) {
-        GbTexel _e44 = gbuffer_at(pix, view, position_tex, normal_tex);
-        p = _e44.position;
-        nrm = _e44.normal.xyz;
-    }
-    metal::float4 _e50 = p;
-    pos = _e50.xyz;
-    if (inside) {
-        float _e56 = p.w;
-        local_1 = _e56 > 0.0;
-    } else {
-        local_1 = false;
-    }
-    bool _e60 = local_1;
-    valid = _e60;
-    bool _e62 = valid;
-    if (_e62) {
-        metal::float3 _e65 = pos;
-        Glossy _e66 = glossy_at(pix, _e65, view, normal_tex, materials, _buffer_sizes);
-        g_1 = _e66;
-    }
-    metal::float3 _e68 = pos;
-    bool _e70 = valid;
-    WorkgroupBox _e71 = workgroup_box(li, _e68, _e70, wg_lo, wg_hi, wg_box);
-    uint _e74 = params.subset_shift;
-    uint _e76 = shifted_subset(sub, _e74, P);
-    bool _e78 = valid;
-    if (_e78) {
-        uint _e81 = params.lights_per_subset;
-        uint base_6 = _e76 * _e81;
+    uint pix_1 = (py * _e38) + px;
+    WorkgroupBox _e41 = load_receiver(li, pix_1, inside_1, wg_lo, wg_hi, wg_box, view, position_tex, normal_tex, materials, pos, nrm, valid, g_1, _buffer_sizes);
+    uint _e44 = params.subset_shift;
+    uint _e46 = shifted_subset(sub, _e44, P);
+    bool _e48 = valid;
+    if (_e48) {
+        uint _e51 = params.lights_per_subset;
+        uint base_6 = _e46 * _e51;
         j = base_6;
         uint2 loop_bound_1 = uint2(4294967295u);
         bool loop_init_1 = true;
@@ -618,32 +639,32 @@ kernel void main_(
             if (metal::all(loop_bound_1 == uint2(0u))) { break; }
             loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
             if (!loop_init_1) {
-                uint _e101 = j;
-                j = _e101 + 1u;
+                uint _e71 = j;
+                j = _e71 + 1u;
             }
             loop_init_1 = false;
-            uint _e84 = j;
-            uint _e87 = params.lights_per_subset;
-            if (_e84 < (base_6 + _e87)) {
+            uint _e54 = j;
+            uint _e57 = params.lights_per_subset;
+            if (_e54 < (base_6 + _e57)) {
             } else {
                 break;
             }
             {
-                uint _e91 = j;
-                metal::float3 _e94 = lights[_e91].intensity;
-                if (metal::any(_e94 != metal::float3(0.0))) {
-                    uint _e99 = j;
-                    shade_light(_e99, params, lights, pos, nrm, e, kept, s, g_1, _buffer_sizes);
+                uint _e61 = j;
+                metal::float3 _e64 = lights[_e61].intensity;
+                if (metal::any(_e64 != metal::float3(0.0))) {
+                    uint _e69 = j;
+                    shade_light(_e69, params, lights, pos, nrm, e, kept, s, g_1, _buffer_sizes);
                 }
             }
         }
     }
-    if (inside) {
-        metal::float3 _e106 = e;
-        uint _e108 = kept;
-        irradiance[pix] = metal::float4(_e106, static_cast<float>(_e108));
-        metal::float3 _e114 = s;
-        specular[pix] = metal::float4(_e114, 0.0);
+    if (inside_1) {
+        metal::float3 _e76 = e;
+        uint _e78 = kept;
+        irradiance[pix_1] = metal::float4(_e76, static_cast<float>(_e78));
+        metal::float3 _e84 = s;
+        specular[pix_1] = metal::float4(_e84, 0.0);
         return;
     } else {
         return;

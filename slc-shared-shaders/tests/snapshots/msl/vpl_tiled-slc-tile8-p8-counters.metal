@@ -232,41 +232,41 @@ bool box_overlaps_box(
     metal::float3 lo2_,
     metal::float3 hi2_
 ) {
+    bool local_1 = {};
     bool local_2 = {};
     bool local_3 = {};
     bool local_4 = {};
     bool local_5 = {};
-    bool local_6 = {};
     if (lo1_.x <= hi2_.x) {
-        local_2 = lo2_.x <= hi1_.x;
+        local_1 = lo2_.x <= hi1_.x;
+    } else {
+        local_1 = false;
+    }
+    bool _e13 = local_1;
+    if (_e13) {
+        local_2 = lo1_.y <= hi2_.y;
     } else {
         local_2 = false;
     }
-    bool _e13 = local_2;
-    if (_e13) {
-        local_3 = lo1_.y <= hi2_.y;
+    bool _e20 = local_2;
+    if (_e20) {
+        local_3 = lo2_.y <= hi1_.y;
     } else {
         local_3 = false;
     }
-    bool _e20 = local_3;
-    if (_e20) {
-        local_4 = lo2_.y <= hi1_.y;
+    bool _e27 = local_3;
+    if (_e27) {
+        local_4 = lo1_.z <= hi2_.z;
     } else {
         local_4 = false;
     }
-    bool _e27 = local_4;
-    if (_e27) {
-        local_5 = lo1_.z <= hi2_.z;
+    bool _e34 = local_4;
+    if (_e34) {
+        local_5 = lo2_.z <= hi1_.z;
     } else {
         local_5 = false;
     }
-    bool _e34 = local_5;
-    if (_e34) {
-        local_6 = lo2_.z <= hi1_.z;
-    } else {
-        local_6 = false;
-    }
-    bool _e41 = local_6;
+    bool _e41 = local_5;
     return _e41;
 }
 
@@ -374,13 +374,13 @@ WorkgroupBox workgroup_bounds(
 
 WorkgroupBox workgroup_box(
     uint li_2,
-    metal::float3 p_1,
+    metal::float3 p,
     bool has,
     threadgroup type_7& wg_lo,
     threadgroup type_7& wg_hi,
     threadgroup WorkgroupBox& wg_box
 ) {
-    WorkgroupBox _e9 = workgroup_bounds(li_2, has ? p_1 : metal::float3(340282350000000000000000000000000000000.0), has ? p_1 : metal::float3(-340282350000000000000000000000000000000.0), wg_lo, wg_hi, wg_box);
+    WorkgroupBox _e9 = workgroup_bounds(li_2, has ? p : metal::float3(340282350000000000000000000000000000000.0), has ? p : metal::float3(-340282350000000000000000000000000000000.0), wg_lo, wg_hi, wg_box);
     return _e9;
 }
 
@@ -404,7 +404,7 @@ GbTexel gbuffer_at(
     metal::texture2d<float, metal::access::sample> position_tex,
     metal::texture2d<float, metal::access::sample> normal_tex
 ) {
-    bool local_7 = {};
+    bool local_6 = {};
     uint _e3 = view.width;
     uint _e8 = view.width;
     metal::int2 texel_1 = metal::int2(static_cast<int>(naga_mod(i, _e3)), static_cast<int>(naga_div(i, _e8)));
@@ -413,11 +413,11 @@ GbTexel gbuffer_at(
     metal::float3 n_2 = _e15.xyz;
     float len2_ = metal::dot(n_2, n_2);
     if (_e12.w > 0.0) {
-        local_7 = len2_ > 0.0;
+        local_6 = len2_ > 0.0;
     } else {
-        local_7 = false;
+        local_6 = false;
     }
-    bool valid_1 = local_7;
+    bool valid_1 = local_6;
     metal::float3 _e30 = view.eye;
     metal::float3 v_2 = _e12.xyz - _e30;
     metal::float4 position = metal::float4(_e12.xyz, valid_1 ? 1.0 : 0.0);
@@ -486,6 +486,66 @@ void counts_end(
     } else {
         return;
     }
+}
+
+WorkgroupBox load_receiver(
+    uint li_6,
+    uint pix,
+    bool inside,
+    threadgroup type_7& wg_lo,
+    threadgroup type_7& wg_hi,
+    threadgroup WorkgroupBox& wg_box,
+    constant ViewParams& view,
+    metal::texture2d<float, metal::access::sample> position_tex,
+    metal::texture2d<float, metal::access::sample> normal_tex,
+    threadgroup type_15& wg_counts,
+    thread metal::float3& pos,
+    thread metal::float3& nrm,
+    thread bool& valid
+) {
+    metal::float4 p_1 = metal::float4(0.0);
+    bool local_7 = {};
+    if (inside) {
+        GbTexel _e6 = gbuffer_at(pix, view, position_tex, normal_tex);
+        p_1 = _e6.position;
+        nrm = _e6.normal.xyz;
+    }
+    metal::float4 _e12 = p_1;
+    pos = _e12.xyz;
+    if (inside) {
+        float _e18 = p_1.w;
+        local_7 = _e18 > 0.0;
+    } else {
+        local_7 = false;
+    }
+    bool _e22 = local_7;
+    valid = _e22;
+    counts_begin(li_6, wg_counts);
+    bool _e24 = valid;
+    if (_e24) {
+        count_one(COUNT_PIXELS, wg_counts);
+    }
+    metal::float3 _e27 = pos;
+    bool _e29 = valid;
+    WorkgroupBox _e30 = workgroup_box(li_6, _e27, _e29, wg_lo, wg_hi, wg_box);
+    return _e30;
+}
+
+void count_receiver(
+    uint li_7,
+    device type_13& counters,
+    threadgroup type_15& wg_counts,
+    thread bool& valid,
+    thread uint& kept,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    bool _e2 = valid;
+    if (_e2) {
+        uint _e5 = kept;
+        count_add(COUNT_KEPT, _e5, wg_counts);
+    }
+    counts_end(li_7, counters, wg_counts, _buffer_sizes);
+    return;
 }
 
 void shade_light(
@@ -585,7 +645,7 @@ void shade_list(
 }
 
 void cull_tile(
-    uint li_6,
+    uint li_8,
     metal::float3 lo_1,
     metal::float3 hi_1,
     metal::uint4 grid,
@@ -610,11 +670,11 @@ void cull_tile(
 ) {
     uint g_2 = 0u;
     uint h = {};
-    if (li_6 == 0u) {
+    if (li_8 == 0u) {
         metal::atomic_store_explicit(&list_count, 0u, metal::memory_order_relaxed);
     }
     uint _e14 = group_count(grid.x, grid.y, grid.z, grid.w);
-    count_tests(li_6, COUNT_GROUP_TESTS, _e14, wg_counts);
+    count_tests(li_8, COUNT_GROUP_TESTS, _e14, wg_counts);
     uint2 loop_bound_2 = uint2(4294967295u);
     bool loop_init_2 = true;
     while(true) {
@@ -642,17 +702,17 @@ void cull_tile(
             uint first = clusters_at + _e34;
             uint _e36 = g_2;
             uint _e41 = group_clusters(_e36, grid.x, grid.y, grid.z, grid.w);
-            count_tests(li_6, COUNT_CLUSTER_TESTS, _e41, wg_counts);
-            if (li_6 == 0u) {
+            count_tests(li_8, COUNT_CLUSTER_TESTS, _e41, wg_counts);
+            if (li_8 == 0u) {
                 metal::atomic_store_explicit(&hit_count, 0u, metal::memory_order_relaxed);
             }
             metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-            if (li_6 < _e41) {
-                GpuBox cb = boxes[first + li_6];
+            if (li_8 < _e41) {
+                GpuBox cb = boxes[first + li_8];
                 bool _e54 = box_overlaps_box(cb.lo, cb.hi, lo_1, hi_1);
                 if (_e54) {
                     uint _e58 = metal::atomic_fetch_add_explicit(&hit_count, 1u, metal::memory_order_relaxed);
-                    cluster_hits.inner[_e58] = first + li_6;
+                    cluster_hits.inner[_e58] = first + li_8;
                 }
             }
             metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
@@ -681,14 +741,14 @@ void cull_tile(
                     if ((unnamed_2 + CLUSTER) > MAX_TILE_LIGHTS) {
                         shade_list(unnamed_2, params, lights, rt2_2, r2_3, wg_counts, pos, nrm, valid, e, kept, tile_lights, _buffer_sizes);
                         metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-                        if (li_6 == 0u) {
+                        if (li_8 == 0u) {
                             metal::atomic_store_explicit(&list_count, 0u, metal::memory_order_relaxed);
                         }
                         metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
                     }
                     uint _e78 = h;
                     uint _e80 = cluster_hits.inner[_e78];
-                    uint _e81 = cluster_slot(_e80, li_6);
+                    uint _e81 = cluster_slot(_e80, li_8);
                     GpuLight l_1 = lights[_e81];
                     if (metal::any(l_1.intensity != metal::float3(0.0))) {
                         count_one(COUNT_SPHERE_TESTS, wg_counts);
@@ -757,8 +817,6 @@ kernel void main_(
     }
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
     bool local = {};
-    metal::float4 p = metal::float4(0.0);
-    bool local_1 = {};
     uint sub = wg.z;
     uint px = naga_mod(sub, P) + (((wg.x * TILE) + lid.x) * P);
     uint py = naga_div(sub, P) + (((wg.y * TILE) + lid.y) * P);
@@ -769,53 +827,26 @@ kernel void main_(
     } else {
         local = false;
     }
-    bool inside = local;
+    bool inside_1 = local;
     uint _e38 = params.width;
-    uint pix = (py * _e38) + px;
-    if (inside) {
-        GbTexel _e44 = gbuffer_at(pix, view, position_tex, normal_tex);
-        p = _e44.position;
-        nrm = _e44.normal.xyz;
-    }
-    metal::float4 _e50 = p;
-    pos = _e50.xyz;
-    if (inside) {
-        float _e56 = p.w;
-        local_1 = _e56 > 0.0;
-    } else {
-        local_1 = false;
-    }
-    bool _e60 = local_1;
-    valid = _e60;
-    counts_begin(li, wg_counts);
-    bool _e62 = valid;
-    if (_e62) {
-        count_one(COUNT_PIXELS, wg_counts);
-    }
-    metal::float3 _e65 = pos;
-    bool _e67 = valid;
-    WorkgroupBox _e68 = workgroup_box(li, _e65, _e67, wg_lo, wg_hi, wg_box);
-    uint _e71 = params.subset_shift;
-    uint _e73 = shifted_subset(sub, _e71, P);
-    bool _e74 = box_is_empty(_e68);
-    if (!(_e74)) {
+    uint pix_1 = (py * _e38) + px;
+    WorkgroupBox _e41 = load_receiver(li, pix_1, inside_1, wg_lo, wg_hi, wg_box, view, position_tex, normal_tex, wg_counts, pos, nrm, valid);
+    uint _e44 = params.subset_shift;
+    uint _e46 = shifted_subset(sub, _e44, P);
+    bool _e47 = box_is_empty(_e41);
+    if (!(_e47)) {
         count_tests(li, COUNT_TILES, 1u, wg_counts);
         metal::uint4 grid_1 = params.far_grid;
-        uint _e85 = params.lights_per_subset;
-        uint _e91 = params.far_groups_at;
-        uint _e96 = group_count(grid_1.x, grid_1.y, grid_1.z, grid_1.w);
-        cull_tile(li, _e68.lo, _e68.hi, grid_1, _e73 * naga_div(_e85, CLUSTER), _e91 + (_e73 * _e96), params, lights, rt2_2, r2_3, boxes, wg_counts, pos, nrm, valid, e, kept, tile_lights, list_count, cluster_hits, hit_count, _buffer_sizes);
+        uint _e58 = params.lights_per_subset;
+        uint _e64 = params.far_groups_at;
+        uint _e69 = group_count(grid_1.x, grid_1.y, grid_1.z, grid_1.w);
+        cull_tile(li, _e41.lo, _e41.hi, grid_1, _e46 * naga_div(_e58, CLUSTER), _e64 + (_e46 * _e69), params, lights, rt2_2, r2_3, boxes, wg_counts, pos, nrm, valid, e, kept, tile_lights, list_count, cluster_hits, hit_count, _buffer_sizes);
     }
-    bool _e100 = valid;
-    if (_e100) {
-        uint _e103 = kept;
-        count_add(COUNT_KEPT, _e103, wg_counts);
-    }
-    counts_end(li, counters, wg_counts, _buffer_sizes);
-    if (inside) {
-        metal::float3 _e107 = e;
-        uint _e109 = kept;
-        irradiance[pix] = metal::float4(_e107, static_cast<float>(_e109));
+    count_receiver(li, counters, wg_counts, valid, kept, _buffer_sizes);
+    if (inside_1) {
+        metal::float3 _e75 = e;
+        uint _e77 = kept;
+        irradiance[pix_1] = metal::float4(_e75, static_cast<float>(_e77));
         return;
     } else {
         return;

@@ -236,41 +236,41 @@ bool box_overlaps_box(
     metal::float3 lo2_,
     metal::float3 hi2_
 ) {
+    bool local_1 = {};
     bool local_2 = {};
     bool local_3 = {};
     bool local_4 = {};
     bool local_5 = {};
-    bool local_6 = {};
     if (lo1_.x <= hi2_.x) {
-        local_2 = lo2_.x <= hi1_.x;
+        local_1 = lo2_.x <= hi1_.x;
+    } else {
+        local_1 = false;
+    }
+    bool _e13 = local_1;
+    if (_e13) {
+        local_2 = lo1_.y <= hi2_.y;
     } else {
         local_2 = false;
     }
-    bool _e13 = local_2;
-    if (_e13) {
-        local_3 = lo1_.y <= hi2_.y;
+    bool _e20 = local_2;
+    if (_e20) {
+        local_3 = lo2_.y <= hi1_.y;
     } else {
         local_3 = false;
     }
-    bool _e20 = local_3;
-    if (_e20) {
-        local_4 = lo2_.y <= hi1_.y;
+    bool _e27 = local_3;
+    if (_e27) {
+        local_4 = lo1_.z <= hi2_.z;
     } else {
         local_4 = false;
     }
-    bool _e27 = local_4;
-    if (_e27) {
-        local_5 = lo1_.z <= hi2_.z;
+    bool _e34 = local_4;
+    if (_e34) {
+        local_5 = lo2_.z <= hi1_.z;
     } else {
         local_5 = false;
     }
-    bool _e34 = local_5;
-    if (_e34) {
-        local_6 = lo2_.z <= hi1_.z;
-    } else {
-        local_6 = false;
-    }
-    bool _e41 = local_6;
+    bool _e41 = local_5;
     return _e41;
 }
 
@@ -310,13 +310,13 @@ float smith_visibility(
     float n_v,
     float alpha_2
 ) {
-    bool local_7 = {};
+    bool local_6 = {};
     if (!((n_l_1 <= 0.0))) {
-        local_7 = n_v <= 0.0;
+        local_6 = n_v <= 0.0;
     } else {
-        local_7 = true;
+        local_6 = true;
     }
-    bool _e11 = local_7;
+    bool _e11 = local_6;
     if (_e11) {
         return 0.0;
     }
@@ -380,15 +380,15 @@ metal::float3 specular_brdf(
     metal::float3 v_2,
     metal::float3 l_1
 ) {
-    bool local_8 = {};
+    bool local_7 = {};
     float n_l_2 = metal::dot(n, l_1);
     float n_v_1 = metal::dot(n, v_2);
     if (!((n_l_2 <= 0.0))) {
-        local_8 = n_v_1 <= 0.0;
+        local_7 = n_v_1 <= 0.0;
     } else {
-        local_8 = true;
+        local_7 = true;
     }
-    bool _e18 = local_8;
+    bool _e18 = local_7;
     if (_e18) {
         return metal::float3(0.0, 0.0, 0.0);
     }
@@ -448,20 +448,20 @@ bool has_specular(
     metal::float3 f0_d_5,
     float f90_d_5
 ) {
+    bool local_8 = {};
     bool local_9 = {};
-    bool local_10 = {};
     if (!((metallic_6 > 0.0))) {
-        local_9 = f90_d_5 > 0.0;
+        local_8 = f90_d_5 > 0.0;
+    } else {
+        local_8 = true;
+    }
+    bool _e11 = local_8;
+    if (!(_e11)) {
+        local_9 = metal::max(metal::max(f0_d_5.x, f0_d_5.y), f0_d_5.z) > 0.0;
     } else {
         local_9 = true;
     }
-    bool _e11 = local_9;
-    if (!(_e11)) {
-        local_10 = metal::max(metal::max(f0_d_5.x, f0_d_5.y), f0_d_5.z) > 0.0;
-    } else {
-        local_10 = true;
-    }
-    bool _e23 = local_10;
+    bool _e23 = local_9;
     return _e23;
 }
 
@@ -559,13 +559,13 @@ WorkgroupBox workgroup_bounds(
 
 WorkgroupBox workgroup_box(
     uint li_2,
-    metal::float3 p_1,
+    metal::float3 p,
     bool has,
     threadgroup type_7& wg_lo,
     threadgroup type_7& wg_hi,
     threadgroup WorkgroupBox& wg_box
 ) {
-    WorkgroupBox _e9 = workgroup_bounds(li_2, has ? p_1 : metal::float3(340282350000000000000000000000000000000.0), has ? p_1 : metal::float3(-340282350000000000000000000000000000000.0), wg_lo, wg_hi, wg_box);
+    WorkgroupBox _e9 = workgroup_bounds(li_2, has ? p : metal::float3(340282350000000000000000000000000000000.0), has ? p : metal::float3(-340282350000000000000000000000000000000.0), wg_lo, wg_hi, wg_box);
     return _e9;
 }
 
@@ -589,7 +589,7 @@ GbTexel gbuffer_at(
     metal::texture2d<float, metal::access::sample> position_tex,
     metal::texture2d<float, metal::access::sample> normal_tex
 ) {
-    bool local_11 = {};
+    bool local_10 = {};
     uint _e3 = view.width;
     uint _e8 = view.width;
     metal::int2 texel_1 = metal::int2(static_cast<int>(naga_mod(i, _e3)), static_cast<int>(naga_div(i, _e8)));
@@ -598,11 +598,11 @@ GbTexel gbuffer_at(
     metal::float3 n_4 = _e15.xyz;
     float len2_1 = metal::dot(n_4, n_4);
     if (_e12.w > 0.0) {
-        local_11 = len2_1 > 0.0;
+        local_10 = len2_1 > 0.0;
     } else {
-        local_11 = false;
+        local_10 = false;
     }
-    bool valid_1 = local_11;
+    bool valid_1 = local_10;
     metal::float3 _e30 = view.eye;
     metal::float3 v_7 = _e12.xyz - _e30;
     metal::float4 position = metal::float4(_e12.xyz, valid_1 ? 1.0 : 0.0);
@@ -639,18 +639,64 @@ metal::float3 glossy_term(
     metal::float3 v_5,
     float t
 ) {
-    bool local_12 = {};
+    bool local_11 = {};
     if (!(!(g_2.on))) {
-        local_12 = t <= 0.0;
+        local_11 = t <= 0.0;
     } else {
-        local_12 = true;
+        local_11 = true;
     }
-    bool _e13 = local_12;
+    bool _e13 = local_11;
     if (_e13) {
         return metal::float3(0.0);
     }
     metal::float3 _e30 = specular_correction(g_2.m.albedo, g_2.m.metallic, g_2.m.f0_, g_2.m.f90_, g_2.m.alpha, n_3, g_2.v, metal::normalize(-(v_5)));
     return (l_4.intensity * _e30) * t;
+}
+
+WorkgroupBox load_receiver(
+    uint li_3,
+    uint pix,
+    bool inside,
+    threadgroup type_7& wg_lo,
+    threadgroup type_7& wg_hi,
+    threadgroup WorkgroupBox& wg_box,
+    constant ViewParams& view,
+    metal::texture2d<float, metal::access::sample> position_tex,
+    metal::texture2d<float, metal::access::sample> normal_tex,
+    device type_12 const& materials,
+    thread metal::float3& pos,
+    thread metal::float3& nrm,
+    thread bool& valid,
+    thread Glossy& g_4,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float4 p_1 = metal::float4(0.0);
+    bool local_12 = {};
+    if (inside) {
+        GbTexel _e6 = gbuffer_at(pix, view, position_tex, normal_tex);
+        p_1 = _e6.position;
+        nrm = _e6.normal.xyz;
+    }
+    metal::float4 _e12 = p_1;
+    pos = _e12.xyz;
+    if (inside) {
+        float _e18 = p_1.w;
+        local_12 = _e18 > 0.0;
+    } else {
+        local_12 = false;
+    }
+    bool _e22 = local_12;
+    valid = _e22;
+    bool _e24 = valid;
+    if (_e24) {
+        metal::float3 _e27 = pos;
+        Glossy _e28 = glossy_at(pix, _e27, view, normal_tex, materials, _buffer_sizes);
+        g_4 = _e28;
+    }
+    metal::float3 _e30 = pos;
+    bool _e32 = valid;
+    WorkgroupBox _e33 = workgroup_box(li_3, _e30, _e32, wg_lo, wg_hi, wg_box);
+    return _e33;
 }
 
 void shade_light(
@@ -757,7 +803,7 @@ void shade_list(
 }
 
 void cull_tile(
-    uint li_3,
+    uint li_4,
     metal::float3 lo_1,
     metal::float3 hi_1,
     metal::uint4 grid,
@@ -783,7 +829,7 @@ void cull_tile(
 ) {
     uint g_3 = 0u;
     uint h = {};
-    if (li_3 == 0u) {
+    if (li_4 == 0u) {
         metal::atomic_store_explicit(&list_count, 0u, metal::memory_order_relaxed);
     }
     uint _e14 = group_count(grid.x, grid.y, grid.z, grid.w);
@@ -814,16 +860,16 @@ void cull_tile(
             uint first = clusters_at + _e33;
             uint _e35 = g_3;
             uint _e40 = group_clusters(_e35, grid.x, grid.y, grid.z, grid.w);
-            if (li_3 == 0u) {
+            if (li_4 == 0u) {
                 metal::atomic_store_explicit(&hit_count, 0u, metal::memory_order_relaxed);
             }
             metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-            if (li_3 < _e40) {
-                GpuBox cb = boxes[first + li_3];
+            if (li_4 < _e40) {
+                GpuBox cb = boxes[first + li_4];
                 bool _e52 = box_overlaps_box(cb.lo, cb.hi, lo_1, hi_1);
                 if (_e52) {
                     uint _e56 = metal::atomic_fetch_add_explicit(&hit_count, 1u, metal::memory_order_relaxed);
-                    cluster_hits.inner[_e56] = first + li_3;
+                    cluster_hits.inner[_e56] = first + li_4;
                 }
             }
             metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
@@ -852,14 +898,14 @@ void cull_tile(
                     if ((unnamed_2 + CLUSTER) > MAX_TILE_LIGHTS) {
                         shade_list(unnamed_2, params, lights, rt2_2, r2_3, pos, nrm, valid, e, kept, s, g_4, tile_lights, _buffer_sizes);
                         metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-                        if (li_3 == 0u) {
+                        if (li_4 == 0u) {
                             metal::atomic_store_explicit(&list_count, 0u, metal::memory_order_relaxed);
                         }
                         metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
                     }
                     uint _e76 = h;
                     uint _e78 = cluster_hits.inner[_e76];
-                    uint _e79 = cluster_slot(_e78, li_3);
+                    uint _e79 = cluster_slot(_e78, li_4);
                     GpuLight l_6 = lights[_e79];
                     if (metal::any(l_6.intensity != metal::float3(0.0))) {
                         float _e89 = cull_r2_of(_e79, r2_3, _buffer_sizes);
@@ -926,8 +972,6 @@ kernel void main_(
     }
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
     bool local = {};
-    metal::float4 p = metal::float4(0.0);
-    bool local_1 = {};
     uint sub = wg.z;
     uint px = naga_mod(sub, P) + (((wg.x * TILE) + lid.x) * P);
     uint py = naga_div(sub, P) + (((wg.y * TILE) + lid.y) * P);
@@ -938,49 +982,26 @@ kernel void main_(
     } else {
         local = false;
     }
-    bool inside = local;
+    bool inside_1 = local;
     uint _e38 = params.width;
-    uint pix = (py * _e38) + px;
-    if (inside) {
-        GbTexel _e44 = gbuffer_at(pix, view, position_tex, normal_tex);
-        p = _e44.position;
-        nrm = _e44.normal.xyz;
-    }
-    metal::float4 _e50 = p;
-    pos = _e50.xyz;
-    if (inside) {
-        float _e56 = p.w;
-        local_1 = _e56 > 0.0;
-    } else {
-        local_1 = false;
-    }
-    bool _e60 = local_1;
-    valid = _e60;
-    bool _e62 = valid;
-    if (_e62) {
-        metal::float3 _e65 = pos;
-        Glossy _e66 = glossy_at(pix, _e65, view, normal_tex, materials, _buffer_sizes);
-        g_4 = _e66;
-    }
-    metal::float3 _e68 = pos;
-    bool _e70 = valid;
-    WorkgroupBox _e71 = workgroup_box(li, _e68, _e70, wg_lo, wg_hi, wg_box);
-    uint _e74 = params.subset_shift;
-    uint _e76 = shifted_subset(sub, _e74, P);
-    bool _e77 = box_is_empty(_e71);
-    if (!(_e77)) {
+    uint pix_1 = (py * _e38) + px;
+    WorkgroupBox _e41 = load_receiver(li, pix_1, inside_1, wg_lo, wg_hi, wg_box, view, position_tex, normal_tex, materials, pos, nrm, valid, g_4, _buffer_sizes);
+    uint _e44 = params.subset_shift;
+    uint _e46 = shifted_subset(sub, _e44, P);
+    bool _e47 = box_is_empty(_e41);
+    if (!(_e47)) {
         metal::uint4 grid_1 = params.far_grid;
-        uint _e86 = params.lights_per_subset;
-        uint _e92 = params.far_groups_at;
-        uint _e97 = group_count(grid_1.x, grid_1.y, grid_1.z, grid_1.w);
-        cull_tile(li, _e71.lo, _e71.hi, grid_1, _e76 * naga_div(_e86, CLUSTER), _e92 + (_e76 * _e97), params, lights, rt2_2, r2_3, boxes, pos, nrm, valid, e, kept, s, g_4, tile_lights, list_count, cluster_hits, hit_count, _buffer_sizes);
+        uint _e56 = params.lights_per_subset;
+        uint _e62 = params.far_groups_at;
+        uint _e67 = group_count(grid_1.x, grid_1.y, grid_1.z, grid_1.w);
+        cull_tile(li, _e41.lo, _e41.hi, grid_1, _e46 * naga_div(_e56, CLUSTER), _e62 + (_e46 * _e67), params, lights, rt2_2, r2_3, boxes, pos, nrm, valid, e, kept, s, g_4, tile_lights, list_count, cluster_hits, hit_count, _buffer_sizes);
     }
-    if (inside) {
-        metal::float3 _e103 = e;
-        uint _e105 = kept;
-        irradiance[pix] = metal::float4(_e103, static_cast<float>(_e105));
-        metal::float3 _e111 = s;
-        specular[pix] = metal::float4(_e111, 0.0);
+    if (inside_1) {
+        metal::float3 _e73 = e;
+        uint _e75 = kept;
+        irradiance[pix_1] = metal::float4(_e73, static_cast<float>(_e75));
+        metal::float3 _e81 = s;
+        specular[pix_1] = metal::float4(_e81, 0.0);
         return;
     } else {
         return;
