@@ -30,7 +30,7 @@ within 3 %, for slc's CPU and GPU backends.
     cargo build --release -p slc-cli
     python3 tools/mitsuba_compare.py [--spp 1024] [--seeds 4] [--size 64] [--backends cpu,gpu] [--point-light] [--out DIR]
 
-Issue 30's rows (README): --spp 1024 --mitsuba-spp 4096 --seeds 16 --method slc
+Issue 30's rows (docs/results/mitsuba-sphere-light.md): --spp 1024 --mitsuba-spp 4096 --seeds 16 --method slc
 (16 seeds per renderer, so that each block's standard error is itself
 well estimated).
 

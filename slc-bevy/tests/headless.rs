@@ -34,7 +34,7 @@ use slc_bevy::{Culling, SlcCamera, SlcLight, SlcPlugin, SlcStatus};
 use std::sync::{Arc, Mutex};
 
 /// The image size: 96×64, times `SLC_BEVY_HEADLESS_SCALE` (an integer, 1
-/// by default; the README's images are made at 5).
+/// by default; docs/results/bevy-headless.md's images are made at 5).
 fn size() -> (u32, u32) {
     let k = std::env::var("SLC_BEVY_HEADLESS_SCALE")
         .ok()

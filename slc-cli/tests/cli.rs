@@ -1,5 +1,5 @@
-//! Runs the `slc` binary the way README.md shows it (at small sizes where
-//! the README uses large ones), so the README's commands cannot rot.
+//! Runs the `slc` binary the way README.md and docs/guide.md show it (at
+//! small sizes where they use large ones), so their commands cannot rot.
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};

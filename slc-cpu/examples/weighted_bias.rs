@@ -1,6 +1,6 @@
 //! Compares the image means of `slc-weighted` and `slc-reservoir` with
 //! `uniform` on a scene file at path depths 1, 2 and 8, with their standard
-//! errors over seeds (README, "Materials": slc-weighted's difference at
+//! errors over seeds (docs/materials.md: slc-weighted's difference at
 //! small ranges, found against Mitsuba 3). Before the path tracers traced
 //! the last vertex's BSDF sample for its emission, the methods differed at
 //! a truncated depth (at depth 1 on the Mitsuba scene with Lambertian

@@ -12,8 +12,8 @@
 //!
 //! `cargo test` runs it as a GPU test (`tests/tests/minimal_example.rs`).
 //! (With naga_oil, the composer Bevy uses, the same functions are modules:
-//! `#import slc::range::{random_range2, slc_keep, slc_weight}`; see the
-//! README.)
+//! `#import slc::range::{random_range2, slc_keep, slc_weight}`; see
+//! docs/embedding.md.)
 
 use glam::Vec3;
 use slc_core::range::{RangeParams, random_range2, slc_keep, slc_weight};
