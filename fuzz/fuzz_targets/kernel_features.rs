@@ -30,6 +30,7 @@ struct Input {
     direct_output: u8,
     glossy: bool,
     motion_vectors: bool,
+    counters: bool,
 }
 
 fuzz_target!(|i: Input| {
@@ -64,6 +65,7 @@ fuzz_target!(|i: Input| {
         ][i.direct_output as usize % 4],
         glossy: i.glossy,
         motion_vectors: i.motion_vectors,
+        counters: i.counters,
     };
     match generate(kernel, &features) {
         Ok(wgsl) => assert!(wgsl.contains("fn "), "{kernel:?}: empty source"),
