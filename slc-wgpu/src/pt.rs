@@ -119,9 +119,33 @@ fn selection(method: PtMethod) -> (Selection, usize) {
     }
 }
 
-/// A kernel's pipeline per method (at [`PtMethod::index`]), and its bind
-/// group.
-type Kernels = (Vec<wgpu::ComputePipeline>, wgpu::BindGroup);
+/// One path-tracer kernel: its WGSL per method (at [`PtMethod::index`]),
+/// generated and validated by [`GpuPt::new`], and the pipelines built from
+/// it on a method's first render (a user of one method compiles two
+/// pipelines, not twelve); its bind group.
+struct Kernels {
+    name: &'static str,
+    layout: wgpu::BindGroupLayout,
+    wgsl: Vec<String>,
+    pipelines: Vec<Option<wgpu::ComputePipeline>>,
+    bind_group: wgpu::BindGroup,
+}
+
+impl Kernels {
+    /// Builds `method`'s pipeline if no render has used it yet.
+    fn prepare(&mut self, gpu: &GpuContext, table: &wgpu::BindGroupLayout, method: PtMethod) {
+        let i = method.index();
+        if self.pipelines[i].is_none() {
+            let wgsl = self.wgsl[i].clone();
+            self.pipelines[i] = Some(pipeline(gpu, self.name, wgsl, &[&self.layout, table]));
+        }
+    }
+
+    /// `method`'s pipeline, built by [`Kernels::prepare`].
+    fn get(&self, method: PtMethod) -> &wgpu::ComputePipeline {
+        self.pipelines[method.index()].as_ref().expect("prepared before the render encodes")
+    }
+}
 
 /// GPU buffers and pipelines for one [`PtScene`] and image size. Keeps a
 /// clone of the context (no lifetime ties it to the caller's); a render
@@ -143,7 +167,8 @@ pub struct GpuPt {
 
 impl GpuPt {
     /// Uploads the scene (lights, IES table, BSH, geometry BVH, materials)
-    /// and builds the pipelines for a `width × height` image. Buffer,
+    /// and generates every method's kernels for a `width × height` image (a
+    /// method's pipelines are built on its first render). Buffer,
     /// binding-count, dispatch and traversal-depth limits are checked first.
     pub fn new(gpu: &GpuContext, pts: &PtScene, width: u32, height: u32) -> Result<Self, GpuError> {
         if !(1..=16384).contains(&width) || !(1..=16384).contains(&height) {
@@ -223,19 +248,20 @@ impl GpuPt {
         // BSDF sample finds.
         let pt_params = UniformSlots::new::<PtParams>(gpu, "pt params", MAX_DEPTH as u64 + 1);
         let shade_params = UniformSlots::new::<ShadeParams>(gpu, "shade params", MAX_DEPTH as u64);
-        // One bind group per kernel; one pipeline per light selection.
+        // One bind group per kernel; one pipeline per light selection,
+        // built on the selection's first render.
         let kernel = |k: Kernel, reads: u32, writes: u32, bufs: &[&wgpu::Buffer], uniform: u64| {
-            let layout = bind_layout(gpu, k.name(), reads, writes, true);
-            let pipelines = PtMethod::ALL
+            let wgsl = PtMethod::ALL
                 .iter()
                 .map(|&m| {
                     let (selection, k_slots) = selection(m);
-                    let f = Features { selection, reservoir_k: k_slots as u32, ..base };
-                    Ok(pipeline(gpu, k.name(), generate(k, &f)?, &[&layout, &set.table_layout]))
+                    generate(k, &Features { selection, reservoir_k: k_slots as u32, ..base })
                 })
-                .collect::<Result<Vec<_>, GpuError>>()?;
-            let bg = bind_group(gpu, k.name(), &layout, bufs, Some(uniform));
-            Ok::<_, GpuError>((pipelines, bg))
+                .collect::<Result<Vec<_>, _>>()?;
+            let layout = bind_layout(gpu, k.name(), reads, writes, true);
+            let bind_group = bind_group(gpu, k.name(), &layout, bufs, Some(uniform));
+            let pipelines = vec![None; wgsl.len()];
+            Ok::<_, GpuError>(Kernels { name: k.name(), layout, wgsl, pipelines, bind_group })
         };
         let extend = kernel(
             Kernel::PtExtend,
@@ -309,8 +335,6 @@ impl GpuPt {
         s: &PtSettings,
         passes: u32,
     ) -> Result<bool, GpuError> {
-        let (extend, connect) =
-            (&self.extend.0[s.method.index()], &self.connect.0[s.method.index()]);
         if acc.size() != (self.width, self.height) {
             return Err(GpuError::Setting(format!(
                 "accumulation is {:?}, the GPU scene was set up for {}x{}",
@@ -328,6 +352,9 @@ impl GpuPt {
         let params = RangeParams::new(s.error_bound, s.exposure)
             .map_err(|e| GpuError::Setting(e.to_string()))?;
         let gpu = &self.gpu;
+        self.extend.prepare(gpu, &self.set.table_layout, s.method);
+        self.connect.prepare(gpu, &self.set.table_layout, s.method);
+        let (extend, connect) = (self.extend.get(s.method), self.connect.get(s.method));
         // The baselines cull nothing: r_t² = +∞ makes p = 1 and r² = +∞.
         self.set.set_threshold(gpu, s.method.culls().then_some(&params));
         let pixels = self.width * self.height;
@@ -389,13 +416,17 @@ impl GpuPt {
                 }
                 for depth in 0..=s.max_depth as usize {
                     cp.set_pipeline(extend);
-                    cp.set_bind_group(0, &self.extend.1, &[self.pt_params.offset(depth)]);
+                    cp.set_bind_group(0, &self.extend.bind_group, &[self.pt_params.offset(depth)]);
                     cp.dispatch_workgroups(pixels.div_ceil(WG), 1, 1);
                     // The last extend only adds the emission its BSDF
                     // sample finds (MIS's other share of the last vertex).
                     if depth < s.max_depth as usize {
                         cp.set_pipeline(connect);
-                        cp.set_bind_group(0, &self.connect.1, &[self.shade_params.offset(depth)]);
+                        cp.set_bind_group(
+                            0,
+                            &self.connect.bind_group,
+                            &[self.shade_params.offset(depth)],
+                        );
                         cp.dispatch_workgroups(pixels.div_ceil(WG), 1, 1);
                     }
                 }

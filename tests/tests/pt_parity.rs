@@ -203,7 +203,7 @@ fn gpu_path_tracer_matches_cpu_on_glossy_surfaces() {
 
 fn matches_cpu_and_unculled(glossy: bool) {
     for method in PtMethod::ALL {
-        let Some((g, c, u)) = run(method, 0.05, 1.0, glossy, 400) else { return };
+        let Some((g, c, u)) = run(method, 0.05, 1.0, glossy, 200) else { return };
         let name = method.name();
         assert!(g.image_mean.iter().all(|&m| m > 0.0));
         assert_means_agree(&format!("GPU vs CPU {name}"), &g, &c);
@@ -228,7 +228,7 @@ fn matches_cpu_and_unculled(glossy: bool) {
 /// facing, away and any way; points in the volume, in clusters, log-normal
 /// or one dominant; point/spot/IES mixes; spots aimed out; glossy
 /// receivers) at its automatic ε: every method on the GPU has the CPU's
-/// image mean and the CPU's unculled mean (5σ); 6×6 pixels, 48 passes, so
+/// image mean and the CPU's unculled mean (5σ); 6×6 pixels, 32 passes, so
 /// the ten families cost CI about what one scene of the tests above does.
 fn gpu_path_tracer_matches_cpu_on_the_scene_suite() {
     if gpu().is_none() {
@@ -253,7 +253,7 @@ fn gpu_path_tracer_matches_cpu_on_the_scene_suite() {
         .unwrap();
         let name = file.file_stem().unwrap().to_string_lossy().into_owned();
         for method in PtMethod::ALL {
-            let Some((g, c, u)) = run_on(&scene, method, eps, 48, (6, 6)) else { return };
+            let Some((g, c, u)) = run_on(&scene, method, eps, 32, (6, 6)) else { return };
             let what = format!("{name} {}", method.name());
             assert_means_agree(&format!("{what}: GPU vs CPU"), &g, &c);
             assert_means_agree(&format!("{what}: GPU vs CPU uniform (unculled)"), &g, &u);
