@@ -844,6 +844,48 @@ fn path_tracer_bench() {
     std::fs::remove_dir_all(&d).ok();
 }
 
+/// `slc bench --app pt --noise seeds`: no reference is rendered (nothing
+/// cached); each method's error is σ = RMSE(seed 1, seed 2)/√2 at equal
+/// passes, finite and positive, its own net figure, and the report says
+/// where it came from.
+fn path_tracer_bench_noise_from_seeds() {
+    let d = tempdir("ptseeds");
+    let text = ok(
+        &d,
+        &[
+            "bench",
+            "--app",
+            "pt",
+            "--noise",
+            "seeds",
+            "--width",
+            "12",
+            "--height",
+            "12",
+            "--seconds",
+            "0.1",
+            "--json",
+            "p.json",
+            "--cache-dir",
+            "cache",
+        ],
+    );
+    assert!(text.contains("none: noise from seeds 1 and 2"), "{text}");
+    assert!(!text.contains("warning: the reference"), "{text}");
+    assert!(!d.join("cache").exists(), "a reference was rendered");
+    let json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(d.join("p.json")).unwrap()).unwrap();
+    assert_eq!(json["reference_noise"].as_f64(), Some(0.0));
+    let runs = json["runs"].as_array().unwrap();
+    assert_eq!(runs.len(), 6);
+    for r in runs {
+        let (rmse, net) = (r["rmse"].as_f64().unwrap(), r["rmse_net"].as_f64().unwrap());
+        assert!(rmse.is_finite() && rmse > 0.0 && net == rmse, "{r}");
+        assert!(r["spp"].as_u64().unwrap() >= 1, "{r}");
+    }
+    std::fs::remove_dir_all(&d).ok();
+}
+
 /// MTL features slc does not model produce one warning line per material
 /// (naming the features and the material), and the render still succeeds;
 /// a matte material, and a glossy one (Ks/Ns are modelled), say nothing.
@@ -1016,6 +1058,7 @@ slc_tests::harness!(
     Gpu: gpu_path_tracer_renders_and_benches,
     Cpu: path_tracer_renders,
     Cpu: path_tracer_bench,
+    Cpu: path_tracer_bench_noise_from_seeds,
     Cpu: suite_commands,
     Cpu: unmodelled_mtl_features_are_warned_about_once,
     Display: view_renders_frames_and_saves_a_screenshot,

@@ -49,6 +49,15 @@ pub struct BenchArgs {
     /// Path tracing: seconds per method (equal time).
     #[arg(long, default_value_t = 10.0)]
     pub seconds: f64,
+    /// Path tracing: where each method's error comes from. `reference`: its
+    /// RMSE against a CPU reference of `--reference-spp` samples, the
+    /// reference's own noise taken out. `seeds`: no reference (any
+    /// resolution, any backend): each method renders twice, seeds `--seed`
+    /// and `--seed + 1`, pass for pass, and its noise is σ = RMSE(one,
+    /// other)/√2, the RMSE of one render against the exact image (every
+    /// method is unbiased: the tests check it).
+    #[arg(long, value_enum, default_value_t = Noise::Reference)]
+    pub noise: Noise,
     /// Path tracing: samples per pixel of the reference.
     #[arg(long, default_value_t = 1024)]
     pub reference_spp: u32,
@@ -80,6 +89,15 @@ pub struct BenchArgs {
     /// one the CPU has (avx512, avx2 or baseline), to measure a lower one.
     #[arg(long, value_parser = simd_path)]
     pub simd: Option<slc_cpu::simd::SimdPath>,
+}
+
+/// `--noise`: against a reference, or from pairs of seeds.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum Noise {
+    /// RMSE against a CPU reference, its own noise taken out.
+    Reference,
+    /// σ from two renders with different seeds: RMSE(one, other)/√2.
+    Seeds,
 }
 
 /// `--simd`'s value: a [`slc_cpu::simd::SimdPath`] by its name.

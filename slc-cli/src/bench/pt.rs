@@ -1,7 +1,7 @@
 //! Path tracing at equal time: every method for the same wall-clock time,
 //! RMSE against a reference.
 
-use super::args::BenchArgs;
+use super::args::{BenchArgs, Noise};
 use crate::backends::{GPU_BATCH, gpu_context, path_tracer};
 use crate::reference::pt_reference;
 use crate::report::{PtReport, PtRun, write_pt_csv};
@@ -28,7 +28,9 @@ pub(super) fn run(a: BenchArgs) -> anyhow::Result<()> {
 }
 
 /// Every method on one scene for `--seconds` each on the chosen backend,
-/// RMSE against a (cached) CPU reference of `--reference-spp`.
+/// RMSE against a (cached) CPU reference of `--reference-spp`, or with
+/// `--noise seeds` the noise σ from two renders of different seeds (each
+/// method then takes twice `--seconds`).
 pub(super) fn pt_equal_time(
     a: &BenchArgs,
     scene: &slc_scene::scene::Scene,
@@ -52,21 +54,28 @@ pub(super) fn pt_equal_time(
     bar.set_style(ProgressStyle::with_template(
         "{spinner} [{bar:30}] {pos}/{len} spp, {msg} (ETA {eta})",
     )?);
-    bar.set_message(format!("reference: {}", a.reference_method.name()));
-    let mut progress = |done: u32, total: u32| {
-        bar.set_length(total as u64);
-        bar.set_position(done as u64);
+    // The reference (image, its own noise, from the cache), or none when
+    // the noise comes from seed pairs.
+    let reference = match a.noise {
+        Noise::Seeds => None,
+        Noise::Reference => {
+            bar.set_message(format!("reference: {}", a.reference_method.name()));
+            let mut progress = |done: u32, total: u32| {
+                bar.set_length(total as u64);
+                bar.set_position(done as u64);
+            };
+            let r = pt_reference(
+                &mut CpuPathTracer::new(&pts),
+                w,
+                h,
+                &ref_settings,
+                a.reference_spp,
+                Some(&a.cache_dir),
+                &mut progress,
+            )?;
+            Some(r)
+        }
     };
-    let r = pt_reference(
-        &mut CpuPathTracer::new(&pts),
-        w,
-        h,
-        &ref_settings,
-        a.reference_spp,
-        Some(&a.cache_dir),
-        &mut progress,
-    )?;
-    let (reference, cached) = (r.image, r.cached);
     // The reference stays on the CPU; the methods run on the chosen backend.
     let ctx = gpu_context(a.scene.backend)?;
     let mut tracer = path_tracer(ctx.as_ref(), &pts, w, h)?;
@@ -88,21 +97,32 @@ pub(super) fn pt_equal_time(
             a.seconds
         ));
         let s = PtSettings { method, error_bound: eps, seed: a.seed, ..PtSettings::default() };
+        // Seed pairs: the twin renders the same passes with the next seed.
+        let twin_settings = PtSettings { seed: a.seed.wrapping_add(1), ..s };
         let mut acc = PtRender::new(w, h);
+        let mut twin = PtRender::new(w, h);
         let mut series = Vec::new();
         while acc.time_ms < a.seconds * 1e3 {
             tracer.render(&mut acc, &s, batch).map_err(|e| anyhow!(e))?;
-            series.push((acc.time_ms, acc.passes, acc.image().rmse(&reference)));
+            let error = match &reference {
+                Some(r) => acc.image().rmse(&r.image),
+                None => {
+                    tracer.render(&mut twin, &twin_settings, batch).map_err(|e| anyhow!(e))?;
+                    acc.image().rmse(&twin.image()) / std::f64::consts::SQRT_2
+                }
+            };
+            series.push((acc.time_ms, acc.passes, error));
             bar.set_position(k as u64 * tenths + ((acc.time_ms / 100.0) as u64).min(tenths));
         }
         let last = *series.last().expect("at least one pass");
+        let noise = reference.as_ref().map_or(0.0, |r| r.noise);
         runs.push(PtRun {
             method: method.name().into(),
             param: method.culls().then_some(eps),
             time_ms: last.0,
             spp: last.1,
             rmse: last.2,
-            rmse_net: (last.2 * last.2 - r.noise * r.noise).max(0.0).sqrt(),
+            rmse_net: (last.2 * last.2 - noise * noise).max(0.0).sqrt(),
             series: thin_series(&series),
         });
     }
@@ -121,9 +141,12 @@ pub(super) fn pt_equal_time(
         width: w,
         height: h,
         lights: pts.light_count(),
-        reference: format!("{}, {} spp", a.reference_method.name(), a.reference_spp),
-        reference_noise: r.noise,
-        reference_from_cache: cached,
+        reference: match &reference {
+            Some(_) => format!("{}, {} spp", a.reference_method.name(), a.reference_spp),
+            None => format!("none: noise from seeds {} and {}", a.seed, a.seed.wrapping_add(1)),
+        },
+        reference_noise: reference.as_ref().map_or(0.0, |r| r.noise),
+        reference_from_cache: reference.as_ref().is_some_and(|r| r.cached),
         error_bound_note: eps_note,
         runs,
     };
@@ -141,16 +164,25 @@ fn print_pt_report(a: &BenchArgs, report: &PtReport) {
         println!("eps     {eps:.4} ({})", report.error_bound_note);
     }
     println!("lights  {}", crate::notes::PT_LIGHTS_NOTE);
+    let seeds = a.noise == Noise::Seeds;
+    let source = if seeds {
+        format!("{}: σ = RMSE(one, other)/√2 at equal passes", report.reference)
+    } else {
+        format!(
+            "reference {} {}, its own RMSE about {:.5}",
+            report.reference,
+            if report.reference_from_cache { "from cache" } else { "rendered" },
+            report.reference_noise
+        )
+    };
     println!(
-        "{} {}x{}, {} lights, {:.1} s per method (reference {} {}, its own RMSE about {:.5})",
+        "{} {}x{}, {} lights, {:.1} s per method{} ({source})",
         report.scene,
         w,
         h,
         report.lights,
         a.seconds,
-        report.reference,
-        if report.reference_from_cache { "from cache" } else { "rendered" },
-        report.reference_noise
+        if seeds { " and seed" } else { "" }
     );
     println!(
         "{:<14} {:>8} {:>10} {:>6} {:>10} {:>10} {:>16}",
@@ -167,6 +199,12 @@ fn print_pt_report(a: &BenchArgs, report: &PtReport) {
             r.rmse_net,
             uniform / r.rmse_net
         );
+    }
+    if seeds {
+        println!(
+            "(rmse, rmse net: σ, one render's RMSE against the exact image; the ratio uses it)"
+        );
+        return;
     }
     println!(
         "(rmse net: the reference's own noise taken out, √(rmse² − {:.5}²); the ratio uses it)",

@@ -3,7 +3,8 @@
 //! one JSON, one CSV and one plot for them all.
 //!
 //! Per scene it reports each method's net RMSE (the reference's own noise
-//! taken out), its noise per sample `rmse_net · √spp` (what the selection
+//! taken out; with `--noise seeds`, no reference: the noise σ from two
+//! renders of different seeds, at any resolution), its noise per sample `rmse_net · √spp` (what the selection
 //! buys, independent of speed) and its time per sample against uniform
 //! sampling's (what it costs), and slc-weighted's net RMSE over the best
 //! peer's (uniform, power, lightbvh): the target is ≤ 1 in every
@@ -25,6 +26,9 @@ const PEERS: [&str; 3] = ["uniform", "power", "lightbvh"];
 struct SuiteReport {
     folder: String,
     seconds_per_method: f64,
+    /// Where the errors come from: `reference` (net RMSE against a CPU
+    /// reference) or `seeds` (σ from seed pairs, `--noise seeds`).
+    noise: String,
     scenes: Vec<PtReport>,
     rows: Vec<SuiteRow>,
 }
@@ -96,6 +100,10 @@ pub fn run(a: &BenchArgs, dir: &Path) -> anyhow::Result<()> {
     let report = SuiteReport {
         folder: dir.display().to_string(),
         seconds_per_method: a.seconds,
+        noise: match a.noise {
+            super::args::Noise::Reference => "reference".into(),
+            super::args::Noise::Seeds => "seeds".into(),
+        },
         scenes,
         rows: all_rows,
     };
@@ -124,10 +132,11 @@ fn print_summary(report: &SuiteReport) {
         .first()
         .map_or(Vec::new(), |s| s.runs.iter().map(|r| r.method.clone()).collect());
     println!(
-        "suite {}: {} scenes, {} s per method; net RMSE over uniform's (spp)",
+        "suite {}: {} scenes, {} s per method; {} over uniform's (spp)",
         report.folder,
         report.scenes.len(),
-        report.seconds_per_method
+        report.seconds_per_method,
+        if report.noise == "seeds" { "noise σ (from seed pairs)" } else { "net RMSE" }
     );
     print!("{:<24} {:>7}", "scene", "lights");
     for m in &methods {
