@@ -9,8 +9,8 @@
 //! [`WeslModule::source`]; `slc shaders --out DIR` writes them as
 //! `DIR/wesl/slc/{name}.wesl`). Only `ies` declares a binding, the IES
 //! table at `@group(1) @binding(0)`. slc itself does not depend on the
-//! `wesl` crate (0.6 needs a newer Rust than slc's); its test
-//! (`tests/tests/wesl_module.rs`, feature `wesl` of slc-tests) compiles a
+//! `wesl` crate (0.6 needs a newer Rust than slc's); slc-bevy's test
+//! (`slc-bevy/tests/wesl_module.rs`, beside Bevy's own wesl) compiles a
 //! user shader with it and runs it on the GPU.
 
 /// One module of the `slc` WESL package.
