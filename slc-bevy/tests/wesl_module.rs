@@ -45,7 +45,8 @@ fn main(@builtin(global_invocation_id) id: vec3u) {
 const POINTS: usize = 4096;
 const LIGHTS: usize = 256;
 
-fn compile() -> String {
+/// `user` compiled by wesl with slc's package resolved as `slc::{name}`.
+fn compile(user: &str) -> String {
     let mut r = wesl::resolver::VirtualResolver::new();
     for m in slc_shared_shaders::wesl::modules() {
         r.add_module(
@@ -54,13 +55,13 @@ fn compile() -> String {
         );
     }
     let main = ModulePath::new(PathOrigin::Absolute, vec!["main".into()]);
-    r.add_module(main.clone(), USER.into());
+    r.add_module(main.clone(), user.to_string().into());
     let compiler = wesl::Compiler::new_with_resolver(wesl::CompileOptions::default(), r);
     compiler.compile_module(&main).unwrap_or_else(|e| panic!("wesl: {e}")).to_string()
 }
 
 fn wesl_shader_runs_like_the_rust_functions(gpu: &GpuContext) {
-    let wgsl = compile();
+    let wgsl = compile(USER);
     assert!(!wgsl.contains("import"), "{wgsl}");
     let params = slc_core::range::RangeParams::new(0.01, 1.0).unwrap();
     let h = |k: u32| slc_core::xi::xi_from_bits(slc_core::xi::pcg_hash(k));
@@ -157,22 +158,9 @@ fn wesl_shader_runs_like_the_rust_functions(gpu: &GpuContext) {
 /// The IES module brings its table binding along (`@group(1) @binding(0)`),
 /// and nothing else declares one.
 fn wesl_ies_module_declares_the_table() {
-    let mut r = wesl::resolver::VirtualResolver::new();
-    for m in slc_shared_shaders::wesl::modules() {
-        r.add_module(
-            ModulePath::new(PathOrigin::Package("slc".into()), vec![m.name.into()]),
-            m.source.into(),
-        );
-    }
-    let main = ModulePath::new(PathOrigin::Absolute, vec!["main".into()]);
-    r.add_module(
-        main.clone(),
-        "import slc::ies::ies_candela;\n@compute @workgroup_size(1) fn main() { let c = ies_candela(0u, 0u, 0.5, 0.5); }\n".into(),
+    let wgsl = compile(
+        "import slc::ies::ies_candela;\n@compute @workgroup_size(1) fn main() { let c = ies_candela(0u, 0u, 0.5, 0.5); }\n",
     );
-    let wgsl = wesl::Compiler::new_with_resolver(wesl::CompileOptions::default(), r)
-        .compile_module(&main)
-        .unwrap_or_else(|e| panic!("wesl: {e}"))
-        .to_string();
     assert!(wgsl.contains("@group(1) @binding(0)"), "{wgsl}");
     slc_shared_shaders::validate("wesl ies", &wgsl).unwrap();
 }
