@@ -102,9 +102,10 @@ enum Command {
 struct RenderArgs {
     #[command(flatten)]
     scene: SceneArgs,
-    /// Method: slc | clamp | none | reference (vpl; reference on the CPU
-    /// only); slc | slc-reservoir | slc-weighted | uniform | power | lightbvh
-    /// (pt, both backends) [default: slc].
+    /// Method: slc | clamp | none | reference (vpl, both backends; the
+    /// reference is every VPL at every pixel); slc | slc-reservoir |
+    /// slc-weighted | uniform | power | lightbvh (pt, both backends)
+    /// [default: slc].
     #[arg(long)]
     method: Option<String>,
     /// Path tracing: samples per pixel [default: 16].
@@ -278,20 +279,29 @@ fn render_vpl_gpu(a: RenderArgs) -> anyhow::Result<()> {
     let spinner = spinner("scene and GPU pipelines");
     let r = a.scene.resolve()?;
     let settings = vpl_settings(&a.method_flags(), &r.file, r.exposure)?;
-    if settings.culling == Culling::Reference {
-        return Err(anyhow!(
-            "--method reference (every VPL at every pixel) runs on the CPU; use --backend cpu"
-        ));
-    }
     let gpu = gpu_context(Backend::Gpu)?.context("no GPU context")?;
     let mut frame = a.scene.gpu_frame(&gpu, &r)?;
     spinner.set_message(format!("frame on the GPU ({})", settings.culling.name()));
-    let st = slc_wgpu::frame::indirect_settings(&settings, frame.min_distance())?;
+    // The reference (every VPL at every pixel) is the frame's own
+    // uninterleaved, unculled render; of its settings only the clamp
+    // distance matters.
+    let reference = settings.culling == Culling::Reference;
+    let st = if reference {
+        slc_wgpu::passes::IndirectSettings {
+            min_distance: frame.min_distance(),
+            ..Default::default()
+        }
+    } else {
+        slc_wgpu::frame::indirect_settings(&settings, frame.min_distance())?
+    };
+    let render = |frame: &mut slc_wgpu::frame::GpuVplFrame| {
+        if reference { frame.render_reference(&st) } else { frame.render(&st) }
+    };
     // The first frame pays for the driver's pipeline compilation: measure the second.
-    frame.render(&st)?;
-    let out = frame.render(&st)?;
+    render(&mut frame)?;
+    let out = render(&mut frame)?;
     let written = write_outputs(&out.image, &a.out, r.exposure)?;
-    let versus_none = if settings.culling != Culling::None {
+    let versus_none = if settings.culling != Culling::None && !reference {
         spinner.set_message("unculled interleaved frame for the RMSE");
         let none = frame.render(&slc_wgpu::passes::IndirectSettings {
             culling: slc_wgpu::Culling::None,

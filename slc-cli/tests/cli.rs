@@ -460,7 +460,8 @@ fn shaders_command_exports_every_kernel() {
 /// `slc render --backend gpu` runs the whole frame on the GPU (rasterized
 /// G-buffer, RSM and shadow map) and reports every stage; its image is the
 /// CPU's ray-cast one up to silhouettes and shadow edges (RMSE bound 0.02,
-/// the image mean is about 0.07). `slc bench --backend gpu` writes the
+/// the image mean is about 0.07), and so is its reference (`--method
+/// reference`). `slc bench --backend gpu` writes the
 /// stage times into its JSON. Declared `Gpu` (see the harness at the end).
 fn gpu_backend_renders_like_cpu() {
     let d = tempdir("gpu");
@@ -503,9 +504,28 @@ fn gpu_backend_renders_like_cpu() {
             "r.exr",
         ],
     );
-    assert!(
-        !out.status.success() && String::from_utf8_lossy(&out.stderr).contains("--backend cpu")
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    // The GPU's reference (every VPL at every pixel) is the CPU's, up to
+    // the rasterized G-buffer's silhouettes and shadow edges.
+    ok(
+        &d,
+        &[
+            "render",
+            "--backend",
+            "cpu",
+            "--method",
+            "reference",
+            "--width",
+            "8",
+            "--height",
+            "8",
+            "--vpls",
+            "64",
+            "--out",
+            "rc.exr",
+        ],
     );
+    ok(&d, &["diff", "rc.exr", "r.exr", "--max-rmse", "0.02"]);
     let bench = [
         "bench",
         "--backend",
