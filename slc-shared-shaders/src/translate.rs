@@ -11,7 +11,7 @@ pub struct Translations {
     /// GLSL 4.30 shader of the first entry point (compute kernels: `main`).
     pub glsl: String,
     /// GLSL 4.30 of every entry point (GLSL holds one per shader): `(entry
-    /// point, source)`, in [`Kernel::entry_points`] order.
+    /// point, source)`, in [`Kernel::entry_points`](crate::Kernel::entry_points) order.
     pub glsl_entries: Vec<(String, String)>,
     /// HLSL (shader model 5.1).
     pub hlsl: String,
