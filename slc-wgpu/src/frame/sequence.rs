@@ -118,11 +118,7 @@ impl GpuVplFrame {
                 label: Some("slc warm-up"),
             });
             for _ in 0..WARMUP_BATCH {
-                let (uploads, steps) = self.steps(&at(k), false)?;
-                uploads.record(&gpu, &mut encoder);
-                for step in &steps {
-                    self.record_step(&mut encoder, step, None);
-                }
+                self.record(&mut encoder, &at(k))?;
                 k += 1;
             }
             let index = gpu.queue.submit([encoder.finish()]);
@@ -133,7 +129,10 @@ impl GpuVplFrame {
             }
         }
         let (warmup_frames, warmup_s) = (k, start.elapsed().as_secs_f64());
-        let passes = self.steps(&at(k), false)?.1.len() as u32;
+        // The first timed frame, built once (building a frame advances the
+        // temporal history): its passes size the query set.
+        let mut first = Some(self.steps(&at(k), false)?);
+        let passes = first.as_ref().map_or(0, |(_, steps)| steps.len()) as u32;
         let frames = frames.clamp(1, (2048 / passes.max(1)).max(1));
         let Some(mut timer) = Timer::new(&gpu, frames * passes) else {
             return Ok(None);
@@ -143,7 +142,10 @@ impl GpuVplFrame {
         });
         let mut stages = Vec::with_capacity(frames as usize);
         for f in 0..frames {
-            let (uploads, steps) = self.steps(&at(k + f), false)?;
+            let (uploads, steps) = match first.take() {
+                Some(built) => built,
+                None => self.steps(&at(k + f), false)?,
+            };
             uploads.record(&gpu, &mut encoder);
             for step in &steps {
                 self.record_step(&mut encoder, step, Some(&mut timer));
