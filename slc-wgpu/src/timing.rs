@@ -74,6 +74,11 @@ impl Stage {
         Stage::Composition,
     ];
 
+    /// The stages a frame's VPL shading time sums (`VplStats::shading_ms`):
+    /// the light update, the culling boxes, the far and the near field.
+    pub const SHADING: [Stage; 4] =
+        [Stage::LightUpdate, Stage::Bounds, Stage::Shading, Stage::NearField];
+
     /// The stage's name as reports print it.
     pub fn name(self) -> &'static str {
         match self {

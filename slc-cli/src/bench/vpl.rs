@@ -200,7 +200,6 @@ pub(super) fn run_gpu(a: BenchArgs) -> anyhow::Result<()> {
     let mut runs = Vec::new();
     let mut timing = slc_scene::backend::Timing::Wall;
     let mut held = true;
-    let vpl_stages = [Stage::LightUpdate, Stage::Bounds, Stage::Shading, Stage::NearField];
     for (param, settings) in configs {
         bar.set_message(run_label(&settings, param));
         let st = pass_settings(&settings)?;
@@ -226,7 +225,7 @@ pub(super) fn run_gpu(a: BenchArgs) -> anyhow::Result<()> {
         let stages = match &sequence {
             Some(seq) => {
                 timing = slc_scene::backend::Timing::GpuTimestamps;
-                stats.shading_ms = seq.spread(&vpl_stages[..]).0;
+                stats.shading_ms = seq.spread(&Stage::SHADING).0;
                 stats.total_ms = seq.spread(&[]).0;
                 seq.stages()
                     .iter()

@@ -7,7 +7,7 @@ use super::shade::{self, Cull, Glossy, LightList};
 use super::tiling::{NO_RECEIVER, PartTiles, Tiling};
 use glam::Vec3;
 use rayon::prelude::*;
-use slc_core::cluster::{CLUSTER, ClusterGrid, cluster_x, cluster_y};
+use slc_core::cluster::{CLUSTER, ClusterGrid, map_x, map_y};
 use slc_core::interleave::{
     interleave_flux_scale, interleave_shift, shifted_subset, subset_side, vpl_near_range2,
 };
@@ -270,11 +270,11 @@ impl VplContext {
     /// into `r`: SLC at each VPL's own ranges
     /// ([`slc_core::interleave::vpl_near_slc_share`]: unbiased), clamp at
     /// its range, none not at all; with the kept counts and loop
-    /// evaluations. Empty when `near_r2 = 0`. Culled in two levels, like
-    /// the interleaved loop but over full-resolution pixels: regions cull
-    /// the lights, tiles cull their region's list, each light's sphere of
-    /// radius `min(r, R_n)` ([`slc_core::interleave::vpl_near_cull_range2`])
-    /// against the box of the G-buffer positions.
+    /// evaluations. Empty when `near_r2 = 0`. Each tile of full-resolution
+    /// pixels culls `all`'s box hierarchy once (groups, clusters, then each
+    /// light's sphere of radius `min(r, R_n)`,
+    /// [`slc_core::interleave::vpl_near_cull_range2`]) against the box of
+    /// its G-buffer positions.
     pub(super) fn shade_near_in(
         &self,
         r: &mut PerReceiver,
@@ -350,12 +350,8 @@ fn map_order_tree(
     let grid = ClusterGrid::map(side);
     all.begin_tree(grid);
     for c in 0..grid.clusters() {
-        let (bx, by) = (
-            cluster_x(c, grid.bw, grid.bh, grid.gw, grid.gh),
-            cluster_y(c, grid.bw, grid.bh, grid.gw, grid.gh),
-        );
-        for k in 0..CLUSTER {
-            push(all, (bx * 8 + k % 8) as usize, (by * 8 + k / 8) as usize);
+        for q in c * CLUSTER..(c + 1) * CLUSTER {
+            push(all, map_x(q, side) as usize, map_y(q, side) as usize);
         }
         all.close_cluster();
     }

@@ -600,7 +600,7 @@ impl GpuVplFrame {
             // The CPU's "direct" includes its shadow rays.
             direct_ms: sum(&[Stage::ShadowMap, Stage::Direct]),
             rsm_ms: sum(&[Stage::Rsm, Stage::VplGeneration]),
-            shading_ms: sum(&[Stage::LightUpdate, Stage::Bounds, Stage::Shading, Stage::NearField]),
+            shading_ms: sum(&Stage::SHADING),
             denoise_ms: sum(&[
                 Stage::Denoise,
                 Stage::IrradianceExport,

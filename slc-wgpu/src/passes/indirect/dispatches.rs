@@ -33,9 +33,10 @@ impl IndirectPass {
                 .map_err(|e| GpuError::Setting(format!("indirect pass: {e}")))?;
         }
         let (w, h) = (self.desc.width, self.desc.height);
-        let (rsm_size, count) = match self.desc.vpls {
-            VplSourceDesc::Rsm { size } => (size, self.count),
-            VplSourceDesc::Buffer { count } => (0, count),
+        let count = self.desc.vpls.count() as u32;
+        let rsm_size = match self.desc.vpls {
+            VplSourceDesc::Rsm { size } => size,
+            VplSourceDesc::Buffer { .. } => 0,
         };
         let (mode, exposure, error_bound) = match st.culling {
             Culling::Stochastic(p) => (p.measure().mode(), p.exposure(), p.error_bound()),

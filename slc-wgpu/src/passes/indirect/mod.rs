@@ -174,7 +174,6 @@ impl Pipe {
 pub struct IndirectPass {
     gpu: GpuContext,
     desc: IndirectPassDesc,
-    count: u32,
     /// The light buffer's slots and the culling hierarchies' boxes.
     hierarchy: Hierarchy,
     /// The pass's features (the counting kernels' base).
@@ -385,7 +384,6 @@ impl IndirectPass {
         let s = IndirectPass {
             gpu: gpu.clone(),
             desc: *desc,
-            count: count as u32,
             hierarchy,
             features: base,
             pack,
