@@ -12,6 +12,7 @@
 //! | `light_cloud` | a scene file's `[[light_cloud]]`: many seeded punctual lights (feature `io`) |
 //! | [`error_bound`] | the path tracer's ε set from the scene itself |
 //! | [`lights`] | a light set with its BSH and power alias table; emissive triangles → triangle lights |
+//! | [`occluders`] | what shadow rays hit: meshes and their instances as one world-space BVH, refitted where instances move |
 //! | [`light_bvh`] | the light BVH of the `lightbvh` baseline (built here, sampled by slc-core on both backends) |
 //! | [`alias`] | Walker's alias table (the `power` baseline) |
 //! | [`image`] | linear HDR images, RMSE; EXR/PNG I/O (feature `io`) |
@@ -46,6 +47,7 @@ pub mod light_cloud;
 pub mod lights;
 #[cfg(feature = "io")]
 pub mod obj;
+pub mod occluders;
 pub mod placement;
 pub mod pt;
 pub mod scene;

@@ -336,6 +336,10 @@ pub fn bindings(kernel: Kernel, f: &Features) -> Vec<Binding> {
             if f.selection == Selection::Weighted || f.direct_output != DirectOutput::Irradiance {
                 v.push(b(1, 5, "light_cones", Resource::Read("array<GpuLightCone>"), "each light's bounding sphere and importance cone", "host"));
             }
+            if f.shadows {
+                v.push(b(1, 6, "geo_nodes", Resource::Read("array<GpuGeoNode>"), "the occluders' BVH nodes", "host (slc-scene's `Occluders`)"));
+                v.push(b(1, 7, "geo_tris", Resource::Read("array<GpuTriangle>"), "the occluders' triangles in leaf order", "host"));
+            }
             return v;
         }
         Kernel::PtConnect => {

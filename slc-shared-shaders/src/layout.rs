@@ -449,8 +449,9 @@ slc_core::shared! {
         pub width: u32,
         /// Image height.
         pub height: u32,
-        /// Padding.
-        pub pad0: u32,
+        /// Shadow rays' origin offset along the normal, as a fraction of
+        /// the distance to the eye (`direct_light`'s shadowed variant).
+        pub shadow_offset: f32,
         /// Seed of the record's random streams.
         pub seed: u32,
         /// Frame number.

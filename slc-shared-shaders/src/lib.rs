@@ -415,10 +415,10 @@ pub struct Features {
     pub vpl_source: VplSource,
     /// Storage-texture format of `irradiance_export`.
     pub output_format: OutputFormat,
-    /// Shadow rays in `bsh_reservoir` through bindings 0.7 `geo_nodes` and
-    /// 0.8 `geo_tris`; without them the kernel is unshadowed and declares
-    /// neither (8 storage buffers per stage instead of 10, WebGPU's default
-    /// limit).
+    /// Shadow rays in `bsh_reservoir` (bindings 0.7 `geo_nodes` and 0.8
+    /// `geo_tris`) and `direct_light` (1.6 and 1.7); without them the
+    /// kernel is unshadowed and declares neither (`bsh_reservoir`: 8
+    /// storage buffers per stage instead of 10, WebGPU's default limit).
     pub shadows: bool,
     /// Where the engine passes' G-buffer readers (`direct_light`,
     /// `vpl_tiled`, `vpl_denoise`, `vpl_near`, `irradiance_export`) read

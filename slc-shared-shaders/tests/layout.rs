@@ -109,7 +109,21 @@ fn rust_twins_match_naga_layout() {
             pad2
         ),
         fields!(ImageParams, eye, width, height, pad0, pad1, pad2),
-        fields!(ViewParams, c0, c1, c2, c3, eye, width, height, pad0, seed, frame, f0_d, f90_d),
+        fields!(
+            ViewParams,
+            c0,
+            c1,
+            c2,
+            c3,
+            eye,
+            width,
+            height,
+            shadow_offset,
+            seed,
+            frame,
+            f0_d,
+            f90_d
+        ),
         fields!(
             CullParams,
             light_count,

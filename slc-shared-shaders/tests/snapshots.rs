@@ -200,6 +200,8 @@ fn variants() -> Vec<(&'static str, Kernel, Features)> {
             Features {
                 lights: LightTypes::parse("point,spot,ies,triangle").unwrap(),
                 output_format: OutputFormat::Rgba32Float,
+                // The unshadowed variant (the others are shadowed).
+                shadows: false,
                 ..Features::default()
             },
         ),

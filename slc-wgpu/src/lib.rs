@@ -54,6 +54,7 @@ pub mod context;
 pub mod frame;
 mod kernel;
 mod lights;
+mod occluders;
 pub mod passes;
 pub mod pt;
 mod record;
@@ -79,6 +80,9 @@ pub use slc_core::range::{IntensityMeasure, RangeParams};
 pub use slc_scene::RenderError;
 /// A light set with its bounding-sphere hierarchy (slc-scene's).
 pub use slc_scene::lights::LightSet;
+/// What the direct pass's shadow rays hit: meshes, their instances and
+/// the errors of bad geometry (slc-scene's).
+pub use slc_scene::occluders::{Instance, OccluderError, Occluders};
 /// The temporal pass's camera and settings (slc-scene's).
 pub use slc_scene::temporal::{TemporalSettings, TemporalView};
 /// Which light types a pass's kernels are compiled for
@@ -111,6 +115,9 @@ pub enum GpuError {
     /// Kernel generation failed.
     #[error(transparent)]
     Shader(#[from] slc_shared_shaders::ShaderError),
+    /// Occluder geometry that cannot be used.
+    #[error(transparent)]
+    Occluders(#[from] slc_scene::occluders::OccluderError),
     /// Invalid render settings.
     #[error("{0}")]
     Setting(String),

@@ -21,15 +21,14 @@
 
 use crate::kernel::{UniformSlots, bind_group, bind_layout, pipeline, read_back, storage, zeroed};
 use crate::lights::{GpuLightSet, WG};
+use crate::occluders;
 use crate::timing::Timer;
 use crate::{GpuContext, GpuError};
 use glam::Vec3;
-use obvhs::BvhBuildParams;
-use obvhs::bvh2::builder::build_bvh2_from_tris;
-use obvhs::triangle::Triangle;
 use slc_core::range::RangeParams;
 use slc_core::ray::{ray_t_min, surface_offset};
 use slc_scene::backend::{PathTracer, Timing};
+use slc_scene::occluders::Occluders;
 use slc_scene::pt::{PtMethod, PtRender, PtScene, PtSettings, RESERVOIR_K, WEIGHTED_K};
 use slc_scene::scene::Material;
 use slc_shared_shaders::layout::{
@@ -37,69 +36,33 @@ use slc_shared_shaders::layout::{
     ShadeParams,
 };
 use slc_shared_shaders::{Features, Heuristic, Kernel, Selection, generate};
-use std::time::{Duration, Instant};
+use std::time::Instant;
 
-/// Deepest geometry BVH the kernels' 64-entry traversal stack handles.
-const MAX_GEO_DEPTH: u64 = 64;
 /// Longest path the uniform slots are sized for (`PtSettings::max_depth`).
 const MAX_DEPTH: u32 = 64;
 
-/// The geometry BVH as the kernels read it: binary nodes (children `first`
-/// and `first + 1`, leaves `count > 0`), triangles in leaf order with their
-/// material and light, their vertex normals (three per triangle, the same
-/// order; geometric ones where the scene has none); plus the tree depth.
-fn geometry(pts: &PtScene) -> (Vec<GpuGeoNode>, Vec<GpuTriangle>, Vec<[f32; 4]>, u64) {
+/// BVH nodes, triangles and vertex normals, as [`geometry`] gives them.
+type Geometry = (Vec<GpuGeoNode>, Vec<GpuTriangle>, Vec<[f32; 4]>);
+
+/// The geometry BVH as the kernels read it: the scene's triangles as one
+/// mesh at the identity (slc-scene's [`Occluders`], the layout the direct
+/// pass's shadows use too), the triangles in leaf order with their
+/// material and light, and their vertex normals (three per triangle, the
+/// same order; geometric ones where the scene has none).
+fn geometry(pts: &PtScene) -> Result<Geometry, GpuError> {
     let scene = pts.scene();
-    let tris: Vec<Triangle> = scene
-        .triangles
-        .iter()
-        .map(|t| Triangle { v0: t[0].into(), v1: t[1].into(), v2: t[2].into() })
-        .collect();
-    let bvh = build_bvh2_from_tris(&tris, BvhBuildParams::medium_build(), &mut Duration::default());
-    let nodes: Vec<GpuGeoNode> = bvh
-        .nodes
-        .iter()
-        .map(|n| GpuGeoNode {
-            bmin: Vec3::from(n.aabb.min),
-            first: n.first_index,
-            bmax: Vec3::from(n.aabb.max),
-            count: n.prim_count,
-        })
-        .collect();
+    let occ = Occluders::from_triangles(&scene.triangles)?;
+    let source: Vec<usize> = (0..occ.triangles().len()).map(|i| occ.source(i).1 as usize).collect();
     let lot = pts.light_of_triangle();
-    let gpu_tris = bvh
-        .primitive_indices
+    let tris = occluders::gpu_triangles(&occ, |i| {
+        let light = lot[source[i]];
+        (scene.material_of[source[i]], if light == u32::MAX { NO_LIGHT } else { light })
+    });
+    let normals = source
         .iter()
-        .map(|&i| {
-            let t = scene.triangles[i as usize];
-            let light = lot[i as usize];
-            GpuTriangle {
-                v0: t[0],
-                material: scene.material_of[i as usize],
-                v1: t[1],
-                light: if light == u32::MAX { NO_LIGHT } else { light },
-                v2: t[2],
-                pad: 0,
-            }
-        })
+        .flat_map(|&i| scene.vertex_normals(i).map(|n| [n.x, n.y, n.z, 0.0]))
         .collect();
-    let normals = bvh
-        .primitive_indices
-        .iter()
-        .flat_map(|&i| scene.vertex_normals(i as usize).map(|n| [n.x, n.y, n.z, 0.0]))
-        .collect();
-    let mut depth = 0u64;
-    let mut stack = vec![(0usize, 1u64)];
-    while let Some((i, d)) = stack.pop() {
-        depth = depth.max(d);
-        if let Some(n) = nodes.get(i)
-            && n.count == 0
-        {
-            stack.push((n.first as usize, d + 1));
-            stack.push((n.first as usize + 1, d + 1));
-        }
-    }
-    (nodes, gpu_tris, normals, depth)
+    Ok((occluders::gpu_nodes(&occ), tris, normals))
 }
 
 /// A scene material as the kernels read it.
@@ -177,7 +140,7 @@ impl GpuPt {
             )));
         }
         let pixels = width as u64 * height as u64;
-        let (geo_nodes, geo_tris, geo_normals, geo_depth) = geometry(pts);
+        let (geo_nodes, geo_tris, geo_normals) = geometry(pts)?;
         let lim = &gpu.limits;
         let max_binding = lim.max_storage_buffer_binding_size;
         gpu.require(
@@ -207,7 +170,6 @@ impl GpuPt {
             pixels.div_ceil(WG as u64),
             lim.max_compute_workgroups_per_dimension as u64,
         )?;
-        gpu.require("geometry BVH depth (64-entry traversal stack)", geo_depth, MAX_GEO_DEPTH)?;
         let ls = pts.light_set();
         let set = GpuLightSet::new(
             gpu,

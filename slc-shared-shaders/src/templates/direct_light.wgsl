@@ -1,9 +1,13 @@
 {% include "header.wgsl" %}
 {% include "lights.wgsl" %}
+{% if shadows %}
+{% include "geometry.wgsl" %}
+{% else %}
 /// Unshadowed: the engine owns visibility.
 fn occluded(a: vec3f, b: vec3f) -> bool {
     return false;
 }
+{% endif %}
 {{ bindings }}
 {% include "bsh_collect.wgsl" %}
 {% if selection == "weighted" or pbr != "none" %}
@@ -16,7 +20,8 @@ fn occluded(a: vec3f, b: vec3f) -> bool {
 // The engine's direct pass: at every G-buffer pixel, the lights whose random
 // range reaches it (BSH traversal), {% if selection == "weighted" %}{{ k }} importance-weighted picks among them{% elif selection == "all" %}every one of them (exact given ξ){% else %}{{ k }} uniform picks among them (Algorithm R){% endif %},
 // each sampled (a point on a triangle), RR-tested at that point with its own
-// range and weighted by 1/p and its selection weight. Output: {% if pbr == "radiance" %}outgoing radiance
+// range, {% if shadows %}shadowed by one ray through the occluders' BVH (leaving the surface
+// `view.shadow_offset` × the eye distance along the normal), {% endif %}and weighted by 1/p and its selection weight. Output: {% if pbr == "radiance" %}outgoing radiance
 // under the G-buffer's glTF metallic-roughness material{% elif pbr == "bevy" %}outgoing radiance under
 // Bevy StandardMaterial's BRDF of the G-buffer's material{% elif pbr == "split" %}irradiance, and the
 // specular radiance of the G-buffer's material in specular_tex{% else %}irradiance{% endif %} (rgb) and the number of
@@ -42,15 +47,16 @@ struct Material {
 
 /// One pick of light `li` at `x` (normal `n`, mirror direction `r`) with
 /// selection weight `w`, its ranges² scaled by the receiver's `s` toward it
-/// (range lobe `rl`; slc-core's `range_scale_toward`; 1 for irradiance).
-fn shade_pick(li: u32, x: vec3f, n: vec3f, r: vec3f, rl: vec4f, m: Material, w: f32, u1: f32, u2: f32) -> Shaded {
+/// (range lobe `rl`; slc-core's `range_scale_toward`; 1 for irradiance);
+/// its shadow ray leaves from `x + eps·n`.
+fn shade_pick(li: u32, x: vec3f, n: vec3f, r: vec3f, rl: vec4f, m: Material, w: f32, u1: f32, u2: f32, eps: f32) -> Shaded {
     var s: Shaded;
 {% if pbr != "none" %}
     let s2 = light_range_scale(li, x, r, rl);
 {% else %}
     let s2 = 1.0;
 {% endif %}
-    let c = connect(li, x, n, n, s2, w, u1, u2, 0.0);
+    let c = connect(li, x, n, n, s2, w, u1, u2, eps);
     s.e = c.e;
     s.diffuse = vec3f(0.0);
     s.specular = vec3f(0.0);
@@ -112,6 +118,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     r = mirror_dir(n, m.v);
 {% endif %}
     let rl = range_lobe(lobe);
+    let eps = view.shadow_offset * length(view.eye - x);
     let seed = point_stream(view.seed, gid.y * view.width + gid.x, view.frame);
     var h = pick_stream(seed);
     var t = Shaded(vec3f(0.0), vec3f(0.0), vec3f(0.0));
@@ -122,7 +129,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
             h = pcg_hash(h);
             let u1 = xi_from_bits(h);
             h = pcg_hash(h);
-            t = add(t, shade_pick(picks.light[k], x, n, r, rl, m, weighted_pick_weight(picks.w_sum, picks.w[k], K), u1, xi_from_bits(h)));
+            t = add(t, shade_pick(picks.light[k], x, n, r, rl, m, weighted_pick_weight(picks.w_sum, picks.w[k], K), u1, xi_from_bits(h), eps));
         }
     }
     let count = picks.n;
@@ -133,7 +140,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
         h = pcg_hash(h);
         let u1 = xi_from_bits(h);
         h = pcg_hash(h);
-        t = add(t, shade_pick(bsh_nodes[b].light, x, n, r, rl, m, 1.0, u1, xi_from_bits(h)));
+        t = add(t, shade_pick(bsh_nodes[b].light, x, n, r, rl, m, 1.0, u1, xi_from_bits(h), eps));
     }
 {% else %}
     let picks = bsh_collect(x, r, rl, seed);
@@ -142,7 +149,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
         h = pcg_hash(h);
         let u1 = xi_from_bits(h);
         h = pcg_hash(h);
-        t = add(t, shade_pick(picks.light[k], x, n, r, rl, m, w_res, u1, xi_from_bits(h)));
+        t = add(t, shade_pick(picks.light[k], x, n, r, rl, m, w_res, u1, xi_from_bits(h), eps));
     }
     let count = picks.n;
 {% endif %}

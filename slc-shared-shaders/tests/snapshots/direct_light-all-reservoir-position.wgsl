@@ -17,7 +17,7 @@ struct ViewParams {
     eye: vec3<f32>,
     width: u32,
     height: u32,
-    pad0_: u32,
+    shadow_offset: f32,
     seed: u32,
     frame: u32,
     f0_d: vec3<f32>,
@@ -815,10 +815,10 @@ fn surface_at(texel: vec2<i32>) -> vec4<f32> {
     return select(vec4(0f), vec4<f32>(p_2.xyz, 1f), (p_2.w > 0f));
 }
 
-fn shade_pick(li_1: u32, x_12: vec3<f32>, n_8: vec3<f32>, r_7: vec3<f32>, rl_6: vec4<f32>, m_1: Material, w_4: f32, u1_3: f32, u2_3: f32) -> Shaded {
+fn shade_pick(li_1: u32, x_12: vec3<f32>, n_8: vec3<f32>, r_7: vec3<f32>, rl_6: vec4<f32>, m_1: Material, w_4: f32, u1_3: f32, u2_3: f32, eps_1: f32) -> Shaded {
     var s_1: Shaded;
 
-    let _e12 = connect(li_1, x_12, n_8, n_8, 1f, w_4, u1_3, u2_3, 0f);
+    let _e12 = connect(li_1, x_12, n_8, n_8, 1f, w_4, u1_3, u2_3, eps_1);
     s_1.e = _e12.e;
     s_1.diffuse = vec3(0f);
     s_1.specular = vec3(0f);
@@ -872,47 +872,50 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     r = n_10;
     let _e53 = lobe;
     let _e54 = range_lobe(_e53);
-    let _e57 = view.seed;
-    let _e61 = view.width;
-    let _e67 = view.frame;
-    let _e68 = point_stream(_e57, ((gid.y * _e61) + gid.x), _e67);
-    let _e69 = pick_stream(_e68);
-    h = _e69;
-    let _e79 = r;
-    let _e80 = bsh_collect(x_13, _e79, _e54, _e68);
-    let _e83 = reservoir_weight(_e80.n, K);
+    let _e57 = view.shadow_offset;
+    let _e60 = view.eye;
+    let eps_2 = (_e57 * length((_e60 - x_13)));
+    let _e66 = view.seed;
+    let _e70 = view.width;
+    let _e76 = view.frame;
+    let _e77 = point_stream(_e66, ((gid.y * _e70) + gid.x), _e76);
+    let _e78 = pick_stream(_e77);
+    h = _e78;
+    let _e88 = r;
+    let _e89 = bsh_collect(x_13, _e88, _e54, _e77);
+    let _e92 = reservoir_weight(_e89.n, K);
     loop {
-        let _e86 = k;
-        if (_e86 < min(_e80.n, K)) {
+        let _e95 = k;
+        if (_e95 < min(_e89.n, K)) {
         } else {
             break;
         }
         {
-            let _e91 = h;
-            let _e92 = pcg_hash(_e91);
-            h = _e92;
-            let _e93 = h;
-            let _e94 = xi_from_bits(_e93);
-            let _e95 = h;
-            let _e96 = pcg_hash(_e95);
-            h = _e96;
-            let _e97 = t;
-            let _e99 = k;
-            let _e101 = r;
-            let _e102 = m;
-            let _e103 = h;
-            let _e104 = xi_from_bits(_e103);
-            let _e105 = shade_pick(_e80.light[_e99], x_13, n_10, _e101, _e54, _e102, _e83, _e94, _e104);
-            let _e106 = add(_e97, _e105);
-            t = _e106;
+            let _e100 = h;
+            let _e101 = pcg_hash(_e100);
+            h = _e101;
+            let _e102 = h;
+            let _e103 = xi_from_bits(_e102);
+            let _e104 = h;
+            let _e105 = pcg_hash(_e104);
+            h = _e105;
+            let _e106 = t;
+            let _e108 = k;
+            let _e110 = r;
+            let _e111 = m;
+            let _e112 = h;
+            let _e113 = xi_from_bits(_e112);
+            let _e114 = shade_pick(_e89.light[_e108], x_13, n_10, _e110, _e54, _e111, _e92, _e103, _e113, eps_2);
+            let _e115 = add(_e106, _e114);
+            t = _e115;
         }
         continuing {
-            let _e108 = k;
-            k = (_e108 + 1u);
+            let _e117 = k;
+            k = (_e117 + 1u);
         }
     }
-    let count = _e80.n;
-    let _e113 = t.e;
-    textureStore(out_tex, texel_1, vec4<f32>(_e113, f32(count)));
+    let count = _e89.n;
+    let _e122 = t.e;
+    textureStore(out_tex, texel_1, vec4<f32>(_e122, f32(count)));
     return;
 }

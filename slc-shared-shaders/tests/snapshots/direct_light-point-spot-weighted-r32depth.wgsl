@@ -20,6 +20,22 @@ struct GpuLightCone {
     pad: u32,
 }
 
+struct GpuGeoNode {
+    bmin: vec3<f32>,
+    first: u32,
+    bmax: vec3<f32>,
+    count: u32,
+}
+
+struct GpuTriangle {
+    v0_: vec3<f32>,
+    material: u32,
+    v1_: vec3<f32>,
+    light: u32,
+    v2_: vec3<f32>,
+    pad: u32,
+}
+
 struct ViewParams {
     c0_: vec4<f32>,
     c1_: vec4<f32>,
@@ -28,7 +44,7 @@ struct ViewParams {
     eye: vec3<f32>,
     width: u32,
     height: u32,
-    pad0_: u32,
+    shadow_offset: f32,
     seed: u32,
     frame: u32,
     f0_d: vec3<f32>,
@@ -42,6 +58,11 @@ struct BshNode {
     next: u32,
     light: u32,
     extent: f32,
+}
+
+struct GeoHit {
+    t: f32,
+    tri: u32,
 }
 
 struct Connection {
@@ -117,6 +138,10 @@ const TEMPORAL_MIN_WEIGHT: f32 = 0.01f;
 const K: u32 = 8u;
 const BSH: u32 = 0u;
 
+@group(1) @binding(6) 
+var<storage> geo_nodes: array<GpuGeoNode>;
+@group(1) @binding(7) 
+var<storage> geo_tris: array<GpuTriangle>;
 @group(0) @binding(0) 
 var<uniform> view: ViewParams;
 @group(0) @binding(1) 
@@ -377,8 +402,8 @@ fn cone_cos_of(v: vec3<f32>, d2_4: f32, a_2: f32, d: vec3<f32>) -> f32 {
     if _e21 {
         return 1f;
     }
-    let c_2 = cross(v, d);
-    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_2, c_2)) * a_2)) / d2_4), 1f);
+    let c_3 = cross(v, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_3, c_3)) * a_2)) / d2_4), 1f);
 }
 
 fn cone_cos_toward(center_2: vec3<f32>, radius_2: f32, p_2: vec3<f32>, d_1: vec3<f32>) -> f32 {
@@ -480,6 +505,82 @@ fn finite3_(v_1: vec3<f32>) -> bool {
     return _e20;
 }
 
+fn shadow_margin(len: f32) -> f32 {
+    return (0.0001f * len);
+}
+
+fn ray_inverse(x_4: f32) -> f32 {
+    return (1f / select(x_4, 0.000000000000000000000000000001f, (abs(x_4) < 0.000000000000000000000000000001f)));
+}
+
+fn ray_inverse3_(d_2: vec3<f32>) -> vec3<f32> {
+    let _e2 = ray_inverse(d_2.x);
+    let _e4 = ray_inverse(d_2.y);
+    let _e6 = ray_inverse(d_2.z);
+    return vec3<f32>(_e2, _e4, _e6);
+}
+
+fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin: vec3<f32>, bmax: vec3<f32>, t_max: f32) -> f32 {
+    let t0_ = ((bmin - o) * inv_d);
+    let t1_ = ((bmax - o) * inv_d);
+    let lo = min(t0_, t1_);
+    let hi = max(t0_, t1_);
+    let t_in = max(max(lo.x, lo.y), max(lo.z, 0f));
+    let t_out = min(min(hi.x, hi.y), min(hi.z, t_max));
+    if (t_in <= t_out) {
+        return t_in;
+    }
+    return -1f;
+}
+
+fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_3: vec3<f32>, b_2: vec3<f32>, c_1: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
+    var local_9: bool;
+    var local_10: bool;
+    var local_11: bool;
+
+    let e1_ = (b_2 - a_3);
+    let e2_ = (c_1 - a_3);
+    let p_7 = cross(d_3, e2_);
+    let det = dot(e1_, p_7);
+    if (abs(det) <= 0f) {
+        return -1f;
+    }
+    let inv = (1f / det);
+    let s_3 = (o_1 - a_3);
+    let u_3 = (dot(s_3, p_7) * inv);
+    if !((u_3 < 0f)) {
+        local_9 = (u_3 > 1f);
+    } else {
+        local_9 = true;
+    }
+    let _e28 = local_9;
+    if _e28 {
+        return -1f;
+    }
+    let q = cross(s_3, e1_);
+    let v_9 = (dot(d_3, q) * inv);
+    if !((v_9 < 0f)) {
+        local_10 = ((u_3 + v_9) > 1f);
+    } else {
+        local_10 = true;
+    }
+    let _e42 = local_10;
+    if _e42 {
+        return -1f;
+    }
+    let t_4 = (dot(e2_, q) * inv);
+    if (t_4 > t_min) {
+        local_11 = (t_4 < t_max_1);
+    } else {
+        local_11 = false;
+    }
+    let _e51 = local_11;
+    if _e51 {
+        return t_4;
+    }
+    return -1f;
+}
+
 fn light_intensity(l: GpuLight, w_3: vec3<f32>) -> vec3<f32> {
     switch l.kind {
         case 0u: {
@@ -499,12 +600,93 @@ fn light_point(l_1: GpuLight, u1_: f32, u2_: f32) -> vec3<f32> {
     return l_1.p0_;
 }
 
-fn occluded(a_3: vec3<f32>, b_2: vec3<f32>) -> bool {
-    return false;
+fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bool) -> GeoHit {
+    var hit: GeoHit;
+    var stack: array<u32, 64>;
+    var sp: u32 = 0u;
+    var node_2: u32 = 0u;
+    var i: u32;
+
+    hit.t = t_max_2;
+    hit.tri = NO_LIGHT;
+    if (arrayLength((&geo_nodes)) == 0u) {
+        let _e13 = hit;
+        return _e13;
+    }
+    let _e14 = ray_inverse3_(d_4);
+    loop {
+        let _e21 = node_2;
+        let n_8 = geo_nodes[_e21];
+        let _e27 = hit.t;
+        let _e28 = ray_aabb(o_2, _e14, n_8.bmin, n_8.bmax, _e27);
+        if (_e28 >= 0f) {
+            if (n_8.count > 0u) {
+                i = n_8.first;
+                loop {
+                    let _e36 = i;
+                    if (_e36 < (n_8.first + n_8.count)) {
+                    } else {
+                        break;
+                    }
+                    {
+                        let _e42 = i;
+                        let t_5 = geo_tris[_e42];
+                        let _e49 = hit.t;
+                        let _e50 = ray_triangle(o_2, d_4, t_5.v0_, t_5.v1_, t_5.v2_, t_min_1, _e49);
+                        if (_e50 > 0f) {
+                            hit.t = _e50;
+                            let _e55 = i;
+                            hit.tri = _e55;
+                            if any_hit {
+                                let _e56 = hit;
+                                return _e56;
+                            }
+                        }
+                    }
+                    continuing {
+                        let _e58 = i;
+                        i = (_e58 + 1u);
+                    }
+                }
+            } else {
+                let _e60 = sp;
+                if (_e60 < 64u) {
+                    let _e63 = sp;
+                    stack[_e63] = (n_8.first + 1u);
+                    let _e68 = sp;
+                    sp = (_e68 + 1u);
+                }
+                node_2 = n_8.first;
+                continue;
+            }
+        }
+        let _e72 = sp;
+        if (_e72 == 0u) {
+            break;
+        }
+        let _e75 = sp;
+        sp = (_e75 - 1u);
+        let _e78 = sp;
+        let _e80 = stack[_e78];
+        node_2 = _e80;
+    }
+    let _e81 = hit;
+    return _e81;
 }
 
-fn bsh_node(nodes: u32, i: u32) -> BshNode {
-    let _e4 = bsh_nodes[i];
+fn occluded(a_4: vec3<f32>, b_3: vec3<f32>) -> bool {
+    let dv = (b_3 - a_4);
+    let len_1 = length(dv);
+    if (len_1 <= 0f) {
+        return false;
+    }
+    let _e7 = shadow_margin(len_1);
+    let _e12 = trace(a_4, (dv / vec3(len_1)), _e7, (len_1 - _e7), true);
+    return (_e12.tri != NO_LIGHT);
+}
+
+fn bsh_node(nodes: u32, i_1: u32) -> BshNode {
+    let _e4 = bsh_nodes[i_1];
     return _e4;
 }
 
@@ -520,148 +702,148 @@ fn bsh_first(nodes_2: u32) -> u32 {
     return BSH_NONE;
 }
 
-fn bsh_inner_scale(a_4: f32, v_2: vec3<f32>, d2_6: f32, r_5: vec3<f32>, rl_2: vec4<f32>) -> f32 {
-    let _e5 = cone_cos_of(v_2, d2_6, a_4, r_5);
+fn bsh_inner_scale(a_5: f32, v_2: vec3<f32>, d2_6: f32, r_5: vec3<f32>, rl_2: vec4<f32>) -> f32 {
+    let _e5 = cone_cos_of(v_2, d2_6, a_5, r_5);
     let _e8 = range_scale_at(rl_2, (_e5 + 0.000002f));
     return _e8;
 }
 
-fn bsh_reaches(node_2: BshNode, x_4: vec3<f32>, r_6: vec3<f32>, rl_3: vec4<f32>) -> bool {
-    var local_9: bool;
-    var local_10: bool;
+fn bsh_reaches(node_3: BshNode, x_5: vec3<f32>, r_6: vec3<f32>, rl_3: vec4<f32>) -> bool {
+    var local_12: bool;
+    var local_13: bool;
 
-    let _e6 = sphere_contains_point(node_2.center, node_2.radius, x_4);
+    let _e6 = sphere_contains_point(node_3.center, node_3.radius, x_5);
     if _e6 {
         return true;
     }
     if !((rl_3.w <= 1f)) {
-        let _e20 = sphere_contains_point(node_2.center, (node_2.radius * (rl_3.w * 1.0001f)), x_4);
-        local_9 = !(_e20);
+        let _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001f)), x_5);
+        local_12 = !(_e20);
     } else {
-        local_9 = true;
+        local_12 = true;
     }
-    let _e23 = local_9;
+    let _e23 = local_12;
     if _e23 {
         return false;
     }
-    let _e25 = bsh_range_bound(node_2);
-    let v_9 = (x_4 - node_2.center);
-    let d2_9 = dot(v_9, v_9);
-    let reach_max = (node_2.extent + ((rl_3.w * 1.001f) * _e25));
+    let _e25 = bsh_range_bound(node_3);
+    let v_10 = (x_5 - node_3.center);
+    let d2_9 = dot(v_10, v_10);
+    let reach_max = (node_3.extent + ((rl_3.w * 1.001f) * _e25));
     if (d2_9 > (reach_max * reach_max)) {
         return false;
     }
-    if (node_2.child == BSH_NONE) {
-        let _e43 = range_scale_toward(rl_3, node_2.center, node_2.extent, x_4, r_6);
-        let _e46 = bsh_scaled_radius(node_2, sqrt(_e43));
-        let _e47 = sphere_contains_point(node_2.center, _e46, x_4);
+    if (node_3.child == BSH_NONE) {
+        let _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_5, r_6);
+        let _e46 = bsh_scaled_radius(node_3, sqrt(_e43));
+        let _e47 = sphere_contains_point(node_3.center, _e46, x_5);
         return _e47;
     }
-    let _e50 = bsh_inner_scale(node_2.extent, -(v_9), d2_9, r_6, rl_3);
+    let _e50 = bsh_inner_scale(node_3.extent, -(v_10), d2_9, r_6, rl_3);
     let s_c = (_e50 * 1.001f);
-    let reach = (node_2.extent + (sqrt(s_c) * _e25));
-    if (d2_9 <= ((node_2.radius * node_2.radius) * s_c)) {
-        local_10 = (d2_9 <= (reach * reach));
+    let reach = (node_3.extent + (sqrt(s_c) * _e25));
+    if (d2_9 <= ((node_3.radius * node_3.radius) * s_c)) {
+        local_13 = (d2_9 <= (reach * reach));
     } else {
-        local_10 = false;
+        local_13 = false;
     }
-    let _e67 = local_10;
+    let _e67 = local_13;
     return _e67;
 }
 
-fn bsh_next_leaf_lobe(nodes_3: u32, start: u32, x_5: vec3<f32>, r_7: vec3<f32>, rl_4: vec4<f32>) -> u32 {
-    var i_1: u32;
+fn bsh_next_leaf_lobe(nodes_3: u32, start: u32, x_6: vec3<f32>, r_7: vec3<f32>, rl_4: vec4<f32>) -> u32 {
+    var i_2: u32;
 
-    i_1 = start;
+    i_2 = start;
     loop {
-        let _e6 = i_1;
+        let _e6 = i_2;
         if (_e6 != BSH_NONE) {
         } else {
             break;
         }
         {
-            let _e9 = i_1;
+            let _e9 = i_2;
             let _e10 = bsh_node(nodes_3, _e9);
-            let _e11 = bsh_reaches(_e10, x_5, r_7, rl_4);
+            let _e11 = bsh_reaches(_e10, x_6, r_7, rl_4);
             if _e11 {
                 if (_e10.child == BSH_NONE) {
-                    let _e15 = i_1;
+                    let _e15 = i_2;
                     return _e15;
                 }
-                i_1 = _e10.child;
+                i_2 = _e10.child;
             } else {
-                i_1 = _e10.next;
+                i_2 = _e10.next;
             }
         }
     }
     return BSH_NONE;
 }
 
-fn connect(li: u32, x_6: vec3<f32>, n_4: vec3<f32>, ng_1: vec3<f32>, s: f32, w_res: f32, u1_1: f32, u2_1: f32, eps: f32) -> Connection {
-    var c_1: Connection;
-    var local_11: bool;
+fn connect(li: u32, x_7: vec3<f32>, n_4: vec3<f32>, ng_1: vec3<f32>, s: f32, w_res: f32, u1_1: f32, u2_1: f32, eps: f32) -> Connection {
+    var c_2: Connection;
+    var local_14: bool;
 
-    c_1.e = vec3(0f);
+    c_2.e = vec3(0f);
     let l_2 = lights[li];
     let _e17 = light_point(l_2, u1_1, u2_1);
-    c_1.y = _e17;
-    let _e20 = c_1.y;
+    c_2.y = _e17;
+    let _e20 = c_2.y;
     let _e23 = r2_3[li];
-    let _e25 = connection_cosine(x_6, _e20, n_4, ng_1, (s * _e23));
-    c_1.cos_x = _e25;
-    let _e27 = c_1.cos_x;
+    let _e25 = connection_cosine(x_7, _e20, n_4, ng_1, (s * _e23));
+    c_2.cos_x = _e25;
+    let _e27 = c_2.cos_x;
     if !((_e27 <= 0f)) {
-        let _e36 = c_1.y;
-        let _e37 = occluded((x_6 + (ng_1 * eps)), _e36);
-        local_11 = _e37;
+        let _e36 = c_2.y;
+        let _e37 = occluded((x_7 + (ng_1 * eps)), _e36);
+        local_14 = _e37;
     } else {
-        local_11 = true;
+        local_14 = true;
     }
-    let _e39 = local_11;
+    let _e39 = local_14;
     if _e39 {
-        let _e40 = c_1;
+        let _e40 = c_2;
         return _e40;
     }
-    let _e42 = c_1.y;
-    let v_10 = (x_6 - _e42);
-    let d2_10 = dot(v_10, v_10);
-    let _e49 = light_intensity(l_2, (v_10 / vec3(sqrt(d2_10))));
-    let _e51 = c_1.cos_x;
+    let _e42 = c_2.y;
+    let v_11 = (x_7 - _e42);
+    let d2_10 = dot(v_11, v_11);
+    let _e49 = light_intensity(l_2, (v_11 / vec3(sqrt(d2_10))));
+    let _e51 = c_2.cos_x;
     let _e54 = rt2_4[li];
     let _e56 = connection_factor(_e51, d2_10, (s * _e54), w_res);
-    c_1.e = (_e49 * _e56);
-    let _e58 = c_1;
+    c_2.e = (_e49 * _e56);
+    let _e58 = c_2;
     return _e58;
 }
 
-fn light_range_scale(li_1: u32, x_7: vec3<f32>, r_8: vec3<f32>, rl_5: vec4<f32>) -> f32 {
-    let c_3 = light_cones[li_1];
-    let _e9 = range_scale_toward(rl_5, c_3.center, c_3.radius, x_7, r_8);
+fn light_range_scale(li_1: u32, x_8: vec3<f32>, r_8: vec3<f32>, rl_5: vec4<f32>) -> f32 {
+    let c_4 = light_cones[li_1];
+    let _e9 = range_scale_toward(rl_5, c_4.center, c_4.radius, x_8, r_8);
     return _e9;
 }
 
-fn light_weight(li_2: u32, x_8: vec3<f32>, n_5: vec3<f32>, r_9: vec3<f32>, lobe_7: vec4<f32>, rl_6: vec4<f32>) -> f32 {
-    let c_4 = light_cones[li_2];
-    let _e15 = light_range_scale(li_2, x_8, r_9, rl_6);
+fn light_weight(li_2: u32, x_9: vec3<f32>, n_5: vec3<f32>, r_9: vec3<f32>, lobe_7: vec4<f32>, rl_6: vec4<f32>) -> f32 {
+    let c_5 = light_cones[li_2];
+    let _e15 = light_range_scale(li_2, x_9, r_9, rl_6);
     let _e18 = rt2_4[li_2];
-    let _e20 = cone_weight(c_4.center, c_4.radius, c_4.phi, c_4.axis, c_4.cos_o, c_4.cos_e, (_e15 * _e18), x_8, n_5, r_9, lobe_7);
+    let _e20 = cone_weight(c_5.center, c_5.radius, c_5.phi, c_5.axis, c_5.cos_o, c_5.cos_e, (_e15 * _e18), x_9, n_5, r_9, lobe_7);
     return _e20;
 }
 
-fn bsh_weighted_collect(x_9: vec3<f32>, n_6: vec3<f32>, r_10: vec3<f32>, lobe_8: vec4<f32>, rl_7: vec4<f32>, h0_: u32) -> WeightedPicks {
+fn bsh_weighted_collect(x_10: vec3<f32>, n_6: vec3<f32>, r_10: vec3<f32>, lobe_8: vec4<f32>, rl_7: vec4<f32>, h0_: u32) -> WeightedPicks {
     var picks: WeightedPicks;
     var h_1: u32;
-    var b_3: u32;
+    var b_4: u32;
     var s_1: u32;
 
     picks.w_sum = 0f;
     picks.n = 0u;
     h_1 = h0_;
     let _e14 = bsh_first(BSH);
-    let _e15 = bsh_next_leaf_lobe(BSH, _e14, x_9, r_10, rl_7);
-    b_3 = _e15;
+    let _e15 = bsh_next_leaf_lobe(BSH, _e14, x_10, r_10, rl_7);
+    b_4 = _e15;
     loop {
-        let _e17 = b_3;
+        let _e17 = b_4;
         if (_e17 != BSH_NONE) {
         } else {
             break;
@@ -669,9 +851,9 @@ fn bsh_weighted_collect(x_9: vec3<f32>, n_6: vec3<f32>, r_10: vec3<f32>, lobe_8:
         {
             let _e21 = picks.n;
             picks.n = (_e21 + 1u);
-            let _e25 = b_3;
+            let _e25 = b_4;
             let li_4 = bsh_nodes[_e25].light;
-            let _e29 = light_weight(li_4, x_9, n_6, r_10, lobe_8, rl_7);
+            let _e29 = light_weight(li_4, x_10, n_6, r_10, lobe_8, rl_7);
             if (_e29 > 0f) {
                 let _e33 = picks.w_sum;
                 picks.w_sum = (_e33 + _e29);
@@ -705,10 +887,10 @@ fn bsh_weighted_collect(x_9: vec3<f32>, n_6: vec3<f32>, r_10: vec3<f32>, lobe_8:
             }
         }
         continuing {
-            let _e58 = b_3;
+            let _e58 = b_4;
             let _e61 = bsh_nodes[_e58].next;
-            let _e62 = bsh_next_leaf_lobe(BSH, _e61, x_9, r_10, rl_7);
-            b_3 = _e62;
+            let _e62 = bsh_next_leaf_lobe(BSH, _e61, x_10, r_10, rl_7);
+            b_4 = _e62;
         }
     }
     let _e64 = h_1;
@@ -718,52 +900,52 @@ fn bsh_weighted_collect(x_9: vec3<f32>, n_6: vec3<f32>, r_10: vec3<f32>, lobe_8:
 }
 
 fn unproject_pixel(c0_: vec4<f32>, c1_: vec4<f32>, c2_: vec4<f32>, c3_: vec4<f32>, px: f32, py: f32, width: f32, height: f32, depth: f32) -> vec4<f32> {
-    var local_12: bool;
-    var local_13: bool;
+    var local_15: bool;
+    var local_16: bool;
 
     if (depth > 0f) {
-        local_12 = (depth < 1f);
+        local_15 = (depth < 1f);
     } else {
-        local_12 = false;
+        local_15 = false;
     }
-    let _e16 = local_12;
+    let _e16 = local_15;
     if !(_e16) {
         return vec4<f32>(0f, 0f, 0f, 0f);
     }
-    let x_11 = ((((px + 0.5f) / width) * 2f) - 1f);
+    let x_12 = ((((px + 0.5f) / width) * 2f) - 1f);
     let y_1 = (1f - (((py + 0.5f) / height) * 2f));
-    let p_7 = ((((c0_ * x_11) + (c1_ * y_1)) + (c2_ * depth)) + c3_);
-    let q = vec3<f32>((p_7.x / p_7.w), (p_7.y / p_7.w), (p_7.z / p_7.w));
-    if (abs(p_7.w) > 0f) {
-        let _e59 = finite3_(q);
-        local_13 = _e59;
+    let p_8 = ((((c0_ * x_12) + (c1_ * y_1)) + (c2_ * depth)) + c3_);
+    let q_1 = vec3<f32>((p_8.x / p_8.w), (p_8.y / p_8.w), (p_8.z / p_8.w));
+    if (abs(p_8.w) > 0f) {
+        let _e59 = finite3_(q_1);
+        local_16 = _e59;
     } else {
-        local_13 = false;
+        local_16 = false;
     }
-    let _e61 = local_13;
+    let _e61 = local_16;
     if _e61 {
-        return vec4<f32>(q.x, q.y, q.z, 1f);
+        return vec4<f32>(q_1.x, q_1.y, q_1.z, 1f);
     }
     return vec4<f32>(0f, 0f, 0f, 0f);
 }
 
 fn surface_at(texel: vec2<i32>) -> vec4<f32> {
     let _e3 = textureLoad(depth_tex, texel, 0i);
-    let d_2 = _e3.x;
+    let d_5 = _e3.x;
     let _e7 = view.c0_;
     let _e10 = view.c1_;
     let _e13 = view.c2_;
     let _e16 = view.c3_;
     let _e23 = view.width;
     let _e27 = view.height;
-    let _e29 = unproject_pixel(_e7, _e10, _e13, _e16, f32(texel.x), f32(texel.y), f32(_e23), f32(_e27), d_2);
+    let _e29 = unproject_pixel(_e7, _e10, _e13, _e16, f32(texel.x), f32(texel.y), f32(_e23), f32(_e27), d_5);
     return _e29;
 }
 
-fn shade_pick(li_3: u32, x_10: vec3<f32>, n_7: vec3<f32>, r_11: vec3<f32>, rl_8: vec4<f32>, m_1: Material, w_4: f32, u1_2: f32, u2_2: f32) -> Shaded {
+fn shade_pick(li_3: u32, x_11: vec3<f32>, n_7: vec3<f32>, r_11: vec3<f32>, rl_8: vec4<f32>, m_1: Material, w_4: f32, u1_2: f32, u2_2: f32, eps_1: f32) -> Shaded {
     var s_2: Shaded;
 
-    let _e12 = connect(li_3, x_10, n_7, n_7, 1f, w_4, u1_2, u2_2, 0f);
+    let _e12 = connect(li_3, x_11, n_7, n_7, 1f, w_4, u1_2, u2_2, eps_1);
     s_2.e = _e12.e;
     s_2.diffuse = vec3(0f);
     s_2.specular = vec3(0f);
@@ -771,8 +953,8 @@ fn shade_pick(li_3: u32, x_10: vec3<f32>, n_7: vec3<f32>, r_11: vec3<f32>, rl_8:
     return _e21;
 }
 
-fn add(a_5: Shaded, b_4: Shaded) -> Shaded {
-    return Shaded((a_5.e + b_4.e), (a_5.diffuse + b_4.diffuse), (a_5.specular + b_4.specular));
+fn add(a_6: Shaded, b_5: Shaded) -> Shaded {
+    return Shaded((a_6.e + b_5.e), (a_6.diffuse + b_5.diffuse), (a_6.specular + b_5.specular));
 }
 
 @compute @workgroup_size(8, 8, 1) 
@@ -812,56 +994,59 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         textureStore(out_tex, texel_1, vec4(0f));
         return;
     }
-    let x_12 = _e21.xyz;
-    let n_8 = (nn / vec3(sqrt(len2_)));
-    r = n_8;
+    let x_13 = _e21.xyz;
+    let n_9 = (nn / vec3(sqrt(len2_)));
+    r = n_9;
     let _e53 = lobe;
     let _e54 = range_lobe(_e53);
-    let _e57 = view.seed;
-    let _e61 = view.width;
-    let _e67 = view.frame;
-    let _e68 = point_stream(_e57, ((gid.y * _e61) + gid.x), _e67);
-    let _e69 = pick_stream(_e68);
-    h = _e69;
-    let _e79 = r;
-    let _e80 = lobe;
-    let _e81 = bsh_weighted_collect(x_12, n_8, _e79, _e80, _e54, _e68);
-    if (_e81.w_sum > 0f) {
+    let _e57 = view.shadow_offset;
+    let _e60 = view.eye;
+    let eps_2 = (_e57 * length((_e60 - x_13)));
+    let _e66 = view.seed;
+    let _e70 = view.width;
+    let _e76 = view.frame;
+    let _e77 = point_stream(_e66, ((gid.y * _e70) + gid.x), _e76);
+    let _e78 = pick_stream(_e77);
+    h = _e78;
+    let _e88 = r;
+    let _e89 = lobe;
+    let _e90 = bsh_weighted_collect(x_13, n_9, _e88, _e89, _e54, _e77);
+    if (_e90.w_sum > 0f) {
         loop {
-            let _e87 = k;
-            if (_e87 < K) {
+            let _e96 = k;
+            if (_e96 < K) {
             } else {
                 break;
             }
             {
-                let _e90 = h;
-                let _e91 = pcg_hash(_e90);
-                h = _e91;
-                let _e92 = h;
-                let _e93 = xi_from_bits(_e92);
-                let _e94 = h;
-                let _e95 = pcg_hash(_e94);
-                h = _e95;
-                let _e96 = t;
-                let _e98 = k;
-                let _e100 = r;
-                let _e101 = m;
-                let _e104 = k;
-                let _e107 = weighted_pick_weight(_e81.w_sum, _e81.w[_e104], K);
-                let _e108 = h;
-                let _e109 = xi_from_bits(_e108);
-                let _e110 = shade_pick(_e81.light[_e98], x_12, n_8, _e100, _e54, _e101, _e107, _e93, _e109);
-                let _e111 = add(_e96, _e110);
-                t = _e111;
+                let _e99 = h;
+                let _e100 = pcg_hash(_e99);
+                h = _e100;
+                let _e101 = h;
+                let _e102 = xi_from_bits(_e101);
+                let _e103 = h;
+                let _e104 = pcg_hash(_e103);
+                h = _e104;
+                let _e105 = t;
+                let _e107 = k;
+                let _e109 = r;
+                let _e110 = m;
+                let _e113 = k;
+                let _e116 = weighted_pick_weight(_e90.w_sum, _e90.w[_e113], K);
+                let _e117 = h;
+                let _e118 = xi_from_bits(_e117);
+                let _e119 = shade_pick(_e90.light[_e107], x_13, n_9, _e109, _e54, _e110, _e116, _e102, _e118, eps_2);
+                let _e120 = add(_e105, _e119);
+                t = _e120;
             }
             continuing {
-                let _e113 = k;
-                k = (_e113 + 1u);
+                let _e122 = k;
+                k = (_e122 + 1u);
             }
         }
     }
-    let count = _e81.n;
-    let _e118 = t.e;
-    textureStore(out_tex, texel_1, vec4<f32>(_e118, f32(count)));
+    let count = _e90.n;
+    let _e127 = t.e;
+    textureStore(out_tex, texel_1, vec4<f32>(_e127, f32(count)));
     return;
 }

@@ -20,6 +20,22 @@ struct GpuLightCone {
     pad: u32,
 }
 
+struct GpuGeoNode {
+    bmin: vec3<f32>,
+    first: u32,
+    bmax: vec3<f32>,
+    count: u32,
+}
+
+struct GpuTriangle {
+    v0_: vec3<f32>,
+    material: u32,
+    v1_: vec3<f32>,
+    light: u32,
+    v2_: vec3<f32>,
+    pad: u32,
+}
+
 struct ViewParams {
     c0_: vec4<f32>,
     c1_: vec4<f32>,
@@ -28,7 +44,7 @@ struct ViewParams {
     eye: vec3<f32>,
     width: u32,
     height: u32,
-    pad0_: u32,
+    shadow_offset: f32,
     seed: u32,
     frame: u32,
     f0_d: vec3<f32>,
@@ -42,6 +58,11 @@ struct BshNode {
     next: u32,
     light: u32,
     extent: f32,
+}
+
+struct GeoHit {
+    t: f32,
+    tri: u32,
 }
 
 struct Connection {
@@ -117,6 +138,10 @@ const TEMPORAL_MIN_WEIGHT: f32 = 0.01f;
 const K: u32 = 8u;
 const BSH: u32 = 0u;
 
+@group(1) @binding(6) 
+var<storage> geo_nodes: array<GpuGeoNode>;
+@group(1) @binding(7) 
+var<storage> geo_tris: array<GpuTriangle>;
 @group(0) @binding(0) 
 var<uniform> view: ViewParams;
 @group(0) @binding(1) 
@@ -312,9 +337,9 @@ fn smith_visibility(n_l: f32, n_v: f32, alpha_2: f32) -> f32 {
 }
 
 fn fresnel_schlick(f0_: vec3<f32>, f90_: f32, v_h: f32) -> vec3<f32> {
-    let c_5 = saturate((1f - v_h));
-    let c2_ = (c_5 * c_5);
-    return (f0_ + ((vec3<f32>(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_5)));
+    let c_6 = saturate((1f - v_h));
+    let c2_ = (c_6 * c_6);
+    return (f0_ + ((vec3<f32>(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_6)));
 }
 
 fn specular_fresnel(base: vec3<f32>, metallic: f32, f0_d: vec3<f32>, f90_d: f32, v_h_1: f32) -> vec3<f32> {
@@ -354,8 +379,8 @@ fn specular_brdf(base_2: vec3<f32>, metallic_2: f32, f0_d_2: vec3<f32>, f90_d_2:
     let hs = (v_1 + l_1);
     let inv = (1f / sqrt(dot(hs, hs)));
     let h_3 = (hs * inv);
-    let c_6 = cross(n_2, h_3);
-    let _e32 = ggx_d(dot(n_2, h_3), dot(c_6, c_6), alpha_3);
+    let c_7 = cross(n_2, h_3);
+    let _e32 = ggx_d(dot(n_2, h_3), dot(c_7, c_7), alpha_3);
     let _e34 = specular_fresnel(base_2, metallic_2, f0_d_2, f90_d_2, dot(v_1, h_3));
     let _e35 = smith_visibility(n_l_1, n_v_2, alpha_3);
     return (_e34 * (_e32 * _e35));
@@ -504,8 +529,8 @@ fn cone_cos_of(v_3: vec3<f32>, d2_4: f32, a_3: f32, d: vec3<f32>) -> f32 {
     if _e21 {
         return 1f;
     }
-    let c_7 = cross(v_3, d);
-    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_7, c_7)) * a_3)) / d2_4), 1f);
+    let c_8 = cross(v_3, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_8, c_8)) * a_3)) / d2_4), 1f);
 }
 
 fn cone_cos_toward(center_2: vec3<f32>, radius_2: f32, p_2: vec3<f32>, d_1: vec3<f32>) -> f32 {
@@ -588,6 +613,34 @@ fn cone_weight(center_6: vec3<f32>, radius_6: f32, phi_3: f32, axis_4: vec3<f32>
     return _e22;
 }
 
+fn shadow_margin(len: f32) -> f32 {
+    return (0.0001f * len);
+}
+
+fn ray_inverse(x_4: f32) -> f32 {
+    return (1f / select(x_4, 0.000000000000000000000000000001f, (abs(x_4) < 0.000000000000000000000000000001f)));
+}
+
+fn ray_inverse3_(d_2: vec3<f32>) -> vec3<f32> {
+    let _e2 = ray_inverse(d_2.x);
+    let _e4 = ray_inverse(d_2.y);
+    let _e6 = ray_inverse(d_2.z);
+    return vec3<f32>(_e2, _e4, _e6);
+}
+
+fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin: vec3<f32>, bmax: vec3<f32>, t_max: f32) -> f32 {
+    let t0_ = ((bmin - o) * inv_d);
+    let t1_ = ((bmax - o) * inv_d);
+    let lo = min(t0_, t1_);
+    let hi = max(t0_, t1_);
+    let t_in = max(max(lo.x, lo.y), max(lo.z, 0f));
+    let t_out = min(min(hi.x, hi.y), min(hi.z, t_max));
+    if (t_in <= t_out) {
+        return t_in;
+    }
+    return -1f;
+}
+
 fn triangle_normal(a_4: vec3<f32>, b_3: vec3<f32>, c_3: vec3<f32>) -> vec3<f32> {
     var local_12: bool;
 
@@ -603,6 +656,54 @@ fn triangle_normal(a_4: vec3<f32>, b_3: vec3<f32>, c_3: vec3<f32>) -> vec3<f32> 
         return vec3<f32>(0f, 0f, 0f);
     }
     return (n_11 / vec3(sqrt(l2_)));
+}
+
+fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_4: vec3<f32>, c_4: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
+    var local_13: bool;
+    var local_14: bool;
+    var local_15: bool;
+
+    let e1_ = (b_4 - a_5);
+    let e2_ = (c_4 - a_5);
+    let p_7 = cross(d_3, e2_);
+    let det = dot(e1_, p_7);
+    if (abs(det) <= 0f) {
+        return -1f;
+    }
+    let inv_1 = (1f / det);
+    let s_3 = (o_1 - a_5);
+    let u_3 = (dot(s_3, p_7) * inv_1);
+    if !((u_3 < 0f)) {
+        local_13 = (u_3 > 1f);
+    } else {
+        local_13 = true;
+    }
+    let _e28 = local_13;
+    if _e28 {
+        return -1f;
+    }
+    let q = cross(s_3, e1_);
+    let v_11 = (dot(d_3, q) * inv_1);
+    if !((v_11 < 0f)) {
+        local_14 = ((u_3 + v_11) > 1f);
+    } else {
+        local_14 = true;
+    }
+    let _e42 = local_14;
+    if _e42 {
+        return -1f;
+    }
+    let t_3 = (dot(e2_, q) * inv_1);
+    if (t_3 > t_min) {
+        local_15 = (t_3 < t_max_1);
+    } else {
+        local_15 = false;
+    }
+    let _e51 = local_15;
+    if _e51 {
+        return t_3;
+    }
+    return -1f;
 }
 
 fn light_intensity(l_2: GpuLight, w_4: vec3<f32>) -> vec3<f32> {
@@ -626,12 +727,93 @@ fn light_point(l_3: GpuLight, u1_1: f32, u2_1: f32) -> vec3<f32> {
     return l_3.p0_;
 }
 
-fn occluded(a_5: vec3<f32>, b_4: vec3<f32>) -> bool {
-    return false;
+fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bool) -> GeoHit {
+    var hit: GeoHit;
+    var stack: array<u32, 64>;
+    var sp: u32 = 0u;
+    var node_2: u32 = 0u;
+    var i: u32;
+
+    hit.t = t_max_2;
+    hit.tri = NO_LIGHT;
+    if (arrayLength((&geo_nodes)) == 0u) {
+        let _e13 = hit;
+        return _e13;
+    }
+    let _e14 = ray_inverse3_(d_4);
+    loop {
+        let _e21 = node_2;
+        let n_12 = geo_nodes[_e21];
+        let _e27 = hit.t;
+        let _e28 = ray_aabb(o_2, _e14, n_12.bmin, n_12.bmax, _e27);
+        if (_e28 >= 0f) {
+            if (n_12.count > 0u) {
+                i = n_12.first;
+                loop {
+                    let _e36 = i;
+                    if (_e36 < (n_12.first + n_12.count)) {
+                    } else {
+                        break;
+                    }
+                    {
+                        let _e42 = i;
+                        let t_4 = geo_tris[_e42];
+                        let _e49 = hit.t;
+                        let _e50 = ray_triangle(o_2, d_4, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e49);
+                        if (_e50 > 0f) {
+                            hit.t = _e50;
+                            let _e55 = i;
+                            hit.tri = _e55;
+                            if any_hit {
+                                let _e56 = hit;
+                                return _e56;
+                            }
+                        }
+                    }
+                    continuing {
+                        let _e58 = i;
+                        i = (_e58 + 1u);
+                    }
+                }
+            } else {
+                let _e60 = sp;
+                if (_e60 < 64u) {
+                    let _e63 = sp;
+                    stack[_e63] = (n_12.first + 1u);
+                    let _e68 = sp;
+                    sp = (_e68 + 1u);
+                }
+                node_2 = n_12.first;
+                continue;
+            }
+        }
+        let _e72 = sp;
+        if (_e72 == 0u) {
+            break;
+        }
+        let _e75 = sp;
+        sp = (_e75 - 1u);
+        let _e78 = sp;
+        let _e80 = stack[_e78];
+        node_2 = _e80;
+    }
+    let _e81 = hit;
+    return _e81;
 }
 
-fn bsh_node(nodes: u32, i: u32) -> BshNode {
-    let _e4 = bsh_nodes[i];
+fn occluded(a_6: vec3<f32>, b_5: vec3<f32>) -> bool {
+    let dv = (b_5 - a_6);
+    let len_1 = length(dv);
+    if (len_1 <= 0f) {
+        return false;
+    }
+    let _e7 = shadow_margin(len_1);
+    let _e12 = trace(a_6, (dv / vec3(len_1)), _e7, (len_1 - _e7), true);
+    return (_e12.tri != NO_LIGHT);
+}
+
+fn bsh_node(nodes: u32, i_1: u32) -> BshNode {
+    let _e4 = bsh_nodes[i_1];
     return _e4;
 }
 
@@ -647,148 +829,148 @@ fn bsh_first(nodes_2: u32) -> u32 {
     return BSH_NONE;
 }
 
-fn bsh_inner_scale(a_6: f32, v_4: vec3<f32>, d2_6: f32, r_5: vec3<f32>, rl_2: vec4<f32>) -> f32 {
-    let _e5 = cone_cos_of(v_4, d2_6, a_6, r_5);
+fn bsh_inner_scale(a_7: f32, v_4: vec3<f32>, d2_6: f32, r_5: vec3<f32>, rl_2: vec4<f32>) -> f32 {
+    let _e5 = cone_cos_of(v_4, d2_6, a_7, r_5);
     let _e8 = range_scale_at(rl_2, (_e5 + 0.000002f));
     return _e8;
 }
 
-fn bsh_reaches(node_2: BshNode, x_4: vec3<f32>, r_6: vec3<f32>, rl_3: vec4<f32>) -> bool {
-    var local_13: bool;
-    var local_14: bool;
+fn bsh_reaches(node_3: BshNode, x_5: vec3<f32>, r_6: vec3<f32>, rl_3: vec4<f32>) -> bool {
+    var local_16: bool;
+    var local_17: bool;
 
-    let _e6 = sphere_contains_point(node_2.center, node_2.radius, x_4);
+    let _e6 = sphere_contains_point(node_3.center, node_3.radius, x_5);
     if _e6 {
         return true;
     }
     if !((rl_3.w <= 1f)) {
-        let _e20 = sphere_contains_point(node_2.center, (node_2.radius * (rl_3.w * 1.0001f)), x_4);
-        local_13 = !(_e20);
+        let _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001f)), x_5);
+        local_16 = !(_e20);
     } else {
-        local_13 = true;
+        local_16 = true;
     }
-    let _e23 = local_13;
+    let _e23 = local_16;
     if _e23 {
         return false;
     }
-    let _e25 = bsh_range_bound(node_2);
-    let v_11 = (x_4 - node_2.center);
-    let d2_9 = dot(v_11, v_11);
-    let reach_max = (node_2.extent + ((rl_3.w * 1.001f) * _e25));
+    let _e25 = bsh_range_bound(node_3);
+    let v_12 = (x_5 - node_3.center);
+    let d2_9 = dot(v_12, v_12);
+    let reach_max = (node_3.extent + ((rl_3.w * 1.001f) * _e25));
     if (d2_9 > (reach_max * reach_max)) {
         return false;
     }
-    if (node_2.child == BSH_NONE) {
-        let _e43 = range_scale_toward(rl_3, node_2.center, node_2.extent, x_4, r_6);
-        let _e46 = bsh_scaled_radius(node_2, sqrt(_e43));
-        let _e47 = sphere_contains_point(node_2.center, _e46, x_4);
+    if (node_3.child == BSH_NONE) {
+        let _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_5, r_6);
+        let _e46 = bsh_scaled_radius(node_3, sqrt(_e43));
+        let _e47 = sphere_contains_point(node_3.center, _e46, x_5);
         return _e47;
     }
-    let _e50 = bsh_inner_scale(node_2.extent, -(v_11), d2_9, r_6, rl_3);
+    let _e50 = bsh_inner_scale(node_3.extent, -(v_12), d2_9, r_6, rl_3);
     let s_c = (_e50 * 1.001f);
-    let reach = (node_2.extent + (sqrt(s_c) * _e25));
-    if (d2_9 <= ((node_2.radius * node_2.radius) * s_c)) {
-        local_14 = (d2_9 <= (reach * reach));
+    let reach = (node_3.extent + (sqrt(s_c) * _e25));
+    if (d2_9 <= ((node_3.radius * node_3.radius) * s_c)) {
+        local_17 = (d2_9 <= (reach * reach));
     } else {
-        local_14 = false;
+        local_17 = false;
     }
-    let _e67 = local_14;
+    let _e67 = local_17;
     return _e67;
 }
 
-fn bsh_next_leaf_lobe(nodes_3: u32, start: u32, x_5: vec3<f32>, r_7: vec3<f32>, rl_4: vec4<f32>) -> u32 {
-    var i_1: u32;
+fn bsh_next_leaf_lobe(nodes_3: u32, start: u32, x_6: vec3<f32>, r_7: vec3<f32>, rl_4: vec4<f32>) -> u32 {
+    var i_2: u32;
 
-    i_1 = start;
+    i_2 = start;
     loop {
-        let _e6 = i_1;
+        let _e6 = i_2;
         if (_e6 != BSH_NONE) {
         } else {
             break;
         }
         {
-            let _e9 = i_1;
+            let _e9 = i_2;
             let _e10 = bsh_node(nodes_3, _e9);
-            let _e11 = bsh_reaches(_e10, x_5, r_7, rl_4);
+            let _e11 = bsh_reaches(_e10, x_6, r_7, rl_4);
             if _e11 {
                 if (_e10.child == BSH_NONE) {
-                    let _e15 = i_1;
+                    let _e15 = i_2;
                     return _e15;
                 }
-                i_1 = _e10.child;
+                i_2 = _e10.child;
             } else {
-                i_1 = _e10.next;
+                i_2 = _e10.next;
             }
         }
     }
     return BSH_NONE;
 }
 
-fn connect(li: u32, x_6: vec3<f32>, n_7: vec3<f32>, ng_1: vec3<f32>, s: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32) -> Connection {
-    var c_4: Connection;
-    var local_15: bool;
+fn connect(li: u32, x_7: vec3<f32>, n_7: vec3<f32>, ng_1: vec3<f32>, s: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32) -> Connection {
+    var c_5: Connection;
+    var local_18: bool;
 
-    c_4.e = vec3(0f);
+    c_5.e = vec3(0f);
     let l_4 = lights[li];
     let _e17 = light_point(l_4, u1_2, u2_2);
-    c_4.y = _e17;
-    let _e20 = c_4.y;
+    c_5.y = _e17;
+    let _e20 = c_5.y;
     let _e23 = r2_3[li];
-    let _e25 = connection_cosine(x_6, _e20, n_7, ng_1, (s * _e23));
-    c_4.cos_x = _e25;
-    let _e27 = c_4.cos_x;
+    let _e25 = connection_cosine(x_7, _e20, n_7, ng_1, (s * _e23));
+    c_5.cos_x = _e25;
+    let _e27 = c_5.cos_x;
     if !((_e27 <= 0f)) {
-        let _e36 = c_4.y;
-        let _e37 = occluded((x_6 + (ng_1 * eps)), _e36);
-        local_15 = _e37;
+        let _e36 = c_5.y;
+        let _e37 = occluded((x_7 + (ng_1 * eps)), _e36);
+        local_18 = _e37;
     } else {
-        local_15 = true;
+        local_18 = true;
     }
-    let _e39 = local_15;
+    let _e39 = local_18;
     if _e39 {
-        let _e40 = c_4;
+        let _e40 = c_5;
         return _e40;
     }
-    let _e42 = c_4.y;
-    let v_12 = (x_6 - _e42);
-    let d2_10 = dot(v_12, v_12);
-    let _e49 = light_intensity(l_4, (v_12 / vec3(sqrt(d2_10))));
-    let _e51 = c_4.cos_x;
+    let _e42 = c_5.y;
+    let v_13 = (x_7 - _e42);
+    let d2_10 = dot(v_13, v_13);
+    let _e49 = light_intensity(l_4, (v_13 / vec3(sqrt(d2_10))));
+    let _e51 = c_5.cos_x;
     let _e54 = rt2_4[li];
     let _e56 = connection_factor(_e51, d2_10, (s * _e54), w_res);
-    c_4.e = (_e49 * _e56);
-    let _e58 = c_4;
+    c_5.e = (_e49 * _e56);
+    let _e58 = c_5;
     return _e58;
 }
 
-fn light_range_scale(li_1: u32, x_7: vec3<f32>, r_8: vec3<f32>, rl_5: vec4<f32>) -> f32 {
-    let c_8 = light_cones[li_1];
-    let _e9 = range_scale_toward(rl_5, c_8.center, c_8.radius, x_7, r_8);
+fn light_range_scale(li_1: u32, x_8: vec3<f32>, r_8: vec3<f32>, rl_5: vec4<f32>) -> f32 {
+    let c_9 = light_cones[li_1];
+    let _e9 = range_scale_toward(rl_5, c_9.center, c_9.radius, x_8, r_8);
     return _e9;
 }
 
-fn light_weight(li_2: u32, x_8: vec3<f32>, n_8: vec3<f32>, r_9: vec3<f32>, lobe_7: vec4<f32>, rl_6: vec4<f32>) -> f32 {
-    let c_9 = light_cones[li_2];
-    let _e15 = light_range_scale(li_2, x_8, r_9, rl_6);
+fn light_weight(li_2: u32, x_9: vec3<f32>, n_8: vec3<f32>, r_9: vec3<f32>, lobe_7: vec4<f32>, rl_6: vec4<f32>) -> f32 {
+    let c_10 = light_cones[li_2];
+    let _e15 = light_range_scale(li_2, x_9, r_9, rl_6);
     let _e18 = rt2_4[li_2];
-    let _e20 = cone_weight(c_9.center, c_9.radius, c_9.phi, c_9.axis, c_9.cos_o, c_9.cos_e, (_e15 * _e18), x_8, n_8, r_9, lobe_7);
+    let _e20 = cone_weight(c_10.center, c_10.radius, c_10.phi, c_10.axis, c_10.cos_o, c_10.cos_e, (_e15 * _e18), x_9, n_8, r_9, lobe_7);
     return _e20;
 }
 
-fn bsh_weighted_collect(x_9: vec3<f32>, n_9: vec3<f32>, r_10: vec3<f32>, lobe_8: vec4<f32>, rl_7: vec4<f32>, h0_: u32) -> WeightedPicks {
+fn bsh_weighted_collect(x_10: vec3<f32>, n_9: vec3<f32>, r_10: vec3<f32>, lobe_8: vec4<f32>, rl_7: vec4<f32>, h0_: u32) -> WeightedPicks {
     var picks: WeightedPicks;
     var h_1: u32;
-    var b_5: u32;
+    var b_6: u32;
     var s_1: u32;
 
     picks.w_sum = 0f;
     picks.n = 0u;
     h_1 = h0_;
     let _e14 = bsh_first(BSH);
-    let _e15 = bsh_next_leaf_lobe(BSH, _e14, x_9, r_10, rl_7);
-    b_5 = _e15;
+    let _e15 = bsh_next_leaf_lobe(BSH, _e14, x_10, r_10, rl_7);
+    b_6 = _e15;
     loop {
-        let _e17 = b_5;
+        let _e17 = b_6;
         if (_e17 != BSH_NONE) {
         } else {
             break;
@@ -796,9 +978,9 @@ fn bsh_weighted_collect(x_9: vec3<f32>, n_9: vec3<f32>, r_10: vec3<f32>, lobe_8:
         {
             let _e21 = picks.n;
             picks.n = (_e21 + 1u);
-            let _e25 = b_5;
+            let _e25 = b_6;
             let li_4 = bsh_nodes[_e25].light;
-            let _e29 = light_weight(li_4, x_9, n_9, r_10, lobe_8, rl_7);
+            let _e29 = light_weight(li_4, x_10, n_9, r_10, lobe_8, rl_7);
             if (_e29 > 0f) {
                 let _e33 = picks.w_sum;
                 picks.w_sum = (_e33 + _e29);
@@ -832,10 +1014,10 @@ fn bsh_weighted_collect(x_9: vec3<f32>, n_9: vec3<f32>, r_10: vec3<f32>, lobe_8:
             }
         }
         continuing {
-            let _e58 = b_5;
+            let _e58 = b_6;
             let _e61 = bsh_nodes[_e58].next;
-            let _e62 = bsh_next_leaf_lobe(BSH, _e61, x_9, r_10, rl_7);
-            b_5 = _e62;
+            let _e62 = bsh_next_leaf_lobe(BSH, _e61, x_10, r_10, rl_7);
+            b_6 = _e62;
         }
     }
     let _e64 = h_1;
@@ -845,20 +1027,20 @@ fn bsh_weighted_collect(x_9: vec3<f32>, n_9: vec3<f32>, r_10: vec3<f32>, lobe_8:
 }
 
 fn surface_at(texel: vec2<i32>) -> vec4<f32> {
-    let p_7 = textureLoad(position_tex, texel, 0i);
-    return select(vec4(0f), vec4<f32>(p_7.xyz, 1f), (p_7.w > 0f));
+    let p_8 = textureLoad(position_tex, texel, 0i);
+    return select(vec4(0f), vec4<f32>(p_8.xyz, 1f), (p_8.w > 0f));
 }
 
-fn shade_pick(li_3: u32, x_10: vec3<f32>, n_10: vec3<f32>, r_11: vec3<f32>, rl_8: vec4<f32>, m_1: Material, w_5: f32, u1_3: f32, u2_3: f32) -> Shaded {
+fn shade_pick(li_3: u32, x_11: vec3<f32>, n_10: vec3<f32>, r_11: vec3<f32>, rl_8: vec4<f32>, m_1: Material, w_5: f32, u1_3: f32, u2_3: f32, eps_1: f32) -> Shaded {
     var s_2: Shaded;
 
-    let _e10 = light_range_scale(li_3, x_10, r_11, rl_8);
-    let _e12 = connect(li_3, x_10, n_10, n_10, _e10, w_5, u1_3, u2_3, 0f);
+    let _e11 = light_range_scale(li_3, x_11, r_11, rl_8);
+    let _e12 = connect(li_3, x_11, n_10, n_10, _e11, w_5, u1_3, u2_3, eps_1);
     s_2.e = _e12.e;
     s_2.diffuse = vec3(0f);
     s_2.specular = vec3(0f);
     if (_e12.cos_x > 0f) {
-        let l_5 = normalize((_e12.y - x_10));
+        let l_5 = normalize((_e12.y - x_11));
         let _e32 = view.f0_d;
         let _e35 = view.f90_d;
         let _e37 = half_cosine(m_1.v, l_5);
@@ -873,8 +1055,8 @@ fn shade_pick(li_3: u32, x_10: vec3<f32>, n_10: vec3<f32>, r_11: vec3<f32>, rl_8
     return _e55;
 }
 
-fn add(a_7: Shaded, b_6: Shaded) -> Shaded {
-    return Shaded((a_7.e + b_6.e), (a_7.diffuse + b_6.diffuse), (a_7.specular + b_6.specular));
+fn add(a_8: Shaded, b_7: Shaded) -> Shaded {
+    return Shaded((a_8.e + b_7.e), (a_8.diffuse + b_7.diffuse), (a_8.specular + b_7.specular));
 }
 
 @compute @workgroup_size(8, 8, 1) 
@@ -915,74 +1097,77 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         textureStore(specular_tex, texel_1, vec4(0f));
         return;
     }
-    let x_11 = _e21.xyz;
-    let n_12 = (nn / vec3(sqrt(len2_1)));
-    r = n_12;
+    let x_12 = _e21.xyz;
+    let n_13 = (nn / vec3(sqrt(len2_1)));
+    r = n_13;
     let mr = textureLoad(metal_rough_tex, texel_1, 0i);
     let _e61 = textureLoad(base_color_tex, texel_1, 0i);
     let _e67 = ggx_alpha(saturate(mr.y));
     let _e70 = view.eye;
-    m = Material(_e61.xyz, saturate(mr.z), _e67, normalize((_e70 - x_11)), mr.y, 0f);
+    m = Material(_e61.xyz, saturate(mr.z), _e67, normalize((_e70 - x_12)), mr.y, 0f);
     let _e77 = m.base;
     let _e79 = m.metallic;
     let _e82 = view.f0_d;
     let _e85 = view.f90_d;
     let _e87 = m.alpha;
     let _e89 = m.v;
-    let _e91 = receiver_lobe(_e77, _e79, _e82, _e85, _e87, dot(n_12, _e89));
+    let _e91 = receiver_lobe(_e77, _e79, _e82, _e85, _e87, dot(n_13, _e89));
     lobe = _e91;
     let _e93 = m.v;
-    let _e94 = mirror_dir(n_12, _e93);
+    let _e94 = mirror_dir(n_13, _e93);
     r = _e94;
     let _e95 = lobe;
     let _e96 = range_lobe(_e95);
-    let _e99 = view.seed;
-    let _e103 = view.width;
-    let _e109 = view.frame;
-    let _e110 = point_stream(_e99, ((gid.y * _e103) + gid.x), _e109);
-    let _e111 = pick_stream(_e110);
-    h = _e111;
-    let _e121 = r;
-    let _e122 = lobe;
-    let _e123 = bsh_weighted_collect(x_11, n_12, _e121, _e122, _e96, _e110);
-    if (_e123.w_sum > 0f) {
+    let _e99 = view.shadow_offset;
+    let _e102 = view.eye;
+    let eps_2 = (_e99 * length((_e102 - x_12)));
+    let _e108 = view.seed;
+    let _e112 = view.width;
+    let _e118 = view.frame;
+    let _e119 = point_stream(_e108, ((gid.y * _e112) + gid.x), _e118);
+    let _e120 = pick_stream(_e119);
+    h = _e120;
+    let _e130 = r;
+    let _e131 = lobe;
+    let _e132 = bsh_weighted_collect(x_12, n_13, _e130, _e131, _e96, _e119);
+    if (_e132.w_sum > 0f) {
         loop {
-            let _e129 = k;
-            if (_e129 < K) {
+            let _e138 = k;
+            if (_e138 < K) {
             } else {
                 break;
             }
             {
-                let _e132 = h;
-                let _e133 = pcg_hash(_e132);
-                h = _e133;
-                let _e134 = h;
-                let _e135 = xi_from_bits(_e134);
-                let _e136 = h;
-                let _e137 = pcg_hash(_e136);
-                h = _e137;
-                let _e138 = t;
-                let _e140 = k;
-                let _e142 = r;
-                let _e143 = m;
-                let _e146 = k;
-                let _e149 = weighted_pick_weight(_e123.w_sum, _e123.w[_e146], K);
-                let _e150 = h;
-                let _e151 = xi_from_bits(_e150);
-                let _e152 = shade_pick(_e123.light[_e140], x_11, n_12, _e142, _e96, _e143, _e149, _e135, _e151);
-                let _e153 = add(_e138, _e152);
-                t = _e153;
+                let _e141 = h;
+                let _e142 = pcg_hash(_e141);
+                h = _e142;
+                let _e143 = h;
+                let _e144 = xi_from_bits(_e143);
+                let _e145 = h;
+                let _e146 = pcg_hash(_e145);
+                h = _e146;
+                let _e147 = t;
+                let _e149 = k;
+                let _e151 = r;
+                let _e152 = m;
+                let _e155 = k;
+                let _e158 = weighted_pick_weight(_e132.w_sum, _e132.w[_e155], K);
+                let _e159 = h;
+                let _e160 = xi_from_bits(_e159);
+                let _e161 = shade_pick(_e132.light[_e149], x_12, n_13, _e151, _e96, _e152, _e158, _e144, _e160, eps_2);
+                let _e162 = add(_e147, _e161);
+                t = _e162;
             }
             continuing {
-                let _e155 = k;
-                k = (_e155 + 1u);
+                let _e164 = k;
+                k = (_e164 + 1u);
             }
         }
     }
-    let count = _e123.n;
-    let _e160 = t.e;
-    textureStore(out_tex, texel_1, vec4<f32>(_e160, f32(count)));
-    let _e165 = t.specular;
-    textureStore(specular_tex, texel_1, vec4<f32>(_e165, 0f));
+    let count = _e132.n;
+    let _e169 = t.e;
+    textureStore(out_tex, texel_1, vec4<f32>(_e169, f32(count)));
+    let _e174 = t.specular;
+    textureStore(specular_tex, texel_1, vec4<f32>(_e174, 0f));
     return;
 }

@@ -41,7 +41,7 @@ struct ViewParams {
     eye: vec3<f32>,
     width: u32,
     height: u32,
-    pad0_: u32,
+    shadow_offset: f32,
     seed: u32,
     frame: u32,
     f0_d: vec3<f32>,

@@ -75,7 +75,7 @@ pub mod temporal;
 
 pub use direct::{
     Dielectric, DirectInputs, DirectOutputs, DirectPass, DirectPassDesc, DirectSelection,
-    DirectSettings, MaterialInputs,
+    DirectSettings, MaterialInputs, Shadows,
 };
 pub use indirect::{
     IndirectInputs, IndirectMaterials, IndirectPass, IndirectPassDesc, IndirectSettings, VplInput,
@@ -229,7 +229,7 @@ impl GBuffer<'_> {
             eye: self.eye,
             width: size.0,
             height: size.1,
-            pad0: 0,
+            shadow_offset: 0.0,
             seed,
             frame,
             f0_d: Vec3::ZERO,

@@ -21,7 +21,7 @@ struct ViewParams {
     vec3 eye;
     uint width;
     uint height;
-    uint pad0_;
+    float shadow_offset;
     uint seed;
     uint frame;
     vec3 f0_d;
@@ -804,9 +804,9 @@ vec4 surface_at(ivec2 texel) {
     return ((p_2.w > 0.0) ? vec4(p_2.xyz, 1.0) : vec4(0.0));
 }
 
-Shaded shade_pick(uint li_1, vec3 x_12, vec3 n_8, vec3 r_7, vec4 rl_6, Material m_1, float w_4, float u1_3, float u2_3) {
+Shaded shade_pick(uint li_1, vec3 x_12, vec3 n_8, vec3 r_7, vec4 rl_6, Material m_1, float w_4, float u1_3, float u2_3, float eps_1) {
     Shaded s_1 = Shaded(vec3(0.0), vec3(0.0), vec3(0.0));
-    Connection _e12 = connect(li_1, x_12, n_8, n_8, 1.0, w_4, u1_3, u2_3, 0.0);
+    Connection _e12 = connect(li_1, x_12, n_8, n_8, 1.0, w_4, u1_3, u2_3, eps_1);
     s_1.e = _e12.e;
     s_1.diffuse = vec3(0.0);
     s_1.specular = vec3(0.0);
@@ -859,50 +859,53 @@ void main() {
     r = n_10;
     vec4 _e53 = lobe;
     vec4 _e54 = range_lobe(_e53);
-    uint _e57 = _group_0_binding_0_cs.seed;
-    uint _e61 = _group_0_binding_0_cs.width;
-    uint _e67 = _group_0_binding_0_cs.frame;
-    uint _e68 = point_stream(_e57, ((gid.y * _e61) + gid.x), _e67);
-    uint _e69 = pick_stream(_e68);
-    h = _e69;
-    vec3 _e79 = r;
-    Picks _e80 = bsh_collect(x_13, _e79, _e54, _e68);
-    float _e83 = reservoir_weight(_e80.n, K);
+    float _e57 = _group_0_binding_0_cs.shadow_offset;
+    vec3 _e60 = _group_0_binding_0_cs.eye;
+    float eps_2 = (_e57 * length((_e60 - x_13)));
+    uint _e66 = _group_0_binding_0_cs.seed;
+    uint _e70 = _group_0_binding_0_cs.width;
+    uint _e76 = _group_0_binding_0_cs.frame;
+    uint _e77 = point_stream(_e66, ((gid.y * _e70) + gid.x), _e76);
+    uint _e78 = pick_stream(_e77);
+    h = _e78;
+    vec3 _e88 = r;
+    Picks _e89 = bsh_collect(x_13, _e88, _e54, _e77);
+    float _e92 = reservoir_weight(_e89.n, K);
     bool loop_init_1 = true;
     while(true) {
         if (!loop_init_1) {
-            uint _e108 = k;
-            k = (_e108 + 1u);
+            uint _e117 = k;
+            k = (_e117 + 1u);
         }
         loop_init_1 = false;
-        uint _e86 = k;
-        if ((_e86 < min(_e80.n, K))) {
+        uint _e95 = k;
+        if ((_e95 < min(_e89.n, K))) {
         } else {
             break;
         }
         {
-            uint _e91 = h;
-            uint _e92 = pcg_hash(_e91);
-            h = _e92;
-            uint _e93 = h;
-            float _e94 = xi_from_bits(_e93);
-            uint _e95 = h;
-            uint _e96 = pcg_hash(_e95);
-            h = _e96;
-            Shaded _e97 = t;
-            uint _e99 = k;
-            vec3 _e101 = r;
-            Material _e102 = m;
-            uint _e103 = h;
-            float _e104 = xi_from_bits(_e103);
-            Shaded _e105 = shade_pick(_e80.light[_e99], x_13, n_10, _e101, _e54, _e102, _e83, _e94, _e104);
-            Shaded _e106 = add(_e97, _e105);
-            t = _e106;
+            uint _e100 = h;
+            uint _e101 = pcg_hash(_e100);
+            h = _e101;
+            uint _e102 = h;
+            float _e103 = xi_from_bits(_e102);
+            uint _e104 = h;
+            uint _e105 = pcg_hash(_e104);
+            h = _e105;
+            Shaded _e106 = t;
+            uint _e108 = k;
+            vec3 _e110 = r;
+            Material _e111 = m;
+            uint _e112 = h;
+            float _e113 = xi_from_bits(_e112);
+            Shaded _e114 = shade_pick(_e89.light[_e108], x_13, n_10, _e110, _e54, _e111, _e92, _e103, _e113, eps_2);
+            Shaded _e115 = add(_e106, _e114);
+            t = _e115;
         }
     }
-    uint count = _e80.n;
-    vec3 _e113 = t.e;
-    imageStore(_group_0_binding_3_cs, texel_1, vec4(_e113, float(count)));
+    uint count = _e89.n;
+    vec3 _e122 = t.e;
+    imageStore(_group_0_binding_3_cs, texel_1, vec4(_e122, float(count)));
     return;
 }
 

@@ -23,6 +23,20 @@ struct GpuLightCone {
     uint bvh_leaf;
     uint pad;
 };
+struct GpuGeoNode {
+    vec3 bmin;
+    uint first;
+    vec3 bmax;
+    uint count;
+};
+struct GpuTriangle {
+    vec3 v0_;
+    uint material;
+    vec3 v1_;
+    uint light;
+    vec3 v2_;
+    uint pad;
+};
 struct ViewParams {
     vec4 c0_;
     vec4 c1_;
@@ -31,7 +45,7 @@ struct ViewParams {
     vec3 eye;
     uint width;
     uint height;
-    uint pad0_;
+    float shadow_offset;
     uint seed;
     uint frame;
     vec3 f0_d;
@@ -44,6 +58,10 @@ struct BshNode {
     uint next;
     uint light;
     float extent;
+};
+struct GeoHit {
+    float t;
+    uint tri;
 };
 struct Connection {
     vec3 e;
@@ -114,7 +132,11 @@ const float TEMPORAL_MIN_WEIGHT = 0.01;
 const uint K = 8u;
 const uint BSH = 0u;
 
-layout(std140) uniform ViewParams_block_0Compute { ViewParams _group_0_binding_0_cs; };
+layout(std430) readonly buffer type_6_block_0Compute { GpuGeoNode _group_1_binding_6_cs[]; };
+
+layout(std430) readonly buffer type_7_block_1Compute { GpuTriangle _group_1_binding_7_cs[]; };
+
+layout(std140) uniform ViewParams_block_2Compute { ViewParams _group_0_binding_0_cs; };
 
 uniform sampler2D _group_0_binding_1_cs;
 
@@ -128,15 +150,15 @@ uniform sampler2D _group_0_binding_5_cs;
 
 layout(rgba16f) writeonly uniform image2D _group_0_binding_6_cs;
 
-layout(std430) readonly buffer type_8_block_1Compute { GpuLight _group_1_binding_1_cs[]; };
+layout(std430) readonly buffer type_11_block_3Compute { GpuLight _group_1_binding_1_cs[]; };
 
-layout(std430) readonly buffer type_4_block_2Compute { float _group_1_binding_2_cs[]; };
+layout(std430) readonly buffer type_4_block_4Compute { float _group_1_binding_2_cs[]; };
 
-layout(std430) readonly buffer type_4_block_3Compute { float _group_1_binding_3_cs[]; };
+layout(std430) readonly buffer type_4_block_5Compute { float _group_1_binding_3_cs[]; };
 
-layout(std430) readonly buffer type_9_block_4Compute { BshNode _group_1_binding_4_cs[]; };
+layout(std430) readonly buffer type_12_block_6Compute { BshNode _group_1_binding_4_cs[]; };
 
-layout(std430) readonly buffer type_10_block_5Compute { GpuLightCone _group_1_binding_5_cs[]; };
+layout(std430) readonly buffer type_13_block_7Compute { GpuLightCone _group_1_binding_5_cs[]; };
 
 
 float to_f32_(uint u) {
@@ -307,9 +329,9 @@ float smith_visibility(float n_l, float n_v, float alpha_2) {
 }
 
 vec3 fresnel_schlick(vec3 f0_, float f90_, float v_h) {
-    float c_5 = clamp((1.0 - v_h), 0.0, 1.0);
-    float c2_ = (c_5 * c_5);
-    return (f0_ + ((vec3(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_5)));
+    float c_6 = clamp((1.0 - v_h), 0.0, 1.0);
+    float c2_ = (c_6 * c_6);
+    return (f0_ + ((vec3(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_6)));
 }
 
 vec3 specular_fresnel(vec3 base, float metallic, vec3 f0_d, float f90_d, float v_h_1) {
@@ -348,8 +370,8 @@ vec3 specular_brdf(vec3 base_2, float metallic_2, vec3 f0_d_2, float f90_d_2, fl
     vec3 hs = (v_1 + l_1);
     float inv = (1.0 / sqrt(dot(hs, hs)));
     vec3 h_3 = (hs * inv);
-    vec3 c_6 = cross(n_2, h_3);
-    float _e32 = ggx_d(dot(n_2, h_3), dot(c_6, c_6), alpha_3);
+    vec3 c_7 = cross(n_2, h_3);
+    float _e32 = ggx_d(dot(n_2, h_3), dot(c_7, c_7), alpha_3);
     vec3 _e34 = specular_fresnel(base_2, metallic_2, f0_d_2, f90_d_2, dot(v_1, h_3));
     float _e35 = smith_visibility(n_l_1, n_v_2, alpha_3);
     return (_e34 * (_e32 * _e35));
@@ -495,8 +517,8 @@ float cone_cos_of(vec3 v_3, float d2_4, float a_3, vec3 d) {
     if (_e21) {
         return 1.0;
     }
-    vec3 c_7 = cross(v_3, d);
-    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_7, c_7)) * a_3)) / d2_4), 1.0);
+    vec3 c_8 = cross(v_3, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_8, c_8)) * a_3)) / d2_4), 1.0);
 }
 
 float cone_cos_toward(vec3 center_2, float radius_2, vec3 p_2, vec3 d_1) {
@@ -577,6 +599,34 @@ float cone_weight(vec3 center_6, float radius_6, float phi_3, vec3 axis_4, float
     return _e22;
 }
 
+float shadow_margin(float len) {
+    return (0.0001 * len);
+}
+
+float ray_inverse(float x_4) {
+    return (1.0 / ((abs(x_4) < 1e-30) ? 1e-30 : x_4));
+}
+
+vec3 ray_inverse3_(vec3 d_2) {
+    float _e2 = ray_inverse(d_2.x);
+    float _e4 = ray_inverse(d_2.y);
+    float _e6 = ray_inverse(d_2.z);
+    return vec3(_e2, _e4, _e6);
+}
+
+float ray_aabb(vec3 o, vec3 inv_d, vec3 bmin, vec3 bmax, float t_max) {
+    vec3 t0_ = ((bmin - o) * inv_d);
+    vec3 t1_ = ((bmax - o) * inv_d);
+    vec3 lo = min(t0_, t1_);
+    vec3 hi = max(t0_, t1_);
+    float t_in = max(max(lo.x, lo.y), max(lo.z, 0.0));
+    float t_out = min(min(hi.x, hi.y), min(hi.z, t_max));
+    if ((t_in <= t_out)) {
+        return t_in;
+    }
+    return -1.0;
+}
+
 vec3 triangle_normal(vec3 a_4, vec3 b_3, vec3 c_3) {
     bool local_12 = false;
     vec3 n_11 = cross((b_3 - a_4), (c_3 - a_4));
@@ -591,6 +641,53 @@ vec3 triangle_normal(vec3 a_4, vec3 b_3, vec3 c_3) {
         return vec3(0.0, 0.0, 0.0);
     }
     return (n_11 / vec3(sqrt(l2_)));
+}
+
+float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_5, vec3 b_4, vec3 c_4, float t_min, float t_max_1) {
+    bool local_13 = false;
+    bool local_14 = false;
+    bool local_15 = false;
+    vec3 e1_ = (b_4 - a_5);
+    vec3 e2_ = (c_4 - a_5);
+    vec3 p_7 = cross(d_3, e2_);
+    float det = dot(e1_, p_7);
+    if ((abs(det) <= 0.0)) {
+        return -1.0;
+    }
+    float inv_1 = (1.0 / det);
+    vec3 s_3 = (o_1 - a_5);
+    float u_3 = (dot(s_3, p_7) * inv_1);
+    if (!((u_3 < 0.0))) {
+        local_13 = (u_3 > 1.0);
+    } else {
+        local_13 = true;
+    }
+    bool _e28 = local_13;
+    if (_e28) {
+        return -1.0;
+    }
+    vec3 q = cross(s_3, e1_);
+    float v_11 = (dot(d_3, q) * inv_1);
+    if (!((v_11 < 0.0))) {
+        local_14 = ((u_3 + v_11) > 1.0);
+    } else {
+        local_14 = true;
+    }
+    bool _e42 = local_14;
+    if (_e42) {
+        return -1.0;
+    }
+    float t_3 = (dot(e2_, q) * inv_1);
+    if ((t_3 > t_min)) {
+        local_15 = (t_3 < t_max_1);
+    } else {
+        local_15 = false;
+    }
+    bool _e51 = local_15;
+    if (_e51) {
+        return t_3;
+    }
+    return -1.0;
 }
 
 vec3 light_intensity(GpuLight l_2, vec3 w_4) {
@@ -614,12 +711,94 @@ vec3 light_point(GpuLight l_3, float u1_1, float u2_1) {
     return l_3.p0_;
 }
 
-bool occluded(vec3 a_5, vec3 b_4) {
-    return false;
+GeoHit trace(vec3 o_2, vec3 d_4, float t_min_1, float t_max_2, bool any_hit) {
+    GeoHit hit = GeoHit(0.0, 0u);
+    uint stack[64] = uint[64](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
+    uint sp = 0u;
+    uint node_2 = 0u;
+    uint i = 0u;
+    hit.t = t_max_2;
+    hit.tri = NO_LIGHT;
+    if ((uint(_group_1_binding_6_cs.length()) == 0u)) {
+        GeoHit _e13 = hit;
+        return _e13;
+    }
+    vec3 _e14 = ray_inverse3_(d_4);
+    while(true) {
+        uint _e21 = node_2;
+        GpuGeoNode n_12 = _group_1_binding_6_cs[_e21];
+        float _e27 = hit.t;
+        float _e28 = ray_aabb(o_2, _e14, n_12.bmin, n_12.bmax, _e27);
+        if ((_e28 >= 0.0)) {
+            if ((n_12.count > 0u)) {
+                i = n_12.first;
+                bool loop_init = true;
+                while(true) {
+                    if (!loop_init) {
+                        uint _e58 = i;
+                        i = (_e58 + 1u);
+                    }
+                    loop_init = false;
+                    uint _e36 = i;
+                    if ((_e36 < (n_12.first + n_12.count))) {
+                    } else {
+                        break;
+                    }
+                    {
+                        uint _e42 = i;
+                        GpuTriangle t_4 = _group_1_binding_7_cs[_e42];
+                        float _e49 = hit.t;
+                        float _e50 = ray_triangle(o_2, d_4, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e49);
+                        if ((_e50 > 0.0)) {
+                            hit.t = _e50;
+                            uint _e55 = i;
+                            hit.tri = _e55;
+                            if (any_hit) {
+                                GeoHit _e56 = hit;
+                                return _e56;
+                            }
+                        }
+                    }
+                }
+            } else {
+                uint _e60 = sp;
+                if ((_e60 < 64u)) {
+                    uint _e63 = sp;
+                    stack[_e63] = (n_12.first + 1u);
+                    uint _e68 = sp;
+                    sp = (_e68 + 1u);
+                }
+                node_2 = n_12.first;
+                continue;
+            }
+        }
+        uint _e72 = sp;
+        if ((_e72 == 0u)) {
+            break;
+        }
+        uint _e75 = sp;
+        sp = (_e75 - 1u);
+        uint _e78 = sp;
+        uint _e80 = stack[_e78];
+        node_2 = _e80;
+    }
+    GeoHit _e81 = hit;
+    return _e81;
 }
 
-BshNode bsh_node(uint nodes, uint i) {
-    BshNode _e4 = _group_1_binding_4_cs[i];
+bool occluded(vec3 a_6, vec3 b_5) {
+    vec3 dv = (b_5 - a_6);
+    float len_1 = length(dv);
+    if ((len_1 <= 0.0)) {
+        return false;
+    }
+    float _e7 = shadow_margin(len_1);
+    GeoHit _e12 = trace(a_6, (dv / vec3(len_1)), _e7, (len_1 - _e7), true);
+    return (_e12.tri != NO_LIGHT);
+}
+
+BshNode bsh_node(uint nodes, uint i_1) {
+    BshNode _e4 = _group_1_binding_4_cs[i_1];
     return _e4;
 }
 
@@ -635,152 +814,152 @@ uint bsh_first(uint nodes_2) {
     return BSH_NONE;
 }
 
-float bsh_inner_scale(float a_6, vec3 v_4, float d2_6, vec3 r_5, vec4 rl_2) {
-    float _e5 = cone_cos_of(v_4, d2_6, a_6, r_5);
+float bsh_inner_scale(float a_7, vec3 v_4, float d2_6, vec3 r_5, vec4 rl_2) {
+    float _e5 = cone_cos_of(v_4, d2_6, a_7, r_5);
     float _e8 = range_scale_at(rl_2, (_e5 + 2e-6));
     return _e8;
 }
 
-bool bsh_reaches(BshNode node_2, vec3 x_4, vec3 r_6, vec4 rl_3) {
-    bool local_13 = false;
-    bool local_14 = false;
-    bool _e6 = sphere_contains_point(node_2.center, node_2.radius, x_4);
+bool bsh_reaches(BshNode node_3, vec3 x_5, vec3 r_6, vec4 rl_3) {
+    bool local_16 = false;
+    bool local_17 = false;
+    bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_5);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
-        bool _e20 = sphere_contains_point(node_2.center, (node_2.radius * (rl_3.w * 1.0001)), x_4);
-        local_13 = !(_e20);
+        bool _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001)), x_5);
+        local_16 = !(_e20);
     } else {
-        local_13 = true;
+        local_16 = true;
     }
-    bool _e23 = local_13;
+    bool _e23 = local_16;
     if (_e23) {
         return false;
     }
-    float _e25 = bsh_range_bound(node_2);
-    vec3 v_11 = (x_4 - node_2.center);
-    float d2_9 = dot(v_11, v_11);
-    float reach_max = (node_2.extent + ((rl_3.w * 1.001) * _e25));
+    float _e25 = bsh_range_bound(node_3);
+    vec3 v_12 = (x_5 - node_3.center);
+    float d2_9 = dot(v_12, v_12);
+    float reach_max = (node_3.extent + ((rl_3.w * 1.001) * _e25));
     if ((d2_9 > (reach_max * reach_max))) {
         return false;
     }
-    if ((node_2.child == BSH_NONE)) {
-        float _e43 = range_scale_toward(rl_3, node_2.center, node_2.extent, x_4, r_6);
-        float _e46 = bsh_scaled_radius(node_2, sqrt(_e43));
-        bool _e47 = sphere_contains_point(node_2.center, _e46, x_4);
+    if ((node_3.child == BSH_NONE)) {
+        float _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_5, r_6);
+        float _e46 = bsh_scaled_radius(node_3, sqrt(_e43));
+        bool _e47 = sphere_contains_point(node_3.center, _e46, x_5);
         return _e47;
     }
-    float _e50 = bsh_inner_scale(node_2.extent, -(v_11), d2_9, r_6, rl_3);
+    float _e50 = bsh_inner_scale(node_3.extent, -(v_12), d2_9, r_6, rl_3);
     float s_c = (_e50 * 1.001);
-    float reach = (node_2.extent + (sqrt(s_c) * _e25));
-    if ((d2_9 <= ((node_2.radius * node_2.radius) * s_c))) {
-        local_14 = (d2_9 <= (reach * reach));
+    float reach = (node_3.extent + (sqrt(s_c) * _e25));
+    if ((d2_9 <= ((node_3.radius * node_3.radius) * s_c))) {
+        local_17 = (d2_9 <= (reach * reach));
     } else {
-        local_14 = false;
+        local_17 = false;
     }
-    bool _e67 = local_14;
+    bool _e67 = local_17;
     return _e67;
 }
 
-uint bsh_next_leaf_lobe(uint nodes_3, uint start, vec3 x_5, vec3 r_7, vec4 rl_4) {
-    uint i_1 = 0u;
-    i_1 = start;
+uint bsh_next_leaf_lobe(uint nodes_3, uint start, vec3 x_6, vec3 r_7, vec4 rl_4) {
+    uint i_2 = 0u;
+    i_2 = start;
     while(true) {
-        uint _e6 = i_1;
+        uint _e6 = i_2;
         if ((_e6 != BSH_NONE)) {
         } else {
             break;
         }
         {
-            uint _e9 = i_1;
+            uint _e9 = i_2;
             BshNode _e10 = bsh_node(nodes_3, _e9);
-            bool _e11 = bsh_reaches(_e10, x_5, r_7, rl_4);
+            bool _e11 = bsh_reaches(_e10, x_6, r_7, rl_4);
             if (_e11) {
                 if ((_e10.child == BSH_NONE)) {
-                    uint _e15 = i_1;
+                    uint _e15 = i_2;
                     return _e15;
                 }
-                i_1 = _e10.child;
+                i_2 = _e10.child;
             } else {
-                i_1 = _e10.next;
+                i_2 = _e10.next;
             }
         }
     }
     return BSH_NONE;
 }
 
-Connection connect(uint li, vec3 x_6, vec3 n_7, vec3 ng_1, float s, float w_res, float u1_2, float u2_2, float eps) {
-    Connection c_4 = Connection(vec3(0.0), vec3(0.0), 0.0);
-    bool local_15 = false;
-    c_4.e = vec3(0.0);
+Connection connect(uint li, vec3 x_7, vec3 n_7, vec3 ng_1, float s, float w_res, float u1_2, float u2_2, float eps) {
+    Connection c_5 = Connection(vec3(0.0), vec3(0.0), 0.0);
+    bool local_18 = false;
+    c_5.e = vec3(0.0);
     GpuLight l_4 = _group_1_binding_1_cs[li];
     vec3 _e17 = light_point(l_4, u1_2, u2_2);
-    c_4.y = _e17;
-    vec3 _e20 = c_4.y;
+    c_5.y = _e17;
+    vec3 _e20 = c_5.y;
     float _e23 = _group_1_binding_3_cs[li];
-    float _e25 = connection_cosine(x_6, _e20, n_7, ng_1, (s * _e23));
-    c_4.cos_x = _e25;
-    float _e27 = c_4.cos_x;
+    float _e25 = connection_cosine(x_7, _e20, n_7, ng_1, (s * _e23));
+    c_5.cos_x = _e25;
+    float _e27 = c_5.cos_x;
     if (!((_e27 <= 0.0))) {
-        vec3 _e36 = c_4.y;
-        bool _e37 = occluded((x_6 + (ng_1 * eps)), _e36);
-        local_15 = _e37;
+        vec3 _e36 = c_5.y;
+        bool _e37 = occluded((x_7 + (ng_1 * eps)), _e36);
+        local_18 = _e37;
     } else {
-        local_15 = true;
+        local_18 = true;
     }
-    bool _e39 = local_15;
+    bool _e39 = local_18;
     if (_e39) {
-        Connection _e40 = c_4;
+        Connection _e40 = c_5;
         return _e40;
     }
-    vec3 _e42 = c_4.y;
-    vec3 v_12 = (x_6 - _e42);
-    float d2_10 = dot(v_12, v_12);
-    vec3 _e49 = light_intensity(l_4, (v_12 / vec3(sqrt(d2_10))));
-    float _e51 = c_4.cos_x;
+    vec3 _e42 = c_5.y;
+    vec3 v_13 = (x_7 - _e42);
+    float d2_10 = dot(v_13, v_13);
+    vec3 _e49 = light_intensity(l_4, (v_13 / vec3(sqrt(d2_10))));
+    float _e51 = c_5.cos_x;
     float _e54 = _group_1_binding_2_cs[li];
     float _e56 = connection_factor(_e51, d2_10, (s * _e54), w_res);
-    c_4.e = (_e49 * _e56);
-    Connection _e58 = c_4;
+    c_5.e = (_e49 * _e56);
+    Connection _e58 = c_5;
     return _e58;
 }
 
-float light_range_scale(uint li_1, vec3 x_7, vec3 r_8, vec4 rl_5) {
-    GpuLightCone c_8 = _group_1_binding_5_cs[li_1];
-    float _e9 = range_scale_toward(rl_5, c_8.center, c_8.radius, x_7, r_8);
+float light_range_scale(uint li_1, vec3 x_8, vec3 r_8, vec4 rl_5) {
+    GpuLightCone c_9 = _group_1_binding_5_cs[li_1];
+    float _e9 = range_scale_toward(rl_5, c_9.center, c_9.radius, x_8, r_8);
     return _e9;
 }
 
-float light_weight(uint li_2, vec3 x_8, vec3 n_8, vec3 r_9, vec4 lobe_7, vec4 rl_6) {
-    GpuLightCone c_9 = _group_1_binding_5_cs[li_2];
-    float _e15 = light_range_scale(li_2, x_8, r_9, rl_6);
+float light_weight(uint li_2, vec3 x_9, vec3 n_8, vec3 r_9, vec4 lobe_7, vec4 rl_6) {
+    GpuLightCone c_10 = _group_1_binding_5_cs[li_2];
+    float _e15 = light_range_scale(li_2, x_9, r_9, rl_6);
     float _e18 = _group_1_binding_2_cs[li_2];
-    float _e20 = cone_weight(c_9.center, c_9.radius, c_9.phi, c_9.axis, c_9.cos_o, c_9.cos_e, (_e15 * _e18), x_8, n_8, r_9, lobe_7);
+    float _e20 = cone_weight(c_10.center, c_10.radius, c_10.phi, c_10.axis, c_10.cos_o, c_10.cos_e, (_e15 * _e18), x_9, n_8, r_9, lobe_7);
     return _e20;
 }
 
-WeightedPicks bsh_weighted_collect(vec3 x_9, vec3 n_9, vec3 r_10, vec4 lobe_8, vec4 rl_7, uint h0_) {
+WeightedPicks bsh_weighted_collect(vec3 x_10, vec3 n_9, vec3 r_10, vec4 lobe_8, vec4 rl_7, uint h0_) {
     WeightedPicks picks = WeightedPicks(uint[8](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u), float[8](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0.0, 0u, 0u);
     uint h_1 = 0u;
-    uint b_5 = 0u;
+    uint b_6 = 0u;
     uint s_1 = 0u;
     picks.w_sum = 0.0;
     picks.n = 0u;
     h_1 = h0_;
     uint _e14 = bsh_first(BSH);
-    uint _e15 = bsh_next_leaf_lobe(BSH, _e14, x_9, r_10, rl_7);
-    b_5 = _e15;
-    bool loop_init = true;
+    uint _e15 = bsh_next_leaf_lobe(BSH, _e14, x_10, r_10, rl_7);
+    b_6 = _e15;
+    bool loop_init_1 = true;
     while(true) {
-        if (!loop_init) {
-            uint _e58 = b_5;
+        if (!loop_init_1) {
+            uint _e58 = b_6;
             uint _e61 = _group_1_binding_4_cs[_e58].next;
-            uint _e62 = bsh_next_leaf_lobe(BSH, _e61, x_9, r_10, rl_7);
-            b_5 = _e62;
+            uint _e62 = bsh_next_leaf_lobe(BSH, _e61, x_10, r_10, rl_7);
+            b_6 = _e62;
         }
-        loop_init = false;
-        uint _e17 = b_5;
+        loop_init_1 = false;
+        uint _e17 = b_6;
         if ((_e17 != BSH_NONE)) {
         } else {
             break;
@@ -788,20 +967,20 @@ WeightedPicks bsh_weighted_collect(vec3 x_9, vec3 n_9, vec3 r_10, vec4 lobe_8, v
         {
             uint _e21 = picks.n;
             picks.n = (_e21 + 1u);
-            uint _e25 = b_5;
+            uint _e25 = b_6;
             uint li_4 = _group_1_binding_4_cs[_e25].light;
-            float _e29 = light_weight(li_4, x_9, n_9, r_10, lobe_8, rl_7);
+            float _e29 = light_weight(li_4, x_10, n_9, r_10, lobe_8, rl_7);
             if ((_e29 > 0.0)) {
                 float _e33 = picks.w_sum;
                 picks.w_sum = (_e33 + _e29);
                 s_1 = 0u;
-                bool loop_init_1 = true;
+                bool loop_init_2 = true;
                 while(true) {
-                    if (!loop_init_1) {
+                    if (!loop_init_2) {
                         uint _e54 = s_1;
                         s_1 = (_e54 + 1u);
                     }
-                    loop_init_1 = false;
+                    loop_init_2 = false;
                     uint _e37 = s_1;
                     if ((_e37 < K)) {
                     } else {
@@ -833,19 +1012,19 @@ WeightedPicks bsh_weighted_collect(vec3 x_9, vec3 n_9, vec3 r_10, vec4 lobe_8, v
 }
 
 vec4 surface_at(ivec2 texel) {
-    vec4 p_7 = texelFetch(_group_0_binding_1_cs, texel, 0);
-    return ((p_7.w > 0.0) ? vec4(p_7.xyz, 1.0) : vec4(0.0));
+    vec4 p_8 = texelFetch(_group_0_binding_1_cs, texel, 0);
+    return ((p_8.w > 0.0) ? vec4(p_8.xyz, 1.0) : vec4(0.0));
 }
 
-Shaded shade_pick(uint li_3, vec3 x_10, vec3 n_10, vec3 r_11, vec4 rl_8, Material m_1, float w_5, float u1_3, float u2_3) {
+Shaded shade_pick(uint li_3, vec3 x_11, vec3 n_10, vec3 r_11, vec4 rl_8, Material m_1, float w_5, float u1_3, float u2_3, float eps_1) {
     Shaded s_2 = Shaded(vec3(0.0), vec3(0.0), vec3(0.0));
-    float _e10 = light_range_scale(li_3, x_10, r_11, rl_8);
-    Connection _e12 = connect(li_3, x_10, n_10, n_10, _e10, w_5, u1_3, u2_3, 0.0);
+    float _e11 = light_range_scale(li_3, x_11, r_11, rl_8);
+    Connection _e12 = connect(li_3, x_11, n_10, n_10, _e11, w_5, u1_3, u2_3, eps_1);
     s_2.e = _e12.e;
     s_2.diffuse = vec3(0.0);
     s_2.specular = vec3(0.0);
     if ((_e12.cos_x > 0.0)) {
-        vec3 l_5 = normalize((_e12.y - x_10));
+        vec3 l_5 = normalize((_e12.y - x_11));
         vec3 _e32 = _group_0_binding_0_cs.f0_d;
         float _e35 = _group_0_binding_0_cs.f90_d;
         float _e37 = half_cosine(m_1.v, l_5);
@@ -860,8 +1039,8 @@ Shaded shade_pick(uint li_3, vec3 x_10, vec3 n_10, vec3 r_11, vec4 rl_8, Materia
     return _e55;
 }
 
-Shaded add(Shaded a_7, Shaded b_6) {
-    return Shaded((a_7.e + b_6.e), (a_7.diffuse + b_6.diffuse), (a_7.specular + b_6.specular));
+Shaded add(Shaded a_8, Shaded b_7) {
+    return Shaded((a_8.e + b_7.e), (a_8.diffuse + b_7.diffuse), (a_8.specular + b_7.specular));
 }
 
 void main() {
@@ -901,77 +1080,80 @@ void main() {
         imageStore(_group_0_binding_6_cs, texel_1, vec4(0.0));
         return;
     }
-    vec3 x_11 = _e21.xyz;
-    vec3 n_12 = (nn / vec3(sqrt(len2_1)));
-    r = n_12;
+    vec3 x_12 = _e21.xyz;
+    vec3 n_13 = (nn / vec3(sqrt(len2_1)));
+    r = n_13;
     vec4 mr = texelFetch(_group_0_binding_5_cs, texel_1, 0);
     vec4 _e61 = texelFetch(_group_0_binding_4_cs, texel_1, 0);
     float _e67 = ggx_alpha(clamp(mr.y, 0.0, 1.0));
     vec3 _e70 = _group_0_binding_0_cs.eye;
-    m = Material(_e61.xyz, clamp(mr.z, 0.0, 1.0), _e67, normalize((_e70 - x_11)), mr.y, 0.0);
+    m = Material(_e61.xyz, clamp(mr.z, 0.0, 1.0), _e67, normalize((_e70 - x_12)), mr.y, 0.0);
     vec3 _e77 = m.base;
     float _e79 = m.metallic;
     vec3 _e82 = _group_0_binding_0_cs.f0_d;
     float _e85 = _group_0_binding_0_cs.f90_d;
     float _e87 = m.alpha;
     vec3 _e89 = m.v;
-    vec4 _e91 = receiver_lobe(_e77, _e79, _e82, _e85, _e87, dot(n_12, _e89));
+    vec4 _e91 = receiver_lobe(_e77, _e79, _e82, _e85, _e87, dot(n_13, _e89));
     lobe = _e91;
     vec3 _e93 = m.v;
-    vec3 _e94 = mirror_dir(n_12, _e93);
+    vec3 _e94 = mirror_dir(n_13, _e93);
     r = _e94;
     vec4 _e95 = lobe;
     vec4 _e96 = range_lobe(_e95);
-    uint _e99 = _group_0_binding_0_cs.seed;
-    uint _e103 = _group_0_binding_0_cs.width;
-    uint _e109 = _group_0_binding_0_cs.frame;
-    uint _e110 = point_stream(_e99, ((gid.y * _e103) + gid.x), _e109);
-    uint _e111 = pick_stream(_e110);
-    h = _e111;
-    vec3 _e121 = r;
-    vec4 _e122 = lobe;
-    WeightedPicks _e123 = bsh_weighted_collect(x_11, n_12, _e121, _e122, _e96, _e110);
-    if ((_e123.w_sum > 0.0)) {
-        bool loop_init_2 = true;
+    float _e99 = _group_0_binding_0_cs.shadow_offset;
+    vec3 _e102 = _group_0_binding_0_cs.eye;
+    float eps_2 = (_e99 * length((_e102 - x_12)));
+    uint _e108 = _group_0_binding_0_cs.seed;
+    uint _e112 = _group_0_binding_0_cs.width;
+    uint _e118 = _group_0_binding_0_cs.frame;
+    uint _e119 = point_stream(_e108, ((gid.y * _e112) + gid.x), _e118);
+    uint _e120 = pick_stream(_e119);
+    h = _e120;
+    vec3 _e130 = r;
+    vec4 _e131 = lobe;
+    WeightedPicks _e132 = bsh_weighted_collect(x_12, n_13, _e130, _e131, _e96, _e119);
+    if ((_e132.w_sum > 0.0)) {
+        bool loop_init_3 = true;
         while(true) {
-            if (!loop_init_2) {
-                uint _e155 = k;
-                k = (_e155 + 1u);
+            if (!loop_init_3) {
+                uint _e164 = k;
+                k = (_e164 + 1u);
             }
-            loop_init_2 = false;
-            uint _e129 = k;
-            if ((_e129 < K)) {
+            loop_init_3 = false;
+            uint _e138 = k;
+            if ((_e138 < K)) {
             } else {
                 break;
             }
             {
-                uint _e132 = h;
-                uint _e133 = pcg_hash(_e132);
-                h = _e133;
-                uint _e134 = h;
-                float _e135 = xi_from_bits(_e134);
-                uint _e136 = h;
-                uint _e137 = pcg_hash(_e136);
-                h = _e137;
-                Shaded _e138 = t;
-                uint _e140 = k;
-                vec3 _e142 = r;
-                Material _e143 = m;
-                uint _e146 = k;
-                float _e149 = weighted_pick_weight(_e123.w_sum, _e123.w[_e146], K);
-                uint _e150 = h;
-                float _e151 = xi_from_bits(_e150);
-                Shaded _e152 = shade_pick(_e123.light[_e140], x_11, n_12, _e142, _e96, _e143, _e149, _e135, _e151);
-                Shaded _e153 = add(_e138, _e152);
-                t = _e153;
+                uint _e141 = h;
+                uint _e142 = pcg_hash(_e141);
+                h = _e142;
+                uint _e143 = h;
+                float _e144 = xi_from_bits(_e143);
+                uint _e145 = h;
+                uint _e146 = pcg_hash(_e145);
+                h = _e146;
+                Shaded _e147 = t;
+                uint _e149 = k;
+                vec3 _e151 = r;
+                Material _e152 = m;
+                uint _e155 = k;
+                float _e158 = weighted_pick_weight(_e132.w_sum, _e132.w[_e155], K);
+                uint _e159 = h;
+                float _e160 = xi_from_bits(_e159);
+                Shaded _e161 = shade_pick(_e132.light[_e149], x_12, n_13, _e151, _e96, _e152, _e158, _e144, _e160, eps_2);
+                Shaded _e162 = add(_e147, _e161);
+                t = _e162;
             }
         }
     }
-    uint count = _e123.n;
-    vec3 _e160 = t.e;
-    imageStore(_group_0_binding_3_cs, texel_1, vec4(_e160, float(count)));
-    vec3 _e165 = t.specular;
-    imageStore(_group_0_binding_6_cs, texel_1, vec4(_e165, 0.0));
+    uint count = _e132.n;
+    vec3 _e169 = t.e;
+    imageStore(_group_0_binding_3_cs, texel_1, vec4(_e169, float(count)));
+    vec3 _e174 = t.specular;
+    imageStore(_group_0_binding_6_cs, texel_1, vec4(_e174, 0.0));
     return;
 }
 

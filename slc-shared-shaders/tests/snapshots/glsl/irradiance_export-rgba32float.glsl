@@ -11,7 +11,7 @@ struct ViewParams {
     vec3 eye;
     uint width;
     uint height;
-    uint pad0_;
+    float shadow_offset;
     uint seed;
     uint frame;
     vec3 f0_d;

@@ -17,7 +17,7 @@ struct ViewParams {
     float3 eye;
     uint width;
     uint height;
-    uint pad0_;
+    float shadow_offset;
     uint seed;
     uint frame;
     float3 f0_d;
@@ -922,11 +922,11 @@ float4 surface_at(int2 texel)
     return ((p_2.w > 0.0) ? float4(p_2.xyz, 1.0) : (0.0).xxxx);
 }
 
-Shaded shade_pick(uint li_1, float3 x_12, float3 n_8, float3 r_7, float4 rl_6, Material m_1, float w_4, float u1_3, float u2_3)
+Shaded shade_pick(uint li_1, float3 x_12, float3 n_8, float3 r_7, float4 rl_6, Material m_1, float w_4, float u1_3, float u2_3, float eps_1)
 {
     Shaded s_1 = (Shaded)0;
 
-    const Connection _e12 = connect(li_1, x_12, n_8, n_8, 1.0, w_4, u1_3, u2_3, 0.0);
+    const Connection _e12 = connect(li_1, x_12, n_8, n_8, 1.0, w_4, u1_3, u2_3, eps_1);
     s_1.e = _e12.e;
     s_1.diffuse = (0.0).xxx;
     s_1.specular = (0.0).xxx;
@@ -992,52 +992,55 @@ void main(uint3 gid : SV_DispatchThreadID)
     r = n_10;
     float4 _e53 = lobe;
     const float4 _e54 = range_lobe(_e53);
-    uint _e57 = view.seed;
-    uint _e61 = view.width;
-    uint _e67 = view.frame;
-    const uint _e68 = point_stream(_e57, ((gid.y * _e61) + gid.x), _e67);
-    const uint _e69 = pick_stream(_e68);
-    h = _e69;
-    float3 _e79 = r;
-    const Picks _e80 = bsh_collect(x_13, _e79, _e54, _e68);
-    const float _e83 = reservoir_weight(_e80.n, K);
+    float _e57 = view.shadow_offset;
+    float3 _e60 = view.eye;
+    float eps_2 = (_e57 * length((_e60 - x_13)));
+    uint _e66 = view.seed;
+    uint _e70 = view.width;
+    uint _e76 = view.frame;
+    const uint _e77 = point_stream(_e66, ((gid.y * _e70) + gid.x), _e76);
+    const uint _e78 = pick_stream(_e77);
+    h = _e78;
+    float3 _e88 = r;
+    const Picks _e89 = bsh_collect(x_13, _e88, _e54, _e77);
+    const float _e92 = reservoir_weight(_e89.n, K);
     uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
     bool loop_init_1 = true;
     while(true) {
         if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
         loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e108 = k;
-            k = (_e108 + 1u);
+            uint _e117 = k;
+            k = (_e117 + 1u);
         }
         loop_init_1 = false;
-        uint _e86 = k;
-        if ((_e86 < min(_e80.n, K))) {
+        uint _e95 = k;
+        if ((_e95 < min(_e89.n, K))) {
         } else {
             break;
         }
         {
-            uint _e91 = h;
-            const uint _e92 = pcg_hash(_e91);
-            h = _e92;
-            uint _e93 = h;
-            const float _e94 = xi_from_bits(_e93);
-            uint _e95 = h;
-            const uint _e96 = pcg_hash(_e95);
-            h = _e96;
-            Shaded _e97 = t;
-            uint _e99 = k;
-            float3 _e101 = r;
-            Material _e102 = m;
-            uint _e103 = h;
-            const float _e104 = xi_from_bits(_e103);
-            const Shaded _e105 = shade_pick(_e80.light[min(uint(_e99), 7u)], x_13, n_10, _e101, _e54, _e102, _e83, _e94, _e104);
-            const Shaded _e106 = add(_e97, _e105);
-            t = _e106;
+            uint _e100 = h;
+            const uint _e101 = pcg_hash(_e100);
+            h = _e101;
+            uint _e102 = h;
+            const float _e103 = xi_from_bits(_e102);
+            uint _e104 = h;
+            const uint _e105 = pcg_hash(_e104);
+            h = _e105;
+            Shaded _e106 = t;
+            uint _e108 = k;
+            float3 _e110 = r;
+            Material _e111 = m;
+            uint _e112 = h;
+            const float _e113 = xi_from_bits(_e112);
+            const Shaded _e114 = shade_pick(_e89.light[min(uint(_e108), 7u)], x_13, n_10, _e110, _e54, _e111, _e92, _e103, _e113, eps_2);
+            const Shaded _e115 = add(_e106, _e114);
+            t = _e115;
         }
     }
-    uint count = _e80.n;
-    float3 _e113 = t.e;
-    out_tex[texel_1] = float4(_e113, float(count));
+    uint count = _e89.n;
+    float3 _e122 = t.e;
+    out_tex[texel_1] = float4(_e122, float(count));
     return;
 }

@@ -20,6 +20,22 @@ struct GpuLightCone {
     uint pad;
 };
 
+struct GpuGeoNode {
+    float3 bmin;
+    uint first;
+    float3 bmax;
+    uint count;
+};
+
+struct GpuTriangle {
+    float3 v0_;
+    uint material;
+    float3 v1_;
+    uint light;
+    float3 v2_;
+    uint pad;
+};
+
 struct ViewParams {
     float4 c0_;
     float4 c1_;
@@ -28,7 +44,7 @@ struct ViewParams {
     float3 eye;
     uint width;
     uint height;
-    uint pad0_;
+    float shadow_offset;
     uint seed;
     uint frame;
     float3 f0_d;
@@ -42,6 +58,11 @@ struct BshNode {
     uint next;
     uint light;
     float extent;
+};
+
+struct GeoHit {
+    float t;
+    uint tri;
 };
 
 struct Connection {
@@ -127,6 +148,8 @@ static const float TEMPORAL_MIN_WEIGHT = 0.01;
 static const uint K = 8u;
 static const uint BSH = 0u;
 
+ByteAddressBuffer geo_nodes : register(t6, space1);
+ByteAddressBuffer geo_tris : register(t7, space1);
 cbuffer view : register(b0) { ViewParams view; }
 Texture2D<float4> depth_tex : register(t1);
 Texture2D<float4> normal_tex : register(t2);
@@ -410,8 +433,8 @@ float cone_cos_of(float3 v, float d2_4, float a_2, float3 d)
     if (_e21) {
         return 1.0;
     }
-    float3 c_2 = cross(v, d);
-    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_2, c_2)) * a_2)) / d2_4), 1.0);
+    float3 c_3 = cross(v, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_3, c_3)) * a_2)) / d2_4), 1.0);
 }
 
 float cone_cos_toward(float3 center_2, float radius_2, float3 p_2, float3 d_1)
@@ -521,6 +544,87 @@ bool finite3_(float3 v_1)
     return _e20;
 }
 
+float shadow_margin(float len)
+{
+    return (0.0001 * len);
+}
+
+float ray_inverse(float x_4)
+{
+    return (1.0 / ((abs(x_4) < 1e-30) ? 1e-30 : x_4));
+}
+
+float3 ray_inverse3_(float3 d_2)
+{
+    const float _e2 = ray_inverse(d_2.x);
+    const float _e4 = ray_inverse(d_2.y);
+    const float _e6 = ray_inverse(d_2.z);
+    return float3(_e2, _e4, _e6);
+}
+
+float ray_aabb(float3 o, float3 inv_d, float3 bmin, float3 bmax, float t_max)
+{
+    float3 t0_ = ((bmin - o) * inv_d);
+    float3 t1_ = ((bmax - o) * inv_d);
+    float3 lo = min(t0_, t1_);
+    float3 hi = max(t0_, t1_);
+    float t_in = max(max(lo.x, lo.y), max(lo.z, 0.0));
+    float t_out = min(min(hi.x, hi.y), min(hi.z, t_max));
+    if ((t_in <= t_out)) {
+        return t_in;
+    }
+    return -1.0;
+}
+
+float ray_triangle(float3 o_1, float3 d_3, float3 a_3, float3 b_2, float3 c_1, float t_min, float t_max_1)
+{
+    bool local_9 = (bool)0;
+    bool local_10 = (bool)0;
+    bool local_11 = (bool)0;
+
+    float3 e1_ = (b_2 - a_3);
+    float3 e2_ = (c_1 - a_3);
+    float3 p_7 = cross(d_3, e2_);
+    float det = dot(e1_, p_7);
+    if ((abs(det) <= 0.0)) {
+        return -1.0;
+    }
+    float inv = (1.0 / det);
+    float3 s_3 = (o_1 - a_3);
+    float u_3 = (dot(s_3, p_7) * inv);
+    if (!((u_3 < 0.0))) {
+        local_9 = (u_3 > 1.0);
+    } else {
+        local_9 = true;
+    }
+    bool _e28 = local_9;
+    if (_e28) {
+        return -1.0;
+    }
+    float3 q = cross(s_3, e1_);
+    float v_9 = (dot(d_3, q) * inv);
+    if (!((v_9 < 0.0))) {
+        local_10 = ((u_3 + v_9) > 1.0);
+    } else {
+        local_10 = true;
+    }
+    bool _e42 = local_10;
+    if (_e42) {
+        return -1.0;
+    }
+    float t_4 = (dot(e2_, q) * inv);
+    if ((t_4 > t_min)) {
+        local_11 = (t_4 < t_max_1);
+    } else {
+        local_11 = false;
+    }
+    bool _e51 = local_11;
+    if (_e51) {
+        return t_4;
+    }
+    return -1.0;
+}
+
 float3 light_intensity(GpuLight l, float3 w_3)
 {
     switch(l.kind) {
@@ -542,9 +646,129 @@ float3 light_point(GpuLight l_1, float u1_, float u2_)
     return l_1.p0_;
 }
 
-bool occluded(float3 a_3, float3 b_2)
+uint NagaBufferLength(ByteAddressBuffer buffer)
 {
-    return false;
+    uint ret;
+    buffer.GetDimensions(ret);
+    return ret;
+}
+
+GpuGeoNode ConstructGpuGeoNode(float3 arg0, uint arg1, float3 arg2, uint arg3) {
+    GpuGeoNode ret = (GpuGeoNode)0;
+    ret.bmin = arg0;
+    ret.first = arg1;
+    ret.bmax = arg2;
+    ret.count = arg3;
+    return ret;
+}
+
+GpuTriangle ConstructGpuTriangle(float3 arg0, uint arg1, float3 arg2, uint arg3, float3 arg4, uint arg5) {
+    GpuTriangle ret = (GpuTriangle)0;
+    ret.v0_ = arg0;
+    ret.material = arg1;
+    ret.v1_ = arg2;
+    ret.light = arg3;
+    ret.v2_ = arg4;
+    ret.pad = arg5;
+    return ret;
+}
+
+GeoHit trace(float3 o_2, float3 d_4, float t_min_1, float t_max_2, bool any_hit)
+{
+    GeoHit hit = (GeoHit)0;
+    uint stack[64] = (uint[64])0;
+    uint sp = 0u;
+    uint node_2 = 0u;
+    uint i = (uint)0;
+
+    hit.t = t_max_2;
+    hit.tri = NO_LIGHT;
+    if ((((NagaBufferLength(geo_nodes) - 0) / 32) == 0u)) {
+        GeoHit _e13 = hit;
+        const GeoHit geohit = _e13;
+        return geohit;
+    }
+    const float3 _e14 = ray_inverse3_(d_4);
+    uint2 loop_bound = uint2(4294967295u, 4294967295u);
+    while(true) {
+        if (all(loop_bound == uint2(0u, 0u))) { break; }
+        loop_bound -= uint2(loop_bound.y == 0u, 1u);
+        uint _e21 = node_2;
+        GpuGeoNode n_8 = ConstructGpuGeoNode(asfloat(geo_nodes.Load3(_e21*32+0)), asuint(geo_nodes.Load(_e21*32+12)), asfloat(geo_nodes.Load3(_e21*32+16)), asuint(geo_nodes.Load(_e21*32+28)));
+        float _e27 = hit.t;
+        const float _e28 = ray_aabb(o_2, _e14, n_8.bmin, n_8.bmax, _e27);
+        if ((_e28 >= 0.0)) {
+            if ((n_8.count > 0u)) {
+                i = n_8.first;
+                uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
+                bool loop_init = true;
+                while(true) {
+                    if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
+                    loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+                    if (!loop_init) {
+                        uint _e58 = i;
+                        i = (_e58 + 1u);
+                    }
+                    loop_init = false;
+                    uint _e36 = i;
+                    if ((_e36 < (n_8.first + n_8.count))) {
+                    } else {
+                        break;
+                    }
+                    {
+                        uint _e42 = i;
+                        GpuTriangle t_5 = ConstructGpuTriangle(asfloat(geo_tris.Load3(_e42*48+0)), asuint(geo_tris.Load(_e42*48+12)), asfloat(geo_tris.Load3(_e42*48+16)), asuint(geo_tris.Load(_e42*48+28)), asfloat(geo_tris.Load3(_e42*48+32)), asuint(geo_tris.Load(_e42*48+44)));
+                        float _e49 = hit.t;
+                        const float _e50 = ray_triangle(o_2, d_4, t_5.v0_, t_5.v1_, t_5.v2_, t_min_1, _e49);
+                        if ((_e50 > 0.0)) {
+                            hit.t = _e50;
+                            uint _e55 = i;
+                            hit.tri = _e55;
+                            if (any_hit) {
+                                GeoHit _e56 = hit;
+                                const GeoHit geohit_1 = _e56;
+                                return geohit_1;
+                            }
+                        }
+                    }
+                }
+            } else {
+                uint _e60 = sp;
+                if ((_e60 < 64u)) {
+                    uint _e63 = sp;
+                    stack[min(uint(_e63), 63u)] = (n_8.first + 1u);
+                    uint _e68 = sp;
+                    sp = (_e68 + 1u);
+                }
+                node_2 = n_8.first;
+                continue;
+            }
+        }
+        uint _e72 = sp;
+        if ((_e72 == 0u)) {
+            break;
+        }
+        uint _e75 = sp;
+        sp = (_e75 - 1u);
+        uint _e78 = sp;
+        uint _e80 = stack[min(uint(_e78), 63u)];
+        node_2 = _e80;
+    }
+    GeoHit _e81 = hit;
+    const GeoHit geohit_2 = _e81;
+    return geohit_2;
+}
+
+bool occluded(float3 a_4, float3 b_3)
+{
+    float3 dv = (b_3 - a_4);
+    float len_1 = length(dv);
+    if ((len_1 <= 0.0)) {
+        return false;
+    }
+    const float _e7 = shadow_margin(len_1);
+    const GeoHit _e12 = trace(a_4, (dv / (len_1).xxx), _e7, (len_1 - _e7), true);
+    return (_e12.tri != NO_LIGHT);
 }
 
 BshNode ConstructBshNode(float3 arg0, float arg1, uint arg2, uint arg3, uint arg4, float arg5) {
@@ -558,18 +782,11 @@ BshNode ConstructBshNode(float3 arg0, float arg1, uint arg2, uint arg3, uint arg
     return ret;
 }
 
-BshNode bsh_node(uint nodes, uint i)
+BshNode bsh_node(uint nodes, uint i_1)
 {
-    BshNode _e4 = ConstructBshNode(asfloat(bsh_nodes.Load3(i*32+0)), asfloat(bsh_nodes.Load(i*32+12)), asuint(bsh_nodes.Load(i*32+16)), asuint(bsh_nodes.Load(i*32+20)), asuint(bsh_nodes.Load(i*32+24)), asfloat(bsh_nodes.Load(i*32+28)));
+    BshNode _e4 = ConstructBshNode(asfloat(bsh_nodes.Load3(i_1*32+0)), asfloat(bsh_nodes.Load(i_1*32+12)), asuint(bsh_nodes.Load(i_1*32+16)), asuint(bsh_nodes.Load(i_1*32+20)), asuint(bsh_nodes.Load(i_1*32+24)), asfloat(bsh_nodes.Load(i_1*32+28)));
     const BshNode bshnode = _e4;
     return bshnode;
-}
-
-uint NagaBufferLength(ByteAddressBuffer buffer)
-{
-    uint ret;
-    buffer.GetDimensions(ret);
-    return ret;
 }
 
 uint bsh_count(uint nodes_1)
@@ -586,83 +803,83 @@ uint bsh_first(uint nodes_2)
     return BSH_NONE;
 }
 
-float bsh_inner_scale(float a_4, float3 v_2, float d2_6, float3 r_5, float4 rl_2)
+float bsh_inner_scale(float a_5, float3 v_2, float d2_6, float3 r_5, float4 rl_2)
 {
-    const float _e5 = cone_cos_of(v_2, d2_6, a_4, r_5);
+    const float _e5 = cone_cos_of(v_2, d2_6, a_5, r_5);
     const float _e8 = range_scale_at(rl_2, (_e5 + 2e-6));
     return _e8;
 }
 
-bool bsh_reaches(BshNode node_2, float3 x_4, float3 r_6, float4 rl_3)
+bool bsh_reaches(BshNode node_3, float3 x_5, float3 r_6, float4 rl_3)
 {
-    bool local_9 = (bool)0;
-    bool local_10 = (bool)0;
+    bool local_12 = (bool)0;
+    bool local_13 = (bool)0;
 
-    const bool _e6 = sphere_contains_point(node_2.center_, node_2.radius, x_4);
+    const bool _e6 = sphere_contains_point(node_3.center_, node_3.radius, x_5);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
-        const bool _e20 = sphere_contains_point(node_2.center_, (node_2.radius * (rl_3.w * 1.0001)), x_4);
-        local_9 = !(_e20);
+        const bool _e20 = sphere_contains_point(node_3.center_, (node_3.radius * (rl_3.w * 1.0001)), x_5);
+        local_12 = !(_e20);
     } else {
-        local_9 = true;
+        local_12 = true;
     }
-    bool _e23 = local_9;
+    bool _e23 = local_12;
     if (_e23) {
         return false;
     }
-    const float _e25 = bsh_range_bound(node_2);
-    float3 v_9 = (x_4 - node_2.center_);
-    float d2_9 = dot(v_9, v_9);
-    float reach_max = (node_2.extent + ((rl_3.w * 1.001) * _e25));
+    const float _e25 = bsh_range_bound(node_3);
+    float3 v_10 = (x_5 - node_3.center_);
+    float d2_9 = dot(v_10, v_10);
+    float reach_max = (node_3.extent + ((rl_3.w * 1.001) * _e25));
     if ((d2_9 > (reach_max * reach_max))) {
         return false;
     }
-    if ((node_2.child == BSH_NONE)) {
-        const float _e43 = range_scale_toward(rl_3, node_2.center_, node_2.extent, x_4, r_6);
-        const float _e46 = bsh_scaled_radius(node_2, sqrt(_e43));
-        const bool _e47 = sphere_contains_point(node_2.center_, _e46, x_4);
+    if ((node_3.child == BSH_NONE)) {
+        const float _e43 = range_scale_toward(rl_3, node_3.center_, node_3.extent, x_5, r_6);
+        const float _e46 = bsh_scaled_radius(node_3, sqrt(_e43));
+        const bool _e47 = sphere_contains_point(node_3.center_, _e46, x_5);
         return _e47;
     }
-    const float _e50 = bsh_inner_scale(node_2.extent, -(v_9), d2_9, r_6, rl_3);
+    const float _e50 = bsh_inner_scale(node_3.extent, -(v_10), d2_9, r_6, rl_3);
     float s_c = (_e50 * 1.001);
-    float reach = (node_2.extent + (sqrt(s_c) * _e25));
-    if ((d2_9 <= ((node_2.radius * node_2.radius) * s_c))) {
-        local_10 = (d2_9 <= (reach * reach));
+    float reach = (node_3.extent + (sqrt(s_c) * _e25));
+    if ((d2_9 <= ((node_3.radius * node_3.radius) * s_c))) {
+        local_13 = (d2_9 <= (reach * reach));
     } else {
-        local_10 = false;
+        local_13 = false;
     }
-    bool _e67 = local_10;
+    bool _e67 = local_13;
     return _e67;
 }
 
-uint bsh_next_leaf_lobe(uint nodes_3, uint start, float3 x_5, float3 r_7, float4 rl_4)
+uint bsh_next_leaf_lobe(uint nodes_3, uint start, float3 x_6, float3 r_7, float4 rl_4)
 {
-    uint i_1 = (uint)0;
+    uint i_2 = (uint)0;
 
-    i_1 = start;
-    uint2 loop_bound = uint2(4294967295u, 4294967295u);
+    i_2 = start;
+    uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
     while(true) {
-        if (all(loop_bound == uint2(0u, 0u))) { break; }
-        loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        uint _e6 = i_1;
+        if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
+        loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
+        uint _e6 = i_2;
         if ((_e6 != BSH_NONE)) {
         } else {
             break;
         }
         {
-            uint _e9 = i_1;
+            uint _e9 = i_2;
             const BshNode _e10 = bsh_node(nodes_3, _e9);
-            const bool _e11 = bsh_reaches(_e10, x_5, r_7, rl_4);
+            const bool _e11 = bsh_reaches(_e10, x_6, r_7, rl_4);
             if (_e11) {
                 if ((_e10.child == BSH_NONE)) {
-                    uint _e15 = i_1;
+                    uint _e15 = i_2;
                     return _e15;
                 }
-                i_1 = _e10.child;
+                i_2 = _e10.child;
             } else {
-                i_1 = _e10.next;
+                i_2 = _e10.next;
             }
         }
     }
@@ -682,42 +899,42 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
     return ret;
 }
 
-Connection connect(uint li, float3 x_6, float3 n_4, float3 ng_1, float s, float w_res, float u1_1, float u2_1, float eps)
+Connection connect(uint li, float3 x_7, float3 n_4, float3 ng_1, float s, float w_res, float u1_1, float u2_1, float eps)
 {
-    Connection c_1 = (Connection)0;
-    bool local_11 = (bool)0;
+    Connection c_2 = (Connection)0;
+    bool local_14 = (bool)0;
 
-    c_1.e = (0.0).xxx;
+    c_2.e = (0.0).xxx;
     GpuLight l_2 = ConstructGpuLight(asfloat(lights.Load3(li*64+0)), asuint(lights.Load(li*64+12)), asfloat(lights.Load3(li*64+16)), asfloat(lights.Load(li*64+28)), asfloat(lights.Load3(li*64+32)), asfloat(lights.Load(li*64+44)), asfloat(lights.Load3(li*64+48)), asuint(lights.Load(li*64+60)));
     const float3 _e17 = light_point(l_2, u1_1, u2_1);
-    c_1.y = _e17;
-    float3 _e20 = c_1.y;
+    c_2.y = _e17;
+    float3 _e20 = c_2.y;
     float _e23 = asfloat(r2_3.Load(li*4));
-    const float _e25 = connection_cosine(x_6, _e20, n_4, ng_1, (s * _e23));
-    c_1.cos_x = _e25;
-    float _e27 = c_1.cos_x;
+    const float _e25 = connection_cosine(x_7, _e20, n_4, ng_1, (s * _e23));
+    c_2.cos_x = _e25;
+    float _e27 = c_2.cos_x;
     if (!((_e27 <= 0.0))) {
-        float3 _e36 = c_1.y;
-        const bool _e37 = occluded((x_6 + (ng_1 * eps)), _e36);
-        local_11 = _e37;
+        float3 _e36 = c_2.y;
+        const bool _e37 = occluded((x_7 + (ng_1 * eps)), _e36);
+        local_14 = _e37;
     } else {
-        local_11 = true;
+        local_14 = true;
     }
-    bool _e39 = local_11;
+    bool _e39 = local_14;
     if (_e39) {
-        Connection _e40 = c_1;
+        Connection _e40 = c_2;
         const Connection connection = _e40;
         return connection;
     }
-    float3 _e42 = c_1.y;
-    float3 v_10 = (x_6 - _e42);
-    float d2_10 = dot(v_10, v_10);
-    const float3 _e49 = light_intensity(l_2, (v_10 / (sqrt(d2_10)).xxx));
-    float _e51 = c_1.cos_x;
+    float3 _e42 = c_2.y;
+    float3 v_11 = (x_7 - _e42);
+    float d2_10 = dot(v_11, v_11);
+    const float3 _e49 = light_intensity(l_2, (v_11 / (sqrt(d2_10)).xxx));
+    float _e51 = c_2.cos_x;
     float _e54 = asfloat(rt2_4.Load(li*4));
     const float _e56 = connection_factor(_e51, d2_10, (s * _e54), w_res);
-    c_1.e = (_e49 * _e56);
-    Connection _e58 = c_1;
+    c_2.e = (_e49 * _e56);
+    Connection _e58 = c_2;
     const Connection connection_1 = _e58;
     return connection_1;
 }
@@ -735,48 +952,48 @@ GpuLightCone ConstructGpuLightCone(float3 arg0, float arg1, float3 arg2, float a
     return ret;
 }
 
-float light_range_scale(uint li_1, float3 x_7, float3 r_8, float4 rl_5)
+float light_range_scale(uint li_1, float3 x_8, float3 r_8, float4 rl_5)
 {
-    GpuLightCone c_3 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_1*48+0)), asfloat(light_cones.Load(li_1*48+12)), asfloat(light_cones.Load3(li_1*48+16)), asfloat(light_cones.Load(li_1*48+28)), asfloat(light_cones.Load(li_1*48+32)), asfloat(light_cones.Load(li_1*48+36)), asuint(light_cones.Load(li_1*48+40)), asuint(light_cones.Load(li_1*48+44)));
-    const float _e9 = range_scale_toward(rl_5, c_3.center_, c_3.radius, x_7, r_8);
+    GpuLightCone c_4 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_1*48+0)), asfloat(light_cones.Load(li_1*48+12)), asfloat(light_cones.Load3(li_1*48+16)), asfloat(light_cones.Load(li_1*48+28)), asfloat(light_cones.Load(li_1*48+32)), asfloat(light_cones.Load(li_1*48+36)), asuint(light_cones.Load(li_1*48+40)), asuint(light_cones.Load(li_1*48+44)));
+    const float _e9 = range_scale_toward(rl_5, c_4.center_, c_4.radius, x_8, r_8);
     return _e9;
 }
 
-float light_weight(uint li_2, float3 x_8, float3 n_5, float3 r_9, float4 lobe_7, float4 rl_6)
+float light_weight(uint li_2, float3 x_9, float3 n_5, float3 r_9, float4 lobe_7, float4 rl_6)
 {
-    GpuLightCone c_4 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_2*48+0)), asfloat(light_cones.Load(li_2*48+12)), asfloat(light_cones.Load3(li_2*48+16)), asfloat(light_cones.Load(li_2*48+28)), asfloat(light_cones.Load(li_2*48+32)), asfloat(light_cones.Load(li_2*48+36)), asuint(light_cones.Load(li_2*48+40)), asuint(light_cones.Load(li_2*48+44)));
-    const float _e15 = light_range_scale(li_2, x_8, r_9, rl_6);
+    GpuLightCone c_5 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_2*48+0)), asfloat(light_cones.Load(li_2*48+12)), asfloat(light_cones.Load3(li_2*48+16)), asfloat(light_cones.Load(li_2*48+28)), asfloat(light_cones.Load(li_2*48+32)), asfloat(light_cones.Load(li_2*48+36)), asuint(light_cones.Load(li_2*48+40)), asuint(light_cones.Load(li_2*48+44)));
+    const float _e15 = light_range_scale(li_2, x_9, r_9, rl_6);
     float _e18 = asfloat(rt2_4.Load(li_2*4));
-    const float _e20 = cone_weight(c_4.center_, c_4.radius, c_4.phi, c_4.axis, c_4.cos_o, c_4.cos_e, (_e15 * _e18), x_8, n_5, r_9, lobe_7);
+    const float _e20 = cone_weight(c_5.center_, c_5.radius, c_5.phi, c_5.axis, c_5.cos_o, c_5.cos_e, (_e15 * _e18), x_9, n_5, r_9, lobe_7);
     return _e20;
 }
 
-WeightedPicks bsh_weighted_collect(float3 x_9, float3 n_6, float3 r_10, float4 lobe_8, float4 rl_7, uint h0_)
+WeightedPicks bsh_weighted_collect(float3 x_10, float3 n_6, float3 r_10, float4 lobe_8, float4 rl_7, uint h0_)
 {
     WeightedPicks picks = (WeightedPicks)0;
     uint h_1 = (uint)0;
-    uint b_3 = (uint)0;
+    uint b_4 = (uint)0;
     uint s_1 = (uint)0;
 
     picks.w_sum = 0.0;
     picks.n = 0u;
     h_1 = h0_;
     const uint _e14 = bsh_first(BSH);
-    const uint _e15 = bsh_next_leaf_lobe(BSH, _e14, x_9, r_10, rl_7);
-    b_3 = _e15;
-    uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
-    bool loop_init = true;
+    const uint _e15 = bsh_next_leaf_lobe(BSH, _e14, x_10, r_10, rl_7);
+    b_4 = _e15;
+    uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
+    bool loop_init_1 = true;
     while(true) {
-        if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
-        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
-        if (!loop_init) {
-            uint _e58 = b_3;
+        if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
+        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+        if (!loop_init_1) {
+            uint _e58 = b_4;
             uint _e61 = asuint(bsh_nodes.Load(20+_e58*32));
-            const uint _e62 = bsh_next_leaf_lobe(BSH, _e61, x_9, r_10, rl_7);
-            b_3 = _e62;
+            const uint _e62 = bsh_next_leaf_lobe(BSH, _e61, x_10, r_10, rl_7);
+            b_4 = _e62;
         }
-        loop_init = false;
-        uint _e17 = b_3;
+        loop_init_1 = false;
+        uint _e17 = b_4;
         if ((_e17 != BSH_NONE)) {
         } else {
             break;
@@ -784,23 +1001,23 @@ WeightedPicks bsh_weighted_collect(float3 x_9, float3 n_6, float3 r_10, float4 l
         {
             uint _e21 = picks.n;
             picks.n = (_e21 + 1u);
-            uint _e25 = b_3;
+            uint _e25 = b_4;
             uint li_4 = asuint(bsh_nodes.Load(24+_e25*32));
-            const float _e29 = light_weight(li_4, x_9, n_6, r_10, lobe_8, rl_7);
+            const float _e29 = light_weight(li_4, x_10, n_6, r_10, lobe_8, rl_7);
             if ((_e29 > 0.0)) {
                 float _e33 = picks.w_sum;
                 picks.w_sum = (_e33 + _e29);
                 s_1 = 0u;
-                uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
-                bool loop_init_1 = true;
+                uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
+                bool loop_init_2 = true;
                 while(true) {
-                    if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
-                    loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
-                    if (!loop_init_1) {
+                    if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
+                    loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+                    if (!loop_init_2) {
                         uint _e54 = s_1;
                         s_1 = (_e54 + 1u);
                     }
-                    loop_init_1 = false;
+                    loop_init_2 = false;
                     uint _e37 = s_1;
                     if ((_e37 < K)) {
                     } else {
@@ -834,31 +1051,31 @@ WeightedPicks bsh_weighted_collect(float3 x_9, float3 n_6, float3 r_10, float4 l
 
 float4 unproject_pixel(float4 c0_, float4 c1_, float4 c2_, float4 c3_, float px, float py, float width, float height, float depth)
 {
-    bool local_12 = (bool)0;
-    bool local_13 = (bool)0;
+    bool local_15 = (bool)0;
+    bool local_16 = (bool)0;
 
     if ((depth > 0.0)) {
-        local_12 = (depth < 1.0);
+        local_15 = (depth < 1.0);
     } else {
-        local_12 = false;
+        local_15 = false;
     }
-    bool _e16 = local_12;
+    bool _e16 = local_15;
     if (!(_e16)) {
         return float4(0.0, 0.0, 0.0, 0.0);
     }
-    float x_11 = ((((px + 0.5) / width) * 2.0) - 1.0);
+    float x_12 = ((((px + 0.5) / width) * 2.0) - 1.0);
     float y_1 = (1.0 - (((py + 0.5) / height) * 2.0));
-    float4 p_7 = ((((c0_ * x_11) + (c1_ * y_1)) + (c2_ * depth)) + c3_);
-    float3 q = float3((p_7.x / p_7.w), (p_7.y / p_7.w), (p_7.z / p_7.w));
-    if ((abs(p_7.w) > 0.0)) {
-        const bool _e59 = finite3_(q);
-        local_13 = _e59;
+    float4 p_8 = ((((c0_ * x_12) + (c1_ * y_1)) + (c2_ * depth)) + c3_);
+    float3 q_1 = float3((p_8.x / p_8.w), (p_8.y / p_8.w), (p_8.z / p_8.w));
+    if ((abs(p_8.w) > 0.0)) {
+        const bool _e59 = finite3_(q_1);
+        local_16 = _e59;
     } else {
-        local_13 = false;
+        local_16 = false;
     }
-    bool _e61 = local_13;
+    bool _e61 = local_16;
     if (_e61) {
-        return float4(q.x, q.y, q.z, 1.0);
+        return float4(q_1.x, q_1.y, q_1.z, 1.0);
     }
     return float4(0.0, 0.0, 0.0, 0.0);
 }
@@ -866,22 +1083,22 @@ float4 unproject_pixel(float4 c0_, float4 c1_, float4 c2_, float4 c3_, float px,
 float4 surface_at(int2 texel)
 {
     float4 _e3 = depth_tex.Load(int3(texel, int(0)));
-    float d_2 = _e3.x;
+    float d_5 = _e3.x;
     float4 _e7 = view.c0_;
     float4 _e10 = view.c1_;
     float4 _e13 = view.c2_;
     float4 _e16 = view.c3_;
     uint _e23 = view.width;
     uint _e27 = view.height;
-    const float4 _e29 = unproject_pixel(_e7, _e10, _e13, _e16, float(texel.x), float(texel.y), float(_e23), float(_e27), d_2);
+    const float4 _e29 = unproject_pixel(_e7, _e10, _e13, _e16, float(texel.x), float(texel.y), float(_e23), float(_e27), d_5);
     return _e29;
 }
 
-Shaded shade_pick(uint li_3, float3 x_10, float3 n_7, float3 r_11, float4 rl_8, Material m_1, float w_4, float u1_2, float u2_2)
+Shaded shade_pick(uint li_3, float3 x_11, float3 n_7, float3 r_11, float4 rl_8, Material m_1, float w_4, float u1_2, float u2_2, float eps_1)
 {
     Shaded s_2 = (Shaded)0;
 
-    const Connection _e12 = connect(li_3, x_10, n_7, n_7, 1.0, w_4, u1_2, u2_2, 0.0);
+    const Connection _e12 = connect(li_3, x_11, n_7, n_7, 1.0, w_4, u1_2, u2_2, eps_1);
     s_2.e = _e12.e;
     s_2.diffuse = (0.0).xxx;
     s_2.specular = (0.0).xxx;
@@ -898,9 +1115,9 @@ Shaded ConstructShaded(float3 arg0, float3 arg1, float3 arg2) {
     return ret;
 }
 
-Shaded add(Shaded a_5, Shaded b_4)
+Shaded add(Shaded a_6, Shaded b_5)
 {
-    const Shaded shaded_1 = ConstructShaded((a_5.e + b_4.e), (a_5.diffuse + b_4.diffuse), (a_5.specular + b_4.specular));
+    const Shaded shaded_1 = ConstructShaded((a_6.e + b_5.e), (a_6.diffuse + b_5.diffuse), (a_6.specular + b_5.specular));
     return shaded_1;
 }
 
@@ -942,61 +1159,64 @@ void main(uint3 gid : SV_DispatchThreadID)
         out_tex[texel_1] = (0.0).xxxx;
         return;
     }
-    float3 x_12 = _e21.xyz;
-    float3 n_8 = (nn / (sqrt(len2_)).xxx);
-    r = n_8;
+    float3 x_13 = _e21.xyz;
+    float3 n_9 = (nn / (sqrt(len2_)).xxx);
+    r = n_9;
     float4 _e53 = lobe;
     const float4 _e54 = range_lobe(_e53);
-    uint _e57 = view.seed;
-    uint _e61 = view.width;
-    uint _e67 = view.frame;
-    const uint _e68 = point_stream(_e57, ((gid.y * _e61) + gid.x), _e67);
-    const uint _e69 = pick_stream(_e68);
-    h = _e69;
-    float3 _e79 = r;
-    float4 _e80 = lobe;
-    const WeightedPicks _e81 = bsh_weighted_collect(x_12, n_8, _e79, _e80, _e54, _e68);
-    if ((_e81.w_sum > 0.0)) {
-        uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
-        bool loop_init_2 = true;
+    float _e57 = view.shadow_offset;
+    float3 _e60 = view.eye;
+    float eps_2 = (_e57 * length((_e60 - x_13)));
+    uint _e66 = view.seed;
+    uint _e70 = view.width;
+    uint _e76 = view.frame;
+    const uint _e77 = point_stream(_e66, ((gid.y * _e70) + gid.x), _e76);
+    const uint _e78 = pick_stream(_e77);
+    h = _e78;
+    float3 _e88 = r;
+    float4 _e89 = lobe;
+    const WeightedPicks _e90 = bsh_weighted_collect(x_13, n_9, _e88, _e89, _e54, _e77);
+    if ((_e90.w_sum > 0.0)) {
+        uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
+        bool loop_init_3 = true;
         while(true) {
-            if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
-            loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-            if (!loop_init_2) {
-                uint _e113 = k;
-                k = (_e113 + 1u);
+            if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
+            loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+            if (!loop_init_3) {
+                uint _e122 = k;
+                k = (_e122 + 1u);
             }
-            loop_init_2 = false;
-            uint _e87 = k;
-            if ((_e87 < K)) {
+            loop_init_3 = false;
+            uint _e96 = k;
+            if ((_e96 < K)) {
             } else {
                 break;
             }
             {
-                uint _e90 = h;
-                const uint _e91 = pcg_hash(_e90);
-                h = _e91;
-                uint _e92 = h;
-                const float _e93 = xi_from_bits(_e92);
-                uint _e94 = h;
-                const uint _e95 = pcg_hash(_e94);
-                h = _e95;
-                Shaded _e96 = t;
-                uint _e98 = k;
-                float3 _e100 = r;
-                Material _e101 = m;
-                uint _e104 = k;
-                const float _e107 = weighted_pick_weight(_e81.w_sum, _e81.w[min(uint(_e104), 7u)], K);
-                uint _e108 = h;
-                const float _e109 = xi_from_bits(_e108);
-                const Shaded _e110 = shade_pick(_e81.light[min(uint(_e98), 7u)], x_12, n_8, _e100, _e54, _e101, _e107, _e93, _e109);
-                const Shaded _e111 = add(_e96, _e110);
-                t = _e111;
+                uint _e99 = h;
+                const uint _e100 = pcg_hash(_e99);
+                h = _e100;
+                uint _e101 = h;
+                const float _e102 = xi_from_bits(_e101);
+                uint _e103 = h;
+                const uint _e104 = pcg_hash(_e103);
+                h = _e104;
+                Shaded _e105 = t;
+                uint _e107 = k;
+                float3 _e109 = r;
+                Material _e110 = m;
+                uint _e113 = k;
+                const float _e116 = weighted_pick_weight(_e90.w_sum, _e90.w[min(uint(_e113), 7u)], K);
+                uint _e117 = h;
+                const float _e118 = xi_from_bits(_e117);
+                const Shaded _e119 = shade_pick(_e90.light[min(uint(_e107), 7u)], x_13, n_9, _e109, _e54, _e110, _e116, _e102, _e118, eps_2);
+                const Shaded _e120 = add(_e105, _e119);
+                t = _e120;
             }
         }
     }
-    uint count = _e81.n;
-    float3 _e118 = t.e;
-    out_tex[texel_1] = float4(_e118, float(count));
+    uint count = _e90.n;
+    float3 _e127 = t.e;
+    out_tex[texel_1] = float4(_e127, float(count));
     return;
 }

@@ -20,6 +20,22 @@ struct GpuLightCone {
     uint pad;
 };
 
+struct GpuGeoNode {
+    float3 bmin;
+    uint first;
+    float3 bmax;
+    uint count;
+};
+
+struct GpuTriangle {
+    float3 v0_;
+    uint material;
+    float3 v1_;
+    uint light;
+    float3 v2_;
+    uint pad;
+};
+
 struct ViewParams {
     float4 c0_;
     float4 c1_;
@@ -28,7 +44,7 @@ struct ViewParams {
     float3 eye;
     uint width;
     uint height;
-    uint pad0_;
+    float shadow_offset;
     uint seed;
     uint frame;
     float3 f0_d;
@@ -42,6 +58,11 @@ struct BshNode {
     uint next;
     uint light;
     float extent;
+};
+
+struct GeoHit {
+    float t;
+    uint tri;
 };
 
 struct Connection {
@@ -127,6 +148,8 @@ static const float TEMPORAL_MIN_WEIGHT = 0.01;
 static const uint K = 8u;
 static const uint BSH = 0u;
 
+ByteAddressBuffer geo_nodes : register(t6, space1);
+ByteAddressBuffer geo_tris : register(t7, space1);
 cbuffer view : register(b0) { ViewParams view; }
 Texture2D<float4> position_tex : register(t1);
 Texture2D<float4> normal_tex : register(t2);
@@ -335,9 +358,9 @@ float smith_visibility(float n_l, float n_v, float alpha_2)
 
 float3 fresnel_schlick(float3 f0_, float f90_, float v_h)
 {
-    float c_5 = saturate((1.0 - v_h));
-    float c2_ = (c_5 * c_5);
-    return (f0_ + ((float3(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_5)));
+    float c_6 = saturate((1.0 - v_h));
+    float c2_ = (c_6 * c_6);
+    return (f0_ + ((float3(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_6)));
 }
 
 float3 specular_fresnel(float3 base, float metallic, float3 f0_d, float f90_d, float v_h_1)
@@ -381,8 +404,8 @@ float3 specular_brdf(float3 base_2, float metallic_2, float3 f0_d_2, float f90_d
     float3 hs = (v_1 + l_1);
     float inv = (1.0 / sqrt(dot(hs, hs)));
     float3 h_3 = (hs * inv);
-    float3 c_6 = cross(n_2, h_3);
-    const float _e32 = ggx_d(dot(n_2, h_3), dot(c_6, c_6), alpha_3);
+    float3 c_7 = cross(n_2, h_3);
+    const float _e32 = ggx_d(dot(n_2, h_3), dot(c_7, c_7), alpha_3);
     const float3 _e34 = specular_fresnel(base_2, metallic_2, f0_d_2, f90_d_2, dot(v_1, h_3));
     const float _e35 = smith_visibility(n_l_1, n_v_2, alpha_3);
     return (_e34 * (_e32 * _e35));
@@ -546,8 +569,8 @@ float cone_cos_of(float3 v_3, float d2_4, float a_3, float3 d)
     if (_e21) {
         return 1.0;
     }
-    float3 c_7 = cross(v_3, d);
-    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_7, c_7)) * a_3)) / d2_4), 1.0);
+    float3 c_8 = cross(v_3, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_8, c_8)) * a_3)) / d2_4), 1.0);
 }
 
 float cone_cos_toward(float3 center_2, float radius_2, float3 p_2, float3 d_1)
@@ -637,6 +660,38 @@ float cone_weight(float3 center_6, float radius_6, float phi_3, float3 axis_4, f
     return _e22;
 }
 
+float shadow_margin(float len)
+{
+    return (0.0001 * len);
+}
+
+float ray_inverse(float x_4)
+{
+    return (1.0 / ((abs(x_4) < 1e-30) ? 1e-30 : x_4));
+}
+
+float3 ray_inverse3_(float3 d_2)
+{
+    const float _e2 = ray_inverse(d_2.x);
+    const float _e4 = ray_inverse(d_2.y);
+    const float _e6 = ray_inverse(d_2.z);
+    return float3(_e2, _e4, _e6);
+}
+
+float ray_aabb(float3 o, float3 inv_d, float3 bmin, float3 bmax, float t_max)
+{
+    float3 t0_ = ((bmin - o) * inv_d);
+    float3 t1_ = ((bmax - o) * inv_d);
+    float3 lo = min(t0_, t1_);
+    float3 hi = max(t0_, t1_);
+    float t_in = max(max(lo.x, lo.y), max(lo.z, 0.0));
+    float t_out = min(min(hi.x, hi.y), min(hi.z, t_max));
+    if ((t_in <= t_out)) {
+        return t_in;
+    }
+    return -1.0;
+}
+
 float3 triangle_normal(float3 a_4, float3 b_3, float3 c_3)
 {
     bool local_12 = (bool)0;
@@ -653,6 +708,55 @@ float3 triangle_normal(float3 a_4, float3 b_3, float3 c_3)
         return float3(0.0, 0.0, 0.0);
     }
     return (n_11 / (sqrt(l2_)).xxx);
+}
+
+float ray_triangle(float3 o_1, float3 d_3, float3 a_5, float3 b_4, float3 c_4, float t_min, float t_max_1)
+{
+    bool local_13 = (bool)0;
+    bool local_14 = (bool)0;
+    bool local_15 = (bool)0;
+
+    float3 e1_ = (b_4 - a_5);
+    float3 e2_ = (c_4 - a_5);
+    float3 p_7 = cross(d_3, e2_);
+    float det = dot(e1_, p_7);
+    if ((abs(det) <= 0.0)) {
+        return -1.0;
+    }
+    float inv_1 = (1.0 / det);
+    float3 s_3 = (o_1 - a_5);
+    float u_3 = (dot(s_3, p_7) * inv_1);
+    if (!((u_3 < 0.0))) {
+        local_13 = (u_3 > 1.0);
+    } else {
+        local_13 = true;
+    }
+    bool _e28 = local_13;
+    if (_e28) {
+        return -1.0;
+    }
+    float3 q = cross(s_3, e1_);
+    float v_11 = (dot(d_3, q) * inv_1);
+    if (!((v_11 < 0.0))) {
+        local_14 = ((u_3 + v_11) > 1.0);
+    } else {
+        local_14 = true;
+    }
+    bool _e42 = local_14;
+    if (_e42) {
+        return -1.0;
+    }
+    float t_3 = (dot(e2_, q) * inv_1);
+    if ((t_3 > t_min)) {
+        local_15 = (t_3 < t_max_1);
+    } else {
+        local_15 = false;
+    }
+    bool _e51 = local_15;
+    if (_e51) {
+        return t_3;
+    }
+    return -1.0;
 }
 
 float3 light_intensity(GpuLight l_2, float3 w_4)
@@ -678,9 +782,129 @@ float3 light_point(GpuLight l_3, float u1_1, float u2_1)
     return l_3.p0_;
 }
 
-bool occluded(float3 a_5, float3 b_4)
+uint NagaBufferLength(ByteAddressBuffer buffer)
 {
-    return false;
+    uint ret;
+    buffer.GetDimensions(ret);
+    return ret;
+}
+
+GpuGeoNode ConstructGpuGeoNode(float3 arg0, uint arg1, float3 arg2, uint arg3) {
+    GpuGeoNode ret = (GpuGeoNode)0;
+    ret.bmin = arg0;
+    ret.first = arg1;
+    ret.bmax = arg2;
+    ret.count = arg3;
+    return ret;
+}
+
+GpuTriangle ConstructGpuTriangle(float3 arg0, uint arg1, float3 arg2, uint arg3, float3 arg4, uint arg5) {
+    GpuTriangle ret = (GpuTriangle)0;
+    ret.v0_ = arg0;
+    ret.material = arg1;
+    ret.v1_ = arg2;
+    ret.light = arg3;
+    ret.v2_ = arg4;
+    ret.pad = arg5;
+    return ret;
+}
+
+GeoHit trace(float3 o_2, float3 d_4, float t_min_1, float t_max_2, bool any_hit)
+{
+    GeoHit hit = (GeoHit)0;
+    uint stack[64] = (uint[64])0;
+    uint sp = 0u;
+    uint node_2 = 0u;
+    uint i = (uint)0;
+
+    hit.t = t_max_2;
+    hit.tri = NO_LIGHT;
+    if ((((NagaBufferLength(geo_nodes) - 0) / 32) == 0u)) {
+        GeoHit _e13 = hit;
+        const GeoHit geohit = _e13;
+        return geohit;
+    }
+    const float3 _e14 = ray_inverse3_(d_4);
+    uint2 loop_bound = uint2(4294967295u, 4294967295u);
+    while(true) {
+        if (all(loop_bound == uint2(0u, 0u))) { break; }
+        loop_bound -= uint2(loop_bound.y == 0u, 1u);
+        uint _e21 = node_2;
+        GpuGeoNode n_12 = ConstructGpuGeoNode(asfloat(geo_nodes.Load3(_e21*32+0)), asuint(geo_nodes.Load(_e21*32+12)), asfloat(geo_nodes.Load3(_e21*32+16)), asuint(geo_nodes.Load(_e21*32+28)));
+        float _e27 = hit.t;
+        const float _e28 = ray_aabb(o_2, _e14, n_12.bmin, n_12.bmax, _e27);
+        if ((_e28 >= 0.0)) {
+            if ((n_12.count > 0u)) {
+                i = n_12.first;
+                uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
+                bool loop_init = true;
+                while(true) {
+                    if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
+                    loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+                    if (!loop_init) {
+                        uint _e58 = i;
+                        i = (_e58 + 1u);
+                    }
+                    loop_init = false;
+                    uint _e36 = i;
+                    if ((_e36 < (n_12.first + n_12.count))) {
+                    } else {
+                        break;
+                    }
+                    {
+                        uint _e42 = i;
+                        GpuTriangle t_4 = ConstructGpuTriangle(asfloat(geo_tris.Load3(_e42*48+0)), asuint(geo_tris.Load(_e42*48+12)), asfloat(geo_tris.Load3(_e42*48+16)), asuint(geo_tris.Load(_e42*48+28)), asfloat(geo_tris.Load3(_e42*48+32)), asuint(geo_tris.Load(_e42*48+44)));
+                        float _e49 = hit.t;
+                        const float _e50 = ray_triangle(o_2, d_4, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e49);
+                        if ((_e50 > 0.0)) {
+                            hit.t = _e50;
+                            uint _e55 = i;
+                            hit.tri = _e55;
+                            if (any_hit) {
+                                GeoHit _e56 = hit;
+                                const GeoHit geohit_1 = _e56;
+                                return geohit_1;
+                            }
+                        }
+                    }
+                }
+            } else {
+                uint _e60 = sp;
+                if ((_e60 < 64u)) {
+                    uint _e63 = sp;
+                    stack[min(uint(_e63), 63u)] = (n_12.first + 1u);
+                    uint _e68 = sp;
+                    sp = (_e68 + 1u);
+                }
+                node_2 = n_12.first;
+                continue;
+            }
+        }
+        uint _e72 = sp;
+        if ((_e72 == 0u)) {
+            break;
+        }
+        uint _e75 = sp;
+        sp = (_e75 - 1u);
+        uint _e78 = sp;
+        uint _e80 = stack[min(uint(_e78), 63u)];
+        node_2 = _e80;
+    }
+    GeoHit _e81 = hit;
+    const GeoHit geohit_2 = _e81;
+    return geohit_2;
+}
+
+bool occluded(float3 a_6, float3 b_5)
+{
+    float3 dv = (b_5 - a_6);
+    float len_1 = length(dv);
+    if ((len_1 <= 0.0)) {
+        return false;
+    }
+    const float _e7 = shadow_margin(len_1);
+    const GeoHit _e12 = trace(a_6, (dv / (len_1).xxx), _e7, (len_1 - _e7), true);
+    return (_e12.tri != NO_LIGHT);
 }
 
 BshNode ConstructBshNode(float3 arg0, float arg1, uint arg2, uint arg3, uint arg4, float arg5) {
@@ -694,18 +918,11 @@ BshNode ConstructBshNode(float3 arg0, float arg1, uint arg2, uint arg3, uint arg
     return ret;
 }
 
-BshNode bsh_node(uint nodes, uint i)
+BshNode bsh_node(uint nodes, uint i_1)
 {
-    BshNode _e4 = ConstructBshNode(asfloat(bsh_nodes.Load3(i*32+0)), asfloat(bsh_nodes.Load(i*32+12)), asuint(bsh_nodes.Load(i*32+16)), asuint(bsh_nodes.Load(i*32+20)), asuint(bsh_nodes.Load(i*32+24)), asfloat(bsh_nodes.Load(i*32+28)));
+    BshNode _e4 = ConstructBshNode(asfloat(bsh_nodes.Load3(i_1*32+0)), asfloat(bsh_nodes.Load(i_1*32+12)), asuint(bsh_nodes.Load(i_1*32+16)), asuint(bsh_nodes.Load(i_1*32+20)), asuint(bsh_nodes.Load(i_1*32+24)), asfloat(bsh_nodes.Load(i_1*32+28)));
     const BshNode bshnode = _e4;
     return bshnode;
-}
-
-uint NagaBufferLength(ByteAddressBuffer buffer)
-{
-    uint ret;
-    buffer.GetDimensions(ret);
-    return ret;
 }
 
 uint bsh_count(uint nodes_1)
@@ -722,83 +939,83 @@ uint bsh_first(uint nodes_2)
     return BSH_NONE;
 }
 
-float bsh_inner_scale(float a_6, float3 v_4, float d2_6, float3 r_5, float4 rl_2)
+float bsh_inner_scale(float a_7, float3 v_4, float d2_6, float3 r_5, float4 rl_2)
 {
-    const float _e5 = cone_cos_of(v_4, d2_6, a_6, r_5);
+    const float _e5 = cone_cos_of(v_4, d2_6, a_7, r_5);
     const float _e8 = range_scale_at(rl_2, (_e5 + 2e-6));
     return _e8;
 }
 
-bool bsh_reaches(BshNode node_2, float3 x_4, float3 r_6, float4 rl_3)
+bool bsh_reaches(BshNode node_3, float3 x_5, float3 r_6, float4 rl_3)
 {
-    bool local_13 = (bool)0;
-    bool local_14 = (bool)0;
+    bool local_16 = (bool)0;
+    bool local_17 = (bool)0;
 
-    const bool _e6 = sphere_contains_point(node_2.center_, node_2.radius, x_4);
+    const bool _e6 = sphere_contains_point(node_3.center_, node_3.radius, x_5);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
-        const bool _e20 = sphere_contains_point(node_2.center_, (node_2.radius * (rl_3.w * 1.0001)), x_4);
-        local_13 = !(_e20);
+        const bool _e20 = sphere_contains_point(node_3.center_, (node_3.radius * (rl_3.w * 1.0001)), x_5);
+        local_16 = !(_e20);
     } else {
-        local_13 = true;
+        local_16 = true;
     }
-    bool _e23 = local_13;
+    bool _e23 = local_16;
     if (_e23) {
         return false;
     }
-    const float _e25 = bsh_range_bound(node_2);
-    float3 v_11 = (x_4 - node_2.center_);
-    float d2_9 = dot(v_11, v_11);
-    float reach_max = (node_2.extent + ((rl_3.w * 1.001) * _e25));
+    const float _e25 = bsh_range_bound(node_3);
+    float3 v_12 = (x_5 - node_3.center_);
+    float d2_9 = dot(v_12, v_12);
+    float reach_max = (node_3.extent + ((rl_3.w * 1.001) * _e25));
     if ((d2_9 > (reach_max * reach_max))) {
         return false;
     }
-    if ((node_2.child == BSH_NONE)) {
-        const float _e43 = range_scale_toward(rl_3, node_2.center_, node_2.extent, x_4, r_6);
-        const float _e46 = bsh_scaled_radius(node_2, sqrt(_e43));
-        const bool _e47 = sphere_contains_point(node_2.center_, _e46, x_4);
+    if ((node_3.child == BSH_NONE)) {
+        const float _e43 = range_scale_toward(rl_3, node_3.center_, node_3.extent, x_5, r_6);
+        const float _e46 = bsh_scaled_radius(node_3, sqrt(_e43));
+        const bool _e47 = sphere_contains_point(node_3.center_, _e46, x_5);
         return _e47;
     }
-    const float _e50 = bsh_inner_scale(node_2.extent, -(v_11), d2_9, r_6, rl_3);
+    const float _e50 = bsh_inner_scale(node_3.extent, -(v_12), d2_9, r_6, rl_3);
     float s_c = (_e50 * 1.001);
-    float reach = (node_2.extent + (sqrt(s_c) * _e25));
-    if ((d2_9 <= ((node_2.radius * node_2.radius) * s_c))) {
-        local_14 = (d2_9 <= (reach * reach));
+    float reach = (node_3.extent + (sqrt(s_c) * _e25));
+    if ((d2_9 <= ((node_3.radius * node_3.radius) * s_c))) {
+        local_17 = (d2_9 <= (reach * reach));
     } else {
-        local_14 = false;
+        local_17 = false;
     }
-    bool _e67 = local_14;
+    bool _e67 = local_17;
     return _e67;
 }
 
-uint bsh_next_leaf_lobe(uint nodes_3, uint start, float3 x_5, float3 r_7, float4 rl_4)
+uint bsh_next_leaf_lobe(uint nodes_3, uint start, float3 x_6, float3 r_7, float4 rl_4)
 {
-    uint i_1 = (uint)0;
+    uint i_2 = (uint)0;
 
-    i_1 = start;
-    uint2 loop_bound = uint2(4294967295u, 4294967295u);
+    i_2 = start;
+    uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
     while(true) {
-        if (all(loop_bound == uint2(0u, 0u))) { break; }
-        loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        uint _e6 = i_1;
+        if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
+        loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
+        uint _e6 = i_2;
         if ((_e6 != BSH_NONE)) {
         } else {
             break;
         }
         {
-            uint _e9 = i_1;
+            uint _e9 = i_2;
             const BshNode _e10 = bsh_node(nodes_3, _e9);
-            const bool _e11 = bsh_reaches(_e10, x_5, r_7, rl_4);
+            const bool _e11 = bsh_reaches(_e10, x_6, r_7, rl_4);
             if (_e11) {
                 if ((_e10.child == BSH_NONE)) {
-                    uint _e15 = i_1;
+                    uint _e15 = i_2;
                     return _e15;
                 }
-                i_1 = _e10.child;
+                i_2 = _e10.child;
             } else {
-                i_1 = _e10.next;
+                i_2 = _e10.next;
             }
         }
     }
@@ -818,42 +1035,42 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
     return ret;
 }
 
-Connection connect(uint li, float3 x_6, float3 n_7, float3 ng_1, float s, float w_res, float u1_2, float u2_2, float eps)
+Connection connect(uint li, float3 x_7, float3 n_7, float3 ng_1, float s, float w_res, float u1_2, float u2_2, float eps)
 {
-    Connection c_4 = (Connection)0;
-    bool local_15 = (bool)0;
+    Connection c_5 = (Connection)0;
+    bool local_18 = (bool)0;
 
-    c_4.e = (0.0).xxx;
+    c_5.e = (0.0).xxx;
     GpuLight l_4 = ConstructGpuLight(asfloat(lights.Load3(li*64+0)), asuint(lights.Load(li*64+12)), asfloat(lights.Load3(li*64+16)), asfloat(lights.Load(li*64+28)), asfloat(lights.Load3(li*64+32)), asfloat(lights.Load(li*64+44)), asfloat(lights.Load3(li*64+48)), asuint(lights.Load(li*64+60)));
     const float3 _e17 = light_point(l_4, u1_2, u2_2);
-    c_4.y = _e17;
-    float3 _e20 = c_4.y;
+    c_5.y = _e17;
+    float3 _e20 = c_5.y;
     float _e23 = asfloat(r2_3.Load(li*4));
-    const float _e25 = connection_cosine(x_6, _e20, n_7, ng_1, (s * _e23));
-    c_4.cos_x = _e25;
-    float _e27 = c_4.cos_x;
+    const float _e25 = connection_cosine(x_7, _e20, n_7, ng_1, (s * _e23));
+    c_5.cos_x = _e25;
+    float _e27 = c_5.cos_x;
     if (!((_e27 <= 0.0))) {
-        float3 _e36 = c_4.y;
-        const bool _e37 = occluded((x_6 + (ng_1 * eps)), _e36);
-        local_15 = _e37;
+        float3 _e36 = c_5.y;
+        const bool _e37 = occluded((x_7 + (ng_1 * eps)), _e36);
+        local_18 = _e37;
     } else {
-        local_15 = true;
+        local_18 = true;
     }
-    bool _e39 = local_15;
+    bool _e39 = local_18;
     if (_e39) {
-        Connection _e40 = c_4;
+        Connection _e40 = c_5;
         const Connection connection = _e40;
         return connection;
     }
-    float3 _e42 = c_4.y;
-    float3 v_12 = (x_6 - _e42);
-    float d2_10 = dot(v_12, v_12);
-    const float3 _e49 = light_intensity(l_4, (v_12 / (sqrt(d2_10)).xxx));
-    float _e51 = c_4.cos_x;
+    float3 _e42 = c_5.y;
+    float3 v_13 = (x_7 - _e42);
+    float d2_10 = dot(v_13, v_13);
+    const float3 _e49 = light_intensity(l_4, (v_13 / (sqrt(d2_10)).xxx));
+    float _e51 = c_5.cos_x;
     float _e54 = asfloat(rt2_4.Load(li*4));
     const float _e56 = connection_factor(_e51, d2_10, (s * _e54), w_res);
-    c_4.e = (_e49 * _e56);
-    Connection _e58 = c_4;
+    c_5.e = (_e49 * _e56);
+    Connection _e58 = c_5;
     const Connection connection_1 = _e58;
     return connection_1;
 }
@@ -871,48 +1088,48 @@ GpuLightCone ConstructGpuLightCone(float3 arg0, float arg1, float3 arg2, float a
     return ret;
 }
 
-float light_range_scale(uint li_1, float3 x_7, float3 r_8, float4 rl_5)
+float light_range_scale(uint li_1, float3 x_8, float3 r_8, float4 rl_5)
 {
-    GpuLightCone c_8 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_1*48+0)), asfloat(light_cones.Load(li_1*48+12)), asfloat(light_cones.Load3(li_1*48+16)), asfloat(light_cones.Load(li_1*48+28)), asfloat(light_cones.Load(li_1*48+32)), asfloat(light_cones.Load(li_1*48+36)), asuint(light_cones.Load(li_1*48+40)), asuint(light_cones.Load(li_1*48+44)));
-    const float _e9 = range_scale_toward(rl_5, c_8.center_, c_8.radius, x_7, r_8);
+    GpuLightCone c_9 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_1*48+0)), asfloat(light_cones.Load(li_1*48+12)), asfloat(light_cones.Load3(li_1*48+16)), asfloat(light_cones.Load(li_1*48+28)), asfloat(light_cones.Load(li_1*48+32)), asfloat(light_cones.Load(li_1*48+36)), asuint(light_cones.Load(li_1*48+40)), asuint(light_cones.Load(li_1*48+44)));
+    const float _e9 = range_scale_toward(rl_5, c_9.center_, c_9.radius, x_8, r_8);
     return _e9;
 }
 
-float light_weight(uint li_2, float3 x_8, float3 n_8, float3 r_9, float4 lobe_7, float4 rl_6)
+float light_weight(uint li_2, float3 x_9, float3 n_8, float3 r_9, float4 lobe_7, float4 rl_6)
 {
-    GpuLightCone c_9 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_2*48+0)), asfloat(light_cones.Load(li_2*48+12)), asfloat(light_cones.Load3(li_2*48+16)), asfloat(light_cones.Load(li_2*48+28)), asfloat(light_cones.Load(li_2*48+32)), asfloat(light_cones.Load(li_2*48+36)), asuint(light_cones.Load(li_2*48+40)), asuint(light_cones.Load(li_2*48+44)));
-    const float _e15 = light_range_scale(li_2, x_8, r_9, rl_6);
+    GpuLightCone c_10 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_2*48+0)), asfloat(light_cones.Load(li_2*48+12)), asfloat(light_cones.Load3(li_2*48+16)), asfloat(light_cones.Load(li_2*48+28)), asfloat(light_cones.Load(li_2*48+32)), asfloat(light_cones.Load(li_2*48+36)), asuint(light_cones.Load(li_2*48+40)), asuint(light_cones.Load(li_2*48+44)));
+    const float _e15 = light_range_scale(li_2, x_9, r_9, rl_6);
     float _e18 = asfloat(rt2_4.Load(li_2*4));
-    const float _e20 = cone_weight(c_9.center_, c_9.radius, c_9.phi, c_9.axis, c_9.cos_o, c_9.cos_e, (_e15 * _e18), x_8, n_8, r_9, lobe_7);
+    const float _e20 = cone_weight(c_10.center_, c_10.radius, c_10.phi, c_10.axis, c_10.cos_o, c_10.cos_e, (_e15 * _e18), x_9, n_8, r_9, lobe_7);
     return _e20;
 }
 
-WeightedPicks bsh_weighted_collect(float3 x_9, float3 n_9, float3 r_10, float4 lobe_8, float4 rl_7, uint h0_)
+WeightedPicks bsh_weighted_collect(float3 x_10, float3 n_9, float3 r_10, float4 lobe_8, float4 rl_7, uint h0_)
 {
     WeightedPicks picks = (WeightedPicks)0;
     uint h_1 = (uint)0;
-    uint b_5 = (uint)0;
+    uint b_6 = (uint)0;
     uint s_1 = (uint)0;
 
     picks.w_sum = 0.0;
     picks.n = 0u;
     h_1 = h0_;
     const uint _e14 = bsh_first(BSH);
-    const uint _e15 = bsh_next_leaf_lobe(BSH, _e14, x_9, r_10, rl_7);
-    b_5 = _e15;
-    uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
-    bool loop_init = true;
+    const uint _e15 = bsh_next_leaf_lobe(BSH, _e14, x_10, r_10, rl_7);
+    b_6 = _e15;
+    uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
+    bool loop_init_1 = true;
     while(true) {
-        if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
-        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
-        if (!loop_init) {
-            uint _e58 = b_5;
+        if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
+        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+        if (!loop_init_1) {
+            uint _e58 = b_6;
             uint _e61 = asuint(bsh_nodes.Load(20+_e58*32));
-            const uint _e62 = bsh_next_leaf_lobe(BSH, _e61, x_9, r_10, rl_7);
-            b_5 = _e62;
+            const uint _e62 = bsh_next_leaf_lobe(BSH, _e61, x_10, r_10, rl_7);
+            b_6 = _e62;
         }
-        loop_init = false;
-        uint _e17 = b_5;
+        loop_init_1 = false;
+        uint _e17 = b_6;
         if ((_e17 != BSH_NONE)) {
         } else {
             break;
@@ -920,23 +1137,23 @@ WeightedPicks bsh_weighted_collect(float3 x_9, float3 n_9, float3 r_10, float4 l
         {
             uint _e21 = picks.n;
             picks.n = (_e21 + 1u);
-            uint _e25 = b_5;
+            uint _e25 = b_6;
             uint li_4 = asuint(bsh_nodes.Load(24+_e25*32));
-            const float _e29 = light_weight(li_4, x_9, n_9, r_10, lobe_8, rl_7);
+            const float _e29 = light_weight(li_4, x_10, n_9, r_10, lobe_8, rl_7);
             if ((_e29 > 0.0)) {
                 float _e33 = picks.w_sum;
                 picks.w_sum = (_e33 + _e29);
                 s_1 = 0u;
-                uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
-                bool loop_init_1 = true;
+                uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
+                bool loop_init_2 = true;
                 while(true) {
-                    if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
-                    loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
-                    if (!loop_init_1) {
+                    if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
+                    loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+                    if (!loop_init_2) {
                         uint _e54 = s_1;
                         s_1 = (_e54 + 1u);
                     }
-                    loop_init_1 = false;
+                    loop_init_2 = false;
                     uint _e37 = s_1;
                     if ((_e37 < K)) {
                     } else {
@@ -970,21 +1187,21 @@ WeightedPicks bsh_weighted_collect(float3 x_9, float3 n_9, float3 r_10, float4 l
 
 float4 surface_at(int2 texel)
 {
-    float4 p_7 = position_tex.Load(int3(texel, int(0)));
-    return ((p_7.w > 0.0) ? float4(p_7.xyz, 1.0) : (0.0).xxxx);
+    float4 p_8 = position_tex.Load(int3(texel, int(0)));
+    return ((p_8.w > 0.0) ? float4(p_8.xyz, 1.0) : (0.0).xxxx);
 }
 
-Shaded shade_pick(uint li_3, float3 x_10, float3 n_10, float3 r_11, float4 rl_8, Material m_1, float w_5, float u1_3, float u2_3)
+Shaded shade_pick(uint li_3, float3 x_11, float3 n_10, float3 r_11, float4 rl_8, Material m_1, float w_5, float u1_3, float u2_3, float eps_1)
 {
     Shaded s_2 = (Shaded)0;
 
-    const float _e10 = light_range_scale(li_3, x_10, r_11, rl_8);
-    const Connection _e12 = connect(li_3, x_10, n_10, n_10, _e10, w_5, u1_3, u2_3, 0.0);
+    const float _e11 = light_range_scale(li_3, x_11, r_11, rl_8);
+    const Connection _e12 = connect(li_3, x_11, n_10, n_10, _e11, w_5, u1_3, u2_3, eps_1);
     s_2.e = _e12.e;
     s_2.diffuse = (0.0).xxx;
     s_2.specular = (0.0).xxx;
     if ((_e12.cos_x > 0.0)) {
-        float3 l_5 = normalize((_e12.y - x_10));
+        float3 l_5 = normalize((_e12.y - x_11));
         float3 _e32 = view.f0_d;
         float _e35 = view.f90_d;
         const float _e37 = half_cosine(m_1.v, l_5);
@@ -1008,9 +1225,9 @@ Shaded ConstructShaded(float3 arg0, float3 arg1, float3 arg2) {
     return ret;
 }
 
-Shaded add(Shaded a_7, Shaded b_6)
+Shaded add(Shaded a_8, Shaded b_7)
 {
-    const Shaded shaded_1 = ConstructShaded((a_7.e + b_6.e), (a_7.diffuse + b_6.diffuse), (a_7.specular + b_6.specular));
+    const Shaded shaded_1 = ConstructShaded((a_8.e + b_7.e), (a_8.diffuse + b_7.diffuse), (a_8.specular + b_7.specular));
     return shaded_1;
 }
 
@@ -1064,79 +1281,82 @@ void main(uint3 gid : SV_DispatchThreadID)
         specular_tex[texel_1] = (0.0).xxxx;
         return;
     }
-    float3 x_11 = _e21.xyz;
-    float3 n_12 = (nn / (sqrt(len2_1)).xxx);
-    r = n_12;
+    float3 x_12 = _e21.xyz;
+    float3 n_13 = (nn / (sqrt(len2_1)).xxx);
+    r = n_13;
     float4 mr = metal_rough_tex.Load(int3(texel_1, int(0)));
     float4 _e61 = base_color_tex.Load(int3(texel_1, int(0)));
     const float _e67 = ggx_alpha(saturate(mr.y));
     float3 _e70 = view.eye;
-    m = ConstructMaterial(_e61.xyz, saturate(mr.z), _e67, normalize((_e70 - x_11)), mr.y, 0.0);
+    m = ConstructMaterial(_e61.xyz, saturate(mr.z), _e67, normalize((_e70 - x_12)), mr.y, 0.0);
     float3 _e77 = m.base;
     float _e79 = m.metallic;
     float3 _e82 = view.f0_d;
     float _e85 = view.f90_d;
     float _e87 = m.alpha;
     float3 _e89 = m.v;
-    const float4 _e91 = receiver_lobe(_e77, _e79, _e82, _e85, _e87, dot(n_12, _e89));
+    const float4 _e91 = receiver_lobe(_e77, _e79, _e82, _e85, _e87, dot(n_13, _e89));
     lobe = _e91;
     float3 _e93 = m.v;
-    const float3 _e94 = mirror_dir(n_12, _e93);
+    const float3 _e94 = mirror_dir(n_13, _e93);
     r = _e94;
     float4 _e95 = lobe;
     const float4 _e96 = range_lobe(_e95);
-    uint _e99 = view.seed;
-    uint _e103 = view.width;
-    uint _e109 = view.frame;
-    const uint _e110 = point_stream(_e99, ((gid.y * _e103) + gid.x), _e109);
-    const uint _e111 = pick_stream(_e110);
-    h = _e111;
-    float3 _e121 = r;
-    float4 _e122 = lobe;
-    const WeightedPicks _e123 = bsh_weighted_collect(x_11, n_12, _e121, _e122, _e96, _e110);
-    if ((_e123.w_sum > 0.0)) {
-        uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
-        bool loop_init_2 = true;
+    float _e99 = view.shadow_offset;
+    float3 _e102 = view.eye;
+    float eps_2 = (_e99 * length((_e102 - x_12)));
+    uint _e108 = view.seed;
+    uint _e112 = view.width;
+    uint _e118 = view.frame;
+    const uint _e119 = point_stream(_e108, ((gid.y * _e112) + gid.x), _e118);
+    const uint _e120 = pick_stream(_e119);
+    h = _e120;
+    float3 _e130 = r;
+    float4 _e131 = lobe;
+    const WeightedPicks _e132 = bsh_weighted_collect(x_12, n_13, _e130, _e131, _e96, _e119);
+    if ((_e132.w_sum > 0.0)) {
+        uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
+        bool loop_init_3 = true;
         while(true) {
-            if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
-            loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-            if (!loop_init_2) {
-                uint _e155 = k;
-                k = (_e155 + 1u);
+            if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
+            loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+            if (!loop_init_3) {
+                uint _e164 = k;
+                k = (_e164 + 1u);
             }
-            loop_init_2 = false;
-            uint _e129 = k;
-            if ((_e129 < K)) {
+            loop_init_3 = false;
+            uint _e138 = k;
+            if ((_e138 < K)) {
             } else {
                 break;
             }
             {
-                uint _e132 = h;
-                const uint _e133 = pcg_hash(_e132);
-                h = _e133;
-                uint _e134 = h;
-                const float _e135 = xi_from_bits(_e134);
-                uint _e136 = h;
-                const uint _e137 = pcg_hash(_e136);
-                h = _e137;
-                Shaded _e138 = t;
-                uint _e140 = k;
-                float3 _e142 = r;
-                Material _e143 = m;
-                uint _e146 = k;
-                const float _e149 = weighted_pick_weight(_e123.w_sum, _e123.w[min(uint(_e146), 7u)], K);
-                uint _e150 = h;
-                const float _e151 = xi_from_bits(_e150);
-                const Shaded _e152 = shade_pick(_e123.light[min(uint(_e140), 7u)], x_11, n_12, _e142, _e96, _e143, _e149, _e135, _e151);
-                const Shaded _e153 = add(_e138, _e152);
-                t = _e153;
+                uint _e141 = h;
+                const uint _e142 = pcg_hash(_e141);
+                h = _e142;
+                uint _e143 = h;
+                const float _e144 = xi_from_bits(_e143);
+                uint _e145 = h;
+                const uint _e146 = pcg_hash(_e145);
+                h = _e146;
+                Shaded _e147 = t;
+                uint _e149 = k;
+                float3 _e151 = r;
+                Material _e152 = m;
+                uint _e155 = k;
+                const float _e158 = weighted_pick_weight(_e132.w_sum, _e132.w[min(uint(_e155), 7u)], K);
+                uint _e159 = h;
+                const float _e160 = xi_from_bits(_e159);
+                const Shaded _e161 = shade_pick(_e132.light[min(uint(_e149), 7u)], x_12, n_13, _e151, _e96, _e152, _e158, _e144, _e160, eps_2);
+                const Shaded _e162 = add(_e147, _e161);
+                t = _e162;
             }
         }
     }
-    uint count = _e123.n;
-    float3 _e160 = t.e;
-    out_tex[texel_1] = float4(_e160, float(count));
-    float3 _e165 = t.specular;
-    specular_tex[texel_1] = float4(_e165, 0.0);
+    uint count = _e132.n;
+    float3 _e169 = t.e;
+    out_tex[texel_1] = float4(_e169, float(count));
+    float3 _e174 = t.specular;
+    specular_tex[texel_1] = float4(_e174, 0.0);
     return;
 }

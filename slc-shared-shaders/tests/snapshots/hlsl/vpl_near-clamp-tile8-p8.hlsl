@@ -41,7 +41,7 @@ struct ViewParams {
     float3 eye;
     uint width;
     uint height;
-    uint pad0_;
+    float shadow_offset;
     uint seed;
     uint frame;
     float3 f0_d;

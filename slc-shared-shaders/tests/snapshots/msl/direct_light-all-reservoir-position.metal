@@ -30,7 +30,7 @@ struct ViewParams {
     metal::packed_float3 eye;
     uint width;
     uint height;
-    uint pad0_;
+    float shadow_offset;
     uint seed;
     uint frame;
     metal::packed_float3 f0_d;
@@ -1060,6 +1060,7 @@ Shaded shade_pick(
     float w_4,
     float u1_3,
     float u2_3,
+    float eps_1,
     device type_4 const& slc_table,
     device type_8 const& lights,
     device type_4 const& rt2_2,
@@ -1067,7 +1068,7 @@ Shaded shade_pick(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Shaded s_1 = {};
-    Connection _e12 = connect(li_1, x_12, n_8, n_8, 1.0, w_4, u1_3, u2_3, 0.0, slc_table, lights, rt2_2, r2_2, _buffer_sizes);
+    Connection _e12 = connect(li_1, x_12, n_8, n_8, 1.0, w_4, u1_3, u2_3, eps_1, slc_table, lights, rt2_2, r2_2, _buffer_sizes);
     s_1.e = _e12.e;
     s_1.diffuse = metal::float3(0.0);
     s_1.specular = metal::float3(0.0);
@@ -1136,52 +1137,55 @@ kernel void main_(
     r = n_10;
     metal::float4 _e53 = lobe;
     metal::float4 _e54 = range_lobe(_e53);
-    uint _e57 = view.seed;
-    uint _e61 = view.width;
-    uint _e67 = view.frame;
-    uint _e68 = point_stream(_e57, (gid.y * _e61) + gid.x, _e67);
-    uint _e69 = pick_stream(_e68);
-    h = _e69;
-    metal::float3 _e79 = r;
-    Picks _e80 = bsh_collect(x_13, _e79, _e54, _e68, bsh_nodes, _buffer_sizes);
-    float _e83 = reservoir_weight(_e80.n, K);
+    float _e57 = view.shadow_offset;
+    metal::float3 _e60 = view.eye;
+    float eps_2 = _e57 * metal::length(_e60 - x_13);
+    uint _e66 = view.seed;
+    uint _e70 = view.width;
+    uint _e76 = view.frame;
+    uint _e77 = point_stream(_e66, (gid.y * _e70) + gid.x, _e76);
+    uint _e78 = pick_stream(_e77);
+    h = _e78;
+    metal::float3 _e88 = r;
+    Picks _e89 = bsh_collect(x_13, _e88, _e54, _e77, bsh_nodes, _buffer_sizes);
+    float _e92 = reservoir_weight(_e89.n, K);
     uint2 loop_bound_3 = uint2(4294967295u);
     bool loop_init_1 = true;
     while(true) {
         if (metal::all(loop_bound_3 == uint2(0u))) { break; }
         loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e108 = k;
-            k = _e108 + 1u;
+            uint _e117 = k;
+            k = _e117 + 1u;
         }
         loop_init_1 = false;
-        uint _e86 = k;
-        if (_e86 < metal::min(_e80.n, K)) {
+        uint _e95 = k;
+        if (_e95 < metal::min(_e89.n, K)) {
         } else {
             break;
         }
         {
-            uint _e91 = h;
-            uint _e92 = pcg_hash(_e91);
-            h = _e92;
-            uint _e93 = h;
-            float _e94 = xi_from_bits(_e93);
-            uint _e95 = h;
-            uint _e96 = pcg_hash(_e95);
-            h = _e96;
-            Shaded _e97 = t;
-            uint _e99 = k;
-            metal::float3 _e101 = r;
-            Material _e102 = m;
-            uint _e103 = h;
-            float _e104 = xi_from_bits(_e103);
-            Shaded _e105 = shade_pick(_e80.light.inner[_e99], x_13, n_10, _e101, _e54, _e102, _e83, _e94, _e104, slc_table, lights, rt2_2, r2_2, _buffer_sizes);
-            Shaded _e106 = add(_e97, _e105);
-            t = _e106;
+            uint _e100 = h;
+            uint _e101 = pcg_hash(_e100);
+            h = _e101;
+            uint _e102 = h;
+            float _e103 = xi_from_bits(_e102);
+            uint _e104 = h;
+            uint _e105 = pcg_hash(_e104);
+            h = _e105;
+            Shaded _e106 = t;
+            uint _e108 = k;
+            metal::float3 _e110 = r;
+            Material _e111 = m;
+            uint _e112 = h;
+            float _e113 = xi_from_bits(_e112);
+            Shaded _e114 = shade_pick(_e89.light.inner[_e108], x_13, n_10, _e110, _e54, _e111, _e92, _e103, _e113, eps_2, slc_table, lights, rt2_2, r2_2, _buffer_sizes);
+            Shaded _e115 = add(_e106, _e114);
+            t = _e115;
         }
     }
-    uint count = _e80.n;
-    metal::float3 _e113 = t.e;
-    out_tex.write(metal::float4(_e113, static_cast<float>(count)), metal::uint2(texel_1));
+    uint count = _e89.n;
+    metal::float3 _e122 = t.e;
+    out_tex.write(metal::float4(_e122, static_cast<float>(count)), metal::uint2(texel_1));
     return;
 }

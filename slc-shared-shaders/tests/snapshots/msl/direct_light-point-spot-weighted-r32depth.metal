@@ -5,11 +5,13 @@
 using metal::uint;
 
 struct _mslBufferSizes {
-    uint size4;
-    uint size5;
+    uint size0;
+    uint size1;
     uint size6;
     uint size7;
     uint size8;
+    uint size9;
+    uint size10;
 };
 
 struct GpuLight {
@@ -32,6 +34,20 @@ struct GpuLightCone {
     uint bvh_leaf;
     uint pad;
 };
+struct GpuGeoNode {
+    metal::packed_float3 bmin;
+    uint first;
+    metal::packed_float3 bmax;
+    uint count;
+};
+struct GpuTriangle {
+    metal::packed_float3 v0_;
+    uint material;
+    metal::packed_float3 v1_;
+    uint light;
+    metal::packed_float3 v2_;
+    uint pad;
+};
 struct ViewParams {
     metal::float4 c0_;
     metal::float4 c1_;
@@ -40,7 +56,7 @@ struct ViewParams {
     metal::packed_float3 eye;
     uint width;
     uint height;
-    uint pad0_;
+    float shadow_offset;
     uint seed;
     uint frame;
     metal::packed_float3 f0_d;
@@ -55,10 +71,19 @@ struct BshNode {
     uint light;
     float extent;
 };
-typedef GpuLight type_8[1];
-typedef BshNode type_9[1];
-typedef GpuLightCone type_10[1];
-struct type_11 {
+struct GeoHit {
+    float t;
+    uint tri;
+};
+typedef GpuGeoNode type_6[1];
+typedef GpuTriangle type_7[1];
+struct type_8 {
+    uint inner[64];
+};
+typedef GpuLight type_11[1];
+typedef BshNode type_12[1];
+typedef GpuLightCone type_13[1];
+struct type_14 {
     uint inner[8];
 };
 typedef uint BshNodes;
@@ -67,12 +92,12 @@ struct Connection {
     metal::packed_float3 y;
     float cos_x;
 };
-struct type_12 {
+struct type_15 {
     float inner[8];
 };
 struct WeightedPicks {
-    type_11 light;
-    type_12 w;
+    type_14 light;
+    type_15 w;
     float w_sum;
     uint n;
     uint h;
@@ -485,8 +510,8 @@ float cone_cos_of(
     if (_e21) {
         return 1.0;
     }
-    metal::float3 c_2 = metal::cross(v, d);
-    return metal::min(((vd * metal::sqrt(h2_)) + (metal::sqrt(metal::dot(c_2, c_2)) * a_2)) / d2_4, 1.0);
+    metal::float3 c_3 = metal::cross(v, d);
+    return metal::min(((vd * metal::sqrt(h2_)) + (metal::sqrt(metal::dot(c_3, c_3)) * a_2)) / d2_4, 1.0);
 }
 
 float cone_cos_toward(
@@ -637,6 +662,101 @@ bool finite3_(
     return _e20;
 }
 
+float shadow_margin(
+    float len
+) {
+    return 0.0001 * len;
+}
+
+float ray_inverse(
+    float x_4
+) {
+    return 1.0 / ((metal::abs(x_4) < 0.000000000000000000000000000001) ? 0.000000000000000000000000000001 : x_4);
+}
+
+metal::float3 ray_inverse3_(
+    metal::float3 d_2
+) {
+    float _e2 = ray_inverse(d_2.x);
+    float _e4 = ray_inverse(d_2.y);
+    float _e6 = ray_inverse(d_2.z);
+    return metal::float3(_e2, _e4, _e6);
+}
+
+float ray_aabb(
+    metal::float3 o,
+    metal::float3 inv_d,
+    metal::float3 bmin,
+    metal::float3 bmax,
+    float t_max
+) {
+    metal::float3 t0_ = (bmin - o) * inv_d;
+    metal::float3 t1_ = (bmax - o) * inv_d;
+    metal::float3 lo = metal::min(t0_, t1_);
+    metal::float3 hi = metal::max(t0_, t1_);
+    float t_in = metal::max(metal::max(lo.x, lo.y), metal::max(lo.z, 0.0));
+    float t_out = metal::min(metal::min(hi.x, hi.y), metal::min(hi.z, t_max));
+    if (t_in <= t_out) {
+        return t_in;
+    }
+    return -1.0;
+}
+
+float ray_triangle(
+    metal::float3 o_1,
+    metal::float3 d_3,
+    metal::float3 a_3,
+    metal::float3 b_2,
+    metal::float3 c_1,
+    float t_min,
+    float t_max_1
+) {
+    bool local_9 = {};
+    bool local_10 = {};
+    bool local_11 = {};
+    metal::float3 e1_ = b_2 - a_3;
+    metal::float3 e2_ = c_1 - a_3;
+    metal::float3 p_7 = metal::cross(d_3, e2_);
+    float det = metal::dot(e1_, p_7);
+    if (metal::abs(det) <= 0.0) {
+        return -1.0;
+    }
+    float inv = 1.0 / det;
+    metal::float3 s_3 = o_1 - a_3;
+    float u_3 = metal::dot(s_3, p_7) * inv;
+    if (!((u_3 < 0.0))) {
+        local_9 = u_3 > 1.0;
+    } else {
+        local_9 = true;
+    }
+    bool _e28 = local_9;
+    if (_e28) {
+        return -1.0;
+    }
+    metal::float3 q = metal::cross(s_3, e1_);
+    float v_9 = metal::dot(d_3, q) * inv;
+    if (!((v_9 < 0.0))) {
+        local_10 = (u_3 + v_9) > 1.0;
+    } else {
+        local_10 = true;
+    }
+    bool _e42 = local_10;
+    if (_e42) {
+        return -1.0;
+    }
+    float t_4 = metal::dot(e2_, q) * inv;
+    if (t_4 > t_min) {
+        local_11 = t_4 < t_max_1;
+    } else {
+        local_11 = false;
+    }
+    bool _e51 = local_11;
+    if (_e51) {
+        return t_4;
+    }
+    return -1.0;
+}
+
 metal::float3 light_intensity(
     GpuLight l,
     metal::float3 w_3
@@ -663,34 +783,134 @@ metal::float3 light_point(
     return l_1.p0_;
 }
 
-bool occluded(
-    metal::float3 a_3,
-    metal::float3 b_2
+GeoHit trace(
+    metal::float3 o_2,
+    metal::float3 d_4,
+    float t_min_1,
+    float t_max_2,
+    bool any_hit,
+    device type_6 const& geo_nodes,
+    device type_7 const& geo_tris,
+    constant _mslBufferSizes& _buffer_sizes
 ) {
-    return false;
+    GeoHit hit = {};
+    type_8 stack = {};
+    uint sp = 0u;
+    uint node_2 = 0u;
+    uint i = {};
+    hit.t = t_max_2;
+    hit.tri = NO_LIGHT;
+    if ((1 + (_buffer_sizes.size0 - 0 - 32) / 32) == 0u) {
+        GeoHit _e13 = hit;
+        return _e13;
+    }
+    metal::float3 _e14 = ray_inverse3_(d_4);
+    uint2 loop_bound = uint2(4294967295u);
+    while(true) {
+        if (metal::all(loop_bound == uint2(0u))) { break; }
+        loop_bound -= uint2(loop_bound.y == 0u, 1u);
+        uint _e21 = node_2;
+        GpuGeoNode n_8 = geo_nodes[_e21];
+        float _e27 = hit.t;
+        float _e28 = ray_aabb(o_2, _e14, n_8.bmin, n_8.bmax, _e27);
+        if (_e28 >= 0.0) {
+            if (n_8.count > 0u) {
+                i = n_8.first;
+                uint2 loop_bound_1 = uint2(4294967295u);
+                bool loop_init = true;
+                while(true) {
+                    if (metal::all(loop_bound_1 == uint2(0u))) { break; }
+                    loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+                    if (!loop_init) {
+                        uint _e58 = i;
+                        i = _e58 + 1u;
+                    }
+                    loop_init = false;
+                    uint _e36 = i;
+                    if (_e36 < (n_8.first + n_8.count)) {
+                    } else {
+                        break;
+                    }
+                    {
+                        uint _e42 = i;
+                        GpuTriangle t_5 = geo_tris[_e42];
+                        float _e49 = hit.t;
+                        float _e50 = ray_triangle(o_2, d_4, t_5.v0_, t_5.v1_, t_5.v2_, t_min_1, _e49);
+                        if (_e50 > 0.0) {
+                            hit.t = _e50;
+                            uint _e55 = i;
+                            hit.tri = _e55;
+                            if (any_hit) {
+                                GeoHit _e56 = hit;
+                                return _e56;
+                            }
+                        }
+                    }
+                }
+            } else {
+                uint _e60 = sp;
+                if (_e60 < 64u) {
+                    uint _e63 = sp;
+                    stack.inner[_e63] = n_8.first + 1u;
+                    uint _e68 = sp;
+                    sp = _e68 + 1u;
+                }
+                node_2 = n_8.first;
+                continue;
+            }
+        }
+        uint _e72 = sp;
+        if (_e72 == 0u) {
+            break;
+        }
+        uint _e75 = sp;
+        sp = _e75 - 1u;
+        uint _e78 = sp;
+        uint _e80 = stack.inner[_e78];
+        node_2 = _e80;
+    }
+    GeoHit _e81 = hit;
+    return _e81;
+}
+
+bool occluded(
+    metal::float3 a_4,
+    metal::float3 b_3,
+    device type_6 const& geo_nodes,
+    device type_7 const& geo_tris,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float3 dv = b_3 - a_4;
+    float len_1 = metal::length(dv);
+    if (len_1 <= 0.0) {
+        return false;
+    }
+    float _e7 = shadow_margin(len_1);
+    GeoHit _e12 = trace(a_4, dv / metal::float3(len_1), _e7, len_1 - _e7, true, geo_nodes, geo_tris, _buffer_sizes);
+    return _e12.tri != NO_LIGHT;
 }
 
 BshNode bsh_node(
     BshNodes nodes,
-    uint i,
-    device type_9 const& bsh_nodes,
+    uint i_1,
+    device type_12 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    BshNode _e4 = bsh_nodes[i];
+    BshNode _e4 = bsh_nodes[i_1];
     return _e4;
 }
 
 uint bsh_count(
     BshNodes nodes_1,
-    device type_9 const& bsh_nodes,
+    device type_12 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    return 1 + (_buffer_sizes.size7 - 0 - 32) / 32;
+    return 1 + (_buffer_sizes.size9 - 0 - 32) / 32;
 }
 
 uint bsh_first(
     BshNodes nodes_2,
-    device type_9 const& bsh_nodes,
+    device type_12 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e1 = bsh_count(nodes_2, bsh_nodes, _buffer_sizes);
@@ -701,96 +921,96 @@ uint bsh_first(
 }
 
 float bsh_inner_scale(
-    float a_4,
+    float a_5,
     metal::float3 v_2,
     float d2_6,
     metal::float3 r_5,
     metal::float4 rl_2
 ) {
-    float _e5 = cone_cos_of(v_2, d2_6, a_4, r_5);
+    float _e5 = cone_cos_of(v_2, d2_6, a_5, r_5);
     float _e8 = range_scale_at(rl_2, _e5 + 0.000002);
     return _e8;
 }
 
 bool bsh_reaches(
-    BshNode node_2,
-    metal::float3 x_4,
+    BshNode node_3,
+    metal::float3 x_5,
     metal::float3 r_6,
     metal::float4 rl_3
 ) {
-    bool local_9 = {};
-    bool local_10 = {};
-    bool _e6 = sphere_contains_point(node_2.center, node_2.radius, x_4);
+    bool local_12 = {};
+    bool local_13 = {};
+    bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_5);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
-        bool _e20 = sphere_contains_point(node_2.center, node_2.radius * (rl_3.w * 1.0001), x_4);
-        local_9 = !(_e20);
+        bool _e20 = sphere_contains_point(node_3.center, node_3.radius * (rl_3.w * 1.0001), x_5);
+        local_12 = !(_e20);
     } else {
-        local_9 = true;
+        local_12 = true;
     }
-    bool _e23 = local_9;
+    bool _e23 = local_12;
     if (_e23) {
         return false;
     }
-    float _e25 = bsh_range_bound(node_2);
-    metal::float3 v_9 = x_4 - node_2.center;
-    float d2_9 = metal::dot(v_9, v_9);
-    float reach_max = node_2.extent + ((rl_3.w * 1.001) * _e25);
+    float _e25 = bsh_range_bound(node_3);
+    metal::float3 v_10 = x_5 - node_3.center;
+    float d2_9 = metal::dot(v_10, v_10);
+    float reach_max = node_3.extent + ((rl_3.w * 1.001) * _e25);
     if (d2_9 > (reach_max * reach_max)) {
         return false;
     }
-    if (node_2.child == BSH_NONE) {
-        float _e43 = range_scale_toward(rl_3, node_2.center, node_2.extent, x_4, r_6);
-        float _e46 = bsh_scaled_radius(node_2, metal::sqrt(_e43));
-        bool _e47 = sphere_contains_point(node_2.center, _e46, x_4);
+    if (node_3.child == BSH_NONE) {
+        float _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_5, r_6);
+        float _e46 = bsh_scaled_radius(node_3, metal::sqrt(_e43));
+        bool _e47 = sphere_contains_point(node_3.center, _e46, x_5);
         return _e47;
     }
-    float _e50 = bsh_inner_scale(node_2.extent, -(v_9), d2_9, r_6, rl_3);
+    float _e50 = bsh_inner_scale(node_3.extent, -(v_10), d2_9, r_6, rl_3);
     float s_c = _e50 * 1.001;
-    float reach = node_2.extent + (metal::sqrt(s_c) * _e25);
-    if (d2_9 <= ((node_2.radius * node_2.radius) * s_c)) {
-        local_10 = d2_9 <= (reach * reach);
+    float reach = node_3.extent + (metal::sqrt(s_c) * _e25);
+    if (d2_9 <= ((node_3.radius * node_3.radius) * s_c)) {
+        local_13 = d2_9 <= (reach * reach);
     } else {
-        local_10 = false;
+        local_13 = false;
     }
-    bool _e67 = local_10;
+    bool _e67 = local_13;
     return _e67;
 }
 
 uint bsh_next_leaf_lobe(
     BshNodes nodes_3,
     uint start,
-    metal::float3 x_5,
+    metal::float3 x_6,
     metal::float3 r_7,
     metal::float4 rl_4,
-    device type_9 const& bsh_nodes,
+    device type_12 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint i_1 = {};
-    i_1 = start;
-    uint2 loop_bound = uint2(4294967295u);
+    uint i_2 = {};
+    i_2 = start;
+    uint2 loop_bound_2 = uint2(4294967295u);
     while(true) {
-        if (metal::all(loop_bound == uint2(0u))) { break; }
-        loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        uint _e6 = i_1;
+        if (metal::all(loop_bound_2 == uint2(0u))) { break; }
+        loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
+        uint _e6 = i_2;
         if (_e6 != BSH_NONE) {
         } else {
             break;
         }
         {
-            uint _e9 = i_1;
+            uint _e9 = i_2;
             BshNode _e10 = bsh_node(nodes_3, _e9, bsh_nodes, _buffer_sizes);
-            bool _e11 = bsh_reaches(_e10, x_5, r_7, rl_4);
+            bool _e11 = bsh_reaches(_e10, x_6, r_7, rl_4);
             if (_e11) {
                 if (_e10.child == BSH_NONE) {
-                    uint _e15 = i_1;
+                    uint _e15 = i_2;
                     return _e15;
                 }
-                i_1 = _e10.child;
+                i_2 = _e10.child;
             } else {
-                i_1 = _e10.next;
+                i_2 = _e10.next;
             }
         }
     }
@@ -799,7 +1019,7 @@ uint bsh_next_leaf_lobe(
 
 Connection connect(
     uint li,
-    metal::float3 x_6,
+    metal::float3 x_7,
     metal::float3 n_4,
     metal::float3 ng_1,
     float s,
@@ -807,112 +1027,114 @@ Connection connect(
     float u1_1,
     float u2_1,
     float eps,
-    device type_8 const& lights,
+    device type_6 const& geo_nodes,
+    device type_7 const& geo_tris,
+    device type_11 const& lights,
     device type_4 const& rt2_4,
     device type_4 const& r2_3,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Connection c_1 = {};
-    bool local_11 = {};
-    c_1.e = metal::float3(0.0);
+    Connection c_2 = {};
+    bool local_14 = {};
+    c_2.e = metal::float3(0.0);
     GpuLight l_2 = lights[li];
     metal::float3 _e17 = light_point(l_2, u1_1, u2_1);
-    c_1.y = _e17;
-    metal::float3 _e20 = c_1.y;
+    c_2.y = _e17;
+    metal::float3 _e20 = c_2.y;
     float _e23 = r2_3[li];
-    float _e25 = connection_cosine(x_6, _e20, n_4, ng_1, s * _e23);
-    c_1.cos_x = _e25;
-    float _e27 = c_1.cos_x;
+    float _e25 = connection_cosine(x_7, _e20, n_4, ng_1, s * _e23);
+    c_2.cos_x = _e25;
+    float _e27 = c_2.cos_x;
     if (!((_e27 <= 0.0))) {
-        metal::float3 _e36 = c_1.y;
-        bool _e37 = occluded(x_6 + (ng_1 * eps), _e36);
-        local_11 = _e37;
+        metal::float3 _e36 = c_2.y;
+        bool _e37 = occluded(x_7 + (ng_1 * eps), _e36, geo_nodes, geo_tris, _buffer_sizes);
+        local_14 = _e37;
     } else {
-        local_11 = true;
+        local_14 = true;
     }
-    bool _e39 = local_11;
+    bool _e39 = local_14;
     if (_e39) {
-        Connection _e40 = c_1;
+        Connection _e40 = c_2;
         return _e40;
     }
-    metal::float3 _e42 = c_1.y;
-    metal::float3 v_10 = x_6 - _e42;
-    float d2_10 = metal::dot(v_10, v_10);
-    metal::float3 _e49 = light_intensity(l_2, v_10 / metal::float3(metal::sqrt(d2_10)));
-    float _e51 = c_1.cos_x;
+    metal::float3 _e42 = c_2.y;
+    metal::float3 v_11 = x_7 - _e42;
+    float d2_10 = metal::dot(v_11, v_11);
+    metal::float3 _e49 = light_intensity(l_2, v_11 / metal::float3(metal::sqrt(d2_10)));
+    float _e51 = c_2.cos_x;
     float _e54 = rt2_4[li];
     float _e56 = connection_factor(_e51, d2_10, s * _e54, w_res);
-    c_1.e = _e49 * _e56;
-    Connection _e58 = c_1;
+    c_2.e = _e49 * _e56;
+    Connection _e58 = c_2;
     return _e58;
 }
 
 float light_range_scale(
     uint li_1,
-    metal::float3 x_7,
+    metal::float3 x_8,
     metal::float3 r_8,
     metal::float4 rl_5,
-    device type_10 const& light_cones,
+    device type_13 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuLightCone c_3 = light_cones[li_1];
-    float _e9 = range_scale_toward(rl_5, c_3.center, c_3.radius, x_7, r_8);
+    GpuLightCone c_4 = light_cones[li_1];
+    float _e9 = range_scale_toward(rl_5, c_4.center, c_4.radius, x_8, r_8);
     return _e9;
 }
 
 float light_weight(
     uint li_2,
-    metal::float3 x_8,
+    metal::float3 x_9,
     metal::float3 n_5,
     metal::float3 r_9,
     metal::float4 lobe_7,
     metal::float4 rl_6,
     device type_4 const& rt2_4,
-    device type_10 const& light_cones,
+    device type_13 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuLightCone c_4 = light_cones[li_2];
-    float _e15 = light_range_scale(li_2, x_8, r_9, rl_6, light_cones, _buffer_sizes);
+    GpuLightCone c_5 = light_cones[li_2];
+    float _e15 = light_range_scale(li_2, x_9, r_9, rl_6, light_cones, _buffer_sizes);
     float _e18 = rt2_4[li_2];
-    float _e20 = cone_weight(c_4.center, c_4.radius, c_4.phi, c_4.axis, c_4.cos_o, c_4.cos_e, _e15 * _e18, x_8, n_5, r_9, lobe_7);
+    float _e20 = cone_weight(c_5.center, c_5.radius, c_5.phi, c_5.axis, c_5.cos_o, c_5.cos_e, _e15 * _e18, x_9, n_5, r_9, lobe_7);
     return _e20;
 }
 
 WeightedPicks bsh_weighted_collect(
-    metal::float3 x_9,
+    metal::float3 x_10,
     metal::float3 n_6,
     metal::float3 r_10,
     metal::float4 lobe_8,
     metal::float4 rl_7,
     uint h0_,
     device type_4 const& rt2_4,
-    device type_9 const& bsh_nodes,
-    device type_10 const& light_cones,
+    device type_12 const& bsh_nodes,
+    device type_13 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     WeightedPicks picks = {};
     uint h_1 = {};
-    uint b_3 = {};
+    uint b_4 = {};
     uint s_1 = {};
     picks.w_sum = 0.0;
     picks.n = 0u;
     h_1 = h0_;
     uint _e14 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
-    uint _e15 = bsh_next_leaf_lobe(BSH, _e14, x_9, r_10, rl_7, bsh_nodes, _buffer_sizes);
-    b_3 = _e15;
-    uint2 loop_bound_1 = uint2(4294967295u);
-    bool loop_init = true;
+    uint _e15 = bsh_next_leaf_lobe(BSH, _e14, x_10, r_10, rl_7, bsh_nodes, _buffer_sizes);
+    b_4 = _e15;
+    uint2 loop_bound_3 = uint2(4294967295u);
+    bool loop_init_1 = true;
     while(true) {
-        if (metal::all(loop_bound_1 == uint2(0u))) { break; }
-        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
-        if (!loop_init) {
-            uint _e58 = b_3;
+        if (metal::all(loop_bound_3 == uint2(0u))) { break; }
+        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+        if (!loop_init_1) {
+            uint _e58 = b_4;
             uint _e61 = bsh_nodes[_e58].next;
-            uint _e62 = bsh_next_leaf_lobe(BSH, _e61, x_9, r_10, rl_7, bsh_nodes, _buffer_sizes);
-            b_3 = _e62;
+            uint _e62 = bsh_next_leaf_lobe(BSH, _e61, x_10, r_10, rl_7, bsh_nodes, _buffer_sizes);
+            b_4 = _e62;
         }
-        loop_init = false;
-        uint _e17 = b_3;
+        loop_init_1 = false;
+        uint _e17 = b_4;
         if (_e17 != BSH_NONE) {
         } else {
             break;
@@ -920,23 +1142,23 @@ WeightedPicks bsh_weighted_collect(
         {
             uint _e21 = picks.n;
             picks.n = _e21 + 1u;
-            uint _e25 = b_3;
+            uint _e25 = b_4;
             uint li_4 = bsh_nodes[_e25].light;
-            float _e29 = light_weight(li_4, x_9, n_6, r_10, lobe_8, rl_7, rt2_4, light_cones, _buffer_sizes);
+            float _e29 = light_weight(li_4, x_10, n_6, r_10, lobe_8, rl_7, rt2_4, light_cones, _buffer_sizes);
             if (_e29 > 0.0) {
                 float _e33 = picks.w_sum;
                 picks.w_sum = _e33 + _e29;
                 s_1 = 0u;
-                uint2 loop_bound_2 = uint2(4294967295u);
-                bool loop_init_1 = true;
+                uint2 loop_bound_4 = uint2(4294967295u);
+                bool loop_init_2 = true;
                 while(true) {
-                    if (metal::all(loop_bound_2 == uint2(0u))) { break; }
-                    loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
-                    if (!loop_init_1) {
+                    if (metal::all(loop_bound_4 == uint2(0u))) { break; }
+                    loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+                    if (!loop_init_2) {
                         uint _e54 = s_1;
                         s_1 = _e54 + 1u;
                     }
-                    loop_init_1 = false;
+                    loop_init_2 = false;
                     uint _e37 = s_1;
                     if (_e37 < K) {
                     } else {
@@ -978,30 +1200,30 @@ metal::float4 unproject_pixel(
     float height,
     float depth
 ) {
-    bool local_12 = {};
-    bool local_13 = {};
+    bool local_15 = {};
+    bool local_16 = {};
     if (depth > 0.0) {
-        local_12 = depth < 1.0;
+        local_15 = depth < 1.0;
     } else {
-        local_12 = false;
+        local_15 = false;
     }
-    bool _e16 = local_12;
+    bool _e16 = local_15;
     if (!(_e16)) {
         return metal::float4(0.0, 0.0, 0.0, 0.0);
     }
-    float x_11 = (((px + 0.5) / width) * 2.0) - 1.0;
+    float x_12 = (((px + 0.5) / width) * 2.0) - 1.0;
     float y_1 = 1.0 - (((py + 0.5) / height) * 2.0);
-    metal::float4 p_7 = (((c0_ * x_11) + (c1_ * y_1)) + (c2_ * depth)) + c3_;
-    metal::float3 q = metal::float3(p_7.x / p_7.w, p_7.y / p_7.w, p_7.z / p_7.w);
-    if (metal::abs(p_7.w) > 0.0) {
-        bool _e59 = finite3_(q);
-        local_13 = _e59;
+    metal::float4 p_8 = (((c0_ * x_12) + (c1_ * y_1)) + (c2_ * depth)) + c3_;
+    metal::float3 q_1 = metal::float3(p_8.x / p_8.w, p_8.y / p_8.w, p_8.z / p_8.w);
+    if (metal::abs(p_8.w) > 0.0) {
+        bool _e59 = finite3_(q_1);
+        local_16 = _e59;
     } else {
-        local_13 = false;
+        local_16 = false;
     }
-    bool _e61 = local_13;
+    bool _e61 = local_16;
     if (_e61) {
-        return metal::float4(q.x, q.y, q.z, 1.0);
+        return metal::float4(q_1.x, q_1.y, q_1.z, 1.0);
     }
     return metal::float4(0.0, 0.0, 0.0, 0.0);
 }
@@ -1012,20 +1234,20 @@ metal::float4 surface_at(
     metal::texture2d<float, metal::access::sample> depth_tex
 ) {
     metal::float4 _e3 = depth_tex.read(metal::uint2(texel), 0);
-    float d_2 = _e3.x;
+    float d_5 = _e3.x;
     metal::float4 _e7 = view.c0_;
     metal::float4 _e10 = view.c1_;
     metal::float4 _e13 = view.c2_;
     metal::float4 _e16 = view.c3_;
     uint _e23 = view.width;
     uint _e27 = view.height;
-    metal::float4 _e29 = unproject_pixel(_e7, _e10, _e13, _e16, static_cast<float>(texel.x), static_cast<float>(texel.y), static_cast<float>(_e23), static_cast<float>(_e27), d_2);
+    metal::float4 _e29 = unproject_pixel(_e7, _e10, _e13, _e16, static_cast<float>(texel.x), static_cast<float>(texel.y), static_cast<float>(_e23), static_cast<float>(_e27), d_5);
     return _e29;
 }
 
 Shaded shade_pick(
     uint li_3,
-    metal::float3 x_10,
+    metal::float3 x_11,
     metal::float3 n_7,
     metal::float3 r_11,
     metal::float4 rl_8,
@@ -1033,13 +1255,16 @@ Shaded shade_pick(
     float w_4,
     float u1_2,
     float u2_2,
-    device type_8 const& lights,
+    float eps_1,
+    device type_6 const& geo_nodes,
+    device type_7 const& geo_tris,
+    device type_11 const& lights,
     device type_4 const& rt2_4,
     device type_4 const& r2_3,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Shaded s_2 = {};
-    Connection _e12 = connect(li_3, x_10, n_7, n_7, 1.0, w_4, u1_2, u2_2, 0.0, lights, rt2_4, r2_3, _buffer_sizes);
+    Connection _e12 = connect(li_3, x_11, n_7, n_7, 1.0, w_4, u1_2, u2_2, eps_1, geo_nodes, geo_tris, lights, rt2_4, r2_3, _buffer_sizes);
     s_2.e = _e12.e;
     s_2.diffuse = metal::float3(0.0);
     s_2.specular = metal::float3(0.0);
@@ -1048,25 +1273,27 @@ Shaded shade_pick(
 }
 
 Shaded add(
-    Shaded a_5,
-    Shaded b_4
+    Shaded a_6,
+    Shaded b_5
 ) {
-    return Shaded {a_5.e + b_4.e, a_5.diffuse + b_4.diffuse, a_5.specular + b_4.specular};
+    return Shaded {a_6.e + b_5.e, a_6.diffuse + b_5.diffuse, a_6.specular + b_5.specular};
 }
 
 struct main_Input {
 };
 kernel void main_(
   metal::uint3 gid [[thread_position_in_grid]]
+, device type_6 const& geo_nodes [[user(fake0)]]
+, device type_7 const& geo_tris [[user(fake0)]]
 , constant ViewParams& view [[user(fake0)]]
 , metal::texture2d<float, metal::access::sample> depth_tex [[user(fake0)]]
 , metal::texture2d<float, metal::access::sample> normal_tex [[user(fake0)]]
 , metal::texture2d<float, metal::access::write> out_tex [[user(fake0)]]
-, device type_8 const& lights [[user(fake0)]]
+, device type_11 const& lights [[user(fake0)]]
 , device type_4 const& rt2_4 [[user(fake0)]]
 , device type_4 const& r2_3 [[user(fake0)]]
-, device type_9 const& bsh_nodes [[user(fake0)]]
-, device type_10 const& light_cones [[user(fake0)]]
+, device type_12 const& bsh_nodes [[user(fake0)]]
+, device type_13 const& light_cones [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
     bool local = {};
@@ -1103,61 +1330,64 @@ kernel void main_(
         out_tex.write(metal::float4(0.0), metal::uint2(texel_1));
         return;
     }
-    metal::float3 x_12 = _e21.xyz;
-    metal::float3 n_8 = nn / metal::float3(metal::sqrt(len2_));
-    r = n_8;
+    metal::float3 x_13 = _e21.xyz;
+    metal::float3 n_9 = nn / metal::float3(metal::sqrt(len2_));
+    r = n_9;
     metal::float4 _e53 = lobe;
     metal::float4 _e54 = range_lobe(_e53);
-    uint _e57 = view.seed;
-    uint _e61 = view.width;
-    uint _e67 = view.frame;
-    uint _e68 = point_stream(_e57, (gid.y * _e61) + gid.x, _e67);
-    uint _e69 = pick_stream(_e68);
-    h = _e69;
-    metal::float3 _e79 = r;
-    metal::float4 _e80 = lobe;
-    WeightedPicks _e81 = bsh_weighted_collect(x_12, n_8, _e79, _e80, _e54, _e68, rt2_4, bsh_nodes, light_cones, _buffer_sizes);
-    if (_e81.w_sum > 0.0) {
-        uint2 loop_bound_3 = uint2(4294967295u);
-        bool loop_init_2 = true;
+    float _e57 = view.shadow_offset;
+    metal::float3 _e60 = view.eye;
+    float eps_2 = _e57 * metal::length(_e60 - x_13);
+    uint _e66 = view.seed;
+    uint _e70 = view.width;
+    uint _e76 = view.frame;
+    uint _e77 = point_stream(_e66, (gid.y * _e70) + gid.x, _e76);
+    uint _e78 = pick_stream(_e77);
+    h = _e78;
+    metal::float3 _e88 = r;
+    metal::float4 _e89 = lobe;
+    WeightedPicks _e90 = bsh_weighted_collect(x_13, n_9, _e88, _e89, _e54, _e77, rt2_4, bsh_nodes, light_cones, _buffer_sizes);
+    if (_e90.w_sum > 0.0) {
+        uint2 loop_bound_5 = uint2(4294967295u);
+        bool loop_init_3 = true;
         while(true) {
-            if (metal::all(loop_bound_3 == uint2(0u))) { break; }
-            loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-            if (!loop_init_2) {
-                uint _e113 = k;
-                k = _e113 + 1u;
+            if (metal::all(loop_bound_5 == uint2(0u))) { break; }
+            loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+            if (!loop_init_3) {
+                uint _e122 = k;
+                k = _e122 + 1u;
             }
-            loop_init_2 = false;
-            uint _e87 = k;
-            if (_e87 < K) {
+            loop_init_3 = false;
+            uint _e96 = k;
+            if (_e96 < K) {
             } else {
                 break;
             }
             {
-                uint _e90 = h;
-                uint _e91 = pcg_hash(_e90);
-                h = _e91;
-                uint _e92 = h;
-                float _e93 = xi_from_bits(_e92);
-                uint _e94 = h;
-                uint _e95 = pcg_hash(_e94);
-                h = _e95;
-                Shaded _e96 = t;
-                uint _e98 = k;
-                metal::float3 _e100 = r;
-                Material _e101 = m;
-                uint _e104 = k;
-                float _e107 = weighted_pick_weight(_e81.w_sum, _e81.w.inner[_e104], K);
-                uint _e108 = h;
-                float _e109 = xi_from_bits(_e108);
-                Shaded _e110 = shade_pick(_e81.light.inner[_e98], x_12, n_8, _e100, _e54, _e101, _e107, _e93, _e109, lights, rt2_4, r2_3, _buffer_sizes);
-                Shaded _e111 = add(_e96, _e110);
-                t = _e111;
+                uint _e99 = h;
+                uint _e100 = pcg_hash(_e99);
+                h = _e100;
+                uint _e101 = h;
+                float _e102 = xi_from_bits(_e101);
+                uint _e103 = h;
+                uint _e104 = pcg_hash(_e103);
+                h = _e104;
+                Shaded _e105 = t;
+                uint _e107 = k;
+                metal::float3 _e109 = r;
+                Material _e110 = m;
+                uint _e113 = k;
+                float _e116 = weighted_pick_weight(_e90.w_sum, _e90.w.inner[_e113], K);
+                uint _e117 = h;
+                float _e118 = xi_from_bits(_e117);
+                Shaded _e119 = shade_pick(_e90.light.inner[_e107], x_13, n_9, _e109, _e54, _e110, _e116, _e102, _e118, eps_2, geo_nodes, geo_tris, lights, rt2_4, r2_3, _buffer_sizes);
+                Shaded _e120 = add(_e105, _e119);
+                t = _e120;
             }
         }
     }
-    uint count = _e81.n;
-    metal::float3 _e118 = t.e;
-    out_tex.write(metal::float4(_e118, static_cast<float>(count)), metal::uint2(texel_1));
+    uint count = _e90.n;
+    metal::float3 _e127 = t.e;
+    out_tex.write(metal::float4(_e127, static_cast<float>(count)), metal::uint2(texel_1));
     return;
 }

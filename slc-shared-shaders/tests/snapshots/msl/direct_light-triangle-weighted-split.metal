@@ -5,11 +5,13 @@
 using metal::uint;
 
 struct _mslBufferSizes {
-    uint size7;
-    uint size8;
+    uint size0;
+    uint size1;
     uint size9;
     uint size10;
     uint size11;
+    uint size12;
+    uint size13;
 };
 
 struct GpuLight {
@@ -32,6 +34,20 @@ struct GpuLightCone {
     uint bvh_leaf;
     uint pad;
 };
+struct GpuGeoNode {
+    metal::packed_float3 bmin;
+    uint first;
+    metal::packed_float3 bmax;
+    uint count;
+};
+struct GpuTriangle {
+    metal::packed_float3 v0_;
+    uint material;
+    metal::packed_float3 v1_;
+    uint light;
+    metal::packed_float3 v2_;
+    uint pad;
+};
 struct ViewParams {
     metal::float4 c0_;
     metal::float4 c1_;
@@ -40,7 +56,7 @@ struct ViewParams {
     metal::packed_float3 eye;
     uint width;
     uint height;
-    uint pad0_;
+    float shadow_offset;
     uint seed;
     uint frame;
     metal::packed_float3 f0_d;
@@ -55,10 +71,19 @@ struct BshNode {
     uint light;
     float extent;
 };
-typedef GpuLight type_8[1];
-typedef BshNode type_9[1];
-typedef GpuLightCone type_10[1];
-struct type_11 {
+struct GeoHit {
+    float t;
+    uint tri;
+};
+typedef GpuGeoNode type_6[1];
+typedef GpuTriangle type_7[1];
+struct type_8 {
+    uint inner[64];
+};
+typedef GpuLight type_11[1];
+typedef BshNode type_12[1];
+typedef GpuLightCone type_13[1];
+struct type_14 {
     uint inner[8];
 };
 typedef uint BshNodes;
@@ -67,12 +92,12 @@ struct Connection {
     metal::packed_float3 y;
     float cos_x;
 };
-struct type_12 {
+struct type_15 {
     float inner[8];
 };
 struct WeightedPicks {
-    type_11 light;
-    type_12 w;
+    type_14 light;
+    type_15 w;
     float w_sum;
     uint n;
     uint h;
@@ -387,9 +412,9 @@ metal::float3 fresnel_schlick(
     float f90_,
     float v_h
 ) {
-    float c_5 = metal::saturate(1.0 - v_h);
-    float c2_ = c_5 * c_5;
-    return f0_ + ((metal::float3(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_5));
+    float c_6 = metal::saturate(1.0 - v_h);
+    float c2_ = c_6 * c_6;
+    return f0_ + ((metal::float3(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_6));
 }
 
 metal::float3 specular_fresnel(
@@ -452,8 +477,8 @@ metal::float3 specular_brdf(
     metal::float3 hs = v_1 + l_1;
     float inv = 1.0 / metal::sqrt(metal::dot(hs, hs));
     metal::float3 h_3 = hs * inv;
-    metal::float3 c_6 = metal::cross(n_2, h_3);
-    float _e32 = ggx_d(metal::dot(n_2, h_3), metal::dot(c_6, c_6), alpha_3);
+    metal::float3 c_7 = metal::cross(n_2, h_3);
+    float _e32 = ggx_d(metal::dot(n_2, h_3), metal::dot(c_7, c_7), alpha_3);
     metal::float3 _e34 = specular_fresnel(base_2, metallic_2, f0_d_2, f90_d_2, metal::dot(v_1, h_3));
     float _e35 = smith_visibility(n_l_1, n_v_2, alpha_3);
     return _e34 * (_e32 * _e35);
@@ -657,8 +682,8 @@ float cone_cos_of(
     if (_e21) {
         return 1.0;
     }
-    metal::float3 c_7 = metal::cross(v_3, d);
-    return metal::min(((vd * metal::sqrt(h2_)) + (metal::sqrt(metal::dot(c_7, c_7)) * a_3)) / d2_4, 1.0);
+    metal::float3 c_8 = metal::cross(v_3, d);
+    return metal::min(((vd * metal::sqrt(h2_)) + (metal::sqrt(metal::dot(c_8, c_8)) * a_3)) / d2_4, 1.0);
 }
 
 float cone_cos_toward(
@@ -789,6 +814,46 @@ float cone_weight(
     return _e22;
 }
 
+float shadow_margin(
+    float len
+) {
+    return 0.0001 * len;
+}
+
+float ray_inverse(
+    float x_4
+) {
+    return 1.0 / ((metal::abs(x_4) < 0.000000000000000000000000000001) ? 0.000000000000000000000000000001 : x_4);
+}
+
+metal::float3 ray_inverse3_(
+    metal::float3 d_2
+) {
+    float _e2 = ray_inverse(d_2.x);
+    float _e4 = ray_inverse(d_2.y);
+    float _e6 = ray_inverse(d_2.z);
+    return metal::float3(_e2, _e4, _e6);
+}
+
+float ray_aabb(
+    metal::float3 o,
+    metal::float3 inv_d,
+    metal::float3 bmin,
+    metal::float3 bmax,
+    float t_max
+) {
+    metal::float3 t0_ = (bmin - o) * inv_d;
+    metal::float3 t1_ = (bmax - o) * inv_d;
+    metal::float3 lo = metal::min(t0_, t1_);
+    metal::float3 hi = metal::max(t0_, t1_);
+    float t_in = metal::max(metal::max(lo.x, lo.y), metal::max(lo.z, 0.0));
+    float t_out = metal::min(metal::min(hi.x, hi.y), metal::min(hi.z, t_max));
+    if (t_in <= t_out) {
+        return t_in;
+    }
+    return -1.0;
+}
+
 metal::float3 triangle_normal(
     metal::float3 a_4,
     metal::float3 b_3,
@@ -807,6 +872,61 @@ metal::float3 triangle_normal(
         return metal::float3(0.0, 0.0, 0.0);
     }
     return n_11 / metal::float3(metal::sqrt(l2_));
+}
+
+float ray_triangle(
+    metal::float3 o_1,
+    metal::float3 d_3,
+    metal::float3 a_5,
+    metal::float3 b_4,
+    metal::float3 c_4,
+    float t_min,
+    float t_max_1
+) {
+    bool local_13 = {};
+    bool local_14 = {};
+    bool local_15 = {};
+    metal::float3 e1_ = b_4 - a_5;
+    metal::float3 e2_ = c_4 - a_5;
+    metal::float3 p_7 = metal::cross(d_3, e2_);
+    float det = metal::dot(e1_, p_7);
+    if (metal::abs(det) <= 0.0) {
+        return -1.0;
+    }
+    float inv_1 = 1.0 / det;
+    metal::float3 s_3 = o_1 - a_5;
+    float u_3 = metal::dot(s_3, p_7) * inv_1;
+    if (!((u_3 < 0.0))) {
+        local_13 = u_3 > 1.0;
+    } else {
+        local_13 = true;
+    }
+    bool _e28 = local_13;
+    if (_e28) {
+        return -1.0;
+    }
+    metal::float3 q = metal::cross(s_3, e1_);
+    float v_11 = metal::dot(d_3, q) * inv_1;
+    if (!((v_11 < 0.0))) {
+        local_14 = (u_3 + v_11) > 1.0;
+    } else {
+        local_14 = true;
+    }
+    bool _e42 = local_14;
+    if (_e42) {
+        return -1.0;
+    }
+    float t_3 = metal::dot(e2_, q) * inv_1;
+    if (t_3 > t_min) {
+        local_15 = t_3 < t_max_1;
+    } else {
+        local_15 = false;
+    }
+    bool _e51 = local_15;
+    if (_e51) {
+        return t_3;
+    }
+    return -1.0;
 }
 
 metal::float3 light_intensity(
@@ -837,34 +957,134 @@ metal::float3 light_point(
     return l_3.p0_;
 }
 
-bool occluded(
-    metal::float3 a_5,
-    metal::float3 b_4
+GeoHit trace(
+    metal::float3 o_2,
+    metal::float3 d_4,
+    float t_min_1,
+    float t_max_2,
+    bool any_hit,
+    device type_6 const& geo_nodes,
+    device type_7 const& geo_tris,
+    constant _mslBufferSizes& _buffer_sizes
 ) {
-    return false;
+    GeoHit hit = {};
+    type_8 stack = {};
+    uint sp = 0u;
+    uint node_2 = 0u;
+    uint i = {};
+    hit.t = t_max_2;
+    hit.tri = NO_LIGHT;
+    if ((1 + (_buffer_sizes.size0 - 0 - 32) / 32) == 0u) {
+        GeoHit _e13 = hit;
+        return _e13;
+    }
+    metal::float3 _e14 = ray_inverse3_(d_4);
+    uint2 loop_bound = uint2(4294967295u);
+    while(true) {
+        if (metal::all(loop_bound == uint2(0u))) { break; }
+        loop_bound -= uint2(loop_bound.y == 0u, 1u);
+        uint _e21 = node_2;
+        GpuGeoNode n_12 = geo_nodes[_e21];
+        float _e27 = hit.t;
+        float _e28 = ray_aabb(o_2, _e14, n_12.bmin, n_12.bmax, _e27);
+        if (_e28 >= 0.0) {
+            if (n_12.count > 0u) {
+                i = n_12.first;
+                uint2 loop_bound_1 = uint2(4294967295u);
+                bool loop_init = true;
+                while(true) {
+                    if (metal::all(loop_bound_1 == uint2(0u))) { break; }
+                    loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+                    if (!loop_init) {
+                        uint _e58 = i;
+                        i = _e58 + 1u;
+                    }
+                    loop_init = false;
+                    uint _e36 = i;
+                    if (_e36 < (n_12.first + n_12.count)) {
+                    } else {
+                        break;
+                    }
+                    {
+                        uint _e42 = i;
+                        GpuTriangle t_4 = geo_tris[_e42];
+                        float _e49 = hit.t;
+                        float _e50 = ray_triangle(o_2, d_4, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e49);
+                        if (_e50 > 0.0) {
+                            hit.t = _e50;
+                            uint _e55 = i;
+                            hit.tri = _e55;
+                            if (any_hit) {
+                                GeoHit _e56 = hit;
+                                return _e56;
+                            }
+                        }
+                    }
+                }
+            } else {
+                uint _e60 = sp;
+                if (_e60 < 64u) {
+                    uint _e63 = sp;
+                    stack.inner[_e63] = n_12.first + 1u;
+                    uint _e68 = sp;
+                    sp = _e68 + 1u;
+                }
+                node_2 = n_12.first;
+                continue;
+            }
+        }
+        uint _e72 = sp;
+        if (_e72 == 0u) {
+            break;
+        }
+        uint _e75 = sp;
+        sp = _e75 - 1u;
+        uint _e78 = sp;
+        uint _e80 = stack.inner[_e78];
+        node_2 = _e80;
+    }
+    GeoHit _e81 = hit;
+    return _e81;
+}
+
+bool occluded(
+    metal::float3 a_6,
+    metal::float3 b_5,
+    device type_6 const& geo_nodes,
+    device type_7 const& geo_tris,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float3 dv = b_5 - a_6;
+    float len_1 = metal::length(dv);
+    if (len_1 <= 0.0) {
+        return false;
+    }
+    float _e7 = shadow_margin(len_1);
+    GeoHit _e12 = trace(a_6, dv / metal::float3(len_1), _e7, len_1 - _e7, true, geo_nodes, geo_tris, _buffer_sizes);
+    return _e12.tri != NO_LIGHT;
 }
 
 BshNode bsh_node(
     BshNodes nodes,
-    uint i,
-    device type_9 const& bsh_nodes,
+    uint i_1,
+    device type_12 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    BshNode _e4 = bsh_nodes[i];
+    BshNode _e4 = bsh_nodes[i_1];
     return _e4;
 }
 
 uint bsh_count(
     BshNodes nodes_1,
-    device type_9 const& bsh_nodes,
+    device type_12 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    return 1 + (_buffer_sizes.size10 - 0 - 32) / 32;
+    return 1 + (_buffer_sizes.size12 - 0 - 32) / 32;
 }
 
 uint bsh_first(
     BshNodes nodes_2,
-    device type_9 const& bsh_nodes,
+    device type_12 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e1 = bsh_count(nodes_2, bsh_nodes, _buffer_sizes);
@@ -875,96 +1095,96 @@ uint bsh_first(
 }
 
 float bsh_inner_scale(
-    float a_6,
+    float a_7,
     metal::float3 v_4,
     float d2_6,
     metal::float3 r_5,
     metal::float4 rl_2
 ) {
-    float _e5 = cone_cos_of(v_4, d2_6, a_6, r_5);
+    float _e5 = cone_cos_of(v_4, d2_6, a_7, r_5);
     float _e8 = range_scale_at(rl_2, _e5 + 0.000002);
     return _e8;
 }
 
 bool bsh_reaches(
-    BshNode node_2,
-    metal::float3 x_4,
+    BshNode node_3,
+    metal::float3 x_5,
     metal::float3 r_6,
     metal::float4 rl_3
 ) {
-    bool local_13 = {};
-    bool local_14 = {};
-    bool _e6 = sphere_contains_point(node_2.center, node_2.radius, x_4);
+    bool local_16 = {};
+    bool local_17 = {};
+    bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_5);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
-        bool _e20 = sphere_contains_point(node_2.center, node_2.radius * (rl_3.w * 1.0001), x_4);
-        local_13 = !(_e20);
+        bool _e20 = sphere_contains_point(node_3.center, node_3.radius * (rl_3.w * 1.0001), x_5);
+        local_16 = !(_e20);
     } else {
-        local_13 = true;
+        local_16 = true;
     }
-    bool _e23 = local_13;
+    bool _e23 = local_16;
     if (_e23) {
         return false;
     }
-    float _e25 = bsh_range_bound(node_2);
-    metal::float3 v_11 = x_4 - node_2.center;
-    float d2_9 = metal::dot(v_11, v_11);
-    float reach_max = node_2.extent + ((rl_3.w * 1.001) * _e25);
+    float _e25 = bsh_range_bound(node_3);
+    metal::float3 v_12 = x_5 - node_3.center;
+    float d2_9 = metal::dot(v_12, v_12);
+    float reach_max = node_3.extent + ((rl_3.w * 1.001) * _e25);
     if (d2_9 > (reach_max * reach_max)) {
         return false;
     }
-    if (node_2.child == BSH_NONE) {
-        float _e43 = range_scale_toward(rl_3, node_2.center, node_2.extent, x_4, r_6);
-        float _e46 = bsh_scaled_radius(node_2, metal::sqrt(_e43));
-        bool _e47 = sphere_contains_point(node_2.center, _e46, x_4);
+    if (node_3.child == BSH_NONE) {
+        float _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_5, r_6);
+        float _e46 = bsh_scaled_radius(node_3, metal::sqrt(_e43));
+        bool _e47 = sphere_contains_point(node_3.center, _e46, x_5);
         return _e47;
     }
-    float _e50 = bsh_inner_scale(node_2.extent, -(v_11), d2_9, r_6, rl_3);
+    float _e50 = bsh_inner_scale(node_3.extent, -(v_12), d2_9, r_6, rl_3);
     float s_c = _e50 * 1.001;
-    float reach = node_2.extent + (metal::sqrt(s_c) * _e25);
-    if (d2_9 <= ((node_2.radius * node_2.radius) * s_c)) {
-        local_14 = d2_9 <= (reach * reach);
+    float reach = node_3.extent + (metal::sqrt(s_c) * _e25);
+    if (d2_9 <= ((node_3.radius * node_3.radius) * s_c)) {
+        local_17 = d2_9 <= (reach * reach);
     } else {
-        local_14 = false;
+        local_17 = false;
     }
-    bool _e67 = local_14;
+    bool _e67 = local_17;
     return _e67;
 }
 
 uint bsh_next_leaf_lobe(
     BshNodes nodes_3,
     uint start,
-    metal::float3 x_5,
+    metal::float3 x_6,
     metal::float3 r_7,
     metal::float4 rl_4,
-    device type_9 const& bsh_nodes,
+    device type_12 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint i_1 = {};
-    i_1 = start;
-    uint2 loop_bound = uint2(4294967295u);
+    uint i_2 = {};
+    i_2 = start;
+    uint2 loop_bound_2 = uint2(4294967295u);
     while(true) {
-        if (metal::all(loop_bound == uint2(0u))) { break; }
-        loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        uint _e6 = i_1;
+        if (metal::all(loop_bound_2 == uint2(0u))) { break; }
+        loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
+        uint _e6 = i_2;
         if (_e6 != BSH_NONE) {
         } else {
             break;
         }
         {
-            uint _e9 = i_1;
+            uint _e9 = i_2;
             BshNode _e10 = bsh_node(nodes_3, _e9, bsh_nodes, _buffer_sizes);
-            bool _e11 = bsh_reaches(_e10, x_5, r_7, rl_4);
+            bool _e11 = bsh_reaches(_e10, x_6, r_7, rl_4);
             if (_e11) {
                 if (_e10.child == BSH_NONE) {
-                    uint _e15 = i_1;
+                    uint _e15 = i_2;
                     return _e15;
                 }
-                i_1 = _e10.child;
+                i_2 = _e10.child;
             } else {
-                i_1 = _e10.next;
+                i_2 = _e10.next;
             }
         }
     }
@@ -973,7 +1193,7 @@ uint bsh_next_leaf_lobe(
 
 Connection connect(
     uint li,
-    metal::float3 x_6,
+    metal::float3 x_7,
     metal::float3 n_7,
     metal::float3 ng_1,
     float s,
@@ -981,112 +1201,114 @@ Connection connect(
     float u1_2,
     float u2_2,
     float eps,
-    device type_8 const& lights,
+    device type_6 const& geo_nodes,
+    device type_7 const& geo_tris,
+    device type_11 const& lights,
     device type_4 const& rt2_4,
     device type_4 const& r2_3,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Connection c_4 = {};
-    bool local_15 = {};
-    c_4.e = metal::float3(0.0);
+    Connection c_5 = {};
+    bool local_18 = {};
+    c_5.e = metal::float3(0.0);
     GpuLight l_4 = lights[li];
     metal::float3 _e17 = light_point(l_4, u1_2, u2_2);
-    c_4.y = _e17;
-    metal::float3 _e20 = c_4.y;
+    c_5.y = _e17;
+    metal::float3 _e20 = c_5.y;
     float _e23 = r2_3[li];
-    float _e25 = connection_cosine(x_6, _e20, n_7, ng_1, s * _e23);
-    c_4.cos_x = _e25;
-    float _e27 = c_4.cos_x;
+    float _e25 = connection_cosine(x_7, _e20, n_7, ng_1, s * _e23);
+    c_5.cos_x = _e25;
+    float _e27 = c_5.cos_x;
     if (!((_e27 <= 0.0))) {
-        metal::float3 _e36 = c_4.y;
-        bool _e37 = occluded(x_6 + (ng_1 * eps), _e36);
-        local_15 = _e37;
+        metal::float3 _e36 = c_5.y;
+        bool _e37 = occluded(x_7 + (ng_1 * eps), _e36, geo_nodes, geo_tris, _buffer_sizes);
+        local_18 = _e37;
     } else {
-        local_15 = true;
+        local_18 = true;
     }
-    bool _e39 = local_15;
+    bool _e39 = local_18;
     if (_e39) {
-        Connection _e40 = c_4;
+        Connection _e40 = c_5;
         return _e40;
     }
-    metal::float3 _e42 = c_4.y;
-    metal::float3 v_12 = x_6 - _e42;
-    float d2_10 = metal::dot(v_12, v_12);
-    metal::float3 _e49 = light_intensity(l_4, v_12 / metal::float3(metal::sqrt(d2_10)));
-    float _e51 = c_4.cos_x;
+    metal::float3 _e42 = c_5.y;
+    metal::float3 v_13 = x_7 - _e42;
+    float d2_10 = metal::dot(v_13, v_13);
+    metal::float3 _e49 = light_intensity(l_4, v_13 / metal::float3(metal::sqrt(d2_10)));
+    float _e51 = c_5.cos_x;
     float _e54 = rt2_4[li];
     float _e56 = connection_factor(_e51, d2_10, s * _e54, w_res);
-    c_4.e = _e49 * _e56;
-    Connection _e58 = c_4;
+    c_5.e = _e49 * _e56;
+    Connection _e58 = c_5;
     return _e58;
 }
 
 float light_range_scale(
     uint li_1,
-    metal::float3 x_7,
+    metal::float3 x_8,
     metal::float3 r_8,
     metal::float4 rl_5,
-    device type_10 const& light_cones,
+    device type_13 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuLightCone c_8 = light_cones[li_1];
-    float _e9 = range_scale_toward(rl_5, c_8.center, c_8.radius, x_7, r_8);
+    GpuLightCone c_9 = light_cones[li_1];
+    float _e9 = range_scale_toward(rl_5, c_9.center, c_9.radius, x_8, r_8);
     return _e9;
 }
 
 float light_weight(
     uint li_2,
-    metal::float3 x_8,
+    metal::float3 x_9,
     metal::float3 n_8,
     metal::float3 r_9,
     metal::float4 lobe_7,
     metal::float4 rl_6,
     device type_4 const& rt2_4,
-    device type_10 const& light_cones,
+    device type_13 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuLightCone c_9 = light_cones[li_2];
-    float _e15 = light_range_scale(li_2, x_8, r_9, rl_6, light_cones, _buffer_sizes);
+    GpuLightCone c_10 = light_cones[li_2];
+    float _e15 = light_range_scale(li_2, x_9, r_9, rl_6, light_cones, _buffer_sizes);
     float _e18 = rt2_4[li_2];
-    float _e20 = cone_weight(c_9.center, c_9.radius, c_9.phi, c_9.axis, c_9.cos_o, c_9.cos_e, _e15 * _e18, x_8, n_8, r_9, lobe_7);
+    float _e20 = cone_weight(c_10.center, c_10.radius, c_10.phi, c_10.axis, c_10.cos_o, c_10.cos_e, _e15 * _e18, x_9, n_8, r_9, lobe_7);
     return _e20;
 }
 
 WeightedPicks bsh_weighted_collect(
-    metal::float3 x_9,
+    metal::float3 x_10,
     metal::float3 n_9,
     metal::float3 r_10,
     metal::float4 lobe_8,
     metal::float4 rl_7,
     uint h0_,
     device type_4 const& rt2_4,
-    device type_9 const& bsh_nodes,
-    device type_10 const& light_cones,
+    device type_12 const& bsh_nodes,
+    device type_13 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     WeightedPicks picks = {};
     uint h_1 = {};
-    uint b_5 = {};
+    uint b_6 = {};
     uint s_1 = {};
     picks.w_sum = 0.0;
     picks.n = 0u;
     h_1 = h0_;
     uint _e14 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
-    uint _e15 = bsh_next_leaf_lobe(BSH, _e14, x_9, r_10, rl_7, bsh_nodes, _buffer_sizes);
-    b_5 = _e15;
-    uint2 loop_bound_1 = uint2(4294967295u);
-    bool loop_init = true;
+    uint _e15 = bsh_next_leaf_lobe(BSH, _e14, x_10, r_10, rl_7, bsh_nodes, _buffer_sizes);
+    b_6 = _e15;
+    uint2 loop_bound_3 = uint2(4294967295u);
+    bool loop_init_1 = true;
     while(true) {
-        if (metal::all(loop_bound_1 == uint2(0u))) { break; }
-        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
-        if (!loop_init) {
-            uint _e58 = b_5;
+        if (metal::all(loop_bound_3 == uint2(0u))) { break; }
+        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+        if (!loop_init_1) {
+            uint _e58 = b_6;
             uint _e61 = bsh_nodes[_e58].next;
-            uint _e62 = bsh_next_leaf_lobe(BSH, _e61, x_9, r_10, rl_7, bsh_nodes, _buffer_sizes);
-            b_5 = _e62;
+            uint _e62 = bsh_next_leaf_lobe(BSH, _e61, x_10, r_10, rl_7, bsh_nodes, _buffer_sizes);
+            b_6 = _e62;
         }
-        loop_init = false;
-        uint _e17 = b_5;
+        loop_init_1 = false;
+        uint _e17 = b_6;
         if (_e17 != BSH_NONE) {
         } else {
             break;
@@ -1094,23 +1316,23 @@ WeightedPicks bsh_weighted_collect(
         {
             uint _e21 = picks.n;
             picks.n = _e21 + 1u;
-            uint _e25 = b_5;
+            uint _e25 = b_6;
             uint li_4 = bsh_nodes[_e25].light;
-            float _e29 = light_weight(li_4, x_9, n_9, r_10, lobe_8, rl_7, rt2_4, light_cones, _buffer_sizes);
+            float _e29 = light_weight(li_4, x_10, n_9, r_10, lobe_8, rl_7, rt2_4, light_cones, _buffer_sizes);
             if (_e29 > 0.0) {
                 float _e33 = picks.w_sum;
                 picks.w_sum = _e33 + _e29;
                 s_1 = 0u;
-                uint2 loop_bound_2 = uint2(4294967295u);
-                bool loop_init_1 = true;
+                uint2 loop_bound_4 = uint2(4294967295u);
+                bool loop_init_2 = true;
                 while(true) {
-                    if (metal::all(loop_bound_2 == uint2(0u))) { break; }
-                    loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
-                    if (!loop_init_1) {
+                    if (metal::all(loop_bound_4 == uint2(0u))) { break; }
+                    loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+                    if (!loop_init_2) {
                         uint _e54 = s_1;
                         s_1 = _e54 + 1u;
                     }
-                    loop_init_1 = false;
+                    loop_init_2 = false;
                     uint _e37 = s_1;
                     if (_e37 < K) {
                     } else {
@@ -1145,13 +1367,13 @@ metal::float4 surface_at(
     metal::int2 texel,
     metal::texture2d<float, metal::access::sample> position_tex
 ) {
-    metal::float4 p_7 = position_tex.read(metal::uint2(texel), 0);
-    return (p_7.w > 0.0) ? metal::float4(p_7.xyz, 1.0) : metal::float4(0.0);
+    metal::float4 p_8 = position_tex.read(metal::uint2(texel), 0);
+    return (p_8.w > 0.0) ? metal::float4(p_8.xyz, 1.0) : metal::float4(0.0);
 }
 
 Shaded shade_pick(
     uint li_3,
-    metal::float3 x_10,
+    metal::float3 x_11,
     metal::float3 n_10,
     metal::float3 r_11,
     metal::float4 rl_8,
@@ -1159,21 +1381,24 @@ Shaded shade_pick(
     float w_5,
     float u1_3,
     float u2_3,
+    float eps_1,
+    device type_6 const& geo_nodes,
+    device type_7 const& geo_tris,
     constant ViewParams& view,
-    device type_8 const& lights,
+    device type_11 const& lights,
     device type_4 const& rt2_4,
     device type_4 const& r2_3,
-    device type_10 const& light_cones,
+    device type_13 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Shaded s_2 = {};
-    float _e10 = light_range_scale(li_3, x_10, r_11, rl_8, light_cones, _buffer_sizes);
-    Connection _e12 = connect(li_3, x_10, n_10, n_10, _e10, w_5, u1_3, u2_3, 0.0, lights, rt2_4, r2_3, _buffer_sizes);
+    float _e11 = light_range_scale(li_3, x_11, r_11, rl_8, light_cones, _buffer_sizes);
+    Connection _e12 = connect(li_3, x_11, n_10, n_10, _e11, w_5, u1_3, u2_3, eps_1, geo_nodes, geo_tris, lights, rt2_4, r2_3, _buffer_sizes);
     s_2.e = _e12.e;
     s_2.diffuse = metal::float3(0.0);
     s_2.specular = metal::float3(0.0);
     if (_e12.cos_x > 0.0) {
-        metal::float3 l_5 = metal::normalize(_e12.y - x_10);
+        metal::float3 l_5 = metal::normalize(_e12.y - x_11);
         metal::float3 _e32 = view.f0_d;
         float _e35 = view.f90_d;
         float _e37 = half_cosine(m_1.v, l_5);
@@ -1189,16 +1414,18 @@ Shaded shade_pick(
 }
 
 Shaded add(
-    Shaded a_7,
-    Shaded b_6
+    Shaded a_8,
+    Shaded b_7
 ) {
-    return Shaded {a_7.e + b_6.e, a_7.diffuse + b_6.diffuse, a_7.specular + b_6.specular};
+    return Shaded {a_8.e + b_7.e, a_8.diffuse + b_7.diffuse, a_8.specular + b_7.specular};
 }
 
 struct main_Input {
 };
 kernel void main_(
   metal::uint3 gid [[thread_position_in_grid]]
+, device type_6 const& geo_nodes [[user(fake0)]]
+, device type_7 const& geo_tris [[user(fake0)]]
 , constant ViewParams& view [[user(fake0)]]
 , metal::texture2d<float, metal::access::sample> position_tex [[user(fake0)]]
 , metal::texture2d<float, metal::access::sample> normal_tex [[user(fake0)]]
@@ -1206,11 +1433,11 @@ kernel void main_(
 , metal::texture2d<float, metal::access::sample> base_color_tex [[user(fake0)]]
 , metal::texture2d<float, metal::access::sample> metal_rough_tex [[user(fake0)]]
 , metal::texture2d<float, metal::access::write> specular_tex [[user(fake0)]]
-, device type_8 const& lights [[user(fake0)]]
+, device type_11 const& lights [[user(fake0)]]
 , device type_4 const& rt2_4 [[user(fake0)]]
 , device type_4 const& r2_3 [[user(fake0)]]
-, device type_9 const& bsh_nodes [[user(fake0)]]
-, device type_10 const& light_cones [[user(fake0)]]
+, device type_12 const& bsh_nodes [[user(fake0)]]
+, device type_13 const& light_cones [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
     bool local = {};
@@ -1248,79 +1475,82 @@ kernel void main_(
         specular_tex.write(metal::float4(0.0), metal::uint2(texel_1));
         return;
     }
-    metal::float3 x_11 = _e21.xyz;
-    metal::float3 n_12 = nn / metal::float3(metal::sqrt(len2_1));
-    r = n_12;
+    metal::float3 x_12 = _e21.xyz;
+    metal::float3 n_13 = nn / metal::float3(metal::sqrt(len2_1));
+    r = n_13;
     metal::float4 mr = metal_rough_tex.read(metal::uint2(texel_1), 0);
     metal::float4 _e61 = base_color_tex.read(metal::uint2(texel_1), 0);
     float _e67 = ggx_alpha(metal::saturate(mr.y));
     metal::float3 _e70 = view.eye;
-    m = Material {_e61.xyz, metal::saturate(mr.z), _e67, {}, metal::normalize(_e70 - x_11), mr.y, 0.0};
+    m = Material {_e61.xyz, metal::saturate(mr.z), _e67, {}, metal::normalize(_e70 - x_12), mr.y, 0.0};
     metal::float3 _e77 = m.base;
     float _e79 = m.metallic;
     metal::float3 _e82 = view.f0_d;
     float _e85 = view.f90_d;
     float _e87 = m.alpha;
     metal::float3 _e89 = m.v;
-    metal::float4 _e91 = receiver_lobe(_e77, _e79, _e82, _e85, _e87, metal::dot(n_12, _e89));
+    metal::float4 _e91 = receiver_lobe(_e77, _e79, _e82, _e85, _e87, metal::dot(n_13, _e89));
     lobe = _e91;
     metal::float3 _e93 = m.v;
-    metal::float3 _e94 = mirror_dir(n_12, _e93);
+    metal::float3 _e94 = mirror_dir(n_13, _e93);
     r = _e94;
     metal::float4 _e95 = lobe;
     metal::float4 _e96 = range_lobe(_e95);
-    uint _e99 = view.seed;
-    uint _e103 = view.width;
-    uint _e109 = view.frame;
-    uint _e110 = point_stream(_e99, (gid.y * _e103) + gid.x, _e109);
-    uint _e111 = pick_stream(_e110);
-    h = _e111;
-    metal::float3 _e121 = r;
-    metal::float4 _e122 = lobe;
-    WeightedPicks _e123 = bsh_weighted_collect(x_11, n_12, _e121, _e122, _e96, _e110, rt2_4, bsh_nodes, light_cones, _buffer_sizes);
-    if (_e123.w_sum > 0.0) {
-        uint2 loop_bound_3 = uint2(4294967295u);
-        bool loop_init_2 = true;
+    float _e99 = view.shadow_offset;
+    metal::float3 _e102 = view.eye;
+    float eps_2 = _e99 * metal::length(_e102 - x_12);
+    uint _e108 = view.seed;
+    uint _e112 = view.width;
+    uint _e118 = view.frame;
+    uint _e119 = point_stream(_e108, (gid.y * _e112) + gid.x, _e118);
+    uint _e120 = pick_stream(_e119);
+    h = _e120;
+    metal::float3 _e130 = r;
+    metal::float4 _e131 = lobe;
+    WeightedPicks _e132 = bsh_weighted_collect(x_12, n_13, _e130, _e131, _e96, _e119, rt2_4, bsh_nodes, light_cones, _buffer_sizes);
+    if (_e132.w_sum > 0.0) {
+        uint2 loop_bound_5 = uint2(4294967295u);
+        bool loop_init_3 = true;
         while(true) {
-            if (metal::all(loop_bound_3 == uint2(0u))) { break; }
-            loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-            if (!loop_init_2) {
-                uint _e155 = k;
-                k = _e155 + 1u;
+            if (metal::all(loop_bound_5 == uint2(0u))) { break; }
+            loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+            if (!loop_init_3) {
+                uint _e164 = k;
+                k = _e164 + 1u;
             }
-            loop_init_2 = false;
-            uint _e129 = k;
-            if (_e129 < K) {
+            loop_init_3 = false;
+            uint _e138 = k;
+            if (_e138 < K) {
             } else {
                 break;
             }
             {
-                uint _e132 = h;
-                uint _e133 = pcg_hash(_e132);
-                h = _e133;
-                uint _e134 = h;
-                float _e135 = xi_from_bits(_e134);
-                uint _e136 = h;
-                uint _e137 = pcg_hash(_e136);
-                h = _e137;
-                Shaded _e138 = t;
-                uint _e140 = k;
-                metal::float3 _e142 = r;
-                Material _e143 = m;
-                uint _e146 = k;
-                float _e149 = weighted_pick_weight(_e123.w_sum, _e123.w.inner[_e146], K);
-                uint _e150 = h;
-                float _e151 = xi_from_bits(_e150);
-                Shaded _e152 = shade_pick(_e123.light.inner[_e140], x_11, n_12, _e142, _e96, _e143, _e149, _e135, _e151, view, lights, rt2_4, r2_3, light_cones, _buffer_sizes);
-                Shaded _e153 = add(_e138, _e152);
-                t = _e153;
+                uint _e141 = h;
+                uint _e142 = pcg_hash(_e141);
+                h = _e142;
+                uint _e143 = h;
+                float _e144 = xi_from_bits(_e143);
+                uint _e145 = h;
+                uint _e146 = pcg_hash(_e145);
+                h = _e146;
+                Shaded _e147 = t;
+                uint _e149 = k;
+                metal::float3 _e151 = r;
+                Material _e152 = m;
+                uint _e155 = k;
+                float _e158 = weighted_pick_weight(_e132.w_sum, _e132.w.inner[_e155], K);
+                uint _e159 = h;
+                float _e160 = xi_from_bits(_e159);
+                Shaded _e161 = shade_pick(_e132.light.inner[_e149], x_12, n_13, _e151, _e96, _e152, _e158, _e144, _e160, eps_2, geo_nodes, geo_tris, view, lights, rt2_4, r2_3, light_cones, _buffer_sizes);
+                Shaded _e162 = add(_e147, _e161);
+                t = _e162;
             }
         }
     }
-    uint count = _e123.n;
-    metal::float3 _e160 = t.e;
-    out_tex.write(metal::float4(_e160, static_cast<float>(count)), metal::uint2(texel_1));
-    metal::float3 _e165 = t.specular;
-    specular_tex.write(metal::float4(_e165, 0.0), metal::uint2(texel_1));
+    uint count = _e132.n;
+    metal::float3 _e169 = t.e;
+    out_tex.write(metal::float4(_e169, static_cast<float>(count)), metal::uint2(texel_1));
+    metal::float3 _e174 = t.specular;
+    specular_tex.write(metal::float4(_e174, 0.0), metal::uint2(texel_1));
     return;
 }

@@ -24,7 +24,7 @@ struct ViewParams {
     metal::packed_float3 eye;
     uint width;
     uint height;
-    uint pad0_;
+    float shadow_offset;
     uint seed;
     uint frame;
     metal::packed_float3 f0_d;
