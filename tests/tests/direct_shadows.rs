@@ -18,7 +18,7 @@
 //!   unshadowed brute force.
 //! - Moving an instance ([`Occluders::set_transforms`], then
 //!   `set_shadows` again) and turning shadows off give the brute force of
-//!   the moved geometry and of none.
+//!   the moved geometry and of none; a bad normal offset is refused.
 
 use glam::{Affine3A, Quat, Vec3};
 use slc_core::light::{Light, PointLight, SpotLight, connection_cosine, inverse_square};
@@ -30,11 +30,11 @@ use slc_scene::occluders::{Instance, Occluders};
 use slc_scene::scene::Scene;
 use slc_tests::engine::{self, upload};
 use slc_tests::gpu;
-use slc_wgpu::GpuContext;
 use slc_wgpu::passes::{
     Culling, DirectInputs, DirectPass, DirectPassDesc, DirectSelection, DirectSettings, GBuffer,
     Shadows, Surface, SurfaceDesc,
 };
+use slc_wgpu::{GpuContext, GpuError};
 
 const W: u32 = 64;
 const H: u32 = 48;
@@ -218,6 +218,12 @@ fn exact_shadows_and_moving_instances() {
     assert_exact(&frame(gpu, &s, &mut pass, Culling::None, 1), &after, "moved");
     pass.set_shadows(None).unwrap();
     assert_exact(&frame(gpu, &s, &mut pass, Culling::None, 2), &brute_force(&s, None), "off");
+    // A bad offset is a typed error and changes nothing.
+    for bad in [-1e-3, f32::NAN, f32::INFINITY] {
+        let sh = Shadows { occluders: &occ, normal_offset: bad };
+        assert!(matches!(pass.set_shadows(Some(sh)), Err(GpuError::Setting(_))), "offset {bad}");
+    }
+    assert_exact(&frame(gpu, &s, &mut pass, Culling::None, 3), &brute_force(&s, None), "refused");
     gpu.take_errors().unwrap();
 }
 
