@@ -1,6 +1,7 @@
 //! Thousands of moving coloured point lights (every tenth a spot light)
-//! over a city block of pillars, shaded by slc or by Bevy's own clustered
-//! lighting.
+//! over a city block of pillars, shaded by slc (every light shadowed by
+//! the pillars, one ray per pick) or by Bevy's own clustered lighting
+//! (unshadowed: thousands of shadow maps are out of its reach).
 //!
 //! ```text
 //! cargo run --release --manifest-path slc-bevy/Cargo.toml --ignore-rust-version --example many_lights [LIGHTS]
@@ -8,13 +9,15 @@
 //!
 //! Keys: `Space` cycles slc → Bevy with its default 20 m ranges → Bevy with
 //! unbounded ranges (the ground truth, slow with thousands of lights);
-//! `Up`/`Down` double or halve slc's error bound ε. The window's title shows
-//! the mode, the light count, ε and the frame time (smoothed).
+//! `Up`/`Down` double or halve slc's error bound ε; `S` turns slc's shadows
+//! off and on. The window's title shows the mode, the light count, ε,
+//! the shadows and the frame time (smoothed).
 //!
 //! For scripts: `SLC_BEVY_FRAMES=N` exits after N frames, first writing the
 //! window to the PNG `SLC_BEVY_SCREENSHOT` names (if set); `SLC_BEVY_MODE`
 //! (`slc`, `default`, `unbounded`) picks the starting mode; `SLC_BEVY_SIZE`
-//! (`WxH`) the window's size.
+//! (`WxH`) the window's size; `SLC_BEVY_SHADOWS=off` starts without slc's
+//! shadows.
 
 use bevy::core_pipeline::tonemapping::Tonemapping;
 use bevy::pbr::DefaultOpaqueRendererMethod;
@@ -147,7 +150,10 @@ fn setup(
     }
     commands.spawn((
         Camera3d::default(),
-        SlcCamera::default(),
+        SlcCamera {
+            shadows: std::env::var("SLC_BEVY_SHADOWS").as_deref() != Ok("off"),
+            ..default()
+        },
         Tonemapping::AcesFitted,
         Transform::from_xyz(0.0, 60.0, 120.0).looking_at(Vec3::ZERO, Vec3::Y),
     ));
@@ -208,6 +214,9 @@ fn keys(
         }
     }
     for mut camera in &mut cameras {
+        if input.just_pressed(KeyCode::KeyS) {
+            camera.shadows = !camera.shadows;
+        }
         // ×2 or ÷2 on ε (a stochastic culling only; the others keep theirs).
         let scale = |c: Culling, k: f32| c.with_error_bound(c.error_bound().unwrap_or(1.0) * k);
         if input.just_pressed(KeyCode::ArrowUp)
@@ -233,9 +242,10 @@ fn title(
     settings.frame_ms =
         if settings.frame_ms == 0.0 { ms } else { 0.95 * settings.frame_ms + 0.05 * ms };
     let eps = cameras.iter().next().and_then(|c| c.culling.error_bound()).unwrap_or(0.0);
+    let shadows = if cameras.iter().next().is_some_and(|c| c.shadows) { "on" } else { "off" };
     for mut w in &mut windows {
         w.title = format!(
-            "slc-bevy many_lights: {:?}, {} lights, ε {eps}, {:.1} ms/frame (Space: mode, Up/Down: ε)",
+            "slc-bevy many_lights: {:?}, {} lights, ε {eps}, shadows {shadows}, {:.1} ms/frame (Space: mode, Up/Down: ε, S: shadows)",
             settings.mode, settings.lights, settings.frame_ms
         );
     }

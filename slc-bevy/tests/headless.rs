@@ -10,8 +10,12 @@
 //!
 //! Asserts (b) = (a) per 8×8 block and in the image mean within a bound
 //! from (b)'s own frame-to-frame variance, and reports how much darker (c)
-//! is (asserting it is visibly darker, so the scene shows the bias). Writes
-//! the three images to `target/slc-bevy-headless/` (EXR and PNG).
+//! is (asserting it is visibly darker, so the scene shows the bias). These
+//! phases are unshadowed on both sides (`SlcCamera::shadows` off, Bevy's
+//! shadow maps off). The last phase shadows: 8 point lights around the
+//! boxes with Bevy's own shadow maps against slc-bevy's shadow rays, per
+//! 8×8 block outside the penumbrae (see [`shadows`]). Writes the images to
+//! `target/slc-bevy-headless/` (PNG).
 //!
 //! The GPU is required when `SLC_REQUIRE_GPU=1` (CI); otherwise a machine
 //! without a Vulkan adapter prints SKIP and passes the trial as ignored.
@@ -32,6 +36,11 @@ use bevy::winit::WinitPlugin;
 use rand::{Rng, SeedableRng};
 use slc_bevy::{Culling, SlcCamera, SlcLight, SlcPlugin, SlcStatus};
 use std::sync::{Arc, Mutex};
+
+/// Phase 4: shadows against Bevy's shadow maps.
+#[path = "headless/shadows.rs"]
+mod shadows;
+use shadows::shadows;
 
 /// The image size: 96×64, times `SLC_BEVY_HEADLESS_SCALE` (an integer, 1
 /// by default; docs/results/bevy-headless.md's images are made at 5).
@@ -132,6 +141,10 @@ struct Target(Handle<Image>, Entity);
 #[derive(Component)]
 struct SceneLight;
 
+/// The tall box, which the shadow phase moves.
+#[derive(Component)]
+struct TallBox;
+
 fn build_app() -> App {
     let mut app = App::new();
     app.add_plugins(
@@ -194,11 +207,14 @@ fn scene(
             perceptual_roughness: roughness,
             ..default()
         });
-        commands.spawn((
+        let mut shape = commands.spawn((
             Mesh3d(meshes.add(Cuboid::from_size(size))),
             MeshMaterial3d(m),
             Transform::from_translation(at),
         ));
+        if size.y == 6.0 {
+            shape.insert(TallBox);
+        }
     }
     let ball = materials.add(StandardMaterial {
         base_color: Color::srgb(0.9, 0.2, 0.2),
@@ -261,6 +277,8 @@ fn scene(
             SlcCamera {
                 culling: Culling::stochastic(0.005, 1.0).unwrap(),
                 accumulate: false,
+                // Bevy's side has no shadow maps until the last phase.
+                shadows: false,
                 ..default()
             },
             // The accumulation (phase 3) reprojects by Bevy's motion vectors.
@@ -438,6 +456,7 @@ fn run() -> Result<(), String> {
     if bias.abs() > 0.02 {
         return Err(format!("the accumulated image's mean is {:+.2}% from Bevy's", 100.0 * bias));
     }
+    println!("shadows: {}", shadows(&mut app)?);
     let status = app.world().resource::<SlcStatus>().get(camera);
     if !matches!(status, Some(Ok(n)) if n > 0) {
         return Err(format!("slc did not shade the camera: {status:?}"));

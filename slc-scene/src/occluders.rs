@@ -14,8 +14,9 @@
 //! children are `first` and `first + 1`: the layout the path tracer's
 //! scene BVH always had, so one traversal serves both.
 //!
-//! **Costs.** [`Occluders::new`]: one BVH build per mesh (O(n log n) in its
-//! triangles). [`Occluders::set_transforms`]: the moved instances'
+//! **Costs.** [`Occluders::new`] and [`Occluders::add_mesh`]: one BVH build
+//! per mesh (O(n log n) in its triangles). [`Occluders::set_instances`]:
+//! the layout anew, O(the instances' triangles), no mesh rebuilt. [`Occluders::set_transforms`]: the moved instances'
 //! triangles transformed and refitted (O(their triangles)), then the
 //! top-level tree rebuilt (O(I log I) in the instances); an instance that
 //! did not move costs nothing. Memory: every instance holds its own copy
@@ -132,8 +133,9 @@ struct MeshBvh {
 }
 
 /// Meshes, their instances and the flattened world-space BVH over them
-/// (see the module docs).
-#[derive(Clone, Debug)]
+/// (see the module docs). `Default`: no mesh, no instance (nothing
+/// occludes).
+#[derive(Clone, Debug, Default)]
 pub struct Occluders {
     meshes: Vec<MeshBvh>,
     instances: Vec<Instance>,
@@ -209,47 +211,67 @@ fn tree_depth(nodes: &[GeoNode], root: usize) -> u32 {
     depth
 }
 
-fn check_transform(instance: usize, m: &Affine3A) -> Result<(), OccluderError> {
+/// Whether an instance may have transform `m`: finite, with a non-zero
+/// determinant (a zero scale, which engines use to hide an object, is
+/// not: leave such an instance out).
+pub fn placeable(m: &Affine3A) -> bool {
     let det = m.matrix3.determinant();
-    if m.is_finite() && det.is_finite() && det != 0.0 {
-        Ok(())
-    } else {
-        Err(OccluderError::Transform { instance })
-    }
+    m.is_finite() && det.is_finite() && det != 0.0
+}
+
+fn check_transform(instance: usize, m: &Affine3A) -> Result<(), OccluderError> {
+    if placeable(m) { Ok(()) } else { Err(OccluderError::Transform { instance }) }
 }
 
 impl Occluders {
     /// Builds each mesh's BVH and the flattened tree of `instances`.
     /// `meshes[m]` holds mesh `m`'s triangles in object space.
     pub fn new(meshes: &[Vec<[Vec3; 3]>], instances: &[Instance]) -> Result<Self, OccluderError> {
+        let mut o = Occluders::default();
+        for tris in meshes {
+            o.add_mesh(tris)?;
+        }
+        o.set_instances(instances)?;
+        Ok(o)
+    }
+
+    /// Builds the BVH of one more mesh (`triangles` in object space) and
+    /// returns its index for [`Instance::mesh`]. No instance uses it
+    /// until [`Occluders::set_instances`] says so.
+    pub fn add_mesh(&mut self, triangles: &[[Vec3; 3]]) -> Result<u32, OccluderError> {
+        let (mesh, dropped) = MeshBvh::new(self.meshes.len(), triangles)?;
+        self.meshes.push(mesh);
+        self.dropped += dropped;
+        Ok(self.meshes.len() as u32 - 1)
+    }
+
+    /// Replaces the instances (any number, of the meshes added so far) and
+    /// lays the flattened tree out anew: O(their triangles), no mesh BVH
+    /// rebuilt. On an error nothing changes.
+    pub fn set_instances(&mut self, instances: &[Instance]) -> Result<(), OccluderError> {
         for (i, inst) in instances.iter().enumerate() {
-            if inst.mesh as usize >= meshes.len() {
+            if inst.mesh as usize >= self.meshes.len() {
                 return Err(OccluderError::MeshIndex {
                     instance: i,
                     mesh: inst.mesh,
-                    meshes: meshes.len(),
+                    meshes: self.meshes.len(),
                 });
             }
             check_transform(i, &inst.transform)?;
         }
-        let mut dropped = 0;
-        let mut built = Vec::with_capacity(meshes.len());
-        for (m, tris) in meshes.iter().enumerate() {
-            let (mesh, d) = MeshBvh::new(m, tris)?;
-            built.push(mesh);
-            dropped += d;
+        let before = std::mem::replace(&mut self.instances, instances.to_vec());
+        if let Err(e) = self.lay_out() {
+            self.instances = before;
+            // The instances before were laid out once: they are again.
+            let _ = self.lay_out();
+            return Err(e);
         }
-        let mut o = Occluders {
-            meshes: built,
-            instances: instances.to_vec(),
-            blocks: Vec::new(),
-            nodes: Vec::new(),
-            tris: Vec::new(),
-            dropped,
-            depth: 0,
-        };
-        o.lay_out()?;
-        Ok(o)
+        Ok(())
+    }
+
+    /// The meshes added.
+    pub fn mesh_count(&self) -> usize {
+        self.meshes.len()
     }
 
     /// One mesh, placed as given (the identity transform): a scene's
@@ -275,6 +297,7 @@ impl Occluders {
         for (i, m) in transforms.iter().enumerate() {
             check_transform(i, m)?;
         }
+        let before: Vec<Affine3A> = self.instances.iter().map(|i| i.transform).collect();
         let mut moved = false;
         for (i, m) in transforms.iter().enumerate() {
             if self.instances[i].transform != *m {
@@ -283,8 +306,15 @@ impl Occluders {
                 moved = true;
             }
         }
-        if moved {
-            self.build_top()?;
+        if moved && let Err(e) = self.build_top() {
+            // Too deep a top level: back to the transforms before.
+            for (i, m) in before.iter().enumerate() {
+                if self.instances[i].transform != *m {
+                    self.instances[i].transform = *m;
+                    self.place(i);
+                }
+            }
+            return Err(e);
         }
         Ok(moved)
     }
@@ -390,17 +420,18 @@ impl Occluders {
         let params = BvhBuildParams { max_prims_per_leaf: 1, ..BvhBuildParams::medium_build() };
         let top = build_bvh2(&boxes, params, &mut Duration::default());
         debug_assert_eq!(top.nodes.len(), 2 * n - 1);
+        let mut nodes = vec![roots[0]; top.nodes.len()];
         let mut depth = 0;
         let mut stack = vec![(0usize, 1u32)];
         while let Some((k, d)) = stack.pop() {
             let t = top.nodes[k];
             if t.prim_count > 0 {
                 let inst = top.primitive_indices[t.first_index as usize] as usize;
-                self.nodes[k] = roots[inst];
+                nodes[k] = roots[inst];
                 let mesh = &self.meshes[self.instances[inst].mesh as usize];
                 depth = depth.max(d - 1 + mesh.depth);
             } else {
-                self.nodes[k] = GeoNode {
+                nodes[k] = GeoNode {
                     bmin: t.aabb.min.into(),
                     first: t.first_index,
                     bmax: t.aabb.max.into(),
@@ -410,10 +441,11 @@ impl Occluders {
                 stack.push((t.first_index as usize + 1, d + 1));
             }
         }
-        self.depth = depth;
         if depth > MAX_DEPTH {
             return Err(OccluderError::TooDeep { depth, max: MAX_DEPTH });
         }
+        self.nodes[..nodes.len()].copy_from_slice(&nodes);
+        self.depth = depth;
         Ok(())
     }
 }
@@ -536,7 +568,10 @@ mod tests {
                 assert_eq!(walk(o, org, d, 20.0), want, "ray {org} {d}");
                 hit += want as usize;
             }
-            assert!(hit > 400, "only {hit} of 4000 rays hit: the test says little");
+            assert!(
+                hit > 4 * o.instances().len(),
+                "only {hit} of 4000 rays hit: the test says little"
+            );
         };
         check(&o);
         for (i, inst) in instances.iter_mut().enumerate().filter(|(i, _)| i % 3 == 0) {
@@ -547,6 +582,21 @@ mod tests {
         assert!(o.set_transforms(&transforms).unwrap());
         assert!(!o.set_transforms(&transforms).unwrap(), "nothing moved the second time");
         check(&o);
+        // Fewer instances, then a third mesh: no mesh BVH rebuilt.
+        o.set_instances(&instances[5..20]).unwrap();
+        check(&o);
+        let tri = vec![[Vec3::ZERO, Vec3::X * 3.0, Vec3::Z * 3.0]];
+        assert_eq!(o.add_mesh(&tri).unwrap(), 2);
+        let mut more = instances[5..20].to_vec();
+        more.push(Instance { mesh: 2, transform: Affine3A::from_translation(Vec3::Y * 0.5) });
+        o.set_instances(&more).unwrap();
+        let mut all = meshes.clone();
+        all.push(tri);
+        let w = world(&all, &o);
+        for (org, d) in rays(9, 2000) {
+            assert_eq!(walk(&o, org, d, 20.0), hits(&w, org, d, 20.0));
+        }
+        o.set_instances(&instances).unwrap();
         // Every flattened triangle names its source.
         let w = world(&meshes, &o);
         for i in 0..o.triangles().len() {

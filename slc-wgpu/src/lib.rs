@@ -54,7 +54,7 @@ pub mod context;
 pub mod frame;
 mod kernel;
 mod lights;
-mod occluders;
+pub mod occluders;
 pub mod passes;
 pub mod pt;
 mod record;
@@ -66,6 +66,9 @@ pub use context::{GpuContext, pick_adapter};
 /// colours, `Mat4` view-projections): glam, re-exported so that an engine
 /// needs no second dependency, or one at this exact version.
 pub use glam;
+/// What the direct pass's shadow rays hit: meshes, their instances and
+/// the errors of bad geometry ([`occluders`], slc-scene's).
+pub use occluders::{Instance, OccluderError, Occluders};
 pub use passes::{Culling, GBuffer, Surface, SurfaceDesc};
 /// The lights the passes shade (slc-core's), their limit and errors, and
 /// the IES profile an `IesLight` takes, re-exported so that an engine needs
@@ -80,9 +83,6 @@ pub use slc_core::range::{IntensityMeasure, RangeParams};
 pub use slc_scene::RenderError;
 /// A light set with its bounding-sphere hierarchy (slc-scene's).
 pub use slc_scene::lights::LightSet;
-/// What the direct pass's shadow rays hit: meshes, their instances and
-/// the errors of bad geometry (slc-scene's).
-pub use slc_scene::occluders::{Instance, OccluderError, Occluders};
 /// The temporal pass's camera and settings (slc-scene's).
 pub use slc_scene::temporal::{TemporalSettings, TemporalView};
 /// Which light types a pass's kernels are compiled for

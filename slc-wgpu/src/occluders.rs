@@ -1,11 +1,12 @@
 //! Occluders on the GPU: slc-scene's [`Occluders`] (meshes and instances
 //! flattened into one world-space BVH) as the `geo_nodes` and `geo_tris`
 //! buffers the kernels' `trace` walks (slc-shared-shaders' `geometry.wgsl`).
-//! The path tracer's scene and the direct pass's shadows go through here.
+//! The path tracer's scene and the direct pass's shadows go through here;
+//! slc-scene's module is re-exported whole.
 
 use crate::kernel::storage;
 use crate::{GpuContext, GpuError};
-use slc_scene::occluders::Occluders;
+pub use slc_scene::occluders::*;
 use slc_shared_shaders::layout::{GpuGeoNode, GpuTriangle, NO_LIGHT};
 
 /// The flattened tree's nodes as the kernels read them. A tree of no
