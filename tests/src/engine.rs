@@ -169,3 +169,34 @@ pub fn read_via(
 pub fn read(gpu: &GpuContext, t: &wgpu::Texture) -> Result<Vec<[f32; 4]>, slc_wgpu::GpuError> {
     read_via(gpu, t, &staging(gpu, t))
 }
+
+/// A scene's ray-cast G-buffer (slc-cpu's) uploaded as an engine's
+/// position and normal textures (`Rgba32Float`; position `w` = 1 where a
+/// surface is), with the CPU copy the tests compare against.
+pub struct UploadedGBuffer {
+    /// World positions.
+    pub position: wgpu::TextureView,
+    /// World unit normals.
+    pub normal: wgpu::TextureView,
+    /// The CPU's G-buffer.
+    pub cpu: slc_scene::vpl::GBuffer,
+}
+
+/// [`UploadedGBuffer`] of `scene` at `w × h` (its own camera).
+pub fn upload_gbuffer(
+    gpu: &GpuContext,
+    scene: &slc_scene::scene::Scene,
+    (w, h): (u32, u32),
+) -> UploadedGBuffer {
+    let ctx = slc_cpu::vpl::VplContext::new(scene, w, h, 8, None).expect("a valid scene");
+    let gb = ctx.gbuffer();
+    let pos: Vec<[f32; 4]> = (0..gb.position.len())
+        .map(|i| gb.position[i].extend(if gb.valid(i) { 1.0 } else { 0.0 }).to_array())
+        .collect();
+    let nrm: Vec<[f32; 4]> = gb.normal.iter().map(|n| n.extend(0.0).to_array()).collect();
+    UploadedGBuffer {
+        position: upload(gpu, "gb position", (w, h), &pos),
+        normal: upload(gpu, "gb normal", (w, h), &nrm),
+        cpu: gb.clone(),
+    }
+}

@@ -14,7 +14,6 @@ use glam::{Mat4, Vec3};
 use slc_core::light::{Light, PointLight, SpotLight, TriangleLight};
 use slc_core::range::RangeParams;
 use slc_cpu::direct::DirectLights;
-use slc_cpu::vpl::VplContext;
 use slc_scene::lights::LightSet;
 use slc_scene::scene::Scene;
 use slc_tests::engine::{self, texture, upload};
@@ -76,15 +75,11 @@ struct Gb {
 }
 
 fn gbuffer(gpu: &GpuContext) -> Gb {
-    let ctx = VplContext::new(&Scene::cornell_box(), W, H, 8, None).unwrap();
-    let gb = ctx.gbuffer();
-    let pos: Vec<[f32; 4]> = (0..gb.position.len())
-        .map(|i| gb.position[i].extend(if gb.valid(i) { 1.0 } else { 0.0 }).to_array())
-        .collect();
-    let nrm: Vec<[f32; 4]> = gb.normal.iter().map(|n| n.extend(0.0).to_array()).collect();
+    let up = engine::upload_gbuffer(gpu, &Scene::cornell_box(), (W, H));
+    let gb = &up.cpu;
     Gb {
-        position: upload(gpu, "gb position", (W, H), &pos),
-        normal: upload(gpu, "gb normal", (W, H), &nrm),
+        position: up.position,
+        normal: up.normal,
         points: (0..gb.position.len())
             .map(|i| if gb.valid(i) { gb.position[i] } else { Vec3::NAN })
             .collect(),

@@ -24,11 +24,10 @@ use glam::{Affine3A, Quat, Vec3};
 use slc_core::light::{Light, PointLight, SpotLight, connection_cosine, inverse_square};
 use slc_core::range::RangeParams;
 use slc_cpu::geometry::Geometry;
-use slc_cpu::vpl::VplContext;
 use slc_scene::lights::LightSet;
 use slc_scene::occluders::{Instance, Occluders};
 use slc_scene::scene::Scene;
-use slc_tests::engine::{self, upload};
+use slc_tests::engine;
 use slc_tests::gpu;
 use slc_wgpu::passes::{
     Culling, DirectInputs, DirectPass, DirectPassDesc, DirectSelection, DirectSettings, GBuffer,
@@ -94,15 +93,11 @@ struct Setup {
 
 fn setup(gpu: &GpuContext) -> Setup {
     let scene = Scene::cornell_box();
-    let ctx = VplContext::new(&scene, W, H, 8, None).unwrap();
-    let gb = ctx.gbuffer();
-    let pos: Vec<[f32; 4]> = (0..gb.position.len())
-        .map(|i| gb.position[i].extend(if gb.valid(i) { 1.0 } else { 0.0 }).to_array())
-        .collect();
-    let nrm: Vec<[f32; 4]> = gb.normal.iter().map(|n| n.extend(0.0).to_array()).collect();
+    let up = engine::upload_gbuffer(gpu, &scene, (W, H));
+    let gb = &up.cpu;
     Setup {
-        position: upload(gpu, "gb position", (W, H), &pos),
-        normal: upload(gpu, "gb normal", (W, H), &nrm),
+        position: up.position,
+        normal: up.normal,
         eye: gb.eye,
         points: (0..gb.position.len())
             .map(|i| gb.valid(i).then(|| (gb.position[i], gb.normal[i])))
