@@ -71,6 +71,11 @@
 //! `RenderAssetUsages` without `MAIN_WORLD`) casts no slc shadow, with one
 //! warning in the log.
 //!
+//! **Bad input**: a light slc cannot shade (NaN, infinite or negative
+//! intensity or colour, a NaN position or cone angle) is left out, with
+//! one warning in the log; a mesh that cannot occlude casts no slc shadow,
+//! with one warning per mesh asset. Neither stops the camera.
+//!
 //! **Not applied**: the light's `radius` (a point light), clearcoat,
 //! anisotropy and transmission, light textures, forward-rendered materials
 //! (only the deferred G-buffer is read). A single frame is noisy by design
@@ -552,19 +557,30 @@ fn texture(
 }
 
 /// The view's lights in slc's form: candela times the camera's exposure.
-fn slc_lights(lights: &[BevyLight], exposure: f32) -> Result<Vec<Light>, String> {
+/// A light slc cannot shade (NaN, infinite or negative intensity, a NaN
+/// position or angle) is left out, with one warning in the log for the
+/// first such light.
+fn slc_lights(lights: &[BevyLight], exposure: f32) -> Vec<Light> {
     lights
         .iter()
-        .map(|l| match *l {
-            BevyLight::Point { position, candela } => SlcPoint::new(position, candela * exposure)
-                .map(Light::Point)
-                .map_err(|e| format!("point light at {position}: {e}")),
-            // Bevy's spot fall-off is the quadratic one.
-            BevyLight::Spot { position, axis, candela, inner, outer } => {
-                SlcSpot::new(position, axis, candela * exposure, inner, outer)
-                    .map(|s| Light::Spot(s.with_quadratic_falloff()))
-                    .map_err(|e| format!("spot light at {position}: {e}"))
+        .filter_map(|l| {
+            match *l {
+                BevyLight::Point { position, candela } => {
+                    SlcPoint::new(position, candela * exposure)
+                        .map(Light::Point)
+                        .map_err(|e| format!("point light at {position}: {e}"))
+                }
+                // Bevy's spot fall-off is the quadratic one.
+                BevyLight::Spot { position, axis, candela, inner, outer } => {
+                    SlcSpot::new(position, axis, candela * exposure, inner, outer)
+                        .map(|s| Light::Spot(s.with_quadratic_falloff()))
+                        .map_err(|e| format!("spot light at {position}: {e}"))
+                }
             }
+            .map_err(|e| {
+                warn_once!("slc: a light is left out (and any other it cannot shade): {e}")
+            })
+            .ok()
         })
         .collect()
 }
@@ -698,13 +714,7 @@ fn prepare_views(
             continue;
         }
         let exposure = camera.exposure;
-        let lights = match slc_lights(&lights.0, exposure) {
-            Ok(l) => l,
-            Err(e) => {
-                skip(&mut views, e, &mut report);
-                continue;
-            }
-        };
+        let lights = slc_lights(&lights.0, exposure);
         if lights.is_empty() {
             views.0.remove(&entity);
             report.insert(main, Ok(0));

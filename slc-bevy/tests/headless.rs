@@ -17,15 +17,21 @@
 //! 8×8 block outside the penumbrae (see [`shadows`]). Writes the images to
 //! `target/slc-bevy-headless/` (PNG).
 //!
+//! The scene also holds bad input slc must survive (lights it cannot
+//! shade, a mesh of zero area): every phase passes only if they change
+//! nothing.
+//!
 //! The GPU is required when `SLC_REQUIRE_GPU=1` (CI); otherwise a machine
 //! without a Vulkan adapter prints SKIP and passes the trial as ignored.
 //! Sizes stay far below lavapipe's 65,535 loop iterations per invocation
 //! (152 lights, at most 8 picks per pixel).
 
 use bevy::app::PluginsState;
+use bevy::asset::RenderAssetUsages;
 use bevy::camera::RenderTarget;
 use bevy::core_pipeline::prepass::MotionVectorPrepass;
 use bevy::core_pipeline::tonemapping::Tonemapping;
+use bevy::mesh::{Indices, PrimitiveTopology};
 use bevy::pbr::DefaultOpaqueRendererMethod;
 use bevy::prelude::*;
 use bevy::render::RenderPlugin;
@@ -268,6 +274,23 @@ fn scene(
         ));
     }
 
+    // Bad input slc must survive without a NaN pixel or a skipped camera:
+    // lights it cannot shade (left out, one warning; Bevy never sees them,
+    // being SlcLights throughout) and a mesh of zero area (no slc shadow,
+    // one warning).
+    for intensity in [f32::NAN, f32::INFINITY, -1e5] {
+        commands.spawn((
+            PointLight { intensity, shadow_maps_enabled: false, ..default() },
+            Transform::from_xyz(0.0, 6.0, 0.0),
+            SlcLight,
+        ));
+    }
+    let flat = Mesh::new(PrimitiveTopology::TriangleList, RenderAssetUsages::default())
+        .with_inserted_attribute(Mesh::ATTRIBUTE_POSITION, vec![[1.0f32, 1.0, 1.0]; 3])
+        .with_inserted_attribute(Mesh::ATTRIBUTE_NORMAL, vec![[0.0f32, 1.0, 0.0]; 3])
+        .with_inserted_indices(Indices::U32(vec![0, 1, 2]));
+    commands.spawn((Mesh3d(meshes.add(flat)), MeshMaterial3d(materials.add(Color::WHITE))));
+
     let (w, h) = size();
     let image = images.add(Image::new_target_texture(w, h, TextureFormat::Rgba16Float, None));
     let camera = commands
@@ -341,6 +364,8 @@ fn capture(app: &mut App, warmup: usize, frames: usize) -> Vec<Vec<[f32; 3]>> {
     }
     let shots = std::mem::take(&mut *shots.lock().unwrap());
     assert!(shots.len() >= frames, "captured {} of {frames} frames", shots.len());
+    // A NaN would slip through every comparison below.
+    assert!(shots.iter().flatten().flatten().all(|c| c.is_finite()), "a pixel is not finite");
     shots.into_iter().take(frames).collect()
 }
 
