@@ -233,16 +233,6 @@ impl LightList {
         self.r2.push(r2);
     }
 
-    /// Tile culling: replaces `out` with the lights whose range sphere
-    /// `(p, √r²)` overlaps the box `[lo, hi]`
-    /// ([`slc_core::sphere::sphere_overlaps_aabb`]). The test runs on the
-    /// CPU's best [`SimdPath`] over all lights, then each array is gathered
-    /// in one pass. `hits` is scratch memory for the indices.
-    pub fn cull_into(&self, lo: Vec3, hi: Vec3, hits: &mut Vec<u32>, out: &mut LightList) {
-        let k = SimdPath::best().run(CullOp { list: self, lo, hi, hits: &mut *hits });
-        self.gather_into(&hits[..k], out);
-    }
-
     /// Replaces `out` with the entries `hits` of this list, padded to a
     /// multiple of the SIMD width with entries that are never kept and carry
     /// no flux (`r² = 0`, `Φ = 0`), so the shading loop has no scalar tail.
@@ -273,30 +263,6 @@ impl LightList {
     /// Lights the list holds without allocating.
     pub fn capacity(&self) -> usize {
         self.px.capacity()
-    }
-}
-
-/// The culling test of [`LightList::cull_into`] as a pulp operation: a
-/// branch-free pass writes each light's overlap flag (vectorized across
-/// lights), a second compacts the indices into `hits[..k]` and returns `k`
-/// (`hits` only grows: its old entries need no zeroing).
-struct CullOp<'a> {
-    list: &'a LightList,
-    lo: Vec3,
-    hi: Vec3,
-    hits: &'a mut Vec<u32>,
-}
-
-impl pulp::WithSimd for CullOp<'_> {
-    type Output = usize;
-
-    #[inline(always)]
-    fn with_simd<S: pulp::Simd>(self, _: S) -> usize {
-        let n = self.list.len();
-        if self.hits.len() <= n {
-            self.hits.resize(n + 1, 0);
-        }
-        cull_range(self.list, 0..n, self.lo, self.hi, self.hits, 0)
     }
 }
 
@@ -755,8 +721,8 @@ mod tests {
             all.push(p, n, Vec3::new(u(), u(), u()), rt2, rt2 / (1.0 - u()).max(1e-3));
         }
         // Padded to whole SIMD chunks, as the frame's tile lists are.
-        let (mut list, mut hits) = (LightList::default(), Vec::new());
-        all.cull_into(Vec3::splat(-1.0), Vec3::splat(2.0), &mut hits, &mut list);
+        let mut list = LightList::default();
+        all.gather_into(&(0..all.len() as u32).collect::<Vec<_>>(), &mut list);
         for path in SimdPath::ALL {
             if !path.is_available() {
                 eprintln!("SKIP {path}: this CPU lacks it");
