@@ -245,14 +245,12 @@ impl GpuVpl {
         let st = if reference {
             settings.validate().map_err(|e| GpuError::Setting(e.to_string()))?;
             IndirectSettings {
-                culling: Culling::None,
                 seed: settings.seed,
                 frame: settings.frame,
-                fixed_xi: None,
-                denoise: false,
                 min_distance: self.min_distance,
-                near_radius: Some(0.0),
+                ..IndirectSettings::default()
             }
+            .reference()
         } else {
             slc_wgpu::frame::indirect_settings(settings, self.min_distance)?
         };

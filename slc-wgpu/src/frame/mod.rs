@@ -429,13 +429,7 @@ impl GpuVplFrame {
                 let desc = IndirectPassDesc { interleaved: false, ..*self.indirect.desc() };
                 self.reference = Some(IndirectPass::new(&self.gpu, &desc)?);
             }
-            IndirectSettings {
-                culling: Culling::None,
-                fixed_xi: None,
-                denoise: false,
-                near_radius: Some(0.0),
-                ..*st
-            }
+            st.reference()
         } else {
             *st
         };

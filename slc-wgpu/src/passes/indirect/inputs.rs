@@ -265,6 +265,19 @@ impl Default for IndirectSettings {
 }
 
 impl IndirectSettings {
+    /// The reference's settings from these (the same seed, frame and clamp
+    /// distance): every VPL at every pixel, no ξ, no denoise, no near
+    /// split. Record them with a pass built with `interleaved: false`.
+    pub fn reference(&self) -> IndirectSettings {
+        IndirectSettings {
+            culling: Culling::None,
+            fixed_xi: None,
+            denoise: false,
+            near_radius: Some(0.0),
+            ..*self
+        }
+    }
+
     /// `R_n²` of the near-field split.
     pub(crate) fn near_r2(&self) -> f32 {
         let r = self.near_radius.unwrap_or(NEAR_FACTOR * self.min_distance);
