@@ -423,6 +423,24 @@ slc_core::shared! {
         pub texel: f32,
     }
 
+    /// Field of the work counters (`work_counters.wgsl`, read back as
+    /// slc-scene's `WorkCounts`): tiles.
+    pub const COUNT_TILES: u32 = 0;
+    /// Work-counter field: group-box tests.
+    pub const COUNT_GROUP_TESTS: u32 = 1;
+    /// Work-counter field: cluster-box tests.
+    pub const COUNT_CLUSTER_TESTS: u32 = 2;
+    /// Work-counter field: culling-sphere tests.
+    pub const COUNT_SPHERE_TESTS: u32 = 3;
+    /// Work-counter field: lights a pixel loops over.
+    pub const COUNT_TESTED: u32 = 4;
+    /// Work-counter field: lights a pixel keeps.
+    pub const COUNT_KEPT: u32 = 5;
+    /// Work-counter field: shaded pixels.
+    pub const COUNT_PIXELS: u32 = 6;
+    /// Number of work-counter fields (each a 64-bit low, high pair).
+    pub const COUNT_FIELDS: u32 = 7;
+
     /// [`MapParams::mode`] of the camera's G-buffer pass.
     pub const MAP_CAMERA: u32 = 0;
     /// [`MapParams::mode`] of a spot's perspective map.

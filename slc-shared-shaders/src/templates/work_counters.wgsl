@@ -4,14 +4,7 @@
 // 2f + 1, the carry added where the low word wraps). Never in a timed
 // frame.
 
-const COUNT_TILES: u32 = 0u;
-const COUNT_GROUP_TESTS: u32 = 1u;
-const COUNT_CLUSTER_TESTS: u32 = 2u;
-const COUNT_SPHERE_TESTS: u32 = 3u;
-const COUNT_TESTED: u32 = 4u;
-const COUNT_KEPT: u32 = 5u;
-const COUNT_PIXELS: u32 = 6u;
-const COUNT_FIELDS: u32 = 7u;
+// The fields (COUNT_TILES … COUNT_FIELDS) are the layout's constants.
 
 var<workgroup> wg_counts: array<atomic<u32>, COUNT_FIELDS>;
 

@@ -90,6 +90,14 @@ constant uint LIGHT_IES = 2u;
 constant uint LIGHT_TRIANGLE = 3u;
 constant uint LIGHT_VPL = 4u;
 constant uint NO_LIGHT = 4294967295u;
+constant uint COUNT_TILES = 0u;
+constant uint COUNT_GROUP_TESTS = 1u;
+constant uint COUNT_CLUSTER_TESTS = 2u;
+constant uint COUNT_SPHERE_TESTS = 3u;
+constant uint COUNT_TESTED = 4u;
+constant uint COUNT_KEPT = 5u;
+constant uint COUNT_PIXELS = 6u;
+constant uint COUNT_FIELDS = 7u;
 constant uint MAP_CAMERA = 0u;
 constant uint MAP_PERSPECTIVE = 1u;
 constant uint MAP_ORTHOGRAPHIC = 2u;
@@ -130,14 +138,6 @@ constant uint TILE = 8u;
 constant uint THREADS = 64u;
 constant uint BOX_THREADS = 64u;
 constant uint MAX_TILE_LIGHTS = 1024u;
-constant uint COUNT_TILES = 0u;
-constant uint COUNT_GROUP_TESTS = 1u;
-constant uint COUNT_CLUSTER_TESTS = 2u;
-constant uint COUNT_SPHERE_TESTS = 3u;
-constant uint COUNT_TESTED = 4u;
-constant uint COUNT_KEPT = 5u;
-constant uint COUNT_PIXELS = 6u;
-constant uint COUNT_FIELDS = 7u;
 
 float slc_weight(
     float rt2_,

@@ -11,11 +11,15 @@ use crate::kernel::{KernelLayout, zeroed};
 use crate::passes::ViewCache;
 use crate::{GpuContext, GpuError};
 use slc_scene::vpl::WorkCounts;
+use slc_shared_shaders::layout::{
+    COUNT_CLUSTER_TESTS, COUNT_FIELDS, COUNT_GROUP_TESTS, COUNT_KEPT, COUNT_PIXELS,
+    COUNT_SPHERE_TESTS, COUNT_TESTED, COUNT_TILES,
+};
 use slc_shared_shaders::{CullKind, Features, Kernel};
 
-/// Fields of `WorkCounts` the kernels count, in `work_counters.wgsl`'s
-/// order; each a 64-bit (low, high) pair of `u32`s.
-const FIELDS: usize = 7;
+/// Fields of `WorkCounts` the kernels count (the layout's `COUNT_*`);
+/// each a 64-bit (low, high) pair of `u32`s.
+const FIELDS: usize = COUNT_FIELDS as usize;
 /// Bytes of one field's counters.
 const BYTES: u64 = (FIELDS * 2 * 4) as u64;
 
@@ -107,18 +111,18 @@ impl Counting {
         };
         self.staging.unmap();
         let field = |k: usize| -> WorkCounts {
-            let v = |f: usize| {
-                let at = k * FIELDS * 2 + 2 * f;
+            let v = |f: u32| {
+                let at = k * FIELDS * 2 + 2 * f as usize;
                 words[at] as u64 | (words[at + 1] as u64) << 32
             };
             WorkCounts {
-                tiles: v(0),
-                group_tests: v(1),
-                cluster_tests: v(2),
-                sphere_tests: v(3),
-                tested: v(4),
-                kept: v(5),
-                pixels: v(6),
+                tiles: v(COUNT_TILES),
+                group_tests: v(COUNT_GROUP_TESTS),
+                cluster_tests: v(COUNT_CLUSTER_TESTS),
+                sphere_tests: v(COUNT_SPHERE_TESTS),
+                tested: v(COUNT_TESTED),
+                kept: v(COUNT_KEPT),
+                pixels: v(COUNT_PIXELS),
             }
         };
         Ok((field(0), field(1)))
