@@ -57,15 +57,17 @@
 //! [`Mesh3d`] that is visible in the hierarchy (`InheritedVisibility`) and
 //! has no `NotShadowCaster` occludes slc's lights, through slc-wgpu's
 //! [`Occluders`] (one BVH per mesh asset, built when the asset is first
-//! seen; a top level over the entities, refitted every frame for the
-//! entities that moved and laid out anew when entities appear or go) and
+//! seen, again when it is edited; a top level over the entities, refitted
+//! every frame for the entities that moved and laid out anew when entities
+//! appear or go) and
 //! one shadow ray per pick in slc's direct kernel: plain WGSL, so every
 //! adapter shadows, no ray-tracing hardware needed. Costs: a mesh's BVH
 //! once (`O(n log n)` in its triangles), a moved entity's triangles every
 //! frame it moves (`O(n)` on the CPU, during extraction), the buffers
 //! re-uploaded when anything moved (48 B per triangle), `picks` rays per
-//! pixel. Not followed: a mesh asset edited in place after it was first
-//! seen keeps its first shape (give the entity a new asset instead); a
+//! pixel. An edited mesh asset, or most of the built meshes falling out of
+//! use, starts the occluders over (every used mesh's BVH built again).
+//! Not followed: a
 //! mesh that is not a triangle list or strip, has no index or position
 //! data, or was extracted to the render world only (its
 //! `RenderAssetUsages` without `MAIN_WORLD`) casts no slc shadow, with one
@@ -329,9 +331,22 @@ type CasterItem = (Entity, &'static Mesh3d, &'static GlobalTransform, &'static I
 fn extract_occluders(
     mut out: ResMut<ExtractedOccluders>,
     meshes: Extract<Res<Assets<Mesh>>>,
+    mut events: Extract<MessageReader<AssetEvent<Mesh>>>,
     casters: Extract<Query<CasterItem, Without<NotShadowCaster>>>,
 ) {
     let out = &mut *out;
+    // Start over (every used mesh's BVH built again) when a mesh asset in
+    // use was edited, or when most of the meshes built are no longer used
+    // (assets made and dropped as the app runs).
+    let edited = events
+        .read()
+        .any(|e| matches!(e, AssetEvent::Modified { id } if out.mesh_of.contains_key(id)));
+    let used: std::collections::HashSet<u32> = out.entities.iter().map(|e| e.1).collect();
+    if edited || out.occluders.mesh_count() > 64 + 2 * used.len() {
+        out.occluders = Occluders::default();
+        out.mesh_of.clear();
+        out.entities.clear();
+    }
     let (mut entities, mut transforms) = (Vec::new(), Vec::new());
     for (entity, mesh, transform, visible) in &casters {
         if !visible.get() {

@@ -15,7 +15,8 @@ use bevy::light::{PointLightShadowMap, ShadowFilteringMethod};
 /// than 0.05 within `r` pixels of it (`r` = 1 per 96 of width), and a block
 /// is checked only if no edge pixel lies within `2r` of it. Checked blocks: (b) = (a) within the bound of [`compare`](super::compare);
 /// at least 16 of them, and at least 8 where the shadows take ≥ 10% of
-/// the light (so a missing shadow fails).
+/// the light (so a missing shadow fails). Then again after the tall box
+/// moves, and after its mesh asset is edited in place.
 pub(super) fn shadows(app: &mut App) -> Result<String, String> {
     let world = app.world_mut();
     let old: Vec<Entity> = world.query_filtered::<Entity, With<SceneLight>>().iter(world).collect();
@@ -59,7 +60,14 @@ pub(super) fn shadows(app: &mut App) -> Result<String, String> {
     world.get_mut::<Transform>(tall).expect("box transform").translation +=
         Vec3::new(-1.0, 0.0, -1.0);
     let moved = shadow_compare(app, "-moved")?;
-    Ok(format!("{first}\nafter moving the tall box: {moved}"))
+    // The box's mesh asset is edited in place (wider, floating):
+    // slc builds its BVH again.
+    let world = app.world_mut();
+    let id = world.get::<Mesh3d>(tall).expect("box mesh").id();
+    let wider: Mesh = Cuboid::new(5.0, 5.0, 5.0).into();
+    *world.resource_mut::<Assets<Mesh>>().get_mut(id).expect("box mesh asset") = wider;
+    let edited = shadow_compare(app, "-edited")?;
+    Ok(format!("{first}\nafter moving the tall box: {moved}\nafter editing its mesh: {edited}"))
 }
 
 /// Phase 4's images and checks for the scene as it is (see [`shadows`]).
