@@ -29,10 +29,10 @@ use slc_tests::engine::{self, upload};
 use slc_tests::gpu;
 use slc_wgpu::passes::{
     Culling, DirectInputs, DirectPass, DirectPassDesc, DirectSettings, GBuffer, IndirectInputs,
-    IndirectPass, IndirectPassDesc, IndirectSettings, Surface, SurfaceDesc, TemporalInputs,
-    TemporalPass, TemporalPassDesc, VplInput, VplSourceDesc,
+    IndirectPass, IndirectPassDesc, IndirectSettings, Shadows, Surface, SurfaceDesc,
+    TemporalInputs, TemporalPass, TemporalPassDesc, VplInput, VplSourceDesc,
 };
-use slc_wgpu::{GpuContext, GpuError, LightSet, RangeParams};
+use slc_wgpu::{GpuContext, GpuError, LightSet, Occluders, RangeParams};
 use std::sync::Arc;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
@@ -413,8 +413,45 @@ fn glossy_pass_fits_webgpu_default_limits() {
     assert_eq!(errors.load(Ordering::SeqCst), 0, "validation errors");
 }
 
+/// WebGPU's default limits: the shadowed direct pass with the default
+/// descriptor (weighted picks, every light type: its `direct_light` binds
+/// 8 storage buffers, the occluders' two included) builds, records and
+/// shades the Cornell box with no validation error, and its shadows
+/// darken the image.
+fn shadowed_direct_pass_fits_webgpu_default_limits() {
+    let (device, queue, errors) = device_with(wgpu::Limits::default());
+    let gpu = GpuContext::from_device(device.clone(), queue);
+    let scene = Scene::cornell_box();
+    let g = engine::upload_gbuffer(&gpu, &scene, (16, 16));
+    let desc = DirectPassDesc {
+        surface: SurfaceDesc::Position,
+        output_format: wgpu::TextureFormat::Rgba32Float,
+        ..DirectPassDesc::new(16, 16)
+    };
+    let mut pass = DirectPass::new(&gpu, &point_lights(32), &desc).unwrap();
+    let out = engine::output(&gpu, (16, 16));
+    let out_view = out.create_view(&Default::default());
+    let gbuffer =
+        GBuffer { surface: Surface::Position(&g.position), normal: &g.normal, eye: g.cpu.eye };
+    let mean = |pass: &mut DirectPass| {
+        let mut enc = device.create_command_encoder(&Default::default());
+        let settings = DirectSettings { culling: Culling::None, seed: 1, frame: 0 };
+        pass.record(&mut enc, &DirectInputs::new(gbuffer, &out_view), &settings).unwrap();
+        let img = engine::submit_and_read(&gpu, enc, &out);
+        img.iter().map(|p| (p[0] + p[1] + p[2]) as f64).sum::<f64>()
+    };
+    let open = mean(&mut pass);
+    let occluders = Occluders::from_triangles(&scene.triangles).unwrap();
+    pass.set_shadows(Some(Shadows::new(&occluders))).unwrap();
+    let shadowed = mean(&mut pass);
+    assert!(shadowed < 0.95 * open, "shadows: {shadowed} against {open} unshadowed");
+    gpu.take_errors().unwrap();
+    assert_eq!(errors.load(Ordering::SeqCst), 0, "validation errors");
+}
+
 slc_tests::harness!(
     Gpu: glossy_pass_fits_webgpu_default_limits,
+    Gpu: shadowed_direct_pass_fits_webgpu_default_limits,
     Gpu: downlevel_constructors_are_typed_errors,
     Gpu: ten_thousand_records_allocate_nothing,
 );
