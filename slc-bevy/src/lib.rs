@@ -73,8 +73,20 @@
 //! `RenderAssetUsages` without `MAIN_WORLD`) casts no slc shadow, with one
 //! warning in the log.
 //!
+//! **Emissive meshes** light the scene: every visible entity with a
+//! [`Mesh3d`] and a `StandardMaterial` whose `emissive` is not black
+//! becomes triangle lights, one per triangle, in world space, emitting
+//! from Bevy's front face (both faces for a `double_sided` material) with
+//! radiance `emissive` in cd/m² (Bevy's units) times the camera's
+//! exposure, read every frame (moved, spawned or recoloured emitters
+//! follow; `O(triangles)` per frame). The emissive texture and
+//! `emissive_exposure_weight` (a display setting) are not applied. Bevy
+//! itself only shows an emissive surface; slc lets it light the others,
+//! as Bevy's Solari does with hardware ray tracing.
+//!
 //! **Bad input**: a light slc cannot shade (NaN, infinite or negative
-//! intensity or colour, a NaN position or cone angle) is left out, with
+//! intensity or colour, a NaN position or cone angle, a zero-area emissive
+//! triangle) is left out, with
 //! one warning in the log; a mesh that cannot occlude casts no slc shadow,
 //! with one warning per mesh asset. Neither stops the camera.
 //!
@@ -131,7 +143,7 @@ use slc_wgpu::passes::{
 };
 use slc_wgpu::{
     GBuffer, GpuContext, Instance, Light, LightSet, Occluders, PointLight as SlcPoint,
-    SpotLight as SlcSpot, Surface, SurfaceDesc, TemporalSettings, TemporalView,
+    SpotLight as SlcSpot, Surface, SurfaceDesc, TemporalSettings, TemporalView, TriangleLight,
 };
 use std::collections::HashMap;
 use std::sync::{Arc, Mutex};
@@ -268,6 +280,13 @@ enum BevyLight {
         inner: f32,
         outer: f32,
     },
+    /// A triangle of an emissive mesh in world space, counter-clockwise
+    /// from its emitting side (Bevy's front face), and its radiance in
+    /// cd/m² (the material's `emissive`).
+    Triangle {
+        vertices: [glam::Vec3; 3],
+        nits: glam::Vec3,
+    },
 }
 
 fn candela(color: Color, lumens: f32) -> glam::Vec3 {
@@ -279,12 +298,47 @@ fn to_vec3(v: Vec3) -> glam::Vec3 {
     glam::Vec3::new(v.x, v.y, v.z)
 }
 
+/// What [`extract_lights`] reads of an emissive mesh.
+type EmitterItem = (
+    &'static Mesh3d,
+    &'static MeshMaterial3d<StandardMaterial>,
+    &'static GlobalTransform,
+    &'static InheritedVisibility,
+);
+
 fn extract_lights(
     mut out: ResMut<ExtractedLights>,
     points: Extract<Query<(&PointLight, &GlobalTransform), With<SlcLight>>>,
     spots: Extract<Query<(&SpotLight, &GlobalTransform), With<SlcLight>>>,
+    emitters: Extract<Query<EmitterItem>>,
+    meshes: Extract<Res<Assets<Mesh>>>,
+    materials: Extract<Res<Assets<StandardMaterial>>>,
 ) {
     out.0.clear();
+    for (mesh, material, transform, visible) in &emitters {
+        let Some(m) = materials.get(material.id()) else { continue };
+        let e = m.emissive;
+        let nits = glam::Vec3::new(e.red, e.green, e.blue);
+        if !visible.get() || nits.max_element() <= 0.0 {
+            continue;
+        }
+        let Some(tris) = meshes.get(mesh.id()).map(mesh_triangles) else { continue };
+        let tris = match tris {
+            Ok(t) => t,
+            Err(e) => {
+                warn_once!("slc: an emissive mesh lights nothing: {e}");
+                continue;
+            }
+        };
+        let a = glam::Affine3A::from_cols_array(&transform.affine().to_cols_array());
+        for t in tris {
+            let v = t.map(|p| a.transform_point3(p));
+            out.0.push(BevyLight::Triangle { vertices: v, nits });
+            if m.double_sided {
+                out.0.push(BevyLight::Triangle { vertices: [v[0], v[2], v[1]], nits });
+            }
+        }
+    }
     for (light, transform) in &points {
         out.0.push(BevyLight::Point {
             position: to_vec3(transform.translation()),
@@ -591,6 +645,11 @@ fn slc_lights(lights: &[BevyLight], exposure: f32) -> Vec<Light> {
                         .map(|s| Light::Spot(s.with_quadratic_falloff()))
                         .map_err(|e| format!("spot light at {position}: {e}"))
                 }
+                BevyLight::Triangle { vertices: [a, b, c], nits } => {
+                    TriangleLight::new(a, b, c, nits * exposure)
+                        .map(Light::Triangle)
+                        .map_err(|e| format!("emissive triangle at {a}: {e}"))
+                }
             }
             .map_err(|e| {
                 warn_once!("slc: a light is left out (and any other it cannot shade): {e}")
@@ -658,13 +717,14 @@ fn new_view(
     })
 }
 
-/// The light types the pass compiles: Bevy's point and spot lights.
+/// The light types the pass compiles: Bevy's point and spot lights, and
+/// emissive meshes' triangles.
 fn slc_shared_lights() -> slc_shared_shaders::LightTypes {
     slc_shared_shaders::LightTypes {
         point: true,
         spot: true,
         ies: false,
-        triangle: false,
+        triangle: true,
         vpl: false,
     }
 }

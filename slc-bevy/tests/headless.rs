@@ -18,8 +18,9 @@
 //! `target/slc-bevy-headless/` (PNG).
 //!
 //! The scene also holds bad input slc must survive (lights it cannot
-//! shade, a mesh of zero area): every phase passes only if they change
-//! nothing.
+//! shade, an emissive mesh of zero area): every phase passes only if they
+//! change nothing. The last phase lights the floor with an emissive mesh
+//! alone, against the integral of its light (see `headless/emissive.rs`).
 //!
 //! The GPU is required when `SLC_REQUIRE_GPU=1` (CI); otherwise a machine
 //! without a Vulkan adapter prints SKIP and passes the trial as ignored.
@@ -43,6 +44,9 @@ use rand::{Rng, SeedableRng};
 use slc_bevy::{Culling, SlcCamera, SlcLight, SlcPlugin, SlcStatus};
 use std::sync::{Arc, Mutex};
 
+/// Phase 5: an emissive mesh lights the floor.
+#[path = "headless/emissive.rs"]
+mod emissive;
 /// Phase 4: shadows against Bevy's shadow maps.
 #[path = "headless/shadows.rs"]
 mod shadows;
@@ -276,8 +280,8 @@ fn scene(
 
     // Bad input slc must survive without a NaN pixel or a skipped camera:
     // lights it cannot shade (left out, one warning; Bevy never sees them,
-    // being SlcLights throughout) and a mesh of zero area (no slc shadow,
-    // one warning).
+    // being SlcLights throughout) and an emissive mesh of zero area (no slc
+    // shadow, no light, a warning each).
     for intensity in [f32::NAN, f32::INFINITY, -1e5] {
         commands.spawn((
             PointLight { intensity, shadow_maps_enabled: false, ..default() },
@@ -289,7 +293,9 @@ fn scene(
         .with_inserted_attribute(Mesh::ATTRIBUTE_POSITION, vec![[1.0f32, 1.0, 1.0]; 3])
         .with_inserted_attribute(Mesh::ATTRIBUTE_NORMAL, vec![[0.0f32, 1.0, 0.0]; 3])
         .with_inserted_indices(Indices::U32(vec![0, 1, 2]));
-    commands.spawn((Mesh3d(meshes.add(flat)), MeshMaterial3d(materials.add(Color::WHITE))));
+    // Emissive too: its triangle is a zero-area light, left out.
+    let glow = StandardMaterial { emissive: LinearRgba::rgb(100.0, 100.0, 100.0), ..default() };
+    commands.spawn((Mesh3d(meshes.add(flat)), MeshMaterial3d(materials.add(glow))));
 
     let (w, h) = size();
     let image = images.add(Image::new_target_texture(w, h, TextureFormat::Rgba16Float, None));
@@ -482,6 +488,7 @@ fn run() -> Result<(), String> {
         return Err(format!("the accumulated image's mean is {:+.2}% from Bevy's", 100.0 * bias));
     }
     println!("shadows: {}", shadows(&mut app)?);
+    println!("emissive: {}", emissive::emissive(&mut app)?);
     let status = app.world().resource::<SlcStatus>().get(camera);
     if !matches!(status, Some(Ok(n)) if n > 0) {
         return Err(format!("slc did not shade the camera: {status:?}"));
