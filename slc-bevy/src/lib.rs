@@ -79,7 +79,8 @@
 //! from Bevy's front face (both faces for a `double_sided` material) with
 //! radiance `emissive` in cd/m² (Bevy's units) times the camera's
 //! exposure, read every frame (moved, spawned or recoloured emitters
-//! follow; `O(triangles)` per frame). The emissive texture and
+//! follow; `O(triangles)` per frame); [`NotSlcLight`] keeps an emissive
+//! mesh from becoming lights (it is only shown). The emissive texture and
 //! `emissive_exposure_weight` (a display setting) are not applied. Bevy
 //! itself only shows an emissive surface; slc lets it light the others,
 //! as Bevy's Solari does with hardware ray tracing.
@@ -298,6 +299,12 @@ fn to_vec3(v: Vec3) -> glam::Vec3 {
     glam::Vec3::new(v.x, v.y, v.z)
 }
 
+/// Keeps an emissive mesh from lighting the scene through slc: it is
+/// only shown, as Bevy shows emissive surfaces (a glowing sign or a
+/// decoration of many triangles that should not become lights).
+#[derive(Component, Clone, Copy, Debug, Default)]
+pub struct NotSlcLight;
+
 /// What [`extract_lights`] reads of an emissive mesh.
 type EmitterItem = (
     &'static Mesh3d,
@@ -310,7 +317,7 @@ fn extract_lights(
     mut out: ResMut<ExtractedLights>,
     points: Extract<Query<(&PointLight, &GlobalTransform), With<SlcLight>>>,
     spots: Extract<Query<(&SpotLight, &GlobalTransform), With<SlcLight>>>,
-    emitters: Extract<Query<EmitterItem>>,
+    emitters: Extract<Query<EmitterItem, Without<NotSlcLight>>>,
     meshes: Extract<Res<Assets<Mesh>>>,
     materials: Extract<Res<Assets<StandardMaterial>>>,
 ) {

@@ -3,6 +3,7 @@
 
 use super::*;
 use bevy::camera::Exposure;
+use slc_bevy::NotSlcLight;
 
 /// Radiance of the emissive quad, cd/m² (Bevy's `emissive`).
 const NITS: [f32; 3] = [3000.0, 2700.0, 2400.0];
@@ -13,8 +14,9 @@ const HALF: f32 = 1.5;
 /// Every light but the three bad ones gone, a 3×3 m quad with an emissive
 /// material hangs 4 m above the floor facing down, and the camera looks
 /// straight down at it from 14 m (it sees the quad's back, culled, and the
-/// floor under it). Bevy has no light left, so the image is slc's
-/// alone: the quad's two triangles as triangle lights. Expected, per
+/// floor under it), a twin quad with `NotSlcLight` beside it. Bevy has no
+/// light left, so the image is slc's alone: the first quad's two
+/// triangles as triangle lights. Expected, per
 /// floor pixel: `∫ f(v, l) L cos θ cos θ' / d² dA` over the quad (a
 /// 32×32 midpoint rule; `f` slc-core's `bevy_brdf`, which the unshadowed
 /// phases hold to Bevy's own shading) times the camera's exposure. Each
@@ -35,7 +37,19 @@ pub(super) fn emissive(app: &mut App) -> Result<String, String> {
         ..default()
     };
     let glow = world.resource_mut::<Assets<StandardMaterial>>().add(glow);
-    world.spawn((Mesh3d(quad), MeshMaterial3d(glow), Transform::from_translation(CENTRE)));
+    world.spawn((
+        Mesh3d(quad.clone()),
+        MeshMaterial3d(glow.clone()),
+        Transform::from_translation(CENTRE),
+    ));
+    // The same quad beside it with `NotSlcLight`: shown only, it must
+    // light nothing (the integral below has the first quad alone).
+    world.spawn((
+        Mesh3d(quad),
+        MeshMaterial3d(glow),
+        Transform::from_translation(CENTRE + Vec3::new(5.0, 0.0, 0.0)),
+        NotSlcLight,
+    ));
     let camera = world.resource::<Target>().1;
     let view = Transform::from_xyz(CENTRE.x, 14.0, CENTRE.z)
         .looking_at(Vec3::new(CENTRE.x, 0.0, CENTRE.z), Vec3::Z);
