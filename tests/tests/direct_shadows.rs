@@ -19,6 +19,8 @@
 //! - Moving an instance ([`Occluders::set_transforms`], then
 //!   `set_shadows` again) and turning shadows off give the brute force of
 //!   the moved geometry and of none; a bad normal offset is refused.
+//! - 100,000 point lights (unshadowed): every frame finite, the mean of 32
+//!   frames equal to the unculled brute force per 8×8 block.
 
 use glam::{Affine3A, Quat, Vec3};
 use slc_core::light::{Light, PointLight, SpotLight, connection_cosine, inverse_square};
@@ -281,7 +283,69 @@ fn stochastic_mean_matches_the_brute_force() {
     gpu.take_errors().unwrap();
 }
 
+/// 100,000 point lights (issue 47's bad-input sizes): the pass builds,
+/// shades every frame finite and its mean over 32 frames equals the
+/// unculled brute force per 8×8 block within 4.5 standard errors
+/// (unshadowed, so the brute force stays cheap: 2·10⁸ light terms).
+fn a_hundred_thousand_lights() {
+    let Some(gpu) = gpu() else { return };
+    let mut s = setup(gpu);
+    let mut state = 99u32;
+    let mut rnd = || {
+        state = state.wrapping_mul(1664525).wrapping_add(1013904223);
+        (state >> 8) as f32 / (1u32 << 24) as f32
+    };
+    s.lights = (0..100_000)
+        .map(|_| {
+            let p = Vec3::new(0.02 + 0.51 * rnd(), 0.02 + 0.51 * rnd(), 0.02 + 0.51 * rnd());
+            Light::Point(PointLight::new(p, Vec3::new(rnd(), rnd(), rnd()) * 2e-5).unwrap())
+        })
+        .collect();
+    let mut pass = pass(gpu, &s, DirectSelection::Weighted { k: 8 });
+    let culling = Culling::Stochastic(RangeParams::new(0.01, 1.0).unwrap());
+    let want = brute_force(&s, None);
+    const N: u32 = 32;
+    let frames: Vec<Vec<[f32; 4]>> =
+        (0..N).map(|f| frame(gpu, &s, &mut pass, culling, f)).collect();
+    let block = |i: usize| (i as u32 % W / 8 + i as u32 / W / 8 * (W / 8)) as usize;
+    let blocks = (W / 8 * (H / 8)) as usize;
+    let mean_of = |img: &dyn Fn(usize) -> Option<f64>| {
+        let mut acc = vec![(0.0f64, 0u32); blocks];
+        for i in 0..(W * H) as usize {
+            if let Some(v) = img(i) {
+                acc[block(i)].0 += v;
+                acc[block(i)].1 += 1;
+            }
+        }
+        acc.iter().map(|(a, n)| (*n > 0).then(|| a / *n as f64)).collect::<Vec<_>>()
+    };
+    let per_frame: Vec<Vec<Option<f64>>> = frames
+        .iter()
+        .map(|img| {
+            assert!(img.iter().flatten().all(|c| c.is_finite()), "a pixel is not finite");
+            mean_of(&|i| s.points[i].map(|_| (img[i][0] + img[i][1] + img[i][2]) as f64))
+        })
+        .collect();
+    let exact = mean_of(&|i| want[i].map(|e| (e.x + e.y + e.z) as f64));
+    let mut checked = 0;
+    for b in 0..blocks {
+        let Some(w) = exact[b] else { continue };
+        let m: Vec<f64> = per_frame.iter().map(|f| f[b].unwrap_or(0.0)).collect();
+        let mean = m.iter().sum::<f64>() / N as f64;
+        let se =
+            (m.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / (N - 1) as f64 / N as f64).sqrt();
+        assert!(
+            (mean - w).abs() <= 4.5 * se + 1e-6 * w,
+            "block {b}: mean of {N} frames {mean:.6}, brute force {w:.6}, standard error {se:.6}"
+        );
+        checked += 1;
+    }
+    assert!(checked >= 30, "only {checked} blocks");
+    gpu.take_errors().unwrap();
+}
+
 slc_tests::harness!(
     Gpu: exact_shadows_and_moving_instances,
     Gpu: stochastic_mean_matches_the_brute_force,
+    Gpu: a_hundred_thousand_lights,
 );
