@@ -112,7 +112,7 @@ pub(super) fn emissive(app: &mut App) -> Result<String, String> {
     // Per block on the floor: the frames' mean against the integral.
     let per_frame: Vec<Vec<f64>> = shots.iter().map(|f| blocks(f)).collect();
     let b = blocks(&slc);
-    let (bw, n) = (w / BLOCK, FRAMES as f64);
+    let bw = w / BLOCK;
     let on_floor = |blk: u32| {
         let (bx, by) = (blk % bw, blk / bw);
         (by * BLOCK..(by + 1) * BLOCK).all(|y| {
@@ -127,8 +127,7 @@ pub(super) fn emissive(app: &mut App) -> Result<String, String> {
             continue;
         }
         checked += 1;
-        let var = per_frame.iter().map(|f| (f[i] - b[i]).powi(2)).sum::<f64>() / (n - 1.0);
-        let bound = z * (var / n).sqrt() + 0.005 * a[i] + 1e-4;
+        let bound = block_bound(z, &per_frame, i, b[i], a[i]);
         if (b[i] - a[i]).abs() / bound > worst.0 {
             worst = ((b[i] - a[i]).abs() / bound, i);
         }

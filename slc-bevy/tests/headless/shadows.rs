@@ -126,7 +126,6 @@ fn shadow_compare(app: &mut App, suffix: &str) -> Result<String, String> {
     };
     let per_frame: Vec<Vec<f64>> = shots.iter().map(|f| blocks(f)).collect();
     let (a, bb, u) = (blocks(&truth), blocks(&slc), blocks(&open));
-    let n = FRAMES as f64;
     let z = gaussian_quantile(0.001 / (2.0 * a.len() as f64));
     let (mut checked, mut shadowed, mut worst) = (0, 0, (0.0f64, 0usize));
     for i in 0..a.len() {
@@ -137,8 +136,7 @@ fn shadow_compare(app: &mut App, suffix: &str) -> Result<String, String> {
         if a[i] < 0.9 * u[i] {
             shadowed += 1;
         }
-        let var = per_frame.iter().map(|f| (f[i] - bb[i]).powi(2)).sum::<f64>() / (n - 1.0);
-        let bound = z * (var / n).sqrt() + 0.005 * a[i] + 1e-4;
+        let bound = block_bound(z, &per_frame, i, bb[i], a[i]);
         if (bb[i] - a[i]).abs() / bound > worst.0 {
             worst = ((bb[i] - a[i]).abs() / bound, i);
         }
