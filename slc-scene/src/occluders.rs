@@ -37,6 +37,8 @@ use obvhs::BvhBuildParams;
 use obvhs::aabb::Aabb;
 use obvhs::bvh2::builder::{build_bvh2, build_bvh2_from_tris};
 use obvhs::triangle::Triangle;
+use std::ops::Range;
+use std::sync::atomic::{AtomicU64, Ordering};
 use std::time::Duration;
 use thiserror::Error;
 
@@ -145,7 +147,13 @@ pub struct Occluders {
     tris: Vec<[Vec3; 3]>,
     dropped: usize,
     depth: u32,
+    /// [`Occluders::layout_id`].
+    layout: u64,
 }
+
+/// The source of [`Occluders::layout_id`]s: every layout in the process
+/// gets its own.
+static NEXT_LAYOUT: AtomicU64 = AtomicU64::new(1);
 
 fn aabb(n: &GeoNode) -> Aabb {
     Aabb::new(n.bmin.into(), n.bmax.into())
@@ -353,9 +361,36 @@ impl Occluders {
         self.depth
     }
 
+    /// An id of the flattened tree's layout, new whenever
+    /// [`Occluders::set_instances`] lays it out (unique in the process; a
+    /// clone keeps it). While it stays the same, every instance keeps its
+    /// mesh and its blocks ([`Occluders::instance_blocks`]), and only
+    /// [`Occluders::set_transforms`] changes the arrays: the moved
+    /// instances' blocks and the top level ([`Occluders::top_level_len`]
+    /// nodes). An uploader can then write just those.
+    pub fn layout_id(&self) -> u64 {
+        self.layout
+    }
+
+    /// Instance `i`'s blocks: the ranges of [`Occluders::nodes`] and
+    /// [`Occluders::triangles`] that hold its mesh's nodes (its root's copy
+    /// is also a top-level leaf) and its world-space triangles.
+    pub fn instance_blocks(&self, i: usize) -> (Range<usize>, Range<usize>) {
+        let mesh = &self.meshes[self.instances[i].mesh as usize];
+        let (n0, t0) = (self.blocks[i].0 as usize, self.blocks[i].1 as usize);
+        (n0..n0 + mesh.nodes.len(), t0..t0 + mesh.tris.len())
+    }
+
+    /// Nodes of the top level (`2n − 1` for `n` instances), the first in
+    /// [`Occluders::nodes`]: rebuilt whenever an instance moves.
+    pub fn top_level_len(&self) -> usize {
+        (2 * self.instances.len()).saturating_sub(1)
+    }
+
     /// Allots each instance its block (nodes after the top level's,
     /// triangles in order), places every instance and builds the top level.
     fn lay_out(&mut self) -> Result<(), OccluderError> {
+        self.layout = NEXT_LAYOUT.fetch_add(1, Ordering::Relaxed);
         let n_inst = self.instances.len() as u32;
         let mut node = (2 * n_inst).saturating_sub(1);
         let mut tri = 0u32;
@@ -617,6 +652,47 @@ mod tests {
             assert_eq!(*t, square()[o.source(i).1 as usize]);
         }
         assert!(o.depth() >= 1);
+    }
+
+    /// Moving keeps the layout id and every block; laying out anew gives a
+    /// new id. The blocks tile the arrays after the top level, and moving
+    /// one instance changes nothing outside its blocks and the top level.
+    #[test]
+    fn layout_id_and_blocks_say_what_moving_changes() {
+        let cube = |at: Vec3| Affine3A::from_translation(at);
+        let meshes = vec![square(), square()];
+        let inst = |x: f32| {
+            vec![
+                Instance { mesh: 0, transform: cube(Vec3::ZERO) },
+                Instance { mesh: 1, transform: cube(Vec3::new(x, 0.0, 1.0)) },
+                Instance { mesh: 0, transform: cube(Vec3::new(0.0, 2.0, 0.0)) },
+            ]
+        };
+        let mut o = Occluders::new(&meshes, &inst(0.0)).unwrap();
+        let id = o.layout_id();
+        assert_eq!(o.top_level_len(), 5);
+        let mut next = (o.top_level_len(), 0);
+        for i in 0..3 {
+            let (n, t) = o.instance_blocks(i);
+            assert_eq!((n.start, t.start), next, "instance {i}'s blocks follow the previous ones");
+            next = (n.end, t.end);
+        }
+        assert_eq!(next, (o.nodes().len(), o.triangles().len()));
+        let (nodes, tris) = (o.nodes().to_vec(), o.triangles().to_vec());
+        let transforms: Vec<Affine3A> = inst(0.5).iter().map(|i| i.transform).collect();
+        assert!(o.set_transforms(&transforms).unwrap());
+        assert_eq!(o.layout_id(), id, "moving keeps the layout");
+        let (n1, t1) = o.instance_blocks(1);
+        for (k, (a, b)) in nodes.iter().zip(o.nodes()).enumerate() {
+            assert!(a == b || k < o.top_level_len() || n1.contains(&k), "node {k} changed");
+        }
+        for (k, (a, b)) in tris.iter().zip(o.triangles()).enumerate() {
+            assert!(a == b || t1.contains(&k), "triangle {k} changed");
+        }
+        assert!(tris[t1.clone()] != o.triangles()[t1], "the moved instance's triangles moved");
+        o.set_instances(&inst(0.0)).unwrap();
+        assert_ne!(o.layout_id(), id, "a new layout has a new id");
+        assert_eq!((o.nodes(), o.triangles()), (&nodes[..], &tris[..]), "the same tree again");
     }
 
     #[test]

@@ -213,6 +213,10 @@ fn exact_shadows_and_moving_instances() {
     let changed = shadowed.iter().zip(&after).filter(|(a, b)| a != b).count();
     assert!(changed > 100, "moving the cube changes only {changed} pixels: the test says little");
     assert_exact(&frame(gpu, &s, &mut pass, Culling::None, 1), &after, "moved");
+    // Laid out anew (the same sizes): every buffer rewritten.
+    occ.set_instances(&first).unwrap();
+    pass.set_shadows(Some(Shadows::new(&occ))).unwrap();
+    assert_exact(&frame(gpu, &s, &mut pass, Culling::None, 4), &shadowed, "laid out again");
     pass.set_shadows(None).unwrap();
     assert_exact(&frame(gpu, &s, &mut pass, Culling::None, 2), &brute_force(&s, None), "off");
     // A bad offset is a typed error and changes nothing.

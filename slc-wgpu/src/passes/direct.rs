@@ -22,9 +22,11 @@
 //! distance (a reconstructed depth is only that precise), and ends at the
 //! sampled point on the light, a relative `10⁻⁴` of its length short of
 //! both ends. Moving instances: [`Occluders::set_transforms`], then
-//! `set_shadows` again, which rewrites the buffers in place (48 B per
-//! triangle, 32 B per node, through the queue; no bind group or pipeline
-//! rebuilt). Cost per pixel: `k` rays (the picks), each a BVH walk.
+//! `set_shadows` again, which rewrites in place, through the queue, only
+//! what moving changed: the moved instances' triangles (48 B each) and
+//! nodes (32 B each) and the top level over the instances (no bind group
+//! or pipeline rebuilt). Cost per pixel: `k` rays (the picks), each a BVH
+//! walk.
 //!
 //! | input | format | size | usage | content |
 //! |---|---|---|---|---|
@@ -507,13 +509,15 @@ impl DirectPass {
     /// record on, or turns shadows off (`None`). The first call builds the
     /// shadowed kernel (the device's limits checked first: it binds two
     /// more storage buffers); a call with the same meshes and instances,
-    /// moved ([`Occluders::set_transforms`]), rewrites the buffers in place
-    /// through the queue, and nothing else. Takes effect at the next
+    /// moved ([`Occluders::set_transforms`]), rewrites in place through the
+    /// queue the moved instances' parts of the buffers and the top level,
+    /// and nothing else. On an error nothing changes. Takes effect at the next
     /// submission, as [`DirectPass::update_lights`] does.
     pub fn set_shadows(&mut self, shadows: Option<Shadows>) -> Result<(), GpuError> {
         let Some(sh) = shadows else {
-            if self.occluders.take().is_some() {
-                self.swap_kernel()?;
+            if self.occluders.is_some() {
+                self.swap_kernel(false)?;
+                self.occluders = None;
                 self.remake_groups();
             }
             return Ok(());
@@ -534,20 +538,23 @@ impl DirectPass {
         let shadowed = Features { shadows: true, ..self.features };
         check_kernels(&self.gpu, &[(Kernel::DirectLight, &shadowed, 0)])?;
         let gpu_occ = GpuOccluders::new(&self.gpu, sh.occluders)?;
-        if self.occluders.replace((gpu_occ, sh.normal_offset)).is_none() {
-            self.swap_kernel()?;
+        // The kernel first: where it cannot be built, nothing changes.
+        if self.occluders.is_none() {
+            self.swap_kernel(true)?;
         }
+        self.occluders = Some((gpu_occ, sh.normal_offset));
         self.remake_groups();
         self.gpu.take_errors()
     }
 
-    /// Makes the other variant of `direct_light` (shadowed or not, as
-    /// `occluders` says) the active one, building it the first time.
-    fn swap_kernel(&mut self) -> Result<(), GpuError> {
+    /// Makes the other variant of `direct_light` (the `shadows` one) the
+    /// active one, building it the first time; on an error nothing
+    /// changes.
+    fn swap_kernel(&mut self, shadows: bool) -> Result<(), GpuError> {
         let other = match self.other.take() {
             Some(p) => p,
             None => {
-                let f = Features { shadows: self.occluders.is_some(), ..self.features };
+                let f = Features { shadows, ..self.features };
                 let layout = KernelLayout::new(&self.gpu, Kernel::DirectLight, &f)?;
                 (layout.pipeline(&self.gpu, &f, None)?, layout)
             }
