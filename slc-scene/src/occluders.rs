@@ -489,6 +489,7 @@ impl Occluders {
 mod tests {
     use super::*;
     use glam::Quat;
+    use slc_core::ray::{ray_aabb, ray_inverse3, ray_triangle};
 
     /// A unit square in the z = 0 plane as two triangles, and a degenerate one.
     fn square() -> Vec<[Vec3; 3]> {
@@ -496,34 +497,20 @@ mod tests {
         vec![[a, b, c], [a, c, d], [a, a, b]]
     }
 
-    /// Brute force: does the segment hit any of `tris`? (Möller–Trumbore.)
+    /// Brute force: does the segment hit any of `tris`? (slc-core's
+    /// `ray_triangle`, the kernels' test.)
     fn hits(tris: &[[Vec3; 3]], o: Vec3, d: Vec3, t_max: f32) -> bool {
-        tris.iter().any(|t| {
-            let (e1, e2) = (t[1] - t[0], t[2] - t[0]);
-            let p = d.cross(e2);
-            let det = e1.dot(p);
-            if det.abs() < 1e-12 {
-                return false;
-            }
-            let s = o - t[0];
-            let u = s.dot(p) / det;
-            let q = s.cross(e1);
-            let v = d.dot(q) / det;
-            let t = e2.dot(q) / det;
-            u >= 0.0 && v >= 0.0 && u + v <= 1.0 && t > 0.0 && t < t_max
-        })
+        tris.iter().any(|t| ray_triangle(o, d, t[0], t[1], t[2], 0.0, t_max) > 0.0)
     }
 
-    /// Walks the flattened tree as `geometry.wgsl`'s `trace` does.
+    /// Walks the flattened tree as `geometry.wgsl`'s `trace` does, with
+    /// its box and triangle tests.
     fn walk(o: &Occluders, org: Vec3, d: Vec3, t_max: f32) -> bool {
-        let nodes = o.nodes();
+        let (nodes, inv) = (o.nodes(), ray_inverse3(d));
         let mut stack = if nodes.is_empty() { vec![] } else { vec![0usize] };
         while let Some(k) = stack.pop() {
             let n = nodes[k];
-            let inv = d.recip();
-            let (t1, t2) = ((n.bmin - org) * inv, (n.bmax - org) * inv);
-            let (lo, hi) = (t1.min(t2).max_element(), t1.max(t2).min_element());
-            if lo > hi || hi < 0.0 || lo > t_max {
+            if ray_aabb(org, inv, n.bmin, n.bmax, t_max) < 0.0 {
                 continue;
             }
             if n.count > 0 {

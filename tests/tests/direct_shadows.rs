@@ -228,6 +228,60 @@ fn exact_shadows_and_moving_instances() {
     gpu.take_errors().unwrap();
 }
 
+/// Per 8×8 block, the mean of `value` over its pixels that have one
+/// (`None` for a block with none).
+fn block_means(value: &dyn Fn(usize) -> Option<f64>) -> Vec<Option<f64>> {
+    let block = |i: usize| (i as u32 % W / 8 + i as u32 / W / 8 * (W / 8)) as usize;
+    let mut acc = vec![(0.0f64, 0u32); (W / 8 * (H / 8)) as usize];
+    for i in 0..(W * H) as usize {
+        if let Some(v) = value(i) {
+            acc[block(i)].0 += v;
+            acc[block(i)].1 += 1;
+        }
+    }
+    acc.iter().map(|(a, n)| (*n > 0).then(|| a / *n as f64)).collect()
+}
+
+/// Per block, the frames' block means of `r + g + b` over the shaded
+/// pixels (every pixel checked finite) against the brute force's: each
+/// block's `(mean over the frames, its standard error, the brute force's
+/// block mean)`, for the blocks with shaded pixels.
+fn blocks_against(
+    s: &Setup,
+    frames: &[Vec<[f32; 4]>],
+    want: &[Option<Vec3>],
+) -> Vec<(usize, f64, f64, f64)> {
+    let per_frame: Vec<Vec<Option<f64>>> = frames
+        .iter()
+        .map(|img| {
+            assert!(img.iter().flatten().all(|c| c.is_finite()), "a pixel is not finite");
+            block_means(&|i| s.points[i].map(|_| (img[i][0] + img[i][1] + img[i][2]) as f64))
+        })
+        .collect();
+    let exact = block_means(&|i| want[i].map(|e| (e.x + e.y + e.z) as f64));
+    let n = frames.len() as f64;
+    (0..exact.len())
+        .filter_map(|b| {
+            let w = exact[b]?;
+            let m: Vec<f64> = per_frame.iter().map(|f| f[b].unwrap_or(0.0)).collect();
+            let mean = m.iter().sum::<f64>() / n;
+            let var = m.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / (n - 1.0);
+            Some((b, mean, (var / n).sqrt(), w))
+        })
+        .collect()
+}
+
+/// Each block's mean over the frames within 4.5 standard errors of the
+/// brute force's (plus a relative 10⁻⁶ for rounding).
+fn assert_blocks(blocks: &[(usize, f64, f64, f64)], frames: usize, what: &str) {
+    for &(b, mean, se, want) in blocks {
+        assert!(
+            (mean - want).abs() <= 4.5 * se + 1e-6 * want,
+            "{what}, block {b}: mean of {frames} frames {mean:.6}, brute force {want:.6}, standard error {se:.6}"
+        );
+    }
+}
+
 fn stochastic_mean_matches_the_brute_force() {
     let Some(gpu) = gpu() else { return };
     let s = setup(gpu);
@@ -237,49 +291,17 @@ fn stochastic_mean_matches_the_brute_force() {
     pass.set_shadows(Some(Shadows::new(&occ))).unwrap();
     let culling = Culling::Stochastic(RangeParams::new(0.01, 1.0).unwrap());
     const N: u32 = 64;
-    let (bw, bh) = (W / 8, H / 8);
-    let block = |i: usize| (i as u32 % W / 8 + i as u32 / W / 8 * bw) as usize;
-    let sum = |v: Vec3| v.x + v.y + v.z;
-    // Per block: the frames' block means (of r + g + b over its shaded pixels).
-    let mut means = vec![Vec::new(); (bw * bh) as usize];
-    for f in 0..N {
-        let img = frame(gpu, &s, &mut pass, culling, f);
-        let mut acc = vec![(0.0f64, 0u32); means.len()];
-        for (i, p) in img.iter().enumerate() {
-            if s.points[i].is_some() {
-                assert!(p.iter().all(|c| c.is_finite()), "pixel {i} is not finite");
-                acc[block(i)].0 += (p[0] + p[1] + p[2]) as f64;
-                acc[block(i)].1 += 1;
-            }
-        }
-        for (b, (a, n)) in acc.iter().enumerate() {
-            if *n > 0 {
-                means[b].push(a / *n as f64);
-            }
-        }
-    }
-    let block_mean = |img: &[Option<Vec3>], b: usize| {
-        let v: Vec<f64> = (0..img.len())
-            .filter(|&i| block(i) == b)
-            .filter_map(|i| img[i].map(|e| sum(e) as f64))
-            .collect();
-        v.iter().sum::<f64>() / v.len() as f64
-    };
-    let (shadowed, open) = (brute_force(&s, Some(&inst)), brute_force(&s, None));
-    let mut far_from_open = 0;
-    for (b, m) in means.iter().enumerate().filter(|(_, m)| !m.is_empty()) {
-        let mean = m.iter().sum::<f64>() / N as f64;
-        let var = m.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / (N - 1) as f64;
-        let se = (var / N as f64).sqrt();
-        let want = block_mean(&shadowed, b);
-        assert!(
-            (mean - want).abs() <= 4.5 * se + 1e-6 * want,
-            "block {b}: mean of {N} frames {mean:.6}, shadowed brute force {want:.6}, standard error {se:.6}"
-        );
-        if (mean - block_mean(&open, b)).abs() > 10.0 * se {
-            far_from_open += 1;
-        }
-    }
+    let frames: Vec<Vec<[f32; 4]>> =
+        (0..N).map(|f| frame(gpu, &s, &mut pass, culling, f)).collect();
+    let blocks = blocks_against(&s, &frames, &brute_force(&s, Some(&inst)));
+    assert_blocks(&blocks, frames.len(), "shadowed");
+    // The blocks where the shadows matter: far from the unshadowed sum.
+    let open_img = brute_force(&s, None);
+    let open = block_means(&|i| open_img[i].map(|e| (e.x + e.y + e.z) as f64));
+    let far_from_open = blocks
+        .iter()
+        .filter(|&&(b, mean, se, _)| (mean - open[b].unwrap()).abs() > 10.0 * se)
+        .count();
     assert!(
         far_from_open >= 8,
         "only {far_from_open} blocks see the shadows: the test says little"
@@ -307,44 +329,12 @@ fn a_hundred_thousand_lights() {
         .collect();
     let mut pass = pass(gpu, &s, DirectSelection::Weighted { k: 8 });
     let culling = Culling::Stochastic(RangeParams::new(0.01, 1.0).unwrap());
-    let want = brute_force(&s, None);
     const N: u32 = 32;
     let frames: Vec<Vec<[f32; 4]>> =
         (0..N).map(|f| frame(gpu, &s, &mut pass, culling, f)).collect();
-    let block = |i: usize| (i as u32 % W / 8 + i as u32 / W / 8 * (W / 8)) as usize;
-    let blocks = (W / 8 * (H / 8)) as usize;
-    let mean_of = |img: &dyn Fn(usize) -> Option<f64>| {
-        let mut acc = vec![(0.0f64, 0u32); blocks];
-        for i in 0..(W * H) as usize {
-            if let Some(v) = img(i) {
-                acc[block(i)].0 += v;
-                acc[block(i)].1 += 1;
-            }
-        }
-        acc.iter().map(|(a, n)| (*n > 0).then(|| a / *n as f64)).collect::<Vec<_>>()
-    };
-    let per_frame: Vec<Vec<Option<f64>>> = frames
-        .iter()
-        .map(|img| {
-            assert!(img.iter().flatten().all(|c| c.is_finite()), "a pixel is not finite");
-            mean_of(&|i| s.points[i].map(|_| (img[i][0] + img[i][1] + img[i][2]) as f64))
-        })
-        .collect();
-    let exact = mean_of(&|i| want[i].map(|e| (e.x + e.y + e.z) as f64));
-    let mut checked = 0;
-    for b in 0..blocks {
-        let Some(w) = exact[b] else { continue };
-        let m: Vec<f64> = per_frame.iter().map(|f| f[b].unwrap_or(0.0)).collect();
-        let mean = m.iter().sum::<f64>() / N as f64;
-        let se =
-            (m.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / (N - 1) as f64 / N as f64).sqrt();
-        assert!(
-            (mean - w).abs() <= 4.5 * se + 1e-6 * w,
-            "block {b}: mean of {N} frames {mean:.6}, brute force {w:.6}, standard error {se:.6}"
-        );
-        checked += 1;
-    }
-    assert!(checked >= 30, "only {checked} blocks");
+    let blocks = blocks_against(&s, &frames, &brute_force(&s, None));
+    assert_blocks(&blocks, frames.len(), "100,000 lights");
+    assert!(blocks.len() >= 30, "only {} blocks", blocks.len());
     gpu.take_errors().unwrap();
 }
 
