@@ -78,8 +78,9 @@
 //! becomes triangle lights, one per triangle, in world space, emitting
 //! from Bevy's front face (both faces for a `double_sided` material) with
 //! radiance `emissive` in cd/m² (Bevy's units) times the camera's
-//! exposure, read every frame (moved, spawned or recoloured emitters
-//! follow; `O(triangles)` per frame); [`NotSlcLight`] keeps an emissive
+//! exposure, placed every frame (moved, spawned or recoloured emitters
+//! follow; `O(triangles)` per frame; each mesh asset's triangles are read
+//! once and again only when the asset changes); [`NotSlcLight`] keeps an emissive
 //! mesh from becoming lights (it is only shown). The emissive texture and
 //! `emissive_exposure_weight` (a display setting) are not applied. Bevy
 //! itself only shows an emissive surface; slc lets it light the others,
@@ -313,15 +314,32 @@ type EmitterItem = (
     &'static InheritedVisibility,
 );
 
+/// Each emissive mesh asset's triangles in object space (or why it
+/// lights nothing), read once and kept until the asset changes.
+type EmitterCache = HashMap<AssetId<Mesh>, Result<Vec<[glam::Vec3; 3]>, String>>;
+
+#[allow(clippy::too_many_arguments)] // A system's parameters.
 fn extract_lights(
     mut out: ResMut<ExtractedLights>,
+    mut cache: Local<EmitterCache>,
     points: Extract<Query<(&PointLight, &GlobalTransform), With<SlcLight>>>,
     spots: Extract<Query<(&SpotLight, &GlobalTransform), With<SlcLight>>>,
     emitters: Extract<Query<EmitterItem, Without<NotSlcLight>>>,
     meshes: Extract<Res<Assets<Mesh>>>,
     materials: Extract<Res<Assets<StandardMaterial>>>,
+    mut events: Extract<MessageReader<AssetEvent<Mesh>>>,
 ) {
     out.0.clear();
+    for e in events.read() {
+        if let AssetEvent::Modified { id } | AssetEvent::Removed { id } = e {
+            cache.remove(id);
+        }
+    }
+    // Meshes made and dropped as the app runs: read again when most of
+    // the cache is no longer in use.
+    if cache.len() > 64 + 2 * emitters.iter().count() {
+        cache.clear();
+    }
     for (mesh, material, transform, visible) in &emitters {
         let Some(m) = materials.get(material.id()) else { continue };
         let e = m.emissive;
@@ -329,7 +347,14 @@ fn extract_lights(
         if !visible.get() || nits.max_element() <= 0.0 {
             continue;
         }
-        let Some(tris) = meshes.get(mesh.id()).map(mesh_triangles) else { continue };
+        let tris = match cache.get(&mesh.id()) {
+            Some(t) => t,
+            None => {
+                // Not loaded yet: looked at again next frame.
+                let Some(asset) = meshes.get(mesh.id()) else { continue };
+                cache.entry(mesh.id()).or_insert(mesh_triangles(asset))
+            }
+        };
         let tris = match tris {
             Ok(t) => t,
             Err(e) => {

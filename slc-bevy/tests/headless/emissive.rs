@@ -22,7 +22,8 @@ const HALF: f32 = 1.5;
 /// phases hold to Bevy's own shading) times the camera's exposure. Each
 /// 8×8 block on the floor: the mean of `FRAMES` frames within the bound
 /// of [`compare`](super::compare); at least 48 blocks. An emitter facing
-/// the wrong way, or in other units, fails.
+/// the wrong way, or in other units, fails. Then the quad's mesh asset is
+/// edited to 10⁻⁴ of its area: the floor keeps at most 10⁻³ of its light.
 pub(super) fn emissive(app: &mut App) -> Result<String, String> {
     let world = app.world_mut();
     let old: Vec<Entity> = world.query_filtered::<Entity, With<SceneLight>>().iter(world).collect();
@@ -42,6 +43,7 @@ pub(super) fn emissive(app: &mut App) -> Result<String, String> {
         MeshMaterial3d(glow.clone()),
         Transform::from_translation(CENTRE),
     ));
+    let edit = quad.clone();
     // The same quad beside it with `NotSlcLight`: shown only, it must
     // light nothing (the integral below has the first quad alone).
     world.spawn((
@@ -144,5 +146,23 @@ pub(super) fn emissive(app: &mut App) -> Result<String, String> {
     if checked < 48 {
         return Err(format!("{report}\ntoo few floor blocks"));
     }
-    Ok(report)
+
+    // The quad's mesh asset edited to a 100× smaller side (10⁻⁴ of the
+    // area): its triangles are read again and the floor gets next to
+    // nothing (read once and kept, they would still light it fully).
+    let small: Mesh = Plane3d::new(-Vec3::Y, Vec2::splat(HALF * 0.01)).into();
+    *app.world_mut().resource_mut::<Assets<Mesh>>().get_mut(&edit).expect("the quad") = small;
+    let after = mean_image(&capture(app, 4, 4));
+    let lit = (0..a.len()).filter(|&i| on_floor(i as u32)).map(|i| b[i]).sum::<f64>();
+    let left = blocks(&after);
+    let left = (0..a.len()).filter(|&i| on_floor(i as u32)).map(|i| left[i]).sum::<f64>();
+    if left.is_nan() || left > 1e-3 * lit {
+        return Err(format!(
+            "{report}\nthe quad's mesh edited to 10⁻⁴ of its area still lights the floor: {left:.5} of {lit:.5}"
+        ));
+    }
+    Ok(format!(
+        "{report}; edited to 1e-4 of its area, the floor keeps {:.1e} of its light",
+        left / lit
+    ))
 }
