@@ -18,7 +18,23 @@
 //! (`slc`, `default`, `unbounded`) picks the starting mode; `SLC_BEVY_SIZE`
 //! (`WxH`) the window's size; `SLC_BEVY_SHADOWS=off` starts without slc's
 //! shadows.
+//!
+//! **Frame-time bench** (no window, no display): `SLC_BEVY_BENCH=out.json`
+//! renders into an image target at `SLC_BEVY_SIZE` (default 1920x1080)
+//! under Bevy's `RenderDiagnosticsPlugin` (GPU timestamps where the adapter
+//! has them), in four configurations: slc shadowed, slc unshadowed, Bevy
+//! at its default 20 m ranges, Bevy at unbounded ranges. Each warms up for
+//! at least 0.5 s and 3 frames, then times `SLC_BEVY_BENCH_FRAMES` frames
+//! (default 64, at most 120) back to back; it reports per configuration
+//! the median GPU time of each of Bevy's top-level passes and slc's
+//! (`render/slc`), their sum (the GPU frame), and the median wall time of
+//! a frame, as a table and as JSON. Run it once per light count:
+//!
+//! ```text
+//! SLC_BEVY_BENCH=bench-4000.json cargo run --release --manifest-path slc-bevy/Cargo.toml --ignore-rust-version --example many_lights 4000
+//! ```
 
+use bevy::camera::RenderTarget;
 use bevy::core_pipeline::tonemapping::Tonemapping;
 use bevy::pbr::DefaultOpaqueRendererMethod;
 use bevy::prelude::*;
@@ -28,15 +44,20 @@ use slc_bevy::{Culling, SlcCamera, SlcLight, SlcPlugin, SlcStatus};
 
 fn main() {
     let lights = std::env::args().nth(1).and_then(|s| s.parse().ok()).unwrap_or(4000usize);
+    if let Ok(out) = std::env::var("SLC_BEVY_BENCH") {
+        if let Err(e) = bench(lights, &out) {
+            eprintln!("many_lights bench: {e}");
+            std::process::exit(1);
+        }
+        return;
+    }
     let mode = match std::env::var("SLC_BEVY_MODE").as_deref() {
         Ok("default") => Mode::BevyDefaultRange,
         Ok("unbounded") => Mode::BevyUnbounded,
         _ => Mode::Slc,
     };
     let mut window = Window { title: "slc-bevy many_lights".into(), ..default() };
-    if let Some((w, h)) = std::env::var("SLC_BEVY_SIZE").ok().and_then(|s| {
-        s.split_once('x').and_then(|(w, h)| Some((w.parse::<u32>().ok()?, h.parse::<u32>().ok()?)))
-    }) {
+    if let Some((w, h)) = size() {
         window.resolution = (w, h).into();
     }
     App::new()
@@ -47,7 +68,7 @@ fn main() {
         .insert_resource(DefaultOpaqueRendererMethod::deferred())
         .insert_resource(GlobalAmbientLight { brightness: 0.0, ..default() })
         .insert_resource(ClearColor(Color::srgb(0.01, 0.01, 0.02)))
-        .insert_resource(Settings { lights, mode, frame_ms: 0.0 })
+        .insert_resource(Settings { lights, mode, frame_ms: 0.0, apply: true })
         .add_systems(Startup, setup)
         .add_systems(Update, (move_lights, keys, title, scripted_exit))
         .run();
@@ -65,7 +86,20 @@ struct Settings {
     lights: usize,
     mode: Mode,
     frame_ms: f32,
+    /// Apply `mode` to the lights at the next update.
+    apply: bool,
 }
+
+/// `SLC_BEVY_SIZE` (`WxH`), when set.
+fn size() -> Option<(u32, u32)> {
+    std::env::var("SLC_BEVY_SIZE").ok().and_then(|s| {
+        s.split_once('x').and_then(|(w, h)| Some((w.parse::<u32>().ok()?, h.parse::<u32>().ok()?)))
+    })
+}
+
+/// The bench's image target: the camera renders into it instead of a window.
+#[derive(Resource)]
+struct BenchTarget(Handle<Image>);
 
 /// A light's circle: centre, radius, angular speed, phase.
 #[derive(Component)]
@@ -79,6 +113,7 @@ struct Orbit {
 fn setup(
     mut commands: Commands,
     settings: Res<Settings>,
+    target: Option<Res<BenchTarget>>,
     mut meshes: ResMut<Assets<Mesh>>,
     mut materials: ResMut<Assets<StandardMaterial>>,
 ) {
@@ -148,15 +183,20 @@ fn setup(
             commands.spawn((point, Transform::from_translation(centre), orbit));
         }
     }
-    commands.spawn((
-        Camera3d::default(),
-        SlcCamera {
-            shadows: std::env::var("SLC_BEVY_SHADOWS").as_deref() != Ok("off"),
-            ..default()
-        },
-        Tonemapping::AcesFitted,
-        Transform::from_xyz(0.0, 60.0, 120.0).looking_at(Vec3::ZERO, Vec3::Y),
-    ));
+    let camera = commands
+        .spawn((
+            Camera3d::default(),
+            SlcCamera {
+                shadows: std::env::var("SLC_BEVY_SHADOWS").as_deref() != Ok("off"),
+                ..default()
+            },
+            Tonemapping::AcesFitted,
+            Transform::from_xyz(0.0, 60.0, 120.0).looking_at(Vec3::ZERO, Vec3::Y),
+        ))
+        .id();
+    if let Some(t) = target {
+        commands.entity(camera).insert(RenderTarget::Image(t.0.clone().into()));
+    }
 }
 
 /// Moves the lights along their circles: by the clock, or in scripted
@@ -167,7 +207,9 @@ fn move_lights(
     frames: Res<bevy::diagnostic::FrameCount>,
     mut lights: Query<(&Orbit, &mut Transform)>,
 ) {
-    let t = if std::env::var_os("SLC_BEVY_FRAMES").is_some() {
+    let t = if std::env::var_os("SLC_BEVY_FRAMES").is_some()
+        || std::env::var_os("SLC_BEVY_BENCH").is_some()
+    {
         frames.0 as f32 / 60.0
     } else {
         time.elapsed_secs()
@@ -193,7 +235,8 @@ fn keys(
             Mode::BevyUnbounded => Mode::Slc,
         };
     }
-    if input.just_pressed(KeyCode::Space) || settings.is_added() {
+    if input.just_pressed(KeyCode::Space) || settings.apply {
+        settings.apply = false;
         let range =
             if settings.mode == Mode::BevyUnbounded { 1e4 } else { PointLight::default().range };
         let mut lights: Vec<Entity> = Vec::new();
@@ -306,6 +349,162 @@ fn scripted_exit(
     if *frames > n + 30 {
         exit.write(AppExit::error());
     }
+}
+
+/// One configuration of the bench: its name, the lights' mode and slc's
+/// shadows.
+const CONFIGS: [(&str, Mode, bool); 4] = [
+    ("slc, shadowed", Mode::Slc, true),
+    ("slc, unshadowed", Mode::Slc, false),
+    ("Bevy, default 20 m ranges", Mode::BevyDefaultRange, false),
+    ("Bevy, unbounded ranges", Mode::BevyUnbounded, false),
+];
+
+/// The median of `v` (0 for none).
+fn median(mut v: Vec<f64>) -> f64 {
+    if v.is_empty() {
+        return 0.0;
+    }
+    v.sort_by(f64::total_cmp);
+    v[v.len() / 2]
+}
+
+/// The frame-time bench (see the module docs): every configuration of
+/// [`CONFIGS`] with `lights` lights, written to `out` as JSON.
+fn bench(lights: usize, out: &str) -> Result<(), String> {
+    use bevy::app::PluginsState;
+    use bevy::diagnostic::DiagnosticsStore;
+    use bevy::render::RenderPlugin;
+    use bevy::render::diagnostic::RenderDiagnosticsPlugin;
+    use bevy::render::render_resource::TextureFormat;
+    use bevy::render::renderer::RenderAdapterInfo;
+    use bevy::window::ExitCondition;
+    use bevy::winit::WinitPlugin;
+    use std::time::{Duration, Instant};
+
+    let (w, h) = size().unwrap_or((1920, 1080));
+    let frames: usize = std::env::var("SLC_BEVY_BENCH_FRAMES")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(64)
+        .clamp(4, 120);
+    let mut app = App::new();
+    app.add_plugins((
+        DefaultPlugins
+            .set(WindowPlugin {
+                primary_window: None,
+                exit_condition: ExitCondition::DontExit,
+                ..default()
+            })
+            .set(RenderPlugin { synchronous_pipeline_compilation: true, ..default() })
+            .disable::<WinitPlugin>(),
+        SlcPlugin,
+        RenderDiagnosticsPlugin,
+    ))
+    .insert_resource(DefaultOpaqueRendererMethod::deferred())
+    .insert_resource(GlobalAmbientLight { brightness: 0.0, ..default() })
+    .insert_resource(ClearColor(Color::srgb(0.01, 0.01, 0.02)))
+    .insert_resource(Settings { lights, mode: Mode::Slc, frame_ms: 0.0, apply: true })
+    .add_systems(Startup, setup)
+    .add_systems(Update, (move_lights, keys));
+    while app.plugins_state() == PluginsState::Adding {
+        bevy::tasks::tick_global_task_pools_on_main_thread();
+    }
+    app.finish();
+    app.cleanup();
+    let image = Image::new_target_texture(w, h, TextureFormat::Rgba16Float, None);
+    let image = app.world_mut().resource_mut::<Assets<Image>>().add(image);
+    app.insert_resource(BenchTarget(image));
+    let adapter = app
+        .sub_app(bevy::render::RenderApp)
+        .world()
+        .get_resource::<RenderAdapterInfo>()
+        .map_or("unknown".to_string(), |a| format!("{} ({:?})", a.name, a.backend));
+    println!("many_lights bench: {lights} lights, {w}x{h}, {frames} timed frames, on {adapter}");
+    let mut results = Vec::new();
+    for (name, mode, shadows) in CONFIGS {
+        {
+            let world = app.world_mut();
+            let mut settings = world.resource_mut::<Settings>();
+            (settings.mode, settings.apply) = (mode, true);
+            let mut cameras = world.query::<&mut SlcCamera>();
+            for mut c in cameras.iter_mut(world) {
+                c.shadows = shadows;
+            }
+        }
+        // Warm-up: the mode applied, pipelines built, the clock up.
+        let start = Instant::now();
+        let mut n = 0;
+        while n < 3 || start.elapsed() < Duration::from_millis(500) {
+            app.update();
+            n += 1;
+        }
+        // Timestamps arrive a few frames late: what is in flight is
+        // dropped, then `frames` frames are timed back to back (and the
+        // few after them let their timestamps arrive).
+        let clear = |app: &mut App| {
+            for d in app.world_mut().resource_mut::<DiagnosticsStore>().iter_mut() {
+                d.clear_history();
+            }
+        };
+        for _ in 0..4 {
+            app.update();
+        }
+        clear(&mut app);
+        let mut wall = Vec::with_capacity(frames);
+        for _ in 0..frames {
+            let t = Instant::now();
+            app.update();
+            wall.push(t.elapsed().as_secs_f64() * 1e3);
+        }
+        for _ in 0..4 {
+            app.update();
+        }
+        let store = app.world().resource::<DiagnosticsStore>();
+        // Bevy's top-level spans: render/<pass>/elapsed_gpu (nested ones
+        // are inside them).
+        let mut passes: Vec<(String, f64, usize)> = store
+            .iter()
+            .filter_map(|d| {
+                let c: Vec<&str> = d.path().components().collect();
+                let v: Vec<f64> = d.values().copied().take(frames).collect();
+                (c.len() == 3 && c[0] == "render" && c[2] == "elapsed_gpu" && !v.is_empty())
+                    .then(|| (c[1].to_string(), median(v.clone()), v.len()))
+            })
+            .collect();
+        passes.sort_by(|a, b| a.0.cmp(&b.0));
+        let gpu_total: f64 = passes.iter().map(|p| p.1).sum();
+        let slc = passes.iter().find(|p| p.0 == "slc").map_or(0.0, |p| p.1);
+        let samples = passes.iter().map(|p| p.2).min().unwrap_or(0);
+        let cpu = median(wall);
+        println!(
+            "  {name:<28} GPU frame {gpu_total:8.3} ms (slc {slc:7.3} ms; {} passes, {samples} frames of timestamps); wall {cpu:8.2} ms/frame",
+            passes.len()
+        );
+        results.push(serde_json::json!({
+            "configuration": name,
+            "gpu_frame_ms": gpu_total,
+            "slc_ms": slc,
+            "timestamped_frames": samples,
+            "wall_ms": cpu,
+            "passes_ms": passes.iter().map(|p| (p.0.clone(), serde_json::json!(p.1))).collect::<serde_json::Map<_, _>>(),
+        }));
+    }
+    let timestamps = results.iter().any(|r| r["timestamped_frames"].as_u64() > Some(0));
+    if !timestamps {
+        println!("  no GPU timestamps on this adapter: only the wall times mean anything");
+    }
+    let report = serde_json::json!({
+        "adapter": adapter,
+        "lights": lights,
+        "width": w,
+        "height": h,
+        "timed_frames": frames,
+        "timestamps": timestamps,
+        "configurations": results,
+    });
+    let text = serde_json::to_string_pretty(&report).map_err(|e| e.to_string())?;
+    std::fs::write(out, text).map_err(|e| format!("{out}: {e}"))
 }
 
 fn write_png(

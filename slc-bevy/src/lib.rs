@@ -125,6 +125,7 @@ use bevy::core_pipeline::prepass::{
 use bevy::light::NotShadowCaster;
 use bevy::prelude::*;
 use bevy::render::camera::ExtractedCamera;
+use bevy::render::diagnostic::RecordDiagnostics;
 use bevy::render::extract_component::{ExtractComponent, ExtractComponentPlugin};
 use bevy::render::render_resource::binding_types::{texture_2d, texture_storage_2d};
 use bevy::render::render_resource::{
@@ -888,8 +889,9 @@ fn shade_view(
     let Some(gpu) = gpu else { return };
     let (entity, target, prepass) = view.into_inner();
     let Some(v) = views.0.get_mut(&entity) else { return };
+    let main = v.main;
     let report = |r: Result<u64, String>| {
-        status.0.lock().unwrap_or_else(|e| e.into_inner()).insert(v.main, r);
+        status.0.lock().unwrap_or_else(|e| e.into_inner()).insert(main, r);
     };
     // The plugin's kernels compile in Bevy's pipeline cache (in the
     // background unless the app asks for synchronous compilation).
@@ -945,43 +947,43 @@ fn shade_view(
     }
     let Some((_, unpack_group)) = &v.unpack_group else { return };
     let composite_group = &v.composite_groups[usize::from(v.settings.accumulate)];
+    // One span over slc's work in the view (Bevy's RenderDiagnosticsPlugin,
+    // where the app adds it: "render/slc/elapsed_gpu"; nothing otherwise).
+    let diagnostics = ctx.diagnostic_recorder();
+    let diagnostics = diagnostics.as_deref();
     let encoder = ctx.command_encoder();
-    {
-        let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
-            label: Some("slc-bevy unpack"),
-            timestamp_writes: None,
-        });
-        pass.set_pipeline(unpack);
-        pass.set_bind_group(0, unpack_group, &[]);
-        pass.dispatch_workgroups(v.size.0.div_ceil(8), v.size.1.div_ceil(8), 1);
-    }
-    let gbuf = GBuffer {
-        surface: Surface::Depth { depth, inv_view_proj: v.inv_view_proj },
-        normal: &v.normal,
-        eye: v.eye,
-    };
-    let mut inputs = DirectInputs::new(gbuf, &v.output);
-    inputs.material = Some(MaterialInputs { base_color: &v.base, metallic_roughness: &v.material });
-    let settings =
-        DirectSettings { culling: v.settings.culling, seed: v.settings.seed, frame: v.frame };
-    if let Err(e) = v.pass.record(encoder, &inputs, &settings) {
-        report(Err(e.to_string()));
-        return;
-    }
-    if v.settings.accumulate {
-        let history = TemporalSettings { max_history: v.settings.max_history };
-        let history = if v.changed { history.after_change() } else { history };
-        let view = TemporalView { view_projection: v.inv_view_proj.inverse(), eye: v.eye };
-        let inputs = TemporalInputs {
-            motion: if v.motion { prepass.motion_vectors_view().map(|t| &**t) } else { None },
-            ..TemporalInputs::new(gbuf, &v.output, &v.accumulated)
-        };
-        if let Err(e) = v.temporal.record(encoder, &inputs, &view, &history) {
-            report(Err(e.to_string()));
-            return;
+    let span = diagnostics.time_span(encoder, "slc");
+    let recorded = (|| -> Result<(), String> {
+        {
+            let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
+                label: Some("slc-bevy unpack"),
+                timestamp_writes: None,
+            });
+            pass.set_pipeline(unpack);
+            pass.set_bind_group(0, unpack_group, &[]);
+            pass.dispatch_workgroups(v.size.0.div_ceil(8), v.size.1.div_ceil(8), 1);
         }
-    }
-    {
+        let gbuf = GBuffer {
+            surface: Surface::Depth { depth, inv_view_proj: v.inv_view_proj },
+            normal: &v.normal,
+            eye: v.eye,
+        };
+        let mut inputs = DirectInputs::new(gbuf, &v.output);
+        inputs.material =
+            Some(MaterialInputs { base_color: &v.base, metallic_roughness: &v.material });
+        let settings =
+            DirectSettings { culling: v.settings.culling, seed: v.settings.seed, frame: v.frame };
+        v.pass.record(encoder, &inputs, &settings).map_err(|e| e.to_string())?;
+        if v.settings.accumulate {
+            let history = TemporalSettings { max_history: v.settings.max_history };
+            let history = if v.changed { history.after_change() } else { history };
+            let view = TemporalView { view_projection: v.inv_view_proj.inverse(), eye: v.eye };
+            let inputs = TemporalInputs {
+                motion: if v.motion { prepass.motion_vectors_view().map(|t| &**t) } else { None },
+                ..TemporalInputs::new(gbuf, &v.output, &v.accumulated)
+            };
+            v.temporal.record(encoder, &inputs, &view, &history).map_err(|e| e.to_string())?;
+        }
         let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
             label: Some("slc-bevy composite"),
             color_attachments: &[Some(wgpu::RenderPassColorAttachment {
@@ -998,6 +1000,12 @@ fn shade_view(
         pass.set_pipeline(composite);
         pass.set_bind_group(0, composite_group, &[]);
         pass.draw(0..3, 0..1);
+        Ok(())
+    })();
+    span.end(encoder);
+    if let Err(e) = recorded {
+        report(Err(e));
+        return;
     }
     v.frame = v.frame.wrapping_add(1);
     report(Ok(u64::from(v.frame)));
