@@ -129,7 +129,29 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
             h = pcg_hash(h);
             let u1 = xi_from_bits(h);
             h = pcg_hash(h);
-            t = add(t, shade_pick(picks.light[k], x, n, r, rl, m, weighted_pick_weight(picks.w_sum, picks.w[k], K), u1, xi_from_bits(h), eps));
+            let u2 = xi_from_bits(h);
+            let li = picks.light[k];
+            // The picks are independent, so a light may be picked more than
+            // once. A light without area (point, spot, IES, VPL) has no point
+            // to sample: its `copies` picks are one ray and one term, shaded once
+            // at its first pick with `copies` times a pick's weight (the same
+            // sum, `copies − 1` fewer shadow rays). A triangle's picks each
+            // sample a point of their own.
+            var copies = 1u;
+            if lights[li].kind != LIGHT_TRIANGLE {
+                for (var j = 0u; j < K; j++) {
+                    if j != k && picks.light[j] == li {
+                        if j < k {
+                            copies = 0u;
+                            break;
+                        }
+                        copies += 1u;
+                    }
+                }
+            }
+            if copies > 0u {
+                t = add(t, shade_pick(li, x, n, r, rl, m, weighted_pick_weight(picks.w_sum, picks.w[k], K) * f32(copies), u1, u2, eps));
+            }
         }
     }
     let count = picks.n;

@@ -25,8 +25,9 @@
 //! `set_shadows` again, which rewrites in place, through the queue, only
 //! what moving changed: the moved instances' triangles (48 B each) and
 //! nodes (32 B each) and the top level over the instances (no bind group
-//! or pipeline rebuilt). Cost per pixel: `k` rays (the picks), each a BVH
-//! walk.
+//! or pipeline rebuilt). Cost per pixel: at most `k` rays (the picks), each
+//! a BVH walk; a light without area (point, spot, IES) picked more than
+//! once casts one ray for all its picks.
 //!
 //! | input | format | size | usage | content |
 //! |---|---|---|---|---|

@@ -279,28 +279,28 @@ float connection_cosine(
     metal::float3 ng,
     float r2_1
 ) {
-    bool local_2 = {};
     bool local_3 = {};
+    bool local_4 = {};
     metal::float3 v_4 = x_2 - y;
     float d2_7 = metal::dot(v_4, v_4);
     bool _e7 = slc_keep(r2_1, d2_7);
     if (!(!(_e7))) {
-        local_2 = !((d2_7 > 0.0));
+        local_3 = !((d2_7 > 0.0));
     } else {
-        local_2 = true;
+        local_3 = true;
     }
-    bool _e16 = local_2;
+    bool _e16 = local_3;
     if (_e16) {
         return 0.0;
     }
     metal::float3 w_5 = v_4 / metal::float3(metal::sqrt(d2_7));
     float cos_x_1 = -(metal::dot(n, w_5));
     if (!((cos_x_1 <= 0.0))) {
-        local_3 = metal::dot(ng, w_5) >= 0.0;
+        local_4 = metal::dot(ng, w_5) >= 0.0;
     } else {
-        local_3 = true;
+        local_4 = true;
     }
-    bool _e32 = local_3;
+    bool _e32 = local_4;
     if (_e32) {
         return 0.0;
     }
@@ -499,22 +499,22 @@ float cone_cos_of(
     float a_2,
     metal::float3 d
 ) {
-    bool local_4 = {};
     bool local_5 = {};
+    bool local_6 = {};
     float vd = metal::dot(v, d);
     float h2_ = d2_4 - (a_2 * a_2);
     if (!((h2_ <= 0.0))) {
         if (vd >= 0.0) {
-            local_5 = (vd * vd) >= h2_;
+            local_6 = (vd * vd) >= h2_;
         } else {
-            local_5 = false;
+            local_6 = false;
         }
-        bool _e19 = local_5;
-        local_4 = _e19;
+        bool _e19 = local_6;
+        local_5 = _e19;
     } else {
-        local_4 = true;
+        local_5 = true;
     }
-    bool _e21 = local_4;
+    bool _e21 = local_5;
     if (_e21) {
         return 1.0;
     }
@@ -597,15 +597,15 @@ float glossy_importance(
     metal::float3 r_3,
     metal::float4 lobe_5
 ) {
-    bool local_6 = {};
+    bool local_7 = {};
     float _e10 = emitter_importance(center_5, radius_5, phi_2, axis_3, cos_o_3, cos_e_2, p_5);
     float _e11 = cone_cos_toward(center_5, radius_5, p_5, n_2);
     if (!((_e10 <= 0.0))) {
-        local_6 = _e11 <= 0.0;
+        local_7 = _e11 <= 0.0;
     } else {
-        local_6 = true;
+        local_7 = true;
     }
-    bool _e20 = local_6;
+    bool _e20 = local_7;
     if (_e20) {
         return 0.0;
     }
@@ -653,20 +653,20 @@ float cone_weight(
 bool finite3_(
     metal::float3 v_1
 ) {
-    bool local_7 = {};
     bool local_8 = {};
+    bool local_9 = {};
     if (metal::abs(v_1.x) <= F32_MAX) {
-        local_7 = metal::abs(v_1.y) <= F32_MAX;
-    } else {
-        local_7 = false;
-    }
-    bool _e12 = local_7;
-    if (_e12) {
-        local_8 = metal::abs(v_1.z) <= F32_MAX;
+        local_8 = metal::abs(v_1.y) <= F32_MAX;
     } else {
         local_8 = false;
     }
-    bool _e20 = local_8;
+    bool _e12 = local_8;
+    if (_e12) {
+        local_9 = metal::abs(v_1.z) <= F32_MAX;
+    } else {
+        local_9 = false;
+    }
+    bool _e20 = local_9;
     return _e20;
 }
 
@@ -719,9 +719,9 @@ float ray_triangle(
     float t_min,
     float t_max_1
 ) {
-    bool local_9 = {};
     bool local_10 = {};
     bool local_11 = {};
+    bool local_12 = {};
     metal::float3 e1_ = b_2 - a_3;
     metal::float3 e2_ = c_1 - a_3;
     metal::float3 p_7 = metal::cross(d_3, e2_);
@@ -733,32 +733,32 @@ float ray_triangle(
     metal::float3 s_3 = o_1 - a_3;
     float u_3 = metal::dot(s_3, p_7) * inv;
     if (!((u_3 < 0.0))) {
-        local_9 = u_3 > 1.0;
+        local_10 = u_3 > 1.0;
     } else {
-        local_9 = true;
+        local_10 = true;
     }
-    bool _e28 = local_9;
+    bool _e28 = local_10;
     if (_e28) {
         return -1.0;
     }
     metal::float3 q = metal::cross(s_3, e1_);
     float v_9 = metal::dot(d_3, q) * inv;
     if (!((v_9 < 0.0))) {
-        local_10 = (u_3 + v_9) > 1.0;
+        local_11 = (u_3 + v_9) > 1.0;
     } else {
-        local_10 = true;
+        local_11 = true;
     }
-    bool _e42 = local_10;
+    bool _e42 = local_11;
     if (_e42) {
         return -1.0;
     }
     float t_4 = metal::dot(e2_, q) * inv;
     if (t_4 > t_min) {
-        local_11 = t_4 < t_max_1;
+        local_12 = t_4 < t_max_1;
     } else {
-        local_11 = false;
+        local_12 = false;
     }
-    bool _e51 = local_11;
+    bool _e51 = local_12;
     if (_e51) {
         return t_4;
     }
@@ -946,19 +946,19 @@ bool bsh_reaches(
     metal::float3 r_6,
     metal::float4 rl_3
 ) {
-    bool local_12 = {};
     bool local_13 = {};
+    bool local_14 = {};
     bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_5);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
         bool _e20 = sphere_contains_point(node_3.center, node_3.radius * (rl_3.w * 1.0001), x_5);
-        local_12 = !(_e20);
+        local_13 = !(_e20);
     } else {
-        local_12 = true;
+        local_13 = true;
     }
-    bool _e23 = local_12;
+    bool _e23 = local_13;
     if (_e23) {
         return false;
     }
@@ -979,11 +979,11 @@ bool bsh_reaches(
     float s_c = _e50 * 1.001;
     float reach = node_3.extent + (metal::sqrt(s_c) * _e25);
     if (d2_9 <= ((node_3.radius * node_3.radius) * s_c)) {
-        local_13 = d2_9 <= (reach * reach);
+        local_14 = d2_9 <= (reach * reach);
     } else {
-        local_13 = false;
+        local_14 = false;
     }
-    bool _e67 = local_13;
+    bool _e67 = local_14;
     return _e67;
 }
 
@@ -1043,7 +1043,7 @@ Connection connect(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Connection c_2 = {};
-    bool local_14 = {};
+    bool local_15 = {};
     c_2.e = metal::float3(0.0);
     GpuLight l_2 = lights[li];
     metal::float3 _e17 = light_point(l_2, u1_1, u2_1);
@@ -1056,11 +1056,11 @@ Connection connect(
     if (!((_e27 <= 0.0))) {
         metal::float3 _e36 = c_2.y;
         bool _e37 = occluded(x_7 + (ng_1 * eps), _e36, geo_nodes, geo_tris, _buffer_sizes);
-        local_14 = _e37;
+        local_15 = _e37;
     } else {
-        local_14 = true;
+        local_15 = true;
     }
-    bool _e39 = local_14;
+    bool _e39 = local_15;
     if (_e39) {
         Connection _e40 = c_2;
         return _e40;
@@ -1208,14 +1208,14 @@ metal::float4 unproject_pixel(
     float height,
     float depth
 ) {
-    bool local_15 = {};
     bool local_16 = {};
+    bool local_17 = {};
     if (depth > 0.0) {
-        local_15 = depth < 1.0;
+        local_16 = depth < 1.0;
     } else {
-        local_15 = false;
+        local_16 = false;
     }
-    bool _e16 = local_15;
+    bool _e16 = local_16;
     if (!(_e16)) {
         return metal::float4(0.0, 0.0, 0.0, 0.0);
     }
@@ -1225,11 +1225,11 @@ metal::float4 unproject_pixel(
     metal::float3 q_1 = metal::float3(p_8.x / p_8.w, p_8.y / p_8.w, p_8.z / p_8.w);
     if (metal::abs(p_8.w) > 0.0) {
         bool _e59 = finite3_(q_1);
-        local_16 = _e59;
+        local_17 = _e59;
     } else {
-        local_16 = false;
+        local_17 = false;
     }
-    bool _e61 = local_16;
+    bool _e61 = local_17;
     if (_e61) {
         return metal::float4(q_1.x, q_1.y, q_1.z, 1.0);
     }
@@ -1312,6 +1312,9 @@ kernel void main_(
     uint h = {};
     Shaded t = Shaded {metal::float3(0.0), metal::float3(0.0), metal::float3(0.0)};
     uint k = 0u;
+    uint copies = {};
+    uint j = {};
+    bool local_2 = {};
     uint _e4 = view.width;
     if (!((gid.x >= _e4))) {
         uint _e12 = view.height;
@@ -1362,8 +1365,8 @@ kernel void main_(
             if (metal::all(loop_bound_5 == uint2(0u))) { break; }
             loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
             if (!loop_init_3) {
-                uint _e122 = k;
-                k = _e122 + 1u;
+                uint _e162 = k;
+                k = _e162 + 1u;
             }
             loop_init_3 = false;
             uint _e96 = k;
@@ -1380,22 +1383,69 @@ kernel void main_(
                 uint _e103 = h;
                 uint _e104 = pcg_hash(_e103);
                 h = _e104;
-                Shaded _e105 = t;
-                uint _e107 = k;
-                metal::float3 _e109 = r;
-                Material _e110 = m;
-                uint _e113 = k;
-                float _e116 = weighted_pick_weight(_e90.w_sum, _e90.w.inner[_e113], K);
-                uint _e117 = h;
-                float _e118 = xi_from_bits(_e117);
-                Shaded _e119 = shade_pick(_e90.light.inner[_e107], x_13, n_9, _e109, _e54, _e110, _e116, _e102, _e118, eps_2, geo_nodes, geo_tris, lights, rt2_4, r2_3, _buffer_sizes);
-                Shaded _e120 = add(_e105, _e119);
-                t = _e120;
+                uint _e105 = h;
+                float _e106 = xi_from_bits(_e105);
+                uint _e108 = k;
+                uint li_5 = _e90.light.inner[_e108];
+                copies = 1u;
+                uint _e115 = lights[li_5].kind;
+                if (_e115 != LIGHT_TRIANGLE) {
+                    j = 0u;
+                    uint2 loop_bound_6 = uint2(4294967295u);
+                    bool loop_init_4 = true;
+                    while(true) {
+                        if (metal::all(loop_bound_6 == uint2(0u))) { break; }
+                        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+                        if (!loop_init_4) {
+                            uint _e142 = j;
+                            j = _e142 + 1u;
+                        }
+                        loop_init_4 = false;
+                        uint _e120 = j;
+                        if (_e120 < K) {
+                        } else {
+                            break;
+                        }
+                        {
+                            uint _e123 = j;
+                            uint _e124 = k;
+                            if (_e123 != _e124) {
+                                uint _e129 = j;
+                                local_2 = _e90.light.inner[_e129] == li_5;
+                            } else {
+                                local_2 = false;
+                            }
+                            bool _e133 = local_2;
+                            if (_e133) {
+                                uint _e134 = j;
+                                uint _e135 = k;
+                                if (_e134 < _e135) {
+                                    copies = 0u;
+                                    break;
+                                }
+                                uint _e138 = copies;
+                                copies = _e138 + 1u;
+                            }
+                        }
+                    }
+                }
+                uint _e144 = copies;
+                if (_e144 > 0u) {
+                    Shaded _e147 = t;
+                    metal::float3 _e148 = r;
+                    Material _e149 = m;
+                    uint _e152 = k;
+                    float _e155 = weighted_pick_weight(_e90.w_sum, _e90.w.inner[_e152], K);
+                    uint _e156 = copies;
+                    Shaded _e159 = shade_pick(li_5, x_13, n_9, _e148, _e54, _e149, _e155 * static_cast<float>(_e156), _e102, _e106, eps_2, geo_nodes, geo_tris, lights, rt2_4, r2_3, _buffer_sizes);
+                    Shaded _e160 = add(_e147, _e159);
+                    t = _e160;
+                }
             }
         }
     }
     uint count = _e90.n;
-    metal::float3 _e127 = t.e;
-    out_tex.write(metal::float4(_e127, static_cast<float>(count)), metal::uint2(texel_1));
+    metal::float3 _e167 = t.e;
+    out_tex.write(metal::float4(_e167, static_cast<float>(count)), metal::uint2(texel_1));
     return;
 }
