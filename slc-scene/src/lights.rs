@@ -12,6 +12,24 @@ use slc_core::light::{Light, LightBound, TriangleLight, emitted_powers};
 /// Reservoir slots of the direct-light shader (the GPU kernel's `k`).
 pub const DIRECT_K: usize = 8;
 
+/// How direct light picks among the lights in range at a point (the GPU's
+/// direct pass and the CPU's twin, `slc_cpu::direct::DirectLights`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum DirectSelection {
+    /// `k` importance-weighted picks (`slc-weighted`), `k` in `1..=64`.
+    Weighted {
+        /// Picks per point.
+        k: u32,
+    },
+    /// `k` uniform picks (a `k`-slot reservoir), `k` in `1..=64`.
+    Uniform {
+        /// Picks per point.
+        k: u32,
+    },
+    /// Every light in range (exact given ξ).
+    All,
+}
+
 /// Direct light at one point: irradiance-weighted intensity sum and the
 /// number of lights in range (what both backends' direct-light shading
 /// returns).

@@ -2,19 +2,21 @@
 //! on the GPU, a thin caller of slc-wgpu's [`DirectPass`] through its
 //! public API: the points and normals are uploaded as a position G-buffer
 //! (point `i` at texel `i`, row-major, so its random streams are the
-//! pass's pixel `i`), the pass is recorded with uniform picks of `k =`
-//! [`DIRECT_K`] (the CPU's reservoir), and the output is read back.
-//! Unshadowed, the counterpart of the CPU backend's
-//! `slc_cpu::direct::DirectLights`, which draws the same random numbers.
+//! pass's pixel `i`, the eye at the origin), the pass is recorded with the
+//! selection asked for (uniform picks of `k =` [`DIRECT_K`] by default, the
+//! CPU's reservoir) and, given occluders, shadowed, and the output is read
+//! back: the counterpart of the CPU backend's `slc_cpu::direct::DirectLights`,
+//! which draws the same random numbers.
 
 use crate::engine;
 use slc_core::light::Light;
 use slc_core::range::RangeParams;
-use slc_scene::lights::{DIRECT_K, Direct, LightSet};
+use slc_scene::lights::{DIRECT_K, Direct, DirectSelection, LightSet};
+use slc_scene::occluders::Occluders;
 use slc_wgpu::glam::Vec3;
 use slc_wgpu::passes::{
-    Culling, DirectInputs, DirectPass, DirectPassDesc, DirectSelection, DirectSettings, GBuffer,
-    Surface, SurfaceDesc,
+    Culling, DirectInputs, DirectPass, DirectPassDesc, DirectSettings, GBuffer, Shadows, Surface,
+    SurfaceDesc,
 };
 use slc_wgpu::{GpuContext, GpuError, LightTypes};
 
@@ -27,6 +29,8 @@ pub struct GpuDirect {
     gpu: GpuContext,
     lights: LightSet,
     pass: Option<DirectPass>,
+    /// The occluders and normal offset of [`GpuDirect::set_shadows`].
+    shadows: Option<(Occluders, f32)>,
 }
 
 /// The light types of `lights` (what the pass compiles).
@@ -46,7 +50,20 @@ impl GpuDirect {
     /// (and again when the number of rows of points changes), checking the
     /// device's limits for them then.
     pub fn new(gpu: &GpuContext, lights: &LightSet) -> Result<Self, GpuError> {
-        Ok(GpuDirect { gpu: gpu.clone(), lights: lights.clone(), pass: None })
+        Ok(GpuDirect { gpu: gpu.clone(), lights: lights.clone(), pass: None, shadows: None })
+    }
+
+    /// Shadows every pick against `occluders` (a ray's origin offset along
+    /// the normal by `normal_offset` × its distance to the origin, the
+    /// G-buffer's eye), or turns shadows off (`None`).
+    pub fn set_shadows(&mut self, shadows: Option<(&Occluders, f32)>) -> Result<(), GpuError> {
+        self.shadows = shadows.map(|(o, f)| (o.clone(), f));
+        if let Some(pass) = self.pass.as_mut() {
+            let sh =
+                self.shadows.as_ref().map(|(o, f)| Shadows { occluders: o, normal_offset: *f });
+            pass.set_shadows(sh)?;
+        }
+        Ok(())
     }
 
     /// Direct light at `points` (unit `normals`) for frame `frame` of
@@ -58,6 +75,21 @@ impl GpuDirect {
         params: &RangeParams,
         seed: u32,
         frame: u32,
+    ) -> Result<Vec<Direct>, GpuError> {
+        let uniform = DirectSelection::Uniform { k: DIRECT_K as u32 };
+        self.shade_selected(points, normals, params, seed, frame, uniform)
+    }
+
+    /// [`GpuDirect::shade`] with the picks `selection` makes, number for
+    /// number as the CPU's `DirectLights::shade_selected`.
+    pub fn shade_selected(
+        &mut self,
+        points: &[Vec3],
+        normals: &[Vec3],
+        params: &RangeParams,
+        seed: u32,
+        frame: u32,
+        selection: DirectSelection,
     ) -> Result<Vec<Direct>, GpuError> {
         if points.len() != normals.len() {
             return Err(GpuError::Setting(format!(
@@ -77,15 +109,21 @@ impl GpuDirect {
             h as u64,
             gpu.limits.max_texture_dimension_2d as u64,
         )?;
-        if self.pass.as_ref().is_none_or(|p| (p.desc().width, p.desc().height) != (w, h)) {
+        if self.pass.as_ref().is_none_or(|p| {
+            (p.desc().width, p.desc().height, p.desc().selection) != (w, h, selection)
+        }) {
             let desc = DirectPassDesc {
                 surface: SurfaceDesc::Position,
                 output_format: wgpu::TextureFormat::Rgba32Float,
-                selection: DirectSelection::Uniform { k: DIRECT_K as u32 },
+                selection,
                 light_types: light_types(self.lights.lights()),
                 ..DirectPassDesc::new(w, h)
             };
-            self.pass = Some(DirectPass::new(&gpu, &self.lights, &desc)?);
+            let mut pass = DirectPass::new(&gpu, &self.lights, &desc)?;
+            let sh =
+                self.shadows.as_ref().map(|(o, f)| Shadows { occluders: o, normal_offset: *f });
+            pass.set_shadows(sh)?;
+            self.pass = Some(pass);
         }
         let Some(pass) = self.pass.as_mut() else {
             return Err(GpuError::Setting("no pass".into()));

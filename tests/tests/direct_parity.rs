@@ -1,7 +1,12 @@
-//! CPU/GPU parity of direct light from random light sets (`bsh_reservoir`
-//! against `slc_cpu::direct`): random light counts, types (point, spot,
-//! IES, triangle), positions, intensities from subnormal to near slc's limit (`MAX_INTENSITY`),
-//! error bounds, and shading points placed on range boundaries.
+//! CPU/GPU parity of direct light from random light sets (the direct pass's
+//! `direct_light` against `slc_cpu::direct`): random light counts, types
+//! (point, spot, IES, triangle), positions, intensities from subnormal to
+//! near slc's limit (`MAX_INTENSITY`), error bounds, and shading points
+//! placed on range boundaries; each case with the reservoir's uniform picks,
+//! the weighted picks (the pass's default), every light in range, and the
+//! weighted picks shadowed by forty boxes (at random points: where 50 or
+//! more are lit, the shadows must change at least 2% of them; they change
+//! 30–60% in most cases).
 //!
 //! Both backends draw the same random numbers (ξ per light, the reservoir's
 //! and the sampled points' hashes), so they agree number for number, except
@@ -17,19 +22,22 @@
 //!   an IES lookup on a steep stretch of its table) are counted and bounded
 //!   by 2% of the points as well.
 //!
-//! Observed on lavapipe: no in-range mismatch at all, 1 point of 9,600
-//! beyond 1e-4, the worst elsewhere about 1e-5 (IES), 2e-6 without IES. The
+//! Observed on lavapipe: no in-range mismatch at all, 3 points of 38,400
+//! beyond 1e-4 (one point under the three unshadowed selections), none
+//! shadowed (the two backends' BVHs differ, their hits agree), the worst
+//! elsewhere about 1e-5 (IES), 2e-6 without IES. The
 //! IES lookup's angles come from slc-core's portable arctangent: with
 //! WGSL's own `acos`/`atan2` (allowed thousands of ulps) 19% of the points
 //! differed by more than 1e-4, up to 4.6%.
 
-use glam::Vec3;
+use glam::{Affine3A, Quat, Vec3};
 use proptest::prelude::*;
 use slc_core::ies::IesProfile;
 use slc_core::light::{IesLight, Light, PointLight, SpotLight, TriangleLight};
 use slc_core::range::RangeParams;
-use slc_cpu::direct::DirectLights;
-use slc_scene::lights::LightSet;
+use slc_cpu::direct::{CpuShadows, DirectLights};
+use slc_scene::lights::{DirectSelection, LightSet};
+use slc_scene::occluders::{Instance, Occluders};
 use slc_tests::direct::GpuDirect;
 use slc_tests::{gpu, shared_data};
 use std::sync::{Arc, OnceLock};
@@ -75,12 +83,54 @@ struct Outcome {
     worst_rel: f64,
 }
 
+/// Boxes (a cube mesh in forty random placements, rotated and scaled) for
+/// the shadowed comparison.
+fn boxes(r: &mut Gen) -> Occluders {
+    let (lo, hi) = (Vec3::splat(-0.5), Vec3::splat(0.5));
+    let c = |x: f32, y: f32, z: f32| Vec3::new(x, y, z);
+    let v = [
+        c(lo.x, lo.y, lo.z),
+        c(hi.x, lo.y, lo.z),
+        c(hi.x, hi.y, lo.z),
+        c(lo.x, hi.y, lo.z),
+        c(lo.x, lo.y, hi.z),
+        c(hi.x, lo.y, hi.z),
+        c(hi.x, hi.y, hi.z),
+        c(lo.x, hi.y, hi.z),
+    ];
+    let quads =
+        [[0, 1, 2, 3], [4, 5, 6, 7], [0, 1, 5, 4], [3, 2, 6, 7], [0, 3, 7, 4], [1, 2, 6, 5]];
+    let cube: Vec<[Vec3; 3]> = quads
+        .iter()
+        .flat_map(|q| [[v[q[0]], v[q[1]], v[q[2]]], [v[q[0]], v[q[2]], v[q[3]]]])
+        .collect();
+    // Forty boxes among the lights and points (one per mesh instance).
+    let instances: Vec<Instance> = (0..40)
+        .map(|_| Instance {
+            mesh: 0,
+            transform: Affine3A::from_scale_rotation_translation(
+                Vec3::new(0.1 + 0.3 * r.u(), 0.1 + 0.3 * r.u(), 0.05 + 0.2 * r.u()),
+                Quat::from_rotation_arc(Vec3::Z, r.dir()),
+                r.v() * 1.2,
+            ),
+        })
+        .collect();
+    Occluders::new(&[cube], &instances).unwrap()
+}
+
+/// The normal offset of the shadowed comparison, × the distance to the eye
+/// (the origin): far above either backend's rounding.
+const OFFSET: f32 = 1e-3;
+
+#[allow(clippy::too_many_arguments)]
 fn compare(
     seed: u32,
     n_lights: usize,
     log_intensity: (f32, f32),
     eps: f32,
     frame: u32,
+    selection: DirectSelection,
+    shadowed: bool,
 ) -> Option<Outcome> {
     let g = gpu()?;
     let mut r = Gen(seed);
@@ -111,11 +161,13 @@ fn compare(
     let mut cpu = DirectLights::new(&set);
     let mut gpu_lights = GpuDirect::new(g, &set).unwrap();
     // Points: random ones, and ones on a light's threshold sphere r_t (where
-    // p = 1 turns into p < 1) and at 0.999× and 1.001× of it.
+    // p = 1 turns into p < 1) and at 0.999× and 1.001× of it; shadowed, only
+    // random ones (a point on a small threshold sphere is too close to its
+    // light for any box to come between).
     let mut points = Vec::new();
     let mut normals = Vec::new();
     for k in 0..600 {
-        let x = if k % 4 == 0 {
+        let x = if shadowed || k % 4 == 0 {
             r.v() * 1.5
         } else {
             let l = &set.lights()[(r.u() * n_lights as f32) as usize % n_lights];
@@ -126,8 +178,28 @@ fn compare(
         points.push(x);
         normals.push(r.dir());
     }
-    let a = cpu.shade(&points, &normals, &params, seed, frame).unwrap();
-    let b = gpu_lights.shade(&points, &normals, &params, seed, frame).unwrap();
+    let open = shadowed
+        .then(|| cpu.shade_selected(&points, &normals, &params, seed, frame, selection).unwrap());
+    let occluders = boxes(&mut r);
+    if shadowed {
+        let eye = Vec3::ZERO;
+        cpu.set_shadows(Some(CpuShadows { occluders: &occluders, normal_offset: OFFSET, eye }))
+            .unwrap();
+        gpu_lights.set_shadows(Some((&occluders, OFFSET))).unwrap();
+    }
+    let a = cpu.shade_selected(&points, &normals, &params, seed, frame, selection).unwrap();
+    let b = gpu_lights.shade_selected(&points, &normals, &params, seed, frame, selection).unwrap();
+    if let Some(open) = open {
+        // The shadows must matter: at least 2% of the lit points change
+        // (where 50 or more are lit).
+        let lit = open.iter().filter(|d| d.irradiance != Vec3::ZERO).count();
+        let changed = open.iter().zip(&a).filter(|(o, s)| o.irradiance != s.irradiance).count();
+        eprintln!("shadows change {changed} of {lit} lit points");
+        assert!(
+            lit < 50 || changed * 50 >= lit,
+            "shadows change only {changed} of {lit} lit points: the comparison says little"
+        );
+    }
     let mut o =
         Outcome { points: points.len(), count_differs: 0, value_differs: 0, worst_rel: 0.0 };
     for (p, q) in a.iter().zip(&b) {
@@ -177,12 +249,24 @@ fn check(o: &Outcome, what: &str) {
     );
 }
 
+/// What each case compares: the reservoir's uniform picks, the weighted
+/// picks (the pass's default), every light, and the weighted picks
+/// shadowed by boxes.
+const SELECTIONS: [(DirectSelection, bool); 4] = [
+    (DirectSelection::Uniform { k: 8 }, false),
+    (DirectSelection::Weighted { k: 8 }, false),
+    (DirectSelection::All, false),
+    (DirectSelection::Weighted { k: 8 }, true),
+];
+
 proptest! {
     #![proptest_config(ProptestConfig { cases: 12, rng_seed: proptest::test_runner::RngSeed::Fixed(0x51C_D1EC7), failure_persistence: None, ..ProptestConfig::default() })]
     /// Random light sets and settings: decisions and irradiance agree.
     fn random_light_sets_agree(seed in any::<u32>(), n in 1usize..160, lo in -6.0f32..2.0, span in 0.0f32..6.0, log_eps in -4.0f32..-0.5, frame in 0u32..100) {
-        if let Some(o) = compare(seed, n, (lo, lo + span), 10f32.powf(log_eps), frame) {
-            check(&o, &format!("seed {seed}, {n} lights"));
+        for (selection, shadowed) in SELECTIONS {
+            if let Some(o) = compare(seed, n, (lo, lo + span), 10f32.powf(log_eps), frame, selection, shadowed) {
+                check(&o, &format!("seed {seed}, {n} lights, {selection:?}, shadowed: {shadowed}"));
+            }
         }
     }
 }
@@ -197,8 +281,10 @@ fn extreme_intensities_and_error_bounds_agree() {
         ("tiny error bound", (-2.0, 2.0), 1e-30),
         ("huge error bound", (-2.0, 2.0), 1e30),
     ] {
-        let Some(o) = compare(7, 64, range, eps, 3) else { return };
-        check(&o, what);
+        for (selection, shadowed) in SELECTIONS {
+            let Some(o) = compare(7, 64, range, eps, 3, selection, shadowed) else { return };
+            check(&o, &format!("{what}, {selection:?}, shadowed: {shadowed}"));
+        }
     }
 }
 

@@ -122,22 +122,7 @@ use slc_shared_shaders::{DirectOutput, Features, Kernel, Selection};
 /// Tile edge of the 2-D kernels, in pixels.
 const TILE: u32 = 8;
 
-/// How the direct pass picks among the lights in range at a pixel.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum DirectSelection {
-    /// `k` importance-weighted picks (`slc-weighted`), `k` in `1..=64`.
-    Weighted {
-        /// Picks per pixel.
-        k: u32,
-    },
-    /// `k` uniform picks (a `k`-slot reservoir), `k` in `1..=64`.
-    Uniform {
-        /// Picks per pixel.
-        k: u32,
-    },
-    /// Every light in range (exact given ξ).
-    All,
-}
+pub use slc_scene::lights::DirectSelection;
 
 /// The dielectric part of the glTF material: its Fresnel reflectance at
 /// normal (`f0`) and grazing (`f90`) incidence; glTF's default (IOR 1.5)
