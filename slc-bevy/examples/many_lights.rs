@@ -10,8 +10,9 @@
 //! Keys: `Space` cycles slc → Bevy with its default 20 m ranges → Bevy with
 //! unbounded ranges (the ground truth, slow with thousands of lights);
 //! `Up`/`Down` double or halve slc's error bound ε; `S` turns slc's shadows
-//! off and on. The window's title shows the mode, the light count, ε,
-//! the shadows and the frame time (smoothed).
+//! off and on; `R` switches slc's picks between resampled (the default)
+//! and weighted. The window's title shows the mode, the light count, ε,
+//! the shadows, the picks and the frame time (smoothed).
 //!
 //! For scripts: `SLC_BEVY_FRAMES=N` exits after N frames, first writing the
 //! window to the PNG `SLC_BEVY_SCREENSHOT` names (if set); `SLC_BEVY_MODE`
@@ -22,8 +23,9 @@
 //! **Frame-time bench** (no window, no display): `SLC_BEVY_BENCH=out.json`
 //! renders into an image target at `SLC_BEVY_SIZE` (default 1920x1080)
 //! under Bevy's `RenderDiagnosticsPlugin` (GPU timestamps where the adapter
-//! has them), in four configurations: slc shadowed, slc unshadowed, Bevy
-//! at its default 20 m ranges, Bevy at unbounded ranges. Each warms up for
+//! has them), in five configurations: slc shadowed (resampled picks, its
+//! default, and weighted ones), slc unshadowed, Bevy at its default 20 m
+//! ranges, Bevy at unbounded ranges. Each warms up for
 //! at least 0.5 s and 3 frames, then times `SLC_BEVY_BENCH_FRAMES` frames
 //! (default 64, at most 120) back to back; it reports per configuration
 //! the median GPU time of each of Bevy's top-level passes and slc's
@@ -260,6 +262,9 @@ fn keys(
         if input.just_pressed(KeyCode::KeyS) {
             camera.shadows = !camera.shadows;
         }
+        if input.just_pressed(KeyCode::KeyR) {
+            camera.resample = !camera.resample;
+        }
         // ×2 or ÷2 on ε (a stochastic culling only; the others keep theirs).
         let scale = |c: Culling, k: f32| c.with_error_bound(c.error_bound().unwrap_or(1.0) * k);
         if input.just_pressed(KeyCode::ArrowUp)
@@ -286,9 +291,11 @@ fn title(
         if settings.frame_ms == 0.0 { ms } else { 0.95 * settings.frame_ms + 0.05 * ms };
     let eps = cameras.iter().next().and_then(|c| c.culling.error_bound()).unwrap_or(0.0);
     let shadows = if cameras.iter().next().is_some_and(|c| c.shadows) { "on" } else { "off" };
+    let picks =
+        if cameras.iter().next().is_some_and(|c| c.resample) { "resampled" } else { "weighted" };
     for mut w in &mut windows {
         w.title = format!(
-            "slc-bevy many_lights: {:?}, {} lights, ε {eps}, shadows {shadows}, {:.1} ms/frame (Space: mode, Up/Down: ε, S: shadows)",
+            "slc-bevy many_lights: {:?}, {} lights, ε {eps}, shadows {shadows}, {picks} picks, {:.1} ms/frame (Space: mode, Up/Down: ε, S: shadows, R: picks)",
             settings.mode, settings.lights, settings.frame_ms
         );
     }
@@ -351,13 +358,14 @@ fn scripted_exit(
     }
 }
 
-/// One configuration of the bench: its name, the lights' mode and slc's
-/// shadows.
-const CONFIGS: [(&str, Mode, bool); 4] = [
-    ("slc, shadowed", Mode::Slc, true),
-    ("slc, unshadowed", Mode::Slc, false),
-    ("Bevy, default 20 m ranges", Mode::BevyDefaultRange, false),
-    ("Bevy, unbounded ranges", Mode::BevyUnbounded, false),
+/// One configuration of the bench: its name, the lights' mode, slc's
+/// shadows and whether its picks are resampled (its default) or weighted.
+const CONFIGS: [(&str, Mode, bool, bool); 5] = [
+    ("slc, shadowed", Mode::Slc, true, true),
+    ("slc, shadowed, weighted picks", Mode::Slc, true, false),
+    ("slc, unshadowed", Mode::Slc, false, true),
+    ("Bevy, default 20 m ranges", Mode::BevyDefaultRange, false, true),
+    ("Bevy, unbounded ranges", Mode::BevyUnbounded, false, true),
 ];
 
 /// The median of `v` (0 for none).
@@ -422,14 +430,14 @@ fn bench(lights: usize, out: &str) -> Result<(), String> {
         .map_or("unknown".to_string(), |a| format!("{} ({:?})", a.name, a.backend));
     println!("many_lights bench: {lights} lights, {w}x{h}, {frames} timed frames, on {adapter}");
     let mut results = Vec::new();
-    for (name, mode, shadows) in CONFIGS {
+    for (name, mode, shadows, resample) in CONFIGS {
         {
             let world = app.world_mut();
             let mut settings = world.resource_mut::<Settings>();
             (settings.mode, settings.apply) = (mode, true);
             let mut cameras = world.query::<&mut SlcCamera>();
             for mut c in cameras.iter_mut(world) {
-                c.shadows = shadows;
+                (c.shadows, c.resample) = (shadows, resample);
             }
         }
         // Warm-up: the mode applied, pipelines built, the clock up.

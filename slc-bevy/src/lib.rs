@@ -43,7 +43,8 @@
 //! imports Bevy's own unpacking functions from `bevy_pbr::deferred::types`
 //! and `bevy_render::utils`); (2) slc's direct pass
 //! picks [`SlcCamera::picks`] lights among those whose random range reaches
-//! the pixel, importance-weighted, and shades them with Bevy
+//! the pixel, in proportion to their unshadowed light
+//! ([`SlcCamera::resample`]), and shades them with Bevy
 //! `StandardMaterial`'s BRDF (`slc_core::brdf::bevy_brdf`: Burley diffuse,
 //! GGX with Bevy's Fresnel and multiple-scattering compensation) times
 //! Bevy's light units (`intensity` in lumens, `/4π` to candela, times the
@@ -171,9 +172,15 @@ pub struct SlcCamera {
     /// are the baselines; [`Culling::Reference`] is not a real-time setting
     /// (the camera is skipped with the reason).
     pub culling: Culling,
-    /// Importance-weighted picks per pixel among the lights in range
-    /// (`1..=64`).
+    /// Picks per pixel among the lights in range (`1..=64`): at most this
+    /// many shadow rays.
     pub picks: u32,
+    /// Draw the picks in proportion to each light's unshadowed light at
+    /// the pixel, every light in range evaluated without a ray
+    /// (`DirectSelection::Resampled`: the rays go where light arrives, and
+    /// only shadows add noise); off: in proportion to an importance bound
+    /// (`DirectSelection::Weighted`, cheaper per light, noisier).
+    pub resample: bool,
     /// Seed of the random ranges and picks (the frame number varies them
     /// every frame).
     pub seed: u32,
@@ -193,13 +200,14 @@ pub struct SlcCamera {
 }
 
 impl Default for SlcCamera {
-    /// On, ε = 0.01, 8 picks, seed 1, accumulated over up to 32 frames,
-    /// shadowed.
+    /// On, ε = 0.01, 8 resampled picks, seed 1, accumulated over up to 32
+    /// frames, shadowed.
     fn default() -> Self {
         SlcCamera {
             enabled: true,
             culling: Culling::stochastic(0.01, 1.0).expect("a valid default"),
             picks: 8,
+            resample: true,
             seed: 1,
             accumulate: true,
             max_history: 32.0,
@@ -703,7 +711,11 @@ fn new_view(
 ) -> Result<View, String> {
     let mut desc = DirectPassDesc::new(size.0, size.1);
     desc.surface = SurfaceDesc::Depth { format: wgpu::TextureFormat::Depth32Float };
-    desc.selection = DirectSelection::Weighted { k: settings.picks };
+    desc.selection = if settings.resample {
+        DirectSelection::Resampled { k: settings.picks }
+    } else {
+        DirectSelection::Weighted { k: settings.picks }
+    };
     desc.outputs = DirectOutputs::BevyRadiance;
     desc.light_types = slc_shared_lights();
     let set = LightSet::new(lights.to_vec()).map_err(|e| e.to_string())?;
@@ -829,7 +841,9 @@ fn prepare_views(
             continue;
         }
         let stale = views.0.get(&entity).is_none_or(|v| {
-            v.size != size || v.settings.picks != settings.picks || v.motion != motion
+            v.size != size
+                || (v.settings.picks, v.settings.resample) != (settings.picks, settings.resample)
+                || v.motion != motion
         });
         if stale {
             match new_view(&gpu, &cache, size, &lights, settings, main, motion) {

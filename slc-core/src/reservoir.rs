@@ -97,6 +97,13 @@ crate::shared! {
         return 1.0 / reservoir_weight(others + 1, k);
     }
 
+    /// The target a resampled pick is drawn in proportion to: the channel
+    /// mean of its unshadowed contribution `c` (any function positive
+    /// wherever `c` is keeps the estimate unbiased).
+    pub fn resample_target(c: vec3f) -> f32 {
+        return (c.x + c.y + c.z) * 0.33333334;
+    }
+
     /// Walker's alias method's second choice: the table column `column`
     /// (drawn by [`uniform_light`]) keeps its own index when `u < keep`
     /// (its probability of staying) and gives its alias `other` otherwise;

@@ -4,7 +4,8 @@
 //! backend and get the same numbers: the lights' BSH refitted to this
 //! frame's random ranges, the lights in range picked as a
 //! [`DirectSelection`] says (`k` importance-weighted picks, `k` uniform
-//! picks through a `k`-slot reservoir, or every one), each pick sampled (a
+//! picks through a `k`-slot reservoir, `k` picks resampled in proportion to
+//! the candidates' unshadowed contributions, or every one), each pick sampled (a
 //! point on a triangle), RR-tested at that point with the light's own
 //! range and weighted by `1/p` and its selection weight (talk: "Improving
 //! tree traversal & shading"). Unshadowed unless given occluders
@@ -25,7 +26,8 @@ use slc_core::importance::{LightCone, Receiver};
 use slc_core::light::{Light, connection_cosine, connection_factor};
 use slc_core::range::{RangeParams, random_range2};
 use slc_core::reservoir::{
-    reservoir_slot, reservoir_takes, reservoir_weight, weighted_pick_weight, weighted_replace,
+    resample_target, reservoir_slot, reservoir_takes, reservoir_weight, weighted_pick_weight,
+    weighted_replace,
 };
 use slc_core::xi::{pcg_hash, pick_stream, point_stream, xi_for, xi_from_bits};
 use slc_scene::RenderError;
@@ -132,7 +134,9 @@ impl DirectLights {
                 normals.len()
             )));
         }
-        if let DirectSelection::Weighted { k } | DirectSelection::Uniform { k } = selection
+        if let DirectSelection::Weighted { k }
+        | DirectSelection::Uniform { k }
+        | DirectSelection::Resampled { k } = selection
             && !(1..=64).contains(&k)
         {
             return Err(RenderError::Setting(format!("k = {k} picks must be in 1..=64")));
@@ -211,6 +215,7 @@ impl DirectLights {
                     picks.push((l, 1.0));
                 });
             }
+            DirectSelection::Resampled { k } => return self.resampled(at, seed, k),
         }
         let mut h = pick_stream(seed);
         let mut e = Vec3::ZERO;
@@ -218,16 +223,51 @@ impl DirectLights {
             h = pcg_hash(h);
             let u1 = xi_from_bits(h);
             h = pcg_hash(h);
-            e += self.connect(at, li as usize, w, u1, xi_from_bits(h));
+            e += self.connect(at, li as usize, w, u1, xi_from_bits(h), true);
+        }
+        Direct { irradiance: e, in_range: seen }
+    }
+
+    /// [`DirectSelection::Resampled`] (the kernel's): every light in range
+    /// sampled (its point from the pick stream) and evaluated unshadowed,
+    /// `k` one-slot weighted reservoirs (the seed's stream) over their
+    /// [`resample_target`]s, each kept candidate shadowed and weighted
+    /// `P/(k·p)`.
+    fn resampled(&self, at: &Point, seed: u32, k: u32) -> Direct {
+        let mut slots = vec![(0u32, 0.0f32, 0.0f32, 0.0f32); k as usize];
+        let (mut total, mut seen) = (0.0f32, 0u32);
+        let (mut h, mut hc) = (pick_stream(seed), seed);
+        self.bsh.for_each_containing(at.x, |l| {
+            seen += 1;
+            h = pcg_hash(h);
+            let u1 = xi_from_bits(h);
+            h = pcg_hash(h);
+            let u2 = xi_from_bits(h);
+            let p = resample_target(self.connect(at, l as usize, 1.0, u1, u2, false));
+            if p > 0.0 {
+                total += p;
+                for s in slots.iter_mut() {
+                    hc = pcg_hash(hc);
+                    if weighted_replace(p, total, xi_from_bits(hc)) {
+                        *s = (l, u1, u2, p);
+                    }
+                }
+            }
+        });
+        let mut e = Vec3::ZERO;
+        if total > 0.0 {
+            for &(l, u1, u2, p) in &slots {
+                e += self.connect(at, l as usize, total / (k as f32 * p), u1, u2, true);
+            }
         }
         Direct { irradiance: e, in_range: seen }
     }
 
     /// Pick `li` of weight `w` sampled at `(u1, u2)` (the kernel's
-    /// `connect`): the RR test at the sampled point, the shadow ray (along
-    /// the point's normal, which the kernel takes as the geometric one),
-    /// `1/p` and `w`.
-    fn connect(&self, at: &Point, li: usize, w: f32, u1: f32, u2: f32) -> Vec3 {
+    /// `connect_traced`): the RR test at the sampled point, with `trace`
+    /// the shadow ray (along the point's normal, which the kernel takes as
+    /// the geometric one), `1/p` and `w`.
+    fn connect(&self, at: &Point, li: usize, w: f32, u1: f32, u2: f32, trace: bool) -> Vec3 {
         let (x, n) = (at.x, at.n);
         let l = &self.lights[li];
         let y = match l {
@@ -238,7 +278,7 @@ impl DirectLights {
         if cos_x <= 0.0 {
             return Vec3::ZERO;
         }
-        if let Some(s) = &self.shadows {
+        if let Some(s) = self.shadows.as_ref().filter(|_| trace) {
             let eps = s.normal_offset * (s.eye - x).length();
             if s.geometry.occluded(x + n * eps, y) {
                 return Vec3::ZERO;

@@ -26,6 +26,15 @@ pub enum DirectSelection {
         /// Picks per point.
         k: u32,
     },
+    /// `k` picks resampled from every light in range in proportion to its
+    /// exact unshadowed contribution (resampled importance sampling: each
+    /// candidate is sampled and evaluated without a shadow ray, the `k`
+    /// picks are drawn from them, and only they cast one), `k` in
+    /// `1..=64`. The `k` rays go only where light arrives unshadowed.
+    Resampled {
+        /// Picks per point.
+        k: u32,
+    },
     /// Every light in range (exact given ξ).
     All,
 }

@@ -325,6 +325,11 @@ pub enum Selection {
     /// One light by light-BVH importance sampling (baseline; the tree in
     /// `light_bvh`, each light's leaf in `light_cones`).
     LightBvh,
+    /// Stochastic light culling, `direct_light` only: `k` picks resampled
+    /// from every in-range light in proportion to its unshadowed
+    /// contribution, each evaluated without a ray; only the picks are
+    /// shadowed.
+    Resampled,
 }
 
 /// Where `vpl_pack` reads its VPLs.
@@ -604,9 +609,12 @@ pub fn check(kernel: Kernel, f: &Features) -> Result<(), ShaderError> {
             if f.lights.is_empty() {
                 return bad("direct_light needs at least one light type".into());
             }
-            if !matches!(f.selection, Selection::Reservoir | Selection::Weighted | Selection::All) {
+            if !matches!(
+                f.selection,
+                Selection::Reservoir | Selection::Weighted | Selection::Resampled | Selection::All
+            ) {
                 return bad(format!(
-                    "direct_light picks lights by reservoir, weighted or all, not {:?}",
+                    "direct_light picks lights by reservoir, weighted, resampled or all, not {:?}",
                     f.selection
                 ));
             }
@@ -665,6 +673,7 @@ pub fn generate_module(kernel: Kernel, features: &Features) -> Result<Generated,
         Selection::Power => "power",
         Selection::Weighted => "weighted",
         Selection::LightBvh => "lightbvh",
+        Selection::Resampled => "resampled",
     };
     let ctx = context! {
         kernel => kernel.name(),
@@ -751,7 +760,10 @@ pub fn all_kernels(features: &Features) -> Result<Vec<Generated>, ShaderError> {
             k != Kernel::DirectLight
                 || matches!(
                     features.selection,
-                    Selection::Reservoir | Selection::Weighted | Selection::All
+                    Selection::Reservoir
+                        | Selection::Weighted
+                        | Selection::Resampled
+                        | Selection::All
                 )
         })
         .map(|&k| generate_module(k, features))

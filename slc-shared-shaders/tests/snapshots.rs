@@ -215,6 +215,16 @@ fn variants() -> Vec<(&'static str, Kernel, Features)> {
                 ..Features::default()
             },
         ),
+        (
+            "direct_light-point-triangle-resampled-bevy",
+            Kernel::DirectLight,
+            Features {
+                lights: LightTypes::parse("point,triangle").unwrap(),
+                selection: Selection::Resampled,
+                direct_output: DirectOutput::BevyRadiance,
+                ..Features::default()
+            },
+        ),
     ]
 }
 

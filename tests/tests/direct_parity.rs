@@ -252,11 +252,13 @@ fn check(o: &Outcome, what: &str) {
 /// What each case compares: the reservoir's uniform picks, the weighted
 /// picks (the pass's default), every light, and the weighted picks
 /// shadowed by boxes.
-const SELECTIONS: [(DirectSelection, bool); 4] = [
+const SELECTIONS: [(DirectSelection, bool); 6] = [
     (DirectSelection::Uniform { k: 8 }, false),
     (DirectSelection::Weighted { k: 8 }, false),
+    (DirectSelection::Resampled { k: 8 }, false),
     (DirectSelection::All, false),
     (DirectSelection::Weighted { k: 8 }, true),
+    (DirectSelection::Resampled { k: 8 }, true),
 ];
 
 proptest! {

@@ -11,9 +11,10 @@
 //!   over the same layouts. σ per block from the frames' spread within each
 //!   layout. Bound: every block within 5σ, at most 1% of them beyond 3σ
 //!   (3σ alone fails 0.27% of blocks by chance).
-//! - **Weighted against uniform picks** at the same k = 8 and ε: one
-//!   frame's mean relative error per pixel, weighted at most half of
-//!   uniform's (measured and printed).
+//! - **Weighted against uniform picks, resampled against weighted** at the
+//!   same k = 8 and ε: one frame's mean relative error per pixel, weighted
+//!   at most half of uniform's, resampled no worse than weighted's
+//!   (measured and printed).
 //! - **Accumulated by the temporal pass** (`TemporalPass` on the depth
 //!   buffer, 32 frames of still lights): the mean relative error at most
 //!   0.3 of one frame's (the mean of 32 independent frames: 0.18).
@@ -390,17 +391,22 @@ fn engine_program_matches_brute_force() {
         DirectPass::new(&gpu, &set, &desc(DirectSelection::Weighted { k: 8 })).unwrap();
     let mut uniform =
         DirectPass::new(&gpu, &set, &desc(DirectSelection::Uniform { k: 8 })).unwrap();
+    let mut resampled =
+        DirectPass::new(&gpu, &set, &desc(DirectSelection::Resampled { k: 8 })).unwrap();
     let (ew, eu) = (rel_error(&frame_of(&mut weighted, 0)), rel_error(&frame_of(&mut uniform, 0)));
+    let er = rel_error(&frame_of(&mut resampled, 0));
     let in_range =
         frame_of(&mut uniform, 0).iter().map(|p| p[3] as f64).sum::<f64>() / shaded as f64;
     eprintln!(
-        "one frame, k = 8, eps = {EPS}: mean relative error weighted {ew:.4}, uniform {eu:.4} (ratio {:.3}); {in_range:.1} lights in range per pixel",
-        ew / eu
+        "one frame, k = 8, eps = {EPS}: mean relative error resampled {er:.4}, weighted {ew:.4}, uniform {eu:.4} (weighted/uniform {:.3}, resampled/weighted {:.3}); {in_range:.1} lights in range per pixel",
+        ew / eu,
+        er / ew
     );
     assert!(
         ew <= 0.5 * eu,
         "weighted picks' error {ew:.4} is not at most half of uniform's {eu:.4}"
     );
+    assert!(er <= ew, "resampled picks' error {er:.4} is above weighted picks' {ew:.4}");
 
     // The same weighted frames accumulated by the temporal pass (the
     // lights still, the depth buffer read in place): after 32 frames the

@@ -51,13 +51,19 @@ struct Connection {
 /// sampled point's distance, casts the shadow ray (offset `eps` along `n`)
 /// and weights by `1/p` and the reservoir weight `w_res`.
 fn connect(li: u32, x: vec3f, n: vec3f, ng: vec3f, s: f32, w_res: f32, u1: f32, u2: f32, eps: f32) -> Connection {
+    return connect_traced(li, x, n, ng, s, w_res, u1, u2, eps, true);
+}
+
+/// [`connect`], casting the shadow ray only where `trace` says (without
+/// it, the unshadowed contribution: what a resampled pick is weighed by).
+fn connect_traced(li: u32, x: vec3f, n: vec3f, ng: vec3f, s: f32, w_res: f32, u1: f32, u2: f32, eps: f32, trace: bool) -> Connection {
     var c: Connection;
     c.e = vec3f(0.0);
     let l = lights[li];
     c.y = light_point(l, u1, u2);
     c.cos_x = connection_cosine(x, c.y, n, ng, s * r2[li]);
     // The shadow ray leaves along the geometric normal `ng`.
-    if c.cos_x <= 0.0 || occluded(x + ng * eps, c.y) {
+    if c.cos_x <= 0.0 || (trace && occluded(x + ng * eps, c.y)) {
         return c;
     }
     let v = x - c.y;

@@ -18,7 +18,7 @@ fn occluded(a: vec3f, b: vec3f) -> bool {
 {% endif %}
 {% include "gbuffer_read.wgsl" %}
 // The engine's direct pass: at every G-buffer pixel, the lights whose random
-// range reaches it (BSH traversal), {% if selection == "weighted" %}{{ k }} importance-weighted picks among them{% elif selection == "all" %}every one of them (exact given ξ){% else %}{{ k }} uniform picks among them (Algorithm R){% endif %},
+// range reaches it (BSH traversal), {% if selection == "weighted" %}{{ k }} importance-weighted picks among them{% elif selection == "resampled" %}{{ k }} picks resampled from them in proportion to their unshadowed contributions{% elif selection == "all" %}every one of them (exact given ξ){% else %}{{ k }} uniform picks among them (Algorithm R){% endif %},
 // each sampled (a point on a triangle), RR-tested at that point with its own
 // range, {% if shadows %}shadowed by one ray through the occluders' BVH (leaving the surface
 // `view.shadow_offset` × the eye distance along the normal), {% endif %}and weighted by 1/p and its selection weight. Output: {% if pbr == "radiance" %}outgoing radiance
@@ -50,13 +50,18 @@ struct Material {
 /// (range lobe `rl`; slc-core's `range_scale_toward`; 1 for irradiance);
 /// its shadow ray leaves from `x + eps·n`.
 fn shade_pick(li: u32, x: vec3f, n: vec3f, r: vec3f, rl: vec4f, m: Material, w: f32, u1: f32, u2: f32, eps: f32) -> Shaded {
+    return shade_pick_traced(li, x, n, r, rl, m, w, u1, u2, eps, true);
+}
+
+/// [`shade_pick`], shadowed only where `trace` says.
+fn shade_pick_traced(li: u32, x: vec3f, n: vec3f, r: vec3f, rl: vec4f, m: Material, w: f32, u1: f32, u2: f32, eps: f32, trace: bool) -> Shaded {
     var s: Shaded;
 {% if pbr != "none" %}
     let s2 = light_range_scale(li, x, r, rl);
 {% else %}
     let s2 = 1.0;
 {% endif %}
-    let c = connect(li, x, n, n, s2, w, u1, u2, eps);
+    let c = connect_traced(li, x, n, n, s2, w, u1, u2, eps, trace);
     s.e = c.e;
     s.diffuse = vec3f(0.0);
     s.specular = vec3f(0.0);
@@ -76,6 +81,17 @@ fn shade_pick(li: u32, x: vec3f, n: vec3f, r: vec3f, rl: vec4f, m: Material, w: 
 
 fn add(a: Shaded, b: Shaded) -> Shaded {
     return Shaded(a.e + b.e, a.diffuse + b.diffuse, a.specular + b.specular);
+}
+
+/// What a pick adds to the output: the irradiance{% if pbr == "radiance" or pbr == "bevy" %}, here the outgoing radiance{% elif pbr == "split" %} (the output) and the specular radiance{% endif %}.
+fn output_of(s: Shaded) -> vec3f {
+{% if pbr == "radiance" or pbr == "bevy" %}
+    return s.diffuse + s.specular;
+{% elif pbr == "split" %}
+    return s.e + s.specular;
+{% else %}
+    return s.e;
+{% endif %}
 }
 
 @compute @workgroup_size({{ tile }}, {{ tile }})
@@ -155,6 +171,59 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
         }
     }
     let count = picks.n;
+{% elif selection == "resampled" %}
+    // Resampled importance sampling over every light in range: each is
+    // sampled (its point from the pick stream) and evaluated without a
+    // shadow ray, and K independent one-slot weighted reservoirs (the
+    // seed's stream) keep candidate j with probability p_j / P, p_j its
+    // resample_target and P their sum. A kept candidate adds its
+    // contribution shadowed, weighted P / (K p_j): the expectation is the
+    // shadowed sum. The rays go only where light arrives unshadowed; a
+    // candidate kept by m slots casts one ray, weighted m times.
+    var slot_light: array<u32, K>;
+    var slot_u: array<vec2f, K>;
+    var slot_p: array<f32, K>;
+    var total = 0.0;
+    var count = 0u;
+    var hc = seed;
+    for (var b = bsh_next_leaf_lobe(BSH, bsh_first(BSH), x, r, rl); b != BSH_NONE; b = bsh_next_leaf_lobe(BSH, bsh_nodes[b].next, x, r, rl)) {
+        count += 1u;
+        let li = bsh_nodes[b].light;
+        h = pcg_hash(h);
+        let u1 = xi_from_bits(h);
+        h = pcg_hash(h);
+        let u = vec2f(u1, xi_from_bits(h));
+        let p = resample_target(output_of(shade_pick_traced(li, x, n, r, rl, m, 1.0, u.x, u.y, eps, false)));
+        if p > 0.0 {
+            total += p;
+            for (var q = 0u; q < K; q++) {
+                hc = pcg_hash(hc);
+                if weighted_replace(p, total, xi_from_bits(hc)) {
+                    slot_light[q] = li;
+                    slot_u[q] = u;
+                    slot_p[q] = p;
+                }
+            }
+        }
+    }
+    if total > 0.0 {
+        for (var k = 0u; k < K; k++) {
+            var copies = 1u;
+            for (var j = 0u; j < K; j++) {
+                if j != k && slot_light[j] == slot_light[k] && all(slot_u[j] == slot_u[k]) {
+                    if j < k {
+                        copies = 0u;
+                        break;
+                    }
+                    copies += 1u;
+                }
+            }
+            if copies > 0u {
+                let w = total / (f32(K) * slot_p[k]) * f32(copies);
+                t = add(t, shade_pick(slot_light[k], x, n, r, rl, m, w, slot_u[k].x, slot_u[k].y, eps));
+            }
+        }
+    }
 {% elif selection == "all" %}
     var count = 0u;
     for (var b = bsh_next_leaf_lobe(BSH, bsh_first(BSH), x, r, rl); b != BSH_NONE; b = bsh_next_leaf_lobe(BSH, bsh_nodes[b].next, x, r, rl)) {

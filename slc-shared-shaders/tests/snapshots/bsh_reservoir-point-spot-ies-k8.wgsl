@@ -584,8 +584,8 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_3: vec3<f32>, 
         return -1f;
     }
     let inv = (1f / det);
-    let s_2 = (o_1 - a_5);
-    let u_2 = (dot(s_2, p_2) * inv);
+    let s_3 = (o_1 - a_5);
+    let u_2 = (dot(s_3, p_2) * inv);
     if !((u_2 < 0f)) {
         local_5 = (u_2 > 1f);
     } else {
@@ -595,7 +595,7 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_3: vec3<f32>, 
     if _e28 {
         return -1f;
     }
-    let q = cross(s_2, e1_);
+    let q = cross(s_3, e1_);
     let v_5 = (dot(d_3, q) * inv);
     if !((v_5 < 0f)) {
         local_6 = ((u_2 + v_5) > 1f);
@@ -658,15 +658,15 @@ fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
     let _e14 = ray_inverse3_(d_4);
     loop {
         let _e21 = node_2;
-        let n_7 = geo_nodes[_e21];
+        let n_8 = geo_nodes[_e21];
         let _e27 = hit.t;
-        let _e28 = ray_aabb(o_2, _e14, n_7.bmin, n_7.bmax, _e27);
+        let _e28 = ray_aabb(o_2, _e14, n_8.bmin, n_8.bmax, _e27);
         if (_e28 >= 0f) {
-            if (n_7.count > 0u) {
-                i_1 = n_7.first;
+            if (n_8.count > 0u) {
+                i_1 = n_8.first;
                 loop {
                     let _e36 = i_1;
-                    if (_e36 < (n_7.first + n_7.count)) {
+                    if (_e36 < (n_8.first + n_8.count)) {
                     } else {
                         break;
                     }
@@ -694,11 +694,11 @@ fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
                 let _e60 = sp;
                 if (_e60 < 64u) {
                     let _e63 = sp;
-                    stack[_e63] = (n_7.first + 1u);
+                    stack[_e63] = (n_8.first + 1u);
                     let _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_2 = n_7.first;
+                node_2 = n_8.first;
                 continue;
             }
         }
@@ -871,41 +871,53 @@ fn bsh_collect(x_11: vec3<f32>, r_5: vec3<f32>, rl_5: vec4<f32>, seed_1: u32) ->
     return _e49;
 }
 
-fn connect(li: u32, x_12: vec3<f32>, n_6: vec3<f32>, ng_1: vec3<f32>, s_1: f32, w_res: f32, u1_1: f32, u2_1: f32, eps: f32) -> Connection {
+fn connect_traced(li: u32, x_12: vec3<f32>, n_6: vec3<f32>, ng_1: vec3<f32>, s_1: f32, w_res: f32, u1_1: f32, u2_1: f32, eps: f32, trace_1: bool) -> Connection {
     var c_4: Connection;
     var local_10: bool;
+    var local_11: bool;
 
     c_4.e = vec3(0f);
     let l_2 = lights[li];
-    let _e17 = light_point(l_2, u1_1, u2_1);
-    c_4.y = _e17;
-    let _e20 = c_4.y;
-    let _e23 = r2_2[li];
-    let _e25 = connection_cosine(x_12, _e20, n_6, ng_1, (s_1 * _e23));
-    c_4.cos_x = _e25;
-    let _e27 = c_4.cos_x;
-    if !((_e27 <= 0f)) {
-        let _e36 = c_4.y;
-        let _e37 = occluded((x_12 + (ng_1 * eps)), _e36);
-        local_10 = _e37;
+    let _e18 = light_point(l_2, u1_1, u2_1);
+    c_4.y = _e18;
+    let _e21 = c_4.y;
+    let _e24 = r2_2[li];
+    let _e26 = connection_cosine(x_12, _e21, n_6, ng_1, (s_1 * _e24));
+    c_4.cos_x = _e26;
+    let _e28 = c_4.cos_x;
+    if !((_e28 <= 0f)) {
+        if trace_1 {
+            let _e39 = c_4.y;
+            let _e40 = occluded((x_12 + (ng_1 * eps)), _e39);
+            local_11 = _e40;
+        } else {
+            local_11 = false;
+        }
+        let _e42 = local_11;
+        local_10 = _e42;
     } else {
         local_10 = true;
     }
-    let _e39 = local_10;
-    if _e39 {
-        let _e40 = c_4;
-        return _e40;
+    let _e44 = local_10;
+    if _e44 {
+        let _e45 = c_4;
+        return _e45;
     }
-    let _e42 = c_4.y;
-    let v_7 = (x_12 - _e42);
+    let _e47 = c_4.y;
+    let v_7 = (x_12 - _e47);
     let d2_8 = dot(v_7, v_7);
-    let _e49 = light_intensity(l_2, (v_7 / vec3(sqrt(d2_8))));
-    let _e51 = c_4.cos_x;
-    let _e54 = rt2_2[li];
-    let _e56 = connection_factor(_e51, d2_8, (s_1 * _e54), w_res);
-    c_4.e = (_e49 * _e56);
-    let _e58 = c_4;
-    return _e58;
+    let _e54 = light_intensity(l_2, (v_7 / vec3(sqrt(d2_8))));
+    let _e56 = c_4.cos_x;
+    let _e59 = rt2_2[li];
+    let _e61 = connection_factor(_e56, d2_8, (s_1 * _e59), w_res);
+    c_4.e = (_e54 * _e61);
+    let _e63 = c_4;
+    return _e63;
+}
+
+fn connect(li_1: u32, x_13: vec3<f32>, n_7: vec3<f32>, ng_2: vec3<f32>, s_2: f32, w_res_1: f32, u1_2: f32, u2_2: f32, eps_1: f32) -> Connection {
+    let _e10 = connect_traced(li_1, x_13, n_7, ng_2, s_2, w_res_1, u1_2, u2_2, eps_1, true);
+    return _e10;
 }
 
 @compute @workgroup_size(64, 1, 1) 
@@ -924,13 +936,13 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         irradiance[i_5] = vec4(0f);
         return;
     }
-    let x_13 = p_3.xyz;
+    let x_14 = p_3.xyz;
     let _e19 = normals[i_5];
-    let n_8 = _e19.xyz;
+    let n_9 = _e19.xyz;
     let _e23 = params.seed;
     let _e26 = params.frame;
     let _e27 = point_stream(_e23, i_5, _e26);
-    let _e33 = bsh_collect(x_13, x_13, vec4<f32>(1f, 0f, 1f, 1f), _e27);
+    let _e33 = bsh_collect(x_14, x_14, vec4<f32>(1f, 0f, 1f, 1f), _e27);
     let _e36 = reservoir_weight(_e33.n, K);
     let _e37 = pick_stream(_e27);
     h = _e37;
@@ -954,7 +966,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
             let _e60 = h;
             let _e61 = xi_from_bits(_e60);
             let _e64 = params.eps;
-            let _e65 = connect(_e33.light[_e57], x_13, n_8, n_8, 1f, _e36, _e52, _e61, _e64);
+            let _e65 = connect(_e33.light[_e57], x_14, n_9, n_9, 1f, _e36, _e52, _e61, _e64);
             e = (_e55 + _e65.e);
         }
         continuing {

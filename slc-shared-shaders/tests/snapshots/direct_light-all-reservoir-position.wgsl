@@ -221,10 +221,10 @@ fn connection_cosine(x_3: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     if _e16 {
         return 0f;
     }
-    let w_5 = (v_3 / vec3(sqrt(d2_6)));
-    let cos_x_1 = -(dot(n, w_5));
+    let w_6 = (v_3 / vec3(sqrt(d2_6)));
+    let cos_x_1 = -(dot(n, w_6));
     if !((cos_x_1 <= 0f)) {
-        local_3 = (dot(ng, w_5) >= 0f);
+        local_3 = (dot(ng, w_6) >= 0f);
     } else {
         local_3 = true;
     }
@@ -275,8 +275,8 @@ fn atan_portable(x_4: f32) -> f32 {
     let _e21 = base;
     let _e33 = t_1;
     let _e35 = t_1;
-    let r_8 = (_e21 + (((((((((0.080537446f * z) - 0.13877685f) * z) + 0.19977711f) * z) - 0.3333295f) * z) * _e33) + _e35));
-    return select(r_8, -(r_8), (x_4 < 0f));
+    let r_9 = (_e21 + (((((((((0.080537446f * z) - 0.13877685f) * z) + 0.19977711f) * z) - 0.3333295f) * z) * _e33) + _e35));
+    return select(r_9, -(r_9), (x_4 < 0f));
 }
 
 fn atan2_portable(y_1: f32, x_5: f32) -> f32 {
@@ -587,8 +587,8 @@ fn range_scale_toward(rl_1: vec4<f32>, center_1: vec3<f32>, radius_1: f32, p_1: 
 fn triangle_normal(a_6: vec3<f32>, b_4: vec3<f32>, c_4: vec3<f32>) -> vec3<f32> {
     var local_7: bool;
 
-    let n_9 = cross((b_4 - a_6), (c_4 - a_6));
-    let l2_ = dot(n_9, n_9);
+    let n_10 = cross((b_4 - a_6), (c_4 - a_6));
+    let l2_ = dot(n_10, n_10);
     if !(!((l2_ > 0f))) {
         local_7 = !((l2_ < 300000000000000000000000000000000000000f));
     } else {
@@ -598,7 +598,7 @@ fn triangle_normal(a_6: vec3<f32>, b_4: vec3<f32>, c_4: vec3<f32>) -> vec3<f32> 
     if _e17 {
         return vec3<f32>(0f, 0f, 0f);
     }
-    return (n_9 / vec3(sqrt(l2_)));
+    return (n_10 / vec3(sqrt(l2_)));
 }
 
 fn light_intensity(l: GpuLight, w_3: vec3<f32>) -> vec3<f32> {
@@ -781,41 +781,48 @@ fn bsh_collect(x_10: vec3<f32>, r_6: vec3<f32>, rl_5: vec4<f32>, seed_1: u32) ->
     return _e49;
 }
 
-fn connect(li: u32, x_11: vec3<f32>, n_7: vec3<f32>, ng_1: vec3<f32>, s: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32) -> Connection {
+fn connect_traced(li: u32, x_11: vec3<f32>, n_7: vec3<f32>, ng_1: vec3<f32>, s: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32, trace: bool) -> Connection {
     var c_5: Connection;
     var local_10: bool;
+    var local_11: bool;
 
     c_5.e = vec3(0f);
     let l_2 = lights[li];
-    let _e17 = light_point(l_2, u1_2, u2_2);
-    c_5.y = _e17;
-    let _e20 = c_5.y;
-    let _e23 = r2_2[li];
-    let _e25 = connection_cosine(x_11, _e20, n_7, ng_1, (s * _e23));
-    c_5.cos_x = _e25;
-    let _e27 = c_5.cos_x;
-    if !((_e27 <= 0f)) {
-        let _e36 = c_5.y;
-        let _e37 = occluded((x_11 + (ng_1 * eps)), _e36);
-        local_10 = _e37;
+    let _e18 = light_point(l_2, u1_2, u2_2);
+    c_5.y = _e18;
+    let _e21 = c_5.y;
+    let _e24 = r2_2[li];
+    let _e26 = connection_cosine(x_11, _e21, n_7, ng_1, (s * _e24));
+    c_5.cos_x = _e26;
+    let _e28 = c_5.cos_x;
+    if !((_e28 <= 0f)) {
+        if trace {
+            let _e39 = c_5.y;
+            let _e40 = occluded((x_11 + (ng_1 * eps)), _e39);
+            local_11 = _e40;
+        } else {
+            local_11 = false;
+        }
+        let _e42 = local_11;
+        local_10 = _e42;
     } else {
         local_10 = true;
     }
-    let _e39 = local_10;
-    if _e39 {
-        let _e40 = c_5;
-        return _e40;
+    let _e44 = local_10;
+    if _e44 {
+        let _e45 = c_5;
+        return _e45;
     }
-    let _e42 = c_5.y;
-    let v_6 = (x_11 - _e42);
+    let _e47 = c_5.y;
+    let v_6 = (x_11 - _e47);
     let d2_8 = dot(v_6, v_6);
-    let _e49 = light_intensity(l_2, (v_6 / vec3(sqrt(d2_8))));
-    let _e51 = c_5.cos_x;
-    let _e54 = rt2_2[li];
-    let _e56 = connection_factor(_e51, d2_8, (s * _e54), w_res);
-    c_5.e = (_e49 * _e56);
-    let _e58 = c_5;
-    return _e58;
+    let _e54 = light_intensity(l_2, (v_6 / vec3(sqrt(d2_8))));
+    let _e56 = c_5.cos_x;
+    let _e59 = rt2_2[li];
+    let _e61 = connection_factor(_e56, d2_8, (s * _e59), w_res);
+    c_5.e = (_e54 * _e61);
+    let _e63 = c_5;
+    return _e63;
 }
 
 fn surface_at(texel: vec2<i32>) -> vec4<f32> {
@@ -823,15 +830,20 @@ fn surface_at(texel: vec2<i32>) -> vec4<f32> {
     return select(vec4(0f), vec4<f32>(p_2.xyz, 1f), (p_2.w > 0f));
 }
 
-fn shade_pick(li_1: u32, x_12: vec3<f32>, n_8: vec3<f32>, r_7: vec3<f32>, rl_6: vec4<f32>, m_1: Material, w_4: f32, u1_3: f32, u2_3: f32, eps_1: f32) -> Shaded {
+fn shade_pick_traced(li_1: u32, x_12: vec3<f32>, n_8: vec3<f32>, r_7: vec3<f32>, rl_6: vec4<f32>, m_1: Material, w_4: f32, u1_3: f32, u2_3: f32, eps_1: f32, trace_1: bool) -> Shaded {
     var s_1: Shaded;
 
-    let _e12 = connect(li_1, x_12, n_8, n_8, 1f, w_4, u1_3, u2_3, eps_1);
-    s_1.e = _e12.e;
+    let _e13 = connect_traced(li_1, x_12, n_8, n_8, 1f, w_4, u1_3, u2_3, eps_1, trace_1);
+    s_1.e = _e13.e;
     s_1.diffuse = vec3(0f);
     s_1.specular = vec3(0f);
-    let _e21 = s_1;
-    return _e21;
+    let _e22 = s_1;
+    return _e22;
+}
+
+fn shade_pick(li_2: u32, x_13: vec3<f32>, n_9: vec3<f32>, r_8: vec3<f32>, rl_7: vec4<f32>, m_2: Material, w_5: f32, u1_4: f32, u2_4: f32, eps_2: f32) -> Shaded {
+    let _e11 = shade_pick_traced(li_2, x_13, n_9, r_8, rl_7, m_2, w_5, u1_4, u2_4, eps_2, true);
+    return _e11;
 }
 
 fn add(a_9: Shaded, b_6: Shaded) -> Shaded {
@@ -875,14 +887,14 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         textureStore(out_tex, texel_1, vec4(0f));
         return;
     }
-    let x_13 = _e21.xyz;
-    let n_10 = (nn / vec3(sqrt(len2_)));
-    r = n_10;
+    let x_14 = _e21.xyz;
+    let n_11 = (nn / vec3(sqrt(len2_)));
+    r = n_11;
     let _e53 = lobe;
     let _e54 = range_lobe(_e53);
     let _e57 = view.shadow_offset;
     let _e60 = view.eye;
-    let eps_2 = (_e57 * length((_e60 - x_13)));
+    let eps_3 = (_e57 * length((_e60 - x_14)));
     let _e66 = view.seed;
     let _e70 = view.width;
     let _e76 = view.frame;
@@ -890,7 +902,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     let _e78 = pick_stream(_e77);
     h = _e78;
     let _e88 = r;
-    let _e89 = bsh_collect(x_13, _e88, _e54, _e77);
+    let _e89 = bsh_collect(x_14, _e88, _e54, _e77);
     let _e92 = reservoir_weight(_e89.n, K);
     loop {
         let _e95 = k;
@@ -913,7 +925,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
             let _e111 = m;
             let _e112 = h;
             let _e113 = xi_from_bits(_e112);
-            let _e114 = shade_pick(_e89.light[_e108], x_13, n_10, _e110, _e54, _e111, _e92, _e103, _e113, eps_2);
+            let _e114 = shade_pick(_e89.light[_e108], x_14, n_11, _e110, _e54, _e111, _e92, _e103, _e113, eps_3);
             let _e115 = add(_e106, _e114);
             t = _e115;
         }

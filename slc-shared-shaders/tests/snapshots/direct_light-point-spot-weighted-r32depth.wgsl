@@ -251,10 +251,10 @@ fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     if _e16 {
         return 0f;
     }
-    let w_5 = (v_4 / vec3(sqrt(d2_7)));
-    let cos_x_1 = -(dot(n, w_5));
+    let w_6 = (v_4 / vec3(sqrt(d2_7)));
+    let cos_x_1 = -(dot(n, w_6));
     if !((cos_x_1 <= 0f)) {
-        local_4 = (dot(ng, w_5) >= 0f);
+        local_4 = (dot(ng, w_6) >= 0f);
     } else {
         local_4 = true;
     }
@@ -624,15 +624,15 @@ fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
     let _e14 = ray_inverse3_(d_4);
     loop {
         let _e21 = node_2;
-        let n_8 = geo_nodes[_e21];
+        let n_9 = geo_nodes[_e21];
         let _e27 = hit.t;
-        let _e28 = ray_aabb(o_2, _e14, n_8.bmin, n_8.bmax, _e27);
+        let _e28 = ray_aabb(o_2, _e14, n_9.bmin, n_9.bmax, _e27);
         if (_e28 >= 0f) {
-            if (n_8.count > 0u) {
-                i = n_8.first;
+            if (n_9.count > 0u) {
+                i = n_9.first;
                 loop {
                     let _e36 = i;
-                    if (_e36 < (n_8.first + n_8.count)) {
+                    if (_e36 < (n_9.first + n_9.count)) {
                     } else {
                         break;
                     }
@@ -660,11 +660,11 @@ fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
                 let _e60 = sp;
                 if (_e60 < 64u) {
                     let _e63 = sp;
-                    stack[_e63] = (n_8.first + 1u);
+                    stack[_e63] = (n_9.first + 1u);
                     let _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_2 = n_8.first;
+                node_2 = n_9.first;
                 continue;
             }
         }
@@ -787,41 +787,48 @@ fn bsh_next_leaf_lobe(nodes_3: u32, start: u32, x_6: vec3<f32>, r_7: vec3<f32>, 
     return BSH_NONE;
 }
 
-fn connect(li: u32, x_7: vec3<f32>, n_4: vec3<f32>, ng_1: vec3<f32>, s: f32, w_res: f32, u1_1: f32, u2_1: f32, eps: f32) -> Connection {
+fn connect_traced(li: u32, x_7: vec3<f32>, n_4: vec3<f32>, ng_1: vec3<f32>, s: f32, w_res: f32, u1_1: f32, u2_1: f32, eps: f32, trace_1: bool) -> Connection {
     var c_2: Connection;
     var local_15: bool;
+    var local_16: bool;
 
     c_2.e = vec3(0f);
     let l_2 = lights[li];
-    let _e17 = light_point(l_2, u1_1, u2_1);
-    c_2.y = _e17;
-    let _e20 = c_2.y;
-    let _e23 = r2_3[li];
-    let _e25 = connection_cosine(x_7, _e20, n_4, ng_1, (s * _e23));
-    c_2.cos_x = _e25;
-    let _e27 = c_2.cos_x;
-    if !((_e27 <= 0f)) {
-        let _e36 = c_2.y;
-        let _e37 = occluded((x_7 + (ng_1 * eps)), _e36);
-        local_15 = _e37;
+    let _e18 = light_point(l_2, u1_1, u2_1);
+    c_2.y = _e18;
+    let _e21 = c_2.y;
+    let _e24 = r2_3[li];
+    let _e26 = connection_cosine(x_7, _e21, n_4, ng_1, (s * _e24));
+    c_2.cos_x = _e26;
+    let _e28 = c_2.cos_x;
+    if !((_e28 <= 0f)) {
+        if trace_1 {
+            let _e39 = c_2.y;
+            let _e40 = occluded((x_7 + (ng_1 * eps)), _e39);
+            local_16 = _e40;
+        } else {
+            local_16 = false;
+        }
+        let _e42 = local_16;
+        local_15 = _e42;
     } else {
         local_15 = true;
     }
-    let _e39 = local_15;
-    if _e39 {
-        let _e40 = c_2;
-        return _e40;
+    let _e44 = local_15;
+    if _e44 {
+        let _e45 = c_2;
+        return _e45;
     }
-    let _e42 = c_2.y;
-    let v_11 = (x_7 - _e42);
+    let _e47 = c_2.y;
+    let v_11 = (x_7 - _e47);
     let d2_10 = dot(v_11, v_11);
-    let _e49 = light_intensity(l_2, (v_11 / vec3(sqrt(d2_10))));
-    let _e51 = c_2.cos_x;
-    let _e54 = rt2_4[li];
-    let _e56 = connection_factor(_e51, d2_10, (s * _e54), w_res);
-    c_2.e = (_e49 * _e56);
-    let _e58 = c_2;
-    return _e58;
+    let _e54 = light_intensity(l_2, (v_11 / vec3(sqrt(d2_10))));
+    let _e56 = c_2.cos_x;
+    let _e59 = rt2_4[li];
+    let _e61 = connection_factor(_e56, d2_10, (s * _e59), w_res);
+    c_2.e = (_e54 * _e61);
+    let _e63 = c_2;
+    return _e63;
 }
 
 fn light_range_scale(li_1: u32, x_8: vec3<f32>, r_8: vec3<f32>, rl_5: vec4<f32>) -> f32 {
@@ -860,8 +867,8 @@ fn bsh_weighted_collect(x_10: vec3<f32>, n_6: vec3<f32>, r_10: vec3<f32>, lobe_8
             let _e21 = picks.n;
             picks.n = (_e21 + 1u);
             let _e25 = b_4;
-            let li_4 = bsh_nodes[_e25].light;
-            let _e29 = light_weight(li_4, x_10, n_6, r_10, lobe_8, rl_7);
+            let li_5 = bsh_nodes[_e25].light;
+            let _e29 = light_weight(li_5, x_10, n_6, r_10, lobe_8, rl_7);
             if (_e29 > 0f) {
                 let _e33 = picks.w_sum;
                 picks.w_sum = (_e33 + _e29);
@@ -882,7 +889,7 @@ fn bsh_weighted_collect(x_10: vec3<f32>, n_6: vec3<f32>, r_10: vec3<f32>, lobe_8
                         let _e46 = weighted_replace(_e29, _e43, _e45);
                         if _e46 {
                             let _e48 = s_1;
-                            picks.light[_e48] = li_4;
+                            picks.light[_e48] = li_5;
                             let _e51 = s_1;
                             picks.w[_e51] = _e29;
                         }
@@ -908,29 +915,29 @@ fn bsh_weighted_collect(x_10: vec3<f32>, n_6: vec3<f32>, r_10: vec3<f32>, lobe_8
 }
 
 fn unproject_pixel(c0_: vec4<f32>, c1_: vec4<f32>, c2_: vec4<f32>, c3_: vec4<f32>, px: f32, py: f32, width: f32, height: f32, depth: f32) -> vec4<f32> {
-    var local_16: bool;
     var local_17: bool;
+    var local_18: bool;
 
     if (depth > 0f) {
-        local_16 = (depth < 1f);
-    } else {
-        local_16 = false;
-    }
-    let _e16 = local_16;
-    if !(_e16) {
-        return vec4<f32>(0f, 0f, 0f, 0f);
-    }
-    let x_12 = ((((px + 0.5f) / width) * 2f) - 1f);
-    let y_1 = (1f - (((py + 0.5f) / height) * 2f));
-    let p_8 = ((((c0_ * x_12) + (c1_ * y_1)) + (c2_ * depth)) + c3_);
-    let q_1 = vec3<f32>((p_8.x / p_8.w), (p_8.y / p_8.w), (p_8.z / p_8.w));
-    if (abs(p_8.w) > 0f) {
-        let _e59 = finite3_(q_1);
-        local_17 = _e59;
+        local_17 = (depth < 1f);
     } else {
         local_17 = false;
     }
-    let _e61 = local_17;
+    let _e16 = local_17;
+    if !(_e16) {
+        return vec4<f32>(0f, 0f, 0f, 0f);
+    }
+    let x_13 = ((((px + 0.5f) / width) * 2f) - 1f);
+    let y_1 = (1f - (((py + 0.5f) / height) * 2f));
+    let p_8 = ((((c0_ * x_13) + (c1_ * y_1)) + (c2_ * depth)) + c3_);
+    let q_1 = vec3<f32>((p_8.x / p_8.w), (p_8.y / p_8.w), (p_8.z / p_8.w));
+    if (abs(p_8.w) > 0f) {
+        let _e59 = finite3_(q_1);
+        local_18 = _e59;
+    } else {
+        local_18 = false;
+    }
+    let _e61 = local_18;
     if _e61 {
         return vec4<f32>(q_1.x, q_1.y, q_1.z, 1f);
     }
@@ -950,15 +957,20 @@ fn surface_at(texel: vec2<i32>) -> vec4<f32> {
     return _e29;
 }
 
-fn shade_pick(li_3: u32, x_11: vec3<f32>, n_7: vec3<f32>, r_11: vec3<f32>, rl_8: vec4<f32>, m_1: Material, w_4: f32, u1_2: f32, u2_2: f32, eps_1: f32) -> Shaded {
+fn shade_pick_traced(li_3: u32, x_11: vec3<f32>, n_7: vec3<f32>, r_11: vec3<f32>, rl_8: vec4<f32>, m_1: Material, w_4: f32, u1_2: f32, u2_2: f32, eps_1: f32, trace_2: bool) -> Shaded {
     var s_2: Shaded;
 
-    let _e12 = connect(li_3, x_11, n_7, n_7, 1f, w_4, u1_2, u2_2, eps_1);
-    s_2.e = _e12.e;
+    let _e13 = connect_traced(li_3, x_11, n_7, n_7, 1f, w_4, u1_2, u2_2, eps_1, trace_2);
+    s_2.e = _e13.e;
     s_2.diffuse = vec3(0f);
     s_2.specular = vec3(0f);
-    let _e21 = s_2;
-    return _e21;
+    let _e22 = s_2;
+    return _e22;
+}
+
+fn shade_pick(li_4: u32, x_12: vec3<f32>, n_8: vec3<f32>, r_12: vec3<f32>, rl_9: vec4<f32>, m_2: Material, w_5: f32, u1_3: f32, u2_3: f32, eps_2: f32) -> Shaded {
+    let _e11 = shade_pick_traced(li_4, x_12, n_8, r_12, rl_9, m_2, w_5, u1_3, u2_3, eps_2, true);
+    return _e11;
 }
 
 fn add(a_6: Shaded, b_5: Shaded) -> Shaded {
@@ -1005,14 +1017,14 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         textureStore(out_tex, texel_1, vec4(0f));
         return;
     }
-    let x_13 = _e21.xyz;
-    let n_9 = (nn / vec3(sqrt(len2_)));
-    r = n_9;
+    let x_14 = _e21.xyz;
+    let n_10 = (nn / vec3(sqrt(len2_)));
+    r = n_10;
     let _e53 = lobe;
     let _e54 = range_lobe(_e53);
     let _e57 = view.shadow_offset;
     let _e60 = view.eye;
-    let eps_2 = (_e57 * length((_e60 - x_13)));
+    let eps_3 = (_e57 * length((_e60 - x_14)));
     let _e66 = view.seed;
     let _e70 = view.width;
     let _e76 = view.frame;
@@ -1021,7 +1033,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     h = _e78;
     let _e88 = r;
     let _e89 = lobe;
-    let _e90 = bsh_weighted_collect(x_13, n_9, _e88, _e89, _e54, _e77);
+    let _e90 = bsh_weighted_collect(x_14, n_10, _e88, _e89, _e54, _e77);
     if (_e90.w_sum > 0f) {
         loop {
             let _e96 = k;
@@ -1041,9 +1053,9 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
                 let _e105 = h;
                 let _e106 = xi_from_bits(_e105);
                 let _e108 = k;
-                let li_5 = _e90.light[_e108];
+                let li_6 = _e90.light[_e108];
                 copies = 1u;
-                let _e115 = lights[li_5].kind;
+                let _e115 = lights[li_6].kind;
                 if (_e115 != LIGHT_TRIANGLE) {
                     j = 0u;
                     loop {
@@ -1057,7 +1069,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
                             let _e124 = k;
                             if (_e123 != _e124) {
                                 let _e129 = j;
-                                local_2 = (_e90.light[_e129] == li_5);
+                                local_2 = (_e90.light[_e129] == li_6);
                             } else {
                                 local_2 = false;
                             }
@@ -1087,7 +1099,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
                     let _e152 = k;
                     let _e155 = weighted_pick_weight(_e90.w_sum, _e90.w[_e152], K);
                     let _e156 = copies;
-                    let _e159 = shade_pick(li_5, x_13, n_9, _e148, _e54, _e149, (_e155 * f32(_e156)), _e102, _e106, eps_2);
+                    let _e159 = shade_pick(li_6, x_14, n_10, _e148, _e54, _e149, (_e155 * f32(_e156)), _e102, _e106, eps_3);
                     let _e160 = add(_e147, _e159);
                     t = _e160;
                 }

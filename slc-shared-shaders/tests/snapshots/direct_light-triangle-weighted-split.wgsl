@@ -257,10 +257,10 @@ fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     if _e16 {
         return 0f;
     }
-    let w_6 = (v_6 / vec3(sqrt(d2_7)));
-    let cos_x_1 = -(dot(n, w_6));
+    let w_7 = (v_6 / vec3(sqrt(d2_7)));
+    let cos_x_1 = -(dot(n, w_7));
     if !((cos_x_1 <= 0f)) {
-        local_4 = (dot(ng, w_6) >= 0f);
+        local_4 = (dot(ng, w_7) >= 0f);
     } else {
         local_4 = true;
     }
@@ -652,8 +652,8 @@ fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin: vec3<f32>, bmax: vec3<f32>, t_
 fn triangle_normal(a_4: vec3<f32>, b_3: vec3<f32>, c_3: vec3<f32>) -> vec3<f32> {
     var local_13: bool;
 
-    let n_11 = cross((b_3 - a_4), (c_3 - a_4));
-    let l2_ = dot(n_11, n_11);
+    let n_12 = cross((b_3 - a_4), (c_3 - a_4));
+    let l2_ = dot(n_12, n_12);
     if !(!((l2_ > 0f))) {
         local_13 = !((l2_ < 300000000000000000000000000000000000000f));
     } else {
@@ -663,7 +663,7 @@ fn triangle_normal(a_4: vec3<f32>, b_3: vec3<f32>, c_3: vec3<f32>) -> vec3<f32> 
     if _e17 {
         return vec3<f32>(0f, 0f, 0f);
     }
-    return (n_11 / vec3(sqrt(l2_)));
+    return (n_12 / vec3(sqrt(l2_)));
 }
 
 fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_4: vec3<f32>, c_4: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
@@ -751,15 +751,15 @@ fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
     let _e14 = ray_inverse3_(d_4);
     loop {
         let _e21 = node_2;
-        let n_12 = geo_nodes[_e21];
+        let n_13 = geo_nodes[_e21];
         let _e27 = hit.t;
-        let _e28 = ray_aabb(o_2, _e14, n_12.bmin, n_12.bmax, _e27);
+        let _e28 = ray_aabb(o_2, _e14, n_13.bmin, n_13.bmax, _e27);
         if (_e28 >= 0f) {
-            if (n_12.count > 0u) {
-                i = n_12.first;
+            if (n_13.count > 0u) {
+                i = n_13.first;
                 loop {
                     let _e36 = i;
-                    if (_e36 < (n_12.first + n_12.count)) {
+                    if (_e36 < (n_13.first + n_13.count)) {
                     } else {
                         break;
                     }
@@ -787,11 +787,11 @@ fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
                 let _e60 = sp;
                 if (_e60 < 64u) {
                     let _e63 = sp;
-                    stack[_e63] = (n_12.first + 1u);
+                    stack[_e63] = (n_13.first + 1u);
                     let _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_2 = n_12.first;
+                node_2 = n_13.first;
                 continue;
             }
         }
@@ -914,41 +914,48 @@ fn bsh_next_leaf_lobe(nodes_3: u32, start: u32, x_6: vec3<f32>, r_7: vec3<f32>, 
     return BSH_NONE;
 }
 
-fn connect(li: u32, x_7: vec3<f32>, n_7: vec3<f32>, ng_1: vec3<f32>, s: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32) -> Connection {
+fn connect_traced(li: u32, x_7: vec3<f32>, n_7: vec3<f32>, ng_1: vec3<f32>, s: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32, trace_1: bool) -> Connection {
     var c_5: Connection;
     var local_19: bool;
+    var local_20: bool;
 
     c_5.e = vec3(0f);
     let l_4 = lights[li];
-    let _e17 = light_point(l_4, u1_2, u2_2);
-    c_5.y = _e17;
-    let _e20 = c_5.y;
-    let _e23 = r2_3[li];
-    let _e25 = connection_cosine(x_7, _e20, n_7, ng_1, (s * _e23));
-    c_5.cos_x = _e25;
-    let _e27 = c_5.cos_x;
-    if !((_e27 <= 0f)) {
-        let _e36 = c_5.y;
-        let _e37 = occluded((x_7 + (ng_1 * eps)), _e36);
-        local_19 = _e37;
+    let _e18 = light_point(l_4, u1_2, u2_2);
+    c_5.y = _e18;
+    let _e21 = c_5.y;
+    let _e24 = r2_3[li];
+    let _e26 = connection_cosine(x_7, _e21, n_7, ng_1, (s * _e24));
+    c_5.cos_x = _e26;
+    let _e28 = c_5.cos_x;
+    if !((_e28 <= 0f)) {
+        if trace_1 {
+            let _e39 = c_5.y;
+            let _e40 = occluded((x_7 + (ng_1 * eps)), _e39);
+            local_20 = _e40;
+        } else {
+            local_20 = false;
+        }
+        let _e42 = local_20;
+        local_19 = _e42;
     } else {
         local_19 = true;
     }
-    let _e39 = local_19;
-    if _e39 {
-        let _e40 = c_5;
-        return _e40;
+    let _e44 = local_19;
+    if _e44 {
+        let _e45 = c_5;
+        return _e45;
     }
-    let _e42 = c_5.y;
-    let v_13 = (x_7 - _e42);
+    let _e47 = c_5.y;
+    let v_13 = (x_7 - _e47);
     let d2_10 = dot(v_13, v_13);
-    let _e49 = light_intensity(l_4, (v_13 / vec3(sqrt(d2_10))));
-    let _e51 = c_5.cos_x;
-    let _e54 = rt2_4[li];
-    let _e56 = connection_factor(_e51, d2_10, (s * _e54), w_res);
-    c_5.e = (_e49 * _e56);
-    let _e58 = c_5;
-    return _e58;
+    let _e54 = light_intensity(l_4, (v_13 / vec3(sqrt(d2_10))));
+    let _e56 = c_5.cos_x;
+    let _e59 = rt2_4[li];
+    let _e61 = connection_factor(_e56, d2_10, (s * _e59), w_res);
+    c_5.e = (_e54 * _e61);
+    let _e63 = c_5;
+    return _e63;
 }
 
 fn light_range_scale(li_1: u32, x_8: vec3<f32>, r_8: vec3<f32>, rl_5: vec4<f32>) -> f32 {
@@ -987,8 +994,8 @@ fn bsh_weighted_collect(x_10: vec3<f32>, n_9: vec3<f32>, r_10: vec3<f32>, lobe_8
             let _e21 = picks.n;
             picks.n = (_e21 + 1u);
             let _e25 = b_6;
-            let li_4 = bsh_nodes[_e25].light;
-            let _e29 = light_weight(li_4, x_10, n_9, r_10, lobe_8, rl_7);
+            let li_5 = bsh_nodes[_e25].light;
+            let _e29 = light_weight(li_5, x_10, n_9, r_10, lobe_8, rl_7);
             if (_e29 > 0f) {
                 let _e33 = picks.w_sum;
                 picks.w_sum = (_e33 + _e29);
@@ -1009,7 +1016,7 @@ fn bsh_weighted_collect(x_10: vec3<f32>, n_9: vec3<f32>, r_10: vec3<f32>, lobe_8
                         let _e46 = weighted_replace(_e29, _e43, _e45);
                         if _e46 {
                             let _e48 = s_1;
-                            picks.light[_e48] = li_4;
+                            picks.light[_e48] = li_5;
                             let _e51 = s_1;
                             picks.w[_e51] = _e29;
                         }
@@ -1039,28 +1046,33 @@ fn surface_at(texel: vec2<i32>) -> vec4<f32> {
     return select(vec4(0f), vec4<f32>(p_8.xyz, 1f), (p_8.w > 0f));
 }
 
-fn shade_pick(li_3: u32, x_11: vec3<f32>, n_10: vec3<f32>, r_11: vec3<f32>, rl_8: vec4<f32>, m_1: Material, w_5: f32, u1_3: f32, u2_3: f32, eps_1: f32) -> Shaded {
+fn shade_pick_traced(li_3: u32, x_11: vec3<f32>, n_10: vec3<f32>, r_11: vec3<f32>, rl_8: vec4<f32>, m_1: Material, w_5: f32, u1_3: f32, u2_3: f32, eps_1: f32, trace_2: bool) -> Shaded {
     var s_2: Shaded;
 
-    let _e11 = light_range_scale(li_3, x_11, r_11, rl_8);
-    let _e12 = connect(li_3, x_11, n_10, n_10, _e11, w_5, u1_3, u2_3, eps_1);
-    s_2.e = _e12.e;
+    let _e12 = light_range_scale(li_3, x_11, r_11, rl_8);
+    let _e13 = connect_traced(li_3, x_11, n_10, n_10, _e12, w_5, u1_3, u2_3, eps_1, trace_2);
+    s_2.e = _e13.e;
     s_2.diffuse = vec3(0f);
     s_2.specular = vec3(0f);
-    if (_e12.cos_x > 0f) {
-        let l_5 = normalize((_e12.y - x_11));
-        let _e32 = view.f0_d;
-        let _e35 = view.f90_d;
-        let _e37 = half_cosine(m_1.v, l_5);
-        let _e38 = diffuse_brdf(m_1.base, m_1.metallic, _e32, _e35, _e37);
-        s_2.diffuse = (_e38 * _e12.e);
-        let _e46 = view.f0_d;
-        let _e49 = view.f90_d;
-        let _e52 = specular_brdf(m_1.base, m_1.metallic, _e46, _e49, m_1.alpha, n_10, m_1.v, l_5);
-        s_2.specular = (_e52 * _e12.e);
+    if (_e13.cos_x > 0f) {
+        let l_5 = normalize((_e13.y - x_11));
+        let _e33 = view.f0_d;
+        let _e36 = view.f90_d;
+        let _e38 = half_cosine(m_1.v, l_5);
+        let _e39 = diffuse_brdf(m_1.base, m_1.metallic, _e33, _e36, _e38);
+        s_2.diffuse = (_e39 * _e13.e);
+        let _e47 = view.f0_d;
+        let _e50 = view.f90_d;
+        let _e53 = specular_brdf(m_1.base, m_1.metallic, _e47, _e50, m_1.alpha, n_10, m_1.v, l_5);
+        s_2.specular = (_e53 * _e13.e);
     }
-    let _e55 = s_2;
-    return _e55;
+    let _e56 = s_2;
+    return _e56;
+}
+
+fn shade_pick(li_4: u32, x_12: vec3<f32>, n_11: vec3<f32>, r_12: vec3<f32>, rl_9: vec4<f32>, m_2: Material, w_6: f32, u1_4: f32, u2_4: f32, eps_2: f32) -> Shaded {
+    let _e11 = shade_pick_traced(li_4, x_12, n_11, r_12, rl_9, m_2, w_6, u1_4, u2_4, eps_2, true);
+    return _e11;
 }
 
 fn add(a_8: Shaded, b_7: Shaded) -> Shaded {
@@ -1108,30 +1120,30 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         textureStore(specular_tex, texel_1, vec4(0f));
         return;
     }
-    let x_12 = _e21.xyz;
-    let n_13 = (nn / vec3(sqrt(len2_1)));
-    r = n_13;
+    let x_13 = _e21.xyz;
+    let n_14 = (nn / vec3(sqrt(len2_1)));
+    r = n_14;
     let mr = textureLoad(metal_rough_tex, texel_1, 0i);
     let _e61 = textureLoad(base_color_tex, texel_1, 0i);
     let _e67 = ggx_alpha(saturate(mr.y));
     let _e70 = view.eye;
-    m = Material(_e61.xyz, saturate(mr.z), _e67, normalize((_e70 - x_12)), mr.y, 0f);
+    m = Material(_e61.xyz, saturate(mr.z), _e67, normalize((_e70 - x_13)), mr.y, 0f);
     let _e77 = m.base;
     let _e79 = m.metallic;
     let _e82 = view.f0_d;
     let _e85 = view.f90_d;
     let _e87 = m.alpha;
     let _e89 = m.v;
-    let _e91 = receiver_lobe(_e77, _e79, _e82, _e85, _e87, dot(n_13, _e89));
+    let _e91 = receiver_lobe(_e77, _e79, _e82, _e85, _e87, dot(n_14, _e89));
     lobe = _e91;
     let _e93 = m.v;
-    let _e94 = mirror_dir(n_13, _e93);
+    let _e94 = mirror_dir(n_14, _e93);
     r = _e94;
     let _e95 = lobe;
     let _e96 = range_lobe(_e95);
     let _e99 = view.shadow_offset;
     let _e102 = view.eye;
-    let eps_2 = (_e99 * length((_e102 - x_12)));
+    let eps_3 = (_e99 * length((_e102 - x_13)));
     let _e108 = view.seed;
     let _e112 = view.width;
     let _e118 = view.frame;
@@ -1140,7 +1152,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     h = _e120;
     let _e130 = r;
     let _e131 = lobe;
-    let _e132 = bsh_weighted_collect(x_12, n_13, _e130, _e131, _e96, _e119);
+    let _e132 = bsh_weighted_collect(x_13, n_14, _e130, _e131, _e96, _e119);
     if (_e132.w_sum > 0f) {
         loop {
             let _e138 = k;
@@ -1160,9 +1172,9 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
                 let _e147 = h;
                 let _e148 = xi_from_bits(_e147);
                 let _e150 = k;
-                let li_5 = _e132.light[_e150];
+                let li_6 = _e132.light[_e150];
                 copies = 1u;
-                let _e157 = lights[li_5].kind;
+                let _e157 = lights[li_6].kind;
                 if (_e157 != LIGHT_TRIANGLE) {
                     j = 0u;
                     loop {
@@ -1176,7 +1188,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
                             let _e166 = k;
                             if (_e165 != _e166) {
                                 let _e171 = j;
-                                local_2 = (_e132.light[_e171] == li_5);
+                                local_2 = (_e132.light[_e171] == li_6);
                             } else {
                                 local_2 = false;
                             }
@@ -1206,7 +1218,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
                     let _e194 = k;
                     let _e197 = weighted_pick_weight(_e132.w_sum, _e132.w[_e194], K);
                     let _e198 = copies;
-                    let _e201 = shade_pick(li_5, x_12, n_13, _e190, _e96, _e191, (_e197 * f32(_e198)), _e144, _e148, eps_2);
+                    let _e201 = shade_pick(li_6, x_13, n_14, _e190, _e96, _e191, (_e197 * f32(_e198)), _e144, _e148, eps_3);
                     let _e202 = add(_e189, _e201);
                     t = _e202;
                 }

@@ -373,11 +373,11 @@ fn reservoir_select_pdf(seen: u32, in_range: bool, k_2: u32) -> f32 {
 
 fn mis_power(pdf_a: f32, pdf_b: f32) -> f32 {
     let a2_ = (pdf_a * pdf_a);
-    let s_2 = (a2_ + (pdf_b * pdf_b));
-    if (s_2 <= 0f) {
+    let s_3 = (a2_ + (pdf_b * pdf_b));
+    if (s_3 <= 0f) {
         return 0f;
     }
-    return (a2_ / s_2);
+    return (a2_ / s_3);
 }
 
 fn light_strategy_pdf(select_: f32, rt2_3: f32, d2_6: f32, area_1: f32, cos_y: f32) -> f32 {
@@ -409,15 +409,15 @@ fn cosine_pdf(cos_theta: f32) -> f32 {
 }
 
 fn onb_tangent(n_6: vec3<f32>) -> vec3<f32> {
-    let s_3 = select(-1f, 1f, (n_6.z >= 0f));
-    let a_9 = (-1f / (s_3 + n_6.z));
-    return vec3<f32>((1f + (((s_3 * n_6.x) * n_6.x) * a_9)), (((s_3 * n_6.x) * n_6.y) * a_9), (-(s_3) * n_6.x));
+    let s_4 = select(-1f, 1f, (n_6.z >= 0f));
+    let a_9 = (-1f / (s_4 + n_6.z));
+    return vec3<f32>((1f + (((s_4 * n_6.x) * n_6.x) * a_9)), (((s_4 * n_6.x) * n_6.y) * a_9), (-(s_4) * n_6.x));
 }
 
 fn onb_bitangent(n_7: vec3<f32>) -> vec3<f32> {
-    let s_4 = select(-1f, 1f, (n_7.z >= 0f));
-    let a_10 = (-1f / (s_4 + n_7.z));
-    return vec3<f32>(((n_7.x * n_7.y) * a_10), (s_4 + ((n_7.y * n_7.y) * a_10)), -(n_7.y));
+    let s_5 = select(-1f, 1f, (n_7.z >= 0f));
+    let a_10 = (-1f / (s_5 + n_7.z));
+    return vec3<f32>(((n_7.x * n_7.y) * a_10), (s_5 + ((n_7.y * n_7.y) * a_10)), -(n_7.y));
 }
 
 fn onb_to_local(n_8: vec3<f32>, w_2: vec3<f32>) -> vec3<f32> {
@@ -603,9 +603,9 @@ fn mirror_dir(n_11: vec3<f32>, v_3: vec3<f32>) -> vec3<f32> {
 
 fn bounded_vndf_k(wi: vec3<f32>, alpha_6: f32) -> f32 {
     let a_11 = saturate(alpha_6);
-    let s_5 = (1f + sqrt(((wi.x * wi.x) + (wi.y * wi.y))));
+    let s_6 = (1f + sqrt(((wi.x * wi.x) + (wi.y * wi.y))));
     let a2_3 = (a_11 * a_11);
-    let s2_ = (s_5 * s_5);
+    let s2_ = (s_6 * s_6);
     return (((1f - a2_3) * s2_) / (s2_ + ((a2_3 * wi.z) * wi.z)));
 }
 
@@ -735,8 +735,8 @@ fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin: vec3<f32>, bmax: vec3<f32>, t_
 fn triangle_normal(a_5: vec3<f32>, b_4: vec3<f32>, c_3: vec3<f32>) -> vec3<f32> {
     var local_15: bool;
 
-    let n_17 = cross((b_4 - a_5), (c_3 - a_5));
-    let l2_ = dot(n_17, n_17);
+    let n_18 = cross((b_4 - a_5), (c_3 - a_5));
+    let l2_ = dot(n_18, n_18);
     if !(!((l2_ > 0f))) {
         local_15 = !((l2_ < 300000000000000000000000000000000000000f));
     } else {
@@ -746,7 +746,7 @@ fn triangle_normal(a_5: vec3<f32>, b_4: vec3<f32>, c_3: vec3<f32>) -> vec3<f32> 
     if _e17 {
         return vec3<f32>(0f, 0f, 0f);
     }
-    return (n_17 / vec3(sqrt(l2_)));
+    return (n_18 / vec3(sqrt(l2_)));
 }
 
 fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_6: vec3<f32>, b_5: vec3<f32>, c_4: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
@@ -762,8 +762,8 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_6: vec3<f32>, b_5: vec3<f32>, 
         return -1f;
     }
     let inv_1 = (1f / det);
-    let s_6 = (o_1 - a_6);
-    let u_2 = (dot(s_6, p_2) * inv_1);
+    let s_7 = (o_1 - a_6);
+    let u_2 = (dot(s_7, p_2) * inv_1);
     if !((u_2 < 0f)) {
         local_16 = (u_2 > 1f);
     } else {
@@ -773,7 +773,7 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_6: vec3<f32>, b_5: vec3<f32>, 
     if _e28 {
         return -1f;
     }
-    let q = cross(s_6, e1_);
+    let q = cross(s_7, e1_);
     let v_11 = (dot(d_3, q) * inv_1);
     if !((v_11 < 0f)) {
         local_17 = ((u_2 + v_11) > 1f);
@@ -849,15 +849,15 @@ fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
     let _e14 = ray_inverse3_(d_4);
     loop {
         let _e21 = node_2;
-        let n_18 = geo_nodes[_e21];
+        let n_19 = geo_nodes[_e21];
         let _e27 = hit.t;
-        let _e28 = ray_aabb(o_2, _e14, n_18.bmin, n_18.bmax, _e27);
+        let _e28 = ray_aabb(o_2, _e14, n_19.bmin, n_19.bmax, _e27);
         if (_e28 >= 0f) {
-            if (n_18.count > 0u) {
-                i = n_18.first;
+            if (n_19.count > 0u) {
+                i = n_19.first;
                 loop {
                     let _e36 = i;
-                    if (_e36 < (n_18.first + n_18.count)) {
+                    if (_e36 < (n_19.first + n_19.count)) {
                     } else {
                         break;
                     }
@@ -885,11 +885,11 @@ fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
                 let _e60 = sp;
                 if (_e60 < 64u) {
                     let _e63 = sp;
-                    stack[_e63] = (n_18.first + 1u);
+                    stack[_e63] = (n_19.first + 1u);
                     let _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_2 = n_18.first;
+                node_2 = n_19.first;
                 continue;
             }
         }
@@ -1062,41 +1062,53 @@ fn bsh_collect(x_6: vec3<f32>, r_5: vec3<f32>, rl_5: vec4<f32>, seed_1: u32) -> 
     return _e49;
 }
 
-fn connect(li: u32, x_7: vec3<f32>, n_13: vec3<f32>, ng_1: vec3<f32>, s_1: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32) -> Connection {
+fn connect_traced(li: u32, x_7: vec3<f32>, n_13: vec3<f32>, ng_1: vec3<f32>, s_1: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32, trace_1: bool) -> Connection {
     var c_5: Connection;
     var local_21: bool;
+    var local_22: bool;
 
     c_5.e = vec3(0f);
     let l_8 = lights[li];
-    let _e17 = light_point(l_8, u1_2, u2_2);
-    c_5.y = _e17;
-    let _e20 = c_5.y;
-    let _e23 = r2_2[li];
-    let _e25 = connection_cosine(x_7, _e20, n_13, ng_1, (s_1 * _e23));
-    c_5.cos_x = _e25;
-    let _e27 = c_5.cos_x;
-    if !((_e27 <= 0f)) {
-        let _e36 = c_5.y;
-        let _e37 = occluded((x_7 + (ng_1 * eps)), _e36);
-        local_21 = _e37;
+    let _e18 = light_point(l_8, u1_2, u2_2);
+    c_5.y = _e18;
+    let _e21 = c_5.y;
+    let _e24 = r2_2[li];
+    let _e26 = connection_cosine(x_7, _e21, n_13, ng_1, (s_1 * _e24));
+    c_5.cos_x = _e26;
+    let _e28 = c_5.cos_x;
+    if !((_e28 <= 0f)) {
+        if trace_1 {
+            let _e39 = c_5.y;
+            let _e40 = occluded((x_7 + (ng_1 * eps)), _e39);
+            local_22 = _e40;
+        } else {
+            local_22 = false;
+        }
+        let _e42 = local_22;
+        local_21 = _e42;
     } else {
         local_21 = true;
     }
-    let _e39 = local_21;
-    if _e39 {
-        let _e40 = c_5;
-        return _e40;
+    let _e44 = local_21;
+    if _e44 {
+        let _e45 = c_5;
+        return _e45;
     }
-    let _e42 = c_5.y;
-    let v_13 = (x_7 - _e42);
+    let _e47 = c_5.y;
+    let v_13 = (x_7 - _e47);
     let d2_11 = dot(v_13, v_13);
-    let _e49 = light_intensity(l_8, (v_13 / vec3(sqrt(d2_11))));
-    let _e51 = c_5.cos_x;
-    let _e54 = rt2_4[li];
-    let _e56 = connection_factor(_e51, d2_11, (s_1 * _e54), w_res);
-    c_5.e = (_e49 * _e56);
-    let _e58 = c_5;
-    return _e58;
+    let _e54 = light_intensity(l_8, (v_13 / vec3(sqrt(d2_11))));
+    let _e56 = c_5.cos_x;
+    let _e59 = rt2_4[li];
+    let _e61 = connection_factor(_e56, d2_11, (s_1 * _e59), w_res);
+    c_5.e = (_e54 * _e61);
+    let _e63 = c_5;
+    return _e63;
+}
+
+fn connect(li_1: u32, x_8: vec3<f32>, n_14: vec3<f32>, ng_2: vec3<f32>, s_2: f32, w_res_1: f32, u1_3: f32, u2_3: f32, eps_1: f32) -> Connection {
+    let _e10 = connect_traced(li_1, x_8, n_14, ng_2, s_2, w_res_1, u1_3, u2_3, eps_1, true);
+    return _e10;
 }
 
 fn mis_weight(pdf_a_1: f32, pdf_b_1: f32) -> f32 {
@@ -1104,56 +1116,56 @@ fn mis_weight(pdf_a_1: f32, pdf_b_1: f32) -> f32 {
     return _e2;
 }
 
-fn light_range_scale(li_1: u32, x_8: vec3<f32>, r_6: vec3<f32>, rl_6: vec4<f32>) -> f32 {
-    let c_10 = light_cones[li_1];
-    let _e9 = range_scale_toward(rl_6, c_10.center, c_10.radius, x_8, r_6);
+fn light_range_scale(li_2: u32, x_9: vec3<f32>, r_6: vec3<f32>, rl_6: vec4<f32>) -> f32 {
+    let c_10 = light_cones[li_2];
+    let _e9 = range_scale_toward(rl_6, c_10.center, c_10.radius, x_9, r_6);
     return _e9;
 }
 
-fn select_pdf(li_2: u32, x_9: vec3<f32>, n_14: vec3<f32>, r_7: vec3<f32>, lobe_5: vec4<f32>, rl_7: vec4<f32>, nee: u32, in_range_1: bool) -> f32 {
+fn select_pdf(li_3: u32, x_10: vec3<f32>, n_15: vec3<f32>, r_7: vec3<f32>, lobe_5: vec4<f32>, rl_7: vec4<f32>, nee: u32, in_range_1: bool) -> f32 {
     let _e9 = reservoir_select_pdf(nee, in_range_1, K);
     return _e9;
 }
 
-fn light_pdf_selected(li_3: u32, x_10: vec3<f32>, r_8: vec3<f32>, rl_8: vec4<f32>, y_1: vec3<f32>, sel: f32) -> f32 {
-    let l_9 = lights[li_3];
-    let v_14 = (x_10 - y_1);
+fn light_pdf_selected(li_4: u32, x_11: vec3<f32>, r_8: vec3<f32>, rl_8: vec4<f32>, y_1: vec3<f32>, sel: f32) -> f32 {
+    let l_9 = lights[li_4];
+    let v_14 = (x_11 - y_1);
     let d2_12 = dot(v_14, v_14);
     let _e11 = light_normal(l_9);
     let cos_y_1 = select(0f, dot(_e11, (v_14 / vec3(sqrt(d2_12)))), (d2_12 > 0f));
-    let _e20 = light_range_scale(li_3, x_10, r_8, rl_8);
-    let _e23 = rt2_4[li_3];
+    let _e20 = light_range_scale(li_4, x_11, r_8, rl_8);
+    let _e23 = rt2_4[li_4];
     let _e25 = light_area(l_9);
     let _e26 = light_strategy_pdf(sel, (_e20 * _e23), d2_12, _e25, cos_y_1);
     return _e26;
 }
 
-fn light_pdf(li_4: u32, x_11: vec3<f32>, n_15: vec3<f32>, r_9: vec3<f32>, lobe_6: vec4<f32>, rl_9: vec4<f32>, y_2: vec3<f32>, nee_1: u32, in_range_2: bool) -> f32 {
-    let _e9 = select_pdf(li_4, x_11, n_15, r_9, lobe_6, rl_9, nee_1, in_range_2);
-    let _e10 = light_pdf_selected(li_4, x_11, r_9, rl_9, y_2, _e9);
+fn light_pdf(li_5: u32, x_12: vec3<f32>, n_16: vec3<f32>, r_9: vec3<f32>, lobe_6: vec4<f32>, rl_9: vec4<f32>, y_2: vec3<f32>, nee_1: u32, in_range_2: bool) -> f32 {
+    let _e9 = select_pdf(li_5, x_12, n_16, r_9, lobe_6, rl_9, nee_1, in_range_2);
+    let _e10 = light_pdf_selected(li_5, x_12, r_9, rl_9, y_2, _e9);
     return _e10;
 }
 
-fn shade_pick(li_5: u32, x_12: vec3<f32>, n_16: vec3<f32>, ng_2: vec3<f32>, m: GpuMaterial, wo_1: vec3<f32>, r_10: vec3<f32>, lobe_7: vec4<f32>, rl_10: vec4<f32>, w_4: f32, nee_2: u32, u1_3: f32, u2_3: f32) -> vec3<f32> {
+fn shade_pick(li_6: u32, x_13: vec3<f32>, n_17: vec3<f32>, ng_3: vec3<f32>, m: GpuMaterial, wo_1: vec3<f32>, r_10: vec3<f32>, lobe_7: vec4<f32>, rl_10: vec4<f32>, w_4: f32, nee_2: u32, u1_4: f32, u2_4: f32) -> vec3<f32> {
     var mis: f32 = 1f;
 
-    let _e13 = light_range_scale(li_5, x_12, r_10, rl_10);
+    let _e13 = light_range_scale(li_6, x_13, r_10, rl_10);
     let _e16 = params.eps;
-    let _e17 = connect(li_5, x_12, n_16, ng_2, _e13, w_4, u1_3, u2_3, _e16);
+    let _e17 = connect(li_6, x_13, n_17, ng_3, _e13, w_4, u1_4, u2_4, _e16);
     if (_e17.cos_x <= 0f) {
         return vec3(0f);
     }
-    let l_10 = normalize((_e17.y - x_12));
-    let _e30 = lights[li_5];
+    let l_10 = normalize((_e17.y - x_13));
+    let _e30 = lights[li_6];
     let _e31 = light_area(_e30);
     if (_e31 > 0f) {
-        let _e36 = light_pdf(li_5, x_12, n_16, r_10, lobe_7, rl_10, _e17.y, nee_2, true);
+        let _e36 = light_pdf(li_6, x_13, n_17, r_10, lobe_7, rl_10, _e17.y, nee_2, true);
         let _e38 = specular_probability(lobe_7);
-        let _e39 = bsdf_pdf(n_16, wo_1, l_10, m.alpha, _e38);
+        let _e39 = bsdf_pdf(n_17, wo_1, l_10, m.alpha, _e38);
         let _e40 = mis_weight(_e36, _e39);
         mis = _e40;
     }
-    let _e46 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_16, wo_1, l_10);
+    let _e46 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_17, wo_1, l_10);
     let _e49 = mis;
     return ((_e46 * _e17.e) * _e49);
 }
@@ -1174,20 +1186,20 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         candidates[i_4] = 0u;
         return;
     }
-    let x_13 = vtx.position;
-    let n_19 = vtx.normal;
-    let ng_3 = vtx.gnormal;
+    let x_14 = vtx.position;
+    let n_20 = vtx.normal;
+    let ng_4 = vtx.gnormal;
     let m_2 = materials[vtx.material];
     let wo_2 = vtx.wo;
-    let _e23 = mirror_dir(n_19, wo_2);
-    let _e30 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, dot(n_19, wo_2));
+    let _e23 = mirror_dir(n_20, wo_2);
+    let _e30 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, dot(n_20, wo_2));
     let _e31 = range_lobe(_e30);
     let _e34 = params.seed;
     let _e37 = params.frame;
     let _e38 = point_stream(_e34, i_4, _e37);
     let _e39 = pick_stream(_e38);
     h = _e39;
-    let _e44 = bsh_collect(x_13, _e23, _e31, _e38);
+    let _e44 = bsh_collect(x_14, _e23, _e31, _e38);
     candidates[i_4] = _e44.n;
     let _e50 = reservoir_weight(_e44.n, K);
     loop {
@@ -1209,7 +1221,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
             let _e66 = s;
             let _e69 = h;
             let _e70 = xi_from_bits(_e69);
-            let _e71 = shade_pick(_e44.light[_e66], x_13, n_19, ng_3, m_2, wo_2, _e23, _e30, _e31, _e50, _e44.n, _e61, _e70);
+            let _e71 = shade_pick(_e44.light[_e66], x_14, n_20, ng_4, m_2, wo_2, _e23, _e30, _e31, _e50, _e44.n, _e61, _e70);
             sum = (_e64 + _e71);
         }
         continuing {

@@ -285,11 +285,11 @@ fn area_to_solid_angle_pdf(pdf_area: f32, d2_5: f32, cos_light: f32) -> f32 {
 
 fn mis_power(pdf_a: f32, pdf_b: f32) -> f32 {
     let a2_ = (pdf_a * pdf_a);
-    let s_1 = (a2_ + (pdf_b * pdf_b));
-    if (s_1 <= 0f) {
+    let s_2 = (a2_ + (pdf_b * pdf_b));
+    if (s_2 <= 0f) {
         return 0f;
     }
-    return (a2_ / s_1);
+    return (a2_ / s_2);
 }
 
 fn light_strategy_pdf(select_: f32, rt2_3: f32, d2_6: f32, area_1: f32, cos_y: f32) -> f32 {
@@ -321,15 +321,15 @@ fn cosine_pdf(cos_theta: f32) -> f32 {
 }
 
 fn onb_tangent(n_2: vec3<f32>) -> vec3<f32> {
-    let s_2 = select(-1f, 1f, (n_2.z >= 0f));
-    let a_7 = (-1f / (s_2 + n_2.z));
-    return vec3<f32>((1f + (((s_2 * n_2.x) * n_2.x) * a_7)), (((s_2 * n_2.x) * n_2.y) * a_7), (-(s_2) * n_2.x));
+    let s_3 = select(-1f, 1f, (n_2.z >= 0f));
+    let a_7 = (-1f / (s_3 + n_2.z));
+    return vec3<f32>((1f + (((s_3 * n_2.x) * n_2.x) * a_7)), (((s_3 * n_2.x) * n_2.y) * a_7), (-(s_3) * n_2.x));
 }
 
 fn onb_bitangent(n_3: vec3<f32>) -> vec3<f32> {
-    let s_3 = select(-1f, 1f, (n_3.z >= 0f));
-    let a_8 = (-1f / (s_3 + n_3.z));
-    return vec3<f32>(((n_3.x * n_3.y) * a_8), (s_3 + ((n_3.y * n_3.y) * a_8)), -(n_3.y));
+    let s_4 = select(-1f, 1f, (n_3.z >= 0f));
+    let a_8 = (-1f / (s_4 + n_3.z));
+    return vec3<f32>(((n_3.x * n_3.y) * a_8), (s_4 + ((n_3.y * n_3.y) * a_8)), -(n_3.y));
 }
 
 fn onb_to_local(n_4: vec3<f32>, w_2: vec3<f32>) -> vec3<f32> {
@@ -515,9 +515,9 @@ fn mirror_dir(n_7: vec3<f32>, v_3: vec3<f32>) -> vec3<f32> {
 
 fn bounded_vndf_k(wi: vec3<f32>, alpha_6: f32) -> f32 {
     let a_9 = saturate(alpha_6);
-    let s_4 = (1f + sqrt(((wi.x * wi.x) + (wi.y * wi.y))));
+    let s_5 = (1f + sqrt(((wi.x * wi.x) + (wi.y * wi.y))));
     let a2_3 = (a_9 * a_9);
-    let s2_ = (s_4 * s_4);
+    let s2_ = (s_5 * s_5);
     return (((1f - a2_3) * s2_) / (s2_ + ((a2_3 * wi.z) * wi.z)));
 }
 
@@ -698,9 +698,9 @@ fn receiver_importance(center_6: vec3<f32>, radius_6: f32, phi_3: f32, axis_4: v
 }
 
 fn bvh_first_prob(c0_: f32, c1_: f32) -> f32 {
-    let s_5 = (c0_ + c1_);
-    if (s_5 > 0f) {
-        return (c0_ / s_5);
+    let s_6 = (c0_ + c1_);
+    if (s_6 > 0f) {
+        return (c0_ / s_6);
     }
     return -1f;
 }
@@ -762,8 +762,8 @@ fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin: vec3<f32>, bmax: vec3<f32>, t_
 fn triangle_normal(a_4: vec3<f32>, b_3: vec3<f32>, c_2: vec3<f32>) -> vec3<f32> {
     var local_15: bool;
 
-    let n_17 = cross((b_3 - a_4), (c_2 - a_4));
-    let l2_ = dot(n_17, n_17);
+    let n_18 = cross((b_3 - a_4), (c_2 - a_4));
+    let l2_ = dot(n_18, n_18);
     if !(!((l2_ > 0f))) {
         local_15 = !((l2_ < 300000000000000000000000000000000000000f));
     } else {
@@ -773,7 +773,7 @@ fn triangle_normal(a_4: vec3<f32>, b_3: vec3<f32>, c_2: vec3<f32>) -> vec3<f32> 
     if _e17 {
         return vec3<f32>(0f, 0f, 0f);
     }
-    return (n_17 / vec3(sqrt(l2_)));
+    return (n_18 / vec3(sqrt(l2_)));
 }
 
 fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_4: vec3<f32>, c_3: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
@@ -789,8 +789,8 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_4: vec3<f32>, 
         return -1f;
     }
     let inv_1 = (1f / det);
-    let s_6 = (o_1 - a_5);
-    let u_3 = (dot(s_6, p_7) * inv_1);
+    let s_7 = (o_1 - a_5);
+    let u_3 = (dot(s_7, p_7) * inv_1);
     if !((u_3 < 0f)) {
         local_16 = (u_3 > 1f);
     } else {
@@ -800,7 +800,7 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_4: vec3<f32>, 
     if _e28 {
         return -1f;
     }
-    let q = cross(s_6, e1_);
+    let q = cross(s_7, e1_);
     let v_11 = (dot(d_3, q) * inv_1);
     if !((v_11 < 0f)) {
         local_17 = ((u_3 + v_11) > 1f);
@@ -876,15 +876,15 @@ fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
     let _e14 = ray_inverse3_(d_4);
     loop {
         let _e21 = node;
-        let n_18 = geo_nodes[_e21];
+        let n_19 = geo_nodes[_e21];
         let _e27 = hit.t;
-        let _e28 = ray_aabb(o_2, _e14, n_18.bmin, n_18.bmax, _e27);
+        let _e28 = ray_aabb(o_2, _e14, n_19.bmin, n_19.bmax, _e27);
         if (_e28 >= 0f) {
-            if (n_18.count > 0u) {
-                i = n_18.first;
+            if (n_19.count > 0u) {
+                i = n_19.first;
                 loop {
                     let _e36 = i;
-                    if (_e36 < (n_18.first + n_18.count)) {
+                    if (_e36 < (n_19.first + n_19.count)) {
                     } else {
                         break;
                     }
@@ -912,11 +912,11 @@ fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
                 let _e60 = sp;
                 if (_e60 < 64u) {
                     let _e63 = sp;
-                    stack[_e63] = (n_18.first + 1u);
+                    stack[_e63] = (n_19.first + 1u);
                     let _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node = n_18.first;
+                node = n_19.first;
                 continue;
             }
         }
@@ -945,41 +945,53 @@ fn occluded(a_6: vec3<f32>, b_5: vec3<f32>) -> bool {
     return (_e12.tri != NO_LIGHT);
 }
 
-fn connect(li: u32, x_4: vec3<f32>, n_12: vec3<f32>, ng_1: vec3<f32>, s: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32) -> Connection {
+fn connect_traced(li: u32, x_4: vec3<f32>, n_12: vec3<f32>, ng_1: vec3<f32>, s: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32, trace_1: bool) -> Connection {
     var c_4: Connection;
     var local_19: bool;
+    var local_20: bool;
 
     c_4.e = vec3(0f);
     let l_8 = lights[li];
-    let _e17 = light_point(l_8, u1_2, u2_2);
-    c_4.y = _e17;
-    let _e20 = c_4.y;
-    let _e23 = r2_3[li];
-    let _e25 = connection_cosine(x_4, _e20, n_12, ng_1, (s * _e23));
-    c_4.cos_x = _e25;
-    let _e27 = c_4.cos_x;
-    if !((_e27 <= 0f)) {
-        let _e36 = c_4.y;
-        let _e37 = occluded((x_4 + (ng_1 * eps)), _e36);
-        local_19 = _e37;
+    let _e18 = light_point(l_8, u1_2, u2_2);
+    c_4.y = _e18;
+    let _e21 = c_4.y;
+    let _e24 = r2_3[li];
+    let _e26 = connection_cosine(x_4, _e21, n_12, ng_1, (s * _e24));
+    c_4.cos_x = _e26;
+    let _e28 = c_4.cos_x;
+    if !((_e28 <= 0f)) {
+        if trace_1 {
+            let _e39 = c_4.y;
+            let _e40 = occluded((x_4 + (ng_1 * eps)), _e39);
+            local_20 = _e40;
+        } else {
+            local_20 = false;
+        }
+        let _e42 = local_20;
+        local_19 = _e42;
     } else {
         local_19 = true;
     }
-    let _e39 = local_19;
-    if _e39 {
-        let _e40 = c_4;
-        return _e40;
+    let _e44 = local_19;
+    if _e44 {
+        let _e45 = c_4;
+        return _e45;
     }
-    let _e42 = c_4.y;
-    let v_12 = (x_4 - _e42);
+    let _e47 = c_4.y;
+    let v_12 = (x_4 - _e47);
     let d2_10 = dot(v_12, v_12);
-    let _e49 = light_intensity(l_8, (v_12 / vec3(sqrt(d2_10))));
-    let _e51 = c_4.cos_x;
-    let _e54 = rt2_4[li];
-    let _e56 = connection_factor(_e51, d2_10, (s * _e54), w_res);
-    c_4.e = (_e49 * _e56);
-    let _e58 = c_4;
-    return _e58;
+    let _e54 = light_intensity(l_8, (v_12 / vec3(sqrt(d2_10))));
+    let _e56 = c_4.cos_x;
+    let _e59 = rt2_4[li];
+    let _e61 = connection_factor(_e56, d2_10, (s * _e59), w_res);
+    c_4.e = (_e54 * _e61);
+    let _e63 = c_4;
+    return _e63;
+}
+
+fn connect(li_1: u32, x_5: vec3<f32>, n_13: vec3<f32>, ng_2: vec3<f32>, s_1: f32, w_res_1: f32, u1_3: f32, u2_3: f32, eps_1: f32) -> Connection {
+    let _e10 = connect_traced(li_1, x_5, n_13, ng_2, s_1, w_res_1, u1_3, u2_3, eps_1, true);
+    return _e10;
 }
 
 fn mis_weight(pdf_a_1: f32, pdf_b_1: f32) -> f32 {
@@ -987,9 +999,9 @@ fn mis_weight(pdf_a_1: f32, pdf_b_1: f32) -> f32 {
     return _e2;
 }
 
-fn light_range_scale(li_1: u32, x_5: vec3<f32>, r_3: vec3<f32>, rl_2: vec4<f32>) -> f32 {
-    let c_9 = light_cones[li_1];
-    let _e9 = range_scale_toward(rl_2, c_9.center, c_9.radius, x_5, r_3);
+fn light_range_scale(li_2: u32, x_6: vec3<f32>, r_3: vec3<f32>, rl_2: vec4<f32>) -> f32 {
+    let c_9 = light_cones[li_2];
+    let _e9 = range_scale_toward(rl_2, c_9.center, c_9.radius, x_6, r_3);
     return _e9;
 }
 
@@ -1002,29 +1014,29 @@ fn light_bvh_count(nodes_1: u32) -> u32 {
     return arrayLength((&light_bvh));
 }
 
-fn bvh_importance(nodes_2: u32, i_2: u32, x_6: vec3<f32>, n_13: vec3<f32>, r_4: vec3<f32>, lobe_7: vec4<f32>) -> f32 {
+fn bvh_importance(nodes_2: u32, i_2: u32, x_7: vec3<f32>, n_14: vec3<f32>, r_4: vec3<f32>, lobe_7: vec4<f32>) -> f32 {
     let _e6 = light_bvh_node(nodes_2, i_2);
-    let _e13 = receiver_importance(_e6.center, _e6.radius, _e6.phi, _e6.axis, _e6.cos_o, _e6.cos_e, x_6, n_13, r_4, lobe_7);
+    let _e13 = receiver_importance(_e6.center, _e6.radius, _e6.phi, _e6.axis, _e6.cos_o, _e6.cos_e, x_7, n_14, r_4, lobe_7);
     return _e13;
 }
 
-fn bvh_first(nodes_3: u32, i_3: u32, x_7: vec3<f32>, n_14: vec3<f32>, r_5: vec3<f32>, lobe_8: vec4<f32>) -> f32 {
-    var local_20: bool;
+fn bvh_first(nodes_3: u32, i_3: u32, x_8: vec3<f32>, n_15: vec3<f32>, r_5: vec3<f32>, lobe_8: vec4<f32>) -> f32 {
+    var local_21: bool;
 
     let _e6 = light_bvh_node(nodes_3, i_3);
     let j = _e6.second;
     if !((j <= (i_3 + 1u))) {
         let _e14 = light_bvh_count(nodes_3);
-        local_20 = (j >= _e14);
+        local_21 = (j >= _e14);
     } else {
-        local_20 = true;
+        local_21 = true;
     }
-    let _e17 = local_20;
+    let _e17 = local_21;
     if _e17 {
         return -1f;
     }
-    let _e21 = bvh_importance(nodes_3, (i_3 + 1u), x_7, n_14, r_5, lobe_8);
-    let _e22 = bvh_importance(nodes_3, j, x_7, n_14, r_5, lobe_8);
+    let _e21 = bvh_importance(nodes_3, (i_3 + 1u), x_8, n_15, r_5, lobe_8);
+    let _e22 = bvh_importance(nodes_3, j, x_8, n_15, r_5, lobe_8);
     let _e23 = bvh_first_prob(_e21, _e22);
     return _e23;
 }
@@ -1033,12 +1045,12 @@ fn bvh_pick_none() -> BvhPick {
     return BvhPick(0u, 0f);
 }
 
-fn light_bvh_sample(nodes_4: u32, x_8: vec3<f32>, n_15: vec3<f32>, r_6: vec3<f32>, lobe_9: vec4<f32>, u_in: f32) -> BvhPick {
+fn light_bvh_sample(nodes_4: u32, x_9: vec3<f32>, n_16: vec3<f32>, r_6: vec3<f32>, lobe_9: vec4<f32>, u_in: f32) -> BvhPick {
     var pick: BvhPick;
     var u_2: f32;
     var i_4: u32 = 0u;
     var pmf: f32 = 1f;
-    var local_21: bool;
+    var local_22: bool;
 
     let _e6 = bvh_pick_none();
     pick = _e6;
@@ -1056,12 +1068,12 @@ fn light_bvh_sample(nodes_4: u32, x_8: vec3<f32>, n_15: vec3<f32>, r_6: vec3<f32
             if (_e17.second == LIGHT_BVH_LEAF) {
                 let _e21 = i_4;
                 if !((_e21 > 0u)) {
-                    let _e28 = bvh_importance(nodes_4, 0u, x_8, n_15, r_6, lobe_9);
-                    local_21 = (_e28 > 0f);
+                    let _e28 = bvh_importance(nodes_4, 0u, x_9, n_16, r_6, lobe_9);
+                    local_22 = (_e28 > 0f);
                 } else {
-                    local_21 = true;
+                    local_22 = true;
                 }
-                let _e32 = local_21;
+                let _e32 = local_22;
                 if _e32 {
                     pick.light = _e17.light;
                     let _e36 = pmf;
@@ -1071,7 +1083,7 @@ fn light_bvh_sample(nodes_4: u32, x_8: vec3<f32>, n_15: vec3<f32>, r_6: vec3<f32
                 return _e37;
             }
             let _e38 = i_4;
-            let _e39 = bvh_first(nodes_4, _e38, x_8, n_15, r_6, lobe_9);
+            let _e39 = bvh_first(nodes_4, _e38, x_9, n_16, r_6, lobe_9);
             if (_e39 < 0f) {
                 let _e42 = pick;
                 return _e42;
@@ -1091,39 +1103,39 @@ fn light_bvh_sample(nodes_4: u32, x_8: vec3<f32>, n_15: vec3<f32>, r_6: vec3<f32
     return _e57;
 }
 
-fn light_pdf_selected(li_2: u32, x_9: vec3<f32>, r_7: vec3<f32>, rl_3: vec4<f32>, y_1: vec3<f32>, sel: f32) -> f32 {
-    let l_9 = lights[li_2];
-    let v_13 = (x_9 - y_1);
+fn light_pdf_selected(li_3: u32, x_10: vec3<f32>, r_7: vec3<f32>, rl_3: vec4<f32>, y_1: vec3<f32>, sel: f32) -> f32 {
+    let l_9 = lights[li_3];
+    let v_13 = (x_10 - y_1);
     let d2_11 = dot(v_13, v_13);
     let _e11 = light_normal(l_9);
     let cos_y_1 = select(0f, dot(_e11, (v_13 / vec3(sqrt(d2_11)))), (d2_11 > 0f));
-    let _e20 = light_range_scale(li_2, x_9, r_7, rl_3);
-    let _e23 = rt2_4[li_2];
+    let _e20 = light_range_scale(li_3, x_10, r_7, rl_3);
+    let _e23 = rt2_4[li_3];
     let _e25 = light_area(l_9);
     let _e26 = light_strategy_pdf(sel, (_e20 * _e23), d2_11, _e25, cos_y_1);
     return _e26;
 }
 
-fn shade_pick(li_3: u32, x_10: vec3<f32>, n_16: vec3<f32>, ng_2: vec3<f32>, m: GpuMaterial, wo_1: vec3<f32>, r_8: vec3<f32>, lobe_10: vec4<f32>, rl_4: vec4<f32>, w_4: f32, nee: u32, u1_3: f32, u2_3: f32) -> vec3<f32> {
+fn shade_pick(li_4: u32, x_11: vec3<f32>, n_17: vec3<f32>, ng_3: vec3<f32>, m: GpuMaterial, wo_1: vec3<f32>, r_8: vec3<f32>, lobe_10: vec4<f32>, rl_4: vec4<f32>, w_4: f32, nee: u32, u1_4: f32, u2_4: f32) -> vec3<f32> {
     var mis: f32 = 1f;
 
-    let _e13 = light_range_scale(li_3, x_10, r_8, rl_4);
+    let _e13 = light_range_scale(li_4, x_11, r_8, rl_4);
     let _e16 = params.eps;
-    let _e17 = connect(li_3, x_10, n_16, ng_2, _e13, w_4, u1_3, u2_3, _e16);
+    let _e17 = connect(li_4, x_11, n_17, ng_3, _e13, w_4, u1_4, u2_4, _e16);
     if (_e17.cos_x <= 0f) {
         return vec3(0f);
     }
-    let l_10 = normalize((_e17.y - x_10));
-    let _e30 = lights[li_3];
+    let l_10 = normalize((_e17.y - x_11));
+    let _e30 = lights[li_4];
     let _e31 = light_area(_e30);
     if (_e31 > 0f) {
-        let _e37 = light_pdf_selected(li_3, x_10, r_8, rl_4, _e17.y, (1f / w_4));
+        let _e37 = light_pdf_selected(li_4, x_11, r_8, rl_4, _e17.y, (1f / w_4));
         let _e39 = specular_probability(lobe_10);
-        let _e40 = bsdf_pdf(n_16, wo_1, l_10, m.alpha, _e39);
+        let _e40 = bsdf_pdf(n_17, wo_1, l_10, m.alpha, _e39);
         let _e41 = mis_weight(_e37, _e40);
         mis = _e41;
     }
-    let _e47 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_16, wo_1, l_10);
+    let _e47 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_17, wo_1, l_10);
     let _e50 = mis;
     return ((_e47 * _e17.e) * _e50);
 }
@@ -1143,13 +1155,13 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         candidates[i_5] = 0u;
         return;
     }
-    let x_11 = vtx.position;
-    let n_19 = vtx.normal;
-    let ng_3 = vtx.gnormal;
+    let x_12 = vtx.position;
+    let n_20 = vtx.normal;
+    let ng_4 = vtx.gnormal;
     let m_2 = materials[vtx.material];
     let wo_2 = vtx.wo;
-    let _e23 = mirror_dir(n_19, wo_2);
-    let _e30 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, dot(n_19, wo_2));
+    let _e23 = mirror_dir(n_20, wo_2);
+    let _e30 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, dot(n_20, wo_2));
     let _e31 = range_lobe(_e30);
     let _e34 = params.seed;
     let _e37 = params.frame;
@@ -1162,8 +1174,8 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     h = _e48;
     let _e49 = h;
     let _e50 = xi_from_bits(_e49);
-    let _e52 = light_bvh_sample(BVH, x_11, n_19, _e23, _e30, _e50);
-    let li_4 = _e52.light;
+    let _e52 = light_bvh_sample(BVH, x_12, n_20, _e23, _e30, _e50);
+    let li_5 = _e52.light;
     let pmf_1 = _e52.pmf;
     let _e55 = h;
     let _e56 = pcg_hash(_e55);
@@ -1176,7 +1188,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     let _e61 = h;
     let _e62 = xi_from_bits(_e61);
     if (pmf_1 > 0f) {
-        let _e68 = shade_pick(li_4, x_11, n_19, ng_3, m_2, wo_2, _e23, _e30, _e31, (1f / pmf_1), 0u, _e58, _e62);
+        let _e68 = shade_pick(li_5, x_12, n_20, ng_4, m_2, wo_2, _e23, _e30, _e31, (1f / pmf_1), 0u, _e58, _e62);
         sum = _e68;
     }
     let _e70 = sum;

@@ -63,6 +63,24 @@
 //!   `wᵢ = ĝᵢ/pᵢ` (its importance bound over its roulette probability), `k`
 //!   independent picks with probability `wᵢ/W`, each weighted `W/(k·wᵢ)`
 //!   and `1/p`. Its noise is smallest where one light dominates.
+//! - `Resampled { k }`: resampled importance sampling over the candidates.
+//!   Each is sampled (a point on a triangle) and evaluated without a
+//!   shadow ray, `cᵢ` (the `1/p` of its roulette included); `k` independent
+//!   picks with probability `pᵢ/P`, `pᵢ` the channel mean of `cᵢ` and `P`
+//!   their sum; each pick adds its contribution shadowed, weighted
+//!   `P/(k·pᵢ)`. The rays go only where light arrives unshadowed, in
+//!   proportion to it: what the bound misses (a spot's cone, an IES
+//!   profile, the BRDF, the roulette at the sampled point) adds no noise.
+//!   Each candidate costs a full evaluation instead of a bound. Measured on
+//!   lavapipe, one frame's relative error at k = 8: 200 point and spot
+//!   lights among shadowing boxes (`tests/tests/direct_shadows.rs`) 0.114
+//!   against weighted picks' 0.237, both at most 8 rays per pixel; 3,000
+//!   unshadowed point lights, 222 in range per pixel
+//!   (`tests/tests/engine_direct.rs`), 0.070 against 0.074, where the
+//!   bound is nearly exact, at 1.5× the frame's time; slc-bevy's headless
+//!   scene (point and spot lights, Bevy's BRDF) 0.031 against 0.086
+//!   (luminance RMSE). slc-bevy picks this way by default. GPU timing
+//!   pending.
 //! - `Uniform { k }`: `k` picks uniform among the `n` candidates (Algorithm
 //!   R), weighted `n/k` and `1/p`: the paper's reservoir.
 //! - `All`: every candidate, weighted `1/p` (exact given ξ): for small
@@ -325,6 +343,7 @@ impl DirectPass {
         let surface = desc.surface.source()?;
         let (selection, k) = match desc.selection {
             DirectSelection::Weighted { k } => (Selection::Weighted, k),
+            DirectSelection::Resampled { k } => (Selection::Resampled, k),
             DirectSelection::Uniform { k } => (Selection::Reservoir, k),
             DirectSelection::All => (Selection::All, 1),
         };

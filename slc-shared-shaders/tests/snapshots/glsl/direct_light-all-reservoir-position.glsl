@@ -218,10 +218,10 @@ float connection_cosine(vec3 x_3, vec3 y, vec3 n, vec3 ng, float r2_1) {
     if (_e16) {
         return 0.0;
     }
-    vec3 w_5 = (v_3 / vec3(sqrt(d2_6)));
-    float cos_x_1 = -(dot(n, w_5));
+    vec3 w_6 = (v_3 / vec3(sqrt(d2_6)));
+    float cos_x_1 = -(dot(n, w_6));
     if (!((cos_x_1 <= 0.0))) {
-        local_3 = (dot(ng, w_5) >= 0.0);
+        local_3 = (dot(ng, w_6) >= 0.0);
     } else {
         local_3 = true;
     }
@@ -271,8 +271,8 @@ float atan_portable(float x_4) {
     float _e21 = base;
     float _e33 = t_1;
     float _e35 = t_1;
-    float r_8 = (_e21 + (((((((((0.080537446 * z) - 0.13877685) * z) + 0.19977711) * z) - 0.3333295) * z) * _e33) + _e35));
-    return ((x_4 < 0.0) ? -(r_8) : r_8);
+    float r_9 = (_e21 + (((((((((0.080537446 * z) - 0.13877685) * z) + 0.19977711) * z) - 0.3333295) * z) * _e33) + _e35));
+    return ((x_4 < 0.0) ? -(r_9) : r_9);
 }
 
 float atan2_portable(float y_1, float x_5) {
@@ -578,8 +578,8 @@ float range_scale_toward(vec4 rl_1, vec3 center_1, float radius_1, vec3 p_1, vec
 
 vec3 triangle_normal(vec3 a_6, vec3 b_4, vec3 c_4) {
     bool local_7 = false;
-    vec3 n_9 = cross((b_4 - a_6), (c_4 - a_6));
-    float l2_ = dot(n_9, n_9);
+    vec3 n_10 = cross((b_4 - a_6), (c_4 - a_6));
+    float l2_ = dot(n_10, n_10);
     if (!(!((l2_ > 0.0)))) {
         local_7 = !((l2_ < 3e38));
     } else {
@@ -589,7 +589,7 @@ vec3 triangle_normal(vec3 a_6, vec3 b_4, vec3 c_4) {
     if (_e17) {
         return vec3(0.0, 0.0, 0.0);
     }
-    return (n_9 / vec3(sqrt(l2_)));
+    return (n_10 / vec3(sqrt(l2_)));
 }
 
 vec3 light_intensity(GpuLight l, vec3 w_3) {
@@ -771,40 +771,47 @@ Picks bsh_collect(vec3 x_10, vec3 r_6, vec4 rl_5, uint seed_1) {
     return _e49;
 }
 
-Connection connect(uint li, vec3 x_11, vec3 n_7, vec3 ng_1, float s, float w_res, float u1_2, float u2_2, float eps) {
+Connection connect_traced(uint li, vec3 x_11, vec3 n_7, vec3 ng_1, float s, float w_res, float u1_2, float u2_2, float eps, bool trace) {
     Connection c_5 = Connection(vec3(0.0), vec3(0.0), 0.0);
     bool local_10 = false;
+    bool local_11 = false;
     c_5.e = vec3(0.0);
     GpuLight l_2 = _group_1_binding_1_cs[li];
-    vec3 _e17 = light_point(l_2, u1_2, u2_2);
-    c_5.y = _e17;
-    vec3 _e20 = c_5.y;
-    float _e23 = _group_1_binding_3_cs[li];
-    float _e25 = connection_cosine(x_11, _e20, n_7, ng_1, (s * _e23));
-    c_5.cos_x = _e25;
-    float _e27 = c_5.cos_x;
-    if (!((_e27 <= 0.0))) {
-        vec3 _e36 = c_5.y;
-        bool _e37 = occluded((x_11 + (ng_1 * eps)), _e36);
-        local_10 = _e37;
+    vec3 _e18 = light_point(l_2, u1_2, u2_2);
+    c_5.y = _e18;
+    vec3 _e21 = c_5.y;
+    float _e24 = _group_1_binding_3_cs[li];
+    float _e26 = connection_cosine(x_11, _e21, n_7, ng_1, (s * _e24));
+    c_5.cos_x = _e26;
+    float _e28 = c_5.cos_x;
+    if (!((_e28 <= 0.0))) {
+        if (trace) {
+            vec3 _e39 = c_5.y;
+            bool _e40 = occluded((x_11 + (ng_1 * eps)), _e39);
+            local_11 = _e40;
+        } else {
+            local_11 = false;
+        }
+        bool _e42 = local_11;
+        local_10 = _e42;
     } else {
         local_10 = true;
     }
-    bool _e39 = local_10;
-    if (_e39) {
-        Connection _e40 = c_5;
-        return _e40;
+    bool _e44 = local_10;
+    if (_e44) {
+        Connection _e45 = c_5;
+        return _e45;
     }
-    vec3 _e42 = c_5.y;
-    vec3 v_6 = (x_11 - _e42);
+    vec3 _e47 = c_5.y;
+    vec3 v_6 = (x_11 - _e47);
     float d2_8 = dot(v_6, v_6);
-    vec3 _e49 = light_intensity(l_2, (v_6 / vec3(sqrt(d2_8))));
-    float _e51 = c_5.cos_x;
-    float _e54 = _group_1_binding_2_cs[li];
-    float _e56 = connection_factor(_e51, d2_8, (s * _e54), w_res);
-    c_5.e = (_e49 * _e56);
-    Connection _e58 = c_5;
-    return _e58;
+    vec3 _e54 = light_intensity(l_2, (v_6 / vec3(sqrt(d2_8))));
+    float _e56 = c_5.cos_x;
+    float _e59 = _group_1_binding_2_cs[li];
+    float _e61 = connection_factor(_e56, d2_8, (s * _e59), w_res);
+    c_5.e = (_e54 * _e61);
+    Connection _e63 = c_5;
+    return _e63;
 }
 
 vec4 surface_at(ivec2 texel) {
@@ -812,14 +819,19 @@ vec4 surface_at(ivec2 texel) {
     return ((p_2.w > 0.0) ? vec4(p_2.xyz, 1.0) : vec4(0.0));
 }
 
-Shaded shade_pick(uint li_1, vec3 x_12, vec3 n_8, vec3 r_7, vec4 rl_6, Material m_1, float w_4, float u1_3, float u2_3, float eps_1) {
+Shaded shade_pick_traced(uint li_1, vec3 x_12, vec3 n_8, vec3 r_7, vec4 rl_6, Material m_1, float w_4, float u1_3, float u2_3, float eps_1, bool trace_1) {
     Shaded s_1 = Shaded(vec3(0.0), vec3(0.0), vec3(0.0));
-    Connection _e12 = connect(li_1, x_12, n_8, n_8, 1.0, w_4, u1_3, u2_3, eps_1);
-    s_1.e = _e12.e;
+    Connection _e13 = connect_traced(li_1, x_12, n_8, n_8, 1.0, w_4, u1_3, u2_3, eps_1, trace_1);
+    s_1.e = _e13.e;
     s_1.diffuse = vec3(0.0);
     s_1.specular = vec3(0.0);
-    Shaded _e21 = s_1;
-    return _e21;
+    Shaded _e22 = s_1;
+    return _e22;
+}
+
+Shaded shade_pick(uint li_2, vec3 x_13, vec3 n_9, vec3 r_8, vec4 rl_7, Material m_2, float w_5, float u1_4, float u2_4, float eps_2) {
+    Shaded _e11 = shade_pick_traced(li_2, x_13, n_9, r_8, rl_7, m_2, w_5, u1_4, u2_4, eps_2, true);
+    return _e11;
 }
 
 Shaded add(Shaded a_9, Shaded b_6) {
@@ -862,14 +874,14 @@ void main() {
         imageStore(_group_0_binding_3_cs, texel_1, vec4(0.0));
         return;
     }
-    vec3 x_13 = _e21.xyz;
-    vec3 n_10 = (nn / vec3(sqrt(len2_)));
-    r = n_10;
+    vec3 x_14 = _e21.xyz;
+    vec3 n_11 = (nn / vec3(sqrt(len2_)));
+    r = n_11;
     vec4 _e53 = lobe;
     vec4 _e54 = range_lobe(_e53);
     float _e57 = _group_0_binding_0_cs.shadow_offset;
     vec3 _e60 = _group_0_binding_0_cs.eye;
-    float eps_2 = (_e57 * length((_e60 - x_13)));
+    float eps_3 = (_e57 * length((_e60 - x_14)));
     uint _e66 = _group_0_binding_0_cs.seed;
     uint _e70 = _group_0_binding_0_cs.width;
     uint _e76 = _group_0_binding_0_cs.frame;
@@ -877,7 +889,7 @@ void main() {
     uint _e78 = pick_stream(_e77);
     h = _e78;
     vec3 _e88 = r;
-    Picks _e89 = bsh_collect(x_13, _e88, _e54, _e77);
+    Picks _e89 = bsh_collect(x_14, _e88, _e54, _e77);
     float _e92 = reservoir_weight(_e89.n, K);
     bool loop_init_1 = true;
     while(true) {
@@ -906,7 +918,7 @@ void main() {
             Material _e111 = m;
             uint _e112 = h;
             float _e113 = xi_from_bits(_e112);
-            Shaded _e114 = shade_pick(_e89.light[_e108], x_13, n_10, _e110, _e54, _e111, _e92, _e103, _e113, eps_2);
+            Shaded _e114 = shade_pick(_e89.light[_e108], x_14, n_11, _e110, _e54, _e111, _e92, _e103, _e113, eps_3);
             Shaded _e115 = add(_e106, _e114);
             t = _e115;
         }

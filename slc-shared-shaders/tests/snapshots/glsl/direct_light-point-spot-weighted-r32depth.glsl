@@ -244,10 +244,10 @@ float connection_cosine(vec3 x_2, vec3 y, vec3 n, vec3 ng, float r2_1) {
     if (_e16) {
         return 0.0;
     }
-    vec3 w_5 = (v_4 / vec3(sqrt(d2_7)));
-    float cos_x_1 = -(dot(n, w_5));
+    vec3 w_6 = (v_4 / vec3(sqrt(d2_7)));
+    float cos_x_1 = -(dot(n, w_6));
     if (!((cos_x_1 <= 0.0))) {
-        local_4 = (dot(ng, w_5) >= 0.0);
+        local_4 = (dot(ng, w_6) >= 0.0);
     } else {
         local_4 = true;
     }
@@ -611,12 +611,12 @@ GeoHit trace(vec3 o_2, vec3 d_4, float t_min_1, float t_max_2, bool any_hit) {
     vec3 _e14 = ray_inverse3_(d_4);
     while(true) {
         uint _e21 = node_2;
-        GpuGeoNode n_8 = _group_1_binding_6_cs[_e21];
+        GpuGeoNode n_9 = _group_1_binding_6_cs[_e21];
         float _e27 = hit.t;
-        float _e28 = ray_aabb(o_2, _e14, n_8.bmin, n_8.bmax, _e27);
+        float _e28 = ray_aabb(o_2, _e14, n_9.bmin, n_9.bmax, _e27);
         if ((_e28 >= 0.0)) {
-            if ((n_8.count > 0u)) {
-                i = n_8.first;
+            if ((n_9.count > 0u)) {
+                i = n_9.first;
                 bool loop_init = true;
                 while(true) {
                     if (!loop_init) {
@@ -625,7 +625,7 @@ GeoHit trace(vec3 o_2, vec3 d_4, float t_min_1, float t_max_2, bool any_hit) {
                     }
                     loop_init = false;
                     uint _e36 = i;
-                    if ((_e36 < (n_8.first + n_8.count))) {
+                    if ((_e36 < (n_9.first + n_9.count))) {
                     } else {
                         break;
                     }
@@ -649,11 +649,11 @@ GeoHit trace(vec3 o_2, vec3 d_4, float t_min_1, float t_max_2, bool any_hit) {
                 uint _e60 = sp;
                 if ((_e60 < 64u)) {
                     uint _e63 = sp;
-                    stack[_e63] = (n_8.first + 1u);
+                    stack[_e63] = (n_9.first + 1u);
                     uint _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_2 = n_8.first;
+                node_2 = n_9.first;
                 continue;
             }
         }
@@ -774,40 +774,47 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start, vec3 x_6, vec3 r_7, vec4 rl_4)
     return BSH_NONE;
 }
 
-Connection connect(uint li, vec3 x_7, vec3 n_4, vec3 ng_1, float s, float w_res, float u1_1, float u2_1, float eps) {
+Connection connect_traced(uint li, vec3 x_7, vec3 n_4, vec3 ng_1, float s, float w_res, float u1_1, float u2_1, float eps, bool trace_1) {
     Connection c_2 = Connection(vec3(0.0), vec3(0.0), 0.0);
     bool local_15 = false;
+    bool local_16 = false;
     c_2.e = vec3(0.0);
     GpuLight l_2 = _group_1_binding_1_cs[li];
-    vec3 _e17 = light_point(l_2, u1_1, u2_1);
-    c_2.y = _e17;
-    vec3 _e20 = c_2.y;
-    float _e23 = _group_1_binding_3_cs[li];
-    float _e25 = connection_cosine(x_7, _e20, n_4, ng_1, (s * _e23));
-    c_2.cos_x = _e25;
-    float _e27 = c_2.cos_x;
-    if (!((_e27 <= 0.0))) {
-        vec3 _e36 = c_2.y;
-        bool _e37 = occluded((x_7 + (ng_1 * eps)), _e36);
-        local_15 = _e37;
+    vec3 _e18 = light_point(l_2, u1_1, u2_1);
+    c_2.y = _e18;
+    vec3 _e21 = c_2.y;
+    float _e24 = _group_1_binding_3_cs[li];
+    float _e26 = connection_cosine(x_7, _e21, n_4, ng_1, (s * _e24));
+    c_2.cos_x = _e26;
+    float _e28 = c_2.cos_x;
+    if (!((_e28 <= 0.0))) {
+        if (trace_1) {
+            vec3 _e39 = c_2.y;
+            bool _e40 = occluded((x_7 + (ng_1 * eps)), _e39);
+            local_16 = _e40;
+        } else {
+            local_16 = false;
+        }
+        bool _e42 = local_16;
+        local_15 = _e42;
     } else {
         local_15 = true;
     }
-    bool _e39 = local_15;
-    if (_e39) {
-        Connection _e40 = c_2;
-        return _e40;
+    bool _e44 = local_15;
+    if (_e44) {
+        Connection _e45 = c_2;
+        return _e45;
     }
-    vec3 _e42 = c_2.y;
-    vec3 v_11 = (x_7 - _e42);
+    vec3 _e47 = c_2.y;
+    vec3 v_11 = (x_7 - _e47);
     float d2_10 = dot(v_11, v_11);
-    vec3 _e49 = light_intensity(l_2, (v_11 / vec3(sqrt(d2_10))));
-    float _e51 = c_2.cos_x;
-    float _e54 = _group_1_binding_2_cs[li];
-    float _e56 = connection_factor(_e51, d2_10, (s * _e54), w_res);
-    c_2.e = (_e49 * _e56);
-    Connection _e58 = c_2;
-    return _e58;
+    vec3 _e54 = light_intensity(l_2, (v_11 / vec3(sqrt(d2_10))));
+    float _e56 = c_2.cos_x;
+    float _e59 = _group_1_binding_2_cs[li];
+    float _e61 = connection_factor(_e56, d2_10, (s * _e59), w_res);
+    c_2.e = (_e54 * _e61);
+    Connection _e63 = c_2;
+    return _e63;
 }
 
 float light_range_scale(uint li_1, vec3 x_8, vec3 r_8, vec4 rl_5) {
@@ -853,8 +860,8 @@ WeightedPicks bsh_weighted_collect(vec3 x_10, vec3 n_6, vec3 r_10, vec4 lobe_8, 
             uint _e21 = picks.n;
             picks.n = (_e21 + 1u);
             uint _e25 = b_4;
-            uint li_4 = _group_1_binding_4_cs[_e25].light;
-            float _e29 = light_weight(li_4, x_10, n_6, r_10, lobe_8, rl_7);
+            uint li_5 = _group_1_binding_4_cs[_e25].light;
+            float _e29 = light_weight(li_5, x_10, n_6, r_10, lobe_8, rl_7);
             if ((_e29 > 0.0)) {
                 float _e33 = picks.w_sum;
                 picks.w_sum = (_e33 + _e29);
@@ -881,7 +888,7 @@ WeightedPicks bsh_weighted_collect(vec3 x_10, vec3 n_6, vec3 r_10, vec4 lobe_8, 
                         bool _e46 = weighted_replace(_e29, _e43, _e45);
                         if (_e46) {
                             uint _e48 = s_1;
-                            picks.light[_e48] = li_4;
+                            picks.light[_e48] = li_5;
                             uint _e51 = s_1;
                             picks.w[_e51] = _e29;
                         }
@@ -897,28 +904,28 @@ WeightedPicks bsh_weighted_collect(vec3 x_10, vec3 n_6, vec3 r_10, vec4 lobe_8, 
 }
 
 vec4 unproject_pixel(vec4 c0_, vec4 c1_, vec4 c2_, vec4 c3_, float px, float py, float width, float height, float depth) {
-    bool local_16 = false;
     bool local_17 = false;
+    bool local_18 = false;
     if ((depth > 0.0)) {
-        local_16 = (depth < 1.0);
-    } else {
-        local_16 = false;
-    }
-    bool _e16 = local_16;
-    if (!(_e16)) {
-        return vec4(0.0, 0.0, 0.0, 0.0);
-    }
-    float x_12 = ((((px + 0.5) / width) * 2.0) - 1.0);
-    float y_1 = (1.0 - (((py + 0.5) / height) * 2.0));
-    vec4 p_8 = ((((c0_ * x_12) + (c1_ * y_1)) + (c2_ * depth)) + c3_);
-    vec3 q_1 = vec3((p_8.x / p_8.w), (p_8.y / p_8.w), (p_8.z / p_8.w));
-    if ((abs(p_8.w) > 0.0)) {
-        bool _e59 = finite3_(q_1);
-        local_17 = _e59;
+        local_17 = (depth < 1.0);
     } else {
         local_17 = false;
     }
-    bool _e61 = local_17;
+    bool _e16 = local_17;
+    if (!(_e16)) {
+        return vec4(0.0, 0.0, 0.0, 0.0);
+    }
+    float x_13 = ((((px + 0.5) / width) * 2.0) - 1.0);
+    float y_1 = (1.0 - (((py + 0.5) / height) * 2.0));
+    vec4 p_8 = ((((c0_ * x_13) + (c1_ * y_1)) + (c2_ * depth)) + c3_);
+    vec3 q_1 = vec3((p_8.x / p_8.w), (p_8.y / p_8.w), (p_8.z / p_8.w));
+    if ((abs(p_8.w) > 0.0)) {
+        bool _e59 = finite3_(q_1);
+        local_18 = _e59;
+    } else {
+        local_18 = false;
+    }
+    bool _e61 = local_18;
     if (_e61) {
         return vec4(q_1.x, q_1.y, q_1.z, 1.0);
     }
@@ -938,14 +945,19 @@ vec4 surface_at(ivec2 texel) {
     return _e29;
 }
 
-Shaded shade_pick(uint li_3, vec3 x_11, vec3 n_7, vec3 r_11, vec4 rl_8, Material m_1, float w_4, float u1_2, float u2_2, float eps_1) {
+Shaded shade_pick_traced(uint li_3, vec3 x_11, vec3 n_7, vec3 r_11, vec4 rl_8, Material m_1, float w_4, float u1_2, float u2_2, float eps_1, bool trace_2) {
     Shaded s_2 = Shaded(vec3(0.0), vec3(0.0), vec3(0.0));
-    Connection _e12 = connect(li_3, x_11, n_7, n_7, 1.0, w_4, u1_2, u2_2, eps_1);
-    s_2.e = _e12.e;
+    Connection _e13 = connect_traced(li_3, x_11, n_7, n_7, 1.0, w_4, u1_2, u2_2, eps_1, trace_2);
+    s_2.e = _e13.e;
     s_2.diffuse = vec3(0.0);
     s_2.specular = vec3(0.0);
-    Shaded _e21 = s_2;
-    return _e21;
+    Shaded _e22 = s_2;
+    return _e22;
+}
+
+Shaded shade_pick(uint li_4, vec3 x_12, vec3 n_8, vec3 r_12, vec4 rl_9, Material m_2, float w_5, float u1_3, float u2_3, float eps_2) {
+    Shaded _e11 = shade_pick_traced(li_4, x_12, n_8, r_12, rl_9, m_2, w_5, u1_3, u2_3, eps_2, true);
+    return _e11;
 }
 
 Shaded add(Shaded a_6, Shaded b_5) {
@@ -991,14 +1003,14 @@ void main() {
         imageStore(_group_0_binding_3_cs, texel_1, vec4(0.0));
         return;
     }
-    vec3 x_13 = _e21.xyz;
-    vec3 n_9 = (nn / vec3(sqrt(len2_)));
-    r = n_9;
+    vec3 x_14 = _e21.xyz;
+    vec3 n_10 = (nn / vec3(sqrt(len2_)));
+    r = n_10;
     vec4 _e53 = lobe;
     vec4 _e54 = range_lobe(_e53);
     float _e57 = _group_0_binding_0_cs.shadow_offset;
     vec3 _e60 = _group_0_binding_0_cs.eye;
-    float eps_2 = (_e57 * length((_e60 - x_13)));
+    float eps_3 = (_e57 * length((_e60 - x_14)));
     uint _e66 = _group_0_binding_0_cs.seed;
     uint _e70 = _group_0_binding_0_cs.width;
     uint _e76 = _group_0_binding_0_cs.frame;
@@ -1007,7 +1019,7 @@ void main() {
     h = _e78;
     vec3 _e88 = r;
     vec4 _e89 = lobe;
-    WeightedPicks _e90 = bsh_weighted_collect(x_13, n_9, _e88, _e89, _e54, _e77);
+    WeightedPicks _e90 = bsh_weighted_collect(x_14, n_10, _e88, _e89, _e54, _e77);
     if ((_e90.w_sum > 0.0)) {
         bool loop_init_3 = true;
         while(true) {
@@ -1033,9 +1045,9 @@ void main() {
                 uint _e105 = h;
                 float _e106 = xi_from_bits(_e105);
                 uint _e108 = k;
-                uint li_5 = _e90.light[_e108];
+                uint li_6 = _e90.light[_e108];
                 copies = 1u;
-                uint _e115 = _group_1_binding_1_cs[li_5].kind;
+                uint _e115 = _group_1_binding_1_cs[li_6].kind;
                 if ((_e115 != LIGHT_TRIANGLE)) {
                     j = 0u;
                     bool loop_init_4 = true;
@@ -1055,7 +1067,7 @@ void main() {
                             uint _e124 = k;
                             if ((_e123 != _e124)) {
                                 uint _e129 = j;
-                                local_2 = (_e90.light[_e129] == li_5);
+                                local_2 = (_e90.light[_e129] == li_6);
                             } else {
                                 local_2 = false;
                             }
@@ -1081,7 +1093,7 @@ void main() {
                     uint _e152 = k;
                     float _e155 = weighted_pick_weight(_e90.w_sum, _e90.w[_e152], K);
                     uint _e156 = copies;
-                    Shaded _e159 = shade_pick(li_5, x_13, n_9, _e148, _e54, _e149, (_e155 * float(_e156)), _e102, _e106, eps_2);
+                    Shaded _e159 = shade_pick(li_6, x_14, n_10, _e148, _e54, _e149, (_e155 * float(_e156)), _e102, _e106, eps_3);
                     Shaded _e160 = add(_e147, _e159);
                     t = _e160;
                 }

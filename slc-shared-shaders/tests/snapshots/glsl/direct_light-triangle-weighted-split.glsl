@@ -250,10 +250,10 @@ float connection_cosine(vec3 x_2, vec3 y, vec3 n, vec3 ng, float r2_1) {
     if (_e16) {
         return 0.0;
     }
-    vec3 w_6 = (v_6 / vec3(sqrt(d2_7)));
-    float cos_x_1 = -(dot(n, w_6));
+    vec3 w_7 = (v_6 / vec3(sqrt(d2_7)));
+    float cos_x_1 = -(dot(n, w_7));
     if (!((cos_x_1 <= 0.0))) {
-        local_4 = (dot(ng, w_6) >= 0.0);
+        local_4 = (dot(ng, w_7) >= 0.0);
     } else {
         local_4 = true;
     }
@@ -637,8 +637,8 @@ float ray_aabb(vec3 o, vec3 inv_d, vec3 bmin, vec3 bmax, float t_max) {
 
 vec3 triangle_normal(vec3 a_4, vec3 b_3, vec3 c_3) {
     bool local_13 = false;
-    vec3 n_11 = cross((b_3 - a_4), (c_3 - a_4));
-    float l2_ = dot(n_11, n_11);
+    vec3 n_12 = cross((b_3 - a_4), (c_3 - a_4));
+    float l2_ = dot(n_12, n_12);
     if (!(!((l2_ > 0.0)))) {
         local_13 = !((l2_ < 3e38));
     } else {
@@ -648,7 +648,7 @@ vec3 triangle_normal(vec3 a_4, vec3 b_3, vec3 c_3) {
     if (_e17) {
         return vec3(0.0, 0.0, 0.0);
     }
-    return (n_11 / vec3(sqrt(l2_)));
+    return (n_12 / vec3(sqrt(l2_)));
 }
 
 float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_5, vec3 b_4, vec3 c_4, float t_min, float t_max_1) {
@@ -734,12 +734,12 @@ GeoHit trace(vec3 o_2, vec3 d_4, float t_min_1, float t_max_2, bool any_hit) {
     vec3 _e14 = ray_inverse3_(d_4);
     while(true) {
         uint _e21 = node_2;
-        GpuGeoNode n_12 = _group_1_binding_6_cs[_e21];
+        GpuGeoNode n_13 = _group_1_binding_6_cs[_e21];
         float _e27 = hit.t;
-        float _e28 = ray_aabb(o_2, _e14, n_12.bmin, n_12.bmax, _e27);
+        float _e28 = ray_aabb(o_2, _e14, n_13.bmin, n_13.bmax, _e27);
         if ((_e28 >= 0.0)) {
-            if ((n_12.count > 0u)) {
-                i = n_12.first;
+            if ((n_13.count > 0u)) {
+                i = n_13.first;
                 bool loop_init = true;
                 while(true) {
                     if (!loop_init) {
@@ -748,7 +748,7 @@ GeoHit trace(vec3 o_2, vec3 d_4, float t_min_1, float t_max_2, bool any_hit) {
                     }
                     loop_init = false;
                     uint _e36 = i;
-                    if ((_e36 < (n_12.first + n_12.count))) {
+                    if ((_e36 < (n_13.first + n_13.count))) {
                     } else {
                         break;
                     }
@@ -772,11 +772,11 @@ GeoHit trace(vec3 o_2, vec3 d_4, float t_min_1, float t_max_2, bool any_hit) {
                 uint _e60 = sp;
                 if ((_e60 < 64u)) {
                     uint _e63 = sp;
-                    stack[_e63] = (n_12.first + 1u);
+                    stack[_e63] = (n_13.first + 1u);
                     uint _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_2 = n_12.first;
+                node_2 = n_13.first;
                 continue;
             }
         }
@@ -897,40 +897,47 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start, vec3 x_6, vec3 r_7, vec4 rl_4)
     return BSH_NONE;
 }
 
-Connection connect(uint li, vec3 x_7, vec3 n_7, vec3 ng_1, float s, float w_res, float u1_2, float u2_2, float eps) {
+Connection connect_traced(uint li, vec3 x_7, vec3 n_7, vec3 ng_1, float s, float w_res, float u1_2, float u2_2, float eps, bool trace_1) {
     Connection c_5 = Connection(vec3(0.0), vec3(0.0), 0.0);
     bool local_19 = false;
+    bool local_20 = false;
     c_5.e = vec3(0.0);
     GpuLight l_4 = _group_1_binding_1_cs[li];
-    vec3 _e17 = light_point(l_4, u1_2, u2_2);
-    c_5.y = _e17;
-    vec3 _e20 = c_5.y;
-    float _e23 = _group_1_binding_3_cs[li];
-    float _e25 = connection_cosine(x_7, _e20, n_7, ng_1, (s * _e23));
-    c_5.cos_x = _e25;
-    float _e27 = c_5.cos_x;
-    if (!((_e27 <= 0.0))) {
-        vec3 _e36 = c_5.y;
-        bool _e37 = occluded((x_7 + (ng_1 * eps)), _e36);
-        local_19 = _e37;
+    vec3 _e18 = light_point(l_4, u1_2, u2_2);
+    c_5.y = _e18;
+    vec3 _e21 = c_5.y;
+    float _e24 = _group_1_binding_3_cs[li];
+    float _e26 = connection_cosine(x_7, _e21, n_7, ng_1, (s * _e24));
+    c_5.cos_x = _e26;
+    float _e28 = c_5.cos_x;
+    if (!((_e28 <= 0.0))) {
+        if (trace_1) {
+            vec3 _e39 = c_5.y;
+            bool _e40 = occluded((x_7 + (ng_1 * eps)), _e39);
+            local_20 = _e40;
+        } else {
+            local_20 = false;
+        }
+        bool _e42 = local_20;
+        local_19 = _e42;
     } else {
         local_19 = true;
     }
-    bool _e39 = local_19;
-    if (_e39) {
-        Connection _e40 = c_5;
-        return _e40;
+    bool _e44 = local_19;
+    if (_e44) {
+        Connection _e45 = c_5;
+        return _e45;
     }
-    vec3 _e42 = c_5.y;
-    vec3 v_13 = (x_7 - _e42);
+    vec3 _e47 = c_5.y;
+    vec3 v_13 = (x_7 - _e47);
     float d2_10 = dot(v_13, v_13);
-    vec3 _e49 = light_intensity(l_4, (v_13 / vec3(sqrt(d2_10))));
-    float _e51 = c_5.cos_x;
-    float _e54 = _group_1_binding_2_cs[li];
-    float _e56 = connection_factor(_e51, d2_10, (s * _e54), w_res);
-    c_5.e = (_e49 * _e56);
-    Connection _e58 = c_5;
-    return _e58;
+    vec3 _e54 = light_intensity(l_4, (v_13 / vec3(sqrt(d2_10))));
+    float _e56 = c_5.cos_x;
+    float _e59 = _group_1_binding_2_cs[li];
+    float _e61 = connection_factor(_e56, d2_10, (s * _e59), w_res);
+    c_5.e = (_e54 * _e61);
+    Connection _e63 = c_5;
+    return _e63;
 }
 
 float light_range_scale(uint li_1, vec3 x_8, vec3 r_8, vec4 rl_5) {
@@ -976,8 +983,8 @@ WeightedPicks bsh_weighted_collect(vec3 x_10, vec3 n_9, vec3 r_10, vec4 lobe_8, 
             uint _e21 = picks.n;
             picks.n = (_e21 + 1u);
             uint _e25 = b_6;
-            uint li_4 = _group_1_binding_4_cs[_e25].light;
-            float _e29 = light_weight(li_4, x_10, n_9, r_10, lobe_8, rl_7);
+            uint li_5 = _group_1_binding_4_cs[_e25].light;
+            float _e29 = light_weight(li_5, x_10, n_9, r_10, lobe_8, rl_7);
             if ((_e29 > 0.0)) {
                 float _e33 = picks.w_sum;
                 picks.w_sum = (_e33 + _e29);
@@ -1004,7 +1011,7 @@ WeightedPicks bsh_weighted_collect(vec3 x_10, vec3 n_9, vec3 r_10, vec4 lobe_8, 
                         bool _e46 = weighted_replace(_e29, _e43, _e45);
                         if (_e46) {
                             uint _e48 = s_1;
-                            picks.light[_e48] = li_4;
+                            picks.light[_e48] = li_5;
                             uint _e51 = s_1;
                             picks.w[_e51] = _e29;
                         }
@@ -1024,27 +1031,32 @@ vec4 surface_at(ivec2 texel) {
     return ((p_8.w > 0.0) ? vec4(p_8.xyz, 1.0) : vec4(0.0));
 }
 
-Shaded shade_pick(uint li_3, vec3 x_11, vec3 n_10, vec3 r_11, vec4 rl_8, Material m_1, float w_5, float u1_3, float u2_3, float eps_1) {
+Shaded shade_pick_traced(uint li_3, vec3 x_11, vec3 n_10, vec3 r_11, vec4 rl_8, Material m_1, float w_5, float u1_3, float u2_3, float eps_1, bool trace_2) {
     Shaded s_2 = Shaded(vec3(0.0), vec3(0.0), vec3(0.0));
-    float _e11 = light_range_scale(li_3, x_11, r_11, rl_8);
-    Connection _e12 = connect(li_3, x_11, n_10, n_10, _e11, w_5, u1_3, u2_3, eps_1);
-    s_2.e = _e12.e;
+    float _e12 = light_range_scale(li_3, x_11, r_11, rl_8);
+    Connection _e13 = connect_traced(li_3, x_11, n_10, n_10, _e12, w_5, u1_3, u2_3, eps_1, trace_2);
+    s_2.e = _e13.e;
     s_2.diffuse = vec3(0.0);
     s_2.specular = vec3(0.0);
-    if ((_e12.cos_x > 0.0)) {
-        vec3 l_5 = normalize((_e12.y - x_11));
-        vec3 _e32 = _group_0_binding_0_cs.f0_d;
-        float _e35 = _group_0_binding_0_cs.f90_d;
-        float _e37 = half_cosine(m_1.v, l_5);
-        vec3 _e38 = diffuse_brdf(m_1.base, m_1.metallic, _e32, _e35, _e37);
-        s_2.diffuse = (_e38 * _e12.e);
-        vec3 _e46 = _group_0_binding_0_cs.f0_d;
-        float _e49 = _group_0_binding_0_cs.f90_d;
-        vec3 _e52 = specular_brdf(m_1.base, m_1.metallic, _e46, _e49, m_1.alpha, n_10, m_1.v, l_5);
-        s_2.specular = (_e52 * _e12.e);
+    if ((_e13.cos_x > 0.0)) {
+        vec3 l_5 = normalize((_e13.y - x_11));
+        vec3 _e33 = _group_0_binding_0_cs.f0_d;
+        float _e36 = _group_0_binding_0_cs.f90_d;
+        float _e38 = half_cosine(m_1.v, l_5);
+        vec3 _e39 = diffuse_brdf(m_1.base, m_1.metallic, _e33, _e36, _e38);
+        s_2.diffuse = (_e39 * _e13.e);
+        vec3 _e47 = _group_0_binding_0_cs.f0_d;
+        float _e50 = _group_0_binding_0_cs.f90_d;
+        vec3 _e53 = specular_brdf(m_1.base, m_1.metallic, _e47, _e50, m_1.alpha, n_10, m_1.v, l_5);
+        s_2.specular = (_e53 * _e13.e);
     }
-    Shaded _e55 = s_2;
-    return _e55;
+    Shaded _e56 = s_2;
+    return _e56;
+}
+
+Shaded shade_pick(uint li_4, vec3 x_12, vec3 n_11, vec3 r_12, vec4 rl_9, Material m_2, float w_6, float u1_4, float u2_4, float eps_2) {
+    Shaded _e11 = shade_pick_traced(li_4, x_12, n_11, r_12, rl_9, m_2, w_6, u1_4, u2_4, eps_2, true);
+    return _e11;
 }
 
 Shaded add(Shaded a_8, Shaded b_7) {
@@ -1091,30 +1103,30 @@ void main() {
         imageStore(_group_0_binding_6_cs, texel_1, vec4(0.0));
         return;
     }
-    vec3 x_12 = _e21.xyz;
-    vec3 n_13 = (nn / vec3(sqrt(len2_1)));
-    r = n_13;
+    vec3 x_13 = _e21.xyz;
+    vec3 n_14 = (nn / vec3(sqrt(len2_1)));
+    r = n_14;
     vec4 mr = texelFetch(_group_0_binding_5_cs, texel_1, 0);
     vec4 _e61 = texelFetch(_group_0_binding_4_cs, texel_1, 0);
     float _e67 = ggx_alpha(clamp(mr.y, 0.0, 1.0));
     vec3 _e70 = _group_0_binding_0_cs.eye;
-    m = Material(_e61.xyz, clamp(mr.z, 0.0, 1.0), _e67, normalize((_e70 - x_12)), mr.y, 0.0);
+    m = Material(_e61.xyz, clamp(mr.z, 0.0, 1.0), _e67, normalize((_e70 - x_13)), mr.y, 0.0);
     vec3 _e77 = m.base;
     float _e79 = m.metallic;
     vec3 _e82 = _group_0_binding_0_cs.f0_d;
     float _e85 = _group_0_binding_0_cs.f90_d;
     float _e87 = m.alpha;
     vec3 _e89 = m.v;
-    vec4 _e91 = receiver_lobe(_e77, _e79, _e82, _e85, _e87, dot(n_13, _e89));
+    vec4 _e91 = receiver_lobe(_e77, _e79, _e82, _e85, _e87, dot(n_14, _e89));
     lobe = _e91;
     vec3 _e93 = m.v;
-    vec3 _e94 = mirror_dir(n_13, _e93);
+    vec3 _e94 = mirror_dir(n_14, _e93);
     r = _e94;
     vec4 _e95 = lobe;
     vec4 _e96 = range_lobe(_e95);
     float _e99 = _group_0_binding_0_cs.shadow_offset;
     vec3 _e102 = _group_0_binding_0_cs.eye;
-    float eps_2 = (_e99 * length((_e102 - x_12)));
+    float eps_3 = (_e99 * length((_e102 - x_13)));
     uint _e108 = _group_0_binding_0_cs.seed;
     uint _e112 = _group_0_binding_0_cs.width;
     uint _e118 = _group_0_binding_0_cs.frame;
@@ -1123,7 +1135,7 @@ void main() {
     h = _e120;
     vec3 _e130 = r;
     vec4 _e131 = lobe;
-    WeightedPicks _e132 = bsh_weighted_collect(x_12, n_13, _e130, _e131, _e96, _e119);
+    WeightedPicks _e132 = bsh_weighted_collect(x_13, n_14, _e130, _e131, _e96, _e119);
     if ((_e132.w_sum > 0.0)) {
         bool loop_init_3 = true;
         while(true) {
@@ -1149,9 +1161,9 @@ void main() {
                 uint _e147 = h;
                 float _e148 = xi_from_bits(_e147);
                 uint _e150 = k;
-                uint li_5 = _e132.light[_e150];
+                uint li_6 = _e132.light[_e150];
                 copies = 1u;
-                uint _e157 = _group_1_binding_1_cs[li_5].kind;
+                uint _e157 = _group_1_binding_1_cs[li_6].kind;
                 if ((_e157 != LIGHT_TRIANGLE)) {
                     j = 0u;
                     bool loop_init_4 = true;
@@ -1171,7 +1183,7 @@ void main() {
                             uint _e166 = k;
                             if ((_e165 != _e166)) {
                                 uint _e171 = j;
-                                local_2 = (_e132.light[_e171] == li_5);
+                                local_2 = (_e132.light[_e171] == li_6);
                             } else {
                                 local_2 = false;
                             }
@@ -1197,7 +1209,7 @@ void main() {
                     uint _e194 = k;
                     float _e197 = weighted_pick_weight(_e132.w_sum, _e132.w[_e194], K);
                     uint _e198 = copies;
-                    Shaded _e201 = shade_pick(li_5, x_12, n_13, _e190, _e96, _e191, (_e197 * float(_e198)), _e144, _e148, eps_2);
+                    Shaded _e201 = shade_pick(li_6, x_13, n_14, _e190, _e96, _e191, (_e197 * float(_e198)), _e144, _e148, eps_3);
                     Shaded _e202 = add(_e189, _e201);
                     t = _e202;
                 }

@@ -242,10 +242,10 @@ float connection_cosine(float3 x_3, float3 y, float3 n, float3 ng, float r2_1)
     if (_e16) {
         return 0.0;
     }
-    float3 w_5 = (v_3 / (sqrt(d2_6)).xxx);
-    float cos_x_1 = -(dot(n, w_5));
+    float3 w_6 = (v_3 / (sqrt(d2_6)).xxx);
+    float cos_x_1 = -(dot(n, w_6));
     if (!((cos_x_1 <= 0.0))) {
-        local_3 = (dot(ng, w_5) >= 0.0);
+        local_3 = (dot(ng, w_6) >= 0.0);
     } else {
         local_3 = true;
     }
@@ -300,8 +300,8 @@ float atan_portable(float x_4)
     float _e21 = base;
     float _e33 = t_1;
     float _e35 = t_1;
-    float r_8 = (_e21 + (((((((((0.080537446 * z) - 0.13877685) * z) + 0.19977711) * z) - 0.3333295) * z) * _e33) + _e35));
-    return ((x_4 < 0.0) ? -(r_8) : r_8);
+    float r_9 = (_e21 + (((((((((0.080537446 * z) - 0.13877685) * z) + 0.19977711) * z) - 0.3333295) * z) * _e33) + _e35));
+    return ((x_4 < 0.0) ? -(r_9) : r_9);
 }
 
 float atan2_portable(float y_1, float x_5)
@@ -639,8 +639,8 @@ float3 triangle_normal(float3 a_6, float3 b_4, float3 c_4)
 {
     bool local_7 = (bool)0;
 
-    float3 n_9 = cross((b_4 - a_6), (c_4 - a_6));
-    float l2_ = dot(n_9, n_9);
+    float3 n_10 = cross((b_4 - a_6), (c_4 - a_6));
+    float l2_ = dot(n_10, n_10);
     if (!(!((l2_ > 0.0)))) {
         local_7 = !((l2_ < 3e38));
     } else {
@@ -650,7 +650,7 @@ float3 triangle_normal(float3 a_6, float3 b_4, float3 c_4)
     if (_e17) {
         return float3(0.0, 0.0, 0.0);
     }
-    return (n_9 / (sqrt(l2_)).xxx);
+    return (n_10 / (sqrt(l2_)).xxx);
 }
 
 float3 light_intensity(GpuLight l, float3 w_3)
@@ -884,43 +884,50 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
     return ret;
 }
 
-Connection connect(uint li, float3 x_11, float3 n_7, float3 ng_1, float s, float w_res, float u1_2, float u2_2, float eps)
+Connection connect_traced(uint li, float3 x_11, float3 n_7, float3 ng_1, float s, float w_res, float u1_2, float u2_2, float eps, bool trace)
 {
     Connection c_5 = (Connection)0;
     bool local_10 = (bool)0;
+    bool local_11 = (bool)0;
 
     c_5.e = (0.0).xxx;
     GpuLight l_2 = ConstructGpuLight(asfloat(lights.Load3(li*64+0)), asuint(lights.Load(li*64+12)), asfloat(lights.Load3(li*64+16)), asfloat(lights.Load(li*64+28)), asfloat(lights.Load3(li*64+32)), asfloat(lights.Load(li*64+44)), asfloat(lights.Load3(li*64+48)), asuint(lights.Load(li*64+60)));
-    const float3 _e17 = light_point(l_2, u1_2, u2_2);
-    c_5.y = _e17;
-    float3 _e20 = c_5.y;
-    float _e23 = asfloat(r2_2.Load(li*4));
-    const float _e25 = connection_cosine(x_11, _e20, n_7, ng_1, (s * _e23));
-    c_5.cos_x = _e25;
-    float _e27 = c_5.cos_x;
-    if (!((_e27 <= 0.0))) {
-        float3 _e36 = c_5.y;
-        const bool _e37 = occluded((x_11 + (ng_1 * eps)), _e36);
-        local_10 = _e37;
+    const float3 _e18 = light_point(l_2, u1_2, u2_2);
+    c_5.y = _e18;
+    float3 _e21 = c_5.y;
+    float _e24 = asfloat(r2_2.Load(li*4));
+    const float _e26 = connection_cosine(x_11, _e21, n_7, ng_1, (s * _e24));
+    c_5.cos_x = _e26;
+    float _e28 = c_5.cos_x;
+    if (!((_e28 <= 0.0))) {
+        if (trace) {
+            float3 _e39 = c_5.y;
+            const bool _e40 = occluded((x_11 + (ng_1 * eps)), _e39);
+            local_11 = _e40;
+        } else {
+            local_11 = false;
+        }
+        bool _e42 = local_11;
+        local_10 = _e42;
     } else {
         local_10 = true;
     }
-    bool _e39 = local_10;
-    if (_e39) {
-        Connection _e40 = c_5;
-        const Connection connection = _e40;
+    bool _e44 = local_10;
+    if (_e44) {
+        Connection _e45 = c_5;
+        const Connection connection = _e45;
         return connection;
     }
-    float3 _e42 = c_5.y;
-    float3 v_6 = (x_11 - _e42);
+    float3 _e47 = c_5.y;
+    float3 v_6 = (x_11 - _e47);
     float d2_8 = dot(v_6, v_6);
-    const float3 _e49 = light_intensity(l_2, (v_6 / (sqrt(d2_8)).xxx));
-    float _e51 = c_5.cos_x;
-    float _e54 = asfloat(rt2_2.Load(li*4));
-    const float _e56 = connection_factor(_e51, d2_8, (s * _e54), w_res);
-    c_5.e = (_e49 * _e56);
-    Connection _e58 = c_5;
-    const Connection connection_1 = _e58;
+    const float3 _e54 = light_intensity(l_2, (v_6 / (sqrt(d2_8)).xxx));
+    float _e56 = c_5.cos_x;
+    float _e59 = asfloat(rt2_2.Load(li*4));
+    const float _e61 = connection_factor(_e56, d2_8, (s * _e59), w_res);
+    c_5.e = (_e54 * _e61);
+    Connection _e63 = c_5;
+    const Connection connection_1 = _e63;
     return connection_1;
 }
 
@@ -930,17 +937,24 @@ float4 surface_at(int2 texel)
     return ((p_2.w > 0.0) ? float4(p_2.xyz, 1.0) : (0.0).xxxx);
 }
 
-Shaded shade_pick(uint li_1, float3 x_12, float3 n_8, float3 r_7, float4 rl_6, Material m_1, float w_4, float u1_3, float u2_3, float eps_1)
+Shaded shade_pick_traced(uint li_1, float3 x_12, float3 n_8, float3 r_7, float4 rl_6, Material m_1, float w_4, float u1_3, float u2_3, float eps_1, bool trace_1)
 {
     Shaded s_1 = (Shaded)0;
 
-    const Connection _e12 = connect(li_1, x_12, n_8, n_8, 1.0, w_4, u1_3, u2_3, eps_1);
-    s_1.e = _e12.e;
+    const Connection _e13 = connect_traced(li_1, x_12, n_8, n_8, 1.0, w_4, u1_3, u2_3, eps_1, trace_1);
+    s_1.e = _e13.e;
     s_1.diffuse = (0.0).xxx;
     s_1.specular = (0.0).xxx;
-    Shaded _e21 = s_1;
-    const Shaded shaded = _e21;
+    Shaded _e22 = s_1;
+    const Shaded shaded = _e22;
     return shaded;
+}
+
+Shaded shade_pick(uint li_2, float3 x_13, float3 n_9, float3 r_8, float4 rl_7, Material m_2, float w_5, float u1_4, float u2_4, float eps_2)
+{
+    const Shaded _e11 = shade_pick_traced(li_2, x_13, n_9, r_8, rl_7, m_2, w_5, u1_4, u2_4, eps_2, true);
+    const Shaded shaded_1 = _e11;
+    return shaded_1;
 }
 
 Shaded ConstructShaded(float3 arg0, float3 arg1, float3 arg2) {
@@ -953,8 +967,8 @@ Shaded ConstructShaded(float3 arg0, float3 arg1, float3 arg2) {
 
 Shaded add(Shaded a_9, Shaded b_6)
 {
-    const Shaded shaded_1 = ConstructShaded((a_9.e + b_6.e), (a_9.diffuse + b_6.diffuse), (a_9.specular + b_6.specular));
-    return shaded_1;
+    const Shaded shaded_2 = ConstructShaded((a_9.e + b_6.e), (a_9.diffuse + b_6.diffuse), (a_9.specular + b_6.specular));
+    return shaded_2;
 }
 
 [numthreads(8, 8, 1)]
@@ -995,14 +1009,14 @@ void main(uint3 gid : SV_DispatchThreadID)
         out_tex[texel_1] = (0.0).xxxx;
         return;
     }
-    float3 x_13 = _e21.xyz;
-    float3 n_10 = (nn / (sqrt(len2_)).xxx);
-    r = n_10;
+    float3 x_14 = _e21.xyz;
+    float3 n_11 = (nn / (sqrt(len2_)).xxx);
+    r = n_11;
     float4 _e53 = lobe;
     const float4 _e54 = range_lobe(_e53);
     float _e57 = view.shadow_offset;
     float3 _e60 = view.eye;
-    float eps_2 = (_e57 * length((_e60 - x_13)));
+    float eps_3 = (_e57 * length((_e60 - x_14)));
     uint _e66 = view.seed;
     uint _e70 = view.width;
     uint _e76 = view.frame;
@@ -1010,7 +1024,7 @@ void main(uint3 gid : SV_DispatchThreadID)
     const uint _e78 = pick_stream(_e77);
     h = _e78;
     float3 _e88 = r;
-    const Picks _e89 = bsh_collect(x_13, _e88, _e54, _e77);
+    const Picks _e89 = bsh_collect(x_14, _e88, _e54, _e77);
     const float _e92 = reservoir_weight(_e89.n, K);
     uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
     bool loop_init_1 = true;
@@ -1042,7 +1056,7 @@ void main(uint3 gid : SV_DispatchThreadID)
             Material _e111 = m;
             uint _e112 = h;
             const float _e113 = xi_from_bits(_e112);
-            const Shaded _e114 = shade_pick(_e89.light[min(uint(_e108), 7u)], x_13, n_10, _e110, _e54, _e111, _e92, _e103, _e113, eps_2);
+            const Shaded _e114 = shade_pick(_e89.light[min(uint(_e108), 7u)], x_14, n_11, _e110, _e54, _e111, _e92, _e103, _e113, eps_3);
             const Shaded _e115 = add(_e106, _e114);
             t = _e115;
         }

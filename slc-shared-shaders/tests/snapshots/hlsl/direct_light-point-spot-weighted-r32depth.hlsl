@@ -264,10 +264,10 @@ float connection_cosine(float3 x_2, float3 y, float3 n, float3 ng, float r2_1)
     if (_e16) {
         return 0.0;
     }
-    float3 w_5 = (v_4 / (sqrt(d2_7)).xxx);
-    float cos_x_1 = -(dot(n, w_5));
+    float3 w_6 = (v_4 / (sqrt(d2_7)).xxx);
+    float cos_x_1 = -(dot(n, w_6));
     if (!((cos_x_1 <= 0.0))) {
-        local_4 = (dot(ng, w_5) >= 0.0);
+        local_4 = (dot(ng, w_6) >= 0.0);
     } else {
         local_4 = true;
     }
@@ -702,12 +702,12 @@ GeoHit trace(float3 o_2, float3 d_4, float t_min_1, float t_max_2, bool any_hit)
         if (all(loop_bound == uint2(0u, 0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         uint _e21 = node_2;
-        GpuGeoNode n_8 = ConstructGpuGeoNode(asfloat(geo_nodes.Load3(_e21*32+0)), asuint(geo_nodes.Load(_e21*32+12)), asfloat(geo_nodes.Load3(_e21*32+16)), asuint(geo_nodes.Load(_e21*32+28)));
+        GpuGeoNode n_9 = ConstructGpuGeoNode(asfloat(geo_nodes.Load3(_e21*32+0)), asuint(geo_nodes.Load(_e21*32+12)), asfloat(geo_nodes.Load3(_e21*32+16)), asuint(geo_nodes.Load(_e21*32+28)));
         float _e27 = hit.t;
-        const float _e28 = ray_aabb(o_2, _e14, n_8.bmin, n_8.bmax, _e27);
+        const float _e28 = ray_aabb(o_2, _e14, n_9.bmin, n_9.bmax, _e27);
         if ((_e28 >= 0.0)) {
-            if ((n_8.count > 0u)) {
-                i = n_8.first;
+            if ((n_9.count > 0u)) {
+                i = n_9.first;
                 uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
                 bool loop_init = true;
                 while(true) {
@@ -719,7 +719,7 @@ GeoHit trace(float3 o_2, float3 d_4, float t_min_1, float t_max_2, bool any_hit)
                     }
                     loop_init = false;
                     uint _e36 = i;
-                    if ((_e36 < (n_8.first + n_8.count))) {
+                    if ((_e36 < (n_9.first + n_9.count))) {
                     } else {
                         break;
                     }
@@ -744,11 +744,11 @@ GeoHit trace(float3 o_2, float3 d_4, float t_min_1, float t_max_2, bool any_hit)
                 uint _e60 = sp;
                 if ((_e60 < 64u)) {
                     uint _e63 = sp;
-                    stack[min(uint(_e63), 63u)] = (n_8.first + 1u);
+                    stack[min(uint(_e63), 63u)] = (n_9.first + 1u);
                     uint _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_2 = n_8.first;
+                node_2 = n_9.first;
                 continue;
             }
         }
@@ -907,43 +907,50 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
     return ret;
 }
 
-Connection connect(uint li, float3 x_7, float3 n_4, float3 ng_1, float s, float w_res, float u1_1, float u2_1, float eps)
+Connection connect_traced(uint li, float3 x_7, float3 n_4, float3 ng_1, float s, float w_res, float u1_1, float u2_1, float eps, bool trace_1)
 {
     Connection c_2 = (Connection)0;
     bool local_15 = (bool)0;
+    bool local_16 = (bool)0;
 
     c_2.e = (0.0).xxx;
     GpuLight l_2 = ConstructGpuLight(asfloat(lights.Load3(li*64+0)), asuint(lights.Load(li*64+12)), asfloat(lights.Load3(li*64+16)), asfloat(lights.Load(li*64+28)), asfloat(lights.Load3(li*64+32)), asfloat(lights.Load(li*64+44)), asfloat(lights.Load3(li*64+48)), asuint(lights.Load(li*64+60)));
-    const float3 _e17 = light_point(l_2, u1_1, u2_1);
-    c_2.y = _e17;
-    float3 _e20 = c_2.y;
-    float _e23 = asfloat(r2_3.Load(li*4));
-    const float _e25 = connection_cosine(x_7, _e20, n_4, ng_1, (s * _e23));
-    c_2.cos_x = _e25;
-    float _e27 = c_2.cos_x;
-    if (!((_e27 <= 0.0))) {
-        float3 _e36 = c_2.y;
-        const bool _e37 = occluded((x_7 + (ng_1 * eps)), _e36);
-        local_15 = _e37;
+    const float3 _e18 = light_point(l_2, u1_1, u2_1);
+    c_2.y = _e18;
+    float3 _e21 = c_2.y;
+    float _e24 = asfloat(r2_3.Load(li*4));
+    const float _e26 = connection_cosine(x_7, _e21, n_4, ng_1, (s * _e24));
+    c_2.cos_x = _e26;
+    float _e28 = c_2.cos_x;
+    if (!((_e28 <= 0.0))) {
+        if (trace_1) {
+            float3 _e39 = c_2.y;
+            const bool _e40 = occluded((x_7 + (ng_1 * eps)), _e39);
+            local_16 = _e40;
+        } else {
+            local_16 = false;
+        }
+        bool _e42 = local_16;
+        local_15 = _e42;
     } else {
         local_15 = true;
     }
-    bool _e39 = local_15;
-    if (_e39) {
-        Connection _e40 = c_2;
-        const Connection connection = _e40;
+    bool _e44 = local_15;
+    if (_e44) {
+        Connection _e45 = c_2;
+        const Connection connection = _e45;
         return connection;
     }
-    float3 _e42 = c_2.y;
-    float3 v_11 = (x_7 - _e42);
+    float3 _e47 = c_2.y;
+    float3 v_11 = (x_7 - _e47);
     float d2_10 = dot(v_11, v_11);
-    const float3 _e49 = light_intensity(l_2, (v_11 / (sqrt(d2_10)).xxx));
-    float _e51 = c_2.cos_x;
-    float _e54 = asfloat(rt2_4.Load(li*4));
-    const float _e56 = connection_factor(_e51, d2_10, (s * _e54), w_res);
-    c_2.e = (_e49 * _e56);
-    Connection _e58 = c_2;
-    const Connection connection_1 = _e58;
+    const float3 _e54 = light_intensity(l_2, (v_11 / (sqrt(d2_10)).xxx));
+    float _e56 = c_2.cos_x;
+    float _e59 = asfloat(rt2_4.Load(li*4));
+    const float _e61 = connection_factor(_e56, d2_10, (s * _e59), w_res);
+    c_2.e = (_e54 * _e61);
+    Connection _e63 = c_2;
+    const Connection connection_1 = _e63;
     return connection_1;
 }
 
@@ -1010,8 +1017,8 @@ WeightedPicks bsh_weighted_collect(float3 x_10, float3 n_6, float3 r_10, float4 
             uint _e21 = picks.n;
             picks.n = (_e21 + 1u);
             uint _e25 = b_4;
-            uint li_4 = asuint(bsh_nodes.Load(24+_e25*32));
-            const float _e29 = light_weight(li_4, x_10, n_6, r_10, lobe_8, rl_7);
+            uint li_5 = asuint(bsh_nodes.Load(24+_e25*32));
+            const float _e29 = light_weight(li_5, x_10, n_6, r_10, lobe_8, rl_7);
             if ((_e29 > 0.0)) {
                 float _e33 = picks.w_sum;
                 picks.w_sum = (_e33 + _e29);
@@ -1041,7 +1048,7 @@ WeightedPicks bsh_weighted_collect(float3 x_10, float3 n_6, float3 r_10, float4 
                         const bool _e46 = weighted_replace(_e29, _e43, _e45);
                         if (_e46) {
                             uint _e48 = s_1;
-                            picks.light[min(uint(_e48), 7u)] = li_4;
+                            picks.light[min(uint(_e48), 7u)] = li_5;
                             uint _e51 = s_1;
                             picks.w[min(uint(_e51), 7u)] = _e29;
                         }
@@ -1059,29 +1066,29 @@ WeightedPicks bsh_weighted_collect(float3 x_10, float3 n_6, float3 r_10, float4 
 
 float4 unproject_pixel(float4 c0_, float4 c1_, float4 c2_, float4 c3_, float px, float py, float width, float height, float depth)
 {
-    bool local_16 = (bool)0;
     bool local_17 = (bool)0;
+    bool local_18 = (bool)0;
 
     if ((depth > 0.0)) {
-        local_16 = (depth < 1.0);
-    } else {
-        local_16 = false;
-    }
-    bool _e16 = local_16;
-    if (!(_e16)) {
-        return float4(0.0, 0.0, 0.0, 0.0);
-    }
-    float x_12 = ((((px + 0.5) / width) * 2.0) - 1.0);
-    float y_1 = (1.0 - (((py + 0.5) / height) * 2.0));
-    float4 p_8 = ((((c0_ * x_12) + (c1_ * y_1)) + (c2_ * depth)) + c3_);
-    float3 q_1 = float3((p_8.x / p_8.w), (p_8.y / p_8.w), (p_8.z / p_8.w));
-    if ((abs(p_8.w) > 0.0)) {
-        const bool _e59 = finite3_(q_1);
-        local_17 = _e59;
+        local_17 = (depth < 1.0);
     } else {
         local_17 = false;
     }
-    bool _e61 = local_17;
+    bool _e16 = local_17;
+    if (!(_e16)) {
+        return float4(0.0, 0.0, 0.0, 0.0);
+    }
+    float x_13 = ((((px + 0.5) / width) * 2.0) - 1.0);
+    float y_1 = (1.0 - (((py + 0.5) / height) * 2.0));
+    float4 p_8 = ((((c0_ * x_13) + (c1_ * y_1)) + (c2_ * depth)) + c3_);
+    float3 q_1 = float3((p_8.x / p_8.w), (p_8.y / p_8.w), (p_8.z / p_8.w));
+    if ((abs(p_8.w) > 0.0)) {
+        const bool _e59 = finite3_(q_1);
+        local_18 = _e59;
+    } else {
+        local_18 = false;
+    }
+    bool _e61 = local_18;
     if (_e61) {
         return float4(q_1.x, q_1.y, q_1.z, 1.0);
     }
@@ -1102,17 +1109,24 @@ float4 surface_at(int2 texel)
     return _e29;
 }
 
-Shaded shade_pick(uint li_3, float3 x_11, float3 n_7, float3 r_11, float4 rl_8, Material m_1, float w_4, float u1_2, float u2_2, float eps_1)
+Shaded shade_pick_traced(uint li_3, float3 x_11, float3 n_7, float3 r_11, float4 rl_8, Material m_1, float w_4, float u1_2, float u2_2, float eps_1, bool trace_2)
 {
     Shaded s_2 = (Shaded)0;
 
-    const Connection _e12 = connect(li_3, x_11, n_7, n_7, 1.0, w_4, u1_2, u2_2, eps_1);
-    s_2.e = _e12.e;
+    const Connection _e13 = connect_traced(li_3, x_11, n_7, n_7, 1.0, w_4, u1_2, u2_2, eps_1, trace_2);
+    s_2.e = _e13.e;
     s_2.diffuse = (0.0).xxx;
     s_2.specular = (0.0).xxx;
-    Shaded _e21 = s_2;
-    const Shaded shaded = _e21;
+    Shaded _e22 = s_2;
+    const Shaded shaded = _e22;
     return shaded;
+}
+
+Shaded shade_pick(uint li_4, float3 x_12, float3 n_8, float3 r_12, float4 rl_9, Material m_2, float w_5, float u1_3, float u2_3, float eps_2)
+{
+    const Shaded _e11 = shade_pick_traced(li_4, x_12, n_8, r_12, rl_9, m_2, w_5, u1_3, u2_3, eps_2, true);
+    const Shaded shaded_1 = _e11;
+    return shaded_1;
 }
 
 Shaded ConstructShaded(float3 arg0, float3 arg1, float3 arg2) {
@@ -1125,8 +1139,8 @@ Shaded ConstructShaded(float3 arg0, float3 arg1, float3 arg2) {
 
 Shaded add(Shaded a_6, Shaded b_5)
 {
-    const Shaded shaded_1 = ConstructShaded((a_6.e + b_5.e), (a_6.diffuse + b_5.diffuse), (a_6.specular + b_5.specular));
-    return shaded_1;
+    const Shaded shaded_2 = ConstructShaded((a_6.e + b_5.e), (a_6.diffuse + b_5.diffuse), (a_6.specular + b_5.specular));
+    return shaded_2;
 }
 
 [numthreads(8, 8, 1)]
@@ -1170,14 +1184,14 @@ void main(uint3 gid : SV_DispatchThreadID)
         out_tex[texel_1] = (0.0).xxxx;
         return;
     }
-    float3 x_13 = _e21.xyz;
-    float3 n_9 = (nn / (sqrt(len2_)).xxx);
-    r = n_9;
+    float3 x_14 = _e21.xyz;
+    float3 n_10 = (nn / (sqrt(len2_)).xxx);
+    r = n_10;
     float4 _e53 = lobe;
     const float4 _e54 = range_lobe(_e53);
     float _e57 = view.shadow_offset;
     float3 _e60 = view.eye;
-    float eps_2 = (_e57 * length((_e60 - x_13)));
+    float eps_3 = (_e57 * length((_e60 - x_14)));
     uint _e66 = view.seed;
     uint _e70 = view.width;
     uint _e76 = view.frame;
@@ -1186,7 +1200,7 @@ void main(uint3 gid : SV_DispatchThreadID)
     h = _e78;
     float3 _e88 = r;
     float4 _e89 = lobe;
-    const WeightedPicks _e90 = bsh_weighted_collect(x_13, n_9, _e88, _e89, _e54, _e77);
+    const WeightedPicks _e90 = bsh_weighted_collect(x_14, n_10, _e88, _e89, _e54, _e77);
     if ((_e90.w_sum > 0.0)) {
         uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
         bool loop_init_3 = true;
@@ -1215,9 +1229,9 @@ void main(uint3 gid : SV_DispatchThreadID)
                 uint _e105 = h;
                 const float _e106 = xi_from_bits(_e105);
                 uint _e108 = k;
-                uint li_5 = _e90.light[min(uint(_e108), 7u)];
+                uint li_6 = _e90.light[min(uint(_e108), 7u)];
                 copies = 1u;
-                uint _e115 = asuint(lights.Load(12+li_5*64));
+                uint _e115 = asuint(lights.Load(12+li_6*64));
                 if ((_e115 != LIGHT_TRIANGLE)) {
                     j = 0u;
                     uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
@@ -1240,7 +1254,7 @@ void main(uint3 gid : SV_DispatchThreadID)
                             uint _e124 = k;
                             if ((_e123 != _e124)) {
                                 uint _e129 = j;
-                                local_2 = (_e90.light[min(uint(_e129), 7u)] == li_5);
+                                local_2 = (_e90.light[min(uint(_e129), 7u)] == li_6);
                             } else {
                                 local_2 = false;
                             }
@@ -1266,7 +1280,7 @@ void main(uint3 gid : SV_DispatchThreadID)
                     uint _e152 = k;
                     const float _e155 = weighted_pick_weight(_e90.w_sum, _e90.w[min(uint(_e152), 7u)], K);
                     uint _e156 = copies;
-                    const Shaded _e159 = shade_pick(li_5, x_13, n_9, _e148, _e54, _e149, (_e155 * float(_e156)), _e102, _e106, eps_2);
+                    const Shaded _e159 = shade_pick(li_6, x_14, n_10, _e148, _e54, _e149, (_e155 * float(_e156)), _e102, _e106, eps_3);
                     const Shaded _e160 = add(_e147, _e159);
                     t = _e160;
                 }

@@ -267,10 +267,10 @@ float connection_cosine(float3 x_2, float3 y, float3 n, float3 ng, float r2_1)
     if (_e16) {
         return 0.0;
     }
-    float3 w_6 = (v_6 / (sqrt(d2_7)).xxx);
-    float cos_x_1 = -(dot(n, w_6));
+    float3 w_7 = (v_6 / (sqrt(d2_7)).xxx);
+    float cos_x_1 = -(dot(n, w_7));
     if (!((cos_x_1 <= 0.0))) {
-        local_4 = (dot(ng, w_6) >= 0.0);
+        local_4 = (dot(ng, w_7) >= 0.0);
     } else {
         local_4 = true;
     }
@@ -704,8 +704,8 @@ float3 triangle_normal(float3 a_4, float3 b_3, float3 c_3)
 {
     bool local_13 = (bool)0;
 
-    float3 n_11 = cross((b_3 - a_4), (c_3 - a_4));
-    float l2_ = dot(n_11, n_11);
+    float3 n_12 = cross((b_3 - a_4), (c_3 - a_4));
+    float l2_ = dot(n_12, n_12);
     if (!(!((l2_ > 0.0)))) {
         local_13 = !((l2_ < 3e38));
     } else {
@@ -715,7 +715,7 @@ float3 triangle_normal(float3 a_4, float3 b_3, float3 c_3)
     if (_e17) {
         return float3(0.0, 0.0, 0.0);
     }
-    return (n_11 / (sqrt(l2_)).xxx);
+    return (n_12 / (sqrt(l2_)).xxx);
 }
 
 float ray_triangle(float3 o_1, float3 d_3, float3 a_5, float3 b_4, float3 c_4, float t_min, float t_max_1)
@@ -838,12 +838,12 @@ GeoHit trace(float3 o_2, float3 d_4, float t_min_1, float t_max_2, bool any_hit)
         if (all(loop_bound == uint2(0u, 0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         uint _e21 = node_2;
-        GpuGeoNode n_12 = ConstructGpuGeoNode(asfloat(geo_nodes.Load3(_e21*32+0)), asuint(geo_nodes.Load(_e21*32+12)), asfloat(geo_nodes.Load3(_e21*32+16)), asuint(geo_nodes.Load(_e21*32+28)));
+        GpuGeoNode n_13 = ConstructGpuGeoNode(asfloat(geo_nodes.Load3(_e21*32+0)), asuint(geo_nodes.Load(_e21*32+12)), asfloat(geo_nodes.Load3(_e21*32+16)), asuint(geo_nodes.Load(_e21*32+28)));
         float _e27 = hit.t;
-        const float _e28 = ray_aabb(o_2, _e14, n_12.bmin, n_12.bmax, _e27);
+        const float _e28 = ray_aabb(o_2, _e14, n_13.bmin, n_13.bmax, _e27);
         if ((_e28 >= 0.0)) {
-            if ((n_12.count > 0u)) {
-                i = n_12.first;
+            if ((n_13.count > 0u)) {
+                i = n_13.first;
                 uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
                 bool loop_init = true;
                 while(true) {
@@ -855,7 +855,7 @@ GeoHit trace(float3 o_2, float3 d_4, float t_min_1, float t_max_2, bool any_hit)
                     }
                     loop_init = false;
                     uint _e36 = i;
-                    if ((_e36 < (n_12.first + n_12.count))) {
+                    if ((_e36 < (n_13.first + n_13.count))) {
                     } else {
                         break;
                     }
@@ -880,11 +880,11 @@ GeoHit trace(float3 o_2, float3 d_4, float t_min_1, float t_max_2, bool any_hit)
                 uint _e60 = sp;
                 if ((_e60 < 64u)) {
                     uint _e63 = sp;
-                    stack[min(uint(_e63), 63u)] = (n_12.first + 1u);
+                    stack[min(uint(_e63), 63u)] = (n_13.first + 1u);
                     uint _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_2 = n_12.first;
+                node_2 = n_13.first;
                 continue;
             }
         }
@@ -1043,43 +1043,50 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
     return ret;
 }
 
-Connection connect(uint li, float3 x_7, float3 n_7, float3 ng_1, float s, float w_res, float u1_2, float u2_2, float eps)
+Connection connect_traced(uint li, float3 x_7, float3 n_7, float3 ng_1, float s, float w_res, float u1_2, float u2_2, float eps, bool trace_1)
 {
     Connection c_5 = (Connection)0;
     bool local_19 = (bool)0;
+    bool local_20 = (bool)0;
 
     c_5.e = (0.0).xxx;
     GpuLight l_4 = ConstructGpuLight(asfloat(lights.Load3(li*64+0)), asuint(lights.Load(li*64+12)), asfloat(lights.Load3(li*64+16)), asfloat(lights.Load(li*64+28)), asfloat(lights.Load3(li*64+32)), asfloat(lights.Load(li*64+44)), asfloat(lights.Load3(li*64+48)), asuint(lights.Load(li*64+60)));
-    const float3 _e17 = light_point(l_4, u1_2, u2_2);
-    c_5.y = _e17;
-    float3 _e20 = c_5.y;
-    float _e23 = asfloat(r2_3.Load(li*4));
-    const float _e25 = connection_cosine(x_7, _e20, n_7, ng_1, (s * _e23));
-    c_5.cos_x = _e25;
-    float _e27 = c_5.cos_x;
-    if (!((_e27 <= 0.0))) {
-        float3 _e36 = c_5.y;
-        const bool _e37 = occluded((x_7 + (ng_1 * eps)), _e36);
-        local_19 = _e37;
+    const float3 _e18 = light_point(l_4, u1_2, u2_2);
+    c_5.y = _e18;
+    float3 _e21 = c_5.y;
+    float _e24 = asfloat(r2_3.Load(li*4));
+    const float _e26 = connection_cosine(x_7, _e21, n_7, ng_1, (s * _e24));
+    c_5.cos_x = _e26;
+    float _e28 = c_5.cos_x;
+    if (!((_e28 <= 0.0))) {
+        if (trace_1) {
+            float3 _e39 = c_5.y;
+            const bool _e40 = occluded((x_7 + (ng_1 * eps)), _e39);
+            local_20 = _e40;
+        } else {
+            local_20 = false;
+        }
+        bool _e42 = local_20;
+        local_19 = _e42;
     } else {
         local_19 = true;
     }
-    bool _e39 = local_19;
-    if (_e39) {
-        Connection _e40 = c_5;
-        const Connection connection = _e40;
+    bool _e44 = local_19;
+    if (_e44) {
+        Connection _e45 = c_5;
+        const Connection connection = _e45;
         return connection;
     }
-    float3 _e42 = c_5.y;
-    float3 v_13 = (x_7 - _e42);
+    float3 _e47 = c_5.y;
+    float3 v_13 = (x_7 - _e47);
     float d2_10 = dot(v_13, v_13);
-    const float3 _e49 = light_intensity(l_4, (v_13 / (sqrt(d2_10)).xxx));
-    float _e51 = c_5.cos_x;
-    float _e54 = asfloat(rt2_4.Load(li*4));
-    const float _e56 = connection_factor(_e51, d2_10, (s * _e54), w_res);
-    c_5.e = (_e49 * _e56);
-    Connection _e58 = c_5;
-    const Connection connection_1 = _e58;
+    const float3 _e54 = light_intensity(l_4, (v_13 / (sqrt(d2_10)).xxx));
+    float _e56 = c_5.cos_x;
+    float _e59 = asfloat(rt2_4.Load(li*4));
+    const float _e61 = connection_factor(_e56, d2_10, (s * _e59), w_res);
+    c_5.e = (_e54 * _e61);
+    Connection _e63 = c_5;
+    const Connection connection_1 = _e63;
     return connection_1;
 }
 
@@ -1146,8 +1153,8 @@ WeightedPicks bsh_weighted_collect(float3 x_10, float3 n_9, float3 r_10, float4 
             uint _e21 = picks.n;
             picks.n = (_e21 + 1u);
             uint _e25 = b_6;
-            uint li_4 = asuint(bsh_nodes.Load(24+_e25*32));
-            const float _e29 = light_weight(li_4, x_10, n_9, r_10, lobe_8, rl_7);
+            uint li_5 = asuint(bsh_nodes.Load(24+_e25*32));
+            const float _e29 = light_weight(li_5, x_10, n_9, r_10, lobe_8, rl_7);
             if ((_e29 > 0.0)) {
                 float _e33 = picks.w_sum;
                 picks.w_sum = (_e33 + _e29);
@@ -1177,7 +1184,7 @@ WeightedPicks bsh_weighted_collect(float3 x_10, float3 n_9, float3 r_10, float4 
                         const bool _e46 = weighted_replace(_e29, _e43, _e45);
                         if (_e46) {
                             uint _e48 = s_1;
-                            picks.light[min(uint(_e48), 7u)] = li_4;
+                            picks.light[min(uint(_e48), 7u)] = li_5;
                             uint _e51 = s_1;
                             picks.w[min(uint(_e51), 7u)] = _e29;
                         }
@@ -1199,30 +1206,37 @@ float4 surface_at(int2 texel)
     return ((p_8.w > 0.0) ? float4(p_8.xyz, 1.0) : (0.0).xxxx);
 }
 
-Shaded shade_pick(uint li_3, float3 x_11, float3 n_10, float3 r_11, float4 rl_8, Material m_1, float w_5, float u1_3, float u2_3, float eps_1)
+Shaded shade_pick_traced(uint li_3, float3 x_11, float3 n_10, float3 r_11, float4 rl_8, Material m_1, float w_5, float u1_3, float u2_3, float eps_1, bool trace_2)
 {
     Shaded s_2 = (Shaded)0;
 
-    const float _e11 = light_range_scale(li_3, x_11, r_11, rl_8);
-    const Connection _e12 = connect(li_3, x_11, n_10, n_10, _e11, w_5, u1_3, u2_3, eps_1);
-    s_2.e = _e12.e;
+    const float _e12 = light_range_scale(li_3, x_11, r_11, rl_8);
+    const Connection _e13 = connect_traced(li_3, x_11, n_10, n_10, _e12, w_5, u1_3, u2_3, eps_1, trace_2);
+    s_2.e = _e13.e;
     s_2.diffuse = (0.0).xxx;
     s_2.specular = (0.0).xxx;
-    if ((_e12.cos_x > 0.0)) {
-        float3 l_5 = normalize((_e12.y - x_11));
-        float3 _e32 = view.f0_d;
-        float _e35 = view.f90_d;
-        const float _e37 = half_cosine(m_1.v, l_5);
-        const float3 _e38 = diffuse_brdf(m_1.base, m_1.metallic, _e32, _e35, _e37);
-        s_2.diffuse = (_e38 * _e12.e);
-        float3 _e46 = view.f0_d;
-        float _e49 = view.f90_d;
-        const float3 _e52 = specular_brdf(m_1.base, m_1.metallic, _e46, _e49, m_1.alpha, n_10, m_1.v, l_5);
-        s_2.specular = (_e52 * _e12.e);
+    if ((_e13.cos_x > 0.0)) {
+        float3 l_5 = normalize((_e13.y - x_11));
+        float3 _e33 = view.f0_d;
+        float _e36 = view.f90_d;
+        const float _e38 = half_cosine(m_1.v, l_5);
+        const float3 _e39 = diffuse_brdf(m_1.base, m_1.metallic, _e33, _e36, _e38);
+        s_2.diffuse = (_e39 * _e13.e);
+        float3 _e47 = view.f0_d;
+        float _e50 = view.f90_d;
+        const float3 _e53 = specular_brdf(m_1.base, m_1.metallic, _e47, _e50, m_1.alpha, n_10, m_1.v, l_5);
+        s_2.specular = (_e53 * _e13.e);
     }
-    Shaded _e55 = s_2;
-    const Shaded shaded = _e55;
+    Shaded _e56 = s_2;
+    const Shaded shaded = _e56;
     return shaded;
+}
+
+Shaded shade_pick(uint li_4, float3 x_12, float3 n_11, float3 r_12, float4 rl_9, Material m_2, float w_6, float u1_4, float u2_4, float eps_2)
+{
+    const Shaded _e11 = shade_pick_traced(li_4, x_12, n_11, r_12, rl_9, m_2, w_6, u1_4, u2_4, eps_2, true);
+    const Shaded shaded_1 = _e11;
+    return shaded_1;
 }
 
 Shaded ConstructShaded(float3 arg0, float3 arg1, float3 arg2) {
@@ -1235,8 +1249,8 @@ Shaded ConstructShaded(float3 arg0, float3 arg1, float3 arg2) {
 
 Shaded add(Shaded a_8, Shaded b_7)
 {
-    const Shaded shaded_1 = ConstructShaded((a_8.e + b_7.e), (a_8.diffuse + b_7.diffuse), (a_8.specular + b_7.specular));
-    return shaded_1;
+    const Shaded shaded_2 = ConstructShaded((a_8.e + b_7.e), (a_8.diffuse + b_7.diffuse), (a_8.specular + b_7.specular));
+    return shaded_2;
 }
 
 Material ConstructMaterial(float3 arg0, float arg1, float arg2, float3 arg3, float arg4, float arg5) {
@@ -1292,30 +1306,30 @@ void main(uint3 gid : SV_DispatchThreadID)
         specular_tex[texel_1] = (0.0).xxxx;
         return;
     }
-    float3 x_12 = _e21.xyz;
-    float3 n_13 = (nn / (sqrt(len2_1)).xxx);
-    r = n_13;
+    float3 x_13 = _e21.xyz;
+    float3 n_14 = (nn / (sqrt(len2_1)).xxx);
+    r = n_14;
     float4 mr = metal_rough_tex.Load(int3(texel_1, int(0)));
     float4 _e61 = base_color_tex.Load(int3(texel_1, int(0)));
     const float _e67 = ggx_alpha(saturate(mr.y));
     float3 _e70 = view.eye;
-    m = ConstructMaterial(_e61.xyz, saturate(mr.z), _e67, normalize((_e70 - x_12)), mr.y, 0.0);
+    m = ConstructMaterial(_e61.xyz, saturate(mr.z), _e67, normalize((_e70 - x_13)), mr.y, 0.0);
     float3 _e77 = m.base;
     float _e79 = m.metallic;
     float3 _e82 = view.f0_d;
     float _e85 = view.f90_d;
     float _e87 = m.alpha;
     float3 _e89 = m.v;
-    const float4 _e91 = receiver_lobe(_e77, _e79, _e82, _e85, _e87, dot(n_13, _e89));
+    const float4 _e91 = receiver_lobe(_e77, _e79, _e82, _e85, _e87, dot(n_14, _e89));
     lobe = _e91;
     float3 _e93 = m.v;
-    const float3 _e94 = mirror_dir(n_13, _e93);
+    const float3 _e94 = mirror_dir(n_14, _e93);
     r = _e94;
     float4 _e95 = lobe;
     const float4 _e96 = range_lobe(_e95);
     float _e99 = view.shadow_offset;
     float3 _e102 = view.eye;
-    float eps_2 = (_e99 * length((_e102 - x_12)));
+    float eps_3 = (_e99 * length((_e102 - x_13)));
     uint _e108 = view.seed;
     uint _e112 = view.width;
     uint _e118 = view.frame;
@@ -1324,7 +1338,7 @@ void main(uint3 gid : SV_DispatchThreadID)
     h = _e120;
     float3 _e130 = r;
     float4 _e131 = lobe;
-    const WeightedPicks _e132 = bsh_weighted_collect(x_12, n_13, _e130, _e131, _e96, _e119);
+    const WeightedPicks _e132 = bsh_weighted_collect(x_13, n_14, _e130, _e131, _e96, _e119);
     if ((_e132.w_sum > 0.0)) {
         uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
         bool loop_init_3 = true;
@@ -1353,9 +1367,9 @@ void main(uint3 gid : SV_DispatchThreadID)
                 uint _e147 = h;
                 const float _e148 = xi_from_bits(_e147);
                 uint _e150 = k;
-                uint li_5 = _e132.light[min(uint(_e150), 7u)];
+                uint li_6 = _e132.light[min(uint(_e150), 7u)];
                 copies = 1u;
-                uint _e157 = asuint(lights.Load(12+li_5*64));
+                uint _e157 = asuint(lights.Load(12+li_6*64));
                 if ((_e157 != LIGHT_TRIANGLE)) {
                     j = 0u;
                     uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
@@ -1378,7 +1392,7 @@ void main(uint3 gid : SV_DispatchThreadID)
                             uint _e166 = k;
                             if ((_e165 != _e166)) {
                                 uint _e171 = j;
-                                local_2 = (_e132.light[min(uint(_e171), 7u)] == li_5);
+                                local_2 = (_e132.light[min(uint(_e171), 7u)] == li_6);
                             } else {
                                 local_2 = false;
                             }
@@ -1404,7 +1418,7 @@ void main(uint3 gid : SV_DispatchThreadID)
                     uint _e194 = k;
                     const float _e197 = weighted_pick_weight(_e132.w_sum, _e132.w[min(uint(_e194), 7u)], K);
                     uint _e198 = copies;
-                    const Shaded _e201 = shade_pick(li_5, x_12, n_13, _e190, _e96, _e191, (_e197 * float(_e198)), _e144, _e148, eps_2);
+                    const Shaded _e201 = shade_pick(li_6, x_13, n_14, _e190, _e96, _e191, (_e197 * float(_e198)), _e144, _e148, eps_3);
                     const Shaded _e202 = add(_e189, _e201);
                     t = _e202;
                 }

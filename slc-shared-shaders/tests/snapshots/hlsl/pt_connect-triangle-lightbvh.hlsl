@@ -291,11 +291,11 @@ float area_to_solid_angle_pdf(float pdf_area, float d2_5, float cos_light)
 float mis_power(float pdf_a, float pdf_b)
 {
     float a2_ = (pdf_a * pdf_a);
-    float s_1 = (a2_ + (pdf_b * pdf_b));
-    if ((s_1 <= 0.0)) {
+    float s_2 = (a2_ + (pdf_b * pdf_b));
+    if ((s_2 <= 0.0)) {
         return 0.0;
     }
-    return (a2_ / s_1);
+    return (a2_ / s_2);
 }
 
 float light_strategy_pdf(float select_, float rt2_3, float d2_6, float area_1, float cos_y)
@@ -330,16 +330,16 @@ float cosine_pdf(float cos_theta)
 
 float3 onb_tangent(float3 n_2)
 {
-    float s_2 = ((n_2.z >= 0.0) ? 1.0 : -1.0);
-    float a_7 = (-1.0 / (s_2 + n_2.z));
-    return float3((1.0 + (((s_2 * n_2.x) * n_2.x) * a_7)), (((s_2 * n_2.x) * n_2.y) * a_7), (-(s_2) * n_2.x));
+    float s_3 = ((n_2.z >= 0.0) ? 1.0 : -1.0);
+    float a_7 = (-1.0 / (s_3 + n_2.z));
+    return float3((1.0 + (((s_3 * n_2.x) * n_2.x) * a_7)), (((s_3 * n_2.x) * n_2.y) * a_7), (-(s_3) * n_2.x));
 }
 
 float3 onb_bitangent(float3 n_3)
 {
-    float s_3 = ((n_3.z >= 0.0) ? 1.0 : -1.0);
-    float a_8 = (-1.0 / (s_3 + n_3.z));
-    return float3(((n_3.x * n_3.y) * a_8), (s_3 + ((n_3.y * n_3.y) * a_8)), -(n_3.y));
+    float s_4 = ((n_3.z >= 0.0) ? 1.0 : -1.0);
+    float a_8 = (-1.0 / (s_4 + n_3.z));
+    return float3(((n_3.x * n_3.y) * a_8), (s_4 + ((n_3.y * n_3.y) * a_8)), -(n_3.y));
 }
 
 float3 onb_to_local(float3 n_4, float3 w_2)
@@ -545,9 +545,9 @@ float3 mirror_dir(float3 n_7, float3 v_3)
 float bounded_vndf_k(float3 wi, float alpha_6)
 {
     float a_9 = saturate(alpha_6);
-    float s_4 = (1.0 + sqrt(((wi.x * wi.x) + (wi.y * wi.y))));
+    float s_5 = (1.0 + sqrt(((wi.x * wi.x) + (wi.y * wi.y))));
     float a2_3 = (a_9 * a_9);
-    float s2_ = (s_4 * s_4);
+    float s2_ = (s_5 * s_5);
     return (((1.0 - a2_3) * s2_) / (s2_ + ((a2_3 * wi.z) * wi.z)));
 }
 
@@ -744,9 +744,9 @@ float receiver_importance(float3 center_6, float radius_6, float phi_3, float3 a
 
 float bvh_first_prob(float c0_, float c1_)
 {
-    float s_5 = (c0_ + c1_);
-    if ((s_5 > 0.0)) {
-        return (c0_ / s_5);
+    float s_6 = (c0_ + c1_);
+    if ((s_6 > 0.0)) {
+        return (c0_ / s_6);
     }
     return -1.0;
 }
@@ -815,8 +815,8 @@ float3 triangle_normal(float3 a_4, float3 b_3, float3 c_2)
 {
     bool local_15 = (bool)0;
 
-    float3 n_17 = cross((b_3 - a_4), (c_2 - a_4));
-    float l2_ = dot(n_17, n_17);
+    float3 n_18 = cross((b_3 - a_4), (c_2 - a_4));
+    float l2_ = dot(n_18, n_18);
     if (!(!((l2_ > 0.0)))) {
         local_15 = !((l2_ < 3e38));
     } else {
@@ -826,7 +826,7 @@ float3 triangle_normal(float3 a_4, float3 b_3, float3 c_2)
     if (_e17) {
         return float3(0.0, 0.0, 0.0);
     }
-    return (n_17 / (sqrt(l2_)).xxx);
+    return (n_18 / (sqrt(l2_)).xxx);
 }
 
 float ray_triangle(float3 o_1, float3 d_3, float3 a_5, float3 b_4, float3 c_3, float t_min, float t_max_1)
@@ -843,8 +843,8 @@ float ray_triangle(float3 o_1, float3 d_3, float3 a_5, float3 b_4, float3 c_3, f
         return -1.0;
     }
     float inv_1 = (1.0 / det);
-    float3 s_6 = (o_1 - a_5);
-    float u_3 = (dot(s_6, p_7) * inv_1);
+    float3 s_7 = (o_1 - a_5);
+    float u_3 = (dot(s_7, p_7) * inv_1);
     if (!((u_3 < 0.0))) {
         local_16 = (u_3 > 1.0);
     } else {
@@ -854,7 +854,7 @@ float ray_triangle(float3 o_1, float3 d_3, float3 a_5, float3 b_4, float3 c_3, f
     if (_e28) {
         return -1.0;
     }
-    float3 q = cross(s_6, e1_);
+    float3 q = cross(s_7, e1_);
     float v_11 = (dot(d_3, q) * inv_1);
     if (!((v_11 < 0.0))) {
         local_17 = ((u_3 + v_11) > 1.0);
@@ -966,12 +966,12 @@ GeoHit trace(float3 o_2, float3 d_4, float t_min_1, float t_max_2, bool any_hit)
         if (all(loop_bound == uint2(0u, 0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         uint _e21 = node;
-        GpuGeoNode n_18 = ConstructGpuGeoNode(asfloat(geo_nodes.Load3(_e21*32+0)), asuint(geo_nodes.Load(_e21*32+12)), asfloat(geo_nodes.Load3(_e21*32+16)), asuint(geo_nodes.Load(_e21*32+28)));
+        GpuGeoNode n_19 = ConstructGpuGeoNode(asfloat(geo_nodes.Load3(_e21*32+0)), asuint(geo_nodes.Load(_e21*32+12)), asfloat(geo_nodes.Load3(_e21*32+16)), asuint(geo_nodes.Load(_e21*32+28)));
         float _e27 = hit.t;
-        const float _e28 = ray_aabb(o_2, _e14, n_18.bmin, n_18.bmax, _e27);
+        const float _e28 = ray_aabb(o_2, _e14, n_19.bmin, n_19.bmax, _e27);
         if ((_e28 >= 0.0)) {
-            if ((n_18.count > 0u)) {
-                i = n_18.first;
+            if ((n_19.count > 0u)) {
+                i = n_19.first;
                 uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
                 bool loop_init = true;
                 while(true) {
@@ -983,7 +983,7 @@ GeoHit trace(float3 o_2, float3 d_4, float t_min_1, float t_max_2, bool any_hit)
                     }
                     loop_init = false;
                     uint _e36 = i;
-                    if ((_e36 < (n_18.first + n_18.count))) {
+                    if ((_e36 < (n_19.first + n_19.count))) {
                     } else {
                         break;
                     }
@@ -1008,11 +1008,11 @@ GeoHit trace(float3 o_2, float3 d_4, float t_min_1, float t_max_2, bool any_hit)
                 uint _e60 = sp;
                 if ((_e60 < 64u)) {
                     uint _e63 = sp;
-                    stack[min(uint(_e63), 63u)] = (n_18.first + 1u);
+                    stack[min(uint(_e63), 63u)] = (n_19.first + 1u);
                     uint _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node = n_18.first;
+                node = n_19.first;
                 continue;
             }
         }
@@ -1056,44 +1056,58 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
     return ret;
 }
 
-Connection connect(uint li, float3 x_4, float3 n_12, float3 ng_1, float s, float w_res, float u1_2, float u2_2, float eps)
+Connection connect_traced(uint li, float3 x_4, float3 n_12, float3 ng_1, float s, float w_res, float u1_2, float u2_2, float eps, bool trace_1)
 {
     Connection c_4 = (Connection)0;
     bool local_19 = (bool)0;
+    bool local_20 = (bool)0;
 
     c_4.e = (0.0).xxx;
     GpuLight l_8 = ConstructGpuLight(asfloat(lights.Load3(li*64+0)), asuint(lights.Load(li*64+12)), asfloat(lights.Load3(li*64+16)), asfloat(lights.Load(li*64+28)), asfloat(lights.Load3(li*64+32)), asfloat(lights.Load(li*64+44)), asfloat(lights.Load3(li*64+48)), asuint(lights.Load(li*64+60)));
-    const float3 _e17 = light_point(l_8, u1_2, u2_2);
-    c_4.y = _e17;
-    float3 _e20 = c_4.y;
-    float _e23 = asfloat(r2_3.Load(li*4));
-    const float _e25 = connection_cosine(x_4, _e20, n_12, ng_1, (s * _e23));
-    c_4.cos_x = _e25;
-    float _e27 = c_4.cos_x;
-    if (!((_e27 <= 0.0))) {
-        float3 _e36 = c_4.y;
-        const bool _e37 = occluded((x_4 + (ng_1 * eps)), _e36);
-        local_19 = _e37;
+    const float3 _e18 = light_point(l_8, u1_2, u2_2);
+    c_4.y = _e18;
+    float3 _e21 = c_4.y;
+    float _e24 = asfloat(r2_3.Load(li*4));
+    const float _e26 = connection_cosine(x_4, _e21, n_12, ng_1, (s * _e24));
+    c_4.cos_x = _e26;
+    float _e28 = c_4.cos_x;
+    if (!((_e28 <= 0.0))) {
+        if (trace_1) {
+            float3 _e39 = c_4.y;
+            const bool _e40 = occluded((x_4 + (ng_1 * eps)), _e39);
+            local_20 = _e40;
+        } else {
+            local_20 = false;
+        }
+        bool _e42 = local_20;
+        local_19 = _e42;
     } else {
         local_19 = true;
     }
-    bool _e39 = local_19;
-    if (_e39) {
-        Connection _e40 = c_4;
-        const Connection connection = _e40;
+    bool _e44 = local_19;
+    if (_e44) {
+        Connection _e45 = c_4;
+        const Connection connection = _e45;
         return connection;
     }
-    float3 _e42 = c_4.y;
-    float3 v_12 = (x_4 - _e42);
+    float3 _e47 = c_4.y;
+    float3 v_12 = (x_4 - _e47);
     float d2_10 = dot(v_12, v_12);
-    const float3 _e49 = light_intensity(l_8, (v_12 / (sqrt(d2_10)).xxx));
-    float _e51 = c_4.cos_x;
-    float _e54 = asfloat(rt2_4.Load(li*4));
-    const float _e56 = connection_factor(_e51, d2_10, (s * _e54), w_res);
-    c_4.e = (_e49 * _e56);
-    Connection _e58 = c_4;
-    const Connection connection_1 = _e58;
+    const float3 _e54 = light_intensity(l_8, (v_12 / (sqrt(d2_10)).xxx));
+    float _e56 = c_4.cos_x;
+    float _e59 = asfloat(rt2_4.Load(li*4));
+    const float _e61 = connection_factor(_e56, d2_10, (s * _e59), w_res);
+    c_4.e = (_e54 * _e61);
+    Connection _e63 = c_4;
+    const Connection connection_1 = _e63;
     return connection_1;
+}
+
+Connection connect(uint li_1, float3 x_5, float3 n_13, float3 ng_2, float s_1, float w_res_1, float u1_3, float u2_3, float eps_1)
+{
+    const Connection _e10 = connect_traced(li_1, x_5, n_13, ng_2, s_1, w_res_1, u1_3, u2_3, eps_1, true);
+    const Connection connection_2 = _e10;
+    return connection_2;
 }
 
 float mis_weight(float pdf_a_1, float pdf_b_1)
@@ -1115,10 +1129,10 @@ GpuLightCone ConstructGpuLightCone(float3 arg0, float arg1, float3 arg2, float a
     return ret;
 }
 
-float light_range_scale(uint li_1, float3 x_5, float3 r_3, float4 rl_2)
+float light_range_scale(uint li_2, float3 x_6, float3 r_3, float4 rl_2)
 {
-    GpuLightCone c_9 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_1*48+0)), asfloat(light_cones.Load(li_1*48+12)), asfloat(light_cones.Load3(li_1*48+16)), asfloat(light_cones.Load(li_1*48+28)), asfloat(light_cones.Load(li_1*48+32)), asfloat(light_cones.Load(li_1*48+36)), asuint(light_cones.Load(li_1*48+40)), asuint(light_cones.Load(li_1*48+44)));
-    const float _e9 = range_scale_toward(rl_2, c_9.center_, c_9.radius, x_5, r_3);
+    GpuLightCone c_9 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_2*48+0)), asfloat(light_cones.Load(li_2*48+12)), asfloat(light_cones.Load3(li_2*48+16)), asfloat(light_cones.Load(li_2*48+28)), asfloat(light_cones.Load(li_2*48+32)), asfloat(light_cones.Load(li_2*48+36)), asuint(light_cones.Load(li_2*48+40)), asuint(light_cones.Load(li_2*48+44)));
+    const float _e9 = range_scale_toward(rl_2, c_9.center_, c_9.radius, x_6, r_3);
     return _e9;
 }
 
@@ -1147,31 +1161,31 @@ uint light_bvh_count(uint nodes_1)
     return ((NagaBufferLength(light_bvh) - 0) / 48);
 }
 
-float bvh_importance(uint nodes_2, uint i_2, float3 x_6, float3 n_13, float3 r_4, float4 lobe_7)
+float bvh_importance(uint nodes_2, uint i_2, float3 x_7, float3 n_14, float3 r_4, float4 lobe_7)
 {
     const GpuLightBvhNode _e6 = light_bvh_node(nodes_2, i_2);
-    const float _e13 = receiver_importance(_e6.center_, _e6.radius, _e6.phi, _e6.axis, _e6.cos_o, _e6.cos_e, x_6, n_13, r_4, lobe_7);
+    const float _e13 = receiver_importance(_e6.center_, _e6.radius, _e6.phi, _e6.axis, _e6.cos_o, _e6.cos_e, x_7, n_14, r_4, lobe_7);
     return _e13;
 }
 
-float bvh_first(uint nodes_3, uint i_3, float3 x_7, float3 n_14, float3 r_5, float4 lobe_8)
+float bvh_first(uint nodes_3, uint i_3, float3 x_8, float3 n_15, float3 r_5, float4 lobe_8)
 {
-    bool local_20 = (bool)0;
+    bool local_21 = (bool)0;
 
     const GpuLightBvhNode _e6 = light_bvh_node(nodes_3, i_3);
     uint j = _e6.second;
     if (!((j <= (i_3 + 1u)))) {
         const uint _e14 = light_bvh_count(nodes_3);
-        local_20 = (j >= _e14);
+        local_21 = (j >= _e14);
     } else {
-        local_20 = true;
+        local_21 = true;
     }
-    bool _e17 = local_20;
+    bool _e17 = local_21;
     if (_e17) {
         return -1.0;
     }
-    const float _e21 = bvh_importance(nodes_3, (i_3 + 1u), x_7, n_14, r_5, lobe_8);
-    const float _e22 = bvh_importance(nodes_3, j, x_7, n_14, r_5, lobe_8);
+    const float _e21 = bvh_importance(nodes_3, (i_3 + 1u), x_8, n_15, r_5, lobe_8);
+    const float _e22 = bvh_importance(nodes_3, j, x_8, n_15, r_5, lobe_8);
     const float _e23 = bvh_first_prob(_e21, _e22);
     return _e23;
 }
@@ -1189,13 +1203,13 @@ BvhPick bvh_pick_none()
     return bvhpick;
 }
 
-BvhPick light_bvh_sample(uint nodes_4, float3 x_8, float3 n_15, float3 r_6, float4 lobe_9, float u_in)
+BvhPick light_bvh_sample(uint nodes_4, float3 x_9, float3 n_16, float3 r_6, float4 lobe_9, float u_in)
 {
     BvhPick pick = (BvhPick)0;
     float u_2 = (float)0;
     uint i_4 = 0u;
     float pmf = 1.0;
-    bool local_21 = (bool)0;
+    bool local_22 = (bool)0;
 
     const BvhPick _e6 = bvh_pick_none();
     pick = _e6;
@@ -1216,12 +1230,12 @@ BvhPick light_bvh_sample(uint nodes_4, float3 x_8, float3 n_15, float3 r_6, floa
             if ((_e17.second == LIGHT_BVH_LEAF)) {
                 uint _e21 = i_4;
                 if (!((_e21 > 0u))) {
-                    const float _e28 = bvh_importance(nodes_4, 0u, x_8, n_15, r_6, lobe_9);
-                    local_21 = (_e28 > 0.0);
+                    const float _e28 = bvh_importance(nodes_4, 0u, x_9, n_16, r_6, lobe_9);
+                    local_22 = (_e28 > 0.0);
                 } else {
-                    local_21 = true;
+                    local_22 = true;
                 }
-                bool _e32 = local_21;
+                bool _e32 = local_22;
                 if (_e32) {
                     pick.light = _e17.light;
                     float _e36 = pmf;
@@ -1232,7 +1246,7 @@ BvhPick light_bvh_sample(uint nodes_4, float3 x_8, float3 n_15, float3 r_6, floa
                 return bvhpick_1;
             }
             uint _e38 = i_4;
-            const float _e39 = bvh_first(nodes_4, _e38, x_8, n_15, r_6, lobe_9);
+            const float _e39 = bvh_first(nodes_4, _e38, x_9, n_16, r_6, lobe_9);
             if ((_e39 < 0.0)) {
                 BvhPick _e42 = pick;
                 const BvhPick bvhpick_2 = _e42;
@@ -1254,41 +1268,41 @@ BvhPick light_bvh_sample(uint nodes_4, float3 x_8, float3 n_15, float3 r_6, floa
     return bvhpick_3;
 }
 
-float light_pdf_selected(uint li_2, float3 x_9, float3 r_7, float4 rl_3, float3 y_1, float sel)
+float light_pdf_selected(uint li_3, float3 x_10, float3 r_7, float4 rl_3, float3 y_1, float sel)
 {
-    GpuLight l_9 = ConstructGpuLight(asfloat(lights.Load3(li_2*64+0)), asuint(lights.Load(li_2*64+12)), asfloat(lights.Load3(li_2*64+16)), asfloat(lights.Load(li_2*64+28)), asfloat(lights.Load3(li_2*64+32)), asfloat(lights.Load(li_2*64+44)), asfloat(lights.Load3(li_2*64+48)), asuint(lights.Load(li_2*64+60)));
-    float3 v_13 = (x_9 - y_1);
+    GpuLight l_9 = ConstructGpuLight(asfloat(lights.Load3(li_3*64+0)), asuint(lights.Load(li_3*64+12)), asfloat(lights.Load3(li_3*64+16)), asfloat(lights.Load(li_3*64+28)), asfloat(lights.Load3(li_3*64+32)), asfloat(lights.Load(li_3*64+44)), asfloat(lights.Load3(li_3*64+48)), asuint(lights.Load(li_3*64+60)));
+    float3 v_13 = (x_10 - y_1);
     float d2_11 = dot(v_13, v_13);
     const float3 _e11 = light_normal(l_9);
     float cos_y_1 = ((d2_11 > 0.0) ? dot(_e11, (v_13 / (sqrt(d2_11)).xxx)) : 0.0);
-    const float _e20 = light_range_scale(li_2, x_9, r_7, rl_3);
-    float _e23 = asfloat(rt2_4.Load(li_2*4));
+    const float _e20 = light_range_scale(li_3, x_10, r_7, rl_3);
+    float _e23 = asfloat(rt2_4.Load(li_3*4));
     const float _e25 = light_area(l_9);
     const float _e26 = light_strategy_pdf(sel, (_e20 * _e23), d2_11, _e25, cos_y_1);
     return _e26;
 }
 
-float3 shade_pick(uint li_3, float3 x_10, float3 n_16, float3 ng_2, GpuMaterial m, float3 wo_1, float3 r_8, float4 lobe_10, float4 rl_4, float w_4, uint nee, float u1_3, float u2_3)
+float3 shade_pick(uint li_4, float3 x_11, float3 n_17, float3 ng_3, GpuMaterial m, float3 wo_1, float3 r_8, float4 lobe_10, float4 rl_4, float w_4, uint nee, float u1_4, float u2_4)
 {
     float mis = 1.0;
 
-    const float _e13 = light_range_scale(li_3, x_10, r_8, rl_4);
+    const float _e13 = light_range_scale(li_4, x_11, r_8, rl_4);
     float _e16 = params.eps;
-    const Connection _e17 = connect(li_3, x_10, n_16, ng_2, _e13, w_4, u1_3, u2_3, _e16);
+    const Connection _e17 = connect(li_4, x_11, n_17, ng_3, _e13, w_4, u1_4, u2_4, _e16);
     if ((_e17.cos_x <= 0.0)) {
         return (0.0).xxx;
     }
-    float3 l_10 = normalize((_e17.y - x_10));
-    GpuLight _e30 = ConstructGpuLight(asfloat(lights.Load3(li_3*64+0)), asuint(lights.Load(li_3*64+12)), asfloat(lights.Load3(li_3*64+16)), asfloat(lights.Load(li_3*64+28)), asfloat(lights.Load3(li_3*64+32)), asfloat(lights.Load(li_3*64+44)), asfloat(lights.Load3(li_3*64+48)), asuint(lights.Load(li_3*64+60)));
+    float3 l_10 = normalize((_e17.y - x_11));
+    GpuLight _e30 = ConstructGpuLight(asfloat(lights.Load3(li_4*64+0)), asuint(lights.Load(li_4*64+12)), asfloat(lights.Load3(li_4*64+16)), asfloat(lights.Load(li_4*64+28)), asfloat(lights.Load3(li_4*64+32)), asfloat(lights.Load(li_4*64+44)), asfloat(lights.Load3(li_4*64+48)), asuint(lights.Load(li_4*64+60)));
     const float _e31 = light_area(_e30);
     if ((_e31 > 0.0)) {
-        const float _e37 = light_pdf_selected(li_3, x_10, r_8, rl_4, _e17.y, (1.0 / w_4));
+        const float _e37 = light_pdf_selected(li_4, x_11, r_8, rl_4, _e17.y, (1.0 / w_4));
         const float _e39 = specular_probability(lobe_10);
-        const float _e40 = bsdf_pdf(n_16, wo_1, l_10, m.alpha, _e39);
+        const float _e40 = bsdf_pdf(n_17, wo_1, l_10, m.alpha, _e39);
         const float _e41 = mis_weight(_e37, _e40);
         mis = _e41;
     }
-    const float3 _e47 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_16, wo_1, l_10);
+    const float3 _e47 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_17, wo_1, l_10);
     float _e50 = mis;
     return ((_e47 * _e17.e) * _e50);
 }
@@ -1335,13 +1349,13 @@ void main(uint3 gid : SV_DispatchThreadID)
         candidates.Store(i_5*4, asuint(0u));
         return;
     }
-    float3 x_11 = vtx.position;
-    float3 n_19 = vtx.normal;
-    float3 ng_3 = vtx.gnormal;
+    float3 x_12 = vtx.position;
+    float3 n_20 = vtx.normal;
+    float3 ng_4 = vtx.gnormal;
     GpuMaterial m_2 = ConstructGpuMaterial(asfloat(materials.Load3(vtx.material*48+0)), asfloat(materials.Load(vtx.material*48+12)), asfloat(materials.Load3(vtx.material*48+16)), asfloat(materials.Load(vtx.material*48+28)), asfloat(materials.Load3(vtx.material*48+32)), asfloat(materials.Load(vtx.material*48+44)));
     float3 wo_2 = vtx.wo;
-    const float3 _e23 = mirror_dir(n_19, wo_2);
-    const float4 _e30 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, dot(n_19, wo_2));
+    const float3 _e23 = mirror_dir(n_20, wo_2);
+    const float4 _e30 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, dot(n_20, wo_2));
     const float4 _e31 = range_lobe(_e30);
     uint _e34 = params.seed;
     uint _e37 = params.frame;
@@ -1354,8 +1368,8 @@ void main(uint3 gid : SV_DispatchThreadID)
     h = _e48;
     uint _e49 = h;
     const float _e50 = xi_from_bits(_e49);
-    const BvhPick _e52 = light_bvh_sample(BVH, x_11, n_19, _e23, _e30, _e50);
-    uint li_4 = _e52.light;
+    const BvhPick _e52 = light_bvh_sample(BVH, x_12, n_20, _e23, _e30, _e50);
+    uint li_5 = _e52.light;
     float pmf_1 = _e52.pmf;
     uint _e55 = h;
     const uint _e56 = pcg_hash(_e55);
@@ -1368,7 +1382,7 @@ void main(uint3 gid : SV_DispatchThreadID)
     uint _e61 = h;
     const float _e62 = xi_from_bits(_e61);
     if ((pmf_1 > 0.0)) {
-        const float3 _e68 = shade_pick(li_4, x_11, n_19, ng_3, m_2, wo_2, _e23, _e30, _e31, (1.0 / pmf_1), 0u, _e58, _e62);
+        const float3 _e68 = shade_pick(li_5, x_12, n_20, ng_4, m_2, wo_2, _e23, _e30, _e31, (1.0 / pmf_1), 0u, _e58, _e62);
         sum = _e68;
     }
     float3 _e70 = sum;

@@ -745,8 +745,8 @@ float ray_triangle(
         return -1.0;
     }
     float inv = 1.0 / det;
-    metal::float3 s_2 = o_1 - a_5;
-    float u_2 = metal::dot(s_2, p_2) * inv;
+    metal::float3 s_3 = o_1 - a_5;
+    float u_2 = metal::dot(s_3, p_2) * inv;
     if (!((u_2 < 0.0))) {
         local_5 = u_2 > 1.0;
     } else {
@@ -756,7 +756,7 @@ float ray_triangle(
     if (_e28) {
         return -1.0;
     }
-    metal::float3 q = metal::cross(s_2, e1_);
+    metal::float3 q = metal::cross(s_3, e1_);
     float v_5 = metal::dot(d_3, q) * inv;
     if (!((v_5 < 0.0))) {
         local_6 = (u_2 + v_5) > 1.0;
@@ -839,12 +839,12 @@ GeoHit trace(
         if (metal::all(loop_bound_1 == uint2(0u))) { break; }
         loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
         uint _e21 = node_2;
-        GpuGeoNode n_7 = geo_nodes[_e21];
+        GpuGeoNode n_8 = geo_nodes[_e21];
         float _e27 = hit.t;
-        float _e28 = ray_aabb(o_2, _e14, n_7.bmin, n_7.bmax, _e27);
+        float _e28 = ray_aabb(o_2, _e14, n_8.bmin, n_8.bmax, _e27);
         if (_e28 >= 0.0) {
-            if (n_7.count > 0u) {
-                i_1 = n_7.first;
+            if (n_8.count > 0u) {
+                i_1 = n_8.first;
                 uint2 loop_bound_2 = uint2(4294967295u);
                 bool loop_init = true;
                 while(true) {
@@ -856,7 +856,7 @@ GeoHit trace(
                     }
                     loop_init = false;
                     uint _e36 = i_1;
-                    if (_e36 < (n_7.first + n_7.count)) {
+                    if (_e36 < (n_8.first + n_8.count)) {
                     } else {
                         break;
                     }
@@ -880,11 +880,11 @@ GeoHit trace(
                 uint _e60 = sp;
                 if (_e60 < 64u) {
                     uint _e63 = sp;
-                    stack.inner[_e63] = n_7.first + 1u;
+                    stack.inner[_e63] = n_8.first + 1u;
                     uint _e68 = sp;
                     sp = _e68 + 1u;
                 }
-                node_2 = n_7.first;
+                node_2 = n_8.first;
                 continue;
             }
         }
@@ -1107,7 +1107,7 @@ Picks bsh_collect(
     return _e49;
 }
 
-Connection connect(
+Connection connect_traced(
     uint li,
     metal::float3 x_12,
     metal::float3 n_6,
@@ -1117,6 +1117,7 @@ Connection connect(
     float u1_1,
     float u2_1,
     float eps,
+    bool trace_1,
     device type_4 const& slc_table,
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
@@ -1127,37 +1128,66 @@ Connection connect(
 ) {
     Connection c_4 = {};
     bool local_10 = {};
+    bool local_11 = {};
     c_4.e = metal::float3(0.0);
     GpuLight l_2 = lights[li];
-    metal::float3 _e17 = light_point(l_2, u1_1, u2_1);
-    c_4.y = _e17;
-    metal::float3 _e20 = c_4.y;
-    float _e23 = r2_2[li];
-    float _e25 = connection_cosine(x_12, _e20, n_6, ng_1, s_1 * _e23);
-    c_4.cos_x = _e25;
-    float _e27 = c_4.cos_x;
-    if (!((_e27 <= 0.0))) {
-        metal::float3 _e36 = c_4.y;
-        bool _e37 = occluded(x_12 + (ng_1 * eps), _e36, geo_nodes, geo_tris, _buffer_sizes);
-        local_10 = _e37;
+    metal::float3 _e18 = light_point(l_2, u1_1, u2_1);
+    c_4.y = _e18;
+    metal::float3 _e21 = c_4.y;
+    float _e24 = r2_2[li];
+    float _e26 = connection_cosine(x_12, _e21, n_6, ng_1, s_1 * _e24);
+    c_4.cos_x = _e26;
+    float _e28 = c_4.cos_x;
+    if (!((_e28 <= 0.0))) {
+        if (trace_1) {
+            metal::float3 _e39 = c_4.y;
+            bool _e40 = occluded(x_12 + (ng_1 * eps), _e39, geo_nodes, geo_tris, _buffer_sizes);
+            local_11 = _e40;
+        } else {
+            local_11 = false;
+        }
+        bool _e42 = local_11;
+        local_10 = _e42;
     } else {
         local_10 = true;
     }
-    bool _e39 = local_10;
-    if (_e39) {
-        Connection _e40 = c_4;
-        return _e40;
+    bool _e44 = local_10;
+    if (_e44) {
+        Connection _e45 = c_4;
+        return _e45;
     }
-    metal::float3 _e42 = c_4.y;
-    metal::float3 v_7 = x_12 - _e42;
+    metal::float3 _e47 = c_4.y;
+    metal::float3 v_7 = x_12 - _e47;
     float d2_8 = metal::dot(v_7, v_7);
-    metal::float3 _e49 = light_intensity(l_2, v_7 / metal::float3(metal::sqrt(d2_8)), slc_table, _buffer_sizes);
-    float _e51 = c_4.cos_x;
-    float _e54 = rt2_2[li];
-    float _e56 = connection_factor(_e51, d2_8, s_1 * _e54, w_res);
-    c_4.e = _e49 * _e56;
-    Connection _e58 = c_4;
-    return _e58;
+    metal::float3 _e54 = light_intensity(l_2, v_7 / metal::float3(metal::sqrt(d2_8)), slc_table, _buffer_sizes);
+    float _e56 = c_4.cos_x;
+    float _e59 = rt2_2[li];
+    float _e61 = connection_factor(_e56, d2_8, s_1 * _e59, w_res);
+    c_4.e = _e54 * _e61;
+    Connection _e63 = c_4;
+    return _e63;
+}
+
+Connection connect(
+    uint li_1,
+    metal::float3 x_13,
+    metal::float3 n_7,
+    metal::float3 ng_2,
+    float s_2,
+    float w_res_1,
+    float u1_2,
+    float u2_2,
+    float eps_1,
+    device type_4 const& slc_table,
+    device type_6 const& geo_nodes,
+    device type_7 const& geo_tris,
+    device type_11 const& lights,
+    device type_4 const& r2_2,
+    device type_4 const& rt2_2,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Connection _e10 = connect_traced(li_1, x_13, n_7, ng_2, s_2, w_res_1, u1_2, u2_2, eps_1, true, slc_table, geo_nodes, geo_tris, lights, r2_2, rt2_2, _buffer_sizes);
+    return _e10;
 }
 
 struct main_Input {
@@ -1190,13 +1220,13 @@ kernel void main_(
         irradiance[i_5] = metal::float4(0.0);
         return;
     }
-    metal::float3 x_13 = p_3.xyz;
+    metal::float3 x_14 = p_3.xyz;
     metal::float4 _e19 = normals[i_5];
-    metal::float3 n_8 = _e19.xyz;
+    metal::float3 n_9 = _e19.xyz;
     uint _e23 = params.seed;
     uint _e26 = params.frame;
     uint _e27 = point_stream(_e23, i_5, _e26);
-    Picks _e33 = bsh_collect(x_13, x_13, metal::float4(1.0, 0.0, 1.0, 1.0), _e27, bsh_nodes, _buffer_sizes);
+    Picks _e33 = bsh_collect(x_14, x_14, metal::float4(1.0, 0.0, 1.0, 1.0), _e27, bsh_nodes, _buffer_sizes);
     float _e36 = reservoir_weight(_e33.n, K);
     uint _e37 = pick_stream(_e27);
     h = _e37;
@@ -1229,7 +1259,7 @@ kernel void main_(
             uint _e60 = h;
             float _e61 = xi_from_bits(_e60);
             float _e64 = params.eps;
-            Connection _e65 = connect(_e33.light.inner[_e57], x_13, n_8, n_8, 1.0, _e36, _e52, _e61, _e64, slc_table, geo_nodes, geo_tris, lights, r2_2, rt2_2, _buffer_sizes);
+            Connection _e65 = connect(_e33.light.inner[_e57], x_14, n_9, n_9, 1.0, _e36, _e52, _e61, _e64, slc_table, geo_nodes, geo_tris, lights, r2_2, rt2_2, _buffer_sizes);
             e = _e55 + _e65.e;
         }
     }

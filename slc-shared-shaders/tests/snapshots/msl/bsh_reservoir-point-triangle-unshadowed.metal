@@ -419,8 +419,8 @@ metal::float3 triangle_normal(
     metal::float3 c_2
 ) {
     bool local_4 = {};
-    metal::float3 n_7 = metal::cross(b_4 - a_5, c_2 - a_5);
-    float l2_ = metal::dot(n_7, n_7);
+    metal::float3 n_8 = metal::cross(b_4 - a_5, c_2 - a_5);
+    float l2_ = metal::dot(n_8, n_8);
     if (!(!((l2_ > 0.0)))) {
         local_4 = !((l2_ < 300000000000000000000000000000000000000.0));
     } else {
@@ -430,7 +430,7 @@ metal::float3 triangle_normal(
     if (_e17) {
         return metal::float3(0.0, 0.0, 0.0);
     }
-    return n_7 / metal::float3(metal::sqrt(l2_));
+    return n_8 / metal::float3(metal::sqrt(l2_));
 }
 
 metal::float3 light_intensity(
@@ -659,7 +659,7 @@ Picks bsh_collect(
     return _e49;
 }
 
-Connection connect(
+Connection connect_traced(
     uint li,
     metal::float3 x_6,
     metal::float3 n_6,
@@ -669,6 +669,7 @@ Connection connect(
     float u1_2,
     float u2_2,
     float eps,
+    bool trace,
     device type_8 const& lights,
     device type_4 const& r2_2,
     device type_4 const& rt2_2,
@@ -676,37 +677,63 @@ Connection connect(
 ) {
     Connection c_3 = {};
     bool local_7 = {};
+    bool local_8 = {};
     c_3.e = metal::float3(0.0);
     GpuLight l_2 = lights[li];
-    metal::float3 _e17 = light_point(l_2, u1_2, u2_2);
-    c_3.y = _e17;
-    metal::float3 _e20 = c_3.y;
-    float _e23 = r2_2[li];
-    float _e25 = connection_cosine(x_6, _e20, n_6, ng_1, s_1 * _e23);
-    c_3.cos_x = _e25;
-    float _e27 = c_3.cos_x;
-    if (!((_e27 <= 0.0))) {
-        metal::float3 _e36 = c_3.y;
-        bool _e37 = occluded(x_6 + (ng_1 * eps), _e36);
-        local_7 = _e37;
+    metal::float3 _e18 = light_point(l_2, u1_2, u2_2);
+    c_3.y = _e18;
+    metal::float3 _e21 = c_3.y;
+    float _e24 = r2_2[li];
+    float _e26 = connection_cosine(x_6, _e21, n_6, ng_1, s_1 * _e24);
+    c_3.cos_x = _e26;
+    float _e28 = c_3.cos_x;
+    if (!((_e28 <= 0.0))) {
+        if (trace) {
+            metal::float3 _e39 = c_3.y;
+            bool _e40 = occluded(x_6 + (ng_1 * eps), _e39);
+            local_8 = _e40;
+        } else {
+            local_8 = false;
+        }
+        bool _e42 = local_8;
+        local_7 = _e42;
     } else {
         local_7 = true;
     }
-    bool _e39 = local_7;
-    if (_e39) {
-        Connection _e40 = c_3;
-        return _e40;
+    bool _e44 = local_7;
+    if (_e44) {
+        Connection _e45 = c_3;
+        return _e45;
     }
-    metal::float3 _e42 = c_3.y;
-    metal::float3 v_6 = x_6 - _e42;
+    metal::float3 _e47 = c_3.y;
+    metal::float3 v_6 = x_6 - _e47;
     float d2_8 = metal::dot(v_6, v_6);
-    metal::float3 _e49 = light_intensity(l_2, v_6 / metal::float3(metal::sqrt(d2_8)));
-    float _e51 = c_3.cos_x;
-    float _e54 = rt2_2[li];
-    float _e56 = connection_factor(_e51, d2_8, s_1 * _e54, w_res);
-    c_3.e = _e49 * _e56;
-    Connection _e58 = c_3;
-    return _e58;
+    metal::float3 _e54 = light_intensity(l_2, v_6 / metal::float3(metal::sqrt(d2_8)));
+    float _e56 = c_3.cos_x;
+    float _e59 = rt2_2[li];
+    float _e61 = connection_factor(_e56, d2_8, s_1 * _e59, w_res);
+    c_3.e = _e54 * _e61;
+    Connection _e63 = c_3;
+    return _e63;
+}
+
+Connection connect(
+    uint li_1,
+    metal::float3 x_7,
+    metal::float3 n_7,
+    metal::float3 ng_2,
+    float s_2,
+    float w_res_1,
+    float u1_3,
+    float u2_3,
+    float eps_1,
+    device type_8 const& lights,
+    device type_4 const& r2_2,
+    device type_4 const& rt2_2,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Connection _e10 = connect_traced(li_1, x_7, n_7, ng_2, s_2, w_res_1, u1_3, u2_3, eps_1, true, lights, r2_2, rt2_2, _buffer_sizes);
+    return _e10;
 }
 
 struct main_Input {
@@ -736,13 +763,13 @@ kernel void main_(
         irradiance[i_3] = metal::float4(0.0);
         return;
     }
-    metal::float3 x_7 = p_2.xyz;
+    metal::float3 x_8 = p_2.xyz;
     metal::float4 _e19 = normals[i_3];
-    metal::float3 n_8 = _e19.xyz;
+    metal::float3 n_9 = _e19.xyz;
     uint _e23 = params.seed;
     uint _e26 = params.frame;
     uint _e27 = point_stream(_e23, i_3, _e26);
-    Picks _e33 = bsh_collect(x_7, x_7, metal::float4(1.0, 0.0, 1.0, 1.0), _e27, bsh_nodes, _buffer_sizes);
+    Picks _e33 = bsh_collect(x_8, x_8, metal::float4(1.0, 0.0, 1.0, 1.0), _e27, bsh_nodes, _buffer_sizes);
     float _e36 = reservoir_weight(_e33.n, K);
     uint _e37 = pick_stream(_e27);
     h = _e37;
@@ -775,7 +802,7 @@ kernel void main_(
             uint _e60 = h;
             float _e61 = xi_from_bits(_e60);
             float _e64 = params.eps;
-            Connection _e65 = connect(_e33.light.inner[_e57], x_7, n_8, n_8, 1.0, _e36, _e52, _e61, _e64, lights, r2_2, rt2_2, _buffer_sizes);
+            Connection _e65 = connect(_e33.light.inner[_e57], x_8, n_9, n_9, 1.0, _e36, _e52, _e61, _e64, lights, r2_2, rt2_2, _buffer_sizes);
             e = _e55 + _e65.e;
         }
     }

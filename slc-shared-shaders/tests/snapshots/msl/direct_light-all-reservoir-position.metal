@@ -272,10 +272,10 @@ float connection_cosine(
     if (_e16) {
         return 0.0;
     }
-    metal::float3 w_5 = v_3 / metal::float3(metal::sqrt(d2_6));
-    float cos_x_1 = -(metal::dot(n, w_5));
+    metal::float3 w_6 = v_3 / metal::float3(metal::sqrt(d2_6));
+    float cos_x_1 = -(metal::dot(n, w_6));
     if (!((cos_x_1 <= 0.0))) {
-        local_3 = metal::dot(ng, w_5) >= 0.0;
+        local_3 = metal::dot(ng, w_6) >= 0.0;
     } else {
         local_3 = true;
     }
@@ -342,8 +342,8 @@ float atan_portable(
     float _e21 = base;
     float _e33 = t_1;
     float _e35 = t_1;
-    float r_8 = _e21 + (((((((((0.080537446 * z) - 0.13877685) * z) + 0.19977711) * z) - 0.3333295) * z) * _e33) + _e35);
-    return (x_4 < 0.0) ? -(r_8) : r_8;
+    float r_9 = _e21 + (((((((((0.080537446 * z) - 0.13877685) * z) + 0.19977711) * z) - 0.3333295) * z) * _e33) + _e35);
+    return (x_4 < 0.0) ? -(r_9) : r_9;
 }
 
 float atan2_portable(
@@ -749,8 +749,8 @@ metal::float3 triangle_normal(
     metal::float3 c_4
 ) {
     bool local_7 = {};
-    metal::float3 n_9 = metal::cross(b_4 - a_6, c_4 - a_6);
-    float l2_ = metal::dot(n_9, n_9);
+    metal::float3 n_10 = metal::cross(b_4 - a_6, c_4 - a_6);
+    float l2_ = metal::dot(n_10, n_10);
     if (!(!((l2_ > 0.0)))) {
         local_7 = !((l2_ < 300000000000000000000000000000000000000.0));
     } else {
@@ -760,7 +760,7 @@ metal::float3 triangle_normal(
     if (_e17) {
         return metal::float3(0.0, 0.0, 0.0);
     }
-    return n_9 / metal::float3(metal::sqrt(l2_));
+    return n_10 / metal::float3(metal::sqrt(l2_));
 }
 
 metal::float3 light_intensity(
@@ -999,7 +999,7 @@ Picks bsh_collect(
     return _e49;
 }
 
-Connection connect(
+Connection connect_traced(
     uint li,
     metal::float3 x_11,
     metal::float3 n_7,
@@ -1009,6 +1009,7 @@ Connection connect(
     float u1_2,
     float u2_2,
     float eps,
+    bool trace,
     device type_4 const& slc_table,
     device type_8 const& lights,
     device type_4 const& rt2_2,
@@ -1017,37 +1018,44 @@ Connection connect(
 ) {
     Connection c_5 = {};
     bool local_10 = {};
+    bool local_11 = {};
     c_5.e = metal::float3(0.0);
     GpuLight l_2 = lights[li];
-    metal::float3 _e17 = light_point(l_2, u1_2, u2_2);
-    c_5.y = _e17;
-    metal::float3 _e20 = c_5.y;
-    float _e23 = r2_2[li];
-    float _e25 = connection_cosine(x_11, _e20, n_7, ng_1, s * _e23);
-    c_5.cos_x = _e25;
-    float _e27 = c_5.cos_x;
-    if (!((_e27 <= 0.0))) {
-        metal::float3 _e36 = c_5.y;
-        bool _e37 = occluded(x_11 + (ng_1 * eps), _e36);
-        local_10 = _e37;
+    metal::float3 _e18 = light_point(l_2, u1_2, u2_2);
+    c_5.y = _e18;
+    metal::float3 _e21 = c_5.y;
+    float _e24 = r2_2[li];
+    float _e26 = connection_cosine(x_11, _e21, n_7, ng_1, s * _e24);
+    c_5.cos_x = _e26;
+    float _e28 = c_5.cos_x;
+    if (!((_e28 <= 0.0))) {
+        if (trace) {
+            metal::float3 _e39 = c_5.y;
+            bool _e40 = occluded(x_11 + (ng_1 * eps), _e39);
+            local_11 = _e40;
+        } else {
+            local_11 = false;
+        }
+        bool _e42 = local_11;
+        local_10 = _e42;
     } else {
         local_10 = true;
     }
-    bool _e39 = local_10;
-    if (_e39) {
-        Connection _e40 = c_5;
-        return _e40;
+    bool _e44 = local_10;
+    if (_e44) {
+        Connection _e45 = c_5;
+        return _e45;
     }
-    metal::float3 _e42 = c_5.y;
-    metal::float3 v_6 = x_11 - _e42;
+    metal::float3 _e47 = c_5.y;
+    metal::float3 v_6 = x_11 - _e47;
     float d2_8 = metal::dot(v_6, v_6);
-    metal::float3 _e49 = light_intensity(l_2, v_6 / metal::float3(metal::sqrt(d2_8)), slc_table, _buffer_sizes);
-    float _e51 = c_5.cos_x;
-    float _e54 = rt2_2[li];
-    float _e56 = connection_factor(_e51, d2_8, s * _e54, w_res);
-    c_5.e = _e49 * _e56;
-    Connection _e58 = c_5;
-    return _e58;
+    metal::float3 _e54 = light_intensity(l_2, v_6 / metal::float3(metal::sqrt(d2_8)), slc_table, _buffer_sizes);
+    float _e56 = c_5.cos_x;
+    float _e59 = rt2_2[li];
+    float _e61 = connection_factor(_e56, d2_8, s * _e59, w_res);
+    c_5.e = _e54 * _e61;
+    Connection _e63 = c_5;
+    return _e63;
 }
 
 metal::float4 surface_at(
@@ -1058,7 +1066,7 @@ metal::float4 surface_at(
     return (p_2.w > 0.0) ? metal::float4(p_2.xyz, 1.0) : metal::float4(0.0);
 }
 
-Shaded shade_pick(
+Shaded shade_pick_traced(
     uint li_1,
     metal::float3 x_12,
     metal::float3 n_8,
@@ -1069,6 +1077,7 @@ Shaded shade_pick(
     float u1_3,
     float u2_3,
     float eps_1,
+    bool trace_1,
     device type_4 const& slc_table,
     device type_8 const& lights,
     device type_4 const& rt2_2,
@@ -1076,12 +1085,33 @@ Shaded shade_pick(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Shaded s_1 = {};
-    Connection _e12 = connect(li_1, x_12, n_8, n_8, 1.0, w_4, u1_3, u2_3, eps_1, slc_table, lights, rt2_2, r2_2, _buffer_sizes);
-    s_1.e = _e12.e;
+    Connection _e13 = connect_traced(li_1, x_12, n_8, n_8, 1.0, w_4, u1_3, u2_3, eps_1, trace_1, slc_table, lights, rt2_2, r2_2, _buffer_sizes);
+    s_1.e = _e13.e;
     s_1.diffuse = metal::float3(0.0);
     s_1.specular = metal::float3(0.0);
-    Shaded _e21 = s_1;
-    return _e21;
+    Shaded _e22 = s_1;
+    return _e22;
+}
+
+Shaded shade_pick(
+    uint li_2,
+    metal::float3 x_13,
+    metal::float3 n_9,
+    metal::float3 r_8,
+    metal::float4 rl_7,
+    Material m_2,
+    float w_5,
+    float u1_4,
+    float u2_4,
+    float eps_2,
+    device type_4 const& slc_table,
+    device type_8 const& lights,
+    device type_4 const& rt2_2,
+    device type_4 const& r2_2,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Shaded _e11 = shade_pick_traced(li_2, x_13, n_9, r_8, rl_7, m_2, w_5, u1_4, u2_4, eps_2, true, slc_table, lights, rt2_2, r2_2, _buffer_sizes);
+    return _e11;
 }
 
 Shaded add(
@@ -1140,14 +1170,14 @@ kernel void main_(
         out_tex.write(metal::float4(0.0), metal::uint2(texel_1));
         return;
     }
-    metal::float3 x_13 = _e21.xyz;
-    metal::float3 n_10 = nn / metal::float3(metal::sqrt(len2_));
-    r = n_10;
+    metal::float3 x_14 = _e21.xyz;
+    metal::float3 n_11 = nn / metal::float3(metal::sqrt(len2_));
+    r = n_11;
     metal::float4 _e53 = lobe;
     metal::float4 _e54 = range_lobe(_e53);
     float _e57 = view.shadow_offset;
     metal::float3 _e60 = view.eye;
-    float eps_2 = _e57 * metal::length(_e60 - x_13);
+    float eps_3 = _e57 * metal::length(_e60 - x_14);
     uint _e66 = view.seed;
     uint _e70 = view.width;
     uint _e76 = view.frame;
@@ -1155,7 +1185,7 @@ kernel void main_(
     uint _e78 = pick_stream(_e77);
     h = _e78;
     metal::float3 _e88 = r;
-    Picks _e89 = bsh_collect(x_13, _e88, _e54, _e77, bsh_nodes, _buffer_sizes);
+    Picks _e89 = bsh_collect(x_14, _e88, _e54, _e77, bsh_nodes, _buffer_sizes);
     float _e92 = reservoir_weight(_e89.n, K);
     uint2 loop_bound_3 = uint2(4294967295u);
     bool loop_init_1 = true;
@@ -1187,7 +1217,7 @@ kernel void main_(
             Material _e111 = m;
             uint _e112 = h;
             float _e113 = xi_from_bits(_e112);
-            Shaded _e114 = shade_pick(_e89.light.inner[_e108], x_13, n_10, _e110, _e54, _e111, _e92, _e103, _e113, eps_2, slc_table, lights, rt2_2, r2_2, _buffer_sizes);
+            Shaded _e114 = shade_pick(_e89.light.inner[_e108], x_14, n_11, _e110, _e54, _e111, _e92, _e103, _e113, eps_3, slc_table, lights, rt2_2, r2_2, _buffer_sizes);
             Shaded _e115 = add(_e106, _e114);
             t = _e115;
         }

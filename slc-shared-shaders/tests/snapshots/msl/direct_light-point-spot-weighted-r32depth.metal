@@ -293,10 +293,10 @@ float connection_cosine(
     if (_e16) {
         return 0.0;
     }
-    metal::float3 w_5 = v_4 / metal::float3(metal::sqrt(d2_7));
-    float cos_x_1 = -(metal::dot(n, w_5));
+    metal::float3 w_6 = v_4 / metal::float3(metal::sqrt(d2_7));
+    float cos_x_1 = -(metal::dot(n, w_6));
     if (!((cos_x_1 <= 0.0))) {
-        local_4 = metal::dot(ng, w_5) >= 0.0;
+        local_4 = metal::dot(ng, w_6) >= 0.0;
     } else {
         local_4 = true;
     }
@@ -818,12 +818,12 @@ GeoHit trace(
         if (metal::all(loop_bound == uint2(0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         uint _e21 = node_2;
-        GpuGeoNode n_8 = geo_nodes[_e21];
+        GpuGeoNode n_9 = geo_nodes[_e21];
         float _e27 = hit.t;
-        float _e28 = ray_aabb(o_2, _e14, n_8.bmin, n_8.bmax, _e27);
+        float _e28 = ray_aabb(o_2, _e14, n_9.bmin, n_9.bmax, _e27);
         if (_e28 >= 0.0) {
-            if (n_8.count > 0u) {
-                i = n_8.first;
+            if (n_9.count > 0u) {
+                i = n_9.first;
                 uint2 loop_bound_1 = uint2(4294967295u);
                 bool loop_init = true;
                 while(true) {
@@ -835,7 +835,7 @@ GeoHit trace(
                     }
                     loop_init = false;
                     uint _e36 = i;
-                    if (_e36 < (n_8.first + n_8.count)) {
+                    if (_e36 < (n_9.first + n_9.count)) {
                     } else {
                         break;
                     }
@@ -859,11 +859,11 @@ GeoHit trace(
                 uint _e60 = sp;
                 if (_e60 < 64u) {
                     uint _e63 = sp;
-                    stack.inner[_e63] = n_8.first + 1u;
+                    stack.inner[_e63] = n_9.first + 1u;
                     uint _e68 = sp;
                     sp = _e68 + 1u;
                 }
-                node_2 = n_8.first;
+                node_2 = n_9.first;
                 continue;
             }
         }
@@ -1025,7 +1025,7 @@ uint bsh_next_leaf_lobe(
     return BSH_NONE;
 }
 
-Connection connect(
+Connection connect_traced(
     uint li,
     metal::float3 x_7,
     metal::float3 n_4,
@@ -1035,6 +1035,7 @@ Connection connect(
     float u1_1,
     float u2_1,
     float eps,
+    bool trace_1,
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
     device type_11 const& lights,
@@ -1044,37 +1045,44 @@ Connection connect(
 ) {
     Connection c_2 = {};
     bool local_15 = {};
+    bool local_16 = {};
     c_2.e = metal::float3(0.0);
     GpuLight l_2 = lights[li];
-    metal::float3 _e17 = light_point(l_2, u1_1, u2_1);
-    c_2.y = _e17;
-    metal::float3 _e20 = c_2.y;
-    float _e23 = r2_3[li];
-    float _e25 = connection_cosine(x_7, _e20, n_4, ng_1, s * _e23);
-    c_2.cos_x = _e25;
-    float _e27 = c_2.cos_x;
-    if (!((_e27 <= 0.0))) {
-        metal::float3 _e36 = c_2.y;
-        bool _e37 = occluded(x_7 + (ng_1 * eps), _e36, geo_nodes, geo_tris, _buffer_sizes);
-        local_15 = _e37;
+    metal::float3 _e18 = light_point(l_2, u1_1, u2_1);
+    c_2.y = _e18;
+    metal::float3 _e21 = c_2.y;
+    float _e24 = r2_3[li];
+    float _e26 = connection_cosine(x_7, _e21, n_4, ng_1, s * _e24);
+    c_2.cos_x = _e26;
+    float _e28 = c_2.cos_x;
+    if (!((_e28 <= 0.0))) {
+        if (trace_1) {
+            metal::float3 _e39 = c_2.y;
+            bool _e40 = occluded(x_7 + (ng_1 * eps), _e39, geo_nodes, geo_tris, _buffer_sizes);
+            local_16 = _e40;
+        } else {
+            local_16 = false;
+        }
+        bool _e42 = local_16;
+        local_15 = _e42;
     } else {
         local_15 = true;
     }
-    bool _e39 = local_15;
-    if (_e39) {
-        Connection _e40 = c_2;
-        return _e40;
+    bool _e44 = local_15;
+    if (_e44) {
+        Connection _e45 = c_2;
+        return _e45;
     }
-    metal::float3 _e42 = c_2.y;
-    metal::float3 v_11 = x_7 - _e42;
+    metal::float3 _e47 = c_2.y;
+    metal::float3 v_11 = x_7 - _e47;
     float d2_10 = metal::dot(v_11, v_11);
-    metal::float3 _e49 = light_intensity(l_2, v_11 / metal::float3(metal::sqrt(d2_10)));
-    float _e51 = c_2.cos_x;
-    float _e54 = rt2_4[li];
-    float _e56 = connection_factor(_e51, d2_10, s * _e54, w_res);
-    c_2.e = _e49 * _e56;
-    Connection _e58 = c_2;
-    return _e58;
+    metal::float3 _e54 = light_intensity(l_2, v_11 / metal::float3(metal::sqrt(d2_10)));
+    float _e56 = c_2.cos_x;
+    float _e59 = rt2_4[li];
+    float _e61 = connection_factor(_e56, d2_10, s * _e59, w_res);
+    c_2.e = _e54 * _e61;
+    Connection _e63 = c_2;
+    return _e63;
 }
 
 float light_range_scale(
@@ -1151,8 +1159,8 @@ WeightedPicks bsh_weighted_collect(
             uint _e21 = picks.n;
             picks.n = _e21 + 1u;
             uint _e25 = b_4;
-            uint li_4 = bsh_nodes[_e25].light;
-            float _e29 = light_weight(li_4, x_10, n_6, r_10, lobe_8, rl_7, rt2_4, light_cones, _buffer_sizes);
+            uint li_5 = bsh_nodes[_e25].light;
+            float _e29 = light_weight(li_5, x_10, n_6, r_10, lobe_8, rl_7, rt2_4, light_cones, _buffer_sizes);
             if (_e29 > 0.0) {
                 float _e33 = picks.w_sum;
                 picks.w_sum = _e33 + _e29;
@@ -1182,7 +1190,7 @@ WeightedPicks bsh_weighted_collect(
                         bool _e46 = weighted_replace(_e29, _e43, _e45);
                         if (_e46) {
                             uint _e48 = s_1;
-                            picks.light.inner[_e48] = li_4;
+                            picks.light.inner[_e48] = li_5;
                             uint _e51 = s_1;
                             picks.w.inner[_e51] = _e29;
                         }
@@ -1208,28 +1216,28 @@ metal::float4 unproject_pixel(
     float height,
     float depth
 ) {
-    bool local_16 = {};
     bool local_17 = {};
+    bool local_18 = {};
     if (depth > 0.0) {
-        local_16 = depth < 1.0;
-    } else {
-        local_16 = false;
-    }
-    bool _e16 = local_16;
-    if (!(_e16)) {
-        return metal::float4(0.0, 0.0, 0.0, 0.0);
-    }
-    float x_12 = (((px + 0.5) / width) * 2.0) - 1.0;
-    float y_1 = 1.0 - (((py + 0.5) / height) * 2.0);
-    metal::float4 p_8 = (((c0_ * x_12) + (c1_ * y_1)) + (c2_ * depth)) + c3_;
-    metal::float3 q_1 = metal::float3(p_8.x / p_8.w, p_8.y / p_8.w, p_8.z / p_8.w);
-    if (metal::abs(p_8.w) > 0.0) {
-        bool _e59 = finite3_(q_1);
-        local_17 = _e59;
+        local_17 = depth < 1.0;
     } else {
         local_17 = false;
     }
-    bool _e61 = local_17;
+    bool _e16 = local_17;
+    if (!(_e16)) {
+        return metal::float4(0.0, 0.0, 0.0, 0.0);
+    }
+    float x_13 = (((px + 0.5) / width) * 2.0) - 1.0;
+    float y_1 = 1.0 - (((py + 0.5) / height) * 2.0);
+    metal::float4 p_8 = (((c0_ * x_13) + (c1_ * y_1)) + (c2_ * depth)) + c3_;
+    metal::float3 q_1 = metal::float3(p_8.x / p_8.w, p_8.y / p_8.w, p_8.z / p_8.w);
+    if (metal::abs(p_8.w) > 0.0) {
+        bool _e59 = finite3_(q_1);
+        local_18 = _e59;
+    } else {
+        local_18 = false;
+    }
+    bool _e61 = local_18;
     if (_e61) {
         return metal::float4(q_1.x, q_1.y, q_1.z, 1.0);
     }
@@ -1253,7 +1261,7 @@ metal::float4 surface_at(
     return _e29;
 }
 
-Shaded shade_pick(
+Shaded shade_pick_traced(
     uint li_3,
     metal::float3 x_11,
     metal::float3 n_7,
@@ -1264,6 +1272,7 @@ Shaded shade_pick(
     float u1_2,
     float u2_2,
     float eps_1,
+    bool trace_2,
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
     device type_11 const& lights,
@@ -1272,12 +1281,34 @@ Shaded shade_pick(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Shaded s_2 = {};
-    Connection _e12 = connect(li_3, x_11, n_7, n_7, 1.0, w_4, u1_2, u2_2, eps_1, geo_nodes, geo_tris, lights, rt2_4, r2_3, _buffer_sizes);
-    s_2.e = _e12.e;
+    Connection _e13 = connect_traced(li_3, x_11, n_7, n_7, 1.0, w_4, u1_2, u2_2, eps_1, trace_2, geo_nodes, geo_tris, lights, rt2_4, r2_3, _buffer_sizes);
+    s_2.e = _e13.e;
     s_2.diffuse = metal::float3(0.0);
     s_2.specular = metal::float3(0.0);
-    Shaded _e21 = s_2;
-    return _e21;
+    Shaded _e22 = s_2;
+    return _e22;
+}
+
+Shaded shade_pick(
+    uint li_4,
+    metal::float3 x_12,
+    metal::float3 n_8,
+    metal::float3 r_12,
+    metal::float4 rl_9,
+    Material m_2,
+    float w_5,
+    float u1_3,
+    float u2_3,
+    float eps_2,
+    device type_6 const& geo_nodes,
+    device type_7 const& geo_tris,
+    device type_11 const& lights,
+    device type_4 const& rt2_4,
+    device type_4 const& r2_3,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Shaded _e11 = shade_pick_traced(li_4, x_12, n_8, r_12, rl_9, m_2, w_5, u1_3, u2_3, eps_2, true, geo_nodes, geo_tris, lights, rt2_4, r2_3, _buffer_sizes);
+    return _e11;
 }
 
 Shaded add(
@@ -1341,14 +1372,14 @@ kernel void main_(
         out_tex.write(metal::float4(0.0), metal::uint2(texel_1));
         return;
     }
-    metal::float3 x_13 = _e21.xyz;
-    metal::float3 n_9 = nn / metal::float3(metal::sqrt(len2_));
-    r = n_9;
+    metal::float3 x_14 = _e21.xyz;
+    metal::float3 n_10 = nn / metal::float3(metal::sqrt(len2_));
+    r = n_10;
     metal::float4 _e53 = lobe;
     metal::float4 _e54 = range_lobe(_e53);
     float _e57 = view.shadow_offset;
     metal::float3 _e60 = view.eye;
-    float eps_2 = _e57 * metal::length(_e60 - x_13);
+    float eps_3 = _e57 * metal::length(_e60 - x_14);
     uint _e66 = view.seed;
     uint _e70 = view.width;
     uint _e76 = view.frame;
@@ -1357,7 +1388,7 @@ kernel void main_(
     h = _e78;
     metal::float3 _e88 = r;
     metal::float4 _e89 = lobe;
-    WeightedPicks _e90 = bsh_weighted_collect(x_13, n_9, _e88, _e89, _e54, _e77, rt2_4, bsh_nodes, light_cones, _buffer_sizes);
+    WeightedPicks _e90 = bsh_weighted_collect(x_14, n_10, _e88, _e89, _e54, _e77, rt2_4, bsh_nodes, light_cones, _buffer_sizes);
     if (_e90.w_sum > 0.0) {
         uint2 loop_bound_5 = uint2(4294967295u);
         bool loop_init_3 = true;
@@ -1386,9 +1417,9 @@ kernel void main_(
                 uint _e105 = h;
                 float _e106 = xi_from_bits(_e105);
                 uint _e108 = k;
-                uint li_5 = _e90.light.inner[_e108];
+                uint li_6 = _e90.light.inner[_e108];
                 copies = 1u;
-                uint _e115 = lights[li_5].kind;
+                uint _e115 = lights[li_6].kind;
                 if (_e115 != LIGHT_TRIANGLE) {
                     j = 0u;
                     uint2 loop_bound_6 = uint2(4294967295u);
@@ -1411,7 +1442,7 @@ kernel void main_(
                             uint _e124 = k;
                             if (_e123 != _e124) {
                                 uint _e129 = j;
-                                local_2 = _e90.light.inner[_e129] == li_5;
+                                local_2 = _e90.light.inner[_e129] == li_6;
                             } else {
                                 local_2 = false;
                             }
@@ -1437,7 +1468,7 @@ kernel void main_(
                     uint _e152 = k;
                     float _e155 = weighted_pick_weight(_e90.w_sum, _e90.w.inner[_e152], K);
                     uint _e156 = copies;
-                    Shaded _e159 = shade_pick(li_5, x_13, n_9, _e148, _e54, _e149, _e155 * static_cast<float>(_e156), _e102, _e106, eps_2, geo_nodes, geo_tris, lights, rt2_4, r2_3, _buffer_sizes);
+                    Shaded _e159 = shade_pick(li_6, x_14, n_10, _e148, _e54, _e149, _e155 * static_cast<float>(_e156), _e102, _e106, eps_3, geo_nodes, geo_tris, lights, rt2_4, r2_3, _buffer_sizes);
                     Shaded _e160 = add(_e147, _e159);
                     t = _e160;
                 }

@@ -293,10 +293,10 @@ float connection_cosine(
     if (_e16) {
         return 0.0;
     }
-    metal::float3 w_6 = v_6 / metal::float3(metal::sqrt(d2_7));
-    float cos_x_1 = -(metal::dot(n, w_6));
+    metal::float3 w_7 = v_6 / metal::float3(metal::sqrt(d2_7));
+    float cos_x_1 = -(metal::dot(n, w_7));
     if (!((cos_x_1 <= 0.0))) {
-        local_4 = metal::dot(ng, w_6) >= 0.0;
+        local_4 = metal::dot(ng, w_7) >= 0.0;
     } else {
         local_4 = true;
     }
@@ -868,8 +868,8 @@ metal::float3 triangle_normal(
     metal::float3 c_3
 ) {
     bool local_13 = {};
-    metal::float3 n_11 = metal::cross(b_3 - a_4, c_3 - a_4);
-    float l2_ = metal::dot(n_11, n_11);
+    metal::float3 n_12 = metal::cross(b_3 - a_4, c_3 - a_4);
+    float l2_ = metal::dot(n_12, n_12);
     if (!(!((l2_ > 0.0)))) {
         local_13 = !((l2_ < 300000000000000000000000000000000000000.0));
     } else {
@@ -879,7 +879,7 @@ metal::float3 triangle_normal(
     if (_e17) {
         return metal::float3(0.0, 0.0, 0.0);
     }
-    return n_11 / metal::float3(metal::sqrt(l2_));
+    return n_12 / metal::float3(metal::sqrt(l2_));
 }
 
 float ray_triangle(
@@ -992,12 +992,12 @@ GeoHit trace(
         if (metal::all(loop_bound == uint2(0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         uint _e21 = node_2;
-        GpuGeoNode n_12 = geo_nodes[_e21];
+        GpuGeoNode n_13 = geo_nodes[_e21];
         float _e27 = hit.t;
-        float _e28 = ray_aabb(o_2, _e14, n_12.bmin, n_12.bmax, _e27);
+        float _e28 = ray_aabb(o_2, _e14, n_13.bmin, n_13.bmax, _e27);
         if (_e28 >= 0.0) {
-            if (n_12.count > 0u) {
-                i = n_12.first;
+            if (n_13.count > 0u) {
+                i = n_13.first;
                 uint2 loop_bound_1 = uint2(4294967295u);
                 bool loop_init = true;
                 while(true) {
@@ -1009,7 +1009,7 @@ GeoHit trace(
                     }
                     loop_init = false;
                     uint _e36 = i;
-                    if (_e36 < (n_12.first + n_12.count)) {
+                    if (_e36 < (n_13.first + n_13.count)) {
                     } else {
                         break;
                     }
@@ -1033,11 +1033,11 @@ GeoHit trace(
                 uint _e60 = sp;
                 if (_e60 < 64u) {
                     uint _e63 = sp;
-                    stack.inner[_e63] = n_12.first + 1u;
+                    stack.inner[_e63] = n_13.first + 1u;
                     uint _e68 = sp;
                     sp = _e68 + 1u;
                 }
-                node_2 = n_12.first;
+                node_2 = n_13.first;
                 continue;
             }
         }
@@ -1199,7 +1199,7 @@ uint bsh_next_leaf_lobe(
     return BSH_NONE;
 }
 
-Connection connect(
+Connection connect_traced(
     uint li,
     metal::float3 x_7,
     metal::float3 n_7,
@@ -1209,6 +1209,7 @@ Connection connect(
     float u1_2,
     float u2_2,
     float eps,
+    bool trace_1,
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
     device type_11 const& lights,
@@ -1218,37 +1219,44 @@ Connection connect(
 ) {
     Connection c_5 = {};
     bool local_19 = {};
+    bool local_20 = {};
     c_5.e = metal::float3(0.0);
     GpuLight l_4 = lights[li];
-    metal::float3 _e17 = light_point(l_4, u1_2, u2_2);
-    c_5.y = _e17;
-    metal::float3 _e20 = c_5.y;
-    float _e23 = r2_3[li];
-    float _e25 = connection_cosine(x_7, _e20, n_7, ng_1, s * _e23);
-    c_5.cos_x = _e25;
-    float _e27 = c_5.cos_x;
-    if (!((_e27 <= 0.0))) {
-        metal::float3 _e36 = c_5.y;
-        bool _e37 = occluded(x_7 + (ng_1 * eps), _e36, geo_nodes, geo_tris, _buffer_sizes);
-        local_19 = _e37;
+    metal::float3 _e18 = light_point(l_4, u1_2, u2_2);
+    c_5.y = _e18;
+    metal::float3 _e21 = c_5.y;
+    float _e24 = r2_3[li];
+    float _e26 = connection_cosine(x_7, _e21, n_7, ng_1, s * _e24);
+    c_5.cos_x = _e26;
+    float _e28 = c_5.cos_x;
+    if (!((_e28 <= 0.0))) {
+        if (trace_1) {
+            metal::float3 _e39 = c_5.y;
+            bool _e40 = occluded(x_7 + (ng_1 * eps), _e39, geo_nodes, geo_tris, _buffer_sizes);
+            local_20 = _e40;
+        } else {
+            local_20 = false;
+        }
+        bool _e42 = local_20;
+        local_19 = _e42;
     } else {
         local_19 = true;
     }
-    bool _e39 = local_19;
-    if (_e39) {
-        Connection _e40 = c_5;
-        return _e40;
+    bool _e44 = local_19;
+    if (_e44) {
+        Connection _e45 = c_5;
+        return _e45;
     }
-    metal::float3 _e42 = c_5.y;
-    metal::float3 v_13 = x_7 - _e42;
+    metal::float3 _e47 = c_5.y;
+    metal::float3 v_13 = x_7 - _e47;
     float d2_10 = metal::dot(v_13, v_13);
-    metal::float3 _e49 = light_intensity(l_4, v_13 / metal::float3(metal::sqrt(d2_10)));
-    float _e51 = c_5.cos_x;
-    float _e54 = rt2_4[li];
-    float _e56 = connection_factor(_e51, d2_10, s * _e54, w_res);
-    c_5.e = _e49 * _e56;
-    Connection _e58 = c_5;
-    return _e58;
+    metal::float3 _e54 = light_intensity(l_4, v_13 / metal::float3(metal::sqrt(d2_10)));
+    float _e56 = c_5.cos_x;
+    float _e59 = rt2_4[li];
+    float _e61 = connection_factor(_e56, d2_10, s * _e59, w_res);
+    c_5.e = _e54 * _e61;
+    Connection _e63 = c_5;
+    return _e63;
 }
 
 float light_range_scale(
@@ -1325,8 +1333,8 @@ WeightedPicks bsh_weighted_collect(
             uint _e21 = picks.n;
             picks.n = _e21 + 1u;
             uint _e25 = b_6;
-            uint li_4 = bsh_nodes[_e25].light;
-            float _e29 = light_weight(li_4, x_10, n_9, r_10, lobe_8, rl_7, rt2_4, light_cones, _buffer_sizes);
+            uint li_5 = bsh_nodes[_e25].light;
+            float _e29 = light_weight(li_5, x_10, n_9, r_10, lobe_8, rl_7, rt2_4, light_cones, _buffer_sizes);
             if (_e29 > 0.0) {
                 float _e33 = picks.w_sum;
                 picks.w_sum = _e33 + _e29;
@@ -1356,7 +1364,7 @@ WeightedPicks bsh_weighted_collect(
                         bool _e46 = weighted_replace(_e29, _e43, _e45);
                         if (_e46) {
                             uint _e48 = s_1;
-                            picks.light.inner[_e48] = li_4;
+                            picks.light.inner[_e48] = li_5;
                             uint _e51 = s_1;
                             picks.w.inner[_e51] = _e29;
                         }
@@ -1379,7 +1387,7 @@ metal::float4 surface_at(
     return (p_8.w > 0.0) ? metal::float4(p_8.xyz, 1.0) : metal::float4(0.0);
 }
 
-Shaded shade_pick(
+Shaded shade_pick_traced(
     uint li_3,
     metal::float3 x_11,
     metal::float3 n_10,
@@ -1390,6 +1398,7 @@ Shaded shade_pick(
     float u1_3,
     float u2_3,
     float eps_1,
+    bool trace_2,
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
     constant ViewParams& view,
@@ -1400,25 +1409,49 @@ Shaded shade_pick(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Shaded s_2 = {};
-    float _e11 = light_range_scale(li_3, x_11, r_11, rl_8, light_cones, _buffer_sizes);
-    Connection _e12 = connect(li_3, x_11, n_10, n_10, _e11, w_5, u1_3, u2_3, eps_1, geo_nodes, geo_tris, lights, rt2_4, r2_3, _buffer_sizes);
-    s_2.e = _e12.e;
+    float _e12 = light_range_scale(li_3, x_11, r_11, rl_8, light_cones, _buffer_sizes);
+    Connection _e13 = connect_traced(li_3, x_11, n_10, n_10, _e12, w_5, u1_3, u2_3, eps_1, trace_2, geo_nodes, geo_tris, lights, rt2_4, r2_3, _buffer_sizes);
+    s_2.e = _e13.e;
     s_2.diffuse = metal::float3(0.0);
     s_2.specular = metal::float3(0.0);
-    if (_e12.cos_x > 0.0) {
-        metal::float3 l_5 = metal::normalize(_e12.y - x_11);
-        metal::float3 _e32 = view.f0_d;
-        float _e35 = view.f90_d;
-        float _e37 = half_cosine(m_1.v, l_5);
-        metal::float3 _e38 = diffuse_brdf(m_1.base, m_1.metallic, _e32, _e35, _e37);
-        s_2.diffuse = _e38 * _e12.e;
-        metal::float3 _e46 = view.f0_d;
-        float _e49 = view.f90_d;
-        metal::float3 _e52 = specular_brdf(m_1.base, m_1.metallic, _e46, _e49, m_1.alpha, n_10, m_1.v, l_5);
-        s_2.specular = _e52 * _e12.e;
+    if (_e13.cos_x > 0.0) {
+        metal::float3 l_5 = metal::normalize(_e13.y - x_11);
+        metal::float3 _e33 = view.f0_d;
+        float _e36 = view.f90_d;
+        float _e38 = half_cosine(m_1.v, l_5);
+        metal::float3 _e39 = diffuse_brdf(m_1.base, m_1.metallic, _e33, _e36, _e38);
+        s_2.diffuse = _e39 * _e13.e;
+        metal::float3 _e47 = view.f0_d;
+        float _e50 = view.f90_d;
+        metal::float3 _e53 = specular_brdf(m_1.base, m_1.metallic, _e47, _e50, m_1.alpha, n_10, m_1.v, l_5);
+        s_2.specular = _e53 * _e13.e;
     }
-    Shaded _e55 = s_2;
-    return _e55;
+    Shaded _e56 = s_2;
+    return _e56;
+}
+
+Shaded shade_pick(
+    uint li_4,
+    metal::float3 x_12,
+    metal::float3 n_11,
+    metal::float3 r_12,
+    metal::float4 rl_9,
+    Material m_2,
+    float w_6,
+    float u1_4,
+    float u2_4,
+    float eps_2,
+    device type_6 const& geo_nodes,
+    device type_7 const& geo_tris,
+    constant ViewParams& view,
+    device type_11 const& lights,
+    device type_4 const& rt2_4,
+    device type_4 const& r2_3,
+    device type_13 const& light_cones,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Shaded _e11 = shade_pick_traced(li_4, x_12, n_11, r_12, rl_9, m_2, w_6, u1_4, u2_4, eps_2, true, geo_nodes, geo_tris, view, lights, rt2_4, r2_3, light_cones, _buffer_sizes);
+    return _e11;
 }
 
 Shaded add(
@@ -1486,30 +1519,30 @@ kernel void main_(
         specular_tex.write(metal::float4(0.0), metal::uint2(texel_1));
         return;
     }
-    metal::float3 x_12 = _e21.xyz;
-    metal::float3 n_13 = nn / metal::float3(metal::sqrt(len2_1));
-    r = n_13;
+    metal::float3 x_13 = _e21.xyz;
+    metal::float3 n_14 = nn / metal::float3(metal::sqrt(len2_1));
+    r = n_14;
     metal::float4 mr = metal_rough_tex.read(metal::uint2(texel_1), 0);
     metal::float4 _e61 = base_color_tex.read(metal::uint2(texel_1), 0);
     float _e67 = ggx_alpha(metal::saturate(mr.y));
     metal::float3 _e70 = view.eye;
-    m = Material {_e61.xyz, metal::saturate(mr.z), _e67, {}, metal::normalize(_e70 - x_12), mr.y, 0.0};
+    m = Material {_e61.xyz, metal::saturate(mr.z), _e67, {}, metal::normalize(_e70 - x_13), mr.y, 0.0};
     metal::float3 _e77 = m.base;
     float _e79 = m.metallic;
     metal::float3 _e82 = view.f0_d;
     float _e85 = view.f90_d;
     float _e87 = m.alpha;
     metal::float3 _e89 = m.v;
-    metal::float4 _e91 = receiver_lobe(_e77, _e79, _e82, _e85, _e87, metal::dot(n_13, _e89));
+    metal::float4 _e91 = receiver_lobe(_e77, _e79, _e82, _e85, _e87, metal::dot(n_14, _e89));
     lobe = _e91;
     metal::float3 _e93 = m.v;
-    metal::float3 _e94 = mirror_dir(n_13, _e93);
+    metal::float3 _e94 = mirror_dir(n_14, _e93);
     r = _e94;
     metal::float4 _e95 = lobe;
     metal::float4 _e96 = range_lobe(_e95);
     float _e99 = view.shadow_offset;
     metal::float3 _e102 = view.eye;
-    float eps_2 = _e99 * metal::length(_e102 - x_12);
+    float eps_3 = _e99 * metal::length(_e102 - x_13);
     uint _e108 = view.seed;
     uint _e112 = view.width;
     uint _e118 = view.frame;
@@ -1518,7 +1551,7 @@ kernel void main_(
     h = _e120;
     metal::float3 _e130 = r;
     metal::float4 _e131 = lobe;
-    WeightedPicks _e132 = bsh_weighted_collect(x_12, n_13, _e130, _e131, _e96, _e119, rt2_4, bsh_nodes, light_cones, _buffer_sizes);
+    WeightedPicks _e132 = bsh_weighted_collect(x_13, n_14, _e130, _e131, _e96, _e119, rt2_4, bsh_nodes, light_cones, _buffer_sizes);
     if (_e132.w_sum > 0.0) {
         uint2 loop_bound_5 = uint2(4294967295u);
         bool loop_init_3 = true;
@@ -1547,9 +1580,9 @@ kernel void main_(
                 uint _e147 = h;
                 float _e148 = xi_from_bits(_e147);
                 uint _e150 = k;
-                uint li_5 = _e132.light.inner[_e150];
+                uint li_6 = _e132.light.inner[_e150];
                 copies = 1u;
-                uint _e157 = lights[li_5].kind;
+                uint _e157 = lights[li_6].kind;
                 if (_e157 != LIGHT_TRIANGLE) {
                     j = 0u;
                     uint2 loop_bound_6 = uint2(4294967295u);
@@ -1572,7 +1605,7 @@ kernel void main_(
                             uint _e166 = k;
                             if (_e165 != _e166) {
                                 uint _e171 = j;
-                                local_2 = _e132.light.inner[_e171] == li_5;
+                                local_2 = _e132.light.inner[_e171] == li_6;
                             } else {
                                 local_2 = false;
                             }
@@ -1598,7 +1631,7 @@ kernel void main_(
                     uint _e194 = k;
                     float _e197 = weighted_pick_weight(_e132.w_sum, _e132.w.inner[_e194], K);
                     uint _e198 = copies;
-                    Shaded _e201 = shade_pick(li_5, x_12, n_13, _e190, _e96, _e191, _e197 * static_cast<float>(_e198), _e144, _e148, eps_2, geo_nodes, geo_tris, view, lights, rt2_4, r2_3, light_cones, _buffer_sizes);
+                    Shaded _e201 = shade_pick(li_6, x_13, n_14, _e190, _e96, _e191, _e197 * static_cast<float>(_e198), _e144, _e148, eps_3, geo_nodes, geo_tris, view, lights, rt2_4, r2_3, light_cones, _buffer_sizes);
                     Shaded _e202 = add(_e189, _e201);
                     t = _e202;
                 }

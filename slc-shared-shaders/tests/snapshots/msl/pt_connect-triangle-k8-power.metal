@@ -462,11 +462,11 @@ float mis_power(
     float pdf_b
 ) {
     float a2_ = pdf_a * pdf_a;
-    float s_2 = a2_ + (pdf_b * pdf_b);
-    if (s_2 <= 0.0) {
+    float s_3 = a2_ + (pdf_b * pdf_b);
+    if (s_3 <= 0.0) {
         return 0.0;
     }
-    return a2_ / s_2;
+    return a2_ / s_3;
 }
 
 float light_strategy_pdf(
@@ -507,17 +507,17 @@ float cosine_pdf(
 metal::float3 onb_tangent(
     metal::float3 n_6
 ) {
-    float s_3 = (n_6.z >= 0.0) ? 1.0 : -1.0;
-    float a_9 = -1.0 / (s_3 + n_6.z);
-    return metal::float3(1.0 + (((s_3 * n_6.x) * n_6.x) * a_9), ((s_3 * n_6.x) * n_6.y) * a_9, -(s_3) * n_6.x);
+    float s_4 = (n_6.z >= 0.0) ? 1.0 : -1.0;
+    float a_9 = -1.0 / (s_4 + n_6.z);
+    return metal::float3(1.0 + (((s_4 * n_6.x) * n_6.x) * a_9), ((s_4 * n_6.x) * n_6.y) * a_9, -(s_4) * n_6.x);
 }
 
 metal::float3 onb_bitangent(
     metal::float3 n_7
 ) {
-    float s_4 = (n_7.z >= 0.0) ? 1.0 : -1.0;
-    float a_10 = -1.0 / (s_4 + n_7.z);
-    return metal::float3((n_7.x * n_7.y) * a_10, s_4 + ((n_7.y * n_7.y) * a_10), -(n_7.y));
+    float s_5 = (n_7.z >= 0.0) ? 1.0 : -1.0;
+    float a_10 = -1.0 / (s_5 + n_7.z);
+    return metal::float3((n_7.x * n_7.y) * a_10, s_5 + ((n_7.y * n_7.y) * a_10), -(n_7.y));
 }
 
 metal::float3 onb_to_local(
@@ -779,9 +779,9 @@ float bounded_vndf_k(
     float alpha_6
 ) {
     float a_11 = metal::saturate(alpha_6);
-    float s_5 = 1.0 + metal::sqrt((wi.x * wi.x) + (wi.y * wi.y));
+    float s_6 = 1.0 + metal::sqrt((wi.x * wi.x) + (wi.y * wi.y));
     float a2_3 = a_11 * a_11;
-    float s2_ = s_5 * s_5;
+    float s2_ = s_6 * s_6;
     return ((1.0 - a2_3) * s2_) / (s2_ + ((a2_3 * wi.z) * wi.z));
 }
 
@@ -954,8 +954,8 @@ metal::float3 triangle_normal(
     metal::float3 c_3
 ) {
     bool local_15 = {};
-    metal::float3 n_17 = metal::cross(b_4 - a_5, c_3 - a_5);
-    float l2_ = metal::dot(n_17, n_17);
+    metal::float3 n_18 = metal::cross(b_4 - a_5, c_3 - a_5);
+    float l2_ = metal::dot(n_18, n_18);
     if (!(!((l2_ > 0.0)))) {
         local_15 = !((l2_ < 300000000000000000000000000000000000000.0));
     } else {
@@ -965,7 +965,7 @@ metal::float3 triangle_normal(
     if (_e17) {
         return metal::float3(0.0, 0.0, 0.0);
     }
-    return n_17 / metal::float3(metal::sqrt(l2_));
+    return n_18 / metal::float3(metal::sqrt(l2_));
 }
 
 float ray_triangle(
@@ -988,8 +988,8 @@ float ray_triangle(
         return -1.0;
     }
     float inv_1 = 1.0 / det;
-    metal::float3 s_6 = o_1 - a_6;
-    float u_2 = metal::dot(s_6, p_2) * inv_1;
+    metal::float3 s_7 = o_1 - a_6;
+    float u_2 = metal::dot(s_7, p_2) * inv_1;
     if (!((u_2 < 0.0))) {
         local_16 = u_2 > 1.0;
     } else {
@@ -999,7 +999,7 @@ float ray_triangle(
     if (_e28) {
         return -1.0;
     }
-    metal::float3 q = metal::cross(s_6, e1_);
+    metal::float3 q = metal::cross(s_7, e1_);
     float v_11 = metal::dot(d_3, q) * inv_1;
     if (!((v_11 < 0.0))) {
         local_17 = (u_2 + v_11) > 1.0;
@@ -1097,12 +1097,12 @@ GeoHit trace(
         if (metal::all(loop_bound == uint2(0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         uint _e21 = node_2;
-        GpuGeoNode n_18 = geo_nodes[_e21];
+        GpuGeoNode n_19 = geo_nodes[_e21];
         float _e27 = hit.t;
-        float _e28 = ray_aabb(o_2, _e14, n_18.bmin, n_18.bmax, _e27);
+        float _e28 = ray_aabb(o_2, _e14, n_19.bmin, n_19.bmax, _e27);
         if (_e28 >= 0.0) {
-            if (n_18.count > 0u) {
-                i = n_18.first;
+            if (n_19.count > 0u) {
+                i = n_19.first;
                 uint2 loop_bound_1 = uint2(4294967295u);
                 bool loop_init = true;
                 while(true) {
@@ -1114,7 +1114,7 @@ GeoHit trace(
                     }
                     loop_init = false;
                     uint _e36 = i;
-                    if (_e36 < (n_18.first + n_18.count)) {
+                    if (_e36 < (n_19.first + n_19.count)) {
                     } else {
                         break;
                     }
@@ -1138,11 +1138,11 @@ GeoHit trace(
                 uint _e60 = sp;
                 if (_e60 < 64u) {
                     uint _e63 = sp;
-                    stack.inner[_e63] = n_18.first + 1u;
+                    stack.inner[_e63] = n_19.first + 1u;
                     uint _e68 = sp;
                     sp = _e68 + 1u;
                 }
-                node_2 = n_18.first;
+                node_2 = n_19.first;
                 continue;
             }
         }
@@ -1365,7 +1365,7 @@ Picks bsh_collect(
     return _e49;
 }
 
-Connection connect(
+Connection connect_traced(
     uint li,
     metal::float3 x_7,
     metal::float3 n_13,
@@ -1375,6 +1375,7 @@ Connection connect(
     float u1_2,
     float u2_2,
     float eps,
+    bool trace_1,
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
     device type_11 const& lights,
@@ -1384,37 +1385,65 @@ Connection connect(
 ) {
     Connection c_5 = {};
     bool local_21 = {};
+    bool local_22 = {};
     c_5.e = metal::float3(0.0);
     GpuLight l_8 = lights[li];
-    metal::float3 _e17 = light_point(l_8, u1_2, u2_2);
-    c_5.y = _e17;
-    metal::float3 _e20 = c_5.y;
-    float _e23 = r2_2[li];
-    float _e25 = connection_cosine(x_7, _e20, n_13, ng_1, s_1 * _e23);
-    c_5.cos_x = _e25;
-    float _e27 = c_5.cos_x;
-    if (!((_e27 <= 0.0))) {
-        metal::float3 _e36 = c_5.y;
-        bool _e37 = occluded(x_7 + (ng_1 * eps), _e36, geo_nodes, geo_tris, _buffer_sizes);
-        local_21 = _e37;
+    metal::float3 _e18 = light_point(l_8, u1_2, u2_2);
+    c_5.y = _e18;
+    metal::float3 _e21 = c_5.y;
+    float _e24 = r2_2[li];
+    float _e26 = connection_cosine(x_7, _e21, n_13, ng_1, s_1 * _e24);
+    c_5.cos_x = _e26;
+    float _e28 = c_5.cos_x;
+    if (!((_e28 <= 0.0))) {
+        if (trace_1) {
+            metal::float3 _e39 = c_5.y;
+            bool _e40 = occluded(x_7 + (ng_1 * eps), _e39, geo_nodes, geo_tris, _buffer_sizes);
+            local_22 = _e40;
+        } else {
+            local_22 = false;
+        }
+        bool _e42 = local_22;
+        local_21 = _e42;
     } else {
         local_21 = true;
     }
-    bool _e39 = local_21;
-    if (_e39) {
-        Connection _e40 = c_5;
-        return _e40;
+    bool _e44 = local_21;
+    if (_e44) {
+        Connection _e45 = c_5;
+        return _e45;
     }
-    metal::float3 _e42 = c_5.y;
-    metal::float3 v_13 = x_7 - _e42;
+    metal::float3 _e47 = c_5.y;
+    metal::float3 v_13 = x_7 - _e47;
     float d2_11 = metal::dot(v_13, v_13);
-    metal::float3 _e49 = light_intensity(l_8, v_13 / metal::float3(metal::sqrt(d2_11)));
-    float _e51 = c_5.cos_x;
-    float _e54 = rt2_4[li];
-    float _e56 = connection_factor(_e51, d2_11, s_1 * _e54, w_res);
-    c_5.e = _e49 * _e56;
-    Connection _e58 = c_5;
-    return _e58;
+    metal::float3 _e54 = light_intensity(l_8, v_13 / metal::float3(metal::sqrt(d2_11)));
+    float _e56 = c_5.cos_x;
+    float _e59 = rt2_4[li];
+    float _e61 = connection_factor(_e56, d2_11, s_1 * _e59, w_res);
+    c_5.e = _e54 * _e61;
+    Connection _e63 = c_5;
+    return _e63;
+}
+
+Connection connect(
+    uint li_1,
+    metal::float3 x_8,
+    metal::float3 n_14,
+    metal::float3 ng_2,
+    float s_2,
+    float w_res_1,
+    float u1_3,
+    float u2_3,
+    float eps_1,
+    device type_6 const& geo_nodes,
+    device type_7 const& geo_tris,
+    device type_11 const& lights,
+    device type_4 const& r2_2,
+    device type_4 const& rt2_4,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Connection _e10 = connect_traced(li_1, x_8, n_14, ng_2, s_2, w_res_1, u1_3, u2_3, eps_1, true, geo_nodes, geo_tris, lights, r2_2, rt2_4, _buffer_sizes);
+    return _e10;
 }
 
 float mis_weight(
@@ -1426,22 +1455,22 @@ float mis_weight(
 }
 
 float light_range_scale(
-    uint li_1,
-    metal::float3 x_8,
+    uint li_2,
+    metal::float3 x_9,
     metal::float3 r_6,
     metal::float4 rl_6,
     device type_12 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuLightCone c_10 = light_cones[li_1];
-    float _e9 = range_scale_toward(rl_6, c_10.center, c_10.radius, x_8, r_6);
+    GpuLightCone c_10 = light_cones[li_2];
+    float _e9 = range_scale_toward(rl_6, c_10.center, c_10.radius, x_9, r_6);
     return _e9;
 }
 
 float select_pdf(
-    uint li_2,
-    metal::float3 x_9,
-    metal::float3 n_14,
+    uint li_3,
+    metal::float3 x_10,
+    metal::float3 n_15,
     metal::float3 r_7,
     metal::float4 lobe_5,
     metal::float4 rl_7,
@@ -1453,8 +1482,8 @@ float select_pdf(
 }
 
 float light_pdf_selected(
-    uint li_3,
-    metal::float3 x_10,
+    uint li_4,
+    metal::float3 x_11,
     metal::float3 r_8,
     metal::float4 rl_8,
     metal::float3 y_1,
@@ -1464,22 +1493,22 @@ float light_pdf_selected(
     device type_12 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuLight l_9 = lights[li_3];
-    metal::float3 v_14 = x_10 - y_1;
+    GpuLight l_9 = lights[li_4];
+    metal::float3 v_14 = x_11 - y_1;
     float d2_12 = metal::dot(v_14, v_14);
     metal::float3 _e11 = light_normal(l_9);
     float cos_y_1 = (d2_12 > 0.0) ? metal::dot(_e11, v_14 / metal::float3(metal::sqrt(d2_12))) : 0.0;
-    float _e20 = light_range_scale(li_3, x_10, r_8, rl_8, light_cones, _buffer_sizes);
-    float _e23 = rt2_4[li_3];
+    float _e20 = light_range_scale(li_4, x_11, r_8, rl_8, light_cones, _buffer_sizes);
+    float _e23 = rt2_4[li_4];
     float _e25 = light_area(l_9);
     float _e26 = light_strategy_pdf(sel, _e20 * _e23, d2_12, _e25, cos_y_1);
     return _e26;
 }
 
 float light_pdf(
-    uint li_4,
-    metal::float3 x_11,
-    metal::float3 n_15,
+    uint li_5,
+    metal::float3 x_12,
+    metal::float3 n_16,
     metal::float3 r_9,
     metal::float4 lobe_6,
     metal::float4 rl_9,
@@ -1491,16 +1520,16 @@ float light_pdf(
     device type_12 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e9 = select_pdf(li_4, x_11, n_15, r_9, lobe_6, rl_9, nee_1, in_range_2);
-    float _e10 = light_pdf_selected(li_4, x_11, r_9, rl_9, y_2, _e9, lights, rt2_4, light_cones, _buffer_sizes);
+    float _e9 = select_pdf(li_5, x_12, n_16, r_9, lobe_6, rl_9, nee_1, in_range_2);
+    float _e10 = light_pdf_selected(li_5, x_12, r_9, rl_9, y_2, _e9, lights, rt2_4, light_cones, _buffer_sizes);
     return _e10;
 }
 
 metal::float3 shade_pick(
-    uint li_5,
-    metal::float3 x_12,
-    metal::float3 n_16,
-    metal::float3 ng_2,
+    uint li_6,
+    metal::float3 x_13,
+    metal::float3 n_17,
+    metal::float3 ng_3,
     GpuMaterial m,
     metal::float3 wo_1,
     metal::float3 r_10,
@@ -1508,8 +1537,8 @@ metal::float3 shade_pick(
     metal::float4 rl_10,
     float w_4,
     uint nee_2,
-    float u1_3,
-    float u2_3,
+    float u1_4,
+    float u2_4,
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
     device type_11 const& lights,
@@ -1520,23 +1549,23 @@ metal::float3 shade_pick(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     float mis = 1.0;
-    float _e13 = light_range_scale(li_5, x_12, r_10, rl_10, light_cones, _buffer_sizes);
+    float _e13 = light_range_scale(li_6, x_13, r_10, rl_10, light_cones, _buffer_sizes);
     float _e16 = params.eps;
-    Connection _e17 = connect(li_5, x_12, n_16, ng_2, _e13, w_4, u1_3, u2_3, _e16, geo_nodes, geo_tris, lights, r2_2, rt2_4, _buffer_sizes);
+    Connection _e17 = connect(li_6, x_13, n_17, ng_3, _e13, w_4, u1_4, u2_4, _e16, geo_nodes, geo_tris, lights, r2_2, rt2_4, _buffer_sizes);
     if (_e17.cos_x <= 0.0) {
         return metal::float3(0.0);
     }
-    metal::float3 l_10 = metal::normalize(_e17.y - x_12);
-    GpuLight _e30 = lights[li_5];
+    metal::float3 l_10 = metal::normalize(_e17.y - x_13);
+    GpuLight _e30 = lights[li_6];
     float _e31 = light_area(_e30);
     if (_e31 > 0.0) {
-        float _e36 = light_pdf(li_5, x_12, n_16, r_10, lobe_7, rl_10, _e17.y, nee_2, true, lights, rt2_4, light_cones, _buffer_sizes);
+        float _e36 = light_pdf(li_6, x_13, n_17, r_10, lobe_7, rl_10, _e17.y, nee_2, true, lights, rt2_4, light_cones, _buffer_sizes);
         float _e38 = specular_probability(lobe_7);
-        float _e39 = bsdf_pdf(n_16, wo_1, l_10, m.alpha, _e38);
+        float _e39 = bsdf_pdf(n_17, wo_1, l_10, m.alpha, _e38);
         float _e40 = mis_weight(_e36, _e39);
         mis = _e40;
     }
-    metal::float3 _e46 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_16, wo_1, l_10);
+    metal::float3 _e46 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_17, wo_1, l_10);
     float _e49 = mis;
     return (_e46 * _e17.e) * _e49;
 }
@@ -1572,20 +1601,20 @@ kernel void main_(
         candidates[i_4] = 0u;
         return;
     }
-    metal::float3 x_13 = vtx.position;
-    metal::float3 n_19 = vtx.normal;
-    metal::float3 ng_3 = vtx.gnormal;
+    metal::float3 x_14 = vtx.position;
+    metal::float3 n_20 = vtx.normal;
+    metal::float3 ng_4 = vtx.gnormal;
     GpuMaterial m_2 = materials[vtx.material];
     metal::float3 wo_2 = vtx.wo;
-    metal::float3 _e23 = mirror_dir(n_19, wo_2);
-    metal::float4 _e30 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, metal::dot(n_19, wo_2));
+    metal::float3 _e23 = mirror_dir(n_20, wo_2);
+    metal::float4 _e30 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, metal::dot(n_20, wo_2));
     metal::float4 _e31 = range_lobe(_e30);
     uint _e34 = params.seed;
     uint _e37 = params.frame;
     uint _e38 = point_stream(_e34, i_4, _e37);
     uint _e39 = pick_stream(_e38);
     h = _e39;
-    Picks _e44 = bsh_collect(x_13, _e23, _e31, _e38, bsh_nodes, _buffer_sizes);
+    Picks _e44 = bsh_collect(x_14, _e23, _e31, _e38, bsh_nodes, _buffer_sizes);
     candidates[i_4] = _e44.n;
     float _e50 = reservoir_weight(_e44.n, K);
     uint2 loop_bound_4 = uint2(4294967295u);
@@ -1616,7 +1645,7 @@ kernel void main_(
             uint _e66 = s;
             uint _e69 = h;
             float _e70 = xi_from_bits(_e69);
-            metal::float3 _e71 = shade_pick(_e44.light.inner[_e66], x_13, n_19, ng_3, m_2, wo_2, _e23, _e30, _e31, _e50, _e44.n, _e61, _e70, geo_nodes, geo_tris, lights, r2_2, rt2_4, light_cones, params, _buffer_sizes);
+            metal::float3 _e71 = shade_pick(_e44.light.inner[_e66], x_14, n_20, ng_4, m_2, wo_2, _e23, _e30, _e31, _e50, _e44.n, _e61, _e70, geo_nodes, geo_tris, lights, r2_2, rt2_4, light_cones, params, _buffer_sizes);
             sum = _e64 + _e71;
         }
     }

@@ -340,11 +340,11 @@ float mis_power(
     float pdf_b
 ) {
     float a2_ = pdf_a * pdf_a;
-    float s_1 = a2_ + (pdf_b * pdf_b);
-    if (s_1 <= 0.0) {
+    float s_2 = a2_ + (pdf_b * pdf_b);
+    if (s_2 <= 0.0) {
         return 0.0;
     }
-    return a2_ / s_1;
+    return a2_ / s_2;
 }
 
 float light_strategy_pdf(
@@ -385,17 +385,17 @@ float cosine_pdf(
 metal::float3 onb_tangent(
     metal::float3 n_2
 ) {
-    float s_2 = (n_2.z >= 0.0) ? 1.0 : -1.0;
-    float a_7 = -1.0 / (s_2 + n_2.z);
-    return metal::float3(1.0 + (((s_2 * n_2.x) * n_2.x) * a_7), ((s_2 * n_2.x) * n_2.y) * a_7, -(s_2) * n_2.x);
+    float s_3 = (n_2.z >= 0.0) ? 1.0 : -1.0;
+    float a_7 = -1.0 / (s_3 + n_2.z);
+    return metal::float3(1.0 + (((s_3 * n_2.x) * n_2.x) * a_7), ((s_3 * n_2.x) * n_2.y) * a_7, -(s_3) * n_2.x);
 }
 
 metal::float3 onb_bitangent(
     metal::float3 n_3
 ) {
-    float s_3 = (n_3.z >= 0.0) ? 1.0 : -1.0;
-    float a_8 = -1.0 / (s_3 + n_3.z);
-    return metal::float3((n_3.x * n_3.y) * a_8, s_3 + ((n_3.y * n_3.y) * a_8), -(n_3.y));
+    float s_4 = (n_3.z >= 0.0) ? 1.0 : -1.0;
+    float a_8 = -1.0 / (s_4 + n_3.z);
+    return metal::float3((n_3.x * n_3.y) * a_8, s_4 + ((n_3.y * n_3.y) * a_8), -(n_3.y));
 }
 
 metal::float3 onb_to_local(
@@ -657,9 +657,9 @@ float bounded_vndf_k(
     float alpha_6
 ) {
     float a_9 = metal::saturate(alpha_6);
-    float s_4 = 1.0 + metal::sqrt((wi.x * wi.x) + (wi.y * wi.y));
+    float s_5 = 1.0 + metal::sqrt((wi.x * wi.x) + (wi.y * wi.y));
     float a2_3 = a_9 * a_9;
-    float s2_ = s_4 * s_4;
+    float s2_ = s_5 * s_5;
     return ((1.0 - a2_3) * s2_) / (s2_ + ((a2_3 * wi.z) * wi.z));
 }
 
@@ -928,9 +928,9 @@ float bvh_first_prob(
     float c0_,
     float c1_
 ) {
-    float s_5 = c0_ + c1_;
-    if (s_5 > 0.0) {
-        return c0_ / s_5;
+    float s_6 = c0_ + c1_;
+    if (s_6 > 0.0) {
+        return c0_ / s_6;
     }
     return -1.0;
 }
@@ -1012,8 +1012,8 @@ metal::float3 triangle_normal(
     metal::float3 c_2
 ) {
     bool local_15 = {};
-    metal::float3 n_17 = metal::cross(b_3 - a_4, c_2 - a_4);
-    float l2_ = metal::dot(n_17, n_17);
+    metal::float3 n_18 = metal::cross(b_3 - a_4, c_2 - a_4);
+    float l2_ = metal::dot(n_18, n_18);
     if (!(!((l2_ > 0.0)))) {
         local_15 = !((l2_ < 300000000000000000000000000000000000000.0));
     } else {
@@ -1023,7 +1023,7 @@ metal::float3 triangle_normal(
     if (_e17) {
         return metal::float3(0.0, 0.0, 0.0);
     }
-    return n_17 / metal::float3(metal::sqrt(l2_));
+    return n_18 / metal::float3(metal::sqrt(l2_));
 }
 
 float ray_triangle(
@@ -1046,8 +1046,8 @@ float ray_triangle(
         return -1.0;
     }
     float inv_1 = 1.0 / det;
-    metal::float3 s_6 = o_1 - a_5;
-    float u_3 = metal::dot(s_6, p_7) * inv_1;
+    metal::float3 s_7 = o_1 - a_5;
+    float u_3 = metal::dot(s_7, p_7) * inv_1;
     if (!((u_3 < 0.0))) {
         local_16 = u_3 > 1.0;
     } else {
@@ -1057,7 +1057,7 @@ float ray_triangle(
     if (_e28) {
         return -1.0;
     }
-    metal::float3 q = metal::cross(s_6, e1_);
+    metal::float3 q = metal::cross(s_7, e1_);
     float v_11 = metal::dot(d_3, q) * inv_1;
     if (!((v_11 < 0.0))) {
         local_17 = (u_3 + v_11) > 1.0;
@@ -1155,12 +1155,12 @@ GeoHit trace(
         if (metal::all(loop_bound == uint2(0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         uint _e21 = node;
-        GpuGeoNode n_18 = geo_nodes[_e21];
+        GpuGeoNode n_19 = geo_nodes[_e21];
         float _e27 = hit.t;
-        float _e28 = ray_aabb(o_2, _e14, n_18.bmin, n_18.bmax, _e27);
+        float _e28 = ray_aabb(o_2, _e14, n_19.bmin, n_19.bmax, _e27);
         if (_e28 >= 0.0) {
-            if (n_18.count > 0u) {
-                i = n_18.first;
+            if (n_19.count > 0u) {
+                i = n_19.first;
                 uint2 loop_bound_1 = uint2(4294967295u);
                 bool loop_init = true;
                 while(true) {
@@ -1172,7 +1172,7 @@ GeoHit trace(
                     }
                     loop_init = false;
                     uint _e36 = i;
-                    if (_e36 < (n_18.first + n_18.count)) {
+                    if (_e36 < (n_19.first + n_19.count)) {
                     } else {
                         break;
                     }
@@ -1196,11 +1196,11 @@ GeoHit trace(
                 uint _e60 = sp;
                 if (_e60 < 64u) {
                     uint _e63 = sp;
-                    stack.inner[_e63] = n_18.first + 1u;
+                    stack.inner[_e63] = n_19.first + 1u;
                     uint _e68 = sp;
                     sp = _e68 + 1u;
                 }
-                node = n_18.first;
+                node = n_19.first;
                 continue;
             }
         }
@@ -1235,7 +1235,7 @@ bool occluded(
     return _e12.tri != NO_LIGHT;
 }
 
-Connection connect(
+Connection connect_traced(
     uint li,
     metal::float3 x_4,
     metal::float3 n_12,
@@ -1245,6 +1245,7 @@ Connection connect(
     float u1_2,
     float u2_2,
     float eps,
+    bool trace_1,
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
     device type_9 const& lights,
@@ -1254,37 +1255,65 @@ Connection connect(
 ) {
     Connection c_4 = {};
     bool local_19 = {};
+    bool local_20 = {};
     c_4.e = metal::float3(0.0);
     GpuLight l_8 = lights[li];
-    metal::float3 _e17 = light_point(l_8, u1_2, u2_2);
-    c_4.y = _e17;
-    metal::float3 _e20 = c_4.y;
-    float _e23 = r2_3[li];
-    float _e25 = connection_cosine(x_4, _e20, n_12, ng_1, s * _e23);
-    c_4.cos_x = _e25;
-    float _e27 = c_4.cos_x;
-    if (!((_e27 <= 0.0))) {
-        metal::float3 _e36 = c_4.y;
-        bool _e37 = occluded(x_4 + (ng_1 * eps), _e36, geo_nodes, geo_tris, _buffer_sizes);
-        local_19 = _e37;
+    metal::float3 _e18 = light_point(l_8, u1_2, u2_2);
+    c_4.y = _e18;
+    metal::float3 _e21 = c_4.y;
+    float _e24 = r2_3[li];
+    float _e26 = connection_cosine(x_4, _e21, n_12, ng_1, s * _e24);
+    c_4.cos_x = _e26;
+    float _e28 = c_4.cos_x;
+    if (!((_e28 <= 0.0))) {
+        if (trace_1) {
+            metal::float3 _e39 = c_4.y;
+            bool _e40 = occluded(x_4 + (ng_1 * eps), _e39, geo_nodes, geo_tris, _buffer_sizes);
+            local_20 = _e40;
+        } else {
+            local_20 = false;
+        }
+        bool _e42 = local_20;
+        local_19 = _e42;
     } else {
         local_19 = true;
     }
-    bool _e39 = local_19;
-    if (_e39) {
-        Connection _e40 = c_4;
-        return _e40;
+    bool _e44 = local_19;
+    if (_e44) {
+        Connection _e45 = c_4;
+        return _e45;
     }
-    metal::float3 _e42 = c_4.y;
-    metal::float3 v_12 = x_4 - _e42;
+    metal::float3 _e47 = c_4.y;
+    metal::float3 v_12 = x_4 - _e47;
     float d2_10 = metal::dot(v_12, v_12);
-    metal::float3 _e49 = light_intensity(l_8, v_12 / metal::float3(metal::sqrt(d2_10)));
-    float _e51 = c_4.cos_x;
-    float _e54 = rt2_4[li];
-    float _e56 = connection_factor(_e51, d2_10, s * _e54, w_res);
-    c_4.e = _e49 * _e56;
-    Connection _e58 = c_4;
-    return _e58;
+    metal::float3 _e54 = light_intensity(l_8, v_12 / metal::float3(metal::sqrt(d2_10)));
+    float _e56 = c_4.cos_x;
+    float _e59 = rt2_4[li];
+    float _e61 = connection_factor(_e56, d2_10, s * _e59, w_res);
+    c_4.e = _e54 * _e61;
+    Connection _e63 = c_4;
+    return _e63;
+}
+
+Connection connect(
+    uint li_1,
+    metal::float3 x_5,
+    metal::float3 n_13,
+    metal::float3 ng_2,
+    float s_1,
+    float w_res_1,
+    float u1_3,
+    float u2_3,
+    float eps_1,
+    device type_6 const& geo_nodes,
+    device type_7 const& geo_tris,
+    device type_9 const& lights,
+    device type_4 const& r2_3,
+    device type_4 const& rt2_4,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Connection _e10 = connect_traced(li_1, x_5, n_13, ng_2, s_1, w_res_1, u1_3, u2_3, eps_1, true, geo_nodes, geo_tris, lights, r2_3, rt2_4, _buffer_sizes);
+    return _e10;
 }
 
 float mis_weight(
@@ -1296,15 +1325,15 @@ float mis_weight(
 }
 
 float light_range_scale(
-    uint li_1,
-    metal::float3 x_5,
+    uint li_2,
+    metal::float3 x_6,
     metal::float3 r_3,
     metal::float4 rl_2,
     device type_10 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuLightCone c_9 = light_cones[li_1];
-    float _e9 = range_scale_toward(rl_2, c_9.center, c_9.radius, x_5, r_3);
+    GpuLightCone c_9 = light_cones[li_2];
+    float _e9 = range_scale_toward(rl_2, c_9.center, c_9.radius, x_6, r_3);
     return _e9;
 }
 
@@ -1329,43 +1358,43 @@ uint light_bvh_count(
 float bvh_importance(
     BvhNodes nodes_2,
     uint i_2,
-    metal::float3 x_6,
-    metal::float3 n_13,
+    metal::float3 x_7,
+    metal::float3 n_14,
     metal::float3 r_4,
     metal::float4 lobe_7,
     device type_11 const& light_bvh,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuLightBvhNode _e6 = light_bvh_node(nodes_2, i_2, light_bvh, _buffer_sizes);
-    float _e13 = receiver_importance(_e6.center, _e6.radius, _e6.phi, _e6.axis, _e6.cos_o, _e6.cos_e, x_6, n_13, r_4, lobe_7);
+    float _e13 = receiver_importance(_e6.center, _e6.radius, _e6.phi, _e6.axis, _e6.cos_o, _e6.cos_e, x_7, n_14, r_4, lobe_7);
     return _e13;
 }
 
 float bvh_first(
     BvhNodes nodes_3,
     uint i_3,
-    metal::float3 x_7,
-    metal::float3 n_14,
+    metal::float3 x_8,
+    metal::float3 n_15,
     metal::float3 r_5,
     metal::float4 lobe_8,
     device type_11 const& light_bvh,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    bool local_20 = {};
+    bool local_21 = {};
     GpuLightBvhNode _e6 = light_bvh_node(nodes_3, i_3, light_bvh, _buffer_sizes);
     uint j = _e6.second;
     if (!((j <= (i_3 + 1u)))) {
         uint _e14 = light_bvh_count(nodes_3, light_bvh, _buffer_sizes);
-        local_20 = j >= _e14;
+        local_21 = j >= _e14;
     } else {
-        local_20 = true;
+        local_21 = true;
     }
-    bool _e17 = local_20;
+    bool _e17 = local_21;
     if (_e17) {
         return -1.0;
     }
-    float _e21 = bvh_importance(nodes_3, i_3 + 1u, x_7, n_14, r_5, lobe_8, light_bvh, _buffer_sizes);
-    float _e22 = bvh_importance(nodes_3, j, x_7, n_14, r_5, lobe_8, light_bvh, _buffer_sizes);
+    float _e21 = bvh_importance(nodes_3, i_3 + 1u, x_8, n_15, r_5, lobe_8, light_bvh, _buffer_sizes);
+    float _e22 = bvh_importance(nodes_3, j, x_8, n_15, r_5, lobe_8, light_bvh, _buffer_sizes);
     float _e23 = bvh_first_prob(_e21, _e22);
     return _e23;
 }
@@ -1377,8 +1406,8 @@ BvhPick bvh_pick_none(
 
 BvhPick light_bvh_sample(
     BvhNodes nodes_4,
-    metal::float3 x_8,
-    metal::float3 n_15,
+    metal::float3 x_9,
+    metal::float3 n_16,
     metal::float3 r_6,
     metal::float4 lobe_9,
     float u_in,
@@ -1389,7 +1418,7 @@ BvhPick light_bvh_sample(
     float u_2 = {};
     uint i_4 = 0u;
     float pmf = 1.0;
-    bool local_21 = {};
+    bool local_22 = {};
     BvhPick _e6 = bvh_pick_none();
     pick = _e6;
     u_2 = u_in;
@@ -1409,12 +1438,12 @@ BvhPick light_bvh_sample(
             if (_e17.second == LIGHT_BVH_LEAF) {
                 uint _e21 = i_4;
                 if (!((_e21 > 0u))) {
-                    float _e28 = bvh_importance(nodes_4, 0u, x_8, n_15, r_6, lobe_9, light_bvh, _buffer_sizes);
-                    local_21 = _e28 > 0.0;
+                    float _e28 = bvh_importance(nodes_4, 0u, x_9, n_16, r_6, lobe_9, light_bvh, _buffer_sizes);
+                    local_22 = _e28 > 0.0;
                 } else {
-                    local_21 = true;
+                    local_22 = true;
                 }
-                bool _e32 = local_21;
+                bool _e32 = local_22;
                 if (_e32) {
                     pick.light = _e17.light;
                     float _e36 = pmf;
@@ -1424,7 +1453,7 @@ BvhPick light_bvh_sample(
                 return _e37;
             }
             uint _e38 = i_4;
-            float _e39 = bvh_first(nodes_4, _e38, x_8, n_15, r_6, lobe_9, light_bvh, _buffer_sizes);
+            float _e39 = bvh_first(nodes_4, _e38, x_9, n_16, r_6, lobe_9, light_bvh, _buffer_sizes);
             if (_e39 < 0.0) {
                 BvhPick _e42 = pick;
                 return _e42;
@@ -1445,8 +1474,8 @@ BvhPick light_bvh_sample(
 }
 
 float light_pdf_selected(
-    uint li_2,
-    metal::float3 x_9,
+    uint li_3,
+    metal::float3 x_10,
     metal::float3 r_7,
     metal::float4 rl_3,
     metal::float3 y_1,
@@ -1456,23 +1485,23 @@ float light_pdf_selected(
     device type_10 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuLight l_9 = lights[li_2];
-    metal::float3 v_13 = x_9 - y_1;
+    GpuLight l_9 = lights[li_3];
+    metal::float3 v_13 = x_10 - y_1;
     float d2_11 = metal::dot(v_13, v_13);
     metal::float3 _e11 = light_normal(l_9);
     float cos_y_1 = (d2_11 > 0.0) ? metal::dot(_e11, v_13 / metal::float3(metal::sqrt(d2_11))) : 0.0;
-    float _e20 = light_range_scale(li_2, x_9, r_7, rl_3, light_cones, _buffer_sizes);
-    float _e23 = rt2_4[li_2];
+    float _e20 = light_range_scale(li_3, x_10, r_7, rl_3, light_cones, _buffer_sizes);
+    float _e23 = rt2_4[li_3];
     float _e25 = light_area(l_9);
     float _e26 = light_strategy_pdf(sel, _e20 * _e23, d2_11, _e25, cos_y_1);
     return _e26;
 }
 
 metal::float3 shade_pick(
-    uint li_3,
-    metal::float3 x_10,
-    metal::float3 n_16,
-    metal::float3 ng_2,
+    uint li_4,
+    metal::float3 x_11,
+    metal::float3 n_17,
+    metal::float3 ng_3,
     GpuMaterial m,
     metal::float3 wo_1,
     metal::float3 r_8,
@@ -1480,8 +1509,8 @@ metal::float3 shade_pick(
     metal::float4 rl_4,
     float w_4,
     uint nee,
-    float u1_3,
-    float u2_3,
+    float u1_4,
+    float u2_4,
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
     device type_9 const& lights,
@@ -1492,23 +1521,23 @@ metal::float3 shade_pick(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     float mis = 1.0;
-    float _e13 = light_range_scale(li_3, x_10, r_8, rl_4, light_cones, _buffer_sizes);
+    float _e13 = light_range_scale(li_4, x_11, r_8, rl_4, light_cones, _buffer_sizes);
     float _e16 = params.eps;
-    Connection _e17 = connect(li_3, x_10, n_16, ng_2, _e13, w_4, u1_3, u2_3, _e16, geo_nodes, geo_tris, lights, r2_3, rt2_4, _buffer_sizes);
+    Connection _e17 = connect(li_4, x_11, n_17, ng_3, _e13, w_4, u1_4, u2_4, _e16, geo_nodes, geo_tris, lights, r2_3, rt2_4, _buffer_sizes);
     if (_e17.cos_x <= 0.0) {
         return metal::float3(0.0);
     }
-    metal::float3 l_10 = metal::normalize(_e17.y - x_10);
-    GpuLight _e30 = lights[li_3];
+    metal::float3 l_10 = metal::normalize(_e17.y - x_11);
+    GpuLight _e30 = lights[li_4];
     float _e31 = light_area(_e30);
     if (_e31 > 0.0) {
-        float _e37 = light_pdf_selected(li_3, x_10, r_8, rl_4, _e17.y, 1.0 / w_4, lights, rt2_4, light_cones, _buffer_sizes);
+        float _e37 = light_pdf_selected(li_4, x_11, r_8, rl_4, _e17.y, 1.0 / w_4, lights, rt2_4, light_cones, _buffer_sizes);
         float _e39 = specular_probability(lobe_10);
-        float _e40 = bsdf_pdf(n_16, wo_1, l_10, m.alpha, _e39);
+        float _e40 = bsdf_pdf(n_17, wo_1, l_10, m.alpha, _e39);
         float _e41 = mis_weight(_e37, _e40);
         mis = _e41;
     }
-    metal::float3 _e47 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_16, wo_1, l_10);
+    metal::float3 _e47 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_17, wo_1, l_10);
     float _e50 = mis;
     return (_e47 * _e17.e) * _e50;
 }
@@ -1543,13 +1572,13 @@ kernel void main_(
         candidates[i_5] = 0u;
         return;
     }
-    metal::float3 x_11 = vtx.position;
-    metal::float3 n_19 = vtx.normal;
-    metal::float3 ng_3 = vtx.gnormal;
+    metal::float3 x_12 = vtx.position;
+    metal::float3 n_20 = vtx.normal;
+    metal::float3 ng_4 = vtx.gnormal;
     GpuMaterial m_2 = materials[vtx.material];
     metal::float3 wo_2 = vtx.wo;
-    metal::float3 _e23 = mirror_dir(n_19, wo_2);
-    metal::float4 _e30 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, metal::dot(n_19, wo_2));
+    metal::float3 _e23 = mirror_dir(n_20, wo_2);
+    metal::float4 _e30 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, metal::dot(n_20, wo_2));
     metal::float4 _e31 = range_lobe(_e30);
     uint _e34 = params.seed;
     uint _e37 = params.frame;
@@ -1562,8 +1591,8 @@ kernel void main_(
     h = _e48;
     uint _e49 = h;
     float _e50 = xi_from_bits(_e49);
-    BvhPick _e52 = light_bvh_sample(BVH, x_11, n_19, _e23, _e30, _e50, light_bvh, _buffer_sizes);
-    uint li_4 = _e52.light;
+    BvhPick _e52 = light_bvh_sample(BVH, x_12, n_20, _e23, _e30, _e50, light_bvh, _buffer_sizes);
+    uint li_5 = _e52.light;
     float pmf_1 = _e52.pmf;
     uint _e55 = h;
     uint _e56 = pcg_hash(_e55);
@@ -1576,7 +1605,7 @@ kernel void main_(
     uint _e61 = h;
     float _e62 = xi_from_bits(_e61);
     if (pmf_1 > 0.0) {
-        metal::float3 _e68 = shade_pick(li_4, x_11, n_19, ng_3, m_2, wo_2, _e23, _e30, _e31, 1.0 / pmf_1, 0u, _e58, _e62, geo_nodes, geo_tris, lights, r2_3, rt2_4, light_cones, params, _buffer_sizes);
+        metal::float3 _e68 = shade_pick(li_5, x_12, n_20, ng_4, m_2, wo_2, _e23, _e30, _e31, 1.0 / pmf_1, 0u, _e58, _e62, geo_nodes, geo_tris, lights, r2_3, rt2_4, light_cones, params, _buffer_sizes);
         sum = _e68;
     }
     metal::float3 _e70 = sum;

@@ -1,0 +1,1311 @@
+struct GpuLight {
+    float3 p0_;
+    uint kind;
+    float3 p1_;
+    float a;
+    float3 p2_;
+    float b;
+    float3 intensity;
+    uint ies_base;
+};
+
+struct GpuLightCone {
+    float3 center_;
+    float radius;
+    float3 axis;
+    float cos_o;
+    float phi;
+    float cos_e;
+    uint bvh_leaf;
+    uint pad;
+};
+
+struct GpuGeoNode {
+    float3 bmin;
+    uint first;
+    float3 bmax;
+    uint count;
+};
+
+struct GpuTriangle {
+    float3 v0_;
+    uint material;
+    float3 v1_;
+    uint light;
+    float3 v2_;
+    uint pad;
+};
+
+struct ViewParams {
+    float4 c0_;
+    float4 c1_;
+    float4 c2_;
+    float4 c3_;
+    float3 eye;
+    uint width;
+    uint height;
+    float shadow_offset;
+    uint seed;
+    uint frame;
+    float3 f0_d;
+    float f90_d;
+};
+
+struct BshNode {
+    float3 center_;
+    float radius;
+    uint child;
+    uint next;
+    uint light;
+    float extent;
+};
+
+struct GeoHit {
+    float t;
+    uint tri;
+};
+
+struct Connection {
+    float3 e;
+    int _pad1_0;
+    float3 y;
+    float cos_x;
+};
+
+struct Shaded {
+    float3 e;
+    int _pad1_0;
+    float3 diffuse;
+    int _pad2_0;
+    float3 specular;
+    int _end_pad_0;
+};
+
+struct Material {
+    float3 base;
+    float metallic;
+    float alpha;
+    int _pad3_0;
+    int _pad3_1;
+    int _pad3_2;
+    float3 v;
+    float roughness;
+    float reflectance;
+    int _end_pad_0;
+    int _end_pad_1;
+    int _end_pad_2;
+};
+
+static const uint LIGHT_POINT = 0u;
+static const uint LIGHT_SPOT = 1u;
+static const uint LIGHT_IES = 2u;
+static const uint LIGHT_TRIANGLE = 3u;
+static const uint LIGHT_VPL = 4u;
+static const uint NO_LIGHT = 4294967295u;
+static const uint COUNT_TILES = 0u;
+static const uint COUNT_GROUP_TESTS = 1u;
+static const uint COUNT_CLUSTER_TESTS = 2u;
+static const uint COUNT_SPHERE_TESTS = 3u;
+static const uint COUNT_TESTED = 4u;
+static const uint COUNT_KEPT = 5u;
+static const uint COUNT_PIXELS = 6u;
+static const uint COUNT_FIELDS = 7u;
+static const uint MAP_CAMERA = 0u;
+static const uint MAP_PERSPECTIVE = 1u;
+static const uint MAP_ORTHOGRAPHIC = 2u;
+static const float XI_STEP = 5.9604645e-8;
+static const uint PICK_STREAM = 2654435769u;
+static const float TWO_PI = 6.2831855;
+static const float CULL_RADIUS_SCALE = 1.000001;
+static const float SPHERE_PAD = 4.7683716e-7;
+static const float SPHERE_HUGE = 3.4028235e38;
+static const float SPHERE_PAD_ABS = 1e-18;
+static const uint CLUSTER = 64u;
+static const uint GROUP_SIDE = 8u;
+static const float INV_PI = 0.31830987;
+static const float MIN_D2_ = 1e-12;
+static const float MAX_INTENSITY = 7.2057594e16;
+static const uint BSH_NONE = 4294967295u;
+static const uint RESERVOIR_FULL = 4294967295u;
+static const float GGX_ALPHA_MIN = 0.001;
+static const float RANGE_SCALE_MAX = 64.0;
+static const uint LIGHT_BVH_LEAF = 4294967295u;
+static const float ONE_MINUS_EPSILON = 0.99999994;
+static const float F32_MAX = 3.4028235e38;
+static const float DEPTH_NONE = 1e30;
+static const float DEPTH_SIGMA = 0.05;
+static const float COVER_WEIGHT = 0.1;
+static const uint ROULETTE_DEPTH = 2u;
+static const float TEMPORAL_MAX_HISTORY = 32.0;
+static const float TEMPORAL_DEPTH_TOLERANCE = 0.01;
+static const float TEMPORAL_MOTION_DEPTH_TOLERANCE = 0.05;
+static const float TEMPORAL_NORMAL_COS = 0.9;
+static const float TEMPORAL_MIN_MOMENTS = 8.0;
+static const float TEMPORAL_CHANGED_HISTORY = 1.0;
+static const float TEMPORAL_CHANGE_LOW = 4.0;
+static const float TEMPORAL_CHANGE_HIGH = 8.0;
+static const float TEMPORAL_MIN_WEIGHT = 0.01;
+static const uint K = 8u;
+static const uint BSH = 0u;
+
+ByteAddressBuffer geo_nodes : register(t6, space1);
+ByteAddressBuffer geo_tris : register(t7, space1);
+cbuffer view : register(b0) { ViewParams view; }
+Texture2D<float4> position_tex : register(t1);
+Texture2D<float4> normal_tex : register(t2);
+RWTexture2D<float4> out_tex : register(u3);
+Texture2D<float4> base_color_tex : register(t4);
+Texture2D<float4> metal_rough_tex : register(t5);
+ByteAddressBuffer lights : register(t1, space1);
+ByteAddressBuffer rt2_2 : register(t2, space1);
+ByteAddressBuffer r2_2 : register(t3, space1);
+ByteAddressBuffer bsh_nodes : register(t4, space1);
+ByteAddressBuffer light_cones : register(t5, space1);
+
+float to_f32_(uint u)
+{
+    return float(u);
+}
+
+uint mul_lo_u32_(uint a, uint b_1)
+{
+    return (a * b_1);
+}
+
+uint add_wrap_u32_(uint a_1, uint b_2)
+{
+    return (a_1 + b_2);
+}
+
+float f32_from_bits(uint u_1)
+{
+    return asfloat(u_1);
+}
+
+float xi_from_bits(uint bits)
+{
+    const float _e3 = to_f32_((bits >> 8u));
+    return (_e3 * XI_STEP);
+}
+
+uint pcg_hash(uint x)
+{
+    const uint _e2 = mul_lo_u32_(x, 747796405u);
+    const uint _e4 = add_wrap_u32_(_e2, 2891336453u);
+    const uint _e12 = mul_lo_u32_(((_e4 >> ((_e4 >> 28u) + 4u)) ^ _e4), 277803737u);
+    return ((_e12 >> 22u) ^ _e12);
+}
+
+uint point_stream(uint seed, uint point_, uint frame)
+{
+    const uint _e3 = pcg_hash(frame);
+    const uint _e5 = pcg_hash((point_ ^ _e3));
+    const uint _e7 = pcg_hash((seed ^ _e5));
+    return _e7;
+}
+
+uint pick_stream(uint stream)
+{
+    const uint _e3 = pcg_hash((stream ^ PICK_STREAM));
+    return _e3;
+}
+
+float slc_weight(float rt2_, float d2_)
+{
+    if ((d2_ <= rt2_)) {
+        return 1.0;
+    }
+    return (d2_ / rt2_);
+}
+
+bool slc_keep(float r2_, float d2_1)
+{
+    return (d2_1 < r2_);
+}
+
+bool sphere_contains_point(float3 c, float r_1, float3 x_1)
+{
+    float3 v_4 = (x_1 - c);
+    return (dot(v_4, v_4) <= (r_1 * r_1));
+}
+
+float inverse_square(float d2_2)
+{
+    return (1.0 / max(d2_2, MIN_D2_));
+}
+
+float connection_factor(float cos_x, float d2_3, float rt2_1, float w)
+{
+    const float _e4 = inverse_square(d2_3);
+    const float _e6 = slc_weight(rt2_1, d2_3);
+    return (((cos_x * _e4) * _e6) * w);
+}
+
+float connection_cosine(float3 x_2, float3 y, float3 n, float3 ng, float r2_1)
+{
+    bool local_4 = (bool)0;
+    bool local_5 = (bool)0;
+
+    float3 v_5 = (x_2 - y);
+    float d2_6 = dot(v_5, v_5);
+    const bool _e7 = slc_keep(r2_1, d2_6);
+    if (!(!(_e7))) {
+        local_4 = !((d2_6 > 0.0));
+    } else {
+        local_4 = true;
+    }
+    bool _e16 = local_4;
+    if (_e16) {
+        return 0.0;
+    }
+    float3 w_6 = (v_5 / (sqrt(d2_6)).xxx);
+    float cos_x_1 = -(dot(n, w_6));
+    if (!((cos_x_1 <= 0.0))) {
+        local_5 = (dot(ng, w_6) >= 0.0);
+    } else {
+        local_5 = true;
+    }
+    bool _e32 = local_5;
+    if (_e32) {
+        return 0.0;
+    }
+    return cos_x_1;
+}
+
+float triangle_lobe(float3 n_1, float area, float3 w_1)
+{
+    return (area * max(dot(n_1, w_1), 0.0));
+}
+
+float3 triangle_sample(float3 a_2, float3 b_3, float3 c_1, float u1_, float u2_)
+{
+    float su = sqrt(u1_);
+    float b0_ = (1.0 - su);
+    float b1_ = (u2_ * su);
+    return (((a_2 * b0_) + (b_3 * b1_)) + (c_1 * ((1.0 - b0_) - b1_)));
+}
+
+float bsh_scaled_radius(BshNode node, float scale)
+{
+    if ((scale == 1.0)) {
+        return node.radius;
+    }
+    if ((node.child == BSH_NONE)) {
+        return (node.extent + (scale * (node.radius - node.extent)));
+    }
+    return (node.radius * scale);
+}
+
+float bsh_range_bound(BshNode node_1)
+{
+    if ((node_1.child == BSH_NONE)) {
+        return (node_1.radius - node_1.extent);
+    }
+    const float _e8 = f32_from_bits(node_1.light);
+    return _e8;
+}
+
+bool weighted_replace(float w_2, float w_sum, float u_2)
+{
+    return ((u_2 * w_sum) < w_2);
+}
+
+float resample_target(float3 c_2)
+{
+    return (((c_2.x + c_2.y) + c_2.z) * 0.33333334);
+}
+
+float ggx_d(float cos_h, float sin2_h, float alpha)
+{
+    if ((cos_h <= 0.0)) {
+        return 0.0;
+    }
+    float a2_ = (alpha * alpha);
+    float t_1 = (((cos_h * cos_h) * a2_) + sin2_h);
+    return ((a2_ * INV_PI) / (t_1 * t_1));
+}
+
+float smith_root(float cos_, float alpha_1)
+{
+    float a2_1 = (alpha_1 * alpha_1);
+    return sqrt((((cos_ * cos_) * (1.0 - a2_1)) + a2_1));
+}
+
+float smith_visibility(float n_l, float n_v, float alpha_2)
+{
+    bool local_6 = (bool)0;
+
+    if (!((n_l <= 0.0))) {
+        local_6 = (n_v <= 0.0);
+    } else {
+        local_6 = true;
+    }
+    bool _e11 = local_6;
+    if (_e11) {
+        return 0.0;
+    }
+    const float _e13 = smith_root(n_v, alpha_2);
+    const float _e15 = smith_root(n_l, alpha_2);
+    return (0.5 / ((n_l * _e13) + (n_v * _e15)));
+}
+
+float3 fresnel_schlick(float3 f0_, float f90_, float v_h)
+{
+    float c_7 = saturate((1.0 - v_h));
+    float c2_ = (c_7 * c_7);
+    return (f0_ + ((float3(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_7)));
+}
+
+float3 specular_fresnel(float3 base, float metallic, float3 f0_d, float f90_d, float v_h_1)
+{
+    const float3 _e5 = fresnel_schlick(f0_d, f90_d, v_h_1);
+    const float3 _e10 = fresnel_schlick(base, 1.0, v_h_1);
+    return ((_e5 * (1.0 - metallic)) + (_e10 * metallic));
+}
+
+bool has_specular(float metallic_1, float3 f0_d_1, float f90_d_1)
+{
+    bool local_7 = (bool)0;
+    bool local_8 = (bool)0;
+
+    if (!((metallic_1 > 0.0))) {
+        local_7 = (f90_d_1 > 0.0);
+    } else {
+        local_7 = true;
+    }
+    bool _e11 = local_7;
+    if (!(_e11)) {
+        local_8 = (max(max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0.0);
+    } else {
+        local_8 = true;
+    }
+    bool _e23 = local_8;
+    return _e23;
+}
+
+float channel_mean(float3 c_3)
+{
+    return (((c_3.x + c_3.y) + c_3.z) * 0.33333334);
+}
+
+float4 receiver_lobe(float3 base_1, float metallic_2, float3 f0_d_2, float f90_d_2, float alpha_3, float n_v_1)
+{
+    bool local_9 = (bool)0;
+
+    const float3 _e10 = fresnel_schlick(f0_d_2, f90_d_2, n_v_1);
+    const float _e16 = channel_mean((((float3(1.0, 1.0, 1.0) - _e10) * base_1) * (1.0 - metallic_2)));
+    if (!((n_v_1 <= 0.0))) {
+        const bool _e22 = has_specular(metallic_2, f0_d_2, f90_d_2);
+        local_9 = !(_e22);
+    } else {
+        local_9 = true;
+    }
+    bool _e25 = local_9;
+    if (_e25) {
+        return float4(_e16, 0.0, alpha_3, n_v_1);
+    }
+    const float3 _e28 = specular_fresnel(base_1, metallic_2, f0_d_2, f90_d_2, n_v_1);
+    const float _e29 = channel_mean(_e28);
+    return float4(_e16, _e29, alpha_3, n_v_1);
+}
+
+float specular_peak_factor(float4 lobe_1)
+{
+    const float _e6 = smith_root(lobe_1.w, lobe_1.z);
+    return ((lobe_1.y * 0.5) / (_e6 + max(lobe_1.w, 0.0)));
+}
+
+float receiver_peak(float4 lobe_2)
+{
+    const float _e2 = specular_peak_factor(lobe_2);
+    return (lobe_2.x + (_e2 / (lobe_2.z * lobe_2.z)));
+}
+
+float range_scale(float4 lobe_3)
+{
+    if ((lobe_3.y <= 0.0)) {
+        return 1.0;
+    }
+    const float _e5 = receiver_peak(lobe_3);
+    return clamp(_e5, 1.0, RANGE_SCALE_MAX);
+}
+
+float4 range_lobe(float4 lobe_4)
+{
+    if ((lobe_4.y <= 0.0)) {
+        return float4(1.0, 0.0, 1.0, 1.0);
+    }
+    const float _e10 = specular_peak_factor(lobe_4);
+    const float _e14 = range_scale(lobe_4);
+    return float4(lobe_4.x, _e10, (lobe_4.z * lobe_4.z), sqrt(_e14));
+}
+
+float3 mirror_dir(float3 n_2, float3 v)
+{
+    return ((n_2 * (2.0 * dot(n_2, v))) - v);
+}
+
+float bevy_alpha(float perceptual)
+{
+    float r_11 = clamp(perceptual, 0.089, 1.0);
+    return (r_11 * r_11);
+}
+
+float bevy_f0_(float reflectance)
+{
+    return ((0.16 * reflectance) * reflectance);
+}
+
+float bevy_dfg(float r_2, float n_v_2)
+{
+    float rx = (1.0 - r_2);
+    float a004_ = ((min((rx * rx), exp2((-9.28 * n_v_2))) * rx) + (0.0425 - (0.0275 * r_2)));
+    float x_10 = max(((1.04 - (0.572 * r_2)) - (1.04 * a004_)), 5e-5);
+    float y_1 = max((((0.022 * r_2) - 0.04) + (1.04 * a004_)), 5e-5);
+    return (x_10 + y_1);
+}
+
+float3 bevy_brdf(float3 base_2, float metallic_3, float r_3, float reflectance_1, float3 n_3, float3 v_1, float3 l)
+{
+    float n_l_1 = saturate(dot(n_3, l));
+    if ((n_l_1 <= 0.0)) {
+        return float3(0.0, 0.0, 0.0);
+    }
+    const float _e15 = bevy_alpha(r_3);
+    float n_v_3 = max(dot(n_3, v_1), 0.0001);
+    float3 h_1 = normalize((l + v_1));
+    float n_h = saturate(dot(n_3, h_1));
+    float l_h = saturate(dot(l, h_1));
+    float f90_d_3 = (0.5 + (((2.0 * _e15) * l_h) * l_h));
+    const float3 _e35 = fresnel_schlick(float3(1.0, 1.0, 1.0), f90_d_3, n_l_1);
+    const float3 _e41 = fresnel_schlick(float3(1.0, 1.0, 1.0), f90_d_3, n_v_3);
+    float burley = ((_e35.x * _e41.x) * INV_PI);
+    const float _e46 = bevy_f0_(reflectance_1);
+    float3 f0_1 = ((float3(_e46, _e46, _e46) * (1.0 - metallic_3)) + (base_2 * metallic_3));
+    float f90_1 = saturate((((f0_1.x + f0_1.y) + f0_1.z) * 16.5));
+    const float _e64 = ggx_d(n_h, (1.0 - (n_h * n_h)), _e15);
+    const float _e65 = smith_visibility(n_l_1, n_v_3, _e15);
+    const float _e70 = bevy_dfg(r_3, n_v_3);
+    float3 comp = (float3(1.0, 1.0, 1.0) + (f0_1 * ((1.0 / _e70) - 1.0)));
+    const float3 _e77 = fresnel_schlick(f0_1, f90_1, l_h);
+    float3 spec = ((_e77 * comp) * (_e64 * _e65));
+    return ((base_2 * ((1.0 - metallic_3) * burley)) + spec);
+}
+
+float cone_cos_of(float3 v_2, float d2_4, float a_3, float3 d)
+{
+    bool local_10 = (bool)0;
+    bool local_11 = (bool)0;
+
+    float vd = dot(v_2, d);
+    float h2_ = (d2_4 - (a_3 * a_3));
+    if (!((h2_ <= 0.0))) {
+        if ((vd >= 0.0)) {
+            local_11 = ((vd * vd) >= h2_);
+        } else {
+            local_11 = false;
+        }
+        bool _e19 = local_11;
+        local_10 = _e19;
+    } else {
+        local_10 = true;
+    }
+    bool _e21 = local_10;
+    if (_e21) {
+        return 1.0;
+    }
+    float3 c_8 = cross(v_2, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_8, c_8)) * a_3)) / d2_4), 1.0);
+}
+
+float cone_cos_toward(float3 center_, float radius, float3 p, float3 d_1)
+{
+    float3 v_6 = (center_ - p);
+    const float _e6 = cone_cos_of(v_6, dot(v_6, v_6), radius, d_1);
+    return _e6;
+}
+
+float range_scale_at(float4 rl, float cos_t)
+{
+    float t_2 = (((0.5 + (0.5 * cos_t)) * (rl.z - 1.0)) + 1.0);
+    return clamp((rl.x + ((rl.y * rl.z) / (t_2 * t_2))), 1.0, (rl.w * rl.w));
+}
+
+float range_scale_toward(float4 rl_1, float3 center_1, float radius_1, float3 p_1, float3 r_4)
+{
+    if ((rl_1.w <= 1.0)) {
+        return 1.0;
+    }
+    const float _e9 = cone_cos_toward(center_1, radius_1, p_1, r_4);
+    const float _e10 = range_scale_at(rl_1, _e9);
+    return _e10;
+}
+
+float shadow_margin(float len)
+{
+    return (0.0001 * len);
+}
+
+float ray_inverse(float x_3)
+{
+    return (1.0 / ((abs(x_3) < 1e-30) ? 1e-30 : x_3));
+}
+
+float3 ray_inverse3_(float3 d_2)
+{
+    const float _e2 = ray_inverse(d_2.x);
+    const float _e4 = ray_inverse(d_2.y);
+    const float _e6 = ray_inverse(d_2.z);
+    return float3(_e2, _e4, _e6);
+}
+
+float ray_aabb(float3 o, float3 inv_d, float3 bmin, float3 bmax, float t_max)
+{
+    float3 t0_ = ((bmin - o) * inv_d);
+    float3 t1_ = ((bmax - o) * inv_d);
+    float3 lo = min(t0_, t1_);
+    float3 hi = max(t0_, t1_);
+    float t_in = max(max(lo.x, lo.y), max(lo.z, 0.0));
+    float t_out = min(min(hi.x, hi.y), min(hi.z, t_max));
+    if ((t_in <= t_out)) {
+        return t_in;
+    }
+    return -1.0;
+}
+
+float3 triangle_normal(float3 a_4, float3 b_4, float3 c_4)
+{
+    bool local_12 = (bool)0;
+
+    float3 n_7 = cross((b_4 - a_4), (c_4 - a_4));
+    float l2_ = dot(n_7, n_7);
+    if (!(!((l2_ > 0.0)))) {
+        local_12 = !((l2_ < 3e38));
+    } else {
+        local_12 = true;
+    }
+    bool _e17 = local_12;
+    if (_e17) {
+        return float3(0.0, 0.0, 0.0);
+    }
+    return (n_7 / (sqrt(l2_)).xxx);
+}
+
+float ray_triangle(float3 o_1, float3 d_3, float3 a_5, float3 b_5, float3 c_5, float t_min, float t_max_1)
+{
+    bool local_13 = (bool)0;
+    bool local_14 = (bool)0;
+    bool local_15 = (bool)0;
+
+    float3 e1_ = (b_5 - a_5);
+    float3 e2_ = (c_5 - a_5);
+    float3 p_2 = cross(d_3, e2_);
+    float det = dot(e1_, p_2);
+    if ((abs(det) <= 0.0)) {
+        return -1.0;
+    }
+    float inv = (1.0 / det);
+    float3 s_3 = (o_1 - a_5);
+    float u_3 = (dot(s_3, p_2) * inv);
+    if (!((u_3 < 0.0))) {
+        local_13 = (u_3 > 1.0);
+    } else {
+        local_13 = true;
+    }
+    bool _e28 = local_13;
+    if (_e28) {
+        return -1.0;
+    }
+    float3 q_1 = cross(s_3, e1_);
+    float v_7 = (dot(d_3, q_1) * inv);
+    if (!((v_7 < 0.0))) {
+        local_14 = ((u_3 + v_7) > 1.0);
+    } else {
+        local_14 = true;
+    }
+    bool _e42 = local_14;
+    if (_e42) {
+        return -1.0;
+    }
+    float t_3 = (dot(e2_, q_1) * inv);
+    if ((t_3 > t_min)) {
+        local_15 = (t_3 < t_max_1);
+    } else {
+        local_15 = false;
+    }
+    bool _e51 = local_15;
+    if (_e51) {
+        return t_3;
+    }
+    return -1.0;
+}
+
+float3 light_intensity(GpuLight l_1, float3 w_3)
+{
+    switch(l_1.kind) {
+        case 0u: {
+            return l_1.intensity;
+        }
+        case 3u: {
+            const float3 _e8 = triangle_normal(l_1.p0_, l_1.p1_, l_1.p2_);
+            const float _e10 = triangle_lobe(_e8, l_1.a, w_3);
+            return (l_1.intensity * _e10);
+        }
+        default: {
+            return (0.0).xxx;
+        }
+    }
+}
+
+float3 light_point(GpuLight l_2, float u1_1, float u2_1)
+{
+    if ((l_2.kind == LIGHT_TRIANGLE)) {
+        const float3 _e9 = triangle_sample(l_2.p0_, l_2.p1_, l_2.p2_, u1_1, u2_1);
+        return _e9;
+    }
+    return l_2.p0_;
+}
+
+uint NagaBufferLength(ByteAddressBuffer buffer)
+{
+    uint ret;
+    buffer.GetDimensions(ret);
+    return ret;
+}
+
+GpuGeoNode ConstructGpuGeoNode(float3 arg0, uint arg1, float3 arg2, uint arg3) {
+    GpuGeoNode ret = (GpuGeoNode)0;
+    ret.bmin = arg0;
+    ret.first = arg1;
+    ret.bmax = arg2;
+    ret.count = arg3;
+    return ret;
+}
+
+GpuTriangle ConstructGpuTriangle(float3 arg0, uint arg1, float3 arg2, uint arg3, float3 arg4, uint arg5) {
+    GpuTriangle ret = (GpuTriangle)0;
+    ret.v0_ = arg0;
+    ret.material = arg1;
+    ret.v1_ = arg2;
+    ret.light = arg3;
+    ret.v2_ = arg4;
+    ret.pad = arg5;
+    return ret;
+}
+
+GeoHit trace(float3 o_2, float3 d_4, float t_min_1, float t_max_2, bool any_hit)
+{
+    GeoHit hit = (GeoHit)0;
+    uint stack[64] = (uint[64])0;
+    uint sp = 0u;
+    uint node_2 = 0u;
+    uint i = (uint)0;
+
+    hit.t = t_max_2;
+    hit.tri = NO_LIGHT;
+    if ((((NagaBufferLength(geo_nodes) - 0) / 32) == 0u)) {
+        GeoHit _e13 = hit;
+        const GeoHit geohit = _e13;
+        return geohit;
+    }
+    const float3 _e14 = ray_inverse3_(d_4);
+    uint2 loop_bound = uint2(4294967295u, 4294967295u);
+    while(true) {
+        if (all(loop_bound == uint2(0u, 0u))) { break; }
+        loop_bound -= uint2(loop_bound.y == 0u, 1u);
+        uint _e21 = node_2;
+        GpuGeoNode n_8 = ConstructGpuGeoNode(asfloat(geo_nodes.Load3(_e21*32+0)), asuint(geo_nodes.Load(_e21*32+12)), asfloat(geo_nodes.Load3(_e21*32+16)), asuint(geo_nodes.Load(_e21*32+28)));
+        float _e27 = hit.t;
+        const float _e28 = ray_aabb(o_2, _e14, n_8.bmin, n_8.bmax, _e27);
+        if ((_e28 >= 0.0)) {
+            if ((n_8.count > 0u)) {
+                i = n_8.first;
+                uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
+                bool loop_init = true;
+                while(true) {
+                    if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
+                    loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+                    if (!loop_init) {
+                        uint _e58 = i;
+                        i = (_e58 + 1u);
+                    }
+                    loop_init = false;
+                    uint _e36 = i;
+                    if ((_e36 < (n_8.first + n_8.count))) {
+                    } else {
+                        break;
+                    }
+                    {
+                        uint _e42 = i;
+                        GpuTriangle t_4 = ConstructGpuTriangle(asfloat(geo_tris.Load3(_e42*48+0)), asuint(geo_tris.Load(_e42*48+12)), asfloat(geo_tris.Load3(_e42*48+16)), asuint(geo_tris.Load(_e42*48+28)), asfloat(geo_tris.Load3(_e42*48+32)), asuint(geo_tris.Load(_e42*48+44)));
+                        float _e49 = hit.t;
+                        const float _e50 = ray_triangle(o_2, d_4, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e49);
+                        if ((_e50 > 0.0)) {
+                            hit.t = _e50;
+                            uint _e55 = i;
+                            hit.tri = _e55;
+                            if (any_hit) {
+                                GeoHit _e56 = hit;
+                                const GeoHit geohit_1 = _e56;
+                                return geohit_1;
+                            }
+                        }
+                    }
+                }
+            } else {
+                uint _e60 = sp;
+                if ((_e60 < 64u)) {
+                    uint _e63 = sp;
+                    stack[min(uint(_e63), 63u)] = (n_8.first + 1u);
+                    uint _e68 = sp;
+                    sp = (_e68 + 1u);
+                }
+                node_2 = n_8.first;
+                continue;
+            }
+        }
+        uint _e72 = sp;
+        if ((_e72 == 0u)) {
+            break;
+        }
+        uint _e75 = sp;
+        sp = (_e75 - 1u);
+        uint _e78 = sp;
+        uint _e80 = stack[min(uint(_e78), 63u)];
+        node_2 = _e80;
+    }
+    GeoHit _e81 = hit;
+    const GeoHit geohit_2 = _e81;
+    return geohit_2;
+}
+
+bool occluded(float3 a_6, float3 b_6)
+{
+    float3 dv = (b_6 - a_6);
+    float len_1 = length(dv);
+    if ((len_1 <= 0.0)) {
+        return false;
+    }
+    const float _e7 = shadow_margin(len_1);
+    const GeoHit _e12 = trace(a_6, (dv / (len_1).xxx), _e7, (len_1 - _e7), true);
+    return (_e12.tri != NO_LIGHT);
+}
+
+BshNode ConstructBshNode(float3 arg0, float arg1, uint arg2, uint arg3, uint arg4, float arg5) {
+    BshNode ret = (BshNode)0;
+    ret.center_ = arg0;
+    ret.radius = arg1;
+    ret.child = arg2;
+    ret.next = arg3;
+    ret.light = arg4;
+    ret.extent = arg5;
+    return ret;
+}
+
+BshNode bsh_node(uint nodes, uint i_1)
+{
+    BshNode _e4 = ConstructBshNode(asfloat(bsh_nodes.Load3(i_1*32+0)), asfloat(bsh_nodes.Load(i_1*32+12)), asuint(bsh_nodes.Load(i_1*32+16)), asuint(bsh_nodes.Load(i_1*32+20)), asuint(bsh_nodes.Load(i_1*32+24)), asfloat(bsh_nodes.Load(i_1*32+28)));
+    const BshNode bshnode = _e4;
+    return bshnode;
+}
+
+uint bsh_count(uint nodes_1)
+{
+    return ((NagaBufferLength(bsh_nodes) - 0) / 32);
+}
+
+uint bsh_first(uint nodes_2)
+{
+    const uint _e1 = bsh_count(nodes_2);
+    if ((_e1 > 0u)) {
+        return 0u;
+    }
+    return BSH_NONE;
+}
+
+float bsh_inner_scale(float a_7, float3 v_3, float d2_5, float3 r_5, float4 rl_2)
+{
+    const float _e5 = cone_cos_of(v_3, d2_5, a_7, r_5);
+    const float _e8 = range_scale_at(rl_2, (_e5 + 2e-6));
+    return _e8;
+}
+
+bool bsh_reaches(BshNode node_3, float3 x_4, float3 r_6, float4 rl_3)
+{
+    bool local_16 = (bool)0;
+    bool local_17 = (bool)0;
+
+    const bool _e6 = sphere_contains_point(node_3.center_, node_3.radius, x_4);
+    if (_e6) {
+        return true;
+    }
+    if (!((rl_3.w <= 1.0))) {
+        const bool _e20 = sphere_contains_point(node_3.center_, (node_3.radius * (rl_3.w * 1.0001)), x_4);
+        local_16 = !(_e20);
+    } else {
+        local_16 = true;
+    }
+    bool _e23 = local_16;
+    if (_e23) {
+        return false;
+    }
+    const float _e25 = bsh_range_bound(node_3);
+    float3 v_8 = (x_4 - node_3.center_);
+    float d2_7 = dot(v_8, v_8);
+    float reach_max = (node_3.extent + ((rl_3.w * 1.001) * _e25));
+    if ((d2_7 > (reach_max * reach_max))) {
+        return false;
+    }
+    if ((node_3.child == BSH_NONE)) {
+        const float _e43 = range_scale_toward(rl_3, node_3.center_, node_3.extent, x_4, r_6);
+        const float _e46 = bsh_scaled_radius(node_3, sqrt(_e43));
+        const bool _e47 = sphere_contains_point(node_3.center_, _e46, x_4);
+        return _e47;
+    }
+    const float _e50 = bsh_inner_scale(node_3.extent, -(v_8), d2_7, r_6, rl_3);
+    float s_c = (_e50 * 1.001);
+    float reach = (node_3.extent + (sqrt(s_c) * _e25));
+    if ((d2_7 <= ((node_3.radius * node_3.radius) * s_c))) {
+        local_17 = (d2_7 <= (reach * reach));
+    } else {
+        local_17 = false;
+    }
+    bool _e67 = local_17;
+    return _e67;
+}
+
+uint bsh_next_leaf_lobe(uint nodes_3, uint start, float3 x_5, float3 r_7, float4 rl_4)
+{
+    uint i_2 = (uint)0;
+
+    i_2 = start;
+    uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
+    while(true) {
+        if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
+        loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
+        uint _e6 = i_2;
+        if ((_e6 != BSH_NONE)) {
+        } else {
+            break;
+        }
+        {
+            uint _e9 = i_2;
+            const BshNode _e10 = bsh_node(nodes_3, _e9);
+            const bool _e11 = bsh_reaches(_e10, x_5, r_7, rl_4);
+            if (_e11) {
+                if ((_e10.child == BSH_NONE)) {
+                    uint _e15 = i_2;
+                    return _e15;
+                }
+                i_2 = _e10.child;
+            } else {
+                i_2 = _e10.next;
+            }
+        }
+    }
+    return BSH_NONE;
+}
+
+GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, float3 arg4, float arg5, float3 arg6, uint arg7) {
+    GpuLight ret = (GpuLight)0;
+    ret.p0_ = arg0;
+    ret.kind = arg1;
+    ret.p1_ = arg2;
+    ret.a = arg3;
+    ret.p2_ = arg4;
+    ret.b = arg5;
+    ret.intensity = arg6;
+    ret.ies_base = arg7;
+    return ret;
+}
+
+Connection connect_traced(uint li, float3 x_6, float3 n_4, float3 ng_1, float s, float w_res, float u1_2, float u2_2, float eps, bool trace_1)
+{
+    Connection c_6 = (Connection)0;
+    bool local_18 = (bool)0;
+    bool local_19 = (bool)0;
+
+    c_6.e = (0.0).xxx;
+    GpuLight l_3 = ConstructGpuLight(asfloat(lights.Load3(li*64+0)), asuint(lights.Load(li*64+12)), asfloat(lights.Load3(li*64+16)), asfloat(lights.Load(li*64+28)), asfloat(lights.Load3(li*64+32)), asfloat(lights.Load(li*64+44)), asfloat(lights.Load3(li*64+48)), asuint(lights.Load(li*64+60)));
+    const float3 _e18 = light_point(l_3, u1_2, u2_2);
+    c_6.y = _e18;
+    float3 _e21 = c_6.y;
+    float _e24 = asfloat(r2_2.Load(li*4));
+    const float _e26 = connection_cosine(x_6, _e21, n_4, ng_1, (s * _e24));
+    c_6.cos_x = _e26;
+    float _e28 = c_6.cos_x;
+    if (!((_e28 <= 0.0))) {
+        if (trace_1) {
+            float3 _e39 = c_6.y;
+            const bool _e40 = occluded((x_6 + (ng_1 * eps)), _e39);
+            local_19 = _e40;
+        } else {
+            local_19 = false;
+        }
+        bool _e42 = local_19;
+        local_18 = _e42;
+    } else {
+        local_18 = true;
+    }
+    bool _e44 = local_18;
+    if (_e44) {
+        Connection _e45 = c_6;
+        const Connection connection = _e45;
+        return connection;
+    }
+    float3 _e47 = c_6.y;
+    float3 v_9 = (x_6 - _e47);
+    float d2_8 = dot(v_9, v_9);
+    const float3 _e54 = light_intensity(l_3, (v_9 / (sqrt(d2_8)).xxx));
+    float _e56 = c_6.cos_x;
+    float _e59 = asfloat(rt2_2.Load(li*4));
+    const float _e61 = connection_factor(_e56, d2_8, (s * _e59), w_res);
+    c_6.e = (_e54 * _e61);
+    Connection _e63 = c_6;
+    const Connection connection_1 = _e63;
+    return connection_1;
+}
+
+GpuLightCone ConstructGpuLightCone(float3 arg0, float arg1, float3 arg2, float arg3, float arg4, float arg5, uint arg6, uint arg7) {
+    GpuLightCone ret = (GpuLightCone)0;
+    ret.center_ = arg0;
+    ret.radius = arg1;
+    ret.axis = arg2;
+    ret.cos_o = arg3;
+    ret.phi = arg4;
+    ret.cos_e = arg5;
+    ret.bvh_leaf = arg6;
+    ret.pad = arg7;
+    return ret;
+}
+
+float light_range_scale(uint li_1, float3 x_7, float3 r_8, float4 rl_5)
+{
+    GpuLightCone c_9 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_1*48+0)), asfloat(light_cones.Load(li_1*48+12)), asfloat(light_cones.Load3(li_1*48+16)), asfloat(light_cones.Load(li_1*48+28)), asfloat(light_cones.Load(li_1*48+32)), asfloat(light_cones.Load(li_1*48+36)), asuint(light_cones.Load(li_1*48+40)), asuint(light_cones.Load(li_1*48+44)));
+    const float _e9 = range_scale_toward(rl_5, c_9.center_, c_9.radius, x_7, r_8);
+    return _e9;
+}
+
+float4 surface_at(int2 texel)
+{
+    float4 p_3 = position_tex.Load(int3(texel, int(0)));
+    return ((p_3.w > 0.0) ? float4(p_3.xyz, 1.0) : (0.0).xxxx);
+}
+
+Shaded shade_pick_traced(uint li_2, float3 x_8, float3 n_5, float3 r_9, float4 rl_6, Material m_1, float w_4, float u1_3, float u2_3, float eps_1, bool trace_2)
+{
+    Shaded s_1 = (Shaded)0;
+
+    const float _e12 = light_range_scale(li_2, x_8, r_9, rl_6);
+    const Connection _e13 = connect_traced(li_2, x_8, n_5, n_5, _e12, w_4, u1_3, u2_3, eps_1, trace_2);
+    s_1.e = _e13.e;
+    s_1.diffuse = (0.0).xxx;
+    s_1.specular = (0.0).xxx;
+    if ((_e13.cos_x > 0.0)) {
+        const float3 _e34 = bevy_brdf(m_1.base, m_1.metallic, m_1.roughness, m_1.reflectance, n_5, m_1.v, normalize((_e13.y - x_8)));
+        s_1.diffuse = (_e34 * _e13.e);
+    }
+    Shaded _e37 = s_1;
+    const Shaded shaded = _e37;
+    return shaded;
+}
+
+Shaded shade_pick(uint li_3, float3 x_9, float3 n_6, float3 r_10, float4 rl_7, Material m_2, float w_5, float u1_4, float u2_4, float eps_2)
+{
+    const Shaded _e11 = shade_pick_traced(li_3, x_9, n_6, r_10, rl_7, m_2, w_5, u1_4, u2_4, eps_2, true);
+    const Shaded shaded_1 = _e11;
+    return shaded_1;
+}
+
+Shaded ConstructShaded(float3 arg0, float3 arg1, float3 arg2) {
+    Shaded ret = (Shaded)0;
+    ret.e = arg0;
+    ret.diffuse = arg1;
+    ret.specular = arg2;
+    return ret;
+}
+
+Shaded add(Shaded a_8, Shaded b_7)
+{
+    const Shaded shaded_2 = ConstructShaded((a_8.e + b_7.e), (a_8.diffuse + b_7.diffuse), (a_8.specular + b_7.specular));
+    return shaded_2;
+}
+
+float3 output_of(Shaded s_2)
+{
+    return (s_2.diffuse + s_2.specular);
+}
+
+Material ConstructMaterial(float3 arg0, float arg1, float arg2, float3 arg3, float arg4, float arg5) {
+    Material ret = (Material)0;
+    ret.base = arg0;
+    ret.metallic = arg1;
+    ret.alpha = arg2;
+    ret.v = arg3;
+    ret.roughness = arg4;
+    ret.reflectance = arg5;
+    return ret;
+}
+
+[numthreads(8, 8, 1)]
+void main(uint3 gid : SV_DispatchThreadID)
+{
+    bool local = (bool)0;
+    bool local_1 = (bool)0;
+    Material m = (Material)0;
+    float4 lobe = float4(1.0, 0.0, 1.0, 1.0);
+    float3 r = (float3)0;
+    uint h = (uint)0;
+    Shaded t = ConstructShaded((0.0).xxx, (0.0).xxx, (0.0).xxx);
+    uint slot_light[8] = (uint[8])0;
+    float2 slot_u[8] = (float2[8])0;
+    float slot_p[8] = (float[8])0;
+    float total = 0.0;
+    uint count = 0u;
+    uint hc = (uint)0;
+    uint b = (uint)0;
+    uint q = (uint)0;
+    uint k = 0u;
+    uint copies = (uint)0;
+    uint j = (uint)0;
+    bool local_2 = (bool)0;
+    bool local_3 = (bool)0;
+
+    uint _e4 = view.width;
+    if (!((gid.x >= _e4))) {
+        uint _e12 = view.height;
+        local = (gid.y >= _e12);
+    } else {
+        local = true;
+    }
+    bool _e15 = local;
+    if (_e15) {
+        return;
+    }
+    int2 texel_1 = int2(int(gid.x), int(gid.y));
+    const float4 _e21 = surface_at(texel_1);
+    float4 _e24 = normal_tex.Load(int3(texel_1, int(0)));
+    float3 nn = _e24.xyz;
+    float len2_ = dot(nn, nn);
+    if (!((_e21.w <= 0.0))) {
+        local_1 = !((len2_ > 0.0));
+    } else {
+        local_1 = true;
+    }
+    bool _e37 = local_1;
+    if (_e37) {
+        out_tex[texel_1] = (0.0).xxxx;
+        return;
+    }
+    float3 x_11 = _e21.xyz;
+    float3 n_9 = (nn / (sqrt(len2_)).xxx);
+    r = n_9;
+    float4 mr = metal_rough_tex.Load(int3(texel_1, int(0)));
+    const float _e57 = bevy_f0_(mr.w);
+    float4 _e60 = base_color_tex.Load(int3(texel_1, int(0)));
+    const float _e65 = bevy_alpha(mr.y);
+    float3 _e68 = view.eye;
+    m = ConstructMaterial(_e60.xyz, saturate(mr.z), _e65, normalize((_e68 - x_11)), mr.y, mr.w);
+    float3 _e75 = m.base;
+    float _e77 = m.metallic;
+    float _e81 = m.alpha;
+    float3 _e83 = m.v;
+    const float4 _e85 = receiver_lobe(_e75, _e77, (_e57).xxx, 1.0, _e81, dot(n_9, _e83));
+    lobe = _e85;
+    float3 _e87 = m.v;
+    const float3 _e88 = mirror_dir(n_9, _e87);
+    r = _e88;
+    float4 _e89 = lobe;
+    const float4 _e90 = range_lobe(_e89);
+    float _e93 = view.shadow_offset;
+    float3 _e96 = view.eye;
+    float eps_3 = (_e93 * length((_e96 - x_11)));
+    uint _e102 = view.seed;
+    uint _e106 = view.width;
+    uint _e112 = view.frame;
+    const uint _e113 = point_stream(_e102, ((gid.y * _e106) + gid.x), _e112);
+    const uint _e114 = pick_stream(_e113);
+    h = _e114;
+    hc = _e113;
+    const uint _e134 = bsh_first(BSH);
+    float3 _e135 = r;
+    const uint _e136 = bsh_next_leaf_lobe(BSH, _e134, x_11, _e135, _e90);
+    b = _e136;
+    uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
+    bool loop_init_1 = true;
+    while(true) {
+        if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
+        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+        if (!loop_init_1) {
+            uint _e193 = b;
+            uint _e196 = asuint(bsh_nodes.Load(20+_e193*32));
+            float3 _e197 = r;
+            const uint _e198 = bsh_next_leaf_lobe(BSH, _e196, x_11, _e197, _e90);
+            b = _e198;
+        }
+        loop_init_1 = false;
+        uint _e138 = b;
+        if ((_e138 != BSH_NONE)) {
+        } else {
+            break;
+        }
+        {
+            uint _e141 = count;
+            count = (_e141 + 1u);
+            uint _e145 = b;
+            uint li_4 = asuint(bsh_nodes.Load(24+_e145*32));
+            uint _e149 = h;
+            const uint _e150 = pcg_hash(_e149);
+            h = _e150;
+            uint _e151 = h;
+            const float _e152 = xi_from_bits(_e151);
+            uint _e153 = h;
+            const uint _e154 = pcg_hash(_e153);
+            h = _e154;
+            uint _e155 = h;
+            const float _e156 = xi_from_bits(_e155);
+            float2 u_4 = float2(_e152, _e156);
+            float3 _e158 = r;
+            Material _e159 = m;
+            const Shaded _e164 = shade_pick_traced(li_4, x_11, n_9, _e158, _e90, _e159, 1.0, u_4.x, u_4.y, eps_3, false);
+            const float3 _e165 = output_of(_e164);
+            const float _e166 = resample_target(_e165);
+            if ((_e166 > 0.0)) {
+                float _e169 = total;
+                total = (_e169 + _e166);
+                q = 0u;
+                uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
+                bool loop_init_2 = true;
+                while(true) {
+                    if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
+                    loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+                    if (!loop_init_2) {
+                        uint _e189 = q;
+                        q = (_e189 + 1u);
+                    }
+                    loop_init_2 = false;
+                    uint _e173 = q;
+                    if ((_e173 < K)) {
+                    } else {
+                        break;
+                    }
+                    {
+                        uint _e176 = hc;
+                        const uint _e177 = pcg_hash(_e176);
+                        hc = _e177;
+                        float _e178 = total;
+                        uint _e179 = hc;
+                        const float _e180 = xi_from_bits(_e179);
+                        const bool _e181 = weighted_replace(_e166, _e178, _e180);
+                        if (_e181) {
+                            uint _e182 = q;
+                            slot_light[min(uint(_e182), 7u)] = li_4;
+                            uint _e184 = q;
+                            slot_u[min(uint(_e184), 7u)] = u_4;
+                            uint _e186 = q;
+                            slot_p[min(uint(_e186), 7u)] = _e166;
+                        }
+                    }
+                }
+            }
+        }
+    }
+    float _e199 = total;
+    if ((_e199 > 0.0)) {
+        uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
+        bool loop_init_3 = true;
+        while(true) {
+            if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
+            loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+            if (!loop_init_3) {
+                uint _e280 = k;
+                k = (_e280 + 1u);
+            }
+            loop_init_3 = false;
+            uint _e204 = k;
+            if ((_e204 < K)) {
+            } else {
+                break;
+            }
+            {
+                copies = 1u;
+                j = 0u;
+                uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
+                bool loop_init_4 = true;
+                while(true) {
+                    if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
+                    loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+                    if (!loop_init_4) {
+                        uint _e248 = j;
+                        j = (_e248 + 1u);
+                    }
+                    loop_init_4 = false;
+                    uint _e211 = j;
+                    if ((_e211 < K)) {
+                    } else {
+                        break;
+                    }
+                    {
+                        uint _e214 = j;
+                        uint _e215 = k;
+                        if ((_e214 != _e215)) {
+                            uint _e219 = j;
+                            uint _e221 = slot_light[min(uint(_e219), 7u)];
+                            uint _e222 = k;
+                            uint _e224 = slot_light[min(uint(_e222), 7u)];
+                            local_2 = (_e221 == _e224);
+                        } else {
+                            local_2 = false;
+                        }
+                        bool _e227 = local_2;
+                        if (_e227) {
+                            uint _e230 = j;
+                            float2 _e232 = slot_u[min(uint(_e230), 7u)];
+                            uint _e233 = k;
+                            float2 _e235 = slot_u[min(uint(_e233), 7u)];
+                            local_3 = all((_e232 == _e235));
+                        } else {
+                            local_3 = false;
+                        }
+                        bool _e239 = local_3;
+                        if (_e239) {
+                            uint _e240 = j;
+                            uint _e241 = k;
+                            if ((_e240 < _e241)) {
+                                copies = 0u;
+                                break;
+                            }
+                            uint _e244 = copies;
+                            copies = (_e244 + 1u);
+                        }
+                    }
+                }
+                uint _e250 = copies;
+                if ((_e250 > 0u)) {
+                    float _e253 = total;
+                    uint _e255 = k;
+                    float _e257 = slot_p[min(uint(_e255), 7u)];
+                    uint _e260 = copies;
+                    float w_7 = ((_e253 / (8.0 * _e257)) * float(_e260));
+                    Shaded _e263 = t;
+                    uint _e264 = k;
+                    uint _e266 = slot_light[min(uint(_e264), 7u)];
+                    float3 _e267 = r;
+                    Material _e268 = m;
+                    uint _e269 = k;
+                    float _e272 = slot_u[min(uint(_e269), 7u)].x;
+                    uint _e273 = k;
+                    float _e276 = slot_u[min(uint(_e273), 7u)].y;
+                    const Shaded _e277 = shade_pick(_e266, x_11, n_9, _e267, _e90, _e268, w_7, _e272, _e276, eps_3);
+                    const Shaded _e278 = add(_e263, _e277);
+                    t = _e278;
+                }
+            }
+        }
+    }
+    float3 _e284 = t.diffuse;
+    float3 _e286 = t.specular;
+    uint _e288 = count;
+    out_tex[texel_1] = float4((_e284 + _e286), float(_e288));
+    return;
+}

@@ -1,0 +1,1451 @@
+// language: metal1.0
+#include <metal_stdlib>
+#include <simd/simd.h>
+
+using metal::uint;
+
+struct _mslBufferSizes {
+    uint size0;
+    uint size1;
+    uint size8;
+    uint size9;
+    uint size10;
+    uint size11;
+    uint size12;
+};
+
+struct GpuLight {
+    metal::packed_float3 p0_;
+    uint kind;
+    metal::packed_float3 p1_;
+    float a;
+    metal::packed_float3 p2_;
+    float b;
+    metal::packed_float3 intensity;
+    uint ies_base;
+};
+struct GpuLightCone {
+    metal::packed_float3 center;
+    float radius;
+    metal::packed_float3 axis;
+    float cos_o;
+    float phi;
+    float cos_e;
+    uint bvh_leaf;
+    uint pad;
+};
+struct GpuGeoNode {
+    metal::packed_float3 bmin;
+    uint first;
+    metal::packed_float3 bmax;
+    uint count;
+};
+struct GpuTriangle {
+    metal::packed_float3 v0_;
+    uint material;
+    metal::packed_float3 v1_;
+    uint light;
+    metal::packed_float3 v2_;
+    uint pad;
+};
+struct ViewParams {
+    metal::float4 c0_;
+    metal::float4 c1_;
+    metal::float4 c2_;
+    metal::float4 c3_;
+    metal::packed_float3 eye;
+    uint width;
+    uint height;
+    float shadow_offset;
+    uint seed;
+    uint frame;
+    metal::packed_float3 f0_d;
+    float f90_d;
+};
+typedef float type_4[1];
+struct BshNode {
+    metal::packed_float3 center;
+    float radius;
+    uint child;
+    uint next;
+    uint light;
+    float extent;
+};
+struct GeoHit {
+    float t;
+    uint tri;
+};
+typedef GpuGeoNode type_6[1];
+typedef GpuTriangle type_7[1];
+struct type_8 {
+    uint inner[64];
+};
+typedef GpuLight type_11[1];
+typedef BshNode type_12[1];
+typedef GpuLightCone type_13[1];
+struct type_14 {
+    uint inner[8];
+};
+typedef uint BshNodes;
+struct Connection {
+    metal::float3 e;
+    metal::packed_float3 y;
+    float cos_x;
+};
+struct Shaded {
+    metal::float3 e;
+    metal::float3 diffuse;
+    metal::float3 specular;
+};
+struct Material {
+    metal::packed_float3 base;
+    float metallic;
+    float alpha;
+    char _pad3[12];
+    metal::packed_float3 v;
+    float roughness;
+    float reflectance;
+    char _pad6[12];
+};
+struct type_18 {
+    metal::float2 inner[8];
+};
+struct type_19 {
+    float inner[8];
+};
+constant uint LIGHT_POINT = 0u;
+constant uint LIGHT_SPOT = 1u;
+constant uint LIGHT_IES = 2u;
+constant uint LIGHT_TRIANGLE = 3u;
+constant uint LIGHT_VPL = 4u;
+constant uint NO_LIGHT = 4294967295u;
+constant uint COUNT_TILES = 0u;
+constant uint COUNT_GROUP_TESTS = 1u;
+constant uint COUNT_CLUSTER_TESTS = 2u;
+constant uint COUNT_SPHERE_TESTS = 3u;
+constant uint COUNT_TESTED = 4u;
+constant uint COUNT_KEPT = 5u;
+constant uint COUNT_PIXELS = 6u;
+constant uint COUNT_FIELDS = 7u;
+constant uint MAP_CAMERA = 0u;
+constant uint MAP_PERSPECTIVE = 1u;
+constant uint MAP_ORTHOGRAPHIC = 2u;
+constant float XI_STEP = 0.000000059604645;
+constant uint PICK_STREAM = 2654435769u;
+constant float TWO_PI = 6.2831855;
+constant float CULL_RADIUS_SCALE = 1.000001;
+constant float SPHERE_PAD = 0.00000047683716;
+constant float SPHERE_HUGE = 340282350000000000000000000000000000000.0;
+constant float SPHERE_PAD_ABS = 0.000000000000000001;
+constant uint CLUSTER = 64u;
+constant uint GROUP_SIDE = 8u;
+constant float INV_PI = 0.31830987;
+constant float MIN_D2_ = 0.000000000001;
+constant float MAX_INTENSITY = 72057594000000000.0;
+constant uint BSH_NONE = 4294967295u;
+constant uint RESERVOIR_FULL = 4294967295u;
+constant float GGX_ALPHA_MIN = 0.001;
+constant float RANGE_SCALE_MAX = 64.0;
+constant uint LIGHT_BVH_LEAF = 4294967295u;
+constant float ONE_MINUS_EPSILON = 0.99999994;
+constant float F32_MAX = 340282350000000000000000000000000000000.0;
+constant float DEPTH_NONE = 1000000000000000000000000000000.0;
+constant float DEPTH_SIGMA = 0.05;
+constant float COVER_WEIGHT = 0.1;
+constant uint ROULETTE_DEPTH = 2u;
+constant float TEMPORAL_MAX_HISTORY = 32.0;
+constant float TEMPORAL_DEPTH_TOLERANCE = 0.01;
+constant float TEMPORAL_MOTION_DEPTH_TOLERANCE = 0.05;
+constant float TEMPORAL_NORMAL_COS = 0.9;
+constant float TEMPORAL_MIN_MOMENTS = 8.0;
+constant float TEMPORAL_CHANGED_HISTORY = 1.0;
+constant float TEMPORAL_CHANGE_LOW = 4.0;
+constant float TEMPORAL_CHANGE_HIGH = 8.0;
+constant float TEMPORAL_MIN_WEIGHT = 0.01;
+constant uint K = 8u;
+constant BshNodes BSH = 0u;
+
+float to_f32_(
+    uint u
+) {
+    return static_cast<float>(u);
+}
+
+uint mul_lo_u32_(
+    uint a,
+    uint b_1
+) {
+    return a * b_1;
+}
+
+uint add_wrap_u32_(
+    uint a_1,
+    uint b_2
+) {
+    return a_1 + b_2;
+}
+
+float f32_from_bits(
+    uint u_1
+) {
+    return as_type<float>(u_1);
+}
+
+float xi_from_bits(
+    uint bits
+) {
+    float _e3 = to_f32_(bits >> 8u);
+    return _e3 * XI_STEP;
+}
+
+uint pcg_hash(
+    uint x
+) {
+    uint _e2 = mul_lo_u32_(x, 747796405u);
+    uint _e4 = add_wrap_u32_(_e2, 2891336453u);
+    uint _e12 = mul_lo_u32_((_e4 >> ((_e4 >> 28u) + 4u)) ^ _e4, 277803737u);
+    return (_e12 >> 22u) ^ _e12;
+}
+
+uint point_stream(
+    uint seed,
+    uint point,
+    uint frame
+) {
+    uint _e3 = pcg_hash(frame);
+    uint _e5 = pcg_hash(point ^ _e3);
+    uint _e7 = pcg_hash(seed ^ _e5);
+    return _e7;
+}
+
+uint pick_stream(
+    uint stream
+) {
+    uint _e3 = pcg_hash(stream ^ PICK_STREAM);
+    return _e3;
+}
+
+float slc_weight(
+    float rt2_,
+    float d2_
+) {
+    if (d2_ <= rt2_) {
+        return 1.0;
+    }
+    return d2_ / rt2_;
+}
+
+bool slc_keep(
+    float r2_,
+    float d2_1
+) {
+    return d2_1 < r2_;
+}
+
+bool sphere_contains_point(
+    metal::float3 c,
+    float r_1,
+    metal::float3 x_1
+) {
+    metal::float3 v_4 = x_1 - c;
+    return metal::dot(v_4, v_4) <= (r_1 * r_1);
+}
+
+float inverse_square(
+    float d2_2
+) {
+    return 1.0 / metal::max(d2_2, MIN_D2_);
+}
+
+float connection_factor(
+    float cos_x,
+    float d2_3,
+    float rt2_1,
+    float w
+) {
+    float _e4 = inverse_square(d2_3);
+    float _e6 = slc_weight(rt2_1, d2_3);
+    return ((cos_x * _e4) * _e6) * w;
+}
+
+float connection_cosine(
+    metal::float3 x_2,
+    metal::float3 y,
+    metal::float3 n,
+    metal::float3 ng,
+    float r2_1
+) {
+    bool local_4 = {};
+    bool local_5 = {};
+    metal::float3 v_5 = x_2 - y;
+    float d2_6 = metal::dot(v_5, v_5);
+    bool _e7 = slc_keep(r2_1, d2_6);
+    if (!(!(_e7))) {
+        local_4 = !((d2_6 > 0.0));
+    } else {
+        local_4 = true;
+    }
+    bool _e16 = local_4;
+    if (_e16) {
+        return 0.0;
+    }
+    metal::float3 w_6 = v_5 / metal::float3(metal::sqrt(d2_6));
+    float cos_x_1 = -(metal::dot(n, w_6));
+    if (!((cos_x_1 <= 0.0))) {
+        local_5 = metal::dot(ng, w_6) >= 0.0;
+    } else {
+        local_5 = true;
+    }
+    bool _e32 = local_5;
+    if (_e32) {
+        return 0.0;
+    }
+    return cos_x_1;
+}
+
+float triangle_lobe(
+    metal::float3 n_1,
+    float area,
+    metal::float3 w_1
+) {
+    return area * metal::max(metal::dot(n_1, w_1), 0.0);
+}
+
+metal::float3 triangle_sample(
+    metal::float3 a_2,
+    metal::float3 b_3,
+    metal::float3 c_1,
+    float u1_,
+    float u2_
+) {
+    float su = metal::sqrt(u1_);
+    float b0_ = 1.0 - su;
+    float b1_ = u2_ * su;
+    return ((a_2 * b0_) + (b_3 * b1_)) + (c_1 * ((1.0 - b0_) - b1_));
+}
+
+float bsh_scaled_radius(
+    BshNode node,
+    float scale
+) {
+    if (scale == 1.0) {
+        return node.radius;
+    }
+    if (node.child == BSH_NONE) {
+        return node.extent + (scale * (node.radius - node.extent));
+    }
+    return node.radius * scale;
+}
+
+float bsh_range_bound(
+    BshNode node_1
+) {
+    if (node_1.child == BSH_NONE) {
+        return node_1.radius - node_1.extent;
+    }
+    float _e8 = f32_from_bits(node_1.light);
+    return _e8;
+}
+
+bool weighted_replace(
+    float w_2,
+    float w_sum,
+    float u_2
+) {
+    return (u_2 * w_sum) < w_2;
+}
+
+float resample_target(
+    metal::float3 c_2
+) {
+    return ((c_2.x + c_2.y) + c_2.z) * 0.33333334;
+}
+
+float ggx_d(
+    float cos_h,
+    float sin2_h,
+    float alpha
+) {
+    if (cos_h <= 0.0) {
+        return 0.0;
+    }
+    float a2_ = alpha * alpha;
+    float t_1 = ((cos_h * cos_h) * a2_) + sin2_h;
+    return (a2_ * INV_PI) / (t_1 * t_1);
+}
+
+float smith_root(
+    float cos,
+    float alpha_1
+) {
+    float a2_1 = alpha_1 * alpha_1;
+    return metal::sqrt(((cos * cos) * (1.0 - a2_1)) + a2_1);
+}
+
+float smith_visibility(
+    float n_l,
+    float n_v,
+    float alpha_2
+) {
+    bool local_6 = {};
+    if (!((n_l <= 0.0))) {
+        local_6 = n_v <= 0.0;
+    } else {
+        local_6 = true;
+    }
+    bool _e11 = local_6;
+    if (_e11) {
+        return 0.0;
+    }
+    float _e13 = smith_root(n_v, alpha_2);
+    float _e15 = smith_root(n_l, alpha_2);
+    return 0.5 / ((n_l * _e13) + (n_v * _e15));
+}
+
+metal::float3 fresnel_schlick(
+    metal::float3 f0_,
+    float f90_,
+    float v_h
+) {
+    float c_7 = metal::saturate(1.0 - v_h);
+    float c2_ = c_7 * c_7;
+    return f0_ + ((metal::float3(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_7));
+}
+
+metal::float3 specular_fresnel(
+    metal::float3 base,
+    float metallic,
+    metal::float3 f0_d,
+    float f90_d,
+    float v_h_1
+) {
+    metal::float3 _e5 = fresnel_schlick(f0_d, f90_d, v_h_1);
+    metal::float3 _e10 = fresnel_schlick(base, 1.0, v_h_1);
+    return (_e5 * (1.0 - metallic)) + (_e10 * metallic);
+}
+
+bool has_specular(
+    float metallic_1,
+    metal::float3 f0_d_1,
+    float f90_d_1
+) {
+    bool local_7 = {};
+    bool local_8 = {};
+    if (!((metallic_1 > 0.0))) {
+        local_7 = f90_d_1 > 0.0;
+    } else {
+        local_7 = true;
+    }
+    bool _e11 = local_7;
+    if (!(_e11)) {
+        local_8 = metal::max(metal::max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0.0;
+    } else {
+        local_8 = true;
+    }
+    bool _e23 = local_8;
+    return _e23;
+}
+
+float channel_mean(
+    metal::float3 c_3
+) {
+    return ((c_3.x + c_3.y) + c_3.z) * 0.33333334;
+}
+
+metal::float4 receiver_lobe(
+    metal::float3 base_1,
+    float metallic_2,
+    metal::float3 f0_d_2,
+    float f90_d_2,
+    float alpha_3,
+    float n_v_1
+) {
+    bool local_9 = {};
+    metal::float3 _e10 = fresnel_schlick(f0_d_2, f90_d_2, n_v_1);
+    float _e16 = channel_mean(((metal::float3(1.0, 1.0, 1.0) - _e10) * base_1) * (1.0 - metallic_2));
+    if (!((n_v_1 <= 0.0))) {
+        bool _e22 = has_specular(metallic_2, f0_d_2, f90_d_2);
+        local_9 = !(_e22);
+    } else {
+        local_9 = true;
+    }
+    bool _e25 = local_9;
+    if (_e25) {
+        return metal::float4(_e16, 0.0, alpha_3, n_v_1);
+    }
+    metal::float3 _e28 = specular_fresnel(base_1, metallic_2, f0_d_2, f90_d_2, n_v_1);
+    float _e29 = channel_mean(_e28);
+    return metal::float4(_e16, _e29, alpha_3, n_v_1);
+}
+
+float specular_peak_factor(
+    metal::float4 lobe_1
+) {
+    float _e6 = smith_root(lobe_1.w, lobe_1.z);
+    return (lobe_1.y * 0.5) / (_e6 + metal::max(lobe_1.w, 0.0));
+}
+
+float receiver_peak(
+    metal::float4 lobe_2
+) {
+    float _e2 = specular_peak_factor(lobe_2);
+    return lobe_2.x + (_e2 / (lobe_2.z * lobe_2.z));
+}
+
+float range_scale(
+    metal::float4 lobe_3
+) {
+    if (lobe_3.y <= 0.0) {
+        return 1.0;
+    }
+    float _e5 = receiver_peak(lobe_3);
+    return metal::clamp(_e5, 1.0, RANGE_SCALE_MAX);
+}
+
+metal::float4 range_lobe(
+    metal::float4 lobe_4
+) {
+    if (lobe_4.y <= 0.0) {
+        return metal::float4(1.0, 0.0, 1.0, 1.0);
+    }
+    float _e10 = specular_peak_factor(lobe_4);
+    float _e14 = range_scale(lobe_4);
+    return metal::float4(lobe_4.x, _e10, lobe_4.z * lobe_4.z, metal::sqrt(_e14));
+}
+
+metal::float3 mirror_dir(
+    metal::float3 n_2,
+    metal::float3 v
+) {
+    return (n_2 * (2.0 * metal::dot(n_2, v))) - v;
+}
+
+float bevy_alpha(
+    float perceptual
+) {
+    float r_11 = metal::clamp(perceptual, 0.089, 1.0);
+    return r_11 * r_11;
+}
+
+float bevy_f0_(
+    float reflectance
+) {
+    return (0.16 * reflectance) * reflectance;
+}
+
+float bevy_dfg(
+    float r_2,
+    float n_v_2
+) {
+    float rx = 1.0 - r_2;
+    float a004_ = (metal::min(rx * rx, metal::exp2(-9.28 * n_v_2)) * rx) + (0.0425 - (0.0275 * r_2));
+    float x_10 = metal::max((1.04 - (0.572 * r_2)) - (1.04 * a004_), 0.00005);
+    float y_1 = metal::max(((0.022 * r_2) - 0.04) + (1.04 * a004_), 0.00005);
+    return x_10 + y_1;
+}
+
+metal::float3 bevy_brdf(
+    metal::float3 base_2,
+    float metallic_3,
+    float r_3,
+    float reflectance_1,
+    metal::float3 n_3,
+    metal::float3 v_1,
+    metal::float3 l
+) {
+    float n_l_1 = metal::saturate(metal::dot(n_3, l));
+    if (n_l_1 <= 0.0) {
+        return metal::float3(0.0, 0.0, 0.0);
+    }
+    float _e15 = bevy_alpha(r_3);
+    float n_v_3 = metal::max(metal::dot(n_3, v_1), 0.0001);
+    metal::float3 h_1 = metal::normalize(l + v_1);
+    float n_h = metal::saturate(metal::dot(n_3, h_1));
+    float l_h = metal::saturate(metal::dot(l, h_1));
+    float f90_d_3 = 0.5 + (((2.0 * _e15) * l_h) * l_h);
+    metal::float3 _e35 = fresnel_schlick(metal::float3(1.0, 1.0, 1.0), f90_d_3, n_l_1);
+    metal::float3 _e41 = fresnel_schlick(metal::float3(1.0, 1.0, 1.0), f90_d_3, n_v_3);
+    float burley = (_e35.x * _e41.x) * INV_PI;
+    float _e46 = bevy_f0_(reflectance_1);
+    metal::float3 f0_1 = (metal::float3(_e46, _e46, _e46) * (1.0 - metallic_3)) + (base_2 * metallic_3);
+    float f90_1 = metal::saturate(((f0_1.x + f0_1.y) + f0_1.z) * 16.5);
+    float _e64 = ggx_d(n_h, 1.0 - (n_h * n_h), _e15);
+    float _e65 = smith_visibility(n_l_1, n_v_3, _e15);
+    float _e70 = bevy_dfg(r_3, n_v_3);
+    metal::float3 comp = metal::float3(1.0, 1.0, 1.0) + (f0_1 * ((1.0 / _e70) - 1.0));
+    metal::float3 _e77 = fresnel_schlick(f0_1, f90_1, l_h);
+    metal::float3 spec = (_e77 * comp) * (_e64 * _e65);
+    return (base_2 * ((1.0 - metallic_3) * burley)) + spec;
+}
+
+float cone_cos_of(
+    metal::float3 v_2,
+    float d2_4,
+    float a_3,
+    metal::float3 d
+) {
+    bool local_10 = {};
+    bool local_11 = {};
+    float vd = metal::dot(v_2, d);
+    float h2_ = d2_4 - (a_3 * a_3);
+    if (!((h2_ <= 0.0))) {
+        if (vd >= 0.0) {
+            local_11 = (vd * vd) >= h2_;
+        } else {
+            local_11 = false;
+        }
+        bool _e19 = local_11;
+        local_10 = _e19;
+    } else {
+        local_10 = true;
+    }
+    bool _e21 = local_10;
+    if (_e21) {
+        return 1.0;
+    }
+    metal::float3 c_8 = metal::cross(v_2, d);
+    return metal::min(((vd * metal::sqrt(h2_)) + (metal::sqrt(metal::dot(c_8, c_8)) * a_3)) / d2_4, 1.0);
+}
+
+float cone_cos_toward(
+    metal::float3 center,
+    float radius,
+    metal::float3 p,
+    metal::float3 d_1
+) {
+    metal::float3 v_6 = center - p;
+    float _e6 = cone_cos_of(v_6, metal::dot(v_6, v_6), radius, d_1);
+    return _e6;
+}
+
+float range_scale_at(
+    metal::float4 rl,
+    float cos_t
+) {
+    float t_2 = ((0.5 + (0.5 * cos_t)) * (rl.z - 1.0)) + 1.0;
+    return metal::clamp(rl.x + ((rl.y * rl.z) / (t_2 * t_2)), 1.0, rl.w * rl.w);
+}
+
+float range_scale_toward(
+    metal::float4 rl_1,
+    metal::float3 center_1,
+    float radius_1,
+    metal::float3 p_1,
+    metal::float3 r_4
+) {
+    if (rl_1.w <= 1.0) {
+        return 1.0;
+    }
+    float _e9 = cone_cos_toward(center_1, radius_1, p_1, r_4);
+    float _e10 = range_scale_at(rl_1, _e9);
+    return _e10;
+}
+
+float shadow_margin(
+    float len
+) {
+    return 0.0001 * len;
+}
+
+float ray_inverse(
+    float x_3
+) {
+    return 1.0 / ((metal::abs(x_3) < 0.000000000000000000000000000001) ? 0.000000000000000000000000000001 : x_3);
+}
+
+metal::float3 ray_inverse3_(
+    metal::float3 d_2
+) {
+    float _e2 = ray_inverse(d_2.x);
+    float _e4 = ray_inverse(d_2.y);
+    float _e6 = ray_inverse(d_2.z);
+    return metal::float3(_e2, _e4, _e6);
+}
+
+float ray_aabb(
+    metal::float3 o,
+    metal::float3 inv_d,
+    metal::float3 bmin,
+    metal::float3 bmax,
+    float t_max
+) {
+    metal::float3 t0_ = (bmin - o) * inv_d;
+    metal::float3 t1_ = (bmax - o) * inv_d;
+    metal::float3 lo = metal::min(t0_, t1_);
+    metal::float3 hi = metal::max(t0_, t1_);
+    float t_in = metal::max(metal::max(lo.x, lo.y), metal::max(lo.z, 0.0));
+    float t_out = metal::min(metal::min(hi.x, hi.y), metal::min(hi.z, t_max));
+    if (t_in <= t_out) {
+        return t_in;
+    }
+    return -1.0;
+}
+
+metal::float3 triangle_normal(
+    metal::float3 a_4,
+    metal::float3 b_4,
+    metal::float3 c_4
+) {
+    bool local_12 = {};
+    metal::float3 n_7 = metal::cross(b_4 - a_4, c_4 - a_4);
+    float l2_ = metal::dot(n_7, n_7);
+    if (!(!((l2_ > 0.0)))) {
+        local_12 = !((l2_ < 300000000000000000000000000000000000000.0));
+    } else {
+        local_12 = true;
+    }
+    bool _e17 = local_12;
+    if (_e17) {
+        return metal::float3(0.0, 0.0, 0.0);
+    }
+    return n_7 / metal::float3(metal::sqrt(l2_));
+}
+
+float ray_triangle(
+    metal::float3 o_1,
+    metal::float3 d_3,
+    metal::float3 a_5,
+    metal::float3 b_5,
+    metal::float3 c_5,
+    float t_min,
+    float t_max_1
+) {
+    bool local_13 = {};
+    bool local_14 = {};
+    bool local_15 = {};
+    metal::float3 e1_ = b_5 - a_5;
+    metal::float3 e2_ = c_5 - a_5;
+    metal::float3 p_2 = metal::cross(d_3, e2_);
+    float det = metal::dot(e1_, p_2);
+    if (metal::abs(det) <= 0.0) {
+        return -1.0;
+    }
+    float inv = 1.0 / det;
+    metal::float3 s_3 = o_1 - a_5;
+    float u_3 = metal::dot(s_3, p_2) * inv;
+    if (!((u_3 < 0.0))) {
+        local_13 = u_3 > 1.0;
+    } else {
+        local_13 = true;
+    }
+    bool _e28 = local_13;
+    if (_e28) {
+        return -1.0;
+    }
+    metal::float3 q_1 = metal::cross(s_3, e1_);
+    float v_7 = metal::dot(d_3, q_1) * inv;
+    if (!((v_7 < 0.0))) {
+        local_14 = (u_3 + v_7) > 1.0;
+    } else {
+        local_14 = true;
+    }
+    bool _e42 = local_14;
+    if (_e42) {
+        return -1.0;
+    }
+    float t_3 = metal::dot(e2_, q_1) * inv;
+    if (t_3 > t_min) {
+        local_15 = t_3 < t_max_1;
+    } else {
+        local_15 = false;
+    }
+    bool _e51 = local_15;
+    if (_e51) {
+        return t_3;
+    }
+    return -1.0;
+}
+
+metal::float3 light_intensity(
+    GpuLight l_1,
+    metal::float3 w_3
+) {
+    switch(l_1.kind) {
+        case 0u: {
+            return l_1.intensity;
+        }
+        case 3u: {
+            metal::float3 _e8 = triangle_normal(l_1.p0_, l_1.p1_, l_1.p2_);
+            float _e10 = triangle_lobe(_e8, l_1.a, w_3);
+            return l_1.intensity * _e10;
+        }
+        default: {
+            return metal::float3(0.0);
+        }
+    }
+}
+
+metal::float3 light_point(
+    GpuLight l_2,
+    float u1_1,
+    float u2_1
+) {
+    if (l_2.kind == LIGHT_TRIANGLE) {
+        metal::float3 _e9 = triangle_sample(l_2.p0_, l_2.p1_, l_2.p2_, u1_1, u2_1);
+        return _e9;
+    }
+    return l_2.p0_;
+}
+
+GeoHit trace(
+    metal::float3 o_2,
+    metal::float3 d_4,
+    float t_min_1,
+    float t_max_2,
+    bool any_hit,
+    device type_6 const& geo_nodes,
+    device type_7 const& geo_tris,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    GeoHit hit = {};
+    type_8 stack = {};
+    uint sp = 0u;
+    uint node_2 = 0u;
+    uint i = {};
+    hit.t = t_max_2;
+    hit.tri = NO_LIGHT;
+    if ((1 + (_buffer_sizes.size0 - 0 - 32) / 32) == 0u) {
+        GeoHit _e13 = hit;
+        return _e13;
+    }
+    metal::float3 _e14 = ray_inverse3_(d_4);
+    uint2 loop_bound = uint2(4294967295u);
+    while(true) {
+        if (metal::all(loop_bound == uint2(0u))) { break; }
+        loop_bound -= uint2(loop_bound.y == 0u, 1u);
+        uint _e21 = node_2;
+        GpuGeoNode n_8 = geo_nodes[_e21];
+        float _e27 = hit.t;
+        float _e28 = ray_aabb(o_2, _e14, n_8.bmin, n_8.bmax, _e27);
+        if (_e28 >= 0.0) {
+            if (n_8.count > 0u) {
+                i = n_8.first;
+                uint2 loop_bound_1 = uint2(4294967295u);
+                bool loop_init = true;
+                while(true) {
+                    if (metal::all(loop_bound_1 == uint2(0u))) { break; }
+                    loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+                    if (!loop_init) {
+                        uint _e58 = i;
+                        i = _e58 + 1u;
+                    }
+                    loop_init = false;
+                    uint _e36 = i;
+                    if (_e36 < (n_8.first + n_8.count)) {
+                    } else {
+                        break;
+                    }
+                    {
+                        uint _e42 = i;
+                        GpuTriangle t_4 = geo_tris[_e42];
+                        float _e49 = hit.t;
+                        float _e50 = ray_triangle(o_2, d_4, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e49);
+                        if (_e50 > 0.0) {
+                            hit.t = _e50;
+                            uint _e55 = i;
+                            hit.tri = _e55;
+                            if (any_hit) {
+                                GeoHit _e56 = hit;
+                                return _e56;
+                            }
+                        }
+                    }
+                }
+            } else {
+                uint _e60 = sp;
+                if (_e60 < 64u) {
+                    uint _e63 = sp;
+                    stack.inner[_e63] = n_8.first + 1u;
+                    uint _e68 = sp;
+                    sp = _e68 + 1u;
+                }
+                node_2 = n_8.first;
+                continue;
+            }
+        }
+        uint _e72 = sp;
+        if (_e72 == 0u) {
+            break;
+        }
+        uint _e75 = sp;
+        sp = _e75 - 1u;
+        uint _e78 = sp;
+        uint _e80 = stack.inner[_e78];
+        node_2 = _e80;
+    }
+    GeoHit _e81 = hit;
+    return _e81;
+}
+
+bool occluded(
+    metal::float3 a_6,
+    metal::float3 b_6,
+    device type_6 const& geo_nodes,
+    device type_7 const& geo_tris,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float3 dv = b_6 - a_6;
+    float len_1 = metal::length(dv);
+    if (len_1 <= 0.0) {
+        return false;
+    }
+    float _e7 = shadow_margin(len_1);
+    GeoHit _e12 = trace(a_6, dv / metal::float3(len_1), _e7, len_1 - _e7, true, geo_nodes, geo_tris, _buffer_sizes);
+    return _e12.tri != NO_LIGHT;
+}
+
+BshNode bsh_node(
+    BshNodes nodes,
+    uint i_1,
+    device type_12 const& bsh_nodes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    BshNode _e4 = bsh_nodes[i_1];
+    return _e4;
+}
+
+uint bsh_count(
+    BshNodes nodes_1,
+    device type_12 const& bsh_nodes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    return 1 + (_buffer_sizes.size11 - 0 - 32) / 32;
+}
+
+uint bsh_first(
+    BshNodes nodes_2,
+    device type_12 const& bsh_nodes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e1 = bsh_count(nodes_2, bsh_nodes, _buffer_sizes);
+    if (_e1 > 0u) {
+        return 0u;
+    }
+    return BSH_NONE;
+}
+
+float bsh_inner_scale(
+    float a_7,
+    metal::float3 v_3,
+    float d2_5,
+    metal::float3 r_5,
+    metal::float4 rl_2
+) {
+    float _e5 = cone_cos_of(v_3, d2_5, a_7, r_5);
+    float _e8 = range_scale_at(rl_2, _e5 + 0.000002);
+    return _e8;
+}
+
+bool bsh_reaches(
+    BshNode node_3,
+    metal::float3 x_4,
+    metal::float3 r_6,
+    metal::float4 rl_3
+) {
+    bool local_16 = {};
+    bool local_17 = {};
+    bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_4);
+    if (_e6) {
+        return true;
+    }
+    if (!((rl_3.w <= 1.0))) {
+        bool _e20 = sphere_contains_point(node_3.center, node_3.radius * (rl_3.w * 1.0001), x_4);
+        local_16 = !(_e20);
+    } else {
+        local_16 = true;
+    }
+    bool _e23 = local_16;
+    if (_e23) {
+        return false;
+    }
+    float _e25 = bsh_range_bound(node_3);
+    metal::float3 v_8 = x_4 - node_3.center;
+    float d2_7 = metal::dot(v_8, v_8);
+    float reach_max = node_3.extent + ((rl_3.w * 1.001) * _e25);
+    if (d2_7 > (reach_max * reach_max)) {
+        return false;
+    }
+    if (node_3.child == BSH_NONE) {
+        float _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_4, r_6);
+        float _e46 = bsh_scaled_radius(node_3, metal::sqrt(_e43));
+        bool _e47 = sphere_contains_point(node_3.center, _e46, x_4);
+        return _e47;
+    }
+    float _e50 = bsh_inner_scale(node_3.extent, -(v_8), d2_7, r_6, rl_3);
+    float s_c = _e50 * 1.001;
+    float reach = node_3.extent + (metal::sqrt(s_c) * _e25);
+    if (d2_7 <= ((node_3.radius * node_3.radius) * s_c)) {
+        local_17 = d2_7 <= (reach * reach);
+    } else {
+        local_17 = false;
+    }
+    bool _e67 = local_17;
+    return _e67;
+}
+
+uint bsh_next_leaf_lobe(
+    BshNodes nodes_3,
+    uint start,
+    metal::float3 x_5,
+    metal::float3 r_7,
+    metal::float4 rl_4,
+    device type_12 const& bsh_nodes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint i_2 = {};
+    i_2 = start;
+    uint2 loop_bound_2 = uint2(4294967295u);
+    while(true) {
+        if (metal::all(loop_bound_2 == uint2(0u))) { break; }
+        loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
+        uint _e6 = i_2;
+        if (_e6 != BSH_NONE) {
+        } else {
+            break;
+        }
+        {
+            uint _e9 = i_2;
+            BshNode _e10 = bsh_node(nodes_3, _e9, bsh_nodes, _buffer_sizes);
+            bool _e11 = bsh_reaches(_e10, x_5, r_7, rl_4);
+            if (_e11) {
+                if (_e10.child == BSH_NONE) {
+                    uint _e15 = i_2;
+                    return _e15;
+                }
+                i_2 = _e10.child;
+            } else {
+                i_2 = _e10.next;
+            }
+        }
+    }
+    return BSH_NONE;
+}
+
+Connection connect_traced(
+    uint li,
+    metal::float3 x_6,
+    metal::float3 n_4,
+    metal::float3 ng_1,
+    float s,
+    float w_res,
+    float u1_2,
+    float u2_2,
+    float eps,
+    bool trace_1,
+    device type_6 const& geo_nodes,
+    device type_7 const& geo_tris,
+    device type_11 const& lights,
+    device type_4 const& rt2_2,
+    device type_4 const& r2_2,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Connection c_6 = {};
+    bool local_18 = {};
+    bool local_19 = {};
+    c_6.e = metal::float3(0.0);
+    GpuLight l_3 = lights[li];
+    metal::float3 _e18 = light_point(l_3, u1_2, u2_2);
+    c_6.y = _e18;
+    metal::float3 _e21 = c_6.y;
+    float _e24 = r2_2[li];
+    float _e26 = connection_cosine(x_6, _e21, n_4, ng_1, s * _e24);
+    c_6.cos_x = _e26;
+    float _e28 = c_6.cos_x;
+    if (!((_e28 <= 0.0))) {
+        if (trace_1) {
+            metal::float3 _e39 = c_6.y;
+            bool _e40 = occluded(x_6 + (ng_1 * eps), _e39, geo_nodes, geo_tris, _buffer_sizes);
+            local_19 = _e40;
+        } else {
+            local_19 = false;
+        }
+        bool _e42 = local_19;
+        local_18 = _e42;
+    } else {
+        local_18 = true;
+    }
+    bool _e44 = local_18;
+    if (_e44) {
+        Connection _e45 = c_6;
+        return _e45;
+    }
+    metal::float3 _e47 = c_6.y;
+    metal::float3 v_9 = x_6 - _e47;
+    float d2_8 = metal::dot(v_9, v_9);
+    metal::float3 _e54 = light_intensity(l_3, v_9 / metal::float3(metal::sqrt(d2_8)));
+    float _e56 = c_6.cos_x;
+    float _e59 = rt2_2[li];
+    float _e61 = connection_factor(_e56, d2_8, s * _e59, w_res);
+    c_6.e = _e54 * _e61;
+    Connection _e63 = c_6;
+    return _e63;
+}
+
+float light_range_scale(
+    uint li_1,
+    metal::float3 x_7,
+    metal::float3 r_8,
+    metal::float4 rl_5,
+    device type_13 const& light_cones,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    GpuLightCone c_9 = light_cones[li_1];
+    float _e9 = range_scale_toward(rl_5, c_9.center, c_9.radius, x_7, r_8);
+    return _e9;
+}
+
+metal::float4 surface_at(
+    metal::int2 texel,
+    metal::texture2d<float, metal::access::sample> position_tex
+) {
+    metal::float4 p_3 = position_tex.read(metal::uint2(texel), 0);
+    return (p_3.w > 0.0) ? metal::float4(p_3.xyz, 1.0) : metal::float4(0.0);
+}
+
+Shaded shade_pick_traced(
+    uint li_2,
+    metal::float3 x_8,
+    metal::float3 n_5,
+    metal::float3 r_9,
+    metal::float4 rl_6,
+    Material m_1,
+    float w_4,
+    float u1_3,
+    float u2_3,
+    float eps_1,
+    bool trace_2,
+    device type_6 const& geo_nodes,
+    device type_7 const& geo_tris,
+    device type_11 const& lights,
+    device type_4 const& rt2_2,
+    device type_4 const& r2_2,
+    device type_13 const& light_cones,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Shaded s_1 = {};
+    float _e12 = light_range_scale(li_2, x_8, r_9, rl_6, light_cones, _buffer_sizes);
+    Connection _e13 = connect_traced(li_2, x_8, n_5, n_5, _e12, w_4, u1_3, u2_3, eps_1, trace_2, geo_nodes, geo_tris, lights, rt2_2, r2_2, _buffer_sizes);
+    s_1.e = _e13.e;
+    s_1.diffuse = metal::float3(0.0);
+    s_1.specular = metal::float3(0.0);
+    if (_e13.cos_x > 0.0) {
+        metal::float3 _e34 = bevy_brdf(m_1.base, m_1.metallic, m_1.roughness, m_1.reflectance, n_5, m_1.v, metal::normalize(_e13.y - x_8));
+        s_1.diffuse = _e34 * _e13.e;
+    }
+    Shaded _e37 = s_1;
+    return _e37;
+}
+
+Shaded shade_pick(
+    uint li_3,
+    metal::float3 x_9,
+    metal::float3 n_6,
+    metal::float3 r_10,
+    metal::float4 rl_7,
+    Material m_2,
+    float w_5,
+    float u1_4,
+    float u2_4,
+    float eps_2,
+    device type_6 const& geo_nodes,
+    device type_7 const& geo_tris,
+    device type_11 const& lights,
+    device type_4 const& rt2_2,
+    device type_4 const& r2_2,
+    device type_13 const& light_cones,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Shaded _e11 = shade_pick_traced(li_3, x_9, n_6, r_10, rl_7, m_2, w_5, u1_4, u2_4, eps_2, true, geo_nodes, geo_tris, lights, rt2_2, r2_2, light_cones, _buffer_sizes);
+    return _e11;
+}
+
+Shaded add(
+    Shaded a_8,
+    Shaded b_7
+) {
+    return Shaded {a_8.e + b_7.e, a_8.diffuse + b_7.diffuse, a_8.specular + b_7.specular};
+}
+
+metal::float3 output_of(
+    Shaded s_2
+) {
+    return s_2.diffuse + s_2.specular;
+}
+
+struct main_Input {
+};
+kernel void main_(
+  metal::uint3 gid [[thread_position_in_grid]]
+, device type_6 const& geo_nodes [[user(fake0)]]
+, device type_7 const& geo_tris [[user(fake0)]]
+, constant ViewParams& view [[user(fake0)]]
+, metal::texture2d<float, metal::access::sample> position_tex [[user(fake0)]]
+, metal::texture2d<float, metal::access::sample> normal_tex [[user(fake0)]]
+, metal::texture2d<float, metal::access::write> out_tex [[user(fake0)]]
+, metal::texture2d<float, metal::access::sample> base_color_tex [[user(fake0)]]
+, metal::texture2d<float, metal::access::sample> metal_rough_tex [[user(fake0)]]
+, device type_11 const& lights [[user(fake0)]]
+, device type_4 const& rt2_2 [[user(fake0)]]
+, device type_4 const& r2_2 [[user(fake0)]]
+, device type_12 const& bsh_nodes [[user(fake0)]]
+, device type_13 const& light_cones [[user(fake0)]]
+, constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
+) {
+    bool local = {};
+    bool local_1 = {};
+    Material m = {};
+    metal::float4 lobe = metal::float4(1.0, 0.0, 1.0, 1.0);
+    metal::float3 r = {};
+    uint h = {};
+    Shaded t = Shaded {metal::float3(0.0), metal::float3(0.0), metal::float3(0.0)};
+    type_14 slot_light = {};
+    type_18 slot_u = {};
+    type_19 slot_p = {};
+    float total = 0.0;
+    uint count = 0u;
+    uint hc = {};
+    uint b = {};
+    uint q = {};
+    uint k = 0u;
+    uint copies = {};
+    uint j = {};
+    bool local_2 = {};
+    bool local_3 = {};
+    uint _e4 = view.width;
+    if (!((gid.x >= _e4))) {
+        uint _e12 = view.height;
+        local = gid.y >= _e12;
+    } else {
+        local = true;
+    }
+    bool _e15 = local;
+    if (_e15) {
+        return;
+    }
+    metal::int2 texel_1 = metal::int2(static_cast<int>(gid.x), static_cast<int>(gid.y));
+    metal::float4 _e21 = surface_at(texel_1, position_tex);
+    metal::float4 _e24 = normal_tex.read(metal::uint2(texel_1), 0);
+    metal::float3 nn = _e24.xyz;
+    float len2_ = metal::dot(nn, nn);
+    if (!((_e21.w <= 0.0))) {
+        local_1 = !((len2_ > 0.0));
+    } else {
+        local_1 = true;
+    }
+    bool _e37 = local_1;
+    if (_e37) {
+        out_tex.write(metal::float4(0.0), metal::uint2(texel_1));
+        return;
+    }
+    metal::float3 x_11 = _e21.xyz;
+    metal::float3 n_9 = nn / metal::float3(metal::sqrt(len2_));
+    r = n_9;
+    metal::float4 mr = metal_rough_tex.read(metal::uint2(texel_1), 0);
+    float _e57 = bevy_f0_(mr.w);
+    metal::float4 _e60 = base_color_tex.read(metal::uint2(texel_1), 0);
+    float _e65 = bevy_alpha(mr.y);
+    metal::float3 _e68 = view.eye;
+    m = Material {_e60.xyz, metal::saturate(mr.z), _e65, {}, metal::normalize(_e68 - x_11), mr.y, mr.w};
+    metal::float3 _e75 = m.base;
+    float _e77 = m.metallic;
+    float _e81 = m.alpha;
+    metal::float3 _e83 = m.v;
+    metal::float4 _e85 = receiver_lobe(_e75, _e77, metal::float3(_e57), 1.0, _e81, metal::dot(n_9, _e83));
+    lobe = _e85;
+    metal::float3 _e87 = m.v;
+    metal::float3 _e88 = mirror_dir(n_9, _e87);
+    r = _e88;
+    metal::float4 _e89 = lobe;
+    metal::float4 _e90 = range_lobe(_e89);
+    float _e93 = view.shadow_offset;
+    metal::float3 _e96 = view.eye;
+    float eps_3 = _e93 * metal::length(_e96 - x_11);
+    uint _e102 = view.seed;
+    uint _e106 = view.width;
+    uint _e112 = view.frame;
+    uint _e113 = point_stream(_e102, (gid.y * _e106) + gid.x, _e112);
+    uint _e114 = pick_stream(_e113);
+    h = _e114;
+    hc = _e113;
+    uint _e134 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
+    metal::float3 _e135 = r;
+    uint _e136 = bsh_next_leaf_lobe(BSH, _e134, x_11, _e135, _e90, bsh_nodes, _buffer_sizes);
+    b = _e136;
+    uint2 loop_bound_3 = uint2(4294967295u);
+    bool loop_init_1 = true;
+    while(true) {
+        if (metal::all(loop_bound_3 == uint2(0u))) { break; }
+        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+        if (!loop_init_1) {
+            uint _e193 = b;
+            uint _e196 = bsh_nodes[_e193].next;
+            metal::float3 _e197 = r;
+            uint _e198 = bsh_next_leaf_lobe(BSH, _e196, x_11, _e197, _e90, bsh_nodes, _buffer_sizes);
+            b = _e198;
+        }
+        loop_init_1 = false;
+        uint _e138 = b;
+        if (_e138 != BSH_NONE) {
+        } else {
+            break;
+        }
+        {
+            uint _e141 = count;
+            count = _e141 + 1u;
+            uint _e145 = b;
+            uint li_4 = bsh_nodes[_e145].light;
+            uint _e149 = h;
+            uint _e150 = pcg_hash(_e149);
+            h = _e150;
+            uint _e151 = h;
+            float _e152 = xi_from_bits(_e151);
+            uint _e153 = h;
+            uint _e154 = pcg_hash(_e153);
+            h = _e154;
+            uint _e155 = h;
+            float _e156 = xi_from_bits(_e155);
+            metal::float2 u_4 = metal::float2(_e152, _e156);
+            metal::float3 _e158 = r;
+            Material _e159 = m;
+            Shaded _e164 = shade_pick_traced(li_4, x_11, n_9, _e158, _e90, _e159, 1.0, u_4.x, u_4.y, eps_3, false, geo_nodes, geo_tris, lights, rt2_2, r2_2, light_cones, _buffer_sizes);
+            metal::float3 _e165 = output_of(_e164);
+            float _e166 = resample_target(_e165);
+            if (_e166 > 0.0) {
+                float _e169 = total;
+                total = _e169 + _e166;
+                q = 0u;
+                uint2 loop_bound_4 = uint2(4294967295u);
+                bool loop_init_2 = true;
+                while(true) {
+                    if (metal::all(loop_bound_4 == uint2(0u))) { break; }
+                    loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+                    if (!loop_init_2) {
+                        uint _e189 = q;
+                        q = _e189 + 1u;
+                    }
+                    loop_init_2 = false;
+                    uint _e173 = q;
+                    if (_e173 < K) {
+                    } else {
+                        break;
+                    }
+                    {
+                        uint _e176 = hc;
+                        uint _e177 = pcg_hash(_e176);
+                        hc = _e177;
+                        float _e178 = total;
+                        uint _e179 = hc;
+                        float _e180 = xi_from_bits(_e179);
+                        bool _e181 = weighted_replace(_e166, _e178, _e180);
+                        if (_e181) {
+                            uint _e182 = q;
+                            slot_light.inner[_e182] = li_4;
+                            uint _e184 = q;
+                            slot_u.inner[_e184] = u_4;
+                            uint _e186 = q;
+                            slot_p.inner[_e186] = _e166;
+                        }
+                    }
+                }
+            }
+        }
+    }
+    float _e199 = total;
+    if (_e199 > 0.0) {
+        uint2 loop_bound_5 = uint2(4294967295u);
+        bool loop_init_3 = true;
+        while(true) {
+            if (metal::all(loop_bound_5 == uint2(0u))) { break; }
+            loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+            if (!loop_init_3) {
+                uint _e280 = k;
+                k = _e280 + 1u;
+            }
+            loop_init_3 = false;
+            uint _e204 = k;
+            if (_e204 < K) {
+            } else {
+                break;
+            }
+            {
+                copies = 1u;
+                j = 0u;
+                uint2 loop_bound_6 = uint2(4294967295u);
+                bool loop_init_4 = true;
+                while(true) {
+                    if (metal::all(loop_bound_6 == uint2(0u))) { break; }
+                    loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+                    if (!loop_init_4) {
+                        uint _e248 = j;
+                        j = _e248 + 1u;
+                    }
+                    loop_init_4 = false;
+                    uint _e211 = j;
+                    if (_e211 < K) {
+                    } else {
+                        break;
+                    }
+                    {
+                        uint _e214 = j;
+                        uint _e215 = k;
+                        if (_e214 != _e215) {
+                            uint _e219 = j;
+                            uint _e221 = slot_light.inner[_e219];
+                            uint _e222 = k;
+                            uint _e224 = slot_light.inner[_e222];
+                            local_2 = _e221 == _e224;
+                        } else {
+                            local_2 = false;
+                        }
+                        bool _e227 = local_2;
+                        if (_e227) {
+                            uint _e230 = j;
+                            metal::float2 _e232 = slot_u.inner[_e230];
+                            uint _e233 = k;
+                            metal::float2 _e235 = slot_u.inner[_e233];
+                            local_3 = metal::all(_e232 == _e235);
+                        } else {
+                            local_3 = false;
+                        }
+                        bool _e239 = local_3;
+                        if (_e239) {
+                            uint _e240 = j;
+                            uint _e241 = k;
+                            if (_e240 < _e241) {
+                                copies = 0u;
+                                break;
+                            }
+                            uint _e244 = copies;
+                            copies = _e244 + 1u;
+                        }
+                    }
+                }
+                uint _e250 = copies;
+                if (_e250 > 0u) {
+                    float _e253 = total;
+                    uint _e255 = k;
+                    float _e257 = slot_p.inner[_e255];
+                    uint _e260 = copies;
+                    float w_7 = (_e253 / (8.0 * _e257)) * static_cast<float>(_e260);
+                    Shaded _e263 = t;
+                    uint _e264 = k;
+                    uint _e266 = slot_light.inner[_e264];
+                    metal::float3 _e267 = r;
+                    Material _e268 = m;
+                    uint _e269 = k;
+                    float _e272 = slot_u.inner[_e269].x;
+                    uint _e273 = k;
+                    float _e276 = slot_u.inner[_e273].y;
+                    Shaded _e277 = shade_pick(_e266, x_11, n_9, _e267, _e90, _e268, w_7, _e272, _e276, eps_3, geo_nodes, geo_tris, lights, rt2_2, r2_2, light_cones, _buffer_sizes);
+                    Shaded _e278 = add(_e263, _e277);
+                    t = _e278;
+                }
+            }
+        }
+    }
+    metal::float3 _e284 = t.diffuse;
+    metal::float3 _e286 = t.specular;
+    uint _e288 = count;
+    out_tex.write(metal::float4(_e284 + _e286, static_cast<float>(_e288)), metal::uint2(texel_1));
+    return;
+}
