@@ -395,7 +395,7 @@ fn bench(lights: usize, out: &str) -> Result<(), String> {
         .ok()
         .and_then(|s| s.parse().ok())
         .unwrap_or(64)
-        .clamp(4, 120);
+        .clamp(2, 120);
     let mut app = App::new();
     app.add_plugins((
         DefaultPlugins
@@ -455,7 +455,7 @@ fn bench(lights: usize, out: &str) -> Result<(), String> {
                 d.clear_history();
             }
         };
-        for _ in 0..4 {
+        for _ in 0..2 {
             app.update();
         }
         clear(&mut app);

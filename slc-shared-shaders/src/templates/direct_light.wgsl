@@ -83,6 +83,22 @@ fn add(a: Shaded, b: Shaded) -> Shaded {
     return Shaded(a.e + b.e, a.diffuse + b.diffuse, a.specular + b.specular);
 }
 
+/// How many of the picks `lights` hold light `lights[k]` when `k` is the
+/// first of them, else 0: a pick held `m` times is shaded once, weighted
+/// `m` times (one shadow ray instead of `m`).
+fn pick_copies(lights: array<u32, K>, k: u32) -> u32 {
+    var copies = 1u;
+    for (var j = 0u; j < K; j++) {
+        if j != k && lights[j] == lights[k] {
+            if j < k {
+                return 0u;
+            }
+            copies += 1u;
+        }
+    }
+    return copies;
+}
+
 /// What a pick adds to the output: the irradiance{% if pbr == "radiance" or pbr == "bevy" %}, here the outgoing radiance{% elif pbr == "split" %} (the output) and the specular radiance{% endif %}.
 fn output_of(s: Shaded) -> vec3f {
 {% if pbr == "radiance" or pbr == "bevy" %}
@@ -153,18 +169,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
             // at its first pick with `copies` times a pick's weight (the same
             // sum, `copies − 1` fewer shadow rays). A triangle's picks each
             // sample a point of their own.
-            var copies = 1u;
-            if lights[li].kind != LIGHT_TRIANGLE {
-                for (var j = 0u; j < K; j++) {
-                    if j != k && picks.light[j] == li {
-                        if j < k {
-                            copies = 0u;
-                            break;
-                        }
-                        copies += 1u;
-                    }
-                }
-            }
+            let copies = select(1u, pick_copies(picks.light, k), lights[li].kind != LIGHT_TRIANGLE);
             if copies > 0u {
                 t = add(t, shade_pick(li, x, n, r, rl, m, weighted_pick_weight(picks.w_sum, picks.w[k], K) * f32(copies), u1, u2, eps));
             }
@@ -208,16 +213,9 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     }
     if total > 0.0 {
         for (var k = 0u; k < K; k++) {
-            var copies = 1u;
-            for (var j = 0u; j < K; j++) {
-                if j != k && slot_light[j] == slot_light[k] && all(slot_u[j] == slot_u[k]) {
-                    if j < k {
-                        copies = 0u;
-                        break;
-                    }
-                    copies += 1u;
-                }
-            }
+            // A light is one candidate with one sampled point: the slots
+            // holding it hold the same pick.
+            let copies = pick_copies(slot_light, k);
             if copies > 0u {
                 let w = total / (f32(K) * slot_p[k]) * f32(copies);
                 t = add(t, shade_pick(slot_light[k], x, n, r, rl, m, w, slot_u[k].x, slot_u[k].y, eps));

@@ -159,7 +159,7 @@ var normal_tex: texture_2d<f32>;
 @group(0) @binding(3) 
 var out_tex: texture_storage_2d<rgba16float,write>;
 @group(1) @binding(1) 
-var<storage> lights: array<GpuLight>;
+var<storage> lights_1: array<GpuLight>;
 @group(1) @binding(2) 
 var<storage> rt2_4: array<f32>;
 @group(1) @binding(3) 
@@ -236,29 +236,29 @@ fn connection_factor(cos_x: f32, d2_3: f32, rt2_1: f32, w: f32) -> f32 {
 }
 
 fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, r2_1: f32) -> f32 {
+    var local_2: bool;
     var local_3: bool;
-    var local_4: bool;
 
     let v_4 = (x_2 - y);
     let d2_7 = dot(v_4, v_4);
     let _e7 = slc_keep(r2_1, d2_7);
     if !(!(_e7)) {
-        local_3 = !((d2_7 > 0f));
+        local_2 = !((d2_7 > 0f));
     } else {
-        local_3 = true;
+        local_2 = true;
     }
-    let _e16 = local_3;
+    let _e16 = local_2;
     if _e16 {
         return 0f;
     }
     let w_6 = (v_4 / vec3(sqrt(d2_7)));
     let cos_x_1 = -(dot(n, w_6));
     if !((cos_x_1 <= 0f)) {
-        local_4 = (dot(ng, w_6) >= 0f);
+        local_3 = (dot(ng, w_6) >= 0f);
     } else {
-        local_4 = true;
+        local_3 = true;
     }
-    let _e32 = local_4;
+    let _e32 = local_3;
     if _e32 {
         return 0f;
     }
@@ -390,23 +390,23 @@ fn emitter_importance(center_1: vec3<f32>, radius_1: f32, phi: f32, axis_1: vec3
 }
 
 fn cone_cos_of(v: vec3<f32>, d2_4: f32, a_2: f32, d: vec3<f32>) -> f32 {
+    var local_4: bool;
     var local_5: bool;
-    var local_6: bool;
 
     let vd = dot(v, d);
     let h2_ = (d2_4 - (a_2 * a_2));
     if !((h2_ <= 0f)) {
         if (vd >= 0f) {
-            local_6 = ((vd * vd) >= h2_);
+            local_5 = ((vd * vd) >= h2_);
         } else {
-            local_6 = false;
+            local_5 = false;
         }
-        let _e19 = local_6;
-        local_5 = _e19;
+        let _e19 = local_5;
+        local_4 = _e19;
     } else {
-        local_5 = true;
+        local_4 = true;
     }
-    let _e21 = local_5;
+    let _e21 = local_4;
     if _e21 {
         return 1f;
     }
@@ -456,16 +456,16 @@ fn light_importance(center_4: vec3<f32>, radius_4: f32, phi_1: f32, axis_2: vec3
 }
 
 fn glossy_importance(center_5: vec3<f32>, radius_5: f32, phi_2: f32, axis_3: vec3<f32>, cos_o_3: f32, cos_e_2: f32, p_5: vec3<f32>, n_2: vec3<f32>, r_3: vec3<f32>, lobe_5: vec4<f32>) -> f32 {
-    var local_7: bool;
+    var local_6: bool;
 
     let _e10 = emitter_importance(center_5, radius_5, phi_2, axis_3, cos_o_3, cos_e_2, p_5);
     let _e11 = cone_cos_toward(center_5, radius_5, p_5, n_2);
     if !((_e10 <= 0f)) {
-        local_7 = (_e11 <= 0f);
+        local_6 = (_e11 <= 0f);
     } else {
-        local_7 = true;
+        local_6 = true;
     }
-    let _e20 = local_7;
+    let _e20 = local_6;
     if _e20 {
         return 0f;
     }
@@ -495,21 +495,21 @@ fn cone_weight(center_6: vec3<f32>, radius_6: f32, phi_3: f32, axis_4: vec3<f32>
 }
 
 fn finite3_(v_1: vec3<f32>) -> bool {
+    var local_7: bool;
     var local_8: bool;
-    var local_9: bool;
 
     if (abs(v_1.x) <= F32_MAX) {
-        local_8 = (abs(v_1.y) <= F32_MAX);
+        local_7 = (abs(v_1.y) <= F32_MAX);
+    } else {
+        local_7 = false;
+    }
+    let _e12 = local_7;
+    if _e12 {
+        local_8 = (abs(v_1.z) <= F32_MAX);
     } else {
         local_8 = false;
     }
-    let _e12 = local_8;
-    if _e12 {
-        local_9 = (abs(v_1.z) <= F32_MAX);
-    } else {
-        local_9 = false;
-    }
-    let _e20 = local_9;
+    let _e20 = local_8;
     return _e20;
 }
 
@@ -542,9 +542,9 @@ fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin: vec3<f32>, bmax: vec3<f32>, t_
 }
 
 fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_3: vec3<f32>, b_2: vec3<f32>, c_1: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
+    var local_9: bool;
     var local_10: bool;
     var local_11: bool;
-    var local_12: bool;
 
     let e1_ = (b_2 - a_3);
     let e2_ = (c_1 - a_3);
@@ -557,32 +557,32 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_3: vec3<f32>, b_2: vec3<f32>, 
     let s_3 = (o_1 - a_3);
     let u_3 = (dot(s_3, p_7) * inv);
     if !((u_3 < 0f)) {
-        local_10 = (u_3 > 1f);
+        local_9 = (u_3 > 1f);
     } else {
-        local_10 = true;
+        local_9 = true;
     }
-    let _e28 = local_10;
+    let _e28 = local_9;
     if _e28 {
         return -1f;
     }
     let q = cross(s_3, e1_);
     let v_9 = (dot(d_3, q) * inv);
     if !((v_9 < 0f)) {
-        local_11 = ((u_3 + v_9) > 1f);
+        local_10 = ((u_3 + v_9) > 1f);
     } else {
-        local_11 = true;
+        local_10 = true;
     }
-    let _e42 = local_11;
+    let _e42 = local_10;
     if _e42 {
         return -1f;
     }
     let t_4 = (dot(e2_, q) * inv);
     if (t_4 > t_min) {
-        local_12 = (t_4 < t_max_1);
+        local_11 = (t_4 < t_max_1);
     } else {
-        local_12 = false;
+        local_11 = false;
     }
-    let _e51 = local_12;
+    let _e51 = local_11;
     if _e51 {
         return t_4;
     }
@@ -717,8 +717,8 @@ fn bsh_inner_scale(a_5: f32, v_2: vec3<f32>, d2_6: f32, r_5: vec3<f32>, rl_2: ve
 }
 
 fn bsh_reaches(node_3: BshNode, x_5: vec3<f32>, r_6: vec3<f32>, rl_3: vec4<f32>) -> bool {
+    var local_12: bool;
     var local_13: bool;
-    var local_14: bool;
 
     let _e6 = sphere_contains_point(node_3.center, node_3.radius, x_5);
     if _e6 {
@@ -726,11 +726,11 @@ fn bsh_reaches(node_3: BshNode, x_5: vec3<f32>, r_6: vec3<f32>, rl_3: vec4<f32>)
     }
     if !((rl_3.w <= 1f)) {
         let _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001f)), x_5);
-        local_13 = !(_e20);
+        local_12 = !(_e20);
     } else {
-        local_13 = true;
+        local_12 = true;
     }
-    let _e23 = local_13;
+    let _e23 = local_12;
     if _e23 {
         return false;
     }
@@ -751,11 +751,11 @@ fn bsh_reaches(node_3: BshNode, x_5: vec3<f32>, r_6: vec3<f32>, rl_3: vec4<f32>)
     let s_c = (_e50 * 1.001f);
     let reach = (node_3.extent + (sqrt(s_c) * _e25));
     if (d2_9 <= ((node_3.radius * node_3.radius) * s_c)) {
-        local_14 = (d2_9 <= (reach * reach));
+        local_13 = (d2_9 <= (reach * reach));
     } else {
-        local_14 = false;
+        local_13 = false;
     }
-    let _e67 = local_14;
+    let _e67 = local_13;
     return _e67;
 }
 
@@ -789,11 +789,11 @@ fn bsh_next_leaf_lobe(nodes_3: u32, start: u32, x_6: vec3<f32>, r_7: vec3<f32>, 
 
 fn connect_traced(li: u32, x_7: vec3<f32>, n_4: vec3<f32>, ng_1: vec3<f32>, s: f32, w_res: f32, u1_1: f32, u2_1: f32, eps: f32, trace_1: bool) -> Connection {
     var c_2: Connection;
+    var local_14: bool;
     var local_15: bool;
-    var local_16: bool;
 
     c_2.e = vec3(0f);
-    let l_2 = lights[li];
+    let l_2 = lights_1[li];
     let _e18 = light_point(l_2, u1_1, u2_1);
     c_2.y = _e18;
     let _e21 = c_2.y;
@@ -805,16 +805,16 @@ fn connect_traced(li: u32, x_7: vec3<f32>, n_4: vec3<f32>, ng_1: vec3<f32>, s: f
         if trace_1 {
             let _e39 = c_2.y;
             let _e40 = occluded((x_7 + (ng_1 * eps)), _e39);
-            local_16 = _e40;
+            local_15 = _e40;
         } else {
-            local_16 = false;
+            local_15 = false;
         }
-        let _e42 = local_16;
-        local_15 = _e42;
+        let _e42 = local_15;
+        local_14 = _e42;
     } else {
-        local_15 = true;
+        local_14 = true;
     }
-    let _e44 = local_15;
+    let _e44 = local_14;
     if _e44 {
         let _e45 = c_2;
         return _e45;
@@ -915,15 +915,15 @@ fn bsh_weighted_collect(x_10: vec3<f32>, n_6: vec3<f32>, r_10: vec3<f32>, lobe_8
 }
 
 fn unproject_pixel(c0_: vec4<f32>, c1_: vec4<f32>, c2_: vec4<f32>, c3_: vec4<f32>, px: f32, py: f32, width: f32, height: f32, depth: f32) -> vec4<f32> {
+    var local_16: bool;
     var local_17: bool;
-    var local_18: bool;
 
     if (depth > 0f) {
-        local_17 = (depth < 1f);
+        local_16 = (depth < 1f);
     } else {
-        local_17 = false;
+        local_16 = false;
     }
-    let _e16 = local_17;
+    let _e16 = local_16;
     if !(_e16) {
         return vec4<f32>(0f, 0f, 0f, 0f);
     }
@@ -933,11 +933,11 @@ fn unproject_pixel(c0_: vec4<f32>, c1_: vec4<f32>, c2_: vec4<f32>, c3_: vec4<f32
     let q_1 = vec3<f32>((p_8.x / p_8.w), (p_8.y / p_8.w), (p_8.z / p_8.w));
     if (abs(p_8.w) > 0f) {
         let _e59 = finite3_(q_1);
-        local_18 = _e59;
+        local_17 = _e59;
     } else {
-        local_18 = false;
+        local_17 = false;
     }
-    let _e61 = local_18;
+    let _e61 = local_17;
     if _e61 {
         return vec4<f32>(q_1.x, q_1.y, q_1.z, 1f);
     }
@@ -977,6 +977,44 @@ fn add(a_6: Shaded, b_5: Shaded) -> Shaded {
     return Shaded((a_6.e + b_5.e), (a_6.diffuse + b_5.diffuse), (a_6.specular + b_5.specular));
 }
 
+fn pick_copies(lights: array<u32, 8>, k_2: u32) -> u32 {
+    var copies: u32 = 1u;
+    var j: u32 = 0u;
+    var local_18: bool;
+
+    loop {
+        let _e6 = j;
+        if (_e6 < K) {
+        } else {
+            break;
+        }
+        {
+            let _e9 = j;
+            if (_e9 != k_2) {
+                let _e13 = j;
+                local_18 = (lights[_e13] == lights[k_2]);
+            } else {
+                local_18 = false;
+            }
+            let _e18 = local_18;
+            if _e18 {
+                let _e19 = j;
+                if (_e19 < k_2) {
+                    return 0u;
+                }
+                let _e22 = copies;
+                copies = (_e22 + 1u);
+            }
+        }
+        continuing {
+            let _e26 = j;
+            j = (_e26 + 1u);
+        }
+    }
+    let _e28 = copies;
+    return _e28;
+}
+
 @compute @workgroup_size(8, 8, 1) 
 fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     var local: bool;
@@ -987,9 +1025,6 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     var h: u32;
     var t: Shaded = Shaded(vec3(0f), vec3(0f), vec3(0f));
     var k: u32 = 0u;
-    var copies: u32;
-    var j: u32;
-    var local_2: bool;
 
     let _e4 = view.width;
     if !((gid.x >= _e4)) {
@@ -1054,64 +1089,29 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
                 let _e106 = xi_from_bits(_e105);
                 let _e108 = k;
                 let li_6 = _e90.light[_e108];
-                copies = 1u;
-                let _e115 = lights[li_6].kind;
-                if (_e115 != LIGHT_TRIANGLE) {
-                    j = 0u;
-                    loop {
-                        let _e120 = j;
-                        if (_e120 < K) {
-                        } else {
-                            break;
-                        }
-                        {
-                            let _e123 = j;
-                            let _e124 = k;
-                            if (_e123 != _e124) {
-                                let _e129 = j;
-                                local_2 = (_e90.light[_e129] == li_6);
-                            } else {
-                                local_2 = false;
-                            }
-                            let _e133 = local_2;
-                            if _e133 {
-                                let _e134 = j;
-                                let _e135 = k;
-                                if (_e134 < _e135) {
-                                    copies = 0u;
-                                    break;
-                                }
-                                let _e138 = copies;
-                                copies = (_e138 + 1u);
-                            }
-                        }
-                        continuing {
-                            let _e142 = j;
-                            j = (_e142 + 1u);
-                        }
-                    }
-                }
-                let _e144 = copies;
-                if (_e144 > 0u) {
-                    let _e147 = t;
-                    let _e148 = r;
-                    let _e149 = m;
-                    let _e152 = k;
-                    let _e155 = weighted_pick_weight(_e90.w_sum, _e90.w[_e152], K);
-                    let _e156 = copies;
-                    let _e159 = shade_pick(li_6, x_14, n_10, _e148, _e54, _e149, (_e155 * f32(_e156)), _e102, _e106, eps_3);
-                    let _e160 = add(_e147, _e159);
-                    t = _e160;
+                let _e112 = k;
+                let _e113 = pick_copies(_e90.light, _e112);
+                let _e117 = lights_1[li_6].kind;
+                let copies_1 = select(1u, _e113, (_e117 != LIGHT_TRIANGLE));
+                if (copies_1 > 0u) {
+                    let _e123 = t;
+                    let _e124 = r;
+                    let _e125 = m;
+                    let _e128 = k;
+                    let _e131 = weighted_pick_weight(_e90.w_sum, _e90.w[_e128], K);
+                    let _e134 = shade_pick(li_6, x_14, n_10, _e124, _e54, _e125, (_e131 * f32(copies_1)), _e102, _e106, eps_3);
+                    let _e135 = add(_e123, _e134);
+                    t = _e135;
                 }
             }
             continuing {
-                let _e162 = k;
-                k = (_e162 + 1u);
+                let _e137 = k;
+                k = (_e137 + 1u);
             }
         }
     }
     let count = _e90.n;
-    let _e167 = t.e;
-    textureStore(out_tex, texel_1, vec4<f32>(_e167, f32(count)));
+    let _e142 = t.e;
+    textureStore(out_tex, texel_1, vec4<f32>(_e142, f32(count)));
     return;
 }

@@ -155,7 +155,7 @@ var base_color_tex: texture_2d<f32>;
 @group(0) @binding(5) 
 var metal_rough_tex: texture_2d<f32>;
 @group(1) @binding(1) 
-var<storage> lights: array<GpuLight>;
+var<storage> lights_1: array<GpuLight>;
 @group(1) @binding(2) 
 var<storage> rt2_2: array<f32>;
 @group(1) @binding(3) 
@@ -232,29 +232,29 @@ fn connection_factor(cos_x: f32, d2_3: f32, rt2_1: f32, w: f32) -> f32 {
 }
 
 fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, r2_1: f32) -> f32 {
-    var local_4: bool;
-    var local_5: bool;
+    var local_2: bool;
+    var local_3: bool;
 
     let v_5 = (x_2 - y);
     let d2_6 = dot(v_5, v_5);
     let _e7 = slc_keep(r2_1, d2_6);
     if !(!(_e7)) {
-        local_4 = !((d2_6 > 0f));
+        local_2 = !((d2_6 > 0f));
     } else {
-        local_4 = true;
+        local_2 = true;
     }
-    let _e16 = local_4;
+    let _e16 = local_2;
     if _e16 {
         return 0f;
     }
     let w_6 = (v_5 / vec3(sqrt(d2_6)));
     let cos_x_1 = -(dot(n, w_6));
     if !((cos_x_1 <= 0f)) {
-        local_5 = (dot(ng, w_6) >= 0f);
+        local_3 = (dot(ng, w_6) >= 0f);
     } else {
-        local_5 = true;
+        local_3 = true;
     }
-    let _e32 = local_5;
+    let _e32 = local_3;
     if _e32 {
         return 0f;
     }
@@ -313,14 +313,14 @@ fn smith_root(cos_: f32, alpha_1: f32) -> f32 {
 }
 
 fn smith_visibility(n_l: f32, n_v: f32, alpha_2: f32) -> f32 {
-    var local_6: bool;
+    var local_4: bool;
 
     if !((n_l <= 0f)) {
-        local_6 = (n_v <= 0f);
+        local_4 = (n_v <= 0f);
     } else {
-        local_6 = true;
+        local_4 = true;
     }
-    let _e11 = local_6;
+    let _e11 = local_4;
     if _e11 {
         return 0f;
     }
@@ -342,21 +342,21 @@ fn specular_fresnel(base: vec3<f32>, metallic: f32, f0_d: vec3<f32>, f90_d: f32,
 }
 
 fn has_specular(metallic_1: f32, f0_d_1: vec3<f32>, f90_d_1: f32) -> bool {
-    var local_7: bool;
-    var local_8: bool;
+    var local_5: bool;
+    var local_6: bool;
 
     if !((metallic_1 > 0f)) {
-        local_7 = (f90_d_1 > 0f);
+        local_5 = (f90_d_1 > 0f);
     } else {
-        local_7 = true;
+        local_5 = true;
     }
-    let _e11 = local_7;
+    let _e11 = local_5;
     if !(_e11) {
-        local_8 = (max(max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0f);
+        local_6 = (max(max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0f);
     } else {
-        local_8 = true;
+        local_6 = true;
     }
-    let _e23 = local_8;
+    let _e23 = local_6;
     return _e23;
 }
 
@@ -365,17 +365,17 @@ fn channel_mean(c_3: vec3<f32>) -> f32 {
 }
 
 fn receiver_lobe(base_1: vec3<f32>, metallic_2: f32, f0_d_2: vec3<f32>, f90_d_2: f32, alpha_3: f32, n_v_1: f32) -> vec4<f32> {
-    var local_9: bool;
+    var local_7: bool;
 
     let _e10 = fresnel_schlick(f0_d_2, f90_d_2, n_v_1);
     let _e16 = channel_mean((((vec3<f32>(1f, 1f, 1f) - _e10) * base_1) * (1f - metallic_2)));
     if !((n_v_1 <= 0f)) {
         let _e22 = has_specular(metallic_2, f0_d_2, f90_d_2);
-        local_9 = !(_e22);
+        local_7 = !(_e22);
     } else {
-        local_9 = true;
+        local_7 = true;
     }
-    let _e25 = local_9;
+    let _e25 = local_7;
     if _e25 {
         return vec4<f32>(_e16, 0f, alpha_3, n_v_1);
     }
@@ -459,23 +459,23 @@ fn bevy_brdf(base_2: vec3<f32>, metallic_3: f32, r_3: f32, reflectance_1: f32, n
 }
 
 fn cone_cos_of(v_2: vec3<f32>, d2_4: f32, a_3: f32, d: vec3<f32>) -> f32 {
-    var local_10: bool;
-    var local_11: bool;
+    var local_8: bool;
+    var local_9: bool;
 
     let vd = dot(v_2, d);
     let h2_ = (d2_4 - (a_3 * a_3));
     if !((h2_ <= 0f)) {
         if (vd >= 0f) {
-            local_11 = ((vd * vd) >= h2_);
+            local_9 = ((vd * vd) >= h2_);
         } else {
-            local_11 = false;
+            local_9 = false;
         }
-        let _e19 = local_11;
-        local_10 = _e19;
+        let _e19 = local_9;
+        local_8 = _e19;
     } else {
-        local_10 = true;
+        local_8 = true;
     }
-    let _e21 = local_10;
+    let _e21 = local_8;
     if _e21 {
         return 1f;
     }
@@ -532,16 +532,16 @@ fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin: vec3<f32>, bmax: vec3<f32>, t_
 }
 
 fn triangle_normal(a_4: vec3<f32>, b_4: vec3<f32>, c_4: vec3<f32>) -> vec3<f32> {
-    var local_12: bool;
+    var local_10: bool;
 
     let n_7 = cross((b_4 - a_4), (c_4 - a_4));
     let l2_ = dot(n_7, n_7);
     if !(!((l2_ > 0f))) {
-        local_12 = !((l2_ < 300000000000000000000000000000000000000f));
+        local_10 = !((l2_ < 300000000000000000000000000000000000000f));
     } else {
-        local_12 = true;
+        local_10 = true;
     }
-    let _e17 = local_12;
+    let _e17 = local_10;
     if _e17 {
         return vec3<f32>(0f, 0f, 0f);
     }
@@ -549,9 +549,9 @@ fn triangle_normal(a_4: vec3<f32>, b_4: vec3<f32>, c_4: vec3<f32>) -> vec3<f32> 
 }
 
 fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_5: vec3<f32>, c_5: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
+    var local_11: bool;
+    var local_12: bool;
     var local_13: bool;
-    var local_14: bool;
-    var local_15: bool;
 
     let e1_ = (b_5 - a_5);
     let e2_ = (c_5 - a_5);
@@ -564,32 +564,32 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_5: vec3<f32>, 
     let s_3 = (o_1 - a_5);
     let u_3 = (dot(s_3, p_2) * inv);
     if !((u_3 < 0f)) {
-        local_13 = (u_3 > 1f);
+        local_11 = (u_3 > 1f);
     } else {
-        local_13 = true;
+        local_11 = true;
     }
-    let _e28 = local_13;
+    let _e28 = local_11;
     if _e28 {
         return -1f;
     }
     let q_1 = cross(s_3, e1_);
     let v_7 = (dot(d_3, q_1) * inv);
     if !((v_7 < 0f)) {
-        local_14 = ((u_3 + v_7) > 1f);
+        local_12 = ((u_3 + v_7) > 1f);
     } else {
-        local_14 = true;
+        local_12 = true;
     }
-    let _e42 = local_14;
+    let _e42 = local_12;
     if _e42 {
         return -1f;
     }
     let t_3 = (dot(e2_, q_1) * inv);
     if (t_3 > t_min) {
-        local_15 = (t_3 < t_max_1);
+        local_13 = (t_3 < t_max_1);
     } else {
-        local_15 = false;
+        local_13 = false;
     }
-    let _e51 = local_15;
+    let _e51 = local_13;
     if _e51 {
         return t_3;
     }
@@ -729,8 +729,8 @@ fn bsh_inner_scale(a_7: f32, v_3: vec3<f32>, d2_5: f32, r_5: vec3<f32>, rl_2: ve
 }
 
 fn bsh_reaches(node_3: BshNode, x_4: vec3<f32>, r_6: vec3<f32>, rl_3: vec4<f32>) -> bool {
-    var local_16: bool;
-    var local_17: bool;
+    var local_14: bool;
+    var local_15: bool;
 
     let _e6 = sphere_contains_point(node_3.center, node_3.radius, x_4);
     if _e6 {
@@ -738,11 +738,11 @@ fn bsh_reaches(node_3: BshNode, x_4: vec3<f32>, r_6: vec3<f32>, rl_3: vec4<f32>)
     }
     if !((rl_3.w <= 1f)) {
         let _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001f)), x_4);
-        local_16 = !(_e20);
+        local_14 = !(_e20);
     } else {
-        local_16 = true;
+        local_14 = true;
     }
-    let _e23 = local_16;
+    let _e23 = local_14;
     if _e23 {
         return false;
     }
@@ -763,11 +763,11 @@ fn bsh_reaches(node_3: BshNode, x_4: vec3<f32>, r_6: vec3<f32>, rl_3: vec4<f32>)
     let s_c = (_e50 * 1.001f);
     let reach = (node_3.extent + (sqrt(s_c) * _e25));
     if (d2_7 <= ((node_3.radius * node_3.radius) * s_c)) {
-        local_17 = (d2_7 <= (reach * reach));
+        local_15 = (d2_7 <= (reach * reach));
     } else {
-        local_17 = false;
+        local_15 = false;
     }
-    let _e67 = local_17;
+    let _e67 = local_15;
     return _e67;
 }
 
@@ -801,11 +801,11 @@ fn bsh_next_leaf_lobe(nodes_3: u32, start: u32, x_5: vec3<f32>, r_7: vec3<f32>, 
 
 fn connect_traced(li: u32, x_6: vec3<f32>, n_4: vec3<f32>, ng_1: vec3<f32>, s: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32, trace_1: bool) -> Connection {
     var c_6: Connection;
-    var local_18: bool;
-    var local_19: bool;
+    var local_16: bool;
+    var local_17: bool;
 
     c_6.e = vec3(0f);
-    let l_3 = lights[li];
+    let l_3 = lights_1[li];
     let _e18 = light_point(l_3, u1_2, u2_2);
     c_6.y = _e18;
     let _e21 = c_6.y;
@@ -817,16 +817,16 @@ fn connect_traced(li: u32, x_6: vec3<f32>, n_4: vec3<f32>, ng_1: vec3<f32>, s: f
         if trace_1 {
             let _e39 = c_6.y;
             let _e40 = occluded((x_6 + (ng_1 * eps)), _e39);
-            local_19 = _e40;
+            local_17 = _e40;
         } else {
-            local_19 = false;
+            local_17 = false;
         }
-        let _e42 = local_19;
-        local_18 = _e42;
+        let _e42 = local_17;
+        local_16 = _e42;
     } else {
-        local_18 = true;
+        local_16 = true;
     }
-    let _e44 = local_18;
+    let _e44 = local_16;
     if _e44 {
         let _e45 = c_6;
         return _e45;
@@ -879,6 +879,44 @@ fn add(a_8: Shaded, b_7: Shaded) -> Shaded {
     return Shaded((a_8.e + b_7.e), (a_8.diffuse + b_7.diffuse), (a_8.specular + b_7.specular));
 }
 
+fn pick_copies(lights: array<u32, 8>, k_1: u32) -> u32 {
+    var copies: u32 = 1u;
+    var j: u32 = 0u;
+    var local_18: bool;
+
+    loop {
+        let _e6 = j;
+        if (_e6 < K) {
+        } else {
+            break;
+        }
+        {
+            let _e9 = j;
+            if (_e9 != k_1) {
+                let _e13 = j;
+                local_18 = (lights[_e13] == lights[k_1]);
+            } else {
+                local_18 = false;
+            }
+            let _e18 = local_18;
+            if _e18 {
+                let _e19 = j;
+                if (_e19 < k_1) {
+                    return 0u;
+                }
+                let _e22 = copies;
+                copies = (_e22 + 1u);
+            }
+        }
+        continuing {
+            let _e26 = j;
+            j = (_e26 + 1u);
+        }
+    }
+    let _e28 = copies;
+    return _e28;
+}
+
 fn output_of(s_2: Shaded) -> vec3<f32> {
     return (s_2.diffuse + s_2.specular);
 }
@@ -901,10 +939,6 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     var b: u32;
     var q: u32;
     var k: u32 = 0u;
-    var copies: u32;
-    var j: u32;
-    var local_2: bool;
-    var local_3: bool;
 
     let _e4 = view.width;
     if !((gid.x >= _e4)) {
@@ -1044,83 +1078,37 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
                 break;
             }
             {
-                copies = 1u;
-                j = 0u;
-                loop {
-                    let _e211 = j;
-                    if (_e211 < K) {
-                    } else {
-                        break;
-                    }
-                    {
-                        let _e214 = j;
-                        let _e215 = k;
-                        if (_e214 != _e215) {
-                            let _e219 = j;
-                            let _e221 = slot_light[_e219];
-                            let _e222 = k;
-                            let _e224 = slot_light[_e222];
-                            local_2 = (_e221 == _e224);
-                        } else {
-                            local_2 = false;
-                        }
-                        let _e227 = local_2;
-                        if _e227 {
-                            let _e230 = j;
-                            let _e232 = slot_u[_e230];
-                            let _e233 = k;
-                            let _e235 = slot_u[_e233];
-                            local_3 = all((_e232 == _e235));
-                        } else {
-                            local_3 = false;
-                        }
-                        let _e239 = local_3;
-                        if _e239 {
-                            let _e240 = j;
-                            let _e241 = k;
-                            if (_e240 < _e241) {
-                                copies = 0u;
-                                break;
-                            }
-                            let _e244 = copies;
-                            copies = (_e244 + 1u);
-                        }
-                    }
-                    continuing {
-                        let _e248 = j;
-                        j = (_e248 + 1u);
-                    }
-                }
-                let _e250 = copies;
-                if (_e250 > 0u) {
-                    let _e253 = total;
-                    let _e255 = k;
-                    let _e257 = slot_p[_e255];
-                    let _e260 = copies;
-                    let w_7 = ((_e253 / (8f * _e257)) * f32(_e260));
-                    let _e263 = t;
-                    let _e264 = k;
-                    let _e266 = slot_light[_e264];
-                    let _e267 = r;
-                    let _e268 = m;
-                    let _e269 = k;
-                    let _e272 = slot_u[_e269].x;
-                    let _e273 = k;
-                    let _e276 = slot_u[_e273].y;
-                    let _e277 = shade_pick(_e266, x_11, n_9, _e267, _e90, _e268, w_7, _e272, _e276, eps_3);
-                    let _e278 = add(_e263, _e277);
-                    t = _e278;
+                let _e207 = slot_light;
+                let _e208 = k;
+                let _e209 = pick_copies(_e207, _e208);
+                if (_e209 > 0u) {
+                    let _e212 = total;
+                    let _e214 = k;
+                    let _e216 = slot_p[_e214];
+                    let w_7 = ((_e212 / (8f * _e216)) * f32(_e209));
+                    let _e221 = t;
+                    let _e222 = k;
+                    let _e224 = slot_light[_e222];
+                    let _e225 = r;
+                    let _e226 = m;
+                    let _e227 = k;
+                    let _e230 = slot_u[_e227].x;
+                    let _e231 = k;
+                    let _e234 = slot_u[_e231].y;
+                    let _e235 = shade_pick(_e224, x_11, n_9, _e225, _e90, _e226, w_7, _e230, _e234, eps_3);
+                    let _e236 = add(_e221, _e235);
+                    t = _e236;
                 }
             }
             continuing {
-                let _e280 = k;
-                k = (_e280 + 1u);
+                let _e238 = k;
+                k = (_e238 + 1u);
             }
         }
     }
-    let _e284 = t.diffuse;
-    let _e286 = t.specular;
-    let _e288 = count;
-    textureStore(out_tex, texel_1, vec4<f32>((_e284 + _e286), f32(_e288)));
+    let _e242 = t.diffuse;
+    let _e244 = t.specular;
+    let _e246 = count;
+    textureStore(out_tex, texel_1, vec4<f32>((_e242 + _e244), f32(_e246)));
     return;
 }

@@ -165,7 +165,7 @@ var metal_rough_tex: texture_2d<f32>;
 @group(0) @binding(6) 
 var specular_tex: texture_storage_2d<rgba16float,write>;
 @group(1) @binding(1) 
-var<storage> lights: array<GpuLight>;
+var<storage> lights_1: array<GpuLight>;
 @group(1) @binding(2) 
 var<storage> rt2_4: array<f32>;
 @group(1) @binding(3) 
@@ -242,29 +242,29 @@ fn connection_factor(cos_x: f32, d2_3: f32, rt2_1: f32, w: f32) -> f32 {
 }
 
 fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, r2_1: f32) -> f32 {
+    var local_2: bool;
     var local_3: bool;
-    var local_4: bool;
 
     let v_6 = (x_2 - y);
     let d2_7 = dot(v_6, v_6);
     let _e7 = slc_keep(r2_1, d2_7);
     if !(!(_e7)) {
-        local_3 = !((d2_7 > 0f));
+        local_2 = !((d2_7 > 0f));
     } else {
-        local_3 = true;
+        local_2 = true;
     }
-    let _e16 = local_3;
+    let _e16 = local_2;
     if _e16 {
         return 0f;
     }
     let w_7 = (v_6 / vec3(sqrt(d2_7)));
     let cos_x_1 = -(dot(n, w_7));
     if !((cos_x_1 <= 0f)) {
-        local_4 = (dot(ng, w_7) >= 0f);
+        local_3 = (dot(ng, w_7) >= 0f);
     } else {
-        local_4 = true;
+        local_3 = true;
     }
-    let _e32 = local_4;
+    let _e32 = local_3;
     if _e32 {
         return 0f;
     }
@@ -328,14 +328,14 @@ fn smith_root(cos_: f32, alpha_1: f32) -> f32 {
 }
 
 fn smith_visibility(n_l: f32, n_v: f32, alpha_2: f32) -> f32 {
-    var local_5: bool;
+    var local_4: bool;
 
     if !((n_l <= 0f)) {
-        local_5 = (n_v <= 0f);
+        local_4 = (n_v <= 0f);
     } else {
-        local_5 = true;
+        local_4 = true;
     }
-    let _e11 = local_5;
+    let _e11 = local_4;
     if _e11 {
         return 0f;
     }
@@ -371,16 +371,16 @@ fn half_cosine(v: vec3<f32>, l: vec3<f32>) -> f32 {
 }
 
 fn specular_brdf(base_2: vec3<f32>, metallic_2: f32, f0_d_2: vec3<f32>, f90_d_2: f32, alpha_3: f32, n_2: vec3<f32>, v_1: vec3<f32>, l_1: vec3<f32>) -> vec3<f32> {
-    var local_6: bool;
+    var local_5: bool;
 
     let n_l_1 = dot(n_2, l_1);
     let n_v_2 = dot(n_2, v_1);
     if !((n_l_1 <= 0f)) {
-        local_6 = (n_v_2 <= 0f);
+        local_5 = (n_v_2 <= 0f);
     } else {
-        local_6 = true;
+        local_5 = true;
     }
-    let _e18 = local_6;
+    let _e18 = local_5;
     if _e18 {
         return vec3<f32>(0f, 0f, 0f);
     }
@@ -395,21 +395,21 @@ fn specular_brdf(base_2: vec3<f32>, metallic_2: f32, f0_d_2: vec3<f32>, f90_d_2:
 }
 
 fn has_specular(metallic_3: f32, f0_d_3: vec3<f32>, f90_d_3: f32) -> bool {
+    var local_6: bool;
     var local_7: bool;
-    var local_8: bool;
 
     if !((metallic_3 > 0f)) {
-        local_7 = (f90_d_3 > 0f);
+        local_6 = (f90_d_3 > 0f);
+    } else {
+        local_6 = true;
+    }
+    let _e11 = local_6;
+    if !(_e11) {
+        local_7 = (max(max(f0_d_3.x, f0_d_3.y), f0_d_3.z) > 0f);
     } else {
         local_7 = true;
     }
-    let _e11 = local_7;
-    if !(_e11) {
-        local_8 = (max(max(f0_d_3.x, f0_d_3.y), f0_d_3.z) > 0f);
-    } else {
-        local_8 = true;
-    }
-    let _e23 = local_8;
+    let _e23 = local_7;
     return _e23;
 }
 
@@ -418,17 +418,17 @@ fn channel_mean(c_2: vec3<f32>) -> f32 {
 }
 
 fn receiver_lobe(base_3: vec3<f32>, metallic_4: f32, f0_d_4: vec3<f32>, f90_d_4: f32, alpha_4: f32, n_v_1: f32) -> vec4<f32> {
-    var local_9: bool;
+    var local_8: bool;
 
     let _e10 = fresnel_schlick(f0_d_4, f90_d_4, n_v_1);
     let _e16 = channel_mean((((vec3<f32>(1f, 1f, 1f) - _e10) * base_3) * (1f - metallic_4)));
     if !((n_v_1 <= 0f)) {
         let _e22 = has_specular(metallic_4, f0_d_4, f90_d_4);
-        local_9 = !(_e22);
+        local_8 = !(_e22);
     } else {
-        local_9 = true;
+        local_8 = true;
     }
-    let _e25 = local_9;
+    let _e25 = local_8;
     if _e25 {
         return vec4<f32>(_e16, 0f, alpha_4, n_v_1);
     }
@@ -517,23 +517,23 @@ fn emitter_importance(center_1: vec3<f32>, radius_1: f32, phi: f32, axis_1: vec3
 }
 
 fn cone_cos_of(v_3: vec3<f32>, d2_4: f32, a_3: f32, d: vec3<f32>) -> f32 {
+    var local_9: bool;
     var local_10: bool;
-    var local_11: bool;
 
     let vd = dot(v_3, d);
     let h2_ = (d2_4 - (a_3 * a_3));
     if !((h2_ <= 0f)) {
         if (vd >= 0f) {
-            local_11 = ((vd * vd) >= h2_);
+            local_10 = ((vd * vd) >= h2_);
         } else {
-            local_11 = false;
+            local_10 = false;
         }
-        let _e19 = local_11;
-        local_10 = _e19;
+        let _e19 = local_10;
+        local_9 = _e19;
     } else {
-        local_10 = true;
+        local_9 = true;
     }
-    let _e21 = local_10;
+    let _e21 = local_9;
     if _e21 {
         return 1f;
     }
@@ -583,16 +583,16 @@ fn light_importance(center_4: vec3<f32>, radius_4: f32, phi_1: f32, axis_2: vec3
 }
 
 fn glossy_importance(center_5: vec3<f32>, radius_5: f32, phi_2: f32, axis_3: vec3<f32>, cos_o_3: f32, cos_e_2: f32, p_5: vec3<f32>, n_5: vec3<f32>, r_3: vec3<f32>, lobe_5: vec4<f32>) -> f32 {
-    var local_12: bool;
+    var local_11: bool;
 
     let _e10 = emitter_importance(center_5, radius_5, phi_2, axis_3, cos_o_3, cos_e_2, p_5);
     let _e11 = cone_cos_toward(center_5, radius_5, p_5, n_5);
     if !((_e10 <= 0f)) {
-        local_12 = (_e11 <= 0f);
+        local_11 = (_e11 <= 0f);
     } else {
-        local_12 = true;
+        local_11 = true;
     }
-    let _e20 = local_12;
+    let _e20 = local_11;
     if _e20 {
         return 0f;
     }
@@ -650,16 +650,16 @@ fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin: vec3<f32>, bmax: vec3<f32>, t_
 }
 
 fn triangle_normal(a_4: vec3<f32>, b_3: vec3<f32>, c_3: vec3<f32>) -> vec3<f32> {
-    var local_13: bool;
+    var local_12: bool;
 
     let n_12 = cross((b_3 - a_4), (c_3 - a_4));
     let l2_ = dot(n_12, n_12);
     if !(!((l2_ > 0f))) {
-        local_13 = !((l2_ < 300000000000000000000000000000000000000f));
+        local_12 = !((l2_ < 300000000000000000000000000000000000000f));
     } else {
-        local_13 = true;
+        local_12 = true;
     }
-    let _e17 = local_13;
+    let _e17 = local_12;
     if _e17 {
         return vec3<f32>(0f, 0f, 0f);
     }
@@ -667,9 +667,9 @@ fn triangle_normal(a_4: vec3<f32>, b_3: vec3<f32>, c_3: vec3<f32>) -> vec3<f32> 
 }
 
 fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_4: vec3<f32>, c_4: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
+    var local_13: bool;
     var local_14: bool;
     var local_15: bool;
-    var local_16: bool;
 
     let e1_ = (b_4 - a_5);
     let e2_ = (c_4 - a_5);
@@ -682,32 +682,32 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_4: vec3<f32>, 
     let s_3 = (o_1 - a_5);
     let u_3 = (dot(s_3, p_7) * inv_1);
     if !((u_3 < 0f)) {
-        local_14 = (u_3 > 1f);
+        local_13 = (u_3 > 1f);
     } else {
-        local_14 = true;
+        local_13 = true;
     }
-    let _e28 = local_14;
+    let _e28 = local_13;
     if _e28 {
         return -1f;
     }
     let q = cross(s_3, e1_);
     let v_11 = (dot(d_3, q) * inv_1);
     if !((v_11 < 0f)) {
-        local_15 = ((u_3 + v_11) > 1f);
+        local_14 = ((u_3 + v_11) > 1f);
     } else {
-        local_15 = true;
+        local_14 = true;
     }
-    let _e42 = local_15;
+    let _e42 = local_14;
     if _e42 {
         return -1f;
     }
     let t_3 = (dot(e2_, q) * inv_1);
     if (t_3 > t_min) {
-        local_16 = (t_3 < t_max_1);
+        local_15 = (t_3 < t_max_1);
     } else {
-        local_16 = false;
+        local_15 = false;
     }
-    let _e51 = local_16;
+    let _e51 = local_15;
     if _e51 {
         return t_3;
     }
@@ -844,8 +844,8 @@ fn bsh_inner_scale(a_7: f32, v_4: vec3<f32>, d2_6: f32, r_5: vec3<f32>, rl_2: ve
 }
 
 fn bsh_reaches(node_3: BshNode, x_5: vec3<f32>, r_6: vec3<f32>, rl_3: vec4<f32>) -> bool {
+    var local_16: bool;
     var local_17: bool;
-    var local_18: bool;
 
     let _e6 = sphere_contains_point(node_3.center, node_3.radius, x_5);
     if _e6 {
@@ -853,11 +853,11 @@ fn bsh_reaches(node_3: BshNode, x_5: vec3<f32>, r_6: vec3<f32>, rl_3: vec4<f32>)
     }
     if !((rl_3.w <= 1f)) {
         let _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001f)), x_5);
-        local_17 = !(_e20);
+        local_16 = !(_e20);
     } else {
-        local_17 = true;
+        local_16 = true;
     }
-    let _e23 = local_17;
+    let _e23 = local_16;
     if _e23 {
         return false;
     }
@@ -878,11 +878,11 @@ fn bsh_reaches(node_3: BshNode, x_5: vec3<f32>, r_6: vec3<f32>, rl_3: vec4<f32>)
     let s_c = (_e50 * 1.001f);
     let reach = (node_3.extent + (sqrt(s_c) * _e25));
     if (d2_9 <= ((node_3.radius * node_3.radius) * s_c)) {
-        local_18 = (d2_9 <= (reach * reach));
+        local_17 = (d2_9 <= (reach * reach));
     } else {
-        local_18 = false;
+        local_17 = false;
     }
-    let _e67 = local_18;
+    let _e67 = local_17;
     return _e67;
 }
 
@@ -916,11 +916,11 @@ fn bsh_next_leaf_lobe(nodes_3: u32, start: u32, x_6: vec3<f32>, r_7: vec3<f32>, 
 
 fn connect_traced(li: u32, x_7: vec3<f32>, n_7: vec3<f32>, ng_1: vec3<f32>, s: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32, trace_1: bool) -> Connection {
     var c_5: Connection;
+    var local_18: bool;
     var local_19: bool;
-    var local_20: bool;
 
     c_5.e = vec3(0f);
-    let l_4 = lights[li];
+    let l_4 = lights_1[li];
     let _e18 = light_point(l_4, u1_2, u2_2);
     c_5.y = _e18;
     let _e21 = c_5.y;
@@ -932,16 +932,16 @@ fn connect_traced(li: u32, x_7: vec3<f32>, n_7: vec3<f32>, ng_1: vec3<f32>, s: f
         if trace_1 {
             let _e39 = c_5.y;
             let _e40 = occluded((x_7 + (ng_1 * eps)), _e39);
-            local_20 = _e40;
+            local_19 = _e40;
         } else {
-            local_20 = false;
+            local_19 = false;
         }
-        let _e42 = local_20;
-        local_19 = _e42;
+        let _e42 = local_19;
+        local_18 = _e42;
     } else {
-        local_19 = true;
+        local_18 = true;
     }
-    let _e44 = local_19;
+    let _e44 = local_18;
     if _e44 {
         let _e45 = c_5;
         return _e45;
@@ -1079,6 +1079,44 @@ fn add(a_8: Shaded, b_7: Shaded) -> Shaded {
     return Shaded((a_8.e + b_7.e), (a_8.diffuse + b_7.diffuse), (a_8.specular + b_7.specular));
 }
 
+fn pick_copies(lights: array<u32, 8>, k_2: u32) -> u32 {
+    var copies: u32 = 1u;
+    var j: u32 = 0u;
+    var local_20: bool;
+
+    loop {
+        let _e6 = j;
+        if (_e6 < K) {
+        } else {
+            break;
+        }
+        {
+            let _e9 = j;
+            if (_e9 != k_2) {
+                let _e13 = j;
+                local_20 = (lights[_e13] == lights[k_2]);
+            } else {
+                local_20 = false;
+            }
+            let _e18 = local_20;
+            if _e18 {
+                let _e19 = j;
+                if (_e19 < k_2) {
+                    return 0u;
+                }
+                let _e22 = copies;
+                copies = (_e22 + 1u);
+            }
+        }
+        continuing {
+            let _e26 = j;
+            j = (_e26 + 1u);
+        }
+    }
+    let _e28 = copies;
+    return _e28;
+}
+
 @compute @workgroup_size(8, 8, 1) 
 fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     var local: bool;
@@ -1089,9 +1127,6 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     var h: u32;
     var t: Shaded = Shaded(vec3(0f), vec3(0f), vec3(0f));
     var k: u32 = 0u;
-    var copies: u32;
-    var j: u32;
-    var local_2: bool;
 
     let _e4 = view.width;
     if !((gid.x >= _e4)) {
@@ -1173,66 +1208,31 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
                 let _e148 = xi_from_bits(_e147);
                 let _e150 = k;
                 let li_6 = _e132.light[_e150];
-                copies = 1u;
-                let _e157 = lights[li_6].kind;
-                if (_e157 != LIGHT_TRIANGLE) {
-                    j = 0u;
-                    loop {
-                        let _e162 = j;
-                        if (_e162 < K) {
-                        } else {
-                            break;
-                        }
-                        {
-                            let _e165 = j;
-                            let _e166 = k;
-                            if (_e165 != _e166) {
-                                let _e171 = j;
-                                local_2 = (_e132.light[_e171] == li_6);
-                            } else {
-                                local_2 = false;
-                            }
-                            let _e175 = local_2;
-                            if _e175 {
-                                let _e176 = j;
-                                let _e177 = k;
-                                if (_e176 < _e177) {
-                                    copies = 0u;
-                                    break;
-                                }
-                                let _e180 = copies;
-                                copies = (_e180 + 1u);
-                            }
-                        }
-                        continuing {
-                            let _e184 = j;
-                            j = (_e184 + 1u);
-                        }
-                    }
-                }
-                let _e186 = copies;
-                if (_e186 > 0u) {
-                    let _e189 = t;
-                    let _e190 = r;
-                    let _e191 = m;
-                    let _e194 = k;
-                    let _e197 = weighted_pick_weight(_e132.w_sum, _e132.w[_e194], K);
-                    let _e198 = copies;
-                    let _e201 = shade_pick(li_6, x_13, n_14, _e190, _e96, _e191, (_e197 * f32(_e198)), _e144, _e148, eps_3);
-                    let _e202 = add(_e189, _e201);
-                    t = _e202;
+                let _e154 = k;
+                let _e155 = pick_copies(_e132.light, _e154);
+                let _e159 = lights_1[li_6].kind;
+                let copies_1 = select(1u, _e155, (_e159 != LIGHT_TRIANGLE));
+                if (copies_1 > 0u) {
+                    let _e165 = t;
+                    let _e166 = r;
+                    let _e167 = m;
+                    let _e170 = k;
+                    let _e173 = weighted_pick_weight(_e132.w_sum, _e132.w[_e170], K);
+                    let _e176 = shade_pick(li_6, x_13, n_14, _e166, _e96, _e167, (_e173 * f32(copies_1)), _e144, _e148, eps_3);
+                    let _e177 = add(_e165, _e176);
+                    t = _e177;
                 }
             }
             continuing {
-                let _e204 = k;
-                k = (_e204 + 1u);
+                let _e179 = k;
+                k = (_e179 + 1u);
             }
         }
     }
     let count = _e132.n;
-    let _e209 = t.e;
-    textureStore(out_tex, texel_1, vec4<f32>(_e209, f32(count)));
-    let _e214 = t.specular;
-    textureStore(specular_tex, texel_1, vec4<f32>(_e214, 0f));
+    let _e184 = t.e;
+    textureStore(out_tex, texel_1, vec4<f32>(_e184, f32(count)));
+    let _e189 = t.specular;
+    textureStore(specular_tex, texel_1, vec4<f32>(_e189, 0f));
     return;
 }

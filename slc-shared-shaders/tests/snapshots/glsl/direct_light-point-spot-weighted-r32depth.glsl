@@ -230,28 +230,28 @@ float connection_factor(float cos_x, float d2_3, float rt2_1, float w) {
 }
 
 float connection_cosine(vec3 x_2, vec3 y, vec3 n, vec3 ng, float r2_1) {
+    bool local_2 = false;
     bool local_3 = false;
-    bool local_4 = false;
     vec3 v_4 = (x_2 - y);
     float d2_7 = dot(v_4, v_4);
     bool _e7 = slc_keep(r2_1, d2_7);
     if (!(!(_e7))) {
-        local_3 = !((d2_7 > 0.0));
+        local_2 = !((d2_7 > 0.0));
     } else {
-        local_3 = true;
+        local_2 = true;
     }
-    bool _e16 = local_3;
+    bool _e16 = local_2;
     if (_e16) {
         return 0.0;
     }
     vec3 w_6 = (v_4 / vec3(sqrt(d2_7)));
     float cos_x_1 = -(dot(n, w_6));
     if (!((cos_x_1 <= 0.0))) {
-        local_4 = (dot(ng, w_6) >= 0.0);
+        local_3 = (dot(ng, w_6) >= 0.0);
     } else {
-        local_4 = true;
+        local_3 = true;
     }
-    bool _e32 = local_4;
+    bool _e32 = local_3;
     if (_e32) {
         return 0.0;
     }
@@ -383,22 +383,22 @@ float emitter_importance(vec3 center_1, float radius_1, float phi, vec3 axis_1, 
 }
 
 float cone_cos_of(vec3 v, float d2_4, float a_2, vec3 d) {
+    bool local_4 = false;
     bool local_5 = false;
-    bool local_6 = false;
     float vd = dot(v, d);
     float h2_ = (d2_4 - (a_2 * a_2));
     if (!((h2_ <= 0.0))) {
         if ((vd >= 0.0)) {
-            local_6 = ((vd * vd) >= h2_);
+            local_5 = ((vd * vd) >= h2_);
         } else {
-            local_6 = false;
+            local_5 = false;
         }
-        bool _e19 = local_6;
-        local_5 = _e19;
+        bool _e19 = local_5;
+        local_4 = _e19;
     } else {
-        local_5 = true;
+        local_4 = true;
     }
-    bool _e21 = local_5;
+    bool _e21 = local_4;
     if (_e21) {
         return 1.0;
     }
@@ -447,15 +447,15 @@ float light_importance(vec3 center_4, float radius_4, float phi_1, vec3 axis_2, 
 }
 
 float glossy_importance(vec3 center_5, float radius_5, float phi_2, vec3 axis_3, float cos_o_3, float cos_e_2, vec3 p_5, vec3 n_2, vec3 r_3, vec4 lobe_5) {
-    bool local_7 = false;
+    bool local_6 = false;
     float _e10 = emitter_importance(center_5, radius_5, phi_2, axis_3, cos_o_3, cos_e_2, p_5);
     float _e11 = cone_cos_toward(center_5, radius_5, p_5, n_2);
     if (!((_e10 <= 0.0))) {
-        local_7 = (_e11 <= 0.0);
+        local_6 = (_e11 <= 0.0);
     } else {
-        local_7 = true;
+        local_6 = true;
     }
-    bool _e20 = local_7;
+    bool _e20 = local_6;
     if (_e20) {
         return 0.0;
     }
@@ -485,20 +485,20 @@ float cone_weight(vec3 center_6, float radius_6, float phi_3, vec3 axis_4, float
 }
 
 bool finite3_(vec3 v_1) {
+    bool local_7 = false;
     bool local_8 = false;
-    bool local_9 = false;
     if ((abs(v_1.x) <= F32_MAX)) {
-        local_8 = (abs(v_1.y) <= F32_MAX);
+        local_7 = (abs(v_1.y) <= F32_MAX);
+    } else {
+        local_7 = false;
+    }
+    bool _e12 = local_7;
+    if (_e12) {
+        local_8 = (abs(v_1.z) <= F32_MAX);
     } else {
         local_8 = false;
     }
-    bool _e12 = local_8;
-    if (_e12) {
-        local_9 = (abs(v_1.z) <= F32_MAX);
-    } else {
-        local_9 = false;
-    }
-    bool _e20 = local_9;
+    bool _e20 = local_8;
     return _e20;
 }
 
@@ -531,9 +531,9 @@ float ray_aabb(vec3 o, vec3 inv_d, vec3 bmin, vec3 bmax, float t_max) {
 }
 
 float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_3, vec3 b_2, vec3 c_1, float t_min, float t_max_1) {
+    bool local_9 = false;
     bool local_10 = false;
     bool local_11 = false;
-    bool local_12 = false;
     vec3 e1_ = (b_2 - a_3);
     vec3 e2_ = (c_1 - a_3);
     vec3 p_7 = cross(d_3, e2_);
@@ -545,32 +545,32 @@ float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_3, vec3 b_2, vec3 c_1, float t_min
     vec3 s_3 = (o_1 - a_3);
     float u_3 = (dot(s_3, p_7) * inv);
     if (!((u_3 < 0.0))) {
-        local_10 = (u_3 > 1.0);
+        local_9 = (u_3 > 1.0);
     } else {
-        local_10 = true;
+        local_9 = true;
     }
-    bool _e28 = local_10;
+    bool _e28 = local_9;
     if (_e28) {
         return -1.0;
     }
     vec3 q = cross(s_3, e1_);
     float v_9 = (dot(d_3, q) * inv);
     if (!((v_9 < 0.0))) {
-        local_11 = ((u_3 + v_9) > 1.0);
+        local_10 = ((u_3 + v_9) > 1.0);
     } else {
-        local_11 = true;
+        local_10 = true;
     }
-    bool _e42 = local_11;
+    bool _e42 = local_10;
     if (_e42) {
         return -1.0;
     }
     float t_4 = (dot(e2_, q) * inv);
     if ((t_4 > t_min)) {
-        local_12 = (t_4 < t_max_1);
+        local_11 = (t_4 < t_max_1);
     } else {
-        local_12 = false;
+        local_11 = false;
     }
-    bool _e51 = local_12;
+    bool _e51 = local_11;
     if (_e51) {
         return t_4;
     }
@@ -706,19 +706,19 @@ float bsh_inner_scale(float a_5, vec3 v_2, float d2_6, vec3 r_5, vec4 rl_2) {
 }
 
 bool bsh_reaches(BshNode node_3, vec3 x_5, vec3 r_6, vec4 rl_3) {
+    bool local_12 = false;
     bool local_13 = false;
-    bool local_14 = false;
     bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_5);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
         bool _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001)), x_5);
-        local_13 = !(_e20);
+        local_12 = !(_e20);
     } else {
-        local_13 = true;
+        local_12 = true;
     }
-    bool _e23 = local_13;
+    bool _e23 = local_12;
     if (_e23) {
         return false;
     }
@@ -739,11 +739,11 @@ bool bsh_reaches(BshNode node_3, vec3 x_5, vec3 r_6, vec4 rl_3) {
     float s_c = (_e50 * 1.001);
     float reach = (node_3.extent + (sqrt(s_c) * _e25));
     if ((d2_9 <= ((node_3.radius * node_3.radius) * s_c))) {
-        local_14 = (d2_9 <= (reach * reach));
+        local_13 = (d2_9 <= (reach * reach));
     } else {
-        local_14 = false;
+        local_13 = false;
     }
-    bool _e67 = local_14;
+    bool _e67 = local_13;
     return _e67;
 }
 
@@ -776,8 +776,8 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start, vec3 x_6, vec3 r_7, vec4 rl_4)
 
 Connection connect_traced(uint li, vec3 x_7, vec3 n_4, vec3 ng_1, float s, float w_res, float u1_1, float u2_1, float eps, bool trace_1) {
     Connection c_2 = Connection(vec3(0.0), vec3(0.0), 0.0);
+    bool local_14 = false;
     bool local_15 = false;
-    bool local_16 = false;
     c_2.e = vec3(0.0);
     GpuLight l_2 = _group_1_binding_1_cs[li];
     vec3 _e18 = light_point(l_2, u1_1, u2_1);
@@ -791,16 +791,16 @@ Connection connect_traced(uint li, vec3 x_7, vec3 n_4, vec3 ng_1, float s, float
         if (trace_1) {
             vec3 _e39 = c_2.y;
             bool _e40 = occluded((x_7 + (ng_1 * eps)), _e39);
-            local_16 = _e40;
+            local_15 = _e40;
         } else {
-            local_16 = false;
+            local_15 = false;
         }
-        bool _e42 = local_16;
-        local_15 = _e42;
+        bool _e42 = local_15;
+        local_14 = _e42;
     } else {
-        local_15 = true;
+        local_14 = true;
     }
-    bool _e44 = local_15;
+    bool _e44 = local_14;
     if (_e44) {
         Connection _e45 = c_2;
         return _e45;
@@ -904,14 +904,14 @@ WeightedPicks bsh_weighted_collect(vec3 x_10, vec3 n_6, vec3 r_10, vec4 lobe_8, 
 }
 
 vec4 unproject_pixel(vec4 c0_, vec4 c1_, vec4 c2_, vec4 c3_, float px, float py, float width, float height, float depth) {
+    bool local_16 = false;
     bool local_17 = false;
-    bool local_18 = false;
     if ((depth > 0.0)) {
-        local_17 = (depth < 1.0);
+        local_16 = (depth < 1.0);
     } else {
-        local_17 = false;
+        local_16 = false;
     }
-    bool _e16 = local_17;
+    bool _e16 = local_16;
     if (!(_e16)) {
         return vec4(0.0, 0.0, 0.0, 0.0);
     }
@@ -921,11 +921,11 @@ vec4 unproject_pixel(vec4 c0_, vec4 c1_, vec4 c2_, vec4 c3_, float px, float py,
     vec3 q_1 = vec3((p_8.x / p_8.w), (p_8.y / p_8.w), (p_8.z / p_8.w));
     if ((abs(p_8.w) > 0.0)) {
         bool _e59 = finite3_(q_1);
-        local_18 = _e59;
+        local_17 = _e59;
     } else {
-        local_18 = false;
+        local_17 = false;
     }
-    bool _e61 = local_18;
+    bool _e61 = local_17;
     if (_e61) {
         return vec4(q_1.x, q_1.y, q_1.z, 1.0);
     }
@@ -964,6 +964,45 @@ Shaded add(Shaded a_6, Shaded b_5) {
     return Shaded((a_6.e + b_5.e), (a_6.diffuse + b_5.diffuse), (a_6.specular + b_5.specular));
 }
 
+uint pick_copies(uint lights[8], uint k_2) {
+    uint copies = 1u;
+    uint j = 0u;
+    bool local_18 = false;
+    bool loop_init_3 = true;
+    while(true) {
+        if (!loop_init_3) {
+            uint _e26 = j;
+            j = (_e26 + 1u);
+        }
+        loop_init_3 = false;
+        uint _e6 = j;
+        if ((_e6 < K)) {
+        } else {
+            break;
+        }
+        {
+            uint _e9 = j;
+            if ((_e9 != k_2)) {
+                uint _e13 = j;
+                local_18 = (lights[_e13] == lights[k_2]);
+            } else {
+                local_18 = false;
+            }
+            bool _e18 = local_18;
+            if (_e18) {
+                uint _e19 = j;
+                if ((_e19 < k_2)) {
+                    return 0u;
+                }
+                uint _e22 = copies;
+                copies = (_e22 + 1u);
+            }
+        }
+    }
+    uint _e28 = copies;
+    return _e28;
+}
+
 void main() {
     uvec3 gid = gl_GlobalInvocationID;
     bool local = false;
@@ -974,9 +1013,6 @@ void main() {
     uint h = 0u;
     Shaded t = Shaded(vec3(0.0), vec3(0.0), vec3(0.0));
     uint k = 0u;
-    uint copies = 0u;
-    uint j = 0u;
-    bool local_2 = false;
     uint _e4 = _group_0_binding_0_cs.width;
     if (!((gid.x >= _e4))) {
         uint _e12 = _group_0_binding_0_cs.height;
@@ -1021,13 +1057,13 @@ void main() {
     vec4 _e89 = lobe;
     WeightedPicks _e90 = bsh_weighted_collect(x_14, n_10, _e88, _e89, _e54, _e77);
     if ((_e90.w_sum > 0.0)) {
-        bool loop_init_3 = true;
+        bool loop_init_4 = true;
         while(true) {
-            if (!loop_init_3) {
-                uint _e162 = k;
-                k = (_e162 + 1u);
+            if (!loop_init_4) {
+                uint _e137 = k;
+                k = (_e137 + 1u);
             }
-            loop_init_3 = false;
+            loop_init_4 = false;
             uint _e96 = k;
             if ((_e96 < K)) {
             } else {
@@ -1046,63 +1082,26 @@ void main() {
                 float _e106 = xi_from_bits(_e105);
                 uint _e108 = k;
                 uint li_6 = _e90.light[_e108];
-                copies = 1u;
-                uint _e115 = _group_1_binding_1_cs[li_6].kind;
-                if ((_e115 != LIGHT_TRIANGLE)) {
-                    j = 0u;
-                    bool loop_init_4 = true;
-                    while(true) {
-                        if (!loop_init_4) {
-                            uint _e142 = j;
-                            j = (_e142 + 1u);
-                        }
-                        loop_init_4 = false;
-                        uint _e120 = j;
-                        if ((_e120 < K)) {
-                        } else {
-                            break;
-                        }
-                        {
-                            uint _e123 = j;
-                            uint _e124 = k;
-                            if ((_e123 != _e124)) {
-                                uint _e129 = j;
-                                local_2 = (_e90.light[_e129] == li_6);
-                            } else {
-                                local_2 = false;
-                            }
-                            bool _e133 = local_2;
-                            if (_e133) {
-                                uint _e134 = j;
-                                uint _e135 = k;
-                                if ((_e134 < _e135)) {
-                                    copies = 0u;
-                                    break;
-                                }
-                                uint _e138 = copies;
-                                copies = (_e138 + 1u);
-                            }
-                        }
-                    }
-                }
-                uint _e144 = copies;
-                if ((_e144 > 0u)) {
-                    Shaded _e147 = t;
-                    vec3 _e148 = r;
-                    Material _e149 = m;
-                    uint _e152 = k;
-                    float _e155 = weighted_pick_weight(_e90.w_sum, _e90.w[_e152], K);
-                    uint _e156 = copies;
-                    Shaded _e159 = shade_pick(li_6, x_14, n_10, _e148, _e54, _e149, (_e155 * float(_e156)), _e102, _e106, eps_3);
-                    Shaded _e160 = add(_e147, _e159);
-                    t = _e160;
+                uint _e112 = k;
+                uint _e113 = pick_copies(_e90.light, _e112);
+                uint _e117 = _group_1_binding_1_cs[li_6].kind;
+                uint copies_1 = ((_e117 != LIGHT_TRIANGLE) ? _e113 : 1u);
+                if ((copies_1 > 0u)) {
+                    Shaded _e123 = t;
+                    vec3 _e124 = r;
+                    Material _e125 = m;
+                    uint _e128 = k;
+                    float _e131 = weighted_pick_weight(_e90.w_sum, _e90.w[_e128], K);
+                    Shaded _e134 = shade_pick(li_6, x_14, n_10, _e124, _e54, _e125, (_e131 * float(copies_1)), _e102, _e106, eps_3);
+                    Shaded _e135 = add(_e123, _e134);
+                    t = _e135;
                 }
             }
         }
     }
     uint count = _e90.n;
-    vec3 _e167 = t.e;
-    imageStore(_group_0_binding_3_cs, texel_1, vec4(_e167, float(count)));
+    vec3 _e142 = t.e;
+    imageStore(_group_0_binding_3_cs, texel_1, vec4(_e142, float(count)));
     return;
 }
 

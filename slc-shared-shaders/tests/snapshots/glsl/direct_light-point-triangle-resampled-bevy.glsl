@@ -227,28 +227,28 @@ float connection_factor(float cos_x, float d2_3, float rt2_1, float w) {
 }
 
 float connection_cosine(vec3 x_2, vec3 y, vec3 n, vec3 ng, float r2_1) {
-    bool local_4 = false;
-    bool local_5 = false;
+    bool local_2 = false;
+    bool local_3 = false;
     vec3 v_5 = (x_2 - y);
     float d2_6 = dot(v_5, v_5);
     bool _e7 = slc_keep(r2_1, d2_6);
     if (!(!(_e7))) {
-        local_4 = !((d2_6 > 0.0));
+        local_2 = !((d2_6 > 0.0));
     } else {
-        local_4 = true;
+        local_2 = true;
     }
-    bool _e16 = local_4;
+    bool _e16 = local_2;
     if (_e16) {
         return 0.0;
     }
     vec3 w_6 = (v_5 / vec3(sqrt(d2_6)));
     float cos_x_1 = -(dot(n, w_6));
     if (!((cos_x_1 <= 0.0))) {
-        local_5 = (dot(ng, w_6) >= 0.0);
+        local_3 = (dot(ng, w_6) >= 0.0);
     } else {
-        local_5 = true;
+        local_3 = true;
     }
-    bool _e32 = local_5;
+    bool _e32 = local_3;
     if (_e32) {
         return 0.0;
     }
@@ -307,13 +307,13 @@ float smith_root(float cos_, float alpha_1) {
 }
 
 float smith_visibility(float n_l, float n_v, float alpha_2) {
-    bool local_6 = false;
+    bool local_4 = false;
     if (!((n_l <= 0.0))) {
-        local_6 = (n_v <= 0.0);
+        local_4 = (n_v <= 0.0);
     } else {
-        local_6 = true;
+        local_4 = true;
     }
-    bool _e11 = local_6;
+    bool _e11 = local_4;
     if (_e11) {
         return 0.0;
     }
@@ -335,20 +335,20 @@ vec3 specular_fresnel(vec3 base, float metallic, vec3 f0_d, float f90_d, float v
 }
 
 bool has_specular(float metallic_1, vec3 f0_d_1, float f90_d_1) {
-    bool local_7 = false;
-    bool local_8 = false;
+    bool local_5 = false;
+    bool local_6 = false;
     if (!((metallic_1 > 0.0))) {
-        local_7 = (f90_d_1 > 0.0);
+        local_5 = (f90_d_1 > 0.0);
     } else {
-        local_7 = true;
+        local_5 = true;
     }
-    bool _e11 = local_7;
+    bool _e11 = local_5;
     if (!(_e11)) {
-        local_8 = (max(max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0.0);
+        local_6 = (max(max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0.0);
     } else {
-        local_8 = true;
+        local_6 = true;
     }
-    bool _e23 = local_8;
+    bool _e23 = local_6;
     return _e23;
 }
 
@@ -357,16 +357,16 @@ float channel_mean(vec3 c_3) {
 }
 
 vec4 receiver_lobe(vec3 base_1, float metallic_2, vec3 f0_d_2, float f90_d_2, float alpha_3, float n_v_1) {
-    bool local_9 = false;
+    bool local_7 = false;
     vec3 _e10 = fresnel_schlick(f0_d_2, f90_d_2, n_v_1);
     float _e16 = channel_mean((((vec3(1.0, 1.0, 1.0) - _e10) * base_1) * (1.0 - metallic_2)));
     if (!((n_v_1 <= 0.0))) {
         bool _e22 = has_specular(metallic_2, f0_d_2, f90_d_2);
-        local_9 = !(_e22);
+        local_7 = !(_e22);
     } else {
-        local_9 = true;
+        local_7 = true;
     }
-    bool _e25 = local_9;
+    bool _e25 = local_7;
     if (_e25) {
         return vec4(_e16, 0.0, alpha_3, n_v_1);
     }
@@ -450,22 +450,22 @@ vec3 bevy_brdf(vec3 base_2, float metallic_3, float r_3, float reflectance_1, ve
 }
 
 float cone_cos_of(vec3 v_2, float d2_4, float a_3, vec3 d) {
-    bool local_10 = false;
-    bool local_11 = false;
+    bool local_8 = false;
+    bool local_9 = false;
     float vd = dot(v_2, d);
     float h2_ = (d2_4 - (a_3 * a_3));
     if (!((h2_ <= 0.0))) {
         if ((vd >= 0.0)) {
-            local_11 = ((vd * vd) >= h2_);
+            local_9 = ((vd * vd) >= h2_);
         } else {
-            local_11 = false;
+            local_9 = false;
         }
-        bool _e19 = local_11;
-        local_10 = _e19;
+        bool _e19 = local_9;
+        local_8 = _e19;
     } else {
-        local_10 = true;
+        local_8 = true;
     }
-    bool _e21 = local_10;
+    bool _e21 = local_8;
     if (_e21) {
         return 1.0;
     }
@@ -522,15 +522,15 @@ float ray_aabb(vec3 o, vec3 inv_d, vec3 bmin, vec3 bmax, float t_max) {
 }
 
 vec3 triangle_normal(vec3 a_4, vec3 b_4, vec3 c_4) {
-    bool local_12 = false;
+    bool local_10 = false;
     vec3 n_7 = cross((b_4 - a_4), (c_4 - a_4));
     float l2_ = dot(n_7, n_7);
     if (!(!((l2_ > 0.0)))) {
-        local_12 = !((l2_ < 3e38));
+        local_10 = !((l2_ < 3e38));
     } else {
-        local_12 = true;
+        local_10 = true;
     }
-    bool _e17 = local_12;
+    bool _e17 = local_10;
     if (_e17) {
         return vec3(0.0, 0.0, 0.0);
     }
@@ -538,9 +538,9 @@ vec3 triangle_normal(vec3 a_4, vec3 b_4, vec3 c_4) {
 }
 
 float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_5, vec3 b_5, vec3 c_5, float t_min, float t_max_1) {
+    bool local_11 = false;
+    bool local_12 = false;
     bool local_13 = false;
-    bool local_14 = false;
-    bool local_15 = false;
     vec3 e1_ = (b_5 - a_5);
     vec3 e2_ = (c_5 - a_5);
     vec3 p_2 = cross(d_3, e2_);
@@ -552,32 +552,32 @@ float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_5, vec3 b_5, vec3 c_5, float t_min
     vec3 s_3 = (o_1 - a_5);
     float u_3 = (dot(s_3, p_2) * inv);
     if (!((u_3 < 0.0))) {
-        local_13 = (u_3 > 1.0);
+        local_11 = (u_3 > 1.0);
     } else {
-        local_13 = true;
+        local_11 = true;
     }
-    bool _e28 = local_13;
+    bool _e28 = local_11;
     if (_e28) {
         return -1.0;
     }
     vec3 q_1 = cross(s_3, e1_);
     float v_7 = (dot(d_3, q_1) * inv);
     if (!((v_7 < 0.0))) {
-        local_14 = ((u_3 + v_7) > 1.0);
+        local_12 = ((u_3 + v_7) > 1.0);
     } else {
-        local_14 = true;
+        local_12 = true;
     }
-    bool _e42 = local_14;
+    bool _e42 = local_12;
     if (_e42) {
         return -1.0;
     }
     float t_3 = (dot(e2_, q_1) * inv);
     if ((t_3 > t_min)) {
-        local_15 = (t_3 < t_max_1);
+        local_13 = (t_3 < t_max_1);
     } else {
-        local_15 = false;
+        local_13 = false;
     }
-    bool _e51 = local_15;
+    bool _e51 = local_13;
     if (_e51) {
         return t_3;
     }
@@ -718,19 +718,19 @@ float bsh_inner_scale(float a_7, vec3 v_3, float d2_5, vec3 r_5, vec4 rl_2) {
 }
 
 bool bsh_reaches(BshNode node_3, vec3 x_4, vec3 r_6, vec4 rl_3) {
-    bool local_16 = false;
-    bool local_17 = false;
+    bool local_14 = false;
+    bool local_15 = false;
     bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_4);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
         bool _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001)), x_4);
-        local_16 = !(_e20);
+        local_14 = !(_e20);
     } else {
-        local_16 = true;
+        local_14 = true;
     }
-    bool _e23 = local_16;
+    bool _e23 = local_14;
     if (_e23) {
         return false;
     }
@@ -751,11 +751,11 @@ bool bsh_reaches(BshNode node_3, vec3 x_4, vec3 r_6, vec4 rl_3) {
     float s_c = (_e50 * 1.001);
     float reach = (node_3.extent + (sqrt(s_c) * _e25));
     if ((d2_7 <= ((node_3.radius * node_3.radius) * s_c))) {
-        local_17 = (d2_7 <= (reach * reach));
+        local_15 = (d2_7 <= (reach * reach));
     } else {
-        local_17 = false;
+        local_15 = false;
     }
-    bool _e67 = local_17;
+    bool _e67 = local_15;
     return _e67;
 }
 
@@ -788,8 +788,8 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start, vec3 x_5, vec3 r_7, vec4 rl_4)
 
 Connection connect_traced(uint li, vec3 x_6, vec3 n_4, vec3 ng_1, float s, float w_res, float u1_2, float u2_2, float eps, bool trace_1) {
     Connection c_6 = Connection(vec3(0.0), vec3(0.0), 0.0);
-    bool local_18 = false;
-    bool local_19 = false;
+    bool local_16 = false;
+    bool local_17 = false;
     c_6.e = vec3(0.0);
     GpuLight l_3 = _group_1_binding_1_cs[li];
     vec3 _e18 = light_point(l_3, u1_2, u2_2);
@@ -803,16 +803,16 @@ Connection connect_traced(uint li, vec3 x_6, vec3 n_4, vec3 ng_1, float s, float
         if (trace_1) {
             vec3 _e39 = c_6.y;
             bool _e40 = occluded((x_6 + (ng_1 * eps)), _e39);
-            local_19 = _e40;
+            local_17 = _e40;
         } else {
-            local_19 = false;
+            local_17 = false;
         }
-        bool _e42 = local_19;
-        local_18 = _e42;
+        bool _e42 = local_17;
+        local_16 = _e42;
     } else {
-        local_18 = true;
+        local_16 = true;
     }
-    bool _e44 = local_18;
+    bool _e44 = local_16;
     if (_e44) {
         Connection _e45 = c_6;
         return _e45;
@@ -864,6 +864,45 @@ Shaded add(Shaded a_8, Shaded b_7) {
     return Shaded((a_8.e + b_7.e), (a_8.diffuse + b_7.diffuse), (a_8.specular + b_7.specular));
 }
 
+uint pick_copies(uint lights[8], uint k_1) {
+    uint copies = 1u;
+    uint j = 0u;
+    bool local_18 = false;
+    bool loop_init_1 = true;
+    while(true) {
+        if (!loop_init_1) {
+            uint _e26 = j;
+            j = (_e26 + 1u);
+        }
+        loop_init_1 = false;
+        uint _e6 = j;
+        if ((_e6 < K)) {
+        } else {
+            break;
+        }
+        {
+            uint _e9 = j;
+            if ((_e9 != k_1)) {
+                uint _e13 = j;
+                local_18 = (lights[_e13] == lights[k_1]);
+            } else {
+                local_18 = false;
+            }
+            bool _e18 = local_18;
+            if (_e18) {
+                uint _e19 = j;
+                if ((_e19 < k_1)) {
+                    return 0u;
+                }
+                uint _e22 = copies;
+                copies = (_e22 + 1u);
+            }
+        }
+    }
+    uint _e28 = copies;
+    return _e28;
+}
+
 vec3 output_of(Shaded s_2) {
     return (s_2.diffuse + s_2.specular);
 }
@@ -886,10 +925,6 @@ void main() {
     uint b = 0u;
     uint q = 0u;
     uint k = 0u;
-    uint copies = 0u;
-    uint j = 0u;
-    bool local_2 = false;
-    bool local_3 = false;
     uint _e4 = _group_0_binding_0_cs.width;
     if (!((gid.x >= _e4))) {
         uint _e12 = _group_0_binding_0_cs.height;
@@ -950,16 +985,16 @@ void main() {
     vec3 _e135 = r;
     uint _e136 = bsh_next_leaf_lobe(BSH, _e134, x_11, _e135, _e90);
     b = _e136;
-    bool loop_init_1 = true;
+    bool loop_init_2 = true;
     while(true) {
-        if (!loop_init_1) {
+        if (!loop_init_2) {
             uint _e193 = b;
             uint _e196 = _group_1_binding_4_cs[_e193].next;
             vec3 _e197 = r;
             uint _e198 = bsh_next_leaf_lobe(BSH, _e196, x_11, _e197, _e90);
             b = _e198;
         }
-        loop_init_1 = false;
+        loop_init_2 = false;
         uint _e138 = b;
         if ((_e138 != BSH_NONE)) {
         } else {
@@ -990,13 +1025,13 @@ void main() {
                 float _e169 = total;
                 total = (_e169 + _e166);
                 q = 0u;
-                bool loop_init_2 = true;
+                bool loop_init_3 = true;
                 while(true) {
-                    if (!loop_init_2) {
+                    if (!loop_init_3) {
                         uint _e189 = q;
                         q = (_e189 + 1u);
                     }
-                    loop_init_2 = false;
+                    loop_init_3 = false;
                     uint _e173 = q;
                     if ((_e173 < K)) {
                     } else {
@@ -1025,95 +1060,47 @@ void main() {
     }
     float _e199 = total;
     if ((_e199 > 0.0)) {
-        bool loop_init_3 = true;
+        bool loop_init_4 = true;
         while(true) {
-            if (!loop_init_3) {
-                uint _e280 = k;
-                k = (_e280 + 1u);
+            if (!loop_init_4) {
+                uint _e238 = k;
+                k = (_e238 + 1u);
             }
-            loop_init_3 = false;
+            loop_init_4 = false;
             uint _e204 = k;
             if ((_e204 < K)) {
             } else {
                 break;
             }
             {
-                copies = 1u;
-                j = 0u;
-                bool loop_init_4 = true;
-                while(true) {
-                    if (!loop_init_4) {
-                        uint _e248 = j;
-                        j = (_e248 + 1u);
-                    }
-                    loop_init_4 = false;
-                    uint _e211 = j;
-                    if ((_e211 < K)) {
-                    } else {
-                        break;
-                    }
-                    {
-                        uint _e214 = j;
-                        uint _e215 = k;
-                        if ((_e214 != _e215)) {
-                            uint _e219 = j;
-                            uint _e221 = slot_light[_e219];
-                            uint _e222 = k;
-                            uint _e224 = slot_light[_e222];
-                            local_2 = (_e221 == _e224);
-                        } else {
-                            local_2 = false;
-                        }
-                        bool _e227 = local_2;
-                        if (_e227) {
-                            uint _e230 = j;
-                            vec2 _e232 = slot_u[_e230];
-                            uint _e233 = k;
-                            vec2 _e235 = slot_u[_e233];
-                            local_3 = all(equal(_e232, _e235));
-                        } else {
-                            local_3 = false;
-                        }
-                        bool _e239 = local_3;
-                        if (_e239) {
-                            uint _e240 = j;
-                            uint _e241 = k;
-                            if ((_e240 < _e241)) {
-                                copies = 0u;
-                                break;
-                            }
-                            uint _e244 = copies;
-                            copies = (_e244 + 1u);
-                        }
-                    }
-                }
-                uint _e250 = copies;
-                if ((_e250 > 0u)) {
-                    float _e253 = total;
-                    uint _e255 = k;
-                    float _e257 = slot_p[_e255];
-                    uint _e260 = copies;
-                    float w_7 = ((_e253 / (8.0 * _e257)) * float(_e260));
-                    Shaded _e263 = t;
-                    uint _e264 = k;
-                    uint _e266 = slot_light[_e264];
-                    vec3 _e267 = r;
-                    Material _e268 = m;
-                    uint _e269 = k;
-                    float _e272 = slot_u[_e269].x;
-                    uint _e273 = k;
-                    float _e276 = slot_u[_e273].y;
-                    Shaded _e277 = shade_pick(_e266, x_11, n_9, _e267, _e90, _e268, w_7, _e272, _e276, eps_3);
-                    Shaded _e278 = add(_e263, _e277);
-                    t = _e278;
+                uint _e207[8] = slot_light;
+                uint _e208 = k;
+                uint _e209 = pick_copies(_e207, _e208);
+                if ((_e209 > 0u)) {
+                    float _e212 = total;
+                    uint _e214 = k;
+                    float _e216 = slot_p[_e214];
+                    float w_7 = ((_e212 / (8.0 * _e216)) * float(_e209));
+                    Shaded _e221 = t;
+                    uint _e222 = k;
+                    uint _e224 = slot_light[_e222];
+                    vec3 _e225 = r;
+                    Material _e226 = m;
+                    uint _e227 = k;
+                    float _e230 = slot_u[_e227].x;
+                    uint _e231 = k;
+                    float _e234 = slot_u[_e231].y;
+                    Shaded _e235 = shade_pick(_e224, x_11, n_9, _e225, _e90, _e226, w_7, _e230, _e234, eps_3);
+                    Shaded _e236 = add(_e221, _e235);
+                    t = _e236;
                 }
             }
         }
     }
-    vec3 _e284 = t.diffuse;
-    vec3 _e286 = t.specular;
-    uint _e288 = count;
-    imageStore(_group_0_binding_3_cs, texel_1, vec4((_e284 + _e286), float(_e288)));
+    vec3 _e242 = t.diffuse;
+    vec3 _e244 = t.specular;
+    uint _e246 = count;
+    imageStore(_group_0_binding_3_cs, texel_1, vec4((_e242 + _e244), float(_e246)));
     return;
 }
 

@@ -236,28 +236,28 @@ float connection_factor(float cos_x, float d2_3, float rt2_1, float w) {
 }
 
 float connection_cosine(vec3 x_2, vec3 y, vec3 n, vec3 ng, float r2_1) {
+    bool local_2 = false;
     bool local_3 = false;
-    bool local_4 = false;
     vec3 v_6 = (x_2 - y);
     float d2_7 = dot(v_6, v_6);
     bool _e7 = slc_keep(r2_1, d2_7);
     if (!(!(_e7))) {
-        local_3 = !((d2_7 > 0.0));
+        local_2 = !((d2_7 > 0.0));
     } else {
-        local_3 = true;
+        local_2 = true;
     }
-    bool _e16 = local_3;
+    bool _e16 = local_2;
     if (_e16) {
         return 0.0;
     }
     vec3 w_7 = (v_6 / vec3(sqrt(d2_7)));
     float cos_x_1 = -(dot(n, w_7));
     if (!((cos_x_1 <= 0.0))) {
-        local_4 = (dot(ng, w_7) >= 0.0);
+        local_3 = (dot(ng, w_7) >= 0.0);
     } else {
-        local_4 = true;
+        local_3 = true;
     }
-    bool _e32 = local_4;
+    bool _e32 = local_3;
     if (_e32) {
         return 0.0;
     }
@@ -321,13 +321,13 @@ float smith_root(float cos_, float alpha_1) {
 }
 
 float smith_visibility(float n_l, float n_v, float alpha_2) {
-    bool local_5 = false;
+    bool local_4 = false;
     if (!((n_l <= 0.0))) {
-        local_5 = (n_v <= 0.0);
+        local_4 = (n_v <= 0.0);
     } else {
-        local_5 = true;
+        local_4 = true;
     }
-    bool _e11 = local_5;
+    bool _e11 = local_4;
     if (_e11) {
         return 0.0;
     }
@@ -363,15 +363,15 @@ float half_cosine(vec3 v, vec3 l) {
 }
 
 vec3 specular_brdf(vec3 base_2, float metallic_2, vec3 f0_d_2, float f90_d_2, float alpha_3, vec3 n_2, vec3 v_1, vec3 l_1) {
-    bool local_6 = false;
+    bool local_5 = false;
     float n_l_1 = dot(n_2, l_1);
     float n_v_2 = dot(n_2, v_1);
     if (!((n_l_1 <= 0.0))) {
-        local_6 = (n_v_2 <= 0.0);
+        local_5 = (n_v_2 <= 0.0);
     } else {
-        local_6 = true;
+        local_5 = true;
     }
-    bool _e18 = local_6;
+    bool _e18 = local_5;
     if (_e18) {
         return vec3(0.0, 0.0, 0.0);
     }
@@ -386,20 +386,20 @@ vec3 specular_brdf(vec3 base_2, float metallic_2, vec3 f0_d_2, float f90_d_2, fl
 }
 
 bool has_specular(float metallic_3, vec3 f0_d_3, float f90_d_3) {
+    bool local_6 = false;
     bool local_7 = false;
-    bool local_8 = false;
     if (!((metallic_3 > 0.0))) {
-        local_7 = (f90_d_3 > 0.0);
+        local_6 = (f90_d_3 > 0.0);
+    } else {
+        local_6 = true;
+    }
+    bool _e11 = local_6;
+    if (!(_e11)) {
+        local_7 = (max(max(f0_d_3.x, f0_d_3.y), f0_d_3.z) > 0.0);
     } else {
         local_7 = true;
     }
-    bool _e11 = local_7;
-    if (!(_e11)) {
-        local_8 = (max(max(f0_d_3.x, f0_d_3.y), f0_d_3.z) > 0.0);
-    } else {
-        local_8 = true;
-    }
-    bool _e23 = local_8;
+    bool _e23 = local_7;
     return _e23;
 }
 
@@ -408,16 +408,16 @@ float channel_mean(vec3 c_2) {
 }
 
 vec4 receiver_lobe(vec3 base_3, float metallic_4, vec3 f0_d_4, float f90_d_4, float alpha_4, float n_v_1) {
-    bool local_9 = false;
+    bool local_8 = false;
     vec3 _e10 = fresnel_schlick(f0_d_4, f90_d_4, n_v_1);
     float _e16 = channel_mean((((vec3(1.0, 1.0, 1.0) - _e10) * base_3) * (1.0 - metallic_4)));
     if (!((n_v_1 <= 0.0))) {
         bool _e22 = has_specular(metallic_4, f0_d_4, f90_d_4);
-        local_9 = !(_e22);
+        local_8 = !(_e22);
     } else {
-        local_9 = true;
+        local_8 = true;
     }
-    bool _e25 = local_9;
+    bool _e25 = local_8;
     if (_e25) {
         return vec4(_e16, 0.0, alpha_4, n_v_1);
     }
@@ -506,22 +506,22 @@ float emitter_importance(vec3 center_1, float radius_1, float phi, vec3 axis_1, 
 }
 
 float cone_cos_of(vec3 v_3, float d2_4, float a_3, vec3 d) {
+    bool local_9 = false;
     bool local_10 = false;
-    bool local_11 = false;
     float vd = dot(v_3, d);
     float h2_ = (d2_4 - (a_3 * a_3));
     if (!((h2_ <= 0.0))) {
         if ((vd >= 0.0)) {
-            local_11 = ((vd * vd) >= h2_);
+            local_10 = ((vd * vd) >= h2_);
         } else {
-            local_11 = false;
+            local_10 = false;
         }
-        bool _e19 = local_11;
-        local_10 = _e19;
+        bool _e19 = local_10;
+        local_9 = _e19;
     } else {
-        local_10 = true;
+        local_9 = true;
     }
-    bool _e21 = local_10;
+    bool _e21 = local_9;
     if (_e21) {
         return 1.0;
     }
@@ -570,15 +570,15 @@ float light_importance(vec3 center_4, float radius_4, float phi_1, vec3 axis_2, 
 }
 
 float glossy_importance(vec3 center_5, float radius_5, float phi_2, vec3 axis_3, float cos_o_3, float cos_e_2, vec3 p_5, vec3 n_5, vec3 r_3, vec4 lobe_5) {
-    bool local_12 = false;
+    bool local_11 = false;
     float _e10 = emitter_importance(center_5, radius_5, phi_2, axis_3, cos_o_3, cos_e_2, p_5);
     float _e11 = cone_cos_toward(center_5, radius_5, p_5, n_5);
     if (!((_e10 <= 0.0))) {
-        local_12 = (_e11 <= 0.0);
+        local_11 = (_e11 <= 0.0);
     } else {
-        local_12 = true;
+        local_11 = true;
     }
-    bool _e20 = local_12;
+    bool _e20 = local_11;
     if (_e20) {
         return 0.0;
     }
@@ -636,15 +636,15 @@ float ray_aabb(vec3 o, vec3 inv_d, vec3 bmin, vec3 bmax, float t_max) {
 }
 
 vec3 triangle_normal(vec3 a_4, vec3 b_3, vec3 c_3) {
-    bool local_13 = false;
+    bool local_12 = false;
     vec3 n_12 = cross((b_3 - a_4), (c_3 - a_4));
     float l2_ = dot(n_12, n_12);
     if (!(!((l2_ > 0.0)))) {
-        local_13 = !((l2_ < 3e38));
+        local_12 = !((l2_ < 3e38));
     } else {
-        local_13 = true;
+        local_12 = true;
     }
-    bool _e17 = local_13;
+    bool _e17 = local_12;
     if (_e17) {
         return vec3(0.0, 0.0, 0.0);
     }
@@ -652,9 +652,9 @@ vec3 triangle_normal(vec3 a_4, vec3 b_3, vec3 c_3) {
 }
 
 float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_5, vec3 b_4, vec3 c_4, float t_min, float t_max_1) {
+    bool local_13 = false;
     bool local_14 = false;
     bool local_15 = false;
-    bool local_16 = false;
     vec3 e1_ = (b_4 - a_5);
     vec3 e2_ = (c_4 - a_5);
     vec3 p_7 = cross(d_3, e2_);
@@ -666,32 +666,32 @@ float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_5, vec3 b_4, vec3 c_4, float t_min
     vec3 s_3 = (o_1 - a_5);
     float u_3 = (dot(s_3, p_7) * inv_1);
     if (!((u_3 < 0.0))) {
-        local_14 = (u_3 > 1.0);
+        local_13 = (u_3 > 1.0);
     } else {
-        local_14 = true;
+        local_13 = true;
     }
-    bool _e28 = local_14;
+    bool _e28 = local_13;
     if (_e28) {
         return -1.0;
     }
     vec3 q = cross(s_3, e1_);
     float v_11 = (dot(d_3, q) * inv_1);
     if (!((v_11 < 0.0))) {
-        local_15 = ((u_3 + v_11) > 1.0);
+        local_14 = ((u_3 + v_11) > 1.0);
     } else {
-        local_15 = true;
+        local_14 = true;
     }
-    bool _e42 = local_15;
+    bool _e42 = local_14;
     if (_e42) {
         return -1.0;
     }
     float t_3 = (dot(e2_, q) * inv_1);
     if ((t_3 > t_min)) {
-        local_16 = (t_3 < t_max_1);
+        local_15 = (t_3 < t_max_1);
     } else {
-        local_16 = false;
+        local_15 = false;
     }
-    bool _e51 = local_16;
+    bool _e51 = local_15;
     if (_e51) {
         return t_3;
     }
@@ -829,19 +829,19 @@ float bsh_inner_scale(float a_7, vec3 v_4, float d2_6, vec3 r_5, vec4 rl_2) {
 }
 
 bool bsh_reaches(BshNode node_3, vec3 x_5, vec3 r_6, vec4 rl_3) {
+    bool local_16 = false;
     bool local_17 = false;
-    bool local_18 = false;
     bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_5);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
         bool _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001)), x_5);
-        local_17 = !(_e20);
+        local_16 = !(_e20);
     } else {
-        local_17 = true;
+        local_16 = true;
     }
-    bool _e23 = local_17;
+    bool _e23 = local_16;
     if (_e23) {
         return false;
     }
@@ -862,11 +862,11 @@ bool bsh_reaches(BshNode node_3, vec3 x_5, vec3 r_6, vec4 rl_3) {
     float s_c = (_e50 * 1.001);
     float reach = (node_3.extent + (sqrt(s_c) * _e25));
     if ((d2_9 <= ((node_3.radius * node_3.radius) * s_c))) {
-        local_18 = (d2_9 <= (reach * reach));
+        local_17 = (d2_9 <= (reach * reach));
     } else {
-        local_18 = false;
+        local_17 = false;
     }
-    bool _e67 = local_18;
+    bool _e67 = local_17;
     return _e67;
 }
 
@@ -899,8 +899,8 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start, vec3 x_6, vec3 r_7, vec4 rl_4)
 
 Connection connect_traced(uint li, vec3 x_7, vec3 n_7, vec3 ng_1, float s, float w_res, float u1_2, float u2_2, float eps, bool trace_1) {
     Connection c_5 = Connection(vec3(0.0), vec3(0.0), 0.0);
+    bool local_18 = false;
     bool local_19 = false;
-    bool local_20 = false;
     c_5.e = vec3(0.0);
     GpuLight l_4 = _group_1_binding_1_cs[li];
     vec3 _e18 = light_point(l_4, u1_2, u2_2);
@@ -914,16 +914,16 @@ Connection connect_traced(uint li, vec3 x_7, vec3 n_7, vec3 ng_1, float s, float
         if (trace_1) {
             vec3 _e39 = c_5.y;
             bool _e40 = occluded((x_7 + (ng_1 * eps)), _e39);
-            local_20 = _e40;
+            local_19 = _e40;
         } else {
-            local_20 = false;
+            local_19 = false;
         }
-        bool _e42 = local_20;
-        local_19 = _e42;
+        bool _e42 = local_19;
+        local_18 = _e42;
     } else {
-        local_19 = true;
+        local_18 = true;
     }
-    bool _e44 = local_19;
+    bool _e44 = local_18;
     if (_e44) {
         Connection _e45 = c_5;
         return _e45;
@@ -1063,6 +1063,45 @@ Shaded add(Shaded a_8, Shaded b_7) {
     return Shaded((a_8.e + b_7.e), (a_8.diffuse + b_7.diffuse), (a_8.specular + b_7.specular));
 }
 
+uint pick_copies(uint lights[8], uint k_2) {
+    uint copies = 1u;
+    uint j = 0u;
+    bool local_20 = false;
+    bool loop_init_3 = true;
+    while(true) {
+        if (!loop_init_3) {
+            uint _e26 = j;
+            j = (_e26 + 1u);
+        }
+        loop_init_3 = false;
+        uint _e6 = j;
+        if ((_e6 < K)) {
+        } else {
+            break;
+        }
+        {
+            uint _e9 = j;
+            if ((_e9 != k_2)) {
+                uint _e13 = j;
+                local_20 = (lights[_e13] == lights[k_2]);
+            } else {
+                local_20 = false;
+            }
+            bool _e18 = local_20;
+            if (_e18) {
+                uint _e19 = j;
+                if ((_e19 < k_2)) {
+                    return 0u;
+                }
+                uint _e22 = copies;
+                copies = (_e22 + 1u);
+            }
+        }
+    }
+    uint _e28 = copies;
+    return _e28;
+}
+
 void main() {
     uvec3 gid = gl_GlobalInvocationID;
     bool local = false;
@@ -1073,9 +1112,6 @@ void main() {
     uint h = 0u;
     Shaded t = Shaded(vec3(0.0), vec3(0.0), vec3(0.0));
     uint k = 0u;
-    uint copies = 0u;
-    uint j = 0u;
-    bool local_2 = false;
     uint _e4 = _group_0_binding_0_cs.width;
     if (!((gid.x >= _e4))) {
         uint _e12 = _group_0_binding_0_cs.height;
@@ -1137,13 +1173,13 @@ void main() {
     vec4 _e131 = lobe;
     WeightedPicks _e132 = bsh_weighted_collect(x_13, n_14, _e130, _e131, _e96, _e119);
     if ((_e132.w_sum > 0.0)) {
-        bool loop_init_3 = true;
+        bool loop_init_4 = true;
         while(true) {
-            if (!loop_init_3) {
-                uint _e204 = k;
-                k = (_e204 + 1u);
+            if (!loop_init_4) {
+                uint _e179 = k;
+                k = (_e179 + 1u);
             }
-            loop_init_3 = false;
+            loop_init_4 = false;
             uint _e138 = k;
             if ((_e138 < K)) {
             } else {
@@ -1162,65 +1198,28 @@ void main() {
                 float _e148 = xi_from_bits(_e147);
                 uint _e150 = k;
                 uint li_6 = _e132.light[_e150];
-                copies = 1u;
-                uint _e157 = _group_1_binding_1_cs[li_6].kind;
-                if ((_e157 != LIGHT_TRIANGLE)) {
-                    j = 0u;
-                    bool loop_init_4 = true;
-                    while(true) {
-                        if (!loop_init_4) {
-                            uint _e184 = j;
-                            j = (_e184 + 1u);
-                        }
-                        loop_init_4 = false;
-                        uint _e162 = j;
-                        if ((_e162 < K)) {
-                        } else {
-                            break;
-                        }
-                        {
-                            uint _e165 = j;
-                            uint _e166 = k;
-                            if ((_e165 != _e166)) {
-                                uint _e171 = j;
-                                local_2 = (_e132.light[_e171] == li_6);
-                            } else {
-                                local_2 = false;
-                            }
-                            bool _e175 = local_2;
-                            if (_e175) {
-                                uint _e176 = j;
-                                uint _e177 = k;
-                                if ((_e176 < _e177)) {
-                                    copies = 0u;
-                                    break;
-                                }
-                                uint _e180 = copies;
-                                copies = (_e180 + 1u);
-                            }
-                        }
-                    }
-                }
-                uint _e186 = copies;
-                if ((_e186 > 0u)) {
-                    Shaded _e189 = t;
-                    vec3 _e190 = r;
-                    Material _e191 = m;
-                    uint _e194 = k;
-                    float _e197 = weighted_pick_weight(_e132.w_sum, _e132.w[_e194], K);
-                    uint _e198 = copies;
-                    Shaded _e201 = shade_pick(li_6, x_13, n_14, _e190, _e96, _e191, (_e197 * float(_e198)), _e144, _e148, eps_3);
-                    Shaded _e202 = add(_e189, _e201);
-                    t = _e202;
+                uint _e154 = k;
+                uint _e155 = pick_copies(_e132.light, _e154);
+                uint _e159 = _group_1_binding_1_cs[li_6].kind;
+                uint copies_1 = ((_e159 != LIGHT_TRIANGLE) ? _e155 : 1u);
+                if ((copies_1 > 0u)) {
+                    Shaded _e165 = t;
+                    vec3 _e166 = r;
+                    Material _e167 = m;
+                    uint _e170 = k;
+                    float _e173 = weighted_pick_weight(_e132.w_sum, _e132.w[_e170], K);
+                    Shaded _e176 = shade_pick(li_6, x_13, n_14, _e166, _e96, _e167, (_e173 * float(copies_1)), _e144, _e148, eps_3);
+                    Shaded _e177 = add(_e165, _e176);
+                    t = _e177;
                 }
             }
         }
     }
     uint count = _e132.n;
-    vec3 _e209 = t.e;
-    imageStore(_group_0_binding_3_cs, texel_1, vec4(_e209, float(count)));
-    vec3 _e214 = t.specular;
-    imageStore(_group_0_binding_6_cs, texel_1, vec4(_e214, 0.0));
+    vec3 _e184 = t.e;
+    imageStore(_group_0_binding_3_cs, texel_1, vec4(_e184, float(count)));
+    vec3 _e189 = t.specular;
+    imageStore(_group_0_binding_6_cs, texel_1, vec4(_e189, 0.0));
     return;
 }
 

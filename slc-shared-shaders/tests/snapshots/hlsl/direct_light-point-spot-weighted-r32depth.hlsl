@@ -162,7 +162,7 @@ cbuffer view : register(b0) { ViewParams view; }
 Texture2D<float4> depth_tex : register(t1);
 Texture2D<float4> normal_tex : register(t2);
 RWTexture2D<float4> out_tex : register(u3);
-ByteAddressBuffer lights : register(t1, space1);
+ByteAddressBuffer lights_1 : register(t1, space1);
 ByteAddressBuffer rt2_4 : register(t2, space1);
 ByteAddressBuffer r2_3 : register(t3, space1);
 ByteAddressBuffer bsh_nodes : register(t4, space1);
@@ -249,29 +249,29 @@ float connection_factor(float cos_x, float d2_3, float rt2_1, float w)
 
 float connection_cosine(float3 x_2, float3 y, float3 n, float3 ng, float r2_1)
 {
+    bool local_2 = (bool)0;
     bool local_3 = (bool)0;
-    bool local_4 = (bool)0;
 
     float3 v_4 = (x_2 - y);
     float d2_7 = dot(v_4, v_4);
     const bool _e7 = slc_keep(r2_1, d2_7);
     if (!(!(_e7))) {
-        local_3 = !((d2_7 > 0.0));
+        local_2 = !((d2_7 > 0.0));
     } else {
-        local_3 = true;
+        local_2 = true;
     }
-    bool _e16 = local_3;
+    bool _e16 = local_2;
     if (_e16) {
         return 0.0;
     }
     float3 w_6 = (v_4 / (sqrt(d2_7)).xxx);
     float cos_x_1 = -(dot(n, w_6));
     if (!((cos_x_1 <= 0.0))) {
-        local_4 = (dot(ng, w_6) >= 0.0);
+        local_3 = (dot(ng, w_6) >= 0.0);
     } else {
-        local_4 = true;
+        local_3 = true;
     }
-    bool _e32 = local_4;
+    bool _e32 = local_3;
     if (_e32) {
         return 0.0;
     }
@@ -421,23 +421,23 @@ float emitter_importance(float3 center_1, float radius_1, float phi, float3 axis
 
 float cone_cos_of(float3 v, float d2_4, float a_2, float3 d)
 {
+    bool local_4 = (bool)0;
     bool local_5 = (bool)0;
-    bool local_6 = (bool)0;
 
     float vd = dot(v, d);
     float h2_ = (d2_4 - (a_2 * a_2));
     if (!((h2_ <= 0.0))) {
         if ((vd >= 0.0)) {
-            local_6 = ((vd * vd) >= h2_);
+            local_5 = ((vd * vd) >= h2_);
         } else {
-            local_6 = false;
+            local_5 = false;
         }
-        bool _e19 = local_6;
-        local_5 = _e19;
+        bool _e19 = local_5;
+        local_4 = _e19;
     } else {
-        local_5 = true;
+        local_4 = true;
     }
-    bool _e21 = local_5;
+    bool _e21 = local_4;
     if (_e21) {
         return 1.0;
     }
@@ -492,16 +492,16 @@ float light_importance(float3 center_4, float radius_4, float phi_1, float3 axis
 
 float glossy_importance(float3 center_5, float radius_5, float phi_2, float3 axis_3, float cos_o_3, float cos_e_2, float3 p_5, float3 n_2, float3 r_3, float4 lobe_5)
 {
-    bool local_7 = (bool)0;
+    bool local_6 = (bool)0;
 
     const float _e10 = emitter_importance(center_5, radius_5, phi_2, axis_3, cos_o_3, cos_e_2, p_5);
     const float _e11 = cone_cos_toward(center_5, radius_5, p_5, n_2);
     if (!((_e10 <= 0.0))) {
-        local_7 = (_e11 <= 0.0);
+        local_6 = (_e11 <= 0.0);
     } else {
-        local_7 = true;
+        local_6 = true;
     }
-    bool _e20 = local_7;
+    bool _e20 = local_6;
     if (_e20) {
         return 0.0;
     }
@@ -534,21 +534,21 @@ float cone_weight(float3 center_6, float radius_6, float phi_3, float3 axis_4, f
 
 bool finite3_(float3 v_1)
 {
+    bool local_7 = (bool)0;
     bool local_8 = (bool)0;
-    bool local_9 = (bool)0;
 
     if ((abs(v_1.x) <= F32_MAX)) {
-        local_8 = (abs(v_1.y) <= F32_MAX);
+        local_7 = (abs(v_1.y) <= F32_MAX);
+    } else {
+        local_7 = false;
+    }
+    bool _e12 = local_7;
+    if (_e12) {
+        local_8 = (abs(v_1.z) <= F32_MAX);
     } else {
         local_8 = false;
     }
-    bool _e12 = local_8;
-    if (_e12) {
-        local_9 = (abs(v_1.z) <= F32_MAX);
-    } else {
-        local_9 = false;
-    }
-    bool _e20 = local_9;
+    bool _e20 = local_8;
     return _e20;
 }
 
@@ -586,9 +586,9 @@ float ray_aabb(float3 o, float3 inv_d, float3 bmin, float3 bmax, float t_max)
 
 float ray_triangle(float3 o_1, float3 d_3, float3 a_3, float3 b_2, float3 c_1, float t_min, float t_max_1)
 {
+    bool local_9 = (bool)0;
     bool local_10 = (bool)0;
     bool local_11 = (bool)0;
-    bool local_12 = (bool)0;
 
     float3 e1_ = (b_2 - a_3);
     float3 e2_ = (c_1 - a_3);
@@ -601,32 +601,32 @@ float ray_triangle(float3 o_1, float3 d_3, float3 a_3, float3 b_2, float3 c_1, f
     float3 s_3 = (o_1 - a_3);
     float u_3 = (dot(s_3, p_7) * inv);
     if (!((u_3 < 0.0))) {
-        local_10 = (u_3 > 1.0);
+        local_9 = (u_3 > 1.0);
     } else {
-        local_10 = true;
+        local_9 = true;
     }
-    bool _e28 = local_10;
+    bool _e28 = local_9;
     if (_e28) {
         return -1.0;
     }
     float3 q = cross(s_3, e1_);
     float v_9 = (dot(d_3, q) * inv);
     if (!((v_9 < 0.0))) {
-        local_11 = ((u_3 + v_9) > 1.0);
+        local_10 = ((u_3 + v_9) > 1.0);
     } else {
-        local_11 = true;
+        local_10 = true;
     }
-    bool _e42 = local_11;
+    bool _e42 = local_10;
     if (_e42) {
         return -1.0;
     }
     float t_4 = (dot(e2_, q) * inv);
     if ((t_4 > t_min)) {
-        local_12 = (t_4 < t_max_1);
+        local_11 = (t_4 < t_max_1);
     } else {
-        local_12 = false;
+        local_11 = false;
     }
-    bool _e51 = local_12;
+    bool _e51 = local_11;
     if (_e51) {
         return t_4;
     }
@@ -820,8 +820,8 @@ float bsh_inner_scale(float a_5, float3 v_2, float d2_6, float3 r_5, float4 rl_2
 
 bool bsh_reaches(BshNode node_3, float3 x_5, float3 r_6, float4 rl_3)
 {
+    bool local_12 = (bool)0;
     bool local_13 = (bool)0;
-    bool local_14 = (bool)0;
 
     const bool _e6 = sphere_contains_point(node_3.center_, node_3.radius, x_5);
     if (_e6) {
@@ -829,11 +829,11 @@ bool bsh_reaches(BshNode node_3, float3 x_5, float3 r_6, float4 rl_3)
     }
     if (!((rl_3.w <= 1.0))) {
         const bool _e20 = sphere_contains_point(node_3.center_, (node_3.radius * (rl_3.w * 1.0001)), x_5);
-        local_13 = !(_e20);
+        local_12 = !(_e20);
     } else {
-        local_13 = true;
+        local_12 = true;
     }
-    bool _e23 = local_13;
+    bool _e23 = local_12;
     if (_e23) {
         return false;
     }
@@ -854,11 +854,11 @@ bool bsh_reaches(BshNode node_3, float3 x_5, float3 r_6, float4 rl_3)
     float s_c = (_e50 * 1.001);
     float reach = (node_3.extent + (sqrt(s_c) * _e25));
     if ((d2_9 <= ((node_3.radius * node_3.radius) * s_c))) {
-        local_14 = (d2_9 <= (reach * reach));
+        local_13 = (d2_9 <= (reach * reach));
     } else {
-        local_14 = false;
+        local_13 = false;
     }
-    bool _e67 = local_14;
+    bool _e67 = local_13;
     return _e67;
 }
 
@@ -910,11 +910,11 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
 Connection connect_traced(uint li, float3 x_7, float3 n_4, float3 ng_1, float s, float w_res, float u1_1, float u2_1, float eps, bool trace_1)
 {
     Connection c_2 = (Connection)0;
+    bool local_14 = (bool)0;
     bool local_15 = (bool)0;
-    bool local_16 = (bool)0;
 
     c_2.e = (0.0).xxx;
-    GpuLight l_2 = ConstructGpuLight(asfloat(lights.Load3(li*64+0)), asuint(lights.Load(li*64+12)), asfloat(lights.Load3(li*64+16)), asfloat(lights.Load(li*64+28)), asfloat(lights.Load3(li*64+32)), asfloat(lights.Load(li*64+44)), asfloat(lights.Load3(li*64+48)), asuint(lights.Load(li*64+60)));
+    GpuLight l_2 = ConstructGpuLight(asfloat(lights_1.Load3(li*64+0)), asuint(lights_1.Load(li*64+12)), asfloat(lights_1.Load3(li*64+16)), asfloat(lights_1.Load(li*64+28)), asfloat(lights_1.Load3(li*64+32)), asfloat(lights_1.Load(li*64+44)), asfloat(lights_1.Load3(li*64+48)), asuint(lights_1.Load(li*64+60)));
     const float3 _e18 = light_point(l_2, u1_1, u2_1);
     c_2.y = _e18;
     float3 _e21 = c_2.y;
@@ -926,16 +926,16 @@ Connection connect_traced(uint li, float3 x_7, float3 n_4, float3 ng_1, float s,
         if (trace_1) {
             float3 _e39 = c_2.y;
             const bool _e40 = occluded((x_7 + (ng_1 * eps)), _e39);
-            local_16 = _e40;
+            local_15 = _e40;
         } else {
-            local_16 = false;
+            local_15 = false;
         }
-        bool _e42 = local_16;
-        local_15 = _e42;
+        bool _e42 = local_15;
+        local_14 = _e42;
     } else {
-        local_15 = true;
+        local_14 = true;
     }
-    bool _e44 = local_15;
+    bool _e44 = local_14;
     if (_e44) {
         Connection _e45 = c_2;
         const Connection connection = _e45;
@@ -1066,15 +1066,15 @@ WeightedPicks bsh_weighted_collect(float3 x_10, float3 n_6, float3 r_10, float4 
 
 float4 unproject_pixel(float4 c0_, float4 c1_, float4 c2_, float4 c3_, float px, float py, float width, float height, float depth)
 {
+    bool local_16 = (bool)0;
     bool local_17 = (bool)0;
-    bool local_18 = (bool)0;
 
     if ((depth > 0.0)) {
-        local_17 = (depth < 1.0);
+        local_16 = (depth < 1.0);
     } else {
-        local_17 = false;
+        local_16 = false;
     }
-    bool _e16 = local_17;
+    bool _e16 = local_16;
     if (!(_e16)) {
         return float4(0.0, 0.0, 0.0, 0.0);
     }
@@ -1084,11 +1084,11 @@ float4 unproject_pixel(float4 c0_, float4 c1_, float4 c2_, float4 c3_, float px,
     float3 q_1 = float3((p_8.x / p_8.w), (p_8.y / p_8.w), (p_8.z / p_8.w));
     if ((abs(p_8.w) > 0.0)) {
         const bool _e59 = finite3_(q_1);
-        local_18 = _e59;
+        local_17 = _e59;
     } else {
-        local_18 = false;
+        local_17 = false;
     }
-    bool _e61 = local_18;
+    bool _e61 = local_17;
     if (_e61) {
         return float4(q_1.x, q_1.y, q_1.z, 1.0);
     }
@@ -1143,6 +1143,50 @@ Shaded add(Shaded a_6, Shaded b_5)
     return shaded_2;
 }
 
+uint pick_copies(uint lights[8], uint k_2)
+{
+    uint copies = 1u;
+    uint j = 0u;
+    bool local_18 = (bool)0;
+
+    uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
+    bool loop_init_3 = true;
+    while(true) {
+        if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
+        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+        if (!loop_init_3) {
+            uint _e26 = j;
+            j = (_e26 + 1u);
+        }
+        loop_init_3 = false;
+        uint _e6 = j;
+        if ((_e6 < K)) {
+        } else {
+            break;
+        }
+        {
+            uint _e9 = j;
+            if ((_e9 != k_2)) {
+                uint _e13 = j;
+                local_18 = (lights[min(uint(_e13), 7u)] == lights[min(uint(k_2), 7u)]);
+            } else {
+                local_18 = false;
+            }
+            bool _e18 = local_18;
+            if (_e18) {
+                uint _e19 = j;
+                if ((_e19 < k_2)) {
+                    return 0u;
+                }
+                uint _e22 = copies;
+                copies = (_e22 + 1u);
+            }
+        }
+    }
+    uint _e28 = copies;
+    return _e28;
+}
+
 [numthreads(8, 8, 1)]
 void main(uint3 gid : SV_DispatchThreadID)
 {
@@ -1154,9 +1198,6 @@ void main(uint3 gid : SV_DispatchThreadID)
     uint h = (uint)0;
     Shaded t = ConstructShaded((0.0).xxx, (0.0).xxx, (0.0).xxx);
     uint k = 0u;
-    uint copies = (uint)0;
-    uint j = (uint)0;
-    bool local_2 = (bool)0;
 
     uint _e4 = view.width;
     if (!((gid.x >= _e4))) {
@@ -1202,16 +1243,16 @@ void main(uint3 gid : SV_DispatchThreadID)
     float4 _e89 = lobe;
     const WeightedPicks _e90 = bsh_weighted_collect(x_14, n_10, _e88, _e89, _e54, _e77);
     if ((_e90.w_sum > 0.0)) {
-        uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
-        bool loop_init_3 = true;
+        uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
+        bool loop_init_4 = true;
         while(true) {
-            if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
-            loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
-            if (!loop_init_3) {
-                uint _e162 = k;
-                k = (_e162 + 1u);
+            if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
+            loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+            if (!loop_init_4) {
+                uint _e137 = k;
+                k = (_e137 + 1u);
             }
-            loop_init_3 = false;
+            loop_init_4 = false;
             uint _e96 = k;
             if ((_e96 < K)) {
             } else {
@@ -1230,65 +1271,25 @@ void main(uint3 gid : SV_DispatchThreadID)
                 const float _e106 = xi_from_bits(_e105);
                 uint _e108 = k;
                 uint li_6 = _e90.light[min(uint(_e108), 7u)];
-                copies = 1u;
-                uint _e115 = asuint(lights.Load(12+li_6*64));
-                if ((_e115 != LIGHT_TRIANGLE)) {
-                    j = 0u;
-                    uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
-                    bool loop_init_4 = true;
-                    while(true) {
-                        if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
-                        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-                        if (!loop_init_4) {
-                            uint _e142 = j;
-                            j = (_e142 + 1u);
-                        }
-                        loop_init_4 = false;
-                        uint _e120 = j;
-                        if ((_e120 < K)) {
-                        } else {
-                            break;
-                        }
-                        {
-                            uint _e123 = j;
-                            uint _e124 = k;
-                            if ((_e123 != _e124)) {
-                                uint _e129 = j;
-                                local_2 = (_e90.light[min(uint(_e129), 7u)] == li_6);
-                            } else {
-                                local_2 = false;
-                            }
-                            bool _e133 = local_2;
-                            if (_e133) {
-                                uint _e134 = j;
-                                uint _e135 = k;
-                                if ((_e134 < _e135)) {
-                                    copies = 0u;
-                                    break;
-                                }
-                                uint _e138 = copies;
-                                copies = (_e138 + 1u);
-                            }
-                        }
-                    }
-                }
-                uint _e144 = copies;
-                if ((_e144 > 0u)) {
-                    Shaded _e147 = t;
-                    float3 _e148 = r;
-                    Material _e149 = m;
-                    uint _e152 = k;
-                    const float _e155 = weighted_pick_weight(_e90.w_sum, _e90.w[min(uint(_e152), 7u)], K);
-                    uint _e156 = copies;
-                    const Shaded _e159 = shade_pick(li_6, x_14, n_10, _e148, _e54, _e149, (_e155 * float(_e156)), _e102, _e106, eps_3);
-                    const Shaded _e160 = add(_e147, _e159);
-                    t = _e160;
+                uint _e112 = k;
+                const uint _e113 = pick_copies(_e90.light, _e112);
+                uint _e117 = asuint(lights_1.Load(12+li_6*64));
+                uint copies_1 = ((_e117 != LIGHT_TRIANGLE) ? _e113 : 1u);
+                if ((copies_1 > 0u)) {
+                    Shaded _e123 = t;
+                    float3 _e124 = r;
+                    Material _e125 = m;
+                    uint _e128 = k;
+                    const float _e131 = weighted_pick_weight(_e90.w_sum, _e90.w[min(uint(_e128), 7u)], K);
+                    const Shaded _e134 = shade_pick(li_6, x_14, n_10, _e124, _e54, _e125, (_e131 * float(copies_1)), _e102, _e106, eps_3);
+                    const Shaded _e135 = add(_e123, _e134);
+                    t = _e135;
                 }
             }
         }
     }
     uint count = _e90.n;
-    float3 _e167 = t.e;
-    out_tex[texel_1] = float4(_e167, float(count));
+    float3 _e142 = t.e;
+    out_tex[texel_1] = float4(_e142, float(count));
     return;
 }

@@ -279,28 +279,28 @@ float connection_cosine(
     metal::float3 ng,
     float r2_1
 ) {
+    bool local_2 = {};
     bool local_3 = {};
-    bool local_4 = {};
     metal::float3 v_4 = x_2 - y;
     float d2_7 = metal::dot(v_4, v_4);
     bool _e7 = slc_keep(r2_1, d2_7);
     if (!(!(_e7))) {
-        local_3 = !((d2_7 > 0.0));
+        local_2 = !((d2_7 > 0.0));
     } else {
-        local_3 = true;
+        local_2 = true;
     }
-    bool _e16 = local_3;
+    bool _e16 = local_2;
     if (_e16) {
         return 0.0;
     }
     metal::float3 w_6 = v_4 / metal::float3(metal::sqrt(d2_7));
     float cos_x_1 = -(metal::dot(n, w_6));
     if (!((cos_x_1 <= 0.0))) {
-        local_4 = metal::dot(ng, w_6) >= 0.0;
+        local_3 = metal::dot(ng, w_6) >= 0.0;
     } else {
-        local_4 = true;
+        local_3 = true;
     }
-    bool _e32 = local_4;
+    bool _e32 = local_3;
     if (_e32) {
         return 0.0;
     }
@@ -499,22 +499,22 @@ float cone_cos_of(
     float a_2,
     metal::float3 d
 ) {
+    bool local_4 = {};
     bool local_5 = {};
-    bool local_6 = {};
     float vd = metal::dot(v, d);
     float h2_ = d2_4 - (a_2 * a_2);
     if (!((h2_ <= 0.0))) {
         if (vd >= 0.0) {
-            local_6 = (vd * vd) >= h2_;
+            local_5 = (vd * vd) >= h2_;
         } else {
-            local_6 = false;
+            local_5 = false;
         }
-        bool _e19 = local_6;
-        local_5 = _e19;
+        bool _e19 = local_5;
+        local_4 = _e19;
     } else {
-        local_5 = true;
+        local_4 = true;
     }
-    bool _e21 = local_5;
+    bool _e21 = local_4;
     if (_e21) {
         return 1.0;
     }
@@ -597,15 +597,15 @@ float glossy_importance(
     metal::float3 r_3,
     metal::float4 lobe_5
 ) {
-    bool local_7 = {};
+    bool local_6 = {};
     float _e10 = emitter_importance(center_5, radius_5, phi_2, axis_3, cos_o_3, cos_e_2, p_5);
     float _e11 = cone_cos_toward(center_5, radius_5, p_5, n_2);
     if (!((_e10 <= 0.0))) {
-        local_7 = _e11 <= 0.0;
+        local_6 = _e11 <= 0.0;
     } else {
-        local_7 = true;
+        local_6 = true;
     }
-    bool _e20 = local_7;
+    bool _e20 = local_6;
     if (_e20) {
         return 0.0;
     }
@@ -653,20 +653,20 @@ float cone_weight(
 bool finite3_(
     metal::float3 v_1
 ) {
+    bool local_7 = {};
     bool local_8 = {};
-    bool local_9 = {};
     if (metal::abs(v_1.x) <= F32_MAX) {
-        local_8 = metal::abs(v_1.y) <= F32_MAX;
+        local_7 = metal::abs(v_1.y) <= F32_MAX;
+    } else {
+        local_7 = false;
+    }
+    bool _e12 = local_7;
+    if (_e12) {
+        local_8 = metal::abs(v_1.z) <= F32_MAX;
     } else {
         local_8 = false;
     }
-    bool _e12 = local_8;
-    if (_e12) {
-        local_9 = metal::abs(v_1.z) <= F32_MAX;
-    } else {
-        local_9 = false;
-    }
-    bool _e20 = local_9;
+    bool _e20 = local_8;
     return _e20;
 }
 
@@ -719,9 +719,9 @@ float ray_triangle(
     float t_min,
     float t_max_1
 ) {
+    bool local_9 = {};
     bool local_10 = {};
     bool local_11 = {};
-    bool local_12 = {};
     metal::float3 e1_ = b_2 - a_3;
     metal::float3 e2_ = c_1 - a_3;
     metal::float3 p_7 = metal::cross(d_3, e2_);
@@ -733,32 +733,32 @@ float ray_triangle(
     metal::float3 s_3 = o_1 - a_3;
     float u_3 = metal::dot(s_3, p_7) * inv;
     if (!((u_3 < 0.0))) {
-        local_10 = u_3 > 1.0;
+        local_9 = u_3 > 1.0;
     } else {
-        local_10 = true;
+        local_9 = true;
     }
-    bool _e28 = local_10;
+    bool _e28 = local_9;
     if (_e28) {
         return -1.0;
     }
     metal::float3 q = metal::cross(s_3, e1_);
     float v_9 = metal::dot(d_3, q) * inv;
     if (!((v_9 < 0.0))) {
-        local_11 = (u_3 + v_9) > 1.0;
+        local_10 = (u_3 + v_9) > 1.0;
     } else {
-        local_11 = true;
+        local_10 = true;
     }
-    bool _e42 = local_11;
+    bool _e42 = local_10;
     if (_e42) {
         return -1.0;
     }
     float t_4 = metal::dot(e2_, q) * inv;
     if (t_4 > t_min) {
-        local_12 = t_4 < t_max_1;
+        local_11 = t_4 < t_max_1;
     } else {
-        local_12 = false;
+        local_11 = false;
     }
-    bool _e51 = local_12;
+    bool _e51 = local_11;
     if (_e51) {
         return t_4;
     }
@@ -946,19 +946,19 @@ bool bsh_reaches(
     metal::float3 r_6,
     metal::float4 rl_3
 ) {
+    bool local_12 = {};
     bool local_13 = {};
-    bool local_14 = {};
     bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_5);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
         bool _e20 = sphere_contains_point(node_3.center, node_3.radius * (rl_3.w * 1.0001), x_5);
-        local_13 = !(_e20);
+        local_12 = !(_e20);
     } else {
-        local_13 = true;
+        local_12 = true;
     }
-    bool _e23 = local_13;
+    bool _e23 = local_12;
     if (_e23) {
         return false;
     }
@@ -979,11 +979,11 @@ bool bsh_reaches(
     float s_c = _e50 * 1.001;
     float reach = node_3.extent + (metal::sqrt(s_c) * _e25);
     if (d2_9 <= ((node_3.radius * node_3.radius) * s_c)) {
-        local_14 = d2_9 <= (reach * reach);
+        local_13 = d2_9 <= (reach * reach);
     } else {
-        local_14 = false;
+        local_13 = false;
     }
-    bool _e67 = local_14;
+    bool _e67 = local_13;
     return _e67;
 }
 
@@ -1038,16 +1038,16 @@ Connection connect_traced(
     bool trace_1,
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
-    device type_11 const& lights,
+    device type_11 const& lights_1,
     device type_4 const& rt2_4,
     device type_4 const& r2_3,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Connection c_2 = {};
+    bool local_14 = {};
     bool local_15 = {};
-    bool local_16 = {};
     c_2.e = metal::float3(0.0);
-    GpuLight l_2 = lights[li];
+    GpuLight l_2 = lights_1[li];
     metal::float3 _e18 = light_point(l_2, u1_1, u2_1);
     c_2.y = _e18;
     metal::float3 _e21 = c_2.y;
@@ -1059,16 +1059,16 @@ Connection connect_traced(
         if (trace_1) {
             metal::float3 _e39 = c_2.y;
             bool _e40 = occluded(x_7 + (ng_1 * eps), _e39, geo_nodes, geo_tris, _buffer_sizes);
-            local_16 = _e40;
+            local_15 = _e40;
         } else {
-            local_16 = false;
+            local_15 = false;
         }
-        bool _e42 = local_16;
-        local_15 = _e42;
+        bool _e42 = local_15;
+        local_14 = _e42;
     } else {
-        local_15 = true;
+        local_14 = true;
     }
-    bool _e44 = local_15;
+    bool _e44 = local_14;
     if (_e44) {
         Connection _e45 = c_2;
         return _e45;
@@ -1216,14 +1216,14 @@ metal::float4 unproject_pixel(
     float height,
     float depth
 ) {
+    bool local_16 = {};
     bool local_17 = {};
-    bool local_18 = {};
     if (depth > 0.0) {
-        local_17 = depth < 1.0;
+        local_16 = depth < 1.0;
     } else {
-        local_17 = false;
+        local_16 = false;
     }
-    bool _e16 = local_17;
+    bool _e16 = local_16;
     if (!(_e16)) {
         return metal::float4(0.0, 0.0, 0.0, 0.0);
     }
@@ -1233,11 +1233,11 @@ metal::float4 unproject_pixel(
     metal::float3 q_1 = metal::float3(p_8.x / p_8.w, p_8.y / p_8.w, p_8.z / p_8.w);
     if (metal::abs(p_8.w) > 0.0) {
         bool _e59 = finite3_(q_1);
-        local_18 = _e59;
+        local_17 = _e59;
     } else {
-        local_18 = false;
+        local_17 = false;
     }
-    bool _e61 = local_18;
+    bool _e61 = local_17;
     if (_e61) {
         return metal::float4(q_1.x, q_1.y, q_1.z, 1.0);
     }
@@ -1275,13 +1275,13 @@ Shaded shade_pick_traced(
     bool trace_2,
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
-    device type_11 const& lights,
+    device type_11 const& lights_1,
     device type_4 const& rt2_4,
     device type_4 const& r2_3,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Shaded s_2 = {};
-    Connection _e13 = connect_traced(li_3, x_11, n_7, n_7, 1.0, w_4, u1_2, u2_2, eps_1, trace_2, geo_nodes, geo_tris, lights, rt2_4, r2_3, _buffer_sizes);
+    Connection _e13 = connect_traced(li_3, x_11, n_7, n_7, 1.0, w_4, u1_2, u2_2, eps_1, trace_2, geo_nodes, geo_tris, lights_1, rt2_4, r2_3, _buffer_sizes);
     s_2.e = _e13.e;
     s_2.diffuse = metal::float3(0.0);
     s_2.specular = metal::float3(0.0);
@@ -1302,12 +1302,12 @@ Shaded shade_pick(
     float eps_2,
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
-    device type_11 const& lights,
+    device type_11 const& lights_1,
     device type_4 const& rt2_4,
     device type_4 const& r2_3,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Shaded _e11 = shade_pick_traced(li_4, x_12, n_8, r_12, rl_9, m_2, w_5, u1_3, u2_3, eps_2, true, geo_nodes, geo_tris, lights, rt2_4, r2_3, _buffer_sizes);
+    Shaded _e11 = shade_pick_traced(li_4, x_12, n_8, r_12, rl_9, m_2, w_5, u1_3, u2_3, eps_2, true, geo_nodes, geo_tris, lights_1, rt2_4, r2_3, _buffer_sizes);
     return _e11;
 }
 
@@ -1316,6 +1316,51 @@ Shaded add(
     Shaded b_5
 ) {
     return Shaded {a_6.e + b_5.e, a_6.diffuse + b_5.diffuse, a_6.specular + b_5.specular};
+}
+
+uint pick_copies(
+    type_14 lights,
+    uint k_2
+) {
+    uint copies = 1u;
+    uint j = 0u;
+    bool local_18 = {};
+    uint2 loop_bound_5 = uint2(4294967295u);
+    bool loop_init_3 = true;
+    while(true) {
+        if (metal::all(loop_bound_5 == uint2(0u))) { break; }
+        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+        if (!loop_init_3) {
+            uint _e26 = j;
+            j = _e26 + 1u;
+        }
+        loop_init_3 = false;
+        uint _e6 = j;
+        if (_e6 < K) {
+        } else {
+            break;
+        }
+        {
+            uint _e9 = j;
+            if (_e9 != k_2) {
+                uint _e13 = j;
+                local_18 = lights.inner[_e13] == lights.inner[k_2];
+            } else {
+                local_18 = false;
+            }
+            bool _e18 = local_18;
+            if (_e18) {
+                uint _e19 = j;
+                if (_e19 < k_2) {
+                    return 0u;
+                }
+                uint _e22 = copies;
+                copies = _e22 + 1u;
+            }
+        }
+    }
+    uint _e28 = copies;
+    return _e28;
 }
 
 struct main_Input {
@@ -1328,7 +1373,7 @@ kernel void main_(
 , metal::texture2d<float, metal::access::sample> depth_tex [[user(fake0)]]
 , metal::texture2d<float, metal::access::sample> normal_tex [[user(fake0)]]
 , metal::texture2d<float, metal::access::write> out_tex [[user(fake0)]]
-, device type_11 const& lights [[user(fake0)]]
+, device type_11 const& lights_1 [[user(fake0)]]
 , device type_4 const& rt2_4 [[user(fake0)]]
 , device type_4 const& r2_3 [[user(fake0)]]
 , device type_12 const& bsh_nodes [[user(fake0)]]
@@ -1343,9 +1388,6 @@ kernel void main_(
     uint h = {};
     Shaded t = Shaded {metal::float3(0.0), metal::float3(0.0), metal::float3(0.0)};
     uint k = 0u;
-    uint copies = {};
-    uint j = {};
-    bool local_2 = {};
     uint _e4 = view.width;
     if (!((gid.x >= _e4))) {
         uint _e12 = view.height;
@@ -1390,16 +1432,16 @@ kernel void main_(
     metal::float4 _e89 = lobe;
     WeightedPicks _e90 = bsh_weighted_collect(x_14, n_10, _e88, _e89, _e54, _e77, rt2_4, bsh_nodes, light_cones, _buffer_sizes);
     if (_e90.w_sum > 0.0) {
-        uint2 loop_bound_5 = uint2(4294967295u);
-        bool loop_init_3 = true;
+        uint2 loop_bound_6 = uint2(4294967295u);
+        bool loop_init_4 = true;
         while(true) {
-            if (metal::all(loop_bound_5 == uint2(0u))) { break; }
-            loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
-            if (!loop_init_3) {
-                uint _e162 = k;
-                k = _e162 + 1u;
+            if (metal::all(loop_bound_6 == uint2(0u))) { break; }
+            loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+            if (!loop_init_4) {
+                uint _e137 = k;
+                k = _e137 + 1u;
             }
-            loop_init_3 = false;
+            loop_init_4 = false;
             uint _e96 = k;
             if (_e96 < K) {
             } else {
@@ -1418,65 +1460,25 @@ kernel void main_(
                 float _e106 = xi_from_bits(_e105);
                 uint _e108 = k;
                 uint li_6 = _e90.light.inner[_e108];
-                copies = 1u;
-                uint _e115 = lights[li_6].kind;
-                if (_e115 != LIGHT_TRIANGLE) {
-                    j = 0u;
-                    uint2 loop_bound_6 = uint2(4294967295u);
-                    bool loop_init_4 = true;
-                    while(true) {
-                        if (metal::all(loop_bound_6 == uint2(0u))) { break; }
-                        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-                        if (!loop_init_4) {
-                            uint _e142 = j;
-                            j = _e142 + 1u;
-                        }
-                        loop_init_4 = false;
-                        uint _e120 = j;
-                        if (_e120 < K) {
-                        } else {
-                            break;
-                        }
-                        {
-                            uint _e123 = j;
-                            uint _e124 = k;
-                            if (_e123 != _e124) {
-                                uint _e129 = j;
-                                local_2 = _e90.light.inner[_e129] == li_6;
-                            } else {
-                                local_2 = false;
-                            }
-                            bool _e133 = local_2;
-                            if (_e133) {
-                                uint _e134 = j;
-                                uint _e135 = k;
-                                if (_e134 < _e135) {
-                                    copies = 0u;
-                                    break;
-                                }
-                                uint _e138 = copies;
-                                copies = _e138 + 1u;
-                            }
-                        }
-                    }
-                }
-                uint _e144 = copies;
-                if (_e144 > 0u) {
-                    Shaded _e147 = t;
-                    metal::float3 _e148 = r;
-                    Material _e149 = m;
-                    uint _e152 = k;
-                    float _e155 = weighted_pick_weight(_e90.w_sum, _e90.w.inner[_e152], K);
-                    uint _e156 = copies;
-                    Shaded _e159 = shade_pick(li_6, x_14, n_10, _e148, _e54, _e149, _e155 * static_cast<float>(_e156), _e102, _e106, eps_3, geo_nodes, geo_tris, lights, rt2_4, r2_3, _buffer_sizes);
-                    Shaded _e160 = add(_e147, _e159);
-                    t = _e160;
+                uint _e112 = k;
+                uint _e113 = pick_copies(_e90.light, _e112);
+                uint _e117 = lights_1[li_6].kind;
+                uint copies_1 = (_e117 != LIGHT_TRIANGLE) ? _e113 : 1u;
+                if (copies_1 > 0u) {
+                    Shaded _e123 = t;
+                    metal::float3 _e124 = r;
+                    Material _e125 = m;
+                    uint _e128 = k;
+                    float _e131 = weighted_pick_weight(_e90.w_sum, _e90.w.inner[_e128], K);
+                    Shaded _e134 = shade_pick(li_6, x_14, n_10, _e124, _e54, _e125, _e131 * static_cast<float>(copies_1), _e102, _e106, eps_3, geo_nodes, geo_tris, lights_1, rt2_4, r2_3, _buffer_sizes);
+                    Shaded _e135 = add(_e123, _e134);
+                    t = _e135;
                 }
             }
         }
     }
     uint count = _e90.n;
-    metal::float3 _e167 = t.e;
-    out_tex.write(metal::float4(_e167, static_cast<float>(count)), metal::uint2(texel_1));
+    metal::float3 _e142 = t.e;
+    out_tex.write(metal::float4(_e142, static_cast<float>(count)), metal::uint2(texel_1));
     return;
 }

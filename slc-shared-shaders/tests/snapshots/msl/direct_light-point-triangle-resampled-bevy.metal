@@ -275,28 +275,28 @@ float connection_cosine(
     metal::float3 ng,
     float r2_1
 ) {
-    bool local_4 = {};
-    bool local_5 = {};
+    bool local_2 = {};
+    bool local_3 = {};
     metal::float3 v_5 = x_2 - y;
     float d2_6 = metal::dot(v_5, v_5);
     bool _e7 = slc_keep(r2_1, d2_6);
     if (!(!(_e7))) {
-        local_4 = !((d2_6 > 0.0));
+        local_2 = !((d2_6 > 0.0));
     } else {
-        local_4 = true;
+        local_2 = true;
     }
-    bool _e16 = local_4;
+    bool _e16 = local_2;
     if (_e16) {
         return 0.0;
     }
     metal::float3 w_6 = v_5 / metal::float3(metal::sqrt(d2_6));
     float cos_x_1 = -(metal::dot(n, w_6));
     if (!((cos_x_1 <= 0.0))) {
-        local_5 = metal::dot(ng, w_6) >= 0.0;
+        local_3 = metal::dot(ng, w_6) >= 0.0;
     } else {
-        local_5 = true;
+        local_3 = true;
     }
-    bool _e32 = local_5;
+    bool _e32 = local_3;
     if (_e32) {
         return 0.0;
     }
@@ -387,13 +387,13 @@ float smith_visibility(
     float n_v,
     float alpha_2
 ) {
-    bool local_6 = {};
+    bool local_4 = {};
     if (!((n_l <= 0.0))) {
-        local_6 = n_v <= 0.0;
+        local_4 = n_v <= 0.0;
     } else {
-        local_6 = true;
+        local_4 = true;
     }
-    bool _e11 = local_6;
+    bool _e11 = local_4;
     if (_e11) {
         return 0.0;
     }
@@ -429,20 +429,20 @@ bool has_specular(
     metal::float3 f0_d_1,
     float f90_d_1
 ) {
-    bool local_7 = {};
-    bool local_8 = {};
+    bool local_5 = {};
+    bool local_6 = {};
     if (!((metallic_1 > 0.0))) {
-        local_7 = f90_d_1 > 0.0;
+        local_5 = f90_d_1 > 0.0;
     } else {
-        local_7 = true;
+        local_5 = true;
     }
-    bool _e11 = local_7;
+    bool _e11 = local_5;
     if (!(_e11)) {
-        local_8 = metal::max(metal::max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0.0;
+        local_6 = metal::max(metal::max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0.0;
     } else {
-        local_8 = true;
+        local_6 = true;
     }
-    bool _e23 = local_8;
+    bool _e23 = local_6;
     return _e23;
 }
 
@@ -460,16 +460,16 @@ metal::float4 receiver_lobe(
     float alpha_3,
     float n_v_1
 ) {
-    bool local_9 = {};
+    bool local_7 = {};
     metal::float3 _e10 = fresnel_schlick(f0_d_2, f90_d_2, n_v_1);
     float _e16 = channel_mean(((metal::float3(1.0, 1.0, 1.0) - _e10) * base_1) * (1.0 - metallic_2));
     if (!((n_v_1 <= 0.0))) {
         bool _e22 = has_specular(metallic_2, f0_d_2, f90_d_2);
-        local_9 = !(_e22);
+        local_7 = !(_e22);
     } else {
-        local_9 = true;
+        local_7 = true;
     }
-    bool _e25 = local_9;
+    bool _e25 = local_7;
     if (_e25) {
         return metal::float4(_e16, 0.0, alpha_3, n_v_1);
     }
@@ -584,22 +584,22 @@ float cone_cos_of(
     float a_3,
     metal::float3 d
 ) {
-    bool local_10 = {};
-    bool local_11 = {};
+    bool local_8 = {};
+    bool local_9 = {};
     float vd = metal::dot(v_2, d);
     float h2_ = d2_4 - (a_3 * a_3);
     if (!((h2_ <= 0.0))) {
         if (vd >= 0.0) {
-            local_11 = (vd * vd) >= h2_;
+            local_9 = (vd * vd) >= h2_;
         } else {
-            local_11 = false;
+            local_9 = false;
         }
-        bool _e19 = local_11;
-        local_10 = _e19;
+        bool _e19 = local_9;
+        local_8 = _e19;
     } else {
-        local_10 = true;
+        local_8 = true;
     }
-    bool _e21 = local_10;
+    bool _e21 = local_8;
     if (_e21) {
         return 1.0;
     }
@@ -686,15 +686,15 @@ metal::float3 triangle_normal(
     metal::float3 b_4,
     metal::float3 c_4
 ) {
-    bool local_12 = {};
+    bool local_10 = {};
     metal::float3 n_7 = metal::cross(b_4 - a_4, c_4 - a_4);
     float l2_ = metal::dot(n_7, n_7);
     if (!(!((l2_ > 0.0)))) {
-        local_12 = !((l2_ < 300000000000000000000000000000000000000.0));
+        local_10 = !((l2_ < 300000000000000000000000000000000000000.0));
     } else {
-        local_12 = true;
+        local_10 = true;
     }
-    bool _e17 = local_12;
+    bool _e17 = local_10;
     if (_e17) {
         return metal::float3(0.0, 0.0, 0.0);
     }
@@ -710,9 +710,9 @@ float ray_triangle(
     float t_min,
     float t_max_1
 ) {
+    bool local_11 = {};
+    bool local_12 = {};
     bool local_13 = {};
-    bool local_14 = {};
-    bool local_15 = {};
     metal::float3 e1_ = b_5 - a_5;
     metal::float3 e2_ = c_5 - a_5;
     metal::float3 p_2 = metal::cross(d_3, e2_);
@@ -724,32 +724,32 @@ float ray_triangle(
     metal::float3 s_3 = o_1 - a_5;
     float u_3 = metal::dot(s_3, p_2) * inv;
     if (!((u_3 < 0.0))) {
-        local_13 = u_3 > 1.0;
+        local_11 = u_3 > 1.0;
     } else {
-        local_13 = true;
+        local_11 = true;
     }
-    bool _e28 = local_13;
+    bool _e28 = local_11;
     if (_e28) {
         return -1.0;
     }
     metal::float3 q_1 = metal::cross(s_3, e1_);
     float v_7 = metal::dot(d_3, q_1) * inv;
     if (!((v_7 < 0.0))) {
-        local_14 = (u_3 + v_7) > 1.0;
+        local_12 = (u_3 + v_7) > 1.0;
     } else {
-        local_14 = true;
+        local_12 = true;
     }
-    bool _e42 = local_14;
+    bool _e42 = local_12;
     if (_e42) {
         return -1.0;
     }
     float t_3 = metal::dot(e2_, q_1) * inv;
     if (t_3 > t_min) {
-        local_15 = t_3 < t_max_1;
+        local_13 = t_3 < t_max_1;
     } else {
-        local_15 = false;
+        local_13 = false;
     }
-    bool _e51 = local_15;
+    bool _e51 = local_13;
     if (_e51) {
         return t_3;
     }
@@ -942,19 +942,19 @@ bool bsh_reaches(
     metal::float3 r_6,
     metal::float4 rl_3
 ) {
-    bool local_16 = {};
-    bool local_17 = {};
+    bool local_14 = {};
+    bool local_15 = {};
     bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_4);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
         bool _e20 = sphere_contains_point(node_3.center, node_3.radius * (rl_3.w * 1.0001), x_4);
-        local_16 = !(_e20);
+        local_14 = !(_e20);
     } else {
-        local_16 = true;
+        local_14 = true;
     }
-    bool _e23 = local_16;
+    bool _e23 = local_14;
     if (_e23) {
         return false;
     }
@@ -975,11 +975,11 @@ bool bsh_reaches(
     float s_c = _e50 * 1.001;
     float reach = node_3.extent + (metal::sqrt(s_c) * _e25);
     if (d2_7 <= ((node_3.radius * node_3.radius) * s_c)) {
-        local_17 = d2_7 <= (reach * reach);
+        local_15 = d2_7 <= (reach * reach);
     } else {
-        local_17 = false;
+        local_15 = false;
     }
-    bool _e67 = local_17;
+    bool _e67 = local_15;
     return _e67;
 }
 
@@ -1034,16 +1034,16 @@ Connection connect_traced(
     bool trace_1,
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
-    device type_11 const& lights,
+    device type_11 const& lights_1,
     device type_4 const& rt2_2,
     device type_4 const& r2_2,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Connection c_6 = {};
-    bool local_18 = {};
-    bool local_19 = {};
+    bool local_16 = {};
+    bool local_17 = {};
     c_6.e = metal::float3(0.0);
-    GpuLight l_3 = lights[li];
+    GpuLight l_3 = lights_1[li];
     metal::float3 _e18 = light_point(l_3, u1_2, u2_2);
     c_6.y = _e18;
     metal::float3 _e21 = c_6.y;
@@ -1055,16 +1055,16 @@ Connection connect_traced(
         if (trace_1) {
             metal::float3 _e39 = c_6.y;
             bool _e40 = occluded(x_6 + (ng_1 * eps), _e39, geo_nodes, geo_tris, _buffer_sizes);
-            local_19 = _e40;
+            local_17 = _e40;
         } else {
-            local_19 = false;
+            local_17 = false;
         }
-        bool _e42 = local_19;
-        local_18 = _e42;
+        bool _e42 = local_17;
+        local_16 = _e42;
     } else {
-        local_18 = true;
+        local_16 = true;
     }
-    bool _e44 = local_18;
+    bool _e44 = local_16;
     if (_e44) {
         Connection _e45 = c_6;
         return _e45;
@@ -1116,7 +1116,7 @@ Shaded shade_pick_traced(
     bool trace_2,
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
-    device type_11 const& lights,
+    device type_11 const& lights_1,
     device type_4 const& rt2_2,
     device type_4 const& r2_2,
     device type_13 const& light_cones,
@@ -1124,7 +1124,7 @@ Shaded shade_pick_traced(
 ) {
     Shaded s_1 = {};
     float _e12 = light_range_scale(li_2, x_8, r_9, rl_6, light_cones, _buffer_sizes);
-    Connection _e13 = connect_traced(li_2, x_8, n_5, n_5, _e12, w_4, u1_3, u2_3, eps_1, trace_2, geo_nodes, geo_tris, lights, rt2_2, r2_2, _buffer_sizes);
+    Connection _e13 = connect_traced(li_2, x_8, n_5, n_5, _e12, w_4, u1_3, u2_3, eps_1, trace_2, geo_nodes, geo_tris, lights_1, rt2_2, r2_2, _buffer_sizes);
     s_1.e = _e13.e;
     s_1.diffuse = metal::float3(0.0);
     s_1.specular = metal::float3(0.0);
@@ -1149,13 +1149,13 @@ Shaded shade_pick(
     float eps_2,
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
-    device type_11 const& lights,
+    device type_11 const& lights_1,
     device type_4 const& rt2_2,
     device type_4 const& r2_2,
     device type_13 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Shaded _e11 = shade_pick_traced(li_3, x_9, n_6, r_10, rl_7, m_2, w_5, u1_4, u2_4, eps_2, true, geo_nodes, geo_tris, lights, rt2_2, r2_2, light_cones, _buffer_sizes);
+    Shaded _e11 = shade_pick_traced(li_3, x_9, n_6, r_10, rl_7, m_2, w_5, u1_4, u2_4, eps_2, true, geo_nodes, geo_tris, lights_1, rt2_2, r2_2, light_cones, _buffer_sizes);
     return _e11;
 }
 
@@ -1164,6 +1164,51 @@ Shaded add(
     Shaded b_7
 ) {
     return Shaded {a_8.e + b_7.e, a_8.diffuse + b_7.diffuse, a_8.specular + b_7.specular};
+}
+
+uint pick_copies(
+    type_14 lights,
+    uint k_1
+) {
+    uint copies = 1u;
+    uint j = 0u;
+    bool local_18 = {};
+    uint2 loop_bound_3 = uint2(4294967295u);
+    bool loop_init_1 = true;
+    while(true) {
+        if (metal::all(loop_bound_3 == uint2(0u))) { break; }
+        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+        if (!loop_init_1) {
+            uint _e26 = j;
+            j = _e26 + 1u;
+        }
+        loop_init_1 = false;
+        uint _e6 = j;
+        if (_e6 < K) {
+        } else {
+            break;
+        }
+        {
+            uint _e9 = j;
+            if (_e9 != k_1) {
+                uint _e13 = j;
+                local_18 = lights.inner[_e13] == lights.inner[k_1];
+            } else {
+                local_18 = false;
+            }
+            bool _e18 = local_18;
+            if (_e18) {
+                uint _e19 = j;
+                if (_e19 < k_1) {
+                    return 0u;
+                }
+                uint _e22 = copies;
+                copies = _e22 + 1u;
+            }
+        }
+    }
+    uint _e28 = copies;
+    return _e28;
 }
 
 metal::float3 output_of(
@@ -1184,7 +1229,7 @@ kernel void main_(
 , metal::texture2d<float, metal::access::write> out_tex [[user(fake0)]]
 , metal::texture2d<float, metal::access::sample> base_color_tex [[user(fake0)]]
 , metal::texture2d<float, metal::access::sample> metal_rough_tex [[user(fake0)]]
-, device type_11 const& lights [[user(fake0)]]
+, device type_11 const& lights_1 [[user(fake0)]]
 , device type_4 const& rt2_2 [[user(fake0)]]
 , device type_4 const& r2_2 [[user(fake0)]]
 , device type_12 const& bsh_nodes [[user(fake0)]]
@@ -1207,10 +1252,6 @@ kernel void main_(
     uint b = {};
     uint q = {};
     uint k = 0u;
-    uint copies = {};
-    uint j = {};
-    bool local_2 = {};
-    bool local_3 = {};
     uint _e4 = view.width;
     if (!((gid.x >= _e4))) {
         uint _e12 = view.height;
@@ -1271,19 +1312,19 @@ kernel void main_(
     metal::float3 _e135 = r;
     uint _e136 = bsh_next_leaf_lobe(BSH, _e134, x_11, _e135, _e90, bsh_nodes, _buffer_sizes);
     b = _e136;
-    uint2 loop_bound_3 = uint2(4294967295u);
-    bool loop_init_1 = true;
+    uint2 loop_bound_4 = uint2(4294967295u);
+    bool loop_init_2 = true;
     while(true) {
-        if (metal::all(loop_bound_3 == uint2(0u))) { break; }
-        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-        if (!loop_init_1) {
+        if (metal::all(loop_bound_4 == uint2(0u))) { break; }
+        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+        if (!loop_init_2) {
             uint _e193 = b;
             uint _e196 = bsh_nodes[_e193].next;
             metal::float3 _e197 = r;
             uint _e198 = bsh_next_leaf_lobe(BSH, _e196, x_11, _e197, _e90, bsh_nodes, _buffer_sizes);
             b = _e198;
         }
-        loop_init_1 = false;
+        loop_init_2 = false;
         uint _e138 = b;
         if (_e138 != BSH_NONE) {
         } else {
@@ -1307,23 +1348,23 @@ kernel void main_(
             metal::float2 u_4 = metal::float2(_e152, _e156);
             metal::float3 _e158 = r;
             Material _e159 = m;
-            Shaded _e164 = shade_pick_traced(li_4, x_11, n_9, _e158, _e90, _e159, 1.0, u_4.x, u_4.y, eps_3, false, geo_nodes, geo_tris, lights, rt2_2, r2_2, light_cones, _buffer_sizes);
+            Shaded _e164 = shade_pick_traced(li_4, x_11, n_9, _e158, _e90, _e159, 1.0, u_4.x, u_4.y, eps_3, false, geo_nodes, geo_tris, lights_1, rt2_2, r2_2, light_cones, _buffer_sizes);
             metal::float3 _e165 = output_of(_e164);
             float _e166 = resample_target(_e165);
             if (_e166 > 0.0) {
                 float _e169 = total;
                 total = _e169 + _e166;
                 q = 0u;
-                uint2 loop_bound_4 = uint2(4294967295u);
-                bool loop_init_2 = true;
+                uint2 loop_bound_5 = uint2(4294967295u);
+                bool loop_init_3 = true;
                 while(true) {
-                    if (metal::all(loop_bound_4 == uint2(0u))) { break; }
-                    loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
-                    if (!loop_init_2) {
+                    if (metal::all(loop_bound_5 == uint2(0u))) { break; }
+                    loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+                    if (!loop_init_3) {
                         uint _e189 = q;
                         q = _e189 + 1u;
                     }
-                    loop_init_2 = false;
+                    loop_init_3 = false;
                     uint _e173 = q;
                     if (_e173 < K) {
                     } else {
@@ -1352,100 +1393,49 @@ kernel void main_(
     }
     float _e199 = total;
     if (_e199 > 0.0) {
-        uint2 loop_bound_5 = uint2(4294967295u);
-        bool loop_init_3 = true;
+        uint2 loop_bound_6 = uint2(4294967295u);
+        bool loop_init_4 = true;
         while(true) {
-            if (metal::all(loop_bound_5 == uint2(0u))) { break; }
-            loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
-            if (!loop_init_3) {
-                uint _e280 = k;
-                k = _e280 + 1u;
+            if (metal::all(loop_bound_6 == uint2(0u))) { break; }
+            loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+            if (!loop_init_4) {
+                uint _e238 = k;
+                k = _e238 + 1u;
             }
-            loop_init_3 = false;
+            loop_init_4 = false;
             uint _e204 = k;
             if (_e204 < K) {
             } else {
                 break;
             }
             {
-                copies = 1u;
-                j = 0u;
-                uint2 loop_bound_6 = uint2(4294967295u);
-                bool loop_init_4 = true;
-                while(true) {
-                    if (metal::all(loop_bound_6 == uint2(0u))) { break; }
-                    loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-                    if (!loop_init_4) {
-                        uint _e248 = j;
-                        j = _e248 + 1u;
-                    }
-                    loop_init_4 = false;
-                    uint _e211 = j;
-                    if (_e211 < K) {
-                    } else {
-                        break;
-                    }
-                    {
-                        uint _e214 = j;
-                        uint _e215 = k;
-                        if (_e214 != _e215) {
-                            uint _e219 = j;
-                            uint _e221 = slot_light.inner[_e219];
-                            uint _e222 = k;
-                            uint _e224 = slot_light.inner[_e222];
-                            local_2 = _e221 == _e224;
-                        } else {
-                            local_2 = false;
-                        }
-                        bool _e227 = local_2;
-                        if (_e227) {
-                            uint _e230 = j;
-                            metal::float2 _e232 = slot_u.inner[_e230];
-                            uint _e233 = k;
-                            metal::float2 _e235 = slot_u.inner[_e233];
-                            local_3 = metal::all(_e232 == _e235);
-                        } else {
-                            local_3 = false;
-                        }
-                        bool _e239 = local_3;
-                        if (_e239) {
-                            uint _e240 = j;
-                            uint _e241 = k;
-                            if (_e240 < _e241) {
-                                copies = 0u;
-                                break;
-                            }
-                            uint _e244 = copies;
-                            copies = _e244 + 1u;
-                        }
-                    }
-                }
-                uint _e250 = copies;
-                if (_e250 > 0u) {
-                    float _e253 = total;
-                    uint _e255 = k;
-                    float _e257 = slot_p.inner[_e255];
-                    uint _e260 = copies;
-                    float w_7 = (_e253 / (8.0 * _e257)) * static_cast<float>(_e260);
-                    Shaded _e263 = t;
-                    uint _e264 = k;
-                    uint _e266 = slot_light.inner[_e264];
-                    metal::float3 _e267 = r;
-                    Material _e268 = m;
-                    uint _e269 = k;
-                    float _e272 = slot_u.inner[_e269].x;
-                    uint _e273 = k;
-                    float _e276 = slot_u.inner[_e273].y;
-                    Shaded _e277 = shade_pick(_e266, x_11, n_9, _e267, _e90, _e268, w_7, _e272, _e276, eps_3, geo_nodes, geo_tris, lights, rt2_2, r2_2, light_cones, _buffer_sizes);
-                    Shaded _e278 = add(_e263, _e277);
-                    t = _e278;
+                type_14 _e207 = slot_light;
+                uint _e208 = k;
+                uint _e209 = pick_copies(_e207, _e208);
+                if (_e209 > 0u) {
+                    float _e212 = total;
+                    uint _e214 = k;
+                    float _e216 = slot_p.inner[_e214];
+                    float w_7 = (_e212 / (8.0 * _e216)) * static_cast<float>(_e209);
+                    Shaded _e221 = t;
+                    uint _e222 = k;
+                    uint _e224 = slot_light.inner[_e222];
+                    metal::float3 _e225 = r;
+                    Material _e226 = m;
+                    uint _e227 = k;
+                    float _e230 = slot_u.inner[_e227].x;
+                    uint _e231 = k;
+                    float _e234 = slot_u.inner[_e231].y;
+                    Shaded _e235 = shade_pick(_e224, x_11, n_9, _e225, _e90, _e226, w_7, _e230, _e234, eps_3, geo_nodes, geo_tris, lights_1, rt2_2, r2_2, light_cones, _buffer_sizes);
+                    Shaded _e236 = add(_e221, _e235);
+                    t = _e236;
                 }
             }
         }
     }
-    metal::float3 _e284 = t.diffuse;
-    metal::float3 _e286 = t.specular;
-    uint _e288 = count;
-    out_tex.write(metal::float4(_e284 + _e286, static_cast<float>(_e288)), metal::uint2(texel_1));
+    metal::float3 _e242 = t.diffuse;
+    metal::float3 _e244 = t.specular;
+    uint _e246 = count;
+    out_tex.write(metal::float4(_e242 + _e244, static_cast<float>(_e246)), metal::uint2(texel_1));
     return;
 }

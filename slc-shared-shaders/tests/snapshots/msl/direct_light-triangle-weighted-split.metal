@@ -279,28 +279,28 @@ float connection_cosine(
     metal::float3 ng,
     float r2_1
 ) {
+    bool local_2 = {};
     bool local_3 = {};
-    bool local_4 = {};
     metal::float3 v_6 = x_2 - y;
     float d2_7 = metal::dot(v_6, v_6);
     bool _e7 = slc_keep(r2_1, d2_7);
     if (!(!(_e7))) {
-        local_3 = !((d2_7 > 0.0));
+        local_2 = !((d2_7 > 0.0));
     } else {
-        local_3 = true;
+        local_2 = true;
     }
-    bool _e16 = local_3;
+    bool _e16 = local_2;
     if (_e16) {
         return 0.0;
     }
     metal::float3 w_7 = v_6 / metal::float3(metal::sqrt(d2_7));
     float cos_x_1 = -(metal::dot(n, w_7));
     if (!((cos_x_1 <= 0.0))) {
-        local_4 = metal::dot(ng, w_7) >= 0.0;
+        local_3 = metal::dot(ng, w_7) >= 0.0;
     } else {
-        local_4 = true;
+        local_3 = true;
     }
-    bool _e32 = local_4;
+    bool _e32 = local_3;
     if (_e32) {
         return 0.0;
     }
@@ -400,13 +400,13 @@ float smith_visibility(
     float n_v,
     float alpha_2
 ) {
-    bool local_5 = {};
+    bool local_4 = {};
     if (!((n_l <= 0.0))) {
-        local_5 = n_v <= 0.0;
+        local_4 = n_v <= 0.0;
     } else {
-        local_5 = true;
+        local_4 = true;
     }
-    bool _e11 = local_5;
+    bool _e11 = local_4;
     if (_e11) {
         return 0.0;
     }
@@ -470,15 +470,15 @@ metal::float3 specular_brdf(
     metal::float3 v_1,
     metal::float3 l_1
 ) {
-    bool local_6 = {};
+    bool local_5 = {};
     float n_l_1 = metal::dot(n_2, l_1);
     float n_v_2 = metal::dot(n_2, v_1);
     if (!((n_l_1 <= 0.0))) {
-        local_6 = n_v_2 <= 0.0;
+        local_5 = n_v_2 <= 0.0;
     } else {
-        local_6 = true;
+        local_5 = true;
     }
-    bool _e18 = local_6;
+    bool _e18 = local_5;
     if (_e18) {
         return metal::float3(0.0, 0.0, 0.0);
     }
@@ -497,20 +497,20 @@ bool has_specular(
     metal::float3 f0_d_3,
     float f90_d_3
 ) {
+    bool local_6 = {};
     bool local_7 = {};
-    bool local_8 = {};
     if (!((metallic_3 > 0.0))) {
-        local_7 = f90_d_3 > 0.0;
+        local_6 = f90_d_3 > 0.0;
+    } else {
+        local_6 = true;
+    }
+    bool _e11 = local_6;
+    if (!(_e11)) {
+        local_7 = metal::max(metal::max(f0_d_3.x, f0_d_3.y), f0_d_3.z) > 0.0;
     } else {
         local_7 = true;
     }
-    bool _e11 = local_7;
-    if (!(_e11)) {
-        local_8 = metal::max(metal::max(f0_d_3.x, f0_d_3.y), f0_d_3.z) > 0.0;
-    } else {
-        local_8 = true;
-    }
-    bool _e23 = local_8;
+    bool _e23 = local_7;
     return _e23;
 }
 
@@ -528,16 +528,16 @@ metal::float4 receiver_lobe(
     float alpha_4,
     float n_v_1
 ) {
-    bool local_9 = {};
+    bool local_8 = {};
     metal::float3 _e10 = fresnel_schlick(f0_d_4, f90_d_4, n_v_1);
     float _e16 = channel_mean(((metal::float3(1.0, 1.0, 1.0) - _e10) * base_3) * (1.0 - metallic_4));
     if (!((n_v_1 <= 0.0))) {
         bool _e22 = has_specular(metallic_4, f0_d_4, f90_d_4);
-        local_9 = !(_e22);
+        local_8 = !(_e22);
     } else {
-        local_9 = true;
+        local_8 = true;
     }
-    bool _e25 = local_9;
+    bool _e25 = local_8;
     if (_e25) {
         return metal::float4(_e16, 0.0, alpha_4, n_v_1);
     }
@@ -671,22 +671,22 @@ float cone_cos_of(
     float a_3,
     metal::float3 d
 ) {
+    bool local_9 = {};
     bool local_10 = {};
-    bool local_11 = {};
     float vd = metal::dot(v_3, d);
     float h2_ = d2_4 - (a_3 * a_3);
     if (!((h2_ <= 0.0))) {
         if (vd >= 0.0) {
-            local_11 = (vd * vd) >= h2_;
+            local_10 = (vd * vd) >= h2_;
         } else {
-            local_11 = false;
+            local_10 = false;
         }
-        bool _e19 = local_11;
-        local_10 = _e19;
+        bool _e19 = local_10;
+        local_9 = _e19;
     } else {
-        local_10 = true;
+        local_9 = true;
     }
-    bool _e21 = local_10;
+    bool _e21 = local_9;
     if (_e21) {
         return 1.0;
     }
@@ -769,15 +769,15 @@ float glossy_importance(
     metal::float3 r_3,
     metal::float4 lobe_5
 ) {
-    bool local_12 = {};
+    bool local_11 = {};
     float _e10 = emitter_importance(center_5, radius_5, phi_2, axis_3, cos_o_3, cos_e_2, p_5);
     float _e11 = cone_cos_toward(center_5, radius_5, p_5, n_5);
     if (!((_e10 <= 0.0))) {
-        local_12 = _e11 <= 0.0;
+        local_11 = _e11 <= 0.0;
     } else {
-        local_12 = true;
+        local_11 = true;
     }
-    bool _e20 = local_12;
+    bool _e20 = local_11;
     if (_e20) {
         return 0.0;
     }
@@ -867,15 +867,15 @@ metal::float3 triangle_normal(
     metal::float3 b_3,
     metal::float3 c_3
 ) {
-    bool local_13 = {};
+    bool local_12 = {};
     metal::float3 n_12 = metal::cross(b_3 - a_4, c_3 - a_4);
     float l2_ = metal::dot(n_12, n_12);
     if (!(!((l2_ > 0.0)))) {
-        local_13 = !((l2_ < 300000000000000000000000000000000000000.0));
+        local_12 = !((l2_ < 300000000000000000000000000000000000000.0));
     } else {
-        local_13 = true;
+        local_12 = true;
     }
-    bool _e17 = local_13;
+    bool _e17 = local_12;
     if (_e17) {
         return metal::float3(0.0, 0.0, 0.0);
     }
@@ -891,9 +891,9 @@ float ray_triangle(
     float t_min,
     float t_max_1
 ) {
+    bool local_13 = {};
     bool local_14 = {};
     bool local_15 = {};
-    bool local_16 = {};
     metal::float3 e1_ = b_4 - a_5;
     metal::float3 e2_ = c_4 - a_5;
     metal::float3 p_7 = metal::cross(d_3, e2_);
@@ -905,32 +905,32 @@ float ray_triangle(
     metal::float3 s_3 = o_1 - a_5;
     float u_3 = metal::dot(s_3, p_7) * inv_1;
     if (!((u_3 < 0.0))) {
-        local_14 = u_3 > 1.0;
+        local_13 = u_3 > 1.0;
     } else {
-        local_14 = true;
+        local_13 = true;
     }
-    bool _e28 = local_14;
+    bool _e28 = local_13;
     if (_e28) {
         return -1.0;
     }
     metal::float3 q = metal::cross(s_3, e1_);
     float v_11 = metal::dot(d_3, q) * inv_1;
     if (!((v_11 < 0.0))) {
-        local_15 = (u_3 + v_11) > 1.0;
+        local_14 = (u_3 + v_11) > 1.0;
     } else {
-        local_15 = true;
+        local_14 = true;
     }
-    bool _e42 = local_15;
+    bool _e42 = local_14;
     if (_e42) {
         return -1.0;
     }
     float t_3 = metal::dot(e2_, q) * inv_1;
     if (t_3 > t_min) {
-        local_16 = t_3 < t_max_1;
+        local_15 = t_3 < t_max_1;
     } else {
-        local_16 = false;
+        local_15 = false;
     }
-    bool _e51 = local_16;
+    bool _e51 = local_15;
     if (_e51) {
         return t_3;
     }
@@ -1120,19 +1120,19 @@ bool bsh_reaches(
     metal::float3 r_6,
     metal::float4 rl_3
 ) {
+    bool local_16 = {};
     bool local_17 = {};
-    bool local_18 = {};
     bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_5);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
         bool _e20 = sphere_contains_point(node_3.center, node_3.radius * (rl_3.w * 1.0001), x_5);
-        local_17 = !(_e20);
+        local_16 = !(_e20);
     } else {
-        local_17 = true;
+        local_16 = true;
     }
-    bool _e23 = local_17;
+    bool _e23 = local_16;
     if (_e23) {
         return false;
     }
@@ -1153,11 +1153,11 @@ bool bsh_reaches(
     float s_c = _e50 * 1.001;
     float reach = node_3.extent + (metal::sqrt(s_c) * _e25);
     if (d2_9 <= ((node_3.radius * node_3.radius) * s_c)) {
-        local_18 = d2_9 <= (reach * reach);
+        local_17 = d2_9 <= (reach * reach);
     } else {
-        local_18 = false;
+        local_17 = false;
     }
-    bool _e67 = local_18;
+    bool _e67 = local_17;
     return _e67;
 }
 
@@ -1212,16 +1212,16 @@ Connection connect_traced(
     bool trace_1,
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
-    device type_11 const& lights,
+    device type_11 const& lights_1,
     device type_4 const& rt2_4,
     device type_4 const& r2_3,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Connection c_5 = {};
+    bool local_18 = {};
     bool local_19 = {};
-    bool local_20 = {};
     c_5.e = metal::float3(0.0);
-    GpuLight l_4 = lights[li];
+    GpuLight l_4 = lights_1[li];
     metal::float3 _e18 = light_point(l_4, u1_2, u2_2);
     c_5.y = _e18;
     metal::float3 _e21 = c_5.y;
@@ -1233,16 +1233,16 @@ Connection connect_traced(
         if (trace_1) {
             metal::float3 _e39 = c_5.y;
             bool _e40 = occluded(x_7 + (ng_1 * eps), _e39, geo_nodes, geo_tris, _buffer_sizes);
-            local_20 = _e40;
+            local_19 = _e40;
         } else {
-            local_20 = false;
+            local_19 = false;
         }
-        bool _e42 = local_20;
-        local_19 = _e42;
+        bool _e42 = local_19;
+        local_18 = _e42;
     } else {
-        local_19 = true;
+        local_18 = true;
     }
-    bool _e44 = local_19;
+    bool _e44 = local_18;
     if (_e44) {
         Connection _e45 = c_5;
         return _e45;
@@ -1402,7 +1402,7 @@ Shaded shade_pick_traced(
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
     constant ViewParams& view,
-    device type_11 const& lights,
+    device type_11 const& lights_1,
     device type_4 const& rt2_4,
     device type_4 const& r2_3,
     device type_13 const& light_cones,
@@ -1410,7 +1410,7 @@ Shaded shade_pick_traced(
 ) {
     Shaded s_2 = {};
     float _e12 = light_range_scale(li_3, x_11, r_11, rl_8, light_cones, _buffer_sizes);
-    Connection _e13 = connect_traced(li_3, x_11, n_10, n_10, _e12, w_5, u1_3, u2_3, eps_1, trace_2, geo_nodes, geo_tris, lights, rt2_4, r2_3, _buffer_sizes);
+    Connection _e13 = connect_traced(li_3, x_11, n_10, n_10, _e12, w_5, u1_3, u2_3, eps_1, trace_2, geo_nodes, geo_tris, lights_1, rt2_4, r2_3, _buffer_sizes);
     s_2.e = _e13.e;
     s_2.diffuse = metal::float3(0.0);
     s_2.specular = metal::float3(0.0);
@@ -1444,13 +1444,13 @@ Shaded shade_pick(
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
     constant ViewParams& view,
-    device type_11 const& lights,
+    device type_11 const& lights_1,
     device type_4 const& rt2_4,
     device type_4 const& r2_3,
     device type_13 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Shaded _e11 = shade_pick_traced(li_4, x_12, n_11, r_12, rl_9, m_2, w_6, u1_4, u2_4, eps_2, true, geo_nodes, geo_tris, view, lights, rt2_4, r2_3, light_cones, _buffer_sizes);
+    Shaded _e11 = shade_pick_traced(li_4, x_12, n_11, r_12, rl_9, m_2, w_6, u1_4, u2_4, eps_2, true, geo_nodes, geo_tris, view, lights_1, rt2_4, r2_3, light_cones, _buffer_sizes);
     return _e11;
 }
 
@@ -1459,6 +1459,51 @@ Shaded add(
     Shaded b_7
 ) {
     return Shaded {a_8.e + b_7.e, a_8.diffuse + b_7.diffuse, a_8.specular + b_7.specular};
+}
+
+uint pick_copies(
+    type_14 lights,
+    uint k_2
+) {
+    uint copies = 1u;
+    uint j = 0u;
+    bool local_20 = {};
+    uint2 loop_bound_5 = uint2(4294967295u);
+    bool loop_init_3 = true;
+    while(true) {
+        if (metal::all(loop_bound_5 == uint2(0u))) { break; }
+        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+        if (!loop_init_3) {
+            uint _e26 = j;
+            j = _e26 + 1u;
+        }
+        loop_init_3 = false;
+        uint _e6 = j;
+        if (_e6 < K) {
+        } else {
+            break;
+        }
+        {
+            uint _e9 = j;
+            if (_e9 != k_2) {
+                uint _e13 = j;
+                local_20 = lights.inner[_e13] == lights.inner[k_2];
+            } else {
+                local_20 = false;
+            }
+            bool _e18 = local_20;
+            if (_e18) {
+                uint _e19 = j;
+                if (_e19 < k_2) {
+                    return 0u;
+                }
+                uint _e22 = copies;
+                copies = _e22 + 1u;
+            }
+        }
+    }
+    uint _e28 = copies;
+    return _e28;
 }
 
 struct main_Input {
@@ -1474,7 +1519,7 @@ kernel void main_(
 , metal::texture2d<float, metal::access::sample> base_color_tex [[user(fake0)]]
 , metal::texture2d<float, metal::access::sample> metal_rough_tex [[user(fake0)]]
 , metal::texture2d<float, metal::access::write> specular_tex [[user(fake0)]]
-, device type_11 const& lights [[user(fake0)]]
+, device type_11 const& lights_1 [[user(fake0)]]
 , device type_4 const& rt2_4 [[user(fake0)]]
 , device type_4 const& r2_3 [[user(fake0)]]
 , device type_12 const& bsh_nodes [[user(fake0)]]
@@ -1489,9 +1534,6 @@ kernel void main_(
     uint h = {};
     Shaded t = Shaded {metal::float3(0.0), metal::float3(0.0), metal::float3(0.0)};
     uint k = 0u;
-    uint copies = {};
-    uint j = {};
-    bool local_2 = {};
     uint _e4 = view.width;
     if (!((gid.x >= _e4))) {
         uint _e12 = view.height;
@@ -1553,16 +1595,16 @@ kernel void main_(
     metal::float4 _e131 = lobe;
     WeightedPicks _e132 = bsh_weighted_collect(x_13, n_14, _e130, _e131, _e96, _e119, rt2_4, bsh_nodes, light_cones, _buffer_sizes);
     if (_e132.w_sum > 0.0) {
-        uint2 loop_bound_5 = uint2(4294967295u);
-        bool loop_init_3 = true;
+        uint2 loop_bound_6 = uint2(4294967295u);
+        bool loop_init_4 = true;
         while(true) {
-            if (metal::all(loop_bound_5 == uint2(0u))) { break; }
-            loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
-            if (!loop_init_3) {
-                uint _e204 = k;
-                k = _e204 + 1u;
+            if (metal::all(loop_bound_6 == uint2(0u))) { break; }
+            loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+            if (!loop_init_4) {
+                uint _e179 = k;
+                k = _e179 + 1u;
             }
-            loop_init_3 = false;
+            loop_init_4 = false;
             uint _e138 = k;
             if (_e138 < K) {
             } else {
@@ -1581,67 +1623,27 @@ kernel void main_(
                 float _e148 = xi_from_bits(_e147);
                 uint _e150 = k;
                 uint li_6 = _e132.light.inner[_e150];
-                copies = 1u;
-                uint _e157 = lights[li_6].kind;
-                if (_e157 != LIGHT_TRIANGLE) {
-                    j = 0u;
-                    uint2 loop_bound_6 = uint2(4294967295u);
-                    bool loop_init_4 = true;
-                    while(true) {
-                        if (metal::all(loop_bound_6 == uint2(0u))) { break; }
-                        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-                        if (!loop_init_4) {
-                            uint _e184 = j;
-                            j = _e184 + 1u;
-                        }
-                        loop_init_4 = false;
-                        uint _e162 = j;
-                        if (_e162 < K) {
-                        } else {
-                            break;
-                        }
-                        {
-                            uint _e165 = j;
-                            uint _e166 = k;
-                            if (_e165 != _e166) {
-                                uint _e171 = j;
-                                local_2 = _e132.light.inner[_e171] == li_6;
-                            } else {
-                                local_2 = false;
-                            }
-                            bool _e175 = local_2;
-                            if (_e175) {
-                                uint _e176 = j;
-                                uint _e177 = k;
-                                if (_e176 < _e177) {
-                                    copies = 0u;
-                                    break;
-                                }
-                                uint _e180 = copies;
-                                copies = _e180 + 1u;
-                            }
-                        }
-                    }
-                }
-                uint _e186 = copies;
-                if (_e186 > 0u) {
-                    Shaded _e189 = t;
-                    metal::float3 _e190 = r;
-                    Material _e191 = m;
-                    uint _e194 = k;
-                    float _e197 = weighted_pick_weight(_e132.w_sum, _e132.w.inner[_e194], K);
-                    uint _e198 = copies;
-                    Shaded _e201 = shade_pick(li_6, x_13, n_14, _e190, _e96, _e191, _e197 * static_cast<float>(_e198), _e144, _e148, eps_3, geo_nodes, geo_tris, view, lights, rt2_4, r2_3, light_cones, _buffer_sizes);
-                    Shaded _e202 = add(_e189, _e201);
-                    t = _e202;
+                uint _e154 = k;
+                uint _e155 = pick_copies(_e132.light, _e154);
+                uint _e159 = lights_1[li_6].kind;
+                uint copies_1 = (_e159 != LIGHT_TRIANGLE) ? _e155 : 1u;
+                if (copies_1 > 0u) {
+                    Shaded _e165 = t;
+                    metal::float3 _e166 = r;
+                    Material _e167 = m;
+                    uint _e170 = k;
+                    float _e173 = weighted_pick_weight(_e132.w_sum, _e132.w.inner[_e170], K);
+                    Shaded _e176 = shade_pick(li_6, x_13, n_14, _e166, _e96, _e167, _e173 * static_cast<float>(copies_1), _e144, _e148, eps_3, geo_nodes, geo_tris, view, lights_1, rt2_4, r2_3, light_cones, _buffer_sizes);
+                    Shaded _e177 = add(_e165, _e176);
+                    t = _e177;
                 }
             }
         }
     }
     uint count = _e132.n;
-    metal::float3 _e209 = t.e;
-    out_tex.write(metal::float4(_e209, static_cast<float>(count)), metal::uint2(texel_1));
-    metal::float3 _e214 = t.specular;
-    specular_tex.write(metal::float4(_e214, 0.0), metal::uint2(texel_1));
+    metal::float3 _e184 = t.e;
+    out_tex.write(metal::float4(_e184, static_cast<float>(count)), metal::uint2(texel_1));
+    metal::float3 _e189 = t.specular;
+    specular_tex.write(metal::float4(_e189, 0.0), metal::uint2(texel_1));
     return;
 }
