@@ -476,8 +476,12 @@ fn bench(lights: usize, out: &str) -> Result<(), String> {
             .filter_map(|d| {
                 let c: Vec<&str> = d.path().components().collect();
                 let v: Vec<f64> = d.values().copied().take(frames).collect();
-                (c.len() == 3 && c[0] == "render" && c[2] == "elapsed_gpu" && !v.is_empty())
-                    .then(|| (c[1].to_string(), median(v.clone()), v.len()))
+                (c.len() == 3 && c[0] == "render" && c[2] == "elapsed_gpu" && !v.is_empty()).then(
+                    || {
+                        let n = v.len();
+                        (c[1].to_string(), median(v), n)
+                    },
+                )
             })
             .collect();
         passes.sort_by(|a, b| a.0.cmp(&b.0));

@@ -344,11 +344,7 @@ fn extract_lights(
             cache.remove(id);
         }
     }
-    // Meshes made and dropped as the app runs: read again when most of
-    // the cache is no longer in use.
-    if cache.len() > 64 + 2 * emitters.iter().count() {
-        cache.clear();
-    }
+    let mut emitting = 0;
     for (mesh, material, transform, visible) in &emitters {
         let Some(m) = materials.get(material.id()) else { continue };
         let e = m.emissive;
@@ -356,6 +352,7 @@ fn extract_lights(
         if !visible.get() || nits.max_element() <= 0.0 {
             continue;
         }
+        emitting += 1;
         let tris = match cache.get(&mesh.id()) {
             Some(t) => t,
             None => {
@@ -379,6 +376,11 @@ fn extract_lights(
                 out.0.push(BevyLight::Triangle { vertices: [v[0], v[2], v[1]], nits });
             }
         }
+    }
+    // Meshes made and dropped as the app runs: read again when most of
+    // the cache is no longer in use.
+    if cache.len() > 64 + 2 * emitting {
+        cache.clear();
     }
     for (light, transform) in &points {
         out.0.push(BevyLight::Point {

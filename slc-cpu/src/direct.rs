@@ -174,15 +174,7 @@ impl DirectLights {
                 self.bsh.for_each_containing(at.x, |l| {
                     seen += 1;
                     let w = self.cones[l as usize].weight(&rc, at.rt2[l as usize]);
-                    if w > 0.0 {
-                        w_sum += w;
-                        for s in slots.iter_mut() {
-                            h = pcg_hash(h);
-                            if weighted_replace(w, w_sum, xi_from_bits(h)) {
-                                *s = (l, w);
-                            }
-                        }
-                    }
+                    offer(&mut slots, (l, w), w, &mut w_sum, &mut h);
                 });
                 if w_sum > 0.0 {
                     picks = slots
@@ -244,15 +236,7 @@ impl DirectLights {
             h = pcg_hash(h);
             let u2 = xi_from_bits(h);
             let p = resample_target(self.connect(at, l as usize, 1.0, u1, u2, false));
-            if p > 0.0 {
-                total += p;
-                for s in slots.iter_mut() {
-                    hc = pcg_hash(hc);
-                    if weighted_replace(p, total, xi_from_bits(hc)) {
-                        *s = (l, u1, u2, p);
-                    }
-                }
-            }
+            offer(&mut slots, (l, u1, u2, p), p, &mut total, &mut hc);
         });
         let mut e = Vec3::ZERO;
         if total > 0.0 {
@@ -287,6 +271,23 @@ impl DirectLights {
         let v = x - y;
         let d2 = v.dot(v);
         l.intensity(v / d2.sqrt()) * connection_factor(cos_x, d2, at.rt2[li], w)
+    }
+}
+
+/// Offers `item` of weight `w` to one-slot weighted reservoirs `slots`
+/// whose weights sum to `total` (the kernels' loops in
+/// `bsh_weighted_collect` and the resampled picks): with `w > 0`, `total`
+/// grows by `w` and each slot takes `item` with probability `w/total`
+/// ([`weighted_replace`]), one hash of `h` per slot.
+fn offer<T: Copy>(slots: &mut [T], item: T, w: f32, total: &mut f32, h: &mut u32) {
+    if w > 0.0 {
+        *total += w;
+        for s in slots.iter_mut() {
+            *h = pcg_hash(*h);
+            if weighted_replace(w, *total, xi_from_bits(*h)) {
+                *s = item;
+            }
+        }
     }
 }
 

@@ -163,3 +163,16 @@ impl GpuDirect {
             .collect())
     }
 }
+
+/// A unit cube centred at the origin, 12 triangles (occluders for the
+/// shadow tests).
+pub fn unit_cube() -> Vec<[Vec3; 3]> {
+    let mut v = Vec::new();
+    for axis in [Vec3::X, Vec3::Y, Vec3::Z, -Vec3::X, -Vec3::Y, -Vec3::Z] {
+        let q = slc_wgpu::glam::Quat::from_rotation_arc(Vec3::Z, axis);
+        let c = |x: f32, y: f32| q * Vec3::new(x, y, 0.5);
+        v.push([c(-0.5, -0.5), c(0.5, -0.5), c(0.5, 0.5)]);
+        v.push([c(-0.5, -0.5), c(0.5, 0.5), c(-0.5, 0.5)]);
+    }
+    v
+}

@@ -38,7 +38,7 @@ use slc_core::range::RangeParams;
 use slc_cpu::direct::{CpuShadows, DirectLights};
 use slc_scene::lights::{DirectSelection, LightSet};
 use slc_scene::occluders::{Instance, Occluders};
-use slc_tests::direct::GpuDirect;
+use slc_tests::direct::{GpuDirect, unit_cube};
 use slc_tests::{gpu, shared_data};
 use std::sync::{Arc, OnceLock};
 
@@ -86,24 +86,6 @@ struct Outcome {
 /// Boxes (a cube mesh in forty random placements, rotated and scaled) for
 /// the shadowed comparison.
 fn boxes(r: &mut Gen) -> Occluders {
-    let (lo, hi) = (Vec3::splat(-0.5), Vec3::splat(0.5));
-    let c = |x: f32, y: f32, z: f32| Vec3::new(x, y, z);
-    let v = [
-        c(lo.x, lo.y, lo.z),
-        c(hi.x, lo.y, lo.z),
-        c(hi.x, hi.y, lo.z),
-        c(lo.x, hi.y, lo.z),
-        c(lo.x, lo.y, hi.z),
-        c(hi.x, lo.y, hi.z),
-        c(hi.x, hi.y, hi.z),
-        c(lo.x, hi.y, hi.z),
-    ];
-    let quads =
-        [[0, 1, 2, 3], [4, 5, 6, 7], [0, 1, 5, 4], [3, 2, 6, 7], [0, 3, 7, 4], [1, 2, 6, 5]];
-    let cube: Vec<[Vec3; 3]> = quads
-        .iter()
-        .flat_map(|q| [[v[q[0]], v[q[1]], v[q[2]]], [v[q[0]], v[q[2]], v[q[3]]]])
-        .collect();
     // Forty boxes among the lights and points (one per mesh instance).
     let instances: Vec<Instance> = (0..40)
         .map(|_| Instance {
@@ -115,7 +97,7 @@ fn boxes(r: &mut Gen) -> Occluders {
             ),
         })
         .collect();
-    Occluders::new(&[cube], &instances).unwrap()
+    Occluders::new(&[unit_cube()], &instances).unwrap()
 }
 
 /// The normal offset of the shadowed comparison, × the distance to the eye

@@ -29,6 +29,7 @@ use slc_cpu::geometry::Geometry;
 use slc_scene::lights::LightSet;
 use slc_scene::occluders::{Instance, Occluders};
 use slc_scene::scene::Scene;
+use slc_tests::direct::unit_cube;
 use slc_tests::engine;
 use slc_tests::gpu;
 use slc_wgpu::passes::{
@@ -63,18 +64,6 @@ fn lights() -> Vec<Light> {
         .collect()
 }
 
-/// A unit cube centred at the origin, 12 triangles.
-fn cube() -> Vec<[Vec3; 3]> {
-    let mut v = Vec::new();
-    for axis in [Vec3::X, Vec3::Y, Vec3::Z, -Vec3::X, -Vec3::Y, -Vec3::Z] {
-        let q = Quat::from_rotation_arc(Vec3::Z, axis);
-        let c = |x: f32, y: f32| q * Vec3::new(x, y, 0.5);
-        v.push([c(-0.5, -0.5), c(0.5, -0.5), c(0.5, 0.5)]);
-        v.push([c(-0.5, -0.5), c(0.5, 0.5), c(-0.5, 0.5)]);
-    }
-    v
-}
-
 fn cube_at(centre: Vec3, size: f32, turn: f32) -> Affine3A {
     Affine3A::from_scale_rotation_translation(
         Vec3::splat(size),
@@ -104,7 +93,7 @@ fn setup(gpu: &GpuContext) -> Setup {
         points: (0..gb.position.len())
             .map(|i| gb.valid(i).then(|| (gb.position[i], gb.normal[i])))
             .collect(),
-        meshes: vec![scene.triangles.clone(), cube()],
+        meshes: vec![scene.triangles.clone(), unit_cube()],
         lights: lights(),
     }
 }
