@@ -51,6 +51,12 @@ crate::shared! {
     /// 2π.
     pub const TWO_PI: f32 = 6.283185307179586;
 
+    /// A squared range no point reaches past: given as both `r²` and
+    /// `r_t²`, the keep test keeps every light and its `1/p` is 1 (a
+    /// light's whole contribution, as resampling's reused targets weigh
+    /// it).
+    pub const UNRANGED: f32 = 1e38;
+
     /// Russian-roulette probability `p = min(r_t²/d², 1)`. Returns exactly 1
     /// when `d² ≤ r_t²` (so `d² = 0` never divides).
     pub fn rr_probability(rt2: f32, d2: f32) -> f32 {

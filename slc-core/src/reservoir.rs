@@ -12,6 +12,7 @@
 //! Random input is two 32-bit words per candidate; the index draw uses 64
 //! bits so its bias is below `n/2⁶⁴` even for `n` near `u32::MAX`.
 
+use crate::range::TWO_PI;
 use crate::wgsl::*;
 
 crate::shared! {
@@ -102,6 +103,53 @@ crate::shared! {
     /// wherever `c` is keeps the estimate unbiased).
     pub fn resample_target(c: vec3f) -> f32 {
         return (c.x + c.y + c.z) * 0.33333334;
+    }
+
+    /// A coordinate of a reused pick's point, on the 16-bit grid the
+    /// candidates draw it on: the midpoint `(k + ½)/2¹⁶` of cell `k`, the
+    /// high 16 bits of `bits` (a hash, or a stored pick's cells). A pick is
+    /// kept as its two cells, so the point a later frame shades is the one
+    /// drawn; the midpoint rule's error is `O(2⁻³²)`.
+    pub fn grid_coordinate(bits: u32) -> f32 {
+        return (to_f32(bits >> 16) + 0.5) / 65536.0;
+    }
+
+    /// A reused pick's two grid cells (see [`grid_coordinate`]) from two
+    /// hashes: `h1`'s high 16 bits high, `h2`'s high 16 bits low.
+    pub fn grid_cells(h1: u32, h2: u32) -> u32 {
+        return (h1 & 4294901760) | (h2 >> 16);
+    }
+
+    /// The offset of a neighbour drawn uniformly in a disk of radius `r`
+    /// by `u1, u2 ∈ [0, 1)`: `r √u1 (cos 2πu2, sin 2πu2)`.
+    pub fn disk_offset(r: f32, u1: f32, u2: f32) -> vec2f {
+        let a: f32 = TWO_PI * u2;
+        return vec2f(cos(a), sin(a)) * (r * sqrt(u1));
+    }
+
+    /// The weight a reused pick enters a combined reservoir with
+    /// (generalized RIS, Lin et al. 2022, eq. 9, with the generalized
+    /// balance heuristic): its domain's share `own / all` of the targets
+    /// `all = Σₖ cₖ p̂ₖ(y)` of every domain combined, at `y` (`own` its own
+    /// domain's term `c p̂(y)`), times the target here `p_hat` = `p̂(y)` and its
+    /// unbiased contribution weight `w`. 0 where `all` is 0 (no domain
+    /// could have drawn `y`). The shares sum to 1 over the domains that
+    /// can draw `y`, so the combination is unbiased whatever each domain's
+    /// confidence `c`.
+    pub fn gris_weight(own: f32, all: f32, p_hat: f32, w: f32) -> f32 {
+        if !(all > 0.0) {
+            return 0.0;
+        }
+        return own / all * p_hat * w;
+    }
+
+    /// The unbiased contribution weight of a combined reservoir's pick of
+    /// target `p_hat`: `Σw / p̂(y)`, 0 without a pick.
+    pub fn gris_contribution_weight(w_sum: f32, p_hat: f32) -> f32 {
+        if !(p_hat > 0.0) {
+            return 0.0;
+        }
+        return w_sum / p_hat;
     }
 
     /// Walker's alias method's second choice: the table column `column`
@@ -223,6 +271,29 @@ impl<const K: usize> WeightedReservoir<K> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn reuse_grid_and_weights() {
+        // The grid's cells are midpoints inside (0, 1), kept bit for bit
+        // through a stored pick's two cells.
+        assert_eq!(grid_coordinate(0), 0.5 / 65536.0);
+        assert_eq!(grid_coordinate(u32::MAX), 1.0 - 0.5 / 65536.0);
+        let cells = grid_cells(0xabcd_1234, 0x5678_9999);
+        assert_eq!(cells, 0xabcd_5678);
+        assert_eq!(grid_coordinate(cells), grid_coordinate(0xabcd_1234));
+        assert_eq!(grid_coordinate(cells << 16), grid_coordinate(0x5678_9999));
+        // The balance heuristic's shares sum to 1 over the domains.
+        let terms = [0.3f32, 1.2, 0.5];
+        let all: f32 = terms.iter().sum();
+        let shares: f32 = terms.iter().map(|&t| gris_weight(t, all, 1.0, 1.0)).sum();
+        assert!((shares - 1.0).abs() < 1e-6);
+        assert_eq!(gris_weight(1.0, 0.0, 1.0, 1.0), 0.0, "no domain can draw it");
+        assert_eq!(gris_contribution_weight(3.0, 0.0), 0.0);
+        assert_eq!(gris_contribution_weight(3.0, 2.0), 1.5);
+        // Disk offsets stay inside the radius and reach its edge.
+        let edge = disk_offset(4.0, 0.999_999, 0.25);
+        assert!(edge.length() <= 4.0 && edge.length() > 3.99 && edge.y > 3.99);
+    }
 
     #[test]
     fn mul_hi_matches_u64() {

@@ -98,6 +98,14 @@ crate::shared! {
         return pcg_hash(stream ^ PICK_STREAM);
     }
 
+    /// The stream that draws which previous-frame pixels a point's reuse
+    /// reads (`which = 0`) and which reused pick each of its reservoirs
+    /// keeps (`which = 1`), independent of its traversal's and picks':
+    /// `h(h(stream ⊕ PICK_STREAM) + 1 + which)`.
+    pub fn reuse_stream(stream: u32, which: u32) -> u32 {
+        return pcg_hash(pick_stream(stream) + 1 + which);
+    }
+
     /// Random stream of the path through pixel `pixel` in pass
     /// `pass_index`: its camera jitter, BSDF samples and roulette,
     /// `point_stream(seed, pixel, pass_index + PICK_STREAM)` (mod 2³²; apart

@@ -340,6 +340,12 @@ pub fn bindings(kernel: Kernel, f: &Features) -> Vec<Binding> {
                 v.push(b(1, 6, "geo_nodes", Resource::Read("array<GpuGeoNode>"), "the occluders' BVH nodes", "host (slc-scene's `Occluders`)"));
                 v.push(b(1, 7, "geo_tris", Resource::Read("array<GpuTriangle>"), "the occluders' triangles in leaf order", "host"));
             }
+            if f.reuse_domains > 0 {
+                v.push(uniform(7, "reuse", "ReuseParams", true, "the previous view-projection and eye, the confidence cap, the neighbours' radius"));
+                v.push(b(1, 8, "lights_prev", Resource::Read("array<GpuLight>"), "the previous record's lights", "copied from `lights` after each record"));
+                v.push(b(1, 9, "reuse_prev", Resource::Read("array<ReusePixel>"), "the previous record's reservoirs and surfaces", "`direct_light` (the previous record)"));
+                v.push(b(1, 10, "reuse_next", Resource::ReadWrite("array<ReusePixel>"), "this record's reservoirs and surfaces", "this kernel"));
+            }
             return v;
         }
         Kernel::PtConnect => {

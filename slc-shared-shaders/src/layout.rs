@@ -339,6 +339,72 @@ slc_core::shared! {
         pub pad2: u32,
     }
 
+    /// Uniforms of `direct_light`'s reuse (its resampled picks reused
+    /// across frames and pixels), one slot per record: the previous
+    /// frame's view-projection (where a point was) and eye, the cap on a
+    /// reservoir's confidence, the spatial neighbours' disk, the visibility
+    /// reuse, 96 bytes.
+    pub struct ReuseParams {
+        /// Column 0 of the previous frame's view-projection.
+        pub c0: vec4f,
+        /// Column 1.
+        pub c1: vec4f,
+        /// Column 2.
+        pub c2: vec4f,
+        /// Column 3.
+        pub c3: vec4f,
+        /// The previous frame's eye.
+        pub prev_eye: vec3f,
+        /// The largest confidence `M` a reservoir keeps (in frames).
+        pub max_confidence: f32,
+        /// 1 where the previous frame left reservoirs, else 0.
+        pub has_history: u32,
+        /// Radius of the disk the neighbours are drawn in, in pixels.
+        pub radius: f32,
+        /// 1: a pick found occluded keeps no weight for the next frame
+        /// (visibility reuse), else 0.
+        pub visibility: u32,
+        /// Padding.
+        pub pad0: u32,
+    }
+
+    /// The surface a pixel's reused reservoirs were drawn for, as the next
+    /// frame evaluates their targets at it, 48 bytes: position, confidence
+    /// `m` (0: no surface), unit normal, base colour and metallic
+    /// (`pack4x8unorm`), perceptual roughness and Bevy's reflectance
+    /// (`pack2x16unorm`; glTF materials: roughness only).
+    pub struct ReuseSurface {
+        /// World position.
+        pub x: vec3f,
+        /// Confidence (reservoir inputs it stands for, capped).
+        pub m: f32,
+        /// Unit normal.
+        pub n: vec3f,
+        /// Base colour (rgb) and metallic (a), 8-bit unorm.
+        pub base: u32,
+        /// Perceptual roughness (low) and reflectance (high), 16-bit unorm.
+        pub rough: u32,
+        /// Padding.
+        pub pad0: u32,
+        /// Padding.
+        pub pad1: u32,
+        /// Padding.
+        pub pad2: u32,
+    }
+
+    /// One reused pick, 12 bytes: the light, its sampled point's `(u1, u2)`
+    /// as two 16-bit grid cells (the candidates draw them on that grid:
+    /// slc-core's `grid_coordinate`) and the unbiased contribution weight
+    /// `W` (0: no pick).
+    pub struct ReuseSlot {
+        /// Light index.
+        pub light: u32,
+        /// `u1`'s cell in the high 16 bits, `u2`'s in the low.
+        pub u: u32,
+        /// Unbiased contribution weight.
+        pub w: f32,
+    }
+
     /// Uniforms of `primary_direct` and `frame_compose`.
     pub struct ImageParams {
         /// Eye position (depth = distance from it).

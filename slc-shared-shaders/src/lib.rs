@@ -451,6 +451,12 @@ pub struct Features {
     /// current minus previous UV in xy) instead of the previous
     /// view-projection.
     pub motion_vectors: bool,
+    /// `direct_light`'s reuse (resampled picks only): the previous-frame
+    /// pixels each pixel combines its reservoirs with, the reprojected one
+    /// and `reuse_domains − 1` neighbours (1..=8); 0: no reuse. Binds the
+    /// `reuse` uniform (0.7) and `lights_prev`, `reuse_prev` and
+    /// `reuse_next` (1.8–1.10).
+    pub reuse_domains: u32,
 }
 
 impl Default for Features {
@@ -473,6 +479,7 @@ impl Default for Features {
             glossy: false,
             counters: false,
             motion_vectors: false,
+            reuse_domains: 0,
         }
     }
 }
@@ -621,6 +628,15 @@ pub fn check(kernel: Kernel, f: &Features) -> Result<(), ShaderError> {
             if !(1..=16).contains(&f.tile_size) {
                 return bad(format!("direct_light: tile {} must be in 1..=16", f.tile_size));
             }
+            if f.reuse_domains > 0 && f.selection != Selection::Resampled {
+                return bad(format!(
+                    "direct_light reuses resampled picks only, not {:?} picks",
+                    f.selection
+                ));
+            }
+            if f.reuse_domains > 8 {
+                return bad(format!("direct_light: {} reused pixels, at most 8", f.reuse_domains));
+            }
         }
         Kernel::BshReservoir | Kernel::PtConnect | Kernel::PtExtend if f.lights.is_empty() => {
             return bad(format!("{} needs at least one light type", kernel.name()));
@@ -697,6 +713,8 @@ pub fn generate_module(kernel: Kernel, features: &Features) -> Result<Generated,
         glossy => features.glossy,
         counters => features.counters,
         motion => features.motion_vectors,
+        reuse => features.reuse_domains > 0,
+        reuse_domains => features.reuse_domains,
         pbr => match features.direct_output { DirectOutput::Irradiance => "none", DirectOutput::Radiance => "radiance", DirectOutput::Split => "split", DirectOutput::BevyRadiance => "bevy" },
         surface => match features.surface { SurfaceSource::Position => "position", SurfaceSource::Depth => "depth", SurfaceSource::R32Depth => "r32" },
         bindings => bindings::declarations(&bindings::bindings(kernel, features)),

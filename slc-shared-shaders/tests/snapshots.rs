@@ -225,6 +225,17 @@ fn variants() -> Vec<(&'static str, Kernel, Features)> {
                 ..Features::default()
             },
         ),
+        (
+            "direct_light-point-triangle-resampled-bevy-reuse",
+            Kernel::DirectLight,
+            Features {
+                lights: LightTypes::parse("point,triangle").unwrap(),
+                selection: Selection::Resampled,
+                direct_output: DirectOutput::BevyRadiance,
+                reuse_domains: 3,
+                ..Features::default()
+            },
+        ),
     ]
 }
 

@@ -409,7 +409,13 @@ impl LightBuffers {
             n: n as u32,
             peaks_host: lights.iter().map(Light::peak).collect(),
             types: light_set(lights),
-            lights: storage(gpu, "lights", bytemuck::cast_slice(&gpu_lights), dst),
+            // COPY_SRC: the direct pass's reuse keeps the previous record's lights.
+            lights: storage(
+                gpu,
+                "lights",
+                bytemuck::cast_slice(&gpu_lights),
+                dst | wgpu::BufferUsages::COPY_SRC,
+            ),
             table_buf,
             cones,
             peaks: storage(gpu, "light peaks", bytemuck::cast_slice(&pack_peaks(lights)), dst),

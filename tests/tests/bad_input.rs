@@ -244,9 +244,9 @@ mod engine_misuse {
     use slc_shared_shaders::layout::GpuVplRecord;
     use slc_tests::engine::{self, texture, upload};
     use slc_wgpu::passes::{
-        Culling, DirectInputs, DirectPass, DirectPassDesc, DirectSettings, GBuffer, IndirectInputs,
-        IndirectPass, IndirectPassDesc, IndirectSettings, Surface, SurfaceDesc, VplInput,
-        VplSourceDesc, vpl_buffer,
+        Culling, DirectInputs, DirectPass, DirectPassDesc, DirectReuse, DirectSelection,
+        DirectSettings, GBuffer, IndirectInputs, IndirectPass, IndirectPassDesc, IndirectSettings,
+        Surface, SurfaceDesc, VplInput, VplSourceDesc, vpl_buffer,
     };
     use slc_wgpu::{GpuContext, GpuError, LightSet};
 
@@ -626,6 +626,54 @@ mod engine_misuse {
         gpu.queue.submit([enc.finish()]);
         gpu.take_errors().unwrap();
     }
+
+    /// The direct pass's reuse: refused (before the device is touched)
+    /// for picks other than resampled ones, 8 neighbours, a NaN radius or a
+    /// confidence cap below 1; a record of a position surface without its
+    /// view-projection is refused and records nothing; with it, two frames
+    /// come out finite.
+    pub fn direct_reuse_settings() {
+        let Some(gpu) = slc_tests::gpu() else { return };
+        let reuse = DirectReuse::default();
+        let resampled = DirectSelection::Resampled { k: 4 };
+        let desc =
+            |selection, reuse| DirectPassDesc { selection, reuse: Some(reuse), ..f32_desc() };
+        let refused = |d: DirectPassDesc, what: &str| {
+            let e = DirectPass::new(gpu, &lights(25), &d).err().expect("refused");
+            assert!(matches!(&e, GpuError::Setting(m) if m.contains(what)), "{e}");
+        };
+        refused(desc(DirectSelection::Weighted { k: 4 }, reuse), "Resampled");
+        refused(desc(resampled, DirectReuse { neighbours: 8, ..reuse }), "neighbours");
+        refused(desc(resampled, DirectReuse { radius: f32::NAN, ..reuse }), "radius");
+        refused(desc(resampled, DirectReuse { max_confidence: 0.5, ..reuse }), "confidence");
+        let mut pass = DirectPass::new(gpu, &lights(25), &desc(resampled, reuse)).unwrap();
+        let inp = inputs(gpu);
+        let out = engine::output(gpu, (W, H));
+        let view = out.create_view(&Default::default());
+        let g = GBuffer {
+            surface: Surface::Position(&inp.position),
+            normal: &inp.normal,
+            eye: inp.eye,
+        };
+        let settings = DirectSettings {
+            culling: Culling::Stochastic(RangeParams::new(0.01, 1.0).unwrap()),
+            seed: 1,
+            frame: 0,
+        };
+        let mut enc = gpu.device.create_command_encoder(&Default::default());
+        let e = pass.record(&mut enc, &DirectInputs::new(g, &view), &settings).unwrap_err();
+        assert!(matches!(e, GpuError::Binding { name: "view_projection", .. }), "{e}");
+        let vp = Scene::cornell_box().camera.view_projection(W, H, 0.01, 100.0);
+        let inputs = DirectInputs { view_projection: Some(vp), ..DirectInputs::new(g, &view) };
+        for frame in 0..2 {
+            let mut enc = gpu.device.create_command_encoder(&Default::default());
+            pass.record(&mut enc, &inputs, &DirectSettings { frame, ..settings }).unwrap();
+            let img = engine::submit_and_read(gpu, enc, &out);
+            assert!(img.iter().flatten().all(|v| v.is_finite()), "frame {frame} not finite");
+            assert!(img.iter().any(|p| p[0] > 0.0), "frame {frame} dark");
+        }
+        gpu.take_errors().unwrap();
+    }
 }
 
 use engine_misuse::*;
@@ -639,4 +687,5 @@ slc_tests::harness!(
     Gpu: seventeen_records_in_one_submission,
     Gpu: overflowing_lights,
     Gpu: depth_conventions_and_the_view,
+    Gpu: direct_reuse_settings,
 );

@@ -5,6 +5,16 @@
 
 use glam::Vec3;
 
+/// Rust spelling of WGSL's `vec2f`.
+#[allow(non_camel_case_types)]
+pub type vec2f = glam::Vec2;
+
+/// WGSL's `vec2f(x, y)` constructor.
+#[inline]
+pub fn vec2f(x: f32, y: f32) -> glam::Vec2 {
+    glam::Vec2::new(x, y)
+}
+
 /// Rust spelling of WGSL's `vec3f`.
 #[allow(non_camel_case_types)]
 pub type vec3f = Vec3;

@@ -57,17 +57,23 @@ fn connect(li: u32, x: vec3f, n: vec3f, ng: vec3f, s: f32, w_res: f32, u1: f32, 
 /// [`connect`], casting the shadow ray only where `trace` says (without
 /// it, the unshadowed contribution: what a resampled pick is weighed by).
 fn connect_traced(li: u32, x: vec3f, n: vec3f, ng: vec3f, s: f32, w_res: f32, u1: f32, u2: f32, eps: f32, trace: bool) -> Connection {
+    return connect_record(lights[li], x, n, ng, s * r2[li], s * rt2[li], w_res, u1, u2, eps, trace);
+}
+
+/// [`connect_traced`] for the light record `l` with the ranges² `r2`
+/// (the RR test) and `rt2` (its `1/p`) given: both slc-core's `UNRANGED`
+/// for the light's whole contribution, no roulette.
+fn connect_record(l: GpuLight, x: vec3f, n: vec3f, ng: vec3f, r2: f32, rt2: f32, w_res: f32, u1: f32, u2: f32, eps: f32, trace: bool) -> Connection {
     var c: Connection;
     c.e = vec3f(0.0);
-    let l = lights[li];
     c.y = light_point(l, u1, u2);
-    c.cos_x = connection_cosine(x, c.y, n, ng, s * r2[li]);
+    c.cos_x = connection_cosine(x, c.y, n, ng, r2);
     // The shadow ray leaves along the geometric normal `ng`.
     if c.cos_x <= 0.0 || (trace && occluded(x + ng * eps, c.y)) {
         return c;
     }
     let v = x - c.y;
     let d2 = dot(v, v);
-    c.e = light_intensity(l, v / sqrt(d2)) * connection_factor(c.cos_x, d2, s * rt2[li], w_res);
+    c.e = light_intensity(l, v / sqrt(d2)) * connection_factor(c.cos_x, d2, rt2, w_res);
     return c;
 }

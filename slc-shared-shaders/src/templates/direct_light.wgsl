@@ -18,7 +18,7 @@ fn occluded(a: vec3f, b: vec3f) -> bool {
 {% endif %}
 {% include "gbuffer_read.wgsl" %}
 // The engine's direct pass: at every G-buffer pixel, the lights whose random
-// range reaches it (BSH traversal), {% if selection == "weighted" %}{{ k }} importance-weighted picks among them{% elif selection == "resampled" %}{{ k }} picks resampled from them in proportion to their unshadowed contributions{% elif selection == "all" %}every one of them (exact given ξ){% else %}{{ k }} uniform picks among them (Algorithm R){% endif %},
+// range reaches it (BSH traversal), {% if selection == "weighted" %}{{ k }} importance-weighted picks among them{% elif selection == "resampled" %}{{ k }} picks resampled from them in proportion to their unshadowed contributions{% if reuse %} and reused across frames and pixels{% endif %}{% elif selection == "all" %}every one of them (exact given ξ){% else %}{{ k }} uniform picks among them (Algorithm R){% endif %},
 // each sampled (a point on a triangle), RR-tested at that point with its own
 // range, {% if shadows %}shadowed by one ray through the occluders' BVH (leaving the surface
 // `view.shadow_offset` × the eye distance along the normal), {% endif %}and weighted by 1/p and its selection weight. Output: {% if pbr == "radiance" %}outgoing radiance
@@ -55,13 +55,17 @@ fn shade_pick(li: u32, x: vec3f, n: vec3f, r: vec3f, rl: vec4f, m: Material, w: 
 
 /// [`shade_pick`], shadowed only where `trace` says.
 fn shade_pick_traced(li: u32, x: vec3f, n: vec3f, r: vec3f, rl: vec4f, m: Material, w: f32, u1: f32, u2: f32, eps: f32, trace: bool) -> Shaded {
-    var s: Shaded;
 {% if pbr != "none" %}
     let s2 = light_range_scale(li, x, r, rl);
 {% else %}
     let s2 = 1.0;
 {% endif %}
-    let c = connect_traced(li, x, n, n, s2, w, u1, u2, eps, trace);
+    return shade_connection(connect_traced(li, x, n, n, s2, w, u1, u2, eps, trace), x, n, m);
+}
+
+/// What connection `c` adds at `x` (normal `n`) under material `m`.
+fn shade_connection(c: Connection, x: vec3f, n: vec3f, m: Material) -> Shaded {
+    var s: Shaded;
     s.e = c.e;
     s.diffuse = vec3f(0.0);
     s.specular = vec3f(0.0);
@@ -77,6 +81,17 @@ fn shade_pick_traced(li: u32, x: vec3f, n: vec3f, r: vec3f, rl: vec4f, m: Materi
     }
 {% endif %}
     return s;
+}
+
+/// The material at a G-buffer texel: base colour, metallic, perceptual
+/// roughness and (Bevy) reflectance as the textures give them, seen from
+/// direction `v`.
+fn material_of(base: vec3f, metallic: f32, roughness: f32, reflectance: f32, v: vec3f) -> Material {
+{% if pbr == "bevy" %}
+    return Material(base, saturate(metallic), bevy_alpha(roughness), v, roughness, reflectance);
+{% else %}
+    return Material(base, saturate(metallic), ggx_alpha(saturate(roughness)), v, roughness, 0.0);
+{% endif %}
 }
 
 fn add(a: Shaded, b: Shaded) -> Shaded {
@@ -110,6 +125,107 @@ fn output_of(s: Shaded) -> vec3f {
 {% endif %}
 }
 
+{% if reuse %}
+// ---- Reuse (ReSTIR DI's temporal and spatial reuse, Bitterli et al.
+// 2020, as generalized RIS, Lin et al. 2022): each of the K slots is a
+// reservoir whose pick carries an unbiased contribution weight W. This
+// frame's candidates are combined with the slots of previous-frame pixels
+// (the reprojected one and DOMAINS − 1 around it) under the
+// generalized balance heuristic: a pick's share is its domain's confidence
+// times its target at that domain's surface (previous lights), over the
+// sum for every domain. Every target is the pick's whole unshadowed
+// contribution (no range, no roulette), so each domain can draw every
+// light: the combination is unbiased, and the culling's noise averages
+// over the reused frames.
+
+/// A pixel's reservoirs as the next frame reads them.
+struct ReusePixel {
+    surface: ReuseSurface,
+    slots: array<ReuseSlot, K>,
+}
+
+/// The previous-frame pixels one pixel reuses: the reprojected one and
+/// its neighbours.
+const DOMAINS: u32 = {{ reuse_domains }}u;
+
+/// A previous-frame pixel whose reservoirs are reused: where in
+/// `reuse_prev`, its surface and material, its confidence.
+struct Domain {
+    pixel: u32,
+    x: vec3f,
+    n: vec3f,
+    m: Material,
+    c: f32,
+}
+
+/// Target of the pick of light record `l` at grid cells `cells` for the
+/// surface `x` (normal `n`, material `m`): the channel mean of its whole
+/// unshadowed contribution.
+fn reuse_target(l: GpuLight, cells: u32, x: vec3f, n: vec3f, m: Material) -> f32 {
+    let c = connect_record(l, x, n, n, UNRANGED, UNRANGED, 1.0, grid_coordinate(cells), grid_coordinate(cells << 16u), 0.0, false);
+    return resample_target(output_of(shade_connection(c, x, n, m)));
+}
+
+/// The surface record of `x` (normal `n`, material `m`) with confidence `c`.
+fn reuse_surface(x: vec3f, n: vec3f, m: Material, c: f32) -> ReuseSurface {
+    return ReuseSurface(x, c, n, pack4x8unorm(vec4f(m.base, m.metallic)), pack2x16unorm(vec2f(saturate(m.roughness), saturate(m.reflectance))), 0u, 0u, 0u);
+}
+
+/// The material a surface record keeps, seen from `eye`.
+fn reuse_material(s: ReuseSurface, eye: vec3f) -> Material {
+    let b = unpack4x8unorm(s.base);
+    let r = unpack2x16unorm(s.rough);
+    return material_of(b.xyz, b.w, r.x, r.y, normalize(eye - s.x));
+}
+
+/// Whether two reused picks are the same sample (a light without area has
+/// one point for every grid cell).
+fn same_pick(la: u32, ca: u32, lb: u32, cb: u32) -> bool {
+    return la == lb && (ca == cb || lights[la].kind != LIGHT_TRIANGLE);
+}
+
+/// The previous-frame pixels pixel `x` (normal `n`, distance `d` from the
+/// eye) reuses, drawn from stream `h`: the one it reprojects to, then
+/// `DOMAINS − 1` in a disk of `reuse.radius` pixels around it, each
+/// kept where it saw the same surface, once.
+fn reuse_domains(x: vec3f, n: vec3f, d: f32, h: u32, doms: ptr<function, array<Domain, DOMAINS>>) -> u32 {
+    var nd = 0u;
+    if reuse.has_history != 1u {
+        return 0u;
+    }
+    let q = reproject(reuse.c0, reuse.c1, reuse.c2, reuse.c3, x, f32(view.width), f32(view.height));
+    if q.z <= 0.0 {
+        return 0u;
+    }
+    var hr = h;
+    for (var j = 0u; j < DOMAINS; j++) {
+        var p = q.xy;
+        if j > 0u {
+            hr = pcg_hash(hr);
+            let u1 = xi_from_bits(hr);
+            hr = pcg_hash(hr);
+            p += disk_offset(reuse.radius, u1, xi_from_bits(hr));
+        }
+        let t = vec2i(round(p));
+        if t.x < 0 || t.y < 0 || t.x >= i32(view.width) || t.y >= i32(view.height) {
+            continue;
+        }
+        let pixel = u32(t.y) * view.width + u32(t.x);
+        var seen = false;
+        for (var k = 0u; k < nd; k++) {
+            seen = seen || (*doms)[k].pixel == pixel;
+        }
+        let s = reuse_prev[pixel].surface;
+        if seen || !(s.m > 0.0) || !history_matches(n, s.n, x, dot(s.n, s.x), d) {
+            continue;
+        }
+        (*doms)[nd] = Domain(pixel, s.x, s.n, reuse_material(s, reuse.prev_eye), min(s.m, reuse.max_confidence));
+        nd += 1u;
+    }
+    return nd;
+}
+{% endif %}
+
 @compute @workgroup_size({{ tile }}, {{ tile }})
 fn main(@builtin(global_invocation_id) gid: vec3u) {
     if gid.x >= view.width || gid.y >= view.height {
@@ -124,6 +240,9 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
 {% if pbr == "split" %}
         textureStore(specular_tex, texel, vec4f(0.0));
 {% endif %}
+{% if reuse %}
+        reuse_next[gid.y * view.width + gid.x].surface.m = 0.0;
+{% endif %}
         return;
     }
     let x = s.xyz;
@@ -137,14 +256,12 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     var r = n;
 {% if pbr != "none" %}
     let mr = textureLoad(metal_rough_tex, texel, 0);
+    m = material_of(textureLoad(base_color_tex, texel, 0).xyz, mr.z, mr.y, mr.w, normalize(view.eye - x));
 {% if pbr == "bevy" %}
     // Selection sees Bevy's material through the glTF lobe of the same F0
     // (any importance keeps the estimate unbiased).
-    let f0_d = bevy_f0(mr.w);
-    m = Material(textureLoad(base_color_tex, texel, 0).xyz, saturate(mr.z), bevy_alpha(mr.y), normalize(view.eye - x), mr.y, mr.w);
-    lobe = receiver_lobe(m.base, m.metallic, vec3f(f0_d), 1.0, m.alpha, dot(n, m.v));
+    lobe = receiver_lobe(m.base, m.metallic, vec3f(bevy_f0(mr.w)), 1.0, m.alpha, dot(n, m.v));
 {% else %}
-    m = Material(textureLoad(base_color_tex, texel, 0).xyz, saturate(mr.z), ggx_alpha(saturate(mr.y)), normalize(view.eye - x), mr.y, 0.0);
     lobe = receiver_lobe(m.base, m.metallic, view.f0_d, view.f90_d, m.alpha, dot(n, m.v));
 {% endif %}
     r = mirror_dir(n, m.v);
@@ -178,16 +295,22 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     let count = picks.n;
 {% elif selection == "resampled" %}
     // Resampled importance sampling over every light in range: each is
-    // sampled (its point from the pick stream) and evaluated without a
+    // sampled (its point from the pick stream{% if reuse %}, on the 16-bit grid{% endif %}) and evaluated without a
     // shadow ray, and K independent one-slot weighted reservoirs (the
     // seed's stream) keep candidate j with probability p_j / P, p_j its
-    // resample_target and P their sum. A kept candidate adds its
+    // resample_target and P their sum. {% if reuse %}Slot k's pick then has the unbiased
+    // contribution weight P / p̂(y), p̂ its whole unranged target (p_j is
+    // p̂ times the roulette's 1/p), and enters the reuse.{% else %}A kept candidate adds its
     // contribution shadowed, weighted P / (K p_j): the expectation is the
     // shadowed sum. The rays go only where light arrives unshadowed; a
-    // candidate kept by m slots casts one ray, weighted m times.
+    // candidate kept by m slots casts one ray, weighted m times.{% endif %}
+
     var slot_light: array<u32, K>;
     var slot_u: array<vec2f, K>;
     var slot_p: array<f32, K>;
+{% if reuse %}
+    var slot_cells: array<u32, K>;
+{% endif %}
     var total = 0.0;
     var count = 0u;
     var hc = seed;
@@ -195,9 +318,16 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
         count += 1u;
         let li = bsh_nodes[b].light;
         h = pcg_hash(h);
+{% if reuse %}
+        let h1 = h;
+        h = pcg_hash(h);
+        let cells = grid_cells(h1, h);
+        let u = vec2f(grid_coordinate(h1), grid_coordinate(h));
+{% else %}
         let u1 = xi_from_bits(h);
         h = pcg_hash(h);
         let u = vec2f(u1, xi_from_bits(h));
+{% endif %}
         let p = resample_target(output_of(shade_pick_traced(li, x, n, r, rl, m, 1.0, u.x, u.y, eps, false)));
         if p > 0.0 {
             total += p;
@@ -207,10 +337,105 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
                     slot_light[q] = li;
                     slot_u[q] = u;
                     slot_p[q] = p;
+{% if reuse %}
+                    slot_cells[q] = cells;
+{% endif %}
                 }
             }
         }
     }
+{% if reuse %}
+    // Each slot combines this frame's pick (confidence 1) with the same
+    // slot of every reused previous-frame pixel.
+    let pixel = gid.y * view.width + gid.x;
+    var doms: array<Domain, DOMAINS>;
+    let nd = reuse_domains(x, n, length(view.eye - x), reuse_stream(seed, 0u), &doms);
+    var confidence = 1.0;
+    for (var k = 0u; k < nd; k++) {
+        confidence += doms[k].c;
+    }
+    var hs = reuse_stream(seed, 1u);
+    var fin_light: array<u32, K>;
+    var fin_cells: array<u32, K>;
+    var fin_w: array<f32, K>;
+    for (var q = 0u; q < K; q++) {
+        var w_sum = 0.0;
+        var chosen = 0u;
+        var chosen_cells = 0u;
+        var chosen_target = 0.0;
+        for (var j = 0u; j <= nd; j++) {
+            var li = slot_light[q];
+            var cells = slot_cells[q];
+            var w_in = total;
+            if j > 0u {
+                let s = reuse_prev[doms[j - 1u].pixel].slots[q];
+                li = s.light;
+                cells = s.u;
+                w_in = s.w;
+            }
+            if !(w_in > 0.0) || li >= arrayLength(&lights) {
+                continue;
+            }
+            let here = reuse_target(lights[li], cells, x, n, m);
+            if !(here > 0.0) {
+                continue;
+            }
+            if j == 0u {
+                w_in = total / here;
+            }
+            var own = here;
+            var all = here;
+            for (var k = 0u; k < nd; k++) {
+                let t = doms[k].c * reuse_target(lights_prev[li], cells, doms[k].x, doms[k].n, doms[k].m);
+                all += t;
+                if k + 1u == j {
+                    own = t;
+                }
+            }
+            let w = gris_weight(own, all, here, w_in);
+            w_sum += w;
+            hs = pcg_hash(hs);
+            if w > 0.0 && weighted_replace(w, w_sum, xi_from_bits(hs)) {
+                chosen = li;
+                chosen_cells = cells;
+                chosen_target = here;
+            }
+        }
+        fin_light[q] = chosen;
+        fin_cells[q] = chosen_cells;
+        fin_w[q] = gris_contribution_weight(w_sum, chosen_target);
+    }
+    // The K picks, shadowed, each weighted W / K; the slots holding the
+    // same sample cast one ray with their weights summed. With visibility
+    // reuse a slot whose pick is occluded here keeps no pick for the next
+    // frame.
+    var visible: array<bool, K>;
+    for (var k = 0u; k < K; k++) {
+        var w = fin_w[k];
+        var first = w > 0.0;
+        for (var j = 0u; j < K; j++) {
+            if j != k && fin_w[j] > 0.0 && same_pick(fin_light[j], fin_cells[j], fin_light[k], fin_cells[k]) {
+                first = first && j > k;
+                w += fin_w[j];
+            }
+        }
+        if first {
+            let c = connect_record(lights[fin_light[k]], x, n, n, UNRANGED, UNRANGED, w / f32(K), grid_coordinate(fin_cells[k]), grid_coordinate(fin_cells[k] << 16u), eps, true);
+            let shaded = shade_connection(c, x, n, m);
+            t = add(t, shaded);
+            for (var j = k; j < K; j++) {
+                if same_pick(fin_light[j], fin_cells[j], fin_light[k], fin_cells[k]) {
+                    visible[j] = resample_target(output_of(shaded)) > 0.0;
+                }
+            }
+        }
+    }
+    for (var q = 0u; q < K; q++) {
+        let keep = reuse.visibility == 0u || visible[q];
+        reuse_next[pixel].slots[q] = ReuseSlot(fin_light[q], fin_cells[q], select(0.0, fin_w[q], keep));
+    }
+    reuse_next[pixel].surface = reuse_surface(x, n, m, min(confidence, reuse.max_confidence));
+{% else %}
     if total > 0.0 {
         for (var k = 0u; k < K; k++) {
             // A light is one candidate with one sampled point: the slots
@@ -222,6 +447,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
             }
         }
     }
+{% endif %}
 {% elif selection == "all" %}
     var count = 0u;
     for (var b = bsh_next_leaf_lobe(BSH, bsh_first(BSH), x, r, rl); b != BSH_NONE; b = bsh_next_leaf_lobe(BSH, bsh_nodes[b].next, x, r, rl)) {

@@ -77,6 +77,7 @@ const MAP_ORTHOGRAPHIC: u32 = 2u;
 const XI_STEP: f32 = 0.000000059604645f;
 const PICK_STREAM: u32 = 2654435769u;
 const TWO_PI: f32 = 6.2831855f;
+const UNRANGED: f32 = 100000000000000000000000000000000000000f;
 const CULL_RADIUS_SCALE: f32 = 1.000001f;
 const SPHERE_PAD: f32 = 0.00000047683716f;
 const SPHERE_HUGE: f32 = 340282350000000000000000000000000000000f;
@@ -120,9 +121,9 @@ var<storage> bsh_nodes: array<BshNode>;
 @group(0) @binding(3) 
 var<storage> lights: array<GpuLight>;
 @group(0) @binding(5) 
-var<storage> r2_2: array<f32>;
+var<storage> r2_3: array<f32>;
 @group(0) @binding(4) 
-var<storage> rt2_2: array<f32>;
+var<storage> rt2_3: array<f32>;
 @group(0) @binding(0) 
 var<uniform> params: ShadeParams;
 @group(0) @binding(1) 
@@ -658,15 +659,15 @@ fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
     let _e14 = ray_inverse3_(d_4);
     loop {
         let _e21 = node_2;
-        let n_8 = geo_nodes[_e21];
+        let n_9 = geo_nodes[_e21];
         let _e27 = hit.t;
-        let _e28 = ray_aabb(o_2, _e14, n_8.bmin, n_8.bmax, _e27);
+        let _e28 = ray_aabb(o_2, _e14, n_9.bmin, n_9.bmax, _e27);
         if (_e28 >= 0f) {
-            if (n_8.count > 0u) {
-                i_1 = n_8.first;
+            if (n_9.count > 0u) {
+                i_1 = n_9.first;
                 loop {
                     let _e36 = i_1;
-                    if (_e36 < (n_8.first + n_8.count)) {
+                    if (_e36 < (n_9.first + n_9.count)) {
                     } else {
                         break;
                     }
@@ -694,11 +695,11 @@ fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
                 let _e60 = sp;
                 if (_e60 < 64u) {
                     let _e63 = sp;
-                    stack[_e63] = (n_8.first + 1u);
+                    stack[_e63] = (n_9.first + 1u);
                     let _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_2 = n_8.first;
+                node_2 = n_9.first;
                 continue;
             }
         }
@@ -871,52 +872,57 @@ fn bsh_collect(x_11: vec3<f32>, r_5: vec3<f32>, rl_5: vec4<f32>, seed_1: u32) ->
     return _e49;
 }
 
-fn connect_traced(li: u32, x_12: vec3<f32>, n_6: vec3<f32>, ng_1: vec3<f32>, s_1: f32, w_res: f32, u1_1: f32, u2_1: f32, eps: f32, trace_1: bool) -> Connection {
+fn connect_record(l_2: GpuLight, x_12: vec3<f32>, n_6: vec3<f32>, ng_1: vec3<f32>, r2_2: f32, rt2_2: f32, w_res: f32, u1_1: f32, u2_1: f32, eps: f32, trace_1: bool) -> Connection {
     var c_4: Connection;
     var local_10: bool;
     var local_11: bool;
 
     c_4.e = vec3(0f);
-    let l_2 = lights[li];
-    let _e18 = light_point(l_2, u1_1, u2_1);
-    c_4.y = _e18;
-    let _e21 = c_4.y;
-    let _e24 = r2_2[li];
-    let _e26 = connection_cosine(x_12, _e21, n_6, ng_1, (s_1 * _e24));
-    c_4.cos_x = _e26;
-    let _e28 = c_4.cos_x;
-    if !((_e28 <= 0f)) {
+    let _e16 = light_point(l_2, u1_1, u2_1);
+    c_4.y = _e16;
+    let _e19 = c_4.y;
+    let _e20 = connection_cosine(x_12, _e19, n_6, ng_1, r2_2);
+    c_4.cos_x = _e20;
+    let _e22 = c_4.cos_x;
+    if !((_e22 <= 0f)) {
         if trace_1 {
-            let _e39 = c_4.y;
-            let _e40 = occluded((x_12 + (ng_1 * eps)), _e39);
-            local_11 = _e40;
+            let _e33 = c_4.y;
+            let _e34 = occluded((x_12 + (ng_1 * eps)), _e33);
+            local_11 = _e34;
         } else {
             local_11 = false;
         }
-        let _e42 = local_11;
-        local_10 = _e42;
+        let _e36 = local_11;
+        local_10 = _e36;
     } else {
         local_10 = true;
     }
-    let _e44 = local_10;
-    if _e44 {
-        let _e45 = c_4;
-        return _e45;
+    let _e38 = local_10;
+    if _e38 {
+        let _e39 = c_4;
+        return _e39;
     }
-    let _e47 = c_4.y;
-    let v_7 = (x_12 - _e47);
+    let _e41 = c_4.y;
+    let v_7 = (x_12 - _e41);
     let d2_8 = dot(v_7, v_7);
-    let _e54 = light_intensity(l_2, (v_7 / vec3(sqrt(d2_8))));
-    let _e56 = c_4.cos_x;
-    let _e59 = rt2_2[li];
-    let _e61 = connection_factor(_e56, d2_8, (s_1 * _e59), w_res);
-    c_4.e = (_e54 * _e61);
-    let _e63 = c_4;
-    return _e63;
+    let _e48 = light_intensity(l_2, (v_7 / vec3(sqrt(d2_8))));
+    let _e50 = c_4.cos_x;
+    let _e51 = connection_factor(_e50, d2_8, rt2_2, w_res);
+    c_4.e = (_e48 * _e51);
+    let _e53 = c_4;
+    return _e53;
 }
 
-fn connect(li_1: u32, x_13: vec3<f32>, n_7: vec3<f32>, ng_2: vec3<f32>, s_2: f32, w_res_1: f32, u1_2: f32, u2_2: f32, eps_1: f32) -> Connection {
-    let _e10 = connect_traced(li_1, x_13, n_7, ng_2, s_2, w_res_1, u1_2, u2_2, eps_1, true);
+fn connect_traced(li: u32, x_13: vec3<f32>, n_7: vec3<f32>, ng_2: vec3<f32>, s_1: f32, w_res_1: f32, u1_2: f32, u2_2: f32, eps_1: f32, trace_2: bool) -> Connection {
+    let _e12 = lights[li];
+    let _e15 = r2_3[li];
+    let _e19 = rt2_3[li];
+    let _e21 = connect_record(_e12, x_13, n_7, ng_2, (s_1 * _e15), (s_1 * _e19), w_res_1, u1_2, u2_2, eps_1, trace_2);
+    return _e21;
+}
+
+fn connect(li_1: u32, x_14: vec3<f32>, n_8: vec3<f32>, ng_3: vec3<f32>, s_2: f32, w_res_2: f32, u1_3: f32, u2_3: f32, eps_2: f32) -> Connection {
+    let _e10 = connect_traced(li_1, x_14, n_8, ng_3, s_2, w_res_2, u1_3, u2_3, eps_2, true);
     return _e10;
 }
 
@@ -936,13 +942,13 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         irradiance[i_5] = vec4(0f);
         return;
     }
-    let x_14 = p_3.xyz;
+    let x_15 = p_3.xyz;
     let _e19 = normals[i_5];
-    let n_9 = _e19.xyz;
+    let n_10 = _e19.xyz;
     let _e23 = params.seed;
     let _e26 = params.frame;
     let _e27 = point_stream(_e23, i_5, _e26);
-    let _e33 = bsh_collect(x_14, x_14, vec4<f32>(1f, 0f, 1f, 1f), _e27);
+    let _e33 = bsh_collect(x_15, x_15, vec4<f32>(1f, 0f, 1f, 1f), _e27);
     let _e36 = reservoir_weight(_e33.n, K);
     let _e37 = pick_stream(_e27);
     h = _e37;
@@ -966,7 +972,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
             let _e60 = h;
             let _e61 = xi_from_bits(_e60);
             let _e64 = params.eps;
-            let _e65 = connect(_e33.light[_e57], x_14, n_9, n_9, 1f, _e36, _e52, _e61, _e64);
+            let _e65 = connect(_e33.light[_e57], x_15, n_10, n_10, 1f, _e36, _e52, _e61, _e64);
             e = (_e55 + _e65.e);
         }
         continuing {

@@ -56,6 +56,7 @@ const MAP_ORTHOGRAPHIC: u32 = 2u;
 const XI_STEP: f32 = 0.000000059604645f;
 const PICK_STREAM: u32 = 2654435769u;
 const TWO_PI: f32 = 6.2831855f;
+const UNRANGED: f32 = 100000000000000000000000000000000000000f;
 const CULL_RADIUS_SCALE: f32 = 1.000001f;
 const SPHERE_PAD: f32 = 0.00000047683716f;
 const SPHERE_HUGE: f32 = 340282350000000000000000000000000000000f;
@@ -93,9 +94,9 @@ var<storage> bsh_nodes: array<BshNode>;
 @group(0) @binding(3) 
 var<storage> lights: array<GpuLight>;
 @group(0) @binding(5) 
-var<storage> r2_2: array<f32>;
+var<storage> r2_3: array<f32>;
 @group(0) @binding(4) 
-var<storage> rt2_2: array<f32>;
+var<storage> rt2_3: array<f32>;
 @group(0) @binding(0) 
 var<uniform> params: ShadeParams;
 @group(0) @binding(1) 
@@ -322,8 +323,8 @@ fn range_scale_toward(rl_1: vec4<f32>, center_1: vec3<f32>, radius_1: f32, p_1: 
 fn triangle_normal(a_5: vec3<f32>, b_4: vec3<f32>, c_2: vec3<f32>) -> vec3<f32> {
     var local_4: bool;
 
-    let n_8 = cross((b_4 - a_5), (c_2 - a_5));
-    let l2_ = dot(n_8, n_8);
+    let n_9 = cross((b_4 - a_5), (c_2 - a_5));
+    let l2_ = dot(n_9, n_9);
     if !(!((l2_ > 0f))) {
         local_4 = !((l2_ < 300000000000000000000000000000000000000f));
     } else {
@@ -333,7 +334,7 @@ fn triangle_normal(a_5: vec3<f32>, b_4: vec3<f32>, c_2: vec3<f32>) -> vec3<f32> 
     if _e17 {
         return vec3<f32>(0f, 0f, 0f);
     }
-    return (n_8 / vec3(sqrt(l2_)));
+    return (n_9 / vec3(sqrt(l2_)));
 }
 
 fn light_intensity(l: GpuLight, w_2: vec3<f32>) -> vec3<f32> {
@@ -508,52 +509,57 @@ fn bsh_collect(x_5: vec3<f32>, r_5: vec3<f32>, rl_5: vec4<f32>, seed_1: u32) -> 
     return _e49;
 }
 
-fn connect_traced(li: u32, x_6: vec3<f32>, n_6: vec3<f32>, ng_1: vec3<f32>, s_1: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32, trace: bool) -> Connection {
+fn connect_record(l_2: GpuLight, x_6: vec3<f32>, n_6: vec3<f32>, ng_1: vec3<f32>, r2_2: f32, rt2_2: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32, trace: bool) -> Connection {
     var c_3: Connection;
     var local_7: bool;
     var local_8: bool;
 
     c_3.e = vec3(0f);
-    let l_2 = lights[li];
-    let _e18 = light_point(l_2, u1_2, u2_2);
-    c_3.y = _e18;
-    let _e21 = c_3.y;
-    let _e24 = r2_2[li];
-    let _e26 = connection_cosine(x_6, _e21, n_6, ng_1, (s_1 * _e24));
-    c_3.cos_x = _e26;
-    let _e28 = c_3.cos_x;
-    if !((_e28 <= 0f)) {
+    let _e16 = light_point(l_2, u1_2, u2_2);
+    c_3.y = _e16;
+    let _e19 = c_3.y;
+    let _e20 = connection_cosine(x_6, _e19, n_6, ng_1, r2_2);
+    c_3.cos_x = _e20;
+    let _e22 = c_3.cos_x;
+    if !((_e22 <= 0f)) {
         if trace {
-            let _e39 = c_3.y;
-            let _e40 = occluded((x_6 + (ng_1 * eps)), _e39);
-            local_8 = _e40;
+            let _e33 = c_3.y;
+            let _e34 = occluded((x_6 + (ng_1 * eps)), _e33);
+            local_8 = _e34;
         } else {
             local_8 = false;
         }
-        let _e42 = local_8;
-        local_7 = _e42;
+        let _e36 = local_8;
+        local_7 = _e36;
     } else {
         local_7 = true;
     }
-    let _e44 = local_7;
-    if _e44 {
-        let _e45 = c_3;
-        return _e45;
+    let _e38 = local_7;
+    if _e38 {
+        let _e39 = c_3;
+        return _e39;
     }
-    let _e47 = c_3.y;
-    let v_6 = (x_6 - _e47);
+    let _e41 = c_3.y;
+    let v_6 = (x_6 - _e41);
     let d2_8 = dot(v_6, v_6);
-    let _e54 = light_intensity(l_2, (v_6 / vec3(sqrt(d2_8))));
-    let _e56 = c_3.cos_x;
-    let _e59 = rt2_2[li];
-    let _e61 = connection_factor(_e56, d2_8, (s_1 * _e59), w_res);
-    c_3.e = (_e54 * _e61);
-    let _e63 = c_3;
-    return _e63;
+    let _e48 = light_intensity(l_2, (v_6 / vec3(sqrt(d2_8))));
+    let _e50 = c_3.cos_x;
+    let _e51 = connection_factor(_e50, d2_8, rt2_2, w_res);
+    c_3.e = (_e48 * _e51);
+    let _e53 = c_3;
+    return _e53;
 }
 
-fn connect(li_1: u32, x_7: vec3<f32>, n_7: vec3<f32>, ng_2: vec3<f32>, s_2: f32, w_res_1: f32, u1_3: f32, u2_3: f32, eps_1: f32) -> Connection {
-    let _e10 = connect_traced(li_1, x_7, n_7, ng_2, s_2, w_res_1, u1_3, u2_3, eps_1, true);
+fn connect_traced(li: u32, x_7: vec3<f32>, n_7: vec3<f32>, ng_2: vec3<f32>, s_1: f32, w_res_1: f32, u1_3: f32, u2_3: f32, eps_1: f32, trace_1: bool) -> Connection {
+    let _e12 = lights[li];
+    let _e15 = r2_3[li];
+    let _e19 = rt2_3[li];
+    let _e21 = connect_record(_e12, x_7, n_7, ng_2, (s_1 * _e15), (s_1 * _e19), w_res_1, u1_3, u2_3, eps_1, trace_1);
+    return _e21;
+}
+
+fn connect(li_1: u32, x_8: vec3<f32>, n_8: vec3<f32>, ng_3: vec3<f32>, s_2: f32, w_res_2: f32, u1_4: f32, u2_4: f32, eps_2: f32) -> Connection {
+    let _e10 = connect_traced(li_1, x_8, n_8, ng_3, s_2, w_res_2, u1_4, u2_4, eps_2, true);
     return _e10;
 }
 
@@ -573,13 +579,13 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         irradiance[i_3] = vec4(0f);
         return;
     }
-    let x_8 = p_2.xyz;
+    let x_9 = p_2.xyz;
     let _e19 = normals[i_3];
-    let n_9 = _e19.xyz;
+    let n_10 = _e19.xyz;
     let _e23 = params.seed;
     let _e26 = params.frame;
     let _e27 = point_stream(_e23, i_3, _e26);
-    let _e33 = bsh_collect(x_8, x_8, vec4<f32>(1f, 0f, 1f, 1f), _e27);
+    let _e33 = bsh_collect(x_9, x_9, vec4<f32>(1f, 0f, 1f, 1f), _e27);
     let _e36 = reservoir_weight(_e33.n, K);
     let _e37 = pick_stream(_e27);
     h = _e37;
@@ -603,7 +609,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
             let _e60 = h;
             let _e61 = xi_from_bits(_e60);
             let _e64 = params.eps;
-            let _e65 = connect(_e33.light[_e57], x_8, n_9, n_9, 1f, _e36, _e52, _e61, _e64);
+            let _e65 = connect(_e33.light[_e57], x_9, n_10, n_10, 1f, _e36, _e52, _e61, _e64);
             e = (_e55 + _e65.e);
         }
         continuing {

@@ -79,6 +79,7 @@ const MAP_ORTHOGRAPHIC: u32 = 2u;
 const XI_STEP: f32 = 0.000000059604645f;
 const PICK_STREAM: u32 = 2654435769u;
 const TWO_PI: f32 = 6.2831855f;
+const UNRANGED: f32 = 100000000000000000000000000000000000000f;
 const CULL_RADIUS_SCALE: f32 = 1.000001f;
 const SPHERE_PAD: f32 = 0.00000047683716f;
 const SPHERE_HUGE: f32 = 340282350000000000000000000000000000000f;
@@ -124,9 +125,9 @@ var out_tex: texture_storage_2d<rgba32float,write>;
 @group(1) @binding(1) 
 var<storage> lights: array<GpuLight>;
 @group(1) @binding(2) 
-var<storage> rt2_2: array<f32>;
+var<storage> rt2_3: array<f32>;
 @group(1) @binding(3) 
-var<storage> r2_2: array<f32>;
+var<storage> r2_3: array<f32>;
 @group(1) @binding(4) 
 var<storage> bsh_nodes: array<BshNode>;
 
@@ -434,8 +435,8 @@ fn ies_candela_dir(tab_3: u32, base_2: u32, wn: f32, wr: f32, ws: f32) -> f32 {
     let gamma_1 = degrees(_e9);
     let on_axis = ((abs(wr) + abs(ws)) <= 0f);
     let _e16 = atan2_portable(ws, wr);
-    let c_6 = select(degrees(_e16), 0f, on_axis);
-    let _e20 = ies_candela(tab_3, base_2, gamma_1, c_6);
+    let c_7 = select(degrees(_e16), 0f, on_axis);
+    let _e20 = ies_candela(tab_3, base_2, gamma_1, c_7);
     return _e20;
 }
 
@@ -560,8 +561,8 @@ fn cone_cos_of(v: vec3<f32>, d2_4: f32, a_5: f32, d: vec3<f32>) -> f32 {
     if _e21 {
         return 1f;
     }
-    let c_7 = cross(v, d);
-    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_7, c_7)) * a_5)) / d2_4), 1f);
+    let c_8 = cross(v, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_8, c_8)) * a_5)) / d2_4), 1f);
 }
 
 fn cone_cos_toward(center: vec3<f32>, radius: f32, p: vec3<f32>, d_1: vec3<f32>) -> f32 {
@@ -587,8 +588,8 @@ fn range_scale_toward(rl_1: vec4<f32>, center_1: vec3<f32>, radius_1: f32, p_1: 
 fn triangle_normal(a_6: vec3<f32>, b_4: vec3<f32>, c_4: vec3<f32>) -> vec3<f32> {
     var local_7: bool;
 
-    let n_10 = cross((b_4 - a_6), (c_4 - a_6));
-    let l2_ = dot(n_10, n_10);
+    let n_12 = cross((b_4 - a_6), (c_4 - a_6));
+    let l2_ = dot(n_12, n_12);
     if !(!((l2_ > 0f))) {
         local_7 = !((l2_ < 300000000000000000000000000000000000000f));
     } else {
@@ -598,7 +599,7 @@ fn triangle_normal(a_6: vec3<f32>, b_4: vec3<f32>, c_4: vec3<f32>) -> vec3<f32> 
     if _e17 {
         return vec3<f32>(0f, 0f, 0f);
     }
-    return (n_10 / vec3(sqrt(l2_)));
+    return (n_12 / vec3(sqrt(l2_)));
 }
 
 fn light_intensity(l: GpuLight, w_3: vec3<f32>) -> vec3<f32> {
@@ -781,48 +782,53 @@ fn bsh_collect(x_10: vec3<f32>, r_6: vec3<f32>, rl_5: vec4<f32>, seed_1: u32) ->
     return _e49;
 }
 
-fn connect_traced(li: u32, x_11: vec3<f32>, n_7: vec3<f32>, ng_1: vec3<f32>, s: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32, trace: bool) -> Connection {
+fn connect_record(l_2: GpuLight, x_11: vec3<f32>, n_7: vec3<f32>, ng_1: vec3<f32>, r2_2: f32, rt2_2: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32, trace: bool) -> Connection {
     var c_5: Connection;
     var local_10: bool;
     var local_11: bool;
 
     c_5.e = vec3(0f);
-    let l_2 = lights[li];
-    let _e18 = light_point(l_2, u1_2, u2_2);
-    c_5.y = _e18;
-    let _e21 = c_5.y;
-    let _e24 = r2_2[li];
-    let _e26 = connection_cosine(x_11, _e21, n_7, ng_1, (s * _e24));
-    c_5.cos_x = _e26;
-    let _e28 = c_5.cos_x;
-    if !((_e28 <= 0f)) {
+    let _e16 = light_point(l_2, u1_2, u2_2);
+    c_5.y = _e16;
+    let _e19 = c_5.y;
+    let _e20 = connection_cosine(x_11, _e19, n_7, ng_1, r2_2);
+    c_5.cos_x = _e20;
+    let _e22 = c_5.cos_x;
+    if !((_e22 <= 0f)) {
         if trace {
-            let _e39 = c_5.y;
-            let _e40 = occluded((x_11 + (ng_1 * eps)), _e39);
-            local_11 = _e40;
+            let _e33 = c_5.y;
+            let _e34 = occluded((x_11 + (ng_1 * eps)), _e33);
+            local_11 = _e34;
         } else {
             local_11 = false;
         }
-        let _e42 = local_11;
-        local_10 = _e42;
+        let _e36 = local_11;
+        local_10 = _e36;
     } else {
         local_10 = true;
     }
-    let _e44 = local_10;
-    if _e44 {
-        let _e45 = c_5;
-        return _e45;
+    let _e38 = local_10;
+    if _e38 {
+        let _e39 = c_5;
+        return _e39;
     }
-    let _e47 = c_5.y;
-    let v_6 = (x_11 - _e47);
+    let _e41 = c_5.y;
+    let v_6 = (x_11 - _e41);
     let d2_8 = dot(v_6, v_6);
-    let _e54 = light_intensity(l_2, (v_6 / vec3(sqrt(d2_8))));
-    let _e56 = c_5.cos_x;
-    let _e59 = rt2_2[li];
-    let _e61 = connection_factor(_e56, d2_8, (s * _e59), w_res);
-    c_5.e = (_e54 * _e61);
-    let _e63 = c_5;
-    return _e63;
+    let _e48 = light_intensity(l_2, (v_6 / vec3(sqrt(d2_8))));
+    let _e50 = c_5.cos_x;
+    let _e51 = connection_factor(_e50, d2_8, rt2_2, w_res);
+    c_5.e = (_e48 * _e51);
+    let _e53 = c_5;
+    return _e53;
+}
+
+fn connect_traced(li: u32, x_12: vec3<f32>, n_8: vec3<f32>, ng_2: vec3<f32>, s: f32, w_res_1: f32, u1_3: f32, u2_3: f32, eps_1: f32, trace_1: bool) -> Connection {
+    let _e12 = lights[li];
+    let _e15 = r2_3[li];
+    let _e19 = rt2_3[li];
+    let _e21 = connect_record(_e12, x_12, n_8, ng_2, (s * _e15), (s * _e19), w_res_1, u1_3, u2_3, eps_1, trace_1);
+    return _e21;
 }
 
 fn surface_at(texel: vec2<i32>) -> vec4<f32> {
@@ -830,19 +836,24 @@ fn surface_at(texel: vec2<i32>) -> vec4<f32> {
     return select(vec4(0f), vec4<f32>(p_2.xyz, 1f), (p_2.w > 0f));
 }
 
-fn shade_pick_traced(li_1: u32, x_12: vec3<f32>, n_8: vec3<f32>, r_7: vec3<f32>, rl_6: vec4<f32>, m_1: Material, w_4: f32, u1_3: f32, u2_3: f32, eps_1: f32, trace_1: bool) -> Shaded {
+fn shade_connection(c_6: Connection, x_13: vec3<f32>, n_9: vec3<f32>, m_1: Material) -> Shaded {
     var s_1: Shaded;
 
-    let _e13 = connect_traced(li_1, x_12, n_8, n_8, 1f, w_4, u1_3, u2_3, eps_1, trace_1);
-    s_1.e = _e13.e;
+    s_1.e = c_6.e;
     s_1.diffuse = vec3(0f);
     s_1.specular = vec3(0f);
-    let _e22 = s_1;
-    return _e22;
+    let _e13 = s_1;
+    return _e13;
 }
 
-fn shade_pick(li_2: u32, x_13: vec3<f32>, n_9: vec3<f32>, r_8: vec3<f32>, rl_7: vec4<f32>, m_2: Material, w_5: f32, u1_4: f32, u2_4: f32, eps_2: f32) -> Shaded {
-    let _e11 = shade_pick_traced(li_2, x_13, n_9, r_8, rl_7, m_2, w_5, u1_4, u2_4, eps_2, true);
+fn shade_pick_traced(li_1: u32, x_14: vec3<f32>, n_10: vec3<f32>, r_7: vec3<f32>, rl_6: vec4<f32>, m_2: Material, w_4: f32, u1_4: f32, u2_4: f32, eps_2: f32, trace_2: bool) -> Shaded {
+    let _e12 = connect_traced(li_1, x_14, n_10, n_10, 1f, w_4, u1_4, u2_4, eps_2, trace_2);
+    let _e13 = shade_connection(_e12, x_14, n_10, m_2);
+    return _e13;
+}
+
+fn shade_pick(li_2: u32, x_15: vec3<f32>, n_11: vec3<f32>, r_8: vec3<f32>, rl_7: vec4<f32>, m_3: Material, w_5: f32, u1_5: f32, u2_5: f32, eps_3: f32) -> Shaded {
+    let _e11 = shade_pick_traced(li_2, x_15, n_11, r_8, rl_7, m_3, w_5, u1_5, u2_5, eps_3, true);
     return _e11;
 }
 
@@ -887,14 +898,14 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         textureStore(out_tex, texel_1, vec4(0f));
         return;
     }
-    let x_14 = _e21.xyz;
-    let n_11 = (nn / vec3(sqrt(len2_)));
-    r = n_11;
+    let x_16 = _e21.xyz;
+    let n_13 = (nn / vec3(sqrt(len2_)));
+    r = n_13;
     let _e53 = lobe;
     let _e54 = range_lobe(_e53);
     let _e57 = view.shadow_offset;
     let _e60 = view.eye;
-    let eps_3 = (_e57 * length((_e60 - x_14)));
+    let eps_4 = (_e57 * length((_e60 - x_16)));
     let _e66 = view.seed;
     let _e70 = view.width;
     let _e76 = view.frame;
@@ -902,7 +913,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     let _e78 = pick_stream(_e77);
     h = _e78;
     let _e88 = r;
-    let _e89 = bsh_collect(x_14, _e88, _e54, _e77);
+    let _e89 = bsh_collect(x_16, _e88, _e54, _e77);
     let _e92 = reservoir_weight(_e89.n, K);
     loop {
         let _e95 = k;
@@ -925,7 +936,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
             let _e111 = m;
             let _e112 = h;
             let _e113 = xi_from_bits(_e112);
-            let _e114 = shade_pick(_e89.light[_e108], x_14, n_11, _e110, _e54, _e111, _e92, _e103, _e113, eps_3);
+            let _e114 = shade_pick(_e89.light[_e108], x_16, n_13, _e110, _e54, _e111, _e92, _e103, _e113, eps_4);
             let _e115 = add(_e106, _e114);
             t = _e115;
         }

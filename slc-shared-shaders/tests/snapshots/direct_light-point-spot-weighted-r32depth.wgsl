@@ -114,6 +114,7 @@ const MAP_ORTHOGRAPHIC: u32 = 2u;
 const XI_STEP: f32 = 0.000000059604645f;
 const PICK_STREAM: u32 = 2654435769u;
 const TWO_PI: f32 = 6.2831855f;
+const UNRANGED: f32 = 100000000000000000000000000000000000000f;
 const CULL_RADIUS_SCALE: f32 = 1.000001f;
 const SPHERE_PAD: f32 = 0.00000047683716f;
 const SPHERE_HUGE: f32 = 340282350000000000000000000000000000000f;
@@ -161,9 +162,9 @@ var out_tex: texture_storage_2d<rgba16float,write>;
 @group(1) @binding(1) 
 var<storage> lights_1: array<GpuLight>;
 @group(1) @binding(2) 
-var<storage> rt2_4: array<f32>;
+var<storage> rt2_5: array<f32>;
 @group(1) @binding(3) 
-var<storage> r2_3: array<f32>;
+var<storage> r2_4: array<f32>;
 @group(1) @binding(4) 
 var<storage> bsh_nodes: array<BshNode>;
 @group(1) @binding(5) 
@@ -367,12 +368,12 @@ fn subtended_cos(dist2_: f32, r2_2: f32) -> f32 {
 fn emitter_cone(center: vec3<f32>, radius: f32, axis: vec3<f32>, cos_o: f32, p: vec3<f32>) -> vec4<f32> {
     let v_5 = (p - center);
     let dist2_1 = dot(v_5, v_5);
-    let r2_4 = (radius * radius);
-    let d2_8 = max(max(dist2_1, r2_4), MIN_D2_);
+    let r2_5 = (radius * radius);
+    let d2_8 = max(max(dist2_1, r2_5), MIN_D2_);
     let wi = select(vec3<f32>(0f, 0f, 0f), (v_5 / vec3(sqrt(dist2_1))), (dist2_1 > 0f));
     let cos_w = dot(axis, wi);
     let _e25 = safe_sqrt((1f - (cos_w * cos_w)));
-    let _e26 = subtended_cos(dist2_1, r2_4);
+    let _e26 = subtended_cos(dist2_1, r2_5);
     let _e30 = safe_sqrt((1f - (_e26 * _e26)));
     let _e34 = safe_sqrt((1f - (cos_o * cos_o)));
     let _e35 = cos_sub_clamped(_e25, cos_w, _e34, cos_o);
@@ -410,8 +411,8 @@ fn cone_cos_of(v: vec3<f32>, d2_4: f32, a_2: f32, d: vec3<f32>) -> f32 {
     if _e21 {
         return 1f;
     }
-    let c_3 = cross(v, d);
-    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_3, c_3)) * a_2)) / d2_4), 1f);
+    let c_4 = cross(v, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_4, c_4)) * a_2)) / d2_4), 1f);
 }
 
 fn cone_cos_toward(center_2: vec3<f32>, radius_2: f32, p_2: vec3<f32>, d_1: vec3<f32>) -> f32 {
@@ -624,15 +625,15 @@ fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
     let _e14 = ray_inverse3_(d_4);
     loop {
         let _e21 = node_2;
-        let n_9 = geo_nodes[_e21];
+        let n_11 = geo_nodes[_e21];
         let _e27 = hit.t;
-        let _e28 = ray_aabb(o_2, _e14, n_9.bmin, n_9.bmax, _e27);
+        let _e28 = ray_aabb(o_2, _e14, n_11.bmin, n_11.bmax, _e27);
         if (_e28 >= 0f) {
-            if (n_9.count > 0u) {
-                i = n_9.first;
+            if (n_11.count > 0u) {
+                i = n_11.first;
                 loop {
                     let _e36 = i;
-                    if (_e36 < (n_9.first + n_9.count)) {
+                    if (_e36 < (n_11.first + n_11.count)) {
                     } else {
                         break;
                     }
@@ -660,11 +661,11 @@ fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
                 let _e60 = sp;
                 if (_e60 < 64u) {
                     let _e63 = sp;
-                    stack[_e63] = (n_9.first + 1u);
+                    stack[_e63] = (n_11.first + 1u);
                     let _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_2 = n_9.first;
+                node_2 = n_11.first;
                 continue;
             }
         }
@@ -787,65 +788,70 @@ fn bsh_next_leaf_lobe(nodes_3: u32, start: u32, x_6: vec3<f32>, r_7: vec3<f32>, 
     return BSH_NONE;
 }
 
-fn connect_traced(li: u32, x_7: vec3<f32>, n_4: vec3<f32>, ng_1: vec3<f32>, s: f32, w_res: f32, u1_1: f32, u2_1: f32, eps: f32, trace_1: bool) -> Connection {
+fn connect_record(l_2: GpuLight, x_7: vec3<f32>, n_4: vec3<f32>, ng_1: vec3<f32>, r2_3: f32, rt2_4: f32, w_res: f32, u1_1: f32, u2_1: f32, eps: f32, trace_1: bool) -> Connection {
     var c_2: Connection;
     var local_14: bool;
     var local_15: bool;
 
     c_2.e = vec3(0f);
-    let l_2 = lights_1[li];
-    let _e18 = light_point(l_2, u1_1, u2_1);
-    c_2.y = _e18;
-    let _e21 = c_2.y;
-    let _e24 = r2_3[li];
-    let _e26 = connection_cosine(x_7, _e21, n_4, ng_1, (s * _e24));
-    c_2.cos_x = _e26;
-    let _e28 = c_2.cos_x;
-    if !((_e28 <= 0f)) {
+    let _e16 = light_point(l_2, u1_1, u2_1);
+    c_2.y = _e16;
+    let _e19 = c_2.y;
+    let _e20 = connection_cosine(x_7, _e19, n_4, ng_1, r2_3);
+    c_2.cos_x = _e20;
+    let _e22 = c_2.cos_x;
+    if !((_e22 <= 0f)) {
         if trace_1 {
-            let _e39 = c_2.y;
-            let _e40 = occluded((x_7 + (ng_1 * eps)), _e39);
-            local_15 = _e40;
+            let _e33 = c_2.y;
+            let _e34 = occluded((x_7 + (ng_1 * eps)), _e33);
+            local_15 = _e34;
         } else {
             local_15 = false;
         }
-        let _e42 = local_15;
-        local_14 = _e42;
+        let _e36 = local_15;
+        local_14 = _e36;
     } else {
         local_14 = true;
     }
-    let _e44 = local_14;
-    if _e44 {
-        let _e45 = c_2;
-        return _e45;
+    let _e38 = local_14;
+    if _e38 {
+        let _e39 = c_2;
+        return _e39;
     }
-    let _e47 = c_2.y;
-    let v_11 = (x_7 - _e47);
+    let _e41 = c_2.y;
+    let v_11 = (x_7 - _e41);
     let d2_10 = dot(v_11, v_11);
-    let _e54 = light_intensity(l_2, (v_11 / vec3(sqrt(d2_10))));
-    let _e56 = c_2.cos_x;
-    let _e59 = rt2_4[li];
-    let _e61 = connection_factor(_e56, d2_10, (s * _e59), w_res);
-    c_2.e = (_e54 * _e61);
-    let _e63 = c_2;
-    return _e63;
+    let _e48 = light_intensity(l_2, (v_11 / vec3(sqrt(d2_10))));
+    let _e50 = c_2.cos_x;
+    let _e51 = connection_factor(_e50, d2_10, rt2_4, w_res);
+    c_2.e = (_e48 * _e51);
+    let _e53 = c_2;
+    return _e53;
 }
 
-fn light_range_scale(li_1: u32, x_8: vec3<f32>, r_8: vec3<f32>, rl_5: vec4<f32>) -> f32 {
-    let c_4 = light_cones[li_1];
-    let _e9 = range_scale_toward(rl_5, c_4.center, c_4.radius, x_8, r_8);
+fn connect_traced(li: u32, x_8: vec3<f32>, n_5: vec3<f32>, ng_2: vec3<f32>, s: f32, w_res_1: f32, u1_2: f32, u2_2: f32, eps_1: f32, trace_2: bool) -> Connection {
+    let _e12 = lights_1[li];
+    let _e15 = r2_4[li];
+    let _e19 = rt2_5[li];
+    let _e21 = connect_record(_e12, x_8, n_5, ng_2, (s * _e15), (s * _e19), w_res_1, u1_2, u2_2, eps_1, trace_2);
+    return _e21;
+}
+
+fn light_range_scale(li_1: u32, x_9: vec3<f32>, r_8: vec3<f32>, rl_5: vec4<f32>) -> f32 {
+    let c_5 = light_cones[li_1];
+    let _e9 = range_scale_toward(rl_5, c_5.center, c_5.radius, x_9, r_8);
     return _e9;
 }
 
-fn light_weight(li_2: u32, x_9: vec3<f32>, n_5: vec3<f32>, r_9: vec3<f32>, lobe_7: vec4<f32>, rl_6: vec4<f32>) -> f32 {
-    let c_5 = light_cones[li_2];
-    let _e15 = light_range_scale(li_2, x_9, r_9, rl_6);
-    let _e18 = rt2_4[li_2];
-    let _e20 = cone_weight(c_5.center, c_5.radius, c_5.phi, c_5.axis, c_5.cos_o, c_5.cos_e, (_e15 * _e18), x_9, n_5, r_9, lobe_7);
+fn light_weight(li_2: u32, x_10: vec3<f32>, n_6: vec3<f32>, r_9: vec3<f32>, lobe_7: vec4<f32>, rl_6: vec4<f32>) -> f32 {
+    let c_6 = light_cones[li_2];
+    let _e15 = light_range_scale(li_2, x_10, r_9, rl_6);
+    let _e18 = rt2_5[li_2];
+    let _e20 = cone_weight(c_6.center, c_6.radius, c_6.phi, c_6.axis, c_6.cos_o, c_6.cos_e, (_e15 * _e18), x_10, n_6, r_9, lobe_7);
     return _e20;
 }
 
-fn bsh_weighted_collect(x_10: vec3<f32>, n_6: vec3<f32>, r_10: vec3<f32>, lobe_8: vec4<f32>, rl_7: vec4<f32>, h0_: u32) -> WeightedPicks {
+fn bsh_weighted_collect(x_11: vec3<f32>, n_7: vec3<f32>, r_10: vec3<f32>, lobe_8: vec4<f32>, rl_7: vec4<f32>, h0_: u32) -> WeightedPicks {
     var picks: WeightedPicks;
     var h_1: u32;
     var b_4: u32;
@@ -855,7 +861,7 @@ fn bsh_weighted_collect(x_10: vec3<f32>, n_6: vec3<f32>, r_10: vec3<f32>, lobe_8
     picks.n = 0u;
     h_1 = h0_;
     let _e14 = bsh_first(BSH);
-    let _e15 = bsh_next_leaf_lobe(BSH, _e14, x_10, r_10, rl_7);
+    let _e15 = bsh_next_leaf_lobe(BSH, _e14, x_11, r_10, rl_7);
     b_4 = _e15;
     loop {
         let _e17 = b_4;
@@ -868,7 +874,7 @@ fn bsh_weighted_collect(x_10: vec3<f32>, n_6: vec3<f32>, r_10: vec3<f32>, lobe_8
             picks.n = (_e21 + 1u);
             let _e25 = b_4;
             let li_5 = bsh_nodes[_e25].light;
-            let _e29 = light_weight(li_5, x_10, n_6, r_10, lobe_8, rl_7);
+            let _e29 = light_weight(li_5, x_11, n_7, r_10, lobe_8, rl_7);
             if (_e29 > 0f) {
                 let _e33 = picks.w_sum;
                 picks.w_sum = (_e33 + _e29);
@@ -904,7 +910,7 @@ fn bsh_weighted_collect(x_10: vec3<f32>, n_6: vec3<f32>, r_10: vec3<f32>, lobe_8
         continuing {
             let _e58 = b_4;
             let _e61 = bsh_nodes[_e58].next;
-            let _e62 = bsh_next_leaf_lobe(BSH, _e61, x_10, r_10, rl_7);
+            let _e62 = bsh_next_leaf_lobe(BSH, _e61, x_11, r_10, rl_7);
             b_4 = _e62;
         }
     }
@@ -927,9 +933,9 @@ fn unproject_pixel(c0_: vec4<f32>, c1_: vec4<f32>, c2_: vec4<f32>, c3_: vec4<f32
     if !(_e16) {
         return vec4<f32>(0f, 0f, 0f, 0f);
     }
-    let x_13 = ((((px + 0.5f) / width) * 2f) - 1f);
+    let x_15 = ((((px + 0.5f) / width) * 2f) - 1f);
     let y_1 = (1f - (((py + 0.5f) / height) * 2f));
-    let p_8 = ((((c0_ * x_13) + (c1_ * y_1)) + (c2_ * depth)) + c3_);
+    let p_8 = ((((c0_ * x_15) + (c1_ * y_1)) + (c2_ * depth)) + c3_);
     let q_1 = vec3<f32>((p_8.x / p_8.w), (p_8.y / p_8.w), (p_8.z / p_8.w));
     if (abs(p_8.w) > 0f) {
         let _e59 = finite3_(q_1);
@@ -957,19 +963,24 @@ fn surface_at(texel: vec2<i32>) -> vec4<f32> {
     return _e29;
 }
 
-fn shade_pick_traced(li_3: u32, x_11: vec3<f32>, n_7: vec3<f32>, r_11: vec3<f32>, rl_8: vec4<f32>, m_1: Material, w_4: f32, u1_2: f32, u2_2: f32, eps_1: f32, trace_2: bool) -> Shaded {
+fn shade_connection(c_3: Connection, x_12: vec3<f32>, n_8: vec3<f32>, m_1: Material) -> Shaded {
     var s_2: Shaded;
 
-    let _e13 = connect_traced(li_3, x_11, n_7, n_7, 1f, w_4, u1_2, u2_2, eps_1, trace_2);
-    s_2.e = _e13.e;
+    s_2.e = c_3.e;
     s_2.diffuse = vec3(0f);
     s_2.specular = vec3(0f);
-    let _e22 = s_2;
-    return _e22;
+    let _e13 = s_2;
+    return _e13;
 }
 
-fn shade_pick(li_4: u32, x_12: vec3<f32>, n_8: vec3<f32>, r_12: vec3<f32>, rl_9: vec4<f32>, m_2: Material, w_5: f32, u1_3: f32, u2_3: f32, eps_2: f32) -> Shaded {
-    let _e11 = shade_pick_traced(li_4, x_12, n_8, r_12, rl_9, m_2, w_5, u1_3, u2_3, eps_2, true);
+fn shade_pick_traced(li_3: u32, x_13: vec3<f32>, n_9: vec3<f32>, r_11: vec3<f32>, rl_8: vec4<f32>, m_2: Material, w_4: f32, u1_3: f32, u2_3: f32, eps_2: f32, trace_3: bool) -> Shaded {
+    let _e12 = connect_traced(li_3, x_13, n_9, n_9, 1f, w_4, u1_3, u2_3, eps_2, trace_3);
+    let _e13 = shade_connection(_e12, x_13, n_9, m_2);
+    return _e13;
+}
+
+fn shade_pick(li_4: u32, x_14: vec3<f32>, n_10: vec3<f32>, r_12: vec3<f32>, rl_9: vec4<f32>, m_3: Material, w_5: f32, u1_4: f32, u2_4: f32, eps_3: f32) -> Shaded {
+    let _e11 = shade_pick_traced(li_4, x_14, n_10, r_12, rl_9, m_3, w_5, u1_4, u2_4, eps_3, true);
     return _e11;
 }
 
@@ -1052,14 +1063,14 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         textureStore(out_tex, texel_1, vec4(0f));
         return;
     }
-    let x_14 = _e21.xyz;
-    let n_10 = (nn / vec3(sqrt(len2_)));
-    r = n_10;
+    let x_16 = _e21.xyz;
+    let n_12 = (nn / vec3(sqrt(len2_)));
+    r = n_12;
     let _e53 = lobe;
     let _e54 = range_lobe(_e53);
     let _e57 = view.shadow_offset;
     let _e60 = view.eye;
-    let eps_3 = (_e57 * length((_e60 - x_14)));
+    let eps_4 = (_e57 * length((_e60 - x_16)));
     let _e66 = view.seed;
     let _e70 = view.width;
     let _e76 = view.frame;
@@ -1068,7 +1079,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     h = _e78;
     let _e88 = r;
     let _e89 = lobe;
-    let _e90 = bsh_weighted_collect(x_14, n_10, _e88, _e89, _e54, _e77);
+    let _e90 = bsh_weighted_collect(x_16, n_12, _e88, _e89, _e54, _e77);
     if (_e90.w_sum > 0f) {
         loop {
             let _e96 = k;
@@ -1099,7 +1110,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
                     let _e125 = m;
                     let _e128 = k;
                     let _e131 = weighted_pick_weight(_e90.w_sum, _e90.w[_e128], K);
-                    let _e134 = shade_pick(li_6, x_14, n_10, _e124, _e54, _e125, (_e131 * f32(copies_1)), _e102, _e106, eps_3);
+                    let _e134 = shade_pick(li_6, x_16, n_12, _e124, _e54, _e125, (_e131 * f32(copies_1)), _e102, _e106, eps_4);
                     let _e135 = add(_e123, _e134);
                     t = _e135;
                 }

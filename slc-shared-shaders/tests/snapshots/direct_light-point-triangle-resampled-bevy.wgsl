@@ -106,6 +106,7 @@ const MAP_ORTHOGRAPHIC: u32 = 2u;
 const XI_STEP: f32 = 0.000000059604645f;
 const PICK_STREAM: u32 = 2654435769u;
 const TWO_PI: f32 = 6.2831855f;
+const UNRANGED: f32 = 100000000000000000000000000000000000000f;
 const CULL_RADIUS_SCALE: f32 = 1.000001f;
 const SPHERE_PAD: f32 = 0.00000047683716f;
 const SPHERE_HUGE: f32 = 340282350000000000000000000000000000000f;
@@ -157,9 +158,9 @@ var metal_rough_tex: texture_2d<f32>;
 @group(1) @binding(1) 
 var<storage> lights_1: array<GpuLight>;
 @group(1) @binding(2) 
-var<storage> rt2_2: array<f32>;
+var<storage> rt2_3: array<f32>;
 @group(1) @binding(3) 
-var<storage> r2_2: array<f32>;
+var<storage> r2_3: array<f32>;
 @group(1) @binding(4) 
 var<storage> bsh_nodes: array<BshNode>;
 @group(1) @binding(5) 
@@ -217,8 +218,8 @@ fn slc_keep(r2_: f32, d2_1: f32) -> bool {
 }
 
 fn sphere_contains_point(c: vec3<f32>, r_1: f32, x_1: vec3<f32>) -> bool {
-    let v_4 = (x_1 - c);
-    return (dot(v_4, v_4) <= (r_1 * r_1));
+    let v_5 = (x_1 - c);
+    return (dot(v_5, v_5) <= (r_1 * r_1));
 }
 
 fn inverse_square(d2_2: f32) -> f32 {
@@ -235,8 +236,8 @@ fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     var local_2: bool;
     var local_3: bool;
 
-    let v_5 = (x_2 - y);
-    let d2_6 = dot(v_5, v_5);
+    let v_6 = (x_2 - y);
+    let d2_6 = dot(v_6, v_6);
     let _e7 = slc_keep(r2_1, d2_6);
     if !(!(_e7)) {
         local_2 = !((d2_6 > 0f));
@@ -247,7 +248,7 @@ fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     if _e16 {
         return 0f;
     }
-    let w_6 = (v_5 / vec3(sqrt(d2_6)));
+    let w_6 = (v_6 / vec3(sqrt(d2_6)));
     let cos_x_1 = -(dot(n, w_6));
     if !((cos_x_1 <= 0f)) {
         local_3 = (dot(ng, w_6) >= 0f);
@@ -330,9 +331,9 @@ fn smith_visibility(n_l: f32, n_v: f32, alpha_2: f32) -> f32 {
 }
 
 fn fresnel_schlick(f0_: vec3<f32>, f90_: f32, v_h: f32) -> vec3<f32> {
-    let c_7 = saturate((1f - v_h));
-    let c2_ = (c_7 * c_7);
-    return (f0_ + ((vec3<f32>(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_7)));
+    let c_8 = saturate((1f - v_h));
+    let c2_ = (c_8 * c_8);
+    return (f0_ + ((vec3<f32>(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_8)));
 }
 
 fn specular_fresnel(base: vec3<f32>, metallic: f32, f0_d: vec3<f32>, f90_d: f32, v_h_1: f32) -> vec3<f32> {
@@ -427,9 +428,9 @@ fn bevy_f0_(reflectance: f32) -> f32 {
 fn bevy_dfg(r_2: f32, n_v_2: f32) -> f32 {
     let rx = (1f - r_2);
     let a004_ = ((min((rx * rx), exp2((-9.28f * n_v_2))) * rx) + (0.0425f - (0.0275f * r_2)));
-    let x_10 = max(((1.04f - (0.572f * r_2)) - (1.04f * a004_)), 0.00005f);
+    let x_12 = max(((1.04f - (0.572f * r_2)) - (1.04f * a004_)), 0.00005f);
     let y_1 = max((((0.022f * r_2) - 0.04f) + (1.04f * a004_)), 0.00005f);
-    return (x_10 + y_1);
+    return (x_12 + y_1);
 }
 
 fn bevy_brdf(base_2: vec3<f32>, metallic_3: f32, r_3: f32, reflectance_1: f32, n_3: vec3<f32>, v_1: vec3<f32>, l: vec3<f32>) -> vec3<f32> {
@@ -479,13 +480,13 @@ fn cone_cos_of(v_2: vec3<f32>, d2_4: f32, a_3: f32, d: vec3<f32>) -> f32 {
     if _e21 {
         return 1f;
     }
-    let c_8 = cross(v_2, d);
-    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_8, c_8)) * a_3)) / d2_4), 1f);
+    let c_9 = cross(v_2, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_9, c_9)) * a_3)) / d2_4), 1f);
 }
 
 fn cone_cos_toward(center: vec3<f32>, radius: f32, p: vec3<f32>, d_1: vec3<f32>) -> f32 {
-    let v_6 = (center - p);
-    let _e6 = cone_cos_of(v_6, dot(v_6, v_6), radius, d_1);
+    let v_7 = (center - p);
+    let _e6 = cone_cos_of(v_7, dot(v_7, v_7), radius, d_1);
     return _e6;
 }
 
@@ -534,8 +535,8 @@ fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin: vec3<f32>, bmax: vec3<f32>, t_
 fn triangle_normal(a_4: vec3<f32>, b_4: vec3<f32>, c_4: vec3<f32>) -> vec3<f32> {
     var local_10: bool;
 
-    let n_7 = cross((b_4 - a_4), (c_4 - a_4));
-    let l2_ = dot(n_7, n_7);
+    let n_9 = cross((b_4 - a_4), (c_4 - a_4));
+    let l2_ = dot(n_9, n_9);
     if !(!((l2_ > 0f))) {
         local_10 = !((l2_ < 300000000000000000000000000000000000000f));
     } else {
@@ -545,7 +546,7 @@ fn triangle_normal(a_4: vec3<f32>, b_4: vec3<f32>, c_4: vec3<f32>) -> vec3<f32> 
     if _e17 {
         return vec3<f32>(0f, 0f, 0f);
     }
-    return (n_7 / vec3(sqrt(l2_)));
+    return (n_9 / vec3(sqrt(l2_)));
 }
 
 fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_5: vec3<f32>, c_5: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
@@ -573,9 +574,9 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_5: vec3<f32>, 
         return -1f;
     }
     let q_1 = cross(s_3, e1_);
-    let v_7 = (dot(d_3, q_1) * inv);
-    if !((v_7 < 0f)) {
-        local_12 = ((u_3 + v_7) > 1f);
+    let v_8 = (dot(d_3, q_1) * inv);
+    if !((v_8 < 0f)) {
+        local_12 = ((u_3 + v_8) > 1f);
     } else {
         local_12 = true;
     }
@@ -636,15 +637,15 @@ fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
     let _e14 = ray_inverse3_(d_4);
     loop {
         let _e21 = node_2;
-        let n_8 = geo_nodes[_e21];
+        let n_10 = geo_nodes[_e21];
         let _e27 = hit.t;
-        let _e28 = ray_aabb(o_2, _e14, n_8.bmin, n_8.bmax, _e27);
+        let _e28 = ray_aabb(o_2, _e14, n_10.bmin, n_10.bmax, _e27);
         if (_e28 >= 0f) {
-            if (n_8.count > 0u) {
-                i = n_8.first;
+            if (n_10.count > 0u) {
+                i = n_10.first;
                 loop {
                     let _e36 = i;
-                    if (_e36 < (n_8.first + n_8.count)) {
+                    if (_e36 < (n_10.first + n_10.count)) {
                     } else {
                         break;
                     }
@@ -672,11 +673,11 @@ fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
                 let _e60 = sp;
                 if (_e60 < 64u) {
                     let _e63 = sp;
-                    stack[_e63] = (n_8.first + 1u);
+                    stack[_e63] = (n_10.first + 1u);
                     let _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_2 = n_8.first;
+                node_2 = n_10.first;
                 continue;
             }
         }
@@ -747,8 +748,8 @@ fn bsh_reaches(node_3: BshNode, x_4: vec3<f32>, r_6: vec3<f32>, rl_3: vec4<f32>)
         return false;
     }
     let _e25 = bsh_range_bound(node_3);
-    let v_8 = (x_4 - node_3.center);
-    let d2_7 = dot(v_8, v_8);
+    let v_9 = (x_4 - node_3.center);
+    let d2_7 = dot(v_9, v_9);
     let reach_max = (node_3.extent + ((rl_3.w * 1.001f) * _e25));
     if (d2_7 > (reach_max * reach_max)) {
         return false;
@@ -759,7 +760,7 @@ fn bsh_reaches(node_3: BshNode, x_4: vec3<f32>, r_6: vec3<f32>, rl_3: vec4<f32>)
         let _e47 = sphere_contains_point(node_3.center, _e46, x_4);
         return _e47;
     }
-    let _e50 = bsh_inner_scale(node_3.extent, -(v_8), d2_7, r_6, rl_3);
+    let _e50 = bsh_inner_scale(node_3.extent, -(v_9), d2_7, r_6, rl_3);
     let s_c = (_e50 * 1.001f);
     let reach = (node_3.extent + (sqrt(s_c) * _e25));
     if (d2_7 <= ((node_3.radius * node_3.radius) * s_c)) {
@@ -799,53 +800,58 @@ fn bsh_next_leaf_lobe(nodes_3: u32, start: u32, x_5: vec3<f32>, r_7: vec3<f32>, 
     return BSH_NONE;
 }
 
-fn connect_traced(li: u32, x_6: vec3<f32>, n_4: vec3<f32>, ng_1: vec3<f32>, s: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32, trace_1: bool) -> Connection {
+fn connect_record(l_3: GpuLight, x_6: vec3<f32>, n_4: vec3<f32>, ng_1: vec3<f32>, r2_2: f32, rt2_2: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32, trace_1: bool) -> Connection {
     var c_6: Connection;
     var local_16: bool;
     var local_17: bool;
 
     c_6.e = vec3(0f);
-    let l_3 = lights_1[li];
-    let _e18 = light_point(l_3, u1_2, u2_2);
-    c_6.y = _e18;
-    let _e21 = c_6.y;
-    let _e24 = r2_2[li];
-    let _e26 = connection_cosine(x_6, _e21, n_4, ng_1, (s * _e24));
-    c_6.cos_x = _e26;
-    let _e28 = c_6.cos_x;
-    if !((_e28 <= 0f)) {
+    let _e16 = light_point(l_3, u1_2, u2_2);
+    c_6.y = _e16;
+    let _e19 = c_6.y;
+    let _e20 = connection_cosine(x_6, _e19, n_4, ng_1, r2_2);
+    c_6.cos_x = _e20;
+    let _e22 = c_6.cos_x;
+    if !((_e22 <= 0f)) {
         if trace_1 {
-            let _e39 = c_6.y;
-            let _e40 = occluded((x_6 + (ng_1 * eps)), _e39);
-            local_17 = _e40;
+            let _e33 = c_6.y;
+            let _e34 = occluded((x_6 + (ng_1 * eps)), _e33);
+            local_17 = _e34;
         } else {
             local_17 = false;
         }
-        let _e42 = local_17;
-        local_16 = _e42;
+        let _e36 = local_17;
+        local_16 = _e36;
     } else {
         local_16 = true;
     }
-    let _e44 = local_16;
-    if _e44 {
-        let _e45 = c_6;
-        return _e45;
+    let _e38 = local_16;
+    if _e38 {
+        let _e39 = c_6;
+        return _e39;
     }
-    let _e47 = c_6.y;
-    let v_9 = (x_6 - _e47);
-    let d2_8 = dot(v_9, v_9);
-    let _e54 = light_intensity(l_3, (v_9 / vec3(sqrt(d2_8))));
-    let _e56 = c_6.cos_x;
-    let _e59 = rt2_2[li];
-    let _e61 = connection_factor(_e56, d2_8, (s * _e59), w_res);
-    c_6.e = (_e54 * _e61);
-    let _e63 = c_6;
-    return _e63;
+    let _e41 = c_6.y;
+    let v_10 = (x_6 - _e41);
+    let d2_8 = dot(v_10, v_10);
+    let _e48 = light_intensity(l_3, (v_10 / vec3(sqrt(d2_8))));
+    let _e50 = c_6.cos_x;
+    let _e51 = connection_factor(_e50, d2_8, rt2_2, w_res);
+    c_6.e = (_e48 * _e51);
+    let _e53 = c_6;
+    return _e53;
 }
 
-fn light_range_scale(li_1: u32, x_7: vec3<f32>, r_8: vec3<f32>, rl_5: vec4<f32>) -> f32 {
-    let c_9 = light_cones[li_1];
-    let _e9 = range_scale_toward(rl_5, c_9.center, c_9.radius, x_7, r_8);
+fn connect_traced(li: u32, x_7: vec3<f32>, n_5: vec3<f32>, ng_2: vec3<f32>, s: f32, w_res_1: f32, u1_3: f32, u2_3: f32, eps_1: f32, trace_2: bool) -> Connection {
+    let _e12 = lights_1[li];
+    let _e15 = r2_3[li];
+    let _e19 = rt2_3[li];
+    let _e21 = connect_record(_e12, x_7, n_5, ng_2, (s * _e15), (s * _e19), w_res_1, u1_3, u2_3, eps_1, trace_2);
+    return _e21;
+}
+
+fn light_range_scale(li_1: u32, x_8: vec3<f32>, r_8: vec3<f32>, rl_5: vec4<f32>) -> f32 {
+    let c_10 = light_cones[li_1];
+    let _e9 = range_scale_toward(rl_5, c_10.center, c_10.radius, x_8, r_8);
     return _e9;
 }
 
@@ -854,25 +860,35 @@ fn surface_at(texel: vec2<i32>) -> vec4<f32> {
     return select(vec4(0f), vec4<f32>(p_3.xyz, 1f), (p_3.w > 0f));
 }
 
-fn shade_pick_traced(li_2: u32, x_8: vec3<f32>, n_5: vec3<f32>, r_9: vec3<f32>, rl_6: vec4<f32>, m_1: Material, w_4: f32, u1_3: f32, u2_3: f32, eps_1: f32, trace_2: bool) -> Shaded {
+fn shade_connection(c_7: Connection, x_9: vec3<f32>, n_6: vec3<f32>, m_1: Material) -> Shaded {
     var s_1: Shaded;
 
-    let _e12 = light_range_scale(li_2, x_8, r_9, rl_6);
-    let _e13 = connect_traced(li_2, x_8, n_5, n_5, _e12, w_4, u1_3, u2_3, eps_1, trace_2);
-    s_1.e = _e13.e;
+    s_1.e = c_7.e;
     s_1.diffuse = vec3(0f);
     s_1.specular = vec3(0f);
-    if (_e13.cos_x > 0f) {
-        let _e34 = bevy_brdf(m_1.base, m_1.metallic, m_1.roughness, m_1.reflectance, n_5, m_1.v, normalize((_e13.y - x_8)));
-        s_1.diffuse = (_e34 * _e13.e);
+    if (c_7.cos_x > 0f) {
+        let _e25 = bevy_brdf(m_1.base, m_1.metallic, m_1.roughness, m_1.reflectance, n_6, m_1.v, normalize((c_7.y - x_9)));
+        s_1.diffuse = (_e25 * c_7.e);
     }
-    let _e37 = s_1;
-    return _e37;
+    let _e28 = s_1;
+    return _e28;
 }
 
-fn shade_pick(li_3: u32, x_9: vec3<f32>, n_6: vec3<f32>, r_10: vec3<f32>, rl_7: vec4<f32>, m_2: Material, w_5: f32, u1_4: f32, u2_4: f32, eps_2: f32) -> Shaded {
-    let _e11 = shade_pick_traced(li_3, x_9, n_6, r_10, rl_7, m_2, w_5, u1_4, u2_4, eps_2, true);
+fn shade_pick_traced(li_2: u32, x_10: vec3<f32>, n_7: vec3<f32>, r_9: vec3<f32>, rl_6: vec4<f32>, m_2: Material, w_4: f32, u1_4: f32, u2_4: f32, eps_2: f32, trace_3: bool) -> Shaded {
+    let _e11 = light_range_scale(li_2, x_10, r_9, rl_6);
+    let _e12 = connect_traced(li_2, x_10, n_7, n_7, _e11, w_4, u1_4, u2_4, eps_2, trace_3);
+    let _e13 = shade_connection(_e12, x_10, n_7, m_2);
+    return _e13;
+}
+
+fn shade_pick(li_3: u32, x_11: vec3<f32>, n_8: vec3<f32>, r_10: vec3<f32>, rl_7: vec4<f32>, m_3: Material, w_5: f32, u1_5: f32, u2_5: f32, eps_3: f32) -> Shaded {
+    let _e11 = shade_pick_traced(li_3, x_11, n_8, r_10, rl_7, m_3, w_5, u1_5, u2_5, eps_3, true);
     return _e11;
+}
+
+fn material_of(base_3: vec3<f32>, metallic_4: f32, roughness: f32, reflectance_2: f32, v_4: vec3<f32>) -> Material {
+    let _e6 = bevy_alpha(roughness);
+    return Material(base_3, saturate(metallic_4), _e6, v_4, roughness, reflectance_2);
 }
 
 fn add(a_8: Shaded, b_7: Shaded) -> Shaded {
@@ -966,149 +982,149 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         textureStore(out_tex, texel_1, vec4(0f));
         return;
     }
-    let x_11 = _e21.xyz;
-    let n_9 = (nn / vec3(sqrt(len2_)));
-    r = n_9;
+    let x_13 = _e21.xyz;
+    let n_11 = (nn / vec3(sqrt(len2_)));
+    r = n_11;
     let mr = textureLoad(metal_rough_tex, texel_1, 0i);
-    let _e57 = bevy_f0_(mr.w);
-    let _e60 = textureLoad(base_color_tex, texel_1, 0i);
-    let _e65 = bevy_alpha(mr.y);
-    let _e68 = view.eye;
-    m = Material(_e60.xyz, saturate(mr.z), _e65, normalize((_e68 - x_11)), mr.y, mr.w);
-    let _e75 = m.base;
-    let _e77 = m.metallic;
-    let _e81 = m.alpha;
-    let _e83 = m.v;
-    let _e85 = receiver_lobe(_e75, _e77, vec3(_e57), 1f, _e81, dot(n_9, _e83));
-    lobe = _e85;
-    let _e87 = m.v;
-    let _e88 = mirror_dir(n_9, _e87);
-    r = _e88;
-    let _e89 = lobe;
-    let _e90 = range_lobe(_e89);
-    let _e93 = view.shadow_offset;
-    let _e96 = view.eye;
-    let eps_3 = (_e93 * length((_e96 - x_11)));
-    let _e102 = view.seed;
-    let _e106 = view.width;
-    let _e112 = view.frame;
-    let _e113 = point_stream(_e102, ((gid.y * _e106) + gid.x), _e112);
-    let _e114 = pick_stream(_e113);
-    h = _e114;
-    hc = _e113;
-    let _e134 = bsh_first(BSH);
-    let _e135 = r;
-    let _e136 = bsh_next_leaf_lobe(BSH, _e134, x_11, _e135, _e90);
-    b = _e136;
+    let _e58 = textureLoad(base_color_tex, texel_1, 0i);
+    let _e65 = view.eye;
+    let _e68 = material_of(_e58.xyz, mr.z, mr.y, mr.w, normalize((_e65 - x_13)));
+    m = _e68;
+    let _e70 = m.base;
+    let _e72 = m.metallic;
+    let _e74 = bevy_f0_(mr.w);
+    let _e78 = m.alpha;
+    let _e80 = m.v;
+    let _e82 = receiver_lobe(_e70, _e72, vec3(_e74), 1f, _e78, dot(n_11, _e80));
+    lobe = _e82;
+    let _e84 = m.v;
+    let _e85 = mirror_dir(n_11, _e84);
+    r = _e85;
+    let _e86 = lobe;
+    let _e87 = range_lobe(_e86);
+    let _e90 = view.shadow_offset;
+    let _e93 = view.eye;
+    let eps_4 = (_e90 * length((_e93 - x_13)));
+    let _e99 = view.seed;
+    let _e103 = view.width;
+    let _e109 = view.frame;
+    let _e110 = point_stream(_e99, ((gid.y * _e103) + gid.x), _e109);
+    let _e111 = pick_stream(_e110);
+    h = _e111;
+    hc = _e110;
+    let _e131 = bsh_first(BSH);
+    let _e132 = r;
+    let _e133 = bsh_next_leaf_lobe(BSH, _e131, x_13, _e132, _e87);
+    b = _e133;
     loop {
-        let _e138 = b;
-        if (_e138 != BSH_NONE) {
+        let _e135 = b;
+        if (_e135 != BSH_NONE) {
         } else {
             break;
         }
         {
-            let _e141 = count;
-            count = (_e141 + 1u);
-            let _e145 = b;
-            let li_4 = bsh_nodes[_e145].light;
-            let _e149 = h;
-            let _e150 = pcg_hash(_e149);
-            h = _e150;
-            let _e151 = h;
-            let _e152 = xi_from_bits(_e151);
-            let _e153 = h;
-            let _e154 = pcg_hash(_e153);
-            h = _e154;
-            let _e155 = h;
-            let _e156 = xi_from_bits(_e155);
-            let u_4 = vec2<f32>(_e152, _e156);
-            let _e158 = r;
-            let _e159 = m;
-            let _e164 = shade_pick_traced(li_4, x_11, n_9, _e158, _e90, _e159, 1f, u_4.x, u_4.y, eps_3, false);
-            let _e165 = output_of(_e164);
-            let _e166 = resample_target(_e165);
-            if (_e166 > 0f) {
-                let _e169 = total;
-                total = (_e169 + _e166);
+            let _e138 = count;
+            count = (_e138 + 1u);
+            let _e142 = b;
+            let li_4 = bsh_nodes[_e142].light;
+            let _e146 = h;
+            let _e147 = pcg_hash(_e146);
+            h = _e147;
+            let _e148 = h;
+            let _e149 = xi_from_bits(_e148);
+            let _e150 = h;
+            let _e151 = pcg_hash(_e150);
+            h = _e151;
+            let _e152 = h;
+            let _e153 = xi_from_bits(_e152);
+            let u_4 = vec2<f32>(_e149, _e153);
+            let _e155 = r;
+            let _e156 = m;
+            let _e161 = shade_pick_traced(li_4, x_13, n_11, _e155, _e87, _e156, 1f, u_4.x, u_4.y, eps_4, false);
+            let _e162 = output_of(_e161);
+            let _e163 = resample_target(_e162);
+            if (_e163 > 0f) {
+                let _e166 = total;
+                total = (_e166 + _e163);
                 q = 0u;
                 loop {
-                    let _e173 = q;
-                    if (_e173 < K) {
+                    let _e170 = q;
+                    if (_e170 < K) {
                     } else {
                         break;
                     }
                     {
+                        let _e173 = hc;
+                        let _e174 = pcg_hash(_e173);
+                        hc = _e174;
+                        let _e175 = total;
                         let _e176 = hc;
-                        let _e177 = pcg_hash(_e176);
-                        hc = _e177;
-                        let _e178 = total;
-                        let _e179 = hc;
-                        let _e180 = xi_from_bits(_e179);
-                        let _e181 = weighted_replace(_e166, _e178, _e180);
-                        if _e181 {
-                            let _e182 = q;
-                            slot_light[_e182] = li_4;
-                            let _e184 = q;
-                            slot_u[_e184] = u_4;
-                            let _e186 = q;
-                            slot_p[_e186] = _e166;
+                        let _e177 = xi_from_bits(_e176);
+                        let _e178 = weighted_replace(_e163, _e175, _e177);
+                        if _e178 {
+                            let _e179 = q;
+                            slot_light[_e179] = li_4;
+                            let _e181 = q;
+                            slot_u[_e181] = u_4;
+                            let _e183 = q;
+                            slot_p[_e183] = _e163;
                         }
                     }
                     continuing {
-                        let _e189 = q;
-                        q = (_e189 + 1u);
+                        let _e186 = q;
+                        q = (_e186 + 1u);
                     }
                 }
             }
         }
         continuing {
-            let _e193 = b;
-            let _e196 = bsh_nodes[_e193].next;
-            let _e197 = r;
-            let _e198 = bsh_next_leaf_lobe(BSH, _e196, x_11, _e197, _e90);
-            b = _e198;
+            let _e190 = b;
+            let _e193 = bsh_nodes[_e190].next;
+            let _e194 = r;
+            let _e195 = bsh_next_leaf_lobe(BSH, _e193, x_13, _e194, _e87);
+            b = _e195;
         }
     }
-    let _e199 = total;
-    if (_e199 > 0f) {
+    let _e196 = total;
+    if (_e196 > 0f) {
         loop {
-            let _e204 = k;
-            if (_e204 < K) {
+            let _e201 = k;
+            if (_e201 < K) {
             } else {
                 break;
             }
             {
-                let _e207 = slot_light;
-                let _e208 = k;
-                let _e209 = pick_copies(_e207, _e208);
-                if (_e209 > 0u) {
-                    let _e212 = total;
-                    let _e214 = k;
-                    let _e216 = slot_p[_e214];
-                    let w_7 = ((_e212 / (8f * _e216)) * f32(_e209));
-                    let _e221 = t;
-                    let _e222 = k;
-                    let _e224 = slot_light[_e222];
-                    let _e225 = r;
-                    let _e226 = m;
-                    let _e227 = k;
-                    let _e230 = slot_u[_e227].x;
-                    let _e231 = k;
-                    let _e234 = slot_u[_e231].y;
-                    let _e235 = shade_pick(_e224, x_11, n_9, _e225, _e90, _e226, w_7, _e230, _e234, eps_3);
-                    let _e236 = add(_e221, _e235);
-                    t = _e236;
+                let _e204 = slot_light;
+                let _e205 = k;
+                let _e206 = pick_copies(_e204, _e205);
+                if (_e206 > 0u) {
+                    let _e209 = total;
+                    let _e211 = k;
+                    let _e213 = slot_p[_e211];
+                    let w_7 = ((_e209 / (8f * _e213)) * f32(_e206));
+                    let _e218 = t;
+                    let _e219 = k;
+                    let _e221 = slot_light[_e219];
+                    let _e222 = r;
+                    let _e223 = m;
+                    let _e224 = k;
+                    let _e227 = slot_u[_e224].x;
+                    let _e228 = k;
+                    let _e231 = slot_u[_e228].y;
+                    let _e232 = shade_pick(_e221, x_13, n_11, _e222, _e87, _e223, w_7, _e227, _e231, eps_4);
+                    let _e233 = add(_e218, _e232);
+                    t = _e233;
                 }
             }
             continuing {
-                let _e238 = k;
-                k = (_e238 + 1u);
+                let _e235 = k;
+                k = (_e235 + 1u);
             }
         }
     }
-    let _e242 = t.diffuse;
-    let _e244 = t.specular;
-    let _e246 = count;
-    textureStore(out_tex, texel_1, vec4<f32>((_e242 + _e244), f32(_e246)));
+    let _e239 = t.diffuse;
+    let _e241 = t.specular;
+    let _e243 = count;
+    textureStore(out_tex, texel_1, vec4<f32>((_e239 + _e241), f32(_e243)));
     return;
 }

@@ -114,6 +114,7 @@ const MAP_ORTHOGRAPHIC: u32 = 2u;
 const XI_STEP: f32 = 0.000000059604645f;
 const PICK_STREAM: u32 = 2654435769u;
 const TWO_PI: f32 = 6.2831855f;
+const UNRANGED: f32 = 100000000000000000000000000000000000000f;
 const CULL_RADIUS_SCALE: f32 = 1.000001f;
 const SPHERE_PAD: f32 = 0.00000047683716f;
 const SPHERE_HUGE: f32 = 340282350000000000000000000000000000000f;
@@ -167,9 +168,9 @@ var specular_tex: texture_storage_2d<rgba16float,write>;
 @group(1) @binding(1) 
 var<storage> lights_1: array<GpuLight>;
 @group(1) @binding(2) 
-var<storage> rt2_4: array<f32>;
+var<storage> rt2_5: array<f32>;
 @group(1) @binding(3) 
-var<storage> r2_3: array<f32>;
+var<storage> r2_4: array<f32>;
 @group(1) @binding(4) 
 var<storage> bsh_nodes: array<BshNode>;
 @group(1) @binding(5) 
@@ -227,8 +228,8 @@ fn slc_keep(r2_: f32, d2_1: f32) -> bool {
 }
 
 fn sphere_contains_point(c: vec3<f32>, r_1: f32, x_1: vec3<f32>) -> bool {
-    let v_5 = (x_1 - c);
-    return (dot(v_5, v_5) <= (r_1 * r_1));
+    let v_6 = (x_1 - c);
+    return (dot(v_6, v_6) <= (r_1 * r_1));
 }
 
 fn inverse_square(d2_2: f32) -> f32 {
@@ -245,8 +246,8 @@ fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     var local_2: bool;
     var local_3: bool;
 
-    let v_6 = (x_2 - y);
-    let d2_7 = dot(v_6, v_6);
+    let v_7 = (x_2 - y);
+    let d2_7 = dot(v_7, v_7);
     let _e7 = slc_keep(r2_1, d2_7);
     if !(!(_e7)) {
         local_2 = !((d2_7 > 0f));
@@ -257,7 +258,7 @@ fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     if _e16 {
         return 0f;
     }
-    let w_7 = (v_6 / vec3(sqrt(d2_7)));
+    let w_7 = (v_7 / vec3(sqrt(d2_7)));
     let cos_x_1 = -(dot(n, w_7));
     if !((cos_x_1 <= 0f)) {
         local_3 = (dot(ng, w_7) >= 0f);
@@ -345,9 +346,9 @@ fn smith_visibility(n_l: f32, n_v: f32, alpha_2: f32) -> f32 {
 }
 
 fn fresnel_schlick(f0_: vec3<f32>, f90_: f32, v_h: f32) -> vec3<f32> {
-    let c_6 = saturate((1f - v_h));
-    let c2_ = (c_6 * c_6);
-    return (f0_ + ((vec3<f32>(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_6)));
+    let c_7 = saturate((1f - v_h));
+    let c2_ = (c_7 * c_7);
+    return (f0_ + ((vec3<f32>(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_7)));
 }
 
 fn specular_fresnel(base: vec3<f32>, metallic: f32, f0_d: vec3<f32>, f90_d: f32, v_h_1: f32) -> vec3<f32> {
@@ -387,8 +388,8 @@ fn specular_brdf(base_2: vec3<f32>, metallic_2: f32, f0_d_2: vec3<f32>, f90_d_2:
     let hs = (v_1 + l_1);
     let inv = (1f / sqrt(dot(hs, hs)));
     let h_3 = (hs * inv);
-    let c_7 = cross(n_2, h_3);
-    let _e32 = ggx_d(dot(n_2, h_3), dot(c_7, c_7), alpha_3);
+    let c_8 = cross(n_2, h_3);
+    let _e32 = ggx_d(dot(n_2, h_3), dot(c_8, c_8), alpha_3);
     let _e34 = specular_fresnel(base_2, metallic_2, f0_d_2, f90_d_2, dot(v_1, h_3));
     let _e35 = smith_visibility(n_l_1, n_v_2, alpha_3);
     return (_e34 * (_e32 * _e35));
@@ -492,14 +493,14 @@ fn subtended_cos(dist2_: f32, r2_2: f32) -> f32 {
 }
 
 fn emitter_cone(center: vec3<f32>, radius: f32, axis: vec3<f32>, cos_o: f32, p: vec3<f32>) -> vec4<f32> {
-    let v_7 = (p - center);
-    let dist2_1 = dot(v_7, v_7);
-    let r2_4 = (radius * radius);
-    let d2_8 = max(max(dist2_1, r2_4), MIN_D2_);
-    let wi = select(vec3<f32>(0f, 0f, 0f), (v_7 / vec3(sqrt(dist2_1))), (dist2_1 > 0f));
+    let v_8 = (p - center);
+    let dist2_1 = dot(v_8, v_8);
+    let r2_5 = (radius * radius);
+    let d2_8 = max(max(dist2_1, r2_5), MIN_D2_);
+    let wi = select(vec3<f32>(0f, 0f, 0f), (v_8 / vec3(sqrt(dist2_1))), (dist2_1 > 0f));
     let cos_w = dot(axis, wi);
     let _e25 = safe_sqrt((1f - (cos_w * cos_w)));
-    let _e26 = subtended_cos(dist2_1, r2_4);
+    let _e26 = subtended_cos(dist2_1, r2_5);
     let _e30 = safe_sqrt((1f - (_e26 * _e26)));
     let _e34 = safe_sqrt((1f - (cos_o * cos_o)));
     let _e35 = cos_sub_clamped(_e25, cos_w, _e34, cos_o);
@@ -537,13 +538,13 @@ fn cone_cos_of(v_3: vec3<f32>, d2_4: f32, a_3: f32, d: vec3<f32>) -> f32 {
     if _e21 {
         return 1f;
     }
-    let c_8 = cross(v_3, d);
-    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_8, c_8)) * a_3)) / d2_4), 1f);
+    let c_9 = cross(v_3, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_9, c_9)) * a_3)) / d2_4), 1f);
 }
 
 fn cone_cos_toward(center_2: vec3<f32>, radius_2: f32, p_2: vec3<f32>, d_1: vec3<f32>) -> f32 {
-    let v_8 = (center_2 - p_2);
-    let _e6 = cone_cos_of(v_8, dot(v_8, v_8), radius_2, d_1);
+    let v_9 = (center_2 - p_2);
+    let _e6 = cone_cos_of(v_9, dot(v_9, v_9), radius_2, d_1);
     return _e6;
 }
 
@@ -570,9 +571,9 @@ fn light_importance(center_4: vec3<f32>, radius_4: f32, phi_1: f32, axis_2: vec3
     }
     imp = ((phi_1 * _e8.x) / _e8.y);
     if (dot(n_4, n_4) > 0f) {
-        let v_9 = (center_4 - p_4);
-        let dist2_2 = dot(v_9, v_9);
-        let cos_i = dot(select(vec3<f32>(0f, 0f, 0f), (v_9 / vec3(sqrt(dist2_2))), (dist2_2 > 0f)), n_4);
+        let v_10 = (center_4 - p_4);
+        let dist2_2 = dot(v_10, v_10);
+        let cos_i = dot(select(vec3<f32>(0f, 0f, 0f), (v_10 / vec3(sqrt(dist2_2))), (dist2_2 > 0f)), n_4);
         let _e33 = imp;
         let _e37 = safe_sqrt((1f - (cos_i * cos_i)));
         let _e40 = cos_sub_clamped(_e37, cos_i, _e8.w, _e8.z);
@@ -610,14 +611,14 @@ fn candidate_weight(importance: f32, rt2_2: f32, d2_5: f32) -> f32 {
 }
 
 fn cone_weight(center_6: vec3<f32>, radius_6: f32, phi_3: f32, axis_4: vec3<f32>, cos_o_4: f32, cos_e_3: f32, rt2_3: f32, p_6: vec3<f32>, n_6: vec3<f32>, r_4: vec3<f32>, lobe_6: vec4<f32>) -> f32 {
-    let v_10 = (p_6 - center_6);
+    let v_11 = (p_6 - center_6);
     if (lobe_6.y <= 0f) {
         let _e15 = light_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_6);
-        let _e19 = candidate_weight((_e15 * INV_PI), rt2_3, dot(v_10, v_10));
+        let _e19 = candidate_weight((_e15 * INV_PI), rt2_3, dot(v_11, v_11));
         return _e19;
     }
     let _e20 = glossy_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_6, r_4, lobe_6);
-    let _e22 = candidate_weight(_e20, rt2_3, dot(v_10, v_10));
+    let _e22 = candidate_weight(_e20, rt2_3, dot(v_11, v_11));
     return _e22;
 }
 
@@ -652,8 +653,8 @@ fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin: vec3<f32>, bmax: vec3<f32>, t_
 fn triangle_normal(a_4: vec3<f32>, b_3: vec3<f32>, c_3: vec3<f32>) -> vec3<f32> {
     var local_12: bool;
 
-    let n_12 = cross((b_3 - a_4), (c_3 - a_4));
-    let l2_ = dot(n_12, n_12);
+    let n_14 = cross((b_3 - a_4), (c_3 - a_4));
+    let l2_ = dot(n_14, n_14);
     if !(!((l2_ > 0f))) {
         local_12 = !((l2_ < 300000000000000000000000000000000000000f));
     } else {
@@ -663,7 +664,7 @@ fn triangle_normal(a_4: vec3<f32>, b_3: vec3<f32>, c_3: vec3<f32>) -> vec3<f32> 
     if _e17 {
         return vec3<f32>(0f, 0f, 0f);
     }
-    return (n_12 / vec3(sqrt(l2_)));
+    return (n_14 / vec3(sqrt(l2_)));
 }
 
 fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_4: vec3<f32>, c_4: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
@@ -691,9 +692,9 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_4: vec3<f32>, 
         return -1f;
     }
     let q = cross(s_3, e1_);
-    let v_11 = (dot(d_3, q) * inv_1);
-    if !((v_11 < 0f)) {
-        local_14 = ((u_3 + v_11) > 1f);
+    let v_12 = (dot(d_3, q) * inv_1);
+    if !((v_12 < 0f)) {
+        local_14 = ((u_3 + v_12) > 1f);
     } else {
         local_14 = true;
     }
@@ -751,15 +752,15 @@ fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
     let _e14 = ray_inverse3_(d_4);
     loop {
         let _e21 = node_2;
-        let n_13 = geo_nodes[_e21];
+        let n_15 = geo_nodes[_e21];
         let _e27 = hit.t;
-        let _e28 = ray_aabb(o_2, _e14, n_13.bmin, n_13.bmax, _e27);
+        let _e28 = ray_aabb(o_2, _e14, n_15.bmin, n_15.bmax, _e27);
         if (_e28 >= 0f) {
-            if (n_13.count > 0u) {
-                i = n_13.first;
+            if (n_15.count > 0u) {
+                i = n_15.first;
                 loop {
                     let _e36 = i;
-                    if (_e36 < (n_13.first + n_13.count)) {
+                    if (_e36 < (n_15.first + n_15.count)) {
                     } else {
                         break;
                     }
@@ -787,11 +788,11 @@ fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
                 let _e60 = sp;
                 if (_e60 < 64u) {
                     let _e63 = sp;
-                    stack[_e63] = (n_13.first + 1u);
+                    stack[_e63] = (n_15.first + 1u);
                     let _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_2 = n_13.first;
+                node_2 = n_15.first;
                 continue;
             }
         }
@@ -862,8 +863,8 @@ fn bsh_reaches(node_3: BshNode, x_5: vec3<f32>, r_6: vec3<f32>, rl_3: vec4<f32>)
         return false;
     }
     let _e25 = bsh_range_bound(node_3);
-    let v_12 = (x_5 - node_3.center);
-    let d2_9 = dot(v_12, v_12);
+    let v_13 = (x_5 - node_3.center);
+    let d2_9 = dot(v_13, v_13);
     let reach_max = (node_3.extent + ((rl_3.w * 1.001f) * _e25));
     if (d2_9 > (reach_max * reach_max)) {
         return false;
@@ -874,7 +875,7 @@ fn bsh_reaches(node_3: BshNode, x_5: vec3<f32>, r_6: vec3<f32>, rl_3: vec4<f32>)
         let _e47 = sphere_contains_point(node_3.center, _e46, x_5);
         return _e47;
     }
-    let _e50 = bsh_inner_scale(node_3.extent, -(v_12), d2_9, r_6, rl_3);
+    let _e50 = bsh_inner_scale(node_3.extent, -(v_13), d2_9, r_6, rl_3);
     let s_c = (_e50 * 1.001f);
     let reach = (node_3.extent + (sqrt(s_c) * _e25));
     if (d2_9 <= ((node_3.radius * node_3.radius) * s_c)) {
@@ -914,65 +915,70 @@ fn bsh_next_leaf_lobe(nodes_3: u32, start: u32, x_6: vec3<f32>, r_7: vec3<f32>, 
     return BSH_NONE;
 }
 
-fn connect_traced(li: u32, x_7: vec3<f32>, n_7: vec3<f32>, ng_1: vec3<f32>, s: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32, trace_1: bool) -> Connection {
+fn connect_record(l_4: GpuLight, x_7: vec3<f32>, n_7: vec3<f32>, ng_1: vec3<f32>, r2_3: f32, rt2_4: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32, trace_1: bool) -> Connection {
     var c_5: Connection;
     var local_18: bool;
     var local_19: bool;
 
     c_5.e = vec3(0f);
-    let l_4 = lights_1[li];
-    let _e18 = light_point(l_4, u1_2, u2_2);
-    c_5.y = _e18;
-    let _e21 = c_5.y;
-    let _e24 = r2_3[li];
-    let _e26 = connection_cosine(x_7, _e21, n_7, ng_1, (s * _e24));
-    c_5.cos_x = _e26;
-    let _e28 = c_5.cos_x;
-    if !((_e28 <= 0f)) {
+    let _e16 = light_point(l_4, u1_2, u2_2);
+    c_5.y = _e16;
+    let _e19 = c_5.y;
+    let _e20 = connection_cosine(x_7, _e19, n_7, ng_1, r2_3);
+    c_5.cos_x = _e20;
+    let _e22 = c_5.cos_x;
+    if !((_e22 <= 0f)) {
         if trace_1 {
-            let _e39 = c_5.y;
-            let _e40 = occluded((x_7 + (ng_1 * eps)), _e39);
-            local_19 = _e40;
+            let _e33 = c_5.y;
+            let _e34 = occluded((x_7 + (ng_1 * eps)), _e33);
+            local_19 = _e34;
         } else {
             local_19 = false;
         }
-        let _e42 = local_19;
-        local_18 = _e42;
+        let _e36 = local_19;
+        local_18 = _e36;
     } else {
         local_18 = true;
     }
-    let _e44 = local_18;
-    if _e44 {
-        let _e45 = c_5;
-        return _e45;
+    let _e38 = local_18;
+    if _e38 {
+        let _e39 = c_5;
+        return _e39;
     }
-    let _e47 = c_5.y;
-    let v_13 = (x_7 - _e47);
-    let d2_10 = dot(v_13, v_13);
-    let _e54 = light_intensity(l_4, (v_13 / vec3(sqrt(d2_10))));
-    let _e56 = c_5.cos_x;
-    let _e59 = rt2_4[li];
-    let _e61 = connection_factor(_e56, d2_10, (s * _e59), w_res);
-    c_5.e = (_e54 * _e61);
-    let _e63 = c_5;
-    return _e63;
+    let _e41 = c_5.y;
+    let v_14 = (x_7 - _e41);
+    let d2_10 = dot(v_14, v_14);
+    let _e48 = light_intensity(l_4, (v_14 / vec3(sqrt(d2_10))));
+    let _e50 = c_5.cos_x;
+    let _e51 = connection_factor(_e50, d2_10, rt2_4, w_res);
+    c_5.e = (_e48 * _e51);
+    let _e53 = c_5;
+    return _e53;
 }
 
-fn light_range_scale(li_1: u32, x_8: vec3<f32>, r_8: vec3<f32>, rl_5: vec4<f32>) -> f32 {
-    let c_9 = light_cones[li_1];
-    let _e9 = range_scale_toward(rl_5, c_9.center, c_9.radius, x_8, r_8);
+fn connect_traced(li: u32, x_8: vec3<f32>, n_8: vec3<f32>, ng_2: vec3<f32>, s: f32, w_res_1: f32, u1_3: f32, u2_3: f32, eps_1: f32, trace_2: bool) -> Connection {
+    let _e12 = lights_1[li];
+    let _e15 = r2_4[li];
+    let _e19 = rt2_5[li];
+    let _e21 = connect_record(_e12, x_8, n_8, ng_2, (s * _e15), (s * _e19), w_res_1, u1_3, u2_3, eps_1, trace_2);
+    return _e21;
+}
+
+fn light_range_scale(li_1: u32, x_9: vec3<f32>, r_8: vec3<f32>, rl_5: vec4<f32>) -> f32 {
+    let c_10 = light_cones[li_1];
+    let _e9 = range_scale_toward(rl_5, c_10.center, c_10.radius, x_9, r_8);
     return _e9;
 }
 
-fn light_weight(li_2: u32, x_9: vec3<f32>, n_8: vec3<f32>, r_9: vec3<f32>, lobe_7: vec4<f32>, rl_6: vec4<f32>) -> f32 {
-    let c_10 = light_cones[li_2];
-    let _e15 = light_range_scale(li_2, x_9, r_9, rl_6);
-    let _e18 = rt2_4[li_2];
-    let _e20 = cone_weight(c_10.center, c_10.radius, c_10.phi, c_10.axis, c_10.cos_o, c_10.cos_e, (_e15 * _e18), x_9, n_8, r_9, lobe_7);
+fn light_weight(li_2: u32, x_10: vec3<f32>, n_9: vec3<f32>, r_9: vec3<f32>, lobe_7: vec4<f32>, rl_6: vec4<f32>) -> f32 {
+    let c_11 = light_cones[li_2];
+    let _e15 = light_range_scale(li_2, x_10, r_9, rl_6);
+    let _e18 = rt2_5[li_2];
+    let _e20 = cone_weight(c_11.center, c_11.radius, c_11.phi, c_11.axis, c_11.cos_o, c_11.cos_e, (_e15 * _e18), x_10, n_9, r_9, lobe_7);
     return _e20;
 }
 
-fn bsh_weighted_collect(x_10: vec3<f32>, n_9: vec3<f32>, r_10: vec3<f32>, lobe_8: vec4<f32>, rl_7: vec4<f32>, h0_: u32) -> WeightedPicks {
+fn bsh_weighted_collect(x_11: vec3<f32>, n_10: vec3<f32>, r_10: vec3<f32>, lobe_8: vec4<f32>, rl_7: vec4<f32>, h0_: u32) -> WeightedPicks {
     var picks: WeightedPicks;
     var h_1: u32;
     var b_6: u32;
@@ -982,7 +988,7 @@ fn bsh_weighted_collect(x_10: vec3<f32>, n_9: vec3<f32>, r_10: vec3<f32>, lobe_8
     picks.n = 0u;
     h_1 = h0_;
     let _e14 = bsh_first(BSH);
-    let _e15 = bsh_next_leaf_lobe(BSH, _e14, x_10, r_10, rl_7);
+    let _e15 = bsh_next_leaf_lobe(BSH, _e14, x_11, r_10, rl_7);
     b_6 = _e15;
     loop {
         let _e17 = b_6;
@@ -995,7 +1001,7 @@ fn bsh_weighted_collect(x_10: vec3<f32>, n_9: vec3<f32>, r_10: vec3<f32>, lobe_8
             picks.n = (_e21 + 1u);
             let _e25 = b_6;
             let li_5 = bsh_nodes[_e25].light;
-            let _e29 = light_weight(li_5, x_10, n_9, r_10, lobe_8, rl_7);
+            let _e29 = light_weight(li_5, x_11, n_10, r_10, lobe_8, rl_7);
             if (_e29 > 0f) {
                 let _e33 = picks.w_sum;
                 picks.w_sum = (_e33 + _e29);
@@ -1031,7 +1037,7 @@ fn bsh_weighted_collect(x_10: vec3<f32>, n_9: vec3<f32>, r_10: vec3<f32>, lobe_8
         continuing {
             let _e58 = b_6;
             let _e61 = bsh_nodes[_e58].next;
-            let _e62 = bsh_next_leaf_lobe(BSH, _e61, x_10, r_10, rl_7);
+            let _e62 = bsh_next_leaf_lobe(BSH, _e61, x_11, r_10, rl_7);
             b_6 = _e62;
         }
     }
@@ -1046,33 +1052,43 @@ fn surface_at(texel: vec2<i32>) -> vec4<f32> {
     return select(vec4(0f), vec4<f32>(p_8.xyz, 1f), (p_8.w > 0f));
 }
 
-fn shade_pick_traced(li_3: u32, x_11: vec3<f32>, n_10: vec3<f32>, r_11: vec3<f32>, rl_8: vec4<f32>, m_1: Material, w_5: f32, u1_3: f32, u2_3: f32, eps_1: f32, trace_2: bool) -> Shaded {
+fn shade_connection(c_6: Connection, x_12: vec3<f32>, n_11: vec3<f32>, m_1: Material) -> Shaded {
     var s_2: Shaded;
 
-    let _e12 = light_range_scale(li_3, x_11, r_11, rl_8);
-    let _e13 = connect_traced(li_3, x_11, n_10, n_10, _e12, w_5, u1_3, u2_3, eps_1, trace_2);
-    s_2.e = _e13.e;
+    s_2.e = c_6.e;
     s_2.diffuse = vec3(0f);
     s_2.specular = vec3(0f);
-    if (_e13.cos_x > 0f) {
-        let l_5 = normalize((_e13.y - x_11));
-        let _e33 = view.f0_d;
-        let _e36 = view.f90_d;
-        let _e38 = half_cosine(m_1.v, l_5);
-        let _e39 = diffuse_brdf(m_1.base, m_1.metallic, _e33, _e36, _e38);
-        s_2.diffuse = (_e39 * _e13.e);
-        let _e47 = view.f0_d;
-        let _e50 = view.f90_d;
-        let _e53 = specular_brdf(m_1.base, m_1.metallic, _e47, _e50, m_1.alpha, n_10, m_1.v, l_5);
-        s_2.specular = (_e53 * _e13.e);
+    if (c_6.cos_x > 0f) {
+        let l_5 = normalize((c_6.y - x_12));
+        let _e24 = view.f0_d;
+        let _e27 = view.f90_d;
+        let _e29 = half_cosine(m_1.v, l_5);
+        let _e30 = diffuse_brdf(m_1.base, m_1.metallic, _e24, _e27, _e29);
+        s_2.diffuse = (_e30 * c_6.e);
+        let _e38 = view.f0_d;
+        let _e41 = view.f90_d;
+        let _e44 = specular_brdf(m_1.base, m_1.metallic, _e38, _e41, m_1.alpha, n_11, m_1.v, l_5);
+        s_2.specular = (_e44 * c_6.e);
     }
-    let _e56 = s_2;
-    return _e56;
+    let _e47 = s_2;
+    return _e47;
 }
 
-fn shade_pick(li_4: u32, x_12: vec3<f32>, n_11: vec3<f32>, r_12: vec3<f32>, rl_9: vec4<f32>, m_2: Material, w_6: f32, u1_4: f32, u2_4: f32, eps_2: f32) -> Shaded {
-    let _e11 = shade_pick_traced(li_4, x_12, n_11, r_12, rl_9, m_2, w_6, u1_4, u2_4, eps_2, true);
+fn shade_pick_traced(li_3: u32, x_13: vec3<f32>, n_12: vec3<f32>, r_11: vec3<f32>, rl_8: vec4<f32>, m_2: Material, w_5: f32, u1_4: f32, u2_4: f32, eps_2: f32, trace_3: bool) -> Shaded {
+    let _e11 = light_range_scale(li_3, x_13, r_11, rl_8);
+    let _e12 = connect_traced(li_3, x_13, n_12, n_12, _e11, w_5, u1_4, u2_4, eps_2, trace_3);
+    let _e13 = shade_connection(_e12, x_13, n_12, m_2);
+    return _e13;
+}
+
+fn shade_pick(li_4: u32, x_14: vec3<f32>, n_13: vec3<f32>, r_12: vec3<f32>, rl_9: vec4<f32>, m_3: Material, w_6: f32, u1_5: f32, u2_5: f32, eps_3: f32) -> Shaded {
+    let _e11 = shade_pick_traced(li_4, x_14, n_13, r_12, rl_9, m_3, w_6, u1_5, u2_5, eps_3, true);
     return _e11;
+}
+
+fn material_of(base_4: vec3<f32>, metallic_5: f32, roughness_1: f32, reflectance: f32, v_5: vec3<f32>) -> Material {
+    let _e7 = ggx_alpha(saturate(roughness_1));
+    return Material(base_4, saturate(metallic_5), _e7, v_5, roughness_1, 0f);
 }
 
 fn add(a_8: Shaded, b_7: Shaded) -> Shaded {
@@ -1155,84 +1171,84 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         textureStore(specular_tex, texel_1, vec4(0f));
         return;
     }
-    let x_13 = _e21.xyz;
-    let n_14 = (nn / vec3(sqrt(len2_1)));
-    r = n_14;
+    let x_15 = _e21.xyz;
+    let n_16 = (nn / vec3(sqrt(len2_1)));
+    r = n_16;
     let mr = textureLoad(metal_rough_tex, texel_1, 0i);
     let _e61 = textureLoad(base_color_tex, texel_1, 0i);
-    let _e67 = ggx_alpha(saturate(mr.y));
-    let _e70 = view.eye;
-    m = Material(_e61.xyz, saturate(mr.z), _e67, normalize((_e70 - x_13)), mr.y, 0f);
-    let _e77 = m.base;
-    let _e79 = m.metallic;
-    let _e82 = view.f0_d;
-    let _e85 = view.f90_d;
-    let _e87 = m.alpha;
+    let _e68 = view.eye;
+    let _e71 = material_of(_e61.xyz, mr.z, mr.y, mr.w, normalize((_e68 - x_15)));
+    m = _e71;
+    let _e73 = m.base;
+    let _e75 = m.metallic;
+    let _e78 = view.f0_d;
+    let _e81 = view.f90_d;
+    let _e83 = m.alpha;
+    let _e85 = m.v;
+    let _e87 = receiver_lobe(_e73, _e75, _e78, _e81, _e83, dot(n_16, _e85));
+    lobe = _e87;
     let _e89 = m.v;
-    let _e91 = receiver_lobe(_e77, _e79, _e82, _e85, _e87, dot(n_14, _e89));
-    lobe = _e91;
-    let _e93 = m.v;
-    let _e94 = mirror_dir(n_14, _e93);
-    r = _e94;
-    let _e95 = lobe;
-    let _e96 = range_lobe(_e95);
-    let _e99 = view.shadow_offset;
-    let _e102 = view.eye;
-    let eps_3 = (_e99 * length((_e102 - x_13)));
-    let _e108 = view.seed;
-    let _e112 = view.width;
-    let _e118 = view.frame;
-    let _e119 = point_stream(_e108, ((gid.y * _e112) + gid.x), _e118);
-    let _e120 = pick_stream(_e119);
-    h = _e120;
-    let _e130 = r;
-    let _e131 = lobe;
-    let _e132 = bsh_weighted_collect(x_13, n_14, _e130, _e131, _e96, _e119);
-    if (_e132.w_sum > 0f) {
+    let _e90 = mirror_dir(n_16, _e89);
+    r = _e90;
+    let _e91 = lobe;
+    let _e92 = range_lobe(_e91);
+    let _e95 = view.shadow_offset;
+    let _e98 = view.eye;
+    let eps_4 = (_e95 * length((_e98 - x_15)));
+    let _e104 = view.seed;
+    let _e108 = view.width;
+    let _e114 = view.frame;
+    let _e115 = point_stream(_e104, ((gid.y * _e108) + gid.x), _e114);
+    let _e116 = pick_stream(_e115);
+    h = _e116;
+    let _e126 = r;
+    let _e127 = lobe;
+    let _e128 = bsh_weighted_collect(x_15, n_16, _e126, _e127, _e92, _e115);
+    if (_e128.w_sum > 0f) {
         loop {
-            let _e138 = k;
-            if (_e138 < K) {
+            let _e134 = k;
+            if (_e134 < K) {
             } else {
                 break;
             }
             {
+                let _e137 = h;
+                let _e138 = pcg_hash(_e137);
+                h = _e138;
+                let _e139 = h;
+                let _e140 = xi_from_bits(_e139);
                 let _e141 = h;
                 let _e142 = pcg_hash(_e141);
                 h = _e142;
                 let _e143 = h;
                 let _e144 = xi_from_bits(_e143);
-                let _e145 = h;
-                let _e146 = pcg_hash(_e145);
-                h = _e146;
-                let _e147 = h;
-                let _e148 = xi_from_bits(_e147);
+                let _e146 = k;
+                let li_6 = _e128.light[_e146];
                 let _e150 = k;
-                let li_6 = _e132.light[_e150];
-                let _e154 = k;
-                let _e155 = pick_copies(_e132.light, _e154);
-                let _e159 = lights_1[li_6].kind;
-                let copies_1 = select(1u, _e155, (_e159 != LIGHT_TRIANGLE));
+                let _e151 = pick_copies(_e128.light, _e150);
+                let _e155 = lights_1[li_6].kind;
+                let copies_1 = select(1u, _e151, (_e155 != LIGHT_TRIANGLE));
                 if (copies_1 > 0u) {
-                    let _e165 = t;
-                    let _e166 = r;
-                    let _e167 = m;
-                    let _e170 = k;
-                    let _e173 = weighted_pick_weight(_e132.w_sum, _e132.w[_e170], K);
-                    let _e176 = shade_pick(li_6, x_13, n_14, _e166, _e96, _e167, (_e173 * f32(copies_1)), _e144, _e148, eps_3);
-                    let _e177 = add(_e165, _e176);
-                    t = _e177;
+                    let _e161 = t;
+                    let _e162 = r;
+                    let _e163 = m;
+                    let _e166 = k;
+                    let _e169 = weighted_pick_weight(_e128.w_sum, _e128.w[_e166], K);
+                    let _e172 = shade_pick(li_6, x_15, n_16, _e162, _e92, _e163, (_e169 * f32(copies_1)), _e140, _e144, eps_4);
+                    let _e173 = add(_e161, _e172);
+                    t = _e173;
                 }
             }
             continuing {
-                let _e179 = k;
-                k = (_e179 + 1u);
+                let _e175 = k;
+                k = (_e175 + 1u);
             }
         }
     }
-    let count = _e132.n;
-    let _e184 = t.e;
-    textureStore(out_tex, texel_1, vec4<f32>(_e184, f32(count)));
-    let _e189 = t.specular;
-    textureStore(specular_tex, texel_1, vec4<f32>(_e189, 0f));
+    let count = _e128.n;
+    let _e180 = t.e;
+    textureStore(out_tex, texel_1, vec4<f32>(_e180, f32(count)));
+    let _e185 = t.specular;
+    textureStore(specular_tex, texel_1, vec4<f32>(_e185, 0f));
     return;
 }

@@ -21,6 +21,7 @@ struct GpuLightBvhNode {
 const XI_STEP: f32 = 0.000000059604645f;
 const PICK_STREAM: u32 = 2654435769u;
 const TWO_PI: f32 = 6.2831855f;
+const UNRANGED: f32 = 100000000000000000000000000000000000000f;
 const CULL_RADIUS_SCALE: f32 = 1.000001f;
 const SPHERE_PAD: f32 = 0.00000047683716f;
 const SPHERE_HUGE: f32 = 340282350000000000000000000000000000000f;
@@ -173,6 +174,12 @@ fn pick_stream(stream: u32) -> u32 {
     return _e3;
 }
 
+fn reuse_stream(stream_1: u32, which: u32) -> u32 {
+    let _e2 = pick_stream(stream_1);
+    let _e6 = pcg_hash(((_e2 + 1u) + which));
+    return _e6;
+}
+
 fn path_stream(seed_4: u32, pixel: u32, pass_index: u32) -> u32 {
     let _e4 = add_wrap_u32_(pass_index, PICK_STREAM);
     let _e5 = point_stream(seed_4, pixel, _e4);
@@ -225,8 +232,8 @@ fn cull_radius(r2_1: f32) -> f32 {
 
 fn windowed_falloff(d2_4: f32, range2_1: f32) -> f32 {
     let q_3 = (d2_4 / range2_1);
-    let w_12 = saturate((1f - (q_3 * q_3)));
-    return ((w_12 * w_12) / max(d2_4, 0.0001f));
+    let w_13 = saturate((1f - (q_3 * q_3)));
+    return ((w_13 * w_13) / max(d2_4, 0.0001f));
 }
 
 fn sphere_contains_point(c: vec3<f32>, r: f32, x_5: vec3<f32>) -> bool {
@@ -236,8 +243,8 @@ fn sphere_contains_point(c: vec3<f32>, r: f32, x_5: vec3<f32>) -> bool {
 
 fn sphere_overlaps_sphere(c1_: vec3<f32>, r1_: f32, c2_: vec3<f32>, r2_2: f32) -> bool {
     let v_15 = (c2_ - c1_);
-    let r_9 = (r1_ + r2_2);
-    return (dot(v_15, v_15) <= (r_9 * r_9));
+    let r_10 = (r1_ + r2_2);
+    return (dot(v_15, v_15) <= (r_10 * r_10));
 }
 
 fn sphere_pad(r_1: f32, c_1: vec3<f32>) -> f32 {
@@ -280,9 +287,9 @@ fn sphere_union(c1_1: vec3<f32>, r1_1: f32, c2_1: vec3<f32>, r2_3: f32) -> vec4<
     let c_16 = (c1_1 + (v_16 * ((r0_ - r1_1) / d_10)));
     let e1_ = (c_16 - c1_1);
     let e2_ = (c_16 - c2_1);
-    let r_10 = max(r0_, max((sqrt(dot(e1_, e1_)) + r1_1), (sqrt(dot(e2_, e2_)) + r2_3)));
-    let _e82 = sphere_pad(r_10, c_16);
-    return vec4<f32>(c_16.x, c_16.y, c_16.z, (r_10 + _e82));
+    let r_11 = max(r0_, max((sqrt(dot(e1_, e1_)) + r1_1), (sqrt(dot(e2_, e2_)) + r2_3)));
+    let _e82 = sphere_pad(r_11, c_16);
+    return vec4<f32>(c_16.x, c_16.y, c_16.z, (r_11 + _e82));
 }
 
 fn sphere_overlaps_aabb(c_2: vec3<f32>, r_2: f32, bmin: vec3<f32>, bmax: vec3<f32>) -> bool {
@@ -319,11 +326,11 @@ fn group_clusters(g_1: u32, bw_3: u32, bh_2: u32, gw_3: u32, gh_2: u32) -> u32 {
 fn cluster_index(bx: u32, by: u32, bw_4: u32, bh_3: u32, gw_4: u32, gh_3: u32) -> u32 {
     let gx_2 = (bx / gw_4);
     let gy_2 = (by / gh_3);
-    let w_13 = min(gw_4, (bw_4 - (gw_4 * gx_2)));
+    let w_14 = min(gw_4, (bw_4 - (gw_4 * gx_2)));
     let _e11 = groups_across(bw_4, gw_4);
     let g_2 = ((gy_2 * _e11) + gx_2);
     let _e14 = group_first(g_2, bw_4, bh_3, gw_4, gh_3);
-    return ((_e14 + ((by - (gh_3 * gy_2)) * w_13)) + (bx - (gw_4 * gx_2)));
+    return ((_e14 + ((by - (gh_3 * gy_2)) * w_14)) + (bx - (gw_4 * gx_2)));
 }
 
 fn cluster_x(c_3: u32, bw_5: u32, bh_4: u32, gw_5: u32, gh_4: u32) -> u32 {
@@ -331,8 +338,8 @@ fn cluster_x(c_3: u32, bw_5: u32, bh_4: u32, gw_5: u32, gh_4: u32) -> u32 {
     let h_3 = min(gh_4, (bh_4 - (gh_4 * gy_3)));
     let rest = (c_3 - ((gy_3 * gh_4) * bw_5));
     let gx_3 = (rest / (gw_5 * h_3));
-    let w_14 = min(gw_5, (bw_5 - (gw_5 * gx_3)));
-    return ((gx_3 * gw_5) + ((rest - ((gx_3 * gw_5) * h_3)) % w_14));
+    let w_15 = min(gw_5, (bw_5 - (gw_5 * gx_3)));
+    return ((gx_3 * gw_5) + ((rest - ((gx_3 * gw_5) * h_3)) % w_15));
 }
 
 fn cluster_y(c_4: u32, bw_6: u32, bh_5: u32, gw_6: u32, gh_5: u32) -> u32 {
@@ -340,8 +347,8 @@ fn cluster_y(c_4: u32, bw_6: u32, bh_5: u32, gw_6: u32, gh_5: u32) -> u32 {
     let h_4 = min(gh_5, (bh_5 - (gh_5 * gy_4)));
     let rest_1 = (c_4 - ((gy_4 * gh_5) * bw_6));
     let gx_4 = (rest_1 / (gw_6 * h_4));
-    let w_15 = min(gw_6, (bw_6 - (gw_6 * gx_4)));
-    return ((gy_4 * gh_5) + ((rest_1 - ((gx_4 * gw_6) * h_4)) / w_15));
+    let w_16 = min(gw_6, (bw_6 - (gw_6 * gx_4)));
+    return ((gy_4 * gh_5) + ((rest_1 - ((gx_4 * gw_6) * h_4)) / w_16));
 }
 
 fn map_index(tx: u32, ty: u32, side: u32) -> u32 {
@@ -438,10 +445,10 @@ fn connection_cosine(x_6: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     if _e16 {
         return 0f;
     }
-    let w_16 = (v_18 / vec3(sqrt(d2_17)));
-    let cos_x_1 = -(dot(n, w_16));
+    let w_17 = (v_18 / vec3(sqrt(d2_17)));
+    let cos_x_1 = -(dot(n, w_17));
     if !((cos_x_1 <= 0f)) {
-        local_7 = (dot(ng, w_16) >= 0f);
+        local_7 = (dot(ng, w_17) >= 0f);
     } else {
         local_7 = true;
     }
@@ -509,8 +516,8 @@ fn atan_portable(x_7: f32) -> f32 {
     let _e21 = base;
     let _e33 = t;
     let _e35 = t;
-    let r_11 = (_e21 + (((((((((0.080537446f * z_3) - 0.13877685f) * z_3) + 0.19977711f) * z_3) - 0.3333295f) * z_3) * _e33) + _e35));
-    return select(r_11, -(r_11), (x_7 < 0f));
+    let r_12 = (_e21 + (((((((((0.080537446f * z_3) - 0.13877685f) * z_3) + 0.19977711f) * z_3) - 0.3333295f) * z_3) * _e33) + _e35));
+    return select(r_12, -(r_12), (x_7 < 0f));
 }
 
 fn atan2_portable(y_1: f32, x_8: f32) -> f32 {
@@ -773,6 +780,34 @@ fn resample_target(c_8: vec3<f32>) -> f32 {
     return (((c_8.x + c_8.y) + c_8.z) * 0.33333334f);
 }
 
+fn grid_coordinate(bits_1: u32) -> f32 {
+    let _e3 = to_f32_((bits_1 >> 16u));
+    return ((_e3 + 0.5f) / 65536f);
+}
+
+fn grid_cells(h1_: u32, h2_: u32) -> u32 {
+    return ((h1_ & 4294901760u) | (h2_ >> 16u));
+}
+
+fn disk_offset(r_3: f32, u1_1: f32, u2_1: f32) -> vec2<f32> {
+    let a_12 = (TWO_PI * u2_1);
+    return (vec2<f32>(cos(a_12), sin(a_12)) * (r_3 * sqrt(u1_1)));
+}
+
+fn gris_weight(own: f32, all_: f32, p_hat: f32, w_6: f32) -> f32 {
+    if !((all_ > 0f)) {
+        return 0f;
+    }
+    return (((own / all_) * p_hat) * w_6);
+}
+
+fn gris_contribution_weight(w_sum_2: f32, p_hat_1: f32) -> f32 {
+    if !((p_hat_1 > 0f)) {
+        return 0f;
+    }
+    return (w_sum_2 / p_hat_1);
+}
+
 fn alias_choice(column: u32, other: u32, keep: f32, u_3: f32) -> u32 {
     return select(other, column, (u_3 < keep));
 }
@@ -834,14 +869,14 @@ fn cosine_pdf(cos_theta_1: f32) -> f32 {
 
 fn onb_tangent(n_9: vec3<f32>) -> vec3<f32> {
     let s_2 = select(-1f, 1f, (n_9.z >= 0f));
-    let a_12 = (-1f / (s_2 + n_9.z));
-    return vec3<f32>((1f + (((s_2 * n_9.x) * n_9.x) * a_12)), (((s_2 * n_9.x) * n_9.y) * a_12), (-(s_2) * n_9.x));
+    let a_13 = (-1f / (s_2 + n_9.z));
+    return vec3<f32>((1f + (((s_2 * n_9.x) * n_9.x) * a_13)), (((s_2 * n_9.x) * n_9.y) * a_13), (-(s_2) * n_9.x));
 }
 
 fn onb_bitangent(n_10: vec3<f32>) -> vec3<f32> {
     let s_3 = select(-1f, 1f, (n_10.z >= 0f));
-    let a_13 = (-1f / (s_3 + n_10.z));
-    return vec3<f32>(((n_10.x * n_10.y) * a_13), (s_3 + ((n_10.y * n_10.y) * a_13)), -(n_10.y));
+    let a_14 = (-1f / (s_3 + n_10.z));
+    return vec3<f32>(((n_10.x * n_10.y) * a_14), (s_3 + ((n_10.y * n_10.y) * a_14)), -(n_10.y));
 }
 
 fn onb_to_world(n_11: vec3<f32>, d: vec3<f32>) -> vec3<f32> {
@@ -850,16 +885,16 @@ fn onb_to_world(n_11: vec3<f32>, d: vec3<f32>) -> vec3<f32> {
     return (((_e2 * d.x) + (_e5 * d.y)) + (n_11 * d.z));
 }
 
-fn onb_to_local(n_12: vec3<f32>, w_6: vec3<f32>) -> vec3<f32> {
+fn onb_to_local(n_12: vec3<f32>, w_7: vec3<f32>) -> vec3<f32> {
     let _e2 = onb_tangent(n_12);
     let _e4 = onb_bitangent(n_12);
-    return vec3<f32>(dot(w_6, _e2), dot(w_6, _e4), dot(w_6, n_12));
+    return vec3<f32>(dot(w_7, _e2), dot(w_7, _e4), dot(w_7, n_12));
 }
 
-fn cosine_direction(n_13: vec3<f32>, u1_1: f32, u2_1: f32) -> vec3<f32> {
-    let r_12 = sqrt(u1_1);
-    let phi_5 = (6.2831855f * u2_1);
-    let _e16 = onb_to_world(n_13, vec3<f32>((r_12 * cos(phi_5)), (r_12 * sin(phi_5)), sqrt(max((1f - u1_1), 0f))));
+fn cosine_direction(n_13: vec3<f32>, u1_2: f32, u2_2: f32) -> vec3<f32> {
+    let r_13 = sqrt(u1_2);
+    let phi_5 = (6.2831855f * u2_2);
+    let _e16 = onb_to_world(n_13, vec3<f32>((r_13 * cos(phi_5)), (r_13 * sin(phi_5)), sqrt(max((1f - u1_2), 0f))));
     return normalize(_e16);
 }
 
@@ -1053,19 +1088,19 @@ fn mirror_dir(n_17: vec3<f32>, v_7: vec3<f32>) -> vec3<f32> {
 }
 
 fn bounded_vndf_k(wi: vec3<f32>, alpha_7: f32) -> f32 {
-    let a_14 = saturate(alpha_7);
+    let a_15 = saturate(alpha_7);
     let s_4 = (1f + sqrt(((wi.x * wi.x) + (wi.y * wi.y))));
-    let a2_3 = (a_14 * a_14);
+    let a2_3 = (a_15 * a_15);
     let s2_ = (s_4 * s_4);
     return (((1f - a2_3) * s2_) / (s2_ + ((a2_3 * wi.z) * wi.z)));
 }
 
-fn ggx_vndf_sample(wi_1: vec3<f32>, alpha_8: f32, u1_2: f32, u2_2: f32) -> vec3<f32> {
+fn ggx_vndf_sample(wi_1: vec3<f32>, alpha_8: f32, u1_3: f32, u2_3: f32) -> vec3<f32> {
     let wi_std = normalize(vec3<f32>((wi_1.x * alpha_8), (wi_1.y * alpha_8), wi_1.z));
     let _e12 = bounded_vndf_k(wi_1, alpha_8);
     let b_11 = select(wi_std.z, (_e12 * wi_std.z), (wi_1.z > 0f));
-    let phi_6 = (6.2831855f * u1_2);
-    let z_4 = (((1f - u2_2) * (1f + b_11)) - b_11);
+    let phi_6 = (6.2831855f * u1_3);
+    let z_4 = (((1f - u2_3) * (1f + b_11)) - b_11);
     let sin_t = sqrt(saturate((1f - (z_4 * z_4))));
     let m_std = (wi_std + vec3<f32>((sin_t * cos(phi_6)), (sin_t * sin(phi_6)), z_4));
     let m_1 = normalize(vec3<f32>((m_std.x * alpha_8), (m_std.y * alpha_8), m_std.z));
@@ -1092,17 +1127,17 @@ fn ggx_vndf_pdf(wi_2: vec3<f32>, wo: vec3<f32>, alpha_9: f32) -> f32 {
     return (_e28 / (2f * ((_e43 * wi_2.z) + t_4)));
 }
 
-fn bsdf_sample(n_18: vec3<f32>, v_8: vec3<f32>, alpha_10: f32, p_spec: f32, u1_3: f32, u2_3: f32) -> vec3<f32> {
-    if (u1_3 < p_spec) {
+fn bsdf_sample(n_18: vec3<f32>, v_8: vec3<f32>, alpha_10: f32, p_spec: f32, u1_4: f32, u2_4: f32) -> vec3<f32> {
+    if (u1_4 < p_spec) {
         if (dot(n_18, v_8) <= 0f) {
             return -(n_18);
         }
         let _e11 = onb_to_local(n_18, v_8);
-        let _e13 = ggx_vndf_sample(_e11, alpha_10, (u1_3 / p_spec), u2_3);
+        let _e13 = ggx_vndf_sample(_e11, alpha_10, (u1_4 / p_spec), u2_4);
         let _e14 = onb_to_world(n_18, _e13);
         return normalize(_e14);
     }
-    let _e20 = cosine_direction(n_18, ((u1_3 - p_spec) / (1f - p_spec)), u2_3);
+    let _e20 = cosine_direction(n_18, ((u1_4 - p_spec) / (1f - p_spec)), u2_4);
     return _e20;
 }
 
@@ -1118,28 +1153,28 @@ fn bsdf_pdf(n_19: vec3<f32>, v_9: vec3<f32>, l_4: vec3<f32>, alpha_11: f32, p_sp
 }
 
 fn bevy_alpha(perceptual: f32) -> f32 {
-    let r_13 = clamp(perceptual, 0.089f, 1f);
-    return (r_13 * r_13);
+    let r_14 = clamp(perceptual, 0.089f, 1f);
+    return (r_14 * r_14);
 }
 
 fn bevy_f0_(reflectance: f32) -> f32 {
     return ((0.16f * reflectance) * reflectance);
 }
 
-fn bevy_dfg(r_3: f32, n_v_2: f32) -> f32 {
-    let rx = (1f - r_3);
-    let a004_ = ((min((rx * rx), exp2((-9.28f * n_v_2))) * rx) + (0.0425f - (0.0275f * r_3)));
-    let x_18 = max(((1.04f - (0.572f * r_3)) - (1.04f * a004_)), 0.00005f);
-    let y_3 = max((((0.022f * r_3) - 0.04f) + (1.04f * a004_)), 0.00005f);
+fn bevy_dfg(r_4: f32, n_v_2: f32) -> f32 {
+    let rx = (1f - r_4);
+    let a004_ = ((min((rx * rx), exp2((-9.28f * n_v_2))) * rx) + (0.0425f - (0.0275f * r_4)));
+    let x_18 = max(((1.04f - (0.572f * r_4)) - (1.04f * a004_)), 0.00005f);
+    let y_3 = max((((0.022f * r_4) - 0.04f) + (1.04f * a004_)), 0.00005f);
     return (x_18 + y_3);
 }
 
-fn bevy_brdf(base_11: vec3<f32>, metallic_8: f32, r_4: f32, reflectance_1: f32, n_20: vec3<f32>, v_10: vec3<f32>, l_5: vec3<f32>) -> vec3<f32> {
+fn bevy_brdf(base_11: vec3<f32>, metallic_8: f32, r_5: f32, reflectance_1: f32, n_20: vec3<f32>, v_10: vec3<f32>, l_5: vec3<f32>) -> vec3<f32> {
     let n_l_3 = saturate(dot(n_20, l_5));
     if (n_l_3 <= 0f) {
         return vec3<f32>(0f, 0f, 0f);
     }
-    let _e15 = bevy_alpha(r_4);
+    let _e15 = bevy_alpha(r_5);
     let n_v_4 = max(dot(n_20, v_10), 0.0001f);
     let h_7 = normalize((l_5 + v_10));
     let n_h = saturate(dot(n_20, h_7));
@@ -1153,7 +1188,7 @@ fn bevy_brdf(base_11: vec3<f32>, metallic_8: f32, r_4: f32, reflectance_1: f32, 
     let f90_1 = saturate((((f0_1.x + f0_1.y) + f0_1.z) * 16.5f));
     let _e64 = ggx_d(n_h, (1f - (n_h * n_h)), _e15);
     let _e65 = smith_visibility(n_l_3, n_v_4, _e15);
-    let _e70 = bevy_dfg(r_4, n_v_4);
+    let _e70 = bevy_dfg(r_5, n_v_4);
     let comp = (vec3<f32>(1f, 1f, 1f) + (f0_1 * ((1f / _e70) - 1f)));
     let _e77 = fresnel_schlick(f0_1, f90_1, l_h);
     let spec = ((_e77 * comp) * (_e64 * _e65));
@@ -1213,10 +1248,10 @@ fn cone_cos_of(v_11: vec3<f32>, d2_9: f32, a_5: f32, d_1: vec3<f32>) -> f32 {
     var local_19: bool;
 
     let vd = dot(v_11, d_1);
-    let h2_ = (d2_9 - (a_5 * a_5));
-    if !((h2_ <= 0f)) {
+    let h2_1 = (d2_9 - (a_5 * a_5));
+    if !((h2_1 <= 0f)) {
         if (vd >= 0f) {
-            local_19 = ((vd * vd) >= h2_);
+            local_19 = ((vd * vd) >= h2_1);
         } else {
             local_19 = false;
         }
@@ -1230,7 +1265,7 @@ fn cone_cos_of(v_11: vec3<f32>, d2_9: f32, a_5: f32, d_1: vec3<f32>) -> f32 {
         return 1f;
     }
     let c_21 = cross(v_11, d_1);
-    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_21, c_21)) * a_5)) / d2_9), 1f);
+    return min((((vd * sqrt(h2_1)) + (sqrt(dot(c_21, c_21)) * a_5)) / d2_9), 1f);
 }
 
 fn cone_cos_toward(center_2: vec3<f32>, radius_2: f32, p_2: vec3<f32>, d_2: vec3<f32>) -> f32 {
@@ -1244,11 +1279,11 @@ fn range_scale_at(rl: vec4<f32>, cos_t: f32) -> f32 {
     return clamp((rl.x + ((rl.y * rl.z) / (t_5 * t_5))), 1f, (rl.w * rl.w));
 }
 
-fn range_scale_toward(rl_1: vec4<f32>, center_3: vec3<f32>, radius_3: f32, p_3: vec3<f32>, r_5: vec3<f32>) -> f32 {
+fn range_scale_toward(rl_1: vec4<f32>, center_3: vec3<f32>, radius_3: f32, p_3: vec3<f32>, r_6: vec3<f32>) -> f32 {
     if (rl_1.w <= 1f) {
         return 1f;
     }
-    let _e9 = cone_cos_toward(center_3, radius_3, p_3, r_5);
+    let _e9 = cone_cos_toward(center_3, radius_3, p_3, r_6);
     let _e10 = range_scale_at(rl_1, _e9);
     return _e10;
 }
@@ -1274,7 +1309,7 @@ fn light_importance(center_4: vec3<f32>, radius_4: f32, phi_1: f32, axis_2: vec3
     return max(_e44, 0f);
 }
 
-fn glossy_importance(center_5: vec3<f32>, radius_5: f32, phi_2: f32, axis_3: vec3<f32>, cos_o_3: f32, cos_e_2: f32, p_5: vec3<f32>, n_22: vec3<f32>, r_6: vec3<f32>, lobe_5: vec4<f32>) -> f32 {
+fn glossy_importance(center_5: vec3<f32>, radius_5: f32, phi_2: f32, axis_3: vec3<f32>, cos_o_3: f32, cos_e_2: f32, p_5: vec3<f32>, n_22: vec3<f32>, r_7: vec3<f32>, lobe_5: vec4<f32>) -> f32 {
     var local_20: bool;
 
     let _e10 = emitter_importance(center_5, radius_5, phi_2, axis_3, cos_o_3, cos_e_2, p_5);
@@ -1288,7 +1323,7 @@ fn glossy_importance(center_5: vec3<f32>, radius_5: f32, phi_2: f32, axis_3: vec
     if _e20 {
         return 0f;
     }
-    let _e22 = cone_cos_toward(center_5, radius_5, p_5, r_6);
+    let _e22 = cone_cos_toward(center_5, radius_5, p_5, r_7);
     let _e27 = safe_sqrt((0.5f + (0.5f * _e22)));
     let _e33 = ggx_d(_e27, (1f - (_e27 * _e27)), lobe_5.z);
     let _e39 = smith_root(lobe_5.w, lobe_5.z);
@@ -1296,12 +1331,12 @@ fn glossy_importance(center_5: vec3<f32>, radius_5: f32, phi_2: f32, axis_3: vec
     return (_e10 * (((lobe_5.x * INV_PI) * _e11) + spec_1));
 }
 
-fn receiver_importance(center_6: vec3<f32>, radius_6: f32, phi_3: f32, axis_4: vec3<f32>, cos_o_4: f32, cos_e_3: f32, p_6: vec3<f32>, n_23: vec3<f32>, r_7: vec3<f32>, lobe_6: vec4<f32>) -> f32 {
+fn receiver_importance(center_6: vec3<f32>, radius_6: f32, phi_3: f32, axis_4: vec3<f32>, cos_o_4: f32, cos_e_3: f32, p_6: vec3<f32>, n_23: vec3<f32>, r_8: vec3<f32>, lobe_6: vec4<f32>) -> f32 {
     if (lobe_6.y <= 0f) {
         let _e13 = light_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_23);
         return _e13;
     }
-    let _e14 = glossy_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_23, r_7, lobe_6);
+    let _e14 = glossy_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_23, r_8, lobe_6);
     return _e14;
 }
 
@@ -1310,25 +1345,25 @@ fn candidate_weight(importance: f32, rt2_5: f32, d2_10: f32) -> f32 {
     return (importance * _e3);
 }
 
-fn cone_weight(center_7: vec3<f32>, radius_7: f32, phi_4: f32, axis_5: vec3<f32>, cos_o_5: f32, cos_e_4: f32, rt2_6: f32, p_7: vec3<f32>, n_24: vec3<f32>, r_8: vec3<f32>, lobe_7: vec4<f32>) -> f32 {
+fn cone_weight(center_7: vec3<f32>, radius_7: f32, phi_4: f32, axis_5: vec3<f32>, cos_o_5: f32, cos_e_4: f32, rt2_6: f32, p_7: vec3<f32>, n_24: vec3<f32>, r_9: vec3<f32>, lobe_7: vec4<f32>) -> f32 {
     let v_22 = (p_7 - center_7);
     if (lobe_7.y <= 0f) {
         let _e15 = light_importance(center_7, radius_7, phi_4, axis_5, cos_o_5, cos_e_4, p_7, n_24);
         let _e19 = candidate_weight((_e15 * INV_PI), rt2_6, dot(v_22, v_22));
         return _e19;
     }
-    let _e20 = glossy_importance(center_7, radius_7, phi_4, axis_5, cos_o_5, cos_e_4, p_7, n_24, r_8, lobe_7);
+    let _e20 = glossy_importance(center_7, radius_7, phi_4, axis_5, cos_o_5, cos_e_4, p_7, n_24, r_9, lobe_7);
     let _e22 = candidate_weight(_e20, rt2_6, dot(v_22, v_22));
     return _e22;
 }
 
-fn weighted_select_pdf(w_7: f32, w_sum_2: f32, in_range_1: bool, k_4: u32) -> f32 {
-    if (w_7 <= 0f) {
+fn weighted_select_pdf(w_8: f32, w_sum_3: f32, in_range_1: bool, k_4: u32) -> f32 {
+    if (w_8 <= 0f) {
         return 0f;
     }
-    let total = select((w_sum_2 + w_7), w_sum_2, in_range_1);
+    let total = select((w_sum_3 + w_8), w_sum_3, in_range_1);
     let _e9 = to_f32_(k_4);
-    return ((_e9 * w_7) / total);
+    return ((_e9 * w_8) / total);
 }
 
 fn bvh_first_prob(c0_: f32, c1_2: f32) -> f32 {
@@ -1438,10 +1473,10 @@ fn barycentric(p_8: vec3<f32>, a_7: vec3<f32>, b_5: vec3<f32>, c_11: vec3<f32>) 
     return vec3<f32>(((1f - w1_) - w2_), w1_, w2_);
 }
 
-fn shading_normal(n0_: vec3<f32>, n1_: vec3<f32>, n2_: vec3<f32>, w_8: vec3<f32>, facing: vec3<f32>) -> vec3<f32> {
+fn shading_normal(n0_: vec3<f32>, n1_: vec3<f32>, n2_: vec3<f32>, w_9: vec3<f32>, facing: vec3<f32>) -> vec3<f32> {
     var local_24: bool;
 
-    let s_6 = (((n0_ * w_8.x) + (n1_ * w_8.y)) + (n2_ * w_8.z));
+    let s_6 = (((n0_ * w_9.x) + (n1_ * w_9.y)) + (n2_ * w_9.z));
     let l2_1 = dot(s_6, s_6);
     if !(!((l2_1 > 0.000000000001f))) {
         local_24 = !((l2_1 < 300000000000000000000000000000000000000f));
@@ -1670,8 +1705,8 @@ fn vpl_near_fixed_share(range2_3: f32, d2_16: f32, near_r2_6: f32) -> f32 {
     return select(0f, _e3, (_e4 & (_e3 > 0f)));
 }
 
-fn camera_dir(forward: vec3<f32>, right: vec3<f32>, up: vec3<f32>, px: f32, py: f32, w_9: f32, h: f32) -> vec3<f32> {
-    let sx = (((2f * px) / w_9) - 1f);
+fn camera_dir(forward: vec3<f32>, right: vec3<f32>, up: vec3<f32>, px: f32, py: f32, w_10: f32, h: f32) -> vec3<f32> {
+    let sx = (((2f * px) / w_10) - 1f);
     let sy = (1f - ((2f * py) / h));
     return normalize(((forward + (right * sx)) + (up * sy)));
 }
@@ -1900,7 +1935,7 @@ fn temporal_alpha(n_33: f32) -> f32 {
     return (1f / max(n_33, 1f));
 }
 
-fn history_tap_weight(w_10: f32, n_34: vec3<f32>, nh_1: vec3<f32>, p_11: vec3<f32>, oh_1: f32, d_8: f32, len_1: f32) -> f32 {
+fn history_tap_weight(w_11: f32, n_34: vec3<f32>, nh_1: vec3<f32>, p_11: vec3<f32>, oh_1: f32, d_8: f32, len_1: f32) -> f32 {
     var local_41: bool;
 
     if (len_1 > 0f) {
@@ -1910,10 +1945,10 @@ fn history_tap_weight(w_10: f32, n_34: vec3<f32>, nh_1: vec3<f32>, p_11: vec3<f3
         local_41 = false;
     }
     let _e13 = local_41;
-    return select(0f, w_10, _e13);
+    return select(0f, w_11, _e13);
 }
 
-fn history_tap_weight_motion(w_11: f32, n_35: vec3<f32>, nh_2: vec3<f32>, d_9: f32, dh: f32, len_2: f32) -> f32 {
+fn history_tap_weight_motion(w_12: f32, n_35: vec3<f32>, nh_2: vec3<f32>, d_9: f32, dh: f32, len_2: f32) -> f32 {
     var local_42: bool;
     var local_43: bool;
 
@@ -1929,7 +1964,7 @@ fn history_tap_weight_motion(w_11: f32, n_35: vec3<f32>, nh_2: vec3<f32>, d_9: f
         local_43 = false;
     }
     let _e23 = local_43;
-    return select(0f, w_11, _e23);
+    return select(0f, w_12, _e23);
 }
 
 fn persistent_change(l_7: f32, last: f32, m1_1: f32, noise_1: f32, n_36: f32) -> f32 {

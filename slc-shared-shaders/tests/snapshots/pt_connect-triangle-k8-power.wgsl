@@ -110,6 +110,7 @@ const MAP_ORTHOGRAPHIC: u32 = 2u;
 const XI_STEP: f32 = 0.000000059604645f;
 const PICK_STREAM: u32 = 2654435769u;
 const TWO_PI: f32 = 6.2831855f;
+const UNRANGED: f32 = 100000000000000000000000000000000000000f;
 const CULL_RADIUS_SCALE: f32 = 1.000001f;
 const SPHERE_PAD: f32 = 0.00000047683716f;
 const SPHERE_HUGE: f32 = 340282350000000000000000000000000000000f;
@@ -152,9 +153,9 @@ var<storage> bsh_nodes: array<BshNode>;
 @group(0) @binding(2) 
 var<storage> lights: array<GpuLight>;
 @group(0) @binding(4) 
-var<storage> r2_2: array<f32>;
+var<storage> r2_3: array<f32>;
 @group(0) @binding(3) 
-var<storage> rt2_4: array<f32>;
+var<storage> rt2_5: array<f32>;
 @group(1) @binding(2) 
 var<storage> light_cones: array<GpuLightCone>;
 @group(0) @binding(0) 
@@ -735,8 +736,8 @@ fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin: vec3<f32>, bmax: vec3<f32>, t_
 fn triangle_normal(a_5: vec3<f32>, b_4: vec3<f32>, c_3: vec3<f32>) -> vec3<f32> {
     var local_15: bool;
 
-    let n_18 = cross((b_4 - a_5), (c_3 - a_5));
-    let l2_ = dot(n_18, n_18);
+    let n_19 = cross((b_4 - a_5), (c_3 - a_5));
+    let l2_ = dot(n_19, n_19);
     if !(!((l2_ > 0f))) {
         local_15 = !((l2_ < 300000000000000000000000000000000000000f));
     } else {
@@ -746,7 +747,7 @@ fn triangle_normal(a_5: vec3<f32>, b_4: vec3<f32>, c_3: vec3<f32>) -> vec3<f32> 
     if _e17 {
         return vec3<f32>(0f, 0f, 0f);
     }
-    return (n_18 / vec3(sqrt(l2_)));
+    return (n_19 / vec3(sqrt(l2_)));
 }
 
 fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_6: vec3<f32>, b_5: vec3<f32>, c_4: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
@@ -849,15 +850,15 @@ fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
     let _e14 = ray_inverse3_(d_4);
     loop {
         let _e21 = node_2;
-        let n_19 = geo_nodes[_e21];
+        let n_20 = geo_nodes[_e21];
         let _e27 = hit.t;
-        let _e28 = ray_aabb(o_2, _e14, n_19.bmin, n_19.bmax, _e27);
+        let _e28 = ray_aabb(o_2, _e14, n_20.bmin, n_20.bmax, _e27);
         if (_e28 >= 0f) {
-            if (n_19.count > 0u) {
-                i = n_19.first;
+            if (n_20.count > 0u) {
+                i = n_20.first;
                 loop {
                     let _e36 = i;
-                    if (_e36 < (n_19.first + n_19.count)) {
+                    if (_e36 < (n_20.first + n_20.count)) {
                     } else {
                         break;
                     }
@@ -885,11 +886,11 @@ fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
                 let _e60 = sp;
                 if (_e60 < 64u) {
                     let _e63 = sp;
-                    stack[_e63] = (n_19.first + 1u);
+                    stack[_e63] = (n_20.first + 1u);
                     let _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_2 = n_19.first;
+                node_2 = n_20.first;
                 continue;
             }
         }
@@ -1062,52 +1063,57 @@ fn bsh_collect(x_6: vec3<f32>, r_5: vec3<f32>, rl_5: vec4<f32>, seed_1: u32) -> 
     return _e49;
 }
 
-fn connect_traced(li: u32, x_7: vec3<f32>, n_13: vec3<f32>, ng_1: vec3<f32>, s_1: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32, trace_1: bool) -> Connection {
+fn connect_record(l_8: GpuLight, x_7: vec3<f32>, n_13: vec3<f32>, ng_1: vec3<f32>, r2_2: f32, rt2_4: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32, trace_1: bool) -> Connection {
     var c_5: Connection;
     var local_21: bool;
     var local_22: bool;
 
     c_5.e = vec3(0f);
-    let l_8 = lights[li];
-    let _e18 = light_point(l_8, u1_2, u2_2);
-    c_5.y = _e18;
-    let _e21 = c_5.y;
-    let _e24 = r2_2[li];
-    let _e26 = connection_cosine(x_7, _e21, n_13, ng_1, (s_1 * _e24));
-    c_5.cos_x = _e26;
-    let _e28 = c_5.cos_x;
-    if !((_e28 <= 0f)) {
+    let _e16 = light_point(l_8, u1_2, u2_2);
+    c_5.y = _e16;
+    let _e19 = c_5.y;
+    let _e20 = connection_cosine(x_7, _e19, n_13, ng_1, r2_2);
+    c_5.cos_x = _e20;
+    let _e22 = c_5.cos_x;
+    if !((_e22 <= 0f)) {
         if trace_1 {
-            let _e39 = c_5.y;
-            let _e40 = occluded((x_7 + (ng_1 * eps)), _e39);
-            local_22 = _e40;
+            let _e33 = c_5.y;
+            let _e34 = occluded((x_7 + (ng_1 * eps)), _e33);
+            local_22 = _e34;
         } else {
             local_22 = false;
         }
-        let _e42 = local_22;
-        local_21 = _e42;
+        let _e36 = local_22;
+        local_21 = _e36;
     } else {
         local_21 = true;
     }
-    let _e44 = local_21;
-    if _e44 {
-        let _e45 = c_5;
-        return _e45;
+    let _e38 = local_21;
+    if _e38 {
+        let _e39 = c_5;
+        return _e39;
     }
-    let _e47 = c_5.y;
-    let v_13 = (x_7 - _e47);
+    let _e41 = c_5.y;
+    let v_13 = (x_7 - _e41);
     let d2_11 = dot(v_13, v_13);
-    let _e54 = light_intensity(l_8, (v_13 / vec3(sqrt(d2_11))));
-    let _e56 = c_5.cos_x;
-    let _e59 = rt2_4[li];
-    let _e61 = connection_factor(_e56, d2_11, (s_1 * _e59), w_res);
-    c_5.e = (_e54 * _e61);
-    let _e63 = c_5;
-    return _e63;
+    let _e48 = light_intensity(l_8, (v_13 / vec3(sqrt(d2_11))));
+    let _e50 = c_5.cos_x;
+    let _e51 = connection_factor(_e50, d2_11, rt2_4, w_res);
+    c_5.e = (_e48 * _e51);
+    let _e53 = c_5;
+    return _e53;
 }
 
-fn connect(li_1: u32, x_8: vec3<f32>, n_14: vec3<f32>, ng_2: vec3<f32>, s_2: f32, w_res_1: f32, u1_3: f32, u2_3: f32, eps_1: f32) -> Connection {
-    let _e10 = connect_traced(li_1, x_8, n_14, ng_2, s_2, w_res_1, u1_3, u2_3, eps_1, true);
+fn connect_traced(li: u32, x_8: vec3<f32>, n_14: vec3<f32>, ng_2: vec3<f32>, s_1: f32, w_res_1: f32, u1_3: f32, u2_3: f32, eps_1: f32, trace_2: bool) -> Connection {
+    let _e12 = lights[li];
+    let _e15 = r2_3[li];
+    let _e19 = rt2_5[li];
+    let _e21 = connect_record(_e12, x_8, n_14, ng_2, (s_1 * _e15), (s_1 * _e19), w_res_1, u1_3, u2_3, eps_1, trace_2);
+    return _e21;
+}
+
+fn connect(li_1: u32, x_9: vec3<f32>, n_15: vec3<f32>, ng_3: vec3<f32>, s_2: f32, w_res_2: f32, u1_4: f32, u2_4: f32, eps_2: f32) -> Connection {
+    let _e10 = connect_traced(li_1, x_9, n_15, ng_3, s_2, w_res_2, u1_4, u2_4, eps_2, true);
     return _e10;
 }
 
@@ -1116,56 +1122,56 @@ fn mis_weight(pdf_a_1: f32, pdf_b_1: f32) -> f32 {
     return _e2;
 }
 
-fn light_range_scale(li_2: u32, x_9: vec3<f32>, r_6: vec3<f32>, rl_6: vec4<f32>) -> f32 {
+fn light_range_scale(li_2: u32, x_10: vec3<f32>, r_6: vec3<f32>, rl_6: vec4<f32>) -> f32 {
     let c_10 = light_cones[li_2];
-    let _e9 = range_scale_toward(rl_6, c_10.center, c_10.radius, x_9, r_6);
+    let _e9 = range_scale_toward(rl_6, c_10.center, c_10.radius, x_10, r_6);
     return _e9;
 }
 
-fn select_pdf(li_3: u32, x_10: vec3<f32>, n_15: vec3<f32>, r_7: vec3<f32>, lobe_5: vec4<f32>, rl_7: vec4<f32>, nee: u32, in_range_1: bool) -> f32 {
+fn select_pdf(li_3: u32, x_11: vec3<f32>, n_16: vec3<f32>, r_7: vec3<f32>, lobe_5: vec4<f32>, rl_7: vec4<f32>, nee: u32, in_range_1: bool) -> f32 {
     let _e9 = reservoir_select_pdf(nee, in_range_1, K);
     return _e9;
 }
 
-fn light_pdf_selected(li_4: u32, x_11: vec3<f32>, r_8: vec3<f32>, rl_8: vec4<f32>, y_1: vec3<f32>, sel: f32) -> f32 {
+fn light_pdf_selected(li_4: u32, x_12: vec3<f32>, r_8: vec3<f32>, rl_8: vec4<f32>, y_1: vec3<f32>, sel: f32) -> f32 {
     let l_9 = lights[li_4];
-    let v_14 = (x_11 - y_1);
+    let v_14 = (x_12 - y_1);
     let d2_12 = dot(v_14, v_14);
     let _e11 = light_normal(l_9);
     let cos_y_1 = select(0f, dot(_e11, (v_14 / vec3(sqrt(d2_12)))), (d2_12 > 0f));
-    let _e20 = light_range_scale(li_4, x_11, r_8, rl_8);
-    let _e23 = rt2_4[li_4];
+    let _e20 = light_range_scale(li_4, x_12, r_8, rl_8);
+    let _e23 = rt2_5[li_4];
     let _e25 = light_area(l_9);
     let _e26 = light_strategy_pdf(sel, (_e20 * _e23), d2_12, _e25, cos_y_1);
     return _e26;
 }
 
-fn light_pdf(li_5: u32, x_12: vec3<f32>, n_16: vec3<f32>, r_9: vec3<f32>, lobe_6: vec4<f32>, rl_9: vec4<f32>, y_2: vec3<f32>, nee_1: u32, in_range_2: bool) -> f32 {
-    let _e9 = select_pdf(li_5, x_12, n_16, r_9, lobe_6, rl_9, nee_1, in_range_2);
-    let _e10 = light_pdf_selected(li_5, x_12, r_9, rl_9, y_2, _e9);
+fn light_pdf(li_5: u32, x_13: vec3<f32>, n_17: vec3<f32>, r_9: vec3<f32>, lobe_6: vec4<f32>, rl_9: vec4<f32>, y_2: vec3<f32>, nee_1: u32, in_range_2: bool) -> f32 {
+    let _e9 = select_pdf(li_5, x_13, n_17, r_9, lobe_6, rl_9, nee_1, in_range_2);
+    let _e10 = light_pdf_selected(li_5, x_13, r_9, rl_9, y_2, _e9);
     return _e10;
 }
 
-fn shade_pick(li_6: u32, x_13: vec3<f32>, n_17: vec3<f32>, ng_3: vec3<f32>, m: GpuMaterial, wo_1: vec3<f32>, r_10: vec3<f32>, lobe_7: vec4<f32>, rl_10: vec4<f32>, w_4: f32, nee_2: u32, u1_4: f32, u2_4: f32) -> vec3<f32> {
+fn shade_pick(li_6: u32, x_14: vec3<f32>, n_18: vec3<f32>, ng_4: vec3<f32>, m: GpuMaterial, wo_1: vec3<f32>, r_10: vec3<f32>, lobe_7: vec4<f32>, rl_10: vec4<f32>, w_4: f32, nee_2: u32, u1_5: f32, u2_5: f32) -> vec3<f32> {
     var mis: f32 = 1f;
 
-    let _e13 = light_range_scale(li_6, x_13, r_10, rl_10);
+    let _e13 = light_range_scale(li_6, x_14, r_10, rl_10);
     let _e16 = params.eps;
-    let _e17 = connect(li_6, x_13, n_17, ng_3, _e13, w_4, u1_4, u2_4, _e16);
+    let _e17 = connect(li_6, x_14, n_18, ng_4, _e13, w_4, u1_5, u2_5, _e16);
     if (_e17.cos_x <= 0f) {
         return vec3(0f);
     }
-    let l_10 = normalize((_e17.y - x_13));
+    let l_10 = normalize((_e17.y - x_14));
     let _e30 = lights[li_6];
     let _e31 = light_area(_e30);
     if (_e31 > 0f) {
-        let _e36 = light_pdf(li_6, x_13, n_17, r_10, lobe_7, rl_10, _e17.y, nee_2, true);
+        let _e36 = light_pdf(li_6, x_14, n_18, r_10, lobe_7, rl_10, _e17.y, nee_2, true);
         let _e38 = specular_probability(lobe_7);
-        let _e39 = bsdf_pdf(n_17, wo_1, l_10, m.alpha, _e38);
+        let _e39 = bsdf_pdf(n_18, wo_1, l_10, m.alpha, _e38);
         let _e40 = mis_weight(_e36, _e39);
         mis = _e40;
     }
-    let _e46 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_17, wo_1, l_10);
+    let _e46 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_18, wo_1, l_10);
     let _e49 = mis;
     return ((_e46 * _e17.e) * _e49);
 }
@@ -1186,20 +1192,20 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         candidates[i_4] = 0u;
         return;
     }
-    let x_14 = vtx.position;
-    let n_20 = vtx.normal;
-    let ng_4 = vtx.gnormal;
+    let x_15 = vtx.position;
+    let n_21 = vtx.normal;
+    let ng_5 = vtx.gnormal;
     let m_2 = materials[vtx.material];
     let wo_2 = vtx.wo;
-    let _e23 = mirror_dir(n_20, wo_2);
-    let _e30 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, dot(n_20, wo_2));
+    let _e23 = mirror_dir(n_21, wo_2);
+    let _e30 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, dot(n_21, wo_2));
     let _e31 = range_lobe(_e30);
     let _e34 = params.seed;
     let _e37 = params.frame;
     let _e38 = point_stream(_e34, i_4, _e37);
     let _e39 = pick_stream(_e38);
     h = _e39;
-    let _e44 = bsh_collect(x_14, _e23, _e31, _e38);
+    let _e44 = bsh_collect(x_15, _e23, _e31, _e38);
     candidates[i_4] = _e44.n;
     let _e50 = reservoir_weight(_e44.n, K);
     loop {
@@ -1221,7 +1227,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
             let _e66 = s;
             let _e69 = h;
             let _e70 = xi_from_bits(_e69);
-            let _e71 = shade_pick(_e44.light[_e66], x_14, n_20, ng_4, m_2, wo_2, _e23, _e30, _e31, _e50, _e44.n, _e61, _e70);
+            let _e71 = shade_pick(_e44.light[_e66], x_15, n_21, ng_5, m_2, wo_2, _e23, _e30, _e31, _e50, _e44.n, _e61, _e70);
             sum = (_e64 + _e71);
         }
         continuing {

@@ -112,6 +112,7 @@ const MAP_ORTHOGRAPHIC: u32 = 2u;
 const XI_STEP: f32 = 0.000000059604645f;
 const PICK_STREAM: u32 = 2654435769u;
 const TWO_PI: f32 = 6.2831855f;
+const UNRANGED: f32 = 100000000000000000000000000000000000000f;
 const CULL_RADIUS_SCALE: f32 = 1.000001f;
 const SPHERE_PAD: f32 = 0.00000047683716f;
 const SPHERE_HUGE: f32 = 340282350000000000000000000000000000000f;
@@ -152,9 +153,9 @@ var<storage> geo_tris: array<GpuTriangle>;
 @group(0) @binding(2) 
 var<storage> lights: array<GpuLight>;
 @group(0) @binding(4) 
-var<storage> r2_3: array<f32>;
+var<storage> r2_4: array<f32>;
 @group(0) @binding(3) 
-var<storage> rt2_4: array<f32>;
+var<storage> rt2_5: array<f32>;
 @group(1) @binding(2) 
 var<storage> light_cones: array<GpuLightCone>;
 @group(1) @binding(3) 
@@ -578,12 +579,12 @@ fn subtended_cos(dist2_: f32, r2_2: f32) -> f32 {
 fn emitter_cone(center: vec3<f32>, radius: f32, axis: vec3<f32>, cos_o: f32, p: vec3<f32>) -> vec4<f32> {
     let v_8 = (p - center);
     let dist2_1 = dot(v_8, v_8);
-    let r2_4 = (radius * radius);
-    let d2_9 = max(max(dist2_1, r2_4), MIN_D2_);
+    let r2_5 = (radius * radius);
+    let d2_9 = max(max(dist2_1, r2_5), MIN_D2_);
     let wi_2 = select(vec3<f32>(0f, 0f, 0f), (v_8 / vec3(sqrt(dist2_1))), (dist2_1 > 0f));
     let cos_w = dot(axis, wi_2);
     let _e25 = safe_sqrt((1f - (cos_w * cos_w)));
-    let _e26 = subtended_cos(dist2_1, r2_4);
+    let _e26 = subtended_cos(dist2_1, r2_5);
     let _e30 = safe_sqrt((1f - (_e26 * _e26)));
     let _e34 = safe_sqrt((1f - (cos_o * cos_o)));
     let _e35 = cos_sub_clamped(_e25, cos_w, _e34, cos_o);
@@ -762,8 +763,8 @@ fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin: vec3<f32>, bmax: vec3<f32>, t_
 fn triangle_normal(a_4: vec3<f32>, b_3: vec3<f32>, c_2: vec3<f32>) -> vec3<f32> {
     var local_15: bool;
 
-    let n_18 = cross((b_3 - a_4), (c_2 - a_4));
-    let l2_ = dot(n_18, n_18);
+    let n_19 = cross((b_3 - a_4), (c_2 - a_4));
+    let l2_ = dot(n_19, n_19);
     if !(!((l2_ > 0f))) {
         local_15 = !((l2_ < 300000000000000000000000000000000000000f));
     } else {
@@ -773,7 +774,7 @@ fn triangle_normal(a_4: vec3<f32>, b_3: vec3<f32>, c_2: vec3<f32>) -> vec3<f32> 
     if _e17 {
         return vec3<f32>(0f, 0f, 0f);
     }
-    return (n_18 / vec3(sqrt(l2_)));
+    return (n_19 / vec3(sqrt(l2_)));
 }
 
 fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_4: vec3<f32>, c_3: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
@@ -876,15 +877,15 @@ fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
     let _e14 = ray_inverse3_(d_4);
     loop {
         let _e21 = node;
-        let n_19 = geo_nodes[_e21];
+        let n_20 = geo_nodes[_e21];
         let _e27 = hit.t;
-        let _e28 = ray_aabb(o_2, _e14, n_19.bmin, n_19.bmax, _e27);
+        let _e28 = ray_aabb(o_2, _e14, n_20.bmin, n_20.bmax, _e27);
         if (_e28 >= 0f) {
-            if (n_19.count > 0u) {
-                i = n_19.first;
+            if (n_20.count > 0u) {
+                i = n_20.first;
                 loop {
                     let _e36 = i;
-                    if (_e36 < (n_19.first + n_19.count)) {
+                    if (_e36 < (n_20.first + n_20.count)) {
                     } else {
                         break;
                     }
@@ -912,11 +913,11 @@ fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
                 let _e60 = sp;
                 if (_e60 < 64u) {
                     let _e63 = sp;
-                    stack[_e63] = (n_19.first + 1u);
+                    stack[_e63] = (n_20.first + 1u);
                     let _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node = n_19.first;
+                node = n_20.first;
                 continue;
             }
         }
@@ -945,52 +946,57 @@ fn occluded(a_6: vec3<f32>, b_5: vec3<f32>) -> bool {
     return (_e12.tri != NO_LIGHT);
 }
 
-fn connect_traced(li: u32, x_4: vec3<f32>, n_12: vec3<f32>, ng_1: vec3<f32>, s: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32, trace_1: bool) -> Connection {
+fn connect_record(l_8: GpuLight, x_4: vec3<f32>, n_12: vec3<f32>, ng_1: vec3<f32>, r2_3: f32, rt2_4: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32, trace_1: bool) -> Connection {
     var c_4: Connection;
     var local_19: bool;
     var local_20: bool;
 
     c_4.e = vec3(0f);
-    let l_8 = lights[li];
-    let _e18 = light_point(l_8, u1_2, u2_2);
-    c_4.y = _e18;
-    let _e21 = c_4.y;
-    let _e24 = r2_3[li];
-    let _e26 = connection_cosine(x_4, _e21, n_12, ng_1, (s * _e24));
-    c_4.cos_x = _e26;
-    let _e28 = c_4.cos_x;
-    if !((_e28 <= 0f)) {
+    let _e16 = light_point(l_8, u1_2, u2_2);
+    c_4.y = _e16;
+    let _e19 = c_4.y;
+    let _e20 = connection_cosine(x_4, _e19, n_12, ng_1, r2_3);
+    c_4.cos_x = _e20;
+    let _e22 = c_4.cos_x;
+    if !((_e22 <= 0f)) {
         if trace_1 {
-            let _e39 = c_4.y;
-            let _e40 = occluded((x_4 + (ng_1 * eps)), _e39);
-            local_20 = _e40;
+            let _e33 = c_4.y;
+            let _e34 = occluded((x_4 + (ng_1 * eps)), _e33);
+            local_20 = _e34;
         } else {
             local_20 = false;
         }
-        let _e42 = local_20;
-        local_19 = _e42;
+        let _e36 = local_20;
+        local_19 = _e36;
     } else {
         local_19 = true;
     }
-    let _e44 = local_19;
-    if _e44 {
-        let _e45 = c_4;
-        return _e45;
+    let _e38 = local_19;
+    if _e38 {
+        let _e39 = c_4;
+        return _e39;
     }
-    let _e47 = c_4.y;
-    let v_12 = (x_4 - _e47);
+    let _e41 = c_4.y;
+    let v_12 = (x_4 - _e41);
     let d2_10 = dot(v_12, v_12);
-    let _e54 = light_intensity(l_8, (v_12 / vec3(sqrt(d2_10))));
-    let _e56 = c_4.cos_x;
-    let _e59 = rt2_4[li];
-    let _e61 = connection_factor(_e56, d2_10, (s * _e59), w_res);
-    c_4.e = (_e54 * _e61);
-    let _e63 = c_4;
-    return _e63;
+    let _e48 = light_intensity(l_8, (v_12 / vec3(sqrt(d2_10))));
+    let _e50 = c_4.cos_x;
+    let _e51 = connection_factor(_e50, d2_10, rt2_4, w_res);
+    c_4.e = (_e48 * _e51);
+    let _e53 = c_4;
+    return _e53;
 }
 
-fn connect(li_1: u32, x_5: vec3<f32>, n_13: vec3<f32>, ng_2: vec3<f32>, s_1: f32, w_res_1: f32, u1_3: f32, u2_3: f32, eps_1: f32) -> Connection {
-    let _e10 = connect_traced(li_1, x_5, n_13, ng_2, s_1, w_res_1, u1_3, u2_3, eps_1, true);
+fn connect_traced(li: u32, x_5: vec3<f32>, n_13: vec3<f32>, ng_2: vec3<f32>, s: f32, w_res_1: f32, u1_3: f32, u2_3: f32, eps_1: f32, trace_2: bool) -> Connection {
+    let _e12 = lights[li];
+    let _e15 = r2_4[li];
+    let _e19 = rt2_5[li];
+    let _e21 = connect_record(_e12, x_5, n_13, ng_2, (s * _e15), (s * _e19), w_res_1, u1_3, u2_3, eps_1, trace_2);
+    return _e21;
+}
+
+fn connect(li_1: u32, x_6: vec3<f32>, n_14: vec3<f32>, ng_3: vec3<f32>, s_1: f32, w_res_2: f32, u1_4: f32, u2_4: f32, eps_2: f32) -> Connection {
+    let _e10 = connect_traced(li_1, x_6, n_14, ng_3, s_1, w_res_2, u1_4, u2_4, eps_2, true);
     return _e10;
 }
 
@@ -999,9 +1005,9 @@ fn mis_weight(pdf_a_1: f32, pdf_b_1: f32) -> f32 {
     return _e2;
 }
 
-fn light_range_scale(li_2: u32, x_6: vec3<f32>, r_3: vec3<f32>, rl_2: vec4<f32>) -> f32 {
+fn light_range_scale(li_2: u32, x_7: vec3<f32>, r_3: vec3<f32>, rl_2: vec4<f32>) -> f32 {
     let c_9 = light_cones[li_2];
-    let _e9 = range_scale_toward(rl_2, c_9.center, c_9.radius, x_6, r_3);
+    let _e9 = range_scale_toward(rl_2, c_9.center, c_9.radius, x_7, r_3);
     return _e9;
 }
 
@@ -1014,13 +1020,13 @@ fn light_bvh_count(nodes_1: u32) -> u32 {
     return arrayLength((&light_bvh));
 }
 
-fn bvh_importance(nodes_2: u32, i_2: u32, x_7: vec3<f32>, n_14: vec3<f32>, r_4: vec3<f32>, lobe_7: vec4<f32>) -> f32 {
+fn bvh_importance(nodes_2: u32, i_2: u32, x_8: vec3<f32>, n_15: vec3<f32>, r_4: vec3<f32>, lobe_7: vec4<f32>) -> f32 {
     let _e6 = light_bvh_node(nodes_2, i_2);
-    let _e13 = receiver_importance(_e6.center, _e6.radius, _e6.phi, _e6.axis, _e6.cos_o, _e6.cos_e, x_7, n_14, r_4, lobe_7);
+    let _e13 = receiver_importance(_e6.center, _e6.radius, _e6.phi, _e6.axis, _e6.cos_o, _e6.cos_e, x_8, n_15, r_4, lobe_7);
     return _e13;
 }
 
-fn bvh_first(nodes_3: u32, i_3: u32, x_8: vec3<f32>, n_15: vec3<f32>, r_5: vec3<f32>, lobe_8: vec4<f32>) -> f32 {
+fn bvh_first(nodes_3: u32, i_3: u32, x_9: vec3<f32>, n_16: vec3<f32>, r_5: vec3<f32>, lobe_8: vec4<f32>) -> f32 {
     var local_21: bool;
 
     let _e6 = light_bvh_node(nodes_3, i_3);
@@ -1035,8 +1041,8 @@ fn bvh_first(nodes_3: u32, i_3: u32, x_8: vec3<f32>, n_15: vec3<f32>, r_5: vec3<
     if _e17 {
         return -1f;
     }
-    let _e21 = bvh_importance(nodes_3, (i_3 + 1u), x_8, n_15, r_5, lobe_8);
-    let _e22 = bvh_importance(nodes_3, j, x_8, n_15, r_5, lobe_8);
+    let _e21 = bvh_importance(nodes_3, (i_3 + 1u), x_9, n_16, r_5, lobe_8);
+    let _e22 = bvh_importance(nodes_3, j, x_9, n_16, r_5, lobe_8);
     let _e23 = bvh_first_prob(_e21, _e22);
     return _e23;
 }
@@ -1045,7 +1051,7 @@ fn bvh_pick_none() -> BvhPick {
     return BvhPick(0u, 0f);
 }
 
-fn light_bvh_sample(nodes_4: u32, x_9: vec3<f32>, n_16: vec3<f32>, r_6: vec3<f32>, lobe_9: vec4<f32>, u_in: f32) -> BvhPick {
+fn light_bvh_sample(nodes_4: u32, x_10: vec3<f32>, n_17: vec3<f32>, r_6: vec3<f32>, lobe_9: vec4<f32>, u_in: f32) -> BvhPick {
     var pick: BvhPick;
     var u_2: f32;
     var i_4: u32 = 0u;
@@ -1068,7 +1074,7 @@ fn light_bvh_sample(nodes_4: u32, x_9: vec3<f32>, n_16: vec3<f32>, r_6: vec3<f32
             if (_e17.second == LIGHT_BVH_LEAF) {
                 let _e21 = i_4;
                 if !((_e21 > 0u)) {
-                    let _e28 = bvh_importance(nodes_4, 0u, x_9, n_16, r_6, lobe_9);
+                    let _e28 = bvh_importance(nodes_4, 0u, x_10, n_17, r_6, lobe_9);
                     local_22 = (_e28 > 0f);
                 } else {
                     local_22 = true;
@@ -1083,7 +1089,7 @@ fn light_bvh_sample(nodes_4: u32, x_9: vec3<f32>, n_16: vec3<f32>, r_6: vec3<f32
                 return _e37;
             }
             let _e38 = i_4;
-            let _e39 = bvh_first(nodes_4, _e38, x_9, n_16, r_6, lobe_9);
+            let _e39 = bvh_first(nodes_4, _e38, x_10, n_17, r_6, lobe_9);
             if (_e39 < 0f) {
                 let _e42 = pick;
                 return _e42;
@@ -1103,39 +1109,39 @@ fn light_bvh_sample(nodes_4: u32, x_9: vec3<f32>, n_16: vec3<f32>, r_6: vec3<f32
     return _e57;
 }
 
-fn light_pdf_selected(li_3: u32, x_10: vec3<f32>, r_7: vec3<f32>, rl_3: vec4<f32>, y_1: vec3<f32>, sel: f32) -> f32 {
+fn light_pdf_selected(li_3: u32, x_11: vec3<f32>, r_7: vec3<f32>, rl_3: vec4<f32>, y_1: vec3<f32>, sel: f32) -> f32 {
     let l_9 = lights[li_3];
-    let v_13 = (x_10 - y_1);
+    let v_13 = (x_11 - y_1);
     let d2_11 = dot(v_13, v_13);
     let _e11 = light_normal(l_9);
     let cos_y_1 = select(0f, dot(_e11, (v_13 / vec3(sqrt(d2_11)))), (d2_11 > 0f));
-    let _e20 = light_range_scale(li_3, x_10, r_7, rl_3);
-    let _e23 = rt2_4[li_3];
+    let _e20 = light_range_scale(li_3, x_11, r_7, rl_3);
+    let _e23 = rt2_5[li_3];
     let _e25 = light_area(l_9);
     let _e26 = light_strategy_pdf(sel, (_e20 * _e23), d2_11, _e25, cos_y_1);
     return _e26;
 }
 
-fn shade_pick(li_4: u32, x_11: vec3<f32>, n_17: vec3<f32>, ng_3: vec3<f32>, m: GpuMaterial, wo_1: vec3<f32>, r_8: vec3<f32>, lobe_10: vec4<f32>, rl_4: vec4<f32>, w_4: f32, nee: u32, u1_4: f32, u2_4: f32) -> vec3<f32> {
+fn shade_pick(li_4: u32, x_12: vec3<f32>, n_18: vec3<f32>, ng_4: vec3<f32>, m: GpuMaterial, wo_1: vec3<f32>, r_8: vec3<f32>, lobe_10: vec4<f32>, rl_4: vec4<f32>, w_4: f32, nee: u32, u1_5: f32, u2_5: f32) -> vec3<f32> {
     var mis: f32 = 1f;
 
-    let _e13 = light_range_scale(li_4, x_11, r_8, rl_4);
+    let _e13 = light_range_scale(li_4, x_12, r_8, rl_4);
     let _e16 = params.eps;
-    let _e17 = connect(li_4, x_11, n_17, ng_3, _e13, w_4, u1_4, u2_4, _e16);
+    let _e17 = connect(li_4, x_12, n_18, ng_4, _e13, w_4, u1_5, u2_5, _e16);
     if (_e17.cos_x <= 0f) {
         return vec3(0f);
     }
-    let l_10 = normalize((_e17.y - x_11));
+    let l_10 = normalize((_e17.y - x_12));
     let _e30 = lights[li_4];
     let _e31 = light_area(_e30);
     if (_e31 > 0f) {
-        let _e37 = light_pdf_selected(li_4, x_11, r_8, rl_4, _e17.y, (1f / w_4));
+        let _e37 = light_pdf_selected(li_4, x_12, r_8, rl_4, _e17.y, (1f / w_4));
         let _e39 = specular_probability(lobe_10);
-        let _e40 = bsdf_pdf(n_17, wo_1, l_10, m.alpha, _e39);
+        let _e40 = bsdf_pdf(n_18, wo_1, l_10, m.alpha, _e39);
         let _e41 = mis_weight(_e37, _e40);
         mis = _e41;
     }
-    let _e47 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_17, wo_1, l_10);
+    let _e47 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_18, wo_1, l_10);
     let _e50 = mis;
     return ((_e47 * _e17.e) * _e50);
 }
@@ -1155,13 +1161,13 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         candidates[i_5] = 0u;
         return;
     }
-    let x_12 = vtx.position;
-    let n_20 = vtx.normal;
-    let ng_4 = vtx.gnormal;
+    let x_13 = vtx.position;
+    let n_21 = vtx.normal;
+    let ng_5 = vtx.gnormal;
     let m_2 = materials[vtx.material];
     let wo_2 = vtx.wo;
-    let _e23 = mirror_dir(n_20, wo_2);
-    let _e30 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, dot(n_20, wo_2));
+    let _e23 = mirror_dir(n_21, wo_2);
+    let _e30 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, dot(n_21, wo_2));
     let _e31 = range_lobe(_e30);
     let _e34 = params.seed;
     let _e37 = params.frame;
@@ -1174,7 +1180,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     h = _e48;
     let _e49 = h;
     let _e50 = xi_from_bits(_e49);
-    let _e52 = light_bvh_sample(BVH, x_12, n_20, _e23, _e30, _e50);
+    let _e52 = light_bvh_sample(BVH, x_13, n_21, _e23, _e30, _e50);
     let li_5 = _e52.light;
     let pmf_1 = _e52.pmf;
     let _e55 = h;
@@ -1188,7 +1194,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     let _e61 = h;
     let _e62 = xi_from_bits(_e61);
     if (pmf_1 > 0f) {
-        let _e68 = shade_pick(li_5, x_12, n_20, ng_4, m_2, wo_2, _e23, _e30, _e31, (1f / pmf_1), 0u, _e58, _e62);
+        let _e68 = shade_pick(li_5, x_13, n_21, ng_5, m_2, wo_2, _e23, _e30, _e31, (1f / pmf_1), 0u, _e58, _e62);
         sum = _e68;
     }
     let _e70 = sum;

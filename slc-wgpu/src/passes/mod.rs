@@ -74,8 +74,8 @@ pub mod indirect;
 pub mod temporal;
 
 pub use direct::{
-    Dielectric, DirectInputs, DirectOutputs, DirectPass, DirectPassDesc, DirectSelection,
-    DirectSettings, MaterialInputs, Shadows,
+    Dielectric, DirectInputs, DirectOutputs, DirectPass, DirectPassDesc, DirectReuse,
+    DirectSelection, DirectSettings, MaterialInputs, Shadows,
 };
 pub use indirect::{
     IndirectInputs, IndirectMaterials, IndirectPass, IndirectPassDesc, IndirectSettings, VplInput,

@@ -74,6 +74,7 @@ const uint MAP_ORTHOGRAPHIC = 2u;
 const float XI_STEP = 5.9604645e-8;
 const uint PICK_STREAM = 2654435769u;
 const float TWO_PI = 6.2831855;
+const float UNRANGED = 1e38;
 const float CULL_RADIUS_SCALE = 1.000001;
 const float SPHERE_PAD = 4.7683716e-7;
 const float SPHERE_HUGE = 3.4028235e38;
@@ -647,12 +648,12 @@ GeoHit trace(vec3 o_2, vec3 d_4, float t_min_1, float t_max_2, bool any_hit) {
     vec3 _e14 = ray_inverse3_(d_4);
     while(true) {
         uint _e21 = node_2;
-        GpuGeoNode n_8 = _group_0_binding_7_cs[_e21];
+        GpuGeoNode n_9 = _group_0_binding_7_cs[_e21];
         float _e27 = hit.t;
-        float _e28 = ray_aabb(o_2, _e14, n_8.bmin, n_8.bmax, _e27);
+        float _e28 = ray_aabb(o_2, _e14, n_9.bmin, n_9.bmax, _e27);
         if ((_e28 >= 0.0)) {
-            if ((n_8.count > 0u)) {
-                i_1 = n_8.first;
+            if ((n_9.count > 0u)) {
+                i_1 = n_9.first;
                 bool loop_init = true;
                 while(true) {
                     if (!loop_init) {
@@ -661,7 +662,7 @@ GeoHit trace(vec3 o_2, vec3 d_4, float t_min_1, float t_max_2, bool any_hit) {
                     }
                     loop_init = false;
                     uint _e36 = i_1;
-                    if ((_e36 < (n_8.first + n_8.count))) {
+                    if ((_e36 < (n_9.first + n_9.count))) {
                     } else {
                         break;
                     }
@@ -685,11 +686,11 @@ GeoHit trace(vec3 o_2, vec3 d_4, float t_min_1, float t_max_2, bool any_hit) {
                 uint _e60 = sp;
                 if ((_e60 < 64u)) {
                     uint _e63 = sp;
-                    stack[_e63] = (n_8.first + 1u);
+                    stack[_e63] = (n_9.first + 1u);
                     uint _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_2 = n_8.first;
+                node_2 = n_9.first;
                 continue;
             }
         }
@@ -861,51 +862,56 @@ Picks bsh_collect(vec3 x_11, vec3 r_5, vec4 rl_5, uint seed_1) {
     return _e49;
 }
 
-Connection connect_traced(uint li, vec3 x_12, vec3 n_6, vec3 ng_1, float s_1, float w_res, float u1_1, float u2_1, float eps, bool trace_1) {
+Connection connect_record(GpuLight l_2, vec3 x_12, vec3 n_6, vec3 ng_1, float r2_2, float rt2_2, float w_res, float u1_1, float u2_1, float eps, bool trace_1) {
     Connection c_4 = Connection(vec3(0.0), vec3(0.0), 0.0);
     bool local_10 = false;
     bool local_11 = false;
     c_4.e = vec3(0.0);
-    GpuLight l_2 = _group_0_binding_3_cs[li];
-    vec3 _e18 = light_point(l_2, u1_1, u2_1);
-    c_4.y = _e18;
-    vec3 _e21 = c_4.y;
-    float _e24 = _group_0_binding_5_cs[li];
-    float _e26 = connection_cosine(x_12, _e21, n_6, ng_1, (s_1 * _e24));
-    c_4.cos_x = _e26;
-    float _e28 = c_4.cos_x;
-    if (!((_e28 <= 0.0))) {
+    vec3 _e16 = light_point(l_2, u1_1, u2_1);
+    c_4.y = _e16;
+    vec3 _e19 = c_4.y;
+    float _e20 = connection_cosine(x_12, _e19, n_6, ng_1, r2_2);
+    c_4.cos_x = _e20;
+    float _e22 = c_4.cos_x;
+    if (!((_e22 <= 0.0))) {
         if (trace_1) {
-            vec3 _e39 = c_4.y;
-            bool _e40 = occluded((x_12 + (ng_1 * eps)), _e39);
-            local_11 = _e40;
+            vec3 _e33 = c_4.y;
+            bool _e34 = occluded((x_12 + (ng_1 * eps)), _e33);
+            local_11 = _e34;
         } else {
             local_11 = false;
         }
-        bool _e42 = local_11;
-        local_10 = _e42;
+        bool _e36 = local_11;
+        local_10 = _e36;
     } else {
         local_10 = true;
     }
-    bool _e44 = local_10;
-    if (_e44) {
-        Connection _e45 = c_4;
-        return _e45;
+    bool _e38 = local_10;
+    if (_e38) {
+        Connection _e39 = c_4;
+        return _e39;
     }
-    vec3 _e47 = c_4.y;
-    vec3 v_7 = (x_12 - _e47);
+    vec3 _e41 = c_4.y;
+    vec3 v_7 = (x_12 - _e41);
     float d2_8 = dot(v_7, v_7);
-    vec3 _e54 = light_intensity(l_2, (v_7 / vec3(sqrt(d2_8))));
-    float _e56 = c_4.cos_x;
-    float _e59 = _group_0_binding_4_cs[li];
-    float _e61 = connection_factor(_e56, d2_8, (s_1 * _e59), w_res);
-    c_4.e = (_e54 * _e61);
-    Connection _e63 = c_4;
-    return _e63;
+    vec3 _e48 = light_intensity(l_2, (v_7 / vec3(sqrt(d2_8))));
+    float _e50 = c_4.cos_x;
+    float _e51 = connection_factor(_e50, d2_8, rt2_2, w_res);
+    c_4.e = (_e48 * _e51);
+    Connection _e53 = c_4;
+    return _e53;
 }
 
-Connection connect(uint li_1, vec3 x_13, vec3 n_7, vec3 ng_2, float s_2, float w_res_1, float u1_2, float u2_2, float eps_1) {
-    Connection _e10 = connect_traced(li_1, x_13, n_7, ng_2, s_2, w_res_1, u1_2, u2_2, eps_1, true);
+Connection connect_traced(uint li, vec3 x_13, vec3 n_7, vec3 ng_2, float s_1, float w_res_1, float u1_2, float u2_2, float eps_1, bool trace_2) {
+    GpuLight _e12 = _group_0_binding_3_cs[li];
+    float _e15 = _group_0_binding_5_cs[li];
+    float _e19 = _group_0_binding_4_cs[li];
+    Connection _e21 = connect_record(_e12, x_13, n_7, ng_2, (s_1 * _e15), (s_1 * _e19), w_res_1, u1_2, u2_2, eps_1, trace_2);
+    return _e21;
+}
+
+Connection connect(uint li_1, vec3 x_14, vec3 n_8, vec3 ng_3, float s_2, float w_res_2, float u1_3, float u2_3, float eps_2) {
+    Connection _e10 = connect_traced(li_1, x_14, n_8, ng_3, s_2, w_res_2, u1_3, u2_3, eps_2, true);
     return _e10;
 }
 
@@ -924,13 +930,13 @@ void main() {
         _group_0_binding_9_cs[i_5] = vec4(0.0);
         return;
     }
-    vec3 x_14 = p_3.xyz;
+    vec3 x_15 = p_3.xyz;
     vec4 _e19 = _group_0_binding_2_cs[i_5];
-    vec3 n_9 = _e19.xyz;
+    vec3 n_10 = _e19.xyz;
     uint _e23 = _group_0_binding_0_cs.seed;
     uint _e26 = _group_0_binding_0_cs.frame;
     uint _e27 = point_stream(_e23, i_5, _e26);
-    Picks _e33 = bsh_collect(x_14, x_14, vec4(1.0, 0.0, 1.0, 1.0), _e27);
+    Picks _e33 = bsh_collect(x_15, x_15, vec4(1.0, 0.0, 1.0, 1.0), _e27);
     float _e36 = reservoir_weight(_e33.n, K);
     uint _e37 = pick_stream(_e27);
     h = _e37;
@@ -960,7 +966,7 @@ void main() {
             uint _e60 = h;
             float _e61 = xi_from_bits(_e60);
             float _e64 = _group_0_binding_0_cs.eps;
-            Connection _e65 = connect(_e33.light[_e57], x_14, n_9, n_9, 1.0, _e36, _e52, _e61, _e64);
+            Connection _e65 = connect(_e33.light[_e57], x_15, n_10, n_10, 1.0, _e36, _e52, _e61, _e64);
             e = (_e55 + _e65.e);
         }
     }

@@ -56,6 +56,7 @@ const uint MAP_ORTHOGRAPHIC = 2u;
 const float XI_STEP = 5.9604645e-8;
 const uint PICK_STREAM = 2654435769u;
 const float TWO_PI = 6.2831855;
+const float UNRANGED = 1e38;
 const float CULL_RADIUS_SCALE = 1.000001;
 const float SPHERE_PAD = 4.7683716e-7;
 const float SPHERE_HUGE = 3.4028235e38;
@@ -319,8 +320,8 @@ float range_scale_toward(vec4 rl_1, vec3 center_1, float radius_1, vec3 p_1, vec
 
 vec3 triangle_normal(vec3 a_5, vec3 b_4, vec3 c_2) {
     bool local_4 = false;
-    vec3 n_8 = cross((b_4 - a_5), (c_2 - a_5));
-    float l2_ = dot(n_8, n_8);
+    vec3 n_9 = cross((b_4 - a_5), (c_2 - a_5));
+    float l2_ = dot(n_9, n_9);
     if (!(!((l2_ > 0.0)))) {
         local_4 = !((l2_ < 3e38));
     } else {
@@ -330,7 +331,7 @@ vec3 triangle_normal(vec3 a_5, vec3 b_4, vec3 c_2) {
     if (_e17) {
         return vec3(0.0, 0.0, 0.0);
     }
-    return (n_8 / vec3(sqrt(l2_)));
+    return (n_9 / vec3(sqrt(l2_)));
 }
 
 vec3 light_intensity(GpuLight l, vec3 w_2) {
@@ -504,51 +505,56 @@ Picks bsh_collect(vec3 x_5, vec3 r_5, vec4 rl_5, uint seed_1) {
     return _e49;
 }
 
-Connection connect_traced(uint li, vec3 x_6, vec3 n_6, vec3 ng_1, float s_1, float w_res, float u1_2, float u2_2, float eps, bool trace) {
+Connection connect_record(GpuLight l_2, vec3 x_6, vec3 n_6, vec3 ng_1, float r2_2, float rt2_2, float w_res, float u1_2, float u2_2, float eps, bool trace) {
     Connection c_3 = Connection(vec3(0.0), vec3(0.0), 0.0);
     bool local_7 = false;
     bool local_8 = false;
     c_3.e = vec3(0.0);
-    GpuLight l_2 = _group_0_binding_3_cs[li];
-    vec3 _e18 = light_point(l_2, u1_2, u2_2);
-    c_3.y = _e18;
-    vec3 _e21 = c_3.y;
-    float _e24 = _group_0_binding_5_cs[li];
-    float _e26 = connection_cosine(x_6, _e21, n_6, ng_1, (s_1 * _e24));
-    c_3.cos_x = _e26;
-    float _e28 = c_3.cos_x;
-    if (!((_e28 <= 0.0))) {
+    vec3 _e16 = light_point(l_2, u1_2, u2_2);
+    c_3.y = _e16;
+    vec3 _e19 = c_3.y;
+    float _e20 = connection_cosine(x_6, _e19, n_6, ng_1, r2_2);
+    c_3.cos_x = _e20;
+    float _e22 = c_3.cos_x;
+    if (!((_e22 <= 0.0))) {
         if (trace) {
-            vec3 _e39 = c_3.y;
-            bool _e40 = occluded((x_6 + (ng_1 * eps)), _e39);
-            local_8 = _e40;
+            vec3 _e33 = c_3.y;
+            bool _e34 = occluded((x_6 + (ng_1 * eps)), _e33);
+            local_8 = _e34;
         } else {
             local_8 = false;
         }
-        bool _e42 = local_8;
-        local_7 = _e42;
+        bool _e36 = local_8;
+        local_7 = _e36;
     } else {
         local_7 = true;
     }
-    bool _e44 = local_7;
-    if (_e44) {
-        Connection _e45 = c_3;
-        return _e45;
+    bool _e38 = local_7;
+    if (_e38) {
+        Connection _e39 = c_3;
+        return _e39;
     }
-    vec3 _e47 = c_3.y;
-    vec3 v_6 = (x_6 - _e47);
+    vec3 _e41 = c_3.y;
+    vec3 v_6 = (x_6 - _e41);
     float d2_8 = dot(v_6, v_6);
-    vec3 _e54 = light_intensity(l_2, (v_6 / vec3(sqrt(d2_8))));
-    float _e56 = c_3.cos_x;
-    float _e59 = _group_0_binding_4_cs[li];
-    float _e61 = connection_factor(_e56, d2_8, (s_1 * _e59), w_res);
-    c_3.e = (_e54 * _e61);
-    Connection _e63 = c_3;
-    return _e63;
+    vec3 _e48 = light_intensity(l_2, (v_6 / vec3(sqrt(d2_8))));
+    float _e50 = c_3.cos_x;
+    float _e51 = connection_factor(_e50, d2_8, rt2_2, w_res);
+    c_3.e = (_e48 * _e51);
+    Connection _e53 = c_3;
+    return _e53;
 }
 
-Connection connect(uint li_1, vec3 x_7, vec3 n_7, vec3 ng_2, float s_2, float w_res_1, float u1_3, float u2_3, float eps_1) {
-    Connection _e10 = connect_traced(li_1, x_7, n_7, ng_2, s_2, w_res_1, u1_3, u2_3, eps_1, true);
+Connection connect_traced(uint li, vec3 x_7, vec3 n_7, vec3 ng_2, float s_1, float w_res_1, float u1_3, float u2_3, float eps_1, bool trace_1) {
+    GpuLight _e12 = _group_0_binding_3_cs[li];
+    float _e15 = _group_0_binding_5_cs[li];
+    float _e19 = _group_0_binding_4_cs[li];
+    Connection _e21 = connect_record(_e12, x_7, n_7, ng_2, (s_1 * _e15), (s_1 * _e19), w_res_1, u1_3, u2_3, eps_1, trace_1);
+    return _e21;
+}
+
+Connection connect(uint li_1, vec3 x_8, vec3 n_8, vec3 ng_3, float s_2, float w_res_2, float u1_4, float u2_4, float eps_2) {
+    Connection _e10 = connect_traced(li_1, x_8, n_8, ng_3, s_2, w_res_2, u1_4, u2_4, eps_2, true);
     return _e10;
 }
 
@@ -567,13 +573,13 @@ void main() {
         _group_0_binding_9_cs[i_3] = vec4(0.0);
         return;
     }
-    vec3 x_8 = p_2.xyz;
+    vec3 x_9 = p_2.xyz;
     vec4 _e19 = _group_0_binding_2_cs[i_3];
-    vec3 n_9 = _e19.xyz;
+    vec3 n_10 = _e19.xyz;
     uint _e23 = _group_0_binding_0_cs.seed;
     uint _e26 = _group_0_binding_0_cs.frame;
     uint _e27 = point_stream(_e23, i_3, _e26);
-    Picks _e33 = bsh_collect(x_8, x_8, vec4(1.0, 0.0, 1.0, 1.0), _e27);
+    Picks _e33 = bsh_collect(x_9, x_9, vec4(1.0, 0.0, 1.0, 1.0), _e27);
     float _e36 = reservoir_weight(_e33.n, K);
     uint _e37 = pick_stream(_e27);
     h = _e37;
@@ -603,7 +609,7 @@ void main() {
             uint _e60 = h;
             float _e61 = xi_from_bits(_e60);
             float _e64 = _group_0_binding_0_cs.eps;
-            Connection _e65 = connect(_e33.light[_e57], x_8, n_9, n_9, 1.0, _e36, _e52, _e61, _e64);
+            Connection _e65 = connect(_e33.light[_e57], x_9, n_10, n_10, 1.0, _e36, _e52, _e61, _e64);
             e = (_e55 + _e65.e);
         }
     }

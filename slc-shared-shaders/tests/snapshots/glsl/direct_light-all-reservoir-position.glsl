@@ -77,6 +77,7 @@ const uint MAP_ORTHOGRAPHIC = 2u;
 const float XI_STEP = 5.9604645e-8;
 const uint PICK_STREAM = 2654435769u;
 const float TWO_PI = 6.2831855;
+const float UNRANGED = 1e38;
 const float CULL_RADIUS_SCALE = 1.000001;
 const float SPHERE_PAD = 4.7683716e-7;
 const float SPHERE_HUGE = 3.4028235e38;
@@ -427,8 +428,8 @@ float ies_candela_dir(uint tab_3, uint base_2, float wn, float wr, float ws) {
     float gamma_1 = degrees(_e9);
     bool on_axis = ((abs(wr) + abs(ws)) <= 0.0);
     float _e16 = atan2_portable(ws, wr);
-    float c_6 = (on_axis ? 0.0 : degrees(_e16));
-    float _e20 = ies_candela(tab_3, base_2, gamma_1, c_6);
+    float c_7 = (on_axis ? 0.0 : degrees(_e16));
+    float _e20 = ies_candela(tab_3, base_2, gamma_1, c_7);
     return _e20;
 }
 
@@ -552,8 +553,8 @@ float cone_cos_of(vec3 v, float d2_4, float a_5, vec3 d) {
     if (_e21) {
         return 1.0;
     }
-    vec3 c_7 = cross(v, d);
-    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_7, c_7)) * a_5)) / d2_4), 1.0);
+    vec3 c_8 = cross(v, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_8, c_8)) * a_5)) / d2_4), 1.0);
 }
 
 float cone_cos_toward(vec3 center, float radius, vec3 p, vec3 d_1) {
@@ -578,8 +579,8 @@ float range_scale_toward(vec4 rl_1, vec3 center_1, float radius_1, vec3 p_1, vec
 
 vec3 triangle_normal(vec3 a_6, vec3 b_4, vec3 c_4) {
     bool local_7 = false;
-    vec3 n_10 = cross((b_4 - a_6), (c_4 - a_6));
-    float l2_ = dot(n_10, n_10);
+    vec3 n_12 = cross((b_4 - a_6), (c_4 - a_6));
+    float l2_ = dot(n_12, n_12);
     if (!(!((l2_ > 0.0)))) {
         local_7 = !((l2_ < 3e38));
     } else {
@@ -589,7 +590,7 @@ vec3 triangle_normal(vec3 a_6, vec3 b_4, vec3 c_4) {
     if (_e17) {
         return vec3(0.0, 0.0, 0.0);
     }
-    return (n_10 / vec3(sqrt(l2_)));
+    return (n_12 / vec3(sqrt(l2_)));
 }
 
 vec3 light_intensity(GpuLight l, vec3 w_3) {
@@ -771,47 +772,52 @@ Picks bsh_collect(vec3 x_10, vec3 r_6, vec4 rl_5, uint seed_1) {
     return _e49;
 }
 
-Connection connect_traced(uint li, vec3 x_11, vec3 n_7, vec3 ng_1, float s, float w_res, float u1_2, float u2_2, float eps, bool trace) {
+Connection connect_record(GpuLight l_2, vec3 x_11, vec3 n_7, vec3 ng_1, float r2_2, float rt2_2, float w_res, float u1_2, float u2_2, float eps, bool trace) {
     Connection c_5 = Connection(vec3(0.0), vec3(0.0), 0.0);
     bool local_10 = false;
     bool local_11 = false;
     c_5.e = vec3(0.0);
-    GpuLight l_2 = _group_1_binding_1_cs[li];
-    vec3 _e18 = light_point(l_2, u1_2, u2_2);
-    c_5.y = _e18;
-    vec3 _e21 = c_5.y;
-    float _e24 = _group_1_binding_3_cs[li];
-    float _e26 = connection_cosine(x_11, _e21, n_7, ng_1, (s * _e24));
-    c_5.cos_x = _e26;
-    float _e28 = c_5.cos_x;
-    if (!((_e28 <= 0.0))) {
+    vec3 _e16 = light_point(l_2, u1_2, u2_2);
+    c_5.y = _e16;
+    vec3 _e19 = c_5.y;
+    float _e20 = connection_cosine(x_11, _e19, n_7, ng_1, r2_2);
+    c_5.cos_x = _e20;
+    float _e22 = c_5.cos_x;
+    if (!((_e22 <= 0.0))) {
         if (trace) {
-            vec3 _e39 = c_5.y;
-            bool _e40 = occluded((x_11 + (ng_1 * eps)), _e39);
-            local_11 = _e40;
+            vec3 _e33 = c_5.y;
+            bool _e34 = occluded((x_11 + (ng_1 * eps)), _e33);
+            local_11 = _e34;
         } else {
             local_11 = false;
         }
-        bool _e42 = local_11;
-        local_10 = _e42;
+        bool _e36 = local_11;
+        local_10 = _e36;
     } else {
         local_10 = true;
     }
-    bool _e44 = local_10;
-    if (_e44) {
-        Connection _e45 = c_5;
-        return _e45;
+    bool _e38 = local_10;
+    if (_e38) {
+        Connection _e39 = c_5;
+        return _e39;
     }
-    vec3 _e47 = c_5.y;
-    vec3 v_6 = (x_11 - _e47);
+    vec3 _e41 = c_5.y;
+    vec3 v_6 = (x_11 - _e41);
     float d2_8 = dot(v_6, v_6);
-    vec3 _e54 = light_intensity(l_2, (v_6 / vec3(sqrt(d2_8))));
-    float _e56 = c_5.cos_x;
-    float _e59 = _group_1_binding_2_cs[li];
-    float _e61 = connection_factor(_e56, d2_8, (s * _e59), w_res);
-    c_5.e = (_e54 * _e61);
-    Connection _e63 = c_5;
-    return _e63;
+    vec3 _e48 = light_intensity(l_2, (v_6 / vec3(sqrt(d2_8))));
+    float _e50 = c_5.cos_x;
+    float _e51 = connection_factor(_e50, d2_8, rt2_2, w_res);
+    c_5.e = (_e48 * _e51);
+    Connection _e53 = c_5;
+    return _e53;
+}
+
+Connection connect_traced(uint li, vec3 x_12, vec3 n_8, vec3 ng_2, float s, float w_res_1, float u1_3, float u2_3, float eps_1, bool trace_1) {
+    GpuLight _e12 = _group_1_binding_1_cs[li];
+    float _e15 = _group_1_binding_3_cs[li];
+    float _e19 = _group_1_binding_2_cs[li];
+    Connection _e21 = connect_record(_e12, x_12, n_8, ng_2, (s * _e15), (s * _e19), w_res_1, u1_3, u2_3, eps_1, trace_1);
+    return _e21;
 }
 
 vec4 surface_at(ivec2 texel) {
@@ -819,18 +825,23 @@ vec4 surface_at(ivec2 texel) {
     return ((p_2.w > 0.0) ? vec4(p_2.xyz, 1.0) : vec4(0.0));
 }
 
-Shaded shade_pick_traced(uint li_1, vec3 x_12, vec3 n_8, vec3 r_7, vec4 rl_6, Material m_1, float w_4, float u1_3, float u2_3, float eps_1, bool trace_1) {
+Shaded shade_connection(Connection c_6, vec3 x_13, vec3 n_9, Material m_1) {
     Shaded s_1 = Shaded(vec3(0.0), vec3(0.0), vec3(0.0));
-    Connection _e13 = connect_traced(li_1, x_12, n_8, n_8, 1.0, w_4, u1_3, u2_3, eps_1, trace_1);
-    s_1.e = _e13.e;
+    s_1.e = c_6.e;
     s_1.diffuse = vec3(0.0);
     s_1.specular = vec3(0.0);
-    Shaded _e22 = s_1;
-    return _e22;
+    Shaded _e13 = s_1;
+    return _e13;
 }
 
-Shaded shade_pick(uint li_2, vec3 x_13, vec3 n_9, vec3 r_8, vec4 rl_7, Material m_2, float w_5, float u1_4, float u2_4, float eps_2) {
-    Shaded _e11 = shade_pick_traced(li_2, x_13, n_9, r_8, rl_7, m_2, w_5, u1_4, u2_4, eps_2, true);
+Shaded shade_pick_traced(uint li_1, vec3 x_14, vec3 n_10, vec3 r_7, vec4 rl_6, Material m_2, float w_4, float u1_4, float u2_4, float eps_2, bool trace_2) {
+    Connection _e12 = connect_traced(li_1, x_14, n_10, n_10, 1.0, w_4, u1_4, u2_4, eps_2, trace_2);
+    Shaded _e13 = shade_connection(_e12, x_14, n_10, m_2);
+    return _e13;
+}
+
+Shaded shade_pick(uint li_2, vec3 x_15, vec3 n_11, vec3 r_8, vec4 rl_7, Material m_3, float w_5, float u1_5, float u2_5, float eps_3) {
+    Shaded _e11 = shade_pick_traced(li_2, x_15, n_11, r_8, rl_7, m_3, w_5, u1_5, u2_5, eps_3, true);
     return _e11;
 }
 
@@ -874,14 +885,14 @@ void main() {
         imageStore(_group_0_binding_3_cs, texel_1, vec4(0.0));
         return;
     }
-    vec3 x_14 = _e21.xyz;
-    vec3 n_11 = (nn / vec3(sqrt(len2_)));
-    r = n_11;
+    vec3 x_16 = _e21.xyz;
+    vec3 n_13 = (nn / vec3(sqrt(len2_)));
+    r = n_13;
     vec4 _e53 = lobe;
     vec4 _e54 = range_lobe(_e53);
     float _e57 = _group_0_binding_0_cs.shadow_offset;
     vec3 _e60 = _group_0_binding_0_cs.eye;
-    float eps_3 = (_e57 * length((_e60 - x_14)));
+    float eps_4 = (_e57 * length((_e60 - x_16)));
     uint _e66 = _group_0_binding_0_cs.seed;
     uint _e70 = _group_0_binding_0_cs.width;
     uint _e76 = _group_0_binding_0_cs.frame;
@@ -889,7 +900,7 @@ void main() {
     uint _e78 = pick_stream(_e77);
     h = _e78;
     vec3 _e88 = r;
-    Picks _e89 = bsh_collect(x_14, _e88, _e54, _e77);
+    Picks _e89 = bsh_collect(x_16, _e88, _e54, _e77);
     float _e92 = reservoir_weight(_e89.n, K);
     bool loop_init_1 = true;
     while(true) {
@@ -918,7 +929,7 @@ void main() {
             Material _e111 = m;
             uint _e112 = h;
             float _e113 = xi_from_bits(_e112);
-            Shaded _e114 = shade_pick(_e89.light[_e108], x_14, n_11, _e110, _e54, _e111, _e92, _e103, _e113, eps_3);
+            Shaded _e114 = shade_pick(_e89.light[_e108], x_16, n_13, _e110, _e54, _e111, _e92, _e103, _e113, eps_4);
             Shaded _e115 = add(_e106, _e114);
             t = _e115;
         }

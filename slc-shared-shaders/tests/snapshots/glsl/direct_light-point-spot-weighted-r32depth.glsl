@@ -108,6 +108,7 @@ const uint MAP_ORTHOGRAPHIC = 2u;
 const float XI_STEP = 5.9604645e-8;
 const uint PICK_STREAM = 2654435769u;
 const float TWO_PI = 6.2831855;
+const float UNRANGED = 1e38;
 const float CULL_RADIUS_SCALE = 1.000001;
 const float SPHERE_PAD = 4.7683716e-7;
 const float SPHERE_HUGE = 3.4028235e38;
@@ -360,12 +361,12 @@ float subtended_cos(float dist2_, float r2_2) {
 vec4 emitter_cone(vec3 center, float radius, vec3 axis, float cos_o, vec3 p) {
     vec3 v_5 = (p - center);
     float dist2_1 = dot(v_5, v_5);
-    float r2_4 = (radius * radius);
-    float d2_8 = max(max(dist2_1, r2_4), MIN_D2_);
+    float r2_5 = (radius * radius);
+    float d2_8 = max(max(dist2_1, r2_5), MIN_D2_);
     vec3 wi = ((dist2_1 > 0.0) ? (v_5 / vec3(sqrt(dist2_1))) : vec3(0.0, 0.0, 0.0));
     float cos_w = dot(axis, wi);
     float _e25 = safe_sqrt((1.0 - (cos_w * cos_w)));
-    float _e26 = subtended_cos(dist2_1, r2_4);
+    float _e26 = subtended_cos(dist2_1, r2_5);
     float _e30 = safe_sqrt((1.0 - (_e26 * _e26)));
     float _e34 = safe_sqrt((1.0 - (cos_o * cos_o)));
     float _e35 = cos_sub_clamped(_e25, cos_w, _e34, cos_o);
@@ -402,8 +403,8 @@ float cone_cos_of(vec3 v, float d2_4, float a_2, vec3 d) {
     if (_e21) {
         return 1.0;
     }
-    vec3 c_3 = cross(v, d);
-    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_3, c_3)) * a_2)) / d2_4), 1.0);
+    vec3 c_4 = cross(v, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_4, c_4)) * a_2)) / d2_4), 1.0);
 }
 
 float cone_cos_toward(vec3 center_2, float radius_2, vec3 p_2, vec3 d_1) {
@@ -611,12 +612,12 @@ GeoHit trace(vec3 o_2, vec3 d_4, float t_min_1, float t_max_2, bool any_hit) {
     vec3 _e14 = ray_inverse3_(d_4);
     while(true) {
         uint _e21 = node_2;
-        GpuGeoNode n_9 = _group_1_binding_6_cs[_e21];
+        GpuGeoNode n_11 = _group_1_binding_6_cs[_e21];
         float _e27 = hit.t;
-        float _e28 = ray_aabb(o_2, _e14, n_9.bmin, n_9.bmax, _e27);
+        float _e28 = ray_aabb(o_2, _e14, n_11.bmin, n_11.bmax, _e27);
         if ((_e28 >= 0.0)) {
-            if ((n_9.count > 0u)) {
-                i = n_9.first;
+            if ((n_11.count > 0u)) {
+                i = n_11.first;
                 bool loop_init = true;
                 while(true) {
                     if (!loop_init) {
@@ -625,7 +626,7 @@ GeoHit trace(vec3 o_2, vec3 d_4, float t_min_1, float t_max_2, bool any_hit) {
                     }
                     loop_init = false;
                     uint _e36 = i;
-                    if ((_e36 < (n_9.first + n_9.count))) {
+                    if ((_e36 < (n_11.first + n_11.count))) {
                     } else {
                         break;
                     }
@@ -649,11 +650,11 @@ GeoHit trace(vec3 o_2, vec3 d_4, float t_min_1, float t_max_2, bool any_hit) {
                 uint _e60 = sp;
                 if ((_e60 < 64u)) {
                     uint _e63 = sp;
-                    stack[_e63] = (n_9.first + 1u);
+                    stack[_e63] = (n_11.first + 1u);
                     uint _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_2 = n_9.first;
+                node_2 = n_11.first;
                 continue;
             }
         }
@@ -774,64 +775,69 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start, vec3 x_6, vec3 r_7, vec4 rl_4)
     return BSH_NONE;
 }
 
-Connection connect_traced(uint li, vec3 x_7, vec3 n_4, vec3 ng_1, float s, float w_res, float u1_1, float u2_1, float eps, bool trace_1) {
+Connection connect_record(GpuLight l_2, vec3 x_7, vec3 n_4, vec3 ng_1, float r2_3, float rt2_4, float w_res, float u1_1, float u2_1, float eps, bool trace_1) {
     Connection c_2 = Connection(vec3(0.0), vec3(0.0), 0.0);
     bool local_14 = false;
     bool local_15 = false;
     c_2.e = vec3(0.0);
-    GpuLight l_2 = _group_1_binding_1_cs[li];
-    vec3 _e18 = light_point(l_2, u1_1, u2_1);
-    c_2.y = _e18;
-    vec3 _e21 = c_2.y;
-    float _e24 = _group_1_binding_3_cs[li];
-    float _e26 = connection_cosine(x_7, _e21, n_4, ng_1, (s * _e24));
-    c_2.cos_x = _e26;
-    float _e28 = c_2.cos_x;
-    if (!((_e28 <= 0.0))) {
+    vec3 _e16 = light_point(l_2, u1_1, u2_1);
+    c_2.y = _e16;
+    vec3 _e19 = c_2.y;
+    float _e20 = connection_cosine(x_7, _e19, n_4, ng_1, r2_3);
+    c_2.cos_x = _e20;
+    float _e22 = c_2.cos_x;
+    if (!((_e22 <= 0.0))) {
         if (trace_1) {
-            vec3 _e39 = c_2.y;
-            bool _e40 = occluded((x_7 + (ng_1 * eps)), _e39);
-            local_15 = _e40;
+            vec3 _e33 = c_2.y;
+            bool _e34 = occluded((x_7 + (ng_1 * eps)), _e33);
+            local_15 = _e34;
         } else {
             local_15 = false;
         }
-        bool _e42 = local_15;
-        local_14 = _e42;
+        bool _e36 = local_15;
+        local_14 = _e36;
     } else {
         local_14 = true;
     }
-    bool _e44 = local_14;
-    if (_e44) {
-        Connection _e45 = c_2;
-        return _e45;
+    bool _e38 = local_14;
+    if (_e38) {
+        Connection _e39 = c_2;
+        return _e39;
     }
-    vec3 _e47 = c_2.y;
-    vec3 v_11 = (x_7 - _e47);
+    vec3 _e41 = c_2.y;
+    vec3 v_11 = (x_7 - _e41);
     float d2_10 = dot(v_11, v_11);
-    vec3 _e54 = light_intensity(l_2, (v_11 / vec3(sqrt(d2_10))));
-    float _e56 = c_2.cos_x;
-    float _e59 = _group_1_binding_2_cs[li];
-    float _e61 = connection_factor(_e56, d2_10, (s * _e59), w_res);
-    c_2.e = (_e54 * _e61);
-    Connection _e63 = c_2;
-    return _e63;
+    vec3 _e48 = light_intensity(l_2, (v_11 / vec3(sqrt(d2_10))));
+    float _e50 = c_2.cos_x;
+    float _e51 = connection_factor(_e50, d2_10, rt2_4, w_res);
+    c_2.e = (_e48 * _e51);
+    Connection _e53 = c_2;
+    return _e53;
 }
 
-float light_range_scale(uint li_1, vec3 x_8, vec3 r_8, vec4 rl_5) {
-    GpuLightCone c_4 = _group_1_binding_5_cs[li_1];
-    float _e9 = range_scale_toward(rl_5, c_4.center, c_4.radius, x_8, r_8);
+Connection connect_traced(uint li, vec3 x_8, vec3 n_5, vec3 ng_2, float s, float w_res_1, float u1_2, float u2_2, float eps_1, bool trace_2) {
+    GpuLight _e12 = _group_1_binding_1_cs[li];
+    float _e15 = _group_1_binding_3_cs[li];
+    float _e19 = _group_1_binding_2_cs[li];
+    Connection _e21 = connect_record(_e12, x_8, n_5, ng_2, (s * _e15), (s * _e19), w_res_1, u1_2, u2_2, eps_1, trace_2);
+    return _e21;
+}
+
+float light_range_scale(uint li_1, vec3 x_9, vec3 r_8, vec4 rl_5) {
+    GpuLightCone c_5 = _group_1_binding_5_cs[li_1];
+    float _e9 = range_scale_toward(rl_5, c_5.center, c_5.radius, x_9, r_8);
     return _e9;
 }
 
-float light_weight(uint li_2, vec3 x_9, vec3 n_5, vec3 r_9, vec4 lobe_7, vec4 rl_6) {
-    GpuLightCone c_5 = _group_1_binding_5_cs[li_2];
-    float _e15 = light_range_scale(li_2, x_9, r_9, rl_6);
+float light_weight(uint li_2, vec3 x_10, vec3 n_6, vec3 r_9, vec4 lobe_7, vec4 rl_6) {
+    GpuLightCone c_6 = _group_1_binding_5_cs[li_2];
+    float _e15 = light_range_scale(li_2, x_10, r_9, rl_6);
     float _e18 = _group_1_binding_2_cs[li_2];
-    float _e20 = cone_weight(c_5.center, c_5.radius, c_5.phi, c_5.axis, c_5.cos_o, c_5.cos_e, (_e15 * _e18), x_9, n_5, r_9, lobe_7);
+    float _e20 = cone_weight(c_6.center, c_6.radius, c_6.phi, c_6.axis, c_6.cos_o, c_6.cos_e, (_e15 * _e18), x_10, n_6, r_9, lobe_7);
     return _e20;
 }
 
-WeightedPicks bsh_weighted_collect(vec3 x_10, vec3 n_6, vec3 r_10, vec4 lobe_8, vec4 rl_7, uint h0_) {
+WeightedPicks bsh_weighted_collect(vec3 x_11, vec3 n_7, vec3 r_10, vec4 lobe_8, vec4 rl_7, uint h0_) {
     WeightedPicks picks = WeightedPicks(uint[8](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u), float[8](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0.0, 0u, 0u);
     uint h_1 = 0u;
     uint b_4 = 0u;
@@ -840,14 +846,14 @@ WeightedPicks bsh_weighted_collect(vec3 x_10, vec3 n_6, vec3 r_10, vec4 lobe_8, 
     picks.n = 0u;
     h_1 = h0_;
     uint _e14 = bsh_first(BSH);
-    uint _e15 = bsh_next_leaf_lobe(BSH, _e14, x_10, r_10, rl_7);
+    uint _e15 = bsh_next_leaf_lobe(BSH, _e14, x_11, r_10, rl_7);
     b_4 = _e15;
     bool loop_init_1 = true;
     while(true) {
         if (!loop_init_1) {
             uint _e58 = b_4;
             uint _e61 = _group_1_binding_4_cs[_e58].next;
-            uint _e62 = bsh_next_leaf_lobe(BSH, _e61, x_10, r_10, rl_7);
+            uint _e62 = bsh_next_leaf_lobe(BSH, _e61, x_11, r_10, rl_7);
             b_4 = _e62;
         }
         loop_init_1 = false;
@@ -861,7 +867,7 @@ WeightedPicks bsh_weighted_collect(vec3 x_10, vec3 n_6, vec3 r_10, vec4 lobe_8, 
             picks.n = (_e21 + 1u);
             uint _e25 = b_4;
             uint li_5 = _group_1_binding_4_cs[_e25].light;
-            float _e29 = light_weight(li_5, x_10, n_6, r_10, lobe_8, rl_7);
+            float _e29 = light_weight(li_5, x_11, n_7, r_10, lobe_8, rl_7);
             if ((_e29 > 0.0)) {
                 float _e33 = picks.w_sum;
                 picks.w_sum = (_e33 + _e29);
@@ -915,9 +921,9 @@ vec4 unproject_pixel(vec4 c0_, vec4 c1_, vec4 c2_, vec4 c3_, float px, float py,
     if (!(_e16)) {
         return vec4(0.0, 0.0, 0.0, 0.0);
     }
-    float x_13 = ((((px + 0.5) / width) * 2.0) - 1.0);
+    float x_15 = ((((px + 0.5) / width) * 2.0) - 1.0);
     float y_1 = (1.0 - (((py + 0.5) / height) * 2.0));
-    vec4 p_8 = ((((c0_ * x_13) + (c1_ * y_1)) + (c2_ * depth)) + c3_);
+    vec4 p_8 = ((((c0_ * x_15) + (c1_ * y_1)) + (c2_ * depth)) + c3_);
     vec3 q_1 = vec3((p_8.x / p_8.w), (p_8.y / p_8.w), (p_8.z / p_8.w));
     if ((abs(p_8.w) > 0.0)) {
         bool _e59 = finite3_(q_1);
@@ -945,18 +951,23 @@ vec4 surface_at(ivec2 texel) {
     return _e29;
 }
 
-Shaded shade_pick_traced(uint li_3, vec3 x_11, vec3 n_7, vec3 r_11, vec4 rl_8, Material m_1, float w_4, float u1_2, float u2_2, float eps_1, bool trace_2) {
+Shaded shade_connection(Connection c_3, vec3 x_12, vec3 n_8, Material m_1) {
     Shaded s_2 = Shaded(vec3(0.0), vec3(0.0), vec3(0.0));
-    Connection _e13 = connect_traced(li_3, x_11, n_7, n_7, 1.0, w_4, u1_2, u2_2, eps_1, trace_2);
-    s_2.e = _e13.e;
+    s_2.e = c_3.e;
     s_2.diffuse = vec3(0.0);
     s_2.specular = vec3(0.0);
-    Shaded _e22 = s_2;
-    return _e22;
+    Shaded _e13 = s_2;
+    return _e13;
 }
 
-Shaded shade_pick(uint li_4, vec3 x_12, vec3 n_8, vec3 r_12, vec4 rl_9, Material m_2, float w_5, float u1_3, float u2_3, float eps_2) {
-    Shaded _e11 = shade_pick_traced(li_4, x_12, n_8, r_12, rl_9, m_2, w_5, u1_3, u2_3, eps_2, true);
+Shaded shade_pick_traced(uint li_3, vec3 x_13, vec3 n_9, vec3 r_11, vec4 rl_8, Material m_2, float w_4, float u1_3, float u2_3, float eps_2, bool trace_3) {
+    Connection _e12 = connect_traced(li_3, x_13, n_9, n_9, 1.0, w_4, u1_3, u2_3, eps_2, trace_3);
+    Shaded _e13 = shade_connection(_e12, x_13, n_9, m_2);
+    return _e13;
+}
+
+Shaded shade_pick(uint li_4, vec3 x_14, vec3 n_10, vec3 r_12, vec4 rl_9, Material m_3, float w_5, float u1_4, float u2_4, float eps_3) {
+    Shaded _e11 = shade_pick_traced(li_4, x_14, n_10, r_12, rl_9, m_3, w_5, u1_4, u2_4, eps_3, true);
     return _e11;
 }
 
@@ -1039,14 +1050,14 @@ void main() {
         imageStore(_group_0_binding_3_cs, texel_1, vec4(0.0));
         return;
     }
-    vec3 x_14 = _e21.xyz;
-    vec3 n_10 = (nn / vec3(sqrt(len2_)));
-    r = n_10;
+    vec3 x_16 = _e21.xyz;
+    vec3 n_12 = (nn / vec3(sqrt(len2_)));
+    r = n_12;
     vec4 _e53 = lobe;
     vec4 _e54 = range_lobe(_e53);
     float _e57 = _group_0_binding_0_cs.shadow_offset;
     vec3 _e60 = _group_0_binding_0_cs.eye;
-    float eps_3 = (_e57 * length((_e60 - x_14)));
+    float eps_4 = (_e57 * length((_e60 - x_16)));
     uint _e66 = _group_0_binding_0_cs.seed;
     uint _e70 = _group_0_binding_0_cs.width;
     uint _e76 = _group_0_binding_0_cs.frame;
@@ -1055,7 +1066,7 @@ void main() {
     h = _e78;
     vec3 _e88 = r;
     vec4 _e89 = lobe;
-    WeightedPicks _e90 = bsh_weighted_collect(x_14, n_10, _e88, _e89, _e54, _e77);
+    WeightedPicks _e90 = bsh_weighted_collect(x_16, n_12, _e88, _e89, _e54, _e77);
     if ((_e90.w_sum > 0.0)) {
         bool loop_init_4 = true;
         while(true) {
@@ -1092,7 +1103,7 @@ void main() {
                     Material _e125 = m;
                     uint _e128 = k;
                     float _e131 = weighted_pick_weight(_e90.w_sum, _e90.w[_e128], K);
-                    Shaded _e134 = shade_pick(li_6, x_14, n_10, _e124, _e54, _e125, (_e131 * float(copies_1)), _e102, _e106, eps_3);
+                    Shaded _e134 = shade_pick(li_6, x_16, n_12, _e124, _e54, _e125, (_e131 * float(copies_1)), _e102, _e106, eps_4);
                     Shaded _e135 = add(_e123, _e134);
                     t = _e135;
                 }

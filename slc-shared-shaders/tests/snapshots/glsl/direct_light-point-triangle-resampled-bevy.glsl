@@ -101,6 +101,7 @@ const uint MAP_ORTHOGRAPHIC = 2u;
 const float XI_STEP = 5.9604645e-8;
 const uint PICK_STREAM = 2654435769u;
 const float TWO_PI = 6.2831855;
+const float UNRANGED = 1e38;
 const float CULL_RADIUS_SCALE = 1.000001;
 const float SPHERE_PAD = 4.7683716e-7;
 const float SPHERE_HUGE = 3.4028235e38;
@@ -133,9 +134,9 @@ const float TEMPORAL_MIN_WEIGHT = 0.01;
 const uint K = 8u;
 const uint BSH = 0u;
 
-layout(std430) readonly buffer type_6_block_0Compute { GpuGeoNode _group_1_binding_6_cs[]; };
+layout(std430) readonly buffer type_7_block_0Compute { GpuGeoNode _group_1_binding_6_cs[]; };
 
-layout(std430) readonly buffer type_7_block_1Compute { GpuTriangle _group_1_binding_7_cs[]; };
+layout(std430) readonly buffer type_8_block_1Compute { GpuTriangle _group_1_binding_7_cs[]; };
 
 layout(std140) uniform ViewParams_block_2Compute { ViewParams _group_0_binding_0_cs; };
 
@@ -149,15 +150,15 @@ uniform sampler2D _group_0_binding_4_cs;
 
 uniform sampler2D _group_0_binding_5_cs;
 
-layout(std430) readonly buffer type_11_block_3Compute { GpuLight _group_1_binding_1_cs[]; };
+layout(std430) readonly buffer type_12_block_3Compute { GpuLight _group_1_binding_1_cs[]; };
 
 layout(std430) readonly buffer type_4_block_4Compute { float _group_1_binding_2_cs[]; };
 
 layout(std430) readonly buffer type_4_block_5Compute { float _group_1_binding_3_cs[]; };
 
-layout(std430) readonly buffer type_12_block_6Compute { BshNode _group_1_binding_4_cs[]; };
+layout(std430) readonly buffer type_13_block_6Compute { BshNode _group_1_binding_4_cs[]; };
 
-layout(std430) readonly buffer type_13_block_7Compute { GpuLightCone _group_1_binding_5_cs[]; };
+layout(std430) readonly buffer type_14_block_7Compute { GpuLightCone _group_1_binding_5_cs[]; };
 
 
 float to_f32_(uint u) {
@@ -212,8 +213,8 @@ bool slc_keep(float r2_, float d2_1) {
 }
 
 bool sphere_contains_point(vec3 c, float r_1, vec3 x_1) {
-    vec3 v_4 = (x_1 - c);
-    return (dot(v_4, v_4) <= (r_1 * r_1));
+    vec3 v_5 = (x_1 - c);
+    return (dot(v_5, v_5) <= (r_1 * r_1));
 }
 
 float inverse_square(float d2_2) {
@@ -229,8 +230,8 @@ float connection_factor(float cos_x, float d2_3, float rt2_1, float w) {
 float connection_cosine(vec3 x_2, vec3 y, vec3 n, vec3 ng, float r2_1) {
     bool local_2 = false;
     bool local_3 = false;
-    vec3 v_5 = (x_2 - y);
-    float d2_6 = dot(v_5, v_5);
+    vec3 v_6 = (x_2 - y);
+    float d2_6 = dot(v_6, v_6);
     bool _e7 = slc_keep(r2_1, d2_6);
     if (!(!(_e7))) {
         local_2 = !((d2_6 > 0.0));
@@ -241,7 +242,7 @@ float connection_cosine(vec3 x_2, vec3 y, vec3 n, vec3 ng, float r2_1) {
     if (_e16) {
         return 0.0;
     }
-    vec3 w_6 = (v_5 / vec3(sqrt(d2_6)));
+    vec3 w_6 = (v_6 / vec3(sqrt(d2_6)));
     float cos_x_1 = -(dot(n, w_6));
     if (!((cos_x_1 <= 0.0))) {
         local_3 = (dot(ng, w_6) >= 0.0);
@@ -323,9 +324,9 @@ float smith_visibility(float n_l, float n_v, float alpha_2) {
 }
 
 vec3 fresnel_schlick(vec3 f0_, float f90_, float v_h) {
-    float c_7 = clamp((1.0 - v_h), 0.0, 1.0);
-    float c2_ = (c_7 * c_7);
-    return (f0_ + ((vec3(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_7)));
+    float c_8 = clamp((1.0 - v_h), 0.0, 1.0);
+    float c2_ = (c_8 * c_8);
+    return (f0_ + ((vec3(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_8)));
 }
 
 vec3 specular_fresnel(vec3 base, float metallic, vec3 f0_d, float f90_d, float v_h_1) {
@@ -418,9 +419,9 @@ float bevy_f0_(float reflectance) {
 float bevy_dfg(float r_2, float n_v_2) {
     float rx = (1.0 - r_2);
     float a004_ = ((min((rx * rx), exp2((-9.28 * n_v_2))) * rx) + (0.0425 - (0.0275 * r_2)));
-    float x_10 = max(((1.04 - (0.572 * r_2)) - (1.04 * a004_)), 5e-5);
+    float x_12 = max(((1.04 - (0.572 * r_2)) - (1.04 * a004_)), 5e-5);
     float y_1 = max((((0.022 * r_2) - 0.04) + (1.04 * a004_)), 5e-5);
-    return (x_10 + y_1);
+    return (x_12 + y_1);
 }
 
 vec3 bevy_brdf(vec3 base_2, float metallic_3, float r_3, float reflectance_1, vec3 n_3, vec3 v_1, vec3 l) {
@@ -469,13 +470,13 @@ float cone_cos_of(vec3 v_2, float d2_4, float a_3, vec3 d) {
     if (_e21) {
         return 1.0;
     }
-    vec3 c_8 = cross(v_2, d);
-    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_8, c_8)) * a_3)) / d2_4), 1.0);
+    vec3 c_9 = cross(v_2, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_9, c_9)) * a_3)) / d2_4), 1.0);
 }
 
 float cone_cos_toward(vec3 center, float radius, vec3 p, vec3 d_1) {
-    vec3 v_6 = (center - p);
-    float _e6 = cone_cos_of(v_6, dot(v_6, v_6), radius, d_1);
+    vec3 v_7 = (center - p);
+    float _e6 = cone_cos_of(v_7, dot(v_7, v_7), radius, d_1);
     return _e6;
 }
 
@@ -523,8 +524,8 @@ float ray_aabb(vec3 o, vec3 inv_d, vec3 bmin, vec3 bmax, float t_max) {
 
 vec3 triangle_normal(vec3 a_4, vec3 b_4, vec3 c_4) {
     bool local_10 = false;
-    vec3 n_7 = cross((b_4 - a_4), (c_4 - a_4));
-    float l2_ = dot(n_7, n_7);
+    vec3 n_9 = cross((b_4 - a_4), (c_4 - a_4));
+    float l2_ = dot(n_9, n_9);
     if (!(!((l2_ > 0.0)))) {
         local_10 = !((l2_ < 3e38));
     } else {
@@ -534,7 +535,7 @@ vec3 triangle_normal(vec3 a_4, vec3 b_4, vec3 c_4) {
     if (_e17) {
         return vec3(0.0, 0.0, 0.0);
     }
-    return (n_7 / vec3(sqrt(l2_)));
+    return (n_9 / vec3(sqrt(l2_)));
 }
 
 float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_5, vec3 b_5, vec3 c_5, float t_min, float t_max_1) {
@@ -561,9 +562,9 @@ float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_5, vec3 b_5, vec3 c_5, float t_min
         return -1.0;
     }
     vec3 q_1 = cross(s_3, e1_);
-    float v_7 = (dot(d_3, q_1) * inv);
-    if (!((v_7 < 0.0))) {
-        local_12 = ((u_3 + v_7) > 1.0);
+    float v_8 = (dot(d_3, q_1) * inv);
+    if (!((v_8 < 0.0))) {
+        local_12 = ((u_3 + v_8) > 1.0);
     } else {
         local_12 = true;
     }
@@ -623,12 +624,12 @@ GeoHit trace(vec3 o_2, vec3 d_4, float t_min_1, float t_max_2, bool any_hit) {
     vec3 _e14 = ray_inverse3_(d_4);
     while(true) {
         uint _e21 = node_2;
-        GpuGeoNode n_8 = _group_1_binding_6_cs[_e21];
+        GpuGeoNode n_10 = _group_1_binding_6_cs[_e21];
         float _e27 = hit.t;
-        float _e28 = ray_aabb(o_2, _e14, n_8.bmin, n_8.bmax, _e27);
+        float _e28 = ray_aabb(o_2, _e14, n_10.bmin, n_10.bmax, _e27);
         if ((_e28 >= 0.0)) {
-            if ((n_8.count > 0u)) {
-                i = n_8.first;
+            if ((n_10.count > 0u)) {
+                i = n_10.first;
                 bool loop_init = true;
                 while(true) {
                     if (!loop_init) {
@@ -637,7 +638,7 @@ GeoHit trace(vec3 o_2, vec3 d_4, float t_min_1, float t_max_2, bool any_hit) {
                     }
                     loop_init = false;
                     uint _e36 = i;
-                    if ((_e36 < (n_8.first + n_8.count))) {
+                    if ((_e36 < (n_10.first + n_10.count))) {
                     } else {
                         break;
                     }
@@ -661,11 +662,11 @@ GeoHit trace(vec3 o_2, vec3 d_4, float t_min_1, float t_max_2, bool any_hit) {
                 uint _e60 = sp;
                 if ((_e60 < 64u)) {
                     uint _e63 = sp;
-                    stack[_e63] = (n_8.first + 1u);
+                    stack[_e63] = (n_10.first + 1u);
                     uint _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_2 = n_8.first;
+                node_2 = n_10.first;
                 continue;
             }
         }
@@ -735,8 +736,8 @@ bool bsh_reaches(BshNode node_3, vec3 x_4, vec3 r_6, vec4 rl_3) {
         return false;
     }
     float _e25 = bsh_range_bound(node_3);
-    vec3 v_8 = (x_4 - node_3.center);
-    float d2_7 = dot(v_8, v_8);
+    vec3 v_9 = (x_4 - node_3.center);
+    float d2_7 = dot(v_9, v_9);
     float reach_max = (node_3.extent + ((rl_3.w * 1.001) * _e25));
     if ((d2_7 > (reach_max * reach_max))) {
         return false;
@@ -747,7 +748,7 @@ bool bsh_reaches(BshNode node_3, vec3 x_4, vec3 r_6, vec4 rl_3) {
         bool _e47 = sphere_contains_point(node_3.center, _e46, x_4);
         return _e47;
     }
-    float _e50 = bsh_inner_scale(node_3.extent, -(v_8), d2_7, r_6, rl_3);
+    float _e50 = bsh_inner_scale(node_3.extent, -(v_9), d2_7, r_6, rl_3);
     float s_c = (_e50 * 1.001);
     float reach = (node_3.extent + (sqrt(s_c) * _e25));
     if ((d2_7 <= ((node_3.radius * node_3.radius) * s_c))) {
@@ -786,52 +787,57 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start, vec3 x_5, vec3 r_7, vec4 rl_4)
     return BSH_NONE;
 }
 
-Connection connect_traced(uint li, vec3 x_6, vec3 n_4, vec3 ng_1, float s, float w_res, float u1_2, float u2_2, float eps, bool trace_1) {
+Connection connect_record(GpuLight l_3, vec3 x_6, vec3 n_4, vec3 ng_1, float r2_2, float rt2_2, float w_res, float u1_2, float u2_2, float eps, bool trace_1) {
     Connection c_6 = Connection(vec3(0.0), vec3(0.0), 0.0);
     bool local_16 = false;
     bool local_17 = false;
     c_6.e = vec3(0.0);
-    GpuLight l_3 = _group_1_binding_1_cs[li];
-    vec3 _e18 = light_point(l_3, u1_2, u2_2);
-    c_6.y = _e18;
-    vec3 _e21 = c_6.y;
-    float _e24 = _group_1_binding_3_cs[li];
-    float _e26 = connection_cosine(x_6, _e21, n_4, ng_1, (s * _e24));
-    c_6.cos_x = _e26;
-    float _e28 = c_6.cos_x;
-    if (!((_e28 <= 0.0))) {
+    vec3 _e16 = light_point(l_3, u1_2, u2_2);
+    c_6.y = _e16;
+    vec3 _e19 = c_6.y;
+    float _e20 = connection_cosine(x_6, _e19, n_4, ng_1, r2_2);
+    c_6.cos_x = _e20;
+    float _e22 = c_6.cos_x;
+    if (!((_e22 <= 0.0))) {
         if (trace_1) {
-            vec3 _e39 = c_6.y;
-            bool _e40 = occluded((x_6 + (ng_1 * eps)), _e39);
-            local_17 = _e40;
+            vec3 _e33 = c_6.y;
+            bool _e34 = occluded((x_6 + (ng_1 * eps)), _e33);
+            local_17 = _e34;
         } else {
             local_17 = false;
         }
-        bool _e42 = local_17;
-        local_16 = _e42;
+        bool _e36 = local_17;
+        local_16 = _e36;
     } else {
         local_16 = true;
     }
-    bool _e44 = local_16;
-    if (_e44) {
-        Connection _e45 = c_6;
-        return _e45;
+    bool _e38 = local_16;
+    if (_e38) {
+        Connection _e39 = c_6;
+        return _e39;
     }
-    vec3 _e47 = c_6.y;
-    vec3 v_9 = (x_6 - _e47);
-    float d2_8 = dot(v_9, v_9);
-    vec3 _e54 = light_intensity(l_3, (v_9 / vec3(sqrt(d2_8))));
-    float _e56 = c_6.cos_x;
-    float _e59 = _group_1_binding_2_cs[li];
-    float _e61 = connection_factor(_e56, d2_8, (s * _e59), w_res);
-    c_6.e = (_e54 * _e61);
-    Connection _e63 = c_6;
-    return _e63;
+    vec3 _e41 = c_6.y;
+    vec3 v_10 = (x_6 - _e41);
+    float d2_8 = dot(v_10, v_10);
+    vec3 _e48 = light_intensity(l_3, (v_10 / vec3(sqrt(d2_8))));
+    float _e50 = c_6.cos_x;
+    float _e51 = connection_factor(_e50, d2_8, rt2_2, w_res);
+    c_6.e = (_e48 * _e51);
+    Connection _e53 = c_6;
+    return _e53;
 }
 
-float light_range_scale(uint li_1, vec3 x_7, vec3 r_8, vec4 rl_5) {
-    GpuLightCone c_9 = _group_1_binding_5_cs[li_1];
-    float _e9 = range_scale_toward(rl_5, c_9.center, c_9.radius, x_7, r_8);
+Connection connect_traced(uint li, vec3 x_7, vec3 n_5, vec3 ng_2, float s, float w_res_1, float u1_3, float u2_3, float eps_1, bool trace_2) {
+    GpuLight _e12 = _group_1_binding_1_cs[li];
+    float _e15 = _group_1_binding_3_cs[li];
+    float _e19 = _group_1_binding_2_cs[li];
+    Connection _e21 = connect_record(_e12, x_7, n_5, ng_2, (s * _e15), (s * _e19), w_res_1, u1_3, u2_3, eps_1, trace_2);
+    return _e21;
+}
+
+float light_range_scale(uint li_1, vec3 x_8, vec3 r_8, vec4 rl_5) {
+    GpuLightCone c_10 = _group_1_binding_5_cs[li_1];
+    float _e9 = range_scale_toward(rl_5, c_10.center, c_10.radius, x_8, r_8);
     return _e9;
 }
 
@@ -840,24 +846,34 @@ vec4 surface_at(ivec2 texel) {
     return ((p_3.w > 0.0) ? vec4(p_3.xyz, 1.0) : vec4(0.0));
 }
 
-Shaded shade_pick_traced(uint li_2, vec3 x_8, vec3 n_5, vec3 r_9, vec4 rl_6, Material m_1, float w_4, float u1_3, float u2_3, float eps_1, bool trace_2) {
+Shaded shade_connection(Connection c_7, vec3 x_9, vec3 n_6, Material m_1) {
     Shaded s_1 = Shaded(vec3(0.0), vec3(0.0), vec3(0.0));
-    float _e12 = light_range_scale(li_2, x_8, r_9, rl_6);
-    Connection _e13 = connect_traced(li_2, x_8, n_5, n_5, _e12, w_4, u1_3, u2_3, eps_1, trace_2);
-    s_1.e = _e13.e;
+    s_1.e = c_7.e;
     s_1.diffuse = vec3(0.0);
     s_1.specular = vec3(0.0);
-    if ((_e13.cos_x > 0.0)) {
-        vec3 _e34 = bevy_brdf(m_1.base, m_1.metallic, m_1.roughness, m_1.reflectance, n_5, m_1.v, normalize((_e13.y - x_8)));
-        s_1.diffuse = (_e34 * _e13.e);
+    if ((c_7.cos_x > 0.0)) {
+        vec3 _e25 = bevy_brdf(m_1.base, m_1.metallic, m_1.roughness, m_1.reflectance, n_6, m_1.v, normalize((c_7.y - x_9)));
+        s_1.diffuse = (_e25 * c_7.e);
     }
-    Shaded _e37 = s_1;
-    return _e37;
+    Shaded _e28 = s_1;
+    return _e28;
 }
 
-Shaded shade_pick(uint li_3, vec3 x_9, vec3 n_6, vec3 r_10, vec4 rl_7, Material m_2, float w_5, float u1_4, float u2_4, float eps_2) {
-    Shaded _e11 = shade_pick_traced(li_3, x_9, n_6, r_10, rl_7, m_2, w_5, u1_4, u2_4, eps_2, true);
+Shaded shade_pick_traced(uint li_2, vec3 x_10, vec3 n_7, vec3 r_9, vec4 rl_6, Material m_2, float w_4, float u1_4, float u2_4, float eps_2, bool trace_3) {
+    float _e11 = light_range_scale(li_2, x_10, r_9, rl_6);
+    Connection _e12 = connect_traced(li_2, x_10, n_7, n_7, _e11, w_4, u1_4, u2_4, eps_2, trace_3);
+    Shaded _e13 = shade_connection(_e12, x_10, n_7, m_2);
+    return _e13;
+}
+
+Shaded shade_pick(uint li_3, vec3 x_11, vec3 n_8, vec3 r_10, vec4 rl_7, Material m_3, float w_5, float u1_5, float u2_5, float eps_3) {
+    Shaded _e11 = shade_pick_traced(li_3, x_11, n_8, r_10, rl_7, m_3, w_5, u1_5, u2_5, eps_3, true);
     return _e11;
+}
+
+Material material_of(vec3 base_3, float metallic_4, float roughness, float reflectance_2, vec3 v_4) {
+    float _e6 = bevy_alpha(roughness);
+    return Material(base_3, clamp(metallic_4, 0.0, 1.0), _e6, v_4, roughness, reflectance_2);
 }
 
 Shaded add(Shaded a_8, Shaded b_7) {
@@ -951,156 +967,156 @@ void main() {
         imageStore(_group_0_binding_3_cs, texel_1, vec4(0.0));
         return;
     }
-    vec3 x_11 = _e21.xyz;
-    vec3 n_9 = (nn / vec3(sqrt(len2_)));
-    r = n_9;
+    vec3 x_13 = _e21.xyz;
+    vec3 n_11 = (nn / vec3(sqrt(len2_)));
+    r = n_11;
     vec4 mr = texelFetch(_group_0_binding_5_cs, texel_1, 0);
-    float _e57 = bevy_f0_(mr.w);
-    vec4 _e60 = texelFetch(_group_0_binding_4_cs, texel_1, 0);
-    float _e65 = bevy_alpha(mr.y);
-    vec3 _e68 = _group_0_binding_0_cs.eye;
-    m = Material(_e60.xyz, clamp(mr.z, 0.0, 1.0), _e65, normalize((_e68 - x_11)), mr.y, mr.w);
-    vec3 _e75 = m.base;
-    float _e77 = m.metallic;
-    float _e81 = m.alpha;
-    vec3 _e83 = m.v;
-    vec4 _e85 = receiver_lobe(_e75, _e77, vec3(_e57), 1.0, _e81, dot(n_9, _e83));
-    lobe = _e85;
-    vec3 _e87 = m.v;
-    vec3 _e88 = mirror_dir(n_9, _e87);
-    r = _e88;
-    vec4 _e89 = lobe;
-    vec4 _e90 = range_lobe(_e89);
-    float _e93 = _group_0_binding_0_cs.shadow_offset;
-    vec3 _e96 = _group_0_binding_0_cs.eye;
-    float eps_3 = (_e93 * length((_e96 - x_11)));
-    uint _e102 = _group_0_binding_0_cs.seed;
-    uint _e106 = _group_0_binding_0_cs.width;
-    uint _e112 = _group_0_binding_0_cs.frame;
-    uint _e113 = point_stream(_e102, ((gid.y * _e106) + gid.x), _e112);
-    uint _e114 = pick_stream(_e113);
-    h = _e114;
-    hc = _e113;
-    uint _e134 = bsh_first(BSH);
-    vec3 _e135 = r;
-    uint _e136 = bsh_next_leaf_lobe(BSH, _e134, x_11, _e135, _e90);
-    b = _e136;
+    vec4 _e58 = texelFetch(_group_0_binding_4_cs, texel_1, 0);
+    vec3 _e65 = _group_0_binding_0_cs.eye;
+    Material _e68 = material_of(_e58.xyz, mr.z, mr.y, mr.w, normalize((_e65 - x_13)));
+    m = _e68;
+    vec3 _e70 = m.base;
+    float _e72 = m.metallic;
+    float _e74 = bevy_f0_(mr.w);
+    float _e78 = m.alpha;
+    vec3 _e80 = m.v;
+    vec4 _e82 = receiver_lobe(_e70, _e72, vec3(_e74), 1.0, _e78, dot(n_11, _e80));
+    lobe = _e82;
+    vec3 _e84 = m.v;
+    vec3 _e85 = mirror_dir(n_11, _e84);
+    r = _e85;
+    vec4 _e86 = lobe;
+    vec4 _e87 = range_lobe(_e86);
+    float _e90 = _group_0_binding_0_cs.shadow_offset;
+    vec3 _e93 = _group_0_binding_0_cs.eye;
+    float eps_4 = (_e90 * length((_e93 - x_13)));
+    uint _e99 = _group_0_binding_0_cs.seed;
+    uint _e103 = _group_0_binding_0_cs.width;
+    uint _e109 = _group_0_binding_0_cs.frame;
+    uint _e110 = point_stream(_e99, ((gid.y * _e103) + gid.x), _e109);
+    uint _e111 = pick_stream(_e110);
+    h = _e111;
+    hc = _e110;
+    uint _e131 = bsh_first(BSH);
+    vec3 _e132 = r;
+    uint _e133 = bsh_next_leaf_lobe(BSH, _e131, x_13, _e132, _e87);
+    b = _e133;
     bool loop_init_2 = true;
     while(true) {
         if (!loop_init_2) {
-            uint _e193 = b;
-            uint _e196 = _group_1_binding_4_cs[_e193].next;
-            vec3 _e197 = r;
-            uint _e198 = bsh_next_leaf_lobe(BSH, _e196, x_11, _e197, _e90);
-            b = _e198;
+            uint _e190 = b;
+            uint _e193 = _group_1_binding_4_cs[_e190].next;
+            vec3 _e194 = r;
+            uint _e195 = bsh_next_leaf_lobe(BSH, _e193, x_13, _e194, _e87);
+            b = _e195;
         }
         loop_init_2 = false;
-        uint _e138 = b;
-        if ((_e138 != BSH_NONE)) {
+        uint _e135 = b;
+        if ((_e135 != BSH_NONE)) {
         } else {
             break;
         }
         {
-            uint _e141 = count;
-            count = (_e141 + 1u);
-            uint _e145 = b;
-            uint li_4 = _group_1_binding_4_cs[_e145].light;
-            uint _e149 = h;
-            uint _e150 = pcg_hash(_e149);
-            h = _e150;
-            uint _e151 = h;
-            float _e152 = xi_from_bits(_e151);
-            uint _e153 = h;
-            uint _e154 = pcg_hash(_e153);
-            h = _e154;
-            uint _e155 = h;
-            float _e156 = xi_from_bits(_e155);
-            vec2 u_4 = vec2(_e152, _e156);
-            vec3 _e158 = r;
-            Material _e159 = m;
-            Shaded _e164 = shade_pick_traced(li_4, x_11, n_9, _e158, _e90, _e159, 1.0, u_4.x, u_4.y, eps_3, false);
-            vec3 _e165 = output_of(_e164);
-            float _e166 = resample_target(_e165);
-            if ((_e166 > 0.0)) {
-                float _e169 = total;
-                total = (_e169 + _e166);
+            uint _e138 = count;
+            count = (_e138 + 1u);
+            uint _e142 = b;
+            uint li_4 = _group_1_binding_4_cs[_e142].light;
+            uint _e146 = h;
+            uint _e147 = pcg_hash(_e146);
+            h = _e147;
+            uint _e148 = h;
+            float _e149 = xi_from_bits(_e148);
+            uint _e150 = h;
+            uint _e151 = pcg_hash(_e150);
+            h = _e151;
+            uint _e152 = h;
+            float _e153 = xi_from_bits(_e152);
+            vec2 u_4 = vec2(_e149, _e153);
+            vec3 _e155 = r;
+            Material _e156 = m;
+            Shaded _e161 = shade_pick_traced(li_4, x_13, n_11, _e155, _e87, _e156, 1.0, u_4.x, u_4.y, eps_4, false);
+            vec3 _e162 = output_of(_e161);
+            float _e163 = resample_target(_e162);
+            if ((_e163 > 0.0)) {
+                float _e166 = total;
+                total = (_e166 + _e163);
                 q = 0u;
                 bool loop_init_3 = true;
                 while(true) {
                     if (!loop_init_3) {
-                        uint _e189 = q;
-                        q = (_e189 + 1u);
+                        uint _e186 = q;
+                        q = (_e186 + 1u);
                     }
                     loop_init_3 = false;
-                    uint _e173 = q;
-                    if ((_e173 < K)) {
+                    uint _e170 = q;
+                    if ((_e170 < K)) {
                     } else {
                         break;
                     }
                     {
+                        uint _e173 = hc;
+                        uint _e174 = pcg_hash(_e173);
+                        hc = _e174;
+                        float _e175 = total;
                         uint _e176 = hc;
-                        uint _e177 = pcg_hash(_e176);
-                        hc = _e177;
-                        float _e178 = total;
-                        uint _e179 = hc;
-                        float _e180 = xi_from_bits(_e179);
-                        bool _e181 = weighted_replace(_e166, _e178, _e180);
-                        if (_e181) {
-                            uint _e182 = q;
-                            slot_light[_e182] = li_4;
-                            uint _e184 = q;
-                            slot_u[_e184] = u_4;
-                            uint _e186 = q;
-                            slot_p[_e186] = _e166;
+                        float _e177 = xi_from_bits(_e176);
+                        bool _e178 = weighted_replace(_e163, _e175, _e177);
+                        if (_e178) {
+                            uint _e179 = q;
+                            slot_light[_e179] = li_4;
+                            uint _e181 = q;
+                            slot_u[_e181] = u_4;
+                            uint _e183 = q;
+                            slot_p[_e183] = _e163;
                         }
                     }
                 }
             }
         }
     }
-    float _e199 = total;
-    if ((_e199 > 0.0)) {
+    float _e196 = total;
+    if ((_e196 > 0.0)) {
         bool loop_init_4 = true;
         while(true) {
             if (!loop_init_4) {
-                uint _e238 = k;
-                k = (_e238 + 1u);
+                uint _e235 = k;
+                k = (_e235 + 1u);
             }
             loop_init_4 = false;
-            uint _e204 = k;
-            if ((_e204 < K)) {
+            uint _e201 = k;
+            if ((_e201 < K)) {
             } else {
                 break;
             }
             {
-                uint _e207[8] = slot_light;
-                uint _e208 = k;
-                uint _e209 = pick_copies(_e207, _e208);
-                if ((_e209 > 0u)) {
-                    float _e212 = total;
-                    uint _e214 = k;
-                    float _e216 = slot_p[_e214];
-                    float w_7 = ((_e212 / (8.0 * _e216)) * float(_e209));
-                    Shaded _e221 = t;
-                    uint _e222 = k;
-                    uint _e224 = slot_light[_e222];
-                    vec3 _e225 = r;
-                    Material _e226 = m;
-                    uint _e227 = k;
-                    float _e230 = slot_u[_e227].x;
-                    uint _e231 = k;
-                    float _e234 = slot_u[_e231].y;
-                    Shaded _e235 = shade_pick(_e224, x_11, n_9, _e225, _e90, _e226, w_7, _e230, _e234, eps_3);
-                    Shaded _e236 = add(_e221, _e235);
-                    t = _e236;
+                uint _e204[8] = slot_light;
+                uint _e205 = k;
+                uint _e206 = pick_copies(_e204, _e205);
+                if ((_e206 > 0u)) {
+                    float _e209 = total;
+                    uint _e211 = k;
+                    float _e213 = slot_p[_e211];
+                    float w_7 = ((_e209 / (8.0 * _e213)) * float(_e206));
+                    Shaded _e218 = t;
+                    uint _e219 = k;
+                    uint _e221 = slot_light[_e219];
+                    vec3 _e222 = r;
+                    Material _e223 = m;
+                    uint _e224 = k;
+                    float _e227 = slot_u[_e224].x;
+                    uint _e228 = k;
+                    float _e231 = slot_u[_e228].y;
+                    Shaded _e232 = shade_pick(_e221, x_13, n_11, _e222, _e87, _e223, w_7, _e227, _e231, eps_4);
+                    Shaded _e233 = add(_e218, _e232);
+                    t = _e233;
                 }
             }
         }
     }
-    vec3 _e242 = t.diffuse;
-    vec3 _e244 = t.specular;
-    uint _e246 = count;
-    imageStore(_group_0_binding_3_cs, texel_1, vec4((_e242 + _e244), float(_e246)));
+    vec3 _e239 = t.diffuse;
+    vec3 _e241 = t.specular;
+    uint _e243 = count;
+    imageStore(_group_0_binding_3_cs, texel_1, vec4((_e239 + _e241), float(_e243)));
     return;
 }
 

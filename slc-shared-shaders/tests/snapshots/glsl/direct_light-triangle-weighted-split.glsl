@@ -108,6 +108,7 @@ const uint MAP_ORTHOGRAPHIC = 2u;
 const float XI_STEP = 5.9604645e-8;
 const uint PICK_STREAM = 2654435769u;
 const float TWO_PI = 6.2831855;
+const float UNRANGED = 1e38;
 const float CULL_RADIUS_SCALE = 1.000001;
 const float SPHERE_PAD = 4.7683716e-7;
 const float SPHERE_HUGE = 3.4028235e38;
@@ -221,8 +222,8 @@ bool slc_keep(float r2_, float d2_1) {
 }
 
 bool sphere_contains_point(vec3 c, float r_1, vec3 x_1) {
-    vec3 v_5 = (x_1 - c);
-    return (dot(v_5, v_5) <= (r_1 * r_1));
+    vec3 v_6 = (x_1 - c);
+    return (dot(v_6, v_6) <= (r_1 * r_1));
 }
 
 float inverse_square(float d2_2) {
@@ -238,8 +239,8 @@ float connection_factor(float cos_x, float d2_3, float rt2_1, float w) {
 float connection_cosine(vec3 x_2, vec3 y, vec3 n, vec3 ng, float r2_1) {
     bool local_2 = false;
     bool local_3 = false;
-    vec3 v_6 = (x_2 - y);
-    float d2_7 = dot(v_6, v_6);
+    vec3 v_7 = (x_2 - y);
+    float d2_7 = dot(v_7, v_7);
     bool _e7 = slc_keep(r2_1, d2_7);
     if (!(!(_e7))) {
         local_2 = !((d2_7 > 0.0));
@@ -250,7 +251,7 @@ float connection_cosine(vec3 x_2, vec3 y, vec3 n, vec3 ng, float r2_1) {
     if (_e16) {
         return 0.0;
     }
-    vec3 w_7 = (v_6 / vec3(sqrt(d2_7)));
+    vec3 w_7 = (v_7 / vec3(sqrt(d2_7)));
     float cos_x_1 = -(dot(n, w_7));
     if (!((cos_x_1 <= 0.0))) {
         local_3 = (dot(ng, w_7) >= 0.0);
@@ -337,9 +338,9 @@ float smith_visibility(float n_l, float n_v, float alpha_2) {
 }
 
 vec3 fresnel_schlick(vec3 f0_, float f90_, float v_h) {
-    float c_6 = clamp((1.0 - v_h), 0.0, 1.0);
-    float c2_ = (c_6 * c_6);
-    return (f0_ + ((vec3(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_6)));
+    float c_7 = clamp((1.0 - v_h), 0.0, 1.0);
+    float c2_ = (c_7 * c_7);
+    return (f0_ + ((vec3(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_7)));
 }
 
 vec3 specular_fresnel(vec3 base, float metallic, vec3 f0_d, float f90_d, float v_h_1) {
@@ -378,8 +379,8 @@ vec3 specular_brdf(vec3 base_2, float metallic_2, vec3 f0_d_2, float f90_d_2, fl
     vec3 hs = (v_1 + l_1);
     float inv = (1.0 / sqrt(dot(hs, hs)));
     vec3 h_3 = (hs * inv);
-    vec3 c_7 = cross(n_2, h_3);
-    float _e32 = ggx_d(dot(n_2, h_3), dot(c_7, c_7), alpha_3);
+    vec3 c_8 = cross(n_2, h_3);
+    float _e32 = ggx_d(dot(n_2, h_3), dot(c_8, c_8), alpha_3);
     vec3 _e34 = specular_fresnel(base_2, metallic_2, f0_d_2, f90_d_2, dot(v_1, h_3));
     float _e35 = smith_visibility(n_l_1, n_v_2, alpha_3);
     return (_e34 * (_e32 * _e35));
@@ -481,14 +482,14 @@ float subtended_cos(float dist2_, float r2_2) {
 }
 
 vec4 emitter_cone(vec3 center, float radius, vec3 axis, float cos_o, vec3 p) {
-    vec3 v_7 = (p - center);
-    float dist2_1 = dot(v_7, v_7);
-    float r2_4 = (radius * radius);
-    float d2_8 = max(max(dist2_1, r2_4), MIN_D2_);
-    vec3 wi = ((dist2_1 > 0.0) ? (v_7 / vec3(sqrt(dist2_1))) : vec3(0.0, 0.0, 0.0));
+    vec3 v_8 = (p - center);
+    float dist2_1 = dot(v_8, v_8);
+    float r2_5 = (radius * radius);
+    float d2_8 = max(max(dist2_1, r2_5), MIN_D2_);
+    vec3 wi = ((dist2_1 > 0.0) ? (v_8 / vec3(sqrt(dist2_1))) : vec3(0.0, 0.0, 0.0));
     float cos_w = dot(axis, wi);
     float _e25 = safe_sqrt((1.0 - (cos_w * cos_w)));
-    float _e26 = subtended_cos(dist2_1, r2_4);
+    float _e26 = subtended_cos(dist2_1, r2_5);
     float _e30 = safe_sqrt((1.0 - (_e26 * _e26)));
     float _e34 = safe_sqrt((1.0 - (cos_o * cos_o)));
     float _e35 = cos_sub_clamped(_e25, cos_w, _e34, cos_o);
@@ -525,13 +526,13 @@ float cone_cos_of(vec3 v_3, float d2_4, float a_3, vec3 d) {
     if (_e21) {
         return 1.0;
     }
-    vec3 c_8 = cross(v_3, d);
-    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_8, c_8)) * a_3)) / d2_4), 1.0);
+    vec3 c_9 = cross(v_3, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_9, c_9)) * a_3)) / d2_4), 1.0);
 }
 
 float cone_cos_toward(vec3 center_2, float radius_2, vec3 p_2, vec3 d_1) {
-    vec3 v_8 = (center_2 - p_2);
-    float _e6 = cone_cos_of(v_8, dot(v_8, v_8), radius_2, d_1);
+    vec3 v_9 = (center_2 - p_2);
+    float _e6 = cone_cos_of(v_9, dot(v_9, v_9), radius_2, d_1);
     return _e6;
 }
 
@@ -557,9 +558,9 @@ float light_importance(vec3 center_4, float radius_4, float phi_1, vec3 axis_2, 
     }
     imp = ((phi_1 * _e8.x) / _e8.y);
     if ((dot(n_4, n_4) > 0.0)) {
-        vec3 v_9 = (center_4 - p_4);
-        float dist2_2 = dot(v_9, v_9);
-        float cos_i = dot(((dist2_2 > 0.0) ? (v_9 / vec3(sqrt(dist2_2))) : vec3(0.0, 0.0, 0.0)), n_4);
+        vec3 v_10 = (center_4 - p_4);
+        float dist2_2 = dot(v_10, v_10);
+        float cos_i = dot(((dist2_2 > 0.0) ? (v_10 / vec3(sqrt(dist2_2))) : vec3(0.0, 0.0, 0.0)), n_4);
         float _e33 = imp;
         float _e37 = safe_sqrt((1.0 - (cos_i * cos_i)));
         float _e40 = cos_sub_clamped(_e37, cos_i, _e8.w, _e8.z);
@@ -596,14 +597,14 @@ float candidate_weight(float importance, float rt2_2, float d2_5) {
 }
 
 float cone_weight(vec3 center_6, float radius_6, float phi_3, vec3 axis_4, float cos_o_4, float cos_e_3, float rt2_3, vec3 p_6, vec3 n_6, vec3 r_4, vec4 lobe_6) {
-    vec3 v_10 = (p_6 - center_6);
+    vec3 v_11 = (p_6 - center_6);
     if ((lobe_6.y <= 0.0)) {
         float _e15 = light_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_6);
-        float _e19 = candidate_weight((_e15 * INV_PI), rt2_3, dot(v_10, v_10));
+        float _e19 = candidate_weight((_e15 * INV_PI), rt2_3, dot(v_11, v_11));
         return _e19;
     }
     float _e20 = glossy_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_6, r_4, lobe_6);
-    float _e22 = candidate_weight(_e20, rt2_3, dot(v_10, v_10));
+    float _e22 = candidate_weight(_e20, rt2_3, dot(v_11, v_11));
     return _e22;
 }
 
@@ -637,8 +638,8 @@ float ray_aabb(vec3 o, vec3 inv_d, vec3 bmin, vec3 bmax, float t_max) {
 
 vec3 triangle_normal(vec3 a_4, vec3 b_3, vec3 c_3) {
     bool local_12 = false;
-    vec3 n_12 = cross((b_3 - a_4), (c_3 - a_4));
-    float l2_ = dot(n_12, n_12);
+    vec3 n_14 = cross((b_3 - a_4), (c_3 - a_4));
+    float l2_ = dot(n_14, n_14);
     if (!(!((l2_ > 0.0)))) {
         local_12 = !((l2_ < 3e38));
     } else {
@@ -648,7 +649,7 @@ vec3 triangle_normal(vec3 a_4, vec3 b_3, vec3 c_3) {
     if (_e17) {
         return vec3(0.0, 0.0, 0.0);
     }
-    return (n_12 / vec3(sqrt(l2_)));
+    return (n_14 / vec3(sqrt(l2_)));
 }
 
 float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_5, vec3 b_4, vec3 c_4, float t_min, float t_max_1) {
@@ -675,9 +676,9 @@ float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_5, vec3 b_4, vec3 c_4, float t_min
         return -1.0;
     }
     vec3 q = cross(s_3, e1_);
-    float v_11 = (dot(d_3, q) * inv_1);
-    if (!((v_11 < 0.0))) {
-        local_14 = ((u_3 + v_11) > 1.0);
+    float v_12 = (dot(d_3, q) * inv_1);
+    if (!((v_12 < 0.0))) {
+        local_14 = ((u_3 + v_12) > 1.0);
     } else {
         local_14 = true;
     }
@@ -734,12 +735,12 @@ GeoHit trace(vec3 o_2, vec3 d_4, float t_min_1, float t_max_2, bool any_hit) {
     vec3 _e14 = ray_inverse3_(d_4);
     while(true) {
         uint _e21 = node_2;
-        GpuGeoNode n_13 = _group_1_binding_6_cs[_e21];
+        GpuGeoNode n_15 = _group_1_binding_6_cs[_e21];
         float _e27 = hit.t;
-        float _e28 = ray_aabb(o_2, _e14, n_13.bmin, n_13.bmax, _e27);
+        float _e28 = ray_aabb(o_2, _e14, n_15.bmin, n_15.bmax, _e27);
         if ((_e28 >= 0.0)) {
-            if ((n_13.count > 0u)) {
-                i = n_13.first;
+            if ((n_15.count > 0u)) {
+                i = n_15.first;
                 bool loop_init = true;
                 while(true) {
                     if (!loop_init) {
@@ -748,7 +749,7 @@ GeoHit trace(vec3 o_2, vec3 d_4, float t_min_1, float t_max_2, bool any_hit) {
                     }
                     loop_init = false;
                     uint _e36 = i;
-                    if ((_e36 < (n_13.first + n_13.count))) {
+                    if ((_e36 < (n_15.first + n_15.count))) {
                     } else {
                         break;
                     }
@@ -772,11 +773,11 @@ GeoHit trace(vec3 o_2, vec3 d_4, float t_min_1, float t_max_2, bool any_hit) {
                 uint _e60 = sp;
                 if ((_e60 < 64u)) {
                     uint _e63 = sp;
-                    stack[_e63] = (n_13.first + 1u);
+                    stack[_e63] = (n_15.first + 1u);
                     uint _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_2 = n_13.first;
+                node_2 = n_15.first;
                 continue;
             }
         }
@@ -846,8 +847,8 @@ bool bsh_reaches(BshNode node_3, vec3 x_5, vec3 r_6, vec4 rl_3) {
         return false;
     }
     float _e25 = bsh_range_bound(node_3);
-    vec3 v_12 = (x_5 - node_3.center);
-    float d2_9 = dot(v_12, v_12);
+    vec3 v_13 = (x_5 - node_3.center);
+    float d2_9 = dot(v_13, v_13);
     float reach_max = (node_3.extent + ((rl_3.w * 1.001) * _e25));
     if ((d2_9 > (reach_max * reach_max))) {
         return false;
@@ -858,7 +859,7 @@ bool bsh_reaches(BshNode node_3, vec3 x_5, vec3 r_6, vec4 rl_3) {
         bool _e47 = sphere_contains_point(node_3.center, _e46, x_5);
         return _e47;
     }
-    float _e50 = bsh_inner_scale(node_3.extent, -(v_12), d2_9, r_6, rl_3);
+    float _e50 = bsh_inner_scale(node_3.extent, -(v_13), d2_9, r_6, rl_3);
     float s_c = (_e50 * 1.001);
     float reach = (node_3.extent + (sqrt(s_c) * _e25));
     if ((d2_9 <= ((node_3.radius * node_3.radius) * s_c))) {
@@ -897,64 +898,69 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start, vec3 x_6, vec3 r_7, vec4 rl_4)
     return BSH_NONE;
 }
 
-Connection connect_traced(uint li, vec3 x_7, vec3 n_7, vec3 ng_1, float s, float w_res, float u1_2, float u2_2, float eps, bool trace_1) {
+Connection connect_record(GpuLight l_4, vec3 x_7, vec3 n_7, vec3 ng_1, float r2_3, float rt2_4, float w_res, float u1_2, float u2_2, float eps, bool trace_1) {
     Connection c_5 = Connection(vec3(0.0), vec3(0.0), 0.0);
     bool local_18 = false;
     bool local_19 = false;
     c_5.e = vec3(0.0);
-    GpuLight l_4 = _group_1_binding_1_cs[li];
-    vec3 _e18 = light_point(l_4, u1_2, u2_2);
-    c_5.y = _e18;
-    vec3 _e21 = c_5.y;
-    float _e24 = _group_1_binding_3_cs[li];
-    float _e26 = connection_cosine(x_7, _e21, n_7, ng_1, (s * _e24));
-    c_5.cos_x = _e26;
-    float _e28 = c_5.cos_x;
-    if (!((_e28 <= 0.0))) {
+    vec3 _e16 = light_point(l_4, u1_2, u2_2);
+    c_5.y = _e16;
+    vec3 _e19 = c_5.y;
+    float _e20 = connection_cosine(x_7, _e19, n_7, ng_1, r2_3);
+    c_5.cos_x = _e20;
+    float _e22 = c_5.cos_x;
+    if (!((_e22 <= 0.0))) {
         if (trace_1) {
-            vec3 _e39 = c_5.y;
-            bool _e40 = occluded((x_7 + (ng_1 * eps)), _e39);
-            local_19 = _e40;
+            vec3 _e33 = c_5.y;
+            bool _e34 = occluded((x_7 + (ng_1 * eps)), _e33);
+            local_19 = _e34;
         } else {
             local_19 = false;
         }
-        bool _e42 = local_19;
-        local_18 = _e42;
+        bool _e36 = local_19;
+        local_18 = _e36;
     } else {
         local_18 = true;
     }
-    bool _e44 = local_18;
-    if (_e44) {
-        Connection _e45 = c_5;
-        return _e45;
+    bool _e38 = local_18;
+    if (_e38) {
+        Connection _e39 = c_5;
+        return _e39;
     }
-    vec3 _e47 = c_5.y;
-    vec3 v_13 = (x_7 - _e47);
-    float d2_10 = dot(v_13, v_13);
-    vec3 _e54 = light_intensity(l_4, (v_13 / vec3(sqrt(d2_10))));
-    float _e56 = c_5.cos_x;
-    float _e59 = _group_1_binding_2_cs[li];
-    float _e61 = connection_factor(_e56, d2_10, (s * _e59), w_res);
-    c_5.e = (_e54 * _e61);
-    Connection _e63 = c_5;
-    return _e63;
+    vec3 _e41 = c_5.y;
+    vec3 v_14 = (x_7 - _e41);
+    float d2_10 = dot(v_14, v_14);
+    vec3 _e48 = light_intensity(l_4, (v_14 / vec3(sqrt(d2_10))));
+    float _e50 = c_5.cos_x;
+    float _e51 = connection_factor(_e50, d2_10, rt2_4, w_res);
+    c_5.e = (_e48 * _e51);
+    Connection _e53 = c_5;
+    return _e53;
 }
 
-float light_range_scale(uint li_1, vec3 x_8, vec3 r_8, vec4 rl_5) {
-    GpuLightCone c_9 = _group_1_binding_5_cs[li_1];
-    float _e9 = range_scale_toward(rl_5, c_9.center, c_9.radius, x_8, r_8);
+Connection connect_traced(uint li, vec3 x_8, vec3 n_8, vec3 ng_2, float s, float w_res_1, float u1_3, float u2_3, float eps_1, bool trace_2) {
+    GpuLight _e12 = _group_1_binding_1_cs[li];
+    float _e15 = _group_1_binding_3_cs[li];
+    float _e19 = _group_1_binding_2_cs[li];
+    Connection _e21 = connect_record(_e12, x_8, n_8, ng_2, (s * _e15), (s * _e19), w_res_1, u1_3, u2_3, eps_1, trace_2);
+    return _e21;
+}
+
+float light_range_scale(uint li_1, vec3 x_9, vec3 r_8, vec4 rl_5) {
+    GpuLightCone c_10 = _group_1_binding_5_cs[li_1];
+    float _e9 = range_scale_toward(rl_5, c_10.center, c_10.radius, x_9, r_8);
     return _e9;
 }
 
-float light_weight(uint li_2, vec3 x_9, vec3 n_8, vec3 r_9, vec4 lobe_7, vec4 rl_6) {
-    GpuLightCone c_10 = _group_1_binding_5_cs[li_2];
-    float _e15 = light_range_scale(li_2, x_9, r_9, rl_6);
+float light_weight(uint li_2, vec3 x_10, vec3 n_9, vec3 r_9, vec4 lobe_7, vec4 rl_6) {
+    GpuLightCone c_11 = _group_1_binding_5_cs[li_2];
+    float _e15 = light_range_scale(li_2, x_10, r_9, rl_6);
     float _e18 = _group_1_binding_2_cs[li_2];
-    float _e20 = cone_weight(c_10.center, c_10.radius, c_10.phi, c_10.axis, c_10.cos_o, c_10.cos_e, (_e15 * _e18), x_9, n_8, r_9, lobe_7);
+    float _e20 = cone_weight(c_11.center, c_11.radius, c_11.phi, c_11.axis, c_11.cos_o, c_11.cos_e, (_e15 * _e18), x_10, n_9, r_9, lobe_7);
     return _e20;
 }
 
-WeightedPicks bsh_weighted_collect(vec3 x_10, vec3 n_9, vec3 r_10, vec4 lobe_8, vec4 rl_7, uint h0_) {
+WeightedPicks bsh_weighted_collect(vec3 x_11, vec3 n_10, vec3 r_10, vec4 lobe_8, vec4 rl_7, uint h0_) {
     WeightedPicks picks = WeightedPicks(uint[8](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u), float[8](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0.0, 0u, 0u);
     uint h_1 = 0u;
     uint b_6 = 0u;
@@ -963,14 +969,14 @@ WeightedPicks bsh_weighted_collect(vec3 x_10, vec3 n_9, vec3 r_10, vec4 lobe_8, 
     picks.n = 0u;
     h_1 = h0_;
     uint _e14 = bsh_first(BSH);
-    uint _e15 = bsh_next_leaf_lobe(BSH, _e14, x_10, r_10, rl_7);
+    uint _e15 = bsh_next_leaf_lobe(BSH, _e14, x_11, r_10, rl_7);
     b_6 = _e15;
     bool loop_init_1 = true;
     while(true) {
         if (!loop_init_1) {
             uint _e58 = b_6;
             uint _e61 = _group_1_binding_4_cs[_e58].next;
-            uint _e62 = bsh_next_leaf_lobe(BSH, _e61, x_10, r_10, rl_7);
+            uint _e62 = bsh_next_leaf_lobe(BSH, _e61, x_11, r_10, rl_7);
             b_6 = _e62;
         }
         loop_init_1 = false;
@@ -984,7 +990,7 @@ WeightedPicks bsh_weighted_collect(vec3 x_10, vec3 n_9, vec3 r_10, vec4 lobe_8, 
             picks.n = (_e21 + 1u);
             uint _e25 = b_6;
             uint li_5 = _group_1_binding_4_cs[_e25].light;
-            float _e29 = light_weight(li_5, x_10, n_9, r_10, lobe_8, rl_7);
+            float _e29 = light_weight(li_5, x_11, n_10, r_10, lobe_8, rl_7);
             if ((_e29 > 0.0)) {
                 float _e33 = picks.w_sum;
                 picks.w_sum = (_e33 + _e29);
@@ -1031,32 +1037,42 @@ vec4 surface_at(ivec2 texel) {
     return ((p_8.w > 0.0) ? vec4(p_8.xyz, 1.0) : vec4(0.0));
 }
 
-Shaded shade_pick_traced(uint li_3, vec3 x_11, vec3 n_10, vec3 r_11, vec4 rl_8, Material m_1, float w_5, float u1_3, float u2_3, float eps_1, bool trace_2) {
+Shaded shade_connection(Connection c_6, vec3 x_12, vec3 n_11, Material m_1) {
     Shaded s_2 = Shaded(vec3(0.0), vec3(0.0), vec3(0.0));
-    float _e12 = light_range_scale(li_3, x_11, r_11, rl_8);
-    Connection _e13 = connect_traced(li_3, x_11, n_10, n_10, _e12, w_5, u1_3, u2_3, eps_1, trace_2);
-    s_2.e = _e13.e;
+    s_2.e = c_6.e;
     s_2.diffuse = vec3(0.0);
     s_2.specular = vec3(0.0);
-    if ((_e13.cos_x > 0.0)) {
-        vec3 l_5 = normalize((_e13.y - x_11));
-        vec3 _e33 = _group_0_binding_0_cs.f0_d;
-        float _e36 = _group_0_binding_0_cs.f90_d;
-        float _e38 = half_cosine(m_1.v, l_5);
-        vec3 _e39 = diffuse_brdf(m_1.base, m_1.metallic, _e33, _e36, _e38);
-        s_2.diffuse = (_e39 * _e13.e);
-        vec3 _e47 = _group_0_binding_0_cs.f0_d;
-        float _e50 = _group_0_binding_0_cs.f90_d;
-        vec3 _e53 = specular_brdf(m_1.base, m_1.metallic, _e47, _e50, m_1.alpha, n_10, m_1.v, l_5);
-        s_2.specular = (_e53 * _e13.e);
+    if ((c_6.cos_x > 0.0)) {
+        vec3 l_5 = normalize((c_6.y - x_12));
+        vec3 _e24 = _group_0_binding_0_cs.f0_d;
+        float _e27 = _group_0_binding_0_cs.f90_d;
+        float _e29 = half_cosine(m_1.v, l_5);
+        vec3 _e30 = diffuse_brdf(m_1.base, m_1.metallic, _e24, _e27, _e29);
+        s_2.diffuse = (_e30 * c_6.e);
+        vec3 _e38 = _group_0_binding_0_cs.f0_d;
+        float _e41 = _group_0_binding_0_cs.f90_d;
+        vec3 _e44 = specular_brdf(m_1.base, m_1.metallic, _e38, _e41, m_1.alpha, n_11, m_1.v, l_5);
+        s_2.specular = (_e44 * c_6.e);
     }
-    Shaded _e56 = s_2;
-    return _e56;
+    Shaded _e47 = s_2;
+    return _e47;
 }
 
-Shaded shade_pick(uint li_4, vec3 x_12, vec3 n_11, vec3 r_12, vec4 rl_9, Material m_2, float w_6, float u1_4, float u2_4, float eps_2) {
-    Shaded _e11 = shade_pick_traced(li_4, x_12, n_11, r_12, rl_9, m_2, w_6, u1_4, u2_4, eps_2, true);
+Shaded shade_pick_traced(uint li_3, vec3 x_13, vec3 n_12, vec3 r_11, vec4 rl_8, Material m_2, float w_5, float u1_4, float u2_4, float eps_2, bool trace_3) {
+    float _e11 = light_range_scale(li_3, x_13, r_11, rl_8);
+    Connection _e12 = connect_traced(li_3, x_13, n_12, n_12, _e11, w_5, u1_4, u2_4, eps_2, trace_3);
+    Shaded _e13 = shade_connection(_e12, x_13, n_12, m_2);
+    return _e13;
+}
+
+Shaded shade_pick(uint li_4, vec3 x_14, vec3 n_13, vec3 r_12, vec4 rl_9, Material m_3, float w_6, float u1_5, float u2_5, float eps_3) {
+    Shaded _e11 = shade_pick_traced(li_4, x_14, n_13, r_12, rl_9, m_3, w_6, u1_5, u2_5, eps_3, true);
     return _e11;
+}
+
+Material material_of(vec3 base_4, float metallic_5, float roughness_1, float reflectance, vec3 v_5) {
+    float _e7 = ggx_alpha(clamp(roughness_1, 0.0, 1.0));
+    return Material(base_4, clamp(metallic_5, 0.0, 1.0), _e7, v_5, roughness_1, 0.0);
 }
 
 Shaded add(Shaded a_8, Shaded b_7) {
@@ -1139,87 +1155,87 @@ void main() {
         imageStore(_group_0_binding_6_cs, texel_1, vec4(0.0));
         return;
     }
-    vec3 x_13 = _e21.xyz;
-    vec3 n_14 = (nn / vec3(sqrt(len2_1)));
-    r = n_14;
+    vec3 x_15 = _e21.xyz;
+    vec3 n_16 = (nn / vec3(sqrt(len2_1)));
+    r = n_16;
     vec4 mr = texelFetch(_group_0_binding_5_cs, texel_1, 0);
     vec4 _e61 = texelFetch(_group_0_binding_4_cs, texel_1, 0);
-    float _e67 = ggx_alpha(clamp(mr.y, 0.0, 1.0));
-    vec3 _e70 = _group_0_binding_0_cs.eye;
-    m = Material(_e61.xyz, clamp(mr.z, 0.0, 1.0), _e67, normalize((_e70 - x_13)), mr.y, 0.0);
-    vec3 _e77 = m.base;
-    float _e79 = m.metallic;
-    vec3 _e82 = _group_0_binding_0_cs.f0_d;
-    float _e85 = _group_0_binding_0_cs.f90_d;
-    float _e87 = m.alpha;
+    vec3 _e68 = _group_0_binding_0_cs.eye;
+    Material _e71 = material_of(_e61.xyz, mr.z, mr.y, mr.w, normalize((_e68 - x_15)));
+    m = _e71;
+    vec3 _e73 = m.base;
+    float _e75 = m.metallic;
+    vec3 _e78 = _group_0_binding_0_cs.f0_d;
+    float _e81 = _group_0_binding_0_cs.f90_d;
+    float _e83 = m.alpha;
+    vec3 _e85 = m.v;
+    vec4 _e87 = receiver_lobe(_e73, _e75, _e78, _e81, _e83, dot(n_16, _e85));
+    lobe = _e87;
     vec3 _e89 = m.v;
-    vec4 _e91 = receiver_lobe(_e77, _e79, _e82, _e85, _e87, dot(n_14, _e89));
-    lobe = _e91;
-    vec3 _e93 = m.v;
-    vec3 _e94 = mirror_dir(n_14, _e93);
-    r = _e94;
-    vec4 _e95 = lobe;
-    vec4 _e96 = range_lobe(_e95);
-    float _e99 = _group_0_binding_0_cs.shadow_offset;
-    vec3 _e102 = _group_0_binding_0_cs.eye;
-    float eps_3 = (_e99 * length((_e102 - x_13)));
-    uint _e108 = _group_0_binding_0_cs.seed;
-    uint _e112 = _group_0_binding_0_cs.width;
-    uint _e118 = _group_0_binding_0_cs.frame;
-    uint _e119 = point_stream(_e108, ((gid.y * _e112) + gid.x), _e118);
-    uint _e120 = pick_stream(_e119);
-    h = _e120;
-    vec3 _e130 = r;
-    vec4 _e131 = lobe;
-    WeightedPicks _e132 = bsh_weighted_collect(x_13, n_14, _e130, _e131, _e96, _e119);
-    if ((_e132.w_sum > 0.0)) {
+    vec3 _e90 = mirror_dir(n_16, _e89);
+    r = _e90;
+    vec4 _e91 = lobe;
+    vec4 _e92 = range_lobe(_e91);
+    float _e95 = _group_0_binding_0_cs.shadow_offset;
+    vec3 _e98 = _group_0_binding_0_cs.eye;
+    float eps_4 = (_e95 * length((_e98 - x_15)));
+    uint _e104 = _group_0_binding_0_cs.seed;
+    uint _e108 = _group_0_binding_0_cs.width;
+    uint _e114 = _group_0_binding_0_cs.frame;
+    uint _e115 = point_stream(_e104, ((gid.y * _e108) + gid.x), _e114);
+    uint _e116 = pick_stream(_e115);
+    h = _e116;
+    vec3 _e126 = r;
+    vec4 _e127 = lobe;
+    WeightedPicks _e128 = bsh_weighted_collect(x_15, n_16, _e126, _e127, _e92, _e115);
+    if ((_e128.w_sum > 0.0)) {
         bool loop_init_4 = true;
         while(true) {
             if (!loop_init_4) {
-                uint _e179 = k;
-                k = (_e179 + 1u);
+                uint _e175 = k;
+                k = (_e175 + 1u);
             }
             loop_init_4 = false;
-            uint _e138 = k;
-            if ((_e138 < K)) {
+            uint _e134 = k;
+            if ((_e134 < K)) {
             } else {
                 break;
             }
             {
+                uint _e137 = h;
+                uint _e138 = pcg_hash(_e137);
+                h = _e138;
+                uint _e139 = h;
+                float _e140 = xi_from_bits(_e139);
                 uint _e141 = h;
                 uint _e142 = pcg_hash(_e141);
                 h = _e142;
                 uint _e143 = h;
                 float _e144 = xi_from_bits(_e143);
-                uint _e145 = h;
-                uint _e146 = pcg_hash(_e145);
-                h = _e146;
-                uint _e147 = h;
-                float _e148 = xi_from_bits(_e147);
+                uint _e146 = k;
+                uint li_6 = _e128.light[_e146];
                 uint _e150 = k;
-                uint li_6 = _e132.light[_e150];
-                uint _e154 = k;
-                uint _e155 = pick_copies(_e132.light, _e154);
-                uint _e159 = _group_1_binding_1_cs[li_6].kind;
-                uint copies_1 = ((_e159 != LIGHT_TRIANGLE) ? _e155 : 1u);
+                uint _e151 = pick_copies(_e128.light, _e150);
+                uint _e155 = _group_1_binding_1_cs[li_6].kind;
+                uint copies_1 = ((_e155 != LIGHT_TRIANGLE) ? _e151 : 1u);
                 if ((copies_1 > 0u)) {
-                    Shaded _e165 = t;
-                    vec3 _e166 = r;
-                    Material _e167 = m;
-                    uint _e170 = k;
-                    float _e173 = weighted_pick_weight(_e132.w_sum, _e132.w[_e170], K);
-                    Shaded _e176 = shade_pick(li_6, x_13, n_14, _e166, _e96, _e167, (_e173 * float(copies_1)), _e144, _e148, eps_3);
-                    Shaded _e177 = add(_e165, _e176);
-                    t = _e177;
+                    Shaded _e161 = t;
+                    vec3 _e162 = r;
+                    Material _e163 = m;
+                    uint _e166 = k;
+                    float _e169 = weighted_pick_weight(_e128.w_sum, _e128.w[_e166], K);
+                    Shaded _e172 = shade_pick(li_6, x_15, n_16, _e162, _e92, _e163, (_e169 * float(copies_1)), _e140, _e144, eps_4);
+                    Shaded _e173 = add(_e161, _e172);
+                    t = _e173;
                 }
             }
         }
     }
-    uint count = _e132.n;
-    vec3 _e184 = t.e;
-    imageStore(_group_0_binding_3_cs, texel_1, vec4(_e184, float(count)));
-    vec3 _e189 = t.specular;
-    imageStore(_group_0_binding_6_cs, texel_1, vec4(_e189, 0.0));
+    uint count = _e128.n;
+    vec3 _e180 = t.e;
+    imageStore(_group_0_binding_3_cs, texel_1, vec4(_e180, float(count)));
+    vec3 _e185 = t.specular;
+    imageStore(_group_0_binding_6_cs, texel_1, vec4(_e185, 0.0));
     return;
 }
 

@@ -37,6 +37,7 @@ const uint MAP_ORTHOGRAPHIC = 2u;
 const float XI_STEP = 5.9604645e-8;
 const uint PICK_STREAM = 2654435769u;
 const float TWO_PI = 6.2831855;
+const float UNRANGED = 1e38;
 const float CULL_RADIUS_SCALE = 1.000001;
 const float SPHERE_PAD = 4.7683716e-7;
 const float SPHERE_HUGE = 3.4028235e38;

@@ -104,6 +104,7 @@ const uint MAP_ORTHOGRAPHIC = 2u;
 const float XI_STEP = 5.9604645e-8;
 const uint PICK_STREAM = 2654435769u;
 const float TWO_PI = 6.2831855;
+const float UNRANGED = 1e38;
 const float CULL_RADIUS_SCALE = 1.000001;
 const float SPHERE_PAD = 4.7683716e-7;
 const float SPHERE_HUGE = 3.4028235e38;
@@ -927,8 +928,8 @@ float ray_aabb(vec3 o, vec3 inv_d, vec3 bmin, vec3 bmax, float t_max) {
 
 vec3 triangle_normal(vec3 a_6, vec3 b_4, vec3 c_5) {
     bool local_16 = false;
-    vec3 n_20 = cross((b_4 - a_6), (c_5 - a_6));
-    float l2_ = dot(n_20, n_20);
+    vec3 n_21 = cross((b_4 - a_6), (c_5 - a_6));
+    float l2_ = dot(n_21, n_21);
     if (!(!((l2_ > 0.0)))) {
         local_16 = !((l2_ < 3e38));
     } else {
@@ -938,7 +939,7 @@ vec3 triangle_normal(vec3 a_6, vec3 b_4, vec3 c_5) {
     if (_e17) {
         return vec3(0.0, 0.0, 0.0);
     }
-    return (n_20 / vec3(sqrt(l2_)));
+    return (n_21 / vec3(sqrt(l2_)));
 }
 
 float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_7, vec3 b_5, vec3 c_6, float t_min, float t_max_1) {
@@ -1054,12 +1055,12 @@ GeoHit trace(vec3 o_2, vec3 d_4, float t_min_1, float t_max_2, bool any_hit) {
     vec3 _e14 = ray_inverse3_(d_4);
     while(true) {
         uint _e21 = node_2;
-        GpuGeoNode n_21 = _group_0_binding_6_cs[_e21];
+        GpuGeoNode n_22 = _group_0_binding_6_cs[_e21];
         float _e27 = hit.t;
-        float _e28 = ray_aabb(o_2, _e14, n_21.bmin, n_21.bmax, _e27);
+        float _e28 = ray_aabb(o_2, _e14, n_22.bmin, n_22.bmax, _e27);
         if ((_e28 >= 0.0)) {
-            if ((n_21.count > 0u)) {
-                i_1 = n_21.first;
+            if ((n_22.count > 0u)) {
+                i_1 = n_22.first;
                 bool loop_init = true;
                 while(true) {
                     if (!loop_init) {
@@ -1068,7 +1069,7 @@ GeoHit trace(vec3 o_2, vec3 d_4, float t_min_1, float t_max_2, bool any_hit) {
                     }
                     loop_init = false;
                     uint _e36 = i_1;
-                    if ((_e36 < (n_21.first + n_21.count))) {
+                    if ((_e36 < (n_22.first + n_22.count))) {
                     } else {
                         break;
                     }
@@ -1092,11 +1093,11 @@ GeoHit trace(vec3 o_2, vec3 d_4, float t_min_1, float t_max_2, bool any_hit) {
                 uint _e60 = sp;
                 if ((_e60 < 64u)) {
                     uint _e63 = sp;
-                    stack[_e63] = (n_21.first + 1u);
+                    stack[_e63] = (n_22.first + 1u);
                     uint _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_2 = n_21.first;
+                node_2 = n_22.first;
                 continue;
             }
         }
@@ -1268,51 +1269,56 @@ Picks bsh_collect(vec3 x_11, vec3 r_5, vec4 rl_5, uint seed_1) {
     return _e49;
 }
 
-Connection connect_traced(uint li, vec3 x_12, vec3 n_15, vec3 ng_1, float s_1, float w_res, float u1_2, float u2_2, float eps, bool trace_1) {
+Connection connect_record(GpuLight l_8, vec3 x_12, vec3 n_15, vec3 ng_1, float r2_2, float rt2_4, float w_res, float u1_2, float u2_2, float eps, bool trace_1) {
     Connection c_7 = Connection(vec3(0.0), vec3(0.0), 0.0);
     bool local_22 = false;
     bool local_23 = false;
     c_7.e = vec3(0.0);
-    GpuLight l_8 = _group_0_binding_2_cs[li];
-    vec3 _e18 = light_point(l_8, u1_2, u2_2);
-    c_7.y = _e18;
-    vec3 _e21 = c_7.y;
-    float _e24 = _group_0_binding_4_cs[li];
-    float _e26 = connection_cosine(x_12, _e21, n_15, ng_1, (s_1 * _e24));
-    c_7.cos_x = _e26;
-    float _e28 = c_7.cos_x;
-    if (!((_e28 <= 0.0))) {
+    vec3 _e16 = light_point(l_8, u1_2, u2_2);
+    c_7.y = _e16;
+    vec3 _e19 = c_7.y;
+    float _e20 = connection_cosine(x_12, _e19, n_15, ng_1, r2_2);
+    c_7.cos_x = _e20;
+    float _e22 = c_7.cos_x;
+    if (!((_e22 <= 0.0))) {
         if (trace_1) {
-            vec3 _e39 = c_7.y;
-            bool _e40 = occluded((x_12 + (ng_1 * eps)), _e39);
-            local_23 = _e40;
+            vec3 _e33 = c_7.y;
+            bool _e34 = occluded((x_12 + (ng_1 * eps)), _e33);
+            local_23 = _e34;
         } else {
             local_23 = false;
         }
-        bool _e42 = local_23;
-        local_22 = _e42;
+        bool _e36 = local_23;
+        local_22 = _e36;
     } else {
         local_22 = true;
     }
-    bool _e44 = local_22;
-    if (_e44) {
-        Connection _e45 = c_7;
-        return _e45;
+    bool _e38 = local_22;
+    if (_e38) {
+        Connection _e39 = c_7;
+        return _e39;
     }
-    vec3 _e47 = c_7.y;
-    vec3 v_13 = (x_12 - _e47);
+    vec3 _e41 = c_7.y;
+    vec3 v_13 = (x_12 - _e41);
     float d2_11 = dot(v_13, v_13);
-    vec3 _e54 = light_intensity(l_8, (v_13 / vec3(sqrt(d2_11))));
-    float _e56 = c_7.cos_x;
-    float _e59 = _group_0_binding_3_cs[li];
-    float _e61 = connection_factor(_e56, d2_11, (s_1 * _e59), w_res);
-    c_7.e = (_e54 * _e61);
-    Connection _e63 = c_7;
-    return _e63;
+    vec3 _e48 = light_intensity(l_8, (v_13 / vec3(sqrt(d2_11))));
+    float _e50 = c_7.cos_x;
+    float _e51 = connection_factor(_e50, d2_11, rt2_4, w_res);
+    c_7.e = (_e48 * _e51);
+    Connection _e53 = c_7;
+    return _e53;
 }
 
-Connection connect(uint li_1, vec3 x_13, vec3 n_16, vec3 ng_2, float s_2, float w_res_1, float u1_3, float u2_3, float eps_1) {
-    Connection _e10 = connect_traced(li_1, x_13, n_16, ng_2, s_2, w_res_1, u1_3, u2_3, eps_1, true);
+Connection connect_traced(uint li, vec3 x_13, vec3 n_16, vec3 ng_2, float s_1, float w_res_1, float u1_3, float u2_3, float eps_1, bool trace_2) {
+    GpuLight _e12 = _group_0_binding_2_cs[li];
+    float _e15 = _group_0_binding_4_cs[li];
+    float _e19 = _group_0_binding_3_cs[li];
+    Connection _e21 = connect_record(_e12, x_13, n_16, ng_2, (s_1 * _e15), (s_1 * _e19), w_res_1, u1_3, u2_3, eps_1, trace_2);
+    return _e21;
+}
+
+Connection connect(uint li_1, vec3 x_14, vec3 n_17, vec3 ng_3, float s_2, float w_res_2, float u1_4, float u2_4, float eps_2) {
+    Connection _e10 = connect_traced(li_1, x_14, n_17, ng_3, s_2, w_res_2, u1_4, u2_4, eps_2, true);
     return _e10;
 }
 
@@ -1321,55 +1327,55 @@ float mis_weight(float pdf_a_1, float pdf_b_1) {
     return _e2;
 }
 
-float light_range_scale(uint li_2, vec3 x_14, vec3 r_6, vec4 rl_6) {
+float light_range_scale(uint li_2, vec3 x_15, vec3 r_6, vec4 rl_6) {
     GpuLightCone c_13 = _group_1_binding_2_cs[li_2];
-    float _e9 = range_scale_toward(rl_6, c_13.center, c_13.radius, x_14, r_6);
+    float _e9 = range_scale_toward(rl_6, c_13.center, c_13.radius, x_15, r_6);
     return _e9;
 }
 
-float select_pdf(uint li_3, vec3 x_15, vec3 n_17, vec3 r_7, vec4 lobe_5, vec4 rl_7, uint nee, bool in_range_1) {
+float select_pdf(uint li_3, vec3 x_16, vec3 n_18, vec3 r_7, vec4 lobe_5, vec4 rl_7, uint nee, bool in_range_1) {
     float _e9 = reservoir_select_pdf(nee, in_range_1, K);
     return _e9;
 }
 
-float light_pdf_selected(uint li_4, vec3 x_16, vec3 r_8, vec4 rl_8, vec3 y_2, float sel) {
+float light_pdf_selected(uint li_4, vec3 x_17, vec3 r_8, vec4 rl_8, vec3 y_2, float sel) {
     GpuLight l_9 = _group_0_binding_2_cs[li_4];
-    vec3 v_14 = (x_16 - y_2);
+    vec3 v_14 = (x_17 - y_2);
     float d2_12 = dot(v_14, v_14);
     vec3 _e11 = light_normal(l_9);
     float cos_y_1 = ((d2_12 > 0.0) ? dot(_e11, (v_14 / vec3(sqrt(d2_12)))) : 0.0);
-    float _e20 = light_range_scale(li_4, x_16, r_8, rl_8);
+    float _e20 = light_range_scale(li_4, x_17, r_8, rl_8);
     float _e23 = _group_0_binding_3_cs[li_4];
     float _e25 = light_area(l_9);
     float _e26 = light_strategy_pdf(sel, (_e20 * _e23), d2_12, _e25, cos_y_1);
     return _e26;
 }
 
-float light_pdf(uint li_5, vec3 x_17, vec3 n_18, vec3 r_9, vec4 lobe_6, vec4 rl_9, vec3 y_3, uint nee_1, bool in_range_2) {
-    float _e9 = select_pdf(li_5, x_17, n_18, r_9, lobe_6, rl_9, nee_1, in_range_2);
-    float _e10 = light_pdf_selected(li_5, x_17, r_9, rl_9, y_3, _e9);
+float light_pdf(uint li_5, vec3 x_18, vec3 n_19, vec3 r_9, vec4 lobe_6, vec4 rl_9, vec3 y_3, uint nee_1, bool in_range_2) {
+    float _e9 = select_pdf(li_5, x_18, n_19, r_9, lobe_6, rl_9, nee_1, in_range_2);
+    float _e10 = light_pdf_selected(li_5, x_18, r_9, rl_9, y_3, _e9);
     return _e10;
 }
 
-vec3 shade_pick(uint li_6, vec3 x_18, vec3 n_19, vec3 ng_3, GpuMaterial m, vec3 wo_1, vec3 r_10, vec4 lobe_7, vec4 rl_10, float w_6, uint nee_2, float u1_4, float u2_4) {
+vec3 shade_pick(uint li_6, vec3 x_19, vec3 n_20, vec3 ng_4, GpuMaterial m, vec3 wo_1, vec3 r_10, vec4 lobe_7, vec4 rl_10, float w_6, uint nee_2, float u1_5, float u2_5) {
     float mis = 1.0;
-    float _e13 = light_range_scale(li_6, x_18, r_10, rl_10);
+    float _e13 = light_range_scale(li_6, x_19, r_10, rl_10);
     float _e16 = _group_0_binding_0_cs.eps;
-    Connection _e17 = connect(li_6, x_18, n_19, ng_3, _e13, w_6, u1_4, u2_4, _e16);
+    Connection _e17 = connect(li_6, x_19, n_20, ng_4, _e13, w_6, u1_5, u2_5, _e16);
     if ((_e17.cos_x <= 0.0)) {
         return vec3(0.0);
     }
-    vec3 l_10 = normalize((_e17.y - x_18));
+    vec3 l_10 = normalize((_e17.y - x_19));
     GpuLight _e30 = _group_0_binding_2_cs[li_6];
     float _e31 = light_area(_e30);
     if ((_e31 > 0.0)) {
-        float _e36 = light_pdf(li_6, x_18, n_19, r_10, lobe_7, rl_10, _e17.y, nee_2, true);
+        float _e36 = light_pdf(li_6, x_19, n_20, r_10, lobe_7, rl_10, _e17.y, nee_2, true);
         float _e38 = specular_probability(lobe_7);
-        float _e39 = bsdf_pdf(n_19, wo_1, l_10, m.alpha, _e38);
+        float _e39 = bsdf_pdf(n_20, wo_1, l_10, m.alpha, _e38);
         float _e40 = mis_weight(_e36, _e39);
         mis = _e40;
     }
-    vec3 _e46 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_19, wo_1, l_10);
+    vec3 _e46 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_20, wo_1, l_10);
     float _e49 = mis;
     return ((_e46 * _e17.e) * _e49);
 }
@@ -1389,20 +1395,20 @@ void main() {
         _group_0_binding_10_cs[i_5] = 0u;
         return;
     }
-    vec3 x_19 = vtx.position;
-    vec3 n_22 = vtx.normal;
-    vec3 ng_4 = vtx.gnormal;
+    vec3 x_20 = vtx.position;
+    vec3 n_23 = vtx.normal;
+    vec3 ng_5 = vtx.gnormal;
     GpuMaterial m_2 = _group_0_binding_8_cs[vtx.material];
     vec3 wo_2 = vtx.wo;
-    vec3 _e23 = mirror_dir(n_22, wo_2);
-    vec4 _e30 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, dot(n_22, wo_2));
+    vec3 _e23 = mirror_dir(n_23, wo_2);
+    vec4 _e30 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, dot(n_23, wo_2));
     vec4 _e31 = range_lobe(_e30);
     uint _e34 = _group_0_binding_0_cs.seed;
     uint _e37 = _group_0_binding_0_cs.frame;
     uint _e38 = point_stream(_e34, i_5, _e37);
     uint _e39 = pick_stream(_e38);
     h = _e39;
-    Picks _e44 = bsh_collect(x_19, _e23, _e31, _e38);
+    Picks _e44 = bsh_collect(x_20, _e23, _e31, _e38);
     _group_0_binding_10_cs[i_5] = _e44.n;
     float _e50 = reservoir_weight(_e44.n, K);
     bool loop_init_2 = true;
@@ -1430,7 +1436,7 @@ void main() {
             uint _e66 = s;
             uint _e69 = h;
             float _e70 = xi_from_bits(_e69);
-            vec3 _e71 = shade_pick(_e44.light[_e66], x_19, n_22, ng_4, m_2, wo_2, _e23, _e30, _e31, _e50, _e44.n, _e61, _e70);
+            vec3 _e71 = shade_pick(_e44.light[_e66], x_20, n_23, ng_5, m_2, wo_2, _e23, _e30, _e31, _e50, _e44.n, _e61, _e70);
             sum = (_e64 + _e71);
         }
     }

@@ -106,6 +106,7 @@ const uint MAP_ORTHOGRAPHIC = 2u;
 const float XI_STEP = 5.9604645e-8;
 const uint PICK_STREAM = 2654435769u;
 const float TWO_PI = 6.2831855;
+const float UNRANGED = 1e38;
 const float CULL_RADIUS_SCALE = 1.000001;
 const float SPHERE_PAD = 4.7683716e-7;
 const float SPHERE_HUGE = 3.4028235e38;
@@ -565,12 +566,12 @@ float subtended_cos(float dist2_, float r2_2) {
 vec4 emitter_cone(vec3 center, float radius, vec3 axis, float cos_o, vec3 p) {
     vec3 v_8 = (p - center);
     float dist2_1 = dot(v_8, v_8);
-    float r2_4 = (radius * radius);
-    float d2_9 = max(max(dist2_1, r2_4), MIN_D2_);
+    float r2_5 = (radius * radius);
+    float d2_9 = max(max(dist2_1, r2_5), MIN_D2_);
     vec3 wi_2 = ((dist2_1 > 0.0) ? (v_8 / vec3(sqrt(dist2_1))) : vec3(0.0, 0.0, 0.0));
     float cos_w = dot(axis, wi_2);
     float _e25 = safe_sqrt((1.0 - (cos_w * cos_w)));
-    float _e26 = subtended_cos(dist2_1, r2_4);
+    float _e26 = subtended_cos(dist2_1, r2_5);
     float _e30 = safe_sqrt((1.0 - (_e26 * _e26)));
     float _e34 = safe_sqrt((1.0 - (cos_o * cos_o)));
     float _e35 = cos_sub_clamped(_e25, cos_w, _e34, cos_o);
@@ -744,8 +745,8 @@ float ray_aabb(vec3 o, vec3 inv_d, vec3 bmin, vec3 bmax, float t_max) {
 
 vec3 triangle_normal(vec3 a_4, vec3 b_3, vec3 c_2) {
     bool local_15 = false;
-    vec3 n_18 = cross((b_3 - a_4), (c_2 - a_4));
-    float l2_ = dot(n_18, n_18);
+    vec3 n_19 = cross((b_3 - a_4), (c_2 - a_4));
+    float l2_ = dot(n_19, n_19);
     if (!(!((l2_ > 0.0)))) {
         local_15 = !((l2_ < 3e38));
     } else {
@@ -755,7 +756,7 @@ vec3 triangle_normal(vec3 a_4, vec3 b_3, vec3 c_2) {
     if (_e17) {
         return vec3(0.0, 0.0, 0.0);
     }
-    return (n_18 / vec3(sqrt(l2_)));
+    return (n_19 / vec3(sqrt(l2_)));
 }
 
 float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_5, vec3 b_4, vec3 c_3, float t_min, float t_max_1) {
@@ -856,12 +857,12 @@ GeoHit trace(vec3 o_2, vec3 d_4, float t_min_1, float t_max_2, bool any_hit) {
     vec3 _e14 = ray_inverse3_(d_4);
     while(true) {
         uint _e21 = node;
-        GpuGeoNode n_19 = _group_0_binding_6_cs[_e21];
+        GpuGeoNode n_20 = _group_0_binding_6_cs[_e21];
         float _e27 = hit.t;
-        float _e28 = ray_aabb(o_2, _e14, n_19.bmin, n_19.bmax, _e27);
+        float _e28 = ray_aabb(o_2, _e14, n_20.bmin, n_20.bmax, _e27);
         if ((_e28 >= 0.0)) {
-            if ((n_19.count > 0u)) {
-                i = n_19.first;
+            if ((n_20.count > 0u)) {
+                i = n_20.first;
                 bool loop_init = true;
                 while(true) {
                     if (!loop_init) {
@@ -870,7 +871,7 @@ GeoHit trace(vec3 o_2, vec3 d_4, float t_min_1, float t_max_2, bool any_hit) {
                     }
                     loop_init = false;
                     uint _e36 = i;
-                    if ((_e36 < (n_19.first + n_19.count))) {
+                    if ((_e36 < (n_20.first + n_20.count))) {
                     } else {
                         break;
                     }
@@ -894,11 +895,11 @@ GeoHit trace(vec3 o_2, vec3 d_4, float t_min_1, float t_max_2, bool any_hit) {
                 uint _e60 = sp;
                 if ((_e60 < 64u)) {
                     uint _e63 = sp;
-                    stack[_e63] = (n_19.first + 1u);
+                    stack[_e63] = (n_20.first + 1u);
                     uint _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node = n_19.first;
+                node = n_20.first;
                 continue;
             }
         }
@@ -927,51 +928,56 @@ bool occluded(vec3 a_6, vec3 b_5) {
     return (_e12.tri != NO_LIGHT);
 }
 
-Connection connect_traced(uint li, vec3 x_4, vec3 n_12, vec3 ng_1, float s, float w_res, float u1_2, float u2_2, float eps, bool trace_1) {
+Connection connect_record(GpuLight l_8, vec3 x_4, vec3 n_12, vec3 ng_1, float r2_3, float rt2_4, float w_res, float u1_2, float u2_2, float eps, bool trace_1) {
     Connection c_4 = Connection(vec3(0.0), vec3(0.0), 0.0);
     bool local_19 = false;
     bool local_20 = false;
     c_4.e = vec3(0.0);
-    GpuLight l_8 = _group_0_binding_2_cs[li];
-    vec3 _e18 = light_point(l_8, u1_2, u2_2);
-    c_4.y = _e18;
-    vec3 _e21 = c_4.y;
-    float _e24 = _group_0_binding_4_cs[li];
-    float _e26 = connection_cosine(x_4, _e21, n_12, ng_1, (s * _e24));
-    c_4.cos_x = _e26;
-    float _e28 = c_4.cos_x;
-    if (!((_e28 <= 0.0))) {
+    vec3 _e16 = light_point(l_8, u1_2, u2_2);
+    c_4.y = _e16;
+    vec3 _e19 = c_4.y;
+    float _e20 = connection_cosine(x_4, _e19, n_12, ng_1, r2_3);
+    c_4.cos_x = _e20;
+    float _e22 = c_4.cos_x;
+    if (!((_e22 <= 0.0))) {
         if (trace_1) {
-            vec3 _e39 = c_4.y;
-            bool _e40 = occluded((x_4 + (ng_1 * eps)), _e39);
-            local_20 = _e40;
+            vec3 _e33 = c_4.y;
+            bool _e34 = occluded((x_4 + (ng_1 * eps)), _e33);
+            local_20 = _e34;
         } else {
             local_20 = false;
         }
-        bool _e42 = local_20;
-        local_19 = _e42;
+        bool _e36 = local_20;
+        local_19 = _e36;
     } else {
         local_19 = true;
     }
-    bool _e44 = local_19;
-    if (_e44) {
-        Connection _e45 = c_4;
-        return _e45;
+    bool _e38 = local_19;
+    if (_e38) {
+        Connection _e39 = c_4;
+        return _e39;
     }
-    vec3 _e47 = c_4.y;
-    vec3 v_12 = (x_4 - _e47);
+    vec3 _e41 = c_4.y;
+    vec3 v_12 = (x_4 - _e41);
     float d2_10 = dot(v_12, v_12);
-    vec3 _e54 = light_intensity(l_8, (v_12 / vec3(sqrt(d2_10))));
-    float _e56 = c_4.cos_x;
-    float _e59 = _group_0_binding_3_cs[li];
-    float _e61 = connection_factor(_e56, d2_10, (s * _e59), w_res);
-    c_4.e = (_e54 * _e61);
-    Connection _e63 = c_4;
-    return _e63;
+    vec3 _e48 = light_intensity(l_8, (v_12 / vec3(sqrt(d2_10))));
+    float _e50 = c_4.cos_x;
+    float _e51 = connection_factor(_e50, d2_10, rt2_4, w_res);
+    c_4.e = (_e48 * _e51);
+    Connection _e53 = c_4;
+    return _e53;
 }
 
-Connection connect(uint li_1, vec3 x_5, vec3 n_13, vec3 ng_2, float s_1, float w_res_1, float u1_3, float u2_3, float eps_1) {
-    Connection _e10 = connect_traced(li_1, x_5, n_13, ng_2, s_1, w_res_1, u1_3, u2_3, eps_1, true);
+Connection connect_traced(uint li, vec3 x_5, vec3 n_13, vec3 ng_2, float s, float w_res_1, float u1_3, float u2_3, float eps_1, bool trace_2) {
+    GpuLight _e12 = _group_0_binding_2_cs[li];
+    float _e15 = _group_0_binding_4_cs[li];
+    float _e19 = _group_0_binding_3_cs[li];
+    Connection _e21 = connect_record(_e12, x_5, n_13, ng_2, (s * _e15), (s * _e19), w_res_1, u1_3, u2_3, eps_1, trace_2);
+    return _e21;
+}
+
+Connection connect(uint li_1, vec3 x_6, vec3 n_14, vec3 ng_3, float s_1, float w_res_2, float u1_4, float u2_4, float eps_2) {
+    Connection _e10 = connect_traced(li_1, x_6, n_14, ng_3, s_1, w_res_2, u1_4, u2_4, eps_2, true);
     return _e10;
 }
 
@@ -980,9 +986,9 @@ float mis_weight(float pdf_a_1, float pdf_b_1) {
     return _e2;
 }
 
-float light_range_scale(uint li_2, vec3 x_6, vec3 r_3, vec4 rl_2) {
+float light_range_scale(uint li_2, vec3 x_7, vec3 r_3, vec4 rl_2) {
     GpuLightCone c_9 = _group_1_binding_2_cs[li_2];
-    float _e9 = range_scale_toward(rl_2, c_9.center, c_9.radius, x_6, r_3);
+    float _e9 = range_scale_toward(rl_2, c_9.center, c_9.radius, x_7, r_3);
     return _e9;
 }
 
@@ -995,13 +1001,13 @@ uint light_bvh_count(uint nodes_1) {
     return uint(_group_1_binding_3_cs.length());
 }
 
-float bvh_importance(uint nodes_2, uint i_2, vec3 x_7, vec3 n_14, vec3 r_4, vec4 lobe_7) {
+float bvh_importance(uint nodes_2, uint i_2, vec3 x_8, vec3 n_15, vec3 r_4, vec4 lobe_7) {
     GpuLightBvhNode _e6 = light_bvh_node(nodes_2, i_2);
-    float _e13 = receiver_importance(_e6.center, _e6.radius, _e6.phi, _e6.axis, _e6.cos_o, _e6.cos_e, x_7, n_14, r_4, lobe_7);
+    float _e13 = receiver_importance(_e6.center, _e6.radius, _e6.phi, _e6.axis, _e6.cos_o, _e6.cos_e, x_8, n_15, r_4, lobe_7);
     return _e13;
 }
 
-float bvh_first(uint nodes_3, uint i_3, vec3 x_8, vec3 n_15, vec3 r_5, vec4 lobe_8) {
+float bvh_first(uint nodes_3, uint i_3, vec3 x_9, vec3 n_16, vec3 r_5, vec4 lobe_8) {
     bool local_21 = false;
     GpuLightBvhNode _e6 = light_bvh_node(nodes_3, i_3);
     uint j = _e6.second;
@@ -1015,8 +1021,8 @@ float bvh_first(uint nodes_3, uint i_3, vec3 x_8, vec3 n_15, vec3 r_5, vec4 lobe
     if (_e17) {
         return -1.0;
     }
-    float _e21 = bvh_importance(nodes_3, (i_3 + 1u), x_8, n_15, r_5, lobe_8);
-    float _e22 = bvh_importance(nodes_3, j, x_8, n_15, r_5, lobe_8);
+    float _e21 = bvh_importance(nodes_3, (i_3 + 1u), x_9, n_16, r_5, lobe_8);
+    float _e22 = bvh_importance(nodes_3, j, x_9, n_16, r_5, lobe_8);
     float _e23 = bvh_first_prob(_e21, _e22);
     return _e23;
 }
@@ -1025,7 +1031,7 @@ BvhPick bvh_pick_none() {
     return BvhPick(0u, 0.0);
 }
 
-BvhPick light_bvh_sample(uint nodes_4, vec3 x_9, vec3 n_16, vec3 r_6, vec4 lobe_9, float u_in) {
+BvhPick light_bvh_sample(uint nodes_4, vec3 x_10, vec3 n_17, vec3 r_6, vec4 lobe_9, float u_in) {
     BvhPick pick = BvhPick(0u, 0.0);
     float u_2 = 0.0;
     uint i_4 = 0u;
@@ -1047,7 +1053,7 @@ BvhPick light_bvh_sample(uint nodes_4, vec3 x_9, vec3 n_16, vec3 r_6, vec4 lobe_
             if ((_e17.second == LIGHT_BVH_LEAF)) {
                 uint _e21 = i_4;
                 if (!((_e21 > 0u))) {
-                    float _e28 = bvh_importance(nodes_4, 0u, x_9, n_16, r_6, lobe_9);
+                    float _e28 = bvh_importance(nodes_4, 0u, x_10, n_17, r_6, lobe_9);
                     local_22 = (_e28 > 0.0);
                 } else {
                     local_22 = true;
@@ -1062,7 +1068,7 @@ BvhPick light_bvh_sample(uint nodes_4, vec3 x_9, vec3 n_16, vec3 r_6, vec4 lobe_
                 return _e37;
             }
             uint _e38 = i_4;
-            float _e39 = bvh_first(nodes_4, _e38, x_9, n_16, r_6, lobe_9);
+            float _e39 = bvh_first(nodes_4, _e38, x_10, n_17, r_6, lobe_9);
             if ((_e39 < 0.0)) {
                 BvhPick _e42 = pick;
                 return _e42;
@@ -1082,38 +1088,38 @@ BvhPick light_bvh_sample(uint nodes_4, vec3 x_9, vec3 n_16, vec3 r_6, vec4 lobe_
     return _e57;
 }
 
-float light_pdf_selected(uint li_3, vec3 x_10, vec3 r_7, vec4 rl_3, vec3 y_1, float sel) {
+float light_pdf_selected(uint li_3, vec3 x_11, vec3 r_7, vec4 rl_3, vec3 y_1, float sel) {
     GpuLight l_9 = _group_0_binding_2_cs[li_3];
-    vec3 v_13 = (x_10 - y_1);
+    vec3 v_13 = (x_11 - y_1);
     float d2_11 = dot(v_13, v_13);
     vec3 _e11 = light_normal(l_9);
     float cos_y_1 = ((d2_11 > 0.0) ? dot(_e11, (v_13 / vec3(sqrt(d2_11)))) : 0.0);
-    float _e20 = light_range_scale(li_3, x_10, r_7, rl_3);
+    float _e20 = light_range_scale(li_3, x_11, r_7, rl_3);
     float _e23 = _group_0_binding_3_cs[li_3];
     float _e25 = light_area(l_9);
     float _e26 = light_strategy_pdf(sel, (_e20 * _e23), d2_11, _e25, cos_y_1);
     return _e26;
 }
 
-vec3 shade_pick(uint li_4, vec3 x_11, vec3 n_17, vec3 ng_3, GpuMaterial m, vec3 wo_1, vec3 r_8, vec4 lobe_10, vec4 rl_4, float w_4, uint nee, float u1_4, float u2_4) {
+vec3 shade_pick(uint li_4, vec3 x_12, vec3 n_18, vec3 ng_4, GpuMaterial m, vec3 wo_1, vec3 r_8, vec4 lobe_10, vec4 rl_4, float w_4, uint nee, float u1_5, float u2_5) {
     float mis = 1.0;
-    float _e13 = light_range_scale(li_4, x_11, r_8, rl_4);
+    float _e13 = light_range_scale(li_4, x_12, r_8, rl_4);
     float _e16 = _group_0_binding_0_cs.eps;
-    Connection _e17 = connect(li_4, x_11, n_17, ng_3, _e13, w_4, u1_4, u2_4, _e16);
+    Connection _e17 = connect(li_4, x_12, n_18, ng_4, _e13, w_4, u1_5, u2_5, _e16);
     if ((_e17.cos_x <= 0.0)) {
         return vec3(0.0);
     }
-    vec3 l_10 = normalize((_e17.y - x_11));
+    vec3 l_10 = normalize((_e17.y - x_12));
     GpuLight _e30 = _group_0_binding_2_cs[li_4];
     float _e31 = light_area(_e30);
     if ((_e31 > 0.0)) {
-        float _e37 = light_pdf_selected(li_4, x_11, r_8, rl_4, _e17.y, (1.0 / w_4));
+        float _e37 = light_pdf_selected(li_4, x_12, r_8, rl_4, _e17.y, (1.0 / w_4));
         float _e39 = specular_probability(lobe_10);
-        float _e40 = bsdf_pdf(n_17, wo_1, l_10, m.alpha, _e39);
+        float _e40 = bsdf_pdf(n_18, wo_1, l_10, m.alpha, _e39);
         float _e41 = mis_weight(_e37, _e40);
         mis = _e41;
     }
-    vec3 _e47 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_17, wo_1, l_10);
+    vec3 _e47 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_18, wo_1, l_10);
     float _e50 = mis;
     return ((_e47 * _e17.e) * _e50);
 }
@@ -1132,13 +1138,13 @@ void main() {
         _group_0_binding_10_cs[i_5] = 0u;
         return;
     }
-    vec3 x_12 = vtx.position;
-    vec3 n_20 = vtx.normal;
-    vec3 ng_4 = vtx.gnormal;
+    vec3 x_13 = vtx.position;
+    vec3 n_21 = vtx.normal;
+    vec3 ng_5 = vtx.gnormal;
     GpuMaterial m_2 = _group_0_binding_8_cs[vtx.material];
     vec3 wo_2 = vtx.wo;
-    vec3 _e23 = mirror_dir(n_20, wo_2);
-    vec4 _e30 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, dot(n_20, wo_2));
+    vec3 _e23 = mirror_dir(n_21, wo_2);
+    vec4 _e30 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, dot(n_21, wo_2));
     vec4 _e31 = range_lobe(_e30);
     uint _e34 = _group_0_binding_0_cs.seed;
     uint _e37 = _group_0_binding_0_cs.frame;
@@ -1151,7 +1157,7 @@ void main() {
     h = _e48;
     uint _e49 = h;
     float _e50 = xi_from_bits(_e49);
-    BvhPick _e52 = light_bvh_sample(BVH, x_12, n_20, _e23, _e30, _e50);
+    BvhPick _e52 = light_bvh_sample(BVH, x_13, n_21, _e23, _e30, _e50);
     uint li_5 = _e52.light;
     float pmf_1 = _e52.pmf;
     uint _e55 = h;
@@ -1165,7 +1171,7 @@ void main() {
     uint _e61 = h;
     float _e62 = xi_from_bits(_e61);
     if ((pmf_1 > 0.0)) {
-        vec3 _e68 = shade_pick(li_5, x_12, n_20, ng_4, m_2, wo_2, _e23, _e30, _e31, (1.0 / pmf_1), 0u, _e58, _e62);
+        vec3 _e68 = shade_pick(li_5, x_13, n_21, ng_5, m_2, wo_2, _e23, _e30, _e31, (1.0 / pmf_1), 0u, _e58, _e62);
         sum = _e68;
     }
     vec3 _e70 = sum;

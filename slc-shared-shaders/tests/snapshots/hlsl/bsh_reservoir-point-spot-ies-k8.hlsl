@@ -78,6 +78,7 @@ static const uint MAP_ORTHOGRAPHIC = 2u;
 static const float XI_STEP = 5.9604645e-8;
 static const uint PICK_STREAM = 2654435769u;
 static const float TWO_PI = 6.2831855;
+static const float UNRANGED = 1e38;
 static const float CULL_RADIUS_SCALE = 1.000001;
 static const float SPHERE_PAD = 4.7683716e-7;
 static const float SPHERE_HUGE = 3.4028235e38;
@@ -115,8 +116,8 @@ ByteAddressBuffer geo_nodes : register(t7);
 ByteAddressBuffer geo_tris : register(t8);
 ByteAddressBuffer bsh_nodes : register(t6);
 ByteAddressBuffer lights : register(t3);
-ByteAddressBuffer r2_2 : register(t5);
-ByteAddressBuffer rt2_2 : register(t4);
+ByteAddressBuffer r2_3 : register(t5);
+ByteAddressBuffer rt2_3 : register(t4);
 cbuffer params : register(b0) { ShadeParams params; }
 ByteAddressBuffer points : register(t1);
 ByteAddressBuffer normals : register(t2);
@@ -730,12 +731,12 @@ GeoHit trace(float3 o_2, float3 d_4, float t_min_1, float t_max_2, bool any_hit)
         if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
         loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
         uint _e21 = node_2;
-        GpuGeoNode n_8 = ConstructGpuGeoNode(asfloat(geo_nodes.Load3(_e21*32+0)), asuint(geo_nodes.Load(_e21*32+12)), asfloat(geo_nodes.Load3(_e21*32+16)), asuint(geo_nodes.Load(_e21*32+28)));
+        GpuGeoNode n_9 = ConstructGpuGeoNode(asfloat(geo_nodes.Load3(_e21*32+0)), asuint(geo_nodes.Load(_e21*32+12)), asfloat(geo_nodes.Load3(_e21*32+16)), asuint(geo_nodes.Load(_e21*32+28)));
         float _e27 = hit.t;
-        const float _e28 = ray_aabb(o_2, _e14, n_8.bmin, n_8.bmax, _e27);
+        const float _e28 = ray_aabb(o_2, _e14, n_9.bmin, n_9.bmax, _e27);
         if ((_e28 >= 0.0)) {
-            if ((n_8.count > 0u)) {
-                i_1 = n_8.first;
+            if ((n_9.count > 0u)) {
+                i_1 = n_9.first;
                 uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
                 bool loop_init = true;
                 while(true) {
@@ -747,7 +748,7 @@ GeoHit trace(float3 o_2, float3 d_4, float t_min_1, float t_max_2, bool any_hit)
                     }
                     loop_init = false;
                     uint _e36 = i_1;
-                    if ((_e36 < (n_8.first + n_8.count))) {
+                    if ((_e36 < (n_9.first + n_9.count))) {
                     } else {
                         break;
                     }
@@ -772,11 +773,11 @@ GeoHit trace(float3 o_2, float3 d_4, float t_min_1, float t_max_2, bool any_hit)
                 uint _e60 = sp;
                 if ((_e60 < 64u)) {
                     uint _e63 = sp;
-                    stack[min(uint(_e63), 63u)] = (n_8.first + 1u);
+                    stack[min(uint(_e63), 63u)] = (n_9.first + 1u);
                     uint _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_2 = n_8.first;
+                node_2 = n_9.first;
                 continue;
             }
         }
@@ -979,6 +980,50 @@ Picks bsh_collect(float3 x_11, float3 r_5, float4 rl_5, uint seed_1)
     return picks_1;
 }
 
+Connection connect_record(GpuLight l_2, float3 x_12, float3 n_6, float3 ng_1, float r2_2, float rt2_2, float w_res, float u1_1, float u2_1, float eps, bool trace_1)
+{
+    Connection c_4 = (Connection)0;
+    bool local_10 = (bool)0;
+    bool local_11 = (bool)0;
+
+    c_4.e = (0.0).xxx;
+    const float3 _e16 = light_point(l_2, u1_1, u2_1);
+    c_4.y = _e16;
+    float3 _e19 = c_4.y;
+    const float _e20 = connection_cosine(x_12, _e19, n_6, ng_1, r2_2);
+    c_4.cos_x = _e20;
+    float _e22 = c_4.cos_x;
+    if (!((_e22 <= 0.0))) {
+        if (trace_1) {
+            float3 _e33 = c_4.y;
+            const bool _e34 = occluded((x_12 + (ng_1 * eps)), _e33);
+            local_11 = _e34;
+        } else {
+            local_11 = false;
+        }
+        bool _e36 = local_11;
+        local_10 = _e36;
+    } else {
+        local_10 = true;
+    }
+    bool _e38 = local_10;
+    if (_e38) {
+        Connection _e39 = c_4;
+        const Connection connection = _e39;
+        return connection;
+    }
+    float3 _e41 = c_4.y;
+    float3 v_7 = (x_12 - _e41);
+    float d2_8 = dot(v_7, v_7);
+    const float3 _e48 = light_intensity(l_2, (v_7 / (sqrt(d2_8)).xxx));
+    float _e50 = c_4.cos_x;
+    const float _e51 = connection_factor(_e50, d2_8, rt2_2, w_res);
+    c_4.e = (_e48 * _e51);
+    Connection _e53 = c_4;
+    const Connection connection_1 = _e53;
+    return connection_1;
+}
+
 GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, float3 arg4, float arg5, float3 arg6, uint arg7) {
     GpuLight ret = (GpuLight)0;
     ret.p0_ = arg0;
@@ -992,58 +1037,21 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
     return ret;
 }
 
-Connection connect_traced(uint li, float3 x_12, float3 n_6, float3 ng_1, float s_1, float w_res, float u1_1, float u2_1, float eps, bool trace_1)
+Connection connect_traced(uint li, float3 x_13, float3 n_7, float3 ng_2, float s_1, float w_res_1, float u1_2, float u2_2, float eps_1, bool trace_2)
 {
-    Connection c_4 = (Connection)0;
-    bool local_10 = (bool)0;
-    bool local_11 = (bool)0;
-
-    c_4.e = (0.0).xxx;
-    GpuLight l_2 = ConstructGpuLight(asfloat(lights.Load3(li*64+0)), asuint(lights.Load(li*64+12)), asfloat(lights.Load3(li*64+16)), asfloat(lights.Load(li*64+28)), asfloat(lights.Load3(li*64+32)), asfloat(lights.Load(li*64+44)), asfloat(lights.Load3(li*64+48)), asuint(lights.Load(li*64+60)));
-    const float3 _e18 = light_point(l_2, u1_1, u2_1);
-    c_4.y = _e18;
-    float3 _e21 = c_4.y;
-    float _e24 = asfloat(r2_2.Load(li*4));
-    const float _e26 = connection_cosine(x_12, _e21, n_6, ng_1, (s_1 * _e24));
-    c_4.cos_x = _e26;
-    float _e28 = c_4.cos_x;
-    if (!((_e28 <= 0.0))) {
-        if (trace_1) {
-            float3 _e39 = c_4.y;
-            const bool _e40 = occluded((x_12 + (ng_1 * eps)), _e39);
-            local_11 = _e40;
-        } else {
-            local_11 = false;
-        }
-        bool _e42 = local_11;
-        local_10 = _e42;
-    } else {
-        local_10 = true;
-    }
-    bool _e44 = local_10;
-    if (_e44) {
-        Connection _e45 = c_4;
-        const Connection connection = _e45;
-        return connection;
-    }
-    float3 _e47 = c_4.y;
-    float3 v_7 = (x_12 - _e47);
-    float d2_8 = dot(v_7, v_7);
-    const float3 _e54 = light_intensity(l_2, (v_7 / (sqrt(d2_8)).xxx));
-    float _e56 = c_4.cos_x;
-    float _e59 = asfloat(rt2_2.Load(li*4));
-    const float _e61 = connection_factor(_e56, d2_8, (s_1 * _e59), w_res);
-    c_4.e = (_e54 * _e61);
-    Connection _e63 = c_4;
-    const Connection connection_1 = _e63;
-    return connection_1;
+    GpuLight _e12 = ConstructGpuLight(asfloat(lights.Load3(li*64+0)), asuint(lights.Load(li*64+12)), asfloat(lights.Load3(li*64+16)), asfloat(lights.Load(li*64+28)), asfloat(lights.Load3(li*64+32)), asfloat(lights.Load(li*64+44)), asfloat(lights.Load3(li*64+48)), asuint(lights.Load(li*64+60)));
+    float _e15 = asfloat(r2_3.Load(li*4));
+    float _e19 = asfloat(rt2_3.Load(li*4));
+    const Connection _e21 = connect_record(_e12, x_13, n_7, ng_2, (s_1 * _e15), (s_1 * _e19), w_res_1, u1_2, u2_2, eps_1, trace_2);
+    const Connection connection_2 = _e21;
+    return connection_2;
 }
 
-Connection connect(uint li_1, float3 x_13, float3 n_7, float3 ng_2, float s_2, float w_res_1, float u1_2, float u2_2, float eps_1)
+Connection connect(uint li_1, float3 x_14, float3 n_8, float3 ng_3, float s_2, float w_res_2, float u1_3, float u2_3, float eps_2)
 {
-    const Connection _e10 = connect_traced(li_1, x_13, n_7, ng_2, s_2, w_res_1, u1_2, u2_2, eps_1, true);
-    const Connection connection_2 = _e10;
-    return connection_2;
+    const Connection _e10 = connect_traced(li_1, x_14, n_8, ng_3, s_2, w_res_2, u1_3, u2_3, eps_2, true);
+    const Connection connection_3 = _e10;
+    return connection_3;
 }
 
 [numthreads(64, 1, 1)]
@@ -1063,13 +1071,13 @@ void main(uint3 gid : SV_DispatchThreadID)
         irradiance.Store4(i_5*16, asuint((0.0).xxxx));
         return;
     }
-    float3 x_14 = p_3.xyz;
+    float3 x_15 = p_3.xyz;
     float4 _e19 = asfloat(normals.Load4(i_5*16));
-    float3 n_9 = _e19.xyz;
+    float3 n_10 = _e19.xyz;
     uint _e23 = params.seed;
     uint _e26 = params.frame;
     const uint _e27 = point_stream(_e23, i_5, _e26);
-    const Picks _e33 = bsh_collect(x_14, x_14, float4(1.0, 0.0, 1.0, 1.0), _e27);
+    const Picks _e33 = bsh_collect(x_15, x_15, float4(1.0, 0.0, 1.0, 1.0), _e27);
     const float _e36 = reservoir_weight(_e33.n, K);
     const uint _e37 = pick_stream(_e27);
     h = _e37;
@@ -1102,7 +1110,7 @@ void main(uint3 gid : SV_DispatchThreadID)
             uint _e60 = h;
             const float _e61 = xi_from_bits(_e60);
             float _e64 = params.eps;
-            const Connection _e65 = connect(_e33.light[min(uint(_e57), 7u)], x_14, n_9, n_9, 1.0, _e36, _e52, _e61, _e64);
+            const Connection _e65 = connect(_e33.light[min(uint(_e57), 7u)], x_15, n_10, n_10, 1.0, _e36, _e52, _e61, _e64);
             e = (_e55 + _e65.e);
         }
     }

@@ -57,6 +57,7 @@ static const uint MAP_ORTHOGRAPHIC = 2u;
 static const float XI_STEP = 5.9604645e-8;
 static const uint PICK_STREAM = 2654435769u;
 static const float TWO_PI = 6.2831855;
+static const float UNRANGED = 1e38;
 static const float CULL_RADIUS_SCALE = 1.000001;
 static const float SPHERE_PAD = 4.7683716e-7;
 static const float SPHERE_HUGE = 3.4028235e38;
@@ -91,8 +92,8 @@ static const uint BSH = 0u;
 
 ByteAddressBuffer bsh_nodes : register(t6);
 ByteAddressBuffer lights : register(t3);
-ByteAddressBuffer r2_2 : register(t5);
-ByteAddressBuffer rt2_2 : register(t4);
+ByteAddressBuffer r2_3 : register(t5);
+ByteAddressBuffer rt2_3 : register(t4);
 cbuffer params : register(b0) { ShadeParams params; }
 ByteAddressBuffer points : register(t1);
 ByteAddressBuffer normals : register(t2);
@@ -343,8 +344,8 @@ float3 triangle_normal(float3 a_5, float3 b_4, float3 c_2)
 {
     bool local_4 = (bool)0;
 
-    float3 n_8 = cross((b_4 - a_5), (c_2 - a_5));
-    float l2_ = dot(n_8, n_8);
+    float3 n_9 = cross((b_4 - a_5), (c_2 - a_5));
+    float l2_ = dot(n_9, n_9);
     if (!(!((l2_ > 0.0)))) {
         local_4 = !((l2_ < 3e38));
     } else {
@@ -354,7 +355,7 @@ float3 triangle_normal(float3 a_5, float3 b_4, float3 c_2)
     if (_e17) {
         return float3(0.0, 0.0, 0.0);
     }
-    return (n_8 / (sqrt(l2_)).xxx);
+    return (n_9 / (sqrt(l2_)).xxx);
 }
 
 float3 light_intensity(GpuLight l, float3 w_2)
@@ -567,6 +568,50 @@ Picks bsh_collect(float3 x_5, float3 r_5, float4 rl_5, uint seed_1)
     return picks_1;
 }
 
+Connection connect_record(GpuLight l_2, float3 x_6, float3 n_6, float3 ng_1, float r2_2, float rt2_2, float w_res, float u1_2, float u2_2, float eps, bool trace)
+{
+    Connection c_3 = (Connection)0;
+    bool local_7 = (bool)0;
+    bool local_8 = (bool)0;
+
+    c_3.e = (0.0).xxx;
+    const float3 _e16 = light_point(l_2, u1_2, u2_2);
+    c_3.y = _e16;
+    float3 _e19 = c_3.y;
+    const float _e20 = connection_cosine(x_6, _e19, n_6, ng_1, r2_2);
+    c_3.cos_x = _e20;
+    float _e22 = c_3.cos_x;
+    if (!((_e22 <= 0.0))) {
+        if (trace) {
+            float3 _e33 = c_3.y;
+            const bool _e34 = occluded((x_6 + (ng_1 * eps)), _e33);
+            local_8 = _e34;
+        } else {
+            local_8 = false;
+        }
+        bool _e36 = local_8;
+        local_7 = _e36;
+    } else {
+        local_7 = true;
+    }
+    bool _e38 = local_7;
+    if (_e38) {
+        Connection _e39 = c_3;
+        const Connection connection = _e39;
+        return connection;
+    }
+    float3 _e41 = c_3.y;
+    float3 v_6 = (x_6 - _e41);
+    float d2_8 = dot(v_6, v_6);
+    const float3 _e48 = light_intensity(l_2, (v_6 / (sqrt(d2_8)).xxx));
+    float _e50 = c_3.cos_x;
+    const float _e51 = connection_factor(_e50, d2_8, rt2_2, w_res);
+    c_3.e = (_e48 * _e51);
+    Connection _e53 = c_3;
+    const Connection connection_1 = _e53;
+    return connection_1;
+}
+
 GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, float3 arg4, float arg5, float3 arg6, uint arg7) {
     GpuLight ret = (GpuLight)0;
     ret.p0_ = arg0;
@@ -580,58 +625,21 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
     return ret;
 }
 
-Connection connect_traced(uint li, float3 x_6, float3 n_6, float3 ng_1, float s_1, float w_res, float u1_2, float u2_2, float eps, bool trace)
+Connection connect_traced(uint li, float3 x_7, float3 n_7, float3 ng_2, float s_1, float w_res_1, float u1_3, float u2_3, float eps_1, bool trace_1)
 {
-    Connection c_3 = (Connection)0;
-    bool local_7 = (bool)0;
-    bool local_8 = (bool)0;
-
-    c_3.e = (0.0).xxx;
-    GpuLight l_2 = ConstructGpuLight(asfloat(lights.Load3(li*64+0)), asuint(lights.Load(li*64+12)), asfloat(lights.Load3(li*64+16)), asfloat(lights.Load(li*64+28)), asfloat(lights.Load3(li*64+32)), asfloat(lights.Load(li*64+44)), asfloat(lights.Load3(li*64+48)), asuint(lights.Load(li*64+60)));
-    const float3 _e18 = light_point(l_2, u1_2, u2_2);
-    c_3.y = _e18;
-    float3 _e21 = c_3.y;
-    float _e24 = asfloat(r2_2.Load(li*4));
-    const float _e26 = connection_cosine(x_6, _e21, n_6, ng_1, (s_1 * _e24));
-    c_3.cos_x = _e26;
-    float _e28 = c_3.cos_x;
-    if (!((_e28 <= 0.0))) {
-        if (trace) {
-            float3 _e39 = c_3.y;
-            const bool _e40 = occluded((x_6 + (ng_1 * eps)), _e39);
-            local_8 = _e40;
-        } else {
-            local_8 = false;
-        }
-        bool _e42 = local_8;
-        local_7 = _e42;
-    } else {
-        local_7 = true;
-    }
-    bool _e44 = local_7;
-    if (_e44) {
-        Connection _e45 = c_3;
-        const Connection connection = _e45;
-        return connection;
-    }
-    float3 _e47 = c_3.y;
-    float3 v_6 = (x_6 - _e47);
-    float d2_8 = dot(v_6, v_6);
-    const float3 _e54 = light_intensity(l_2, (v_6 / (sqrt(d2_8)).xxx));
-    float _e56 = c_3.cos_x;
-    float _e59 = asfloat(rt2_2.Load(li*4));
-    const float _e61 = connection_factor(_e56, d2_8, (s_1 * _e59), w_res);
-    c_3.e = (_e54 * _e61);
-    Connection _e63 = c_3;
-    const Connection connection_1 = _e63;
-    return connection_1;
+    GpuLight _e12 = ConstructGpuLight(asfloat(lights.Load3(li*64+0)), asuint(lights.Load(li*64+12)), asfloat(lights.Load3(li*64+16)), asfloat(lights.Load(li*64+28)), asfloat(lights.Load3(li*64+32)), asfloat(lights.Load(li*64+44)), asfloat(lights.Load3(li*64+48)), asuint(lights.Load(li*64+60)));
+    float _e15 = asfloat(r2_3.Load(li*4));
+    float _e19 = asfloat(rt2_3.Load(li*4));
+    const Connection _e21 = connect_record(_e12, x_7, n_7, ng_2, (s_1 * _e15), (s_1 * _e19), w_res_1, u1_3, u2_3, eps_1, trace_1);
+    const Connection connection_2 = _e21;
+    return connection_2;
 }
 
-Connection connect(uint li_1, float3 x_7, float3 n_7, float3 ng_2, float s_2, float w_res_1, float u1_3, float u2_3, float eps_1)
+Connection connect(uint li_1, float3 x_8, float3 n_8, float3 ng_3, float s_2, float w_res_2, float u1_4, float u2_4, float eps_2)
 {
-    const Connection _e10 = connect_traced(li_1, x_7, n_7, ng_2, s_2, w_res_1, u1_3, u2_3, eps_1, true);
-    const Connection connection_2 = _e10;
-    return connection_2;
+    const Connection _e10 = connect_traced(li_1, x_8, n_8, ng_3, s_2, w_res_2, u1_4, u2_4, eps_2, true);
+    const Connection connection_3 = _e10;
+    return connection_3;
 }
 
 [numthreads(64, 1, 1)]
@@ -651,13 +659,13 @@ void main(uint3 gid : SV_DispatchThreadID)
         irradiance.Store4(i_3*16, asuint((0.0).xxxx));
         return;
     }
-    float3 x_8 = p_2.xyz;
+    float3 x_9 = p_2.xyz;
     float4 _e19 = asfloat(normals.Load4(i_3*16));
-    float3 n_9 = _e19.xyz;
+    float3 n_10 = _e19.xyz;
     uint _e23 = params.seed;
     uint _e26 = params.frame;
     const uint _e27 = point_stream(_e23, i_3, _e26);
-    const Picks _e33 = bsh_collect(x_8, x_8, float4(1.0, 0.0, 1.0, 1.0), _e27);
+    const Picks _e33 = bsh_collect(x_9, x_9, float4(1.0, 0.0, 1.0, 1.0), _e27);
     const float _e36 = reservoir_weight(_e33.n, K);
     const uint _e37 = pick_stream(_e27);
     h = _e37;
@@ -690,7 +698,7 @@ void main(uint3 gid : SV_DispatchThreadID)
             uint _e60 = h;
             const float _e61 = xi_from_bits(_e60);
             float _e64 = params.eps;
-            const Connection _e65 = connect(_e33.light[min(uint(_e57), 7u)], x_8, n_9, n_9, 1.0, _e36, _e52, _e61, _e64);
+            const Connection _e65 = connect(_e33.light[min(uint(_e57), 7u)], x_9, n_10, n_10, 1.0, _e36, _e52, _e61, _e64);
             e = (_e55 + _e65.e);
         }
     }

@@ -89,6 +89,7 @@ static const uint MAP_ORTHOGRAPHIC = 2u;
 static const float XI_STEP = 5.9604645e-8;
 static const uint PICK_STREAM = 2654435769u;
 static const float TWO_PI = 6.2831855;
+static const float UNRANGED = 1e38;
 static const float CULL_RADIUS_SCALE = 1.000001;
 static const float SPHERE_PAD = 4.7683716e-7;
 static const float SPHERE_HUGE = 3.4028235e38;
@@ -127,8 +128,8 @@ Texture2D<float4> position_tex : register(t1);
 Texture2D<float4> normal_tex : register(t2);
 RWTexture2D<float4> out_tex : register(u3);
 ByteAddressBuffer lights : register(t1, space1);
-ByteAddressBuffer rt2_2 : register(t2, space1);
-ByteAddressBuffer r2_2 : register(t3, space1);
+ByteAddressBuffer rt2_3 : register(t2, space1);
+ByteAddressBuffer r2_3 : register(t3, space1);
 ByteAddressBuffer bsh_nodes : register(t4, space1);
 
 float at(uint tab, uint i)
@@ -468,8 +469,8 @@ float ies_candela_dir(uint tab_3, uint base_2, float wn, float wr, float ws)
     float gamma_1 = degrees(_e9);
     bool on_axis = ((abs(wr) + abs(ws)) <= 0.0);
     const float _e16 = atan2_portable(ws, wr);
-    float c_6 = (on_axis ? 0.0 : degrees(_e16));
-    const float _e20 = ies_candela(tab_3, base_2, gamma_1, c_6);
+    float c_7 = (on_axis ? 0.0 : degrees(_e16));
+    const float _e20 = ies_candela(tab_3, base_2, gamma_1, c_7);
     return _e20;
 }
 
@@ -608,8 +609,8 @@ float cone_cos_of(float3 v, float d2_4, float a_5, float3 d)
     if (_e21) {
         return 1.0;
     }
-    float3 c_7 = cross(v, d);
-    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_7, c_7)) * a_5)) / d2_4), 1.0);
+    float3 c_8 = cross(v, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_8, c_8)) * a_5)) / d2_4), 1.0);
 }
 
 float cone_cos_toward(float3 center_, float radius, float3 p, float3 d_1)
@@ -639,8 +640,8 @@ float3 triangle_normal(float3 a_6, float3 b_4, float3 c_4)
 {
     bool local_7 = (bool)0;
 
-    float3 n_10 = cross((b_4 - a_6), (c_4 - a_6));
-    float l2_ = dot(n_10, n_10);
+    float3 n_12 = cross((b_4 - a_6), (c_4 - a_6));
+    float l2_ = dot(n_12, n_12);
     if (!(!((l2_ > 0.0)))) {
         local_7 = !((l2_ < 3e38));
     } else {
@@ -650,7 +651,7 @@ float3 triangle_normal(float3 a_6, float3 b_4, float3 c_4)
     if (_e17) {
         return float3(0.0, 0.0, 0.0);
     }
-    return (n_10 / (sqrt(l2_)).xxx);
+    return (n_12 / (sqrt(l2_)).xxx);
 }
 
 float3 light_intensity(GpuLight l, float3 w_3)
@@ -871,6 +872,50 @@ Picks bsh_collect(float3 x_10, float3 r_6, float4 rl_5, uint seed_1)
     return picks_1;
 }
 
+Connection connect_record(GpuLight l_2, float3 x_11, float3 n_7, float3 ng_1, float r2_2, float rt2_2, float w_res, float u1_2, float u2_2, float eps, bool trace)
+{
+    Connection c_5 = (Connection)0;
+    bool local_10 = (bool)0;
+    bool local_11 = (bool)0;
+
+    c_5.e = (0.0).xxx;
+    const float3 _e16 = light_point(l_2, u1_2, u2_2);
+    c_5.y = _e16;
+    float3 _e19 = c_5.y;
+    const float _e20 = connection_cosine(x_11, _e19, n_7, ng_1, r2_2);
+    c_5.cos_x = _e20;
+    float _e22 = c_5.cos_x;
+    if (!((_e22 <= 0.0))) {
+        if (trace) {
+            float3 _e33 = c_5.y;
+            const bool _e34 = occluded((x_11 + (ng_1 * eps)), _e33);
+            local_11 = _e34;
+        } else {
+            local_11 = false;
+        }
+        bool _e36 = local_11;
+        local_10 = _e36;
+    } else {
+        local_10 = true;
+    }
+    bool _e38 = local_10;
+    if (_e38) {
+        Connection _e39 = c_5;
+        const Connection connection = _e39;
+        return connection;
+    }
+    float3 _e41 = c_5.y;
+    float3 v_6 = (x_11 - _e41);
+    float d2_8 = dot(v_6, v_6);
+    const float3 _e48 = light_intensity(l_2, (v_6 / (sqrt(d2_8)).xxx));
+    float _e50 = c_5.cos_x;
+    const float _e51 = connection_factor(_e50, d2_8, rt2_2, w_res);
+    c_5.e = (_e48 * _e51);
+    Connection _e53 = c_5;
+    const Connection connection_1 = _e53;
+    return connection_1;
+}
+
 GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, float3 arg4, float arg5, float3 arg6, uint arg7) {
     GpuLight ret = (GpuLight)0;
     ret.p0_ = arg0;
@@ -884,51 +929,14 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
     return ret;
 }
 
-Connection connect_traced(uint li, float3 x_11, float3 n_7, float3 ng_1, float s, float w_res, float u1_2, float u2_2, float eps, bool trace)
+Connection connect_traced(uint li, float3 x_12, float3 n_8, float3 ng_2, float s, float w_res_1, float u1_3, float u2_3, float eps_1, bool trace_1)
 {
-    Connection c_5 = (Connection)0;
-    bool local_10 = (bool)0;
-    bool local_11 = (bool)0;
-
-    c_5.e = (0.0).xxx;
-    GpuLight l_2 = ConstructGpuLight(asfloat(lights.Load3(li*64+0)), asuint(lights.Load(li*64+12)), asfloat(lights.Load3(li*64+16)), asfloat(lights.Load(li*64+28)), asfloat(lights.Load3(li*64+32)), asfloat(lights.Load(li*64+44)), asfloat(lights.Load3(li*64+48)), asuint(lights.Load(li*64+60)));
-    const float3 _e18 = light_point(l_2, u1_2, u2_2);
-    c_5.y = _e18;
-    float3 _e21 = c_5.y;
-    float _e24 = asfloat(r2_2.Load(li*4));
-    const float _e26 = connection_cosine(x_11, _e21, n_7, ng_1, (s * _e24));
-    c_5.cos_x = _e26;
-    float _e28 = c_5.cos_x;
-    if (!((_e28 <= 0.0))) {
-        if (trace) {
-            float3 _e39 = c_5.y;
-            const bool _e40 = occluded((x_11 + (ng_1 * eps)), _e39);
-            local_11 = _e40;
-        } else {
-            local_11 = false;
-        }
-        bool _e42 = local_11;
-        local_10 = _e42;
-    } else {
-        local_10 = true;
-    }
-    bool _e44 = local_10;
-    if (_e44) {
-        Connection _e45 = c_5;
-        const Connection connection = _e45;
-        return connection;
-    }
-    float3 _e47 = c_5.y;
-    float3 v_6 = (x_11 - _e47);
-    float d2_8 = dot(v_6, v_6);
-    const float3 _e54 = light_intensity(l_2, (v_6 / (sqrt(d2_8)).xxx));
-    float _e56 = c_5.cos_x;
-    float _e59 = asfloat(rt2_2.Load(li*4));
-    const float _e61 = connection_factor(_e56, d2_8, (s * _e59), w_res);
-    c_5.e = (_e54 * _e61);
-    Connection _e63 = c_5;
-    const Connection connection_1 = _e63;
-    return connection_1;
+    GpuLight _e12 = ConstructGpuLight(asfloat(lights.Load3(li*64+0)), asuint(lights.Load(li*64+12)), asfloat(lights.Load3(li*64+16)), asfloat(lights.Load(li*64+28)), asfloat(lights.Load3(li*64+32)), asfloat(lights.Load(li*64+44)), asfloat(lights.Load3(li*64+48)), asuint(lights.Load(li*64+60)));
+    float _e15 = asfloat(r2_3.Load(li*4));
+    float _e19 = asfloat(rt2_3.Load(li*4));
+    const Connection _e21 = connect_record(_e12, x_12, n_8, ng_2, (s * _e15), (s * _e19), w_res_1, u1_3, u2_3, eps_1, trace_1);
+    const Connection connection_2 = _e21;
+    return connection_2;
 }
 
 float4 surface_at(int2 texel)
@@ -937,24 +945,31 @@ float4 surface_at(int2 texel)
     return ((p_2.w > 0.0) ? float4(p_2.xyz, 1.0) : (0.0).xxxx);
 }
 
-Shaded shade_pick_traced(uint li_1, float3 x_12, float3 n_8, float3 r_7, float4 rl_6, Material m_1, float w_4, float u1_3, float u2_3, float eps_1, bool trace_1)
+Shaded shade_connection(Connection c_6, float3 x_13, float3 n_9, Material m_1)
 {
     Shaded s_1 = (Shaded)0;
 
-    const Connection _e13 = connect_traced(li_1, x_12, n_8, n_8, 1.0, w_4, u1_3, u2_3, eps_1, trace_1);
-    s_1.e = _e13.e;
+    s_1.e = c_6.e;
     s_1.diffuse = (0.0).xxx;
     s_1.specular = (0.0).xxx;
-    Shaded _e22 = s_1;
-    const Shaded shaded = _e22;
+    Shaded _e13 = s_1;
+    const Shaded shaded = _e13;
     return shaded;
 }
 
-Shaded shade_pick(uint li_2, float3 x_13, float3 n_9, float3 r_8, float4 rl_7, Material m_2, float w_5, float u1_4, float u2_4, float eps_2)
+Shaded shade_pick_traced(uint li_1, float3 x_14, float3 n_10, float3 r_7, float4 rl_6, Material m_2, float w_4, float u1_4, float u2_4, float eps_2, bool trace_2)
 {
-    const Shaded _e11 = shade_pick_traced(li_2, x_13, n_9, r_8, rl_7, m_2, w_5, u1_4, u2_4, eps_2, true);
-    const Shaded shaded_1 = _e11;
+    const Connection _e12 = connect_traced(li_1, x_14, n_10, n_10, 1.0, w_4, u1_4, u2_4, eps_2, trace_2);
+    const Shaded _e13 = shade_connection(_e12, x_14, n_10, m_2);
+    const Shaded shaded_1 = _e13;
     return shaded_1;
+}
+
+Shaded shade_pick(uint li_2, float3 x_15, float3 n_11, float3 r_8, float4 rl_7, Material m_3, float w_5, float u1_5, float u2_5, float eps_3)
+{
+    const Shaded _e11 = shade_pick_traced(li_2, x_15, n_11, r_8, rl_7, m_3, w_5, u1_5, u2_5, eps_3, true);
+    const Shaded shaded_2 = _e11;
+    return shaded_2;
 }
 
 Shaded ConstructShaded(float3 arg0, float3 arg1, float3 arg2) {
@@ -967,8 +982,8 @@ Shaded ConstructShaded(float3 arg0, float3 arg1, float3 arg2) {
 
 Shaded add(Shaded a_9, Shaded b_6)
 {
-    const Shaded shaded_2 = ConstructShaded((a_9.e + b_6.e), (a_9.diffuse + b_6.diffuse), (a_9.specular + b_6.specular));
-    return shaded_2;
+    const Shaded shaded_3 = ConstructShaded((a_9.e + b_6.e), (a_9.diffuse + b_6.diffuse), (a_9.specular + b_6.specular));
+    return shaded_3;
 }
 
 [numthreads(8, 8, 1)]
@@ -1009,14 +1024,14 @@ void main(uint3 gid : SV_DispatchThreadID)
         out_tex[texel_1] = (0.0).xxxx;
         return;
     }
-    float3 x_14 = _e21.xyz;
-    float3 n_11 = (nn / (sqrt(len2_)).xxx);
-    r = n_11;
+    float3 x_16 = _e21.xyz;
+    float3 n_13 = (nn / (sqrt(len2_)).xxx);
+    r = n_13;
     float4 _e53 = lobe;
     const float4 _e54 = range_lobe(_e53);
     float _e57 = view.shadow_offset;
     float3 _e60 = view.eye;
-    float eps_3 = (_e57 * length((_e60 - x_14)));
+    float eps_4 = (_e57 * length((_e60 - x_16)));
     uint _e66 = view.seed;
     uint _e70 = view.width;
     uint _e76 = view.frame;
@@ -1024,7 +1039,7 @@ void main(uint3 gid : SV_DispatchThreadID)
     const uint _e78 = pick_stream(_e77);
     h = _e78;
     float3 _e88 = r;
-    const Picks _e89 = bsh_collect(x_14, _e88, _e54, _e77);
+    const Picks _e89 = bsh_collect(x_16, _e88, _e54, _e77);
     const float _e92 = reservoir_weight(_e89.n, K);
     uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
     bool loop_init_1 = true;
@@ -1056,7 +1071,7 @@ void main(uint3 gid : SV_DispatchThreadID)
             Material _e111 = m;
             uint _e112 = h;
             const float _e113 = xi_from_bits(_e112);
-            const Shaded _e114 = shade_pick(_e89.light[min(uint(_e108), 7u)], x_14, n_11, _e110, _e54, _e111, _e92, _e103, _e113, eps_3);
+            const Shaded _e114 = shade_pick(_e89.light[min(uint(_e108), 7u)], x_16, n_13, _e110, _e54, _e111, _e92, _e103, _e113, eps_4);
             const Shaded _e115 = add(_e106, _e114);
             t = _e115;
         }

@@ -124,6 +124,7 @@ static const uint MAP_ORTHOGRAPHIC = 2u;
 static const float XI_STEP = 5.9604645e-8;
 static const uint PICK_STREAM = 2654435769u;
 static const float TWO_PI = 6.2831855;
+static const float UNRANGED = 1e38;
 static const float CULL_RADIUS_SCALE = 1.000001;
 static const float SPHERE_PAD = 4.7683716e-7;
 static const float SPHERE_HUGE = 3.4028235e38;
@@ -163,8 +164,8 @@ Texture2D<float4> depth_tex : register(t1);
 Texture2D<float4> normal_tex : register(t2);
 RWTexture2D<float4> out_tex : register(u3);
 ByteAddressBuffer lights_1 : register(t1, space1);
-ByteAddressBuffer rt2_4 : register(t2, space1);
-ByteAddressBuffer r2_3 : register(t3, space1);
+ByteAddressBuffer rt2_5 : register(t2, space1);
+ByteAddressBuffer r2_4 : register(t3, space1);
 ByteAddressBuffer bsh_nodes : register(t4, space1);
 ByteAddressBuffer light_cones : register(t5, space1);
 
@@ -396,12 +397,12 @@ float4 emitter_cone(float3 center_, float radius, float3 axis, float cos_o, floa
 {
     float3 v_5 = (p - center_);
     float dist2_1 = dot(v_5, v_5);
-    float r2_4 = (radius * radius);
-    float d2_8 = max(max(dist2_1, r2_4), MIN_D2_);
+    float r2_5 = (radius * radius);
+    float d2_8 = max(max(dist2_1, r2_5), MIN_D2_);
     float3 wi = ((dist2_1 > 0.0) ? (v_5 / (sqrt(dist2_1)).xxx) : float3(0.0, 0.0, 0.0));
     float cos_w = dot(axis, wi);
     const float _e25 = safe_sqrt((1.0 - (cos_w * cos_w)));
-    const float _e26 = subtended_cos(dist2_1, r2_4);
+    const float _e26 = subtended_cos(dist2_1, r2_5);
     const float _e30 = safe_sqrt((1.0 - (_e26 * _e26)));
     const float _e34 = safe_sqrt((1.0 - (cos_o * cos_o)));
     const float _e35 = cos_sub_clamped(_e25, cos_w, _e34, cos_o);
@@ -441,8 +442,8 @@ float cone_cos_of(float3 v, float d2_4, float a_2, float3 d)
     if (_e21) {
         return 1.0;
     }
-    float3 c_3 = cross(v, d);
-    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_3, c_3)) * a_2)) / d2_4), 1.0);
+    float3 c_4 = cross(v, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_4, c_4)) * a_2)) / d2_4), 1.0);
 }
 
 float cone_cos_toward(float3 center_2, float radius_2, float3 p_2, float3 d_1)
@@ -702,12 +703,12 @@ GeoHit trace(float3 o_2, float3 d_4, float t_min_1, float t_max_2, bool any_hit)
         if (all(loop_bound == uint2(0u, 0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         uint _e21 = node_2;
-        GpuGeoNode n_9 = ConstructGpuGeoNode(asfloat(geo_nodes.Load3(_e21*32+0)), asuint(geo_nodes.Load(_e21*32+12)), asfloat(geo_nodes.Load3(_e21*32+16)), asuint(geo_nodes.Load(_e21*32+28)));
+        GpuGeoNode n_11 = ConstructGpuGeoNode(asfloat(geo_nodes.Load3(_e21*32+0)), asuint(geo_nodes.Load(_e21*32+12)), asfloat(geo_nodes.Load3(_e21*32+16)), asuint(geo_nodes.Load(_e21*32+28)));
         float _e27 = hit.t;
-        const float _e28 = ray_aabb(o_2, _e14, n_9.bmin, n_9.bmax, _e27);
+        const float _e28 = ray_aabb(o_2, _e14, n_11.bmin, n_11.bmax, _e27);
         if ((_e28 >= 0.0)) {
-            if ((n_9.count > 0u)) {
-                i = n_9.first;
+            if ((n_11.count > 0u)) {
+                i = n_11.first;
                 uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
                 bool loop_init = true;
                 while(true) {
@@ -719,7 +720,7 @@ GeoHit trace(float3 o_2, float3 d_4, float t_min_1, float t_max_2, bool any_hit)
                     }
                     loop_init = false;
                     uint _e36 = i;
-                    if ((_e36 < (n_9.first + n_9.count))) {
+                    if ((_e36 < (n_11.first + n_11.count))) {
                     } else {
                         break;
                     }
@@ -744,11 +745,11 @@ GeoHit trace(float3 o_2, float3 d_4, float t_min_1, float t_max_2, bool any_hit)
                 uint _e60 = sp;
                 if ((_e60 < 64u)) {
                     uint _e63 = sp;
-                    stack[min(uint(_e63), 63u)] = (n_9.first + 1u);
+                    stack[min(uint(_e63), 63u)] = (n_11.first + 1u);
                     uint _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_2 = n_9.first;
+                node_2 = n_11.first;
                 continue;
             }
         }
@@ -894,6 +895,50 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start, float3 x_6, float3 r_7, float4
     return BSH_NONE;
 }
 
+Connection connect_record(GpuLight l_2, float3 x_7, float3 n_4, float3 ng_1, float r2_3, float rt2_4, float w_res, float u1_1, float u2_1, float eps, bool trace_1)
+{
+    Connection c_2 = (Connection)0;
+    bool local_14 = (bool)0;
+    bool local_15 = (bool)0;
+
+    c_2.e = (0.0).xxx;
+    const float3 _e16 = light_point(l_2, u1_1, u2_1);
+    c_2.y = _e16;
+    float3 _e19 = c_2.y;
+    const float _e20 = connection_cosine(x_7, _e19, n_4, ng_1, r2_3);
+    c_2.cos_x = _e20;
+    float _e22 = c_2.cos_x;
+    if (!((_e22 <= 0.0))) {
+        if (trace_1) {
+            float3 _e33 = c_2.y;
+            const bool _e34 = occluded((x_7 + (ng_1 * eps)), _e33);
+            local_15 = _e34;
+        } else {
+            local_15 = false;
+        }
+        bool _e36 = local_15;
+        local_14 = _e36;
+    } else {
+        local_14 = true;
+    }
+    bool _e38 = local_14;
+    if (_e38) {
+        Connection _e39 = c_2;
+        const Connection connection = _e39;
+        return connection;
+    }
+    float3 _e41 = c_2.y;
+    float3 v_11 = (x_7 - _e41);
+    float d2_10 = dot(v_11, v_11);
+    const float3 _e48 = light_intensity(l_2, (v_11 / (sqrt(d2_10)).xxx));
+    float _e50 = c_2.cos_x;
+    const float _e51 = connection_factor(_e50, d2_10, rt2_4, w_res);
+    c_2.e = (_e48 * _e51);
+    Connection _e53 = c_2;
+    const Connection connection_1 = _e53;
+    return connection_1;
+}
+
 GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, float3 arg4, float arg5, float3 arg6, uint arg7) {
     GpuLight ret = (GpuLight)0;
     ret.p0_ = arg0;
@@ -907,51 +952,14 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
     return ret;
 }
 
-Connection connect_traced(uint li, float3 x_7, float3 n_4, float3 ng_1, float s, float w_res, float u1_1, float u2_1, float eps, bool trace_1)
+Connection connect_traced(uint li, float3 x_8, float3 n_5, float3 ng_2, float s, float w_res_1, float u1_2, float u2_2, float eps_1, bool trace_2)
 {
-    Connection c_2 = (Connection)0;
-    bool local_14 = (bool)0;
-    bool local_15 = (bool)0;
-
-    c_2.e = (0.0).xxx;
-    GpuLight l_2 = ConstructGpuLight(asfloat(lights_1.Load3(li*64+0)), asuint(lights_1.Load(li*64+12)), asfloat(lights_1.Load3(li*64+16)), asfloat(lights_1.Load(li*64+28)), asfloat(lights_1.Load3(li*64+32)), asfloat(lights_1.Load(li*64+44)), asfloat(lights_1.Load3(li*64+48)), asuint(lights_1.Load(li*64+60)));
-    const float3 _e18 = light_point(l_2, u1_1, u2_1);
-    c_2.y = _e18;
-    float3 _e21 = c_2.y;
-    float _e24 = asfloat(r2_3.Load(li*4));
-    const float _e26 = connection_cosine(x_7, _e21, n_4, ng_1, (s * _e24));
-    c_2.cos_x = _e26;
-    float _e28 = c_2.cos_x;
-    if (!((_e28 <= 0.0))) {
-        if (trace_1) {
-            float3 _e39 = c_2.y;
-            const bool _e40 = occluded((x_7 + (ng_1 * eps)), _e39);
-            local_15 = _e40;
-        } else {
-            local_15 = false;
-        }
-        bool _e42 = local_15;
-        local_14 = _e42;
-    } else {
-        local_14 = true;
-    }
-    bool _e44 = local_14;
-    if (_e44) {
-        Connection _e45 = c_2;
-        const Connection connection = _e45;
-        return connection;
-    }
-    float3 _e47 = c_2.y;
-    float3 v_11 = (x_7 - _e47);
-    float d2_10 = dot(v_11, v_11);
-    const float3 _e54 = light_intensity(l_2, (v_11 / (sqrt(d2_10)).xxx));
-    float _e56 = c_2.cos_x;
-    float _e59 = asfloat(rt2_4.Load(li*4));
-    const float _e61 = connection_factor(_e56, d2_10, (s * _e59), w_res);
-    c_2.e = (_e54 * _e61);
-    Connection _e63 = c_2;
-    const Connection connection_1 = _e63;
-    return connection_1;
+    GpuLight _e12 = ConstructGpuLight(asfloat(lights_1.Load3(li*64+0)), asuint(lights_1.Load(li*64+12)), asfloat(lights_1.Load3(li*64+16)), asfloat(lights_1.Load(li*64+28)), asfloat(lights_1.Load3(li*64+32)), asfloat(lights_1.Load(li*64+44)), asfloat(lights_1.Load3(li*64+48)), asuint(lights_1.Load(li*64+60)));
+    float _e15 = asfloat(r2_4.Load(li*4));
+    float _e19 = asfloat(rt2_5.Load(li*4));
+    const Connection _e21 = connect_record(_e12, x_8, n_5, ng_2, (s * _e15), (s * _e19), w_res_1, u1_2, u2_2, eps_1, trace_2);
+    const Connection connection_2 = _e21;
+    return connection_2;
 }
 
 GpuLightCone ConstructGpuLightCone(float3 arg0, float arg1, float3 arg2, float arg3, float arg4, float arg5, uint arg6, uint arg7) {
@@ -967,23 +975,23 @@ GpuLightCone ConstructGpuLightCone(float3 arg0, float arg1, float3 arg2, float a
     return ret;
 }
 
-float light_range_scale(uint li_1, float3 x_8, float3 r_8, float4 rl_5)
+float light_range_scale(uint li_1, float3 x_9, float3 r_8, float4 rl_5)
 {
-    GpuLightCone c_4 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_1*48+0)), asfloat(light_cones.Load(li_1*48+12)), asfloat(light_cones.Load3(li_1*48+16)), asfloat(light_cones.Load(li_1*48+28)), asfloat(light_cones.Load(li_1*48+32)), asfloat(light_cones.Load(li_1*48+36)), asuint(light_cones.Load(li_1*48+40)), asuint(light_cones.Load(li_1*48+44)));
-    const float _e9 = range_scale_toward(rl_5, c_4.center_, c_4.radius, x_8, r_8);
+    GpuLightCone c_5 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_1*48+0)), asfloat(light_cones.Load(li_1*48+12)), asfloat(light_cones.Load3(li_1*48+16)), asfloat(light_cones.Load(li_1*48+28)), asfloat(light_cones.Load(li_1*48+32)), asfloat(light_cones.Load(li_1*48+36)), asuint(light_cones.Load(li_1*48+40)), asuint(light_cones.Load(li_1*48+44)));
+    const float _e9 = range_scale_toward(rl_5, c_5.center_, c_5.radius, x_9, r_8);
     return _e9;
 }
 
-float light_weight(uint li_2, float3 x_9, float3 n_5, float3 r_9, float4 lobe_7, float4 rl_6)
+float light_weight(uint li_2, float3 x_10, float3 n_6, float3 r_9, float4 lobe_7, float4 rl_6)
 {
-    GpuLightCone c_5 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_2*48+0)), asfloat(light_cones.Load(li_2*48+12)), asfloat(light_cones.Load3(li_2*48+16)), asfloat(light_cones.Load(li_2*48+28)), asfloat(light_cones.Load(li_2*48+32)), asfloat(light_cones.Load(li_2*48+36)), asuint(light_cones.Load(li_2*48+40)), asuint(light_cones.Load(li_2*48+44)));
-    const float _e15 = light_range_scale(li_2, x_9, r_9, rl_6);
-    float _e18 = asfloat(rt2_4.Load(li_2*4));
-    const float _e20 = cone_weight(c_5.center_, c_5.radius, c_5.phi, c_5.axis, c_5.cos_o, c_5.cos_e, (_e15 * _e18), x_9, n_5, r_9, lobe_7);
+    GpuLightCone c_6 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_2*48+0)), asfloat(light_cones.Load(li_2*48+12)), asfloat(light_cones.Load3(li_2*48+16)), asfloat(light_cones.Load(li_2*48+28)), asfloat(light_cones.Load(li_2*48+32)), asfloat(light_cones.Load(li_2*48+36)), asuint(light_cones.Load(li_2*48+40)), asuint(light_cones.Load(li_2*48+44)));
+    const float _e15 = light_range_scale(li_2, x_10, r_9, rl_6);
+    float _e18 = asfloat(rt2_5.Load(li_2*4));
+    const float _e20 = cone_weight(c_6.center_, c_6.radius, c_6.phi, c_6.axis, c_6.cos_o, c_6.cos_e, (_e15 * _e18), x_10, n_6, r_9, lobe_7);
     return _e20;
 }
 
-WeightedPicks bsh_weighted_collect(float3 x_10, float3 n_6, float3 r_10, float4 lobe_8, float4 rl_7, uint h0_)
+WeightedPicks bsh_weighted_collect(float3 x_11, float3 n_7, float3 r_10, float4 lobe_8, float4 rl_7, uint h0_)
 {
     WeightedPicks picks = (WeightedPicks)0;
     uint h_1 = (uint)0;
@@ -994,7 +1002,7 @@ WeightedPicks bsh_weighted_collect(float3 x_10, float3 n_6, float3 r_10, float4 
     picks.n = 0u;
     h_1 = h0_;
     const uint _e14 = bsh_first(BSH);
-    const uint _e15 = bsh_next_leaf_lobe(BSH, _e14, x_10, r_10, rl_7);
+    const uint _e15 = bsh_next_leaf_lobe(BSH, _e14, x_11, r_10, rl_7);
     b_4 = _e15;
     uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
     bool loop_init_1 = true;
@@ -1004,7 +1012,7 @@ WeightedPicks bsh_weighted_collect(float3 x_10, float3 n_6, float3 r_10, float4 
         if (!loop_init_1) {
             uint _e58 = b_4;
             uint _e61 = asuint(bsh_nodes.Load(20+_e58*32));
-            const uint _e62 = bsh_next_leaf_lobe(BSH, _e61, x_10, r_10, rl_7);
+            const uint _e62 = bsh_next_leaf_lobe(BSH, _e61, x_11, r_10, rl_7);
             b_4 = _e62;
         }
         loop_init_1 = false;
@@ -1018,7 +1026,7 @@ WeightedPicks bsh_weighted_collect(float3 x_10, float3 n_6, float3 r_10, float4 
             picks.n = (_e21 + 1u);
             uint _e25 = b_4;
             uint li_5 = asuint(bsh_nodes.Load(24+_e25*32));
-            const float _e29 = light_weight(li_5, x_10, n_6, r_10, lobe_8, rl_7);
+            const float _e29 = light_weight(li_5, x_11, n_7, r_10, lobe_8, rl_7);
             if ((_e29 > 0.0)) {
                 float _e33 = picks.w_sum;
                 picks.w_sum = (_e33 + _e29);
@@ -1078,9 +1086,9 @@ float4 unproject_pixel(float4 c0_, float4 c1_, float4 c2_, float4 c3_, float px,
     if (!(_e16)) {
         return float4(0.0, 0.0, 0.0, 0.0);
     }
-    float x_13 = ((((px + 0.5) / width) * 2.0) - 1.0);
+    float x_15 = ((((px + 0.5) / width) * 2.0) - 1.0);
     float y_1 = (1.0 - (((py + 0.5) / height) * 2.0));
-    float4 p_8 = ((((c0_ * x_13) + (c1_ * y_1)) + (c2_ * depth)) + c3_);
+    float4 p_8 = ((((c0_ * x_15) + (c1_ * y_1)) + (c2_ * depth)) + c3_);
     float3 q_1 = float3((p_8.x / p_8.w), (p_8.y / p_8.w), (p_8.z / p_8.w));
     if ((abs(p_8.w) > 0.0)) {
         const bool _e59 = finite3_(q_1);
@@ -1109,24 +1117,31 @@ float4 surface_at(int2 texel)
     return _e29;
 }
 
-Shaded shade_pick_traced(uint li_3, float3 x_11, float3 n_7, float3 r_11, float4 rl_8, Material m_1, float w_4, float u1_2, float u2_2, float eps_1, bool trace_2)
+Shaded shade_connection(Connection c_3, float3 x_12, float3 n_8, Material m_1)
 {
     Shaded s_2 = (Shaded)0;
 
-    const Connection _e13 = connect_traced(li_3, x_11, n_7, n_7, 1.0, w_4, u1_2, u2_2, eps_1, trace_2);
-    s_2.e = _e13.e;
+    s_2.e = c_3.e;
     s_2.diffuse = (0.0).xxx;
     s_2.specular = (0.0).xxx;
-    Shaded _e22 = s_2;
-    const Shaded shaded = _e22;
+    Shaded _e13 = s_2;
+    const Shaded shaded = _e13;
     return shaded;
 }
 
-Shaded shade_pick(uint li_4, float3 x_12, float3 n_8, float3 r_12, float4 rl_9, Material m_2, float w_5, float u1_3, float u2_3, float eps_2)
+Shaded shade_pick_traced(uint li_3, float3 x_13, float3 n_9, float3 r_11, float4 rl_8, Material m_2, float w_4, float u1_3, float u2_3, float eps_2, bool trace_3)
 {
-    const Shaded _e11 = shade_pick_traced(li_4, x_12, n_8, r_12, rl_9, m_2, w_5, u1_3, u2_3, eps_2, true);
-    const Shaded shaded_1 = _e11;
+    const Connection _e12 = connect_traced(li_3, x_13, n_9, n_9, 1.0, w_4, u1_3, u2_3, eps_2, trace_3);
+    const Shaded _e13 = shade_connection(_e12, x_13, n_9, m_2);
+    const Shaded shaded_1 = _e13;
     return shaded_1;
+}
+
+Shaded shade_pick(uint li_4, float3 x_14, float3 n_10, float3 r_12, float4 rl_9, Material m_3, float w_5, float u1_4, float u2_4, float eps_3)
+{
+    const Shaded _e11 = shade_pick_traced(li_4, x_14, n_10, r_12, rl_9, m_3, w_5, u1_4, u2_4, eps_3, true);
+    const Shaded shaded_2 = _e11;
+    return shaded_2;
 }
 
 Shaded ConstructShaded(float3 arg0, float3 arg1, float3 arg2) {
@@ -1139,8 +1154,8 @@ Shaded ConstructShaded(float3 arg0, float3 arg1, float3 arg2) {
 
 Shaded add(Shaded a_6, Shaded b_5)
 {
-    const Shaded shaded_2 = ConstructShaded((a_6.e + b_5.e), (a_6.diffuse + b_5.diffuse), (a_6.specular + b_5.specular));
-    return shaded_2;
+    const Shaded shaded_3 = ConstructShaded((a_6.e + b_5.e), (a_6.diffuse + b_5.diffuse), (a_6.specular + b_5.specular));
+    return shaded_3;
 }
 
 uint pick_copies(uint lights[8], uint k_2)
@@ -1225,14 +1240,14 @@ void main(uint3 gid : SV_DispatchThreadID)
         out_tex[texel_1] = (0.0).xxxx;
         return;
     }
-    float3 x_14 = _e21.xyz;
-    float3 n_10 = (nn / (sqrt(len2_)).xxx);
-    r = n_10;
+    float3 x_16 = _e21.xyz;
+    float3 n_12 = (nn / (sqrt(len2_)).xxx);
+    r = n_12;
     float4 _e53 = lobe;
     const float4 _e54 = range_lobe(_e53);
     float _e57 = view.shadow_offset;
     float3 _e60 = view.eye;
-    float eps_3 = (_e57 * length((_e60 - x_14)));
+    float eps_4 = (_e57 * length((_e60 - x_16)));
     uint _e66 = view.seed;
     uint _e70 = view.width;
     uint _e76 = view.frame;
@@ -1241,7 +1256,7 @@ void main(uint3 gid : SV_DispatchThreadID)
     h = _e78;
     float3 _e88 = r;
     float4 _e89 = lobe;
-    const WeightedPicks _e90 = bsh_weighted_collect(x_14, n_10, _e88, _e89, _e54, _e77);
+    const WeightedPicks _e90 = bsh_weighted_collect(x_16, n_12, _e88, _e89, _e54, _e77);
     if ((_e90.w_sum > 0.0)) {
         uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
         bool loop_init_4 = true;
@@ -1281,7 +1296,7 @@ void main(uint3 gid : SV_DispatchThreadID)
                     Material _e125 = m;
                     uint _e128 = k;
                     const float _e131 = weighted_pick_weight(_e90.w_sum, _e90.w[min(uint(_e128), 7u)], K);
-                    const Shaded _e134 = shade_pick(li_6, x_14, n_10, _e124, _e54, _e125, (_e131 * float(copies_1)), _e102, _e106, eps_3);
+                    const Shaded _e134 = shade_pick(li_6, x_16, n_12, _e124, _e54, _e125, (_e131 * float(copies_1)), _e102, _e106, eps_4);
                     const Shaded _e135 = add(_e123, _e134);
                     t = _e135;
                 }

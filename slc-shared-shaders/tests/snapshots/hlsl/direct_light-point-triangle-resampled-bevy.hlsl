@@ -116,6 +116,7 @@ static const uint MAP_ORTHOGRAPHIC = 2u;
 static const float XI_STEP = 5.9604645e-8;
 static const uint PICK_STREAM = 2654435769u;
 static const float TWO_PI = 6.2831855;
+static const float UNRANGED = 1e38;
 static const float CULL_RADIUS_SCALE = 1.000001;
 static const float SPHERE_PAD = 4.7683716e-7;
 static const float SPHERE_HUGE = 3.4028235e38;
@@ -157,8 +158,8 @@ RWTexture2D<float4> out_tex : register(u3);
 Texture2D<float4> base_color_tex : register(t4);
 Texture2D<float4> metal_rough_tex : register(t5);
 ByteAddressBuffer lights_1 : register(t1, space1);
-ByteAddressBuffer rt2_2 : register(t2, space1);
-ByteAddressBuffer r2_2 : register(t3, space1);
+ByteAddressBuffer rt2_3 : register(t2, space1);
+ByteAddressBuffer r2_3 : register(t3, space1);
 ByteAddressBuffer bsh_nodes : register(t4, space1);
 ByteAddressBuffer light_cones : register(t5, space1);
 
@@ -225,8 +226,8 @@ bool slc_keep(float r2_, float d2_1)
 
 bool sphere_contains_point(float3 c, float r_1, float3 x_1)
 {
-    float3 v_4 = (x_1 - c);
-    return (dot(v_4, v_4) <= (r_1 * r_1));
+    float3 v_5 = (x_1 - c);
+    return (dot(v_5, v_5) <= (r_1 * r_1));
 }
 
 float inverse_square(float d2_2)
@@ -246,8 +247,8 @@ float connection_cosine(float3 x_2, float3 y, float3 n, float3 ng, float r2_1)
     bool local_2 = (bool)0;
     bool local_3 = (bool)0;
 
-    float3 v_5 = (x_2 - y);
-    float d2_6 = dot(v_5, v_5);
+    float3 v_6 = (x_2 - y);
+    float d2_6 = dot(v_6, v_6);
     const bool _e7 = slc_keep(r2_1, d2_6);
     if (!(!(_e7))) {
         local_2 = !((d2_6 > 0.0));
@@ -258,7 +259,7 @@ float connection_cosine(float3 x_2, float3 y, float3 n, float3 ng, float r2_1)
     if (_e16) {
         return 0.0;
     }
-    float3 w_6 = (v_5 / (sqrt(d2_6)).xxx);
+    float3 w_6 = (v_6 / (sqrt(d2_6)).xxx);
     float cos_x_1 = -(dot(n, w_6));
     if (!((cos_x_1 <= 0.0))) {
         local_3 = (dot(ng, w_6) >= 0.0);
@@ -351,9 +352,9 @@ float smith_visibility(float n_l, float n_v, float alpha_2)
 
 float3 fresnel_schlick(float3 f0_, float f90_, float v_h)
 {
-    float c_7 = saturate((1.0 - v_h));
-    float c2_ = (c_7 * c_7);
-    return (f0_ + ((float3(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_7)));
+    float c_8 = saturate((1.0 - v_h));
+    float c2_ = (c_8 * c_8);
+    return (f0_ + ((float3(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_8)));
 }
 
 float3 specular_fresnel(float3 base, float metallic, float3 f0_d, float f90_d, float v_h_1)
@@ -460,9 +461,9 @@ float bevy_dfg(float r_2, float n_v_2)
 {
     float rx = (1.0 - r_2);
     float a004_ = ((min((rx * rx), exp2((-9.28 * n_v_2))) * rx) + (0.0425 - (0.0275 * r_2)));
-    float x_10 = max(((1.04 - (0.572 * r_2)) - (1.04 * a004_)), 5e-5);
+    float x_12 = max(((1.04 - (0.572 * r_2)) - (1.04 * a004_)), 5e-5);
     float y_1 = max((((0.022 * r_2) - 0.04) + (1.04 * a004_)), 5e-5);
-    return (x_10 + y_1);
+    return (x_12 + y_1);
 }
 
 float3 bevy_brdf(float3 base_2, float metallic_3, float r_3, float reflectance_1, float3 n_3, float3 v_1, float3 l)
@@ -514,14 +515,14 @@ float cone_cos_of(float3 v_2, float d2_4, float a_3, float3 d)
     if (_e21) {
         return 1.0;
     }
-    float3 c_8 = cross(v_2, d);
-    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_8, c_8)) * a_3)) / d2_4), 1.0);
+    float3 c_9 = cross(v_2, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_9, c_9)) * a_3)) / d2_4), 1.0);
 }
 
 float cone_cos_toward(float3 center_, float radius, float3 p, float3 d_1)
 {
-    float3 v_6 = (center_ - p);
-    const float _e6 = cone_cos_of(v_6, dot(v_6, v_6), radius, d_1);
+    float3 v_7 = (center_ - p);
+    const float _e6 = cone_cos_of(v_7, dot(v_7, v_7), radius, d_1);
     return _e6;
 }
 
@@ -577,8 +578,8 @@ float3 triangle_normal(float3 a_4, float3 b_4, float3 c_4)
 {
     bool local_10 = (bool)0;
 
-    float3 n_7 = cross((b_4 - a_4), (c_4 - a_4));
-    float l2_ = dot(n_7, n_7);
+    float3 n_9 = cross((b_4 - a_4), (c_4 - a_4));
+    float l2_ = dot(n_9, n_9);
     if (!(!((l2_ > 0.0)))) {
         local_10 = !((l2_ < 3e38));
     } else {
@@ -588,7 +589,7 @@ float3 triangle_normal(float3 a_4, float3 b_4, float3 c_4)
     if (_e17) {
         return float3(0.0, 0.0, 0.0);
     }
-    return (n_7 / (sqrt(l2_)).xxx);
+    return (n_9 / (sqrt(l2_)).xxx);
 }
 
 float ray_triangle(float3 o_1, float3 d_3, float3 a_5, float3 b_5, float3 c_5, float t_min, float t_max_1)
@@ -617,9 +618,9 @@ float ray_triangle(float3 o_1, float3 d_3, float3 a_5, float3 b_5, float3 c_5, f
         return -1.0;
     }
     float3 q_1 = cross(s_3, e1_);
-    float v_7 = (dot(d_3, q_1) * inv);
-    if (!((v_7 < 0.0))) {
-        local_12 = ((u_3 + v_7) > 1.0);
+    float v_8 = (dot(d_3, q_1) * inv);
+    if (!((v_8 < 0.0))) {
+        local_12 = ((u_3 + v_8) > 1.0);
     } else {
         local_12 = true;
     }
@@ -714,12 +715,12 @@ GeoHit trace(float3 o_2, float3 d_4, float t_min_1, float t_max_2, bool any_hit)
         if (all(loop_bound == uint2(0u, 0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         uint _e21 = node_2;
-        GpuGeoNode n_8 = ConstructGpuGeoNode(asfloat(geo_nodes.Load3(_e21*32+0)), asuint(geo_nodes.Load(_e21*32+12)), asfloat(geo_nodes.Load3(_e21*32+16)), asuint(geo_nodes.Load(_e21*32+28)));
+        GpuGeoNode n_10 = ConstructGpuGeoNode(asfloat(geo_nodes.Load3(_e21*32+0)), asuint(geo_nodes.Load(_e21*32+12)), asfloat(geo_nodes.Load3(_e21*32+16)), asuint(geo_nodes.Load(_e21*32+28)));
         float _e27 = hit.t;
-        const float _e28 = ray_aabb(o_2, _e14, n_8.bmin, n_8.bmax, _e27);
+        const float _e28 = ray_aabb(o_2, _e14, n_10.bmin, n_10.bmax, _e27);
         if ((_e28 >= 0.0)) {
-            if ((n_8.count > 0u)) {
-                i = n_8.first;
+            if ((n_10.count > 0u)) {
+                i = n_10.first;
                 uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
                 bool loop_init = true;
                 while(true) {
@@ -731,7 +732,7 @@ GeoHit trace(float3 o_2, float3 d_4, float t_min_1, float t_max_2, bool any_hit)
                     }
                     loop_init = false;
                     uint _e36 = i;
-                    if ((_e36 < (n_8.first + n_8.count))) {
+                    if ((_e36 < (n_10.first + n_10.count))) {
                     } else {
                         break;
                     }
@@ -756,11 +757,11 @@ GeoHit trace(float3 o_2, float3 d_4, float t_min_1, float t_max_2, bool any_hit)
                 uint _e60 = sp;
                 if ((_e60 < 64u)) {
                     uint _e63 = sp;
-                    stack[min(uint(_e63), 63u)] = (n_8.first + 1u);
+                    stack[min(uint(_e63), 63u)] = (n_10.first + 1u);
                     uint _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_2 = n_8.first;
+                node_2 = n_10.first;
                 continue;
             }
         }
@@ -850,8 +851,8 @@ bool bsh_reaches(BshNode node_3, float3 x_4, float3 r_6, float4 rl_3)
         return false;
     }
     const float _e25 = bsh_range_bound(node_3);
-    float3 v_8 = (x_4 - node_3.center_);
-    float d2_7 = dot(v_8, v_8);
+    float3 v_9 = (x_4 - node_3.center_);
+    float d2_7 = dot(v_9, v_9);
     float reach_max = (node_3.extent + ((rl_3.w * 1.001) * _e25));
     if ((d2_7 > (reach_max * reach_max))) {
         return false;
@@ -862,7 +863,7 @@ bool bsh_reaches(BshNode node_3, float3 x_4, float3 r_6, float4 rl_3)
         const bool _e47 = sphere_contains_point(node_3.center_, _e46, x_4);
         return _e47;
     }
-    const float _e50 = bsh_inner_scale(node_3.extent, -(v_8), d2_7, r_6, rl_3);
+    const float _e50 = bsh_inner_scale(node_3.extent, -(v_9), d2_7, r_6, rl_3);
     float s_c = (_e50 * 1.001);
     float reach = (node_3.extent + (sqrt(s_c) * _e25));
     if ((d2_7 <= ((node_3.radius * node_3.radius) * s_c))) {
@@ -906,6 +907,50 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start, float3 x_5, float3 r_7, float4
     return BSH_NONE;
 }
 
+Connection connect_record(GpuLight l_3, float3 x_6, float3 n_4, float3 ng_1, float r2_2, float rt2_2, float w_res, float u1_2, float u2_2, float eps, bool trace_1)
+{
+    Connection c_6 = (Connection)0;
+    bool local_16 = (bool)0;
+    bool local_17 = (bool)0;
+
+    c_6.e = (0.0).xxx;
+    const float3 _e16 = light_point(l_3, u1_2, u2_2);
+    c_6.y = _e16;
+    float3 _e19 = c_6.y;
+    const float _e20 = connection_cosine(x_6, _e19, n_4, ng_1, r2_2);
+    c_6.cos_x = _e20;
+    float _e22 = c_6.cos_x;
+    if (!((_e22 <= 0.0))) {
+        if (trace_1) {
+            float3 _e33 = c_6.y;
+            const bool _e34 = occluded((x_6 + (ng_1 * eps)), _e33);
+            local_17 = _e34;
+        } else {
+            local_17 = false;
+        }
+        bool _e36 = local_17;
+        local_16 = _e36;
+    } else {
+        local_16 = true;
+    }
+    bool _e38 = local_16;
+    if (_e38) {
+        Connection _e39 = c_6;
+        const Connection connection = _e39;
+        return connection;
+    }
+    float3 _e41 = c_6.y;
+    float3 v_10 = (x_6 - _e41);
+    float d2_8 = dot(v_10, v_10);
+    const float3 _e48 = light_intensity(l_3, (v_10 / (sqrt(d2_8)).xxx));
+    float _e50 = c_6.cos_x;
+    const float _e51 = connection_factor(_e50, d2_8, rt2_2, w_res);
+    c_6.e = (_e48 * _e51);
+    Connection _e53 = c_6;
+    const Connection connection_1 = _e53;
+    return connection_1;
+}
+
 GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, float3 arg4, float arg5, float3 arg6, uint arg7) {
     GpuLight ret = (GpuLight)0;
     ret.p0_ = arg0;
@@ -919,51 +964,14 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
     return ret;
 }
 
-Connection connect_traced(uint li, float3 x_6, float3 n_4, float3 ng_1, float s, float w_res, float u1_2, float u2_2, float eps, bool trace_1)
+Connection connect_traced(uint li, float3 x_7, float3 n_5, float3 ng_2, float s, float w_res_1, float u1_3, float u2_3, float eps_1, bool trace_2)
 {
-    Connection c_6 = (Connection)0;
-    bool local_16 = (bool)0;
-    bool local_17 = (bool)0;
-
-    c_6.e = (0.0).xxx;
-    GpuLight l_3 = ConstructGpuLight(asfloat(lights_1.Load3(li*64+0)), asuint(lights_1.Load(li*64+12)), asfloat(lights_1.Load3(li*64+16)), asfloat(lights_1.Load(li*64+28)), asfloat(lights_1.Load3(li*64+32)), asfloat(lights_1.Load(li*64+44)), asfloat(lights_1.Load3(li*64+48)), asuint(lights_1.Load(li*64+60)));
-    const float3 _e18 = light_point(l_3, u1_2, u2_2);
-    c_6.y = _e18;
-    float3 _e21 = c_6.y;
-    float _e24 = asfloat(r2_2.Load(li*4));
-    const float _e26 = connection_cosine(x_6, _e21, n_4, ng_1, (s * _e24));
-    c_6.cos_x = _e26;
-    float _e28 = c_6.cos_x;
-    if (!((_e28 <= 0.0))) {
-        if (trace_1) {
-            float3 _e39 = c_6.y;
-            const bool _e40 = occluded((x_6 + (ng_1 * eps)), _e39);
-            local_17 = _e40;
-        } else {
-            local_17 = false;
-        }
-        bool _e42 = local_17;
-        local_16 = _e42;
-    } else {
-        local_16 = true;
-    }
-    bool _e44 = local_16;
-    if (_e44) {
-        Connection _e45 = c_6;
-        const Connection connection = _e45;
-        return connection;
-    }
-    float3 _e47 = c_6.y;
-    float3 v_9 = (x_6 - _e47);
-    float d2_8 = dot(v_9, v_9);
-    const float3 _e54 = light_intensity(l_3, (v_9 / (sqrt(d2_8)).xxx));
-    float _e56 = c_6.cos_x;
-    float _e59 = asfloat(rt2_2.Load(li*4));
-    const float _e61 = connection_factor(_e56, d2_8, (s * _e59), w_res);
-    c_6.e = (_e54 * _e61);
-    Connection _e63 = c_6;
-    const Connection connection_1 = _e63;
-    return connection_1;
+    GpuLight _e12 = ConstructGpuLight(asfloat(lights_1.Load3(li*64+0)), asuint(lights_1.Load(li*64+12)), asfloat(lights_1.Load3(li*64+16)), asfloat(lights_1.Load(li*64+28)), asfloat(lights_1.Load3(li*64+32)), asfloat(lights_1.Load(li*64+44)), asfloat(lights_1.Load3(li*64+48)), asuint(lights_1.Load(li*64+60)));
+    float _e15 = asfloat(r2_3.Load(li*4));
+    float _e19 = asfloat(rt2_3.Load(li*4));
+    const Connection _e21 = connect_record(_e12, x_7, n_5, ng_2, (s * _e15), (s * _e19), w_res_1, u1_3, u2_3, eps_1, trace_2);
+    const Connection connection_2 = _e21;
+    return connection_2;
 }
 
 GpuLightCone ConstructGpuLightCone(float3 arg0, float arg1, float3 arg2, float arg3, float arg4, float arg5, uint arg6, uint arg7) {
@@ -979,10 +987,10 @@ GpuLightCone ConstructGpuLightCone(float3 arg0, float arg1, float3 arg2, float a
     return ret;
 }
 
-float light_range_scale(uint li_1, float3 x_7, float3 r_8, float4 rl_5)
+float light_range_scale(uint li_1, float3 x_8, float3 r_8, float4 rl_5)
 {
-    GpuLightCone c_9 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_1*48+0)), asfloat(light_cones.Load(li_1*48+12)), asfloat(light_cones.Load3(li_1*48+16)), asfloat(light_cones.Load(li_1*48+28)), asfloat(light_cones.Load(li_1*48+32)), asfloat(light_cones.Load(li_1*48+36)), asuint(light_cones.Load(li_1*48+40)), asuint(light_cones.Load(li_1*48+44)));
-    const float _e9 = range_scale_toward(rl_5, c_9.center_, c_9.radius, x_7, r_8);
+    GpuLightCone c_10 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_1*48+0)), asfloat(light_cones.Load(li_1*48+12)), asfloat(light_cones.Load3(li_1*48+16)), asfloat(light_cones.Load(li_1*48+28)), asfloat(light_cones.Load(li_1*48+32)), asfloat(light_cones.Load(li_1*48+36)), asuint(light_cones.Load(li_1*48+40)), asuint(light_cones.Load(li_1*48+44)));
+    const float _e9 = range_scale_toward(rl_5, c_10.center_, c_10.radius, x_8, r_8);
     return _e9;
 }
 
@@ -992,29 +1000,54 @@ float4 surface_at(int2 texel)
     return ((p_3.w > 0.0) ? float4(p_3.xyz, 1.0) : (0.0).xxxx);
 }
 
-Shaded shade_pick_traced(uint li_2, float3 x_8, float3 n_5, float3 r_9, float4 rl_6, Material m_1, float w_4, float u1_3, float u2_3, float eps_1, bool trace_2)
+Shaded shade_connection(Connection c_7, float3 x_9, float3 n_6, Material m_1)
 {
     Shaded s_1 = (Shaded)0;
 
-    const float _e12 = light_range_scale(li_2, x_8, r_9, rl_6);
-    const Connection _e13 = connect_traced(li_2, x_8, n_5, n_5, _e12, w_4, u1_3, u2_3, eps_1, trace_2);
-    s_1.e = _e13.e;
+    s_1.e = c_7.e;
     s_1.diffuse = (0.0).xxx;
     s_1.specular = (0.0).xxx;
-    if ((_e13.cos_x > 0.0)) {
-        const float3 _e34 = bevy_brdf(m_1.base, m_1.metallic, m_1.roughness, m_1.reflectance, n_5, m_1.v, normalize((_e13.y - x_8)));
-        s_1.diffuse = (_e34 * _e13.e);
+    if ((c_7.cos_x > 0.0)) {
+        const float3 _e25 = bevy_brdf(m_1.base, m_1.metallic, m_1.roughness, m_1.reflectance, n_6, m_1.v, normalize((c_7.y - x_9)));
+        s_1.diffuse = (_e25 * c_7.e);
     }
-    Shaded _e37 = s_1;
-    const Shaded shaded = _e37;
+    Shaded _e28 = s_1;
+    const Shaded shaded = _e28;
     return shaded;
 }
 
-Shaded shade_pick(uint li_3, float3 x_9, float3 n_6, float3 r_10, float4 rl_7, Material m_2, float w_5, float u1_4, float u2_4, float eps_2)
+Shaded shade_pick_traced(uint li_2, float3 x_10, float3 n_7, float3 r_9, float4 rl_6, Material m_2, float w_4, float u1_4, float u2_4, float eps_2, bool trace_3)
 {
-    const Shaded _e11 = shade_pick_traced(li_3, x_9, n_6, r_10, rl_7, m_2, w_5, u1_4, u2_4, eps_2, true);
-    const Shaded shaded_1 = _e11;
+    const float _e11 = light_range_scale(li_2, x_10, r_9, rl_6);
+    const Connection _e12 = connect_traced(li_2, x_10, n_7, n_7, _e11, w_4, u1_4, u2_4, eps_2, trace_3);
+    const Shaded _e13 = shade_connection(_e12, x_10, n_7, m_2);
+    const Shaded shaded_1 = _e13;
     return shaded_1;
+}
+
+Shaded shade_pick(uint li_3, float3 x_11, float3 n_8, float3 r_10, float4 rl_7, Material m_3, float w_5, float u1_5, float u2_5, float eps_3)
+{
+    const Shaded _e11 = shade_pick_traced(li_3, x_11, n_8, r_10, rl_7, m_3, w_5, u1_5, u2_5, eps_3, true);
+    const Shaded shaded_2 = _e11;
+    return shaded_2;
+}
+
+Material ConstructMaterial(float3 arg0, float arg1, float arg2, float3 arg3, float arg4, float arg5) {
+    Material ret = (Material)0;
+    ret.base = arg0;
+    ret.metallic = arg1;
+    ret.alpha = arg2;
+    ret.v = arg3;
+    ret.roughness = arg4;
+    ret.reflectance = arg5;
+    return ret;
+}
+
+Material material_of(float3 base_3, float metallic_4, float roughness, float reflectance_2, float3 v_4)
+{
+    const float _e6 = bevy_alpha(roughness);
+    const Material material = ConstructMaterial(base_3, saturate(metallic_4), _e6, v_4, roughness, reflectance_2);
+    return material;
 }
 
 Shaded ConstructShaded(float3 arg0, float3 arg1, float3 arg2) {
@@ -1027,8 +1060,8 @@ Shaded ConstructShaded(float3 arg0, float3 arg1, float3 arg2) {
 
 Shaded add(Shaded a_8, Shaded b_7)
 {
-    const Shaded shaded_2 = ConstructShaded((a_8.e + b_7.e), (a_8.diffuse + b_7.diffuse), (a_8.specular + b_7.specular));
-    return shaded_2;
+    const Shaded shaded_3 = ConstructShaded((a_8.e + b_7.e), (a_8.diffuse + b_7.diffuse), (a_8.specular + b_7.specular));
+    return shaded_3;
 }
 
 uint pick_copies(uint lights[8], uint k_1)
@@ -1080,17 +1113,6 @@ float3 output_of(Shaded s_2)
     return (s_2.diffuse + s_2.specular);
 }
 
-Material ConstructMaterial(float3 arg0, float arg1, float arg2, float3 arg3, float arg4, float arg5) {
-    Material ret = (Material)0;
-    ret.base = arg0;
-    ret.metallic = arg1;
-    ret.alpha = arg2;
-    ret.v = arg3;
-    ret.roughness = arg4;
-    ret.reflectance = arg5;
-    return ret;
-}
-
 [numthreads(8, 8, 1)]
 void main(uint3 gid : SV_DispatchThreadID)
 {
@@ -1137,82 +1159,82 @@ void main(uint3 gid : SV_DispatchThreadID)
         out_tex[texel_1] = (0.0).xxxx;
         return;
     }
-    float3 x_11 = _e21.xyz;
-    float3 n_9 = (nn / (sqrt(len2_)).xxx);
-    r = n_9;
+    float3 x_13 = _e21.xyz;
+    float3 n_11 = (nn / (sqrt(len2_)).xxx);
+    r = n_11;
     float4 mr = metal_rough_tex.Load(int3(texel_1, int(0)));
-    const float _e57 = bevy_f0_(mr.w);
-    float4 _e60 = base_color_tex.Load(int3(texel_1, int(0)));
-    const float _e65 = bevy_alpha(mr.y);
-    float3 _e68 = view.eye;
-    m = ConstructMaterial(_e60.xyz, saturate(mr.z), _e65, normalize((_e68 - x_11)), mr.y, mr.w);
-    float3 _e75 = m.base;
-    float _e77 = m.metallic;
-    float _e81 = m.alpha;
-    float3 _e83 = m.v;
-    const float4 _e85 = receiver_lobe(_e75, _e77, (_e57).xxx, 1.0, _e81, dot(n_9, _e83));
-    lobe = _e85;
-    float3 _e87 = m.v;
-    const float3 _e88 = mirror_dir(n_9, _e87);
-    r = _e88;
-    float4 _e89 = lobe;
-    const float4 _e90 = range_lobe(_e89);
-    float _e93 = view.shadow_offset;
-    float3 _e96 = view.eye;
-    float eps_3 = (_e93 * length((_e96 - x_11)));
-    uint _e102 = view.seed;
-    uint _e106 = view.width;
-    uint _e112 = view.frame;
-    const uint _e113 = point_stream(_e102, ((gid.y * _e106) + gid.x), _e112);
-    const uint _e114 = pick_stream(_e113);
-    h = _e114;
-    hc = _e113;
-    const uint _e134 = bsh_first(BSH);
-    float3 _e135 = r;
-    const uint _e136 = bsh_next_leaf_lobe(BSH, _e134, x_11, _e135, _e90);
-    b = _e136;
+    float4 _e58 = base_color_tex.Load(int3(texel_1, int(0)));
+    float3 _e65 = view.eye;
+    const Material _e68 = material_of(_e58.xyz, mr.z, mr.y, mr.w, normalize((_e65 - x_13)));
+    m = _e68;
+    float3 _e70 = m.base;
+    float _e72 = m.metallic;
+    const float _e74 = bevy_f0_(mr.w);
+    float _e78 = m.alpha;
+    float3 _e80 = m.v;
+    const float4 _e82 = receiver_lobe(_e70, _e72, (_e74).xxx, 1.0, _e78, dot(n_11, _e80));
+    lobe = _e82;
+    float3 _e84 = m.v;
+    const float3 _e85 = mirror_dir(n_11, _e84);
+    r = _e85;
+    float4 _e86 = lobe;
+    const float4 _e87 = range_lobe(_e86);
+    float _e90 = view.shadow_offset;
+    float3 _e93 = view.eye;
+    float eps_4 = (_e90 * length((_e93 - x_13)));
+    uint _e99 = view.seed;
+    uint _e103 = view.width;
+    uint _e109 = view.frame;
+    const uint _e110 = point_stream(_e99, ((gid.y * _e103) + gid.x), _e109);
+    const uint _e111 = pick_stream(_e110);
+    h = _e111;
+    hc = _e110;
+    const uint _e131 = bsh_first(BSH);
+    float3 _e132 = r;
+    const uint _e133 = bsh_next_leaf_lobe(BSH, _e131, x_13, _e132, _e87);
+    b = _e133;
     uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
     bool loop_init_2 = true;
     while(true) {
         if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e193 = b;
-            uint _e196 = asuint(bsh_nodes.Load(20+_e193*32));
-            float3 _e197 = r;
-            const uint _e198 = bsh_next_leaf_lobe(BSH, _e196, x_11, _e197, _e90);
-            b = _e198;
+            uint _e190 = b;
+            uint _e193 = asuint(bsh_nodes.Load(20+_e190*32));
+            float3 _e194 = r;
+            const uint _e195 = bsh_next_leaf_lobe(BSH, _e193, x_13, _e194, _e87);
+            b = _e195;
         }
         loop_init_2 = false;
-        uint _e138 = b;
-        if ((_e138 != BSH_NONE)) {
+        uint _e135 = b;
+        if ((_e135 != BSH_NONE)) {
         } else {
             break;
         }
         {
-            uint _e141 = count;
-            count = (_e141 + 1u);
-            uint _e145 = b;
-            uint li_4 = asuint(bsh_nodes.Load(24+_e145*32));
-            uint _e149 = h;
-            const uint _e150 = pcg_hash(_e149);
-            h = _e150;
-            uint _e151 = h;
-            const float _e152 = xi_from_bits(_e151);
-            uint _e153 = h;
-            const uint _e154 = pcg_hash(_e153);
-            h = _e154;
-            uint _e155 = h;
-            const float _e156 = xi_from_bits(_e155);
-            float2 u_4 = float2(_e152, _e156);
-            float3 _e158 = r;
-            Material _e159 = m;
-            const Shaded _e164 = shade_pick_traced(li_4, x_11, n_9, _e158, _e90, _e159, 1.0, u_4.x, u_4.y, eps_3, false);
-            const float3 _e165 = output_of(_e164);
-            const float _e166 = resample_target(_e165);
-            if ((_e166 > 0.0)) {
-                float _e169 = total;
-                total = (_e169 + _e166);
+            uint _e138 = count;
+            count = (_e138 + 1u);
+            uint _e142 = b;
+            uint li_4 = asuint(bsh_nodes.Load(24+_e142*32));
+            uint _e146 = h;
+            const uint _e147 = pcg_hash(_e146);
+            h = _e147;
+            uint _e148 = h;
+            const float _e149 = xi_from_bits(_e148);
+            uint _e150 = h;
+            const uint _e151 = pcg_hash(_e150);
+            h = _e151;
+            uint _e152 = h;
+            const float _e153 = xi_from_bits(_e152);
+            float2 u_4 = float2(_e149, _e153);
+            float3 _e155 = r;
+            Material _e156 = m;
+            const Shaded _e161 = shade_pick_traced(li_4, x_13, n_11, _e155, _e87, _e156, 1.0, u_4.x, u_4.y, eps_4, false);
+            const float3 _e162 = output_of(_e161);
+            const float _e163 = resample_target(_e162);
+            if ((_e163 > 0.0)) {
+                float _e166 = total;
+                total = (_e166 + _e163);
                 q = 0u;
                 uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
                 bool loop_init_3 = true;
@@ -1220,81 +1242,81 @@ void main(uint3 gid : SV_DispatchThreadID)
                     if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
                     loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
                     if (!loop_init_3) {
-                        uint _e189 = q;
-                        q = (_e189 + 1u);
+                        uint _e186 = q;
+                        q = (_e186 + 1u);
                     }
                     loop_init_3 = false;
-                    uint _e173 = q;
-                    if ((_e173 < K)) {
+                    uint _e170 = q;
+                    if ((_e170 < K)) {
                     } else {
                         break;
                     }
                     {
+                        uint _e173 = hc;
+                        const uint _e174 = pcg_hash(_e173);
+                        hc = _e174;
+                        float _e175 = total;
                         uint _e176 = hc;
-                        const uint _e177 = pcg_hash(_e176);
-                        hc = _e177;
-                        float _e178 = total;
-                        uint _e179 = hc;
-                        const float _e180 = xi_from_bits(_e179);
-                        const bool _e181 = weighted_replace(_e166, _e178, _e180);
-                        if (_e181) {
-                            uint _e182 = q;
-                            slot_light[min(uint(_e182), 7u)] = li_4;
-                            uint _e184 = q;
-                            slot_u[min(uint(_e184), 7u)] = u_4;
-                            uint _e186 = q;
-                            slot_p[min(uint(_e186), 7u)] = _e166;
+                        const float _e177 = xi_from_bits(_e176);
+                        const bool _e178 = weighted_replace(_e163, _e175, _e177);
+                        if (_e178) {
+                            uint _e179 = q;
+                            slot_light[min(uint(_e179), 7u)] = li_4;
+                            uint _e181 = q;
+                            slot_u[min(uint(_e181), 7u)] = u_4;
+                            uint _e183 = q;
+                            slot_p[min(uint(_e183), 7u)] = _e163;
                         }
                     }
                 }
             }
         }
     }
-    float _e199 = total;
-    if ((_e199 > 0.0)) {
+    float _e196 = total;
+    if ((_e196 > 0.0)) {
         uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
         bool loop_init_4 = true;
         while(true) {
             if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
             loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
             if (!loop_init_4) {
-                uint _e238 = k;
-                k = (_e238 + 1u);
+                uint _e235 = k;
+                k = (_e235 + 1u);
             }
             loop_init_4 = false;
-            uint _e204 = k;
-            if ((_e204 < K)) {
+            uint _e201 = k;
+            if ((_e201 < K)) {
             } else {
                 break;
             }
             {
-                uint _e207[8] = slot_light;
-                uint _e208 = k;
-                const uint _e209 = pick_copies(_e207, _e208);
-                if ((_e209 > 0u)) {
-                    float _e212 = total;
-                    uint _e214 = k;
-                    float _e216 = slot_p[min(uint(_e214), 7u)];
-                    float w_7 = ((_e212 / (8.0 * _e216)) * float(_e209));
-                    Shaded _e221 = t;
-                    uint _e222 = k;
-                    uint _e224 = slot_light[min(uint(_e222), 7u)];
-                    float3 _e225 = r;
-                    Material _e226 = m;
-                    uint _e227 = k;
-                    float _e230 = slot_u[min(uint(_e227), 7u)].x;
-                    uint _e231 = k;
-                    float _e234 = slot_u[min(uint(_e231), 7u)].y;
-                    const Shaded _e235 = shade_pick(_e224, x_11, n_9, _e225, _e90, _e226, w_7, _e230, _e234, eps_3);
-                    const Shaded _e236 = add(_e221, _e235);
-                    t = _e236;
+                uint _e204[8] = slot_light;
+                uint _e205 = k;
+                const uint _e206 = pick_copies(_e204, _e205);
+                if ((_e206 > 0u)) {
+                    float _e209 = total;
+                    uint _e211 = k;
+                    float _e213 = slot_p[min(uint(_e211), 7u)];
+                    float w_7 = ((_e209 / (8.0 * _e213)) * float(_e206));
+                    Shaded _e218 = t;
+                    uint _e219 = k;
+                    uint _e221 = slot_light[min(uint(_e219), 7u)];
+                    float3 _e222 = r;
+                    Material _e223 = m;
+                    uint _e224 = k;
+                    float _e227 = slot_u[min(uint(_e224), 7u)].x;
+                    uint _e228 = k;
+                    float _e231 = slot_u[min(uint(_e228), 7u)].y;
+                    const Shaded _e232 = shade_pick(_e221, x_13, n_11, _e222, _e87, _e223, w_7, _e227, _e231, eps_4);
+                    const Shaded _e233 = add(_e218, _e232);
+                    t = _e233;
                 }
             }
         }
     }
-    float3 _e242 = t.diffuse;
-    float3 _e244 = t.specular;
-    uint _e246 = count;
-    out_tex[texel_1] = float4((_e242 + _e244), float(_e246));
+    float3 _e239 = t.diffuse;
+    float3 _e241 = t.specular;
+    uint _e243 = count;
+    out_tex[texel_1] = float4((_e239 + _e241), float(_e243));
     return;
 }

@@ -111,6 +111,7 @@ static const uint MAP_ORTHOGRAPHIC = 2u;
 static const float XI_STEP = 5.9604645e-8;
 static const uint PICK_STREAM = 2654435769u;
 static const float TWO_PI = 6.2831855;
+static const float UNRANGED = 1e38;
 static const float CULL_RADIUS_SCALE = 1.000001;
 static const float SPHERE_PAD = 4.7683716e-7;
 static const float SPHERE_HUGE = 3.4028235e38;
@@ -149,8 +150,8 @@ ByteAddressBuffer geo_nodes : register(t6);
 ByteAddressBuffer geo_tris : register(t7);
 ByteAddressBuffer bsh_nodes : register(t5);
 ByteAddressBuffer lights : register(t2);
-ByteAddressBuffer r2_2 : register(t4);
-ByteAddressBuffer rt2_4 : register(t3);
+ByteAddressBuffer r2_3 : register(t4);
+ByteAddressBuffer rt2_5 : register(t3);
 ByteAddressBuffer light_cones : register(t2, space1);
 cbuffer params : register(b0) { ShadeParams params; }
 ByteAddressBuffer vertices_ : register(t1);
@@ -1018,8 +1019,8 @@ float3 triangle_normal(float3 a_6, float3 b_4, float3 c_5)
 {
     bool local_16 = (bool)0;
 
-    float3 n_20 = cross((b_4 - a_6), (c_5 - a_6));
-    float l2_ = dot(n_20, n_20);
+    float3 n_21 = cross((b_4 - a_6), (c_5 - a_6));
+    float l2_ = dot(n_21, n_21);
     if (!(!((l2_ > 0.0)))) {
         local_16 = !((l2_ < 3e38));
     } else {
@@ -1029,7 +1030,7 @@ float3 triangle_normal(float3 a_6, float3 b_4, float3 c_5)
     if (_e17) {
         return float3(0.0, 0.0, 0.0);
     }
-    return (n_20 / (sqrt(l2_)).xxx);
+    return (n_21 / (sqrt(l2_)).xxx);
 }
 
 float ray_triangle(float3 o_1, float3 d_3, float3 a_7, float3 b_5, float3 c_6, float t_min, float t_max_1)
@@ -1184,12 +1185,12 @@ GeoHit trace(float3 o_2, float3 d_4, float t_min_1, float t_max_2, bool any_hit)
         if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
         loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
         uint _e21 = node_2;
-        GpuGeoNode n_21 = ConstructGpuGeoNode(asfloat(geo_nodes.Load3(_e21*32+0)), asuint(geo_nodes.Load(_e21*32+12)), asfloat(geo_nodes.Load3(_e21*32+16)), asuint(geo_nodes.Load(_e21*32+28)));
+        GpuGeoNode n_22 = ConstructGpuGeoNode(asfloat(geo_nodes.Load3(_e21*32+0)), asuint(geo_nodes.Load(_e21*32+12)), asfloat(geo_nodes.Load3(_e21*32+16)), asuint(geo_nodes.Load(_e21*32+28)));
         float _e27 = hit.t;
-        const float _e28 = ray_aabb(o_2, _e14, n_21.bmin, n_21.bmax, _e27);
+        const float _e28 = ray_aabb(o_2, _e14, n_22.bmin, n_22.bmax, _e27);
         if ((_e28 >= 0.0)) {
-            if ((n_21.count > 0u)) {
-                i_1 = n_21.first;
+            if ((n_22.count > 0u)) {
+                i_1 = n_22.first;
                 uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
                 bool loop_init = true;
                 while(true) {
@@ -1201,7 +1202,7 @@ GeoHit trace(float3 o_2, float3 d_4, float t_min_1, float t_max_2, bool any_hit)
                     }
                     loop_init = false;
                     uint _e36 = i_1;
-                    if ((_e36 < (n_21.first + n_21.count))) {
+                    if ((_e36 < (n_22.first + n_22.count))) {
                     } else {
                         break;
                     }
@@ -1226,11 +1227,11 @@ GeoHit trace(float3 o_2, float3 d_4, float t_min_1, float t_max_2, bool any_hit)
                 uint _e60 = sp;
                 if ((_e60 < 64u)) {
                     uint _e63 = sp;
-                    stack[min(uint(_e63), 63u)] = (n_21.first + 1u);
+                    stack[min(uint(_e63), 63u)] = (n_22.first + 1u);
                     uint _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_2 = n_21.first;
+                node_2 = n_22.first;
                 continue;
             }
         }
@@ -1433,6 +1434,50 @@ Picks bsh_collect(float3 x_11, float3 r_5, float4 rl_5, uint seed_1)
     return picks_1;
 }
 
+Connection connect_record(GpuLight l_8, float3 x_12, float3 n_15, float3 ng_1, float r2_2, float rt2_4, float w_res, float u1_2, float u2_2, float eps, bool trace_1)
+{
+    Connection c_7 = (Connection)0;
+    bool local_22 = (bool)0;
+    bool local_23 = (bool)0;
+
+    c_7.e = (0.0).xxx;
+    const float3 _e16 = light_point(l_8, u1_2, u2_2);
+    c_7.y = _e16;
+    float3 _e19 = c_7.y;
+    const float _e20 = connection_cosine(x_12, _e19, n_15, ng_1, r2_2);
+    c_7.cos_x = _e20;
+    float _e22 = c_7.cos_x;
+    if (!((_e22 <= 0.0))) {
+        if (trace_1) {
+            float3 _e33 = c_7.y;
+            const bool _e34 = occluded((x_12 + (ng_1 * eps)), _e33);
+            local_23 = _e34;
+        } else {
+            local_23 = false;
+        }
+        bool _e36 = local_23;
+        local_22 = _e36;
+    } else {
+        local_22 = true;
+    }
+    bool _e38 = local_22;
+    if (_e38) {
+        Connection _e39 = c_7;
+        const Connection connection = _e39;
+        return connection;
+    }
+    float3 _e41 = c_7.y;
+    float3 v_13 = (x_12 - _e41);
+    float d2_11 = dot(v_13, v_13);
+    const float3 _e48 = light_intensity(l_8, (v_13 / (sqrt(d2_11)).xxx));
+    float _e50 = c_7.cos_x;
+    const float _e51 = connection_factor(_e50, d2_11, rt2_4, w_res);
+    c_7.e = (_e48 * _e51);
+    Connection _e53 = c_7;
+    const Connection connection_1 = _e53;
+    return connection_1;
+}
+
 GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, float3 arg4, float arg5, float3 arg6, uint arg7) {
     GpuLight ret = (GpuLight)0;
     ret.p0_ = arg0;
@@ -1446,58 +1491,21 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
     return ret;
 }
 
-Connection connect_traced(uint li, float3 x_12, float3 n_15, float3 ng_1, float s_1, float w_res, float u1_2, float u2_2, float eps, bool trace_1)
+Connection connect_traced(uint li, float3 x_13, float3 n_16, float3 ng_2, float s_1, float w_res_1, float u1_3, float u2_3, float eps_1, bool trace_2)
 {
-    Connection c_7 = (Connection)0;
-    bool local_22 = (bool)0;
-    bool local_23 = (bool)0;
-
-    c_7.e = (0.0).xxx;
-    GpuLight l_8 = ConstructGpuLight(asfloat(lights.Load3(li*64+0)), asuint(lights.Load(li*64+12)), asfloat(lights.Load3(li*64+16)), asfloat(lights.Load(li*64+28)), asfloat(lights.Load3(li*64+32)), asfloat(lights.Load(li*64+44)), asfloat(lights.Load3(li*64+48)), asuint(lights.Load(li*64+60)));
-    const float3 _e18 = light_point(l_8, u1_2, u2_2);
-    c_7.y = _e18;
-    float3 _e21 = c_7.y;
-    float _e24 = asfloat(r2_2.Load(li*4));
-    const float _e26 = connection_cosine(x_12, _e21, n_15, ng_1, (s_1 * _e24));
-    c_7.cos_x = _e26;
-    float _e28 = c_7.cos_x;
-    if (!((_e28 <= 0.0))) {
-        if (trace_1) {
-            float3 _e39 = c_7.y;
-            const bool _e40 = occluded((x_12 + (ng_1 * eps)), _e39);
-            local_23 = _e40;
-        } else {
-            local_23 = false;
-        }
-        bool _e42 = local_23;
-        local_22 = _e42;
-    } else {
-        local_22 = true;
-    }
-    bool _e44 = local_22;
-    if (_e44) {
-        Connection _e45 = c_7;
-        const Connection connection = _e45;
-        return connection;
-    }
-    float3 _e47 = c_7.y;
-    float3 v_13 = (x_12 - _e47);
-    float d2_11 = dot(v_13, v_13);
-    const float3 _e54 = light_intensity(l_8, (v_13 / (sqrt(d2_11)).xxx));
-    float _e56 = c_7.cos_x;
-    float _e59 = asfloat(rt2_4.Load(li*4));
-    const float _e61 = connection_factor(_e56, d2_11, (s_1 * _e59), w_res);
-    c_7.e = (_e54 * _e61);
-    Connection _e63 = c_7;
-    const Connection connection_1 = _e63;
-    return connection_1;
+    GpuLight _e12 = ConstructGpuLight(asfloat(lights.Load3(li*64+0)), asuint(lights.Load(li*64+12)), asfloat(lights.Load3(li*64+16)), asfloat(lights.Load(li*64+28)), asfloat(lights.Load3(li*64+32)), asfloat(lights.Load(li*64+44)), asfloat(lights.Load3(li*64+48)), asuint(lights.Load(li*64+60)));
+    float _e15 = asfloat(r2_3.Load(li*4));
+    float _e19 = asfloat(rt2_5.Load(li*4));
+    const Connection _e21 = connect_record(_e12, x_13, n_16, ng_2, (s_1 * _e15), (s_1 * _e19), w_res_1, u1_3, u2_3, eps_1, trace_2);
+    const Connection connection_2 = _e21;
+    return connection_2;
 }
 
-Connection connect(uint li_1, float3 x_13, float3 n_16, float3 ng_2, float s_2, float w_res_1, float u1_3, float u2_3, float eps_1)
+Connection connect(uint li_1, float3 x_14, float3 n_17, float3 ng_3, float s_2, float w_res_2, float u1_4, float u2_4, float eps_2)
 {
-    const Connection _e10 = connect_traced(li_1, x_13, n_16, ng_2, s_2, w_res_1, u1_3, u2_3, eps_1, true);
-    const Connection connection_2 = _e10;
-    return connection_2;
+    const Connection _e10 = connect_traced(li_1, x_14, n_17, ng_3, s_2, w_res_2, u1_4, u2_4, eps_2, true);
+    const Connection connection_3 = _e10;
+    return connection_3;
 }
 
 float mis_weight(float pdf_a_1, float pdf_b_1)
@@ -1519,61 +1527,61 @@ GpuLightCone ConstructGpuLightCone(float3 arg0, float arg1, float3 arg2, float a
     return ret;
 }
 
-float light_range_scale(uint li_2, float3 x_14, float3 r_6, float4 rl_6)
+float light_range_scale(uint li_2, float3 x_15, float3 r_6, float4 rl_6)
 {
     GpuLightCone c_13 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_2*48+0)), asfloat(light_cones.Load(li_2*48+12)), asfloat(light_cones.Load3(li_2*48+16)), asfloat(light_cones.Load(li_2*48+28)), asfloat(light_cones.Load(li_2*48+32)), asfloat(light_cones.Load(li_2*48+36)), asuint(light_cones.Load(li_2*48+40)), asuint(light_cones.Load(li_2*48+44)));
-    const float _e9 = range_scale_toward(rl_6, c_13.center_, c_13.radius, x_14, r_6);
+    const float _e9 = range_scale_toward(rl_6, c_13.center_, c_13.radius, x_15, r_6);
     return _e9;
 }
 
-float select_pdf(uint li_3, float3 x_15, float3 n_17, float3 r_7, float4 lobe_5, float4 rl_7, uint nee, bool in_range_1)
+float select_pdf(uint li_3, float3 x_16, float3 n_18, float3 r_7, float4 lobe_5, float4 rl_7, uint nee, bool in_range_1)
 {
     const float _e9 = reservoir_select_pdf(nee, in_range_1, K);
     return _e9;
 }
 
-float light_pdf_selected(uint li_4, float3 x_16, float3 r_8, float4 rl_8, float3 y_2, float sel)
+float light_pdf_selected(uint li_4, float3 x_17, float3 r_8, float4 rl_8, float3 y_2, float sel)
 {
     GpuLight l_9 = ConstructGpuLight(asfloat(lights.Load3(li_4*64+0)), asuint(lights.Load(li_4*64+12)), asfloat(lights.Load3(li_4*64+16)), asfloat(lights.Load(li_4*64+28)), asfloat(lights.Load3(li_4*64+32)), asfloat(lights.Load(li_4*64+44)), asfloat(lights.Load3(li_4*64+48)), asuint(lights.Load(li_4*64+60)));
-    float3 v_14 = (x_16 - y_2);
+    float3 v_14 = (x_17 - y_2);
     float d2_12 = dot(v_14, v_14);
     const float3 _e11 = light_normal(l_9);
     float cos_y_1 = ((d2_12 > 0.0) ? dot(_e11, (v_14 / (sqrt(d2_12)).xxx)) : 0.0);
-    const float _e20 = light_range_scale(li_4, x_16, r_8, rl_8);
-    float _e23 = asfloat(rt2_4.Load(li_4*4));
+    const float _e20 = light_range_scale(li_4, x_17, r_8, rl_8);
+    float _e23 = asfloat(rt2_5.Load(li_4*4));
     const float _e25 = light_area(l_9);
     const float _e26 = light_strategy_pdf(sel, (_e20 * _e23), d2_12, _e25, cos_y_1);
     return _e26;
 }
 
-float light_pdf(uint li_5, float3 x_17, float3 n_18, float3 r_9, float4 lobe_6, float4 rl_9, float3 y_3, uint nee_1, bool in_range_2)
+float light_pdf(uint li_5, float3 x_18, float3 n_19, float3 r_9, float4 lobe_6, float4 rl_9, float3 y_3, uint nee_1, bool in_range_2)
 {
-    const float _e9 = select_pdf(li_5, x_17, n_18, r_9, lobe_6, rl_9, nee_1, in_range_2);
-    const float _e10 = light_pdf_selected(li_5, x_17, r_9, rl_9, y_3, _e9);
+    const float _e9 = select_pdf(li_5, x_18, n_19, r_9, lobe_6, rl_9, nee_1, in_range_2);
+    const float _e10 = light_pdf_selected(li_5, x_18, r_9, rl_9, y_3, _e9);
     return _e10;
 }
 
-float3 shade_pick(uint li_6, float3 x_18, float3 n_19, float3 ng_3, GpuMaterial m, float3 wo_1, float3 r_10, float4 lobe_7, float4 rl_10, float w_6, uint nee_2, float u1_4, float u2_4)
+float3 shade_pick(uint li_6, float3 x_19, float3 n_20, float3 ng_4, GpuMaterial m, float3 wo_1, float3 r_10, float4 lobe_7, float4 rl_10, float w_6, uint nee_2, float u1_5, float u2_5)
 {
     float mis = 1.0;
 
-    const float _e13 = light_range_scale(li_6, x_18, r_10, rl_10);
+    const float _e13 = light_range_scale(li_6, x_19, r_10, rl_10);
     float _e16 = params.eps;
-    const Connection _e17 = connect(li_6, x_18, n_19, ng_3, _e13, w_6, u1_4, u2_4, _e16);
+    const Connection _e17 = connect(li_6, x_19, n_20, ng_4, _e13, w_6, u1_5, u2_5, _e16);
     if ((_e17.cos_x <= 0.0)) {
         return (0.0).xxx;
     }
-    float3 l_10 = normalize((_e17.y - x_18));
+    float3 l_10 = normalize((_e17.y - x_19));
     GpuLight _e30 = ConstructGpuLight(asfloat(lights.Load3(li_6*64+0)), asuint(lights.Load(li_6*64+12)), asfloat(lights.Load3(li_6*64+16)), asfloat(lights.Load(li_6*64+28)), asfloat(lights.Load3(li_6*64+32)), asfloat(lights.Load(li_6*64+44)), asfloat(lights.Load3(li_6*64+48)), asuint(lights.Load(li_6*64+60)));
     const float _e31 = light_area(_e30);
     if ((_e31 > 0.0)) {
-        const float _e36 = light_pdf(li_6, x_18, n_19, r_10, lobe_7, rl_10, _e17.y, nee_2, true);
+        const float _e36 = light_pdf(li_6, x_19, n_20, r_10, lobe_7, rl_10, _e17.y, nee_2, true);
         const float _e38 = specular_probability(lobe_7);
-        const float _e39 = bsdf_pdf(n_19, wo_1, l_10, m.alpha, _e38);
+        const float _e39 = bsdf_pdf(n_20, wo_1, l_10, m.alpha, _e38);
         const float _e40 = mis_weight(_e36, _e39);
         mis = _e40;
     }
-    const float3 _e46 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_19, wo_1, l_10);
+    const float3 _e46 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_20, wo_1, l_10);
     float _e49 = mis;
     return ((_e46 * _e17.e) * _e49);
 }
@@ -1621,20 +1629,20 @@ void main(uint3 gid : SV_DispatchThreadID)
         candidates.Store(i_5*4, asuint(0u));
         return;
     }
-    float3 x_19 = vtx.position;
-    float3 n_22 = vtx.normal;
-    float3 ng_4 = vtx.gnormal;
+    float3 x_20 = vtx.position;
+    float3 n_23 = vtx.normal;
+    float3 ng_5 = vtx.gnormal;
     GpuMaterial m_2 = ConstructGpuMaterial(asfloat(materials.Load3(vtx.material*48+0)), asfloat(materials.Load(vtx.material*48+12)), asfloat(materials.Load3(vtx.material*48+16)), asfloat(materials.Load(vtx.material*48+28)), asfloat(materials.Load3(vtx.material*48+32)), asfloat(materials.Load(vtx.material*48+44)));
     float3 wo_2 = vtx.wo;
-    const float3 _e23 = mirror_dir(n_22, wo_2);
-    const float4 _e30 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, dot(n_22, wo_2));
+    const float3 _e23 = mirror_dir(n_23, wo_2);
+    const float4 _e30 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, dot(n_23, wo_2));
     const float4 _e31 = range_lobe(_e30);
     uint _e34 = params.seed;
     uint _e37 = params.frame;
     const uint _e38 = point_stream(_e34, i_5, _e37);
     const uint _e39 = pick_stream(_e38);
     h = _e39;
-    const Picks _e44 = bsh_collect(x_19, _e23, _e31, _e38);
+    const Picks _e44 = bsh_collect(x_20, _e23, _e31, _e38);
     candidates.Store(i_5*4, asuint(_e44.n));
     const float _e50 = reservoir_weight(_e44.n, K);
     uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
@@ -1665,7 +1673,7 @@ void main(uint3 gid : SV_DispatchThreadID)
             uint _e66 = s;
             uint _e69 = h;
             const float _e70 = xi_from_bits(_e69);
-            const float3 _e71 = shade_pick(_e44.light[min(uint(_e66), 15u)], x_19, n_22, ng_4, m_2, wo_2, _e23, _e30, _e31, _e50, _e44.n, _e61, _e70);
+            const float3 _e71 = shade_pick(_e44.light[min(uint(_e66), 15u)], x_20, n_23, ng_5, m_2, wo_2, _e23, _e30, _e31, _e50, _e44.n, _e61, _e70);
             sum = (_e64 + _e71);
         }
     }

@@ -113,6 +113,7 @@ static const uint MAP_ORTHOGRAPHIC = 2u;
 static const float XI_STEP = 5.9604645e-8;
 static const uint PICK_STREAM = 2654435769u;
 static const float TWO_PI = 6.2831855;
+static const float UNRANGED = 1e38;
 static const float CULL_RADIUS_SCALE = 1.000001;
 static const float SPHERE_PAD = 4.7683716e-7;
 static const float SPHERE_HUGE = 3.4028235e38;
@@ -149,8 +150,8 @@ static const uint BVH = 0u;
 ByteAddressBuffer geo_nodes : register(t6);
 ByteAddressBuffer geo_tris : register(t7);
 ByteAddressBuffer lights : register(t2);
-ByteAddressBuffer r2_3 : register(t4);
-ByteAddressBuffer rt2_4 : register(t3);
+ByteAddressBuffer r2_4 : register(t4);
+ByteAddressBuffer rt2_5 : register(t3);
 ByteAddressBuffer light_cones : register(t2, space1);
 ByteAddressBuffer light_bvh : register(t3, space1);
 cbuffer params : register(b0) { ShadeParams params; }
@@ -615,12 +616,12 @@ float4 emitter_cone(float3 center_, float radius, float3 axis, float cos_o, floa
 {
     float3 v_8 = (p - center_);
     float dist2_1 = dot(v_8, v_8);
-    float r2_4 = (radius * radius);
-    float d2_9 = max(max(dist2_1, r2_4), MIN_D2_);
+    float r2_5 = (radius * radius);
+    float d2_9 = max(max(dist2_1, r2_5), MIN_D2_);
     float3 wi_2 = ((dist2_1 > 0.0) ? (v_8 / (sqrt(dist2_1)).xxx) : float3(0.0, 0.0, 0.0));
     float cos_w = dot(axis, wi_2);
     const float _e25 = safe_sqrt((1.0 - (cos_w * cos_w)));
-    const float _e26 = subtended_cos(dist2_1, r2_4);
+    const float _e26 = subtended_cos(dist2_1, r2_5);
     const float _e30 = safe_sqrt((1.0 - (_e26 * _e26)));
     const float _e34 = safe_sqrt((1.0 - (cos_o * cos_o)));
     const float _e35 = cos_sub_clamped(_e25, cos_w, _e34, cos_o);
@@ -815,8 +816,8 @@ float3 triangle_normal(float3 a_4, float3 b_3, float3 c_2)
 {
     bool local_15 = (bool)0;
 
-    float3 n_18 = cross((b_3 - a_4), (c_2 - a_4));
-    float l2_ = dot(n_18, n_18);
+    float3 n_19 = cross((b_3 - a_4), (c_2 - a_4));
+    float l2_ = dot(n_19, n_19);
     if (!(!((l2_ > 0.0)))) {
         local_15 = !((l2_ < 3e38));
     } else {
@@ -826,7 +827,7 @@ float3 triangle_normal(float3 a_4, float3 b_3, float3 c_2)
     if (_e17) {
         return float3(0.0, 0.0, 0.0);
     }
-    return (n_18 / (sqrt(l2_)).xxx);
+    return (n_19 / (sqrt(l2_)).xxx);
 }
 
 float ray_triangle(float3 o_1, float3 d_3, float3 a_5, float3 b_4, float3 c_3, float t_min, float t_max_1)
@@ -966,12 +967,12 @@ GeoHit trace(float3 o_2, float3 d_4, float t_min_1, float t_max_2, bool any_hit)
         if (all(loop_bound == uint2(0u, 0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         uint _e21 = node;
-        GpuGeoNode n_19 = ConstructGpuGeoNode(asfloat(geo_nodes.Load3(_e21*32+0)), asuint(geo_nodes.Load(_e21*32+12)), asfloat(geo_nodes.Load3(_e21*32+16)), asuint(geo_nodes.Load(_e21*32+28)));
+        GpuGeoNode n_20 = ConstructGpuGeoNode(asfloat(geo_nodes.Load3(_e21*32+0)), asuint(geo_nodes.Load(_e21*32+12)), asfloat(geo_nodes.Load3(_e21*32+16)), asuint(geo_nodes.Load(_e21*32+28)));
         float _e27 = hit.t;
-        const float _e28 = ray_aabb(o_2, _e14, n_19.bmin, n_19.bmax, _e27);
+        const float _e28 = ray_aabb(o_2, _e14, n_20.bmin, n_20.bmax, _e27);
         if ((_e28 >= 0.0)) {
-            if ((n_19.count > 0u)) {
-                i = n_19.first;
+            if ((n_20.count > 0u)) {
+                i = n_20.first;
                 uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
                 bool loop_init = true;
                 while(true) {
@@ -983,7 +984,7 @@ GeoHit trace(float3 o_2, float3 d_4, float t_min_1, float t_max_2, bool any_hit)
                     }
                     loop_init = false;
                     uint _e36 = i;
-                    if ((_e36 < (n_19.first + n_19.count))) {
+                    if ((_e36 < (n_20.first + n_20.count))) {
                     } else {
                         break;
                     }
@@ -1008,11 +1009,11 @@ GeoHit trace(float3 o_2, float3 d_4, float t_min_1, float t_max_2, bool any_hit)
                 uint _e60 = sp;
                 if ((_e60 < 64u)) {
                     uint _e63 = sp;
-                    stack[min(uint(_e63), 63u)] = (n_19.first + 1u);
+                    stack[min(uint(_e63), 63u)] = (n_20.first + 1u);
                     uint _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node = n_19.first;
+                node = n_20.first;
                 continue;
             }
         }
@@ -1043,6 +1044,50 @@ bool occluded(float3 a_6, float3 b_5)
     return (_e12.tri != NO_LIGHT);
 }
 
+Connection connect_record(GpuLight l_8, float3 x_4, float3 n_12, float3 ng_1, float r2_3, float rt2_4, float w_res, float u1_2, float u2_2, float eps, bool trace_1)
+{
+    Connection c_4 = (Connection)0;
+    bool local_19 = (bool)0;
+    bool local_20 = (bool)0;
+
+    c_4.e = (0.0).xxx;
+    const float3 _e16 = light_point(l_8, u1_2, u2_2);
+    c_4.y = _e16;
+    float3 _e19 = c_4.y;
+    const float _e20 = connection_cosine(x_4, _e19, n_12, ng_1, r2_3);
+    c_4.cos_x = _e20;
+    float _e22 = c_4.cos_x;
+    if (!((_e22 <= 0.0))) {
+        if (trace_1) {
+            float3 _e33 = c_4.y;
+            const bool _e34 = occluded((x_4 + (ng_1 * eps)), _e33);
+            local_20 = _e34;
+        } else {
+            local_20 = false;
+        }
+        bool _e36 = local_20;
+        local_19 = _e36;
+    } else {
+        local_19 = true;
+    }
+    bool _e38 = local_19;
+    if (_e38) {
+        Connection _e39 = c_4;
+        const Connection connection = _e39;
+        return connection;
+    }
+    float3 _e41 = c_4.y;
+    float3 v_12 = (x_4 - _e41);
+    float d2_10 = dot(v_12, v_12);
+    const float3 _e48 = light_intensity(l_8, (v_12 / (sqrt(d2_10)).xxx));
+    float _e50 = c_4.cos_x;
+    const float _e51 = connection_factor(_e50, d2_10, rt2_4, w_res);
+    c_4.e = (_e48 * _e51);
+    Connection _e53 = c_4;
+    const Connection connection_1 = _e53;
+    return connection_1;
+}
+
 GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, float3 arg4, float arg5, float3 arg6, uint arg7) {
     GpuLight ret = (GpuLight)0;
     ret.p0_ = arg0;
@@ -1056,58 +1101,21 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
     return ret;
 }
 
-Connection connect_traced(uint li, float3 x_4, float3 n_12, float3 ng_1, float s, float w_res, float u1_2, float u2_2, float eps, bool trace_1)
+Connection connect_traced(uint li, float3 x_5, float3 n_13, float3 ng_2, float s, float w_res_1, float u1_3, float u2_3, float eps_1, bool trace_2)
 {
-    Connection c_4 = (Connection)0;
-    bool local_19 = (bool)0;
-    bool local_20 = (bool)0;
-
-    c_4.e = (0.0).xxx;
-    GpuLight l_8 = ConstructGpuLight(asfloat(lights.Load3(li*64+0)), asuint(lights.Load(li*64+12)), asfloat(lights.Load3(li*64+16)), asfloat(lights.Load(li*64+28)), asfloat(lights.Load3(li*64+32)), asfloat(lights.Load(li*64+44)), asfloat(lights.Load3(li*64+48)), asuint(lights.Load(li*64+60)));
-    const float3 _e18 = light_point(l_8, u1_2, u2_2);
-    c_4.y = _e18;
-    float3 _e21 = c_4.y;
-    float _e24 = asfloat(r2_3.Load(li*4));
-    const float _e26 = connection_cosine(x_4, _e21, n_12, ng_1, (s * _e24));
-    c_4.cos_x = _e26;
-    float _e28 = c_4.cos_x;
-    if (!((_e28 <= 0.0))) {
-        if (trace_1) {
-            float3 _e39 = c_4.y;
-            const bool _e40 = occluded((x_4 + (ng_1 * eps)), _e39);
-            local_20 = _e40;
-        } else {
-            local_20 = false;
-        }
-        bool _e42 = local_20;
-        local_19 = _e42;
-    } else {
-        local_19 = true;
-    }
-    bool _e44 = local_19;
-    if (_e44) {
-        Connection _e45 = c_4;
-        const Connection connection = _e45;
-        return connection;
-    }
-    float3 _e47 = c_4.y;
-    float3 v_12 = (x_4 - _e47);
-    float d2_10 = dot(v_12, v_12);
-    const float3 _e54 = light_intensity(l_8, (v_12 / (sqrt(d2_10)).xxx));
-    float _e56 = c_4.cos_x;
-    float _e59 = asfloat(rt2_4.Load(li*4));
-    const float _e61 = connection_factor(_e56, d2_10, (s * _e59), w_res);
-    c_4.e = (_e54 * _e61);
-    Connection _e63 = c_4;
-    const Connection connection_1 = _e63;
-    return connection_1;
+    GpuLight _e12 = ConstructGpuLight(asfloat(lights.Load3(li*64+0)), asuint(lights.Load(li*64+12)), asfloat(lights.Load3(li*64+16)), asfloat(lights.Load(li*64+28)), asfloat(lights.Load3(li*64+32)), asfloat(lights.Load(li*64+44)), asfloat(lights.Load3(li*64+48)), asuint(lights.Load(li*64+60)));
+    float _e15 = asfloat(r2_4.Load(li*4));
+    float _e19 = asfloat(rt2_5.Load(li*4));
+    const Connection _e21 = connect_record(_e12, x_5, n_13, ng_2, (s * _e15), (s * _e19), w_res_1, u1_3, u2_3, eps_1, trace_2);
+    const Connection connection_2 = _e21;
+    return connection_2;
 }
 
-Connection connect(uint li_1, float3 x_5, float3 n_13, float3 ng_2, float s_1, float w_res_1, float u1_3, float u2_3, float eps_1)
+Connection connect(uint li_1, float3 x_6, float3 n_14, float3 ng_3, float s_1, float w_res_2, float u1_4, float u2_4, float eps_2)
 {
-    const Connection _e10 = connect_traced(li_1, x_5, n_13, ng_2, s_1, w_res_1, u1_3, u2_3, eps_1, true);
-    const Connection connection_2 = _e10;
-    return connection_2;
+    const Connection _e10 = connect_traced(li_1, x_6, n_14, ng_3, s_1, w_res_2, u1_4, u2_4, eps_2, true);
+    const Connection connection_3 = _e10;
+    return connection_3;
 }
 
 float mis_weight(float pdf_a_1, float pdf_b_1)
@@ -1129,10 +1137,10 @@ GpuLightCone ConstructGpuLightCone(float3 arg0, float arg1, float3 arg2, float a
     return ret;
 }
 
-float light_range_scale(uint li_2, float3 x_6, float3 r_3, float4 rl_2)
+float light_range_scale(uint li_2, float3 x_7, float3 r_3, float4 rl_2)
 {
     GpuLightCone c_9 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_2*48+0)), asfloat(light_cones.Load(li_2*48+12)), asfloat(light_cones.Load3(li_2*48+16)), asfloat(light_cones.Load(li_2*48+28)), asfloat(light_cones.Load(li_2*48+32)), asfloat(light_cones.Load(li_2*48+36)), asuint(light_cones.Load(li_2*48+40)), asuint(light_cones.Load(li_2*48+44)));
-    const float _e9 = range_scale_toward(rl_2, c_9.center_, c_9.radius, x_6, r_3);
+    const float _e9 = range_scale_toward(rl_2, c_9.center_, c_9.radius, x_7, r_3);
     return _e9;
 }
 
@@ -1161,14 +1169,14 @@ uint light_bvh_count(uint nodes_1)
     return ((NagaBufferLength(light_bvh) - 0) / 48);
 }
 
-float bvh_importance(uint nodes_2, uint i_2, float3 x_7, float3 n_14, float3 r_4, float4 lobe_7)
+float bvh_importance(uint nodes_2, uint i_2, float3 x_8, float3 n_15, float3 r_4, float4 lobe_7)
 {
     const GpuLightBvhNode _e6 = light_bvh_node(nodes_2, i_2);
-    const float _e13 = receiver_importance(_e6.center_, _e6.radius, _e6.phi, _e6.axis, _e6.cos_o, _e6.cos_e, x_7, n_14, r_4, lobe_7);
+    const float _e13 = receiver_importance(_e6.center_, _e6.radius, _e6.phi, _e6.axis, _e6.cos_o, _e6.cos_e, x_8, n_15, r_4, lobe_7);
     return _e13;
 }
 
-float bvh_first(uint nodes_3, uint i_3, float3 x_8, float3 n_15, float3 r_5, float4 lobe_8)
+float bvh_first(uint nodes_3, uint i_3, float3 x_9, float3 n_16, float3 r_5, float4 lobe_8)
 {
     bool local_21 = (bool)0;
 
@@ -1184,8 +1192,8 @@ float bvh_first(uint nodes_3, uint i_3, float3 x_8, float3 n_15, float3 r_5, flo
     if (_e17) {
         return -1.0;
     }
-    const float _e21 = bvh_importance(nodes_3, (i_3 + 1u), x_8, n_15, r_5, lobe_8);
-    const float _e22 = bvh_importance(nodes_3, j, x_8, n_15, r_5, lobe_8);
+    const float _e21 = bvh_importance(nodes_3, (i_3 + 1u), x_9, n_16, r_5, lobe_8);
+    const float _e22 = bvh_importance(nodes_3, j, x_9, n_16, r_5, lobe_8);
     const float _e23 = bvh_first_prob(_e21, _e22);
     return _e23;
 }
@@ -1203,7 +1211,7 @@ BvhPick bvh_pick_none()
     return bvhpick;
 }
 
-BvhPick light_bvh_sample(uint nodes_4, float3 x_9, float3 n_16, float3 r_6, float4 lobe_9, float u_in)
+BvhPick light_bvh_sample(uint nodes_4, float3 x_10, float3 n_17, float3 r_6, float4 lobe_9, float u_in)
 {
     BvhPick pick = (BvhPick)0;
     float u_2 = (float)0;
@@ -1230,7 +1238,7 @@ BvhPick light_bvh_sample(uint nodes_4, float3 x_9, float3 n_16, float3 r_6, floa
             if ((_e17.second == LIGHT_BVH_LEAF)) {
                 uint _e21 = i_4;
                 if (!((_e21 > 0u))) {
-                    const float _e28 = bvh_importance(nodes_4, 0u, x_9, n_16, r_6, lobe_9);
+                    const float _e28 = bvh_importance(nodes_4, 0u, x_10, n_17, r_6, lobe_9);
                     local_22 = (_e28 > 0.0);
                 } else {
                     local_22 = true;
@@ -1246,7 +1254,7 @@ BvhPick light_bvh_sample(uint nodes_4, float3 x_9, float3 n_16, float3 r_6, floa
                 return bvhpick_1;
             }
             uint _e38 = i_4;
-            const float _e39 = bvh_first(nodes_4, _e38, x_9, n_16, r_6, lobe_9);
+            const float _e39 = bvh_first(nodes_4, _e38, x_10, n_17, r_6, lobe_9);
             if ((_e39 < 0.0)) {
                 BvhPick _e42 = pick;
                 const BvhPick bvhpick_2 = _e42;
@@ -1268,41 +1276,41 @@ BvhPick light_bvh_sample(uint nodes_4, float3 x_9, float3 n_16, float3 r_6, floa
     return bvhpick_3;
 }
 
-float light_pdf_selected(uint li_3, float3 x_10, float3 r_7, float4 rl_3, float3 y_1, float sel)
+float light_pdf_selected(uint li_3, float3 x_11, float3 r_7, float4 rl_3, float3 y_1, float sel)
 {
     GpuLight l_9 = ConstructGpuLight(asfloat(lights.Load3(li_3*64+0)), asuint(lights.Load(li_3*64+12)), asfloat(lights.Load3(li_3*64+16)), asfloat(lights.Load(li_3*64+28)), asfloat(lights.Load3(li_3*64+32)), asfloat(lights.Load(li_3*64+44)), asfloat(lights.Load3(li_3*64+48)), asuint(lights.Load(li_3*64+60)));
-    float3 v_13 = (x_10 - y_1);
+    float3 v_13 = (x_11 - y_1);
     float d2_11 = dot(v_13, v_13);
     const float3 _e11 = light_normal(l_9);
     float cos_y_1 = ((d2_11 > 0.0) ? dot(_e11, (v_13 / (sqrt(d2_11)).xxx)) : 0.0);
-    const float _e20 = light_range_scale(li_3, x_10, r_7, rl_3);
-    float _e23 = asfloat(rt2_4.Load(li_3*4));
+    const float _e20 = light_range_scale(li_3, x_11, r_7, rl_3);
+    float _e23 = asfloat(rt2_5.Load(li_3*4));
     const float _e25 = light_area(l_9);
     const float _e26 = light_strategy_pdf(sel, (_e20 * _e23), d2_11, _e25, cos_y_1);
     return _e26;
 }
 
-float3 shade_pick(uint li_4, float3 x_11, float3 n_17, float3 ng_3, GpuMaterial m, float3 wo_1, float3 r_8, float4 lobe_10, float4 rl_4, float w_4, uint nee, float u1_4, float u2_4)
+float3 shade_pick(uint li_4, float3 x_12, float3 n_18, float3 ng_4, GpuMaterial m, float3 wo_1, float3 r_8, float4 lobe_10, float4 rl_4, float w_4, uint nee, float u1_5, float u2_5)
 {
     float mis = 1.0;
 
-    const float _e13 = light_range_scale(li_4, x_11, r_8, rl_4);
+    const float _e13 = light_range_scale(li_4, x_12, r_8, rl_4);
     float _e16 = params.eps;
-    const Connection _e17 = connect(li_4, x_11, n_17, ng_3, _e13, w_4, u1_4, u2_4, _e16);
+    const Connection _e17 = connect(li_4, x_12, n_18, ng_4, _e13, w_4, u1_5, u2_5, _e16);
     if ((_e17.cos_x <= 0.0)) {
         return (0.0).xxx;
     }
-    float3 l_10 = normalize((_e17.y - x_11));
+    float3 l_10 = normalize((_e17.y - x_12));
     GpuLight _e30 = ConstructGpuLight(asfloat(lights.Load3(li_4*64+0)), asuint(lights.Load(li_4*64+12)), asfloat(lights.Load3(li_4*64+16)), asfloat(lights.Load(li_4*64+28)), asfloat(lights.Load3(li_4*64+32)), asfloat(lights.Load(li_4*64+44)), asfloat(lights.Load3(li_4*64+48)), asuint(lights.Load(li_4*64+60)));
     const float _e31 = light_area(_e30);
     if ((_e31 > 0.0)) {
-        const float _e37 = light_pdf_selected(li_4, x_11, r_8, rl_4, _e17.y, (1.0 / w_4));
+        const float _e37 = light_pdf_selected(li_4, x_12, r_8, rl_4, _e17.y, (1.0 / w_4));
         const float _e39 = specular_probability(lobe_10);
-        const float _e40 = bsdf_pdf(n_17, wo_1, l_10, m.alpha, _e39);
+        const float _e40 = bsdf_pdf(n_18, wo_1, l_10, m.alpha, _e39);
         const float _e41 = mis_weight(_e37, _e40);
         mis = _e41;
     }
-    const float3 _e47 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_17, wo_1, l_10);
+    const float3 _e47 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_18, wo_1, l_10);
     float _e50 = mis;
     return ((_e47 * _e17.e) * _e50);
 }
@@ -1349,13 +1357,13 @@ void main(uint3 gid : SV_DispatchThreadID)
         candidates.Store(i_5*4, asuint(0u));
         return;
     }
-    float3 x_12 = vtx.position;
-    float3 n_20 = vtx.normal;
-    float3 ng_4 = vtx.gnormal;
+    float3 x_13 = vtx.position;
+    float3 n_21 = vtx.normal;
+    float3 ng_5 = vtx.gnormal;
     GpuMaterial m_2 = ConstructGpuMaterial(asfloat(materials.Load3(vtx.material*48+0)), asfloat(materials.Load(vtx.material*48+12)), asfloat(materials.Load3(vtx.material*48+16)), asfloat(materials.Load(vtx.material*48+28)), asfloat(materials.Load3(vtx.material*48+32)), asfloat(materials.Load(vtx.material*48+44)));
     float3 wo_2 = vtx.wo;
-    const float3 _e23 = mirror_dir(n_20, wo_2);
-    const float4 _e30 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, dot(n_20, wo_2));
+    const float3 _e23 = mirror_dir(n_21, wo_2);
+    const float4 _e30 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, dot(n_21, wo_2));
     const float4 _e31 = range_lobe(_e30);
     uint _e34 = params.seed;
     uint _e37 = params.frame;
@@ -1368,7 +1376,7 @@ void main(uint3 gid : SV_DispatchThreadID)
     h = _e48;
     uint _e49 = h;
     const float _e50 = xi_from_bits(_e49);
-    const BvhPick _e52 = light_bvh_sample(BVH, x_12, n_20, _e23, _e30, _e50);
+    const BvhPick _e52 = light_bvh_sample(BVH, x_13, n_21, _e23, _e30, _e50);
     uint li_5 = _e52.light;
     float pmf_1 = _e52.pmf;
     uint _e55 = h;
@@ -1382,7 +1390,7 @@ void main(uint3 gid : SV_DispatchThreadID)
     uint _e61 = h;
     const float _e62 = xi_from_bits(_e61);
     if ((pmf_1 > 0.0)) {
-        const float3 _e68 = shade_pick(li_5, x_12, n_20, ng_4, m_2, wo_2, _e23, _e30, _e31, (1.0 / pmf_1), 0u, _e58, _e62);
+        const float3 _e68 = shade_pick(li_5, x_13, n_21, ng_5, m_2, wo_2, _e23, _e30, _e31, (1.0 / pmf_1), 0u, _e58, _e62);
         sum = _e68;
     }
     float3 _e70 = sum;

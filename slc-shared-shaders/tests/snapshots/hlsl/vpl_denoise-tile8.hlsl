@@ -64,6 +64,7 @@ static const uint MAP_ORTHOGRAPHIC = 2u;
 static const float XI_STEP = 5.9604645e-8;
 static const uint PICK_STREAM = 2654435769u;
 static const float TWO_PI = 6.2831855;
+static const float UNRANGED = 1e38;
 static const float CULL_RADIUS_SCALE = 1.000001;
 static const float SPHERE_PAD = 4.7683716e-7;
 static const float SPHERE_HUGE = 3.4028235e38;

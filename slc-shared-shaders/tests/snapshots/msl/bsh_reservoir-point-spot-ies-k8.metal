@@ -102,6 +102,7 @@ constant uint MAP_ORTHOGRAPHIC = 2u;
 constant float XI_STEP = 0.000000059604645;
 constant uint PICK_STREAM = 2654435769u;
 constant float TWO_PI = 6.2831855;
+constant float UNRANGED = 100000000000000000000000000000000000000.0;
 constant float CULL_RADIUS_SCALE = 1.000001;
 constant float SPHERE_PAD = 0.00000047683716;
 constant float SPHERE_HUGE = 340282350000000000000000000000000000000.0;
@@ -839,12 +840,12 @@ GeoHit trace(
         if (metal::all(loop_bound_1 == uint2(0u))) { break; }
         loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
         uint _e21 = node_2;
-        GpuGeoNode n_8 = geo_nodes[_e21];
+        GpuGeoNode n_9 = geo_nodes[_e21];
         float _e27 = hit.t;
-        float _e28 = ray_aabb(o_2, _e14, n_8.bmin, n_8.bmax, _e27);
+        float _e28 = ray_aabb(o_2, _e14, n_9.bmin, n_9.bmax, _e27);
         if (_e28 >= 0.0) {
-            if (n_8.count > 0u) {
-                i_1 = n_8.first;
+            if (n_9.count > 0u) {
+                i_1 = n_9.first;
                 uint2 loop_bound_2 = uint2(4294967295u);
                 bool loop_init = true;
                 while(true) {
@@ -856,7 +857,7 @@ GeoHit trace(
                     }
                     loop_init = false;
                     uint _e36 = i_1;
-                    if (_e36 < (n_8.first + n_8.count)) {
+                    if (_e36 < (n_9.first + n_9.count)) {
                     } else {
                         break;
                     }
@@ -880,11 +881,11 @@ GeoHit trace(
                 uint _e60 = sp;
                 if (_e60 < 64u) {
                     uint _e63 = sp;
-                    stack.inner[_e63] = n_8.first + 1u;
+                    stack.inner[_e63] = n_9.first + 1u;
                     uint _e68 = sp;
                     sp = _e68 + 1u;
                 }
-                node_2 = n_8.first;
+                node_2 = n_9.first;
                 continue;
             }
         }
@@ -1107,12 +1108,13 @@ Picks bsh_collect(
     return _e49;
 }
 
-Connection connect_traced(
-    uint li,
+Connection connect_record(
+    GpuLight l_2,
     metal::float3 x_12,
     metal::float3 n_6,
     metal::float3 ng_1,
-    float s_1,
+    float r2_2,
+    float rt2_2,
     float w_res,
     float u1_1,
     float u2_1,
@@ -1121,72 +1123,92 @@ Connection connect_traced(
     device type_4 const& slc_table,
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
-    device type_11 const& lights,
-    device type_4 const& r2_2,
-    device type_4 const& rt2_2,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Connection c_4 = {};
     bool local_10 = {};
     bool local_11 = {};
     c_4.e = metal::float3(0.0);
-    GpuLight l_2 = lights[li];
-    metal::float3 _e18 = light_point(l_2, u1_1, u2_1);
-    c_4.y = _e18;
-    metal::float3 _e21 = c_4.y;
-    float _e24 = r2_2[li];
-    float _e26 = connection_cosine(x_12, _e21, n_6, ng_1, s_1 * _e24);
-    c_4.cos_x = _e26;
-    float _e28 = c_4.cos_x;
-    if (!((_e28 <= 0.0))) {
+    metal::float3 _e16 = light_point(l_2, u1_1, u2_1);
+    c_4.y = _e16;
+    metal::float3 _e19 = c_4.y;
+    float _e20 = connection_cosine(x_12, _e19, n_6, ng_1, r2_2);
+    c_4.cos_x = _e20;
+    float _e22 = c_4.cos_x;
+    if (!((_e22 <= 0.0))) {
         if (trace_1) {
-            metal::float3 _e39 = c_4.y;
-            bool _e40 = occluded(x_12 + (ng_1 * eps), _e39, geo_nodes, geo_tris, _buffer_sizes);
-            local_11 = _e40;
+            metal::float3 _e33 = c_4.y;
+            bool _e34 = occluded(x_12 + (ng_1 * eps), _e33, geo_nodes, geo_tris, _buffer_sizes);
+            local_11 = _e34;
         } else {
             local_11 = false;
         }
-        bool _e42 = local_11;
-        local_10 = _e42;
+        bool _e36 = local_11;
+        local_10 = _e36;
     } else {
         local_10 = true;
     }
-    bool _e44 = local_10;
-    if (_e44) {
-        Connection _e45 = c_4;
-        return _e45;
+    bool _e38 = local_10;
+    if (_e38) {
+        Connection _e39 = c_4;
+        return _e39;
     }
-    metal::float3 _e47 = c_4.y;
-    metal::float3 v_7 = x_12 - _e47;
+    metal::float3 _e41 = c_4.y;
+    metal::float3 v_7 = x_12 - _e41;
     float d2_8 = metal::dot(v_7, v_7);
-    metal::float3 _e54 = light_intensity(l_2, v_7 / metal::float3(metal::sqrt(d2_8)), slc_table, _buffer_sizes);
-    float _e56 = c_4.cos_x;
-    float _e59 = rt2_2[li];
-    float _e61 = connection_factor(_e56, d2_8, s_1 * _e59, w_res);
-    c_4.e = _e54 * _e61;
-    Connection _e63 = c_4;
-    return _e63;
+    metal::float3 _e48 = light_intensity(l_2, v_7 / metal::float3(metal::sqrt(d2_8)), slc_table, _buffer_sizes);
+    float _e50 = c_4.cos_x;
+    float _e51 = connection_factor(_e50, d2_8, rt2_2, w_res);
+    c_4.e = _e48 * _e51;
+    Connection _e53 = c_4;
+    return _e53;
 }
 
-Connection connect(
-    uint li_1,
+Connection connect_traced(
+    uint li,
     metal::float3 x_13,
     metal::float3 n_7,
     metal::float3 ng_2,
-    float s_2,
+    float s_1,
     float w_res_1,
     float u1_2,
     float u2_2,
     float eps_1,
+    bool trace_2,
     device type_4 const& slc_table,
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
     device type_11 const& lights,
-    device type_4 const& r2_2,
-    device type_4 const& rt2_2,
+    device type_4 const& r2_3,
+    device type_4 const& rt2_3,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Connection _e10 = connect_traced(li_1, x_13, n_7, ng_2, s_2, w_res_1, u1_2, u2_2, eps_1, true, slc_table, geo_nodes, geo_tris, lights, r2_2, rt2_2, _buffer_sizes);
+    GpuLight _e12 = lights[li];
+    float _e15 = r2_3[li];
+    float _e19 = rt2_3[li];
+    Connection _e21 = connect_record(_e12, x_13, n_7, ng_2, s_1 * _e15, s_1 * _e19, w_res_1, u1_2, u2_2, eps_1, trace_2, slc_table, geo_nodes, geo_tris, _buffer_sizes);
+    return _e21;
+}
+
+Connection connect(
+    uint li_1,
+    metal::float3 x_14,
+    metal::float3 n_8,
+    metal::float3 ng_3,
+    float s_2,
+    float w_res_2,
+    float u1_3,
+    float u2_3,
+    float eps_2,
+    device type_4 const& slc_table,
+    device type_6 const& geo_nodes,
+    device type_7 const& geo_tris,
+    device type_11 const& lights,
+    device type_4 const& r2_3,
+    device type_4 const& rt2_3,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Connection _e10 = connect_traced(li_1, x_14, n_8, ng_3, s_2, w_res_2, u1_3, u2_3, eps_2, true, slc_table, geo_nodes, geo_tris, lights, r2_3, rt2_3, _buffer_sizes);
     return _e10;
 }
 
@@ -1199,8 +1221,8 @@ kernel void main_(
 , device type_7 const& geo_tris [[user(fake0)]]
 , device type_10 const& bsh_nodes [[user(fake0)]]
 , device type_11 const& lights [[user(fake0)]]
-, device type_4 const& r2_2 [[user(fake0)]]
-, device type_4 const& rt2_2 [[user(fake0)]]
+, device type_4 const& r2_3 [[user(fake0)]]
+, device type_4 const& rt2_3 [[user(fake0)]]
 , constant ShadeParams& params [[user(fake0)]]
 , device type_12 const& points [[user(fake0)]]
 , device type_12 const& normals [[user(fake0)]]
@@ -1220,13 +1242,13 @@ kernel void main_(
         irradiance[i_5] = metal::float4(0.0);
         return;
     }
-    metal::float3 x_14 = p_3.xyz;
+    metal::float3 x_15 = p_3.xyz;
     metal::float4 _e19 = normals[i_5];
-    metal::float3 n_9 = _e19.xyz;
+    metal::float3 n_10 = _e19.xyz;
     uint _e23 = params.seed;
     uint _e26 = params.frame;
     uint _e27 = point_stream(_e23, i_5, _e26);
-    Picks _e33 = bsh_collect(x_14, x_14, metal::float4(1.0, 0.0, 1.0, 1.0), _e27, bsh_nodes, _buffer_sizes);
+    Picks _e33 = bsh_collect(x_15, x_15, metal::float4(1.0, 0.0, 1.0, 1.0), _e27, bsh_nodes, _buffer_sizes);
     float _e36 = reservoir_weight(_e33.n, K);
     uint _e37 = pick_stream(_e27);
     h = _e37;
@@ -1259,7 +1281,7 @@ kernel void main_(
             uint _e60 = h;
             float _e61 = xi_from_bits(_e60);
             float _e64 = params.eps;
-            Connection _e65 = connect(_e33.light.inner[_e57], x_14, n_9, n_9, 1.0, _e36, _e52, _e61, _e64, slc_table, geo_nodes, geo_tris, lights, r2_2, rt2_2, _buffer_sizes);
+            Connection _e65 = connect(_e33.light.inner[_e57], x_15, n_10, n_10, 1.0, _e36, _e52, _e61, _e64, slc_table, geo_nodes, geo_tris, lights, r2_3, rt2_3, _buffer_sizes);
             e = _e55 + _e65.e;
         }
     }

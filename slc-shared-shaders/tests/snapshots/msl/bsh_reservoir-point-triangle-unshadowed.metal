@@ -75,6 +75,7 @@ constant uint MAP_ORTHOGRAPHIC = 2u;
 constant float XI_STEP = 0.000000059604645;
 constant uint PICK_STREAM = 2654435769u;
 constant float TWO_PI = 6.2831855;
+constant float UNRANGED = 100000000000000000000000000000000000000.0;
 constant float CULL_RADIUS_SCALE = 1.000001;
 constant float SPHERE_PAD = 0.00000047683716;
 constant float SPHERE_HUGE = 340282350000000000000000000000000000000.0;
@@ -419,8 +420,8 @@ metal::float3 triangle_normal(
     metal::float3 c_2
 ) {
     bool local_4 = {};
-    metal::float3 n_8 = metal::cross(b_4 - a_5, c_2 - a_5);
-    float l2_ = metal::dot(n_8, n_8);
+    metal::float3 n_9 = metal::cross(b_4 - a_5, c_2 - a_5);
+    float l2_ = metal::dot(n_9, n_9);
     if (!(!((l2_ > 0.0)))) {
         local_4 = !((l2_ < 300000000000000000000000000000000000000.0));
     } else {
@@ -430,7 +431,7 @@ metal::float3 triangle_normal(
     if (_e17) {
         return metal::float3(0.0, 0.0, 0.0);
     }
-    return n_8 / metal::float3(metal::sqrt(l2_));
+    return n_9 / metal::float3(metal::sqrt(l2_));
 }
 
 metal::float3 light_intensity(
@@ -659,80 +660,97 @@ Picks bsh_collect(
     return _e49;
 }
 
-Connection connect_traced(
-    uint li,
+Connection connect_record(
+    GpuLight l_2,
     metal::float3 x_6,
     metal::float3 n_6,
     metal::float3 ng_1,
-    float s_1,
+    float r2_2,
+    float rt2_2,
     float w_res,
     float u1_2,
     float u2_2,
     float eps,
-    bool trace,
-    device type_8 const& lights,
-    device type_4 const& r2_2,
-    device type_4 const& rt2_2,
-    constant _mslBufferSizes& _buffer_sizes
+    bool trace
 ) {
     Connection c_3 = {};
     bool local_7 = {};
     bool local_8 = {};
     c_3.e = metal::float3(0.0);
-    GpuLight l_2 = lights[li];
-    metal::float3 _e18 = light_point(l_2, u1_2, u2_2);
-    c_3.y = _e18;
-    metal::float3 _e21 = c_3.y;
-    float _e24 = r2_2[li];
-    float _e26 = connection_cosine(x_6, _e21, n_6, ng_1, s_1 * _e24);
-    c_3.cos_x = _e26;
-    float _e28 = c_3.cos_x;
-    if (!((_e28 <= 0.0))) {
+    metal::float3 _e16 = light_point(l_2, u1_2, u2_2);
+    c_3.y = _e16;
+    metal::float3 _e19 = c_3.y;
+    float _e20 = connection_cosine(x_6, _e19, n_6, ng_1, r2_2);
+    c_3.cos_x = _e20;
+    float _e22 = c_3.cos_x;
+    if (!((_e22 <= 0.0))) {
         if (trace) {
-            metal::float3 _e39 = c_3.y;
-            bool _e40 = occluded(x_6 + (ng_1 * eps), _e39);
-            local_8 = _e40;
+            metal::float3 _e33 = c_3.y;
+            bool _e34 = occluded(x_6 + (ng_1 * eps), _e33);
+            local_8 = _e34;
         } else {
             local_8 = false;
         }
-        bool _e42 = local_8;
-        local_7 = _e42;
+        bool _e36 = local_8;
+        local_7 = _e36;
     } else {
         local_7 = true;
     }
-    bool _e44 = local_7;
-    if (_e44) {
-        Connection _e45 = c_3;
-        return _e45;
+    bool _e38 = local_7;
+    if (_e38) {
+        Connection _e39 = c_3;
+        return _e39;
     }
-    metal::float3 _e47 = c_3.y;
-    metal::float3 v_6 = x_6 - _e47;
+    metal::float3 _e41 = c_3.y;
+    metal::float3 v_6 = x_6 - _e41;
     float d2_8 = metal::dot(v_6, v_6);
-    metal::float3 _e54 = light_intensity(l_2, v_6 / metal::float3(metal::sqrt(d2_8)));
-    float _e56 = c_3.cos_x;
-    float _e59 = rt2_2[li];
-    float _e61 = connection_factor(_e56, d2_8, s_1 * _e59, w_res);
-    c_3.e = _e54 * _e61;
-    Connection _e63 = c_3;
-    return _e63;
+    metal::float3 _e48 = light_intensity(l_2, v_6 / metal::float3(metal::sqrt(d2_8)));
+    float _e50 = c_3.cos_x;
+    float _e51 = connection_factor(_e50, d2_8, rt2_2, w_res);
+    c_3.e = _e48 * _e51;
+    Connection _e53 = c_3;
+    return _e53;
 }
 
-Connection connect(
-    uint li_1,
+Connection connect_traced(
+    uint li,
     metal::float3 x_7,
     metal::float3 n_7,
     metal::float3 ng_2,
-    float s_2,
+    float s_1,
     float w_res_1,
     float u1_3,
     float u2_3,
     float eps_1,
+    bool trace_1,
     device type_8 const& lights,
-    device type_4 const& r2_2,
-    device type_4 const& rt2_2,
+    device type_4 const& r2_3,
+    device type_4 const& rt2_3,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Connection _e10 = connect_traced(li_1, x_7, n_7, ng_2, s_2, w_res_1, u1_3, u2_3, eps_1, true, lights, r2_2, rt2_2, _buffer_sizes);
+    GpuLight _e12 = lights[li];
+    float _e15 = r2_3[li];
+    float _e19 = rt2_3[li];
+    Connection _e21 = connect_record(_e12, x_7, n_7, ng_2, s_1 * _e15, s_1 * _e19, w_res_1, u1_3, u2_3, eps_1, trace_1);
+    return _e21;
+}
+
+Connection connect(
+    uint li_1,
+    metal::float3 x_8,
+    metal::float3 n_8,
+    metal::float3 ng_3,
+    float s_2,
+    float w_res_2,
+    float u1_4,
+    float u2_4,
+    float eps_2,
+    device type_8 const& lights,
+    device type_4 const& r2_3,
+    device type_4 const& rt2_3,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Connection _e10 = connect_traced(li_1, x_8, n_8, ng_3, s_2, w_res_2, u1_4, u2_4, eps_2, true, lights, r2_3, rt2_3, _buffer_sizes);
     return _e10;
 }
 
@@ -742,8 +760,8 @@ kernel void main_(
   metal::uint3 gid [[thread_position_in_grid]]
 , device type_7 const& bsh_nodes [[user(fake0)]]
 , device type_8 const& lights [[user(fake0)]]
-, device type_4 const& r2_2 [[user(fake0)]]
-, device type_4 const& rt2_2 [[user(fake0)]]
+, device type_4 const& r2_3 [[user(fake0)]]
+, device type_4 const& rt2_3 [[user(fake0)]]
 , constant ShadeParams& params [[user(fake0)]]
 , device type_9 const& points [[user(fake0)]]
 , device type_9 const& normals [[user(fake0)]]
@@ -763,13 +781,13 @@ kernel void main_(
         irradiance[i_3] = metal::float4(0.0);
         return;
     }
-    metal::float3 x_8 = p_2.xyz;
+    metal::float3 x_9 = p_2.xyz;
     metal::float4 _e19 = normals[i_3];
-    metal::float3 n_9 = _e19.xyz;
+    metal::float3 n_10 = _e19.xyz;
     uint _e23 = params.seed;
     uint _e26 = params.frame;
     uint _e27 = point_stream(_e23, i_3, _e26);
-    Picks _e33 = bsh_collect(x_8, x_8, metal::float4(1.0, 0.0, 1.0, 1.0), _e27, bsh_nodes, _buffer_sizes);
+    Picks _e33 = bsh_collect(x_9, x_9, metal::float4(1.0, 0.0, 1.0, 1.0), _e27, bsh_nodes, _buffer_sizes);
     float _e36 = reservoir_weight(_e33.n, K);
     uint _e37 = pick_stream(_e27);
     h = _e37;
@@ -802,7 +820,7 @@ kernel void main_(
             uint _e60 = h;
             float _e61 = xi_from_bits(_e60);
             float _e64 = params.eps;
-            Connection _e65 = connect(_e33.light.inner[_e57], x_8, n_9, n_9, 1.0, _e36, _e52, _e61, _e64, lights, r2_2, rt2_2, _buffer_sizes);
+            Connection _e65 = connect(_e33.light.inner[_e57], x_9, n_10, n_10, 1.0, _e36, _e52, _e61, _e64, lights, r2_3, rt2_3, _buffer_sizes);
             e = _e55 + _e65.e;
         }
     }

@@ -96,6 +96,7 @@ constant uint MAP_ORTHOGRAPHIC = 2u;
 constant float XI_STEP = 0.000000059604645;
 constant uint PICK_STREAM = 2654435769u;
 constant float TWO_PI = 6.2831855;
+constant float UNRANGED = 100000000000000000000000000000000000000.0;
 constant float CULL_RADIUS_SCALE = 1.000001;
 constant float SPHERE_PAD = 0.00000047683716;
 constant float SPHERE_HUGE = 340282350000000000000000000000000000000.0;
@@ -534,8 +535,8 @@ float ies_candela_dir(
     float gamma_1 = ((_e9) * 57.295779513082322865);
     bool on_axis = (metal::abs(wr) + metal::abs(ws)) <= 0.0;
     float _e16 = atan2_portable(ws, wr);
-    float c_6 = on_axis ? 0.0 : ((_e16) * 57.295779513082322865);
-    float _e20 = ies_candela(tab_3, base_2, gamma_1, c_6, slc_table, _buffer_sizes);
+    float c_7 = on_axis ? 0.0 : ((_e16) * 57.295779513082322865);
+    float _e20 = ies_candela(tab_3, base_2, gamma_1, c_7, slc_table, _buffer_sizes);
     return _e20;
 }
 
@@ -705,8 +706,8 @@ float cone_cos_of(
     if (_e21) {
         return 1.0;
     }
-    metal::float3 c_7 = metal::cross(v, d);
-    return metal::min(((vd * metal::sqrt(h2_)) + (metal::sqrt(metal::dot(c_7, c_7)) * a_5)) / d2_4, 1.0);
+    metal::float3 c_8 = metal::cross(v, d);
+    return metal::min(((vd * metal::sqrt(h2_)) + (metal::sqrt(metal::dot(c_8, c_8)) * a_5)) / d2_4, 1.0);
 }
 
 float cone_cos_toward(
@@ -749,8 +750,8 @@ metal::float3 triangle_normal(
     metal::float3 c_4
 ) {
     bool local_7 = {};
-    metal::float3 n_10 = metal::cross(b_4 - a_6, c_4 - a_6);
-    float l2_ = metal::dot(n_10, n_10);
+    metal::float3 n_12 = metal::cross(b_4 - a_6, c_4 - a_6);
+    float l2_ = metal::dot(n_12, n_12);
     if (!(!((l2_ > 0.0)))) {
         local_7 = !((l2_ < 300000000000000000000000000000000000000.0));
     } else {
@@ -760,7 +761,7 @@ metal::float3 triangle_normal(
     if (_e17) {
         return metal::float3(0.0, 0.0, 0.0);
     }
-    return n_10 / metal::float3(metal::sqrt(l2_));
+    return n_12 / metal::float3(metal::sqrt(l2_));
 }
 
 metal::float3 light_intensity(
@@ -999,63 +1000,82 @@ Picks bsh_collect(
     return _e49;
 }
 
-Connection connect_traced(
-    uint li,
+Connection connect_record(
+    GpuLight l_2,
     metal::float3 x_11,
     metal::float3 n_7,
     metal::float3 ng_1,
-    float s,
+    float r2_2,
+    float rt2_2,
     float w_res,
     float u1_2,
     float u2_2,
     float eps,
     bool trace,
     device type_4 const& slc_table,
-    device type_8 const& lights,
-    device type_4 const& rt2_2,
-    device type_4 const& r2_2,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Connection c_5 = {};
     bool local_10 = {};
     bool local_11 = {};
     c_5.e = metal::float3(0.0);
-    GpuLight l_2 = lights[li];
-    metal::float3 _e18 = light_point(l_2, u1_2, u2_2);
-    c_5.y = _e18;
-    metal::float3 _e21 = c_5.y;
-    float _e24 = r2_2[li];
-    float _e26 = connection_cosine(x_11, _e21, n_7, ng_1, s * _e24);
-    c_5.cos_x = _e26;
-    float _e28 = c_5.cos_x;
-    if (!((_e28 <= 0.0))) {
+    metal::float3 _e16 = light_point(l_2, u1_2, u2_2);
+    c_5.y = _e16;
+    metal::float3 _e19 = c_5.y;
+    float _e20 = connection_cosine(x_11, _e19, n_7, ng_1, r2_2);
+    c_5.cos_x = _e20;
+    float _e22 = c_5.cos_x;
+    if (!((_e22 <= 0.0))) {
         if (trace) {
-            metal::float3 _e39 = c_5.y;
-            bool _e40 = occluded(x_11 + (ng_1 * eps), _e39);
-            local_11 = _e40;
+            metal::float3 _e33 = c_5.y;
+            bool _e34 = occluded(x_11 + (ng_1 * eps), _e33);
+            local_11 = _e34;
         } else {
             local_11 = false;
         }
-        bool _e42 = local_11;
-        local_10 = _e42;
+        bool _e36 = local_11;
+        local_10 = _e36;
     } else {
         local_10 = true;
     }
-    bool _e44 = local_10;
-    if (_e44) {
-        Connection _e45 = c_5;
-        return _e45;
+    bool _e38 = local_10;
+    if (_e38) {
+        Connection _e39 = c_5;
+        return _e39;
     }
-    metal::float3 _e47 = c_5.y;
-    metal::float3 v_6 = x_11 - _e47;
+    metal::float3 _e41 = c_5.y;
+    metal::float3 v_6 = x_11 - _e41;
     float d2_8 = metal::dot(v_6, v_6);
-    metal::float3 _e54 = light_intensity(l_2, v_6 / metal::float3(metal::sqrt(d2_8)), slc_table, _buffer_sizes);
-    float _e56 = c_5.cos_x;
-    float _e59 = rt2_2[li];
-    float _e61 = connection_factor(_e56, d2_8, s * _e59, w_res);
-    c_5.e = _e54 * _e61;
-    Connection _e63 = c_5;
-    return _e63;
+    metal::float3 _e48 = light_intensity(l_2, v_6 / metal::float3(metal::sqrt(d2_8)), slc_table, _buffer_sizes);
+    float _e50 = c_5.cos_x;
+    float _e51 = connection_factor(_e50, d2_8, rt2_2, w_res);
+    c_5.e = _e48 * _e51;
+    Connection _e53 = c_5;
+    return _e53;
+}
+
+Connection connect_traced(
+    uint li,
+    metal::float3 x_12,
+    metal::float3 n_8,
+    metal::float3 ng_2,
+    float s,
+    float w_res_1,
+    float u1_3,
+    float u2_3,
+    float eps_1,
+    bool trace_1,
+    device type_4 const& slc_table,
+    device type_8 const& lights,
+    device type_4 const& rt2_3,
+    device type_4 const& r2_3,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    GpuLight _e12 = lights[li];
+    float _e15 = r2_3[li];
+    float _e19 = rt2_3[li];
+    Connection _e21 = connect_record(_e12, x_12, n_8, ng_2, s * _e15, s * _e19, w_res_1, u1_3, u2_3, eps_1, trace_1, slc_table, _buffer_sizes);
+    return _e21;
 }
 
 metal::float4 surface_at(
@@ -1066,51 +1086,61 @@ metal::float4 surface_at(
     return (p_2.w > 0.0) ? metal::float4(p_2.xyz, 1.0) : metal::float4(0.0);
 }
 
-Shaded shade_pick_traced(
-    uint li_1,
-    metal::float3 x_12,
-    metal::float3 n_8,
-    metal::float3 r_7,
-    metal::float4 rl_6,
-    Material m_1,
-    float w_4,
-    float u1_3,
-    float u2_3,
-    float eps_1,
-    bool trace_1,
-    device type_4 const& slc_table,
-    device type_8 const& lights,
-    device type_4 const& rt2_2,
-    device type_4 const& r2_2,
-    constant _mslBufferSizes& _buffer_sizes
+Shaded shade_connection(
+    Connection c_6,
+    metal::float3 x_13,
+    metal::float3 n_9,
+    Material m_1
 ) {
     Shaded s_1 = {};
-    Connection _e13 = connect_traced(li_1, x_12, n_8, n_8, 1.0, w_4, u1_3, u2_3, eps_1, trace_1, slc_table, lights, rt2_2, r2_2, _buffer_sizes);
-    s_1.e = _e13.e;
+    s_1.e = c_6.e;
     s_1.diffuse = metal::float3(0.0);
     s_1.specular = metal::float3(0.0);
-    Shaded _e22 = s_1;
-    return _e22;
+    Shaded _e13 = s_1;
+    return _e13;
+}
+
+Shaded shade_pick_traced(
+    uint li_1,
+    metal::float3 x_14,
+    metal::float3 n_10,
+    metal::float3 r_7,
+    metal::float4 rl_6,
+    Material m_2,
+    float w_4,
+    float u1_4,
+    float u2_4,
+    float eps_2,
+    bool trace_2,
+    device type_4 const& slc_table,
+    device type_8 const& lights,
+    device type_4 const& rt2_3,
+    device type_4 const& r2_3,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Connection _e12 = connect_traced(li_1, x_14, n_10, n_10, 1.0, w_4, u1_4, u2_4, eps_2, trace_2, slc_table, lights, rt2_3, r2_3, _buffer_sizes);
+    Shaded _e13 = shade_connection(_e12, x_14, n_10, m_2);
+    return _e13;
 }
 
 Shaded shade_pick(
     uint li_2,
-    metal::float3 x_13,
-    metal::float3 n_9,
+    metal::float3 x_15,
+    metal::float3 n_11,
     metal::float3 r_8,
     metal::float4 rl_7,
-    Material m_2,
+    Material m_3,
     float w_5,
-    float u1_4,
-    float u2_4,
-    float eps_2,
+    float u1_5,
+    float u2_5,
+    float eps_3,
     device type_4 const& slc_table,
     device type_8 const& lights,
-    device type_4 const& rt2_2,
-    device type_4 const& r2_2,
+    device type_4 const& rt2_3,
+    device type_4 const& r2_3,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Shaded _e11 = shade_pick_traced(li_2, x_13, n_9, r_8, rl_7, m_2, w_5, u1_4, u2_4, eps_2, true, slc_table, lights, rt2_2, r2_2, _buffer_sizes);
+    Shaded _e11 = shade_pick_traced(li_2, x_15, n_11, r_8, rl_7, m_3, w_5, u1_5, u2_5, eps_3, true, slc_table, lights, rt2_3, r2_3, _buffer_sizes);
     return _e11;
 }
 
@@ -1131,8 +1161,8 @@ kernel void main_(
 , metal::texture2d<float, metal::access::sample> normal_tex [[user(fake0)]]
 , metal::texture2d<float, metal::access::write> out_tex [[user(fake0)]]
 , device type_8 const& lights [[user(fake0)]]
-, device type_4 const& rt2_2 [[user(fake0)]]
-, device type_4 const& r2_2 [[user(fake0)]]
+, device type_4 const& rt2_3 [[user(fake0)]]
+, device type_4 const& r2_3 [[user(fake0)]]
 , device type_9 const& bsh_nodes [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
@@ -1170,14 +1200,14 @@ kernel void main_(
         out_tex.write(metal::float4(0.0), metal::uint2(texel_1));
         return;
     }
-    metal::float3 x_14 = _e21.xyz;
-    metal::float3 n_11 = nn / metal::float3(metal::sqrt(len2_));
-    r = n_11;
+    metal::float3 x_16 = _e21.xyz;
+    metal::float3 n_13 = nn / metal::float3(metal::sqrt(len2_));
+    r = n_13;
     metal::float4 _e53 = lobe;
     metal::float4 _e54 = range_lobe(_e53);
     float _e57 = view.shadow_offset;
     metal::float3 _e60 = view.eye;
-    float eps_3 = _e57 * metal::length(_e60 - x_14);
+    float eps_4 = _e57 * metal::length(_e60 - x_16);
     uint _e66 = view.seed;
     uint _e70 = view.width;
     uint _e76 = view.frame;
@@ -1185,7 +1215,7 @@ kernel void main_(
     uint _e78 = pick_stream(_e77);
     h = _e78;
     metal::float3 _e88 = r;
-    Picks _e89 = bsh_collect(x_14, _e88, _e54, _e77, bsh_nodes, _buffer_sizes);
+    Picks _e89 = bsh_collect(x_16, _e88, _e54, _e77, bsh_nodes, _buffer_sizes);
     float _e92 = reservoir_weight(_e89.n, K);
     uint2 loop_bound_3 = uint2(4294967295u);
     bool loop_init_1 = true;
@@ -1217,7 +1247,7 @@ kernel void main_(
             Material _e111 = m;
             uint _e112 = h;
             float _e113 = xi_from_bits(_e112);
-            Shaded _e114 = shade_pick(_e89.light.inner[_e108], x_14, n_11, _e110, _e54, _e111, _e92, _e103, _e113, eps_3, slc_table, lights, rt2_2, r2_2, _buffer_sizes);
+            Shaded _e114 = shade_pick(_e89.light.inner[_e108], x_16, n_13, _e110, _e54, _e111, _e92, _e103, _e113, eps_4, slc_table, lights, rt2_3, r2_3, _buffer_sizes);
             Shaded _e115 = add(_e106, _e114);
             t = _e115;
         }

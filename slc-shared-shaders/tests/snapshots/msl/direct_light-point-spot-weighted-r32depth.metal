@@ -137,6 +137,7 @@ constant uint MAP_ORTHOGRAPHIC = 2u;
 constant float XI_STEP = 0.000000059604645;
 constant uint PICK_STREAM = 2654435769u;
 constant float TWO_PI = 6.2831855;
+constant float UNRANGED = 100000000000000000000000000000000000000.0;
 constant float CULL_RADIUS_SCALE = 1.000001;
 constant float SPHERE_PAD = 0.00000047683716;
 constant float SPHERE_HUGE = 340282350000000000000000000000000000000.0;
@@ -463,12 +464,12 @@ metal::float4 emitter_cone(
 ) {
     metal::float3 v_5 = p - center;
     float dist2_1 = metal::dot(v_5, v_5);
-    float r2_4 = radius * radius;
-    float d2_8 = metal::max(metal::max(dist2_1, r2_4), MIN_D2_);
+    float r2_5 = radius * radius;
+    float d2_8 = metal::max(metal::max(dist2_1, r2_5), MIN_D2_);
     metal::float3 wi = (dist2_1 > 0.0) ? (v_5 / metal::float3(metal::sqrt(dist2_1))) : metal::float3(0.0, 0.0, 0.0);
     float cos_w = metal::dot(axis, wi);
     float _e25 = safe_sqrt(1.0 - (cos_w * cos_w));
-    float _e26 = subtended_cos(dist2_1, r2_4);
+    float _e26 = subtended_cos(dist2_1, r2_5);
     float _e30 = safe_sqrt(1.0 - (_e26 * _e26));
     float _e34 = safe_sqrt(1.0 - (cos_o * cos_o));
     float _e35 = cos_sub_clamped(_e25, cos_w, _e34, cos_o);
@@ -518,8 +519,8 @@ float cone_cos_of(
     if (_e21) {
         return 1.0;
     }
-    metal::float3 c_3 = metal::cross(v, d);
-    return metal::min(((vd * metal::sqrt(h2_)) + (metal::sqrt(metal::dot(c_3, c_3)) * a_2)) / d2_4, 1.0);
+    metal::float3 c_4 = metal::cross(v, d);
+    return metal::min(((vd * metal::sqrt(h2_)) + (metal::sqrt(metal::dot(c_4, c_4)) * a_2)) / d2_4, 1.0);
 }
 
 float cone_cos_toward(
@@ -818,12 +819,12 @@ GeoHit trace(
         if (metal::all(loop_bound == uint2(0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         uint _e21 = node_2;
-        GpuGeoNode n_9 = geo_nodes[_e21];
+        GpuGeoNode n_11 = geo_nodes[_e21];
         float _e27 = hit.t;
-        float _e28 = ray_aabb(o_2, _e14, n_9.bmin, n_9.bmax, _e27);
+        float _e28 = ray_aabb(o_2, _e14, n_11.bmin, n_11.bmax, _e27);
         if (_e28 >= 0.0) {
-            if (n_9.count > 0u) {
-                i = n_9.first;
+            if (n_11.count > 0u) {
+                i = n_11.first;
                 uint2 loop_bound_1 = uint2(4294967295u);
                 bool loop_init = true;
                 while(true) {
@@ -835,7 +836,7 @@ GeoHit trace(
                     }
                     loop_init = false;
                     uint _e36 = i;
-                    if (_e36 < (n_9.first + n_9.count)) {
+                    if (_e36 < (n_11.first + n_11.count)) {
                     } else {
                         break;
                     }
@@ -859,11 +860,11 @@ GeoHit trace(
                 uint _e60 = sp;
                 if (_e60 < 64u) {
                     uint _e63 = sp;
-                    stack.inner[_e63] = n_9.first + 1u;
+                    stack.inner[_e63] = n_11.first + 1u;
                     uint _e68 = sp;
                     sp = _e68 + 1u;
                 }
-                node_2 = n_9.first;
+                node_2 = n_11.first;
                 continue;
             }
         }
@@ -1025,12 +1026,13 @@ uint bsh_next_leaf_lobe(
     return BSH_NONE;
 }
 
-Connection connect_traced(
-    uint li,
+Connection connect_record(
+    GpuLight l_2,
     metal::float3 x_7,
     metal::float3 n_4,
     metal::float3 ng_1,
-    float s,
+    float r2_3,
+    float rt2_4,
     float w_res,
     float u1_1,
     float u2_1,
@@ -1038,92 +1040,111 @@ Connection connect_traced(
     bool trace_1,
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
-    device type_11 const& lights_1,
-    device type_4 const& rt2_4,
-    device type_4 const& r2_3,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Connection c_2 = {};
     bool local_14 = {};
     bool local_15 = {};
     c_2.e = metal::float3(0.0);
-    GpuLight l_2 = lights_1[li];
-    metal::float3 _e18 = light_point(l_2, u1_1, u2_1);
-    c_2.y = _e18;
-    metal::float3 _e21 = c_2.y;
-    float _e24 = r2_3[li];
-    float _e26 = connection_cosine(x_7, _e21, n_4, ng_1, s * _e24);
-    c_2.cos_x = _e26;
-    float _e28 = c_2.cos_x;
-    if (!((_e28 <= 0.0))) {
+    metal::float3 _e16 = light_point(l_2, u1_1, u2_1);
+    c_2.y = _e16;
+    metal::float3 _e19 = c_2.y;
+    float _e20 = connection_cosine(x_7, _e19, n_4, ng_1, r2_3);
+    c_2.cos_x = _e20;
+    float _e22 = c_2.cos_x;
+    if (!((_e22 <= 0.0))) {
         if (trace_1) {
-            metal::float3 _e39 = c_2.y;
-            bool _e40 = occluded(x_7 + (ng_1 * eps), _e39, geo_nodes, geo_tris, _buffer_sizes);
-            local_15 = _e40;
+            metal::float3 _e33 = c_2.y;
+            bool _e34 = occluded(x_7 + (ng_1 * eps), _e33, geo_nodes, geo_tris, _buffer_sizes);
+            local_15 = _e34;
         } else {
             local_15 = false;
         }
-        bool _e42 = local_15;
-        local_14 = _e42;
+        bool _e36 = local_15;
+        local_14 = _e36;
     } else {
         local_14 = true;
     }
-    bool _e44 = local_14;
-    if (_e44) {
-        Connection _e45 = c_2;
-        return _e45;
+    bool _e38 = local_14;
+    if (_e38) {
+        Connection _e39 = c_2;
+        return _e39;
     }
-    metal::float3 _e47 = c_2.y;
-    metal::float3 v_11 = x_7 - _e47;
+    metal::float3 _e41 = c_2.y;
+    metal::float3 v_11 = x_7 - _e41;
     float d2_10 = metal::dot(v_11, v_11);
-    metal::float3 _e54 = light_intensity(l_2, v_11 / metal::float3(metal::sqrt(d2_10)));
-    float _e56 = c_2.cos_x;
-    float _e59 = rt2_4[li];
-    float _e61 = connection_factor(_e56, d2_10, s * _e59, w_res);
-    c_2.e = _e54 * _e61;
-    Connection _e63 = c_2;
-    return _e63;
+    metal::float3 _e48 = light_intensity(l_2, v_11 / metal::float3(metal::sqrt(d2_10)));
+    float _e50 = c_2.cos_x;
+    float _e51 = connection_factor(_e50, d2_10, rt2_4, w_res);
+    c_2.e = _e48 * _e51;
+    Connection _e53 = c_2;
+    return _e53;
+}
+
+Connection connect_traced(
+    uint li,
+    metal::float3 x_8,
+    metal::float3 n_5,
+    metal::float3 ng_2,
+    float s,
+    float w_res_1,
+    float u1_2,
+    float u2_2,
+    float eps_1,
+    bool trace_2,
+    device type_6 const& geo_nodes,
+    device type_7 const& geo_tris,
+    device type_11 const& lights_1,
+    device type_4 const& rt2_5,
+    device type_4 const& r2_4,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    GpuLight _e12 = lights_1[li];
+    float _e15 = r2_4[li];
+    float _e19 = rt2_5[li];
+    Connection _e21 = connect_record(_e12, x_8, n_5, ng_2, s * _e15, s * _e19, w_res_1, u1_2, u2_2, eps_1, trace_2, geo_nodes, geo_tris, _buffer_sizes);
+    return _e21;
 }
 
 float light_range_scale(
     uint li_1,
-    metal::float3 x_8,
+    metal::float3 x_9,
     metal::float3 r_8,
     metal::float4 rl_5,
     device type_13 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuLightCone c_4 = light_cones[li_1];
-    float _e9 = range_scale_toward(rl_5, c_4.center, c_4.radius, x_8, r_8);
+    GpuLightCone c_5 = light_cones[li_1];
+    float _e9 = range_scale_toward(rl_5, c_5.center, c_5.radius, x_9, r_8);
     return _e9;
 }
 
 float light_weight(
     uint li_2,
-    metal::float3 x_9,
-    metal::float3 n_5,
+    metal::float3 x_10,
+    metal::float3 n_6,
     metal::float3 r_9,
     metal::float4 lobe_7,
     metal::float4 rl_6,
-    device type_4 const& rt2_4,
+    device type_4 const& rt2_5,
     device type_13 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuLightCone c_5 = light_cones[li_2];
-    float _e15 = light_range_scale(li_2, x_9, r_9, rl_6, light_cones, _buffer_sizes);
-    float _e18 = rt2_4[li_2];
-    float _e20 = cone_weight(c_5.center, c_5.radius, c_5.phi, c_5.axis, c_5.cos_o, c_5.cos_e, _e15 * _e18, x_9, n_5, r_9, lobe_7);
+    GpuLightCone c_6 = light_cones[li_2];
+    float _e15 = light_range_scale(li_2, x_10, r_9, rl_6, light_cones, _buffer_sizes);
+    float _e18 = rt2_5[li_2];
+    float _e20 = cone_weight(c_6.center, c_6.radius, c_6.phi, c_6.axis, c_6.cos_o, c_6.cos_e, _e15 * _e18, x_10, n_6, r_9, lobe_7);
     return _e20;
 }
 
 WeightedPicks bsh_weighted_collect(
-    metal::float3 x_10,
-    metal::float3 n_6,
+    metal::float3 x_11,
+    metal::float3 n_7,
     metal::float3 r_10,
     metal::float4 lobe_8,
     metal::float4 rl_7,
     uint h0_,
-    device type_4 const& rt2_4,
+    device type_4 const& rt2_5,
     device type_12 const& bsh_nodes,
     device type_13 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
@@ -1136,7 +1157,7 @@ WeightedPicks bsh_weighted_collect(
     picks.n = 0u;
     h_1 = h0_;
     uint _e14 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
-    uint _e15 = bsh_next_leaf_lobe(BSH, _e14, x_10, r_10, rl_7, bsh_nodes, _buffer_sizes);
+    uint _e15 = bsh_next_leaf_lobe(BSH, _e14, x_11, r_10, rl_7, bsh_nodes, _buffer_sizes);
     b_4 = _e15;
     uint2 loop_bound_3 = uint2(4294967295u);
     bool loop_init_1 = true;
@@ -1146,7 +1167,7 @@ WeightedPicks bsh_weighted_collect(
         if (!loop_init_1) {
             uint _e58 = b_4;
             uint _e61 = bsh_nodes[_e58].next;
-            uint _e62 = bsh_next_leaf_lobe(BSH, _e61, x_10, r_10, rl_7, bsh_nodes, _buffer_sizes);
+            uint _e62 = bsh_next_leaf_lobe(BSH, _e61, x_11, r_10, rl_7, bsh_nodes, _buffer_sizes);
             b_4 = _e62;
         }
         loop_init_1 = false;
@@ -1160,7 +1181,7 @@ WeightedPicks bsh_weighted_collect(
             picks.n = _e21 + 1u;
             uint _e25 = b_4;
             uint li_5 = bsh_nodes[_e25].light;
-            float _e29 = light_weight(li_5, x_10, n_6, r_10, lobe_8, rl_7, rt2_4, light_cones, _buffer_sizes);
+            float _e29 = light_weight(li_5, x_11, n_7, r_10, lobe_8, rl_7, rt2_5, light_cones, _buffer_sizes);
             if (_e29 > 0.0) {
                 float _e33 = picks.w_sum;
                 picks.w_sum = _e33 + _e29;
@@ -1227,9 +1248,9 @@ metal::float4 unproject_pixel(
     if (!(_e16)) {
         return metal::float4(0.0, 0.0, 0.0, 0.0);
     }
-    float x_13 = (((px + 0.5) / width) * 2.0) - 1.0;
+    float x_15 = (((px + 0.5) / width) * 2.0) - 1.0;
     float y_1 = 1.0 - (((py + 0.5) / height) * 2.0);
-    metal::float4 p_8 = (((c0_ * x_13) + (c1_ * y_1)) + (c2_ * depth)) + c3_;
+    metal::float4 p_8 = (((c0_ * x_15) + (c1_ * y_1)) + (c2_ * depth)) + c3_;
     metal::float3 q_1 = metal::float3(p_8.x / p_8.w, p_8.y / p_8.w, p_8.z / p_8.w);
     if (metal::abs(p_8.w) > 0.0) {
         bool _e59 = finite3_(q_1);
@@ -1261,53 +1282,63 @@ metal::float4 surface_at(
     return _e29;
 }
 
+Shaded shade_connection(
+    Connection c_3,
+    metal::float3 x_12,
+    metal::float3 n_8,
+    Material m_1
+) {
+    Shaded s_2 = {};
+    s_2.e = c_3.e;
+    s_2.diffuse = metal::float3(0.0);
+    s_2.specular = metal::float3(0.0);
+    Shaded _e13 = s_2;
+    return _e13;
+}
+
 Shaded shade_pick_traced(
     uint li_3,
-    metal::float3 x_11,
-    metal::float3 n_7,
+    metal::float3 x_13,
+    metal::float3 n_9,
     metal::float3 r_11,
     metal::float4 rl_8,
-    Material m_1,
+    Material m_2,
     float w_4,
-    float u1_2,
-    float u2_2,
-    float eps_1,
-    bool trace_2,
+    float u1_3,
+    float u2_3,
+    float eps_2,
+    bool trace_3,
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
     device type_11 const& lights_1,
-    device type_4 const& rt2_4,
-    device type_4 const& r2_3,
+    device type_4 const& rt2_5,
+    device type_4 const& r2_4,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Shaded s_2 = {};
-    Connection _e13 = connect_traced(li_3, x_11, n_7, n_7, 1.0, w_4, u1_2, u2_2, eps_1, trace_2, geo_nodes, geo_tris, lights_1, rt2_4, r2_3, _buffer_sizes);
-    s_2.e = _e13.e;
-    s_2.diffuse = metal::float3(0.0);
-    s_2.specular = metal::float3(0.0);
-    Shaded _e22 = s_2;
-    return _e22;
+    Connection _e12 = connect_traced(li_3, x_13, n_9, n_9, 1.0, w_4, u1_3, u2_3, eps_2, trace_3, geo_nodes, geo_tris, lights_1, rt2_5, r2_4, _buffer_sizes);
+    Shaded _e13 = shade_connection(_e12, x_13, n_9, m_2);
+    return _e13;
 }
 
 Shaded shade_pick(
     uint li_4,
-    metal::float3 x_12,
-    metal::float3 n_8,
+    metal::float3 x_14,
+    metal::float3 n_10,
     metal::float3 r_12,
     metal::float4 rl_9,
-    Material m_2,
+    Material m_3,
     float w_5,
-    float u1_3,
-    float u2_3,
-    float eps_2,
+    float u1_4,
+    float u2_4,
+    float eps_3,
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
     device type_11 const& lights_1,
-    device type_4 const& rt2_4,
-    device type_4 const& r2_3,
+    device type_4 const& rt2_5,
+    device type_4 const& r2_4,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Shaded _e11 = shade_pick_traced(li_4, x_12, n_8, r_12, rl_9, m_2, w_5, u1_3, u2_3, eps_2, true, geo_nodes, geo_tris, lights_1, rt2_4, r2_3, _buffer_sizes);
+    Shaded _e11 = shade_pick_traced(li_4, x_14, n_10, r_12, rl_9, m_3, w_5, u1_4, u2_4, eps_3, true, geo_nodes, geo_tris, lights_1, rt2_5, r2_4, _buffer_sizes);
     return _e11;
 }
 
@@ -1374,8 +1405,8 @@ kernel void main_(
 , metal::texture2d<float, metal::access::sample> normal_tex [[user(fake0)]]
 , metal::texture2d<float, metal::access::write> out_tex [[user(fake0)]]
 , device type_11 const& lights_1 [[user(fake0)]]
-, device type_4 const& rt2_4 [[user(fake0)]]
-, device type_4 const& r2_3 [[user(fake0)]]
+, device type_4 const& rt2_5 [[user(fake0)]]
+, device type_4 const& r2_4 [[user(fake0)]]
 , device type_12 const& bsh_nodes [[user(fake0)]]
 , device type_13 const& light_cones [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
@@ -1414,14 +1445,14 @@ kernel void main_(
         out_tex.write(metal::float4(0.0), metal::uint2(texel_1));
         return;
     }
-    metal::float3 x_14 = _e21.xyz;
-    metal::float3 n_10 = nn / metal::float3(metal::sqrt(len2_));
-    r = n_10;
+    metal::float3 x_16 = _e21.xyz;
+    metal::float3 n_12 = nn / metal::float3(metal::sqrt(len2_));
+    r = n_12;
     metal::float4 _e53 = lobe;
     metal::float4 _e54 = range_lobe(_e53);
     float _e57 = view.shadow_offset;
     metal::float3 _e60 = view.eye;
-    float eps_3 = _e57 * metal::length(_e60 - x_14);
+    float eps_4 = _e57 * metal::length(_e60 - x_16);
     uint _e66 = view.seed;
     uint _e70 = view.width;
     uint _e76 = view.frame;
@@ -1430,7 +1461,7 @@ kernel void main_(
     h = _e78;
     metal::float3 _e88 = r;
     metal::float4 _e89 = lobe;
-    WeightedPicks _e90 = bsh_weighted_collect(x_14, n_10, _e88, _e89, _e54, _e77, rt2_4, bsh_nodes, light_cones, _buffer_sizes);
+    WeightedPicks _e90 = bsh_weighted_collect(x_16, n_12, _e88, _e89, _e54, _e77, rt2_5, bsh_nodes, light_cones, _buffer_sizes);
     if (_e90.w_sum > 0.0) {
         uint2 loop_bound_6 = uint2(4294967295u);
         bool loop_init_4 = true;
@@ -1470,7 +1501,7 @@ kernel void main_(
                     Material _e125 = m;
                     uint _e128 = k;
                     float _e131 = weighted_pick_weight(_e90.w_sum, _e90.w.inner[_e128], K);
-                    Shaded _e134 = shade_pick(li_6, x_14, n_10, _e124, _e54, _e125, _e131 * static_cast<float>(copies_1), _e102, _e106, eps_3, geo_nodes, geo_tris, lights_1, rt2_4, r2_3, _buffer_sizes);
+                    Shaded _e134 = shade_pick(li_6, x_16, n_12, _e124, _e54, _e125, _e131 * static_cast<float>(copies_1), _e102, _e106, eps_4, geo_nodes, geo_tris, lights_1, rt2_5, r2_4, _buffer_sizes);
                     Shaded _e135 = add(_e123, _e134);
                     t = _e135;
                 }

@@ -75,15 +75,15 @@ struct GeoHit {
     float t;
     uint tri;
 };
-typedef GpuGeoNode type_6[1];
-typedef GpuTriangle type_7[1];
-struct type_8 {
+typedef GpuGeoNode type_7[1];
+typedef GpuTriangle type_8[1];
+struct type_9 {
     uint inner[64];
 };
-typedef GpuLight type_11[1];
-typedef BshNode type_12[1];
-typedef GpuLightCone type_13[1];
-struct type_14 {
+typedef GpuLight type_12[1];
+typedef BshNode type_13[1];
+typedef GpuLightCone type_14[1];
+struct type_15 {
     uint inner[8];
 };
 typedef uint BshNodes;
@@ -133,6 +133,7 @@ constant uint MAP_ORTHOGRAPHIC = 2u;
 constant float XI_STEP = 0.000000059604645;
 constant uint PICK_STREAM = 2654435769u;
 constant float TWO_PI = 6.2831855;
+constant float UNRANGED = 100000000000000000000000000000000000000.0;
 constant float CULL_RADIUS_SCALE = 1.000001;
 constant float SPHERE_PAD = 0.00000047683716;
 constant float SPHERE_HUGE = 340282350000000000000000000000000000000.0;
@@ -247,8 +248,8 @@ bool sphere_contains_point(
     float r_1,
     metal::float3 x_1
 ) {
-    metal::float3 v_4 = x_1 - c;
-    return metal::dot(v_4, v_4) <= (r_1 * r_1);
+    metal::float3 v_5 = x_1 - c;
+    return metal::dot(v_5, v_5) <= (r_1 * r_1);
 }
 
 float inverse_square(
@@ -277,8 +278,8 @@ float connection_cosine(
 ) {
     bool local_2 = {};
     bool local_3 = {};
-    metal::float3 v_5 = x_2 - y;
-    float d2_6 = metal::dot(v_5, v_5);
+    metal::float3 v_6 = x_2 - y;
+    float d2_6 = metal::dot(v_6, v_6);
     bool _e7 = slc_keep(r2_1, d2_6);
     if (!(!(_e7))) {
         local_2 = !((d2_6 > 0.0));
@@ -289,7 +290,7 @@ float connection_cosine(
     if (_e16) {
         return 0.0;
     }
-    metal::float3 w_6 = v_5 / metal::float3(metal::sqrt(d2_6));
+    metal::float3 w_6 = v_6 / metal::float3(metal::sqrt(d2_6));
     float cos_x_1 = -(metal::dot(n, w_6));
     if (!((cos_x_1 <= 0.0))) {
         local_3 = metal::dot(ng, w_6) >= 0.0;
@@ -407,9 +408,9 @@ metal::float3 fresnel_schlick(
     float f90_,
     float v_h
 ) {
-    float c_7 = metal::saturate(1.0 - v_h);
-    float c2_ = c_7 * c_7;
-    return f0_ + ((metal::float3(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_7));
+    float c_8 = metal::saturate(1.0 - v_h);
+    float c2_ = c_8 * c_8;
+    return f0_ + ((metal::float3(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_8));
 }
 
 metal::float3 specular_fresnel(
@@ -539,9 +540,9 @@ float bevy_dfg(
 ) {
     float rx = 1.0 - r_2;
     float a004_ = (metal::min(rx * rx, metal::exp2(-9.28 * n_v_2)) * rx) + (0.0425 - (0.0275 * r_2));
-    float x_10 = metal::max((1.04 - (0.572 * r_2)) - (1.04 * a004_), 0.00005);
+    float x_12 = metal::max((1.04 - (0.572 * r_2)) - (1.04 * a004_), 0.00005);
     float y_1 = metal::max(((0.022 * r_2) - 0.04) + (1.04 * a004_), 0.00005);
-    return x_10 + y_1;
+    return x_12 + y_1;
 }
 
 metal::float3 bevy_brdf(
@@ -603,8 +604,8 @@ float cone_cos_of(
     if (_e21) {
         return 1.0;
     }
-    metal::float3 c_8 = metal::cross(v_2, d);
-    return metal::min(((vd * metal::sqrt(h2_)) + (metal::sqrt(metal::dot(c_8, c_8)) * a_3)) / d2_4, 1.0);
+    metal::float3 c_9 = metal::cross(v_2, d);
+    return metal::min(((vd * metal::sqrt(h2_)) + (metal::sqrt(metal::dot(c_9, c_9)) * a_3)) / d2_4, 1.0);
 }
 
 float cone_cos_toward(
@@ -613,8 +614,8 @@ float cone_cos_toward(
     metal::float3 p,
     metal::float3 d_1
 ) {
-    metal::float3 v_6 = center - p;
-    float _e6 = cone_cos_of(v_6, metal::dot(v_6, v_6), radius, d_1);
+    metal::float3 v_7 = center - p;
+    float _e6 = cone_cos_of(v_7, metal::dot(v_7, v_7), radius, d_1);
     return _e6;
 }
 
@@ -687,8 +688,8 @@ metal::float3 triangle_normal(
     metal::float3 c_4
 ) {
     bool local_10 = {};
-    metal::float3 n_7 = metal::cross(b_4 - a_4, c_4 - a_4);
-    float l2_ = metal::dot(n_7, n_7);
+    metal::float3 n_9 = metal::cross(b_4 - a_4, c_4 - a_4);
+    float l2_ = metal::dot(n_9, n_9);
     if (!(!((l2_ > 0.0)))) {
         local_10 = !((l2_ < 300000000000000000000000000000000000000.0));
     } else {
@@ -698,7 +699,7 @@ metal::float3 triangle_normal(
     if (_e17) {
         return metal::float3(0.0, 0.0, 0.0);
     }
-    return n_7 / metal::float3(metal::sqrt(l2_));
+    return n_9 / metal::float3(metal::sqrt(l2_));
 }
 
 float ray_triangle(
@@ -733,9 +734,9 @@ float ray_triangle(
         return -1.0;
     }
     metal::float3 q_1 = metal::cross(s_3, e1_);
-    float v_7 = metal::dot(d_3, q_1) * inv;
-    if (!((v_7 < 0.0))) {
-        local_12 = (u_3 + v_7) > 1.0;
+    float v_8 = metal::dot(d_3, q_1) * inv;
+    if (!((v_8 < 0.0))) {
+        local_12 = (u_3 + v_8) > 1.0;
     } else {
         local_12 = true;
     }
@@ -793,12 +794,12 @@ GeoHit trace(
     float t_min_1,
     float t_max_2,
     bool any_hit,
-    device type_6 const& geo_nodes,
-    device type_7 const& geo_tris,
+    device type_7 const& geo_nodes,
+    device type_8 const& geo_tris,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GeoHit hit = {};
-    type_8 stack = {};
+    type_9 stack = {};
     uint sp = 0u;
     uint node_2 = 0u;
     uint i = {};
@@ -814,12 +815,12 @@ GeoHit trace(
         if (metal::all(loop_bound == uint2(0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         uint _e21 = node_2;
-        GpuGeoNode n_8 = geo_nodes[_e21];
+        GpuGeoNode n_10 = geo_nodes[_e21];
         float _e27 = hit.t;
-        float _e28 = ray_aabb(o_2, _e14, n_8.bmin, n_8.bmax, _e27);
+        float _e28 = ray_aabb(o_2, _e14, n_10.bmin, n_10.bmax, _e27);
         if (_e28 >= 0.0) {
-            if (n_8.count > 0u) {
-                i = n_8.first;
+            if (n_10.count > 0u) {
+                i = n_10.first;
                 uint2 loop_bound_1 = uint2(4294967295u);
                 bool loop_init = true;
                 while(true) {
@@ -831,7 +832,7 @@ GeoHit trace(
                     }
                     loop_init = false;
                     uint _e36 = i;
-                    if (_e36 < (n_8.first + n_8.count)) {
+                    if (_e36 < (n_10.first + n_10.count)) {
                     } else {
                         break;
                     }
@@ -855,11 +856,11 @@ GeoHit trace(
                 uint _e60 = sp;
                 if (_e60 < 64u) {
                     uint _e63 = sp;
-                    stack.inner[_e63] = n_8.first + 1u;
+                    stack.inner[_e63] = n_10.first + 1u;
                     uint _e68 = sp;
                     sp = _e68 + 1u;
                 }
-                node_2 = n_8.first;
+                node_2 = n_10.first;
                 continue;
             }
         }
@@ -880,8 +881,8 @@ GeoHit trace(
 bool occluded(
     metal::float3 a_6,
     metal::float3 b_6,
-    device type_6 const& geo_nodes,
-    device type_7 const& geo_tris,
+    device type_7 const& geo_nodes,
+    device type_8 const& geo_tris,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 dv = b_6 - a_6;
@@ -897,7 +898,7 @@ bool occluded(
 BshNode bsh_node(
     BshNodes nodes,
     uint i_1,
-    device type_12 const& bsh_nodes,
+    device type_13 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     BshNode _e4 = bsh_nodes[i_1];
@@ -906,7 +907,7 @@ BshNode bsh_node(
 
 uint bsh_count(
     BshNodes nodes_1,
-    device type_12 const& bsh_nodes,
+    device type_13 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     return 1 + (_buffer_sizes.size11 - 0 - 32) / 32;
@@ -914,7 +915,7 @@ uint bsh_count(
 
 uint bsh_first(
     BshNodes nodes_2,
-    device type_12 const& bsh_nodes,
+    device type_13 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e1 = bsh_count(nodes_2, bsh_nodes, _buffer_sizes);
@@ -959,8 +960,8 @@ bool bsh_reaches(
         return false;
     }
     float _e25 = bsh_range_bound(node_3);
-    metal::float3 v_8 = x_4 - node_3.center;
-    float d2_7 = metal::dot(v_8, v_8);
+    metal::float3 v_9 = x_4 - node_3.center;
+    float d2_7 = metal::dot(v_9, v_9);
     float reach_max = node_3.extent + ((rl_3.w * 1.001) * _e25);
     if (d2_7 > (reach_max * reach_max)) {
         return false;
@@ -971,7 +972,7 @@ bool bsh_reaches(
         bool _e47 = sphere_contains_point(node_3.center, _e46, x_4);
         return _e47;
     }
-    float _e50 = bsh_inner_scale(node_3.extent, -(v_8), d2_7, r_6, rl_3);
+    float _e50 = bsh_inner_scale(node_3.extent, -(v_9), d2_7, r_6, rl_3);
     float s_c = _e50 * 1.001;
     float reach = node_3.extent + (metal::sqrt(s_c) * _e25);
     if (d2_7 <= ((node_3.radius * node_3.radius) * s_c)) {
@@ -989,7 +990,7 @@ uint bsh_next_leaf_lobe(
     metal::float3 x_5,
     metal::float3 r_7,
     metal::float4 rl_4,
-    device type_12 const& bsh_nodes,
+    device type_13 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint i_2 = {};
@@ -1021,76 +1022,96 @@ uint bsh_next_leaf_lobe(
     return BSH_NONE;
 }
 
-Connection connect_traced(
-    uint li,
+Connection connect_record(
+    GpuLight l_3,
     metal::float3 x_6,
     metal::float3 n_4,
     metal::float3 ng_1,
-    float s,
+    float r2_2,
+    float rt2_2,
     float w_res,
     float u1_2,
     float u2_2,
     float eps,
     bool trace_1,
-    device type_6 const& geo_nodes,
-    device type_7 const& geo_tris,
-    device type_11 const& lights_1,
-    device type_4 const& rt2_2,
-    device type_4 const& r2_2,
+    device type_7 const& geo_nodes,
+    device type_8 const& geo_tris,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Connection c_6 = {};
     bool local_16 = {};
     bool local_17 = {};
     c_6.e = metal::float3(0.0);
-    GpuLight l_3 = lights_1[li];
-    metal::float3 _e18 = light_point(l_3, u1_2, u2_2);
-    c_6.y = _e18;
-    metal::float3 _e21 = c_6.y;
-    float _e24 = r2_2[li];
-    float _e26 = connection_cosine(x_6, _e21, n_4, ng_1, s * _e24);
-    c_6.cos_x = _e26;
-    float _e28 = c_6.cos_x;
-    if (!((_e28 <= 0.0))) {
+    metal::float3 _e16 = light_point(l_3, u1_2, u2_2);
+    c_6.y = _e16;
+    metal::float3 _e19 = c_6.y;
+    float _e20 = connection_cosine(x_6, _e19, n_4, ng_1, r2_2);
+    c_6.cos_x = _e20;
+    float _e22 = c_6.cos_x;
+    if (!((_e22 <= 0.0))) {
         if (trace_1) {
-            metal::float3 _e39 = c_6.y;
-            bool _e40 = occluded(x_6 + (ng_1 * eps), _e39, geo_nodes, geo_tris, _buffer_sizes);
-            local_17 = _e40;
+            metal::float3 _e33 = c_6.y;
+            bool _e34 = occluded(x_6 + (ng_1 * eps), _e33, geo_nodes, geo_tris, _buffer_sizes);
+            local_17 = _e34;
         } else {
             local_17 = false;
         }
-        bool _e42 = local_17;
-        local_16 = _e42;
+        bool _e36 = local_17;
+        local_16 = _e36;
     } else {
         local_16 = true;
     }
-    bool _e44 = local_16;
-    if (_e44) {
-        Connection _e45 = c_6;
-        return _e45;
+    bool _e38 = local_16;
+    if (_e38) {
+        Connection _e39 = c_6;
+        return _e39;
     }
-    metal::float3 _e47 = c_6.y;
-    metal::float3 v_9 = x_6 - _e47;
-    float d2_8 = metal::dot(v_9, v_9);
-    metal::float3 _e54 = light_intensity(l_3, v_9 / metal::float3(metal::sqrt(d2_8)));
-    float _e56 = c_6.cos_x;
-    float _e59 = rt2_2[li];
-    float _e61 = connection_factor(_e56, d2_8, s * _e59, w_res);
-    c_6.e = _e54 * _e61;
-    Connection _e63 = c_6;
-    return _e63;
+    metal::float3 _e41 = c_6.y;
+    metal::float3 v_10 = x_6 - _e41;
+    float d2_8 = metal::dot(v_10, v_10);
+    metal::float3 _e48 = light_intensity(l_3, v_10 / metal::float3(metal::sqrt(d2_8)));
+    float _e50 = c_6.cos_x;
+    float _e51 = connection_factor(_e50, d2_8, rt2_2, w_res);
+    c_6.e = _e48 * _e51;
+    Connection _e53 = c_6;
+    return _e53;
+}
+
+Connection connect_traced(
+    uint li,
+    metal::float3 x_7,
+    metal::float3 n_5,
+    metal::float3 ng_2,
+    float s,
+    float w_res_1,
+    float u1_3,
+    float u2_3,
+    float eps_1,
+    bool trace_2,
+    device type_7 const& geo_nodes,
+    device type_8 const& geo_tris,
+    device type_12 const& lights_1,
+    device type_4 const& rt2_3,
+    device type_4 const& r2_3,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    GpuLight _e12 = lights_1[li];
+    float _e15 = r2_3[li];
+    float _e19 = rt2_3[li];
+    Connection _e21 = connect_record(_e12, x_7, n_5, ng_2, s * _e15, s * _e19, w_res_1, u1_3, u2_3, eps_1, trace_2, geo_nodes, geo_tris, _buffer_sizes);
+    return _e21;
 }
 
 float light_range_scale(
     uint li_1,
-    metal::float3 x_7,
+    metal::float3 x_8,
     metal::float3 r_8,
     metal::float4 rl_5,
-    device type_13 const& light_cones,
+    device type_14 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuLightCone c_9 = light_cones[li_1];
-    float _e9 = range_scale_toward(rl_5, c_9.center, c_9.radius, x_7, r_8);
+    GpuLightCone c_10 = light_cones[li_1];
+    float _e9 = range_scale_toward(rl_5, c_10.center, c_10.radius, x_8, r_8);
     return _e9;
 }
 
@@ -1102,61 +1123,82 @@ metal::float4 surface_at(
     return (p_3.w > 0.0) ? metal::float4(p_3.xyz, 1.0) : metal::float4(0.0);
 }
 
-Shaded shade_pick_traced(
-    uint li_2,
-    metal::float3 x_8,
-    metal::float3 n_5,
-    metal::float3 r_9,
-    metal::float4 rl_6,
-    Material m_1,
-    float w_4,
-    float u1_3,
-    float u2_3,
-    float eps_1,
-    bool trace_2,
-    device type_6 const& geo_nodes,
-    device type_7 const& geo_tris,
-    device type_11 const& lights_1,
-    device type_4 const& rt2_2,
-    device type_4 const& r2_2,
-    device type_13 const& light_cones,
-    constant _mslBufferSizes& _buffer_sizes
+Shaded shade_connection(
+    Connection c_7,
+    metal::float3 x_9,
+    metal::float3 n_6,
+    Material m_1
 ) {
     Shaded s_1 = {};
-    float _e12 = light_range_scale(li_2, x_8, r_9, rl_6, light_cones, _buffer_sizes);
-    Connection _e13 = connect_traced(li_2, x_8, n_5, n_5, _e12, w_4, u1_3, u2_3, eps_1, trace_2, geo_nodes, geo_tris, lights_1, rt2_2, r2_2, _buffer_sizes);
-    s_1.e = _e13.e;
+    s_1.e = c_7.e;
     s_1.diffuse = metal::float3(0.0);
     s_1.specular = metal::float3(0.0);
-    if (_e13.cos_x > 0.0) {
-        metal::float3 _e34 = bevy_brdf(m_1.base, m_1.metallic, m_1.roughness, m_1.reflectance, n_5, m_1.v, metal::normalize(_e13.y - x_8));
-        s_1.diffuse = _e34 * _e13.e;
+    if (c_7.cos_x > 0.0) {
+        metal::float3 _e25 = bevy_brdf(m_1.base, m_1.metallic, m_1.roughness, m_1.reflectance, n_6, m_1.v, metal::normalize(c_7.y - x_9));
+        s_1.diffuse = _e25 * c_7.e;
     }
-    Shaded _e37 = s_1;
-    return _e37;
+    Shaded _e28 = s_1;
+    return _e28;
+}
+
+Shaded shade_pick_traced(
+    uint li_2,
+    metal::float3 x_10,
+    metal::float3 n_7,
+    metal::float3 r_9,
+    metal::float4 rl_6,
+    Material m_2,
+    float w_4,
+    float u1_4,
+    float u2_4,
+    float eps_2,
+    bool trace_3,
+    device type_7 const& geo_nodes,
+    device type_8 const& geo_tris,
+    device type_12 const& lights_1,
+    device type_4 const& rt2_3,
+    device type_4 const& r2_3,
+    device type_14 const& light_cones,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float _e11 = light_range_scale(li_2, x_10, r_9, rl_6, light_cones, _buffer_sizes);
+    Connection _e12 = connect_traced(li_2, x_10, n_7, n_7, _e11, w_4, u1_4, u2_4, eps_2, trace_3, geo_nodes, geo_tris, lights_1, rt2_3, r2_3, _buffer_sizes);
+    Shaded _e13 = shade_connection(_e12, x_10, n_7, m_2);
+    return _e13;
 }
 
 Shaded shade_pick(
     uint li_3,
-    metal::float3 x_9,
-    metal::float3 n_6,
+    metal::float3 x_11,
+    metal::float3 n_8,
     metal::float3 r_10,
     metal::float4 rl_7,
-    Material m_2,
+    Material m_3,
     float w_5,
-    float u1_4,
-    float u2_4,
-    float eps_2,
-    device type_6 const& geo_nodes,
-    device type_7 const& geo_tris,
-    device type_11 const& lights_1,
-    device type_4 const& rt2_2,
-    device type_4 const& r2_2,
-    device type_13 const& light_cones,
+    float u1_5,
+    float u2_5,
+    float eps_3,
+    device type_7 const& geo_nodes,
+    device type_8 const& geo_tris,
+    device type_12 const& lights_1,
+    device type_4 const& rt2_3,
+    device type_4 const& r2_3,
+    device type_14 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Shaded _e11 = shade_pick_traced(li_3, x_9, n_6, r_10, rl_7, m_2, w_5, u1_4, u2_4, eps_2, true, geo_nodes, geo_tris, lights_1, rt2_2, r2_2, light_cones, _buffer_sizes);
+    Shaded _e11 = shade_pick_traced(li_3, x_11, n_8, r_10, rl_7, m_3, w_5, u1_5, u2_5, eps_3, true, geo_nodes, geo_tris, lights_1, rt2_3, r2_3, light_cones, _buffer_sizes);
     return _e11;
+}
+
+Material material_of(
+    metal::float3 base_3,
+    float metallic_4,
+    float roughness,
+    float reflectance_2,
+    metal::float3 v_4
+) {
+    float _e6 = bevy_alpha(roughness);
+    return Material {base_3, metal::saturate(metallic_4), _e6, {}, v_4, roughness, reflectance_2};
 }
 
 Shaded add(
@@ -1167,7 +1209,7 @@ Shaded add(
 }
 
 uint pick_copies(
-    type_14 lights,
+    type_15 lights,
     uint k_1
 ) {
     uint copies = 1u;
@@ -1221,19 +1263,19 @@ struct main_Input {
 };
 kernel void main_(
   metal::uint3 gid [[thread_position_in_grid]]
-, device type_6 const& geo_nodes [[user(fake0)]]
-, device type_7 const& geo_tris [[user(fake0)]]
+, device type_7 const& geo_nodes [[user(fake0)]]
+, device type_8 const& geo_tris [[user(fake0)]]
 , constant ViewParams& view [[user(fake0)]]
 , metal::texture2d<float, metal::access::sample> position_tex [[user(fake0)]]
 , metal::texture2d<float, metal::access::sample> normal_tex [[user(fake0)]]
 , metal::texture2d<float, metal::access::write> out_tex [[user(fake0)]]
 , metal::texture2d<float, metal::access::sample> base_color_tex [[user(fake0)]]
 , metal::texture2d<float, metal::access::sample> metal_rough_tex [[user(fake0)]]
-, device type_11 const& lights_1 [[user(fake0)]]
-, device type_4 const& rt2_2 [[user(fake0)]]
-, device type_4 const& r2_2 [[user(fake0)]]
-, device type_12 const& bsh_nodes [[user(fake0)]]
-, device type_13 const& light_cones [[user(fake0)]]
+, device type_12 const& lights_1 [[user(fake0)]]
+, device type_4 const& rt2_3 [[user(fake0)]]
+, device type_4 const& r2_3 [[user(fake0)]]
+, device type_13 const& bsh_nodes [[user(fake0)]]
+, device type_14 const& light_cones [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
     bool local = {};
@@ -1243,7 +1285,7 @@ kernel void main_(
     metal::float3 r = {};
     uint h = {};
     Shaded t = Shaded {metal::float3(0.0), metal::float3(0.0), metal::float3(0.0)};
-    type_14 slot_light = {};
+    type_15 slot_light = {};
     type_18 slot_u = {};
     type_19 slot_p = {};
     float total = 0.0;
@@ -1278,82 +1320,82 @@ kernel void main_(
         out_tex.write(metal::float4(0.0), metal::uint2(texel_1));
         return;
     }
-    metal::float3 x_11 = _e21.xyz;
-    metal::float3 n_9 = nn / metal::float3(metal::sqrt(len2_));
-    r = n_9;
+    metal::float3 x_13 = _e21.xyz;
+    metal::float3 n_11 = nn / metal::float3(metal::sqrt(len2_));
+    r = n_11;
     metal::float4 mr = metal_rough_tex.read(metal::uint2(texel_1), 0);
-    float _e57 = bevy_f0_(mr.w);
-    metal::float4 _e60 = base_color_tex.read(metal::uint2(texel_1), 0);
-    float _e65 = bevy_alpha(mr.y);
-    metal::float3 _e68 = view.eye;
-    m = Material {_e60.xyz, metal::saturate(mr.z), _e65, {}, metal::normalize(_e68 - x_11), mr.y, mr.w};
-    metal::float3 _e75 = m.base;
-    float _e77 = m.metallic;
-    float _e81 = m.alpha;
-    metal::float3 _e83 = m.v;
-    metal::float4 _e85 = receiver_lobe(_e75, _e77, metal::float3(_e57), 1.0, _e81, metal::dot(n_9, _e83));
-    lobe = _e85;
-    metal::float3 _e87 = m.v;
-    metal::float3 _e88 = mirror_dir(n_9, _e87);
-    r = _e88;
-    metal::float4 _e89 = lobe;
-    metal::float4 _e90 = range_lobe(_e89);
-    float _e93 = view.shadow_offset;
-    metal::float3 _e96 = view.eye;
-    float eps_3 = _e93 * metal::length(_e96 - x_11);
-    uint _e102 = view.seed;
-    uint _e106 = view.width;
-    uint _e112 = view.frame;
-    uint _e113 = point_stream(_e102, (gid.y * _e106) + gid.x, _e112);
-    uint _e114 = pick_stream(_e113);
-    h = _e114;
-    hc = _e113;
-    uint _e134 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
-    metal::float3 _e135 = r;
-    uint _e136 = bsh_next_leaf_lobe(BSH, _e134, x_11, _e135, _e90, bsh_nodes, _buffer_sizes);
-    b = _e136;
+    metal::float4 _e58 = base_color_tex.read(metal::uint2(texel_1), 0);
+    metal::float3 _e65 = view.eye;
+    Material _e68 = material_of(_e58.xyz, mr.z, mr.y, mr.w, metal::normalize(_e65 - x_13));
+    m = _e68;
+    metal::float3 _e70 = m.base;
+    float _e72 = m.metallic;
+    float _e74 = bevy_f0_(mr.w);
+    float _e78 = m.alpha;
+    metal::float3 _e80 = m.v;
+    metal::float4 _e82 = receiver_lobe(_e70, _e72, metal::float3(_e74), 1.0, _e78, metal::dot(n_11, _e80));
+    lobe = _e82;
+    metal::float3 _e84 = m.v;
+    metal::float3 _e85 = mirror_dir(n_11, _e84);
+    r = _e85;
+    metal::float4 _e86 = lobe;
+    metal::float4 _e87 = range_lobe(_e86);
+    float _e90 = view.shadow_offset;
+    metal::float3 _e93 = view.eye;
+    float eps_4 = _e90 * metal::length(_e93 - x_13);
+    uint _e99 = view.seed;
+    uint _e103 = view.width;
+    uint _e109 = view.frame;
+    uint _e110 = point_stream(_e99, (gid.y * _e103) + gid.x, _e109);
+    uint _e111 = pick_stream(_e110);
+    h = _e111;
+    hc = _e110;
+    uint _e131 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
+    metal::float3 _e132 = r;
+    uint _e133 = bsh_next_leaf_lobe(BSH, _e131, x_13, _e132, _e87, bsh_nodes, _buffer_sizes);
+    b = _e133;
     uint2 loop_bound_4 = uint2(4294967295u);
     bool loop_init_2 = true;
     while(true) {
         if (metal::all(loop_bound_4 == uint2(0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e193 = b;
-            uint _e196 = bsh_nodes[_e193].next;
-            metal::float3 _e197 = r;
-            uint _e198 = bsh_next_leaf_lobe(BSH, _e196, x_11, _e197, _e90, bsh_nodes, _buffer_sizes);
-            b = _e198;
+            uint _e190 = b;
+            uint _e193 = bsh_nodes[_e190].next;
+            metal::float3 _e194 = r;
+            uint _e195 = bsh_next_leaf_lobe(BSH, _e193, x_13, _e194, _e87, bsh_nodes, _buffer_sizes);
+            b = _e195;
         }
         loop_init_2 = false;
-        uint _e138 = b;
-        if (_e138 != BSH_NONE) {
+        uint _e135 = b;
+        if (_e135 != BSH_NONE) {
         } else {
             break;
         }
         {
-            uint _e141 = count;
-            count = _e141 + 1u;
-            uint _e145 = b;
-            uint li_4 = bsh_nodes[_e145].light;
-            uint _e149 = h;
-            uint _e150 = pcg_hash(_e149);
-            h = _e150;
-            uint _e151 = h;
-            float _e152 = xi_from_bits(_e151);
-            uint _e153 = h;
-            uint _e154 = pcg_hash(_e153);
-            h = _e154;
-            uint _e155 = h;
-            float _e156 = xi_from_bits(_e155);
-            metal::float2 u_4 = metal::float2(_e152, _e156);
-            metal::float3 _e158 = r;
-            Material _e159 = m;
-            Shaded _e164 = shade_pick_traced(li_4, x_11, n_9, _e158, _e90, _e159, 1.0, u_4.x, u_4.y, eps_3, false, geo_nodes, geo_tris, lights_1, rt2_2, r2_2, light_cones, _buffer_sizes);
-            metal::float3 _e165 = output_of(_e164);
-            float _e166 = resample_target(_e165);
-            if (_e166 > 0.0) {
-                float _e169 = total;
-                total = _e169 + _e166;
+            uint _e138 = count;
+            count = _e138 + 1u;
+            uint _e142 = b;
+            uint li_4 = bsh_nodes[_e142].light;
+            uint _e146 = h;
+            uint _e147 = pcg_hash(_e146);
+            h = _e147;
+            uint _e148 = h;
+            float _e149 = xi_from_bits(_e148);
+            uint _e150 = h;
+            uint _e151 = pcg_hash(_e150);
+            h = _e151;
+            uint _e152 = h;
+            float _e153 = xi_from_bits(_e152);
+            metal::float2 u_4 = metal::float2(_e149, _e153);
+            metal::float3 _e155 = r;
+            Material _e156 = m;
+            Shaded _e161 = shade_pick_traced(li_4, x_13, n_11, _e155, _e87, _e156, 1.0, u_4.x, u_4.y, eps_4, false, geo_nodes, geo_tris, lights_1, rt2_3, r2_3, light_cones, _buffer_sizes);
+            metal::float3 _e162 = output_of(_e161);
+            float _e163 = resample_target(_e162);
+            if (_e163 > 0.0) {
+                float _e166 = total;
+                total = _e166 + _e163;
                 q = 0u;
                 uint2 loop_bound_5 = uint2(4294967295u);
                 bool loop_init_3 = true;
@@ -1361,81 +1403,81 @@ kernel void main_(
                     if (metal::all(loop_bound_5 == uint2(0u))) { break; }
                     loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
                     if (!loop_init_3) {
-                        uint _e189 = q;
-                        q = _e189 + 1u;
+                        uint _e186 = q;
+                        q = _e186 + 1u;
                     }
                     loop_init_3 = false;
-                    uint _e173 = q;
-                    if (_e173 < K) {
+                    uint _e170 = q;
+                    if (_e170 < K) {
                     } else {
                         break;
                     }
                     {
+                        uint _e173 = hc;
+                        uint _e174 = pcg_hash(_e173);
+                        hc = _e174;
+                        float _e175 = total;
                         uint _e176 = hc;
-                        uint _e177 = pcg_hash(_e176);
-                        hc = _e177;
-                        float _e178 = total;
-                        uint _e179 = hc;
-                        float _e180 = xi_from_bits(_e179);
-                        bool _e181 = weighted_replace(_e166, _e178, _e180);
-                        if (_e181) {
-                            uint _e182 = q;
-                            slot_light.inner[_e182] = li_4;
-                            uint _e184 = q;
-                            slot_u.inner[_e184] = u_4;
-                            uint _e186 = q;
-                            slot_p.inner[_e186] = _e166;
+                        float _e177 = xi_from_bits(_e176);
+                        bool _e178 = weighted_replace(_e163, _e175, _e177);
+                        if (_e178) {
+                            uint _e179 = q;
+                            slot_light.inner[_e179] = li_4;
+                            uint _e181 = q;
+                            slot_u.inner[_e181] = u_4;
+                            uint _e183 = q;
+                            slot_p.inner[_e183] = _e163;
                         }
                     }
                 }
             }
         }
     }
-    float _e199 = total;
-    if (_e199 > 0.0) {
+    float _e196 = total;
+    if (_e196 > 0.0) {
         uint2 loop_bound_6 = uint2(4294967295u);
         bool loop_init_4 = true;
         while(true) {
             if (metal::all(loop_bound_6 == uint2(0u))) { break; }
             loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
             if (!loop_init_4) {
-                uint _e238 = k;
-                k = _e238 + 1u;
+                uint _e235 = k;
+                k = _e235 + 1u;
             }
             loop_init_4 = false;
-            uint _e204 = k;
-            if (_e204 < K) {
+            uint _e201 = k;
+            if (_e201 < K) {
             } else {
                 break;
             }
             {
-                type_14 _e207 = slot_light;
-                uint _e208 = k;
-                uint _e209 = pick_copies(_e207, _e208);
-                if (_e209 > 0u) {
-                    float _e212 = total;
-                    uint _e214 = k;
-                    float _e216 = slot_p.inner[_e214];
-                    float w_7 = (_e212 / (8.0 * _e216)) * static_cast<float>(_e209);
-                    Shaded _e221 = t;
-                    uint _e222 = k;
-                    uint _e224 = slot_light.inner[_e222];
-                    metal::float3 _e225 = r;
-                    Material _e226 = m;
-                    uint _e227 = k;
-                    float _e230 = slot_u.inner[_e227].x;
-                    uint _e231 = k;
-                    float _e234 = slot_u.inner[_e231].y;
-                    Shaded _e235 = shade_pick(_e224, x_11, n_9, _e225, _e90, _e226, w_7, _e230, _e234, eps_3, geo_nodes, geo_tris, lights_1, rt2_2, r2_2, light_cones, _buffer_sizes);
-                    Shaded _e236 = add(_e221, _e235);
-                    t = _e236;
+                type_15 _e204 = slot_light;
+                uint _e205 = k;
+                uint _e206 = pick_copies(_e204, _e205);
+                if (_e206 > 0u) {
+                    float _e209 = total;
+                    uint _e211 = k;
+                    float _e213 = slot_p.inner[_e211];
+                    float w_7 = (_e209 / (8.0 * _e213)) * static_cast<float>(_e206);
+                    Shaded _e218 = t;
+                    uint _e219 = k;
+                    uint _e221 = slot_light.inner[_e219];
+                    metal::float3 _e222 = r;
+                    Material _e223 = m;
+                    uint _e224 = k;
+                    float _e227 = slot_u.inner[_e224].x;
+                    uint _e228 = k;
+                    float _e231 = slot_u.inner[_e228].y;
+                    Shaded _e232 = shade_pick(_e221, x_13, n_11, _e222, _e87, _e223, w_7, _e227, _e231, eps_4, geo_nodes, geo_tris, lights_1, rt2_3, r2_3, light_cones, _buffer_sizes);
+                    Shaded _e233 = add(_e218, _e232);
+                    t = _e233;
                 }
             }
         }
     }
-    metal::float3 _e242 = t.diffuse;
-    metal::float3 _e244 = t.specular;
-    uint _e246 = count;
-    out_tex.write(metal::float4(_e242 + _e244, static_cast<float>(_e246)), metal::uint2(texel_1));
+    metal::float3 _e239 = t.diffuse;
+    metal::float3 _e241 = t.specular;
+    uint _e243 = count;
+    out_tex.write(metal::float4(_e239 + _e241, static_cast<float>(_e243)), metal::uint2(texel_1));
     return;
 }

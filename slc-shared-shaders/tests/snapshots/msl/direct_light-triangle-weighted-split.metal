@@ -137,6 +137,7 @@ constant uint MAP_ORTHOGRAPHIC = 2u;
 constant float XI_STEP = 0.000000059604645;
 constant uint PICK_STREAM = 2654435769u;
 constant float TWO_PI = 6.2831855;
+constant float UNRANGED = 100000000000000000000000000000000000000.0;
 constant float CULL_RADIUS_SCALE = 1.000001;
 constant float SPHERE_PAD = 0.00000047683716;
 constant float SPHERE_HUGE = 340282350000000000000000000000000000000.0;
@@ -251,8 +252,8 @@ bool sphere_contains_point(
     float r_1,
     metal::float3 x_1
 ) {
-    metal::float3 v_5 = x_1 - c;
-    return metal::dot(v_5, v_5) <= (r_1 * r_1);
+    metal::float3 v_6 = x_1 - c;
+    return metal::dot(v_6, v_6) <= (r_1 * r_1);
 }
 
 float inverse_square(
@@ -281,8 +282,8 @@ float connection_cosine(
 ) {
     bool local_2 = {};
     bool local_3 = {};
-    metal::float3 v_6 = x_2 - y;
-    float d2_7 = metal::dot(v_6, v_6);
+    metal::float3 v_7 = x_2 - y;
+    float d2_7 = metal::dot(v_7, v_7);
     bool _e7 = slc_keep(r2_1, d2_7);
     if (!(!(_e7))) {
         local_2 = !((d2_7 > 0.0));
@@ -293,7 +294,7 @@ float connection_cosine(
     if (_e16) {
         return 0.0;
     }
-    metal::float3 w_7 = v_6 / metal::float3(metal::sqrt(d2_7));
+    metal::float3 w_7 = v_7 / metal::float3(metal::sqrt(d2_7));
     float cos_x_1 = -(metal::dot(n, w_7));
     if (!((cos_x_1 <= 0.0))) {
         local_3 = metal::dot(ng, w_7) >= 0.0;
@@ -420,9 +421,9 @@ metal::float3 fresnel_schlick(
     float f90_,
     float v_h
 ) {
-    float c_6 = metal::saturate(1.0 - v_h);
-    float c2_ = c_6 * c_6;
-    return f0_ + ((metal::float3(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_6));
+    float c_7 = metal::saturate(1.0 - v_h);
+    float c2_ = c_7 * c_7;
+    return f0_ + ((metal::float3(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_7));
 }
 
 metal::float3 specular_fresnel(
@@ -485,8 +486,8 @@ metal::float3 specular_brdf(
     metal::float3 hs = v_1 + l_1;
     float inv = 1.0 / metal::sqrt(metal::dot(hs, hs));
     metal::float3 h_3 = hs * inv;
-    metal::float3 c_7 = metal::cross(n_2, h_3);
-    float _e32 = ggx_d(metal::dot(n_2, h_3), metal::dot(c_7, c_7), alpha_3);
+    metal::float3 c_8 = metal::cross(n_2, h_3);
+    float _e32 = ggx_d(metal::dot(n_2, h_3), metal::dot(c_8, c_8), alpha_3);
     metal::float3 _e34 = specular_fresnel(base_2, metallic_2, f0_d_2, f90_d_2, metal::dot(v_1, h_3));
     float _e35 = smith_visibility(n_l_1, n_v_2, alpha_3);
     return _e34 * (_e32 * _e35);
@@ -633,14 +634,14 @@ metal::float4 emitter_cone(
     float cos_o,
     metal::float3 p
 ) {
-    metal::float3 v_7 = p - center;
-    float dist2_1 = metal::dot(v_7, v_7);
-    float r2_4 = radius * radius;
-    float d2_8 = metal::max(metal::max(dist2_1, r2_4), MIN_D2_);
-    metal::float3 wi = (dist2_1 > 0.0) ? (v_7 / metal::float3(metal::sqrt(dist2_1))) : metal::float3(0.0, 0.0, 0.0);
+    metal::float3 v_8 = p - center;
+    float dist2_1 = metal::dot(v_8, v_8);
+    float r2_5 = radius * radius;
+    float d2_8 = metal::max(metal::max(dist2_1, r2_5), MIN_D2_);
+    metal::float3 wi = (dist2_1 > 0.0) ? (v_8 / metal::float3(metal::sqrt(dist2_1))) : metal::float3(0.0, 0.0, 0.0);
     float cos_w = metal::dot(axis, wi);
     float _e25 = safe_sqrt(1.0 - (cos_w * cos_w));
-    float _e26 = subtended_cos(dist2_1, r2_4);
+    float _e26 = subtended_cos(dist2_1, r2_5);
     float _e30 = safe_sqrt(1.0 - (_e26 * _e26));
     float _e34 = safe_sqrt(1.0 - (cos_o * cos_o));
     float _e35 = cos_sub_clamped(_e25, cos_w, _e34, cos_o);
@@ -690,8 +691,8 @@ float cone_cos_of(
     if (_e21) {
         return 1.0;
     }
-    metal::float3 c_8 = metal::cross(v_3, d);
-    return metal::min(((vd * metal::sqrt(h2_)) + (metal::sqrt(metal::dot(c_8, c_8)) * a_3)) / d2_4, 1.0);
+    metal::float3 c_9 = metal::cross(v_3, d);
+    return metal::min(((vd * metal::sqrt(h2_)) + (metal::sqrt(metal::dot(c_9, c_9)) * a_3)) / d2_4, 1.0);
 }
 
 float cone_cos_toward(
@@ -700,8 +701,8 @@ float cone_cos_toward(
     metal::float3 p_2,
     metal::float3 d_1
 ) {
-    metal::float3 v_8 = center_2 - p_2;
-    float _e6 = cone_cos_of(v_8, metal::dot(v_8, v_8), radius_2, d_1);
+    metal::float3 v_9 = center_2 - p_2;
+    float _e6 = cone_cos_of(v_9, metal::dot(v_9, v_9), radius_2, d_1);
     return _e6;
 }
 
@@ -745,9 +746,9 @@ float light_importance(
     }
     imp = (phi_1 * _e8.x) / _e8.y;
     if (metal::dot(n_4, n_4) > 0.0) {
-        metal::float3 v_9 = center_4 - p_4;
-        float dist2_2 = metal::dot(v_9, v_9);
-        float cos_i = metal::dot((dist2_2 > 0.0) ? (v_9 / metal::float3(metal::sqrt(dist2_2))) : metal::float3(0.0, 0.0, 0.0), n_4);
+        metal::float3 v_10 = center_4 - p_4;
+        float dist2_2 = metal::dot(v_10, v_10);
+        float cos_i = metal::dot((dist2_2 > 0.0) ? (v_10 / metal::float3(metal::sqrt(dist2_2))) : metal::float3(0.0, 0.0, 0.0), n_4);
         float _e33 = imp;
         float _e37 = safe_sqrt(1.0 - (cos_i * cos_i));
         float _e40 = cos_sub_clamped(_e37, cos_i, _e8.w, _e8.z);
@@ -811,14 +812,14 @@ float cone_weight(
     metal::float3 r_4,
     metal::float4 lobe_6
 ) {
-    metal::float3 v_10 = p_6 - center_6;
+    metal::float3 v_11 = p_6 - center_6;
     if (lobe_6.y <= 0.0) {
         float _e15 = light_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_6);
-        float _e19 = candidate_weight(_e15 * INV_PI, rt2_3, metal::dot(v_10, v_10));
+        float _e19 = candidate_weight(_e15 * INV_PI, rt2_3, metal::dot(v_11, v_11));
         return _e19;
     }
     float _e20 = glossy_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_6, r_4, lobe_6);
-    float _e22 = candidate_weight(_e20, rt2_3, metal::dot(v_10, v_10));
+    float _e22 = candidate_weight(_e20, rt2_3, metal::dot(v_11, v_11));
     return _e22;
 }
 
@@ -868,8 +869,8 @@ metal::float3 triangle_normal(
     metal::float3 c_3
 ) {
     bool local_12 = {};
-    metal::float3 n_12 = metal::cross(b_3 - a_4, c_3 - a_4);
-    float l2_ = metal::dot(n_12, n_12);
+    metal::float3 n_14 = metal::cross(b_3 - a_4, c_3 - a_4);
+    float l2_ = metal::dot(n_14, n_14);
     if (!(!((l2_ > 0.0)))) {
         local_12 = !((l2_ < 300000000000000000000000000000000000000.0));
     } else {
@@ -879,7 +880,7 @@ metal::float3 triangle_normal(
     if (_e17) {
         return metal::float3(0.0, 0.0, 0.0);
     }
-    return n_12 / metal::float3(metal::sqrt(l2_));
+    return n_14 / metal::float3(metal::sqrt(l2_));
 }
 
 float ray_triangle(
@@ -914,9 +915,9 @@ float ray_triangle(
         return -1.0;
     }
     metal::float3 q = metal::cross(s_3, e1_);
-    float v_11 = metal::dot(d_3, q) * inv_1;
-    if (!((v_11 < 0.0))) {
-        local_14 = (u_3 + v_11) > 1.0;
+    float v_12 = metal::dot(d_3, q) * inv_1;
+    if (!((v_12 < 0.0))) {
+        local_14 = (u_3 + v_12) > 1.0;
     } else {
         local_14 = true;
     }
@@ -992,12 +993,12 @@ GeoHit trace(
         if (metal::all(loop_bound == uint2(0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         uint _e21 = node_2;
-        GpuGeoNode n_13 = geo_nodes[_e21];
+        GpuGeoNode n_15 = geo_nodes[_e21];
         float _e27 = hit.t;
-        float _e28 = ray_aabb(o_2, _e14, n_13.bmin, n_13.bmax, _e27);
+        float _e28 = ray_aabb(o_2, _e14, n_15.bmin, n_15.bmax, _e27);
         if (_e28 >= 0.0) {
-            if (n_13.count > 0u) {
-                i = n_13.first;
+            if (n_15.count > 0u) {
+                i = n_15.first;
                 uint2 loop_bound_1 = uint2(4294967295u);
                 bool loop_init = true;
                 while(true) {
@@ -1009,7 +1010,7 @@ GeoHit trace(
                     }
                     loop_init = false;
                     uint _e36 = i;
-                    if (_e36 < (n_13.first + n_13.count)) {
+                    if (_e36 < (n_15.first + n_15.count)) {
                     } else {
                         break;
                     }
@@ -1033,11 +1034,11 @@ GeoHit trace(
                 uint _e60 = sp;
                 if (_e60 < 64u) {
                     uint _e63 = sp;
-                    stack.inner[_e63] = n_13.first + 1u;
+                    stack.inner[_e63] = n_15.first + 1u;
                     uint _e68 = sp;
                     sp = _e68 + 1u;
                 }
-                node_2 = n_13.first;
+                node_2 = n_15.first;
                 continue;
             }
         }
@@ -1137,8 +1138,8 @@ bool bsh_reaches(
         return false;
     }
     float _e25 = bsh_range_bound(node_3);
-    metal::float3 v_12 = x_5 - node_3.center;
-    float d2_9 = metal::dot(v_12, v_12);
+    metal::float3 v_13 = x_5 - node_3.center;
+    float d2_9 = metal::dot(v_13, v_13);
     float reach_max = node_3.extent + ((rl_3.w * 1.001) * _e25);
     if (d2_9 > (reach_max * reach_max)) {
         return false;
@@ -1149,7 +1150,7 @@ bool bsh_reaches(
         bool _e47 = sphere_contains_point(node_3.center, _e46, x_5);
         return _e47;
     }
-    float _e50 = bsh_inner_scale(node_3.extent, -(v_12), d2_9, r_6, rl_3);
+    float _e50 = bsh_inner_scale(node_3.extent, -(v_13), d2_9, r_6, rl_3);
     float s_c = _e50 * 1.001;
     float reach = node_3.extent + (metal::sqrt(s_c) * _e25);
     if (d2_9 <= ((node_3.radius * node_3.radius) * s_c)) {
@@ -1199,12 +1200,13 @@ uint bsh_next_leaf_lobe(
     return BSH_NONE;
 }
 
-Connection connect_traced(
-    uint li,
+Connection connect_record(
+    GpuLight l_4,
     metal::float3 x_7,
     metal::float3 n_7,
     metal::float3 ng_1,
-    float s,
+    float r2_3,
+    float rt2_4,
     float w_res,
     float u1_2,
     float u2_2,
@@ -1212,92 +1214,111 @@ Connection connect_traced(
     bool trace_1,
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
-    device type_11 const& lights_1,
-    device type_4 const& rt2_4,
-    device type_4 const& r2_3,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Connection c_5 = {};
     bool local_18 = {};
     bool local_19 = {};
     c_5.e = metal::float3(0.0);
-    GpuLight l_4 = lights_1[li];
-    metal::float3 _e18 = light_point(l_4, u1_2, u2_2);
-    c_5.y = _e18;
-    metal::float3 _e21 = c_5.y;
-    float _e24 = r2_3[li];
-    float _e26 = connection_cosine(x_7, _e21, n_7, ng_1, s * _e24);
-    c_5.cos_x = _e26;
-    float _e28 = c_5.cos_x;
-    if (!((_e28 <= 0.0))) {
+    metal::float3 _e16 = light_point(l_4, u1_2, u2_2);
+    c_5.y = _e16;
+    metal::float3 _e19 = c_5.y;
+    float _e20 = connection_cosine(x_7, _e19, n_7, ng_1, r2_3);
+    c_5.cos_x = _e20;
+    float _e22 = c_5.cos_x;
+    if (!((_e22 <= 0.0))) {
         if (trace_1) {
-            metal::float3 _e39 = c_5.y;
-            bool _e40 = occluded(x_7 + (ng_1 * eps), _e39, geo_nodes, geo_tris, _buffer_sizes);
-            local_19 = _e40;
+            metal::float3 _e33 = c_5.y;
+            bool _e34 = occluded(x_7 + (ng_1 * eps), _e33, geo_nodes, geo_tris, _buffer_sizes);
+            local_19 = _e34;
         } else {
             local_19 = false;
         }
-        bool _e42 = local_19;
-        local_18 = _e42;
+        bool _e36 = local_19;
+        local_18 = _e36;
     } else {
         local_18 = true;
     }
-    bool _e44 = local_18;
-    if (_e44) {
-        Connection _e45 = c_5;
-        return _e45;
+    bool _e38 = local_18;
+    if (_e38) {
+        Connection _e39 = c_5;
+        return _e39;
     }
-    metal::float3 _e47 = c_5.y;
-    metal::float3 v_13 = x_7 - _e47;
-    float d2_10 = metal::dot(v_13, v_13);
-    metal::float3 _e54 = light_intensity(l_4, v_13 / metal::float3(metal::sqrt(d2_10)));
-    float _e56 = c_5.cos_x;
-    float _e59 = rt2_4[li];
-    float _e61 = connection_factor(_e56, d2_10, s * _e59, w_res);
-    c_5.e = _e54 * _e61;
-    Connection _e63 = c_5;
-    return _e63;
+    metal::float3 _e41 = c_5.y;
+    metal::float3 v_14 = x_7 - _e41;
+    float d2_10 = metal::dot(v_14, v_14);
+    metal::float3 _e48 = light_intensity(l_4, v_14 / metal::float3(metal::sqrt(d2_10)));
+    float _e50 = c_5.cos_x;
+    float _e51 = connection_factor(_e50, d2_10, rt2_4, w_res);
+    c_5.e = _e48 * _e51;
+    Connection _e53 = c_5;
+    return _e53;
+}
+
+Connection connect_traced(
+    uint li,
+    metal::float3 x_8,
+    metal::float3 n_8,
+    metal::float3 ng_2,
+    float s,
+    float w_res_1,
+    float u1_3,
+    float u2_3,
+    float eps_1,
+    bool trace_2,
+    device type_6 const& geo_nodes,
+    device type_7 const& geo_tris,
+    device type_11 const& lights_1,
+    device type_4 const& rt2_5,
+    device type_4 const& r2_4,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    GpuLight _e12 = lights_1[li];
+    float _e15 = r2_4[li];
+    float _e19 = rt2_5[li];
+    Connection _e21 = connect_record(_e12, x_8, n_8, ng_2, s * _e15, s * _e19, w_res_1, u1_3, u2_3, eps_1, trace_2, geo_nodes, geo_tris, _buffer_sizes);
+    return _e21;
 }
 
 float light_range_scale(
     uint li_1,
-    metal::float3 x_8,
+    metal::float3 x_9,
     metal::float3 r_8,
     metal::float4 rl_5,
     device type_13 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuLightCone c_9 = light_cones[li_1];
-    float _e9 = range_scale_toward(rl_5, c_9.center, c_9.radius, x_8, r_8);
+    GpuLightCone c_10 = light_cones[li_1];
+    float _e9 = range_scale_toward(rl_5, c_10.center, c_10.radius, x_9, r_8);
     return _e9;
 }
 
 float light_weight(
     uint li_2,
-    metal::float3 x_9,
-    metal::float3 n_8,
+    metal::float3 x_10,
+    metal::float3 n_9,
     metal::float3 r_9,
     metal::float4 lobe_7,
     metal::float4 rl_6,
-    device type_4 const& rt2_4,
+    device type_4 const& rt2_5,
     device type_13 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuLightCone c_10 = light_cones[li_2];
-    float _e15 = light_range_scale(li_2, x_9, r_9, rl_6, light_cones, _buffer_sizes);
-    float _e18 = rt2_4[li_2];
-    float _e20 = cone_weight(c_10.center, c_10.radius, c_10.phi, c_10.axis, c_10.cos_o, c_10.cos_e, _e15 * _e18, x_9, n_8, r_9, lobe_7);
+    GpuLightCone c_11 = light_cones[li_2];
+    float _e15 = light_range_scale(li_2, x_10, r_9, rl_6, light_cones, _buffer_sizes);
+    float _e18 = rt2_5[li_2];
+    float _e20 = cone_weight(c_11.center, c_11.radius, c_11.phi, c_11.axis, c_11.cos_o, c_11.cos_e, _e15 * _e18, x_10, n_9, r_9, lobe_7);
     return _e20;
 }
 
 WeightedPicks bsh_weighted_collect(
-    metal::float3 x_10,
-    metal::float3 n_9,
+    metal::float3 x_11,
+    metal::float3 n_10,
     metal::float3 r_10,
     metal::float4 lobe_8,
     metal::float4 rl_7,
     uint h0_,
-    device type_4 const& rt2_4,
+    device type_4 const& rt2_5,
     device type_12 const& bsh_nodes,
     device type_13 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
@@ -1310,7 +1331,7 @@ WeightedPicks bsh_weighted_collect(
     picks.n = 0u;
     h_1 = h0_;
     uint _e14 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
-    uint _e15 = bsh_next_leaf_lobe(BSH, _e14, x_10, r_10, rl_7, bsh_nodes, _buffer_sizes);
+    uint _e15 = bsh_next_leaf_lobe(BSH, _e14, x_11, r_10, rl_7, bsh_nodes, _buffer_sizes);
     b_6 = _e15;
     uint2 loop_bound_3 = uint2(4294967295u);
     bool loop_init_1 = true;
@@ -1320,7 +1341,7 @@ WeightedPicks bsh_weighted_collect(
         if (!loop_init_1) {
             uint _e58 = b_6;
             uint _e61 = bsh_nodes[_e58].next;
-            uint _e62 = bsh_next_leaf_lobe(BSH, _e61, x_10, r_10, rl_7, bsh_nodes, _buffer_sizes);
+            uint _e62 = bsh_next_leaf_lobe(BSH, _e61, x_11, r_10, rl_7, bsh_nodes, _buffer_sizes);
             b_6 = _e62;
         }
         loop_init_1 = false;
@@ -1334,7 +1355,7 @@ WeightedPicks bsh_weighted_collect(
             picks.n = _e21 + 1u;
             uint _e25 = b_6;
             uint li_5 = bsh_nodes[_e25].light;
-            float _e29 = light_weight(li_5, x_10, n_9, r_10, lobe_8, rl_7, rt2_4, light_cones, _buffer_sizes);
+            float _e29 = light_weight(li_5, x_11, n_10, r_10, lobe_8, rl_7, rt2_5, light_cones, _buffer_sizes);
             if (_e29 > 0.0) {
                 float _e33 = picks.w_sum;
                 picks.w_sum = _e33 + _e29;
@@ -1387,71 +1408,93 @@ metal::float4 surface_at(
     return (p_8.w > 0.0) ? metal::float4(p_8.xyz, 1.0) : metal::float4(0.0);
 }
 
+Shaded shade_connection(
+    Connection c_6,
+    metal::float3 x_12,
+    metal::float3 n_11,
+    Material m_1,
+    constant ViewParams& view
+) {
+    Shaded s_2 = {};
+    s_2.e = c_6.e;
+    s_2.diffuse = metal::float3(0.0);
+    s_2.specular = metal::float3(0.0);
+    if (c_6.cos_x > 0.0) {
+        metal::float3 l_5 = metal::normalize(c_6.y - x_12);
+        metal::float3 _e24 = view.f0_d;
+        float _e27 = view.f90_d;
+        float _e29 = half_cosine(m_1.v, l_5);
+        metal::float3 _e30 = diffuse_brdf(m_1.base, m_1.metallic, _e24, _e27, _e29);
+        s_2.diffuse = _e30 * c_6.e;
+        metal::float3 _e38 = view.f0_d;
+        float _e41 = view.f90_d;
+        metal::float3 _e44 = specular_brdf(m_1.base, m_1.metallic, _e38, _e41, m_1.alpha, n_11, m_1.v, l_5);
+        s_2.specular = _e44 * c_6.e;
+    }
+    Shaded _e47 = s_2;
+    return _e47;
+}
+
 Shaded shade_pick_traced(
     uint li_3,
-    metal::float3 x_11,
-    metal::float3 n_10,
+    metal::float3 x_13,
+    metal::float3 n_12,
     metal::float3 r_11,
     metal::float4 rl_8,
-    Material m_1,
+    Material m_2,
     float w_5,
-    float u1_3,
-    float u2_3,
-    float eps_1,
-    bool trace_2,
+    float u1_4,
+    float u2_4,
+    float eps_2,
+    bool trace_3,
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
     constant ViewParams& view,
     device type_11 const& lights_1,
-    device type_4 const& rt2_4,
-    device type_4 const& r2_3,
+    device type_4 const& rt2_5,
+    device type_4 const& r2_4,
     device type_13 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Shaded s_2 = {};
-    float _e12 = light_range_scale(li_3, x_11, r_11, rl_8, light_cones, _buffer_sizes);
-    Connection _e13 = connect_traced(li_3, x_11, n_10, n_10, _e12, w_5, u1_3, u2_3, eps_1, trace_2, geo_nodes, geo_tris, lights_1, rt2_4, r2_3, _buffer_sizes);
-    s_2.e = _e13.e;
-    s_2.diffuse = metal::float3(0.0);
-    s_2.specular = metal::float3(0.0);
-    if (_e13.cos_x > 0.0) {
-        metal::float3 l_5 = metal::normalize(_e13.y - x_11);
-        metal::float3 _e33 = view.f0_d;
-        float _e36 = view.f90_d;
-        float _e38 = half_cosine(m_1.v, l_5);
-        metal::float3 _e39 = diffuse_brdf(m_1.base, m_1.metallic, _e33, _e36, _e38);
-        s_2.diffuse = _e39 * _e13.e;
-        metal::float3 _e47 = view.f0_d;
-        float _e50 = view.f90_d;
-        metal::float3 _e53 = specular_brdf(m_1.base, m_1.metallic, _e47, _e50, m_1.alpha, n_10, m_1.v, l_5);
-        s_2.specular = _e53 * _e13.e;
-    }
-    Shaded _e56 = s_2;
-    return _e56;
+    float _e11 = light_range_scale(li_3, x_13, r_11, rl_8, light_cones, _buffer_sizes);
+    Connection _e12 = connect_traced(li_3, x_13, n_12, n_12, _e11, w_5, u1_4, u2_4, eps_2, trace_3, geo_nodes, geo_tris, lights_1, rt2_5, r2_4, _buffer_sizes);
+    Shaded _e13 = shade_connection(_e12, x_13, n_12, m_2, view);
+    return _e13;
 }
 
 Shaded shade_pick(
     uint li_4,
-    metal::float3 x_12,
-    metal::float3 n_11,
+    metal::float3 x_14,
+    metal::float3 n_13,
     metal::float3 r_12,
     metal::float4 rl_9,
-    Material m_2,
+    Material m_3,
     float w_6,
-    float u1_4,
-    float u2_4,
-    float eps_2,
+    float u1_5,
+    float u2_5,
+    float eps_3,
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
     constant ViewParams& view,
     device type_11 const& lights_1,
-    device type_4 const& rt2_4,
-    device type_4 const& r2_3,
+    device type_4 const& rt2_5,
+    device type_4 const& r2_4,
     device type_13 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Shaded _e11 = shade_pick_traced(li_4, x_12, n_11, r_12, rl_9, m_2, w_6, u1_4, u2_4, eps_2, true, geo_nodes, geo_tris, view, lights_1, rt2_4, r2_3, light_cones, _buffer_sizes);
+    Shaded _e11 = shade_pick_traced(li_4, x_14, n_13, r_12, rl_9, m_3, w_6, u1_5, u2_5, eps_3, true, geo_nodes, geo_tris, view, lights_1, rt2_5, r2_4, light_cones, _buffer_sizes);
     return _e11;
+}
+
+Material material_of(
+    metal::float3 base_4,
+    float metallic_5,
+    float roughness_1,
+    float reflectance,
+    metal::float3 v_5
+) {
+    float _e7 = ggx_alpha(metal::saturate(roughness_1));
+    return Material {base_4, metal::saturate(metallic_5), _e7, {}, v_5, roughness_1, 0.0};
 }
 
 Shaded add(
@@ -1520,8 +1563,8 @@ kernel void main_(
 , metal::texture2d<float, metal::access::sample> metal_rough_tex [[user(fake0)]]
 , metal::texture2d<float, metal::access::write> specular_tex [[user(fake0)]]
 , device type_11 const& lights_1 [[user(fake0)]]
-, device type_4 const& rt2_4 [[user(fake0)]]
-, device type_4 const& r2_3 [[user(fake0)]]
+, device type_4 const& rt2_5 [[user(fake0)]]
+, device type_4 const& r2_4 [[user(fake0)]]
 , device type_12 const& bsh_nodes [[user(fake0)]]
 , device type_13 const& light_cones [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
@@ -1561,89 +1604,89 @@ kernel void main_(
         specular_tex.write(metal::float4(0.0), metal::uint2(texel_1));
         return;
     }
-    metal::float3 x_13 = _e21.xyz;
-    metal::float3 n_14 = nn / metal::float3(metal::sqrt(len2_1));
-    r = n_14;
+    metal::float3 x_15 = _e21.xyz;
+    metal::float3 n_16 = nn / metal::float3(metal::sqrt(len2_1));
+    r = n_16;
     metal::float4 mr = metal_rough_tex.read(metal::uint2(texel_1), 0);
     metal::float4 _e61 = base_color_tex.read(metal::uint2(texel_1), 0);
-    float _e67 = ggx_alpha(metal::saturate(mr.y));
-    metal::float3 _e70 = view.eye;
-    m = Material {_e61.xyz, metal::saturate(mr.z), _e67, {}, metal::normalize(_e70 - x_13), mr.y, 0.0};
-    metal::float3 _e77 = m.base;
-    float _e79 = m.metallic;
-    metal::float3 _e82 = view.f0_d;
-    float _e85 = view.f90_d;
-    float _e87 = m.alpha;
+    metal::float3 _e68 = view.eye;
+    Material _e71 = material_of(_e61.xyz, mr.z, mr.y, mr.w, metal::normalize(_e68 - x_15));
+    m = _e71;
+    metal::float3 _e73 = m.base;
+    float _e75 = m.metallic;
+    metal::float3 _e78 = view.f0_d;
+    float _e81 = view.f90_d;
+    float _e83 = m.alpha;
+    metal::float3 _e85 = m.v;
+    metal::float4 _e87 = receiver_lobe(_e73, _e75, _e78, _e81, _e83, metal::dot(n_16, _e85));
+    lobe = _e87;
     metal::float3 _e89 = m.v;
-    metal::float4 _e91 = receiver_lobe(_e77, _e79, _e82, _e85, _e87, metal::dot(n_14, _e89));
-    lobe = _e91;
-    metal::float3 _e93 = m.v;
-    metal::float3 _e94 = mirror_dir(n_14, _e93);
-    r = _e94;
-    metal::float4 _e95 = lobe;
-    metal::float4 _e96 = range_lobe(_e95);
-    float _e99 = view.shadow_offset;
-    metal::float3 _e102 = view.eye;
-    float eps_3 = _e99 * metal::length(_e102 - x_13);
-    uint _e108 = view.seed;
-    uint _e112 = view.width;
-    uint _e118 = view.frame;
-    uint _e119 = point_stream(_e108, (gid.y * _e112) + gid.x, _e118);
-    uint _e120 = pick_stream(_e119);
-    h = _e120;
-    metal::float3 _e130 = r;
-    metal::float4 _e131 = lobe;
-    WeightedPicks _e132 = bsh_weighted_collect(x_13, n_14, _e130, _e131, _e96, _e119, rt2_4, bsh_nodes, light_cones, _buffer_sizes);
-    if (_e132.w_sum > 0.0) {
+    metal::float3 _e90 = mirror_dir(n_16, _e89);
+    r = _e90;
+    metal::float4 _e91 = lobe;
+    metal::float4 _e92 = range_lobe(_e91);
+    float _e95 = view.shadow_offset;
+    metal::float3 _e98 = view.eye;
+    float eps_4 = _e95 * metal::length(_e98 - x_15);
+    uint _e104 = view.seed;
+    uint _e108 = view.width;
+    uint _e114 = view.frame;
+    uint _e115 = point_stream(_e104, (gid.y * _e108) + gid.x, _e114);
+    uint _e116 = pick_stream(_e115);
+    h = _e116;
+    metal::float3 _e126 = r;
+    metal::float4 _e127 = lobe;
+    WeightedPicks _e128 = bsh_weighted_collect(x_15, n_16, _e126, _e127, _e92, _e115, rt2_5, bsh_nodes, light_cones, _buffer_sizes);
+    if (_e128.w_sum > 0.0) {
         uint2 loop_bound_6 = uint2(4294967295u);
         bool loop_init_4 = true;
         while(true) {
             if (metal::all(loop_bound_6 == uint2(0u))) { break; }
             loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
             if (!loop_init_4) {
-                uint _e179 = k;
-                k = _e179 + 1u;
+                uint _e175 = k;
+                k = _e175 + 1u;
             }
             loop_init_4 = false;
-            uint _e138 = k;
-            if (_e138 < K) {
+            uint _e134 = k;
+            if (_e134 < K) {
             } else {
                 break;
             }
             {
+                uint _e137 = h;
+                uint _e138 = pcg_hash(_e137);
+                h = _e138;
+                uint _e139 = h;
+                float _e140 = xi_from_bits(_e139);
                 uint _e141 = h;
                 uint _e142 = pcg_hash(_e141);
                 h = _e142;
                 uint _e143 = h;
                 float _e144 = xi_from_bits(_e143);
-                uint _e145 = h;
-                uint _e146 = pcg_hash(_e145);
-                h = _e146;
-                uint _e147 = h;
-                float _e148 = xi_from_bits(_e147);
+                uint _e146 = k;
+                uint li_6 = _e128.light.inner[_e146];
                 uint _e150 = k;
-                uint li_6 = _e132.light.inner[_e150];
-                uint _e154 = k;
-                uint _e155 = pick_copies(_e132.light, _e154);
-                uint _e159 = lights_1[li_6].kind;
-                uint copies_1 = (_e159 != LIGHT_TRIANGLE) ? _e155 : 1u;
+                uint _e151 = pick_copies(_e128.light, _e150);
+                uint _e155 = lights_1[li_6].kind;
+                uint copies_1 = (_e155 != LIGHT_TRIANGLE) ? _e151 : 1u;
                 if (copies_1 > 0u) {
-                    Shaded _e165 = t;
-                    metal::float3 _e166 = r;
-                    Material _e167 = m;
-                    uint _e170 = k;
-                    float _e173 = weighted_pick_weight(_e132.w_sum, _e132.w.inner[_e170], K);
-                    Shaded _e176 = shade_pick(li_6, x_13, n_14, _e166, _e96, _e167, _e173 * static_cast<float>(copies_1), _e144, _e148, eps_3, geo_nodes, geo_tris, view, lights_1, rt2_4, r2_3, light_cones, _buffer_sizes);
-                    Shaded _e177 = add(_e165, _e176);
-                    t = _e177;
+                    Shaded _e161 = t;
+                    metal::float3 _e162 = r;
+                    Material _e163 = m;
+                    uint _e166 = k;
+                    float _e169 = weighted_pick_weight(_e128.w_sum, _e128.w.inner[_e166], K);
+                    Shaded _e172 = shade_pick(li_6, x_15, n_16, _e162, _e92, _e163, _e169 * static_cast<float>(copies_1), _e140, _e144, eps_4, geo_nodes, geo_tris, view, lights_1, rt2_5, r2_4, light_cones, _buffer_sizes);
+                    Shaded _e173 = add(_e161, _e172);
+                    t = _e173;
                 }
             }
         }
     }
-    uint count = _e132.n;
-    metal::float3 _e184 = t.e;
-    out_tex.write(metal::float4(_e184, static_cast<float>(count)), metal::uint2(texel_1));
-    metal::float3 _e189 = t.specular;
-    specular_tex.write(metal::float4(_e189, 0.0), metal::uint2(texel_1));
+    uint count = _e128.n;
+    metal::float3 _e180 = t.e;
+    out_tex.write(metal::float4(_e180, static_cast<float>(count)), metal::uint2(texel_1));
+    metal::float3 _e185 = t.specular;
+    specular_tex.write(metal::float4(_e185, 0.0), metal::uint2(texel_1));
     return;
 }

@@ -137,6 +137,7 @@ constant uint MAP_ORTHOGRAPHIC = 2u;
 constant float XI_STEP = 0.000000059604645;
 constant uint PICK_STREAM = 2654435769u;
 constant float TWO_PI = 6.2831855;
+constant float UNRANGED = 100000000000000000000000000000000000000.0;
 constant float CULL_RADIUS_SCALE = 1.000001;
 constant float SPHERE_PAD = 0.00000047683716;
 constant float SPHERE_HUGE = 340282350000000000000000000000000000000.0;
@@ -954,8 +955,8 @@ metal::float3 triangle_normal(
     metal::float3 c_3
 ) {
     bool local_15 = {};
-    metal::float3 n_18 = metal::cross(b_4 - a_5, c_3 - a_5);
-    float l2_ = metal::dot(n_18, n_18);
+    metal::float3 n_19 = metal::cross(b_4 - a_5, c_3 - a_5);
+    float l2_ = metal::dot(n_19, n_19);
     if (!(!((l2_ > 0.0)))) {
         local_15 = !((l2_ < 300000000000000000000000000000000000000.0));
     } else {
@@ -965,7 +966,7 @@ metal::float3 triangle_normal(
     if (_e17) {
         return metal::float3(0.0, 0.0, 0.0);
     }
-    return n_18 / metal::float3(metal::sqrt(l2_));
+    return n_19 / metal::float3(metal::sqrt(l2_));
 }
 
 float ray_triangle(
@@ -1097,12 +1098,12 @@ GeoHit trace(
         if (metal::all(loop_bound == uint2(0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         uint _e21 = node_2;
-        GpuGeoNode n_19 = geo_nodes[_e21];
+        GpuGeoNode n_20 = geo_nodes[_e21];
         float _e27 = hit.t;
-        float _e28 = ray_aabb(o_2, _e14, n_19.bmin, n_19.bmax, _e27);
+        float _e28 = ray_aabb(o_2, _e14, n_20.bmin, n_20.bmax, _e27);
         if (_e28 >= 0.0) {
-            if (n_19.count > 0u) {
-                i = n_19.first;
+            if (n_20.count > 0u) {
+                i = n_20.first;
                 uint2 loop_bound_1 = uint2(4294967295u);
                 bool loop_init = true;
                 while(true) {
@@ -1114,7 +1115,7 @@ GeoHit trace(
                     }
                     loop_init = false;
                     uint _e36 = i;
-                    if (_e36 < (n_19.first + n_19.count)) {
+                    if (_e36 < (n_20.first + n_20.count)) {
                     } else {
                         break;
                     }
@@ -1138,11 +1139,11 @@ GeoHit trace(
                 uint _e60 = sp;
                 if (_e60 < 64u) {
                     uint _e63 = sp;
-                    stack.inner[_e63] = n_19.first + 1u;
+                    stack.inner[_e63] = n_20.first + 1u;
                     uint _e68 = sp;
                     sp = _e68 + 1u;
                 }
-                node_2 = n_19.first;
+                node_2 = n_20.first;
                 continue;
             }
         }
@@ -1365,12 +1366,13 @@ Picks bsh_collect(
     return _e49;
 }
 
-Connection connect_traced(
-    uint li,
+Connection connect_record(
+    GpuLight l_8,
     metal::float3 x_7,
     metal::float3 n_13,
     metal::float3 ng_1,
-    float s_1,
+    float r2_2,
+    float rt2_4,
     float w_res,
     float u1_2,
     float u2_2,
@@ -1378,71 +1380,90 @@ Connection connect_traced(
     bool trace_1,
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
-    device type_11 const& lights,
-    device type_4 const& r2_2,
-    device type_4 const& rt2_4,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Connection c_5 = {};
     bool local_21 = {};
     bool local_22 = {};
     c_5.e = metal::float3(0.0);
-    GpuLight l_8 = lights[li];
-    metal::float3 _e18 = light_point(l_8, u1_2, u2_2);
-    c_5.y = _e18;
-    metal::float3 _e21 = c_5.y;
-    float _e24 = r2_2[li];
-    float _e26 = connection_cosine(x_7, _e21, n_13, ng_1, s_1 * _e24);
-    c_5.cos_x = _e26;
-    float _e28 = c_5.cos_x;
-    if (!((_e28 <= 0.0))) {
+    metal::float3 _e16 = light_point(l_8, u1_2, u2_2);
+    c_5.y = _e16;
+    metal::float3 _e19 = c_5.y;
+    float _e20 = connection_cosine(x_7, _e19, n_13, ng_1, r2_2);
+    c_5.cos_x = _e20;
+    float _e22 = c_5.cos_x;
+    if (!((_e22 <= 0.0))) {
         if (trace_1) {
-            metal::float3 _e39 = c_5.y;
-            bool _e40 = occluded(x_7 + (ng_1 * eps), _e39, geo_nodes, geo_tris, _buffer_sizes);
-            local_22 = _e40;
+            metal::float3 _e33 = c_5.y;
+            bool _e34 = occluded(x_7 + (ng_1 * eps), _e33, geo_nodes, geo_tris, _buffer_sizes);
+            local_22 = _e34;
         } else {
             local_22 = false;
         }
-        bool _e42 = local_22;
-        local_21 = _e42;
+        bool _e36 = local_22;
+        local_21 = _e36;
     } else {
         local_21 = true;
     }
-    bool _e44 = local_21;
-    if (_e44) {
-        Connection _e45 = c_5;
-        return _e45;
+    bool _e38 = local_21;
+    if (_e38) {
+        Connection _e39 = c_5;
+        return _e39;
     }
-    metal::float3 _e47 = c_5.y;
-    metal::float3 v_13 = x_7 - _e47;
+    metal::float3 _e41 = c_5.y;
+    metal::float3 v_13 = x_7 - _e41;
     float d2_11 = metal::dot(v_13, v_13);
-    metal::float3 _e54 = light_intensity(l_8, v_13 / metal::float3(metal::sqrt(d2_11)));
-    float _e56 = c_5.cos_x;
-    float _e59 = rt2_4[li];
-    float _e61 = connection_factor(_e56, d2_11, s_1 * _e59, w_res);
-    c_5.e = _e54 * _e61;
-    Connection _e63 = c_5;
-    return _e63;
+    metal::float3 _e48 = light_intensity(l_8, v_13 / metal::float3(metal::sqrt(d2_11)));
+    float _e50 = c_5.cos_x;
+    float _e51 = connection_factor(_e50, d2_11, rt2_4, w_res);
+    c_5.e = _e48 * _e51;
+    Connection _e53 = c_5;
+    return _e53;
 }
 
-Connection connect(
-    uint li_1,
+Connection connect_traced(
+    uint li,
     metal::float3 x_8,
     metal::float3 n_14,
     metal::float3 ng_2,
-    float s_2,
+    float s_1,
     float w_res_1,
     float u1_3,
     float u2_3,
     float eps_1,
+    bool trace_2,
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
     device type_11 const& lights,
-    device type_4 const& r2_2,
-    device type_4 const& rt2_4,
+    device type_4 const& r2_3,
+    device type_4 const& rt2_5,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Connection _e10 = connect_traced(li_1, x_8, n_14, ng_2, s_2, w_res_1, u1_3, u2_3, eps_1, true, geo_nodes, geo_tris, lights, r2_2, rt2_4, _buffer_sizes);
+    GpuLight _e12 = lights[li];
+    float _e15 = r2_3[li];
+    float _e19 = rt2_5[li];
+    Connection _e21 = connect_record(_e12, x_8, n_14, ng_2, s_1 * _e15, s_1 * _e19, w_res_1, u1_3, u2_3, eps_1, trace_2, geo_nodes, geo_tris, _buffer_sizes);
+    return _e21;
+}
+
+Connection connect(
+    uint li_1,
+    metal::float3 x_9,
+    metal::float3 n_15,
+    metal::float3 ng_3,
+    float s_2,
+    float w_res_2,
+    float u1_4,
+    float u2_4,
+    float eps_2,
+    device type_6 const& geo_nodes,
+    device type_7 const& geo_tris,
+    device type_11 const& lights,
+    device type_4 const& r2_3,
+    device type_4 const& rt2_5,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Connection _e10 = connect_traced(li_1, x_9, n_15, ng_3, s_2, w_res_2, u1_4, u2_4, eps_2, true, geo_nodes, geo_tris, lights, r2_3, rt2_5, _buffer_sizes);
     return _e10;
 }
 
@@ -1456,21 +1477,21 @@ float mis_weight(
 
 float light_range_scale(
     uint li_2,
-    metal::float3 x_9,
+    metal::float3 x_10,
     metal::float3 r_6,
     metal::float4 rl_6,
     device type_12 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuLightCone c_10 = light_cones[li_2];
-    float _e9 = range_scale_toward(rl_6, c_10.center, c_10.radius, x_9, r_6);
+    float _e9 = range_scale_toward(rl_6, c_10.center, c_10.radius, x_10, r_6);
     return _e9;
 }
 
 float select_pdf(
     uint li_3,
-    metal::float3 x_10,
-    metal::float3 n_15,
+    metal::float3 x_11,
+    metal::float3 n_16,
     metal::float3 r_7,
     metal::float4 lobe_5,
     metal::float4 rl_7,
@@ -1483,23 +1504,23 @@ float select_pdf(
 
 float light_pdf_selected(
     uint li_4,
-    metal::float3 x_11,
+    metal::float3 x_12,
     metal::float3 r_8,
     metal::float4 rl_8,
     metal::float3 y_1,
     float sel,
     device type_11 const& lights,
-    device type_4 const& rt2_4,
+    device type_4 const& rt2_5,
     device type_12 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuLight l_9 = lights[li_4];
-    metal::float3 v_14 = x_11 - y_1;
+    metal::float3 v_14 = x_12 - y_1;
     float d2_12 = metal::dot(v_14, v_14);
     metal::float3 _e11 = light_normal(l_9);
     float cos_y_1 = (d2_12 > 0.0) ? metal::dot(_e11, v_14 / metal::float3(metal::sqrt(d2_12))) : 0.0;
-    float _e20 = light_range_scale(li_4, x_11, r_8, rl_8, light_cones, _buffer_sizes);
-    float _e23 = rt2_4[li_4];
+    float _e20 = light_range_scale(li_4, x_12, r_8, rl_8, light_cones, _buffer_sizes);
+    float _e23 = rt2_5[li_4];
     float _e25 = light_area(l_9);
     float _e26 = light_strategy_pdf(sel, _e20 * _e23, d2_12, _e25, cos_y_1);
     return _e26;
@@ -1507,8 +1528,8 @@ float light_pdf_selected(
 
 float light_pdf(
     uint li_5,
-    metal::float3 x_12,
-    metal::float3 n_16,
+    metal::float3 x_13,
+    metal::float3 n_17,
     metal::float3 r_9,
     metal::float4 lobe_6,
     metal::float4 rl_9,
@@ -1516,20 +1537,20 @@ float light_pdf(
     uint nee_1,
     bool in_range_2,
     device type_11 const& lights,
-    device type_4 const& rt2_4,
+    device type_4 const& rt2_5,
     device type_12 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e9 = select_pdf(li_5, x_12, n_16, r_9, lobe_6, rl_9, nee_1, in_range_2);
-    float _e10 = light_pdf_selected(li_5, x_12, r_9, rl_9, y_2, _e9, lights, rt2_4, light_cones, _buffer_sizes);
+    float _e9 = select_pdf(li_5, x_13, n_17, r_9, lobe_6, rl_9, nee_1, in_range_2);
+    float _e10 = light_pdf_selected(li_5, x_13, r_9, rl_9, y_2, _e9, lights, rt2_5, light_cones, _buffer_sizes);
     return _e10;
 }
 
 metal::float3 shade_pick(
     uint li_6,
-    metal::float3 x_13,
-    metal::float3 n_17,
-    metal::float3 ng_3,
+    metal::float3 x_14,
+    metal::float3 n_18,
+    metal::float3 ng_4,
     GpuMaterial m,
     metal::float3 wo_1,
     metal::float3 r_10,
@@ -1537,35 +1558,35 @@ metal::float3 shade_pick(
     metal::float4 rl_10,
     float w_4,
     uint nee_2,
-    float u1_4,
-    float u2_4,
+    float u1_5,
+    float u2_5,
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
     device type_11 const& lights,
-    device type_4 const& r2_2,
-    device type_4 const& rt2_4,
+    device type_4 const& r2_3,
+    device type_4 const& rt2_5,
     device type_12 const& light_cones,
     constant ShadeParams& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     float mis = 1.0;
-    float _e13 = light_range_scale(li_6, x_13, r_10, rl_10, light_cones, _buffer_sizes);
+    float _e13 = light_range_scale(li_6, x_14, r_10, rl_10, light_cones, _buffer_sizes);
     float _e16 = params.eps;
-    Connection _e17 = connect(li_6, x_13, n_17, ng_3, _e13, w_4, u1_4, u2_4, _e16, geo_nodes, geo_tris, lights, r2_2, rt2_4, _buffer_sizes);
+    Connection _e17 = connect(li_6, x_14, n_18, ng_4, _e13, w_4, u1_5, u2_5, _e16, geo_nodes, geo_tris, lights, r2_3, rt2_5, _buffer_sizes);
     if (_e17.cos_x <= 0.0) {
         return metal::float3(0.0);
     }
-    metal::float3 l_10 = metal::normalize(_e17.y - x_13);
+    metal::float3 l_10 = metal::normalize(_e17.y - x_14);
     GpuLight _e30 = lights[li_6];
     float _e31 = light_area(_e30);
     if (_e31 > 0.0) {
-        float _e36 = light_pdf(li_6, x_13, n_17, r_10, lobe_7, rl_10, _e17.y, nee_2, true, lights, rt2_4, light_cones, _buffer_sizes);
+        float _e36 = light_pdf(li_6, x_14, n_18, r_10, lobe_7, rl_10, _e17.y, nee_2, true, lights, rt2_5, light_cones, _buffer_sizes);
         float _e38 = specular_probability(lobe_7);
-        float _e39 = bsdf_pdf(n_17, wo_1, l_10, m.alpha, _e38);
+        float _e39 = bsdf_pdf(n_18, wo_1, l_10, m.alpha, _e38);
         float _e40 = mis_weight(_e36, _e39);
         mis = _e40;
     }
-    metal::float3 _e46 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_17, wo_1, l_10);
+    metal::float3 _e46 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_18, wo_1, l_10);
     float _e49 = mis;
     return (_e46 * _e17.e) * _e49;
 }
@@ -1578,8 +1599,8 @@ kernel void main_(
 , device type_7 const& geo_tris [[user(fake0)]]
 , device type_10 const& bsh_nodes [[user(fake0)]]
 , device type_11 const& lights [[user(fake0)]]
-, device type_4 const& r2_2 [[user(fake0)]]
-, device type_4 const& rt2_4 [[user(fake0)]]
+, device type_4 const& r2_3 [[user(fake0)]]
+, device type_4 const& rt2_5 [[user(fake0)]]
 , device type_12 const& light_cones [[user(fake0)]]
 , constant ShadeParams& params [[user(fake0)]]
 , device type_13 const& vertices [[user(fake0)]]
@@ -1601,20 +1622,20 @@ kernel void main_(
         candidates[i_4] = 0u;
         return;
     }
-    metal::float3 x_14 = vtx.position;
-    metal::float3 n_20 = vtx.normal;
-    metal::float3 ng_4 = vtx.gnormal;
+    metal::float3 x_15 = vtx.position;
+    metal::float3 n_21 = vtx.normal;
+    metal::float3 ng_5 = vtx.gnormal;
     GpuMaterial m_2 = materials[vtx.material];
     metal::float3 wo_2 = vtx.wo;
-    metal::float3 _e23 = mirror_dir(n_20, wo_2);
-    metal::float4 _e30 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, metal::dot(n_20, wo_2));
+    metal::float3 _e23 = mirror_dir(n_21, wo_2);
+    metal::float4 _e30 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, metal::dot(n_21, wo_2));
     metal::float4 _e31 = range_lobe(_e30);
     uint _e34 = params.seed;
     uint _e37 = params.frame;
     uint _e38 = point_stream(_e34, i_4, _e37);
     uint _e39 = pick_stream(_e38);
     h = _e39;
-    Picks _e44 = bsh_collect(x_14, _e23, _e31, _e38, bsh_nodes, _buffer_sizes);
+    Picks _e44 = bsh_collect(x_15, _e23, _e31, _e38, bsh_nodes, _buffer_sizes);
     candidates[i_4] = _e44.n;
     float _e50 = reservoir_weight(_e44.n, K);
     uint2 loop_bound_4 = uint2(4294967295u);
@@ -1645,7 +1666,7 @@ kernel void main_(
             uint _e66 = s;
             uint _e69 = h;
             float _e70 = xi_from_bits(_e69);
-            metal::float3 _e71 = shade_pick(_e44.light.inner[_e66], x_14, n_20, ng_4, m_2, wo_2, _e23, _e30, _e31, _e50, _e44.n, _e61, _e70, geo_nodes, geo_tris, lights, r2_2, rt2_4, light_cones, params, _buffer_sizes);
+            metal::float3 _e71 = shade_pick(_e44.light.inner[_e66], x_15, n_21, ng_5, m_2, wo_2, _e23, _e30, _e31, _e50, _e44.n, _e61, _e70, geo_nodes, geo_tris, lights, r2_3, rt2_5, light_cones, params, _buffer_sizes);
             sum = _e64 + _e71;
         }
     }

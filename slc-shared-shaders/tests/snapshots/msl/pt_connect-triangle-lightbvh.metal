@@ -136,6 +136,7 @@ constant uint MAP_ORTHOGRAPHIC = 2u;
 constant float XI_STEP = 0.000000059604645;
 constant uint PICK_STREAM = 2654435769u;
 constant float TWO_PI = 6.2831855;
+constant float UNRANGED = 100000000000000000000000000000000000000.0;
 constant float CULL_RADIUS_SCALE = 1.000001;
 constant float SPHERE_PAD = 0.00000047683716;
 constant float SPHERE_HUGE = 340282350000000000000000000000000000000.0;
@@ -750,12 +751,12 @@ metal::float4 emitter_cone(
 ) {
     metal::float3 v_8 = p - center;
     float dist2_1 = metal::dot(v_8, v_8);
-    float r2_4 = radius * radius;
-    float d2_9 = metal::max(metal::max(dist2_1, r2_4), MIN_D2_);
+    float r2_5 = radius * radius;
+    float d2_9 = metal::max(metal::max(dist2_1, r2_5), MIN_D2_);
     metal::float3 wi_2 = (dist2_1 > 0.0) ? (v_8 / metal::float3(metal::sqrt(dist2_1))) : metal::float3(0.0, 0.0, 0.0);
     float cos_w = metal::dot(axis, wi_2);
     float _e25 = safe_sqrt(1.0 - (cos_w * cos_w));
-    float _e26 = subtended_cos(dist2_1, r2_4);
+    float _e26 = subtended_cos(dist2_1, r2_5);
     float _e30 = safe_sqrt(1.0 - (_e26 * _e26));
     float _e34 = safe_sqrt(1.0 - (cos_o * cos_o));
     float _e35 = cos_sub_clamped(_e25, cos_w, _e34, cos_o);
@@ -1012,8 +1013,8 @@ metal::float3 triangle_normal(
     metal::float3 c_2
 ) {
     bool local_15 = {};
-    metal::float3 n_18 = metal::cross(b_3 - a_4, c_2 - a_4);
-    float l2_ = metal::dot(n_18, n_18);
+    metal::float3 n_19 = metal::cross(b_3 - a_4, c_2 - a_4);
+    float l2_ = metal::dot(n_19, n_19);
     if (!(!((l2_ > 0.0)))) {
         local_15 = !((l2_ < 300000000000000000000000000000000000000.0));
     } else {
@@ -1023,7 +1024,7 @@ metal::float3 triangle_normal(
     if (_e17) {
         return metal::float3(0.0, 0.0, 0.0);
     }
-    return n_18 / metal::float3(metal::sqrt(l2_));
+    return n_19 / metal::float3(metal::sqrt(l2_));
 }
 
 float ray_triangle(
@@ -1155,12 +1156,12 @@ GeoHit trace(
         if (metal::all(loop_bound == uint2(0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         uint _e21 = node;
-        GpuGeoNode n_19 = geo_nodes[_e21];
+        GpuGeoNode n_20 = geo_nodes[_e21];
         float _e27 = hit.t;
-        float _e28 = ray_aabb(o_2, _e14, n_19.bmin, n_19.bmax, _e27);
+        float _e28 = ray_aabb(o_2, _e14, n_20.bmin, n_20.bmax, _e27);
         if (_e28 >= 0.0) {
-            if (n_19.count > 0u) {
-                i = n_19.first;
+            if (n_20.count > 0u) {
+                i = n_20.first;
                 uint2 loop_bound_1 = uint2(4294967295u);
                 bool loop_init = true;
                 while(true) {
@@ -1172,7 +1173,7 @@ GeoHit trace(
                     }
                     loop_init = false;
                     uint _e36 = i;
-                    if (_e36 < (n_19.first + n_19.count)) {
+                    if (_e36 < (n_20.first + n_20.count)) {
                     } else {
                         break;
                     }
@@ -1196,11 +1197,11 @@ GeoHit trace(
                 uint _e60 = sp;
                 if (_e60 < 64u) {
                     uint _e63 = sp;
-                    stack.inner[_e63] = n_19.first + 1u;
+                    stack.inner[_e63] = n_20.first + 1u;
                     uint _e68 = sp;
                     sp = _e68 + 1u;
                 }
-                node = n_19.first;
+                node = n_20.first;
                 continue;
             }
         }
@@ -1235,12 +1236,13 @@ bool occluded(
     return _e12.tri != NO_LIGHT;
 }
 
-Connection connect_traced(
-    uint li,
+Connection connect_record(
+    GpuLight l_8,
     metal::float3 x_4,
     metal::float3 n_12,
     metal::float3 ng_1,
-    float s,
+    float r2_3,
+    float rt2_4,
     float w_res,
     float u1_2,
     float u2_2,
@@ -1248,71 +1250,90 @@ Connection connect_traced(
     bool trace_1,
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
-    device type_9 const& lights,
-    device type_4 const& r2_3,
-    device type_4 const& rt2_4,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Connection c_4 = {};
     bool local_19 = {};
     bool local_20 = {};
     c_4.e = metal::float3(0.0);
-    GpuLight l_8 = lights[li];
-    metal::float3 _e18 = light_point(l_8, u1_2, u2_2);
-    c_4.y = _e18;
-    metal::float3 _e21 = c_4.y;
-    float _e24 = r2_3[li];
-    float _e26 = connection_cosine(x_4, _e21, n_12, ng_1, s * _e24);
-    c_4.cos_x = _e26;
-    float _e28 = c_4.cos_x;
-    if (!((_e28 <= 0.0))) {
+    metal::float3 _e16 = light_point(l_8, u1_2, u2_2);
+    c_4.y = _e16;
+    metal::float3 _e19 = c_4.y;
+    float _e20 = connection_cosine(x_4, _e19, n_12, ng_1, r2_3);
+    c_4.cos_x = _e20;
+    float _e22 = c_4.cos_x;
+    if (!((_e22 <= 0.0))) {
         if (trace_1) {
-            metal::float3 _e39 = c_4.y;
-            bool _e40 = occluded(x_4 + (ng_1 * eps), _e39, geo_nodes, geo_tris, _buffer_sizes);
-            local_20 = _e40;
+            metal::float3 _e33 = c_4.y;
+            bool _e34 = occluded(x_4 + (ng_1 * eps), _e33, geo_nodes, geo_tris, _buffer_sizes);
+            local_20 = _e34;
         } else {
             local_20 = false;
         }
-        bool _e42 = local_20;
-        local_19 = _e42;
+        bool _e36 = local_20;
+        local_19 = _e36;
     } else {
         local_19 = true;
     }
-    bool _e44 = local_19;
-    if (_e44) {
-        Connection _e45 = c_4;
-        return _e45;
+    bool _e38 = local_19;
+    if (_e38) {
+        Connection _e39 = c_4;
+        return _e39;
     }
-    metal::float3 _e47 = c_4.y;
-    metal::float3 v_12 = x_4 - _e47;
+    metal::float3 _e41 = c_4.y;
+    metal::float3 v_12 = x_4 - _e41;
     float d2_10 = metal::dot(v_12, v_12);
-    metal::float3 _e54 = light_intensity(l_8, v_12 / metal::float3(metal::sqrt(d2_10)));
-    float _e56 = c_4.cos_x;
-    float _e59 = rt2_4[li];
-    float _e61 = connection_factor(_e56, d2_10, s * _e59, w_res);
-    c_4.e = _e54 * _e61;
-    Connection _e63 = c_4;
-    return _e63;
+    metal::float3 _e48 = light_intensity(l_8, v_12 / metal::float3(metal::sqrt(d2_10)));
+    float _e50 = c_4.cos_x;
+    float _e51 = connection_factor(_e50, d2_10, rt2_4, w_res);
+    c_4.e = _e48 * _e51;
+    Connection _e53 = c_4;
+    return _e53;
 }
 
-Connection connect(
-    uint li_1,
+Connection connect_traced(
+    uint li,
     metal::float3 x_5,
     metal::float3 n_13,
     metal::float3 ng_2,
-    float s_1,
+    float s,
     float w_res_1,
     float u1_3,
     float u2_3,
     float eps_1,
+    bool trace_2,
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
     device type_9 const& lights,
-    device type_4 const& r2_3,
-    device type_4 const& rt2_4,
+    device type_4 const& r2_4,
+    device type_4 const& rt2_5,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Connection _e10 = connect_traced(li_1, x_5, n_13, ng_2, s_1, w_res_1, u1_3, u2_3, eps_1, true, geo_nodes, geo_tris, lights, r2_3, rt2_4, _buffer_sizes);
+    GpuLight _e12 = lights[li];
+    float _e15 = r2_4[li];
+    float _e19 = rt2_5[li];
+    Connection _e21 = connect_record(_e12, x_5, n_13, ng_2, s * _e15, s * _e19, w_res_1, u1_3, u2_3, eps_1, trace_2, geo_nodes, geo_tris, _buffer_sizes);
+    return _e21;
+}
+
+Connection connect(
+    uint li_1,
+    metal::float3 x_6,
+    metal::float3 n_14,
+    metal::float3 ng_3,
+    float s_1,
+    float w_res_2,
+    float u1_4,
+    float u2_4,
+    float eps_2,
+    device type_6 const& geo_nodes,
+    device type_7 const& geo_tris,
+    device type_9 const& lights,
+    device type_4 const& r2_4,
+    device type_4 const& rt2_5,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Connection _e10 = connect_traced(li_1, x_6, n_14, ng_3, s_1, w_res_2, u1_4, u2_4, eps_2, true, geo_nodes, geo_tris, lights, r2_4, rt2_5, _buffer_sizes);
     return _e10;
 }
 
@@ -1326,14 +1347,14 @@ float mis_weight(
 
 float light_range_scale(
     uint li_2,
-    metal::float3 x_6,
+    metal::float3 x_7,
     metal::float3 r_3,
     metal::float4 rl_2,
     device type_10 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuLightCone c_9 = light_cones[li_2];
-    float _e9 = range_scale_toward(rl_2, c_9.center, c_9.radius, x_6, r_3);
+    float _e9 = range_scale_toward(rl_2, c_9.center, c_9.radius, x_7, r_3);
     return _e9;
 }
 
@@ -1358,23 +1379,23 @@ uint light_bvh_count(
 float bvh_importance(
     BvhNodes nodes_2,
     uint i_2,
-    metal::float3 x_7,
-    metal::float3 n_14,
+    metal::float3 x_8,
+    metal::float3 n_15,
     metal::float3 r_4,
     metal::float4 lobe_7,
     device type_11 const& light_bvh,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuLightBvhNode _e6 = light_bvh_node(nodes_2, i_2, light_bvh, _buffer_sizes);
-    float _e13 = receiver_importance(_e6.center, _e6.radius, _e6.phi, _e6.axis, _e6.cos_o, _e6.cos_e, x_7, n_14, r_4, lobe_7);
+    float _e13 = receiver_importance(_e6.center, _e6.radius, _e6.phi, _e6.axis, _e6.cos_o, _e6.cos_e, x_8, n_15, r_4, lobe_7);
     return _e13;
 }
 
 float bvh_first(
     BvhNodes nodes_3,
     uint i_3,
-    metal::float3 x_8,
-    metal::float3 n_15,
+    metal::float3 x_9,
+    metal::float3 n_16,
     metal::float3 r_5,
     metal::float4 lobe_8,
     device type_11 const& light_bvh,
@@ -1393,8 +1414,8 @@ float bvh_first(
     if (_e17) {
         return -1.0;
     }
-    float _e21 = bvh_importance(nodes_3, i_3 + 1u, x_8, n_15, r_5, lobe_8, light_bvh, _buffer_sizes);
-    float _e22 = bvh_importance(nodes_3, j, x_8, n_15, r_5, lobe_8, light_bvh, _buffer_sizes);
+    float _e21 = bvh_importance(nodes_3, i_3 + 1u, x_9, n_16, r_5, lobe_8, light_bvh, _buffer_sizes);
+    float _e22 = bvh_importance(nodes_3, j, x_9, n_16, r_5, lobe_8, light_bvh, _buffer_sizes);
     float _e23 = bvh_first_prob(_e21, _e22);
     return _e23;
 }
@@ -1406,8 +1427,8 @@ BvhPick bvh_pick_none(
 
 BvhPick light_bvh_sample(
     BvhNodes nodes_4,
-    metal::float3 x_9,
-    metal::float3 n_16,
+    metal::float3 x_10,
+    metal::float3 n_17,
     metal::float3 r_6,
     metal::float4 lobe_9,
     float u_in,
@@ -1438,7 +1459,7 @@ BvhPick light_bvh_sample(
             if (_e17.second == LIGHT_BVH_LEAF) {
                 uint _e21 = i_4;
                 if (!((_e21 > 0u))) {
-                    float _e28 = bvh_importance(nodes_4, 0u, x_9, n_16, r_6, lobe_9, light_bvh, _buffer_sizes);
+                    float _e28 = bvh_importance(nodes_4, 0u, x_10, n_17, r_6, lobe_9, light_bvh, _buffer_sizes);
                     local_22 = _e28 > 0.0;
                 } else {
                     local_22 = true;
@@ -1453,7 +1474,7 @@ BvhPick light_bvh_sample(
                 return _e37;
             }
             uint _e38 = i_4;
-            float _e39 = bvh_first(nodes_4, _e38, x_9, n_16, r_6, lobe_9, light_bvh, _buffer_sizes);
+            float _e39 = bvh_first(nodes_4, _e38, x_10, n_17, r_6, lobe_9, light_bvh, _buffer_sizes);
             if (_e39 < 0.0) {
                 BvhPick _e42 = pick;
                 return _e42;
@@ -1475,23 +1496,23 @@ BvhPick light_bvh_sample(
 
 float light_pdf_selected(
     uint li_3,
-    metal::float3 x_10,
+    metal::float3 x_11,
     metal::float3 r_7,
     metal::float4 rl_3,
     metal::float3 y_1,
     float sel,
     device type_9 const& lights,
-    device type_4 const& rt2_4,
+    device type_4 const& rt2_5,
     device type_10 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuLight l_9 = lights[li_3];
-    metal::float3 v_13 = x_10 - y_1;
+    metal::float3 v_13 = x_11 - y_1;
     float d2_11 = metal::dot(v_13, v_13);
     metal::float3 _e11 = light_normal(l_9);
     float cos_y_1 = (d2_11 > 0.0) ? metal::dot(_e11, v_13 / metal::float3(metal::sqrt(d2_11))) : 0.0;
-    float _e20 = light_range_scale(li_3, x_10, r_7, rl_3, light_cones, _buffer_sizes);
-    float _e23 = rt2_4[li_3];
+    float _e20 = light_range_scale(li_3, x_11, r_7, rl_3, light_cones, _buffer_sizes);
+    float _e23 = rt2_5[li_3];
     float _e25 = light_area(l_9);
     float _e26 = light_strategy_pdf(sel, _e20 * _e23, d2_11, _e25, cos_y_1);
     return _e26;
@@ -1499,9 +1520,9 @@ float light_pdf_selected(
 
 metal::float3 shade_pick(
     uint li_4,
-    metal::float3 x_11,
-    metal::float3 n_17,
-    metal::float3 ng_3,
+    metal::float3 x_12,
+    metal::float3 n_18,
+    metal::float3 ng_4,
     GpuMaterial m,
     metal::float3 wo_1,
     metal::float3 r_8,
@@ -1509,35 +1530,35 @@ metal::float3 shade_pick(
     metal::float4 rl_4,
     float w_4,
     uint nee,
-    float u1_4,
-    float u2_4,
+    float u1_5,
+    float u2_5,
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
     device type_9 const& lights,
-    device type_4 const& r2_3,
-    device type_4 const& rt2_4,
+    device type_4 const& r2_4,
+    device type_4 const& rt2_5,
     device type_10 const& light_cones,
     constant ShadeParams& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     float mis = 1.0;
-    float _e13 = light_range_scale(li_4, x_11, r_8, rl_4, light_cones, _buffer_sizes);
+    float _e13 = light_range_scale(li_4, x_12, r_8, rl_4, light_cones, _buffer_sizes);
     float _e16 = params.eps;
-    Connection _e17 = connect(li_4, x_11, n_17, ng_3, _e13, w_4, u1_4, u2_4, _e16, geo_nodes, geo_tris, lights, r2_3, rt2_4, _buffer_sizes);
+    Connection _e17 = connect(li_4, x_12, n_18, ng_4, _e13, w_4, u1_5, u2_5, _e16, geo_nodes, geo_tris, lights, r2_4, rt2_5, _buffer_sizes);
     if (_e17.cos_x <= 0.0) {
         return metal::float3(0.0);
     }
-    metal::float3 l_10 = metal::normalize(_e17.y - x_11);
+    metal::float3 l_10 = metal::normalize(_e17.y - x_12);
     GpuLight _e30 = lights[li_4];
     float _e31 = light_area(_e30);
     if (_e31 > 0.0) {
-        float _e37 = light_pdf_selected(li_4, x_11, r_8, rl_4, _e17.y, 1.0 / w_4, lights, rt2_4, light_cones, _buffer_sizes);
+        float _e37 = light_pdf_selected(li_4, x_12, r_8, rl_4, _e17.y, 1.0 / w_4, lights, rt2_5, light_cones, _buffer_sizes);
         float _e39 = specular_probability(lobe_10);
-        float _e40 = bsdf_pdf(n_17, wo_1, l_10, m.alpha, _e39);
+        float _e40 = bsdf_pdf(n_18, wo_1, l_10, m.alpha, _e39);
         float _e41 = mis_weight(_e37, _e40);
         mis = _e41;
     }
-    metal::float3 _e47 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_17, wo_1, l_10);
+    metal::float3 _e47 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_18, wo_1, l_10);
     float _e50 = mis;
     return (_e47 * _e17.e) * _e50;
 }
@@ -1549,8 +1570,8 @@ kernel void main_(
 , device type_6 const& geo_nodes [[user(fake0)]]
 , device type_7 const& geo_tris [[user(fake0)]]
 , device type_9 const& lights [[user(fake0)]]
-, device type_4 const& r2_3 [[user(fake0)]]
-, device type_4 const& rt2_4 [[user(fake0)]]
+, device type_4 const& r2_4 [[user(fake0)]]
+, device type_4 const& rt2_5 [[user(fake0)]]
 , device type_10 const& light_cones [[user(fake0)]]
 , device type_11 const& light_bvh [[user(fake0)]]
 , constant ShadeParams& params [[user(fake0)]]
@@ -1572,13 +1593,13 @@ kernel void main_(
         candidates[i_5] = 0u;
         return;
     }
-    metal::float3 x_12 = vtx.position;
-    metal::float3 n_20 = vtx.normal;
-    metal::float3 ng_4 = vtx.gnormal;
+    metal::float3 x_13 = vtx.position;
+    metal::float3 n_21 = vtx.normal;
+    metal::float3 ng_5 = vtx.gnormal;
     GpuMaterial m_2 = materials[vtx.material];
     metal::float3 wo_2 = vtx.wo;
-    metal::float3 _e23 = mirror_dir(n_20, wo_2);
-    metal::float4 _e30 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, metal::dot(n_20, wo_2));
+    metal::float3 _e23 = mirror_dir(n_21, wo_2);
+    metal::float4 _e30 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, metal::dot(n_21, wo_2));
     metal::float4 _e31 = range_lobe(_e30);
     uint _e34 = params.seed;
     uint _e37 = params.frame;
@@ -1591,7 +1612,7 @@ kernel void main_(
     h = _e48;
     uint _e49 = h;
     float _e50 = xi_from_bits(_e49);
-    BvhPick _e52 = light_bvh_sample(BVH, x_12, n_20, _e23, _e30, _e50, light_bvh, _buffer_sizes);
+    BvhPick _e52 = light_bvh_sample(BVH, x_13, n_21, _e23, _e30, _e50, light_bvh, _buffer_sizes);
     uint li_5 = _e52.light;
     float pmf_1 = _e52.pmf;
     uint _e55 = h;
@@ -1605,7 +1626,7 @@ kernel void main_(
     uint _e61 = h;
     float _e62 = xi_from_bits(_e61);
     if (pmf_1 > 0.0) {
-        metal::float3 _e68 = shade_pick(li_5, x_12, n_20, ng_4, m_2, wo_2, _e23, _e30, _e31, 1.0 / pmf_1, 0u, _e58, _e62, geo_nodes, geo_tris, lights, r2_3, rt2_4, light_cones, params, _buffer_sizes);
+        metal::float3 _e68 = shade_pick(li_5, x_13, n_21, ng_5, m_2, wo_2, _e23, _e30, _e31, 1.0 / pmf_1, 0u, _e58, _e62, geo_nodes, geo_tris, lights, r2_4, rt2_5, light_cones, params, _buffer_sizes);
         sum = _e68;
     }
     metal::float3 _e70 = sum;

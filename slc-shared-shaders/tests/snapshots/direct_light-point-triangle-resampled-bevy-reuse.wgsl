@@ -1,0 +1,1706 @@
+struct GpuLight {
+    p0_: vec3<f32>,
+    kind: u32,
+    p1_: vec3<f32>,
+    a: f32,
+    p2_: vec3<f32>,
+    b: f32,
+    intensity: vec3<f32>,
+    ies_base: u32,
+}
+
+struct GpuLightCone {
+    center: vec3<f32>,
+    radius: f32,
+    axis: vec3<f32>,
+    cos_o: f32,
+    phi: f32,
+    cos_e: f32,
+    bvh_leaf: u32,
+    pad: u32,
+}
+
+struct GpuGeoNode {
+    bmin: vec3<f32>,
+    first: u32,
+    bmax: vec3<f32>,
+    count: u32,
+}
+
+struct GpuTriangle {
+    v0_: vec3<f32>,
+    material: u32,
+    v1_: vec3<f32>,
+    light: u32,
+    v2_: vec3<f32>,
+    pad: u32,
+}
+
+struct ReuseParams {
+    c0_: vec4<f32>,
+    c1_: vec4<f32>,
+    c2_: vec4<f32>,
+    c3_: vec4<f32>,
+    prev_eye: vec3<f32>,
+    max_confidence: f32,
+    has_history: u32,
+    radius: f32,
+    visibility: u32,
+    pad0_: u32,
+}
+
+struct ReuseSurface {
+    x: vec3<f32>,
+    m: f32,
+    n: vec3<f32>,
+    base: u32,
+    rough: u32,
+    pad0_: u32,
+    pad1_: u32,
+    pad2_: u32,
+}
+
+struct ReuseSlot {
+    light: u32,
+    u: u32,
+    w: f32,
+}
+
+struct ViewParams {
+    c0_: vec4<f32>,
+    c1_: vec4<f32>,
+    c2_: vec4<f32>,
+    c3_: vec4<f32>,
+    eye: vec3<f32>,
+    width: u32,
+    height: u32,
+    shadow_offset: f32,
+    seed: u32,
+    frame: u32,
+    f0_d: vec3<f32>,
+    f90_d: f32,
+}
+
+struct BshNode {
+    center: vec3<f32>,
+    radius: f32,
+    child: u32,
+    next: u32,
+    light: u32,
+    extent: f32,
+}
+
+struct GeoHit {
+    t: f32,
+    tri: u32,
+}
+
+struct ReusePixel {
+    surface: ReuseSurface,
+    slots: array<ReuseSlot, 8>,
+}
+
+struct Connection {
+    e: vec3<f32>,
+    y: vec3<f32>,
+    cos_x: f32,
+}
+
+struct Shaded {
+    e: vec3<f32>,
+    diffuse: vec3<f32>,
+    specular: vec3<f32>,
+}
+
+struct Material {
+    base: vec3<f32>,
+    metallic: f32,
+    alpha: f32,
+    v: vec3<f32>,
+    roughness: f32,
+    reflectance: f32,
+}
+
+struct Domain {
+    pixel: u32,
+    x: vec3<f32>,
+    n: vec3<f32>,
+    m: Material,
+    c: f32,
+}
+
+const LIGHT_POINT: u32 = 0u;
+const LIGHT_SPOT: u32 = 1u;
+const LIGHT_IES: u32 = 2u;
+const LIGHT_TRIANGLE: u32 = 3u;
+const LIGHT_VPL: u32 = 4u;
+const NO_LIGHT: u32 = 4294967295u;
+const COUNT_TILES: u32 = 0u;
+const COUNT_GROUP_TESTS: u32 = 1u;
+const COUNT_CLUSTER_TESTS: u32 = 2u;
+const COUNT_SPHERE_TESTS: u32 = 3u;
+const COUNT_TESTED: u32 = 4u;
+const COUNT_KEPT: u32 = 5u;
+const COUNT_PIXELS: u32 = 6u;
+const COUNT_FIELDS: u32 = 7u;
+const MAP_CAMERA: u32 = 0u;
+const MAP_PERSPECTIVE: u32 = 1u;
+const MAP_ORTHOGRAPHIC: u32 = 2u;
+const XI_STEP: f32 = 0.000000059604645f;
+const PICK_STREAM: u32 = 2654435769u;
+const TWO_PI: f32 = 6.2831855f;
+const UNRANGED: f32 = 100000000000000000000000000000000000000f;
+const CULL_RADIUS_SCALE: f32 = 1.000001f;
+const SPHERE_PAD: f32 = 0.00000047683716f;
+const SPHERE_HUGE: f32 = 340282350000000000000000000000000000000f;
+const SPHERE_PAD_ABS: f32 = 0.000000000000000001f;
+const CLUSTER: u32 = 64u;
+const GROUP_SIDE: u32 = 8u;
+const INV_PI: f32 = 0.31830987f;
+const MIN_D2_: f32 = 0.000000000001f;
+const MAX_INTENSITY: f32 = 72057594000000000f;
+const BSH_NONE: u32 = 4294967295u;
+const RESERVOIR_FULL: u32 = 4294967295u;
+const GGX_ALPHA_MIN: f32 = 0.001f;
+const RANGE_SCALE_MAX: f32 = 64f;
+const LIGHT_BVH_LEAF: u32 = 4294967295u;
+const ONE_MINUS_EPSILON: f32 = 0.99999994f;
+const F32_MAX: f32 = 340282350000000000000000000000000000000f;
+const DEPTH_NONE: f32 = 1000000000000000000000000000000f;
+const DEPTH_SIGMA: f32 = 0.05f;
+const COVER_WEIGHT: f32 = 0.1f;
+const ROULETTE_DEPTH: u32 = 2u;
+const TEMPORAL_MAX_HISTORY: f32 = 32f;
+const TEMPORAL_DEPTH_TOLERANCE: f32 = 0.01f;
+const TEMPORAL_MOTION_DEPTH_TOLERANCE: f32 = 0.05f;
+const TEMPORAL_NORMAL_COS: f32 = 0.9f;
+const TEMPORAL_MIN_MOMENTS: f32 = 8f;
+const TEMPORAL_CHANGED_HISTORY: f32 = 1f;
+const TEMPORAL_CHANGE_LOW: f32 = 4f;
+const TEMPORAL_CHANGE_HIGH: f32 = 8f;
+const TEMPORAL_MIN_WEIGHT: f32 = 0.01f;
+const K: u32 = 8u;
+const BSH: u32 = 0u;
+const DOMAINS: u32 = 3u;
+
+@group(1) @binding(6) 
+var<storage> geo_nodes: array<GpuGeoNode>;
+@group(1) @binding(7) 
+var<storage> geo_tris: array<GpuTriangle>;
+@group(0) @binding(0) 
+var<uniform> view: ViewParams;
+@group(0) @binding(1) 
+var position_tex: texture_2d<f32>;
+@group(0) @binding(2) 
+var normal_tex: texture_2d<f32>;
+@group(0) @binding(3) 
+var out_tex: texture_storage_2d<rgba16float,write>;
+@group(0) @binding(4) 
+var base_color_tex: texture_2d<f32>;
+@group(0) @binding(5) 
+var metal_rough_tex: texture_2d<f32>;
+@group(1) @binding(1) 
+var<storage> lights: array<GpuLight>;
+@group(1) @binding(2) 
+var<storage> rt2_3: array<f32>;
+@group(1) @binding(3) 
+var<storage> r2_3: array<f32>;
+@group(1) @binding(4) 
+var<storage> bsh_nodes: array<BshNode>;
+@group(1) @binding(5) 
+var<storage> light_cones: array<GpuLightCone>;
+@group(0) @binding(7) 
+var<uniform> reuse: ReuseParams;
+@group(1) @binding(8) 
+var<storage> lights_prev: array<GpuLight>;
+@group(1) @binding(9) 
+var<storage> reuse_prev: array<ReusePixel>;
+@group(1) @binding(10) 
+var<storage, read_write> reuse_next: array<ReusePixel>;
+
+fn to_f32_(u: u32) -> f32 {
+    return f32(u);
+}
+
+fn mul_lo_u32_(a: u32, b_1: u32) -> u32 {
+    return (a * b_1);
+}
+
+fn add_wrap_u32_(a_1: u32, b_2: u32) -> u32 {
+    return (a_1 + b_2);
+}
+
+fn f32_from_bits(u_1: u32) -> f32 {
+    return bitcast<f32>(u_1);
+}
+
+fn xi_from_bits(bits: u32) -> f32 {
+    let _e3 = to_f32_((bits >> 8u));
+    return (_e3 * XI_STEP);
+}
+
+fn pcg_hash(x: u32) -> u32 {
+    let _e2 = mul_lo_u32_(x, 747796405u);
+    let _e4 = add_wrap_u32_(_e2, 2891336453u);
+    let _e12 = mul_lo_u32_(((_e4 >> ((_e4 >> 28u) + 4u)) ^ _e4), 277803737u);
+    return ((_e12 >> 22u) ^ _e12);
+}
+
+fn point_stream(seed: u32, point: u32, frame: u32) -> u32 {
+    let _e3 = pcg_hash(frame);
+    let _e5 = pcg_hash((point ^ _e3));
+    let _e7 = pcg_hash((seed ^ _e5));
+    return _e7;
+}
+
+fn pick_stream(stream: u32) -> u32 {
+    let _e3 = pcg_hash((stream ^ PICK_STREAM));
+    return _e3;
+}
+
+fn reuse_stream(stream_1: u32, which: u32) -> u32 {
+    let _e2 = pick_stream(stream_1);
+    let _e6 = pcg_hash(((_e2 + 1u) + which));
+    return _e6;
+}
+
+fn slc_weight(rt2_: f32, d2_: f32) -> f32 {
+    if (d2_ <= rt2_) {
+        return 1f;
+    }
+    return (d2_ / rt2_);
+}
+
+fn slc_keep(r2_: f32, d2_1: f32) -> bool {
+    return (d2_1 < r2_);
+}
+
+fn sphere_contains_point(c: vec3<f32>, r_1: f32, x_1: vec3<f32>) -> bool {
+    let v_5 = (x_1 - c);
+    return (dot(v_5, v_5) <= (r_1 * r_1));
+}
+
+fn inverse_square(d2_2: f32) -> f32 {
+    return (1f / max(d2_2, MIN_D2_));
+}
+
+fn connection_factor(cos_x: f32, d2_3: f32, rt2_1: f32, w_1: f32) -> f32 {
+    let _e4 = inverse_square(d2_3);
+    let _e6 = slc_weight(rt2_1, d2_3);
+    return (((cos_x * _e4) * _e6) * w_1);
+}
+
+fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, r2_1: f32) -> f32 {
+    var local_8: bool;
+    var local_9: bool;
+
+    let v_6 = (x_2 - y);
+    let d2_6 = dot(v_6, v_6);
+    let _e7 = slc_keep(r2_1, d2_6);
+    if !(!(_e7)) {
+        local_8 = !((d2_6 > 0f));
+    } else {
+        local_8 = true;
+    }
+    let _e16 = local_8;
+    if _e16 {
+        return 0f;
+    }
+    let w_7 = (v_6 / vec3(sqrt(d2_6)));
+    let cos_x_1 = -(dot(n, w_7));
+    if !((cos_x_1 <= 0f)) {
+        local_9 = (dot(ng, w_7) >= 0f);
+    } else {
+        local_9 = true;
+    }
+    let _e32 = local_9;
+    if _e32 {
+        return 0f;
+    }
+    return cos_x_1;
+}
+
+fn triangle_lobe(n_1: vec3<f32>, area: f32, w_2: vec3<f32>) -> f32 {
+    return (area * max(dot(n_1, w_2), 0f));
+}
+
+fn triangle_sample(a_2: vec3<f32>, b_3: vec3<f32>, c_1: vec3<f32>, u1_: f32, u2_: f32) -> vec3<f32> {
+    let su = sqrt(u1_);
+    let b0_ = (1f - su);
+    let b1_ = (u2_ * su);
+    return (((a_2 * b0_) + (b_3 * b1_)) + (c_1 * ((1f - b0_) - b1_)));
+}
+
+fn bsh_scaled_radius(node: BshNode, scale: f32) -> f32 {
+    if (scale == 1f) {
+        return node.radius;
+    }
+    if (node.child == BSH_NONE) {
+        return (node.extent + (scale * (node.radius - node.extent)));
+    }
+    return (node.radius * scale);
+}
+
+fn bsh_range_bound(node_1: BshNode) -> f32 {
+    if (node_1.child == BSH_NONE) {
+        return (node_1.radius - node_1.extent);
+    }
+    let _e8 = f32_from_bits(node_1.light);
+    return _e8;
+}
+
+fn weighted_replace(w_3: f32, w_sum_1: f32, u_2: f32) -> bool {
+    return ((u_2 * w_sum_1) < w_3);
+}
+
+fn resample_target(c_2: vec3<f32>) -> f32 {
+    return (((c_2.x + c_2.y) + c_2.z) * 0.33333334f);
+}
+
+fn grid_coordinate(bits_1: u32) -> f32 {
+    let _e3 = to_f32_((bits_1 >> 16u));
+    return ((_e3 + 0.5f) / 65536f);
+}
+
+fn grid_cells(h1_: u32, h2_: u32) -> u32 {
+    return ((h1_ & 4294901760u) | (h2_ >> 16u));
+}
+
+fn disk_offset(r_2: f32, u1_1: f32, u2_1: f32) -> vec2<f32> {
+    let a_9 = (TWO_PI * u2_1);
+    return (vec2<f32>(cos(a_9), sin(a_9)) * (r_2 * sqrt(u1_1)));
+}
+
+fn gris_weight(own_1: f32, all_1: f32, p_hat: f32, w_4: f32) -> f32 {
+    if !((all_1 > 0f)) {
+        return 0f;
+    }
+    return (((own_1 / all_1) * p_hat) * w_4);
+}
+
+fn gris_contribution_weight(w_sum_2: f32, p_hat_1: f32) -> f32 {
+    if !((p_hat_1 > 0f)) {
+        return 0f;
+    }
+    return (w_sum_2 / p_hat_1);
+}
+
+fn ggx_d(cos_h: f32, sin2_h: f32, alpha: f32) -> f32 {
+    if (cos_h <= 0f) {
+        return 0f;
+    }
+    let a2_ = (alpha * alpha);
+    let t_1 = (((cos_h * cos_h) * a2_) + sin2_h);
+    return ((a2_ * INV_PI) / (t_1 * t_1));
+}
+
+fn smith_root(cos_: f32, alpha_1: f32) -> f32 {
+    let a2_1 = (alpha_1 * alpha_1);
+    return sqrt((((cos_ * cos_) * (1f - a2_1)) + a2_1));
+}
+
+fn smith_visibility(n_l: f32, n_v: f32, alpha_2: f32) -> f32 {
+    var local_10: bool;
+
+    if !((n_l <= 0f)) {
+        local_10 = (n_v <= 0f);
+    } else {
+        local_10 = true;
+    }
+    let _e11 = local_10;
+    if _e11 {
+        return 0f;
+    }
+    let _e13 = smith_root(n_v, alpha_2);
+    let _e15 = smith_root(n_l, alpha_2);
+    return (0.5f / ((n_l * _e13) + (n_v * _e15)));
+}
+
+fn fresnel_schlick(f0_: vec3<f32>, f90_: f32, v_h: f32) -> vec3<f32> {
+    let c_9 = saturate((1f - v_h));
+    let c2_1 = (c_9 * c_9);
+    return (f0_ + ((vec3<f32>(f90_, f90_, f90_) - f0_) * ((c2_1 * c2_1) * c_9)));
+}
+
+fn specular_fresnel(base: vec3<f32>, metallic: f32, f0_d: vec3<f32>, f90_d: f32, v_h_1: f32) -> vec3<f32> {
+    let _e5 = fresnel_schlick(f0_d, f90_d, v_h_1);
+    let _e10 = fresnel_schlick(base, 1f, v_h_1);
+    return ((_e5 * (1f - metallic)) + (_e10 * metallic));
+}
+
+fn has_specular(metallic_1: f32, f0_d_1: vec3<f32>, f90_d_1: f32) -> bool {
+    var local_11: bool;
+    var local_12: bool;
+
+    if !((metallic_1 > 0f)) {
+        local_11 = (f90_d_1 > 0f);
+    } else {
+        local_11 = true;
+    }
+    let _e11 = local_11;
+    if !(_e11) {
+        local_12 = (max(max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0f);
+    } else {
+        local_12 = true;
+    }
+    let _e23 = local_12;
+    return _e23;
+}
+
+fn channel_mean(c_3: vec3<f32>) -> f32 {
+    return (((c_3.x + c_3.y) + c_3.z) * 0.33333334f);
+}
+
+fn receiver_lobe(base_1: vec3<f32>, metallic_2: f32, f0_d_2: vec3<f32>, f90_d_2: f32, alpha_3: f32, n_v_1: f32) -> vec4<f32> {
+    var local_13: bool;
+
+    let _e10 = fresnel_schlick(f0_d_2, f90_d_2, n_v_1);
+    let _e16 = channel_mean((((vec3<f32>(1f, 1f, 1f) - _e10) * base_1) * (1f - metallic_2)));
+    if !((n_v_1 <= 0f)) {
+        let _e22 = has_specular(metallic_2, f0_d_2, f90_d_2);
+        local_13 = !(_e22);
+    } else {
+        local_13 = true;
+    }
+    let _e25 = local_13;
+    if _e25 {
+        return vec4<f32>(_e16, 0f, alpha_3, n_v_1);
+    }
+    let _e28 = specular_fresnel(base_1, metallic_2, f0_d_2, f90_d_2, n_v_1);
+    let _e29 = channel_mean(_e28);
+    return vec4<f32>(_e16, _e29, alpha_3, n_v_1);
+}
+
+fn specular_peak_factor(lobe_1: vec4<f32>) -> f32 {
+    let _e6 = smith_root(lobe_1.w, lobe_1.z);
+    return ((lobe_1.y * 0.5f) / (_e6 + max(lobe_1.w, 0f)));
+}
+
+fn receiver_peak(lobe_2: vec4<f32>) -> f32 {
+    let _e2 = specular_peak_factor(lobe_2);
+    return (lobe_2.x + (_e2 / (lobe_2.z * lobe_2.z)));
+}
+
+fn range_scale(lobe_3: vec4<f32>) -> f32 {
+    if (lobe_3.y <= 0f) {
+        return 1f;
+    }
+    let _e5 = receiver_peak(lobe_3);
+    return clamp(_e5, 1f, RANGE_SCALE_MAX);
+}
+
+fn range_lobe(lobe_4: vec4<f32>) -> vec4<f32> {
+    if (lobe_4.y <= 0f) {
+        return vec4<f32>(1f, 0f, 1f, 1f);
+    }
+    let _e10 = specular_peak_factor(lobe_4);
+    let _e14 = range_scale(lobe_4);
+    return vec4<f32>(lobe_4.x, _e10, (lobe_4.z * lobe_4.z), sqrt(_e14));
+}
+
+fn mirror_dir(n_2: vec3<f32>, v: vec3<f32>) -> vec3<f32> {
+    return ((n_2 * (2f * dot(n_2, v))) - v);
+}
+
+fn bevy_alpha(perceptual: f32) -> f32 {
+    let r_11 = clamp(perceptual, 0.089f, 1f);
+    return (r_11 * r_11);
+}
+
+fn bevy_f0_(reflectance: f32) -> f32 {
+    return ((0.16f * reflectance) * reflectance);
+}
+
+fn bevy_dfg(r_3: f32, n_v_2: f32) -> f32 {
+    let rx = (1f - r_3);
+    let a004_ = ((min((rx * rx), exp2((-9.28f * n_v_2))) * rx) + (0.0425f - (0.0275f * r_3)));
+    let x_14 = max(((1.04f - (0.572f * r_3)) - (1.04f * a004_)), 0.00005f);
+    let y_1 = max((((0.022f * r_3) - 0.04f) + (1.04f * a004_)), 0.00005f);
+    return (x_14 + y_1);
+}
+
+fn bevy_brdf(base_2: vec3<f32>, metallic_3: f32, r_4: f32, reflectance_1: f32, n_3: vec3<f32>, v_1: vec3<f32>, l: vec3<f32>) -> vec3<f32> {
+    let n_l_1 = saturate(dot(n_3, l));
+    if (n_l_1 <= 0f) {
+        return vec3<f32>(0f, 0f, 0f);
+    }
+    let _e15 = bevy_alpha(r_4);
+    let n_v_3 = max(dot(n_3, v_1), 0.0001f);
+    let h_2 = normalize((l + v_1));
+    let n_h = saturate(dot(n_3, h_2));
+    let l_h = saturate(dot(l, h_2));
+    let f90_d_3 = (0.5f + (((2f * _e15) * l_h) * l_h));
+    let _e35 = fresnel_schlick(vec3<f32>(1f, 1f, 1f), f90_d_3, n_l_1);
+    let _e41 = fresnel_schlick(vec3<f32>(1f, 1f, 1f), f90_d_3, n_v_3);
+    let burley = ((_e35.x * _e41.x) * INV_PI);
+    let _e46 = bevy_f0_(reflectance_1);
+    let f0_1 = ((vec3<f32>(_e46, _e46, _e46) * (1f - metallic_3)) + (base_2 * metallic_3));
+    let f90_1 = saturate((((f0_1.x + f0_1.y) + f0_1.z) * 16.5f));
+    let _e64 = ggx_d(n_h, (1f - (n_h * n_h)), _e15);
+    let _e65 = smith_visibility(n_l_1, n_v_3, _e15);
+    let _e70 = bevy_dfg(r_4, n_v_3);
+    let comp = (vec3<f32>(1f, 1f, 1f) + (f0_1 * ((1f / _e70) - 1f)));
+    let _e77 = fresnel_schlick(f0_1, f90_1, l_h);
+    let spec = ((_e77 * comp) * (_e64 * _e65));
+    return ((base_2 * ((1f - metallic_3) * burley)) + spec);
+}
+
+fn cone_cos_of(v_2: vec3<f32>, d2_4: f32, a_3: f32, d: vec3<f32>) -> f32 {
+    var local_14: bool;
+    var local_15: bool;
+
+    let vd = dot(v_2, d);
+    let h2_1 = (d2_4 - (a_3 * a_3));
+    if !((h2_1 <= 0f)) {
+        if (vd >= 0f) {
+            local_15 = ((vd * vd) >= h2_1);
+        } else {
+            local_15 = false;
+        }
+        let _e19 = local_15;
+        local_14 = _e19;
+    } else {
+        local_14 = true;
+    }
+    let _e21 = local_14;
+    if _e21 {
+        return 1f;
+    }
+    let c_10 = cross(v_2, d);
+    return min((((vd * sqrt(h2_1)) + (sqrt(dot(c_10, c_10)) * a_3)) / d2_4), 1f);
+}
+
+fn cone_cos_toward(center: vec3<f32>, radius: f32, p: vec3<f32>, d_1: vec3<f32>) -> f32 {
+    let v_7 = (center - p);
+    let _e6 = cone_cos_of(v_7, dot(v_7, v_7), radius, d_1);
+    return _e6;
+}
+
+fn range_scale_at(rl: vec4<f32>, cos_t: f32) -> f32 {
+    let t_2 = (((0.5f + (0.5f * cos_t)) * (rl.z - 1f)) + 1f);
+    return clamp((rl.x + ((rl.y * rl.z) / (t_2 * t_2))), 1f, (rl.w * rl.w));
+}
+
+fn range_scale_toward(rl_1: vec4<f32>, center_1: vec3<f32>, radius_1: f32, p_1: vec3<f32>, r_5: vec3<f32>) -> f32 {
+    if (rl_1.w <= 1f) {
+        return 1f;
+    }
+    let _e9 = cone_cos_toward(center_1, radius_1, p_1, r_5);
+    let _e10 = range_scale_at(rl_1, _e9);
+    return _e10;
+}
+
+fn shadow_margin(len: f32) -> f32 {
+    return (0.0001f * len);
+}
+
+fn ray_inverse(x_3: f32) -> f32 {
+    return (1f / select(x_3, 0.000000000000000000000000000001f, (abs(x_3) < 0.000000000000000000000000000001f)));
+}
+
+fn ray_inverse3_(d_2: vec3<f32>) -> vec3<f32> {
+    let _e2 = ray_inverse(d_2.x);
+    let _e4 = ray_inverse(d_2.y);
+    let _e6 = ray_inverse(d_2.z);
+    return vec3<f32>(_e2, _e4, _e6);
+}
+
+fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin: vec3<f32>, bmax: vec3<f32>, t_max: f32) -> f32 {
+    let t0_ = ((bmin - o) * inv_d);
+    let t1_ = ((bmax - o) * inv_d);
+    let lo = min(t0_, t1_);
+    let hi = max(t0_, t1_);
+    let t_in = max(max(lo.x, lo.y), max(lo.z, 0f));
+    let t_out = min(min(hi.x, hi.y), min(hi.z, t_max));
+    if (t_in <= t_out) {
+        return t_in;
+    }
+    return -1f;
+}
+
+fn triangle_normal(a_4: vec3<f32>, b_4: vec3<f32>, c_4: vec3<f32>) -> vec3<f32> {
+    var local_16: bool;
+
+    let n_12 = cross((b_4 - a_4), (c_4 - a_4));
+    let l2_ = dot(n_12, n_12);
+    if !(!((l2_ > 0f))) {
+        local_16 = !((l2_ < 300000000000000000000000000000000000000f));
+    } else {
+        local_16 = true;
+    }
+    let _e17 = local_16;
+    if _e17 {
+        return vec3<f32>(0f, 0f, 0f);
+    }
+    return (n_12 / vec3(sqrt(l2_)));
+}
+
+fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_5: vec3<f32>, c_5: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
+    var local_17: bool;
+    var local_18: bool;
+    var local_19: bool;
+
+    let e1_ = (b_5 - a_5);
+    let e2_ = (c_5 - a_5);
+    let p_5 = cross(d_3, e2_);
+    let det = dot(e1_, p_5);
+    if (abs(det) <= 0f) {
+        return -1f;
+    }
+    let inv = (1f / det);
+    let s_4 = (o_1 - a_5);
+    let u_3 = (dot(s_4, p_5) * inv);
+    if !((u_3 < 0f)) {
+        local_17 = (u_3 > 1f);
+    } else {
+        local_17 = true;
+    }
+    let _e28 = local_17;
+    if _e28 {
+        return -1f;
+    }
+    let q_3 = cross(s_4, e1_);
+    let v_8 = (dot(d_3, q_3) * inv);
+    if !((v_8 < 0f)) {
+        local_18 = ((u_3 + v_8) > 1f);
+    } else {
+        local_18 = true;
+    }
+    let _e42 = local_18;
+    if _e42 {
+        return -1f;
+    }
+    let t_3 = (dot(e2_, q_3) * inv);
+    if (t_3 > t_min) {
+        local_19 = (t_3 < t_max_1);
+    } else {
+        local_19 = false;
+    }
+    let _e51 = local_19;
+    if _e51 {
+        return t_3;
+    }
+    return -1f;
+}
+
+fn reproject(c0_: vec4<f32>, c1_: vec4<f32>, c2_: vec4<f32>, c3_: vec4<f32>, p_2: vec3<f32>, width: f32, height: f32) -> vec3<f32> {
+    let clip = ((((c0_ * p_2.x) + (c1_ * p_2.y)) + (c2_ * p_2.z)) + c3_);
+    if (clip.w <= 0f) {
+        return vec3<f32>(-1f, -1f, 0f);
+    }
+    let x_15 = (((((clip.x / clip.w) + 1f) * 0.5f) * width) - 0.5f);
+    let y_2 = ((((1f - (clip.y / clip.w)) * 0.5f) * height) - 0.5f);
+    return vec3<f32>(x_15, y_2, clip.w);
+}
+
+fn history_matches(n_4: vec3<f32>, nh: vec3<f32>, p_3: vec3<f32>, oh: f32, d_4: f32) -> bool {
+    var local_20: bool;
+
+    if (abs((dot(nh, p_3) - oh)) <= (TEMPORAL_DEPTH_TOLERANCE * d_4)) {
+        local_20 = (dot(n_4, nh) >= TEMPORAL_NORMAL_COS);
+    } else {
+        local_20 = false;
+    }
+    let _e17 = local_20;
+    return _e17;
+}
+
+fn light_intensity(l_1: GpuLight, w_5: vec3<f32>) -> vec3<f32> {
+    switch l_1.kind {
+        case 0u: {
+            return l_1.intensity;
+        }
+        case 3u: {
+            let _e8 = triangle_normal(l_1.p0_, l_1.p1_, l_1.p2_);
+            let _e10 = triangle_lobe(_e8, l_1.a, w_5);
+            return (l_1.intensity * _e10);
+        }
+        default: {
+            return vec3(0f);
+        }
+    }
+}
+
+fn light_point(l_2: GpuLight, u1_2: f32, u2_2: f32) -> vec3<f32> {
+    if (l_2.kind == LIGHT_TRIANGLE) {
+        let _e9 = triangle_sample(l_2.p0_, l_2.p1_, l_2.p2_, u1_2, u2_2);
+        return _e9;
+    }
+    return l_2.p0_;
+}
+
+fn trace(o_2: vec3<f32>, d_5: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bool) -> GeoHit {
+    var hit: GeoHit;
+    var stack: array<u32, 64>;
+    var sp: u32 = 0u;
+    var node_2: u32 = 0u;
+    var i: u32;
+
+    hit.t = t_max_2;
+    hit.tri = NO_LIGHT;
+    if (arrayLength((&geo_nodes)) == 0u) {
+        let _e13 = hit;
+        return _e13;
+    }
+    let _e14 = ray_inverse3_(d_5);
+    loop {
+        let _e21 = node_2;
+        let n_13 = geo_nodes[_e21];
+        let _e27 = hit.t;
+        let _e28 = ray_aabb(o_2, _e14, n_13.bmin, n_13.bmax, _e27);
+        if (_e28 >= 0f) {
+            if (n_13.count > 0u) {
+                i = n_13.first;
+                loop {
+                    let _e36 = i;
+                    if (_e36 < (n_13.first + n_13.count)) {
+                    } else {
+                        break;
+                    }
+                    {
+                        let _e42 = i;
+                        let t_4 = geo_tris[_e42];
+                        let _e49 = hit.t;
+                        let _e50 = ray_triangle(o_2, d_5, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e49);
+                        if (_e50 > 0f) {
+                            hit.t = _e50;
+                            let _e55 = i;
+                            hit.tri = _e55;
+                            if any_hit {
+                                let _e56 = hit;
+                                return _e56;
+                            }
+                        }
+                    }
+                    continuing {
+                        let _e58 = i;
+                        i = (_e58 + 1u);
+                    }
+                }
+            } else {
+                let _e60 = sp;
+                if (_e60 < 64u) {
+                    let _e63 = sp;
+                    stack[_e63] = (n_13.first + 1u);
+                    let _e68 = sp;
+                    sp = (_e68 + 1u);
+                }
+                node_2 = n_13.first;
+                continue;
+            }
+        }
+        let _e72 = sp;
+        if (_e72 == 0u) {
+            break;
+        }
+        let _e75 = sp;
+        sp = (_e75 - 1u);
+        let _e78 = sp;
+        let _e80 = stack[_e78];
+        node_2 = _e80;
+    }
+    let _e81 = hit;
+    return _e81;
+}
+
+fn occluded(a_6: vec3<f32>, b_6: vec3<f32>) -> bool {
+    let dv = (b_6 - a_6);
+    let len_1 = length(dv);
+    if (len_1 <= 0f) {
+        return false;
+    }
+    let _e7 = shadow_margin(len_1);
+    let _e12 = trace(a_6, (dv / vec3(len_1)), _e7, (len_1 - _e7), true);
+    return (_e12.tri != NO_LIGHT);
+}
+
+fn bsh_node(nodes: u32, i_1: u32) -> BshNode {
+    let _e4 = bsh_nodes[i_1];
+    return _e4;
+}
+
+fn bsh_count(nodes_1: u32) -> u32 {
+    return arrayLength((&bsh_nodes));
+}
+
+fn bsh_first(nodes_2: u32) -> u32 {
+    let _e1 = bsh_count(nodes_2);
+    if (_e1 > 0u) {
+        return 0u;
+    }
+    return BSH_NONE;
+}
+
+fn bsh_inner_scale(a_7: f32, v_3: vec3<f32>, d2_5: f32, r_6: vec3<f32>, rl_2: vec4<f32>) -> f32 {
+    let _e5 = cone_cos_of(v_3, d2_5, a_7, r_6);
+    let _e8 = range_scale_at(rl_2, (_e5 + 0.000002f));
+    return _e8;
+}
+
+fn bsh_reaches(node_3: BshNode, x_4: vec3<f32>, r_7: vec3<f32>, rl_3: vec4<f32>) -> bool {
+    var local_21: bool;
+    var local_22: bool;
+
+    let _e6 = sphere_contains_point(node_3.center, node_3.radius, x_4);
+    if _e6 {
+        return true;
+    }
+    if !((rl_3.w <= 1f)) {
+        let _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001f)), x_4);
+        local_21 = !(_e20);
+    } else {
+        local_21 = true;
+    }
+    let _e23 = local_21;
+    if _e23 {
+        return false;
+    }
+    let _e25 = bsh_range_bound(node_3);
+    let v_9 = (x_4 - node_3.center);
+    let d2_7 = dot(v_9, v_9);
+    let reach_max = (node_3.extent + ((rl_3.w * 1.001f) * _e25));
+    if (d2_7 > (reach_max * reach_max)) {
+        return false;
+    }
+    if (node_3.child == BSH_NONE) {
+        let _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_4, r_7);
+        let _e46 = bsh_scaled_radius(node_3, sqrt(_e43));
+        let _e47 = sphere_contains_point(node_3.center, _e46, x_4);
+        return _e47;
+    }
+    let _e50 = bsh_inner_scale(node_3.extent, -(v_9), d2_7, r_7, rl_3);
+    let s_c = (_e50 * 1.001f);
+    let reach = (node_3.extent + (sqrt(s_c) * _e25));
+    if (d2_7 <= ((node_3.radius * node_3.radius) * s_c)) {
+        local_22 = (d2_7 <= (reach * reach));
+    } else {
+        local_22 = false;
+    }
+    let _e67 = local_22;
+    return _e67;
+}
+
+fn bsh_next_leaf_lobe(nodes_3: u32, start: u32, x_5: vec3<f32>, r_8: vec3<f32>, rl_4: vec4<f32>) -> u32 {
+    var i_2: u32;
+
+    i_2 = start;
+    loop {
+        let _e6 = i_2;
+        if (_e6 != BSH_NONE) {
+        } else {
+            break;
+        }
+        {
+            let _e9 = i_2;
+            let _e10 = bsh_node(nodes_3, _e9);
+            let _e11 = bsh_reaches(_e10, x_5, r_8, rl_4);
+            if _e11 {
+                if (_e10.child == BSH_NONE) {
+                    let _e15 = i_2;
+                    return _e15;
+                }
+                i_2 = _e10.child;
+            } else {
+                i_2 = _e10.next;
+            }
+        }
+    }
+    return BSH_NONE;
+}
+
+fn connect_record(l_3: GpuLight, x_6: vec3<f32>, n_5: vec3<f32>, ng_1: vec3<f32>, r2_2: f32, rt2_2: f32, w_res: f32, u1_3: f32, u2_3: f32, eps: f32, trace_1: bool) -> Connection {
+    var c_6: Connection;
+    var local_23: bool;
+    var local_24: bool;
+
+    c_6.e = vec3(0f);
+    let _e16 = light_point(l_3, u1_3, u2_3);
+    c_6.y = _e16;
+    let _e19 = c_6.y;
+    let _e20 = connection_cosine(x_6, _e19, n_5, ng_1, r2_2);
+    c_6.cos_x = _e20;
+    let _e22 = c_6.cos_x;
+    if !((_e22 <= 0f)) {
+        if trace_1 {
+            let _e33 = c_6.y;
+            let _e34 = occluded((x_6 + (ng_1 * eps)), _e33);
+            local_24 = _e34;
+        } else {
+            local_24 = false;
+        }
+        let _e36 = local_24;
+        local_23 = _e36;
+    } else {
+        local_23 = true;
+    }
+    let _e38 = local_23;
+    if _e38 {
+        let _e39 = c_6;
+        return _e39;
+    }
+    let _e41 = c_6.y;
+    let v_10 = (x_6 - _e41);
+    let d2_8 = dot(v_10, v_10);
+    let _e48 = light_intensity(l_3, (v_10 / vec3(sqrt(d2_8))));
+    let _e50 = c_6.cos_x;
+    let _e51 = connection_factor(_e50, d2_8, rt2_2, w_res);
+    c_6.e = (_e48 * _e51);
+    let _e53 = c_6;
+    return _e53;
+}
+
+fn connect_traced(li_1: u32, x_7: vec3<f32>, n_6: vec3<f32>, ng_2: vec3<f32>, s: f32, w_res_1: f32, u1_4: f32, u2_4: f32, eps_1: f32, trace_2: bool) -> Connection {
+    let _e12 = lights[li_1];
+    let _e15 = r2_3[li_1];
+    let _e19 = rt2_3[li_1];
+    let _e21 = connect_record(_e12, x_7, n_6, ng_2, (s * _e15), (s * _e19), w_res_1, u1_4, u2_4, eps_1, trace_2);
+    return _e21;
+}
+
+fn light_range_scale(li_2: u32, x_8: vec3<f32>, r_9: vec3<f32>, rl_5: vec4<f32>) -> f32 {
+    let c_11 = light_cones[li_2];
+    let _e9 = range_scale_toward(rl_5, c_11.center, c_11.radius, x_8, r_9);
+    return _e9;
+}
+
+fn surface_at(texel: vec2<i32>) -> vec4<f32> {
+    let p_6 = textureLoad(position_tex, texel, 0i);
+    return select(vec4(0f), vec4<f32>(p_6.xyz, 1f), (p_6.w > 0f));
+}
+
+fn shade_connection(c_7: Connection, x_9: vec3<f32>, n_7: vec3<f32>, m_1: Material) -> Shaded {
+    var s_1: Shaded;
+
+    s_1.e = c_7.e;
+    s_1.diffuse = vec3(0f);
+    s_1.specular = vec3(0f);
+    if (c_7.cos_x > 0f) {
+        let _e25 = bevy_brdf(m_1.base, m_1.metallic, m_1.roughness, m_1.reflectance, n_7, m_1.v, normalize((c_7.y - x_9)));
+        s_1.diffuse = (_e25 * c_7.e);
+    }
+    let _e28 = s_1;
+    return _e28;
+}
+
+fn shade_pick_traced(li_3: u32, x_10: vec3<f32>, n_8: vec3<f32>, r_10: vec3<f32>, rl_6: vec4<f32>, m_2: Material, w_6: f32, u1_5: f32, u2_5: f32, eps_2: f32, trace_3: bool) -> Shaded {
+    let _e11 = light_range_scale(li_3, x_10, r_10, rl_6);
+    let _e12 = connect_traced(li_3, x_10, n_8, n_8, _e11, w_6, u1_5, u2_5, eps_2, trace_3);
+    let _e13 = shade_connection(_e12, x_10, n_8, m_2);
+    return _e13;
+}
+
+fn material_of(base_3: vec3<f32>, metallic_4: f32, roughness: f32, reflectance_2: f32, v_4: vec3<f32>) -> Material {
+    let _e6 = bevy_alpha(roughness);
+    return Material(base_3, saturate(metallic_4), _e6, v_4, roughness, reflectance_2);
+}
+
+fn add(a_8: Shaded, b_7: Shaded) -> Shaded {
+    return Shaded((a_8.e + b_7.e), (a_8.diffuse + b_7.diffuse), (a_8.specular + b_7.specular));
+}
+
+fn output_of(s_2: Shaded) -> vec3<f32> {
+    return (s_2.diffuse + s_2.specular);
+}
+
+fn reuse_target(l_4: GpuLight, cells_1: u32, x_11: vec3<f32>, n_9: vec3<f32>, m_3: Material) -> f32 {
+    let _e8 = grid_coordinate(cells_1);
+    let _e11 = grid_coordinate((cells_1 << 16u));
+    let _e14 = connect_record(l_4, x_11, n_9, n_9, UNRANGED, UNRANGED, 1f, _e8, _e11, 0f, false);
+    let _e15 = shade_connection(_e14, x_11, n_9, m_3);
+    let _e16 = output_of(_e15);
+    let _e17 = resample_target(_e16);
+    return _e17;
+}
+
+fn reuse_surface(x_12: vec3<f32>, n_10: vec3<f32>, m_4: Material, c_8: f32) -> ReuseSurface {
+    return ReuseSurface(x_12, c_8, n_10, pack4x8unorm(vec4<f32>(m_4.base, m_4.metallic)), pack2x16unorm(vec2<f32>(saturate(m_4.roughness), saturate(m_4.reflectance))), 0u, 0u, 0u);
+}
+
+fn reuse_material(s_3: ReuseSurface, eye: vec3<f32>) -> Material {
+    let b_8 = unpack4x8unorm(s_3.base);
+    let r_12 = unpack2x16unorm(s_3.rough);
+    let _e13 = material_of(b_8.xyz, b_8.w, r_12.x, r_12.y, normalize((eye - s_3.x)));
+    return _e13;
+}
+
+fn same_pick(la: u32, ca: u32, lb: u32, cb: u32) -> bool {
+    var local_25: bool;
+    var local_26: bool;
+
+    if (la == lb) {
+        if !((ca == cb)) {
+            let _e14 = lights[la].kind;
+            local_26 = (_e14 != LIGHT_TRIANGLE);
+        } else {
+            local_26 = true;
+        }
+        let _e18 = local_26;
+        local_25 = _e18;
+    } else {
+        local_25 = false;
+    }
+    let _e20 = local_25;
+    return _e20;
+}
+
+fn reuse_domains(x_13: vec3<f32>, n_11: vec3<f32>, d_6: f32, h_1: u32, doms_1: ptr<function, array<Domain, 3>>) -> u32 {
+    var nd: u32 = 0u;
+    var hr: u32;
+    var j_3: u32 = 0u;
+    var p_4: vec2<f32>;
+    var local_27: bool;
+    var local_28: bool;
+    var local_29: bool;
+    var seen: bool;
+    var k_3: u32;
+    var local_30: bool;
+    var local_31: bool;
+    var local_32: bool;
+
+    let _e9 = reuse.has_history;
+    if (_e9 != 1u) {
+        return 0u;
+    }
+    let _e15 = reuse.c0_;
+    let _e18 = reuse.c1_;
+    let _e21 = reuse.c2_;
+    let _e24 = reuse.c3_;
+    let _e27 = view.width;
+    let _e31 = view.height;
+    let _e33 = reproject(_e15, _e18, _e21, _e24, x_13, f32(_e27), f32(_e31));
+    if (_e33.z <= 0f) {
+        return 0u;
+    }
+    hr = h_1;
+    loop {
+        let _e41 = j_3;
+        if (_e41 < DOMAINS) {
+        } else {
+            break;
+        }
+        {
+            p_4 = _e33.xy;
+            let _e46 = j_3;
+            if (_e46 > 0u) {
+                let _e49 = hr;
+                let _e50 = pcg_hash(_e49);
+                hr = _e50;
+                let _e51 = hr;
+                let _e52 = xi_from_bits(_e51);
+                let _e53 = hr;
+                let _e54 = pcg_hash(_e53);
+                hr = _e54;
+                let _e55 = p_4;
+                let _e58 = reuse.radius;
+                let _e59 = hr;
+                let _e60 = xi_from_bits(_e59);
+                let _e61 = disk_offset(_e58, _e52, _e60);
+                p_4 = (_e55 + _e61);
+            }
+            let _e63 = p_4;
+            let t_5 = vec2<i32>(round(_e63));
+            if !((t_5.x < 0i)) {
+                local_27 = (t_5.y < 0i);
+            } else {
+                local_27 = true;
+            }
+            let _e76 = local_27;
+            if !(_e76) {
+                let _e83 = view.width;
+                local_28 = (t_5.x >= i32(_e83));
+            } else {
+                local_28 = true;
+            }
+            let _e87 = local_28;
+            if !(_e87) {
+                let _e94 = view.height;
+                local_29 = (t_5.y >= i32(_e94));
+            } else {
+                local_29 = true;
+            }
+            let _e98 = local_29;
+            if _e98 {
+                continue;
+            }
+            let _e103 = view.width;
+            let pixel = ((u32(t_5.y) * _e103) + u32(t_5.x));
+            seen = false;
+            k_3 = 0u;
+            loop {
+                let _e112 = k_3;
+                let _e113 = nd;
+                if (_e112 < _e113) {
+                } else {
+                    break;
+                }
+                {
+                    let _e115 = seen;
+                    if !(_e115) {
+                        let _e119 = k_3;
+                        let _e122 = (*doms_1)[_e119].pixel;
+                        local_30 = (_e122 == pixel);
+                    } else {
+                        local_30 = true;
+                    }
+                    let _e125 = local_30;
+                    seen = _e125;
+                }
+                continuing {
+                    let _e127 = k_3;
+                    k_3 = (_e127 + 1u);
+                }
+            }
+            let s_5 = reuse_prev[pixel].surface;
+            let _e133 = seen;
+            if !(_e133) {
+                local_31 = !((s_5.m > 0f));
+            } else {
+                local_31 = true;
+            }
+            let _e142 = local_31;
+            if !(_e142) {
+                let _e150 = history_matches(n_11, s_5.n, x_13, dot(s_5.n, s_5.x), d_6);
+                local_32 = !(_e150);
+            } else {
+                local_32 = true;
+            }
+            let _e153 = local_32;
+            if _e153 {
+                continue;
+            }
+            let _e154 = nd;
+            let _e160 = reuse.prev_eye;
+            let _e161 = reuse_material(s_5, _e160);
+            let _e165 = reuse.max_confidence;
+            (*doms_1)[_e154] = Domain(pixel, s_5.x, s_5.n, _e161, min(s_5.m, _e165));
+            let _e168 = nd;
+            nd = (_e168 + 1u);
+        }
+        continuing {
+            let _e172 = j_3;
+            j_3 = (_e172 + 1u);
+        }
+    }
+    let _e174 = nd;
+    return _e174;
+}
+
+@compute @workgroup_size(8, 8, 1) 
+fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
+    var local: bool;
+    var local_1: bool;
+    var m: Material;
+    var lobe: vec4<f32> = vec4<f32>(1f, 0f, 1f, 1f);
+    var r: vec3<f32>;
+    var h: u32;
+    var t: Shaded = Shaded(vec3(0f), vec3(0f), vec3(0f));
+    var slot_light: array<u32, 8>;
+    var slot_u: array<vec2<f32>, 8>;
+    var slot_p: array<f32, 8>;
+    var slot_cells: array<u32, 8>;
+    var total: f32 = 0f;
+    var count: u32 = 0u;
+    var hc: u32;
+    var b: u32;
+    var q: u32;
+    var doms: array<Domain, 3>;
+    var confidence: f32 = 1f;
+    var k: u32 = 0u;
+    var hs: u32;
+    var fin_light: array<u32, 8>;
+    var fin_cells: array<u32, 8>;
+    var fin_w: array<f32, 8>;
+    var q_1: u32 = 0u;
+    var w_sum: f32;
+    var chosen: u32;
+    var chosen_cells: u32;
+    var chosen_target: f32;
+    var j: u32;
+    var li: u32;
+    var cells: u32;
+    var w_in: f32;
+    var local_2: bool;
+    var own: f32;
+    var all_: f32;
+    var k_1: u32;
+    var local_3: bool;
+    var visible: array<bool, 8>;
+    var k_2: u32 = 0u;
+    var w: f32;
+    var first: bool;
+    var j_1: u32;
+    var local_4: bool;
+    var local_5: bool;
+    var local_6: bool;
+    var j_2: u32;
+    var q_2: u32 = 0u;
+    var local_7: bool;
+
+    let _e4 = view.width;
+    if !((gid.x >= _e4)) {
+        let _e12 = view.height;
+        local = (gid.y >= _e12);
+    } else {
+        local = true;
+    }
+    let _e15 = local;
+    if _e15 {
+        return;
+    }
+    let texel_1 = vec2<i32>(i32(gid.x), i32(gid.y));
+    let _e21 = surface_at(texel_1);
+    let _e24 = textureLoad(normal_tex, texel_1, 0i);
+    let nn = _e24.xyz;
+    let len2_ = dot(nn, nn);
+    if !((_e21.w <= 0f)) {
+        local_1 = !((len2_ > 0f));
+    } else {
+        local_1 = true;
+    }
+    let _e37 = local_1;
+    if _e37 {
+        textureStore(out_tex, texel_1, vec4(0f));
+        let _e45 = view.width;
+        reuse_next[((gid.y * _e45) + gid.x)].surface.m = 0f;
+        return;
+    }
+    let x_16 = _e21.xyz;
+    let n_14 = (nn / vec3(sqrt(len2_)));
+    r = n_14;
+    let mr = textureLoad(metal_rough_tex, texel_1, 0i);
+    let _e70 = textureLoad(base_color_tex, texel_1, 0i);
+    let _e77 = view.eye;
+    let _e80 = material_of(_e70.xyz, mr.z, mr.y, mr.w, normalize((_e77 - x_16)));
+    m = _e80;
+    let _e82 = m.base;
+    let _e84 = m.metallic;
+    let _e86 = bevy_f0_(mr.w);
+    let _e90 = m.alpha;
+    let _e92 = m.v;
+    let _e94 = receiver_lobe(_e82, _e84, vec3(_e86), 1f, _e90, dot(n_14, _e92));
+    lobe = _e94;
+    let _e96 = m.v;
+    let _e97 = mirror_dir(n_14, _e96);
+    r = _e97;
+    let _e98 = lobe;
+    let _e99 = range_lobe(_e98);
+    let _e102 = view.shadow_offset;
+    let _e105 = view.eye;
+    let eps_3 = (_e102 * length((_e105 - x_16)));
+    let _e111 = view.seed;
+    let _e115 = view.width;
+    let _e121 = view.frame;
+    let _e122 = point_stream(_e111, ((gid.y * _e115) + gid.x), _e121);
+    let _e123 = pick_stream(_e122);
+    h = _e123;
+    hc = _e122;
+    let _e144 = bsh_first(BSH);
+    let _e145 = r;
+    let _e146 = bsh_next_leaf_lobe(BSH, _e144, x_16, _e145, _e99);
+    b = _e146;
+    loop {
+        let _e148 = b;
+        if (_e148 != BSH_NONE) {
+        } else {
+            break;
+        }
+        {
+            let _e151 = count;
+            count = (_e151 + 1u);
+            let _e155 = b;
+            let li_4 = bsh_nodes[_e155].light;
+            let _e159 = h;
+            let _e160 = pcg_hash(_e159);
+            h = _e160;
+            let h1_1 = h;
+            let _e162 = h;
+            let _e163 = pcg_hash(_e162);
+            h = _e163;
+            let _e164 = h;
+            let _e165 = grid_cells(h1_1, _e164);
+            let _e166 = grid_coordinate(h1_1);
+            let _e167 = h;
+            let _e168 = grid_coordinate(_e167);
+            let u_4 = vec2<f32>(_e166, _e168);
+            let _e170 = r;
+            let _e171 = m;
+            let _e176 = shade_pick_traced(li_4, x_16, n_14, _e170, _e99, _e171, 1f, u_4.x, u_4.y, eps_3, false);
+            let _e177 = output_of(_e176);
+            let _e178 = resample_target(_e177);
+            if (_e178 > 0f) {
+                let _e181 = total;
+                total = (_e181 + _e178);
+                q = 0u;
+                loop {
+                    let _e185 = q;
+                    if (_e185 < K) {
+                    } else {
+                        break;
+                    }
+                    {
+                        let _e188 = hc;
+                        let _e189 = pcg_hash(_e188);
+                        hc = _e189;
+                        let _e190 = total;
+                        let _e191 = hc;
+                        let _e192 = xi_from_bits(_e191);
+                        let _e193 = weighted_replace(_e178, _e190, _e192);
+                        if _e193 {
+                            let _e194 = q;
+                            slot_light[_e194] = li_4;
+                            let _e196 = q;
+                            slot_u[_e196] = u_4;
+                            let _e198 = q;
+                            slot_p[_e198] = _e178;
+                            let _e200 = q;
+                            slot_cells[_e200] = _e165;
+                        }
+                    }
+                    continuing {
+                        let _e203 = q;
+                        q = (_e203 + 1u);
+                    }
+                }
+            }
+        }
+        continuing {
+            let _e207 = b;
+            let _e210 = bsh_nodes[_e207].next;
+            let _e211 = r;
+            let _e212 = bsh_next_leaf_lobe(BSH, _e210, x_16, _e211, _e99);
+            b = _e212;
+        }
+    }
+    let _e216 = view.width;
+    let pixel_1 = ((gid.y * _e216) + gid.x);
+    let _e223 = view.eye;
+    let _e227 = reuse_stream(_e122, 0u);
+    let _e228 = reuse_domains(x_16, n_14, length((_e223 - x_16)), _e227, (&doms));
+    loop {
+        let _e233 = k;
+        if (_e233 < _e228) {
+        } else {
+            break;
+        }
+        {
+            let _e235 = confidence;
+            let _e236 = k;
+            let _e239 = doms[_e236].c;
+            confidence = (_e235 + _e239);
+        }
+        continuing {
+            let _e242 = k;
+            k = (_e242 + 1u);
+        }
+    }
+    let _e245 = reuse_stream(_e122, 1u);
+    hs = _e245;
+    loop {
+        let _e252 = q_1;
+        if (_e252 < K) {
+        } else {
+            break;
+        }
+        {
+            w_sum = 0f;
+            chosen = 0u;
+            chosen_cells = 0u;
+            chosen_target = 0f;
+            j = 0u;
+            loop {
+                let _e265 = j;
+                if (_e265 <= _e228) {
+                } else {
+                    break;
+                }
+                {
+                    let _e267 = q_1;
+                    let _e269 = slot_light[_e267];
+                    li = _e269;
+                    let _e271 = q_1;
+                    let _e273 = slot_cells[_e271];
+                    cells = _e273;
+                    let _e275 = total;
+                    w_in = _e275;
+                    let _e277 = j;
+                    if (_e277 > 0u) {
+                        let _e281 = j;
+                        let _e286 = doms[(_e281 - 1u)].pixel;
+                        let _e289 = q_1;
+                        let s_6 = reuse_prev[_e286].slots[_e289];
+                        li = s_6.light;
+                        cells = s_6.u;
+                        w_in = s_6.w;
+                    }
+                    let _e295 = w_in;
+                    if !(!((_e295 > 0f))) {
+                        let _e302 = li;
+                        local_2 = (_e302 >= arrayLength((&lights)));
+                    } else {
+                        local_2 = true;
+                    }
+                    let _e307 = local_2;
+                    if _e307 {
+                        continue;
+                    }
+                    let _e309 = li;
+                    let _e311 = lights[_e309];
+                    let _e312 = cells;
+                    let _e313 = m;
+                    let _e314 = reuse_target(_e311, _e312, x_16, n_14, _e313);
+                    if !((_e314 > 0f)) {
+                        continue;
+                    }
+                    let _e318 = j;
+                    if (_e318 == 0u) {
+                        let _e321 = total;
+                        w_in = (_e321 / _e314);
+                    }
+                    own = _e314;
+                    all_ = _e314;
+                    k_1 = 0u;
+                    loop {
+                        let _e327 = k_1;
+                        if (_e327 < _e228) {
+                        } else {
+                            break;
+                        }
+                        {
+                            let _e329 = k_1;
+                            let _e332 = doms[_e329].c;
+                            let _e334 = li;
+                            let _e336 = lights_prev[_e334];
+                            let _e337 = cells;
+                            let _e338 = k_1;
+                            let _e341 = doms[_e338].x;
+                            let _e342 = k_1;
+                            let _e345 = doms[_e342].n;
+                            let _e346 = k_1;
+                            let _e349 = doms[_e346].m;
+                            let _e350 = reuse_target(_e336, _e337, _e341, _e345, _e349);
+                            let t_6 = (_e332 * _e350);
+                            let _e352 = all_;
+                            all_ = (_e352 + t_6);
+                            let _e354 = k_1;
+                            let _e357 = j;
+                            if ((_e354 + 1u) == _e357) {
+                                own = t_6;
+                            }
+                        }
+                        continuing {
+                            let _e360 = k_1;
+                            k_1 = (_e360 + 1u);
+                        }
+                    }
+                    let _e362 = own;
+                    let _e363 = all_;
+                    let _e364 = w_in;
+                    let _e365 = gris_weight(_e362, _e363, _e314, _e364);
+                    let _e366 = w_sum;
+                    w_sum = (_e366 + _e365);
+                    let _e368 = hs;
+                    let _e369 = pcg_hash(_e368);
+                    hs = _e369;
+                    if (_e365 > 0f) {
+                        let _e374 = w_sum;
+                        let _e375 = hs;
+                        let _e376 = xi_from_bits(_e375);
+                        let _e377 = weighted_replace(_e365, _e374, _e376);
+                        local_3 = _e377;
+                    } else {
+                        local_3 = false;
+                    }
+                    let _e379 = local_3;
+                    if _e379 {
+                        let _e380 = li;
+                        chosen = _e380;
+                        let _e381 = cells;
+                        chosen_cells = _e381;
+                        chosen_target = _e314;
+                    }
+                }
+                continuing {
+                    let _e383 = j;
+                    j = (_e383 + 1u);
+                }
+            }
+            let _e385 = q_1;
+            let _e387 = chosen;
+            fin_light[_e385] = _e387;
+            let _e388 = q_1;
+            let _e390 = chosen_cells;
+            fin_cells[_e388] = _e390;
+            let _e391 = q_1;
+            let _e393 = w_sum;
+            let _e394 = chosen_target;
+            let _e395 = gris_contribution_weight(_e393, _e394);
+            fin_w[_e391] = _e395;
+        }
+        continuing {
+            let _e397 = q_1;
+            q_1 = (_e397 + 1u);
+        }
+    }
+    loop {
+        let _e402 = k_2;
+        if (_e402 < K) {
+        } else {
+            break;
+        }
+        {
+            let _e405 = k_2;
+            let _e407 = fin_w[_e405];
+            w = _e407;
+            let _e409 = w;
+            first = (_e409 > 0f);
+            j_1 = 0u;
+            loop {
+                let _e415 = j_1;
+                if (_e415 < K) {
+                } else {
+                    break;
+                }
+                {
+                    let _e418 = j_1;
+                    let _e419 = k_2;
+                    if (_e418 != _e419) {
+                        let _e423 = j_1;
+                        let _e425 = fin_w[_e423];
+                        local_4 = (_e425 > 0f);
+                    } else {
+                        local_4 = false;
+                    }
+                    let _e429 = local_4;
+                    if _e429 {
+                        let _e432 = j_1;
+                        let _e434 = fin_light[_e432];
+                        let _e435 = j_1;
+                        let _e437 = fin_cells[_e435];
+                        let _e438 = k_2;
+                        let _e440 = fin_light[_e438];
+                        let _e441 = k_2;
+                        let _e443 = fin_cells[_e441];
+                        let _e444 = same_pick(_e434, _e437, _e440, _e443);
+                        local_5 = _e444;
+                    } else {
+                        local_5 = false;
+                    }
+                    let _e446 = local_5;
+                    if _e446 {
+                        let _e447 = first;
+                        if _e447 {
+                            let _e450 = j_1;
+                            let _e451 = k_2;
+                            local_6 = (_e450 > _e451);
+                        } else {
+                            local_6 = false;
+                        }
+                        let _e454 = local_6;
+                        first = _e454;
+                        let _e455 = w;
+                        let _e456 = j_1;
+                        let _e458 = fin_w[_e456];
+                        w = (_e455 + _e458);
+                    }
+                }
+                continuing {
+                    let _e461 = j_1;
+                    j_1 = (_e461 + 1u);
+                }
+            }
+            let _e463 = first;
+            if _e463 {
+                let _e465 = k_2;
+                let _e467 = fin_light[_e465];
+                let _e469 = lights[_e467];
+                let _e472 = w;
+                let _e475 = k_2;
+                let _e477 = fin_cells[_e475];
+                let _e478 = grid_coordinate(_e477);
+                let _e479 = k_2;
+                let _e481 = fin_cells[_e479];
+                let _e484 = grid_coordinate((_e481 << 16u));
+                let _e486 = connect_record(_e469, x_16, n_14, n_14, UNRANGED, UNRANGED, (_e472 / 8f), _e478, _e484, eps_3, true);
+                let _e487 = m;
+                let _e488 = shade_connection(_e486, x_16, n_14, _e487);
+                let _e489 = t;
+                let _e490 = add(_e489, _e488);
+                t = _e490;
+                let _e491 = k_2;
+                j_2 = _e491;
+                loop {
+                    let _e493 = j_2;
+                    if (_e493 < K) {
+                    } else {
+                        break;
+                    }
+                    {
+                        let _e496 = j_2;
+                        let _e498 = fin_light[_e496];
+                        let _e499 = j_2;
+                        let _e501 = fin_cells[_e499];
+                        let _e502 = k_2;
+                        let _e504 = fin_light[_e502];
+                        let _e505 = k_2;
+                        let _e507 = fin_cells[_e505];
+                        let _e508 = same_pick(_e498, _e501, _e504, _e507);
+                        if _e508 {
+                            let _e509 = j_2;
+                            let _e511 = output_of(_e488);
+                            let _e512 = resample_target(_e511);
+                            visible[_e509] = (_e512 > 0f);
+                        }
+                    }
+                    continuing {
+                        let _e516 = j_2;
+                        j_2 = (_e516 + 1u);
+                    }
+                }
+            }
+        }
+        continuing {
+            let _e519 = k_2;
+            k_2 = (_e519 + 1u);
+        }
+    }
+    loop {
+        let _e523 = q_2;
+        if (_e523 < K) {
+        } else {
+            break;
+        }
+        {
+            let _e528 = reuse.visibility;
+            if !((_e528 == 0u)) {
+                let _e534 = q_2;
+                let _e536 = visible[_e534];
+                local_7 = _e536;
+            } else {
+                local_7 = true;
+            }
+            let keep = local_7;
+            let _e542 = q_2;
+            let _e544 = q_2;
+            let _e546 = fin_light[_e544];
+            let _e547 = q_2;
+            let _e549 = fin_cells[_e547];
+            let _e550 = q_2;
+            let _e552 = fin_w[_e550];
+            reuse_next[pixel_1].slots[_e542] = ReuseSlot(_e546, _e549, select(0f, _e552, keep));
+        }
+        continuing {
+            let _e557 = q_2;
+            q_2 = (_e557 + 1u);
+        }
+    }
+    let _e562 = m;
+    let _e563 = confidence;
+    let _e566 = reuse.max_confidence;
+    let _e568 = reuse_surface(x_16, n_14, _e562, min(_e563, _e566));
+    reuse_next[pixel_1].surface = _e568;
+    let _e571 = t.diffuse;
+    let _e573 = t.specular;
+    let _e575 = count;
+    textureStore(out_tex, texel_1, vec4<f32>((_e571 + _e573), f32(_e575)));
+    return;
+}

@@ -1,0 +1,1707 @@
+#version 430 core
+#extension GL_ARB_compute_shader : require
+#extension GL_ARB_shader_storage_buffer_object : require
+layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
+
+struct GpuLight {
+    vec3 p0_;
+    uint kind;
+    vec3 p1_;
+    float a;
+    vec3 p2_;
+    float b;
+    vec3 intensity;
+    uint ies_base;
+};
+struct GpuLightCone {
+    vec3 center;
+    float radius;
+    vec3 axis;
+    float cos_o;
+    float phi;
+    float cos_e;
+    uint bvh_leaf;
+    uint pad;
+};
+struct GpuGeoNode {
+    vec3 bmin;
+    uint first;
+    vec3 bmax;
+    uint count;
+};
+struct GpuTriangle {
+    vec3 v0_;
+    uint material;
+    vec3 v1_;
+    uint light;
+    vec3 v2_;
+    uint pad;
+};
+struct ReuseParams {
+    vec4 c0_;
+    vec4 c1_;
+    vec4 c2_;
+    vec4 c3_;
+    vec3 prev_eye;
+    float max_confidence;
+    uint has_history;
+    float radius;
+    uint visibility;
+    uint pad0_;
+};
+struct ReuseSurface {
+    vec3 x;
+    float m;
+    vec3 n;
+    uint base;
+    uint rough;
+    uint pad0_;
+    uint pad1_;
+    uint pad2_;
+};
+struct ReuseSlot {
+    uint light;
+    uint u;
+    float w;
+};
+struct ViewParams {
+    vec4 c0_;
+    vec4 c1_;
+    vec4 c2_;
+    vec4 c3_;
+    vec3 eye;
+    uint width;
+    uint height;
+    float shadow_offset;
+    uint seed;
+    uint frame;
+    vec3 f0_d;
+    float f90_d;
+};
+struct BshNode {
+    vec3 center;
+    float radius;
+    uint child;
+    uint next;
+    uint light;
+    float extent;
+};
+struct GeoHit {
+    float t;
+    uint tri;
+};
+struct ReusePixel {
+    ReuseSurface surface;
+    ReuseSlot slots[8];
+};
+struct Connection {
+    vec3 e;
+    vec3 y;
+    float cos_x;
+};
+struct Shaded {
+    vec3 e;
+    vec3 diffuse;
+    vec3 specular;
+};
+struct Material {
+    vec3 base;
+    float metallic;
+    float alpha;
+    vec3 v;
+    float roughness;
+    float reflectance;
+};
+struct Domain {
+    uint pixel;
+    vec3 x;
+    vec3 n;
+    Material m;
+    float c;
+};
+const uint LIGHT_POINT = 0u;
+const uint LIGHT_SPOT = 1u;
+const uint LIGHT_IES = 2u;
+const uint LIGHT_TRIANGLE = 3u;
+const uint LIGHT_VPL = 4u;
+const uint NO_LIGHT = 4294967295u;
+const uint COUNT_TILES = 0u;
+const uint COUNT_GROUP_TESTS = 1u;
+const uint COUNT_CLUSTER_TESTS = 2u;
+const uint COUNT_SPHERE_TESTS = 3u;
+const uint COUNT_TESTED = 4u;
+const uint COUNT_KEPT = 5u;
+const uint COUNT_PIXELS = 6u;
+const uint COUNT_FIELDS = 7u;
+const uint MAP_CAMERA = 0u;
+const uint MAP_PERSPECTIVE = 1u;
+const uint MAP_ORTHOGRAPHIC = 2u;
+const float XI_STEP = 5.9604645e-8;
+const uint PICK_STREAM = 2654435769u;
+const float TWO_PI = 6.2831855;
+const float UNRANGED = 1e38;
+const float CULL_RADIUS_SCALE = 1.000001;
+const float SPHERE_PAD = 4.7683716e-7;
+const float SPHERE_HUGE = 3.4028235e38;
+const float SPHERE_PAD_ABS = 1e-18;
+const uint CLUSTER = 64u;
+const uint GROUP_SIDE = 8u;
+const float INV_PI = 0.31830987;
+const float MIN_D2_ = 1e-12;
+const float MAX_INTENSITY = 7.2057594e16;
+const uint BSH_NONE = 4294967295u;
+const uint RESERVOIR_FULL = 4294967295u;
+const float GGX_ALPHA_MIN = 0.001;
+const float RANGE_SCALE_MAX = 64.0;
+const uint LIGHT_BVH_LEAF = 4294967295u;
+const float ONE_MINUS_EPSILON = 0.99999994;
+const float F32_MAX = 3.4028235e38;
+const float DEPTH_NONE = 1e30;
+const float DEPTH_SIGMA = 0.05;
+const float COVER_WEIGHT = 0.1;
+const uint ROULETTE_DEPTH = 2u;
+const float TEMPORAL_MAX_HISTORY = 32.0;
+const float TEMPORAL_DEPTH_TOLERANCE = 0.01;
+const float TEMPORAL_MOTION_DEPTH_TOLERANCE = 0.05;
+const float TEMPORAL_NORMAL_COS = 0.9;
+const float TEMPORAL_MIN_MOMENTS = 8.0;
+const float TEMPORAL_CHANGED_HISTORY = 1.0;
+const float TEMPORAL_CHANGE_LOW = 4.0;
+const float TEMPORAL_CHANGE_HIGH = 8.0;
+const float TEMPORAL_MIN_WEIGHT = 0.01;
+const uint K = 8u;
+const uint BSH = 0u;
+const uint DOMAINS = 3u;
+
+layout(std430) readonly buffer type_7_block_0Compute { GpuGeoNode _group_1_binding_6_cs[]; };
+
+layout(std430) readonly buffer type_8_block_1Compute { GpuTriangle _group_1_binding_7_cs[]; };
+
+layout(std140) uniform ViewParams_block_2Compute { ViewParams _group_0_binding_0_cs; };
+
+uniform sampler2D _group_0_binding_1_cs;
+
+uniform sampler2D _group_0_binding_2_cs;
+
+layout(rgba16f) writeonly uniform image2D _group_0_binding_3_cs;
+
+uniform sampler2D _group_0_binding_4_cs;
+
+uniform sampler2D _group_0_binding_5_cs;
+
+layout(std430) readonly buffer type_12_block_3Compute { GpuLight _group_1_binding_1_cs[]; };
+
+layout(std430) readonly buffer type_4_block_4Compute { float _group_1_binding_2_cs[]; };
+
+layout(std430) readonly buffer type_4_block_5Compute { float _group_1_binding_3_cs[]; };
+
+layout(std430) readonly buffer type_13_block_6Compute { BshNode _group_1_binding_4_cs[]; };
+
+layout(std430) readonly buffer type_14_block_7Compute { GpuLightCone _group_1_binding_5_cs[]; };
+
+layout(std140) uniform ReuseParams_block_8Compute { ReuseParams _group_0_binding_7_cs; };
+
+layout(std430) readonly buffer type_12_block_9Compute { GpuLight _group_1_binding_8_cs[]; };
+
+layout(std430) readonly buffer type_16_block_10Compute { ReusePixel _group_1_binding_9_cs[]; };
+
+layout(std430) buffer type_16_block_11Compute { ReusePixel _group_1_binding_10_cs[]; };
+
+
+float to_f32_(uint u) {
+    return float(u);
+}
+
+uint mul_lo_u32_(uint a, uint b_1) {
+    return (a * b_1);
+}
+
+uint add_wrap_u32_(uint a_1, uint b_2) {
+    return (a_1 + b_2);
+}
+
+float f32_from_bits(uint u_1) {
+    return uintBitsToFloat(u_1);
+}
+
+float xi_from_bits(uint bits) {
+    float _e3 = to_f32_((bits >> 8u));
+    return (_e3 * XI_STEP);
+}
+
+uint pcg_hash(uint x) {
+    uint _e2 = mul_lo_u32_(x, 747796405u);
+    uint _e4 = add_wrap_u32_(_e2, 2891336453u);
+    uint _e12 = mul_lo_u32_(((_e4 >> ((_e4 >> 28u) + 4u)) ^ _e4), 277803737u);
+    return ((_e12 >> 22u) ^ _e12);
+}
+
+uint point_stream(uint seed, uint point, uint frame) {
+    uint _e3 = pcg_hash(frame);
+    uint _e5 = pcg_hash((point ^ _e3));
+    uint _e7 = pcg_hash((seed ^ _e5));
+    return _e7;
+}
+
+uint pick_stream(uint stream) {
+    uint _e3 = pcg_hash((stream ^ PICK_STREAM));
+    return _e3;
+}
+
+uint reuse_stream(uint stream_1, uint which) {
+    uint _e2 = pick_stream(stream_1);
+    uint _e6 = pcg_hash(((_e2 + 1u) + which));
+    return _e6;
+}
+
+float slc_weight(float rt2_, float d2_) {
+    if ((d2_ <= rt2_)) {
+        return 1.0;
+    }
+    return (d2_ / rt2_);
+}
+
+bool slc_keep(float r2_, float d2_1) {
+    return (d2_1 < r2_);
+}
+
+bool sphere_contains_point(vec3 c, float r_1, vec3 x_1) {
+    vec3 v_5 = (x_1 - c);
+    return (dot(v_5, v_5) <= (r_1 * r_1));
+}
+
+float inverse_square(float d2_2) {
+    return (1.0 / max(d2_2, MIN_D2_));
+}
+
+float connection_factor(float cos_x, float d2_3, float rt2_1, float w_1) {
+    float _e4 = inverse_square(d2_3);
+    float _e6 = slc_weight(rt2_1, d2_3);
+    return (((cos_x * _e4) * _e6) * w_1);
+}
+
+float connection_cosine(vec3 x_2, vec3 y, vec3 n, vec3 ng, float r2_1) {
+    bool local_8 = false;
+    bool local_9 = false;
+    vec3 v_6 = (x_2 - y);
+    float d2_6 = dot(v_6, v_6);
+    bool _e7 = slc_keep(r2_1, d2_6);
+    if (!(!(_e7))) {
+        local_8 = !((d2_6 > 0.0));
+    } else {
+        local_8 = true;
+    }
+    bool _e16 = local_8;
+    if (_e16) {
+        return 0.0;
+    }
+    vec3 w_7 = (v_6 / vec3(sqrt(d2_6)));
+    float cos_x_1 = -(dot(n, w_7));
+    if (!((cos_x_1 <= 0.0))) {
+        local_9 = (dot(ng, w_7) >= 0.0);
+    } else {
+        local_9 = true;
+    }
+    bool _e32 = local_9;
+    if (_e32) {
+        return 0.0;
+    }
+    return cos_x_1;
+}
+
+float triangle_lobe(vec3 n_1, float area, vec3 w_2) {
+    return (area * max(dot(n_1, w_2), 0.0));
+}
+
+vec3 triangle_sample(vec3 a_2, vec3 b_3, vec3 c_1, float u1_, float u2_) {
+    float su = sqrt(u1_);
+    float b0_ = (1.0 - su);
+    float b1_ = (u2_ * su);
+    return (((a_2 * b0_) + (b_3 * b1_)) + (c_1 * ((1.0 - b0_) - b1_)));
+}
+
+float bsh_scaled_radius(BshNode node, float scale) {
+    if ((scale == 1.0)) {
+        return node.radius;
+    }
+    if ((node.child == BSH_NONE)) {
+        return (node.extent + (scale * (node.radius - node.extent)));
+    }
+    return (node.radius * scale);
+}
+
+float bsh_range_bound(BshNode node_1) {
+    if ((node_1.child == BSH_NONE)) {
+        return (node_1.radius - node_1.extent);
+    }
+    float _e8 = f32_from_bits(node_1.light);
+    return _e8;
+}
+
+bool weighted_replace(float w_3, float w_sum_1, float u_2) {
+    return ((u_2 * w_sum_1) < w_3);
+}
+
+float resample_target(vec3 c_2) {
+    return (((c_2.x + c_2.y) + c_2.z) * 0.33333334);
+}
+
+float grid_coordinate(uint bits_1) {
+    float _e3 = to_f32_((bits_1 >> 16u));
+    return ((_e3 + 0.5) / 65536.0);
+}
+
+uint grid_cells(uint h1_, uint h2_) {
+    return ((h1_ & 4294901760u) | (h2_ >> 16u));
+}
+
+vec2 disk_offset(float r_2, float u1_1, float u2_1) {
+    float a_9 = (TWO_PI * u2_1);
+    return (vec2(cos(a_9), sin(a_9)) * (r_2 * sqrt(u1_1)));
+}
+
+float gris_weight(float own_1, float all_1, float p_hat, float w_4) {
+    if (!((all_1 > 0.0))) {
+        return 0.0;
+    }
+    return (((own_1 / all_1) * p_hat) * w_4);
+}
+
+float gris_contribution_weight(float w_sum_2, float p_hat_1) {
+    if (!((p_hat_1 > 0.0))) {
+        return 0.0;
+    }
+    return (w_sum_2 / p_hat_1);
+}
+
+float ggx_d(float cos_h, float sin2_h, float alpha) {
+    if ((cos_h <= 0.0)) {
+        return 0.0;
+    }
+    float a2_ = (alpha * alpha);
+    float t_1 = (((cos_h * cos_h) * a2_) + sin2_h);
+    return ((a2_ * INV_PI) / (t_1 * t_1));
+}
+
+float smith_root(float cos_, float alpha_1) {
+    float a2_1 = (alpha_1 * alpha_1);
+    return sqrt((((cos_ * cos_) * (1.0 - a2_1)) + a2_1));
+}
+
+float smith_visibility(float n_l, float n_v, float alpha_2) {
+    bool local_10 = false;
+    if (!((n_l <= 0.0))) {
+        local_10 = (n_v <= 0.0);
+    } else {
+        local_10 = true;
+    }
+    bool _e11 = local_10;
+    if (_e11) {
+        return 0.0;
+    }
+    float _e13 = smith_root(n_v, alpha_2);
+    float _e15 = smith_root(n_l, alpha_2);
+    return (0.5 / ((n_l * _e13) + (n_v * _e15)));
+}
+
+vec3 fresnel_schlick(vec3 f0_, float f90_, float v_h) {
+    float c_9 = clamp((1.0 - v_h), 0.0, 1.0);
+    float c2_1 = (c_9 * c_9);
+    return (f0_ + ((vec3(f90_, f90_, f90_) - f0_) * ((c2_1 * c2_1) * c_9)));
+}
+
+vec3 specular_fresnel(vec3 base, float metallic, vec3 f0_d, float f90_d, float v_h_1) {
+    vec3 _e5 = fresnel_schlick(f0_d, f90_d, v_h_1);
+    vec3 _e10 = fresnel_schlick(base, 1.0, v_h_1);
+    return ((_e5 * (1.0 - metallic)) + (_e10 * metallic));
+}
+
+bool has_specular(float metallic_1, vec3 f0_d_1, float f90_d_1) {
+    bool local_11 = false;
+    bool local_12 = false;
+    if (!((metallic_1 > 0.0))) {
+        local_11 = (f90_d_1 > 0.0);
+    } else {
+        local_11 = true;
+    }
+    bool _e11 = local_11;
+    if (!(_e11)) {
+        local_12 = (max(max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0.0);
+    } else {
+        local_12 = true;
+    }
+    bool _e23 = local_12;
+    return _e23;
+}
+
+float channel_mean(vec3 c_3) {
+    return (((c_3.x + c_3.y) + c_3.z) * 0.33333334);
+}
+
+vec4 receiver_lobe(vec3 base_1, float metallic_2, vec3 f0_d_2, float f90_d_2, float alpha_3, float n_v_1) {
+    bool local_13 = false;
+    vec3 _e10 = fresnel_schlick(f0_d_2, f90_d_2, n_v_1);
+    float _e16 = channel_mean((((vec3(1.0, 1.0, 1.0) - _e10) * base_1) * (1.0 - metallic_2)));
+    if (!((n_v_1 <= 0.0))) {
+        bool _e22 = has_specular(metallic_2, f0_d_2, f90_d_2);
+        local_13 = !(_e22);
+    } else {
+        local_13 = true;
+    }
+    bool _e25 = local_13;
+    if (_e25) {
+        return vec4(_e16, 0.0, alpha_3, n_v_1);
+    }
+    vec3 _e28 = specular_fresnel(base_1, metallic_2, f0_d_2, f90_d_2, n_v_1);
+    float _e29 = channel_mean(_e28);
+    return vec4(_e16, _e29, alpha_3, n_v_1);
+}
+
+float specular_peak_factor(vec4 lobe_1) {
+    float _e6 = smith_root(lobe_1.w, lobe_1.z);
+    return ((lobe_1.y * 0.5) / (_e6 + max(lobe_1.w, 0.0)));
+}
+
+float receiver_peak(vec4 lobe_2) {
+    float _e2 = specular_peak_factor(lobe_2);
+    return (lobe_2.x + (_e2 / (lobe_2.z * lobe_2.z)));
+}
+
+float range_scale(vec4 lobe_3) {
+    if ((lobe_3.y <= 0.0)) {
+        return 1.0;
+    }
+    float _e5 = receiver_peak(lobe_3);
+    return clamp(_e5, 1.0, RANGE_SCALE_MAX);
+}
+
+vec4 range_lobe(vec4 lobe_4) {
+    if ((lobe_4.y <= 0.0)) {
+        return vec4(1.0, 0.0, 1.0, 1.0);
+    }
+    float _e10 = specular_peak_factor(lobe_4);
+    float _e14 = range_scale(lobe_4);
+    return vec4(lobe_4.x, _e10, (lobe_4.z * lobe_4.z), sqrt(_e14));
+}
+
+vec3 mirror_dir(vec3 n_2, vec3 v) {
+    return ((n_2 * (2.0 * dot(n_2, v))) - v);
+}
+
+float bevy_alpha(float perceptual) {
+    float r_11 = clamp(perceptual, 0.089, 1.0);
+    return (r_11 * r_11);
+}
+
+float bevy_f0_(float reflectance) {
+    return ((0.16 * reflectance) * reflectance);
+}
+
+float bevy_dfg(float r_3, float n_v_2) {
+    float rx = (1.0 - r_3);
+    float a004_ = ((min((rx * rx), exp2((-9.28 * n_v_2))) * rx) + (0.0425 - (0.0275 * r_3)));
+    float x_14 = max(((1.04 - (0.572 * r_3)) - (1.04 * a004_)), 5e-5);
+    float y_1 = max((((0.022 * r_3) - 0.04) + (1.04 * a004_)), 5e-5);
+    return (x_14 + y_1);
+}
+
+vec3 bevy_brdf(vec3 base_2, float metallic_3, float r_4, float reflectance_1, vec3 n_3, vec3 v_1, vec3 l) {
+    float n_l_1 = clamp(dot(n_3, l), 0.0, 1.0);
+    if ((n_l_1 <= 0.0)) {
+        return vec3(0.0, 0.0, 0.0);
+    }
+    float _e15 = bevy_alpha(r_4);
+    float n_v_3 = max(dot(n_3, v_1), 0.0001);
+    vec3 h_2 = normalize((l + v_1));
+    float n_h = clamp(dot(n_3, h_2), 0.0, 1.0);
+    float l_h = clamp(dot(l, h_2), 0.0, 1.0);
+    float f90_d_3 = (0.5 + (((2.0 * _e15) * l_h) * l_h));
+    vec3 _e35 = fresnel_schlick(vec3(1.0, 1.0, 1.0), f90_d_3, n_l_1);
+    vec3 _e41 = fresnel_schlick(vec3(1.0, 1.0, 1.0), f90_d_3, n_v_3);
+    float burley = ((_e35.x * _e41.x) * INV_PI);
+    float _e46 = bevy_f0_(reflectance_1);
+    vec3 f0_1 = ((vec3(_e46, _e46, _e46) * (1.0 - metallic_3)) + (base_2 * metallic_3));
+    float f90_1 = clamp((((f0_1.x + f0_1.y) + f0_1.z) * 16.5), 0.0, 1.0);
+    float _e64 = ggx_d(n_h, (1.0 - (n_h * n_h)), _e15);
+    float _e65 = smith_visibility(n_l_1, n_v_3, _e15);
+    float _e70 = bevy_dfg(r_4, n_v_3);
+    vec3 comp = (vec3(1.0, 1.0, 1.0) + (f0_1 * ((1.0 / _e70) - 1.0)));
+    vec3 _e77 = fresnel_schlick(f0_1, f90_1, l_h);
+    vec3 spec = ((_e77 * comp) * (_e64 * _e65));
+    return ((base_2 * ((1.0 - metallic_3) * burley)) + spec);
+}
+
+float cone_cos_of(vec3 v_2, float d2_4, float a_3, vec3 d) {
+    bool local_14 = false;
+    bool local_15 = false;
+    float vd = dot(v_2, d);
+    float h2_1 = (d2_4 - (a_3 * a_3));
+    if (!((h2_1 <= 0.0))) {
+        if ((vd >= 0.0)) {
+            local_15 = ((vd * vd) >= h2_1);
+        } else {
+            local_15 = false;
+        }
+        bool _e19 = local_15;
+        local_14 = _e19;
+    } else {
+        local_14 = true;
+    }
+    bool _e21 = local_14;
+    if (_e21) {
+        return 1.0;
+    }
+    vec3 c_10 = cross(v_2, d);
+    return min((((vd * sqrt(h2_1)) + (sqrt(dot(c_10, c_10)) * a_3)) / d2_4), 1.0);
+}
+
+float cone_cos_toward(vec3 center, float radius, vec3 p, vec3 d_1) {
+    vec3 v_7 = (center - p);
+    float _e6 = cone_cos_of(v_7, dot(v_7, v_7), radius, d_1);
+    return _e6;
+}
+
+float range_scale_at(vec4 rl, float cos_t) {
+    float t_2 = (((0.5 + (0.5 * cos_t)) * (rl.z - 1.0)) + 1.0);
+    return clamp((rl.x + ((rl.y * rl.z) / (t_2 * t_2))), 1.0, (rl.w * rl.w));
+}
+
+float range_scale_toward(vec4 rl_1, vec3 center_1, float radius_1, vec3 p_1, vec3 r_5) {
+    if ((rl_1.w <= 1.0)) {
+        return 1.0;
+    }
+    float _e9 = cone_cos_toward(center_1, radius_1, p_1, r_5);
+    float _e10 = range_scale_at(rl_1, _e9);
+    return _e10;
+}
+
+float shadow_margin(float len) {
+    return (0.0001 * len);
+}
+
+float ray_inverse(float x_3) {
+    return (1.0 / ((abs(x_3) < 1e-30) ? 1e-30 : x_3));
+}
+
+vec3 ray_inverse3_(vec3 d_2) {
+    float _e2 = ray_inverse(d_2.x);
+    float _e4 = ray_inverse(d_2.y);
+    float _e6 = ray_inverse(d_2.z);
+    return vec3(_e2, _e4, _e6);
+}
+
+float ray_aabb(vec3 o, vec3 inv_d, vec3 bmin, vec3 bmax, float t_max) {
+    vec3 t0_ = ((bmin - o) * inv_d);
+    vec3 t1_ = ((bmax - o) * inv_d);
+    vec3 lo = min(t0_, t1_);
+    vec3 hi = max(t0_, t1_);
+    float t_in = max(max(lo.x, lo.y), max(lo.z, 0.0));
+    float t_out = min(min(hi.x, hi.y), min(hi.z, t_max));
+    if ((t_in <= t_out)) {
+        return t_in;
+    }
+    return -1.0;
+}
+
+vec3 triangle_normal(vec3 a_4, vec3 b_4, vec3 c_4) {
+    bool local_16 = false;
+    vec3 n_12 = cross((b_4 - a_4), (c_4 - a_4));
+    float l2_ = dot(n_12, n_12);
+    if (!(!((l2_ > 0.0)))) {
+        local_16 = !((l2_ < 3e38));
+    } else {
+        local_16 = true;
+    }
+    bool _e17 = local_16;
+    if (_e17) {
+        return vec3(0.0, 0.0, 0.0);
+    }
+    return (n_12 / vec3(sqrt(l2_)));
+}
+
+float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_5, vec3 b_5, vec3 c_5, float t_min, float t_max_1) {
+    bool local_17 = false;
+    bool local_18 = false;
+    bool local_19 = false;
+    vec3 e1_ = (b_5 - a_5);
+    vec3 e2_ = (c_5 - a_5);
+    vec3 p_5 = cross(d_3, e2_);
+    float det = dot(e1_, p_5);
+    if ((abs(det) <= 0.0)) {
+        return -1.0;
+    }
+    float inv = (1.0 / det);
+    vec3 s_4 = (o_1 - a_5);
+    float u_3 = (dot(s_4, p_5) * inv);
+    if (!((u_3 < 0.0))) {
+        local_17 = (u_3 > 1.0);
+    } else {
+        local_17 = true;
+    }
+    bool _e28 = local_17;
+    if (_e28) {
+        return -1.0;
+    }
+    vec3 q_3 = cross(s_4, e1_);
+    float v_8 = (dot(d_3, q_3) * inv);
+    if (!((v_8 < 0.0))) {
+        local_18 = ((u_3 + v_8) > 1.0);
+    } else {
+        local_18 = true;
+    }
+    bool _e42 = local_18;
+    if (_e42) {
+        return -1.0;
+    }
+    float t_3 = (dot(e2_, q_3) * inv);
+    if ((t_3 > t_min)) {
+        local_19 = (t_3 < t_max_1);
+    } else {
+        local_19 = false;
+    }
+    bool _e51 = local_19;
+    if (_e51) {
+        return t_3;
+    }
+    return -1.0;
+}
+
+vec3 reproject(vec4 c0_, vec4 c1_, vec4 c2_, vec4 c3_, vec3 p_2, float width, float height) {
+    vec4 clip = ((((c0_ * p_2.x) + (c1_ * p_2.y)) + (c2_ * p_2.z)) + c3_);
+    if ((clip.w <= 0.0)) {
+        return vec3(-1.0, -1.0, 0.0);
+    }
+    float x_15 = (((((clip.x / clip.w) + 1.0) * 0.5) * width) - 0.5);
+    float y_2 = ((((1.0 - (clip.y / clip.w)) * 0.5) * height) - 0.5);
+    return vec3(x_15, y_2, clip.w);
+}
+
+bool history_matches(vec3 n_4, vec3 nh, vec3 p_3, float oh, float d_4) {
+    bool local_20 = false;
+    if ((abs((dot(nh, p_3) - oh)) <= (TEMPORAL_DEPTH_TOLERANCE * d_4))) {
+        local_20 = (dot(n_4, nh) >= TEMPORAL_NORMAL_COS);
+    } else {
+        local_20 = false;
+    }
+    bool _e17 = local_20;
+    return _e17;
+}
+
+vec3 light_intensity(GpuLight l_1, vec3 w_5) {
+    switch(l_1.kind) {
+        case 0u: {
+            return l_1.intensity;
+        }
+        case 3u: {
+            vec3 _e8 = triangle_normal(l_1.p0_, l_1.p1_, l_1.p2_);
+            float _e10 = triangle_lobe(_e8, l_1.a, w_5);
+            return (l_1.intensity * _e10);
+        }
+        default: {
+            return vec3(0.0);
+        }
+    }
+}
+
+vec3 light_point(GpuLight l_2, float u1_2, float u2_2) {
+    if ((l_2.kind == LIGHT_TRIANGLE)) {
+        vec3 _e9 = triangle_sample(l_2.p0_, l_2.p1_, l_2.p2_, u1_2, u2_2);
+        return _e9;
+    }
+    return l_2.p0_;
+}
+
+GeoHit trace(vec3 o_2, vec3 d_5, float t_min_1, float t_max_2, bool any_hit) {
+    GeoHit hit = GeoHit(0.0, 0u);
+    uint stack[64] = uint[64](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
+    uint sp = 0u;
+    uint node_2 = 0u;
+    uint i = 0u;
+    hit.t = t_max_2;
+    hit.tri = NO_LIGHT;
+    if ((uint(_group_1_binding_6_cs.length()) == 0u)) {
+        GeoHit _e13 = hit;
+        return _e13;
+    }
+    vec3 _e14 = ray_inverse3_(d_5);
+    while(true) {
+        uint _e21 = node_2;
+        GpuGeoNode n_13 = _group_1_binding_6_cs[_e21];
+        float _e27 = hit.t;
+        float _e28 = ray_aabb(o_2, _e14, n_13.bmin, n_13.bmax, _e27);
+        if ((_e28 >= 0.0)) {
+            if ((n_13.count > 0u)) {
+                i = n_13.first;
+                bool loop_init = true;
+                while(true) {
+                    if (!loop_init) {
+                        uint _e58 = i;
+                        i = (_e58 + 1u);
+                    }
+                    loop_init = false;
+                    uint _e36 = i;
+                    if ((_e36 < (n_13.first + n_13.count))) {
+                    } else {
+                        break;
+                    }
+                    {
+                        uint _e42 = i;
+                        GpuTriangle t_4 = _group_1_binding_7_cs[_e42];
+                        float _e49 = hit.t;
+                        float _e50 = ray_triangle(o_2, d_5, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e49);
+                        if ((_e50 > 0.0)) {
+                            hit.t = _e50;
+                            uint _e55 = i;
+                            hit.tri = _e55;
+                            if (any_hit) {
+                                GeoHit _e56 = hit;
+                                return _e56;
+                            }
+                        }
+                    }
+                }
+            } else {
+                uint _e60 = sp;
+                if ((_e60 < 64u)) {
+                    uint _e63 = sp;
+                    stack[_e63] = (n_13.first + 1u);
+                    uint _e68 = sp;
+                    sp = (_e68 + 1u);
+                }
+                node_2 = n_13.first;
+                continue;
+            }
+        }
+        uint _e72 = sp;
+        if ((_e72 == 0u)) {
+            break;
+        }
+        uint _e75 = sp;
+        sp = (_e75 - 1u);
+        uint _e78 = sp;
+        uint _e80 = stack[_e78];
+        node_2 = _e80;
+    }
+    GeoHit _e81 = hit;
+    return _e81;
+}
+
+bool occluded(vec3 a_6, vec3 b_6) {
+    vec3 dv = (b_6 - a_6);
+    float len_1 = length(dv);
+    if ((len_1 <= 0.0)) {
+        return false;
+    }
+    float _e7 = shadow_margin(len_1);
+    GeoHit _e12 = trace(a_6, (dv / vec3(len_1)), _e7, (len_1 - _e7), true);
+    return (_e12.tri != NO_LIGHT);
+}
+
+BshNode bsh_node(uint nodes, uint i_1) {
+    BshNode _e4 = _group_1_binding_4_cs[i_1];
+    return _e4;
+}
+
+uint bsh_count(uint nodes_1) {
+    return uint(_group_1_binding_4_cs.length());
+}
+
+uint bsh_first(uint nodes_2) {
+    uint _e1 = bsh_count(nodes_2);
+    if ((_e1 > 0u)) {
+        return 0u;
+    }
+    return BSH_NONE;
+}
+
+float bsh_inner_scale(float a_7, vec3 v_3, float d2_5, vec3 r_6, vec4 rl_2) {
+    float _e5 = cone_cos_of(v_3, d2_5, a_7, r_6);
+    float _e8 = range_scale_at(rl_2, (_e5 + 2e-6));
+    return _e8;
+}
+
+bool bsh_reaches(BshNode node_3, vec3 x_4, vec3 r_7, vec4 rl_3) {
+    bool local_21 = false;
+    bool local_22 = false;
+    bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_4);
+    if (_e6) {
+        return true;
+    }
+    if (!((rl_3.w <= 1.0))) {
+        bool _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001)), x_4);
+        local_21 = !(_e20);
+    } else {
+        local_21 = true;
+    }
+    bool _e23 = local_21;
+    if (_e23) {
+        return false;
+    }
+    float _e25 = bsh_range_bound(node_3);
+    vec3 v_9 = (x_4 - node_3.center);
+    float d2_7 = dot(v_9, v_9);
+    float reach_max = (node_3.extent + ((rl_3.w * 1.001) * _e25));
+    if ((d2_7 > (reach_max * reach_max))) {
+        return false;
+    }
+    if ((node_3.child == BSH_NONE)) {
+        float _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_4, r_7);
+        float _e46 = bsh_scaled_radius(node_3, sqrt(_e43));
+        bool _e47 = sphere_contains_point(node_3.center, _e46, x_4);
+        return _e47;
+    }
+    float _e50 = bsh_inner_scale(node_3.extent, -(v_9), d2_7, r_7, rl_3);
+    float s_c = (_e50 * 1.001);
+    float reach = (node_3.extent + (sqrt(s_c) * _e25));
+    if ((d2_7 <= ((node_3.radius * node_3.radius) * s_c))) {
+        local_22 = (d2_7 <= (reach * reach));
+    } else {
+        local_22 = false;
+    }
+    bool _e67 = local_22;
+    return _e67;
+}
+
+uint bsh_next_leaf_lobe(uint nodes_3, uint start, vec3 x_5, vec3 r_8, vec4 rl_4) {
+    uint i_2 = 0u;
+    i_2 = start;
+    while(true) {
+        uint _e6 = i_2;
+        if ((_e6 != BSH_NONE)) {
+        } else {
+            break;
+        }
+        {
+            uint _e9 = i_2;
+            BshNode _e10 = bsh_node(nodes_3, _e9);
+            bool _e11 = bsh_reaches(_e10, x_5, r_8, rl_4);
+            if (_e11) {
+                if ((_e10.child == BSH_NONE)) {
+                    uint _e15 = i_2;
+                    return _e15;
+                }
+                i_2 = _e10.child;
+            } else {
+                i_2 = _e10.next;
+            }
+        }
+    }
+    return BSH_NONE;
+}
+
+Connection connect_record(GpuLight l_3, vec3 x_6, vec3 n_5, vec3 ng_1, float r2_2, float rt2_2, float w_res, float u1_3, float u2_3, float eps, bool trace_1) {
+    Connection c_6 = Connection(vec3(0.0), vec3(0.0), 0.0);
+    bool local_23 = false;
+    bool local_24 = false;
+    c_6.e = vec3(0.0);
+    vec3 _e16 = light_point(l_3, u1_3, u2_3);
+    c_6.y = _e16;
+    vec3 _e19 = c_6.y;
+    float _e20 = connection_cosine(x_6, _e19, n_5, ng_1, r2_2);
+    c_6.cos_x = _e20;
+    float _e22 = c_6.cos_x;
+    if (!((_e22 <= 0.0))) {
+        if (trace_1) {
+            vec3 _e33 = c_6.y;
+            bool _e34 = occluded((x_6 + (ng_1 * eps)), _e33);
+            local_24 = _e34;
+        } else {
+            local_24 = false;
+        }
+        bool _e36 = local_24;
+        local_23 = _e36;
+    } else {
+        local_23 = true;
+    }
+    bool _e38 = local_23;
+    if (_e38) {
+        Connection _e39 = c_6;
+        return _e39;
+    }
+    vec3 _e41 = c_6.y;
+    vec3 v_10 = (x_6 - _e41);
+    float d2_8 = dot(v_10, v_10);
+    vec3 _e48 = light_intensity(l_3, (v_10 / vec3(sqrt(d2_8))));
+    float _e50 = c_6.cos_x;
+    float _e51 = connection_factor(_e50, d2_8, rt2_2, w_res);
+    c_6.e = (_e48 * _e51);
+    Connection _e53 = c_6;
+    return _e53;
+}
+
+Connection connect_traced(uint li_1, vec3 x_7, vec3 n_6, vec3 ng_2, float s, float w_res_1, float u1_4, float u2_4, float eps_1, bool trace_2) {
+    GpuLight _e12 = _group_1_binding_1_cs[li_1];
+    float _e15 = _group_1_binding_3_cs[li_1];
+    float _e19 = _group_1_binding_2_cs[li_1];
+    Connection _e21 = connect_record(_e12, x_7, n_6, ng_2, (s * _e15), (s * _e19), w_res_1, u1_4, u2_4, eps_1, trace_2);
+    return _e21;
+}
+
+float light_range_scale(uint li_2, vec3 x_8, vec3 r_9, vec4 rl_5) {
+    GpuLightCone c_11 = _group_1_binding_5_cs[li_2];
+    float _e9 = range_scale_toward(rl_5, c_11.center, c_11.radius, x_8, r_9);
+    return _e9;
+}
+
+vec4 surface_at(ivec2 texel) {
+    vec4 p_6 = texelFetch(_group_0_binding_1_cs, texel, 0);
+    return ((p_6.w > 0.0) ? vec4(p_6.xyz, 1.0) : vec4(0.0));
+}
+
+Shaded shade_connection(Connection c_7, vec3 x_9, vec3 n_7, Material m_1) {
+    Shaded s_1 = Shaded(vec3(0.0), vec3(0.0), vec3(0.0));
+    s_1.e = c_7.e;
+    s_1.diffuse = vec3(0.0);
+    s_1.specular = vec3(0.0);
+    if ((c_7.cos_x > 0.0)) {
+        vec3 _e25 = bevy_brdf(m_1.base, m_1.metallic, m_1.roughness, m_1.reflectance, n_7, m_1.v, normalize((c_7.y - x_9)));
+        s_1.diffuse = (_e25 * c_7.e);
+    }
+    Shaded _e28 = s_1;
+    return _e28;
+}
+
+Shaded shade_pick_traced(uint li_3, vec3 x_10, vec3 n_8, vec3 r_10, vec4 rl_6, Material m_2, float w_6, float u1_5, float u2_5, float eps_2, bool trace_3) {
+    float _e11 = light_range_scale(li_3, x_10, r_10, rl_6);
+    Connection _e12 = connect_traced(li_3, x_10, n_8, n_8, _e11, w_6, u1_5, u2_5, eps_2, trace_3);
+    Shaded _e13 = shade_connection(_e12, x_10, n_8, m_2);
+    return _e13;
+}
+
+Material material_of(vec3 base_3, float metallic_4, float roughness, float reflectance_2, vec3 v_4) {
+    float _e6 = bevy_alpha(roughness);
+    return Material(base_3, clamp(metallic_4, 0.0, 1.0), _e6, v_4, roughness, reflectance_2);
+}
+
+Shaded add(Shaded a_8, Shaded b_7) {
+    return Shaded((a_8.e + b_7.e), (a_8.diffuse + b_7.diffuse), (a_8.specular + b_7.specular));
+}
+
+vec3 output_of(Shaded s_2) {
+    return (s_2.diffuse + s_2.specular);
+}
+
+float reuse_target(GpuLight l_4, uint cells_1, vec3 x_11, vec3 n_9, Material m_3) {
+    float _e8 = grid_coordinate(cells_1);
+    float _e11 = grid_coordinate((cells_1 << 16u));
+    Connection _e14 = connect_record(l_4, x_11, n_9, n_9, UNRANGED, UNRANGED, 1.0, _e8, _e11, 0.0, false);
+    Shaded _e15 = shade_connection(_e14, x_11, n_9, m_3);
+    vec3 _e16 = output_of(_e15);
+    float _e17 = resample_target(_e16);
+    return _e17;
+}
+
+ReuseSurface reuse_surface(vec3 x_12, vec3 n_10, Material m_4, float c_8) {
+    return ReuseSurface(x_12, c_8, n_10, packUnorm4x8(vec4(m_4.base, m_4.metallic)), packUnorm2x16(vec2(clamp(m_4.roughness, 0.0, 1.0), clamp(m_4.reflectance, 0.0, 1.0))), 0u, 0u, 0u);
+}
+
+Material reuse_material(ReuseSurface s_3, vec3 eye) {
+    vec4 b_8 = unpackUnorm4x8(s_3.base);
+    vec2 r_12 = unpackUnorm2x16(s_3.rough);
+    Material _e13 = material_of(b_8.xyz, b_8.w, r_12.x, r_12.y, normalize((eye - s_3.x)));
+    return _e13;
+}
+
+bool same_pick(uint la, uint ca, uint lb, uint cb) {
+    bool local_25 = false;
+    bool local_26 = false;
+    if ((la == lb)) {
+        if (!((ca == cb))) {
+            uint _e14 = _group_1_binding_1_cs[la].kind;
+            local_26 = (_e14 != LIGHT_TRIANGLE);
+        } else {
+            local_26 = true;
+        }
+        bool _e18 = local_26;
+        local_25 = _e18;
+    } else {
+        local_25 = false;
+    }
+    bool _e20 = local_25;
+    return _e20;
+}
+
+uint reuse_domains(vec3 x_13, vec3 n_11, float d_6, uint h_1, inout Domain doms_1[3]) {
+    uint nd = 0u;
+    uint hr = 0u;
+    uint j_3 = 0u;
+    vec2 p_4 = vec2(0.0);
+    bool local_27 = false;
+    bool local_28 = false;
+    bool local_29 = false;
+    bool seen = false;
+    uint k_3 = 0u;
+    bool local_30 = false;
+    bool local_31 = false;
+    bool local_32 = false;
+    uint _e9 = _group_0_binding_7_cs.has_history;
+    if ((_e9 != 1u)) {
+        return 0u;
+    }
+    vec4 _e15 = _group_0_binding_7_cs.c0_;
+    vec4 _e18 = _group_0_binding_7_cs.c1_;
+    vec4 _e21 = _group_0_binding_7_cs.c2_;
+    vec4 _e24 = _group_0_binding_7_cs.c3_;
+    uint _e27 = _group_0_binding_0_cs.width;
+    uint _e31 = _group_0_binding_0_cs.height;
+    vec3 _e33 = reproject(_e15, _e18, _e21, _e24, x_13, float(_e27), float(_e31));
+    if ((_e33.z <= 0.0)) {
+        return 0u;
+    }
+    hr = h_1;
+    bool loop_init_1 = true;
+    while(true) {
+        if (!loop_init_1) {
+            uint _e172 = j_3;
+            j_3 = (_e172 + 1u);
+        }
+        loop_init_1 = false;
+        uint _e41 = j_3;
+        if ((_e41 < DOMAINS)) {
+        } else {
+            break;
+        }
+        {
+            p_4 = _e33.xy;
+            uint _e46 = j_3;
+            if ((_e46 > 0u)) {
+                uint _e49 = hr;
+                uint _e50 = pcg_hash(_e49);
+                hr = _e50;
+                uint _e51 = hr;
+                float _e52 = xi_from_bits(_e51);
+                uint _e53 = hr;
+                uint _e54 = pcg_hash(_e53);
+                hr = _e54;
+                vec2 _e55 = p_4;
+                float _e58 = _group_0_binding_7_cs.radius;
+                uint _e59 = hr;
+                float _e60 = xi_from_bits(_e59);
+                vec2 _e61 = disk_offset(_e58, _e52, _e60);
+                p_4 = (_e55 + _e61);
+            }
+            vec2 _e63 = p_4;
+            ivec2 t_5 = ivec2(roundEven(_e63));
+            if (!((t_5.x < 0))) {
+                local_27 = (t_5.y < 0);
+            } else {
+                local_27 = true;
+            }
+            bool _e76 = local_27;
+            if (!(_e76)) {
+                uint _e83 = _group_0_binding_0_cs.width;
+                local_28 = (t_5.x >= int(_e83));
+            } else {
+                local_28 = true;
+            }
+            bool _e87 = local_28;
+            if (!(_e87)) {
+                uint _e94 = _group_0_binding_0_cs.height;
+                local_29 = (t_5.y >= int(_e94));
+            } else {
+                local_29 = true;
+            }
+            bool _e98 = local_29;
+            if (_e98) {
+                continue;
+            }
+            uint _e103 = _group_0_binding_0_cs.width;
+            uint pixel = ((uint(t_5.y) * _e103) + uint(t_5.x));
+            seen = false;
+            k_3 = 0u;
+            bool loop_init_2 = true;
+            while(true) {
+                if (!loop_init_2) {
+                    uint _e127 = k_3;
+                    k_3 = (_e127 + 1u);
+                }
+                loop_init_2 = false;
+                uint _e112 = k_3;
+                uint _e113 = nd;
+                if ((_e112 < _e113)) {
+                } else {
+                    break;
+                }
+                {
+                    bool _e115 = seen;
+                    if (!(_e115)) {
+                        uint _e119 = k_3;
+                        uint _e122 = doms_1[_e119].pixel;
+                        local_30 = (_e122 == pixel);
+                    } else {
+                        local_30 = true;
+                    }
+                    bool _e125 = local_30;
+                    seen = _e125;
+                }
+            }
+            ReuseSurface s_5 = _group_1_binding_9_cs[pixel].surface;
+            bool _e133 = seen;
+            if (!(_e133)) {
+                local_31 = !((s_5.m > 0.0));
+            } else {
+                local_31 = true;
+            }
+            bool _e142 = local_31;
+            if (!(_e142)) {
+                bool _e150 = history_matches(n_11, s_5.n, x_13, dot(s_5.n, s_5.x), d_6);
+                local_32 = !(_e150);
+            } else {
+                local_32 = true;
+            }
+            bool _e153 = local_32;
+            if (_e153) {
+                continue;
+            }
+            uint _e154 = nd;
+            vec3 _e160 = _group_0_binding_7_cs.prev_eye;
+            Material _e161 = reuse_material(s_5, _e160);
+            float _e165 = _group_0_binding_7_cs.max_confidence;
+            doms_1[_e154] = Domain(pixel, s_5.x, s_5.n, _e161, min(s_5.m, _e165));
+            uint _e168 = nd;
+            nd = (_e168 + 1u);
+        }
+    }
+    uint _e174 = nd;
+    return _e174;
+}
+
+void main() {
+    uvec3 gid = gl_GlobalInvocationID;
+    bool local = false;
+    bool local_1 = false;
+    Material m = Material(vec3(0.0), 0.0, 0.0, vec3(0.0), 0.0, 0.0);
+    vec4 lobe = vec4(1.0, 0.0, 1.0, 1.0);
+    vec3 r = vec3(0.0);
+    uint h = 0u;
+    Shaded t = Shaded(vec3(0.0), vec3(0.0), vec3(0.0));
+    uint slot_light[8] = uint[8](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
+    vec2 slot_u[8] = vec2[8](vec2(0.0), vec2(0.0), vec2(0.0), vec2(0.0), vec2(0.0), vec2(0.0), vec2(0.0), vec2(0.0));
+    float slot_p[8] = float[8](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
+    uint slot_cells[8] = uint[8](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
+    float total = 0.0;
+    uint count = 0u;
+    uint hc = 0u;
+    uint b = 0u;
+    uint q = 0u;
+    Domain doms[3] = Domain[3](Domain(0u, vec3(0.0), vec3(0.0), Material(vec3(0.0), 0.0, 0.0, vec3(0.0), 0.0, 0.0), 0.0), Domain(0u, vec3(0.0), vec3(0.0), Material(vec3(0.0), 0.0, 0.0, vec3(0.0), 0.0, 0.0), 0.0), Domain(0u, vec3(0.0), vec3(0.0), Material(vec3(0.0), 0.0, 0.0, vec3(0.0), 0.0, 0.0), 0.0));
+    float confidence = 1.0;
+    uint k = 0u;
+    uint hs = 0u;
+    uint fin_light[8] = uint[8](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
+    uint fin_cells[8] = uint[8](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
+    float fin_w[8] = float[8](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
+    uint q_1 = 0u;
+    float w_sum = 0.0;
+    uint chosen = 0u;
+    uint chosen_cells = 0u;
+    float chosen_target = 0.0;
+    uint j = 0u;
+    uint li = 0u;
+    uint cells = 0u;
+    float w_in = 0.0;
+    bool local_2 = false;
+    float own = 0.0;
+    float all_ = 0.0;
+    uint k_1 = 0u;
+    bool local_3 = false;
+    bool visible[8] = bool[8](false, false, false, false, false, false, false, false);
+    uint k_2 = 0u;
+    float w = 0.0;
+    bool first = false;
+    uint j_1 = 0u;
+    bool local_4 = false;
+    bool local_5 = false;
+    bool local_6 = false;
+    uint j_2 = 0u;
+    uint q_2 = 0u;
+    bool local_7 = false;
+    uint _e4 = _group_0_binding_0_cs.width;
+    if (!((gid.x >= _e4))) {
+        uint _e12 = _group_0_binding_0_cs.height;
+        local = (gid.y >= _e12);
+    } else {
+        local = true;
+    }
+    bool _e15 = local;
+    if (_e15) {
+        return;
+    }
+    ivec2 texel_1 = ivec2(int(gid.x), int(gid.y));
+    vec4 _e21 = surface_at(texel_1);
+    vec4 _e24 = texelFetch(_group_0_binding_2_cs, texel_1, 0);
+    vec3 nn = _e24.xyz;
+    float len2_ = dot(nn, nn);
+    if (!((_e21.w <= 0.0))) {
+        local_1 = !((len2_ > 0.0));
+    } else {
+        local_1 = true;
+    }
+    bool _e37 = local_1;
+    if (_e37) {
+        imageStore(_group_0_binding_3_cs, texel_1, vec4(0.0));
+        uint _e45 = _group_0_binding_0_cs.width;
+        _group_1_binding_10_cs[((gid.y * _e45) + gid.x)].surface.m = 0.0;
+        return;
+    }
+    vec3 x_16 = _e21.xyz;
+    vec3 n_14 = (nn / vec3(sqrt(len2_)));
+    r = n_14;
+    vec4 mr = texelFetch(_group_0_binding_5_cs, texel_1, 0);
+    vec4 _e70 = texelFetch(_group_0_binding_4_cs, texel_1, 0);
+    vec3 _e77 = _group_0_binding_0_cs.eye;
+    Material _e80 = material_of(_e70.xyz, mr.z, mr.y, mr.w, normalize((_e77 - x_16)));
+    m = _e80;
+    vec3 _e82 = m.base;
+    float _e84 = m.metallic;
+    float _e86 = bevy_f0_(mr.w);
+    float _e90 = m.alpha;
+    vec3 _e92 = m.v;
+    vec4 _e94 = receiver_lobe(_e82, _e84, vec3(_e86), 1.0, _e90, dot(n_14, _e92));
+    lobe = _e94;
+    vec3 _e96 = m.v;
+    vec3 _e97 = mirror_dir(n_14, _e96);
+    r = _e97;
+    vec4 _e98 = lobe;
+    vec4 _e99 = range_lobe(_e98);
+    float _e102 = _group_0_binding_0_cs.shadow_offset;
+    vec3 _e105 = _group_0_binding_0_cs.eye;
+    float eps_3 = (_e102 * length((_e105 - x_16)));
+    uint _e111 = _group_0_binding_0_cs.seed;
+    uint _e115 = _group_0_binding_0_cs.width;
+    uint _e121 = _group_0_binding_0_cs.frame;
+    uint _e122 = point_stream(_e111, ((gid.y * _e115) + gid.x), _e121);
+    uint _e123 = pick_stream(_e122);
+    h = _e123;
+    hc = _e122;
+    uint _e144 = bsh_first(BSH);
+    vec3 _e145 = r;
+    uint _e146 = bsh_next_leaf_lobe(BSH, _e144, x_16, _e145, _e99);
+    b = _e146;
+    bool loop_init_3 = true;
+    while(true) {
+        if (!loop_init_3) {
+            uint _e207 = b;
+            uint _e210 = _group_1_binding_4_cs[_e207].next;
+            vec3 _e211 = r;
+            uint _e212 = bsh_next_leaf_lobe(BSH, _e210, x_16, _e211, _e99);
+            b = _e212;
+        }
+        loop_init_3 = false;
+        uint _e148 = b;
+        if ((_e148 != BSH_NONE)) {
+        } else {
+            break;
+        }
+        {
+            uint _e151 = count;
+            count = (_e151 + 1u);
+            uint _e155 = b;
+            uint li_4 = _group_1_binding_4_cs[_e155].light;
+            uint _e159 = h;
+            uint _e160 = pcg_hash(_e159);
+            h = _e160;
+            uint h1_1 = h;
+            uint _e162 = h;
+            uint _e163 = pcg_hash(_e162);
+            h = _e163;
+            uint _e164 = h;
+            uint _e165 = grid_cells(h1_1, _e164);
+            float _e166 = grid_coordinate(h1_1);
+            uint _e167 = h;
+            float _e168 = grid_coordinate(_e167);
+            vec2 u_4 = vec2(_e166, _e168);
+            vec3 _e170 = r;
+            Material _e171 = m;
+            Shaded _e176 = shade_pick_traced(li_4, x_16, n_14, _e170, _e99, _e171, 1.0, u_4.x, u_4.y, eps_3, false);
+            vec3 _e177 = output_of(_e176);
+            float _e178 = resample_target(_e177);
+            if ((_e178 > 0.0)) {
+                float _e181 = total;
+                total = (_e181 + _e178);
+                q = 0u;
+                bool loop_init_4 = true;
+                while(true) {
+                    if (!loop_init_4) {
+                        uint _e203 = q;
+                        q = (_e203 + 1u);
+                    }
+                    loop_init_4 = false;
+                    uint _e185 = q;
+                    if ((_e185 < K)) {
+                    } else {
+                        break;
+                    }
+                    {
+                        uint _e188 = hc;
+                        uint _e189 = pcg_hash(_e188);
+                        hc = _e189;
+                        float _e190 = total;
+                        uint _e191 = hc;
+                        float _e192 = xi_from_bits(_e191);
+                        bool _e193 = weighted_replace(_e178, _e190, _e192);
+                        if (_e193) {
+                            uint _e194 = q;
+                            slot_light[_e194] = li_4;
+                            uint _e196 = q;
+                            slot_u[_e196] = u_4;
+                            uint _e198 = q;
+                            slot_p[_e198] = _e178;
+                            uint _e200 = q;
+                            slot_cells[_e200] = _e165;
+                        }
+                    }
+                }
+            }
+        }
+    }
+    uint _e216 = _group_0_binding_0_cs.width;
+    uint pixel_1 = ((gid.y * _e216) + gid.x);
+    vec3 _e223 = _group_0_binding_0_cs.eye;
+    uint _e227 = reuse_stream(_e122, 0u);
+    uint _e228 = reuse_domains(x_16, n_14, length((_e223 - x_16)), _e227, doms);
+    bool loop_init_5 = true;
+    while(true) {
+        if (!loop_init_5) {
+            uint _e242 = k;
+            k = (_e242 + 1u);
+        }
+        loop_init_5 = false;
+        uint _e233 = k;
+        if ((_e233 < _e228)) {
+        } else {
+            break;
+        }
+        {
+            float _e235 = confidence;
+            uint _e236 = k;
+            float _e239 = doms[_e236].c;
+            confidence = (_e235 + _e239);
+        }
+    }
+    uint _e245 = reuse_stream(_e122, 1u);
+    hs = _e245;
+    bool loop_init_6 = true;
+    while(true) {
+        if (!loop_init_6) {
+            uint _e397 = q_1;
+            q_1 = (_e397 + 1u);
+        }
+        loop_init_6 = false;
+        uint _e252 = q_1;
+        if ((_e252 < K)) {
+        } else {
+            break;
+        }
+        {
+            w_sum = 0.0;
+            chosen = 0u;
+            chosen_cells = 0u;
+            chosen_target = 0.0;
+            j = 0u;
+            bool loop_init_7 = true;
+            while(true) {
+                if (!loop_init_7) {
+                    uint _e383 = j;
+                    j = (_e383 + 1u);
+                }
+                loop_init_7 = false;
+                uint _e265 = j;
+                if ((_e265 <= _e228)) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e267 = q_1;
+                    uint _e269 = slot_light[_e267];
+                    li = _e269;
+                    uint _e271 = q_1;
+                    uint _e273 = slot_cells[_e271];
+                    cells = _e273;
+                    float _e275 = total;
+                    w_in = _e275;
+                    uint _e277 = j;
+                    if ((_e277 > 0u)) {
+                        uint _e281 = j;
+                        uint _e286 = doms[(_e281 - 1u)].pixel;
+                        uint _e289 = q_1;
+                        ReuseSlot s_6 = _group_1_binding_9_cs[_e286].slots[_e289];
+                        li = s_6.light;
+                        cells = s_6.u;
+                        w_in = s_6.w;
+                    }
+                    float _e295 = w_in;
+                    if (!(!((_e295 > 0.0)))) {
+                        uint _e302 = li;
+                        local_2 = (_e302 >= uint(_group_1_binding_1_cs.length()));
+                    } else {
+                        local_2 = true;
+                    }
+                    bool _e307 = local_2;
+                    if (_e307) {
+                        continue;
+                    }
+                    uint _e309 = li;
+                    GpuLight _e311 = _group_1_binding_1_cs[_e309];
+                    uint _e312 = cells;
+                    Material _e313 = m;
+                    float _e314 = reuse_target(_e311, _e312, x_16, n_14, _e313);
+                    if (!((_e314 > 0.0))) {
+                        continue;
+                    }
+                    uint _e318 = j;
+                    if ((_e318 == 0u)) {
+                        float _e321 = total;
+                        w_in = (_e321 / _e314);
+                    }
+                    own = _e314;
+                    all_ = _e314;
+                    k_1 = 0u;
+                    bool loop_init_8 = true;
+                    while(true) {
+                        if (!loop_init_8) {
+                            uint _e360 = k_1;
+                            k_1 = (_e360 + 1u);
+                        }
+                        loop_init_8 = false;
+                        uint _e327 = k_1;
+                        if ((_e327 < _e228)) {
+                        } else {
+                            break;
+                        }
+                        {
+                            uint _e329 = k_1;
+                            float _e332 = doms[_e329].c;
+                            uint _e334 = li;
+                            GpuLight _e336 = _group_1_binding_8_cs[_e334];
+                            uint _e337 = cells;
+                            uint _e338 = k_1;
+                            vec3 _e341 = doms[_e338].x;
+                            uint _e342 = k_1;
+                            vec3 _e345 = doms[_e342].n;
+                            uint _e346 = k_1;
+                            Material _e349 = doms[_e346].m;
+                            float _e350 = reuse_target(_e336, _e337, _e341, _e345, _e349);
+                            float t_6 = (_e332 * _e350);
+                            float _e352 = all_;
+                            all_ = (_e352 + t_6);
+                            uint _e354 = k_1;
+                            uint _e357 = j;
+                            if (((_e354 + 1u) == _e357)) {
+                                own = t_6;
+                            }
+                        }
+                    }
+                    float _e362 = own;
+                    float _e363 = all_;
+                    float _e364 = w_in;
+                    float _e365 = gris_weight(_e362, _e363, _e314, _e364);
+                    float _e366 = w_sum;
+                    w_sum = (_e366 + _e365);
+                    uint _e368 = hs;
+                    uint _e369 = pcg_hash(_e368);
+                    hs = _e369;
+                    if ((_e365 > 0.0)) {
+                        float _e374 = w_sum;
+                        uint _e375 = hs;
+                        float _e376 = xi_from_bits(_e375);
+                        bool _e377 = weighted_replace(_e365, _e374, _e376);
+                        local_3 = _e377;
+                    } else {
+                        local_3 = false;
+                    }
+                    bool _e379 = local_3;
+                    if (_e379) {
+                        uint _e380 = li;
+                        chosen = _e380;
+                        uint _e381 = cells;
+                        chosen_cells = _e381;
+                        chosen_target = _e314;
+                    }
+                }
+            }
+            uint _e385 = q_1;
+            uint _e387 = chosen;
+            fin_light[_e385] = _e387;
+            uint _e388 = q_1;
+            uint _e390 = chosen_cells;
+            fin_cells[_e388] = _e390;
+            uint _e391 = q_1;
+            float _e393 = w_sum;
+            float _e394 = chosen_target;
+            float _e395 = gris_contribution_weight(_e393, _e394);
+            fin_w[_e391] = _e395;
+        }
+    }
+    bool loop_init_9 = true;
+    while(true) {
+        if (!loop_init_9) {
+            uint _e519 = k_2;
+            k_2 = (_e519 + 1u);
+        }
+        loop_init_9 = false;
+        uint _e402 = k_2;
+        if ((_e402 < K)) {
+        } else {
+            break;
+        }
+        {
+            uint _e405 = k_2;
+            float _e407 = fin_w[_e405];
+            w = _e407;
+            float _e409 = w;
+            first = (_e409 > 0.0);
+            j_1 = 0u;
+            bool loop_init_10 = true;
+            while(true) {
+                if (!loop_init_10) {
+                    uint _e461 = j_1;
+                    j_1 = (_e461 + 1u);
+                }
+                loop_init_10 = false;
+                uint _e415 = j_1;
+                if ((_e415 < K)) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e418 = j_1;
+                    uint _e419 = k_2;
+                    if ((_e418 != _e419)) {
+                        uint _e423 = j_1;
+                        float _e425 = fin_w[_e423];
+                        local_4 = (_e425 > 0.0);
+                    } else {
+                        local_4 = false;
+                    }
+                    bool _e429 = local_4;
+                    if (_e429) {
+                        uint _e432 = j_1;
+                        uint _e434 = fin_light[_e432];
+                        uint _e435 = j_1;
+                        uint _e437 = fin_cells[_e435];
+                        uint _e438 = k_2;
+                        uint _e440 = fin_light[_e438];
+                        uint _e441 = k_2;
+                        uint _e443 = fin_cells[_e441];
+                        bool _e444 = same_pick(_e434, _e437, _e440, _e443);
+                        local_5 = _e444;
+                    } else {
+                        local_5 = false;
+                    }
+                    bool _e446 = local_5;
+                    if (_e446) {
+                        bool _e447 = first;
+                        if (_e447) {
+                            uint _e450 = j_1;
+                            uint _e451 = k_2;
+                            local_6 = (_e450 > _e451);
+                        } else {
+                            local_6 = false;
+                        }
+                        bool _e454 = local_6;
+                        first = _e454;
+                        float _e455 = w;
+                        uint _e456 = j_1;
+                        float _e458 = fin_w[_e456];
+                        w = (_e455 + _e458);
+                    }
+                }
+            }
+            bool _e463 = first;
+            if (_e463) {
+                uint _e465 = k_2;
+                uint _e467 = fin_light[_e465];
+                GpuLight _e469 = _group_1_binding_1_cs[_e467];
+                float _e472 = w;
+                uint _e475 = k_2;
+                uint _e477 = fin_cells[_e475];
+                float _e478 = grid_coordinate(_e477);
+                uint _e479 = k_2;
+                uint _e481 = fin_cells[_e479];
+                float _e484 = grid_coordinate((_e481 << 16u));
+                Connection _e486 = connect_record(_e469, x_16, n_14, n_14, UNRANGED, UNRANGED, (_e472 / 8.0), _e478, _e484, eps_3, true);
+                Material _e487 = m;
+                Shaded _e488 = shade_connection(_e486, x_16, n_14, _e487);
+                Shaded _e489 = t;
+                Shaded _e490 = add(_e489, _e488);
+                t = _e490;
+                uint _e491 = k_2;
+                j_2 = _e491;
+                bool loop_init_11 = true;
+                while(true) {
+                    if (!loop_init_11) {
+                        uint _e516 = j_2;
+                        j_2 = (_e516 + 1u);
+                    }
+                    loop_init_11 = false;
+                    uint _e493 = j_2;
+                    if ((_e493 < K)) {
+                    } else {
+                        break;
+                    }
+                    {
+                        uint _e496 = j_2;
+                        uint _e498 = fin_light[_e496];
+                        uint _e499 = j_2;
+                        uint _e501 = fin_cells[_e499];
+                        uint _e502 = k_2;
+                        uint _e504 = fin_light[_e502];
+                        uint _e505 = k_2;
+                        uint _e507 = fin_cells[_e505];
+                        bool _e508 = same_pick(_e498, _e501, _e504, _e507);
+                        if (_e508) {
+                            uint _e509 = j_2;
+                            vec3 _e511 = output_of(_e488);
+                            float _e512 = resample_target(_e511);
+                            visible[_e509] = (_e512 > 0.0);
+                        }
+                    }
+                }
+            }
+        }
+    }
+    bool loop_init_12 = true;
+    while(true) {
+        if (!loop_init_12) {
+            uint _e557 = q_2;
+            q_2 = (_e557 + 1u);
+        }
+        loop_init_12 = false;
+        uint _e523 = q_2;
+        if ((_e523 < K)) {
+        } else {
+            break;
+        }
+        {
+            uint _e528 = _group_0_binding_7_cs.visibility;
+            if (!((_e528 == 0u))) {
+                uint _e534 = q_2;
+                bool _e536 = visible[_e534];
+                local_7 = _e536;
+            } else {
+                local_7 = true;
+            }
+            bool keep = local_7;
+            uint _e542 = q_2;
+            uint _e544 = q_2;
+            uint _e546 = fin_light[_e544];
+            uint _e547 = q_2;
+            uint _e549 = fin_cells[_e547];
+            uint _e550 = q_2;
+            float _e552 = fin_w[_e550];
+            _group_1_binding_10_cs[pixel_1].slots[_e542] = ReuseSlot(_e546, _e549, (keep ? _e552 : 0.0));
+        }
+    }
+    Material _e562 = m;
+    float _e563 = confidence;
+    float _e566 = _group_0_binding_7_cs.max_confidence;
+    ReuseSurface _e568 = reuse_surface(x_16, n_14, _e562, min(_e563, _e566));
+    _group_1_binding_10_cs[pixel_1].surface = _e568;
+    vec3 _e571 = t.diffuse;
+    vec3 _e573 = t.specular;
+    uint _e575 = count;
+    imageStore(_group_0_binding_3_cs, texel_1, vec4((_e571 + _e573), float(_e575)));
+    return;
+}
+
