@@ -628,8 +628,8 @@ mod engine_misuse {
     }
 
     /// The direct pass's reuse: refused (before the device is touched)
-    /// for picks other than resampled ones, 8 neighbours, a NaN radius or a
-    /// confidence cap below 1; a record of a position surface without its
+    /// for picks other than resampled ones, 8 neighbours, a NaN radius, a
+    /// confidence cap below 1 or visibility reuse from neighbours; a record of a position surface without its
     /// view-projection is refused and records nothing; with it, two frames
     /// come out finite.
     pub fn direct_reuse_settings() {
@@ -646,6 +646,8 @@ mod engine_misuse {
         refused(desc(resampled, DirectReuse { neighbours: 8, ..reuse }), "neighbours");
         refused(desc(resampled, DirectReuse { radius: f32::NAN, ..reuse }), "radius");
         refused(desc(resampled, DirectReuse { max_confidence: 0.5, ..reuse }), "confidence");
+        let spread = DirectReuse { visibility: true, neighbours: 2, ..reuse };
+        refused(desc(resampled, spread), "visibility");
         let mut pass = DirectPass::new(gpu, &lights(25), &desc(resampled, reuse)).unwrap();
         let inp = inputs(gpu);
         let out = engine::output(gpu, (W, H));

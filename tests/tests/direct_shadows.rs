@@ -365,9 +365,9 @@ fn stochastic_mean_matches_the_brute_force() {
 /// each run its own seed with the history reset; the runs' last frames
 /// are independent, and their mean equals the shadowed brute force per
 /// 8×8 block (4.5 standard errors over the runs): without reuse, with
-/// reuse, with visibility reuse, and with reuse while the lights move by
-/// up to 2 cm every frame but the last (the previous frame's targets are
-/// evaluated with its own lights).
+/// reuse, with visibility reuse, with reuse while the lights move by up
+/// to 2 cm every frame but the last (the previous frame's targets are
+/// evaluated with its own lights), and with reuse of 2 neighbours.
 ///
 /// One last frame's relative RMSE, everything still: reuse below 0.85 of
 /// resampling without it, visibility reuse below 0.85 of reuse (measured
@@ -400,6 +400,7 @@ fn reused_picks_match_the_brute_force() {
         ("reuse", Some(reuse), false),
         ("visibility reuse", Some(DirectReuse { visibility: true, ..reuse }), false),
         ("reuse, moving lights", Some(reuse), true),
+        ("reuse with 2 neighbours", Some(DirectReuse { neighbours: 2, ..reuse }), false),
     ];
     let mut noise = Vec::new();
     for (what, reuse, moving) in configs {

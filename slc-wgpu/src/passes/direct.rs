@@ -277,6 +277,12 @@ impl DirectReuse {
                 self.neighbours, self.radius, self.max_confidence
             )));
         }
+        if self.visibility && self.neighbours > 0 {
+            return Err(GpuError::Setting(format!(
+                "direct pass reuse: visibility reuse holds for the pixel's own history only, not {} neighbours (a neighbour's occluded picks may light this pixel)",
+                self.neighbours
+            )));
+        }
         Ok(())
     }
 
