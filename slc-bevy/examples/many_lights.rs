@@ -11,7 +11,8 @@
 //! unbounded ranges (the ground truth, slow with thousands of lights);
 //! `Up`/`Down` double or halve slc's error bound ε; `S` turns slc's shadows
 //! off and on; `R` switches slc's picks between resampled (the default)
-//! and weighted. The window's title shows the mode, the light count, ε,
+//! and weighted; `U` turns the resampled picks' reuse across frames off
+//! and on. The window's title shows the mode, the light count, ε,
 //! the shadows, the picks and the frame time (smoothed).
 //!
 //! For scripts: `SLC_BEVY_FRAMES=N` exits after N frames, first writing the
@@ -23,8 +24,9 @@
 //! **Frame-time bench** (no window, no display): `SLC_BEVY_BENCH=out.json`
 //! renders into an image target at `SLC_BEVY_SIZE` (default 1920x1080)
 //! under Bevy's `RenderDiagnosticsPlugin` (GPU timestamps where the adapter
-//! has them), in five configurations: slc shadowed (resampled picks, its
-//! default, and weighted ones), slc unshadowed, Bevy at its default 20 m
+//! has them), in six configurations: slc shadowed (resampled picks reused
+//! across frames, its default; without reuse; weighted picks), slc
+//! unshadowed, Bevy at its default 20 m
 //! ranges, Bevy at unbounded ranges. Each warms up for
 //! at least 0.5 s and 3 frames, then times `SLC_BEVY_BENCH_FRAMES` frames
 //! (default 64, at most 120) back to back; it reports per configuration
@@ -265,6 +267,9 @@ fn keys(
         if input.just_pressed(KeyCode::KeyR) {
             camera.resample = !camera.resample;
         }
+        if input.just_pressed(KeyCode::KeyU) {
+            camera.reuse = !camera.reuse;
+        }
         // ×2 or ÷2 on ε (a stochastic culling only; the others keep theirs).
         let scale = |c: Culling, k: f32| c.with_error_bound(c.error_bound().unwrap_or(1.0) * k);
         if input.just_pressed(KeyCode::ArrowUp)
@@ -291,11 +296,14 @@ fn title(
         if settings.frame_ms == 0.0 { ms } else { 0.95 * settings.frame_ms + 0.05 * ms };
     let eps = cameras.iter().next().and_then(|c| c.culling.error_bound()).unwrap_or(0.0);
     let shadows = if cameras.iter().next().is_some_and(|c| c.shadows) { "on" } else { "off" };
-    let picks =
-        if cameras.iter().next().is_some_and(|c| c.resample) { "resampled" } else { "weighted" };
+    let picks = match cameras.iter().next().map(|c| (c.resample, c.reuse)) {
+        Some((true, true)) => "reused resampled",
+        Some((true, false)) => "resampled",
+        _ => "weighted",
+    };
     for mut w in &mut windows {
         w.title = format!(
-            "slc-bevy many_lights: {:?}, {} lights, ε {eps}, shadows {shadows}, {picks} picks, {:.1} ms/frame (Space: mode, Up/Down: ε, S: shadows, R: picks)",
+            "slc-bevy many_lights: {:?}, {} lights, ε {eps}, shadows {shadows}, {picks} picks, {:.1} ms/frame (Space: mode, Up/Down: ε, S: shadows, R: picks, U: reuse)",
             settings.mode, settings.lights, settings.frame_ms
         );
     }
@@ -359,13 +367,15 @@ fn scripted_exit(
 }
 
 /// One configuration of the bench: its name, the lights' mode, slc's
-/// shadows and whether its picks are resampled (its default) or weighted.
-const CONFIGS: [(&str, Mode, bool, bool); 5] = [
-    ("slc, shadowed", Mode::Slc, true, true),
-    ("slc, shadowed, weighted picks", Mode::Slc, true, false),
-    ("slc, unshadowed", Mode::Slc, false, true),
-    ("Bevy, default 20 m ranges", Mode::BevyDefaultRange, false, true),
-    ("Bevy, unbounded ranges", Mode::BevyUnbounded, false, true),
+/// shadows, whether its picks are resampled (its default) or weighted, and
+/// whether resampled picks are reused across frames (its default).
+const CONFIGS: [(&str, Mode, bool, bool, bool); 6] = [
+    ("slc, shadowed", Mode::Slc, true, true, true),
+    ("slc, shadowed, no reuse", Mode::Slc, true, true, false),
+    ("slc, shadowed, weighted picks", Mode::Slc, true, false, false),
+    ("slc, unshadowed", Mode::Slc, false, true, true),
+    ("Bevy, default 20 m ranges", Mode::BevyDefaultRange, false, true, true),
+    ("Bevy, unbounded ranges", Mode::BevyUnbounded, false, true, true),
 ];
 
 /// The median of `v` (0 for none).
@@ -430,14 +440,14 @@ fn bench(lights: usize, out: &str) -> Result<(), String> {
         .map_or("unknown".to_string(), |a| format!("{} ({:?})", a.name, a.backend));
     println!("many_lights bench: {lights} lights, {w}x{h}, {frames} timed frames, on {adapter}");
     let mut results = Vec::new();
-    for (name, mode, shadows, resample) in CONFIGS {
+    for (name, mode, shadows, resample, reuse) in CONFIGS {
         {
             let world = app.world_mut();
             let mut settings = world.resource_mut::<Settings>();
             (settings.mode, settings.apply) = (mode, true);
             let mut cameras = world.query::<&mut SlcCamera>();
             for mut c in cameras.iter_mut(world) {
-                (c.shadows, c.resample) = (shadows, resample);
+                (c.shadows, c.resample, c.reuse) = (shadows, resample, reuse);
             }
         }
         // Warm-up: the mode applied, pipelines built, the clock up.

@@ -306,6 +306,8 @@ fn scene(
             SlcCamera {
                 culling: Culling::stochastic(0.005, 1.0).unwrap(),
                 accumulate: false,
+                // Independent frames until the reuse's own phase.
+                reuse: false,
                 // Bevy's side has no shadow maps until the last phase.
                 shadows: false,
                 ..default()
@@ -486,6 +488,48 @@ fn run() -> Result<(), String> {
     let bias = mean(&accumulated) / mean(&truth) - 1.0;
     if bias.abs() > 0.02 {
         return Err(format!("the accumulated image's mean is {:+.2}% from Bevy's", 100.0 * bias));
+    }
+    // Phase 4: the picks reused across frames (static scene, nothing
+    // accumulated), against one frame of resampled and of weighted picks
+    // without reuse: one frame after 16 comes closer to Bevy's unbounded
+    // image in r + g + b (at most half of resampling's error), and the
+    // mean of 16 such frames stays within 2% of it (they are correlated:
+    // no per-block bound). The lights' colours are random: 8 picks among
+    // the lights in range tint each pixel whatever they weigh, and that
+    // chromatic noise dominates the luminance's error for all three.
+    let sum_rmse = |a: &[[f32; 3]], b: &[[f32; 3]]| {
+        let s = |p: &[f32; 3]| f64::from(p[0] + p[1] + p[2]);
+        (a.iter().zip(b).map(|(p, q)| (s(p) - s(q)).powi(2)).sum::<f64>() / a.len() as f64).sqrt()
+    };
+    let set = |app: &mut App, resample: bool, reuse: bool| {
+        let mut c = app.world_mut().get_mut::<SlcCamera>(camera).expect("camera");
+        (c.accumulate, c.resample, c.reuse) = (false, resample, reuse);
+    };
+    set(&mut app, false, false);
+    let weighted = capture(&mut app, 2, 1).remove(0);
+    set(&mut app, true, true);
+    let reused = capture(&mut app, 16, 16);
+    set(&mut app, true, false);
+    write_images(&[("slc-reused-one-frame", &reused[0]), ("slc-weighted-one-frame", &weighted)]);
+    let er = rmse(&reused[0], &truth);
+    let reused_mean = reused.iter().map(|f| mean(f)).sum::<f64>() / reused.len() as f64;
+    let (sw, s1, sr) =
+        (sum_rmse(&weighted, &truth), sum_rmse(&single, &truth), sum_rmse(&reused[0], &truth));
+    println!(
+        "reuse: one frame after 16, RMSE against Bevy unbounded of r + g + b {sr:.5} (resampled without reuse {s1:.5}, weighted {sw:.5}), of the luminance {er:.5} (resampled {e1:.5}, weighted {:.5}); mean of 16 frames {:+.2}% from Bevy unbounded",
+        rmse(&weighted, &truth),
+        100.0 * (reused_mean / mean(&truth) - 1.0)
+    );
+    if sr > 0.5 * s1 {
+        return Err(format!(
+            "reuse should halve one frame's error of r + g + b: {s1:.5} -> {sr:.5}"
+        ));
+    }
+    if (reused_mean / mean(&truth) - 1.0).abs() > 0.02 {
+        return Err(format!(
+            "the reused frames' mean is {reused_mean:.5}, Bevy's {:.5}",
+            mean(&truth)
+        ));
     }
     println!("shadows: {}", shadows(&mut app)?);
     println!("emissive: {}", emissive::emissive(&mut app)?);
