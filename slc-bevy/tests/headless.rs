@@ -12,7 +12,9 @@
 //! from (b)'s own frame-to-frame variance, and reports how much darker (c)
 //! is (asserting it is visibly darker, so the scene shows the bias). These
 //! phases are unshadowed on both sides (`SlcCamera::shadows` off, Bevy's
-//! shadow maps off). The last phase shadows: 8 point lights around the
+//! shadow maps off), with independent frames (`SlcCamera::reuse` off); a
+//! later phase turns the reuse on and holds one frame's error against
+//! resampled and weighted picks' (see `run`). Then shadows: 8 point lights around the
 //! boxes with Bevy's own shadow maps against slc-bevy's shadow rays, per
 //! 8×8 block outside the penumbrae (see [`shadows`]). Writes the images to
 //! `target/slc-bevy-headless/` (PNG).
@@ -44,10 +46,10 @@ use rand::{Rng, SeedableRng};
 use slc_bevy::{Culling, SlcCamera, SlcLight, SlcPlugin, SlcStatus};
 use std::sync::{Arc, Mutex};
 
-/// Phase 5: an emissive mesh lights the floor.
+/// Phase 6: an emissive mesh lights the floor.
 #[path = "headless/emissive.rs"]
 mod emissive;
-/// Phase 4: shadows against Bevy's shadow maps.
+/// Phase 5: shadows against Bevy's shadow maps.
 #[path = "headless/shadows.rs"]
 mod shadows;
 use shadows::shadows;
