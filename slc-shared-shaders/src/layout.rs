@@ -507,6 +507,21 @@ slc_core::shared! {
     /// Number of work-counter fields (each a 64-bit low, high pair).
     pub const COUNT_FIELDS: u32 = 7;
 
+    /// Field of the direct pass's work counters (`direct_light`'s counting
+    /// variant, read back as slc-wgpu's `DirectCounts`): shaded pixels.
+    pub const DIRECT_COUNT_PIXELS: u32 = 0;
+    /// Direct-pass counter: lights in range, summed over the pixels.
+    pub const DIRECT_COUNT_CANDIDATES: u32 = 1;
+    /// Direct-pass counter: lights evaluated without a ray (resampled
+    /// candidates, the reuse's targets).
+    pub const DIRECT_COUNT_EVALUATIONS: u32 = 2;
+    /// Direct-pass counter: shadow rays cast.
+    pub const DIRECT_COUNT_RAYS: u32 = 3;
+    /// Direct-pass counter: BVH nodes the shadow rays visited.
+    pub const DIRECT_COUNT_NODES: u32 = 4;
+    /// Number of direct-pass counter fields (each a 64-bit low, high pair).
+    pub const DIRECT_COUNT_FIELDS: u32 = 5;
+
     /// [`MapParams::mode`] of the camera's G-buffer pass.
     pub const MAP_CAMERA: u32 = 0;
     /// [`MapParams::mode`] of a spot's perspective map.

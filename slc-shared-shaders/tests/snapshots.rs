@@ -236,6 +236,16 @@ fn variants() -> Vec<(&'static str, Kernel, Features)> {
                 ..Features::default()
             },
         ),
+        (
+            "direct_light-point-spot-resampled-counting",
+            Kernel::DirectLight,
+            Features {
+                lights: LightTypes::parse("point,spot").unwrap(),
+                selection: Selection::Resampled,
+                counters: true,
+                ..Features::default()
+            },
+        ),
     ]
 }
 

@@ -25,6 +25,7 @@
 use glam::{Affine3A, Quat, Vec3};
 use slc_core::light::{Light, PointLight, SpotLight, connection_cosine, inverse_square};
 use slc_core::range::RangeParams;
+use slc_core::ray::{ray_aabb, ray_inverse3, ray_triangle, shadow_margin};
 use slc_cpu::geometry::Geometry;
 use slc_scene::lights::LightSet;
 use slc_scene::occluders::{Instance, Occluders};
@@ -445,6 +446,144 @@ fn reused_picks_match_the_brute_force() {
     gpu.take_errors().unwrap();
 }
 
+/// Occluder BVH nodes a shadow ray from `a` to `b` visits, walking the
+/// flattened tree as `geometry.wgsl`'s `trace` does (left child first, the
+/// right one stacked; any hit ends it), with slc-core's tests; `None` for
+/// a segment of no length (no ray).
+fn nodes_visited(occ: &Occluders, a: Vec3, b: Vec3) -> Option<u64> {
+    let dv = b - a;
+    let len = dv.length();
+    if len <= 0.0 {
+        return None;
+    }
+    let (eps, d) = (shadow_margin(len), dv / len);
+    let (nodes, tris, inv) = (occ.nodes(), occ.triangles(), ray_inverse3(d));
+    let (mut stack, mut node, mut visited) = (Vec::new(), 0usize, 0u64);
+    if nodes.is_empty() {
+        return Some(0);
+    }
+    loop {
+        let n = nodes[node];
+        visited += 1;
+        if ray_aabb(a, inv, n.bmin, n.bmax, len - eps) >= 0.0 {
+            if n.count > 0 {
+                let leaf = &tris[n.first as usize..][..n.count as usize];
+                if leaf.iter().any(|t| ray_triangle(a, d, t[0], t[1], t[2], eps, len - eps) > 0.0) {
+                    return Some(visited);
+                }
+            } else {
+                if stack.len() < 64 {
+                    stack.push(n.first as usize + 1);
+                }
+                node = n.first as usize;
+                continue;
+            }
+        }
+        match stack.pop() {
+            Some(k) => node = k,
+            None => return Some(visited),
+        }
+    }
+}
+
+/// The direct pass's work counters ([`DirectPass::count_work`]):
+/// - unculled, every light in range shaded (`All`), shadowed: every light
+///   a candidate at every pixel; the shadow rays (one per light above a
+///   pixel's horizon) and the occluder BVH nodes they visit equal a CPU
+///   walk of the same tree in the kernel's order (within 0.1%: the two
+///   sides' float rounding at box faces);
+/// - stochastic culling, resampled picks: the candidates equal the
+///   in-range counts the image carries (its alpha), one evaluation each,
+///   at most 8 rays per pixel; with reuse, more evaluations (the reused
+///   targets); unshadowed, no ray and no node.
+fn work_counters() {
+    let Some(gpu) = gpu() else { return };
+    let s = setup(gpu);
+    let inst = instances(Vec3::new(0.38, 0.18, 0.33));
+    let occ = Occluders::new(&s.meshes, &inst).unwrap();
+    let out = engine::output(gpu, (W, H));
+    let view = out.create_view(&Default::default());
+    let inputs = DirectInputs {
+        view_projection: Some(Scene::cornell_box().camera.view_projection(W, H, 0.01, 100.0)),
+        ..DirectInputs::new(
+            GBuffer { surface: Surface::Position(&s.position), normal: &s.normal, eye: s.eye },
+            &view,
+        )
+    };
+    let shaded = s.points.iter().flatten().count() as u64;
+
+    let mut all = pass(gpu, &s, DirectSelection::All);
+    all.set_shadows(Some(Shadows::new(&occ))).unwrap();
+    let c = all
+        .count_work(&inputs, &DirectSettings { culling: Culling::None, seed: 3, frame: 0 })
+        .unwrap();
+    let (mut rays, mut nodes) = (0u64, 0u64);
+    for &(x, n) in s.points.iter().flatten() {
+        let n = n.normalize();
+        let origin = x + n * (OFFSET * (s.eye - x).length());
+        for l in &s.lights {
+            let y = l.bound().center;
+            if connection_cosine(x, y, n, n, f32::INFINITY) > 0.0
+                && let Some(v) = nodes_visited(&occ, origin, y)
+            {
+                rays += 1;
+                nodes += v;
+            }
+        }
+    }
+    eprintln!(
+        "All, unculled, shadowed: {:.1} candidates, {:.1} rays, {:.1} BVH nodes per pixel (CPU: {:.1} rays, {:.1} nodes)",
+        c.per_pixel(c.candidates),
+        c.per_pixel(c.rays),
+        c.per_pixel(c.nodes),
+        rays as f64 / shaded as f64,
+        nodes as f64 / shaded as f64
+    );
+    assert_eq!((c.pixels, c.candidates, c.evaluations), (shaded, shaded * 200, 0));
+    let close = |gpu: u64, cpu: u64| (gpu as f64 - cpu as f64).abs() <= 1e-3 * cpu as f64;
+    assert!(close(c.rays, rays), "rays: GPU {}, CPU {rays}", c.rays);
+    assert!(close(c.nodes, nodes), "nodes: GPU {}, CPU {nodes}", c.nodes);
+    assert!(nodes > 3 * rays, "the walks are too short to say much: {nodes} nodes, {rays} rays");
+
+    let culling = Culling::Stochastic(RangeParams::new(0.01, 1.0).unwrap());
+    let settings = DirectSettings { culling, seed: 3, frame: 5 };
+    let k8 = DirectSelection::Resampled { k: 8 };
+    for reuse in [None, Some(DirectReuse::default())] {
+        let mut p = reusing_pass(gpu, &s, k8, reuse);
+        p.set_shadows(Some(Shadows::new(&occ))).unwrap();
+        if reuse.is_some() {
+            // A history to reuse.
+            seeded_frame(gpu, &s, &mut p, DirectSettings { frame: 4, ..settings });
+        }
+        let c = p.count_work(&inputs, &settings).unwrap();
+        let img = engine::submit_and_read(
+            gpu,
+            gpu.device.create_command_encoder(&Default::default()),
+            &out,
+        );
+        let in_range: u64 = img.iter().map(|px| px[3] as u64).sum();
+        eprintln!(
+            "resampled, reuse {}: {:.1} candidates, {:.1} evaluations, {:.2} rays, {:.1} BVH nodes per pixel",
+            reuse.is_some(),
+            c.per_pixel(c.candidates),
+            c.per_pixel(c.evaluations),
+            c.per_pixel(c.rays),
+            c.per_pixel(c.nodes)
+        );
+        assert_eq!((c.pixels, c.candidates), (shaded, in_range));
+        if reuse.is_some() {
+            assert!(c.evaluations > c.candidates, "{c:?}");
+        } else {
+            assert_eq!(c.evaluations, c.candidates);
+        }
+        assert!(c.rays > 0 && c.rays <= 8 * c.pixels && c.nodes >= c.rays, "{c:?}");
+        p.set_shadows(None).unwrap();
+        let open = p.count_work(&inputs, &settings).unwrap();
+        assert_eq!((open.pixels, open.rays, open.nodes), (shaded, 0, 0));
+    }
+    gpu.take_errors().unwrap();
+}
+
 /// 100,000 point lights (issue 47's bad-input sizes): the pass builds,
 /// shades every frame finite and its mean over 32 frames equals the
 /// unculled brute force per 8×8 block within 4.5 standard errors
@@ -479,4 +618,5 @@ slc_tests::harness!(
     Gpu: stochastic_mean_matches_the_brute_force,
     Gpu: a_hundred_thousand_lights,
     Gpu: reused_picks_match_the_brute_force,
+    Gpu: work_counters,
 );

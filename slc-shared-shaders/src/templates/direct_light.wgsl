@@ -27,6 +27,23 @@ fn occluded(a: vec3f, b: vec3f) -> bool {
 // specular radiance of the G-buffer's material in specular_tex{% else %}irradiance{% endif %} (rgb) and the number of
 // in-range lights (a); zero where no surface is.
 
+{% if counters %}
+// The counting variant: every shaded pixel adds its work to `direct_counts`
+// (slc-wgpu's DirectCounts; never in a timed frame).
+
+/// Lights this invocation evaluated without a ray.
+var<private> evaluations: u32;
+
+/// Adds `n` to the 64-bit counter of field `f` (low word at 2f, high at
+/// 2f + 1, the carry added where the low word wraps).
+fn direct_count(f: u32, n: u32) {
+    let old = atomicAdd(&direct_counts[2u * f], n);
+    if old + n < old {
+        atomicAdd(&direct_counts[2u * f + 1u], 1u);
+    }
+}
+
+{% endif %}
 /// What the picks add at a pixel: irradiance{% if pbr != "none" %}, and the material's diffuse and specular radiance{% endif %}.
 struct Shaded {
     e: vec3f,
@@ -162,6 +179,9 @@ struct Domain {
 /// surface `x` (normal `n`, material `m`): the channel mean of its whole
 /// unshadowed contribution.
 fn reuse_target(l: GpuLight, cells: u32, x: vec3f, n: vec3f, m: Material) -> f32 {
+{% if counters %}
+    evaluations += 1u;
+{% endif %}
     let c = connect_record(l, x, n, n, UNRANGED, UNRANGED, 1.0, grid_coordinate(cells), grid_coordinate(cells << 16u), 0.0, false);
     return resample_target(output_of(shade_connection(c, x, n, m)));
 }
@@ -329,6 +349,9 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
         let u = vec2f(u1, xi_from_bits(h));
 {% endif %}
         let p = resample_target(output_of(shade_pick_traced(li, x, n, r, rl, m, 1.0, u.x, u.y, eps, false)));
+{% if counters %}
+        evaluations += 1u;
+{% endif %}
         if p > 0.0 {
             total += p;
             for (var q = 0u; q < K; q++) {
@@ -475,5 +498,14 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
 {% endif %}
 {% if pbr == "split" %}
     textureStore(specular_tex, texel, vec4f(t.specular, 0.0));
+{% endif %}
+{% if counters %}
+    direct_count(DIRECT_COUNT_PIXELS, 1u);
+    direct_count(DIRECT_COUNT_CANDIDATES, count);
+    direct_count(DIRECT_COUNT_EVALUATIONS, evaluations);
+{% if shadows %}
+    direct_count(DIRECT_COUNT_RAYS, rays_cast);
+    direct_count(DIRECT_COUNT_NODES, nodes_visited);
+{% endif %}
 {% endif %}
 }

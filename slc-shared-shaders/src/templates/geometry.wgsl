@@ -1,6 +1,13 @@
 // Ray casting through the geometry BVH (bindings geo_nodes, geo_tris): one
 // stack traversal serves closest-hit and shadow (any-hit) rays.
 
+{% if counters and kernel == "direct_light" %}
+/// The counting variant's tallies of this invocation: shadow rays cast and
+/// the BVH nodes they visited.
+var<private> rays_cast: u32;
+var<private> nodes_visited: u32;
+
+{% endif %}
 /// A ray hit: distance `t` and triangle index (in `geo_tris`), or
 /// `tri = NO_LIGHT` for a miss.
 struct GeoHit {
@@ -23,6 +30,9 @@ fn trace(o: vec3f, d: vec3f, t_min: f32, t_max: f32, any_hit: bool) -> GeoHit {
     var node = 0u;
     loop {
         let n = geo_nodes[node];
+{% if counters and kernel == "direct_light" %}
+        nodes_visited += 1u;
+{% endif %}
         if ray_aabb(o, inv_d, n.bmin, n.bmax, hit.t) >= 0.0 {
             if n.count > 0u {
                 for (var i = n.first; i < n.first + n.count; i++) {
@@ -63,5 +73,8 @@ fn occluded(a: vec3f, b: vec3f) -> bool {
         return false;
     }
     let eps = shadow_margin(len);
+{% if counters and kernel == "direct_light" %}
+    rays_cast += 1u;
+{% endif %}
     return trace(a, dv / len, eps, len - eps, true).tri != NO_LIGHT;
 }

@@ -102,6 +102,15 @@
 //! - `All`: every candidate, weighted `1/p` (exact given ξ): for small
 //!   ranges; its cost grows with the number in range.
 //!
+//! **Work counters** ([`DirectPass::count_work`], [`DirectCounts`]): a
+//! counting variant of `direct_light` sums per record the shaded pixels,
+//! the lights in range, the lights evaluated without a ray, the shadow
+//! rays and the occluder BVH nodes they visit: the pass's work measured
+//! on any adapter (lavapipe: the shadow test's 200 lights, resampled
+//! picks, 82 candidates, 82 evaluations, 7.0 rays and 92 nodes per pixel;
+//! reused, 114 evaluations, 7.2 rays, 96 nodes; `tests/tests/direct_shadows.rs`
+//! checks the rays and nodes against a CPU walk of the same tree).
+//!
 //! With stochastic culling each light adds at most ε to a pixel's standard
 //! deviation (Lambertian receiver) and the picks add their own noise: a
 //! single frame is noisy by design. Vary `frame` every frame and
@@ -150,7 +159,11 @@ use glam::{Mat4, Vec3};
 use slc_core::light::Light;
 use slc_scene::lights::LightSet;
 use slc_scene::occluders::Occluders;
-use slc_shared_shaders::layout::{CullParams, ReuseParams, ReuseSlot, ReuseSurface, ViewParams};
+use slc_shared_shaders::layout::{
+    CullParams, DIRECT_COUNT_CANDIDATES, DIRECT_COUNT_EVALUATIONS, DIRECT_COUNT_FIELDS,
+    DIRECT_COUNT_NODES, DIRECT_COUNT_PIXELS, DIRECT_COUNT_RAYS, ReuseParams, ReuseSlot,
+    ReuseSurface, ViewParams,
+};
 use slc_shared_shaders::{DirectOutput, Features, Kernel, Selection};
 
 /// Tile edge of the 2-D kernels, in pixels.
@@ -428,6 +441,41 @@ pub struct DirectPass {
     cache: ViewCache<Vec<wgpu::TextureView>>,
     /// The reuse's buffers and history, with [`DirectPassDesc::reuse`].
     reuse: Option<Reuse>,
+    /// The counting variant, built at the first [`DirectPass::count_work`].
+    counting: Option<Counting>,
+}
+
+/// The counting variant of `direct_light` (`Features::counters`), shadowed
+/// or not as the pass was when it was built, and its counters.
+struct Counting {
+    shadows: bool,
+    pipe: Pipe,
+    counters: wgpu::Buffer,
+    staging: wgpu::Buffer,
+}
+
+/// The direct pass's work in one record, summed over the shaded pixels
+/// ([`DirectPass::count_work`]): what anyone can measure without a GPU.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct DirectCounts {
+    /// Pixels shaded (with a surface).
+    pub pixels: u64,
+    /// Lights in range (the candidates the BSH walk found).
+    pub candidates: u64,
+    /// Lights evaluated without a ray: resampled picks' candidates and
+    /// the reuse's targets (0 for weighted, uniform and all picks).
+    pub evaluations: u64,
+    /// Shadow rays cast (0 unshadowed).
+    pub rays: u64,
+    /// Occluder BVH nodes the shadow rays visited.
+    pub nodes: u64,
+}
+
+impl DirectCounts {
+    /// `count` per shaded pixel (0 without one).
+    pub fn per_pixel(&self, count: u64) -> f64 {
+        count as f64 / self.pixels.max(1) as f64
+    }
 }
 
 /// The reuse's state: its uniforms, the two reservoir buffers (this
@@ -590,6 +638,7 @@ impl DirectPass {
             view,
             cache: ViewCache::new(),
             reuse,
+            counting: None,
         };
         gpu.take_errors()?;
         Ok(s)
@@ -793,6 +842,81 @@ impl DirectPass {
         inputs: &DirectInputs,
         settings: &DirectSettings,
     ) -> Result<(), GpuError> {
+        let view_projection = self.encode(encoder, inputs, settings, false)?;
+        if let Some(r) = self.reuse.as_mut() {
+            // The next record's previous lights are this record's.
+            encoder.copy_buffer_to_buffer(
+                &self.set.lights,
+                0,
+                &r.lights_prev,
+                0,
+                r.lights_prev.size(),
+            );
+            r.previous = view_projection.map(|m| (m, inputs.gbuffer.eye));
+            r.parity ^= 1;
+        }
+        Ok(())
+    }
+
+    /// Counts the work a record of `inputs` and `settings` does
+    /// ([`DirectCounts`]): the counting variant of `direct_light`, built
+    /// at the first call (and again when shadows are turned on or off),
+    /// recorded, submitted and read back (waits). The image it writes is
+    /// the record's; it does not advance the reuse's history (the next
+    /// record reuses what the last record left). Never part of a timed
+    /// frame.
+    pub fn count_work(
+        &mut self,
+        inputs: &DirectInputs,
+        settings: &DirectSettings,
+    ) -> Result<DirectCounts, GpuError> {
+        let shadows = self.occluders.is_some();
+        let bytes = u64::from(DIRECT_COUNT_FIELDS) * 8;
+        if self.counting.as_ref().is_none_or(|c| c.shadows != shadows) {
+            let f = Features { counters: true, shadows, ..self.features };
+            check_kernels(&self.gpu, &[(Kernel::DirectLight, &f, 0)])?;
+            let layout = KernelLayout::new(&self.gpu, Kernel::DirectLight, &f)?;
+            let pipe = (layout.pipeline(&self.gpu, &f, None)?, layout);
+            let rw = wgpu::BufferUsages::STORAGE
+                | wgpu::BufferUsages::COPY_SRC
+                | wgpu::BufferUsages::COPY_DST;
+            let read = wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST;
+            self.counting = Some(Counting {
+                shadows,
+                pipe,
+                counters: zeroed(&self.gpu, "slc direct counters", bytes, rw),
+                staging: zeroed(&self.gpu, "slc direct counters staging", bytes, read),
+            });
+        }
+        let mut encoder = self.gpu.device.create_command_encoder(&Default::default());
+        if let Some(c) = &self.counting {
+            encoder.clear_buffer(&c.counters, 0, None);
+        }
+        self.encode(&mut encoder, inputs, settings, true)?;
+        self.gpu.queue.submit([encoder.finish()]);
+        let c = self.counting.as_ref().expect("built above");
+        let words: Vec<u32> = crate::kernel::read_back(&self.gpu, &c.counters, &c.staging)?;
+        self.gpu.take_errors()?;
+        let v = |f: u32| words[2 * f as usize] as u64 | (words[2 * f as usize + 1] as u64) << 32;
+        Ok(DirectCounts {
+            pixels: v(DIRECT_COUNT_PIXELS),
+            candidates: v(DIRECT_COUNT_CANDIDATES),
+            evaluations: v(DIRECT_COUNT_EVALUATIONS),
+            rays: v(DIRECT_COUNT_RAYS),
+            nodes: v(DIRECT_COUNT_NODES),
+        })
+    }
+
+    /// Records a frame's uniforms and dispatches, with the shading kernel
+    /// or its counting variant; returns the record's view-projection for
+    /// the reuse.
+    fn encode(
+        &mut self,
+        encoder: &mut wgpu::CommandEncoder,
+        inputs: &DirectInputs,
+        settings: &DirectSettings,
+        counting: bool,
+    ) -> Result<Option<Mat4>, GpuError> {
         let mut view = self.check_inputs(inputs, settings.seed, settings.frame)?;
         view.shadow_offset = self.occluders.as_ref().map_or(0.0, |o| o.1);
         let view_projection = match self.reuse {
@@ -866,8 +990,8 @@ impl DirectPass {
         let key: Vec<wgpu::TextureView> = views.iter().filter_map(|(_, v)| v.cloned()).collect();
         let (gpu, shade, view_slots) = (&self.gpu, &self.shade.1, &self.view);
         let reuse_slots = self.reuse.as_ref().map(|r| &r.params);
-        let group0 = self.cache.get(key, || {
-            let res: Vec<(&str, wgpu::BindingResource)> = views
+        let resources = || -> Vec<(&str, wgpu::BindingResource)> {
+            views
                 .iter()
                 .map(|&(name, v)| {
                     let uniform = match reuse_slots {
@@ -876,9 +1000,31 @@ impl DirectPass {
                     };
                     (name, v.map_or(uniform, tex))
                 })
-                .collect();
-            shade.group(gpu, 0, &res)
-        });
+                .collect()
+        };
+        let parity = self.reuse.as_ref().map_or(0, |r| r.parity);
+        let (pipeline, group0, group1) = match (&self.counting, counting) {
+            (Some(c), true) => {
+                let mut res = resources();
+                res.push(("direct_counts", crate::kernel::whole(&c.counters)));
+                let (_, group1) = groups(
+                    gpu,
+                    &self.set,
+                    &self.ranges.1,
+                    &c.pipe.1,
+                    &self.cull,
+                    binds_cones(&self.desc),
+                    self.desc.light_types.ies,
+                    self.occluders.as_ref().map(|o| &o.0),
+                    self.reuse.as_ref(),
+                );
+                (&c.pipe.0, c.pipe.1.group(gpu, 0, &res), group1[parity].clone())
+            }
+            _ => {
+                let group0 = self.cache.get(key, || shade.group(gpu, 0, &resources()));
+                (&self.shade.0, group0, self.lights_groups[parity].clone())
+            }
+        };
         let (w, h) = (self.desc.width, self.desc.height);
         let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
             label: Some("slc direct"),
@@ -888,26 +1034,12 @@ impl DirectPass {
         pass.set_bind_group(0, &self.ranges_group, &[0]);
         pass.dispatch_workgroups(self.set.n.div_ceil(WG), 1, 1);
         self.set.encode_refit(&mut pass);
-        pass.set_pipeline(&self.shade.0);
+        pass.set_pipeline(pipeline);
         let offsets: &[u32] = if self.reuse.is_some() { &[0, 0] } else { &[0] };
         pass.set_bind_group(0, &group0, offsets);
-        let parity = self.reuse.as_ref().map_or(0, |r| r.parity);
-        pass.set_bind_group(1, &self.lights_groups[parity], &[]);
+        pass.set_bind_group(1, &group1, &[]);
         pass.dispatch_workgroups(w.div_ceil(TILE), h.div_ceil(TILE), 1);
-        drop(pass);
-        if let Some(r) = self.reuse.as_mut() {
-            // The next record's previous lights are this record's.
-            encoder.copy_buffer_to_buffer(
-                &self.set.lights,
-                0,
-                &r.lights_prev,
-                0,
-                r.lights_prev.size(),
-            );
-            r.previous = view_projection.map(|m| (m, inputs.gbuffer.eye));
-            r.parity ^= 1;
-        }
-        Ok(())
+        Ok(view_projection)
     }
 }
 

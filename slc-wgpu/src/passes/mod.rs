@@ -74,7 +74,7 @@ pub mod indirect;
 pub mod temporal;
 
 pub use direct::{
-    Dielectric, DirectInputs, DirectOutputs, DirectPass, DirectPassDesc, DirectReuse,
+    Dielectric, DirectCounts, DirectInputs, DirectOutputs, DirectPass, DirectPassDesc, DirectReuse,
     DirectSelection, DirectSettings, MaterialInputs, Shadows,
 };
 pub use indirect::{

@@ -1,0 +1,964 @@
+#version 430 core
+#extension GL_ARB_compute_shader : require
+#extension GL_ARB_shader_storage_buffer_object : require
+layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
+
+struct GpuLight {
+    vec3 p0_;
+    uint kind;
+    vec3 p1_;
+    float a;
+    vec3 p2_;
+    float b;
+    vec3 intensity;
+    uint ies_base;
+};
+struct GpuGeoNode {
+    vec3 bmin;
+    uint first;
+    vec3 bmax;
+    uint count;
+};
+struct GpuTriangle {
+    vec3 v0_;
+    uint material;
+    vec3 v1_;
+    uint light;
+    vec3 v2_;
+    uint pad;
+};
+struct ViewParams {
+    vec4 c0_;
+    vec4 c1_;
+    vec4 c2_;
+    vec4 c3_;
+    vec3 eye;
+    uint width;
+    uint height;
+    float shadow_offset;
+    uint seed;
+    uint frame;
+    vec3 f0_d;
+    float f90_d;
+};
+struct BshNode {
+    vec3 center;
+    float radius;
+    uint child;
+    uint next;
+    uint light;
+    float extent;
+};
+struct GeoHit {
+    float t;
+    uint tri;
+};
+struct Connection {
+    vec3 e;
+    vec3 y;
+    float cos_x;
+};
+struct Shaded {
+    vec3 e;
+    vec3 diffuse;
+    vec3 specular;
+};
+struct Material {
+    vec3 base;
+    float metallic;
+    float alpha;
+    vec3 v;
+    float roughness;
+    float reflectance;
+};
+const uint LIGHT_POINT = 0u;
+const uint LIGHT_SPOT = 1u;
+const uint LIGHT_IES = 2u;
+const uint LIGHT_TRIANGLE = 3u;
+const uint LIGHT_VPL = 4u;
+const uint NO_LIGHT = 4294967295u;
+const uint COUNT_TILES = 0u;
+const uint COUNT_GROUP_TESTS = 1u;
+const uint COUNT_CLUSTER_TESTS = 2u;
+const uint COUNT_SPHERE_TESTS = 3u;
+const uint COUNT_TESTED = 4u;
+const uint COUNT_KEPT = 5u;
+const uint COUNT_PIXELS = 6u;
+const uint COUNT_FIELDS = 7u;
+const uint DIRECT_COUNT_PIXELS = 0u;
+const uint DIRECT_COUNT_CANDIDATES = 1u;
+const uint DIRECT_COUNT_EVALUATIONS = 2u;
+const uint DIRECT_COUNT_RAYS = 3u;
+const uint DIRECT_COUNT_NODES = 4u;
+const uint DIRECT_COUNT_FIELDS = 5u;
+const uint MAP_CAMERA = 0u;
+const uint MAP_PERSPECTIVE = 1u;
+const uint MAP_ORTHOGRAPHIC = 2u;
+const float XI_STEP = 5.9604645e-8;
+const uint PICK_STREAM = 2654435769u;
+const float TWO_PI = 6.2831855;
+const float UNRANGED = 1e38;
+const float CULL_RADIUS_SCALE = 1.000001;
+const float SPHERE_PAD = 4.7683716e-7;
+const float SPHERE_HUGE = 3.4028235e38;
+const float SPHERE_PAD_ABS = 1e-18;
+const uint CLUSTER = 64u;
+const uint GROUP_SIDE = 8u;
+const float INV_PI = 0.31830987;
+const float MIN_D2_ = 1e-12;
+const float MAX_INTENSITY = 7.2057594e16;
+const uint BSH_NONE = 4294967295u;
+const uint RESERVOIR_FULL = 4294967295u;
+const float GGX_ALPHA_MIN = 0.001;
+const float RANGE_SCALE_MAX = 64.0;
+const uint LIGHT_BVH_LEAF = 4294967295u;
+const float ONE_MINUS_EPSILON = 0.99999994;
+const float F32_MAX = 3.4028235e38;
+const float DEPTH_NONE = 1e30;
+const float DEPTH_SIGMA = 0.05;
+const float COVER_WEIGHT = 0.1;
+const uint ROULETTE_DEPTH = 2u;
+const float TEMPORAL_MAX_HISTORY = 32.0;
+const float TEMPORAL_DEPTH_TOLERANCE = 0.01;
+const float TEMPORAL_MOTION_DEPTH_TOLERANCE = 0.05;
+const float TEMPORAL_NORMAL_COS = 0.9;
+const float TEMPORAL_MIN_MOMENTS = 8.0;
+const float TEMPORAL_CHANGED_HISTORY = 1.0;
+const float TEMPORAL_CHANGE_LOW = 4.0;
+const float TEMPORAL_CHANGE_HIGH = 8.0;
+const float TEMPORAL_MIN_WEIGHT = 0.01;
+const uint K = 8u;
+const uint BSH = 0u;
+
+uint rays_cast = 0u;
+
+uint nodes_visited = 0u;
+
+layout(std430) readonly buffer type_7_block_0Compute { GpuGeoNode _group_1_binding_6_cs[]; };
+
+layout(std430) readonly buffer type_8_block_1Compute { GpuTriangle _group_1_binding_7_cs[]; };
+
+layout(std140) uniform ViewParams_block_2Compute { ViewParams _group_0_binding_0_cs; };
+
+uniform sampler2D _group_0_binding_1_cs;
+
+uniform sampler2D _group_0_binding_2_cs;
+
+layout(rgba16f) writeonly uniform image2D _group_0_binding_3_cs;
+
+layout(std430) readonly buffer type_12_block_3Compute { GpuLight _group_1_binding_1_cs[]; };
+
+layout(std430) readonly buffer type_4_block_4Compute { float _group_1_binding_2_cs[]; };
+
+layout(std430) readonly buffer type_4_block_5Compute { float _group_1_binding_3_cs[]; };
+
+layout(std430) readonly buffer type_13_block_6Compute { BshNode _group_1_binding_4_cs[]; };
+
+layout(std430) buffer type_15_block_7Compute { uint _group_0_binding_8_cs[]; };
+
+uint evaluations = 0u;
+
+
+float to_f32_(uint u) {
+    return float(u);
+}
+
+uint mul_lo_u32_(uint a, uint b_1) {
+    return (a * b_1);
+}
+
+uint add_wrap_u32_(uint a_1, uint b_2) {
+    return (a_1 + b_2);
+}
+
+float f32_from_bits(uint u_1) {
+    return uintBitsToFloat(u_1);
+}
+
+float xi_from_bits(uint bits) {
+    float _e3 = to_f32_((bits >> 8u));
+    return (_e3 * XI_STEP);
+}
+
+uint pcg_hash(uint x) {
+    uint _e2 = mul_lo_u32_(x, 747796405u);
+    uint _e4 = add_wrap_u32_(_e2, 2891336453u);
+    uint _e12 = mul_lo_u32_(((_e4 >> ((_e4 >> 28u) + 4u)) ^ _e4), 277803737u);
+    return ((_e12 >> 22u) ^ _e12);
+}
+
+uint point_stream(uint seed, uint point, uint frame) {
+    uint _e3 = pcg_hash(frame);
+    uint _e5 = pcg_hash((point ^ _e3));
+    uint _e7 = pcg_hash((seed ^ _e5));
+    return _e7;
+}
+
+uint pick_stream(uint stream) {
+    uint _e3 = pcg_hash((stream ^ PICK_STREAM));
+    return _e3;
+}
+
+float slc_weight(float rt2_, float d2_) {
+    if ((d2_ <= rt2_)) {
+        return 1.0;
+    }
+    return (d2_ / rt2_);
+}
+
+bool slc_keep(float r2_, float d2_1) {
+    return (d2_1 < r2_);
+}
+
+bool sphere_contains_point(vec3 c, float r_1, vec3 x_1) {
+    vec3 v_2 = (x_1 - c);
+    return (dot(v_2, v_2) <= (r_1 * r_1));
+}
+
+float inverse_square(float d2_2) {
+    return (1.0 / max(d2_2, MIN_D2_));
+}
+
+float connection_factor(float cos_x, float d2_3, float rt2_1, float w) {
+    float _e4 = inverse_square(d2_3);
+    float _e6 = slc_weight(rt2_1, d2_3);
+    return (((cos_x * _e4) * _e6) * w);
+}
+
+float connection_cosine(vec3 x_2, vec3 y, vec3 n, vec3 ng, float r2_1) {
+    bool local_2 = false;
+    bool local_3 = false;
+    vec3 v_3 = (x_2 - y);
+    float d2_6 = dot(v_3, v_3);
+    bool _e7 = slc_keep(r2_1, d2_6);
+    if (!(!(_e7))) {
+        local_2 = !((d2_6 > 0.0));
+    } else {
+        local_2 = true;
+    }
+    bool _e16 = local_2;
+    if (_e16) {
+        return 0.0;
+    }
+    vec3 w_5 = (v_3 / vec3(sqrt(d2_6)));
+    float cos_x_1 = -(dot(n, w_5));
+    if (!((cos_x_1 <= 0.0))) {
+        local_3 = (dot(ng, w_5) >= 0.0);
+    } else {
+        local_3 = true;
+    }
+    bool _e32 = local_3;
+    if (_e32) {
+        return 0.0;
+    }
+    return cos_x_1;
+}
+
+float spot_falloff(float cos_theta, float cos_outer, float cos_inner, float shape) {
+    if ((cos_inner <= cos_outer)) {
+        return ((cos_theta >= cos_outer) ? 1.0 : 0.0);
+    }
+    float t_1 = clamp(((cos_theta - cos_outer) / (cos_inner - cos_outer)), 0.0, 1.0);
+    return ((shape > 0.5) ? (t_1 * t_1) : ((t_1 * t_1) * (3.0 - (2.0 * t_1))));
+}
+
+float bsh_scaled_radius(BshNode node, float scale) {
+    if ((scale == 1.0)) {
+        return node.radius;
+    }
+    if ((node.child == BSH_NONE)) {
+        return (node.extent + (scale * (node.radius - node.extent)));
+    }
+    return (node.radius * scale);
+}
+
+float bsh_range_bound(BshNode node_1) {
+    if ((node_1.child == BSH_NONE)) {
+        return (node_1.radius - node_1.extent);
+    }
+    float _e8 = f32_from_bits(node_1.light);
+    return _e8;
+}
+
+bool weighted_replace(float w_1, float w_sum, float u_2) {
+    return ((u_2 * w_sum) < w_1);
+}
+
+float resample_target(vec3 c_1) {
+    return (((c_1.x + c_1.y) + c_1.z) * 0.33333334);
+}
+
+float smith_root(float cos_, float alpha) {
+    float a2_ = (alpha * alpha);
+    return sqrt((((cos_ * cos_) * (1.0 - a2_)) + a2_));
+}
+
+float specular_peak_factor(vec4 lobe_1) {
+    float _e6 = smith_root(lobe_1.w, lobe_1.z);
+    return ((lobe_1.y * 0.5) / (_e6 + max(lobe_1.w, 0.0)));
+}
+
+float receiver_peak(vec4 lobe_2) {
+    float _e2 = specular_peak_factor(lobe_2);
+    return (lobe_2.x + (_e2 / (lobe_2.z * lobe_2.z)));
+}
+
+float range_scale(vec4 lobe_3) {
+    if ((lobe_3.y <= 0.0)) {
+        return 1.0;
+    }
+    float _e5 = receiver_peak(lobe_3);
+    return clamp(_e5, 1.0, RANGE_SCALE_MAX);
+}
+
+vec4 range_lobe(vec4 lobe_4) {
+    if ((lobe_4.y <= 0.0)) {
+        return vec4(1.0, 0.0, 1.0, 1.0);
+    }
+    float _e10 = specular_peak_factor(lobe_4);
+    float _e14 = range_scale(lobe_4);
+    return vec4(lobe_4.x, _e10, (lobe_4.z * lobe_4.z), sqrt(_e14));
+}
+
+float cone_cos_of(vec3 v, float d2_4, float a_2, vec3 d) {
+    bool local_4 = false;
+    bool local_5 = false;
+    float vd = dot(v, d);
+    float h2_ = (d2_4 - (a_2 * a_2));
+    if (!((h2_ <= 0.0))) {
+        if ((vd >= 0.0)) {
+            local_5 = ((vd * vd) >= h2_);
+        } else {
+            local_5 = false;
+        }
+        bool _e19 = local_5;
+        local_4 = _e19;
+    } else {
+        local_4 = true;
+    }
+    bool _e21 = local_4;
+    if (_e21) {
+        return 1.0;
+    }
+    vec3 c_5 = cross(v, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_5, c_5)) * a_2)) / d2_4), 1.0);
+}
+
+float cone_cos_toward(vec3 center, float radius, vec3 p, vec3 d_1) {
+    vec3 v_4 = (center - p);
+    float _e6 = cone_cos_of(v_4, dot(v_4, v_4), radius, d_1);
+    return _e6;
+}
+
+float range_scale_at(vec4 rl, float cos_t) {
+    float t_2 = (((0.5 + (0.5 * cos_t)) * (rl.z - 1.0)) + 1.0);
+    return clamp((rl.x + ((rl.y * rl.z) / (t_2 * t_2))), 1.0, (rl.w * rl.w));
+}
+
+float range_scale_toward(vec4 rl_1, vec3 center_1, float radius_1, vec3 p_1, vec3 r_2) {
+    if ((rl_1.w <= 1.0)) {
+        return 1.0;
+    }
+    float _e9 = cone_cos_toward(center_1, radius_1, p_1, r_2);
+    float _e10 = range_scale_at(rl_1, _e9);
+    return _e10;
+}
+
+float shadow_margin(float len) {
+    return (0.0001 * len);
+}
+
+float ray_inverse(float x_3) {
+    return (1.0 / ((abs(x_3) < 1e-30) ? 1e-30 : x_3));
+}
+
+vec3 ray_inverse3_(vec3 d_2) {
+    float _e2 = ray_inverse(d_2.x);
+    float _e4 = ray_inverse(d_2.y);
+    float _e6 = ray_inverse(d_2.z);
+    return vec3(_e2, _e4, _e6);
+}
+
+float ray_aabb(vec3 o, vec3 inv_d, vec3 bmin, vec3 bmax, float t_max) {
+    vec3 t0_ = ((bmin - o) * inv_d);
+    vec3 t1_ = ((bmax - o) * inv_d);
+    vec3 lo = min(t0_, t1_);
+    vec3 hi = max(t0_, t1_);
+    float t_in = max(max(lo.x, lo.y), max(lo.z, 0.0));
+    float t_out = min(min(hi.x, hi.y), min(hi.z, t_max));
+    if ((t_in <= t_out)) {
+        return t_in;
+    }
+    return -1.0;
+}
+
+float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_3, vec3 b_3, vec3 c_2, float t_min, float t_max_1) {
+    bool local_6 = false;
+    bool local_7 = false;
+    bool local_8 = false;
+    vec3 e1_ = (b_3 - a_3);
+    vec3 e2_ = (c_2 - a_3);
+    vec3 p_2 = cross(d_3, e2_);
+    float det = dot(e1_, p_2);
+    if ((abs(det) <= 0.0)) {
+        return -1.0;
+    }
+    float inv = (1.0 / det);
+    vec3 s_3 = (o_1 - a_3);
+    float u_3 = (dot(s_3, p_2) * inv);
+    if (!((u_3 < 0.0))) {
+        local_6 = (u_3 > 1.0);
+    } else {
+        local_6 = true;
+    }
+    bool _e28 = local_6;
+    if (_e28) {
+        return -1.0;
+    }
+    vec3 q_1 = cross(s_3, e1_);
+    float v_5 = (dot(d_3, q_1) * inv);
+    if (!((v_5 < 0.0))) {
+        local_7 = ((u_3 + v_5) > 1.0);
+    } else {
+        local_7 = true;
+    }
+    bool _e42 = local_7;
+    if (_e42) {
+        return -1.0;
+    }
+    float t_3 = (dot(e2_, q_1) * inv);
+    if ((t_3 > t_min)) {
+        local_8 = (t_3 < t_max_1);
+    } else {
+        local_8 = false;
+    }
+    bool _e51 = local_8;
+    if (_e51) {
+        return t_3;
+    }
+    return -1.0;
+}
+
+vec3 light_intensity(GpuLight l, vec3 w_2) {
+    switch(l.kind) {
+        case 0u: {
+            return l.intensity;
+        }
+        case 1u: {
+            float _e11 = spot_falloff(dot(l.p1_, w_2), l.a, l.b, l.p2_.x);
+            return (l.intensity * _e11);
+        }
+        default: {
+            return vec3(0.0);
+        }
+    }
+}
+
+vec3 light_point(GpuLight l_1, float u1_, float u2_) {
+    return l_1.p0_;
+}
+
+GeoHit trace(vec3 o_2, vec3 d_4, float t_min_1, float t_max_2, bool any_hit) {
+    GeoHit hit = GeoHit(0.0, 0u);
+    uint stack[64] = uint[64](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
+    uint sp = 0u;
+    uint node_2 = 0u;
+    uint i = 0u;
+    hit.t = t_max_2;
+    hit.tri = NO_LIGHT;
+    if ((uint(_group_1_binding_6_cs.length()) == 0u)) {
+        GeoHit _e13 = hit;
+        return _e13;
+    }
+    vec3 _e14 = ray_inverse3_(d_4);
+    while(true) {
+        uint _e21 = node_2;
+        GpuGeoNode n_7 = _group_1_binding_6_cs[_e21];
+        uint _e25 = nodes_visited;
+        nodes_visited = (_e25 + 1u);
+        float _e31 = hit.t;
+        float _e32 = ray_aabb(o_2, _e14, n_7.bmin, n_7.bmax, _e31);
+        if ((_e32 >= 0.0)) {
+            if ((n_7.count > 0u)) {
+                i = n_7.first;
+                bool loop_init = true;
+                while(true) {
+                    if (!loop_init) {
+                        uint _e62 = i;
+                        i = (_e62 + 1u);
+                    }
+                    loop_init = false;
+                    uint _e40 = i;
+                    if ((_e40 < (n_7.first + n_7.count))) {
+                    } else {
+                        break;
+                    }
+                    {
+                        uint _e46 = i;
+                        GpuTriangle t_4 = _group_1_binding_7_cs[_e46];
+                        float _e53 = hit.t;
+                        float _e54 = ray_triangle(o_2, d_4, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e53);
+                        if ((_e54 > 0.0)) {
+                            hit.t = _e54;
+                            uint _e59 = i;
+                            hit.tri = _e59;
+                            if (any_hit) {
+                                GeoHit _e60 = hit;
+                                return _e60;
+                            }
+                        }
+                    }
+                }
+            } else {
+                uint _e64 = sp;
+                if ((_e64 < 64u)) {
+                    uint _e67 = sp;
+                    stack[_e67] = (n_7.first + 1u);
+                    uint _e72 = sp;
+                    sp = (_e72 + 1u);
+                }
+                node_2 = n_7.first;
+                continue;
+            }
+        }
+        uint _e76 = sp;
+        if ((_e76 == 0u)) {
+            break;
+        }
+        uint _e79 = sp;
+        sp = (_e79 - 1u);
+        uint _e82 = sp;
+        uint _e84 = stack[_e82];
+        node_2 = _e84;
+    }
+    GeoHit _e85 = hit;
+    return _e85;
+}
+
+bool occluded(vec3 a_4, vec3 b_4) {
+    vec3 dv = (b_4 - a_4);
+    float len_1 = length(dv);
+    if ((len_1 <= 0.0)) {
+        return false;
+    }
+    float _e7 = shadow_margin(len_1);
+    uint _e9 = rays_cast;
+    rays_cast = (_e9 + 1u);
+    GeoHit _e16 = trace(a_4, (dv / vec3(len_1)), _e7, (len_1 - _e7), true);
+    return (_e16.tri != NO_LIGHT);
+}
+
+BshNode bsh_node(uint nodes, uint i_1) {
+    BshNode _e4 = _group_1_binding_4_cs[i_1];
+    return _e4;
+}
+
+uint bsh_count(uint nodes_1) {
+    return uint(_group_1_binding_4_cs.length());
+}
+
+uint bsh_first(uint nodes_2) {
+    uint _e1 = bsh_count(nodes_2);
+    if ((_e1 > 0u)) {
+        return 0u;
+    }
+    return BSH_NONE;
+}
+
+float bsh_inner_scale(float a_5, vec3 v_1, float d2_5, vec3 r_3, vec4 rl_2) {
+    float _e5 = cone_cos_of(v_1, d2_5, a_5, r_3);
+    float _e8 = range_scale_at(rl_2, (_e5 + 2e-6));
+    return _e8;
+}
+
+bool bsh_reaches(BshNode node_3, vec3 x_4, vec3 r_4, vec4 rl_3) {
+    bool local_9 = false;
+    bool local_10 = false;
+    bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_4);
+    if (_e6) {
+        return true;
+    }
+    if (!((rl_3.w <= 1.0))) {
+        bool _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001)), x_4);
+        local_9 = !(_e20);
+    } else {
+        local_9 = true;
+    }
+    bool _e23 = local_9;
+    if (_e23) {
+        return false;
+    }
+    float _e25 = bsh_range_bound(node_3);
+    vec3 v_6 = (x_4 - node_3.center);
+    float d2_7 = dot(v_6, v_6);
+    float reach_max = (node_3.extent + ((rl_3.w * 1.001) * _e25));
+    if ((d2_7 > (reach_max * reach_max))) {
+        return false;
+    }
+    if ((node_3.child == BSH_NONE)) {
+        float _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_4, r_4);
+        float _e46 = bsh_scaled_radius(node_3, sqrt(_e43));
+        bool _e47 = sphere_contains_point(node_3.center, _e46, x_4);
+        return _e47;
+    }
+    float _e50 = bsh_inner_scale(node_3.extent, -(v_6), d2_7, r_4, rl_3);
+    float s_c = (_e50 * 1.001);
+    float reach = (node_3.extent + (sqrt(s_c) * _e25));
+    if ((d2_7 <= ((node_3.radius * node_3.radius) * s_c))) {
+        local_10 = (d2_7 <= (reach * reach));
+    } else {
+        local_10 = false;
+    }
+    bool _e67 = local_10;
+    return _e67;
+}
+
+uint bsh_next_leaf_lobe(uint nodes_3, uint start, vec3 x_5, vec3 r_5, vec4 rl_4) {
+    uint i_2 = 0u;
+    i_2 = start;
+    while(true) {
+        uint _e6 = i_2;
+        if ((_e6 != BSH_NONE)) {
+        } else {
+            break;
+        }
+        {
+            uint _e9 = i_2;
+            BshNode _e10 = bsh_node(nodes_3, _e9);
+            bool _e11 = bsh_reaches(_e10, x_5, r_5, rl_4);
+            if (_e11) {
+                if ((_e10.child == BSH_NONE)) {
+                    uint _e15 = i_2;
+                    return _e15;
+                }
+                i_2 = _e10.child;
+            } else {
+                i_2 = _e10.next;
+            }
+        }
+    }
+    return BSH_NONE;
+}
+
+Connection connect_record(GpuLight l_2, vec3 x_6, vec3 n_1, vec3 ng_1, float r2_2, float rt2_2, float w_res, float u1_1, float u2_1, float eps, bool trace_1) {
+    Connection c_3 = Connection(vec3(0.0), vec3(0.0), 0.0);
+    bool local_11 = false;
+    bool local_12 = false;
+    c_3.e = vec3(0.0);
+    vec3 _e16 = light_point(l_2, u1_1, u2_1);
+    c_3.y = _e16;
+    vec3 _e19 = c_3.y;
+    float _e20 = connection_cosine(x_6, _e19, n_1, ng_1, r2_2);
+    c_3.cos_x = _e20;
+    float _e22 = c_3.cos_x;
+    if (!((_e22 <= 0.0))) {
+        if (trace_1) {
+            vec3 _e33 = c_3.y;
+            bool _e34 = occluded((x_6 + (ng_1 * eps)), _e33);
+            local_12 = _e34;
+        } else {
+            local_12 = false;
+        }
+        bool _e36 = local_12;
+        local_11 = _e36;
+    } else {
+        local_11 = true;
+    }
+    bool _e38 = local_11;
+    if (_e38) {
+        Connection _e39 = c_3;
+        return _e39;
+    }
+    vec3 _e41 = c_3.y;
+    vec3 v_7 = (x_6 - _e41);
+    float d2_8 = dot(v_7, v_7);
+    vec3 _e48 = light_intensity(l_2, (v_7 / vec3(sqrt(d2_8))));
+    float _e50 = c_3.cos_x;
+    float _e51 = connection_factor(_e50, d2_8, rt2_2, w_res);
+    c_3.e = (_e48 * _e51);
+    Connection _e53 = c_3;
+    return _e53;
+}
+
+Connection connect_traced(uint li, vec3 x_7, vec3 n_2, vec3 ng_2, float s, float w_res_1, float u1_2, float u2_2, float eps_1, bool trace_2) {
+    GpuLight _e12 = _group_1_binding_1_cs[li];
+    float _e15 = _group_1_binding_3_cs[li];
+    float _e19 = _group_1_binding_2_cs[li];
+    Connection _e21 = connect_record(_e12, x_7, n_2, ng_2, (s * _e15), (s * _e19), w_res_1, u1_2, u2_2, eps_1, trace_2);
+    return _e21;
+}
+
+vec4 surface_at(ivec2 texel) {
+    vec4 p_3 = texelFetch(_group_0_binding_1_cs, texel, 0);
+    return ((p_3.w > 0.0) ? vec4(p_3.xyz, 1.0) : vec4(0.0));
+}
+
+void direct_count(uint f, uint n_3) {
+    uint _e6 = atomicAdd(_group_0_binding_8_cs[(2u * f)], n_3);
+    if (((_e6 + n_3) < _e6)) {
+        uint _e16 = atomicAdd(_group_0_binding_8_cs[((2u * f) + 1u)], 1u);
+        return;
+    } else {
+        return;
+    }
+}
+
+Shaded shade_connection(Connection c_4, vec3 x_8, vec3 n_4, Material m_1) {
+    Shaded s_1 = Shaded(vec3(0.0), vec3(0.0), vec3(0.0));
+    s_1.e = c_4.e;
+    s_1.diffuse = vec3(0.0);
+    s_1.specular = vec3(0.0);
+    Shaded _e13 = s_1;
+    return _e13;
+}
+
+Shaded shade_pick_traced(uint li_1, vec3 x_9, vec3 n_5, vec3 r_6, vec4 rl_5, Material m_2, float w_3, float u1_3, float u2_3, float eps_2, bool trace_3) {
+    Connection _e12 = connect_traced(li_1, x_9, n_5, n_5, 1.0, w_3, u1_3, u2_3, eps_2, trace_3);
+    Shaded _e13 = shade_connection(_e12, x_9, n_5, m_2);
+    return _e13;
+}
+
+Shaded shade_pick(uint li_2, vec3 x_10, vec3 n_6, vec3 r_7, vec4 rl_6, Material m_3, float w_4, float u1_4, float u2_4, float eps_3) {
+    Shaded _e11 = shade_pick_traced(li_2, x_10, n_6, r_7, rl_6, m_3, w_4, u1_4, u2_4, eps_3, true);
+    return _e11;
+}
+
+Shaded add(Shaded a_6, Shaded b_5) {
+    return Shaded((a_6.e + b_5.e), (a_6.diffuse + b_5.diffuse), (a_6.specular + b_5.specular));
+}
+
+uint pick_copies(uint lights[8], uint k_1) {
+    uint copies = 1u;
+    uint j = 0u;
+    bool local_13 = false;
+    bool loop_init_1 = true;
+    while(true) {
+        if (!loop_init_1) {
+            uint _e26 = j;
+            j = (_e26 + 1u);
+        }
+        loop_init_1 = false;
+        uint _e6 = j;
+        if ((_e6 < K)) {
+        } else {
+            break;
+        }
+        {
+            uint _e9 = j;
+            if ((_e9 != k_1)) {
+                uint _e13 = j;
+                local_13 = (lights[_e13] == lights[k_1]);
+            } else {
+                local_13 = false;
+            }
+            bool _e18 = local_13;
+            if (_e18) {
+                uint _e19 = j;
+                if ((_e19 < k_1)) {
+                    return 0u;
+                }
+                uint _e22 = copies;
+                copies = (_e22 + 1u);
+            }
+        }
+    }
+    uint _e28 = copies;
+    return _e28;
+}
+
+vec3 output_of(Shaded s_2) {
+    return s_2.e;
+}
+
+void main() {
+    uvec3 gid = gl_GlobalInvocationID;
+    bool local = false;
+    bool local_1 = false;
+    Material m = Material(vec3(0.0), 0.0, 0.0, vec3(0.0), 0.0, 0.0);
+    vec4 lobe = vec4(1.0, 0.0, 1.0, 1.0);
+    vec3 r = vec3(0.0);
+    uint h = 0u;
+    Shaded t = Shaded(vec3(0.0), vec3(0.0), vec3(0.0));
+    uint slot_light[8] = uint[8](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
+    vec2 slot_u[8] = vec2[8](vec2(0.0), vec2(0.0), vec2(0.0), vec2(0.0), vec2(0.0), vec2(0.0), vec2(0.0), vec2(0.0));
+    float slot_p[8] = float[8](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
+    float total = 0.0;
+    uint count = 0u;
+    uint hc = 0u;
+    uint b = 0u;
+    uint q = 0u;
+    uint k = 0u;
+    uint _e4 = _group_0_binding_0_cs.width;
+    if (!((gid.x >= _e4))) {
+        uint _e12 = _group_0_binding_0_cs.height;
+        local = (gid.y >= _e12);
+    } else {
+        local = true;
+    }
+    bool _e15 = local;
+    if (_e15) {
+        return;
+    }
+    ivec2 texel_1 = ivec2(int(gid.x), int(gid.y));
+    vec4 _e21 = surface_at(texel_1);
+    vec4 _e24 = texelFetch(_group_0_binding_2_cs, texel_1, 0);
+    vec3 nn = _e24.xyz;
+    float len2_ = dot(nn, nn);
+    if (!((_e21.w <= 0.0))) {
+        local_1 = !((len2_ > 0.0));
+    } else {
+        local_1 = true;
+    }
+    bool _e37 = local_1;
+    if (_e37) {
+        imageStore(_group_0_binding_3_cs, texel_1, vec4(0.0));
+        return;
+    }
+    vec3 x_11 = _e21.xyz;
+    vec3 n_8 = (nn / vec3(sqrt(len2_)));
+    r = n_8;
+    vec4 _e53 = lobe;
+    vec4 _e54 = range_lobe(_e53);
+    float _e57 = _group_0_binding_0_cs.shadow_offset;
+    vec3 _e60 = _group_0_binding_0_cs.eye;
+    float eps_4 = (_e57 * length((_e60 - x_11)));
+    uint _e66 = _group_0_binding_0_cs.seed;
+    uint _e70 = _group_0_binding_0_cs.width;
+    uint _e76 = _group_0_binding_0_cs.frame;
+    uint _e77 = point_stream(_e66, ((gid.y * _e70) + gid.x), _e76);
+    uint _e78 = pick_stream(_e77);
+    h = _e78;
+    hc = _e77;
+    uint _e98 = bsh_first(BSH);
+    vec3 _e99 = r;
+    uint _e100 = bsh_next_leaf_lobe(BSH, _e98, x_11, _e99, _e54);
+    b = _e100;
+    bool loop_init_2 = true;
+    while(true) {
+        if (!loop_init_2) {
+            uint _e161 = b;
+            uint _e164 = _group_1_binding_4_cs[_e161].next;
+            vec3 _e165 = r;
+            uint _e166 = bsh_next_leaf_lobe(BSH, _e164, x_11, _e165, _e54);
+            b = _e166;
+        }
+        loop_init_2 = false;
+        uint _e102 = b;
+        if ((_e102 != BSH_NONE)) {
+        } else {
+            break;
+        }
+        {
+            uint _e105 = count;
+            count = (_e105 + 1u);
+            uint _e109 = b;
+            uint li_3 = _group_1_binding_4_cs[_e109].light;
+            uint _e113 = h;
+            uint _e114 = pcg_hash(_e113);
+            h = _e114;
+            uint _e115 = h;
+            float _e116 = xi_from_bits(_e115);
+            uint _e117 = h;
+            uint _e118 = pcg_hash(_e117);
+            h = _e118;
+            uint _e119 = h;
+            float _e120 = xi_from_bits(_e119);
+            vec2 u_4 = vec2(_e116, _e120);
+            vec3 _e122 = r;
+            Material _e123 = m;
+            Shaded _e128 = shade_pick_traced(li_3, x_11, n_8, _e122, _e54, _e123, 1.0, u_4.x, u_4.y, eps_4, false);
+            vec3 _e129 = output_of(_e128);
+            float _e130 = resample_target(_e129);
+            uint _e132 = evaluations;
+            evaluations = (_e132 + 1u);
+            if ((_e130 > 0.0)) {
+                float _e137 = total;
+                total = (_e137 + _e130);
+                q = 0u;
+                bool loop_init_3 = true;
+                while(true) {
+                    if (!loop_init_3) {
+                        uint _e157 = q;
+                        q = (_e157 + 1u);
+                    }
+                    loop_init_3 = false;
+                    uint _e141 = q;
+                    if ((_e141 < K)) {
+                    } else {
+                        break;
+                    }
+                    {
+                        uint _e144 = hc;
+                        uint _e145 = pcg_hash(_e144);
+                        hc = _e145;
+                        float _e146 = total;
+                        uint _e147 = hc;
+                        float _e148 = xi_from_bits(_e147);
+                        bool _e149 = weighted_replace(_e130, _e146, _e148);
+                        if (_e149) {
+                            uint _e150 = q;
+                            slot_light[_e150] = li_3;
+                            uint _e152 = q;
+                            slot_u[_e152] = u_4;
+                            uint _e154 = q;
+                            slot_p[_e154] = _e130;
+                        }
+                    }
+                }
+            }
+        }
+    }
+    float _e167 = total;
+    if ((_e167 > 0.0)) {
+        bool loop_init_4 = true;
+        while(true) {
+            if (!loop_init_4) {
+                uint _e206 = k;
+                k = (_e206 + 1u);
+            }
+            loop_init_4 = false;
+            uint _e172 = k;
+            if ((_e172 < K)) {
+            } else {
+                break;
+            }
+            {
+                uint _e175[8] = slot_light;
+                uint _e176 = k;
+                uint _e177 = pick_copies(_e175, _e176);
+                if ((_e177 > 0u)) {
+                    float _e180 = total;
+                    uint _e182 = k;
+                    float _e184 = slot_p[_e182];
+                    float w_6 = ((_e180 / (8.0 * _e184)) * float(_e177));
+                    Shaded _e189 = t;
+                    uint _e190 = k;
+                    uint _e192 = slot_light[_e190];
+                    vec3 _e193 = r;
+                    Material _e194 = m;
+                    uint _e195 = k;
+                    float _e198 = slot_u[_e195].x;
+                    uint _e199 = k;
+                    float _e202 = slot_u[_e199].y;
+                    Shaded _e203 = shade_pick(_e192, x_11, n_8, _e193, _e54, _e194, w_6, _e198, _e202, eps_4);
+                    Shaded _e204 = add(_e189, _e203);
+                    t = _e204;
+                }
+            }
+        }
+    }
+    vec3 _e210 = t.e;
+    uint _e211 = count;
+    imageStore(_group_0_binding_3_cs, texel_1, vec4(_e210, float(_e211)));
+    direct_count(DIRECT_COUNT_PIXELS, 1u);
+    uint _e217 = count;
+    direct_count(DIRECT_COUNT_CANDIDATES, _e217);
+    uint _e220 = evaluations;
+    direct_count(DIRECT_COUNT_EVALUATIONS, _e220);
+    uint _e223 = rays_cast;
+    direct_count(DIRECT_COUNT_RAYS, _e223);
+    uint _e226 = nodes_visited;
+    direct_count(DIRECT_COUNT_NODES, _e226);
+    return;
+}
+

@@ -1,0 +1,1118 @@
+struct GpuLight {
+    float3 p0_;
+    uint kind;
+    float3 p1_;
+    float a;
+    float3 p2_;
+    float b;
+    float3 intensity;
+    uint ies_base;
+};
+
+struct GpuGeoNode {
+    float3 bmin;
+    uint first;
+    float3 bmax;
+    uint count;
+};
+
+struct GpuTriangle {
+    float3 v0_;
+    uint material;
+    float3 v1_;
+    uint light;
+    float3 v2_;
+    uint pad;
+};
+
+struct ViewParams {
+    float4 c0_;
+    float4 c1_;
+    float4 c2_;
+    float4 c3_;
+    float3 eye;
+    uint width;
+    uint height;
+    float shadow_offset;
+    uint seed;
+    uint frame;
+    float3 f0_d;
+    float f90_d;
+};
+
+struct BshNode {
+    float3 center_;
+    float radius;
+    uint child;
+    uint next;
+    uint light;
+    float extent;
+};
+
+struct GeoHit {
+    float t;
+    uint tri;
+};
+
+struct Connection {
+    float3 e;
+    int _pad1_0;
+    float3 y;
+    float cos_x;
+};
+
+struct Shaded {
+    float3 e;
+    int _pad1_0;
+    float3 diffuse;
+    int _pad2_0;
+    float3 specular;
+    int _end_pad_0;
+};
+
+struct Material {
+    float3 base;
+    float metallic;
+    float alpha;
+    int _pad3_0;
+    int _pad3_1;
+    int _pad3_2;
+    float3 v;
+    float roughness;
+    float reflectance;
+    int _end_pad_0;
+    int _end_pad_1;
+    int _end_pad_2;
+};
+
+static const uint LIGHT_POINT = 0u;
+static const uint LIGHT_SPOT = 1u;
+static const uint LIGHT_IES = 2u;
+static const uint LIGHT_TRIANGLE = 3u;
+static const uint LIGHT_VPL = 4u;
+static const uint NO_LIGHT = 4294967295u;
+static const uint COUNT_TILES = 0u;
+static const uint COUNT_GROUP_TESTS = 1u;
+static const uint COUNT_CLUSTER_TESTS = 2u;
+static const uint COUNT_SPHERE_TESTS = 3u;
+static const uint COUNT_TESTED = 4u;
+static const uint COUNT_KEPT = 5u;
+static const uint COUNT_PIXELS = 6u;
+static const uint COUNT_FIELDS = 7u;
+static const uint DIRECT_COUNT_PIXELS = 0u;
+static const uint DIRECT_COUNT_CANDIDATES = 1u;
+static const uint DIRECT_COUNT_EVALUATIONS = 2u;
+static const uint DIRECT_COUNT_RAYS = 3u;
+static const uint DIRECT_COUNT_NODES = 4u;
+static const uint DIRECT_COUNT_FIELDS = 5u;
+static const uint MAP_CAMERA = 0u;
+static const uint MAP_PERSPECTIVE = 1u;
+static const uint MAP_ORTHOGRAPHIC = 2u;
+static const float XI_STEP = 5.9604645e-8;
+static const uint PICK_STREAM = 2654435769u;
+static const float TWO_PI = 6.2831855;
+static const float UNRANGED = 1e38;
+static const float CULL_RADIUS_SCALE = 1.000001;
+static const float SPHERE_PAD = 4.7683716e-7;
+static const float SPHERE_HUGE = 3.4028235e38;
+static const float SPHERE_PAD_ABS = 1e-18;
+static const uint CLUSTER = 64u;
+static const uint GROUP_SIDE = 8u;
+static const float INV_PI = 0.31830987;
+static const float MIN_D2_ = 1e-12;
+static const float MAX_INTENSITY = 7.2057594e16;
+static const uint BSH_NONE = 4294967295u;
+static const uint RESERVOIR_FULL = 4294967295u;
+static const float GGX_ALPHA_MIN = 0.001;
+static const float RANGE_SCALE_MAX = 64.0;
+static const uint LIGHT_BVH_LEAF = 4294967295u;
+static const float ONE_MINUS_EPSILON = 0.99999994;
+static const float F32_MAX = 3.4028235e38;
+static const float DEPTH_NONE = 1e30;
+static const float DEPTH_SIGMA = 0.05;
+static const float COVER_WEIGHT = 0.1;
+static const uint ROULETTE_DEPTH = 2u;
+static const float TEMPORAL_MAX_HISTORY = 32.0;
+static const float TEMPORAL_DEPTH_TOLERANCE = 0.01;
+static const float TEMPORAL_MOTION_DEPTH_TOLERANCE = 0.05;
+static const float TEMPORAL_NORMAL_COS = 0.9;
+static const float TEMPORAL_MIN_MOMENTS = 8.0;
+static const float TEMPORAL_CHANGED_HISTORY = 1.0;
+static const float TEMPORAL_CHANGE_LOW = 4.0;
+static const float TEMPORAL_CHANGE_HIGH = 8.0;
+static const float TEMPORAL_MIN_WEIGHT = 0.01;
+static const uint K = 8u;
+static const uint BSH = 0u;
+
+static uint rays_cast = (uint)0;
+static uint nodes_visited = (uint)0;
+ByteAddressBuffer geo_nodes : register(t6, space1);
+ByteAddressBuffer geo_tris : register(t7, space1);
+cbuffer view : register(b0) { ViewParams view; }
+Texture2D<float4> position_tex : register(t1);
+Texture2D<float4> normal_tex : register(t2);
+RWTexture2D<float4> out_tex : register(u3);
+ByteAddressBuffer lights_1 : register(t1, space1);
+ByteAddressBuffer rt2_3 : register(t2, space1);
+ByteAddressBuffer r2_3 : register(t3, space1);
+ByteAddressBuffer bsh_nodes : register(t4, space1);
+RWByteAddressBuffer direct_counts : register(u8);
+static uint evaluations = (uint)0;
+
+float to_f32_(uint u)
+{
+    return float(u);
+}
+
+uint mul_lo_u32_(uint a, uint b_1)
+{
+    return (a * b_1);
+}
+
+uint add_wrap_u32_(uint a_1, uint b_2)
+{
+    return (a_1 + b_2);
+}
+
+float f32_from_bits(uint u_1)
+{
+    return asfloat(u_1);
+}
+
+float xi_from_bits(uint bits)
+{
+    const float _e3 = to_f32_((bits >> 8u));
+    return (_e3 * XI_STEP);
+}
+
+uint pcg_hash(uint x)
+{
+    const uint _e2 = mul_lo_u32_(x, 747796405u);
+    const uint _e4 = add_wrap_u32_(_e2, 2891336453u);
+    const uint _e12 = mul_lo_u32_(((_e4 >> ((_e4 >> 28u) + 4u)) ^ _e4), 277803737u);
+    return ((_e12 >> 22u) ^ _e12);
+}
+
+uint point_stream(uint seed, uint point_, uint frame)
+{
+    const uint _e3 = pcg_hash(frame);
+    const uint _e5 = pcg_hash((point_ ^ _e3));
+    const uint _e7 = pcg_hash((seed ^ _e5));
+    return _e7;
+}
+
+uint pick_stream(uint stream)
+{
+    const uint _e3 = pcg_hash((stream ^ PICK_STREAM));
+    return _e3;
+}
+
+float slc_weight(float rt2_, float d2_)
+{
+    if ((d2_ <= rt2_)) {
+        return 1.0;
+    }
+    return (d2_ / rt2_);
+}
+
+bool slc_keep(float r2_, float d2_1)
+{
+    return (d2_1 < r2_);
+}
+
+bool sphere_contains_point(float3 c, float r_1, float3 x_1)
+{
+    float3 v_2 = (x_1 - c);
+    return (dot(v_2, v_2) <= (r_1 * r_1));
+}
+
+float inverse_square(float d2_2)
+{
+    return (1.0 / max(d2_2, MIN_D2_));
+}
+
+float connection_factor(float cos_x, float d2_3, float rt2_1, float w)
+{
+    const float _e4 = inverse_square(d2_3);
+    const float _e6 = slc_weight(rt2_1, d2_3);
+    return (((cos_x * _e4) * _e6) * w);
+}
+
+float connection_cosine(float3 x_2, float3 y, float3 n, float3 ng, float r2_1)
+{
+    bool local_2 = (bool)0;
+    bool local_3 = (bool)0;
+
+    float3 v_3 = (x_2 - y);
+    float d2_6 = dot(v_3, v_3);
+    const bool _e7 = slc_keep(r2_1, d2_6);
+    if (!(!(_e7))) {
+        local_2 = !((d2_6 > 0.0));
+    } else {
+        local_2 = true;
+    }
+    bool _e16 = local_2;
+    if (_e16) {
+        return 0.0;
+    }
+    float3 w_5 = (v_3 / (sqrt(d2_6)).xxx);
+    float cos_x_1 = -(dot(n, w_5));
+    if (!((cos_x_1 <= 0.0))) {
+        local_3 = (dot(ng, w_5) >= 0.0);
+    } else {
+        local_3 = true;
+    }
+    bool _e32 = local_3;
+    if (_e32) {
+        return 0.0;
+    }
+    return cos_x_1;
+}
+
+float spot_falloff(float cos_theta, float cos_outer, float cos_inner, float shape)
+{
+    if ((cos_inner <= cos_outer)) {
+        return ((cos_theta >= cos_outer) ? 1.0 : 0.0);
+    }
+    float t_1 = saturate(((cos_theta - cos_outer) / (cos_inner - cos_outer)));
+    return ((shape > 0.5) ? (t_1 * t_1) : ((t_1 * t_1) * (3.0 - (2.0 * t_1))));
+}
+
+float bsh_scaled_radius(BshNode node, float scale)
+{
+    if ((scale == 1.0)) {
+        return node.radius;
+    }
+    if ((node.child == BSH_NONE)) {
+        return (node.extent + (scale * (node.radius - node.extent)));
+    }
+    return (node.radius * scale);
+}
+
+float bsh_range_bound(BshNode node_1)
+{
+    if ((node_1.child == BSH_NONE)) {
+        return (node_1.radius - node_1.extent);
+    }
+    const float _e8 = f32_from_bits(node_1.light);
+    return _e8;
+}
+
+bool weighted_replace(float w_1, float w_sum, float u_2)
+{
+    return ((u_2 * w_sum) < w_1);
+}
+
+float resample_target(float3 c_1)
+{
+    return (((c_1.x + c_1.y) + c_1.z) * 0.33333334);
+}
+
+float smith_root(float cos_, float alpha)
+{
+    float a2_ = (alpha * alpha);
+    return sqrt((((cos_ * cos_) * (1.0 - a2_)) + a2_));
+}
+
+float specular_peak_factor(float4 lobe_1)
+{
+    const float _e6 = smith_root(lobe_1.w, lobe_1.z);
+    return ((lobe_1.y * 0.5) / (_e6 + max(lobe_1.w, 0.0)));
+}
+
+float receiver_peak(float4 lobe_2)
+{
+    const float _e2 = specular_peak_factor(lobe_2);
+    return (lobe_2.x + (_e2 / (lobe_2.z * lobe_2.z)));
+}
+
+float range_scale(float4 lobe_3)
+{
+    if ((lobe_3.y <= 0.0)) {
+        return 1.0;
+    }
+    const float _e5 = receiver_peak(lobe_3);
+    return clamp(_e5, 1.0, RANGE_SCALE_MAX);
+}
+
+float4 range_lobe(float4 lobe_4)
+{
+    if ((lobe_4.y <= 0.0)) {
+        return float4(1.0, 0.0, 1.0, 1.0);
+    }
+    const float _e10 = specular_peak_factor(lobe_4);
+    const float _e14 = range_scale(lobe_4);
+    return float4(lobe_4.x, _e10, (lobe_4.z * lobe_4.z), sqrt(_e14));
+}
+
+float cone_cos_of(float3 v, float d2_4, float a_2, float3 d)
+{
+    bool local_4 = (bool)0;
+    bool local_5 = (bool)0;
+
+    float vd = dot(v, d);
+    float h2_ = (d2_4 - (a_2 * a_2));
+    if (!((h2_ <= 0.0))) {
+        if ((vd >= 0.0)) {
+            local_5 = ((vd * vd) >= h2_);
+        } else {
+            local_5 = false;
+        }
+        bool _e19 = local_5;
+        local_4 = _e19;
+    } else {
+        local_4 = true;
+    }
+    bool _e21 = local_4;
+    if (_e21) {
+        return 1.0;
+    }
+    float3 c_5 = cross(v, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_5, c_5)) * a_2)) / d2_4), 1.0);
+}
+
+float cone_cos_toward(float3 center_, float radius, float3 p, float3 d_1)
+{
+    float3 v_4 = (center_ - p);
+    const float _e6 = cone_cos_of(v_4, dot(v_4, v_4), radius, d_1);
+    return _e6;
+}
+
+float range_scale_at(float4 rl, float cos_t)
+{
+    float t_2 = (((0.5 + (0.5 * cos_t)) * (rl.z - 1.0)) + 1.0);
+    return clamp((rl.x + ((rl.y * rl.z) / (t_2 * t_2))), 1.0, (rl.w * rl.w));
+}
+
+float range_scale_toward(float4 rl_1, float3 center_1, float radius_1, float3 p_1, float3 r_2)
+{
+    if ((rl_1.w <= 1.0)) {
+        return 1.0;
+    }
+    const float _e9 = cone_cos_toward(center_1, radius_1, p_1, r_2);
+    const float _e10 = range_scale_at(rl_1, _e9);
+    return _e10;
+}
+
+float shadow_margin(float len)
+{
+    return (0.0001 * len);
+}
+
+float ray_inverse(float x_3)
+{
+    return (1.0 / ((abs(x_3) < 1e-30) ? 1e-30 : x_3));
+}
+
+float3 ray_inverse3_(float3 d_2)
+{
+    const float _e2 = ray_inverse(d_2.x);
+    const float _e4 = ray_inverse(d_2.y);
+    const float _e6 = ray_inverse(d_2.z);
+    return float3(_e2, _e4, _e6);
+}
+
+float ray_aabb(float3 o, float3 inv_d, float3 bmin, float3 bmax, float t_max)
+{
+    float3 t0_ = ((bmin - o) * inv_d);
+    float3 t1_ = ((bmax - o) * inv_d);
+    float3 lo = min(t0_, t1_);
+    float3 hi = max(t0_, t1_);
+    float t_in = max(max(lo.x, lo.y), max(lo.z, 0.0));
+    float t_out = min(min(hi.x, hi.y), min(hi.z, t_max));
+    if ((t_in <= t_out)) {
+        return t_in;
+    }
+    return -1.0;
+}
+
+float ray_triangle(float3 o_1, float3 d_3, float3 a_3, float3 b_3, float3 c_2, float t_min, float t_max_1)
+{
+    bool local_6 = (bool)0;
+    bool local_7 = (bool)0;
+    bool local_8 = (bool)0;
+
+    float3 e1_ = (b_3 - a_3);
+    float3 e2_ = (c_2 - a_3);
+    float3 p_2 = cross(d_3, e2_);
+    float det = dot(e1_, p_2);
+    if ((abs(det) <= 0.0)) {
+        return -1.0;
+    }
+    float inv = (1.0 / det);
+    float3 s_3 = (o_1 - a_3);
+    float u_3 = (dot(s_3, p_2) * inv);
+    if (!((u_3 < 0.0))) {
+        local_6 = (u_3 > 1.0);
+    } else {
+        local_6 = true;
+    }
+    bool _e28 = local_6;
+    if (_e28) {
+        return -1.0;
+    }
+    float3 q_1 = cross(s_3, e1_);
+    float v_5 = (dot(d_3, q_1) * inv);
+    if (!((v_5 < 0.0))) {
+        local_7 = ((u_3 + v_5) > 1.0);
+    } else {
+        local_7 = true;
+    }
+    bool _e42 = local_7;
+    if (_e42) {
+        return -1.0;
+    }
+    float t_3 = (dot(e2_, q_1) * inv);
+    if ((t_3 > t_min)) {
+        local_8 = (t_3 < t_max_1);
+    } else {
+        local_8 = false;
+    }
+    bool _e51 = local_8;
+    if (_e51) {
+        return t_3;
+    }
+    return -1.0;
+}
+
+float3 light_intensity(GpuLight l, float3 w_2)
+{
+    switch(l.kind) {
+        case 0u: {
+            return l.intensity;
+        }
+        case 1u: {
+            const float _e11 = spot_falloff(dot(l.p1_, w_2), l.a, l.b, l.p2_.x);
+            return (l.intensity * _e11);
+        }
+        default: {
+            return (0.0).xxx;
+        }
+    }
+}
+
+float3 light_point(GpuLight l_1, float u1_, float u2_)
+{
+    return l_1.p0_;
+}
+
+uint NagaBufferLength(ByteAddressBuffer buffer)
+{
+    uint ret;
+    buffer.GetDimensions(ret);
+    return ret;
+}
+
+GpuGeoNode ConstructGpuGeoNode(float3 arg0, uint arg1, float3 arg2, uint arg3) {
+    GpuGeoNode ret = (GpuGeoNode)0;
+    ret.bmin = arg0;
+    ret.first = arg1;
+    ret.bmax = arg2;
+    ret.count = arg3;
+    return ret;
+}
+
+GpuTriangle ConstructGpuTriangle(float3 arg0, uint arg1, float3 arg2, uint arg3, float3 arg4, uint arg5) {
+    GpuTriangle ret = (GpuTriangle)0;
+    ret.v0_ = arg0;
+    ret.material = arg1;
+    ret.v1_ = arg2;
+    ret.light = arg3;
+    ret.v2_ = arg4;
+    ret.pad = arg5;
+    return ret;
+}
+
+GeoHit trace(float3 o_2, float3 d_4, float t_min_1, float t_max_2, bool any_hit)
+{
+    GeoHit hit = (GeoHit)0;
+    uint stack[64] = (uint[64])0;
+    uint sp = 0u;
+    uint node_2 = 0u;
+    uint i = (uint)0;
+
+    hit.t = t_max_2;
+    hit.tri = NO_LIGHT;
+    if ((((NagaBufferLength(geo_nodes) - 0) / 32) == 0u)) {
+        GeoHit _e13 = hit;
+        const GeoHit geohit = _e13;
+        return geohit;
+    }
+    const float3 _e14 = ray_inverse3_(d_4);
+    uint2 loop_bound = uint2(4294967295u, 4294967295u);
+    while(true) {
+        if (all(loop_bound == uint2(0u, 0u))) { break; }
+        loop_bound -= uint2(loop_bound.y == 0u, 1u);
+        uint _e21 = node_2;
+        GpuGeoNode n_7 = ConstructGpuGeoNode(asfloat(geo_nodes.Load3(_e21*32+0)), asuint(geo_nodes.Load(_e21*32+12)), asfloat(geo_nodes.Load3(_e21*32+16)), asuint(geo_nodes.Load(_e21*32+28)));
+        uint _e25 = nodes_visited;
+        nodes_visited = (_e25 + 1u);
+        float _e31 = hit.t;
+        const float _e32 = ray_aabb(o_2, _e14, n_7.bmin, n_7.bmax, _e31);
+        if ((_e32 >= 0.0)) {
+            if ((n_7.count > 0u)) {
+                i = n_7.first;
+                uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
+                bool loop_init = true;
+                while(true) {
+                    if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
+                    loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+                    if (!loop_init) {
+                        uint _e62 = i;
+                        i = (_e62 + 1u);
+                    }
+                    loop_init = false;
+                    uint _e40 = i;
+                    if ((_e40 < (n_7.first + n_7.count))) {
+                    } else {
+                        break;
+                    }
+                    {
+                        uint _e46 = i;
+                        GpuTriangle t_4 = ConstructGpuTriangle(asfloat(geo_tris.Load3(_e46*48+0)), asuint(geo_tris.Load(_e46*48+12)), asfloat(geo_tris.Load3(_e46*48+16)), asuint(geo_tris.Load(_e46*48+28)), asfloat(geo_tris.Load3(_e46*48+32)), asuint(geo_tris.Load(_e46*48+44)));
+                        float _e53 = hit.t;
+                        const float _e54 = ray_triangle(o_2, d_4, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e53);
+                        if ((_e54 > 0.0)) {
+                            hit.t = _e54;
+                            uint _e59 = i;
+                            hit.tri = _e59;
+                            if (any_hit) {
+                                GeoHit _e60 = hit;
+                                const GeoHit geohit_1 = _e60;
+                                return geohit_1;
+                            }
+                        }
+                    }
+                }
+            } else {
+                uint _e64 = sp;
+                if ((_e64 < 64u)) {
+                    uint _e67 = sp;
+                    stack[min(uint(_e67), 63u)] = (n_7.first + 1u);
+                    uint _e72 = sp;
+                    sp = (_e72 + 1u);
+                }
+                node_2 = n_7.first;
+                continue;
+            }
+        }
+        uint _e76 = sp;
+        if ((_e76 == 0u)) {
+            break;
+        }
+        uint _e79 = sp;
+        sp = (_e79 - 1u);
+        uint _e82 = sp;
+        uint _e84 = stack[min(uint(_e82), 63u)];
+        node_2 = _e84;
+    }
+    GeoHit _e85 = hit;
+    const GeoHit geohit_2 = _e85;
+    return geohit_2;
+}
+
+bool occluded(float3 a_4, float3 b_4)
+{
+    float3 dv = (b_4 - a_4);
+    float len_1 = length(dv);
+    if ((len_1 <= 0.0)) {
+        return false;
+    }
+    const float _e7 = shadow_margin(len_1);
+    uint _e9 = rays_cast;
+    rays_cast = (_e9 + 1u);
+    const GeoHit _e16 = trace(a_4, (dv / (len_1).xxx), _e7, (len_1 - _e7), true);
+    return (_e16.tri != NO_LIGHT);
+}
+
+BshNode ConstructBshNode(float3 arg0, float arg1, uint arg2, uint arg3, uint arg4, float arg5) {
+    BshNode ret = (BshNode)0;
+    ret.center_ = arg0;
+    ret.radius = arg1;
+    ret.child = arg2;
+    ret.next = arg3;
+    ret.light = arg4;
+    ret.extent = arg5;
+    return ret;
+}
+
+BshNode bsh_node(uint nodes, uint i_1)
+{
+    BshNode _e4 = ConstructBshNode(asfloat(bsh_nodes.Load3(i_1*32+0)), asfloat(bsh_nodes.Load(i_1*32+12)), asuint(bsh_nodes.Load(i_1*32+16)), asuint(bsh_nodes.Load(i_1*32+20)), asuint(bsh_nodes.Load(i_1*32+24)), asfloat(bsh_nodes.Load(i_1*32+28)));
+    const BshNode bshnode = _e4;
+    return bshnode;
+}
+
+uint bsh_count(uint nodes_1)
+{
+    return ((NagaBufferLength(bsh_nodes) - 0) / 32);
+}
+
+uint bsh_first(uint nodes_2)
+{
+    const uint _e1 = bsh_count(nodes_2);
+    if ((_e1 > 0u)) {
+        return 0u;
+    }
+    return BSH_NONE;
+}
+
+float bsh_inner_scale(float a_5, float3 v_1, float d2_5, float3 r_3, float4 rl_2)
+{
+    const float _e5 = cone_cos_of(v_1, d2_5, a_5, r_3);
+    const float _e8 = range_scale_at(rl_2, (_e5 + 2e-6));
+    return _e8;
+}
+
+bool bsh_reaches(BshNode node_3, float3 x_4, float3 r_4, float4 rl_3)
+{
+    bool local_9 = (bool)0;
+    bool local_10 = (bool)0;
+
+    const bool _e6 = sphere_contains_point(node_3.center_, node_3.radius, x_4);
+    if (_e6) {
+        return true;
+    }
+    if (!((rl_3.w <= 1.0))) {
+        const bool _e20 = sphere_contains_point(node_3.center_, (node_3.radius * (rl_3.w * 1.0001)), x_4);
+        local_9 = !(_e20);
+    } else {
+        local_9 = true;
+    }
+    bool _e23 = local_9;
+    if (_e23) {
+        return false;
+    }
+    const float _e25 = bsh_range_bound(node_3);
+    float3 v_6 = (x_4 - node_3.center_);
+    float d2_7 = dot(v_6, v_6);
+    float reach_max = (node_3.extent + ((rl_3.w * 1.001) * _e25));
+    if ((d2_7 > (reach_max * reach_max))) {
+        return false;
+    }
+    if ((node_3.child == BSH_NONE)) {
+        const float _e43 = range_scale_toward(rl_3, node_3.center_, node_3.extent, x_4, r_4);
+        const float _e46 = bsh_scaled_radius(node_3, sqrt(_e43));
+        const bool _e47 = sphere_contains_point(node_3.center_, _e46, x_4);
+        return _e47;
+    }
+    const float _e50 = bsh_inner_scale(node_3.extent, -(v_6), d2_7, r_4, rl_3);
+    float s_c = (_e50 * 1.001);
+    float reach = (node_3.extent + (sqrt(s_c) * _e25));
+    if ((d2_7 <= ((node_3.radius * node_3.radius) * s_c))) {
+        local_10 = (d2_7 <= (reach * reach));
+    } else {
+        local_10 = false;
+    }
+    bool _e67 = local_10;
+    return _e67;
+}
+
+uint bsh_next_leaf_lobe(uint nodes_3, uint start, float3 x_5, float3 r_5, float4 rl_4)
+{
+    uint i_2 = (uint)0;
+
+    i_2 = start;
+    uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
+    while(true) {
+        if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
+        loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
+        uint _e6 = i_2;
+        if ((_e6 != BSH_NONE)) {
+        } else {
+            break;
+        }
+        {
+            uint _e9 = i_2;
+            const BshNode _e10 = bsh_node(nodes_3, _e9);
+            const bool _e11 = bsh_reaches(_e10, x_5, r_5, rl_4);
+            if (_e11) {
+                if ((_e10.child == BSH_NONE)) {
+                    uint _e15 = i_2;
+                    return _e15;
+                }
+                i_2 = _e10.child;
+            } else {
+                i_2 = _e10.next;
+            }
+        }
+    }
+    return BSH_NONE;
+}
+
+Connection connect_record(GpuLight l_2, float3 x_6, float3 n_1, float3 ng_1, float r2_2, float rt2_2, float w_res, float u1_1, float u2_1, float eps, bool trace_1)
+{
+    Connection c_3 = (Connection)0;
+    bool local_11 = (bool)0;
+    bool local_12 = (bool)0;
+
+    c_3.e = (0.0).xxx;
+    const float3 _e16 = light_point(l_2, u1_1, u2_1);
+    c_3.y = _e16;
+    float3 _e19 = c_3.y;
+    const float _e20 = connection_cosine(x_6, _e19, n_1, ng_1, r2_2);
+    c_3.cos_x = _e20;
+    float _e22 = c_3.cos_x;
+    if (!((_e22 <= 0.0))) {
+        if (trace_1) {
+            float3 _e33 = c_3.y;
+            const bool _e34 = occluded((x_6 + (ng_1 * eps)), _e33);
+            local_12 = _e34;
+        } else {
+            local_12 = false;
+        }
+        bool _e36 = local_12;
+        local_11 = _e36;
+    } else {
+        local_11 = true;
+    }
+    bool _e38 = local_11;
+    if (_e38) {
+        Connection _e39 = c_3;
+        const Connection connection = _e39;
+        return connection;
+    }
+    float3 _e41 = c_3.y;
+    float3 v_7 = (x_6 - _e41);
+    float d2_8 = dot(v_7, v_7);
+    const float3 _e48 = light_intensity(l_2, (v_7 / (sqrt(d2_8)).xxx));
+    float _e50 = c_3.cos_x;
+    const float _e51 = connection_factor(_e50, d2_8, rt2_2, w_res);
+    c_3.e = (_e48 * _e51);
+    Connection _e53 = c_3;
+    const Connection connection_1 = _e53;
+    return connection_1;
+}
+
+GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, float3 arg4, float arg5, float3 arg6, uint arg7) {
+    GpuLight ret = (GpuLight)0;
+    ret.p0_ = arg0;
+    ret.kind = arg1;
+    ret.p1_ = arg2;
+    ret.a = arg3;
+    ret.p2_ = arg4;
+    ret.b = arg5;
+    ret.intensity = arg6;
+    ret.ies_base = arg7;
+    return ret;
+}
+
+Connection connect_traced(uint li, float3 x_7, float3 n_2, float3 ng_2, float s, float w_res_1, float u1_2, float u2_2, float eps_1, bool trace_2)
+{
+    GpuLight _e12 = ConstructGpuLight(asfloat(lights_1.Load3(li*64+0)), asuint(lights_1.Load(li*64+12)), asfloat(lights_1.Load3(li*64+16)), asfloat(lights_1.Load(li*64+28)), asfloat(lights_1.Load3(li*64+32)), asfloat(lights_1.Load(li*64+44)), asfloat(lights_1.Load3(li*64+48)), asuint(lights_1.Load(li*64+60)));
+    float _e15 = asfloat(r2_3.Load(li*4));
+    float _e19 = asfloat(rt2_3.Load(li*4));
+    const Connection _e21 = connect_record(_e12, x_7, n_2, ng_2, (s * _e15), (s * _e19), w_res_1, u1_2, u2_2, eps_1, trace_2);
+    const Connection connection_2 = _e21;
+    return connection_2;
+}
+
+float4 surface_at(int2 texel)
+{
+    float4 p_3 = position_tex.Load(int3(texel, int(0)));
+    return ((p_3.w > 0.0) ? float4(p_3.xyz, 1.0) : (0.0).xxxx);
+}
+
+void direct_count(uint f, uint n_3)
+{
+    uint _e6; direct_counts.InterlockedAdd((2u * f)*4, n_3, _e6);
+    if (((_e6 + n_3) < _e6)) {
+        uint _e16; direct_counts.InterlockedAdd(((2u * f) + 1u)*4, 1u, _e16);
+        return;
+    } else {
+        return;
+    }
+}
+
+Shaded shade_connection(Connection c_4, float3 x_8, float3 n_4, Material m_1)
+{
+    Shaded s_1 = (Shaded)0;
+
+    s_1.e = c_4.e;
+    s_1.diffuse = (0.0).xxx;
+    s_1.specular = (0.0).xxx;
+    Shaded _e13 = s_1;
+    const Shaded shaded = _e13;
+    return shaded;
+}
+
+Shaded shade_pick_traced(uint li_1, float3 x_9, float3 n_5, float3 r_6, float4 rl_5, Material m_2, float w_3, float u1_3, float u2_3, float eps_2, bool trace_3)
+{
+    const Connection _e12 = connect_traced(li_1, x_9, n_5, n_5, 1.0, w_3, u1_3, u2_3, eps_2, trace_3);
+    const Shaded _e13 = shade_connection(_e12, x_9, n_5, m_2);
+    const Shaded shaded_1 = _e13;
+    return shaded_1;
+}
+
+Shaded shade_pick(uint li_2, float3 x_10, float3 n_6, float3 r_7, float4 rl_6, Material m_3, float w_4, float u1_4, float u2_4, float eps_3)
+{
+    const Shaded _e11 = shade_pick_traced(li_2, x_10, n_6, r_7, rl_6, m_3, w_4, u1_4, u2_4, eps_3, true);
+    const Shaded shaded_2 = _e11;
+    return shaded_2;
+}
+
+Shaded ConstructShaded(float3 arg0, float3 arg1, float3 arg2) {
+    Shaded ret = (Shaded)0;
+    ret.e = arg0;
+    ret.diffuse = arg1;
+    ret.specular = arg2;
+    return ret;
+}
+
+Shaded add(Shaded a_6, Shaded b_5)
+{
+    const Shaded shaded_3 = ConstructShaded((a_6.e + b_5.e), (a_6.diffuse + b_5.diffuse), (a_6.specular + b_5.specular));
+    return shaded_3;
+}
+
+uint pick_copies(uint lights[8], uint k_1)
+{
+    uint copies = 1u;
+    uint j = 0u;
+    bool local_13 = (bool)0;
+
+    uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
+    bool loop_init_1 = true;
+    while(true) {
+        if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
+        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+        if (!loop_init_1) {
+            uint _e26 = j;
+            j = (_e26 + 1u);
+        }
+        loop_init_1 = false;
+        uint _e6 = j;
+        if ((_e6 < K)) {
+        } else {
+            break;
+        }
+        {
+            uint _e9 = j;
+            if ((_e9 != k_1)) {
+                uint _e13 = j;
+                local_13 = (lights[min(uint(_e13), 7u)] == lights[min(uint(k_1), 7u)]);
+            } else {
+                local_13 = false;
+            }
+            bool _e18 = local_13;
+            if (_e18) {
+                uint _e19 = j;
+                if ((_e19 < k_1)) {
+                    return 0u;
+                }
+                uint _e22 = copies;
+                copies = (_e22 + 1u);
+            }
+        }
+    }
+    uint _e28 = copies;
+    return _e28;
+}
+
+float3 output_of(Shaded s_2)
+{
+    return s_2.e;
+}
+
+[numthreads(8, 8, 1)]
+void main(uint3 gid : SV_DispatchThreadID)
+{
+    bool local = (bool)0;
+    bool local_1 = (bool)0;
+    Material m = (Material)0;
+    float4 lobe = float4(1.0, 0.0, 1.0, 1.0);
+    float3 r = (float3)0;
+    uint h = (uint)0;
+    Shaded t = ConstructShaded((0.0).xxx, (0.0).xxx, (0.0).xxx);
+    uint slot_light[8] = (uint[8])0;
+    float2 slot_u[8] = (float2[8])0;
+    float slot_p[8] = (float[8])0;
+    float total = 0.0;
+    uint count = 0u;
+    uint hc = (uint)0;
+    uint b = (uint)0;
+    uint q = (uint)0;
+    uint k = 0u;
+
+    uint _e4 = view.width;
+    if (!((gid.x >= _e4))) {
+        uint _e12 = view.height;
+        local = (gid.y >= _e12);
+    } else {
+        local = true;
+    }
+    bool _e15 = local;
+    if (_e15) {
+        return;
+    }
+    int2 texel_1 = int2(int(gid.x), int(gid.y));
+    const float4 _e21 = surface_at(texel_1);
+    float4 _e24 = normal_tex.Load(int3(texel_1, int(0)));
+    float3 nn = _e24.xyz;
+    float len2_ = dot(nn, nn);
+    if (!((_e21.w <= 0.0))) {
+        local_1 = !((len2_ > 0.0));
+    } else {
+        local_1 = true;
+    }
+    bool _e37 = local_1;
+    if (_e37) {
+        out_tex[texel_1] = (0.0).xxxx;
+        return;
+    }
+    float3 x_11 = _e21.xyz;
+    float3 n_8 = (nn / (sqrt(len2_)).xxx);
+    r = n_8;
+    float4 _e53 = lobe;
+    const float4 _e54 = range_lobe(_e53);
+    float _e57 = view.shadow_offset;
+    float3 _e60 = view.eye;
+    float eps_4 = (_e57 * length((_e60 - x_11)));
+    uint _e66 = view.seed;
+    uint _e70 = view.width;
+    uint _e76 = view.frame;
+    const uint _e77 = point_stream(_e66, ((gid.y * _e70) + gid.x), _e76);
+    const uint _e78 = pick_stream(_e77);
+    h = _e78;
+    hc = _e77;
+    const uint _e98 = bsh_first(BSH);
+    float3 _e99 = r;
+    const uint _e100 = bsh_next_leaf_lobe(BSH, _e98, x_11, _e99, _e54);
+    b = _e100;
+    uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
+    bool loop_init_2 = true;
+    while(true) {
+        if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
+        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+        if (!loop_init_2) {
+            uint _e161 = b;
+            uint _e164 = asuint(bsh_nodes.Load(20+_e161*32));
+            float3 _e165 = r;
+            const uint _e166 = bsh_next_leaf_lobe(BSH, _e164, x_11, _e165, _e54);
+            b = _e166;
+        }
+        loop_init_2 = false;
+        uint _e102 = b;
+        if ((_e102 != BSH_NONE)) {
+        } else {
+            break;
+        }
+        {
+            uint _e105 = count;
+            count = (_e105 + 1u);
+            uint _e109 = b;
+            uint li_3 = asuint(bsh_nodes.Load(24+_e109*32));
+            uint _e113 = h;
+            const uint _e114 = pcg_hash(_e113);
+            h = _e114;
+            uint _e115 = h;
+            const float _e116 = xi_from_bits(_e115);
+            uint _e117 = h;
+            const uint _e118 = pcg_hash(_e117);
+            h = _e118;
+            uint _e119 = h;
+            const float _e120 = xi_from_bits(_e119);
+            float2 u_4 = float2(_e116, _e120);
+            float3 _e122 = r;
+            Material _e123 = m;
+            const Shaded _e128 = shade_pick_traced(li_3, x_11, n_8, _e122, _e54, _e123, 1.0, u_4.x, u_4.y, eps_4, false);
+            const float3 _e129 = output_of(_e128);
+            const float _e130 = resample_target(_e129);
+            uint _e132 = evaluations;
+            evaluations = (_e132 + 1u);
+            if ((_e130 > 0.0)) {
+                float _e137 = total;
+                total = (_e137 + _e130);
+                q = 0u;
+                uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
+                bool loop_init_3 = true;
+                while(true) {
+                    if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
+                    loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+                    if (!loop_init_3) {
+                        uint _e157 = q;
+                        q = (_e157 + 1u);
+                    }
+                    loop_init_3 = false;
+                    uint _e141 = q;
+                    if ((_e141 < K)) {
+                    } else {
+                        break;
+                    }
+                    {
+                        uint _e144 = hc;
+                        const uint _e145 = pcg_hash(_e144);
+                        hc = _e145;
+                        float _e146 = total;
+                        uint _e147 = hc;
+                        const float _e148 = xi_from_bits(_e147);
+                        const bool _e149 = weighted_replace(_e130, _e146, _e148);
+                        if (_e149) {
+                            uint _e150 = q;
+                            slot_light[min(uint(_e150), 7u)] = li_3;
+                            uint _e152 = q;
+                            slot_u[min(uint(_e152), 7u)] = u_4;
+                            uint _e154 = q;
+                            slot_p[min(uint(_e154), 7u)] = _e130;
+                        }
+                    }
+                }
+            }
+        }
+    }
+    float _e167 = total;
+    if ((_e167 > 0.0)) {
+        uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
+        bool loop_init_4 = true;
+        while(true) {
+            if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
+            loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+            if (!loop_init_4) {
+                uint _e206 = k;
+                k = (_e206 + 1u);
+            }
+            loop_init_4 = false;
+            uint _e172 = k;
+            if ((_e172 < K)) {
+            } else {
+                break;
+            }
+            {
+                uint _e175[8] = slot_light;
+                uint _e176 = k;
+                const uint _e177 = pick_copies(_e175, _e176);
+                if ((_e177 > 0u)) {
+                    float _e180 = total;
+                    uint _e182 = k;
+                    float _e184 = slot_p[min(uint(_e182), 7u)];
+                    float w_6 = ((_e180 / (8.0 * _e184)) * float(_e177));
+                    Shaded _e189 = t;
+                    uint _e190 = k;
+                    uint _e192 = slot_light[min(uint(_e190), 7u)];
+                    float3 _e193 = r;
+                    Material _e194 = m;
+                    uint _e195 = k;
+                    float _e198 = slot_u[min(uint(_e195), 7u)].x;
+                    uint _e199 = k;
+                    float _e202 = slot_u[min(uint(_e199), 7u)].y;
+                    const Shaded _e203 = shade_pick(_e192, x_11, n_8, _e193, _e54, _e194, w_6, _e198, _e202, eps_4);
+                    const Shaded _e204 = add(_e189, _e203);
+                    t = _e204;
+                }
+            }
+        }
+    }
+    float3 _e210 = t.e;
+    uint _e211 = count;
+    out_tex[texel_1] = float4(_e210, float(_e211));
+    direct_count(DIRECT_COUNT_PIXELS, 1u);
+    uint _e217 = count;
+    direct_count(DIRECT_COUNT_CANDIDATES, _e217);
+    uint _e220 = evaluations;
+    direct_count(DIRECT_COUNT_EVALUATIONS, _e220);
+    uint _e223 = rays_cast;
+    direct_count(DIRECT_COUNT_RAYS, _e223);
+    uint _e226 = nodes_visited;
+    direct_count(DIRECT_COUNT_NODES, _e226);
+    return;
+}
