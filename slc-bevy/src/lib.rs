@@ -44,7 +44,9 @@
 //! and `bevy_render::utils`); (2) slc's direct pass
 //! picks [`SlcCamera::picks`] lights among those whose random range reaches
 //! the pixel, in proportion to their unshadowed light
-//! ([`SlcCamera::resample`]), and shades them with Bevy
+//! ([`SlcCamera::resample`]), each pick reused by the next frame at the
+//! pixel the point reprojects to ([`SlcCamera::reuse`], unbiased), and
+//! shades them with Bevy
 //! `StandardMaterial`'s BRDF (`slc_core::brdf::bevy_brdf`: Burley diffuse,
 //! GGX with Bevy's Fresnel and multiple-scattering compensation) times
 //! Bevy's light units (`intensity` in lumens, `/4π` to candela, times the
