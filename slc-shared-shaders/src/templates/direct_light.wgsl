@@ -173,6 +173,7 @@ struct Domain {
     n: vec3f,
     m: Material,
     c: f32,
+    temporal: bool,
 }
 
 /// Target of the pick of light record `l` at grid cells `cells` for the
@@ -239,7 +240,7 @@ fn reuse_domains(x: vec3f, n: vec3f, d: f32, h: u32, doms: ptr<function, array<D
         if seen || !(s.m > 0.0) || !history_matches(n, s.n, x, dot(s.n, s.x), d) {
             continue;
         }
-        (*doms)[nd] = Domain(pixel, s.x, s.n, reuse_material(s, reuse.prev_eye), min(s.m, reuse.max_confidence));
+        (*doms)[nd] = Domain(pixel, s.x, s.n, reuse_material(s, reuse.prev_eye), min(s.m, reuse.max_confidence), j == 0u);
         nd += 1u;
     }
     return nd;
@@ -368,30 +369,36 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
         }
     }
 {% if reuse %}
-    // Each slot combines this frame's pick (confidence 1) with the same
-    // slot of every reused previous-frame pixel.
+    // Each slot first combines this frame's pick (confidence 1) with the
+    // same slot of the pixel's own history (the reprojected pixel, where it
+    // saw this surface): that reservoir is the next frame's history. The
+    // neighbours' histories then join it for this frame's shading only, so
+    // no reservoir feeds back through its neighbours.
     let pixel = gid.y * view.width + gid.x;
     var doms: array<Domain, DOMAINS>;
     let nd = reuse_domains(x, n, length(view.eye - x), reuse_stream(seed, 0u), &doms);
-    var confidence = 1.0;
-    for (var k = 0u; k < nd; k++) {
-        confidence += doms[k].c;
-    }
+    let own_history = nd > 0u && doms[0].temporal;
+    let first = select(0u, 1u, own_history);
+    let confidence = 1.0 + select(0.0, doms[0].c, own_history);
     var hs = reuse_stream(seed, 1u);
+    var kept_light: array<u32, K>;
+    var kept_cells: array<u32, K>;
+    var kept_w: array<f32, K>;
     var fin_light: array<u32, K>;
     var fin_cells: array<u32, K>;
     var fin_w: array<f32, K>;
     for (var q = 0u; q < K; q++) {
+        // This frame's pick and the pixel's own history.
         var w_sum = 0.0;
         var chosen = 0u;
         var chosen_cells = 0u;
         var chosen_target = 0.0;
-        for (var j = 0u; j <= nd; j++) {
+        for (var j = 0u; j <= first; j++) {
             var li = slot_light[q];
             var cells = slot_cells[q];
             var w_in = total;
             if j > 0u {
-                let s = reuse_prev[doms[j - 1u].pixel].slots[q];
+                let s = reuse_prev[doms[0].pixel].slots[q];
                 li = s.light;
                 cells = s.u;
                 w_in = s.w;
@@ -408,10 +415,10 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
             }
             var own = here;
             var all = here;
-            for (var k = 0u; k < nd; k++) {
-                let t = doms[k].c * reuse_target(lights_prev[li], cells, doms[k].x, doms[k].n, doms[k].m);
+            if own_history {
+                let t = doms[0].c * reuse_target(lights_prev[li], cells, doms[0].x, doms[0].n, doms[0].m);
                 all += t;
-                if k + 1u == j {
+                if j == 1u {
                     own = t;
                 }
             }
@@ -424,9 +431,54 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
                 chosen_target = here;
             }
         }
+        kept_light[q] = chosen;
+        kept_cells[q] = chosen_cells;
+        kept_w[q] = gris_contribution_weight(w_sum, chosen_target);
+        // The neighbours' histories join it (confidence: the inputs each
+        // stands for).
         fin_light[q] = chosen;
         fin_cells[q] = chosen_cells;
-        fin_w[q] = gris_contribution_weight(w_sum, chosen_target);
+        fin_w[q] = kept_w[q];
+        if nd > first {
+            var s_sum = 0.0;
+            var s_target = 0.0;
+            for (var j = first; j <= nd; j++) {
+                var li = kept_light[q];
+                var cells = kept_cells[q];
+                var w_in = kept_w[q];
+                if j > first {
+                    let s = reuse_prev[doms[j - 1u].pixel].slots[q];
+                    li = s.light;
+                    cells = s.u;
+                    w_in = s.w;
+                }
+                if !(w_in > 0.0) || li >= arrayLength(&lights) {
+                    continue;
+                }
+                let here = reuse_target(lights[li], cells, x, n, m);
+                if !(here > 0.0) {
+                    continue;
+                }
+                var own = confidence * here;
+                var all = own;
+                for (var k = first; k < nd; k++) {
+                    let t = doms[k].c * reuse_target(lights_prev[li], cells, doms[k].x, doms[k].n, doms[k].m);
+                    all += t;
+                    if k + 1u == j {
+                        own = t;
+                    }
+                }
+                let w = gris_weight(own, all, here, w_in);
+                s_sum += w;
+                hs = pcg_hash(hs);
+                if w > 0.0 && weighted_replace(w, s_sum, xi_from_bits(hs)) {
+                    fin_light[q] = li;
+                    fin_cells[q] = cells;
+                    s_target = here;
+                }
+            }
+            fin_w[q] = gris_contribution_weight(s_sum, s_target);
+        }
     }
     // The K picks, shadowed, each weighted W / K; the slots holding the
     // same sample cast one ray with their weights summed. With visibility
@@ -454,8 +506,10 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
         }
     }
     for (var q = 0u; q < K; q++) {
+        // Visibility reuse comes without neighbours: the kept pick is the
+        // shaded one.
         let keep = reuse.visibility == 0u || visible[q];
-        reuse_next[pixel].slots[q] = ReuseSlot(fin_light[q], fin_cells[q], select(0.0, fin_w[q], keep));
+        reuse_next[pixel].slots[q] = ReuseSlot(kept_light[q], kept_cells[q], select(0.0, kept_w[q], keep));
     }
     reuse_next[pixel].surface = reuse_surface(x, n, m, min(confidence, reuse.max_confidence));
 {% else %}

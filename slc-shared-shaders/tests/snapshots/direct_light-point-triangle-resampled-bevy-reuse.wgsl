@@ -127,6 +127,7 @@ struct Domain {
     n: vec3<f32>,
     m: Material,
     c: f32,
+    temporal: bool,
 }
 
 const LIGHT_POINT: u32 = 0u;
@@ -297,29 +298,29 @@ fn connection_factor(cos_x: f32, d2_3: f32, rt2_1: f32, w_1: f32) -> f32 {
 }
 
 fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, r2_1: f32) -> f32 {
-    var local_8: bool;
-    var local_9: bool;
+    var local_11: bool;
+    var local_12: bool;
 
     let v_6 = (x_2 - y);
     let d2_6 = dot(v_6, v_6);
     let _e7 = slc_keep(r2_1, d2_6);
     if !(!(_e7)) {
-        local_8 = !((d2_6 > 0f));
+        local_11 = !((d2_6 > 0f));
     } else {
-        local_8 = true;
+        local_11 = true;
     }
-    let _e16 = local_8;
+    let _e16 = local_11;
     if _e16 {
         return 0f;
     }
     let w_7 = (v_6 / vec3(sqrt(d2_6)));
     let cos_x_1 = -(dot(n, w_7));
     if !((cos_x_1 <= 0f)) {
-        local_9 = (dot(ng, w_7) >= 0f);
+        local_12 = (dot(ng, w_7) >= 0f);
     } else {
-        local_9 = true;
+        local_12 = true;
     }
-    let _e32 = local_9;
+    let _e32 = local_12;
     if _e32 {
         return 0f;
     }
@@ -377,11 +378,11 @@ fn disk_offset(r_2: f32, u1_1: f32, u2_1: f32) -> vec2<f32> {
     return (vec2<f32>(cos(a_9), sin(a_9)) * (r_2 * sqrt(u1_1)));
 }
 
-fn gris_weight(own_1: f32, all_1: f32, p_hat: f32, w_4: f32) -> f32 {
-    if !((all_1 > 0f)) {
+fn gris_weight(own_2: f32, all_2: f32, p_hat: f32, w_4: f32) -> f32 {
+    if !((all_2 > 0f)) {
         return 0f;
     }
-    return (((own_1 / all_1) * p_hat) * w_4);
+    return (((own_2 / all_2) * p_hat) * w_4);
 }
 
 fn gris_contribution_weight(w_sum_2: f32, p_hat_1: f32) -> f32 {
@@ -406,14 +407,14 @@ fn smith_root(cos_: f32, alpha_1: f32) -> f32 {
 }
 
 fn smith_visibility(n_l: f32, n_v: f32, alpha_2: f32) -> f32 {
-    var local_10: bool;
+    var local_13: bool;
 
     if !((n_l <= 0f)) {
-        local_10 = (n_v <= 0f);
+        local_13 = (n_v <= 0f);
     } else {
-        local_10 = true;
+        local_13 = true;
     }
-    let _e11 = local_10;
+    let _e11 = local_13;
     if _e11 {
         return 0f;
     }
@@ -435,21 +436,21 @@ fn specular_fresnel(base: vec3<f32>, metallic: f32, f0_d: vec3<f32>, f90_d: f32,
 }
 
 fn has_specular(metallic_1: f32, f0_d_1: vec3<f32>, f90_d_1: f32) -> bool {
-    var local_11: bool;
-    var local_12: bool;
+    var local_14: bool;
+    var local_15: bool;
 
     if !((metallic_1 > 0f)) {
-        local_11 = (f90_d_1 > 0f);
+        local_14 = (f90_d_1 > 0f);
     } else {
-        local_11 = true;
+        local_14 = true;
     }
-    let _e11 = local_11;
+    let _e11 = local_14;
     if !(_e11) {
-        local_12 = (max(max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0f);
+        local_15 = (max(max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0f);
     } else {
-        local_12 = true;
+        local_15 = true;
     }
-    let _e23 = local_12;
+    let _e23 = local_15;
     return _e23;
 }
 
@@ -458,17 +459,17 @@ fn channel_mean(c_3: vec3<f32>) -> f32 {
 }
 
 fn receiver_lobe(base_1: vec3<f32>, metallic_2: f32, f0_d_2: vec3<f32>, f90_d_2: f32, alpha_3: f32, n_v_1: f32) -> vec4<f32> {
-    var local_13: bool;
+    var local_16: bool;
 
     let _e10 = fresnel_schlick(f0_d_2, f90_d_2, n_v_1);
     let _e16 = channel_mean((((vec3<f32>(1f, 1f, 1f) - _e10) * base_1) * (1f - metallic_2)));
     if !((n_v_1 <= 0f)) {
         let _e22 = has_specular(metallic_2, f0_d_2, f90_d_2);
-        local_13 = !(_e22);
+        local_16 = !(_e22);
     } else {
-        local_13 = true;
+        local_16 = true;
     }
-    let _e25 = local_13;
+    let _e25 = local_16;
     if _e25 {
         return vec4<f32>(_e16, 0f, alpha_3, n_v_1);
     }
@@ -552,23 +553,23 @@ fn bevy_brdf(base_2: vec3<f32>, metallic_3: f32, r_4: f32, reflectance_1: f32, n
 }
 
 fn cone_cos_of(v_2: vec3<f32>, d2_4: f32, a_3: f32, d: vec3<f32>) -> f32 {
-    var local_14: bool;
-    var local_15: bool;
+    var local_17: bool;
+    var local_18: bool;
 
     let vd = dot(v_2, d);
     let h2_1 = (d2_4 - (a_3 * a_3));
     if !((h2_1 <= 0f)) {
         if (vd >= 0f) {
-            local_15 = ((vd * vd) >= h2_1);
+            local_18 = ((vd * vd) >= h2_1);
         } else {
-            local_15 = false;
+            local_18 = false;
         }
-        let _e19 = local_15;
-        local_14 = _e19;
+        let _e19 = local_18;
+        local_17 = _e19;
     } else {
-        local_14 = true;
+        local_17 = true;
     }
-    let _e21 = local_14;
+    let _e21 = local_17;
     if _e21 {
         return 1f;
     }
@@ -625,16 +626,16 @@ fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin: vec3<f32>, bmax: vec3<f32>, t_
 }
 
 fn triangle_normal(a_4: vec3<f32>, b_4: vec3<f32>, c_4: vec3<f32>) -> vec3<f32> {
-    var local_16: bool;
+    var local_19: bool;
 
     let n_12 = cross((b_4 - a_4), (c_4 - a_4));
     let l2_ = dot(n_12, n_12);
     if !(!((l2_ > 0f))) {
-        local_16 = !((l2_ < 300000000000000000000000000000000000000f));
+        local_19 = !((l2_ < 300000000000000000000000000000000000000f));
     } else {
-        local_16 = true;
+        local_19 = true;
     }
-    let _e17 = local_16;
+    let _e17 = local_19;
     if _e17 {
         return vec3<f32>(0f, 0f, 0f);
     }
@@ -642,9 +643,9 @@ fn triangle_normal(a_4: vec3<f32>, b_4: vec3<f32>, c_4: vec3<f32>) -> vec3<f32> 
 }
 
 fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_5: vec3<f32>, c_5: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
-    var local_17: bool;
-    var local_18: bool;
-    var local_19: bool;
+    var local_20: bool;
+    var local_21: bool;
+    var local_22: bool;
 
     let e1_ = (b_5 - a_5);
     let e2_ = (c_5 - a_5);
@@ -657,32 +658,32 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_5: vec3<f32>, 
     let s_4 = (o_1 - a_5);
     let u_3 = (dot(s_4, p_5) * inv);
     if !((u_3 < 0f)) {
-        local_17 = (u_3 > 1f);
+        local_20 = (u_3 > 1f);
     } else {
-        local_17 = true;
+        local_20 = true;
     }
-    let _e28 = local_17;
+    let _e28 = local_20;
     if _e28 {
         return -1f;
     }
     let q_3 = cross(s_4, e1_);
     let v_8 = (dot(d_3, q_3) * inv);
     if !((v_8 < 0f)) {
-        local_18 = ((u_3 + v_8) > 1f);
+        local_21 = ((u_3 + v_8) > 1f);
     } else {
-        local_18 = true;
+        local_21 = true;
     }
-    let _e42 = local_18;
+    let _e42 = local_21;
     if _e42 {
         return -1f;
     }
     let t_3 = (dot(e2_, q_3) * inv);
     if (t_3 > t_min) {
-        local_19 = (t_3 < t_max_1);
+        local_22 = (t_3 < t_max_1);
     } else {
-        local_19 = false;
+        local_22 = false;
     }
-    let _e51 = local_19;
+    let _e51 = local_22;
     if _e51 {
         return t_3;
     }
@@ -700,14 +701,14 @@ fn reproject(c0_: vec4<f32>, c1_: vec4<f32>, c2_: vec4<f32>, c3_: vec4<f32>, p_2
 }
 
 fn history_matches(n_4: vec3<f32>, nh: vec3<f32>, p_3: vec3<f32>, oh: f32, d_4: f32) -> bool {
-    var local_20: bool;
+    var local_23: bool;
 
     if (abs((dot(nh, p_3) - oh)) <= (TEMPORAL_DEPTH_TOLERANCE * d_4)) {
-        local_20 = (dot(n_4, nh) >= TEMPORAL_NORMAL_COS);
+        local_23 = (dot(n_4, nh) >= TEMPORAL_NORMAL_COS);
     } else {
-        local_20 = false;
+        local_23 = false;
     }
-    let _e17 = local_20;
+    let _e17 = local_23;
     return _e17;
 }
 
@@ -844,8 +845,8 @@ fn bsh_inner_scale(a_7: f32, v_3: vec3<f32>, d2_5: f32, r_6: vec3<f32>, rl_2: ve
 }
 
 fn bsh_reaches(node_3: BshNode, x_4: vec3<f32>, r_7: vec3<f32>, rl_3: vec4<f32>) -> bool {
-    var local_21: bool;
-    var local_22: bool;
+    var local_24: bool;
+    var local_25: bool;
 
     let _e6 = sphere_contains_point(node_3.center, node_3.radius, x_4);
     if _e6 {
@@ -853,11 +854,11 @@ fn bsh_reaches(node_3: BshNode, x_4: vec3<f32>, r_7: vec3<f32>, rl_3: vec4<f32>)
     }
     if !((rl_3.w <= 1f)) {
         let _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001f)), x_4);
-        local_21 = !(_e20);
+        local_24 = !(_e20);
     } else {
-        local_21 = true;
+        local_24 = true;
     }
-    let _e23 = local_21;
+    let _e23 = local_24;
     if _e23 {
         return false;
     }
@@ -878,11 +879,11 @@ fn bsh_reaches(node_3: BshNode, x_4: vec3<f32>, r_7: vec3<f32>, rl_3: vec4<f32>)
     let s_c = (_e50 * 1.001f);
     let reach = (node_3.extent + (sqrt(s_c) * _e25));
     if (d2_7 <= ((node_3.radius * node_3.radius) * s_c)) {
-        local_22 = (d2_7 <= (reach * reach));
+        local_25 = (d2_7 <= (reach * reach));
     } else {
-        local_22 = false;
+        local_25 = false;
     }
-    let _e67 = local_22;
+    let _e67 = local_25;
     return _e67;
 }
 
@@ -916,8 +917,8 @@ fn bsh_next_leaf_lobe(nodes_3: u32, start: u32, x_5: vec3<f32>, r_8: vec3<f32>, 
 
 fn connect_record(l_3: GpuLight, x_6: vec3<f32>, n_5: vec3<f32>, ng_1: vec3<f32>, r2_2: f32, rt2_2: f32, w_res: f32, u1_3: f32, u2_3: f32, eps: f32, trace_1: bool) -> Connection {
     var c_6: Connection;
-    var local_23: bool;
-    var local_24: bool;
+    var local_26: bool;
+    var local_27: bool;
 
     c_6.e = vec3(0f);
     let _e16 = light_point(l_3, u1_3, u2_3);
@@ -930,16 +931,16 @@ fn connect_record(l_3: GpuLight, x_6: vec3<f32>, n_5: vec3<f32>, ng_1: vec3<f32>
         if trace_1 {
             let _e33 = c_6.y;
             let _e34 = occluded((x_6 + (ng_1 * eps)), _e33);
-            local_24 = _e34;
+            local_27 = _e34;
         } else {
-            local_24 = false;
+            local_27 = false;
         }
-        let _e36 = local_24;
-        local_23 = _e36;
+        let _e36 = local_27;
+        local_26 = _e36;
     } else {
-        local_23 = true;
+        local_26 = true;
     }
-    let _e38 = local_23;
+    let _e38 = local_26;
     if _e38 {
         let _e39 = c_6;
         return _e39;
@@ -955,16 +956,16 @@ fn connect_record(l_3: GpuLight, x_6: vec3<f32>, n_5: vec3<f32>, ng_1: vec3<f32>
     return _e53;
 }
 
-fn connect_traced(li_1: u32, x_7: vec3<f32>, n_6: vec3<f32>, ng_2: vec3<f32>, s: f32, w_res_1: f32, u1_4: f32, u2_4: f32, eps_1: f32, trace_2: bool) -> Connection {
-    let _e12 = lights[li_1];
-    let _e15 = r2_3[li_1];
-    let _e19 = rt2_3[li_1];
+fn connect_traced(li_2: u32, x_7: vec3<f32>, n_6: vec3<f32>, ng_2: vec3<f32>, s: f32, w_res_1: f32, u1_4: f32, u2_4: f32, eps_1: f32, trace_2: bool) -> Connection {
+    let _e12 = lights[li_2];
+    let _e15 = r2_3[li_2];
+    let _e19 = rt2_3[li_2];
     let _e21 = connect_record(_e12, x_7, n_6, ng_2, (s * _e15), (s * _e19), w_res_1, u1_4, u2_4, eps_1, trace_2);
     return _e21;
 }
 
-fn light_range_scale(li_2: u32, x_8: vec3<f32>, r_9: vec3<f32>, rl_5: vec4<f32>) -> f32 {
-    let c_11 = light_cones[li_2];
+fn light_range_scale(li_3: u32, x_8: vec3<f32>, r_9: vec3<f32>, rl_5: vec4<f32>) -> f32 {
+    let c_11 = light_cones[li_3];
     let _e9 = range_scale_toward(rl_5, c_11.center, c_11.radius, x_8, r_9);
     return _e9;
 }
@@ -988,9 +989,9 @@ fn shade_connection(c_7: Connection, x_9: vec3<f32>, n_7: vec3<f32>, m_1: Materi
     return _e28;
 }
 
-fn shade_pick_traced(li_3: u32, x_10: vec3<f32>, n_8: vec3<f32>, r_10: vec3<f32>, rl_6: vec4<f32>, m_2: Material, w_6: f32, u1_5: f32, u2_5: f32, eps_2: f32, trace_3: bool) -> Shaded {
-    let _e11 = light_range_scale(li_3, x_10, r_10, rl_6);
-    let _e12 = connect_traced(li_3, x_10, n_8, n_8, _e11, w_6, u1_5, u2_5, eps_2, trace_3);
+fn shade_pick_traced(li_4: u32, x_10: vec3<f32>, n_8: vec3<f32>, r_10: vec3<f32>, rl_6: vec4<f32>, m_2: Material, w_6: f32, u1_5: f32, u2_5: f32, eps_2: f32, trace_3: bool) -> Shaded {
+    let _e11 = light_range_scale(li_4, x_10, r_10, rl_6);
+    let _e12 = connect_traced(li_4, x_10, n_8, n_8, _e11, w_6, u1_5, u2_5, eps_2, trace_3);
     let _e13 = shade_connection(_e12, x_10, n_8, m_2);
     return _e13;
 }
@@ -1008,9 +1009,9 @@ fn output_of(s_2: Shaded) -> vec3<f32> {
     return (s_2.diffuse + s_2.specular);
 }
 
-fn reuse_target(l_4: GpuLight, cells_1: u32, x_11: vec3<f32>, n_9: vec3<f32>, m_3: Material) -> f32 {
-    let _e8 = grid_coordinate(cells_1);
-    let _e11 = grid_coordinate((cells_1 << 16u));
+fn reuse_target(l_4: GpuLight, cells_2: u32, x_11: vec3<f32>, n_9: vec3<f32>, m_3: Material) -> f32 {
+    let _e8 = grid_coordinate(cells_2);
+    let _e11 = grid_coordinate((cells_2 << 16u));
     let _e14 = connect_record(l_4, x_11, n_9, n_9, UNRANGED, UNRANGED, 1f, _e8, _e11, 0f, false);
     let _e15 = shade_connection(_e14, x_11, n_9, m_3);
     let _e16 = output_of(_e15);
@@ -1030,38 +1031,38 @@ fn reuse_material(s_3: ReuseSurface, eye: vec3<f32>) -> Material {
 }
 
 fn same_pick(la: u32, ca: u32, lb: u32, cb: u32) -> bool {
-    var local_25: bool;
-    var local_26: bool;
+    var local_28: bool;
+    var local_29: bool;
 
     if (la == lb) {
         if !((ca == cb)) {
             let _e14 = lights[la].kind;
-            local_26 = (_e14 != LIGHT_TRIANGLE);
+            local_29 = (_e14 != LIGHT_TRIANGLE);
         } else {
-            local_26 = true;
+            local_29 = true;
         }
-        let _e18 = local_26;
-        local_25 = _e18;
+        let _e18 = local_29;
+        local_28 = _e18;
     } else {
-        local_25 = false;
+        local_28 = false;
     }
-    let _e20 = local_25;
+    let _e20 = local_28;
     return _e20;
 }
 
 fn reuse_domains(x_13: vec3<f32>, n_11: vec3<f32>, d_6: f32, h_1: u32, doms_1: ptr<function, array<Domain, 3>>) -> u32 {
     var nd: u32 = 0u;
     var hr: u32;
-    var j_3: u32 = 0u;
+    var j_4: u32 = 0u;
     var p_4: vec2<f32>;
-    var local_27: bool;
-    var local_28: bool;
-    var local_29: bool;
-    var seen: bool;
-    var k_3: u32;
     var local_30: bool;
     var local_31: bool;
     var local_32: bool;
+    var seen: bool;
+    var k_2: u32;
+    var local_33: bool;
+    var local_34: bool;
+    var local_35: bool;
 
     let _e9 = reuse.has_history;
     if (_e9 != 1u) {
@@ -1079,14 +1080,14 @@ fn reuse_domains(x_13: vec3<f32>, n_11: vec3<f32>, d_6: f32, h_1: u32, doms_1: p
     }
     hr = h_1;
     loop {
-        let _e41 = j_3;
+        let _e41 = j_4;
         if (_e41 < DOMAINS) {
         } else {
             break;
         }
         {
             p_4 = _e33.xy;
-            let _e46 = j_3;
+            let _e46 = j_4;
             if (_e46 > 0u) {
                 let _e49 = hr;
                 let _e50 = pcg_hash(_e49);
@@ -1106,34 +1107,34 @@ fn reuse_domains(x_13: vec3<f32>, n_11: vec3<f32>, d_6: f32, h_1: u32, doms_1: p
             let _e63 = p_4;
             let t_5 = vec2<i32>(round(_e63));
             if !((t_5.x < 0i)) {
-                local_27 = (t_5.y < 0i);
+                local_30 = (t_5.y < 0i);
             } else {
-                local_27 = true;
+                local_30 = true;
             }
-            let _e76 = local_27;
+            let _e76 = local_30;
             if !(_e76) {
                 let _e83 = view.width;
-                local_28 = (t_5.x >= i32(_e83));
+                local_31 = (t_5.x >= i32(_e83));
             } else {
-                local_28 = true;
+                local_31 = true;
             }
-            let _e87 = local_28;
+            let _e87 = local_31;
             if !(_e87) {
                 let _e94 = view.height;
-                local_29 = (t_5.y >= i32(_e94));
+                local_32 = (t_5.y >= i32(_e94));
             } else {
-                local_29 = true;
+                local_32 = true;
             }
-            let _e98 = local_29;
+            let _e98 = local_32;
             if _e98 {
                 continue;
             }
             let _e103 = view.width;
             let pixel = ((u32(t_5.y) * _e103) + u32(t_5.x));
             seen = false;
-            k_3 = 0u;
+            k_2 = 0u;
             loop {
-                let _e112 = k_3;
+                let _e112 = k_2;
                 let _e113 = nd;
                 if (_e112 < _e113) {
                 } else {
@@ -1142,35 +1143,35 @@ fn reuse_domains(x_13: vec3<f32>, n_11: vec3<f32>, d_6: f32, h_1: u32, doms_1: p
                 {
                     let _e115 = seen;
                     if !(_e115) {
-                        let _e119 = k_3;
+                        let _e119 = k_2;
                         let _e122 = (*doms_1)[_e119].pixel;
-                        local_30 = (_e122 == pixel);
+                        local_33 = (_e122 == pixel);
                     } else {
-                        local_30 = true;
+                        local_33 = true;
                     }
-                    let _e125 = local_30;
+                    let _e125 = local_33;
                     seen = _e125;
                 }
                 continuing {
-                    let _e127 = k_3;
-                    k_3 = (_e127 + 1u);
+                    let _e127 = k_2;
+                    k_2 = (_e127 + 1u);
                 }
             }
             let s_5 = reuse_prev[pixel].surface;
             let _e133 = seen;
             if !(_e133) {
-                local_31 = !((s_5.m > 0f));
+                local_34 = !((s_5.m > 0f));
             } else {
-                local_31 = true;
+                local_34 = true;
             }
-            let _e142 = local_31;
+            let _e142 = local_34;
             if !(_e142) {
                 let _e150 = history_matches(n_11, s_5.n, x_13, dot(s_5.n, s_5.x), d_6);
-                local_32 = !(_e150);
+                local_35 = !(_e150);
             } else {
-                local_32 = true;
+                local_35 = true;
             }
-            let _e153 = local_32;
+            let _e153 = local_35;
             if _e153 {
                 continue;
             }
@@ -1178,17 +1179,18 @@ fn reuse_domains(x_13: vec3<f32>, n_11: vec3<f32>, d_6: f32, h_1: u32, doms_1: p
             let _e160 = reuse.prev_eye;
             let _e161 = reuse_material(s_5, _e160);
             let _e165 = reuse.max_confidence;
-            (*doms_1)[_e154] = Domain(pixel, s_5.x, s_5.n, _e161, min(s_5.m, _e165));
-            let _e168 = nd;
-            nd = (_e168 + 1u);
+            let _e167 = j_4;
+            (*doms_1)[_e154] = Domain(pixel, s_5.x, s_5.n, _e161, min(s_5.m, _e165), (_e167 == 0u));
+            let _e171 = nd;
+            nd = (_e171 + 1u);
         }
         continuing {
-            let _e172 = j_3;
-            j_3 = (_e172 + 1u);
+            let _e175 = j_4;
+            j_4 = (_e175 + 1u);
         }
     }
-    let _e174 = nd;
-    return _e174;
+    let _e177 = nd;
+    return _e177;
 }
 
 @compute @workgroup_size(8, 8, 1) 
@@ -1210,9 +1212,11 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     var b: u32;
     var q: u32;
     var doms: array<Domain, 3>;
-    var confidence: f32 = 1f;
-    var k: u32 = 0u;
+    var local_2: bool;
     var hs: u32;
+    var kept_light: array<u32, 8>;
+    var kept_cells: array<u32, 8>;
+    var kept_w: array<f32, 8>;
     var fin_light: array<u32, 8>;
     var fin_cells: array<u32, 8>;
     var fin_w: array<f32, 8>;
@@ -1225,22 +1229,32 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     var li: u32;
     var cells: u32;
     var w_in: f32;
-    var local_2: bool;
+    var local_3: bool;
     var own: f32;
     var all_: f32;
-    var k_1: u32;
-    var local_3: bool;
+    var local_4: bool;
+    var s_sum: f32;
+    var s_target: f32;
+    var j_1: u32;
+    var li_1: u32;
+    var cells_1: u32;
+    var w_in_1: f32;
+    var local_5: bool;
+    var own_1: f32;
+    var all_1: f32;
+    var k: u32;
+    var local_6: bool;
     var visible: array<bool, 8>;
-    var k_2: u32 = 0u;
+    var k_1: u32 = 0u;
     var w: f32;
     var first: bool;
-    var j_1: u32;
-    var local_4: bool;
-    var local_5: bool;
-    var local_6: bool;
     var j_2: u32;
-    var q_2: u32 = 0u;
     var local_7: bool;
+    var local_8: bool;
+    var local_9: bool;
+    var j_3: u32;
+    var q_2: u32 = 0u;
+    var local_10: bool;
 
     let _e4 = view.width;
     if !((gid.x >= _e4)) {
@@ -1314,7 +1328,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
             let _e151 = count;
             count = (_e151 + 1u);
             let _e155 = b;
-            let li_4 = bsh_nodes[_e155].light;
+            let li_5 = bsh_nodes[_e155].light;
             let _e159 = h;
             let _e160 = pcg_hash(_e159);
             h = _e160;
@@ -1330,7 +1344,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
             let u_4 = vec2<f32>(_e166, _e168);
             let _e170 = r;
             let _e171 = m;
-            let _e176 = shade_pick_traced(li_4, x_16, n_14, _e170, _e99, _e171, 1f, u_4.x, u_4.y, eps_3, false);
+            let _e176 = shade_pick_traced(li_5, x_16, n_14, _e170, _e99, _e171, 1f, u_4.x, u_4.y, eps_3, false);
             let _e177 = output_of(_e176);
             let _e178 = resample_target(_e177);
             if (_e178 > 0f) {
@@ -1353,7 +1367,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
                         let _e193 = weighted_replace(_e178, _e190, _e192);
                         if _e193 {
                             let _e194 = q;
-                            slot_light[_e194] = li_4;
+                            slot_light[_e194] = li_5;
                             let _e196 = q;
                             slot_u[_e196] = u_4;
                             let _e198 = q;
@@ -1382,28 +1396,21 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     let _e223 = view.eye;
     let _e227 = reuse_stream(_e122, 0u);
     let _e228 = reuse_domains(x_16, n_14, length((_e223 - x_16)), _e227, (&doms));
-    loop {
-        let _e233 = k;
-        if (_e233 < _e228) {
-        } else {
-            break;
-        }
-        {
-            let _e235 = confidence;
-            let _e236 = k;
-            let _e239 = doms[_e236].c;
-            confidence = (_e235 + _e239);
-        }
-        continuing {
-            let _e242 = k;
-            k = (_e242 + 1u);
-        }
+    if (_e228 > 0u) {
+        let _e235 = doms[0].temporal;
+        local_2 = _e235;
+    } else {
+        local_2 = false;
     }
-    let _e245 = reuse_stream(_e122, 1u);
-    hs = _e245;
+    let own_history = local_2;
+    let first_1 = select(0u, 1u, own_history);
+    let _e243 = doms[0].c;
+    let confidence = (1f + select(0f, _e243, own_history));
+    let _e249 = reuse_stream(_e122, 1u);
+    hs = _e249;
     loop {
-        let _e252 = q_1;
-        if (_e252 < K) {
+        let _e259 = q_1;
+        if (_e259 < K) {
         } else {
             break;
         }
@@ -1414,299 +1421,416 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
             chosen_target = 0f;
             j = 0u;
             loop {
-                let _e265 = j;
-                if (_e265 <= _e228) {
+                let _e272 = j;
+                if (_e272 <= first_1) {
                 } else {
                     break;
                 }
                 {
-                    let _e267 = q_1;
-                    let _e269 = slot_light[_e267];
-                    li = _e269;
-                    let _e271 = q_1;
-                    let _e273 = slot_cells[_e271];
-                    cells = _e273;
-                    let _e275 = total;
-                    w_in = _e275;
-                    let _e277 = j;
-                    if (_e277 > 0u) {
-                        let _e281 = j;
-                        let _e286 = doms[(_e281 - 1u)].pixel;
-                        let _e289 = q_1;
-                        let s_6 = reuse_prev[_e286].slots[_e289];
+                    let _e274 = q_1;
+                    let _e276 = slot_light[_e274];
+                    li = _e276;
+                    let _e278 = q_1;
+                    let _e280 = slot_cells[_e278];
+                    cells = _e280;
+                    let _e282 = total;
+                    w_in = _e282;
+                    let _e284 = j;
+                    if (_e284 > 0u) {
+                        let _e290 = doms[0].pixel;
+                        let _e293 = q_1;
+                        let s_6 = reuse_prev[_e290].slots[_e293];
                         li = s_6.light;
                         cells = s_6.u;
                         w_in = s_6.w;
                     }
-                    let _e295 = w_in;
-                    if !(!((_e295 > 0f))) {
-                        let _e302 = li;
-                        local_2 = (_e302 >= arrayLength((&lights)));
+                    let _e299 = w_in;
+                    if !(!((_e299 > 0f))) {
+                        let _e306 = li;
+                        local_3 = (_e306 >= arrayLength((&lights)));
                     } else {
-                        local_2 = true;
+                        local_3 = true;
                     }
-                    let _e307 = local_2;
-                    if _e307 {
+                    let _e311 = local_3;
+                    if _e311 {
                         continue;
                     }
-                    let _e309 = li;
-                    let _e311 = lights[_e309];
-                    let _e312 = cells;
-                    let _e313 = m;
-                    let _e314 = reuse_target(_e311, _e312, x_16, n_14, _e313);
-                    if !((_e314 > 0f)) {
+                    let _e313 = li;
+                    let _e315 = lights[_e313];
+                    let _e316 = cells;
+                    let _e317 = m;
+                    let _e318 = reuse_target(_e315, _e316, x_16, n_14, _e317);
+                    if !((_e318 > 0f)) {
                         continue;
                     }
-                    let _e318 = j;
-                    if (_e318 == 0u) {
-                        let _e321 = total;
-                        w_in = (_e321 / _e314);
+                    let _e322 = j;
+                    if (_e322 == 0u) {
+                        let _e325 = total;
+                        w_in = (_e325 / _e318);
                     }
-                    own = _e314;
-                    all_ = _e314;
-                    k_1 = 0u;
-                    loop {
-                        let _e327 = k_1;
-                        if (_e327 < _e228) {
-                        } else {
-                            break;
-                        }
-                        {
-                            let _e329 = k_1;
-                            let _e332 = doms[_e329].c;
-                            let _e334 = li;
-                            let _e336 = lights_prev[_e334];
-                            let _e337 = cells;
-                            let _e338 = k_1;
-                            let _e341 = doms[_e338].x;
-                            let _e342 = k_1;
-                            let _e345 = doms[_e342].n;
-                            let _e346 = k_1;
-                            let _e349 = doms[_e346].m;
-                            let _e350 = reuse_target(_e336, _e337, _e341, _e345, _e349);
-                            let t_6 = (_e332 * _e350);
-                            let _e352 = all_;
-                            all_ = (_e352 + t_6);
-                            let _e354 = k_1;
-                            let _e357 = j;
-                            if ((_e354 + 1u) == _e357) {
-                                own = t_6;
-                            }
-                        }
-                        continuing {
-                            let _e360 = k_1;
-                            k_1 = (_e360 + 1u);
+                    own = _e318;
+                    all_ = _e318;
+                    if own_history {
+                        let _e331 = doms[0].c;
+                        let _e333 = li;
+                        let _e335 = lights_prev[_e333];
+                        let _e336 = cells;
+                        let _e339 = doms[0].x;
+                        let _e342 = doms[0].n;
+                        let _e345 = doms[0].m;
+                        let _e346 = reuse_target(_e335, _e336, _e339, _e342, _e345);
+                        let t_6 = (_e331 * _e346);
+                        let _e348 = all_;
+                        all_ = (_e348 + t_6);
+                        let _e350 = j;
+                        if (_e350 == 1u) {
+                            own = t_6;
                         }
                     }
-                    let _e362 = own;
-                    let _e363 = all_;
-                    let _e364 = w_in;
-                    let _e365 = gris_weight(_e362, _e363, _e314, _e364);
-                    let _e366 = w_sum;
-                    w_sum = (_e366 + _e365);
-                    let _e368 = hs;
-                    let _e369 = pcg_hash(_e368);
-                    hs = _e369;
-                    if (_e365 > 0f) {
-                        let _e374 = w_sum;
-                        let _e375 = hs;
-                        let _e376 = xi_from_bits(_e375);
-                        let _e377 = weighted_replace(_e365, _e374, _e376);
-                        local_3 = _e377;
-                    } else {
-                        local_3 = false;
-                    }
-                    let _e379 = local_3;
-                    if _e379 {
-                        let _e380 = li;
-                        chosen = _e380;
-                        let _e381 = cells;
-                        chosen_cells = _e381;
-                        chosen_target = _e314;
-                    }
-                }
-                continuing {
-                    let _e383 = j;
-                    j = (_e383 + 1u);
-                }
-            }
-            let _e385 = q_1;
-            let _e387 = chosen;
-            fin_light[_e385] = _e387;
-            let _e388 = q_1;
-            let _e390 = chosen_cells;
-            fin_cells[_e388] = _e390;
-            let _e391 = q_1;
-            let _e393 = w_sum;
-            let _e394 = chosen_target;
-            let _e395 = gris_contribution_weight(_e393, _e394);
-            fin_w[_e391] = _e395;
-        }
-        continuing {
-            let _e397 = q_1;
-            q_1 = (_e397 + 1u);
-        }
-    }
-    loop {
-        let _e402 = k_2;
-        if (_e402 < K) {
-        } else {
-            break;
-        }
-        {
-            let _e405 = k_2;
-            let _e407 = fin_w[_e405];
-            w = _e407;
-            let _e409 = w;
-            first = (_e409 > 0f);
-            j_1 = 0u;
-            loop {
-                let _e415 = j_1;
-                if (_e415 < K) {
-                } else {
-                    break;
-                }
-                {
-                    let _e418 = j_1;
-                    let _e419 = k_2;
-                    if (_e418 != _e419) {
-                        let _e423 = j_1;
-                        let _e425 = fin_w[_e423];
-                        local_4 = (_e425 > 0f);
+                    let _e353 = own;
+                    let _e354 = all_;
+                    let _e355 = w_in;
+                    let _e356 = gris_weight(_e353, _e354, _e318, _e355);
+                    let _e357 = w_sum;
+                    w_sum = (_e357 + _e356);
+                    let _e359 = hs;
+                    let _e360 = pcg_hash(_e359);
+                    hs = _e360;
+                    if (_e356 > 0f) {
+                        let _e365 = w_sum;
+                        let _e366 = hs;
+                        let _e367 = xi_from_bits(_e366);
+                        let _e368 = weighted_replace(_e356, _e365, _e367);
+                        local_4 = _e368;
                     } else {
                         local_4 = false;
                     }
-                    let _e429 = local_4;
-                    if _e429 {
-                        let _e432 = j_1;
-                        let _e434 = fin_light[_e432];
-                        let _e435 = j_1;
-                        let _e437 = fin_cells[_e435];
-                        let _e438 = k_2;
-                        let _e440 = fin_light[_e438];
-                        let _e441 = k_2;
-                        let _e443 = fin_cells[_e441];
-                        let _e444 = same_pick(_e434, _e437, _e440, _e443);
-                        local_5 = _e444;
-                    } else {
-                        local_5 = false;
-                    }
-                    let _e446 = local_5;
-                    if _e446 {
-                        let _e447 = first;
-                        if _e447 {
-                            let _e450 = j_1;
-                            let _e451 = k_2;
-                            local_6 = (_e450 > _e451);
-                        } else {
-                            local_6 = false;
-                        }
-                        let _e454 = local_6;
-                        first = _e454;
-                        let _e455 = w;
-                        let _e456 = j_1;
-                        let _e458 = fin_w[_e456];
-                        w = (_e455 + _e458);
+                    let _e370 = local_4;
+                    if _e370 {
+                        let _e371 = li;
+                        chosen = _e371;
+                        let _e372 = cells;
+                        chosen_cells = _e372;
+                        chosen_target = _e318;
                     }
                 }
                 continuing {
-                    let _e461 = j_1;
-                    j_1 = (_e461 + 1u);
+                    let _e374 = j;
+                    j = (_e374 + 1u);
                 }
             }
-            let _e463 = first;
-            if _e463 {
-                let _e465 = k_2;
-                let _e467 = fin_light[_e465];
-                let _e469 = lights[_e467];
-                let _e472 = w;
-                let _e475 = k_2;
-                let _e477 = fin_cells[_e475];
-                let _e478 = grid_coordinate(_e477);
-                let _e479 = k_2;
-                let _e481 = fin_cells[_e479];
-                let _e484 = grid_coordinate((_e481 << 16u));
-                let _e486 = connect_record(_e469, x_16, n_14, n_14, UNRANGED, UNRANGED, (_e472 / 8f), _e478, _e484, eps_3, true);
-                let _e487 = m;
-                let _e488 = shade_connection(_e486, x_16, n_14, _e487);
-                let _e489 = t;
-                let _e490 = add(_e489, _e488);
-                t = _e490;
-                let _e491 = k_2;
-                j_2 = _e491;
+            let _e376 = q_1;
+            let _e378 = chosen;
+            kept_light[_e376] = _e378;
+            let _e379 = q_1;
+            let _e381 = chosen_cells;
+            kept_cells[_e379] = _e381;
+            let _e382 = q_1;
+            let _e384 = w_sum;
+            let _e385 = chosen_target;
+            let _e386 = gris_contribution_weight(_e384, _e385);
+            kept_w[_e382] = _e386;
+            let _e387 = q_1;
+            let _e389 = chosen;
+            fin_light[_e387] = _e389;
+            let _e390 = q_1;
+            let _e392 = chosen_cells;
+            fin_cells[_e390] = _e392;
+            let _e393 = q_1;
+            let _e395 = q_1;
+            let _e397 = kept_w[_e395];
+            fin_w[_e393] = _e397;
+            if (_e228 > first_1) {
+                s_sum = 0f;
+                s_target = 0f;
+                j_1 = first_1;
                 loop {
-                    let _e493 = j_2;
-                    if (_e493 < K) {
+                    let _e404 = j_1;
+                    if (_e404 <= _e228) {
                     } else {
                         break;
                     }
                     {
-                        let _e496 = j_2;
-                        let _e498 = fin_light[_e496];
-                        let _e499 = j_2;
-                        let _e501 = fin_cells[_e499];
-                        let _e502 = k_2;
-                        let _e504 = fin_light[_e502];
-                        let _e505 = k_2;
-                        let _e507 = fin_cells[_e505];
-                        let _e508 = same_pick(_e498, _e501, _e504, _e507);
-                        if _e508 {
-                            let _e509 = j_2;
-                            let _e511 = output_of(_e488);
-                            let _e512 = resample_target(_e511);
-                            visible[_e509] = (_e512 > 0f);
+                        let _e406 = q_1;
+                        let _e408 = kept_light[_e406];
+                        li_1 = _e408;
+                        let _e410 = q_1;
+                        let _e412 = kept_cells[_e410];
+                        cells_1 = _e412;
+                        let _e414 = q_1;
+                        let _e416 = kept_w[_e414];
+                        w_in_1 = _e416;
+                        let _e418 = j_1;
+                        if (_e418 > first_1) {
+                            let _e421 = j_1;
+                            let _e426 = doms[(_e421 - 1u)].pixel;
+                            let _e429 = q_1;
+                            let s_7 = reuse_prev[_e426].slots[_e429];
+                            li_1 = s_7.light;
+                            cells_1 = s_7.u;
+                            w_in_1 = s_7.w;
+                        }
+                        let _e435 = w_in_1;
+                        if !(!((_e435 > 0f))) {
+                            let _e442 = li_1;
+                            local_5 = (_e442 >= arrayLength((&lights)));
+                        } else {
+                            local_5 = true;
+                        }
+                        let _e447 = local_5;
+                        if _e447 {
+                            continue;
+                        }
+                        let _e449 = li_1;
+                        let _e451 = lights[_e449];
+                        let _e452 = cells_1;
+                        let _e453 = m;
+                        let _e454 = reuse_target(_e451, _e452, x_16, n_14, _e453);
+                        if !((_e454 > 0f)) {
+                            continue;
+                        }
+                        own_1 = (confidence * _e454);
+                        let _e460 = own_1;
+                        all_1 = _e460;
+                        k = first_1;
+                        loop {
+                            let _e463 = k;
+                            if (_e463 < _e228) {
+                            } else {
+                                break;
+                            }
+                            {
+                                let _e465 = k;
+                                let _e468 = doms[_e465].c;
+                                let _e470 = li_1;
+                                let _e472 = lights_prev[_e470];
+                                let _e473 = cells_1;
+                                let _e474 = k;
+                                let _e477 = doms[_e474].x;
+                                let _e478 = k;
+                                let _e481 = doms[_e478].n;
+                                let _e482 = k;
+                                let _e485 = doms[_e482].m;
+                                let _e486 = reuse_target(_e472, _e473, _e477, _e481, _e485);
+                                let t_7 = (_e468 * _e486);
+                                let _e488 = all_1;
+                                all_1 = (_e488 + t_7);
+                                let _e490 = k;
+                                let _e493 = j_1;
+                                if ((_e490 + 1u) == _e493) {
+                                    own_1 = t_7;
+                                }
+                            }
+                            continuing {
+                                let _e496 = k;
+                                k = (_e496 + 1u);
+                            }
+                        }
+                        let _e498 = own_1;
+                        let _e499 = all_1;
+                        let _e500 = w_in_1;
+                        let _e501 = gris_weight(_e498, _e499, _e454, _e500);
+                        let _e502 = s_sum;
+                        s_sum = (_e502 + _e501);
+                        let _e504 = hs;
+                        let _e505 = pcg_hash(_e504);
+                        hs = _e505;
+                        if (_e501 > 0f) {
+                            let _e510 = s_sum;
+                            let _e511 = hs;
+                            let _e512 = xi_from_bits(_e511);
+                            let _e513 = weighted_replace(_e501, _e510, _e512);
+                            local_6 = _e513;
+                        } else {
+                            local_6 = false;
+                        }
+                        let _e515 = local_6;
+                        if _e515 {
+                            let _e516 = q_1;
+                            let _e518 = li_1;
+                            fin_light[_e516] = _e518;
+                            let _e519 = q_1;
+                            let _e521 = cells_1;
+                            fin_cells[_e519] = _e521;
+                            s_target = _e454;
                         }
                     }
                     continuing {
-                        let _e516 = j_2;
-                        j_2 = (_e516 + 1u);
+                        let _e523 = j_1;
+                        j_1 = (_e523 + 1u);
+                    }
+                }
+                let _e525 = q_1;
+                let _e527 = s_sum;
+                let _e528 = s_target;
+                let _e529 = gris_contribution_weight(_e527, _e528);
+                fin_w[_e525] = _e529;
+            }
+        }
+        continuing {
+            let _e531 = q_1;
+            q_1 = (_e531 + 1u);
+        }
+    }
+    loop {
+        let _e536 = k_1;
+        if (_e536 < K) {
+        } else {
+            break;
+        }
+        {
+            let _e539 = k_1;
+            let _e541 = fin_w[_e539];
+            w = _e541;
+            let _e543 = w;
+            first = (_e543 > 0f);
+            j_2 = 0u;
+            loop {
+                let _e549 = j_2;
+                if (_e549 < K) {
+                } else {
+                    break;
+                }
+                {
+                    let _e552 = j_2;
+                    let _e553 = k_1;
+                    if (_e552 != _e553) {
+                        let _e557 = j_2;
+                        let _e559 = fin_w[_e557];
+                        local_7 = (_e559 > 0f);
+                    } else {
+                        local_7 = false;
+                    }
+                    let _e563 = local_7;
+                    if _e563 {
+                        let _e566 = j_2;
+                        let _e568 = fin_light[_e566];
+                        let _e569 = j_2;
+                        let _e571 = fin_cells[_e569];
+                        let _e572 = k_1;
+                        let _e574 = fin_light[_e572];
+                        let _e575 = k_1;
+                        let _e577 = fin_cells[_e575];
+                        let _e578 = same_pick(_e568, _e571, _e574, _e577);
+                        local_8 = _e578;
+                    } else {
+                        local_8 = false;
+                    }
+                    let _e580 = local_8;
+                    if _e580 {
+                        let _e581 = first;
+                        if _e581 {
+                            let _e584 = j_2;
+                            let _e585 = k_1;
+                            local_9 = (_e584 > _e585);
+                        } else {
+                            local_9 = false;
+                        }
+                        let _e588 = local_9;
+                        first = _e588;
+                        let _e589 = w;
+                        let _e590 = j_2;
+                        let _e592 = fin_w[_e590];
+                        w = (_e589 + _e592);
+                    }
+                }
+                continuing {
+                    let _e595 = j_2;
+                    j_2 = (_e595 + 1u);
+                }
+            }
+            let _e597 = first;
+            if _e597 {
+                let _e599 = k_1;
+                let _e601 = fin_light[_e599];
+                let _e603 = lights[_e601];
+                let _e606 = w;
+                let _e609 = k_1;
+                let _e611 = fin_cells[_e609];
+                let _e612 = grid_coordinate(_e611);
+                let _e613 = k_1;
+                let _e615 = fin_cells[_e613];
+                let _e618 = grid_coordinate((_e615 << 16u));
+                let _e620 = connect_record(_e603, x_16, n_14, n_14, UNRANGED, UNRANGED, (_e606 / 8f), _e612, _e618, eps_3, true);
+                let _e621 = m;
+                let _e622 = shade_connection(_e620, x_16, n_14, _e621);
+                let _e623 = t;
+                let _e624 = add(_e623, _e622);
+                t = _e624;
+                let _e625 = k_1;
+                j_3 = _e625;
+                loop {
+                    let _e627 = j_3;
+                    if (_e627 < K) {
+                    } else {
+                        break;
+                    }
+                    {
+                        let _e630 = j_3;
+                        let _e632 = fin_light[_e630];
+                        let _e633 = j_3;
+                        let _e635 = fin_cells[_e633];
+                        let _e636 = k_1;
+                        let _e638 = fin_light[_e636];
+                        let _e639 = k_1;
+                        let _e641 = fin_cells[_e639];
+                        let _e642 = same_pick(_e632, _e635, _e638, _e641);
+                        if _e642 {
+                            let _e643 = j_3;
+                            let _e645 = output_of(_e622);
+                            let _e646 = resample_target(_e645);
+                            visible[_e643] = (_e646 > 0f);
+                        }
+                    }
+                    continuing {
+                        let _e650 = j_3;
+                        j_3 = (_e650 + 1u);
                     }
                 }
             }
         }
         continuing {
-            let _e519 = k_2;
-            k_2 = (_e519 + 1u);
+            let _e653 = k_1;
+            k_1 = (_e653 + 1u);
         }
     }
     loop {
-        let _e523 = q_2;
-        if (_e523 < K) {
+        let _e657 = q_2;
+        if (_e657 < K) {
         } else {
             break;
         }
         {
-            let _e528 = reuse.visibility;
-            if !((_e528 == 0u)) {
-                let _e534 = q_2;
-                let _e536 = visible[_e534];
-                local_7 = _e536;
+            let _e662 = reuse.visibility;
+            if !((_e662 == 0u)) {
+                let _e668 = q_2;
+                let _e670 = visible[_e668];
+                local_10 = _e670;
             } else {
-                local_7 = true;
+                local_10 = true;
             }
-            let keep = local_7;
-            let _e542 = q_2;
-            let _e544 = q_2;
-            let _e546 = fin_light[_e544];
-            let _e547 = q_2;
-            let _e549 = fin_cells[_e547];
-            let _e550 = q_2;
-            let _e552 = fin_w[_e550];
-            reuse_next[pixel_1].slots[_e542] = ReuseSlot(_e546, _e549, select(0f, _e552, keep));
+            let keep = local_10;
+            let _e676 = q_2;
+            let _e678 = q_2;
+            let _e680 = kept_light[_e678];
+            let _e681 = q_2;
+            let _e683 = kept_cells[_e681];
+            let _e684 = q_2;
+            let _e686 = kept_w[_e684];
+            reuse_next[pixel_1].slots[_e676] = ReuseSlot(_e680, _e683, select(0f, _e686, keep));
         }
         continuing {
-            let _e557 = q_2;
-            q_2 = (_e557 + 1u);
+            let _e691 = q_2;
+            q_2 = (_e691 + 1u);
         }
     }
-    let _e562 = m;
-    let _e563 = confidence;
-    let _e566 = reuse.max_confidence;
-    let _e568 = reuse_surface(x_16, n_14, _e562, min(_e563, _e566));
-    reuse_next[pixel_1].surface = _e568;
-    let _e571 = t.diffuse;
-    let _e573 = t.specular;
-    let _e575 = count;
-    textureStore(out_tex, texel_1, vec4<f32>((_e571 + _e573), f32(_e575)));
+    let _e696 = m;
+    let _e699 = reuse.max_confidence;
+    let _e701 = reuse_surface(x_16, n_14, _e696, min(confidence, _e699));
+    reuse_next[pixel_1].surface = _e701;
+    let _e704 = t.diffuse;
+    let _e706 = t.specular;
+    let _e708 = count;
+    textureStore(out_tex, texel_1, vec4<f32>((_e704 + _e706), f32(_e708)));
     return;
 }

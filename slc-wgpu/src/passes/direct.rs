@@ -254,9 +254,10 @@ pub struct DirectPassDesc {
 /// pixels (ReSTIR DI, Bitterli et al. 2020, as generalized RIS, Lin et al.
 /// 2022). Each of the `k` picks is a reservoir: this record's pick
 /// (drawn from the lights in range) is combined with the same reservoir
-/// of the previous record's pixel this point reprojects to and of
-/// `neighbours` previous-record pixels around it, in a disk of `radius`
-/// pixels, where they saw the same surface. Each enters in proportion to
+/// of the previous record's pixel this point reprojects to, where it saw
+/// the same surface (the history the next record reuses); for this
+/// record's shading only, `neighbours` previous-record pixels in a disk of
+/// `radius` pixels around it join. Each enters in proportion to
 /// its whole unshadowed contribution here, weighted by the generalized
 /// balance heuristic over every reused pixel's target (its surface, the
 /// previous record's lights) and confidence (the inputs it stands for, at
@@ -271,7 +272,11 @@ pub struct DirectPassDesc {
 /// object's pixels find no history (the surface test) and start anew.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct DirectReuse {
-    /// Previous-record pixels reused besides the reprojected one, `0..=7`.
+    /// Previous-record pixels reused besides the reprojected one, `0..=7`,
+    /// for the shading only. 0 by default: measured, they raised one
+    /// frame's noise (docs/results/reused-picks.md: SLC's candidates are
+    /// already every light in range, and a frame's ranges are every
+    /// pixel's, so a neighbour brings nothing the pixel lacks).
     pub neighbours: u32,
     /// Radius of the neighbours' disk, in pixels.
     pub radius: f32,
@@ -289,7 +294,9 @@ pub struct DirectReuse {
 }
 
 impl Default for DirectReuse {
-    /// Two neighbours within 16 pixels; at most 20 frames' confidence.
+    /// The pixel's own history only (no neighbours; a disk of 16 pixels
+    /// where some are asked for), at most 20 frames' confidence, no
+    /// visibility reuse.
     fn default() -> Self {
         DirectReuse { neighbours: 0, radius: 16.0, max_confidence: 20.0, visibility: false }
     }

@@ -152,7 +152,8 @@ struct Domain {
     metal::float3 n;
     Material m;
     float c;
-    char _pad5[12];
+    bool temporal;
+    char _pad6[11];
 };
 struct type_19 {
     Domain inner[3];
@@ -345,28 +346,28 @@ float connection_cosine(
     metal::float3 ng,
     float r2_1
 ) {
-    bool local_8 = {};
-    bool local_9 = {};
+    bool local_11 = {};
+    bool local_12 = {};
     metal::float3 v_6 = x_2 - y;
     float d2_6 = metal::dot(v_6, v_6);
     bool _e7 = slc_keep(r2_1, d2_6);
     if (!(!(_e7))) {
-        local_8 = !((d2_6 > 0.0));
+        local_11 = !((d2_6 > 0.0));
     } else {
-        local_8 = true;
+        local_11 = true;
     }
-    bool _e16 = local_8;
+    bool _e16 = local_11;
     if (_e16) {
         return 0.0;
     }
     metal::float3 w_7 = v_6 / metal::float3(metal::sqrt(d2_6));
     float cos_x_1 = -(metal::dot(n, w_7));
     if (!((cos_x_1 <= 0.0))) {
-        local_9 = metal::dot(ng, w_7) >= 0.0;
+        local_12 = metal::dot(ng, w_7) >= 0.0;
     } else {
-        local_9 = true;
+        local_12 = true;
     }
-    bool _e32 = local_9;
+    bool _e32 = local_12;
     if (_e32) {
         return 0.0;
     }
@@ -455,15 +456,15 @@ metal::float2 disk_offset(
 }
 
 float gris_weight(
-    float own_1,
-    float all_1,
+    float own_2,
+    float all_2,
     float p_hat,
     float w_4
 ) {
-    if (!((all_1 > 0.0))) {
+    if (!((all_2 > 0.0))) {
         return 0.0;
     }
-    return ((own_1 / all_1) * p_hat) * w_4;
+    return ((own_2 / all_2) * p_hat) * w_4;
 }
 
 float gris_contribution_weight(
@@ -502,13 +503,13 @@ float smith_visibility(
     float n_v,
     float alpha_2
 ) {
-    bool local_10 = {};
+    bool local_13 = {};
     if (!((n_l <= 0.0))) {
-        local_10 = n_v <= 0.0;
+        local_13 = n_v <= 0.0;
     } else {
-        local_10 = true;
+        local_13 = true;
     }
-    bool _e11 = local_10;
+    bool _e11 = local_13;
     if (_e11) {
         return 0.0;
     }
@@ -544,20 +545,20 @@ bool has_specular(
     metal::float3 f0_d_1,
     float f90_d_1
 ) {
-    bool local_11 = {};
-    bool local_12 = {};
+    bool local_14 = {};
+    bool local_15 = {};
     if (!((metallic_1 > 0.0))) {
-        local_11 = f90_d_1 > 0.0;
+        local_14 = f90_d_1 > 0.0;
     } else {
-        local_11 = true;
+        local_14 = true;
     }
-    bool _e11 = local_11;
+    bool _e11 = local_14;
     if (!(_e11)) {
-        local_12 = metal::max(metal::max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0.0;
+        local_15 = metal::max(metal::max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0.0;
     } else {
-        local_12 = true;
+        local_15 = true;
     }
-    bool _e23 = local_12;
+    bool _e23 = local_15;
     return _e23;
 }
 
@@ -575,16 +576,16 @@ metal::float4 receiver_lobe(
     float alpha_3,
     float n_v_1
 ) {
-    bool local_13 = {};
+    bool local_16 = {};
     metal::float3 _e10 = fresnel_schlick(f0_d_2, f90_d_2, n_v_1);
     float _e16 = channel_mean(((metal::float3(1.0, 1.0, 1.0) - _e10) * base_1) * (1.0 - metallic_2));
     if (!((n_v_1 <= 0.0))) {
         bool _e22 = has_specular(metallic_2, f0_d_2, f90_d_2);
-        local_13 = !(_e22);
+        local_16 = !(_e22);
     } else {
-        local_13 = true;
+        local_16 = true;
     }
-    bool _e25 = local_13;
+    bool _e25 = local_16;
     if (_e25) {
         return metal::float4(_e16, 0.0, alpha_3, n_v_1);
     }
@@ -699,22 +700,22 @@ float cone_cos_of(
     float a_3,
     metal::float3 d
 ) {
-    bool local_14 = {};
-    bool local_15 = {};
+    bool local_17 = {};
+    bool local_18 = {};
     float vd = metal::dot(v_2, d);
     float h2_1 = d2_4 - (a_3 * a_3);
     if (!((h2_1 <= 0.0))) {
         if (vd >= 0.0) {
-            local_15 = (vd * vd) >= h2_1;
+            local_18 = (vd * vd) >= h2_1;
         } else {
-            local_15 = false;
+            local_18 = false;
         }
-        bool _e19 = local_15;
-        local_14 = _e19;
+        bool _e19 = local_18;
+        local_17 = _e19;
     } else {
-        local_14 = true;
+        local_17 = true;
     }
-    bool _e21 = local_14;
+    bool _e21 = local_17;
     if (_e21) {
         return 1.0;
     }
@@ -801,15 +802,15 @@ metal::float3 triangle_normal(
     metal::float3 b_4,
     metal::float3 c_4
 ) {
-    bool local_16 = {};
+    bool local_19 = {};
     metal::float3 n_12 = metal::cross(b_4 - a_4, c_4 - a_4);
     float l2_ = metal::dot(n_12, n_12);
     if (!(!((l2_ > 0.0)))) {
-        local_16 = !((l2_ < 300000000000000000000000000000000000000.0));
+        local_19 = !((l2_ < 300000000000000000000000000000000000000.0));
     } else {
-        local_16 = true;
+        local_19 = true;
     }
-    bool _e17 = local_16;
+    bool _e17 = local_19;
     if (_e17) {
         return metal::float3(0.0, 0.0, 0.0);
     }
@@ -825,9 +826,9 @@ float ray_triangle(
     float t_min,
     float t_max_1
 ) {
-    bool local_17 = {};
-    bool local_18 = {};
-    bool local_19 = {};
+    bool local_20 = {};
+    bool local_21 = {};
+    bool local_22 = {};
     metal::float3 e1_ = b_5 - a_5;
     metal::float3 e2_ = c_5 - a_5;
     metal::float3 p_5 = metal::cross(d_3, e2_);
@@ -839,32 +840,32 @@ float ray_triangle(
     metal::float3 s_4 = o_1 - a_5;
     float u_3 = metal::dot(s_4, p_5) * inv;
     if (!((u_3 < 0.0))) {
-        local_17 = u_3 > 1.0;
+        local_20 = u_3 > 1.0;
     } else {
-        local_17 = true;
+        local_20 = true;
     }
-    bool _e28 = local_17;
+    bool _e28 = local_20;
     if (_e28) {
         return -1.0;
     }
     metal::float3 q_3 = metal::cross(s_4, e1_);
     float v_8 = metal::dot(d_3, q_3) * inv;
     if (!((v_8 < 0.0))) {
-        local_18 = (u_3 + v_8) > 1.0;
+        local_21 = (u_3 + v_8) > 1.0;
     } else {
-        local_18 = true;
+        local_21 = true;
     }
-    bool _e42 = local_18;
+    bool _e42 = local_21;
     if (_e42) {
         return -1.0;
     }
     float t_3 = metal::dot(e2_, q_3) * inv;
     if (t_3 > t_min) {
-        local_19 = t_3 < t_max_1;
+        local_22 = t_3 < t_max_1;
     } else {
-        local_19 = false;
+        local_22 = false;
     }
-    bool _e51 = local_19;
+    bool _e51 = local_22;
     if (_e51) {
         return t_3;
     }
@@ -896,13 +897,13 @@ bool history_matches(
     float oh,
     float d_4
 ) {
-    bool local_20 = {};
+    bool local_23 = {};
     if (metal::abs(metal::dot(nh, p_3) - oh) <= (TEMPORAL_DEPTH_TOLERANCE * d_4)) {
-        local_20 = metal::dot(n_4, nh) >= TEMPORAL_NORMAL_COS;
+        local_23 = metal::dot(n_4, nh) >= TEMPORAL_NORMAL_COS;
     } else {
-        local_20 = false;
+        local_23 = false;
     }
-    bool _e17 = local_20;
+    bool _e17 = local_23;
     return _e17;
 }
 
@@ -1092,19 +1093,19 @@ bool bsh_reaches(
     metal::float3 r_7,
     metal::float4 rl_3
 ) {
-    bool local_21 = {};
-    bool local_22 = {};
+    bool local_24 = {};
+    bool local_25 = {};
     bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_4);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
         bool _e20 = sphere_contains_point(node_3.center, node_3.radius * (rl_3.w * 1.0001), x_4);
-        local_21 = !(_e20);
+        local_24 = !(_e20);
     } else {
-        local_21 = true;
+        local_24 = true;
     }
-    bool _e23 = local_21;
+    bool _e23 = local_24;
     if (_e23) {
         return false;
     }
@@ -1125,11 +1126,11 @@ bool bsh_reaches(
     float s_c = _e50 * 1.001;
     float reach = node_3.extent + (metal::sqrt(s_c) * _e25);
     if (d2_7 <= ((node_3.radius * node_3.radius) * s_c)) {
-        local_22 = d2_7 <= (reach * reach);
+        local_25 = d2_7 <= (reach * reach);
     } else {
-        local_22 = false;
+        local_25 = false;
     }
-    bool _e67 = local_22;
+    bool _e67 = local_25;
     return _e67;
 }
 
@@ -1188,8 +1189,8 @@ Connection connect_record(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Connection c_6 = {};
-    bool local_23 = {};
-    bool local_24 = {};
+    bool local_26 = {};
+    bool local_27 = {};
     c_6.e = metal::float3(0.0);
     metal::float3 _e16 = light_point(l_3, u1_3, u2_3);
     c_6.y = _e16;
@@ -1201,16 +1202,16 @@ Connection connect_record(
         if (trace_1) {
             metal::float3 _e33 = c_6.y;
             bool _e34 = occluded(x_6 + (ng_1 * eps), _e33, geo_nodes, geo_tris, _buffer_sizes);
-            local_24 = _e34;
+            local_27 = _e34;
         } else {
-            local_24 = false;
+            local_27 = false;
         }
-        bool _e36 = local_24;
-        local_23 = _e36;
+        bool _e36 = local_27;
+        local_26 = _e36;
     } else {
-        local_23 = true;
+        local_26 = true;
     }
-    bool _e38 = local_23;
+    bool _e38 = local_26;
     if (_e38) {
         Connection _e39 = c_6;
         return _e39;
@@ -1227,7 +1228,7 @@ Connection connect_record(
 }
 
 Connection connect_traced(
-    uint li_1,
+    uint li_2,
     metal::float3 x_7,
     metal::float3 n_6,
     metal::float3 ng_2,
@@ -1244,22 +1245,22 @@ Connection connect_traced(
     device type_4 const& r2_3,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuLight _e12 = lights[li_1];
-    float _e15 = r2_3[li_1];
-    float _e19 = rt2_3[li_1];
+    GpuLight _e12 = lights[li_2];
+    float _e15 = r2_3[li_2];
+    float _e19 = rt2_3[li_2];
     Connection _e21 = connect_record(_e12, x_7, n_6, ng_2, s * _e15, s * _e19, w_res_1, u1_4, u2_4, eps_1, trace_2, geo_nodes, geo_tris, _buffer_sizes);
     return _e21;
 }
 
 float light_range_scale(
-    uint li_2,
+    uint li_3,
     metal::float3 x_8,
     metal::float3 r_9,
     metal::float4 rl_5,
     device type_14 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuLightCone c_11 = light_cones[li_2];
+    GpuLightCone c_11 = light_cones[li_3];
     float _e9 = range_scale_toward(rl_5, c_11.center, c_11.radius, x_8, r_9);
     return _e9;
 }
@@ -1291,7 +1292,7 @@ Shaded shade_connection(
 }
 
 Shaded shade_pick_traced(
-    uint li_3,
+    uint li_4,
     metal::float3 x_10,
     metal::float3 n_8,
     metal::float3 r_10,
@@ -1310,8 +1311,8 @@ Shaded shade_pick_traced(
     device type_14 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e11 = light_range_scale(li_3, x_10, r_10, rl_6, light_cones, _buffer_sizes);
-    Connection _e12 = connect_traced(li_3, x_10, n_8, n_8, _e11, w_6, u1_5, u2_5, eps_2, trace_3, geo_nodes, geo_tris, lights, rt2_3, r2_3, _buffer_sizes);
+    float _e11 = light_range_scale(li_4, x_10, r_10, rl_6, light_cones, _buffer_sizes);
+    Connection _e12 = connect_traced(li_4, x_10, n_8, n_8, _e11, w_6, u1_5, u2_5, eps_2, trace_3, geo_nodes, geo_tris, lights, rt2_3, r2_3, _buffer_sizes);
     Shaded _e13 = shade_connection(_e12, x_10, n_8, m_2);
     return _e13;
 }
@@ -1342,7 +1343,7 @@ metal::float3 output_of(
 
 float reuse_target(
     GpuLight l_4,
-    uint cells_1,
+    uint cells_2,
     metal::float3 x_11,
     metal::float3 n_9,
     Material m_3,
@@ -1350,8 +1351,8 @@ float reuse_target(
     device type_8 const& geo_tris,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e8 = grid_coordinate(cells_1);
-    float _e11 = grid_coordinate(cells_1 << 16u);
+    float _e8 = grid_coordinate(cells_2);
+    float _e11 = grid_coordinate(cells_2 << 16u);
     Connection _e14 = connect_record(l_4, x_11, n_9, n_9, UNRANGED, UNRANGED, 1.0, _e8, _e11, 0.0, false, geo_nodes, geo_tris, _buffer_sizes);
     Shaded _e15 = shade_connection(_e14, x_11, n_9, m_3);
     metal::float3 _e16 = output_of(_e15);
@@ -1386,21 +1387,21 @@ bool same_pick(
     device type_12 const& lights,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    bool local_25 = {};
-    bool local_26 = {};
+    bool local_28 = {};
+    bool local_29 = {};
     if (la == lb) {
         if (!((ca == cb))) {
             uint _e14 = lights[la].kind;
-            local_26 = _e14 != LIGHT_TRIANGLE;
+            local_29 = _e14 != LIGHT_TRIANGLE;
         } else {
-            local_26 = true;
+            local_29 = true;
         }
-        bool _e18 = local_26;
-        local_25 = _e18;
+        bool _e18 = local_29;
+        local_28 = _e18;
     } else {
-        local_25 = false;
+        local_28 = false;
     }
-    bool _e20 = local_25;
+    bool _e20 = local_28;
     return _e20;
 }
 
@@ -1421,16 +1422,16 @@ uint reuse_domains(
 ) {
     uint nd = 0u;
     uint hr = {};
-    uint j_3 = 0u;
+    uint j_4 = 0u;
     metal::float2 p_4 = {};
-    bool local_27 = {};
-    bool local_28 = {};
-    bool local_29 = {};
-    bool seen = {};
-    uint k_3 = {};
     bool local_30 = {};
     bool local_31 = {};
     bool local_32 = {};
+    bool seen = {};
+    uint k_2 = {};
+    bool local_33 = {};
+    bool local_34 = {};
+    bool local_35 = {};
     uint _e9 = reuse.has_history;
     if (_e9 != 1u) {
         return 0u;
@@ -1452,18 +1453,18 @@ uint reuse_domains(
         if (metal::all(loop_bound_3 == uint2(0u))) { break; }
         loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e172 = j_3;
-            j_3 = _e172 + 1u;
+            uint _e175 = j_4;
+            j_4 = _e175 + 1u;
         }
         loop_init_1 = false;
-        uint _e41 = j_3;
+        uint _e41 = j_4;
         if (_e41 < DOMAINS) {
         } else {
             break;
         }
         {
             p_4 = _e33.xy;
-            uint _e46 = j_3;
+            uint _e46 = j_4;
             if (_e46 > 0u) {
                 uint _e49 = hr;
                 uint _e50 = pcg_hash(_e49);
@@ -1483,43 +1484,43 @@ uint reuse_domains(
             metal::float2 _e63 = p_4;
             metal::int2 t_5 = naga_f2i32(metal::rint(_e63));
             if (!((t_5.x < 0))) {
-                local_27 = t_5.y < 0;
+                local_30 = t_5.y < 0;
             } else {
-                local_27 = true;
+                local_30 = true;
             }
-            bool _e76 = local_27;
+            bool _e76 = local_30;
             if (!(_e76)) {
                 uint _e83 = view.width;
-                local_28 = t_5.x >= static_cast<int>(_e83);
+                local_31 = t_5.x >= static_cast<int>(_e83);
             } else {
-                local_28 = true;
+                local_31 = true;
             }
-            bool _e87 = local_28;
+            bool _e87 = local_31;
             if (!(_e87)) {
                 uint _e94 = view.height;
-                local_29 = t_5.y >= static_cast<int>(_e94);
+                local_32 = t_5.y >= static_cast<int>(_e94);
             } else {
-                local_29 = true;
+                local_32 = true;
             }
-            bool _e98 = local_29;
+            bool _e98 = local_32;
             if (_e98) {
                 continue;
             }
             uint _e103 = view.width;
             uint pixel = (static_cast<uint>(t_5.y) * _e103) + static_cast<uint>(t_5.x);
             seen = false;
-            k_3 = 0u;
+            k_2 = 0u;
             uint2 loop_bound_4 = uint2(4294967295u);
             bool loop_init_2 = true;
             while(true) {
                 if (metal::all(loop_bound_4 == uint2(0u))) { break; }
                 loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
                 if (!loop_init_2) {
-                    uint _e127 = k_3;
-                    k_3 = _e127 + 1u;
+                    uint _e127 = k_2;
+                    k_2 = _e127 + 1u;
                 }
                 loop_init_2 = false;
-                uint _e112 = k_3;
+                uint _e112 = k_2;
                 uint _e113 = nd;
                 if (_e112 < _e113) {
                 } else {
@@ -1528,31 +1529,31 @@ uint reuse_domains(
                 {
                     bool _e115 = seen;
                     if (!(_e115)) {
-                        uint _e119 = k_3;
+                        uint _e119 = k_2;
                         uint _e122 = doms_1.inner[_e119].pixel;
-                        local_30 = _e122 == pixel;
+                        local_33 = _e122 == pixel;
                     } else {
-                        local_30 = true;
+                        local_33 = true;
                     }
-                    bool _e125 = local_30;
+                    bool _e125 = local_33;
                     seen = _e125;
                 }
             }
             ReuseSurface s_5 = reuse_prev[pixel].surface;
             bool _e133 = seen;
             if (!(_e133)) {
-                local_31 = !((s_5.m > 0.0));
+                local_34 = !((s_5.m > 0.0));
             } else {
-                local_31 = true;
+                local_34 = true;
             }
-            bool _e142 = local_31;
+            bool _e142 = local_34;
             if (!(_e142)) {
                 bool _e150 = history_matches(n_11, s_5.n, x_13, metal::dot(s_5.n, s_5.x), d_6);
-                local_32 = !(_e150);
+                local_35 = !(_e150);
             } else {
-                local_32 = true;
+                local_35 = true;
             }
-            bool _e153 = local_32;
+            bool _e153 = local_35;
             if (_e153) {
                 continue;
             }
@@ -1560,13 +1561,14 @@ uint reuse_domains(
             metal::float3 _e160 = reuse.prev_eye;
             Material _e161 = reuse_material(s_5, _e160);
             float _e165 = reuse.max_confidence;
-            doms_1.inner[_e154] = Domain {pixel, {}, s_5.x, s_5.n, _e161, metal::min(s_5.m, _e165)};
-            uint _e168 = nd;
-            nd = _e168 + 1u;
+            uint _e167 = j_4;
+            doms_1.inner[_e154] = Domain {pixel, {}, s_5.x, s_5.n, _e161, metal::min(s_5.m, _e165), _e167 == 0u};
+            uint _e171 = nd;
+            nd = _e171 + 1u;
         }
     }
-    uint _e174 = nd;
-    return _e174;
+    uint _e177 = nd;
+    return _e177;
 }
 
 struct main_Input {
@@ -1609,9 +1611,11 @@ kernel void main_(
     uint b = {};
     uint q = {};
     type_19 doms = {};
-    float confidence = 1.0;
-    uint k = 0u;
+    bool local_2 = {};
     uint hs = {};
+    type_17 kept_light = {};
+    type_17 kept_cells = {};
+    type_23 kept_w = {};
     type_17 fin_light = {};
     type_17 fin_cells = {};
     type_23 fin_w = {};
@@ -1624,22 +1628,32 @@ kernel void main_(
     uint li = {};
     uint cells = {};
     float w_in = {};
-    bool local_2 = {};
+    bool local_3 = {};
     float own = {};
     float all = {};
-    uint k_1 = {};
-    bool local_3 = {};
+    bool local_4 = {};
+    float s_sum = {};
+    float s_target = {};
+    uint j_1 = {};
+    uint li_1 = {};
+    uint cells_1 = {};
+    float w_in_1 = {};
+    bool local_5 = {};
+    float own_1 = {};
+    float all_1 = {};
+    uint k = {};
+    bool local_6 = {};
     type_24 visible = {};
-    uint k_2 = 0u;
+    uint k_1 = 0u;
     float w = {};
     bool first = {};
-    uint j_1 = {};
-    bool local_4 = {};
-    bool local_5 = {};
-    bool local_6 = {};
     uint j_2 = {};
-    uint q_2 = 0u;
     bool local_7 = {};
+    bool local_8 = {};
+    bool local_9 = {};
+    uint j_3 = {};
+    uint q_2 = 0u;
+    bool local_10 = {};
     uint _e4 = view.width;
     if (!((gid.x >= _e4))) {
         uint _e12 = view.height;
@@ -1724,7 +1738,7 @@ kernel void main_(
             uint _e151 = count;
             count = _e151 + 1u;
             uint _e155 = b;
-            uint li_4 = bsh_nodes[_e155].light;
+            uint li_5 = bsh_nodes[_e155].light;
             uint _e159 = h;
             uint _e160 = pcg_hash(_e159);
             h = _e160;
@@ -1740,7 +1754,7 @@ kernel void main_(
             metal::float2 u_4 = metal::float2(_e166, _e168);
             metal::float3 _e170 = r;
             Material _e171 = m;
-            Shaded _e176 = shade_pick_traced(li_4, x_16, n_14, _e170, _e99, _e171, 1.0, u_4.x, u_4.y, eps_3, false, geo_nodes, geo_tris, lights, rt2_3, r2_3, light_cones, _buffer_sizes);
+            Shaded _e176 = shade_pick_traced(li_5, x_16, n_14, _e170, _e99, _e171, 1.0, u_4.x, u_4.y, eps_3, false, geo_nodes, geo_tris, lights, rt2_3, r2_3, light_cones, _buffer_sizes);
             metal::float3 _e177 = output_of(_e176);
             float _e178 = resample_target(_e177);
             if (_e178 > 0.0) {
@@ -1772,7 +1786,7 @@ kernel void main_(
                         bool _e193 = weighted_replace(_e178, _e190, _e192);
                         if (_e193) {
                             uint _e194 = q;
-                            slot_light.inner[_e194] = li_4;
+                            slot_light.inner[_e194] = li_5;
                             uint _e196 = q;
                             slot_u.inner[_e196] = u_4;
                             uint _e198 = q;
@@ -1790,42 +1804,30 @@ kernel void main_(
     metal::float3 _e223 = view.eye;
     uint _e227 = reuse_stream(_e122, 0u);
     uint _e228 = reuse_domains(x_16, n_14, metal::length(_e223 - x_16), _e227, doms, view, reuse, reuse_prev, _buffer_sizes);
+    if (_e228 > 0u) {
+        bool _e235 = doms.inner[0].temporal;
+        local_2 = _e235;
+    } else {
+        local_2 = false;
+    }
+    bool own_history = local_2;
+    uint first_1 = own_history ? 1u : 0u;
+    float _e243 = doms.inner[0].c;
+    float confidence = 1.0 + (own_history ? _e243 : 0.0);
+    uint _e249 = reuse_stream(_e122, 1u);
+    hs = _e249;
     uint2 loop_bound_7 = uint2(4294967295u);
     bool loop_init_5 = true;
     while(true) {
         if (metal::all(loop_bound_7 == uint2(0u))) { break; }
         loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
         if (!loop_init_5) {
-            uint _e242 = k;
-            k = _e242 + 1u;
+            uint _e531 = q_1;
+            q_1 = _e531 + 1u;
         }
         loop_init_5 = false;
-        uint _e233 = k;
-        if (_e233 < _e228) {
-        } else {
-            break;
-        }
-        {
-            float _e235 = confidence;
-            uint _e236 = k;
-            float _e239 = doms.inner[_e236].c;
-            confidence = _e235 + _e239;
-        }
-    }
-    uint _e245 = reuse_stream(_e122, 1u);
-    hs = _e245;
-    uint2 loop_bound_8 = uint2(4294967295u);
-    bool loop_init_6 = true;
-    while(true) {
-        if (metal::all(loop_bound_8 == uint2(0u))) { break; }
-        loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
-        if (!loop_init_6) {
-            uint _e397 = q_1;
-            q_1 = _e397 + 1u;
-        }
-        loop_init_6 = false;
-        uint _e252 = q_1;
-        if (_e252 < K) {
+        uint _e259 = q_1;
+        if (_e259 < K) {
         } else {
             break;
         }
@@ -1835,144 +1837,267 @@ kernel void main_(
             chosen_cells = 0u;
             chosen_target = 0.0;
             j = 0u;
-            uint2 loop_bound_9 = uint2(4294967295u);
-            bool loop_init_7 = true;
+            uint2 loop_bound_8 = uint2(4294967295u);
+            bool loop_init_6 = true;
             while(true) {
-                if (metal::all(loop_bound_9 == uint2(0u))) { break; }
-                loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
-                if (!loop_init_7) {
-                    uint _e383 = j;
-                    j = _e383 + 1u;
+                if (metal::all(loop_bound_8 == uint2(0u))) { break; }
+                loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
+                if (!loop_init_6) {
+                    uint _e374 = j;
+                    j = _e374 + 1u;
                 }
-                loop_init_7 = false;
-                uint _e265 = j;
-                if (_e265 <= _e228) {
+                loop_init_6 = false;
+                uint _e272 = j;
+                if (_e272 <= first_1) {
                 } else {
                     break;
                 }
                 {
-                    uint _e267 = q_1;
-                    uint _e269 = slot_light.inner[_e267];
-                    li = _e269;
-                    uint _e271 = q_1;
-                    uint _e273 = slot_cells.inner[_e271];
-                    cells = _e273;
-                    float _e275 = total;
-                    w_in = _e275;
-                    uint _e277 = j;
-                    if (_e277 > 0u) {
-                        uint _e281 = j;
-                        uint _e286 = doms.inner[_e281 - 1u].pixel;
-                        uint _e289 = q_1;
-                        ReuseSlot s_6 = reuse_prev[_e286].slots.inner[_e289];
+                    uint _e274 = q_1;
+                    uint _e276 = slot_light.inner[_e274];
+                    li = _e276;
+                    uint _e278 = q_1;
+                    uint _e280 = slot_cells.inner[_e278];
+                    cells = _e280;
+                    float _e282 = total;
+                    w_in = _e282;
+                    uint _e284 = j;
+                    if (_e284 > 0u) {
+                        uint _e290 = doms.inner[0].pixel;
+                        uint _e293 = q_1;
+                        ReuseSlot s_6 = reuse_prev[_e290].slots.inner[_e293];
                         li = s_6.light;
                         cells = s_6.u;
                         w_in = s_6.w;
                     }
-                    float _e295 = w_in;
-                    if (!(!((_e295 > 0.0)))) {
-                        uint _e302 = li;
-                        local_2 = _e302 >= (1 + (_buffer_sizes.size8 - 0 - 64) / 64);
+                    float _e299 = w_in;
+                    if (!(!((_e299 > 0.0)))) {
+                        uint _e306 = li;
+                        local_3 = _e306 >= (1 + (_buffer_sizes.size8 - 0 - 64) / 64);
                     } else {
-                        local_2 = true;
+                        local_3 = true;
                     }
-                    bool _e307 = local_2;
-                    if (_e307) {
+                    bool _e311 = local_3;
+                    if (_e311) {
                         continue;
                     }
-                    uint _e309 = li;
-                    GpuLight _e311 = lights[_e309];
-                    uint _e312 = cells;
-                    Material _e313 = m;
-                    float _e314 = reuse_target(_e311, _e312, x_16, n_14, _e313, geo_nodes, geo_tris, _buffer_sizes);
-                    if (!((_e314 > 0.0))) {
+                    uint _e313 = li;
+                    GpuLight _e315 = lights[_e313];
+                    uint _e316 = cells;
+                    Material _e317 = m;
+                    float _e318 = reuse_target(_e315, _e316, x_16, n_14, _e317, geo_nodes, geo_tris, _buffer_sizes);
+                    if (!((_e318 > 0.0))) {
                         continue;
                     }
-                    uint _e318 = j;
-                    if (_e318 == 0u) {
-                        float _e321 = total;
-                        w_in = _e321 / _e314;
+                    uint _e322 = j;
+                    if (_e322 == 0u) {
+                        float _e325 = total;
+                        w_in = _e325 / _e318;
                     }
-                    own = _e314;
-                    all = _e314;
-                    k_1 = 0u;
-                    uint2 loop_bound_10 = uint2(4294967295u);
-                    bool loop_init_8 = true;
-                    while(true) {
-                        if (metal::all(loop_bound_10 == uint2(0u))) { break; }
-                        loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
-                        if (!loop_init_8) {
-                            uint _e360 = k_1;
-                            k_1 = _e360 + 1u;
-                        }
-                        loop_init_8 = false;
-                        uint _e327 = k_1;
-                        if (_e327 < _e228) {
-                        } else {
-                            break;
-                        }
-                        {
-                            uint _e329 = k_1;
-                            float _e332 = doms.inner[_e329].c;
-                            uint _e334 = li;
-                            GpuLight _e336 = lights_prev[_e334];
-                            uint _e337 = cells;
-                            uint _e338 = k_1;
-                            metal::float3 _e341 = doms.inner[_e338].x;
-                            uint _e342 = k_1;
-                            metal::float3 _e345 = doms.inner[_e342].n;
-                            uint _e346 = k_1;
-                            Material _e349 = doms.inner[_e346].m;
-                            float _e350 = reuse_target(_e336, _e337, _e341, _e345, _e349, geo_nodes, geo_tris, _buffer_sizes);
-                            float t_6 = _e332 * _e350;
-                            float _e352 = all;
-                            all = _e352 + t_6;
-                            uint _e354 = k_1;
-                            uint _e357 = j;
-                            if ((_e354 + 1u) == _e357) {
-                                own = t_6;
-                            }
+                    own = _e318;
+                    all = _e318;
+                    if (own_history) {
+                        float _e331 = doms.inner[0].c;
+                        uint _e333 = li;
+                        GpuLight _e335 = lights_prev[_e333];
+                        uint _e336 = cells;
+                        metal::float3 _e339 = doms.inner[0].x;
+                        metal::float3 _e342 = doms.inner[0].n;
+                        Material _e345 = doms.inner[0].m;
+                        float _e346 = reuse_target(_e335, _e336, _e339, _e342, _e345, geo_nodes, geo_tris, _buffer_sizes);
+                        float t_6 = _e331 * _e346;
+                        float _e348 = all;
+                        all = _e348 + t_6;
+                        uint _e350 = j;
+                        if (_e350 == 1u) {
+                            own = t_6;
                         }
                     }
-                    float _e362 = own;
-                    float _e363 = all;
-                    float _e364 = w_in;
-                    float _e365 = gris_weight(_e362, _e363, _e314, _e364);
-                    float _e366 = w_sum;
-                    w_sum = _e366 + _e365;
-                    uint _e368 = hs;
-                    uint _e369 = pcg_hash(_e368);
-                    hs = _e369;
-                    if (_e365 > 0.0) {
-                        float _e374 = w_sum;
-                        uint _e375 = hs;
-                        float _e376 = xi_from_bits(_e375);
-                        bool _e377 = weighted_replace(_e365, _e374, _e376);
-                        local_3 = _e377;
+                    float _e353 = own;
+                    float _e354 = all;
+                    float _e355 = w_in;
+                    float _e356 = gris_weight(_e353, _e354, _e318, _e355);
+                    float _e357 = w_sum;
+                    w_sum = _e357 + _e356;
+                    uint _e359 = hs;
+                    uint _e360 = pcg_hash(_e359);
+                    hs = _e360;
+                    if (_e356 > 0.0) {
+                        float _e365 = w_sum;
+                        uint _e366 = hs;
+                        float _e367 = xi_from_bits(_e366);
+                        bool _e368 = weighted_replace(_e356, _e365, _e367);
+                        local_4 = _e368;
                     } else {
-                        local_3 = false;
+                        local_4 = false;
                     }
-                    bool _e379 = local_3;
-                    if (_e379) {
-                        uint _e380 = li;
-                        chosen = _e380;
-                        uint _e381 = cells;
-                        chosen_cells = _e381;
-                        chosen_target = _e314;
+                    bool _e370 = local_4;
+                    if (_e370) {
+                        uint _e371 = li;
+                        chosen = _e371;
+                        uint _e372 = cells;
+                        chosen_cells = _e372;
+                        chosen_target = _e318;
                     }
                 }
             }
-            uint _e385 = q_1;
-            uint _e387 = chosen;
-            fin_light.inner[_e385] = _e387;
-            uint _e388 = q_1;
-            uint _e390 = chosen_cells;
-            fin_cells.inner[_e388] = _e390;
-            uint _e391 = q_1;
-            float _e393 = w_sum;
-            float _e394 = chosen_target;
-            float _e395 = gris_contribution_weight(_e393, _e394);
-            fin_w.inner[_e391] = _e395;
+            uint _e376 = q_1;
+            uint _e378 = chosen;
+            kept_light.inner[_e376] = _e378;
+            uint _e379 = q_1;
+            uint _e381 = chosen_cells;
+            kept_cells.inner[_e379] = _e381;
+            uint _e382 = q_1;
+            float _e384 = w_sum;
+            float _e385 = chosen_target;
+            float _e386 = gris_contribution_weight(_e384, _e385);
+            kept_w.inner[_e382] = _e386;
+            uint _e387 = q_1;
+            uint _e389 = chosen;
+            fin_light.inner[_e387] = _e389;
+            uint _e390 = q_1;
+            uint _e392 = chosen_cells;
+            fin_cells.inner[_e390] = _e392;
+            uint _e393 = q_1;
+            uint _e395 = q_1;
+            float _e397 = kept_w.inner[_e395];
+            fin_w.inner[_e393] = _e397;
+            if (_e228 > first_1) {
+                s_sum = 0.0;
+                s_target = 0.0;
+                j_1 = first_1;
+                uint2 loop_bound_9 = uint2(4294967295u);
+                bool loop_init_7 = true;
+                while(true) {
+                    if (metal::all(loop_bound_9 == uint2(0u))) { break; }
+                    loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
+                    if (!loop_init_7) {
+                        uint _e523 = j_1;
+                        j_1 = _e523 + 1u;
+                    }
+                    loop_init_7 = false;
+                    uint _e404 = j_1;
+                    if (_e404 <= _e228) {
+                    } else {
+                        break;
+                    }
+                    {
+                        uint _e406 = q_1;
+                        uint _e408 = kept_light.inner[_e406];
+                        li_1 = _e408;
+                        uint _e410 = q_1;
+                        uint _e412 = kept_cells.inner[_e410];
+                        cells_1 = _e412;
+                        uint _e414 = q_1;
+                        float _e416 = kept_w.inner[_e414];
+                        w_in_1 = _e416;
+                        uint _e418 = j_1;
+                        if (_e418 > first_1) {
+                            uint _e421 = j_1;
+                            uint _e426 = doms.inner[_e421 - 1u].pixel;
+                            uint _e429 = q_1;
+                            ReuseSlot s_7 = reuse_prev[_e426].slots.inner[_e429];
+                            li_1 = s_7.light;
+                            cells_1 = s_7.u;
+                            w_in_1 = s_7.w;
+                        }
+                        float _e435 = w_in_1;
+                        if (!(!((_e435 > 0.0)))) {
+                            uint _e442 = li_1;
+                            local_5 = _e442 >= (1 + (_buffer_sizes.size8 - 0 - 64) / 64);
+                        } else {
+                            local_5 = true;
+                        }
+                        bool _e447 = local_5;
+                        if (_e447) {
+                            continue;
+                        }
+                        uint _e449 = li_1;
+                        GpuLight _e451 = lights[_e449];
+                        uint _e452 = cells_1;
+                        Material _e453 = m;
+                        float _e454 = reuse_target(_e451, _e452, x_16, n_14, _e453, geo_nodes, geo_tris, _buffer_sizes);
+                        if (!((_e454 > 0.0))) {
+                            continue;
+                        }
+                        own_1 = confidence * _e454;
+                        float _e460 = own_1;
+                        all_1 = _e460;
+                        k = first_1;
+                        uint2 loop_bound_10 = uint2(4294967295u);
+                        bool loop_init_8 = true;
+                        while(true) {
+                            if (metal::all(loop_bound_10 == uint2(0u))) { break; }
+                            loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
+                            if (!loop_init_8) {
+                                uint _e496 = k;
+                                k = _e496 + 1u;
+                            }
+                            loop_init_8 = false;
+                            uint _e463 = k;
+                            if (_e463 < _e228) {
+                            } else {
+                                break;
+                            }
+                            {
+                                uint _e465 = k;
+                                float _e468 = doms.inner[_e465].c;
+                                uint _e470 = li_1;
+                                GpuLight _e472 = lights_prev[_e470];
+                                uint _e473 = cells_1;
+                                uint _e474 = k;
+                                metal::float3 _e477 = doms.inner[_e474].x;
+                                uint _e478 = k;
+                                metal::float3 _e481 = doms.inner[_e478].n;
+                                uint _e482 = k;
+                                Material _e485 = doms.inner[_e482].m;
+                                float _e486 = reuse_target(_e472, _e473, _e477, _e481, _e485, geo_nodes, geo_tris, _buffer_sizes);
+                                float t_7 = _e468 * _e486;
+                                float _e488 = all_1;
+                                all_1 = _e488 + t_7;
+                                uint _e490 = k;
+                                uint _e493 = j_1;
+                                if ((_e490 + 1u) == _e493) {
+                                    own_1 = t_7;
+                                }
+                            }
+                        }
+                        float _e498 = own_1;
+                        float _e499 = all_1;
+                        float _e500 = w_in_1;
+                        float _e501 = gris_weight(_e498, _e499, _e454, _e500);
+                        float _e502 = s_sum;
+                        s_sum = _e502 + _e501;
+                        uint _e504 = hs;
+                        uint _e505 = pcg_hash(_e504);
+                        hs = _e505;
+                        if (_e501 > 0.0) {
+                            float _e510 = s_sum;
+                            uint _e511 = hs;
+                            float _e512 = xi_from_bits(_e511);
+                            bool _e513 = weighted_replace(_e501, _e510, _e512);
+                            local_6 = _e513;
+                        } else {
+                            local_6 = false;
+                        }
+                        bool _e515 = local_6;
+                        if (_e515) {
+                            uint _e516 = q_1;
+                            uint _e518 = li_1;
+                            fin_light.inner[_e516] = _e518;
+                            uint _e519 = q_1;
+                            uint _e521 = cells_1;
+                            fin_cells.inner[_e519] = _e521;
+                            s_target = _e454;
+                        }
+                    }
+                }
+                uint _e525 = q_1;
+                float _e527 = s_sum;
+                float _e528 = s_target;
+                float _e529 = gris_contribution_weight(_e527, _e528);
+                fin_w.inner[_e525] = _e529;
+            }
         }
     }
     uint2 loop_bound_11 = uint2(4294967295u);
@@ -1981,131 +2106,131 @@ kernel void main_(
         if (metal::all(loop_bound_11 == uint2(0u))) { break; }
         loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
         if (!loop_init_9) {
-            uint _e519 = k_2;
-            k_2 = _e519 + 1u;
+            uint _e653 = k_1;
+            k_1 = _e653 + 1u;
         }
         loop_init_9 = false;
-        uint _e402 = k_2;
-        if (_e402 < K) {
+        uint _e536 = k_1;
+        if (_e536 < K) {
         } else {
             break;
         }
         {
-            uint _e405 = k_2;
-            float _e407 = fin_w.inner[_e405];
-            w = _e407;
-            float _e409 = w;
-            first = _e409 > 0.0;
-            j_1 = 0u;
+            uint _e539 = k_1;
+            float _e541 = fin_w.inner[_e539];
+            w = _e541;
+            float _e543 = w;
+            first = _e543 > 0.0;
+            j_2 = 0u;
             uint2 loop_bound_12 = uint2(4294967295u);
             bool loop_init_10 = true;
             while(true) {
                 if (metal::all(loop_bound_12 == uint2(0u))) { break; }
                 loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
                 if (!loop_init_10) {
-                    uint _e461 = j_1;
-                    j_1 = _e461 + 1u;
+                    uint _e595 = j_2;
+                    j_2 = _e595 + 1u;
                 }
                 loop_init_10 = false;
-                uint _e415 = j_1;
-                if (_e415 < K) {
+                uint _e549 = j_2;
+                if (_e549 < K) {
                 } else {
                     break;
                 }
                 {
-                    uint _e418 = j_1;
-                    uint _e419 = k_2;
-                    if (_e418 != _e419) {
-                        uint _e423 = j_1;
-                        float _e425 = fin_w.inner[_e423];
-                        local_4 = _e425 > 0.0;
+                    uint _e552 = j_2;
+                    uint _e553 = k_1;
+                    if (_e552 != _e553) {
+                        uint _e557 = j_2;
+                        float _e559 = fin_w.inner[_e557];
+                        local_7 = _e559 > 0.0;
                     } else {
-                        local_4 = false;
+                        local_7 = false;
                     }
-                    bool _e429 = local_4;
-                    if (_e429) {
-                        uint _e432 = j_1;
-                        uint _e434 = fin_light.inner[_e432];
-                        uint _e435 = j_1;
-                        uint _e437 = fin_cells.inner[_e435];
-                        uint _e438 = k_2;
-                        uint _e440 = fin_light.inner[_e438];
-                        uint _e441 = k_2;
-                        uint _e443 = fin_cells.inner[_e441];
-                        bool _e444 = same_pick(_e434, _e437, _e440, _e443, lights, _buffer_sizes);
-                        local_5 = _e444;
+                    bool _e563 = local_7;
+                    if (_e563) {
+                        uint _e566 = j_2;
+                        uint _e568 = fin_light.inner[_e566];
+                        uint _e569 = j_2;
+                        uint _e571 = fin_cells.inner[_e569];
+                        uint _e572 = k_1;
+                        uint _e574 = fin_light.inner[_e572];
+                        uint _e575 = k_1;
+                        uint _e577 = fin_cells.inner[_e575];
+                        bool _e578 = same_pick(_e568, _e571, _e574, _e577, lights, _buffer_sizes);
+                        local_8 = _e578;
                     } else {
-                        local_5 = false;
+                        local_8 = false;
                     }
-                    bool _e446 = local_5;
-                    if (_e446) {
-                        bool _e447 = first;
-                        if (_e447) {
-                            uint _e450 = j_1;
-                            uint _e451 = k_2;
-                            local_6 = _e450 > _e451;
+                    bool _e580 = local_8;
+                    if (_e580) {
+                        bool _e581 = first;
+                        if (_e581) {
+                            uint _e584 = j_2;
+                            uint _e585 = k_1;
+                            local_9 = _e584 > _e585;
                         } else {
-                            local_6 = false;
+                            local_9 = false;
                         }
-                        bool _e454 = local_6;
-                        first = _e454;
-                        float _e455 = w;
-                        uint _e456 = j_1;
-                        float _e458 = fin_w.inner[_e456];
-                        w = _e455 + _e458;
+                        bool _e588 = local_9;
+                        first = _e588;
+                        float _e589 = w;
+                        uint _e590 = j_2;
+                        float _e592 = fin_w.inner[_e590];
+                        w = _e589 + _e592;
                     }
                 }
             }
-            bool _e463 = first;
-            if (_e463) {
-                uint _e465 = k_2;
-                uint _e467 = fin_light.inner[_e465];
-                GpuLight _e469 = lights[_e467];
-                float _e472 = w;
-                uint _e475 = k_2;
-                uint _e477 = fin_cells.inner[_e475];
-                float _e478 = grid_coordinate(_e477);
-                uint _e479 = k_2;
-                uint _e481 = fin_cells.inner[_e479];
-                float _e484 = grid_coordinate(_e481 << 16u);
-                Connection _e486 = connect_record(_e469, x_16, n_14, n_14, UNRANGED, UNRANGED, _e472 / 8.0, _e478, _e484, eps_3, true, geo_nodes, geo_tris, _buffer_sizes);
-                Material _e487 = m;
-                Shaded _e488 = shade_connection(_e486, x_16, n_14, _e487);
-                Shaded _e489 = t;
-                Shaded _e490 = add(_e489, _e488);
-                t = _e490;
-                uint _e491 = k_2;
-                j_2 = _e491;
+            bool _e597 = first;
+            if (_e597) {
+                uint _e599 = k_1;
+                uint _e601 = fin_light.inner[_e599];
+                GpuLight _e603 = lights[_e601];
+                float _e606 = w;
+                uint _e609 = k_1;
+                uint _e611 = fin_cells.inner[_e609];
+                float _e612 = grid_coordinate(_e611);
+                uint _e613 = k_1;
+                uint _e615 = fin_cells.inner[_e613];
+                float _e618 = grid_coordinate(_e615 << 16u);
+                Connection _e620 = connect_record(_e603, x_16, n_14, n_14, UNRANGED, UNRANGED, _e606 / 8.0, _e612, _e618, eps_3, true, geo_nodes, geo_tris, _buffer_sizes);
+                Material _e621 = m;
+                Shaded _e622 = shade_connection(_e620, x_16, n_14, _e621);
+                Shaded _e623 = t;
+                Shaded _e624 = add(_e623, _e622);
+                t = _e624;
+                uint _e625 = k_1;
+                j_3 = _e625;
                 uint2 loop_bound_13 = uint2(4294967295u);
                 bool loop_init_11 = true;
                 while(true) {
                     if (metal::all(loop_bound_13 == uint2(0u))) { break; }
                     loop_bound_13 -= uint2(loop_bound_13.y == 0u, 1u);
                     if (!loop_init_11) {
-                        uint _e516 = j_2;
-                        j_2 = _e516 + 1u;
+                        uint _e650 = j_3;
+                        j_3 = _e650 + 1u;
                     }
                     loop_init_11 = false;
-                    uint _e493 = j_2;
-                    if (_e493 < K) {
+                    uint _e627 = j_3;
+                    if (_e627 < K) {
                     } else {
                         break;
                     }
                     {
-                        uint _e496 = j_2;
-                        uint _e498 = fin_light.inner[_e496];
-                        uint _e499 = j_2;
-                        uint _e501 = fin_cells.inner[_e499];
-                        uint _e502 = k_2;
-                        uint _e504 = fin_light.inner[_e502];
-                        uint _e505 = k_2;
-                        uint _e507 = fin_cells.inner[_e505];
-                        bool _e508 = same_pick(_e498, _e501, _e504, _e507, lights, _buffer_sizes);
-                        if (_e508) {
-                            uint _e509 = j_2;
-                            metal::float3 _e511 = output_of(_e488);
-                            float _e512 = resample_target(_e511);
-                            visible.inner[_e509] = _e512 > 0.0;
+                        uint _e630 = j_3;
+                        uint _e632 = fin_light.inner[_e630];
+                        uint _e633 = j_3;
+                        uint _e635 = fin_cells.inner[_e633];
+                        uint _e636 = k_1;
+                        uint _e638 = fin_light.inner[_e636];
+                        uint _e639 = k_1;
+                        uint _e641 = fin_cells.inner[_e639];
+                        bool _e642 = same_pick(_e632, _e635, _e638, _e641, lights, _buffer_sizes);
+                        if (_e642) {
+                            uint _e643 = j_3;
+                            metal::float3 _e645 = output_of(_e622);
+                            float _e646 = resample_target(_e645);
+                            visible.inner[_e643] = _e646 > 0.0;
                         }
                     }
                 }
@@ -2118,43 +2243,42 @@ kernel void main_(
         if (metal::all(loop_bound_14 == uint2(0u))) { break; }
         loop_bound_14 -= uint2(loop_bound_14.y == 0u, 1u);
         if (!loop_init_12) {
-            uint _e557 = q_2;
-            q_2 = _e557 + 1u;
+            uint _e691 = q_2;
+            q_2 = _e691 + 1u;
         }
         loop_init_12 = false;
-        uint _e523 = q_2;
-        if (_e523 < K) {
+        uint _e657 = q_2;
+        if (_e657 < K) {
         } else {
             break;
         }
         {
-            uint _e528 = reuse.visibility;
-            if (!((_e528 == 0u))) {
-                uint _e534 = q_2;
-                bool _e536 = visible.inner[_e534];
-                local_7 = _e536;
+            uint _e662 = reuse.visibility;
+            if (!((_e662 == 0u))) {
+                uint _e668 = q_2;
+                bool _e670 = visible.inner[_e668];
+                local_10 = _e670;
             } else {
-                local_7 = true;
+                local_10 = true;
             }
-            bool keep = local_7;
-            uint _e542 = q_2;
-            uint _e544 = q_2;
-            uint _e546 = fin_light.inner[_e544];
-            uint _e547 = q_2;
-            uint _e549 = fin_cells.inner[_e547];
-            uint _e550 = q_2;
-            float _e552 = fin_w.inner[_e550];
-            reuse_next[pixel_1].slots.inner[_e542] = ReuseSlot {_e546, _e549, keep ? _e552 : 0.0};
+            bool keep = local_10;
+            uint _e676 = q_2;
+            uint _e678 = q_2;
+            uint _e680 = kept_light.inner[_e678];
+            uint _e681 = q_2;
+            uint _e683 = kept_cells.inner[_e681];
+            uint _e684 = q_2;
+            float _e686 = kept_w.inner[_e684];
+            reuse_next[pixel_1].slots.inner[_e676] = ReuseSlot {_e680, _e683, keep ? _e686 : 0.0};
         }
     }
-    Material _e562 = m;
-    float _e563 = confidence;
-    float _e566 = reuse.max_confidence;
-    ReuseSurface _e568 = reuse_surface(x_16, n_14, _e562, metal::min(_e563, _e566));
-    reuse_next[pixel_1].surface = _e568;
-    metal::float3 _e571 = t.diffuse;
-    metal::float3 _e573 = t.specular;
-    uint _e575 = count;
-    out_tex.write(metal::float4(_e571 + _e573, static_cast<float>(_e575)), metal::uint2(texel_1));
+    Material _e696 = m;
+    float _e699 = reuse.max_confidence;
+    ReuseSurface _e701 = reuse_surface(x_16, n_14, _e696, metal::min(confidence, _e699));
+    reuse_next[pixel_1].surface = _e701;
+    metal::float3 _e704 = t.diffuse;
+    metal::float3 _e706 = t.specular;
+    uint _e708 = count;
+    out_tex.write(metal::float4(_e704 + _e706, static_cast<float>(_e708)), metal::uint2(texel_1));
     return;
 }
