@@ -31,6 +31,7 @@ struct Input {
     glossy: bool,
     motion_vectors: bool,
     counters: bool,
+    reuse_domains: u8,
 }
 
 fuzz_target!(|i: Input| {
@@ -51,7 +52,8 @@ fuzz_target!(|i: Input| {
             Selection::Power,
             Selection::Weighted,
             Selection::LightBvh,
-        ][i.selection as usize % 6],
+            Selection::Resampled,
+        ][i.selection as usize % 7],
         vpl_source: if i.rsm { VplSource::Rsm } else { VplSource::Buffer },
         output_format: if i.rgba32 { OutputFormat::Rgba32Float } else { OutputFormat::Rgba16Float },
         shadows: i.shadows,
@@ -66,6 +68,8 @@ fuzz_target!(|i: Input| {
         glossy: i.glossy,
         motion_vectors: i.motion_vectors,
         counters: i.counters,
+        // 0..=9: no reuse, every allowed count of reused pixels, one too many.
+        reuse_domains: i.reuse_domains as u32 % 10,
     };
     match generate(kernel, &features) {
         Ok(wgsl) => assert!(wgsl.contains("fn "), "{kernel:?}: empty source"),
