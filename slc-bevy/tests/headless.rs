@@ -404,8 +404,12 @@ fn gaussian_quantile(tail: f64) -> f64 {
 
 /// RMSE of the luminance of `a` against `b`.
 fn rmse(a: &[[f32; 3]], b: &[[f32; 3]]) -> f64 {
-    (a.iter().zip(b).map(|(x, y)| (luminance(*x) - luminance(*y)).powi(2)).sum::<f64>()
-        / a.len() as f64)
+    rmse_of(a, b, luminance)
+}
+
+/// RMSE of `value` per pixel of `a` against `b`.
+fn rmse_of(a: &[[f32; 3]], b: &[[f32; 3]], value: fn([f32; 3]) -> f64) -> f64 {
+    (a.iter().zip(b).map(|(x, y)| (value(*x) - value(*y)).powi(2)).sum::<f64>() / a.len() as f64)
         .sqrt()
 }
 
@@ -499,10 +503,8 @@ fn run() -> Result<(), String> {
     // no per-block bound). The lights' colours are random: 8 picks among
     // the lights in range tint each pixel whatever they weigh, and that
     // chromatic noise dominates the luminance's error for all three.
-    let sum_rmse = |a: &[[f32; 3]], b: &[[f32; 3]]| {
-        let s = |p: &[f32; 3]| f64::from(p[0] + p[1] + p[2]);
-        (a.iter().zip(b).map(|(p, q)| (s(p) - s(q)).powi(2)).sum::<f64>() / a.len() as f64).sqrt()
-    };
+    let sum_rmse =
+        |a: &[[f32; 3]], b: &[[f32; 3]]| rmse_of(a, b, |p| f64::from(p[0] + p[1] + p[2]));
     let set = |app: &mut App, resample: bool, reuse: bool| {
         let mut c = app.world_mut().get_mut::<SlcCamera>(camera).expect("camera");
         (c.accumulate, c.resample, c.reuse) = (false, resample, reuse);

@@ -380,31 +380,25 @@ fn engine_program_matches_brute_force() {
     };
 
     // One frame, weighted against uniform picks at the same k and ε.
-    let rel_error = |img: &[[f32; 4]]| {
+    // Mean over the shaded pixels of `error(image, truth)` relative to
+    // the truth's r + g + b.
+    let mean_error = |img: &[[f32; 4]], error: fn(DVec3, DVec3) -> f64| {
         let (mut sum, mut n) = (0.0f64, 0usize);
         for (i, t) in truth[0].iter().enumerate() {
             if points[i].is_some() && t.max_element() > 0.0 {
                 let g = DVec3::new(img[i][0] as f64, img[i][1] as f64, img[i][2] as f64);
-                sum += (g - *t).abs().element_sum() / t.element_sum();
+                sum += error(g, *t) / t.element_sum();
                 n += 1;
             }
         }
         sum / n as f64
     };
+    let rel_error = |img: &[[f32; 4]]| mean_error(img, |g, t| (g - t).abs().element_sum());
     // The same for r + g + b: the error left when the picks' colours are
     // set aside (the lights have random colours; k picks among hundreds
     // tint a pixel however well they are chosen).
-    let sum_error = |img: &[[f32; 4]]| {
-        let (mut sum, mut n) = (0.0f64, 0usize);
-        for (i, t) in truth[0].iter().enumerate() {
-            if points[i].is_some() && t.max_element() > 0.0 {
-                let g = (img[i][0] + img[i][1] + img[i][2]) as f64;
-                sum += (g - t.element_sum()).abs() / t.element_sum();
-                n += 1;
-            }
-        }
-        sum / n as f64
-    };
+    let sum_error =
+        |img: &[[f32; 4]]| mean_error(img, |g, t| (g.element_sum() - t.element_sum()).abs());
     let mut weighted =
         DirectPass::new(&gpu, &set, &desc(DirectSelection::Weighted { k: 8 })).unwrap();
     let mut uniform =
