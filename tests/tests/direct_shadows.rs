@@ -362,7 +362,7 @@ fn stochastic_mean_matches_the_brute_force() {
 }
 
 /// Resampled picks reused across frames ([`DirectReuse`]), 8 shadowed
-/// picks, stochastic culling. Each configuration runs 48 times 8 frames,
+/// picks, stochastic culling. Each configuration runs 32 times 8 frames,
 /// each run its own seed with the history reset; the runs' last frames
 /// are independent, and their mean equals the shadowed brute force per
 /// 8×8 block (4.5 standard errors over the runs): without reuse, with
@@ -380,7 +380,7 @@ fn reused_picks_match_the_brute_force() {
     let occ = Occluders::new(&s.meshes, &inst).unwrap();
     let want = brute_force(&s, Some(&inst));
     let culling = Culling::Stochastic(RangeParams::new(0.01, 1.0).unwrap());
-    const RUNS: u32 = 48;
+    const RUNS: u32 = 32;
     const FRAMES: u32 = 8;
     // Every light moved by up to 2 cm, a new offset per frame.
     let moved = |frame: u32| -> Vec<Light> {
