@@ -31,6 +31,12 @@ use std::sync::Arc;
 const W: u32 = 16;
 const H: u32 = 16;
 
+/// Bounces of the parity tests' paths: every depth runs the same kernels,
+/// and on lavapipe each depth is two dispatches of about a millisecond per
+/// pass whatever the image size (the default, 8, made this file a quarter
+/// of CI's test time).
+const DEPTH: u32 = 5;
+
 /// The Cornell box with its ceiling light split into 4×4 quads (32
 /// triangle lights), plus a point, a spot and an IES light: every light
 /// type of the path tracer, with more lights in range than reservoir slots.
@@ -160,21 +166,23 @@ fn run(
     n: u32,
 ) -> Option<(Stats, Stats, Stats)> {
     let (s, lights) = scene(intensity, glossy);
-    run_on(&PtScene::new(&s, &lights).unwrap(), method, eps, n, (W, H))
+    run_on(&PtScene::new(&s, &lights).unwrap(), method, eps, n, (W, H), DEPTH)
 }
 
-/// [`run`] on a prepared scene at `size` pixels.
+/// [`run`] on a prepared scene at `size` pixels, paths of up to
+/// `max_depth` bounces.
 fn run_on(
     scene: &PtScene,
     method: PtMethod,
     eps: f32,
     n: u32,
     size: (u32, u32),
+    max_depth: u32,
 ) -> Option<(Stats, Stats, Stats)> {
     let g = gpu()?;
     let mut gpt = GpuPt::new(g, scene, size.0, size.1).unwrap();
     let mut pts = CpuPathTracer::new(scene);
-    let set = PtSettings { method, error_bound: eps, seed: 3, ..PtSettings::default() };
+    let set = PtSettings { method, error_bound: eps, seed: 3, max_depth, ..PtSettings::default() };
     let gp = passes(|acc| _ = gpt.render(acc, &set, 1).unwrap(), n, size);
     let cp = passes(|acc| pts.render(acc, &set, 1).unwrap(), n, size);
     let uniform = PtSettings { method: PtMethod::Uniform, seed: 77, ..set };
@@ -253,7 +261,7 @@ fn gpu_path_tracer_matches_cpu_on_the_scene_suite() {
         .unwrap();
         let name = file.file_stem().unwrap().to_string_lossy().into_owned();
         for method in PtMethod::ALL {
-            let Some((g, c, u)) = run_on(&scene, method, eps, 32, (6, 6)) else { return };
+            let Some((g, c, u)) = run_on(&scene, method, eps, 32, (6, 6), 3) else { return };
             let what = format!("{name} {}", method.name());
             assert_means_agree(&format!("{what}: GPU vs CPU"), &g, &c);
             assert_means_agree(&format!("{what}: GPU vs CPU uniform (unculled)"), &g, &u);
