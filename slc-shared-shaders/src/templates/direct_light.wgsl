@@ -245,6 +245,57 @@ fn reuse_domains(x: vec3f, n: vec3f, d: f32, h: u32, doms: ptr<function, array<D
     }
     return nd;
 }
+
+/// Slot `q`'s reservoir combined by generalized RIS (slc-core's
+/// `gris_weight`, balance heuristic) from a pick `cur` of this pixel
+/// (confidence `cur_c`; its weight `cur.w` the unbiased contribution
+/// weight, or with `cur_ris` the sum `P` of this frame's candidate targets,
+/// so `W = P / p̂(y)`) and slot `q` of the histories of domains
+/// `k0..k1` of `doms`. Each input's share is its domain's target over
+/// all of theirs: this pixel's whole unranged target here, the previous
+/// record's light at each domain's stored surface. One pick is kept with
+/// probability proportional to its weight (stream `hs`).
+fn gris_combine(q: u32, cur: ReuseSlot, cur_ris: bool, cur_c: f32, k0: u32, k1: u32, x: vec3f, n: vec3f, m: Material, doms: ptr<function, array<Domain, DOMAINS>>, hs: ptr<function, u32>) -> ReuseSlot {
+    var w_sum = 0.0;
+    var out = ReuseSlot(0u, 0u, 0.0);
+    var out_target = 0.0;
+    for (var j = k0; j <= k1; j++) {
+        // Input k0 is this pixel's pick, input j > k0 domain j − 1's history.
+        var s = cur;
+        if j > k0 {
+            s = reuse_prev[(*doms)[j - 1u].pixel].slots[q];
+        }
+        if !(s.w > 0.0) || s.light >= arrayLength(&lights) {
+            continue;
+        }
+        let here = reuse_target(lights[s.light], s.u, x, n, m);
+        if !(here > 0.0) {
+            continue;
+        }
+        var w_in = s.w;
+        if j == k0 && cur_ris {
+            w_in = s.w / here;
+        }
+        var own = cur_c * here;
+        var all = own;
+        for (var k = k0; k < k1; k++) {
+            let t = (*doms)[k].c * reuse_target(lights_prev[s.light], s.u, (*doms)[k].x, (*doms)[k].n, (*doms)[k].m);
+            all += t;
+            if k + 1u == j {
+                own = t;
+            }
+        }
+        let w = gris_weight(own, all, here, w_in);
+        w_sum += w;
+        *hs = pcg_hash(*hs);
+        if w > 0.0 && weighted_replace(w, w_sum, xi_from_bits(*hs)) {
+            out = s;
+            out_target = here;
+        }
+    }
+    out.w = gris_contribution_weight(w_sum, out_target);
+    return out;
+}
 {% endif %}
 
 @compute @workgroup_size({{ tile }}, {{ tile }})
@@ -381,103 +432,17 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     let first = select(0u, 1u, own_history);
     let confidence = 1.0 + select(0.0, doms[0].c, own_history);
     var hs = reuse_stream(seed, 1u);
-    var kept_light: array<u32, K>;
-    var kept_cells: array<u32, K>;
-    var kept_w: array<f32, K>;
-    var fin_light: array<u32, K>;
-    var fin_cells: array<u32, K>;
-    var fin_w: array<f32, K>;
+    var kept: array<ReuseSlot, K>;
+    var fin: array<ReuseSlot, K>;
     for (var q = 0u; q < K; q++) {
-        // This frame's pick and the pixel's own history.
-        var w_sum = 0.0;
-        var chosen = 0u;
-        var chosen_cells = 0u;
-        var chosen_target = 0.0;
-        for (var j = 0u; j <= first; j++) {
-            var li = slot_light[q];
-            var cells = slot_cells[q];
-            var w_in = total;
-            if j > 0u {
-                let s = reuse_prev[doms[0].pixel].slots[q];
-                li = s.light;
-                cells = s.u;
-                w_in = s.w;
-            }
-            if !(w_in > 0.0) || li >= arrayLength(&lights) {
-                continue;
-            }
-            let here = reuse_target(lights[li], cells, x, n, m);
-            if !(here > 0.0) {
-                continue;
-            }
-            if j == 0u {
-                w_in = total / here;
-            }
-            var own = here;
-            var all = here;
-            if own_history {
-                let t = doms[0].c * reuse_target(lights_prev[li], cells, doms[0].x, doms[0].n, doms[0].m);
-                all += t;
-                if j == 1u {
-                    own = t;
-                }
-            }
-            let w = gris_weight(own, all, here, w_in);
-            w_sum += w;
-            hs = pcg_hash(hs);
-            if w > 0.0 && weighted_replace(w, w_sum, xi_from_bits(hs)) {
-                chosen = li;
-                chosen_cells = cells;
-                chosen_target = here;
-            }
-        }
-        kept_light[q] = chosen;
-        kept_cells[q] = chosen_cells;
-        kept_w[q] = gris_contribution_weight(w_sum, chosen_target);
+        // This frame's pick (its weight the candidates' sum) and the
+        // pixel's own history.
+        kept[q] = gris_combine(q, ReuseSlot(slot_light[q], slot_cells[q], total), true, 1.0, 0u, first, x, n, m, &doms, &hs);
         // The neighbours' histories join it (confidence: the inputs each
         // stands for).
-        fin_light[q] = chosen;
-        fin_cells[q] = chosen_cells;
-        fin_w[q] = kept_w[q];
+        fin[q] = kept[q];
         if nd > first {
-            var s_sum = 0.0;
-            var s_target = 0.0;
-            for (var j = first; j <= nd; j++) {
-                var li = kept_light[q];
-                var cells = kept_cells[q];
-                var w_in = kept_w[q];
-                if j > first {
-                    let s = reuse_prev[doms[j - 1u].pixel].slots[q];
-                    li = s.light;
-                    cells = s.u;
-                    w_in = s.w;
-                }
-                if !(w_in > 0.0) || li >= arrayLength(&lights) {
-                    continue;
-                }
-                let here = reuse_target(lights[li], cells, x, n, m);
-                if !(here > 0.0) {
-                    continue;
-                }
-                var own = confidence * here;
-                var all = own;
-                for (var k = first; k < nd; k++) {
-                    let t = doms[k].c * reuse_target(lights_prev[li], cells, doms[k].x, doms[k].n, doms[k].m);
-                    all += t;
-                    if k + 1u == j {
-                        own = t;
-                    }
-                }
-                let w = gris_weight(own, all, here, w_in);
-                s_sum += w;
-                hs = pcg_hash(hs);
-                if w > 0.0 && weighted_replace(w, s_sum, xi_from_bits(hs)) {
-                    fin_light[q] = li;
-                    fin_cells[q] = cells;
-                    s_target = here;
-                }
-            }
-            fin_w[q] = gris_contribution_weight(s_sum, s_target);
+            fin[q] = gris_combine(q, kept[q], false, confidence, first, nd, x, n, m, &doms, &hs);
         }
     }
     // The K picks, shadowed, each weighted W / K; the slots holding the
@@ -486,20 +451,20 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     // frame.
     var visible: array<bool, K>;
     for (var k = 0u; k < K; k++) {
-        var w = fin_w[k];
+        var w = fin[k].w;
         var first = w > 0.0;
         for (var j = 0u; j < K; j++) {
-            if j != k && fin_w[j] > 0.0 && same_pick(fin_light[j], fin_cells[j], fin_light[k], fin_cells[k]) {
+            if j != k && fin[j].w > 0.0 && same_pick(fin[j].light, fin[j].u, fin[k].light, fin[k].u) {
                 first = first && j > k;
-                w += fin_w[j];
+                w += fin[j].w;
             }
         }
         if first {
-            let c = connect_record(lights[fin_light[k]], x, n, n, UNRANGED, UNRANGED, w / f32(K), grid_coordinate(fin_cells[k]), grid_coordinate(fin_cells[k] << 16u), eps, true);
+            let c = connect_record(lights[fin[k].light], x, n, n, UNRANGED, UNRANGED, w / f32(K), grid_coordinate(fin[k].u), grid_coordinate(fin[k].u << 16u), eps, true);
             let shaded = shade_connection(c, x, n, m);
             t = add(t, shaded);
             for (var j = k; j < K; j++) {
-                if same_pick(fin_light[j], fin_cells[j], fin_light[k], fin_cells[k]) {
+                if same_pick(fin[j].light, fin[j].u, fin[k].light, fin[k].u) {
                     visible[j] = resample_target(output_of(shaded)) > 0.0;
                 }
             }
@@ -509,7 +474,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
         // Visibility reuse comes without neighbours: the kept pick is the
         // shaded one.
         let keep = reuse.visibility == 0u || visible[q];
-        reuse_next[pixel].slots[q] = ReuseSlot(kept_light[q], kept_cells[q], select(0.0, kept_w[q], keep));
+        reuse_next[pixel].slots[q] = ReuseSlot(kept[q].light, kept[q].u, select(0.0, kept[q].w, keep));
     }
     reuse_next[pixel].surface = reuse_surface(x, n, m, min(confidence, reuse.max_confidence));
 {% else %}

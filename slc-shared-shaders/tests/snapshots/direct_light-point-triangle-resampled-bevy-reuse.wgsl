@@ -298,29 +298,29 @@ fn connection_factor(cos_x: f32, d2_3: f32, rt2_1: f32, w_1: f32) -> f32 {
 }
 
 fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, r2_1: f32) -> f32 {
-    var local_11: bool;
-    var local_12: bool;
+    var local_7: bool;
+    var local_8: bool;
 
     let v_6 = (x_2 - y);
     let d2_6 = dot(v_6, v_6);
     let _e7 = slc_keep(r2_1, d2_6);
     if !(!(_e7)) {
-        local_11 = !((d2_6 > 0f));
+        local_7 = !((d2_6 > 0f));
     } else {
-        local_11 = true;
+        local_7 = true;
     }
-    let _e16 = local_11;
+    let _e16 = local_7;
     if _e16 {
         return 0f;
     }
     let w_7 = (v_6 / vec3(sqrt(d2_6)));
     let cos_x_1 = -(dot(n, w_7));
     if !((cos_x_1 <= 0f)) {
-        local_12 = (dot(ng, w_7) >= 0f);
+        local_8 = (dot(ng, w_7) >= 0f);
     } else {
-        local_12 = true;
+        local_8 = true;
     }
-    let _e32 = local_12;
+    let _e32 = local_8;
     if _e32 {
         return 0f;
     }
@@ -356,8 +356,8 @@ fn bsh_range_bound(node_1: BshNode) -> f32 {
     return _e8;
 }
 
-fn weighted_replace(w_3: f32, w_sum_1: f32, u_2: f32) -> bool {
-    return ((u_2 * w_sum_1) < w_3);
+fn weighted_replace(w_3: f32, w_sum: f32, u_2: f32) -> bool {
+    return ((u_2 * w_sum) < w_3);
 }
 
 fn resample_target(c_2: vec3<f32>) -> f32 {
@@ -378,18 +378,18 @@ fn disk_offset(r_2: f32, u1_1: f32, u2_1: f32) -> vec2<f32> {
     return (vec2<f32>(cos(a_9), sin(a_9)) * (r_2 * sqrt(u1_1)));
 }
 
-fn gris_weight(own_2: f32, all_2: f32, p_hat: f32, w_4: f32) -> f32 {
-    if !((all_2 > 0f)) {
+fn gris_weight(own: f32, all_: f32, p_hat: f32, w_4: f32) -> f32 {
+    if !((all_ > 0f)) {
         return 0f;
     }
-    return (((own_2 / all_2) * p_hat) * w_4);
+    return (((own / all_) * p_hat) * w_4);
 }
 
-fn gris_contribution_weight(w_sum_2: f32, p_hat_1: f32) -> f32 {
+fn gris_contribution_weight(w_sum_1: f32, p_hat_1: f32) -> f32 {
     if !((p_hat_1 > 0f)) {
         return 0f;
     }
-    return (w_sum_2 / p_hat_1);
+    return (w_sum_1 / p_hat_1);
 }
 
 fn ggx_d(cos_h: f32, sin2_h: f32, alpha: f32) -> f32 {
@@ -407,14 +407,14 @@ fn smith_root(cos_: f32, alpha_1: f32) -> f32 {
 }
 
 fn smith_visibility(n_l: f32, n_v: f32, alpha_2: f32) -> f32 {
-    var local_13: bool;
+    var local_9: bool;
 
     if !((n_l <= 0f)) {
-        local_13 = (n_v <= 0f);
+        local_9 = (n_v <= 0f);
     } else {
-        local_13 = true;
+        local_9 = true;
     }
-    let _e11 = local_13;
+    let _e11 = local_9;
     if _e11 {
         return 0f;
     }
@@ -436,21 +436,21 @@ fn specular_fresnel(base: vec3<f32>, metallic: f32, f0_d: vec3<f32>, f90_d: f32,
 }
 
 fn has_specular(metallic_1: f32, f0_d_1: vec3<f32>, f90_d_1: f32) -> bool {
-    var local_14: bool;
-    var local_15: bool;
+    var local_10: bool;
+    var local_11: bool;
 
     if !((metallic_1 > 0f)) {
-        local_14 = (f90_d_1 > 0f);
+        local_10 = (f90_d_1 > 0f);
     } else {
-        local_14 = true;
+        local_10 = true;
     }
-    let _e11 = local_14;
+    let _e11 = local_10;
     if !(_e11) {
-        local_15 = (max(max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0f);
+        local_11 = (max(max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0f);
     } else {
-        local_15 = true;
+        local_11 = true;
     }
-    let _e23 = local_15;
+    let _e23 = local_11;
     return _e23;
 }
 
@@ -459,17 +459,17 @@ fn channel_mean(c_3: vec3<f32>) -> f32 {
 }
 
 fn receiver_lobe(base_1: vec3<f32>, metallic_2: f32, f0_d_2: vec3<f32>, f90_d_2: f32, alpha_3: f32, n_v_1: f32) -> vec4<f32> {
-    var local_16: bool;
+    var local_12: bool;
 
     let _e10 = fresnel_schlick(f0_d_2, f90_d_2, n_v_1);
     let _e16 = channel_mean((((vec3<f32>(1f, 1f, 1f) - _e10) * base_1) * (1f - metallic_2)));
     if !((n_v_1 <= 0f)) {
         let _e22 = has_specular(metallic_2, f0_d_2, f90_d_2);
-        local_16 = !(_e22);
+        local_12 = !(_e22);
     } else {
-        local_16 = true;
+        local_12 = true;
     }
-    let _e25 = local_16;
+    let _e25 = local_12;
     if _e25 {
         return vec4<f32>(_e16, 0f, alpha_3, n_v_1);
     }
@@ -521,9 +521,9 @@ fn bevy_f0_(reflectance: f32) -> f32 {
 fn bevy_dfg(r_3: f32, n_v_2: f32) -> f32 {
     let rx = (1f - r_3);
     let a004_ = ((min((rx * rx), exp2((-9.28f * n_v_2))) * rx) + (0.0425f - (0.0275f * r_3)));
-    let x_14 = max(((1.04f - (0.572f * r_3)) - (1.04f * a004_)), 0.00005f);
+    let x_15 = max(((1.04f - (0.572f * r_3)) - (1.04f * a004_)), 0.00005f);
     let y_1 = max((((0.022f * r_3) - 0.04f) + (1.04f * a004_)), 0.00005f);
-    return (x_14 + y_1);
+    return (x_15 + y_1);
 }
 
 fn bevy_brdf(base_2: vec3<f32>, metallic_3: f32, r_4: f32, reflectance_1: f32, n_3: vec3<f32>, v_1: vec3<f32>, l: vec3<f32>) -> vec3<f32> {
@@ -553,23 +553,23 @@ fn bevy_brdf(base_2: vec3<f32>, metallic_3: f32, r_4: f32, reflectance_1: f32, n
 }
 
 fn cone_cos_of(v_2: vec3<f32>, d2_4: f32, a_3: f32, d: vec3<f32>) -> f32 {
-    var local_17: bool;
-    var local_18: bool;
+    var local_13: bool;
+    var local_14: bool;
 
     let vd = dot(v_2, d);
     let h2_1 = (d2_4 - (a_3 * a_3));
     if !((h2_1 <= 0f)) {
         if (vd >= 0f) {
-            local_18 = ((vd * vd) >= h2_1);
+            local_14 = ((vd * vd) >= h2_1);
         } else {
-            local_18 = false;
+            local_14 = false;
         }
-        let _e19 = local_18;
-        local_17 = _e19;
+        let _e19 = local_14;
+        local_13 = _e19;
     } else {
-        local_17 = true;
+        local_13 = true;
     }
-    let _e21 = local_17;
+    let _e21 = local_13;
     if _e21 {
         return 1f;
     }
@@ -626,26 +626,26 @@ fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin: vec3<f32>, bmax: vec3<f32>, t_
 }
 
 fn triangle_normal(a_4: vec3<f32>, b_4: vec3<f32>, c_4: vec3<f32>) -> vec3<f32> {
-    var local_19: bool;
+    var local_15: bool;
 
-    let n_12 = cross((b_4 - a_4), (c_4 - a_4));
-    let l2_ = dot(n_12, n_12);
+    let n_13 = cross((b_4 - a_4), (c_4 - a_4));
+    let l2_ = dot(n_13, n_13);
     if !(!((l2_ > 0f))) {
-        local_19 = !((l2_ < 300000000000000000000000000000000000000f));
+        local_15 = !((l2_ < 300000000000000000000000000000000000000f));
     } else {
-        local_19 = true;
+        local_15 = true;
     }
-    let _e17 = local_19;
+    let _e17 = local_15;
     if _e17 {
         return vec3<f32>(0f, 0f, 0f);
     }
-    return (n_12 / vec3(sqrt(l2_)));
+    return (n_13 / vec3(sqrt(l2_)));
 }
 
 fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_5: vec3<f32>, c_5: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
-    var local_20: bool;
-    var local_21: bool;
-    var local_22: bool;
+    var local_16: bool;
+    var local_17: bool;
+    var local_18: bool;
 
     let e1_ = (b_5 - a_5);
     let e2_ = (c_5 - a_5);
@@ -655,35 +655,35 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_5: vec3<f32>, 
         return -1f;
     }
     let inv = (1f / det);
-    let s_4 = (o_1 - a_5);
-    let u_3 = (dot(s_4, p_5) * inv);
+    let s_5 = (o_1 - a_5);
+    let u_3 = (dot(s_5, p_5) * inv);
     if !((u_3 < 0f)) {
-        local_20 = (u_3 > 1f);
+        local_16 = (u_3 > 1f);
     } else {
-        local_20 = true;
+        local_16 = true;
     }
-    let _e28 = local_20;
+    let _e28 = local_16;
     if _e28 {
         return -1f;
     }
-    let q_3 = cross(s_4, e1_);
-    let v_8 = (dot(d_3, q_3) * inv);
+    let q_4 = cross(s_5, e1_);
+    let v_8 = (dot(d_3, q_4) * inv);
     if !((v_8 < 0f)) {
-        local_21 = ((u_3 + v_8) > 1f);
+        local_17 = ((u_3 + v_8) > 1f);
     } else {
-        local_21 = true;
+        local_17 = true;
     }
-    let _e42 = local_21;
+    let _e42 = local_17;
     if _e42 {
         return -1f;
     }
-    let t_3 = (dot(e2_, q_3) * inv);
+    let t_3 = (dot(e2_, q_4) * inv);
     if (t_3 > t_min) {
-        local_22 = (t_3 < t_max_1);
+        local_18 = (t_3 < t_max_1);
     } else {
-        local_22 = false;
+        local_18 = false;
     }
-    let _e51 = local_22;
+    let _e51 = local_18;
     if _e51 {
         return t_3;
     }
@@ -695,20 +695,20 @@ fn reproject(c0_: vec4<f32>, c1_: vec4<f32>, c2_: vec4<f32>, c3_: vec4<f32>, p_2
     if (clip.w <= 0f) {
         return vec3<f32>(-1f, -1f, 0f);
     }
-    let x_15 = (((((clip.x / clip.w) + 1f) * 0.5f) * width) - 0.5f);
+    let x_16 = (((((clip.x / clip.w) + 1f) * 0.5f) * width) - 0.5f);
     let y_2 = ((((1f - (clip.y / clip.w)) * 0.5f) * height) - 0.5f);
-    return vec3<f32>(x_15, y_2, clip.w);
+    return vec3<f32>(x_16, y_2, clip.w);
 }
 
 fn history_matches(n_4: vec3<f32>, nh: vec3<f32>, p_3: vec3<f32>, oh: f32, d_4: f32) -> bool {
-    var local_23: bool;
+    var local_19: bool;
 
     if (abs((dot(nh, p_3) - oh)) <= (TEMPORAL_DEPTH_TOLERANCE * d_4)) {
-        local_23 = (dot(n_4, nh) >= TEMPORAL_NORMAL_COS);
+        local_19 = (dot(n_4, nh) >= TEMPORAL_NORMAL_COS);
     } else {
-        local_23 = false;
+        local_19 = false;
     }
-    let _e17 = local_23;
+    let _e17 = local_19;
     return _e17;
 }
 
@@ -752,15 +752,15 @@ fn trace(o_2: vec3<f32>, d_5: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
     let _e14 = ray_inverse3_(d_5);
     loop {
         let _e21 = node_2;
-        let n_13 = geo_nodes[_e21];
+        let n_14 = geo_nodes[_e21];
         let _e27 = hit.t;
-        let _e28 = ray_aabb(o_2, _e14, n_13.bmin, n_13.bmax, _e27);
+        let _e28 = ray_aabb(o_2, _e14, n_14.bmin, n_14.bmax, _e27);
         if (_e28 >= 0f) {
-            if (n_13.count > 0u) {
-                i = n_13.first;
+            if (n_14.count > 0u) {
+                i = n_14.first;
                 loop {
                     let _e36 = i;
-                    if (_e36 < (n_13.first + n_13.count)) {
+                    if (_e36 < (n_14.first + n_14.count)) {
                     } else {
                         break;
                     }
@@ -788,11 +788,11 @@ fn trace(o_2: vec3<f32>, d_5: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
                 let _e60 = sp;
                 if (_e60 < 64u) {
                     let _e63 = sp;
-                    stack[_e63] = (n_13.first + 1u);
+                    stack[_e63] = (n_14.first + 1u);
                     let _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_2 = n_13.first;
+                node_2 = n_14.first;
                 continue;
             }
         }
@@ -845,8 +845,8 @@ fn bsh_inner_scale(a_7: f32, v_3: vec3<f32>, d2_5: f32, r_6: vec3<f32>, rl_2: ve
 }
 
 fn bsh_reaches(node_3: BshNode, x_4: vec3<f32>, r_7: vec3<f32>, rl_3: vec4<f32>) -> bool {
-    var local_24: bool;
-    var local_25: bool;
+    var local_20: bool;
+    var local_21: bool;
 
     let _e6 = sphere_contains_point(node_3.center, node_3.radius, x_4);
     if _e6 {
@@ -854,11 +854,11 @@ fn bsh_reaches(node_3: BshNode, x_4: vec3<f32>, r_7: vec3<f32>, rl_3: vec4<f32>)
     }
     if !((rl_3.w <= 1f)) {
         let _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001f)), x_4);
-        local_24 = !(_e20);
+        local_20 = !(_e20);
     } else {
-        local_24 = true;
+        local_20 = true;
     }
-    let _e23 = local_24;
+    let _e23 = local_20;
     if _e23 {
         return false;
     }
@@ -879,11 +879,11 @@ fn bsh_reaches(node_3: BshNode, x_4: vec3<f32>, r_7: vec3<f32>, rl_3: vec4<f32>)
     let s_c = (_e50 * 1.001f);
     let reach = (node_3.extent + (sqrt(s_c) * _e25));
     if (d2_7 <= ((node_3.radius * node_3.radius) * s_c)) {
-        local_25 = (d2_7 <= (reach * reach));
+        local_21 = (d2_7 <= (reach * reach));
     } else {
-        local_25 = false;
+        local_21 = false;
     }
-    let _e67 = local_25;
+    let _e67 = local_21;
     return _e67;
 }
 
@@ -917,8 +917,8 @@ fn bsh_next_leaf_lobe(nodes_3: u32, start: u32, x_5: vec3<f32>, r_8: vec3<f32>, 
 
 fn connect_record(l_3: GpuLight, x_6: vec3<f32>, n_5: vec3<f32>, ng_1: vec3<f32>, r2_2: f32, rt2_2: f32, w_res: f32, u1_3: f32, u2_3: f32, eps: f32, trace_1: bool) -> Connection {
     var c_6: Connection;
-    var local_26: bool;
-    var local_27: bool;
+    var local_22: bool;
+    var local_23: bool;
 
     c_6.e = vec3(0f);
     let _e16 = light_point(l_3, u1_3, u2_3);
@@ -931,16 +931,16 @@ fn connect_record(l_3: GpuLight, x_6: vec3<f32>, n_5: vec3<f32>, ng_1: vec3<f32>
         if trace_1 {
             let _e33 = c_6.y;
             let _e34 = occluded((x_6 + (ng_1 * eps)), _e33);
-            local_27 = _e34;
+            local_23 = _e34;
         } else {
-            local_27 = false;
+            local_23 = false;
         }
-        let _e36 = local_27;
-        local_26 = _e36;
+        let _e36 = local_23;
+        local_22 = _e36;
     } else {
-        local_26 = true;
+        local_22 = true;
     }
-    let _e38 = local_26;
+    let _e38 = local_22;
     if _e38 {
         let _e39 = c_6;
         return _e39;
@@ -956,16 +956,16 @@ fn connect_record(l_3: GpuLight, x_6: vec3<f32>, n_5: vec3<f32>, ng_1: vec3<f32>
     return _e53;
 }
 
-fn connect_traced(li_2: u32, x_7: vec3<f32>, n_6: vec3<f32>, ng_2: vec3<f32>, s: f32, w_res_1: f32, u1_4: f32, u2_4: f32, eps_1: f32, trace_2: bool) -> Connection {
-    let _e12 = lights[li_2];
-    let _e15 = r2_3[li_2];
-    let _e19 = rt2_3[li_2];
+fn connect_traced(li: u32, x_7: vec3<f32>, n_6: vec3<f32>, ng_2: vec3<f32>, s: f32, w_res_1: f32, u1_4: f32, u2_4: f32, eps_1: f32, trace_2: bool) -> Connection {
+    let _e12 = lights[li];
+    let _e15 = r2_3[li];
+    let _e19 = rt2_3[li];
     let _e21 = connect_record(_e12, x_7, n_6, ng_2, (s * _e15), (s * _e19), w_res_1, u1_4, u2_4, eps_1, trace_2);
     return _e21;
 }
 
-fn light_range_scale(li_3: u32, x_8: vec3<f32>, r_9: vec3<f32>, rl_5: vec4<f32>) -> f32 {
-    let c_11 = light_cones[li_3];
+fn light_range_scale(li_1: u32, x_8: vec3<f32>, r_9: vec3<f32>, rl_5: vec4<f32>) -> f32 {
+    let c_11 = light_cones[li_1];
     let _e9 = range_scale_toward(rl_5, c_11.center, c_11.radius, x_8, r_9);
     return _e9;
 }
@@ -989,9 +989,9 @@ fn shade_connection(c_7: Connection, x_9: vec3<f32>, n_7: vec3<f32>, m_1: Materi
     return _e28;
 }
 
-fn shade_pick_traced(li_4: u32, x_10: vec3<f32>, n_8: vec3<f32>, r_10: vec3<f32>, rl_6: vec4<f32>, m_2: Material, w_6: f32, u1_5: f32, u2_5: f32, eps_2: f32, trace_3: bool) -> Shaded {
-    let _e11 = light_range_scale(li_4, x_10, r_10, rl_6);
-    let _e12 = connect_traced(li_4, x_10, n_8, n_8, _e11, w_6, u1_5, u2_5, eps_2, trace_3);
+fn shade_pick_traced(li_2: u32, x_10: vec3<f32>, n_8: vec3<f32>, r_10: vec3<f32>, rl_6: vec4<f32>, m_2: Material, w_6: f32, u1_5: f32, u2_5: f32, eps_2: f32, trace_3: bool) -> Shaded {
+    let _e11 = light_range_scale(li_2, x_10, r_10, rl_6);
+    let _e12 = connect_traced(li_2, x_10, n_8, n_8, _e11, w_6, u1_5, u2_5, eps_2, trace_3);
     let _e13 = shade_connection(_e12, x_10, n_8, m_2);
     return _e13;
 }
@@ -1009,9 +1009,9 @@ fn output_of(s_2: Shaded) -> vec3<f32> {
     return (s_2.diffuse + s_2.specular);
 }
 
-fn reuse_target(l_4: GpuLight, cells_2: u32, x_11: vec3<f32>, n_9: vec3<f32>, m_3: Material) -> f32 {
-    let _e8 = grid_coordinate(cells_2);
-    let _e11 = grid_coordinate((cells_2 << 16u));
+fn reuse_target(l_4: GpuLight, cells: u32, x_11: vec3<f32>, n_9: vec3<f32>, m_3: Material) -> f32 {
+    let _e8 = grid_coordinate(cells);
+    let _e11 = grid_coordinate((cells << 16u));
     let _e14 = connect_record(l_4, x_11, n_9, n_9, UNRANGED, UNRANGED, 1f, _e8, _e11, 0f, false);
     let _e15 = shade_connection(_e14, x_11, n_9, m_3);
     let _e16 = output_of(_e15);
@@ -1031,38 +1031,38 @@ fn reuse_material(s_3: ReuseSurface, eye: vec3<f32>) -> Material {
 }
 
 fn same_pick(la: u32, ca: u32, lb: u32, cb: u32) -> bool {
-    var local_28: bool;
-    var local_29: bool;
+    var local_24: bool;
+    var local_25: bool;
 
     if (la == lb) {
         if !((ca == cb)) {
             let _e14 = lights[la].kind;
-            local_29 = (_e14 != LIGHT_TRIANGLE);
+            local_25 = (_e14 != LIGHT_TRIANGLE);
         } else {
-            local_29 = true;
+            local_25 = true;
         }
-        let _e18 = local_29;
-        local_28 = _e18;
+        let _e18 = local_25;
+        local_24 = _e18;
     } else {
-        local_28 = false;
+        local_24 = false;
     }
-    let _e20 = local_28;
+    let _e20 = local_24;
     return _e20;
 }
 
 fn reuse_domains(x_13: vec3<f32>, n_11: vec3<f32>, d_6: f32, h_1: u32, doms_1: ptr<function, array<Domain, 3>>) -> u32 {
     var nd: u32 = 0u;
     var hr: u32;
-    var j_4: u32 = 0u;
+    var j_2: u32 = 0u;
     var p_4: vec2<f32>;
+    var local_26: bool;
+    var local_27: bool;
+    var local_28: bool;
+    var seen: bool;
+    var k_1: u32;
+    var local_29: bool;
     var local_30: bool;
     var local_31: bool;
-    var local_32: bool;
-    var seen: bool;
-    var k_2: u32;
-    var local_33: bool;
-    var local_34: bool;
-    var local_35: bool;
 
     let _e9 = reuse.has_history;
     if (_e9 != 1u) {
@@ -1080,14 +1080,14 @@ fn reuse_domains(x_13: vec3<f32>, n_11: vec3<f32>, d_6: f32, h_1: u32, doms_1: p
     }
     hr = h_1;
     loop {
-        let _e41 = j_4;
+        let _e41 = j_2;
         if (_e41 < DOMAINS) {
         } else {
             break;
         }
         {
             p_4 = _e33.xy;
-            let _e46 = j_4;
+            let _e46 = j_2;
             if (_e46 > 0u) {
                 let _e49 = hr;
                 let _e50 = pcg_hash(_e49);
@@ -1107,34 +1107,34 @@ fn reuse_domains(x_13: vec3<f32>, n_11: vec3<f32>, d_6: f32, h_1: u32, doms_1: p
             let _e63 = p_4;
             let t_5 = vec2<i32>(round(_e63));
             if !((t_5.x < 0i)) {
-                local_30 = (t_5.y < 0i);
+                local_26 = (t_5.y < 0i);
             } else {
-                local_30 = true;
+                local_26 = true;
             }
-            let _e76 = local_30;
+            let _e76 = local_26;
             if !(_e76) {
                 let _e83 = view.width;
-                local_31 = (t_5.x >= i32(_e83));
+                local_27 = (t_5.x >= i32(_e83));
             } else {
-                local_31 = true;
+                local_27 = true;
             }
-            let _e87 = local_31;
+            let _e87 = local_27;
             if !(_e87) {
                 let _e94 = view.height;
-                local_32 = (t_5.y >= i32(_e94));
+                local_28 = (t_5.y >= i32(_e94));
             } else {
-                local_32 = true;
+                local_28 = true;
             }
-            let _e98 = local_32;
+            let _e98 = local_28;
             if _e98 {
                 continue;
             }
             let _e103 = view.width;
             let pixel = ((u32(t_5.y) * _e103) + u32(t_5.x));
             seen = false;
-            k_2 = 0u;
+            k_1 = 0u;
             loop {
-                let _e112 = k_2;
+                let _e112 = k_1;
                 let _e113 = nd;
                 if (_e112 < _e113) {
                 } else {
@@ -1143,54 +1143,190 @@ fn reuse_domains(x_13: vec3<f32>, n_11: vec3<f32>, d_6: f32, h_1: u32, doms_1: p
                 {
                     let _e115 = seen;
                     if !(_e115) {
-                        let _e119 = k_2;
+                        let _e119 = k_1;
                         let _e122 = (*doms_1)[_e119].pixel;
-                        local_33 = (_e122 == pixel);
+                        local_29 = (_e122 == pixel);
                     } else {
-                        local_33 = true;
+                        local_29 = true;
                     }
-                    let _e125 = local_33;
+                    let _e125 = local_29;
                     seen = _e125;
                 }
                 continuing {
-                    let _e127 = k_2;
-                    k_2 = (_e127 + 1u);
+                    let _e127 = k_1;
+                    k_1 = (_e127 + 1u);
                 }
             }
-            let s_5 = reuse_prev[pixel].surface;
+            let s_6 = reuse_prev[pixel].surface;
             let _e133 = seen;
             if !(_e133) {
-                local_34 = !((s_5.m > 0f));
+                local_30 = !((s_6.m > 0f));
             } else {
-                local_34 = true;
+                local_30 = true;
             }
-            let _e142 = local_34;
+            let _e142 = local_30;
             if !(_e142) {
-                let _e150 = history_matches(n_11, s_5.n, x_13, dot(s_5.n, s_5.x), d_6);
-                local_35 = !(_e150);
+                let _e150 = history_matches(n_11, s_6.n, x_13, dot(s_6.n, s_6.x), d_6);
+                local_31 = !(_e150);
             } else {
-                local_35 = true;
+                local_31 = true;
             }
-            let _e153 = local_35;
+            let _e153 = local_31;
             if _e153 {
                 continue;
             }
             let _e154 = nd;
             let _e160 = reuse.prev_eye;
-            let _e161 = reuse_material(s_5, _e160);
+            let _e161 = reuse_material(s_6, _e160);
             let _e165 = reuse.max_confidence;
-            let _e167 = j_4;
-            (*doms_1)[_e154] = Domain(pixel, s_5.x, s_5.n, _e161, min(s_5.m, _e165), (_e167 == 0u));
+            let _e167 = j_2;
+            (*doms_1)[_e154] = Domain(pixel, s_6.x, s_6.n, _e161, min(s_6.m, _e165), (_e167 == 0u));
             let _e171 = nd;
             nd = (_e171 + 1u);
         }
         continuing {
-            let _e175 = j_4;
-            j_4 = (_e175 + 1u);
+            let _e175 = j_2;
+            j_2 = (_e175 + 1u);
         }
     }
     let _e177 = nd;
     return _e177;
+}
+
+fn gris_combine(q_3: u32, cur: ReuseSlot, cur_ris: bool, cur_c: f32, k0_: u32, k1_: u32, x_14: vec3<f32>, n_12: vec3<f32>, m_5: Material, doms_2: ptr<function, array<Domain, 3>>, hs_1: ptr<function, u32>) -> ReuseSlot {
+    var w_sum_2: f32 = 0f;
+    var out: ReuseSlot = ReuseSlot(0u, 0u, 0f);
+    var out_target: f32 = 0f;
+    var j_3: u32;
+    var s_4: ReuseSlot;
+    var local_32: bool;
+    var w_in: f32;
+    var local_33: bool;
+    var own_1: f32;
+    var all_1: f32;
+    var k_2: u32;
+    var local_34: bool;
+
+    j_3 = k0_;
+    loop {
+        let _e21 = j_3;
+        if (_e21 <= k1_) {
+        } else {
+            break;
+        }
+        {
+            s_4 = cur;
+            let _e24 = j_3;
+            if (_e24 > k0_) {
+                let _e27 = j_3;
+                let _e32 = (*doms_2)[(_e27 - 1u)].pixel;
+                let _e36 = reuse_prev[_e32].slots[q_3];
+                s_4 = _e36;
+            }
+            let _e38 = s_4.w;
+            if !(!((_e38 > 0f))) {
+                let _e46 = s_4.light;
+                local_32 = (_e46 >= arrayLength((&lights)));
+            } else {
+                local_32 = true;
+            }
+            let _e51 = local_32;
+            if _e51 {
+                continue;
+            }
+            let _e54 = s_4.light;
+            let _e56 = lights[_e54];
+            let _e58 = s_4.u;
+            let _e59 = reuse_target(_e56, _e58, x_14, n_12, m_5);
+            if !((_e59 > 0f)) {
+                continue;
+            }
+            let _e64 = s_4.w;
+            w_in = _e64;
+            let _e66 = j_3;
+            if (_e66 == k0_) {
+                local_33 = cur_ris;
+            } else {
+                local_33 = false;
+            }
+            let _e71 = local_33;
+            if _e71 {
+                let _e73 = s_4.w;
+                w_in = (_e73 / _e59);
+            }
+            own_1 = (cur_c * _e59);
+            let _e77 = own_1;
+            all_1 = _e77;
+            k_2 = k0_;
+            loop {
+                let _e80 = k_2;
+                if (_e80 < k1_) {
+                } else {
+                    break;
+                }
+                {
+                    let _e82 = k_2;
+                    let _e85 = (*doms_2)[_e82].c;
+                    let _e88 = s_4.light;
+                    let _e90 = lights_prev[_e88];
+                    let _e92 = s_4.u;
+                    let _e93 = k_2;
+                    let _e96 = (*doms_2)[_e93].x;
+                    let _e97 = k_2;
+                    let _e100 = (*doms_2)[_e97].n;
+                    let _e101 = k_2;
+                    let _e104 = (*doms_2)[_e101].m;
+                    let _e105 = reuse_target(_e90, _e92, _e96, _e100, _e104);
+                    let t_6 = (_e85 * _e105);
+                    let _e107 = all_1;
+                    all_1 = (_e107 + t_6);
+                    let _e109 = k_2;
+                    let _e112 = j_3;
+                    if ((_e109 + 1u) == _e112) {
+                        own_1 = t_6;
+                    }
+                }
+                continuing {
+                    let _e115 = k_2;
+                    k_2 = (_e115 + 1u);
+                }
+            }
+            let _e117 = own_1;
+            let _e118 = all_1;
+            let _e119 = w_in;
+            let _e120 = gris_weight(_e117, _e118, _e59, _e119);
+            let _e121 = w_sum_2;
+            w_sum_2 = (_e121 + _e120);
+            let _e123 = (*hs_1);
+            let _e124 = pcg_hash(_e123);
+            (*hs_1) = _e124;
+            if (_e120 > 0f) {
+                let _e129 = w_sum_2;
+                let _e130 = (*hs_1);
+                let _e131 = xi_from_bits(_e130);
+                let _e132 = weighted_replace(_e120, _e129, _e131);
+                local_34 = _e132;
+            } else {
+                local_34 = false;
+            }
+            let _e134 = local_34;
+            if _e134 {
+                let _e135 = s_4;
+                out = _e135;
+                out_target = _e59;
+            }
+        }
+        continuing {
+            let _e137 = j_3;
+            j_3 = (_e137 + 1u);
+        }
+    }
+    let _e140 = w_sum_2;
+    let _e141 = out_target;
+    let _e142 = gris_contribution_weight(_e140, _e141);
+    out.w = _e142;
+    let _e143 = out;
+    return _e143;
 }
 
 @compute @workgroup_size(8, 8, 1) 
@@ -1214,47 +1350,20 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     var doms: array<Domain, 3>;
     var local_2: bool;
     var hs: u32;
-    var kept_light: array<u32, 8>;
-    var kept_cells: array<u32, 8>;
-    var kept_w: array<f32, 8>;
-    var fin_light: array<u32, 8>;
-    var fin_cells: array<u32, 8>;
-    var fin_w: array<f32, 8>;
+    var kept: array<ReuseSlot, 8>;
+    var fin: array<ReuseSlot, 8>;
     var q_1: u32 = 0u;
-    var w_sum: f32;
-    var chosen: u32;
-    var chosen_cells: u32;
-    var chosen_target: f32;
-    var j: u32;
-    var li: u32;
-    var cells: u32;
-    var w_in: f32;
-    var local_3: bool;
-    var own: f32;
-    var all_: f32;
-    var local_4: bool;
-    var s_sum: f32;
-    var s_target: f32;
-    var j_1: u32;
-    var li_1: u32;
-    var cells_1: u32;
-    var w_in_1: f32;
-    var local_5: bool;
-    var own_1: f32;
-    var all_1: f32;
-    var k: u32;
-    var local_6: bool;
     var visible: array<bool, 8>;
-    var k_1: u32 = 0u;
+    var k: u32 = 0u;
     var w: f32;
     var first: bool;
-    var j_2: u32;
-    var local_7: bool;
-    var local_8: bool;
-    var local_9: bool;
-    var j_3: u32;
+    var j: u32;
+    var local_3: bool;
+    var local_4: bool;
+    var local_5: bool;
+    var j_1: u32;
     var q_2: u32 = 0u;
-    var local_10: bool;
+    var local_6: bool;
 
     let _e4 = view.width;
     if !((gid.x >= _e4)) {
@@ -1284,29 +1393,29 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         reuse_next[((gid.y * _e45) + gid.x)].surface.m = 0f;
         return;
     }
-    let x_16 = _e21.xyz;
-    let n_14 = (nn / vec3(sqrt(len2_)));
-    r = n_14;
+    let x_17 = _e21.xyz;
+    let n_15 = (nn / vec3(sqrt(len2_)));
+    r = n_15;
     let mr = textureLoad(metal_rough_tex, texel_1, 0i);
     let _e70 = textureLoad(base_color_tex, texel_1, 0i);
     let _e77 = view.eye;
-    let _e80 = material_of(_e70.xyz, mr.z, mr.y, mr.w, normalize((_e77 - x_16)));
+    let _e80 = material_of(_e70.xyz, mr.z, mr.y, mr.w, normalize((_e77 - x_17)));
     m = _e80;
     let _e82 = m.base;
     let _e84 = m.metallic;
     let _e86 = bevy_f0_(mr.w);
     let _e90 = m.alpha;
     let _e92 = m.v;
-    let _e94 = receiver_lobe(_e82, _e84, vec3(_e86), 1f, _e90, dot(n_14, _e92));
+    let _e94 = receiver_lobe(_e82, _e84, vec3(_e86), 1f, _e90, dot(n_15, _e92));
     lobe = _e94;
     let _e96 = m.v;
-    let _e97 = mirror_dir(n_14, _e96);
+    let _e97 = mirror_dir(n_15, _e96);
     r = _e97;
     let _e98 = lobe;
     let _e99 = range_lobe(_e98);
     let _e102 = view.shadow_offset;
     let _e105 = view.eye;
-    let eps_3 = (_e102 * length((_e105 - x_16)));
+    let eps_3 = (_e102 * length((_e105 - x_17)));
     let _e111 = view.seed;
     let _e115 = view.width;
     let _e121 = view.frame;
@@ -1316,7 +1425,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     hc = _e122;
     let _e144 = bsh_first(BSH);
     let _e145 = r;
-    let _e146 = bsh_next_leaf_lobe(BSH, _e144, x_16, _e145, _e99);
+    let _e146 = bsh_next_leaf_lobe(BSH, _e144, x_17, _e145, _e99);
     b = _e146;
     loop {
         let _e148 = b;
@@ -1328,7 +1437,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
             let _e151 = count;
             count = (_e151 + 1u);
             let _e155 = b;
-            let li_5 = bsh_nodes[_e155].light;
+            let li_3 = bsh_nodes[_e155].light;
             let _e159 = h;
             let _e160 = pcg_hash(_e159);
             h = _e160;
@@ -1344,7 +1453,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
             let u_4 = vec2<f32>(_e166, _e168);
             let _e170 = r;
             let _e171 = m;
-            let _e176 = shade_pick_traced(li_5, x_16, n_14, _e170, _e99, _e171, 1f, u_4.x, u_4.y, eps_3, false);
+            let _e176 = shade_pick_traced(li_3, x_17, n_15, _e170, _e99, _e171, 1f, u_4.x, u_4.y, eps_3, false);
             let _e177 = output_of(_e176);
             let _e178 = resample_target(_e177);
             if (_e178 > 0f) {
@@ -1367,7 +1476,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
                         let _e193 = weighted_replace(_e178, _e190, _e192);
                         if _e193 {
                             let _e194 = q;
-                            slot_light[_e194] = li_5;
+                            slot_light[_e194] = li_3;
                             let _e196 = q;
                             slot_u[_e196] = u_4;
                             let _e198 = q;
@@ -1387,7 +1496,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
             let _e207 = b;
             let _e210 = bsh_nodes[_e207].next;
             let _e211 = r;
-            let _e212 = bsh_next_leaf_lobe(BSH, _e210, x_16, _e211, _e99);
+            let _e212 = bsh_next_leaf_lobe(BSH, _e210, x_17, _e211, _e99);
             b = _e212;
         }
     }
@@ -1395,7 +1504,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     let pixel_1 = ((gid.y * _e216) + gid.x);
     let _e223 = view.eye;
     let _e227 = reuse_stream(_e122, 0u);
-    let _e228 = reuse_domains(x_16, n_14, length((_e223 - x_16)), _e227, (&doms));
+    let _e228 = reuse_domains(x_17, n_15, length((_e223 - x_17)), _e227, (&doms));
     if (_e228 > 0u) {
         let _e235 = doms[0].temporal;
         local_2 = _e235;
@@ -1409,428 +1518,200 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     let _e249 = reuse_stream(_e122, 1u);
     hs = _e249;
     loop {
-        let _e259 = q_1;
-        if (_e259 < K) {
+        let _e255 = q_1;
+        if (_e255 < K) {
         } else {
             break;
         }
         {
-            w_sum = 0f;
-            chosen = 0u;
-            chosen_cells = 0u;
-            chosen_target = 0f;
+            let _e258 = q_1;
+            let _e260 = q_1;
+            let _e261 = q_1;
+            let _e263 = slot_light[_e261];
+            let _e264 = q_1;
+            let _e266 = slot_cells[_e264];
+            let _e267 = total;
+            let _e272 = m;
+            let _e273 = gris_combine(_e260, ReuseSlot(_e263, _e266, _e267), true, 1f, 0u, first_1, x_17, n_15, _e272, (&doms), (&hs));
+            kept[_e258] = _e273;
+            let _e274 = q_1;
+            let _e276 = q_1;
+            let _e278 = kept[_e276];
+            fin[_e274] = _e278;
+            if (_e228 > first_1) {
+                let _e280 = q_1;
+                let _e282 = q_1;
+                let _e283 = q_1;
+                let _e285 = kept[_e283];
+                let _e287 = m;
+                let _e288 = gris_combine(_e282, _e285, false, confidence, first_1, _e228, x_17, n_15, _e287, (&doms), (&hs));
+                fin[_e280] = _e288;
+            }
+        }
+        continuing {
+            let _e290 = q_1;
+            q_1 = (_e290 + 1u);
+        }
+    }
+    loop {
+        let _e295 = k;
+        if (_e295 < K) {
+        } else {
+            break;
+        }
+        {
+            let _e298 = k;
+            let _e301 = fin[_e298].w;
+            w = _e301;
+            let _e303 = w;
+            first = (_e303 > 0f);
             j = 0u;
             loop {
-                let _e272 = j;
-                if (_e272 <= first_1) {
+                let _e309 = j;
+                if (_e309 < K) {
                 } else {
                     break;
                 }
                 {
-                    let _e274 = q_1;
-                    let _e276 = slot_light[_e274];
-                    li = _e276;
-                    let _e278 = q_1;
-                    let _e280 = slot_cells[_e278];
-                    cells = _e280;
-                    let _e282 = total;
-                    w_in = _e282;
-                    let _e284 = j;
-                    if (_e284 > 0u) {
-                        let _e290 = doms[0].pixel;
-                        let _e293 = q_1;
-                        let s_6 = reuse_prev[_e290].slots[_e293];
-                        li = s_6.light;
-                        cells = s_6.u;
-                        w_in = s_6.w;
-                    }
-                    let _e299 = w_in;
-                    if !(!((_e299 > 0f))) {
-                        let _e306 = li;
-                        local_3 = (_e306 >= arrayLength((&lights)));
+                    let _e312 = j;
+                    let _e313 = k;
+                    if (_e312 != _e313) {
+                        let _e317 = j;
+                        let _e320 = fin[_e317].w;
+                        local_3 = (_e320 > 0f);
                     } else {
-                        local_3 = true;
+                        local_3 = false;
                     }
-                    let _e311 = local_3;
-                    if _e311 {
-                        continue;
-                    }
-                    let _e313 = li;
-                    let _e315 = lights[_e313];
-                    let _e316 = cells;
-                    let _e317 = m;
-                    let _e318 = reuse_target(_e315, _e316, x_16, n_14, _e317);
-                    if !((_e318 > 0f)) {
-                        continue;
-                    }
-                    let _e322 = j;
-                    if (_e322 == 0u) {
-                        let _e325 = total;
-                        w_in = (_e325 / _e318);
-                    }
-                    own = _e318;
-                    all_ = _e318;
-                    if own_history {
-                        let _e331 = doms[0].c;
-                        let _e333 = li;
-                        let _e335 = lights_prev[_e333];
-                        let _e336 = cells;
-                        let _e339 = doms[0].x;
-                        let _e342 = doms[0].n;
-                        let _e345 = doms[0].m;
-                        let _e346 = reuse_target(_e335, _e336, _e339, _e342, _e345);
-                        let t_6 = (_e331 * _e346);
-                        let _e348 = all_;
-                        all_ = (_e348 + t_6);
-                        let _e350 = j;
-                        if (_e350 == 1u) {
-                            own = t_6;
-                        }
-                    }
-                    let _e353 = own;
-                    let _e354 = all_;
-                    let _e355 = w_in;
-                    let _e356 = gris_weight(_e353, _e354, _e318, _e355);
-                    let _e357 = w_sum;
-                    w_sum = (_e357 + _e356);
-                    let _e359 = hs;
-                    let _e360 = pcg_hash(_e359);
-                    hs = _e360;
-                    if (_e356 > 0f) {
-                        let _e365 = w_sum;
-                        let _e366 = hs;
-                        let _e367 = xi_from_bits(_e366);
-                        let _e368 = weighted_replace(_e356, _e365, _e367);
-                        local_4 = _e368;
+                    let _e324 = local_3;
+                    if _e324 {
+                        let _e327 = j;
+                        let _e330 = fin[_e327].light;
+                        let _e331 = j;
+                        let _e334 = fin[_e331].u;
+                        let _e335 = k;
+                        let _e338 = fin[_e335].light;
+                        let _e339 = k;
+                        let _e342 = fin[_e339].u;
+                        let _e343 = same_pick(_e330, _e334, _e338, _e342);
+                        local_4 = _e343;
                     } else {
                         local_4 = false;
                     }
-                    let _e370 = local_4;
-                    if _e370 {
-                        let _e371 = li;
-                        chosen = _e371;
-                        let _e372 = cells;
-                        chosen_cells = _e372;
-                        chosen_target = _e318;
+                    let _e345 = local_4;
+                    if _e345 {
+                        let _e346 = first;
+                        if _e346 {
+                            let _e349 = j;
+                            let _e350 = k;
+                            local_5 = (_e349 > _e350);
+                        } else {
+                            local_5 = false;
+                        }
+                        let _e353 = local_5;
+                        first = _e353;
+                        let _e354 = w;
+                        let _e355 = j;
+                        let _e358 = fin[_e355].w;
+                        w = (_e354 + _e358);
                     }
                 }
                 continuing {
-                    let _e374 = j;
-                    j = (_e374 + 1u);
+                    let _e361 = j;
+                    j = (_e361 + 1u);
                 }
             }
-            let _e376 = q_1;
-            let _e378 = chosen;
-            kept_light[_e376] = _e378;
-            let _e379 = q_1;
-            let _e381 = chosen_cells;
-            kept_cells[_e379] = _e381;
-            let _e382 = q_1;
-            let _e384 = w_sum;
-            let _e385 = chosen_target;
-            let _e386 = gris_contribution_weight(_e384, _e385);
-            kept_w[_e382] = _e386;
-            let _e387 = q_1;
-            let _e389 = chosen;
-            fin_light[_e387] = _e389;
-            let _e390 = q_1;
-            let _e392 = chosen_cells;
-            fin_cells[_e390] = _e392;
-            let _e393 = q_1;
-            let _e395 = q_1;
-            let _e397 = kept_w[_e395];
-            fin_w[_e393] = _e397;
-            if (_e228 > first_1) {
-                s_sum = 0f;
-                s_target = 0f;
-                j_1 = first_1;
+            let _e363 = first;
+            if _e363 {
+                let _e365 = k;
+                let _e368 = fin[_e365].light;
+                let _e370 = lights[_e368];
+                let _e373 = w;
+                let _e376 = k;
+                let _e379 = fin[_e376].u;
+                let _e380 = grid_coordinate(_e379);
+                let _e381 = k;
+                let _e384 = fin[_e381].u;
+                let _e387 = grid_coordinate((_e384 << 16u));
+                let _e389 = connect_record(_e370, x_17, n_15, n_15, UNRANGED, UNRANGED, (_e373 / 8f), _e380, _e387, eps_3, true);
+                let _e390 = m;
+                let _e391 = shade_connection(_e389, x_17, n_15, _e390);
+                let _e392 = t;
+                let _e393 = add(_e392, _e391);
+                t = _e393;
+                let _e394 = k;
+                j_1 = _e394;
                 loop {
-                    let _e404 = j_1;
-                    if (_e404 <= _e228) {
+                    let _e396 = j_1;
+                    if (_e396 < K) {
                     } else {
                         break;
                     }
                     {
-                        let _e406 = q_1;
-                        let _e408 = kept_light[_e406];
-                        li_1 = _e408;
-                        let _e410 = q_1;
-                        let _e412 = kept_cells[_e410];
-                        cells_1 = _e412;
-                        let _e414 = q_1;
-                        let _e416 = kept_w[_e414];
-                        w_in_1 = _e416;
-                        let _e418 = j_1;
-                        if (_e418 > first_1) {
-                            let _e421 = j_1;
-                            let _e426 = doms[(_e421 - 1u)].pixel;
-                            let _e429 = q_1;
-                            let s_7 = reuse_prev[_e426].slots[_e429];
-                            li_1 = s_7.light;
-                            cells_1 = s_7.u;
-                            w_in_1 = s_7.w;
-                        }
-                        let _e435 = w_in_1;
-                        if !(!((_e435 > 0f))) {
-                            let _e442 = li_1;
-                            local_5 = (_e442 >= arrayLength((&lights)));
-                        } else {
-                            local_5 = true;
-                        }
-                        let _e447 = local_5;
-                        if _e447 {
-                            continue;
-                        }
-                        let _e449 = li_1;
-                        let _e451 = lights[_e449];
-                        let _e452 = cells_1;
-                        let _e453 = m;
-                        let _e454 = reuse_target(_e451, _e452, x_16, n_14, _e453);
-                        if !((_e454 > 0f)) {
-                            continue;
-                        }
-                        own_1 = (confidence * _e454);
-                        let _e460 = own_1;
-                        all_1 = _e460;
-                        k = first_1;
-                        loop {
-                            let _e463 = k;
-                            if (_e463 < _e228) {
-                            } else {
-                                break;
-                            }
-                            {
-                                let _e465 = k;
-                                let _e468 = doms[_e465].c;
-                                let _e470 = li_1;
-                                let _e472 = lights_prev[_e470];
-                                let _e473 = cells_1;
-                                let _e474 = k;
-                                let _e477 = doms[_e474].x;
-                                let _e478 = k;
-                                let _e481 = doms[_e478].n;
-                                let _e482 = k;
-                                let _e485 = doms[_e482].m;
-                                let _e486 = reuse_target(_e472, _e473, _e477, _e481, _e485);
-                                let t_7 = (_e468 * _e486);
-                                let _e488 = all_1;
-                                all_1 = (_e488 + t_7);
-                                let _e490 = k;
-                                let _e493 = j_1;
-                                if ((_e490 + 1u) == _e493) {
-                                    own_1 = t_7;
-                                }
-                            }
-                            continuing {
-                                let _e496 = k;
-                                k = (_e496 + 1u);
-                            }
-                        }
-                        let _e498 = own_1;
-                        let _e499 = all_1;
-                        let _e500 = w_in_1;
-                        let _e501 = gris_weight(_e498, _e499, _e454, _e500);
-                        let _e502 = s_sum;
-                        s_sum = (_e502 + _e501);
-                        let _e504 = hs;
-                        let _e505 = pcg_hash(_e504);
-                        hs = _e505;
-                        if (_e501 > 0f) {
-                            let _e510 = s_sum;
-                            let _e511 = hs;
-                            let _e512 = xi_from_bits(_e511);
-                            let _e513 = weighted_replace(_e501, _e510, _e512);
-                            local_6 = _e513;
-                        } else {
-                            local_6 = false;
-                        }
-                        let _e515 = local_6;
-                        if _e515 {
-                            let _e516 = q_1;
-                            let _e518 = li_1;
-                            fin_light[_e516] = _e518;
-                            let _e519 = q_1;
-                            let _e521 = cells_1;
-                            fin_cells[_e519] = _e521;
-                            s_target = _e454;
+                        let _e399 = j_1;
+                        let _e402 = fin[_e399].light;
+                        let _e403 = j_1;
+                        let _e406 = fin[_e403].u;
+                        let _e407 = k;
+                        let _e410 = fin[_e407].light;
+                        let _e411 = k;
+                        let _e414 = fin[_e411].u;
+                        let _e415 = same_pick(_e402, _e406, _e410, _e414);
+                        if _e415 {
+                            let _e416 = j_1;
+                            let _e418 = output_of(_e391);
+                            let _e419 = resample_target(_e418);
+                            visible[_e416] = (_e419 > 0f);
                         }
                     }
                     continuing {
-                        let _e523 = j_1;
-                        j_1 = (_e523 + 1u);
-                    }
-                }
-                let _e525 = q_1;
-                let _e527 = s_sum;
-                let _e528 = s_target;
-                let _e529 = gris_contribution_weight(_e527, _e528);
-                fin_w[_e525] = _e529;
-            }
-        }
-        continuing {
-            let _e531 = q_1;
-            q_1 = (_e531 + 1u);
-        }
-    }
-    loop {
-        let _e536 = k_1;
-        if (_e536 < K) {
-        } else {
-            break;
-        }
-        {
-            let _e539 = k_1;
-            let _e541 = fin_w[_e539];
-            w = _e541;
-            let _e543 = w;
-            first = (_e543 > 0f);
-            j_2 = 0u;
-            loop {
-                let _e549 = j_2;
-                if (_e549 < K) {
-                } else {
-                    break;
-                }
-                {
-                    let _e552 = j_2;
-                    let _e553 = k_1;
-                    if (_e552 != _e553) {
-                        let _e557 = j_2;
-                        let _e559 = fin_w[_e557];
-                        local_7 = (_e559 > 0f);
-                    } else {
-                        local_7 = false;
-                    }
-                    let _e563 = local_7;
-                    if _e563 {
-                        let _e566 = j_2;
-                        let _e568 = fin_light[_e566];
-                        let _e569 = j_2;
-                        let _e571 = fin_cells[_e569];
-                        let _e572 = k_1;
-                        let _e574 = fin_light[_e572];
-                        let _e575 = k_1;
-                        let _e577 = fin_cells[_e575];
-                        let _e578 = same_pick(_e568, _e571, _e574, _e577);
-                        local_8 = _e578;
-                    } else {
-                        local_8 = false;
-                    }
-                    let _e580 = local_8;
-                    if _e580 {
-                        let _e581 = first;
-                        if _e581 {
-                            let _e584 = j_2;
-                            let _e585 = k_1;
-                            local_9 = (_e584 > _e585);
-                        } else {
-                            local_9 = false;
-                        }
-                        let _e588 = local_9;
-                        first = _e588;
-                        let _e589 = w;
-                        let _e590 = j_2;
-                        let _e592 = fin_w[_e590];
-                        w = (_e589 + _e592);
-                    }
-                }
-                continuing {
-                    let _e595 = j_2;
-                    j_2 = (_e595 + 1u);
-                }
-            }
-            let _e597 = first;
-            if _e597 {
-                let _e599 = k_1;
-                let _e601 = fin_light[_e599];
-                let _e603 = lights[_e601];
-                let _e606 = w;
-                let _e609 = k_1;
-                let _e611 = fin_cells[_e609];
-                let _e612 = grid_coordinate(_e611);
-                let _e613 = k_1;
-                let _e615 = fin_cells[_e613];
-                let _e618 = grid_coordinate((_e615 << 16u));
-                let _e620 = connect_record(_e603, x_16, n_14, n_14, UNRANGED, UNRANGED, (_e606 / 8f), _e612, _e618, eps_3, true);
-                let _e621 = m;
-                let _e622 = shade_connection(_e620, x_16, n_14, _e621);
-                let _e623 = t;
-                let _e624 = add(_e623, _e622);
-                t = _e624;
-                let _e625 = k_1;
-                j_3 = _e625;
-                loop {
-                    let _e627 = j_3;
-                    if (_e627 < K) {
-                    } else {
-                        break;
-                    }
-                    {
-                        let _e630 = j_3;
-                        let _e632 = fin_light[_e630];
-                        let _e633 = j_3;
-                        let _e635 = fin_cells[_e633];
-                        let _e636 = k_1;
-                        let _e638 = fin_light[_e636];
-                        let _e639 = k_1;
-                        let _e641 = fin_cells[_e639];
-                        let _e642 = same_pick(_e632, _e635, _e638, _e641);
-                        if _e642 {
-                            let _e643 = j_3;
-                            let _e645 = output_of(_e622);
-                            let _e646 = resample_target(_e645);
-                            visible[_e643] = (_e646 > 0f);
-                        }
-                    }
-                    continuing {
-                        let _e650 = j_3;
-                        j_3 = (_e650 + 1u);
+                        let _e423 = j_1;
+                        j_1 = (_e423 + 1u);
                     }
                 }
             }
         }
         continuing {
-            let _e653 = k_1;
-            k_1 = (_e653 + 1u);
+            let _e426 = k;
+            k = (_e426 + 1u);
         }
     }
     loop {
-        let _e657 = q_2;
-        if (_e657 < K) {
+        let _e430 = q_2;
+        if (_e430 < K) {
         } else {
             break;
         }
         {
-            let _e662 = reuse.visibility;
-            if !((_e662 == 0u)) {
-                let _e668 = q_2;
-                let _e670 = visible[_e668];
-                local_10 = _e670;
+            let _e435 = reuse.visibility;
+            if !((_e435 == 0u)) {
+                let _e441 = q_2;
+                let _e443 = visible[_e441];
+                local_6 = _e443;
             } else {
-                local_10 = true;
+                local_6 = true;
             }
-            let keep = local_10;
-            let _e676 = q_2;
-            let _e678 = q_2;
-            let _e680 = kept_light[_e678];
-            let _e681 = q_2;
-            let _e683 = kept_cells[_e681];
-            let _e684 = q_2;
-            let _e686 = kept_w[_e684];
-            reuse_next[pixel_1].slots[_e676] = ReuseSlot(_e680, _e683, select(0f, _e686, keep));
+            let keep = local_6;
+            let _e449 = q_2;
+            let _e451 = q_2;
+            let _e454 = kept[_e451].light;
+            let _e455 = q_2;
+            let _e458 = kept[_e455].u;
+            let _e459 = q_2;
+            let _e462 = kept[_e459].w;
+            reuse_next[pixel_1].slots[_e449] = ReuseSlot(_e454, _e458, select(0f, _e462, keep));
         }
         continuing {
-            let _e691 = q_2;
-            q_2 = (_e691 + 1u);
+            let _e467 = q_2;
+            q_2 = (_e467 + 1u);
         }
     }
-    let _e696 = m;
-    let _e699 = reuse.max_confidence;
-    let _e701 = reuse_surface(x_16, n_14, _e696, min(confidence, _e699));
-    reuse_next[pixel_1].surface = _e701;
-    let _e704 = t.diffuse;
-    let _e706 = t.specular;
-    let _e708 = count;
-    textureStore(out_tex, texel_1, vec4<f32>((_e704 + _e706), f32(_e708)));
+    let _e472 = m;
+    let _e475 = reuse.max_confidence;
+    let _e477 = reuse_surface(x_17, n_15, _e472, min(confidence, _e475));
+    reuse_next[pixel_1].surface = _e477;
+    let _e480 = t.diffuse;
+    let _e482 = t.specular;
+    let _e484 = count;
+    textureStore(out_tex, texel_1, vec4<f32>((_e480 + _e482), f32(_e484)));
     return;
 }

@@ -313,29 +313,29 @@ float connection_factor(float cos_x, float d2_3, float rt2_1, float w_1)
 
 float connection_cosine(float3 x_2, float3 y, float3 n, float3 ng, float r2_1)
 {
-    bool local_11 = (bool)0;
-    bool local_12 = (bool)0;
+    bool local_7 = (bool)0;
+    bool local_8 = (bool)0;
 
     float3 v_6 = (x_2 - y);
     float d2_6 = dot(v_6, v_6);
     const bool _e7 = slc_keep(r2_1, d2_6);
     if (!(!(_e7))) {
-        local_11 = !((d2_6 > 0.0));
+        local_7 = !((d2_6 > 0.0));
     } else {
-        local_11 = true;
+        local_7 = true;
     }
-    bool _e16 = local_11;
+    bool _e16 = local_7;
     if (_e16) {
         return 0.0;
     }
     float3 w_7 = (v_6 / (sqrt(d2_6)).xxx);
     float cos_x_1 = -(dot(n, w_7));
     if (!((cos_x_1 <= 0.0))) {
-        local_12 = (dot(ng, w_7) >= 0.0);
+        local_8 = (dot(ng, w_7) >= 0.0);
     } else {
-        local_12 = true;
+        local_8 = true;
     }
-    bool _e32 = local_12;
+    bool _e32 = local_8;
     if (_e32) {
         return 0.0;
     }
@@ -375,9 +375,9 @@ float bsh_range_bound(BshNode node_1)
     return _e8;
 }
 
-bool weighted_replace(float w_3, float w_sum_1, float u_2)
+bool weighted_replace(float w_3, float w_sum, float u_2)
 {
-    return ((u_2 * w_sum_1) < w_3);
+    return ((u_2 * w_sum) < w_3);
 }
 
 float resample_target(float3 c_2)
@@ -402,20 +402,20 @@ float2 disk_offset(float r_2, float u1_1, float u2_1)
     return (float2(cos(a_9), sin(a_9)) * (r_2 * sqrt(u1_1)));
 }
 
-float gris_weight(float own_2, float all_2, float p_hat, float w_4)
+float gris_weight(float own, float all_, float p_hat, float w_4)
 {
-    if (!((all_2 > 0.0))) {
+    if (!((all_ > 0.0))) {
         return 0.0;
     }
-    return (((own_2 / all_2) * p_hat) * w_4);
+    return (((own / all_) * p_hat) * w_4);
 }
 
-float gris_contribution_weight(float w_sum_2, float p_hat_1)
+float gris_contribution_weight(float w_sum_1, float p_hat_1)
 {
     if (!((p_hat_1 > 0.0))) {
         return 0.0;
     }
-    return (w_sum_2 / p_hat_1);
+    return (w_sum_1 / p_hat_1);
 }
 
 float ggx_d(float cos_h, float sin2_h, float alpha)
@@ -436,14 +436,14 @@ float smith_root(float cos_, float alpha_1)
 
 float smith_visibility(float n_l, float n_v, float alpha_2)
 {
-    bool local_13 = (bool)0;
+    bool local_9 = (bool)0;
 
     if (!((n_l <= 0.0))) {
-        local_13 = (n_v <= 0.0);
+        local_9 = (n_v <= 0.0);
     } else {
-        local_13 = true;
+        local_9 = true;
     }
-    bool _e11 = local_13;
+    bool _e11 = local_9;
     if (_e11) {
         return 0.0;
     }
@@ -468,21 +468,21 @@ float3 specular_fresnel(float3 base, float metallic, float3 f0_d, float f90_d, f
 
 bool has_specular(float metallic_1, float3 f0_d_1, float f90_d_1)
 {
-    bool local_14 = (bool)0;
-    bool local_15 = (bool)0;
+    bool local_10 = (bool)0;
+    bool local_11 = (bool)0;
 
     if (!((metallic_1 > 0.0))) {
-        local_14 = (f90_d_1 > 0.0);
+        local_10 = (f90_d_1 > 0.0);
     } else {
-        local_14 = true;
+        local_10 = true;
     }
-    bool _e11 = local_14;
+    bool _e11 = local_10;
     if (!(_e11)) {
-        local_15 = (max(max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0.0);
+        local_11 = (max(max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0.0);
     } else {
-        local_15 = true;
+        local_11 = true;
     }
-    bool _e23 = local_15;
+    bool _e23 = local_11;
     return _e23;
 }
 
@@ -493,17 +493,17 @@ float channel_mean(float3 c_3)
 
 float4 receiver_lobe(float3 base_1, float metallic_2, float3 f0_d_2, float f90_d_2, float alpha_3, float n_v_1)
 {
-    bool local_16 = (bool)0;
+    bool local_12 = (bool)0;
 
     const float3 _e10 = fresnel_schlick(f0_d_2, f90_d_2, n_v_1);
     const float _e16 = channel_mean((((float3(1.0, 1.0, 1.0) - _e10) * base_1) * (1.0 - metallic_2)));
     if (!((n_v_1 <= 0.0))) {
         const bool _e22 = has_specular(metallic_2, f0_d_2, f90_d_2);
-        local_16 = !(_e22);
+        local_12 = !(_e22);
     } else {
-        local_16 = true;
+        local_12 = true;
     }
-    bool _e25 = local_16;
+    bool _e25 = local_12;
     if (_e25) {
         return float4(_e16, 0.0, alpha_3, n_v_1);
     }
@@ -563,9 +563,9 @@ float bevy_dfg(float r_3, float n_v_2)
 {
     float rx = (1.0 - r_3);
     float a004_ = ((min((rx * rx), exp2((-9.28 * n_v_2))) * rx) + (0.0425 - (0.0275 * r_3)));
-    float x_14 = max(((1.04 - (0.572 * r_3)) - (1.04 * a004_)), 5e-5);
+    float x_15 = max(((1.04 - (0.572 * r_3)) - (1.04 * a004_)), 5e-5);
     float y_1 = max((((0.022 * r_3) - 0.04) + (1.04 * a004_)), 5e-5);
-    return (x_14 + y_1);
+    return (x_15 + y_1);
 }
 
 float3 bevy_brdf(float3 base_2, float metallic_3, float r_4, float reflectance_1, float3 n_3, float3 v_1, float3 l)
@@ -597,23 +597,23 @@ float3 bevy_brdf(float3 base_2, float metallic_3, float r_4, float reflectance_1
 
 float cone_cos_of(float3 v_2, float d2_4, float a_3, float3 d)
 {
-    bool local_17 = (bool)0;
-    bool local_18 = (bool)0;
+    bool local_13 = (bool)0;
+    bool local_14 = (bool)0;
 
     float vd = dot(v_2, d);
     float h2_1 = (d2_4 - (a_3 * a_3));
     if (!((h2_1 <= 0.0))) {
         if ((vd >= 0.0)) {
-            local_18 = ((vd * vd) >= h2_1);
+            local_14 = ((vd * vd) >= h2_1);
         } else {
-            local_18 = false;
+            local_14 = false;
         }
-        bool _e19 = local_18;
-        local_17 = _e19;
+        bool _e19 = local_14;
+        local_13 = _e19;
     } else {
-        local_17 = true;
+        local_13 = true;
     }
-    bool _e21 = local_17;
+    bool _e21 = local_13;
     if (_e21) {
         return 1.0;
     }
@@ -678,27 +678,27 @@ float ray_aabb(float3 o, float3 inv_d, float3 bmin, float3 bmax, float t_max)
 
 float3 triangle_normal(float3 a_4, float3 b_4, float3 c_4)
 {
-    bool local_19 = (bool)0;
+    bool local_15 = (bool)0;
 
-    float3 n_12 = cross((b_4 - a_4), (c_4 - a_4));
-    float l2_ = dot(n_12, n_12);
+    float3 n_13 = cross((b_4 - a_4), (c_4 - a_4));
+    float l2_ = dot(n_13, n_13);
     if (!(!((l2_ > 0.0)))) {
-        local_19 = !((l2_ < 3e38));
+        local_15 = !((l2_ < 3e38));
     } else {
-        local_19 = true;
+        local_15 = true;
     }
-    bool _e17 = local_19;
+    bool _e17 = local_15;
     if (_e17) {
         return float3(0.0, 0.0, 0.0);
     }
-    return (n_12 / (sqrt(l2_)).xxx);
+    return (n_13 / (sqrt(l2_)).xxx);
 }
 
 float ray_triangle(float3 o_1, float3 d_3, float3 a_5, float3 b_5, float3 c_5, float t_min, float t_max_1)
 {
-    bool local_20 = (bool)0;
-    bool local_21 = (bool)0;
-    bool local_22 = (bool)0;
+    bool local_16 = (bool)0;
+    bool local_17 = (bool)0;
+    bool local_18 = (bool)0;
 
     float3 e1_ = (b_5 - a_5);
     float3 e2_ = (c_5 - a_5);
@@ -708,35 +708,35 @@ float ray_triangle(float3 o_1, float3 d_3, float3 a_5, float3 b_5, float3 c_5, f
         return -1.0;
     }
     float inv = (1.0 / det);
-    float3 s_4 = (o_1 - a_5);
-    float u_3 = (dot(s_4, p_5) * inv);
+    float3 s_5 = (o_1 - a_5);
+    float u_3 = (dot(s_5, p_5) * inv);
     if (!((u_3 < 0.0))) {
-        local_20 = (u_3 > 1.0);
+        local_16 = (u_3 > 1.0);
     } else {
-        local_20 = true;
+        local_16 = true;
     }
-    bool _e28 = local_20;
+    bool _e28 = local_16;
     if (_e28) {
         return -1.0;
     }
-    float3 q_3 = cross(s_4, e1_);
-    float v_8 = (dot(d_3, q_3) * inv);
+    float3 q_4 = cross(s_5, e1_);
+    float v_8 = (dot(d_3, q_4) * inv);
     if (!((v_8 < 0.0))) {
-        local_21 = ((u_3 + v_8) > 1.0);
+        local_17 = ((u_3 + v_8) > 1.0);
     } else {
-        local_21 = true;
+        local_17 = true;
     }
-    bool _e42 = local_21;
+    bool _e42 = local_17;
     if (_e42) {
         return -1.0;
     }
-    float t_3 = (dot(e2_, q_3) * inv);
+    float t_3 = (dot(e2_, q_4) * inv);
     if ((t_3 > t_min)) {
-        local_22 = (t_3 < t_max_1);
+        local_18 = (t_3 < t_max_1);
     } else {
-        local_22 = false;
+        local_18 = false;
     }
-    bool _e51 = local_22;
+    bool _e51 = local_18;
     if (_e51) {
         return t_3;
     }
@@ -749,21 +749,21 @@ float3 reproject(float4 c0_, float4 c1_, float4 c2_, float4 c3_, float3 p_2, flo
     if ((clip_.w <= 0.0)) {
         return float3(-1.0, -1.0, 0.0);
     }
-    float x_15 = (((((clip_.x / clip_.w) + 1.0) * 0.5) * width) - 0.5);
+    float x_16 = (((((clip_.x / clip_.w) + 1.0) * 0.5) * width) - 0.5);
     float y_2 = ((((1.0 - (clip_.y / clip_.w)) * 0.5) * height) - 0.5);
-    return float3(x_15, y_2, clip_.w);
+    return float3(x_16, y_2, clip_.w);
 }
 
 bool history_matches(float3 n_4, float3 nh, float3 p_3, float oh, float d_4)
 {
-    bool local_23 = (bool)0;
+    bool local_19 = (bool)0;
 
     if ((abs((dot(nh, p_3) - oh)) <= (TEMPORAL_DEPTH_TOLERANCE * d_4))) {
-        local_23 = (dot(n_4, nh) >= TEMPORAL_NORMAL_COS);
+        local_19 = (dot(n_4, nh) >= TEMPORAL_NORMAL_COS);
     } else {
-        local_23 = false;
+        local_19 = false;
     }
-    bool _e17 = local_23;
+    bool _e17 = local_19;
     return _e17;
 }
 
@@ -841,12 +841,12 @@ GeoHit trace(float3 o_2, float3 d_5, float t_min_1, float t_max_2, bool any_hit)
         if (all(loop_bound == uint2(0u, 0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         uint _e21 = node_2;
-        GpuGeoNode n_13 = ConstructGpuGeoNode(asfloat(geo_nodes.Load3(_e21*32+0)), asuint(geo_nodes.Load(_e21*32+12)), asfloat(geo_nodes.Load3(_e21*32+16)), asuint(geo_nodes.Load(_e21*32+28)));
+        GpuGeoNode n_14 = ConstructGpuGeoNode(asfloat(geo_nodes.Load3(_e21*32+0)), asuint(geo_nodes.Load(_e21*32+12)), asfloat(geo_nodes.Load3(_e21*32+16)), asuint(geo_nodes.Load(_e21*32+28)));
         float _e27 = hit.t;
-        const float _e28 = ray_aabb(o_2, _e14, n_13.bmin, n_13.bmax, _e27);
+        const float _e28 = ray_aabb(o_2, _e14, n_14.bmin, n_14.bmax, _e27);
         if ((_e28 >= 0.0)) {
-            if ((n_13.count > 0u)) {
-                i = n_13.first;
+            if ((n_14.count > 0u)) {
+                i = n_14.first;
                 uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
                 bool loop_init = true;
                 while(true) {
@@ -858,7 +858,7 @@ GeoHit trace(float3 o_2, float3 d_5, float t_min_1, float t_max_2, bool any_hit)
                     }
                     loop_init = false;
                     uint _e36 = i;
-                    if ((_e36 < (n_13.first + n_13.count))) {
+                    if ((_e36 < (n_14.first + n_14.count))) {
                     } else {
                         break;
                     }
@@ -883,11 +883,11 @@ GeoHit trace(float3 o_2, float3 d_5, float t_min_1, float t_max_2, bool any_hit)
                 uint _e60 = sp;
                 if ((_e60 < 64u)) {
                     uint _e63 = sp;
-                    stack[min(uint(_e63), 63u)] = (n_13.first + 1u);
+                    stack[min(uint(_e63), 63u)] = (n_14.first + 1u);
                     uint _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_2 = n_13.first;
+                node_2 = n_14.first;
                 continue;
             }
         }
@@ -959,8 +959,8 @@ float bsh_inner_scale(float a_7, float3 v_3, float d2_5, float3 r_6, float4 rl_2
 
 bool bsh_reaches(BshNode node_3, float3 x_4, float3 r_7, float4 rl_3)
 {
-    bool local_24 = (bool)0;
-    bool local_25 = (bool)0;
+    bool local_20 = (bool)0;
+    bool local_21 = (bool)0;
 
     const bool _e6 = sphere_contains_point(node_3.center_, node_3.radius, x_4);
     if (_e6) {
@@ -968,11 +968,11 @@ bool bsh_reaches(BshNode node_3, float3 x_4, float3 r_7, float4 rl_3)
     }
     if (!((rl_3.w <= 1.0))) {
         const bool _e20 = sphere_contains_point(node_3.center_, (node_3.radius * (rl_3.w * 1.0001)), x_4);
-        local_24 = !(_e20);
+        local_20 = !(_e20);
     } else {
-        local_24 = true;
+        local_20 = true;
     }
-    bool _e23 = local_24;
+    bool _e23 = local_20;
     if (_e23) {
         return false;
     }
@@ -993,11 +993,11 @@ bool bsh_reaches(BshNode node_3, float3 x_4, float3 r_7, float4 rl_3)
     float s_c = (_e50 * 1.001);
     float reach = (node_3.extent + (sqrt(s_c) * _e25));
     if ((d2_7 <= ((node_3.radius * node_3.radius) * s_c))) {
-        local_25 = (d2_7 <= (reach * reach));
+        local_21 = (d2_7 <= (reach * reach));
     } else {
-        local_25 = false;
+        local_21 = false;
     }
-    bool _e67 = local_25;
+    bool _e67 = local_21;
     return _e67;
 }
 
@@ -1036,8 +1036,8 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start, float3 x_5, float3 r_8, float4
 Connection connect_record(GpuLight l_3, float3 x_6, float3 n_5, float3 ng_1, float r2_2, float rt2_2, float w_res, float u1_3, float u2_3, float eps, bool trace_1)
 {
     Connection c_6 = (Connection)0;
-    bool local_26 = (bool)0;
-    bool local_27 = (bool)0;
+    bool local_22 = (bool)0;
+    bool local_23 = (bool)0;
 
     c_6.e = (0.0).xxx;
     const float3 _e16 = light_point(l_3, u1_3, u2_3);
@@ -1050,16 +1050,16 @@ Connection connect_record(GpuLight l_3, float3 x_6, float3 n_5, float3 ng_1, flo
         if (trace_1) {
             float3 _e33 = c_6.y;
             const bool _e34 = occluded((x_6 + (ng_1 * eps)), _e33);
-            local_27 = _e34;
+            local_23 = _e34;
         } else {
-            local_27 = false;
+            local_23 = false;
         }
-        bool _e36 = local_27;
-        local_26 = _e36;
+        bool _e36 = local_23;
+        local_22 = _e36;
     } else {
-        local_26 = true;
+        local_22 = true;
     }
-    bool _e38 = local_26;
+    bool _e38 = local_22;
     if (_e38) {
         Connection _e39 = c_6;
         const Connection connection = _e39;
@@ -1090,11 +1090,11 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
     return ret;
 }
 
-Connection connect_traced(uint li_2, float3 x_7, float3 n_6, float3 ng_2, float s, float w_res_1, float u1_4, float u2_4, float eps_1, bool trace_2)
+Connection connect_traced(uint li, float3 x_7, float3 n_6, float3 ng_2, float s, float w_res_1, float u1_4, float u2_4, float eps_1, bool trace_2)
 {
-    GpuLight _e12 = ConstructGpuLight(asfloat(lights.Load3(li_2*64+0)), asuint(lights.Load(li_2*64+12)), asfloat(lights.Load3(li_2*64+16)), asfloat(lights.Load(li_2*64+28)), asfloat(lights.Load3(li_2*64+32)), asfloat(lights.Load(li_2*64+44)), asfloat(lights.Load3(li_2*64+48)), asuint(lights.Load(li_2*64+60)));
-    float _e15 = asfloat(r2_3.Load(li_2*4));
-    float _e19 = asfloat(rt2_3.Load(li_2*4));
+    GpuLight _e12 = ConstructGpuLight(asfloat(lights.Load3(li*64+0)), asuint(lights.Load(li*64+12)), asfloat(lights.Load3(li*64+16)), asfloat(lights.Load(li*64+28)), asfloat(lights.Load3(li*64+32)), asfloat(lights.Load(li*64+44)), asfloat(lights.Load3(li*64+48)), asuint(lights.Load(li*64+60)));
+    float _e15 = asfloat(r2_3.Load(li*4));
+    float _e19 = asfloat(rt2_3.Load(li*4));
     const Connection _e21 = connect_record(_e12, x_7, n_6, ng_2, (s * _e15), (s * _e19), w_res_1, u1_4, u2_4, eps_1, trace_2);
     const Connection connection_2 = _e21;
     return connection_2;
@@ -1113,9 +1113,9 @@ GpuLightCone ConstructGpuLightCone(float3 arg0, float arg1, float3 arg2, float a
     return ret;
 }
 
-float light_range_scale(uint li_3, float3 x_8, float3 r_9, float4 rl_5)
+float light_range_scale(uint li_1, float3 x_8, float3 r_9, float4 rl_5)
 {
-    GpuLightCone c_11 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_3*48+0)), asfloat(light_cones.Load(li_3*48+12)), asfloat(light_cones.Load3(li_3*48+16)), asfloat(light_cones.Load(li_3*48+28)), asfloat(light_cones.Load(li_3*48+32)), asfloat(light_cones.Load(li_3*48+36)), asuint(light_cones.Load(li_3*48+40)), asuint(light_cones.Load(li_3*48+44)));
+    GpuLightCone c_11 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_1*48+0)), asfloat(light_cones.Load(li_1*48+12)), asfloat(light_cones.Load3(li_1*48+16)), asfloat(light_cones.Load(li_1*48+28)), asfloat(light_cones.Load(li_1*48+32)), asfloat(light_cones.Load(li_1*48+36)), asuint(light_cones.Load(li_1*48+40)), asuint(light_cones.Load(li_1*48+44)));
     const float _e9 = range_scale_toward(rl_5, c_11.center_, c_11.radius, x_8, r_9);
     return _e9;
 }
@@ -1142,10 +1142,10 @@ Shaded shade_connection(Connection c_7, float3 x_9, float3 n_7, Material m_1)
     return shaded;
 }
 
-Shaded shade_pick_traced(uint li_4, float3 x_10, float3 n_8, float3 r_10, float4 rl_6, Material m_2, float w_6, float u1_5, float u2_5, float eps_2, bool trace_3)
+Shaded shade_pick_traced(uint li_2, float3 x_10, float3 n_8, float3 r_10, float4 rl_6, Material m_2, float w_6, float u1_5, float u2_5, float eps_2, bool trace_3)
 {
-    const float _e11 = light_range_scale(li_4, x_10, r_10, rl_6);
-    const Connection _e12 = connect_traced(li_4, x_10, n_8, n_8, _e11, w_6, u1_5, u2_5, eps_2, trace_3);
+    const float _e11 = light_range_scale(li_2, x_10, r_10, rl_6);
+    const Connection _e12 = connect_traced(li_2, x_10, n_8, n_8, _e11, w_6, u1_5, u2_5, eps_2, trace_3);
     const Shaded _e13 = shade_connection(_e12, x_10, n_8, m_2);
     const Shaded shaded_1 = _e13;
     return shaded_1;
@@ -1188,10 +1188,10 @@ float3 output_of(Shaded s_2)
     return (s_2.diffuse + s_2.specular);
 }
 
-float reuse_target(GpuLight l_4, uint cells_2, float3 x_11, float3 n_9, Material m_3)
+float reuse_target(GpuLight l_4, uint cells, float3 x_11, float3 n_9, Material m_3)
 {
-    const float _e8 = grid_coordinate(cells_2);
-    const float _e11 = grid_coordinate((cells_2 << 16u));
+    const float _e8 = grid_coordinate(cells);
+    const float _e11 = grid_coordinate((cells << 16u));
     const Connection _e14 = connect_record(l_4, x_11, n_9, n_9, UNRANGED, UNRANGED, 1.0, _e8, _e11, 0.0, false);
     const Shaded _e15 = shade_connection(_e14, x_11, n_9, m_3);
     const float3 _e16 = output_of(_e15);
@@ -1233,22 +1233,22 @@ Material reuse_material(ReuseSurface s_3, float3 eye)
 
 bool same_pick(uint la, uint ca, uint lb, uint cb)
 {
-    bool local_28 = (bool)0;
-    bool local_29 = (bool)0;
+    bool local_24 = (bool)0;
+    bool local_25 = (bool)0;
 
     if ((la == lb)) {
         if (!((ca == cb))) {
             uint _e14 = asuint(lights.Load(12+la*64));
-            local_29 = (_e14 != LIGHT_TRIANGLE);
+            local_25 = (_e14 != LIGHT_TRIANGLE);
         } else {
-            local_29 = true;
+            local_25 = true;
         }
-        bool _e18 = local_29;
-        local_28 = _e18;
+        bool _e18 = local_25;
+        local_24 = _e18;
     } else {
-        local_28 = false;
+        local_24 = false;
     }
-    bool _e20 = local_28;
+    bool _e20 = local_24;
     return _e20;
 }
 
@@ -1271,16 +1271,16 @@ uint reuse_domains(float3 x_13, float3 n_11, float d_6, uint h_1, inout Domain d
 {
     uint nd = 0u;
     uint hr = (uint)0;
-    uint j_4 = 0u;
+    uint j_2 = 0u;
     float2 p_4 = (float2)0;
+    bool local_26 = (bool)0;
+    bool local_27 = (bool)0;
+    bool local_28 = (bool)0;
+    bool seen = (bool)0;
+    uint k_1 = (uint)0;
+    bool local_29 = (bool)0;
     bool local_30 = (bool)0;
     bool local_31 = (bool)0;
-    bool local_32 = (bool)0;
-    bool seen = (bool)0;
-    uint k_2 = (uint)0;
-    bool local_33 = (bool)0;
-    bool local_34 = (bool)0;
-    bool local_35 = (bool)0;
 
     uint _e9 = reuse.has_history;
     if ((_e9 != 1u)) {
@@ -1303,18 +1303,18 @@ uint reuse_domains(float3 x_13, float3 n_11, float d_6, uint h_1, inout Domain d
         if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
         loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e175 = j_4;
-            j_4 = (_e175 + 1u);
+            uint _e175 = j_2;
+            j_2 = (_e175 + 1u);
         }
         loop_init_1 = false;
-        uint _e41 = j_4;
+        uint _e41 = j_2;
         if ((_e41 < DOMAINS)) {
         } else {
             break;
         }
         {
             p_4 = _e33.xy;
-            uint _e46 = j_4;
+            uint _e46 = j_2;
             if ((_e46 > 0u)) {
                 uint _e49 = hr;
                 const uint _e50 = pcg_hash(_e49);
@@ -1334,43 +1334,43 @@ uint reuse_domains(float3 x_13, float3 n_11, float d_6, uint h_1, inout Domain d
             float2 _e63 = p_4;
             int2 t_5 = naga_f2i32(round(_e63));
             if (!((t_5.x < int(0)))) {
-                local_30 = (t_5.y < int(0));
+                local_26 = (t_5.y < int(0));
             } else {
-                local_30 = true;
+                local_26 = true;
             }
-            bool _e76 = local_30;
+            bool _e76 = local_26;
             if (!(_e76)) {
                 uint _e83 = view.width;
-                local_31 = (t_5.x >= int(_e83));
+                local_27 = (t_5.x >= int(_e83));
             } else {
-                local_31 = true;
+                local_27 = true;
             }
-            bool _e87 = local_31;
+            bool _e87 = local_27;
             if (!(_e87)) {
                 uint _e94 = view.height;
-                local_32 = (t_5.y >= int(_e94));
+                local_28 = (t_5.y >= int(_e94));
             } else {
-                local_32 = true;
+                local_28 = true;
             }
-            bool _e98 = local_32;
+            bool _e98 = local_28;
             if (_e98) {
                 continue;
             }
             uint _e103 = view.width;
             uint pixel = ((uint(t_5.y) * _e103) + uint(t_5.x));
             seen = false;
-            k_2 = 0u;
+            k_1 = 0u;
             uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
             bool loop_init_2 = true;
             while(true) {
                 if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
                 loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
                 if (!loop_init_2) {
-                    uint _e127 = k_2;
-                    k_2 = (_e127 + 1u);
+                    uint _e127 = k_1;
+                    k_1 = (_e127 + 1u);
                 }
                 loop_init_2 = false;
-                uint _e112 = k_2;
+                uint _e112 = k_1;
                 uint _e113 = nd;
                 if ((_e112 < _e113)) {
                 } else {
@@ -1379,40 +1379,40 @@ uint reuse_domains(float3 x_13, float3 n_11, float d_6, uint h_1, inout Domain d
                 {
                     bool _e115 = seen;
                     if (!(_e115)) {
-                        uint _e119 = k_2;
+                        uint _e119 = k_1;
                         uint _e122 = doms_1[min(uint(_e119), 2u)].pixel;
-                        local_33 = (_e122 == pixel);
+                        local_29 = (_e122 == pixel);
                     } else {
-                        local_33 = true;
+                        local_29 = true;
                     }
-                    bool _e125 = local_33;
+                    bool _e125 = local_29;
                     seen = _e125;
                 }
             }
-            ReuseSurface s_5 = ConstructReuseSurface(asfloat(reuse_prev.Load3(0+pixel*144+0)), asfloat(reuse_prev.Load(0+pixel*144+12)), asfloat(reuse_prev.Load3(0+pixel*144+16)), asuint(reuse_prev.Load(0+pixel*144+28)), asuint(reuse_prev.Load(0+pixel*144+32)), asuint(reuse_prev.Load(0+pixel*144+36)), asuint(reuse_prev.Load(0+pixel*144+40)), asuint(reuse_prev.Load(0+pixel*144+44)));
+            ReuseSurface s_6 = ConstructReuseSurface(asfloat(reuse_prev.Load3(0+pixel*144+0)), asfloat(reuse_prev.Load(0+pixel*144+12)), asfloat(reuse_prev.Load3(0+pixel*144+16)), asuint(reuse_prev.Load(0+pixel*144+28)), asuint(reuse_prev.Load(0+pixel*144+32)), asuint(reuse_prev.Load(0+pixel*144+36)), asuint(reuse_prev.Load(0+pixel*144+40)), asuint(reuse_prev.Load(0+pixel*144+44)));
             bool _e133 = seen;
             if (!(_e133)) {
-                local_34 = !((s_5.m > 0.0));
+                local_30 = !((s_6.m > 0.0));
             } else {
-                local_34 = true;
+                local_30 = true;
             }
-            bool _e142 = local_34;
+            bool _e142 = local_30;
             if (!(_e142)) {
-                const bool _e150 = history_matches(n_11, s_5.n, x_13, dot(s_5.n, s_5.x), d_6);
-                local_35 = !(_e150);
+                const bool _e150 = history_matches(n_11, s_6.n, x_13, dot(s_6.n, s_6.x), d_6);
+                local_31 = !(_e150);
             } else {
-                local_35 = true;
+                local_31 = true;
             }
-            bool _e153 = local_35;
+            bool _e153 = local_31;
             if (_e153) {
                 continue;
             }
             uint _e154 = nd;
             float3 _e160 = reuse.prev_eye;
-            const Material _e161 = reuse_material(s_5, _e160);
+            const Material _e161 = reuse_material(s_6, _e160);
             float _e165 = reuse.max_confidence;
-            uint _e167 = j_4;
-            doms_1[min(uint(_e154), 2u)] = ConstructDomain(pixel, s_5.x, s_5.n, _e161, min(s_5.m, _e165), (_e167 == 0u));
+            uint _e167 = j_2;
+            doms_1[min(uint(_e154), 2u)] = ConstructDomain(pixel, s_6.x, s_6.n, _e161, min(s_6.m, _e165), (_e167 == 0u));
             uint _e171 = nd;
             nd = (_e171 + 1u);
         }
@@ -1427,6 +1427,154 @@ ReuseSlot ConstructReuseSlot(uint arg0, uint arg1, float arg2) {
     ret.u = arg1;
     ret.w = arg2;
     return ret;
+}
+
+ReuseSlot gris_combine(uint q_3, ReuseSlot cur, bool cur_ris, float cur_c, uint k0_, uint k1_, float3 x_14, float3 n_12, Material m_5, inout Domain doms_2[3], inout uint hs_1)
+{
+    float w_sum_2 = 0.0;
+    ReuseSlot out_ = ConstructReuseSlot(0u, 0u, 0.0);
+    float out_target = 0.0;
+    uint j_3 = (uint)0;
+    ReuseSlot s_4 = (ReuseSlot)0;
+    bool local_32 = (bool)0;
+    float w_in = (float)0;
+    bool local_33 = (bool)0;
+    float own_1 = (float)0;
+    float all_1 = (float)0;
+    uint k_2 = (uint)0;
+    bool local_34 = (bool)0;
+
+    j_3 = k0_;
+    uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
+    bool loop_init_3 = true;
+    while(true) {
+        if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
+        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+        if (!loop_init_3) {
+            uint _e137 = j_3;
+            j_3 = (_e137 + 1u);
+        }
+        loop_init_3 = false;
+        uint _e21 = j_3;
+        if ((_e21 <= k1_)) {
+        } else {
+            break;
+        }
+        {
+            s_4 = cur;
+            uint _e24 = j_3;
+            if ((_e24 > k0_)) {
+                uint _e27 = j_3;
+                uint _e32 = doms_2[min(uint((_e27 - 1u)), 2u)].pixel;
+                ReuseSlot _e36 = ConstructReuseSlot(asuint(reuse_prev.Load(q_3*12+48+_e32*144+0)), asuint(reuse_prev.Load(q_3*12+48+_e32*144+4)), asfloat(reuse_prev.Load(q_3*12+48+_e32*144+8)));
+                s_4 = _e36;
+            }
+            float _e38 = s_4.w;
+            if (!(!((_e38 > 0.0)))) {
+                uint _e46 = s_4.light;
+                local_32 = (_e46 >= ((NagaBufferLength(lights) - 0) / 64));
+            } else {
+                local_32 = true;
+            }
+            bool _e51 = local_32;
+            if (_e51) {
+                continue;
+            }
+            uint _e54 = s_4.light;
+            GpuLight _e56 = ConstructGpuLight(asfloat(lights.Load3(_e54*64+0)), asuint(lights.Load(_e54*64+12)), asfloat(lights.Load3(_e54*64+16)), asfloat(lights.Load(_e54*64+28)), asfloat(lights.Load3(_e54*64+32)), asfloat(lights.Load(_e54*64+44)), asfloat(lights.Load3(_e54*64+48)), asuint(lights.Load(_e54*64+60)));
+            uint _e58 = s_4.u;
+            const float _e59 = reuse_target(_e56, _e58, x_14, n_12, m_5);
+            if (!((_e59 > 0.0))) {
+                continue;
+            }
+            float _e64 = s_4.w;
+            w_in = _e64;
+            uint _e66 = j_3;
+            if ((_e66 == k0_)) {
+                local_33 = cur_ris;
+            } else {
+                local_33 = false;
+            }
+            bool _e71 = local_33;
+            if (_e71) {
+                float _e73 = s_4.w;
+                w_in = (_e73 / _e59);
+            }
+            own_1 = (cur_c * _e59);
+            float _e77 = own_1;
+            all_1 = _e77;
+            k_2 = k0_;
+            uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
+            bool loop_init_4 = true;
+            while(true) {
+                if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
+                loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+                if (!loop_init_4) {
+                    uint _e115 = k_2;
+                    k_2 = (_e115 + 1u);
+                }
+                loop_init_4 = false;
+                uint _e80 = k_2;
+                if ((_e80 < k1_)) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e82 = k_2;
+                    float _e85 = doms_2[min(uint(_e82), 2u)].c;
+                    uint _e88 = s_4.light;
+                    GpuLight _e90 = ConstructGpuLight(asfloat(lights_prev.Load3(_e88*64+0)), asuint(lights_prev.Load(_e88*64+12)), asfloat(lights_prev.Load3(_e88*64+16)), asfloat(lights_prev.Load(_e88*64+28)), asfloat(lights_prev.Load3(_e88*64+32)), asfloat(lights_prev.Load(_e88*64+44)), asfloat(lights_prev.Load3(_e88*64+48)), asuint(lights_prev.Load(_e88*64+60)));
+                    uint _e92 = s_4.u;
+                    uint _e93 = k_2;
+                    float3 _e96 = doms_2[min(uint(_e93), 2u)].x;
+                    uint _e97 = k_2;
+                    float3 _e100 = doms_2[min(uint(_e97), 2u)].n;
+                    uint _e101 = k_2;
+                    Material _e104 = doms_2[min(uint(_e101), 2u)].m;
+                    const float _e105 = reuse_target(_e90, _e92, _e96, _e100, _e104);
+                    float t_6 = (_e85 * _e105);
+                    float _e107 = all_1;
+                    all_1 = (_e107 + t_6);
+                    uint _e109 = k_2;
+                    uint _e112 = j_3;
+                    if (((_e109 + 1u) == _e112)) {
+                        own_1 = t_6;
+                    }
+                }
+            }
+            float _e117 = own_1;
+            float _e118 = all_1;
+            float _e119 = w_in;
+            const float _e120 = gris_weight(_e117, _e118, _e59, _e119);
+            float _e121 = w_sum_2;
+            w_sum_2 = (_e121 + _e120);
+            uint _e123 = hs_1;
+            const uint _e124 = pcg_hash(_e123);
+            hs_1 = _e124;
+            if ((_e120 > 0.0)) {
+                float _e129 = w_sum_2;
+                uint _e130 = hs_1;
+                const float _e131 = xi_from_bits(_e130);
+                const bool _e132 = weighted_replace(_e120, _e129, _e131);
+                local_34 = _e132;
+            } else {
+                local_34 = false;
+            }
+            bool _e134 = local_34;
+            if (_e134) {
+                ReuseSlot _e135 = s_4;
+                out_ = _e135;
+                out_target = _e59;
+            }
+        }
+    }
+    float _e140 = w_sum_2;
+    float _e141 = out_target;
+    const float _e142 = gris_contribution_weight(_e140, _e141);
+    out_.w = _e142;
+    ReuseSlot _e143 = out_;
+    const ReuseSlot reuseslot = _e143;
+    return reuseslot;
 }
 
 [numthreads(8, 8, 1)]
@@ -1451,47 +1599,20 @@ void main(uint3 gid : SV_DispatchThreadID)
     Domain doms[3] = (Domain[3])0;
     bool local_2 = (bool)0;
     uint hs = (uint)0;
-    uint kept_light[8] = (uint[8])0;
-    uint kept_cells[8] = (uint[8])0;
-    float kept_w[8] = (float[8])0;
-    uint fin_light[8] = (uint[8])0;
-    uint fin_cells[8] = (uint[8])0;
-    float fin_w[8] = (float[8])0;
+    ReuseSlot kept[8] = (ReuseSlot[8])0;
+    ReuseSlot fin[8] = (ReuseSlot[8])0;
     uint q_1 = 0u;
-    float w_sum = (float)0;
-    uint chosen = (uint)0;
-    uint chosen_cells = (uint)0;
-    float chosen_target = (float)0;
-    uint j = (uint)0;
-    uint li = (uint)0;
-    uint cells = (uint)0;
-    float w_in = (float)0;
-    bool local_3 = (bool)0;
-    float own = (float)0;
-    float all_ = (float)0;
-    bool local_4 = (bool)0;
-    float s_sum = (float)0;
-    float s_target = (float)0;
-    uint j_1 = (uint)0;
-    uint li_1 = (uint)0;
-    uint cells_1 = (uint)0;
-    float w_in_1 = (float)0;
-    bool local_5 = (bool)0;
-    float own_1 = (float)0;
-    float all_1 = (float)0;
-    uint k = (uint)0;
-    bool local_6 = (bool)0;
     bool visible[8] = (bool[8])0;
-    uint k_1 = 0u;
+    uint k = 0u;
     float w = (float)0;
     bool first = (bool)0;
-    uint j_2 = (uint)0;
-    bool local_7 = (bool)0;
-    bool local_8 = (bool)0;
-    bool local_9 = (bool)0;
-    uint j_3 = (uint)0;
+    uint j = (uint)0;
+    bool local_3 = (bool)0;
+    bool local_4 = (bool)0;
+    bool local_5 = (bool)0;
+    uint j_1 = (uint)0;
     uint q_2 = 0u;
-    bool local_10 = (bool)0;
+    bool local_6 = (bool)0;
 
     uint _e4 = view.width;
     if (!((gid.x >= _e4))) {
@@ -1521,29 +1642,29 @@ void main(uint3 gid : SV_DispatchThreadID)
         reuse_next.Store(12+0+((gid.y * _e45) + gid.x)*144, asuint(0.0));
         return;
     }
-    float3 x_16 = _e21.xyz;
-    float3 n_14 = (nn / (sqrt(len2_)).xxx);
-    r = n_14;
+    float3 x_17 = _e21.xyz;
+    float3 n_15 = (nn / (sqrt(len2_)).xxx);
+    r = n_15;
     float4 mr = metal_rough_tex.Load(int3(texel_1, int(0)));
     float4 _e70 = base_color_tex.Load(int3(texel_1, int(0)));
     float3 _e77 = view.eye;
-    const Material _e80 = material_of(_e70.xyz, mr.z, mr.y, mr.w, normalize((_e77 - x_16)));
+    const Material _e80 = material_of(_e70.xyz, mr.z, mr.y, mr.w, normalize((_e77 - x_17)));
     m = _e80;
     float3 _e82 = m.base;
     float _e84 = m.metallic;
     const float _e86 = bevy_f0_(mr.w);
     float _e90 = m.alpha;
     float3 _e92 = m.v;
-    const float4 _e94 = receiver_lobe(_e82, _e84, (_e86).xxx, 1.0, _e90, dot(n_14, _e92));
+    const float4 _e94 = receiver_lobe(_e82, _e84, (_e86).xxx, 1.0, _e90, dot(n_15, _e92));
     lobe = _e94;
     float3 _e96 = m.v;
-    const float3 _e97 = mirror_dir(n_14, _e96);
+    const float3 _e97 = mirror_dir(n_15, _e96);
     r = _e97;
     float4 _e98 = lobe;
     const float4 _e99 = range_lobe(_e98);
     float _e102 = view.shadow_offset;
     float3 _e105 = view.eye;
-    float eps_3 = (_e102 * length((_e105 - x_16)));
+    float eps_3 = (_e102 * length((_e105 - x_17)));
     uint _e111 = view.seed;
     uint _e115 = view.width;
     uint _e121 = view.frame;
@@ -1553,21 +1674,21 @@ void main(uint3 gid : SV_DispatchThreadID)
     hc = _e122;
     const uint _e144 = bsh_first(BSH);
     float3 _e145 = r;
-    const uint _e146 = bsh_next_leaf_lobe(BSH, _e144, x_16, _e145, _e99);
+    const uint _e146 = bsh_next_leaf_lobe(BSH, _e144, x_17, _e145, _e99);
     b = _e146;
-    uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
-    bool loop_init_3 = true;
+    uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
+    bool loop_init_5 = true;
     while(true) {
-        if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
-        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
-        if (!loop_init_3) {
+        if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
+        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+        if (!loop_init_5) {
             uint _e207 = b;
             uint _e210 = asuint(bsh_nodes.Load(20+_e207*32));
             float3 _e211 = r;
-            const uint _e212 = bsh_next_leaf_lobe(BSH, _e210, x_16, _e211, _e99);
+            const uint _e212 = bsh_next_leaf_lobe(BSH, _e210, x_17, _e211, _e99);
             b = _e212;
         }
-        loop_init_3 = false;
+        loop_init_5 = false;
         uint _e148 = b;
         if ((_e148 != BSH_NONE)) {
         } else {
@@ -1577,7 +1698,7 @@ void main(uint3 gid : SV_DispatchThreadID)
             uint _e151 = count;
             count = (_e151 + 1u);
             uint _e155 = b;
-            uint li_5 = asuint(bsh_nodes.Load(24+_e155*32));
+            uint li_3 = asuint(bsh_nodes.Load(24+_e155*32));
             uint _e159 = h;
             const uint _e160 = pcg_hash(_e159);
             h = _e160;
@@ -1593,23 +1714,23 @@ void main(uint3 gid : SV_DispatchThreadID)
             float2 u_4 = float2(_e166, _e168);
             float3 _e170 = r;
             Material _e171 = m;
-            const Shaded _e176 = shade_pick_traced(li_5, x_16, n_14, _e170, _e99, _e171, 1.0, u_4.x, u_4.y, eps_3, false);
+            const Shaded _e176 = shade_pick_traced(li_3, x_17, n_15, _e170, _e99, _e171, 1.0, u_4.x, u_4.y, eps_3, false);
             const float3 _e177 = output_of(_e176);
             const float _e178 = resample_target(_e177);
             if ((_e178 > 0.0)) {
                 float _e181 = total;
                 total = (_e181 + _e178);
                 q = 0u;
-                uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
-                bool loop_init_4 = true;
+                uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
+                bool loop_init_6 = true;
                 while(true) {
-                    if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
-                    loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-                    if (!loop_init_4) {
+                    if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
+                    loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
+                    if (!loop_init_6) {
                         uint _e203 = q;
                         q = (_e203 + 1u);
                     }
-                    loop_init_4 = false;
+                    loop_init_6 = false;
                     uint _e185 = q;
                     if ((_e185 < K)) {
                     } else {
@@ -1625,7 +1746,7 @@ void main(uint3 gid : SV_DispatchThreadID)
                         const bool _e193 = weighted_replace(_e178, _e190, _e192);
                         if (_e193) {
                             uint _e194 = q;
-                            slot_light[min(uint(_e194), 7u)] = li_5;
+                            slot_light[min(uint(_e194), 7u)] = li_3;
                             uint _e196 = q;
                             slot_u[min(uint(_e196), 7u)] = u_4;
                             uint _e198 = q;
@@ -1642,7 +1763,7 @@ void main(uint3 gid : SV_DispatchThreadID)
     uint pixel_1 = ((gid.y * _e216) + gid.x);
     float3 _e223 = view.eye;
     const uint _e227 = reuse_stream(_e122, 0u);
-    const uint _e228 = reuse_domains(x_16, n_14, length((_e223 - x_16)), _e227, doms);
+    const uint _e228 = reuse_domains(x_17, n_15, length((_e223 - x_17)), _e227, doms);
     if ((_e228 > 0u)) {
         bool _e235 = doms[0].temporal;
         local_2 = _e235;
@@ -1655,472 +1776,229 @@ void main(uint3 gid : SV_DispatchThreadID)
     float confidence = (1.0 + (own_history ? _e243 : 0.0));
     const uint _e249 = reuse_stream(_e122, 1u);
     hs = _e249;
-    uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
-    bool loop_init_5 = true;
+    uint2 loop_bound_9 = uint2(4294967295u, 4294967295u);
+    bool loop_init_7 = true;
     while(true) {
-        if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
-        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
-        if (!loop_init_5) {
-            uint _e531 = q_1;
-            q_1 = (_e531 + 1u);
+        if (all(loop_bound_9 == uint2(0u, 0u))) { break; }
+        loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
+        if (!loop_init_7) {
+            uint _e290 = q_1;
+            q_1 = (_e290 + 1u);
         }
-        loop_init_5 = false;
-        uint _e259 = q_1;
-        if ((_e259 < K)) {
+        loop_init_7 = false;
+        uint _e255 = q_1;
+        if ((_e255 < K)) {
         } else {
             break;
         }
         {
-            w_sum = 0.0;
-            chosen = 0u;
-            chosen_cells = 0u;
-            chosen_target = 0.0;
+            uint _e258 = q_1;
+            uint _e260 = q_1;
+            uint _e261 = q_1;
+            uint _e263 = slot_light[min(uint(_e261), 7u)];
+            uint _e264 = q_1;
+            uint _e266 = slot_cells[min(uint(_e264), 7u)];
+            float _e267 = total;
+            Material _e272 = m;
+            const ReuseSlot _e273 = gris_combine(_e260, ConstructReuseSlot(_e263, _e266, _e267), true, 1.0, 0u, first_1, x_17, n_15, _e272, doms, hs);
+            kept[min(uint(_e258), 7u)] = _e273;
+            uint _e274 = q_1;
+            uint _e276 = q_1;
+            ReuseSlot _e278 = kept[min(uint(_e276), 7u)];
+            fin[min(uint(_e274), 7u)] = _e278;
+            if ((_e228 > first_1)) {
+                uint _e280 = q_1;
+                uint _e282 = q_1;
+                uint _e283 = q_1;
+                ReuseSlot _e285 = kept[min(uint(_e283), 7u)];
+                Material _e287 = m;
+                const ReuseSlot _e288 = gris_combine(_e282, _e285, false, confidence, first_1, _e228, x_17, n_15, _e287, doms, hs);
+                fin[min(uint(_e280), 7u)] = _e288;
+            }
+        }
+    }
+    uint2 loop_bound_10 = uint2(4294967295u, 4294967295u);
+    bool loop_init_8 = true;
+    while(true) {
+        if (all(loop_bound_10 == uint2(0u, 0u))) { break; }
+        loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
+        if (!loop_init_8) {
+            uint _e426 = k;
+            k = (_e426 + 1u);
+        }
+        loop_init_8 = false;
+        uint _e295 = k;
+        if ((_e295 < K)) {
+        } else {
+            break;
+        }
+        {
+            uint _e298 = k;
+            float _e301 = fin[min(uint(_e298), 7u)].w;
+            w = _e301;
+            float _e303 = w;
+            first = (_e303 > 0.0);
             j = 0u;
-            uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
-            bool loop_init_6 = true;
+            uint2 loop_bound_11 = uint2(4294967295u, 4294967295u);
+            bool loop_init_9 = true;
             while(true) {
-                if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
-                loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
-                if (!loop_init_6) {
-                    uint _e374 = j;
-                    j = (_e374 + 1u);
+                if (all(loop_bound_11 == uint2(0u, 0u))) { break; }
+                loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
+                if (!loop_init_9) {
+                    uint _e361 = j;
+                    j = (_e361 + 1u);
                 }
-                loop_init_6 = false;
-                uint _e272 = j;
-                if ((_e272 <= first_1)) {
+                loop_init_9 = false;
+                uint _e309 = j;
+                if ((_e309 < K)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e274 = q_1;
-                    uint _e276 = slot_light[min(uint(_e274), 7u)];
-                    li = _e276;
-                    uint _e278 = q_1;
-                    uint _e280 = slot_cells[min(uint(_e278), 7u)];
-                    cells = _e280;
-                    float _e282 = total;
-                    w_in = _e282;
-                    uint _e284 = j;
-                    if ((_e284 > 0u)) {
-                        uint _e290 = doms[0].pixel;
-                        uint _e293 = q_1;
-                        ReuseSlot s_6 = ConstructReuseSlot(asuint(reuse_prev.Load(_e293*12+48+_e290*144+0)), asuint(reuse_prev.Load(_e293*12+48+_e290*144+4)), asfloat(reuse_prev.Load(_e293*12+48+_e290*144+8)));
-                        li = s_6.light;
-                        cells = s_6.u;
-                        w_in = s_6.w;
-                    }
-                    float _e299 = w_in;
-                    if (!(!((_e299 > 0.0)))) {
-                        uint _e306 = li;
-                        local_3 = (_e306 >= ((NagaBufferLength(lights) - 0) / 64));
+                    uint _e312 = j;
+                    uint _e313 = k;
+                    if ((_e312 != _e313)) {
+                        uint _e317 = j;
+                        float _e320 = fin[min(uint(_e317), 7u)].w;
+                        local_3 = (_e320 > 0.0);
                     } else {
-                        local_3 = true;
+                        local_3 = false;
                     }
-                    bool _e311 = local_3;
-                    if (_e311) {
-                        continue;
-                    }
-                    uint _e313 = li;
-                    GpuLight _e315 = ConstructGpuLight(asfloat(lights.Load3(_e313*64+0)), asuint(lights.Load(_e313*64+12)), asfloat(lights.Load3(_e313*64+16)), asfloat(lights.Load(_e313*64+28)), asfloat(lights.Load3(_e313*64+32)), asfloat(lights.Load(_e313*64+44)), asfloat(lights.Load3(_e313*64+48)), asuint(lights.Load(_e313*64+60)));
-                    uint _e316 = cells;
-                    Material _e317 = m;
-                    const float _e318 = reuse_target(_e315, _e316, x_16, n_14, _e317);
-                    if (!((_e318 > 0.0))) {
-                        continue;
-                    }
-                    uint _e322 = j;
-                    if ((_e322 == 0u)) {
-                        float _e325 = total;
-                        w_in = (_e325 / _e318);
-                    }
-                    own = _e318;
-                    all_ = _e318;
-                    if (own_history) {
-                        float _e331 = doms[0].c;
-                        uint _e333 = li;
-                        GpuLight _e335 = ConstructGpuLight(asfloat(lights_prev.Load3(_e333*64+0)), asuint(lights_prev.Load(_e333*64+12)), asfloat(lights_prev.Load3(_e333*64+16)), asfloat(lights_prev.Load(_e333*64+28)), asfloat(lights_prev.Load3(_e333*64+32)), asfloat(lights_prev.Load(_e333*64+44)), asfloat(lights_prev.Load3(_e333*64+48)), asuint(lights_prev.Load(_e333*64+60)));
-                        uint _e336 = cells;
-                        float3 _e339 = doms[0].x;
-                        float3 _e342 = doms[0].n;
-                        Material _e345 = doms[0].m;
-                        const float _e346 = reuse_target(_e335, _e336, _e339, _e342, _e345);
-                        float t_6 = (_e331 * _e346);
-                        float _e348 = all_;
-                        all_ = (_e348 + t_6);
-                        uint _e350 = j;
-                        if ((_e350 == 1u)) {
-                            own = t_6;
-                        }
-                    }
-                    float _e353 = own;
-                    float _e354 = all_;
-                    float _e355 = w_in;
-                    const float _e356 = gris_weight(_e353, _e354, _e318, _e355);
-                    float _e357 = w_sum;
-                    w_sum = (_e357 + _e356);
-                    uint _e359 = hs;
-                    const uint _e360 = pcg_hash(_e359);
-                    hs = _e360;
-                    if ((_e356 > 0.0)) {
-                        float _e365 = w_sum;
-                        uint _e366 = hs;
-                        const float _e367 = xi_from_bits(_e366);
-                        const bool _e368 = weighted_replace(_e356, _e365, _e367);
-                        local_4 = _e368;
+                    bool _e324 = local_3;
+                    if (_e324) {
+                        uint _e327 = j;
+                        uint _e330 = fin[min(uint(_e327), 7u)].light;
+                        uint _e331 = j;
+                        uint _e334 = fin[min(uint(_e331), 7u)].u;
+                        uint _e335 = k;
+                        uint _e338 = fin[min(uint(_e335), 7u)].light;
+                        uint _e339 = k;
+                        uint _e342 = fin[min(uint(_e339), 7u)].u;
+                        const bool _e343 = same_pick(_e330, _e334, _e338, _e342);
+                        local_4 = _e343;
                     } else {
                         local_4 = false;
                     }
-                    bool _e370 = local_4;
-                    if (_e370) {
-                        uint _e371 = li;
-                        chosen = _e371;
-                        uint _e372 = cells;
-                        chosen_cells = _e372;
-                        chosen_target = _e318;
+                    bool _e345 = local_4;
+                    if (_e345) {
+                        bool _e346 = first;
+                        if (_e346) {
+                            uint _e349 = j;
+                            uint _e350 = k;
+                            local_5 = (_e349 > _e350);
+                        } else {
+                            local_5 = false;
+                        }
+                        bool _e353 = local_5;
+                        first = _e353;
+                        float _e354 = w;
+                        uint _e355 = j;
+                        float _e358 = fin[min(uint(_e355), 7u)].w;
+                        w = (_e354 + _e358);
                     }
                 }
             }
-            uint _e376 = q_1;
-            uint _e378 = chosen;
-            kept_light[min(uint(_e376), 7u)] = _e378;
-            uint _e379 = q_1;
-            uint _e381 = chosen_cells;
-            kept_cells[min(uint(_e379), 7u)] = _e381;
-            uint _e382 = q_1;
-            float _e384 = w_sum;
-            float _e385 = chosen_target;
-            const float _e386 = gris_contribution_weight(_e384, _e385);
-            kept_w[min(uint(_e382), 7u)] = _e386;
-            uint _e387 = q_1;
-            uint _e389 = chosen;
-            fin_light[min(uint(_e387), 7u)] = _e389;
-            uint _e390 = q_1;
-            uint _e392 = chosen_cells;
-            fin_cells[min(uint(_e390), 7u)] = _e392;
-            uint _e393 = q_1;
-            uint _e395 = q_1;
-            float _e397 = kept_w[min(uint(_e395), 7u)];
-            fin_w[min(uint(_e393), 7u)] = _e397;
-            if ((_e228 > first_1)) {
-                s_sum = 0.0;
-                s_target = 0.0;
-                j_1 = first_1;
-                uint2 loop_bound_9 = uint2(4294967295u, 4294967295u);
-                bool loop_init_7 = true;
+            bool _e363 = first;
+            if (_e363) {
+                uint _e365 = k;
+                uint _e368 = fin[min(uint(_e365), 7u)].light;
+                GpuLight _e370 = ConstructGpuLight(asfloat(lights.Load3(_e368*64+0)), asuint(lights.Load(_e368*64+12)), asfloat(lights.Load3(_e368*64+16)), asfloat(lights.Load(_e368*64+28)), asfloat(lights.Load3(_e368*64+32)), asfloat(lights.Load(_e368*64+44)), asfloat(lights.Load3(_e368*64+48)), asuint(lights.Load(_e368*64+60)));
+                float _e373 = w;
+                uint _e376 = k;
+                uint _e379 = fin[min(uint(_e376), 7u)].u;
+                const float _e380 = grid_coordinate(_e379);
+                uint _e381 = k;
+                uint _e384 = fin[min(uint(_e381), 7u)].u;
+                const float _e387 = grid_coordinate((_e384 << 16u));
+                const Connection _e389 = connect_record(_e370, x_17, n_15, n_15, UNRANGED, UNRANGED, (_e373 / 8.0), _e380, _e387, eps_3, true);
+                Material _e390 = m;
+                const Shaded _e391 = shade_connection(_e389, x_17, n_15, _e390);
+                Shaded _e392 = t;
+                const Shaded _e393 = add(_e392, _e391);
+                t = _e393;
+                uint _e394 = k;
+                j_1 = _e394;
+                uint2 loop_bound_12 = uint2(4294967295u, 4294967295u);
+                bool loop_init_10 = true;
                 while(true) {
-                    if (all(loop_bound_9 == uint2(0u, 0u))) { break; }
-                    loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
-                    if (!loop_init_7) {
-                        uint _e523 = j_1;
-                        j_1 = (_e523 + 1u);
+                    if (all(loop_bound_12 == uint2(0u, 0u))) { break; }
+                    loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
+                    if (!loop_init_10) {
+                        uint _e423 = j_1;
+                        j_1 = (_e423 + 1u);
                     }
-                    loop_init_7 = false;
-                    uint _e404 = j_1;
-                    if ((_e404 <= _e228)) {
+                    loop_init_10 = false;
+                    uint _e396 = j_1;
+                    if ((_e396 < K)) {
                     } else {
                         break;
                     }
                     {
-                        uint _e406 = q_1;
-                        uint _e408 = kept_light[min(uint(_e406), 7u)];
-                        li_1 = _e408;
-                        uint _e410 = q_1;
-                        uint _e412 = kept_cells[min(uint(_e410), 7u)];
-                        cells_1 = _e412;
-                        uint _e414 = q_1;
-                        float _e416 = kept_w[min(uint(_e414), 7u)];
-                        w_in_1 = _e416;
-                        uint _e418 = j_1;
-                        if ((_e418 > first_1)) {
-                            uint _e421 = j_1;
-                            uint _e426 = doms[min(uint((_e421 - 1u)), 2u)].pixel;
-                            uint _e429 = q_1;
-                            ReuseSlot s_7 = ConstructReuseSlot(asuint(reuse_prev.Load(_e429*12+48+_e426*144+0)), asuint(reuse_prev.Load(_e429*12+48+_e426*144+4)), asfloat(reuse_prev.Load(_e429*12+48+_e426*144+8)));
-                            li_1 = s_7.light;
-                            cells_1 = s_7.u;
-                            w_in_1 = s_7.w;
-                        }
-                        float _e435 = w_in_1;
-                        if (!(!((_e435 > 0.0)))) {
-                            uint _e442 = li_1;
-                            local_5 = (_e442 >= ((NagaBufferLength(lights) - 0) / 64));
-                        } else {
-                            local_5 = true;
-                        }
-                        bool _e447 = local_5;
-                        if (_e447) {
-                            continue;
-                        }
-                        uint _e449 = li_1;
-                        GpuLight _e451 = ConstructGpuLight(asfloat(lights.Load3(_e449*64+0)), asuint(lights.Load(_e449*64+12)), asfloat(lights.Load3(_e449*64+16)), asfloat(lights.Load(_e449*64+28)), asfloat(lights.Load3(_e449*64+32)), asfloat(lights.Load(_e449*64+44)), asfloat(lights.Load3(_e449*64+48)), asuint(lights.Load(_e449*64+60)));
-                        uint _e452 = cells_1;
-                        Material _e453 = m;
-                        const float _e454 = reuse_target(_e451, _e452, x_16, n_14, _e453);
-                        if (!((_e454 > 0.0))) {
-                            continue;
-                        }
-                        own_1 = (confidence * _e454);
-                        float _e460 = own_1;
-                        all_1 = _e460;
-                        k = first_1;
-                        uint2 loop_bound_10 = uint2(4294967295u, 4294967295u);
-                        bool loop_init_8 = true;
-                        while(true) {
-                            if (all(loop_bound_10 == uint2(0u, 0u))) { break; }
-                            loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
-                            if (!loop_init_8) {
-                                uint _e496 = k;
-                                k = (_e496 + 1u);
-                            }
-                            loop_init_8 = false;
-                            uint _e463 = k;
-                            if ((_e463 < _e228)) {
-                            } else {
-                                break;
-                            }
-                            {
-                                uint _e465 = k;
-                                float _e468 = doms[min(uint(_e465), 2u)].c;
-                                uint _e470 = li_1;
-                                GpuLight _e472 = ConstructGpuLight(asfloat(lights_prev.Load3(_e470*64+0)), asuint(lights_prev.Load(_e470*64+12)), asfloat(lights_prev.Load3(_e470*64+16)), asfloat(lights_prev.Load(_e470*64+28)), asfloat(lights_prev.Load3(_e470*64+32)), asfloat(lights_prev.Load(_e470*64+44)), asfloat(lights_prev.Load3(_e470*64+48)), asuint(lights_prev.Load(_e470*64+60)));
-                                uint _e473 = cells_1;
-                                uint _e474 = k;
-                                float3 _e477 = doms[min(uint(_e474), 2u)].x;
-                                uint _e478 = k;
-                                float3 _e481 = doms[min(uint(_e478), 2u)].n;
-                                uint _e482 = k;
-                                Material _e485 = doms[min(uint(_e482), 2u)].m;
-                                const float _e486 = reuse_target(_e472, _e473, _e477, _e481, _e485);
-                                float t_7 = (_e468 * _e486);
-                                float _e488 = all_1;
-                                all_1 = (_e488 + t_7);
-                                uint _e490 = k;
-                                uint _e493 = j_1;
-                                if (((_e490 + 1u) == _e493)) {
-                                    own_1 = t_7;
-                                }
-                            }
-                        }
-                        float _e498 = own_1;
-                        float _e499 = all_1;
-                        float _e500 = w_in_1;
-                        const float _e501 = gris_weight(_e498, _e499, _e454, _e500);
-                        float _e502 = s_sum;
-                        s_sum = (_e502 + _e501);
-                        uint _e504 = hs;
-                        const uint _e505 = pcg_hash(_e504);
-                        hs = _e505;
-                        if ((_e501 > 0.0)) {
-                            float _e510 = s_sum;
-                            uint _e511 = hs;
-                            const float _e512 = xi_from_bits(_e511);
-                            const bool _e513 = weighted_replace(_e501, _e510, _e512);
-                            local_6 = _e513;
-                        } else {
-                            local_6 = false;
-                        }
-                        bool _e515 = local_6;
-                        if (_e515) {
-                            uint _e516 = q_1;
-                            uint _e518 = li_1;
-                            fin_light[min(uint(_e516), 7u)] = _e518;
-                            uint _e519 = q_1;
-                            uint _e521 = cells_1;
-                            fin_cells[min(uint(_e519), 7u)] = _e521;
-                            s_target = _e454;
-                        }
-                    }
-                }
-                uint _e525 = q_1;
-                float _e527 = s_sum;
-                float _e528 = s_target;
-                const float _e529 = gris_contribution_weight(_e527, _e528);
-                fin_w[min(uint(_e525), 7u)] = _e529;
-            }
-        }
-    }
-    uint2 loop_bound_11 = uint2(4294967295u, 4294967295u);
-    bool loop_init_9 = true;
-    while(true) {
-        if (all(loop_bound_11 == uint2(0u, 0u))) { break; }
-        loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
-        if (!loop_init_9) {
-            uint _e653 = k_1;
-            k_1 = (_e653 + 1u);
-        }
-        loop_init_9 = false;
-        uint _e536 = k_1;
-        if ((_e536 < K)) {
-        } else {
-            break;
-        }
-        {
-            uint _e539 = k_1;
-            float _e541 = fin_w[min(uint(_e539), 7u)];
-            w = _e541;
-            float _e543 = w;
-            first = (_e543 > 0.0);
-            j_2 = 0u;
-            uint2 loop_bound_12 = uint2(4294967295u, 4294967295u);
-            bool loop_init_10 = true;
-            while(true) {
-                if (all(loop_bound_12 == uint2(0u, 0u))) { break; }
-                loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
-                if (!loop_init_10) {
-                    uint _e595 = j_2;
-                    j_2 = (_e595 + 1u);
-                }
-                loop_init_10 = false;
-                uint _e549 = j_2;
-                if ((_e549 < K)) {
-                } else {
-                    break;
-                }
-                {
-                    uint _e552 = j_2;
-                    uint _e553 = k_1;
-                    if ((_e552 != _e553)) {
-                        uint _e557 = j_2;
-                        float _e559 = fin_w[min(uint(_e557), 7u)];
-                        local_7 = (_e559 > 0.0);
-                    } else {
-                        local_7 = false;
-                    }
-                    bool _e563 = local_7;
-                    if (_e563) {
-                        uint _e566 = j_2;
-                        uint _e568 = fin_light[min(uint(_e566), 7u)];
-                        uint _e569 = j_2;
-                        uint _e571 = fin_cells[min(uint(_e569), 7u)];
-                        uint _e572 = k_1;
-                        uint _e574 = fin_light[min(uint(_e572), 7u)];
-                        uint _e575 = k_1;
-                        uint _e577 = fin_cells[min(uint(_e575), 7u)];
-                        const bool _e578 = same_pick(_e568, _e571, _e574, _e577);
-                        local_8 = _e578;
-                    } else {
-                        local_8 = false;
-                    }
-                    bool _e580 = local_8;
-                    if (_e580) {
-                        bool _e581 = first;
-                        if (_e581) {
-                            uint _e584 = j_2;
-                            uint _e585 = k_1;
-                            local_9 = (_e584 > _e585);
-                        } else {
-                            local_9 = false;
-                        }
-                        bool _e588 = local_9;
-                        first = _e588;
-                        float _e589 = w;
-                        uint _e590 = j_2;
-                        float _e592 = fin_w[min(uint(_e590), 7u)];
-                        w = (_e589 + _e592);
-                    }
-                }
-            }
-            bool _e597 = first;
-            if (_e597) {
-                uint _e599 = k_1;
-                uint _e601 = fin_light[min(uint(_e599), 7u)];
-                GpuLight _e603 = ConstructGpuLight(asfloat(lights.Load3(_e601*64+0)), asuint(lights.Load(_e601*64+12)), asfloat(lights.Load3(_e601*64+16)), asfloat(lights.Load(_e601*64+28)), asfloat(lights.Load3(_e601*64+32)), asfloat(lights.Load(_e601*64+44)), asfloat(lights.Load3(_e601*64+48)), asuint(lights.Load(_e601*64+60)));
-                float _e606 = w;
-                uint _e609 = k_1;
-                uint _e611 = fin_cells[min(uint(_e609), 7u)];
-                const float _e612 = grid_coordinate(_e611);
-                uint _e613 = k_1;
-                uint _e615 = fin_cells[min(uint(_e613), 7u)];
-                const float _e618 = grid_coordinate((_e615 << 16u));
-                const Connection _e620 = connect_record(_e603, x_16, n_14, n_14, UNRANGED, UNRANGED, (_e606 / 8.0), _e612, _e618, eps_3, true);
-                Material _e621 = m;
-                const Shaded _e622 = shade_connection(_e620, x_16, n_14, _e621);
-                Shaded _e623 = t;
-                const Shaded _e624 = add(_e623, _e622);
-                t = _e624;
-                uint _e625 = k_1;
-                j_3 = _e625;
-                uint2 loop_bound_13 = uint2(4294967295u, 4294967295u);
-                bool loop_init_11 = true;
-                while(true) {
-                    if (all(loop_bound_13 == uint2(0u, 0u))) { break; }
-                    loop_bound_13 -= uint2(loop_bound_13.y == 0u, 1u);
-                    if (!loop_init_11) {
-                        uint _e650 = j_3;
-                        j_3 = (_e650 + 1u);
-                    }
-                    loop_init_11 = false;
-                    uint _e627 = j_3;
-                    if ((_e627 < K)) {
-                    } else {
-                        break;
-                    }
-                    {
-                        uint _e630 = j_3;
-                        uint _e632 = fin_light[min(uint(_e630), 7u)];
-                        uint _e633 = j_3;
-                        uint _e635 = fin_cells[min(uint(_e633), 7u)];
-                        uint _e636 = k_1;
-                        uint _e638 = fin_light[min(uint(_e636), 7u)];
-                        uint _e639 = k_1;
-                        uint _e641 = fin_cells[min(uint(_e639), 7u)];
-                        const bool _e642 = same_pick(_e632, _e635, _e638, _e641);
-                        if (_e642) {
-                            uint _e643 = j_3;
-                            const float3 _e645 = output_of(_e622);
-                            const float _e646 = resample_target(_e645);
-                            visible[min(uint(_e643), 7u)] = (_e646 > 0.0);
+                        uint _e399 = j_1;
+                        uint _e402 = fin[min(uint(_e399), 7u)].light;
+                        uint _e403 = j_1;
+                        uint _e406 = fin[min(uint(_e403), 7u)].u;
+                        uint _e407 = k;
+                        uint _e410 = fin[min(uint(_e407), 7u)].light;
+                        uint _e411 = k;
+                        uint _e414 = fin[min(uint(_e411), 7u)].u;
+                        const bool _e415 = same_pick(_e402, _e406, _e410, _e414);
+                        if (_e415) {
+                            uint _e416 = j_1;
+                            const float3 _e418 = output_of(_e391);
+                            const float _e419 = resample_target(_e418);
+                            visible[min(uint(_e416), 7u)] = (_e419 > 0.0);
                         }
                     }
                 }
             }
         }
     }
-    uint2 loop_bound_14 = uint2(4294967295u, 4294967295u);
-    bool loop_init_12 = true;
+    uint2 loop_bound_13 = uint2(4294967295u, 4294967295u);
+    bool loop_init_11 = true;
     while(true) {
-        if (all(loop_bound_14 == uint2(0u, 0u))) { break; }
-        loop_bound_14 -= uint2(loop_bound_14.y == 0u, 1u);
-        if (!loop_init_12) {
-            uint _e691 = q_2;
-            q_2 = (_e691 + 1u);
+        if (all(loop_bound_13 == uint2(0u, 0u))) { break; }
+        loop_bound_13 -= uint2(loop_bound_13.y == 0u, 1u);
+        if (!loop_init_11) {
+            uint _e467 = q_2;
+            q_2 = (_e467 + 1u);
         }
-        loop_init_12 = false;
-        uint _e657 = q_2;
-        if ((_e657 < K)) {
+        loop_init_11 = false;
+        uint _e430 = q_2;
+        if ((_e430 < K)) {
         } else {
             break;
         }
         {
-            uint _e662 = reuse.visibility;
-            if (!((_e662 == 0u))) {
-                uint _e668 = q_2;
-                bool _e670 = visible[min(uint(_e668), 7u)];
-                local_10 = _e670;
+            uint _e435 = reuse.visibility;
+            if (!((_e435 == 0u))) {
+                uint _e441 = q_2;
+                bool _e443 = visible[min(uint(_e441), 7u)];
+                local_6 = _e443;
             } else {
-                local_10 = true;
+                local_6 = true;
             }
-            bool keep = local_10;
-            uint _e676 = q_2;
-            uint _e678 = q_2;
-            uint _e680 = kept_light[min(uint(_e678), 7u)];
-            uint _e681 = q_2;
-            uint _e683 = kept_cells[min(uint(_e681), 7u)];
-            uint _e684 = q_2;
-            float _e686 = kept_w[min(uint(_e684), 7u)];
+            bool keep = local_6;
+            uint _e449 = q_2;
+            uint _e451 = q_2;
+            uint _e454 = kept[min(uint(_e451), 7u)].light;
+            uint _e455 = q_2;
+            uint _e458 = kept[min(uint(_e455), 7u)].u;
+            uint _e459 = q_2;
+            float _e462 = kept[min(uint(_e459), 7u)].w;
             {
-                ReuseSlot _value4 = ConstructReuseSlot(_e680, _e683, (keep ? _e686 : 0.0));
-                reuse_next.Store(_e676*12+48+pixel_1*144+0, asuint(_value4.light));
-                reuse_next.Store(_e676*12+48+pixel_1*144+4, asuint(_value4.u));
-                reuse_next.Store(_e676*12+48+pixel_1*144+8, asuint(_value4.w));
+                ReuseSlot _value4 = ConstructReuseSlot(_e454, _e458, (keep ? _e462 : 0.0));
+                reuse_next.Store(_e449*12+48+pixel_1*144+0, asuint(_value4.light));
+                reuse_next.Store(_e449*12+48+pixel_1*144+4, asuint(_value4.u));
+                reuse_next.Store(_e449*12+48+pixel_1*144+8, asuint(_value4.w));
             }
         }
     }
-    Material _e696 = m;
-    float _e699 = reuse.max_confidence;
-    const ReuseSurface _e701 = reuse_surface(x_16, n_14, _e696, min(confidence, _e699));
+    Material _e472 = m;
+    float _e475 = reuse.max_confidence;
+    const ReuseSurface _e477 = reuse_surface(x_17, n_15, _e472, min(confidence, _e475));
     {
-        ReuseSurface _value2 = _e701;
+        ReuseSurface _value2 = _e477;
         reuse_next.Store3(0+pixel_1*144+0, asuint(_value2.x));
         reuse_next.Store(0+pixel_1*144+12, asuint(_value2.m));
         reuse_next.Store3(0+pixel_1*144+16, asuint(_value2.n));
@@ -2130,9 +2008,9 @@ void main(uint3 gid : SV_DispatchThreadID)
         reuse_next.Store(0+pixel_1*144+40, asuint(_value2.pad1_));
         reuse_next.Store(0+pixel_1*144+44, asuint(_value2.pad2_));
     }
-    float3 _e704 = t.diffuse;
-    float3 _e706 = t.specular;
-    uint _e708 = count;
-    out_tex[texel_1] = float4((_e704 + _e706), float(_e708));
+    float3 _e480 = t.diffuse;
+    float3 _e482 = t.specular;
+    uint _e484 = count;
+    out_tex[texel_1] = float4((_e480 + _e482), float(_e484));
     return;
 }

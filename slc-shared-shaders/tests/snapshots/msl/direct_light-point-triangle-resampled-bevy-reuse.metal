@@ -158,13 +158,13 @@ struct Domain {
 struct type_19 {
     Domain inner[3];
 };
-struct type_22 {
+struct type_23 {
     metal::float2 inner[8];
 };
-struct type_23 {
+struct type_24 {
     float inner[8];
 };
-struct type_24 {
+struct type_25 {
     bool inner[8];
 };
 constant uint LIGHT_POINT = 0u;
@@ -346,28 +346,28 @@ float connection_cosine(
     metal::float3 ng,
     float r2_1
 ) {
-    bool local_11 = {};
-    bool local_12 = {};
+    bool local_7 = {};
+    bool local_8 = {};
     metal::float3 v_6 = x_2 - y;
     float d2_6 = metal::dot(v_6, v_6);
     bool _e7 = slc_keep(r2_1, d2_6);
     if (!(!(_e7))) {
-        local_11 = !((d2_6 > 0.0));
+        local_7 = !((d2_6 > 0.0));
     } else {
-        local_11 = true;
+        local_7 = true;
     }
-    bool _e16 = local_11;
+    bool _e16 = local_7;
     if (_e16) {
         return 0.0;
     }
     metal::float3 w_7 = v_6 / metal::float3(metal::sqrt(d2_6));
     float cos_x_1 = -(metal::dot(n, w_7));
     if (!((cos_x_1 <= 0.0))) {
-        local_12 = metal::dot(ng, w_7) >= 0.0;
+        local_8 = metal::dot(ng, w_7) >= 0.0;
     } else {
-        local_12 = true;
+        local_8 = true;
     }
-    bool _e32 = local_12;
+    bool _e32 = local_8;
     if (_e32) {
         return 0.0;
     }
@@ -420,10 +420,10 @@ float bsh_range_bound(
 
 bool weighted_replace(
     float w_3,
-    float w_sum_1,
+    float w_sum,
     float u_2
 ) {
-    return (u_2 * w_sum_1) < w_3;
+    return (u_2 * w_sum) < w_3;
 }
 
 float resample_target(
@@ -456,25 +456,25 @@ metal::float2 disk_offset(
 }
 
 float gris_weight(
-    float own_2,
-    float all_2,
+    float own,
+    float all,
     float p_hat,
     float w_4
 ) {
-    if (!((all_2 > 0.0))) {
+    if (!((all > 0.0))) {
         return 0.0;
     }
-    return ((own_2 / all_2) * p_hat) * w_4;
+    return ((own / all) * p_hat) * w_4;
 }
 
 float gris_contribution_weight(
-    float w_sum_2,
+    float w_sum_1,
     float p_hat_1
 ) {
     if (!((p_hat_1 > 0.0))) {
         return 0.0;
     }
-    return w_sum_2 / p_hat_1;
+    return w_sum_1 / p_hat_1;
 }
 
 float ggx_d(
@@ -503,13 +503,13 @@ float smith_visibility(
     float n_v,
     float alpha_2
 ) {
-    bool local_13 = {};
+    bool local_9 = {};
     if (!((n_l <= 0.0))) {
-        local_13 = n_v <= 0.0;
+        local_9 = n_v <= 0.0;
     } else {
-        local_13 = true;
+        local_9 = true;
     }
-    bool _e11 = local_13;
+    bool _e11 = local_9;
     if (_e11) {
         return 0.0;
     }
@@ -545,20 +545,20 @@ bool has_specular(
     metal::float3 f0_d_1,
     float f90_d_1
 ) {
-    bool local_14 = {};
-    bool local_15 = {};
+    bool local_10 = {};
+    bool local_11 = {};
     if (!((metallic_1 > 0.0))) {
-        local_14 = f90_d_1 > 0.0;
+        local_10 = f90_d_1 > 0.0;
     } else {
-        local_14 = true;
+        local_10 = true;
     }
-    bool _e11 = local_14;
+    bool _e11 = local_10;
     if (!(_e11)) {
-        local_15 = metal::max(metal::max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0.0;
+        local_11 = metal::max(metal::max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0.0;
     } else {
-        local_15 = true;
+        local_11 = true;
     }
-    bool _e23 = local_15;
+    bool _e23 = local_11;
     return _e23;
 }
 
@@ -576,16 +576,16 @@ metal::float4 receiver_lobe(
     float alpha_3,
     float n_v_1
 ) {
-    bool local_16 = {};
+    bool local_12 = {};
     metal::float3 _e10 = fresnel_schlick(f0_d_2, f90_d_2, n_v_1);
     float _e16 = channel_mean(((metal::float3(1.0, 1.0, 1.0) - _e10) * base_1) * (1.0 - metallic_2));
     if (!((n_v_1 <= 0.0))) {
         bool _e22 = has_specular(metallic_2, f0_d_2, f90_d_2);
-        local_16 = !(_e22);
+        local_12 = !(_e22);
     } else {
-        local_16 = true;
+        local_12 = true;
     }
-    bool _e25 = local_16;
+    bool _e25 = local_12;
     if (_e25) {
         return metal::float4(_e16, 0.0, alpha_3, n_v_1);
     }
@@ -655,9 +655,9 @@ float bevy_dfg(
 ) {
     float rx = 1.0 - r_3;
     float a004_ = (metal::min(rx * rx, metal::exp2(-9.28 * n_v_2)) * rx) + (0.0425 - (0.0275 * r_3));
-    float x_14 = metal::max((1.04 - (0.572 * r_3)) - (1.04 * a004_), 0.00005);
+    float x_15 = metal::max((1.04 - (0.572 * r_3)) - (1.04 * a004_), 0.00005);
     float y_1 = metal::max(((0.022 * r_3) - 0.04) + (1.04 * a004_), 0.00005);
-    return x_14 + y_1;
+    return x_15 + y_1;
 }
 
 metal::float3 bevy_brdf(
@@ -700,22 +700,22 @@ float cone_cos_of(
     float a_3,
     metal::float3 d
 ) {
-    bool local_17 = {};
-    bool local_18 = {};
+    bool local_13 = {};
+    bool local_14 = {};
     float vd = metal::dot(v_2, d);
     float h2_1 = d2_4 - (a_3 * a_3);
     if (!((h2_1 <= 0.0))) {
         if (vd >= 0.0) {
-            local_18 = (vd * vd) >= h2_1;
+            local_14 = (vd * vd) >= h2_1;
         } else {
-            local_18 = false;
+            local_14 = false;
         }
-        bool _e19 = local_18;
-        local_17 = _e19;
+        bool _e19 = local_14;
+        local_13 = _e19;
     } else {
-        local_17 = true;
+        local_13 = true;
     }
-    bool _e21 = local_17;
+    bool _e21 = local_13;
     if (_e21) {
         return 1.0;
     }
@@ -802,19 +802,19 @@ metal::float3 triangle_normal(
     metal::float3 b_4,
     metal::float3 c_4
 ) {
-    bool local_19 = {};
-    metal::float3 n_12 = metal::cross(b_4 - a_4, c_4 - a_4);
-    float l2_ = metal::dot(n_12, n_12);
+    bool local_15 = {};
+    metal::float3 n_13 = metal::cross(b_4 - a_4, c_4 - a_4);
+    float l2_ = metal::dot(n_13, n_13);
     if (!(!((l2_ > 0.0)))) {
-        local_19 = !((l2_ < 300000000000000000000000000000000000000.0));
+        local_15 = !((l2_ < 300000000000000000000000000000000000000.0));
     } else {
-        local_19 = true;
+        local_15 = true;
     }
-    bool _e17 = local_19;
+    bool _e17 = local_15;
     if (_e17) {
         return metal::float3(0.0, 0.0, 0.0);
     }
-    return n_12 / metal::float3(metal::sqrt(l2_));
+    return n_13 / metal::float3(metal::sqrt(l2_));
 }
 
 float ray_triangle(
@@ -826,9 +826,9 @@ float ray_triangle(
     float t_min,
     float t_max_1
 ) {
-    bool local_20 = {};
-    bool local_21 = {};
-    bool local_22 = {};
+    bool local_16 = {};
+    bool local_17 = {};
+    bool local_18 = {};
     metal::float3 e1_ = b_5 - a_5;
     metal::float3 e2_ = c_5 - a_5;
     metal::float3 p_5 = metal::cross(d_3, e2_);
@@ -837,35 +837,35 @@ float ray_triangle(
         return -1.0;
     }
     float inv = 1.0 / det;
-    metal::float3 s_4 = o_1 - a_5;
-    float u_3 = metal::dot(s_4, p_5) * inv;
+    metal::float3 s_5 = o_1 - a_5;
+    float u_3 = metal::dot(s_5, p_5) * inv;
     if (!((u_3 < 0.0))) {
-        local_20 = u_3 > 1.0;
+        local_16 = u_3 > 1.0;
     } else {
-        local_20 = true;
+        local_16 = true;
     }
-    bool _e28 = local_20;
+    bool _e28 = local_16;
     if (_e28) {
         return -1.0;
     }
-    metal::float3 q_3 = metal::cross(s_4, e1_);
-    float v_8 = metal::dot(d_3, q_3) * inv;
+    metal::float3 q_4 = metal::cross(s_5, e1_);
+    float v_8 = metal::dot(d_3, q_4) * inv;
     if (!((v_8 < 0.0))) {
-        local_21 = (u_3 + v_8) > 1.0;
+        local_17 = (u_3 + v_8) > 1.0;
     } else {
-        local_21 = true;
+        local_17 = true;
     }
-    bool _e42 = local_21;
+    bool _e42 = local_17;
     if (_e42) {
         return -1.0;
     }
-    float t_3 = metal::dot(e2_, q_3) * inv;
+    float t_3 = metal::dot(e2_, q_4) * inv;
     if (t_3 > t_min) {
-        local_22 = t_3 < t_max_1;
+        local_18 = t_3 < t_max_1;
     } else {
-        local_22 = false;
+        local_18 = false;
     }
-    bool _e51 = local_22;
+    bool _e51 = local_18;
     if (_e51) {
         return t_3;
     }
@@ -885,9 +885,9 @@ metal::float3 reproject(
     if (clip.w <= 0.0) {
         return metal::float3(-1.0, -1.0, 0.0);
     }
-    float x_15 = ((((clip.x / clip.w) + 1.0) * 0.5) * width) - 0.5;
+    float x_16 = ((((clip.x / clip.w) + 1.0) * 0.5) * width) - 0.5;
     float y_2 = (((1.0 - (clip.y / clip.w)) * 0.5) * height) - 0.5;
-    return metal::float3(x_15, y_2, clip.w);
+    return metal::float3(x_16, y_2, clip.w);
 }
 
 bool history_matches(
@@ -897,13 +897,13 @@ bool history_matches(
     float oh,
     float d_4
 ) {
-    bool local_23 = {};
+    bool local_19 = {};
     if (metal::abs(metal::dot(nh, p_3) - oh) <= (TEMPORAL_DEPTH_TOLERANCE * d_4)) {
-        local_23 = metal::dot(n_4, nh) >= TEMPORAL_NORMAL_COS;
+        local_19 = metal::dot(n_4, nh) >= TEMPORAL_NORMAL_COS;
     } else {
-        local_23 = false;
+        local_19 = false;
     }
-    bool _e17 = local_23;
+    bool _e17 = local_19;
     return _e17;
 }
 
@@ -965,12 +965,12 @@ GeoHit trace(
         if (metal::all(loop_bound == uint2(0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         uint _e21 = node_2;
-        GpuGeoNode n_13 = geo_nodes[_e21];
+        GpuGeoNode n_14 = geo_nodes[_e21];
         float _e27 = hit.t;
-        float _e28 = ray_aabb(o_2, _e14, n_13.bmin, n_13.bmax, _e27);
+        float _e28 = ray_aabb(o_2, _e14, n_14.bmin, n_14.bmax, _e27);
         if (_e28 >= 0.0) {
-            if (n_13.count > 0u) {
-                i = n_13.first;
+            if (n_14.count > 0u) {
+                i = n_14.first;
                 uint2 loop_bound_1 = uint2(4294967295u);
                 bool loop_init = true;
                 while(true) {
@@ -982,7 +982,7 @@ GeoHit trace(
                     }
                     loop_init = false;
                     uint _e36 = i;
-                    if (_e36 < (n_13.first + n_13.count)) {
+                    if (_e36 < (n_14.first + n_14.count)) {
                     } else {
                         break;
                     }
@@ -1006,11 +1006,11 @@ GeoHit trace(
                 uint _e60 = sp;
                 if (_e60 < 64u) {
                     uint _e63 = sp;
-                    stack.inner[_e63] = n_13.first + 1u;
+                    stack.inner[_e63] = n_14.first + 1u;
                     uint _e68 = sp;
                     sp = _e68 + 1u;
                 }
-                node_2 = n_13.first;
+                node_2 = n_14.first;
                 continue;
             }
         }
@@ -1093,19 +1093,19 @@ bool bsh_reaches(
     metal::float3 r_7,
     metal::float4 rl_3
 ) {
-    bool local_24 = {};
-    bool local_25 = {};
+    bool local_20 = {};
+    bool local_21 = {};
     bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_4);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
         bool _e20 = sphere_contains_point(node_3.center, node_3.radius * (rl_3.w * 1.0001), x_4);
-        local_24 = !(_e20);
+        local_20 = !(_e20);
     } else {
-        local_24 = true;
+        local_20 = true;
     }
-    bool _e23 = local_24;
+    bool _e23 = local_20;
     if (_e23) {
         return false;
     }
@@ -1126,11 +1126,11 @@ bool bsh_reaches(
     float s_c = _e50 * 1.001;
     float reach = node_3.extent + (metal::sqrt(s_c) * _e25);
     if (d2_7 <= ((node_3.radius * node_3.radius) * s_c)) {
-        local_25 = d2_7 <= (reach * reach);
+        local_21 = d2_7 <= (reach * reach);
     } else {
-        local_25 = false;
+        local_21 = false;
     }
-    bool _e67 = local_25;
+    bool _e67 = local_21;
     return _e67;
 }
 
@@ -1189,8 +1189,8 @@ Connection connect_record(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Connection c_6 = {};
-    bool local_26 = {};
-    bool local_27 = {};
+    bool local_22 = {};
+    bool local_23 = {};
     c_6.e = metal::float3(0.0);
     metal::float3 _e16 = light_point(l_3, u1_3, u2_3);
     c_6.y = _e16;
@@ -1202,16 +1202,16 @@ Connection connect_record(
         if (trace_1) {
             metal::float3 _e33 = c_6.y;
             bool _e34 = occluded(x_6 + (ng_1 * eps), _e33, geo_nodes, geo_tris, _buffer_sizes);
-            local_27 = _e34;
+            local_23 = _e34;
         } else {
-            local_27 = false;
+            local_23 = false;
         }
-        bool _e36 = local_27;
-        local_26 = _e36;
+        bool _e36 = local_23;
+        local_22 = _e36;
     } else {
-        local_26 = true;
+        local_22 = true;
     }
-    bool _e38 = local_26;
+    bool _e38 = local_22;
     if (_e38) {
         Connection _e39 = c_6;
         return _e39;
@@ -1228,7 +1228,7 @@ Connection connect_record(
 }
 
 Connection connect_traced(
-    uint li_2,
+    uint li,
     metal::float3 x_7,
     metal::float3 n_6,
     metal::float3 ng_2,
@@ -1245,22 +1245,22 @@ Connection connect_traced(
     device type_4 const& r2_3,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuLight _e12 = lights[li_2];
-    float _e15 = r2_3[li_2];
-    float _e19 = rt2_3[li_2];
+    GpuLight _e12 = lights[li];
+    float _e15 = r2_3[li];
+    float _e19 = rt2_3[li];
     Connection _e21 = connect_record(_e12, x_7, n_6, ng_2, s * _e15, s * _e19, w_res_1, u1_4, u2_4, eps_1, trace_2, geo_nodes, geo_tris, _buffer_sizes);
     return _e21;
 }
 
 float light_range_scale(
-    uint li_3,
+    uint li_1,
     metal::float3 x_8,
     metal::float3 r_9,
     metal::float4 rl_5,
     device type_14 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuLightCone c_11 = light_cones[li_3];
+    GpuLightCone c_11 = light_cones[li_1];
     float _e9 = range_scale_toward(rl_5, c_11.center, c_11.radius, x_8, r_9);
     return _e9;
 }
@@ -1292,7 +1292,7 @@ Shaded shade_connection(
 }
 
 Shaded shade_pick_traced(
-    uint li_4,
+    uint li_2,
     metal::float3 x_10,
     metal::float3 n_8,
     metal::float3 r_10,
@@ -1311,8 +1311,8 @@ Shaded shade_pick_traced(
     device type_14 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e11 = light_range_scale(li_4, x_10, r_10, rl_6, light_cones, _buffer_sizes);
-    Connection _e12 = connect_traced(li_4, x_10, n_8, n_8, _e11, w_6, u1_5, u2_5, eps_2, trace_3, geo_nodes, geo_tris, lights, rt2_3, r2_3, _buffer_sizes);
+    float _e11 = light_range_scale(li_2, x_10, r_10, rl_6, light_cones, _buffer_sizes);
+    Connection _e12 = connect_traced(li_2, x_10, n_8, n_8, _e11, w_6, u1_5, u2_5, eps_2, trace_3, geo_nodes, geo_tris, lights, rt2_3, r2_3, _buffer_sizes);
     Shaded _e13 = shade_connection(_e12, x_10, n_8, m_2);
     return _e13;
 }
@@ -1343,7 +1343,7 @@ metal::float3 output_of(
 
 float reuse_target(
     GpuLight l_4,
-    uint cells_2,
+    uint cells,
     metal::float3 x_11,
     metal::float3 n_9,
     Material m_3,
@@ -1351,8 +1351,8 @@ float reuse_target(
     device type_8 const& geo_tris,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e8 = grid_coordinate(cells_2);
-    float _e11 = grid_coordinate(cells_2 << 16u);
+    float _e8 = grid_coordinate(cells);
+    float _e11 = grid_coordinate(cells << 16u);
     Connection _e14 = connect_record(l_4, x_11, n_9, n_9, UNRANGED, UNRANGED, 1.0, _e8, _e11, 0.0, false, geo_nodes, geo_tris, _buffer_sizes);
     Shaded _e15 = shade_connection(_e14, x_11, n_9, m_3);
     metal::float3 _e16 = output_of(_e15);
@@ -1387,21 +1387,21 @@ bool same_pick(
     device type_12 const& lights,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    bool local_28 = {};
-    bool local_29 = {};
+    bool local_24 = {};
+    bool local_25 = {};
     if (la == lb) {
         if (!((ca == cb))) {
             uint _e14 = lights[la].kind;
-            local_29 = _e14 != LIGHT_TRIANGLE;
+            local_25 = _e14 != LIGHT_TRIANGLE;
         } else {
-            local_29 = true;
+            local_25 = true;
         }
-        bool _e18 = local_29;
-        local_28 = _e18;
+        bool _e18 = local_25;
+        local_24 = _e18;
     } else {
-        local_28 = false;
+        local_24 = false;
     }
-    bool _e20 = local_28;
+    bool _e20 = local_24;
     return _e20;
 }
 
@@ -1422,16 +1422,16 @@ uint reuse_domains(
 ) {
     uint nd = 0u;
     uint hr = {};
-    uint j_4 = 0u;
+    uint j_2 = 0u;
     metal::float2 p_4 = {};
+    bool local_26 = {};
+    bool local_27 = {};
+    bool local_28 = {};
+    bool seen = {};
+    uint k_1 = {};
+    bool local_29 = {};
     bool local_30 = {};
     bool local_31 = {};
-    bool local_32 = {};
-    bool seen = {};
-    uint k_2 = {};
-    bool local_33 = {};
-    bool local_34 = {};
-    bool local_35 = {};
     uint _e9 = reuse.has_history;
     if (_e9 != 1u) {
         return 0u;
@@ -1453,18 +1453,18 @@ uint reuse_domains(
         if (metal::all(loop_bound_3 == uint2(0u))) { break; }
         loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e175 = j_4;
-            j_4 = _e175 + 1u;
+            uint _e175 = j_2;
+            j_2 = _e175 + 1u;
         }
         loop_init_1 = false;
-        uint _e41 = j_4;
+        uint _e41 = j_2;
         if (_e41 < DOMAINS) {
         } else {
             break;
         }
         {
             p_4 = _e33.xy;
-            uint _e46 = j_4;
+            uint _e46 = j_2;
             if (_e46 > 0u) {
                 uint _e49 = hr;
                 uint _e50 = pcg_hash(_e49);
@@ -1484,43 +1484,43 @@ uint reuse_domains(
             metal::float2 _e63 = p_4;
             metal::int2 t_5 = naga_f2i32(metal::rint(_e63));
             if (!((t_5.x < 0))) {
-                local_30 = t_5.y < 0;
+                local_26 = t_5.y < 0;
             } else {
-                local_30 = true;
+                local_26 = true;
             }
-            bool _e76 = local_30;
+            bool _e76 = local_26;
             if (!(_e76)) {
                 uint _e83 = view.width;
-                local_31 = t_5.x >= static_cast<int>(_e83);
+                local_27 = t_5.x >= static_cast<int>(_e83);
             } else {
-                local_31 = true;
+                local_27 = true;
             }
-            bool _e87 = local_31;
+            bool _e87 = local_27;
             if (!(_e87)) {
                 uint _e94 = view.height;
-                local_32 = t_5.y >= static_cast<int>(_e94);
+                local_28 = t_5.y >= static_cast<int>(_e94);
             } else {
-                local_32 = true;
+                local_28 = true;
             }
-            bool _e98 = local_32;
+            bool _e98 = local_28;
             if (_e98) {
                 continue;
             }
             uint _e103 = view.width;
             uint pixel = (static_cast<uint>(t_5.y) * _e103) + static_cast<uint>(t_5.x);
             seen = false;
-            k_2 = 0u;
+            k_1 = 0u;
             uint2 loop_bound_4 = uint2(4294967295u);
             bool loop_init_2 = true;
             while(true) {
                 if (metal::all(loop_bound_4 == uint2(0u))) { break; }
                 loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
                 if (!loop_init_2) {
-                    uint _e127 = k_2;
-                    k_2 = _e127 + 1u;
+                    uint _e127 = k_1;
+                    k_1 = _e127 + 1u;
                 }
                 loop_init_2 = false;
-                uint _e112 = k_2;
+                uint _e112 = k_1;
                 uint _e113 = nd;
                 if (_e112 < _e113) {
                 } else {
@@ -1529,46 +1529,209 @@ uint reuse_domains(
                 {
                     bool _e115 = seen;
                     if (!(_e115)) {
-                        uint _e119 = k_2;
+                        uint _e119 = k_1;
                         uint _e122 = doms_1.inner[_e119].pixel;
-                        local_33 = _e122 == pixel;
+                        local_29 = _e122 == pixel;
                     } else {
-                        local_33 = true;
+                        local_29 = true;
                     }
-                    bool _e125 = local_33;
+                    bool _e125 = local_29;
                     seen = _e125;
                 }
             }
-            ReuseSurface s_5 = reuse_prev[pixel].surface;
+            ReuseSurface s_6 = reuse_prev[pixel].surface;
             bool _e133 = seen;
             if (!(_e133)) {
-                local_34 = !((s_5.m > 0.0));
+                local_30 = !((s_6.m > 0.0));
             } else {
-                local_34 = true;
+                local_30 = true;
             }
-            bool _e142 = local_34;
+            bool _e142 = local_30;
             if (!(_e142)) {
-                bool _e150 = history_matches(n_11, s_5.n, x_13, metal::dot(s_5.n, s_5.x), d_6);
-                local_35 = !(_e150);
+                bool _e150 = history_matches(n_11, s_6.n, x_13, metal::dot(s_6.n, s_6.x), d_6);
+                local_31 = !(_e150);
             } else {
-                local_35 = true;
+                local_31 = true;
             }
-            bool _e153 = local_35;
+            bool _e153 = local_31;
             if (_e153) {
                 continue;
             }
             uint _e154 = nd;
             metal::float3 _e160 = reuse.prev_eye;
-            Material _e161 = reuse_material(s_5, _e160);
+            Material _e161 = reuse_material(s_6, _e160);
             float _e165 = reuse.max_confidence;
-            uint _e167 = j_4;
-            doms_1.inner[_e154] = Domain {pixel, {}, s_5.x, s_5.n, _e161, metal::min(s_5.m, _e165), _e167 == 0u};
+            uint _e167 = j_2;
+            doms_1.inner[_e154] = Domain {pixel, {}, s_6.x, s_6.n, _e161, metal::min(s_6.m, _e165), _e167 == 0u};
             uint _e171 = nd;
             nd = _e171 + 1u;
         }
     }
     uint _e177 = nd;
     return _e177;
+}
+
+ReuseSlot gris_combine(
+    uint q_3,
+    ReuseSlot cur,
+    bool cur_ris,
+    float cur_c,
+    uint k0_,
+    uint k1_,
+    metal::float3 x_14,
+    metal::float3 n_12,
+    Material m_5,
+    thread type_19& doms_2,
+    thread uint& hs_1,
+    device type_7 const& geo_nodes,
+    device type_8 const& geo_tris,
+    device type_12 const& lights,
+    device type_12 const& lights_prev,
+    device type_16 const& reuse_prev,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float w_sum_2 = 0.0;
+    ReuseSlot out = ReuseSlot {0u, 0u, 0.0};
+    float out_target = 0.0;
+    uint j_3 = {};
+    ReuseSlot s_4 = {};
+    bool local_32 = {};
+    float w_in = {};
+    bool local_33 = {};
+    float own_1 = {};
+    float all_1 = {};
+    uint k_2 = {};
+    bool local_34 = {};
+    j_3 = k0_;
+    uint2 loop_bound_5 = uint2(4294967295u);
+    bool loop_init_3 = true;
+    while(true) {
+        if (metal::all(loop_bound_5 == uint2(0u))) { break; }
+        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+        if (!loop_init_3) {
+            uint _e137 = j_3;
+            j_3 = _e137 + 1u;
+        }
+        loop_init_3 = false;
+        uint _e21 = j_3;
+        if (_e21 <= k1_) {
+        } else {
+            break;
+        }
+        {
+            s_4 = cur;
+            uint _e24 = j_3;
+            if (_e24 > k0_) {
+                uint _e27 = j_3;
+                uint _e32 = doms_2.inner[_e27 - 1u].pixel;
+                ReuseSlot _e36 = reuse_prev[_e32].slots.inner[q_3];
+                s_4 = _e36;
+            }
+            float _e38 = s_4.w;
+            if (!(!((_e38 > 0.0)))) {
+                uint _e46 = s_4.light;
+                local_32 = _e46 >= (1 + (_buffer_sizes.size8 - 0 - 64) / 64);
+            } else {
+                local_32 = true;
+            }
+            bool _e51 = local_32;
+            if (_e51) {
+                continue;
+            }
+            uint _e54 = s_4.light;
+            GpuLight _e56 = lights[_e54];
+            uint _e58 = s_4.u;
+            float _e59 = reuse_target(_e56, _e58, x_14, n_12, m_5, geo_nodes, geo_tris, _buffer_sizes);
+            if (!((_e59 > 0.0))) {
+                continue;
+            }
+            float _e64 = s_4.w;
+            w_in = _e64;
+            uint _e66 = j_3;
+            if (_e66 == k0_) {
+                local_33 = cur_ris;
+            } else {
+                local_33 = false;
+            }
+            bool _e71 = local_33;
+            if (_e71) {
+                float _e73 = s_4.w;
+                w_in = _e73 / _e59;
+            }
+            own_1 = cur_c * _e59;
+            float _e77 = own_1;
+            all_1 = _e77;
+            k_2 = k0_;
+            uint2 loop_bound_6 = uint2(4294967295u);
+            bool loop_init_4 = true;
+            while(true) {
+                if (metal::all(loop_bound_6 == uint2(0u))) { break; }
+                loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+                if (!loop_init_4) {
+                    uint _e115 = k_2;
+                    k_2 = _e115 + 1u;
+                }
+                loop_init_4 = false;
+                uint _e80 = k_2;
+                if (_e80 < k1_) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e82 = k_2;
+                    float _e85 = doms_2.inner[_e82].c;
+                    uint _e88 = s_4.light;
+                    GpuLight _e90 = lights_prev[_e88];
+                    uint _e92 = s_4.u;
+                    uint _e93 = k_2;
+                    metal::float3 _e96 = doms_2.inner[_e93].x;
+                    uint _e97 = k_2;
+                    metal::float3 _e100 = doms_2.inner[_e97].n;
+                    uint _e101 = k_2;
+                    Material _e104 = doms_2.inner[_e101].m;
+                    float _e105 = reuse_target(_e90, _e92, _e96, _e100, _e104, geo_nodes, geo_tris, _buffer_sizes);
+                    float t_6 = _e85 * _e105;
+                    float _e107 = all_1;
+                    all_1 = _e107 + t_6;
+                    uint _e109 = k_2;
+                    uint _e112 = j_3;
+                    if ((_e109 + 1u) == _e112) {
+                        own_1 = t_6;
+                    }
+                }
+            }
+            float _e117 = own_1;
+            float _e118 = all_1;
+            float _e119 = w_in;
+            float _e120 = gris_weight(_e117, _e118, _e59, _e119);
+            float _e121 = w_sum_2;
+            w_sum_2 = _e121 + _e120;
+            uint _e123 = hs_1;
+            uint _e124 = pcg_hash(_e123);
+            hs_1 = _e124;
+            if (_e120 > 0.0) {
+                float _e129 = w_sum_2;
+                uint _e130 = hs_1;
+                float _e131 = xi_from_bits(_e130);
+                bool _e132 = weighted_replace(_e120, _e129, _e131);
+                local_34 = _e132;
+            } else {
+                local_34 = false;
+            }
+            bool _e134 = local_34;
+            if (_e134) {
+                ReuseSlot _e135 = s_4;
+                out = _e135;
+                out_target = _e59;
+            }
+        }
+    }
+    float _e140 = w_sum_2;
+    float _e141 = out_target;
+    float _e142 = gris_contribution_weight(_e140, _e141);
+    out.w = _e142;
+    ReuseSlot _e143 = out;
+    return _e143;
 }
 
 struct main_Input {
@@ -1602,8 +1765,8 @@ kernel void main_(
     uint h = {};
     Shaded t = Shaded {metal::float3(0.0), metal::float3(0.0), metal::float3(0.0)};
     type_17 slot_light = {};
-    type_22 slot_u = {};
-    type_23 slot_p = {};
+    type_23 slot_u = {};
+    type_24 slot_p = {};
     type_17 slot_cells = {};
     float total = 0.0;
     uint count = 0u;
@@ -1613,47 +1776,20 @@ kernel void main_(
     type_19 doms = {};
     bool local_2 = {};
     uint hs = {};
-    type_17 kept_light = {};
-    type_17 kept_cells = {};
-    type_23 kept_w = {};
-    type_17 fin_light = {};
-    type_17 fin_cells = {};
-    type_23 fin_w = {};
+    type_15 kept = {};
+    type_15 fin = {};
     uint q_1 = 0u;
-    float w_sum = {};
-    uint chosen = {};
-    uint chosen_cells = {};
-    float chosen_target = {};
-    uint j = {};
-    uint li = {};
-    uint cells = {};
-    float w_in = {};
-    bool local_3 = {};
-    float own = {};
-    float all = {};
-    bool local_4 = {};
-    float s_sum = {};
-    float s_target = {};
-    uint j_1 = {};
-    uint li_1 = {};
-    uint cells_1 = {};
-    float w_in_1 = {};
-    bool local_5 = {};
-    float own_1 = {};
-    float all_1 = {};
-    uint k = {};
-    bool local_6 = {};
-    type_24 visible = {};
-    uint k_1 = 0u;
+    type_25 visible = {};
+    uint k = 0u;
     float w = {};
     bool first = {};
-    uint j_2 = {};
-    bool local_7 = {};
-    bool local_8 = {};
-    bool local_9 = {};
-    uint j_3 = {};
+    uint j = {};
+    bool local_3 = {};
+    bool local_4 = {};
+    bool local_5 = {};
+    uint j_1 = {};
     uint q_2 = 0u;
-    bool local_10 = {};
+    bool local_6 = {};
     uint _e4 = view.width;
     if (!((gid.x >= _e4))) {
         uint _e12 = view.height;
@@ -1682,29 +1818,29 @@ kernel void main_(
         reuse_next[(gid.y * _e45) + gid.x].surface.m = 0.0;
         return;
     }
-    metal::float3 x_16 = _e21.xyz;
-    metal::float3 n_14 = nn / metal::float3(metal::sqrt(len2_));
-    r = n_14;
+    metal::float3 x_17 = _e21.xyz;
+    metal::float3 n_15 = nn / metal::float3(metal::sqrt(len2_));
+    r = n_15;
     metal::float4 mr = metal_rough_tex.read(metal::uint2(texel_1), 0);
     metal::float4 _e70 = base_color_tex.read(metal::uint2(texel_1), 0);
     metal::float3 _e77 = view.eye;
-    Material _e80 = material_of(_e70.xyz, mr.z, mr.y, mr.w, metal::normalize(_e77 - x_16));
+    Material _e80 = material_of(_e70.xyz, mr.z, mr.y, mr.w, metal::normalize(_e77 - x_17));
     m = _e80;
     metal::float3 _e82 = m.base;
     float _e84 = m.metallic;
     float _e86 = bevy_f0_(mr.w);
     float _e90 = m.alpha;
     metal::float3 _e92 = m.v;
-    metal::float4 _e94 = receiver_lobe(_e82, _e84, metal::float3(_e86), 1.0, _e90, metal::dot(n_14, _e92));
+    metal::float4 _e94 = receiver_lobe(_e82, _e84, metal::float3(_e86), 1.0, _e90, metal::dot(n_15, _e92));
     lobe = _e94;
     metal::float3 _e96 = m.v;
-    metal::float3 _e97 = mirror_dir(n_14, _e96);
+    metal::float3 _e97 = mirror_dir(n_15, _e96);
     r = _e97;
     metal::float4 _e98 = lobe;
     metal::float4 _e99 = range_lobe(_e98);
     float _e102 = view.shadow_offset;
     metal::float3 _e105 = view.eye;
-    float eps_3 = _e102 * metal::length(_e105 - x_16);
+    float eps_3 = _e102 * metal::length(_e105 - x_17);
     uint _e111 = view.seed;
     uint _e115 = view.width;
     uint _e121 = view.frame;
@@ -1714,21 +1850,21 @@ kernel void main_(
     hc = _e122;
     uint _e144 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
     metal::float3 _e145 = r;
-    uint _e146 = bsh_next_leaf_lobe(BSH, _e144, x_16, _e145, _e99, bsh_nodes, _buffer_sizes);
+    uint _e146 = bsh_next_leaf_lobe(BSH, _e144, x_17, _e145, _e99, bsh_nodes, _buffer_sizes);
     b = _e146;
-    uint2 loop_bound_5 = uint2(4294967295u);
-    bool loop_init_3 = true;
+    uint2 loop_bound_7 = uint2(4294967295u);
+    bool loop_init_5 = true;
     while(true) {
-        if (metal::all(loop_bound_5 == uint2(0u))) { break; }
-        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
-        if (!loop_init_3) {
+        if (metal::all(loop_bound_7 == uint2(0u))) { break; }
+        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+        if (!loop_init_5) {
             uint _e207 = b;
             uint _e210 = bsh_nodes[_e207].next;
             metal::float3 _e211 = r;
-            uint _e212 = bsh_next_leaf_lobe(BSH, _e210, x_16, _e211, _e99, bsh_nodes, _buffer_sizes);
+            uint _e212 = bsh_next_leaf_lobe(BSH, _e210, x_17, _e211, _e99, bsh_nodes, _buffer_sizes);
             b = _e212;
         }
-        loop_init_3 = false;
+        loop_init_5 = false;
         uint _e148 = b;
         if (_e148 != BSH_NONE) {
         } else {
@@ -1738,7 +1874,7 @@ kernel void main_(
             uint _e151 = count;
             count = _e151 + 1u;
             uint _e155 = b;
-            uint li_5 = bsh_nodes[_e155].light;
+            uint li_3 = bsh_nodes[_e155].light;
             uint _e159 = h;
             uint _e160 = pcg_hash(_e159);
             h = _e160;
@@ -1754,23 +1890,23 @@ kernel void main_(
             metal::float2 u_4 = metal::float2(_e166, _e168);
             metal::float3 _e170 = r;
             Material _e171 = m;
-            Shaded _e176 = shade_pick_traced(li_5, x_16, n_14, _e170, _e99, _e171, 1.0, u_4.x, u_4.y, eps_3, false, geo_nodes, geo_tris, lights, rt2_3, r2_3, light_cones, _buffer_sizes);
+            Shaded _e176 = shade_pick_traced(li_3, x_17, n_15, _e170, _e99, _e171, 1.0, u_4.x, u_4.y, eps_3, false, geo_nodes, geo_tris, lights, rt2_3, r2_3, light_cones, _buffer_sizes);
             metal::float3 _e177 = output_of(_e176);
             float _e178 = resample_target(_e177);
             if (_e178 > 0.0) {
                 float _e181 = total;
                 total = _e181 + _e178;
                 q = 0u;
-                uint2 loop_bound_6 = uint2(4294967295u);
-                bool loop_init_4 = true;
+                uint2 loop_bound_8 = uint2(4294967295u);
+                bool loop_init_6 = true;
                 while(true) {
-                    if (metal::all(loop_bound_6 == uint2(0u))) { break; }
-                    loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-                    if (!loop_init_4) {
+                    if (metal::all(loop_bound_8 == uint2(0u))) { break; }
+                    loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
+                    if (!loop_init_6) {
                         uint _e203 = q;
                         q = _e203 + 1u;
                     }
-                    loop_init_4 = false;
+                    loop_init_6 = false;
                     uint _e185 = q;
                     if (_e185 < K) {
                     } else {
@@ -1786,7 +1922,7 @@ kernel void main_(
                         bool _e193 = weighted_replace(_e178, _e190, _e192);
                         if (_e193) {
                             uint _e194 = q;
-                            slot_light.inner[_e194] = li_5;
+                            slot_light.inner[_e194] = li_3;
                             uint _e196 = q;
                             slot_u.inner[_e196] = u_4;
                             uint _e198 = q;
@@ -1803,7 +1939,7 @@ kernel void main_(
     uint pixel_1 = (gid.y * _e216) + gid.x;
     metal::float3 _e223 = view.eye;
     uint _e227 = reuse_stream(_e122, 0u);
-    uint _e228 = reuse_domains(x_16, n_14, metal::length(_e223 - x_16), _e227, doms, view, reuse, reuse_prev, _buffer_sizes);
+    uint _e228 = reuse_domains(x_17, n_15, metal::length(_e223 - x_17), _e227, doms, view, reuse, reuse_prev, _buffer_sizes);
     if (_e228 > 0u) {
         bool _e235 = doms.inner[0].temporal;
         local_2 = _e235;
@@ -1816,469 +1952,226 @@ kernel void main_(
     float confidence = 1.0 + (own_history ? _e243 : 0.0);
     uint _e249 = reuse_stream(_e122, 1u);
     hs = _e249;
-    uint2 loop_bound_7 = uint2(4294967295u);
-    bool loop_init_5 = true;
+    uint2 loop_bound_9 = uint2(4294967295u);
+    bool loop_init_7 = true;
     while(true) {
-        if (metal::all(loop_bound_7 == uint2(0u))) { break; }
-        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
-        if (!loop_init_5) {
-            uint _e531 = q_1;
-            q_1 = _e531 + 1u;
+        if (metal::all(loop_bound_9 == uint2(0u))) { break; }
+        loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
+        if (!loop_init_7) {
+            uint _e290 = q_1;
+            q_1 = _e290 + 1u;
         }
-        loop_init_5 = false;
-        uint _e259 = q_1;
-        if (_e259 < K) {
+        loop_init_7 = false;
+        uint _e255 = q_1;
+        if (_e255 < K) {
         } else {
             break;
         }
         {
-            w_sum = 0.0;
-            chosen = 0u;
-            chosen_cells = 0u;
-            chosen_target = 0.0;
+            uint _e258 = q_1;
+            uint _e260 = q_1;
+            uint _e261 = q_1;
+            uint _e263 = slot_light.inner[_e261];
+            uint _e264 = q_1;
+            uint _e266 = slot_cells.inner[_e264];
+            float _e267 = total;
+            Material _e272 = m;
+            ReuseSlot _e273 = gris_combine(_e260, ReuseSlot {_e263, _e266, _e267}, true, 1.0, 0u, first_1, x_17, n_15, _e272, doms, hs, geo_nodes, geo_tris, lights, lights_prev, reuse_prev, _buffer_sizes);
+            kept.inner[_e258] = _e273;
+            uint _e274 = q_1;
+            uint _e276 = q_1;
+            ReuseSlot _e278 = kept.inner[_e276];
+            fin.inner[_e274] = _e278;
+            if (_e228 > first_1) {
+                uint _e280 = q_1;
+                uint _e282 = q_1;
+                uint _e283 = q_1;
+                ReuseSlot _e285 = kept.inner[_e283];
+                Material _e287 = m;
+                ReuseSlot _e288 = gris_combine(_e282, _e285, false, confidence, first_1, _e228, x_17, n_15, _e287, doms, hs, geo_nodes, geo_tris, lights, lights_prev, reuse_prev, _buffer_sizes);
+                fin.inner[_e280] = _e288;
+            }
+        }
+    }
+    uint2 loop_bound_10 = uint2(4294967295u);
+    bool loop_init_8 = true;
+    while(true) {
+        if (metal::all(loop_bound_10 == uint2(0u))) { break; }
+        loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
+        if (!loop_init_8) {
+            uint _e426 = k;
+            k = _e426 + 1u;
+        }
+        loop_init_8 = false;
+        uint _e295 = k;
+        if (_e295 < K) {
+        } else {
+            break;
+        }
+        {
+            uint _e298 = k;
+            float _e301 = fin.inner[_e298].w;
+            w = _e301;
+            float _e303 = w;
+            first = _e303 > 0.0;
             j = 0u;
-            uint2 loop_bound_8 = uint2(4294967295u);
-            bool loop_init_6 = true;
+            uint2 loop_bound_11 = uint2(4294967295u);
+            bool loop_init_9 = true;
             while(true) {
-                if (metal::all(loop_bound_8 == uint2(0u))) { break; }
-                loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
-                if (!loop_init_6) {
-                    uint _e374 = j;
-                    j = _e374 + 1u;
+                if (metal::all(loop_bound_11 == uint2(0u))) { break; }
+                loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
+                if (!loop_init_9) {
+                    uint _e361 = j;
+                    j = _e361 + 1u;
                 }
-                loop_init_6 = false;
-                uint _e272 = j;
-                if (_e272 <= first_1) {
+                loop_init_9 = false;
+                uint _e309 = j;
+                if (_e309 < K) {
                 } else {
                     break;
                 }
                 {
-                    uint _e274 = q_1;
-                    uint _e276 = slot_light.inner[_e274];
-                    li = _e276;
-                    uint _e278 = q_1;
-                    uint _e280 = slot_cells.inner[_e278];
-                    cells = _e280;
-                    float _e282 = total;
-                    w_in = _e282;
-                    uint _e284 = j;
-                    if (_e284 > 0u) {
-                        uint _e290 = doms.inner[0].pixel;
-                        uint _e293 = q_1;
-                        ReuseSlot s_6 = reuse_prev[_e290].slots.inner[_e293];
-                        li = s_6.light;
-                        cells = s_6.u;
-                        w_in = s_6.w;
-                    }
-                    float _e299 = w_in;
-                    if (!(!((_e299 > 0.0)))) {
-                        uint _e306 = li;
-                        local_3 = _e306 >= (1 + (_buffer_sizes.size8 - 0 - 64) / 64);
+                    uint _e312 = j;
+                    uint _e313 = k;
+                    if (_e312 != _e313) {
+                        uint _e317 = j;
+                        float _e320 = fin.inner[_e317].w;
+                        local_3 = _e320 > 0.0;
                     } else {
-                        local_3 = true;
+                        local_3 = false;
                     }
-                    bool _e311 = local_3;
-                    if (_e311) {
-                        continue;
-                    }
-                    uint _e313 = li;
-                    GpuLight _e315 = lights[_e313];
-                    uint _e316 = cells;
-                    Material _e317 = m;
-                    float _e318 = reuse_target(_e315, _e316, x_16, n_14, _e317, geo_nodes, geo_tris, _buffer_sizes);
-                    if (!((_e318 > 0.0))) {
-                        continue;
-                    }
-                    uint _e322 = j;
-                    if (_e322 == 0u) {
-                        float _e325 = total;
-                        w_in = _e325 / _e318;
-                    }
-                    own = _e318;
-                    all = _e318;
-                    if (own_history) {
-                        float _e331 = doms.inner[0].c;
-                        uint _e333 = li;
-                        GpuLight _e335 = lights_prev[_e333];
-                        uint _e336 = cells;
-                        metal::float3 _e339 = doms.inner[0].x;
-                        metal::float3 _e342 = doms.inner[0].n;
-                        Material _e345 = doms.inner[0].m;
-                        float _e346 = reuse_target(_e335, _e336, _e339, _e342, _e345, geo_nodes, geo_tris, _buffer_sizes);
-                        float t_6 = _e331 * _e346;
-                        float _e348 = all;
-                        all = _e348 + t_6;
-                        uint _e350 = j;
-                        if (_e350 == 1u) {
-                            own = t_6;
-                        }
-                    }
-                    float _e353 = own;
-                    float _e354 = all;
-                    float _e355 = w_in;
-                    float _e356 = gris_weight(_e353, _e354, _e318, _e355);
-                    float _e357 = w_sum;
-                    w_sum = _e357 + _e356;
-                    uint _e359 = hs;
-                    uint _e360 = pcg_hash(_e359);
-                    hs = _e360;
-                    if (_e356 > 0.0) {
-                        float _e365 = w_sum;
-                        uint _e366 = hs;
-                        float _e367 = xi_from_bits(_e366);
-                        bool _e368 = weighted_replace(_e356, _e365, _e367);
-                        local_4 = _e368;
+                    bool _e324 = local_3;
+                    if (_e324) {
+                        uint _e327 = j;
+                        uint _e330 = fin.inner[_e327].light;
+                        uint _e331 = j;
+                        uint _e334 = fin.inner[_e331].u;
+                        uint _e335 = k;
+                        uint _e338 = fin.inner[_e335].light;
+                        uint _e339 = k;
+                        uint _e342 = fin.inner[_e339].u;
+                        bool _e343 = same_pick(_e330, _e334, _e338, _e342, lights, _buffer_sizes);
+                        local_4 = _e343;
                     } else {
                         local_4 = false;
                     }
-                    bool _e370 = local_4;
-                    if (_e370) {
-                        uint _e371 = li;
-                        chosen = _e371;
-                        uint _e372 = cells;
-                        chosen_cells = _e372;
-                        chosen_target = _e318;
+                    bool _e345 = local_4;
+                    if (_e345) {
+                        bool _e346 = first;
+                        if (_e346) {
+                            uint _e349 = j;
+                            uint _e350 = k;
+                            local_5 = _e349 > _e350;
+                        } else {
+                            local_5 = false;
+                        }
+                        bool _e353 = local_5;
+                        first = _e353;
+                        float _e354 = w;
+                        uint _e355 = j;
+                        float _e358 = fin.inner[_e355].w;
+                        w = _e354 + _e358;
                     }
                 }
             }
-            uint _e376 = q_1;
-            uint _e378 = chosen;
-            kept_light.inner[_e376] = _e378;
-            uint _e379 = q_1;
-            uint _e381 = chosen_cells;
-            kept_cells.inner[_e379] = _e381;
-            uint _e382 = q_1;
-            float _e384 = w_sum;
-            float _e385 = chosen_target;
-            float _e386 = gris_contribution_weight(_e384, _e385);
-            kept_w.inner[_e382] = _e386;
-            uint _e387 = q_1;
-            uint _e389 = chosen;
-            fin_light.inner[_e387] = _e389;
-            uint _e390 = q_1;
-            uint _e392 = chosen_cells;
-            fin_cells.inner[_e390] = _e392;
-            uint _e393 = q_1;
-            uint _e395 = q_1;
-            float _e397 = kept_w.inner[_e395];
-            fin_w.inner[_e393] = _e397;
-            if (_e228 > first_1) {
-                s_sum = 0.0;
-                s_target = 0.0;
-                j_1 = first_1;
-                uint2 loop_bound_9 = uint2(4294967295u);
-                bool loop_init_7 = true;
+            bool _e363 = first;
+            if (_e363) {
+                uint _e365 = k;
+                uint _e368 = fin.inner[_e365].light;
+                GpuLight _e370 = lights[_e368];
+                float _e373 = w;
+                uint _e376 = k;
+                uint _e379 = fin.inner[_e376].u;
+                float _e380 = grid_coordinate(_e379);
+                uint _e381 = k;
+                uint _e384 = fin.inner[_e381].u;
+                float _e387 = grid_coordinate(_e384 << 16u);
+                Connection _e389 = connect_record(_e370, x_17, n_15, n_15, UNRANGED, UNRANGED, _e373 / 8.0, _e380, _e387, eps_3, true, geo_nodes, geo_tris, _buffer_sizes);
+                Material _e390 = m;
+                Shaded _e391 = shade_connection(_e389, x_17, n_15, _e390);
+                Shaded _e392 = t;
+                Shaded _e393 = add(_e392, _e391);
+                t = _e393;
+                uint _e394 = k;
+                j_1 = _e394;
+                uint2 loop_bound_12 = uint2(4294967295u);
+                bool loop_init_10 = true;
                 while(true) {
-                    if (metal::all(loop_bound_9 == uint2(0u))) { break; }
-                    loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
-                    if (!loop_init_7) {
-                        uint _e523 = j_1;
-                        j_1 = _e523 + 1u;
+                    if (metal::all(loop_bound_12 == uint2(0u))) { break; }
+                    loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
+                    if (!loop_init_10) {
+                        uint _e423 = j_1;
+                        j_1 = _e423 + 1u;
                     }
-                    loop_init_7 = false;
-                    uint _e404 = j_1;
-                    if (_e404 <= _e228) {
+                    loop_init_10 = false;
+                    uint _e396 = j_1;
+                    if (_e396 < K) {
                     } else {
                         break;
                     }
                     {
-                        uint _e406 = q_1;
-                        uint _e408 = kept_light.inner[_e406];
-                        li_1 = _e408;
-                        uint _e410 = q_1;
-                        uint _e412 = kept_cells.inner[_e410];
-                        cells_1 = _e412;
-                        uint _e414 = q_1;
-                        float _e416 = kept_w.inner[_e414];
-                        w_in_1 = _e416;
-                        uint _e418 = j_1;
-                        if (_e418 > first_1) {
-                            uint _e421 = j_1;
-                            uint _e426 = doms.inner[_e421 - 1u].pixel;
-                            uint _e429 = q_1;
-                            ReuseSlot s_7 = reuse_prev[_e426].slots.inner[_e429];
-                            li_1 = s_7.light;
-                            cells_1 = s_7.u;
-                            w_in_1 = s_7.w;
-                        }
-                        float _e435 = w_in_1;
-                        if (!(!((_e435 > 0.0)))) {
-                            uint _e442 = li_1;
-                            local_5 = _e442 >= (1 + (_buffer_sizes.size8 - 0 - 64) / 64);
-                        } else {
-                            local_5 = true;
-                        }
-                        bool _e447 = local_5;
-                        if (_e447) {
-                            continue;
-                        }
-                        uint _e449 = li_1;
-                        GpuLight _e451 = lights[_e449];
-                        uint _e452 = cells_1;
-                        Material _e453 = m;
-                        float _e454 = reuse_target(_e451, _e452, x_16, n_14, _e453, geo_nodes, geo_tris, _buffer_sizes);
-                        if (!((_e454 > 0.0))) {
-                            continue;
-                        }
-                        own_1 = confidence * _e454;
-                        float _e460 = own_1;
-                        all_1 = _e460;
-                        k = first_1;
-                        uint2 loop_bound_10 = uint2(4294967295u);
-                        bool loop_init_8 = true;
-                        while(true) {
-                            if (metal::all(loop_bound_10 == uint2(0u))) { break; }
-                            loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
-                            if (!loop_init_8) {
-                                uint _e496 = k;
-                                k = _e496 + 1u;
-                            }
-                            loop_init_8 = false;
-                            uint _e463 = k;
-                            if (_e463 < _e228) {
-                            } else {
-                                break;
-                            }
-                            {
-                                uint _e465 = k;
-                                float _e468 = doms.inner[_e465].c;
-                                uint _e470 = li_1;
-                                GpuLight _e472 = lights_prev[_e470];
-                                uint _e473 = cells_1;
-                                uint _e474 = k;
-                                metal::float3 _e477 = doms.inner[_e474].x;
-                                uint _e478 = k;
-                                metal::float3 _e481 = doms.inner[_e478].n;
-                                uint _e482 = k;
-                                Material _e485 = doms.inner[_e482].m;
-                                float _e486 = reuse_target(_e472, _e473, _e477, _e481, _e485, geo_nodes, geo_tris, _buffer_sizes);
-                                float t_7 = _e468 * _e486;
-                                float _e488 = all_1;
-                                all_1 = _e488 + t_7;
-                                uint _e490 = k;
-                                uint _e493 = j_1;
-                                if ((_e490 + 1u) == _e493) {
-                                    own_1 = t_7;
-                                }
-                            }
-                        }
-                        float _e498 = own_1;
-                        float _e499 = all_1;
-                        float _e500 = w_in_1;
-                        float _e501 = gris_weight(_e498, _e499, _e454, _e500);
-                        float _e502 = s_sum;
-                        s_sum = _e502 + _e501;
-                        uint _e504 = hs;
-                        uint _e505 = pcg_hash(_e504);
-                        hs = _e505;
-                        if (_e501 > 0.0) {
-                            float _e510 = s_sum;
-                            uint _e511 = hs;
-                            float _e512 = xi_from_bits(_e511);
-                            bool _e513 = weighted_replace(_e501, _e510, _e512);
-                            local_6 = _e513;
-                        } else {
-                            local_6 = false;
-                        }
-                        bool _e515 = local_6;
-                        if (_e515) {
-                            uint _e516 = q_1;
-                            uint _e518 = li_1;
-                            fin_light.inner[_e516] = _e518;
-                            uint _e519 = q_1;
-                            uint _e521 = cells_1;
-                            fin_cells.inner[_e519] = _e521;
-                            s_target = _e454;
-                        }
-                    }
-                }
-                uint _e525 = q_1;
-                float _e527 = s_sum;
-                float _e528 = s_target;
-                float _e529 = gris_contribution_weight(_e527, _e528);
-                fin_w.inner[_e525] = _e529;
-            }
-        }
-    }
-    uint2 loop_bound_11 = uint2(4294967295u);
-    bool loop_init_9 = true;
-    while(true) {
-        if (metal::all(loop_bound_11 == uint2(0u))) { break; }
-        loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
-        if (!loop_init_9) {
-            uint _e653 = k_1;
-            k_1 = _e653 + 1u;
-        }
-        loop_init_9 = false;
-        uint _e536 = k_1;
-        if (_e536 < K) {
-        } else {
-            break;
-        }
-        {
-            uint _e539 = k_1;
-            float _e541 = fin_w.inner[_e539];
-            w = _e541;
-            float _e543 = w;
-            first = _e543 > 0.0;
-            j_2 = 0u;
-            uint2 loop_bound_12 = uint2(4294967295u);
-            bool loop_init_10 = true;
-            while(true) {
-                if (metal::all(loop_bound_12 == uint2(0u))) { break; }
-                loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
-                if (!loop_init_10) {
-                    uint _e595 = j_2;
-                    j_2 = _e595 + 1u;
-                }
-                loop_init_10 = false;
-                uint _e549 = j_2;
-                if (_e549 < K) {
-                } else {
-                    break;
-                }
-                {
-                    uint _e552 = j_2;
-                    uint _e553 = k_1;
-                    if (_e552 != _e553) {
-                        uint _e557 = j_2;
-                        float _e559 = fin_w.inner[_e557];
-                        local_7 = _e559 > 0.0;
-                    } else {
-                        local_7 = false;
-                    }
-                    bool _e563 = local_7;
-                    if (_e563) {
-                        uint _e566 = j_2;
-                        uint _e568 = fin_light.inner[_e566];
-                        uint _e569 = j_2;
-                        uint _e571 = fin_cells.inner[_e569];
-                        uint _e572 = k_1;
-                        uint _e574 = fin_light.inner[_e572];
-                        uint _e575 = k_1;
-                        uint _e577 = fin_cells.inner[_e575];
-                        bool _e578 = same_pick(_e568, _e571, _e574, _e577, lights, _buffer_sizes);
-                        local_8 = _e578;
-                    } else {
-                        local_8 = false;
-                    }
-                    bool _e580 = local_8;
-                    if (_e580) {
-                        bool _e581 = first;
-                        if (_e581) {
-                            uint _e584 = j_2;
-                            uint _e585 = k_1;
-                            local_9 = _e584 > _e585;
-                        } else {
-                            local_9 = false;
-                        }
-                        bool _e588 = local_9;
-                        first = _e588;
-                        float _e589 = w;
-                        uint _e590 = j_2;
-                        float _e592 = fin_w.inner[_e590];
-                        w = _e589 + _e592;
-                    }
-                }
-            }
-            bool _e597 = first;
-            if (_e597) {
-                uint _e599 = k_1;
-                uint _e601 = fin_light.inner[_e599];
-                GpuLight _e603 = lights[_e601];
-                float _e606 = w;
-                uint _e609 = k_1;
-                uint _e611 = fin_cells.inner[_e609];
-                float _e612 = grid_coordinate(_e611);
-                uint _e613 = k_1;
-                uint _e615 = fin_cells.inner[_e613];
-                float _e618 = grid_coordinate(_e615 << 16u);
-                Connection _e620 = connect_record(_e603, x_16, n_14, n_14, UNRANGED, UNRANGED, _e606 / 8.0, _e612, _e618, eps_3, true, geo_nodes, geo_tris, _buffer_sizes);
-                Material _e621 = m;
-                Shaded _e622 = shade_connection(_e620, x_16, n_14, _e621);
-                Shaded _e623 = t;
-                Shaded _e624 = add(_e623, _e622);
-                t = _e624;
-                uint _e625 = k_1;
-                j_3 = _e625;
-                uint2 loop_bound_13 = uint2(4294967295u);
-                bool loop_init_11 = true;
-                while(true) {
-                    if (metal::all(loop_bound_13 == uint2(0u))) { break; }
-                    loop_bound_13 -= uint2(loop_bound_13.y == 0u, 1u);
-                    if (!loop_init_11) {
-                        uint _e650 = j_3;
-                        j_3 = _e650 + 1u;
-                    }
-                    loop_init_11 = false;
-                    uint _e627 = j_3;
-                    if (_e627 < K) {
-                    } else {
-                        break;
-                    }
-                    {
-                        uint _e630 = j_3;
-                        uint _e632 = fin_light.inner[_e630];
-                        uint _e633 = j_3;
-                        uint _e635 = fin_cells.inner[_e633];
-                        uint _e636 = k_1;
-                        uint _e638 = fin_light.inner[_e636];
-                        uint _e639 = k_1;
-                        uint _e641 = fin_cells.inner[_e639];
-                        bool _e642 = same_pick(_e632, _e635, _e638, _e641, lights, _buffer_sizes);
-                        if (_e642) {
-                            uint _e643 = j_3;
-                            metal::float3 _e645 = output_of(_e622);
-                            float _e646 = resample_target(_e645);
-                            visible.inner[_e643] = _e646 > 0.0;
+                        uint _e399 = j_1;
+                        uint _e402 = fin.inner[_e399].light;
+                        uint _e403 = j_1;
+                        uint _e406 = fin.inner[_e403].u;
+                        uint _e407 = k;
+                        uint _e410 = fin.inner[_e407].light;
+                        uint _e411 = k;
+                        uint _e414 = fin.inner[_e411].u;
+                        bool _e415 = same_pick(_e402, _e406, _e410, _e414, lights, _buffer_sizes);
+                        if (_e415) {
+                            uint _e416 = j_1;
+                            metal::float3 _e418 = output_of(_e391);
+                            float _e419 = resample_target(_e418);
+                            visible.inner[_e416] = _e419 > 0.0;
                         }
                     }
                 }
             }
         }
     }
-    uint2 loop_bound_14 = uint2(4294967295u);
-    bool loop_init_12 = true;
+    uint2 loop_bound_13 = uint2(4294967295u);
+    bool loop_init_11 = true;
     while(true) {
-        if (metal::all(loop_bound_14 == uint2(0u))) { break; }
-        loop_bound_14 -= uint2(loop_bound_14.y == 0u, 1u);
-        if (!loop_init_12) {
-            uint _e691 = q_2;
-            q_2 = _e691 + 1u;
+        if (metal::all(loop_bound_13 == uint2(0u))) { break; }
+        loop_bound_13 -= uint2(loop_bound_13.y == 0u, 1u);
+        if (!loop_init_11) {
+            uint _e467 = q_2;
+            q_2 = _e467 + 1u;
         }
-        loop_init_12 = false;
-        uint _e657 = q_2;
-        if (_e657 < K) {
+        loop_init_11 = false;
+        uint _e430 = q_2;
+        if (_e430 < K) {
         } else {
             break;
         }
         {
-            uint _e662 = reuse.visibility;
-            if (!((_e662 == 0u))) {
-                uint _e668 = q_2;
-                bool _e670 = visible.inner[_e668];
-                local_10 = _e670;
+            uint _e435 = reuse.visibility;
+            if (!((_e435 == 0u))) {
+                uint _e441 = q_2;
+                bool _e443 = visible.inner[_e441];
+                local_6 = _e443;
             } else {
-                local_10 = true;
+                local_6 = true;
             }
-            bool keep = local_10;
-            uint _e676 = q_2;
-            uint _e678 = q_2;
-            uint _e680 = kept_light.inner[_e678];
-            uint _e681 = q_2;
-            uint _e683 = kept_cells.inner[_e681];
-            uint _e684 = q_2;
-            float _e686 = kept_w.inner[_e684];
-            reuse_next[pixel_1].slots.inner[_e676] = ReuseSlot {_e680, _e683, keep ? _e686 : 0.0};
+            bool keep = local_6;
+            uint _e449 = q_2;
+            uint _e451 = q_2;
+            uint _e454 = kept.inner[_e451].light;
+            uint _e455 = q_2;
+            uint _e458 = kept.inner[_e455].u;
+            uint _e459 = q_2;
+            float _e462 = kept.inner[_e459].w;
+            reuse_next[pixel_1].slots.inner[_e449] = ReuseSlot {_e454, _e458, keep ? _e462 : 0.0};
         }
     }
-    Material _e696 = m;
-    float _e699 = reuse.max_confidence;
-    ReuseSurface _e701 = reuse_surface(x_16, n_14, _e696, metal::min(confidence, _e699));
-    reuse_next[pixel_1].surface = _e701;
-    metal::float3 _e704 = t.diffuse;
-    metal::float3 _e706 = t.specular;
-    uint _e708 = count;
-    out_tex.write(metal::float4(_e704 + _e706, static_cast<float>(_e708)), metal::uint2(texel_1));
+    Material _e472 = m;
+    float _e475 = reuse.max_confidence;
+    ReuseSurface _e477 = reuse_surface(x_17, n_15, _e472, metal::min(confidence, _e475));
+    reuse_next[pixel_1].surface = _e477;
+    metal::float3 _e480 = t.diffuse;
+    metal::float3 _e482 = t.specular;
+    uint _e484 = count;
+    out_tex.write(metal::float4(_e480 + _e482, static_cast<float>(_e484)), metal::uint2(texel_1));
     return;
 }
