@@ -105,6 +105,49 @@ crate::shared! {
         return (c.x + c.y + c.z) * 0.33333334;
     }
 
+    /// The target slot `slot` of `k` resampled picks draws in proportion
+    /// to: with `k ≥ 3`, one colour channel of the unshadowed contribution
+    /// `c`, channel `slot mod 3`, so that every channel is estimated by
+    /// picks drawn in proportion to that channel (a target shared by the
+    /// channels, such as their mean, picks a red light as often for the
+    /// blue channel as for the red one: colour noise wherever the lights
+    /// differ in colour); with fewer slots, the channel mean
+    /// ([`resample_target`]).
+    pub fn slot_target(c: vec3f, slot: u32, k: u32) -> f32 {
+        if k < 3 {
+            return resample_target(c);
+        }
+        let j: u32 = slot % 3;
+        if j == 0 {
+            return c.x;
+        }
+        if j == 1 {
+            return c.y;
+        }
+        return c.z;
+    }
+
+    /// What slot `slot` of `k` adds to each channel's estimate per unit of
+    /// its pick's contribution `f(y)·W`: with `k ≥ 3`, `1/n_j` in its own
+    /// channel `j = slot mod 3` (`n_j = ⌊(k + 2 − j)/3⌋` slots estimate
+    /// channel `j`) and 0 in the others, whose targets it was not drawn
+    /// for ([`slot_target`]); with fewer slots `1/k` in every channel.
+    pub fn slot_share(slot: u32, k: u32) -> vec3f {
+        if k < 3 {
+            let w: f32 = 1.0 / to_f32(k);
+            return vec3f(w, w, w);
+        }
+        let j: u32 = slot % 3;
+        let w: f32 = 1.0 / to_f32((k + 2 - j) / 3);
+        if j == 0 {
+            return vec3f(w, 0.0, 0.0);
+        }
+        if j == 1 {
+            return vec3f(0.0, w, 0.0);
+        }
+        return vec3f(0.0, 0.0, w);
+    }
+
     /// A coordinate of a reused pick's point, on the 16-bit grid the
     /// candidates draw it on: the midpoint `(k + ½)/2¹⁶` of cell `k`, the
     /// high 16 bits of `bits` (a hash, or a stored pick's cells). A pick is
@@ -271,6 +314,27 @@ impl<const K: usize> WeightedReservoir<K> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Every channel's shares sum to 1 over the slots, and a slot's share
+    /// lies in the channel its target is.
+    #[test]
+    fn slot_shares_cover_every_channel_once() {
+        let c = vec3f(1.0, 2.0, 3.0);
+        for k in 1..=9u32 {
+            let mut sum = vec3f(0.0, 0.0, 0.0);
+            for q in 0..k {
+                let share = slot_share(q, k);
+                sum += share;
+                let t = slot_target(c, q, k);
+                if k >= 3 {
+                    assert_eq!(share.dot(c) / share.max_element(), t, "k {k}, slot {q}");
+                } else {
+                    assert_eq!(t, resample_target(c));
+                }
+            }
+            assert!((sum - vec3f(1.0, 1.0, 1.0)).abs().max_element() < 1e-6, "k {k}: {sum}");
+        }
+    }
 
     #[test]
     fn reuse_grid_and_weights() {

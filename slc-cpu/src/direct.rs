@@ -26,8 +26,8 @@ use slc_core::importance::{LightCone, Receiver};
 use slc_core::light::{Light, connection_cosine, connection_factor};
 use slc_core::range::{RangeParams, random_range2};
 use slc_core::reservoir::{
-    resample_target, reservoir_slot, reservoir_takes, reservoir_weight, weighted_pick_weight,
-    weighted_replace,
+    resample_target, reservoir_slot, reservoir_takes, reservoir_weight, slot_share, slot_target,
+    weighted_pick_weight, weighted_replace,
 };
 use slc_core::xi::{pcg_hash, pick_stream, point_stream, xi_for, xi_from_bits};
 use slc_scene::RenderError;
@@ -222,12 +222,12 @@ impl DirectLights {
 
     /// [`DirectSelection::Resampled`] (the kernel's): every light in range
     /// sampled (its point from the pick stream) and evaluated unshadowed,
-    /// `k` one-slot weighted reservoirs (the seed's stream) over their
-    /// [`resample_target`]s, each kept candidate shadowed and weighted
-    /// `P/(k·p)`.
+    /// `k` one-slot weighted reservoirs (the seed's stream), slot `q` over
+    /// its [`slot_target`]s, each kept candidate shadowed and weighted
+    /// `P_q/p_q` times its [`slot_share`], `P_q` the slot's target sum.
     fn resampled(&self, at: &Point, seed: u32, k: u32) -> Direct {
         let mut slots = vec![(0u32, 0.0f32, 0.0f32, 0.0f32); k as usize];
-        let (mut total, mut seen) = (0.0f32, 0u32);
+        let (mut total, mut seen) = (Vec3::ZERO, 0u32);
         let (mut h, mut hc) = (pick_stream(seed), seed);
         self.bsh.for_each_containing(at.x, |l| {
             seen += 1;
@@ -235,13 +235,25 @@ impl DirectLights {
             let u1 = xi_from_bits(h);
             h = pcg_hash(h);
             let u2 = xi_from_bits(h);
-            let p = resample_target(self.connect(at, l as usize, 1.0, u1, u2, false));
-            offer(&mut slots, (l, u1, u2, p), p, &mut total, &mut hc);
+            let c = self.connect(at, l as usize, 1.0, u1, u2, false);
+            if resample_target(c) > 0.0 {
+                total += c;
+                for (q, s) in slots.iter_mut().enumerate() {
+                    hc = pcg_hash(hc);
+                    let p = slot_target(c, q as u32, k);
+                    if p > 0.0
+                        && weighted_replace(p, slot_target(total, q as u32, k), xi_from_bits(hc))
+                    {
+                        *s = (l, u1, u2, p);
+                    }
+                }
+            }
         });
         let mut e = Vec3::ZERO;
-        if total > 0.0 {
-            for &(l, u1, u2, p) in &slots {
-                e += self.connect(at, l as usize, total / (k as f32 * p), u1, u2, true);
+        for (q, &(l, u1, u2, p)) in slots.iter().enumerate() {
+            if p > 0.0 {
+                let w = slot_target(total, q as u32, k) / p;
+                e += self.connect(at, l as usize, 1.0, u1, u2, true) * w * slot_share(q as u32, k);
             }
         }
         Direct { irradiance: e, in_range: seen }

@@ -30,7 +30,10 @@ pub enum DirectSelection {
     /// exact unshadowed contribution (resampled importance sampling: each
     /// candidate is sampled and evaluated without a shadow ray, the `k`
     /// picks are drawn from them, and only they cast one), `k` in
-    /// `1..=64`. The `k` rays go only where light arrives unshadowed.
+    /// `1..=64`. The `k` rays go only where light arrives unshadowed. With
+    /// `k ≥ 3` each pick is drawn for one colour channel (pick `j` for
+    /// channel `j mod 3`, slc-core's `slot_target`) and estimates that
+    /// channel, so coloured lights add no colour noise.
     Resampled {
         /// Picks per point.
         k: u32,

@@ -296,20 +296,26 @@ fn assert_blocks(blocks: &[(usize, f64, f64, f64)], frames: usize, what: &str) {
     }
 }
 
-/// One frame's relative RMSE against `want` (the image's RMSE over its
-/// mean), the mean over `frames`.
-fn relative_rmse(s: &Setup, frames: &[Vec<[f32; 4]>], want: &[Option<Vec3>]) -> f64 {
-    let per_frame = |img: &Vec<[f32; 4]>| {
-        let (mut se, mut sum, mut n) = (0.0f64, 0.0f64, 0.0f64);
-        for (i, w) in want.iter().enumerate() {
-            if let (Some(w), Some(_)) = (w, s.points[i]) {
-                let (a, b) = ((img[i][0] + img[i][1] + img[i][2]) as f64, (w.x + w.y + w.z) as f64);
-                (se, sum, n) = (se + (a - b) * (a - b), sum + b, n + 1.0);
+/// One frame's relative RMSE against `want` of r + g + b (the image's
+/// RMSE over its mean), and the mean of the three channels' own, each the
+/// mean over `frames`.
+fn relative_rmse(s: &Setup, frames: &[Vec<[f32; 4]>], want: &[Option<Vec3>]) -> (f64, f64) {
+    let of = |value: &dyn Fn([f32; 3]) -> f32| {
+        let per_frame = |img: &Vec<[f32; 4]>| {
+            let (mut se, mut sum, mut n) = (0.0f64, 0.0f64, 0.0f64);
+            for (i, w) in want.iter().enumerate() {
+                if let (Some(w), Some(_)) = (w, s.points[i]) {
+                    let a = value([img[i][0], img[i][1], img[i][2]]) as f64;
+                    let b = value(w.to_array()) as f64;
+                    (se, sum, n) = (se + (a - b) * (a - b), sum + b, n + 1.0);
+                }
             }
-        }
-        (se / n).sqrt() / (sum / n)
+            (se / n).sqrt() / (sum / n)
+        };
+        frames.iter().map(per_frame).sum::<f64>() / frames.len() as f64
     };
-    frames.iter().map(per_frame).sum::<f64>() / frames.len() as f64
+    let channels = (0..3).map(|c| of(&|v| v[c])).sum::<f64>() / 3.0;
+    (of(&|v| v[0] + v[1] + v[2]), channels)
 }
 
 /// Weighted picks (the pass's default before resampling) and resampled
@@ -329,7 +335,7 @@ fn stochastic_mean_matches_the_brute_force() {
     let open = block_means(&|i| open_img[i].map(|e| (e.x + e.y + e.z) as f64));
     let culling = Culling::Stochastic(RangeParams::new(0.01, 1.0).unwrap());
     const N: u32 = 64;
-    let mut noise = Vec::new();
+    let (mut noise, mut per_channel) = (Vec::new(), Vec::new());
     for selection in [DirectSelection::Weighted { k: 8 }, DirectSelection::Resampled { k: 8 }] {
         let mut pass = pass(gpu, &s, selection);
         pass.set_shadows(Some(Shadows::new(&occ))).unwrap();
@@ -346,11 +352,13 @@ fn stochastic_mean_matches_the_brute_force() {
             far_from_open >= 8,
             "{selection:?}: only {far_from_open} blocks see the shadows: the test says little"
         );
-        noise.push(relative_rmse(&s, &frames, &want));
+        let (sum, channels) = relative_rmse(&s, &frames, &want);
+        noise.push(sum);
+        per_channel.push(channels);
     }
     eprintln!(
-        "one frame's relative RMSE, 8 shadowed picks: weighted {:.4}, resampled {:.4}",
-        noise[0], noise[1]
+        "one frame's relative RMSE, 8 shadowed picks: weighted {:.4}, resampled {:.4}; per channel {:.4}, {:.4}",
+        noise[0], noise[1], per_channel[0], per_channel[1]
     );
     assert!(
         noise[1] <= 0.65 * noise[0],
@@ -403,7 +411,7 @@ fn reused_picks_match_the_brute_force() {
         ("reuse, moving lights", Some(reuse), true),
         ("reuse with 2 neighbours", Some(DirectReuse { neighbours: 2, ..reuse }), false),
     ];
-    let mut noise = Vec::new();
+    let (mut noise, mut per_channel) = (Vec::new(), Vec::new());
     for (what, reuse, moving) in configs {
         let mut pass = reusing_pass(gpu, &s, k8, reuse);
         pass.set_shadows(Some(Shadows::new(&occ))).unwrap();
@@ -425,11 +433,13 @@ fn reused_picks_match_the_brute_force() {
             .collect();
         let blocks = blocks_against(&s, &last, &want);
         assert_blocks(&blocks, last.len(), what);
-        noise.push(relative_rmse(&s, &last, &want));
+        let (sum, channels) = relative_rmse(&s, &last, &want);
+        noise.push(sum);
+        per_channel.push(channels);
     }
     eprintln!(
-        "one frame's relative RMSE, 8 shadowed resampled picks: without reuse {:.4}, reused {:.4}, with visibility reuse {:.4}",
-        noise[0], noise[1], noise[2]
+        "one frame's relative RMSE, 8 shadowed resampled picks: without reuse {:.4}, reused {:.4}, with visibility reuse {:.4}; per channel {:.4}, {:.4}, {:.4}",
+        noise[0], noise[1], noise[2], per_channel[0], per_channel[1], per_channel[2]
     );
     assert!(
         noise[1] < 0.85 * noise[0],

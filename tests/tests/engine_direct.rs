@@ -12,13 +12,15 @@
 //!   layout. Bound: every block within 5σ, at most 1% of them beyond 3σ
 //!   (3σ alone fails 0.27% of blocks by chance).
 //! - **Weighted against uniform picks, resampled against weighted** at the
-//!   same k = 8 and ε: one frame's mean relative error per pixel, weighted
-//!   at most half of uniform's, resampled no worse than weighted's
-//!   (measured and printed). Resampled picks reused across 8 frames of
-//!   still lights ([`DirectReuse`]): no worse than resampled's, and their
-//!   error of `r + g + b` at most half of weighted picks' (measured on
-//!   lavapipe: 0.0081 against 0.0378; per channel 0.067 against 0.074,
-//!   where 8 picks among ~220 randomly coloured lights tint each pixel).
+//!   same k = 8 and ε: one frame's mean relative error per pixel and
+//!   channel, weighted at most half of uniform's, resampled at most half of
+//!   weighted's (measured and printed; resampled slots each target one
+//!   colour channel of ~220 randomly coloured lights). Resampled picks
+//!   reused across 8 frames of still lights ([`DirectReuse`]): per channel
+//!   at most a quarter of weighted picks' (issue 47's noise target), and
+//!   their error of `r + g + b` at most 0.3 of weighted's (measured on
+//!   lavapipe: per channel 0.0083 against 0.0743, r + g + b 0.0081
+//!   against 0.0378).
 //! - **Accumulated by the temporal pass** (`TemporalPass` on the depth
 //!   buffer, 32 frames of still lights): the mean relative error at most
 //!   0.3 of one frame's (the mean of 32 independent frames: 0.18).
@@ -418,7 +420,10 @@ fn engine_program_matches_brute_force() {
         ew <= 0.5 * eu,
         "weighted picks' error {ew:.4} is not at most half of uniform's {eu:.4}"
     );
-    assert!(er <= ew, "resampled picks' error {er:.4} is above weighted picks' {ew:.4}");
+    assert!(
+        er <= 0.5 * ew,
+        "resampled picks' error {er:.4} is not half of weighted picks' {ew:.4}"
+    );
     // Resampled picks reused across frames (the pass's reuse, the depth
     // buffer's view-projection): the 8th frame of still lights (layout 0,
     // a new ξ every frame).
@@ -438,8 +443,8 @@ fn engine_program_matches_brute_force() {
         ere / ew,
         sre / sw
     );
-    assert!(ere <= er, "reuse's error {ere:.4} is above resampled picks' {er:.4}");
-    assert!(sre <= 0.5 * sw, "reuse's r + g + b error {sre:.4} is not half of weighted's {sw:.4}");
+    assert!(ere <= 0.25 * ew, "reuse's error {ere:.4} is not a quarter of weighted picks' {ew:.4}");
+    assert!(sre <= 0.3 * sw, "reuse's r + g + b error {sre:.4} is not 0.3 of weighted's {sw:.4}");
 
     // The same weighted frames accumulated by the temporal pass (the
     // lights still, the depth buffer read in place): after 32 frames the

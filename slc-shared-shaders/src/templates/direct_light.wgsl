@@ -115,6 +115,11 @@ fn add(a: Shaded, b: Shaded) -> Shaded {
     return Shaded(a.e + b.e, a.diffuse + b.diffuse, a.specular + b.specular);
 }
 
+/// `s` weighted per channel by `w`.
+fn scaled(s: Shaded, w: vec3f) -> Shaded {
+    return Shaded(s.e * w, s.diffuse * w, s.specular * w);
+}
+
 /// How many of the picks `lights` hold light `lights[k]` when `k` is the
 /// first of them, else 0: a pick held `m` times is shaded once, weighted
 /// `m` times (one shadow ray instead of `m`).
@@ -176,15 +181,15 @@ struct Domain {
     temporal: bool,
 }
 
-/// Target of the pick of light record `l` at grid cells `cells` for the
-/// surface `x` (normal `n`, material `m`): the channel mean of its whole
-/// unshadowed contribution.
-fn reuse_target(l: GpuLight, cells: u32, x: vec3f, n: vec3f, m: Material) -> f32 {
+/// Slot `q`'s target of the pick of light record `l` at grid cells
+/// `cells` for the surface `x` (normal `n`, material `m`): slc-core's
+/// `slot_target` of its whole unshadowed contribution.
+fn reuse_target(q: u32, l: GpuLight, cells: u32, x: vec3f, n: vec3f, m: Material) -> f32 {
 {% if counters %}
     evaluations += 1u;
 {% endif %}
     let c = connect_record(l, x, n, n, UNRANGED, UNRANGED, 1.0, grid_coordinate(cells), grid_coordinate(cells << 16u), 0.0, false);
-    return resample_target(output_of(shade_connection(c, x, n, m)));
+    return slot_target(output_of(shade_connection(c, x, n, m)), q, K);
 }
 
 /// The surface record of `x` (normal `n`, material `m`) with confidence `c`.
@@ -268,7 +273,7 @@ fn gris_combine(q: u32, cur: ReuseSlot, cur_ris: bool, cur_c: f32, k0: u32, k1: 
         if !(s.w > 0.0) || s.light >= arrayLength(&lights) {
             continue;
         }
-        let here = reuse_target(lights[s.light], s.u, x, n, m);
+        let here = reuse_target(q, lights[s.light], s.u, x, n, m);
         if !(here > 0.0) {
             continue;
         }
@@ -279,7 +284,7 @@ fn gris_combine(q: u32, cur: ReuseSlot, cur_ris: bool, cur_c: f32, k0: u32, k1: 
         var own = cur_c * here;
         var all = own;
         for (var k = k0; k < k1; k++) {
-            let t = (*doms)[k].c * reuse_target(lights_prev[s.light], s.u, (*doms)[k].x, (*doms)[k].n, (*doms)[k].m);
+            let t = (*doms)[k].c * reuse_target(q, lights_prev[s.light], s.u, (*doms)[k].x, (*doms)[k].n, (*doms)[k].m);
             all += t;
             if k + 1u == j {
                 own = t;
@@ -369,13 +374,15 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     // Resampled importance sampling over every light in range: each is
     // sampled (its point from the pick stream{% if reuse %}, on the 16-bit grid{% endif %}) and evaluated without a
     // shadow ray, and K independent one-slot weighted reservoirs (the
-    // seed's stream) keep candidate j with probability p_j / P, p_j its
-    // resample_target and P their sum. {% if reuse %}Slot k's pick then has the unbiased
+    // seed's stream) keep candidate j with probability p_j / P, p_j the
+    // slot's target (slc-core's slot_target: one colour channel per slot,
+    // the channel mean below 3 slots) and P their sum. {% if reuse %}Slot k's pick then has the unbiased
     // contribution weight P / p̂(y), p̂ its whole unranged target (p_j is
     // p̂ times the roulette's 1/p), and enters the reuse.{% else %}A kept candidate adds its
-    // contribution shadowed, weighted P / (K p_j): the expectation is the
-    // shadowed sum. The rays go only where light arrives unshadowed; a
-    // candidate kept by m slots casts one ray, weighted m times.{% endif %}
+    // contribution shadowed, weighted P / p_j times the slot's share of
+    // each channel (slot_share): the expectation is the shadowed sum. The
+    // rays go only where light arrives unshadowed; a candidate kept by
+    // several slots casts one ray, weighted by all their shares.{% endif %}
 
     var slot_light: array<u32, K>;
     var slot_u: array<vec2f, K>;
@@ -383,7 +390,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
 {% if reuse %}
     var slot_cells: array<u32, K>;
 {% endif %}
-    var total = 0.0;
+    var total = vec3f(0.0);
     var count = 0u;
     var hc = seed;
     for (var b = bsh_next_leaf_lobe(BSH, bsh_first(BSH), x, r, rl); b != BSH_NONE; b = bsh_next_leaf_lobe(BSH, bsh_nodes[b].next, x, r, rl)) {
@@ -400,15 +407,16 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
         h = pcg_hash(h);
         let u = vec2f(u1, xi_from_bits(h));
 {% endif %}
-        let p = resample_target(output_of(shade_pick_traced(li, x, n, r, rl, m, 1.0, u.x, u.y, eps, false)));
+        let c = output_of(shade_pick_traced(li, x, n, r, rl, m, 1.0, u.x, u.y, eps, false));
 {% if counters %}
         evaluations += 1u;
 {% endif %}
-        if p > 0.0 {
-            total += p;
+        if resample_target(c) > 0.0 {
+            total += c;
             for (var q = 0u; q < K; q++) {
                 hc = pcg_hash(hc);
-                if weighted_replace(p, total, xi_from_bits(hc)) {
+                let p = slot_target(c, q, K);
+                if p > 0.0 && weighted_replace(p, slot_target(total, q, K), xi_from_bits(hc)) {
                     slot_light[q] = li;
                     slot_u[q] = u;
                     slot_p[q] = p;
@@ -437,7 +445,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     for (var q = 0u; q < K; q++) {
         // This frame's pick (its weight the candidates' sum) and the
         // pixel's own history.
-        kept[q] = gris_combine(q, ReuseSlot(slot_light[q], slot_cells[q], total), true, 1.0, 0u, first, x, n, m, &doms, &hs);
+        kept[q] = gris_combine(q, ReuseSlot(slot_light[q], slot_cells[q], select(0.0, slot_target(total, q, K), slot_p[q] > 0.0)), true, 1.0, 0u, first, x, n, m, &doms, &hs);
         // The neighbours' histories join it (confidence: the inputs each
         // stands for).
         fin[q] = kept[q];
@@ -451,18 +459,18 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     // frame.
     var visible: array<bool, K>;
     for (var k = 0u; k < K; k++) {
-        var w = fin[k].w;
-        var first = w > 0.0;
+        var w = fin[k].w * slot_share(k, K);
+        var first = fin[k].w > 0.0;
         for (var j = 0u; j < K; j++) {
             if j != k && fin[j].w > 0.0 && same_pick(fin[j].light, fin[j].u, fin[k].light, fin[k].u) {
                 first = first && j > k;
-                w += fin[j].w;
+                w += fin[j].w * slot_share(j, K);
             }
         }
         if first {
-            let c = connect_record(lights[fin[k].light], x, n, n, UNRANGED, UNRANGED, w / f32(K), grid_coordinate(fin[k].u), grid_coordinate(fin[k].u << 16u), eps, true);
+            let c = connect_record(lights[fin[k].light], x, n, n, UNRANGED, UNRANGED, 1.0, grid_coordinate(fin[k].u), grid_coordinate(fin[k].u << 16u), eps, true);
             let shaded = shade_connection(c, x, n, m);
-            t = add(t, shaded);
+            t = add(t, scaled(shaded, w));
             for (var j = k; j < K; j++) {
                 if same_pick(fin[j].light, fin[j].u, fin[k].light, fin[k].u) {
                     visible[j] = resample_target(output_of(shaded)) > 0.0;
@@ -478,15 +486,19 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     }
     reuse_next[pixel].surface = reuse_surface(x, n, m, min(confidence, reuse.max_confidence));
 {% else %}
-    if total > 0.0 {
-        for (var k = 0u; k < K; k++) {
-            // A light is one candidate with one sampled point: the slots
-            // holding it hold the same pick.
-            let copies = pick_copies(slot_light, k);
-            if copies > 0u {
-                let w = total / (f32(K) * slot_p[k]) * f32(copies);
-                t = add(t, shade_pick(slot_light[k], x, n, r, rl, m, w, slot_u[k].x, slot_u[k].y, eps));
+    for (var k = 0u; k < K; k++) {
+        // A light is one candidate with one sampled point: the slots
+        // holding it hold the same pick, shaded once with their weights.
+        var w = vec3f(0.0);
+        var first = slot_p[k] > 0.0;
+        for (var j = 0u; j < K; j++) {
+            if slot_p[j] > 0.0 && slot_light[j] == slot_light[k] {
+                first = first && j >= k;
+                w += slot_target(total, j, K) / slot_p[j] * slot_share(j, K);
             }
+        }
+        if first {
+            t = add(t, scaled(shade_pick(slot_light[k], x, n, r, rl, m, 1.0, slot_u[k].x, slot_u[k].y, eps), w));
         }
     }
 {% endif %}

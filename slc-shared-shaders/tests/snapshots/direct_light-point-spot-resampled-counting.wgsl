@@ -149,7 +149,7 @@ var normal_tex: texture_2d<f32>;
 @group(0) @binding(3) 
 var out_tex: texture_storage_2d<rgba16float,write>;
 @group(1) @binding(1) 
-var<storage> lights_1: array<GpuLight>;
+var<storage> lights: array<GpuLight>;
 @group(1) @binding(2) 
 var<storage> rt2_3: array<f32>;
 @group(1) @binding(3) 
@@ -220,36 +220,36 @@ fn inverse_square(d2_2: f32) -> f32 {
     return (1f / max(d2_2, MIN_D2_));
 }
 
-fn connection_factor(cos_x: f32, d2_3: f32, rt2_1: f32, w: f32) -> f32 {
+fn connection_factor(cos_x: f32, d2_3: f32, rt2_1: f32, w_1: f32) -> f32 {
     let _e4 = inverse_square(d2_3);
     let _e6 = slc_weight(rt2_1, d2_3);
-    return (((cos_x * _e4) * _e6) * w);
+    return (((cos_x * _e4) * _e6) * w_1);
 }
 
 fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, r2_1: f32) -> f32 {
-    var local_2: bool;
-    var local_3: bool;
+    var local_5: bool;
+    var local_6: bool;
 
     let v_3 = (x_2 - y);
     let d2_6 = dot(v_3, v_3);
     let _e7 = slc_keep(r2_1, d2_6);
     if !(!(_e7)) {
-        local_2 = !((d2_6 > 0f));
+        local_5 = !((d2_6 > 0f));
     } else {
-        local_2 = true;
+        local_5 = true;
     }
-    let _e16 = local_2;
+    let _e16 = local_5;
     if _e16 {
         return 0f;
     }
-    let w_5 = (v_3 / vec3(sqrt(d2_6)));
-    let cos_x_1 = -(dot(n, w_5));
+    let w_7 = (v_3 / vec3(sqrt(d2_6)));
+    let cos_x_1 = -(dot(n, w_7));
     if !((cos_x_1 <= 0f)) {
-        local_3 = (dot(ng, w_5) >= 0f);
+        local_6 = (dot(ng, w_7) >= 0f);
     } else {
-        local_3 = true;
+        local_6 = true;
     }
-    let _e32 = local_3;
+    let _e32 = local_6;
     if _e32 {
         return 0f;
     }
@@ -282,12 +282,45 @@ fn bsh_range_bound(node_1: BshNode) -> f32 {
     return _e8;
 }
 
-fn weighted_replace(w_1: f32, w_sum: f32, u_2: f32) -> bool {
-    return ((u_2 * w_sum) < w_1);
+fn weighted_replace(w_2: f32, w_sum: f32, u_2: f32) -> bool {
+    return ((u_2 * w_sum) < w_2);
 }
 
 fn resample_target(c_1: vec3<f32>) -> f32 {
     return (((c_1.x + c_1.y) + c_1.z) * 0.33333334f);
+}
+
+fn slot_target(c_2: vec3<f32>, slot: u32, k_1: u32) -> f32 {
+    if (k_1 < 3u) {
+        let _e5 = resample_target(c_2);
+        return _e5;
+    }
+    let j_1 = (slot % 3u);
+    if (j_1 == 0u) {
+        return c_2.x;
+    }
+    if (j_1 == 1u) {
+        return c_2.y;
+    }
+    return c_2.z;
+}
+
+fn slot_share(slot_1: u32, k_2: u32) -> vec3<f32> {
+    if (k_2 < 3u) {
+        let _e4 = to_f32_(k_2);
+        let w_8 = (1f / _e4);
+        return vec3<f32>(w_8, w_8, w_8);
+    }
+    let j_2 = (slot_1 % 3u);
+    let _e15 = to_f32_((((k_2 + 2u) - j_2) / 3u));
+    let w_9 = (1f / _e15);
+    if (j_2 == 0u) {
+        return vec3<f32>(w_9, 0f, 0f);
+    }
+    if (j_2 == 1u) {
+        return vec3<f32>(0f, w_9, 0f);
+    }
+    return vec3<f32>(0f, 0f, w_9);
 }
 
 fn smith_root(cos_: f32, alpha: f32) -> f32 {
@@ -323,28 +356,28 @@ fn range_lobe(lobe_4: vec4<f32>) -> vec4<f32> {
 }
 
 fn cone_cos_of(v: vec3<f32>, d2_4: f32, a_2: f32, d: vec3<f32>) -> f32 {
-    var local_4: bool;
-    var local_5: bool;
+    var local_7: bool;
+    var local_8: bool;
 
     let vd = dot(v, d);
     let h2_ = (d2_4 - (a_2 * a_2));
     if !((h2_ <= 0f)) {
         if (vd >= 0f) {
-            local_5 = ((vd * vd) >= h2_);
+            local_8 = ((vd * vd) >= h2_);
         } else {
-            local_5 = false;
+            local_8 = false;
         }
-        let _e19 = local_5;
-        local_4 = _e19;
+        let _e19 = local_8;
+        local_7 = _e19;
     } else {
-        local_4 = true;
+        local_7 = true;
     }
-    let _e21 = local_4;
+    let _e21 = local_7;
     if _e21 {
         return 1f;
     }
-    let c_5 = cross(v, d);
-    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_5, c_5)) * a_2)) / d2_4), 1f);
+    let c_6 = cross(v, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_6, c_6)) * a_2)) / d2_4), 1f);
 }
 
 fn cone_cos_toward(center: vec3<f32>, radius: f32, p: vec3<f32>, d_1: vec3<f32>) -> f32 {
@@ -395,61 +428,61 @@ fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin: vec3<f32>, bmax: vec3<f32>, t_
     return -1f;
 }
 
-fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_3: vec3<f32>, b_3: vec3<f32>, c_2: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
-    var local_6: bool;
-    var local_7: bool;
-    var local_8: bool;
+fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_3: vec3<f32>, b_3: vec3<f32>, c_3: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
+    var local_9: bool;
+    var local_10: bool;
+    var local_11: bool;
 
     let e1_ = (b_3 - a_3);
-    let e2_ = (c_2 - a_3);
+    let e2_ = (c_3 - a_3);
     let p_2 = cross(d_3, e2_);
     let det = dot(e1_, p_2);
     if (abs(det) <= 0f) {
         return -1f;
     }
     let inv = (1f / det);
-    let s_3 = (o_1 - a_3);
-    let u_3 = (dot(s_3, p_2) * inv);
+    let s_4 = (o_1 - a_3);
+    let u_3 = (dot(s_4, p_2) * inv);
     if !((u_3 < 0f)) {
-        local_6 = (u_3 > 1f);
+        local_9 = (u_3 > 1f);
     } else {
-        local_6 = true;
+        local_9 = true;
     }
-    let _e28 = local_6;
+    let _e28 = local_9;
     if _e28 {
         return -1f;
     }
-    let q_1 = cross(s_3, e1_);
+    let q_1 = cross(s_4, e1_);
     let v_5 = (dot(d_3, q_1) * inv);
     if !((v_5 < 0f)) {
-        local_7 = ((u_3 + v_5) > 1f);
+        local_10 = ((u_3 + v_5) > 1f);
     } else {
-        local_7 = true;
+        local_10 = true;
     }
-    let _e42 = local_7;
+    let _e42 = local_10;
     if _e42 {
         return -1f;
     }
     let t_3 = (dot(e2_, q_1) * inv);
     if (t_3 > t_min) {
-        local_8 = (t_3 < t_max_1);
+        local_11 = (t_3 < t_max_1);
     } else {
-        local_8 = false;
+        local_11 = false;
     }
-    let _e51 = local_8;
+    let _e51 = local_11;
     if _e51 {
         return t_3;
     }
     return -1f;
 }
 
-fn light_intensity(l: GpuLight, w_2: vec3<f32>) -> vec3<f32> {
+fn light_intensity(l: GpuLight, w_3: vec3<f32>) -> vec3<f32> {
     switch l.kind {
         case 0u: {
             return l.intensity;
         }
         case 1u: {
-            let _e11 = spot_falloff(dot(l.p1_, w_2), l.a, l.b, l.p2_.x);
+            let _e11 = spot_falloff(dot(l.p1_, w_3), l.a, l.b, l.p2_.x);
             return (l.intensity * _e11);
         }
         default: {
@@ -575,8 +608,8 @@ fn bsh_inner_scale(a_5: f32, v_1: vec3<f32>, d2_5: f32, r_3: vec3<f32>, rl_2: ve
 }
 
 fn bsh_reaches(node_3: BshNode, x_4: vec3<f32>, r_4: vec3<f32>, rl_3: vec4<f32>) -> bool {
-    var local_9: bool;
-    var local_10: bool;
+    var local_12: bool;
+    var local_13: bool;
 
     let _e6 = sphere_contains_point(node_3.center, node_3.radius, x_4);
     if _e6 {
@@ -584,11 +617,11 @@ fn bsh_reaches(node_3: BshNode, x_4: vec3<f32>, r_4: vec3<f32>, rl_3: vec4<f32>)
     }
     if !((rl_3.w <= 1f)) {
         let _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001f)), x_4);
-        local_9 = !(_e20);
+        local_12 = !(_e20);
     } else {
-        local_9 = true;
+        local_12 = true;
     }
-    let _e23 = local_9;
+    let _e23 = local_12;
     if _e23 {
         return false;
     }
@@ -609,11 +642,11 @@ fn bsh_reaches(node_3: BshNode, x_4: vec3<f32>, r_4: vec3<f32>, rl_3: vec4<f32>)
     let s_c = (_e50 * 1.001f);
     let reach = (node_3.extent + (sqrt(s_c) * _e25));
     if (d2_7 <= ((node_3.radius * node_3.radius) * s_c)) {
-        local_10 = (d2_7 <= (reach * reach));
+        local_13 = (d2_7 <= (reach * reach));
     } else {
-        local_10 = false;
+        local_13 = false;
     }
-    let _e67 = local_10;
+    let _e67 = local_13;
     return _e67;
 }
 
@@ -646,48 +679,48 @@ fn bsh_next_leaf_lobe(nodes_3: u32, start: u32, x_5: vec3<f32>, r_5: vec3<f32>, 
 }
 
 fn connect_record(l_2: GpuLight, x_6: vec3<f32>, n_1: vec3<f32>, ng_1: vec3<f32>, r2_2: f32, rt2_2: f32, w_res: f32, u1_1: f32, u2_1: f32, eps: f32, trace_1: bool) -> Connection {
-    var c_3: Connection;
-    var local_11: bool;
-    var local_12: bool;
+    var c_4: Connection;
+    var local_14: bool;
+    var local_15: bool;
 
-    c_3.e = vec3(0f);
+    c_4.e = vec3(0f);
     let _e16 = light_point(l_2, u1_1, u2_1);
-    c_3.y = _e16;
-    let _e19 = c_3.y;
+    c_4.y = _e16;
+    let _e19 = c_4.y;
     let _e20 = connection_cosine(x_6, _e19, n_1, ng_1, r2_2);
-    c_3.cos_x = _e20;
-    let _e22 = c_3.cos_x;
+    c_4.cos_x = _e20;
+    let _e22 = c_4.cos_x;
     if !((_e22 <= 0f)) {
         if trace_1 {
-            let _e33 = c_3.y;
+            let _e33 = c_4.y;
             let _e34 = occluded((x_6 + (ng_1 * eps)), _e33);
-            local_12 = _e34;
+            local_15 = _e34;
         } else {
-            local_12 = false;
+            local_15 = false;
         }
-        let _e36 = local_12;
-        local_11 = _e36;
+        let _e36 = local_15;
+        local_14 = _e36;
     } else {
-        local_11 = true;
+        local_14 = true;
     }
-    let _e38 = local_11;
+    let _e38 = local_14;
     if _e38 {
-        let _e39 = c_3;
+        let _e39 = c_4;
         return _e39;
     }
-    let _e41 = c_3.y;
+    let _e41 = c_4.y;
     let v_7 = (x_6 - _e41);
     let d2_8 = dot(v_7, v_7);
     let _e48 = light_intensity(l_2, (v_7 / vec3(sqrt(d2_8))));
-    let _e50 = c_3.cos_x;
+    let _e50 = c_4.cos_x;
     let _e51 = connection_factor(_e50, d2_8, rt2_2, w_res);
-    c_3.e = (_e48 * _e51);
-    let _e53 = c_3;
+    c_4.e = (_e48 * _e51);
+    let _e53 = c_4;
     return _e53;
 }
 
 fn connect_traced(li: u32, x_7: vec3<f32>, n_2: vec3<f32>, ng_2: vec3<f32>, s: f32, w_res_1: f32, u1_2: f32, u2_2: f32, eps_1: f32, trace_2: bool) -> Connection {
-    let _e12 = lights_1[li];
+    let _e12 = lights[li];
     let _e15 = r2_3[li];
     let _e19 = rt2_3[li];
     let _e21 = connect_record(_e12, x_7, n_2, ng_2, (s * _e15), (s * _e19), w_res_1, u1_2, u2_2, eps_1, trace_2);
@@ -709,24 +742,24 @@ fn direct_count(f: u32, n_3: u32) {
     }
 }
 
-fn shade_connection(c_4: Connection, x_8: vec3<f32>, n_4: vec3<f32>, m_1: Material) -> Shaded {
+fn shade_connection(c_5: Connection, x_8: vec3<f32>, n_4: vec3<f32>, m_1: Material) -> Shaded {
     var s_1: Shaded;
 
-    s_1.e = c_4.e;
+    s_1.e = c_5.e;
     s_1.diffuse = vec3(0f);
     s_1.specular = vec3(0f);
     let _e13 = s_1;
     return _e13;
 }
 
-fn shade_pick_traced(li_1: u32, x_9: vec3<f32>, n_5: vec3<f32>, r_6: vec3<f32>, rl_5: vec4<f32>, m_2: Material, w_3: f32, u1_3: f32, u2_3: f32, eps_2: f32, trace_3: bool) -> Shaded {
-    let _e12 = connect_traced(li_1, x_9, n_5, n_5, 1f, w_3, u1_3, u2_3, eps_2, trace_3);
+fn shade_pick_traced(li_1: u32, x_9: vec3<f32>, n_5: vec3<f32>, r_6: vec3<f32>, rl_5: vec4<f32>, m_2: Material, w_4: f32, u1_3: f32, u2_3: f32, eps_2: f32, trace_3: bool) -> Shaded {
+    let _e12 = connect_traced(li_1, x_9, n_5, n_5, 1f, w_4, u1_3, u2_3, eps_2, trace_3);
     let _e13 = shade_connection(_e12, x_9, n_5, m_2);
     return _e13;
 }
 
-fn shade_pick(li_2: u32, x_10: vec3<f32>, n_6: vec3<f32>, r_7: vec3<f32>, rl_6: vec4<f32>, m_3: Material, w_4: f32, u1_4: f32, u2_4: f32, eps_3: f32) -> Shaded {
-    let _e11 = shade_pick_traced(li_2, x_10, n_6, r_7, rl_6, m_3, w_4, u1_4, u2_4, eps_3, true);
+fn shade_pick(li_2: u32, x_10: vec3<f32>, n_6: vec3<f32>, r_7: vec3<f32>, rl_6: vec4<f32>, m_3: Material, w_5: f32, u1_4: f32, u2_4: f32, eps_3: f32) -> Shaded {
+    let _e11 = shade_pick_traced(li_2, x_10, n_6, r_7, rl_6, m_3, w_5, u1_4, u2_4, eps_3, true);
     return _e11;
 }
 
@@ -734,46 +767,12 @@ fn add(a_6: Shaded, b_5: Shaded) -> Shaded {
     return Shaded((a_6.e + b_5.e), (a_6.diffuse + b_5.diffuse), (a_6.specular + b_5.specular));
 }
 
-fn pick_copies(lights: array<u32, 8>, k_1: u32) -> u32 {
-    var copies: u32 = 1u;
-    var j: u32 = 0u;
-    var local_13: bool;
-
-    loop {
-        let _e6 = j;
-        if (_e6 < K) {
-        } else {
-            break;
-        }
-        {
-            let _e9 = j;
-            if (_e9 != k_1) {
-                let _e13 = j;
-                local_13 = (lights[_e13] == lights[k_1]);
-            } else {
-                local_13 = false;
-            }
-            let _e18 = local_13;
-            if _e18 {
-                let _e19 = j;
-                if (_e19 < k_1) {
-                    return 0u;
-                }
-                let _e22 = copies;
-                copies = (_e22 + 1u);
-            }
-        }
-        continuing {
-            let _e26 = j;
-            j = (_e26 + 1u);
-        }
-    }
-    let _e28 = copies;
-    return _e28;
+fn scaled(s_2: Shaded, w_6: vec3<f32>) -> Shaded {
+    return Shaded((s_2.e * w_6), (s_2.diffuse * w_6), (s_2.specular * w_6));
 }
 
-fn output_of(s_2: Shaded) -> vec3<f32> {
-    return s_2.e;
+fn output_of(s_3: Shaded) -> vec3<f32> {
+    return s_3.e;
 }
 
 @compute @workgroup_size(8, 8, 1) 
@@ -788,12 +787,18 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     var slot_light: array<u32, 8>;
     var slot_u: array<vec2<f32>, 8>;
     var slot_p: array<f32, 8>;
-    var total: f32 = 0f;
+    var total: vec3<f32> = vec3(0f);
     var count: u32 = 0u;
     var hc: u32;
     var b: u32;
     var q: u32;
+    var local_2: bool;
     var k: u32 = 0u;
+    var w: vec3<f32>;
+    var first: bool;
+    var j: u32;
+    var local_3: bool;
+    var local_4: bool;
 
     let _e4 = view.width;
     if !((gid.x >= _e4)) {
@@ -836,129 +841,183 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     let _e78 = pick_stream(_e77);
     h = _e78;
     hc = _e77;
-    let _e98 = bsh_first(BSH);
-    let _e99 = r;
-    let _e100 = bsh_next_leaf_lobe(BSH, _e98, x_11, _e99, _e54);
-    b = _e100;
+    let _e99 = bsh_first(BSH);
+    let _e100 = r;
+    let _e101 = bsh_next_leaf_lobe(BSH, _e99, x_11, _e100, _e54);
+    b = _e101;
     loop {
-        let _e102 = b;
-        if (_e102 != BSH_NONE) {
+        let _e103 = b;
+        if (_e103 != BSH_NONE) {
         } else {
             break;
         }
         {
-            let _e105 = count;
-            count = (_e105 + 1u);
-            let _e109 = b;
-            let li_3 = bsh_nodes[_e109].light;
-            let _e113 = h;
-            let _e114 = pcg_hash(_e113);
-            h = _e114;
-            let _e115 = h;
-            let _e116 = xi_from_bits(_e115);
-            let _e117 = h;
-            let _e118 = pcg_hash(_e117);
-            h = _e118;
-            let _e119 = h;
-            let _e120 = xi_from_bits(_e119);
-            let u_4 = vec2<f32>(_e116, _e120);
-            let _e122 = r;
-            let _e123 = m;
-            let _e128 = shade_pick_traced(li_3, x_11, n_8, _e122, _e54, _e123, 1f, u_4.x, u_4.y, eps_4, false);
-            let _e129 = output_of(_e128);
-            let _e130 = resample_target(_e129);
+            let _e106 = count;
+            count = (_e106 + 1u);
+            let _e110 = b;
+            let li_3 = bsh_nodes[_e110].light;
+            let _e114 = h;
+            let _e115 = pcg_hash(_e114);
+            h = _e115;
+            let _e116 = h;
+            let _e117 = xi_from_bits(_e116);
+            let _e118 = h;
+            let _e119 = pcg_hash(_e118);
+            h = _e119;
+            let _e120 = h;
+            let _e121 = xi_from_bits(_e120);
+            let u_4 = vec2<f32>(_e117, _e121);
+            let _e123 = r;
+            let _e124 = m;
+            let _e129 = shade_pick_traced(li_3, x_11, n_8, _e123, _e54, _e124, 1f, u_4.x, u_4.y, eps_4, false);
+            let _e130 = output_of(_e129);
             let _e132 = evaluations;
             evaluations = (_e132 + 1u);
-            if (_e130 > 0f) {
-                let _e137 = total;
-                total = (_e137 + _e130);
+            let _e135 = resample_target(_e130);
+            if (_e135 > 0f) {
+                let _e138 = total;
+                total = (_e138 + _e130);
                 q = 0u;
                 loop {
-                    let _e141 = q;
-                    if (_e141 < K) {
+                    let _e142 = q;
+                    if (_e142 < K) {
                     } else {
                         break;
                     }
                     {
-                        let _e144 = hc;
-                        let _e145 = pcg_hash(_e144);
-                        hc = _e145;
-                        let _e146 = total;
-                        let _e147 = hc;
-                        let _e148 = xi_from_bits(_e147);
-                        let _e149 = weighted_replace(_e130, _e146, _e148);
-                        if _e149 {
-                            let _e150 = q;
-                            slot_light[_e150] = li_3;
-                            let _e152 = q;
-                            slot_u[_e152] = u_4;
-                            let _e154 = q;
-                            slot_p[_e154] = _e130;
+                        let _e145 = hc;
+                        let _e146 = pcg_hash(_e145);
+                        hc = _e146;
+                        let _e147 = q;
+                        let _e149 = slot_target(_e130, _e147, K);
+                        if (_e149 > 0f) {
+                            let _e154 = total;
+                            let _e155 = q;
+                            let _e157 = slot_target(_e154, _e155, K);
+                            let _e158 = hc;
+                            let _e159 = xi_from_bits(_e158);
+                            let _e160 = weighted_replace(_e149, _e157, _e159);
+                            local_2 = _e160;
+                        } else {
+                            local_2 = false;
+                        }
+                        let _e162 = local_2;
+                        if _e162 {
+                            let _e163 = q;
+                            slot_light[_e163] = li_3;
+                            let _e165 = q;
+                            slot_u[_e165] = u_4;
+                            let _e167 = q;
+                            slot_p[_e167] = _e149;
                         }
                     }
                     continuing {
-                        let _e157 = q;
-                        q = (_e157 + 1u);
+                        let _e170 = q;
+                        q = (_e170 + 1u);
                     }
                 }
             }
         }
         continuing {
-            let _e161 = b;
-            let _e164 = bsh_nodes[_e161].next;
-            let _e165 = r;
-            let _e166 = bsh_next_leaf_lobe(BSH, _e164, x_11, _e165, _e54);
-            b = _e166;
+            let _e174 = b;
+            let _e177 = bsh_nodes[_e174].next;
+            let _e178 = r;
+            let _e179 = bsh_next_leaf_lobe(BSH, _e177, x_11, _e178, _e54);
+            b = _e179;
         }
     }
-    let _e167 = total;
-    if (_e167 > 0f) {
-        loop {
-            let _e172 = k;
-            if (_e172 < K) {
-            } else {
-                break;
-            }
-            {
-                let _e175 = slot_light;
-                let _e176 = k;
-                let _e177 = pick_copies(_e175, _e176);
-                if (_e177 > 0u) {
-                    let _e180 = total;
-                    let _e182 = k;
-                    let _e184 = slot_p[_e182];
-                    let w_6 = ((_e180 / (8f * _e184)) * f32(_e177));
-                    let _e189 = t;
-                    let _e190 = k;
-                    let _e192 = slot_light[_e190];
-                    let _e193 = r;
-                    let _e194 = m;
-                    let _e195 = k;
-                    let _e198 = slot_u[_e195].x;
-                    let _e199 = k;
-                    let _e202 = slot_u[_e199].y;
-                    let _e203 = shade_pick(_e192, x_11, n_8, _e193, _e54, _e194, w_6, _e198, _e202, eps_4);
-                    let _e204 = add(_e189, _e203);
-                    t = _e204;
+    loop {
+        let _e182 = k;
+        if (_e182 < K) {
+        } else {
+            break;
+        }
+        {
+            w = vec3(0f);
+            let _e188 = k;
+            let _e190 = slot_p[_e188];
+            first = (_e190 > 0f);
+            j = 0u;
+            loop {
+                let _e196 = j;
+                if (_e196 < K) {
+                } else {
+                    break;
+                }
+                {
+                    let _e199 = j;
+                    let _e201 = slot_p[_e199];
+                    if (_e201 > 0f) {
+                        let _e206 = j;
+                        let _e208 = slot_light[_e206];
+                        let _e209 = k;
+                        let _e211 = slot_light[_e209];
+                        local_3 = (_e208 == _e211);
+                    } else {
+                        local_3 = false;
+                    }
+                    let _e214 = local_3;
+                    if _e214 {
+                        let _e215 = first;
+                        if _e215 {
+                            let _e218 = j;
+                            let _e219 = k;
+                            local_4 = (_e218 >= _e219);
+                        } else {
+                            local_4 = false;
+                        }
+                        let _e222 = local_4;
+                        first = _e222;
+                        let _e223 = w;
+                        let _e224 = total;
+                        let _e225 = j;
+                        let _e227 = slot_target(_e224, _e225, K);
+                        let _e228 = j;
+                        let _e230 = slot_p[_e228];
+                        let _e232 = j;
+                        let _e234 = slot_share(_e232, K);
+                        w = (_e223 + ((_e227 / _e230) * _e234));
+                    }
+                }
+                continuing {
+                    let _e238 = j;
+                    j = (_e238 + 1u);
                 }
             }
-            continuing {
-                let _e206 = k;
-                k = (_e206 + 1u);
+            let _e240 = first;
+            if _e240 {
+                let _e241 = t;
+                let _e242 = k;
+                let _e244 = slot_light[_e242];
+                let _e245 = r;
+                let _e246 = m;
+                let _e248 = k;
+                let _e251 = slot_u[_e248].x;
+                let _e252 = k;
+                let _e255 = slot_u[_e252].y;
+                let _e256 = shade_pick(_e244, x_11, n_8, _e245, _e54, _e246, 1f, _e251, _e255, eps_4);
+                let _e257 = w;
+                let _e258 = scaled(_e256, _e257);
+                let _e259 = add(_e241, _e258);
+                t = _e259;
             }
         }
+        continuing {
+            let _e261 = k;
+            k = (_e261 + 1u);
+        }
     }
-    let _e210 = t.e;
-    let _e211 = count;
-    textureStore(out_tex, texel_1, vec4<f32>(_e210, f32(_e211)));
+    let _e265 = t.e;
+    let _e266 = count;
+    textureStore(out_tex, texel_1, vec4<f32>(_e265, f32(_e266)));
     direct_count(DIRECT_COUNT_PIXELS, 1u);
-    let _e217 = count;
-    direct_count(DIRECT_COUNT_CANDIDATES, _e217);
-    let _e220 = evaluations;
-    direct_count(DIRECT_COUNT_EVALUATIONS, _e220);
-    let _e223 = rays_cast;
-    direct_count(DIRECT_COUNT_RAYS, _e223);
-    let _e226 = nodes_visited;
-    direct_count(DIRECT_COUNT_NODES, _e226);
+    let _e272 = count;
+    direct_count(DIRECT_COUNT_CANDIDATES, _e272);
+    let _e275 = evaluations;
+    direct_count(DIRECT_COUNT_EVALUATIONS, _e275);
+    let _e278 = rays_cast;
+    direct_count(DIRECT_COUNT_RAYS, _e278);
+    let _e281 = nodes_visited;
+    direct_count(DIRECT_COUNT_NODES, _e281);
     return;
 }

@@ -298,29 +298,29 @@ fn connection_factor(cos_x: f32, d2_3: f32, rt2_1: f32, w_1: f32) -> f32 {
 }
 
 fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, r2_1: f32) -> f32 {
-    var local_7: bool;
     var local_8: bool;
+    var local_9: bool;
 
     let v_6 = (x_2 - y);
     let d2_6 = dot(v_6, v_6);
     let _e7 = slc_keep(r2_1, d2_6);
     if !(!(_e7)) {
-        local_7 = !((d2_6 > 0f));
-    } else {
-        local_7 = true;
-    }
-    let _e16 = local_7;
-    if _e16 {
-        return 0f;
-    }
-    let w_7 = (v_6 / vec3(sqrt(d2_6)));
-    let cos_x_1 = -(dot(n, w_7));
-    if !((cos_x_1 <= 0f)) {
-        local_8 = (dot(ng, w_7) >= 0f);
+        local_8 = !((d2_6 > 0f));
     } else {
         local_8 = true;
     }
-    let _e32 = local_8;
+    let _e16 = local_8;
+    if _e16 {
+        return 0f;
+    }
+    let w_8 = (v_6 / vec3(sqrt(d2_6)));
+    let cos_x_1 = -(dot(n, w_8));
+    if !((cos_x_1 <= 0f)) {
+        local_9 = (dot(ng, w_8) >= 0f);
+    } else {
+        local_9 = true;
+    }
+    let _e32 = local_9;
     if _e32 {
         return 0f;
     }
@@ -362,6 +362,39 @@ fn weighted_replace(w_3: f32, w_sum: f32, u_2: f32) -> bool {
 
 fn resample_target(c_2: vec3<f32>) -> f32 {
     return (((c_2.x + c_2.y) + c_2.z) * 0.33333334f);
+}
+
+fn slot_target(c_3: vec3<f32>, slot: u32, k_1: u32) -> f32 {
+    if (k_1 < 3u) {
+        let _e5 = resample_target(c_3);
+        return _e5;
+    }
+    let j_4 = (slot % 3u);
+    if (j_4 == 0u) {
+        return c_3.x;
+    }
+    if (j_4 == 1u) {
+        return c_3.y;
+    }
+    return c_3.z;
+}
+
+fn slot_share(slot_1: u32, k_2: u32) -> vec3<f32> {
+    if (k_2 < 3u) {
+        let _e4 = to_f32_(k_2);
+        let w_9 = (1f / _e4);
+        return vec3<f32>(w_9, w_9, w_9);
+    }
+    let j_5 = (slot_1 % 3u);
+    let _e15 = to_f32_((((k_2 + 2u) - j_5) / 3u));
+    let w_10 = (1f / _e15);
+    if (j_5 == 0u) {
+        return vec3<f32>(w_10, 0f, 0f);
+    }
+    if (j_5 == 1u) {
+        return vec3<f32>(0f, w_10, 0f);
+    }
+    return vec3<f32>(0f, 0f, w_10);
 }
 
 fn grid_coordinate(bits_1: u32) -> f32 {
@@ -407,14 +440,14 @@ fn smith_root(cos_: f32, alpha_1: f32) -> f32 {
 }
 
 fn smith_visibility(n_l: f32, n_v: f32, alpha_2: f32) -> f32 {
-    var local_9: bool;
+    var local_10: bool;
 
     if !((n_l <= 0f)) {
-        local_9 = (n_v <= 0f);
+        local_10 = (n_v <= 0f);
     } else {
-        local_9 = true;
+        local_10 = true;
     }
-    let _e11 = local_9;
+    let _e11 = local_10;
     if _e11 {
         return 0f;
     }
@@ -424,9 +457,9 @@ fn smith_visibility(n_l: f32, n_v: f32, alpha_2: f32) -> f32 {
 }
 
 fn fresnel_schlick(f0_: vec3<f32>, f90_: f32, v_h: f32) -> vec3<f32> {
-    let c_9 = saturate((1f - v_h));
-    let c2_1 = (c_9 * c_9);
-    return (f0_ + ((vec3<f32>(f90_, f90_, f90_) - f0_) * ((c2_1 * c2_1) * c_9)));
+    let c_10 = saturate((1f - v_h));
+    let c2_1 = (c_10 * c_10);
+    return (f0_ + ((vec3<f32>(f90_, f90_, f90_) - f0_) * ((c2_1 * c2_1) * c_10)));
 }
 
 fn specular_fresnel(base: vec3<f32>, metallic: f32, f0_d: vec3<f32>, f90_d: f32, v_h_1: f32) -> vec3<f32> {
@@ -436,40 +469,40 @@ fn specular_fresnel(base: vec3<f32>, metallic: f32, f0_d: vec3<f32>, f90_d: f32,
 }
 
 fn has_specular(metallic_1: f32, f0_d_1: vec3<f32>, f90_d_1: f32) -> bool {
-    var local_10: bool;
     var local_11: bool;
+    var local_12: bool;
 
     if !((metallic_1 > 0f)) {
-        local_10 = (f90_d_1 > 0f);
-    } else {
-        local_10 = true;
-    }
-    let _e11 = local_10;
-    if !(_e11) {
-        local_11 = (max(max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0f);
+        local_11 = (f90_d_1 > 0f);
     } else {
         local_11 = true;
     }
-    let _e23 = local_11;
+    let _e11 = local_11;
+    if !(_e11) {
+        local_12 = (max(max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0f);
+    } else {
+        local_12 = true;
+    }
+    let _e23 = local_12;
     return _e23;
 }
 
-fn channel_mean(c_3: vec3<f32>) -> f32 {
-    return (((c_3.x + c_3.y) + c_3.z) * 0.33333334f);
+fn channel_mean(c_4: vec3<f32>) -> f32 {
+    return (((c_4.x + c_4.y) + c_4.z) * 0.33333334f);
 }
 
 fn receiver_lobe(base_1: vec3<f32>, metallic_2: f32, f0_d_2: vec3<f32>, f90_d_2: f32, alpha_3: f32, n_v_1: f32) -> vec4<f32> {
-    var local_12: bool;
+    var local_13: bool;
 
     let _e10 = fresnel_schlick(f0_d_2, f90_d_2, n_v_1);
     let _e16 = channel_mean((((vec3<f32>(1f, 1f, 1f) - _e10) * base_1) * (1f - metallic_2)));
     if !((n_v_1 <= 0f)) {
         let _e22 = has_specular(metallic_2, f0_d_2, f90_d_2);
-        local_12 = !(_e22);
+        local_13 = !(_e22);
     } else {
-        local_12 = true;
+        local_13 = true;
     }
-    let _e25 = local_12;
+    let _e25 = local_13;
     if _e25 {
         return vec4<f32>(_e16, 0f, alpha_3, n_v_1);
     }
@@ -553,28 +586,28 @@ fn bevy_brdf(base_2: vec3<f32>, metallic_3: f32, r_4: f32, reflectance_1: f32, n
 }
 
 fn cone_cos_of(v_2: vec3<f32>, d2_4: f32, a_3: f32, d: vec3<f32>) -> f32 {
-    var local_13: bool;
     var local_14: bool;
+    var local_15: bool;
 
     let vd = dot(v_2, d);
     let h2_1 = (d2_4 - (a_3 * a_3));
     if !((h2_1 <= 0f)) {
         if (vd >= 0f) {
-            local_14 = ((vd * vd) >= h2_1);
+            local_15 = ((vd * vd) >= h2_1);
         } else {
-            local_14 = false;
+            local_15 = false;
         }
-        let _e19 = local_14;
-        local_13 = _e19;
+        let _e19 = local_15;
+        local_14 = _e19;
     } else {
-        local_13 = true;
+        local_14 = true;
     }
-    let _e21 = local_13;
+    let _e21 = local_14;
     if _e21 {
         return 1f;
     }
-    let c_10 = cross(v_2, d);
-    return min((((vd * sqrt(h2_1)) + (sqrt(dot(c_10, c_10)) * a_3)) / d2_4), 1f);
+    let c_11 = cross(v_2, d);
+    return min((((vd * sqrt(h2_1)) + (sqrt(dot(c_11, c_11)) * a_3)) / d2_4), 1f);
 }
 
 fn cone_cos_toward(center: vec3<f32>, radius: f32, p: vec3<f32>, d_1: vec3<f32>) -> f32 {
@@ -625,65 +658,65 @@ fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin: vec3<f32>, bmax: vec3<f32>, t_
     return -1f;
 }
 
-fn triangle_normal(a_4: vec3<f32>, b_4: vec3<f32>, c_4: vec3<f32>) -> vec3<f32> {
-    var local_15: bool;
+fn triangle_normal(a_4: vec3<f32>, b_4: vec3<f32>, c_5: vec3<f32>) -> vec3<f32> {
+    var local_16: bool;
 
-    let n_13 = cross((b_4 - a_4), (c_4 - a_4));
+    let n_13 = cross((b_4 - a_4), (c_5 - a_4));
     let l2_ = dot(n_13, n_13);
     if !(!((l2_ > 0f))) {
-        local_15 = !((l2_ < 300000000000000000000000000000000000000f));
+        local_16 = !((l2_ < 300000000000000000000000000000000000000f));
     } else {
-        local_15 = true;
+        local_16 = true;
     }
-    let _e17 = local_15;
+    let _e17 = local_16;
     if _e17 {
         return vec3<f32>(0f, 0f, 0f);
     }
     return (n_13 / vec3(sqrt(l2_)));
 }
 
-fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_5: vec3<f32>, c_5: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
-    var local_16: bool;
+fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_5: vec3<f32>, c_6: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
     var local_17: bool;
     var local_18: bool;
+    var local_19: bool;
 
     let e1_ = (b_5 - a_5);
-    let e2_ = (c_5 - a_5);
+    let e2_ = (c_6 - a_5);
     let p_5 = cross(d_3, e2_);
     let det = dot(e1_, p_5);
     if (abs(det) <= 0f) {
         return -1f;
     }
     let inv = (1f / det);
-    let s_5 = (o_1 - a_5);
-    let u_3 = (dot(s_5, p_5) * inv);
+    let s_6 = (o_1 - a_5);
+    let u_3 = (dot(s_6, p_5) * inv);
     if !((u_3 < 0f)) {
-        local_16 = (u_3 > 1f);
-    } else {
-        local_16 = true;
-    }
-    let _e28 = local_16;
-    if _e28 {
-        return -1f;
-    }
-    let q_4 = cross(s_5, e1_);
-    let v_8 = (dot(d_3, q_4) * inv);
-    if !((v_8 < 0f)) {
-        local_17 = ((u_3 + v_8) > 1f);
+        local_17 = (u_3 > 1f);
     } else {
         local_17 = true;
     }
-    let _e42 = local_17;
+    let _e28 = local_17;
+    if _e28 {
+        return -1f;
+    }
+    let q_5 = cross(s_6, e1_);
+    let v_8 = (dot(d_3, q_5) * inv);
+    if !((v_8 < 0f)) {
+        local_18 = ((u_3 + v_8) > 1f);
+    } else {
+        local_18 = true;
+    }
+    let _e42 = local_18;
     if _e42 {
         return -1f;
     }
-    let t_3 = (dot(e2_, q_4) * inv);
+    let t_3 = (dot(e2_, q_5) * inv);
     if (t_3 > t_min) {
-        local_18 = (t_3 < t_max_1);
+        local_19 = (t_3 < t_max_1);
     } else {
-        local_18 = false;
+        local_19 = false;
     }
-    let _e51 = local_18;
+    let _e51 = local_19;
     if _e51 {
         return t_3;
     }
@@ -701,14 +734,14 @@ fn reproject(c0_: vec4<f32>, c1_: vec4<f32>, c2_: vec4<f32>, c3_: vec4<f32>, p_2
 }
 
 fn history_matches(n_4: vec3<f32>, nh: vec3<f32>, p_3: vec3<f32>, oh: f32, d_4: f32) -> bool {
-    var local_19: bool;
+    var local_20: bool;
 
     if (abs((dot(nh, p_3) - oh)) <= (TEMPORAL_DEPTH_TOLERANCE * d_4)) {
-        local_19 = (dot(n_4, nh) >= TEMPORAL_NORMAL_COS);
+        local_20 = (dot(n_4, nh) >= TEMPORAL_NORMAL_COS);
     } else {
-        local_19 = false;
+        local_20 = false;
     }
-    let _e17 = local_19;
+    let _e17 = local_20;
     return _e17;
 }
 
@@ -845,8 +878,8 @@ fn bsh_inner_scale(a_7: f32, v_3: vec3<f32>, d2_5: f32, r_6: vec3<f32>, rl_2: ve
 }
 
 fn bsh_reaches(node_3: BshNode, x_4: vec3<f32>, r_7: vec3<f32>, rl_3: vec4<f32>) -> bool {
-    var local_20: bool;
     var local_21: bool;
+    var local_22: bool;
 
     let _e6 = sphere_contains_point(node_3.center, node_3.radius, x_4);
     if _e6 {
@@ -854,11 +887,11 @@ fn bsh_reaches(node_3: BshNode, x_4: vec3<f32>, r_7: vec3<f32>, rl_3: vec4<f32>)
     }
     if !((rl_3.w <= 1f)) {
         let _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001f)), x_4);
-        local_20 = !(_e20);
+        local_21 = !(_e20);
     } else {
-        local_20 = true;
+        local_21 = true;
     }
-    let _e23 = local_20;
+    let _e23 = local_21;
     if _e23 {
         return false;
     }
@@ -879,11 +912,11 @@ fn bsh_reaches(node_3: BshNode, x_4: vec3<f32>, r_7: vec3<f32>, rl_3: vec4<f32>)
     let s_c = (_e50 * 1.001f);
     let reach = (node_3.extent + (sqrt(s_c) * _e25));
     if (d2_7 <= ((node_3.radius * node_3.radius) * s_c)) {
-        local_21 = (d2_7 <= (reach * reach));
+        local_22 = (d2_7 <= (reach * reach));
     } else {
-        local_21 = false;
+        local_22 = false;
     }
-    let _e67 = local_21;
+    let _e67 = local_22;
     return _e67;
 }
 
@@ -916,43 +949,43 @@ fn bsh_next_leaf_lobe(nodes_3: u32, start: u32, x_5: vec3<f32>, r_8: vec3<f32>, 
 }
 
 fn connect_record(l_3: GpuLight, x_6: vec3<f32>, n_5: vec3<f32>, ng_1: vec3<f32>, r2_2: f32, rt2_2: f32, w_res: f32, u1_3: f32, u2_3: f32, eps: f32, trace_1: bool) -> Connection {
-    var c_6: Connection;
-    var local_22: bool;
+    var c_7: Connection;
     var local_23: bool;
+    var local_24: bool;
 
-    c_6.e = vec3(0f);
+    c_7.e = vec3(0f);
     let _e16 = light_point(l_3, u1_3, u2_3);
-    c_6.y = _e16;
-    let _e19 = c_6.y;
+    c_7.y = _e16;
+    let _e19 = c_7.y;
     let _e20 = connection_cosine(x_6, _e19, n_5, ng_1, r2_2);
-    c_6.cos_x = _e20;
-    let _e22 = c_6.cos_x;
+    c_7.cos_x = _e20;
+    let _e22 = c_7.cos_x;
     if !((_e22 <= 0f)) {
         if trace_1 {
-            let _e33 = c_6.y;
+            let _e33 = c_7.y;
             let _e34 = occluded((x_6 + (ng_1 * eps)), _e33);
-            local_23 = _e34;
+            local_24 = _e34;
         } else {
-            local_23 = false;
+            local_24 = false;
         }
-        let _e36 = local_23;
-        local_22 = _e36;
+        let _e36 = local_24;
+        local_23 = _e36;
     } else {
-        local_22 = true;
+        local_23 = true;
     }
-    let _e38 = local_22;
+    let _e38 = local_23;
     if _e38 {
-        let _e39 = c_6;
+        let _e39 = c_7;
         return _e39;
     }
-    let _e41 = c_6.y;
+    let _e41 = c_7.y;
     let v_10 = (x_6 - _e41);
     let d2_8 = dot(v_10, v_10);
     let _e48 = light_intensity(l_3, (v_10 / vec3(sqrt(d2_8))));
-    let _e50 = c_6.cos_x;
+    let _e50 = c_7.cos_x;
     let _e51 = connection_factor(_e50, d2_8, rt2_2, w_res);
-    c_6.e = (_e48 * _e51);
-    let _e53 = c_6;
+    c_7.e = (_e48 * _e51);
+    let _e53 = c_7;
     return _e53;
 }
 
@@ -965,8 +998,8 @@ fn connect_traced(li: u32, x_7: vec3<f32>, n_6: vec3<f32>, ng_2: vec3<f32>, s: f
 }
 
 fn light_range_scale(li_1: u32, x_8: vec3<f32>, r_9: vec3<f32>, rl_5: vec4<f32>) -> f32 {
-    let c_11 = light_cones[li_1];
-    let _e9 = range_scale_toward(rl_5, c_11.center, c_11.radius, x_8, r_9);
+    let c_12 = light_cones[li_1];
+    let _e9 = range_scale_toward(rl_5, c_12.center, c_12.radius, x_8, r_9);
     return _e9;
 }
 
@@ -975,15 +1008,15 @@ fn surface_at(texel: vec2<i32>) -> vec4<f32> {
     return select(vec4(0f), vec4<f32>(p_6.xyz, 1f), (p_6.w > 0f));
 }
 
-fn shade_connection(c_7: Connection, x_9: vec3<f32>, n_7: vec3<f32>, m_1: Material) -> Shaded {
+fn shade_connection(c_8: Connection, x_9: vec3<f32>, n_7: vec3<f32>, m_1: Material) -> Shaded {
     var s_1: Shaded;
 
-    s_1.e = c_7.e;
+    s_1.e = c_8.e;
     s_1.diffuse = vec3(0f);
     s_1.specular = vec3(0f);
-    if (c_7.cos_x > 0f) {
-        let _e25 = bevy_brdf(m_1.base, m_1.metallic, m_1.roughness, m_1.reflectance, n_7, m_1.v, normalize((c_7.y - x_9)));
-        s_1.diffuse = (_e25 * c_7.e);
+    if (c_8.cos_x > 0f) {
+        let _e25 = bevy_brdf(m_1.base, m_1.metallic, m_1.roughness, m_1.reflectance, n_7, m_1.v, normalize((c_8.y - x_9)));
+        s_1.diffuse = (_e25 * c_8.e);
     }
     let _e28 = s_1;
     return _e28;
@@ -1005,48 +1038,52 @@ fn add(a_8: Shaded, b_7: Shaded) -> Shaded {
     return Shaded((a_8.e + b_7.e), (a_8.diffuse + b_7.diffuse), (a_8.specular + b_7.specular));
 }
 
-fn output_of(s_2: Shaded) -> vec3<f32> {
-    return (s_2.diffuse + s_2.specular);
+fn scaled(s_2: Shaded, w_7: vec3<f32>) -> Shaded {
+    return Shaded((s_2.e * w_7), (s_2.diffuse * w_7), (s_2.specular * w_7));
 }
 
-fn reuse_target(l_4: GpuLight, cells: u32, x_11: vec3<f32>, n_9: vec3<f32>, m_3: Material) -> f32 {
-    let _e8 = grid_coordinate(cells);
-    let _e11 = grid_coordinate((cells << 16u));
-    let _e14 = connect_record(l_4, x_11, n_9, n_9, UNRANGED, UNRANGED, 1f, _e8, _e11, 0f, false);
-    let _e15 = shade_connection(_e14, x_11, n_9, m_3);
-    let _e16 = output_of(_e15);
-    let _e17 = resample_target(_e16);
-    return _e17;
+fn output_of(s_3: Shaded) -> vec3<f32> {
+    return (s_3.diffuse + s_3.specular);
 }
 
-fn reuse_surface(x_12: vec3<f32>, n_10: vec3<f32>, m_4: Material, c_8: f32) -> ReuseSurface {
-    return ReuseSurface(x_12, c_8, n_10, pack4x8unorm(vec4<f32>(m_4.base, m_4.metallic)), pack2x16unorm(vec2<f32>(saturate(m_4.roughness), saturate(m_4.reflectance))), 0u, 0u, 0u);
+fn reuse_target(q_3: u32, l_4: GpuLight, cells: u32, x_11: vec3<f32>, n_9: vec3<f32>, m_3: Material) -> f32 {
+    let _e9 = grid_coordinate(cells);
+    let _e12 = grid_coordinate((cells << 16u));
+    let _e15 = connect_record(l_4, x_11, n_9, n_9, UNRANGED, UNRANGED, 1f, _e9, _e12, 0f, false);
+    let _e16 = shade_connection(_e15, x_11, n_9, m_3);
+    let _e17 = output_of(_e16);
+    let _e19 = slot_target(_e17, q_3, K);
+    return _e19;
 }
 
-fn reuse_material(s_3: ReuseSurface, eye: vec3<f32>) -> Material {
-    let b_8 = unpack4x8unorm(s_3.base);
-    let r_12 = unpack2x16unorm(s_3.rough);
-    let _e13 = material_of(b_8.xyz, b_8.w, r_12.x, r_12.y, normalize((eye - s_3.x)));
+fn reuse_surface(x_12: vec3<f32>, n_10: vec3<f32>, m_4: Material, c_9: f32) -> ReuseSurface {
+    return ReuseSurface(x_12, c_9, n_10, pack4x8unorm(vec4<f32>(m_4.base, m_4.metallic)), pack2x16unorm(vec2<f32>(saturate(m_4.roughness), saturate(m_4.reflectance))), 0u, 0u, 0u);
+}
+
+fn reuse_material(s_4: ReuseSurface, eye: vec3<f32>) -> Material {
+    let b_8 = unpack4x8unorm(s_4.base);
+    let r_12 = unpack2x16unorm(s_4.rough);
+    let _e13 = material_of(b_8.xyz, b_8.w, r_12.x, r_12.y, normalize((eye - s_4.x)));
     return _e13;
 }
 
 fn same_pick(la: u32, ca: u32, lb: u32, cb: u32) -> bool {
-    var local_24: bool;
     var local_25: bool;
+    var local_26: bool;
 
     if (la == lb) {
         if !((ca == cb)) {
             let _e14 = lights[la].kind;
-            local_25 = (_e14 != LIGHT_TRIANGLE);
+            local_26 = (_e14 != LIGHT_TRIANGLE);
         } else {
-            local_25 = true;
+            local_26 = true;
         }
-        let _e18 = local_25;
-        local_24 = _e18;
+        let _e18 = local_26;
+        local_25 = _e18;
     } else {
-        local_24 = false;
+        local_25 = false;
     }
-    let _e20 = local_24;
+    let _e20 = local_25;
     return _e20;
 }
 
@@ -1055,14 +1092,14 @@ fn reuse_domains(x_13: vec3<f32>, n_11: vec3<f32>, d_6: f32, h_1: u32, doms_1: p
     var hr: u32;
     var j_2: u32 = 0u;
     var p_4: vec2<f32>;
-    var local_26: bool;
     var local_27: bool;
     var local_28: bool;
-    var seen: bool;
-    var k_1: u32;
     var local_29: bool;
+    var seen: bool;
+    var k_3: u32;
     var local_30: bool;
     var local_31: bool;
+    var local_32: bool;
 
     let _e9 = reuse.has_history;
     if (_e9 != 1u) {
@@ -1107,34 +1144,34 @@ fn reuse_domains(x_13: vec3<f32>, n_11: vec3<f32>, d_6: f32, h_1: u32, doms_1: p
             let _e63 = p_4;
             let t_5 = vec2<i32>(round(_e63));
             if !((t_5.x < 0i)) {
-                local_26 = (t_5.y < 0i);
-            } else {
-                local_26 = true;
-            }
-            let _e76 = local_26;
-            if !(_e76) {
-                let _e83 = view.width;
-                local_27 = (t_5.x >= i32(_e83));
+                local_27 = (t_5.y < 0i);
             } else {
                 local_27 = true;
             }
-            let _e87 = local_27;
-            if !(_e87) {
-                let _e94 = view.height;
-                local_28 = (t_5.y >= i32(_e94));
+            let _e76 = local_27;
+            if !(_e76) {
+                let _e83 = view.width;
+                local_28 = (t_5.x >= i32(_e83));
             } else {
                 local_28 = true;
             }
-            let _e98 = local_28;
+            let _e87 = local_28;
+            if !(_e87) {
+                let _e94 = view.height;
+                local_29 = (t_5.y >= i32(_e94));
+            } else {
+                local_29 = true;
+            }
+            let _e98 = local_29;
             if _e98 {
                 continue;
             }
             let _e103 = view.width;
             let pixel = ((u32(t_5.y) * _e103) + u32(t_5.x));
             seen = false;
-            k_1 = 0u;
+            k_3 = 0u;
             loop {
-                let _e112 = k_1;
+                let _e112 = k_3;
                 let _e113 = nd;
                 if (_e112 < _e113) {
                 } else {
@@ -1143,44 +1180,44 @@ fn reuse_domains(x_13: vec3<f32>, n_11: vec3<f32>, d_6: f32, h_1: u32, doms_1: p
                 {
                     let _e115 = seen;
                     if !(_e115) {
-                        let _e119 = k_1;
+                        let _e119 = k_3;
                         let _e122 = (*doms_1)[_e119].pixel;
-                        local_29 = (_e122 == pixel);
+                        local_30 = (_e122 == pixel);
                     } else {
-                        local_29 = true;
+                        local_30 = true;
                     }
-                    let _e125 = local_29;
+                    let _e125 = local_30;
                     seen = _e125;
                 }
                 continuing {
-                    let _e127 = k_1;
-                    k_1 = (_e127 + 1u);
+                    let _e127 = k_3;
+                    k_3 = (_e127 + 1u);
                 }
             }
-            let s_6 = reuse_prev[pixel].surface;
+            let s_7 = reuse_prev[pixel].surface;
             let _e133 = seen;
             if !(_e133) {
-                local_30 = !((s_6.m > 0f));
-            } else {
-                local_30 = true;
-            }
-            let _e142 = local_30;
-            if !(_e142) {
-                let _e150 = history_matches(n_11, s_6.n, x_13, dot(s_6.n, s_6.x), d_6);
-                local_31 = !(_e150);
+                local_31 = !((s_7.m > 0f));
             } else {
                 local_31 = true;
             }
-            let _e153 = local_31;
+            let _e142 = local_31;
+            if !(_e142) {
+                let _e150 = history_matches(n_11, s_7.n, x_13, dot(s_7.n, s_7.x), d_6);
+                local_32 = !(_e150);
+            } else {
+                local_32 = true;
+            }
+            let _e153 = local_32;
             if _e153 {
                 continue;
             }
             let _e154 = nd;
             let _e160 = reuse.prev_eye;
-            let _e161 = reuse_material(s_6, _e160);
+            let _e161 = reuse_material(s_7, _e160);
             let _e165 = reuse.max_confidence;
             let _e167 = j_2;
-            (*doms_1)[_e154] = Domain(pixel, s_6.x, s_6.n, _e161, min(s_6.m, _e165), (_e167 == 0u));
+            (*doms_1)[_e154] = Domain(pixel, s_7.x, s_7.n, _e161, min(s_7.m, _e165), (_e167 == 0u));
             let _e171 = nd;
             nd = (_e171 + 1u);
         }
@@ -1193,19 +1230,19 @@ fn reuse_domains(x_13: vec3<f32>, n_11: vec3<f32>, d_6: f32, h_1: u32, doms_1: p
     return _e177;
 }
 
-fn gris_combine(q_3: u32, cur: ReuseSlot, cur_ris: bool, cur_c: f32, k0_: u32, k1_: u32, x_14: vec3<f32>, n_12: vec3<f32>, m_5: Material, doms_2: ptr<function, array<Domain, 3>>, hs_1: ptr<function, u32>) -> ReuseSlot {
+fn gris_combine(q_4: u32, cur: ReuseSlot, cur_ris: bool, cur_c: f32, k0_: u32, k1_: u32, x_14: vec3<f32>, n_12: vec3<f32>, m_5: Material, doms_2: ptr<function, array<Domain, 3>>, hs_1: ptr<function, u32>) -> ReuseSlot {
     var w_sum_2: f32 = 0f;
     var out: ReuseSlot = ReuseSlot(0u, 0u, 0f);
     var out_target: f32 = 0f;
     var j_3: u32;
-    var s_4: ReuseSlot;
-    var local_32: bool;
-    var w_in: f32;
+    var s_5: ReuseSlot;
     var local_33: bool;
+    var w_in: f32;
+    var local_34: bool;
     var own_1: f32;
     var all_1: f32;
-    var k_2: u32;
-    var local_34: bool;
+    var k_4: u32;
+    var local_35: bool;
 
     j_3 = k0_;
     loop {
@@ -1215,80 +1252,80 @@ fn gris_combine(q_3: u32, cur: ReuseSlot, cur_ris: bool, cur_c: f32, k0_: u32, k
             break;
         }
         {
-            s_4 = cur;
+            s_5 = cur;
             let _e24 = j_3;
             if (_e24 > k0_) {
                 let _e27 = j_3;
                 let _e32 = (*doms_2)[(_e27 - 1u)].pixel;
-                let _e36 = reuse_prev[_e32].slots[q_3];
-                s_4 = _e36;
+                let _e36 = reuse_prev[_e32].slots[q_4];
+                s_5 = _e36;
             }
-            let _e38 = s_4.w;
+            let _e38 = s_5.w;
             if !(!((_e38 > 0f))) {
-                let _e46 = s_4.light;
-                local_32 = (_e46 >= arrayLength((&lights)));
+                let _e46 = s_5.light;
+                local_33 = (_e46 >= arrayLength((&lights)));
             } else {
-                local_32 = true;
+                local_33 = true;
             }
-            let _e51 = local_32;
+            let _e51 = local_33;
             if _e51 {
                 continue;
             }
-            let _e54 = s_4.light;
+            let _e54 = s_5.light;
             let _e56 = lights[_e54];
-            let _e58 = s_4.u;
-            let _e59 = reuse_target(_e56, _e58, x_14, n_12, m_5);
+            let _e58 = s_5.u;
+            let _e59 = reuse_target(q_4, _e56, _e58, x_14, n_12, m_5);
             if !((_e59 > 0f)) {
                 continue;
             }
-            let _e64 = s_4.w;
+            let _e64 = s_5.w;
             w_in = _e64;
             let _e66 = j_3;
             if (_e66 == k0_) {
-                local_33 = cur_ris;
+                local_34 = cur_ris;
             } else {
-                local_33 = false;
+                local_34 = false;
             }
-            let _e71 = local_33;
+            let _e71 = local_34;
             if _e71 {
-                let _e73 = s_4.w;
+                let _e73 = s_5.w;
                 w_in = (_e73 / _e59);
             }
             own_1 = (cur_c * _e59);
             let _e77 = own_1;
             all_1 = _e77;
-            k_2 = k0_;
+            k_4 = k0_;
             loop {
-                let _e80 = k_2;
+                let _e80 = k_4;
                 if (_e80 < k1_) {
                 } else {
                     break;
                 }
                 {
-                    let _e82 = k_2;
+                    let _e82 = k_4;
                     let _e85 = (*doms_2)[_e82].c;
-                    let _e88 = s_4.light;
+                    let _e88 = s_5.light;
                     let _e90 = lights_prev[_e88];
-                    let _e92 = s_4.u;
-                    let _e93 = k_2;
+                    let _e92 = s_5.u;
+                    let _e93 = k_4;
                     let _e96 = (*doms_2)[_e93].x;
-                    let _e97 = k_2;
+                    let _e97 = k_4;
                     let _e100 = (*doms_2)[_e97].n;
-                    let _e101 = k_2;
+                    let _e101 = k_4;
                     let _e104 = (*doms_2)[_e101].m;
-                    let _e105 = reuse_target(_e90, _e92, _e96, _e100, _e104);
+                    let _e105 = reuse_target(q_4, _e90, _e92, _e96, _e100, _e104);
                     let t_6 = (_e85 * _e105);
                     let _e107 = all_1;
                     all_1 = (_e107 + t_6);
-                    let _e109 = k_2;
+                    let _e109 = k_4;
                     let _e112 = j_3;
                     if ((_e109 + 1u) == _e112) {
                         own_1 = t_6;
                     }
                 }
                 continuing {
-                    let _e115 = k_2;
-                    k_2 = (_e115 + 1u);
+                    let _e115 = k_4;
+                    k_4 = (_e115 + 1u);
                 }
             }
             let _e117 = own_1;
@@ -1305,13 +1342,13 @@ fn gris_combine(q_3: u32, cur: ReuseSlot, cur_ris: bool, cur_c: f32, k0_: u32, k
                 let _e130 = (*hs_1);
                 let _e131 = xi_from_bits(_e130);
                 let _e132 = weighted_replace(_e120, _e129, _e131);
-                local_34 = _e132;
+                local_35 = _e132;
             } else {
-                local_34 = false;
+                local_35 = false;
             }
-            let _e134 = local_34;
+            let _e134 = local_35;
             if _e134 {
-                let _e135 = s_4;
+                let _e135 = s_5;
                 out = _e135;
                 out_target = _e59;
             }
@@ -1342,28 +1379,29 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     var slot_u: array<vec2<f32>, 8>;
     var slot_p: array<f32, 8>;
     var slot_cells: array<u32, 8>;
-    var total: f32 = 0f;
+    var total: vec3<f32> = vec3(0f);
     var count: u32 = 0u;
     var hc: u32;
     var b: u32;
     var q: u32;
-    var doms: array<Domain, 3>;
     var local_2: bool;
+    var doms: array<Domain, 3>;
+    var local_3: bool;
     var hs: u32;
     var kept: array<ReuseSlot, 8>;
     var fin: array<ReuseSlot, 8>;
     var q_1: u32 = 0u;
     var visible: array<bool, 8>;
     var k: u32 = 0u;
-    var w: f32;
+    var w: vec3<f32>;
     var first: bool;
     var j: u32;
-    var local_3: bool;
     var local_4: bool;
     var local_5: bool;
+    var local_6: bool;
     var j_1: u32;
     var q_2: u32 = 0u;
-    var local_6: bool;
+    var local_7: bool;
 
     let _e4 = view.width;
     if !((gid.x >= _e4)) {
@@ -1423,295 +1461,315 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     let _e123 = pick_stream(_e122);
     h = _e123;
     hc = _e122;
-    let _e144 = bsh_first(BSH);
-    let _e145 = r;
-    let _e146 = bsh_next_leaf_lobe(BSH, _e144, x_17, _e145, _e99);
-    b = _e146;
+    let _e145 = bsh_first(BSH);
+    let _e146 = r;
+    let _e147 = bsh_next_leaf_lobe(BSH, _e145, x_17, _e146, _e99);
+    b = _e147;
     loop {
-        let _e148 = b;
-        if (_e148 != BSH_NONE) {
+        let _e149 = b;
+        if (_e149 != BSH_NONE) {
         } else {
             break;
         }
         {
-            let _e151 = count;
-            count = (_e151 + 1u);
-            let _e155 = b;
-            let li_3 = bsh_nodes[_e155].light;
-            let _e159 = h;
-            let _e160 = pcg_hash(_e159);
-            h = _e160;
+            let _e152 = count;
+            count = (_e152 + 1u);
+            let _e156 = b;
+            let li_3 = bsh_nodes[_e156].light;
+            let _e160 = h;
+            let _e161 = pcg_hash(_e160);
+            h = _e161;
             let h1_1 = h;
-            let _e162 = h;
-            let _e163 = pcg_hash(_e162);
-            h = _e163;
-            let _e164 = h;
-            let _e165 = grid_cells(h1_1, _e164);
-            let _e166 = grid_coordinate(h1_1);
-            let _e167 = h;
-            let _e168 = grid_coordinate(_e167);
-            let u_4 = vec2<f32>(_e166, _e168);
-            let _e170 = r;
-            let _e171 = m;
-            let _e176 = shade_pick_traced(li_3, x_17, n_15, _e170, _e99, _e171, 1f, u_4.x, u_4.y, eps_3, false);
-            let _e177 = output_of(_e176);
-            let _e178 = resample_target(_e177);
-            if (_e178 > 0f) {
-                let _e181 = total;
-                total = (_e181 + _e178);
+            let _e163 = h;
+            let _e164 = pcg_hash(_e163);
+            h = _e164;
+            let _e165 = h;
+            let _e166 = grid_cells(h1_1, _e165);
+            let _e167 = grid_coordinate(h1_1);
+            let _e168 = h;
+            let _e169 = grid_coordinate(_e168);
+            let u_4 = vec2<f32>(_e167, _e169);
+            let _e171 = r;
+            let _e172 = m;
+            let _e177 = shade_pick_traced(li_3, x_17, n_15, _e171, _e99, _e172, 1f, u_4.x, u_4.y, eps_3, false);
+            let _e178 = output_of(_e177);
+            let _e179 = resample_target(_e178);
+            if (_e179 > 0f) {
+                let _e182 = total;
+                total = (_e182 + _e178);
                 q = 0u;
                 loop {
-                    let _e185 = q;
-                    if (_e185 < K) {
+                    let _e186 = q;
+                    if (_e186 < K) {
                     } else {
                         break;
                     }
                     {
-                        let _e188 = hc;
-                        let _e189 = pcg_hash(_e188);
-                        hc = _e189;
-                        let _e190 = total;
-                        let _e191 = hc;
-                        let _e192 = xi_from_bits(_e191);
-                        let _e193 = weighted_replace(_e178, _e190, _e192);
-                        if _e193 {
-                            let _e194 = q;
-                            slot_light[_e194] = li_3;
-                            let _e196 = q;
-                            slot_u[_e196] = u_4;
-                            let _e198 = q;
-                            slot_p[_e198] = _e178;
-                            let _e200 = q;
-                            slot_cells[_e200] = _e165;
+                        let _e189 = hc;
+                        let _e190 = pcg_hash(_e189);
+                        hc = _e190;
+                        let _e191 = q;
+                        let _e193 = slot_target(_e178, _e191, K);
+                        if (_e193 > 0f) {
+                            let _e198 = total;
+                            let _e199 = q;
+                            let _e201 = slot_target(_e198, _e199, K);
+                            let _e202 = hc;
+                            let _e203 = xi_from_bits(_e202);
+                            let _e204 = weighted_replace(_e193, _e201, _e203);
+                            local_2 = _e204;
+                        } else {
+                            local_2 = false;
+                        }
+                        let _e206 = local_2;
+                        if _e206 {
+                            let _e207 = q;
+                            slot_light[_e207] = li_3;
+                            let _e209 = q;
+                            slot_u[_e209] = u_4;
+                            let _e211 = q;
+                            slot_p[_e211] = _e193;
+                            let _e213 = q;
+                            slot_cells[_e213] = _e166;
                         }
                     }
                     continuing {
-                        let _e203 = q;
-                        q = (_e203 + 1u);
+                        let _e216 = q;
+                        q = (_e216 + 1u);
                     }
                 }
             }
         }
         continuing {
-            let _e207 = b;
-            let _e210 = bsh_nodes[_e207].next;
-            let _e211 = r;
-            let _e212 = bsh_next_leaf_lobe(BSH, _e210, x_17, _e211, _e99);
-            b = _e212;
+            let _e220 = b;
+            let _e223 = bsh_nodes[_e220].next;
+            let _e224 = r;
+            let _e225 = bsh_next_leaf_lobe(BSH, _e223, x_17, _e224, _e99);
+            b = _e225;
         }
     }
-    let _e216 = view.width;
-    let pixel_1 = ((gid.y * _e216) + gid.x);
-    let _e223 = view.eye;
-    let _e227 = reuse_stream(_e122, 0u);
-    let _e228 = reuse_domains(x_17, n_15, length((_e223 - x_17)), _e227, (&doms));
-    if (_e228 > 0u) {
-        let _e235 = doms[0].temporal;
-        local_2 = _e235;
+    let _e229 = view.width;
+    let pixel_1 = ((gid.y * _e229) + gid.x);
+    let _e236 = view.eye;
+    let _e240 = reuse_stream(_e122, 0u);
+    let _e241 = reuse_domains(x_17, n_15, length((_e236 - x_17)), _e240, (&doms));
+    if (_e241 > 0u) {
+        let _e248 = doms[0].temporal;
+        local_3 = _e248;
     } else {
-        local_2 = false;
+        local_3 = false;
     }
-    let own_history = local_2;
+    let own_history = local_3;
     let first_1 = select(0u, 1u, own_history);
-    let _e243 = doms[0].c;
-    let confidence = (1f + select(0f, _e243, own_history));
-    let _e249 = reuse_stream(_e122, 1u);
-    hs = _e249;
+    let _e256 = doms[0].c;
+    let confidence = (1f + select(0f, _e256, own_history));
+    let _e262 = reuse_stream(_e122, 1u);
+    hs = _e262;
     loop {
-        let _e255 = q_1;
-        if (_e255 < K) {
+        let _e268 = q_1;
+        if (_e268 < K) {
         } else {
             break;
         }
         {
-            let _e258 = q_1;
-            let _e260 = q_1;
-            let _e261 = q_1;
-            let _e263 = slot_light[_e261];
-            let _e264 = q_1;
-            let _e266 = slot_cells[_e264];
-            let _e267 = total;
-            let _e272 = m;
-            let _e273 = gris_combine(_e260, ReuseSlot(_e263, _e266, _e267), true, 1f, 0u, first_1, x_17, n_15, _e272, (&doms), (&hs));
-            kept[_e258] = _e273;
+            let _e271 = q_1;
+            let _e273 = q_1;
             let _e274 = q_1;
-            let _e276 = q_1;
-            let _e278 = kept[_e276];
-            fin[_e274] = _e278;
-            if (_e228 > first_1) {
-                let _e280 = q_1;
-                let _e282 = q_1;
-                let _e283 = q_1;
-                let _e285 = kept[_e283];
-                let _e287 = m;
-                let _e288 = gris_combine(_e282, _e285, false, confidence, first_1, _e228, x_17, n_15, _e287, (&doms), (&hs));
-                fin[_e280] = _e288;
+            let _e276 = slot_light[_e274];
+            let _e277 = q_1;
+            let _e279 = slot_cells[_e277];
+            let _e280 = total;
+            let _e281 = q_1;
+            let _e283 = slot_target(_e280, _e281, K);
+            let _e284 = q_1;
+            let _e286 = slot_p[_e284];
+            let _e295 = m;
+            let _e296 = gris_combine(_e273, ReuseSlot(_e276, _e279, select(0f, _e283, (_e286 > 0f))), true, 1f, 0u, first_1, x_17, n_15, _e295, (&doms), (&hs));
+            kept[_e271] = _e296;
+            let _e297 = q_1;
+            let _e299 = q_1;
+            let _e301 = kept[_e299];
+            fin[_e297] = _e301;
+            if (_e241 > first_1) {
+                let _e303 = q_1;
+                let _e305 = q_1;
+                let _e306 = q_1;
+                let _e308 = kept[_e306];
+                let _e310 = m;
+                let _e311 = gris_combine(_e305, _e308, false, confidence, first_1, _e241, x_17, n_15, _e310, (&doms), (&hs));
+                fin[_e303] = _e311;
             }
         }
         continuing {
-            let _e290 = q_1;
-            q_1 = (_e290 + 1u);
+            let _e313 = q_1;
+            q_1 = (_e313 + 1u);
         }
     }
     loop {
-        let _e295 = k;
-        if (_e295 < K) {
+        let _e318 = k;
+        if (_e318 < K) {
         } else {
             break;
         }
         {
-            let _e298 = k;
-            let _e301 = fin[_e298].w;
-            w = _e301;
-            let _e303 = w;
-            first = (_e303 > 0f);
+            let _e321 = k;
+            let _e324 = fin[_e321].w;
+            let _e325 = k;
+            let _e327 = slot_share(_e325, K);
+            w = (_e324 * _e327);
+            let _e330 = k;
+            let _e333 = fin[_e330].w;
+            first = (_e333 > 0f);
             j = 0u;
             loop {
-                let _e309 = j;
-                if (_e309 < K) {
+                let _e339 = j;
+                if (_e339 < K) {
                 } else {
                     break;
                 }
                 {
-                    let _e312 = j;
-                    let _e313 = k;
-                    if (_e312 != _e313) {
-                        let _e317 = j;
-                        let _e320 = fin[_e317].w;
-                        local_3 = (_e320 > 0f);
-                    } else {
-                        local_3 = false;
-                    }
-                    let _e324 = local_3;
-                    if _e324 {
-                        let _e327 = j;
-                        let _e330 = fin[_e327].light;
-                        let _e331 = j;
-                        let _e334 = fin[_e331].u;
-                        let _e335 = k;
-                        let _e338 = fin[_e335].light;
-                        let _e339 = k;
-                        let _e342 = fin[_e339].u;
-                        let _e343 = same_pick(_e330, _e334, _e338, _e342);
-                        local_4 = _e343;
+                    let _e342 = j;
+                    let _e343 = k;
+                    if (_e342 != _e343) {
+                        let _e347 = j;
+                        let _e350 = fin[_e347].w;
+                        local_4 = (_e350 > 0f);
                     } else {
                         local_4 = false;
                     }
-                    let _e345 = local_4;
-                    if _e345 {
-                        let _e346 = first;
-                        if _e346 {
-                            let _e349 = j;
-                            let _e350 = k;
-                            local_5 = (_e349 > _e350);
+                    let _e354 = local_4;
+                    if _e354 {
+                        let _e357 = j;
+                        let _e360 = fin[_e357].light;
+                        let _e361 = j;
+                        let _e364 = fin[_e361].u;
+                        let _e365 = k;
+                        let _e368 = fin[_e365].light;
+                        let _e369 = k;
+                        let _e372 = fin[_e369].u;
+                        let _e373 = same_pick(_e360, _e364, _e368, _e372);
+                        local_5 = _e373;
+                    } else {
+                        local_5 = false;
+                    }
+                    let _e375 = local_5;
+                    if _e375 {
+                        let _e376 = first;
+                        if _e376 {
+                            let _e379 = j;
+                            let _e380 = k;
+                            local_6 = (_e379 > _e380);
                         } else {
-                            local_5 = false;
+                            local_6 = false;
                         }
-                        let _e353 = local_5;
-                        first = _e353;
-                        let _e354 = w;
-                        let _e355 = j;
-                        let _e358 = fin[_e355].w;
-                        w = (_e354 + _e358);
+                        let _e383 = local_6;
+                        first = _e383;
+                        let _e384 = w;
+                        let _e385 = j;
+                        let _e388 = fin[_e385].w;
+                        let _e389 = j;
+                        let _e391 = slot_share(_e389, K);
+                        w = (_e384 + (_e388 * _e391));
                     }
                 }
                 continuing {
-                    let _e361 = j;
-                    j = (_e361 + 1u);
+                    let _e395 = j;
+                    j = (_e395 + 1u);
                 }
             }
-            let _e363 = first;
-            if _e363 {
-                let _e365 = k;
-                let _e368 = fin[_e365].light;
-                let _e370 = lights[_e368];
-                let _e373 = w;
-                let _e376 = k;
-                let _e379 = fin[_e376].u;
-                let _e380 = grid_coordinate(_e379);
-                let _e381 = k;
-                let _e384 = fin[_e381].u;
-                let _e387 = grid_coordinate((_e384 << 16u));
-                let _e389 = connect_record(_e370, x_17, n_15, n_15, UNRANGED, UNRANGED, (_e373 / 8f), _e380, _e387, eps_3, true);
-                let _e390 = m;
-                let _e391 = shade_connection(_e389, x_17, n_15, _e390);
-                let _e392 = t;
-                let _e393 = add(_e392, _e391);
-                t = _e393;
-                let _e394 = k;
-                j_1 = _e394;
+            let _e397 = first;
+            if _e397 {
+                let _e399 = k;
+                let _e402 = fin[_e399].light;
+                let _e404 = lights[_e402];
+                let _e408 = k;
+                let _e411 = fin[_e408].u;
+                let _e412 = grid_coordinate(_e411);
+                let _e413 = k;
+                let _e416 = fin[_e413].u;
+                let _e419 = grid_coordinate((_e416 << 16u));
+                let _e421 = connect_record(_e404, x_17, n_15, n_15, UNRANGED, UNRANGED, 1f, _e412, _e419, eps_3, true);
+                let _e422 = m;
+                let _e423 = shade_connection(_e421, x_17, n_15, _e422);
+                let _e424 = t;
+                let _e425 = w;
+                let _e426 = scaled(_e423, _e425);
+                let _e427 = add(_e424, _e426);
+                t = _e427;
+                let _e428 = k;
+                j_1 = _e428;
                 loop {
-                    let _e396 = j_1;
-                    if (_e396 < K) {
+                    let _e430 = j_1;
+                    if (_e430 < K) {
                     } else {
                         break;
                     }
                     {
-                        let _e399 = j_1;
-                        let _e402 = fin[_e399].light;
-                        let _e403 = j_1;
-                        let _e406 = fin[_e403].u;
-                        let _e407 = k;
-                        let _e410 = fin[_e407].light;
-                        let _e411 = k;
-                        let _e414 = fin[_e411].u;
-                        let _e415 = same_pick(_e402, _e406, _e410, _e414);
-                        if _e415 {
-                            let _e416 = j_1;
-                            let _e418 = output_of(_e391);
-                            let _e419 = resample_target(_e418);
-                            visible[_e416] = (_e419 > 0f);
+                        let _e433 = j_1;
+                        let _e436 = fin[_e433].light;
+                        let _e437 = j_1;
+                        let _e440 = fin[_e437].u;
+                        let _e441 = k;
+                        let _e444 = fin[_e441].light;
+                        let _e445 = k;
+                        let _e448 = fin[_e445].u;
+                        let _e449 = same_pick(_e436, _e440, _e444, _e448);
+                        if _e449 {
+                            let _e450 = j_1;
+                            let _e452 = output_of(_e423);
+                            let _e453 = resample_target(_e452);
+                            visible[_e450] = (_e453 > 0f);
                         }
                     }
                     continuing {
-                        let _e423 = j_1;
-                        j_1 = (_e423 + 1u);
+                        let _e457 = j_1;
+                        j_1 = (_e457 + 1u);
                     }
                 }
             }
         }
         continuing {
-            let _e426 = k;
-            k = (_e426 + 1u);
+            let _e460 = k;
+            k = (_e460 + 1u);
         }
     }
     loop {
-        let _e430 = q_2;
-        if (_e430 < K) {
+        let _e464 = q_2;
+        if (_e464 < K) {
         } else {
             break;
         }
         {
-            let _e435 = reuse.visibility;
-            if !((_e435 == 0u)) {
-                let _e441 = q_2;
-                let _e443 = visible[_e441];
-                local_6 = _e443;
+            let _e469 = reuse.visibility;
+            if !((_e469 == 0u)) {
+                let _e475 = q_2;
+                let _e477 = visible[_e475];
+                local_7 = _e477;
             } else {
-                local_6 = true;
+                local_7 = true;
             }
-            let keep = local_6;
-            let _e449 = q_2;
-            let _e451 = q_2;
-            let _e454 = kept[_e451].light;
-            let _e455 = q_2;
-            let _e458 = kept[_e455].u;
-            let _e459 = q_2;
-            let _e462 = kept[_e459].w;
-            reuse_next[pixel_1].slots[_e449] = ReuseSlot(_e454, _e458, select(0f, _e462, keep));
+            let keep = local_7;
+            let _e483 = q_2;
+            let _e485 = q_2;
+            let _e488 = kept[_e485].light;
+            let _e489 = q_2;
+            let _e492 = kept[_e489].u;
+            let _e493 = q_2;
+            let _e496 = kept[_e493].w;
+            reuse_next[pixel_1].slots[_e483] = ReuseSlot(_e488, _e492, select(0f, _e496, keep));
         }
         continuing {
-            let _e467 = q_2;
-            q_2 = (_e467 + 1u);
+            let _e501 = q_2;
+            q_2 = (_e501 + 1u);
         }
     }
-    let _e472 = m;
-    let _e475 = reuse.max_confidence;
-    let _e477 = reuse_surface(x_17, n_15, _e472, min(confidence, _e475));
-    reuse_next[pixel_1].surface = _e477;
-    let _e480 = t.diffuse;
-    let _e482 = t.specular;
-    let _e484 = count;
-    textureStore(out_tex, texel_1, vec4<f32>((_e480 + _e482), f32(_e484)));
+    let _e506 = m;
+    let _e509 = reuse.max_confidence;
+    let _e511 = reuse_surface(x_17, n_15, _e506, min(confidence, _e509));
+    reuse_next[pixel_1].surface = _e511;
+    let _e514 = t.diffuse;
+    let _e516 = t.specular;
+    let _e518 = count;
+    textureStore(out_tex, texel_1, vec4<f32>((_e514 + _e516), f32(_e518)));
     return;
 }

@@ -162,7 +162,7 @@ var base_color_tex: texture_2d<f32>;
 @group(0) @binding(5) 
 var metal_rough_tex: texture_2d<f32>;
 @group(1) @binding(1) 
-var<storage> lights_1: array<GpuLight>;
+var<storage> lights: array<GpuLight>;
 @group(1) @binding(2) 
 var<storage> rt2_3: array<f32>;
 @group(1) @binding(3) 
@@ -232,44 +232,44 @@ fn inverse_square(d2_2: f32) -> f32 {
     return (1f / max(d2_2, MIN_D2_));
 }
 
-fn connection_factor(cos_x: f32, d2_3: f32, rt2_1: f32, w: f32) -> f32 {
+fn connection_factor(cos_x: f32, d2_3: f32, rt2_1: f32, w_1: f32) -> f32 {
     let _e4 = inverse_square(d2_3);
     let _e6 = slc_weight(rt2_1, d2_3);
-    return (((cos_x * _e4) * _e6) * w);
+    return (((cos_x * _e4) * _e6) * w_1);
 }
 
 fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, r2_1: f32) -> f32 {
-    var local_2: bool;
-    var local_3: bool;
+    var local_5: bool;
+    var local_6: bool;
 
     let v_6 = (x_2 - y);
     let d2_6 = dot(v_6, v_6);
     let _e7 = slc_keep(r2_1, d2_6);
     if !(!(_e7)) {
-        local_2 = !((d2_6 > 0f));
+        local_5 = !((d2_6 > 0f));
     } else {
-        local_2 = true;
+        local_5 = true;
     }
-    let _e16 = local_2;
+    let _e16 = local_5;
     if _e16 {
         return 0f;
     }
-    let w_6 = (v_6 / vec3(sqrt(d2_6)));
-    let cos_x_1 = -(dot(n, w_6));
+    let w_8 = (v_6 / vec3(sqrt(d2_6)));
+    let cos_x_1 = -(dot(n, w_8));
     if !((cos_x_1 <= 0f)) {
-        local_3 = (dot(ng, w_6) >= 0f);
+        local_6 = (dot(ng, w_8) >= 0f);
     } else {
-        local_3 = true;
+        local_6 = true;
     }
-    let _e32 = local_3;
+    let _e32 = local_6;
     if _e32 {
         return 0f;
     }
     return cos_x_1;
 }
 
-fn triangle_lobe(n_1: vec3<f32>, area: f32, w_1: vec3<f32>) -> f32 {
-    return (area * max(dot(n_1, w_1), 0f));
+fn triangle_lobe(n_1: vec3<f32>, area: f32, w_2: vec3<f32>) -> f32 {
+    return (area * max(dot(n_1, w_2), 0f));
 }
 
 fn triangle_sample(a_2: vec3<f32>, b_3: vec3<f32>, c_1: vec3<f32>, u1_: f32, u2_: f32) -> vec3<f32> {
@@ -297,12 +297,45 @@ fn bsh_range_bound(node_1: BshNode) -> f32 {
     return _e8;
 }
 
-fn weighted_replace(w_2: f32, w_sum: f32, u_2: f32) -> bool {
-    return ((u_2 * w_sum) < w_2);
+fn weighted_replace(w_3: f32, w_sum: f32, u_2: f32) -> bool {
+    return ((u_2 * w_sum) < w_3);
 }
 
 fn resample_target(c_2: vec3<f32>) -> f32 {
     return (((c_2.x + c_2.y) + c_2.z) * 0.33333334f);
+}
+
+fn slot_target(c_3: vec3<f32>, slot: u32, k_1: u32) -> f32 {
+    if (k_1 < 3u) {
+        let _e5 = resample_target(c_3);
+        return _e5;
+    }
+    let j_1 = (slot % 3u);
+    if (j_1 == 0u) {
+        return c_3.x;
+    }
+    if (j_1 == 1u) {
+        return c_3.y;
+    }
+    return c_3.z;
+}
+
+fn slot_share(slot_1: u32, k_2: u32) -> vec3<f32> {
+    if (k_2 < 3u) {
+        let _e4 = to_f32_(k_2);
+        let w_9 = (1f / _e4);
+        return vec3<f32>(w_9, w_9, w_9);
+    }
+    let j_2 = (slot_1 % 3u);
+    let _e15 = to_f32_((((k_2 + 2u) - j_2) / 3u));
+    let w_10 = (1f / _e15);
+    if (j_2 == 0u) {
+        return vec3<f32>(w_10, 0f, 0f);
+    }
+    if (j_2 == 1u) {
+        return vec3<f32>(0f, w_10, 0f);
+    }
+    return vec3<f32>(0f, 0f, w_10);
 }
 
 fn ggx_d(cos_h: f32, sin2_h: f32, alpha: f32) -> f32 {
@@ -320,14 +353,14 @@ fn smith_root(cos_: f32, alpha_1: f32) -> f32 {
 }
 
 fn smith_visibility(n_l: f32, n_v: f32, alpha_2: f32) -> f32 {
-    var local_4: bool;
+    var local_7: bool;
 
     if !((n_l <= 0f)) {
-        local_4 = (n_v <= 0f);
+        local_7 = (n_v <= 0f);
     } else {
-        local_4 = true;
+        local_7 = true;
     }
-    let _e11 = local_4;
+    let _e11 = local_7;
     if _e11 {
         return 0f;
     }
@@ -337,9 +370,9 @@ fn smith_visibility(n_l: f32, n_v: f32, alpha_2: f32) -> f32 {
 }
 
 fn fresnel_schlick(f0_: vec3<f32>, f90_: f32, v_h: f32) -> vec3<f32> {
-    let c_8 = saturate((1f - v_h));
-    let c2_ = (c_8 * c_8);
-    return (f0_ + ((vec3<f32>(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_8)));
+    let c_9 = saturate((1f - v_h));
+    let c2_ = (c_9 * c_9);
+    return (f0_ + ((vec3<f32>(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_9)));
 }
 
 fn specular_fresnel(base: vec3<f32>, metallic: f32, f0_d: vec3<f32>, f90_d: f32, v_h_1: f32) -> vec3<f32> {
@@ -349,40 +382,40 @@ fn specular_fresnel(base: vec3<f32>, metallic: f32, f0_d: vec3<f32>, f90_d: f32,
 }
 
 fn has_specular(metallic_1: f32, f0_d_1: vec3<f32>, f90_d_1: f32) -> bool {
-    var local_5: bool;
-    var local_6: bool;
+    var local_8: bool;
+    var local_9: bool;
 
     if !((metallic_1 > 0f)) {
-        local_5 = (f90_d_1 > 0f);
+        local_8 = (f90_d_1 > 0f);
     } else {
-        local_5 = true;
+        local_8 = true;
     }
-    let _e11 = local_5;
+    let _e11 = local_8;
     if !(_e11) {
-        local_6 = (max(max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0f);
+        local_9 = (max(max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0f);
     } else {
-        local_6 = true;
+        local_9 = true;
     }
-    let _e23 = local_6;
+    let _e23 = local_9;
     return _e23;
 }
 
-fn channel_mean(c_3: vec3<f32>) -> f32 {
-    return (((c_3.x + c_3.y) + c_3.z) * 0.33333334f);
+fn channel_mean(c_4: vec3<f32>) -> f32 {
+    return (((c_4.x + c_4.y) + c_4.z) * 0.33333334f);
 }
 
 fn receiver_lobe(base_1: vec3<f32>, metallic_2: f32, f0_d_2: vec3<f32>, f90_d_2: f32, alpha_3: f32, n_v_1: f32) -> vec4<f32> {
-    var local_7: bool;
+    var local_10: bool;
 
     let _e10 = fresnel_schlick(f0_d_2, f90_d_2, n_v_1);
     let _e16 = channel_mean((((vec3<f32>(1f, 1f, 1f) - _e10) * base_1) * (1f - metallic_2)));
     if !((n_v_1 <= 0f)) {
         let _e22 = has_specular(metallic_2, f0_d_2, f90_d_2);
-        local_7 = !(_e22);
+        local_10 = !(_e22);
     } else {
-        local_7 = true;
+        local_10 = true;
     }
-    let _e25 = local_7;
+    let _e25 = local_10;
     if _e25 {
         return vec4<f32>(_e16, 0f, alpha_3, n_v_1);
     }
@@ -466,28 +499,28 @@ fn bevy_brdf(base_2: vec3<f32>, metallic_3: f32, r_3: f32, reflectance_1: f32, n
 }
 
 fn cone_cos_of(v_2: vec3<f32>, d2_4: f32, a_3: f32, d: vec3<f32>) -> f32 {
-    var local_8: bool;
-    var local_9: bool;
+    var local_11: bool;
+    var local_12: bool;
 
     let vd = dot(v_2, d);
     let h2_ = (d2_4 - (a_3 * a_3));
     if !((h2_ <= 0f)) {
         if (vd >= 0f) {
-            local_9 = ((vd * vd) >= h2_);
+            local_12 = ((vd * vd) >= h2_);
         } else {
-            local_9 = false;
+            local_12 = false;
         }
-        let _e19 = local_9;
-        local_8 = _e19;
+        let _e19 = local_12;
+        local_11 = _e19;
     } else {
-        local_8 = true;
+        local_11 = true;
     }
-    let _e21 = local_8;
+    let _e21 = local_11;
     if _e21 {
         return 1f;
     }
-    let c_9 = cross(v_2, d);
-    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_9, c_9)) * a_3)) / d2_4), 1f);
+    let c_10 = cross(v_2, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_10, c_10)) * a_3)) / d2_4), 1f);
 }
 
 fn cone_cos_toward(center: vec3<f32>, radius: f32, p: vec3<f32>, d_1: vec3<f32>) -> f32 {
@@ -538,79 +571,79 @@ fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin: vec3<f32>, bmax: vec3<f32>, t_
     return -1f;
 }
 
-fn triangle_normal(a_4: vec3<f32>, b_4: vec3<f32>, c_4: vec3<f32>) -> vec3<f32> {
-    var local_10: bool;
+fn triangle_normal(a_4: vec3<f32>, b_4: vec3<f32>, c_5: vec3<f32>) -> vec3<f32> {
+    var local_13: bool;
 
-    let n_9 = cross((b_4 - a_4), (c_4 - a_4));
+    let n_9 = cross((b_4 - a_4), (c_5 - a_4));
     let l2_ = dot(n_9, n_9);
     if !(!((l2_ > 0f))) {
-        local_10 = !((l2_ < 300000000000000000000000000000000000000f));
+        local_13 = !((l2_ < 300000000000000000000000000000000000000f));
     } else {
-        local_10 = true;
+        local_13 = true;
     }
-    let _e17 = local_10;
+    let _e17 = local_13;
     if _e17 {
         return vec3<f32>(0f, 0f, 0f);
     }
     return (n_9 / vec3(sqrt(l2_)));
 }
 
-fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_5: vec3<f32>, c_5: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
-    var local_11: bool;
-    var local_12: bool;
-    var local_13: bool;
+fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_5: vec3<f32>, c_6: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
+    var local_14: bool;
+    var local_15: bool;
+    var local_16: bool;
 
     let e1_ = (b_5 - a_5);
-    let e2_ = (c_5 - a_5);
+    let e2_ = (c_6 - a_5);
     let p_2 = cross(d_3, e2_);
     let det = dot(e1_, p_2);
     if (abs(det) <= 0f) {
         return -1f;
     }
     let inv = (1f / det);
-    let s_3 = (o_1 - a_5);
-    let u_3 = (dot(s_3, p_2) * inv);
+    let s_4 = (o_1 - a_5);
+    let u_3 = (dot(s_4, p_2) * inv);
     if !((u_3 < 0f)) {
-        local_11 = (u_3 > 1f);
+        local_14 = (u_3 > 1f);
     } else {
-        local_11 = true;
+        local_14 = true;
     }
-    let _e28 = local_11;
+    let _e28 = local_14;
     if _e28 {
         return -1f;
     }
-    let q_1 = cross(s_3, e1_);
+    let q_1 = cross(s_4, e1_);
     let v_8 = (dot(d_3, q_1) * inv);
     if !((v_8 < 0f)) {
-        local_12 = ((u_3 + v_8) > 1f);
+        local_15 = ((u_3 + v_8) > 1f);
     } else {
-        local_12 = true;
+        local_15 = true;
     }
-    let _e42 = local_12;
+    let _e42 = local_15;
     if _e42 {
         return -1f;
     }
     let t_3 = (dot(e2_, q_1) * inv);
     if (t_3 > t_min) {
-        local_13 = (t_3 < t_max_1);
+        local_16 = (t_3 < t_max_1);
     } else {
-        local_13 = false;
+        local_16 = false;
     }
-    let _e51 = local_13;
+    let _e51 = local_16;
     if _e51 {
         return t_3;
     }
     return -1f;
 }
 
-fn light_intensity(l_1: GpuLight, w_3: vec3<f32>) -> vec3<f32> {
+fn light_intensity(l_1: GpuLight, w_4: vec3<f32>) -> vec3<f32> {
     switch l_1.kind {
         case 0u: {
             return l_1.intensity;
         }
         case 3u: {
             let _e8 = triangle_normal(l_1.p0_, l_1.p1_, l_1.p2_);
-            let _e10 = triangle_lobe(_e8, l_1.a, w_3);
+            let _e10 = triangle_lobe(_e8, l_1.a, w_4);
             return (l_1.intensity * _e10);
         }
         default: {
@@ -736,8 +769,8 @@ fn bsh_inner_scale(a_7: f32, v_3: vec3<f32>, d2_5: f32, r_5: vec3<f32>, rl_2: ve
 }
 
 fn bsh_reaches(node_3: BshNode, x_4: vec3<f32>, r_6: vec3<f32>, rl_3: vec4<f32>) -> bool {
-    var local_14: bool;
-    var local_15: bool;
+    var local_17: bool;
+    var local_18: bool;
 
     let _e6 = sphere_contains_point(node_3.center, node_3.radius, x_4);
     if _e6 {
@@ -745,11 +778,11 @@ fn bsh_reaches(node_3: BshNode, x_4: vec3<f32>, r_6: vec3<f32>, rl_3: vec4<f32>)
     }
     if !((rl_3.w <= 1f)) {
         let _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001f)), x_4);
-        local_14 = !(_e20);
+        local_17 = !(_e20);
     } else {
-        local_14 = true;
+        local_17 = true;
     }
-    let _e23 = local_14;
+    let _e23 = local_17;
     if _e23 {
         return false;
     }
@@ -770,11 +803,11 @@ fn bsh_reaches(node_3: BshNode, x_4: vec3<f32>, r_6: vec3<f32>, rl_3: vec4<f32>)
     let s_c = (_e50 * 1.001f);
     let reach = (node_3.extent + (sqrt(s_c) * _e25));
     if (d2_7 <= ((node_3.radius * node_3.radius) * s_c)) {
-        local_15 = (d2_7 <= (reach * reach));
+        local_18 = (d2_7 <= (reach * reach));
     } else {
-        local_15 = false;
+        local_18 = false;
     }
-    let _e67 = local_15;
+    let _e67 = local_18;
     return _e67;
 }
 
@@ -807,48 +840,48 @@ fn bsh_next_leaf_lobe(nodes_3: u32, start: u32, x_5: vec3<f32>, r_7: vec3<f32>, 
 }
 
 fn connect_record(l_3: GpuLight, x_6: vec3<f32>, n_4: vec3<f32>, ng_1: vec3<f32>, r2_2: f32, rt2_2: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32, trace_1: bool) -> Connection {
-    var c_6: Connection;
-    var local_16: bool;
-    var local_17: bool;
+    var c_7: Connection;
+    var local_19: bool;
+    var local_20: bool;
 
-    c_6.e = vec3(0f);
+    c_7.e = vec3(0f);
     let _e16 = light_point(l_3, u1_2, u2_2);
-    c_6.y = _e16;
-    let _e19 = c_6.y;
+    c_7.y = _e16;
+    let _e19 = c_7.y;
     let _e20 = connection_cosine(x_6, _e19, n_4, ng_1, r2_2);
-    c_6.cos_x = _e20;
-    let _e22 = c_6.cos_x;
+    c_7.cos_x = _e20;
+    let _e22 = c_7.cos_x;
     if !((_e22 <= 0f)) {
         if trace_1 {
-            let _e33 = c_6.y;
+            let _e33 = c_7.y;
             let _e34 = occluded((x_6 + (ng_1 * eps)), _e33);
-            local_17 = _e34;
+            local_20 = _e34;
         } else {
-            local_17 = false;
+            local_20 = false;
         }
-        let _e36 = local_17;
-        local_16 = _e36;
+        let _e36 = local_20;
+        local_19 = _e36;
     } else {
-        local_16 = true;
+        local_19 = true;
     }
-    let _e38 = local_16;
+    let _e38 = local_19;
     if _e38 {
-        let _e39 = c_6;
+        let _e39 = c_7;
         return _e39;
     }
-    let _e41 = c_6.y;
+    let _e41 = c_7.y;
     let v_10 = (x_6 - _e41);
     let d2_8 = dot(v_10, v_10);
     let _e48 = light_intensity(l_3, (v_10 / vec3(sqrt(d2_8))));
-    let _e50 = c_6.cos_x;
+    let _e50 = c_7.cos_x;
     let _e51 = connection_factor(_e50, d2_8, rt2_2, w_res);
-    c_6.e = (_e48 * _e51);
-    let _e53 = c_6;
+    c_7.e = (_e48 * _e51);
+    let _e53 = c_7;
     return _e53;
 }
 
 fn connect_traced(li: u32, x_7: vec3<f32>, n_5: vec3<f32>, ng_2: vec3<f32>, s: f32, w_res_1: f32, u1_3: f32, u2_3: f32, eps_1: f32, trace_2: bool) -> Connection {
-    let _e12 = lights_1[li];
+    let _e12 = lights[li];
     let _e15 = r2_3[li];
     let _e19 = rt2_3[li];
     let _e21 = connect_record(_e12, x_7, n_5, ng_2, (s * _e15), (s * _e19), w_res_1, u1_3, u2_3, eps_1, trace_2);
@@ -856,8 +889,8 @@ fn connect_traced(li: u32, x_7: vec3<f32>, n_5: vec3<f32>, ng_2: vec3<f32>, s: f
 }
 
 fn light_range_scale(li_1: u32, x_8: vec3<f32>, r_8: vec3<f32>, rl_5: vec4<f32>) -> f32 {
-    let c_10 = light_cones[li_1];
-    let _e9 = range_scale_toward(rl_5, c_10.center, c_10.radius, x_8, r_8);
+    let c_11 = light_cones[li_1];
+    let _e9 = range_scale_toward(rl_5, c_11.center, c_11.radius, x_8, r_8);
     return _e9;
 }
 
@@ -866,29 +899,29 @@ fn surface_at(texel: vec2<i32>) -> vec4<f32> {
     return select(vec4(0f), vec4<f32>(p_3.xyz, 1f), (p_3.w > 0f));
 }
 
-fn shade_connection(c_7: Connection, x_9: vec3<f32>, n_6: vec3<f32>, m_1: Material) -> Shaded {
+fn shade_connection(c_8: Connection, x_9: vec3<f32>, n_6: vec3<f32>, m_1: Material) -> Shaded {
     var s_1: Shaded;
 
-    s_1.e = c_7.e;
+    s_1.e = c_8.e;
     s_1.diffuse = vec3(0f);
     s_1.specular = vec3(0f);
-    if (c_7.cos_x > 0f) {
-        let _e25 = bevy_brdf(m_1.base, m_1.metallic, m_1.roughness, m_1.reflectance, n_6, m_1.v, normalize((c_7.y - x_9)));
-        s_1.diffuse = (_e25 * c_7.e);
+    if (c_8.cos_x > 0f) {
+        let _e25 = bevy_brdf(m_1.base, m_1.metallic, m_1.roughness, m_1.reflectance, n_6, m_1.v, normalize((c_8.y - x_9)));
+        s_1.diffuse = (_e25 * c_8.e);
     }
     let _e28 = s_1;
     return _e28;
 }
 
-fn shade_pick_traced(li_2: u32, x_10: vec3<f32>, n_7: vec3<f32>, r_9: vec3<f32>, rl_6: vec4<f32>, m_2: Material, w_4: f32, u1_4: f32, u2_4: f32, eps_2: f32, trace_3: bool) -> Shaded {
+fn shade_pick_traced(li_2: u32, x_10: vec3<f32>, n_7: vec3<f32>, r_9: vec3<f32>, rl_6: vec4<f32>, m_2: Material, w_5: f32, u1_4: f32, u2_4: f32, eps_2: f32, trace_3: bool) -> Shaded {
     let _e11 = light_range_scale(li_2, x_10, r_9, rl_6);
-    let _e12 = connect_traced(li_2, x_10, n_7, n_7, _e11, w_4, u1_4, u2_4, eps_2, trace_3);
+    let _e12 = connect_traced(li_2, x_10, n_7, n_7, _e11, w_5, u1_4, u2_4, eps_2, trace_3);
     let _e13 = shade_connection(_e12, x_10, n_7, m_2);
     return _e13;
 }
 
-fn shade_pick(li_3: u32, x_11: vec3<f32>, n_8: vec3<f32>, r_10: vec3<f32>, rl_7: vec4<f32>, m_3: Material, w_5: f32, u1_5: f32, u2_5: f32, eps_3: f32) -> Shaded {
-    let _e11 = shade_pick_traced(li_3, x_11, n_8, r_10, rl_7, m_3, w_5, u1_5, u2_5, eps_3, true);
+fn shade_pick(li_3: u32, x_11: vec3<f32>, n_8: vec3<f32>, r_10: vec3<f32>, rl_7: vec4<f32>, m_3: Material, w_6: f32, u1_5: f32, u2_5: f32, eps_3: f32) -> Shaded {
+    let _e11 = shade_pick_traced(li_3, x_11, n_8, r_10, rl_7, m_3, w_6, u1_5, u2_5, eps_3, true);
     return _e11;
 }
 
@@ -901,46 +934,12 @@ fn add(a_8: Shaded, b_7: Shaded) -> Shaded {
     return Shaded((a_8.e + b_7.e), (a_8.diffuse + b_7.diffuse), (a_8.specular + b_7.specular));
 }
 
-fn pick_copies(lights: array<u32, 8>, k_1: u32) -> u32 {
-    var copies: u32 = 1u;
-    var j: u32 = 0u;
-    var local_18: bool;
-
-    loop {
-        let _e6 = j;
-        if (_e6 < K) {
-        } else {
-            break;
-        }
-        {
-            let _e9 = j;
-            if (_e9 != k_1) {
-                let _e13 = j;
-                local_18 = (lights[_e13] == lights[k_1]);
-            } else {
-                local_18 = false;
-            }
-            let _e18 = local_18;
-            if _e18 {
-                let _e19 = j;
-                if (_e19 < k_1) {
-                    return 0u;
-                }
-                let _e22 = copies;
-                copies = (_e22 + 1u);
-            }
-        }
-        continuing {
-            let _e26 = j;
-            j = (_e26 + 1u);
-        }
-    }
-    let _e28 = copies;
-    return _e28;
+fn scaled(s_2: Shaded, w_7: vec3<f32>) -> Shaded {
+    return Shaded((s_2.e * w_7), (s_2.diffuse * w_7), (s_2.specular * w_7));
 }
 
-fn output_of(s_2: Shaded) -> vec3<f32> {
-    return (s_2.diffuse + s_2.specular);
+fn output_of(s_3: Shaded) -> vec3<f32> {
+    return (s_3.diffuse + s_3.specular);
 }
 
 @compute @workgroup_size(8, 8, 1) 
@@ -955,12 +954,18 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     var slot_light: array<u32, 8>;
     var slot_u: array<vec2<f32>, 8>;
     var slot_p: array<f32, 8>;
-    var total: f32 = 0f;
+    var total: vec3<f32> = vec3(0f);
     var count: u32 = 0u;
     var hc: u32;
     var b: u32;
     var q: u32;
+    var local_2: bool;
     var k: u32 = 0u;
+    var w: vec3<f32>;
+    var first: bool;
+    var j: u32;
+    var local_3: bool;
+    var local_4: bool;
 
     let _e4 = view.width;
     if !((gid.x >= _e4)) {
@@ -1018,119 +1023,173 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     let _e111 = pick_stream(_e110);
     h = _e111;
     hc = _e110;
-    let _e131 = bsh_first(BSH);
-    let _e132 = r;
-    let _e133 = bsh_next_leaf_lobe(BSH, _e131, x_13, _e132, _e87);
-    b = _e133;
+    let _e132 = bsh_first(BSH);
+    let _e133 = r;
+    let _e134 = bsh_next_leaf_lobe(BSH, _e132, x_13, _e133, _e87);
+    b = _e134;
     loop {
-        let _e135 = b;
-        if (_e135 != BSH_NONE) {
+        let _e136 = b;
+        if (_e136 != BSH_NONE) {
         } else {
             break;
         }
         {
-            let _e138 = count;
-            count = (_e138 + 1u);
-            let _e142 = b;
-            let li_4 = bsh_nodes[_e142].light;
-            let _e146 = h;
-            let _e147 = pcg_hash(_e146);
-            h = _e147;
-            let _e148 = h;
-            let _e149 = xi_from_bits(_e148);
-            let _e150 = h;
-            let _e151 = pcg_hash(_e150);
-            h = _e151;
-            let _e152 = h;
-            let _e153 = xi_from_bits(_e152);
-            let u_4 = vec2<f32>(_e149, _e153);
-            let _e155 = r;
-            let _e156 = m;
-            let _e161 = shade_pick_traced(li_4, x_13, n_11, _e155, _e87, _e156, 1f, u_4.x, u_4.y, eps_4, false);
-            let _e162 = output_of(_e161);
-            let _e163 = resample_target(_e162);
-            if (_e163 > 0f) {
-                let _e166 = total;
-                total = (_e166 + _e163);
+            let _e139 = count;
+            count = (_e139 + 1u);
+            let _e143 = b;
+            let li_4 = bsh_nodes[_e143].light;
+            let _e147 = h;
+            let _e148 = pcg_hash(_e147);
+            h = _e148;
+            let _e149 = h;
+            let _e150 = xi_from_bits(_e149);
+            let _e151 = h;
+            let _e152 = pcg_hash(_e151);
+            h = _e152;
+            let _e153 = h;
+            let _e154 = xi_from_bits(_e153);
+            let u_4 = vec2<f32>(_e150, _e154);
+            let _e156 = r;
+            let _e157 = m;
+            let _e162 = shade_pick_traced(li_4, x_13, n_11, _e156, _e87, _e157, 1f, u_4.x, u_4.y, eps_4, false);
+            let _e163 = output_of(_e162);
+            let _e164 = resample_target(_e163);
+            if (_e164 > 0f) {
+                let _e167 = total;
+                total = (_e167 + _e163);
                 q = 0u;
                 loop {
-                    let _e170 = q;
-                    if (_e170 < K) {
+                    let _e171 = q;
+                    if (_e171 < K) {
                     } else {
                         break;
                     }
                     {
-                        let _e173 = hc;
-                        let _e174 = pcg_hash(_e173);
-                        hc = _e174;
-                        let _e175 = total;
-                        let _e176 = hc;
-                        let _e177 = xi_from_bits(_e176);
-                        let _e178 = weighted_replace(_e163, _e175, _e177);
-                        if _e178 {
-                            let _e179 = q;
-                            slot_light[_e179] = li_4;
-                            let _e181 = q;
-                            slot_u[_e181] = u_4;
-                            let _e183 = q;
-                            slot_p[_e183] = _e163;
+                        let _e174 = hc;
+                        let _e175 = pcg_hash(_e174);
+                        hc = _e175;
+                        let _e176 = q;
+                        let _e178 = slot_target(_e163, _e176, K);
+                        if (_e178 > 0f) {
+                            let _e183 = total;
+                            let _e184 = q;
+                            let _e186 = slot_target(_e183, _e184, K);
+                            let _e187 = hc;
+                            let _e188 = xi_from_bits(_e187);
+                            let _e189 = weighted_replace(_e178, _e186, _e188);
+                            local_2 = _e189;
+                        } else {
+                            local_2 = false;
+                        }
+                        let _e191 = local_2;
+                        if _e191 {
+                            let _e192 = q;
+                            slot_light[_e192] = li_4;
+                            let _e194 = q;
+                            slot_u[_e194] = u_4;
+                            let _e196 = q;
+                            slot_p[_e196] = _e178;
                         }
                     }
                     continuing {
-                        let _e186 = q;
-                        q = (_e186 + 1u);
+                        let _e199 = q;
+                        q = (_e199 + 1u);
                     }
                 }
             }
         }
         continuing {
-            let _e190 = b;
-            let _e193 = bsh_nodes[_e190].next;
-            let _e194 = r;
-            let _e195 = bsh_next_leaf_lobe(BSH, _e193, x_13, _e194, _e87);
-            b = _e195;
+            let _e203 = b;
+            let _e206 = bsh_nodes[_e203].next;
+            let _e207 = r;
+            let _e208 = bsh_next_leaf_lobe(BSH, _e206, x_13, _e207, _e87);
+            b = _e208;
         }
     }
-    let _e196 = total;
-    if (_e196 > 0f) {
-        loop {
-            let _e201 = k;
-            if (_e201 < K) {
-            } else {
-                break;
-            }
-            {
-                let _e204 = slot_light;
-                let _e205 = k;
-                let _e206 = pick_copies(_e204, _e205);
-                if (_e206 > 0u) {
-                    let _e209 = total;
-                    let _e211 = k;
-                    let _e213 = slot_p[_e211];
-                    let w_7 = ((_e209 / (8f * _e213)) * f32(_e206));
-                    let _e218 = t;
-                    let _e219 = k;
-                    let _e221 = slot_light[_e219];
-                    let _e222 = r;
-                    let _e223 = m;
-                    let _e224 = k;
-                    let _e227 = slot_u[_e224].x;
-                    let _e228 = k;
-                    let _e231 = slot_u[_e228].y;
-                    let _e232 = shade_pick(_e221, x_13, n_11, _e222, _e87, _e223, w_7, _e227, _e231, eps_4);
-                    let _e233 = add(_e218, _e232);
-                    t = _e233;
+    loop {
+        let _e211 = k;
+        if (_e211 < K) {
+        } else {
+            break;
+        }
+        {
+            w = vec3(0f);
+            let _e217 = k;
+            let _e219 = slot_p[_e217];
+            first = (_e219 > 0f);
+            j = 0u;
+            loop {
+                let _e225 = j;
+                if (_e225 < K) {
+                } else {
+                    break;
+                }
+                {
+                    let _e228 = j;
+                    let _e230 = slot_p[_e228];
+                    if (_e230 > 0f) {
+                        let _e235 = j;
+                        let _e237 = slot_light[_e235];
+                        let _e238 = k;
+                        let _e240 = slot_light[_e238];
+                        local_3 = (_e237 == _e240);
+                    } else {
+                        local_3 = false;
+                    }
+                    let _e243 = local_3;
+                    if _e243 {
+                        let _e244 = first;
+                        if _e244 {
+                            let _e247 = j;
+                            let _e248 = k;
+                            local_4 = (_e247 >= _e248);
+                        } else {
+                            local_4 = false;
+                        }
+                        let _e251 = local_4;
+                        first = _e251;
+                        let _e252 = w;
+                        let _e253 = total;
+                        let _e254 = j;
+                        let _e256 = slot_target(_e253, _e254, K);
+                        let _e257 = j;
+                        let _e259 = slot_p[_e257];
+                        let _e261 = j;
+                        let _e263 = slot_share(_e261, K);
+                        w = (_e252 + ((_e256 / _e259) * _e263));
+                    }
+                }
+                continuing {
+                    let _e267 = j;
+                    j = (_e267 + 1u);
                 }
             }
-            continuing {
-                let _e235 = k;
-                k = (_e235 + 1u);
+            let _e269 = first;
+            if _e269 {
+                let _e270 = t;
+                let _e271 = k;
+                let _e273 = slot_light[_e271];
+                let _e274 = r;
+                let _e275 = m;
+                let _e277 = k;
+                let _e280 = slot_u[_e277].x;
+                let _e281 = k;
+                let _e284 = slot_u[_e281].y;
+                let _e285 = shade_pick(_e273, x_13, n_11, _e274, _e87, _e275, 1f, _e280, _e284, eps_4);
+                let _e286 = w;
+                let _e287 = scaled(_e285, _e286);
+                let _e288 = add(_e270, _e287);
+                t = _e288;
             }
         }
+        continuing {
+            let _e290 = k;
+            k = (_e290 + 1u);
+        }
     }
-    let _e239 = t.diffuse;
-    let _e241 = t.specular;
-    let _e243 = count;
-    textureStore(out_tex, texel_1, vec4<f32>((_e239 + _e241), f32(_e243)));
+    let _e294 = t.diffuse;
+    let _e296 = t.specular;
+    let _e298 = count;
+    textureStore(out_tex, texel_1, vec4<f32>((_e294 + _e296), f32(_e298)));
     return;
 }

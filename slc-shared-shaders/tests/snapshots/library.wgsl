@@ -284,12 +284,12 @@ fn sphere_union(c1_1: vec3<f32>, r1_1: f32, c2_1: vec3<f32>, r2_3: f32) -> vec4<
         return vec4<f32>(c2_1.x, c2_1.y, c2_1.z, (rm + _e58));
     }
     let r0_ = (0.5f * ((d_10 + r1_1) + r2_3));
-    let c_16 = (c1_1 + (v_16 * ((r0_ - r1_1) / d_10)));
-    let e1_ = (c_16 - c1_1);
-    let e2_ = (c_16 - c2_1);
+    let c_17 = (c1_1 + (v_16 * ((r0_ - r1_1) / d_10)));
+    let e1_ = (c_17 - c1_1);
+    let e2_ = (c_17 - c2_1);
     let r_11 = max(r0_, max((sqrt(dot(e1_, e1_)) + r1_1), (sqrt(dot(e2_, e2_)) + r2_3)));
-    let _e82 = sphere_pad(r_11, c_16);
-    return vec4<f32>(c_16.x, c_16.y, c_16.z, (r_11 + _e82));
+    let _e82 = sphere_pad(r_11, c_17);
+    return vec4<f32>(c_17.x, c_17.y, c_17.z, (r_11 + _e82));
 }
 
 fn sphere_overlaps_aabb(c_2: vec3<f32>, r_2: f32, bmin: vec3<f32>, bmax: vec3<f32>) -> bool {
@@ -488,11 +488,11 @@ fn triangle_sample(a_2: vec3<f32>, b_2: vec3<f32>, c_5: vec3<f32>, u1_: f32, u2_
 }
 
 fn area_to_solid_angle_pdf(pdf_area: f32, d2_7: f32, cos_light: f32) -> f32 {
-    let c_17 = abs(cos_light);
-    if (c_17 <= 0f) {
+    let c_18 = abs(cos_light);
+    if (c_18 <= 0f) {
         return 0f;
     }
-    return ((pdf_area * d2_7) / c_17);
+    return ((pdf_area * d2_7) / c_18);
 }
 
 fn atan_portable(x_7: f32) -> f32 {
@@ -675,8 +675,8 @@ fn ies_candela_dir(tab_3: u32, base_2: u32, wn: f32, wr: f32, ws: f32) -> f32 {
     let gamma_1 = degrees(_e9);
     let on_axis = ((abs(wr) + abs(ws)) <= 0f);
     let _e16 = atan2_portable(ws, wr);
-    let c_18 = select(degrees(_e16), 0f, on_axis);
-    let _e20 = ies_candela(tab_3, base_2, gamma_1, c_18);
+    let c_19 = select(degrees(_e16), 0f, on_axis);
+    let _e20 = ies_candela(tab_3, base_2, gamma_1, c_19);
     return _e20;
 }
 
@@ -778,6 +778,39 @@ fn reservoir_select_pdf(seen: u32, in_range: bool, k_3: u32) -> f32 {
 
 fn resample_target(c_8: vec3<f32>) -> f32 {
     return (((c_8.x + c_8.y) + c_8.z) * 0.33333334f);
+}
+
+fn slot_target(c_9: vec3<f32>, slot: u32, k_4: u32) -> f32 {
+    if (k_4 < 3u) {
+        let _e5 = resample_target(c_9);
+        return _e5;
+    }
+    let j = (slot % 3u);
+    if (j == 0u) {
+        return c_9.x;
+    }
+    if (j == 1u) {
+        return c_9.y;
+    }
+    return c_9.z;
+}
+
+fn slot_share(slot_1: u32, k_5: u32) -> vec3<f32> {
+    if (k_5 < 3u) {
+        let _e4 = to_f32_(k_5);
+        let w_18 = (1f / _e4);
+        return vec3<f32>(w_18, w_18, w_18);
+    }
+    let j_1 = (slot_1 % 3u);
+    let _e15 = to_f32_((((k_5 + 2u) - j_1) / 3u));
+    let w_19 = (1f / _e15);
+    if (j_1 == 0u) {
+        return vec3<f32>(w_19, 0f, 0f);
+    }
+    if (j_1 == 1u) {
+        return vec3<f32>(0f, w_19, 0f);
+    }
+    return vec3<f32>(0f, 0f, w_19);
 }
 
 fn grid_coordinate(bits_1: u32) -> f32 {
@@ -934,9 +967,9 @@ fn smith_visibility(n_l_1: f32, n_v: f32, alpha_2: f32) -> f32 {
 }
 
 fn fresnel_schlick(f0_: vec3<f32>, f90_: f32, v_h: f32) -> vec3<f32> {
-    let c_19 = saturate((1f - v_h));
-    let c2_3 = (c_19 * c_19);
-    return (f0_ + ((vec3<f32>(f90_, f90_, f90_) - f0_) * ((c2_3 * c2_3) * c_19)));
+    let c_20 = saturate((1f - v_h));
+    let c2_3 = (c_20 * c_20);
+    return (f0_ + ((vec3<f32>(f90_, f90_, f90_) - f0_) * ((c2_3 * c2_3) * c_20)));
 }
 
 fn specular_fresnel(base_4: vec3<f32>, metallic: f32, f0_d: vec3<f32>, f90_d: f32, v_h_1: f32) -> vec3<f32> {
@@ -976,8 +1009,8 @@ fn specular_brdf(base_6: vec3<f32>, metallic_2: f32, f0_d_2: vec3<f32>, f90_d_2:
     let hs = (v_4 + l_1);
     let inv = (1f / sqrt(dot(hs, hs)));
     let h_6 = (hs * inv);
-    let c_20 = cross(n_14, h_6);
-    let _e32 = ggx_d(dot(n_14, h_6), dot(c_20, c_20), alpha_3);
+    let c_21 = cross(n_14, h_6);
+    let _e32 = ggx_d(dot(n_14, h_6), dot(c_21, c_21), alpha_3);
     let _e34 = specular_fresnel(base_6, metallic_2, f0_d_2, f90_d_2, dot(v_4, h_6));
     let _e35 = smith_visibility(n_l_2, n_v_3, alpha_3);
     return (_e34 * (_e32 * _e35));
@@ -1022,8 +1055,8 @@ fn has_specular(metallic_6: f32, f0_d_5: vec3<f32>, f90_d_5: f32) -> bool {
     return _e23;
 }
 
-fn channel_mean(c_9: vec3<f32>) -> f32 {
-    return (((c_9.x + c_9.y) + c_9.z) * 0.33333334f);
+fn channel_mean(c_10: vec3<f32>) -> f32 {
+    return (((c_10.x + c_10.y) + c_10.z) * 0.33333334f);
 }
 
 fn receiver_lobe(base_10: vec3<f32>, metallic_7: f32, f0_d_6: vec3<f32>, f90_d_6: f32, alpha_6: f32, n_v_1: f32) -> vec4<f32> {
@@ -1264,8 +1297,8 @@ fn cone_cos_of(v_11: vec3<f32>, d2_9: f32, a_5: f32, d_1: vec3<f32>) -> f32 {
     if _e21 {
         return 1f;
     }
-    let c_21 = cross(v_11, d_1);
-    return min((((vd * sqrt(h2_1)) + (sqrt(dot(c_21, c_21)) * a_5)) / d2_9), 1f);
+    let c_22 = cross(v_11, d_1);
+    return min((((vd * sqrt(h2_1)) + (sqrt(dot(c_22, c_22)) * a_5)) / d2_9), 1f);
 }
 
 fn cone_cos_toward(center_2: vec3<f32>, radius_2: f32, p_2: vec3<f32>, d_2: vec3<f32>) -> f32 {
@@ -1357,12 +1390,12 @@ fn cone_weight(center_7: vec3<f32>, radius_7: f32, phi_4: f32, axis_5: vec3<f32>
     return _e22;
 }
 
-fn weighted_select_pdf(w_8: f32, w_sum_3: f32, in_range_1: bool, k_4: u32) -> f32 {
+fn weighted_select_pdf(w_8: f32, w_sum_3: f32, in_range_1: bool, k_6: u32) -> f32 {
     if (w_8 <= 0f) {
         return 0f;
     }
     let total = select((w_sum_3 + w_8), w_sum_3, in_range_1);
-    let _e9 = to_f32_(k_4);
+    let _e9 = to_f32_(k_6);
     return ((_e9 * w_8) / total);
 }
 
@@ -1436,10 +1469,10 @@ fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin_1: vec3<f32>, bmax_1: vec3<f32>
     return -1f;
 }
 
-fn triangle_normal(a_6: vec3<f32>, b_4: vec3<f32>, c_10: vec3<f32>) -> vec3<f32> {
+fn triangle_normal(a_6: vec3<f32>, b_4: vec3<f32>, c_11: vec3<f32>) -> vec3<f32> {
     var local_23: bool;
 
-    let n_37 = cross((b_4 - a_6), (c_10 - a_6));
+    let n_37 = cross((b_4 - a_6), (c_11 - a_6));
     let l2_ = dot(n_37, n_37);
     if !(!((l2_ > 0f))) {
         local_23 = !((l2_ < 300000000000000000000000000000000000000f));
@@ -1457,9 +1490,9 @@ fn face_against(n_25: vec3<f32>, dir: vec3<f32>) -> vec3<f32> {
     return select(n_25, -(n_25), (dot(n_25, dir) > 0f));
 }
 
-fn barycentric(p_8: vec3<f32>, a_7: vec3<f32>, b_5: vec3<f32>, c_11: vec3<f32>) -> vec3<f32> {
+fn barycentric(p_8: vec3<f32>, a_7: vec3<f32>, b_5: vec3<f32>, c_12: vec3<f32>) -> vec3<f32> {
     let e1_1 = (b_5 - a_7);
-    let e2_1 = (c_11 - a_7);
+    let e2_1 = (c_12 - a_7);
     let q_5 = (p_8 - a_7);
     let d11_ = dot(e1_1, e1_1);
     let d12_ = dot(e1_1, e2_1);
@@ -1491,13 +1524,13 @@ fn shading_normal(n0_: vec3<f32>, n1_: vec3<f32>, n2_: vec3<f32>, w_9: vec3<f32>
     return select(n_38, -(n_38), (dot(n_38, facing) < 0f));
 }
 
-fn ray_triangle(o_1: vec3<f32>, d_4: vec3<f32>, a_8: vec3<f32>, b_6: vec3<f32>, c_12: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
+fn ray_triangle(o_1: vec3<f32>, d_4: vec3<f32>, a_8: vec3<f32>, b_6: vec3<f32>, c_13: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
     var local_25: bool;
     var local_26: bool;
     var local_27: bool;
 
     let e1_2 = (b_6 - a_8);
-    let e2_2 = (c_12 - a_8);
+    let e2_2 = (c_13 - a_8);
     let p_12 = cross(d_4, e2_2);
     let det = dot(e1_2, p_12);
     if (abs(det) <= 0f) {
@@ -1791,8 +1824,8 @@ fn ortho_texel_width(extent_4: f32, size_7: f32) -> f32 {
 }
 
 fn shadow_bias(texel: f32, cos_light_1: f32) -> f32 {
-    let c_22 = clamp(cos_light_1, 0.02f, 1f);
-    return (texel * (1.5f + (sqrt((1f - (c_22 * c_22))) / c_22)));
+    let c_23 = clamp(cos_light_1, 0.02f, 1f);
+    return (texel * (1.5f + (sqrt((1f - (c_23 * c_23))) / c_23)));
 }
 
 fn shadow_lit(d_6: f32, d_map: f32, bias: f32) -> bool {
@@ -1833,8 +1866,8 @@ fn glossy_radiance(base_12: vec3<f32>, emission_1: vec3<f32>, metallic_9: f32, f
     return (((emission_1 + (f_direct * direct)) + ((_e9 * INV_PI) * indirect)) + specular);
 }
 
-fn luminance(c_13: vec3<f32>) -> f32 {
-    return dot(c_13, vec3<f32>(0.2126f, 0.7152f, 0.0722f));
+fn luminance(c_14: vec3<f32>) -> f32 {
+    return dot(c_14, vec3<f32>(0.2126f, 0.7152f, 0.0722f));
 }
 
 fn reproject(c0_1: vec4<f32>, c1_3: vec4<f32>, c2_2: vec4<f32>, c3_: vec4<f32>, p_9: vec3<f32>, width: f32, height: f32) -> vec3<f32> {
@@ -1857,7 +1890,7 @@ fn bilinear_weight(fx: f32, fy: f32, dx: u32, dy: u32) -> f32 {
     return (wx * wy);
 }
 
-fn history_tap(q_2: vec3<f32>, k_5: u32, width_2: f32, height_2: f32) -> vec4<f32> {
+fn history_tap(q_2: vec3<f32>, k_7: u32, width_2: f32, height_2: f32) -> vec4<f32> {
     var local_36: bool;
     var local_37: bool;
     var local_38: bool;
@@ -1865,8 +1898,8 @@ fn history_tap(q_2: vec3<f32>, k_5: u32, width_2: f32, height_2: f32) -> vec4<f3
 
     let x0_ = floor(q_2.x);
     let y0_ = floor(q_2.y);
-    let dx_1 = (k_5 % 2u);
-    let dy_1 = (k_5 / 2u);
+    let dx_1 = (k_7 % 2u);
+    let dy_1 = (k_7 / 2u);
     let _e12 = to_f32_(dx_1);
     let tx_2 = (x0_ + _e12);
     let _e14 = to_f32_(dy_1);
@@ -1976,21 +2009,21 @@ fn persistent_change(l_7: f32, last: f32, m1_1: f32, noise_1: f32, n_36: f32) ->
     return min(_e11, _e12);
 }
 
-fn temporal_color(c_14: vec3<f32>, h_1: vec4<f32>, noise_2: f32, last_1: f32, max_history_1: f32) -> vec4<f32> {
+fn temporal_color(c_15: vec3<f32>, h_1: vec4<f32>, noise_2: f32, last_1: f32, max_history_1: f32) -> vec4<f32> {
     let hc = vec3<f32>(h_1.x, h_1.y, h_1.z);
-    let _e9 = luminance(c_14);
+    let _e9 = luminance(c_15);
     let _e10 = luminance(hc);
     let _e12 = persistent_change(_e9, last_1, _e10, noise_2, h_1.w);
     let _e14 = next_history_length(h_1.w, _e12, max_history_1);
     let _e15 = temporal_alpha(_e14);
-    let v_26 = ((hc * (1f - _e15)) + (c_14 * _e15));
+    let v_26 = ((hc * (1f - _e15)) + (c_15 * _e15));
     return vec4<f32>(v_26.x, v_26.y, v_26.z, _e14);
 }
 
-fn temporal_moments(c_15: vec3<f32>, last_2: f32, noise_3: f32, prev_len: f32, len_3: f32, depth_1: f32) -> vec4<f32> {
+fn temporal_moments(c_16: vec3<f32>, last_2: f32, noise_3: f32, prev_len: f32, len_3: f32, depth_1: f32) -> vec4<f32> {
     var local_44: bool;
 
-    let _e6 = luminance(c_15);
+    let _e6 = luminance(c_16);
     if (prev_len <= 0f) {
         return vec4<f32>(_e6, 0f, depth_1, 0f);
     }

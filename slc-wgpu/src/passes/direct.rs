@@ -65,22 +65,26 @@
 //!   and `1/p`. Its noise is smallest where one light dominates.
 //! - `Resampled { k }`: resampled importance sampling over the candidates.
 //!   Each is sampled (a point on a triangle) and evaluated without a
-//!   shadow ray, `cᵢ` (the `1/p` of its roulette included); `k` independent
-//!   picks with probability `pᵢ/P`, `pᵢ` the channel mean of `cᵢ` and `P`
-//!   their sum; each pick adds its contribution shadowed, weighted
-//!   `P/(k·pᵢ)`. The rays go only where light arrives unshadowed, in
-//!   proportion to it: what the bound misses (a spot's cone, an IES
-//!   profile, the BRDF, the roulette at the sampled point) adds no noise.
-//!   Each candidate costs a full evaluation instead of a bound. Measured on
-//!   lavapipe, one frame's relative error at k = 8: 200 point and spot
-//!   lights among shadowing boxes (`tests/tests/direct_shadows.rs`) 0.114
-//!   against weighted picks' 0.237, both at most 8 rays per pixel; 3,000
-//!   unshadowed point lights, 222 in range per pixel
-//!   (`tests/tests/engine_direct.rs`), 0.070 against 0.074, where the
-//!   bound is nearly exact, at 1.5× the frame's time; slc-bevy's headless
-//!   scene (point and spot lights, Bevy's BRDF) 0.031 against 0.086
-//!   (luminance RMSE). slc-bevy picks this way by default. GPU timing
-//!   pending.
+//!   shadow ray, `cᵢ` (the `1/p` of its roulette included); pick `j` of
+//!   `k` (an independent one-slot reservoir) takes candidate `i` with
+//!   probability `pᵢ/P`, `pᵢ` one colour channel of `cᵢ` (channel
+//!   `j mod 3`; the channel mean for `k < 3`: slc-core's `slot_target`)
+//!   and `P` their sum, and adds that channel of its contribution,
+//!   shadowed, weighted `P/pᵢ` over the `⌊(k + 2 − c)/3⌋` picks of channel
+//!   `c` (`slot_share`). The rays go only where light arrives unshadowed,
+//!   in proportion to it: what the bound misses (a spot's cone, an IES
+//!   profile, the BRDF, the roulette at the sampled point) adds no noise,
+//!   and neither do the lights' colours (a target shared by the channels
+//!   picks a red light as often for blue as for red). Each candidate costs
+//!   a full evaluation instead of a bound. Measured on lavapipe, one
+//!   frame's relative error at k = 8 (docs/results/reused-picks.md): 200
+//!   point and spot lights among shadowing boxes
+//!   (`tests/tests/direct_shadows.rs`) 0.115 against weighted picks' 0.237,
+//!   both at most 8 rays per pixel; 3,000 unshadowed coloured point
+//!   lights, 222 in range per pixel (`tests/tests/engine_direct.rs`), 0.022
+//!   per channel against 0.074; slc-bevy's headless scene (coloured point
+//!   and spot lights, Bevy's BRDF) 0.0017 against 0.086 (luminance RMSE).
+//!   slc-bevy picks this way by default. GPU timing pending.
 //!
 //!   **Reuse** ([`DirectPassDesc::reuse`], [`DirectReuse`]): each of the
 //!   `k` resampled picks is a reservoir with an unbiased contribution
@@ -91,12 +95,11 @@
 //!   for up to `max_confidence` frames of candidates and the culling's
 //!   noise averages over them; still unbiased. Measured on lavapipe, the
 //!   8th frame (`tests/tests/direct_shadows.rs`, `engine_direct.rs`,
-//!   docs/results/reused-picks.md): the shadow test 0.086 (visibility
-//!   reuse: 0.065) against resampling's 0.115 and weighted picks' 0.237;
-//!   unshadowed, its r + g + b 0.009 against 0.076; the engine-pass scene's
-//!   r + g + b 0.0081 against weighted picks' 0.0378 (per channel 0.067
-//!   against 0.074: `k` picks among hundreds of coloured lights tint each
-//!   pixel, and reuse does not change how many picks there are).
+//!   docs/results/reused-picks.md): the shadow test 0.088 (visibility
+//!   reuse: 0.066) against resampling's 0.115 and weighted picks' 0.237;
+//!   the engine-pass scene per channel 0.0083 against weighted picks'
+//!   0.074 (0.11), its r + g + b 0.0081 against 0.0378; slc-bevy's
+//!   luminance RMSE 0.00022 against 0.086.
 //! - `Uniform { k }`: `k` picks uniform among the `n` candidates (Algorithm
 //!   R), weighted `n/k` and `1/p`: the paper's reservoir.
 //! - `All`: every candidate, weighted `1/p` (exact given ξ): for small

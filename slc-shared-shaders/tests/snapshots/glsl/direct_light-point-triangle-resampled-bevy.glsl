@@ -227,43 +227,43 @@ float inverse_square(float d2_2) {
     return (1.0 / max(d2_2, MIN_D2_));
 }
 
-float connection_factor(float cos_x, float d2_3, float rt2_1, float w) {
+float connection_factor(float cos_x, float d2_3, float rt2_1, float w_1) {
     float _e4 = inverse_square(d2_3);
     float _e6 = slc_weight(rt2_1, d2_3);
-    return (((cos_x * _e4) * _e6) * w);
+    return (((cos_x * _e4) * _e6) * w_1);
 }
 
 float connection_cosine(vec3 x_2, vec3 y, vec3 n, vec3 ng, float r2_1) {
-    bool local_2 = false;
-    bool local_3 = false;
+    bool local_5 = false;
+    bool local_6 = false;
     vec3 v_6 = (x_2 - y);
     float d2_6 = dot(v_6, v_6);
     bool _e7 = slc_keep(r2_1, d2_6);
     if (!(!(_e7))) {
-        local_2 = !((d2_6 > 0.0));
+        local_5 = !((d2_6 > 0.0));
     } else {
-        local_2 = true;
+        local_5 = true;
     }
-    bool _e16 = local_2;
+    bool _e16 = local_5;
     if (_e16) {
         return 0.0;
     }
-    vec3 w_6 = (v_6 / vec3(sqrt(d2_6)));
-    float cos_x_1 = -(dot(n, w_6));
+    vec3 w_8 = (v_6 / vec3(sqrt(d2_6)));
+    float cos_x_1 = -(dot(n, w_8));
     if (!((cos_x_1 <= 0.0))) {
-        local_3 = (dot(ng, w_6) >= 0.0);
+        local_6 = (dot(ng, w_8) >= 0.0);
     } else {
-        local_3 = true;
+        local_6 = true;
     }
-    bool _e32 = local_3;
+    bool _e32 = local_6;
     if (_e32) {
         return 0.0;
     }
     return cos_x_1;
 }
 
-float triangle_lobe(vec3 n_1, float area, vec3 w_1) {
-    return (area * max(dot(n_1, w_1), 0.0));
+float triangle_lobe(vec3 n_1, float area, vec3 w_2) {
+    return (area * max(dot(n_1, w_2), 0.0));
 }
 
 vec3 triangle_sample(vec3 a_2, vec3 b_3, vec3 c_1, float u1_, float u2_) {
@@ -291,12 +291,45 @@ float bsh_range_bound(BshNode node_1) {
     return _e8;
 }
 
-bool weighted_replace(float w_2, float w_sum, float u_2) {
-    return ((u_2 * w_sum) < w_2);
+bool weighted_replace(float w_3, float w_sum, float u_2) {
+    return ((u_2 * w_sum) < w_3);
 }
 
 float resample_target(vec3 c_2) {
     return (((c_2.x + c_2.y) + c_2.z) * 0.33333334);
+}
+
+float slot_target(vec3 c_3, uint slot, uint k_1) {
+    if ((k_1 < 3u)) {
+        float _e5 = resample_target(c_3);
+        return _e5;
+    }
+    uint j_1 = (slot % 3u);
+    if ((j_1 == 0u)) {
+        return c_3.x;
+    }
+    if ((j_1 == 1u)) {
+        return c_3.y;
+    }
+    return c_3.z;
+}
+
+vec3 slot_share(uint slot_1, uint k_2) {
+    if ((k_2 < 3u)) {
+        float _e4 = to_f32_(k_2);
+        float w_9 = (1.0 / _e4);
+        return vec3(w_9, w_9, w_9);
+    }
+    uint j_2 = (slot_1 % 3u);
+    float _e15 = to_f32_((((k_2 + 2u) - j_2) / 3u));
+    float w_10 = (1.0 / _e15);
+    if ((j_2 == 0u)) {
+        return vec3(w_10, 0.0, 0.0);
+    }
+    if ((j_2 == 1u)) {
+        return vec3(0.0, w_10, 0.0);
+    }
+    return vec3(0.0, 0.0, w_10);
 }
 
 float ggx_d(float cos_h, float sin2_h, float alpha) {
@@ -314,13 +347,13 @@ float smith_root(float cos_, float alpha_1) {
 }
 
 float smith_visibility(float n_l, float n_v, float alpha_2) {
-    bool local_4 = false;
+    bool local_7 = false;
     if (!((n_l <= 0.0))) {
-        local_4 = (n_v <= 0.0);
+        local_7 = (n_v <= 0.0);
     } else {
-        local_4 = true;
+        local_7 = true;
     }
-    bool _e11 = local_4;
+    bool _e11 = local_7;
     if (_e11) {
         return 0.0;
     }
@@ -330,9 +363,9 @@ float smith_visibility(float n_l, float n_v, float alpha_2) {
 }
 
 vec3 fresnel_schlick(vec3 f0_, float f90_, float v_h) {
-    float c_8 = clamp((1.0 - v_h), 0.0, 1.0);
-    float c2_ = (c_8 * c_8);
-    return (f0_ + ((vec3(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_8)));
+    float c_9 = clamp((1.0 - v_h), 0.0, 1.0);
+    float c2_ = (c_9 * c_9);
+    return (f0_ + ((vec3(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_9)));
 }
 
 vec3 specular_fresnel(vec3 base, float metallic, vec3 f0_d, float f90_d, float v_h_1) {
@@ -342,38 +375,38 @@ vec3 specular_fresnel(vec3 base, float metallic, vec3 f0_d, float f90_d, float v
 }
 
 bool has_specular(float metallic_1, vec3 f0_d_1, float f90_d_1) {
-    bool local_5 = false;
-    bool local_6 = false;
+    bool local_8 = false;
+    bool local_9 = false;
     if (!((metallic_1 > 0.0))) {
-        local_5 = (f90_d_1 > 0.0);
+        local_8 = (f90_d_1 > 0.0);
     } else {
-        local_5 = true;
+        local_8 = true;
     }
-    bool _e11 = local_5;
+    bool _e11 = local_8;
     if (!(_e11)) {
-        local_6 = (max(max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0.0);
+        local_9 = (max(max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0.0);
     } else {
-        local_6 = true;
+        local_9 = true;
     }
-    bool _e23 = local_6;
+    bool _e23 = local_9;
     return _e23;
 }
 
-float channel_mean(vec3 c_3) {
-    return (((c_3.x + c_3.y) + c_3.z) * 0.33333334);
+float channel_mean(vec3 c_4) {
+    return (((c_4.x + c_4.y) + c_4.z) * 0.33333334);
 }
 
 vec4 receiver_lobe(vec3 base_1, float metallic_2, vec3 f0_d_2, float f90_d_2, float alpha_3, float n_v_1) {
-    bool local_7 = false;
+    bool local_10 = false;
     vec3 _e10 = fresnel_schlick(f0_d_2, f90_d_2, n_v_1);
     float _e16 = channel_mean((((vec3(1.0, 1.0, 1.0) - _e10) * base_1) * (1.0 - metallic_2)));
     if (!((n_v_1 <= 0.0))) {
         bool _e22 = has_specular(metallic_2, f0_d_2, f90_d_2);
-        local_7 = !(_e22);
+        local_10 = !(_e22);
     } else {
-        local_7 = true;
+        local_10 = true;
     }
-    bool _e25 = local_7;
+    bool _e25 = local_10;
     if (_e25) {
         return vec4(_e16, 0.0, alpha_3, n_v_1);
     }
@@ -457,27 +490,27 @@ vec3 bevy_brdf(vec3 base_2, float metallic_3, float r_3, float reflectance_1, ve
 }
 
 float cone_cos_of(vec3 v_2, float d2_4, float a_3, vec3 d) {
-    bool local_8 = false;
-    bool local_9 = false;
+    bool local_11 = false;
+    bool local_12 = false;
     float vd = dot(v_2, d);
     float h2_ = (d2_4 - (a_3 * a_3));
     if (!((h2_ <= 0.0))) {
         if ((vd >= 0.0)) {
-            local_9 = ((vd * vd) >= h2_);
+            local_12 = ((vd * vd) >= h2_);
         } else {
-            local_9 = false;
+            local_12 = false;
         }
-        bool _e19 = local_9;
-        local_8 = _e19;
+        bool _e19 = local_12;
+        local_11 = _e19;
     } else {
-        local_8 = true;
+        local_11 = true;
     }
-    bool _e21 = local_8;
+    bool _e21 = local_11;
     if (_e21) {
         return 1.0;
     }
-    vec3 c_9 = cross(v_2, d);
-    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_9, c_9)) * a_3)) / d2_4), 1.0);
+    vec3 c_10 = cross(v_2, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_10, c_10)) * a_3)) / d2_4), 1.0);
 }
 
 float cone_cos_toward(vec3 center, float radius, vec3 p, vec3 d_1) {
@@ -528,77 +561,77 @@ float ray_aabb(vec3 o, vec3 inv_d, vec3 bmin, vec3 bmax, float t_max) {
     return -1.0;
 }
 
-vec3 triangle_normal(vec3 a_4, vec3 b_4, vec3 c_4) {
-    bool local_10 = false;
-    vec3 n_9 = cross((b_4 - a_4), (c_4 - a_4));
+vec3 triangle_normal(vec3 a_4, vec3 b_4, vec3 c_5) {
+    bool local_13 = false;
+    vec3 n_9 = cross((b_4 - a_4), (c_5 - a_4));
     float l2_ = dot(n_9, n_9);
     if (!(!((l2_ > 0.0)))) {
-        local_10 = !((l2_ < 3e38));
+        local_13 = !((l2_ < 3e38));
     } else {
-        local_10 = true;
+        local_13 = true;
     }
-    bool _e17 = local_10;
+    bool _e17 = local_13;
     if (_e17) {
         return vec3(0.0, 0.0, 0.0);
     }
     return (n_9 / vec3(sqrt(l2_)));
 }
 
-float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_5, vec3 b_5, vec3 c_5, float t_min, float t_max_1) {
-    bool local_11 = false;
-    bool local_12 = false;
-    bool local_13 = false;
+float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_5, vec3 b_5, vec3 c_6, float t_min, float t_max_1) {
+    bool local_14 = false;
+    bool local_15 = false;
+    bool local_16 = false;
     vec3 e1_ = (b_5 - a_5);
-    vec3 e2_ = (c_5 - a_5);
+    vec3 e2_ = (c_6 - a_5);
     vec3 p_2 = cross(d_3, e2_);
     float det = dot(e1_, p_2);
     if ((abs(det) <= 0.0)) {
         return -1.0;
     }
     float inv = (1.0 / det);
-    vec3 s_3 = (o_1 - a_5);
-    float u_3 = (dot(s_3, p_2) * inv);
+    vec3 s_4 = (o_1 - a_5);
+    float u_3 = (dot(s_4, p_2) * inv);
     if (!((u_3 < 0.0))) {
-        local_11 = (u_3 > 1.0);
+        local_14 = (u_3 > 1.0);
     } else {
-        local_11 = true;
+        local_14 = true;
     }
-    bool _e28 = local_11;
+    bool _e28 = local_14;
     if (_e28) {
         return -1.0;
     }
-    vec3 q_1 = cross(s_3, e1_);
+    vec3 q_1 = cross(s_4, e1_);
     float v_8 = (dot(d_3, q_1) * inv);
     if (!((v_8 < 0.0))) {
-        local_12 = ((u_3 + v_8) > 1.0);
+        local_15 = ((u_3 + v_8) > 1.0);
     } else {
-        local_12 = true;
+        local_15 = true;
     }
-    bool _e42 = local_12;
+    bool _e42 = local_15;
     if (_e42) {
         return -1.0;
     }
     float t_3 = (dot(e2_, q_1) * inv);
     if ((t_3 > t_min)) {
-        local_13 = (t_3 < t_max_1);
+        local_16 = (t_3 < t_max_1);
     } else {
-        local_13 = false;
+        local_16 = false;
     }
-    bool _e51 = local_13;
+    bool _e51 = local_16;
     if (_e51) {
         return t_3;
     }
     return -1.0;
 }
 
-vec3 light_intensity(GpuLight l_1, vec3 w_3) {
+vec3 light_intensity(GpuLight l_1, vec3 w_4) {
     switch(l_1.kind) {
         case 0u: {
             return l_1.intensity;
         }
         case 3u: {
             vec3 _e8 = triangle_normal(l_1.p0_, l_1.p1_, l_1.p2_);
-            float _e10 = triangle_lobe(_e8, l_1.a, w_3);
+            float _e10 = triangle_lobe(_e8, l_1.a, w_4);
             return (l_1.intensity * _e10);
         }
         default: {
@@ -725,19 +758,19 @@ float bsh_inner_scale(float a_7, vec3 v_3, float d2_5, vec3 r_5, vec4 rl_2) {
 }
 
 bool bsh_reaches(BshNode node_3, vec3 x_4, vec3 r_6, vec4 rl_3) {
-    bool local_14 = false;
-    bool local_15 = false;
+    bool local_17 = false;
+    bool local_18 = false;
     bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_4);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
         bool _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001)), x_4);
-        local_14 = !(_e20);
+        local_17 = !(_e20);
     } else {
-        local_14 = true;
+        local_17 = true;
     }
-    bool _e23 = local_14;
+    bool _e23 = local_17;
     if (_e23) {
         return false;
     }
@@ -758,11 +791,11 @@ bool bsh_reaches(BshNode node_3, vec3 x_4, vec3 r_6, vec4 rl_3) {
     float s_c = (_e50 * 1.001);
     float reach = (node_3.extent + (sqrt(s_c) * _e25));
     if ((d2_7 <= ((node_3.radius * node_3.radius) * s_c))) {
-        local_15 = (d2_7 <= (reach * reach));
+        local_18 = (d2_7 <= (reach * reach));
     } else {
-        local_15 = false;
+        local_18 = false;
     }
-    bool _e67 = local_15;
+    bool _e67 = local_18;
     return _e67;
 }
 
@@ -794,42 +827,42 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start, vec3 x_5, vec3 r_7, vec4 rl_4)
 }
 
 Connection connect_record(GpuLight l_3, vec3 x_6, vec3 n_4, vec3 ng_1, float r2_2, float rt2_2, float w_res, float u1_2, float u2_2, float eps, bool trace_1) {
-    Connection c_6 = Connection(vec3(0.0), vec3(0.0), 0.0);
-    bool local_16 = false;
-    bool local_17 = false;
-    c_6.e = vec3(0.0);
+    Connection c_7 = Connection(vec3(0.0), vec3(0.0), 0.0);
+    bool local_19 = false;
+    bool local_20 = false;
+    c_7.e = vec3(0.0);
     vec3 _e16 = light_point(l_3, u1_2, u2_2);
-    c_6.y = _e16;
-    vec3 _e19 = c_6.y;
+    c_7.y = _e16;
+    vec3 _e19 = c_7.y;
     float _e20 = connection_cosine(x_6, _e19, n_4, ng_1, r2_2);
-    c_6.cos_x = _e20;
-    float _e22 = c_6.cos_x;
+    c_7.cos_x = _e20;
+    float _e22 = c_7.cos_x;
     if (!((_e22 <= 0.0))) {
         if (trace_1) {
-            vec3 _e33 = c_6.y;
+            vec3 _e33 = c_7.y;
             bool _e34 = occluded((x_6 + (ng_1 * eps)), _e33);
-            local_17 = _e34;
+            local_20 = _e34;
         } else {
-            local_17 = false;
+            local_20 = false;
         }
-        bool _e36 = local_17;
-        local_16 = _e36;
+        bool _e36 = local_20;
+        local_19 = _e36;
     } else {
-        local_16 = true;
+        local_19 = true;
     }
-    bool _e38 = local_16;
+    bool _e38 = local_19;
     if (_e38) {
-        Connection _e39 = c_6;
+        Connection _e39 = c_7;
         return _e39;
     }
-    vec3 _e41 = c_6.y;
+    vec3 _e41 = c_7.y;
     vec3 v_10 = (x_6 - _e41);
     float d2_8 = dot(v_10, v_10);
     vec3 _e48 = light_intensity(l_3, (v_10 / vec3(sqrt(d2_8))));
-    float _e50 = c_6.cos_x;
+    float _e50 = c_7.cos_x;
     float _e51 = connection_factor(_e50, d2_8, rt2_2, w_res);
-    c_6.e = (_e48 * _e51);
-    Connection _e53 = c_6;
+    c_7.e = (_e48 * _e51);
+    Connection _e53 = c_7;
     return _e53;
 }
 
@@ -842,8 +875,8 @@ Connection connect_traced(uint li, vec3 x_7, vec3 n_5, vec3 ng_2, float s, float
 }
 
 float light_range_scale(uint li_1, vec3 x_8, vec3 r_8, vec4 rl_5) {
-    GpuLightCone c_10 = _group_1_binding_5_cs[li_1];
-    float _e9 = range_scale_toward(rl_5, c_10.center, c_10.radius, x_8, r_8);
+    GpuLightCone c_11 = _group_1_binding_5_cs[li_1];
+    float _e9 = range_scale_toward(rl_5, c_11.center, c_11.radius, x_8, r_8);
     return _e9;
 }
 
@@ -852,28 +885,28 @@ vec4 surface_at(ivec2 texel) {
     return ((p_3.w > 0.0) ? vec4(p_3.xyz, 1.0) : vec4(0.0));
 }
 
-Shaded shade_connection(Connection c_7, vec3 x_9, vec3 n_6, Material m_1) {
+Shaded shade_connection(Connection c_8, vec3 x_9, vec3 n_6, Material m_1) {
     Shaded s_1 = Shaded(vec3(0.0), vec3(0.0), vec3(0.0));
-    s_1.e = c_7.e;
+    s_1.e = c_8.e;
     s_1.diffuse = vec3(0.0);
     s_1.specular = vec3(0.0);
-    if ((c_7.cos_x > 0.0)) {
-        vec3 _e25 = bevy_brdf(m_1.base, m_1.metallic, m_1.roughness, m_1.reflectance, n_6, m_1.v, normalize((c_7.y - x_9)));
-        s_1.diffuse = (_e25 * c_7.e);
+    if ((c_8.cos_x > 0.0)) {
+        vec3 _e25 = bevy_brdf(m_1.base, m_1.metallic, m_1.roughness, m_1.reflectance, n_6, m_1.v, normalize((c_8.y - x_9)));
+        s_1.diffuse = (_e25 * c_8.e);
     }
     Shaded _e28 = s_1;
     return _e28;
 }
 
-Shaded shade_pick_traced(uint li_2, vec3 x_10, vec3 n_7, vec3 r_9, vec4 rl_6, Material m_2, float w_4, float u1_4, float u2_4, float eps_2, bool trace_3) {
+Shaded shade_pick_traced(uint li_2, vec3 x_10, vec3 n_7, vec3 r_9, vec4 rl_6, Material m_2, float w_5, float u1_4, float u2_4, float eps_2, bool trace_3) {
     float _e11 = light_range_scale(li_2, x_10, r_9, rl_6);
-    Connection _e12 = connect_traced(li_2, x_10, n_7, n_7, _e11, w_4, u1_4, u2_4, eps_2, trace_3);
+    Connection _e12 = connect_traced(li_2, x_10, n_7, n_7, _e11, w_5, u1_4, u2_4, eps_2, trace_3);
     Shaded _e13 = shade_connection(_e12, x_10, n_7, m_2);
     return _e13;
 }
 
-Shaded shade_pick(uint li_3, vec3 x_11, vec3 n_8, vec3 r_10, vec4 rl_7, Material m_3, float w_5, float u1_5, float u2_5, float eps_3) {
-    Shaded _e11 = shade_pick_traced(li_3, x_11, n_8, r_10, rl_7, m_3, w_5, u1_5, u2_5, eps_3, true);
+Shaded shade_pick(uint li_3, vec3 x_11, vec3 n_8, vec3 r_10, vec4 rl_7, Material m_3, float w_6, float u1_5, float u2_5, float eps_3) {
+    Shaded _e11 = shade_pick_traced(li_3, x_11, n_8, r_10, rl_7, m_3, w_6, u1_5, u2_5, eps_3, true);
     return _e11;
 }
 
@@ -886,47 +919,12 @@ Shaded add(Shaded a_8, Shaded b_7) {
     return Shaded((a_8.e + b_7.e), (a_8.diffuse + b_7.diffuse), (a_8.specular + b_7.specular));
 }
 
-uint pick_copies(uint lights[8], uint k_1) {
-    uint copies = 1u;
-    uint j = 0u;
-    bool local_18 = false;
-    bool loop_init_1 = true;
-    while(true) {
-        if (!loop_init_1) {
-            uint _e26 = j;
-            j = (_e26 + 1u);
-        }
-        loop_init_1 = false;
-        uint _e6 = j;
-        if ((_e6 < K)) {
-        } else {
-            break;
-        }
-        {
-            uint _e9 = j;
-            if ((_e9 != k_1)) {
-                uint _e13 = j;
-                local_18 = (lights[_e13] == lights[k_1]);
-            } else {
-                local_18 = false;
-            }
-            bool _e18 = local_18;
-            if (_e18) {
-                uint _e19 = j;
-                if ((_e19 < k_1)) {
-                    return 0u;
-                }
-                uint _e22 = copies;
-                copies = (_e22 + 1u);
-            }
-        }
-    }
-    uint _e28 = copies;
-    return _e28;
+Shaded scaled(Shaded s_2, vec3 w_7) {
+    return Shaded((s_2.e * w_7), (s_2.diffuse * w_7), (s_2.specular * w_7));
 }
 
-vec3 output_of(Shaded s_2) {
-    return (s_2.diffuse + s_2.specular);
+vec3 output_of(Shaded s_3) {
+    return (s_3.diffuse + s_3.specular);
 }
 
 void main() {
@@ -941,12 +939,18 @@ void main() {
     uint slot_light[8] = uint[8](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
     vec2 slot_u[8] = vec2[8](vec2(0.0), vec2(0.0), vec2(0.0), vec2(0.0), vec2(0.0), vec2(0.0), vec2(0.0), vec2(0.0));
     float slot_p[8] = float[8](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
-    float total = 0.0;
+    vec3 total = vec3(0.0);
     uint count = 0u;
     uint hc = 0u;
     uint b = 0u;
     uint q = 0u;
+    bool local_2 = false;
     uint k = 0u;
+    vec3 w = vec3(0.0);
+    bool first = false;
+    uint j = 0u;
+    bool local_3 = false;
+    bool local_4 = false;
     uint _e4 = _group_0_binding_0_cs.width;
     if (!((gid.x >= _e4))) {
         uint _e12 = _group_0_binding_0_cs.height;
@@ -1003,126 +1007,182 @@ void main() {
     uint _e111 = pick_stream(_e110);
     h = _e111;
     hc = _e110;
-    uint _e131 = bsh_first(BSH);
-    vec3 _e132 = r;
-    uint _e133 = bsh_next_leaf_lobe(BSH, _e131, x_13, _e132, _e87);
-    b = _e133;
-    bool loop_init_2 = true;
+    uint _e132 = bsh_first(BSH);
+    vec3 _e133 = r;
+    uint _e134 = bsh_next_leaf_lobe(BSH, _e132, x_13, _e133, _e87);
+    b = _e134;
+    bool loop_init_1 = true;
     while(true) {
-        if (!loop_init_2) {
-            uint _e190 = b;
-            uint _e193 = _group_1_binding_4_cs[_e190].next;
-            vec3 _e194 = r;
-            uint _e195 = bsh_next_leaf_lobe(BSH, _e193, x_13, _e194, _e87);
-            b = _e195;
+        if (!loop_init_1) {
+            uint _e203 = b;
+            uint _e206 = _group_1_binding_4_cs[_e203].next;
+            vec3 _e207 = r;
+            uint _e208 = bsh_next_leaf_lobe(BSH, _e206, x_13, _e207, _e87);
+            b = _e208;
         }
-        loop_init_2 = false;
-        uint _e135 = b;
-        if ((_e135 != BSH_NONE)) {
+        loop_init_1 = false;
+        uint _e136 = b;
+        if ((_e136 != BSH_NONE)) {
         } else {
             break;
         }
         {
-            uint _e138 = count;
-            count = (_e138 + 1u);
-            uint _e142 = b;
-            uint li_4 = _group_1_binding_4_cs[_e142].light;
-            uint _e146 = h;
-            uint _e147 = pcg_hash(_e146);
-            h = _e147;
-            uint _e148 = h;
-            float _e149 = xi_from_bits(_e148);
-            uint _e150 = h;
-            uint _e151 = pcg_hash(_e150);
-            h = _e151;
-            uint _e152 = h;
-            float _e153 = xi_from_bits(_e152);
-            vec2 u_4 = vec2(_e149, _e153);
-            vec3 _e155 = r;
-            Material _e156 = m;
-            Shaded _e161 = shade_pick_traced(li_4, x_13, n_11, _e155, _e87, _e156, 1.0, u_4.x, u_4.y, eps_4, false);
-            vec3 _e162 = output_of(_e161);
-            float _e163 = resample_target(_e162);
-            if ((_e163 > 0.0)) {
-                float _e166 = total;
-                total = (_e166 + _e163);
+            uint _e139 = count;
+            count = (_e139 + 1u);
+            uint _e143 = b;
+            uint li_4 = _group_1_binding_4_cs[_e143].light;
+            uint _e147 = h;
+            uint _e148 = pcg_hash(_e147);
+            h = _e148;
+            uint _e149 = h;
+            float _e150 = xi_from_bits(_e149);
+            uint _e151 = h;
+            uint _e152 = pcg_hash(_e151);
+            h = _e152;
+            uint _e153 = h;
+            float _e154 = xi_from_bits(_e153);
+            vec2 u_4 = vec2(_e150, _e154);
+            vec3 _e156 = r;
+            Material _e157 = m;
+            Shaded _e162 = shade_pick_traced(li_4, x_13, n_11, _e156, _e87, _e157, 1.0, u_4.x, u_4.y, eps_4, false);
+            vec3 _e163 = output_of(_e162);
+            float _e164 = resample_target(_e163);
+            if ((_e164 > 0.0)) {
+                vec3 _e167 = total;
+                total = (_e167 + _e163);
                 q = 0u;
-                bool loop_init_3 = true;
+                bool loop_init_2 = true;
                 while(true) {
-                    if (!loop_init_3) {
-                        uint _e186 = q;
-                        q = (_e186 + 1u);
+                    if (!loop_init_2) {
+                        uint _e199 = q;
+                        q = (_e199 + 1u);
                     }
-                    loop_init_3 = false;
-                    uint _e170 = q;
-                    if ((_e170 < K)) {
+                    loop_init_2 = false;
+                    uint _e171 = q;
+                    if ((_e171 < K)) {
                     } else {
                         break;
                     }
                     {
-                        uint _e173 = hc;
-                        uint _e174 = pcg_hash(_e173);
-                        hc = _e174;
-                        float _e175 = total;
-                        uint _e176 = hc;
-                        float _e177 = xi_from_bits(_e176);
-                        bool _e178 = weighted_replace(_e163, _e175, _e177);
-                        if (_e178) {
-                            uint _e179 = q;
-                            slot_light[_e179] = li_4;
-                            uint _e181 = q;
-                            slot_u[_e181] = u_4;
-                            uint _e183 = q;
-                            slot_p[_e183] = _e163;
+                        uint _e174 = hc;
+                        uint _e175 = pcg_hash(_e174);
+                        hc = _e175;
+                        uint _e176 = q;
+                        float _e178 = slot_target(_e163, _e176, K);
+                        if ((_e178 > 0.0)) {
+                            vec3 _e183 = total;
+                            uint _e184 = q;
+                            float _e186 = slot_target(_e183, _e184, K);
+                            uint _e187 = hc;
+                            float _e188 = xi_from_bits(_e187);
+                            bool _e189 = weighted_replace(_e178, _e186, _e188);
+                            local_2 = _e189;
+                        } else {
+                            local_2 = false;
+                        }
+                        bool _e191 = local_2;
+                        if (_e191) {
+                            uint _e192 = q;
+                            slot_light[_e192] = li_4;
+                            uint _e194 = q;
+                            slot_u[_e194] = u_4;
+                            uint _e196 = q;
+                            slot_p[_e196] = _e178;
                         }
                     }
                 }
             }
         }
     }
-    float _e196 = total;
-    if ((_e196 > 0.0)) {
-        bool loop_init_4 = true;
-        while(true) {
-            if (!loop_init_4) {
-                uint _e235 = k;
-                k = (_e235 + 1u);
-            }
-            loop_init_4 = false;
-            uint _e201 = k;
-            if ((_e201 < K)) {
-            } else {
-                break;
-            }
-            {
-                uint _e204[8] = slot_light;
-                uint _e205 = k;
-                uint _e206 = pick_copies(_e204, _e205);
-                if ((_e206 > 0u)) {
-                    float _e209 = total;
-                    uint _e211 = k;
-                    float _e213 = slot_p[_e211];
-                    float w_7 = ((_e209 / (8.0 * _e213)) * float(_e206));
-                    Shaded _e218 = t;
-                    uint _e219 = k;
-                    uint _e221 = slot_light[_e219];
-                    vec3 _e222 = r;
-                    Material _e223 = m;
-                    uint _e224 = k;
-                    float _e227 = slot_u[_e224].x;
-                    uint _e228 = k;
-                    float _e231 = slot_u[_e228].y;
-                    Shaded _e232 = shade_pick(_e221, x_13, n_11, _e222, _e87, _e223, w_7, _e227, _e231, eps_4);
-                    Shaded _e233 = add(_e218, _e232);
-                    t = _e233;
+    bool loop_init_3 = true;
+    while(true) {
+        if (!loop_init_3) {
+            uint _e290 = k;
+            k = (_e290 + 1u);
+        }
+        loop_init_3 = false;
+        uint _e211 = k;
+        if ((_e211 < K)) {
+        } else {
+            break;
+        }
+        {
+            w = vec3(0.0);
+            uint _e217 = k;
+            float _e219 = slot_p[_e217];
+            first = (_e219 > 0.0);
+            j = 0u;
+            bool loop_init_4 = true;
+            while(true) {
+                if (!loop_init_4) {
+                    uint _e267 = j;
+                    j = (_e267 + 1u);
                 }
+                loop_init_4 = false;
+                uint _e225 = j;
+                if ((_e225 < K)) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e228 = j;
+                    float _e230 = slot_p[_e228];
+                    if ((_e230 > 0.0)) {
+                        uint _e235 = j;
+                        uint _e237 = slot_light[_e235];
+                        uint _e238 = k;
+                        uint _e240 = slot_light[_e238];
+                        local_3 = (_e237 == _e240);
+                    } else {
+                        local_3 = false;
+                    }
+                    bool _e243 = local_3;
+                    if (_e243) {
+                        bool _e244 = first;
+                        if (_e244) {
+                            uint _e247 = j;
+                            uint _e248 = k;
+                            local_4 = (_e247 >= _e248);
+                        } else {
+                            local_4 = false;
+                        }
+                        bool _e251 = local_4;
+                        first = _e251;
+                        vec3 _e252 = w;
+                        vec3 _e253 = total;
+                        uint _e254 = j;
+                        float _e256 = slot_target(_e253, _e254, K);
+                        uint _e257 = j;
+                        float _e259 = slot_p[_e257];
+                        uint _e261 = j;
+                        vec3 _e263 = slot_share(_e261, K);
+                        w = (_e252 + ((_e256 / _e259) * _e263));
+                    }
+                }
+            }
+            bool _e269 = first;
+            if (_e269) {
+                Shaded _e270 = t;
+                uint _e271 = k;
+                uint _e273 = slot_light[_e271];
+                vec3 _e274 = r;
+                Material _e275 = m;
+                uint _e277 = k;
+                float _e280 = slot_u[_e277].x;
+                uint _e281 = k;
+                float _e284 = slot_u[_e281].y;
+                Shaded _e285 = shade_pick(_e273, x_13, n_11, _e274, _e87, _e275, 1.0, _e280, _e284, eps_4);
+                vec3 _e286 = w;
+                Shaded _e287 = scaled(_e285, _e286);
+                Shaded _e288 = add(_e270, _e287);
+                t = _e288;
             }
         }
     }
-    vec3 _e239 = t.diffuse;
-    vec3 _e241 = t.specular;
-    uint _e243 = count;
-    imageStore(_group_0_binding_3_cs, texel_1, vec4((_e239 + _e241), float(_e243)));
+    vec3 _e294 = t.diffuse;
+    vec3 _e296 = t.specular;
+    uint _e298 = count;
+    imageStore(_group_0_binding_3_cs, texel_1, vec4((_e294 + _e296), float(_e298)));
     return;
 }
 

@@ -152,7 +152,7 @@ cbuffer view : register(b0) { ViewParams view; }
 Texture2D<float4> position_tex : register(t1);
 Texture2D<float4> normal_tex : register(t2);
 RWTexture2D<float4> out_tex : register(u3);
-ByteAddressBuffer lights_1 : register(t1, space1);
+ByteAddressBuffer lights : register(t1, space1);
 ByteAddressBuffer rt2_3 : register(t2, space1);
 ByteAddressBuffer r2_3 : register(t3, space1);
 ByteAddressBuffer bsh_nodes : register(t4, space1);
@@ -231,38 +231,38 @@ float inverse_square(float d2_2)
     return (1.0 / max(d2_2, MIN_D2_));
 }
 
-float connection_factor(float cos_x, float d2_3, float rt2_1, float w)
+float connection_factor(float cos_x, float d2_3, float rt2_1, float w_1)
 {
     const float _e4 = inverse_square(d2_3);
     const float _e6 = slc_weight(rt2_1, d2_3);
-    return (((cos_x * _e4) * _e6) * w);
+    return (((cos_x * _e4) * _e6) * w_1);
 }
 
 float connection_cosine(float3 x_2, float3 y, float3 n, float3 ng, float r2_1)
 {
-    bool local_2 = (bool)0;
-    bool local_3 = (bool)0;
+    bool local_5 = (bool)0;
+    bool local_6 = (bool)0;
 
     float3 v_3 = (x_2 - y);
     float d2_6 = dot(v_3, v_3);
     const bool _e7 = slc_keep(r2_1, d2_6);
     if (!(!(_e7))) {
-        local_2 = !((d2_6 > 0.0));
+        local_5 = !((d2_6 > 0.0));
     } else {
-        local_2 = true;
+        local_5 = true;
     }
-    bool _e16 = local_2;
+    bool _e16 = local_5;
     if (_e16) {
         return 0.0;
     }
-    float3 w_5 = (v_3 / (sqrt(d2_6)).xxx);
-    float cos_x_1 = -(dot(n, w_5));
+    float3 w_7 = (v_3 / (sqrt(d2_6)).xxx);
+    float cos_x_1 = -(dot(n, w_7));
     if (!((cos_x_1 <= 0.0))) {
-        local_3 = (dot(ng, w_5) >= 0.0);
+        local_6 = (dot(ng, w_7) >= 0.0);
     } else {
-        local_3 = true;
+        local_6 = true;
     }
-    bool _e32 = local_3;
+    bool _e32 = local_6;
     if (_e32) {
         return 0.0;
     }
@@ -298,14 +298,57 @@ float bsh_range_bound(BshNode node_1)
     return _e8;
 }
 
-bool weighted_replace(float w_1, float w_sum, float u_2)
+bool weighted_replace(float w_2, float w_sum, float u_2)
 {
-    return ((u_2 * w_sum) < w_1);
+    return ((u_2 * w_sum) < w_2);
 }
 
 float resample_target(float3 c_1)
 {
     return (((c_1.x + c_1.y) + c_1.z) * 0.33333334);
+}
+
+uint naga_mod(uint lhs, uint rhs) {
+    return lhs % (rhs == 0u ? 1u : rhs);
+}
+
+float slot_target(float3 c_2, uint slot, uint k_1)
+{
+    if ((k_1 < 3u)) {
+        const float _e5 = resample_target(c_2);
+        return _e5;
+    }
+    uint j_1 = naga_mod(slot, 3u);
+    if ((j_1 == 0u)) {
+        return c_2.x;
+    }
+    if ((j_1 == 1u)) {
+        return c_2.y;
+    }
+    return c_2.z;
+}
+
+uint naga_div(uint lhs, uint rhs) {
+    return lhs / (rhs == 0u ? 1u : rhs);
+}
+
+float3 slot_share(uint slot_1, uint k_2)
+{
+    if ((k_2 < 3u)) {
+        const float _e4 = to_f32_(k_2);
+        float w_8 = (1.0 / _e4);
+        return float3(w_8, w_8, w_8);
+    }
+    uint j_2 = naga_mod(slot_1, 3u);
+    const float _e15 = to_f32_(naga_div(((k_2 + 2u) - j_2), 3u));
+    float w_9 = (1.0 / _e15);
+    if ((j_2 == 0u)) {
+        return float3(w_9, 0.0, 0.0);
+    }
+    if ((j_2 == 1u)) {
+        return float3(0.0, w_9, 0.0);
+    }
+    return float3(0.0, 0.0, w_9);
 }
 
 float smith_root(float cos_, float alpha)
@@ -347,28 +390,28 @@ float4 range_lobe(float4 lobe_4)
 
 float cone_cos_of(float3 v, float d2_4, float a_2, float3 d)
 {
-    bool local_4 = (bool)0;
-    bool local_5 = (bool)0;
+    bool local_7 = (bool)0;
+    bool local_8 = (bool)0;
 
     float vd = dot(v, d);
     float h2_ = (d2_4 - (a_2 * a_2));
     if (!((h2_ <= 0.0))) {
         if ((vd >= 0.0)) {
-            local_5 = ((vd * vd) >= h2_);
+            local_8 = ((vd * vd) >= h2_);
         } else {
-            local_5 = false;
+            local_8 = false;
         }
-        bool _e19 = local_5;
-        local_4 = _e19;
+        bool _e19 = local_8;
+        local_7 = _e19;
     } else {
-        local_4 = true;
+        local_7 = true;
     }
-    bool _e21 = local_4;
+    bool _e21 = local_7;
     if (_e21) {
         return 1.0;
     }
-    float3 c_5 = cross(v, d);
-    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_5, c_5)) * a_2)) / d2_4), 1.0);
+    float3 c_6 = cross(v, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_6, c_6)) * a_2)) / d2_4), 1.0);
 }
 
 float cone_cos_toward(float3 center_, float radius, float3 p, float3 d_1)
@@ -426,63 +469,63 @@ float ray_aabb(float3 o, float3 inv_d, float3 bmin, float3 bmax, float t_max)
     return -1.0;
 }
 
-float ray_triangle(float3 o_1, float3 d_3, float3 a_3, float3 b_3, float3 c_2, float t_min, float t_max_1)
+float ray_triangle(float3 o_1, float3 d_3, float3 a_3, float3 b_3, float3 c_3, float t_min, float t_max_1)
 {
-    bool local_6 = (bool)0;
-    bool local_7 = (bool)0;
-    bool local_8 = (bool)0;
+    bool local_9 = (bool)0;
+    bool local_10 = (bool)0;
+    bool local_11 = (bool)0;
 
     float3 e1_ = (b_3 - a_3);
-    float3 e2_ = (c_2 - a_3);
+    float3 e2_ = (c_3 - a_3);
     float3 p_2 = cross(d_3, e2_);
     float det = dot(e1_, p_2);
     if ((abs(det) <= 0.0)) {
         return -1.0;
     }
     float inv = (1.0 / det);
-    float3 s_3 = (o_1 - a_3);
-    float u_3 = (dot(s_3, p_2) * inv);
+    float3 s_4 = (o_1 - a_3);
+    float u_3 = (dot(s_4, p_2) * inv);
     if (!((u_3 < 0.0))) {
-        local_6 = (u_3 > 1.0);
+        local_9 = (u_3 > 1.0);
     } else {
-        local_6 = true;
+        local_9 = true;
     }
-    bool _e28 = local_6;
+    bool _e28 = local_9;
     if (_e28) {
         return -1.0;
     }
-    float3 q_1 = cross(s_3, e1_);
+    float3 q_1 = cross(s_4, e1_);
     float v_5 = (dot(d_3, q_1) * inv);
     if (!((v_5 < 0.0))) {
-        local_7 = ((u_3 + v_5) > 1.0);
+        local_10 = ((u_3 + v_5) > 1.0);
     } else {
-        local_7 = true;
+        local_10 = true;
     }
-    bool _e42 = local_7;
+    bool _e42 = local_10;
     if (_e42) {
         return -1.0;
     }
     float t_3 = (dot(e2_, q_1) * inv);
     if ((t_3 > t_min)) {
-        local_8 = (t_3 < t_max_1);
+        local_11 = (t_3 < t_max_1);
     } else {
-        local_8 = false;
+        local_11 = false;
     }
-    bool _e51 = local_8;
+    bool _e51 = local_11;
     if (_e51) {
         return t_3;
     }
     return -1.0;
 }
 
-float3 light_intensity(GpuLight l, float3 w_2)
+float3 light_intensity(GpuLight l, float3 w_3)
 {
     switch(l.kind) {
         case 0u: {
             return l.intensity;
         }
         case 1u: {
-            const float _e11 = spot_falloff(dot(l.p1_, w_2), l.a, l.b, l.p2_.x);
+            const float _e11 = spot_falloff(dot(l.p1_, w_3), l.a, l.b, l.p2_.x);
             return (l.intensity * _e11);
         }
         default: {
@@ -666,8 +709,8 @@ float bsh_inner_scale(float a_5, float3 v_1, float d2_5, float3 r_3, float4 rl_2
 
 bool bsh_reaches(BshNode node_3, float3 x_4, float3 r_4, float4 rl_3)
 {
-    bool local_9 = (bool)0;
-    bool local_10 = (bool)0;
+    bool local_12 = (bool)0;
+    bool local_13 = (bool)0;
 
     const bool _e6 = sphere_contains_point(node_3.center_, node_3.radius, x_4);
     if (_e6) {
@@ -675,11 +718,11 @@ bool bsh_reaches(BshNode node_3, float3 x_4, float3 r_4, float4 rl_3)
     }
     if (!((rl_3.w <= 1.0))) {
         const bool _e20 = sphere_contains_point(node_3.center_, (node_3.radius * (rl_3.w * 1.0001)), x_4);
-        local_9 = !(_e20);
+        local_12 = !(_e20);
     } else {
-        local_9 = true;
+        local_12 = true;
     }
-    bool _e23 = local_9;
+    bool _e23 = local_12;
     if (_e23) {
         return false;
     }
@@ -700,11 +743,11 @@ bool bsh_reaches(BshNode node_3, float3 x_4, float3 r_4, float4 rl_3)
     float s_c = (_e50 * 1.001);
     float reach = (node_3.extent + (sqrt(s_c) * _e25));
     if ((d2_7 <= ((node_3.radius * node_3.radius) * s_c))) {
-        local_10 = (d2_7 <= (reach * reach));
+        local_13 = (d2_7 <= (reach * reach));
     } else {
-        local_10 = false;
+        local_13 = false;
     }
-    bool _e67 = local_10;
+    bool _e67 = local_13;
     return _e67;
 }
 
@@ -742,44 +785,44 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start, float3 x_5, float3 r_5, float4
 
 Connection connect_record(GpuLight l_2, float3 x_6, float3 n_1, float3 ng_1, float r2_2, float rt2_2, float w_res, float u1_1, float u2_1, float eps, bool trace_1)
 {
-    Connection c_3 = (Connection)0;
-    bool local_11 = (bool)0;
-    bool local_12 = (bool)0;
+    Connection c_4 = (Connection)0;
+    bool local_14 = (bool)0;
+    bool local_15 = (bool)0;
 
-    c_3.e = (0.0).xxx;
+    c_4.e = (0.0).xxx;
     const float3 _e16 = light_point(l_2, u1_1, u2_1);
-    c_3.y = _e16;
-    float3 _e19 = c_3.y;
+    c_4.y = _e16;
+    float3 _e19 = c_4.y;
     const float _e20 = connection_cosine(x_6, _e19, n_1, ng_1, r2_2);
-    c_3.cos_x = _e20;
-    float _e22 = c_3.cos_x;
+    c_4.cos_x = _e20;
+    float _e22 = c_4.cos_x;
     if (!((_e22 <= 0.0))) {
         if (trace_1) {
-            float3 _e33 = c_3.y;
+            float3 _e33 = c_4.y;
             const bool _e34 = occluded((x_6 + (ng_1 * eps)), _e33);
-            local_12 = _e34;
+            local_15 = _e34;
         } else {
-            local_12 = false;
+            local_15 = false;
         }
-        bool _e36 = local_12;
-        local_11 = _e36;
+        bool _e36 = local_15;
+        local_14 = _e36;
     } else {
-        local_11 = true;
+        local_14 = true;
     }
-    bool _e38 = local_11;
+    bool _e38 = local_14;
     if (_e38) {
-        Connection _e39 = c_3;
+        Connection _e39 = c_4;
         const Connection connection = _e39;
         return connection;
     }
-    float3 _e41 = c_3.y;
+    float3 _e41 = c_4.y;
     float3 v_7 = (x_6 - _e41);
     float d2_8 = dot(v_7, v_7);
     const float3 _e48 = light_intensity(l_2, (v_7 / (sqrt(d2_8)).xxx));
-    float _e50 = c_3.cos_x;
+    float _e50 = c_4.cos_x;
     const float _e51 = connection_factor(_e50, d2_8, rt2_2, w_res);
-    c_3.e = (_e48 * _e51);
-    Connection _e53 = c_3;
+    c_4.e = (_e48 * _e51);
+    Connection _e53 = c_4;
     const Connection connection_1 = _e53;
     return connection_1;
 }
@@ -799,7 +842,7 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
 
 Connection connect_traced(uint li, float3 x_7, float3 n_2, float3 ng_2, float s, float w_res_1, float u1_2, float u2_2, float eps_1, bool trace_2)
 {
-    GpuLight _e12 = ConstructGpuLight(asfloat(lights_1.Load3(li*64+0)), asuint(lights_1.Load(li*64+12)), asfloat(lights_1.Load3(li*64+16)), asfloat(lights_1.Load(li*64+28)), asfloat(lights_1.Load3(li*64+32)), asfloat(lights_1.Load(li*64+44)), asfloat(lights_1.Load3(li*64+48)), asuint(lights_1.Load(li*64+60)));
+    GpuLight _e12 = ConstructGpuLight(asfloat(lights.Load3(li*64+0)), asuint(lights.Load(li*64+12)), asfloat(lights.Load3(li*64+16)), asfloat(lights.Load(li*64+28)), asfloat(lights.Load3(li*64+32)), asfloat(lights.Load(li*64+44)), asfloat(lights.Load3(li*64+48)), asuint(lights.Load(li*64+60)));
     float _e15 = asfloat(r2_3.Load(li*4));
     float _e19 = asfloat(rt2_3.Load(li*4));
     const Connection _e21 = connect_record(_e12, x_7, n_2, ng_2, (s * _e15), (s * _e19), w_res_1, u1_2, u2_2, eps_1, trace_2);
@@ -824,11 +867,11 @@ void direct_count(uint f, uint n_3)
     }
 }
 
-Shaded shade_connection(Connection c_4, float3 x_8, float3 n_4, Material m_1)
+Shaded shade_connection(Connection c_5, float3 x_8, float3 n_4, Material m_1)
 {
     Shaded s_1 = (Shaded)0;
 
-    s_1.e = c_4.e;
+    s_1.e = c_5.e;
     s_1.diffuse = (0.0).xxx;
     s_1.specular = (0.0).xxx;
     Shaded _e13 = s_1;
@@ -836,17 +879,17 @@ Shaded shade_connection(Connection c_4, float3 x_8, float3 n_4, Material m_1)
     return shaded;
 }
 
-Shaded shade_pick_traced(uint li_1, float3 x_9, float3 n_5, float3 r_6, float4 rl_5, Material m_2, float w_3, float u1_3, float u2_3, float eps_2, bool trace_3)
+Shaded shade_pick_traced(uint li_1, float3 x_9, float3 n_5, float3 r_6, float4 rl_5, Material m_2, float w_4, float u1_3, float u2_3, float eps_2, bool trace_3)
 {
-    const Connection _e12 = connect_traced(li_1, x_9, n_5, n_5, 1.0, w_3, u1_3, u2_3, eps_2, trace_3);
+    const Connection _e12 = connect_traced(li_1, x_9, n_5, n_5, 1.0, w_4, u1_3, u2_3, eps_2, trace_3);
     const Shaded _e13 = shade_connection(_e12, x_9, n_5, m_2);
     const Shaded shaded_1 = _e13;
     return shaded_1;
 }
 
-Shaded shade_pick(uint li_2, float3 x_10, float3 n_6, float3 r_7, float4 rl_6, Material m_3, float w_4, float u1_4, float u2_4, float eps_3)
+Shaded shade_pick(uint li_2, float3 x_10, float3 n_6, float3 r_7, float4 rl_6, Material m_3, float w_5, float u1_4, float u2_4, float eps_3)
 {
-    const Shaded _e11 = shade_pick_traced(li_2, x_10, n_6, r_7, rl_6, m_3, w_4, u1_4, u2_4, eps_3, true);
+    const Shaded _e11 = shade_pick_traced(li_2, x_10, n_6, r_7, rl_6, m_3, w_5, u1_4, u2_4, eps_3, true);
     const Shaded shaded_2 = _e11;
     return shaded_2;
 }
@@ -865,53 +908,15 @@ Shaded add(Shaded a_6, Shaded b_5)
     return shaded_3;
 }
 
-uint pick_copies(uint lights[8], uint k_1)
+Shaded scaled(Shaded s_2, float3 w_6)
 {
-    uint copies = 1u;
-    uint j = 0u;
-    bool local_13 = (bool)0;
-
-    uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
-    bool loop_init_1 = true;
-    while(true) {
-        if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
-        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-        if (!loop_init_1) {
-            uint _e26 = j;
-            j = (_e26 + 1u);
-        }
-        loop_init_1 = false;
-        uint _e6 = j;
-        if ((_e6 < K)) {
-        } else {
-            break;
-        }
-        {
-            uint _e9 = j;
-            if ((_e9 != k_1)) {
-                uint _e13 = j;
-                local_13 = (lights[min(uint(_e13), 7u)] == lights[min(uint(k_1), 7u)]);
-            } else {
-                local_13 = false;
-            }
-            bool _e18 = local_13;
-            if (_e18) {
-                uint _e19 = j;
-                if ((_e19 < k_1)) {
-                    return 0u;
-                }
-                uint _e22 = copies;
-                copies = (_e22 + 1u);
-            }
-        }
-    }
-    uint _e28 = copies;
-    return _e28;
+    const Shaded shaded_4 = ConstructShaded((s_2.e * w_6), (s_2.diffuse * w_6), (s_2.specular * w_6));
+    return shaded_4;
 }
 
-float3 output_of(Shaded s_2)
+float3 output_of(Shaded s_3)
 {
-    return s_2.e;
+    return s_3.e;
 }
 
 [numthreads(8, 8, 1)]
@@ -927,12 +932,18 @@ void main(uint3 gid : SV_DispatchThreadID)
     uint slot_light[8] = (uint[8])0;
     float2 slot_u[8] = (float2[8])0;
     float slot_p[8] = (float[8])0;
-    float total = 0.0;
+    float3 total = (0.0).xxx;
     uint count = 0u;
     uint hc = (uint)0;
     uint b = (uint)0;
     uint q = (uint)0;
+    bool local_2 = (bool)0;
     uint k = 0u;
+    float3 w = (float3)0;
+    bool first = (bool)0;
+    uint j = (uint)0;
+    bool local_3 = (bool)0;
+    bool local_4 = (bool)0;
 
     uint _e4 = view.width;
     if (!((gid.x >= _e4))) {
@@ -975,144 +986,203 @@ void main(uint3 gid : SV_DispatchThreadID)
     const uint _e78 = pick_stream(_e77);
     h = _e78;
     hc = _e77;
-    const uint _e98 = bsh_first(BSH);
-    float3 _e99 = r;
-    const uint _e100 = bsh_next_leaf_lobe(BSH, _e98, x_11, _e99, _e54);
-    b = _e100;
-    uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
-    bool loop_init_2 = true;
+    const uint _e99 = bsh_first(BSH);
+    float3 _e100 = r;
+    const uint _e101 = bsh_next_leaf_lobe(BSH, _e99, x_11, _e100, _e54);
+    b = _e101;
+    uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
+    bool loop_init_1 = true;
     while(true) {
-        if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
-        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
-        if (!loop_init_2) {
-            uint _e161 = b;
-            uint _e164 = asuint(bsh_nodes.Load(20+_e161*32));
-            float3 _e165 = r;
-            const uint _e166 = bsh_next_leaf_lobe(BSH, _e164, x_11, _e165, _e54);
-            b = _e166;
+        if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
+        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+        if (!loop_init_1) {
+            uint _e174 = b;
+            uint _e177 = asuint(bsh_nodes.Load(20+_e174*32));
+            float3 _e178 = r;
+            const uint _e179 = bsh_next_leaf_lobe(BSH, _e177, x_11, _e178, _e54);
+            b = _e179;
         }
-        loop_init_2 = false;
-        uint _e102 = b;
-        if ((_e102 != BSH_NONE)) {
+        loop_init_1 = false;
+        uint _e103 = b;
+        if ((_e103 != BSH_NONE)) {
         } else {
             break;
         }
         {
-            uint _e105 = count;
-            count = (_e105 + 1u);
-            uint _e109 = b;
-            uint li_3 = asuint(bsh_nodes.Load(24+_e109*32));
-            uint _e113 = h;
-            const uint _e114 = pcg_hash(_e113);
-            h = _e114;
-            uint _e115 = h;
-            const float _e116 = xi_from_bits(_e115);
-            uint _e117 = h;
-            const uint _e118 = pcg_hash(_e117);
-            h = _e118;
-            uint _e119 = h;
-            const float _e120 = xi_from_bits(_e119);
-            float2 u_4 = float2(_e116, _e120);
-            float3 _e122 = r;
-            Material _e123 = m;
-            const Shaded _e128 = shade_pick_traced(li_3, x_11, n_8, _e122, _e54, _e123, 1.0, u_4.x, u_4.y, eps_4, false);
-            const float3 _e129 = output_of(_e128);
-            const float _e130 = resample_target(_e129);
+            uint _e106 = count;
+            count = (_e106 + 1u);
+            uint _e110 = b;
+            uint li_3 = asuint(bsh_nodes.Load(24+_e110*32));
+            uint _e114 = h;
+            const uint _e115 = pcg_hash(_e114);
+            h = _e115;
+            uint _e116 = h;
+            const float _e117 = xi_from_bits(_e116);
+            uint _e118 = h;
+            const uint _e119 = pcg_hash(_e118);
+            h = _e119;
+            uint _e120 = h;
+            const float _e121 = xi_from_bits(_e120);
+            float2 u_4 = float2(_e117, _e121);
+            float3 _e123 = r;
+            Material _e124 = m;
+            const Shaded _e129 = shade_pick_traced(li_3, x_11, n_8, _e123, _e54, _e124, 1.0, u_4.x, u_4.y, eps_4, false);
+            const float3 _e130 = output_of(_e129);
             uint _e132 = evaluations;
             evaluations = (_e132 + 1u);
-            if ((_e130 > 0.0)) {
-                float _e137 = total;
-                total = (_e137 + _e130);
+            const float _e135 = resample_target(_e130);
+            if ((_e135 > 0.0)) {
+                float3 _e138 = total;
+                total = (_e138 + _e130);
                 q = 0u;
-                uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
-                bool loop_init_3 = true;
+                uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
+                bool loop_init_2 = true;
                 while(true) {
-                    if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
-                    loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
-                    if (!loop_init_3) {
-                        uint _e157 = q;
-                        q = (_e157 + 1u);
+                    if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
+                    loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+                    if (!loop_init_2) {
+                        uint _e170 = q;
+                        q = (_e170 + 1u);
                     }
-                    loop_init_3 = false;
-                    uint _e141 = q;
-                    if ((_e141 < K)) {
+                    loop_init_2 = false;
+                    uint _e142 = q;
+                    if ((_e142 < K)) {
                     } else {
                         break;
                     }
                     {
-                        uint _e144 = hc;
-                        const uint _e145 = pcg_hash(_e144);
-                        hc = _e145;
-                        float _e146 = total;
-                        uint _e147 = hc;
-                        const float _e148 = xi_from_bits(_e147);
-                        const bool _e149 = weighted_replace(_e130, _e146, _e148);
-                        if (_e149) {
-                            uint _e150 = q;
-                            slot_light[min(uint(_e150), 7u)] = li_3;
-                            uint _e152 = q;
-                            slot_u[min(uint(_e152), 7u)] = u_4;
-                            uint _e154 = q;
-                            slot_p[min(uint(_e154), 7u)] = _e130;
+                        uint _e145 = hc;
+                        const uint _e146 = pcg_hash(_e145);
+                        hc = _e146;
+                        uint _e147 = q;
+                        const float _e149 = slot_target(_e130, _e147, K);
+                        if ((_e149 > 0.0)) {
+                            float3 _e154 = total;
+                            uint _e155 = q;
+                            const float _e157 = slot_target(_e154, _e155, K);
+                            uint _e158 = hc;
+                            const float _e159 = xi_from_bits(_e158);
+                            const bool _e160 = weighted_replace(_e149, _e157, _e159);
+                            local_2 = _e160;
+                        } else {
+                            local_2 = false;
+                        }
+                        bool _e162 = local_2;
+                        if (_e162) {
+                            uint _e163 = q;
+                            slot_light[min(uint(_e163), 7u)] = li_3;
+                            uint _e165 = q;
+                            slot_u[min(uint(_e165), 7u)] = u_4;
+                            uint _e167 = q;
+                            slot_p[min(uint(_e167), 7u)] = _e149;
                         }
                     }
                 }
             }
         }
     }
-    float _e167 = total;
-    if ((_e167 > 0.0)) {
-        uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
-        bool loop_init_4 = true;
-        while(true) {
-            if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
-            loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-            if (!loop_init_4) {
-                uint _e206 = k;
-                k = (_e206 + 1u);
-            }
-            loop_init_4 = false;
-            uint _e172 = k;
-            if ((_e172 < K)) {
-            } else {
-                break;
-            }
-            {
-                uint _e175[8] = slot_light;
-                uint _e176 = k;
-                const uint _e177 = pick_copies(_e175, _e176);
-                if ((_e177 > 0u)) {
-                    float _e180 = total;
-                    uint _e182 = k;
-                    float _e184 = slot_p[min(uint(_e182), 7u)];
-                    float w_6 = ((_e180 / (8.0 * _e184)) * float(_e177));
-                    Shaded _e189 = t;
-                    uint _e190 = k;
-                    uint _e192 = slot_light[min(uint(_e190), 7u)];
-                    float3 _e193 = r;
-                    Material _e194 = m;
-                    uint _e195 = k;
-                    float _e198 = slot_u[min(uint(_e195), 7u)].x;
-                    uint _e199 = k;
-                    float _e202 = slot_u[min(uint(_e199), 7u)].y;
-                    const Shaded _e203 = shade_pick(_e192, x_11, n_8, _e193, _e54, _e194, w_6, _e198, _e202, eps_4);
-                    const Shaded _e204 = add(_e189, _e203);
-                    t = _e204;
+    uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
+    bool loop_init_3 = true;
+    while(true) {
+        if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
+        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+        if (!loop_init_3) {
+            uint _e261 = k;
+            k = (_e261 + 1u);
+        }
+        loop_init_3 = false;
+        uint _e182 = k;
+        if ((_e182 < K)) {
+        } else {
+            break;
+        }
+        {
+            w = (0.0).xxx;
+            uint _e188 = k;
+            float _e190 = slot_p[min(uint(_e188), 7u)];
+            first = (_e190 > 0.0);
+            j = 0u;
+            uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
+            bool loop_init_4 = true;
+            while(true) {
+                if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
+                loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+                if (!loop_init_4) {
+                    uint _e238 = j;
+                    j = (_e238 + 1u);
                 }
+                loop_init_4 = false;
+                uint _e196 = j;
+                if ((_e196 < K)) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e199 = j;
+                    float _e201 = slot_p[min(uint(_e199), 7u)];
+                    if ((_e201 > 0.0)) {
+                        uint _e206 = j;
+                        uint _e208 = slot_light[min(uint(_e206), 7u)];
+                        uint _e209 = k;
+                        uint _e211 = slot_light[min(uint(_e209), 7u)];
+                        local_3 = (_e208 == _e211);
+                    } else {
+                        local_3 = false;
+                    }
+                    bool _e214 = local_3;
+                    if (_e214) {
+                        bool _e215 = first;
+                        if (_e215) {
+                            uint _e218 = j;
+                            uint _e219 = k;
+                            local_4 = (_e218 >= _e219);
+                        } else {
+                            local_4 = false;
+                        }
+                        bool _e222 = local_4;
+                        first = _e222;
+                        float3 _e223 = w;
+                        float3 _e224 = total;
+                        uint _e225 = j;
+                        const float _e227 = slot_target(_e224, _e225, K);
+                        uint _e228 = j;
+                        float _e230 = slot_p[min(uint(_e228), 7u)];
+                        uint _e232 = j;
+                        const float3 _e234 = slot_share(_e232, K);
+                        w = (_e223 + ((_e227 / _e230) * _e234));
+                    }
+                }
+            }
+            bool _e240 = first;
+            if (_e240) {
+                Shaded _e241 = t;
+                uint _e242 = k;
+                uint _e244 = slot_light[min(uint(_e242), 7u)];
+                float3 _e245 = r;
+                Material _e246 = m;
+                uint _e248 = k;
+                float _e251 = slot_u[min(uint(_e248), 7u)].x;
+                uint _e252 = k;
+                float _e255 = slot_u[min(uint(_e252), 7u)].y;
+                const Shaded _e256 = shade_pick(_e244, x_11, n_8, _e245, _e54, _e246, 1.0, _e251, _e255, eps_4);
+                float3 _e257 = w;
+                const Shaded _e258 = scaled(_e256, _e257);
+                const Shaded _e259 = add(_e241, _e258);
+                t = _e259;
             }
         }
     }
-    float3 _e210 = t.e;
-    uint _e211 = count;
-    out_tex[texel_1] = float4(_e210, float(_e211));
+    float3 _e265 = t.e;
+    uint _e266 = count;
+    out_tex[texel_1] = float4(_e265, float(_e266));
     direct_count(DIRECT_COUNT_PIXELS, 1u);
-    uint _e217 = count;
-    direct_count(DIRECT_COUNT_CANDIDATES, _e217);
-    uint _e220 = evaluations;
-    direct_count(DIRECT_COUNT_EVALUATIONS, _e220);
-    uint _e223 = rays_cast;
-    direct_count(DIRECT_COUNT_RAYS, _e223);
-    uint _e226 = nodes_visited;
-    direct_count(DIRECT_COUNT_NODES, _e226);
+    uint _e272 = count;
+    direct_count(DIRECT_COUNT_CANDIDATES, _e272);
+    uint _e275 = evaluations;
+    direct_count(DIRECT_COUNT_EVALUATIONS, _e275);
+    uint _e278 = rays_cast;
+    direct_count(DIRECT_COUNT_RAYS, _e278);
+    uint _e281 = nodes_visited;
+    direct_count(DIRECT_COUNT_NODES, _e281);
     return;
 }

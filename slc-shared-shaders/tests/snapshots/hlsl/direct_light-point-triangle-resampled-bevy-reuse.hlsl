@@ -313,29 +313,29 @@ float connection_factor(float cos_x, float d2_3, float rt2_1, float w_1)
 
 float connection_cosine(float3 x_2, float3 y, float3 n, float3 ng, float r2_1)
 {
-    bool local_7 = (bool)0;
     bool local_8 = (bool)0;
+    bool local_9 = (bool)0;
 
     float3 v_6 = (x_2 - y);
     float d2_6 = dot(v_6, v_6);
     const bool _e7 = slc_keep(r2_1, d2_6);
     if (!(!(_e7))) {
-        local_7 = !((d2_6 > 0.0));
-    } else {
-        local_7 = true;
-    }
-    bool _e16 = local_7;
-    if (_e16) {
-        return 0.0;
-    }
-    float3 w_7 = (v_6 / (sqrt(d2_6)).xxx);
-    float cos_x_1 = -(dot(n, w_7));
-    if (!((cos_x_1 <= 0.0))) {
-        local_8 = (dot(ng, w_7) >= 0.0);
+        local_8 = !((d2_6 > 0.0));
     } else {
         local_8 = true;
     }
-    bool _e32 = local_8;
+    bool _e16 = local_8;
+    if (_e16) {
+        return 0.0;
+    }
+    float3 w_8 = (v_6 / (sqrt(d2_6)).xxx);
+    float cos_x_1 = -(dot(n, w_8));
+    if (!((cos_x_1 <= 0.0))) {
+        local_9 = (dot(ng, w_8) >= 0.0);
+    } else {
+        local_9 = true;
+    }
+    bool _e32 = local_9;
     if (_e32) {
         return 0.0;
     }
@@ -383,6 +383,49 @@ bool weighted_replace(float w_3, float w_sum, float u_2)
 float resample_target(float3 c_2)
 {
     return (((c_2.x + c_2.y) + c_2.z) * 0.33333334);
+}
+
+uint naga_mod(uint lhs, uint rhs) {
+    return lhs % (rhs == 0u ? 1u : rhs);
+}
+
+float slot_target(float3 c_3, uint slot, uint k_1)
+{
+    if ((k_1 < 3u)) {
+        const float _e5 = resample_target(c_3);
+        return _e5;
+    }
+    uint j_4 = naga_mod(slot, 3u);
+    if ((j_4 == 0u)) {
+        return c_3.x;
+    }
+    if ((j_4 == 1u)) {
+        return c_3.y;
+    }
+    return c_3.z;
+}
+
+uint naga_div(uint lhs, uint rhs) {
+    return lhs / (rhs == 0u ? 1u : rhs);
+}
+
+float3 slot_share(uint slot_1, uint k_2)
+{
+    if ((k_2 < 3u)) {
+        const float _e4 = to_f32_(k_2);
+        float w_9 = (1.0 / _e4);
+        return float3(w_9, w_9, w_9);
+    }
+    uint j_5 = naga_mod(slot_1, 3u);
+    const float _e15 = to_f32_(naga_div(((k_2 + 2u) - j_5), 3u));
+    float w_10 = (1.0 / _e15);
+    if ((j_5 == 0u)) {
+        return float3(w_10, 0.0, 0.0);
+    }
+    if ((j_5 == 1u)) {
+        return float3(0.0, w_10, 0.0);
+    }
+    return float3(0.0, 0.0, w_10);
 }
 
 float grid_coordinate(uint bits_1)
@@ -436,14 +479,14 @@ float smith_root(float cos_, float alpha_1)
 
 float smith_visibility(float n_l, float n_v, float alpha_2)
 {
-    bool local_9 = (bool)0;
+    bool local_10 = (bool)0;
 
     if (!((n_l <= 0.0))) {
-        local_9 = (n_v <= 0.0);
+        local_10 = (n_v <= 0.0);
     } else {
-        local_9 = true;
+        local_10 = true;
     }
-    bool _e11 = local_9;
+    bool _e11 = local_10;
     if (_e11) {
         return 0.0;
     }
@@ -454,9 +497,9 @@ float smith_visibility(float n_l, float n_v, float alpha_2)
 
 float3 fresnel_schlick(float3 f0_, float f90_, float v_h)
 {
-    float c_9 = saturate((1.0 - v_h));
-    float c2_1 = (c_9 * c_9);
-    return (f0_ + ((float3(f90_, f90_, f90_) - f0_) * ((c2_1 * c2_1) * c_9)));
+    float c_10 = saturate((1.0 - v_h));
+    float c2_1 = (c_10 * c_10);
+    return (f0_ + ((float3(f90_, f90_, f90_) - f0_) * ((c2_1 * c2_1) * c_10)));
 }
 
 float3 specular_fresnel(float3 base, float metallic, float3 f0_d, float f90_d, float v_h_1)
@@ -468,42 +511,42 @@ float3 specular_fresnel(float3 base, float metallic, float3 f0_d, float f90_d, f
 
 bool has_specular(float metallic_1, float3 f0_d_1, float f90_d_1)
 {
-    bool local_10 = (bool)0;
     bool local_11 = (bool)0;
+    bool local_12 = (bool)0;
 
     if (!((metallic_1 > 0.0))) {
-        local_10 = (f90_d_1 > 0.0);
-    } else {
-        local_10 = true;
-    }
-    bool _e11 = local_10;
-    if (!(_e11)) {
-        local_11 = (max(max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0.0);
+        local_11 = (f90_d_1 > 0.0);
     } else {
         local_11 = true;
     }
-    bool _e23 = local_11;
+    bool _e11 = local_11;
+    if (!(_e11)) {
+        local_12 = (max(max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0.0);
+    } else {
+        local_12 = true;
+    }
+    bool _e23 = local_12;
     return _e23;
 }
 
-float channel_mean(float3 c_3)
+float channel_mean(float3 c_4)
 {
-    return (((c_3.x + c_3.y) + c_3.z) * 0.33333334);
+    return (((c_4.x + c_4.y) + c_4.z) * 0.33333334);
 }
 
 float4 receiver_lobe(float3 base_1, float metallic_2, float3 f0_d_2, float f90_d_2, float alpha_3, float n_v_1)
 {
-    bool local_12 = (bool)0;
+    bool local_13 = (bool)0;
 
     const float3 _e10 = fresnel_schlick(f0_d_2, f90_d_2, n_v_1);
     const float _e16 = channel_mean((((float3(1.0, 1.0, 1.0) - _e10) * base_1) * (1.0 - metallic_2)));
     if (!((n_v_1 <= 0.0))) {
         const bool _e22 = has_specular(metallic_2, f0_d_2, f90_d_2);
-        local_12 = !(_e22);
+        local_13 = !(_e22);
     } else {
-        local_12 = true;
+        local_13 = true;
     }
-    bool _e25 = local_12;
+    bool _e25 = local_13;
     if (_e25) {
         return float4(_e16, 0.0, alpha_3, n_v_1);
     }
@@ -597,28 +640,28 @@ float3 bevy_brdf(float3 base_2, float metallic_3, float r_4, float reflectance_1
 
 float cone_cos_of(float3 v_2, float d2_4, float a_3, float3 d)
 {
-    bool local_13 = (bool)0;
     bool local_14 = (bool)0;
+    bool local_15 = (bool)0;
 
     float vd = dot(v_2, d);
     float h2_1 = (d2_4 - (a_3 * a_3));
     if (!((h2_1 <= 0.0))) {
         if ((vd >= 0.0)) {
-            local_14 = ((vd * vd) >= h2_1);
+            local_15 = ((vd * vd) >= h2_1);
         } else {
-            local_14 = false;
+            local_15 = false;
         }
-        bool _e19 = local_14;
-        local_13 = _e19;
+        bool _e19 = local_15;
+        local_14 = _e19;
     } else {
-        local_13 = true;
+        local_14 = true;
     }
-    bool _e21 = local_13;
+    bool _e21 = local_14;
     if (_e21) {
         return 1.0;
     }
-    float3 c_10 = cross(v_2, d);
-    return min((((vd * sqrt(h2_1)) + (sqrt(dot(c_10, c_10)) * a_3)) / d2_4), 1.0);
+    float3 c_11 = cross(v_2, d);
+    return min((((vd * sqrt(h2_1)) + (sqrt(dot(c_11, c_11)) * a_3)) / d2_4), 1.0);
 }
 
 float cone_cos_toward(float3 center_, float radius, float3 p, float3 d_1)
@@ -676,67 +719,67 @@ float ray_aabb(float3 o, float3 inv_d, float3 bmin, float3 bmax, float t_max)
     return -1.0;
 }
 
-float3 triangle_normal(float3 a_4, float3 b_4, float3 c_4)
+float3 triangle_normal(float3 a_4, float3 b_4, float3 c_5)
 {
-    bool local_15 = (bool)0;
+    bool local_16 = (bool)0;
 
-    float3 n_13 = cross((b_4 - a_4), (c_4 - a_4));
+    float3 n_13 = cross((b_4 - a_4), (c_5 - a_4));
     float l2_ = dot(n_13, n_13);
     if (!(!((l2_ > 0.0)))) {
-        local_15 = !((l2_ < 3e38));
+        local_16 = !((l2_ < 3e38));
     } else {
-        local_15 = true;
+        local_16 = true;
     }
-    bool _e17 = local_15;
+    bool _e17 = local_16;
     if (_e17) {
         return float3(0.0, 0.0, 0.0);
     }
     return (n_13 / (sqrt(l2_)).xxx);
 }
 
-float ray_triangle(float3 o_1, float3 d_3, float3 a_5, float3 b_5, float3 c_5, float t_min, float t_max_1)
+float ray_triangle(float3 o_1, float3 d_3, float3 a_5, float3 b_5, float3 c_6, float t_min, float t_max_1)
 {
-    bool local_16 = (bool)0;
     bool local_17 = (bool)0;
     bool local_18 = (bool)0;
+    bool local_19 = (bool)0;
 
     float3 e1_ = (b_5 - a_5);
-    float3 e2_ = (c_5 - a_5);
+    float3 e2_ = (c_6 - a_5);
     float3 p_5 = cross(d_3, e2_);
     float det = dot(e1_, p_5);
     if ((abs(det) <= 0.0)) {
         return -1.0;
     }
     float inv = (1.0 / det);
-    float3 s_5 = (o_1 - a_5);
-    float u_3 = (dot(s_5, p_5) * inv);
+    float3 s_6 = (o_1 - a_5);
+    float u_3 = (dot(s_6, p_5) * inv);
     if (!((u_3 < 0.0))) {
-        local_16 = (u_3 > 1.0);
-    } else {
-        local_16 = true;
-    }
-    bool _e28 = local_16;
-    if (_e28) {
-        return -1.0;
-    }
-    float3 q_4 = cross(s_5, e1_);
-    float v_8 = (dot(d_3, q_4) * inv);
-    if (!((v_8 < 0.0))) {
-        local_17 = ((u_3 + v_8) > 1.0);
+        local_17 = (u_3 > 1.0);
     } else {
         local_17 = true;
     }
-    bool _e42 = local_17;
+    bool _e28 = local_17;
+    if (_e28) {
+        return -1.0;
+    }
+    float3 q_5 = cross(s_6, e1_);
+    float v_8 = (dot(d_3, q_5) * inv);
+    if (!((v_8 < 0.0))) {
+        local_18 = ((u_3 + v_8) > 1.0);
+    } else {
+        local_18 = true;
+    }
+    bool _e42 = local_18;
     if (_e42) {
         return -1.0;
     }
-    float t_3 = (dot(e2_, q_4) * inv);
+    float t_3 = (dot(e2_, q_5) * inv);
     if ((t_3 > t_min)) {
-        local_18 = (t_3 < t_max_1);
+        local_19 = (t_3 < t_max_1);
     } else {
-        local_18 = false;
+        local_19 = false;
     }
-    bool _e51 = local_18;
+    bool _e51 = local_19;
     if (_e51) {
         return t_3;
     }
@@ -756,14 +799,14 @@ float3 reproject(float4 c0_, float4 c1_, float4 c2_, float4 c3_, float3 p_2, flo
 
 bool history_matches(float3 n_4, float3 nh, float3 p_3, float oh, float d_4)
 {
-    bool local_19 = (bool)0;
+    bool local_20 = (bool)0;
 
     if ((abs((dot(nh, p_3) - oh)) <= (TEMPORAL_DEPTH_TOLERANCE * d_4))) {
-        local_19 = (dot(n_4, nh) >= TEMPORAL_NORMAL_COS);
+        local_20 = (dot(n_4, nh) >= TEMPORAL_NORMAL_COS);
     } else {
-        local_19 = false;
+        local_20 = false;
     }
-    bool _e17 = local_19;
+    bool _e17 = local_20;
     return _e17;
 }
 
@@ -959,8 +1002,8 @@ float bsh_inner_scale(float a_7, float3 v_3, float d2_5, float3 r_6, float4 rl_2
 
 bool bsh_reaches(BshNode node_3, float3 x_4, float3 r_7, float4 rl_3)
 {
-    bool local_20 = (bool)0;
     bool local_21 = (bool)0;
+    bool local_22 = (bool)0;
 
     const bool _e6 = sphere_contains_point(node_3.center_, node_3.radius, x_4);
     if (_e6) {
@@ -968,11 +1011,11 @@ bool bsh_reaches(BshNode node_3, float3 x_4, float3 r_7, float4 rl_3)
     }
     if (!((rl_3.w <= 1.0))) {
         const bool _e20 = sphere_contains_point(node_3.center_, (node_3.radius * (rl_3.w * 1.0001)), x_4);
-        local_20 = !(_e20);
+        local_21 = !(_e20);
     } else {
-        local_20 = true;
+        local_21 = true;
     }
-    bool _e23 = local_20;
+    bool _e23 = local_21;
     if (_e23) {
         return false;
     }
@@ -993,11 +1036,11 @@ bool bsh_reaches(BshNode node_3, float3 x_4, float3 r_7, float4 rl_3)
     float s_c = (_e50 * 1.001);
     float reach = (node_3.extent + (sqrt(s_c) * _e25));
     if ((d2_7 <= ((node_3.radius * node_3.radius) * s_c))) {
-        local_21 = (d2_7 <= (reach * reach));
+        local_22 = (d2_7 <= (reach * reach));
     } else {
-        local_21 = false;
+        local_22 = false;
     }
-    bool _e67 = local_21;
+    bool _e67 = local_22;
     return _e67;
 }
 
@@ -1035,44 +1078,44 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start, float3 x_5, float3 r_8, float4
 
 Connection connect_record(GpuLight l_3, float3 x_6, float3 n_5, float3 ng_1, float r2_2, float rt2_2, float w_res, float u1_3, float u2_3, float eps, bool trace_1)
 {
-    Connection c_6 = (Connection)0;
-    bool local_22 = (bool)0;
+    Connection c_7 = (Connection)0;
     bool local_23 = (bool)0;
+    bool local_24 = (bool)0;
 
-    c_6.e = (0.0).xxx;
+    c_7.e = (0.0).xxx;
     const float3 _e16 = light_point(l_3, u1_3, u2_3);
-    c_6.y = _e16;
-    float3 _e19 = c_6.y;
+    c_7.y = _e16;
+    float3 _e19 = c_7.y;
     const float _e20 = connection_cosine(x_6, _e19, n_5, ng_1, r2_2);
-    c_6.cos_x = _e20;
-    float _e22 = c_6.cos_x;
+    c_7.cos_x = _e20;
+    float _e22 = c_7.cos_x;
     if (!((_e22 <= 0.0))) {
         if (trace_1) {
-            float3 _e33 = c_6.y;
+            float3 _e33 = c_7.y;
             const bool _e34 = occluded((x_6 + (ng_1 * eps)), _e33);
-            local_23 = _e34;
+            local_24 = _e34;
         } else {
-            local_23 = false;
+            local_24 = false;
         }
-        bool _e36 = local_23;
-        local_22 = _e36;
+        bool _e36 = local_24;
+        local_23 = _e36;
     } else {
-        local_22 = true;
+        local_23 = true;
     }
-    bool _e38 = local_22;
+    bool _e38 = local_23;
     if (_e38) {
-        Connection _e39 = c_6;
+        Connection _e39 = c_7;
         const Connection connection = _e39;
         return connection;
     }
-    float3 _e41 = c_6.y;
+    float3 _e41 = c_7.y;
     float3 v_10 = (x_6 - _e41);
     float d2_8 = dot(v_10, v_10);
     const float3 _e48 = light_intensity(l_3, (v_10 / (sqrt(d2_8)).xxx));
-    float _e50 = c_6.cos_x;
+    float _e50 = c_7.cos_x;
     const float _e51 = connection_factor(_e50, d2_8, rt2_2, w_res);
-    c_6.e = (_e48 * _e51);
-    Connection _e53 = c_6;
+    c_7.e = (_e48 * _e51);
+    Connection _e53 = c_7;
     const Connection connection_1 = _e53;
     return connection_1;
 }
@@ -1115,8 +1158,8 @@ GpuLightCone ConstructGpuLightCone(float3 arg0, float arg1, float3 arg2, float a
 
 float light_range_scale(uint li_1, float3 x_8, float3 r_9, float4 rl_5)
 {
-    GpuLightCone c_11 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_1*48+0)), asfloat(light_cones.Load(li_1*48+12)), asfloat(light_cones.Load3(li_1*48+16)), asfloat(light_cones.Load(li_1*48+28)), asfloat(light_cones.Load(li_1*48+32)), asfloat(light_cones.Load(li_1*48+36)), asuint(light_cones.Load(li_1*48+40)), asuint(light_cones.Load(li_1*48+44)));
-    const float _e9 = range_scale_toward(rl_5, c_11.center_, c_11.radius, x_8, r_9);
+    GpuLightCone c_12 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_1*48+0)), asfloat(light_cones.Load(li_1*48+12)), asfloat(light_cones.Load3(li_1*48+16)), asfloat(light_cones.Load(li_1*48+28)), asfloat(light_cones.Load(li_1*48+32)), asfloat(light_cones.Load(li_1*48+36)), asuint(light_cones.Load(li_1*48+40)), asuint(light_cones.Load(li_1*48+44)));
+    const float _e9 = range_scale_toward(rl_5, c_12.center_, c_12.radius, x_8, r_9);
     return _e9;
 }
 
@@ -1126,16 +1169,16 @@ float4 surface_at(int2 texel)
     return ((p_6.w > 0.0) ? float4(p_6.xyz, 1.0) : (0.0).xxxx);
 }
 
-Shaded shade_connection(Connection c_7, float3 x_9, float3 n_7, Material m_1)
+Shaded shade_connection(Connection c_8, float3 x_9, float3 n_7, Material m_1)
 {
     Shaded s_1 = (Shaded)0;
 
-    s_1.e = c_7.e;
+    s_1.e = c_8.e;
     s_1.diffuse = (0.0).xxx;
     s_1.specular = (0.0).xxx;
-    if ((c_7.cos_x > 0.0)) {
-        const float3 _e25 = bevy_brdf(m_1.base, m_1.metallic, m_1.roughness, m_1.reflectance, n_7, m_1.v, normalize((c_7.y - x_9)));
-        s_1.diffuse = (_e25 * c_7.e);
+    if ((c_8.cos_x > 0.0)) {
+        const float3 _e25 = bevy_brdf(m_1.base, m_1.metallic, m_1.roughness, m_1.reflectance, n_7, m_1.v, normalize((c_8.y - x_9)));
+        s_1.diffuse = (_e25 * c_8.e);
     }
     Shaded _e28 = s_1;
     const Shaded shaded = _e28;
@@ -1183,20 +1226,26 @@ Shaded add(Shaded a_8, Shaded b_7)
     return shaded_2;
 }
 
-float3 output_of(Shaded s_2)
+Shaded scaled(Shaded s_2, float3 w_7)
 {
-    return (s_2.diffuse + s_2.specular);
+    const Shaded shaded_3 = ConstructShaded((s_2.e * w_7), (s_2.diffuse * w_7), (s_2.specular * w_7));
+    return shaded_3;
 }
 
-float reuse_target(GpuLight l_4, uint cells, float3 x_11, float3 n_9, Material m_3)
+float3 output_of(Shaded s_3)
 {
-    const float _e8 = grid_coordinate(cells);
-    const float _e11 = grid_coordinate((cells << 16u));
-    const Connection _e14 = connect_record(l_4, x_11, n_9, n_9, UNRANGED, UNRANGED, 1.0, _e8, _e11, 0.0, false);
-    const Shaded _e15 = shade_connection(_e14, x_11, n_9, m_3);
-    const float3 _e16 = output_of(_e15);
-    const float _e17 = resample_target(_e16);
-    return _e17;
+    return (s_3.diffuse + s_3.specular);
+}
+
+float reuse_target(uint q_3, GpuLight l_4, uint cells, float3 x_11, float3 n_9, Material m_3)
+{
+    const float _e9 = grid_coordinate(cells);
+    const float _e12 = grid_coordinate((cells << 16u));
+    const Connection _e15 = connect_record(l_4, x_11, n_9, n_9, UNRANGED, UNRANGED, 1.0, _e9, _e12, 0.0, false);
+    const Shaded _e16 = shade_connection(_e15, x_11, n_9, m_3);
+    const float3 _e17 = output_of(_e16);
+    const float _e19 = slot_target(_e17, q_3, K);
+    return _e19;
 }
 
 ReuseSurface ConstructReuseSurface(float3 arg0, float arg1, float3 arg2, uint arg3, uint arg4, uint arg5, uint arg6, uint arg7) {
@@ -1212,43 +1261,43 @@ ReuseSurface ConstructReuseSurface(float3 arg0, float arg1, float3 arg2, uint ar
     return ret;
 }
 
-ReuseSurface reuse_surface(float3 x_12, float3 n_10, Material m_4, float c_8)
+ReuseSurface reuse_surface(float3 x_12, float3 n_10, Material m_4, float c_9)
 {
     float4 _e6 = float4(m_4.base, m_4.metallic);
     float2 _e12 = float2(saturate(m_4.roughness), saturate(m_4.reflectance));
-    const ReuseSurface reusesurface = ConstructReuseSurface(x_12, c_8, n_10, (uint(round(clamp(_e6[0], 0.0, 1.0) * 255.0)) | uint(round(clamp(_e6[1], 0.0, 1.0) * 255.0)) << 8 | uint(round(clamp(_e6[2], 0.0, 1.0) * 255.0)) << 16 | uint(round(clamp(_e6[3], 0.0, 1.0) * 255.0)) << 24), (uint(round(clamp(_e12[0], 0.0, 1.0) * 65535.0)) | uint(round(clamp(_e12[1], 0.0, 1.0) * 65535.0)) << 16), 0u, 0u, 0u);
+    const ReuseSurface reusesurface = ConstructReuseSurface(x_12, c_9, n_10, (uint(round(clamp(_e6[0], 0.0, 1.0) * 255.0)) | uint(round(clamp(_e6[1], 0.0, 1.0) * 255.0)) << 8 | uint(round(clamp(_e6[2], 0.0, 1.0) * 255.0)) << 16 | uint(round(clamp(_e6[3], 0.0, 1.0) * 255.0)) << 24), (uint(round(clamp(_e12[0], 0.0, 1.0) * 65535.0)) | uint(round(clamp(_e12[1], 0.0, 1.0) * 65535.0)) << 16), 0u, 0u, 0u);
     return reusesurface;
 }
 
-Material reuse_material(ReuseSurface s_3, float3 eye)
+Material reuse_material(ReuseSurface s_4, float3 eye)
 {
-    uint _e2 = s_3.base;
+    uint _e2 = s_4.base;
     float4 b_8 = (float4(_e2 & 0xFF, _e2 >> 8 & 0xFF, _e2 >> 16 & 0xFF, _e2 >> 24) / 255.0);
-    uint _e4 = s_3.rough;
+    uint _e4 = s_4.rough;
     float2 r_12 = (float2(_e4 & 0xFFFF, _e4 >> 16) / 65535.0);
-    const Material _e13 = material_of(b_8.xyz, b_8.w, r_12.x, r_12.y, normalize((eye - s_3.x)));
+    const Material _e13 = material_of(b_8.xyz, b_8.w, r_12.x, r_12.y, normalize((eye - s_4.x)));
     const Material material_1 = _e13;
     return material_1;
 }
 
 bool same_pick(uint la, uint ca, uint lb, uint cb)
 {
-    bool local_24 = (bool)0;
     bool local_25 = (bool)0;
+    bool local_26 = (bool)0;
 
     if ((la == lb)) {
         if (!((ca == cb))) {
             uint _e14 = asuint(lights.Load(12+la*64));
-            local_25 = (_e14 != LIGHT_TRIANGLE);
+            local_26 = (_e14 != LIGHT_TRIANGLE);
         } else {
-            local_25 = true;
+            local_26 = true;
         }
-        bool _e18 = local_25;
-        local_24 = _e18;
+        bool _e18 = local_26;
+        local_25 = _e18;
     } else {
-        local_24 = false;
+        local_25 = false;
     }
-    bool _e20 = local_24;
+    bool _e20 = local_25;
     return _e20;
 }
 
@@ -1273,14 +1322,14 @@ uint reuse_domains(float3 x_13, float3 n_11, float d_6, uint h_1, inout Domain d
     uint hr = (uint)0;
     uint j_2 = 0u;
     float2 p_4 = (float2)0;
-    bool local_26 = (bool)0;
     bool local_27 = (bool)0;
     bool local_28 = (bool)0;
-    bool seen = (bool)0;
-    uint k_1 = (uint)0;
     bool local_29 = (bool)0;
+    bool seen = (bool)0;
+    uint k_3 = (uint)0;
     bool local_30 = (bool)0;
     bool local_31 = (bool)0;
+    bool local_32 = (bool)0;
 
     uint _e9 = reuse.has_history;
     if ((_e9 != 1u)) {
@@ -1334,43 +1383,43 @@ uint reuse_domains(float3 x_13, float3 n_11, float d_6, uint h_1, inout Domain d
             float2 _e63 = p_4;
             int2 t_5 = naga_f2i32(round(_e63));
             if (!((t_5.x < int(0)))) {
-                local_26 = (t_5.y < int(0));
-            } else {
-                local_26 = true;
-            }
-            bool _e76 = local_26;
-            if (!(_e76)) {
-                uint _e83 = view.width;
-                local_27 = (t_5.x >= int(_e83));
+                local_27 = (t_5.y < int(0));
             } else {
                 local_27 = true;
             }
-            bool _e87 = local_27;
-            if (!(_e87)) {
-                uint _e94 = view.height;
-                local_28 = (t_5.y >= int(_e94));
+            bool _e76 = local_27;
+            if (!(_e76)) {
+                uint _e83 = view.width;
+                local_28 = (t_5.x >= int(_e83));
             } else {
                 local_28 = true;
             }
-            bool _e98 = local_28;
+            bool _e87 = local_28;
+            if (!(_e87)) {
+                uint _e94 = view.height;
+                local_29 = (t_5.y >= int(_e94));
+            } else {
+                local_29 = true;
+            }
+            bool _e98 = local_29;
             if (_e98) {
                 continue;
             }
             uint _e103 = view.width;
             uint pixel = ((uint(t_5.y) * _e103) + uint(t_5.x));
             seen = false;
-            k_1 = 0u;
+            k_3 = 0u;
             uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
             bool loop_init_2 = true;
             while(true) {
                 if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
                 loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
                 if (!loop_init_2) {
-                    uint _e127 = k_1;
-                    k_1 = (_e127 + 1u);
+                    uint _e127 = k_3;
+                    k_3 = (_e127 + 1u);
                 }
                 loop_init_2 = false;
-                uint _e112 = k_1;
+                uint _e112 = k_3;
                 uint _e113 = nd;
                 if ((_e112 < _e113)) {
                 } else {
@@ -1379,40 +1428,40 @@ uint reuse_domains(float3 x_13, float3 n_11, float d_6, uint h_1, inout Domain d
                 {
                     bool _e115 = seen;
                     if (!(_e115)) {
-                        uint _e119 = k_1;
+                        uint _e119 = k_3;
                         uint _e122 = doms_1[min(uint(_e119), 2u)].pixel;
-                        local_29 = (_e122 == pixel);
+                        local_30 = (_e122 == pixel);
                     } else {
-                        local_29 = true;
+                        local_30 = true;
                     }
-                    bool _e125 = local_29;
+                    bool _e125 = local_30;
                     seen = _e125;
                 }
             }
-            ReuseSurface s_6 = ConstructReuseSurface(asfloat(reuse_prev.Load3(0+pixel*144+0)), asfloat(reuse_prev.Load(0+pixel*144+12)), asfloat(reuse_prev.Load3(0+pixel*144+16)), asuint(reuse_prev.Load(0+pixel*144+28)), asuint(reuse_prev.Load(0+pixel*144+32)), asuint(reuse_prev.Load(0+pixel*144+36)), asuint(reuse_prev.Load(0+pixel*144+40)), asuint(reuse_prev.Load(0+pixel*144+44)));
+            ReuseSurface s_7 = ConstructReuseSurface(asfloat(reuse_prev.Load3(0+pixel*144+0)), asfloat(reuse_prev.Load(0+pixel*144+12)), asfloat(reuse_prev.Load3(0+pixel*144+16)), asuint(reuse_prev.Load(0+pixel*144+28)), asuint(reuse_prev.Load(0+pixel*144+32)), asuint(reuse_prev.Load(0+pixel*144+36)), asuint(reuse_prev.Load(0+pixel*144+40)), asuint(reuse_prev.Load(0+pixel*144+44)));
             bool _e133 = seen;
             if (!(_e133)) {
-                local_30 = !((s_6.m > 0.0));
-            } else {
-                local_30 = true;
-            }
-            bool _e142 = local_30;
-            if (!(_e142)) {
-                const bool _e150 = history_matches(n_11, s_6.n, x_13, dot(s_6.n, s_6.x), d_6);
-                local_31 = !(_e150);
+                local_31 = !((s_7.m > 0.0));
             } else {
                 local_31 = true;
             }
-            bool _e153 = local_31;
+            bool _e142 = local_31;
+            if (!(_e142)) {
+                const bool _e150 = history_matches(n_11, s_7.n, x_13, dot(s_7.n, s_7.x), d_6);
+                local_32 = !(_e150);
+            } else {
+                local_32 = true;
+            }
+            bool _e153 = local_32;
             if (_e153) {
                 continue;
             }
             uint _e154 = nd;
             float3 _e160 = reuse.prev_eye;
-            const Material _e161 = reuse_material(s_6, _e160);
+            const Material _e161 = reuse_material(s_7, _e160);
             float _e165 = reuse.max_confidence;
             uint _e167 = j_2;
-            doms_1[min(uint(_e154), 2u)] = ConstructDomain(pixel, s_6.x, s_6.n, _e161, min(s_6.m, _e165), (_e167 == 0u));
+            doms_1[min(uint(_e154), 2u)] = ConstructDomain(pixel, s_7.x, s_7.n, _e161, min(s_7.m, _e165), (_e167 == 0u));
             uint _e171 = nd;
             nd = (_e171 + 1u);
         }
@@ -1429,20 +1478,20 @@ ReuseSlot ConstructReuseSlot(uint arg0, uint arg1, float arg2) {
     return ret;
 }
 
-ReuseSlot gris_combine(uint q_3, ReuseSlot cur, bool cur_ris, float cur_c, uint k0_, uint k1_, float3 x_14, float3 n_12, Material m_5, inout Domain doms_2[3], inout uint hs_1)
+ReuseSlot gris_combine(uint q_4, ReuseSlot cur, bool cur_ris, float cur_c, uint k0_, uint k1_, float3 x_14, float3 n_12, Material m_5, inout Domain doms_2[3], inout uint hs_1)
 {
     float w_sum_2 = 0.0;
     ReuseSlot out_ = ConstructReuseSlot(0u, 0u, 0.0);
     float out_target = 0.0;
     uint j_3 = (uint)0;
-    ReuseSlot s_4 = (ReuseSlot)0;
-    bool local_32 = (bool)0;
-    float w_in = (float)0;
+    ReuseSlot s_5 = (ReuseSlot)0;
     bool local_33 = (bool)0;
+    float w_in = (float)0;
+    bool local_34 = (bool)0;
     float own_1 = (float)0;
     float all_1 = (float)0;
-    uint k_2 = (uint)0;
-    bool local_34 = (bool)0;
+    uint k_4 = (uint)0;
+    bool local_35 = (bool)0;
 
     j_3 = k0_;
     uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
@@ -1461,81 +1510,81 @@ ReuseSlot gris_combine(uint q_3, ReuseSlot cur, bool cur_ris, float cur_c, uint 
             break;
         }
         {
-            s_4 = cur;
+            s_5 = cur;
             uint _e24 = j_3;
             if ((_e24 > k0_)) {
                 uint _e27 = j_3;
                 uint _e32 = doms_2[min(uint((_e27 - 1u)), 2u)].pixel;
-                ReuseSlot _e36 = ConstructReuseSlot(asuint(reuse_prev.Load(q_3*12+48+_e32*144+0)), asuint(reuse_prev.Load(q_3*12+48+_e32*144+4)), asfloat(reuse_prev.Load(q_3*12+48+_e32*144+8)));
-                s_4 = _e36;
+                ReuseSlot _e36 = ConstructReuseSlot(asuint(reuse_prev.Load(q_4*12+48+_e32*144+0)), asuint(reuse_prev.Load(q_4*12+48+_e32*144+4)), asfloat(reuse_prev.Load(q_4*12+48+_e32*144+8)));
+                s_5 = _e36;
             }
-            float _e38 = s_4.w;
+            float _e38 = s_5.w;
             if (!(!((_e38 > 0.0)))) {
-                uint _e46 = s_4.light;
-                local_32 = (_e46 >= ((NagaBufferLength(lights) - 0) / 64));
+                uint _e46 = s_5.light;
+                local_33 = (_e46 >= ((NagaBufferLength(lights) - 0) / 64));
             } else {
-                local_32 = true;
+                local_33 = true;
             }
-            bool _e51 = local_32;
+            bool _e51 = local_33;
             if (_e51) {
                 continue;
             }
-            uint _e54 = s_4.light;
+            uint _e54 = s_5.light;
             GpuLight _e56 = ConstructGpuLight(asfloat(lights.Load3(_e54*64+0)), asuint(lights.Load(_e54*64+12)), asfloat(lights.Load3(_e54*64+16)), asfloat(lights.Load(_e54*64+28)), asfloat(lights.Load3(_e54*64+32)), asfloat(lights.Load(_e54*64+44)), asfloat(lights.Load3(_e54*64+48)), asuint(lights.Load(_e54*64+60)));
-            uint _e58 = s_4.u;
-            const float _e59 = reuse_target(_e56, _e58, x_14, n_12, m_5);
+            uint _e58 = s_5.u;
+            const float _e59 = reuse_target(q_4, _e56, _e58, x_14, n_12, m_5);
             if (!((_e59 > 0.0))) {
                 continue;
             }
-            float _e64 = s_4.w;
+            float _e64 = s_5.w;
             w_in = _e64;
             uint _e66 = j_3;
             if ((_e66 == k0_)) {
-                local_33 = cur_ris;
+                local_34 = cur_ris;
             } else {
-                local_33 = false;
+                local_34 = false;
             }
-            bool _e71 = local_33;
+            bool _e71 = local_34;
             if (_e71) {
-                float _e73 = s_4.w;
+                float _e73 = s_5.w;
                 w_in = (_e73 / _e59);
             }
             own_1 = (cur_c * _e59);
             float _e77 = own_1;
             all_1 = _e77;
-            k_2 = k0_;
+            k_4 = k0_;
             uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
             bool loop_init_4 = true;
             while(true) {
                 if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
                 loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
                 if (!loop_init_4) {
-                    uint _e115 = k_2;
-                    k_2 = (_e115 + 1u);
+                    uint _e115 = k_4;
+                    k_4 = (_e115 + 1u);
                 }
                 loop_init_4 = false;
-                uint _e80 = k_2;
+                uint _e80 = k_4;
                 if ((_e80 < k1_)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e82 = k_2;
+                    uint _e82 = k_4;
                     float _e85 = doms_2[min(uint(_e82), 2u)].c;
-                    uint _e88 = s_4.light;
+                    uint _e88 = s_5.light;
                     GpuLight _e90 = ConstructGpuLight(asfloat(lights_prev.Load3(_e88*64+0)), asuint(lights_prev.Load(_e88*64+12)), asfloat(lights_prev.Load3(_e88*64+16)), asfloat(lights_prev.Load(_e88*64+28)), asfloat(lights_prev.Load3(_e88*64+32)), asfloat(lights_prev.Load(_e88*64+44)), asfloat(lights_prev.Load3(_e88*64+48)), asuint(lights_prev.Load(_e88*64+60)));
-                    uint _e92 = s_4.u;
-                    uint _e93 = k_2;
+                    uint _e92 = s_5.u;
+                    uint _e93 = k_4;
                     float3 _e96 = doms_2[min(uint(_e93), 2u)].x;
-                    uint _e97 = k_2;
+                    uint _e97 = k_4;
                     float3 _e100 = doms_2[min(uint(_e97), 2u)].n;
-                    uint _e101 = k_2;
+                    uint _e101 = k_4;
                     Material _e104 = doms_2[min(uint(_e101), 2u)].m;
-                    const float _e105 = reuse_target(_e90, _e92, _e96, _e100, _e104);
+                    const float _e105 = reuse_target(q_4, _e90, _e92, _e96, _e100, _e104);
                     float t_6 = (_e85 * _e105);
                     float _e107 = all_1;
                     all_1 = (_e107 + t_6);
-                    uint _e109 = k_2;
+                    uint _e109 = k_4;
                     uint _e112 = j_3;
                     if (((_e109 + 1u) == _e112)) {
                         own_1 = t_6;
@@ -1556,13 +1605,13 @@ ReuseSlot gris_combine(uint q_3, ReuseSlot cur, bool cur_ris, float cur_c, uint 
                 uint _e130 = hs_1;
                 const float _e131 = xi_from_bits(_e130);
                 const bool _e132 = weighted_replace(_e120, _e129, _e131);
-                local_34 = _e132;
+                local_35 = _e132;
             } else {
-                local_34 = false;
+                local_35 = false;
             }
-            bool _e134 = local_34;
+            bool _e134 = local_35;
             if (_e134) {
-                ReuseSlot _e135 = s_4;
+                ReuseSlot _e135 = s_5;
                 out_ = _e135;
                 out_target = _e59;
             }
@@ -1591,28 +1640,29 @@ void main(uint3 gid : SV_DispatchThreadID)
     float2 slot_u[8] = (float2[8])0;
     float slot_p[8] = (float[8])0;
     uint slot_cells[8] = (uint[8])0;
-    float total = 0.0;
+    float3 total = (0.0).xxx;
     uint count = 0u;
     uint hc = (uint)0;
     uint b = (uint)0;
     uint q = (uint)0;
-    Domain doms[3] = (Domain[3])0;
     bool local_2 = (bool)0;
+    Domain doms[3] = (Domain[3])0;
+    bool local_3 = (bool)0;
     uint hs = (uint)0;
     ReuseSlot kept[8] = (ReuseSlot[8])0;
     ReuseSlot fin[8] = (ReuseSlot[8])0;
     uint q_1 = 0u;
     bool visible[8] = (bool[8])0;
     uint k = 0u;
-    float w = (float)0;
+    float3 w = (float3)0;
     bool first = (bool)0;
     uint j = (uint)0;
-    bool local_3 = (bool)0;
     bool local_4 = (bool)0;
     bool local_5 = (bool)0;
+    bool local_6 = (bool)0;
     uint j_1 = (uint)0;
     uint q_2 = 0u;
-    bool local_6 = (bool)0;
+    bool local_7 = (bool)0;
 
     uint _e4 = view.width;
     if (!((gid.x >= _e4))) {
@@ -1672,54 +1722,54 @@ void main(uint3 gid : SV_DispatchThreadID)
     const uint _e123 = pick_stream(_e122);
     h = _e123;
     hc = _e122;
-    const uint _e144 = bsh_first(BSH);
-    float3 _e145 = r;
-    const uint _e146 = bsh_next_leaf_lobe(BSH, _e144, x_17, _e145, _e99);
-    b = _e146;
+    const uint _e145 = bsh_first(BSH);
+    float3 _e146 = r;
+    const uint _e147 = bsh_next_leaf_lobe(BSH, _e145, x_17, _e146, _e99);
+    b = _e147;
     uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
     bool loop_init_5 = true;
     while(true) {
         if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
         loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
         if (!loop_init_5) {
-            uint _e207 = b;
-            uint _e210 = asuint(bsh_nodes.Load(20+_e207*32));
-            float3 _e211 = r;
-            const uint _e212 = bsh_next_leaf_lobe(BSH, _e210, x_17, _e211, _e99);
-            b = _e212;
+            uint _e220 = b;
+            uint _e223 = asuint(bsh_nodes.Load(20+_e220*32));
+            float3 _e224 = r;
+            const uint _e225 = bsh_next_leaf_lobe(BSH, _e223, x_17, _e224, _e99);
+            b = _e225;
         }
         loop_init_5 = false;
-        uint _e148 = b;
-        if ((_e148 != BSH_NONE)) {
+        uint _e149 = b;
+        if ((_e149 != BSH_NONE)) {
         } else {
             break;
         }
         {
-            uint _e151 = count;
-            count = (_e151 + 1u);
-            uint _e155 = b;
-            uint li_3 = asuint(bsh_nodes.Load(24+_e155*32));
-            uint _e159 = h;
-            const uint _e160 = pcg_hash(_e159);
-            h = _e160;
+            uint _e152 = count;
+            count = (_e152 + 1u);
+            uint _e156 = b;
+            uint li_3 = asuint(bsh_nodes.Load(24+_e156*32));
+            uint _e160 = h;
+            const uint _e161 = pcg_hash(_e160);
+            h = _e161;
             uint h1_1 = h;
-            uint _e162 = h;
-            const uint _e163 = pcg_hash(_e162);
-            h = _e163;
-            uint _e164 = h;
-            const uint _e165 = grid_cells(h1_1, _e164);
-            const float _e166 = grid_coordinate(h1_1);
-            uint _e167 = h;
-            const float _e168 = grid_coordinate(_e167);
-            float2 u_4 = float2(_e166, _e168);
-            float3 _e170 = r;
-            Material _e171 = m;
-            const Shaded _e176 = shade_pick_traced(li_3, x_17, n_15, _e170, _e99, _e171, 1.0, u_4.x, u_4.y, eps_3, false);
-            const float3 _e177 = output_of(_e176);
-            const float _e178 = resample_target(_e177);
-            if ((_e178 > 0.0)) {
-                float _e181 = total;
-                total = (_e181 + _e178);
+            uint _e163 = h;
+            const uint _e164 = pcg_hash(_e163);
+            h = _e164;
+            uint _e165 = h;
+            const uint _e166 = grid_cells(h1_1, _e165);
+            const float _e167 = grid_coordinate(h1_1);
+            uint _e168 = h;
+            const float _e169 = grid_coordinate(_e168);
+            float2 u_4 = float2(_e167, _e169);
+            float3 _e171 = r;
+            Material _e172 = m;
+            const Shaded _e177 = shade_pick_traced(li_3, x_17, n_15, _e171, _e99, _e172, 1.0, u_4.x, u_4.y, eps_3, false);
+            const float3 _e178 = output_of(_e177);
+            const float _e179 = resample_target(_e178);
+            if ((_e179 > 0.0)) {
+                float3 _e182 = total;
+                total = (_e182 + _e178);
                 q = 0u;
                 uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
                 bool loop_init_6 = true;
@@ -1727,93 +1777,107 @@ void main(uint3 gid : SV_DispatchThreadID)
                     if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
                     loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
                     if (!loop_init_6) {
-                        uint _e203 = q;
-                        q = (_e203 + 1u);
+                        uint _e216 = q;
+                        q = (_e216 + 1u);
                     }
                     loop_init_6 = false;
-                    uint _e185 = q;
-                    if ((_e185 < K)) {
+                    uint _e186 = q;
+                    if ((_e186 < K)) {
                     } else {
                         break;
                     }
                     {
-                        uint _e188 = hc;
-                        const uint _e189 = pcg_hash(_e188);
-                        hc = _e189;
-                        float _e190 = total;
-                        uint _e191 = hc;
-                        const float _e192 = xi_from_bits(_e191);
-                        const bool _e193 = weighted_replace(_e178, _e190, _e192);
-                        if (_e193) {
-                            uint _e194 = q;
-                            slot_light[min(uint(_e194), 7u)] = li_3;
-                            uint _e196 = q;
-                            slot_u[min(uint(_e196), 7u)] = u_4;
-                            uint _e198 = q;
-                            slot_p[min(uint(_e198), 7u)] = _e178;
-                            uint _e200 = q;
-                            slot_cells[min(uint(_e200), 7u)] = _e165;
+                        uint _e189 = hc;
+                        const uint _e190 = pcg_hash(_e189);
+                        hc = _e190;
+                        uint _e191 = q;
+                        const float _e193 = slot_target(_e178, _e191, K);
+                        if ((_e193 > 0.0)) {
+                            float3 _e198 = total;
+                            uint _e199 = q;
+                            const float _e201 = slot_target(_e198, _e199, K);
+                            uint _e202 = hc;
+                            const float _e203 = xi_from_bits(_e202);
+                            const bool _e204 = weighted_replace(_e193, _e201, _e203);
+                            local_2 = _e204;
+                        } else {
+                            local_2 = false;
+                        }
+                        bool _e206 = local_2;
+                        if (_e206) {
+                            uint _e207 = q;
+                            slot_light[min(uint(_e207), 7u)] = li_3;
+                            uint _e209 = q;
+                            slot_u[min(uint(_e209), 7u)] = u_4;
+                            uint _e211 = q;
+                            slot_p[min(uint(_e211), 7u)] = _e193;
+                            uint _e213 = q;
+                            slot_cells[min(uint(_e213), 7u)] = _e166;
                         }
                     }
                 }
             }
         }
     }
-    uint _e216 = view.width;
-    uint pixel_1 = ((gid.y * _e216) + gid.x);
-    float3 _e223 = view.eye;
-    const uint _e227 = reuse_stream(_e122, 0u);
-    const uint _e228 = reuse_domains(x_17, n_15, length((_e223 - x_17)), _e227, doms);
-    if ((_e228 > 0u)) {
-        bool _e235 = doms[0].temporal;
-        local_2 = _e235;
+    uint _e229 = view.width;
+    uint pixel_1 = ((gid.y * _e229) + gid.x);
+    float3 _e236 = view.eye;
+    const uint _e240 = reuse_stream(_e122, 0u);
+    const uint _e241 = reuse_domains(x_17, n_15, length((_e236 - x_17)), _e240, doms);
+    if ((_e241 > 0u)) {
+        bool _e248 = doms[0].temporal;
+        local_3 = _e248;
     } else {
-        local_2 = false;
+        local_3 = false;
     }
-    bool own_history = local_2;
+    bool own_history = local_3;
     uint first_1 = (own_history ? 1u : 0u);
-    float _e243 = doms[0].c;
-    float confidence = (1.0 + (own_history ? _e243 : 0.0));
-    const uint _e249 = reuse_stream(_e122, 1u);
-    hs = _e249;
+    float _e256 = doms[0].c;
+    float confidence = (1.0 + (own_history ? _e256 : 0.0));
+    const uint _e262 = reuse_stream(_e122, 1u);
+    hs = _e262;
     uint2 loop_bound_9 = uint2(4294967295u, 4294967295u);
     bool loop_init_7 = true;
     while(true) {
         if (all(loop_bound_9 == uint2(0u, 0u))) { break; }
         loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
         if (!loop_init_7) {
-            uint _e290 = q_1;
-            q_1 = (_e290 + 1u);
+            uint _e313 = q_1;
+            q_1 = (_e313 + 1u);
         }
         loop_init_7 = false;
-        uint _e255 = q_1;
-        if ((_e255 < K)) {
+        uint _e268 = q_1;
+        if ((_e268 < K)) {
         } else {
             break;
         }
         {
-            uint _e258 = q_1;
-            uint _e260 = q_1;
-            uint _e261 = q_1;
-            uint _e263 = slot_light[min(uint(_e261), 7u)];
-            uint _e264 = q_1;
-            uint _e266 = slot_cells[min(uint(_e264), 7u)];
-            float _e267 = total;
-            Material _e272 = m;
-            const ReuseSlot _e273 = gris_combine(_e260, ConstructReuseSlot(_e263, _e266, _e267), true, 1.0, 0u, first_1, x_17, n_15, _e272, doms, hs);
-            kept[min(uint(_e258), 7u)] = _e273;
+            uint _e271 = q_1;
+            uint _e273 = q_1;
             uint _e274 = q_1;
-            uint _e276 = q_1;
-            ReuseSlot _e278 = kept[min(uint(_e276), 7u)];
-            fin[min(uint(_e274), 7u)] = _e278;
-            if ((_e228 > first_1)) {
-                uint _e280 = q_1;
-                uint _e282 = q_1;
-                uint _e283 = q_1;
-                ReuseSlot _e285 = kept[min(uint(_e283), 7u)];
-                Material _e287 = m;
-                const ReuseSlot _e288 = gris_combine(_e282, _e285, false, confidence, first_1, _e228, x_17, n_15, _e287, doms, hs);
-                fin[min(uint(_e280), 7u)] = _e288;
+            uint _e276 = slot_light[min(uint(_e274), 7u)];
+            uint _e277 = q_1;
+            uint _e279 = slot_cells[min(uint(_e277), 7u)];
+            float3 _e280 = total;
+            uint _e281 = q_1;
+            const float _e283 = slot_target(_e280, _e281, K);
+            uint _e284 = q_1;
+            float _e286 = slot_p[min(uint(_e284), 7u)];
+            Material _e295 = m;
+            const ReuseSlot _e296 = gris_combine(_e273, ConstructReuseSlot(_e276, _e279, ((_e286 > 0.0) ? _e283 : 0.0)), true, 1.0, 0u, first_1, x_17, n_15, _e295, doms, hs);
+            kept[min(uint(_e271), 7u)] = _e296;
+            uint _e297 = q_1;
+            uint _e299 = q_1;
+            ReuseSlot _e301 = kept[min(uint(_e299), 7u)];
+            fin[min(uint(_e297), 7u)] = _e301;
+            if ((_e241 > first_1)) {
+                uint _e303 = q_1;
+                uint _e305 = q_1;
+                uint _e306 = q_1;
+                ReuseSlot _e308 = kept[min(uint(_e306), 7u)];
+                Material _e310 = m;
+                const ReuseSlot _e311 = gris_combine(_e305, _e308, false, confidence, first_1, _e241, x_17, n_15, _e310, doms, hs);
+                fin[min(uint(_e303), 7u)] = _e311;
             }
         }
     }
@@ -1823,21 +1887,24 @@ void main(uint3 gid : SV_DispatchThreadID)
         if (all(loop_bound_10 == uint2(0u, 0u))) { break; }
         loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
         if (!loop_init_8) {
-            uint _e426 = k;
-            k = (_e426 + 1u);
+            uint _e460 = k;
+            k = (_e460 + 1u);
         }
         loop_init_8 = false;
-        uint _e295 = k;
-        if ((_e295 < K)) {
+        uint _e318 = k;
+        if ((_e318 < K)) {
         } else {
             break;
         }
         {
-            uint _e298 = k;
-            float _e301 = fin[min(uint(_e298), 7u)].w;
-            w = _e301;
-            float _e303 = w;
-            first = (_e303 > 0.0);
+            uint _e321 = k;
+            float _e324 = fin[min(uint(_e321), 7u)].w;
+            uint _e325 = k;
+            const float3 _e327 = slot_share(_e325, K);
+            w = (_e324 * _e327);
+            uint _e330 = k;
+            float _e333 = fin[min(uint(_e330), 7u)].w;
+            first = (_e333 > 0.0);
             j = 0u;
             uint2 loop_bound_11 = uint2(4294967295u, 4294967295u);
             bool loop_init_9 = true;
@@ -1845,109 +1912,112 @@ void main(uint3 gid : SV_DispatchThreadID)
                 if (all(loop_bound_11 == uint2(0u, 0u))) { break; }
                 loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
                 if (!loop_init_9) {
-                    uint _e361 = j;
-                    j = (_e361 + 1u);
+                    uint _e395 = j;
+                    j = (_e395 + 1u);
                 }
                 loop_init_9 = false;
-                uint _e309 = j;
-                if ((_e309 < K)) {
+                uint _e339 = j;
+                if ((_e339 < K)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e312 = j;
-                    uint _e313 = k;
-                    if ((_e312 != _e313)) {
-                        uint _e317 = j;
-                        float _e320 = fin[min(uint(_e317), 7u)].w;
-                        local_3 = (_e320 > 0.0);
-                    } else {
-                        local_3 = false;
-                    }
-                    bool _e324 = local_3;
-                    if (_e324) {
-                        uint _e327 = j;
-                        uint _e330 = fin[min(uint(_e327), 7u)].light;
-                        uint _e331 = j;
-                        uint _e334 = fin[min(uint(_e331), 7u)].u;
-                        uint _e335 = k;
-                        uint _e338 = fin[min(uint(_e335), 7u)].light;
-                        uint _e339 = k;
-                        uint _e342 = fin[min(uint(_e339), 7u)].u;
-                        const bool _e343 = same_pick(_e330, _e334, _e338, _e342);
-                        local_4 = _e343;
+                    uint _e342 = j;
+                    uint _e343 = k;
+                    if ((_e342 != _e343)) {
+                        uint _e347 = j;
+                        float _e350 = fin[min(uint(_e347), 7u)].w;
+                        local_4 = (_e350 > 0.0);
                     } else {
                         local_4 = false;
                     }
-                    bool _e345 = local_4;
-                    if (_e345) {
-                        bool _e346 = first;
-                        if (_e346) {
-                            uint _e349 = j;
-                            uint _e350 = k;
-                            local_5 = (_e349 > _e350);
+                    bool _e354 = local_4;
+                    if (_e354) {
+                        uint _e357 = j;
+                        uint _e360 = fin[min(uint(_e357), 7u)].light;
+                        uint _e361 = j;
+                        uint _e364 = fin[min(uint(_e361), 7u)].u;
+                        uint _e365 = k;
+                        uint _e368 = fin[min(uint(_e365), 7u)].light;
+                        uint _e369 = k;
+                        uint _e372 = fin[min(uint(_e369), 7u)].u;
+                        const bool _e373 = same_pick(_e360, _e364, _e368, _e372);
+                        local_5 = _e373;
+                    } else {
+                        local_5 = false;
+                    }
+                    bool _e375 = local_5;
+                    if (_e375) {
+                        bool _e376 = first;
+                        if (_e376) {
+                            uint _e379 = j;
+                            uint _e380 = k;
+                            local_6 = (_e379 > _e380);
                         } else {
-                            local_5 = false;
+                            local_6 = false;
                         }
-                        bool _e353 = local_5;
-                        first = _e353;
-                        float _e354 = w;
-                        uint _e355 = j;
-                        float _e358 = fin[min(uint(_e355), 7u)].w;
-                        w = (_e354 + _e358);
+                        bool _e383 = local_6;
+                        first = _e383;
+                        float3 _e384 = w;
+                        uint _e385 = j;
+                        float _e388 = fin[min(uint(_e385), 7u)].w;
+                        uint _e389 = j;
+                        const float3 _e391 = slot_share(_e389, K);
+                        w = (_e384 + (_e388 * _e391));
                     }
                 }
             }
-            bool _e363 = first;
-            if (_e363) {
-                uint _e365 = k;
-                uint _e368 = fin[min(uint(_e365), 7u)].light;
-                GpuLight _e370 = ConstructGpuLight(asfloat(lights.Load3(_e368*64+0)), asuint(lights.Load(_e368*64+12)), asfloat(lights.Load3(_e368*64+16)), asfloat(lights.Load(_e368*64+28)), asfloat(lights.Load3(_e368*64+32)), asfloat(lights.Load(_e368*64+44)), asfloat(lights.Load3(_e368*64+48)), asuint(lights.Load(_e368*64+60)));
-                float _e373 = w;
-                uint _e376 = k;
-                uint _e379 = fin[min(uint(_e376), 7u)].u;
-                const float _e380 = grid_coordinate(_e379);
-                uint _e381 = k;
-                uint _e384 = fin[min(uint(_e381), 7u)].u;
-                const float _e387 = grid_coordinate((_e384 << 16u));
-                const Connection _e389 = connect_record(_e370, x_17, n_15, n_15, UNRANGED, UNRANGED, (_e373 / 8.0), _e380, _e387, eps_3, true);
-                Material _e390 = m;
-                const Shaded _e391 = shade_connection(_e389, x_17, n_15, _e390);
-                Shaded _e392 = t;
-                const Shaded _e393 = add(_e392, _e391);
-                t = _e393;
-                uint _e394 = k;
-                j_1 = _e394;
+            bool _e397 = first;
+            if (_e397) {
+                uint _e399 = k;
+                uint _e402 = fin[min(uint(_e399), 7u)].light;
+                GpuLight _e404 = ConstructGpuLight(asfloat(lights.Load3(_e402*64+0)), asuint(lights.Load(_e402*64+12)), asfloat(lights.Load3(_e402*64+16)), asfloat(lights.Load(_e402*64+28)), asfloat(lights.Load3(_e402*64+32)), asfloat(lights.Load(_e402*64+44)), asfloat(lights.Load3(_e402*64+48)), asuint(lights.Load(_e402*64+60)));
+                uint _e408 = k;
+                uint _e411 = fin[min(uint(_e408), 7u)].u;
+                const float _e412 = grid_coordinate(_e411);
+                uint _e413 = k;
+                uint _e416 = fin[min(uint(_e413), 7u)].u;
+                const float _e419 = grid_coordinate((_e416 << 16u));
+                const Connection _e421 = connect_record(_e404, x_17, n_15, n_15, UNRANGED, UNRANGED, 1.0, _e412, _e419, eps_3, true);
+                Material _e422 = m;
+                const Shaded _e423 = shade_connection(_e421, x_17, n_15, _e422);
+                Shaded _e424 = t;
+                float3 _e425 = w;
+                const Shaded _e426 = scaled(_e423, _e425);
+                const Shaded _e427 = add(_e424, _e426);
+                t = _e427;
+                uint _e428 = k;
+                j_1 = _e428;
                 uint2 loop_bound_12 = uint2(4294967295u, 4294967295u);
                 bool loop_init_10 = true;
                 while(true) {
                     if (all(loop_bound_12 == uint2(0u, 0u))) { break; }
                     loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
                     if (!loop_init_10) {
-                        uint _e423 = j_1;
-                        j_1 = (_e423 + 1u);
+                        uint _e457 = j_1;
+                        j_1 = (_e457 + 1u);
                     }
                     loop_init_10 = false;
-                    uint _e396 = j_1;
-                    if ((_e396 < K)) {
+                    uint _e430 = j_1;
+                    if ((_e430 < K)) {
                     } else {
                         break;
                     }
                     {
-                        uint _e399 = j_1;
-                        uint _e402 = fin[min(uint(_e399), 7u)].light;
-                        uint _e403 = j_1;
-                        uint _e406 = fin[min(uint(_e403), 7u)].u;
-                        uint _e407 = k;
-                        uint _e410 = fin[min(uint(_e407), 7u)].light;
-                        uint _e411 = k;
-                        uint _e414 = fin[min(uint(_e411), 7u)].u;
-                        const bool _e415 = same_pick(_e402, _e406, _e410, _e414);
-                        if (_e415) {
-                            uint _e416 = j_1;
-                            const float3 _e418 = output_of(_e391);
-                            const float _e419 = resample_target(_e418);
-                            visible[min(uint(_e416), 7u)] = (_e419 > 0.0);
+                        uint _e433 = j_1;
+                        uint _e436 = fin[min(uint(_e433), 7u)].light;
+                        uint _e437 = j_1;
+                        uint _e440 = fin[min(uint(_e437), 7u)].u;
+                        uint _e441 = k;
+                        uint _e444 = fin[min(uint(_e441), 7u)].light;
+                        uint _e445 = k;
+                        uint _e448 = fin[min(uint(_e445), 7u)].u;
+                        const bool _e449 = same_pick(_e436, _e440, _e444, _e448);
+                        if (_e449) {
+                            uint _e450 = j_1;
+                            const float3 _e452 = output_of(_e423);
+                            const float _e453 = resample_target(_e452);
+                            visible[min(uint(_e450), 7u)] = (_e453 > 0.0);
                         }
                     }
                 }
@@ -1960,45 +2030,45 @@ void main(uint3 gid : SV_DispatchThreadID)
         if (all(loop_bound_13 == uint2(0u, 0u))) { break; }
         loop_bound_13 -= uint2(loop_bound_13.y == 0u, 1u);
         if (!loop_init_11) {
-            uint _e467 = q_2;
-            q_2 = (_e467 + 1u);
+            uint _e501 = q_2;
+            q_2 = (_e501 + 1u);
         }
         loop_init_11 = false;
-        uint _e430 = q_2;
-        if ((_e430 < K)) {
+        uint _e464 = q_2;
+        if ((_e464 < K)) {
         } else {
             break;
         }
         {
-            uint _e435 = reuse.visibility;
-            if (!((_e435 == 0u))) {
-                uint _e441 = q_2;
-                bool _e443 = visible[min(uint(_e441), 7u)];
-                local_6 = _e443;
+            uint _e469 = reuse.visibility;
+            if (!((_e469 == 0u))) {
+                uint _e475 = q_2;
+                bool _e477 = visible[min(uint(_e475), 7u)];
+                local_7 = _e477;
             } else {
-                local_6 = true;
+                local_7 = true;
             }
-            bool keep = local_6;
-            uint _e449 = q_2;
-            uint _e451 = q_2;
-            uint _e454 = kept[min(uint(_e451), 7u)].light;
-            uint _e455 = q_2;
-            uint _e458 = kept[min(uint(_e455), 7u)].u;
-            uint _e459 = q_2;
-            float _e462 = kept[min(uint(_e459), 7u)].w;
+            bool keep = local_7;
+            uint _e483 = q_2;
+            uint _e485 = q_2;
+            uint _e488 = kept[min(uint(_e485), 7u)].light;
+            uint _e489 = q_2;
+            uint _e492 = kept[min(uint(_e489), 7u)].u;
+            uint _e493 = q_2;
+            float _e496 = kept[min(uint(_e493), 7u)].w;
             {
-                ReuseSlot _value4 = ConstructReuseSlot(_e454, _e458, (keep ? _e462 : 0.0));
-                reuse_next.Store(_e449*12+48+pixel_1*144+0, asuint(_value4.light));
-                reuse_next.Store(_e449*12+48+pixel_1*144+4, asuint(_value4.u));
-                reuse_next.Store(_e449*12+48+pixel_1*144+8, asuint(_value4.w));
+                ReuseSlot _value4 = ConstructReuseSlot(_e488, _e492, (keep ? _e496 : 0.0));
+                reuse_next.Store(_e483*12+48+pixel_1*144+0, asuint(_value4.light));
+                reuse_next.Store(_e483*12+48+pixel_1*144+4, asuint(_value4.u));
+                reuse_next.Store(_e483*12+48+pixel_1*144+8, asuint(_value4.w));
             }
         }
     }
-    Material _e472 = m;
-    float _e475 = reuse.max_confidence;
-    const ReuseSurface _e477 = reuse_surface(x_17, n_15, _e472, min(confidence, _e475));
+    Material _e506 = m;
+    float _e509 = reuse.max_confidence;
+    const ReuseSurface _e511 = reuse_surface(x_17, n_15, _e506, min(confidence, _e509));
     {
-        ReuseSurface _value2 = _e477;
+        ReuseSurface _value2 = _e511;
         reuse_next.Store3(0+pixel_1*144+0, asuint(_value2.x));
         reuse_next.Store(0+pixel_1*144+12, asuint(_value2.m));
         reuse_next.Store3(0+pixel_1*144+16, asuint(_value2.n));
@@ -2008,9 +2078,9 @@ void main(uint3 gid : SV_DispatchThreadID)
         reuse_next.Store(0+pixel_1*144+40, asuint(_value2.pad1_));
         reuse_next.Store(0+pixel_1*144+44, asuint(_value2.pad2_));
     }
-    float3 _e480 = t.diffuse;
-    float3 _e482 = t.specular;
-    uint _e484 = count;
-    out_tex[texel_1] = float4((_e480 + _e482), float(_e484));
+    float3 _e514 = t.diffuse;
+    float3 _e516 = t.specular;
+    uint _e518 = count;
+    out_tex[texel_1] = float4((_e514 + _e516), float(_e518));
     return;
 }

@@ -258,11 +258,11 @@ float connection_factor(
     float cos_x,
     float d2_3,
     float rt2_1,
-    float w
+    float w_1
 ) {
     float _e4 = inverse_square(d2_3);
     float _e6 = slc_weight(rt2_1, d2_3);
-    return ((cos_x * _e4) * _e6) * w;
+    return ((cos_x * _e4) * _e6) * w_1;
 }
 
 float connection_cosine(
@@ -272,28 +272,28 @@ float connection_cosine(
     metal::float3 ng,
     float r2_1
 ) {
-    bool local_2 = {};
-    bool local_3 = {};
+    bool local_5 = {};
+    bool local_6 = {};
     metal::float3 v_3 = x_2 - y;
     float d2_6 = metal::dot(v_3, v_3);
     bool _e7 = slc_keep(r2_1, d2_6);
     if (!(!(_e7))) {
-        local_2 = !((d2_6 > 0.0));
+        local_5 = !((d2_6 > 0.0));
     } else {
-        local_2 = true;
+        local_5 = true;
     }
-    bool _e16 = local_2;
+    bool _e16 = local_5;
     if (_e16) {
         return 0.0;
     }
-    metal::float3 w_5 = v_3 / metal::float3(metal::sqrt(d2_6));
-    float cos_x_1 = -(metal::dot(n, w_5));
+    metal::float3 w_7 = v_3 / metal::float3(metal::sqrt(d2_6));
+    float cos_x_1 = -(metal::dot(n, w_7));
     if (!((cos_x_1 <= 0.0))) {
-        local_3 = metal::dot(ng, w_5) >= 0.0;
+        local_6 = metal::dot(ng, w_7) >= 0.0;
     } else {
-        local_3 = true;
+        local_6 = true;
     }
-    bool _e32 = local_3;
+    bool _e32 = local_6;
     if (_e32) {
         return 0.0;
     }
@@ -337,17 +337,65 @@ float bsh_range_bound(
 }
 
 bool weighted_replace(
-    float w_1,
+    float w_2,
     float w_sum,
     float u_2
 ) {
-    return (u_2 * w_sum) < w_1;
+    return (u_2 * w_sum) < w_2;
 }
 
 float resample_target(
     metal::float3 c_1
 ) {
     return ((c_1.x + c_1.y) + c_1.z) * 0.33333334;
+}
+
+uint naga_mod(uint lhs, uint rhs) {
+    return lhs % metal::select(rhs, 1u, rhs == 0u);
+}
+
+float slot_target(
+    metal::float3 c_2,
+    uint slot,
+    uint k_1
+) {
+    if (k_1 < 3u) {
+        float _e5 = resample_target(c_2);
+        return _e5;
+    }
+    uint j_1 = naga_mod(slot, 3u);
+    if (j_1 == 0u) {
+        return c_2.x;
+    }
+    if (j_1 == 1u) {
+        return c_2.y;
+    }
+    return c_2.z;
+}
+
+uint naga_div(uint lhs, uint rhs) {
+    return lhs / metal::select(rhs, 1u, rhs == 0u);
+}
+
+metal::float3 slot_share(
+    uint slot_1,
+    uint k_2
+) {
+    if (k_2 < 3u) {
+        float _e4 = to_f32_(k_2);
+        float w_8 = 1.0 / _e4;
+        return metal::float3(w_8, w_8, w_8);
+    }
+    uint j_2 = naga_mod(slot_1, 3u);
+    float _e15 = to_f32_(naga_div((k_2 + 2u) - j_2, 3u));
+    float w_9 = 1.0 / _e15;
+    if (j_2 == 0u) {
+        return metal::float3(w_9, 0.0, 0.0);
+    }
+    if (j_2 == 1u) {
+        return metal::float3(0.0, w_9, 0.0);
+    }
+    return metal::float3(0.0, 0.0, w_9);
 }
 
 float smith_root(
@@ -399,27 +447,27 @@ float cone_cos_of(
     float a_2,
     metal::float3 d
 ) {
-    bool local_4 = {};
-    bool local_5 = {};
+    bool local_7 = {};
+    bool local_8 = {};
     float vd = metal::dot(v, d);
     float h2_ = d2_4 - (a_2 * a_2);
     if (!((h2_ <= 0.0))) {
         if (vd >= 0.0) {
-            local_5 = (vd * vd) >= h2_;
+            local_8 = (vd * vd) >= h2_;
         } else {
-            local_5 = false;
+            local_8 = false;
         }
-        bool _e19 = local_5;
-        local_4 = _e19;
+        bool _e19 = local_8;
+        local_7 = _e19;
     } else {
-        local_4 = true;
+        local_7 = true;
     }
-    bool _e21 = local_4;
+    bool _e21 = local_7;
     if (_e21) {
         return 1.0;
     }
-    metal::float3 c_5 = metal::cross(v, d);
-    return metal::min(((vd * metal::sqrt(h2_)) + (metal::sqrt(metal::dot(c_5, c_5)) * a_2)) / d2_4, 1.0);
+    metal::float3 c_6 = metal::cross(v, d);
+    return metal::min(((vd * metal::sqrt(h2_)) + (metal::sqrt(metal::dot(c_6, c_6)) * a_2)) / d2_4, 1.0);
 }
 
 float cone_cos_toward(
@@ -501,50 +549,50 @@ float ray_triangle(
     metal::float3 d_3,
     metal::float3 a_3,
     metal::float3 b_3,
-    metal::float3 c_2,
+    metal::float3 c_3,
     float t_min,
     float t_max_1
 ) {
-    bool local_6 = {};
-    bool local_7 = {};
-    bool local_8 = {};
+    bool local_9 = {};
+    bool local_10 = {};
+    bool local_11 = {};
     metal::float3 e1_ = b_3 - a_3;
-    metal::float3 e2_ = c_2 - a_3;
+    metal::float3 e2_ = c_3 - a_3;
     metal::float3 p_2 = metal::cross(d_3, e2_);
     float det = metal::dot(e1_, p_2);
     if (metal::abs(det) <= 0.0) {
         return -1.0;
     }
     float inv = 1.0 / det;
-    metal::float3 s_3 = o_1 - a_3;
-    float u_3 = metal::dot(s_3, p_2) * inv;
+    metal::float3 s_4 = o_1 - a_3;
+    float u_3 = metal::dot(s_4, p_2) * inv;
     if (!((u_3 < 0.0))) {
-        local_6 = u_3 > 1.0;
+        local_9 = u_3 > 1.0;
     } else {
-        local_6 = true;
+        local_9 = true;
     }
-    bool _e28 = local_6;
+    bool _e28 = local_9;
     if (_e28) {
         return -1.0;
     }
-    metal::float3 q_1 = metal::cross(s_3, e1_);
+    metal::float3 q_1 = metal::cross(s_4, e1_);
     float v_5 = metal::dot(d_3, q_1) * inv;
     if (!((v_5 < 0.0))) {
-        local_7 = (u_3 + v_5) > 1.0;
+        local_10 = (u_3 + v_5) > 1.0;
     } else {
-        local_7 = true;
+        local_10 = true;
     }
-    bool _e42 = local_7;
+    bool _e42 = local_10;
     if (_e42) {
         return -1.0;
     }
     float t_3 = metal::dot(e2_, q_1) * inv;
     if (t_3 > t_min) {
-        local_8 = t_3 < t_max_1;
+        local_11 = t_3 < t_max_1;
     } else {
-        local_8 = false;
+        local_11 = false;
     }
-    bool _e51 = local_8;
+    bool _e51 = local_11;
     if (_e51) {
         return t_3;
     }
@@ -553,14 +601,14 @@ float ray_triangle(
 
 metal::float3 light_intensity(
     GpuLight l,
-    metal::float3 w_2
+    metal::float3 w_3
 ) {
     switch(l.kind) {
         case 0u: {
             return l.intensity;
         }
         case 1u: {
-            float _e11 = spot_falloff(metal::dot(l.p1_, w_2), l.a, l.b, l.p2_[0]);
+            float _e11 = spot_falloff(metal::dot(l.p1_, w_3), l.a, l.b, l.p2_[0]);
             return l.intensity * _e11;
         }
         default: {
@@ -739,19 +787,19 @@ bool bsh_reaches(
     metal::float3 r_4,
     metal::float4 rl_3
 ) {
-    bool local_9 = {};
-    bool local_10 = {};
+    bool local_12 = {};
+    bool local_13 = {};
     bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_4);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
         bool _e20 = sphere_contains_point(node_3.center, node_3.radius * (rl_3.w * 1.0001), x_4);
-        local_9 = !(_e20);
+        local_12 = !(_e20);
     } else {
-        local_9 = true;
+        local_12 = true;
     }
-    bool _e23 = local_9;
+    bool _e23 = local_12;
     if (_e23) {
         return false;
     }
@@ -772,11 +820,11 @@ bool bsh_reaches(
     float s_c = _e50 * 1.001;
     float reach = node_3.extent + (metal::sqrt(s_c) * _e25);
     if (d2_7 <= ((node_3.radius * node_3.radius) * s_c)) {
-        local_10 = d2_7 <= (reach * reach);
+        local_13 = d2_7 <= (reach * reach);
     } else {
-        local_10 = false;
+        local_13 = false;
     }
-    bool _e67 = local_10;
+    bool _e67 = local_13;
     return _e67;
 }
 
@@ -836,42 +884,42 @@ Connection connect_record(
     device type_8 const& geo_tris,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Connection c_3 = {};
-    bool local_11 = {};
-    bool local_12 = {};
-    c_3.e = metal::float3(0.0);
+    Connection c_4 = {};
+    bool local_14 = {};
+    bool local_15 = {};
+    c_4.e = metal::float3(0.0);
     metal::float3 _e16 = light_point(l_2, u1_1, u2_1);
-    c_3.y = _e16;
-    metal::float3 _e19 = c_3.y;
+    c_4.y = _e16;
+    metal::float3 _e19 = c_4.y;
     float _e20 = connection_cosine(x_6, _e19, n_1, ng_1, r2_2);
-    c_3.cos_x = _e20;
-    float _e22 = c_3.cos_x;
+    c_4.cos_x = _e20;
+    float _e22 = c_4.cos_x;
     if (!((_e22 <= 0.0))) {
         if (trace_1) {
-            metal::float3 _e33 = c_3.y;
+            metal::float3 _e33 = c_4.y;
             bool _e34 = occluded(x_6 + (ng_1 * eps), _e33, rays_cast, nodes_visited, geo_nodes, geo_tris, _buffer_sizes);
-            local_12 = _e34;
+            local_15 = _e34;
         } else {
-            local_12 = false;
+            local_15 = false;
         }
-        bool _e36 = local_12;
-        local_11 = _e36;
+        bool _e36 = local_15;
+        local_14 = _e36;
     } else {
-        local_11 = true;
+        local_14 = true;
     }
-    bool _e38 = local_11;
+    bool _e38 = local_14;
     if (_e38) {
-        Connection _e39 = c_3;
+        Connection _e39 = c_4;
         return _e39;
     }
-    metal::float3 _e41 = c_3.y;
+    metal::float3 _e41 = c_4.y;
     metal::float3 v_7 = x_6 - _e41;
     float d2_8 = metal::dot(v_7, v_7);
     metal::float3 _e48 = light_intensity(l_2, v_7 / metal::float3(metal::sqrt(d2_8)));
-    float _e50 = c_3.cos_x;
+    float _e50 = c_4.cos_x;
     float _e51 = connection_factor(_e50, d2_8, rt2_2, w_res);
-    c_3.e = _e48 * _e51;
-    Connection _e53 = c_3;
+    c_4.e = _e48 * _e51;
+    Connection _e53 = c_4;
     return _e53;
 }
 
@@ -890,12 +938,12 @@ Connection connect_traced(
     thread uint& nodes_visited,
     device type_7 const& geo_nodes,
     device type_8 const& geo_tris,
-    device type_12 const& lights_1,
+    device type_12 const& lights,
     device type_4 const& rt2_3,
     device type_4 const& r2_3,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuLight _e12 = lights_1[li];
+    GpuLight _e12 = lights[li];
     float _e15 = r2_3[li];
     float _e19 = rt2_3[li];
     Connection _e21 = connect_record(_e12, x_7, n_2, ng_2, s * _e15, s * _e19, w_res_1, u1_2, u2_2, eps_1, trace_2, rays_cast, nodes_visited, geo_nodes, geo_tris, _buffer_sizes);
@@ -926,13 +974,13 @@ void direct_count(
 }
 
 Shaded shade_connection(
-    Connection c_4,
+    Connection c_5,
     metal::float3 x_8,
     metal::float3 n_4,
     Material m_1
 ) {
     Shaded s_1 = {};
-    s_1.e = c_4.e;
+    s_1.e = c_5.e;
     s_1.diffuse = metal::float3(0.0);
     s_1.specular = metal::float3(0.0);
     Shaded _e13 = s_1;
@@ -946,7 +994,7 @@ Shaded shade_pick_traced(
     metal::float3 r_6,
     metal::float4 rl_5,
     Material m_2,
-    float w_3,
+    float w_4,
     float u1_3,
     float u2_3,
     float eps_2,
@@ -955,12 +1003,12 @@ Shaded shade_pick_traced(
     thread uint& nodes_visited,
     device type_7 const& geo_nodes,
     device type_8 const& geo_tris,
-    device type_12 const& lights_1,
+    device type_12 const& lights,
     device type_4 const& rt2_3,
     device type_4 const& r2_3,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Connection _e12 = connect_traced(li_1, x_9, n_5, n_5, 1.0, w_3, u1_3, u2_3, eps_2, trace_3, rays_cast, nodes_visited, geo_nodes, geo_tris, lights_1, rt2_3, r2_3, _buffer_sizes);
+    Connection _e12 = connect_traced(li_1, x_9, n_5, n_5, 1.0, w_4, u1_3, u2_3, eps_2, trace_3, rays_cast, nodes_visited, geo_nodes, geo_tris, lights, rt2_3, r2_3, _buffer_sizes);
     Shaded _e13 = shade_connection(_e12, x_9, n_5, m_2);
     return _e13;
 }
@@ -972,7 +1020,7 @@ Shaded shade_pick(
     metal::float3 r_7,
     metal::float4 rl_6,
     Material m_3,
-    float w_4,
+    float w_5,
     float u1_4,
     float u2_4,
     float eps_3,
@@ -980,12 +1028,12 @@ Shaded shade_pick(
     thread uint& nodes_visited,
     device type_7 const& geo_nodes,
     device type_8 const& geo_tris,
-    device type_12 const& lights_1,
+    device type_12 const& lights,
     device type_4 const& rt2_3,
     device type_4 const& r2_3,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Shaded _e11 = shade_pick_traced(li_2, x_10, n_6, r_7, rl_6, m_3, w_4, u1_4, u2_4, eps_3, true, rays_cast, nodes_visited, geo_nodes, geo_tris, lights_1, rt2_3, r2_3, _buffer_sizes);
+    Shaded _e11 = shade_pick_traced(li_2, x_10, n_6, r_7, rl_6, m_3, w_5, u1_4, u2_4, eps_3, true, rays_cast, nodes_visited, geo_nodes, geo_tris, lights, rt2_3, r2_3, _buffer_sizes);
     return _e11;
 }
 
@@ -996,55 +1044,17 @@ Shaded add(
     return Shaded {a_6.e + b_5.e, a_6.diffuse + b_5.diffuse, a_6.specular + b_5.specular};
 }
 
-uint pick_copies(
-    type_16 lights,
-    uint k_1
+Shaded scaled(
+    Shaded s_2,
+    metal::float3 w_6
 ) {
-    uint copies = 1u;
-    uint j = 0u;
-    bool local_13 = {};
-    uint2 loop_bound_3 = uint2(4294967295u);
-    bool loop_init_1 = true;
-    while(true) {
-        if (metal::all(loop_bound_3 == uint2(0u))) { break; }
-        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-        if (!loop_init_1) {
-            uint _e26 = j;
-            j = _e26 + 1u;
-        }
-        loop_init_1 = false;
-        uint _e6 = j;
-        if (_e6 < K) {
-        } else {
-            break;
-        }
-        {
-            uint _e9 = j;
-            if (_e9 != k_1) {
-                uint _e13 = j;
-                local_13 = lights.inner[_e13] == lights.inner[k_1];
-            } else {
-                local_13 = false;
-            }
-            bool _e18 = local_13;
-            if (_e18) {
-                uint _e19 = j;
-                if (_e19 < k_1) {
-                    return 0u;
-                }
-                uint _e22 = copies;
-                copies = _e22 + 1u;
-            }
-        }
-    }
-    uint _e28 = copies;
-    return _e28;
+    return Shaded {s_2.e * w_6, s_2.diffuse * w_6, s_2.specular * w_6};
 }
 
 metal::float3 output_of(
-    Shaded s_2
+    Shaded s_3
 ) {
-    return s_2.e;
+    return s_3.e;
 }
 
 struct main_Input {
@@ -1057,7 +1067,7 @@ kernel void main_(
 , metal::texture2d<float, metal::access::sample> position_tex [[user(fake0)]]
 , metal::texture2d<float, metal::access::sample> normal_tex [[user(fake0)]]
 , metal::texture2d<float, metal::access::write> out_tex [[user(fake0)]]
-, device type_12 const& lights_1 [[user(fake0)]]
+, device type_12 const& lights [[user(fake0)]]
 , device type_4 const& rt2_3 [[user(fake0)]]
 , device type_4 const& r2_3 [[user(fake0)]]
 , device type_13 const& bsh_nodes [[user(fake0)]]
@@ -1077,12 +1087,18 @@ kernel void main_(
     type_16 slot_light = {};
     type_19 slot_u = {};
     type_20 slot_p = {};
-    float total = 0.0;
+    metal::float3 total = metal::float3(0.0);
     uint count = 0u;
     uint hc = {};
     uint b = {};
     uint q = {};
+    bool local_2 = {};
     uint k = 0u;
+    metal::float3 w = {};
+    bool first = {};
+    uint j = {};
+    bool local_3 = {};
+    bool local_4 = {};
     uint _e4 = view.width;
     if (!((gid.x >= _e4))) {
         uint _e12 = view.height;
@@ -1124,144 +1140,203 @@ kernel void main_(
     uint _e78 = pick_stream(_e77);
     h = _e78;
     hc = _e77;
-    uint _e98 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
-    metal::float3 _e99 = r;
-    uint _e100 = bsh_next_leaf_lobe(BSH, _e98, x_11, _e99, _e54, bsh_nodes, _buffer_sizes);
-    b = _e100;
-    uint2 loop_bound_4 = uint2(4294967295u);
-    bool loop_init_2 = true;
+    uint _e99 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
+    metal::float3 _e100 = r;
+    uint _e101 = bsh_next_leaf_lobe(BSH, _e99, x_11, _e100, _e54, bsh_nodes, _buffer_sizes);
+    b = _e101;
+    uint2 loop_bound_3 = uint2(4294967295u);
+    bool loop_init_1 = true;
     while(true) {
-        if (metal::all(loop_bound_4 == uint2(0u))) { break; }
-        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
-        if (!loop_init_2) {
-            uint _e161 = b;
-            uint _e164 = bsh_nodes[_e161].next;
-            metal::float3 _e165 = r;
-            uint _e166 = bsh_next_leaf_lobe(BSH, _e164, x_11, _e165, _e54, bsh_nodes, _buffer_sizes);
-            b = _e166;
+        if (metal::all(loop_bound_3 == uint2(0u))) { break; }
+        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+        if (!loop_init_1) {
+            uint _e174 = b;
+            uint _e177 = bsh_nodes[_e174].next;
+            metal::float3 _e178 = r;
+            uint _e179 = bsh_next_leaf_lobe(BSH, _e177, x_11, _e178, _e54, bsh_nodes, _buffer_sizes);
+            b = _e179;
         }
-        loop_init_2 = false;
-        uint _e102 = b;
-        if (_e102 != BSH_NONE) {
+        loop_init_1 = false;
+        uint _e103 = b;
+        if (_e103 != BSH_NONE) {
         } else {
             break;
         }
         {
-            uint _e105 = count;
-            count = _e105 + 1u;
-            uint _e109 = b;
-            uint li_3 = bsh_nodes[_e109].light;
-            uint _e113 = h;
-            uint _e114 = pcg_hash(_e113);
-            h = _e114;
-            uint _e115 = h;
-            float _e116 = xi_from_bits(_e115);
-            uint _e117 = h;
-            uint _e118 = pcg_hash(_e117);
-            h = _e118;
-            uint _e119 = h;
-            float _e120 = xi_from_bits(_e119);
-            metal::float2 u_4 = metal::float2(_e116, _e120);
-            metal::float3 _e122 = r;
-            Material _e123 = m;
-            Shaded _e128 = shade_pick_traced(li_3, x_11, n_8, _e122, _e54, _e123, 1.0, u_4.x, u_4.y, eps_4, false, rays_cast, nodes_visited, geo_nodes, geo_tris, lights_1, rt2_3, r2_3, _buffer_sizes);
-            metal::float3 _e129 = output_of(_e128);
-            float _e130 = resample_target(_e129);
+            uint _e106 = count;
+            count = _e106 + 1u;
+            uint _e110 = b;
+            uint li_3 = bsh_nodes[_e110].light;
+            uint _e114 = h;
+            uint _e115 = pcg_hash(_e114);
+            h = _e115;
+            uint _e116 = h;
+            float _e117 = xi_from_bits(_e116);
+            uint _e118 = h;
+            uint _e119 = pcg_hash(_e118);
+            h = _e119;
+            uint _e120 = h;
+            float _e121 = xi_from_bits(_e120);
+            metal::float2 u_4 = metal::float2(_e117, _e121);
+            metal::float3 _e123 = r;
+            Material _e124 = m;
+            Shaded _e129 = shade_pick_traced(li_3, x_11, n_8, _e123, _e54, _e124, 1.0, u_4.x, u_4.y, eps_4, false, rays_cast, nodes_visited, geo_nodes, geo_tris, lights, rt2_3, r2_3, _buffer_sizes);
+            metal::float3 _e130 = output_of(_e129);
             uint _e132 = evaluations;
             evaluations = _e132 + 1u;
-            if (_e130 > 0.0) {
-                float _e137 = total;
-                total = _e137 + _e130;
+            float _e135 = resample_target(_e130);
+            if (_e135 > 0.0) {
+                metal::float3 _e138 = total;
+                total = _e138 + _e130;
                 q = 0u;
-                uint2 loop_bound_5 = uint2(4294967295u);
-                bool loop_init_3 = true;
+                uint2 loop_bound_4 = uint2(4294967295u);
+                bool loop_init_2 = true;
                 while(true) {
-                    if (metal::all(loop_bound_5 == uint2(0u))) { break; }
-                    loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
-                    if (!loop_init_3) {
-                        uint _e157 = q;
-                        q = _e157 + 1u;
+                    if (metal::all(loop_bound_4 == uint2(0u))) { break; }
+                    loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+                    if (!loop_init_2) {
+                        uint _e170 = q;
+                        q = _e170 + 1u;
                     }
-                    loop_init_3 = false;
-                    uint _e141 = q;
-                    if (_e141 < K) {
+                    loop_init_2 = false;
+                    uint _e142 = q;
+                    if (_e142 < K) {
                     } else {
                         break;
                     }
                     {
-                        uint _e144 = hc;
-                        uint _e145 = pcg_hash(_e144);
-                        hc = _e145;
-                        float _e146 = total;
-                        uint _e147 = hc;
-                        float _e148 = xi_from_bits(_e147);
-                        bool _e149 = weighted_replace(_e130, _e146, _e148);
-                        if (_e149) {
-                            uint _e150 = q;
-                            slot_light.inner[_e150] = li_3;
-                            uint _e152 = q;
-                            slot_u.inner[_e152] = u_4;
-                            uint _e154 = q;
-                            slot_p.inner[_e154] = _e130;
+                        uint _e145 = hc;
+                        uint _e146 = pcg_hash(_e145);
+                        hc = _e146;
+                        uint _e147 = q;
+                        float _e149 = slot_target(_e130, _e147, K);
+                        if (_e149 > 0.0) {
+                            metal::float3 _e154 = total;
+                            uint _e155 = q;
+                            float _e157 = slot_target(_e154, _e155, K);
+                            uint _e158 = hc;
+                            float _e159 = xi_from_bits(_e158);
+                            bool _e160 = weighted_replace(_e149, _e157, _e159);
+                            local_2 = _e160;
+                        } else {
+                            local_2 = false;
+                        }
+                        bool _e162 = local_2;
+                        if (_e162) {
+                            uint _e163 = q;
+                            slot_light.inner[_e163] = li_3;
+                            uint _e165 = q;
+                            slot_u.inner[_e165] = u_4;
+                            uint _e167 = q;
+                            slot_p.inner[_e167] = _e149;
                         }
                     }
                 }
             }
         }
     }
-    float _e167 = total;
-    if (_e167 > 0.0) {
-        uint2 loop_bound_6 = uint2(4294967295u);
-        bool loop_init_4 = true;
-        while(true) {
-            if (metal::all(loop_bound_6 == uint2(0u))) { break; }
-            loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-            if (!loop_init_4) {
-                uint _e206 = k;
-                k = _e206 + 1u;
-            }
-            loop_init_4 = false;
-            uint _e172 = k;
-            if (_e172 < K) {
-            } else {
-                break;
-            }
-            {
-                type_16 _e175 = slot_light;
-                uint _e176 = k;
-                uint _e177 = pick_copies(_e175, _e176);
-                if (_e177 > 0u) {
-                    float _e180 = total;
-                    uint _e182 = k;
-                    float _e184 = slot_p.inner[_e182];
-                    float w_6 = (_e180 / (8.0 * _e184)) * static_cast<float>(_e177);
-                    Shaded _e189 = t;
-                    uint _e190 = k;
-                    uint _e192 = slot_light.inner[_e190];
-                    metal::float3 _e193 = r;
-                    Material _e194 = m;
-                    uint _e195 = k;
-                    float _e198 = slot_u.inner[_e195].x;
-                    uint _e199 = k;
-                    float _e202 = slot_u.inner[_e199].y;
-                    Shaded _e203 = shade_pick(_e192, x_11, n_8, _e193, _e54, _e194, w_6, _e198, _e202, eps_4, rays_cast, nodes_visited, geo_nodes, geo_tris, lights_1, rt2_3, r2_3, _buffer_sizes);
-                    Shaded _e204 = add(_e189, _e203);
-                    t = _e204;
+    uint2 loop_bound_5 = uint2(4294967295u);
+    bool loop_init_3 = true;
+    while(true) {
+        if (metal::all(loop_bound_5 == uint2(0u))) { break; }
+        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+        if (!loop_init_3) {
+            uint _e261 = k;
+            k = _e261 + 1u;
+        }
+        loop_init_3 = false;
+        uint _e182 = k;
+        if (_e182 < K) {
+        } else {
+            break;
+        }
+        {
+            w = metal::float3(0.0);
+            uint _e188 = k;
+            float _e190 = slot_p.inner[_e188];
+            first = _e190 > 0.0;
+            j = 0u;
+            uint2 loop_bound_6 = uint2(4294967295u);
+            bool loop_init_4 = true;
+            while(true) {
+                if (metal::all(loop_bound_6 == uint2(0u))) { break; }
+                loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+                if (!loop_init_4) {
+                    uint _e238 = j;
+                    j = _e238 + 1u;
                 }
+                loop_init_4 = false;
+                uint _e196 = j;
+                if (_e196 < K) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e199 = j;
+                    float _e201 = slot_p.inner[_e199];
+                    if (_e201 > 0.0) {
+                        uint _e206 = j;
+                        uint _e208 = slot_light.inner[_e206];
+                        uint _e209 = k;
+                        uint _e211 = slot_light.inner[_e209];
+                        local_3 = _e208 == _e211;
+                    } else {
+                        local_3 = false;
+                    }
+                    bool _e214 = local_3;
+                    if (_e214) {
+                        bool _e215 = first;
+                        if (_e215) {
+                            uint _e218 = j;
+                            uint _e219 = k;
+                            local_4 = _e218 >= _e219;
+                        } else {
+                            local_4 = false;
+                        }
+                        bool _e222 = local_4;
+                        first = _e222;
+                        metal::float3 _e223 = w;
+                        metal::float3 _e224 = total;
+                        uint _e225 = j;
+                        float _e227 = slot_target(_e224, _e225, K);
+                        uint _e228 = j;
+                        float _e230 = slot_p.inner[_e228];
+                        uint _e232 = j;
+                        metal::float3 _e234 = slot_share(_e232, K);
+                        w = _e223 + ((_e227 / _e230) * _e234);
+                    }
+                }
+            }
+            bool _e240 = first;
+            if (_e240) {
+                Shaded _e241 = t;
+                uint _e242 = k;
+                uint _e244 = slot_light.inner[_e242];
+                metal::float3 _e245 = r;
+                Material _e246 = m;
+                uint _e248 = k;
+                float _e251 = slot_u.inner[_e248].x;
+                uint _e252 = k;
+                float _e255 = slot_u.inner[_e252].y;
+                Shaded _e256 = shade_pick(_e244, x_11, n_8, _e245, _e54, _e246, 1.0, _e251, _e255, eps_4, rays_cast, nodes_visited, geo_nodes, geo_tris, lights, rt2_3, r2_3, _buffer_sizes);
+                metal::float3 _e257 = w;
+                Shaded _e258 = scaled(_e256, _e257);
+                Shaded _e259 = add(_e241, _e258);
+                t = _e259;
             }
         }
     }
-    metal::float3 _e210 = t.e;
-    uint _e211 = count;
-    out_tex.write(metal::float4(_e210, static_cast<float>(_e211)), metal::uint2(texel_1));
+    metal::float3 _e265 = t.e;
+    uint _e266 = count;
+    out_tex.write(metal::float4(_e265, static_cast<float>(_e266)), metal::uint2(texel_1));
     direct_count(DIRECT_COUNT_PIXELS, 1u, direct_counts, _buffer_sizes);
-    uint _e217 = count;
-    direct_count(DIRECT_COUNT_CANDIDATES, _e217, direct_counts, _buffer_sizes);
-    uint _e220 = evaluations;
-    direct_count(DIRECT_COUNT_EVALUATIONS, _e220, direct_counts, _buffer_sizes);
-    uint _e223 = rays_cast;
-    direct_count(DIRECT_COUNT_RAYS, _e223, direct_counts, _buffer_sizes);
-    uint _e226 = nodes_visited;
-    direct_count(DIRECT_COUNT_NODES, _e226, direct_counts, _buffer_sizes);
+    uint _e272 = count;
+    direct_count(DIRECT_COUNT_CANDIDATES, _e272, direct_counts, _buffer_sizes);
+    uint _e275 = evaluations;
+    direct_count(DIRECT_COUNT_EVALUATIONS, _e275, direct_counts, _buffer_sizes);
+    uint _e278 = rays_cast;
+    direct_count(DIRECT_COUNT_RAYS, _e278, direct_counts, _buffer_sizes);
+    uint _e281 = nodes_visited;
+    direct_count(DIRECT_COUNT_NODES, _e281, direct_counts, _buffer_sizes);
     return;
 }

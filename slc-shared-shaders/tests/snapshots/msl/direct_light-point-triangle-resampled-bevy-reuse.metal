@@ -346,28 +346,28 @@ float connection_cosine(
     metal::float3 ng,
     float r2_1
 ) {
-    bool local_7 = {};
     bool local_8 = {};
+    bool local_9 = {};
     metal::float3 v_6 = x_2 - y;
     float d2_6 = metal::dot(v_6, v_6);
     bool _e7 = slc_keep(r2_1, d2_6);
     if (!(!(_e7))) {
-        local_7 = !((d2_6 > 0.0));
-    } else {
-        local_7 = true;
-    }
-    bool _e16 = local_7;
-    if (_e16) {
-        return 0.0;
-    }
-    metal::float3 w_7 = v_6 / metal::float3(metal::sqrt(d2_6));
-    float cos_x_1 = -(metal::dot(n, w_7));
-    if (!((cos_x_1 <= 0.0))) {
-        local_8 = metal::dot(ng, w_7) >= 0.0;
+        local_8 = !((d2_6 > 0.0));
     } else {
         local_8 = true;
     }
-    bool _e32 = local_8;
+    bool _e16 = local_8;
+    if (_e16) {
+        return 0.0;
+    }
+    metal::float3 w_8 = v_6 / metal::float3(metal::sqrt(d2_6));
+    float cos_x_1 = -(metal::dot(n, w_8));
+    if (!((cos_x_1 <= 0.0))) {
+        local_9 = metal::dot(ng, w_8) >= 0.0;
+    } else {
+        local_9 = true;
+    }
+    bool _e32 = local_9;
     if (_e32) {
         return 0.0;
     }
@@ -430,6 +430,54 @@ float resample_target(
     metal::float3 c_2
 ) {
     return ((c_2.x + c_2.y) + c_2.z) * 0.33333334;
+}
+
+uint naga_mod(uint lhs, uint rhs) {
+    return lhs % metal::select(rhs, 1u, rhs == 0u);
+}
+
+float slot_target(
+    metal::float3 c_3,
+    uint slot,
+    uint k_1
+) {
+    if (k_1 < 3u) {
+        float _e5 = resample_target(c_3);
+        return _e5;
+    }
+    uint j_4 = naga_mod(slot, 3u);
+    if (j_4 == 0u) {
+        return c_3.x;
+    }
+    if (j_4 == 1u) {
+        return c_3.y;
+    }
+    return c_3.z;
+}
+
+uint naga_div(uint lhs, uint rhs) {
+    return lhs / metal::select(rhs, 1u, rhs == 0u);
+}
+
+metal::float3 slot_share(
+    uint slot_1,
+    uint k_2
+) {
+    if (k_2 < 3u) {
+        float _e4 = to_f32_(k_2);
+        float w_9 = 1.0 / _e4;
+        return metal::float3(w_9, w_9, w_9);
+    }
+    uint j_5 = naga_mod(slot_1, 3u);
+    float _e15 = to_f32_(naga_div((k_2 + 2u) - j_5, 3u));
+    float w_10 = 1.0 / _e15;
+    if (j_5 == 0u) {
+        return metal::float3(w_10, 0.0, 0.0);
+    }
+    if (j_5 == 1u) {
+        return metal::float3(0.0, w_10, 0.0);
+    }
+    return metal::float3(0.0, 0.0, w_10);
 }
 
 float grid_coordinate(
@@ -503,13 +551,13 @@ float smith_visibility(
     float n_v,
     float alpha_2
 ) {
-    bool local_9 = {};
+    bool local_10 = {};
     if (!((n_l <= 0.0))) {
-        local_9 = n_v <= 0.0;
+        local_10 = n_v <= 0.0;
     } else {
-        local_9 = true;
+        local_10 = true;
     }
-    bool _e11 = local_9;
+    bool _e11 = local_10;
     if (_e11) {
         return 0.0;
     }
@@ -523,9 +571,9 @@ metal::float3 fresnel_schlick(
     float f90_,
     float v_h
 ) {
-    float c_9 = metal::saturate(1.0 - v_h);
-    float c2_1 = c_9 * c_9;
-    return f0_ + ((metal::float3(f90_, f90_, f90_) - f0_) * ((c2_1 * c2_1) * c_9));
+    float c_10 = metal::saturate(1.0 - v_h);
+    float c2_1 = c_10 * c_10;
+    return f0_ + ((metal::float3(f90_, f90_, f90_) - f0_) * ((c2_1 * c2_1) * c_10));
 }
 
 metal::float3 specular_fresnel(
@@ -545,27 +593,27 @@ bool has_specular(
     metal::float3 f0_d_1,
     float f90_d_1
 ) {
-    bool local_10 = {};
     bool local_11 = {};
+    bool local_12 = {};
     if (!((metallic_1 > 0.0))) {
-        local_10 = f90_d_1 > 0.0;
-    } else {
-        local_10 = true;
-    }
-    bool _e11 = local_10;
-    if (!(_e11)) {
-        local_11 = metal::max(metal::max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0.0;
+        local_11 = f90_d_1 > 0.0;
     } else {
         local_11 = true;
     }
-    bool _e23 = local_11;
+    bool _e11 = local_11;
+    if (!(_e11)) {
+        local_12 = metal::max(metal::max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0.0;
+    } else {
+        local_12 = true;
+    }
+    bool _e23 = local_12;
     return _e23;
 }
 
 float channel_mean(
-    metal::float3 c_3
+    metal::float3 c_4
 ) {
-    return ((c_3.x + c_3.y) + c_3.z) * 0.33333334;
+    return ((c_4.x + c_4.y) + c_4.z) * 0.33333334;
 }
 
 metal::float4 receiver_lobe(
@@ -576,16 +624,16 @@ metal::float4 receiver_lobe(
     float alpha_3,
     float n_v_1
 ) {
-    bool local_12 = {};
+    bool local_13 = {};
     metal::float3 _e10 = fresnel_schlick(f0_d_2, f90_d_2, n_v_1);
     float _e16 = channel_mean(((metal::float3(1.0, 1.0, 1.0) - _e10) * base_1) * (1.0 - metallic_2));
     if (!((n_v_1 <= 0.0))) {
         bool _e22 = has_specular(metallic_2, f0_d_2, f90_d_2);
-        local_12 = !(_e22);
+        local_13 = !(_e22);
     } else {
-        local_12 = true;
+        local_13 = true;
     }
-    bool _e25 = local_12;
+    bool _e25 = local_13;
     if (_e25) {
         return metal::float4(_e16, 0.0, alpha_3, n_v_1);
     }
@@ -700,27 +748,27 @@ float cone_cos_of(
     float a_3,
     metal::float3 d
 ) {
-    bool local_13 = {};
     bool local_14 = {};
+    bool local_15 = {};
     float vd = metal::dot(v_2, d);
     float h2_1 = d2_4 - (a_3 * a_3);
     if (!((h2_1 <= 0.0))) {
         if (vd >= 0.0) {
-            local_14 = (vd * vd) >= h2_1;
+            local_15 = (vd * vd) >= h2_1;
         } else {
-            local_14 = false;
+            local_15 = false;
         }
-        bool _e19 = local_14;
-        local_13 = _e19;
+        bool _e19 = local_15;
+        local_14 = _e19;
     } else {
-        local_13 = true;
+        local_14 = true;
     }
-    bool _e21 = local_13;
+    bool _e21 = local_14;
     if (_e21) {
         return 1.0;
     }
-    metal::float3 c_10 = metal::cross(v_2, d);
-    return metal::min(((vd * metal::sqrt(h2_1)) + (metal::sqrt(metal::dot(c_10, c_10)) * a_3)) / d2_4, 1.0);
+    metal::float3 c_11 = metal::cross(v_2, d);
+    return metal::min(((vd * metal::sqrt(h2_1)) + (metal::sqrt(metal::dot(c_11, c_11)) * a_3)) / d2_4, 1.0);
 }
 
 float cone_cos_toward(
@@ -800,17 +848,17 @@ float ray_aabb(
 metal::float3 triangle_normal(
     metal::float3 a_4,
     metal::float3 b_4,
-    metal::float3 c_4
+    metal::float3 c_5
 ) {
-    bool local_15 = {};
-    metal::float3 n_13 = metal::cross(b_4 - a_4, c_4 - a_4);
+    bool local_16 = {};
+    metal::float3 n_13 = metal::cross(b_4 - a_4, c_5 - a_4);
     float l2_ = metal::dot(n_13, n_13);
     if (!(!((l2_ > 0.0)))) {
-        local_15 = !((l2_ < 300000000000000000000000000000000000000.0));
+        local_16 = !((l2_ < 300000000000000000000000000000000000000.0));
     } else {
-        local_15 = true;
+        local_16 = true;
     }
-    bool _e17 = local_15;
+    bool _e17 = local_16;
     if (_e17) {
         return metal::float3(0.0, 0.0, 0.0);
     }
@@ -822,50 +870,50 @@ float ray_triangle(
     metal::float3 d_3,
     metal::float3 a_5,
     metal::float3 b_5,
-    metal::float3 c_5,
+    metal::float3 c_6,
     float t_min,
     float t_max_1
 ) {
-    bool local_16 = {};
     bool local_17 = {};
     bool local_18 = {};
+    bool local_19 = {};
     metal::float3 e1_ = b_5 - a_5;
-    metal::float3 e2_ = c_5 - a_5;
+    metal::float3 e2_ = c_6 - a_5;
     metal::float3 p_5 = metal::cross(d_3, e2_);
     float det = metal::dot(e1_, p_5);
     if (metal::abs(det) <= 0.0) {
         return -1.0;
     }
     float inv = 1.0 / det;
-    metal::float3 s_5 = o_1 - a_5;
-    float u_3 = metal::dot(s_5, p_5) * inv;
+    metal::float3 s_6 = o_1 - a_5;
+    float u_3 = metal::dot(s_6, p_5) * inv;
     if (!((u_3 < 0.0))) {
-        local_16 = u_3 > 1.0;
-    } else {
-        local_16 = true;
-    }
-    bool _e28 = local_16;
-    if (_e28) {
-        return -1.0;
-    }
-    metal::float3 q_4 = metal::cross(s_5, e1_);
-    float v_8 = metal::dot(d_3, q_4) * inv;
-    if (!((v_8 < 0.0))) {
-        local_17 = (u_3 + v_8) > 1.0;
+        local_17 = u_3 > 1.0;
     } else {
         local_17 = true;
     }
-    bool _e42 = local_17;
+    bool _e28 = local_17;
+    if (_e28) {
+        return -1.0;
+    }
+    metal::float3 q_5 = metal::cross(s_6, e1_);
+    float v_8 = metal::dot(d_3, q_5) * inv;
+    if (!((v_8 < 0.0))) {
+        local_18 = (u_3 + v_8) > 1.0;
+    } else {
+        local_18 = true;
+    }
+    bool _e42 = local_18;
     if (_e42) {
         return -1.0;
     }
-    float t_3 = metal::dot(e2_, q_4) * inv;
+    float t_3 = metal::dot(e2_, q_5) * inv;
     if (t_3 > t_min) {
-        local_18 = t_3 < t_max_1;
+        local_19 = t_3 < t_max_1;
     } else {
-        local_18 = false;
+        local_19 = false;
     }
-    bool _e51 = local_18;
+    bool _e51 = local_19;
     if (_e51) {
         return t_3;
     }
@@ -897,13 +945,13 @@ bool history_matches(
     float oh,
     float d_4
 ) {
-    bool local_19 = {};
+    bool local_20 = {};
     if (metal::abs(metal::dot(nh, p_3) - oh) <= (TEMPORAL_DEPTH_TOLERANCE * d_4)) {
-        local_19 = metal::dot(n_4, nh) >= TEMPORAL_NORMAL_COS;
+        local_20 = metal::dot(n_4, nh) >= TEMPORAL_NORMAL_COS;
     } else {
-        local_19 = false;
+        local_20 = false;
     }
-    bool _e17 = local_19;
+    bool _e17 = local_20;
     return _e17;
 }
 
@@ -1093,19 +1141,19 @@ bool bsh_reaches(
     metal::float3 r_7,
     metal::float4 rl_3
 ) {
-    bool local_20 = {};
     bool local_21 = {};
+    bool local_22 = {};
     bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_4);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
         bool _e20 = sphere_contains_point(node_3.center, node_3.radius * (rl_3.w * 1.0001), x_4);
-        local_20 = !(_e20);
+        local_21 = !(_e20);
     } else {
-        local_20 = true;
+        local_21 = true;
     }
-    bool _e23 = local_20;
+    bool _e23 = local_21;
     if (_e23) {
         return false;
     }
@@ -1126,11 +1174,11 @@ bool bsh_reaches(
     float s_c = _e50 * 1.001;
     float reach = node_3.extent + (metal::sqrt(s_c) * _e25);
     if (d2_7 <= ((node_3.radius * node_3.radius) * s_c)) {
-        local_21 = d2_7 <= (reach * reach);
+        local_22 = d2_7 <= (reach * reach);
     } else {
-        local_21 = false;
+        local_22 = false;
     }
-    bool _e67 = local_21;
+    bool _e67 = local_22;
     return _e67;
 }
 
@@ -1188,42 +1236,42 @@ Connection connect_record(
     device type_8 const& geo_tris,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Connection c_6 = {};
-    bool local_22 = {};
+    Connection c_7 = {};
     bool local_23 = {};
-    c_6.e = metal::float3(0.0);
+    bool local_24 = {};
+    c_7.e = metal::float3(0.0);
     metal::float3 _e16 = light_point(l_3, u1_3, u2_3);
-    c_6.y = _e16;
-    metal::float3 _e19 = c_6.y;
+    c_7.y = _e16;
+    metal::float3 _e19 = c_7.y;
     float _e20 = connection_cosine(x_6, _e19, n_5, ng_1, r2_2);
-    c_6.cos_x = _e20;
-    float _e22 = c_6.cos_x;
+    c_7.cos_x = _e20;
+    float _e22 = c_7.cos_x;
     if (!((_e22 <= 0.0))) {
         if (trace_1) {
-            metal::float3 _e33 = c_6.y;
+            metal::float3 _e33 = c_7.y;
             bool _e34 = occluded(x_6 + (ng_1 * eps), _e33, geo_nodes, geo_tris, _buffer_sizes);
-            local_23 = _e34;
+            local_24 = _e34;
         } else {
-            local_23 = false;
+            local_24 = false;
         }
-        bool _e36 = local_23;
-        local_22 = _e36;
+        bool _e36 = local_24;
+        local_23 = _e36;
     } else {
-        local_22 = true;
+        local_23 = true;
     }
-    bool _e38 = local_22;
+    bool _e38 = local_23;
     if (_e38) {
-        Connection _e39 = c_6;
+        Connection _e39 = c_7;
         return _e39;
     }
-    metal::float3 _e41 = c_6.y;
+    metal::float3 _e41 = c_7.y;
     metal::float3 v_10 = x_6 - _e41;
     float d2_8 = metal::dot(v_10, v_10);
     metal::float3 _e48 = light_intensity(l_3, v_10 / metal::float3(metal::sqrt(d2_8)));
-    float _e50 = c_6.cos_x;
+    float _e50 = c_7.cos_x;
     float _e51 = connection_factor(_e50, d2_8, rt2_2, w_res);
-    c_6.e = _e48 * _e51;
-    Connection _e53 = c_6;
+    c_7.e = _e48 * _e51;
+    Connection _e53 = c_7;
     return _e53;
 }
 
@@ -1260,8 +1308,8 @@ float light_range_scale(
     device type_14 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuLightCone c_11 = light_cones[li_1];
-    float _e9 = range_scale_toward(rl_5, c_11.center, c_11.radius, x_8, r_9);
+    GpuLightCone c_12 = light_cones[li_1];
+    float _e9 = range_scale_toward(rl_5, c_12.center, c_12.radius, x_8, r_9);
     return _e9;
 }
 
@@ -1274,18 +1322,18 @@ metal::float4 surface_at(
 }
 
 Shaded shade_connection(
-    Connection c_7,
+    Connection c_8,
     metal::float3 x_9,
     metal::float3 n_7,
     Material m_1
 ) {
     Shaded s_1 = {};
-    s_1.e = c_7.e;
+    s_1.e = c_8.e;
     s_1.diffuse = metal::float3(0.0);
     s_1.specular = metal::float3(0.0);
-    if (c_7.cos_x > 0.0) {
-        metal::float3 _e25 = bevy_brdf(m_1.base, m_1.metallic, m_1.roughness, m_1.reflectance, n_7, m_1.v, metal::normalize(c_7.y - x_9));
-        s_1.diffuse = _e25 * c_7.e;
+    if (c_8.cos_x > 0.0) {
+        metal::float3 _e25 = bevy_brdf(m_1.base, m_1.metallic, m_1.roughness, m_1.reflectance, n_7, m_1.v, metal::normalize(c_8.y - x_9));
+        s_1.diffuse = _e25 * c_8.e;
     }
     Shaded _e28 = s_1;
     return _e28;
@@ -1335,13 +1383,21 @@ Shaded add(
     return Shaded {a_8.e + b_7.e, a_8.diffuse + b_7.diffuse, a_8.specular + b_7.specular};
 }
 
-metal::float3 output_of(
-    Shaded s_2
+Shaded scaled(
+    Shaded s_2,
+    metal::float3 w_7
 ) {
-    return s_2.diffuse + s_2.specular;
+    return Shaded {s_2.e * w_7, s_2.diffuse * w_7, s_2.specular * w_7};
+}
+
+metal::float3 output_of(
+    Shaded s_3
+) {
+    return s_3.diffuse + s_3.specular;
 }
 
 float reuse_target(
+    uint q_3,
     GpuLight l_4,
     uint cells,
     metal::float3 x_11,
@@ -1351,31 +1407,31 @@ float reuse_target(
     device type_8 const& geo_tris,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e8 = grid_coordinate(cells);
-    float _e11 = grid_coordinate(cells << 16u);
-    Connection _e14 = connect_record(l_4, x_11, n_9, n_9, UNRANGED, UNRANGED, 1.0, _e8, _e11, 0.0, false, geo_nodes, geo_tris, _buffer_sizes);
-    Shaded _e15 = shade_connection(_e14, x_11, n_9, m_3);
-    metal::float3 _e16 = output_of(_e15);
-    float _e17 = resample_target(_e16);
-    return _e17;
+    float _e9 = grid_coordinate(cells);
+    float _e12 = grid_coordinate(cells << 16u);
+    Connection _e15 = connect_record(l_4, x_11, n_9, n_9, UNRANGED, UNRANGED, 1.0, _e9, _e12, 0.0, false, geo_nodes, geo_tris, _buffer_sizes);
+    Shaded _e16 = shade_connection(_e15, x_11, n_9, m_3);
+    metal::float3 _e17 = output_of(_e16);
+    float _e19 = slot_target(_e17, q_3, K);
+    return _e19;
 }
 
 ReuseSurface reuse_surface(
     metal::float3 x_12,
     metal::float3 n_10,
     Material m_4,
-    float c_8
+    float c_9
 ) {
-    return ReuseSurface {x_12, c_8, n_10, metal::pack_float_to_unorm4x8(metal::float4(m_4.base, m_4.metallic)), metal::pack_float_to_unorm2x16(metal::float2(metal::saturate(m_4.roughness), metal::saturate(m_4.reflectance))), 0u, 0u, 0u};
+    return ReuseSurface {x_12, c_9, n_10, metal::pack_float_to_unorm4x8(metal::float4(m_4.base, m_4.metallic)), metal::pack_float_to_unorm2x16(metal::float2(metal::saturate(m_4.roughness), metal::saturate(m_4.reflectance))), 0u, 0u, 0u};
 }
 
 Material reuse_material(
-    ReuseSurface s_3,
+    ReuseSurface s_4,
     metal::float3 eye
 ) {
-    metal::float4 b_8 = metal::unpack_unorm4x8_to_float(s_3.base);
-    metal::float2 r_12 = metal::unpack_unorm2x16_to_float(s_3.rough);
-    Material _e13 = material_of(b_8.xyz, b_8.w, r_12.x, r_12.y, metal::normalize(eye - s_3.x));
+    metal::float4 b_8 = metal::unpack_unorm4x8_to_float(s_4.base);
+    metal::float2 r_12 = metal::unpack_unorm2x16_to_float(s_4.rough);
+    Material _e13 = material_of(b_8.xyz, b_8.w, r_12.x, r_12.y, metal::normalize(eye - s_4.x));
     return _e13;
 }
 
@@ -1387,21 +1443,21 @@ bool same_pick(
     device type_12 const& lights,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    bool local_24 = {};
     bool local_25 = {};
+    bool local_26 = {};
     if (la == lb) {
         if (!((ca == cb))) {
             uint _e14 = lights[la].kind;
-            local_25 = _e14 != LIGHT_TRIANGLE;
+            local_26 = _e14 != LIGHT_TRIANGLE;
         } else {
-            local_25 = true;
+            local_26 = true;
         }
-        bool _e18 = local_25;
-        local_24 = _e18;
+        bool _e18 = local_26;
+        local_25 = _e18;
     } else {
-        local_24 = false;
+        local_25 = false;
     }
-    bool _e20 = local_24;
+    bool _e20 = local_25;
     return _e20;
 }
 
@@ -1424,14 +1480,14 @@ uint reuse_domains(
     uint hr = {};
     uint j_2 = 0u;
     metal::float2 p_4 = {};
-    bool local_26 = {};
     bool local_27 = {};
     bool local_28 = {};
-    bool seen = {};
-    uint k_1 = {};
     bool local_29 = {};
+    bool seen = {};
+    uint k_3 = {};
     bool local_30 = {};
     bool local_31 = {};
+    bool local_32 = {};
     uint _e9 = reuse.has_history;
     if (_e9 != 1u) {
         return 0u;
@@ -1484,43 +1540,43 @@ uint reuse_domains(
             metal::float2 _e63 = p_4;
             metal::int2 t_5 = naga_f2i32(metal::rint(_e63));
             if (!((t_5.x < 0))) {
-                local_26 = t_5.y < 0;
-            } else {
-                local_26 = true;
-            }
-            bool _e76 = local_26;
-            if (!(_e76)) {
-                uint _e83 = view.width;
-                local_27 = t_5.x >= static_cast<int>(_e83);
+                local_27 = t_5.y < 0;
             } else {
                 local_27 = true;
             }
-            bool _e87 = local_27;
-            if (!(_e87)) {
-                uint _e94 = view.height;
-                local_28 = t_5.y >= static_cast<int>(_e94);
+            bool _e76 = local_27;
+            if (!(_e76)) {
+                uint _e83 = view.width;
+                local_28 = t_5.x >= static_cast<int>(_e83);
             } else {
                 local_28 = true;
             }
-            bool _e98 = local_28;
+            bool _e87 = local_28;
+            if (!(_e87)) {
+                uint _e94 = view.height;
+                local_29 = t_5.y >= static_cast<int>(_e94);
+            } else {
+                local_29 = true;
+            }
+            bool _e98 = local_29;
             if (_e98) {
                 continue;
             }
             uint _e103 = view.width;
             uint pixel = (static_cast<uint>(t_5.y) * _e103) + static_cast<uint>(t_5.x);
             seen = false;
-            k_1 = 0u;
+            k_3 = 0u;
             uint2 loop_bound_4 = uint2(4294967295u);
             bool loop_init_2 = true;
             while(true) {
                 if (metal::all(loop_bound_4 == uint2(0u))) { break; }
                 loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
                 if (!loop_init_2) {
-                    uint _e127 = k_1;
-                    k_1 = _e127 + 1u;
+                    uint _e127 = k_3;
+                    k_3 = _e127 + 1u;
                 }
                 loop_init_2 = false;
-                uint _e112 = k_1;
+                uint _e112 = k_3;
                 uint _e113 = nd;
                 if (_e112 < _e113) {
                 } else {
@@ -1529,40 +1585,40 @@ uint reuse_domains(
                 {
                     bool _e115 = seen;
                     if (!(_e115)) {
-                        uint _e119 = k_1;
+                        uint _e119 = k_3;
                         uint _e122 = doms_1.inner[_e119].pixel;
-                        local_29 = _e122 == pixel;
+                        local_30 = _e122 == pixel;
                     } else {
-                        local_29 = true;
+                        local_30 = true;
                     }
-                    bool _e125 = local_29;
+                    bool _e125 = local_30;
                     seen = _e125;
                 }
             }
-            ReuseSurface s_6 = reuse_prev[pixel].surface;
+            ReuseSurface s_7 = reuse_prev[pixel].surface;
             bool _e133 = seen;
             if (!(_e133)) {
-                local_30 = !((s_6.m > 0.0));
-            } else {
-                local_30 = true;
-            }
-            bool _e142 = local_30;
-            if (!(_e142)) {
-                bool _e150 = history_matches(n_11, s_6.n, x_13, metal::dot(s_6.n, s_6.x), d_6);
-                local_31 = !(_e150);
+                local_31 = !((s_7.m > 0.0));
             } else {
                 local_31 = true;
             }
-            bool _e153 = local_31;
+            bool _e142 = local_31;
+            if (!(_e142)) {
+                bool _e150 = history_matches(n_11, s_7.n, x_13, metal::dot(s_7.n, s_7.x), d_6);
+                local_32 = !(_e150);
+            } else {
+                local_32 = true;
+            }
+            bool _e153 = local_32;
             if (_e153) {
                 continue;
             }
             uint _e154 = nd;
             metal::float3 _e160 = reuse.prev_eye;
-            Material _e161 = reuse_material(s_6, _e160);
+            Material _e161 = reuse_material(s_7, _e160);
             float _e165 = reuse.max_confidence;
             uint _e167 = j_2;
-            doms_1.inner[_e154] = Domain {pixel, {}, s_6.x, s_6.n, _e161, metal::min(s_6.m, _e165), _e167 == 0u};
+            doms_1.inner[_e154] = Domain {pixel, {}, s_7.x, s_7.n, _e161, metal::min(s_7.m, _e165), _e167 == 0u};
             uint _e171 = nd;
             nd = _e171 + 1u;
         }
@@ -1572,7 +1628,7 @@ uint reuse_domains(
 }
 
 ReuseSlot gris_combine(
-    uint q_3,
+    uint q_4,
     ReuseSlot cur,
     bool cur_ris,
     float cur_c,
@@ -1594,14 +1650,14 @@ ReuseSlot gris_combine(
     ReuseSlot out = ReuseSlot {0u, 0u, 0.0};
     float out_target = 0.0;
     uint j_3 = {};
-    ReuseSlot s_4 = {};
-    bool local_32 = {};
-    float w_in = {};
+    ReuseSlot s_5 = {};
     bool local_33 = {};
+    float w_in = {};
+    bool local_34 = {};
     float own_1 = {};
     float all_1 = {};
-    uint k_2 = {};
-    bool local_34 = {};
+    uint k_4 = {};
+    bool local_35 = {};
     j_3 = k0_;
     uint2 loop_bound_5 = uint2(4294967295u);
     bool loop_init_3 = true;
@@ -1619,81 +1675,81 @@ ReuseSlot gris_combine(
             break;
         }
         {
-            s_4 = cur;
+            s_5 = cur;
             uint _e24 = j_3;
             if (_e24 > k0_) {
                 uint _e27 = j_3;
                 uint _e32 = doms_2.inner[_e27 - 1u].pixel;
-                ReuseSlot _e36 = reuse_prev[_e32].slots.inner[q_3];
-                s_4 = _e36;
+                ReuseSlot _e36 = reuse_prev[_e32].slots.inner[q_4];
+                s_5 = _e36;
             }
-            float _e38 = s_4.w;
+            float _e38 = s_5.w;
             if (!(!((_e38 > 0.0)))) {
-                uint _e46 = s_4.light;
-                local_32 = _e46 >= (1 + (_buffer_sizes.size8 - 0 - 64) / 64);
+                uint _e46 = s_5.light;
+                local_33 = _e46 >= (1 + (_buffer_sizes.size8 - 0 - 64) / 64);
             } else {
-                local_32 = true;
+                local_33 = true;
             }
-            bool _e51 = local_32;
+            bool _e51 = local_33;
             if (_e51) {
                 continue;
             }
-            uint _e54 = s_4.light;
+            uint _e54 = s_5.light;
             GpuLight _e56 = lights[_e54];
-            uint _e58 = s_4.u;
-            float _e59 = reuse_target(_e56, _e58, x_14, n_12, m_5, geo_nodes, geo_tris, _buffer_sizes);
+            uint _e58 = s_5.u;
+            float _e59 = reuse_target(q_4, _e56, _e58, x_14, n_12, m_5, geo_nodes, geo_tris, _buffer_sizes);
             if (!((_e59 > 0.0))) {
                 continue;
             }
-            float _e64 = s_4.w;
+            float _e64 = s_5.w;
             w_in = _e64;
             uint _e66 = j_3;
             if (_e66 == k0_) {
-                local_33 = cur_ris;
+                local_34 = cur_ris;
             } else {
-                local_33 = false;
+                local_34 = false;
             }
-            bool _e71 = local_33;
+            bool _e71 = local_34;
             if (_e71) {
-                float _e73 = s_4.w;
+                float _e73 = s_5.w;
                 w_in = _e73 / _e59;
             }
             own_1 = cur_c * _e59;
             float _e77 = own_1;
             all_1 = _e77;
-            k_2 = k0_;
+            k_4 = k0_;
             uint2 loop_bound_6 = uint2(4294967295u);
             bool loop_init_4 = true;
             while(true) {
                 if (metal::all(loop_bound_6 == uint2(0u))) { break; }
                 loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
                 if (!loop_init_4) {
-                    uint _e115 = k_2;
-                    k_2 = _e115 + 1u;
+                    uint _e115 = k_4;
+                    k_4 = _e115 + 1u;
                 }
                 loop_init_4 = false;
-                uint _e80 = k_2;
+                uint _e80 = k_4;
                 if (_e80 < k1_) {
                 } else {
                     break;
                 }
                 {
-                    uint _e82 = k_2;
+                    uint _e82 = k_4;
                     float _e85 = doms_2.inner[_e82].c;
-                    uint _e88 = s_4.light;
+                    uint _e88 = s_5.light;
                     GpuLight _e90 = lights_prev[_e88];
-                    uint _e92 = s_4.u;
-                    uint _e93 = k_2;
+                    uint _e92 = s_5.u;
+                    uint _e93 = k_4;
                     metal::float3 _e96 = doms_2.inner[_e93].x;
-                    uint _e97 = k_2;
+                    uint _e97 = k_4;
                     metal::float3 _e100 = doms_2.inner[_e97].n;
-                    uint _e101 = k_2;
+                    uint _e101 = k_4;
                     Material _e104 = doms_2.inner[_e101].m;
-                    float _e105 = reuse_target(_e90, _e92, _e96, _e100, _e104, geo_nodes, geo_tris, _buffer_sizes);
+                    float _e105 = reuse_target(q_4, _e90, _e92, _e96, _e100, _e104, geo_nodes, geo_tris, _buffer_sizes);
                     float t_6 = _e85 * _e105;
                     float _e107 = all_1;
                     all_1 = _e107 + t_6;
-                    uint _e109 = k_2;
+                    uint _e109 = k_4;
                     uint _e112 = j_3;
                     if ((_e109 + 1u) == _e112) {
                         own_1 = t_6;
@@ -1714,13 +1770,13 @@ ReuseSlot gris_combine(
                 uint _e130 = hs_1;
                 float _e131 = xi_from_bits(_e130);
                 bool _e132 = weighted_replace(_e120, _e129, _e131);
-                local_34 = _e132;
+                local_35 = _e132;
             } else {
-                local_34 = false;
+                local_35 = false;
             }
-            bool _e134 = local_34;
+            bool _e134 = local_35;
             if (_e134) {
-                ReuseSlot _e135 = s_4;
+                ReuseSlot _e135 = s_5;
                 out = _e135;
                 out_target = _e59;
             }
@@ -1768,28 +1824,29 @@ kernel void main_(
     type_23 slot_u = {};
     type_24 slot_p = {};
     type_17 slot_cells = {};
-    float total = 0.0;
+    metal::float3 total = metal::float3(0.0);
     uint count = 0u;
     uint hc = {};
     uint b = {};
     uint q = {};
-    type_19 doms = {};
     bool local_2 = {};
+    type_19 doms = {};
+    bool local_3 = {};
     uint hs = {};
     type_15 kept = {};
     type_15 fin = {};
     uint q_1 = 0u;
     type_25 visible = {};
     uint k = 0u;
-    float w = {};
+    metal::float3 w = {};
     bool first = {};
     uint j = {};
-    bool local_3 = {};
     bool local_4 = {};
     bool local_5 = {};
+    bool local_6 = {};
     uint j_1 = {};
     uint q_2 = 0u;
-    bool local_6 = {};
+    bool local_7 = {};
     uint _e4 = view.width;
     if (!((gid.x >= _e4))) {
         uint _e12 = view.height;
@@ -1848,54 +1905,54 @@ kernel void main_(
     uint _e123 = pick_stream(_e122);
     h = _e123;
     hc = _e122;
-    uint _e144 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
-    metal::float3 _e145 = r;
-    uint _e146 = bsh_next_leaf_lobe(BSH, _e144, x_17, _e145, _e99, bsh_nodes, _buffer_sizes);
-    b = _e146;
+    uint _e145 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
+    metal::float3 _e146 = r;
+    uint _e147 = bsh_next_leaf_lobe(BSH, _e145, x_17, _e146, _e99, bsh_nodes, _buffer_sizes);
+    b = _e147;
     uint2 loop_bound_7 = uint2(4294967295u);
     bool loop_init_5 = true;
     while(true) {
         if (metal::all(loop_bound_7 == uint2(0u))) { break; }
         loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
         if (!loop_init_5) {
-            uint _e207 = b;
-            uint _e210 = bsh_nodes[_e207].next;
-            metal::float3 _e211 = r;
-            uint _e212 = bsh_next_leaf_lobe(BSH, _e210, x_17, _e211, _e99, bsh_nodes, _buffer_sizes);
-            b = _e212;
+            uint _e220 = b;
+            uint _e223 = bsh_nodes[_e220].next;
+            metal::float3 _e224 = r;
+            uint _e225 = bsh_next_leaf_lobe(BSH, _e223, x_17, _e224, _e99, bsh_nodes, _buffer_sizes);
+            b = _e225;
         }
         loop_init_5 = false;
-        uint _e148 = b;
-        if (_e148 != BSH_NONE) {
+        uint _e149 = b;
+        if (_e149 != BSH_NONE) {
         } else {
             break;
         }
         {
-            uint _e151 = count;
-            count = _e151 + 1u;
-            uint _e155 = b;
-            uint li_3 = bsh_nodes[_e155].light;
-            uint _e159 = h;
-            uint _e160 = pcg_hash(_e159);
-            h = _e160;
+            uint _e152 = count;
+            count = _e152 + 1u;
+            uint _e156 = b;
+            uint li_3 = bsh_nodes[_e156].light;
+            uint _e160 = h;
+            uint _e161 = pcg_hash(_e160);
+            h = _e161;
             uint h1_1 = h;
-            uint _e162 = h;
-            uint _e163 = pcg_hash(_e162);
-            h = _e163;
-            uint _e164 = h;
-            uint _e165 = grid_cells(h1_1, _e164);
-            float _e166 = grid_coordinate(h1_1);
-            uint _e167 = h;
-            float _e168 = grid_coordinate(_e167);
-            metal::float2 u_4 = metal::float2(_e166, _e168);
-            metal::float3 _e170 = r;
-            Material _e171 = m;
-            Shaded _e176 = shade_pick_traced(li_3, x_17, n_15, _e170, _e99, _e171, 1.0, u_4.x, u_4.y, eps_3, false, geo_nodes, geo_tris, lights, rt2_3, r2_3, light_cones, _buffer_sizes);
-            metal::float3 _e177 = output_of(_e176);
-            float _e178 = resample_target(_e177);
-            if (_e178 > 0.0) {
-                float _e181 = total;
-                total = _e181 + _e178;
+            uint _e163 = h;
+            uint _e164 = pcg_hash(_e163);
+            h = _e164;
+            uint _e165 = h;
+            uint _e166 = grid_cells(h1_1, _e165);
+            float _e167 = grid_coordinate(h1_1);
+            uint _e168 = h;
+            float _e169 = grid_coordinate(_e168);
+            metal::float2 u_4 = metal::float2(_e167, _e169);
+            metal::float3 _e171 = r;
+            Material _e172 = m;
+            Shaded _e177 = shade_pick_traced(li_3, x_17, n_15, _e171, _e99, _e172, 1.0, u_4.x, u_4.y, eps_3, false, geo_nodes, geo_tris, lights, rt2_3, r2_3, light_cones, _buffer_sizes);
+            metal::float3 _e178 = output_of(_e177);
+            float _e179 = resample_target(_e178);
+            if (_e179 > 0.0) {
+                metal::float3 _e182 = total;
+                total = _e182 + _e178;
                 q = 0u;
                 uint2 loop_bound_8 = uint2(4294967295u);
                 bool loop_init_6 = true;
@@ -1903,93 +1960,107 @@ kernel void main_(
                     if (metal::all(loop_bound_8 == uint2(0u))) { break; }
                     loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
                     if (!loop_init_6) {
-                        uint _e203 = q;
-                        q = _e203 + 1u;
+                        uint _e216 = q;
+                        q = _e216 + 1u;
                     }
                     loop_init_6 = false;
-                    uint _e185 = q;
-                    if (_e185 < K) {
+                    uint _e186 = q;
+                    if (_e186 < K) {
                     } else {
                         break;
                     }
                     {
-                        uint _e188 = hc;
-                        uint _e189 = pcg_hash(_e188);
-                        hc = _e189;
-                        float _e190 = total;
-                        uint _e191 = hc;
-                        float _e192 = xi_from_bits(_e191);
-                        bool _e193 = weighted_replace(_e178, _e190, _e192);
-                        if (_e193) {
-                            uint _e194 = q;
-                            slot_light.inner[_e194] = li_3;
-                            uint _e196 = q;
-                            slot_u.inner[_e196] = u_4;
-                            uint _e198 = q;
-                            slot_p.inner[_e198] = _e178;
-                            uint _e200 = q;
-                            slot_cells.inner[_e200] = _e165;
+                        uint _e189 = hc;
+                        uint _e190 = pcg_hash(_e189);
+                        hc = _e190;
+                        uint _e191 = q;
+                        float _e193 = slot_target(_e178, _e191, K);
+                        if (_e193 > 0.0) {
+                            metal::float3 _e198 = total;
+                            uint _e199 = q;
+                            float _e201 = slot_target(_e198, _e199, K);
+                            uint _e202 = hc;
+                            float _e203 = xi_from_bits(_e202);
+                            bool _e204 = weighted_replace(_e193, _e201, _e203);
+                            local_2 = _e204;
+                        } else {
+                            local_2 = false;
+                        }
+                        bool _e206 = local_2;
+                        if (_e206) {
+                            uint _e207 = q;
+                            slot_light.inner[_e207] = li_3;
+                            uint _e209 = q;
+                            slot_u.inner[_e209] = u_4;
+                            uint _e211 = q;
+                            slot_p.inner[_e211] = _e193;
+                            uint _e213 = q;
+                            slot_cells.inner[_e213] = _e166;
                         }
                     }
                 }
             }
         }
     }
-    uint _e216 = view.width;
-    uint pixel_1 = (gid.y * _e216) + gid.x;
-    metal::float3 _e223 = view.eye;
-    uint _e227 = reuse_stream(_e122, 0u);
-    uint _e228 = reuse_domains(x_17, n_15, metal::length(_e223 - x_17), _e227, doms, view, reuse, reuse_prev, _buffer_sizes);
-    if (_e228 > 0u) {
-        bool _e235 = doms.inner[0].temporal;
-        local_2 = _e235;
+    uint _e229 = view.width;
+    uint pixel_1 = (gid.y * _e229) + gid.x;
+    metal::float3 _e236 = view.eye;
+    uint _e240 = reuse_stream(_e122, 0u);
+    uint _e241 = reuse_domains(x_17, n_15, metal::length(_e236 - x_17), _e240, doms, view, reuse, reuse_prev, _buffer_sizes);
+    if (_e241 > 0u) {
+        bool _e248 = doms.inner[0].temporal;
+        local_3 = _e248;
     } else {
-        local_2 = false;
+        local_3 = false;
     }
-    bool own_history = local_2;
+    bool own_history = local_3;
     uint first_1 = own_history ? 1u : 0u;
-    float _e243 = doms.inner[0].c;
-    float confidence = 1.0 + (own_history ? _e243 : 0.0);
-    uint _e249 = reuse_stream(_e122, 1u);
-    hs = _e249;
+    float _e256 = doms.inner[0].c;
+    float confidence = 1.0 + (own_history ? _e256 : 0.0);
+    uint _e262 = reuse_stream(_e122, 1u);
+    hs = _e262;
     uint2 loop_bound_9 = uint2(4294967295u);
     bool loop_init_7 = true;
     while(true) {
         if (metal::all(loop_bound_9 == uint2(0u))) { break; }
         loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
         if (!loop_init_7) {
-            uint _e290 = q_1;
-            q_1 = _e290 + 1u;
+            uint _e313 = q_1;
+            q_1 = _e313 + 1u;
         }
         loop_init_7 = false;
-        uint _e255 = q_1;
-        if (_e255 < K) {
+        uint _e268 = q_1;
+        if (_e268 < K) {
         } else {
             break;
         }
         {
-            uint _e258 = q_1;
-            uint _e260 = q_1;
-            uint _e261 = q_1;
-            uint _e263 = slot_light.inner[_e261];
-            uint _e264 = q_1;
-            uint _e266 = slot_cells.inner[_e264];
-            float _e267 = total;
-            Material _e272 = m;
-            ReuseSlot _e273 = gris_combine(_e260, ReuseSlot {_e263, _e266, _e267}, true, 1.0, 0u, first_1, x_17, n_15, _e272, doms, hs, geo_nodes, geo_tris, lights, lights_prev, reuse_prev, _buffer_sizes);
-            kept.inner[_e258] = _e273;
+            uint _e271 = q_1;
+            uint _e273 = q_1;
             uint _e274 = q_1;
-            uint _e276 = q_1;
-            ReuseSlot _e278 = kept.inner[_e276];
-            fin.inner[_e274] = _e278;
-            if (_e228 > first_1) {
-                uint _e280 = q_1;
-                uint _e282 = q_1;
-                uint _e283 = q_1;
-                ReuseSlot _e285 = kept.inner[_e283];
-                Material _e287 = m;
-                ReuseSlot _e288 = gris_combine(_e282, _e285, false, confidence, first_1, _e228, x_17, n_15, _e287, doms, hs, geo_nodes, geo_tris, lights, lights_prev, reuse_prev, _buffer_sizes);
-                fin.inner[_e280] = _e288;
+            uint _e276 = slot_light.inner[_e274];
+            uint _e277 = q_1;
+            uint _e279 = slot_cells.inner[_e277];
+            metal::float3 _e280 = total;
+            uint _e281 = q_1;
+            float _e283 = slot_target(_e280, _e281, K);
+            uint _e284 = q_1;
+            float _e286 = slot_p.inner[_e284];
+            Material _e295 = m;
+            ReuseSlot _e296 = gris_combine(_e273, ReuseSlot {_e276, _e279, (_e286 > 0.0) ? _e283 : 0.0}, true, 1.0, 0u, first_1, x_17, n_15, _e295, doms, hs, geo_nodes, geo_tris, lights, lights_prev, reuse_prev, _buffer_sizes);
+            kept.inner[_e271] = _e296;
+            uint _e297 = q_1;
+            uint _e299 = q_1;
+            ReuseSlot _e301 = kept.inner[_e299];
+            fin.inner[_e297] = _e301;
+            if (_e241 > first_1) {
+                uint _e303 = q_1;
+                uint _e305 = q_1;
+                uint _e306 = q_1;
+                ReuseSlot _e308 = kept.inner[_e306];
+                Material _e310 = m;
+                ReuseSlot _e311 = gris_combine(_e305, _e308, false, confidence, first_1, _e241, x_17, n_15, _e310, doms, hs, geo_nodes, geo_tris, lights, lights_prev, reuse_prev, _buffer_sizes);
+                fin.inner[_e303] = _e311;
             }
         }
     }
@@ -1999,21 +2070,24 @@ kernel void main_(
         if (metal::all(loop_bound_10 == uint2(0u))) { break; }
         loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
         if (!loop_init_8) {
-            uint _e426 = k;
-            k = _e426 + 1u;
+            uint _e460 = k;
+            k = _e460 + 1u;
         }
         loop_init_8 = false;
-        uint _e295 = k;
-        if (_e295 < K) {
+        uint _e318 = k;
+        if (_e318 < K) {
         } else {
             break;
         }
         {
-            uint _e298 = k;
-            float _e301 = fin.inner[_e298].w;
-            w = _e301;
-            float _e303 = w;
-            first = _e303 > 0.0;
+            uint _e321 = k;
+            float _e324 = fin.inner[_e321].w;
+            uint _e325 = k;
+            metal::float3 _e327 = slot_share(_e325, K);
+            w = _e324 * _e327;
+            uint _e330 = k;
+            float _e333 = fin.inner[_e330].w;
+            first = _e333 > 0.0;
             j = 0u;
             uint2 loop_bound_11 = uint2(4294967295u);
             bool loop_init_9 = true;
@@ -2021,109 +2095,112 @@ kernel void main_(
                 if (metal::all(loop_bound_11 == uint2(0u))) { break; }
                 loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
                 if (!loop_init_9) {
-                    uint _e361 = j;
-                    j = _e361 + 1u;
+                    uint _e395 = j;
+                    j = _e395 + 1u;
                 }
                 loop_init_9 = false;
-                uint _e309 = j;
-                if (_e309 < K) {
+                uint _e339 = j;
+                if (_e339 < K) {
                 } else {
                     break;
                 }
                 {
-                    uint _e312 = j;
-                    uint _e313 = k;
-                    if (_e312 != _e313) {
-                        uint _e317 = j;
-                        float _e320 = fin.inner[_e317].w;
-                        local_3 = _e320 > 0.0;
-                    } else {
-                        local_3 = false;
-                    }
-                    bool _e324 = local_3;
-                    if (_e324) {
-                        uint _e327 = j;
-                        uint _e330 = fin.inner[_e327].light;
-                        uint _e331 = j;
-                        uint _e334 = fin.inner[_e331].u;
-                        uint _e335 = k;
-                        uint _e338 = fin.inner[_e335].light;
-                        uint _e339 = k;
-                        uint _e342 = fin.inner[_e339].u;
-                        bool _e343 = same_pick(_e330, _e334, _e338, _e342, lights, _buffer_sizes);
-                        local_4 = _e343;
+                    uint _e342 = j;
+                    uint _e343 = k;
+                    if (_e342 != _e343) {
+                        uint _e347 = j;
+                        float _e350 = fin.inner[_e347].w;
+                        local_4 = _e350 > 0.0;
                     } else {
                         local_4 = false;
                     }
-                    bool _e345 = local_4;
-                    if (_e345) {
-                        bool _e346 = first;
-                        if (_e346) {
-                            uint _e349 = j;
-                            uint _e350 = k;
-                            local_5 = _e349 > _e350;
+                    bool _e354 = local_4;
+                    if (_e354) {
+                        uint _e357 = j;
+                        uint _e360 = fin.inner[_e357].light;
+                        uint _e361 = j;
+                        uint _e364 = fin.inner[_e361].u;
+                        uint _e365 = k;
+                        uint _e368 = fin.inner[_e365].light;
+                        uint _e369 = k;
+                        uint _e372 = fin.inner[_e369].u;
+                        bool _e373 = same_pick(_e360, _e364, _e368, _e372, lights, _buffer_sizes);
+                        local_5 = _e373;
+                    } else {
+                        local_5 = false;
+                    }
+                    bool _e375 = local_5;
+                    if (_e375) {
+                        bool _e376 = first;
+                        if (_e376) {
+                            uint _e379 = j;
+                            uint _e380 = k;
+                            local_6 = _e379 > _e380;
                         } else {
-                            local_5 = false;
+                            local_6 = false;
                         }
-                        bool _e353 = local_5;
-                        first = _e353;
-                        float _e354 = w;
-                        uint _e355 = j;
-                        float _e358 = fin.inner[_e355].w;
-                        w = _e354 + _e358;
+                        bool _e383 = local_6;
+                        first = _e383;
+                        metal::float3 _e384 = w;
+                        uint _e385 = j;
+                        float _e388 = fin.inner[_e385].w;
+                        uint _e389 = j;
+                        metal::float3 _e391 = slot_share(_e389, K);
+                        w = _e384 + (_e388 * _e391);
                     }
                 }
             }
-            bool _e363 = first;
-            if (_e363) {
-                uint _e365 = k;
-                uint _e368 = fin.inner[_e365].light;
-                GpuLight _e370 = lights[_e368];
-                float _e373 = w;
-                uint _e376 = k;
-                uint _e379 = fin.inner[_e376].u;
-                float _e380 = grid_coordinate(_e379);
-                uint _e381 = k;
-                uint _e384 = fin.inner[_e381].u;
-                float _e387 = grid_coordinate(_e384 << 16u);
-                Connection _e389 = connect_record(_e370, x_17, n_15, n_15, UNRANGED, UNRANGED, _e373 / 8.0, _e380, _e387, eps_3, true, geo_nodes, geo_tris, _buffer_sizes);
-                Material _e390 = m;
-                Shaded _e391 = shade_connection(_e389, x_17, n_15, _e390);
-                Shaded _e392 = t;
-                Shaded _e393 = add(_e392, _e391);
-                t = _e393;
-                uint _e394 = k;
-                j_1 = _e394;
+            bool _e397 = first;
+            if (_e397) {
+                uint _e399 = k;
+                uint _e402 = fin.inner[_e399].light;
+                GpuLight _e404 = lights[_e402];
+                uint _e408 = k;
+                uint _e411 = fin.inner[_e408].u;
+                float _e412 = grid_coordinate(_e411);
+                uint _e413 = k;
+                uint _e416 = fin.inner[_e413].u;
+                float _e419 = grid_coordinate(_e416 << 16u);
+                Connection _e421 = connect_record(_e404, x_17, n_15, n_15, UNRANGED, UNRANGED, 1.0, _e412, _e419, eps_3, true, geo_nodes, geo_tris, _buffer_sizes);
+                Material _e422 = m;
+                Shaded _e423 = shade_connection(_e421, x_17, n_15, _e422);
+                Shaded _e424 = t;
+                metal::float3 _e425 = w;
+                Shaded _e426 = scaled(_e423, _e425);
+                Shaded _e427 = add(_e424, _e426);
+                t = _e427;
+                uint _e428 = k;
+                j_1 = _e428;
                 uint2 loop_bound_12 = uint2(4294967295u);
                 bool loop_init_10 = true;
                 while(true) {
                     if (metal::all(loop_bound_12 == uint2(0u))) { break; }
                     loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
                     if (!loop_init_10) {
-                        uint _e423 = j_1;
-                        j_1 = _e423 + 1u;
+                        uint _e457 = j_1;
+                        j_1 = _e457 + 1u;
                     }
                     loop_init_10 = false;
-                    uint _e396 = j_1;
-                    if (_e396 < K) {
+                    uint _e430 = j_1;
+                    if (_e430 < K) {
                     } else {
                         break;
                     }
                     {
-                        uint _e399 = j_1;
-                        uint _e402 = fin.inner[_e399].light;
-                        uint _e403 = j_1;
-                        uint _e406 = fin.inner[_e403].u;
-                        uint _e407 = k;
-                        uint _e410 = fin.inner[_e407].light;
-                        uint _e411 = k;
-                        uint _e414 = fin.inner[_e411].u;
-                        bool _e415 = same_pick(_e402, _e406, _e410, _e414, lights, _buffer_sizes);
-                        if (_e415) {
-                            uint _e416 = j_1;
-                            metal::float3 _e418 = output_of(_e391);
-                            float _e419 = resample_target(_e418);
-                            visible.inner[_e416] = _e419 > 0.0;
+                        uint _e433 = j_1;
+                        uint _e436 = fin.inner[_e433].light;
+                        uint _e437 = j_1;
+                        uint _e440 = fin.inner[_e437].u;
+                        uint _e441 = k;
+                        uint _e444 = fin.inner[_e441].light;
+                        uint _e445 = k;
+                        uint _e448 = fin.inner[_e445].u;
+                        bool _e449 = same_pick(_e436, _e440, _e444, _e448, lights, _buffer_sizes);
+                        if (_e449) {
+                            uint _e450 = j_1;
+                            metal::float3 _e452 = output_of(_e423);
+                            float _e453 = resample_target(_e452);
+                            visible.inner[_e450] = _e453 > 0.0;
                         }
                     }
                 }
@@ -2136,42 +2213,42 @@ kernel void main_(
         if (metal::all(loop_bound_13 == uint2(0u))) { break; }
         loop_bound_13 -= uint2(loop_bound_13.y == 0u, 1u);
         if (!loop_init_11) {
-            uint _e467 = q_2;
-            q_2 = _e467 + 1u;
+            uint _e501 = q_2;
+            q_2 = _e501 + 1u;
         }
         loop_init_11 = false;
-        uint _e430 = q_2;
-        if (_e430 < K) {
+        uint _e464 = q_2;
+        if (_e464 < K) {
         } else {
             break;
         }
         {
-            uint _e435 = reuse.visibility;
-            if (!((_e435 == 0u))) {
-                uint _e441 = q_2;
-                bool _e443 = visible.inner[_e441];
-                local_6 = _e443;
+            uint _e469 = reuse.visibility;
+            if (!((_e469 == 0u))) {
+                uint _e475 = q_2;
+                bool _e477 = visible.inner[_e475];
+                local_7 = _e477;
             } else {
-                local_6 = true;
+                local_7 = true;
             }
-            bool keep = local_6;
-            uint _e449 = q_2;
-            uint _e451 = q_2;
-            uint _e454 = kept.inner[_e451].light;
-            uint _e455 = q_2;
-            uint _e458 = kept.inner[_e455].u;
-            uint _e459 = q_2;
-            float _e462 = kept.inner[_e459].w;
-            reuse_next[pixel_1].slots.inner[_e449] = ReuseSlot {_e454, _e458, keep ? _e462 : 0.0};
+            bool keep = local_7;
+            uint _e483 = q_2;
+            uint _e485 = q_2;
+            uint _e488 = kept.inner[_e485].light;
+            uint _e489 = q_2;
+            uint _e492 = kept.inner[_e489].u;
+            uint _e493 = q_2;
+            float _e496 = kept.inner[_e493].w;
+            reuse_next[pixel_1].slots.inner[_e483] = ReuseSlot {_e488, _e492, keep ? _e496 : 0.0};
         }
     }
-    Material _e472 = m;
-    float _e475 = reuse.max_confidence;
-    ReuseSurface _e477 = reuse_surface(x_17, n_15, _e472, metal::min(confidence, _e475));
-    reuse_next[pixel_1].surface = _e477;
-    metal::float3 _e480 = t.diffuse;
-    metal::float3 _e482 = t.specular;
-    uint _e484 = count;
-    out_tex.write(metal::float4(_e480 + _e482, static_cast<float>(_e484)), metal::uint2(texel_1));
+    Material _e506 = m;
+    float _e509 = reuse.max_confidence;
+    ReuseSurface _e511 = reuse_surface(x_17, n_15, _e506, metal::min(confidence, _e509));
+    reuse_next[pixel_1].surface = _e511;
+    metal::float3 _e514 = t.diffuse;
+    metal::float3 _e516 = t.specular;
+    uint _e518 = count;
+    out_tex.write(metal::float4(_e514 + _e516, static_cast<float>(_e518)), metal::uint2(texel_1));
     return;
 }
