@@ -179,8 +179,9 @@ pub struct SlcCamera {
     pub picks: u32,
     /// Draw the picks in proportion to each light's unshadowed light at
     /// the pixel, every light in range evaluated without a ray
-    /// (`DirectSelection::Resampled`: the rays go where light arrives, and
-    /// only shadows add noise); off: in proportion to an importance bound
+    /// (`DirectSelection::Resampled`: the rays go where light arrives, each
+    /// pick drawn for one colour channel, and only shadows add noise); off:
+    /// in proportion to an importance bound
     /// (`DirectSelection::Weighted`, cheaper per light, noisier).
     pub resample: bool,
     /// Reuse the resampled picks across frames (`resample` only; slc-wgpu's
