@@ -445,6 +445,14 @@ fn engine_program_matches_brute_force() {
     );
     assert!(ere <= 0.25 * ew, "reuse's error {ere:.4} is not a quarter of weighted picks' {ew:.4}");
     assert!(sre <= 0.3 * sw, "reuse's r + g + b error {sre:.4} is not 0.3 of weighted's {sw:.4}");
+    let truth_img: Vec<[f32; 4]> =
+        truth[0].iter().map(|t| [t.x as f32, t.y as f32, t.z as f32, 0.0]).collect();
+    write_images(&[
+        ("weighted-one-frame", &frame_of(&mut weighted, 0)),
+        ("resampled-one-frame", &frame_of(&mut resampled, 0)),
+        ("reused-one-frame", &last),
+        ("brute-force", &truth_img),
+    ]);
 
     // The same weighted frames accumulated by the temporal pass (the
     // lights still, the depth buffer read in place): after 32 frames the
@@ -566,3 +574,22 @@ fn engine_program_matches_brute_force() {
 }
 
 slc_tests::harness!(Gpu: engine_program_matches_brute_force);
+
+/// Writes images (irradiance per pixel) as PNG previews to
+/// `target/engine-direct/` (for the docs; a failure to write is ignored),
+/// all at one exposure: the mean of the last image maps to 0.3.
+fn write_images(images: &[(&str, &[[f32; 4]])]) {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../target/engine-direct");
+    if std::fs::create_dir_all(&dir).is_err() {
+        return;
+    }
+    let rgb = |img: &[[f32; 4]]| -> Vec<Vec3> {
+        img.iter().map(|p| Vec3::new(p[0], p[1], p[2])).collect()
+    };
+    let last = rgb(images.last().map_or(&[][..], |i| i.1));
+    let mean = last.iter().map(|p| p.element_sum() / 3.0).sum::<f32>() / last.len().max(1) as f32;
+    for (name, img) in images {
+        let image = slc_scene::image::Image { width: W, height: H, data: rgb(img) };
+        _ = image.write_png(&dir.join(format!("{name}.png")), 0.3 / mean.max(1e-30));
+    }
+}
