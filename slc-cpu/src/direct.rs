@@ -174,7 +174,10 @@ impl DirectLights {
                 self.bsh.for_each_containing(at.x, |l| {
                     seen += 1;
                     let w = self.cones[l as usize].weight(&rc, at.rt2[l as usize]);
-                    offer(&mut slots, (l, w), w, &mut w_sum, &mut h);
+                    if w > 0.0 {
+                        w_sum += w;
+                        offer(&mut slots, |_| (l, w), |_| (w, w_sum), &mut h);
+                    }
                 });
                 if w_sum > 0.0 {
                     picks = slots
@@ -238,15 +241,8 @@ impl DirectLights {
             let c = self.connect(at, l as usize, 1.0, u1, u2, false);
             if resample_target(c) > 0.0 {
                 total += c;
-                for (q, s) in slots.iter_mut().enumerate() {
-                    hc = pcg_hash(hc);
-                    let p = slot_target(c, q as u32, k);
-                    if p > 0.0
-                        && weighted_replace(p, slot_target(total, q as u32, k), xi_from_bits(hc))
-                    {
-                        *s = (l, u1, u2, p);
-                    }
-                }
+                let of = |q: usize, v: Vec3| slot_target(v, q as u32, k);
+                offer(&mut slots, |q| (l, u1, u2, of(q, c)), |q| (of(q, c), of(q, total)), &mut hc);
             }
         });
         let mut e = Vec3::ZERO;
@@ -286,19 +282,22 @@ impl DirectLights {
     }
 }
 
-/// Offers `item` of weight `w` to one-slot weighted reservoirs `slots`
-/// whose weights sum to `total` (the kernels' loops in
-/// `bsh_weighted_collect` and the resampled picks): with `w > 0`, `total`
-/// grows by `w` and each slot takes `item` with probability `w/total`
-/// ([`weighted_replace`]), one hash of `h` per slot.
-fn offer<T: Copy>(slots: &mut [T], item: T, w: f32, total: &mut f32, h: &mut u32) {
-    if w > 0.0 {
-        *total += w;
-        for s in slots.iter_mut() {
-            *h = pcg_hash(*h);
-            if weighted_replace(w, *total, xi_from_bits(*h)) {
-                *s = item;
-            }
+/// Offers a candidate to one-slot weighted reservoirs `slots` (the
+/// kernels' loops in `bsh_weighted_collect` and the resampled picks): slot
+/// `q`, whose candidates so far weigh `total` including this one's `w`
+/// (`weights(q) = (w, total)`), takes `item(q)` with probability `w/total`
+/// where `w > 0` ([`weighted_replace`]); one hash of `h` per slot.
+fn offer<T>(
+    slots: &mut [T],
+    item: impl Fn(usize) -> T,
+    weights: impl Fn(usize) -> (f32, f32),
+    h: &mut u32,
+) {
+    for (q, s) in slots.iter_mut().enumerate() {
+        *h = pcg_hash(*h);
+        let (w, total) = weights(q);
+        if w > 0.0 && weighted_replace(w, total, xi_from_bits(*h)) {
+            *s = item(q);
         }
     }
 }

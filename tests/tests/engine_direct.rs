@@ -397,8 +397,7 @@ fn engine_program_matches_brute_force() {
     };
     let rel_error = |img: &[[f32; 4]]| mean_error(img, |g, t| (g - t).abs().element_sum());
     // The same for r + g + b: the error left when the picks' colours are
-    // set aside (the lights have random colours; k picks among hundreds
-    // tint a pixel however well they are chosen).
+    // set aside (the lights have random colours).
     let sum_error =
         |img: &[[f32; 4]]| mean_error(img, |g, t| (g.element_sum() - t.element_sum()).abs());
     let mut weighted =
@@ -407,10 +406,11 @@ fn engine_program_matches_brute_force() {
         DirectPass::new(&gpu, &set, &desc(DirectSelection::Uniform { k: 8 })).unwrap();
     let mut resampled =
         DirectPass::new(&gpu, &set, &desc(DirectSelection::Resampled { k: 8 })).unwrap();
-    let (ew, eu) = (rel_error(&frame_of(&mut weighted, 0)), rel_error(&frame_of(&mut uniform, 0)));
-    let er = rel_error(&frame_of(&mut resampled, 0));
-    let in_range =
-        frame_of(&mut uniform, 0).iter().map(|p| p[3] as f64).sum::<f64>() / shaded as f64;
+    let (weighted_img, uniform_img, resampled_img) =
+        (frame_of(&mut weighted, 0), frame_of(&mut uniform, 0), frame_of(&mut resampled, 0));
+    let (ew, eu, er) =
+        (rel_error(&weighted_img), rel_error(&uniform_img), rel_error(&resampled_img));
+    let in_range = uniform_img.iter().map(|p| p[3] as f64).sum::<f64>() / shaded as f64;
     eprintln!(
         "one frame, k = 8, eps = {EPS}: mean relative error resampled {er:.4}, weighted {ew:.4}, uniform {eu:.4} (weighted/uniform {:.3}, resampled/weighted {:.3}); {in_range:.1} lights in range per pixel",
         ew / eu,
@@ -437,7 +437,7 @@ fn engine_program_matches_brute_force() {
         last = frame_of(&mut reused, f * LAYOUTS as u32);
     }
     let ere = rel_error(&last);
-    let (sw, sre) = (sum_error(&frame_of(&mut weighted, 0)), sum_error(&last));
+    let (sw, sre) = (sum_error(&weighted_img), sum_error(&last));
     eprintln!(
         "8th frame of reuse, k = 8: mean relative error {ere:.4} ({:.3} of weighted picks' one frame); of r + g + b {sre:.4} against weighted's {sw:.4} ({:.3})",
         ere / ew,
@@ -448,8 +448,8 @@ fn engine_program_matches_brute_force() {
     let truth_img: Vec<[f32; 4]> =
         truth[0].iter().map(|t| [t.x as f32, t.y as f32, t.z as f32, 0.0]).collect();
     write_images(&[
-        ("weighted-one-frame", &frame_of(&mut weighted, 0)),
-        ("resampled-one-frame", &frame_of(&mut resampled, 0)),
+        ("weighted-one-frame", &weighted_img),
+        ("resampled-one-frame", &resampled_img),
         ("reused-one-frame", &last),
         ("brute-force", &truth_img),
     ]);
