@@ -527,15 +527,12 @@ pub fn templates() -> impl Iterator<Item = (&'static str, &'static str)> {
     TEMPLATES.iter().copied().filter(|(n, _)| *n != "layout")
 }
 
-/// Workgroup memory in bytes of `vpl_tiled`, `vpl_near` or `vpl_denoise`
-/// (0 for any other kernel) specialised to `f`. `vpl_tiled`, `vpl_near`:
-/// two `vec3f` (16 bytes each) per invocation and the box for the tile's
-/// box; with culling (always in `vpl_near`) the light list of
-/// `max_tile_lights` slots, the hits of a group's clusters and two
-/// counters; the counting variant's 7 counts. `vpl_denoise`: the decoded
-/// square of side `tile + 2P − 1`, 28 bytes a pixel (normal and depth, the
-/// irradiance's three channels). Checked against naga's layout of the
-/// generated kernels in the tests.
+/// Workgroup memory in bytes of `vpl_tiled` or `vpl_near` (0 for any
+/// other kernel) specialised to `f`: two `vec3f` (16 bytes each) per
+/// invocation and the box for the tile's box; with culling (always in
+/// `vpl_near`) the light list of `max_tile_lights` slots, the hits of a
+/// group's clusters and two counters; the counting variant's 7 counts
+/// (checked against naga's layout of the generated kernels in the tests).
 pub fn vpl_workgroup_bytes(kernel: Kernel, f: &Features) -> u64 {
     let threads = f.tile_size as u64 * f.tile_size as u64;
     let culled = kernel == Kernel::VplNear || f.method != CullKind::None;
@@ -543,10 +540,6 @@ pub fn vpl_workgroup_bytes(kernel: Kernel, f: &Features) -> u64 {
     let counts = if f.counters { 4 * 7 } else { 0 };
     match kernel {
         Kernel::VplTiled | Kernel::VplNear => 32 * threads + 32 + list + counts,
-        Kernel::VplDenoise => {
-            let side = f.tile_size as u64 + 2 * f.interleave as u64 - 1;
-            28 * side * side
-        }
         _ => 0,
     }
 }

@@ -174,53 +174,41 @@ fn rust_twins_match_naga_layout() {
 
 /// `vpl_workgroup_bytes`, which the host checks against the adapter's
 /// `max_compute_workgroup_storage_size`, is the size naga lays out for the
-/// generated `vpl_tiled`'s, `vpl_near`'s and `vpl_denoise`'s workgroup
-/// variables, for every culling kind, with and without counters, and a few
-/// list capacities (and `vpl_denoise`'s at periods 1, 8 and 16).
+/// generated `vpl_tiled`'s and `vpl_near`'s workgroup variables, for every
+/// culling kind, with and without counters, and a few list capacities.
 #[test]
 fn vpl_workgroup_bytes_match_naga() {
     use slc_shared_shaders::{
         CullKind, Features, Kernel, LightTypes, generate_module, vpl_workgroup_bytes,
     };
-    let workgroup_bytes = |kernel: Kernel, f: &Features| -> u64 {
-        let g = generate_module(kernel, f).unwrap();
-        let mut layouter = Layouter::default();
-        layouter.update(g.module.to_ctx()).unwrap();
-        g.module
-            .global_variables
-            .iter()
-            .filter(|(_, v)| v.space == naga::AddressSpace::WorkGroup)
-            .map(|(_, v)| layouter[v.ty].size as u64)
-            .sum()
-    };
-    let vpl = LightTypes { vpl: true, ..LightTypes::default() };
     for kernel in [Kernel::VplTiled, Kernel::VplNear] {
         for method in CullKind::ALL {
             for counters in [false, true] {
                 for list in [64u32, 100, 2048] {
                     let f = Features {
-                        lights: vpl,
+                        lights: LightTypes { vpl: true, ..LightTypes::default() },
                         max_tile_lights: list,
                         method,
                         counters,
                         ..Features::default()
                     };
+                    let g = generate_module(kernel, &f).unwrap();
+                    let mut layouter = Layouter::default();
+                    layouter.update(g.module.to_ctx()).unwrap();
+                    let naga_bytes: u64 = g
+                        .module
+                        .global_variables
+                        .iter()
+                        .filter(|(_, v)| v.space == naga::AddressSpace::WorkGroup)
+                        .map(|(_, v)| layouter[v.ty].size as u64)
+                        .sum();
                     assert_eq!(
                         vpl_workgroup_bytes(kernel, &f),
-                        workgroup_bytes(kernel, &f),
+                        naga_bytes,
                         "{kernel:?} {method:?} counters {counters} list {list}"
                     );
                 }
             }
         }
-    }
-    for interleave in [1u32, 8, 16] {
-        let f = Features { lights: vpl, interleave, ..Features::default() };
-        let k = Kernel::VplDenoise;
-        assert_eq!(
-            vpl_workgroup_bytes(k, &f),
-            workgroup_bytes(k, &f),
-            "vpl_denoise period {interleave}"
-        );
     }
 }

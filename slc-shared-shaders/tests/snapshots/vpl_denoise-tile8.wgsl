@@ -98,9 +98,6 @@ const TEMPORAL_CHANGE_LOW: f32 = 4f;
 const TEMPORAL_CHANGE_HIGH: f32 = 8f;
 const TEMPORAL_MIN_WEIGHT: f32 = 0.01f;
 const PERIOD: u32 = 8u;
-const TILE: u32 = 8u;
-const APRON: u32 = 8u;
-const SIDE: u32 = 23u;
 
 @group(0) @binding(0) 
 var<uniform> params: VplParams;
@@ -114,10 +111,6 @@ var normal_tex: texture_2d<f32>;
 var<storage> irradiance: array<vec4<f32>>;
 @group(0) @binding(5) 
 var<storage, read_write> filtered: array<vec4<f32>>;
-var<workgroup> wg_surface: array<vec4<f32>, 529>;
-var<workgroup> wg_red: array<f32, 529>;
-var<workgroup> wg_green: array<f32, 529>;
-var<workgroup> wg_blue: array<f32, 529>;
 
 fn inv_sigma_z(z: f32) -> f32 {
     return (1f / (DEPTH_SIGMA * z));
@@ -140,11 +133,11 @@ fn misses_subset(covered: u32, period_1: u32) -> bool {
     return (covered < (period_1 * period_1));
 }
 
-fn filtered_irradiance(e_1: vec3<f32>, sum: vec3<f32>, weight: f32) -> vec3<f32> {
+fn filtered_irradiance(e: vec3<f32>, sum: vec3<f32>, weight: f32) -> vec3<f32> {
     if (weight > 0f) {
         return (sum / vec3(weight));
     }
-    return e_1;
+    return e;
 }
 
 fn bilateral_weight(n: vec3<f32>, nj: vec3<f32>, z_1: f32, zj: f32, inv_sz: f32) -> f32 {
@@ -163,7 +156,7 @@ fn surface_at(texel: vec2<i32>) -> vec4<f32> {
 }
 
 fn gbuffer_at(i: u32) -> GbTexel {
-    var local_5: bool;
+    var local_1: bool;
 
     let _e3 = view.width;
     let _e8 = view.width;
@@ -173,11 +166,11 @@ fn gbuffer_at(i: u32) -> GbTexel {
     let n_2 = _e15.xyz;
     let len2_ = dot(n_2, n_2);
     if (_e12.w > 0f) {
-        local_5 = (len2_ > 0f);
+        local_1 = (len2_ > 0f);
     } else {
-        local_5 = false;
+        local_1 = false;
     }
-    let valid = local_5;
+    let valid = local_1;
     let _e30 = view.eye;
     let v = (_e12.xyz - _e30);
     let position = vec4<f32>(_e12.xyz, select(0f, 1f, valid));
@@ -185,169 +178,102 @@ fn gbuffer_at(i: u32) -> GbTexel {
     return GbTexel(position, normal);
 }
 
-fn window_sum(x_2: u32, y: u32, size_2: u32, origin: vec2<u32>, n_1: vec3<f32>, z_2: f32, inv: f32) -> Window {
+fn window_sum(x_2: u32, y: u32, size_2: u32, n_1: vec3<f32>, z_2: f32, inv: f32) -> Window {
     var win: Window;
     var yy: u32;
     var xx: u32;
 
-    let _e7 = window_start(x_2, size_2);
-    let _e10 = params.width;
-    let _e11 = window_end(x_2, size_2, _e10);
-    let _e12 = window_start(y, size_2);
-    let _e15 = params.height;
-    let _e16 = window_end(y, size_2, _e15);
+    let w = params.width;
+    let h = params.height;
+    let _e12 = window_start(x_2, size_2);
+    let _e13 = window_end(x_2, size_2, w);
+    let _e14 = window_start(y, size_2);
+    let _e15 = window_end(y, size_2, h);
     win.sum = vec3(0f);
     win.weight = 0f;
     win.covered = 0u;
-    yy = _e12;
+    yy = _e14;
     loop {
-        let _e26 = yy;
-        if (_e26 < _e16) {
+        let _e25 = yy;
+        if (_e25 < _e15) {
         } else {
             break;
         }
         {
-            xx = _e7;
+            xx = _e12;
             loop {
-                let _e29 = xx;
-                if (_e29 < _e11) {
+                let _e28 = xx;
+                if (_e28 < _e13) {
                 } else {
                     break;
                 }
                 {
-                    let _e31 = yy;
-                    let _e36 = xx;
-                    let k_1 = (((_e31 - origin.y) * SIDE) + (_e36 - origin.x));
-                    let s_2 = wg_surface[k_1];
-                    let _e45 = bilateral_weight(n_1, s_2.xyz, z_2, s_2.w, inv);
-                    let _e47 = win.sum;
-                    let _e50 = wg_red[k_1];
-                    let _e53 = wg_green[k_1];
-                    let _e56 = wg_blue[k_1];
-                    win.sum = (_e47 + (vec3<f32>(_e50, _e53, _e56) * _e45));
-                    let _e61 = win.weight;
-                    win.weight = (_e61 + _e45);
-                    let _e64 = win.covered;
-                    win.covered = (_e64 + select(0u, 1u, (_e45 > COVER_WEIGHT)));
+                    let _e30 = yy;
+                    let _e32 = xx;
+                    let j = ((_e30 * w) + _e32);
+                    let _e34 = gbuffer_at(j);
+                    let _e39 = bilateral_weight(n_1, _e34.normal.xyz, z_2, _e34.normal.w, inv);
+                    let _e41 = win.sum;
+                    let _e44 = irradiance[j];
+                    win.sum = (_e41 + (_e44.xyz * _e39));
+                    let _e49 = win.weight;
+                    win.weight = (_e49 + _e39);
+                    let _e52 = win.covered;
+                    win.covered = (_e52 + select(0u, 1u, (_e39 > COVER_WEIGHT)));
                 }
                 continuing {
-                    let _e72 = xx;
-                    xx = (_e72 + 1u);
+                    let _e60 = xx;
+                    xx = (_e60 + 1u);
                 }
             }
         }
         continuing {
-            let _e75 = yy;
-            yy = (_e75 + 1u);
+            let _e63 = yy;
+            yy = (_e63 + 1u);
         }
     }
-    let _e77 = win;
-    return _e77;
+    let _e65 = win;
+    return _e65;
 }
 
 @compute @workgroup_size(8, 8, 1) 
-fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_id) local: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
-    var k: u32;
-    var s: vec4<f32>;
-    var e: vec3<f32>;
-    var local_1: bool;
-    var local_2: bool;
-    var local_3: bool;
-    var local_4: bool;
-    var s_1: Window;
+fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
+    var local: bool;
+    var s: Window;
 
-    let w = params.width;
-    let h = params.height;
-    let corner = (vec2<i32>((wid.xy * TILE)) - vec2(8i));
-    k = lid;
-    loop {
-        let _e18 = k;
-        if (_e18 < 529u) {
-        } else {
-            break;
-        }
-        {
-            let _e21 = k;
-            let _e25 = k;
-            let p_1 = (corner + vec2<i32>(i32((_e21 % SIDE)), i32((_e25 / SIDE))));
-            s = vec4<f32>(0f, 0f, 0f, 1000000000000000000000000000000f);
-            e = vec3(0f);
-            if (p_1.x >= 0i) {
-                local_1 = (p_1.y >= 0i);
-            } else {
-                local_1 = false;
-            }
-            let _e49 = local_1;
-            if _e49 {
-                local_2 = (u32(p_1.x) < w);
-            } else {
-                local_2 = false;
-            }
-            let _e56 = local_2;
-            if _e56 {
-                local_3 = (u32(p_1.y) < h);
-            } else {
-                local_3 = false;
-            }
-            let _e63 = local_3;
-            if _e63 {
-                let j = ((u32(p_1.y) * w) + u32(p_1.x));
-                let _e70 = gbuffer_at(j);
-                s = _e70.normal;
-                let _e74 = irradiance[j];
-                e = _e74.xyz;
-            }
-            let _e77 = k;
-            let _e79 = s;
-            wg_surface[_e77] = _e79;
-            let _e81 = k;
-            let _e84 = e.x;
-            wg_red[_e81] = _e84;
-            let _e86 = k;
-            let _e89 = e.y;
-            wg_green[_e86] = _e89;
-            let _e91 = k;
-            let _e94 = e.z;
-            wg_blue[_e91] = _e94;
-        }
-        continuing {
-            let _e95 = k;
-            k = (_e95 + 64u);
-        }
-    }
-    workgroupBarrier();
-    if !((gid.x >= w)) {
-        local_4 = (gid.y >= h);
+    let w_1 = params.width;
+    let h_1 = params.height;
+    if !((gid.x >= w_1)) {
+        local = (gid.y >= h_1);
     } else {
-        local_4 = true;
+        local = true;
     }
-    let _e106 = local_4;
-    if _e106 {
+    let _e15 = local;
+    if _e15 {
         return;
     }
-    let i_1 = ((gid.y * w) + gid.x);
-    let e_2 = irradiance[i_1];
-    let origin_1 = vec2<u32>(corner);
-    let own = wg_surface[((((local.y + APRON) * SIDE) + local.x) + APRON)];
-    if (own.w >= DEPTH_NONE) {
-        filtered[i_1] = vec4<f32>(0f, 0f, 0f, e_2.w);
+    let i_1 = ((gid.y * w_1) + gid.x);
+    let e_1 = irradiance[i_1];
+    let _e23 = gbuffer_at(i_1);
+    if (_e23.position.w <= 0f) {
+        filtered[i_1] = vec4<f32>(0f, 0f, 0f, e_1.w);
         return;
     }
-    let n_3 = own.xyz;
-    let z_3 = own.w;
-    let _e139 = inv_sigma_z(z_3);
-    let _e143 = window_sum(gid.x, gid.y, PERIOD, origin_1, n_3, z_3, _e139);
-    s_1 = _e143;
-    let _e146 = s_1.covered;
-    let _e148 = misses_subset(_e146, PERIOD);
-    if _e148 {
-        let _e152 = wide_window(PERIOD);
-        let _e153 = window_sum(gid.x, gid.y, _e152, origin_1, n_3, z_3, _e139);
-        s_1 = _e153;
+    let n_3 = _e23.normal.xyz;
+    let z_3 = _e23.normal.w;
+    let _e39 = inv_sigma_z(z_3);
+    let _e43 = window_sum(gid.x, gid.y, PERIOD, n_3, z_3, _e39);
+    s = _e43;
+    let _e46 = s.covered;
+    let _e48 = misses_subset(_e46, PERIOD);
+    if _e48 {
+        let _e52 = wide_window(PERIOD);
+        let _e53 = window_sum(gid.x, gid.y, _e52, n_3, z_3, _e39);
+        s = _e53;
     }
-    let _e158 = s_1.sum;
-    let _e160 = s_1.weight;
-    let _e161 = filtered_irradiance(e_2.xyz, _e158, _e160);
-    filtered[i_1] = vec4<f32>(_e161, e_2.w);
+    let _e58 = s.sum;
+    let _e60 = s.weight;
+    let _e61 = filtered_irradiance(e_1.xyz, _e58, _e60);
+    filtered[i_1] = vec4<f32>(_e61, e_1.w);
     return;
 }

@@ -101,9 +101,6 @@ static const float TEMPORAL_CHANGE_LOW = 4.0;
 static const float TEMPORAL_CHANGE_HIGH = 8.0;
 static const float TEMPORAL_MIN_WEIGHT = 0.01;
 static const uint PERIOD = 8u;
-static const uint TILE = 8u;
-static const uint APRON = 8u;
-static const uint SIDE = 23u;
 
 cbuffer params : register(b0) { VplParams params; }
 cbuffer view : register(b1) { ViewParams view; }
@@ -111,10 +108,6 @@ Texture2D<float4> position_tex : register(t2);
 Texture2D<float4> normal_tex : register(t3);
 ByteAddressBuffer irradiance : register(t4);
 RWByteAddressBuffer filtered : register(u5);
-groupshared float4 wg_surface[529];
-groupshared float wg_red[529];
-groupshared float wg_green[529];
-groupshared float wg_blue[529];
 
 float inv_sigma_z(float z)
 {
@@ -146,12 +139,12 @@ bool misses_subset(uint covered, uint period_1)
     return (covered < (period_1 * period_1));
 }
 
-float3 filtered_irradiance(float3 e_1, float3 sum, float weight)
+float3 filtered_irradiance(float3 e, float3 sum, float weight)
 {
     if ((weight > 0.0)) {
         return (sum / (weight).xxx);
     }
-    return e_1;
+    return e;
 }
 
 float bilateral_weight(float3 n, float3 nj, float z_1, float zj, float inv_sz)
@@ -184,7 +177,7 @@ GbTexel ConstructGbTexel(float4 arg0, float4 arg1) {
 
 GbTexel gbuffer_at(uint i)
 {
-    bool local_5 = (bool)0;
+    bool local_1 = (bool)0;
 
     uint _e3 = view.width;
     uint _e8 = view.width;
@@ -194,11 +187,11 @@ GbTexel gbuffer_at(uint i)
     float3 n_2 = _e15.xyz;
     float len2_ = dot(n_2, n_2);
     if ((_e12.w > 0.0)) {
-        local_5 = (len2_ > 0.0);
+        local_1 = (len2_ > 0.0);
     } else {
-        local_5 = false;
+        local_1 = false;
     }
-    bool valid = local_5;
+    bool valid = local_1;
     float3 _e30 = view.eye;
     float3 v = (_e12.xyz - _e30);
     float4 position = float4(_e12.xyz, (valid ? 1.0 : 0.0));
@@ -207,194 +200,115 @@ GbTexel gbuffer_at(uint i)
     return gbtexel;
 }
 
-Window window_sum(uint x_2, uint y, uint size_2, uint2 origin, float3 n_1, float z_2, float inv)
+Window window_sum(uint x_2, uint y, uint size_2, float3 n_1, float z_2, float inv)
 {
     Window win = (Window)0;
     uint yy = (uint)0;
     uint xx = (uint)0;
 
-    const uint _e7 = window_start(x_2, size_2);
-    uint _e10 = params.width;
-    const uint _e11 = window_end(x_2, size_2, _e10);
-    const uint _e12 = window_start(y, size_2);
-    uint _e15 = params.height;
-    const uint _e16 = window_end(y, size_2, _e15);
+    uint w = params.width;
+    uint h = params.height;
+    const uint _e12 = window_start(x_2, size_2);
+    const uint _e13 = window_end(x_2, size_2, w);
+    const uint _e14 = window_start(y, size_2);
+    const uint _e15 = window_end(y, size_2, h);
     win.sum = (0.0).xxx;
     win.weight = 0.0;
     win.covered = 0u;
-    yy = _e12;
+    yy = _e14;
     uint2 loop_bound = uint2(4294967295u, 4294967295u);
     bool loop_init = true;
     while(true) {
         if (all(loop_bound == uint2(0u, 0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         if (!loop_init) {
-            uint _e75 = yy;
-            yy = (_e75 + 1u);
+            uint _e63 = yy;
+            yy = (_e63 + 1u);
         }
         loop_init = false;
-        uint _e26 = yy;
-        if ((_e26 < _e16)) {
+        uint _e25 = yy;
+        if ((_e25 < _e15)) {
         } else {
             break;
         }
         {
-            xx = _e7;
+            xx = _e12;
             uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
             bool loop_init_1 = true;
             while(true) {
                 if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
                 loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
                 if (!loop_init_1) {
-                    uint _e72 = xx;
-                    xx = (_e72 + 1u);
+                    uint _e60 = xx;
+                    xx = (_e60 + 1u);
                 }
                 loop_init_1 = false;
-                uint _e29 = xx;
-                if ((_e29 < _e11)) {
+                uint _e28 = xx;
+                if ((_e28 < _e13)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e31 = yy;
-                    uint _e36 = xx;
-                    uint k_1 = (((_e31 - origin.y) * SIDE) + (_e36 - origin.x));
-                    float4 s_2 = wg_surface[min(uint(k_1), 528u)];
-                    const float _e45 = bilateral_weight(n_1, s_2.xyz, z_2, s_2.w, inv);
-                    float3 _e47 = win.sum;
-                    float _e50 = wg_red[min(uint(k_1), 528u)];
-                    float _e53 = wg_green[min(uint(k_1), 528u)];
-                    float _e56 = wg_blue[min(uint(k_1), 528u)];
-                    win.sum = (_e47 + (float3(_e50, _e53, _e56) * _e45));
-                    float _e61 = win.weight;
-                    win.weight = (_e61 + _e45);
-                    uint _e64 = win.covered;
-                    win.covered = (_e64 + ((_e45 > COVER_WEIGHT) ? 1u : 0u));
+                    uint _e30 = yy;
+                    uint _e32 = xx;
+                    uint j = ((_e30 * w) + _e32);
+                    const GbTexel _e34 = gbuffer_at(j);
+                    const float _e39 = bilateral_weight(n_1, _e34.normal.xyz, z_2, _e34.normal.w, inv);
+                    float3 _e41 = win.sum;
+                    float4 _e44 = asfloat(irradiance.Load4(j*16));
+                    win.sum = (_e41 + (_e44.xyz * _e39));
+                    float _e49 = win.weight;
+                    win.weight = (_e49 + _e39);
+                    uint _e52 = win.covered;
+                    win.covered = (_e52 + ((_e39 > COVER_WEIGHT) ? 1u : 0u));
                 }
             }
         }
     }
-    Window _e77 = win;
-    const Window window = _e77;
+    Window _e65 = win;
+    const Window window = _e65;
     return window;
 }
 
 [numthreads(8, 8, 1)]
-void main(uint3 gid : SV_DispatchThreadID, uint3 wid : SV_GroupID, uint3 local : SV_GroupThreadID, uint lid : SV_GroupIndex)
+void main(uint3 gid : SV_DispatchThreadID)
 {
-    if (lid == 0) {
-        wg_surface = (float4[529])0;
-        wg_red = (float[529])0;
-        wg_green = (float[529])0;
-        wg_blue = (float[529])0;
-    }
-    GroupMemoryBarrierWithGroupSync();
-    uint k = (uint)0;
-    float4 s = (float4)0;
-    float3 e = (float3)0;
-    bool local_1 = (bool)0;
-    bool local_2 = (bool)0;
-    bool local_3 = (bool)0;
-    bool local_4 = (bool)0;
-    Window s_1 = (Window)0;
+    bool local = (bool)0;
+    Window s = (Window)0;
 
-    uint w = params.width;
-    uint h = params.height;
-    int2 corner = asint(asuint(int2((wid.xy * TILE))) - asuint((int(8)).xx));
-    k = lid;
-    uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
-    bool loop_init_2 = true;
-    while(true) {
-        if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
-        loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
-        if (!loop_init_2) {
-            uint _e95 = k;
-            k = (_e95 + 64u);
-        }
-        loop_init_2 = false;
-        uint _e18 = k;
-        if ((_e18 < 529u)) {
-        } else {
-            break;
-        }
-        {
-            uint _e21 = k;
-            uint _e25 = k;
-            int2 p_1 = asint(asuint(corner) + asuint(int2(int(naga_mod(_e21, SIDE)), int(naga_div(_e25, SIDE)))));
-            s = float4(0.0, 0.0, 0.0, 1e30);
-            e = (0.0).xxx;
-            if ((p_1.x >= int(0))) {
-                local_1 = (p_1.y >= int(0));
-            } else {
-                local_1 = false;
-            }
-            bool _e49 = local_1;
-            if (_e49) {
-                local_2 = (uint(p_1.x) < w);
-            } else {
-                local_2 = false;
-            }
-            bool _e56 = local_2;
-            if (_e56) {
-                local_3 = (uint(p_1.y) < h);
-            } else {
-                local_3 = false;
-            }
-            bool _e63 = local_3;
-            if (_e63) {
-                uint j = ((uint(p_1.y) * w) + uint(p_1.x));
-                const GbTexel _e70 = gbuffer_at(j);
-                s = _e70.normal;
-                float4 _e74 = asfloat(irradiance.Load4(j*16));
-                e = _e74.xyz;
-            }
-            uint _e77 = k;
-            float4 _e79 = s;
-            wg_surface[min(uint(_e77), 528u)] = _e79;
-            uint _e81 = k;
-            float _e84 = e.x;
-            wg_red[min(uint(_e81), 528u)] = _e84;
-            uint _e86 = k;
-            float _e89 = e.y;
-            wg_green[min(uint(_e86), 528u)] = _e89;
-            uint _e91 = k;
-            float _e94 = e.z;
-            wg_blue[min(uint(_e91), 528u)] = _e94;
-        }
-    }
-    GroupMemoryBarrierWithGroupSync();
-    if (!((gid.x >= w))) {
-        local_4 = (gid.y >= h);
+    uint w_1 = params.width;
+    uint h_1 = params.height;
+    if (!((gid.x >= w_1))) {
+        local = (gid.y >= h_1);
     } else {
-        local_4 = true;
+        local = true;
     }
-    bool _e106 = local_4;
-    if (_e106) {
+    bool _e15 = local;
+    if (_e15) {
         return;
     }
-    uint i_1 = ((gid.y * w) + gid.x);
-    float4 e_2 = asfloat(irradiance.Load4(i_1*16));
-    uint2 origin_1 = uint2(corner);
-    float4 own = wg_surface[min(uint(((((local.y + APRON) * SIDE) + local.x) + APRON)), 528u)];
-    if ((own.w >= DEPTH_NONE)) {
-        filtered.Store4(i_1*16, asuint(float4(0.0, 0.0, 0.0, e_2.w)));
+    uint i_1 = ((gid.y * w_1) + gid.x);
+    float4 e_1 = asfloat(irradiance.Load4(i_1*16));
+    const GbTexel _e23 = gbuffer_at(i_1);
+    if ((_e23.position.w <= 0.0)) {
+        filtered.Store4(i_1*16, asuint(float4(0.0, 0.0, 0.0, e_1.w)));
         return;
     }
-    float3 n_3 = own.xyz;
-    float z_3 = own.w;
-    const float _e139 = inv_sigma_z(z_3);
-    const Window _e143 = window_sum(gid.x, gid.y, PERIOD, origin_1, n_3, z_3, _e139);
-    s_1 = _e143;
-    uint _e146 = s_1.covered;
-    const bool _e148 = misses_subset(_e146, PERIOD);
-    if (_e148) {
-        const uint _e152 = wide_window(PERIOD);
-        const Window _e153 = window_sum(gid.x, gid.y, _e152, origin_1, n_3, z_3, _e139);
-        s_1 = _e153;
+    float3 n_3 = _e23.normal.xyz;
+    float z_3 = _e23.normal.w;
+    const float _e39 = inv_sigma_z(z_3);
+    const Window _e43 = window_sum(gid.x, gid.y, PERIOD, n_3, z_3, _e39);
+    s = _e43;
+    uint _e46 = s.covered;
+    const bool _e48 = misses_subset(_e46, PERIOD);
+    if (_e48) {
+        const uint _e52 = wide_window(PERIOD);
+        const Window _e53 = window_sum(gid.x, gid.y, _e52, n_3, z_3, _e39);
+        s = _e53;
     }
-    float3 _e158 = s_1.sum;
-    float _e160 = s_1.weight;
-    const float3 _e161 = filtered_irradiance(e_2.xyz, _e158, _e160);
-    filtered.Store4(i_1*16, asuint(float4(_e161, e_2.w)));
+    float3 _e58 = s.sum;
+    float _e60 = s.weight;
+    const float3 _e61 = filtered_irradiance(e_1.xyz, _e58, _e60);
+    filtered.Store4(i_1*16, asuint(float4(_e61, e_1.w)));
     return;
 }

@@ -44,12 +44,6 @@ struct GbTexel {
     metal::float4 position;
     metal::float4 normal;
 };
-struct type_9 {
-    metal::float4 inner[529];
-};
-struct type_10 {
-    float inner[529];
-};
 struct Window {
     metal::packed_float3 sum;
     float weight;
@@ -113,9 +107,6 @@ constant float TEMPORAL_CHANGE_LOW = 4.0;
 constant float TEMPORAL_CHANGE_HIGH = 8.0;
 constant float TEMPORAL_MIN_WEIGHT = 0.01;
 constant uint PERIOD = 8u;
-constant uint TILE = 8u;
-constant uint APRON = 8u;
-constant uint SIDE = 23u;
 
 float inv_sigma_z(
     float z
@@ -157,14 +148,14 @@ bool misses_subset(
 }
 
 metal::float3 filtered_irradiance(
-    metal::float3 e_1,
+    metal::float3 e,
     metal::float3 sum,
     float weight
 ) {
     if (weight > 0.0) {
         return sum / metal::float3(weight);
     }
-    return e_1;
+    return e;
 }
 
 float bilateral_weight(
@@ -201,7 +192,7 @@ GbTexel gbuffer_at(
     metal::texture2d<float, metal::access::sample> position_tex,
     metal::texture2d<float, metal::access::sample> normal_tex
 ) {
-    bool local_5 = {};
+    bool local_1 = {};
     uint _e3 = view.width;
     uint _e8 = view.width;
     metal::int2 texel_1 = metal::int2(static_cast<int>(naga_mod(i, _e3)), static_cast<int>(naga_div(i, _e8)));
@@ -210,11 +201,11 @@ GbTexel gbuffer_at(
     metal::float3 n_2 = _e15.xyz;
     float len2_ = metal::dot(n_2, n_2);
     if (_e12.w > 0.0) {
-        local_5 = len2_ > 0.0;
+        local_1 = len2_ > 0.0;
     } else {
-        local_5 = false;
+        local_1 = false;
     }
-    bool valid = local_5;
+    bool valid = local_1;
     metal::float3 _e30 = view.eye;
     metal::float3 v = _e12.xyz - _e30;
     metal::float4 position = metal::float4(_e12.xyz, valid ? 1.0 : 0.0);
@@ -226,215 +217,129 @@ Window window_sum(
     uint x_2,
     uint y,
     uint size_2,
-    metal::uint2 origin,
     metal::float3 n_1,
     float z_2,
     float inv,
     constant VplParams& params,
-    threadgroup type_9& wg_surface,
-    threadgroup type_10& wg_red,
-    threadgroup type_10& wg_green,
-    threadgroup type_10& wg_blue
+    constant ViewParams& view,
+    metal::texture2d<float, metal::access::sample> position_tex,
+    metal::texture2d<float, metal::access::sample> normal_tex,
+    device type_7 const& irradiance,
+    constant _mslBufferSizes& _buffer_sizes
 ) {
     Window win = {};
     uint yy = {};
     uint xx = {};
-    uint _e7 = window_start(x_2, size_2);
-    uint _e10 = params.width;
-    uint _e11 = window_end(x_2, size_2, _e10);
-    uint _e12 = window_start(y, size_2);
-    uint _e15 = params.height;
-    uint _e16 = window_end(y, size_2, _e15);
+    uint w = params.width;
+    uint h = params.height;
+    uint _e12 = window_start(x_2, size_2);
+    uint _e13 = window_end(x_2, size_2, w);
+    uint _e14 = window_start(y, size_2);
+    uint _e15 = window_end(y, size_2, h);
     win.sum = metal::float3(0.0);
     win.weight = 0.0;
     win.covered = 0u;
-    yy = _e12;
+    yy = _e14;
     uint2 loop_bound = uint2(4294967295u);
     bool loop_init = true;
     while(true) {
         if (metal::all(loop_bound == uint2(0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         if (!loop_init) {
-            uint _e75 = yy;
-            yy = _e75 + 1u;
+            uint _e63 = yy;
+            yy = _e63 + 1u;
         }
         loop_init = false;
-        uint _e26 = yy;
-        if (_e26 < _e16) {
+        uint _e25 = yy;
+        if (_e25 < _e15) {
         } else {
             break;
         }
         {
-            xx = _e7;
+            xx = _e12;
             uint2 loop_bound_1 = uint2(4294967295u);
             bool loop_init_1 = true;
             while(true) {
                 if (metal::all(loop_bound_1 == uint2(0u))) { break; }
                 loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
                 if (!loop_init_1) {
-                    uint _e72 = xx;
-                    xx = _e72 + 1u;
+                    uint _e60 = xx;
+                    xx = _e60 + 1u;
                 }
                 loop_init_1 = false;
-                uint _e29 = xx;
-                if (_e29 < _e11) {
+                uint _e28 = xx;
+                if (_e28 < _e13) {
                 } else {
                     break;
                 }
                 {
-                    uint _e31 = yy;
-                    uint _e36 = xx;
-                    uint k_1 = ((_e31 - origin.y) * SIDE) + (_e36 - origin.x);
-                    metal::float4 s_2 = wg_surface.inner[k_1];
-                    float _e45 = bilateral_weight(n_1, s_2.xyz, z_2, s_2.w, inv);
-                    metal::float3 _e47 = win.sum;
-                    float _e50 = wg_red.inner[k_1];
-                    float _e53 = wg_green.inner[k_1];
-                    float _e56 = wg_blue.inner[k_1];
-                    win.sum = _e47 + (metal::float3(_e50, _e53, _e56) * _e45);
-                    float _e61 = win.weight;
-                    win.weight = _e61 + _e45;
-                    uint _e64 = win.covered;
-                    win.covered = _e64 + ((_e45 > COVER_WEIGHT) ? 1u : 0u);
+                    uint _e30 = yy;
+                    uint _e32 = xx;
+                    uint j = (_e30 * w) + _e32;
+                    GbTexel _e34 = gbuffer_at(j, view, position_tex, normal_tex);
+                    float _e39 = bilateral_weight(n_1, _e34.normal.xyz, z_2, _e34.normal.w, inv);
+                    metal::float3 _e41 = win.sum;
+                    metal::float4 _e44 = irradiance[j];
+                    win.sum = _e41 + (_e44.xyz * _e39);
+                    float _e49 = win.weight;
+                    win.weight = _e49 + _e39;
+                    uint _e52 = win.covered;
+                    win.covered = _e52 + ((_e39 > COVER_WEIGHT) ? 1u : 0u);
                 }
             }
         }
     }
-    Window _e77 = win;
-    return _e77;
+    Window _e65 = win;
+    return _e65;
 }
 
 struct main_Input {
 };
 kernel void main_(
   metal::uint3 gid [[thread_position_in_grid]]
-, metal::uint3 wid [[threadgroup_position_in_grid]]
-, metal::uint3 local [[thread_position_in_threadgroup]]
-, uint lid [[thread_index_in_threadgroup]]
 , constant VplParams& params [[user(fake0)]]
 , constant ViewParams& view [[user(fake0)]]
 , metal::texture2d<float, metal::access::sample> position_tex [[user(fake0)]]
 , metal::texture2d<float, metal::access::sample> normal_tex [[user(fake0)]]
 , device type_7 const& irradiance [[user(fake0)]]
 , device type_7& filtered [[user(fake0)]]
-, threadgroup type_9& wg_surface
-, threadgroup type_10& wg_red
-, threadgroup type_10& wg_green
-, threadgroup type_10& wg_blue
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
-    if (lid == 0u) {
-        wg_surface = {};
-        wg_red = {};
-        wg_green = {};
-        wg_blue = {};
-    }
-    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-    uint k = {};
-    metal::float4 s = {};
-    metal::float3 e = {};
-    bool local_1 = {};
-    bool local_2 = {};
-    bool local_3 = {};
-    bool local_4 = {};
-    Window s_1 = {};
-    uint w = params.width;
-    uint h = params.height;
-    metal::int2 corner = as_type<metal::int2>(as_type<metal::uint2>(static_cast<metal::int2>(wid.xy * TILE)) - as_type<metal::uint2>(metal::int2(8)));
-    k = lid;
-    uint2 loop_bound_2 = uint2(4294967295u);
-    bool loop_init_2 = true;
-    while(true) {
-        if (metal::all(loop_bound_2 == uint2(0u))) { break; }
-        loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
-        if (!loop_init_2) {
-            uint _e95 = k;
-            k = _e95 + 64u;
-        }
-        loop_init_2 = false;
-        uint _e18 = k;
-        if (_e18 < 529u) {
-        } else {
-            break;
-        }
-        {
-            uint _e21 = k;
-            uint _e25 = k;
-            metal::int2 p_1 = as_type<metal::int2>(as_type<metal::uint2>(corner) + as_type<metal::uint2>(metal::int2(static_cast<int>(naga_mod(_e21, SIDE)), static_cast<int>(naga_div(_e25, SIDE)))));
-            s = metal::float4(0.0, 0.0, 0.0, 1000000000000000000000000000000.0);
-            e = metal::float3(0.0);
-            if (p_1.x >= 0) {
-                local_1 = p_1.y >= 0;
-            } else {
-                local_1 = false;
-            }
-            bool _e49 = local_1;
-            if (_e49) {
-                local_2 = static_cast<uint>(p_1.x) < w;
-            } else {
-                local_2 = false;
-            }
-            bool _e56 = local_2;
-            if (_e56) {
-                local_3 = static_cast<uint>(p_1.y) < h;
-            } else {
-                local_3 = false;
-            }
-            bool _e63 = local_3;
-            if (_e63) {
-                uint j = (static_cast<uint>(p_1.y) * w) + static_cast<uint>(p_1.x);
-                GbTexel _e70 = gbuffer_at(j, view, position_tex, normal_tex);
-                s = _e70.normal;
-                metal::float4 _e74 = irradiance[j];
-                e = _e74.xyz;
-            }
-            uint _e77 = k;
-            metal::float4 _e79 = s;
-            wg_surface.inner[_e77] = _e79;
-            uint _e81 = k;
-            float _e84 = e.x;
-            wg_red.inner[_e81] = _e84;
-            uint _e86 = k;
-            float _e89 = e.y;
-            wg_green.inner[_e86] = _e89;
-            uint _e91 = k;
-            float _e94 = e.z;
-            wg_blue.inner[_e91] = _e94;
-        }
-    }
-    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-    if (!((gid.x >= w))) {
-        local_4 = gid.y >= h;
+    bool local = {};
+    Window s = {};
+    uint w_1 = params.width;
+    uint h_1 = params.height;
+    if (!((gid.x >= w_1))) {
+        local = gid.y >= h_1;
     } else {
-        local_4 = true;
+        local = true;
     }
-    bool _e106 = local_4;
-    if (_e106) {
+    bool _e15 = local;
+    if (_e15) {
         return;
     }
-    uint i_1 = (gid.y * w) + gid.x;
-    metal::float4 e_2 = irradiance[i_1];
-    metal::uint2 origin_1 = static_cast<metal::uint2>(corner);
-    metal::float4 own = wg_surface.inner[(((local.y + APRON) * SIDE) + local.x) + APRON];
-    if (own.w >= DEPTH_NONE) {
-        filtered[i_1] = metal::float4(0.0, 0.0, 0.0, e_2.w);
+    uint i_1 = (gid.y * w_1) + gid.x;
+    metal::float4 e_1 = irradiance[i_1];
+    GbTexel _e23 = gbuffer_at(i_1, view, position_tex, normal_tex);
+    if (_e23.position.w <= 0.0) {
+        filtered[i_1] = metal::float4(0.0, 0.0, 0.0, e_1.w);
         return;
     }
-    metal::float3 n_3 = own.xyz;
-    float z_3 = own.w;
-    float _e139 = inv_sigma_z(z_3);
-    Window _e143 = window_sum(gid.x, gid.y, PERIOD, origin_1, n_3, z_3, _e139, params, wg_surface, wg_red, wg_green, wg_blue);
-    s_1 = _e143;
-    uint _e146 = s_1.covered;
-    bool _e148 = misses_subset(_e146, PERIOD);
-    if (_e148) {
-        uint _e152 = wide_window(PERIOD);
-        Window _e153 = window_sum(gid.x, gid.y, _e152, origin_1, n_3, z_3, _e139, params, wg_surface, wg_red, wg_green, wg_blue);
-        s_1 = _e153;
+    metal::float3 n_3 = _e23.normal.xyz;
+    float z_3 = _e23.normal.w;
+    float _e39 = inv_sigma_z(z_3);
+    Window _e43 = window_sum(gid.x, gid.y, PERIOD, n_3, z_3, _e39, params, view, position_tex, normal_tex, irradiance, _buffer_sizes);
+    s = _e43;
+    uint _e46 = s.covered;
+    bool _e48 = misses_subset(_e46, PERIOD);
+    if (_e48) {
+        uint _e52 = wide_window(PERIOD);
+        Window _e53 = window_sum(gid.x, gid.y, _e52, n_3, z_3, _e39, params, view, position_tex, normal_tex, irradiance, _buffer_sizes);
+        s = _e53;
     }
-    metal::float3 _e158 = s_1.sum;
-    float _e160 = s_1.weight;
-    metal::float3 _e161 = filtered_irradiance(e_2.xyz, _e158, _e160);
-    filtered[i_1] = metal::float4(_e161, e_2.w);
+    metal::float3 _e58 = s.sum;
+    float _e60 = s.weight;
+    metal::float3 _e61 = filtered_irradiance(e_1.xyz, _e58, _e60);
+    filtered[i_1] = metal::float4(_e61, e_1.w);
     return;
 }

@@ -301,13 +301,9 @@ impl IndirectPass {
             glossy: desc.glossy,
             ..Features::default()
         };
-        for (kernel, what) in [
-            (Kernel::VplTiled, "max_compute_workgroup_storage_size (tile light list)"),
-            (Kernel::VplNear, "max_compute_workgroup_storage_size (tile light list)"),
-            (Kernel::VplDenoise, "max_compute_workgroup_storage_size (denoise window)"),
-        ] {
+        for kernel in [Kernel::VplTiled, Kernel::VplNear] {
             gpu.require(
-                what,
+                "max_compute_workgroup_storage_size (tile light list)",
                 slc_shared_shaders::vpl_workgroup_bytes(kernel, &base),
                 lim.max_compute_workgroup_storage_size as u64,
             )?;
