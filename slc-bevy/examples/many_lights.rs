@@ -19,7 +19,8 @@
 //! window to the PNG `SLC_BEVY_SCREENSHOT` names (if set); `SLC_BEVY_MODE`
 //! (`slc`, `default`, `unbounded`) picks the starting mode; `SLC_BEVY_SIZE`
 //! (`WxH`) the window's size; `SLC_BEVY_SHADOWS=off` starts without slc's
-//! shadows.
+//! shadows; `SLC_BEVY_EPSILON` sets slc's error bound ε (default 0.01; the
+//! bench too).
 //!
 //! **Frame-time bench** (no window, no display): `SLC_BEVY_BENCH=out.json`
 //! renders into an image target at `SLC_BEVY_SIZE` (default 1920x1080)
@@ -32,7 +33,11 @@
 //! (default 64, at most 120) back to back; it reports per configuration
 //! the median GPU time of each of Bevy's top-level passes and slc's
 //! (`render/slc`), their sum (the GPU frame), and the median wall time of
-//! a frame, as a table and as JSON. Run it once per light count:
+//! a frame, as a table and as JSON. Every frame waits for the GPU to finish
+//! (an image target paces nothing: unwaited, the CPU ran ahead and the
+//! timestamps after a change were the previous configuration's), so the
+//! wall time is the CPU's and the GPU's work one after the other. Run it
+//! once per light count:
 //!
 //! ```text
 //! SLC_BEVY_BENCH=bench-4000.json cargo run --release --manifest-path slc-bevy/Cargo.toml --ignore-rust-version --example many_lights 4000
@@ -190,9 +195,26 @@ fn setup(
     let camera = commands
         .spawn((
             Camera3d::default(),
-            SlcCamera {
-                shadows: std::env::var("SLC_BEVY_SHADOWS").as_deref() != Ok("off"),
-                ..default()
+            {
+                let c = SlcCamera::default();
+                let culling =
+                    match std::env::var("SLC_BEVY_EPSILON") {
+                        Ok(e) => match e.parse().map_err(|_| e.clone()).and_then(|e| {
+                            c.culling.with_error_bound(e).map_err(|err| err.to_string())
+                        }) {
+                            Ok(culling) => culling,
+                            Err(err) => {
+                                eprintln!("SLC_BEVY_EPSILON: {err}");
+                                std::process::exit(2);
+                            }
+                        },
+                        Err(_) => c.culling,
+                    };
+                SlcCamera {
+                    shadows: std::env::var("SLC_BEVY_SHADOWS").as_deref() != Ok("off"),
+                    culling,
+                    ..c
+                }
             },
             Tonemapping::AcesFitted,
             Transform::from_xyz(0.0, 60.0, 120.0).looking_at(Vec3::ZERO, Vec3::Y),
@@ -387,6 +409,20 @@ fn median(mut v: Vec<f64>) -> f64 {
     v[v.len() / 2]
 }
 
+/// One frame of the bench, then a wait until the GPU has run everything
+/// submitted so far. Rendering into an image, nothing paces the CPU (no
+/// swap chain): unthrottled, it ran frames far ahead of an NVIDIA H200, so
+/// the timestamps read after a configuration change were the previous
+/// configuration's. Waiting keeps each configuration's timestamps its own;
+/// the wall time is then the CPU's and the GPU's work one after the other.
+fn step(app: &mut App) {
+    use bevy::render::renderer::RenderDevice;
+    app.update();
+    let device = app.world().resource::<RenderDevice>().clone();
+    // An error here (a lost device) shows as missing timestamps.
+    let _ = device.poll(wgpu::PollType::wait_indefinitely());
+}
+
 /// The frame-time bench (see the module docs): every configuration of
 /// [`CONFIGS`] with `lights` lights, written to `out` as JSON.
 fn bench(lights: usize, out: &str) -> Result<(), String> {
@@ -454,7 +490,7 @@ fn bench(lights: usize, out: &str) -> Result<(), String> {
         let start = Instant::now();
         let mut n = 0;
         while n < 3 || start.elapsed() < Duration::from_millis(500) {
-            app.update();
+            step(&mut app);
             n += 1;
         }
         // Timestamps arrive a few frames late: what is in flight is
@@ -466,17 +502,17 @@ fn bench(lights: usize, out: &str) -> Result<(), String> {
             }
         };
         for _ in 0..2 {
-            app.update();
+            step(&mut app);
         }
         clear(&mut app);
         let mut wall = Vec::with_capacity(frames);
         for _ in 0..frames {
             let t = Instant::now();
-            app.update();
+            step(&mut app);
             wall.push(t.elapsed().as_secs_f64() * 1e3);
         }
         for _ in 0..4 {
-            app.update();
+            step(&mut app);
         }
         let store = app.world().resource::<DiagnosticsStore>();
         // Bevy's top-level spans: render/<pass>/elapsed_gpu (nested ones
