@@ -32,8 +32,10 @@
 //! at least 0.5 s and 3 frames, then times `SLC_BEVY_BENCH_FRAMES` frames
 //! (default 64, at most 120) back to back; it reports per configuration
 //! the median GPU time of each of Bevy's top-level passes and slc's
-//! (`render/slc`), their sum (the GPU frame), and the median wall time of
-//! a frame, as a table and as JSON. Every frame waits for the GPU to finish
+//! (`render/slc`), their sum (the GPU frame), the median wall time of a
+//! frame, and for slc's configurations its work per shaded pixel (lights in
+//! range, evaluated, shadow rays, BVH nodes: one counted frame after the
+//! timed ones, the same on every adapter), as a table and as JSON. Every frame waits for the GPU to finish
 //! (an image target paces nothing: unwaited, the CPU ran ahead and the
 //! timestamps after a change were the previous configuration's), so the
 //! wall time is the CPU's and the GPU's work one after the other. Run it
@@ -423,6 +425,28 @@ fn step(app: &mut App) {
     let _ = device.poll(wgpu::PollType::wait_indefinitely());
 }
 
+/// slc's work in one frame with [`SlcCamera::count_work`] set (it counts
+/// on the render thread, which runs a frame behind: three frames, then the
+/// setting off again), or `None` where nothing was counted.
+fn count_work(app: &mut App) -> Option<slc_bevy::DirectCounts> {
+    let set = |app: &mut App, on: bool| {
+        let world = app.world_mut();
+        let mut cameras = world.query::<&mut SlcCamera>();
+        for mut c in cameras.iter_mut(world) {
+            c.count_work = on;
+        }
+    };
+    set(app, true);
+    for _ in 0..3 {
+        step(app);
+    }
+    set(app, false);
+    step(app);
+    let world = app.world_mut();
+    let camera = world.query_filtered::<Entity, With<SlcCamera>>().iter(world).next()?;
+    world.resource::<slc_bevy::SlcWork>().get(camera)
+}
+
 /// The frame-time bench (see the module docs): every configuration of
 /// [`CONFIGS`] with `lights` lights, written to `out` as JSON.
 fn bench(lights: usize, out: &str) -> Result<(), String> {
@@ -539,12 +563,32 @@ fn bench(lights: usize, out: &str) -> Result<(), String> {
             "  {name:<28} GPU frame {gpu_total:8.3} ms (slc {slc:7.3} ms; {} passes, {samples} frames of timestamps); wall {cpu:8.2} ms/frame",
             passes.len()
         );
+        // slc's work per shaded pixel, from one counted frame after the
+        // timed ones (the same on every adapter).
+        let work = (mode == Mode::Slc).then(|| count_work(&mut app)).flatten();
+        if let Some(w) = &work {
+            println!(
+                "  {:<28} per shaded pixel: {:.1} lights in range, {:.1} evaluated, {:.2} shadow rays, {:.1} BVH nodes",
+                "",
+                w.per_pixel(w.candidates),
+                w.per_pixel(w.evaluations),
+                w.per_pixel(w.rays),
+                w.per_pixel(w.nodes)
+            );
+        }
         results.push(serde_json::json!({
             "configuration": name,
             "gpu_frame_ms": gpu_total,
             "slc_ms": slc,
             "timestamped_frames": samples,
             "wall_ms": cpu,
+            "work_per_pixel": work.map(|w| serde_json::json!({
+                "pixels": w.pixels,
+                "in_range": w.per_pixel(w.candidates),
+                "evaluated": w.per_pixel(w.evaluations),
+                "shadow_rays": w.per_pixel(w.rays),
+                "bvh_nodes": w.per_pixel(w.nodes),
+            })),
             "passes_ms": passes.iter().map(|p| (p.0.clone(), serde_json::json!(p.1))).collect::<serde_json::Map<_, _>>(),
         }));
     }

@@ -143,6 +143,7 @@ use bevy::render::view::{ExtractedView, Msaa, ViewTarget};
 use bevy::render::{Extract, ExtractSchedule, Render, RenderApp, RenderStartup, RenderSystems};
 /// How an [`SlcCamera`]'s lights are culled (slc's one culling vocabulary).
 pub use slc_wgpu::Culling;
+pub use slc_wgpu::passes::DirectCounts;
 use slc_wgpu::passes::{
     DirectInputs, DirectOutputs, DirectPass, DirectPassDesc, DirectReuse, DirectSelection,
     DirectSettings, MaterialInputs, Shadows, TemporalInputs, TemporalPass, TemporalPassDesc,
@@ -206,6 +207,15 @@ pub struct SlcCamera {
     /// Shadow every pick against the scene's meshes (see the crate docs);
     /// off: light passes through everything, as with no shadow maps.
     pub shadows: bool,
+    /// Count the direct pass's work every frame while set, into
+    /// [`SlcWork`]: lights in range, lights evaluated, shadow rays and
+    /// occluder BVH nodes per shaded pixel (slc-wgpu's
+    /// `DirectPass::count_work`, the same on every adapter). The counting
+    /// variant of the kernel is submitted and read back on the render
+    /// thread, which waits for it: never in timed frames. It counts the
+    /// view's G-buffer as the previous frame left it (its record runs before
+    /// this frame's unpack); the image is unchanged.
+    pub count_work: bool,
 }
 
 impl Default for SlcCamera {
@@ -222,6 +232,7 @@ impl Default for SlcCamera {
             accumulate: true,
             max_history: 32.0,
             shadows: true,
+            count_work: false,
         }
     }
 }
@@ -242,6 +253,19 @@ pub struct SlcLight;
 #[derive(Resource, Clone, Default)]
 pub struct SlcStatus(pub Arc<Mutex<HashMap<Entity, Result<u64, String>>>>);
 
+/// The direct pass's work in the last counted frame, per camera
+/// (main-world entity), for cameras with [`SlcCamera::count_work`] set.
+/// Shared with the render world; read it from the main world.
+#[derive(Resource, Clone, Default)]
+pub struct SlcWork(pub Arc<Mutex<HashMap<Entity, DirectCounts>>>);
+
+impl SlcWork {
+    /// The last counts for the main-world camera `camera`.
+    pub fn get(&self, camera: Entity) -> Option<DirectCounts> {
+        self.0.lock().ok()?.get(&camera).copied()
+    }
+}
+
 impl SlcStatus {
     /// The report for the main-world camera `camera`.
     pub fn get(&self, camera: Entity) -> Option<Result<u64, String>> {
@@ -253,6 +277,8 @@ impl Plugin for SlcPlugin {
     fn build(&self, app: &mut App) {
         let status = SlcStatus::default();
         app.insert_resource(status.clone());
+        let work = SlcWork::default();
+        app.insert_resource(work.clone());
         let shaders = add_shaders(app);
         app.insert_resource(shaders.clone());
         app.add_plugins(ExtractComponentPlugin::<SlcCamera>::default());
@@ -266,6 +292,7 @@ impl Plugin for SlcPlugin {
         let Some(render_app) = app.get_sub_app_mut(RenderApp) else { return };
         render_app
             .insert_resource(status)
+            .insert_resource(work)
             .insert_resource(shaders)
             .init_resource::<ExtractedLights>()
             .init_resource::<ExtractedOccluders>()
@@ -912,6 +939,7 @@ fn shade_view(
     cache: Res<PipelineCache>,
     mut views: ResMut<Views>,
     status: Res<SlcStatus>,
+    work: Res<SlcWork>,
     mut ctx: RenderContext,
 ) {
     let Some(gpu) = gpu else { return };
@@ -1002,6 +1030,10 @@ fn shade_view(
         let settings =
             DirectSettings { culling: v.settings.culling, seed: v.settings.seed, frame: v.frame };
         v.pass.record(encoder, &inputs, &settings).map_err(|e| e.to_string())?;
+        if v.settings.count_work {
+            let counts = v.pass.count_work(&inputs, &settings).map_err(|e| e.to_string())?;
+            work.0.lock().unwrap_or_else(|e| e.into_inner()).insert(main, counts);
+        }
         if v.settings.accumulate {
             let history = TemporalSettings { max_history: v.settings.max_history };
             let history = if v.changed { history.after_change() } else { history };

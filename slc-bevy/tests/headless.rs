@@ -43,7 +43,7 @@ use bevy::render::view::screenshot::{Screenshot, ScreenshotCaptured};
 use bevy::window::ExitCondition;
 use bevy::winit::WinitPlugin;
 use rand::{Rng, SeedableRng};
-use slc_bevy::{Culling, SlcCamera, SlcLight, SlcPlugin, SlcStatus};
+use slc_bevy::{Culling, SlcCamera, SlcLight, SlcPlugin, SlcStatus, SlcWork};
 use std::sync::{Arc, Mutex};
 
 /// Phase 6: an emissive mesh lights the floor.
@@ -542,6 +542,7 @@ fn run() -> Result<(), String> {
             mean(&truth)
         ));
     }
+    println!("work: {}", work(&mut app, camera)?);
     println!("shadows: {}", shadows(&mut app)?);
     println!("emissive: {}", emissive::emissive(&mut app)?);
     let status = app.world().resource::<SlcStatus>().get(camera);
@@ -549,6 +550,55 @@ fn run() -> Result<(), String> {
         return Err(format!("slc did not shade the camera: {status:?}"));
     }
     Ok(())
+}
+
+/// `SlcCamera::count_work` (resampled picks, no reuse), unshadowed and
+/// shadowed: `SlcWork` holds the frame's counts, consistent with the
+/// settings: some pixels of the image shaded, lights in range, every one of
+/// them evaluated (resampled picks); no ray unshadowed; shadowed, at most
+/// one ray per pick, each visiting the occluders' BVH.
+fn work(app: &mut App, camera: Entity) -> Result<String, String> {
+    let mut lines = Vec::new();
+    let was = app.world().get::<SlcCamera>(camera).expect("camera").shadows;
+    for shadows in [false, true] {
+        {
+            let mut c = app.world_mut().get_mut::<SlcCamera>(camera).expect("camera");
+            (c.count_work, c.shadows) = (true, shadows);
+        }
+        for _ in 0..3 {
+            app.update();
+        }
+        app.world_mut().get_mut::<SlcCamera>(camera).expect("camera").count_work = false;
+        let c = app.world().resource::<SlcWork>().get(camera).ok_or("SlcWork counted nothing")?;
+        app.world().resource::<SlcWork>().0.lock().unwrap().clear();
+        let (w, h) = size();
+        let picks = u64::from(SlcCamera::default().picks);
+        let line = format!(
+            "{} {} pixels; per pixel {:.1} lights in range, {:.1} evaluated, {:.2} shadow rays, {:.1} BVH nodes",
+            if shadows { "shadowed" } else { "unshadowed" },
+            c.pixels,
+            c.per_pixel(c.candidates),
+            c.per_pixel(c.evaluations),
+            c.per_pixel(c.rays),
+            c.per_pixel(c.nodes)
+        );
+        let rays_ok = if shadows {
+            c.rays > 0 && c.rays <= picks * c.pixels && c.nodes > 0
+        } else {
+            c.rays == 0 && c.nodes == 0
+        };
+        let ok = c.pixels > 0
+            && c.pixels <= u64::from(w * h)
+            && c.candidates > 0
+            && c.evaluations == c.candidates
+            && rays_ok;
+        if !ok {
+            return Err(format!("inconsistent work counts: {line} ({c:?})"));
+        }
+        lines.push(line);
+    }
+    app.world_mut().get_mut::<SlcCamera>(camera).expect("camera").shadows = was;
+    Ok(lines.join("; "))
 }
 
 /// A Bevy shader (WESL, compiled by Bevy's pipeline cache) imports slc's
