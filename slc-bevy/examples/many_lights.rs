@@ -35,11 +35,11 @@
 //! (`render/slc`), their sum (the GPU frame), the median wall time of a
 //! frame, and for slc's configurations its work per shaded pixel (lights in
 //! range, evaluated, shadow rays, BVH nodes: one counted frame after the
-//! timed ones, the same on every adapter), as a table and as JSON. Every frame waits for the GPU to finish
-//! (an image target paces nothing: unwaited, the CPU ran ahead and the
-//! timestamps after a change were the previous configuration's), so the
-//! wall time is the CPU's and the GPU's work one after the other. Run it
-//! once per light count:
+//! timed ones, the same on every adapter), as a table and as JSON. Every
+//! frame waits for the GPU to finish (an image target paces nothing:
+//! unwaited, the CPU ran ahead and the timestamps after a change were the
+//! previous configuration's), so the wall time is the CPU's and the GPU's
+//! work one after the other. Run it once per light count:
 //!
 //! ```text
 //! SLC_BEVY_BENCH=bench-4000.json cargo run --release --manifest-path slc-bevy/Cargo.toml --ignore-rust-version --example many_lights 4000

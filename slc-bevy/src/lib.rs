@@ -253,6 +253,13 @@ pub struct SlcLight;
 #[derive(Resource, Clone, Default)]
 pub struct SlcStatus(pub Arc<Mutex<HashMap<Entity, Result<u64, String>>>>);
 
+impl SlcStatus {
+    /// The report for the main-world camera `camera`.
+    pub fn get(&self, camera: Entity) -> Option<Result<u64, String>> {
+        self.0.lock().ok()?.get(&camera).cloned()
+    }
+}
+
 /// The direct pass's work in the last counted frame, per camera
 /// (main-world entity), for cameras with [`SlcCamera::count_work`] set.
 /// Shared with the render world; read it from the main world.
@@ -263,13 +270,6 @@ impl SlcWork {
     /// The last counts for the main-world camera `camera`.
     pub fn get(&self, camera: Entity) -> Option<DirectCounts> {
         self.0.lock().ok()?.get(&camera).copied()
-    }
-}
-
-impl SlcStatus {
-    /// The report for the main-world camera `camera`.
-    pub fn get(&self, camera: Entity) -> Option<Result<u64, String>> {
-        self.0.lock().ok()?.get(&camera).cloned()
     }
 }
 
