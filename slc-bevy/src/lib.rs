@@ -84,8 +84,12 @@
 //! exposure, placed every frame (moved, spawned or recoloured emitters
 //! follow; `O(triangles)` per frame; each mesh asset's triangles are read
 //! once and again only when the asset changes); [`NotSlcLight`] keeps an emissive
-//! mesh from becoming lights (it is only shown). The emissive texture and
-//! `emissive_exposure_weight` (a display setting) are not applied. Bevy
+//! mesh from becoming lights (it is only shown). An `emissive_texture`
+//! scales each triangle by the texture's mean over its UVs (the material's
+//! UV channel and `uv_transform`, the image's address modes; a pattern
+//! finer than the triangles is averaged over each; `emissive.rs`); a
+//! texture that cannot be read (a compressed format) is left out with one
+//! warning. `emissive_exposure_weight` (a display setting) is not applied. Bevy
 //! itself only shows an emissive surface; slc lets it light the others,
 //! as Bevy's Solari does with hardware ray tracing.
 //!
@@ -117,6 +121,8 @@
 //! reported in [`SlcStatus`]): the camera is `Hdr` with `Msaa::Off`,
 //! `DepthPrepass` and `DeferredPrepass` ([`SlcCamera`] requires them).
 
+mod emissive;
+
 use bevy::camera::Hdr;
 use bevy::camera::visibility::RenderLayers;
 use bevy::core_pipeline::Core3d;
@@ -126,6 +132,7 @@ use bevy::core_pipeline::prepass::{
     DeferredPrepass, DepthPrepass, MotionVectorPrepass, ViewPrepassTextures,
 };
 use bevy::light::NotShadowCaster;
+use bevy::mesh::UvChannel;
 use bevy::prelude::*;
 use bevy::render::camera::ExtractedCamera;
 use bevy::render::diagnostic::RecordDiagnostics;
@@ -364,21 +371,36 @@ type EmitterItem = (
 /// lights nothing), read once and kept until the asset changes.
 type EmitterCache = HashMap<AssetId<Mesh>, Result<Vec<[glam::Vec3; 3]>, String>>;
 
+/// Each textured emitter's per-triangle texture means
+/// ([`emissive::triangle_means`]) by mesh, image, UV channel and
+/// `uv_transform` (its bits), kept until the mesh or image changes.
+type TextureCache =
+    HashMap<(AssetId<Mesh>, AssetId<Image>, bool, [u32; 6]), Result<Vec<glam::Vec3>, String>>;
+
 #[allow(clippy::too_many_arguments)] // A system's parameters.
 fn extract_lights(
     mut out: ResMut<ExtractedLights>,
     mut cache: Local<EmitterCache>,
+    mut textured: Local<TextureCache>,
     points: Extract<Query<(&PointLight, &GlobalTransform), With<SlcLight>>>,
     spots: Extract<Query<(&SpotLight, &GlobalTransform), With<SlcLight>>>,
     emitters: Extract<Query<EmitterItem, Without<NotSlcLight>>>,
     meshes: Extract<Res<Assets<Mesh>>>,
+    images: Extract<Res<Assets<Image>>>,
     materials: Extract<Res<Assets<StandardMaterial>>>,
     mut events: Extract<MessageReader<AssetEvent<Mesh>>>,
+    mut image_events: Extract<MessageReader<AssetEvent<Image>>>,
 ) {
     out.0.clear();
     for e in events.read() {
         if let AssetEvent::Modified { id } | AssetEvent::Removed { id } = e {
             cache.remove(id);
+            textured.retain(|k, _| k.0 != *id);
+        }
+    }
+    for e in image_events.read() {
+        if let AssetEvent::Modified { id } | AssetEvent::Removed { id } = e {
+            textured.retain(|k, _| k.1 != *id);
         }
     }
     let mut emitting = 0;
@@ -405,8 +427,47 @@ fn extract_lights(
                 continue;
             }
         };
+        // A textured emitter: each triangle's texture mean, read once per
+        // mesh, image and mapping (not loaded yet: next frame).
+        let means = match &m.emissive_texture {
+            None => None,
+            Some(texture) => {
+                let uv = m.uv_transform.to_cols_array().map(f32::to_bits);
+                let key = (mesh.id(), texture.id(), m.emissive_channel == UvChannel::Uv1, uv);
+                if let std::collections::hash_map::Entry::Vacant(slot) = textured.entry(key) {
+                    let (Some(asset), Some(image)) = (meshes.get(mesh.id()), images.get(texture))
+                    else {
+                        continue;
+                    };
+                    slot.insert(emissive::triangle_means(
+                        asset,
+                        image,
+                        m.emissive_channel.clone(),
+                        m.uv_transform,
+                    ));
+                }
+                match &textured[&key] {
+                    Ok(means) if means.len() == tris.len() => Some(means),
+                    Ok(_) => {
+                        warn_once!(
+                            "slc: an emissive mesh's texture means do not match its triangles: its texture is not applied"
+                        );
+                        None
+                    }
+                    Err(e) => {
+                        warn_once!("slc: {e}: the emissive mesh lights without its texture");
+                        None
+                    }
+                }
+            }
+        };
         let a = glam::Affine3A::from_cols_array(&transform.affine().to_cols_array());
-        for t in tris {
+        for (i, t) in tris.iter().enumerate() {
+            let nits = means.map_or(nits, |m| nits * m[i]);
+            // A black part of the texture lights nothing: no light.
+            if nits.max_element() <= 0.0 {
+                continue;
+            }
             let v = t.map(|p| a.transform_point3(p));
             out.0.push(BevyLight::Triangle { vertices: v, nits });
             if m.double_sided {
@@ -418,6 +479,9 @@ fn extract_lights(
     // the cache is no longer in use.
     if cache.len() > 64 + 2 * emitting {
         cache.clear();
+    }
+    if textured.len() > 64 + 2 * emitting {
+        textured.clear();
     }
     for (light, transform) in &points {
         out.0.push(BevyLight::Point {

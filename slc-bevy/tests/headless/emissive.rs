@@ -38,6 +38,7 @@ pub(super) fn emissive(app: &mut App) -> Result<String, String> {
         ..default()
     };
     let glow = world.resource_mut::<Assets<StandardMaterial>>().add(glow);
+    let glow_id = glow.id();
     world.spawn((
         Mesh3d(quad.clone()),
         MeshMaterial3d(glow.clone()),
@@ -112,8 +113,6 @@ pub(super) fn emissive(app: &mut App) -> Result<String, String> {
     ]);
 
     // Per block on the floor: the frames' mean against the integral.
-    let per_frame: Vec<Vec<f64>> = shots.iter().map(|f| blocks(f)).collect();
-    let b = blocks(&slc);
     let bw = w / BLOCK;
     let on_floor = |blk: u32| {
         let (bx, by) = (blk % bw, blk / bw);
@@ -121,19 +120,9 @@ pub(super) fn emissive(app: &mut App) -> Result<String, String> {
             (bx * BLOCK..(bx + 1) * BLOCK).all(|x| expected[(y * w + x) as usize].is_some())
         })
     };
+    let b = blocks(&slc);
     let a = blocks(&expected.iter().map(|e| e.unwrap_or_default()).collect::<Vec<_>>());
-    let z = gaussian_quantile(0.001 / (2.0 * a.len() as f64));
-    let (mut checked, mut worst) = (0, (0.0f64, 0usize));
-    for i in 0..a.len() {
-        if !on_floor(i as u32) {
-            continue;
-        }
-        checked += 1;
-        let bound = block_bound(z, &per_frame, i, b[i], a[i]);
-        if (b[i] - a[i]).abs() / bound > worst.0 {
-            worst = ((b[i] - a[i]).abs() / bound, i);
-        }
-    }
+    let (checked, worst) = floor_blocks(&shots, &expected, &on_floor, [1.0; 3]);
     let report = format!(
         "an emissive 3x3 m quad (2 triangle lights) over {checked} floor blocks against its integral: worst block at {:.2} of its bound; brightest block {:.4}",
         worst.0,
@@ -146,6 +135,37 @@ pub(super) fn emissive(app: &mut App) -> Result<String, String> {
     if checked < 48 {
         return Err(format!("{report}\ntoo few floor blocks"));
     }
+
+    // The same quad with an emissive texture of one colour: each triangle
+    // emits `emissive` times the texture's mean over its UVs, here that
+    // colour (sRGB-decoded), so every floor block matches the integral
+    // scaled per channel.
+    let tint = LinearRgba::from(Color::srgb_u8(255, 153, 77));
+    let texture = Image::new_fill(
+        bevy::render::render_resource::Extent3d { width: 4, height: 4, depth_or_array_layers: 1 },
+        bevy::render::render_resource::TextureDimension::D2,
+        &[255, 153, 77, 255],
+        TextureFormat::Rgba8UnormSrgb,
+        RenderAssetUsages::default(),
+    );
+    let world = app.world_mut();
+    let texture = world.resource_mut::<Assets<Image>>().add(texture);
+    world
+        .resource_mut::<Assets<StandardMaterial>>()
+        .get_mut(glow_id)
+        .expect("the glow")
+        .emissive_texture = Some(texture);
+    let tinted = capture(app, 4, FRAMES);
+    let scale = [tint.red, tint.green, tint.blue];
+    let (checked, tinted_worst) = floor_blocks(&tinted, &expected, &on_floor, scale);
+    let report = format!(
+        "{report}; with a uniform emissive texture {scale:.3?} (linear), {checked} blocks, worst at {:.2} of its bound",
+        tinted_worst.0
+    );
+    if tinted_worst.0 > 1.0 {
+        return Err(format!("{report}\nthe textured quad's block {} is off", tinted_worst.1));
+    }
+    world_clear_texture(app, &glow_id);
 
     // The quad's mesh asset edited to a 100× smaller side (10⁻⁴ of the
     // area): its triangles are read again and the floor gets next to
@@ -165,4 +185,45 @@ pub(super) fn emissive(app: &mut App) -> Result<String, String> {
         "{report}; edited to 1e-4 of its area, the floor keeps {:.1e} of its light",
         left / lit
     ))
+}
+
+/// The quad's material without its texture again.
+fn world_clear_texture(app: &mut App, glow: &AssetId<StandardMaterial>) {
+    let mut materials = app.world_mut().resource_mut::<Assets<StandardMaterial>>();
+    materials.get_mut(*glow).expect("the glow").emissive_texture = None;
+}
+
+/// The floor blocks (`on_floor`) of the frames' mean against the integral
+/// `expected` scaled per channel by `scale`, each within the bound of
+/// [`compare`](super::compare): how many were checked and the worst one's
+/// error over its bound and index.
+fn floor_blocks(
+    shots: &[Vec<[f32; 3]>],
+    expected: &[Option<[f32; 3]>],
+    on_floor: &dyn Fn(u32) -> bool,
+    scale: [f32; 3],
+) -> (usize, (f64, usize)) {
+    let scaled: Vec<[f32; 3]> = expected
+        .iter()
+        .map(|e| {
+            let e = e.unwrap_or_default();
+            [e[0] * scale[0], e[1] * scale[1], e[2] * scale[2]]
+        })
+        .collect();
+    let a = blocks(&scaled);
+    let b = blocks(&mean_image(shots));
+    let per_frame: Vec<Vec<f64>> = shots.iter().map(|f| blocks(f)).collect();
+    let z = gaussian_quantile(0.001 / (2.0 * a.len() as f64));
+    let (mut checked, mut worst) = (0, (0.0f64, 0usize));
+    for i in 0..a.len() {
+        if !on_floor(i as u32) {
+            continue;
+        }
+        checked += 1;
+        let bound = block_bound(z, &per_frame, i, b[i], a[i]);
+        if (b[i] - a[i]).abs() / bound > worst.0 {
+            worst = ((b[i] - a[i]).abs() / bound, i);
+        }
+    }
+    (checked, worst)
 }
