@@ -120,20 +120,23 @@ fn scaled(s: Shaded, w: vec3f) -> Shaded {
     return Shaded(s.e * w, s.diffuse * w, s.specular * w);
 }
 
-/// How many of the picks `lights` hold light `lights[k]` when `k` is the
-/// first of them, else 0: a pick held `m` times is shaded once, weighted
-/// `m` times (one shadow ray instead of `m`).
-fn pick_copies(lights: array<u32, K>, k: u32) -> u32 {
-    var copies = 1u;
-    for (var j = 0u; j < K; j++) {
-        if j != k && lights[j] == lights[k] {
-            if j < k {
-                return 0u;
+/// Per slot, the first slot holding the same sample, or K where the slot
+/// holds none (`held[k]` false): slots whose `keys` are equal hold one
+/// sample (a light, and for a light with area the point on it), shaded
+/// once with the slots' weights summed in slot order (one shadow ray
+/// instead of several). Every selection's picks are merged by it.
+fn first_holders(keys: array<vec2u, K>, held: array<bool, K>) -> array<u32, K> {
+    var first: array<u32, K>;
+    for (var k = 0u; k < K; k++) {
+        first[k] = select(K, k, held[k]);
+        for (var j = 0u; j < k && held[k]; j++) {
+            if held[j] && all(keys[j] == keys[k]) {
+                first[k] = j;
+                break;
             }
-            copies += 1u;
         }
     }
-    return copies;
+    return first;
 }
 
 /// What a pick adds to the output: the irradiance{% if pbr == "radiance" or pbr == "bevy" %}, here the outgoing radiance{% elif pbr == "split" %} (the output) and the specular radiance{% endif %}.
@@ -202,12 +205,6 @@ fn reuse_material(s: ReuseSurface, eye: vec3f) -> Material {
     let b = unpack4x8unorm(s.base);
     let r = unpack2x16unorm(s.rough);
     return material_of(b.xyz, b.w, r.x, r.y, normalize(eye - s.x));
-}
-
-/// Whether two reused picks are the same sample (a light without area has
-/// one point for every grid cell).
-fn same_pick(la: u32, ca: u32, lb: u32, cb: u32) -> bool {
-    return la == lb && (ca == cb || lights[la].kind != LIGHT_TRIANGLE);
 }
 
 /// The previous-frame pixels pixel `x` (normal `n`, distance `d` from the
@@ -351,19 +348,30 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
 {% if selection == "weighted" %}
     let picks = bsh_weighted_collect(x, n, r, lobe, rl, seed);
     if picks.w_sum > 0.0 {
+        // The picks are independent, so a light may be picked more than
+        // once. A light without area (point, spot, IES, VPL) has no point
+        // to sample: its `copies` picks are one ray and one term, shaded
+        // once at its first pick with `copies` times a pick's weight (the
+        // same sum, `copies − 1` fewer shadow rays). A triangle's picks
+        // each sample a point of their own (keys of their own).
+        var keys: array<vec2u, K>;
+        var held: array<bool, K>;
+        for (var k = 0u; k < K; k++) {
+            let own = select(0u, k + 1u, lights[picks.light[k]].kind == LIGHT_TRIANGLE);
+            keys[k] = vec2u(picks.light[k], own);
+            held[k] = true;
+        }
+        let firsts = first_holders(keys, held);
         for (var k = 0u; k < K; k++) {
             h = pcg_hash(h);
             let u1 = xi_from_bits(h);
             h = pcg_hash(h);
             let u2 = xi_from_bits(h);
             let li = picks.light[k];
-            // The picks are independent, so a light may be picked more than
-            // once. A light without area (point, spot, IES, VPL) has no point
-            // to sample: its `copies` picks are one ray and one term, shaded once
-            // at its first pick with `copies` times a pick's weight (the same
-            // sum, `copies − 1` fewer shadow rays). A triangle's picks each
-            // sample a point of their own.
-            let copies = select(1u, pick_copies(picks.light, k), lights[li].kind != LIGHT_TRIANGLE);
+            var copies = 0u;
+            for (var j = k; j < K; j++) {
+                copies += select(0u, 1u, firsts[j] == k);
+            }
             if copies > 0u {
                 t = add(t, shade_pick(li, x, n, r, rl, m, weighted_pick_weight(picks.w_sum, picks.w[k], K) * f32(copies), u1, u2, eps));
             }
@@ -457,24 +465,31 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     // same sample cast one ray with their weights summed. With visibility
     // reuse a slot whose pick is occluded here keeps no pick for the next
     // frame.
+    // A light without area has one point for every grid cell.
+    var keys: array<vec2u, K>;
+    var held: array<bool, K>;
+    for (var k = 0u; k < K; k++) {
+        keys[k] = vec2u(fin[k].light, select(0u, fin[k].u, lights[fin[k].light].kind == LIGHT_TRIANGLE));
+        held[k] = fin[k].w > 0.0;
+    }
+    let firsts = first_holders(keys, held);
     var visible: array<bool, K>;
     for (var k = 0u; k < K; k++) {
-        var w = fin[k].w * slot_share(k, K);
-        var first = fin[k].w > 0.0;
-        for (var j = 0u; j < K; j++) {
-            if j != k && fin[j].w > 0.0 && same_pick(fin[j].light, fin[j].u, fin[k].light, fin[k].u) {
-                first = first && j > k;
+        if firsts[k] != k {
+            continue;
+        }
+        var w = vec3f(0.0);
+        for (var j = k; j < K; j++) {
+            if firsts[j] == k {
                 w += fin[j].w * slot_share(j, K);
             }
         }
-        if first {
-            let c = connect_record(lights[fin[k].light], x, n, n, UNRANGED, UNRANGED, 1.0, grid_coordinate(fin[k].u), grid_coordinate(fin[k].u << 16u), eps, true);
-            let shaded = shade_connection(c, x, n, m);
-            t = add(t, scaled(shaded, w));
-            for (var j = k; j < K; j++) {
-                if same_pick(fin[j].light, fin[j].u, fin[k].light, fin[k].u) {
-                    visible[j] = resample_target(output_of(shaded)) > 0.0;
-                }
+        let c = connect_record(lights[fin[k].light], x, n, n, UNRANGED, UNRANGED, 1.0, grid_coordinate(fin[k].u), grid_coordinate(fin[k].u << 16u), eps, true);
+        let shaded = shade_connection(c, x, n, m);
+        t = add(t, scaled(shaded, w));
+        for (var j = k; j < K; j++) {
+            if firsts[j] == k {
+                visible[j] = resample_target(output_of(shaded)) > 0.0;
             }
         }
     }
@@ -486,14 +501,20 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     }
     reuse_next[pixel].surface = reuse_surface(x, n, m, min(confidence, reuse.max_confidence));
 {% else %}
+    // A light is one candidate with one sampled point: the slots holding
+    // it hold the same pick, shaded once with their weights.
+    var keys: array<vec2u, K>;
+    var held: array<bool, K>;
     for (var k = 0u; k < K; k++) {
-        // A light is one candidate with one sampled point: the slots
-        // holding it hold the same pick, shaded once with their weights.
+        keys[k] = vec2u(slot_light[k], 0u);
+        held[k] = slot_p[k] > 0.0;
+    }
+    let firsts = first_holders(keys, held);
+    for (var k = 0u; k < K; k++) {
         var w = vec3f(0.0);
-        var first = slot_p[k] > 0.0;
-        for (var j = 0u; j < K; j++) {
-            if slot_p[j] > 0.0 && slot_light[j] == slot_light[k] {
-                first = first && j >= k;
+        let first = firsts[k] == k;
+        for (var j = k; j < K && first; j++) {
+            if firsts[j] == k {
                 w += slot_target(total, j, K) / slot_p[j] * slot_share(j, K);
             }
         }

@@ -227,29 +227,29 @@ fn connection_factor(cos_x: f32, d2_3: f32, rt2_1: f32, w_1: f32) -> f32 {
 }
 
 fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, r2_1: f32) -> f32 {
+    var local_4: bool;
     var local_5: bool;
-    var local_6: bool;
 
     let v_3 = (x_2 - y);
     let d2_6 = dot(v_3, v_3);
     let _e7 = slc_keep(r2_1, d2_6);
     if !(!(_e7)) {
-        local_5 = !((d2_6 > 0f));
+        local_4 = !((d2_6 > 0f));
     } else {
-        local_5 = true;
+        local_4 = true;
     }
-    let _e16 = local_5;
+    let _e16 = local_4;
     if _e16 {
         return 0f;
     }
     let w_7 = (v_3 / vec3(sqrt(d2_6)));
     let cos_x_1 = -(dot(n, w_7));
     if !((cos_x_1 <= 0f)) {
-        local_6 = (dot(ng, w_7) >= 0f);
+        local_5 = (dot(ng, w_7) >= 0f);
     } else {
-        local_6 = true;
+        local_5 = true;
     }
-    let _e32 = local_6;
+    let _e32 = local_5;
     if _e32 {
         return 0f;
     }
@@ -290,34 +290,34 @@ fn resample_target(c_1: vec3<f32>) -> f32 {
     return (((c_1.x + c_1.y) + c_1.z) * 0.33333334f);
 }
 
-fn slot_target(c_2: vec3<f32>, slot: u32, k_1: u32) -> f32 {
-    if (k_1 < 3u) {
+fn slot_target(c_2: vec3<f32>, slot: u32, k_2: u32) -> f32 {
+    if (k_2 < 3u) {
         let _e5 = resample_target(c_2);
         return _e5;
     }
-    let j_1 = (slot % 3u);
-    if (j_1 == 0u) {
+    let j_2 = (slot % 3u);
+    if (j_2 == 0u) {
         return c_2.x;
     }
-    if (j_1 == 1u) {
+    if (j_2 == 1u) {
         return c_2.y;
     }
     return c_2.z;
 }
 
-fn slot_share(slot_1: u32, k_2: u32) -> vec3<f32> {
-    if (k_2 < 3u) {
-        let _e4 = to_f32_(k_2);
+fn slot_share(slot_1: u32, k_3: u32) -> vec3<f32> {
+    if (k_3 < 3u) {
+        let _e4 = to_f32_(k_3);
         let w_8 = (1f / _e4);
         return vec3<f32>(w_8, w_8, w_8);
     }
-    let j_2 = (slot_1 % 3u);
-    let _e15 = to_f32_((((k_2 + 2u) - j_2) / 3u));
+    let j_3 = (slot_1 % 3u);
+    let _e15 = to_f32_((((k_3 + 2u) - j_3) / 3u));
     let w_9 = (1f / _e15);
-    if (j_2 == 0u) {
+    if (j_3 == 0u) {
         return vec3<f32>(w_9, 0f, 0f);
     }
-    if (j_2 == 1u) {
+    if (j_3 == 1u) {
         return vec3<f32>(0f, w_9, 0f);
     }
     return vec3<f32>(0f, 0f, w_9);
@@ -356,23 +356,23 @@ fn range_lobe(lobe_4: vec4<f32>) -> vec4<f32> {
 }
 
 fn cone_cos_of(v: vec3<f32>, d2_4: f32, a_2: f32, d: vec3<f32>) -> f32 {
+    var local_6: bool;
     var local_7: bool;
-    var local_8: bool;
 
     let vd = dot(v, d);
     let h2_ = (d2_4 - (a_2 * a_2));
     if !((h2_ <= 0f)) {
         if (vd >= 0f) {
-            local_8 = ((vd * vd) >= h2_);
+            local_7 = ((vd * vd) >= h2_);
         } else {
-            local_8 = false;
+            local_7 = false;
         }
-        let _e19 = local_8;
-        local_7 = _e19;
+        let _e19 = local_7;
+        local_6 = _e19;
     } else {
-        local_7 = true;
+        local_6 = true;
     }
-    let _e21 = local_7;
+    let _e21 = local_6;
     if _e21 {
         return 1f;
     }
@@ -429,9 +429,9 @@ fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin: vec3<f32>, bmax: vec3<f32>, t_
 }
 
 fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_3: vec3<f32>, b_3: vec3<f32>, c_3: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
+    var local_8: bool;
     var local_9: bool;
     var local_10: bool;
-    var local_11: bool;
 
     let e1_ = (b_3 - a_3);
     let e2_ = (c_3 - a_3);
@@ -444,32 +444,32 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_3: vec3<f32>, b_3: vec3<f32>, 
     let s_4 = (o_1 - a_3);
     let u_3 = (dot(s_4, p_2) * inv);
     if !((u_3 < 0f)) {
-        local_9 = (u_3 > 1f);
+        local_8 = (u_3 > 1f);
     } else {
-        local_9 = true;
+        local_8 = true;
     }
-    let _e28 = local_9;
+    let _e28 = local_8;
     if _e28 {
         return -1f;
     }
     let q_1 = cross(s_4, e1_);
     let v_5 = (dot(d_3, q_1) * inv);
     if !((v_5 < 0f)) {
-        local_10 = ((u_3 + v_5) > 1f);
+        local_9 = ((u_3 + v_5) > 1f);
     } else {
-        local_10 = true;
+        local_9 = true;
     }
-    let _e42 = local_10;
+    let _e42 = local_9;
     if _e42 {
         return -1f;
     }
     let t_3 = (dot(e2_, q_1) * inv);
     if (t_3 > t_min) {
-        local_11 = (t_3 < t_max_1);
+        local_10 = (t_3 < t_max_1);
     } else {
-        local_11 = false;
+        local_10 = false;
     }
-    let _e51 = local_11;
+    let _e51 = local_10;
     if _e51 {
         return t_3;
     }
@@ -608,8 +608,8 @@ fn bsh_inner_scale(a_5: f32, v_1: vec3<f32>, d2_5: f32, r_3: vec3<f32>, rl_2: ve
 }
 
 fn bsh_reaches(node_3: BshNode, x_4: vec3<f32>, r_4: vec3<f32>, rl_3: vec4<f32>) -> bool {
+    var local_11: bool;
     var local_12: bool;
-    var local_13: bool;
 
     let _e6 = sphere_contains_point(node_3.center, node_3.radius, x_4);
     if _e6 {
@@ -617,11 +617,11 @@ fn bsh_reaches(node_3: BshNode, x_4: vec3<f32>, r_4: vec3<f32>, rl_3: vec4<f32>)
     }
     if !((rl_3.w <= 1f)) {
         let _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001f)), x_4);
-        local_12 = !(_e20);
+        local_11 = !(_e20);
     } else {
-        local_12 = true;
+        local_11 = true;
     }
-    let _e23 = local_12;
+    let _e23 = local_11;
     if _e23 {
         return false;
     }
@@ -642,11 +642,11 @@ fn bsh_reaches(node_3: BshNode, x_4: vec3<f32>, r_4: vec3<f32>, rl_3: vec4<f32>)
     let s_c = (_e50 * 1.001f);
     let reach = (node_3.extent + (sqrt(s_c) * _e25));
     if (d2_7 <= ((node_3.radius * node_3.radius) * s_c)) {
-        local_13 = (d2_7 <= (reach * reach));
+        local_12 = (d2_7 <= (reach * reach));
     } else {
-        local_13 = false;
+        local_12 = false;
     }
-    let _e67 = local_13;
+    let _e67 = local_12;
     return _e67;
 }
 
@@ -680,8 +680,8 @@ fn bsh_next_leaf_lobe(nodes_3: u32, start: u32, x_5: vec3<f32>, r_5: vec3<f32>, 
 
 fn connect_record(l_2: GpuLight, x_6: vec3<f32>, n_1: vec3<f32>, ng_1: vec3<f32>, r2_2: f32, rt2_2: f32, w_res: f32, u1_1: f32, u2_1: f32, eps: f32, trace_1: bool) -> Connection {
     var c_4: Connection;
+    var local_13: bool;
     var local_14: bool;
-    var local_15: bool;
 
     c_4.e = vec3(0f);
     let _e16 = light_point(l_2, u1_1, u2_1);
@@ -694,16 +694,16 @@ fn connect_record(l_2: GpuLight, x_6: vec3<f32>, n_1: vec3<f32>, ng_1: vec3<f32>
         if trace_1 {
             let _e33 = c_4.y;
             let _e34 = occluded((x_6 + (ng_1 * eps)), _e33);
-            local_15 = _e34;
+            local_14 = _e34;
         } else {
-            local_15 = false;
+            local_14 = false;
         }
-        let _e36 = local_15;
-        local_14 = _e36;
+        let _e36 = local_14;
+        local_13 = _e36;
     } else {
-        local_14 = true;
+        local_13 = true;
     }
-    let _e38 = local_14;
+    let _e38 = local_13;
     if _e38 {
         let _e39 = c_4;
         return _e39;
@@ -771,6 +771,71 @@ fn scaled(s_2: Shaded, w_6: vec3<f32>) -> Shaded {
     return Shaded((s_2.e * w_6), (s_2.diffuse * w_6), (s_2.specular * w_6));
 }
 
+fn first_holders(keys_1: array<vec2<u32>, 8>, held_1: array<bool, 8>) -> array<u32, 8> {
+    var first: array<u32, 8>;
+    var k_4: u32 = 0u;
+    var j_1: u32;
+    var local_15: bool;
+    var local_16: bool;
+
+    loop {
+        let _e5 = k_4;
+        if (_e5 < K) {
+        } else {
+            break;
+        }
+        {
+            let _e8 = k_4;
+            let _e11 = k_4;
+            let _e12 = k_4;
+            first[_e8] = select(K, _e11, held_1[_e12]);
+            j_1 = 0u;
+            loop {
+                let _e17 = j_1;
+                let _e18 = k_4;
+                if (_e17 < _e18) {
+                    let _e22 = k_4;
+                    local_15 = held_1[_e22];
+                } else {
+                    local_15 = false;
+                }
+                let _e25 = local_15;
+                if _e25 {
+                } else {
+                    break;
+                }
+                {
+                    let _e26 = j_1;
+                    if held_1[_e26] {
+                        let _e30 = j_1;
+                        let _e32 = k_4;
+                        local_16 = all((keys_1[_e30] == keys_1[_e32]));
+                    } else {
+                        local_16 = false;
+                    }
+                    let _e37 = local_16;
+                    if _e37 {
+                        let _e38 = k_4;
+                        let _e40 = j_1;
+                        first[_e38] = _e40;
+                        break;
+                    }
+                }
+                continuing {
+                    let _e42 = j_1;
+                    j_1 = (_e42 + 1u);
+                }
+            }
+        }
+        continuing {
+            let _e45 = k_4;
+            k_4 = (_e45 + 1u);
+        }
+    }
+    let _e47 = first;
+    return _e47;
+}
+
 fn output_of(s_3: Shaded) -> vec3<f32> {
     return s_3.e;
 }
@@ -793,12 +858,13 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     var b: u32;
     var q: u32;
     var local_2: bool;
+    var keys: array<vec2<u32>, 8>;
+    var held: array<bool, 8>;
     var k: u32 = 0u;
+    var k_1: u32 = 0u;
     var w: vec3<f32>;
-    var first: bool;
     var j: u32;
     var local_3: bool;
-    var local_4: bool;
 
     let _e4 = view.width;
     if !((gid.x >= _e4)) {
@@ -927,97 +993,107 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         }
     }
     loop {
-        let _e182 = k;
-        if (_e182 < K) {
+        let _e184 = k;
+        if (_e184 < K) {
+        } else {
+            break;
+        }
+        {
+            let _e187 = k;
+            let _e189 = k;
+            let _e191 = slot_light[_e189];
+            keys[_e187] = vec2<u32>(_e191, 0u);
+            let _e194 = k;
+            let _e196 = k;
+            let _e198 = slot_p[_e196];
+            held[_e194] = (_e198 > 0f);
+        }
+        continuing {
+            let _e202 = k;
+            k = (_e202 + 1u);
+        }
+    }
+    let _e204 = keys;
+    let _e205 = held;
+    let _e206 = first_holders(_e204, _e205);
+    loop {
+        let _e209 = k_1;
+        if (_e209 < K) {
         } else {
             break;
         }
         {
             w = vec3(0f);
-            let _e188 = k;
-            let _e190 = slot_p[_e188];
-            first = (_e190 > 0f);
-            j = 0u;
+            let _e215 = k_1;
+            let _e217 = k_1;
+            let first_1 = (_e206[_e215] == _e217);
+            let _e219 = k_1;
+            j = _e219;
             loop {
-                let _e196 = j;
-                if (_e196 < K) {
+                let _e221 = j;
+                if (_e221 < K) {
+                    local_3 = first_1;
+                } else {
+                    local_3 = false;
+                }
+                let _e227 = local_3;
+                if _e227 {
                 } else {
                     break;
                 }
                 {
-                    let _e199 = j;
-                    let _e201 = slot_p[_e199];
-                    if (_e201 > 0f) {
-                        let _e206 = j;
-                        let _e208 = slot_light[_e206];
-                        let _e209 = k;
-                        let _e211 = slot_light[_e209];
-                        local_3 = (_e208 == _e211);
-                    } else {
-                        local_3 = false;
-                    }
-                    let _e214 = local_3;
-                    if _e214 {
-                        let _e215 = first;
-                        if _e215 {
-                            let _e218 = j;
-                            let _e219 = k;
-                            local_4 = (_e218 >= _e219);
-                        } else {
-                            local_4 = false;
-                        }
-                        let _e222 = local_4;
-                        first = _e222;
-                        let _e223 = w;
-                        let _e224 = total;
-                        let _e225 = j;
-                        let _e227 = slot_target(_e224, _e225, K);
-                        let _e228 = j;
-                        let _e230 = slot_p[_e228];
-                        let _e232 = j;
-                        let _e234 = slot_share(_e232, K);
-                        w = (_e223 + ((_e227 / _e230) * _e234));
+                    let _e228 = j;
+                    let _e230 = k_1;
+                    if (_e206[_e228] == _e230) {
+                        let _e232 = w;
+                        let _e233 = total;
+                        let _e234 = j;
+                        let _e236 = slot_target(_e233, _e234, K);
+                        let _e237 = j;
+                        let _e239 = slot_p[_e237];
+                        let _e241 = j;
+                        let _e243 = slot_share(_e241, K);
+                        w = (_e232 + ((_e236 / _e239) * _e243));
                     }
                 }
                 continuing {
-                    let _e238 = j;
-                    j = (_e238 + 1u);
+                    let _e247 = j;
+                    j = (_e247 + 1u);
                 }
             }
-            let _e240 = first;
-            if _e240 {
-                let _e241 = t;
-                let _e242 = k;
-                let _e244 = slot_light[_e242];
-                let _e245 = r;
-                let _e246 = m;
-                let _e248 = k;
-                let _e251 = slot_u[_e248].x;
-                let _e252 = k;
-                let _e255 = slot_u[_e252].y;
-                let _e256 = shade_pick(_e244, x_11, n_8, _e245, _e54, _e246, 1f, _e251, _e255, eps_4);
-                let _e257 = w;
-                let _e258 = scaled(_e256, _e257);
-                let _e259 = add(_e241, _e258);
-                t = _e259;
+            if first_1 {
+                let _e249 = t;
+                let _e250 = k_1;
+                let _e252 = slot_light[_e250];
+                let _e253 = r;
+                let _e254 = m;
+                let _e256 = k_1;
+                let _e259 = slot_u[_e256].x;
+                let _e260 = k_1;
+                let _e263 = slot_u[_e260].y;
+                let _e264 = shade_pick(_e252, x_11, n_8, _e253, _e54, _e254, 1f, _e259, _e263, eps_4);
+                let _e265 = w;
+                let _e266 = scaled(_e264, _e265);
+                let _e267 = add(_e249, _e266);
+                t = _e267;
             }
         }
         continuing {
-            let _e261 = k;
-            k = (_e261 + 1u);
+            let _e269 = k_1;
+            k_1 = (_e269 + 1u);
         }
     }
-    let _e265 = t.e;
-    let _e266 = count;
-    textureStore(out_tex, texel_1, vec4<f32>(_e265, f32(_e266)));
+    let _e273 = t.e;
+    let _e274 = count;
+    textureStore(out_tex, texel_1, vec4<f32>(_e273, f32(_e274)));
     direct_count(DIRECT_COUNT_PIXELS, 1u);
-    let _e272 = count;
-    direct_count(DIRECT_COUNT_CANDIDATES, _e272);
-    let _e275 = evaluations;
-    direct_count(DIRECT_COUNT_EVALUATIONS, _e275);
-    let _e278 = rays_cast;
-    direct_count(DIRECT_COUNT_RAYS, _e278);
-    let _e281 = nodes_visited;
-    direct_count(DIRECT_COUNT_NODES, _e281);
+    let _e280 = count;
+    direct_count(DIRECT_COUNT_CANDIDATES, _e280);
+    let _e283 = evaluations;
+    direct_count(DIRECT_COUNT_EVALUATIONS, _e283);
+    let _e286 = rays_cast;
+    direct_count(DIRECT_COUNT_RAYS, _e286);
+    let _e289 = nodes_visited;
+    direct_count(DIRECT_COUNT_NODES, _e289);
     return;
 }

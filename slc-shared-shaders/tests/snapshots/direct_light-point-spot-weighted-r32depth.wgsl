@@ -166,7 +166,7 @@ var normal_tex: texture_2d<f32>;
 @group(0) @binding(3) 
 var out_tex: texture_storage_2d<rgba16float,write>;
 @group(1) @binding(1) 
-var<storage> lights_1: array<GpuLight>;
+var<storage> lights: array<GpuLight>;
 @group(1) @binding(2) 
 var<storage> rt2_5: array<f32>;
 @group(1) @binding(3) 
@@ -302,8 +302,8 @@ fn weighted_replace(w_1: f32, w_sum: f32, u_2: f32) -> bool {
     return ((u_2 * w_sum) < w_1);
 }
 
-fn weighted_pick_weight(w_sum_1: f32, w_2: f32, k_1: u32) -> f32 {
-    let _e3 = to_f32_(k_1);
+fn weighted_pick_weight(w_sum_1: f32, w_2: f32, k_2: u32) -> f32 {
+    let _e3 = to_f32_(k_2);
     return (w_sum_1 / (_e3 * w_2));
 }
 
@@ -836,7 +836,7 @@ fn connect_record(l_2: GpuLight, x_7: vec3<f32>, n_4: vec3<f32>, ng_1: vec3<f32>
 }
 
 fn connect_traced(li: u32, x_8: vec3<f32>, n_5: vec3<f32>, ng_2: vec3<f32>, s: f32, w_res_1: f32, u1_2: f32, u2_2: f32, eps_1: f32, trace_2: bool) -> Connection {
-    let _e12 = lights_1[li];
+    let _e12 = lights[li];
     let _e15 = r2_4[li];
     let _e19 = rt2_5[li];
     let _e21 = connect_record(_e12, x_8, n_5, ng_2, (s * _e15), (s * _e19), w_res_1, u1_2, u2_2, eps_1, trace_2);
@@ -994,42 +994,69 @@ fn add(a_6: Shaded, b_5: Shaded) -> Shaded {
     return Shaded((a_6.e + b_5.e), (a_6.diffuse + b_5.diffuse), (a_6.specular + b_5.specular));
 }
 
-fn pick_copies(lights: array<u32, 8>, k_2: u32) -> u32 {
-    var copies: u32 = 1u;
-    var j: u32 = 0u;
+fn first_holders(keys_1: array<vec2<u32>, 8>, held_1: array<bool, 8>) -> array<u32, 8> {
+    var first: array<u32, 8>;
+    var k_3: u32 = 0u;
+    var j_1: u32;
     var local_18: bool;
+    var local_19: bool;
 
     loop {
-        let _e6 = j;
-        if (_e6 < K) {
+        let _e5 = k_3;
+        if (_e5 < K) {
         } else {
             break;
         }
         {
-            let _e9 = j;
-            if (_e9 != k_2) {
-                let _e13 = j;
-                local_18 = (lights[_e13] == lights[k_2]);
-            } else {
-                local_18 = false;
-            }
-            let _e18 = local_18;
-            if _e18 {
-                let _e19 = j;
-                if (_e19 < k_2) {
-                    return 0u;
+            let _e8 = k_3;
+            let _e11 = k_3;
+            let _e12 = k_3;
+            first[_e8] = select(K, _e11, held_1[_e12]);
+            j_1 = 0u;
+            loop {
+                let _e17 = j_1;
+                let _e18 = k_3;
+                if (_e17 < _e18) {
+                    let _e22 = k_3;
+                    local_18 = held_1[_e22];
+                } else {
+                    local_18 = false;
                 }
-                let _e22 = copies;
-                copies = (_e22 + 1u);
+                let _e25 = local_18;
+                if _e25 {
+                } else {
+                    break;
+                }
+                {
+                    let _e26 = j_1;
+                    if held_1[_e26] {
+                        let _e30 = j_1;
+                        let _e32 = k_3;
+                        local_19 = all((keys_1[_e30] == keys_1[_e32]));
+                    } else {
+                        local_19 = false;
+                    }
+                    let _e37 = local_19;
+                    if _e37 {
+                        let _e38 = k_3;
+                        let _e40 = j_1;
+                        first[_e38] = _e40;
+                        break;
+                    }
+                }
+                continuing {
+                    let _e42 = j_1;
+                    j_1 = (_e42 + 1u);
+                }
             }
         }
         continuing {
-            let _e26 = j;
-            j = (_e26 + 1u);
+            let _e45 = k_3;
+            k_3 = (_e45 + 1u);
         }
     }
-    let _e28 = copies;
-    return _e28;
+    let _e47 = first;
+    return _e47;
 }
 
 @compute @workgroup_size(8, 8, 1) 
@@ -1041,7 +1068,12 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     var r: vec3<f32>;
     var h: u32;
     var t: Shaded = Shaded(vec3(0f), vec3(0f), vec3(0f));
+    var keys: array<vec2<u32>, 8>;
+    var held: array<bool, 8>;
     var k: u32 = 0u;
+    var k_1: u32 = 0u;
+    var copies: u32;
+    var j: u32;
 
     let _e4 = view.width;
     if !((gid.x >= _e4)) {
@@ -1088,47 +1120,90 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     let _e90 = bsh_weighted_collect(x_16, n_12, _e88, _e89, _e54, _e77);
     if (_e90.w_sum > 0f) {
         loop {
-            let _e96 = k;
-            if (_e96 < K) {
+            let _e98 = k;
+            if (_e98 < K) {
             } else {
                 break;
             }
             {
-                let _e99 = h;
-                let _e100 = pcg_hash(_e99);
-                h = _e100;
-                let _e101 = h;
-                let _e102 = xi_from_bits(_e101);
-                let _e103 = h;
-                let _e104 = pcg_hash(_e103);
-                h = _e104;
-                let _e105 = h;
-                let _e106 = xi_from_bits(_e105);
-                let _e108 = k;
-                let li_6 = _e90.light[_e108];
-                let _e112 = k;
-                let _e113 = pick_copies(_e90.light, _e112);
-                let _e117 = lights_1[li_6].kind;
-                let copies_1 = select(1u, _e113, (_e117 != LIGHT_TRIANGLE));
-                if (copies_1 > 0u) {
-                    let _e123 = t;
-                    let _e124 = r;
-                    let _e125 = m;
-                    let _e128 = k;
-                    let _e131 = weighted_pick_weight(_e90.w_sum, _e90.w[_e128], K);
-                    let _e134 = shade_pick(li_6, x_16, n_12, _e124, _e54, _e125, (_e131 * f32(copies_1)), _e102, _e106, eps_4);
-                    let _e135 = add(_e123, _e134);
-                    t = _e135;
+                let _e102 = k;
+                let _e107 = k;
+                let _e111 = lights[_e90.light[_e107]].kind;
+                let own = select(0u, (_e102 + 1u), (_e111 == LIGHT_TRIANGLE));
+                let _e115 = k;
+                let _e118 = k;
+                keys[_e115] = vec2<u32>(_e90.light[_e118], own);
+                let _e121 = k;
+                held[_e121] = true;
+            }
+            continuing {
+                let _e125 = k;
+                k = (_e125 + 1u);
+            }
+        }
+        let _e127 = keys;
+        let _e128 = held;
+        let _e129 = first_holders(_e127, _e128);
+        loop {
+            let _e132 = k_1;
+            if (_e132 < K) {
+            } else {
+                break;
+            }
+            {
+                let _e135 = h;
+                let _e136 = pcg_hash(_e135);
+                h = _e136;
+                let _e137 = h;
+                let _e138 = xi_from_bits(_e137);
+                let _e139 = h;
+                let _e140 = pcg_hash(_e139);
+                h = _e140;
+                let _e141 = h;
+                let _e142 = xi_from_bits(_e141);
+                let _e144 = k_1;
+                let li_6 = _e90.light[_e144];
+                copies = 0u;
+                let _e148 = k_1;
+                j = _e148;
+                loop {
+                    let _e150 = j;
+                    if (_e150 < K) {
+                    } else {
+                        break;
+                    }
+                    {
+                        let _e153 = copies;
+                        let _e156 = j;
+                        let _e158 = k_1;
+                        copies = (_e153 + select(0u, 1u, (_e129[_e156] == _e158)));
+                    }
+                    continuing {
+                        let _e163 = j;
+                        j = (_e163 + 1u);
+                    }
+                }
+                let _e165 = copies;
+                if (_e165 > 0u) {
+                    let _e168 = t;
+                    let _e169 = r;
+                    let _e170 = m;
+                    let _e173 = k_1;
+                    let _e176 = weighted_pick_weight(_e90.w_sum, _e90.w[_e173], K);
+                    let _e177 = copies;
+                    let _e180 = shade_pick(li_6, x_16, n_12, _e169, _e54, _e170, (_e176 * f32(_e177)), _e138, _e142, eps_4);
+                    let _e181 = add(_e168, _e180);
+                    t = _e181;
                 }
             }
             continuing {
-                let _e137 = k;
-                k = (_e137 + 1u);
+                let _e183 = k_1;
+                k_1 = (_e183 + 1u);
             }
         }
     }
     let count = _e90.n;
-    let _e142 = t.e;
-    textureStore(out_tex, texel_1, vec4<f32>(_e142, f32(count)));
+    let _e188 = t.e;
+    textureStore(out_tex, texel_1, vec4<f32>(_e188, f32(count)));
     return;
 }

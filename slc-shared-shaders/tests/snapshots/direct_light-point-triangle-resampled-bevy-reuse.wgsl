@@ -298,29 +298,29 @@ fn connection_factor(cos_x: f32, d2_3: f32, rt2_1: f32, w_1: f32) -> f32 {
 }
 
 fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, r2_1: f32) -> f32 {
-    var local_8: bool;
-    var local_9: bool;
+    var local_5: bool;
+    var local_6: bool;
 
     let v_6 = (x_2 - y);
     let d2_6 = dot(v_6, v_6);
     let _e7 = slc_keep(r2_1, d2_6);
     if !(!(_e7)) {
-        local_8 = !((d2_6 > 0f));
+        local_5 = !((d2_6 > 0f));
     } else {
-        local_8 = true;
+        local_5 = true;
     }
-    let _e16 = local_8;
+    let _e16 = local_5;
     if _e16 {
         return 0f;
     }
     let w_8 = (v_6 / vec3(sqrt(d2_6)));
     let cos_x_1 = -(dot(n, w_8));
     if !((cos_x_1 <= 0f)) {
-        local_9 = (dot(ng, w_8) >= 0f);
+        local_6 = (dot(ng, w_8) >= 0f);
     } else {
-        local_9 = true;
+        local_6 = true;
     }
-    let _e32 = local_9;
+    let _e32 = local_6;
     if _e32 {
         return 0f;
     }
@@ -364,34 +364,34 @@ fn resample_target(c_2: vec3<f32>) -> f32 {
     return (((c_2.x + c_2.y) + c_2.z) * 0.33333334f);
 }
 
-fn slot_target(c_3: vec3<f32>, slot: u32, k_1: u32) -> f32 {
-    if (k_1 < 3u) {
+fn slot_target(c_3: vec3<f32>, slot: u32, k_2: u32) -> f32 {
+    if (k_2 < 3u) {
         let _e5 = resample_target(c_3);
         return _e5;
     }
-    let j_4 = (slot % 3u);
-    if (j_4 == 0u) {
+    let j_5 = (slot % 3u);
+    if (j_5 == 0u) {
         return c_3.x;
     }
-    if (j_4 == 1u) {
+    if (j_5 == 1u) {
         return c_3.y;
     }
     return c_3.z;
 }
 
-fn slot_share(slot_1: u32, k_2: u32) -> vec3<f32> {
-    if (k_2 < 3u) {
-        let _e4 = to_f32_(k_2);
+fn slot_share(slot_1: u32, k_3: u32) -> vec3<f32> {
+    if (k_3 < 3u) {
+        let _e4 = to_f32_(k_3);
         let w_9 = (1f / _e4);
         return vec3<f32>(w_9, w_9, w_9);
     }
-    let j_5 = (slot_1 % 3u);
-    let _e15 = to_f32_((((k_2 + 2u) - j_5) / 3u));
+    let j_6 = (slot_1 % 3u);
+    let _e15 = to_f32_((((k_3 + 2u) - j_6) / 3u));
     let w_10 = (1f / _e15);
-    if (j_5 == 0u) {
+    if (j_6 == 0u) {
         return vec3<f32>(w_10, 0f, 0f);
     }
-    if (j_5 == 1u) {
+    if (j_6 == 1u) {
         return vec3<f32>(0f, w_10, 0f);
     }
     return vec3<f32>(0f, 0f, w_10);
@@ -440,14 +440,14 @@ fn smith_root(cos_: f32, alpha_1: f32) -> f32 {
 }
 
 fn smith_visibility(n_l: f32, n_v: f32, alpha_2: f32) -> f32 {
-    var local_10: bool;
+    var local_7: bool;
 
     if !((n_l <= 0f)) {
-        local_10 = (n_v <= 0f);
+        local_7 = (n_v <= 0f);
     } else {
-        local_10 = true;
+        local_7 = true;
     }
-    let _e11 = local_10;
+    let _e11 = local_7;
     if _e11 {
         return 0f;
     }
@@ -469,21 +469,21 @@ fn specular_fresnel(base: vec3<f32>, metallic: f32, f0_d: vec3<f32>, f90_d: f32,
 }
 
 fn has_specular(metallic_1: f32, f0_d_1: vec3<f32>, f90_d_1: f32) -> bool {
-    var local_11: bool;
-    var local_12: bool;
+    var local_8: bool;
+    var local_9: bool;
 
     if !((metallic_1 > 0f)) {
-        local_11 = (f90_d_1 > 0f);
+        local_8 = (f90_d_1 > 0f);
     } else {
-        local_11 = true;
+        local_8 = true;
     }
-    let _e11 = local_11;
+    let _e11 = local_8;
     if !(_e11) {
-        local_12 = (max(max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0f);
+        local_9 = (max(max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0f);
     } else {
-        local_12 = true;
+        local_9 = true;
     }
-    let _e23 = local_12;
+    let _e23 = local_9;
     return _e23;
 }
 
@@ -492,17 +492,17 @@ fn channel_mean(c_4: vec3<f32>) -> f32 {
 }
 
 fn receiver_lobe(base_1: vec3<f32>, metallic_2: f32, f0_d_2: vec3<f32>, f90_d_2: f32, alpha_3: f32, n_v_1: f32) -> vec4<f32> {
-    var local_13: bool;
+    var local_10: bool;
 
     let _e10 = fresnel_schlick(f0_d_2, f90_d_2, n_v_1);
     let _e16 = channel_mean((((vec3<f32>(1f, 1f, 1f) - _e10) * base_1) * (1f - metallic_2)));
     if !((n_v_1 <= 0f)) {
         let _e22 = has_specular(metallic_2, f0_d_2, f90_d_2);
-        local_13 = !(_e22);
+        local_10 = !(_e22);
     } else {
-        local_13 = true;
+        local_10 = true;
     }
-    let _e25 = local_13;
+    let _e25 = local_10;
     if _e25 {
         return vec4<f32>(_e16, 0f, alpha_3, n_v_1);
     }
@@ -586,23 +586,23 @@ fn bevy_brdf(base_2: vec3<f32>, metallic_3: f32, r_4: f32, reflectance_1: f32, n
 }
 
 fn cone_cos_of(v_2: vec3<f32>, d2_4: f32, a_3: f32, d: vec3<f32>) -> f32 {
-    var local_14: bool;
-    var local_15: bool;
+    var local_11: bool;
+    var local_12: bool;
 
     let vd = dot(v_2, d);
     let h2_1 = (d2_4 - (a_3 * a_3));
     if !((h2_1 <= 0f)) {
         if (vd >= 0f) {
-            local_15 = ((vd * vd) >= h2_1);
+            local_12 = ((vd * vd) >= h2_1);
         } else {
-            local_15 = false;
+            local_12 = false;
         }
-        let _e19 = local_15;
-        local_14 = _e19;
+        let _e19 = local_12;
+        local_11 = _e19;
     } else {
-        local_14 = true;
+        local_11 = true;
     }
-    let _e21 = local_14;
+    let _e21 = local_11;
     if _e21 {
         return 1f;
     }
@@ -659,16 +659,16 @@ fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin: vec3<f32>, bmax: vec3<f32>, t_
 }
 
 fn triangle_normal(a_4: vec3<f32>, b_4: vec3<f32>, c_5: vec3<f32>) -> vec3<f32> {
-    var local_16: bool;
+    var local_13: bool;
 
     let n_13 = cross((b_4 - a_4), (c_5 - a_4));
     let l2_ = dot(n_13, n_13);
     if !(!((l2_ > 0f))) {
-        local_16 = !((l2_ < 300000000000000000000000000000000000000f));
+        local_13 = !((l2_ < 300000000000000000000000000000000000000f));
     } else {
-        local_16 = true;
+        local_13 = true;
     }
-    let _e17 = local_16;
+    let _e17 = local_13;
     if _e17 {
         return vec3<f32>(0f, 0f, 0f);
     }
@@ -676,9 +676,9 @@ fn triangle_normal(a_4: vec3<f32>, b_4: vec3<f32>, c_5: vec3<f32>) -> vec3<f32> 
 }
 
 fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_5: vec3<f32>, c_6: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
-    var local_17: bool;
-    var local_18: bool;
-    var local_19: bool;
+    var local_14: bool;
+    var local_15: bool;
+    var local_16: bool;
 
     let e1_ = (b_5 - a_5);
     let e2_ = (c_6 - a_5);
@@ -691,32 +691,32 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_5: vec3<f32>, 
     let s_6 = (o_1 - a_5);
     let u_3 = (dot(s_6, p_5) * inv);
     if !((u_3 < 0f)) {
-        local_17 = (u_3 > 1f);
+        local_14 = (u_3 > 1f);
     } else {
-        local_17 = true;
+        local_14 = true;
     }
-    let _e28 = local_17;
+    let _e28 = local_14;
     if _e28 {
         return -1f;
     }
     let q_5 = cross(s_6, e1_);
     let v_8 = (dot(d_3, q_5) * inv);
     if !((v_8 < 0f)) {
-        local_18 = ((u_3 + v_8) > 1f);
+        local_15 = ((u_3 + v_8) > 1f);
     } else {
-        local_18 = true;
+        local_15 = true;
     }
-    let _e42 = local_18;
+    let _e42 = local_15;
     if _e42 {
         return -1f;
     }
     let t_3 = (dot(e2_, q_5) * inv);
     if (t_3 > t_min) {
-        local_19 = (t_3 < t_max_1);
+        local_16 = (t_3 < t_max_1);
     } else {
-        local_19 = false;
+        local_16 = false;
     }
-    let _e51 = local_19;
+    let _e51 = local_16;
     if _e51 {
         return t_3;
     }
@@ -734,14 +734,14 @@ fn reproject(c0_: vec4<f32>, c1_: vec4<f32>, c2_: vec4<f32>, c3_: vec4<f32>, p_2
 }
 
 fn history_matches(n_4: vec3<f32>, nh: vec3<f32>, p_3: vec3<f32>, oh: f32, d_4: f32) -> bool {
-    var local_20: bool;
+    var local_17: bool;
 
     if (abs((dot(nh, p_3) - oh)) <= (TEMPORAL_DEPTH_TOLERANCE * d_4)) {
-        local_20 = (dot(n_4, nh) >= TEMPORAL_NORMAL_COS);
+        local_17 = (dot(n_4, nh) >= TEMPORAL_NORMAL_COS);
     } else {
-        local_20 = false;
+        local_17 = false;
     }
-    let _e17 = local_20;
+    let _e17 = local_17;
     return _e17;
 }
 
@@ -878,8 +878,8 @@ fn bsh_inner_scale(a_7: f32, v_3: vec3<f32>, d2_5: f32, r_6: vec3<f32>, rl_2: ve
 }
 
 fn bsh_reaches(node_3: BshNode, x_4: vec3<f32>, r_7: vec3<f32>, rl_3: vec4<f32>) -> bool {
-    var local_21: bool;
-    var local_22: bool;
+    var local_18: bool;
+    var local_19: bool;
 
     let _e6 = sphere_contains_point(node_3.center, node_3.radius, x_4);
     if _e6 {
@@ -887,11 +887,11 @@ fn bsh_reaches(node_3: BshNode, x_4: vec3<f32>, r_7: vec3<f32>, rl_3: vec4<f32>)
     }
     if !((rl_3.w <= 1f)) {
         let _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001f)), x_4);
-        local_21 = !(_e20);
+        local_18 = !(_e20);
     } else {
-        local_21 = true;
+        local_18 = true;
     }
-    let _e23 = local_21;
+    let _e23 = local_18;
     if _e23 {
         return false;
     }
@@ -912,11 +912,11 @@ fn bsh_reaches(node_3: BshNode, x_4: vec3<f32>, r_7: vec3<f32>, rl_3: vec4<f32>)
     let s_c = (_e50 * 1.001f);
     let reach = (node_3.extent + (sqrt(s_c) * _e25));
     if (d2_7 <= ((node_3.radius * node_3.radius) * s_c)) {
-        local_22 = (d2_7 <= (reach * reach));
+        local_19 = (d2_7 <= (reach * reach));
     } else {
-        local_22 = false;
+        local_19 = false;
     }
-    let _e67 = local_22;
+    let _e67 = local_19;
     return _e67;
 }
 
@@ -950,8 +950,8 @@ fn bsh_next_leaf_lobe(nodes_3: u32, start: u32, x_5: vec3<f32>, r_8: vec3<f32>, 
 
 fn connect_record(l_3: GpuLight, x_6: vec3<f32>, n_5: vec3<f32>, ng_1: vec3<f32>, r2_2: f32, rt2_2: f32, w_res: f32, u1_3: f32, u2_3: f32, eps: f32, trace_1: bool) -> Connection {
     var c_7: Connection;
-    var local_23: bool;
-    var local_24: bool;
+    var local_20: bool;
+    var local_21: bool;
 
     c_7.e = vec3(0f);
     let _e16 = light_point(l_3, u1_3, u2_3);
@@ -964,16 +964,16 @@ fn connect_record(l_3: GpuLight, x_6: vec3<f32>, n_5: vec3<f32>, ng_1: vec3<f32>
         if trace_1 {
             let _e33 = c_7.y;
             let _e34 = occluded((x_6 + (ng_1 * eps)), _e33);
-            local_24 = _e34;
+            local_21 = _e34;
         } else {
-            local_24 = false;
+            local_21 = false;
         }
-        let _e36 = local_24;
-        local_23 = _e36;
+        let _e36 = local_21;
+        local_20 = _e36;
     } else {
-        local_23 = true;
+        local_20 = true;
     }
-    let _e38 = local_23;
+    let _e38 = local_20;
     if _e38 {
         let _e39 = c_7;
         return _e39;
@@ -1042,6 +1042,71 @@ fn scaled(s_2: Shaded, w_7: vec3<f32>) -> Shaded {
     return Shaded((s_2.e * w_7), (s_2.diffuse * w_7), (s_2.specular * w_7));
 }
 
+fn first_holders(keys_1: array<vec2<u32>, 8>, held_1: array<bool, 8>) -> array<u32, 8> {
+    var first: array<u32, 8>;
+    var k_4: u32 = 0u;
+    var j_2: u32;
+    var local_22: bool;
+    var local_23: bool;
+
+    loop {
+        let _e5 = k_4;
+        if (_e5 < K) {
+        } else {
+            break;
+        }
+        {
+            let _e8 = k_4;
+            let _e11 = k_4;
+            let _e12 = k_4;
+            first[_e8] = select(K, _e11, held_1[_e12]);
+            j_2 = 0u;
+            loop {
+                let _e17 = j_2;
+                let _e18 = k_4;
+                if (_e17 < _e18) {
+                    let _e22 = k_4;
+                    local_22 = held_1[_e22];
+                } else {
+                    local_22 = false;
+                }
+                let _e25 = local_22;
+                if _e25 {
+                } else {
+                    break;
+                }
+                {
+                    let _e26 = j_2;
+                    if held_1[_e26] {
+                        let _e30 = j_2;
+                        let _e32 = k_4;
+                        local_23 = all((keys_1[_e30] == keys_1[_e32]));
+                    } else {
+                        local_23 = false;
+                    }
+                    let _e37 = local_23;
+                    if _e37 {
+                        let _e38 = k_4;
+                        let _e40 = j_2;
+                        first[_e38] = _e40;
+                        break;
+                    }
+                }
+                continuing {
+                    let _e42 = j_2;
+                    j_2 = (_e42 + 1u);
+                }
+            }
+        }
+        continuing {
+            let _e45 = k_4;
+            k_4 = (_e45 + 1u);
+        }
+    }
+    let _e47 = first;
+    return _e47;
+}
+
 fn output_of(s_3: Shaded) -> vec3<f32> {
     return (s_3.diffuse + s_3.specular);
 }
@@ -1067,39 +1132,19 @@ fn reuse_material(s_4: ReuseSurface, eye: vec3<f32>) -> Material {
     return _e13;
 }
 
-fn same_pick(la: u32, ca: u32, lb: u32, cb: u32) -> bool {
-    var local_25: bool;
-    var local_26: bool;
-
-    if (la == lb) {
-        if !((ca == cb)) {
-            let _e14 = lights[la].kind;
-            local_26 = (_e14 != LIGHT_TRIANGLE);
-        } else {
-            local_26 = true;
-        }
-        let _e18 = local_26;
-        local_25 = _e18;
-    } else {
-        local_25 = false;
-    }
-    let _e20 = local_25;
-    return _e20;
-}
-
 fn reuse_domains(x_13: vec3<f32>, n_11: vec3<f32>, d_6: f32, h_1: u32, doms_1: ptr<function, array<Domain, 3>>) -> u32 {
     var nd: u32 = 0u;
     var hr: u32;
-    var j_2: u32 = 0u;
+    var j_3: u32 = 0u;
     var p_4: vec2<f32>;
+    var local_24: bool;
+    var local_25: bool;
+    var local_26: bool;
+    var seen: bool;
+    var k_5: u32;
     var local_27: bool;
     var local_28: bool;
     var local_29: bool;
-    var seen: bool;
-    var k_3: u32;
-    var local_30: bool;
-    var local_31: bool;
-    var local_32: bool;
 
     let _e9 = reuse.has_history;
     if (_e9 != 1u) {
@@ -1117,14 +1162,14 @@ fn reuse_domains(x_13: vec3<f32>, n_11: vec3<f32>, d_6: f32, h_1: u32, doms_1: p
     }
     hr = h_1;
     loop {
-        let _e41 = j_2;
+        let _e41 = j_3;
         if (_e41 < DOMAINS) {
         } else {
             break;
         }
         {
             p_4 = _e33.xy;
-            let _e46 = j_2;
+            let _e46 = j_3;
             if (_e46 > 0u) {
                 let _e49 = hr;
                 let _e50 = pcg_hash(_e49);
@@ -1144,34 +1189,34 @@ fn reuse_domains(x_13: vec3<f32>, n_11: vec3<f32>, d_6: f32, h_1: u32, doms_1: p
             let _e63 = p_4;
             let t_5 = vec2<i32>(round(_e63));
             if !((t_5.x < 0i)) {
-                local_27 = (t_5.y < 0i);
+                local_24 = (t_5.y < 0i);
             } else {
-                local_27 = true;
+                local_24 = true;
             }
-            let _e76 = local_27;
+            let _e76 = local_24;
             if !(_e76) {
                 let _e83 = view.width;
-                local_28 = (t_5.x >= i32(_e83));
+                local_25 = (t_5.x >= i32(_e83));
             } else {
-                local_28 = true;
+                local_25 = true;
             }
-            let _e87 = local_28;
+            let _e87 = local_25;
             if !(_e87) {
                 let _e94 = view.height;
-                local_29 = (t_5.y >= i32(_e94));
+                local_26 = (t_5.y >= i32(_e94));
             } else {
-                local_29 = true;
+                local_26 = true;
             }
-            let _e98 = local_29;
+            let _e98 = local_26;
             if _e98 {
                 continue;
             }
             let _e103 = view.width;
             let pixel = ((u32(t_5.y) * _e103) + u32(t_5.x));
             seen = false;
-            k_3 = 0u;
+            k_5 = 0u;
             loop {
-                let _e112 = k_3;
+                let _e112 = k_5;
                 let _e113 = nd;
                 if (_e112 < _e113) {
                 } else {
@@ -1180,35 +1225,35 @@ fn reuse_domains(x_13: vec3<f32>, n_11: vec3<f32>, d_6: f32, h_1: u32, doms_1: p
                 {
                     let _e115 = seen;
                     if !(_e115) {
-                        let _e119 = k_3;
+                        let _e119 = k_5;
                         let _e122 = (*doms_1)[_e119].pixel;
-                        local_30 = (_e122 == pixel);
+                        local_27 = (_e122 == pixel);
                     } else {
-                        local_30 = true;
+                        local_27 = true;
                     }
-                    let _e125 = local_30;
+                    let _e125 = local_27;
                     seen = _e125;
                 }
                 continuing {
-                    let _e127 = k_3;
-                    k_3 = (_e127 + 1u);
+                    let _e127 = k_5;
+                    k_5 = (_e127 + 1u);
                 }
             }
             let s_7 = reuse_prev[pixel].surface;
             let _e133 = seen;
             if !(_e133) {
-                local_31 = !((s_7.m > 0f));
+                local_28 = !((s_7.m > 0f));
             } else {
-                local_31 = true;
+                local_28 = true;
             }
-            let _e142 = local_31;
+            let _e142 = local_28;
             if !(_e142) {
                 let _e150 = history_matches(n_11, s_7.n, x_13, dot(s_7.n, s_7.x), d_6);
-                local_32 = !(_e150);
+                local_29 = !(_e150);
             } else {
-                local_32 = true;
+                local_29 = true;
             }
-            let _e153 = local_32;
+            let _e153 = local_29;
             if _e153 {
                 continue;
             }
@@ -1216,14 +1261,14 @@ fn reuse_domains(x_13: vec3<f32>, n_11: vec3<f32>, d_6: f32, h_1: u32, doms_1: p
             let _e160 = reuse.prev_eye;
             let _e161 = reuse_material(s_7, _e160);
             let _e165 = reuse.max_confidence;
-            let _e167 = j_2;
+            let _e167 = j_3;
             (*doms_1)[_e154] = Domain(pixel, s_7.x, s_7.n, _e161, min(s_7.m, _e165), (_e167 == 0u));
             let _e171 = nd;
             nd = (_e171 + 1u);
         }
         continuing {
-            let _e175 = j_2;
-            j_2 = (_e175 + 1u);
+            let _e175 = j_3;
+            j_3 = (_e175 + 1u);
         }
     }
     let _e177 = nd;
@@ -1234,28 +1279,28 @@ fn gris_combine(q_4: u32, cur: ReuseSlot, cur_ris: bool, cur_c: f32, k0_: u32, k
     var w_sum_2: f32 = 0f;
     var out: ReuseSlot = ReuseSlot(0u, 0u, 0f);
     var out_target: f32 = 0f;
-    var j_3: u32;
+    var j_4: u32;
     var s_5: ReuseSlot;
-    var local_33: bool;
+    var local_30: bool;
     var w_in: f32;
-    var local_34: bool;
+    var local_31: bool;
     var own_1: f32;
     var all_1: f32;
-    var k_4: u32;
-    var local_35: bool;
+    var k_6: u32;
+    var local_32: bool;
 
-    j_3 = k0_;
+    j_4 = k0_;
     loop {
-        let _e21 = j_3;
+        let _e21 = j_4;
         if (_e21 <= k1_) {
         } else {
             break;
         }
         {
             s_5 = cur;
-            let _e24 = j_3;
+            let _e24 = j_4;
             if (_e24 > k0_) {
-                let _e27 = j_3;
+                let _e27 = j_4;
                 let _e32 = (*doms_2)[(_e27 - 1u)].pixel;
                 let _e36 = reuse_prev[_e32].slots[q_4];
                 s_5 = _e36;
@@ -1263,11 +1308,11 @@ fn gris_combine(q_4: u32, cur: ReuseSlot, cur_ris: bool, cur_c: f32, k0_: u32, k
             let _e38 = s_5.w;
             if !(!((_e38 > 0f))) {
                 let _e46 = s_5.light;
-                local_33 = (_e46 >= arrayLength((&lights)));
+                local_30 = (_e46 >= arrayLength((&lights)));
             } else {
-                local_33 = true;
+                local_30 = true;
             }
-            let _e51 = local_33;
+            let _e51 = local_30;
             if _e51 {
                 continue;
             }
@@ -1280,13 +1325,13 @@ fn gris_combine(q_4: u32, cur: ReuseSlot, cur_ris: bool, cur_c: f32, k0_: u32, k
             }
             let _e64 = s_5.w;
             w_in = _e64;
-            let _e66 = j_3;
+            let _e66 = j_4;
             if (_e66 == k0_) {
-                local_34 = cur_ris;
+                local_31 = cur_ris;
             } else {
-                local_34 = false;
+                local_31 = false;
             }
-            let _e71 = local_34;
+            let _e71 = local_31;
             if _e71 {
                 let _e73 = s_5.w;
                 w_in = (_e73 / _e59);
@@ -1294,38 +1339,38 @@ fn gris_combine(q_4: u32, cur: ReuseSlot, cur_ris: bool, cur_c: f32, k0_: u32, k
             own_1 = (cur_c * _e59);
             let _e77 = own_1;
             all_1 = _e77;
-            k_4 = k0_;
+            k_6 = k0_;
             loop {
-                let _e80 = k_4;
+                let _e80 = k_6;
                 if (_e80 < k1_) {
                 } else {
                     break;
                 }
                 {
-                    let _e82 = k_4;
+                    let _e82 = k_6;
                     let _e85 = (*doms_2)[_e82].c;
                     let _e88 = s_5.light;
                     let _e90 = lights_prev[_e88];
                     let _e92 = s_5.u;
-                    let _e93 = k_4;
+                    let _e93 = k_6;
                     let _e96 = (*doms_2)[_e93].x;
-                    let _e97 = k_4;
+                    let _e97 = k_6;
                     let _e100 = (*doms_2)[_e97].n;
-                    let _e101 = k_4;
+                    let _e101 = k_6;
                     let _e104 = (*doms_2)[_e101].m;
                     let _e105 = reuse_target(q_4, _e90, _e92, _e96, _e100, _e104);
                     let t_6 = (_e85 * _e105);
                     let _e107 = all_1;
                     all_1 = (_e107 + t_6);
-                    let _e109 = k_4;
-                    let _e112 = j_3;
+                    let _e109 = k_6;
+                    let _e112 = j_4;
                     if ((_e109 + 1u) == _e112) {
                         own_1 = t_6;
                     }
                 }
                 continuing {
-                    let _e115 = k_4;
-                    k_4 = (_e115 + 1u);
+                    let _e115 = k_6;
+                    k_6 = (_e115 + 1u);
                 }
             }
             let _e117 = own_1;
@@ -1342,11 +1387,11 @@ fn gris_combine(q_4: u32, cur: ReuseSlot, cur_ris: bool, cur_c: f32, k0_: u32, k
                 let _e130 = (*hs_1);
                 let _e131 = xi_from_bits(_e130);
                 let _e132 = weighted_replace(_e120, _e129, _e131);
-                local_35 = _e132;
+                local_32 = _e132;
             } else {
-                local_35 = false;
+                local_32 = false;
             }
-            let _e134 = local_35;
+            let _e134 = local_32;
             if _e134 {
                 let _e135 = s_5;
                 out = _e135;
@@ -1354,8 +1399,8 @@ fn gris_combine(q_4: u32, cur: ReuseSlot, cur_ris: bool, cur_c: f32, k0_: u32, k
             }
         }
         continuing {
-            let _e137 = j_3;
-            j_3 = (_e137 + 1u);
+            let _e137 = j_4;
+            j_4 = (_e137 + 1u);
         }
     }
     let _e140 = w_sum_2;
@@ -1391,17 +1436,16 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     var kept: array<ReuseSlot, 8>;
     var fin: array<ReuseSlot, 8>;
     var q_1: u32 = 0u;
-    var visible: array<bool, 8>;
+    var keys: array<vec2<u32>, 8>;
+    var held: array<bool, 8>;
     var k: u32 = 0u;
+    var visible: array<bool, 8>;
+    var k_1: u32 = 0u;
     var w: vec3<f32>;
-    var first: bool;
     var j: u32;
-    var local_4: bool;
-    var local_5: bool;
-    var local_6: bool;
     var j_1: u32;
     var q_2: u32 = 0u;
-    var local_7: bool;
+    var local_4: bool;
 
     let _e4 = view.width;
     if !((gid.x >= _e4)) {
@@ -1606,170 +1650,155 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         }
     }
     loop {
-        let _e318 = k;
-        if (_e318 < K) {
+        let _e319 = k;
+        if (_e319 < K) {
         } else {
             break;
         }
         {
-            let _e321 = k;
-            let _e324 = fin[_e321].w;
-            let _e325 = k;
-            let _e327 = slot_share(_e325, K);
-            w = (_e324 * _e327);
-            let _e330 = k;
-            let _e333 = fin[_e330].w;
-            first = (_e333 > 0f);
-            j = 0u;
+            let _e322 = k;
+            let _e324 = k;
+            let _e327 = fin[_e324].light;
+            let _e329 = k;
+            let _e332 = fin[_e329].u;
+            let _e334 = k;
+            let _e337 = fin[_e334].light;
+            let _e340 = lights[_e337].kind;
+            keys[_e322] = vec2<u32>(_e327, select(0u, _e332, (_e340 == LIGHT_TRIANGLE)));
+            let _e345 = k;
+            let _e347 = k;
+            let _e350 = fin[_e347].w;
+            held[_e345] = (_e350 > 0f);
+        }
+        continuing {
+            let _e354 = k;
+            k = (_e354 + 1u);
+        }
+    }
+    let _e356 = keys;
+    let _e357 = held;
+    let _e358 = first_holders(_e356, _e357);
+    loop {
+        let _e362 = k_1;
+        if (_e362 < K) {
+        } else {
+            break;
+        }
+        {
+            let _e365 = k_1;
+            let _e367 = k_1;
+            if (_e358[_e365] != _e367) {
+                continue;
+            }
+            w = vec3(0f);
+            let _e372 = k_1;
+            j = _e372;
             loop {
-                let _e339 = j;
-                if (_e339 < K) {
+                let _e374 = j;
+                if (_e374 < K) {
                 } else {
                     break;
                 }
                 {
-                    let _e342 = j;
-                    let _e343 = k;
-                    if (_e342 != _e343) {
-                        let _e347 = j;
-                        let _e350 = fin[_e347].w;
-                        local_4 = (_e350 > 0f);
-                    } else {
-                        local_4 = false;
-                    }
-                    let _e354 = local_4;
-                    if _e354 {
-                        let _e357 = j;
-                        let _e360 = fin[_e357].light;
-                        let _e361 = j;
-                        let _e364 = fin[_e361].u;
-                        let _e365 = k;
-                        let _e368 = fin[_e365].light;
-                        let _e369 = k;
-                        let _e372 = fin[_e369].u;
-                        let _e373 = same_pick(_e360, _e364, _e368, _e372);
-                        local_5 = _e373;
-                    } else {
-                        local_5 = false;
-                    }
-                    let _e375 = local_5;
-                    if _e375 {
-                        let _e376 = first;
-                        if _e376 {
-                            let _e379 = j;
-                            let _e380 = k;
-                            local_6 = (_e379 > _e380);
-                        } else {
-                            local_6 = false;
-                        }
-                        let _e383 = local_6;
-                        first = _e383;
-                        let _e384 = w;
-                        let _e385 = j;
-                        let _e388 = fin[_e385].w;
-                        let _e389 = j;
-                        let _e391 = slot_share(_e389, K);
-                        w = (_e384 + (_e388 * _e391));
+                    let _e377 = j;
+                    let _e379 = k_1;
+                    if (_e358[_e377] == _e379) {
+                        let _e381 = w;
+                        let _e382 = j;
+                        let _e385 = fin[_e382].w;
+                        let _e386 = j;
+                        let _e388 = slot_share(_e386, K);
+                        w = (_e381 + (_e385 * _e388));
                     }
                 }
                 continuing {
-                    let _e395 = j;
-                    j = (_e395 + 1u);
+                    let _e392 = j;
+                    j = (_e392 + 1u);
                 }
             }
-            let _e397 = first;
-            if _e397 {
-                let _e399 = k;
-                let _e402 = fin[_e399].light;
-                let _e404 = lights[_e402];
-                let _e408 = k;
-                let _e411 = fin[_e408].u;
-                let _e412 = grid_coordinate(_e411);
-                let _e413 = k;
-                let _e416 = fin[_e413].u;
-                let _e419 = grid_coordinate((_e416 << 16u));
-                let _e421 = connect_record(_e404, x_17, n_15, n_15, UNRANGED, UNRANGED, 1f, _e412, _e419, eps_3, true);
-                let _e422 = m;
-                let _e423 = shade_connection(_e421, x_17, n_15, _e422);
-                let _e424 = t;
-                let _e425 = w;
-                let _e426 = scaled(_e423, _e425);
-                let _e427 = add(_e424, _e426);
-                t = _e427;
-                let _e428 = k;
-                j_1 = _e428;
-                loop {
-                    let _e430 = j_1;
-                    if (_e430 < K) {
-                    } else {
-                        break;
-                    }
-                    {
+            let _e395 = k_1;
+            let _e398 = fin[_e395].light;
+            let _e400 = lights[_e398];
+            let _e404 = k_1;
+            let _e407 = fin[_e404].u;
+            let _e408 = grid_coordinate(_e407);
+            let _e409 = k_1;
+            let _e412 = fin[_e409].u;
+            let _e415 = grid_coordinate((_e412 << 16u));
+            let _e417 = connect_record(_e400, x_17, n_15, n_15, UNRANGED, UNRANGED, 1f, _e408, _e415, eps_3, true);
+            let _e418 = m;
+            let _e419 = shade_connection(_e417, x_17, n_15, _e418);
+            let _e420 = t;
+            let _e421 = w;
+            let _e422 = scaled(_e419, _e421);
+            let _e423 = add(_e420, _e422);
+            t = _e423;
+            let _e424 = k_1;
+            j_1 = _e424;
+            loop {
+                let _e426 = j_1;
+                if (_e426 < K) {
+                } else {
+                    break;
+                }
+                {
+                    let _e429 = j_1;
+                    let _e431 = k_1;
+                    if (_e358[_e429] == _e431) {
                         let _e433 = j_1;
-                        let _e436 = fin[_e433].light;
-                        let _e437 = j_1;
-                        let _e440 = fin[_e437].u;
-                        let _e441 = k;
-                        let _e444 = fin[_e441].light;
-                        let _e445 = k;
-                        let _e448 = fin[_e445].u;
-                        let _e449 = same_pick(_e436, _e440, _e444, _e448);
-                        if _e449 {
-                            let _e450 = j_1;
-                            let _e452 = output_of(_e423);
-                            let _e453 = resample_target(_e452);
-                            visible[_e450] = (_e453 > 0f);
-                        }
+                        let _e435 = output_of(_e419);
+                        let _e436 = resample_target(_e435);
+                        visible[_e433] = (_e436 > 0f);
                     }
-                    continuing {
-                        let _e457 = j_1;
-                        j_1 = (_e457 + 1u);
-                    }
+                }
+                continuing {
+                    let _e440 = j_1;
+                    j_1 = (_e440 + 1u);
                 }
             }
         }
         continuing {
-            let _e460 = k;
-            k = (_e460 + 1u);
+            let _e443 = k_1;
+            k_1 = (_e443 + 1u);
         }
     }
     loop {
-        let _e464 = q_2;
-        if (_e464 < K) {
+        let _e447 = q_2;
+        if (_e447 < K) {
         } else {
             break;
         }
         {
-            let _e469 = reuse.visibility;
-            if !((_e469 == 0u)) {
-                let _e475 = q_2;
-                let _e477 = visible[_e475];
-                local_7 = _e477;
+            let _e452 = reuse.visibility;
+            if !((_e452 == 0u)) {
+                let _e458 = q_2;
+                let _e460 = visible[_e458];
+                local_4 = _e460;
             } else {
-                local_7 = true;
+                local_4 = true;
             }
-            let keep = local_7;
-            let _e483 = q_2;
-            let _e485 = q_2;
-            let _e488 = kept[_e485].light;
-            let _e489 = q_2;
-            let _e492 = kept[_e489].u;
-            let _e493 = q_2;
-            let _e496 = kept[_e493].w;
-            reuse_next[pixel_1].slots[_e483] = ReuseSlot(_e488, _e492, select(0f, _e496, keep));
+            let keep = local_4;
+            let _e466 = q_2;
+            let _e468 = q_2;
+            let _e471 = kept[_e468].light;
+            let _e472 = q_2;
+            let _e475 = kept[_e472].u;
+            let _e476 = q_2;
+            let _e479 = kept[_e476].w;
+            reuse_next[pixel_1].slots[_e466] = ReuseSlot(_e471, _e475, select(0f, _e479, keep));
         }
         continuing {
-            let _e501 = q_2;
-            q_2 = (_e501 + 1u);
+            let _e484 = q_2;
+            q_2 = (_e484 + 1u);
         }
     }
-    let _e506 = m;
-    let _e509 = reuse.max_confidence;
-    let _e511 = reuse_surface(x_17, n_15, _e506, min(confidence, _e509));
-    reuse_next[pixel_1].surface = _e511;
-    let _e514 = t.diffuse;
-    let _e516 = t.specular;
-    let _e518 = count;
-    textureStore(out_tex, texel_1, vec4<f32>((_e514 + _e516), f32(_e518)));
+    let _e489 = m;
+    let _e492 = reuse.max_confidence;
+    let _e494 = reuse_surface(x_17, n_15, _e489, min(confidence, _e492));
+    reuse_next[pixel_1].surface = _e494;
+    let _e497 = t.diffuse;
+    let _e499 = t.specular;
+    let _e501 = count;
+    textureStore(out_tex, texel_1, vec4<f32>((_e497 + _e499), f32(_e501)));
     return;
 }

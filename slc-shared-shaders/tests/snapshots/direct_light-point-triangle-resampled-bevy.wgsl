@@ -239,29 +239,29 @@ fn connection_factor(cos_x: f32, d2_3: f32, rt2_1: f32, w_1: f32) -> f32 {
 }
 
 fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, r2_1: f32) -> f32 {
+    var local_4: bool;
     var local_5: bool;
-    var local_6: bool;
 
     let v_6 = (x_2 - y);
     let d2_6 = dot(v_6, v_6);
     let _e7 = slc_keep(r2_1, d2_6);
     if !(!(_e7)) {
-        local_5 = !((d2_6 > 0f));
+        local_4 = !((d2_6 > 0f));
     } else {
-        local_5 = true;
+        local_4 = true;
     }
-    let _e16 = local_5;
+    let _e16 = local_4;
     if _e16 {
         return 0f;
     }
     let w_8 = (v_6 / vec3(sqrt(d2_6)));
     let cos_x_1 = -(dot(n, w_8));
     if !((cos_x_1 <= 0f)) {
-        local_6 = (dot(ng, w_8) >= 0f);
+        local_5 = (dot(ng, w_8) >= 0f);
     } else {
-        local_6 = true;
+        local_5 = true;
     }
-    let _e32 = local_6;
+    let _e32 = local_5;
     if _e32 {
         return 0f;
     }
@@ -305,34 +305,34 @@ fn resample_target(c_2: vec3<f32>) -> f32 {
     return (((c_2.x + c_2.y) + c_2.z) * 0.33333334f);
 }
 
-fn slot_target(c_3: vec3<f32>, slot: u32, k_1: u32) -> f32 {
-    if (k_1 < 3u) {
+fn slot_target(c_3: vec3<f32>, slot: u32, k_2: u32) -> f32 {
+    if (k_2 < 3u) {
         let _e5 = resample_target(c_3);
         return _e5;
     }
-    let j_1 = (slot % 3u);
-    if (j_1 == 0u) {
+    let j_2 = (slot % 3u);
+    if (j_2 == 0u) {
         return c_3.x;
     }
-    if (j_1 == 1u) {
+    if (j_2 == 1u) {
         return c_3.y;
     }
     return c_3.z;
 }
 
-fn slot_share(slot_1: u32, k_2: u32) -> vec3<f32> {
-    if (k_2 < 3u) {
-        let _e4 = to_f32_(k_2);
+fn slot_share(slot_1: u32, k_3: u32) -> vec3<f32> {
+    if (k_3 < 3u) {
+        let _e4 = to_f32_(k_3);
         let w_9 = (1f / _e4);
         return vec3<f32>(w_9, w_9, w_9);
     }
-    let j_2 = (slot_1 % 3u);
-    let _e15 = to_f32_((((k_2 + 2u) - j_2) / 3u));
+    let j_3 = (slot_1 % 3u);
+    let _e15 = to_f32_((((k_3 + 2u) - j_3) / 3u));
     let w_10 = (1f / _e15);
-    if (j_2 == 0u) {
+    if (j_3 == 0u) {
         return vec3<f32>(w_10, 0f, 0f);
     }
-    if (j_2 == 1u) {
+    if (j_3 == 1u) {
         return vec3<f32>(0f, w_10, 0f);
     }
     return vec3<f32>(0f, 0f, w_10);
@@ -353,14 +353,14 @@ fn smith_root(cos_: f32, alpha_1: f32) -> f32 {
 }
 
 fn smith_visibility(n_l: f32, n_v: f32, alpha_2: f32) -> f32 {
-    var local_7: bool;
+    var local_6: bool;
 
     if !((n_l <= 0f)) {
-        local_7 = (n_v <= 0f);
+        local_6 = (n_v <= 0f);
     } else {
-        local_7 = true;
+        local_6 = true;
     }
-    let _e11 = local_7;
+    let _e11 = local_6;
     if _e11 {
         return 0f;
     }
@@ -382,21 +382,21 @@ fn specular_fresnel(base: vec3<f32>, metallic: f32, f0_d: vec3<f32>, f90_d: f32,
 }
 
 fn has_specular(metallic_1: f32, f0_d_1: vec3<f32>, f90_d_1: f32) -> bool {
+    var local_7: bool;
     var local_8: bool;
-    var local_9: bool;
 
     if !((metallic_1 > 0f)) {
-        local_8 = (f90_d_1 > 0f);
+        local_7 = (f90_d_1 > 0f);
+    } else {
+        local_7 = true;
+    }
+    let _e11 = local_7;
+    if !(_e11) {
+        local_8 = (max(max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0f);
     } else {
         local_8 = true;
     }
-    let _e11 = local_8;
-    if !(_e11) {
-        local_9 = (max(max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0f);
-    } else {
-        local_9 = true;
-    }
-    let _e23 = local_9;
+    let _e23 = local_8;
     return _e23;
 }
 
@@ -405,17 +405,17 @@ fn channel_mean(c_4: vec3<f32>) -> f32 {
 }
 
 fn receiver_lobe(base_1: vec3<f32>, metallic_2: f32, f0_d_2: vec3<f32>, f90_d_2: f32, alpha_3: f32, n_v_1: f32) -> vec4<f32> {
-    var local_10: bool;
+    var local_9: bool;
 
     let _e10 = fresnel_schlick(f0_d_2, f90_d_2, n_v_1);
     let _e16 = channel_mean((((vec3<f32>(1f, 1f, 1f) - _e10) * base_1) * (1f - metallic_2)));
     if !((n_v_1 <= 0f)) {
         let _e22 = has_specular(metallic_2, f0_d_2, f90_d_2);
-        local_10 = !(_e22);
+        local_9 = !(_e22);
     } else {
-        local_10 = true;
+        local_9 = true;
     }
-    let _e25 = local_10;
+    let _e25 = local_9;
     if _e25 {
         return vec4<f32>(_e16, 0f, alpha_3, n_v_1);
     }
@@ -499,23 +499,23 @@ fn bevy_brdf(base_2: vec3<f32>, metallic_3: f32, r_3: f32, reflectance_1: f32, n
 }
 
 fn cone_cos_of(v_2: vec3<f32>, d2_4: f32, a_3: f32, d: vec3<f32>) -> f32 {
+    var local_10: bool;
     var local_11: bool;
-    var local_12: bool;
 
     let vd = dot(v_2, d);
     let h2_ = (d2_4 - (a_3 * a_3));
     if !((h2_ <= 0f)) {
         if (vd >= 0f) {
-            local_12 = ((vd * vd) >= h2_);
+            local_11 = ((vd * vd) >= h2_);
         } else {
-            local_12 = false;
+            local_11 = false;
         }
-        let _e19 = local_12;
-        local_11 = _e19;
+        let _e19 = local_11;
+        local_10 = _e19;
     } else {
-        local_11 = true;
+        local_10 = true;
     }
-    let _e21 = local_11;
+    let _e21 = local_10;
     if _e21 {
         return 1f;
     }
@@ -572,16 +572,16 @@ fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin: vec3<f32>, bmax: vec3<f32>, t_
 }
 
 fn triangle_normal(a_4: vec3<f32>, b_4: vec3<f32>, c_5: vec3<f32>) -> vec3<f32> {
-    var local_13: bool;
+    var local_12: bool;
 
     let n_9 = cross((b_4 - a_4), (c_5 - a_4));
     let l2_ = dot(n_9, n_9);
     if !(!((l2_ > 0f))) {
-        local_13 = !((l2_ < 300000000000000000000000000000000000000f));
+        local_12 = !((l2_ < 300000000000000000000000000000000000000f));
     } else {
-        local_13 = true;
+        local_12 = true;
     }
-    let _e17 = local_13;
+    let _e17 = local_12;
     if _e17 {
         return vec3<f32>(0f, 0f, 0f);
     }
@@ -589,9 +589,9 @@ fn triangle_normal(a_4: vec3<f32>, b_4: vec3<f32>, c_5: vec3<f32>) -> vec3<f32> 
 }
 
 fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_5: vec3<f32>, c_6: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
+    var local_13: bool;
     var local_14: bool;
     var local_15: bool;
-    var local_16: bool;
 
     let e1_ = (b_5 - a_5);
     let e2_ = (c_6 - a_5);
@@ -604,32 +604,32 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_5: vec3<f32>, 
     let s_4 = (o_1 - a_5);
     let u_3 = (dot(s_4, p_2) * inv);
     if !((u_3 < 0f)) {
-        local_14 = (u_3 > 1f);
+        local_13 = (u_3 > 1f);
     } else {
-        local_14 = true;
+        local_13 = true;
     }
-    let _e28 = local_14;
+    let _e28 = local_13;
     if _e28 {
         return -1f;
     }
     let q_1 = cross(s_4, e1_);
     let v_8 = (dot(d_3, q_1) * inv);
     if !((v_8 < 0f)) {
-        local_15 = ((u_3 + v_8) > 1f);
+        local_14 = ((u_3 + v_8) > 1f);
     } else {
-        local_15 = true;
+        local_14 = true;
     }
-    let _e42 = local_15;
+    let _e42 = local_14;
     if _e42 {
         return -1f;
     }
     let t_3 = (dot(e2_, q_1) * inv);
     if (t_3 > t_min) {
-        local_16 = (t_3 < t_max_1);
+        local_15 = (t_3 < t_max_1);
     } else {
-        local_16 = false;
+        local_15 = false;
     }
-    let _e51 = local_16;
+    let _e51 = local_15;
     if _e51 {
         return t_3;
     }
@@ -769,8 +769,8 @@ fn bsh_inner_scale(a_7: f32, v_3: vec3<f32>, d2_5: f32, r_5: vec3<f32>, rl_2: ve
 }
 
 fn bsh_reaches(node_3: BshNode, x_4: vec3<f32>, r_6: vec3<f32>, rl_3: vec4<f32>) -> bool {
+    var local_16: bool;
     var local_17: bool;
-    var local_18: bool;
 
     let _e6 = sphere_contains_point(node_3.center, node_3.radius, x_4);
     if _e6 {
@@ -778,11 +778,11 @@ fn bsh_reaches(node_3: BshNode, x_4: vec3<f32>, r_6: vec3<f32>, rl_3: vec4<f32>)
     }
     if !((rl_3.w <= 1f)) {
         let _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001f)), x_4);
-        local_17 = !(_e20);
+        local_16 = !(_e20);
     } else {
-        local_17 = true;
+        local_16 = true;
     }
-    let _e23 = local_17;
+    let _e23 = local_16;
     if _e23 {
         return false;
     }
@@ -803,11 +803,11 @@ fn bsh_reaches(node_3: BshNode, x_4: vec3<f32>, r_6: vec3<f32>, rl_3: vec4<f32>)
     let s_c = (_e50 * 1.001f);
     let reach = (node_3.extent + (sqrt(s_c) * _e25));
     if (d2_7 <= ((node_3.radius * node_3.radius) * s_c)) {
-        local_18 = (d2_7 <= (reach * reach));
+        local_17 = (d2_7 <= (reach * reach));
     } else {
-        local_18 = false;
+        local_17 = false;
     }
-    let _e67 = local_18;
+    let _e67 = local_17;
     return _e67;
 }
 
@@ -841,8 +841,8 @@ fn bsh_next_leaf_lobe(nodes_3: u32, start: u32, x_5: vec3<f32>, r_7: vec3<f32>, 
 
 fn connect_record(l_3: GpuLight, x_6: vec3<f32>, n_4: vec3<f32>, ng_1: vec3<f32>, r2_2: f32, rt2_2: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32, trace_1: bool) -> Connection {
     var c_7: Connection;
+    var local_18: bool;
     var local_19: bool;
-    var local_20: bool;
 
     c_7.e = vec3(0f);
     let _e16 = light_point(l_3, u1_2, u2_2);
@@ -855,16 +855,16 @@ fn connect_record(l_3: GpuLight, x_6: vec3<f32>, n_4: vec3<f32>, ng_1: vec3<f32>
         if trace_1 {
             let _e33 = c_7.y;
             let _e34 = occluded((x_6 + (ng_1 * eps)), _e33);
-            local_20 = _e34;
+            local_19 = _e34;
         } else {
-            local_20 = false;
+            local_19 = false;
         }
-        let _e36 = local_20;
-        local_19 = _e36;
+        let _e36 = local_19;
+        local_18 = _e36;
     } else {
-        local_19 = true;
+        local_18 = true;
     }
-    let _e38 = local_19;
+    let _e38 = local_18;
     if _e38 {
         let _e39 = c_7;
         return _e39;
@@ -938,6 +938,71 @@ fn scaled(s_2: Shaded, w_7: vec3<f32>) -> Shaded {
     return Shaded((s_2.e * w_7), (s_2.diffuse * w_7), (s_2.specular * w_7));
 }
 
+fn first_holders(keys_1: array<vec2<u32>, 8>, held_1: array<bool, 8>) -> array<u32, 8> {
+    var first: array<u32, 8>;
+    var k_4: u32 = 0u;
+    var j_1: u32;
+    var local_20: bool;
+    var local_21: bool;
+
+    loop {
+        let _e5 = k_4;
+        if (_e5 < K) {
+        } else {
+            break;
+        }
+        {
+            let _e8 = k_4;
+            let _e11 = k_4;
+            let _e12 = k_4;
+            first[_e8] = select(K, _e11, held_1[_e12]);
+            j_1 = 0u;
+            loop {
+                let _e17 = j_1;
+                let _e18 = k_4;
+                if (_e17 < _e18) {
+                    let _e22 = k_4;
+                    local_20 = held_1[_e22];
+                } else {
+                    local_20 = false;
+                }
+                let _e25 = local_20;
+                if _e25 {
+                } else {
+                    break;
+                }
+                {
+                    let _e26 = j_1;
+                    if held_1[_e26] {
+                        let _e30 = j_1;
+                        let _e32 = k_4;
+                        local_21 = all((keys_1[_e30] == keys_1[_e32]));
+                    } else {
+                        local_21 = false;
+                    }
+                    let _e37 = local_21;
+                    if _e37 {
+                        let _e38 = k_4;
+                        let _e40 = j_1;
+                        first[_e38] = _e40;
+                        break;
+                    }
+                }
+                continuing {
+                    let _e42 = j_1;
+                    j_1 = (_e42 + 1u);
+                }
+            }
+        }
+        continuing {
+            let _e45 = k_4;
+            k_4 = (_e45 + 1u);
+        }
+    }
+    let _e47 = first;
+    return _e47;
+}
+
 fn output_of(s_3: Shaded) -> vec3<f32> {
     return (s_3.diffuse + s_3.specular);
 }
@@ -960,12 +1025,13 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     var b: u32;
     var q: u32;
     var local_2: bool;
+    var keys: array<vec2<u32>, 8>;
+    var held: array<bool, 8>;
     var k: u32 = 0u;
+    var k_1: u32 = 0u;
     var w: vec3<f32>;
-    var first: bool;
     var j: u32;
     var local_3: bool;
-    var local_4: bool;
 
     let _e4 = view.width;
     if !((gid.x >= _e4)) {
@@ -1107,89 +1173,99 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         }
     }
     loop {
-        let _e211 = k;
-        if (_e211 < K) {
+        let _e213 = k;
+        if (_e213 < K) {
+        } else {
+            break;
+        }
+        {
+            let _e216 = k;
+            let _e218 = k;
+            let _e220 = slot_light[_e218];
+            keys[_e216] = vec2<u32>(_e220, 0u);
+            let _e223 = k;
+            let _e225 = k;
+            let _e227 = slot_p[_e225];
+            held[_e223] = (_e227 > 0f);
+        }
+        continuing {
+            let _e231 = k;
+            k = (_e231 + 1u);
+        }
+    }
+    let _e233 = keys;
+    let _e234 = held;
+    let _e235 = first_holders(_e233, _e234);
+    loop {
+        let _e238 = k_1;
+        if (_e238 < K) {
         } else {
             break;
         }
         {
             w = vec3(0f);
-            let _e217 = k;
-            let _e219 = slot_p[_e217];
-            first = (_e219 > 0f);
-            j = 0u;
+            let _e244 = k_1;
+            let _e246 = k_1;
+            let first_1 = (_e235[_e244] == _e246);
+            let _e248 = k_1;
+            j = _e248;
             loop {
-                let _e225 = j;
-                if (_e225 < K) {
+                let _e250 = j;
+                if (_e250 < K) {
+                    local_3 = first_1;
+                } else {
+                    local_3 = false;
+                }
+                let _e256 = local_3;
+                if _e256 {
                 } else {
                     break;
                 }
                 {
-                    let _e228 = j;
-                    let _e230 = slot_p[_e228];
-                    if (_e230 > 0f) {
-                        let _e235 = j;
-                        let _e237 = slot_light[_e235];
-                        let _e238 = k;
-                        let _e240 = slot_light[_e238];
-                        local_3 = (_e237 == _e240);
-                    } else {
-                        local_3 = false;
-                    }
-                    let _e243 = local_3;
-                    if _e243 {
-                        let _e244 = first;
-                        if _e244 {
-                            let _e247 = j;
-                            let _e248 = k;
-                            local_4 = (_e247 >= _e248);
-                        } else {
-                            local_4 = false;
-                        }
-                        let _e251 = local_4;
-                        first = _e251;
-                        let _e252 = w;
-                        let _e253 = total;
-                        let _e254 = j;
-                        let _e256 = slot_target(_e253, _e254, K);
-                        let _e257 = j;
-                        let _e259 = slot_p[_e257];
-                        let _e261 = j;
-                        let _e263 = slot_share(_e261, K);
-                        w = (_e252 + ((_e256 / _e259) * _e263));
+                    let _e257 = j;
+                    let _e259 = k_1;
+                    if (_e235[_e257] == _e259) {
+                        let _e261 = w;
+                        let _e262 = total;
+                        let _e263 = j;
+                        let _e265 = slot_target(_e262, _e263, K);
+                        let _e266 = j;
+                        let _e268 = slot_p[_e266];
+                        let _e270 = j;
+                        let _e272 = slot_share(_e270, K);
+                        w = (_e261 + ((_e265 / _e268) * _e272));
                     }
                 }
                 continuing {
-                    let _e267 = j;
-                    j = (_e267 + 1u);
+                    let _e276 = j;
+                    j = (_e276 + 1u);
                 }
             }
-            let _e269 = first;
-            if _e269 {
-                let _e270 = t;
-                let _e271 = k;
-                let _e273 = slot_light[_e271];
-                let _e274 = r;
-                let _e275 = m;
-                let _e277 = k;
-                let _e280 = slot_u[_e277].x;
-                let _e281 = k;
-                let _e284 = slot_u[_e281].y;
-                let _e285 = shade_pick(_e273, x_13, n_11, _e274, _e87, _e275, 1f, _e280, _e284, eps_4);
-                let _e286 = w;
-                let _e287 = scaled(_e285, _e286);
-                let _e288 = add(_e270, _e287);
-                t = _e288;
+            if first_1 {
+                let _e278 = t;
+                let _e279 = k_1;
+                let _e281 = slot_light[_e279];
+                let _e282 = r;
+                let _e283 = m;
+                let _e285 = k_1;
+                let _e288 = slot_u[_e285].x;
+                let _e289 = k_1;
+                let _e292 = slot_u[_e289].y;
+                let _e293 = shade_pick(_e281, x_13, n_11, _e282, _e87, _e283, 1f, _e288, _e292, eps_4);
+                let _e294 = w;
+                let _e295 = scaled(_e293, _e294);
+                let _e296 = add(_e278, _e295);
+                t = _e296;
             }
         }
         continuing {
-            let _e290 = k;
-            k = (_e290 + 1u);
+            let _e298 = k_1;
+            k_1 = (_e298 + 1u);
         }
     }
-    let _e294 = t.diffuse;
-    let _e296 = t.specular;
-    let _e298 = count;
-    textureStore(out_tex, texel_1, vec4<f32>((_e294 + _e296), f32(_e298)));
+    let _e302 = t.diffuse;
+    let _e304 = t.specular;
+    let _e306 = count;
+    textureStore(out_tex, texel_1, vec4<f32>((_e302 + _e304), f32(_e306)));
     return;
 }

@@ -172,7 +172,7 @@ var metal_rough_tex: texture_2d<f32>;
 @group(0) @binding(6) 
 var specular_tex: texture_storage_2d<rgba16float,write>;
 @group(1) @binding(1) 
-var<storage> lights_1: array<GpuLight>;
+var<storage> lights: array<GpuLight>;
 @group(1) @binding(2) 
 var<storage> rt2_5: array<f32>;
 @group(1) @binding(3) 
@@ -311,8 +311,8 @@ fn weighted_replace(w_2: f32, w_sum: f32, u_2: f32) -> bool {
     return ((u_2 * w_sum) < w_2);
 }
 
-fn weighted_pick_weight(w_sum_1: f32, w_3: f32, k_1: u32) -> f32 {
-    let _e3 = to_f32_(k_1);
+fn weighted_pick_weight(w_sum_1: f32, w_3: f32, k_2: u32) -> f32 {
+    let _e3 = to_f32_(k_2);
     return (w_sum_1 / (_e3 * w_3));
 }
 
@@ -963,7 +963,7 @@ fn connect_record(l_4: GpuLight, x_7: vec3<f32>, n_7: vec3<f32>, ng_1: vec3<f32>
 }
 
 fn connect_traced(li: u32, x_8: vec3<f32>, n_8: vec3<f32>, ng_2: vec3<f32>, s: f32, w_res_1: f32, u1_3: f32, u2_3: f32, eps_1: f32, trace_2: bool) -> Connection {
-    let _e12 = lights_1[li];
+    let _e12 = lights[li];
     let _e15 = r2_4[li];
     let _e19 = rt2_5[li];
     let _e21 = connect_record(_e12, x_8, n_8, ng_2, (s * _e15), (s * _e19), w_res_1, u1_3, u2_3, eps_1, trace_2);
@@ -1101,42 +1101,69 @@ fn add(a_8: Shaded, b_7: Shaded) -> Shaded {
     return Shaded((a_8.e + b_7.e), (a_8.diffuse + b_7.diffuse), (a_8.specular + b_7.specular));
 }
 
-fn pick_copies(lights: array<u32, 8>, k_2: u32) -> u32 {
-    var copies: u32 = 1u;
-    var j: u32 = 0u;
+fn first_holders(keys_1: array<vec2<u32>, 8>, held_1: array<bool, 8>) -> array<u32, 8> {
+    var first: array<u32, 8>;
+    var k_3: u32 = 0u;
+    var j_1: u32;
     var local_20: bool;
+    var local_21: bool;
 
     loop {
-        let _e6 = j;
-        if (_e6 < K) {
+        let _e5 = k_3;
+        if (_e5 < K) {
         } else {
             break;
         }
         {
-            let _e9 = j;
-            if (_e9 != k_2) {
-                let _e13 = j;
-                local_20 = (lights[_e13] == lights[k_2]);
-            } else {
-                local_20 = false;
-            }
-            let _e18 = local_20;
-            if _e18 {
-                let _e19 = j;
-                if (_e19 < k_2) {
-                    return 0u;
+            let _e8 = k_3;
+            let _e11 = k_3;
+            let _e12 = k_3;
+            first[_e8] = select(K, _e11, held_1[_e12]);
+            j_1 = 0u;
+            loop {
+                let _e17 = j_1;
+                let _e18 = k_3;
+                if (_e17 < _e18) {
+                    let _e22 = k_3;
+                    local_20 = held_1[_e22];
+                } else {
+                    local_20 = false;
                 }
-                let _e22 = copies;
-                copies = (_e22 + 1u);
+                let _e25 = local_20;
+                if _e25 {
+                } else {
+                    break;
+                }
+                {
+                    let _e26 = j_1;
+                    if held_1[_e26] {
+                        let _e30 = j_1;
+                        let _e32 = k_3;
+                        local_21 = all((keys_1[_e30] == keys_1[_e32]));
+                    } else {
+                        local_21 = false;
+                    }
+                    let _e37 = local_21;
+                    if _e37 {
+                        let _e38 = k_3;
+                        let _e40 = j_1;
+                        first[_e38] = _e40;
+                        break;
+                    }
+                }
+                continuing {
+                    let _e42 = j_1;
+                    j_1 = (_e42 + 1u);
+                }
             }
         }
         continuing {
-            let _e26 = j;
-            j = (_e26 + 1u);
+            let _e45 = k_3;
+            k_3 = (_e45 + 1u);
         }
     }
-    let _e28 = copies;
-    return _e28;
+    let _e47 = first;
+    return _e47;
 }
 
 @compute @workgroup_size(8, 8, 1) 
@@ -1148,7 +1175,12 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     var r: vec3<f32>;
     var h: u32;
     var t: Shaded = Shaded(vec3(0f), vec3(0f), vec3(0f));
+    var keys: array<vec2<u32>, 8>;
+    var held: array<bool, 8>;
     var k: u32 = 0u;
+    var k_1: u32 = 0u;
+    var copies: u32;
+    var j: u32;
 
     let _e4 = view.width;
     if !((gid.x >= _e4)) {
@@ -1212,49 +1244,92 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     let _e128 = bsh_weighted_collect(x_15, n_16, _e126, _e127, _e92, _e115);
     if (_e128.w_sum > 0f) {
         loop {
-            let _e134 = k;
-            if (_e134 < K) {
+            let _e136 = k;
+            if (_e136 < K) {
             } else {
                 break;
             }
             {
-                let _e137 = h;
-                let _e138 = pcg_hash(_e137);
-                h = _e138;
-                let _e139 = h;
-                let _e140 = xi_from_bits(_e139);
-                let _e141 = h;
-                let _e142 = pcg_hash(_e141);
-                h = _e142;
-                let _e143 = h;
-                let _e144 = xi_from_bits(_e143);
-                let _e146 = k;
-                let li_6 = _e128.light[_e146];
-                let _e150 = k;
-                let _e151 = pick_copies(_e128.light, _e150);
-                let _e155 = lights_1[li_6].kind;
-                let copies_1 = select(1u, _e151, (_e155 != LIGHT_TRIANGLE));
-                if (copies_1 > 0u) {
-                    let _e161 = t;
-                    let _e162 = r;
-                    let _e163 = m;
-                    let _e166 = k;
-                    let _e169 = weighted_pick_weight(_e128.w_sum, _e128.w[_e166], K);
-                    let _e172 = shade_pick(li_6, x_15, n_16, _e162, _e92, _e163, (_e169 * f32(copies_1)), _e140, _e144, eps_4);
-                    let _e173 = add(_e161, _e172);
-                    t = _e173;
+                let _e140 = k;
+                let _e145 = k;
+                let _e149 = lights[_e128.light[_e145]].kind;
+                let own = select(0u, (_e140 + 1u), (_e149 == LIGHT_TRIANGLE));
+                let _e153 = k;
+                let _e156 = k;
+                keys[_e153] = vec2<u32>(_e128.light[_e156], own);
+                let _e159 = k;
+                held[_e159] = true;
+            }
+            continuing {
+                let _e163 = k;
+                k = (_e163 + 1u);
+            }
+        }
+        let _e165 = keys;
+        let _e166 = held;
+        let _e167 = first_holders(_e165, _e166);
+        loop {
+            let _e170 = k_1;
+            if (_e170 < K) {
+            } else {
+                break;
+            }
+            {
+                let _e173 = h;
+                let _e174 = pcg_hash(_e173);
+                h = _e174;
+                let _e175 = h;
+                let _e176 = xi_from_bits(_e175);
+                let _e177 = h;
+                let _e178 = pcg_hash(_e177);
+                h = _e178;
+                let _e179 = h;
+                let _e180 = xi_from_bits(_e179);
+                let _e182 = k_1;
+                let li_6 = _e128.light[_e182];
+                copies = 0u;
+                let _e186 = k_1;
+                j = _e186;
+                loop {
+                    let _e188 = j;
+                    if (_e188 < K) {
+                    } else {
+                        break;
+                    }
+                    {
+                        let _e191 = copies;
+                        let _e194 = j;
+                        let _e196 = k_1;
+                        copies = (_e191 + select(0u, 1u, (_e167[_e194] == _e196)));
+                    }
+                    continuing {
+                        let _e201 = j;
+                        j = (_e201 + 1u);
+                    }
+                }
+                let _e203 = copies;
+                if (_e203 > 0u) {
+                    let _e206 = t;
+                    let _e207 = r;
+                    let _e208 = m;
+                    let _e211 = k_1;
+                    let _e214 = weighted_pick_weight(_e128.w_sum, _e128.w[_e211], K);
+                    let _e215 = copies;
+                    let _e218 = shade_pick(li_6, x_15, n_16, _e207, _e92, _e208, (_e214 * f32(_e215)), _e176, _e180, eps_4);
+                    let _e219 = add(_e206, _e218);
+                    t = _e219;
                 }
             }
             continuing {
-                let _e175 = k;
-                k = (_e175 + 1u);
+                let _e221 = k_1;
+                k_1 = (_e221 + 1u);
             }
         }
     }
     let count = _e128.n;
-    let _e180 = t.e;
-    textureStore(out_tex, texel_1, vec4<f32>(_e180, f32(count)));
-    let _e185 = t.specular;
-    textureStore(specular_tex, texel_1, vec4<f32>(_e185, 0f));
+    let _e226 = t.e;
+    textureStore(out_tex, texel_1, vec4<f32>(_e226, f32(count)));
+    let _e231 = t.specular;
+    textureStore(specular_tex, texel_1, vec4<f32>(_e231, 0f));
     return;
 }

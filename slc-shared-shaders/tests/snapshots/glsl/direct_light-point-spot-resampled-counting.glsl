@@ -226,28 +226,28 @@ float connection_factor(float cos_x, float d2_3, float rt2_1, float w_1) {
 }
 
 float connection_cosine(vec3 x_2, vec3 y, vec3 n, vec3 ng, float r2_1) {
+    bool local_4 = false;
     bool local_5 = false;
-    bool local_6 = false;
     vec3 v_3 = (x_2 - y);
     float d2_6 = dot(v_3, v_3);
     bool _e7 = slc_keep(r2_1, d2_6);
     if (!(!(_e7))) {
-        local_5 = !((d2_6 > 0.0));
+        local_4 = !((d2_6 > 0.0));
     } else {
-        local_5 = true;
+        local_4 = true;
     }
-    bool _e16 = local_5;
+    bool _e16 = local_4;
     if (_e16) {
         return 0.0;
     }
     vec3 w_7 = (v_3 / vec3(sqrt(d2_6)));
     float cos_x_1 = -(dot(n, w_7));
     if (!((cos_x_1 <= 0.0))) {
-        local_6 = (dot(ng, w_7) >= 0.0);
+        local_5 = (dot(ng, w_7) >= 0.0);
     } else {
-        local_6 = true;
+        local_5 = true;
     }
-    bool _e32 = local_6;
+    bool _e32 = local_5;
     if (_e32) {
         return 0.0;
     }
@@ -288,34 +288,34 @@ float resample_target(vec3 c_1) {
     return (((c_1.x + c_1.y) + c_1.z) * 0.33333334);
 }
 
-float slot_target(vec3 c_2, uint slot, uint k_1) {
-    if ((k_1 < 3u)) {
+float slot_target(vec3 c_2, uint slot, uint k_2) {
+    if ((k_2 < 3u)) {
         float _e5 = resample_target(c_2);
         return _e5;
     }
-    uint j_1 = (slot % 3u);
-    if ((j_1 == 0u)) {
+    uint j_2 = (slot % 3u);
+    if ((j_2 == 0u)) {
         return c_2.x;
     }
-    if ((j_1 == 1u)) {
+    if ((j_2 == 1u)) {
         return c_2.y;
     }
     return c_2.z;
 }
 
-vec3 slot_share(uint slot_1, uint k_2) {
-    if ((k_2 < 3u)) {
-        float _e4 = to_f32_(k_2);
+vec3 slot_share(uint slot_1, uint k_3) {
+    if ((k_3 < 3u)) {
+        float _e4 = to_f32_(k_3);
         float w_8 = (1.0 / _e4);
         return vec3(w_8, w_8, w_8);
     }
-    uint j_2 = (slot_1 % 3u);
-    float _e15 = to_f32_((((k_2 + 2u) - j_2) / 3u));
+    uint j_3 = (slot_1 % 3u);
+    float _e15 = to_f32_((((k_3 + 2u) - j_3) / 3u));
     float w_9 = (1.0 / _e15);
-    if ((j_2 == 0u)) {
+    if ((j_3 == 0u)) {
         return vec3(w_9, 0.0, 0.0);
     }
-    if ((j_2 == 1u)) {
+    if ((j_3 == 1u)) {
         return vec3(0.0, w_9, 0.0);
     }
     return vec3(0.0, 0.0, w_9);
@@ -354,22 +354,22 @@ vec4 range_lobe(vec4 lobe_4) {
 }
 
 float cone_cos_of(vec3 v, float d2_4, float a_2, vec3 d) {
+    bool local_6 = false;
     bool local_7 = false;
-    bool local_8 = false;
     float vd = dot(v, d);
     float h2_ = (d2_4 - (a_2 * a_2));
     if (!((h2_ <= 0.0))) {
         if ((vd >= 0.0)) {
-            local_8 = ((vd * vd) >= h2_);
+            local_7 = ((vd * vd) >= h2_);
         } else {
-            local_8 = false;
+            local_7 = false;
         }
-        bool _e19 = local_8;
-        local_7 = _e19;
+        bool _e19 = local_7;
+        local_6 = _e19;
     } else {
-        local_7 = true;
+        local_6 = true;
     }
-    bool _e21 = local_7;
+    bool _e21 = local_6;
     if (_e21) {
         return 1.0;
     }
@@ -426,9 +426,9 @@ float ray_aabb(vec3 o, vec3 inv_d, vec3 bmin, vec3 bmax, float t_max) {
 }
 
 float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_3, vec3 b_3, vec3 c_3, float t_min, float t_max_1) {
+    bool local_8 = false;
     bool local_9 = false;
     bool local_10 = false;
-    bool local_11 = false;
     vec3 e1_ = (b_3 - a_3);
     vec3 e2_ = (c_3 - a_3);
     vec3 p_2 = cross(d_3, e2_);
@@ -440,32 +440,32 @@ float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_3, vec3 b_3, vec3 c_3, float t_min
     vec3 s_4 = (o_1 - a_3);
     float u_3 = (dot(s_4, p_2) * inv);
     if (!((u_3 < 0.0))) {
-        local_9 = (u_3 > 1.0);
+        local_8 = (u_3 > 1.0);
     } else {
-        local_9 = true;
+        local_8 = true;
     }
-    bool _e28 = local_9;
+    bool _e28 = local_8;
     if (_e28) {
         return -1.0;
     }
     vec3 q_1 = cross(s_4, e1_);
     float v_5 = (dot(d_3, q_1) * inv);
     if (!((v_5 < 0.0))) {
-        local_10 = ((u_3 + v_5) > 1.0);
+        local_9 = ((u_3 + v_5) > 1.0);
     } else {
-        local_10 = true;
+        local_9 = true;
     }
-    bool _e42 = local_10;
+    bool _e42 = local_9;
     if (_e42) {
         return -1.0;
     }
     float t_3 = (dot(e2_, q_1) * inv);
     if ((t_3 > t_min)) {
-        local_11 = (t_3 < t_max_1);
+        local_10 = (t_3 < t_max_1);
     } else {
-        local_11 = false;
+        local_10 = false;
     }
-    bool _e51 = local_11;
+    bool _e51 = local_10;
     if (_e51) {
         return t_3;
     }
@@ -605,19 +605,19 @@ float bsh_inner_scale(float a_5, vec3 v_1, float d2_5, vec3 r_3, vec4 rl_2) {
 }
 
 bool bsh_reaches(BshNode node_3, vec3 x_4, vec3 r_4, vec4 rl_3) {
+    bool local_11 = false;
     bool local_12 = false;
-    bool local_13 = false;
     bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_4);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
         bool _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001)), x_4);
-        local_12 = !(_e20);
+        local_11 = !(_e20);
     } else {
-        local_12 = true;
+        local_11 = true;
     }
-    bool _e23 = local_12;
+    bool _e23 = local_11;
     if (_e23) {
         return false;
     }
@@ -638,11 +638,11 @@ bool bsh_reaches(BshNode node_3, vec3 x_4, vec3 r_4, vec4 rl_3) {
     float s_c = (_e50 * 1.001);
     float reach = (node_3.extent + (sqrt(s_c) * _e25));
     if ((d2_7 <= ((node_3.radius * node_3.radius) * s_c))) {
-        local_13 = (d2_7 <= (reach * reach));
+        local_12 = (d2_7 <= (reach * reach));
     } else {
-        local_13 = false;
+        local_12 = false;
     }
-    bool _e67 = local_13;
+    bool _e67 = local_12;
     return _e67;
 }
 
@@ -675,8 +675,8 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start, vec3 x_5, vec3 r_5, vec4 rl_4)
 
 Connection connect_record(GpuLight l_2, vec3 x_6, vec3 n_1, vec3 ng_1, float r2_2, float rt2_2, float w_res, float u1_1, float u2_1, float eps, bool trace_1) {
     Connection c_4 = Connection(vec3(0.0), vec3(0.0), 0.0);
+    bool local_13 = false;
     bool local_14 = false;
-    bool local_15 = false;
     c_4.e = vec3(0.0);
     vec3 _e16 = light_point(l_2, u1_1, u2_1);
     c_4.y = _e16;
@@ -688,16 +688,16 @@ Connection connect_record(GpuLight l_2, vec3 x_6, vec3 n_1, vec3 ng_1, float r2_
         if (trace_1) {
             vec3 _e33 = c_4.y;
             bool _e34 = occluded((x_6 + (ng_1 * eps)), _e33);
-            local_15 = _e34;
+            local_14 = _e34;
         } else {
-            local_15 = false;
+            local_14 = false;
         }
-        bool _e36 = local_15;
-        local_14 = _e36;
+        bool _e36 = local_14;
+        local_13 = _e36;
     } else {
-        local_14 = true;
+        local_13 = true;
     }
-    bool _e38 = local_14;
+    bool _e38 = local_13;
     if (_e38) {
         Connection _e39 = c_4;
         return _e39;
@@ -764,6 +764,74 @@ Shaded scaled(Shaded s_2, vec3 w_6) {
     return Shaded((s_2.e * w_6), (s_2.diffuse * w_6), (s_2.specular * w_6));
 }
 
+uint[8] first_holders(uvec2 keys_1[8], bool held_1[8]) {
+    uint first[8] = uint[8](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
+    uint k_4 = 0u;
+    uint j_1 = 0u;
+    bool local_15 = false;
+    bool local_16 = false;
+    bool loop_init_1 = true;
+    while(true) {
+        if (!loop_init_1) {
+            uint _e45 = k_4;
+            k_4 = (_e45 + 1u);
+        }
+        loop_init_1 = false;
+        uint _e5 = k_4;
+        if ((_e5 < K)) {
+        } else {
+            break;
+        }
+        {
+            uint _e8 = k_4;
+            uint _e11 = k_4;
+            uint _e12 = k_4;
+            first[_e8] = (held_1[_e12] ? _e11 : K);
+            j_1 = 0u;
+            bool loop_init_2 = true;
+            while(true) {
+                if (!loop_init_2) {
+                    uint _e42 = j_1;
+                    j_1 = (_e42 + 1u);
+                }
+                loop_init_2 = false;
+                uint _e17 = j_1;
+                uint _e18 = k_4;
+                if ((_e17 < _e18)) {
+                    uint _e22 = k_4;
+                    local_15 = held_1[_e22];
+                } else {
+                    local_15 = false;
+                }
+                bool _e25 = local_15;
+                if (_e25) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e26 = j_1;
+                    if (held_1[_e26]) {
+                        uint _e30 = j_1;
+                        uint _e32 = k_4;
+                        local_16 = all(equal(keys_1[_e30], keys_1[_e32]));
+                    } else {
+                        local_16 = false;
+                    }
+                    bool _e37 = local_16;
+                    if (_e37) {
+                        uint _e38 = k_4;
+                        uint _e40 = j_1;
+                        first[_e38] = _e40;
+                        break;
+                    }
+                }
+            }
+        }
+    }
+    uint _e47[8] = first;
+    return _e47;
+}
+
 vec3 output_of(Shaded s_3) {
     return s_3.e;
 }
@@ -786,12 +854,13 @@ void main() {
     uint b = 0u;
     uint q = 0u;
     bool local_2 = false;
+    uvec2 keys[8] = uvec2[8](uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u));
+    bool held[8] = bool[8](false, false, false, false, false, false, false, false);
     uint k = 0u;
+    uint k_1 = 0u;
     vec3 w = vec3(0.0);
-    bool first = false;
     uint j = 0u;
     bool local_3 = false;
-    bool local_4 = false;
     uint _e4 = _group_0_binding_0_cs.width;
     if (!((gid.x >= _e4))) {
         uint _e12 = _group_0_binding_0_cs.height;
@@ -837,16 +906,16 @@ void main() {
     vec3 _e100 = r;
     uint _e101 = bsh_next_leaf_lobe(BSH, _e99, x_11, _e100, _e54);
     b = _e101;
-    bool loop_init_1 = true;
+    bool loop_init_3 = true;
     while(true) {
-        if (!loop_init_1) {
+        if (!loop_init_3) {
             uint _e174 = b;
             uint _e177 = _group_1_binding_4_cs[_e174].next;
             vec3 _e178 = r;
             uint _e179 = bsh_next_leaf_lobe(BSH, _e177, x_11, _e178, _e54);
             b = _e179;
         }
-        loop_init_1 = false;
+        loop_init_3 = false;
         uint _e103 = b;
         if ((_e103 != BSH_NONE)) {
         } else {
@@ -879,13 +948,13 @@ void main() {
                 vec3 _e138 = total;
                 total = (_e138 + _e130);
                 q = 0u;
-                bool loop_init_2 = true;
+                bool loop_init_4 = true;
                 while(true) {
-                    if (!loop_init_2) {
+                    if (!loop_init_4) {
                         uint _e170 = q;
                         q = (_e170 + 1u);
                     }
-                    loop_init_2 = false;
+                    loop_init_4 = false;
                     uint _e142 = q;
                     if ((_e142 < K)) {
                     } else {
@@ -922,103 +991,115 @@ void main() {
             }
         }
     }
-    bool loop_init_3 = true;
+    bool loop_init_5 = true;
     while(true) {
-        if (!loop_init_3) {
-            uint _e261 = k;
-            k = (_e261 + 1u);
+        if (!loop_init_5) {
+            uint _e202 = k;
+            k = (_e202 + 1u);
         }
-        loop_init_3 = false;
-        uint _e182 = k;
-        if ((_e182 < K)) {
+        loop_init_5 = false;
+        uint _e184 = k;
+        if ((_e184 < K)) {
+        } else {
+            break;
+        }
+        {
+            uint _e187 = k;
+            uint _e189 = k;
+            uint _e191 = slot_light[_e189];
+            keys[_e187] = uvec2(_e191, 0u);
+            uint _e194 = k;
+            uint _e196 = k;
+            float _e198 = slot_p[_e196];
+            held[_e194] = (_e198 > 0.0);
+        }
+    }
+    uvec2 _e204[8] = keys;
+    bool _e205[8] = held;
+    uint _e206[8] = first_holders(_e204, _e205);
+    bool loop_init_6 = true;
+    while(true) {
+        if (!loop_init_6) {
+            uint _e269 = k_1;
+            k_1 = (_e269 + 1u);
+        }
+        loop_init_6 = false;
+        uint _e209 = k_1;
+        if ((_e209 < K)) {
         } else {
             break;
         }
         {
             w = vec3(0.0);
-            uint _e188 = k;
-            float _e190 = slot_p[_e188];
-            first = (_e190 > 0.0);
-            j = 0u;
-            bool loop_init_4 = true;
+            uint _e215 = k_1;
+            uint _e217 = k_1;
+            bool first_1 = (_e206[_e215] == _e217);
+            uint _e219 = k_1;
+            j = _e219;
+            bool loop_init_7 = true;
             while(true) {
-                if (!loop_init_4) {
-                    uint _e238 = j;
-                    j = (_e238 + 1u);
+                if (!loop_init_7) {
+                    uint _e247 = j;
+                    j = (_e247 + 1u);
                 }
-                loop_init_4 = false;
-                uint _e196 = j;
-                if ((_e196 < K)) {
+                loop_init_7 = false;
+                uint _e221 = j;
+                if ((_e221 < K)) {
+                    local_3 = first_1;
+                } else {
+                    local_3 = false;
+                }
+                bool _e227 = local_3;
+                if (_e227) {
                 } else {
                     break;
                 }
                 {
-                    uint _e199 = j;
-                    float _e201 = slot_p[_e199];
-                    if ((_e201 > 0.0)) {
-                        uint _e206 = j;
-                        uint _e208 = slot_light[_e206];
-                        uint _e209 = k;
-                        uint _e211 = slot_light[_e209];
-                        local_3 = (_e208 == _e211);
-                    } else {
-                        local_3 = false;
-                    }
-                    bool _e214 = local_3;
-                    if (_e214) {
-                        bool _e215 = first;
-                        if (_e215) {
-                            uint _e218 = j;
-                            uint _e219 = k;
-                            local_4 = (_e218 >= _e219);
-                        } else {
-                            local_4 = false;
-                        }
-                        bool _e222 = local_4;
-                        first = _e222;
-                        vec3 _e223 = w;
-                        vec3 _e224 = total;
-                        uint _e225 = j;
-                        float _e227 = slot_target(_e224, _e225, K);
-                        uint _e228 = j;
-                        float _e230 = slot_p[_e228];
-                        uint _e232 = j;
-                        vec3 _e234 = slot_share(_e232, K);
-                        w = (_e223 + ((_e227 / _e230) * _e234));
+                    uint _e228 = j;
+                    uint _e230 = k_1;
+                    if ((_e206[_e228] == _e230)) {
+                        vec3 _e232 = w;
+                        vec3 _e233 = total;
+                        uint _e234 = j;
+                        float _e236 = slot_target(_e233, _e234, K);
+                        uint _e237 = j;
+                        float _e239 = slot_p[_e237];
+                        uint _e241 = j;
+                        vec3 _e243 = slot_share(_e241, K);
+                        w = (_e232 + ((_e236 / _e239) * _e243));
                     }
                 }
             }
-            bool _e240 = first;
-            if (_e240) {
-                Shaded _e241 = t;
-                uint _e242 = k;
-                uint _e244 = slot_light[_e242];
-                vec3 _e245 = r;
-                Material _e246 = m;
-                uint _e248 = k;
-                float _e251 = slot_u[_e248].x;
-                uint _e252 = k;
-                float _e255 = slot_u[_e252].y;
-                Shaded _e256 = shade_pick(_e244, x_11, n_8, _e245, _e54, _e246, 1.0, _e251, _e255, eps_4);
-                vec3 _e257 = w;
-                Shaded _e258 = scaled(_e256, _e257);
-                Shaded _e259 = add(_e241, _e258);
-                t = _e259;
+            if (first_1) {
+                Shaded _e249 = t;
+                uint _e250 = k_1;
+                uint _e252 = slot_light[_e250];
+                vec3 _e253 = r;
+                Material _e254 = m;
+                uint _e256 = k_1;
+                float _e259 = slot_u[_e256].x;
+                uint _e260 = k_1;
+                float _e263 = slot_u[_e260].y;
+                Shaded _e264 = shade_pick(_e252, x_11, n_8, _e253, _e54, _e254, 1.0, _e259, _e263, eps_4);
+                vec3 _e265 = w;
+                Shaded _e266 = scaled(_e264, _e265);
+                Shaded _e267 = add(_e249, _e266);
+                t = _e267;
             }
         }
     }
-    vec3 _e265 = t.e;
-    uint _e266 = count;
-    imageStore(_group_0_binding_3_cs, texel_1, vec4(_e265, float(_e266)));
+    vec3 _e273 = t.e;
+    uint _e274 = count;
+    imageStore(_group_0_binding_3_cs, texel_1, vec4(_e273, float(_e274)));
     direct_count(DIRECT_COUNT_PIXELS, 1u);
-    uint _e272 = count;
-    direct_count(DIRECT_COUNT_CANDIDATES, _e272);
-    uint _e275 = evaluations;
-    direct_count(DIRECT_COUNT_EVALUATIONS, _e275);
-    uint _e278 = rays_cast;
-    direct_count(DIRECT_COUNT_RAYS, _e278);
-    uint _e281 = nodes_visited;
-    direct_count(DIRECT_COUNT_NODES, _e281);
+    uint _e280 = count;
+    direct_count(DIRECT_COUNT_CANDIDATES, _e280);
+    uint _e283 = evaluations;
+    direct_count(DIRECT_COUNT_EVALUATIONS, _e283);
+    uint _e286 = rays_cast;
+    direct_count(DIRECT_COUNT_RAYS, _e286);
+    uint _e289 = nodes_visited;
+    direct_count(DIRECT_COUNT_NODES, _e289);
     return;
 }
 

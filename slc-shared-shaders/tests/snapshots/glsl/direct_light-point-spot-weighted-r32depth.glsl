@@ -295,8 +295,8 @@ bool weighted_replace(float w_1, float w_sum, float u_2) {
     return ((u_2 * w_sum) < w_1);
 }
 
-float weighted_pick_weight(float w_sum_1, float w_2, uint k_1) {
-    float _e3 = to_f32_(k_1);
+float weighted_pick_weight(float w_sum_1, float w_2, uint k_2) {
+    float _e3 = to_f32_(k_2);
     return (w_sum_1 / (_e3 * w_2));
 }
 
@@ -981,43 +981,72 @@ Shaded add(Shaded a_6, Shaded b_5) {
     return Shaded((a_6.e + b_5.e), (a_6.diffuse + b_5.diffuse), (a_6.specular + b_5.specular));
 }
 
-uint pick_copies(uint lights[8], uint k_2) {
-    uint copies = 1u;
-    uint j = 0u;
+uint[8] first_holders(uvec2 keys_1[8], bool held_1[8]) {
+    uint first[8] = uint[8](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
+    uint k_3 = 0u;
+    uint j_1 = 0u;
     bool local_18 = false;
+    bool local_19 = false;
     bool loop_init_3 = true;
     while(true) {
         if (!loop_init_3) {
-            uint _e26 = j;
-            j = (_e26 + 1u);
+            uint _e45 = k_3;
+            k_3 = (_e45 + 1u);
         }
         loop_init_3 = false;
-        uint _e6 = j;
-        if ((_e6 < K)) {
+        uint _e5 = k_3;
+        if ((_e5 < K)) {
         } else {
             break;
         }
         {
-            uint _e9 = j;
-            if ((_e9 != k_2)) {
-                uint _e13 = j;
-                local_18 = (lights[_e13] == lights[k_2]);
-            } else {
-                local_18 = false;
-            }
-            bool _e18 = local_18;
-            if (_e18) {
-                uint _e19 = j;
-                if ((_e19 < k_2)) {
-                    return 0u;
+            uint _e8 = k_3;
+            uint _e11 = k_3;
+            uint _e12 = k_3;
+            first[_e8] = (held_1[_e12] ? _e11 : K);
+            j_1 = 0u;
+            bool loop_init_4 = true;
+            while(true) {
+                if (!loop_init_4) {
+                    uint _e42 = j_1;
+                    j_1 = (_e42 + 1u);
                 }
-                uint _e22 = copies;
-                copies = (_e22 + 1u);
+                loop_init_4 = false;
+                uint _e17 = j_1;
+                uint _e18 = k_3;
+                if ((_e17 < _e18)) {
+                    uint _e22 = k_3;
+                    local_18 = held_1[_e22];
+                } else {
+                    local_18 = false;
+                }
+                bool _e25 = local_18;
+                if (_e25) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e26 = j_1;
+                    if (held_1[_e26]) {
+                        uint _e30 = j_1;
+                        uint _e32 = k_3;
+                        local_19 = all(equal(keys_1[_e30], keys_1[_e32]));
+                    } else {
+                        local_19 = false;
+                    }
+                    bool _e37 = local_19;
+                    if (_e37) {
+                        uint _e38 = k_3;
+                        uint _e40 = j_1;
+                        first[_e38] = _e40;
+                        break;
+                    }
+                }
             }
         }
     }
-    uint _e28 = copies;
-    return _e28;
+    uint _e47[8] = first;
+    return _e47;
 }
 
 void main() {
@@ -1029,7 +1058,12 @@ void main() {
     vec3 r = vec3(0.0);
     uint h = 0u;
     Shaded t = Shaded(vec3(0.0), vec3(0.0), vec3(0.0));
+    uvec2 keys[8] = uvec2[8](uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u));
+    bool held[8] = bool[8](false, false, false, false, false, false, false, false);
     uint k = 0u;
+    uint k_1 = 0u;
+    uint copies = 0u;
+    uint j = 0u;
     uint _e4 = _group_0_binding_0_cs.width;
     if (!((gid.x >= _e4))) {
         uint _e12 = _group_0_binding_0_cs.height;
@@ -1074,51 +1108,98 @@ void main() {
     vec4 _e89 = lobe;
     WeightedPicks _e90 = bsh_weighted_collect(x_16, n_12, _e88, _e89, _e54, _e77);
     if ((_e90.w_sum > 0.0)) {
-        bool loop_init_4 = true;
+        bool loop_init_5 = true;
         while(true) {
-            if (!loop_init_4) {
-                uint _e137 = k;
-                k = (_e137 + 1u);
+            if (!loop_init_5) {
+                uint _e125 = k;
+                k = (_e125 + 1u);
             }
-            loop_init_4 = false;
-            uint _e96 = k;
-            if ((_e96 < K)) {
+            loop_init_5 = false;
+            uint _e98 = k;
+            if ((_e98 < K)) {
             } else {
                 break;
             }
             {
-                uint _e99 = h;
-                uint _e100 = pcg_hash(_e99);
-                h = _e100;
-                uint _e101 = h;
-                float _e102 = xi_from_bits(_e101);
-                uint _e103 = h;
-                uint _e104 = pcg_hash(_e103);
-                h = _e104;
-                uint _e105 = h;
-                float _e106 = xi_from_bits(_e105);
-                uint _e108 = k;
-                uint li_6 = _e90.light[_e108];
-                uint _e112 = k;
-                uint _e113 = pick_copies(_e90.light, _e112);
-                uint _e117 = _group_1_binding_1_cs[li_6].kind;
-                uint copies_1 = ((_e117 != LIGHT_TRIANGLE) ? _e113 : 1u);
-                if ((copies_1 > 0u)) {
-                    Shaded _e123 = t;
-                    vec3 _e124 = r;
-                    Material _e125 = m;
-                    uint _e128 = k;
-                    float _e131 = weighted_pick_weight(_e90.w_sum, _e90.w[_e128], K);
-                    Shaded _e134 = shade_pick(li_6, x_16, n_12, _e124, _e54, _e125, (_e131 * float(copies_1)), _e102, _e106, eps_4);
-                    Shaded _e135 = add(_e123, _e134);
-                    t = _e135;
+                uint _e102 = k;
+                uint _e107 = k;
+                uint _e111 = _group_1_binding_1_cs[_e90.light[_e107]].kind;
+                uint own = ((_e111 == LIGHT_TRIANGLE) ? (_e102 + 1u) : 0u);
+                uint _e115 = k;
+                uint _e118 = k;
+                keys[_e115] = uvec2(_e90.light[_e118], own);
+                uint _e121 = k;
+                held[_e121] = true;
+            }
+        }
+        uvec2 _e127[8] = keys;
+        bool _e128[8] = held;
+        uint _e129[8] = first_holders(_e127, _e128);
+        bool loop_init_6 = true;
+        while(true) {
+            if (!loop_init_6) {
+                uint _e183 = k_1;
+                k_1 = (_e183 + 1u);
+            }
+            loop_init_6 = false;
+            uint _e132 = k_1;
+            if ((_e132 < K)) {
+            } else {
+                break;
+            }
+            {
+                uint _e135 = h;
+                uint _e136 = pcg_hash(_e135);
+                h = _e136;
+                uint _e137 = h;
+                float _e138 = xi_from_bits(_e137);
+                uint _e139 = h;
+                uint _e140 = pcg_hash(_e139);
+                h = _e140;
+                uint _e141 = h;
+                float _e142 = xi_from_bits(_e141);
+                uint _e144 = k_1;
+                uint li_6 = _e90.light[_e144];
+                copies = 0u;
+                uint _e148 = k_1;
+                j = _e148;
+                bool loop_init_7 = true;
+                while(true) {
+                    if (!loop_init_7) {
+                        uint _e163 = j;
+                        j = (_e163 + 1u);
+                    }
+                    loop_init_7 = false;
+                    uint _e150 = j;
+                    if ((_e150 < K)) {
+                    } else {
+                        break;
+                    }
+                    {
+                        uint _e153 = copies;
+                        uint _e156 = j;
+                        uint _e158 = k_1;
+                        copies = (_e153 + ((_e129[_e156] == _e158) ? 1u : 0u));
+                    }
+                }
+                uint _e165 = copies;
+                if ((_e165 > 0u)) {
+                    Shaded _e168 = t;
+                    vec3 _e169 = r;
+                    Material _e170 = m;
+                    uint _e173 = k_1;
+                    float _e176 = weighted_pick_weight(_e90.w_sum, _e90.w[_e173], K);
+                    uint _e177 = copies;
+                    Shaded _e180 = shade_pick(li_6, x_16, n_12, _e169, _e54, _e170, (_e176 * float(_e177)), _e138, _e142, eps_4);
+                    Shaded _e181 = add(_e168, _e180);
+                    t = _e181;
                 }
             }
         }
     }
     uint count = _e90.n;
-    vec3 _e142 = t.e;
-    imageStore(_group_0_binding_3_cs, texel_1, vec4(_e142, float(count)));
+    vec3 _e188 = t.e;
+    imageStore(_group_0_binding_3_cs, texel_1, vec4(_e188, float(count)));
     return;
 }
 

@@ -234,28 +234,28 @@ float connection_factor(float cos_x, float d2_3, float rt2_1, float w_1) {
 }
 
 float connection_cosine(vec3 x_2, vec3 y, vec3 n, vec3 ng, float r2_1) {
+    bool local_4 = false;
     bool local_5 = false;
-    bool local_6 = false;
     vec3 v_6 = (x_2 - y);
     float d2_6 = dot(v_6, v_6);
     bool _e7 = slc_keep(r2_1, d2_6);
     if (!(!(_e7))) {
-        local_5 = !((d2_6 > 0.0));
+        local_4 = !((d2_6 > 0.0));
     } else {
-        local_5 = true;
+        local_4 = true;
     }
-    bool _e16 = local_5;
+    bool _e16 = local_4;
     if (_e16) {
         return 0.0;
     }
     vec3 w_8 = (v_6 / vec3(sqrt(d2_6)));
     float cos_x_1 = -(dot(n, w_8));
     if (!((cos_x_1 <= 0.0))) {
-        local_6 = (dot(ng, w_8) >= 0.0);
+        local_5 = (dot(ng, w_8) >= 0.0);
     } else {
-        local_6 = true;
+        local_5 = true;
     }
-    bool _e32 = local_6;
+    bool _e32 = local_5;
     if (_e32) {
         return 0.0;
     }
@@ -299,34 +299,34 @@ float resample_target(vec3 c_2) {
     return (((c_2.x + c_2.y) + c_2.z) * 0.33333334);
 }
 
-float slot_target(vec3 c_3, uint slot, uint k_1) {
-    if ((k_1 < 3u)) {
+float slot_target(vec3 c_3, uint slot, uint k_2) {
+    if ((k_2 < 3u)) {
         float _e5 = resample_target(c_3);
         return _e5;
     }
-    uint j_1 = (slot % 3u);
-    if ((j_1 == 0u)) {
+    uint j_2 = (slot % 3u);
+    if ((j_2 == 0u)) {
         return c_3.x;
     }
-    if ((j_1 == 1u)) {
+    if ((j_2 == 1u)) {
         return c_3.y;
     }
     return c_3.z;
 }
 
-vec3 slot_share(uint slot_1, uint k_2) {
-    if ((k_2 < 3u)) {
-        float _e4 = to_f32_(k_2);
+vec3 slot_share(uint slot_1, uint k_3) {
+    if ((k_3 < 3u)) {
+        float _e4 = to_f32_(k_3);
         float w_9 = (1.0 / _e4);
         return vec3(w_9, w_9, w_9);
     }
-    uint j_2 = (slot_1 % 3u);
-    float _e15 = to_f32_((((k_2 + 2u) - j_2) / 3u));
+    uint j_3 = (slot_1 % 3u);
+    float _e15 = to_f32_((((k_3 + 2u) - j_3) / 3u));
     float w_10 = (1.0 / _e15);
-    if ((j_2 == 0u)) {
+    if ((j_3 == 0u)) {
         return vec3(w_10, 0.0, 0.0);
     }
-    if ((j_2 == 1u)) {
+    if ((j_3 == 1u)) {
         return vec3(0.0, w_10, 0.0);
     }
     return vec3(0.0, 0.0, w_10);
@@ -347,13 +347,13 @@ float smith_root(float cos_, float alpha_1) {
 }
 
 float smith_visibility(float n_l, float n_v, float alpha_2) {
-    bool local_7 = false;
+    bool local_6 = false;
     if (!((n_l <= 0.0))) {
-        local_7 = (n_v <= 0.0);
+        local_6 = (n_v <= 0.0);
     } else {
-        local_7 = true;
+        local_6 = true;
     }
-    bool _e11 = local_7;
+    bool _e11 = local_6;
     if (_e11) {
         return 0.0;
     }
@@ -375,20 +375,20 @@ vec3 specular_fresnel(vec3 base, float metallic, vec3 f0_d, float f90_d, float v
 }
 
 bool has_specular(float metallic_1, vec3 f0_d_1, float f90_d_1) {
+    bool local_7 = false;
     bool local_8 = false;
-    bool local_9 = false;
     if (!((metallic_1 > 0.0))) {
-        local_8 = (f90_d_1 > 0.0);
+        local_7 = (f90_d_1 > 0.0);
+    } else {
+        local_7 = true;
+    }
+    bool _e11 = local_7;
+    if (!(_e11)) {
+        local_8 = (max(max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0.0);
     } else {
         local_8 = true;
     }
-    bool _e11 = local_8;
-    if (!(_e11)) {
-        local_9 = (max(max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0.0);
-    } else {
-        local_9 = true;
-    }
-    bool _e23 = local_9;
+    bool _e23 = local_8;
     return _e23;
 }
 
@@ -397,16 +397,16 @@ float channel_mean(vec3 c_4) {
 }
 
 vec4 receiver_lobe(vec3 base_1, float metallic_2, vec3 f0_d_2, float f90_d_2, float alpha_3, float n_v_1) {
-    bool local_10 = false;
+    bool local_9 = false;
     vec3 _e10 = fresnel_schlick(f0_d_2, f90_d_2, n_v_1);
     float _e16 = channel_mean((((vec3(1.0, 1.0, 1.0) - _e10) * base_1) * (1.0 - metallic_2)));
     if (!((n_v_1 <= 0.0))) {
         bool _e22 = has_specular(metallic_2, f0_d_2, f90_d_2);
-        local_10 = !(_e22);
+        local_9 = !(_e22);
     } else {
-        local_10 = true;
+        local_9 = true;
     }
-    bool _e25 = local_10;
+    bool _e25 = local_9;
     if (_e25) {
         return vec4(_e16, 0.0, alpha_3, n_v_1);
     }
@@ -490,22 +490,22 @@ vec3 bevy_brdf(vec3 base_2, float metallic_3, float r_3, float reflectance_1, ve
 }
 
 float cone_cos_of(vec3 v_2, float d2_4, float a_3, vec3 d) {
+    bool local_10 = false;
     bool local_11 = false;
-    bool local_12 = false;
     float vd = dot(v_2, d);
     float h2_ = (d2_4 - (a_3 * a_3));
     if (!((h2_ <= 0.0))) {
         if ((vd >= 0.0)) {
-            local_12 = ((vd * vd) >= h2_);
+            local_11 = ((vd * vd) >= h2_);
         } else {
-            local_12 = false;
+            local_11 = false;
         }
-        bool _e19 = local_12;
-        local_11 = _e19;
+        bool _e19 = local_11;
+        local_10 = _e19;
     } else {
-        local_11 = true;
+        local_10 = true;
     }
-    bool _e21 = local_11;
+    bool _e21 = local_10;
     if (_e21) {
         return 1.0;
     }
@@ -562,15 +562,15 @@ float ray_aabb(vec3 o, vec3 inv_d, vec3 bmin, vec3 bmax, float t_max) {
 }
 
 vec3 triangle_normal(vec3 a_4, vec3 b_4, vec3 c_5) {
-    bool local_13 = false;
+    bool local_12 = false;
     vec3 n_9 = cross((b_4 - a_4), (c_5 - a_4));
     float l2_ = dot(n_9, n_9);
     if (!(!((l2_ > 0.0)))) {
-        local_13 = !((l2_ < 3e38));
+        local_12 = !((l2_ < 3e38));
     } else {
-        local_13 = true;
+        local_12 = true;
     }
-    bool _e17 = local_13;
+    bool _e17 = local_12;
     if (_e17) {
         return vec3(0.0, 0.0, 0.0);
     }
@@ -578,9 +578,9 @@ vec3 triangle_normal(vec3 a_4, vec3 b_4, vec3 c_5) {
 }
 
 float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_5, vec3 b_5, vec3 c_6, float t_min, float t_max_1) {
+    bool local_13 = false;
     bool local_14 = false;
     bool local_15 = false;
-    bool local_16 = false;
     vec3 e1_ = (b_5 - a_5);
     vec3 e2_ = (c_6 - a_5);
     vec3 p_2 = cross(d_3, e2_);
@@ -592,32 +592,32 @@ float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_5, vec3 b_5, vec3 c_6, float t_min
     vec3 s_4 = (o_1 - a_5);
     float u_3 = (dot(s_4, p_2) * inv);
     if (!((u_3 < 0.0))) {
-        local_14 = (u_3 > 1.0);
+        local_13 = (u_3 > 1.0);
     } else {
-        local_14 = true;
+        local_13 = true;
     }
-    bool _e28 = local_14;
+    bool _e28 = local_13;
     if (_e28) {
         return -1.0;
     }
     vec3 q_1 = cross(s_4, e1_);
     float v_8 = (dot(d_3, q_1) * inv);
     if (!((v_8 < 0.0))) {
-        local_15 = ((u_3 + v_8) > 1.0);
+        local_14 = ((u_3 + v_8) > 1.0);
     } else {
-        local_15 = true;
+        local_14 = true;
     }
-    bool _e42 = local_15;
+    bool _e42 = local_14;
     if (_e42) {
         return -1.0;
     }
     float t_3 = (dot(e2_, q_1) * inv);
     if ((t_3 > t_min)) {
-        local_16 = (t_3 < t_max_1);
+        local_15 = (t_3 < t_max_1);
     } else {
-        local_16 = false;
+        local_15 = false;
     }
-    bool _e51 = local_16;
+    bool _e51 = local_15;
     if (_e51) {
         return t_3;
     }
@@ -758,19 +758,19 @@ float bsh_inner_scale(float a_7, vec3 v_3, float d2_5, vec3 r_5, vec4 rl_2) {
 }
 
 bool bsh_reaches(BshNode node_3, vec3 x_4, vec3 r_6, vec4 rl_3) {
+    bool local_16 = false;
     bool local_17 = false;
-    bool local_18 = false;
     bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_4);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
         bool _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001)), x_4);
-        local_17 = !(_e20);
+        local_16 = !(_e20);
     } else {
-        local_17 = true;
+        local_16 = true;
     }
-    bool _e23 = local_17;
+    bool _e23 = local_16;
     if (_e23) {
         return false;
     }
@@ -791,11 +791,11 @@ bool bsh_reaches(BshNode node_3, vec3 x_4, vec3 r_6, vec4 rl_3) {
     float s_c = (_e50 * 1.001);
     float reach = (node_3.extent + (sqrt(s_c) * _e25));
     if ((d2_7 <= ((node_3.radius * node_3.radius) * s_c))) {
-        local_18 = (d2_7 <= (reach * reach));
+        local_17 = (d2_7 <= (reach * reach));
     } else {
-        local_18 = false;
+        local_17 = false;
     }
-    bool _e67 = local_18;
+    bool _e67 = local_17;
     return _e67;
 }
 
@@ -828,8 +828,8 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start, vec3 x_5, vec3 r_7, vec4 rl_4)
 
 Connection connect_record(GpuLight l_3, vec3 x_6, vec3 n_4, vec3 ng_1, float r2_2, float rt2_2, float w_res, float u1_2, float u2_2, float eps, bool trace_1) {
     Connection c_7 = Connection(vec3(0.0), vec3(0.0), 0.0);
+    bool local_18 = false;
     bool local_19 = false;
-    bool local_20 = false;
     c_7.e = vec3(0.0);
     vec3 _e16 = light_point(l_3, u1_2, u2_2);
     c_7.y = _e16;
@@ -841,16 +841,16 @@ Connection connect_record(GpuLight l_3, vec3 x_6, vec3 n_4, vec3 ng_1, float r2_
         if (trace_1) {
             vec3 _e33 = c_7.y;
             bool _e34 = occluded((x_6 + (ng_1 * eps)), _e33);
-            local_20 = _e34;
+            local_19 = _e34;
         } else {
-            local_20 = false;
+            local_19 = false;
         }
-        bool _e36 = local_20;
-        local_19 = _e36;
+        bool _e36 = local_19;
+        local_18 = _e36;
     } else {
-        local_19 = true;
+        local_18 = true;
     }
-    bool _e38 = local_19;
+    bool _e38 = local_18;
     if (_e38) {
         Connection _e39 = c_7;
         return _e39;
@@ -923,6 +923,74 @@ Shaded scaled(Shaded s_2, vec3 w_7) {
     return Shaded((s_2.e * w_7), (s_2.diffuse * w_7), (s_2.specular * w_7));
 }
 
+uint[8] first_holders(uvec2 keys_1[8], bool held_1[8]) {
+    uint first[8] = uint[8](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
+    uint k_4 = 0u;
+    uint j_1 = 0u;
+    bool local_20 = false;
+    bool local_21 = false;
+    bool loop_init_1 = true;
+    while(true) {
+        if (!loop_init_1) {
+            uint _e45 = k_4;
+            k_4 = (_e45 + 1u);
+        }
+        loop_init_1 = false;
+        uint _e5 = k_4;
+        if ((_e5 < K)) {
+        } else {
+            break;
+        }
+        {
+            uint _e8 = k_4;
+            uint _e11 = k_4;
+            uint _e12 = k_4;
+            first[_e8] = (held_1[_e12] ? _e11 : K);
+            j_1 = 0u;
+            bool loop_init_2 = true;
+            while(true) {
+                if (!loop_init_2) {
+                    uint _e42 = j_1;
+                    j_1 = (_e42 + 1u);
+                }
+                loop_init_2 = false;
+                uint _e17 = j_1;
+                uint _e18 = k_4;
+                if ((_e17 < _e18)) {
+                    uint _e22 = k_4;
+                    local_20 = held_1[_e22];
+                } else {
+                    local_20 = false;
+                }
+                bool _e25 = local_20;
+                if (_e25) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e26 = j_1;
+                    if (held_1[_e26]) {
+                        uint _e30 = j_1;
+                        uint _e32 = k_4;
+                        local_21 = all(equal(keys_1[_e30], keys_1[_e32]));
+                    } else {
+                        local_21 = false;
+                    }
+                    bool _e37 = local_21;
+                    if (_e37) {
+                        uint _e38 = k_4;
+                        uint _e40 = j_1;
+                        first[_e38] = _e40;
+                        break;
+                    }
+                }
+            }
+        }
+    }
+    uint _e47[8] = first;
+    return _e47;
+}
+
 vec3 output_of(Shaded s_3) {
     return (s_3.diffuse + s_3.specular);
 }
@@ -945,12 +1013,13 @@ void main() {
     uint b = 0u;
     uint q = 0u;
     bool local_2 = false;
+    uvec2 keys[8] = uvec2[8](uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u));
+    bool held[8] = bool[8](false, false, false, false, false, false, false, false);
     uint k = 0u;
+    uint k_1 = 0u;
     vec3 w = vec3(0.0);
-    bool first = false;
     uint j = 0u;
     bool local_3 = false;
-    bool local_4 = false;
     uint _e4 = _group_0_binding_0_cs.width;
     if (!((gid.x >= _e4))) {
         uint _e12 = _group_0_binding_0_cs.height;
@@ -1011,16 +1080,16 @@ void main() {
     vec3 _e133 = r;
     uint _e134 = bsh_next_leaf_lobe(BSH, _e132, x_13, _e133, _e87);
     b = _e134;
-    bool loop_init_1 = true;
+    bool loop_init_3 = true;
     while(true) {
-        if (!loop_init_1) {
+        if (!loop_init_3) {
             uint _e203 = b;
             uint _e206 = _group_1_binding_4_cs[_e203].next;
             vec3 _e207 = r;
             uint _e208 = bsh_next_leaf_lobe(BSH, _e206, x_13, _e207, _e87);
             b = _e208;
         }
-        loop_init_1 = false;
+        loop_init_3 = false;
         uint _e136 = b;
         if ((_e136 != BSH_NONE)) {
         } else {
@@ -1051,13 +1120,13 @@ void main() {
                 vec3 _e167 = total;
                 total = (_e167 + _e163);
                 q = 0u;
-                bool loop_init_2 = true;
+                bool loop_init_4 = true;
                 while(true) {
-                    if (!loop_init_2) {
+                    if (!loop_init_4) {
                         uint _e199 = q;
                         q = (_e199 + 1u);
                     }
-                    loop_init_2 = false;
+                    loop_init_4 = false;
                     uint _e171 = q;
                     if ((_e171 < K)) {
                     } else {
@@ -1094,95 +1163,107 @@ void main() {
             }
         }
     }
-    bool loop_init_3 = true;
+    bool loop_init_5 = true;
     while(true) {
-        if (!loop_init_3) {
-            uint _e290 = k;
-            k = (_e290 + 1u);
+        if (!loop_init_5) {
+            uint _e231 = k;
+            k = (_e231 + 1u);
         }
-        loop_init_3 = false;
-        uint _e211 = k;
-        if ((_e211 < K)) {
+        loop_init_5 = false;
+        uint _e213 = k;
+        if ((_e213 < K)) {
+        } else {
+            break;
+        }
+        {
+            uint _e216 = k;
+            uint _e218 = k;
+            uint _e220 = slot_light[_e218];
+            keys[_e216] = uvec2(_e220, 0u);
+            uint _e223 = k;
+            uint _e225 = k;
+            float _e227 = slot_p[_e225];
+            held[_e223] = (_e227 > 0.0);
+        }
+    }
+    uvec2 _e233[8] = keys;
+    bool _e234[8] = held;
+    uint _e235[8] = first_holders(_e233, _e234);
+    bool loop_init_6 = true;
+    while(true) {
+        if (!loop_init_6) {
+            uint _e298 = k_1;
+            k_1 = (_e298 + 1u);
+        }
+        loop_init_6 = false;
+        uint _e238 = k_1;
+        if ((_e238 < K)) {
         } else {
             break;
         }
         {
             w = vec3(0.0);
-            uint _e217 = k;
-            float _e219 = slot_p[_e217];
-            first = (_e219 > 0.0);
-            j = 0u;
-            bool loop_init_4 = true;
+            uint _e244 = k_1;
+            uint _e246 = k_1;
+            bool first_1 = (_e235[_e244] == _e246);
+            uint _e248 = k_1;
+            j = _e248;
+            bool loop_init_7 = true;
             while(true) {
-                if (!loop_init_4) {
-                    uint _e267 = j;
-                    j = (_e267 + 1u);
+                if (!loop_init_7) {
+                    uint _e276 = j;
+                    j = (_e276 + 1u);
                 }
-                loop_init_4 = false;
-                uint _e225 = j;
-                if ((_e225 < K)) {
+                loop_init_7 = false;
+                uint _e250 = j;
+                if ((_e250 < K)) {
+                    local_3 = first_1;
+                } else {
+                    local_3 = false;
+                }
+                bool _e256 = local_3;
+                if (_e256) {
                 } else {
                     break;
                 }
                 {
-                    uint _e228 = j;
-                    float _e230 = slot_p[_e228];
-                    if ((_e230 > 0.0)) {
-                        uint _e235 = j;
-                        uint _e237 = slot_light[_e235];
-                        uint _e238 = k;
-                        uint _e240 = slot_light[_e238];
-                        local_3 = (_e237 == _e240);
-                    } else {
-                        local_3 = false;
-                    }
-                    bool _e243 = local_3;
-                    if (_e243) {
-                        bool _e244 = first;
-                        if (_e244) {
-                            uint _e247 = j;
-                            uint _e248 = k;
-                            local_4 = (_e247 >= _e248);
-                        } else {
-                            local_4 = false;
-                        }
-                        bool _e251 = local_4;
-                        first = _e251;
-                        vec3 _e252 = w;
-                        vec3 _e253 = total;
-                        uint _e254 = j;
-                        float _e256 = slot_target(_e253, _e254, K);
-                        uint _e257 = j;
-                        float _e259 = slot_p[_e257];
-                        uint _e261 = j;
-                        vec3 _e263 = slot_share(_e261, K);
-                        w = (_e252 + ((_e256 / _e259) * _e263));
+                    uint _e257 = j;
+                    uint _e259 = k_1;
+                    if ((_e235[_e257] == _e259)) {
+                        vec3 _e261 = w;
+                        vec3 _e262 = total;
+                        uint _e263 = j;
+                        float _e265 = slot_target(_e262, _e263, K);
+                        uint _e266 = j;
+                        float _e268 = slot_p[_e266];
+                        uint _e270 = j;
+                        vec3 _e272 = slot_share(_e270, K);
+                        w = (_e261 + ((_e265 / _e268) * _e272));
                     }
                 }
             }
-            bool _e269 = first;
-            if (_e269) {
-                Shaded _e270 = t;
-                uint _e271 = k;
-                uint _e273 = slot_light[_e271];
-                vec3 _e274 = r;
-                Material _e275 = m;
-                uint _e277 = k;
-                float _e280 = slot_u[_e277].x;
-                uint _e281 = k;
-                float _e284 = slot_u[_e281].y;
-                Shaded _e285 = shade_pick(_e273, x_13, n_11, _e274, _e87, _e275, 1.0, _e280, _e284, eps_4);
-                vec3 _e286 = w;
-                Shaded _e287 = scaled(_e285, _e286);
-                Shaded _e288 = add(_e270, _e287);
-                t = _e288;
+            if (first_1) {
+                Shaded _e278 = t;
+                uint _e279 = k_1;
+                uint _e281 = slot_light[_e279];
+                vec3 _e282 = r;
+                Material _e283 = m;
+                uint _e285 = k_1;
+                float _e288 = slot_u[_e285].x;
+                uint _e289 = k_1;
+                float _e292 = slot_u[_e289].y;
+                Shaded _e293 = shade_pick(_e281, x_13, n_11, _e282, _e87, _e283, 1.0, _e288, _e292, eps_4);
+                vec3 _e294 = w;
+                Shaded _e295 = scaled(_e293, _e294);
+                Shaded _e296 = add(_e278, _e295);
+                t = _e296;
             }
         }
     }
-    vec3 _e294 = t.diffuse;
-    vec3 _e296 = t.specular;
-    uint _e298 = count;
-    imageStore(_group_0_binding_3_cs, texel_1, vec4((_e294 + _e296), float(_e298)));
+    vec3 _e302 = t.diffuse;
+    vec3 _e304 = t.specular;
+    uint _e306 = count;
+    imageStore(_group_0_binding_3_cs, texel_1, vec4((_e302 + _e304), float(_e306)));
     return;
 }
 

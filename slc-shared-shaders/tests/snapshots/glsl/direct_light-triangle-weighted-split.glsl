@@ -304,8 +304,8 @@ bool weighted_replace(float w_2, float w_sum, float u_2) {
     return ((u_2 * w_sum) < w_2);
 }
 
-float weighted_pick_weight(float w_sum_1, float w_3, uint k_1) {
-    float _e3 = to_f32_(k_1);
+float weighted_pick_weight(float w_sum_1, float w_3, uint k_2) {
+    float _e3 = to_f32_(k_2);
     return (w_sum_1 / (_e3 * w_3));
 }
 
@@ -1085,43 +1085,72 @@ Shaded add(Shaded a_8, Shaded b_7) {
     return Shaded((a_8.e + b_7.e), (a_8.diffuse + b_7.diffuse), (a_8.specular + b_7.specular));
 }
 
-uint pick_copies(uint lights[8], uint k_2) {
-    uint copies = 1u;
-    uint j = 0u;
+uint[8] first_holders(uvec2 keys_1[8], bool held_1[8]) {
+    uint first[8] = uint[8](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
+    uint k_3 = 0u;
+    uint j_1 = 0u;
     bool local_20 = false;
+    bool local_21 = false;
     bool loop_init_3 = true;
     while(true) {
         if (!loop_init_3) {
-            uint _e26 = j;
-            j = (_e26 + 1u);
+            uint _e45 = k_3;
+            k_3 = (_e45 + 1u);
         }
         loop_init_3 = false;
-        uint _e6 = j;
-        if ((_e6 < K)) {
+        uint _e5 = k_3;
+        if ((_e5 < K)) {
         } else {
             break;
         }
         {
-            uint _e9 = j;
-            if ((_e9 != k_2)) {
-                uint _e13 = j;
-                local_20 = (lights[_e13] == lights[k_2]);
-            } else {
-                local_20 = false;
-            }
-            bool _e18 = local_20;
-            if (_e18) {
-                uint _e19 = j;
-                if ((_e19 < k_2)) {
-                    return 0u;
+            uint _e8 = k_3;
+            uint _e11 = k_3;
+            uint _e12 = k_3;
+            first[_e8] = (held_1[_e12] ? _e11 : K);
+            j_1 = 0u;
+            bool loop_init_4 = true;
+            while(true) {
+                if (!loop_init_4) {
+                    uint _e42 = j_1;
+                    j_1 = (_e42 + 1u);
                 }
-                uint _e22 = copies;
-                copies = (_e22 + 1u);
+                loop_init_4 = false;
+                uint _e17 = j_1;
+                uint _e18 = k_3;
+                if ((_e17 < _e18)) {
+                    uint _e22 = k_3;
+                    local_20 = held_1[_e22];
+                } else {
+                    local_20 = false;
+                }
+                bool _e25 = local_20;
+                if (_e25) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e26 = j_1;
+                    if (held_1[_e26]) {
+                        uint _e30 = j_1;
+                        uint _e32 = k_3;
+                        local_21 = all(equal(keys_1[_e30], keys_1[_e32]));
+                    } else {
+                        local_21 = false;
+                    }
+                    bool _e37 = local_21;
+                    if (_e37) {
+                        uint _e38 = k_3;
+                        uint _e40 = j_1;
+                        first[_e38] = _e40;
+                        break;
+                    }
+                }
             }
         }
     }
-    uint _e28 = copies;
-    return _e28;
+    uint _e47[8] = first;
+    return _e47;
 }
 
 void main() {
@@ -1133,7 +1162,12 @@ void main() {
     vec3 r = vec3(0.0);
     uint h = 0u;
     Shaded t = Shaded(vec3(0.0), vec3(0.0), vec3(0.0));
+    uvec2 keys[8] = uvec2[8](uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u));
+    bool held[8] = bool[8](false, false, false, false, false, false, false, false);
     uint k = 0u;
+    uint k_1 = 0u;
+    uint copies = 0u;
+    uint j = 0u;
     uint _e4 = _group_0_binding_0_cs.width;
     if (!((gid.x >= _e4))) {
         uint _e12 = _group_0_binding_0_cs.height;
@@ -1195,53 +1229,100 @@ void main() {
     vec4 _e127 = lobe;
     WeightedPicks _e128 = bsh_weighted_collect(x_15, n_16, _e126, _e127, _e92, _e115);
     if ((_e128.w_sum > 0.0)) {
-        bool loop_init_4 = true;
+        bool loop_init_5 = true;
         while(true) {
-            if (!loop_init_4) {
-                uint _e175 = k;
-                k = (_e175 + 1u);
+            if (!loop_init_5) {
+                uint _e163 = k;
+                k = (_e163 + 1u);
             }
-            loop_init_4 = false;
-            uint _e134 = k;
-            if ((_e134 < K)) {
+            loop_init_5 = false;
+            uint _e136 = k;
+            if ((_e136 < K)) {
             } else {
                 break;
             }
             {
-                uint _e137 = h;
-                uint _e138 = pcg_hash(_e137);
-                h = _e138;
-                uint _e139 = h;
-                float _e140 = xi_from_bits(_e139);
-                uint _e141 = h;
-                uint _e142 = pcg_hash(_e141);
-                h = _e142;
-                uint _e143 = h;
-                float _e144 = xi_from_bits(_e143);
-                uint _e146 = k;
-                uint li_6 = _e128.light[_e146];
-                uint _e150 = k;
-                uint _e151 = pick_copies(_e128.light, _e150);
-                uint _e155 = _group_1_binding_1_cs[li_6].kind;
-                uint copies_1 = ((_e155 != LIGHT_TRIANGLE) ? _e151 : 1u);
-                if ((copies_1 > 0u)) {
-                    Shaded _e161 = t;
-                    vec3 _e162 = r;
-                    Material _e163 = m;
-                    uint _e166 = k;
-                    float _e169 = weighted_pick_weight(_e128.w_sum, _e128.w[_e166], K);
-                    Shaded _e172 = shade_pick(li_6, x_15, n_16, _e162, _e92, _e163, (_e169 * float(copies_1)), _e140, _e144, eps_4);
-                    Shaded _e173 = add(_e161, _e172);
-                    t = _e173;
+                uint _e140 = k;
+                uint _e145 = k;
+                uint _e149 = _group_1_binding_1_cs[_e128.light[_e145]].kind;
+                uint own = ((_e149 == LIGHT_TRIANGLE) ? (_e140 + 1u) : 0u);
+                uint _e153 = k;
+                uint _e156 = k;
+                keys[_e153] = uvec2(_e128.light[_e156], own);
+                uint _e159 = k;
+                held[_e159] = true;
+            }
+        }
+        uvec2 _e165[8] = keys;
+        bool _e166[8] = held;
+        uint _e167[8] = first_holders(_e165, _e166);
+        bool loop_init_6 = true;
+        while(true) {
+            if (!loop_init_6) {
+                uint _e221 = k_1;
+                k_1 = (_e221 + 1u);
+            }
+            loop_init_6 = false;
+            uint _e170 = k_1;
+            if ((_e170 < K)) {
+            } else {
+                break;
+            }
+            {
+                uint _e173 = h;
+                uint _e174 = pcg_hash(_e173);
+                h = _e174;
+                uint _e175 = h;
+                float _e176 = xi_from_bits(_e175);
+                uint _e177 = h;
+                uint _e178 = pcg_hash(_e177);
+                h = _e178;
+                uint _e179 = h;
+                float _e180 = xi_from_bits(_e179);
+                uint _e182 = k_1;
+                uint li_6 = _e128.light[_e182];
+                copies = 0u;
+                uint _e186 = k_1;
+                j = _e186;
+                bool loop_init_7 = true;
+                while(true) {
+                    if (!loop_init_7) {
+                        uint _e201 = j;
+                        j = (_e201 + 1u);
+                    }
+                    loop_init_7 = false;
+                    uint _e188 = j;
+                    if ((_e188 < K)) {
+                    } else {
+                        break;
+                    }
+                    {
+                        uint _e191 = copies;
+                        uint _e194 = j;
+                        uint _e196 = k_1;
+                        copies = (_e191 + ((_e167[_e194] == _e196) ? 1u : 0u));
+                    }
+                }
+                uint _e203 = copies;
+                if ((_e203 > 0u)) {
+                    Shaded _e206 = t;
+                    vec3 _e207 = r;
+                    Material _e208 = m;
+                    uint _e211 = k_1;
+                    float _e214 = weighted_pick_weight(_e128.w_sum, _e128.w[_e211], K);
+                    uint _e215 = copies;
+                    Shaded _e218 = shade_pick(li_6, x_15, n_16, _e207, _e92, _e208, (_e214 * float(_e215)), _e176, _e180, eps_4);
+                    Shaded _e219 = add(_e206, _e218);
+                    t = _e219;
                 }
             }
         }
     }
     uint count = _e128.n;
-    vec3 _e180 = t.e;
-    imageStore(_group_0_binding_3_cs, texel_1, vec4(_e180, float(count)));
-    vec3 _e185 = t.specular;
-    imageStore(_group_0_binding_6_cs, texel_1, vec4(_e185, 0.0));
+    vec3 _e226 = t.e;
+    imageStore(_group_0_binding_3_cs, texel_1, vec4(_e226, float(count)));
+    vec3 _e231 = t.specular;
+    imageStore(_group_0_binding_6_cs, texel_1, vec4(_e231, 0.0));
     return;
 }
 

@@ -240,29 +240,29 @@ float connection_factor(float cos_x, float d2_3, float rt2_1, float w_1)
 
 float connection_cosine(float3 x_2, float3 y, float3 n, float3 ng, float r2_1)
 {
+    bool local_4 = (bool)0;
     bool local_5 = (bool)0;
-    bool local_6 = (bool)0;
 
     float3 v_3 = (x_2 - y);
     float d2_6 = dot(v_3, v_3);
     const bool _e7 = slc_keep(r2_1, d2_6);
     if (!(!(_e7))) {
-        local_5 = !((d2_6 > 0.0));
+        local_4 = !((d2_6 > 0.0));
     } else {
-        local_5 = true;
+        local_4 = true;
     }
-    bool _e16 = local_5;
+    bool _e16 = local_4;
     if (_e16) {
         return 0.0;
     }
     float3 w_7 = (v_3 / (sqrt(d2_6)).xxx);
     float cos_x_1 = -(dot(n, w_7));
     if (!((cos_x_1 <= 0.0))) {
-        local_6 = (dot(ng, w_7) >= 0.0);
+        local_5 = (dot(ng, w_7) >= 0.0);
     } else {
-        local_6 = true;
+        local_5 = true;
     }
-    bool _e32 = local_6;
+    bool _e32 = local_5;
     if (_e32) {
         return 0.0;
     }
@@ -312,17 +312,17 @@ uint naga_mod(uint lhs, uint rhs) {
     return lhs % (rhs == 0u ? 1u : rhs);
 }
 
-float slot_target(float3 c_2, uint slot, uint k_1)
+float slot_target(float3 c_2, uint slot, uint k_2)
 {
-    if ((k_1 < 3u)) {
+    if ((k_2 < 3u)) {
         const float _e5 = resample_target(c_2);
         return _e5;
     }
-    uint j_1 = naga_mod(slot, 3u);
-    if ((j_1 == 0u)) {
+    uint j_2 = naga_mod(slot, 3u);
+    if ((j_2 == 0u)) {
         return c_2.x;
     }
-    if ((j_1 == 1u)) {
+    if ((j_2 == 1u)) {
         return c_2.y;
     }
     return c_2.z;
@@ -332,20 +332,20 @@ uint naga_div(uint lhs, uint rhs) {
     return lhs / (rhs == 0u ? 1u : rhs);
 }
 
-float3 slot_share(uint slot_1, uint k_2)
+float3 slot_share(uint slot_1, uint k_3)
 {
-    if ((k_2 < 3u)) {
-        const float _e4 = to_f32_(k_2);
+    if ((k_3 < 3u)) {
+        const float _e4 = to_f32_(k_3);
         float w_8 = (1.0 / _e4);
         return float3(w_8, w_8, w_8);
     }
-    uint j_2 = naga_mod(slot_1, 3u);
-    const float _e15 = to_f32_(naga_div(((k_2 + 2u) - j_2), 3u));
+    uint j_3 = naga_mod(slot_1, 3u);
+    const float _e15 = to_f32_(naga_div(((k_3 + 2u) - j_3), 3u));
     float w_9 = (1.0 / _e15);
-    if ((j_2 == 0u)) {
+    if ((j_3 == 0u)) {
         return float3(w_9, 0.0, 0.0);
     }
-    if ((j_2 == 1u)) {
+    if ((j_3 == 1u)) {
         return float3(0.0, w_9, 0.0);
     }
     return float3(0.0, 0.0, w_9);
@@ -390,23 +390,23 @@ float4 range_lobe(float4 lobe_4)
 
 float cone_cos_of(float3 v, float d2_4, float a_2, float3 d)
 {
+    bool local_6 = (bool)0;
     bool local_7 = (bool)0;
-    bool local_8 = (bool)0;
 
     float vd = dot(v, d);
     float h2_ = (d2_4 - (a_2 * a_2));
     if (!((h2_ <= 0.0))) {
         if ((vd >= 0.0)) {
-            local_8 = ((vd * vd) >= h2_);
+            local_7 = ((vd * vd) >= h2_);
         } else {
-            local_8 = false;
+            local_7 = false;
         }
-        bool _e19 = local_8;
-        local_7 = _e19;
+        bool _e19 = local_7;
+        local_6 = _e19;
     } else {
-        local_7 = true;
+        local_6 = true;
     }
-    bool _e21 = local_7;
+    bool _e21 = local_6;
     if (_e21) {
         return 1.0;
     }
@@ -471,9 +471,9 @@ float ray_aabb(float3 o, float3 inv_d, float3 bmin, float3 bmax, float t_max)
 
 float ray_triangle(float3 o_1, float3 d_3, float3 a_3, float3 b_3, float3 c_3, float t_min, float t_max_1)
 {
+    bool local_8 = (bool)0;
     bool local_9 = (bool)0;
     bool local_10 = (bool)0;
-    bool local_11 = (bool)0;
 
     float3 e1_ = (b_3 - a_3);
     float3 e2_ = (c_3 - a_3);
@@ -486,32 +486,32 @@ float ray_triangle(float3 o_1, float3 d_3, float3 a_3, float3 b_3, float3 c_3, f
     float3 s_4 = (o_1 - a_3);
     float u_3 = (dot(s_4, p_2) * inv);
     if (!((u_3 < 0.0))) {
-        local_9 = (u_3 > 1.0);
+        local_8 = (u_3 > 1.0);
     } else {
-        local_9 = true;
+        local_8 = true;
     }
-    bool _e28 = local_9;
+    bool _e28 = local_8;
     if (_e28) {
         return -1.0;
     }
     float3 q_1 = cross(s_4, e1_);
     float v_5 = (dot(d_3, q_1) * inv);
     if (!((v_5 < 0.0))) {
-        local_10 = ((u_3 + v_5) > 1.0);
+        local_9 = ((u_3 + v_5) > 1.0);
     } else {
-        local_10 = true;
+        local_9 = true;
     }
-    bool _e42 = local_10;
+    bool _e42 = local_9;
     if (_e42) {
         return -1.0;
     }
     float t_3 = (dot(e2_, q_1) * inv);
     if ((t_3 > t_min)) {
-        local_11 = (t_3 < t_max_1);
+        local_10 = (t_3 < t_max_1);
     } else {
-        local_11 = false;
+        local_10 = false;
     }
-    bool _e51 = local_11;
+    bool _e51 = local_10;
     if (_e51) {
         return t_3;
     }
@@ -709,8 +709,8 @@ float bsh_inner_scale(float a_5, float3 v_1, float d2_5, float3 r_3, float4 rl_2
 
 bool bsh_reaches(BshNode node_3, float3 x_4, float3 r_4, float4 rl_3)
 {
+    bool local_11 = (bool)0;
     bool local_12 = (bool)0;
-    bool local_13 = (bool)0;
 
     const bool _e6 = sphere_contains_point(node_3.center_, node_3.radius, x_4);
     if (_e6) {
@@ -718,11 +718,11 @@ bool bsh_reaches(BshNode node_3, float3 x_4, float3 r_4, float4 rl_3)
     }
     if (!((rl_3.w <= 1.0))) {
         const bool _e20 = sphere_contains_point(node_3.center_, (node_3.radius * (rl_3.w * 1.0001)), x_4);
-        local_12 = !(_e20);
+        local_11 = !(_e20);
     } else {
-        local_12 = true;
+        local_11 = true;
     }
-    bool _e23 = local_12;
+    bool _e23 = local_11;
     if (_e23) {
         return false;
     }
@@ -743,11 +743,11 @@ bool bsh_reaches(BshNode node_3, float3 x_4, float3 r_4, float4 rl_3)
     float s_c = (_e50 * 1.001);
     float reach = (node_3.extent + (sqrt(s_c) * _e25));
     if ((d2_7 <= ((node_3.radius * node_3.radius) * s_c))) {
-        local_13 = (d2_7 <= (reach * reach));
+        local_12 = (d2_7 <= (reach * reach));
     } else {
-        local_13 = false;
+        local_12 = false;
     }
-    bool _e67 = local_13;
+    bool _e67 = local_12;
     return _e67;
 }
 
@@ -786,8 +786,8 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start, float3 x_5, float3 r_5, float4
 Connection connect_record(GpuLight l_2, float3 x_6, float3 n_1, float3 ng_1, float r2_2, float rt2_2, float w_res, float u1_1, float u2_1, float eps, bool trace_1)
 {
     Connection c_4 = (Connection)0;
+    bool local_13 = (bool)0;
     bool local_14 = (bool)0;
-    bool local_15 = (bool)0;
 
     c_4.e = (0.0).xxx;
     const float3 _e16 = light_point(l_2, u1_1, u2_1);
@@ -800,16 +800,16 @@ Connection connect_record(GpuLight l_2, float3 x_6, float3 n_1, float3 ng_1, flo
         if (trace_1) {
             float3 _e33 = c_4.y;
             const bool _e34 = occluded((x_6 + (ng_1 * eps)), _e33);
-            local_15 = _e34;
+            local_14 = _e34;
         } else {
-            local_15 = false;
+            local_14 = false;
         }
-        bool _e36 = local_15;
-        local_14 = _e36;
+        bool _e36 = local_14;
+        local_13 = _e36;
     } else {
-        local_14 = true;
+        local_13 = true;
     }
-    bool _e38 = local_14;
+    bool _e38 = local_13;
     if (_e38) {
         Connection _e39 = c_4;
         const Connection connection = _e39;
@@ -914,6 +914,83 @@ Shaded scaled(Shaded s_2, float3 w_6)
     return shaded_4;
 }
 
+typedef uint ret_first_holders[8];
+ret_first_holders first_holders(uint2 keys_1[8], bool held_1[8])
+{
+    uint first[8] = (uint[8])0;
+    uint k_4 = 0u;
+    uint j_1 = (uint)0;
+    bool local_15 = (bool)0;
+    bool local_16 = (bool)0;
+
+    uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
+    bool loop_init_1 = true;
+    while(true) {
+        if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
+        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+        if (!loop_init_1) {
+            uint _e45 = k_4;
+            k_4 = (_e45 + 1u);
+        }
+        loop_init_1 = false;
+        uint _e5 = k_4;
+        if ((_e5 < K)) {
+        } else {
+            break;
+        }
+        {
+            uint _e8 = k_4;
+            uint _e11 = k_4;
+            uint _e12 = k_4;
+            first[min(uint(_e8), 7u)] = (held_1[min(uint(_e12), 7u)] ? _e11 : K);
+            j_1 = 0u;
+            uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
+            bool loop_init_2 = true;
+            while(true) {
+                if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
+                loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+                if (!loop_init_2) {
+                    uint _e42 = j_1;
+                    j_1 = (_e42 + 1u);
+                }
+                loop_init_2 = false;
+                uint _e17 = j_1;
+                uint _e18 = k_4;
+                if ((_e17 < _e18)) {
+                    uint _e22 = k_4;
+                    local_15 = held_1[min(uint(_e22), 7u)];
+                } else {
+                    local_15 = false;
+                }
+                bool _e25 = local_15;
+                if (_e25) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e26 = j_1;
+                    if (held_1[min(uint(_e26), 7u)]) {
+                        uint _e30 = j_1;
+                        uint _e32 = k_4;
+                        local_16 = all((keys_1[min(uint(_e30), 7u)] == keys_1[min(uint(_e32), 7u)]));
+                    } else {
+                        local_16 = false;
+                    }
+                    bool _e37 = local_16;
+                    if (_e37) {
+                        uint _e38 = k_4;
+                        uint _e40 = j_1;
+                        first[min(uint(_e38), 7u)] = _e40;
+                        break;
+                    }
+                }
+            }
+        }
+    }
+    uint _e47[8] = first;
+    return _e47;
+}
+
 float3 output_of(Shaded s_3)
 {
     return s_3.e;
@@ -938,12 +1015,13 @@ void main(uint3 gid : SV_DispatchThreadID)
     uint b = (uint)0;
     uint q = (uint)0;
     bool local_2 = (bool)0;
+    uint2 keys[8] = (uint2[8])0;
+    bool held[8] = (bool[8])0;
     uint k = 0u;
+    uint k_1 = 0u;
     float3 w = (float3)0;
-    bool first = (bool)0;
     uint j = (uint)0;
     bool local_3 = (bool)0;
-    bool local_4 = (bool)0;
 
     uint _e4 = view.width;
     if (!((gid.x >= _e4))) {
@@ -990,19 +1068,19 @@ void main(uint3 gid : SV_DispatchThreadID)
     float3 _e100 = r;
     const uint _e101 = bsh_next_leaf_lobe(BSH, _e99, x_11, _e100, _e54);
     b = _e101;
-    uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
-    bool loop_init_1 = true;
+    uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
+    bool loop_init_3 = true;
     while(true) {
-        if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
-        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-        if (!loop_init_1) {
+        if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
+        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+        if (!loop_init_3) {
             uint _e174 = b;
             uint _e177 = asuint(bsh_nodes.Load(20+_e174*32));
             float3 _e178 = r;
             const uint _e179 = bsh_next_leaf_lobe(BSH, _e177, x_11, _e178, _e54);
             b = _e179;
         }
-        loop_init_1 = false;
+        loop_init_3 = false;
         uint _e103 = b;
         if ((_e103 != BSH_NONE)) {
         } else {
@@ -1035,16 +1113,16 @@ void main(uint3 gid : SV_DispatchThreadID)
                 float3 _e138 = total;
                 total = (_e138 + _e130);
                 q = 0u;
-                uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
-                bool loop_init_2 = true;
+                uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
+                bool loop_init_4 = true;
                 while(true) {
-                    if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
-                    loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
-                    if (!loop_init_2) {
+                    if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
+                    loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+                    if (!loop_init_4) {
                         uint _e170 = q;
                         q = (_e170 + 1u);
                     }
-                    loop_init_2 = false;
+                    loop_init_4 = false;
                     uint _e142 = q;
                     if ((_e142 < K)) {
                     } else {
@@ -1081,108 +1159,123 @@ void main(uint3 gid : SV_DispatchThreadID)
             }
         }
     }
-    uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
-    bool loop_init_3 = true;
+    uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
+    bool loop_init_5 = true;
     while(true) {
-        if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
-        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
-        if (!loop_init_3) {
-            uint _e261 = k;
-            k = (_e261 + 1u);
+        if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
+        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+        if (!loop_init_5) {
+            uint _e202 = k;
+            k = (_e202 + 1u);
         }
-        loop_init_3 = false;
-        uint _e182 = k;
-        if ((_e182 < K)) {
+        loop_init_5 = false;
+        uint _e184 = k;
+        if ((_e184 < K)) {
+        } else {
+            break;
+        }
+        {
+            uint _e187 = k;
+            uint _e189 = k;
+            uint _e191 = slot_light[min(uint(_e189), 7u)];
+            keys[min(uint(_e187), 7u)] = uint2(_e191, 0u);
+            uint _e194 = k;
+            uint _e196 = k;
+            float _e198 = slot_p[min(uint(_e196), 7u)];
+            held[min(uint(_e194), 7u)] = (_e198 > 0.0);
+        }
+    }
+    uint2 _e204[8] = keys;
+    bool _e205[8] = held;
+    const uint _e206[8] = first_holders(_e204, _e205);
+    uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
+    bool loop_init_6 = true;
+    while(true) {
+        if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
+        loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
+        if (!loop_init_6) {
+            uint _e269 = k_1;
+            k_1 = (_e269 + 1u);
+        }
+        loop_init_6 = false;
+        uint _e209 = k_1;
+        if ((_e209 < K)) {
         } else {
             break;
         }
         {
             w = (0.0).xxx;
-            uint _e188 = k;
-            float _e190 = slot_p[min(uint(_e188), 7u)];
-            first = (_e190 > 0.0);
-            j = 0u;
-            uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
-            bool loop_init_4 = true;
+            uint _e215 = k_1;
+            uint _e217 = k_1;
+            bool first_1 = (_e206[min(uint(_e215), 7u)] == _e217);
+            uint _e219 = k_1;
+            j = _e219;
+            uint2 loop_bound_9 = uint2(4294967295u, 4294967295u);
+            bool loop_init_7 = true;
             while(true) {
-                if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
-                loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-                if (!loop_init_4) {
-                    uint _e238 = j;
-                    j = (_e238 + 1u);
+                if (all(loop_bound_9 == uint2(0u, 0u))) { break; }
+                loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
+                if (!loop_init_7) {
+                    uint _e247 = j;
+                    j = (_e247 + 1u);
                 }
-                loop_init_4 = false;
-                uint _e196 = j;
-                if ((_e196 < K)) {
+                loop_init_7 = false;
+                uint _e221 = j;
+                if ((_e221 < K)) {
+                    local_3 = first_1;
+                } else {
+                    local_3 = false;
+                }
+                bool _e227 = local_3;
+                if (_e227) {
                 } else {
                     break;
                 }
                 {
-                    uint _e199 = j;
-                    float _e201 = slot_p[min(uint(_e199), 7u)];
-                    if ((_e201 > 0.0)) {
-                        uint _e206 = j;
-                        uint _e208 = slot_light[min(uint(_e206), 7u)];
-                        uint _e209 = k;
-                        uint _e211 = slot_light[min(uint(_e209), 7u)];
-                        local_3 = (_e208 == _e211);
-                    } else {
-                        local_3 = false;
-                    }
-                    bool _e214 = local_3;
-                    if (_e214) {
-                        bool _e215 = first;
-                        if (_e215) {
-                            uint _e218 = j;
-                            uint _e219 = k;
-                            local_4 = (_e218 >= _e219);
-                        } else {
-                            local_4 = false;
-                        }
-                        bool _e222 = local_4;
-                        first = _e222;
-                        float3 _e223 = w;
-                        float3 _e224 = total;
-                        uint _e225 = j;
-                        const float _e227 = slot_target(_e224, _e225, K);
-                        uint _e228 = j;
-                        float _e230 = slot_p[min(uint(_e228), 7u)];
-                        uint _e232 = j;
-                        const float3 _e234 = slot_share(_e232, K);
-                        w = (_e223 + ((_e227 / _e230) * _e234));
+                    uint _e228 = j;
+                    uint _e230 = k_1;
+                    if ((_e206[min(uint(_e228), 7u)] == _e230)) {
+                        float3 _e232 = w;
+                        float3 _e233 = total;
+                        uint _e234 = j;
+                        const float _e236 = slot_target(_e233, _e234, K);
+                        uint _e237 = j;
+                        float _e239 = slot_p[min(uint(_e237), 7u)];
+                        uint _e241 = j;
+                        const float3 _e243 = slot_share(_e241, K);
+                        w = (_e232 + ((_e236 / _e239) * _e243));
                     }
                 }
             }
-            bool _e240 = first;
-            if (_e240) {
-                Shaded _e241 = t;
-                uint _e242 = k;
-                uint _e244 = slot_light[min(uint(_e242), 7u)];
-                float3 _e245 = r;
-                Material _e246 = m;
-                uint _e248 = k;
-                float _e251 = slot_u[min(uint(_e248), 7u)].x;
-                uint _e252 = k;
-                float _e255 = slot_u[min(uint(_e252), 7u)].y;
-                const Shaded _e256 = shade_pick(_e244, x_11, n_8, _e245, _e54, _e246, 1.0, _e251, _e255, eps_4);
-                float3 _e257 = w;
-                const Shaded _e258 = scaled(_e256, _e257);
-                const Shaded _e259 = add(_e241, _e258);
-                t = _e259;
+            if (first_1) {
+                Shaded _e249 = t;
+                uint _e250 = k_1;
+                uint _e252 = slot_light[min(uint(_e250), 7u)];
+                float3 _e253 = r;
+                Material _e254 = m;
+                uint _e256 = k_1;
+                float _e259 = slot_u[min(uint(_e256), 7u)].x;
+                uint _e260 = k_1;
+                float _e263 = slot_u[min(uint(_e260), 7u)].y;
+                const Shaded _e264 = shade_pick(_e252, x_11, n_8, _e253, _e54, _e254, 1.0, _e259, _e263, eps_4);
+                float3 _e265 = w;
+                const Shaded _e266 = scaled(_e264, _e265);
+                const Shaded _e267 = add(_e249, _e266);
+                t = _e267;
             }
         }
     }
-    float3 _e265 = t.e;
-    uint _e266 = count;
-    out_tex[texel_1] = float4(_e265, float(_e266));
+    float3 _e273 = t.e;
+    uint _e274 = count;
+    out_tex[texel_1] = float4(_e273, float(_e274));
     direct_count(DIRECT_COUNT_PIXELS, 1u);
-    uint _e272 = count;
-    direct_count(DIRECT_COUNT_CANDIDATES, _e272);
-    uint _e275 = evaluations;
-    direct_count(DIRECT_COUNT_EVALUATIONS, _e275);
-    uint _e278 = rays_cast;
-    direct_count(DIRECT_COUNT_RAYS, _e278);
-    uint _e281 = nodes_visited;
-    direct_count(DIRECT_COUNT_NODES, _e281);
+    uint _e280 = count;
+    direct_count(DIRECT_COUNT_CANDIDATES, _e280);
+    uint _e283 = evaluations;
+    direct_count(DIRECT_COUNT_EVALUATIONS, _e283);
+    uint _e286 = rays_cast;
+    direct_count(DIRECT_COUNT_RAYS, _e286);
+    uint _e289 = nodes_visited;
+    direct_count(DIRECT_COUNT_NODES, _e289);
     return;
 }

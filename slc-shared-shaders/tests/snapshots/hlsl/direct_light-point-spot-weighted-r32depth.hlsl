@@ -169,7 +169,7 @@ cbuffer view : register(b0) { ViewParams view; }
 Texture2D<float4> depth_tex : register(t1);
 Texture2D<float4> normal_tex : register(t2);
 RWTexture2D<float4> out_tex : register(u3);
-ByteAddressBuffer lights_1 : register(t1, space1);
+ByteAddressBuffer lights : register(t1, space1);
 ByteAddressBuffer rt2_5 : register(t2, space1);
 ByteAddressBuffer r2_4 : register(t3, space1);
 ByteAddressBuffer bsh_nodes : register(t4, space1);
@@ -319,9 +319,9 @@ bool weighted_replace(float w_1, float w_sum, float u_2)
     return ((u_2 * w_sum) < w_1);
 }
 
-float weighted_pick_weight(float w_sum_1, float w_2, uint k_1)
+float weighted_pick_weight(float w_sum_1, float w_2, uint k_2)
 {
-    const float _e3 = to_f32_(k_1);
+    const float _e3 = to_f32_(k_2);
     return (w_sum_1 / (_e3 * w_2));
 }
 
@@ -960,7 +960,7 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
 
 Connection connect_traced(uint li, float3 x_8, float3 n_5, float3 ng_2, float s, float w_res_1, float u1_2, float u2_2, float eps_1, bool trace_2)
 {
-    GpuLight _e12 = ConstructGpuLight(asfloat(lights_1.Load3(li*64+0)), asuint(lights_1.Load(li*64+12)), asfloat(lights_1.Load3(li*64+16)), asfloat(lights_1.Load(li*64+28)), asfloat(lights_1.Load3(li*64+32)), asfloat(lights_1.Load(li*64+44)), asfloat(lights_1.Load3(li*64+48)), asuint(lights_1.Load(li*64+60)));
+    GpuLight _e12 = ConstructGpuLight(asfloat(lights.Load3(li*64+0)), asuint(lights.Load(li*64+12)), asfloat(lights.Load3(li*64+16)), asfloat(lights.Load(li*64+28)), asfloat(lights.Load3(li*64+32)), asfloat(lights.Load(li*64+44)), asfloat(lights.Load3(li*64+48)), asuint(lights.Load(li*64+60)));
     float _e15 = asfloat(r2_4.Load(li*4));
     float _e19 = asfloat(rt2_5.Load(li*4));
     const Connection _e21 = connect_record(_e12, x_8, n_5, ng_2, (s * _e15), (s * _e19), w_res_1, u1_2, u2_2, eps_1, trace_2);
@@ -1164,11 +1164,14 @@ Shaded add(Shaded a_6, Shaded b_5)
     return shaded_3;
 }
 
-uint pick_copies(uint lights[8], uint k_2)
+typedef uint ret_first_holders[8];
+ret_first_holders first_holders(uint2 keys_1[8], bool held_1[8])
 {
-    uint copies = 1u;
-    uint j = 0u;
+    uint first[8] = (uint[8])0;
+    uint k_3 = 0u;
+    uint j_1 = (uint)0;
     bool local_18 = (bool)0;
+    bool local_19 = (bool)0;
 
     uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
     bool loop_init_3 = true;
@@ -1176,36 +1179,66 @@ uint pick_copies(uint lights[8], uint k_2)
         if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         if (!loop_init_3) {
-            uint _e26 = j;
-            j = (_e26 + 1u);
+            uint _e45 = k_3;
+            k_3 = (_e45 + 1u);
         }
         loop_init_3 = false;
-        uint _e6 = j;
-        if ((_e6 < K)) {
+        uint _e5 = k_3;
+        if ((_e5 < K)) {
         } else {
             break;
         }
         {
-            uint _e9 = j;
-            if ((_e9 != k_2)) {
-                uint _e13 = j;
-                local_18 = (lights[min(uint(_e13), 7u)] == lights[min(uint(k_2), 7u)]);
-            } else {
-                local_18 = false;
-            }
-            bool _e18 = local_18;
-            if (_e18) {
-                uint _e19 = j;
-                if ((_e19 < k_2)) {
-                    return 0u;
+            uint _e8 = k_3;
+            uint _e11 = k_3;
+            uint _e12 = k_3;
+            first[min(uint(_e8), 7u)] = (held_1[min(uint(_e12), 7u)] ? _e11 : K);
+            j_1 = 0u;
+            uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
+            bool loop_init_4 = true;
+            while(true) {
+                if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
+                loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+                if (!loop_init_4) {
+                    uint _e42 = j_1;
+                    j_1 = (_e42 + 1u);
                 }
-                uint _e22 = copies;
-                copies = (_e22 + 1u);
+                loop_init_4 = false;
+                uint _e17 = j_1;
+                uint _e18 = k_3;
+                if ((_e17 < _e18)) {
+                    uint _e22 = k_3;
+                    local_18 = held_1[min(uint(_e22), 7u)];
+                } else {
+                    local_18 = false;
+                }
+                bool _e25 = local_18;
+                if (_e25) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e26 = j_1;
+                    if (held_1[min(uint(_e26), 7u)]) {
+                        uint _e30 = j_1;
+                        uint _e32 = k_3;
+                        local_19 = all((keys_1[min(uint(_e30), 7u)] == keys_1[min(uint(_e32), 7u)]));
+                    } else {
+                        local_19 = false;
+                    }
+                    bool _e37 = local_19;
+                    if (_e37) {
+                        uint _e38 = k_3;
+                        uint _e40 = j_1;
+                        first[min(uint(_e38), 7u)] = _e40;
+                        break;
+                    }
+                }
             }
         }
     }
-    uint _e28 = copies;
-    return _e28;
+    uint _e47[8] = first;
+    return _e47;
 }
 
 [numthreads(8, 8, 1)]
@@ -1218,7 +1251,12 @@ void main(uint3 gid : SV_DispatchThreadID)
     float3 r = (float3)0;
     uint h = (uint)0;
     Shaded t = ConstructShaded((0.0).xxx, (0.0).xxx, (0.0).xxx);
+    uint2 keys[8] = (uint2[8])0;
+    bool held[8] = (bool[8])0;
     uint k = 0u;
+    uint k_1 = 0u;
+    uint copies = (uint)0;
+    uint j = (uint)0;
 
     uint _e4 = view.width;
     if (!((gid.x >= _e4))) {
@@ -1264,53 +1302,106 @@ void main(uint3 gid : SV_DispatchThreadID)
     float4 _e89 = lobe;
     const WeightedPicks _e90 = bsh_weighted_collect(x_16, n_12, _e88, _e89, _e54, _e77);
     if ((_e90.w_sum > 0.0)) {
-        uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
-        bool loop_init_4 = true;
+        uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
+        bool loop_init_5 = true;
         while(true) {
-            if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
-            loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-            if (!loop_init_4) {
-                uint _e137 = k;
-                k = (_e137 + 1u);
+            if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
+            loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+            if (!loop_init_5) {
+                uint _e125 = k;
+                k = (_e125 + 1u);
             }
-            loop_init_4 = false;
-            uint _e96 = k;
-            if ((_e96 < K)) {
+            loop_init_5 = false;
+            uint _e98 = k;
+            if ((_e98 < K)) {
             } else {
                 break;
             }
             {
-                uint _e99 = h;
-                const uint _e100 = pcg_hash(_e99);
-                h = _e100;
-                uint _e101 = h;
-                const float _e102 = xi_from_bits(_e101);
-                uint _e103 = h;
-                const uint _e104 = pcg_hash(_e103);
-                h = _e104;
-                uint _e105 = h;
-                const float _e106 = xi_from_bits(_e105);
-                uint _e108 = k;
-                uint li_6 = _e90.light[min(uint(_e108), 7u)];
-                uint _e112 = k;
-                const uint _e113 = pick_copies(_e90.light, _e112);
-                uint _e117 = asuint(lights_1.Load(12+li_6*64));
-                uint copies_1 = ((_e117 != LIGHT_TRIANGLE) ? _e113 : 1u);
-                if ((copies_1 > 0u)) {
-                    Shaded _e123 = t;
-                    float3 _e124 = r;
-                    Material _e125 = m;
-                    uint _e128 = k;
-                    const float _e131 = weighted_pick_weight(_e90.w_sum, _e90.w[min(uint(_e128), 7u)], K);
-                    const Shaded _e134 = shade_pick(li_6, x_16, n_12, _e124, _e54, _e125, (_e131 * float(copies_1)), _e102, _e106, eps_4);
-                    const Shaded _e135 = add(_e123, _e134);
-                    t = _e135;
+                uint _e102 = k;
+                uint _e107 = k;
+                uint _e111 = asuint(lights.Load(12+_e90.light[min(uint(_e107), 7u)]*64));
+                uint own = ((_e111 == LIGHT_TRIANGLE) ? (_e102 + 1u) : 0u);
+                uint _e115 = k;
+                uint _e118 = k;
+                keys[min(uint(_e115), 7u)] = uint2(_e90.light[min(uint(_e118), 7u)], own);
+                uint _e121 = k;
+                held[min(uint(_e121), 7u)] = true;
+            }
+        }
+        uint2 _e127[8] = keys;
+        bool _e128[8] = held;
+        const uint _e129[8] = first_holders(_e127, _e128);
+        uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
+        bool loop_init_6 = true;
+        while(true) {
+            if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
+            loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
+            if (!loop_init_6) {
+                uint _e183 = k_1;
+                k_1 = (_e183 + 1u);
+            }
+            loop_init_6 = false;
+            uint _e132 = k_1;
+            if ((_e132 < K)) {
+            } else {
+                break;
+            }
+            {
+                uint _e135 = h;
+                const uint _e136 = pcg_hash(_e135);
+                h = _e136;
+                uint _e137 = h;
+                const float _e138 = xi_from_bits(_e137);
+                uint _e139 = h;
+                const uint _e140 = pcg_hash(_e139);
+                h = _e140;
+                uint _e141 = h;
+                const float _e142 = xi_from_bits(_e141);
+                uint _e144 = k_1;
+                uint li_6 = _e90.light[min(uint(_e144), 7u)];
+                copies = 0u;
+                uint _e148 = k_1;
+                j = _e148;
+                uint2 loop_bound_9 = uint2(4294967295u, 4294967295u);
+                bool loop_init_7 = true;
+                while(true) {
+                    if (all(loop_bound_9 == uint2(0u, 0u))) { break; }
+                    loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
+                    if (!loop_init_7) {
+                        uint _e163 = j;
+                        j = (_e163 + 1u);
+                    }
+                    loop_init_7 = false;
+                    uint _e150 = j;
+                    if ((_e150 < K)) {
+                    } else {
+                        break;
+                    }
+                    {
+                        uint _e153 = copies;
+                        uint _e156 = j;
+                        uint _e158 = k_1;
+                        copies = (_e153 + ((_e129[min(uint(_e156), 7u)] == _e158) ? 1u : 0u));
+                    }
+                }
+                uint _e165 = copies;
+                if ((_e165 > 0u)) {
+                    Shaded _e168 = t;
+                    float3 _e169 = r;
+                    Material _e170 = m;
+                    uint _e173 = k_1;
+                    const float _e176 = weighted_pick_weight(_e90.w_sum, _e90.w[min(uint(_e173), 7u)], K);
+                    uint _e177 = copies;
+                    const Shaded _e180 = shade_pick(li_6, x_16, n_12, _e169, _e54, _e170, (_e176 * float(_e177)), _e138, _e142, eps_4);
+                    const Shaded _e181 = add(_e168, _e180);
+                    t = _e181;
                 }
             }
         }
     }
     uint count = _e90.n;
-    float3 _e142 = t.e;
-    out_tex[texel_1] = float4(_e142, float(count));
+    float3 _e188 = t.e;
+    out_tex[texel_1] = float4(_e188, float(count));
     return;
 }

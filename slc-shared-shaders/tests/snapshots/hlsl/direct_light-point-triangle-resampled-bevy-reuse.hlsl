@@ -313,29 +313,29 @@ float connection_factor(float cos_x, float d2_3, float rt2_1, float w_1)
 
 float connection_cosine(float3 x_2, float3 y, float3 n, float3 ng, float r2_1)
 {
-    bool local_8 = (bool)0;
-    bool local_9 = (bool)0;
+    bool local_5 = (bool)0;
+    bool local_6 = (bool)0;
 
     float3 v_6 = (x_2 - y);
     float d2_6 = dot(v_6, v_6);
     const bool _e7 = slc_keep(r2_1, d2_6);
     if (!(!(_e7))) {
-        local_8 = !((d2_6 > 0.0));
+        local_5 = !((d2_6 > 0.0));
     } else {
-        local_8 = true;
+        local_5 = true;
     }
-    bool _e16 = local_8;
+    bool _e16 = local_5;
     if (_e16) {
         return 0.0;
     }
     float3 w_8 = (v_6 / (sqrt(d2_6)).xxx);
     float cos_x_1 = -(dot(n, w_8));
     if (!((cos_x_1 <= 0.0))) {
-        local_9 = (dot(ng, w_8) >= 0.0);
+        local_6 = (dot(ng, w_8) >= 0.0);
     } else {
-        local_9 = true;
+        local_6 = true;
     }
-    bool _e32 = local_9;
+    bool _e32 = local_6;
     if (_e32) {
         return 0.0;
     }
@@ -389,17 +389,17 @@ uint naga_mod(uint lhs, uint rhs) {
     return lhs % (rhs == 0u ? 1u : rhs);
 }
 
-float slot_target(float3 c_3, uint slot, uint k_1)
+float slot_target(float3 c_3, uint slot, uint k_2)
 {
-    if ((k_1 < 3u)) {
+    if ((k_2 < 3u)) {
         const float _e5 = resample_target(c_3);
         return _e5;
     }
-    uint j_4 = naga_mod(slot, 3u);
-    if ((j_4 == 0u)) {
+    uint j_5 = naga_mod(slot, 3u);
+    if ((j_5 == 0u)) {
         return c_3.x;
     }
-    if ((j_4 == 1u)) {
+    if ((j_5 == 1u)) {
         return c_3.y;
     }
     return c_3.z;
@@ -409,20 +409,20 @@ uint naga_div(uint lhs, uint rhs) {
     return lhs / (rhs == 0u ? 1u : rhs);
 }
 
-float3 slot_share(uint slot_1, uint k_2)
+float3 slot_share(uint slot_1, uint k_3)
 {
-    if ((k_2 < 3u)) {
-        const float _e4 = to_f32_(k_2);
+    if ((k_3 < 3u)) {
+        const float _e4 = to_f32_(k_3);
         float w_9 = (1.0 / _e4);
         return float3(w_9, w_9, w_9);
     }
-    uint j_5 = naga_mod(slot_1, 3u);
-    const float _e15 = to_f32_(naga_div(((k_2 + 2u) - j_5), 3u));
+    uint j_6 = naga_mod(slot_1, 3u);
+    const float _e15 = to_f32_(naga_div(((k_3 + 2u) - j_6), 3u));
     float w_10 = (1.0 / _e15);
-    if ((j_5 == 0u)) {
+    if ((j_6 == 0u)) {
         return float3(w_10, 0.0, 0.0);
     }
-    if ((j_5 == 1u)) {
+    if ((j_6 == 1u)) {
         return float3(0.0, w_10, 0.0);
     }
     return float3(0.0, 0.0, w_10);
@@ -479,14 +479,14 @@ float smith_root(float cos_, float alpha_1)
 
 float smith_visibility(float n_l, float n_v, float alpha_2)
 {
-    bool local_10 = (bool)0;
+    bool local_7 = (bool)0;
 
     if (!((n_l <= 0.0))) {
-        local_10 = (n_v <= 0.0);
+        local_7 = (n_v <= 0.0);
     } else {
-        local_10 = true;
+        local_7 = true;
     }
-    bool _e11 = local_10;
+    bool _e11 = local_7;
     if (_e11) {
         return 0.0;
     }
@@ -511,21 +511,21 @@ float3 specular_fresnel(float3 base, float metallic, float3 f0_d, float f90_d, f
 
 bool has_specular(float metallic_1, float3 f0_d_1, float f90_d_1)
 {
-    bool local_11 = (bool)0;
-    bool local_12 = (bool)0;
+    bool local_8 = (bool)0;
+    bool local_9 = (bool)0;
 
     if (!((metallic_1 > 0.0))) {
-        local_11 = (f90_d_1 > 0.0);
+        local_8 = (f90_d_1 > 0.0);
     } else {
-        local_11 = true;
+        local_8 = true;
     }
-    bool _e11 = local_11;
+    bool _e11 = local_8;
     if (!(_e11)) {
-        local_12 = (max(max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0.0);
+        local_9 = (max(max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0.0);
     } else {
-        local_12 = true;
+        local_9 = true;
     }
-    bool _e23 = local_12;
+    bool _e23 = local_9;
     return _e23;
 }
 
@@ -536,17 +536,17 @@ float channel_mean(float3 c_4)
 
 float4 receiver_lobe(float3 base_1, float metallic_2, float3 f0_d_2, float f90_d_2, float alpha_3, float n_v_1)
 {
-    bool local_13 = (bool)0;
+    bool local_10 = (bool)0;
 
     const float3 _e10 = fresnel_schlick(f0_d_2, f90_d_2, n_v_1);
     const float _e16 = channel_mean((((float3(1.0, 1.0, 1.0) - _e10) * base_1) * (1.0 - metallic_2)));
     if (!((n_v_1 <= 0.0))) {
         const bool _e22 = has_specular(metallic_2, f0_d_2, f90_d_2);
-        local_13 = !(_e22);
+        local_10 = !(_e22);
     } else {
-        local_13 = true;
+        local_10 = true;
     }
-    bool _e25 = local_13;
+    bool _e25 = local_10;
     if (_e25) {
         return float4(_e16, 0.0, alpha_3, n_v_1);
     }
@@ -640,23 +640,23 @@ float3 bevy_brdf(float3 base_2, float metallic_3, float r_4, float reflectance_1
 
 float cone_cos_of(float3 v_2, float d2_4, float a_3, float3 d)
 {
-    bool local_14 = (bool)0;
-    bool local_15 = (bool)0;
+    bool local_11 = (bool)0;
+    bool local_12 = (bool)0;
 
     float vd = dot(v_2, d);
     float h2_1 = (d2_4 - (a_3 * a_3));
     if (!((h2_1 <= 0.0))) {
         if ((vd >= 0.0)) {
-            local_15 = ((vd * vd) >= h2_1);
+            local_12 = ((vd * vd) >= h2_1);
         } else {
-            local_15 = false;
+            local_12 = false;
         }
-        bool _e19 = local_15;
-        local_14 = _e19;
+        bool _e19 = local_12;
+        local_11 = _e19;
     } else {
-        local_14 = true;
+        local_11 = true;
     }
-    bool _e21 = local_14;
+    bool _e21 = local_11;
     if (_e21) {
         return 1.0;
     }
@@ -721,16 +721,16 @@ float ray_aabb(float3 o, float3 inv_d, float3 bmin, float3 bmax, float t_max)
 
 float3 triangle_normal(float3 a_4, float3 b_4, float3 c_5)
 {
-    bool local_16 = (bool)0;
+    bool local_13 = (bool)0;
 
     float3 n_13 = cross((b_4 - a_4), (c_5 - a_4));
     float l2_ = dot(n_13, n_13);
     if (!(!((l2_ > 0.0)))) {
-        local_16 = !((l2_ < 3e38));
+        local_13 = !((l2_ < 3e38));
     } else {
-        local_16 = true;
+        local_13 = true;
     }
-    bool _e17 = local_16;
+    bool _e17 = local_13;
     if (_e17) {
         return float3(0.0, 0.0, 0.0);
     }
@@ -739,9 +739,9 @@ float3 triangle_normal(float3 a_4, float3 b_4, float3 c_5)
 
 float ray_triangle(float3 o_1, float3 d_3, float3 a_5, float3 b_5, float3 c_6, float t_min, float t_max_1)
 {
-    bool local_17 = (bool)0;
-    bool local_18 = (bool)0;
-    bool local_19 = (bool)0;
+    bool local_14 = (bool)0;
+    bool local_15 = (bool)0;
+    bool local_16 = (bool)0;
 
     float3 e1_ = (b_5 - a_5);
     float3 e2_ = (c_6 - a_5);
@@ -754,32 +754,32 @@ float ray_triangle(float3 o_1, float3 d_3, float3 a_5, float3 b_5, float3 c_6, f
     float3 s_6 = (o_1 - a_5);
     float u_3 = (dot(s_6, p_5) * inv);
     if (!((u_3 < 0.0))) {
-        local_17 = (u_3 > 1.0);
+        local_14 = (u_3 > 1.0);
     } else {
-        local_17 = true;
+        local_14 = true;
     }
-    bool _e28 = local_17;
+    bool _e28 = local_14;
     if (_e28) {
         return -1.0;
     }
     float3 q_5 = cross(s_6, e1_);
     float v_8 = (dot(d_3, q_5) * inv);
     if (!((v_8 < 0.0))) {
-        local_18 = ((u_3 + v_8) > 1.0);
+        local_15 = ((u_3 + v_8) > 1.0);
     } else {
-        local_18 = true;
+        local_15 = true;
     }
-    bool _e42 = local_18;
+    bool _e42 = local_15;
     if (_e42) {
         return -1.0;
     }
     float t_3 = (dot(e2_, q_5) * inv);
     if ((t_3 > t_min)) {
-        local_19 = (t_3 < t_max_1);
+        local_16 = (t_3 < t_max_1);
     } else {
-        local_19 = false;
+        local_16 = false;
     }
-    bool _e51 = local_19;
+    bool _e51 = local_16;
     if (_e51) {
         return t_3;
     }
@@ -799,14 +799,14 @@ float3 reproject(float4 c0_, float4 c1_, float4 c2_, float4 c3_, float3 p_2, flo
 
 bool history_matches(float3 n_4, float3 nh, float3 p_3, float oh, float d_4)
 {
-    bool local_20 = (bool)0;
+    bool local_17 = (bool)0;
 
     if ((abs((dot(nh, p_3) - oh)) <= (TEMPORAL_DEPTH_TOLERANCE * d_4))) {
-        local_20 = (dot(n_4, nh) >= TEMPORAL_NORMAL_COS);
+        local_17 = (dot(n_4, nh) >= TEMPORAL_NORMAL_COS);
     } else {
-        local_20 = false;
+        local_17 = false;
     }
-    bool _e17 = local_20;
+    bool _e17 = local_17;
     return _e17;
 }
 
@@ -1002,8 +1002,8 @@ float bsh_inner_scale(float a_7, float3 v_3, float d2_5, float3 r_6, float4 rl_2
 
 bool bsh_reaches(BshNode node_3, float3 x_4, float3 r_7, float4 rl_3)
 {
-    bool local_21 = (bool)0;
-    bool local_22 = (bool)0;
+    bool local_18 = (bool)0;
+    bool local_19 = (bool)0;
 
     const bool _e6 = sphere_contains_point(node_3.center_, node_3.radius, x_4);
     if (_e6) {
@@ -1011,11 +1011,11 @@ bool bsh_reaches(BshNode node_3, float3 x_4, float3 r_7, float4 rl_3)
     }
     if (!((rl_3.w <= 1.0))) {
         const bool _e20 = sphere_contains_point(node_3.center_, (node_3.radius * (rl_3.w * 1.0001)), x_4);
-        local_21 = !(_e20);
+        local_18 = !(_e20);
     } else {
-        local_21 = true;
+        local_18 = true;
     }
-    bool _e23 = local_21;
+    bool _e23 = local_18;
     if (_e23) {
         return false;
     }
@@ -1036,11 +1036,11 @@ bool bsh_reaches(BshNode node_3, float3 x_4, float3 r_7, float4 rl_3)
     float s_c = (_e50 * 1.001);
     float reach = (node_3.extent + (sqrt(s_c) * _e25));
     if ((d2_7 <= ((node_3.radius * node_3.radius) * s_c))) {
-        local_22 = (d2_7 <= (reach * reach));
+        local_19 = (d2_7 <= (reach * reach));
     } else {
-        local_22 = false;
+        local_19 = false;
     }
-    bool _e67 = local_22;
+    bool _e67 = local_19;
     return _e67;
 }
 
@@ -1079,8 +1079,8 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start, float3 x_5, float3 r_8, float4
 Connection connect_record(GpuLight l_3, float3 x_6, float3 n_5, float3 ng_1, float r2_2, float rt2_2, float w_res, float u1_3, float u2_3, float eps, bool trace_1)
 {
     Connection c_7 = (Connection)0;
-    bool local_23 = (bool)0;
-    bool local_24 = (bool)0;
+    bool local_20 = (bool)0;
+    bool local_21 = (bool)0;
 
     c_7.e = (0.0).xxx;
     const float3 _e16 = light_point(l_3, u1_3, u2_3);
@@ -1093,16 +1093,16 @@ Connection connect_record(GpuLight l_3, float3 x_6, float3 n_5, float3 ng_1, flo
         if (trace_1) {
             float3 _e33 = c_7.y;
             const bool _e34 = occluded((x_6 + (ng_1 * eps)), _e33);
-            local_24 = _e34;
+            local_21 = _e34;
         } else {
-            local_24 = false;
+            local_21 = false;
         }
-        bool _e36 = local_24;
-        local_23 = _e36;
+        bool _e36 = local_21;
+        local_20 = _e36;
     } else {
-        local_23 = true;
+        local_20 = true;
     }
-    bool _e38 = local_23;
+    bool _e38 = local_20;
     if (_e38) {
         Connection _e39 = c_7;
         const Connection connection = _e39;
@@ -1232,6 +1232,83 @@ Shaded scaled(Shaded s_2, float3 w_7)
     return shaded_3;
 }
 
+typedef uint ret_first_holders[8];
+ret_first_holders first_holders(uint2 keys_1[8], bool held_1[8])
+{
+    uint first[8] = (uint[8])0;
+    uint k_4 = 0u;
+    uint j_2 = (uint)0;
+    bool local_22 = (bool)0;
+    bool local_23 = (bool)0;
+
+    uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
+    bool loop_init_1 = true;
+    while(true) {
+        if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
+        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+        if (!loop_init_1) {
+            uint _e45 = k_4;
+            k_4 = (_e45 + 1u);
+        }
+        loop_init_1 = false;
+        uint _e5 = k_4;
+        if ((_e5 < K)) {
+        } else {
+            break;
+        }
+        {
+            uint _e8 = k_4;
+            uint _e11 = k_4;
+            uint _e12 = k_4;
+            first[min(uint(_e8), 7u)] = (held_1[min(uint(_e12), 7u)] ? _e11 : K);
+            j_2 = 0u;
+            uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
+            bool loop_init_2 = true;
+            while(true) {
+                if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
+                loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+                if (!loop_init_2) {
+                    uint _e42 = j_2;
+                    j_2 = (_e42 + 1u);
+                }
+                loop_init_2 = false;
+                uint _e17 = j_2;
+                uint _e18 = k_4;
+                if ((_e17 < _e18)) {
+                    uint _e22 = k_4;
+                    local_22 = held_1[min(uint(_e22), 7u)];
+                } else {
+                    local_22 = false;
+                }
+                bool _e25 = local_22;
+                if (_e25) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e26 = j_2;
+                    if (held_1[min(uint(_e26), 7u)]) {
+                        uint _e30 = j_2;
+                        uint _e32 = k_4;
+                        local_23 = all((keys_1[min(uint(_e30), 7u)] == keys_1[min(uint(_e32), 7u)]));
+                    } else {
+                        local_23 = false;
+                    }
+                    bool _e37 = local_23;
+                    if (_e37) {
+                        uint _e38 = k_4;
+                        uint _e40 = j_2;
+                        first[min(uint(_e38), 7u)] = _e40;
+                        break;
+                    }
+                }
+            }
+        }
+    }
+    uint _e47[8] = first;
+    return _e47;
+}
+
 float3 output_of(Shaded s_3)
 {
     return (s_3.diffuse + s_3.specular);
@@ -1280,27 +1357,6 @@ Material reuse_material(ReuseSurface s_4, float3 eye)
     return material_1;
 }
 
-bool same_pick(uint la, uint ca, uint lb, uint cb)
-{
-    bool local_25 = (bool)0;
-    bool local_26 = (bool)0;
-
-    if ((la == lb)) {
-        if (!((ca == cb))) {
-            uint _e14 = asuint(lights.Load(12+la*64));
-            local_26 = (_e14 != LIGHT_TRIANGLE);
-        } else {
-            local_26 = true;
-        }
-        bool _e18 = local_26;
-        local_25 = _e18;
-    } else {
-        local_25 = false;
-    }
-    bool _e20 = local_25;
-    return _e20;
-}
-
 Domain ConstructDomain(uint arg0, float3 arg1, float3 arg2, Material arg3, float arg4, bool arg5) {
     Domain ret = (Domain)0;
     ret.pixel = arg0;
@@ -1320,16 +1376,16 @@ uint reuse_domains(float3 x_13, float3 n_11, float d_6, uint h_1, inout Domain d
 {
     uint nd = 0u;
     uint hr = (uint)0;
-    uint j_2 = 0u;
+    uint j_3 = 0u;
     float2 p_4 = (float2)0;
+    bool local_24 = (bool)0;
+    bool local_25 = (bool)0;
+    bool local_26 = (bool)0;
+    bool seen = (bool)0;
+    uint k_5 = (uint)0;
     bool local_27 = (bool)0;
     bool local_28 = (bool)0;
     bool local_29 = (bool)0;
-    bool seen = (bool)0;
-    uint k_3 = (uint)0;
-    bool local_30 = (bool)0;
-    bool local_31 = (bool)0;
-    bool local_32 = (bool)0;
 
     uint _e9 = reuse.has_history;
     if ((_e9 != 1u)) {
@@ -1346,24 +1402,24 @@ uint reuse_domains(float3 x_13, float3 n_11, float d_6, uint h_1, inout Domain d
         return 0u;
     }
     hr = h_1;
-    uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
-    bool loop_init_1 = true;
+    uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
+    bool loop_init_3 = true;
     while(true) {
-        if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
-        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-        if (!loop_init_1) {
-            uint _e175 = j_2;
-            j_2 = (_e175 + 1u);
+        if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
+        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+        if (!loop_init_3) {
+            uint _e175 = j_3;
+            j_3 = (_e175 + 1u);
         }
-        loop_init_1 = false;
-        uint _e41 = j_2;
+        loop_init_3 = false;
+        uint _e41 = j_3;
         if ((_e41 < DOMAINS)) {
         } else {
             break;
         }
         {
             p_4 = _e33.xy;
-            uint _e46 = j_2;
+            uint _e46 = j_3;
             if ((_e46 > 0u)) {
                 uint _e49 = hr;
                 const uint _e50 = pcg_hash(_e49);
@@ -1383,43 +1439,43 @@ uint reuse_domains(float3 x_13, float3 n_11, float d_6, uint h_1, inout Domain d
             float2 _e63 = p_4;
             int2 t_5 = naga_f2i32(round(_e63));
             if (!((t_5.x < int(0)))) {
-                local_27 = (t_5.y < int(0));
+                local_24 = (t_5.y < int(0));
             } else {
-                local_27 = true;
+                local_24 = true;
             }
-            bool _e76 = local_27;
+            bool _e76 = local_24;
             if (!(_e76)) {
                 uint _e83 = view.width;
-                local_28 = (t_5.x >= int(_e83));
+                local_25 = (t_5.x >= int(_e83));
             } else {
-                local_28 = true;
+                local_25 = true;
             }
-            bool _e87 = local_28;
+            bool _e87 = local_25;
             if (!(_e87)) {
                 uint _e94 = view.height;
-                local_29 = (t_5.y >= int(_e94));
+                local_26 = (t_5.y >= int(_e94));
             } else {
-                local_29 = true;
+                local_26 = true;
             }
-            bool _e98 = local_29;
+            bool _e98 = local_26;
             if (_e98) {
                 continue;
             }
             uint _e103 = view.width;
             uint pixel = ((uint(t_5.y) * _e103) + uint(t_5.x));
             seen = false;
-            k_3 = 0u;
-            uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
-            bool loop_init_2 = true;
+            k_5 = 0u;
+            uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
+            bool loop_init_4 = true;
             while(true) {
-                if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
-                loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
-                if (!loop_init_2) {
-                    uint _e127 = k_3;
-                    k_3 = (_e127 + 1u);
+                if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
+                loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+                if (!loop_init_4) {
+                    uint _e127 = k_5;
+                    k_5 = (_e127 + 1u);
                 }
-                loop_init_2 = false;
-                uint _e112 = k_3;
+                loop_init_4 = false;
+                uint _e112 = k_5;
                 uint _e113 = nd;
                 if ((_e112 < _e113)) {
                 } else {
@@ -1428,31 +1484,31 @@ uint reuse_domains(float3 x_13, float3 n_11, float d_6, uint h_1, inout Domain d
                 {
                     bool _e115 = seen;
                     if (!(_e115)) {
-                        uint _e119 = k_3;
+                        uint _e119 = k_5;
                         uint _e122 = doms_1[min(uint(_e119), 2u)].pixel;
-                        local_30 = (_e122 == pixel);
+                        local_27 = (_e122 == pixel);
                     } else {
-                        local_30 = true;
+                        local_27 = true;
                     }
-                    bool _e125 = local_30;
+                    bool _e125 = local_27;
                     seen = _e125;
                 }
             }
             ReuseSurface s_7 = ConstructReuseSurface(asfloat(reuse_prev.Load3(0+pixel*144+0)), asfloat(reuse_prev.Load(0+pixel*144+12)), asfloat(reuse_prev.Load3(0+pixel*144+16)), asuint(reuse_prev.Load(0+pixel*144+28)), asuint(reuse_prev.Load(0+pixel*144+32)), asuint(reuse_prev.Load(0+pixel*144+36)), asuint(reuse_prev.Load(0+pixel*144+40)), asuint(reuse_prev.Load(0+pixel*144+44)));
             bool _e133 = seen;
             if (!(_e133)) {
-                local_31 = !((s_7.m > 0.0));
+                local_28 = !((s_7.m > 0.0));
             } else {
-                local_31 = true;
+                local_28 = true;
             }
-            bool _e142 = local_31;
+            bool _e142 = local_28;
             if (!(_e142)) {
                 const bool _e150 = history_matches(n_11, s_7.n, x_13, dot(s_7.n, s_7.x), d_6);
-                local_32 = !(_e150);
+                local_29 = !(_e150);
             } else {
-                local_32 = true;
+                local_29 = true;
             }
-            bool _e153 = local_32;
+            bool _e153 = local_29;
             if (_e153) {
                 continue;
             }
@@ -1460,7 +1516,7 @@ uint reuse_domains(float3 x_13, float3 n_11, float d_6, uint h_1, inout Domain d
             float3 _e160 = reuse.prev_eye;
             const Material _e161 = reuse_material(s_7, _e160);
             float _e165 = reuse.max_confidence;
-            uint _e167 = j_2;
+            uint _e167 = j_3;
             doms_1[min(uint(_e154), 2u)] = ConstructDomain(pixel, s_7.x, s_7.n, _e161, min(s_7.m, _e165), (_e167 == 0u));
             uint _e171 = nd;
             nd = (_e171 + 1u);
@@ -1483,37 +1539,37 @@ ReuseSlot gris_combine(uint q_4, ReuseSlot cur, bool cur_ris, float cur_c, uint 
     float w_sum_2 = 0.0;
     ReuseSlot out_ = ConstructReuseSlot(0u, 0u, 0.0);
     float out_target = 0.0;
-    uint j_3 = (uint)0;
+    uint j_4 = (uint)0;
     ReuseSlot s_5 = (ReuseSlot)0;
-    bool local_33 = (bool)0;
+    bool local_30 = (bool)0;
     float w_in = (float)0;
-    bool local_34 = (bool)0;
+    bool local_31 = (bool)0;
     float own_1 = (float)0;
     float all_1 = (float)0;
-    uint k_4 = (uint)0;
-    bool local_35 = (bool)0;
+    uint k_6 = (uint)0;
+    bool local_32 = (bool)0;
 
-    j_3 = k0_;
-    uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
-    bool loop_init_3 = true;
+    j_4 = k0_;
+    uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
+    bool loop_init_5 = true;
     while(true) {
-        if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
-        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
-        if (!loop_init_3) {
-            uint _e137 = j_3;
-            j_3 = (_e137 + 1u);
+        if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
+        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+        if (!loop_init_5) {
+            uint _e137 = j_4;
+            j_4 = (_e137 + 1u);
         }
-        loop_init_3 = false;
-        uint _e21 = j_3;
+        loop_init_5 = false;
+        uint _e21 = j_4;
         if ((_e21 <= k1_)) {
         } else {
             break;
         }
         {
             s_5 = cur;
-            uint _e24 = j_3;
+            uint _e24 = j_4;
             if ((_e24 > k0_)) {
-                uint _e27 = j_3;
+                uint _e27 = j_4;
                 uint _e32 = doms_2[min(uint((_e27 - 1u)), 2u)].pixel;
                 ReuseSlot _e36 = ConstructReuseSlot(asuint(reuse_prev.Load(q_4*12+48+_e32*144+0)), asuint(reuse_prev.Load(q_4*12+48+_e32*144+4)), asfloat(reuse_prev.Load(q_4*12+48+_e32*144+8)));
                 s_5 = _e36;
@@ -1521,11 +1577,11 @@ ReuseSlot gris_combine(uint q_4, ReuseSlot cur, bool cur_ris, float cur_c, uint 
             float _e38 = s_5.w;
             if (!(!((_e38 > 0.0)))) {
                 uint _e46 = s_5.light;
-                local_33 = (_e46 >= ((NagaBufferLength(lights) - 0) / 64));
+                local_30 = (_e46 >= ((NagaBufferLength(lights) - 0) / 64));
             } else {
-                local_33 = true;
+                local_30 = true;
             }
-            bool _e51 = local_33;
+            bool _e51 = local_30;
             if (_e51) {
                 continue;
             }
@@ -1538,13 +1594,13 @@ ReuseSlot gris_combine(uint q_4, ReuseSlot cur, bool cur_ris, float cur_c, uint 
             }
             float _e64 = s_5.w;
             w_in = _e64;
-            uint _e66 = j_3;
+            uint _e66 = j_4;
             if ((_e66 == k0_)) {
-                local_34 = cur_ris;
+                local_31 = cur_ris;
             } else {
-                local_34 = false;
+                local_31 = false;
             }
-            bool _e71 = local_34;
+            bool _e71 = local_31;
             if (_e71) {
                 float _e73 = s_5.w;
                 w_in = (_e73 / _e59);
@@ -1552,40 +1608,40 @@ ReuseSlot gris_combine(uint q_4, ReuseSlot cur, bool cur_ris, float cur_c, uint 
             own_1 = (cur_c * _e59);
             float _e77 = own_1;
             all_1 = _e77;
-            k_4 = k0_;
-            uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
-            bool loop_init_4 = true;
+            k_6 = k0_;
+            uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
+            bool loop_init_6 = true;
             while(true) {
-                if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
-                loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-                if (!loop_init_4) {
-                    uint _e115 = k_4;
-                    k_4 = (_e115 + 1u);
+                if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
+                loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
+                if (!loop_init_6) {
+                    uint _e115 = k_6;
+                    k_6 = (_e115 + 1u);
                 }
-                loop_init_4 = false;
-                uint _e80 = k_4;
+                loop_init_6 = false;
+                uint _e80 = k_6;
                 if ((_e80 < k1_)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e82 = k_4;
+                    uint _e82 = k_6;
                     float _e85 = doms_2[min(uint(_e82), 2u)].c;
                     uint _e88 = s_5.light;
                     GpuLight _e90 = ConstructGpuLight(asfloat(lights_prev.Load3(_e88*64+0)), asuint(lights_prev.Load(_e88*64+12)), asfloat(lights_prev.Load3(_e88*64+16)), asfloat(lights_prev.Load(_e88*64+28)), asfloat(lights_prev.Load3(_e88*64+32)), asfloat(lights_prev.Load(_e88*64+44)), asfloat(lights_prev.Load3(_e88*64+48)), asuint(lights_prev.Load(_e88*64+60)));
                     uint _e92 = s_5.u;
-                    uint _e93 = k_4;
+                    uint _e93 = k_6;
                     float3 _e96 = doms_2[min(uint(_e93), 2u)].x;
-                    uint _e97 = k_4;
+                    uint _e97 = k_6;
                     float3 _e100 = doms_2[min(uint(_e97), 2u)].n;
-                    uint _e101 = k_4;
+                    uint _e101 = k_6;
                     Material _e104 = doms_2[min(uint(_e101), 2u)].m;
                     const float _e105 = reuse_target(q_4, _e90, _e92, _e96, _e100, _e104);
                     float t_6 = (_e85 * _e105);
                     float _e107 = all_1;
                     all_1 = (_e107 + t_6);
-                    uint _e109 = k_4;
-                    uint _e112 = j_3;
+                    uint _e109 = k_6;
+                    uint _e112 = j_4;
                     if (((_e109 + 1u) == _e112)) {
                         own_1 = t_6;
                     }
@@ -1605,11 +1661,11 @@ ReuseSlot gris_combine(uint q_4, ReuseSlot cur, bool cur_ris, float cur_c, uint 
                 uint _e130 = hs_1;
                 const float _e131 = xi_from_bits(_e130);
                 const bool _e132 = weighted_replace(_e120, _e129, _e131);
-                local_35 = _e132;
+                local_32 = _e132;
             } else {
-                local_35 = false;
+                local_32 = false;
             }
-            bool _e134 = local_35;
+            bool _e134 = local_32;
             if (_e134) {
                 ReuseSlot _e135 = s_5;
                 out_ = _e135;
@@ -1652,17 +1708,16 @@ void main(uint3 gid : SV_DispatchThreadID)
     ReuseSlot kept[8] = (ReuseSlot[8])0;
     ReuseSlot fin[8] = (ReuseSlot[8])0;
     uint q_1 = 0u;
-    bool visible[8] = (bool[8])0;
+    uint2 keys[8] = (uint2[8])0;
+    bool held[8] = (bool[8])0;
     uint k = 0u;
+    bool visible[8] = (bool[8])0;
+    uint k_1 = 0u;
     float3 w = (float3)0;
-    bool first = (bool)0;
     uint j = (uint)0;
-    bool local_4 = (bool)0;
-    bool local_5 = (bool)0;
-    bool local_6 = (bool)0;
     uint j_1 = (uint)0;
     uint q_2 = 0u;
-    bool local_7 = (bool)0;
+    bool local_4 = (bool)0;
 
     uint _e4 = view.width;
     if (!((gid.x >= _e4))) {
@@ -1726,19 +1781,19 @@ void main(uint3 gid : SV_DispatchThreadID)
     float3 _e146 = r;
     const uint _e147 = bsh_next_leaf_lobe(BSH, _e145, x_17, _e146, _e99);
     b = _e147;
-    uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
-    bool loop_init_5 = true;
+    uint2 loop_bound_9 = uint2(4294967295u, 4294967295u);
+    bool loop_init_7 = true;
     while(true) {
-        if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
-        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
-        if (!loop_init_5) {
+        if (all(loop_bound_9 == uint2(0u, 0u))) { break; }
+        loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
+        if (!loop_init_7) {
             uint _e220 = b;
             uint _e223 = asuint(bsh_nodes.Load(20+_e220*32));
             float3 _e224 = r;
             const uint _e225 = bsh_next_leaf_lobe(BSH, _e223, x_17, _e224, _e99);
             b = _e225;
         }
-        loop_init_5 = false;
+        loop_init_7 = false;
         uint _e149 = b;
         if ((_e149 != BSH_NONE)) {
         } else {
@@ -1771,16 +1826,16 @@ void main(uint3 gid : SV_DispatchThreadID)
                 float3 _e182 = total;
                 total = (_e182 + _e178);
                 q = 0u;
-                uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
-                bool loop_init_6 = true;
+                uint2 loop_bound_10 = uint2(4294967295u, 4294967295u);
+                bool loop_init_8 = true;
                 while(true) {
-                    if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
-                    loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
-                    if (!loop_init_6) {
+                    if (all(loop_bound_10 == uint2(0u, 0u))) { break; }
+                    loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
+                    if (!loop_init_8) {
                         uint _e216 = q;
                         q = (_e216 + 1u);
                     }
-                    loop_init_6 = false;
+                    loop_init_8 = false;
                     uint _e186 = q;
                     if ((_e186 < K)) {
                     } else {
@@ -1836,16 +1891,16 @@ void main(uint3 gid : SV_DispatchThreadID)
     float confidence = (1.0 + (own_history ? _e256 : 0.0));
     const uint _e262 = reuse_stream(_e122, 1u);
     hs = _e262;
-    uint2 loop_bound_9 = uint2(4294967295u, 4294967295u);
-    bool loop_init_7 = true;
+    uint2 loop_bound_11 = uint2(4294967295u, 4294967295u);
+    bool loop_init_9 = true;
     while(true) {
-        if (all(loop_bound_9 == uint2(0u, 0u))) { break; }
-        loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
-        if (!loop_init_7) {
+        if (all(loop_bound_11 == uint2(0u, 0u))) { break; }
+        loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
+        if (!loop_init_9) {
             uint _e313 = q_1;
             q_1 = (_e313 + 1u);
         }
-        loop_init_7 = false;
+        loop_init_9 = false;
         uint _e268 = q_1;
         if ((_e268 < K)) {
         } else {
@@ -1881,194 +1936,184 @@ void main(uint3 gid : SV_DispatchThreadID)
             }
         }
     }
-    uint2 loop_bound_10 = uint2(4294967295u, 4294967295u);
-    bool loop_init_8 = true;
+    uint2 loop_bound_12 = uint2(4294967295u, 4294967295u);
+    bool loop_init_10 = true;
     while(true) {
-        if (all(loop_bound_10 == uint2(0u, 0u))) { break; }
-        loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
-        if (!loop_init_8) {
-            uint _e460 = k;
-            k = (_e460 + 1u);
+        if (all(loop_bound_12 == uint2(0u, 0u))) { break; }
+        loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
+        if (!loop_init_10) {
+            uint _e354 = k;
+            k = (_e354 + 1u);
         }
-        loop_init_8 = false;
-        uint _e318 = k;
-        if ((_e318 < K)) {
+        loop_init_10 = false;
+        uint _e319 = k;
+        if ((_e319 < K)) {
         } else {
             break;
         }
         {
-            uint _e321 = k;
-            float _e324 = fin[min(uint(_e321), 7u)].w;
-            uint _e325 = k;
-            const float3 _e327 = slot_share(_e325, K);
-            w = (_e324 * _e327);
-            uint _e330 = k;
-            float _e333 = fin[min(uint(_e330), 7u)].w;
-            first = (_e333 > 0.0);
-            j = 0u;
-            uint2 loop_bound_11 = uint2(4294967295u, 4294967295u);
-            bool loop_init_9 = true;
-            while(true) {
-                if (all(loop_bound_11 == uint2(0u, 0u))) { break; }
-                loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
-                if (!loop_init_9) {
-                    uint _e395 = j;
-                    j = (_e395 + 1u);
-                }
-                loop_init_9 = false;
-                uint _e339 = j;
-                if ((_e339 < K)) {
-                } else {
-                    break;
-                }
-                {
-                    uint _e342 = j;
-                    uint _e343 = k;
-                    if ((_e342 != _e343)) {
-                        uint _e347 = j;
-                        float _e350 = fin[min(uint(_e347), 7u)].w;
-                        local_4 = (_e350 > 0.0);
-                    } else {
-                        local_4 = false;
-                    }
-                    bool _e354 = local_4;
-                    if (_e354) {
-                        uint _e357 = j;
-                        uint _e360 = fin[min(uint(_e357), 7u)].light;
-                        uint _e361 = j;
-                        uint _e364 = fin[min(uint(_e361), 7u)].u;
-                        uint _e365 = k;
-                        uint _e368 = fin[min(uint(_e365), 7u)].light;
-                        uint _e369 = k;
-                        uint _e372 = fin[min(uint(_e369), 7u)].u;
-                        const bool _e373 = same_pick(_e360, _e364, _e368, _e372);
-                        local_5 = _e373;
-                    } else {
-                        local_5 = false;
-                    }
-                    bool _e375 = local_5;
-                    if (_e375) {
-                        bool _e376 = first;
-                        if (_e376) {
-                            uint _e379 = j;
-                            uint _e380 = k;
-                            local_6 = (_e379 > _e380);
-                        } else {
-                            local_6 = false;
-                        }
-                        bool _e383 = local_6;
-                        first = _e383;
-                        float3 _e384 = w;
-                        uint _e385 = j;
-                        float _e388 = fin[min(uint(_e385), 7u)].w;
-                        uint _e389 = j;
-                        const float3 _e391 = slot_share(_e389, K);
-                        w = (_e384 + (_e388 * _e391));
-                    }
-                }
-            }
-            bool _e397 = first;
-            if (_e397) {
-                uint _e399 = k;
-                uint _e402 = fin[min(uint(_e399), 7u)].light;
-                GpuLight _e404 = ConstructGpuLight(asfloat(lights.Load3(_e402*64+0)), asuint(lights.Load(_e402*64+12)), asfloat(lights.Load3(_e402*64+16)), asfloat(lights.Load(_e402*64+28)), asfloat(lights.Load3(_e402*64+32)), asfloat(lights.Load(_e402*64+44)), asfloat(lights.Load3(_e402*64+48)), asuint(lights.Load(_e402*64+60)));
-                uint _e408 = k;
-                uint _e411 = fin[min(uint(_e408), 7u)].u;
-                const float _e412 = grid_coordinate(_e411);
-                uint _e413 = k;
-                uint _e416 = fin[min(uint(_e413), 7u)].u;
-                const float _e419 = grid_coordinate((_e416 << 16u));
-                const Connection _e421 = connect_record(_e404, x_17, n_15, n_15, UNRANGED, UNRANGED, 1.0, _e412, _e419, eps_3, true);
-                Material _e422 = m;
-                const Shaded _e423 = shade_connection(_e421, x_17, n_15, _e422);
-                Shaded _e424 = t;
-                float3 _e425 = w;
-                const Shaded _e426 = scaled(_e423, _e425);
-                const Shaded _e427 = add(_e424, _e426);
-                t = _e427;
-                uint _e428 = k;
-                j_1 = _e428;
-                uint2 loop_bound_12 = uint2(4294967295u, 4294967295u);
-                bool loop_init_10 = true;
-                while(true) {
-                    if (all(loop_bound_12 == uint2(0u, 0u))) { break; }
-                    loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
-                    if (!loop_init_10) {
-                        uint _e457 = j_1;
-                        j_1 = (_e457 + 1u);
-                    }
-                    loop_init_10 = false;
-                    uint _e430 = j_1;
-                    if ((_e430 < K)) {
-                    } else {
-                        break;
-                    }
-                    {
-                        uint _e433 = j_1;
-                        uint _e436 = fin[min(uint(_e433), 7u)].light;
-                        uint _e437 = j_1;
-                        uint _e440 = fin[min(uint(_e437), 7u)].u;
-                        uint _e441 = k;
-                        uint _e444 = fin[min(uint(_e441), 7u)].light;
-                        uint _e445 = k;
-                        uint _e448 = fin[min(uint(_e445), 7u)].u;
-                        const bool _e449 = same_pick(_e436, _e440, _e444, _e448);
-                        if (_e449) {
-                            uint _e450 = j_1;
-                            const float3 _e452 = output_of(_e423);
-                            const float _e453 = resample_target(_e452);
-                            visible[min(uint(_e450), 7u)] = (_e453 > 0.0);
-                        }
-                    }
-                }
-            }
+            uint _e322 = k;
+            uint _e324 = k;
+            uint _e327 = fin[min(uint(_e324), 7u)].light;
+            uint _e329 = k;
+            uint _e332 = fin[min(uint(_e329), 7u)].u;
+            uint _e334 = k;
+            uint _e337 = fin[min(uint(_e334), 7u)].light;
+            uint _e340 = asuint(lights.Load(12+_e337*64));
+            keys[min(uint(_e322), 7u)] = uint2(_e327, ((_e340 == LIGHT_TRIANGLE) ? _e332 : 0u));
+            uint _e345 = k;
+            uint _e347 = k;
+            float _e350 = fin[min(uint(_e347), 7u)].w;
+            held[min(uint(_e345), 7u)] = (_e350 > 0.0);
         }
     }
+    uint2 _e356[8] = keys;
+    bool _e357[8] = held;
+    const uint _e358[8] = first_holders(_e356, _e357);
     uint2 loop_bound_13 = uint2(4294967295u, 4294967295u);
     bool loop_init_11 = true;
     while(true) {
         if (all(loop_bound_13 == uint2(0u, 0u))) { break; }
         loop_bound_13 -= uint2(loop_bound_13.y == 0u, 1u);
         if (!loop_init_11) {
-            uint _e501 = q_2;
-            q_2 = (_e501 + 1u);
+            uint _e443 = k_1;
+            k_1 = (_e443 + 1u);
         }
         loop_init_11 = false;
-        uint _e464 = q_2;
-        if ((_e464 < K)) {
+        uint _e362 = k_1;
+        if ((_e362 < K)) {
         } else {
             break;
         }
         {
-            uint _e469 = reuse.visibility;
-            if (!((_e469 == 0u))) {
-                uint _e475 = q_2;
-                bool _e477 = visible[min(uint(_e475), 7u)];
-                local_7 = _e477;
-            } else {
-                local_7 = true;
+            uint _e365 = k_1;
+            uint _e367 = k_1;
+            if ((_e358[min(uint(_e365), 7u)] != _e367)) {
+                continue;
             }
-            bool keep = local_7;
-            uint _e483 = q_2;
-            uint _e485 = q_2;
-            uint _e488 = kept[min(uint(_e485), 7u)].light;
-            uint _e489 = q_2;
-            uint _e492 = kept[min(uint(_e489), 7u)].u;
-            uint _e493 = q_2;
-            float _e496 = kept[min(uint(_e493), 7u)].w;
-            {
-                ReuseSlot _value4 = ConstructReuseSlot(_e488, _e492, (keep ? _e496 : 0.0));
-                reuse_next.Store(_e483*12+48+pixel_1*144+0, asuint(_value4.light));
-                reuse_next.Store(_e483*12+48+pixel_1*144+4, asuint(_value4.u));
-                reuse_next.Store(_e483*12+48+pixel_1*144+8, asuint(_value4.w));
+            w = (0.0).xxx;
+            uint _e372 = k_1;
+            j = _e372;
+            uint2 loop_bound_14 = uint2(4294967295u, 4294967295u);
+            bool loop_init_12 = true;
+            while(true) {
+                if (all(loop_bound_14 == uint2(0u, 0u))) { break; }
+                loop_bound_14 -= uint2(loop_bound_14.y == 0u, 1u);
+                if (!loop_init_12) {
+                    uint _e392 = j;
+                    j = (_e392 + 1u);
+                }
+                loop_init_12 = false;
+                uint _e374 = j;
+                if ((_e374 < K)) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e377 = j;
+                    uint _e379 = k_1;
+                    if ((_e358[min(uint(_e377), 7u)] == _e379)) {
+                        float3 _e381 = w;
+                        uint _e382 = j;
+                        float _e385 = fin[min(uint(_e382), 7u)].w;
+                        uint _e386 = j;
+                        const float3 _e388 = slot_share(_e386, K);
+                        w = (_e381 + (_e385 * _e388));
+                    }
+                }
+            }
+            uint _e395 = k_1;
+            uint _e398 = fin[min(uint(_e395), 7u)].light;
+            GpuLight _e400 = ConstructGpuLight(asfloat(lights.Load3(_e398*64+0)), asuint(lights.Load(_e398*64+12)), asfloat(lights.Load3(_e398*64+16)), asfloat(lights.Load(_e398*64+28)), asfloat(lights.Load3(_e398*64+32)), asfloat(lights.Load(_e398*64+44)), asfloat(lights.Load3(_e398*64+48)), asuint(lights.Load(_e398*64+60)));
+            uint _e404 = k_1;
+            uint _e407 = fin[min(uint(_e404), 7u)].u;
+            const float _e408 = grid_coordinate(_e407);
+            uint _e409 = k_1;
+            uint _e412 = fin[min(uint(_e409), 7u)].u;
+            const float _e415 = grid_coordinate((_e412 << 16u));
+            const Connection _e417 = connect_record(_e400, x_17, n_15, n_15, UNRANGED, UNRANGED, 1.0, _e408, _e415, eps_3, true);
+            Material _e418 = m;
+            const Shaded _e419 = shade_connection(_e417, x_17, n_15, _e418);
+            Shaded _e420 = t;
+            float3 _e421 = w;
+            const Shaded _e422 = scaled(_e419, _e421);
+            const Shaded _e423 = add(_e420, _e422);
+            t = _e423;
+            uint _e424 = k_1;
+            j_1 = _e424;
+            uint2 loop_bound_15 = uint2(4294967295u, 4294967295u);
+            bool loop_init_13 = true;
+            while(true) {
+                if (all(loop_bound_15 == uint2(0u, 0u))) { break; }
+                loop_bound_15 -= uint2(loop_bound_15.y == 0u, 1u);
+                if (!loop_init_13) {
+                    uint _e440 = j_1;
+                    j_1 = (_e440 + 1u);
+                }
+                loop_init_13 = false;
+                uint _e426 = j_1;
+                if ((_e426 < K)) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e429 = j_1;
+                    uint _e431 = k_1;
+                    if ((_e358[min(uint(_e429), 7u)] == _e431)) {
+                        uint _e433 = j_1;
+                        const float3 _e435 = output_of(_e419);
+                        const float _e436 = resample_target(_e435);
+                        visible[min(uint(_e433), 7u)] = (_e436 > 0.0);
+                    }
+                }
             }
         }
     }
-    Material _e506 = m;
-    float _e509 = reuse.max_confidence;
-    const ReuseSurface _e511 = reuse_surface(x_17, n_15, _e506, min(confidence, _e509));
+    uint2 loop_bound_16 = uint2(4294967295u, 4294967295u);
+    bool loop_init_14 = true;
+    while(true) {
+        if (all(loop_bound_16 == uint2(0u, 0u))) { break; }
+        loop_bound_16 -= uint2(loop_bound_16.y == 0u, 1u);
+        if (!loop_init_14) {
+            uint _e484 = q_2;
+            q_2 = (_e484 + 1u);
+        }
+        loop_init_14 = false;
+        uint _e447 = q_2;
+        if ((_e447 < K)) {
+        } else {
+            break;
+        }
+        {
+            uint _e452 = reuse.visibility;
+            if (!((_e452 == 0u))) {
+                uint _e458 = q_2;
+                bool _e460 = visible[min(uint(_e458), 7u)];
+                local_4 = _e460;
+            } else {
+                local_4 = true;
+            }
+            bool keep = local_4;
+            uint _e466 = q_2;
+            uint _e468 = q_2;
+            uint _e471 = kept[min(uint(_e468), 7u)].light;
+            uint _e472 = q_2;
+            uint _e475 = kept[min(uint(_e472), 7u)].u;
+            uint _e476 = q_2;
+            float _e479 = kept[min(uint(_e476), 7u)].w;
+            {
+                ReuseSlot _value4 = ConstructReuseSlot(_e471, _e475, (keep ? _e479 : 0.0));
+                reuse_next.Store(_e466*12+48+pixel_1*144+0, asuint(_value4.light));
+                reuse_next.Store(_e466*12+48+pixel_1*144+4, asuint(_value4.u));
+                reuse_next.Store(_e466*12+48+pixel_1*144+8, asuint(_value4.w));
+            }
+        }
+    }
+    Material _e489 = m;
+    float _e492 = reuse.max_confidence;
+    const ReuseSurface _e494 = reuse_surface(x_17, n_15, _e489, min(confidence, _e492));
     {
-        ReuseSurface _value2 = _e511;
+        ReuseSurface _value2 = _e494;
         reuse_next.Store3(0+pixel_1*144+0, asuint(_value2.x));
         reuse_next.Store(0+pixel_1*144+12, asuint(_value2.m));
         reuse_next.Store3(0+pixel_1*144+16, asuint(_value2.n));
@@ -2078,9 +2123,9 @@ void main(uint3 gid : SV_DispatchThreadID)
         reuse_next.Store(0+pixel_1*144+40, asuint(_value2.pad1_));
         reuse_next.Store(0+pixel_1*144+44, asuint(_value2.pad2_));
     }
-    float3 _e514 = t.diffuse;
-    float3 _e516 = t.specular;
-    uint _e518 = count;
-    out_tex[texel_1] = float4((_e514 + _e516), float(_e518));
+    float3 _e497 = t.diffuse;
+    float3 _e499 = t.specular;
+    uint _e501 = count;
+    out_tex[texel_1] = float4((_e497 + _e499), float(_e501));
     return;
 }

@@ -172,7 +172,7 @@ RWTexture2D<float4> out_tex : register(u3);
 Texture2D<float4> base_color_tex : register(t4);
 Texture2D<float4> metal_rough_tex : register(t5);
 RWTexture2D<float4> specular_tex : register(u6);
-ByteAddressBuffer lights_1 : register(t1, space1);
+ByteAddressBuffer lights : register(t1, space1);
 ByteAddressBuffer rt2_5 : register(t2, space1);
 ByteAddressBuffer r2_4 : register(t3, space1);
 ByteAddressBuffer bsh_nodes : register(t4, space1);
@@ -326,9 +326,9 @@ bool weighted_replace(float w_2, float w_sum, float u_2)
     return ((u_2 * w_sum) < w_2);
 }
 
-float weighted_pick_weight(float w_sum_1, float w_3, uint k_1)
+float weighted_pick_weight(float w_sum_1, float w_3, uint k_2)
 {
-    const float _e3 = to_f32_(k_1);
+    const float _e3 = to_f32_(k_2);
     return (w_sum_1 / (_e3 * w_3));
 }
 
@@ -1096,7 +1096,7 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
 
 Connection connect_traced(uint li, float3 x_8, float3 n_8, float3 ng_2, float s, float w_res_1, float u1_3, float u2_3, float eps_1, bool trace_2)
 {
-    GpuLight _e12 = ConstructGpuLight(asfloat(lights_1.Load3(li*64+0)), asuint(lights_1.Load(li*64+12)), asfloat(lights_1.Load3(li*64+16)), asfloat(lights_1.Load(li*64+28)), asfloat(lights_1.Load3(li*64+32)), asfloat(lights_1.Load(li*64+44)), asfloat(lights_1.Load3(li*64+48)), asuint(lights_1.Load(li*64+60)));
+    GpuLight _e12 = ConstructGpuLight(asfloat(lights.Load3(li*64+0)), asuint(lights.Load(li*64+12)), asfloat(lights.Load3(li*64+16)), asfloat(lights.Load(li*64+28)), asfloat(lights.Load3(li*64+32)), asfloat(lights.Load(li*64+44)), asfloat(lights.Load3(li*64+48)), asuint(lights.Load(li*64+60)));
     float _e15 = asfloat(r2_4.Load(li*4));
     float _e19 = asfloat(rt2_5.Load(li*4));
     const Connection _e21 = connect_record(_e12, x_8, n_8, ng_2, (s * _e15), (s * _e19), w_res_1, u1_3, u2_3, eps_1, trace_2);
@@ -1292,11 +1292,14 @@ Shaded add(Shaded a_8, Shaded b_7)
     return shaded_3;
 }
 
-uint pick_copies(uint lights[8], uint k_2)
+typedef uint ret_first_holders[8];
+ret_first_holders first_holders(uint2 keys_1[8], bool held_1[8])
 {
-    uint copies = 1u;
-    uint j = 0u;
+    uint first[8] = (uint[8])0;
+    uint k_3 = 0u;
+    uint j_1 = (uint)0;
     bool local_20 = (bool)0;
+    bool local_21 = (bool)0;
 
     uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
     bool loop_init_3 = true;
@@ -1304,36 +1307,66 @@ uint pick_copies(uint lights[8], uint k_2)
         if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         if (!loop_init_3) {
-            uint _e26 = j;
-            j = (_e26 + 1u);
+            uint _e45 = k_3;
+            k_3 = (_e45 + 1u);
         }
         loop_init_3 = false;
-        uint _e6 = j;
-        if ((_e6 < K)) {
+        uint _e5 = k_3;
+        if ((_e5 < K)) {
         } else {
             break;
         }
         {
-            uint _e9 = j;
-            if ((_e9 != k_2)) {
-                uint _e13 = j;
-                local_20 = (lights[min(uint(_e13), 7u)] == lights[min(uint(k_2), 7u)]);
-            } else {
-                local_20 = false;
-            }
-            bool _e18 = local_20;
-            if (_e18) {
-                uint _e19 = j;
-                if ((_e19 < k_2)) {
-                    return 0u;
+            uint _e8 = k_3;
+            uint _e11 = k_3;
+            uint _e12 = k_3;
+            first[min(uint(_e8), 7u)] = (held_1[min(uint(_e12), 7u)] ? _e11 : K);
+            j_1 = 0u;
+            uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
+            bool loop_init_4 = true;
+            while(true) {
+                if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
+                loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+                if (!loop_init_4) {
+                    uint _e42 = j_1;
+                    j_1 = (_e42 + 1u);
                 }
-                uint _e22 = copies;
-                copies = (_e22 + 1u);
+                loop_init_4 = false;
+                uint _e17 = j_1;
+                uint _e18 = k_3;
+                if ((_e17 < _e18)) {
+                    uint _e22 = k_3;
+                    local_20 = held_1[min(uint(_e22), 7u)];
+                } else {
+                    local_20 = false;
+                }
+                bool _e25 = local_20;
+                if (_e25) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e26 = j_1;
+                    if (held_1[min(uint(_e26), 7u)]) {
+                        uint _e30 = j_1;
+                        uint _e32 = k_3;
+                        local_21 = all((keys_1[min(uint(_e30), 7u)] == keys_1[min(uint(_e32), 7u)]));
+                    } else {
+                        local_21 = false;
+                    }
+                    bool _e37 = local_21;
+                    if (_e37) {
+                        uint _e38 = k_3;
+                        uint _e40 = j_1;
+                        first[min(uint(_e38), 7u)] = _e40;
+                        break;
+                    }
+                }
             }
         }
     }
-    uint _e28 = copies;
-    return _e28;
+    uint _e47[8] = first;
+    return _e47;
 }
 
 [numthreads(8, 8, 1)]
@@ -1346,7 +1379,12 @@ void main(uint3 gid : SV_DispatchThreadID)
     float3 r = (float3)0;
     uint h = (uint)0;
     Shaded t = ConstructShaded((0.0).xxx, (0.0).xxx, (0.0).xxx);
+    uint2 keys[8] = (uint2[8])0;
+    bool held[8] = (bool[8])0;
     uint k = 0u;
+    uint k_1 = 0u;
+    uint copies = (uint)0;
+    uint j = (uint)0;
 
     uint _e4 = view.width;
     if (!((gid.x >= _e4))) {
@@ -1409,55 +1447,108 @@ void main(uint3 gid : SV_DispatchThreadID)
     float4 _e127 = lobe;
     const WeightedPicks _e128 = bsh_weighted_collect(x_15, n_16, _e126, _e127, _e92, _e115);
     if ((_e128.w_sum > 0.0)) {
-        uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
-        bool loop_init_4 = true;
+        uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
+        bool loop_init_5 = true;
         while(true) {
-            if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
-            loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-            if (!loop_init_4) {
-                uint _e175 = k;
-                k = (_e175 + 1u);
+            if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
+            loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+            if (!loop_init_5) {
+                uint _e163 = k;
+                k = (_e163 + 1u);
             }
-            loop_init_4 = false;
-            uint _e134 = k;
-            if ((_e134 < K)) {
+            loop_init_5 = false;
+            uint _e136 = k;
+            if ((_e136 < K)) {
             } else {
                 break;
             }
             {
-                uint _e137 = h;
-                const uint _e138 = pcg_hash(_e137);
-                h = _e138;
-                uint _e139 = h;
-                const float _e140 = xi_from_bits(_e139);
-                uint _e141 = h;
-                const uint _e142 = pcg_hash(_e141);
-                h = _e142;
-                uint _e143 = h;
-                const float _e144 = xi_from_bits(_e143);
-                uint _e146 = k;
-                uint li_6 = _e128.light[min(uint(_e146), 7u)];
-                uint _e150 = k;
-                const uint _e151 = pick_copies(_e128.light, _e150);
-                uint _e155 = asuint(lights_1.Load(12+li_6*64));
-                uint copies_1 = ((_e155 != LIGHT_TRIANGLE) ? _e151 : 1u);
-                if ((copies_1 > 0u)) {
-                    Shaded _e161 = t;
-                    float3 _e162 = r;
-                    Material _e163 = m;
-                    uint _e166 = k;
-                    const float _e169 = weighted_pick_weight(_e128.w_sum, _e128.w[min(uint(_e166), 7u)], K);
-                    const Shaded _e172 = shade_pick(li_6, x_15, n_16, _e162, _e92, _e163, (_e169 * float(copies_1)), _e140, _e144, eps_4);
-                    const Shaded _e173 = add(_e161, _e172);
-                    t = _e173;
+                uint _e140 = k;
+                uint _e145 = k;
+                uint _e149 = asuint(lights.Load(12+_e128.light[min(uint(_e145), 7u)]*64));
+                uint own = ((_e149 == LIGHT_TRIANGLE) ? (_e140 + 1u) : 0u);
+                uint _e153 = k;
+                uint _e156 = k;
+                keys[min(uint(_e153), 7u)] = uint2(_e128.light[min(uint(_e156), 7u)], own);
+                uint _e159 = k;
+                held[min(uint(_e159), 7u)] = true;
+            }
+        }
+        uint2 _e165[8] = keys;
+        bool _e166[8] = held;
+        const uint _e167[8] = first_holders(_e165, _e166);
+        uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
+        bool loop_init_6 = true;
+        while(true) {
+            if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
+            loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
+            if (!loop_init_6) {
+                uint _e221 = k_1;
+                k_1 = (_e221 + 1u);
+            }
+            loop_init_6 = false;
+            uint _e170 = k_1;
+            if ((_e170 < K)) {
+            } else {
+                break;
+            }
+            {
+                uint _e173 = h;
+                const uint _e174 = pcg_hash(_e173);
+                h = _e174;
+                uint _e175 = h;
+                const float _e176 = xi_from_bits(_e175);
+                uint _e177 = h;
+                const uint _e178 = pcg_hash(_e177);
+                h = _e178;
+                uint _e179 = h;
+                const float _e180 = xi_from_bits(_e179);
+                uint _e182 = k_1;
+                uint li_6 = _e128.light[min(uint(_e182), 7u)];
+                copies = 0u;
+                uint _e186 = k_1;
+                j = _e186;
+                uint2 loop_bound_9 = uint2(4294967295u, 4294967295u);
+                bool loop_init_7 = true;
+                while(true) {
+                    if (all(loop_bound_9 == uint2(0u, 0u))) { break; }
+                    loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
+                    if (!loop_init_7) {
+                        uint _e201 = j;
+                        j = (_e201 + 1u);
+                    }
+                    loop_init_7 = false;
+                    uint _e188 = j;
+                    if ((_e188 < K)) {
+                    } else {
+                        break;
+                    }
+                    {
+                        uint _e191 = copies;
+                        uint _e194 = j;
+                        uint _e196 = k_1;
+                        copies = (_e191 + ((_e167[min(uint(_e194), 7u)] == _e196) ? 1u : 0u));
+                    }
+                }
+                uint _e203 = copies;
+                if ((_e203 > 0u)) {
+                    Shaded _e206 = t;
+                    float3 _e207 = r;
+                    Material _e208 = m;
+                    uint _e211 = k_1;
+                    const float _e214 = weighted_pick_weight(_e128.w_sum, _e128.w[min(uint(_e211), 7u)], K);
+                    uint _e215 = copies;
+                    const Shaded _e218 = shade_pick(li_6, x_15, n_16, _e207, _e92, _e208, (_e214 * float(_e215)), _e176, _e180, eps_4);
+                    const Shaded _e219 = add(_e206, _e218);
+                    t = _e219;
                 }
             }
         }
     }
     uint count = _e128.n;
-    float3 _e180 = t.e;
-    out_tex[texel_1] = float4(_e180, float(count));
-    float3 _e185 = t.specular;
-    specular_tex[texel_1] = float4(_e185, 0.0);
+    float3 _e226 = t.e;
+    out_tex[texel_1] = float4(_e226, float(count));
+    float3 _e231 = t.specular;
+    specular_tex[texel_1] = float4(_e231, 0.0);
     return;
 }

@@ -98,9 +98,15 @@ struct Material {
     char _pad6[12];
 };
 struct type_19 {
-    metal::float2 inner[8];
+    metal::uint2 inner[8];
 };
 struct type_20 {
+    bool inner[8];
+};
+struct type_22 {
+    metal::float2 inner[8];
+};
+struct type_23 {
     float inner[8];
 };
 constant uint LIGHT_POINT = 0u;
@@ -272,28 +278,28 @@ float connection_cosine(
     metal::float3 ng,
     float r2_1
 ) {
+    bool local_4 = {};
     bool local_5 = {};
-    bool local_6 = {};
     metal::float3 v_3 = x_2 - y;
     float d2_6 = metal::dot(v_3, v_3);
     bool _e7 = slc_keep(r2_1, d2_6);
     if (!(!(_e7))) {
-        local_5 = !((d2_6 > 0.0));
+        local_4 = !((d2_6 > 0.0));
     } else {
-        local_5 = true;
+        local_4 = true;
     }
-    bool _e16 = local_5;
+    bool _e16 = local_4;
     if (_e16) {
         return 0.0;
     }
     metal::float3 w_7 = v_3 / metal::float3(metal::sqrt(d2_6));
     float cos_x_1 = -(metal::dot(n, w_7));
     if (!((cos_x_1 <= 0.0))) {
-        local_6 = metal::dot(ng, w_7) >= 0.0;
+        local_5 = metal::dot(ng, w_7) >= 0.0;
     } else {
-        local_6 = true;
+        local_5 = true;
     }
-    bool _e32 = local_6;
+    bool _e32 = local_5;
     if (_e32) {
         return 0.0;
     }
@@ -357,17 +363,17 @@ uint naga_mod(uint lhs, uint rhs) {
 float slot_target(
     metal::float3 c_2,
     uint slot,
-    uint k_1
+    uint k_2
 ) {
-    if (k_1 < 3u) {
+    if (k_2 < 3u) {
         float _e5 = resample_target(c_2);
         return _e5;
     }
-    uint j_1 = naga_mod(slot, 3u);
-    if (j_1 == 0u) {
+    uint j_2 = naga_mod(slot, 3u);
+    if (j_2 == 0u) {
         return c_2.x;
     }
-    if (j_1 == 1u) {
+    if (j_2 == 1u) {
         return c_2.y;
     }
     return c_2.z;
@@ -379,20 +385,20 @@ uint naga_div(uint lhs, uint rhs) {
 
 metal::float3 slot_share(
     uint slot_1,
-    uint k_2
+    uint k_3
 ) {
-    if (k_2 < 3u) {
-        float _e4 = to_f32_(k_2);
+    if (k_3 < 3u) {
+        float _e4 = to_f32_(k_3);
         float w_8 = 1.0 / _e4;
         return metal::float3(w_8, w_8, w_8);
     }
-    uint j_2 = naga_mod(slot_1, 3u);
-    float _e15 = to_f32_(naga_div((k_2 + 2u) - j_2, 3u));
+    uint j_3 = naga_mod(slot_1, 3u);
+    float _e15 = to_f32_(naga_div((k_3 + 2u) - j_3, 3u));
     float w_9 = 1.0 / _e15;
-    if (j_2 == 0u) {
+    if (j_3 == 0u) {
         return metal::float3(w_9, 0.0, 0.0);
     }
-    if (j_2 == 1u) {
+    if (j_3 == 1u) {
         return metal::float3(0.0, w_9, 0.0);
     }
     return metal::float3(0.0, 0.0, w_9);
@@ -447,22 +453,22 @@ float cone_cos_of(
     float a_2,
     metal::float3 d
 ) {
+    bool local_6 = {};
     bool local_7 = {};
-    bool local_8 = {};
     float vd = metal::dot(v, d);
     float h2_ = d2_4 - (a_2 * a_2);
     if (!((h2_ <= 0.0))) {
         if (vd >= 0.0) {
-            local_8 = (vd * vd) >= h2_;
+            local_7 = (vd * vd) >= h2_;
         } else {
-            local_8 = false;
+            local_7 = false;
         }
-        bool _e19 = local_8;
-        local_7 = _e19;
+        bool _e19 = local_7;
+        local_6 = _e19;
     } else {
-        local_7 = true;
+        local_6 = true;
     }
-    bool _e21 = local_7;
+    bool _e21 = local_6;
     if (_e21) {
         return 1.0;
     }
@@ -553,9 +559,9 @@ float ray_triangle(
     float t_min,
     float t_max_1
 ) {
+    bool local_8 = {};
     bool local_9 = {};
     bool local_10 = {};
-    bool local_11 = {};
     metal::float3 e1_ = b_3 - a_3;
     metal::float3 e2_ = c_3 - a_3;
     metal::float3 p_2 = metal::cross(d_3, e2_);
@@ -567,32 +573,32 @@ float ray_triangle(
     metal::float3 s_4 = o_1 - a_3;
     float u_3 = metal::dot(s_4, p_2) * inv;
     if (!((u_3 < 0.0))) {
-        local_9 = u_3 > 1.0;
+        local_8 = u_3 > 1.0;
     } else {
-        local_9 = true;
+        local_8 = true;
     }
-    bool _e28 = local_9;
+    bool _e28 = local_8;
     if (_e28) {
         return -1.0;
     }
     metal::float3 q_1 = metal::cross(s_4, e1_);
     float v_5 = metal::dot(d_3, q_1) * inv;
     if (!((v_5 < 0.0))) {
-        local_10 = (u_3 + v_5) > 1.0;
+        local_9 = (u_3 + v_5) > 1.0;
     } else {
-        local_10 = true;
+        local_9 = true;
     }
-    bool _e42 = local_10;
+    bool _e42 = local_9;
     if (_e42) {
         return -1.0;
     }
     float t_3 = metal::dot(e2_, q_1) * inv;
     if (t_3 > t_min) {
-        local_11 = t_3 < t_max_1;
+        local_10 = t_3 < t_max_1;
     } else {
-        local_11 = false;
+        local_10 = false;
     }
-    bool _e51 = local_11;
+    bool _e51 = local_10;
     if (_e51) {
         return t_3;
     }
@@ -787,19 +793,19 @@ bool bsh_reaches(
     metal::float3 r_4,
     metal::float4 rl_3
 ) {
+    bool local_11 = {};
     bool local_12 = {};
-    bool local_13 = {};
     bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_4);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
         bool _e20 = sphere_contains_point(node_3.center, node_3.radius * (rl_3.w * 1.0001), x_4);
-        local_12 = !(_e20);
+        local_11 = !(_e20);
     } else {
-        local_12 = true;
+        local_11 = true;
     }
-    bool _e23 = local_12;
+    bool _e23 = local_11;
     if (_e23) {
         return false;
     }
@@ -820,11 +826,11 @@ bool bsh_reaches(
     float s_c = _e50 * 1.001;
     float reach = node_3.extent + (metal::sqrt(s_c) * _e25);
     if (d2_7 <= ((node_3.radius * node_3.radius) * s_c)) {
-        local_13 = d2_7 <= (reach * reach);
+        local_12 = d2_7 <= (reach * reach);
     } else {
-        local_13 = false;
+        local_12 = false;
     }
-    bool _e67 = local_13;
+    bool _e67 = local_12;
     return _e67;
 }
 
@@ -885,8 +891,8 @@ Connection connect_record(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Connection c_4 = {};
+    bool local_13 = {};
     bool local_14 = {};
-    bool local_15 = {};
     c_4.e = metal::float3(0.0);
     metal::float3 _e16 = light_point(l_2, u1_1, u2_1);
     c_4.y = _e16;
@@ -898,16 +904,16 @@ Connection connect_record(
         if (trace_1) {
             metal::float3 _e33 = c_4.y;
             bool _e34 = occluded(x_6 + (ng_1 * eps), _e33, rays_cast, nodes_visited, geo_nodes, geo_tris, _buffer_sizes);
-            local_15 = _e34;
+            local_14 = _e34;
         } else {
-            local_15 = false;
+            local_14 = false;
         }
-        bool _e36 = local_15;
-        local_14 = _e36;
+        bool _e36 = local_14;
+        local_13 = _e36;
     } else {
-        local_14 = true;
+        local_13 = true;
     }
-    bool _e38 = local_14;
+    bool _e38 = local_13;
     if (_e38) {
         Connection _e39 = c_4;
         return _e39;
@@ -1051,6 +1057,83 @@ Shaded scaled(
     return Shaded {s_2.e * w_6, s_2.diffuse * w_6, s_2.specular * w_6};
 }
 
+type_16 first_holders(
+    type_19 keys_1,
+    type_20 held_1
+) {
+    type_16 first = {};
+    uint k_4 = 0u;
+    uint j_1 = {};
+    bool local_15 = {};
+    bool local_16 = {};
+    uint2 loop_bound_3 = uint2(4294967295u);
+    bool loop_init_1 = true;
+    while(true) {
+        if (metal::all(loop_bound_3 == uint2(0u))) { break; }
+        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+        if (!loop_init_1) {
+            uint _e45 = k_4;
+            k_4 = _e45 + 1u;
+        }
+        loop_init_1 = false;
+        uint _e5 = k_4;
+        if (_e5 < K) {
+        } else {
+            break;
+        }
+        {
+            uint _e8 = k_4;
+            uint _e11 = k_4;
+            uint _e12 = k_4;
+            first.inner[_e8] = held_1.inner[_e12] ? _e11 : K;
+            j_1 = 0u;
+            uint2 loop_bound_4 = uint2(4294967295u);
+            bool loop_init_2 = true;
+            while(true) {
+                if (metal::all(loop_bound_4 == uint2(0u))) { break; }
+                loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+                if (!loop_init_2) {
+                    uint _e42 = j_1;
+                    j_1 = _e42 + 1u;
+                }
+                loop_init_2 = false;
+                uint _e17 = j_1;
+                uint _e18 = k_4;
+                if (_e17 < _e18) {
+                    uint _e22 = k_4;
+                    local_15 = held_1.inner[_e22];
+                } else {
+                    local_15 = false;
+                }
+                bool _e25 = local_15;
+                if (_e25) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e26 = j_1;
+                    if (held_1.inner[_e26]) {
+                        uint _e30 = j_1;
+                        uint _e32 = k_4;
+                        local_16 = metal::all(keys_1.inner[_e30] == keys_1.inner[_e32]);
+                    } else {
+                        local_16 = false;
+                    }
+                    bool _e37 = local_16;
+                    if (_e37) {
+                        uint _e38 = k_4;
+                        uint _e40 = j_1;
+                        first.inner[_e38] = _e40;
+                        break;
+                    }
+                }
+            }
+        }
+    }
+    type_16 _e47 = first;
+    return _e47;
+}
+
 metal::float3 output_of(
     Shaded s_3
 ) {
@@ -1085,20 +1168,21 @@ kernel void main_(
     uint h = {};
     Shaded t = Shaded {metal::float3(0.0), metal::float3(0.0), metal::float3(0.0)};
     type_16 slot_light = {};
-    type_19 slot_u = {};
-    type_20 slot_p = {};
+    type_22 slot_u = {};
+    type_23 slot_p = {};
     metal::float3 total = metal::float3(0.0);
     uint count = 0u;
     uint hc = {};
     uint b = {};
     uint q = {};
     bool local_2 = {};
+    type_19 keys = {};
+    type_20 held = {};
     uint k = 0u;
+    uint k_1 = 0u;
     metal::float3 w = {};
-    bool first = {};
     uint j = {};
     bool local_3 = {};
-    bool local_4 = {};
     uint _e4 = view.width;
     if (!((gid.x >= _e4))) {
         uint _e12 = view.height;
@@ -1144,19 +1228,19 @@ kernel void main_(
     metal::float3 _e100 = r;
     uint _e101 = bsh_next_leaf_lobe(BSH, _e99, x_11, _e100, _e54, bsh_nodes, _buffer_sizes);
     b = _e101;
-    uint2 loop_bound_3 = uint2(4294967295u);
-    bool loop_init_1 = true;
+    uint2 loop_bound_5 = uint2(4294967295u);
+    bool loop_init_3 = true;
     while(true) {
-        if (metal::all(loop_bound_3 == uint2(0u))) { break; }
-        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-        if (!loop_init_1) {
+        if (metal::all(loop_bound_5 == uint2(0u))) { break; }
+        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+        if (!loop_init_3) {
             uint _e174 = b;
             uint _e177 = bsh_nodes[_e174].next;
             metal::float3 _e178 = r;
             uint _e179 = bsh_next_leaf_lobe(BSH, _e177, x_11, _e178, _e54, bsh_nodes, _buffer_sizes);
             b = _e179;
         }
-        loop_init_1 = false;
+        loop_init_3 = false;
         uint _e103 = b;
         if (_e103 != BSH_NONE) {
         } else {
@@ -1189,16 +1273,16 @@ kernel void main_(
                 metal::float3 _e138 = total;
                 total = _e138 + _e130;
                 q = 0u;
-                uint2 loop_bound_4 = uint2(4294967295u);
-                bool loop_init_2 = true;
+                uint2 loop_bound_6 = uint2(4294967295u);
+                bool loop_init_4 = true;
                 while(true) {
-                    if (metal::all(loop_bound_4 == uint2(0u))) { break; }
-                    loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
-                    if (!loop_init_2) {
+                    if (metal::all(loop_bound_6 == uint2(0u))) { break; }
+                    loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+                    if (!loop_init_4) {
                         uint _e170 = q;
                         q = _e170 + 1u;
                     }
-                    loop_init_2 = false;
+                    loop_init_4 = false;
                     uint _e142 = q;
                     if (_e142 < K) {
                     } else {
@@ -1235,108 +1319,123 @@ kernel void main_(
             }
         }
     }
-    uint2 loop_bound_5 = uint2(4294967295u);
-    bool loop_init_3 = true;
+    uint2 loop_bound_7 = uint2(4294967295u);
+    bool loop_init_5 = true;
     while(true) {
-        if (metal::all(loop_bound_5 == uint2(0u))) { break; }
-        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
-        if (!loop_init_3) {
-            uint _e261 = k;
-            k = _e261 + 1u;
+        if (metal::all(loop_bound_7 == uint2(0u))) { break; }
+        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+        if (!loop_init_5) {
+            uint _e202 = k;
+            k = _e202 + 1u;
         }
-        loop_init_3 = false;
-        uint _e182 = k;
-        if (_e182 < K) {
+        loop_init_5 = false;
+        uint _e184 = k;
+        if (_e184 < K) {
+        } else {
+            break;
+        }
+        {
+            uint _e187 = k;
+            uint _e189 = k;
+            uint _e191 = slot_light.inner[_e189];
+            keys.inner[_e187] = metal::uint2(_e191, 0u);
+            uint _e194 = k;
+            uint _e196 = k;
+            float _e198 = slot_p.inner[_e196];
+            held.inner[_e194] = _e198 > 0.0;
+        }
+    }
+    type_19 _e204 = keys;
+    type_20 _e205 = held;
+    type_16 _e206 = first_holders(_e204, _e205);
+    uint2 loop_bound_8 = uint2(4294967295u);
+    bool loop_init_6 = true;
+    while(true) {
+        if (metal::all(loop_bound_8 == uint2(0u))) { break; }
+        loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
+        if (!loop_init_6) {
+            uint _e269 = k_1;
+            k_1 = _e269 + 1u;
+        }
+        loop_init_6 = false;
+        uint _e209 = k_1;
+        if (_e209 < K) {
         } else {
             break;
         }
         {
             w = metal::float3(0.0);
-            uint _e188 = k;
-            float _e190 = slot_p.inner[_e188];
-            first = _e190 > 0.0;
-            j = 0u;
-            uint2 loop_bound_6 = uint2(4294967295u);
-            bool loop_init_4 = true;
+            uint _e215 = k_1;
+            uint _e217 = k_1;
+            bool first_1 = _e206.inner[_e215] == _e217;
+            uint _e219 = k_1;
+            j = _e219;
+            uint2 loop_bound_9 = uint2(4294967295u);
+            bool loop_init_7 = true;
             while(true) {
-                if (metal::all(loop_bound_6 == uint2(0u))) { break; }
-                loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-                if (!loop_init_4) {
-                    uint _e238 = j;
-                    j = _e238 + 1u;
+                if (metal::all(loop_bound_9 == uint2(0u))) { break; }
+                loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
+                if (!loop_init_7) {
+                    uint _e247 = j;
+                    j = _e247 + 1u;
                 }
-                loop_init_4 = false;
-                uint _e196 = j;
-                if (_e196 < K) {
+                loop_init_7 = false;
+                uint _e221 = j;
+                if (_e221 < K) {
+                    local_3 = first_1;
+                } else {
+                    local_3 = false;
+                }
+                bool _e227 = local_3;
+                if (_e227) {
                 } else {
                     break;
                 }
                 {
-                    uint _e199 = j;
-                    float _e201 = slot_p.inner[_e199];
-                    if (_e201 > 0.0) {
-                        uint _e206 = j;
-                        uint _e208 = slot_light.inner[_e206];
-                        uint _e209 = k;
-                        uint _e211 = slot_light.inner[_e209];
-                        local_3 = _e208 == _e211;
-                    } else {
-                        local_3 = false;
-                    }
-                    bool _e214 = local_3;
-                    if (_e214) {
-                        bool _e215 = first;
-                        if (_e215) {
-                            uint _e218 = j;
-                            uint _e219 = k;
-                            local_4 = _e218 >= _e219;
-                        } else {
-                            local_4 = false;
-                        }
-                        bool _e222 = local_4;
-                        first = _e222;
-                        metal::float3 _e223 = w;
-                        metal::float3 _e224 = total;
-                        uint _e225 = j;
-                        float _e227 = slot_target(_e224, _e225, K);
-                        uint _e228 = j;
-                        float _e230 = slot_p.inner[_e228];
-                        uint _e232 = j;
-                        metal::float3 _e234 = slot_share(_e232, K);
-                        w = _e223 + ((_e227 / _e230) * _e234);
+                    uint _e228 = j;
+                    uint _e230 = k_1;
+                    if (_e206.inner[_e228] == _e230) {
+                        metal::float3 _e232 = w;
+                        metal::float3 _e233 = total;
+                        uint _e234 = j;
+                        float _e236 = slot_target(_e233, _e234, K);
+                        uint _e237 = j;
+                        float _e239 = slot_p.inner[_e237];
+                        uint _e241 = j;
+                        metal::float3 _e243 = slot_share(_e241, K);
+                        w = _e232 + ((_e236 / _e239) * _e243);
                     }
                 }
             }
-            bool _e240 = first;
-            if (_e240) {
-                Shaded _e241 = t;
-                uint _e242 = k;
-                uint _e244 = slot_light.inner[_e242];
-                metal::float3 _e245 = r;
-                Material _e246 = m;
-                uint _e248 = k;
-                float _e251 = slot_u.inner[_e248].x;
-                uint _e252 = k;
-                float _e255 = slot_u.inner[_e252].y;
-                Shaded _e256 = shade_pick(_e244, x_11, n_8, _e245, _e54, _e246, 1.0, _e251, _e255, eps_4, rays_cast, nodes_visited, geo_nodes, geo_tris, lights, rt2_3, r2_3, _buffer_sizes);
-                metal::float3 _e257 = w;
-                Shaded _e258 = scaled(_e256, _e257);
-                Shaded _e259 = add(_e241, _e258);
-                t = _e259;
+            if (first_1) {
+                Shaded _e249 = t;
+                uint _e250 = k_1;
+                uint _e252 = slot_light.inner[_e250];
+                metal::float3 _e253 = r;
+                Material _e254 = m;
+                uint _e256 = k_1;
+                float _e259 = slot_u.inner[_e256].x;
+                uint _e260 = k_1;
+                float _e263 = slot_u.inner[_e260].y;
+                Shaded _e264 = shade_pick(_e252, x_11, n_8, _e253, _e54, _e254, 1.0, _e259, _e263, eps_4, rays_cast, nodes_visited, geo_nodes, geo_tris, lights, rt2_3, r2_3, _buffer_sizes);
+                metal::float3 _e265 = w;
+                Shaded _e266 = scaled(_e264, _e265);
+                Shaded _e267 = add(_e249, _e266);
+                t = _e267;
             }
         }
     }
-    metal::float3 _e265 = t.e;
-    uint _e266 = count;
-    out_tex.write(metal::float4(_e265, static_cast<float>(_e266)), metal::uint2(texel_1));
+    metal::float3 _e273 = t.e;
+    uint _e274 = count;
+    out_tex.write(metal::float4(_e273, static_cast<float>(_e274)), metal::uint2(texel_1));
     direct_count(DIRECT_COUNT_PIXELS, 1u, direct_counts, _buffer_sizes);
-    uint _e272 = count;
-    direct_count(DIRECT_COUNT_CANDIDATES, _e272, direct_counts, _buffer_sizes);
-    uint _e275 = evaluations;
-    direct_count(DIRECT_COUNT_EVALUATIONS, _e275, direct_counts, _buffer_sizes);
-    uint _e278 = rays_cast;
-    direct_count(DIRECT_COUNT_RAYS, _e278, direct_counts, _buffer_sizes);
-    uint _e281 = nodes_visited;
-    direct_count(DIRECT_COUNT_NODES, _e281, direct_counts, _buffer_sizes);
+    uint _e280 = count;
+    direct_count(DIRECT_COUNT_CANDIDATES, _e280, direct_counts, _buffer_sizes);
+    uint _e283 = evaluations;
+    direct_count(DIRECT_COUNT_EVALUATIONS, _e283, direct_counts, _buffer_sizes);
+    uint _e286 = rays_cast;
+    direct_count(DIRECT_COUNT_RAYS, _e286, direct_counts, _buffer_sizes);
+    uint _e289 = nodes_visited;
+    direct_count(DIRECT_COUNT_NODES, _e289, direct_counts, _buffer_sizes);
     return;
 }

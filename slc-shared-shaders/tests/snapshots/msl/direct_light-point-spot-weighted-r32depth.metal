@@ -117,6 +117,12 @@ struct Material {
     float reflectance;
     char _pad6[12];
 };
+struct type_18 {
+    metal::uint2 inner[8];
+};
+struct type_19 {
+    bool inner[8];
+};
 constant uint LIGHT_POINT = 0u;
 constant uint LIGHT_SPOT = 1u;
 constant uint LIGHT_IES = 2u;
@@ -361,9 +367,9 @@ bool weighted_replace(
 float weighted_pick_weight(
     float w_sum_1,
     float w_2,
-    uint k_1
+    uint k_2
 ) {
-    float _e3 = to_f32_(k_1);
+    float _e3 = to_f32_(k_2);
     return w_sum_1 / (_e3 * w_2);
 }
 
@@ -1100,12 +1106,12 @@ Connection connect_traced(
     bool trace_2,
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
-    device type_11 const& lights_1,
+    device type_11 const& lights,
     device type_4 const& rt2_5,
     device type_4 const& r2_4,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuLight _e12 = lights_1[li];
+    GpuLight _e12 = lights[li];
     float _e15 = r2_4[li];
     float _e19 = rt2_5[li];
     Connection _e21 = connect_record(_e12, x_8, n_5, ng_2, s * _e15, s * _e19, w_res_1, u1_2, u2_2, eps_1, trace_2, geo_nodes, geo_tris, _buffer_sizes);
@@ -1316,12 +1322,12 @@ Shaded shade_pick_traced(
     bool trace_3,
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
-    device type_11 const& lights_1,
+    device type_11 const& lights,
     device type_4 const& rt2_5,
     device type_4 const& r2_4,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Connection _e12 = connect_traced(li_3, x_13, n_9, n_9, 1.0, w_4, u1_3, u2_3, eps_2, trace_3, geo_nodes, geo_tris, lights_1, rt2_5, r2_4, _buffer_sizes);
+    Connection _e12 = connect_traced(li_3, x_13, n_9, n_9, 1.0, w_4, u1_3, u2_3, eps_2, trace_3, geo_nodes, geo_tris, lights, rt2_5, r2_4, _buffer_sizes);
     Shaded _e13 = shade_connection(_e12, x_13, n_9, m_2);
     return _e13;
 }
@@ -1339,12 +1345,12 @@ Shaded shade_pick(
     float eps_3,
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
-    device type_11 const& lights_1,
+    device type_11 const& lights,
     device type_4 const& rt2_5,
     device type_4 const& r2_4,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Shaded _e11 = shade_pick_traced(li_4, x_14, n_10, r_12, rl_9, m_3, w_5, u1_4, u2_4, eps_3, true, geo_nodes, geo_tris, lights_1, rt2_5, r2_4, _buffer_sizes);
+    Shaded _e11 = shade_pick_traced(li_4, x_14, n_10, r_12, rl_9, m_3, w_5, u1_4, u2_4, eps_3, true, geo_nodes, geo_tris, lights, rt2_5, r2_4, _buffer_sizes);
     return _e11;
 }
 
@@ -1355,49 +1361,81 @@ Shaded add(
     return Shaded {a_6.e + b_5.e, a_6.diffuse + b_5.diffuse, a_6.specular + b_5.specular};
 }
 
-uint pick_copies(
-    type_14 lights,
-    uint k_2
+type_14 first_holders(
+    type_18 keys_1,
+    type_19 held_1
 ) {
-    uint copies = 1u;
-    uint j = 0u;
+    type_14 first = {};
+    uint k_3 = 0u;
+    uint j_1 = {};
     bool local_18 = {};
+    bool local_19 = {};
     uint2 loop_bound_5 = uint2(4294967295u);
     bool loop_init_3 = true;
     while(true) {
         if (metal::all(loop_bound_5 == uint2(0u))) { break; }
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         if (!loop_init_3) {
-            uint _e26 = j;
-            j = _e26 + 1u;
+            uint _e45 = k_3;
+            k_3 = _e45 + 1u;
         }
         loop_init_3 = false;
-        uint _e6 = j;
-        if (_e6 < K) {
+        uint _e5 = k_3;
+        if (_e5 < K) {
         } else {
             break;
         }
         {
-            uint _e9 = j;
-            if (_e9 != k_2) {
-                uint _e13 = j;
-                local_18 = lights.inner[_e13] == lights.inner[k_2];
-            } else {
-                local_18 = false;
-            }
-            bool _e18 = local_18;
-            if (_e18) {
-                uint _e19 = j;
-                if (_e19 < k_2) {
-                    return 0u;
+            uint _e8 = k_3;
+            uint _e11 = k_3;
+            uint _e12 = k_3;
+            first.inner[_e8] = held_1.inner[_e12] ? _e11 : K;
+            j_1 = 0u;
+            uint2 loop_bound_6 = uint2(4294967295u);
+            bool loop_init_4 = true;
+            while(true) {
+                if (metal::all(loop_bound_6 == uint2(0u))) { break; }
+                loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+                if (!loop_init_4) {
+                    uint _e42 = j_1;
+                    j_1 = _e42 + 1u;
                 }
-                uint _e22 = copies;
-                copies = _e22 + 1u;
+                loop_init_4 = false;
+                uint _e17 = j_1;
+                uint _e18 = k_3;
+                if (_e17 < _e18) {
+                    uint _e22 = k_3;
+                    local_18 = held_1.inner[_e22];
+                } else {
+                    local_18 = false;
+                }
+                bool _e25 = local_18;
+                if (_e25) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e26 = j_1;
+                    if (held_1.inner[_e26]) {
+                        uint _e30 = j_1;
+                        uint _e32 = k_3;
+                        local_19 = metal::all(keys_1.inner[_e30] == keys_1.inner[_e32]);
+                    } else {
+                        local_19 = false;
+                    }
+                    bool _e37 = local_19;
+                    if (_e37) {
+                        uint _e38 = k_3;
+                        uint _e40 = j_1;
+                        first.inner[_e38] = _e40;
+                        break;
+                    }
+                }
             }
         }
     }
-    uint _e28 = copies;
-    return _e28;
+    type_14 _e47 = first;
+    return _e47;
 }
 
 struct main_Input {
@@ -1410,7 +1448,7 @@ kernel void main_(
 , metal::texture2d<float, metal::access::sample> depth_tex [[user(fake0)]]
 , metal::texture2d<float, metal::access::sample> normal_tex [[user(fake0)]]
 , metal::texture2d<float, metal::access::write> out_tex [[user(fake0)]]
-, device type_11 const& lights_1 [[user(fake0)]]
+, device type_11 const& lights [[user(fake0)]]
 , device type_4 const& rt2_5 [[user(fake0)]]
 , device type_4 const& r2_4 [[user(fake0)]]
 , device type_12 const& bsh_nodes [[user(fake0)]]
@@ -1424,7 +1462,12 @@ kernel void main_(
     metal::float3 r = {};
     uint h = {};
     Shaded t = Shaded {metal::float3(0.0), metal::float3(0.0), metal::float3(0.0)};
+    type_18 keys = {};
+    type_19 held = {};
     uint k = 0u;
+    uint k_1 = 0u;
+    uint copies = {};
+    uint j = {};
     uint _e4 = view.width;
     if (!((gid.x >= _e4))) {
         uint _e12 = view.height;
@@ -1469,53 +1512,106 @@ kernel void main_(
     metal::float4 _e89 = lobe;
     WeightedPicks _e90 = bsh_weighted_collect(x_16, n_12, _e88, _e89, _e54, _e77, rt2_5, bsh_nodes, light_cones, _buffer_sizes);
     if (_e90.w_sum > 0.0) {
-        uint2 loop_bound_6 = uint2(4294967295u);
-        bool loop_init_4 = true;
+        uint2 loop_bound_7 = uint2(4294967295u);
+        bool loop_init_5 = true;
         while(true) {
-            if (metal::all(loop_bound_6 == uint2(0u))) { break; }
-            loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-            if (!loop_init_4) {
-                uint _e137 = k;
-                k = _e137 + 1u;
+            if (metal::all(loop_bound_7 == uint2(0u))) { break; }
+            loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+            if (!loop_init_5) {
+                uint _e125 = k;
+                k = _e125 + 1u;
             }
-            loop_init_4 = false;
-            uint _e96 = k;
-            if (_e96 < K) {
+            loop_init_5 = false;
+            uint _e98 = k;
+            if (_e98 < K) {
             } else {
                 break;
             }
             {
-                uint _e99 = h;
-                uint _e100 = pcg_hash(_e99);
-                h = _e100;
-                uint _e101 = h;
-                float _e102 = xi_from_bits(_e101);
-                uint _e103 = h;
-                uint _e104 = pcg_hash(_e103);
-                h = _e104;
-                uint _e105 = h;
-                float _e106 = xi_from_bits(_e105);
-                uint _e108 = k;
-                uint li_6 = _e90.light.inner[_e108];
-                uint _e112 = k;
-                uint _e113 = pick_copies(_e90.light, _e112);
-                uint _e117 = lights_1[li_6].kind;
-                uint copies_1 = (_e117 != LIGHT_TRIANGLE) ? _e113 : 1u;
-                if (copies_1 > 0u) {
-                    Shaded _e123 = t;
-                    metal::float3 _e124 = r;
-                    Material _e125 = m;
-                    uint _e128 = k;
-                    float _e131 = weighted_pick_weight(_e90.w_sum, _e90.w.inner[_e128], K);
-                    Shaded _e134 = shade_pick(li_6, x_16, n_12, _e124, _e54, _e125, _e131 * static_cast<float>(copies_1), _e102, _e106, eps_4, geo_nodes, geo_tris, lights_1, rt2_5, r2_4, _buffer_sizes);
-                    Shaded _e135 = add(_e123, _e134);
-                    t = _e135;
+                uint _e102 = k;
+                uint _e107 = k;
+                uint _e111 = lights[_e90.light.inner[_e107]].kind;
+                uint own = (_e111 == LIGHT_TRIANGLE) ? (_e102 + 1u) : 0u;
+                uint _e115 = k;
+                uint _e118 = k;
+                keys.inner[_e115] = metal::uint2(_e90.light.inner[_e118], own);
+                uint _e121 = k;
+                held.inner[_e121] = true;
+            }
+        }
+        type_18 _e127 = keys;
+        type_19 _e128 = held;
+        type_14 _e129 = first_holders(_e127, _e128);
+        uint2 loop_bound_8 = uint2(4294967295u);
+        bool loop_init_6 = true;
+        while(true) {
+            if (metal::all(loop_bound_8 == uint2(0u))) { break; }
+            loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
+            if (!loop_init_6) {
+                uint _e183 = k_1;
+                k_1 = _e183 + 1u;
+            }
+            loop_init_6 = false;
+            uint _e132 = k_1;
+            if (_e132 < K) {
+            } else {
+                break;
+            }
+            {
+                uint _e135 = h;
+                uint _e136 = pcg_hash(_e135);
+                h = _e136;
+                uint _e137 = h;
+                float _e138 = xi_from_bits(_e137);
+                uint _e139 = h;
+                uint _e140 = pcg_hash(_e139);
+                h = _e140;
+                uint _e141 = h;
+                float _e142 = xi_from_bits(_e141);
+                uint _e144 = k_1;
+                uint li_6 = _e90.light.inner[_e144];
+                copies = 0u;
+                uint _e148 = k_1;
+                j = _e148;
+                uint2 loop_bound_9 = uint2(4294967295u);
+                bool loop_init_7 = true;
+                while(true) {
+                    if (metal::all(loop_bound_9 == uint2(0u))) { break; }
+                    loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
+                    if (!loop_init_7) {
+                        uint _e163 = j;
+                        j = _e163 + 1u;
+                    }
+                    loop_init_7 = false;
+                    uint _e150 = j;
+                    if (_e150 < K) {
+                    } else {
+                        break;
+                    }
+                    {
+                        uint _e153 = copies;
+                        uint _e156 = j;
+                        uint _e158 = k_1;
+                        copies = _e153 + ((_e129.inner[_e156] == _e158) ? 1u : 0u);
+                    }
+                }
+                uint _e165 = copies;
+                if (_e165 > 0u) {
+                    Shaded _e168 = t;
+                    metal::float3 _e169 = r;
+                    Material _e170 = m;
+                    uint _e173 = k_1;
+                    float _e176 = weighted_pick_weight(_e90.w_sum, _e90.w.inner[_e173], K);
+                    uint _e177 = copies;
+                    Shaded _e180 = shade_pick(li_6, x_16, n_12, _e169, _e54, _e170, _e176 * static_cast<float>(_e177), _e138, _e142, eps_4, geo_nodes, geo_tris, lights, rt2_5, r2_4, _buffer_sizes);
+                    Shaded _e181 = add(_e168, _e180);
+                    t = _e181;
                 }
             }
         }
     }
     uint count = _e90.n;
-    metal::float3 _e142 = t.e;
-    out_tex.write(metal::float4(_e142, static_cast<float>(count)), metal::uint2(texel_1));
+    metal::float3 _e188 = t.e;
+    out_tex.write(metal::float4(_e188, static_cast<float>(count)), metal::uint2(texel_1));
     return;
 }

@@ -145,6 +145,12 @@ struct Material {
     float reflectance;
     char _pad6[12];
 };
+struct type_20 {
+    metal::uint2 inner[8];
+};
+struct type_21 {
+    bool inner[8];
+};
 struct Domain {
     uint pixel;
     char _pad1[12];
@@ -155,17 +161,14 @@ struct Domain {
     bool temporal;
     char _pad6[11];
 };
-struct type_19 {
+struct type_22 {
     Domain inner[3];
 };
-struct type_23 {
+struct type_26 {
     metal::float2 inner[8];
 };
-struct type_24 {
+struct type_27 {
     float inner[8];
-};
-struct type_25 {
-    bool inner[8];
 };
 constant uint LIGHT_POINT = 0u;
 constant uint LIGHT_SPOT = 1u;
@@ -346,28 +349,28 @@ float connection_cosine(
     metal::float3 ng,
     float r2_1
 ) {
-    bool local_8 = {};
-    bool local_9 = {};
+    bool local_5 = {};
+    bool local_6 = {};
     metal::float3 v_6 = x_2 - y;
     float d2_6 = metal::dot(v_6, v_6);
     bool _e7 = slc_keep(r2_1, d2_6);
     if (!(!(_e7))) {
-        local_8 = !((d2_6 > 0.0));
+        local_5 = !((d2_6 > 0.0));
     } else {
-        local_8 = true;
+        local_5 = true;
     }
-    bool _e16 = local_8;
+    bool _e16 = local_5;
     if (_e16) {
         return 0.0;
     }
     metal::float3 w_8 = v_6 / metal::float3(metal::sqrt(d2_6));
     float cos_x_1 = -(metal::dot(n, w_8));
     if (!((cos_x_1 <= 0.0))) {
-        local_9 = metal::dot(ng, w_8) >= 0.0;
+        local_6 = metal::dot(ng, w_8) >= 0.0;
     } else {
-        local_9 = true;
+        local_6 = true;
     }
-    bool _e32 = local_9;
+    bool _e32 = local_6;
     if (_e32) {
         return 0.0;
     }
@@ -439,17 +442,17 @@ uint naga_mod(uint lhs, uint rhs) {
 float slot_target(
     metal::float3 c_3,
     uint slot,
-    uint k_1
+    uint k_2
 ) {
-    if (k_1 < 3u) {
+    if (k_2 < 3u) {
         float _e5 = resample_target(c_3);
         return _e5;
     }
-    uint j_4 = naga_mod(slot, 3u);
-    if (j_4 == 0u) {
+    uint j_5 = naga_mod(slot, 3u);
+    if (j_5 == 0u) {
         return c_3.x;
     }
-    if (j_4 == 1u) {
+    if (j_5 == 1u) {
         return c_3.y;
     }
     return c_3.z;
@@ -461,20 +464,20 @@ uint naga_div(uint lhs, uint rhs) {
 
 metal::float3 slot_share(
     uint slot_1,
-    uint k_2
+    uint k_3
 ) {
-    if (k_2 < 3u) {
-        float _e4 = to_f32_(k_2);
+    if (k_3 < 3u) {
+        float _e4 = to_f32_(k_3);
         float w_9 = 1.0 / _e4;
         return metal::float3(w_9, w_9, w_9);
     }
-    uint j_5 = naga_mod(slot_1, 3u);
-    float _e15 = to_f32_(naga_div((k_2 + 2u) - j_5, 3u));
+    uint j_6 = naga_mod(slot_1, 3u);
+    float _e15 = to_f32_(naga_div((k_3 + 2u) - j_6, 3u));
     float w_10 = 1.0 / _e15;
-    if (j_5 == 0u) {
+    if (j_6 == 0u) {
         return metal::float3(w_10, 0.0, 0.0);
     }
-    if (j_5 == 1u) {
+    if (j_6 == 1u) {
         return metal::float3(0.0, w_10, 0.0);
     }
     return metal::float3(0.0, 0.0, w_10);
@@ -551,13 +554,13 @@ float smith_visibility(
     float n_v,
     float alpha_2
 ) {
-    bool local_10 = {};
+    bool local_7 = {};
     if (!((n_l <= 0.0))) {
-        local_10 = n_v <= 0.0;
+        local_7 = n_v <= 0.0;
     } else {
-        local_10 = true;
+        local_7 = true;
     }
-    bool _e11 = local_10;
+    bool _e11 = local_7;
     if (_e11) {
         return 0.0;
     }
@@ -593,20 +596,20 @@ bool has_specular(
     metal::float3 f0_d_1,
     float f90_d_1
 ) {
-    bool local_11 = {};
-    bool local_12 = {};
+    bool local_8 = {};
+    bool local_9 = {};
     if (!((metallic_1 > 0.0))) {
-        local_11 = f90_d_1 > 0.0;
+        local_8 = f90_d_1 > 0.0;
     } else {
-        local_11 = true;
+        local_8 = true;
     }
-    bool _e11 = local_11;
+    bool _e11 = local_8;
     if (!(_e11)) {
-        local_12 = metal::max(metal::max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0.0;
+        local_9 = metal::max(metal::max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0.0;
     } else {
-        local_12 = true;
+        local_9 = true;
     }
-    bool _e23 = local_12;
+    bool _e23 = local_9;
     return _e23;
 }
 
@@ -624,16 +627,16 @@ metal::float4 receiver_lobe(
     float alpha_3,
     float n_v_1
 ) {
-    bool local_13 = {};
+    bool local_10 = {};
     metal::float3 _e10 = fresnel_schlick(f0_d_2, f90_d_2, n_v_1);
     float _e16 = channel_mean(((metal::float3(1.0, 1.0, 1.0) - _e10) * base_1) * (1.0 - metallic_2));
     if (!((n_v_1 <= 0.0))) {
         bool _e22 = has_specular(metallic_2, f0_d_2, f90_d_2);
-        local_13 = !(_e22);
+        local_10 = !(_e22);
     } else {
-        local_13 = true;
+        local_10 = true;
     }
-    bool _e25 = local_13;
+    bool _e25 = local_10;
     if (_e25) {
         return metal::float4(_e16, 0.0, alpha_3, n_v_1);
     }
@@ -748,22 +751,22 @@ float cone_cos_of(
     float a_3,
     metal::float3 d
 ) {
-    bool local_14 = {};
-    bool local_15 = {};
+    bool local_11 = {};
+    bool local_12 = {};
     float vd = metal::dot(v_2, d);
     float h2_1 = d2_4 - (a_3 * a_3);
     if (!((h2_1 <= 0.0))) {
         if (vd >= 0.0) {
-            local_15 = (vd * vd) >= h2_1;
+            local_12 = (vd * vd) >= h2_1;
         } else {
-            local_15 = false;
+            local_12 = false;
         }
-        bool _e19 = local_15;
-        local_14 = _e19;
+        bool _e19 = local_12;
+        local_11 = _e19;
     } else {
-        local_14 = true;
+        local_11 = true;
     }
-    bool _e21 = local_14;
+    bool _e21 = local_11;
     if (_e21) {
         return 1.0;
     }
@@ -850,15 +853,15 @@ metal::float3 triangle_normal(
     metal::float3 b_4,
     metal::float3 c_5
 ) {
-    bool local_16 = {};
+    bool local_13 = {};
     metal::float3 n_13 = metal::cross(b_4 - a_4, c_5 - a_4);
     float l2_ = metal::dot(n_13, n_13);
     if (!(!((l2_ > 0.0)))) {
-        local_16 = !((l2_ < 300000000000000000000000000000000000000.0));
+        local_13 = !((l2_ < 300000000000000000000000000000000000000.0));
     } else {
-        local_16 = true;
+        local_13 = true;
     }
-    bool _e17 = local_16;
+    bool _e17 = local_13;
     if (_e17) {
         return metal::float3(0.0, 0.0, 0.0);
     }
@@ -874,9 +877,9 @@ float ray_triangle(
     float t_min,
     float t_max_1
 ) {
-    bool local_17 = {};
-    bool local_18 = {};
-    bool local_19 = {};
+    bool local_14 = {};
+    bool local_15 = {};
+    bool local_16 = {};
     metal::float3 e1_ = b_5 - a_5;
     metal::float3 e2_ = c_6 - a_5;
     metal::float3 p_5 = metal::cross(d_3, e2_);
@@ -888,32 +891,32 @@ float ray_triangle(
     metal::float3 s_6 = o_1 - a_5;
     float u_3 = metal::dot(s_6, p_5) * inv;
     if (!((u_3 < 0.0))) {
-        local_17 = u_3 > 1.0;
+        local_14 = u_3 > 1.0;
     } else {
-        local_17 = true;
+        local_14 = true;
     }
-    bool _e28 = local_17;
+    bool _e28 = local_14;
     if (_e28) {
         return -1.0;
     }
     metal::float3 q_5 = metal::cross(s_6, e1_);
     float v_8 = metal::dot(d_3, q_5) * inv;
     if (!((v_8 < 0.0))) {
-        local_18 = (u_3 + v_8) > 1.0;
+        local_15 = (u_3 + v_8) > 1.0;
     } else {
-        local_18 = true;
+        local_15 = true;
     }
-    bool _e42 = local_18;
+    bool _e42 = local_15;
     if (_e42) {
         return -1.0;
     }
     float t_3 = metal::dot(e2_, q_5) * inv;
     if (t_3 > t_min) {
-        local_19 = t_3 < t_max_1;
+        local_16 = t_3 < t_max_1;
     } else {
-        local_19 = false;
+        local_16 = false;
     }
-    bool _e51 = local_19;
+    bool _e51 = local_16;
     if (_e51) {
         return t_3;
     }
@@ -945,13 +948,13 @@ bool history_matches(
     float oh,
     float d_4
 ) {
-    bool local_20 = {};
+    bool local_17 = {};
     if (metal::abs(metal::dot(nh, p_3) - oh) <= (TEMPORAL_DEPTH_TOLERANCE * d_4)) {
-        local_20 = metal::dot(n_4, nh) >= TEMPORAL_NORMAL_COS;
+        local_17 = metal::dot(n_4, nh) >= TEMPORAL_NORMAL_COS;
     } else {
-        local_20 = false;
+        local_17 = false;
     }
-    bool _e17 = local_20;
+    bool _e17 = local_17;
     return _e17;
 }
 
@@ -1141,19 +1144,19 @@ bool bsh_reaches(
     metal::float3 r_7,
     metal::float4 rl_3
 ) {
-    bool local_21 = {};
-    bool local_22 = {};
+    bool local_18 = {};
+    bool local_19 = {};
     bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_4);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
         bool _e20 = sphere_contains_point(node_3.center, node_3.radius * (rl_3.w * 1.0001), x_4);
-        local_21 = !(_e20);
+        local_18 = !(_e20);
     } else {
-        local_21 = true;
+        local_18 = true;
     }
-    bool _e23 = local_21;
+    bool _e23 = local_18;
     if (_e23) {
         return false;
     }
@@ -1174,11 +1177,11 @@ bool bsh_reaches(
     float s_c = _e50 * 1.001;
     float reach = node_3.extent + (metal::sqrt(s_c) * _e25);
     if (d2_7 <= ((node_3.radius * node_3.radius) * s_c)) {
-        local_22 = d2_7 <= (reach * reach);
+        local_19 = d2_7 <= (reach * reach);
     } else {
-        local_22 = false;
+        local_19 = false;
     }
-    bool _e67 = local_22;
+    bool _e67 = local_19;
     return _e67;
 }
 
@@ -1237,8 +1240,8 @@ Connection connect_record(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Connection c_7 = {};
-    bool local_23 = {};
-    bool local_24 = {};
+    bool local_20 = {};
+    bool local_21 = {};
     c_7.e = metal::float3(0.0);
     metal::float3 _e16 = light_point(l_3, u1_3, u2_3);
     c_7.y = _e16;
@@ -1250,16 +1253,16 @@ Connection connect_record(
         if (trace_1) {
             metal::float3 _e33 = c_7.y;
             bool _e34 = occluded(x_6 + (ng_1 * eps), _e33, geo_nodes, geo_tris, _buffer_sizes);
-            local_24 = _e34;
+            local_21 = _e34;
         } else {
-            local_24 = false;
+            local_21 = false;
         }
-        bool _e36 = local_24;
-        local_23 = _e36;
+        bool _e36 = local_21;
+        local_20 = _e36;
     } else {
-        local_23 = true;
+        local_20 = true;
     }
-    bool _e38 = local_23;
+    bool _e38 = local_20;
     if (_e38) {
         Connection _e39 = c_7;
         return _e39;
@@ -1390,6 +1393,83 @@ Shaded scaled(
     return Shaded {s_2.e * w_7, s_2.diffuse * w_7, s_2.specular * w_7};
 }
 
+type_17 first_holders(
+    type_20 keys_1,
+    type_21 held_1
+) {
+    type_17 first = {};
+    uint k_4 = 0u;
+    uint j_2 = {};
+    bool local_22 = {};
+    bool local_23 = {};
+    uint2 loop_bound_3 = uint2(4294967295u);
+    bool loop_init_1 = true;
+    while(true) {
+        if (metal::all(loop_bound_3 == uint2(0u))) { break; }
+        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+        if (!loop_init_1) {
+            uint _e45 = k_4;
+            k_4 = _e45 + 1u;
+        }
+        loop_init_1 = false;
+        uint _e5 = k_4;
+        if (_e5 < K) {
+        } else {
+            break;
+        }
+        {
+            uint _e8 = k_4;
+            uint _e11 = k_4;
+            uint _e12 = k_4;
+            first.inner[_e8] = held_1.inner[_e12] ? _e11 : K;
+            j_2 = 0u;
+            uint2 loop_bound_4 = uint2(4294967295u);
+            bool loop_init_2 = true;
+            while(true) {
+                if (metal::all(loop_bound_4 == uint2(0u))) { break; }
+                loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+                if (!loop_init_2) {
+                    uint _e42 = j_2;
+                    j_2 = _e42 + 1u;
+                }
+                loop_init_2 = false;
+                uint _e17 = j_2;
+                uint _e18 = k_4;
+                if (_e17 < _e18) {
+                    uint _e22 = k_4;
+                    local_22 = held_1.inner[_e22];
+                } else {
+                    local_22 = false;
+                }
+                bool _e25 = local_22;
+                if (_e25) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e26 = j_2;
+                    if (held_1.inner[_e26]) {
+                        uint _e30 = j_2;
+                        uint _e32 = k_4;
+                        local_23 = metal::all(keys_1.inner[_e30] == keys_1.inner[_e32]);
+                    } else {
+                        local_23 = false;
+                    }
+                    bool _e37 = local_23;
+                    if (_e37) {
+                        uint _e38 = k_4;
+                        uint _e40 = j_2;
+                        first.inner[_e38] = _e40;
+                        break;
+                    }
+                }
+            }
+        }
+    }
+    type_17 _e47 = first;
+    return _e47;
+}
+
 metal::float3 output_of(
     Shaded s_3
 ) {
@@ -1435,32 +1515,6 @@ Material reuse_material(
     return _e13;
 }
 
-bool same_pick(
-    uint la,
-    uint ca,
-    uint lb,
-    uint cb,
-    device type_12 const& lights,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    bool local_25 = {};
-    bool local_26 = {};
-    if (la == lb) {
-        if (!((ca == cb))) {
-            uint _e14 = lights[la].kind;
-            local_26 = _e14 != LIGHT_TRIANGLE;
-        } else {
-            local_26 = true;
-        }
-        bool _e18 = local_26;
-        local_25 = _e18;
-    } else {
-        local_25 = false;
-    }
-    bool _e20 = local_25;
-    return _e20;
-}
-
 metal::int2 naga_f2i32(metal::float2 value) {
     return static_cast<metal::int2>(metal::clamp(value, -2147483600.0, 2147483500.0));
 }
@@ -1470,7 +1524,7 @@ uint reuse_domains(
     metal::float3 n_11,
     float d_6,
     uint h_1,
-    thread type_19& doms_1,
+    thread type_22& doms_1,
     constant ViewParams& view,
     constant ReuseParams& reuse,
     device type_16 const& reuse_prev,
@@ -1478,16 +1532,16 @@ uint reuse_domains(
 ) {
     uint nd = 0u;
     uint hr = {};
-    uint j_2 = 0u;
+    uint j_3 = 0u;
     metal::float2 p_4 = {};
+    bool local_24 = {};
+    bool local_25 = {};
+    bool local_26 = {};
+    bool seen = {};
+    uint k_5 = {};
     bool local_27 = {};
     bool local_28 = {};
     bool local_29 = {};
-    bool seen = {};
-    uint k_3 = {};
-    bool local_30 = {};
-    bool local_31 = {};
-    bool local_32 = {};
     uint _e9 = reuse.has_history;
     if (_e9 != 1u) {
         return 0u;
@@ -1503,24 +1557,24 @@ uint reuse_domains(
         return 0u;
     }
     hr = h_1;
-    uint2 loop_bound_3 = uint2(4294967295u);
-    bool loop_init_1 = true;
+    uint2 loop_bound_5 = uint2(4294967295u);
+    bool loop_init_3 = true;
     while(true) {
-        if (metal::all(loop_bound_3 == uint2(0u))) { break; }
-        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-        if (!loop_init_1) {
-            uint _e175 = j_2;
-            j_2 = _e175 + 1u;
+        if (metal::all(loop_bound_5 == uint2(0u))) { break; }
+        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+        if (!loop_init_3) {
+            uint _e175 = j_3;
+            j_3 = _e175 + 1u;
         }
-        loop_init_1 = false;
-        uint _e41 = j_2;
+        loop_init_3 = false;
+        uint _e41 = j_3;
         if (_e41 < DOMAINS) {
         } else {
             break;
         }
         {
             p_4 = _e33.xy;
-            uint _e46 = j_2;
+            uint _e46 = j_3;
             if (_e46 > 0u) {
                 uint _e49 = hr;
                 uint _e50 = pcg_hash(_e49);
@@ -1540,43 +1594,43 @@ uint reuse_domains(
             metal::float2 _e63 = p_4;
             metal::int2 t_5 = naga_f2i32(metal::rint(_e63));
             if (!((t_5.x < 0))) {
-                local_27 = t_5.y < 0;
+                local_24 = t_5.y < 0;
             } else {
-                local_27 = true;
+                local_24 = true;
             }
-            bool _e76 = local_27;
+            bool _e76 = local_24;
             if (!(_e76)) {
                 uint _e83 = view.width;
-                local_28 = t_5.x >= static_cast<int>(_e83);
+                local_25 = t_5.x >= static_cast<int>(_e83);
             } else {
-                local_28 = true;
+                local_25 = true;
             }
-            bool _e87 = local_28;
+            bool _e87 = local_25;
             if (!(_e87)) {
                 uint _e94 = view.height;
-                local_29 = t_5.y >= static_cast<int>(_e94);
+                local_26 = t_5.y >= static_cast<int>(_e94);
             } else {
-                local_29 = true;
+                local_26 = true;
             }
-            bool _e98 = local_29;
+            bool _e98 = local_26;
             if (_e98) {
                 continue;
             }
             uint _e103 = view.width;
             uint pixel = (static_cast<uint>(t_5.y) * _e103) + static_cast<uint>(t_5.x);
             seen = false;
-            k_3 = 0u;
-            uint2 loop_bound_4 = uint2(4294967295u);
-            bool loop_init_2 = true;
+            k_5 = 0u;
+            uint2 loop_bound_6 = uint2(4294967295u);
+            bool loop_init_4 = true;
             while(true) {
-                if (metal::all(loop_bound_4 == uint2(0u))) { break; }
-                loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
-                if (!loop_init_2) {
-                    uint _e127 = k_3;
-                    k_3 = _e127 + 1u;
+                if (metal::all(loop_bound_6 == uint2(0u))) { break; }
+                loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+                if (!loop_init_4) {
+                    uint _e127 = k_5;
+                    k_5 = _e127 + 1u;
                 }
-                loop_init_2 = false;
-                uint _e112 = k_3;
+                loop_init_4 = false;
+                uint _e112 = k_5;
                 uint _e113 = nd;
                 if (_e112 < _e113) {
                 } else {
@@ -1585,31 +1639,31 @@ uint reuse_domains(
                 {
                     bool _e115 = seen;
                     if (!(_e115)) {
-                        uint _e119 = k_3;
+                        uint _e119 = k_5;
                         uint _e122 = doms_1.inner[_e119].pixel;
-                        local_30 = _e122 == pixel;
+                        local_27 = _e122 == pixel;
                     } else {
-                        local_30 = true;
+                        local_27 = true;
                     }
-                    bool _e125 = local_30;
+                    bool _e125 = local_27;
                     seen = _e125;
                 }
             }
             ReuseSurface s_7 = reuse_prev[pixel].surface;
             bool _e133 = seen;
             if (!(_e133)) {
-                local_31 = !((s_7.m > 0.0));
+                local_28 = !((s_7.m > 0.0));
             } else {
-                local_31 = true;
+                local_28 = true;
             }
-            bool _e142 = local_31;
+            bool _e142 = local_28;
             if (!(_e142)) {
                 bool _e150 = history_matches(n_11, s_7.n, x_13, metal::dot(s_7.n, s_7.x), d_6);
-                local_32 = !(_e150);
+                local_29 = !(_e150);
             } else {
-                local_32 = true;
+                local_29 = true;
             }
-            bool _e153 = local_32;
+            bool _e153 = local_29;
             if (_e153) {
                 continue;
             }
@@ -1617,7 +1671,7 @@ uint reuse_domains(
             metal::float3 _e160 = reuse.prev_eye;
             Material _e161 = reuse_material(s_7, _e160);
             float _e165 = reuse.max_confidence;
-            uint _e167 = j_2;
+            uint _e167 = j_3;
             doms_1.inner[_e154] = Domain {pixel, {}, s_7.x, s_7.n, _e161, metal::min(s_7.m, _e165), _e167 == 0u};
             uint _e171 = nd;
             nd = _e171 + 1u;
@@ -1637,7 +1691,7 @@ ReuseSlot gris_combine(
     metal::float3 x_14,
     metal::float3 n_12,
     Material m_5,
-    thread type_19& doms_2,
+    thread type_22& doms_2,
     thread uint& hs_1,
     device type_7 const& geo_nodes,
     device type_8 const& geo_tris,
@@ -1649,36 +1703,36 @@ ReuseSlot gris_combine(
     float w_sum_2 = 0.0;
     ReuseSlot out = ReuseSlot {0u, 0u, 0.0};
     float out_target = 0.0;
-    uint j_3 = {};
+    uint j_4 = {};
     ReuseSlot s_5 = {};
-    bool local_33 = {};
+    bool local_30 = {};
     float w_in = {};
-    bool local_34 = {};
+    bool local_31 = {};
     float own_1 = {};
     float all_1 = {};
-    uint k_4 = {};
-    bool local_35 = {};
-    j_3 = k0_;
-    uint2 loop_bound_5 = uint2(4294967295u);
-    bool loop_init_3 = true;
+    uint k_6 = {};
+    bool local_32 = {};
+    j_4 = k0_;
+    uint2 loop_bound_7 = uint2(4294967295u);
+    bool loop_init_5 = true;
     while(true) {
-        if (metal::all(loop_bound_5 == uint2(0u))) { break; }
-        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
-        if (!loop_init_3) {
-            uint _e137 = j_3;
-            j_3 = _e137 + 1u;
+        if (metal::all(loop_bound_7 == uint2(0u))) { break; }
+        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+        if (!loop_init_5) {
+            uint _e137 = j_4;
+            j_4 = _e137 + 1u;
         }
-        loop_init_3 = false;
-        uint _e21 = j_3;
+        loop_init_5 = false;
+        uint _e21 = j_4;
         if (_e21 <= k1_) {
         } else {
             break;
         }
         {
             s_5 = cur;
-            uint _e24 = j_3;
+            uint _e24 = j_4;
             if (_e24 > k0_) {
-                uint _e27 = j_3;
+                uint _e27 = j_4;
                 uint _e32 = doms_2.inner[_e27 - 1u].pixel;
                 ReuseSlot _e36 = reuse_prev[_e32].slots.inner[q_4];
                 s_5 = _e36;
@@ -1686,11 +1740,11 @@ ReuseSlot gris_combine(
             float _e38 = s_5.w;
             if (!(!((_e38 > 0.0)))) {
                 uint _e46 = s_5.light;
-                local_33 = _e46 >= (1 + (_buffer_sizes.size8 - 0 - 64) / 64);
+                local_30 = _e46 >= (1 + (_buffer_sizes.size8 - 0 - 64) / 64);
             } else {
-                local_33 = true;
+                local_30 = true;
             }
-            bool _e51 = local_33;
+            bool _e51 = local_30;
             if (_e51) {
                 continue;
             }
@@ -1703,13 +1757,13 @@ ReuseSlot gris_combine(
             }
             float _e64 = s_5.w;
             w_in = _e64;
-            uint _e66 = j_3;
+            uint _e66 = j_4;
             if (_e66 == k0_) {
-                local_34 = cur_ris;
+                local_31 = cur_ris;
             } else {
-                local_34 = false;
+                local_31 = false;
             }
-            bool _e71 = local_34;
+            bool _e71 = local_31;
             if (_e71) {
                 float _e73 = s_5.w;
                 w_in = _e73 / _e59;
@@ -1717,40 +1771,40 @@ ReuseSlot gris_combine(
             own_1 = cur_c * _e59;
             float _e77 = own_1;
             all_1 = _e77;
-            k_4 = k0_;
-            uint2 loop_bound_6 = uint2(4294967295u);
-            bool loop_init_4 = true;
+            k_6 = k0_;
+            uint2 loop_bound_8 = uint2(4294967295u);
+            bool loop_init_6 = true;
             while(true) {
-                if (metal::all(loop_bound_6 == uint2(0u))) { break; }
-                loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-                if (!loop_init_4) {
-                    uint _e115 = k_4;
-                    k_4 = _e115 + 1u;
+                if (metal::all(loop_bound_8 == uint2(0u))) { break; }
+                loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
+                if (!loop_init_6) {
+                    uint _e115 = k_6;
+                    k_6 = _e115 + 1u;
                 }
-                loop_init_4 = false;
-                uint _e80 = k_4;
+                loop_init_6 = false;
+                uint _e80 = k_6;
                 if (_e80 < k1_) {
                 } else {
                     break;
                 }
                 {
-                    uint _e82 = k_4;
+                    uint _e82 = k_6;
                     float _e85 = doms_2.inner[_e82].c;
                     uint _e88 = s_5.light;
                     GpuLight _e90 = lights_prev[_e88];
                     uint _e92 = s_5.u;
-                    uint _e93 = k_4;
+                    uint _e93 = k_6;
                     metal::float3 _e96 = doms_2.inner[_e93].x;
-                    uint _e97 = k_4;
+                    uint _e97 = k_6;
                     metal::float3 _e100 = doms_2.inner[_e97].n;
-                    uint _e101 = k_4;
+                    uint _e101 = k_6;
                     Material _e104 = doms_2.inner[_e101].m;
                     float _e105 = reuse_target(q_4, _e90, _e92, _e96, _e100, _e104, geo_nodes, geo_tris, _buffer_sizes);
                     float t_6 = _e85 * _e105;
                     float _e107 = all_1;
                     all_1 = _e107 + t_6;
-                    uint _e109 = k_4;
-                    uint _e112 = j_3;
+                    uint _e109 = k_6;
+                    uint _e112 = j_4;
                     if ((_e109 + 1u) == _e112) {
                         own_1 = t_6;
                     }
@@ -1770,11 +1824,11 @@ ReuseSlot gris_combine(
                 uint _e130 = hs_1;
                 float _e131 = xi_from_bits(_e130);
                 bool _e132 = weighted_replace(_e120, _e129, _e131);
-                local_35 = _e132;
+                local_32 = _e132;
             } else {
-                local_35 = false;
+                local_32 = false;
             }
-            bool _e134 = local_35;
+            bool _e134 = local_32;
             if (_e134) {
                 ReuseSlot _e135 = s_5;
                 out = _e135;
@@ -1821,8 +1875,8 @@ kernel void main_(
     uint h = {};
     Shaded t = Shaded {metal::float3(0.0), metal::float3(0.0), metal::float3(0.0)};
     type_17 slot_light = {};
-    type_23 slot_u = {};
-    type_24 slot_p = {};
+    type_26 slot_u = {};
+    type_27 slot_p = {};
     type_17 slot_cells = {};
     metal::float3 total = metal::float3(0.0);
     uint count = 0u;
@@ -1830,23 +1884,22 @@ kernel void main_(
     uint b = {};
     uint q = {};
     bool local_2 = {};
-    type_19 doms = {};
+    type_22 doms = {};
     bool local_3 = {};
     uint hs = {};
     type_15 kept = {};
     type_15 fin = {};
     uint q_1 = 0u;
-    type_25 visible = {};
+    type_20 keys = {};
+    type_21 held = {};
     uint k = 0u;
+    type_21 visible = {};
+    uint k_1 = 0u;
     metal::float3 w = {};
-    bool first = {};
     uint j = {};
-    bool local_4 = {};
-    bool local_5 = {};
-    bool local_6 = {};
     uint j_1 = {};
     uint q_2 = 0u;
-    bool local_7 = {};
+    bool local_4 = {};
     uint _e4 = view.width;
     if (!((gid.x >= _e4))) {
         uint _e12 = view.height;
@@ -1909,19 +1962,19 @@ kernel void main_(
     metal::float3 _e146 = r;
     uint _e147 = bsh_next_leaf_lobe(BSH, _e145, x_17, _e146, _e99, bsh_nodes, _buffer_sizes);
     b = _e147;
-    uint2 loop_bound_7 = uint2(4294967295u);
-    bool loop_init_5 = true;
+    uint2 loop_bound_9 = uint2(4294967295u);
+    bool loop_init_7 = true;
     while(true) {
-        if (metal::all(loop_bound_7 == uint2(0u))) { break; }
-        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
-        if (!loop_init_5) {
+        if (metal::all(loop_bound_9 == uint2(0u))) { break; }
+        loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
+        if (!loop_init_7) {
             uint _e220 = b;
             uint _e223 = bsh_nodes[_e220].next;
             metal::float3 _e224 = r;
             uint _e225 = bsh_next_leaf_lobe(BSH, _e223, x_17, _e224, _e99, bsh_nodes, _buffer_sizes);
             b = _e225;
         }
-        loop_init_5 = false;
+        loop_init_7 = false;
         uint _e149 = b;
         if (_e149 != BSH_NONE) {
         } else {
@@ -1954,16 +2007,16 @@ kernel void main_(
                 metal::float3 _e182 = total;
                 total = _e182 + _e178;
                 q = 0u;
-                uint2 loop_bound_8 = uint2(4294967295u);
-                bool loop_init_6 = true;
+                uint2 loop_bound_10 = uint2(4294967295u);
+                bool loop_init_8 = true;
                 while(true) {
-                    if (metal::all(loop_bound_8 == uint2(0u))) { break; }
-                    loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
-                    if (!loop_init_6) {
+                    if (metal::all(loop_bound_10 == uint2(0u))) { break; }
+                    loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
+                    if (!loop_init_8) {
                         uint _e216 = q;
                         q = _e216 + 1u;
                     }
-                    loop_init_6 = false;
+                    loop_init_8 = false;
                     uint _e186 = q;
                     if (_e186 < K) {
                     } else {
@@ -2019,16 +2072,16 @@ kernel void main_(
     float confidence = 1.0 + (own_history ? _e256 : 0.0);
     uint _e262 = reuse_stream(_e122, 1u);
     hs = _e262;
-    uint2 loop_bound_9 = uint2(4294967295u);
-    bool loop_init_7 = true;
+    uint2 loop_bound_11 = uint2(4294967295u);
+    bool loop_init_9 = true;
     while(true) {
-        if (metal::all(loop_bound_9 == uint2(0u))) { break; }
-        loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
-        if (!loop_init_7) {
+        if (metal::all(loop_bound_11 == uint2(0u))) { break; }
+        loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
+        if (!loop_init_9) {
             uint _e313 = q_1;
             q_1 = _e313 + 1u;
         }
-        loop_init_7 = false;
+        loop_init_9 = false;
         uint _e268 = q_1;
         if (_e268 < K) {
         } else {
@@ -2064,191 +2117,181 @@ kernel void main_(
             }
         }
     }
-    uint2 loop_bound_10 = uint2(4294967295u);
-    bool loop_init_8 = true;
+    uint2 loop_bound_12 = uint2(4294967295u);
+    bool loop_init_10 = true;
     while(true) {
-        if (metal::all(loop_bound_10 == uint2(0u))) { break; }
-        loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
-        if (!loop_init_8) {
-            uint _e460 = k;
-            k = _e460 + 1u;
+        if (metal::all(loop_bound_12 == uint2(0u))) { break; }
+        loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
+        if (!loop_init_10) {
+            uint _e354 = k;
+            k = _e354 + 1u;
         }
-        loop_init_8 = false;
-        uint _e318 = k;
-        if (_e318 < K) {
+        loop_init_10 = false;
+        uint _e319 = k;
+        if (_e319 < K) {
         } else {
             break;
         }
         {
-            uint _e321 = k;
-            float _e324 = fin.inner[_e321].w;
-            uint _e325 = k;
-            metal::float3 _e327 = slot_share(_e325, K);
-            w = _e324 * _e327;
-            uint _e330 = k;
-            float _e333 = fin.inner[_e330].w;
-            first = _e333 > 0.0;
-            j = 0u;
-            uint2 loop_bound_11 = uint2(4294967295u);
-            bool loop_init_9 = true;
-            while(true) {
-                if (metal::all(loop_bound_11 == uint2(0u))) { break; }
-                loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
-                if (!loop_init_9) {
-                    uint _e395 = j;
-                    j = _e395 + 1u;
-                }
-                loop_init_9 = false;
-                uint _e339 = j;
-                if (_e339 < K) {
-                } else {
-                    break;
-                }
-                {
-                    uint _e342 = j;
-                    uint _e343 = k;
-                    if (_e342 != _e343) {
-                        uint _e347 = j;
-                        float _e350 = fin.inner[_e347].w;
-                        local_4 = _e350 > 0.0;
-                    } else {
-                        local_4 = false;
-                    }
-                    bool _e354 = local_4;
-                    if (_e354) {
-                        uint _e357 = j;
-                        uint _e360 = fin.inner[_e357].light;
-                        uint _e361 = j;
-                        uint _e364 = fin.inner[_e361].u;
-                        uint _e365 = k;
-                        uint _e368 = fin.inner[_e365].light;
-                        uint _e369 = k;
-                        uint _e372 = fin.inner[_e369].u;
-                        bool _e373 = same_pick(_e360, _e364, _e368, _e372, lights, _buffer_sizes);
-                        local_5 = _e373;
-                    } else {
-                        local_5 = false;
-                    }
-                    bool _e375 = local_5;
-                    if (_e375) {
-                        bool _e376 = first;
-                        if (_e376) {
-                            uint _e379 = j;
-                            uint _e380 = k;
-                            local_6 = _e379 > _e380;
-                        } else {
-                            local_6 = false;
-                        }
-                        bool _e383 = local_6;
-                        first = _e383;
-                        metal::float3 _e384 = w;
-                        uint _e385 = j;
-                        float _e388 = fin.inner[_e385].w;
-                        uint _e389 = j;
-                        metal::float3 _e391 = slot_share(_e389, K);
-                        w = _e384 + (_e388 * _e391);
-                    }
-                }
-            }
-            bool _e397 = first;
-            if (_e397) {
-                uint _e399 = k;
-                uint _e402 = fin.inner[_e399].light;
-                GpuLight _e404 = lights[_e402];
-                uint _e408 = k;
-                uint _e411 = fin.inner[_e408].u;
-                float _e412 = grid_coordinate(_e411);
-                uint _e413 = k;
-                uint _e416 = fin.inner[_e413].u;
-                float _e419 = grid_coordinate(_e416 << 16u);
-                Connection _e421 = connect_record(_e404, x_17, n_15, n_15, UNRANGED, UNRANGED, 1.0, _e412, _e419, eps_3, true, geo_nodes, geo_tris, _buffer_sizes);
-                Material _e422 = m;
-                Shaded _e423 = shade_connection(_e421, x_17, n_15, _e422);
-                Shaded _e424 = t;
-                metal::float3 _e425 = w;
-                Shaded _e426 = scaled(_e423, _e425);
-                Shaded _e427 = add(_e424, _e426);
-                t = _e427;
-                uint _e428 = k;
-                j_1 = _e428;
-                uint2 loop_bound_12 = uint2(4294967295u);
-                bool loop_init_10 = true;
-                while(true) {
-                    if (metal::all(loop_bound_12 == uint2(0u))) { break; }
-                    loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
-                    if (!loop_init_10) {
-                        uint _e457 = j_1;
-                        j_1 = _e457 + 1u;
-                    }
-                    loop_init_10 = false;
-                    uint _e430 = j_1;
-                    if (_e430 < K) {
-                    } else {
-                        break;
-                    }
-                    {
-                        uint _e433 = j_1;
-                        uint _e436 = fin.inner[_e433].light;
-                        uint _e437 = j_1;
-                        uint _e440 = fin.inner[_e437].u;
-                        uint _e441 = k;
-                        uint _e444 = fin.inner[_e441].light;
-                        uint _e445 = k;
-                        uint _e448 = fin.inner[_e445].u;
-                        bool _e449 = same_pick(_e436, _e440, _e444, _e448, lights, _buffer_sizes);
-                        if (_e449) {
-                            uint _e450 = j_1;
-                            metal::float3 _e452 = output_of(_e423);
-                            float _e453 = resample_target(_e452);
-                            visible.inner[_e450] = _e453 > 0.0;
-                        }
-                    }
-                }
-            }
+            uint _e322 = k;
+            uint _e324 = k;
+            uint _e327 = fin.inner[_e324].light;
+            uint _e329 = k;
+            uint _e332 = fin.inner[_e329].u;
+            uint _e334 = k;
+            uint _e337 = fin.inner[_e334].light;
+            uint _e340 = lights[_e337].kind;
+            keys.inner[_e322] = metal::uint2(_e327, (_e340 == LIGHT_TRIANGLE) ? _e332 : 0u);
+            uint _e345 = k;
+            uint _e347 = k;
+            float _e350 = fin.inner[_e347].w;
+            held.inner[_e345] = _e350 > 0.0;
         }
     }
+    type_20 _e356 = keys;
+    type_21 _e357 = held;
+    type_17 _e358 = first_holders(_e356, _e357);
     uint2 loop_bound_13 = uint2(4294967295u);
     bool loop_init_11 = true;
     while(true) {
         if (metal::all(loop_bound_13 == uint2(0u))) { break; }
         loop_bound_13 -= uint2(loop_bound_13.y == 0u, 1u);
         if (!loop_init_11) {
-            uint _e501 = q_2;
-            q_2 = _e501 + 1u;
+            uint _e443 = k_1;
+            k_1 = _e443 + 1u;
         }
         loop_init_11 = false;
-        uint _e464 = q_2;
-        if (_e464 < K) {
+        uint _e362 = k_1;
+        if (_e362 < K) {
         } else {
             break;
         }
         {
-            uint _e469 = reuse.visibility;
-            if (!((_e469 == 0u))) {
-                uint _e475 = q_2;
-                bool _e477 = visible.inner[_e475];
-                local_7 = _e477;
-            } else {
-                local_7 = true;
+            uint _e365 = k_1;
+            uint _e367 = k_1;
+            if (_e358.inner[_e365] != _e367) {
+                continue;
             }
-            bool keep = local_7;
-            uint _e483 = q_2;
-            uint _e485 = q_2;
-            uint _e488 = kept.inner[_e485].light;
-            uint _e489 = q_2;
-            uint _e492 = kept.inner[_e489].u;
-            uint _e493 = q_2;
-            float _e496 = kept.inner[_e493].w;
-            reuse_next[pixel_1].slots.inner[_e483] = ReuseSlot {_e488, _e492, keep ? _e496 : 0.0};
+            w = metal::float3(0.0);
+            uint _e372 = k_1;
+            j = _e372;
+            uint2 loop_bound_14 = uint2(4294967295u);
+            bool loop_init_12 = true;
+            while(true) {
+                if (metal::all(loop_bound_14 == uint2(0u))) { break; }
+                loop_bound_14 -= uint2(loop_bound_14.y == 0u, 1u);
+                if (!loop_init_12) {
+                    uint _e392 = j;
+                    j = _e392 + 1u;
+                }
+                loop_init_12 = false;
+                uint _e374 = j;
+                if (_e374 < K) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e377 = j;
+                    uint _e379 = k_1;
+                    if (_e358.inner[_e377] == _e379) {
+                        metal::float3 _e381 = w;
+                        uint _e382 = j;
+                        float _e385 = fin.inner[_e382].w;
+                        uint _e386 = j;
+                        metal::float3 _e388 = slot_share(_e386, K);
+                        w = _e381 + (_e385 * _e388);
+                    }
+                }
+            }
+            uint _e395 = k_1;
+            uint _e398 = fin.inner[_e395].light;
+            GpuLight _e400 = lights[_e398];
+            uint _e404 = k_1;
+            uint _e407 = fin.inner[_e404].u;
+            float _e408 = grid_coordinate(_e407);
+            uint _e409 = k_1;
+            uint _e412 = fin.inner[_e409].u;
+            float _e415 = grid_coordinate(_e412 << 16u);
+            Connection _e417 = connect_record(_e400, x_17, n_15, n_15, UNRANGED, UNRANGED, 1.0, _e408, _e415, eps_3, true, geo_nodes, geo_tris, _buffer_sizes);
+            Material _e418 = m;
+            Shaded _e419 = shade_connection(_e417, x_17, n_15, _e418);
+            Shaded _e420 = t;
+            metal::float3 _e421 = w;
+            Shaded _e422 = scaled(_e419, _e421);
+            Shaded _e423 = add(_e420, _e422);
+            t = _e423;
+            uint _e424 = k_1;
+            j_1 = _e424;
+            uint2 loop_bound_15 = uint2(4294967295u);
+            bool loop_init_13 = true;
+            while(true) {
+                if (metal::all(loop_bound_15 == uint2(0u))) { break; }
+                loop_bound_15 -= uint2(loop_bound_15.y == 0u, 1u);
+                if (!loop_init_13) {
+                    uint _e440 = j_1;
+                    j_1 = _e440 + 1u;
+                }
+                loop_init_13 = false;
+                uint _e426 = j_1;
+                if (_e426 < K) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e429 = j_1;
+                    uint _e431 = k_1;
+                    if (_e358.inner[_e429] == _e431) {
+                        uint _e433 = j_1;
+                        metal::float3 _e435 = output_of(_e419);
+                        float _e436 = resample_target(_e435);
+                        visible.inner[_e433] = _e436 > 0.0;
+                    }
+                }
+            }
         }
     }
-    Material _e506 = m;
-    float _e509 = reuse.max_confidence;
-    ReuseSurface _e511 = reuse_surface(x_17, n_15, _e506, metal::min(confidence, _e509));
-    reuse_next[pixel_1].surface = _e511;
-    metal::float3 _e514 = t.diffuse;
-    metal::float3 _e516 = t.specular;
-    uint _e518 = count;
-    out_tex.write(metal::float4(_e514 + _e516, static_cast<float>(_e518)), metal::uint2(texel_1));
+    uint2 loop_bound_16 = uint2(4294967295u);
+    bool loop_init_14 = true;
+    while(true) {
+        if (metal::all(loop_bound_16 == uint2(0u))) { break; }
+        loop_bound_16 -= uint2(loop_bound_16.y == 0u, 1u);
+        if (!loop_init_14) {
+            uint _e484 = q_2;
+            q_2 = _e484 + 1u;
+        }
+        loop_init_14 = false;
+        uint _e447 = q_2;
+        if (_e447 < K) {
+        } else {
+            break;
+        }
+        {
+            uint _e452 = reuse.visibility;
+            if (!((_e452 == 0u))) {
+                uint _e458 = q_2;
+                bool _e460 = visible.inner[_e458];
+                local_4 = _e460;
+            } else {
+                local_4 = true;
+            }
+            bool keep = local_4;
+            uint _e466 = q_2;
+            uint _e468 = q_2;
+            uint _e471 = kept.inner[_e468].light;
+            uint _e472 = q_2;
+            uint _e475 = kept.inner[_e472].u;
+            uint _e476 = q_2;
+            float _e479 = kept.inner[_e476].w;
+            reuse_next[pixel_1].slots.inner[_e466] = ReuseSlot {_e471, _e475, keep ? _e479 : 0.0};
+        }
+    }
+    Material _e489 = m;
+    float _e492 = reuse.max_confidence;
+    ReuseSurface _e494 = reuse_surface(x_17, n_15, _e489, metal::min(confidence, _e492));
+    reuse_next[pixel_1].surface = _e494;
+    metal::float3 _e497 = t.diffuse;
+    metal::float3 _e499 = t.specular;
+    uint _e501 = count;
+    out_tex.write(metal::float4(_e497 + _e499, static_cast<float>(_e501)), metal::uint2(texel_1));
     return;
 }

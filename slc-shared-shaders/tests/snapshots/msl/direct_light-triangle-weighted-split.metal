@@ -117,6 +117,12 @@ struct Material {
     float reflectance;
     char _pad6[12];
 };
+struct type_18 {
+    metal::uint2 inner[8];
+};
+struct type_19 {
+    bool inner[8];
+};
 constant uint LIGHT_POINT = 0u;
 constant uint LIGHT_SPOT = 1u;
 constant uint LIGHT_IES = 2u;
@@ -369,9 +375,9 @@ bool weighted_replace(
 float weighted_pick_weight(
     float w_sum_1,
     float w_3,
-    uint k_1
+    uint k_2
 ) {
-    float _e3 = to_f32_(k_1);
+    float _e3 = to_f32_(k_2);
     return w_sum_1 / (_e3 * w_3);
 }
 
@@ -1274,12 +1280,12 @@ Connection connect_traced(
     bool trace_2,
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
-    device type_11 const& lights_1,
+    device type_11 const& lights,
     device type_4 const& rt2_5,
     device type_4 const& r2_4,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuLight _e12 = lights_1[li];
+    GpuLight _e12 = lights[li];
     float _e15 = r2_4[li];
     float _e19 = rt2_5[li];
     Connection _e21 = connect_record(_e12, x_8, n_8, ng_2, s * _e15, s * _e19, w_res_1, u1_3, u2_3, eps_1, trace_2, geo_nodes, geo_tris, _buffer_sizes);
@@ -1456,14 +1462,14 @@ Shaded shade_pick_traced(
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
     constant ViewParams& view,
-    device type_11 const& lights_1,
+    device type_11 const& lights,
     device type_4 const& rt2_5,
     device type_4 const& r2_4,
     device type_13 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     float _e11 = light_range_scale(li_3, x_13, r_11, rl_8, light_cones, _buffer_sizes);
-    Connection _e12 = connect_traced(li_3, x_13, n_12, n_12, _e11, w_5, u1_4, u2_4, eps_2, trace_3, geo_nodes, geo_tris, lights_1, rt2_5, r2_4, _buffer_sizes);
+    Connection _e12 = connect_traced(li_3, x_13, n_12, n_12, _e11, w_5, u1_4, u2_4, eps_2, trace_3, geo_nodes, geo_tris, lights, rt2_5, r2_4, _buffer_sizes);
     Shaded _e13 = shade_connection(_e12, x_13, n_12, m_2, view);
     return _e13;
 }
@@ -1482,13 +1488,13 @@ Shaded shade_pick(
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
     constant ViewParams& view,
-    device type_11 const& lights_1,
+    device type_11 const& lights,
     device type_4 const& rt2_5,
     device type_4 const& r2_4,
     device type_13 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Shaded _e11 = shade_pick_traced(li_4, x_14, n_13, r_12, rl_9, m_3, w_6, u1_5, u2_5, eps_3, true, geo_nodes, geo_tris, view, lights_1, rt2_5, r2_4, light_cones, _buffer_sizes);
+    Shaded _e11 = shade_pick_traced(li_4, x_14, n_13, r_12, rl_9, m_3, w_6, u1_5, u2_5, eps_3, true, geo_nodes, geo_tris, view, lights, rt2_5, r2_4, light_cones, _buffer_sizes);
     return _e11;
 }
 
@@ -1510,49 +1516,81 @@ Shaded add(
     return Shaded {a_8.e + b_7.e, a_8.diffuse + b_7.diffuse, a_8.specular + b_7.specular};
 }
 
-uint pick_copies(
-    type_14 lights,
-    uint k_2
+type_14 first_holders(
+    type_18 keys_1,
+    type_19 held_1
 ) {
-    uint copies = 1u;
-    uint j = 0u;
+    type_14 first = {};
+    uint k_3 = 0u;
+    uint j_1 = {};
     bool local_20 = {};
+    bool local_21 = {};
     uint2 loop_bound_5 = uint2(4294967295u);
     bool loop_init_3 = true;
     while(true) {
         if (metal::all(loop_bound_5 == uint2(0u))) { break; }
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         if (!loop_init_3) {
-            uint _e26 = j;
-            j = _e26 + 1u;
+            uint _e45 = k_3;
+            k_3 = _e45 + 1u;
         }
         loop_init_3 = false;
-        uint _e6 = j;
-        if (_e6 < K) {
+        uint _e5 = k_3;
+        if (_e5 < K) {
         } else {
             break;
         }
         {
-            uint _e9 = j;
-            if (_e9 != k_2) {
-                uint _e13 = j;
-                local_20 = lights.inner[_e13] == lights.inner[k_2];
-            } else {
-                local_20 = false;
-            }
-            bool _e18 = local_20;
-            if (_e18) {
-                uint _e19 = j;
-                if (_e19 < k_2) {
-                    return 0u;
+            uint _e8 = k_3;
+            uint _e11 = k_3;
+            uint _e12 = k_3;
+            first.inner[_e8] = held_1.inner[_e12] ? _e11 : K;
+            j_1 = 0u;
+            uint2 loop_bound_6 = uint2(4294967295u);
+            bool loop_init_4 = true;
+            while(true) {
+                if (metal::all(loop_bound_6 == uint2(0u))) { break; }
+                loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+                if (!loop_init_4) {
+                    uint _e42 = j_1;
+                    j_1 = _e42 + 1u;
                 }
-                uint _e22 = copies;
-                copies = _e22 + 1u;
+                loop_init_4 = false;
+                uint _e17 = j_1;
+                uint _e18 = k_3;
+                if (_e17 < _e18) {
+                    uint _e22 = k_3;
+                    local_20 = held_1.inner[_e22];
+                } else {
+                    local_20 = false;
+                }
+                bool _e25 = local_20;
+                if (_e25) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e26 = j_1;
+                    if (held_1.inner[_e26]) {
+                        uint _e30 = j_1;
+                        uint _e32 = k_3;
+                        local_21 = metal::all(keys_1.inner[_e30] == keys_1.inner[_e32]);
+                    } else {
+                        local_21 = false;
+                    }
+                    bool _e37 = local_21;
+                    if (_e37) {
+                        uint _e38 = k_3;
+                        uint _e40 = j_1;
+                        first.inner[_e38] = _e40;
+                        break;
+                    }
+                }
             }
         }
     }
-    uint _e28 = copies;
-    return _e28;
+    type_14 _e47 = first;
+    return _e47;
 }
 
 struct main_Input {
@@ -1568,7 +1606,7 @@ kernel void main_(
 , metal::texture2d<float, metal::access::sample> base_color_tex [[user(fake0)]]
 , metal::texture2d<float, metal::access::sample> metal_rough_tex [[user(fake0)]]
 , metal::texture2d<float, metal::access::write> specular_tex [[user(fake0)]]
-, device type_11 const& lights_1 [[user(fake0)]]
+, device type_11 const& lights [[user(fake0)]]
 , device type_4 const& rt2_5 [[user(fake0)]]
 , device type_4 const& r2_4 [[user(fake0)]]
 , device type_12 const& bsh_nodes [[user(fake0)]]
@@ -1582,7 +1620,12 @@ kernel void main_(
     metal::float3 r = {};
     uint h = {};
     Shaded t = Shaded {metal::float3(0.0), metal::float3(0.0), metal::float3(0.0)};
+    type_18 keys = {};
+    type_19 held = {};
     uint k = 0u;
+    uint k_1 = 0u;
+    uint copies = {};
+    uint j = {};
     uint _e4 = view.width;
     if (!((gid.x >= _e4))) {
         uint _e12 = view.height;
@@ -1644,55 +1687,108 @@ kernel void main_(
     metal::float4 _e127 = lobe;
     WeightedPicks _e128 = bsh_weighted_collect(x_15, n_16, _e126, _e127, _e92, _e115, rt2_5, bsh_nodes, light_cones, _buffer_sizes);
     if (_e128.w_sum > 0.0) {
-        uint2 loop_bound_6 = uint2(4294967295u);
-        bool loop_init_4 = true;
+        uint2 loop_bound_7 = uint2(4294967295u);
+        bool loop_init_5 = true;
         while(true) {
-            if (metal::all(loop_bound_6 == uint2(0u))) { break; }
-            loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-            if (!loop_init_4) {
-                uint _e175 = k;
-                k = _e175 + 1u;
+            if (metal::all(loop_bound_7 == uint2(0u))) { break; }
+            loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+            if (!loop_init_5) {
+                uint _e163 = k;
+                k = _e163 + 1u;
             }
-            loop_init_4 = false;
-            uint _e134 = k;
-            if (_e134 < K) {
+            loop_init_5 = false;
+            uint _e136 = k;
+            if (_e136 < K) {
             } else {
                 break;
             }
             {
-                uint _e137 = h;
-                uint _e138 = pcg_hash(_e137);
-                h = _e138;
-                uint _e139 = h;
-                float _e140 = xi_from_bits(_e139);
-                uint _e141 = h;
-                uint _e142 = pcg_hash(_e141);
-                h = _e142;
-                uint _e143 = h;
-                float _e144 = xi_from_bits(_e143);
-                uint _e146 = k;
-                uint li_6 = _e128.light.inner[_e146];
-                uint _e150 = k;
-                uint _e151 = pick_copies(_e128.light, _e150);
-                uint _e155 = lights_1[li_6].kind;
-                uint copies_1 = (_e155 != LIGHT_TRIANGLE) ? _e151 : 1u;
-                if (copies_1 > 0u) {
-                    Shaded _e161 = t;
-                    metal::float3 _e162 = r;
-                    Material _e163 = m;
-                    uint _e166 = k;
-                    float _e169 = weighted_pick_weight(_e128.w_sum, _e128.w.inner[_e166], K);
-                    Shaded _e172 = shade_pick(li_6, x_15, n_16, _e162, _e92, _e163, _e169 * static_cast<float>(copies_1), _e140, _e144, eps_4, geo_nodes, geo_tris, view, lights_1, rt2_5, r2_4, light_cones, _buffer_sizes);
-                    Shaded _e173 = add(_e161, _e172);
-                    t = _e173;
+                uint _e140 = k;
+                uint _e145 = k;
+                uint _e149 = lights[_e128.light.inner[_e145]].kind;
+                uint own = (_e149 == LIGHT_TRIANGLE) ? (_e140 + 1u) : 0u;
+                uint _e153 = k;
+                uint _e156 = k;
+                keys.inner[_e153] = metal::uint2(_e128.light.inner[_e156], own);
+                uint _e159 = k;
+                held.inner[_e159] = true;
+            }
+        }
+        type_18 _e165 = keys;
+        type_19 _e166 = held;
+        type_14 _e167 = first_holders(_e165, _e166);
+        uint2 loop_bound_8 = uint2(4294967295u);
+        bool loop_init_6 = true;
+        while(true) {
+            if (metal::all(loop_bound_8 == uint2(0u))) { break; }
+            loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
+            if (!loop_init_6) {
+                uint _e221 = k_1;
+                k_1 = _e221 + 1u;
+            }
+            loop_init_6 = false;
+            uint _e170 = k_1;
+            if (_e170 < K) {
+            } else {
+                break;
+            }
+            {
+                uint _e173 = h;
+                uint _e174 = pcg_hash(_e173);
+                h = _e174;
+                uint _e175 = h;
+                float _e176 = xi_from_bits(_e175);
+                uint _e177 = h;
+                uint _e178 = pcg_hash(_e177);
+                h = _e178;
+                uint _e179 = h;
+                float _e180 = xi_from_bits(_e179);
+                uint _e182 = k_1;
+                uint li_6 = _e128.light.inner[_e182];
+                copies = 0u;
+                uint _e186 = k_1;
+                j = _e186;
+                uint2 loop_bound_9 = uint2(4294967295u);
+                bool loop_init_7 = true;
+                while(true) {
+                    if (metal::all(loop_bound_9 == uint2(0u))) { break; }
+                    loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
+                    if (!loop_init_7) {
+                        uint _e201 = j;
+                        j = _e201 + 1u;
+                    }
+                    loop_init_7 = false;
+                    uint _e188 = j;
+                    if (_e188 < K) {
+                    } else {
+                        break;
+                    }
+                    {
+                        uint _e191 = copies;
+                        uint _e194 = j;
+                        uint _e196 = k_1;
+                        copies = _e191 + ((_e167.inner[_e194] == _e196) ? 1u : 0u);
+                    }
+                }
+                uint _e203 = copies;
+                if (_e203 > 0u) {
+                    Shaded _e206 = t;
+                    metal::float3 _e207 = r;
+                    Material _e208 = m;
+                    uint _e211 = k_1;
+                    float _e214 = weighted_pick_weight(_e128.w_sum, _e128.w.inner[_e211], K);
+                    uint _e215 = copies;
+                    Shaded _e218 = shade_pick(li_6, x_15, n_16, _e207, _e92, _e208, _e214 * static_cast<float>(_e215), _e176, _e180, eps_4, geo_nodes, geo_tris, view, lights, rt2_5, r2_4, light_cones, _buffer_sizes);
+                    Shaded _e219 = add(_e206, _e218);
+                    t = _e219;
                 }
             }
         }
     }
     uint count = _e128.n;
-    metal::float3 _e180 = t.e;
-    out_tex.write(metal::float4(_e180, static_cast<float>(count)), metal::uint2(texel_1));
-    metal::float3 _e185 = t.specular;
-    specular_tex.write(metal::float4(_e185, 0.0), metal::uint2(texel_1));
+    metal::float3 _e226 = t.e;
+    out_tex.write(metal::float4(_e226, static_cast<float>(count)), metal::uint2(texel_1));
+    metal::float3 _e231 = t.specular;
+    specular_tex.write(metal::float4(_e231, 0.0), metal::uint2(texel_1));
     return;
 }
