@@ -7,7 +7,9 @@
 //!   `max(n/k, 1)` keeps the sum unbiased.
 //! - [`WeightedReservoir`]: `k` independent one-slot weighted reservoirs
 //!   (Chao 1982). Each slot holds candidate `i` with probability `wᵢ/W`;
-//!   a held light's weight is `W/(k·wᵢ)` (beyond the paper).
+//!   a held light's weight is `W/(k·wᵢ)` (beyond the paper). Each slot
+//!   keeps a threshold on the running sum ([`weighted_threshold`]), so it
+//!   draws a random number only when it takes a candidate.
 //!
 //! Random input is two 32-bit words per candidate; the index draw uses 64
 //! bits so its bias is below `n/2⁶⁴` even for `n` near `u32::MAX`.
@@ -76,6 +78,19 @@ crate::shared! {
     /// `u ∈ [0, 1)`; so it is held at the end with probability `w/W_final`.
     pub fn weighted_replace(w: f32, w_sum: f32, u: f32) -> bool {
         return u * w_sum < w;
+    }
+
+    /// The same one-slot reservoir as a threshold on its running sum (the
+    /// jump form of [`weighted_replace`], after Efraimidis & Spirakis 2006
+    /// and Li's Algorithm L): after taking a candidate at running sum `W_j`,
+    /// the slot keeps it through candidate `m` with probability
+    /// `Π (1 − w_i/W_i) = W_j/W_m`, so with `u ∈ [0, 1)` drawn at the take
+    /// it is replaced first by the candidate whose running sum exceeds
+    /// `W_j/(1 − u)` (this threshold; an empty slot's is 0). The same
+    /// distribution with one random number per take instead of one per
+    /// candidate: a slot takes about `ln n` of `n` equal candidates.
+    pub fn weighted_threshold(w_sum: f32, u: f32) -> f32 {
+        return w_sum / (1.0 - u);
     }
 
     /// Estimator weight of a pick of weight `w` among `k` independent
@@ -263,16 +278,19 @@ impl<const K: usize> Reservoir<K> {
     }
 }
 
-/// `K` independent one-slot weighted reservoirs.
+/// `K` independent one-slot weighted reservoirs, in the threshold form
+/// ([`weighted_threshold`]: a slot draws a number only when it takes).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct WeightedReservoir<const K: usize> {
     slots: [(u32, f32); K],
+    /// Each slot's threshold on the running sum (0 while empty).
+    thresholds: [f32; K],
     w_sum: f32,
 }
 
 impl<const K: usize> Default for WeightedReservoir<K> {
     fn default() -> Self {
-        Self { slots: [(0, 0.0); K], w_sum: 0.0 }
+        Self { slots: [(0, 0.0); K], thresholds: [0.0; K], w_sum: 0.0 }
     }
 }
 
@@ -282,16 +300,18 @@ impl<const K: usize> WeightedReservoir<K> {
         Self::default()
     }
 
-    /// Offers `item` with importance `w` (finite, `> 0`; others are ignored)
-    /// and one uniform `u[s] ∈ [0, 1)` per slot.
-    pub fn push(&mut self, item: u32, w: f32, u: &[f32; K]) {
+    /// Offers `item` with importance `w` (finite, `> 0`; others are
+    /// ignored); a slot that takes it calls `u` for its next threshold's
+    /// uniform in `[0, 1)`.
+    pub fn push(&mut self, item: u32, w: f32, mut u: impl FnMut() -> f32) {
         if !(w > 0.0 && w.is_finite()) {
             return;
         }
         self.w_sum += w;
-        for (slot, &u) in self.slots.iter_mut().zip(u) {
-            if weighted_replace(w, self.w_sum, u) {
+        for (slot, threshold) in self.slots.iter_mut().zip(&mut self.thresholds) {
+            if self.w_sum > *threshold {
                 *slot = (item, w);
+                *threshold = weighted_threshold(self.w_sum, u());
             }
         }
     }
@@ -334,6 +354,53 @@ mod tests {
             }
             assert!((sum - vec3f(1.0, 1.0, 1.0)).abs().max_element() < 1e-6, "k {k}: {sum}");
         }
+    }
+
+    /// The threshold form of the one-slot reservoir keeps candidate `i`
+    /// with probability `w_i/W` (zero weights never), as
+    /// [`weighted_replace`] does, and takes `Σ w_i/W_i` candidates on
+    /// average, drawing one number per take: 200,000 fixed-seed slots over
+    /// ten weights, each frequency within 5 standard deviations of its
+    /// probability.
+    #[test]
+    fn threshold_slot_keeps_each_candidate_by_its_weight() {
+        use crate::xi::{pcg_hash, xi_from_bits};
+        let w = [0.5f32, 0.0, 3.0, 1.0, 0.25, 0.0, 2.0, 8.0, 0.125, 1.5];
+        let total: f32 = w.iter().sum();
+        let trials = 200_000u32;
+        let (mut kept, mut takes) = ([0u32; 10], 0u64);
+        let mut h = 0x5eed;
+        for _ in 0..trials {
+            let (mut slot, mut threshold, mut sum) = (usize::MAX, 0.0f32, 0.0f32);
+            for (i, &wi) in w.iter().enumerate() {
+                sum += wi;
+                if wi > 0.0 && sum > threshold {
+                    slot = i;
+                    takes += 1;
+                    h = pcg_hash(h);
+                    threshold = weighted_threshold(sum, xi_from_bits(h));
+                }
+            }
+            kept[slot] += 1;
+        }
+        for (i, &wi) in w.iter().enumerate() {
+            let p = (wi / total) as f64;
+            let f = kept[i] as f64 / trials as f64;
+            let sd = (p * (1.0 - p) / trials as f64).sqrt();
+            assert!((f - p).abs() <= 5.0 * sd + 1e-12, "candidate {i}: {f} against {p}");
+        }
+        // Expected takes: Σ w_i/W_i over the positive weights (the first 1).
+        let mut sum = 0.0f64;
+        let expected: f64 = w
+            .iter()
+            .filter(|&&wi| wi > 0.0)
+            .map(|&wi| {
+                sum += wi as f64;
+                wi as f64 / sum
+            })
+            .sum();
+        let mean = takes as f64 / trials as f64;
+        assert!((mean - expected).abs() < 0.02, "takes per slot {mean} against {expected}");
     }
 
     #[test]

@@ -380,8 +380,7 @@ fn weighted_reservoir_probabilities() {
     for _ in 0..trials {
         let mut r = WeightedReservoir::<4>::new();
         for (i, &wi) in w.iter().enumerate() {
-            let u = [(); 4].map(|_| slc_core::xi::xi_from_bits(rng.next_u32()));
-            r.push(i as u32, wi, &u);
+            r.push(i as u32, wi, || slc_core::xi::xi_from_bits(rng.next_u32()));
         }
         assert!((r.total_weight() - total).abs() < 1e-5);
         for (i, wt) in r.picks() {

@@ -57,6 +57,7 @@ fn library_validates_with_naga() {
         "reservoir_slot",
         "reservoir_weight",
         "weighted_replace",
+        "weighted_threshold",
         "xi_for",
         "cull_radius",
         "range_radius",

@@ -27,7 +27,7 @@ use slc_core::light::{Light, connection_cosine, connection_factor};
 use slc_core::range::{RangeParams, random_range2};
 use slc_core::reservoir::{
     resample_target, reservoir_slot, reservoir_takes, reservoir_weight, slot_share, slot_target,
-    weighted_pick_weight, weighted_replace,
+    weighted_pick_weight, weighted_threshold,
 };
 use slc_core::xi::{pcg_hash, pick_stream, point_stream, xi_for, xi_from_bits};
 use slc_scene::RenderError;
@@ -170,13 +170,14 @@ impl DirectLights {
                 // bsh_weighted_collect, one stream for all slots).
                 let rc = Receiver::lambertian(at.x, at.n);
                 let mut slots = vec![(0u32, 0.0f32); k as usize];
+                let mut thresholds = vec![0.0f32; k as usize];
                 let mut w_sum = 0.0f32;
                 self.bsh.for_each_containing(at.x, |l| {
                     seen += 1;
                     let w = self.cones[l as usize].weight(&rc, at.rt2[l as usize]);
                     if w > 0.0 {
                         w_sum += w;
-                        offer(&mut slots, |_| (l, w), |_| (w, w_sum), &mut h);
+                        offer(&mut slots, &mut thresholds, |_| (l, w), |_| (w, w_sum), &mut h);
                     }
                 });
                 if w_sum > 0.0 {
@@ -230,6 +231,7 @@ impl DirectLights {
     /// `P_q/p_q` times its [`slot_share`], `P_q` the slot's target sum.
     fn resampled(&self, at: &Point, seed: u32, k: u32) -> Direct {
         let mut slots = vec![(0u32, 0.0f32, 0.0f32, 0.0f32); k as usize];
+        let mut thresholds = vec![0.0f32; k as usize];
         let (mut total, mut seen) = (Vec3::ZERO, 0u32);
         let (mut h, mut hc) = (pick_stream(seed), seed);
         self.bsh.for_each_containing(at.x, |l| {
@@ -242,7 +244,8 @@ impl DirectLights {
             if resample_target(c) > 0.0 {
                 total += c;
                 let of = |q: usize, v: Vec3| slot_target(v, q as u32, k);
-                offer(&mut slots, |q| (l, u1, u2, of(q, c)), |q| (of(q, c), of(q, total)), &mut hc);
+                let item = |q| (l, u1, u2, of(q, c));
+                offer(&mut slots, &mut thresholds, item, |q| (of(q, c), of(q, total)), &mut hc);
             }
         });
         let mut e = Vec3::ZERO;
@@ -286,18 +289,21 @@ impl DirectLights {
 /// kernels' loops in `bsh_weighted_collect` and the resampled picks): slot
 /// `q`, whose candidates so far weigh `total` including this one's `w`
 /// (`weights(q) = (w, total)`), takes `item(q)` with probability `w/total`
-/// where `w > 0` ([`weighted_replace`]); one hash of `h` per slot.
+/// where `w > 0`, in the threshold form ([`weighted_threshold`]): where
+/// `total` passes the slot's threshold, one hash of `h` sets the next.
 fn offer<T>(
     slots: &mut [T],
+    thresholds: &mut [f32],
     item: impl Fn(usize) -> T,
     weights: impl Fn(usize) -> (f32, f32),
     h: &mut u32,
 ) {
-    for (q, s) in slots.iter_mut().enumerate() {
-        *h = pcg_hash(*h);
+    for (q, (s, threshold)) in slots.iter_mut().zip(thresholds.iter_mut()).enumerate() {
         let (w, total) = weights(q);
-        if w > 0.0 && weighted_replace(w, total, xi_from_bits(*h)) {
+        if w > 0.0 && total > *threshold {
             *s = item(q);
+            *h = pcg_hash(*h);
+            *threshold = weighted_threshold(total, xi_from_bits(*h));
         }
     }
 }

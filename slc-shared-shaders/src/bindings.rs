@@ -341,7 +341,7 @@ pub fn bindings(kernel: Kernel, f: &Features) -> Vec<Binding> {
                 v.push(b(1, 7, "geo_tris", Resource::Read("array<GpuTriangle>"), "the occluders' triangles in leaf order", "host"));
             }
             if f.counters {
-                v.push(write(8, "direct_counts", "array<atomic<u32>>", "the counting variant's work counters (64-bit low, high pairs per `DIRECT_COUNT_*` field)"));
+                v.push(write(8, "counters", "array<atomic<u32>>", "the counting variant's work counters (64-bit low, high pairs per `DIRECT_COUNT_*` field)"));
             }
             if f.reuse_domains > 0 {
                 v.push(uniform(7, "reuse", "ReuseParams", true, "the previous view-projection and eye, the confidence cap, the neighbours' radius"));

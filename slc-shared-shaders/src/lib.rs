@@ -484,7 +484,7 @@ impl Default for Features {
     }
 }
 
-const TEMPLATES: [(&str, &str); 34] = [
+const TEMPLATES: [(&str, &str); 35] = [
     ("header.wgsl", include_str!("templates/header.wgsl")),
     ("workgroup_box.wgsl", include_str!("templates/workgroup_box.wgsl")),
     ("lights.wgsl", include_str!("templates/lights.wgsl")),
@@ -506,6 +506,7 @@ const TEMPLATES: [(&str, &str); 34] = [
     ("vpl_ranges.wgsl", include_str!("templates/vpl_ranges.wgsl")),
     ("cluster_cull.wgsl", include_str!("templates/cluster_cull.wgsl")),
     ("work_counters.wgsl", include_str!("templates/work_counters.wgsl")),
+    ("counter64.wgsl", include_str!("templates/counter64.wgsl")),
     ("vpl_receiver.wgsl", include_str!("templates/vpl_receiver.wgsl")),
     ("irradiance_export", include_str!("templates/irradiance_export.wgsl")),
     ("scene_raster", include_str!("templates/scene_raster.wgsl")),

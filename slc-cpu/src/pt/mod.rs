@@ -394,10 +394,7 @@ impl CpuPathTracer {
             let c = &cones[l as usize];
             let w = c.weight(rc, rc.range_scale_to(rl, c) * st.rt2[l as usize]);
             // Zero weight: never picked (and its MIS pdf is 0), so no draws.
-            if w > 0.0 {
-                let u = [(); WEIGHTED_K].map(|_| xi_from_bits(rng.next_u32()));
-                res.push(l, w, &u);
-            }
+            res.push(l, w, || xi_from_bits(rng.next_u32()));
         });
         (res, seen)
     }

@@ -1,8 +1,8 @@
 // slc-weighted over the BSH: every in-range candidate gets the weight
 // w = ĝ/p (slc-core's cone_weight through `light_weight`: its importance for
 // the receiver over its roulette probability), and K independent one-slot
-// weighted reservoirs pick among them (a pick of weight w is then weighted
-// W/(K·w)). A zero weight (no light can arrive) is never picked.
+// weighted reservoirs (in the threshold form) pick among them (a pick of
+// weight w is then weighted W/(K·w)). A zero weight (no light can arrive) is never picked.
 
 /// The weighted picks at a point: each slot's light and weight, the
 /// candidates' total weight, how many candidates the traversal found and
@@ -24,6 +24,9 @@ fn bsh_weighted_collect(x: vec3f, n: vec3f, r: vec3f, lobe: vec4f, rl: vec4f, h0
     picks.w_sum = 0.0;
     picks.n = 0u;
     var h = h0;
+    // Each slot's threshold on the running sum (slc-core's
+    // weighted_threshold; 0 while empty): one hash per take.
+    var threshold: array<f32, K>;
     for (var b = bsh_next_leaf_lobe(BSH, bsh_first(BSH), x, r, rl); b != BSH_NONE; b = bsh_next_leaf_lobe(BSH, bsh_nodes[b].next, x, r, rl)) {
         picks.n += 1u;
         let li = bsh_nodes[b].light;
@@ -31,10 +34,11 @@ fn bsh_weighted_collect(x: vec3f, n: vec3f, r: vec3f, lobe: vec4f, rl: vec4f, h0
         if w > 0.0 {
             picks.w_sum += w;
             for (var s = 0u; s < K; s++) {
-                h = pcg_hash(h);
-                if weighted_replace(w, picks.w_sum, xi_from_bits(h)) {
+                if picks.w_sum > threshold[s] {
                     picks.light[s] = li;
                     picks.w[s] = w;
+                    h = pcg_hash(h);
+                    threshold[s] = weighted_threshold(picks.w_sum, xi_from_bits(h));
                 }
             }
         }

@@ -28,20 +28,14 @@ fn occluded(a: vec3f, b: vec3f) -> bool {
 // in-range lights (a); zero where no surface is.
 
 {% if counters %}
-// The counting variant: every shaded pixel adds its work to `direct_counts`
-// (slc-wgpu's DirectCounts; never in a timed frame).
+// The counting variant: every shaded pixel adds its work to `counters`
+// (slc-wgpu's DirectCounts, 64-bit per field: counter64.wgsl; never in a
+// timed frame).
 
 /// Lights this invocation evaluated without a ray.
 var<private> evaluations: u32;
 
-/// Adds `n` to the 64-bit counter of field `f` (low word at 2f, high at
-/// 2f + 1, the carry added where the low word wraps).
-fn direct_count(f: u32, n: u32) {
-    let old = atomicAdd(&direct_counts[2u * f], n);
-    if old + n < old {
-        atomicAdd(&direct_counts[2u * f + 1u], 1u);
-    }
-}
+{% include "counter64.wgsl" %}
 
 {% endif %}
 /// What the picks add at a pixel: irradiance{% if pbr != "none" %}, and the material's diffuse and specular radiance{% endif %}.
@@ -382,9 +376,10 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     // Resampled importance sampling over every light in range: each is
     // sampled (its point from the pick stream{% if reuse %}, on the 16-bit grid{% endif %}) and evaluated without a
     // shadow ray, and K independent one-slot weighted reservoirs (the
-    // seed's stream) keep candidate j with probability p_j / P, p_j the
-    // slot's target (slc-core's slot_target: one colour channel per slot,
-    // the channel mean below 3 slots) and P their sum. {% if reuse %}Slot k's pick then has the unbiased
+    // seed's stream, one hash per take: the threshold form) keep candidate
+    // j with probability p_j / P, p_j the slot's target (slc-core's
+    // slot_target: one colour channel per slot, the channel mean below 3
+    // slots) and P their sum. {% if reuse %}Slot k's pick then has the unbiased
     // contribution weight P / p̂(y), p̂ its whole unranged target (p_j is
     // p̂ times the roulette's 1/p), and enters the reuse.{% else %}A kept candidate adds its
     // contribution shadowed, weighted P / p_j times the slot's share of
@@ -401,6 +396,9 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     var total = vec3f(0.0);
     var count = 0u;
     var hc = seed;
+    // Each slot's threshold on its running sum (slc-core's
+    // weighted_threshold; 0 while empty): one hash per take.
+    var threshold: array<f32, K>;
     for (var b = bsh_next_leaf_lobe(BSH, bsh_first(BSH), x, r, rl); b != BSH_NONE; b = bsh_next_leaf_lobe(BSH, bsh_nodes[b].next, x, r, rl)) {
         count += 1u;
         let li = bsh_nodes[b].light;
@@ -422,15 +420,17 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
         if resample_target(c) > 0.0 {
             total += c;
             for (var q = 0u; q < K; q++) {
-                hc = pcg_hash(hc);
                 let p = slot_target(c, q, K);
-                if p > 0.0 && weighted_replace(p, slot_target(total, q, K), xi_from_bits(hc)) {
+                let sum = slot_target(total, q, K);
+                if p > 0.0 && sum > threshold[q] {
                     slot_light[q] = li;
                     slot_u[q] = u;
                     slot_p[q] = p;
 {% if reuse %}
                     slot_cells[q] = cells;
 {% endif %}
+                    hc = pcg_hash(hc);
+                    threshold[q] = weighted_threshold(sum, xi_from_bits(hc));
                 }
             }
         }
@@ -552,12 +552,12 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     textureStore(specular_tex, texel, vec4f(t.specular, 0.0));
 {% endif %}
 {% if counters %}
-    direct_count(DIRECT_COUNT_PIXELS, 1u);
-    direct_count(DIRECT_COUNT_CANDIDATES, count);
-    direct_count(DIRECT_COUNT_EVALUATIONS, evaluations);
+    counter_add(DIRECT_COUNT_PIXELS, 1u);
+    counter_add(DIRECT_COUNT_CANDIDATES, count);
+    counter_add(DIRECT_COUNT_EVALUATIONS, evaluations);
 {% if shadows %}
-    direct_count(DIRECT_COUNT_RAYS, rays_cast);
-    direct_count(DIRECT_COUNT_NODES, nodes_visited);
+    counter_add(DIRECT_COUNT_RAYS, rays_cast);
+    counter_add(DIRECT_COUNT_NODES, nodes_visited);
 {% endif %}
 {% endif %}
 }

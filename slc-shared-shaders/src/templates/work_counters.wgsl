@@ -1,8 +1,9 @@
 // The counting variant's work counters (slc_scene::vpl::WorkCounts): each
 // field summed over the workgroup in workgroup memory, then added by one
-// invocation to `counters` as a 64-bit count (low word at 2f, high at
-// 2f + 1, the carry added where the low word wraps). Never in a timed
-// frame.
+// invocation to `counters` as a 64-bit count (counter64.wgsl). Never in a
+// timed frame.
+
+{% include "counter64.wgsl" %}
 
 // The fields (COUNT_TILES … COUNT_FIELDS) are the layout's constants.
 
@@ -38,10 +39,6 @@ fn count_tests(li: u32, f: u32, n: u32) {
 fn counts_end(li: u32) {
     workgroupBarrier();
     if li < COUNT_FIELDS {
-        let n = atomicLoad(&wg_counts[li]);
-        let old = atomicAdd(&counters[2u * li], n);
-        if old + n < old {
-            atomicAdd(&counters[2u * li + 1u], 1u);
-        }
+        counter_add(li, atomicLoad(&wg_counts[li]));
     }
 }

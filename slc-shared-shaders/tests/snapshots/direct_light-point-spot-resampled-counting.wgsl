@@ -157,7 +157,7 @@ var<storage> r2_3: array<f32>;
 @group(1) @binding(4) 
 var<storage> bsh_nodes: array<BshNode>;
 @group(0) @binding(8) 
-var<storage, read_write> direct_counts: array<atomic<u32>>;
+var<storage, read_write> counters: array<atomic<u32>>;
 var<private> evaluations: u32;
 
 fn to_f32_(u: u32) -> f32 {
@@ -242,10 +242,10 @@ fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     if _e16 {
         return 0f;
     }
-    let w_7 = (v_3 / vec3(sqrt(d2_6)));
-    let cos_x_1 = -(dot(n, w_7));
+    let w_6 = (v_3 / vec3(sqrt(d2_6)));
+    let cos_x_1 = -(dot(n, w_6));
     if !((cos_x_1 <= 0f)) {
-        local_5 = (dot(ng, w_7) >= 0f);
+        local_5 = (dot(ng, w_6) >= 0f);
     } else {
         local_5 = true;
     }
@@ -282,8 +282,8 @@ fn bsh_range_bound(node_1: BshNode) -> f32 {
     return _e8;
 }
 
-fn weighted_replace(w_2: f32, w_sum: f32, u_2: f32) -> bool {
-    return ((u_2 * w_sum) < w_2);
+fn weighted_threshold(w_sum: f32, u_2: f32) -> f32 {
+    return (w_sum / (1f - u_2));
 }
 
 fn resample_target(c_1: vec3<f32>) -> f32 {
@@ -308,19 +308,19 @@ fn slot_target(c_2: vec3<f32>, slot: u32, k_2: u32) -> f32 {
 fn slot_share(slot_1: u32, k_3: u32) -> vec3<f32> {
     if (k_3 < 3u) {
         let _e4 = to_f32_(k_3);
-        let w_8 = (1f / _e4);
-        return vec3<f32>(w_8, w_8, w_8);
+        let w_7 = (1f / _e4);
+        return vec3<f32>(w_7, w_7, w_7);
     }
     let j_3 = (slot_1 % 3u);
     let _e15 = to_f32_((((k_3 + 2u) - j_3) / 3u));
-    let w_9 = (1f / _e15);
+    let w_8 = (1f / _e15);
     if (j_3 == 0u) {
-        return vec3<f32>(w_9, 0f, 0f);
+        return vec3<f32>(w_8, 0f, 0f);
     }
     if (j_3 == 1u) {
-        return vec3<f32>(0f, w_9, 0f);
+        return vec3<f32>(0f, w_8, 0f);
     }
-    return vec3<f32>(0f, 0f, w_9);
+    return vec3<f32>(0f, 0f, w_8);
 }
 
 fn smith_root(cos_: f32, alpha: f32) -> f32 {
@@ -476,13 +476,13 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_3: vec3<f32>, b_3: vec3<f32>, 
     return -1f;
 }
 
-fn light_intensity(l: GpuLight, w_3: vec3<f32>) -> vec3<f32> {
+fn light_intensity(l: GpuLight, w_2: vec3<f32>) -> vec3<f32> {
     switch l.kind {
         case 0u: {
             return l.intensity;
         }
         case 1u: {
-            let _e11 = spot_falloff(dot(l.p1_, w_3), l.a, l.b, l.p2_.x);
+            let _e11 = spot_falloff(dot(l.p1_, w_2), l.a, l.b, l.p2_.x);
             return (l.intensity * _e11);
         }
         default: {
@@ -732,10 +732,10 @@ fn surface_at(texel: vec2<i32>) -> vec4<f32> {
     return select(vec4(0f), vec4<f32>(p_3.xyz, 1f), (p_3.w > 0f));
 }
 
-fn direct_count(f: u32, n_3: u32) {
-    let _e6 = atomicAdd((&direct_counts[(2u * f)]), n_3);
+fn counter_add(f: u32, n_3: u32) {
+    let _e6 = atomicAdd((&counters[(2u * f)]), n_3);
     if ((_e6 + n_3) < _e6) {
-        let _e16 = atomicAdd((&direct_counts[((2u * f) + 1u)]), 1u);
+        let _e16 = atomicAdd((&counters[((2u * f) + 1u)]), 1u);
         return;
     } else {
         return;
@@ -752,14 +752,14 @@ fn shade_connection(c_5: Connection, x_8: vec3<f32>, n_4: vec3<f32>, m_1: Materi
     return _e13;
 }
 
-fn shade_pick_traced(li_1: u32, x_9: vec3<f32>, n_5: vec3<f32>, r_6: vec3<f32>, rl_5: vec4<f32>, m_2: Material, w_4: f32, u1_3: f32, u2_3: f32, eps_2: f32, trace_3: bool) -> Shaded {
-    let _e12 = connect_traced(li_1, x_9, n_5, n_5, 1f, w_4, u1_3, u2_3, eps_2, trace_3);
+fn shade_pick_traced(li_1: u32, x_9: vec3<f32>, n_5: vec3<f32>, r_6: vec3<f32>, rl_5: vec4<f32>, m_2: Material, w_3: f32, u1_3: f32, u2_3: f32, eps_2: f32, trace_3: bool) -> Shaded {
+    let _e12 = connect_traced(li_1, x_9, n_5, n_5, 1f, w_3, u1_3, u2_3, eps_2, trace_3);
     let _e13 = shade_connection(_e12, x_9, n_5, m_2);
     return _e13;
 }
 
-fn shade_pick(li_2: u32, x_10: vec3<f32>, n_6: vec3<f32>, r_7: vec3<f32>, rl_6: vec4<f32>, m_3: Material, w_5: f32, u1_4: f32, u2_4: f32, eps_3: f32) -> Shaded {
-    let _e11 = shade_pick_traced(li_2, x_10, n_6, r_7, rl_6, m_3, w_5, u1_4, u2_4, eps_3, true);
+fn shade_pick(li_2: u32, x_10: vec3<f32>, n_6: vec3<f32>, r_7: vec3<f32>, rl_6: vec4<f32>, m_3: Material, w_4: f32, u1_4: f32, u2_4: f32, eps_3: f32) -> Shaded {
+    let _e11 = shade_pick_traced(li_2, x_10, n_6, r_7, rl_6, m_3, w_4, u1_4, u2_4, eps_3, true);
     return _e11;
 }
 
@@ -767,8 +767,8 @@ fn add(a_6: Shaded, b_5: Shaded) -> Shaded {
     return Shaded((a_6.e + b_5.e), (a_6.diffuse + b_5.diffuse), (a_6.specular + b_5.specular));
 }
 
-fn scaled(s_2: Shaded, w_6: vec3<f32>) -> Shaded {
-    return Shaded((s_2.e * w_6), (s_2.diffuse * w_6), (s_2.specular * w_6));
+fn scaled(s_2: Shaded, w_5: vec3<f32>) -> Shaded {
+    return Shaded((s_2.e * w_5), (s_2.diffuse * w_5), (s_2.specular * w_5));
 }
 
 fn first_holders(keys_1: array<vec2<u32>, 8>, held_1: array<bool, 8>) -> array<u32, 8> {
@@ -855,6 +855,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     var total: vec3<f32> = vec3(0f);
     var count: u32 = 0u;
     var hc: u32;
+    var threshold: array<f32, 8>;
     var b: u32;
     var q: u32;
     var local_2: bool;
@@ -907,63 +908,59 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     let _e78 = pick_stream(_e77);
     h = _e78;
     hc = _e77;
-    let _e99 = bsh_first(BSH);
-    let _e100 = r;
-    let _e101 = bsh_next_leaf_lobe(BSH, _e99, x_11, _e100, _e54);
-    b = _e101;
+    let _e100 = bsh_first(BSH);
+    let _e101 = r;
+    let _e102 = bsh_next_leaf_lobe(BSH, _e100, x_11, _e101, _e54);
+    b = _e102;
     loop {
-        let _e103 = b;
-        if (_e103 != BSH_NONE) {
+        let _e104 = b;
+        if (_e104 != BSH_NONE) {
         } else {
             break;
         }
         {
-            let _e106 = count;
-            count = (_e106 + 1u);
-            let _e110 = b;
-            let li_3 = bsh_nodes[_e110].light;
-            let _e114 = h;
-            let _e115 = pcg_hash(_e114);
-            h = _e115;
-            let _e116 = h;
-            let _e117 = xi_from_bits(_e116);
-            let _e118 = h;
-            let _e119 = pcg_hash(_e118);
-            h = _e119;
-            let _e120 = h;
-            let _e121 = xi_from_bits(_e120);
-            let u_4 = vec2<f32>(_e117, _e121);
-            let _e123 = r;
-            let _e124 = m;
-            let _e129 = shade_pick_traced(li_3, x_11, n_8, _e123, _e54, _e124, 1f, u_4.x, u_4.y, eps_4, false);
-            let _e130 = output_of(_e129);
-            let _e132 = evaluations;
-            evaluations = (_e132 + 1u);
-            let _e135 = resample_target(_e130);
-            if (_e135 > 0f) {
-                let _e138 = total;
-                total = (_e138 + _e130);
+            let _e107 = count;
+            count = (_e107 + 1u);
+            let _e111 = b;
+            let li_3 = bsh_nodes[_e111].light;
+            let _e115 = h;
+            let _e116 = pcg_hash(_e115);
+            h = _e116;
+            let _e117 = h;
+            let _e118 = xi_from_bits(_e117);
+            let _e119 = h;
+            let _e120 = pcg_hash(_e119);
+            h = _e120;
+            let _e121 = h;
+            let _e122 = xi_from_bits(_e121);
+            let u_4 = vec2<f32>(_e118, _e122);
+            let _e124 = r;
+            let _e125 = m;
+            let _e130 = shade_pick_traced(li_3, x_11, n_8, _e124, _e54, _e125, 1f, u_4.x, u_4.y, eps_4, false);
+            let _e131 = output_of(_e130);
+            let _e133 = evaluations;
+            evaluations = (_e133 + 1u);
+            let _e136 = resample_target(_e131);
+            if (_e136 > 0f) {
+                let _e139 = total;
+                total = (_e139 + _e131);
                 q = 0u;
                 loop {
-                    let _e142 = q;
-                    if (_e142 < K) {
+                    let _e143 = q;
+                    if (_e143 < K) {
                     } else {
                         break;
                     }
                     {
-                        let _e145 = hc;
-                        let _e146 = pcg_hash(_e145);
-                        hc = _e146;
-                        let _e147 = q;
-                        let _e149 = slot_target(_e130, _e147, K);
-                        if (_e149 > 0f) {
-                            let _e154 = total;
-                            let _e155 = q;
-                            let _e157 = slot_target(_e154, _e155, K);
-                            let _e158 = hc;
-                            let _e159 = xi_from_bits(_e158);
-                            let _e160 = weighted_replace(_e149, _e157, _e159);
-                            local_2 = _e160;
+                        let _e146 = q;
+                        let _e148 = slot_target(_e131, _e146, K);
+                        let _e149 = total;
+                        let _e150 = q;
+                        let _e152 = slot_target(_e149, _e150, K);
+                        if (_e148 > 0f) {
+                            let _e157 = q;
+                            let _e159 = threshold[_e157];
+                            local_2 = (_e152 > _e159);
                         } else {
                             local_2 = false;
                         }
@@ -974,126 +971,134 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
                             let _e165 = q;
                             slot_u[_e165] = u_4;
                             let _e167 = q;
-                            slot_p[_e167] = _e149;
+                            slot_p[_e167] = _e148;
+                            let _e169 = hc;
+                            let _e170 = pcg_hash(_e169);
+                            hc = _e170;
+                            let _e171 = q;
+                            let _e173 = hc;
+                            let _e174 = xi_from_bits(_e173);
+                            let _e175 = weighted_threshold(_e152, _e174);
+                            threshold[_e171] = _e175;
                         }
                     }
                     continuing {
-                        let _e170 = q;
-                        q = (_e170 + 1u);
+                        let _e177 = q;
+                        q = (_e177 + 1u);
                     }
                 }
             }
         }
         continuing {
-            let _e174 = b;
-            let _e177 = bsh_nodes[_e174].next;
-            let _e178 = r;
-            let _e179 = bsh_next_leaf_lobe(BSH, _e177, x_11, _e178, _e54);
-            b = _e179;
+            let _e181 = b;
+            let _e184 = bsh_nodes[_e181].next;
+            let _e185 = r;
+            let _e186 = bsh_next_leaf_lobe(BSH, _e184, x_11, _e185, _e54);
+            b = _e186;
         }
     }
     loop {
-        let _e184 = k;
-        if (_e184 < K) {
+        let _e191 = k;
+        if (_e191 < K) {
         } else {
             break;
         }
         {
-            let _e187 = k;
-            let _e189 = k;
-            let _e191 = slot_light[_e189];
-            keys[_e187] = vec2<u32>(_e191, 0u);
             let _e194 = k;
             let _e196 = k;
-            let _e198 = slot_p[_e196];
-            held[_e194] = (_e198 > 0f);
+            let _e198 = slot_light[_e196];
+            keys[_e194] = vec2<u32>(_e198, 0u);
+            let _e201 = k;
+            let _e203 = k;
+            let _e205 = slot_p[_e203];
+            held[_e201] = (_e205 > 0f);
         }
         continuing {
-            let _e202 = k;
-            k = (_e202 + 1u);
+            let _e209 = k;
+            k = (_e209 + 1u);
         }
     }
-    let _e204 = keys;
-    let _e205 = held;
-    let _e206 = first_holders(_e204, _e205);
+    let _e211 = keys;
+    let _e212 = held;
+    let _e213 = first_holders(_e211, _e212);
     loop {
-        let _e209 = k_1;
-        if (_e209 < K) {
+        let _e216 = k_1;
+        if (_e216 < K) {
         } else {
             break;
         }
         {
             w = vec3(0f);
-            let _e215 = k_1;
-            let _e217 = k_1;
-            let first_1 = (_e206[_e215] == _e217);
-            let _e219 = k_1;
-            j = _e219;
+            let _e222 = k_1;
+            let _e224 = k_1;
+            let first_1 = (_e213[_e222] == _e224);
+            let _e226 = k_1;
+            j = _e226;
             loop {
-                let _e221 = j;
-                if (_e221 < K) {
+                let _e228 = j;
+                if (_e228 < K) {
                     local_3 = first_1;
                 } else {
                     local_3 = false;
                 }
-                let _e227 = local_3;
-                if _e227 {
+                let _e234 = local_3;
+                if _e234 {
                 } else {
                     break;
                 }
                 {
-                    let _e228 = j;
-                    let _e230 = k_1;
-                    if (_e206[_e228] == _e230) {
-                        let _e232 = w;
-                        let _e233 = total;
-                        let _e234 = j;
-                        let _e236 = slot_target(_e233, _e234, K);
-                        let _e237 = j;
-                        let _e239 = slot_p[_e237];
+                    let _e235 = j;
+                    let _e237 = k_1;
+                    if (_e213[_e235] == _e237) {
+                        let _e239 = w;
+                        let _e240 = total;
                         let _e241 = j;
-                        let _e243 = slot_share(_e241, K);
-                        w = (_e232 + ((_e236 / _e239) * _e243));
+                        let _e243 = slot_target(_e240, _e241, K);
+                        let _e244 = j;
+                        let _e246 = slot_p[_e244];
+                        let _e248 = j;
+                        let _e250 = slot_share(_e248, K);
+                        w = (_e239 + ((_e243 / _e246) * _e250));
                     }
                 }
                 continuing {
-                    let _e247 = j;
-                    j = (_e247 + 1u);
+                    let _e254 = j;
+                    j = (_e254 + 1u);
                 }
             }
             if first_1 {
-                let _e249 = t;
-                let _e250 = k_1;
-                let _e252 = slot_light[_e250];
-                let _e253 = r;
-                let _e254 = m;
-                let _e256 = k_1;
-                let _e259 = slot_u[_e256].x;
-                let _e260 = k_1;
-                let _e263 = slot_u[_e260].y;
-                let _e264 = shade_pick(_e252, x_11, n_8, _e253, _e54, _e254, 1f, _e259, _e263, eps_4);
-                let _e265 = w;
-                let _e266 = scaled(_e264, _e265);
-                let _e267 = add(_e249, _e266);
-                t = _e267;
+                let _e256 = t;
+                let _e257 = k_1;
+                let _e259 = slot_light[_e257];
+                let _e260 = r;
+                let _e261 = m;
+                let _e263 = k_1;
+                let _e266 = slot_u[_e263].x;
+                let _e267 = k_1;
+                let _e270 = slot_u[_e267].y;
+                let _e271 = shade_pick(_e259, x_11, n_8, _e260, _e54, _e261, 1f, _e266, _e270, eps_4);
+                let _e272 = w;
+                let _e273 = scaled(_e271, _e272);
+                let _e274 = add(_e256, _e273);
+                t = _e274;
             }
         }
         continuing {
-            let _e269 = k_1;
-            k_1 = (_e269 + 1u);
+            let _e276 = k_1;
+            k_1 = (_e276 + 1u);
         }
     }
-    let _e273 = t.e;
-    let _e274 = count;
-    textureStore(out_tex, texel_1, vec4<f32>(_e273, f32(_e274)));
-    direct_count(DIRECT_COUNT_PIXELS, 1u);
-    let _e280 = count;
-    direct_count(DIRECT_COUNT_CANDIDATES, _e280);
-    let _e283 = evaluations;
-    direct_count(DIRECT_COUNT_EVALUATIONS, _e283);
-    let _e286 = rays_cast;
-    direct_count(DIRECT_COUNT_RAYS, _e286);
-    let _e289 = nodes_visited;
-    direct_count(DIRECT_COUNT_NODES, _e289);
+    let _e280 = t.e;
+    let _e281 = count;
+    textureStore(out_tex, texel_1, vec4<f32>(_e280, f32(_e281)));
+    counter_add(DIRECT_COUNT_PIXELS, 1u);
+    let _e287 = count;
+    counter_add(DIRECT_COUNT_CANDIDATES, _e287);
+    let _e290 = evaluations;
+    counter_add(DIRECT_COUNT_EVALUATIONS, _e290);
+    let _e293 = rays_cast;
+    counter_add(DIRECT_COUNT_RAYS, _e293);
+    let _e296 = nodes_visited;
+    counter_add(DIRECT_COUNT_NODES, _e296);
     return;
 }

@@ -360,6 +360,10 @@ fn weighted_replace(w_3: f32, w_sum: f32, u_2: f32) -> bool {
     return ((u_2 * w_sum) < w_3);
 }
 
+fn weighted_threshold(w_sum_1: f32, u_3: f32) -> f32 {
+    return (w_sum_1 / (1f - u_3));
+}
+
 fn resample_target(c_2: vec3<f32>) -> f32 {
     return (((c_2.x + c_2.y) + c_2.z) * 0.33333334f);
 }
@@ -418,11 +422,11 @@ fn gris_weight(own: f32, all_: f32, p_hat: f32, w_4: f32) -> f32 {
     return (((own / all_) * p_hat) * w_4);
 }
 
-fn gris_contribution_weight(w_sum_1: f32, p_hat_1: f32) -> f32 {
+fn gris_contribution_weight(w_sum_2: f32, p_hat_1: f32) -> f32 {
     if !((p_hat_1 > 0f)) {
         return 0f;
     }
-    return (w_sum_1 / p_hat_1);
+    return (w_sum_2 / p_hat_1);
 }
 
 fn ggx_d(cos_h: f32, sin2_h: f32, alpha: f32) -> f32 {
@@ -689,9 +693,9 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_5: vec3<f32>, 
     }
     let inv = (1f / det);
     let s_6 = (o_1 - a_5);
-    let u_3 = (dot(s_6, p_5) * inv);
-    if !((u_3 < 0f)) {
-        local_14 = (u_3 > 1f);
+    let u_4 = (dot(s_6, p_5) * inv);
+    if !((u_4 < 0f)) {
+        local_14 = (u_4 > 1f);
     } else {
         local_14 = true;
     }
@@ -702,7 +706,7 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_5: vec3<f32>, 
     let q_5 = cross(s_6, e1_);
     let v_8 = (dot(d_3, q_5) * inv);
     if !((v_8 < 0f)) {
-        local_15 = ((u_3 + v_8) > 1f);
+        local_15 = ((u_4 + v_8) > 1f);
     } else {
         local_15 = true;
     }
@@ -1276,7 +1280,7 @@ fn reuse_domains(x_13: vec3<f32>, n_11: vec3<f32>, d_6: f32, h_1: u32, doms_1: p
 }
 
 fn gris_combine(q_4: u32, cur: ReuseSlot, cur_ris: bool, cur_c: f32, k0_: u32, k1_: u32, x_14: vec3<f32>, n_12: vec3<f32>, m_5: Material, doms_2: ptr<function, array<Domain, 3>>, hs_1: ptr<function, u32>) -> ReuseSlot {
-    var w_sum_2: f32 = 0f;
+    var w_sum_3: f32 = 0f;
     var out: ReuseSlot = ReuseSlot(0u, 0u, 0f);
     var out_target: f32 = 0f;
     var j_4: u32;
@@ -1377,13 +1381,13 @@ fn gris_combine(q_4: u32, cur: ReuseSlot, cur_ris: bool, cur_c: f32, k0_: u32, k
             let _e118 = all_1;
             let _e119 = w_in;
             let _e120 = gris_weight(_e117, _e118, _e59, _e119);
-            let _e121 = w_sum_2;
-            w_sum_2 = (_e121 + _e120);
+            let _e121 = w_sum_3;
+            w_sum_3 = (_e121 + _e120);
             let _e123 = (*hs_1);
             let _e124 = pcg_hash(_e123);
             (*hs_1) = _e124;
             if (_e120 > 0f) {
-                let _e129 = w_sum_2;
+                let _e129 = w_sum_3;
                 let _e130 = (*hs_1);
                 let _e131 = xi_from_bits(_e130);
                 let _e132 = weighted_replace(_e120, _e129, _e131);
@@ -1403,7 +1407,7 @@ fn gris_combine(q_4: u32, cur: ReuseSlot, cur_ris: bool, cur_c: f32, k0_: u32, k
             j_4 = (_e137 + 1u);
         }
     }
-    let _e140 = w_sum_2;
+    let _e140 = w_sum_3;
     let _e141 = out_target;
     let _e142 = gris_contribution_weight(_e140, _e141);
     out.w = _e142;
@@ -1427,6 +1431,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     var total: vec3<f32> = vec3(0f);
     var count: u32 = 0u;
     var hc: u32;
+    var threshold: array<f32, 8>;
     var b: u32;
     var q: u32;
     var local_2: bool;
@@ -1505,63 +1510,59 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     let _e123 = pick_stream(_e122);
     h = _e123;
     hc = _e122;
-    let _e145 = bsh_first(BSH);
-    let _e146 = r;
-    let _e147 = bsh_next_leaf_lobe(BSH, _e145, x_17, _e146, _e99);
-    b = _e147;
+    let _e146 = bsh_first(BSH);
+    let _e147 = r;
+    let _e148 = bsh_next_leaf_lobe(BSH, _e146, x_17, _e147, _e99);
+    b = _e148;
     loop {
-        let _e149 = b;
-        if (_e149 != BSH_NONE) {
+        let _e150 = b;
+        if (_e150 != BSH_NONE) {
         } else {
             break;
         }
         {
-            let _e152 = count;
-            count = (_e152 + 1u);
-            let _e156 = b;
-            let li_3 = bsh_nodes[_e156].light;
-            let _e160 = h;
-            let _e161 = pcg_hash(_e160);
-            h = _e161;
+            let _e153 = count;
+            count = (_e153 + 1u);
+            let _e157 = b;
+            let li_3 = bsh_nodes[_e157].light;
+            let _e161 = h;
+            let _e162 = pcg_hash(_e161);
+            h = _e162;
             let h1_1 = h;
-            let _e163 = h;
-            let _e164 = pcg_hash(_e163);
-            h = _e164;
-            let _e165 = h;
-            let _e166 = grid_cells(h1_1, _e165);
-            let _e167 = grid_coordinate(h1_1);
-            let _e168 = h;
-            let _e169 = grid_coordinate(_e168);
-            let u_4 = vec2<f32>(_e167, _e169);
-            let _e171 = r;
-            let _e172 = m;
-            let _e177 = shade_pick_traced(li_3, x_17, n_15, _e171, _e99, _e172, 1f, u_4.x, u_4.y, eps_3, false);
-            let _e178 = output_of(_e177);
-            let _e179 = resample_target(_e178);
-            if (_e179 > 0f) {
-                let _e182 = total;
-                total = (_e182 + _e178);
+            let _e164 = h;
+            let _e165 = pcg_hash(_e164);
+            h = _e165;
+            let _e166 = h;
+            let _e167 = grid_cells(h1_1, _e166);
+            let _e168 = grid_coordinate(h1_1);
+            let _e169 = h;
+            let _e170 = grid_coordinate(_e169);
+            let u_5 = vec2<f32>(_e168, _e170);
+            let _e172 = r;
+            let _e173 = m;
+            let _e178 = shade_pick_traced(li_3, x_17, n_15, _e172, _e99, _e173, 1f, u_5.x, u_5.y, eps_3, false);
+            let _e179 = output_of(_e178);
+            let _e180 = resample_target(_e179);
+            if (_e180 > 0f) {
+                let _e183 = total;
+                total = (_e183 + _e179);
                 q = 0u;
                 loop {
-                    let _e186 = q;
-                    if (_e186 < K) {
+                    let _e187 = q;
+                    if (_e187 < K) {
                     } else {
                         break;
                     }
                     {
-                        let _e189 = hc;
-                        let _e190 = pcg_hash(_e189);
-                        hc = _e190;
-                        let _e191 = q;
-                        let _e193 = slot_target(_e178, _e191, K);
-                        if (_e193 > 0f) {
-                            let _e198 = total;
-                            let _e199 = q;
-                            let _e201 = slot_target(_e198, _e199, K);
-                            let _e202 = hc;
-                            let _e203 = xi_from_bits(_e202);
-                            let _e204 = weighted_replace(_e193, _e201, _e203);
-                            local_2 = _e204;
+                        let _e190 = q;
+                        let _e192 = slot_target(_e179, _e190, K);
+                        let _e193 = total;
+                        let _e194 = q;
+                        let _e196 = slot_target(_e193, _e194, K);
+                        if (_e192 > 0f) {
+                            let _e201 = q;
+                            let _e203 = threshold[_e201];
+                            local_2 = (_e196 > _e203);
                         } else {
                             local_2 = false;
                         }
@@ -1570,235 +1571,243 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
                             let _e207 = q;
                             slot_light[_e207] = li_3;
                             let _e209 = q;
-                            slot_u[_e209] = u_4;
+                            slot_u[_e209] = u_5;
                             let _e211 = q;
-                            slot_p[_e211] = _e193;
+                            slot_p[_e211] = _e192;
                             let _e213 = q;
-                            slot_cells[_e213] = _e166;
+                            slot_cells[_e213] = _e167;
+                            let _e215 = hc;
+                            let _e216 = pcg_hash(_e215);
+                            hc = _e216;
+                            let _e217 = q;
+                            let _e219 = hc;
+                            let _e220 = xi_from_bits(_e219);
+                            let _e221 = weighted_threshold(_e196, _e220);
+                            threshold[_e217] = _e221;
                         }
                     }
                     continuing {
-                        let _e216 = q;
-                        q = (_e216 + 1u);
+                        let _e223 = q;
+                        q = (_e223 + 1u);
                     }
                 }
             }
         }
         continuing {
-            let _e220 = b;
-            let _e223 = bsh_nodes[_e220].next;
-            let _e224 = r;
-            let _e225 = bsh_next_leaf_lobe(BSH, _e223, x_17, _e224, _e99);
-            b = _e225;
+            let _e227 = b;
+            let _e230 = bsh_nodes[_e227].next;
+            let _e231 = r;
+            let _e232 = bsh_next_leaf_lobe(BSH, _e230, x_17, _e231, _e99);
+            b = _e232;
         }
     }
-    let _e229 = view.width;
-    let pixel_1 = ((gid.y * _e229) + gid.x);
-    let _e236 = view.eye;
-    let _e240 = reuse_stream(_e122, 0u);
-    let _e241 = reuse_domains(x_17, n_15, length((_e236 - x_17)), _e240, (&doms));
-    if (_e241 > 0u) {
-        let _e248 = doms[0].temporal;
-        local_3 = _e248;
+    let _e236 = view.width;
+    let pixel_1 = ((gid.y * _e236) + gid.x);
+    let _e243 = view.eye;
+    let _e247 = reuse_stream(_e122, 0u);
+    let _e248 = reuse_domains(x_17, n_15, length((_e243 - x_17)), _e247, (&doms));
+    if (_e248 > 0u) {
+        let _e255 = doms[0].temporal;
+        local_3 = _e255;
     } else {
         local_3 = false;
     }
     let own_history = local_3;
     let first_1 = select(0u, 1u, own_history);
-    let _e256 = doms[0].c;
-    let confidence = (1f + select(0f, _e256, own_history));
-    let _e262 = reuse_stream(_e122, 1u);
-    hs = _e262;
+    let _e263 = doms[0].c;
+    let confidence = (1f + select(0f, _e263, own_history));
+    let _e269 = reuse_stream(_e122, 1u);
+    hs = _e269;
     loop {
-        let _e268 = q_1;
-        if (_e268 < K) {
+        let _e275 = q_1;
+        if (_e275 < K) {
         } else {
             break;
         }
         {
-            let _e271 = q_1;
-            let _e273 = q_1;
-            let _e274 = q_1;
-            let _e276 = slot_light[_e274];
-            let _e277 = q_1;
-            let _e279 = slot_cells[_e277];
-            let _e280 = total;
+            let _e278 = q_1;
+            let _e280 = q_1;
             let _e281 = q_1;
-            let _e283 = slot_target(_e280, _e281, K);
+            let _e283 = slot_light[_e281];
             let _e284 = q_1;
-            let _e286 = slot_p[_e284];
-            let _e295 = m;
-            let _e296 = gris_combine(_e273, ReuseSlot(_e276, _e279, select(0f, _e283, (_e286 > 0f))), true, 1f, 0u, first_1, x_17, n_15, _e295, (&doms), (&hs));
-            kept[_e271] = _e296;
-            let _e297 = q_1;
-            let _e299 = q_1;
-            let _e301 = kept[_e299];
-            fin[_e297] = _e301;
-            if (_e241 > first_1) {
-                let _e303 = q_1;
-                let _e305 = q_1;
-                let _e306 = q_1;
-                let _e308 = kept[_e306];
-                let _e310 = m;
-                let _e311 = gris_combine(_e305, _e308, false, confidence, first_1, _e241, x_17, n_15, _e310, (&doms), (&hs));
-                fin[_e303] = _e311;
+            let _e286 = slot_cells[_e284];
+            let _e287 = total;
+            let _e288 = q_1;
+            let _e290 = slot_target(_e287, _e288, K);
+            let _e291 = q_1;
+            let _e293 = slot_p[_e291];
+            let _e302 = m;
+            let _e303 = gris_combine(_e280, ReuseSlot(_e283, _e286, select(0f, _e290, (_e293 > 0f))), true, 1f, 0u, first_1, x_17, n_15, _e302, (&doms), (&hs));
+            kept[_e278] = _e303;
+            let _e304 = q_1;
+            let _e306 = q_1;
+            let _e308 = kept[_e306];
+            fin[_e304] = _e308;
+            if (_e248 > first_1) {
+                let _e310 = q_1;
+                let _e312 = q_1;
+                let _e313 = q_1;
+                let _e315 = kept[_e313];
+                let _e317 = m;
+                let _e318 = gris_combine(_e312, _e315, false, confidence, first_1, _e248, x_17, n_15, _e317, (&doms), (&hs));
+                fin[_e310] = _e318;
             }
         }
         continuing {
-            let _e313 = q_1;
-            q_1 = (_e313 + 1u);
+            let _e320 = q_1;
+            q_1 = (_e320 + 1u);
         }
     }
     loop {
-        let _e319 = k;
-        if (_e319 < K) {
+        let _e326 = k;
+        if (_e326 < K) {
         } else {
             break;
         }
         {
-            let _e322 = k;
-            let _e324 = k;
-            let _e327 = fin[_e324].light;
             let _e329 = k;
-            let _e332 = fin[_e329].u;
-            let _e334 = k;
-            let _e337 = fin[_e334].light;
-            let _e340 = lights[_e337].kind;
-            keys[_e322] = vec2<u32>(_e327, select(0u, _e332, (_e340 == LIGHT_TRIANGLE)));
-            let _e345 = k;
-            let _e347 = k;
-            let _e350 = fin[_e347].w;
-            held[_e345] = (_e350 > 0f);
+            let _e331 = k;
+            let _e334 = fin[_e331].light;
+            let _e336 = k;
+            let _e339 = fin[_e336].u;
+            let _e341 = k;
+            let _e344 = fin[_e341].light;
+            let _e347 = lights[_e344].kind;
+            keys[_e329] = vec2<u32>(_e334, select(0u, _e339, (_e347 == LIGHT_TRIANGLE)));
+            let _e352 = k;
+            let _e354 = k;
+            let _e357 = fin[_e354].w;
+            held[_e352] = (_e357 > 0f);
         }
         continuing {
-            let _e354 = k;
-            k = (_e354 + 1u);
+            let _e361 = k;
+            k = (_e361 + 1u);
         }
     }
-    let _e356 = keys;
-    let _e357 = held;
-    let _e358 = first_holders(_e356, _e357);
+    let _e363 = keys;
+    let _e364 = held;
+    let _e365 = first_holders(_e363, _e364);
     loop {
-        let _e362 = k_1;
-        if (_e362 < K) {
+        let _e369 = k_1;
+        if (_e369 < K) {
         } else {
             break;
         }
         {
-            let _e365 = k_1;
-            let _e367 = k_1;
-            if (_e358[_e365] != _e367) {
+            let _e372 = k_1;
+            let _e374 = k_1;
+            if (_e365[_e372] != _e374) {
                 continue;
             }
             w = vec3(0f);
-            let _e372 = k_1;
-            j = _e372;
+            let _e379 = k_1;
+            j = _e379;
             loop {
-                let _e374 = j;
-                if (_e374 < K) {
+                let _e381 = j;
+                if (_e381 < K) {
                 } else {
                     break;
                 }
                 {
-                    let _e377 = j;
-                    let _e379 = k_1;
-                    if (_e358[_e377] == _e379) {
-                        let _e381 = w;
-                        let _e382 = j;
-                        let _e385 = fin[_e382].w;
-                        let _e386 = j;
-                        let _e388 = slot_share(_e386, K);
-                        w = (_e381 + (_e385 * _e388));
+                    let _e384 = j;
+                    let _e386 = k_1;
+                    if (_e365[_e384] == _e386) {
+                        let _e388 = w;
+                        let _e389 = j;
+                        let _e392 = fin[_e389].w;
+                        let _e393 = j;
+                        let _e395 = slot_share(_e393, K);
+                        w = (_e388 + (_e392 * _e395));
                     }
                 }
                 continuing {
-                    let _e392 = j;
-                    j = (_e392 + 1u);
+                    let _e399 = j;
+                    j = (_e399 + 1u);
                 }
             }
-            let _e395 = k_1;
-            let _e398 = fin[_e395].light;
-            let _e400 = lights[_e398];
-            let _e404 = k_1;
-            let _e407 = fin[_e404].u;
-            let _e408 = grid_coordinate(_e407);
-            let _e409 = k_1;
-            let _e412 = fin[_e409].u;
-            let _e415 = grid_coordinate((_e412 << 16u));
-            let _e417 = connect_record(_e400, x_17, n_15, n_15, UNRANGED, UNRANGED, 1f, _e408, _e415, eps_3, true);
-            let _e418 = m;
-            let _e419 = shade_connection(_e417, x_17, n_15, _e418);
-            let _e420 = t;
-            let _e421 = w;
-            let _e422 = scaled(_e419, _e421);
-            let _e423 = add(_e420, _e422);
-            t = _e423;
-            let _e424 = k_1;
-            j_1 = _e424;
+            let _e402 = k_1;
+            let _e405 = fin[_e402].light;
+            let _e407 = lights[_e405];
+            let _e411 = k_1;
+            let _e414 = fin[_e411].u;
+            let _e415 = grid_coordinate(_e414);
+            let _e416 = k_1;
+            let _e419 = fin[_e416].u;
+            let _e422 = grid_coordinate((_e419 << 16u));
+            let _e424 = connect_record(_e407, x_17, n_15, n_15, UNRANGED, UNRANGED, 1f, _e415, _e422, eps_3, true);
+            let _e425 = m;
+            let _e426 = shade_connection(_e424, x_17, n_15, _e425);
+            let _e427 = t;
+            let _e428 = w;
+            let _e429 = scaled(_e426, _e428);
+            let _e430 = add(_e427, _e429);
+            t = _e430;
+            let _e431 = k_1;
+            j_1 = _e431;
             loop {
-                let _e426 = j_1;
-                if (_e426 < K) {
+                let _e433 = j_1;
+                if (_e433 < K) {
                 } else {
                     break;
                 }
                 {
-                    let _e429 = j_1;
-                    let _e431 = k_1;
-                    if (_e358[_e429] == _e431) {
-                        let _e433 = j_1;
-                        let _e435 = output_of(_e419);
-                        let _e436 = resample_target(_e435);
-                        visible[_e433] = (_e436 > 0f);
+                    let _e436 = j_1;
+                    let _e438 = k_1;
+                    if (_e365[_e436] == _e438) {
+                        let _e440 = j_1;
+                        let _e442 = output_of(_e426);
+                        let _e443 = resample_target(_e442);
+                        visible[_e440] = (_e443 > 0f);
                     }
                 }
                 continuing {
-                    let _e440 = j_1;
-                    j_1 = (_e440 + 1u);
+                    let _e447 = j_1;
+                    j_1 = (_e447 + 1u);
                 }
             }
         }
         continuing {
-            let _e443 = k_1;
-            k_1 = (_e443 + 1u);
+            let _e450 = k_1;
+            k_1 = (_e450 + 1u);
         }
     }
     loop {
-        let _e447 = q_2;
-        if (_e447 < K) {
+        let _e454 = q_2;
+        if (_e454 < K) {
         } else {
             break;
         }
         {
-            let _e452 = reuse.visibility;
-            if !((_e452 == 0u)) {
-                let _e458 = q_2;
-                let _e460 = visible[_e458];
-                local_4 = _e460;
+            let _e459 = reuse.visibility;
+            if !((_e459 == 0u)) {
+                let _e465 = q_2;
+                let _e467 = visible[_e465];
+                local_4 = _e467;
             } else {
                 local_4 = true;
             }
             let keep = local_4;
-            let _e466 = q_2;
-            let _e468 = q_2;
-            let _e471 = kept[_e468].light;
-            let _e472 = q_2;
-            let _e475 = kept[_e472].u;
-            let _e476 = q_2;
-            let _e479 = kept[_e476].w;
-            reuse_next[pixel_1].slots[_e466] = ReuseSlot(_e471, _e475, select(0f, _e479, keep));
+            let _e473 = q_2;
+            let _e475 = q_2;
+            let _e478 = kept[_e475].light;
+            let _e479 = q_2;
+            let _e482 = kept[_e479].u;
+            let _e483 = q_2;
+            let _e486 = kept[_e483].w;
+            reuse_next[pixel_1].slots[_e473] = ReuseSlot(_e478, _e482, select(0f, _e486, keep));
         }
         continuing {
-            let _e484 = q_2;
-            q_2 = (_e484 + 1u);
+            let _e491 = q_2;
+            q_2 = (_e491 + 1u);
         }
     }
-    let _e489 = m;
-    let _e492 = reuse.max_confidence;
-    let _e494 = reuse_surface(x_17, n_15, _e489, min(confidence, _e492));
-    reuse_next[pixel_1].surface = _e494;
-    let _e497 = t.diffuse;
-    let _e499 = t.specular;
-    let _e501 = count;
-    textureStore(out_tex, texel_1, vec4<f32>((_e497 + _e499), f32(_e501)));
+    let _e496 = m;
+    let _e499 = reuse.max_confidence;
+    let _e501 = reuse_surface(x_17, n_15, _e496, min(confidence, _e499));
+    reuse_next[pixel_1].surface = _e501;
+    let _e504 = t.diffuse;
+    let _e506 = t.specular;
+    let _e508 = count;
+    textureStore(out_tex, texel_1, vec4<f32>((_e504 + _e506), f32(_e508)));
     return;
 }

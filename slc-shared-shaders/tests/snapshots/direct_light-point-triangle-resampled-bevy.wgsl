@@ -254,10 +254,10 @@ fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     if _e16 {
         return 0f;
     }
-    let w_8 = (v_6 / vec3(sqrt(d2_6)));
-    let cos_x_1 = -(dot(n, w_8));
+    let w_7 = (v_6 / vec3(sqrt(d2_6)));
+    let cos_x_1 = -(dot(n, w_7));
     if !((cos_x_1 <= 0f)) {
-        local_5 = (dot(ng, w_8) >= 0f);
+        local_5 = (dot(ng, w_7) >= 0f);
     } else {
         local_5 = true;
     }
@@ -297,8 +297,8 @@ fn bsh_range_bound(node_1: BshNode) -> f32 {
     return _e8;
 }
 
-fn weighted_replace(w_3: f32, w_sum: f32, u_2: f32) -> bool {
-    return ((u_2 * w_sum) < w_3);
+fn weighted_threshold(w_sum: f32, u_2: f32) -> f32 {
+    return (w_sum / (1f - u_2));
 }
 
 fn resample_target(c_2: vec3<f32>) -> f32 {
@@ -323,19 +323,19 @@ fn slot_target(c_3: vec3<f32>, slot: u32, k_2: u32) -> f32 {
 fn slot_share(slot_1: u32, k_3: u32) -> vec3<f32> {
     if (k_3 < 3u) {
         let _e4 = to_f32_(k_3);
-        let w_9 = (1f / _e4);
-        return vec3<f32>(w_9, w_9, w_9);
+        let w_8 = (1f / _e4);
+        return vec3<f32>(w_8, w_8, w_8);
     }
     let j_3 = (slot_1 % 3u);
     let _e15 = to_f32_((((k_3 + 2u) - j_3) / 3u));
-    let w_10 = (1f / _e15);
+    let w_9 = (1f / _e15);
     if (j_3 == 0u) {
-        return vec3<f32>(w_10, 0f, 0f);
+        return vec3<f32>(w_9, 0f, 0f);
     }
     if (j_3 == 1u) {
-        return vec3<f32>(0f, w_10, 0f);
+        return vec3<f32>(0f, w_9, 0f);
     }
-    return vec3<f32>(0f, 0f, w_10);
+    return vec3<f32>(0f, 0f, w_9);
 }
 
 fn ggx_d(cos_h: f32, sin2_h: f32, alpha: f32) -> f32 {
@@ -636,14 +636,14 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_5: vec3<f32>, 
     return -1f;
 }
 
-fn light_intensity(l_1: GpuLight, w_4: vec3<f32>) -> vec3<f32> {
+fn light_intensity(l_1: GpuLight, w_3: vec3<f32>) -> vec3<f32> {
     switch l_1.kind {
         case 0u: {
             return l_1.intensity;
         }
         case 3u: {
             let _e8 = triangle_normal(l_1.p0_, l_1.p1_, l_1.p2_);
-            let _e10 = triangle_lobe(_e8, l_1.a, w_4);
+            let _e10 = triangle_lobe(_e8, l_1.a, w_3);
             return (l_1.intensity * _e10);
         }
         default: {
@@ -913,15 +913,15 @@ fn shade_connection(c_8: Connection, x_9: vec3<f32>, n_6: vec3<f32>, m_1: Materi
     return _e28;
 }
 
-fn shade_pick_traced(li_2: u32, x_10: vec3<f32>, n_7: vec3<f32>, r_9: vec3<f32>, rl_6: vec4<f32>, m_2: Material, w_5: f32, u1_4: f32, u2_4: f32, eps_2: f32, trace_3: bool) -> Shaded {
+fn shade_pick_traced(li_2: u32, x_10: vec3<f32>, n_7: vec3<f32>, r_9: vec3<f32>, rl_6: vec4<f32>, m_2: Material, w_4: f32, u1_4: f32, u2_4: f32, eps_2: f32, trace_3: bool) -> Shaded {
     let _e11 = light_range_scale(li_2, x_10, r_9, rl_6);
-    let _e12 = connect_traced(li_2, x_10, n_7, n_7, _e11, w_5, u1_4, u2_4, eps_2, trace_3);
+    let _e12 = connect_traced(li_2, x_10, n_7, n_7, _e11, w_4, u1_4, u2_4, eps_2, trace_3);
     let _e13 = shade_connection(_e12, x_10, n_7, m_2);
     return _e13;
 }
 
-fn shade_pick(li_3: u32, x_11: vec3<f32>, n_8: vec3<f32>, r_10: vec3<f32>, rl_7: vec4<f32>, m_3: Material, w_6: f32, u1_5: f32, u2_5: f32, eps_3: f32) -> Shaded {
-    let _e11 = shade_pick_traced(li_3, x_11, n_8, r_10, rl_7, m_3, w_6, u1_5, u2_5, eps_3, true);
+fn shade_pick(li_3: u32, x_11: vec3<f32>, n_8: vec3<f32>, r_10: vec3<f32>, rl_7: vec4<f32>, m_3: Material, w_5: f32, u1_5: f32, u2_5: f32, eps_3: f32) -> Shaded {
+    let _e11 = shade_pick_traced(li_3, x_11, n_8, r_10, rl_7, m_3, w_5, u1_5, u2_5, eps_3, true);
     return _e11;
 }
 
@@ -934,8 +934,8 @@ fn add(a_8: Shaded, b_7: Shaded) -> Shaded {
     return Shaded((a_8.e + b_7.e), (a_8.diffuse + b_7.diffuse), (a_8.specular + b_7.specular));
 }
 
-fn scaled(s_2: Shaded, w_7: vec3<f32>) -> Shaded {
-    return Shaded((s_2.e * w_7), (s_2.diffuse * w_7), (s_2.specular * w_7));
+fn scaled(s_2: Shaded, w_6: vec3<f32>) -> Shaded {
+    return Shaded((s_2.e * w_6), (s_2.diffuse * w_6), (s_2.specular * w_6));
 }
 
 fn first_holders(keys_1: array<vec2<u32>, 8>, held_1: array<bool, 8>) -> array<u32, 8> {
@@ -1022,6 +1022,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     var total: vec3<f32> = vec3(0f);
     var count: u32 = 0u;
     var hc: u32;
+    var threshold: array<f32, 8>;
     var b: u32;
     var q: u32;
     var local_2: bool;
@@ -1089,61 +1090,57 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     let _e111 = pick_stream(_e110);
     h = _e111;
     hc = _e110;
-    let _e132 = bsh_first(BSH);
-    let _e133 = r;
-    let _e134 = bsh_next_leaf_lobe(BSH, _e132, x_13, _e133, _e87);
-    b = _e134;
+    let _e133 = bsh_first(BSH);
+    let _e134 = r;
+    let _e135 = bsh_next_leaf_lobe(BSH, _e133, x_13, _e134, _e87);
+    b = _e135;
     loop {
-        let _e136 = b;
-        if (_e136 != BSH_NONE) {
+        let _e137 = b;
+        if (_e137 != BSH_NONE) {
         } else {
             break;
         }
         {
-            let _e139 = count;
-            count = (_e139 + 1u);
-            let _e143 = b;
-            let li_4 = bsh_nodes[_e143].light;
-            let _e147 = h;
-            let _e148 = pcg_hash(_e147);
-            h = _e148;
-            let _e149 = h;
-            let _e150 = xi_from_bits(_e149);
-            let _e151 = h;
-            let _e152 = pcg_hash(_e151);
-            h = _e152;
-            let _e153 = h;
-            let _e154 = xi_from_bits(_e153);
-            let u_4 = vec2<f32>(_e150, _e154);
-            let _e156 = r;
-            let _e157 = m;
-            let _e162 = shade_pick_traced(li_4, x_13, n_11, _e156, _e87, _e157, 1f, u_4.x, u_4.y, eps_4, false);
-            let _e163 = output_of(_e162);
-            let _e164 = resample_target(_e163);
-            if (_e164 > 0f) {
-                let _e167 = total;
-                total = (_e167 + _e163);
+            let _e140 = count;
+            count = (_e140 + 1u);
+            let _e144 = b;
+            let li_4 = bsh_nodes[_e144].light;
+            let _e148 = h;
+            let _e149 = pcg_hash(_e148);
+            h = _e149;
+            let _e150 = h;
+            let _e151 = xi_from_bits(_e150);
+            let _e152 = h;
+            let _e153 = pcg_hash(_e152);
+            h = _e153;
+            let _e154 = h;
+            let _e155 = xi_from_bits(_e154);
+            let u_4 = vec2<f32>(_e151, _e155);
+            let _e157 = r;
+            let _e158 = m;
+            let _e163 = shade_pick_traced(li_4, x_13, n_11, _e157, _e87, _e158, 1f, u_4.x, u_4.y, eps_4, false);
+            let _e164 = output_of(_e163);
+            let _e165 = resample_target(_e164);
+            if (_e165 > 0f) {
+                let _e168 = total;
+                total = (_e168 + _e164);
                 q = 0u;
                 loop {
-                    let _e171 = q;
-                    if (_e171 < K) {
+                    let _e172 = q;
+                    if (_e172 < K) {
                     } else {
                         break;
                     }
                     {
-                        let _e174 = hc;
-                        let _e175 = pcg_hash(_e174);
-                        hc = _e175;
-                        let _e176 = q;
-                        let _e178 = slot_target(_e163, _e176, K);
-                        if (_e178 > 0f) {
-                            let _e183 = total;
-                            let _e184 = q;
-                            let _e186 = slot_target(_e183, _e184, K);
-                            let _e187 = hc;
-                            let _e188 = xi_from_bits(_e187);
-                            let _e189 = weighted_replace(_e178, _e186, _e188);
-                            local_2 = _e189;
+                        let _e175 = q;
+                        let _e177 = slot_target(_e164, _e175, K);
+                        let _e178 = total;
+                        let _e179 = q;
+                        let _e181 = slot_target(_e178, _e179, K);
+                        if (_e177 > 0f) {
+                            let _e186 = q;
+                            let _e188 = threshold[_e186];
+                            local_2 = (_e181 > _e188);
                         } else {
                             local_2 = false;
                         }
@@ -1154,118 +1151,126 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
                             let _e194 = q;
                             slot_u[_e194] = u_4;
                             let _e196 = q;
-                            slot_p[_e196] = _e178;
+                            slot_p[_e196] = _e177;
+                            let _e198 = hc;
+                            let _e199 = pcg_hash(_e198);
+                            hc = _e199;
+                            let _e200 = q;
+                            let _e202 = hc;
+                            let _e203 = xi_from_bits(_e202);
+                            let _e204 = weighted_threshold(_e181, _e203);
+                            threshold[_e200] = _e204;
                         }
                     }
                     continuing {
-                        let _e199 = q;
-                        q = (_e199 + 1u);
+                        let _e206 = q;
+                        q = (_e206 + 1u);
                     }
                 }
             }
         }
         continuing {
-            let _e203 = b;
-            let _e206 = bsh_nodes[_e203].next;
-            let _e207 = r;
-            let _e208 = bsh_next_leaf_lobe(BSH, _e206, x_13, _e207, _e87);
-            b = _e208;
+            let _e210 = b;
+            let _e213 = bsh_nodes[_e210].next;
+            let _e214 = r;
+            let _e215 = bsh_next_leaf_lobe(BSH, _e213, x_13, _e214, _e87);
+            b = _e215;
         }
     }
     loop {
-        let _e213 = k;
-        if (_e213 < K) {
+        let _e220 = k;
+        if (_e220 < K) {
         } else {
             break;
         }
         {
-            let _e216 = k;
-            let _e218 = k;
-            let _e220 = slot_light[_e218];
-            keys[_e216] = vec2<u32>(_e220, 0u);
             let _e223 = k;
             let _e225 = k;
-            let _e227 = slot_p[_e225];
-            held[_e223] = (_e227 > 0f);
+            let _e227 = slot_light[_e225];
+            keys[_e223] = vec2<u32>(_e227, 0u);
+            let _e230 = k;
+            let _e232 = k;
+            let _e234 = slot_p[_e232];
+            held[_e230] = (_e234 > 0f);
         }
         continuing {
-            let _e231 = k;
-            k = (_e231 + 1u);
+            let _e238 = k;
+            k = (_e238 + 1u);
         }
     }
-    let _e233 = keys;
-    let _e234 = held;
-    let _e235 = first_holders(_e233, _e234);
+    let _e240 = keys;
+    let _e241 = held;
+    let _e242 = first_holders(_e240, _e241);
     loop {
-        let _e238 = k_1;
-        if (_e238 < K) {
+        let _e245 = k_1;
+        if (_e245 < K) {
         } else {
             break;
         }
         {
             w = vec3(0f);
-            let _e244 = k_1;
-            let _e246 = k_1;
-            let first_1 = (_e235[_e244] == _e246);
-            let _e248 = k_1;
-            j = _e248;
+            let _e251 = k_1;
+            let _e253 = k_1;
+            let first_1 = (_e242[_e251] == _e253);
+            let _e255 = k_1;
+            j = _e255;
             loop {
-                let _e250 = j;
-                if (_e250 < K) {
+                let _e257 = j;
+                if (_e257 < K) {
                     local_3 = first_1;
                 } else {
                     local_3 = false;
                 }
-                let _e256 = local_3;
-                if _e256 {
+                let _e263 = local_3;
+                if _e263 {
                 } else {
                     break;
                 }
                 {
-                    let _e257 = j;
-                    let _e259 = k_1;
-                    if (_e235[_e257] == _e259) {
-                        let _e261 = w;
-                        let _e262 = total;
-                        let _e263 = j;
-                        let _e265 = slot_target(_e262, _e263, K);
-                        let _e266 = j;
-                        let _e268 = slot_p[_e266];
+                    let _e264 = j;
+                    let _e266 = k_1;
+                    if (_e242[_e264] == _e266) {
+                        let _e268 = w;
+                        let _e269 = total;
                         let _e270 = j;
-                        let _e272 = slot_share(_e270, K);
-                        w = (_e261 + ((_e265 / _e268) * _e272));
+                        let _e272 = slot_target(_e269, _e270, K);
+                        let _e273 = j;
+                        let _e275 = slot_p[_e273];
+                        let _e277 = j;
+                        let _e279 = slot_share(_e277, K);
+                        w = (_e268 + ((_e272 / _e275) * _e279));
                     }
                 }
                 continuing {
-                    let _e276 = j;
-                    j = (_e276 + 1u);
+                    let _e283 = j;
+                    j = (_e283 + 1u);
                 }
             }
             if first_1 {
-                let _e278 = t;
-                let _e279 = k_1;
-                let _e281 = slot_light[_e279];
-                let _e282 = r;
-                let _e283 = m;
-                let _e285 = k_1;
-                let _e288 = slot_u[_e285].x;
-                let _e289 = k_1;
-                let _e292 = slot_u[_e289].y;
-                let _e293 = shade_pick(_e281, x_13, n_11, _e282, _e87, _e283, 1f, _e288, _e292, eps_4);
-                let _e294 = w;
-                let _e295 = scaled(_e293, _e294);
-                let _e296 = add(_e278, _e295);
-                t = _e296;
+                let _e285 = t;
+                let _e286 = k_1;
+                let _e288 = slot_light[_e286];
+                let _e289 = r;
+                let _e290 = m;
+                let _e292 = k_1;
+                let _e295 = slot_u[_e292].x;
+                let _e296 = k_1;
+                let _e299 = slot_u[_e296].y;
+                let _e300 = shade_pick(_e288, x_13, n_11, _e289, _e87, _e290, 1f, _e295, _e299, eps_4);
+                let _e301 = w;
+                let _e302 = scaled(_e300, _e301);
+                let _e303 = add(_e285, _e302);
+                t = _e303;
             }
         }
         continuing {
-            let _e298 = k_1;
-            k_1 = (_e298 + 1u);
+            let _e305 = k_1;
+            k_1 = (_e305 + 1u);
         }
     }
-    let _e302 = t.diffuse;
-    let _e304 = t.specular;
-    let _e306 = count;
-    textureStore(out_tex, texel_1, vec4<f32>((_e302 + _e304), f32(_e306)));
+    let _e309 = t.diffuse;
+    let _e311 = t.specular;
+    let _e313 = count;
+    textureStore(out_tex, texel_1, vec4<f32>((_e309 + _e311), f32(_e313)));
     return;
 }

@@ -264,10 +264,10 @@ fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     if _e16 {
         return 0f;
     }
-    let w_7 = (v_7 / vec3(sqrt(d2_7)));
-    let cos_x_1 = -(dot(n, w_7));
+    let w_6 = (v_7 / vec3(sqrt(d2_7)));
+    let cos_x_1 = -(dot(n, w_6));
     if !((cos_x_1 <= 0f)) {
-        local_3 = (dot(ng, w_7) >= 0f);
+        local_3 = (dot(ng, w_6) >= 0f);
     } else {
         local_3 = true;
     }
@@ -307,13 +307,13 @@ fn bsh_range_bound(node_1: BshNode) -> f32 {
     return _e8;
 }
 
-fn weighted_replace(w_2: f32, w_sum: f32, u_2: f32) -> bool {
-    return ((u_2 * w_sum) < w_2);
+fn weighted_threshold(w_sum: f32, u_2: f32) -> f32 {
+    return (w_sum / (1f - u_2));
 }
 
-fn weighted_pick_weight(w_sum_1: f32, w_3: f32, k_2: u32) -> f32 {
+fn weighted_pick_weight(w_sum_1: f32, w_2: f32, k_2: u32) -> f32 {
     let _e3 = to_f32_(k_2);
-    return (w_sum_1 / (_e3 * w_3));
+    return (w_sum_1 / (_e3 * w_2));
 }
 
 fn ggx_alpha(roughness: f32) -> f32 {
@@ -721,11 +721,11 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_4: vec3<f32>, 
     return -1f;
 }
 
-fn light_intensity(l_2: GpuLight, w_4: vec3<f32>) -> vec3<f32> {
+fn light_intensity(l_2: GpuLight, w_3: vec3<f32>) -> vec3<f32> {
     switch l_2.kind {
         case 3u: {
             let _e7 = triangle_normal(l_2.p0_, l_2.p1_, l_2.p2_);
-            let _e9 = triangle_lobe(_e7, l_2.a, w_4);
+            let _e9 = triangle_lobe(_e7, l_2.a, w_3);
             return (l_2.intensity * _e9);
         }
         default: {
@@ -987,70 +987,76 @@ fn light_weight(li_2: u32, x_10: vec3<f32>, n_9: vec3<f32>, r_9: vec3<f32>, lobe
 fn bsh_weighted_collect(x_11: vec3<f32>, n_10: vec3<f32>, r_10: vec3<f32>, lobe_8: vec4<f32>, rl_7: vec4<f32>, h0_: u32) -> WeightedPicks {
     var picks: WeightedPicks;
     var h_1: u32;
+    var threshold: array<f32, 8>;
     var b_6: u32;
     var s_1: u32;
 
     picks.w_sum = 0f;
     picks.n = 0u;
     h_1 = h0_;
-    let _e14 = bsh_first(BSH);
-    let _e15 = bsh_next_leaf_lobe(BSH, _e14, x_11, r_10, rl_7);
-    b_6 = _e15;
+    let _e15 = bsh_first(BSH);
+    let _e16 = bsh_next_leaf_lobe(BSH, _e15, x_11, r_10, rl_7);
+    b_6 = _e16;
     loop {
-        let _e17 = b_6;
-        if (_e17 != BSH_NONE) {
+        let _e18 = b_6;
+        if (_e18 != BSH_NONE) {
         } else {
             break;
         }
         {
-            let _e21 = picks.n;
-            picks.n = (_e21 + 1u);
-            let _e25 = b_6;
-            let li_5 = bsh_nodes[_e25].light;
-            let _e29 = light_weight(li_5, x_11, n_10, r_10, lobe_8, rl_7);
-            if (_e29 > 0f) {
-                let _e33 = picks.w_sum;
-                picks.w_sum = (_e33 + _e29);
+            let _e22 = picks.n;
+            picks.n = (_e22 + 1u);
+            let _e26 = b_6;
+            let li_5 = bsh_nodes[_e26].light;
+            let _e30 = light_weight(li_5, x_11, n_10, r_10, lobe_8, rl_7);
+            if (_e30 > 0f) {
+                let _e34 = picks.w_sum;
+                picks.w_sum = (_e34 + _e30);
                 s_1 = 0u;
                 loop {
-                    let _e37 = s_1;
-                    if (_e37 < K) {
+                    let _e38 = s_1;
+                    if (_e38 < K) {
                     } else {
                         break;
                     }
                     {
-                        let _e40 = h_1;
-                        let _e41 = pcg_hash(_e40);
-                        h_1 = _e41;
-                        let _e43 = picks.w_sum;
-                        let _e44 = h_1;
-                        let _e45 = xi_from_bits(_e44);
-                        let _e46 = weighted_replace(_e29, _e43, _e45);
-                        if _e46 {
+                        let _e42 = picks.w_sum;
+                        let _e43 = s_1;
+                        let _e45 = threshold[_e43];
+                        if (_e42 > _e45) {
                             let _e48 = s_1;
                             picks.light[_e48] = li_5;
                             let _e51 = s_1;
-                            picks.w[_e51] = _e29;
+                            picks.w[_e51] = _e30;
+                            let _e53 = h_1;
+                            let _e54 = pcg_hash(_e53);
+                            h_1 = _e54;
+                            let _e55 = s_1;
+                            let _e58 = picks.w_sum;
+                            let _e59 = h_1;
+                            let _e60 = xi_from_bits(_e59);
+                            let _e61 = weighted_threshold(_e58, _e60);
+                            threshold[_e55] = _e61;
                         }
                     }
                     continuing {
-                        let _e54 = s_1;
-                        s_1 = (_e54 + 1u);
+                        let _e63 = s_1;
+                        s_1 = (_e63 + 1u);
                     }
                 }
             }
         }
         continuing {
-            let _e58 = b_6;
-            let _e61 = bsh_nodes[_e58].next;
-            let _e62 = bsh_next_leaf_lobe(BSH, _e61, x_11, r_10, rl_7);
-            b_6 = _e62;
+            let _e67 = b_6;
+            let _e70 = bsh_nodes[_e67].next;
+            let _e71 = bsh_next_leaf_lobe(BSH, _e70, x_11, r_10, rl_7);
+            b_6 = _e71;
         }
     }
-    let _e64 = h_1;
-    picks.h = _e64;
-    let _e65 = picks;
-    return _e65;
+    let _e73 = h_1;
+    picks.h = _e73;
+    let _e74 = picks;
+    return _e74;
 }
 
 fn surface_at(texel: vec2<i32>) -> vec4<f32> {
@@ -1080,15 +1086,15 @@ fn shade_connection(c_6: Connection, x_12: vec3<f32>, n_11: vec3<f32>, m_1: Mate
     return _e47;
 }
 
-fn shade_pick_traced(li_3: u32, x_13: vec3<f32>, n_12: vec3<f32>, r_11: vec3<f32>, rl_8: vec4<f32>, m_2: Material, w_5: f32, u1_4: f32, u2_4: f32, eps_2: f32, trace_3: bool) -> Shaded {
+fn shade_pick_traced(li_3: u32, x_13: vec3<f32>, n_12: vec3<f32>, r_11: vec3<f32>, rl_8: vec4<f32>, m_2: Material, w_4: f32, u1_4: f32, u2_4: f32, eps_2: f32, trace_3: bool) -> Shaded {
     let _e11 = light_range_scale(li_3, x_13, r_11, rl_8);
-    let _e12 = connect_traced(li_3, x_13, n_12, n_12, _e11, w_5, u1_4, u2_4, eps_2, trace_3);
+    let _e12 = connect_traced(li_3, x_13, n_12, n_12, _e11, w_4, u1_4, u2_4, eps_2, trace_3);
     let _e13 = shade_connection(_e12, x_13, n_12, m_2);
     return _e13;
 }
 
-fn shade_pick(li_4: u32, x_14: vec3<f32>, n_13: vec3<f32>, r_12: vec3<f32>, rl_9: vec4<f32>, m_3: Material, w_6: f32, u1_5: f32, u2_5: f32, eps_3: f32) -> Shaded {
-    let _e11 = shade_pick_traced(li_4, x_14, n_13, r_12, rl_9, m_3, w_6, u1_5, u2_5, eps_3, true);
+fn shade_pick(li_4: u32, x_14: vec3<f32>, n_13: vec3<f32>, r_12: vec3<f32>, rl_9: vec4<f32>, m_3: Material, w_5: f32, u1_5: f32, u2_5: f32, eps_3: f32) -> Shaded {
+    let _e11 = shade_pick_traced(li_4, x_14, n_13, r_12, rl_9, m_3, w_5, u1_5, u2_5, eps_3, true);
     return _e11;
 }
 

@@ -752,9 +752,13 @@ fn weighted_replace(w_4: f32, w_sum: f32, u_2: f32) -> bool {
     return ((u_2 * w_sum) < w_4);
 }
 
-fn weighted_pick_weight(w_sum_1: f32, w_5: f32, k_2: u32) -> f32 {
+fn weighted_threshold(w_sum_1: f32, u_3: f32) -> f32 {
+    return (w_sum_1 / (1f - u_3));
+}
+
+fn weighted_pick_weight(w_sum_2: f32, w_5: f32, k_2: u32) -> f32 {
     let _e3 = to_f32_(k_2);
-    return (w_sum_1 / (_e3 * w_5));
+    return (w_sum_2 / (_e3 * w_5));
 }
 
 fn reservoir_select_pdf(seen: u32, in_range: bool, k_3: u32) -> f32 {
@@ -834,20 +838,20 @@ fn gris_weight(own: f32, all_: f32, p_hat: f32, w_6: f32) -> f32 {
     return (((own / all_) * p_hat) * w_6);
 }
 
-fn gris_contribution_weight(w_sum_2: f32, p_hat_1: f32) -> f32 {
+fn gris_contribution_weight(w_sum_3: f32, p_hat_1: f32) -> f32 {
     if !((p_hat_1 > 0f)) {
         return 0f;
     }
-    return (w_sum_2 / p_hat_1);
+    return (w_sum_3 / p_hat_1);
 }
 
-fn alias_choice(column: u32, other: u32, keep: f32, u_3: f32) -> u32 {
-    return select(other, column, (u_3 < keep));
+fn alias_choice(column: u32, other: u32, keep: f32, u_4: f32) -> u32 {
+    return select(other, column, (u_4 < keep));
 }
 
-fn uniform_light(u_4: f32, n_8: u32) -> u32 {
+fn uniform_light(u_5: f32, n_8: u32) -> u32 {
     let _e2 = to_f32_(n_8);
-    let _e4 = to_u32_((u_4 * _e2));
+    let _e4 = to_u32_((u_5 * _e2));
     return min(_e4, (n_8 - 1u));
 }
 
@@ -1390,11 +1394,11 @@ fn cone_weight(center_7: vec3<f32>, radius_7: f32, phi_4: f32, axis_5: vec3<f32>
     return _e22;
 }
 
-fn weighted_select_pdf(w_8: f32, w_sum_3: f32, in_range_1: bool, k_6: u32) -> f32 {
+fn weighted_select_pdf(w_8: f32, w_sum_4: f32, in_range_1: bool, k_6: u32) -> f32 {
     if (w_8 <= 0f) {
         return 0f;
     }
-    let total = select((w_sum_3 + w_8), w_sum_3, in_range_1);
+    let total = select((w_sum_4 + w_8), w_sum_4, in_range_1);
     let _e9 = to_f32_(k_6);
     return ((_e9 * w_8) / total);
 }
@@ -1407,11 +1411,11 @@ fn bvh_first_prob(c0_: f32, c1_2: f32) -> f32 {
     return -1f;
 }
 
-fn bvh_remap_u(u_5: f32, p0_: f32, first: bool) -> f32 {
+fn bvh_remap_u(u_6: f32, p0_: f32, first: bool) -> f32 {
     if first {
-        return min((u_5 / p0_), ONE_MINUS_EPSILON);
+        return min((u_6 / p0_), ONE_MINUS_EPSILON);
     }
-    return clamp(((u_5 - p0_) / (1f - p0_)), 0f, ONE_MINUS_EPSILON);
+    return clamp(((u_6 - p0_) / (1f - p0_)), 0f, ONE_MINUS_EPSILON);
 }
 
 fn finite3_(v_12: vec3<f32>) -> bool {
@@ -1538,9 +1542,9 @@ fn ray_triangle(o_1: vec3<f32>, d_4: vec3<f32>, a_8: vec3<f32>, b_6: vec3<f32>, 
     }
     let inv_1 = (1f / det);
     let s_7 = (o_1 - a_8);
-    let u_7 = (dot(s_7, p_12) * inv_1);
-    if !((u_7 < 0f)) {
-        local_25 = (u_7 > 1f);
+    let u_8 = (dot(s_7, p_12) * inv_1);
+    if !((u_8 < 0f)) {
+        local_25 = (u_8 > 1f);
     } else {
         local_25 = true;
     }
@@ -1551,7 +1555,7 @@ fn ray_triangle(o_1: vec3<f32>, d_4: vec3<f32>, a_8: vec3<f32>, b_6: vec3<f32>, 
     let q_6 = cross(s_7, e1_2);
     let v_23 = (dot(d_4, q_6) * inv_1);
     if !((v_23 < 0f)) {
-        local_26 = ((u_7 + v_23) > 1f);
+        local_26 = ((u_8 + v_23) > 1f);
     } else {
         local_26 = true;
     }
@@ -1744,9 +1748,9 @@ fn camera_dir(forward: vec3<f32>, right: vec3<f32>, up: vec3<f32>, px: f32, py: 
     return normalize(((forward + (right * sx)) + (up * sy)));
 }
 
-fn jittered_pixel(coord: u32, u_6: f32) -> f32 {
+fn jittered_pixel(coord: u32, u_7: f32) -> f32 {
     let _e2 = to_f32_(coord);
-    return (_e2 + u_6);
+    return (_e2 + u_7);
 }
 
 fn plays_roulette(depth: u32) -> bool {

@@ -342,8 +342,8 @@ fn gbuffer_at(i: u32) -> GbTexel {
     let texel_1 = vec2<i32>(i32((i % _e3)), i32((i / _e8)));
     let _e12 = surface_at(texel_1);
     let _e15 = textureLoad(normal_tex, texel_1, 0i);
-    let n_2 = _e15.xyz;
-    let len2_ = dot(n_2, n_2);
+    let n_3 = _e15.xyz;
+    let len2_ = dot(n_3, n_3);
     if (_e12.w > 0f) {
         local_6 = (len2_ > 0f);
     } else {
@@ -353,7 +353,7 @@ fn gbuffer_at(i: u32) -> GbTexel {
     let _e30 = view.eye;
     let v_2 = (_e12.xyz - _e30);
     let position = vec4<f32>(_e12.xyz, select(0f, 1f, valid_1));
-    let normal = select(vec4<f32>(0f, 0f, 0f, 1000000000000000000000000000000f), vec4<f32>((n_2 / vec3(sqrt(len2_))), sqrt(dot(v_2, v_2))), valid_1);
+    let normal = select(vec4<f32>(0f, 0f, 0f, 1000000000000000000000000000000f), vec4<f32>((n_3 / vec3(sqrt(len2_))), sqrt(dot(v_2, v_2))), valid_1);
     return GbTexel(position, normal);
 }
 
@@ -369,6 +369,16 @@ fn near_cull_r2_of(slot_1: u32, near_r2_3: f32) -> f32 {
     return _e3;
 }
 
+fn counter_add(f: u32, n: u32) {
+    let _e6 = atomicAdd((&counters[(2u * f)]), n);
+    if ((_e6 + n) < _e6) {
+        let _e16 = atomicAdd((&counters[((2u * f) + 1u)]), 1u);
+        return;
+    } else {
+        return;
+    }
+}
+
 fn counts_begin(li_3: u32) {
     if (li_3 < COUNT_FIELDS) {
         atomicStore((&wg_counts[li_3]), 0u);
@@ -377,19 +387,19 @@ fn counts_begin(li_3: u32) {
     return;
 }
 
-fn count_add(f: u32, n: u32) {
-    let _e4 = atomicAdd((&wg_counts[f]), n);
+fn count_add(f_1: u32, n_1: u32) {
+    let _e4 = atomicAdd((&wg_counts[f_1]), n_1);
     return;
 }
 
-fn count_one(f_1: u32) {
-    let _e4 = atomicAdd((&wg_counts[f_1]), 1u);
+fn count_one(f_2: u32) {
+    let _e4 = atomicAdd((&wg_counts[f_2]), 1u);
     return;
 }
 
-fn count_tests(li_4: u32, f_2: u32, n_1: u32) {
+fn count_tests(li_4: u32, f_3: u32, n_2: u32) {
     if (li_4 == 0u) {
-        let _e7 = atomicAdd((&wg_counts[f_2]), n_1);
+        let _e7 = atomicAdd((&wg_counts[f_3]), n_2);
         return;
     } else {
         return;
@@ -399,14 +409,9 @@ fn count_tests(li_4: u32, f_2: u32, n_1: u32) {
 fn counts_end(li_5: u32) {
     workgroupBarrier();
     if (li_5 < COUNT_FIELDS) {
-        let n_3 = atomicLoad((&wg_counts[li_5]));
-        let _e10 = atomicAdd((&counters[(2u * li_5)]), n_3);
-        if ((_e10 + n_3) < _e10) {
-            let _e20 = atomicAdd((&counters[((2u * li_5) + 1u)]), 1u);
-            return;
-        } else {
-            return;
-        }
+        let _e5 = atomicLoad((&wg_counts[li_5]));
+        counter_add(li_5, _e5);
+        return;
     } else {
         return;
     }

@@ -1016,7 +1016,7 @@ impl DirectPass {
         let (pipeline, group0, group1) = match (&self.counting, counting) {
             (Some(c), true) => {
                 let mut res = resources();
-                res.push(("direct_counts", crate::kernel::whole(&c.counters)));
+                res.push(("counters", crate::kernel::whole(&c.counters)));
                 let (_, group1) = groups(
                     gpu,
                     &self.set,

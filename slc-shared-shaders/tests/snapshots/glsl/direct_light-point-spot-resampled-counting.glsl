@@ -240,10 +240,10 @@ float connection_cosine(vec3 x_2, vec3 y, vec3 n, vec3 ng, float r2_1) {
     if (_e16) {
         return 0.0;
     }
-    vec3 w_7 = (v_3 / vec3(sqrt(d2_6)));
-    float cos_x_1 = -(dot(n, w_7));
+    vec3 w_6 = (v_3 / vec3(sqrt(d2_6)));
+    float cos_x_1 = -(dot(n, w_6));
     if (!((cos_x_1 <= 0.0))) {
-        local_5 = (dot(ng, w_7) >= 0.0);
+        local_5 = (dot(ng, w_6) >= 0.0);
     } else {
         local_5 = true;
     }
@@ -280,8 +280,8 @@ float bsh_range_bound(BshNode node_1) {
     return _e8;
 }
 
-bool weighted_replace(float w_2, float w_sum, float u_2) {
-    return ((u_2 * w_sum) < w_2);
+float weighted_threshold(float w_sum, float u_2) {
+    return (w_sum / (1.0 - u_2));
 }
 
 float resample_target(vec3 c_1) {
@@ -306,19 +306,19 @@ float slot_target(vec3 c_2, uint slot, uint k_2) {
 vec3 slot_share(uint slot_1, uint k_3) {
     if ((k_3 < 3u)) {
         float _e4 = to_f32_(k_3);
-        float w_8 = (1.0 / _e4);
-        return vec3(w_8, w_8, w_8);
+        float w_7 = (1.0 / _e4);
+        return vec3(w_7, w_7, w_7);
     }
     uint j_3 = (slot_1 % 3u);
     float _e15 = to_f32_((((k_3 + 2u) - j_3) / 3u));
-    float w_9 = (1.0 / _e15);
+    float w_8 = (1.0 / _e15);
     if ((j_3 == 0u)) {
-        return vec3(w_9, 0.0, 0.0);
+        return vec3(w_8, 0.0, 0.0);
     }
     if ((j_3 == 1u)) {
-        return vec3(0.0, w_9, 0.0);
+        return vec3(0.0, w_8, 0.0);
     }
-    return vec3(0.0, 0.0, w_9);
+    return vec3(0.0, 0.0, w_8);
 }
 
 float smith_root(float cos_, float alpha) {
@@ -472,13 +472,13 @@ float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_3, vec3 b_3, vec3 c_3, float t_min
     return -1.0;
 }
 
-vec3 light_intensity(GpuLight l, vec3 w_3) {
+vec3 light_intensity(GpuLight l, vec3 w_2) {
     switch(l.kind) {
         case 0u: {
             return l.intensity;
         }
         case 1u: {
-            float _e11 = spot_falloff(dot(l.p1_, w_3), l.a, l.b, l.p2_.x);
+            float _e11 = spot_falloff(dot(l.p1_, w_2), l.a, l.b, l.p2_.x);
             return (l.intensity * _e11);
         }
         default: {
@@ -726,7 +726,7 @@ vec4 surface_at(ivec2 texel) {
     return ((p_3.w > 0.0) ? vec4(p_3.xyz, 1.0) : vec4(0.0));
 }
 
-void direct_count(uint f, uint n_3) {
+void counter_add(uint f, uint n_3) {
     uint _e6 = atomicAdd(_group_0_binding_8_cs[(2u * f)], n_3);
     if (((_e6 + n_3) < _e6)) {
         uint _e16 = atomicAdd(_group_0_binding_8_cs[((2u * f) + 1u)], 1u);
@@ -745,14 +745,14 @@ Shaded shade_connection(Connection c_5, vec3 x_8, vec3 n_4, Material m_1) {
     return _e13;
 }
 
-Shaded shade_pick_traced(uint li_1, vec3 x_9, vec3 n_5, vec3 r_6, vec4 rl_5, Material m_2, float w_4, float u1_3, float u2_3, float eps_2, bool trace_3) {
-    Connection _e12 = connect_traced(li_1, x_9, n_5, n_5, 1.0, w_4, u1_3, u2_3, eps_2, trace_3);
+Shaded shade_pick_traced(uint li_1, vec3 x_9, vec3 n_5, vec3 r_6, vec4 rl_5, Material m_2, float w_3, float u1_3, float u2_3, float eps_2, bool trace_3) {
+    Connection _e12 = connect_traced(li_1, x_9, n_5, n_5, 1.0, w_3, u1_3, u2_3, eps_2, trace_3);
     Shaded _e13 = shade_connection(_e12, x_9, n_5, m_2);
     return _e13;
 }
 
-Shaded shade_pick(uint li_2, vec3 x_10, vec3 n_6, vec3 r_7, vec4 rl_6, Material m_3, float w_5, float u1_4, float u2_4, float eps_3) {
-    Shaded _e11 = shade_pick_traced(li_2, x_10, n_6, r_7, rl_6, m_3, w_5, u1_4, u2_4, eps_3, true);
+Shaded shade_pick(uint li_2, vec3 x_10, vec3 n_6, vec3 r_7, vec4 rl_6, Material m_3, float w_4, float u1_4, float u2_4, float eps_3) {
+    Shaded _e11 = shade_pick_traced(li_2, x_10, n_6, r_7, rl_6, m_3, w_4, u1_4, u2_4, eps_3, true);
     return _e11;
 }
 
@@ -760,8 +760,8 @@ Shaded add(Shaded a_6, Shaded b_5) {
     return Shaded((a_6.e + b_5.e), (a_6.diffuse + b_5.diffuse), (a_6.specular + b_5.specular));
 }
 
-Shaded scaled(Shaded s_2, vec3 w_6) {
-    return Shaded((s_2.e * w_6), (s_2.diffuse * w_6), (s_2.specular * w_6));
+Shaded scaled(Shaded s_2, vec3 w_5) {
+    return Shaded((s_2.e * w_5), (s_2.diffuse * w_5), (s_2.specular * w_5));
 }
 
 uint[8] first_holders(uvec2 keys_1[8], bool held_1[8]) {
@@ -851,6 +851,7 @@ void main() {
     vec3 total = vec3(0.0);
     uint count = 0u;
     uint hc = 0u;
+    float threshold[8] = float[8](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     uint b = 0u;
     uint q = 0u;
     bool local_2 = false;
@@ -902,78 +903,74 @@ void main() {
     uint _e78 = pick_stream(_e77);
     h = _e78;
     hc = _e77;
-    uint _e99 = bsh_first(BSH);
-    vec3 _e100 = r;
-    uint _e101 = bsh_next_leaf_lobe(BSH, _e99, x_11, _e100, _e54);
-    b = _e101;
+    uint _e100 = bsh_first(BSH);
+    vec3 _e101 = r;
+    uint _e102 = bsh_next_leaf_lobe(BSH, _e100, x_11, _e101, _e54);
+    b = _e102;
     bool loop_init_3 = true;
     while(true) {
         if (!loop_init_3) {
-            uint _e174 = b;
-            uint _e177 = _group_1_binding_4_cs[_e174].next;
-            vec3 _e178 = r;
-            uint _e179 = bsh_next_leaf_lobe(BSH, _e177, x_11, _e178, _e54);
-            b = _e179;
+            uint _e181 = b;
+            uint _e184 = _group_1_binding_4_cs[_e181].next;
+            vec3 _e185 = r;
+            uint _e186 = bsh_next_leaf_lobe(BSH, _e184, x_11, _e185, _e54);
+            b = _e186;
         }
         loop_init_3 = false;
-        uint _e103 = b;
-        if ((_e103 != BSH_NONE)) {
+        uint _e104 = b;
+        if ((_e104 != BSH_NONE)) {
         } else {
             break;
         }
         {
-            uint _e106 = count;
-            count = (_e106 + 1u);
-            uint _e110 = b;
-            uint li_3 = _group_1_binding_4_cs[_e110].light;
-            uint _e114 = h;
-            uint _e115 = pcg_hash(_e114);
-            h = _e115;
-            uint _e116 = h;
-            float _e117 = xi_from_bits(_e116);
-            uint _e118 = h;
-            uint _e119 = pcg_hash(_e118);
-            h = _e119;
-            uint _e120 = h;
-            float _e121 = xi_from_bits(_e120);
-            vec2 u_4 = vec2(_e117, _e121);
-            vec3 _e123 = r;
-            Material _e124 = m;
-            Shaded _e129 = shade_pick_traced(li_3, x_11, n_8, _e123, _e54, _e124, 1.0, u_4.x, u_4.y, eps_4, false);
-            vec3 _e130 = output_of(_e129);
-            uint _e132 = evaluations;
-            evaluations = (_e132 + 1u);
-            float _e135 = resample_target(_e130);
-            if ((_e135 > 0.0)) {
-                vec3 _e138 = total;
-                total = (_e138 + _e130);
+            uint _e107 = count;
+            count = (_e107 + 1u);
+            uint _e111 = b;
+            uint li_3 = _group_1_binding_4_cs[_e111].light;
+            uint _e115 = h;
+            uint _e116 = pcg_hash(_e115);
+            h = _e116;
+            uint _e117 = h;
+            float _e118 = xi_from_bits(_e117);
+            uint _e119 = h;
+            uint _e120 = pcg_hash(_e119);
+            h = _e120;
+            uint _e121 = h;
+            float _e122 = xi_from_bits(_e121);
+            vec2 u_4 = vec2(_e118, _e122);
+            vec3 _e124 = r;
+            Material _e125 = m;
+            Shaded _e130 = shade_pick_traced(li_3, x_11, n_8, _e124, _e54, _e125, 1.0, u_4.x, u_4.y, eps_4, false);
+            vec3 _e131 = output_of(_e130);
+            uint _e133 = evaluations;
+            evaluations = (_e133 + 1u);
+            float _e136 = resample_target(_e131);
+            if ((_e136 > 0.0)) {
+                vec3 _e139 = total;
+                total = (_e139 + _e131);
                 q = 0u;
                 bool loop_init_4 = true;
                 while(true) {
                     if (!loop_init_4) {
-                        uint _e170 = q;
-                        q = (_e170 + 1u);
+                        uint _e177 = q;
+                        q = (_e177 + 1u);
                     }
                     loop_init_4 = false;
-                    uint _e142 = q;
-                    if ((_e142 < K)) {
+                    uint _e143 = q;
+                    if ((_e143 < K)) {
                     } else {
                         break;
                     }
                     {
-                        uint _e145 = hc;
-                        uint _e146 = pcg_hash(_e145);
-                        hc = _e146;
-                        uint _e147 = q;
-                        float _e149 = slot_target(_e130, _e147, K);
-                        if ((_e149 > 0.0)) {
-                            vec3 _e154 = total;
-                            uint _e155 = q;
-                            float _e157 = slot_target(_e154, _e155, K);
-                            uint _e158 = hc;
-                            float _e159 = xi_from_bits(_e158);
-                            bool _e160 = weighted_replace(_e149, _e157, _e159);
-                            local_2 = _e160;
+                        uint _e146 = q;
+                        float _e148 = slot_target(_e131, _e146, K);
+                        vec3 _e149 = total;
+                        uint _e150 = q;
+                        float _e152 = slot_target(_e149, _e150, K);
+                        if ((_e148 > 0.0)) {
+                            uint _e157 = q;
+                            float _e159 = threshold[_e157];
+                            local_2 = (_e152 > _e159);
                         } else {
                             local_2 = false;
                         }
@@ -984,7 +981,15 @@ void main() {
                             uint _e165 = q;
                             slot_u[_e165] = u_4;
                             uint _e167 = q;
-                            slot_p[_e167] = _e149;
+                            slot_p[_e167] = _e148;
+                            uint _e169 = hc;
+                            uint _e170 = pcg_hash(_e169);
+                            hc = _e170;
+                            uint _e171 = q;
+                            uint _e173 = hc;
+                            float _e174 = xi_from_bits(_e173);
+                            float _e175 = weighted_threshold(_e152, _e174);
+                            threshold[_e171] = _e175;
                         }
                     }
                 }
@@ -994,112 +999,112 @@ void main() {
     bool loop_init_5 = true;
     while(true) {
         if (!loop_init_5) {
-            uint _e202 = k;
-            k = (_e202 + 1u);
+            uint _e209 = k;
+            k = (_e209 + 1u);
         }
         loop_init_5 = false;
-        uint _e184 = k;
-        if ((_e184 < K)) {
+        uint _e191 = k;
+        if ((_e191 < K)) {
         } else {
             break;
         }
         {
-            uint _e187 = k;
-            uint _e189 = k;
-            uint _e191 = slot_light[_e189];
-            keys[_e187] = uvec2(_e191, 0u);
             uint _e194 = k;
             uint _e196 = k;
-            float _e198 = slot_p[_e196];
-            held[_e194] = (_e198 > 0.0);
+            uint _e198 = slot_light[_e196];
+            keys[_e194] = uvec2(_e198, 0u);
+            uint _e201 = k;
+            uint _e203 = k;
+            float _e205 = slot_p[_e203];
+            held[_e201] = (_e205 > 0.0);
         }
     }
-    uvec2 _e204[8] = keys;
-    bool _e205[8] = held;
-    uint _e206[8] = first_holders(_e204, _e205);
+    uvec2 _e211[8] = keys;
+    bool _e212[8] = held;
+    uint _e213[8] = first_holders(_e211, _e212);
     bool loop_init_6 = true;
     while(true) {
         if (!loop_init_6) {
-            uint _e269 = k_1;
-            k_1 = (_e269 + 1u);
+            uint _e276 = k_1;
+            k_1 = (_e276 + 1u);
         }
         loop_init_6 = false;
-        uint _e209 = k_1;
-        if ((_e209 < K)) {
+        uint _e216 = k_1;
+        if ((_e216 < K)) {
         } else {
             break;
         }
         {
             w = vec3(0.0);
-            uint _e215 = k_1;
-            uint _e217 = k_1;
-            bool first_1 = (_e206[_e215] == _e217);
-            uint _e219 = k_1;
-            j = _e219;
+            uint _e222 = k_1;
+            uint _e224 = k_1;
+            bool first_1 = (_e213[_e222] == _e224);
+            uint _e226 = k_1;
+            j = _e226;
             bool loop_init_7 = true;
             while(true) {
                 if (!loop_init_7) {
-                    uint _e247 = j;
-                    j = (_e247 + 1u);
+                    uint _e254 = j;
+                    j = (_e254 + 1u);
                 }
                 loop_init_7 = false;
-                uint _e221 = j;
-                if ((_e221 < K)) {
+                uint _e228 = j;
+                if ((_e228 < K)) {
                     local_3 = first_1;
                 } else {
                     local_3 = false;
                 }
-                bool _e227 = local_3;
-                if (_e227) {
+                bool _e234 = local_3;
+                if (_e234) {
                 } else {
                     break;
                 }
                 {
-                    uint _e228 = j;
-                    uint _e230 = k_1;
-                    if ((_e206[_e228] == _e230)) {
-                        vec3 _e232 = w;
-                        vec3 _e233 = total;
-                        uint _e234 = j;
-                        float _e236 = slot_target(_e233, _e234, K);
-                        uint _e237 = j;
-                        float _e239 = slot_p[_e237];
+                    uint _e235 = j;
+                    uint _e237 = k_1;
+                    if ((_e213[_e235] == _e237)) {
+                        vec3 _e239 = w;
+                        vec3 _e240 = total;
                         uint _e241 = j;
-                        vec3 _e243 = slot_share(_e241, K);
-                        w = (_e232 + ((_e236 / _e239) * _e243));
+                        float _e243 = slot_target(_e240, _e241, K);
+                        uint _e244 = j;
+                        float _e246 = slot_p[_e244];
+                        uint _e248 = j;
+                        vec3 _e250 = slot_share(_e248, K);
+                        w = (_e239 + ((_e243 / _e246) * _e250));
                     }
                 }
             }
             if (first_1) {
-                Shaded _e249 = t;
-                uint _e250 = k_1;
-                uint _e252 = slot_light[_e250];
-                vec3 _e253 = r;
-                Material _e254 = m;
-                uint _e256 = k_1;
-                float _e259 = slot_u[_e256].x;
-                uint _e260 = k_1;
-                float _e263 = slot_u[_e260].y;
-                Shaded _e264 = shade_pick(_e252, x_11, n_8, _e253, _e54, _e254, 1.0, _e259, _e263, eps_4);
-                vec3 _e265 = w;
-                Shaded _e266 = scaled(_e264, _e265);
-                Shaded _e267 = add(_e249, _e266);
-                t = _e267;
+                Shaded _e256 = t;
+                uint _e257 = k_1;
+                uint _e259 = slot_light[_e257];
+                vec3 _e260 = r;
+                Material _e261 = m;
+                uint _e263 = k_1;
+                float _e266 = slot_u[_e263].x;
+                uint _e267 = k_1;
+                float _e270 = slot_u[_e267].y;
+                Shaded _e271 = shade_pick(_e259, x_11, n_8, _e260, _e54, _e261, 1.0, _e266, _e270, eps_4);
+                vec3 _e272 = w;
+                Shaded _e273 = scaled(_e271, _e272);
+                Shaded _e274 = add(_e256, _e273);
+                t = _e274;
             }
         }
     }
-    vec3 _e273 = t.e;
-    uint _e274 = count;
-    imageStore(_group_0_binding_3_cs, texel_1, vec4(_e273, float(_e274)));
-    direct_count(DIRECT_COUNT_PIXELS, 1u);
-    uint _e280 = count;
-    direct_count(DIRECT_COUNT_CANDIDATES, _e280);
-    uint _e283 = evaluations;
-    direct_count(DIRECT_COUNT_EVALUATIONS, _e283);
-    uint _e286 = rays_cast;
-    direct_count(DIRECT_COUNT_RAYS, _e286);
-    uint _e289 = nodes_visited;
-    direct_count(DIRECT_COUNT_NODES, _e289);
+    vec3 _e280 = t.e;
+    uint _e281 = count;
+    imageStore(_group_0_binding_3_cs, texel_1, vec4(_e280, float(_e281)));
+    counter_add(DIRECT_COUNT_PIXELS, 1u);
+    uint _e287 = count;
+    counter_add(DIRECT_COUNT_CANDIDATES, _e287);
+    uint _e290 = evaluations;
+    counter_add(DIRECT_COUNT_EVALUATIONS, _e290);
+    uint _e293 = rays_cast;
+    counter_add(DIRECT_COUNT_RAYS, _e293);
+    uint _e296 = nodes_visited;
+    counter_add(DIRECT_COUNT_NODES, _e296);
     return;
 }
 

@@ -349,6 +349,10 @@ bool weighted_replace(float w_3, float w_sum, float u_2) {
     return ((u_2 * w_sum) < w_3);
 }
 
+float weighted_threshold(float w_sum_1, float u_3) {
+    return (w_sum_1 / (1.0 - u_3));
+}
+
 float resample_target(vec3 c_2) {
     return (((c_2.x + c_2.y) + c_2.z) * 0.33333334);
 }
@@ -407,11 +411,11 @@ float gris_weight(float own, float all_, float p_hat, float w_4) {
     return (((own / all_) * p_hat) * w_4);
 }
 
-float gris_contribution_weight(float w_sum_1, float p_hat_1) {
+float gris_contribution_weight(float w_sum_2, float p_hat_1) {
     if (!((p_hat_1 > 0.0))) {
         return 0.0;
     }
-    return (w_sum_1 / p_hat_1);
+    return (w_sum_2 / p_hat_1);
 }
 
 float ggx_d(float cos_h, float sin2_h, float alpha) {
@@ -672,9 +676,9 @@ float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_5, vec3 b_5, vec3 c_6, float t_min
     }
     float inv = (1.0 / det);
     vec3 s_6 = (o_1 - a_5);
-    float u_3 = (dot(s_6, p_5) * inv);
-    if (!((u_3 < 0.0))) {
-        local_14 = (u_3 > 1.0);
+    float u_4 = (dot(s_6, p_5) * inv);
+    if (!((u_4 < 0.0))) {
+        local_14 = (u_4 > 1.0);
     } else {
         local_14 = true;
     }
@@ -685,7 +689,7 @@ float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_5, vec3 b_5, vec3 c_6, float t_min
     vec3 q_5 = cross(s_6, e1_);
     float v_8 = (dot(d_3, q_5) * inv);
     if (!((v_8 < 0.0))) {
-        local_15 = ((u_3 + v_8) > 1.0);
+        local_15 = ((u_4 + v_8) > 1.0);
     } else {
         local_15 = true;
     }
@@ -1261,7 +1265,7 @@ uint reuse_domains(vec3 x_13, vec3 n_11, float d_6, uint h_1, inout Domain doms_
 }
 
 ReuseSlot gris_combine(uint q_4, ReuseSlot cur, bool cur_ris, float cur_c, uint k0_, uint k1_, vec3 x_14, vec3 n_12, Material m_5, inout Domain doms_2[3], inout uint hs_1) {
-    float w_sum_2 = 0.0;
+    float w_sum_3 = 0.0;
     ReuseSlot out_ = ReuseSlot(0u, 0u, 0.0);
     float out_target = 0.0;
     uint j_4 = 0u;
@@ -1369,13 +1373,13 @@ ReuseSlot gris_combine(uint q_4, ReuseSlot cur, bool cur_ris, float cur_c, uint 
             float _e118 = all_1;
             float _e119 = w_in;
             float _e120 = gris_weight(_e117, _e118, _e59, _e119);
-            float _e121 = w_sum_2;
-            w_sum_2 = (_e121 + _e120);
+            float _e121 = w_sum_3;
+            w_sum_3 = (_e121 + _e120);
             uint _e123 = hs_1;
             uint _e124 = pcg_hash(_e123);
             hs_1 = _e124;
             if ((_e120 > 0.0)) {
-                float _e129 = w_sum_2;
+                float _e129 = w_sum_3;
                 uint _e130 = hs_1;
                 float _e131 = xi_from_bits(_e130);
                 bool _e132 = weighted_replace(_e120, _e129, _e131);
@@ -1391,7 +1395,7 @@ ReuseSlot gris_combine(uint q_4, ReuseSlot cur, bool cur_ris, float cur_c, uint 
             }
         }
     }
-    float _e140 = w_sum_2;
+    float _e140 = w_sum_3;
     float _e141 = out_target;
     float _e142 = gris_contribution_weight(_e140, _e141);
     out_.w = _e142;
@@ -1415,6 +1419,7 @@ void main() {
     vec3 total = vec3(0.0);
     uint count = 0u;
     uint hc = 0u;
+    float threshold[8] = float[8](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     uint b = 0u;
     uint q = 0u;
     bool local_2 = false;
@@ -1492,78 +1497,74 @@ void main() {
     uint _e123 = pick_stream(_e122);
     h = _e123;
     hc = _e122;
-    uint _e145 = bsh_first(BSH);
-    vec3 _e146 = r;
-    uint _e147 = bsh_next_leaf_lobe(BSH, _e145, x_17, _e146, _e99);
-    b = _e147;
+    uint _e146 = bsh_first(BSH);
+    vec3 _e147 = r;
+    uint _e148 = bsh_next_leaf_lobe(BSH, _e146, x_17, _e147, _e99);
+    b = _e148;
     bool loop_init_7 = true;
     while(true) {
         if (!loop_init_7) {
-            uint _e220 = b;
-            uint _e223 = _group_1_binding_4_cs[_e220].next;
-            vec3 _e224 = r;
-            uint _e225 = bsh_next_leaf_lobe(BSH, _e223, x_17, _e224, _e99);
-            b = _e225;
+            uint _e227 = b;
+            uint _e230 = _group_1_binding_4_cs[_e227].next;
+            vec3 _e231 = r;
+            uint _e232 = bsh_next_leaf_lobe(BSH, _e230, x_17, _e231, _e99);
+            b = _e232;
         }
         loop_init_7 = false;
-        uint _e149 = b;
-        if ((_e149 != BSH_NONE)) {
+        uint _e150 = b;
+        if ((_e150 != BSH_NONE)) {
         } else {
             break;
         }
         {
-            uint _e152 = count;
-            count = (_e152 + 1u);
-            uint _e156 = b;
-            uint li_3 = _group_1_binding_4_cs[_e156].light;
-            uint _e160 = h;
-            uint _e161 = pcg_hash(_e160);
-            h = _e161;
+            uint _e153 = count;
+            count = (_e153 + 1u);
+            uint _e157 = b;
+            uint li_3 = _group_1_binding_4_cs[_e157].light;
+            uint _e161 = h;
+            uint _e162 = pcg_hash(_e161);
+            h = _e162;
             uint h1_1 = h;
-            uint _e163 = h;
-            uint _e164 = pcg_hash(_e163);
-            h = _e164;
-            uint _e165 = h;
-            uint _e166 = grid_cells(h1_1, _e165);
-            float _e167 = grid_coordinate(h1_1);
-            uint _e168 = h;
-            float _e169 = grid_coordinate(_e168);
-            vec2 u_4 = vec2(_e167, _e169);
-            vec3 _e171 = r;
-            Material _e172 = m;
-            Shaded _e177 = shade_pick_traced(li_3, x_17, n_15, _e171, _e99, _e172, 1.0, u_4.x, u_4.y, eps_3, false);
-            vec3 _e178 = output_of(_e177);
-            float _e179 = resample_target(_e178);
-            if ((_e179 > 0.0)) {
-                vec3 _e182 = total;
-                total = (_e182 + _e178);
+            uint _e164 = h;
+            uint _e165 = pcg_hash(_e164);
+            h = _e165;
+            uint _e166 = h;
+            uint _e167 = grid_cells(h1_1, _e166);
+            float _e168 = grid_coordinate(h1_1);
+            uint _e169 = h;
+            float _e170 = grid_coordinate(_e169);
+            vec2 u_5 = vec2(_e168, _e170);
+            vec3 _e172 = r;
+            Material _e173 = m;
+            Shaded _e178 = shade_pick_traced(li_3, x_17, n_15, _e172, _e99, _e173, 1.0, u_5.x, u_5.y, eps_3, false);
+            vec3 _e179 = output_of(_e178);
+            float _e180 = resample_target(_e179);
+            if ((_e180 > 0.0)) {
+                vec3 _e183 = total;
+                total = (_e183 + _e179);
                 q = 0u;
                 bool loop_init_8 = true;
                 while(true) {
                     if (!loop_init_8) {
-                        uint _e216 = q;
-                        q = (_e216 + 1u);
+                        uint _e223 = q;
+                        q = (_e223 + 1u);
                     }
                     loop_init_8 = false;
-                    uint _e186 = q;
-                    if ((_e186 < K)) {
+                    uint _e187 = q;
+                    if ((_e187 < K)) {
                     } else {
                         break;
                     }
                     {
-                        uint _e189 = hc;
-                        uint _e190 = pcg_hash(_e189);
-                        hc = _e190;
-                        uint _e191 = q;
-                        float _e193 = slot_target(_e178, _e191, K);
-                        if ((_e193 > 0.0)) {
-                            vec3 _e198 = total;
-                            uint _e199 = q;
-                            float _e201 = slot_target(_e198, _e199, K);
-                            uint _e202 = hc;
-                            float _e203 = xi_from_bits(_e202);
-                            bool _e204 = weighted_replace(_e193, _e201, _e203);
-                            local_2 = _e204;
+                        uint _e190 = q;
+                        float _e192 = slot_target(_e179, _e190, K);
+                        vec3 _e193 = total;
+                        uint _e194 = q;
+                        float _e196 = slot_target(_e193, _e194, K);
+                        if ((_e192 > 0.0)) {
+                            uint _e201 = q;
+                            float _e203 = threshold[_e201];
+                            local_2 = (_e196 > _e203);
                         } else {
                             local_2 = false;
                         }
@@ -1572,192 +1573,200 @@ void main() {
                             uint _e207 = q;
                             slot_light[_e207] = li_3;
                             uint _e209 = q;
-                            slot_u[_e209] = u_4;
+                            slot_u[_e209] = u_5;
                             uint _e211 = q;
-                            slot_p[_e211] = _e193;
+                            slot_p[_e211] = _e192;
                             uint _e213 = q;
-                            slot_cells[_e213] = _e166;
+                            slot_cells[_e213] = _e167;
+                            uint _e215 = hc;
+                            uint _e216 = pcg_hash(_e215);
+                            hc = _e216;
+                            uint _e217 = q;
+                            uint _e219 = hc;
+                            float _e220 = xi_from_bits(_e219);
+                            float _e221 = weighted_threshold(_e196, _e220);
+                            threshold[_e217] = _e221;
                         }
                     }
                 }
             }
         }
     }
-    uint _e229 = _group_0_binding_0_cs.width;
-    uint pixel_1 = ((gid.y * _e229) + gid.x);
-    vec3 _e236 = _group_0_binding_0_cs.eye;
-    uint _e240 = reuse_stream(_e122, 0u);
-    uint _e241 = reuse_domains(x_17, n_15, length((_e236 - x_17)), _e240, doms);
-    if ((_e241 > 0u)) {
-        bool _e248 = doms[0].temporal;
-        local_3 = _e248;
+    uint _e236 = _group_0_binding_0_cs.width;
+    uint pixel_1 = ((gid.y * _e236) + gid.x);
+    vec3 _e243 = _group_0_binding_0_cs.eye;
+    uint _e247 = reuse_stream(_e122, 0u);
+    uint _e248 = reuse_domains(x_17, n_15, length((_e243 - x_17)), _e247, doms);
+    if ((_e248 > 0u)) {
+        bool _e255 = doms[0].temporal;
+        local_3 = _e255;
     } else {
         local_3 = false;
     }
     bool own_history = local_3;
     uint first_1 = (own_history ? 1u : 0u);
-    float _e256 = doms[0].c;
-    float confidence = (1.0 + (own_history ? _e256 : 0.0));
-    uint _e262 = reuse_stream(_e122, 1u);
-    hs = _e262;
+    float _e263 = doms[0].c;
+    float confidence = (1.0 + (own_history ? _e263 : 0.0));
+    uint _e269 = reuse_stream(_e122, 1u);
+    hs = _e269;
     bool loop_init_9 = true;
     while(true) {
         if (!loop_init_9) {
-            uint _e313 = q_1;
-            q_1 = (_e313 + 1u);
+            uint _e320 = q_1;
+            q_1 = (_e320 + 1u);
         }
         loop_init_9 = false;
-        uint _e268 = q_1;
-        if ((_e268 < K)) {
+        uint _e275 = q_1;
+        if ((_e275 < K)) {
         } else {
             break;
         }
         {
-            uint _e271 = q_1;
-            uint _e273 = q_1;
-            uint _e274 = q_1;
-            uint _e276 = slot_light[_e274];
-            uint _e277 = q_1;
-            uint _e279 = slot_cells[_e277];
-            vec3 _e280 = total;
+            uint _e278 = q_1;
+            uint _e280 = q_1;
             uint _e281 = q_1;
-            float _e283 = slot_target(_e280, _e281, K);
+            uint _e283 = slot_light[_e281];
             uint _e284 = q_1;
-            float _e286 = slot_p[_e284];
-            Material _e295 = m;
-            ReuseSlot _e296 = gris_combine(_e273, ReuseSlot(_e276, _e279, ((_e286 > 0.0) ? _e283 : 0.0)), true, 1.0, 0u, first_1, x_17, n_15, _e295, doms, hs);
-            kept[_e271] = _e296;
-            uint _e297 = q_1;
-            uint _e299 = q_1;
-            ReuseSlot _e301 = kept[_e299];
-            fin[_e297] = _e301;
-            if ((_e241 > first_1)) {
-                uint _e303 = q_1;
-                uint _e305 = q_1;
-                uint _e306 = q_1;
-                ReuseSlot _e308 = kept[_e306];
-                Material _e310 = m;
-                ReuseSlot _e311 = gris_combine(_e305, _e308, false, confidence, first_1, _e241, x_17, n_15, _e310, doms, hs);
-                fin[_e303] = _e311;
+            uint _e286 = slot_cells[_e284];
+            vec3 _e287 = total;
+            uint _e288 = q_1;
+            float _e290 = slot_target(_e287, _e288, K);
+            uint _e291 = q_1;
+            float _e293 = slot_p[_e291];
+            Material _e302 = m;
+            ReuseSlot _e303 = gris_combine(_e280, ReuseSlot(_e283, _e286, ((_e293 > 0.0) ? _e290 : 0.0)), true, 1.0, 0u, first_1, x_17, n_15, _e302, doms, hs);
+            kept[_e278] = _e303;
+            uint _e304 = q_1;
+            uint _e306 = q_1;
+            ReuseSlot _e308 = kept[_e306];
+            fin[_e304] = _e308;
+            if ((_e248 > first_1)) {
+                uint _e310 = q_1;
+                uint _e312 = q_1;
+                uint _e313 = q_1;
+                ReuseSlot _e315 = kept[_e313];
+                Material _e317 = m;
+                ReuseSlot _e318 = gris_combine(_e312, _e315, false, confidence, first_1, _e248, x_17, n_15, _e317, doms, hs);
+                fin[_e310] = _e318;
             }
         }
     }
     bool loop_init_10 = true;
     while(true) {
         if (!loop_init_10) {
-            uint _e354 = k;
-            k = (_e354 + 1u);
+            uint _e361 = k;
+            k = (_e361 + 1u);
         }
         loop_init_10 = false;
-        uint _e319 = k;
-        if ((_e319 < K)) {
+        uint _e326 = k;
+        if ((_e326 < K)) {
         } else {
             break;
         }
         {
-            uint _e322 = k;
-            uint _e324 = k;
-            uint _e327 = fin[_e324].light;
             uint _e329 = k;
-            uint _e332 = fin[_e329].u;
-            uint _e334 = k;
-            uint _e337 = fin[_e334].light;
-            uint _e340 = _group_1_binding_1_cs[_e337].kind;
-            keys[_e322] = uvec2(_e327, ((_e340 == LIGHT_TRIANGLE) ? _e332 : 0u));
-            uint _e345 = k;
-            uint _e347 = k;
-            float _e350 = fin[_e347].w;
-            held[_e345] = (_e350 > 0.0);
+            uint _e331 = k;
+            uint _e334 = fin[_e331].light;
+            uint _e336 = k;
+            uint _e339 = fin[_e336].u;
+            uint _e341 = k;
+            uint _e344 = fin[_e341].light;
+            uint _e347 = _group_1_binding_1_cs[_e344].kind;
+            keys[_e329] = uvec2(_e334, ((_e347 == LIGHT_TRIANGLE) ? _e339 : 0u));
+            uint _e352 = k;
+            uint _e354 = k;
+            float _e357 = fin[_e354].w;
+            held[_e352] = (_e357 > 0.0);
         }
     }
-    uvec2 _e356[8] = keys;
-    bool _e357[8] = held;
-    uint _e358[8] = first_holders(_e356, _e357);
+    uvec2 _e363[8] = keys;
+    bool _e364[8] = held;
+    uint _e365[8] = first_holders(_e363, _e364);
     bool loop_init_11 = true;
     while(true) {
         if (!loop_init_11) {
-            uint _e443 = k_1;
-            k_1 = (_e443 + 1u);
+            uint _e450 = k_1;
+            k_1 = (_e450 + 1u);
         }
         loop_init_11 = false;
-        uint _e362 = k_1;
-        if ((_e362 < K)) {
+        uint _e369 = k_1;
+        if ((_e369 < K)) {
         } else {
             break;
         }
         {
-            uint _e365 = k_1;
-            uint _e367 = k_1;
-            if ((_e358[_e365] != _e367)) {
+            uint _e372 = k_1;
+            uint _e374 = k_1;
+            if ((_e365[_e372] != _e374)) {
                 continue;
             }
             w = vec3(0.0);
-            uint _e372 = k_1;
-            j = _e372;
+            uint _e379 = k_1;
+            j = _e379;
             bool loop_init_12 = true;
             while(true) {
                 if (!loop_init_12) {
-                    uint _e392 = j;
-                    j = (_e392 + 1u);
+                    uint _e399 = j;
+                    j = (_e399 + 1u);
                 }
                 loop_init_12 = false;
-                uint _e374 = j;
-                if ((_e374 < K)) {
+                uint _e381 = j;
+                if ((_e381 < K)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e377 = j;
-                    uint _e379 = k_1;
-                    if ((_e358[_e377] == _e379)) {
-                        vec3 _e381 = w;
-                        uint _e382 = j;
-                        float _e385 = fin[_e382].w;
-                        uint _e386 = j;
-                        vec3 _e388 = slot_share(_e386, K);
-                        w = (_e381 + (_e385 * _e388));
+                    uint _e384 = j;
+                    uint _e386 = k_1;
+                    if ((_e365[_e384] == _e386)) {
+                        vec3 _e388 = w;
+                        uint _e389 = j;
+                        float _e392 = fin[_e389].w;
+                        uint _e393 = j;
+                        vec3 _e395 = slot_share(_e393, K);
+                        w = (_e388 + (_e392 * _e395));
                     }
                 }
             }
-            uint _e395 = k_1;
-            uint _e398 = fin[_e395].light;
-            GpuLight _e400 = _group_1_binding_1_cs[_e398];
-            uint _e404 = k_1;
-            uint _e407 = fin[_e404].u;
-            float _e408 = grid_coordinate(_e407);
-            uint _e409 = k_1;
-            uint _e412 = fin[_e409].u;
-            float _e415 = grid_coordinate((_e412 << 16u));
-            Connection _e417 = connect_record(_e400, x_17, n_15, n_15, UNRANGED, UNRANGED, 1.0, _e408, _e415, eps_3, true);
-            Material _e418 = m;
-            Shaded _e419 = shade_connection(_e417, x_17, n_15, _e418);
-            Shaded _e420 = t;
-            vec3 _e421 = w;
-            Shaded _e422 = scaled(_e419, _e421);
-            Shaded _e423 = add(_e420, _e422);
-            t = _e423;
-            uint _e424 = k_1;
-            j_1 = _e424;
+            uint _e402 = k_1;
+            uint _e405 = fin[_e402].light;
+            GpuLight _e407 = _group_1_binding_1_cs[_e405];
+            uint _e411 = k_1;
+            uint _e414 = fin[_e411].u;
+            float _e415 = grid_coordinate(_e414);
+            uint _e416 = k_1;
+            uint _e419 = fin[_e416].u;
+            float _e422 = grid_coordinate((_e419 << 16u));
+            Connection _e424 = connect_record(_e407, x_17, n_15, n_15, UNRANGED, UNRANGED, 1.0, _e415, _e422, eps_3, true);
+            Material _e425 = m;
+            Shaded _e426 = shade_connection(_e424, x_17, n_15, _e425);
+            Shaded _e427 = t;
+            vec3 _e428 = w;
+            Shaded _e429 = scaled(_e426, _e428);
+            Shaded _e430 = add(_e427, _e429);
+            t = _e430;
+            uint _e431 = k_1;
+            j_1 = _e431;
             bool loop_init_13 = true;
             while(true) {
                 if (!loop_init_13) {
-                    uint _e440 = j_1;
-                    j_1 = (_e440 + 1u);
+                    uint _e447 = j_1;
+                    j_1 = (_e447 + 1u);
                 }
                 loop_init_13 = false;
-                uint _e426 = j_1;
-                if ((_e426 < K)) {
+                uint _e433 = j_1;
+                if ((_e433 < K)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e429 = j_1;
-                    uint _e431 = k_1;
-                    if ((_e358[_e429] == _e431)) {
-                        uint _e433 = j_1;
-                        vec3 _e435 = output_of(_e419);
-                        float _e436 = resample_target(_e435);
-                        visible[_e433] = (_e436 > 0.0);
+                    uint _e436 = j_1;
+                    uint _e438 = k_1;
+                    if ((_e365[_e436] == _e438)) {
+                        uint _e440 = j_1;
+                        vec3 _e442 = output_of(_e426);
+                        float _e443 = resample_target(_e442);
+                        visible[_e440] = (_e443 > 0.0);
                     }
                 }
             }
@@ -1766,43 +1775,43 @@ void main() {
     bool loop_init_14 = true;
     while(true) {
         if (!loop_init_14) {
-            uint _e484 = q_2;
-            q_2 = (_e484 + 1u);
+            uint _e491 = q_2;
+            q_2 = (_e491 + 1u);
         }
         loop_init_14 = false;
-        uint _e447 = q_2;
-        if ((_e447 < K)) {
+        uint _e454 = q_2;
+        if ((_e454 < K)) {
         } else {
             break;
         }
         {
-            uint _e452 = _group_0_binding_7_cs.visibility;
-            if (!((_e452 == 0u))) {
-                uint _e458 = q_2;
-                bool _e460 = visible[_e458];
-                local_4 = _e460;
+            uint _e459 = _group_0_binding_7_cs.visibility;
+            if (!((_e459 == 0u))) {
+                uint _e465 = q_2;
+                bool _e467 = visible[_e465];
+                local_4 = _e467;
             } else {
                 local_4 = true;
             }
             bool keep = local_4;
-            uint _e466 = q_2;
-            uint _e468 = q_2;
-            uint _e471 = kept[_e468].light;
-            uint _e472 = q_2;
-            uint _e475 = kept[_e472].u;
-            uint _e476 = q_2;
-            float _e479 = kept[_e476].w;
-            _group_1_binding_10_cs[pixel_1].slots[_e466] = ReuseSlot(_e471, _e475, (keep ? _e479 : 0.0));
+            uint _e473 = q_2;
+            uint _e475 = q_2;
+            uint _e478 = kept[_e475].light;
+            uint _e479 = q_2;
+            uint _e482 = kept[_e479].u;
+            uint _e483 = q_2;
+            float _e486 = kept[_e483].w;
+            _group_1_binding_10_cs[pixel_1].slots[_e473] = ReuseSlot(_e478, _e482, (keep ? _e486 : 0.0));
         }
     }
-    Material _e489 = m;
-    float _e492 = _group_0_binding_7_cs.max_confidence;
-    ReuseSurface _e494 = reuse_surface(x_17, n_15, _e489, min(confidence, _e492));
-    _group_1_binding_10_cs[pixel_1].surface = _e494;
-    vec3 _e497 = t.diffuse;
-    vec3 _e499 = t.specular;
-    uint _e501 = count;
-    imageStore(_group_0_binding_3_cs, texel_1, vec4((_e497 + _e499), float(_e501)));
+    Material _e496 = m;
+    float _e499 = _group_0_binding_7_cs.max_confidence;
+    ReuseSurface _e501 = reuse_surface(x_17, n_15, _e496, min(confidence, _e499));
+    _group_1_binding_10_cs[pixel_1].surface = _e501;
+    vec3 _e504 = t.diffuse;
+    vec3 _e506 = t.specular;
+    uint _e508 = count;
+    imageStore(_group_0_binding_3_cs, texel_1, vec4((_e504 + _e506), float(_e508)));
     return;
 }
 

@@ -359,8 +359,8 @@ GbTexel gbuffer_at(uint i) {
     ivec2 texel_1 = ivec2(int((i % _e3)), int((i / _e8)));
     vec4 _e12 = surface_at(texel_1);
     vec4 _e15 = texelFetch(_group_0_binding_3_cs, texel_1, 0);
-    vec3 n_2 = _e15.xyz;
-    float len2_ = dot(n_2, n_2);
+    vec3 n_3 = _e15.xyz;
+    float len2_ = dot(n_3, n_3);
     if ((_e12.w > 0.0)) {
         local_6 = (len2_ > 0.0);
     } else {
@@ -370,7 +370,7 @@ GbTexel gbuffer_at(uint i) {
     vec3 _e30 = _group_0_binding_1_cs.eye;
     vec3 v_2 = (_e12.xyz - _e30);
     vec4 position = vec4(_e12.xyz, (valid_1 ? 1.0 : 0.0));
-    vec4 normal = (valid_1 ? vec4((n_2 / vec3(sqrt(len2_))), sqrt(dot(v_2, v_2))) : vec4(0.0, 0.0, 0.0, 1e30));
+    vec4 normal = (valid_1 ? vec4((n_3 / vec3(sqrt(len2_))), sqrt(dot(v_2, v_2))) : vec4(0.0, 0.0, 0.0, 1e30));
     return GbTexel(position, normal);
 }
 
@@ -386,6 +386,16 @@ float near_cull_r2_of(uint slot_1, float near_r2_3) {
     return _e3;
 }
 
+void counter_add(uint f, uint n) {
+    uint _e6 = atomicAdd(_group_0_binding_12_cs[(2u * f)], n);
+    if (((_e6 + n) < _e6)) {
+        uint _e16 = atomicAdd(_group_0_binding_12_cs[((2u * f) + 1u)], 1u);
+        return;
+    } else {
+        return;
+    }
+}
+
 void counts_begin(uint li_3) {
     if ((li_3 < COUNT_FIELDS)) {
         atomicExchange(wg_counts[li_3], 0u);
@@ -395,19 +405,19 @@ void counts_begin(uint li_3) {
     return;
 }
 
-void count_add(uint f, uint n) {
-    uint _e4 = atomicAdd(wg_counts[f], n);
+void count_add(uint f_1, uint n_1) {
+    uint _e4 = atomicAdd(wg_counts[f_1], n_1);
     return;
 }
 
-void count_one(uint f_1) {
-    uint _e4 = atomicAdd(wg_counts[f_1], 1u);
+void count_one(uint f_2) {
+    uint _e4 = atomicAdd(wg_counts[f_2], 1u);
     return;
 }
 
-void count_tests(uint li_4, uint f_2, uint n_1) {
+void count_tests(uint li_4, uint f_3, uint n_2) {
     if ((li_4 == 0u)) {
-        uint _e7 = atomicAdd(wg_counts[f_2], n_1);
+        uint _e7 = atomicAdd(wg_counts[f_3], n_2);
         return;
     } else {
         return;
@@ -418,14 +428,9 @@ void counts_end(uint li_5) {
     memoryBarrierShared();
     barrier();
     if ((li_5 < COUNT_FIELDS)) {
-        uint n_3 = atomicOr(wg_counts[li_5], 0u);
-        uint _e10 = atomicAdd(_group_0_binding_12_cs[(2u * li_5)], n_3);
-        if (((_e10 + n_3) < _e10)) {
-            uint _e20 = atomicAdd(_group_0_binding_12_cs[((2u * li_5) + 1u)], 1u);
-            return;
-        } else {
-            return;
-        }
+        uint _e5 = atomicOr(wg_counts[li_5], 0u);
+        counter_add(li_5, _e5);
+        return;
     } else {
         return;
     }

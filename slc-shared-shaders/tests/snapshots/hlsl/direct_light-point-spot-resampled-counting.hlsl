@@ -156,7 +156,7 @@ ByteAddressBuffer lights : register(t1, space1);
 ByteAddressBuffer rt2_3 : register(t2, space1);
 ByteAddressBuffer r2_3 : register(t3, space1);
 ByteAddressBuffer bsh_nodes : register(t4, space1);
-RWByteAddressBuffer direct_counts : register(u8);
+RWByteAddressBuffer counters : register(u8);
 static uint evaluations = (uint)0;
 
 float to_f32_(uint u)
@@ -255,10 +255,10 @@ float connection_cosine(float3 x_2, float3 y, float3 n, float3 ng, float r2_1)
     if (_e16) {
         return 0.0;
     }
-    float3 w_7 = (v_3 / (sqrt(d2_6)).xxx);
-    float cos_x_1 = -(dot(n, w_7));
+    float3 w_6 = (v_3 / (sqrt(d2_6)).xxx);
+    float cos_x_1 = -(dot(n, w_6));
     if (!((cos_x_1 <= 0.0))) {
-        local_5 = (dot(ng, w_7) >= 0.0);
+        local_5 = (dot(ng, w_6) >= 0.0);
     } else {
         local_5 = true;
     }
@@ -298,9 +298,9 @@ float bsh_range_bound(BshNode node_1)
     return _e8;
 }
 
-bool weighted_replace(float w_2, float w_sum, float u_2)
+float weighted_threshold(float w_sum, float u_2)
 {
-    return ((u_2 * w_sum) < w_2);
+    return (w_sum / (1.0 - u_2));
 }
 
 float resample_target(float3 c_1)
@@ -336,19 +336,19 @@ float3 slot_share(uint slot_1, uint k_3)
 {
     if ((k_3 < 3u)) {
         const float _e4 = to_f32_(k_3);
-        float w_8 = (1.0 / _e4);
-        return float3(w_8, w_8, w_8);
+        float w_7 = (1.0 / _e4);
+        return float3(w_7, w_7, w_7);
     }
     uint j_3 = naga_mod(slot_1, 3u);
     const float _e15 = to_f32_(naga_div(((k_3 + 2u) - j_3), 3u));
-    float w_9 = (1.0 / _e15);
+    float w_8 = (1.0 / _e15);
     if ((j_3 == 0u)) {
-        return float3(w_9, 0.0, 0.0);
+        return float3(w_8, 0.0, 0.0);
     }
     if ((j_3 == 1u)) {
-        return float3(0.0, w_9, 0.0);
+        return float3(0.0, w_8, 0.0);
     }
-    return float3(0.0, 0.0, w_9);
+    return float3(0.0, 0.0, w_8);
 }
 
 float smith_root(float cos_, float alpha)
@@ -518,14 +518,14 @@ float ray_triangle(float3 o_1, float3 d_3, float3 a_3, float3 b_3, float3 c_3, f
     return -1.0;
 }
 
-float3 light_intensity(GpuLight l, float3 w_3)
+float3 light_intensity(GpuLight l, float3 w_2)
 {
     switch(l.kind) {
         case 0u: {
             return l.intensity;
         }
         case 1u: {
-            const float _e11 = spot_falloff(dot(l.p1_, w_3), l.a, l.b, l.p2_.x);
+            const float _e11 = spot_falloff(dot(l.p1_, w_2), l.a, l.b, l.p2_.x);
             return (l.intensity * _e11);
         }
         default: {
@@ -856,11 +856,11 @@ float4 surface_at(int2 texel)
     return ((p_3.w > 0.0) ? float4(p_3.xyz, 1.0) : (0.0).xxxx);
 }
 
-void direct_count(uint f, uint n_3)
+void counter_add(uint f, uint n_3)
 {
-    uint _e6; direct_counts.InterlockedAdd((2u * f)*4, n_3, _e6);
+    uint _e6; counters.InterlockedAdd((2u * f)*4, n_3, _e6);
     if (((_e6 + n_3) < _e6)) {
-        uint _e16; direct_counts.InterlockedAdd(((2u * f) + 1u)*4, 1u, _e16);
+        uint _e16; counters.InterlockedAdd(((2u * f) + 1u)*4, 1u, _e16);
         return;
     } else {
         return;
@@ -879,17 +879,17 @@ Shaded shade_connection(Connection c_5, float3 x_8, float3 n_4, Material m_1)
     return shaded;
 }
 
-Shaded shade_pick_traced(uint li_1, float3 x_9, float3 n_5, float3 r_6, float4 rl_5, Material m_2, float w_4, float u1_3, float u2_3, float eps_2, bool trace_3)
+Shaded shade_pick_traced(uint li_1, float3 x_9, float3 n_5, float3 r_6, float4 rl_5, Material m_2, float w_3, float u1_3, float u2_3, float eps_2, bool trace_3)
 {
-    const Connection _e12 = connect_traced(li_1, x_9, n_5, n_5, 1.0, w_4, u1_3, u2_3, eps_2, trace_3);
+    const Connection _e12 = connect_traced(li_1, x_9, n_5, n_5, 1.0, w_3, u1_3, u2_3, eps_2, trace_3);
     const Shaded _e13 = shade_connection(_e12, x_9, n_5, m_2);
     const Shaded shaded_1 = _e13;
     return shaded_1;
 }
 
-Shaded shade_pick(uint li_2, float3 x_10, float3 n_6, float3 r_7, float4 rl_6, Material m_3, float w_5, float u1_4, float u2_4, float eps_3)
+Shaded shade_pick(uint li_2, float3 x_10, float3 n_6, float3 r_7, float4 rl_6, Material m_3, float w_4, float u1_4, float u2_4, float eps_3)
 {
-    const Shaded _e11 = shade_pick_traced(li_2, x_10, n_6, r_7, rl_6, m_3, w_5, u1_4, u2_4, eps_3, true);
+    const Shaded _e11 = shade_pick_traced(li_2, x_10, n_6, r_7, rl_6, m_3, w_4, u1_4, u2_4, eps_3, true);
     const Shaded shaded_2 = _e11;
     return shaded_2;
 }
@@ -908,9 +908,9 @@ Shaded add(Shaded a_6, Shaded b_5)
     return shaded_3;
 }
 
-Shaded scaled(Shaded s_2, float3 w_6)
+Shaded scaled(Shaded s_2, float3 w_5)
 {
-    const Shaded shaded_4 = ConstructShaded((s_2.e * w_6), (s_2.diffuse * w_6), (s_2.specular * w_6));
+    const Shaded shaded_4 = ConstructShaded((s_2.e * w_5), (s_2.diffuse * w_5), (s_2.specular * w_5));
     return shaded_4;
 }
 
@@ -1012,6 +1012,7 @@ void main(uint3 gid : SV_DispatchThreadID)
     float3 total = (0.0).xxx;
     uint count = 0u;
     uint hc = (uint)0;
+    float threshold[8] = (float[8])0;
     uint b = (uint)0;
     uint q = (uint)0;
     bool local_2 = (bool)0;
@@ -1064,54 +1065,54 @@ void main(uint3 gid : SV_DispatchThreadID)
     const uint _e78 = pick_stream(_e77);
     h = _e78;
     hc = _e77;
-    const uint _e99 = bsh_first(BSH);
-    float3 _e100 = r;
-    const uint _e101 = bsh_next_leaf_lobe(BSH, _e99, x_11, _e100, _e54);
-    b = _e101;
+    const uint _e100 = bsh_first(BSH);
+    float3 _e101 = r;
+    const uint _e102 = bsh_next_leaf_lobe(BSH, _e100, x_11, _e101, _e54);
+    b = _e102;
     uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
     bool loop_init_3 = true;
     while(true) {
         if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         if (!loop_init_3) {
-            uint _e174 = b;
-            uint _e177 = asuint(bsh_nodes.Load(20+_e174*32));
-            float3 _e178 = r;
-            const uint _e179 = bsh_next_leaf_lobe(BSH, _e177, x_11, _e178, _e54);
-            b = _e179;
+            uint _e181 = b;
+            uint _e184 = asuint(bsh_nodes.Load(20+_e181*32));
+            float3 _e185 = r;
+            const uint _e186 = bsh_next_leaf_lobe(BSH, _e184, x_11, _e185, _e54);
+            b = _e186;
         }
         loop_init_3 = false;
-        uint _e103 = b;
-        if ((_e103 != BSH_NONE)) {
+        uint _e104 = b;
+        if ((_e104 != BSH_NONE)) {
         } else {
             break;
         }
         {
-            uint _e106 = count;
-            count = (_e106 + 1u);
-            uint _e110 = b;
-            uint li_3 = asuint(bsh_nodes.Load(24+_e110*32));
-            uint _e114 = h;
-            const uint _e115 = pcg_hash(_e114);
-            h = _e115;
-            uint _e116 = h;
-            const float _e117 = xi_from_bits(_e116);
-            uint _e118 = h;
-            const uint _e119 = pcg_hash(_e118);
-            h = _e119;
-            uint _e120 = h;
-            const float _e121 = xi_from_bits(_e120);
-            float2 u_4 = float2(_e117, _e121);
-            float3 _e123 = r;
-            Material _e124 = m;
-            const Shaded _e129 = shade_pick_traced(li_3, x_11, n_8, _e123, _e54, _e124, 1.0, u_4.x, u_4.y, eps_4, false);
-            const float3 _e130 = output_of(_e129);
-            uint _e132 = evaluations;
-            evaluations = (_e132 + 1u);
-            const float _e135 = resample_target(_e130);
-            if ((_e135 > 0.0)) {
-                float3 _e138 = total;
-                total = (_e138 + _e130);
+            uint _e107 = count;
+            count = (_e107 + 1u);
+            uint _e111 = b;
+            uint li_3 = asuint(bsh_nodes.Load(24+_e111*32));
+            uint _e115 = h;
+            const uint _e116 = pcg_hash(_e115);
+            h = _e116;
+            uint _e117 = h;
+            const float _e118 = xi_from_bits(_e117);
+            uint _e119 = h;
+            const uint _e120 = pcg_hash(_e119);
+            h = _e120;
+            uint _e121 = h;
+            const float _e122 = xi_from_bits(_e121);
+            float2 u_4 = float2(_e118, _e122);
+            float3 _e124 = r;
+            Material _e125 = m;
+            const Shaded _e130 = shade_pick_traced(li_3, x_11, n_8, _e124, _e54, _e125, 1.0, u_4.x, u_4.y, eps_4, false);
+            const float3 _e131 = output_of(_e130);
+            uint _e133 = evaluations;
+            evaluations = (_e133 + 1u);
+            const float _e136 = resample_target(_e131);
+            if ((_e136 > 0.0)) {
+                float3 _e139 = total;
+                total = (_e139 + _e131);
                 q = 0u;
                 uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
                 bool loop_init_4 = true;
@@ -1119,29 +1120,25 @@ void main(uint3 gid : SV_DispatchThreadID)
                     if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
                     loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
                     if (!loop_init_4) {
-                        uint _e170 = q;
-                        q = (_e170 + 1u);
+                        uint _e177 = q;
+                        q = (_e177 + 1u);
                     }
                     loop_init_4 = false;
-                    uint _e142 = q;
-                    if ((_e142 < K)) {
+                    uint _e143 = q;
+                    if ((_e143 < K)) {
                     } else {
                         break;
                     }
                     {
-                        uint _e145 = hc;
-                        const uint _e146 = pcg_hash(_e145);
-                        hc = _e146;
-                        uint _e147 = q;
-                        const float _e149 = slot_target(_e130, _e147, K);
-                        if ((_e149 > 0.0)) {
-                            float3 _e154 = total;
-                            uint _e155 = q;
-                            const float _e157 = slot_target(_e154, _e155, K);
-                            uint _e158 = hc;
-                            const float _e159 = xi_from_bits(_e158);
-                            const bool _e160 = weighted_replace(_e149, _e157, _e159);
-                            local_2 = _e160;
+                        uint _e146 = q;
+                        const float _e148 = slot_target(_e131, _e146, K);
+                        float3 _e149 = total;
+                        uint _e150 = q;
+                        const float _e152 = slot_target(_e149, _e150, K);
+                        if ((_e148 > 0.0)) {
+                            uint _e157 = q;
+                            float _e159 = threshold[min(uint(_e157), 7u)];
+                            local_2 = (_e152 > _e159);
                         } else {
                             local_2 = false;
                         }
@@ -1152,7 +1149,15 @@ void main(uint3 gid : SV_DispatchThreadID)
                             uint _e165 = q;
                             slot_u[min(uint(_e165), 7u)] = u_4;
                             uint _e167 = q;
-                            slot_p[min(uint(_e167), 7u)] = _e149;
+                            slot_p[min(uint(_e167), 7u)] = _e148;
+                            uint _e169 = hc;
+                            const uint _e170 = pcg_hash(_e169);
+                            hc = _e170;
+                            uint _e171 = q;
+                            uint _e173 = hc;
+                            const float _e174 = xi_from_bits(_e173);
+                            const float _e175 = weighted_threshold(_e152, _e174);
+                            threshold[min(uint(_e171), 7u)] = _e175;
                         }
                     }
                 }
@@ -1165,117 +1170,117 @@ void main(uint3 gid : SV_DispatchThreadID)
         if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
         loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
         if (!loop_init_5) {
-            uint _e202 = k;
-            k = (_e202 + 1u);
+            uint _e209 = k;
+            k = (_e209 + 1u);
         }
         loop_init_5 = false;
-        uint _e184 = k;
-        if ((_e184 < K)) {
+        uint _e191 = k;
+        if ((_e191 < K)) {
         } else {
             break;
         }
         {
-            uint _e187 = k;
-            uint _e189 = k;
-            uint _e191 = slot_light[min(uint(_e189), 7u)];
-            keys[min(uint(_e187), 7u)] = uint2(_e191, 0u);
             uint _e194 = k;
             uint _e196 = k;
-            float _e198 = slot_p[min(uint(_e196), 7u)];
-            held[min(uint(_e194), 7u)] = (_e198 > 0.0);
+            uint _e198 = slot_light[min(uint(_e196), 7u)];
+            keys[min(uint(_e194), 7u)] = uint2(_e198, 0u);
+            uint _e201 = k;
+            uint _e203 = k;
+            float _e205 = slot_p[min(uint(_e203), 7u)];
+            held[min(uint(_e201), 7u)] = (_e205 > 0.0);
         }
     }
-    uint2 _e204[8] = keys;
-    bool _e205[8] = held;
-    const uint _e206[8] = first_holders(_e204, _e205);
+    uint2 _e211[8] = keys;
+    bool _e212[8] = held;
+    const uint _e213[8] = first_holders(_e211, _e212);
     uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
     bool loop_init_6 = true;
     while(true) {
         if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
         loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
         if (!loop_init_6) {
-            uint _e269 = k_1;
-            k_1 = (_e269 + 1u);
+            uint _e276 = k_1;
+            k_1 = (_e276 + 1u);
         }
         loop_init_6 = false;
-        uint _e209 = k_1;
-        if ((_e209 < K)) {
+        uint _e216 = k_1;
+        if ((_e216 < K)) {
         } else {
             break;
         }
         {
             w = (0.0).xxx;
-            uint _e215 = k_1;
-            uint _e217 = k_1;
-            bool first_1 = (_e206[min(uint(_e215), 7u)] == _e217);
-            uint _e219 = k_1;
-            j = _e219;
+            uint _e222 = k_1;
+            uint _e224 = k_1;
+            bool first_1 = (_e213[min(uint(_e222), 7u)] == _e224);
+            uint _e226 = k_1;
+            j = _e226;
             uint2 loop_bound_9 = uint2(4294967295u, 4294967295u);
             bool loop_init_7 = true;
             while(true) {
                 if (all(loop_bound_9 == uint2(0u, 0u))) { break; }
                 loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
                 if (!loop_init_7) {
-                    uint _e247 = j;
-                    j = (_e247 + 1u);
+                    uint _e254 = j;
+                    j = (_e254 + 1u);
                 }
                 loop_init_7 = false;
-                uint _e221 = j;
-                if ((_e221 < K)) {
+                uint _e228 = j;
+                if ((_e228 < K)) {
                     local_3 = first_1;
                 } else {
                     local_3 = false;
                 }
-                bool _e227 = local_3;
-                if (_e227) {
+                bool _e234 = local_3;
+                if (_e234) {
                 } else {
                     break;
                 }
                 {
-                    uint _e228 = j;
-                    uint _e230 = k_1;
-                    if ((_e206[min(uint(_e228), 7u)] == _e230)) {
-                        float3 _e232 = w;
-                        float3 _e233 = total;
-                        uint _e234 = j;
-                        const float _e236 = slot_target(_e233, _e234, K);
-                        uint _e237 = j;
-                        float _e239 = slot_p[min(uint(_e237), 7u)];
+                    uint _e235 = j;
+                    uint _e237 = k_1;
+                    if ((_e213[min(uint(_e235), 7u)] == _e237)) {
+                        float3 _e239 = w;
+                        float3 _e240 = total;
                         uint _e241 = j;
-                        const float3 _e243 = slot_share(_e241, K);
-                        w = (_e232 + ((_e236 / _e239) * _e243));
+                        const float _e243 = slot_target(_e240, _e241, K);
+                        uint _e244 = j;
+                        float _e246 = slot_p[min(uint(_e244), 7u)];
+                        uint _e248 = j;
+                        const float3 _e250 = slot_share(_e248, K);
+                        w = (_e239 + ((_e243 / _e246) * _e250));
                     }
                 }
             }
             if (first_1) {
-                Shaded _e249 = t;
-                uint _e250 = k_1;
-                uint _e252 = slot_light[min(uint(_e250), 7u)];
-                float3 _e253 = r;
-                Material _e254 = m;
-                uint _e256 = k_1;
-                float _e259 = slot_u[min(uint(_e256), 7u)].x;
-                uint _e260 = k_1;
-                float _e263 = slot_u[min(uint(_e260), 7u)].y;
-                const Shaded _e264 = shade_pick(_e252, x_11, n_8, _e253, _e54, _e254, 1.0, _e259, _e263, eps_4);
-                float3 _e265 = w;
-                const Shaded _e266 = scaled(_e264, _e265);
-                const Shaded _e267 = add(_e249, _e266);
-                t = _e267;
+                Shaded _e256 = t;
+                uint _e257 = k_1;
+                uint _e259 = slot_light[min(uint(_e257), 7u)];
+                float3 _e260 = r;
+                Material _e261 = m;
+                uint _e263 = k_1;
+                float _e266 = slot_u[min(uint(_e263), 7u)].x;
+                uint _e267 = k_1;
+                float _e270 = slot_u[min(uint(_e267), 7u)].y;
+                const Shaded _e271 = shade_pick(_e259, x_11, n_8, _e260, _e54, _e261, 1.0, _e266, _e270, eps_4);
+                float3 _e272 = w;
+                const Shaded _e273 = scaled(_e271, _e272);
+                const Shaded _e274 = add(_e256, _e273);
+                t = _e274;
             }
         }
     }
-    float3 _e273 = t.e;
-    uint _e274 = count;
-    out_tex[texel_1] = float4(_e273, float(_e274));
-    direct_count(DIRECT_COUNT_PIXELS, 1u);
-    uint _e280 = count;
-    direct_count(DIRECT_COUNT_CANDIDATES, _e280);
-    uint _e283 = evaluations;
-    direct_count(DIRECT_COUNT_EVALUATIONS, _e283);
-    uint _e286 = rays_cast;
-    direct_count(DIRECT_COUNT_RAYS, _e286);
-    uint _e289 = nodes_visited;
-    direct_count(DIRECT_COUNT_NODES, _e289);
+    float3 _e280 = t.e;
+    uint _e281 = count;
+    out_tex[texel_1] = float4(_e280, float(_e281));
+    counter_add(DIRECT_COUNT_PIXELS, 1u);
+    uint _e287 = count;
+    counter_add(DIRECT_COUNT_CANDIDATES, _e287);
+    uint _e290 = evaluations;
+    counter_add(DIRECT_COUNT_EVALUATIONS, _e290);
+    uint _e293 = rays_cast;
+    counter_add(DIRECT_COUNT_RAYS, _e293);
+    uint _e296 = nodes_visited;
+    counter_add(DIRECT_COUNT_NODES, _e296);
     return;
 }

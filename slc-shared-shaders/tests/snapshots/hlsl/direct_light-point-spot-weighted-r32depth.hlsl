@@ -271,10 +271,10 @@ float connection_cosine(float3 x_2, float3 y, float3 n, float3 ng, float r2_1)
     if (_e16) {
         return 0.0;
     }
-    float3 w_6 = (v_4 / (sqrt(d2_7)).xxx);
-    float cos_x_1 = -(dot(n, w_6));
+    float3 w_5 = (v_4 / (sqrt(d2_7)).xxx);
+    float cos_x_1 = -(dot(n, w_5));
     if (!((cos_x_1 <= 0.0))) {
-        local_3 = (dot(ng, w_6) >= 0.0);
+        local_3 = (dot(ng, w_5) >= 0.0);
     } else {
         local_3 = true;
     }
@@ -314,15 +314,15 @@ float bsh_range_bound(BshNode node_1)
     return _e8;
 }
 
-bool weighted_replace(float w_1, float w_sum, float u_2)
+float weighted_threshold(float w_sum, float u_2)
 {
-    return ((u_2 * w_sum) < w_1);
+    return (w_sum / (1.0 - u_2));
 }
 
-float weighted_pick_weight(float w_sum_1, float w_2, uint k_2)
+float weighted_pick_weight(float w_sum_1, float w_1, uint k_2)
 {
     const float _e3 = to_f32_(k_2);
-    return (w_sum_1 / (_e3 * w_2));
+    return (w_sum_1 / (_e3 * w_1));
 }
 
 float ggx_d(float cos_h, float sin2_h, float alpha)
@@ -640,14 +640,14 @@ float ray_triangle(float3 o_1, float3 d_3, float3 a_3, float3 b_2, float3 c_1, f
     return -1.0;
 }
 
-float3 light_intensity(GpuLight l, float3 w_3)
+float3 light_intensity(GpuLight l, float3 w_2)
 {
     switch(l.kind) {
         case 0u: {
             return l.intensity;
         }
         case 1u: {
-            const float _e11 = spot_falloff(dot(l.p1_, w_3), l.a, l.b, l.p2_.x);
+            const float _e11 = spot_falloff(dot(l.p1_, w_2), l.a, l.b, l.p2_.x);
             return (l.intensity * _e11);
         }
         default: {
@@ -1001,41 +1001,42 @@ WeightedPicks bsh_weighted_collect(float3 x_11, float3 n_7, float3 r_10, float4 
 {
     WeightedPicks picks = (WeightedPicks)0;
     uint h_1 = (uint)0;
+    float threshold[8] = (float[8])0;
     uint b_4 = (uint)0;
     uint s_1 = (uint)0;
 
     picks.w_sum = 0.0;
     picks.n = 0u;
     h_1 = h0_;
-    const uint _e14 = bsh_first(BSH);
-    const uint _e15 = bsh_next_leaf_lobe(BSH, _e14, x_11, r_10, rl_7);
-    b_4 = _e15;
+    const uint _e15 = bsh_first(BSH);
+    const uint _e16 = bsh_next_leaf_lobe(BSH, _e15, x_11, r_10, rl_7);
+    b_4 = _e16;
     uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
     bool loop_init_1 = true;
     while(true) {
         if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
         loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e58 = b_4;
-            uint _e61 = asuint(bsh_nodes.Load(20+_e58*32));
-            const uint _e62 = bsh_next_leaf_lobe(BSH, _e61, x_11, r_10, rl_7);
-            b_4 = _e62;
+            uint _e67 = b_4;
+            uint _e70 = asuint(bsh_nodes.Load(20+_e67*32));
+            const uint _e71 = bsh_next_leaf_lobe(BSH, _e70, x_11, r_10, rl_7);
+            b_4 = _e71;
         }
         loop_init_1 = false;
-        uint _e17 = b_4;
-        if ((_e17 != BSH_NONE)) {
+        uint _e18 = b_4;
+        if ((_e18 != BSH_NONE)) {
         } else {
             break;
         }
         {
-            uint _e21 = picks.n;
-            picks.n = (_e21 + 1u);
-            uint _e25 = b_4;
-            uint li_5 = asuint(bsh_nodes.Load(24+_e25*32));
-            const float _e29 = light_weight(li_5, x_11, n_7, r_10, lobe_8, rl_7);
-            if ((_e29 > 0.0)) {
-                float _e33 = picks.w_sum;
-                picks.w_sum = (_e33 + _e29);
+            uint _e22 = picks.n;
+            picks.n = (_e22 + 1u);
+            uint _e26 = b_4;
+            uint li_5 = asuint(bsh_nodes.Load(24+_e26*32));
+            const float _e30 = light_weight(li_5, x_11, n_7, r_10, lobe_8, rl_7);
+            if ((_e30 > 0.0)) {
+                float _e34 = picks.w_sum;
+                picks.w_sum = (_e34 + _e30);
                 s_1 = 0u;
                 uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
                 bool loop_init_2 = true;
@@ -1043,38 +1044,43 @@ WeightedPicks bsh_weighted_collect(float3 x_11, float3 n_7, float3 r_10, float4 
                     if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
                     loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
                     if (!loop_init_2) {
-                        uint _e54 = s_1;
-                        s_1 = (_e54 + 1u);
+                        uint _e63 = s_1;
+                        s_1 = (_e63 + 1u);
                     }
                     loop_init_2 = false;
-                    uint _e37 = s_1;
-                    if ((_e37 < K)) {
+                    uint _e38 = s_1;
+                    if ((_e38 < K)) {
                     } else {
                         break;
                     }
                     {
-                        uint _e40 = h_1;
-                        const uint _e41 = pcg_hash(_e40);
-                        h_1 = _e41;
-                        float _e43 = picks.w_sum;
-                        uint _e44 = h_1;
-                        const float _e45 = xi_from_bits(_e44);
-                        const bool _e46 = weighted_replace(_e29, _e43, _e45);
-                        if (_e46) {
+                        float _e42 = picks.w_sum;
+                        uint _e43 = s_1;
+                        float _e45 = threshold[min(uint(_e43), 7u)];
+                        if ((_e42 > _e45)) {
                             uint _e48 = s_1;
                             picks.light[min(uint(_e48), 7u)] = li_5;
                             uint _e51 = s_1;
-                            picks.w[min(uint(_e51), 7u)] = _e29;
+                            picks.w[min(uint(_e51), 7u)] = _e30;
+                            uint _e53 = h_1;
+                            const uint _e54 = pcg_hash(_e53);
+                            h_1 = _e54;
+                            uint _e55 = s_1;
+                            float _e58 = picks.w_sum;
+                            uint _e59 = h_1;
+                            const float _e60 = xi_from_bits(_e59);
+                            const float _e61 = weighted_threshold(_e58, _e60);
+                            threshold[min(uint(_e55), 7u)] = _e61;
                         }
                     }
                 }
             }
         }
     }
-    uint _e64 = h_1;
-    picks.h = _e64;
-    WeightedPicks _e65 = picks;
-    const WeightedPicks weightedpicks = _e65;
+    uint _e73 = h_1;
+    picks.h = _e73;
+    WeightedPicks _e74 = picks;
+    const WeightedPicks weightedpicks = _e74;
     return weightedpicks;
 }
 
@@ -1135,17 +1141,17 @@ Shaded shade_connection(Connection c_3, float3 x_12, float3 n_8, Material m_1)
     return shaded;
 }
 
-Shaded shade_pick_traced(uint li_3, float3 x_13, float3 n_9, float3 r_11, float4 rl_8, Material m_2, float w_4, float u1_3, float u2_3, float eps_2, bool trace_3)
+Shaded shade_pick_traced(uint li_3, float3 x_13, float3 n_9, float3 r_11, float4 rl_8, Material m_2, float w_3, float u1_3, float u2_3, float eps_2, bool trace_3)
 {
-    const Connection _e12 = connect_traced(li_3, x_13, n_9, n_9, 1.0, w_4, u1_3, u2_3, eps_2, trace_3);
+    const Connection _e12 = connect_traced(li_3, x_13, n_9, n_9, 1.0, w_3, u1_3, u2_3, eps_2, trace_3);
     const Shaded _e13 = shade_connection(_e12, x_13, n_9, m_2);
     const Shaded shaded_1 = _e13;
     return shaded_1;
 }
 
-Shaded shade_pick(uint li_4, float3 x_14, float3 n_10, float3 r_12, float4 rl_9, Material m_3, float w_5, float u1_4, float u2_4, float eps_3)
+Shaded shade_pick(uint li_4, float3 x_14, float3 n_10, float3 r_12, float4 rl_9, Material m_3, float w_4, float u1_4, float u2_4, float eps_3)
 {
-    const Shaded _e11 = shade_pick_traced(li_4, x_14, n_10, r_12, rl_9, m_3, w_5, u1_4, u2_4, eps_3, true);
+    const Shaded _e11 = shade_pick_traced(li_4, x_14, n_10, r_12, rl_9, m_3, w_4, u1_4, u2_4, eps_3, true);
     const Shaded shaded_2 = _e11;
     return shaded_2;
 }

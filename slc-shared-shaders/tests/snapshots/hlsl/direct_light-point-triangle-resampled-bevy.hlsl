@@ -265,10 +265,10 @@ float connection_cosine(float3 x_2, float3 y, float3 n, float3 ng, float r2_1)
     if (_e16) {
         return 0.0;
     }
-    float3 w_8 = (v_6 / (sqrt(d2_6)).xxx);
-    float cos_x_1 = -(dot(n, w_8));
+    float3 w_7 = (v_6 / (sqrt(d2_6)).xxx);
+    float cos_x_1 = -(dot(n, w_7));
     if (!((cos_x_1 <= 0.0))) {
-        local_5 = (dot(ng, w_8) >= 0.0);
+        local_5 = (dot(ng, w_7) >= 0.0);
     } else {
         local_5 = true;
     }
@@ -312,9 +312,9 @@ float bsh_range_bound(BshNode node_1)
     return _e8;
 }
 
-bool weighted_replace(float w_3, float w_sum, float u_2)
+float weighted_threshold(float w_sum, float u_2)
 {
-    return ((u_2 * w_sum) < w_3);
+    return (w_sum / (1.0 - u_2));
 }
 
 float resample_target(float3 c_2)
@@ -350,19 +350,19 @@ float3 slot_share(uint slot_1, uint k_3)
 {
     if ((k_3 < 3u)) {
         const float _e4 = to_f32_(k_3);
-        float w_9 = (1.0 / _e4);
-        return float3(w_9, w_9, w_9);
+        float w_8 = (1.0 / _e4);
+        return float3(w_8, w_8, w_8);
     }
     uint j_3 = naga_mod(slot_1, 3u);
     const float _e15 = to_f32_(naga_div(((k_3 + 2u) - j_3), 3u));
-    float w_10 = (1.0 / _e15);
+    float w_9 = (1.0 / _e15);
     if ((j_3 == 0u)) {
-        return float3(w_10, 0.0, 0.0);
+        return float3(w_9, 0.0, 0.0);
     }
     if ((j_3 == 1u)) {
-        return float3(0.0, w_10, 0.0);
+        return float3(0.0, w_9, 0.0);
     }
-    return float3(0.0, 0.0, w_10);
+    return float3(0.0, 0.0, w_9);
 }
 
 float ggx_d(float cos_h, float sin2_h, float alpha)
@@ -690,7 +690,7 @@ float ray_triangle(float3 o_1, float3 d_3, float3 a_5, float3 b_5, float3 c_6, f
     return -1.0;
 }
 
-float3 light_intensity(GpuLight l_1, float3 w_4)
+float3 light_intensity(GpuLight l_1, float3 w_3)
 {
     switch(l_1.kind) {
         case 0u: {
@@ -698,7 +698,7 @@ float3 light_intensity(GpuLight l_1, float3 w_4)
         }
         case 3u: {
             const float3 _e8 = triangle_normal(l_1.p0_, l_1.p1_, l_1.p2_);
-            const float _e10 = triangle_lobe(_e8, l_1.a, w_4);
+            const float _e10 = triangle_lobe(_e8, l_1.a, w_3);
             return (l_1.intensity * _e10);
         }
         default: {
@@ -1065,18 +1065,18 @@ Shaded shade_connection(Connection c_8, float3 x_9, float3 n_6, Material m_1)
     return shaded;
 }
 
-Shaded shade_pick_traced(uint li_2, float3 x_10, float3 n_7, float3 r_9, float4 rl_6, Material m_2, float w_5, float u1_4, float u2_4, float eps_2, bool trace_3)
+Shaded shade_pick_traced(uint li_2, float3 x_10, float3 n_7, float3 r_9, float4 rl_6, Material m_2, float w_4, float u1_4, float u2_4, float eps_2, bool trace_3)
 {
     const float _e11 = light_range_scale(li_2, x_10, r_9, rl_6);
-    const Connection _e12 = connect_traced(li_2, x_10, n_7, n_7, _e11, w_5, u1_4, u2_4, eps_2, trace_3);
+    const Connection _e12 = connect_traced(li_2, x_10, n_7, n_7, _e11, w_4, u1_4, u2_4, eps_2, trace_3);
     const Shaded _e13 = shade_connection(_e12, x_10, n_7, m_2);
     const Shaded shaded_1 = _e13;
     return shaded_1;
 }
 
-Shaded shade_pick(uint li_3, float3 x_11, float3 n_8, float3 r_10, float4 rl_7, Material m_3, float w_6, float u1_5, float u2_5, float eps_3)
+Shaded shade_pick(uint li_3, float3 x_11, float3 n_8, float3 r_10, float4 rl_7, Material m_3, float w_5, float u1_5, float u2_5, float eps_3)
 {
-    const Shaded _e11 = shade_pick_traced(li_3, x_11, n_8, r_10, rl_7, m_3, w_6, u1_5, u2_5, eps_3, true);
+    const Shaded _e11 = shade_pick_traced(li_3, x_11, n_8, r_10, rl_7, m_3, w_5, u1_5, u2_5, eps_3, true);
     const Shaded shaded_2 = _e11;
     return shaded_2;
 }
@@ -1113,9 +1113,9 @@ Shaded add(Shaded a_8, Shaded b_7)
     return shaded_3;
 }
 
-Shaded scaled(Shaded s_2, float3 w_7)
+Shaded scaled(Shaded s_2, float3 w_6)
 {
-    const Shaded shaded_4 = ConstructShaded((s_2.e * w_7), (s_2.diffuse * w_7), (s_2.specular * w_7));
+    const Shaded shaded_4 = ConstructShaded((s_2.e * w_6), (s_2.diffuse * w_6), (s_2.specular * w_6));
     return shaded_4;
 }
 
@@ -1217,6 +1217,7 @@ void main(uint3 gid : SV_DispatchThreadID)
     float3 total = (0.0).xxx;
     uint count = 0u;
     uint hc = (uint)0;
+    float threshold[8] = (float[8])0;
     uint b = (uint)0;
     uint q = (uint)0;
     bool local_2 = (bool)0;
@@ -1284,52 +1285,52 @@ void main(uint3 gid : SV_DispatchThreadID)
     const uint _e111 = pick_stream(_e110);
     h = _e111;
     hc = _e110;
-    const uint _e132 = bsh_first(BSH);
-    float3 _e133 = r;
-    const uint _e134 = bsh_next_leaf_lobe(BSH, _e132, x_13, _e133, _e87);
-    b = _e134;
+    const uint _e133 = bsh_first(BSH);
+    float3 _e134 = r;
+    const uint _e135 = bsh_next_leaf_lobe(BSH, _e133, x_13, _e134, _e87);
+    b = _e135;
     uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
     bool loop_init_3 = true;
     while(true) {
         if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         if (!loop_init_3) {
-            uint _e203 = b;
-            uint _e206 = asuint(bsh_nodes.Load(20+_e203*32));
-            float3 _e207 = r;
-            const uint _e208 = bsh_next_leaf_lobe(BSH, _e206, x_13, _e207, _e87);
-            b = _e208;
+            uint _e210 = b;
+            uint _e213 = asuint(bsh_nodes.Load(20+_e210*32));
+            float3 _e214 = r;
+            const uint _e215 = bsh_next_leaf_lobe(BSH, _e213, x_13, _e214, _e87);
+            b = _e215;
         }
         loop_init_3 = false;
-        uint _e136 = b;
-        if ((_e136 != BSH_NONE)) {
+        uint _e137 = b;
+        if ((_e137 != BSH_NONE)) {
         } else {
             break;
         }
         {
-            uint _e139 = count;
-            count = (_e139 + 1u);
-            uint _e143 = b;
-            uint li_4 = asuint(bsh_nodes.Load(24+_e143*32));
-            uint _e147 = h;
-            const uint _e148 = pcg_hash(_e147);
-            h = _e148;
-            uint _e149 = h;
-            const float _e150 = xi_from_bits(_e149);
-            uint _e151 = h;
-            const uint _e152 = pcg_hash(_e151);
-            h = _e152;
-            uint _e153 = h;
-            const float _e154 = xi_from_bits(_e153);
-            float2 u_4 = float2(_e150, _e154);
-            float3 _e156 = r;
-            Material _e157 = m;
-            const Shaded _e162 = shade_pick_traced(li_4, x_13, n_11, _e156, _e87, _e157, 1.0, u_4.x, u_4.y, eps_4, false);
-            const float3 _e163 = output_of(_e162);
-            const float _e164 = resample_target(_e163);
-            if ((_e164 > 0.0)) {
-                float3 _e167 = total;
-                total = (_e167 + _e163);
+            uint _e140 = count;
+            count = (_e140 + 1u);
+            uint _e144 = b;
+            uint li_4 = asuint(bsh_nodes.Load(24+_e144*32));
+            uint _e148 = h;
+            const uint _e149 = pcg_hash(_e148);
+            h = _e149;
+            uint _e150 = h;
+            const float _e151 = xi_from_bits(_e150);
+            uint _e152 = h;
+            const uint _e153 = pcg_hash(_e152);
+            h = _e153;
+            uint _e154 = h;
+            const float _e155 = xi_from_bits(_e154);
+            float2 u_4 = float2(_e151, _e155);
+            float3 _e157 = r;
+            Material _e158 = m;
+            const Shaded _e163 = shade_pick_traced(li_4, x_13, n_11, _e157, _e87, _e158, 1.0, u_4.x, u_4.y, eps_4, false);
+            const float3 _e164 = output_of(_e163);
+            const float _e165 = resample_target(_e164);
+            if ((_e165 > 0.0)) {
+                float3 _e168 = total;
+                total = (_e168 + _e164);
                 q = 0u;
                 uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
                 bool loop_init_4 = true;
@@ -1337,29 +1338,25 @@ void main(uint3 gid : SV_DispatchThreadID)
                     if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
                     loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
                     if (!loop_init_4) {
-                        uint _e199 = q;
-                        q = (_e199 + 1u);
+                        uint _e206 = q;
+                        q = (_e206 + 1u);
                     }
                     loop_init_4 = false;
-                    uint _e171 = q;
-                    if ((_e171 < K)) {
+                    uint _e172 = q;
+                    if ((_e172 < K)) {
                     } else {
                         break;
                     }
                     {
-                        uint _e174 = hc;
-                        const uint _e175 = pcg_hash(_e174);
-                        hc = _e175;
-                        uint _e176 = q;
-                        const float _e178 = slot_target(_e163, _e176, K);
-                        if ((_e178 > 0.0)) {
-                            float3 _e183 = total;
-                            uint _e184 = q;
-                            const float _e186 = slot_target(_e183, _e184, K);
-                            uint _e187 = hc;
-                            const float _e188 = xi_from_bits(_e187);
-                            const bool _e189 = weighted_replace(_e178, _e186, _e188);
-                            local_2 = _e189;
+                        uint _e175 = q;
+                        const float _e177 = slot_target(_e164, _e175, K);
+                        float3 _e178 = total;
+                        uint _e179 = q;
+                        const float _e181 = slot_target(_e178, _e179, K);
+                        if ((_e177 > 0.0)) {
+                            uint _e186 = q;
+                            float _e188 = threshold[min(uint(_e186), 7u)];
+                            local_2 = (_e181 > _e188);
                         } else {
                             local_2 = false;
                         }
@@ -1370,7 +1367,15 @@ void main(uint3 gid : SV_DispatchThreadID)
                             uint _e194 = q;
                             slot_u[min(uint(_e194), 7u)] = u_4;
                             uint _e196 = q;
-                            slot_p[min(uint(_e196), 7u)] = _e178;
+                            slot_p[min(uint(_e196), 7u)] = _e177;
+                            uint _e198 = hc;
+                            const uint _e199 = pcg_hash(_e198);
+                            hc = _e199;
+                            uint _e200 = q;
+                            uint _e202 = hc;
+                            const float _e203 = xi_from_bits(_e202);
+                            const float _e204 = weighted_threshold(_e181, _e203);
+                            threshold[min(uint(_e200), 7u)] = _e204;
                         }
                     }
                 }
@@ -1383,109 +1388,109 @@ void main(uint3 gid : SV_DispatchThreadID)
         if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
         loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
         if (!loop_init_5) {
-            uint _e231 = k;
-            k = (_e231 + 1u);
+            uint _e238 = k;
+            k = (_e238 + 1u);
         }
         loop_init_5 = false;
-        uint _e213 = k;
-        if ((_e213 < K)) {
+        uint _e220 = k;
+        if ((_e220 < K)) {
         } else {
             break;
         }
         {
-            uint _e216 = k;
-            uint _e218 = k;
-            uint _e220 = slot_light[min(uint(_e218), 7u)];
-            keys[min(uint(_e216), 7u)] = uint2(_e220, 0u);
             uint _e223 = k;
             uint _e225 = k;
-            float _e227 = slot_p[min(uint(_e225), 7u)];
-            held[min(uint(_e223), 7u)] = (_e227 > 0.0);
+            uint _e227 = slot_light[min(uint(_e225), 7u)];
+            keys[min(uint(_e223), 7u)] = uint2(_e227, 0u);
+            uint _e230 = k;
+            uint _e232 = k;
+            float _e234 = slot_p[min(uint(_e232), 7u)];
+            held[min(uint(_e230), 7u)] = (_e234 > 0.0);
         }
     }
-    uint2 _e233[8] = keys;
-    bool _e234[8] = held;
-    const uint _e235[8] = first_holders(_e233, _e234);
+    uint2 _e240[8] = keys;
+    bool _e241[8] = held;
+    const uint _e242[8] = first_holders(_e240, _e241);
     uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
     bool loop_init_6 = true;
     while(true) {
         if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
         loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
         if (!loop_init_6) {
-            uint _e298 = k_1;
-            k_1 = (_e298 + 1u);
+            uint _e305 = k_1;
+            k_1 = (_e305 + 1u);
         }
         loop_init_6 = false;
-        uint _e238 = k_1;
-        if ((_e238 < K)) {
+        uint _e245 = k_1;
+        if ((_e245 < K)) {
         } else {
             break;
         }
         {
             w = (0.0).xxx;
-            uint _e244 = k_1;
-            uint _e246 = k_1;
-            bool first_1 = (_e235[min(uint(_e244), 7u)] == _e246);
-            uint _e248 = k_1;
-            j = _e248;
+            uint _e251 = k_1;
+            uint _e253 = k_1;
+            bool first_1 = (_e242[min(uint(_e251), 7u)] == _e253);
+            uint _e255 = k_1;
+            j = _e255;
             uint2 loop_bound_9 = uint2(4294967295u, 4294967295u);
             bool loop_init_7 = true;
             while(true) {
                 if (all(loop_bound_9 == uint2(0u, 0u))) { break; }
                 loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
                 if (!loop_init_7) {
-                    uint _e276 = j;
-                    j = (_e276 + 1u);
+                    uint _e283 = j;
+                    j = (_e283 + 1u);
                 }
                 loop_init_7 = false;
-                uint _e250 = j;
-                if ((_e250 < K)) {
+                uint _e257 = j;
+                if ((_e257 < K)) {
                     local_3 = first_1;
                 } else {
                     local_3 = false;
                 }
-                bool _e256 = local_3;
-                if (_e256) {
+                bool _e263 = local_3;
+                if (_e263) {
                 } else {
                     break;
                 }
                 {
-                    uint _e257 = j;
-                    uint _e259 = k_1;
-                    if ((_e235[min(uint(_e257), 7u)] == _e259)) {
-                        float3 _e261 = w;
-                        float3 _e262 = total;
-                        uint _e263 = j;
-                        const float _e265 = slot_target(_e262, _e263, K);
-                        uint _e266 = j;
-                        float _e268 = slot_p[min(uint(_e266), 7u)];
+                    uint _e264 = j;
+                    uint _e266 = k_1;
+                    if ((_e242[min(uint(_e264), 7u)] == _e266)) {
+                        float3 _e268 = w;
+                        float3 _e269 = total;
                         uint _e270 = j;
-                        const float3 _e272 = slot_share(_e270, K);
-                        w = (_e261 + ((_e265 / _e268) * _e272));
+                        const float _e272 = slot_target(_e269, _e270, K);
+                        uint _e273 = j;
+                        float _e275 = slot_p[min(uint(_e273), 7u)];
+                        uint _e277 = j;
+                        const float3 _e279 = slot_share(_e277, K);
+                        w = (_e268 + ((_e272 / _e275) * _e279));
                     }
                 }
             }
             if (first_1) {
-                Shaded _e278 = t;
-                uint _e279 = k_1;
-                uint _e281 = slot_light[min(uint(_e279), 7u)];
-                float3 _e282 = r;
-                Material _e283 = m;
-                uint _e285 = k_1;
-                float _e288 = slot_u[min(uint(_e285), 7u)].x;
-                uint _e289 = k_1;
-                float _e292 = slot_u[min(uint(_e289), 7u)].y;
-                const Shaded _e293 = shade_pick(_e281, x_13, n_11, _e282, _e87, _e283, 1.0, _e288, _e292, eps_4);
-                float3 _e294 = w;
-                const Shaded _e295 = scaled(_e293, _e294);
-                const Shaded _e296 = add(_e278, _e295);
-                t = _e296;
+                Shaded _e285 = t;
+                uint _e286 = k_1;
+                uint _e288 = slot_light[min(uint(_e286), 7u)];
+                float3 _e289 = r;
+                Material _e290 = m;
+                uint _e292 = k_1;
+                float _e295 = slot_u[min(uint(_e292), 7u)].x;
+                uint _e296 = k_1;
+                float _e299 = slot_u[min(uint(_e296), 7u)].y;
+                const Shaded _e300 = shade_pick(_e288, x_13, n_11, _e289, _e87, _e290, 1.0, _e295, _e299, eps_4);
+                float3 _e301 = w;
+                const Shaded _e302 = scaled(_e300, _e301);
+                const Shaded _e303 = add(_e285, _e302);
+                t = _e303;
             }
         }
     }
-    float3 _e302 = t.diffuse;
-    float3 _e304 = t.specular;
-    uint _e306 = count;
-    out_tex[texel_1] = float4((_e302 + _e304), float(_e306));
+    float3 _e309 = t.diffuse;
+    float3 _e311 = t.specular;
+    uint _e313 = count;
+    out_tex[texel_1] = float4((_e309 + _e311), float(_e313));
     return;
 }

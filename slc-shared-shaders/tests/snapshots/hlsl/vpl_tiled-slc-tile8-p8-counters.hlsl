@@ -373,8 +373,8 @@ GbTexel gbuffer_at(uint i)
     int2 texel_1 = int2(int(naga_mod(i, _e3)), int(naga_div(i, _e8)));
     const float4 _e12 = surface_at(texel_1);
     float4 _e15 = normal_tex.Load(int3(texel_1, int(0)));
-    float3 n_2 = _e15.xyz;
-    float len2_ = dot(n_2, n_2);
+    float3 n_3 = _e15.xyz;
+    float len2_ = dot(n_3, n_3);
     if ((_e12.w > 0.0)) {
         local_6 = (len2_ > 0.0);
     } else {
@@ -384,9 +384,20 @@ GbTexel gbuffer_at(uint i)
     float3 _e30 = view.eye;
     float3 v_2 = (_e12.xyz - _e30);
     float4 position = float4(_e12.xyz, (valid_1 ? 1.0 : 0.0));
-    float4 normal = (valid_1 ? float4((n_2 / (sqrt(len2_)).xxx), sqrt(dot(v_2, v_2))) : float4(0.0, 0.0, 0.0, 1e30));
+    float4 normal = (valid_1 ? float4((n_3 / (sqrt(len2_)).xxx), sqrt(dot(v_2, v_2))) : float4(0.0, 0.0, 0.0, 1e30));
     const GbTexel gbtexel = ConstructGbTexel(position, normal);
     return gbtexel;
+}
+
+void counter_add(uint f, uint n)
+{
+    uint _e6; counters.InterlockedAdd((2u * f)*4, n, _e6);
+    if (((_e6 + n) < _e6)) {
+        uint _e16; counters.InterlockedAdd(((2u * f) + 1u)*4, 1u, _e16);
+        return;
+    } else {
+        return;
+    }
 }
 
 void counts_begin(uint li_3)
@@ -398,22 +409,22 @@ void counts_begin(uint li_3)
     return;
 }
 
-void count_add(uint f, uint n)
+void count_add(uint f_1, uint n_1)
 {
-    uint _e4; InterlockedAdd(wg_counts[min(uint(f), 6u)], n, _e4);
+    uint _e4; InterlockedAdd(wg_counts[min(uint(f_1), 6u)], n_1, _e4);
     return;
 }
 
-void count_one(uint f_1)
+void count_one(uint f_2)
 {
-    uint _e4; InterlockedAdd(wg_counts[min(uint(f_1), 6u)], 1u, _e4);
+    uint _e4; InterlockedAdd(wg_counts[min(uint(f_2), 6u)], 1u, _e4);
     return;
 }
 
-void count_tests(uint li_4, uint f_2, uint n_1)
+void count_tests(uint li_4, uint f_3, uint n_2)
 {
     if ((li_4 == 0u)) {
-        uint _e7; InterlockedAdd(wg_counts[min(uint(f_2), 6u)], n_1, _e7);
+        uint _e7; InterlockedAdd(wg_counts[min(uint(f_3), 6u)], n_2, _e7);
         return;
     } else {
         return;
@@ -424,14 +435,9 @@ void counts_end(uint li_5)
 {
     GroupMemoryBarrierWithGroupSync();
     if ((li_5 < COUNT_FIELDS)) {
-        uint n_3; InterlockedOr(wg_counts[min(uint(li_5), 6u)], 0, n_3);
-        uint _e10; counters.InterlockedAdd((2u * li_5)*4, n_3, _e10);
-        if (((_e10 + n_3) < _e10)) {
-            uint _e20; counters.InterlockedAdd(((2u * li_5) + 1u)*4, 1u, _e20);
-            return;
-        } else {
-            return;
-        }
+        uint _e5; InterlockedOr(wg_counts[min(uint(li_5), 6u)], 0, _e5);
+        counter_add(li_5, _e5);
+        return;
     } else {
         return;
     }

@@ -292,10 +292,10 @@ float connection_cosine(
     if (_e16) {
         return 0.0;
     }
-    metal::float3 w_7 = v_3 / metal::float3(metal::sqrt(d2_6));
-    float cos_x_1 = -(metal::dot(n, w_7));
+    metal::float3 w_6 = v_3 / metal::float3(metal::sqrt(d2_6));
+    float cos_x_1 = -(metal::dot(n, w_6));
     if (!((cos_x_1 <= 0.0))) {
-        local_5 = metal::dot(ng, w_7) >= 0.0;
+        local_5 = metal::dot(ng, w_6) >= 0.0;
     } else {
         local_5 = true;
     }
@@ -342,12 +342,11 @@ float bsh_range_bound(
     return _e8;
 }
 
-bool weighted_replace(
-    float w_2,
+float weighted_threshold(
     float w_sum,
     float u_2
 ) {
-    return (u_2 * w_sum) < w_2;
+    return w_sum / (1.0 - u_2);
 }
 
 float resample_target(
@@ -389,19 +388,19 @@ metal::float3 slot_share(
 ) {
     if (k_3 < 3u) {
         float _e4 = to_f32_(k_3);
-        float w_8 = 1.0 / _e4;
-        return metal::float3(w_8, w_8, w_8);
+        float w_7 = 1.0 / _e4;
+        return metal::float3(w_7, w_7, w_7);
     }
     uint j_3 = naga_mod(slot_1, 3u);
     float _e15 = to_f32_(naga_div((k_3 + 2u) - j_3, 3u));
-    float w_9 = 1.0 / _e15;
+    float w_8 = 1.0 / _e15;
     if (j_3 == 0u) {
-        return metal::float3(w_9, 0.0, 0.0);
+        return metal::float3(w_8, 0.0, 0.0);
     }
     if (j_3 == 1u) {
-        return metal::float3(0.0, w_9, 0.0);
+        return metal::float3(0.0, w_8, 0.0);
     }
-    return metal::float3(0.0, 0.0, w_9);
+    return metal::float3(0.0, 0.0, w_8);
 }
 
 float smith_root(
@@ -607,14 +606,14 @@ float ray_triangle(
 
 metal::float3 light_intensity(
     GpuLight l,
-    metal::float3 w_3
+    metal::float3 w_2
 ) {
     switch(l.kind) {
         case 0u: {
             return l.intensity;
         }
         case 1u: {
-            float _e11 = spot_falloff(metal::dot(l.p1_, w_3), l.a, l.b, l.p2_[0]);
+            float _e11 = spot_falloff(metal::dot(l.p1_, w_2), l.a, l.b, l.p2_[0]);
             return l.intensity * _e11;
         }
         default: {
@@ -964,15 +963,15 @@ metal::float4 surface_at(
     return (p_3.w > 0.0) ? metal::float4(p_3.xyz, 1.0) : metal::float4(0.0);
 }
 
-void direct_count(
+void counter_add(
     uint f,
     uint n_3,
-    device type_15& direct_counts,
+    device type_15& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint _e6 = metal::atomic_fetch_add_explicit(&direct_counts[2u * f], n_3, metal::memory_order_relaxed);
+    uint _e6 = metal::atomic_fetch_add_explicit(&counters[2u * f], n_3, metal::memory_order_relaxed);
     if ((_e6 + n_3) < _e6) {
-        uint _e16 = metal::atomic_fetch_add_explicit(&direct_counts[(2u * f) + 1u], 1u, metal::memory_order_relaxed);
+        uint _e16 = metal::atomic_fetch_add_explicit(&counters[(2u * f) + 1u], 1u, metal::memory_order_relaxed);
         return;
     } else {
         return;
@@ -1000,7 +999,7 @@ Shaded shade_pick_traced(
     metal::float3 r_6,
     metal::float4 rl_5,
     Material m_2,
-    float w_4,
+    float w_3,
     float u1_3,
     float u2_3,
     float eps_2,
@@ -1014,7 +1013,7 @@ Shaded shade_pick_traced(
     device type_4 const& r2_3,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Connection _e12 = connect_traced(li_1, x_9, n_5, n_5, 1.0, w_4, u1_3, u2_3, eps_2, trace_3, rays_cast, nodes_visited, geo_nodes, geo_tris, lights, rt2_3, r2_3, _buffer_sizes);
+    Connection _e12 = connect_traced(li_1, x_9, n_5, n_5, 1.0, w_3, u1_3, u2_3, eps_2, trace_3, rays_cast, nodes_visited, geo_nodes, geo_tris, lights, rt2_3, r2_3, _buffer_sizes);
     Shaded _e13 = shade_connection(_e12, x_9, n_5, m_2);
     return _e13;
 }
@@ -1026,7 +1025,7 @@ Shaded shade_pick(
     metal::float3 r_7,
     metal::float4 rl_6,
     Material m_3,
-    float w_5,
+    float w_4,
     float u1_4,
     float u2_4,
     float eps_3,
@@ -1039,7 +1038,7 @@ Shaded shade_pick(
     device type_4 const& r2_3,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Shaded _e11 = shade_pick_traced(li_2, x_10, n_6, r_7, rl_6, m_3, w_5, u1_4, u2_4, eps_3, true, rays_cast, nodes_visited, geo_nodes, geo_tris, lights, rt2_3, r2_3, _buffer_sizes);
+    Shaded _e11 = shade_pick_traced(li_2, x_10, n_6, r_7, rl_6, m_3, w_4, u1_4, u2_4, eps_3, true, rays_cast, nodes_visited, geo_nodes, geo_tris, lights, rt2_3, r2_3, _buffer_sizes);
     return _e11;
 }
 
@@ -1052,9 +1051,9 @@ Shaded add(
 
 Shaded scaled(
     Shaded s_2,
-    metal::float3 w_6
+    metal::float3 w_5
 ) {
-    return Shaded {s_2.e * w_6, s_2.diffuse * w_6, s_2.specular * w_6};
+    return Shaded {s_2.e * w_5, s_2.diffuse * w_5, s_2.specular * w_5};
 }
 
 type_16 first_holders(
@@ -1154,7 +1153,7 @@ kernel void main_(
 , device type_4 const& rt2_3 [[user(fake0)]]
 , device type_4 const& r2_3 [[user(fake0)]]
 , device type_13 const& bsh_nodes [[user(fake0)]]
-, device type_15& direct_counts [[user(fake0)]]
+, device type_15& counters [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
     uint rays_cast = {};
@@ -1173,6 +1172,7 @@ kernel void main_(
     metal::float3 total = metal::float3(0.0);
     uint count = 0u;
     uint hc = {};
+    type_23 threshold = {};
     uint b = {};
     uint q = {};
     bool local_2 = {};
@@ -1224,54 +1224,54 @@ kernel void main_(
     uint _e78 = pick_stream(_e77);
     h = _e78;
     hc = _e77;
-    uint _e99 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
-    metal::float3 _e100 = r;
-    uint _e101 = bsh_next_leaf_lobe(BSH, _e99, x_11, _e100, _e54, bsh_nodes, _buffer_sizes);
-    b = _e101;
+    uint _e100 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
+    metal::float3 _e101 = r;
+    uint _e102 = bsh_next_leaf_lobe(BSH, _e100, x_11, _e101, _e54, bsh_nodes, _buffer_sizes);
+    b = _e102;
     uint2 loop_bound_5 = uint2(4294967295u);
     bool loop_init_3 = true;
     while(true) {
         if (metal::all(loop_bound_5 == uint2(0u))) { break; }
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         if (!loop_init_3) {
-            uint _e174 = b;
-            uint _e177 = bsh_nodes[_e174].next;
-            metal::float3 _e178 = r;
-            uint _e179 = bsh_next_leaf_lobe(BSH, _e177, x_11, _e178, _e54, bsh_nodes, _buffer_sizes);
-            b = _e179;
+            uint _e181 = b;
+            uint _e184 = bsh_nodes[_e181].next;
+            metal::float3 _e185 = r;
+            uint _e186 = bsh_next_leaf_lobe(BSH, _e184, x_11, _e185, _e54, bsh_nodes, _buffer_sizes);
+            b = _e186;
         }
         loop_init_3 = false;
-        uint _e103 = b;
-        if (_e103 != BSH_NONE) {
+        uint _e104 = b;
+        if (_e104 != BSH_NONE) {
         } else {
             break;
         }
         {
-            uint _e106 = count;
-            count = _e106 + 1u;
-            uint _e110 = b;
-            uint li_3 = bsh_nodes[_e110].light;
-            uint _e114 = h;
-            uint _e115 = pcg_hash(_e114);
-            h = _e115;
-            uint _e116 = h;
-            float _e117 = xi_from_bits(_e116);
-            uint _e118 = h;
-            uint _e119 = pcg_hash(_e118);
-            h = _e119;
-            uint _e120 = h;
-            float _e121 = xi_from_bits(_e120);
-            metal::float2 u_4 = metal::float2(_e117, _e121);
-            metal::float3 _e123 = r;
-            Material _e124 = m;
-            Shaded _e129 = shade_pick_traced(li_3, x_11, n_8, _e123, _e54, _e124, 1.0, u_4.x, u_4.y, eps_4, false, rays_cast, nodes_visited, geo_nodes, geo_tris, lights, rt2_3, r2_3, _buffer_sizes);
-            metal::float3 _e130 = output_of(_e129);
-            uint _e132 = evaluations;
-            evaluations = _e132 + 1u;
-            float _e135 = resample_target(_e130);
-            if (_e135 > 0.0) {
-                metal::float3 _e138 = total;
-                total = _e138 + _e130;
+            uint _e107 = count;
+            count = _e107 + 1u;
+            uint _e111 = b;
+            uint li_3 = bsh_nodes[_e111].light;
+            uint _e115 = h;
+            uint _e116 = pcg_hash(_e115);
+            h = _e116;
+            uint _e117 = h;
+            float _e118 = xi_from_bits(_e117);
+            uint _e119 = h;
+            uint _e120 = pcg_hash(_e119);
+            h = _e120;
+            uint _e121 = h;
+            float _e122 = xi_from_bits(_e121);
+            metal::float2 u_4 = metal::float2(_e118, _e122);
+            metal::float3 _e124 = r;
+            Material _e125 = m;
+            Shaded _e130 = shade_pick_traced(li_3, x_11, n_8, _e124, _e54, _e125, 1.0, u_4.x, u_4.y, eps_4, false, rays_cast, nodes_visited, geo_nodes, geo_tris, lights, rt2_3, r2_3, _buffer_sizes);
+            metal::float3 _e131 = output_of(_e130);
+            uint _e133 = evaluations;
+            evaluations = _e133 + 1u;
+            float _e136 = resample_target(_e131);
+            if (_e136 > 0.0) {
+                metal::float3 _e139 = total;
+                total = _e139 + _e131;
                 q = 0u;
                 uint2 loop_bound_6 = uint2(4294967295u);
                 bool loop_init_4 = true;
@@ -1279,29 +1279,25 @@ kernel void main_(
                     if (metal::all(loop_bound_6 == uint2(0u))) { break; }
                     loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
                     if (!loop_init_4) {
-                        uint _e170 = q;
-                        q = _e170 + 1u;
+                        uint _e177 = q;
+                        q = _e177 + 1u;
                     }
                     loop_init_4 = false;
-                    uint _e142 = q;
-                    if (_e142 < K) {
+                    uint _e143 = q;
+                    if (_e143 < K) {
                     } else {
                         break;
                     }
                     {
-                        uint _e145 = hc;
-                        uint _e146 = pcg_hash(_e145);
-                        hc = _e146;
-                        uint _e147 = q;
-                        float _e149 = slot_target(_e130, _e147, K);
-                        if (_e149 > 0.0) {
-                            metal::float3 _e154 = total;
-                            uint _e155 = q;
-                            float _e157 = slot_target(_e154, _e155, K);
-                            uint _e158 = hc;
-                            float _e159 = xi_from_bits(_e158);
-                            bool _e160 = weighted_replace(_e149, _e157, _e159);
-                            local_2 = _e160;
+                        uint _e146 = q;
+                        float _e148 = slot_target(_e131, _e146, K);
+                        metal::float3 _e149 = total;
+                        uint _e150 = q;
+                        float _e152 = slot_target(_e149, _e150, K);
+                        if (_e148 > 0.0) {
+                            uint _e157 = q;
+                            float _e159 = threshold.inner[_e157];
+                            local_2 = _e152 > _e159;
                         } else {
                             local_2 = false;
                         }
@@ -1312,7 +1308,15 @@ kernel void main_(
                             uint _e165 = q;
                             slot_u.inner[_e165] = u_4;
                             uint _e167 = q;
-                            slot_p.inner[_e167] = _e149;
+                            slot_p.inner[_e167] = _e148;
+                            uint _e169 = hc;
+                            uint _e170 = pcg_hash(_e169);
+                            hc = _e170;
+                            uint _e171 = q;
+                            uint _e173 = hc;
+                            float _e174 = xi_from_bits(_e173);
+                            float _e175 = weighted_threshold(_e152, _e174);
+                            threshold.inner[_e171] = _e175;
                         }
                     }
                 }
@@ -1325,117 +1329,117 @@ kernel void main_(
         if (metal::all(loop_bound_7 == uint2(0u))) { break; }
         loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
         if (!loop_init_5) {
-            uint _e202 = k;
-            k = _e202 + 1u;
+            uint _e209 = k;
+            k = _e209 + 1u;
         }
         loop_init_5 = false;
-        uint _e184 = k;
-        if (_e184 < K) {
+        uint _e191 = k;
+        if (_e191 < K) {
         } else {
             break;
         }
         {
-            uint _e187 = k;
-            uint _e189 = k;
-            uint _e191 = slot_light.inner[_e189];
-            keys.inner[_e187] = metal::uint2(_e191, 0u);
             uint _e194 = k;
             uint _e196 = k;
-            float _e198 = slot_p.inner[_e196];
-            held.inner[_e194] = _e198 > 0.0;
+            uint _e198 = slot_light.inner[_e196];
+            keys.inner[_e194] = metal::uint2(_e198, 0u);
+            uint _e201 = k;
+            uint _e203 = k;
+            float _e205 = slot_p.inner[_e203];
+            held.inner[_e201] = _e205 > 0.0;
         }
     }
-    type_19 _e204 = keys;
-    type_20 _e205 = held;
-    type_16 _e206 = first_holders(_e204, _e205);
+    type_19 _e211 = keys;
+    type_20 _e212 = held;
+    type_16 _e213 = first_holders(_e211, _e212);
     uint2 loop_bound_8 = uint2(4294967295u);
     bool loop_init_6 = true;
     while(true) {
         if (metal::all(loop_bound_8 == uint2(0u))) { break; }
         loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
         if (!loop_init_6) {
-            uint _e269 = k_1;
-            k_1 = _e269 + 1u;
+            uint _e276 = k_1;
+            k_1 = _e276 + 1u;
         }
         loop_init_6 = false;
-        uint _e209 = k_1;
-        if (_e209 < K) {
+        uint _e216 = k_1;
+        if (_e216 < K) {
         } else {
             break;
         }
         {
             w = metal::float3(0.0);
-            uint _e215 = k_1;
-            uint _e217 = k_1;
-            bool first_1 = _e206.inner[_e215] == _e217;
-            uint _e219 = k_1;
-            j = _e219;
+            uint _e222 = k_1;
+            uint _e224 = k_1;
+            bool first_1 = _e213.inner[_e222] == _e224;
+            uint _e226 = k_1;
+            j = _e226;
             uint2 loop_bound_9 = uint2(4294967295u);
             bool loop_init_7 = true;
             while(true) {
                 if (metal::all(loop_bound_9 == uint2(0u))) { break; }
                 loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
                 if (!loop_init_7) {
-                    uint _e247 = j;
-                    j = _e247 + 1u;
+                    uint _e254 = j;
+                    j = _e254 + 1u;
                 }
                 loop_init_7 = false;
-                uint _e221 = j;
-                if (_e221 < K) {
+                uint _e228 = j;
+                if (_e228 < K) {
                     local_3 = first_1;
                 } else {
                     local_3 = false;
                 }
-                bool _e227 = local_3;
-                if (_e227) {
+                bool _e234 = local_3;
+                if (_e234) {
                 } else {
                     break;
                 }
                 {
-                    uint _e228 = j;
-                    uint _e230 = k_1;
-                    if (_e206.inner[_e228] == _e230) {
-                        metal::float3 _e232 = w;
-                        metal::float3 _e233 = total;
-                        uint _e234 = j;
-                        float _e236 = slot_target(_e233, _e234, K);
-                        uint _e237 = j;
-                        float _e239 = slot_p.inner[_e237];
+                    uint _e235 = j;
+                    uint _e237 = k_1;
+                    if (_e213.inner[_e235] == _e237) {
+                        metal::float3 _e239 = w;
+                        metal::float3 _e240 = total;
                         uint _e241 = j;
-                        metal::float3 _e243 = slot_share(_e241, K);
-                        w = _e232 + ((_e236 / _e239) * _e243);
+                        float _e243 = slot_target(_e240, _e241, K);
+                        uint _e244 = j;
+                        float _e246 = slot_p.inner[_e244];
+                        uint _e248 = j;
+                        metal::float3 _e250 = slot_share(_e248, K);
+                        w = _e239 + ((_e243 / _e246) * _e250);
                     }
                 }
             }
             if (first_1) {
-                Shaded _e249 = t;
-                uint _e250 = k_1;
-                uint _e252 = slot_light.inner[_e250];
-                metal::float3 _e253 = r;
-                Material _e254 = m;
-                uint _e256 = k_1;
-                float _e259 = slot_u.inner[_e256].x;
-                uint _e260 = k_1;
-                float _e263 = slot_u.inner[_e260].y;
-                Shaded _e264 = shade_pick(_e252, x_11, n_8, _e253, _e54, _e254, 1.0, _e259, _e263, eps_4, rays_cast, nodes_visited, geo_nodes, geo_tris, lights, rt2_3, r2_3, _buffer_sizes);
-                metal::float3 _e265 = w;
-                Shaded _e266 = scaled(_e264, _e265);
-                Shaded _e267 = add(_e249, _e266);
-                t = _e267;
+                Shaded _e256 = t;
+                uint _e257 = k_1;
+                uint _e259 = slot_light.inner[_e257];
+                metal::float3 _e260 = r;
+                Material _e261 = m;
+                uint _e263 = k_1;
+                float _e266 = slot_u.inner[_e263].x;
+                uint _e267 = k_1;
+                float _e270 = slot_u.inner[_e267].y;
+                Shaded _e271 = shade_pick(_e259, x_11, n_8, _e260, _e54, _e261, 1.0, _e266, _e270, eps_4, rays_cast, nodes_visited, geo_nodes, geo_tris, lights, rt2_3, r2_3, _buffer_sizes);
+                metal::float3 _e272 = w;
+                Shaded _e273 = scaled(_e271, _e272);
+                Shaded _e274 = add(_e256, _e273);
+                t = _e274;
             }
         }
     }
-    metal::float3 _e273 = t.e;
-    uint _e274 = count;
-    out_tex.write(metal::float4(_e273, static_cast<float>(_e274)), metal::uint2(texel_1));
-    direct_count(DIRECT_COUNT_PIXELS, 1u, direct_counts, _buffer_sizes);
-    uint _e280 = count;
-    direct_count(DIRECT_COUNT_CANDIDATES, _e280, direct_counts, _buffer_sizes);
-    uint _e283 = evaluations;
-    direct_count(DIRECT_COUNT_EVALUATIONS, _e283, direct_counts, _buffer_sizes);
-    uint _e286 = rays_cast;
-    direct_count(DIRECT_COUNT_RAYS, _e286, direct_counts, _buffer_sizes);
-    uint _e289 = nodes_visited;
-    direct_count(DIRECT_COUNT_NODES, _e289, direct_counts, _buffer_sizes);
+    metal::float3 _e280 = t.e;
+    uint _e281 = count;
+    out_tex.write(metal::float4(_e280, static_cast<float>(_e281)), metal::uint2(texel_1));
+    counter_add(DIRECT_COUNT_PIXELS, 1u, counters, _buffer_sizes);
+    uint _e287 = count;
+    counter_add(DIRECT_COUNT_CANDIDATES, _e287, counters, _buffer_sizes);
+    uint _e290 = evaluations;
+    counter_add(DIRECT_COUNT_EVALUATIONS, _e290, counters, _buffer_sizes);
+    uint _e293 = rays_cast;
+    counter_add(DIRECT_COUNT_RAYS, _e293, counters, _buffer_sizes);
+    uint _e296 = nodes_visited;
+    counter_add(DIRECT_COUNT_NODES, _e296, counters, _buffer_sizes);
     return;
 }

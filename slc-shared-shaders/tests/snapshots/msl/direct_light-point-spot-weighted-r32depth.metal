@@ -306,10 +306,10 @@ float connection_cosine(
     if (_e16) {
         return 0.0;
     }
-    metal::float3 w_6 = v_4 / metal::float3(metal::sqrt(d2_7));
-    float cos_x_1 = -(metal::dot(n, w_6));
+    metal::float3 w_5 = v_4 / metal::float3(metal::sqrt(d2_7));
+    float cos_x_1 = -(metal::dot(n, w_5));
     if (!((cos_x_1 <= 0.0))) {
-        local_3 = metal::dot(ng, w_6) >= 0.0;
+        local_3 = metal::dot(ng, w_5) >= 0.0;
     } else {
         local_3 = true;
     }
@@ -356,21 +356,20 @@ float bsh_range_bound(
     return _e8;
 }
 
-bool weighted_replace(
-    float w_1,
+float weighted_threshold(
     float w_sum,
     float u_2
 ) {
-    return (u_2 * w_sum) < w_1;
+    return w_sum / (1.0 - u_2);
 }
 
 float weighted_pick_weight(
     float w_sum_1,
-    float w_2,
+    float w_1,
     uint k_2
 ) {
     float _e3 = to_f32_(k_2);
-    return w_sum_1 / (_e3 * w_2);
+    return w_sum_1 / (_e3 * w_1);
 }
 
 float ggx_d(
@@ -780,14 +779,14 @@ float ray_triangle(
 
 metal::float3 light_intensity(
     GpuLight l,
-    metal::float3 w_3
+    metal::float3 w_2
 ) {
     switch(l.kind) {
         case 0u: {
             return l.intensity;
         }
         case 1u: {
-            float _e11 = spot_falloff(metal::dot(l.p1_, w_3), l.a, l.b, l.p2_[0]);
+            float _e11 = spot_falloff(metal::dot(l.p1_, w_2), l.a, l.b, l.p2_[0]);
             return l.intensity * _e11;
         }
         default: {
@@ -1163,40 +1162,41 @@ WeightedPicks bsh_weighted_collect(
 ) {
     WeightedPicks picks = {};
     uint h_1 = {};
+    type_15 threshold = {};
     uint b_4 = {};
     uint s_1 = {};
     picks.w_sum = 0.0;
     picks.n = 0u;
     h_1 = h0_;
-    uint _e14 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
-    uint _e15 = bsh_next_leaf_lobe(BSH, _e14, x_11, r_10, rl_7, bsh_nodes, _buffer_sizes);
-    b_4 = _e15;
+    uint _e15 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
+    uint _e16 = bsh_next_leaf_lobe(BSH, _e15, x_11, r_10, rl_7, bsh_nodes, _buffer_sizes);
+    b_4 = _e16;
     uint2 loop_bound_3 = uint2(4294967295u);
     bool loop_init_1 = true;
     while(true) {
         if (metal::all(loop_bound_3 == uint2(0u))) { break; }
         loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e58 = b_4;
-            uint _e61 = bsh_nodes[_e58].next;
-            uint _e62 = bsh_next_leaf_lobe(BSH, _e61, x_11, r_10, rl_7, bsh_nodes, _buffer_sizes);
-            b_4 = _e62;
+            uint _e67 = b_4;
+            uint _e70 = bsh_nodes[_e67].next;
+            uint _e71 = bsh_next_leaf_lobe(BSH, _e70, x_11, r_10, rl_7, bsh_nodes, _buffer_sizes);
+            b_4 = _e71;
         }
         loop_init_1 = false;
-        uint _e17 = b_4;
-        if (_e17 != BSH_NONE) {
+        uint _e18 = b_4;
+        if (_e18 != BSH_NONE) {
         } else {
             break;
         }
         {
-            uint _e21 = picks.n;
-            picks.n = _e21 + 1u;
-            uint _e25 = b_4;
-            uint li_5 = bsh_nodes[_e25].light;
-            float _e29 = light_weight(li_5, x_11, n_7, r_10, lobe_8, rl_7, rt2_5, light_cones, _buffer_sizes);
-            if (_e29 > 0.0) {
-                float _e33 = picks.w_sum;
-                picks.w_sum = _e33 + _e29;
+            uint _e22 = picks.n;
+            picks.n = _e22 + 1u;
+            uint _e26 = b_4;
+            uint li_5 = bsh_nodes[_e26].light;
+            float _e30 = light_weight(li_5, x_11, n_7, r_10, lobe_8, rl_7, rt2_5, light_cones, _buffer_sizes);
+            if (_e30 > 0.0) {
+                float _e34 = picks.w_sum;
+                picks.w_sum = _e34 + _e30;
                 s_1 = 0u;
                 uint2 loop_bound_4 = uint2(4294967295u);
                 bool loop_init_2 = true;
@@ -1204,38 +1204,43 @@ WeightedPicks bsh_weighted_collect(
                     if (metal::all(loop_bound_4 == uint2(0u))) { break; }
                     loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
                     if (!loop_init_2) {
-                        uint _e54 = s_1;
-                        s_1 = _e54 + 1u;
+                        uint _e63 = s_1;
+                        s_1 = _e63 + 1u;
                     }
                     loop_init_2 = false;
-                    uint _e37 = s_1;
-                    if (_e37 < K) {
+                    uint _e38 = s_1;
+                    if (_e38 < K) {
                     } else {
                         break;
                     }
                     {
-                        uint _e40 = h_1;
-                        uint _e41 = pcg_hash(_e40);
-                        h_1 = _e41;
-                        float _e43 = picks.w_sum;
-                        uint _e44 = h_1;
-                        float _e45 = xi_from_bits(_e44);
-                        bool _e46 = weighted_replace(_e29, _e43, _e45);
-                        if (_e46) {
+                        float _e42 = picks.w_sum;
+                        uint _e43 = s_1;
+                        float _e45 = threshold.inner[_e43];
+                        if (_e42 > _e45) {
                             uint _e48 = s_1;
                             picks.light.inner[_e48] = li_5;
                             uint _e51 = s_1;
-                            picks.w.inner[_e51] = _e29;
+                            picks.w.inner[_e51] = _e30;
+                            uint _e53 = h_1;
+                            uint _e54 = pcg_hash(_e53);
+                            h_1 = _e54;
+                            uint _e55 = s_1;
+                            float _e58 = picks.w_sum;
+                            uint _e59 = h_1;
+                            float _e60 = xi_from_bits(_e59);
+                            float _e61 = weighted_threshold(_e58, _e60);
+                            threshold.inner[_e55] = _e61;
                         }
                     }
                 }
             }
         }
     }
-    uint _e64 = h_1;
-    picks.h = _e64;
-    WeightedPicks _e65 = picks;
-    return _e65;
+    uint _e73 = h_1;
+    picks.h = _e73;
+    WeightedPicks _e74 = picks;
+    return _e74;
 }
 
 metal::float4 unproject_pixel(
@@ -1315,7 +1320,7 @@ Shaded shade_pick_traced(
     metal::float3 r_11,
     metal::float4 rl_8,
     Material m_2,
-    float w_4,
+    float w_3,
     float u1_3,
     float u2_3,
     float eps_2,
@@ -1327,7 +1332,7 @@ Shaded shade_pick_traced(
     device type_4 const& r2_4,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Connection _e12 = connect_traced(li_3, x_13, n_9, n_9, 1.0, w_4, u1_3, u2_3, eps_2, trace_3, geo_nodes, geo_tris, lights, rt2_5, r2_4, _buffer_sizes);
+    Connection _e12 = connect_traced(li_3, x_13, n_9, n_9, 1.0, w_3, u1_3, u2_3, eps_2, trace_3, geo_nodes, geo_tris, lights, rt2_5, r2_4, _buffer_sizes);
     Shaded _e13 = shade_connection(_e12, x_13, n_9, m_2);
     return _e13;
 }
@@ -1339,7 +1344,7 @@ Shaded shade_pick(
     metal::float3 r_12,
     metal::float4 rl_9,
     Material m_3,
-    float w_5,
+    float w_4,
     float u1_4,
     float u2_4,
     float eps_3,
@@ -1350,7 +1355,7 @@ Shaded shade_pick(
     device type_4 const& r2_4,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Shaded _e11 = shade_pick_traced(li_4, x_14, n_10, r_12, rl_9, m_3, w_5, u1_4, u2_4, eps_3, true, geo_nodes, geo_tris, lights, rt2_5, r2_4, _buffer_sizes);
+    Shaded _e11 = shade_pick_traced(li_4, x_14, n_10, r_12, rl_9, m_3, w_4, u1_4, u2_4, eps_3, true, geo_nodes, geo_tris, lights, rt2_5, r2_4, _buffer_sizes);
     return _e11;
 }
 

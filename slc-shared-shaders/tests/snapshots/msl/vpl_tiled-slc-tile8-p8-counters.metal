@@ -417,8 +417,8 @@ GbTexel gbuffer_at(
     metal::int2 texel_1 = metal::int2(static_cast<int>(naga_mod(i, _e3)), static_cast<int>(naga_div(i, _e8)));
     metal::float4 _e12 = surface_at(texel_1, position_tex);
     metal::float4 _e15 = normal_tex.read(metal::uint2(texel_1), 0);
-    metal::float3 n_2 = _e15.xyz;
-    float len2_ = metal::dot(n_2, n_2);
+    metal::float3 n_3 = _e15.xyz;
+    float len2_ = metal::dot(n_3, n_3);
     if (_e12.w > 0.0) {
         local_6 = len2_ > 0.0;
     } else {
@@ -428,8 +428,23 @@ GbTexel gbuffer_at(
     metal::float3 _e30 = view.eye;
     metal::float3 v_2 = _e12.xyz - _e30;
     metal::float4 position = metal::float4(_e12.xyz, valid_1 ? 1.0 : 0.0);
-    metal::float4 normal = valid_1 ? metal::float4(n_2 / metal::float3(metal::sqrt(len2_)), metal::sqrt(metal::dot(v_2, v_2))) : metal::float4(0.0, 0.0, 0.0, 1000000000000000000000000000000.0);
+    metal::float4 normal = valid_1 ? metal::float4(n_3 / metal::float3(metal::sqrt(len2_)), metal::sqrt(metal::dot(v_2, v_2))) : metal::float4(0.0, 0.0, 0.0, 1000000000000000000000000000000.0);
     return GbTexel {position, normal};
+}
+
+void counter_add(
+    uint f,
+    uint n,
+    device type_13& counters,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e6 = metal::atomic_fetch_add_explicit(&counters[2u * f], n, metal::memory_order_relaxed);
+    if ((_e6 + n) < _e6) {
+        uint _e16 = metal::atomic_fetch_add_explicit(&counters[(2u * f) + 1u], 1u, metal::memory_order_relaxed);
+        return;
+    } else {
+        return;
+    }
 }
 
 void counts_begin(
@@ -444,30 +459,30 @@ void counts_begin(
 }
 
 void count_add(
-    uint f,
-    uint n,
+    uint f_1,
+    uint n_1,
     threadgroup type_15& wg_counts
 ) {
-    uint _e4 = metal::atomic_fetch_add_explicit(&wg_counts.inner[f], n, metal::memory_order_relaxed);
+    uint _e4 = metal::atomic_fetch_add_explicit(&wg_counts.inner[f_1], n_1, metal::memory_order_relaxed);
     return;
 }
 
 void count_one(
-    uint f_1,
+    uint f_2,
     threadgroup type_15& wg_counts
 ) {
-    uint _e4 = metal::atomic_fetch_add_explicit(&wg_counts.inner[f_1], 1u, metal::memory_order_relaxed);
+    uint _e4 = metal::atomic_fetch_add_explicit(&wg_counts.inner[f_2], 1u, metal::memory_order_relaxed);
     return;
 }
 
 void count_tests(
     uint li_4,
-    uint f_2,
-    uint n_1,
+    uint f_3,
+    uint n_2,
     threadgroup type_15& wg_counts
 ) {
     if (li_4 == 0u) {
-        uint _e7 = metal::atomic_fetch_add_explicit(&wg_counts.inner[f_2], n_1, metal::memory_order_relaxed);
+        uint _e7 = metal::atomic_fetch_add_explicit(&wg_counts.inner[f_3], n_2, metal::memory_order_relaxed);
         return;
     } else {
         return;
@@ -482,14 +497,9 @@ void counts_end(
 ) {
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
     if (li_5 < COUNT_FIELDS) {
-        uint n_3 = metal::atomic_load_explicit(&wg_counts.inner[li_5], metal::memory_order_relaxed);
-        uint _e10 = metal::atomic_fetch_add_explicit(&counters[2u * li_5], n_3, metal::memory_order_relaxed);
-        if ((_e10 + n_3) < _e10) {
-            uint _e20 = metal::atomic_fetch_add_explicit(&counters[(2u * li_5) + 1u], 1u, metal::memory_order_relaxed);
-            return;
-        } else {
-            return;
-        }
+        uint _e5 = metal::atomic_load_explicit(&wg_counts.inner[li_5], metal::memory_order_relaxed);
+        counter_add(li_5, _e5, counters, _buffer_sizes);
+        return;
     } else {
         return;
     }
