@@ -108,6 +108,21 @@ fn size() -> Option<(u32, u32)> {
     })
 }
 
+/// slc's culling: the default, its error bound set by `SLC_BEVY_EPSILON`
+/// when given (a bad value exits with the reason).
+fn culling() -> Culling {
+    let default = SlcCamera::default().culling;
+    let Ok(e) = std::env::var("SLC_BEVY_EPSILON") else { return default };
+    let parsed = e.parse().map_err(|_| format!("{e} is not a number"));
+    match parsed.and_then(|eps| default.with_error_bound(eps).map_err(|err| err.to_string())) {
+        Ok(culling) => culling,
+        Err(err) => {
+            eprintln!("SLC_BEVY_EPSILON: {err}");
+            std::process::exit(2);
+        }
+    }
+}
+
 /// The bench's image target: the camera renders into it instead of a window.
 #[derive(Resource)]
 struct BenchTarget(Handle<Image>);
@@ -197,26 +212,10 @@ fn setup(
     let camera = commands
         .spawn((
             Camera3d::default(),
-            {
-                let c = SlcCamera::default();
-                let culling =
-                    match std::env::var("SLC_BEVY_EPSILON") {
-                        Ok(e) => match e.parse().map_err(|_| e.clone()).and_then(|e| {
-                            c.culling.with_error_bound(e).map_err(|err| err.to_string())
-                        }) {
-                            Ok(culling) => culling,
-                            Err(err) => {
-                                eprintln!("SLC_BEVY_EPSILON: {err}");
-                                std::process::exit(2);
-                            }
-                        },
-                        Err(_) => c.culling,
-                    };
-                SlcCamera {
-                    shadows: std::env::var("SLC_BEVY_SHADOWS").as_deref() != Ok("off"),
-                    culling,
-                    ..c
-                }
+            SlcCamera {
+                shadows: std::env::var("SLC_BEVY_SHADOWS").as_deref() != Ok("off"),
+                culling: culling(),
+                ..default()
             },
             Tonemapping::AcesFitted,
             Transform::from_xyz(0.0, 60.0, 120.0).looking_at(Vec3::ZERO, Vec3::Y),
@@ -425,22 +424,24 @@ fn step(app: &mut App) {
     let _ = device.poll(wgpu::PollType::wait_indefinitely());
 }
 
+/// Changes every [`SlcCamera`] by `set`.
+fn set_cameras(app: &mut App, set: impl Fn(&mut SlcCamera)) {
+    let world = app.world_mut();
+    let mut cameras = world.query::<&mut SlcCamera>();
+    for mut c in cameras.iter_mut(world) {
+        set(&mut c);
+    }
+}
+
 /// slc's work in one frame with [`SlcCamera::count_work`] set (it counts
 /// on the render thread, which runs a frame behind: three frames, then the
 /// setting off again), or `None` where nothing was counted.
 fn count_work(app: &mut App) -> Option<slc_bevy::DirectCounts> {
-    let set = |app: &mut App, on: bool| {
-        let world = app.world_mut();
-        let mut cameras = world.query::<&mut SlcCamera>();
-        for mut c in cameras.iter_mut(world) {
-            c.count_work = on;
-        }
-    };
-    set(app, true);
+    set_cameras(app, |c| c.count_work = true);
     for _ in 0..3 {
         step(app);
     }
-    set(app, false);
+    set_cameras(app, |c| c.count_work = false);
     step(app);
     let world = app.world_mut();
     let camera = world.query_filtered::<Entity, With<SlcCamera>>().iter(world).next()?;
@@ -501,15 +502,9 @@ fn bench(lights: usize, out: &str) -> Result<(), String> {
     println!("many_lights bench: {lights} lights, {w}x{h}, {frames} timed frames, on {adapter}");
     let mut results = Vec::new();
     for (name, mode, shadows, resample, reuse) in CONFIGS {
-        {
-            let world = app.world_mut();
-            let mut settings = world.resource_mut::<Settings>();
-            (settings.mode, settings.apply) = (mode, true);
-            let mut cameras = world.query::<&mut SlcCamera>();
-            for mut c in cameras.iter_mut(world) {
-                (c.shadows, c.resample, c.reuse) = (shadows, resample, reuse);
-            }
-        }
+        let mut settings = app.world_mut().resource_mut::<Settings>();
+        (settings.mode, settings.apply) = (mode, true);
+        set_cameras(&mut app, |c| (c.shadows, c.resample, c.reuse) = (shadows, resample, reuse));
         // Warm-up: the mode applied, pipelines built, the clock up.
         let start = Instant::now();
         let mut n = 0;

@@ -434,19 +434,24 @@ fn extract_lights(
             Some(texture) => {
                 let uv = m.uv_transform.to_cols_array().map(f32::to_bits);
                 let key = (mesh.id(), texture.id(), m.emissive_channel == UvChannel::Uv1, uv);
-                if let std::collections::hash_map::Entry::Vacant(slot) = textured.entry(key) {
-                    let (Some(asset), Some(image)) = (meshes.get(mesh.id()), images.get(texture))
-                    else {
-                        continue;
-                    };
-                    slot.insert(emissive::triangle_means(
-                        asset,
-                        image,
-                        m.emissive_channel.clone(),
-                        m.uv_transform,
-                    ));
-                }
-                match &textured[&key] {
+                use std::collections::hash_map::Entry;
+                let means = match textured.entry(key) {
+                    Entry::Occupied(kept) => kept.into_mut(),
+                    Entry::Vacant(slot) => {
+                        let (Some(asset), Some(image)) =
+                            (meshes.get(mesh.id()), images.get(texture))
+                        else {
+                            continue;
+                        };
+                        slot.insert(emissive::triangle_means(
+                            asset,
+                            image,
+                            m.emissive_channel.clone(),
+                            m.uv_transform,
+                        ))
+                    }
+                };
+                match &*means {
                     Ok(means) if means.len() == tris.len() => Some(means),
                     Ok(_) => {
                         warn_once!(

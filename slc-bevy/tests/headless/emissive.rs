@@ -165,7 +165,9 @@ pub(super) fn emissive(app: &mut App) -> Result<String, String> {
     if tinted_worst.0 > 1.0 {
         return Err(format!("{report}\nthe textured quad's block {} is off", tinted_worst.1));
     }
-    world_clear_texture(app, &glow_id);
+    // The quad's material without its texture again.
+    let mut materials = app.world_mut().resource_mut::<Assets<StandardMaterial>>();
+    materials.get_mut(glow_id).expect("the glow").emissive_texture = None;
 
     // The quad's mesh asset edited to a 100× smaller side (10⁻⁴ of the
     // area): its triangles are read again and the floor gets next to
@@ -185,12 +187,6 @@ pub(super) fn emissive(app: &mut App) -> Result<String, String> {
         "{report}; edited to 1e-4 of its area, the floor keeps {:.1e} of its light",
         left / lit
     ))
-}
-
-/// The quad's material without its texture again.
-fn world_clear_texture(app: &mut App, glow: &AssetId<StandardMaterial>) {
-    let mut materials = app.world_mut().resource_mut::<Assets<StandardMaterial>>();
-    materials.get_mut(*glow).expect("the glow").emissive_texture = None;
 }
 
 /// The floor blocks (`on_floor`) of the frames' mean against the integral
