@@ -30,7 +30,9 @@
 //! unshadowed, Bevy at its default 20 m
 //! ranges, Bevy at unbounded ranges. Each warms up for
 //! at least 0.5 s and 3 frames, then times `SLC_BEVY_BENCH_FRAMES` frames
-//! (default 64, at most 120) back to back; it reports per configuration
+//! (default 64, at most 120) back to back (`SLC_BEVY_BENCH_MODES`, e.g.
+//! `slc` or `slc,default`, limits it to those modes' configurations); it
+//! reports per configuration
 //! the median GPU time of each of Bevy's top-level passes and slc's
 //! (`render/slc`), their sum (the GPU frame), the median wall time of a
 //! frame, and for slc's configurations its work per shaded pixel (lights in
@@ -62,11 +64,8 @@ fn main() {
         }
         return;
     }
-    let mode = match std::env::var("SLC_BEVY_MODE").as_deref() {
-        Ok("default") => Mode::BevyDefaultRange,
-        Ok("unbounded") => Mode::BevyUnbounded,
-        _ => Mode::Slc,
-    };
+    let mode =
+        std::env::var("SLC_BEVY_MODE").ok().and_then(|m| Mode::named(&m)).unwrap_or(Mode::Slc);
     let mut window = Window { title: "slc-bevy many_lights".into(), ..default() };
     if let Some((w, h)) = size() {
         window.resolution = (w, h).into();
@@ -90,6 +89,19 @@ enum Mode {
     Slc,
     BevyDefaultRange,
     BevyUnbounded,
+}
+
+impl Mode {
+    /// The mode `SLC_BEVY_MODE` and `SLC_BEVY_BENCH_MODES` call `name`
+    /// (`slc`, `default`, `unbounded`).
+    fn named(name: &str) -> Option<Mode> {
+        match name.trim() {
+            "slc" => Some(Mode::Slc),
+            "default" => Some(Mode::BevyDefaultRange),
+            "unbounded" => Some(Mode::BevyUnbounded),
+            _ => None,
+        }
+    }
 }
 
 #[derive(Resource)]
@@ -462,6 +474,19 @@ fn bench(lights: usize, out: &str) -> Result<(), String> {
     use std::time::{Duration, Instant};
 
     let (w, h) = size().unwrap_or((1920, 1080));
+    // The modes benched (all by default): `SLC_BEVY_BENCH_MODES=slc` skips
+    // Bevy's two (unbounded ranges take minutes at 20,000 lights).
+    let modes: Vec<Mode> = match std::env::var("SLC_BEVY_BENCH_MODES") {
+        Err(_) => vec![Mode::Slc, Mode::BevyDefaultRange, Mode::BevyUnbounded],
+        Ok(list) => list
+            .split(',')
+            .map(|m| {
+                Mode::named(m).ok_or(format!(
+                    "SLC_BEVY_BENCH_MODES: unknown mode {m:?} (slc, default, unbounded)"
+                ))
+            })
+            .collect::<Result<_, _>>()?,
+    };
     let frames: usize = std::env::var("SLC_BEVY_BENCH_FRAMES")
         .ok()
         .and_then(|s| s.parse().ok())
@@ -502,6 +527,9 @@ fn bench(lights: usize, out: &str) -> Result<(), String> {
     println!("many_lights bench: {lights} lights, {w}x{h}, {frames} timed frames, on {adapter}");
     let mut results = Vec::new();
     for (name, mode, shadows, resample, reuse) in CONFIGS {
+        if !modes.contains(&mode) {
+            continue;
+        }
         let mut settings = app.world_mut().resource_mut::<Settings>();
         (settings.mode, settings.apply) = (mode, true);
         set_cameras(&mut app, |c| (c.shadows, c.resample, c.reuse) = (shadows, resample, reuse));
