@@ -34,6 +34,14 @@ fn bsh_collect(x: vec3f, r: vec3f, rl: vec4f, seed: u32) -> Picks {
     return picks;
 }
 
+/// The next threshold of a weighted one-slot reservoir that has just taken
+/// a candidate at running sum `sum` (slc-core's `weighted_threshold`; the
+/// slot takes again where its sum passes it), from one hash of `*h`.
+fn next_threshold(sum: f32, h: ptr<function, u32>) -> f32 {
+    *h = pcg_hash(*h);
+    return weighted_threshold(sum, xi_from_bits(*h));
+}
+
 /// One reservoir pick connected to the shading point `x` (normal `n`).
 struct Connection {
     /// Irradiance the pick adds at `x`, with the 1/p and reservoir weights

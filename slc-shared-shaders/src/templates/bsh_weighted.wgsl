@@ -24,8 +24,8 @@ fn bsh_weighted_collect(x: vec3f, n: vec3f, r: vec3f, lobe: vec4f, rl: vec4f, h0
     picks.w_sum = 0.0;
     picks.n = 0u;
     var h = h0;
-    // Each slot's threshold on the running sum (slc-core's
-    // weighted_threshold; 0 while empty): one hash per take.
+    // Each slot's threshold on the running sum (next_threshold; 0
+    // while empty): one hash per take.
     var threshold: array<f32, K>;
     for (var b = bsh_next_leaf_lobe(BSH, bsh_first(BSH), x, r, rl); b != BSH_NONE; b = bsh_next_leaf_lobe(BSH, bsh_nodes[b].next, x, r, rl)) {
         picks.n += 1u;
@@ -37,8 +37,7 @@ fn bsh_weighted_collect(x: vec3f, n: vec3f, r: vec3f, lobe: vec4f, rl: vec4f, h0
                 if picks.w_sum > threshold[s] {
                     picks.light[s] = li;
                     picks.w[s] = w;
-                    h = pcg_hash(h);
-                    threshold[s] = weighted_threshold(picks.w_sum, xi_from_bits(h));
+                    threshold[s] = next_threshold(picks.w_sum, &h);
                 }
             }
         }

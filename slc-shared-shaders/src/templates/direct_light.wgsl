@@ -396,8 +396,8 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     var total = vec3f(0.0);
     var count = 0u;
     var hc = seed;
-    // Each slot's threshold on its running sum (slc-core's
-    // weighted_threshold; 0 while empty): one hash per take.
+    // Each slot's threshold on its running sum (next_threshold; 0
+    // while empty): one hash per take.
     var threshold: array<f32, K>;
     for (var b = bsh_next_leaf_lobe(BSH, bsh_first(BSH), x, r, rl); b != BSH_NONE; b = bsh_next_leaf_lobe(BSH, bsh_nodes[b].next, x, r, rl)) {
         count += 1u;
@@ -429,8 +429,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
 {% if reuse %}
                     slot_cells[q] = cells;
 {% endif %}
-                    hc = pcg_hash(hc);
-                    threshold[q] = weighted_threshold(sum, xi_from_bits(hc));
+                    threshold[q] = next_threshold(sum, &hc);
                 }
             }
         }

@@ -678,6 +678,16 @@ fn bsh_next_leaf_lobe(nodes_3: u32, start: u32, x_5: vec3<f32>, r_5: vec3<f32>, 
     return BSH_NONE;
 }
 
+fn next_threshold(sum: f32, h_1: ptr<function, u32>) -> f32 {
+    let _e2 = (*h_1);
+    let _e3 = pcg_hash(_e2);
+    (*h_1) = _e3;
+    let _e4 = (*h_1);
+    let _e5 = xi_from_bits(_e4);
+    let _e6 = weighted_threshold(sum, _e5);
+    return _e6;
+}
+
 fn connect_record(l_2: GpuLight, x_6: vec3<f32>, n_1: vec3<f32>, ng_1: vec3<f32>, r2_2: f32, rt2_2: f32, w_res: f32, u1_1: f32, u2_1: f32, eps: f32, trace_1: bool) -> Connection {
     var c_4: Connection;
     var local_13: bool;
@@ -972,133 +982,128 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
                             slot_u[_e165] = u_4;
                             let _e167 = q;
                             slot_p[_e167] = _e148;
-                            let _e169 = hc;
-                            let _e170 = pcg_hash(_e169);
-                            hc = _e170;
-                            let _e171 = q;
-                            let _e173 = hc;
-                            let _e174 = xi_from_bits(_e173);
-                            let _e175 = weighted_threshold(_e152, _e174);
-                            threshold[_e171] = _e175;
+                            let _e169 = q;
+                            let _e171 = next_threshold(_e152, (&hc));
+                            threshold[_e169] = _e171;
                         }
                     }
                     continuing {
-                        let _e177 = q;
-                        q = (_e177 + 1u);
+                        let _e173 = q;
+                        q = (_e173 + 1u);
                     }
                 }
             }
         }
         continuing {
-            let _e181 = b;
-            let _e184 = bsh_nodes[_e181].next;
-            let _e185 = r;
-            let _e186 = bsh_next_leaf_lobe(BSH, _e184, x_11, _e185, _e54);
-            b = _e186;
+            let _e177 = b;
+            let _e180 = bsh_nodes[_e177].next;
+            let _e181 = r;
+            let _e182 = bsh_next_leaf_lobe(BSH, _e180, x_11, _e181, _e54);
+            b = _e182;
         }
     }
     loop {
-        let _e191 = k;
-        if (_e191 < K) {
+        let _e187 = k;
+        if (_e187 < K) {
         } else {
             break;
         }
         {
-            let _e194 = k;
-            let _e196 = k;
-            let _e198 = slot_light[_e196];
-            keys[_e194] = vec2<u32>(_e198, 0u);
-            let _e201 = k;
-            let _e203 = k;
-            let _e205 = slot_p[_e203];
-            held[_e201] = (_e205 > 0f);
+            let _e190 = k;
+            let _e192 = k;
+            let _e194 = slot_light[_e192];
+            keys[_e190] = vec2<u32>(_e194, 0u);
+            let _e197 = k;
+            let _e199 = k;
+            let _e201 = slot_p[_e199];
+            held[_e197] = (_e201 > 0f);
         }
         continuing {
-            let _e209 = k;
-            k = (_e209 + 1u);
+            let _e205 = k;
+            k = (_e205 + 1u);
         }
     }
-    let _e211 = keys;
-    let _e212 = held;
-    let _e213 = first_holders(_e211, _e212);
+    let _e207 = keys;
+    let _e208 = held;
+    let _e209 = first_holders(_e207, _e208);
     loop {
-        let _e216 = k_1;
-        if (_e216 < K) {
+        let _e212 = k_1;
+        if (_e212 < K) {
         } else {
             break;
         }
         {
             w = vec3(0f);
+            let _e218 = k_1;
+            let _e220 = k_1;
+            let first_1 = (_e209[_e218] == _e220);
             let _e222 = k_1;
-            let _e224 = k_1;
-            let first_1 = (_e213[_e222] == _e224);
-            let _e226 = k_1;
-            j = _e226;
+            j = _e222;
             loop {
-                let _e228 = j;
-                if (_e228 < K) {
+                let _e224 = j;
+                if (_e224 < K) {
                     local_3 = first_1;
                 } else {
                     local_3 = false;
                 }
-                let _e234 = local_3;
-                if _e234 {
+                let _e230 = local_3;
+                if _e230 {
                 } else {
                     break;
                 }
                 {
-                    let _e235 = j;
-                    let _e237 = k_1;
-                    if (_e213[_e235] == _e237) {
-                        let _e239 = w;
-                        let _e240 = total;
-                        let _e241 = j;
-                        let _e243 = slot_target(_e240, _e241, K);
+                    let _e231 = j;
+                    let _e233 = k_1;
+                    if (_e209[_e231] == _e233) {
+                        let _e235 = w;
+                        let _e236 = total;
+                        let _e237 = j;
+                        let _e239 = slot_target(_e236, _e237, K);
+                        let _e240 = j;
+                        let _e242 = slot_p[_e240];
                         let _e244 = j;
-                        let _e246 = slot_p[_e244];
-                        let _e248 = j;
-                        let _e250 = slot_share(_e248, K);
-                        w = (_e239 + ((_e243 / _e246) * _e250));
+                        let _e246 = slot_share(_e244, K);
+                        w = (_e235 + ((_e239 / _e242) * _e246));
                     }
                 }
                 continuing {
-                    let _e254 = j;
-                    j = (_e254 + 1u);
+                    let _e250 = j;
+                    j = (_e250 + 1u);
                 }
             }
             if first_1 {
-                let _e256 = t;
-                let _e257 = k_1;
-                let _e259 = slot_light[_e257];
-                let _e260 = r;
-                let _e261 = m;
+                let _e252 = t;
+                let _e253 = k_1;
+                let _e255 = slot_light[_e253];
+                let _e256 = r;
+                let _e257 = m;
+                let _e259 = k_1;
+                let _e262 = slot_u[_e259].x;
                 let _e263 = k_1;
-                let _e266 = slot_u[_e263].x;
-                let _e267 = k_1;
-                let _e270 = slot_u[_e267].y;
-                let _e271 = shade_pick(_e259, x_11, n_8, _e260, _e54, _e261, 1f, _e266, _e270, eps_4);
-                let _e272 = w;
-                let _e273 = scaled(_e271, _e272);
-                let _e274 = add(_e256, _e273);
-                t = _e274;
+                let _e266 = slot_u[_e263].y;
+                let _e267 = shade_pick(_e255, x_11, n_8, _e256, _e54, _e257, 1f, _e262, _e266, eps_4);
+                let _e268 = w;
+                let _e269 = scaled(_e267, _e268);
+                let _e270 = add(_e252, _e269);
+                t = _e270;
             }
         }
         continuing {
-            let _e276 = k_1;
-            k_1 = (_e276 + 1u);
+            let _e272 = k_1;
+            k_1 = (_e272 + 1u);
         }
     }
-    let _e280 = t.e;
-    let _e281 = count;
-    textureStore(out_tex, texel_1, vec4<f32>(_e280, f32(_e281)));
+    let _e276 = t.e;
+    let _e277 = count;
+    textureStore(out_tex, texel_1, vec4<f32>(_e276, f32(_e277)));
     counter_add(DIRECT_COUNT_PIXELS, 1u);
-    let _e287 = count;
-    counter_add(DIRECT_COUNT_CANDIDATES, _e287);
-    let _e290 = evaluations;
-    counter_add(DIRECT_COUNT_EVALUATIONS, _e290);
-    let _e293 = rays_cast;
-    counter_add(DIRECT_COUNT_RAYS, _e293);
-    let _e296 = nodes_visited;
-    counter_add(DIRECT_COUNT_NODES, _e296);
+    let _e283 = count;
+    counter_add(DIRECT_COUNT_CANDIDATES, _e283);
+    let _e286 = evaluations;
+    counter_add(DIRECT_COUNT_EVALUATIONS, _e286);
+    let _e289 = rays_cast;
+    counter_add(DIRECT_COUNT_RAYS, _e289);
+    let _e292 = nodes_visited;
+    counter_add(DIRECT_COUNT_NODES, _e292);
     return;
 }

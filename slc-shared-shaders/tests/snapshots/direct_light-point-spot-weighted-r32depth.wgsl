@@ -794,6 +794,16 @@ fn bsh_next_leaf_lobe(nodes_3: u32, start: u32, x_6: vec3<f32>, r_7: vec3<f32>, 
     return BSH_NONE;
 }
 
+fn next_threshold(sum: f32, h_1: ptr<function, u32>) -> f32 {
+    let _e2 = (*h_1);
+    let _e3 = pcg_hash(_e2);
+    (*h_1) = _e3;
+    let _e4 = (*h_1);
+    let _e5 = xi_from_bits(_e4);
+    let _e6 = weighted_threshold(sum, _e5);
+    return _e6;
+}
+
 fn connect_record(l_2: GpuLight, x_7: vec3<f32>, n_4: vec3<f32>, ng_1: vec3<f32>, r2_3: f32, rt2_4: f32, w_res: f32, u1_1: f32, u2_1: f32, eps: f32, trace_1: bool) -> Connection {
     var c_2: Connection;
     var local_14: bool;
@@ -859,14 +869,14 @@ fn light_weight(li_2: u32, x_10: vec3<f32>, n_6: vec3<f32>, r_9: vec3<f32>, lobe
 
 fn bsh_weighted_collect(x_11: vec3<f32>, n_7: vec3<f32>, r_10: vec3<f32>, lobe_8: vec4<f32>, rl_7: vec4<f32>, h0_: u32) -> WeightedPicks {
     var picks: WeightedPicks;
-    var h_1: u32;
+    var h_2: u32;
     var threshold: array<f32, 8>;
     var b_4: u32;
     var s_1: u32;
 
     picks.w_sum = 0f;
     picks.n = 0u;
-    h_1 = h0_;
+    h_2 = h0_;
     let _e15 = bsh_first(BSH);
     let _e16 = bsh_next_leaf_lobe(BSH, _e15, x_11, r_10, rl_7);
     b_4 = _e16;
@@ -901,35 +911,30 @@ fn bsh_weighted_collect(x_11: vec3<f32>, n_7: vec3<f32>, r_10: vec3<f32>, lobe_8
                             picks.light[_e48] = li_5;
                             let _e51 = s_1;
                             picks.w[_e51] = _e30;
-                            let _e53 = h_1;
-                            let _e54 = pcg_hash(_e53);
-                            h_1 = _e54;
-                            let _e55 = s_1;
-                            let _e58 = picks.w_sum;
-                            let _e59 = h_1;
-                            let _e60 = xi_from_bits(_e59);
-                            let _e61 = weighted_threshold(_e58, _e60);
-                            threshold[_e55] = _e61;
+                            let _e53 = s_1;
+                            let _e56 = picks.w_sum;
+                            let _e57 = next_threshold(_e56, (&h_2));
+                            threshold[_e53] = _e57;
                         }
                     }
                     continuing {
-                        let _e63 = s_1;
-                        s_1 = (_e63 + 1u);
+                        let _e59 = s_1;
+                        s_1 = (_e59 + 1u);
                     }
                 }
             }
         }
         continuing {
-            let _e67 = b_4;
-            let _e70 = bsh_nodes[_e67].next;
-            let _e71 = bsh_next_leaf_lobe(BSH, _e70, x_11, r_10, rl_7);
-            b_4 = _e71;
+            let _e63 = b_4;
+            let _e66 = bsh_nodes[_e63].next;
+            let _e67 = bsh_next_leaf_lobe(BSH, _e66, x_11, r_10, rl_7);
+            b_4 = _e67;
         }
     }
-    let _e73 = h_1;
-    picks.h = _e73;
-    let _e74 = picks;
-    return _e74;
+    let _e69 = h_2;
+    picks.h = _e69;
+    let _e70 = picks;
+    return _e70;
 }
 
 fn unproject_pixel(c0_: vec4<f32>, c1_: vec4<f32>, c2_: vec4<f32>, c3_: vec4<f32>, px: f32, py: f32, width: f32, height: f32, depth: f32) -> vec4<f32> {

@@ -570,9 +570,9 @@ fn bevy_brdf(base_2: vec3<f32>, metallic_3: f32, r_4: f32, reflectance_1: f32, n
     }
     let _e15 = bevy_alpha(r_4);
     let n_v_3 = max(dot(n_3, v_1), 0.0001f);
-    let h_2 = normalize((l + v_1));
-    let n_h = saturate(dot(n_3, h_2));
-    let l_h = saturate(dot(l, h_2));
+    let h_3 = normalize((l + v_1));
+    let n_h = saturate(dot(n_3, h_3));
+    let l_h = saturate(dot(l, h_3));
     let f90_d_3 = (0.5f + (((2f * _e15) * l_h) * l_h));
     let _e35 = fresnel_schlick(vec3<f32>(1f, 1f, 1f), f90_d_3, n_l_1);
     let _e41 = fresnel_schlick(vec3<f32>(1f, 1f, 1f), f90_d_3, n_v_3);
@@ -952,6 +952,16 @@ fn bsh_next_leaf_lobe(nodes_3: u32, start: u32, x_5: vec3<f32>, r_8: vec3<f32>, 
     return BSH_NONE;
 }
 
+fn next_threshold(sum: f32, h_1: ptr<function, u32>) -> f32 {
+    let _e2 = (*h_1);
+    let _e3 = pcg_hash(_e2);
+    (*h_1) = _e3;
+    let _e4 = (*h_1);
+    let _e5 = xi_from_bits(_e4);
+    let _e6 = weighted_threshold(sum, _e5);
+    return _e6;
+}
+
 fn connect_record(l_3: GpuLight, x_6: vec3<f32>, n_5: vec3<f32>, ng_1: vec3<f32>, r2_2: f32, rt2_2: f32, w_res: f32, u1_3: f32, u2_3: f32, eps: f32, trace_1: bool) -> Connection {
     var c_7: Connection;
     var local_20: bool;
@@ -1136,7 +1146,7 @@ fn reuse_material(s_4: ReuseSurface, eye: vec3<f32>) -> Material {
     return _e13;
 }
 
-fn reuse_domains(x_13: vec3<f32>, n_11: vec3<f32>, d_6: f32, h_1: u32, doms_1: ptr<function, array<Domain, 3>>) -> u32 {
+fn reuse_domains(x_13: vec3<f32>, n_11: vec3<f32>, d_6: f32, h_2: u32, doms_1: ptr<function, array<Domain, 3>>) -> u32 {
     var nd: u32 = 0u;
     var hr: u32;
     var j_3: u32 = 0u;
@@ -1164,7 +1174,7 @@ fn reuse_domains(x_13: vec3<f32>, n_11: vec3<f32>, d_6: f32, h_1: u32, doms_1: p
     if (_e33.z <= 0f) {
         return 0u;
     }
-    hr = h_1;
+    hr = h_2;
     loop {
         let _e41 = j_3;
         if (_e41 < DOMAINS) {
@@ -1576,238 +1586,233 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
                             slot_p[_e211] = _e192;
                             let _e213 = q;
                             slot_cells[_e213] = _e167;
-                            let _e215 = hc;
-                            let _e216 = pcg_hash(_e215);
-                            hc = _e216;
-                            let _e217 = q;
-                            let _e219 = hc;
-                            let _e220 = xi_from_bits(_e219);
-                            let _e221 = weighted_threshold(_e196, _e220);
-                            threshold[_e217] = _e221;
+                            let _e215 = q;
+                            let _e217 = next_threshold(_e196, (&hc));
+                            threshold[_e215] = _e217;
                         }
                     }
                     continuing {
-                        let _e223 = q;
-                        q = (_e223 + 1u);
+                        let _e219 = q;
+                        q = (_e219 + 1u);
                     }
                 }
             }
         }
         continuing {
-            let _e227 = b;
-            let _e230 = bsh_nodes[_e227].next;
-            let _e231 = r;
-            let _e232 = bsh_next_leaf_lobe(BSH, _e230, x_17, _e231, _e99);
-            b = _e232;
+            let _e223 = b;
+            let _e226 = bsh_nodes[_e223].next;
+            let _e227 = r;
+            let _e228 = bsh_next_leaf_lobe(BSH, _e226, x_17, _e227, _e99);
+            b = _e228;
         }
     }
-    let _e236 = view.width;
-    let pixel_1 = ((gid.y * _e236) + gid.x);
-    let _e243 = view.eye;
-    let _e247 = reuse_stream(_e122, 0u);
-    let _e248 = reuse_domains(x_17, n_15, length((_e243 - x_17)), _e247, (&doms));
-    if (_e248 > 0u) {
-        let _e255 = doms[0].temporal;
-        local_3 = _e255;
+    let _e232 = view.width;
+    let pixel_1 = ((gid.y * _e232) + gid.x);
+    let _e239 = view.eye;
+    let _e243 = reuse_stream(_e122, 0u);
+    let _e244 = reuse_domains(x_17, n_15, length((_e239 - x_17)), _e243, (&doms));
+    if (_e244 > 0u) {
+        let _e251 = doms[0].temporal;
+        local_3 = _e251;
     } else {
         local_3 = false;
     }
     let own_history = local_3;
     let first_1 = select(0u, 1u, own_history);
-    let _e263 = doms[0].c;
-    let confidence = (1f + select(0f, _e263, own_history));
-    let _e269 = reuse_stream(_e122, 1u);
-    hs = _e269;
+    let _e259 = doms[0].c;
+    let confidence = (1f + select(0f, _e259, own_history));
+    let _e265 = reuse_stream(_e122, 1u);
+    hs = _e265;
     loop {
-        let _e275 = q_1;
-        if (_e275 < K) {
+        let _e271 = q_1;
+        if (_e271 < K) {
         } else {
             break;
         }
         {
-            let _e278 = q_1;
+            let _e274 = q_1;
+            let _e276 = q_1;
+            let _e277 = q_1;
+            let _e279 = slot_light[_e277];
             let _e280 = q_1;
-            let _e281 = q_1;
-            let _e283 = slot_light[_e281];
+            let _e282 = slot_cells[_e280];
+            let _e283 = total;
             let _e284 = q_1;
-            let _e286 = slot_cells[_e284];
-            let _e287 = total;
-            let _e288 = q_1;
-            let _e290 = slot_target(_e287, _e288, K);
-            let _e291 = q_1;
-            let _e293 = slot_p[_e291];
-            let _e302 = m;
-            let _e303 = gris_combine(_e280, ReuseSlot(_e283, _e286, select(0f, _e290, (_e293 > 0f))), true, 1f, 0u, first_1, x_17, n_15, _e302, (&doms), (&hs));
-            kept[_e278] = _e303;
-            let _e304 = q_1;
-            let _e306 = q_1;
-            let _e308 = kept[_e306];
-            fin[_e304] = _e308;
-            if (_e248 > first_1) {
-                let _e310 = q_1;
-                let _e312 = q_1;
-                let _e313 = q_1;
-                let _e315 = kept[_e313];
-                let _e317 = m;
-                let _e318 = gris_combine(_e312, _e315, false, confidence, first_1, _e248, x_17, n_15, _e317, (&doms), (&hs));
-                fin[_e310] = _e318;
+            let _e286 = slot_target(_e283, _e284, K);
+            let _e287 = q_1;
+            let _e289 = slot_p[_e287];
+            let _e298 = m;
+            let _e299 = gris_combine(_e276, ReuseSlot(_e279, _e282, select(0f, _e286, (_e289 > 0f))), true, 1f, 0u, first_1, x_17, n_15, _e298, (&doms), (&hs));
+            kept[_e274] = _e299;
+            let _e300 = q_1;
+            let _e302 = q_1;
+            let _e304 = kept[_e302];
+            fin[_e300] = _e304;
+            if (_e244 > first_1) {
+                let _e306 = q_1;
+                let _e308 = q_1;
+                let _e309 = q_1;
+                let _e311 = kept[_e309];
+                let _e313 = m;
+                let _e314 = gris_combine(_e308, _e311, false, confidence, first_1, _e244, x_17, n_15, _e313, (&doms), (&hs));
+                fin[_e306] = _e314;
             }
         }
         continuing {
-            let _e320 = q_1;
-            q_1 = (_e320 + 1u);
+            let _e316 = q_1;
+            q_1 = (_e316 + 1u);
         }
     }
     loop {
-        let _e326 = k;
-        if (_e326 < K) {
+        let _e322 = k;
+        if (_e322 < K) {
         } else {
             break;
         }
         {
-            let _e329 = k;
-            let _e331 = k;
-            let _e334 = fin[_e331].light;
-            let _e336 = k;
-            let _e339 = fin[_e336].u;
-            let _e341 = k;
-            let _e344 = fin[_e341].light;
-            let _e347 = lights[_e344].kind;
-            keys[_e329] = vec2<u32>(_e334, select(0u, _e339, (_e347 == LIGHT_TRIANGLE)));
-            let _e352 = k;
-            let _e354 = k;
-            let _e357 = fin[_e354].w;
-            held[_e352] = (_e357 > 0f);
+            let _e325 = k;
+            let _e327 = k;
+            let _e330 = fin[_e327].light;
+            let _e332 = k;
+            let _e335 = fin[_e332].u;
+            let _e337 = k;
+            let _e340 = fin[_e337].light;
+            let _e343 = lights[_e340].kind;
+            keys[_e325] = vec2<u32>(_e330, select(0u, _e335, (_e343 == LIGHT_TRIANGLE)));
+            let _e348 = k;
+            let _e350 = k;
+            let _e353 = fin[_e350].w;
+            held[_e348] = (_e353 > 0f);
         }
         continuing {
-            let _e361 = k;
-            k = (_e361 + 1u);
+            let _e357 = k;
+            k = (_e357 + 1u);
         }
     }
-    let _e363 = keys;
-    let _e364 = held;
-    let _e365 = first_holders(_e363, _e364);
+    let _e359 = keys;
+    let _e360 = held;
+    let _e361 = first_holders(_e359, _e360);
     loop {
-        let _e369 = k_1;
-        if (_e369 < K) {
+        let _e365 = k_1;
+        if (_e365 < K) {
         } else {
             break;
         }
         {
-            let _e372 = k_1;
-            let _e374 = k_1;
-            if (_e365[_e372] != _e374) {
+            let _e368 = k_1;
+            let _e370 = k_1;
+            if (_e361[_e368] != _e370) {
                 continue;
             }
             w = vec3(0f);
-            let _e379 = k_1;
-            j = _e379;
+            let _e375 = k_1;
+            j = _e375;
             loop {
-                let _e381 = j;
-                if (_e381 < K) {
+                let _e377 = j;
+                if (_e377 < K) {
                 } else {
                     break;
                 }
                 {
-                    let _e384 = j;
-                    let _e386 = k_1;
-                    if (_e365[_e384] == _e386) {
-                        let _e388 = w;
+                    let _e380 = j;
+                    let _e382 = k_1;
+                    if (_e361[_e380] == _e382) {
+                        let _e384 = w;
+                        let _e385 = j;
+                        let _e388 = fin[_e385].w;
                         let _e389 = j;
-                        let _e392 = fin[_e389].w;
-                        let _e393 = j;
-                        let _e395 = slot_share(_e393, K);
-                        w = (_e388 + (_e392 * _e395));
+                        let _e391 = slot_share(_e389, K);
+                        w = (_e384 + (_e388 * _e391));
                     }
                 }
                 continuing {
-                    let _e399 = j;
-                    j = (_e399 + 1u);
+                    let _e395 = j;
+                    j = (_e395 + 1u);
                 }
             }
-            let _e402 = k_1;
-            let _e405 = fin[_e402].light;
-            let _e407 = lights[_e405];
-            let _e411 = k_1;
-            let _e414 = fin[_e411].u;
-            let _e415 = grid_coordinate(_e414);
-            let _e416 = k_1;
-            let _e419 = fin[_e416].u;
-            let _e422 = grid_coordinate((_e419 << 16u));
-            let _e424 = connect_record(_e407, x_17, n_15, n_15, UNRANGED, UNRANGED, 1f, _e415, _e422, eps_3, true);
-            let _e425 = m;
-            let _e426 = shade_connection(_e424, x_17, n_15, _e425);
-            let _e427 = t;
-            let _e428 = w;
-            let _e429 = scaled(_e426, _e428);
-            let _e430 = add(_e427, _e429);
-            t = _e430;
-            let _e431 = k_1;
-            j_1 = _e431;
+            let _e398 = k_1;
+            let _e401 = fin[_e398].light;
+            let _e403 = lights[_e401];
+            let _e407 = k_1;
+            let _e410 = fin[_e407].u;
+            let _e411 = grid_coordinate(_e410);
+            let _e412 = k_1;
+            let _e415 = fin[_e412].u;
+            let _e418 = grid_coordinate((_e415 << 16u));
+            let _e420 = connect_record(_e403, x_17, n_15, n_15, UNRANGED, UNRANGED, 1f, _e411, _e418, eps_3, true);
+            let _e421 = m;
+            let _e422 = shade_connection(_e420, x_17, n_15, _e421);
+            let _e423 = t;
+            let _e424 = w;
+            let _e425 = scaled(_e422, _e424);
+            let _e426 = add(_e423, _e425);
+            t = _e426;
+            let _e427 = k_1;
+            j_1 = _e427;
             loop {
-                let _e433 = j_1;
-                if (_e433 < K) {
+                let _e429 = j_1;
+                if (_e429 < K) {
                 } else {
                     break;
                 }
                 {
-                    let _e436 = j_1;
-                    let _e438 = k_1;
-                    if (_e365[_e436] == _e438) {
-                        let _e440 = j_1;
-                        let _e442 = output_of(_e426);
-                        let _e443 = resample_target(_e442);
-                        visible[_e440] = (_e443 > 0f);
+                    let _e432 = j_1;
+                    let _e434 = k_1;
+                    if (_e361[_e432] == _e434) {
+                        let _e436 = j_1;
+                        let _e438 = output_of(_e422);
+                        let _e439 = resample_target(_e438);
+                        visible[_e436] = (_e439 > 0f);
                     }
                 }
                 continuing {
-                    let _e447 = j_1;
-                    j_1 = (_e447 + 1u);
+                    let _e443 = j_1;
+                    j_1 = (_e443 + 1u);
                 }
             }
         }
         continuing {
-            let _e450 = k_1;
-            k_1 = (_e450 + 1u);
+            let _e446 = k_1;
+            k_1 = (_e446 + 1u);
         }
     }
     loop {
-        let _e454 = q_2;
-        if (_e454 < K) {
+        let _e450 = q_2;
+        if (_e450 < K) {
         } else {
             break;
         }
         {
-            let _e459 = reuse.visibility;
-            if !((_e459 == 0u)) {
-                let _e465 = q_2;
-                let _e467 = visible[_e465];
-                local_4 = _e467;
+            let _e455 = reuse.visibility;
+            if !((_e455 == 0u)) {
+                let _e461 = q_2;
+                let _e463 = visible[_e461];
+                local_4 = _e463;
             } else {
                 local_4 = true;
             }
             let keep = local_4;
-            let _e473 = q_2;
+            let _e469 = q_2;
+            let _e471 = q_2;
+            let _e474 = kept[_e471].light;
             let _e475 = q_2;
-            let _e478 = kept[_e475].light;
+            let _e478 = kept[_e475].u;
             let _e479 = q_2;
-            let _e482 = kept[_e479].u;
-            let _e483 = q_2;
-            let _e486 = kept[_e483].w;
-            reuse_next[pixel_1].slots[_e473] = ReuseSlot(_e478, _e482, select(0f, _e486, keep));
+            let _e482 = kept[_e479].w;
+            reuse_next[pixel_1].slots[_e469] = ReuseSlot(_e474, _e478, select(0f, _e482, keep));
         }
         continuing {
-            let _e491 = q_2;
-            q_2 = (_e491 + 1u);
+            let _e487 = q_2;
+            q_2 = (_e487 + 1u);
         }
     }
-    let _e496 = m;
-    let _e499 = reuse.max_confidence;
-    let _e501 = reuse_surface(x_17, n_15, _e496, min(confidence, _e499));
-    reuse_next[pixel_1].surface = _e501;
-    let _e504 = t.diffuse;
-    let _e506 = t.specular;
-    let _e508 = count;
-    textureStore(out_tex, texel_1, vec4<f32>((_e504 + _e506), f32(_e508)));
+    let _e492 = m;
+    let _e495 = reuse.max_confidence;
+    let _e497 = reuse_surface(x_17, n_15, _e492, min(confidence, _e495));
+    reuse_next[pixel_1].surface = _e497;
+    let _e500 = t.diffuse;
+    let _e502 = t.specular;
+    let _e504 = count;
+    textureStore(out_tex, texel_1, vec4<f32>((_e500 + _e502), f32(_e504)));
     return;
 }

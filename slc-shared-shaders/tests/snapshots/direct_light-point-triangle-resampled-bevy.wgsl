@@ -479,9 +479,9 @@ fn bevy_brdf(base_2: vec3<f32>, metallic_3: f32, r_3: f32, reflectance_1: f32, n
     }
     let _e15 = bevy_alpha(r_3);
     let n_v_3 = max(dot(n_3, v_1), 0.0001f);
-    let h_1 = normalize((l + v_1));
-    let n_h = saturate(dot(n_3, h_1));
-    let l_h = saturate(dot(l, h_1));
+    let h_2 = normalize((l + v_1));
+    let n_h = saturate(dot(n_3, h_2));
+    let l_h = saturate(dot(l, h_2));
     let f90_d_3 = (0.5f + (((2f * _e15) * l_h) * l_h));
     let _e35 = fresnel_schlick(vec3<f32>(1f, 1f, 1f), f90_d_3, n_l_1);
     let _e41 = fresnel_schlick(vec3<f32>(1f, 1f, 1f), f90_d_3, n_v_3);
@@ -839,6 +839,16 @@ fn bsh_next_leaf_lobe(nodes_3: u32, start: u32, x_5: vec3<f32>, r_7: vec3<f32>, 
     return BSH_NONE;
 }
 
+fn next_threshold(sum: f32, h_1: ptr<function, u32>) -> f32 {
+    let _e2 = (*h_1);
+    let _e3 = pcg_hash(_e2);
+    (*h_1) = _e3;
+    let _e4 = (*h_1);
+    let _e5 = xi_from_bits(_e4);
+    let _e6 = weighted_threshold(sum, _e5);
+    return _e6;
+}
+
 fn connect_record(l_3: GpuLight, x_6: vec3<f32>, n_4: vec3<f32>, ng_1: vec3<f32>, r2_2: f32, rt2_2: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32, trace_1: bool) -> Connection {
     var c_7: Connection;
     var local_18: bool;
@@ -1152,125 +1162,120 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
                             slot_u[_e194] = u_4;
                             let _e196 = q;
                             slot_p[_e196] = _e177;
-                            let _e198 = hc;
-                            let _e199 = pcg_hash(_e198);
-                            hc = _e199;
-                            let _e200 = q;
-                            let _e202 = hc;
-                            let _e203 = xi_from_bits(_e202);
-                            let _e204 = weighted_threshold(_e181, _e203);
-                            threshold[_e200] = _e204;
+                            let _e198 = q;
+                            let _e200 = next_threshold(_e181, (&hc));
+                            threshold[_e198] = _e200;
                         }
                     }
                     continuing {
-                        let _e206 = q;
-                        q = (_e206 + 1u);
+                        let _e202 = q;
+                        q = (_e202 + 1u);
                     }
                 }
             }
         }
         continuing {
-            let _e210 = b;
-            let _e213 = bsh_nodes[_e210].next;
-            let _e214 = r;
-            let _e215 = bsh_next_leaf_lobe(BSH, _e213, x_13, _e214, _e87);
-            b = _e215;
+            let _e206 = b;
+            let _e209 = bsh_nodes[_e206].next;
+            let _e210 = r;
+            let _e211 = bsh_next_leaf_lobe(BSH, _e209, x_13, _e210, _e87);
+            b = _e211;
         }
     }
     loop {
-        let _e220 = k;
-        if (_e220 < K) {
+        let _e216 = k;
+        if (_e216 < K) {
         } else {
             break;
         }
         {
-            let _e223 = k;
-            let _e225 = k;
-            let _e227 = slot_light[_e225];
-            keys[_e223] = vec2<u32>(_e227, 0u);
-            let _e230 = k;
-            let _e232 = k;
-            let _e234 = slot_p[_e232];
-            held[_e230] = (_e234 > 0f);
+            let _e219 = k;
+            let _e221 = k;
+            let _e223 = slot_light[_e221];
+            keys[_e219] = vec2<u32>(_e223, 0u);
+            let _e226 = k;
+            let _e228 = k;
+            let _e230 = slot_p[_e228];
+            held[_e226] = (_e230 > 0f);
         }
         continuing {
-            let _e238 = k;
-            k = (_e238 + 1u);
+            let _e234 = k;
+            k = (_e234 + 1u);
         }
     }
-    let _e240 = keys;
-    let _e241 = held;
-    let _e242 = first_holders(_e240, _e241);
+    let _e236 = keys;
+    let _e237 = held;
+    let _e238 = first_holders(_e236, _e237);
     loop {
-        let _e245 = k_1;
-        if (_e245 < K) {
+        let _e241 = k_1;
+        if (_e241 < K) {
         } else {
             break;
         }
         {
             w = vec3(0f);
+            let _e247 = k_1;
+            let _e249 = k_1;
+            let first_1 = (_e238[_e247] == _e249);
             let _e251 = k_1;
-            let _e253 = k_1;
-            let first_1 = (_e242[_e251] == _e253);
-            let _e255 = k_1;
-            j = _e255;
+            j = _e251;
             loop {
-                let _e257 = j;
-                if (_e257 < K) {
+                let _e253 = j;
+                if (_e253 < K) {
                     local_3 = first_1;
                 } else {
                     local_3 = false;
                 }
-                let _e263 = local_3;
-                if _e263 {
+                let _e259 = local_3;
+                if _e259 {
                 } else {
                     break;
                 }
                 {
-                    let _e264 = j;
-                    let _e266 = k_1;
-                    if (_e242[_e264] == _e266) {
-                        let _e268 = w;
-                        let _e269 = total;
-                        let _e270 = j;
-                        let _e272 = slot_target(_e269, _e270, K);
+                    let _e260 = j;
+                    let _e262 = k_1;
+                    if (_e238[_e260] == _e262) {
+                        let _e264 = w;
+                        let _e265 = total;
+                        let _e266 = j;
+                        let _e268 = slot_target(_e265, _e266, K);
+                        let _e269 = j;
+                        let _e271 = slot_p[_e269];
                         let _e273 = j;
-                        let _e275 = slot_p[_e273];
-                        let _e277 = j;
-                        let _e279 = slot_share(_e277, K);
-                        w = (_e268 + ((_e272 / _e275) * _e279));
+                        let _e275 = slot_share(_e273, K);
+                        w = (_e264 + ((_e268 / _e271) * _e275));
                     }
                 }
                 continuing {
-                    let _e283 = j;
-                    j = (_e283 + 1u);
+                    let _e279 = j;
+                    j = (_e279 + 1u);
                 }
             }
             if first_1 {
-                let _e285 = t;
-                let _e286 = k_1;
-                let _e288 = slot_light[_e286];
-                let _e289 = r;
-                let _e290 = m;
+                let _e281 = t;
+                let _e282 = k_1;
+                let _e284 = slot_light[_e282];
+                let _e285 = r;
+                let _e286 = m;
+                let _e288 = k_1;
+                let _e291 = slot_u[_e288].x;
                 let _e292 = k_1;
-                let _e295 = slot_u[_e292].x;
-                let _e296 = k_1;
-                let _e299 = slot_u[_e296].y;
-                let _e300 = shade_pick(_e288, x_13, n_11, _e289, _e87, _e290, 1f, _e295, _e299, eps_4);
-                let _e301 = w;
-                let _e302 = scaled(_e300, _e301);
-                let _e303 = add(_e285, _e302);
-                t = _e303;
+                let _e295 = slot_u[_e292].y;
+                let _e296 = shade_pick(_e284, x_13, n_11, _e285, _e87, _e286, 1f, _e291, _e295, eps_4);
+                let _e297 = w;
+                let _e298 = scaled(_e296, _e297);
+                let _e299 = add(_e281, _e298);
+                t = _e299;
             }
         }
         continuing {
-            let _e305 = k_1;
-            k_1 = (_e305 + 1u);
+            let _e301 = k_1;
+            k_1 = (_e301 + 1u);
         }
     }
-    let _e309 = t.diffuse;
-    let _e311 = t.specular;
-    let _e313 = count;
-    textureStore(out_tex, texel_1, vec4<f32>((_e309 + _e311), f32(_e313)));
+    let _e305 = t.diffuse;
+    let _e307 = t.specular;
+    let _e309 = count;
+    textureStore(out_tex, texel_1, vec4<f32>((_e305 + _e307), f32(_e309)));
     return;
 }

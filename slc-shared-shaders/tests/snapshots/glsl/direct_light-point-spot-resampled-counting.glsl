@@ -673,6 +673,16 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start, vec3 x_5, vec3 r_5, vec4 rl_4)
     return BSH_NONE;
 }
 
+float next_threshold(float sum, inout uint h_1) {
+    uint _e2 = h_1;
+    uint _e3 = pcg_hash(_e2);
+    h_1 = _e3;
+    uint _e4 = h_1;
+    float _e5 = xi_from_bits(_e4);
+    float _e6 = weighted_threshold(sum, _e5);
+    return _e6;
+}
+
 Connection connect_record(GpuLight l_2, vec3 x_6, vec3 n_1, vec3 ng_1, float r2_2, float rt2_2, float w_res, float u1_1, float u2_1, float eps, bool trace_1) {
     Connection c_4 = Connection(vec3(0.0), vec3(0.0), 0.0);
     bool local_13 = false;
@@ -910,11 +920,11 @@ void main() {
     bool loop_init_3 = true;
     while(true) {
         if (!loop_init_3) {
-            uint _e181 = b;
-            uint _e184 = _group_1_binding_4_cs[_e181].next;
-            vec3 _e185 = r;
-            uint _e186 = bsh_next_leaf_lobe(BSH, _e184, x_11, _e185, _e54);
-            b = _e186;
+            uint _e177 = b;
+            uint _e180 = _group_1_binding_4_cs[_e177].next;
+            vec3 _e181 = r;
+            uint _e182 = bsh_next_leaf_lobe(BSH, _e180, x_11, _e181, _e54);
+            b = _e182;
         }
         loop_init_3 = false;
         uint _e104 = b;
@@ -952,8 +962,8 @@ void main() {
                 bool loop_init_4 = true;
                 while(true) {
                     if (!loop_init_4) {
-                        uint _e177 = q;
-                        q = (_e177 + 1u);
+                        uint _e173 = q;
+                        q = (_e173 + 1u);
                     }
                     loop_init_4 = false;
                     uint _e143 = q;
@@ -982,14 +992,9 @@ void main() {
                             slot_u[_e165] = u_4;
                             uint _e167 = q;
                             slot_p[_e167] = _e148;
-                            uint _e169 = hc;
-                            uint _e170 = pcg_hash(_e169);
-                            hc = _e170;
-                            uint _e171 = q;
-                            uint _e173 = hc;
-                            float _e174 = xi_from_bits(_e173);
-                            float _e175 = weighted_threshold(_e152, _e174);
-                            threshold[_e171] = _e175;
+                            uint _e169 = q;
+                            float _e171 = next_threshold(_e152, hc);
+                            threshold[_e169] = _e171;
                         }
                     }
                 }
@@ -999,112 +1004,112 @@ void main() {
     bool loop_init_5 = true;
     while(true) {
         if (!loop_init_5) {
-            uint _e209 = k;
-            k = (_e209 + 1u);
+            uint _e205 = k;
+            k = (_e205 + 1u);
         }
         loop_init_5 = false;
-        uint _e191 = k;
-        if ((_e191 < K)) {
+        uint _e187 = k;
+        if ((_e187 < K)) {
         } else {
             break;
         }
         {
-            uint _e194 = k;
-            uint _e196 = k;
-            uint _e198 = slot_light[_e196];
-            keys[_e194] = uvec2(_e198, 0u);
-            uint _e201 = k;
-            uint _e203 = k;
-            float _e205 = slot_p[_e203];
-            held[_e201] = (_e205 > 0.0);
+            uint _e190 = k;
+            uint _e192 = k;
+            uint _e194 = slot_light[_e192];
+            keys[_e190] = uvec2(_e194, 0u);
+            uint _e197 = k;
+            uint _e199 = k;
+            float _e201 = slot_p[_e199];
+            held[_e197] = (_e201 > 0.0);
         }
     }
-    uvec2 _e211[8] = keys;
-    bool _e212[8] = held;
-    uint _e213[8] = first_holders(_e211, _e212);
+    uvec2 _e207[8] = keys;
+    bool _e208[8] = held;
+    uint _e209[8] = first_holders(_e207, _e208);
     bool loop_init_6 = true;
     while(true) {
         if (!loop_init_6) {
-            uint _e276 = k_1;
-            k_1 = (_e276 + 1u);
+            uint _e272 = k_1;
+            k_1 = (_e272 + 1u);
         }
         loop_init_6 = false;
-        uint _e216 = k_1;
-        if ((_e216 < K)) {
+        uint _e212 = k_1;
+        if ((_e212 < K)) {
         } else {
             break;
         }
         {
             w = vec3(0.0);
+            uint _e218 = k_1;
+            uint _e220 = k_1;
+            bool first_1 = (_e209[_e218] == _e220);
             uint _e222 = k_1;
-            uint _e224 = k_1;
-            bool first_1 = (_e213[_e222] == _e224);
-            uint _e226 = k_1;
-            j = _e226;
+            j = _e222;
             bool loop_init_7 = true;
             while(true) {
                 if (!loop_init_7) {
-                    uint _e254 = j;
-                    j = (_e254 + 1u);
+                    uint _e250 = j;
+                    j = (_e250 + 1u);
                 }
                 loop_init_7 = false;
-                uint _e228 = j;
-                if ((_e228 < K)) {
+                uint _e224 = j;
+                if ((_e224 < K)) {
                     local_3 = first_1;
                 } else {
                     local_3 = false;
                 }
-                bool _e234 = local_3;
-                if (_e234) {
+                bool _e230 = local_3;
+                if (_e230) {
                 } else {
                     break;
                 }
                 {
-                    uint _e235 = j;
-                    uint _e237 = k_1;
-                    if ((_e213[_e235] == _e237)) {
-                        vec3 _e239 = w;
-                        vec3 _e240 = total;
-                        uint _e241 = j;
-                        float _e243 = slot_target(_e240, _e241, K);
+                    uint _e231 = j;
+                    uint _e233 = k_1;
+                    if ((_e209[_e231] == _e233)) {
+                        vec3 _e235 = w;
+                        vec3 _e236 = total;
+                        uint _e237 = j;
+                        float _e239 = slot_target(_e236, _e237, K);
+                        uint _e240 = j;
+                        float _e242 = slot_p[_e240];
                         uint _e244 = j;
-                        float _e246 = slot_p[_e244];
-                        uint _e248 = j;
-                        vec3 _e250 = slot_share(_e248, K);
-                        w = (_e239 + ((_e243 / _e246) * _e250));
+                        vec3 _e246 = slot_share(_e244, K);
+                        w = (_e235 + ((_e239 / _e242) * _e246));
                     }
                 }
             }
             if (first_1) {
-                Shaded _e256 = t;
-                uint _e257 = k_1;
-                uint _e259 = slot_light[_e257];
-                vec3 _e260 = r;
-                Material _e261 = m;
+                Shaded _e252 = t;
+                uint _e253 = k_1;
+                uint _e255 = slot_light[_e253];
+                vec3 _e256 = r;
+                Material _e257 = m;
+                uint _e259 = k_1;
+                float _e262 = slot_u[_e259].x;
                 uint _e263 = k_1;
-                float _e266 = slot_u[_e263].x;
-                uint _e267 = k_1;
-                float _e270 = slot_u[_e267].y;
-                Shaded _e271 = shade_pick(_e259, x_11, n_8, _e260, _e54, _e261, 1.0, _e266, _e270, eps_4);
-                vec3 _e272 = w;
-                Shaded _e273 = scaled(_e271, _e272);
-                Shaded _e274 = add(_e256, _e273);
-                t = _e274;
+                float _e266 = slot_u[_e263].y;
+                Shaded _e267 = shade_pick(_e255, x_11, n_8, _e256, _e54, _e257, 1.0, _e262, _e266, eps_4);
+                vec3 _e268 = w;
+                Shaded _e269 = scaled(_e267, _e268);
+                Shaded _e270 = add(_e252, _e269);
+                t = _e270;
             }
         }
     }
-    vec3 _e280 = t.e;
-    uint _e281 = count;
-    imageStore(_group_0_binding_3_cs, texel_1, vec4(_e280, float(_e281)));
+    vec3 _e276 = t.e;
+    uint _e277 = count;
+    imageStore(_group_0_binding_3_cs, texel_1, vec4(_e276, float(_e277)));
     counter_add(DIRECT_COUNT_PIXELS, 1u);
-    uint _e287 = count;
-    counter_add(DIRECT_COUNT_CANDIDATES, _e287);
-    uint _e290 = evaluations;
-    counter_add(DIRECT_COUNT_EVALUATIONS, _e290);
-    uint _e293 = rays_cast;
-    counter_add(DIRECT_COUNT_RAYS, _e293);
-    uint _e296 = nodes_visited;
-    counter_add(DIRECT_COUNT_NODES, _e296);
+    uint _e283 = count;
+    counter_add(DIRECT_COUNT_CANDIDATES, _e283);
+    uint _e286 = evaluations;
+    counter_add(DIRECT_COUNT_EVALUATIONS, _e286);
+    uint _e289 = rays_cast;
+    counter_add(DIRECT_COUNT_RAYS, _e289);
+    uint _e292 = nodes_visited;
+    counter_add(DIRECT_COUNT_NODES, _e292);
     return;
 }
 

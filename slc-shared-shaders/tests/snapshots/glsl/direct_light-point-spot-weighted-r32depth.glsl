@@ -781,6 +781,16 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start, vec3 x_6, vec3 r_7, vec4 rl_4)
     return BSH_NONE;
 }
 
+float next_threshold(float sum, inout uint h_1) {
+    uint _e2 = h_1;
+    uint _e3 = pcg_hash(_e2);
+    h_1 = _e3;
+    uint _e4 = h_1;
+    float _e5 = xi_from_bits(_e4);
+    float _e6 = weighted_threshold(sum, _e5);
+    return _e6;
+}
+
 Connection connect_record(GpuLight l_2, vec3 x_7, vec3 n_4, vec3 ng_1, float r2_3, float rt2_4, float w_res, float u1_1, float u2_1, float eps, bool trace_1) {
     Connection c_2 = Connection(vec3(0.0), vec3(0.0), 0.0);
     bool local_14 = false;
@@ -845,23 +855,23 @@ float light_weight(uint li_2, vec3 x_10, vec3 n_6, vec3 r_9, vec4 lobe_7, vec4 r
 
 WeightedPicks bsh_weighted_collect(vec3 x_11, vec3 n_7, vec3 r_10, vec4 lobe_8, vec4 rl_7, uint h0_) {
     WeightedPicks picks = WeightedPicks(uint[8](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u), float[8](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0.0, 0u, 0u);
-    uint h_1 = 0u;
+    uint h_2 = 0u;
     float threshold[8] = float[8](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     uint b_4 = 0u;
     uint s_1 = 0u;
     picks.w_sum = 0.0;
     picks.n = 0u;
-    h_1 = h0_;
+    h_2 = h0_;
     uint _e15 = bsh_first(BSH);
     uint _e16 = bsh_next_leaf_lobe(BSH, _e15, x_11, r_10, rl_7);
     b_4 = _e16;
     bool loop_init_1 = true;
     while(true) {
         if (!loop_init_1) {
-            uint _e67 = b_4;
-            uint _e70 = _group_1_binding_4_cs[_e67].next;
-            uint _e71 = bsh_next_leaf_lobe(BSH, _e70, x_11, r_10, rl_7);
-            b_4 = _e71;
+            uint _e63 = b_4;
+            uint _e66 = _group_1_binding_4_cs[_e63].next;
+            uint _e67 = bsh_next_leaf_lobe(BSH, _e66, x_11, r_10, rl_7);
+            b_4 = _e67;
         }
         loop_init_1 = false;
         uint _e18 = b_4;
@@ -882,8 +892,8 @@ WeightedPicks bsh_weighted_collect(vec3 x_11, vec3 n_7, vec3 r_10, vec4 lobe_8, 
                 bool loop_init_2 = true;
                 while(true) {
                     if (!loop_init_2) {
-                        uint _e63 = s_1;
-                        s_1 = (_e63 + 1u);
+                        uint _e59 = s_1;
+                        s_1 = (_e59 + 1u);
                     }
                     loop_init_2 = false;
                     uint _e38 = s_1;
@@ -900,25 +910,20 @@ WeightedPicks bsh_weighted_collect(vec3 x_11, vec3 n_7, vec3 r_10, vec4 lobe_8, 
                             picks.light[_e48] = li_5;
                             uint _e51 = s_1;
                             picks.w[_e51] = _e30;
-                            uint _e53 = h_1;
-                            uint _e54 = pcg_hash(_e53);
-                            h_1 = _e54;
-                            uint _e55 = s_1;
-                            float _e58 = picks.w_sum;
-                            uint _e59 = h_1;
-                            float _e60 = xi_from_bits(_e59);
-                            float _e61 = weighted_threshold(_e58, _e60);
-                            threshold[_e55] = _e61;
+                            uint _e53 = s_1;
+                            float _e56 = picks.w_sum;
+                            float _e57 = next_threshold(_e56, h_2);
+                            threshold[_e53] = _e57;
                         }
                     }
                 }
             }
         }
     }
-    uint _e73 = h_1;
-    picks.h = _e73;
-    WeightedPicks _e74 = picks;
-    return _e74;
+    uint _e69 = h_2;
+    picks.h = _e69;
+    WeightedPicks _e70 = picks;
+    return _e70;
 }
 
 vec4 unproject_pixel(vec4 c0_, vec4 c1_, vec4 c2_, vec4 c3_, float px, float py, float width, float height, float depth) {

@@ -556,9 +556,9 @@ vec3 bevy_brdf(vec3 base_2, float metallic_3, float r_4, float reflectance_1, ve
     }
     float _e15 = bevy_alpha(r_4);
     float n_v_3 = max(dot(n_3, v_1), 0.0001);
-    vec3 h_2 = normalize((l + v_1));
-    float n_h = clamp(dot(n_3, h_2), 0.0, 1.0);
-    float l_h = clamp(dot(l, h_2), 0.0, 1.0);
+    vec3 h_3 = normalize((l + v_1));
+    float n_h = clamp(dot(n_3, h_3), 0.0, 1.0);
+    float l_h = clamp(dot(l, h_3), 0.0, 1.0);
     float f90_d_3 = (0.5 + (((2.0 * _e15) * l_h) * l_h));
     vec3 _e35 = fresnel_schlick(vec3(1.0, 1.0, 1.0), f90_d_3, n_l_1);
     vec3 _e41 = fresnel_schlick(vec3(1.0, 1.0, 1.0), f90_d_3, n_v_3);
@@ -933,6 +933,16 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start, vec3 x_5, vec3 r_8, vec4 rl_4)
     return BSH_NONE;
 }
 
+float next_threshold(float sum, inout uint h_1) {
+    uint _e2 = h_1;
+    uint _e3 = pcg_hash(_e2);
+    h_1 = _e3;
+    uint _e4 = h_1;
+    float _e5 = xi_from_bits(_e4);
+    float _e6 = weighted_threshold(sum, _e5);
+    return _e6;
+}
+
 Connection connect_record(GpuLight l_3, vec3 x_6, vec3 n_5, vec3 ng_1, float r2_2, float rt2_2, float w_res, float u1_3, float u2_3, float eps, bool trace_1) {
     Connection c_7 = Connection(vec3(0.0), vec3(0.0), 0.0);
     bool local_20 = false;
@@ -1118,7 +1128,7 @@ Material reuse_material(ReuseSurface s_4, vec3 eye) {
     return _e13;
 }
 
-uint reuse_domains(vec3 x_13, vec3 n_11, float d_6, uint h_1, inout Domain doms_1[3]) {
+uint reuse_domains(vec3 x_13, vec3 n_11, float d_6, uint h_2, inout Domain doms_1[3]) {
     uint nd = 0u;
     uint hr = 0u;
     uint j_3 = 0u;
@@ -1145,7 +1155,7 @@ uint reuse_domains(vec3 x_13, vec3 n_11, float d_6, uint h_1, inout Domain doms_
     if ((_e33.z <= 0.0)) {
         return 0u;
     }
-    hr = h_1;
+    hr = h_2;
     bool loop_init_3 = true;
     while(true) {
         if (!loop_init_3) {
@@ -1504,11 +1514,11 @@ void main() {
     bool loop_init_7 = true;
     while(true) {
         if (!loop_init_7) {
-            uint _e227 = b;
-            uint _e230 = _group_1_binding_4_cs[_e227].next;
-            vec3 _e231 = r;
-            uint _e232 = bsh_next_leaf_lobe(BSH, _e230, x_17, _e231, _e99);
-            b = _e232;
+            uint _e223 = b;
+            uint _e226 = _group_1_binding_4_cs[_e223].next;
+            vec3 _e227 = r;
+            uint _e228 = bsh_next_leaf_lobe(BSH, _e226, x_17, _e227, _e99);
+            b = _e228;
         }
         loop_init_7 = false;
         uint _e150 = b;
@@ -1546,8 +1556,8 @@ void main() {
                 bool loop_init_8 = true;
                 while(true) {
                     if (!loop_init_8) {
-                        uint _e223 = q;
-                        q = (_e223 + 1u);
+                        uint _e219 = q;
+                        q = (_e219 + 1u);
                     }
                     loop_init_8 = false;
                     uint _e187 = q;
@@ -1578,195 +1588,190 @@ void main() {
                             slot_p[_e211] = _e192;
                             uint _e213 = q;
                             slot_cells[_e213] = _e167;
-                            uint _e215 = hc;
-                            uint _e216 = pcg_hash(_e215);
-                            hc = _e216;
-                            uint _e217 = q;
-                            uint _e219 = hc;
-                            float _e220 = xi_from_bits(_e219);
-                            float _e221 = weighted_threshold(_e196, _e220);
-                            threshold[_e217] = _e221;
+                            uint _e215 = q;
+                            float _e217 = next_threshold(_e196, hc);
+                            threshold[_e215] = _e217;
                         }
                     }
                 }
             }
         }
     }
-    uint _e236 = _group_0_binding_0_cs.width;
-    uint pixel_1 = ((gid.y * _e236) + gid.x);
-    vec3 _e243 = _group_0_binding_0_cs.eye;
-    uint _e247 = reuse_stream(_e122, 0u);
-    uint _e248 = reuse_domains(x_17, n_15, length((_e243 - x_17)), _e247, doms);
-    if ((_e248 > 0u)) {
-        bool _e255 = doms[0].temporal;
-        local_3 = _e255;
+    uint _e232 = _group_0_binding_0_cs.width;
+    uint pixel_1 = ((gid.y * _e232) + gid.x);
+    vec3 _e239 = _group_0_binding_0_cs.eye;
+    uint _e243 = reuse_stream(_e122, 0u);
+    uint _e244 = reuse_domains(x_17, n_15, length((_e239 - x_17)), _e243, doms);
+    if ((_e244 > 0u)) {
+        bool _e251 = doms[0].temporal;
+        local_3 = _e251;
     } else {
         local_3 = false;
     }
     bool own_history = local_3;
     uint first_1 = (own_history ? 1u : 0u);
-    float _e263 = doms[0].c;
-    float confidence = (1.0 + (own_history ? _e263 : 0.0));
-    uint _e269 = reuse_stream(_e122, 1u);
-    hs = _e269;
+    float _e259 = doms[0].c;
+    float confidence = (1.0 + (own_history ? _e259 : 0.0));
+    uint _e265 = reuse_stream(_e122, 1u);
+    hs = _e265;
     bool loop_init_9 = true;
     while(true) {
         if (!loop_init_9) {
-            uint _e320 = q_1;
-            q_1 = (_e320 + 1u);
+            uint _e316 = q_1;
+            q_1 = (_e316 + 1u);
         }
         loop_init_9 = false;
-        uint _e275 = q_1;
-        if ((_e275 < K)) {
+        uint _e271 = q_1;
+        if ((_e271 < K)) {
         } else {
             break;
         }
         {
-            uint _e278 = q_1;
+            uint _e274 = q_1;
+            uint _e276 = q_1;
+            uint _e277 = q_1;
+            uint _e279 = slot_light[_e277];
             uint _e280 = q_1;
-            uint _e281 = q_1;
-            uint _e283 = slot_light[_e281];
+            uint _e282 = slot_cells[_e280];
+            vec3 _e283 = total;
             uint _e284 = q_1;
-            uint _e286 = slot_cells[_e284];
-            vec3 _e287 = total;
-            uint _e288 = q_1;
-            float _e290 = slot_target(_e287, _e288, K);
-            uint _e291 = q_1;
-            float _e293 = slot_p[_e291];
-            Material _e302 = m;
-            ReuseSlot _e303 = gris_combine(_e280, ReuseSlot(_e283, _e286, ((_e293 > 0.0) ? _e290 : 0.0)), true, 1.0, 0u, first_1, x_17, n_15, _e302, doms, hs);
-            kept[_e278] = _e303;
-            uint _e304 = q_1;
-            uint _e306 = q_1;
-            ReuseSlot _e308 = kept[_e306];
-            fin[_e304] = _e308;
-            if ((_e248 > first_1)) {
-                uint _e310 = q_1;
-                uint _e312 = q_1;
-                uint _e313 = q_1;
-                ReuseSlot _e315 = kept[_e313];
-                Material _e317 = m;
-                ReuseSlot _e318 = gris_combine(_e312, _e315, false, confidence, first_1, _e248, x_17, n_15, _e317, doms, hs);
-                fin[_e310] = _e318;
+            float _e286 = slot_target(_e283, _e284, K);
+            uint _e287 = q_1;
+            float _e289 = slot_p[_e287];
+            Material _e298 = m;
+            ReuseSlot _e299 = gris_combine(_e276, ReuseSlot(_e279, _e282, ((_e289 > 0.0) ? _e286 : 0.0)), true, 1.0, 0u, first_1, x_17, n_15, _e298, doms, hs);
+            kept[_e274] = _e299;
+            uint _e300 = q_1;
+            uint _e302 = q_1;
+            ReuseSlot _e304 = kept[_e302];
+            fin[_e300] = _e304;
+            if ((_e244 > first_1)) {
+                uint _e306 = q_1;
+                uint _e308 = q_1;
+                uint _e309 = q_1;
+                ReuseSlot _e311 = kept[_e309];
+                Material _e313 = m;
+                ReuseSlot _e314 = gris_combine(_e308, _e311, false, confidence, first_1, _e244, x_17, n_15, _e313, doms, hs);
+                fin[_e306] = _e314;
             }
         }
     }
     bool loop_init_10 = true;
     while(true) {
         if (!loop_init_10) {
-            uint _e361 = k;
-            k = (_e361 + 1u);
+            uint _e357 = k;
+            k = (_e357 + 1u);
         }
         loop_init_10 = false;
-        uint _e326 = k;
-        if ((_e326 < K)) {
+        uint _e322 = k;
+        if ((_e322 < K)) {
         } else {
             break;
         }
         {
-            uint _e329 = k;
-            uint _e331 = k;
-            uint _e334 = fin[_e331].light;
-            uint _e336 = k;
-            uint _e339 = fin[_e336].u;
-            uint _e341 = k;
-            uint _e344 = fin[_e341].light;
-            uint _e347 = _group_1_binding_1_cs[_e344].kind;
-            keys[_e329] = uvec2(_e334, ((_e347 == LIGHT_TRIANGLE) ? _e339 : 0u));
-            uint _e352 = k;
-            uint _e354 = k;
-            float _e357 = fin[_e354].w;
-            held[_e352] = (_e357 > 0.0);
+            uint _e325 = k;
+            uint _e327 = k;
+            uint _e330 = fin[_e327].light;
+            uint _e332 = k;
+            uint _e335 = fin[_e332].u;
+            uint _e337 = k;
+            uint _e340 = fin[_e337].light;
+            uint _e343 = _group_1_binding_1_cs[_e340].kind;
+            keys[_e325] = uvec2(_e330, ((_e343 == LIGHT_TRIANGLE) ? _e335 : 0u));
+            uint _e348 = k;
+            uint _e350 = k;
+            float _e353 = fin[_e350].w;
+            held[_e348] = (_e353 > 0.0);
         }
     }
-    uvec2 _e363[8] = keys;
-    bool _e364[8] = held;
-    uint _e365[8] = first_holders(_e363, _e364);
+    uvec2 _e359[8] = keys;
+    bool _e360[8] = held;
+    uint _e361[8] = first_holders(_e359, _e360);
     bool loop_init_11 = true;
     while(true) {
         if (!loop_init_11) {
-            uint _e450 = k_1;
-            k_1 = (_e450 + 1u);
+            uint _e446 = k_1;
+            k_1 = (_e446 + 1u);
         }
         loop_init_11 = false;
-        uint _e369 = k_1;
-        if ((_e369 < K)) {
+        uint _e365 = k_1;
+        if ((_e365 < K)) {
         } else {
             break;
         }
         {
-            uint _e372 = k_1;
-            uint _e374 = k_1;
-            if ((_e365[_e372] != _e374)) {
+            uint _e368 = k_1;
+            uint _e370 = k_1;
+            if ((_e361[_e368] != _e370)) {
                 continue;
             }
             w = vec3(0.0);
-            uint _e379 = k_1;
-            j = _e379;
+            uint _e375 = k_1;
+            j = _e375;
             bool loop_init_12 = true;
             while(true) {
                 if (!loop_init_12) {
-                    uint _e399 = j;
-                    j = (_e399 + 1u);
+                    uint _e395 = j;
+                    j = (_e395 + 1u);
                 }
                 loop_init_12 = false;
-                uint _e381 = j;
-                if ((_e381 < K)) {
+                uint _e377 = j;
+                if ((_e377 < K)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e384 = j;
-                    uint _e386 = k_1;
-                    if ((_e365[_e384] == _e386)) {
-                        vec3 _e388 = w;
+                    uint _e380 = j;
+                    uint _e382 = k_1;
+                    if ((_e361[_e380] == _e382)) {
+                        vec3 _e384 = w;
+                        uint _e385 = j;
+                        float _e388 = fin[_e385].w;
                         uint _e389 = j;
-                        float _e392 = fin[_e389].w;
-                        uint _e393 = j;
-                        vec3 _e395 = slot_share(_e393, K);
-                        w = (_e388 + (_e392 * _e395));
+                        vec3 _e391 = slot_share(_e389, K);
+                        w = (_e384 + (_e388 * _e391));
                     }
                 }
             }
-            uint _e402 = k_1;
-            uint _e405 = fin[_e402].light;
-            GpuLight _e407 = _group_1_binding_1_cs[_e405];
-            uint _e411 = k_1;
-            uint _e414 = fin[_e411].u;
-            float _e415 = grid_coordinate(_e414);
-            uint _e416 = k_1;
-            uint _e419 = fin[_e416].u;
-            float _e422 = grid_coordinate((_e419 << 16u));
-            Connection _e424 = connect_record(_e407, x_17, n_15, n_15, UNRANGED, UNRANGED, 1.0, _e415, _e422, eps_3, true);
-            Material _e425 = m;
-            Shaded _e426 = shade_connection(_e424, x_17, n_15, _e425);
-            Shaded _e427 = t;
-            vec3 _e428 = w;
-            Shaded _e429 = scaled(_e426, _e428);
-            Shaded _e430 = add(_e427, _e429);
-            t = _e430;
-            uint _e431 = k_1;
-            j_1 = _e431;
+            uint _e398 = k_1;
+            uint _e401 = fin[_e398].light;
+            GpuLight _e403 = _group_1_binding_1_cs[_e401];
+            uint _e407 = k_1;
+            uint _e410 = fin[_e407].u;
+            float _e411 = grid_coordinate(_e410);
+            uint _e412 = k_1;
+            uint _e415 = fin[_e412].u;
+            float _e418 = grid_coordinate((_e415 << 16u));
+            Connection _e420 = connect_record(_e403, x_17, n_15, n_15, UNRANGED, UNRANGED, 1.0, _e411, _e418, eps_3, true);
+            Material _e421 = m;
+            Shaded _e422 = shade_connection(_e420, x_17, n_15, _e421);
+            Shaded _e423 = t;
+            vec3 _e424 = w;
+            Shaded _e425 = scaled(_e422, _e424);
+            Shaded _e426 = add(_e423, _e425);
+            t = _e426;
+            uint _e427 = k_1;
+            j_1 = _e427;
             bool loop_init_13 = true;
             while(true) {
                 if (!loop_init_13) {
-                    uint _e447 = j_1;
-                    j_1 = (_e447 + 1u);
+                    uint _e443 = j_1;
+                    j_1 = (_e443 + 1u);
                 }
                 loop_init_13 = false;
-                uint _e433 = j_1;
-                if ((_e433 < K)) {
+                uint _e429 = j_1;
+                if ((_e429 < K)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e436 = j_1;
-                    uint _e438 = k_1;
-                    if ((_e365[_e436] == _e438)) {
-                        uint _e440 = j_1;
-                        vec3 _e442 = output_of(_e426);
-                        float _e443 = resample_target(_e442);
-                        visible[_e440] = (_e443 > 0.0);
+                    uint _e432 = j_1;
+                    uint _e434 = k_1;
+                    if ((_e361[_e432] == _e434)) {
+                        uint _e436 = j_1;
+                        vec3 _e438 = output_of(_e422);
+                        float _e439 = resample_target(_e438);
+                        visible[_e436] = (_e439 > 0.0);
                     }
                 }
             }
@@ -1775,43 +1780,43 @@ void main() {
     bool loop_init_14 = true;
     while(true) {
         if (!loop_init_14) {
-            uint _e491 = q_2;
-            q_2 = (_e491 + 1u);
+            uint _e487 = q_2;
+            q_2 = (_e487 + 1u);
         }
         loop_init_14 = false;
-        uint _e454 = q_2;
-        if ((_e454 < K)) {
+        uint _e450 = q_2;
+        if ((_e450 < K)) {
         } else {
             break;
         }
         {
-            uint _e459 = _group_0_binding_7_cs.visibility;
-            if (!((_e459 == 0u))) {
-                uint _e465 = q_2;
-                bool _e467 = visible[_e465];
-                local_4 = _e467;
+            uint _e455 = _group_0_binding_7_cs.visibility;
+            if (!((_e455 == 0u))) {
+                uint _e461 = q_2;
+                bool _e463 = visible[_e461];
+                local_4 = _e463;
             } else {
                 local_4 = true;
             }
             bool keep = local_4;
-            uint _e473 = q_2;
+            uint _e469 = q_2;
+            uint _e471 = q_2;
+            uint _e474 = kept[_e471].light;
             uint _e475 = q_2;
-            uint _e478 = kept[_e475].light;
+            uint _e478 = kept[_e475].u;
             uint _e479 = q_2;
-            uint _e482 = kept[_e479].u;
-            uint _e483 = q_2;
-            float _e486 = kept[_e483].w;
-            _group_1_binding_10_cs[pixel_1].slots[_e473] = ReuseSlot(_e478, _e482, (keep ? _e486 : 0.0));
+            float _e482 = kept[_e479].w;
+            _group_1_binding_10_cs[pixel_1].slots[_e469] = ReuseSlot(_e474, _e478, (keep ? _e482 : 0.0));
         }
     }
-    Material _e496 = m;
-    float _e499 = _group_0_binding_7_cs.max_confidence;
-    ReuseSurface _e501 = reuse_surface(x_17, n_15, _e496, min(confidence, _e499));
-    _group_1_binding_10_cs[pixel_1].surface = _e501;
-    vec3 _e504 = t.diffuse;
-    vec3 _e506 = t.specular;
-    uint _e508 = count;
-    imageStore(_group_0_binding_3_cs, texel_1, vec4((_e504 + _e506), float(_e508)));
+    Material _e492 = m;
+    float _e495 = _group_0_binding_7_cs.max_confidence;
+    ReuseSurface _e497 = reuse_surface(x_17, n_15, _e492, min(confidence, _e495));
+    _group_1_binding_10_cs[pixel_1].surface = _e497;
+    vec3 _e500 = t.diffuse;
+    vec3 _e502 = t.specular;
+    uint _e504 = count;
+    imageStore(_group_0_binding_3_cs, texel_1, vec4((_e500 + _e502), float(_e504)));
     return;
 }
 

@@ -783,6 +783,17 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start, float3 x_5, float3 r_5, float4
     return BSH_NONE;
 }
 
+float next_threshold(float sum, inout uint h_1)
+{
+    uint _e2 = h_1;
+    const uint _e3 = pcg_hash(_e2);
+    h_1 = _e3;
+    uint _e4 = h_1;
+    const float _e5 = xi_from_bits(_e4);
+    const float _e6 = weighted_threshold(sum, _e5);
+    return _e6;
+}
+
 Connection connect_record(GpuLight l_2, float3 x_6, float3 n_1, float3 ng_1, float r2_2, float rt2_2, float w_res, float u1_1, float u2_1, float eps, bool trace_1)
 {
     Connection c_4 = (Connection)0;
@@ -1075,11 +1086,11 @@ void main(uint3 gid : SV_DispatchThreadID)
         if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         if (!loop_init_3) {
-            uint _e181 = b;
-            uint _e184 = asuint(bsh_nodes.Load(20+_e181*32));
-            float3 _e185 = r;
-            const uint _e186 = bsh_next_leaf_lobe(BSH, _e184, x_11, _e185, _e54);
-            b = _e186;
+            uint _e177 = b;
+            uint _e180 = asuint(bsh_nodes.Load(20+_e177*32));
+            float3 _e181 = r;
+            const uint _e182 = bsh_next_leaf_lobe(BSH, _e180, x_11, _e181, _e54);
+            b = _e182;
         }
         loop_init_3 = false;
         uint _e104 = b;
@@ -1120,8 +1131,8 @@ void main(uint3 gid : SV_DispatchThreadID)
                     if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
                     loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
                     if (!loop_init_4) {
-                        uint _e177 = q;
-                        q = (_e177 + 1u);
+                        uint _e173 = q;
+                        q = (_e173 + 1u);
                     }
                     loop_init_4 = false;
                     uint _e143 = q;
@@ -1150,14 +1161,9 @@ void main(uint3 gid : SV_DispatchThreadID)
                             slot_u[min(uint(_e165), 7u)] = u_4;
                             uint _e167 = q;
                             slot_p[min(uint(_e167), 7u)] = _e148;
-                            uint _e169 = hc;
-                            const uint _e170 = pcg_hash(_e169);
-                            hc = _e170;
-                            uint _e171 = q;
-                            uint _e173 = hc;
-                            const float _e174 = xi_from_bits(_e173);
-                            const float _e175 = weighted_threshold(_e152, _e174);
-                            threshold[min(uint(_e171), 7u)] = _e175;
+                            uint _e169 = q;
+                            const float _e171 = next_threshold(_e152, hc);
+                            threshold[min(uint(_e169), 7u)] = _e171;
                         }
                     }
                 }
@@ -1170,117 +1176,117 @@ void main(uint3 gid : SV_DispatchThreadID)
         if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
         loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
         if (!loop_init_5) {
-            uint _e209 = k;
-            k = (_e209 + 1u);
+            uint _e205 = k;
+            k = (_e205 + 1u);
         }
         loop_init_5 = false;
-        uint _e191 = k;
-        if ((_e191 < K)) {
+        uint _e187 = k;
+        if ((_e187 < K)) {
         } else {
             break;
         }
         {
-            uint _e194 = k;
-            uint _e196 = k;
-            uint _e198 = slot_light[min(uint(_e196), 7u)];
-            keys[min(uint(_e194), 7u)] = uint2(_e198, 0u);
-            uint _e201 = k;
-            uint _e203 = k;
-            float _e205 = slot_p[min(uint(_e203), 7u)];
-            held[min(uint(_e201), 7u)] = (_e205 > 0.0);
+            uint _e190 = k;
+            uint _e192 = k;
+            uint _e194 = slot_light[min(uint(_e192), 7u)];
+            keys[min(uint(_e190), 7u)] = uint2(_e194, 0u);
+            uint _e197 = k;
+            uint _e199 = k;
+            float _e201 = slot_p[min(uint(_e199), 7u)];
+            held[min(uint(_e197), 7u)] = (_e201 > 0.0);
         }
     }
-    uint2 _e211[8] = keys;
-    bool _e212[8] = held;
-    const uint _e213[8] = first_holders(_e211, _e212);
+    uint2 _e207[8] = keys;
+    bool _e208[8] = held;
+    const uint _e209[8] = first_holders(_e207, _e208);
     uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
     bool loop_init_6 = true;
     while(true) {
         if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
         loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
         if (!loop_init_6) {
-            uint _e276 = k_1;
-            k_1 = (_e276 + 1u);
+            uint _e272 = k_1;
+            k_1 = (_e272 + 1u);
         }
         loop_init_6 = false;
-        uint _e216 = k_1;
-        if ((_e216 < K)) {
+        uint _e212 = k_1;
+        if ((_e212 < K)) {
         } else {
             break;
         }
         {
             w = (0.0).xxx;
+            uint _e218 = k_1;
+            uint _e220 = k_1;
+            bool first_1 = (_e209[min(uint(_e218), 7u)] == _e220);
             uint _e222 = k_1;
-            uint _e224 = k_1;
-            bool first_1 = (_e213[min(uint(_e222), 7u)] == _e224);
-            uint _e226 = k_1;
-            j = _e226;
+            j = _e222;
             uint2 loop_bound_9 = uint2(4294967295u, 4294967295u);
             bool loop_init_7 = true;
             while(true) {
                 if (all(loop_bound_9 == uint2(0u, 0u))) { break; }
                 loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
                 if (!loop_init_7) {
-                    uint _e254 = j;
-                    j = (_e254 + 1u);
+                    uint _e250 = j;
+                    j = (_e250 + 1u);
                 }
                 loop_init_7 = false;
-                uint _e228 = j;
-                if ((_e228 < K)) {
+                uint _e224 = j;
+                if ((_e224 < K)) {
                     local_3 = first_1;
                 } else {
                     local_3 = false;
                 }
-                bool _e234 = local_3;
-                if (_e234) {
+                bool _e230 = local_3;
+                if (_e230) {
                 } else {
                     break;
                 }
                 {
-                    uint _e235 = j;
-                    uint _e237 = k_1;
-                    if ((_e213[min(uint(_e235), 7u)] == _e237)) {
-                        float3 _e239 = w;
-                        float3 _e240 = total;
-                        uint _e241 = j;
-                        const float _e243 = slot_target(_e240, _e241, K);
+                    uint _e231 = j;
+                    uint _e233 = k_1;
+                    if ((_e209[min(uint(_e231), 7u)] == _e233)) {
+                        float3 _e235 = w;
+                        float3 _e236 = total;
+                        uint _e237 = j;
+                        const float _e239 = slot_target(_e236, _e237, K);
+                        uint _e240 = j;
+                        float _e242 = slot_p[min(uint(_e240), 7u)];
                         uint _e244 = j;
-                        float _e246 = slot_p[min(uint(_e244), 7u)];
-                        uint _e248 = j;
-                        const float3 _e250 = slot_share(_e248, K);
-                        w = (_e239 + ((_e243 / _e246) * _e250));
+                        const float3 _e246 = slot_share(_e244, K);
+                        w = (_e235 + ((_e239 / _e242) * _e246));
                     }
                 }
             }
             if (first_1) {
-                Shaded _e256 = t;
-                uint _e257 = k_1;
-                uint _e259 = slot_light[min(uint(_e257), 7u)];
-                float3 _e260 = r;
-                Material _e261 = m;
+                Shaded _e252 = t;
+                uint _e253 = k_1;
+                uint _e255 = slot_light[min(uint(_e253), 7u)];
+                float3 _e256 = r;
+                Material _e257 = m;
+                uint _e259 = k_1;
+                float _e262 = slot_u[min(uint(_e259), 7u)].x;
                 uint _e263 = k_1;
-                float _e266 = slot_u[min(uint(_e263), 7u)].x;
-                uint _e267 = k_1;
-                float _e270 = slot_u[min(uint(_e267), 7u)].y;
-                const Shaded _e271 = shade_pick(_e259, x_11, n_8, _e260, _e54, _e261, 1.0, _e266, _e270, eps_4);
-                float3 _e272 = w;
-                const Shaded _e273 = scaled(_e271, _e272);
-                const Shaded _e274 = add(_e256, _e273);
-                t = _e274;
+                float _e266 = slot_u[min(uint(_e263), 7u)].y;
+                const Shaded _e267 = shade_pick(_e255, x_11, n_8, _e256, _e54, _e257, 1.0, _e262, _e266, eps_4);
+                float3 _e268 = w;
+                const Shaded _e269 = scaled(_e267, _e268);
+                const Shaded _e270 = add(_e252, _e269);
+                t = _e270;
             }
         }
     }
-    float3 _e280 = t.e;
-    uint _e281 = count;
-    out_tex[texel_1] = float4(_e280, float(_e281));
+    float3 _e276 = t.e;
+    uint _e277 = count;
+    out_tex[texel_1] = float4(_e276, float(_e277));
     counter_add(DIRECT_COUNT_PIXELS, 1u);
-    uint _e287 = count;
-    counter_add(DIRECT_COUNT_CANDIDATES, _e287);
-    uint _e290 = evaluations;
-    counter_add(DIRECT_COUNT_EVALUATIONS, _e290);
-    uint _e293 = rays_cast;
-    counter_add(DIRECT_COUNT_RAYS, _e293);
-    uint _e296 = nodes_visited;
-    counter_add(DIRECT_COUNT_NODES, _e296);
+    uint _e283 = count;
+    counter_add(DIRECT_COUNT_CANDIDATES, _e283);
+    uint _e286 = evaluations;
+    counter_add(DIRECT_COUNT_EVALUATIONS, _e286);
+    uint _e289 = rays_cast;
+    counter_add(DIRECT_COUNT_RAYS, _e289);
+    uint _e292 = nodes_visited;
+    counter_add(DIRECT_COUNT_NODES, _e292);
     return;
 }

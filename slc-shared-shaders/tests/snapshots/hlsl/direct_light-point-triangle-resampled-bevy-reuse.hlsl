@@ -624,9 +624,9 @@ float3 bevy_brdf(float3 base_2, float metallic_3, float r_4, float reflectance_1
     }
     const float _e15 = bevy_alpha(r_4);
     float n_v_3 = max(dot(n_3, v_1), 0.0001);
-    float3 h_2 = normalize((l + v_1));
-    float n_h = saturate(dot(n_3, h_2));
-    float l_h = saturate(dot(l, h_2));
+    float3 h_3 = normalize((l + v_1));
+    float n_h = saturate(dot(n_3, h_3));
+    float l_h = saturate(dot(l, h_3));
     float f90_d_3 = (0.5 + (((2.0 * _e15) * l_h) * l_h));
     const float3 _e35 = fresnel_schlick(float3(1.0, 1.0, 1.0), f90_d_3, n_l_1);
     const float3 _e41 = fresnel_schlick(float3(1.0, 1.0, 1.0), f90_d_3, n_v_3);
@@ -1081,6 +1081,17 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start, float3 x_5, float3 r_8, float4
     return BSH_NONE;
 }
 
+float next_threshold(float sum, inout uint h_1)
+{
+    uint _e2 = h_1;
+    const uint _e3 = pcg_hash(_e2);
+    h_1 = _e3;
+    uint _e4 = h_1;
+    const float _e5 = xi_from_bits(_e4);
+    const float _e6 = weighted_threshold(sum, _e5);
+    return _e6;
+}
+
 Connection connect_record(GpuLight l_3, float3 x_6, float3 n_5, float3 ng_1, float r2_2, float rt2_2, float w_res, float u1_3, float u2_3, float eps, bool trace_1)
 {
     Connection c_7 = (Connection)0;
@@ -1377,7 +1388,7 @@ int2 naga_f2i32(float2 value) {
     return int2(clamp(value, -2147483600.0, 2147483500.0));
 }
 
-uint reuse_domains(float3 x_13, float3 n_11, float d_6, uint h_1, inout Domain doms_1[3])
+uint reuse_domains(float3 x_13, float3 n_11, float d_6, uint h_2, inout Domain doms_1[3])
 {
     uint nd = 0u;
     uint hr = (uint)0;
@@ -1406,7 +1417,7 @@ uint reuse_domains(float3 x_13, float3 n_11, float d_6, uint h_1, inout Domain d
     if ((_e33.z <= 0.0)) {
         return 0u;
     }
-    hr = h_1;
+    hr = h_2;
     uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
     bool loop_init_3 = true;
     while(true) {
@@ -1793,11 +1804,11 @@ void main(uint3 gid : SV_DispatchThreadID)
         if (all(loop_bound_9 == uint2(0u, 0u))) { break; }
         loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
         if (!loop_init_7) {
-            uint _e227 = b;
-            uint _e230 = asuint(bsh_nodes.Load(20+_e227*32));
-            float3 _e231 = r;
-            const uint _e232 = bsh_next_leaf_lobe(BSH, _e230, x_17, _e231, _e99);
-            b = _e232;
+            uint _e223 = b;
+            uint _e226 = asuint(bsh_nodes.Load(20+_e223*32));
+            float3 _e227 = r;
+            const uint _e228 = bsh_next_leaf_lobe(BSH, _e226, x_17, _e227, _e99);
+            b = _e228;
         }
         loop_init_7 = false;
         uint _e150 = b;
@@ -1838,8 +1849,8 @@ void main(uint3 gid : SV_DispatchThreadID)
                     if (all(loop_bound_10 == uint2(0u, 0u))) { break; }
                     loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
                     if (!loop_init_8) {
-                        uint _e223 = q;
-                        q = (_e223 + 1u);
+                        uint _e219 = q;
+                        q = (_e219 + 1u);
                     }
                     loop_init_8 = false;
                     uint _e187 = q;
@@ -1870,79 +1881,74 @@ void main(uint3 gid : SV_DispatchThreadID)
                             slot_p[min(uint(_e211), 7u)] = _e192;
                             uint _e213 = q;
                             slot_cells[min(uint(_e213), 7u)] = _e167;
-                            uint _e215 = hc;
-                            const uint _e216 = pcg_hash(_e215);
-                            hc = _e216;
-                            uint _e217 = q;
-                            uint _e219 = hc;
-                            const float _e220 = xi_from_bits(_e219);
-                            const float _e221 = weighted_threshold(_e196, _e220);
-                            threshold[min(uint(_e217), 7u)] = _e221;
+                            uint _e215 = q;
+                            const float _e217 = next_threshold(_e196, hc);
+                            threshold[min(uint(_e215), 7u)] = _e217;
                         }
                     }
                 }
             }
         }
     }
-    uint _e236 = view.width;
-    uint pixel_1 = ((gid.y * _e236) + gid.x);
-    float3 _e243 = view.eye;
-    const uint _e247 = reuse_stream(_e122, 0u);
-    const uint _e248 = reuse_domains(x_17, n_15, length((_e243 - x_17)), _e247, doms);
-    if ((_e248 > 0u)) {
-        bool _e255 = doms[0].temporal;
-        local_3 = _e255;
+    uint _e232 = view.width;
+    uint pixel_1 = ((gid.y * _e232) + gid.x);
+    float3 _e239 = view.eye;
+    const uint _e243 = reuse_stream(_e122, 0u);
+    const uint _e244 = reuse_domains(x_17, n_15, length((_e239 - x_17)), _e243, doms);
+    if ((_e244 > 0u)) {
+        bool _e251 = doms[0].temporal;
+        local_3 = _e251;
     } else {
         local_3 = false;
     }
     bool own_history = local_3;
     uint first_1 = (own_history ? 1u : 0u);
-    float _e263 = doms[0].c;
-    float confidence = (1.0 + (own_history ? _e263 : 0.0));
-    const uint _e269 = reuse_stream(_e122, 1u);
-    hs = _e269;
+    float _e259 = doms[0].c;
+    float confidence = (1.0 + (own_history ? _e259 : 0.0));
+    const uint _e265 = reuse_stream(_e122, 1u);
+    hs = _e265;
     uint2 loop_bound_11 = uint2(4294967295u, 4294967295u);
     bool loop_init_9 = true;
     while(true) {
         if (all(loop_bound_11 == uint2(0u, 0u))) { break; }
         loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
         if (!loop_init_9) {
-            uint _e320 = q_1;
-            q_1 = (_e320 + 1u);
+            uint _e316 = q_1;
+            q_1 = (_e316 + 1u);
         }
         loop_init_9 = false;
-        uint _e275 = q_1;
-        if ((_e275 < K)) {
+        uint _e271 = q_1;
+        if ((_e271 < K)) {
         } else {
             break;
         }
         {
-            uint _e278 = q_1;
+            uint _e274 = q_1;
+            uint _e276 = q_1;
+            uint _e277 = q_1;
+            uint _e279 = slot_light[min(uint(_e277), 7u)];
             uint _e280 = q_1;
-            uint _e281 = q_1;
-            uint _e283 = slot_light[min(uint(_e281), 7u)];
+            uint _e282 = slot_cells[min(uint(_e280), 7u)];
+            float3 _e283 = total;
             uint _e284 = q_1;
-            uint _e286 = slot_cells[min(uint(_e284), 7u)];
-            float3 _e287 = total;
-            uint _e288 = q_1;
-            const float _e290 = slot_target(_e287, _e288, K);
-            uint _e291 = q_1;
-            float _e293 = slot_p[min(uint(_e291), 7u)];
-            Material _e302 = m;
-            const ReuseSlot _e303 = gris_combine(_e280, ConstructReuseSlot(_e283, _e286, ((_e293 > 0.0) ? _e290 : 0.0)), true, 1.0, 0u, first_1, x_17, n_15, _e302, doms, hs);
-            kept[min(uint(_e278), 7u)] = _e303;
-            uint _e304 = q_1;
-            uint _e306 = q_1;
-            ReuseSlot _e308 = kept[min(uint(_e306), 7u)];
-            fin[min(uint(_e304), 7u)] = _e308;
-            if ((_e248 > first_1)) {
-                uint _e310 = q_1;
-                uint _e312 = q_1;
-                uint _e313 = q_1;
-                ReuseSlot _e315 = kept[min(uint(_e313), 7u)];
-                Material _e317 = m;
-                const ReuseSlot _e318 = gris_combine(_e312, _e315, false, confidence, first_1, _e248, x_17, n_15, _e317, doms, hs);
-                fin[min(uint(_e310), 7u)] = _e318;
+            const float _e286 = slot_target(_e283, _e284, K);
+            uint _e287 = q_1;
+            float _e289 = slot_p[min(uint(_e287), 7u)];
+            Material _e298 = m;
+            const ReuseSlot _e299 = gris_combine(_e276, ConstructReuseSlot(_e279, _e282, ((_e289 > 0.0) ? _e286 : 0.0)), true, 1.0, 0u, first_1, x_17, n_15, _e298, doms, hs);
+            kept[min(uint(_e274), 7u)] = _e299;
+            uint _e300 = q_1;
+            uint _e302 = q_1;
+            ReuseSlot _e304 = kept[min(uint(_e302), 7u)];
+            fin[min(uint(_e300), 7u)] = _e304;
+            if ((_e244 > first_1)) {
+                uint _e306 = q_1;
+                uint _e308 = q_1;
+                uint _e309 = q_1;
+                ReuseSlot _e311 = kept[min(uint(_e309), 7u)];
+                Material _e313 = m;
+                const ReuseSlot _e314 = gris_combine(_e308, _e311, false, confidence, first_1, _e244, x_17, n_15, _e313, doms, hs);
+                fin[min(uint(_e306), 7u)] = _e314;
             }
         }
     }
@@ -1952,128 +1958,128 @@ void main(uint3 gid : SV_DispatchThreadID)
         if (all(loop_bound_12 == uint2(0u, 0u))) { break; }
         loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
         if (!loop_init_10) {
-            uint _e361 = k;
-            k = (_e361 + 1u);
+            uint _e357 = k;
+            k = (_e357 + 1u);
         }
         loop_init_10 = false;
-        uint _e326 = k;
-        if ((_e326 < K)) {
+        uint _e322 = k;
+        if ((_e322 < K)) {
         } else {
             break;
         }
         {
-            uint _e329 = k;
-            uint _e331 = k;
-            uint _e334 = fin[min(uint(_e331), 7u)].light;
-            uint _e336 = k;
-            uint _e339 = fin[min(uint(_e336), 7u)].u;
-            uint _e341 = k;
-            uint _e344 = fin[min(uint(_e341), 7u)].light;
-            uint _e347 = asuint(lights.Load(12+_e344*64));
-            keys[min(uint(_e329), 7u)] = uint2(_e334, ((_e347 == LIGHT_TRIANGLE) ? _e339 : 0u));
-            uint _e352 = k;
-            uint _e354 = k;
-            float _e357 = fin[min(uint(_e354), 7u)].w;
-            held[min(uint(_e352), 7u)] = (_e357 > 0.0);
+            uint _e325 = k;
+            uint _e327 = k;
+            uint _e330 = fin[min(uint(_e327), 7u)].light;
+            uint _e332 = k;
+            uint _e335 = fin[min(uint(_e332), 7u)].u;
+            uint _e337 = k;
+            uint _e340 = fin[min(uint(_e337), 7u)].light;
+            uint _e343 = asuint(lights.Load(12+_e340*64));
+            keys[min(uint(_e325), 7u)] = uint2(_e330, ((_e343 == LIGHT_TRIANGLE) ? _e335 : 0u));
+            uint _e348 = k;
+            uint _e350 = k;
+            float _e353 = fin[min(uint(_e350), 7u)].w;
+            held[min(uint(_e348), 7u)] = (_e353 > 0.0);
         }
     }
-    uint2 _e363[8] = keys;
-    bool _e364[8] = held;
-    const uint _e365[8] = first_holders(_e363, _e364);
+    uint2 _e359[8] = keys;
+    bool _e360[8] = held;
+    const uint _e361[8] = first_holders(_e359, _e360);
     uint2 loop_bound_13 = uint2(4294967295u, 4294967295u);
     bool loop_init_11 = true;
     while(true) {
         if (all(loop_bound_13 == uint2(0u, 0u))) { break; }
         loop_bound_13 -= uint2(loop_bound_13.y == 0u, 1u);
         if (!loop_init_11) {
-            uint _e450 = k_1;
-            k_1 = (_e450 + 1u);
+            uint _e446 = k_1;
+            k_1 = (_e446 + 1u);
         }
         loop_init_11 = false;
-        uint _e369 = k_1;
-        if ((_e369 < K)) {
+        uint _e365 = k_1;
+        if ((_e365 < K)) {
         } else {
             break;
         }
         {
-            uint _e372 = k_1;
-            uint _e374 = k_1;
-            if ((_e365[min(uint(_e372), 7u)] != _e374)) {
+            uint _e368 = k_1;
+            uint _e370 = k_1;
+            if ((_e361[min(uint(_e368), 7u)] != _e370)) {
                 continue;
             }
             w = (0.0).xxx;
-            uint _e379 = k_1;
-            j = _e379;
+            uint _e375 = k_1;
+            j = _e375;
             uint2 loop_bound_14 = uint2(4294967295u, 4294967295u);
             bool loop_init_12 = true;
             while(true) {
                 if (all(loop_bound_14 == uint2(0u, 0u))) { break; }
                 loop_bound_14 -= uint2(loop_bound_14.y == 0u, 1u);
                 if (!loop_init_12) {
-                    uint _e399 = j;
-                    j = (_e399 + 1u);
+                    uint _e395 = j;
+                    j = (_e395 + 1u);
                 }
                 loop_init_12 = false;
-                uint _e381 = j;
-                if ((_e381 < K)) {
+                uint _e377 = j;
+                if ((_e377 < K)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e384 = j;
-                    uint _e386 = k_1;
-                    if ((_e365[min(uint(_e384), 7u)] == _e386)) {
-                        float3 _e388 = w;
+                    uint _e380 = j;
+                    uint _e382 = k_1;
+                    if ((_e361[min(uint(_e380), 7u)] == _e382)) {
+                        float3 _e384 = w;
+                        uint _e385 = j;
+                        float _e388 = fin[min(uint(_e385), 7u)].w;
                         uint _e389 = j;
-                        float _e392 = fin[min(uint(_e389), 7u)].w;
-                        uint _e393 = j;
-                        const float3 _e395 = slot_share(_e393, K);
-                        w = (_e388 + (_e392 * _e395));
+                        const float3 _e391 = slot_share(_e389, K);
+                        w = (_e384 + (_e388 * _e391));
                     }
                 }
             }
-            uint _e402 = k_1;
-            uint _e405 = fin[min(uint(_e402), 7u)].light;
-            GpuLight _e407 = ConstructGpuLight(asfloat(lights.Load3(_e405*64+0)), asuint(lights.Load(_e405*64+12)), asfloat(lights.Load3(_e405*64+16)), asfloat(lights.Load(_e405*64+28)), asfloat(lights.Load3(_e405*64+32)), asfloat(lights.Load(_e405*64+44)), asfloat(lights.Load3(_e405*64+48)), asuint(lights.Load(_e405*64+60)));
-            uint _e411 = k_1;
-            uint _e414 = fin[min(uint(_e411), 7u)].u;
-            const float _e415 = grid_coordinate(_e414);
-            uint _e416 = k_1;
-            uint _e419 = fin[min(uint(_e416), 7u)].u;
-            const float _e422 = grid_coordinate((_e419 << 16u));
-            const Connection _e424 = connect_record(_e407, x_17, n_15, n_15, UNRANGED, UNRANGED, 1.0, _e415, _e422, eps_3, true);
-            Material _e425 = m;
-            const Shaded _e426 = shade_connection(_e424, x_17, n_15, _e425);
-            Shaded _e427 = t;
-            float3 _e428 = w;
-            const Shaded _e429 = scaled(_e426, _e428);
-            const Shaded _e430 = add(_e427, _e429);
-            t = _e430;
-            uint _e431 = k_1;
-            j_1 = _e431;
+            uint _e398 = k_1;
+            uint _e401 = fin[min(uint(_e398), 7u)].light;
+            GpuLight _e403 = ConstructGpuLight(asfloat(lights.Load3(_e401*64+0)), asuint(lights.Load(_e401*64+12)), asfloat(lights.Load3(_e401*64+16)), asfloat(lights.Load(_e401*64+28)), asfloat(lights.Load3(_e401*64+32)), asfloat(lights.Load(_e401*64+44)), asfloat(lights.Load3(_e401*64+48)), asuint(lights.Load(_e401*64+60)));
+            uint _e407 = k_1;
+            uint _e410 = fin[min(uint(_e407), 7u)].u;
+            const float _e411 = grid_coordinate(_e410);
+            uint _e412 = k_1;
+            uint _e415 = fin[min(uint(_e412), 7u)].u;
+            const float _e418 = grid_coordinate((_e415 << 16u));
+            const Connection _e420 = connect_record(_e403, x_17, n_15, n_15, UNRANGED, UNRANGED, 1.0, _e411, _e418, eps_3, true);
+            Material _e421 = m;
+            const Shaded _e422 = shade_connection(_e420, x_17, n_15, _e421);
+            Shaded _e423 = t;
+            float3 _e424 = w;
+            const Shaded _e425 = scaled(_e422, _e424);
+            const Shaded _e426 = add(_e423, _e425);
+            t = _e426;
+            uint _e427 = k_1;
+            j_1 = _e427;
             uint2 loop_bound_15 = uint2(4294967295u, 4294967295u);
             bool loop_init_13 = true;
             while(true) {
                 if (all(loop_bound_15 == uint2(0u, 0u))) { break; }
                 loop_bound_15 -= uint2(loop_bound_15.y == 0u, 1u);
                 if (!loop_init_13) {
-                    uint _e447 = j_1;
-                    j_1 = (_e447 + 1u);
+                    uint _e443 = j_1;
+                    j_1 = (_e443 + 1u);
                 }
                 loop_init_13 = false;
-                uint _e433 = j_1;
-                if ((_e433 < K)) {
+                uint _e429 = j_1;
+                if ((_e429 < K)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e436 = j_1;
-                    uint _e438 = k_1;
-                    if ((_e365[min(uint(_e436), 7u)] == _e438)) {
-                        uint _e440 = j_1;
-                        const float3 _e442 = output_of(_e426);
-                        const float _e443 = resample_target(_e442);
-                        visible[min(uint(_e440), 7u)] = (_e443 > 0.0);
+                    uint _e432 = j_1;
+                    uint _e434 = k_1;
+                    if ((_e361[min(uint(_e432), 7u)] == _e434)) {
+                        uint _e436 = j_1;
+                        const float3 _e438 = output_of(_e422);
+                        const float _e439 = resample_target(_e438);
+                        visible[min(uint(_e436), 7u)] = (_e439 > 0.0);
                     }
                 }
             }
@@ -2085,45 +2091,45 @@ void main(uint3 gid : SV_DispatchThreadID)
         if (all(loop_bound_16 == uint2(0u, 0u))) { break; }
         loop_bound_16 -= uint2(loop_bound_16.y == 0u, 1u);
         if (!loop_init_14) {
-            uint _e491 = q_2;
-            q_2 = (_e491 + 1u);
+            uint _e487 = q_2;
+            q_2 = (_e487 + 1u);
         }
         loop_init_14 = false;
-        uint _e454 = q_2;
-        if ((_e454 < K)) {
+        uint _e450 = q_2;
+        if ((_e450 < K)) {
         } else {
             break;
         }
         {
-            uint _e459 = reuse.visibility;
-            if (!((_e459 == 0u))) {
-                uint _e465 = q_2;
-                bool _e467 = visible[min(uint(_e465), 7u)];
-                local_4 = _e467;
+            uint _e455 = reuse.visibility;
+            if (!((_e455 == 0u))) {
+                uint _e461 = q_2;
+                bool _e463 = visible[min(uint(_e461), 7u)];
+                local_4 = _e463;
             } else {
                 local_4 = true;
             }
             bool keep = local_4;
-            uint _e473 = q_2;
+            uint _e469 = q_2;
+            uint _e471 = q_2;
+            uint _e474 = kept[min(uint(_e471), 7u)].light;
             uint _e475 = q_2;
-            uint _e478 = kept[min(uint(_e475), 7u)].light;
+            uint _e478 = kept[min(uint(_e475), 7u)].u;
             uint _e479 = q_2;
-            uint _e482 = kept[min(uint(_e479), 7u)].u;
-            uint _e483 = q_2;
-            float _e486 = kept[min(uint(_e483), 7u)].w;
+            float _e482 = kept[min(uint(_e479), 7u)].w;
             {
-                ReuseSlot _value4 = ConstructReuseSlot(_e478, _e482, (keep ? _e486 : 0.0));
-                reuse_next.Store(_e473*12+48+pixel_1*144+0, asuint(_value4.light));
-                reuse_next.Store(_e473*12+48+pixel_1*144+4, asuint(_value4.u));
-                reuse_next.Store(_e473*12+48+pixel_1*144+8, asuint(_value4.w));
+                ReuseSlot _value4 = ConstructReuseSlot(_e474, _e478, (keep ? _e482 : 0.0));
+                reuse_next.Store(_e469*12+48+pixel_1*144+0, asuint(_value4.light));
+                reuse_next.Store(_e469*12+48+pixel_1*144+4, asuint(_value4.u));
+                reuse_next.Store(_e469*12+48+pixel_1*144+8, asuint(_value4.w));
             }
         }
     }
-    Material _e496 = m;
-    float _e499 = reuse.max_confidence;
-    const ReuseSurface _e501 = reuse_surface(x_17, n_15, _e496, min(confidence, _e499));
+    Material _e492 = m;
+    float _e495 = reuse.max_confidence;
+    const ReuseSurface _e497 = reuse_surface(x_17, n_15, _e492, min(confidence, _e495));
     {
-        ReuseSurface _value2 = _e501;
+        ReuseSurface _value2 = _e497;
         reuse_next.Store3(0+pixel_1*144+0, asuint(_value2.x));
         reuse_next.Store(0+pixel_1*144+12, asuint(_value2.m));
         reuse_next.Store3(0+pixel_1*144+16, asuint(_value2.n));
@@ -2133,9 +2139,9 @@ void main(uint3 gid : SV_DispatchThreadID)
         reuse_next.Store(0+pixel_1*144+40, asuint(_value2.pad1_));
         reuse_next.Store(0+pixel_1*144+44, asuint(_value2.pad2_));
     }
-    float3 _e504 = t.diffuse;
-    float3 _e506 = t.specular;
-    uint _e508 = count;
-    out_tex[texel_1] = float4((_e504 + _e506), float(_e508));
+    float3 _e500 = t.diffuse;
+    float3 _e502 = t.specular;
+    uint _e504 = count;
+    out_tex[texel_1] = float4((_e500 + _e502), float(_e504));
     return;
 }

@@ -523,9 +523,9 @@ float3 bevy_brdf(float3 base_2, float metallic_3, float r_3, float reflectance_1
     }
     const float _e15 = bevy_alpha(r_3);
     float n_v_3 = max(dot(n_3, v_1), 0.0001);
-    float3 h_1 = normalize((l + v_1));
-    float n_h = saturate(dot(n_3, h_1));
-    float l_h = saturate(dot(l, h_1));
+    float3 h_2 = normalize((l + v_1));
+    float n_h = saturate(dot(n_3, h_2));
+    float l_h = saturate(dot(l, h_2));
     float f90_d_3 = (0.5 + (((2.0 * _e15) * l_h) * l_h));
     const float3 _e35 = fresnel_schlick(float3(1.0, 1.0, 1.0), f90_d_3, n_l_1);
     const float3 _e41 = fresnel_schlick(float3(1.0, 1.0, 1.0), f90_d_3, n_v_3);
@@ -956,6 +956,17 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start, float3 x_5, float3 r_7, float4
     return BSH_NONE;
 }
 
+float next_threshold(float sum, inout uint h_1)
+{
+    uint _e2 = h_1;
+    const uint _e3 = pcg_hash(_e2);
+    h_1 = _e3;
+    uint _e4 = h_1;
+    const float _e5 = xi_from_bits(_e4);
+    const float _e6 = weighted_threshold(sum, _e5);
+    return _e6;
+}
+
 Connection connect_record(GpuLight l_3, float3 x_6, float3 n_4, float3 ng_1, float r2_2, float rt2_2, float w_res, float u1_2, float u2_2, float eps, bool trace_1)
 {
     Connection c_7 = (Connection)0;
@@ -1295,11 +1306,11 @@ void main(uint3 gid : SV_DispatchThreadID)
         if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         if (!loop_init_3) {
-            uint _e210 = b;
-            uint _e213 = asuint(bsh_nodes.Load(20+_e210*32));
-            float3 _e214 = r;
-            const uint _e215 = bsh_next_leaf_lobe(BSH, _e213, x_13, _e214, _e87);
-            b = _e215;
+            uint _e206 = b;
+            uint _e209 = asuint(bsh_nodes.Load(20+_e206*32));
+            float3 _e210 = r;
+            const uint _e211 = bsh_next_leaf_lobe(BSH, _e209, x_13, _e210, _e87);
+            b = _e211;
         }
         loop_init_3 = false;
         uint _e137 = b;
@@ -1338,8 +1349,8 @@ void main(uint3 gid : SV_DispatchThreadID)
                     if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
                     loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
                     if (!loop_init_4) {
-                        uint _e206 = q;
-                        q = (_e206 + 1u);
+                        uint _e202 = q;
+                        q = (_e202 + 1u);
                     }
                     loop_init_4 = false;
                     uint _e172 = q;
@@ -1368,14 +1379,9 @@ void main(uint3 gid : SV_DispatchThreadID)
                             slot_u[min(uint(_e194), 7u)] = u_4;
                             uint _e196 = q;
                             slot_p[min(uint(_e196), 7u)] = _e177;
-                            uint _e198 = hc;
-                            const uint _e199 = pcg_hash(_e198);
-                            hc = _e199;
-                            uint _e200 = q;
-                            uint _e202 = hc;
-                            const float _e203 = xi_from_bits(_e202);
-                            const float _e204 = weighted_threshold(_e181, _e203);
-                            threshold[min(uint(_e200), 7u)] = _e204;
+                            uint _e198 = q;
+                            const float _e200 = next_threshold(_e181, hc);
+                            threshold[min(uint(_e198), 7u)] = _e200;
                         }
                     }
                 }
@@ -1388,109 +1394,109 @@ void main(uint3 gid : SV_DispatchThreadID)
         if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
         loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
         if (!loop_init_5) {
-            uint _e238 = k;
-            k = (_e238 + 1u);
+            uint _e234 = k;
+            k = (_e234 + 1u);
         }
         loop_init_5 = false;
-        uint _e220 = k;
-        if ((_e220 < K)) {
+        uint _e216 = k;
+        if ((_e216 < K)) {
         } else {
             break;
         }
         {
-            uint _e223 = k;
-            uint _e225 = k;
-            uint _e227 = slot_light[min(uint(_e225), 7u)];
-            keys[min(uint(_e223), 7u)] = uint2(_e227, 0u);
-            uint _e230 = k;
-            uint _e232 = k;
-            float _e234 = slot_p[min(uint(_e232), 7u)];
-            held[min(uint(_e230), 7u)] = (_e234 > 0.0);
+            uint _e219 = k;
+            uint _e221 = k;
+            uint _e223 = slot_light[min(uint(_e221), 7u)];
+            keys[min(uint(_e219), 7u)] = uint2(_e223, 0u);
+            uint _e226 = k;
+            uint _e228 = k;
+            float _e230 = slot_p[min(uint(_e228), 7u)];
+            held[min(uint(_e226), 7u)] = (_e230 > 0.0);
         }
     }
-    uint2 _e240[8] = keys;
-    bool _e241[8] = held;
-    const uint _e242[8] = first_holders(_e240, _e241);
+    uint2 _e236[8] = keys;
+    bool _e237[8] = held;
+    const uint _e238[8] = first_holders(_e236, _e237);
     uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
     bool loop_init_6 = true;
     while(true) {
         if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
         loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
         if (!loop_init_6) {
-            uint _e305 = k_1;
-            k_1 = (_e305 + 1u);
+            uint _e301 = k_1;
+            k_1 = (_e301 + 1u);
         }
         loop_init_6 = false;
-        uint _e245 = k_1;
-        if ((_e245 < K)) {
+        uint _e241 = k_1;
+        if ((_e241 < K)) {
         } else {
             break;
         }
         {
             w = (0.0).xxx;
+            uint _e247 = k_1;
+            uint _e249 = k_1;
+            bool first_1 = (_e238[min(uint(_e247), 7u)] == _e249);
             uint _e251 = k_1;
-            uint _e253 = k_1;
-            bool first_1 = (_e242[min(uint(_e251), 7u)] == _e253);
-            uint _e255 = k_1;
-            j = _e255;
+            j = _e251;
             uint2 loop_bound_9 = uint2(4294967295u, 4294967295u);
             bool loop_init_7 = true;
             while(true) {
                 if (all(loop_bound_9 == uint2(0u, 0u))) { break; }
                 loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
                 if (!loop_init_7) {
-                    uint _e283 = j;
-                    j = (_e283 + 1u);
+                    uint _e279 = j;
+                    j = (_e279 + 1u);
                 }
                 loop_init_7 = false;
-                uint _e257 = j;
-                if ((_e257 < K)) {
+                uint _e253 = j;
+                if ((_e253 < K)) {
                     local_3 = first_1;
                 } else {
                     local_3 = false;
                 }
-                bool _e263 = local_3;
-                if (_e263) {
+                bool _e259 = local_3;
+                if (_e259) {
                 } else {
                     break;
                 }
                 {
-                    uint _e264 = j;
-                    uint _e266 = k_1;
-                    if ((_e242[min(uint(_e264), 7u)] == _e266)) {
-                        float3 _e268 = w;
-                        float3 _e269 = total;
-                        uint _e270 = j;
-                        const float _e272 = slot_target(_e269, _e270, K);
+                    uint _e260 = j;
+                    uint _e262 = k_1;
+                    if ((_e238[min(uint(_e260), 7u)] == _e262)) {
+                        float3 _e264 = w;
+                        float3 _e265 = total;
+                        uint _e266 = j;
+                        const float _e268 = slot_target(_e265, _e266, K);
+                        uint _e269 = j;
+                        float _e271 = slot_p[min(uint(_e269), 7u)];
                         uint _e273 = j;
-                        float _e275 = slot_p[min(uint(_e273), 7u)];
-                        uint _e277 = j;
-                        const float3 _e279 = slot_share(_e277, K);
-                        w = (_e268 + ((_e272 / _e275) * _e279));
+                        const float3 _e275 = slot_share(_e273, K);
+                        w = (_e264 + ((_e268 / _e271) * _e275));
                     }
                 }
             }
             if (first_1) {
-                Shaded _e285 = t;
-                uint _e286 = k_1;
-                uint _e288 = slot_light[min(uint(_e286), 7u)];
-                float3 _e289 = r;
-                Material _e290 = m;
+                Shaded _e281 = t;
+                uint _e282 = k_1;
+                uint _e284 = slot_light[min(uint(_e282), 7u)];
+                float3 _e285 = r;
+                Material _e286 = m;
+                uint _e288 = k_1;
+                float _e291 = slot_u[min(uint(_e288), 7u)].x;
                 uint _e292 = k_1;
-                float _e295 = slot_u[min(uint(_e292), 7u)].x;
-                uint _e296 = k_1;
-                float _e299 = slot_u[min(uint(_e296), 7u)].y;
-                const Shaded _e300 = shade_pick(_e288, x_13, n_11, _e289, _e87, _e290, 1.0, _e295, _e299, eps_4);
-                float3 _e301 = w;
-                const Shaded _e302 = scaled(_e300, _e301);
-                const Shaded _e303 = add(_e285, _e302);
-                t = _e303;
+                float _e295 = slot_u[min(uint(_e292), 7u)].y;
+                const Shaded _e296 = shade_pick(_e284, x_13, n_11, _e285, _e87, _e286, 1.0, _e291, _e295, eps_4);
+                float3 _e297 = w;
+                const Shaded _e298 = scaled(_e296, _e297);
+                const Shaded _e299 = add(_e281, _e298);
+                t = _e299;
             }
         }
     }
-    float3 _e309 = t.diffuse;
-    float3 _e311 = t.specular;
-    uint _e313 = count;
-    out_tex[texel_1] = float4((_e309 + _e311), float(_e313));
+    float3 _e305 = t.diffuse;
+    float3 _e307 = t.specular;
+    uint _e309 = count;
+    out_tex[texel_1] = float4((_e305 + _e307), float(_e309));
     return;
 }

@@ -393,12 +393,12 @@ float3 diffuse_brdf(float3 base_1, float metallic_1, float3 f0_d_1, float f90_d_
 
 float half_cosine(float3 v, float3 l)
 {
-    float3 h_2 = (v + l);
-    float len2_ = dot(h_2, h_2);
+    float3 h_3 = (v + l);
+    float len2_ = dot(h_3, h_3);
     if ((len2_ <= 0.0)) {
         return 0.0;
     }
-    return saturate((dot(v, h_2) / sqrt(len2_)));
+    return saturate((dot(v, h_3) / sqrt(len2_)));
 }
 
 float3 specular_brdf(float3 base_2, float metallic_2, float3 f0_d_2, float f90_d_2, float alpha_3, float3 n_2, float3 v_1, float3 l_1)
@@ -418,10 +418,10 @@ float3 specular_brdf(float3 base_2, float metallic_2, float3 f0_d_2, float f90_d
     }
     float3 hs = (v_1 + l_1);
     float inv = (1.0 / sqrt(dot(hs, hs)));
-    float3 h_3 = (hs * inv);
-    float3 c_8 = cross(n_2, h_3);
-    const float _e32 = ggx_d(dot(n_2, h_3), dot(c_8, c_8), alpha_3);
-    const float3 _e34 = specular_fresnel(base_2, metallic_2, f0_d_2, f90_d_2, dot(v_1, h_3));
+    float3 h_4 = (hs * inv);
+    float3 c_8 = cross(n_2, h_4);
+    const float _e32 = ggx_d(dot(n_2, h_4), dot(c_8, c_8), alpha_3);
+    const float3 _e34 = specular_fresnel(base_2, metallic_2, f0_d_2, f90_d_2, dot(v_1, h_4));
     const float _e35 = smith_visibility(n_l_1, n_v_2, alpha_3);
     return (_e34 * (_e32 * _e35));
 }
@@ -1037,6 +1037,17 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start, float3 x_6, float3 r_7, float4
     return BSH_NONE;
 }
 
+float next_threshold(float sum, inout uint h_1)
+{
+    uint _e2 = h_1;
+    const uint _e3 = pcg_hash(_e2);
+    h_1 = _e3;
+    uint _e4 = h_1;
+    const float _e5 = xi_from_bits(_e4);
+    const float _e6 = weighted_threshold(sum, _e5);
+    return _e6;
+}
+
 Connection connect_record(GpuLight l_4, float3 x_7, float3 n_7, float3 ng_1, float r2_3, float rt2_4, float w_res, float u1_2, float u2_2, float eps, bool trace_1)
 {
     Connection c_5 = (Connection)0;
@@ -1136,14 +1147,14 @@ float light_weight(uint li_2, float3 x_10, float3 n_9, float3 r_9, float4 lobe_7
 WeightedPicks bsh_weighted_collect(float3 x_11, float3 n_10, float3 r_10, float4 lobe_8, float4 rl_7, uint h0_)
 {
     WeightedPicks picks = (WeightedPicks)0;
-    uint h_1 = (uint)0;
+    uint h_2 = (uint)0;
     float threshold[8] = (float[8])0;
     uint b_6 = (uint)0;
     uint s_1 = (uint)0;
 
     picks.w_sum = 0.0;
     picks.n = 0u;
-    h_1 = h0_;
+    h_2 = h0_;
     const uint _e15 = bsh_first(BSH);
     const uint _e16 = bsh_next_leaf_lobe(BSH, _e15, x_11, r_10, rl_7);
     b_6 = _e16;
@@ -1153,10 +1164,10 @@ WeightedPicks bsh_weighted_collect(float3 x_11, float3 n_10, float3 r_10, float4
         if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
         loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e67 = b_6;
-            uint _e70 = asuint(bsh_nodes.Load(20+_e67*32));
-            const uint _e71 = bsh_next_leaf_lobe(BSH, _e70, x_11, r_10, rl_7);
-            b_6 = _e71;
+            uint _e63 = b_6;
+            uint _e66 = asuint(bsh_nodes.Load(20+_e63*32));
+            const uint _e67 = bsh_next_leaf_lobe(BSH, _e66, x_11, r_10, rl_7);
+            b_6 = _e67;
         }
         loop_init_1 = false;
         uint _e18 = b_6;
@@ -1180,8 +1191,8 @@ WeightedPicks bsh_weighted_collect(float3 x_11, float3 n_10, float3 r_10, float4
                     if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
                     loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
                     if (!loop_init_2) {
-                        uint _e63 = s_1;
-                        s_1 = (_e63 + 1u);
+                        uint _e59 = s_1;
+                        s_1 = (_e59 + 1u);
                     }
                     loop_init_2 = false;
                     uint _e38 = s_1;
@@ -1198,25 +1209,20 @@ WeightedPicks bsh_weighted_collect(float3 x_11, float3 n_10, float3 r_10, float4
                             picks.light[min(uint(_e48), 7u)] = li_5;
                             uint _e51 = s_1;
                             picks.w[min(uint(_e51), 7u)] = _e30;
-                            uint _e53 = h_1;
-                            const uint _e54 = pcg_hash(_e53);
-                            h_1 = _e54;
-                            uint _e55 = s_1;
-                            float _e58 = picks.w_sum;
-                            uint _e59 = h_1;
-                            const float _e60 = xi_from_bits(_e59);
-                            const float _e61 = weighted_threshold(_e58, _e60);
-                            threshold[min(uint(_e55), 7u)] = _e61;
+                            uint _e53 = s_1;
+                            float _e56 = picks.w_sum;
+                            const float _e57 = next_threshold(_e56, h_2);
+                            threshold[min(uint(_e53), 7u)] = _e57;
                         }
                     }
                 }
             }
         }
     }
-    uint _e73 = h_1;
-    picks.h = _e73;
-    WeightedPicks _e74 = picks;
-    const WeightedPicks weightedpicks = _e74;
+    uint _e69 = h_2;
+    picks.h = _e69;
+    WeightedPicks _e70 = picks;
+    const WeightedPicks weightedpicks = _e70;
     return weightedpicks;
 }
 

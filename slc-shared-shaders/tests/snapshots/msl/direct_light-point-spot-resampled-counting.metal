@@ -97,16 +97,16 @@ struct Material {
     float reflectance;
     char _pad6[12];
 };
-struct type_19 {
+struct type_20 {
     metal::uint2 inner[8];
 };
-struct type_20 {
+struct type_21 {
     bool inner[8];
 };
-struct type_22 {
+struct type_23 {
     metal::float2 inner[8];
 };
-struct type_23 {
+struct type_24 {
     float inner[8];
 };
 constant uint LIGHT_POINT = 0u;
@@ -871,6 +871,19 @@ uint bsh_next_leaf_lobe(
     return BSH_NONE;
 }
 
+float next_threshold(
+    float sum,
+    thread uint& h_1
+) {
+    uint _e2 = h_1;
+    uint _e3 = pcg_hash(_e2);
+    h_1 = _e3;
+    uint _e4 = h_1;
+    float _e5 = xi_from_bits(_e4);
+    float _e6 = weighted_threshold(sum, _e5);
+    return _e6;
+}
+
 Connection connect_record(
     GpuLight l_2,
     metal::float3 x_6,
@@ -1057,8 +1070,8 @@ Shaded scaled(
 }
 
 type_16 first_holders(
-    type_19 keys_1,
-    type_20 held_1
+    type_20 keys_1,
+    type_21 held_1
 ) {
     type_16 first = {};
     uint k_4 = 0u;
@@ -1167,17 +1180,17 @@ kernel void main_(
     uint h = {};
     Shaded t = Shaded {metal::float3(0.0), metal::float3(0.0), metal::float3(0.0)};
     type_16 slot_light = {};
-    type_22 slot_u = {};
-    type_23 slot_p = {};
+    type_23 slot_u = {};
+    type_24 slot_p = {};
     metal::float3 total = metal::float3(0.0);
     uint count = 0u;
     uint hc = {};
-    type_23 threshold = {};
+    type_24 threshold = {};
     uint b = {};
     uint q = {};
     bool local_2 = {};
-    type_19 keys = {};
-    type_20 held = {};
+    type_20 keys = {};
+    type_21 held = {};
     uint k = 0u;
     uint k_1 = 0u;
     metal::float3 w = {};
@@ -1234,11 +1247,11 @@ kernel void main_(
         if (metal::all(loop_bound_5 == uint2(0u))) { break; }
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         if (!loop_init_3) {
-            uint _e181 = b;
-            uint _e184 = bsh_nodes[_e181].next;
-            metal::float3 _e185 = r;
-            uint _e186 = bsh_next_leaf_lobe(BSH, _e184, x_11, _e185, _e54, bsh_nodes, _buffer_sizes);
-            b = _e186;
+            uint _e177 = b;
+            uint _e180 = bsh_nodes[_e177].next;
+            metal::float3 _e181 = r;
+            uint _e182 = bsh_next_leaf_lobe(BSH, _e180, x_11, _e181, _e54, bsh_nodes, _buffer_sizes);
+            b = _e182;
         }
         loop_init_3 = false;
         uint _e104 = b;
@@ -1279,8 +1292,8 @@ kernel void main_(
                     if (metal::all(loop_bound_6 == uint2(0u))) { break; }
                     loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
                     if (!loop_init_4) {
-                        uint _e177 = q;
-                        q = _e177 + 1u;
+                        uint _e173 = q;
+                        q = _e173 + 1u;
                     }
                     loop_init_4 = false;
                     uint _e143 = q;
@@ -1309,14 +1322,9 @@ kernel void main_(
                             slot_u.inner[_e165] = u_4;
                             uint _e167 = q;
                             slot_p.inner[_e167] = _e148;
-                            uint _e169 = hc;
-                            uint _e170 = pcg_hash(_e169);
-                            hc = _e170;
-                            uint _e171 = q;
-                            uint _e173 = hc;
-                            float _e174 = xi_from_bits(_e173);
-                            float _e175 = weighted_threshold(_e152, _e174);
-                            threshold.inner[_e171] = _e175;
+                            uint _e169 = q;
+                            float _e171 = next_threshold(_e152, hc);
+                            threshold.inner[_e169] = _e171;
                         }
                     }
                 }
@@ -1329,117 +1337,117 @@ kernel void main_(
         if (metal::all(loop_bound_7 == uint2(0u))) { break; }
         loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
         if (!loop_init_5) {
-            uint _e209 = k;
-            k = _e209 + 1u;
+            uint _e205 = k;
+            k = _e205 + 1u;
         }
         loop_init_5 = false;
-        uint _e191 = k;
-        if (_e191 < K) {
+        uint _e187 = k;
+        if (_e187 < K) {
         } else {
             break;
         }
         {
-            uint _e194 = k;
-            uint _e196 = k;
-            uint _e198 = slot_light.inner[_e196];
-            keys.inner[_e194] = metal::uint2(_e198, 0u);
-            uint _e201 = k;
-            uint _e203 = k;
-            float _e205 = slot_p.inner[_e203];
-            held.inner[_e201] = _e205 > 0.0;
+            uint _e190 = k;
+            uint _e192 = k;
+            uint _e194 = slot_light.inner[_e192];
+            keys.inner[_e190] = metal::uint2(_e194, 0u);
+            uint _e197 = k;
+            uint _e199 = k;
+            float _e201 = slot_p.inner[_e199];
+            held.inner[_e197] = _e201 > 0.0;
         }
     }
-    type_19 _e211 = keys;
-    type_20 _e212 = held;
-    type_16 _e213 = first_holders(_e211, _e212);
+    type_20 _e207 = keys;
+    type_21 _e208 = held;
+    type_16 _e209 = first_holders(_e207, _e208);
     uint2 loop_bound_8 = uint2(4294967295u);
     bool loop_init_6 = true;
     while(true) {
         if (metal::all(loop_bound_8 == uint2(0u))) { break; }
         loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
         if (!loop_init_6) {
-            uint _e276 = k_1;
-            k_1 = _e276 + 1u;
+            uint _e272 = k_1;
+            k_1 = _e272 + 1u;
         }
         loop_init_6 = false;
-        uint _e216 = k_1;
-        if (_e216 < K) {
+        uint _e212 = k_1;
+        if (_e212 < K) {
         } else {
             break;
         }
         {
             w = metal::float3(0.0);
+            uint _e218 = k_1;
+            uint _e220 = k_1;
+            bool first_1 = _e209.inner[_e218] == _e220;
             uint _e222 = k_1;
-            uint _e224 = k_1;
-            bool first_1 = _e213.inner[_e222] == _e224;
-            uint _e226 = k_1;
-            j = _e226;
+            j = _e222;
             uint2 loop_bound_9 = uint2(4294967295u);
             bool loop_init_7 = true;
             while(true) {
                 if (metal::all(loop_bound_9 == uint2(0u))) { break; }
                 loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
                 if (!loop_init_7) {
-                    uint _e254 = j;
-                    j = _e254 + 1u;
+                    uint _e250 = j;
+                    j = _e250 + 1u;
                 }
                 loop_init_7 = false;
-                uint _e228 = j;
-                if (_e228 < K) {
+                uint _e224 = j;
+                if (_e224 < K) {
                     local_3 = first_1;
                 } else {
                     local_3 = false;
                 }
-                bool _e234 = local_3;
-                if (_e234) {
+                bool _e230 = local_3;
+                if (_e230) {
                 } else {
                     break;
                 }
                 {
-                    uint _e235 = j;
-                    uint _e237 = k_1;
-                    if (_e213.inner[_e235] == _e237) {
-                        metal::float3 _e239 = w;
-                        metal::float3 _e240 = total;
-                        uint _e241 = j;
-                        float _e243 = slot_target(_e240, _e241, K);
+                    uint _e231 = j;
+                    uint _e233 = k_1;
+                    if (_e209.inner[_e231] == _e233) {
+                        metal::float3 _e235 = w;
+                        metal::float3 _e236 = total;
+                        uint _e237 = j;
+                        float _e239 = slot_target(_e236, _e237, K);
+                        uint _e240 = j;
+                        float _e242 = slot_p.inner[_e240];
                         uint _e244 = j;
-                        float _e246 = slot_p.inner[_e244];
-                        uint _e248 = j;
-                        metal::float3 _e250 = slot_share(_e248, K);
-                        w = _e239 + ((_e243 / _e246) * _e250);
+                        metal::float3 _e246 = slot_share(_e244, K);
+                        w = _e235 + ((_e239 / _e242) * _e246);
                     }
                 }
             }
             if (first_1) {
-                Shaded _e256 = t;
-                uint _e257 = k_1;
-                uint _e259 = slot_light.inner[_e257];
-                metal::float3 _e260 = r;
-                Material _e261 = m;
+                Shaded _e252 = t;
+                uint _e253 = k_1;
+                uint _e255 = slot_light.inner[_e253];
+                metal::float3 _e256 = r;
+                Material _e257 = m;
+                uint _e259 = k_1;
+                float _e262 = slot_u.inner[_e259].x;
                 uint _e263 = k_1;
-                float _e266 = slot_u.inner[_e263].x;
-                uint _e267 = k_1;
-                float _e270 = slot_u.inner[_e267].y;
-                Shaded _e271 = shade_pick(_e259, x_11, n_8, _e260, _e54, _e261, 1.0, _e266, _e270, eps_4, rays_cast, nodes_visited, geo_nodes, geo_tris, lights, rt2_3, r2_3, _buffer_sizes);
-                metal::float3 _e272 = w;
-                Shaded _e273 = scaled(_e271, _e272);
-                Shaded _e274 = add(_e256, _e273);
-                t = _e274;
+                float _e266 = slot_u.inner[_e263].y;
+                Shaded _e267 = shade_pick(_e255, x_11, n_8, _e256, _e54, _e257, 1.0, _e262, _e266, eps_4, rays_cast, nodes_visited, geo_nodes, geo_tris, lights, rt2_3, r2_3, _buffer_sizes);
+                metal::float3 _e268 = w;
+                Shaded _e269 = scaled(_e267, _e268);
+                Shaded _e270 = add(_e252, _e269);
+                t = _e270;
             }
         }
     }
-    metal::float3 _e280 = t.e;
-    uint _e281 = count;
-    out_tex.write(metal::float4(_e280, static_cast<float>(_e281)), metal::uint2(texel_1));
+    metal::float3 _e276 = t.e;
+    uint _e277 = count;
+    out_tex.write(metal::float4(_e276, static_cast<float>(_e277)), metal::uint2(texel_1));
     counter_add(DIRECT_COUNT_PIXELS, 1u, counters, _buffer_sizes);
-    uint _e287 = count;
-    counter_add(DIRECT_COUNT_CANDIDATES, _e287, counters, _buffer_sizes);
-    uint _e290 = evaluations;
-    counter_add(DIRECT_COUNT_EVALUATIONS, _e290, counters, _buffer_sizes);
-    uint _e293 = rays_cast;
-    counter_add(DIRECT_COUNT_RAYS, _e293, counters, _buffer_sizes);
-    uint _e296 = nodes_visited;
-    counter_add(DIRECT_COUNT_NODES, _e296, counters, _buffer_sizes);
+    uint _e283 = count;
+    counter_add(DIRECT_COUNT_CANDIDATES, _e283, counters, _buffer_sizes);
+    uint _e286 = evaluations;
+    counter_add(DIRECT_COUNT_EVALUATIONS, _e286, counters, _buffer_sizes);
+    uint _e289 = rays_cast;
+    counter_add(DIRECT_COUNT_RAYS, _e289, counters, _buffer_sizes);
+    uint _e292 = nodes_visited;
+    counter_add(DIRECT_COUNT_NODES, _e292, counters, _buffer_sizes);
     return;
 }

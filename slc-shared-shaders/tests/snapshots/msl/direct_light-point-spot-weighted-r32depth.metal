@@ -92,12 +92,12 @@ struct Connection {
     metal::packed_float3 y;
     float cos_x;
 };
-struct type_15 {
+struct type_16 {
     float inner[8];
 };
 struct WeightedPicks {
     type_14 light;
-    type_15 w;
+    type_16 w;
     float w_sum;
     uint n;
     uint h;
@@ -117,10 +117,10 @@ struct Material {
     float reflectance;
     char _pad6[12];
 };
-struct type_18 {
+struct type_19 {
     metal::uint2 inner[8];
 };
-struct type_19 {
+struct type_20 {
     bool inner[8];
 };
 constant uint LIGHT_POINT = 0u;
@@ -1037,6 +1037,19 @@ uint bsh_next_leaf_lobe(
     return BSH_NONE;
 }
 
+float next_threshold(
+    float sum,
+    thread uint& h_1
+) {
+    uint _e2 = h_1;
+    uint _e3 = pcg_hash(_e2);
+    h_1 = _e3;
+    uint _e4 = h_1;
+    float _e5 = xi_from_bits(_e4);
+    float _e6 = weighted_threshold(sum, _e5);
+    return _e6;
+}
+
 Connection connect_record(
     GpuLight l_2,
     metal::float3 x_7,
@@ -1161,13 +1174,13 @@ WeightedPicks bsh_weighted_collect(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     WeightedPicks picks = {};
-    uint h_1 = {};
-    type_15 threshold = {};
+    uint h_2 = {};
+    type_16 threshold = {};
     uint b_4 = {};
     uint s_1 = {};
     picks.w_sum = 0.0;
     picks.n = 0u;
-    h_1 = h0_;
+    h_2 = h0_;
     uint _e15 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
     uint _e16 = bsh_next_leaf_lobe(BSH, _e15, x_11, r_10, rl_7, bsh_nodes, _buffer_sizes);
     b_4 = _e16;
@@ -1177,10 +1190,10 @@ WeightedPicks bsh_weighted_collect(
         if (metal::all(loop_bound_3 == uint2(0u))) { break; }
         loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e67 = b_4;
-            uint _e70 = bsh_nodes[_e67].next;
-            uint _e71 = bsh_next_leaf_lobe(BSH, _e70, x_11, r_10, rl_7, bsh_nodes, _buffer_sizes);
-            b_4 = _e71;
+            uint _e63 = b_4;
+            uint _e66 = bsh_nodes[_e63].next;
+            uint _e67 = bsh_next_leaf_lobe(BSH, _e66, x_11, r_10, rl_7, bsh_nodes, _buffer_sizes);
+            b_4 = _e67;
         }
         loop_init_1 = false;
         uint _e18 = b_4;
@@ -1204,8 +1217,8 @@ WeightedPicks bsh_weighted_collect(
                     if (metal::all(loop_bound_4 == uint2(0u))) { break; }
                     loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
                     if (!loop_init_2) {
-                        uint _e63 = s_1;
-                        s_1 = _e63 + 1u;
+                        uint _e59 = s_1;
+                        s_1 = _e59 + 1u;
                     }
                     loop_init_2 = false;
                     uint _e38 = s_1;
@@ -1222,25 +1235,20 @@ WeightedPicks bsh_weighted_collect(
                             picks.light.inner[_e48] = li_5;
                             uint _e51 = s_1;
                             picks.w.inner[_e51] = _e30;
-                            uint _e53 = h_1;
-                            uint _e54 = pcg_hash(_e53);
-                            h_1 = _e54;
-                            uint _e55 = s_1;
-                            float _e58 = picks.w_sum;
-                            uint _e59 = h_1;
-                            float _e60 = xi_from_bits(_e59);
-                            float _e61 = weighted_threshold(_e58, _e60);
-                            threshold.inner[_e55] = _e61;
+                            uint _e53 = s_1;
+                            float _e56 = picks.w_sum;
+                            float _e57 = next_threshold(_e56, h_2);
+                            threshold.inner[_e53] = _e57;
                         }
                     }
                 }
             }
         }
     }
-    uint _e73 = h_1;
-    picks.h = _e73;
-    WeightedPicks _e74 = picks;
-    return _e74;
+    uint _e69 = h_2;
+    picks.h = _e69;
+    WeightedPicks _e70 = picks;
+    return _e70;
 }
 
 metal::float4 unproject_pixel(
@@ -1367,8 +1375,8 @@ Shaded add(
 }
 
 type_14 first_holders(
-    type_18 keys_1,
-    type_19 held_1
+    type_19 keys_1,
+    type_20 held_1
 ) {
     type_14 first = {};
     uint k_3 = 0u;
@@ -1467,8 +1475,8 @@ kernel void main_(
     metal::float3 r = {};
     uint h = {};
     Shaded t = Shaded {metal::float3(0.0), metal::float3(0.0), metal::float3(0.0)};
-    type_18 keys = {};
-    type_19 held = {};
+    type_19 keys = {};
+    type_20 held = {};
     uint k = 0u;
     uint k_1 = 0u;
     uint copies = {};
@@ -1544,8 +1552,8 @@ kernel void main_(
                 held.inner[_e121] = true;
             }
         }
-        type_18 _e127 = keys;
-        type_19 _e128 = held;
+        type_19 _e127 = keys;
+        type_20 _e128 = held;
         type_14 _e129 = first_holders(_e127, _e128);
         uint2 loop_bound_8 = uint2(4294967295u);
         bool loop_init_6 = true;

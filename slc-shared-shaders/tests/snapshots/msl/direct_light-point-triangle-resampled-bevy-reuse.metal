@@ -145,10 +145,10 @@ struct Material {
     float reflectance;
     char _pad6[12];
 };
-struct type_20 {
+struct type_21 {
     metal::uint2 inner[8];
 };
-struct type_21 {
+struct type_22 {
     bool inner[8];
 };
 struct Domain {
@@ -161,7 +161,7 @@ struct Domain {
     bool temporal;
     char _pad6[11];
 };
-struct type_22 {
+struct type_23 {
     Domain inner[3];
 };
 struct type_26 {
@@ -733,9 +733,9 @@ metal::float3 bevy_brdf(
     }
     float _e15 = bevy_alpha(r_4);
     float n_v_3 = metal::max(metal::dot(n_3, v_1), 0.0001);
-    metal::float3 h_2 = metal::normalize(l + v_1);
-    float n_h = metal::saturate(metal::dot(n_3, h_2));
-    float l_h = metal::saturate(metal::dot(l, h_2));
+    metal::float3 h_3 = metal::normalize(l + v_1);
+    float n_h = metal::saturate(metal::dot(n_3, h_3));
+    float l_h = metal::saturate(metal::dot(l, h_3));
     float f90_d_3 = 0.5 + (((2.0 * _e15) * l_h) * l_h);
     metal::float3 _e35 = fresnel_schlick(metal::float3(1.0, 1.0, 1.0), f90_d_3, n_l_1);
     metal::float3 _e41 = fresnel_schlick(metal::float3(1.0, 1.0, 1.0), f90_d_3, n_v_3);
@@ -1230,6 +1230,19 @@ uint bsh_next_leaf_lobe(
     return BSH_NONE;
 }
 
+float next_threshold(
+    float sum,
+    thread uint& h_1
+) {
+    uint _e2 = h_1;
+    uint _e3 = pcg_hash(_e2);
+    h_1 = _e3;
+    uint _e4 = h_1;
+    float _e5 = xi_from_bits(_e4);
+    float _e6 = weighted_threshold(sum, _e5);
+    return _e6;
+}
+
 Connection connect_record(
     GpuLight l_3,
     metal::float3 x_6,
@@ -1401,8 +1414,8 @@ Shaded scaled(
 }
 
 type_17 first_holders(
-    type_20 keys_1,
-    type_21 held_1
+    type_21 keys_1,
+    type_22 held_1
 ) {
     type_17 first = {};
     uint k_4 = 0u;
@@ -1530,8 +1543,8 @@ uint reuse_domains(
     metal::float3 x_13,
     metal::float3 n_11,
     float d_6,
-    uint h_1,
-    thread type_22& doms_1,
+    uint h_2,
+    thread type_23& doms_1,
     constant ViewParams& view,
     constant ReuseParams& reuse,
     device type_16 const& reuse_prev,
@@ -1563,7 +1576,7 @@ uint reuse_domains(
     if (_e33.z <= 0.0) {
         return 0u;
     }
-    hr = h_1;
+    hr = h_2;
     uint2 loop_bound_5 = uint2(4294967295u);
     bool loop_init_3 = true;
     while(true) {
@@ -1698,7 +1711,7 @@ ReuseSlot gris_combine(
     metal::float3 x_14,
     metal::float3 n_12,
     Material m_5,
-    thread type_22& doms_2,
+    thread type_23& doms_2,
     thread uint& hs_1,
     device type_7 const& geo_nodes,
     device type_8 const& geo_tris,
@@ -1892,16 +1905,16 @@ kernel void main_(
     uint b = {};
     uint q = {};
     bool local_2 = {};
-    type_22 doms = {};
+    type_23 doms = {};
     bool local_3 = {};
     uint hs = {};
     type_15 kept = {};
     type_15 fin = {};
     uint q_1 = 0u;
-    type_20 keys = {};
-    type_21 held = {};
+    type_21 keys = {};
+    type_22 held = {};
     uint k = 0u;
-    type_21 visible = {};
+    type_22 visible = {};
     uint k_1 = 0u;
     metal::float3 w = {};
     uint j = {};
@@ -1976,11 +1989,11 @@ kernel void main_(
         if (metal::all(loop_bound_9 == uint2(0u))) { break; }
         loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
         if (!loop_init_7) {
-            uint _e227 = b;
-            uint _e230 = bsh_nodes[_e227].next;
-            metal::float3 _e231 = r;
-            uint _e232 = bsh_next_leaf_lobe(BSH, _e230, x_17, _e231, _e99, bsh_nodes, _buffer_sizes);
-            b = _e232;
+            uint _e223 = b;
+            uint _e226 = bsh_nodes[_e223].next;
+            metal::float3 _e227 = r;
+            uint _e228 = bsh_next_leaf_lobe(BSH, _e226, x_17, _e227, _e99, bsh_nodes, _buffer_sizes);
+            b = _e228;
         }
         loop_init_7 = false;
         uint _e150 = b;
@@ -2021,8 +2034,8 @@ kernel void main_(
                     if (metal::all(loop_bound_10 == uint2(0u))) { break; }
                     loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
                     if (!loop_init_8) {
-                        uint _e223 = q;
-                        q = _e223 + 1u;
+                        uint _e219 = q;
+                        q = _e219 + 1u;
                     }
                     loop_init_8 = false;
                     uint _e187 = q;
@@ -2053,79 +2066,74 @@ kernel void main_(
                             slot_p.inner[_e211] = _e192;
                             uint _e213 = q;
                             slot_cells.inner[_e213] = _e167;
-                            uint _e215 = hc;
-                            uint _e216 = pcg_hash(_e215);
-                            hc = _e216;
-                            uint _e217 = q;
-                            uint _e219 = hc;
-                            float _e220 = xi_from_bits(_e219);
-                            float _e221 = weighted_threshold(_e196, _e220);
-                            threshold.inner[_e217] = _e221;
+                            uint _e215 = q;
+                            float _e217 = next_threshold(_e196, hc);
+                            threshold.inner[_e215] = _e217;
                         }
                     }
                 }
             }
         }
     }
-    uint _e236 = view.width;
-    uint pixel_1 = (gid.y * _e236) + gid.x;
-    metal::float3 _e243 = view.eye;
-    uint _e247 = reuse_stream(_e122, 0u);
-    uint _e248 = reuse_domains(x_17, n_15, metal::length(_e243 - x_17), _e247, doms, view, reuse, reuse_prev, _buffer_sizes);
-    if (_e248 > 0u) {
-        bool _e255 = doms.inner[0].temporal;
-        local_3 = _e255;
+    uint _e232 = view.width;
+    uint pixel_1 = (gid.y * _e232) + gid.x;
+    metal::float3 _e239 = view.eye;
+    uint _e243 = reuse_stream(_e122, 0u);
+    uint _e244 = reuse_domains(x_17, n_15, metal::length(_e239 - x_17), _e243, doms, view, reuse, reuse_prev, _buffer_sizes);
+    if (_e244 > 0u) {
+        bool _e251 = doms.inner[0].temporal;
+        local_3 = _e251;
     } else {
         local_3 = false;
     }
     bool own_history = local_3;
     uint first_1 = own_history ? 1u : 0u;
-    float _e263 = doms.inner[0].c;
-    float confidence = 1.0 + (own_history ? _e263 : 0.0);
-    uint _e269 = reuse_stream(_e122, 1u);
-    hs = _e269;
+    float _e259 = doms.inner[0].c;
+    float confidence = 1.0 + (own_history ? _e259 : 0.0);
+    uint _e265 = reuse_stream(_e122, 1u);
+    hs = _e265;
     uint2 loop_bound_11 = uint2(4294967295u);
     bool loop_init_9 = true;
     while(true) {
         if (metal::all(loop_bound_11 == uint2(0u))) { break; }
         loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
         if (!loop_init_9) {
-            uint _e320 = q_1;
-            q_1 = _e320 + 1u;
+            uint _e316 = q_1;
+            q_1 = _e316 + 1u;
         }
         loop_init_9 = false;
-        uint _e275 = q_1;
-        if (_e275 < K) {
+        uint _e271 = q_1;
+        if (_e271 < K) {
         } else {
             break;
         }
         {
-            uint _e278 = q_1;
+            uint _e274 = q_1;
+            uint _e276 = q_1;
+            uint _e277 = q_1;
+            uint _e279 = slot_light.inner[_e277];
             uint _e280 = q_1;
-            uint _e281 = q_1;
-            uint _e283 = slot_light.inner[_e281];
+            uint _e282 = slot_cells.inner[_e280];
+            metal::float3 _e283 = total;
             uint _e284 = q_1;
-            uint _e286 = slot_cells.inner[_e284];
-            metal::float3 _e287 = total;
-            uint _e288 = q_1;
-            float _e290 = slot_target(_e287, _e288, K);
-            uint _e291 = q_1;
-            float _e293 = slot_p.inner[_e291];
-            Material _e302 = m;
-            ReuseSlot _e303 = gris_combine(_e280, ReuseSlot {_e283, _e286, (_e293 > 0.0) ? _e290 : 0.0}, true, 1.0, 0u, first_1, x_17, n_15, _e302, doms, hs, geo_nodes, geo_tris, lights, lights_prev, reuse_prev, _buffer_sizes);
-            kept.inner[_e278] = _e303;
-            uint _e304 = q_1;
-            uint _e306 = q_1;
-            ReuseSlot _e308 = kept.inner[_e306];
-            fin.inner[_e304] = _e308;
-            if (_e248 > first_1) {
-                uint _e310 = q_1;
-                uint _e312 = q_1;
-                uint _e313 = q_1;
-                ReuseSlot _e315 = kept.inner[_e313];
-                Material _e317 = m;
-                ReuseSlot _e318 = gris_combine(_e312, _e315, false, confidence, first_1, _e248, x_17, n_15, _e317, doms, hs, geo_nodes, geo_tris, lights, lights_prev, reuse_prev, _buffer_sizes);
-                fin.inner[_e310] = _e318;
+            float _e286 = slot_target(_e283, _e284, K);
+            uint _e287 = q_1;
+            float _e289 = slot_p.inner[_e287];
+            Material _e298 = m;
+            ReuseSlot _e299 = gris_combine(_e276, ReuseSlot {_e279, _e282, (_e289 > 0.0) ? _e286 : 0.0}, true, 1.0, 0u, first_1, x_17, n_15, _e298, doms, hs, geo_nodes, geo_tris, lights, lights_prev, reuse_prev, _buffer_sizes);
+            kept.inner[_e274] = _e299;
+            uint _e300 = q_1;
+            uint _e302 = q_1;
+            ReuseSlot _e304 = kept.inner[_e302];
+            fin.inner[_e300] = _e304;
+            if (_e244 > first_1) {
+                uint _e306 = q_1;
+                uint _e308 = q_1;
+                uint _e309 = q_1;
+                ReuseSlot _e311 = kept.inner[_e309];
+                Material _e313 = m;
+                ReuseSlot _e314 = gris_combine(_e308, _e311, false, confidence, first_1, _e244, x_17, n_15, _e313, doms, hs, geo_nodes, geo_tris, lights, lights_prev, reuse_prev, _buffer_sizes);
+                fin.inner[_e306] = _e314;
             }
         }
     }
@@ -2135,128 +2143,128 @@ kernel void main_(
         if (metal::all(loop_bound_12 == uint2(0u))) { break; }
         loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
         if (!loop_init_10) {
-            uint _e361 = k;
-            k = _e361 + 1u;
+            uint _e357 = k;
+            k = _e357 + 1u;
         }
         loop_init_10 = false;
-        uint _e326 = k;
-        if (_e326 < K) {
+        uint _e322 = k;
+        if (_e322 < K) {
         } else {
             break;
         }
         {
-            uint _e329 = k;
-            uint _e331 = k;
-            uint _e334 = fin.inner[_e331].light;
-            uint _e336 = k;
-            uint _e339 = fin.inner[_e336].u;
-            uint _e341 = k;
-            uint _e344 = fin.inner[_e341].light;
-            uint _e347 = lights[_e344].kind;
-            keys.inner[_e329] = metal::uint2(_e334, (_e347 == LIGHT_TRIANGLE) ? _e339 : 0u);
-            uint _e352 = k;
-            uint _e354 = k;
-            float _e357 = fin.inner[_e354].w;
-            held.inner[_e352] = _e357 > 0.0;
+            uint _e325 = k;
+            uint _e327 = k;
+            uint _e330 = fin.inner[_e327].light;
+            uint _e332 = k;
+            uint _e335 = fin.inner[_e332].u;
+            uint _e337 = k;
+            uint _e340 = fin.inner[_e337].light;
+            uint _e343 = lights[_e340].kind;
+            keys.inner[_e325] = metal::uint2(_e330, (_e343 == LIGHT_TRIANGLE) ? _e335 : 0u);
+            uint _e348 = k;
+            uint _e350 = k;
+            float _e353 = fin.inner[_e350].w;
+            held.inner[_e348] = _e353 > 0.0;
         }
     }
-    type_20 _e363 = keys;
-    type_21 _e364 = held;
-    type_17 _e365 = first_holders(_e363, _e364);
+    type_21 _e359 = keys;
+    type_22 _e360 = held;
+    type_17 _e361 = first_holders(_e359, _e360);
     uint2 loop_bound_13 = uint2(4294967295u);
     bool loop_init_11 = true;
     while(true) {
         if (metal::all(loop_bound_13 == uint2(0u))) { break; }
         loop_bound_13 -= uint2(loop_bound_13.y == 0u, 1u);
         if (!loop_init_11) {
-            uint _e450 = k_1;
-            k_1 = _e450 + 1u;
+            uint _e446 = k_1;
+            k_1 = _e446 + 1u;
         }
         loop_init_11 = false;
-        uint _e369 = k_1;
-        if (_e369 < K) {
+        uint _e365 = k_1;
+        if (_e365 < K) {
         } else {
             break;
         }
         {
-            uint _e372 = k_1;
-            uint _e374 = k_1;
-            if (_e365.inner[_e372] != _e374) {
+            uint _e368 = k_1;
+            uint _e370 = k_1;
+            if (_e361.inner[_e368] != _e370) {
                 continue;
             }
             w = metal::float3(0.0);
-            uint _e379 = k_1;
-            j = _e379;
+            uint _e375 = k_1;
+            j = _e375;
             uint2 loop_bound_14 = uint2(4294967295u);
             bool loop_init_12 = true;
             while(true) {
                 if (metal::all(loop_bound_14 == uint2(0u))) { break; }
                 loop_bound_14 -= uint2(loop_bound_14.y == 0u, 1u);
                 if (!loop_init_12) {
-                    uint _e399 = j;
-                    j = _e399 + 1u;
+                    uint _e395 = j;
+                    j = _e395 + 1u;
                 }
                 loop_init_12 = false;
-                uint _e381 = j;
-                if (_e381 < K) {
+                uint _e377 = j;
+                if (_e377 < K) {
                 } else {
                     break;
                 }
                 {
-                    uint _e384 = j;
-                    uint _e386 = k_1;
-                    if (_e365.inner[_e384] == _e386) {
-                        metal::float3 _e388 = w;
+                    uint _e380 = j;
+                    uint _e382 = k_1;
+                    if (_e361.inner[_e380] == _e382) {
+                        metal::float3 _e384 = w;
+                        uint _e385 = j;
+                        float _e388 = fin.inner[_e385].w;
                         uint _e389 = j;
-                        float _e392 = fin.inner[_e389].w;
-                        uint _e393 = j;
-                        metal::float3 _e395 = slot_share(_e393, K);
-                        w = _e388 + (_e392 * _e395);
+                        metal::float3 _e391 = slot_share(_e389, K);
+                        w = _e384 + (_e388 * _e391);
                     }
                 }
             }
-            uint _e402 = k_1;
-            uint _e405 = fin.inner[_e402].light;
-            GpuLight _e407 = lights[_e405];
-            uint _e411 = k_1;
-            uint _e414 = fin.inner[_e411].u;
-            float _e415 = grid_coordinate(_e414);
-            uint _e416 = k_1;
-            uint _e419 = fin.inner[_e416].u;
-            float _e422 = grid_coordinate(_e419 << 16u);
-            Connection _e424 = connect_record(_e407, x_17, n_15, n_15, UNRANGED, UNRANGED, 1.0, _e415, _e422, eps_3, true, geo_nodes, geo_tris, _buffer_sizes);
-            Material _e425 = m;
-            Shaded _e426 = shade_connection(_e424, x_17, n_15, _e425);
-            Shaded _e427 = t;
-            metal::float3 _e428 = w;
-            Shaded _e429 = scaled(_e426, _e428);
-            Shaded _e430 = add(_e427, _e429);
-            t = _e430;
-            uint _e431 = k_1;
-            j_1 = _e431;
+            uint _e398 = k_1;
+            uint _e401 = fin.inner[_e398].light;
+            GpuLight _e403 = lights[_e401];
+            uint _e407 = k_1;
+            uint _e410 = fin.inner[_e407].u;
+            float _e411 = grid_coordinate(_e410);
+            uint _e412 = k_1;
+            uint _e415 = fin.inner[_e412].u;
+            float _e418 = grid_coordinate(_e415 << 16u);
+            Connection _e420 = connect_record(_e403, x_17, n_15, n_15, UNRANGED, UNRANGED, 1.0, _e411, _e418, eps_3, true, geo_nodes, geo_tris, _buffer_sizes);
+            Material _e421 = m;
+            Shaded _e422 = shade_connection(_e420, x_17, n_15, _e421);
+            Shaded _e423 = t;
+            metal::float3 _e424 = w;
+            Shaded _e425 = scaled(_e422, _e424);
+            Shaded _e426 = add(_e423, _e425);
+            t = _e426;
+            uint _e427 = k_1;
+            j_1 = _e427;
             uint2 loop_bound_15 = uint2(4294967295u);
             bool loop_init_13 = true;
             while(true) {
                 if (metal::all(loop_bound_15 == uint2(0u))) { break; }
                 loop_bound_15 -= uint2(loop_bound_15.y == 0u, 1u);
                 if (!loop_init_13) {
-                    uint _e447 = j_1;
-                    j_1 = _e447 + 1u;
+                    uint _e443 = j_1;
+                    j_1 = _e443 + 1u;
                 }
                 loop_init_13 = false;
-                uint _e433 = j_1;
-                if (_e433 < K) {
+                uint _e429 = j_1;
+                if (_e429 < K) {
                 } else {
                     break;
                 }
                 {
-                    uint _e436 = j_1;
-                    uint _e438 = k_1;
-                    if (_e365.inner[_e436] == _e438) {
-                        uint _e440 = j_1;
-                        metal::float3 _e442 = output_of(_e426);
-                        float _e443 = resample_target(_e442);
-                        visible.inner[_e440] = _e443 > 0.0;
+                    uint _e432 = j_1;
+                    uint _e434 = k_1;
+                    if (_e361.inner[_e432] == _e434) {
+                        uint _e436 = j_1;
+                        metal::float3 _e438 = output_of(_e422);
+                        float _e439 = resample_target(_e438);
+                        visible.inner[_e436] = _e439 > 0.0;
                     }
                 }
             }
@@ -2268,42 +2276,42 @@ kernel void main_(
         if (metal::all(loop_bound_16 == uint2(0u))) { break; }
         loop_bound_16 -= uint2(loop_bound_16.y == 0u, 1u);
         if (!loop_init_14) {
-            uint _e491 = q_2;
-            q_2 = _e491 + 1u;
+            uint _e487 = q_2;
+            q_2 = _e487 + 1u;
         }
         loop_init_14 = false;
-        uint _e454 = q_2;
-        if (_e454 < K) {
+        uint _e450 = q_2;
+        if (_e450 < K) {
         } else {
             break;
         }
         {
-            uint _e459 = reuse.visibility;
-            if (!((_e459 == 0u))) {
-                uint _e465 = q_2;
-                bool _e467 = visible.inner[_e465];
-                local_4 = _e467;
+            uint _e455 = reuse.visibility;
+            if (!((_e455 == 0u))) {
+                uint _e461 = q_2;
+                bool _e463 = visible.inner[_e461];
+                local_4 = _e463;
             } else {
                 local_4 = true;
             }
             bool keep = local_4;
-            uint _e473 = q_2;
+            uint _e469 = q_2;
+            uint _e471 = q_2;
+            uint _e474 = kept.inner[_e471].light;
             uint _e475 = q_2;
-            uint _e478 = kept.inner[_e475].light;
+            uint _e478 = kept.inner[_e475].u;
             uint _e479 = q_2;
-            uint _e482 = kept.inner[_e479].u;
-            uint _e483 = q_2;
-            float _e486 = kept.inner[_e483].w;
-            reuse_next[pixel_1].slots.inner[_e473] = ReuseSlot {_e478, _e482, keep ? _e486 : 0.0};
+            float _e482 = kept.inner[_e479].w;
+            reuse_next[pixel_1].slots.inner[_e469] = ReuseSlot {_e474, _e478, keep ? _e482 : 0.0};
         }
     }
-    Material _e496 = m;
-    float _e499 = reuse.max_confidence;
-    ReuseSurface _e501 = reuse_surface(x_17, n_15, _e496, metal::min(confidence, _e499));
-    reuse_next[pixel_1].surface = _e501;
-    metal::float3 _e504 = t.diffuse;
-    metal::float3 _e506 = t.specular;
-    uint _e508 = count;
-    out_tex.write(metal::float4(_e504 + _e506, static_cast<float>(_e508)), metal::uint2(texel_1));
+    Material _e492 = m;
+    float _e495 = reuse.max_confidence;
+    ReuseSurface _e497 = reuse_surface(x_17, n_15, _e492, metal::min(confidence, _e495));
+    reuse_next[pixel_1].surface = _e497;
+    metal::float3 _e500 = t.diffuse;
+    metal::float3 _e502 = t.specular;
+    uint _e504 = count;
+    out_tex.write(metal::float4(_e500 + _e502, static_cast<float>(_e504)), metal::uint2(texel_1));
     return;
 }

@@ -107,16 +107,16 @@ struct Material {
     float reflectance;
     char _pad6[12];
 };
-struct type_18 {
+struct type_19 {
     metal::uint2 inner[8];
 };
-struct type_19 {
+struct type_20 {
     bool inner[8];
 };
-struct type_21 {
+struct type_22 {
     metal::float2 inner[8];
 };
-struct type_22 {
+struct type_23 {
     float inner[8];
 };
 constant uint LIGHT_POINT = 0u;
@@ -619,9 +619,9 @@ metal::float3 bevy_brdf(
     }
     float _e15 = bevy_alpha(r_3);
     float n_v_3 = metal::max(metal::dot(n_3, v_1), 0.0001);
-    metal::float3 h_1 = metal::normalize(l + v_1);
-    float n_h = metal::saturate(metal::dot(n_3, h_1));
-    float l_h = metal::saturate(metal::dot(l, h_1));
+    metal::float3 h_2 = metal::normalize(l + v_1);
+    float n_h = metal::saturate(metal::dot(n_3, h_2));
+    float l_h = metal::saturate(metal::dot(l, h_2));
     float f90_d_3 = 0.5 + (((2.0 * _e15) * l_h) * l_h);
     metal::float3 _e35 = fresnel_schlick(metal::float3(1.0, 1.0, 1.0), f90_d_3, n_l_1);
     metal::float3 _e41 = fresnel_schlick(metal::float3(1.0, 1.0, 1.0), f90_d_3, n_v_3);
@@ -1081,6 +1081,19 @@ uint bsh_next_leaf_lobe(
     return BSH_NONE;
 }
 
+float next_threshold(
+    float sum,
+    thread uint& h_1
+) {
+    uint _e2 = h_1;
+    uint _e3 = pcg_hash(_e2);
+    h_1 = _e3;
+    uint _e4 = h_1;
+    float _e5 = xi_from_bits(_e4);
+    float _e6 = weighted_threshold(sum, _e5);
+    return _e6;
+}
+
 Connection connect_record(
     GpuLight l_3,
     metal::float3 x_6,
@@ -1275,8 +1288,8 @@ Shaded scaled(
 }
 
 type_15 first_holders(
-    type_18 keys_1,
-    type_19 held_1
+    type_19 keys_1,
+    type_20 held_1
 ) {
     type_15 first = {};
     uint k_4 = 0u;
@@ -1384,17 +1397,17 @@ kernel void main_(
     uint h = {};
     Shaded t = Shaded {metal::float3(0.0), metal::float3(0.0), metal::float3(0.0)};
     type_15 slot_light = {};
-    type_21 slot_u = {};
-    type_22 slot_p = {};
+    type_22 slot_u = {};
+    type_23 slot_p = {};
     metal::float3 total = metal::float3(0.0);
     uint count = 0u;
     uint hc = {};
-    type_22 threshold = {};
+    type_23 threshold = {};
     uint b = {};
     uint q = {};
     bool local_2 = {};
-    type_18 keys = {};
-    type_19 held = {};
+    type_19 keys = {};
+    type_20 held = {};
     uint k = 0u;
     uint k_1 = 0u;
     metal::float3 w = {};
@@ -1466,11 +1479,11 @@ kernel void main_(
         if (metal::all(loop_bound_5 == uint2(0u))) { break; }
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         if (!loop_init_3) {
-            uint _e210 = b;
-            uint _e213 = bsh_nodes[_e210].next;
-            metal::float3 _e214 = r;
-            uint _e215 = bsh_next_leaf_lobe(BSH, _e213, x_13, _e214, _e87, bsh_nodes, _buffer_sizes);
-            b = _e215;
+            uint _e206 = b;
+            uint _e209 = bsh_nodes[_e206].next;
+            metal::float3 _e210 = r;
+            uint _e211 = bsh_next_leaf_lobe(BSH, _e209, x_13, _e210, _e87, bsh_nodes, _buffer_sizes);
+            b = _e211;
         }
         loop_init_3 = false;
         uint _e137 = b;
@@ -1509,8 +1522,8 @@ kernel void main_(
                     if (metal::all(loop_bound_6 == uint2(0u))) { break; }
                     loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
                     if (!loop_init_4) {
-                        uint _e206 = q;
-                        q = _e206 + 1u;
+                        uint _e202 = q;
+                        q = _e202 + 1u;
                     }
                     loop_init_4 = false;
                     uint _e172 = q;
@@ -1539,14 +1552,9 @@ kernel void main_(
                             slot_u.inner[_e194] = u_4;
                             uint _e196 = q;
                             slot_p.inner[_e196] = _e177;
-                            uint _e198 = hc;
-                            uint _e199 = pcg_hash(_e198);
-                            hc = _e199;
-                            uint _e200 = q;
-                            uint _e202 = hc;
-                            float _e203 = xi_from_bits(_e202);
-                            float _e204 = weighted_threshold(_e181, _e203);
-                            threshold.inner[_e200] = _e204;
+                            uint _e198 = q;
+                            float _e200 = next_threshold(_e181, hc);
+                            threshold.inner[_e198] = _e200;
                         }
                     }
                 }
@@ -1559,109 +1567,109 @@ kernel void main_(
         if (metal::all(loop_bound_7 == uint2(0u))) { break; }
         loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
         if (!loop_init_5) {
-            uint _e238 = k;
-            k = _e238 + 1u;
+            uint _e234 = k;
+            k = _e234 + 1u;
         }
         loop_init_5 = false;
-        uint _e220 = k;
-        if (_e220 < K) {
+        uint _e216 = k;
+        if (_e216 < K) {
         } else {
             break;
         }
         {
-            uint _e223 = k;
-            uint _e225 = k;
-            uint _e227 = slot_light.inner[_e225];
-            keys.inner[_e223] = metal::uint2(_e227, 0u);
-            uint _e230 = k;
-            uint _e232 = k;
-            float _e234 = slot_p.inner[_e232];
-            held.inner[_e230] = _e234 > 0.0;
+            uint _e219 = k;
+            uint _e221 = k;
+            uint _e223 = slot_light.inner[_e221];
+            keys.inner[_e219] = metal::uint2(_e223, 0u);
+            uint _e226 = k;
+            uint _e228 = k;
+            float _e230 = slot_p.inner[_e228];
+            held.inner[_e226] = _e230 > 0.0;
         }
     }
-    type_18 _e240 = keys;
-    type_19 _e241 = held;
-    type_15 _e242 = first_holders(_e240, _e241);
+    type_19 _e236 = keys;
+    type_20 _e237 = held;
+    type_15 _e238 = first_holders(_e236, _e237);
     uint2 loop_bound_8 = uint2(4294967295u);
     bool loop_init_6 = true;
     while(true) {
         if (metal::all(loop_bound_8 == uint2(0u))) { break; }
         loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
         if (!loop_init_6) {
-            uint _e305 = k_1;
-            k_1 = _e305 + 1u;
+            uint _e301 = k_1;
+            k_1 = _e301 + 1u;
         }
         loop_init_6 = false;
-        uint _e245 = k_1;
-        if (_e245 < K) {
+        uint _e241 = k_1;
+        if (_e241 < K) {
         } else {
             break;
         }
         {
             w = metal::float3(0.0);
+            uint _e247 = k_1;
+            uint _e249 = k_1;
+            bool first_1 = _e238.inner[_e247] == _e249;
             uint _e251 = k_1;
-            uint _e253 = k_1;
-            bool first_1 = _e242.inner[_e251] == _e253;
-            uint _e255 = k_1;
-            j = _e255;
+            j = _e251;
             uint2 loop_bound_9 = uint2(4294967295u);
             bool loop_init_7 = true;
             while(true) {
                 if (metal::all(loop_bound_9 == uint2(0u))) { break; }
                 loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
                 if (!loop_init_7) {
-                    uint _e283 = j;
-                    j = _e283 + 1u;
+                    uint _e279 = j;
+                    j = _e279 + 1u;
                 }
                 loop_init_7 = false;
-                uint _e257 = j;
-                if (_e257 < K) {
+                uint _e253 = j;
+                if (_e253 < K) {
                     local_3 = first_1;
                 } else {
                     local_3 = false;
                 }
-                bool _e263 = local_3;
-                if (_e263) {
+                bool _e259 = local_3;
+                if (_e259) {
                 } else {
                     break;
                 }
                 {
-                    uint _e264 = j;
-                    uint _e266 = k_1;
-                    if (_e242.inner[_e264] == _e266) {
-                        metal::float3 _e268 = w;
-                        metal::float3 _e269 = total;
-                        uint _e270 = j;
-                        float _e272 = slot_target(_e269, _e270, K);
+                    uint _e260 = j;
+                    uint _e262 = k_1;
+                    if (_e238.inner[_e260] == _e262) {
+                        metal::float3 _e264 = w;
+                        metal::float3 _e265 = total;
+                        uint _e266 = j;
+                        float _e268 = slot_target(_e265, _e266, K);
+                        uint _e269 = j;
+                        float _e271 = slot_p.inner[_e269];
                         uint _e273 = j;
-                        float _e275 = slot_p.inner[_e273];
-                        uint _e277 = j;
-                        metal::float3 _e279 = slot_share(_e277, K);
-                        w = _e268 + ((_e272 / _e275) * _e279);
+                        metal::float3 _e275 = slot_share(_e273, K);
+                        w = _e264 + ((_e268 / _e271) * _e275);
                     }
                 }
             }
             if (first_1) {
-                Shaded _e285 = t;
-                uint _e286 = k_1;
-                uint _e288 = slot_light.inner[_e286];
-                metal::float3 _e289 = r;
-                Material _e290 = m;
+                Shaded _e281 = t;
+                uint _e282 = k_1;
+                uint _e284 = slot_light.inner[_e282];
+                metal::float3 _e285 = r;
+                Material _e286 = m;
+                uint _e288 = k_1;
+                float _e291 = slot_u.inner[_e288].x;
                 uint _e292 = k_1;
-                float _e295 = slot_u.inner[_e292].x;
-                uint _e296 = k_1;
-                float _e299 = slot_u.inner[_e296].y;
-                Shaded _e300 = shade_pick(_e288, x_13, n_11, _e289, _e87, _e290, 1.0, _e295, _e299, eps_4, geo_nodes, geo_tris, lights, rt2_3, r2_3, light_cones, _buffer_sizes);
-                metal::float3 _e301 = w;
-                Shaded _e302 = scaled(_e300, _e301);
-                Shaded _e303 = add(_e285, _e302);
-                t = _e303;
+                float _e295 = slot_u.inner[_e292].y;
+                Shaded _e296 = shade_pick(_e284, x_13, n_11, _e285, _e87, _e286, 1.0, _e291, _e295, eps_4, geo_nodes, geo_tris, lights, rt2_3, r2_3, light_cones, _buffer_sizes);
+                metal::float3 _e297 = w;
+                Shaded _e298 = scaled(_e296, _e297);
+                Shaded _e299 = add(_e281, _e298);
+                t = _e299;
             }
         }
     }
-    metal::float3 _e309 = t.diffuse;
-    metal::float3 _e311 = t.specular;
-    uint _e313 = count;
-    out_tex.write(metal::float4(_e309 + _e311, static_cast<float>(_e313)), metal::uint2(texel_1));
+    metal::float3 _e305 = t.diffuse;
+    metal::float3 _e307 = t.specular;
+    uint _e309 = count;
+    out_tex.write(metal::float4(_e305 + _e307, static_cast<float>(_e309)), metal::uint2(texel_1));
     return;
 }
