@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# The real-GPU measurements issues 46-48 still wait for, packed for one device call.
+#
+#   ../shared/tools/gpu-bench.sh prepare && tools/gpu-session.sh
+#   then the device's run: command `bash .gpu/gpu-bench.sh run`, carry [".gpu"], timeout_s 560
+#
+# Adds slc-bevy's many_lights example to .gpu/ (stripped and xz-compressed: the release binary is 90 MB,
+# over the 64 MiB a call carries; Python's lzma unpacks it there) and writes .gpu/commands.sh:
+# - issue 46: the default VPL frame at 1080p, 65,536 and 1,048,576 VPLs, twice each (two runs must agree
+#   within 5% per stage);
+# - issue 47: many_lights at 1080p with 4,000 lights (every configuration, then slc's alone at eps 0.03),
+#   500 and 20,000 (Bevy at unbounded ranges left out there: minutes);
+# - issue 48: the path-tracing suite at 512x512, noise from seed pairs.
+# About 400 s on an NVIDIA H200 (the last call's steps: docs/results/gpu-h200-b/log.txt). Results land
+# in the call's $OUT; copy them to docs/results/ with the adapter's name and the date.
+set -euo pipefail
+cd "$(git rev-parse --show-toplevel)"
+[ -x .gpu/slc ] || { echo "run ../shared/tools/gpu-bench.sh prepare first" >&2; exit 1; }
+cargo build --release -q --manifest-path slc-bevy/Cargo.toml --ignore-rust-version --example many_lights
+strip -o .gpu/many_lights.tmp slc-bevy/target/release/examples/many_lights
+xz -6 -c .gpu/many_lights.tmp > .gpu/many_lights.xz
+rm .gpu/many_lights.tmp
+cat > .gpu/commands.sh <<'CMDS'
+# Sourced by `gpu-bench.sh run` inside .gpu/ (S is the slc binary); written by tools/gpu-session.sh.
+VPL="--backend gpu --width 1920 --height 1080 --error-bounds 0.004 --ranges 0.05"
+step 60 $S bench $VPL --json $OUT/vpl-1080-a.json
+step 60 $S bench $VPL --json $OUT/vpl-1080-b.json
+step 90 $S bench $VPL --vpls 1048576 --json $OUT/vpl-1080-1m-a.json
+step 90 $S bench $VPL --vpls 1048576 --json $OUT/vpl-1080-1m-b.json
+python3 -c "import lzma, shutil; shutil.copyfileobj(lzma.open('many_lights.xz'), open('many_lights', 'wb'))"
+chmod +x many_lights
+export RUST_LOG=warn
+step 100 env SLC_BEVY_BENCH=$OUT/bevy-4000.json ./many_lights 4000
+step 60 env SLC_BEVY_EPSILON=0.03 SLC_BEVY_BENCH_MODES=slc SLC_BEVY_BENCH=$OUT/bevy-4000-eps003.json ./many_lights 4000
+step 60 env SLC_BEVY_BENCH=$OUT/bevy-500.json ./many_lights 500
+step 120 env SLC_BEVY_BENCH_FRAMES=32 SLC_BEVY_BENCH_MODES=slc,default SLC_BEVY_BENCH=$OUT/bevy-20000.json ./many_lights 20000
+step 150 $S bench --app pt --backend gpu --suite scenes/suite --width 512 --height 512 --seconds 0.3 --noise seeds --json $OUT/pt-suite-512.json
+CMDS
+du -sh .gpu
+echo "prepared: run 'bash .gpu/gpu-bench.sh run' on the device, carry [\".gpu\"], timeout_s 560"
