@@ -278,6 +278,20 @@ impl<const K: usize> Reservoir<K> {
     }
 }
 
+/// One weighted one-slot reservoir's step in the threshold form
+/// ([`weighted_threshold`]), for the CPU's reservoirs: `true` when the
+/// running sum `sum` (this candidate's weight included) passes
+/// `*threshold`, the slot taking the candidate; then `u()` draws the next
+/// threshold's uniform. (WGSL's `next_threshold` is the kernels' twin.)
+#[inline]
+pub fn threshold_takes(sum: f32, threshold: &mut f32, u: impl FnOnce() -> f32) -> bool {
+    if sum <= *threshold {
+        return false;
+    }
+    *threshold = weighted_threshold(sum, u());
+    true
+}
+
 /// `K` independent one-slot weighted reservoirs, in the threshold form
 /// ([`weighted_threshold`]: a slot draws a number only when it takes).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -309,9 +323,8 @@ impl<const K: usize> WeightedReservoir<K> {
         }
         self.w_sum += w;
         for (slot, threshold) in self.slots.iter_mut().zip(&mut self.thresholds) {
-            if self.w_sum > *threshold {
+            if threshold_takes(self.w_sum, threshold, &mut u) {
                 *slot = (item, w);
-                *threshold = weighted_threshold(self.w_sum, u());
             }
         }
     }
@@ -356,12 +369,12 @@ mod tests {
         }
     }
 
-    /// The threshold form of the one-slot reservoir keeps candidate `i`
-    /// with probability `w_i/W` (zero weights never), as
-    /// [`weighted_replace`] does, and takes `Σ w_i/W_i` candidates on
-    /// average, drawing one number per take: 200,000 fixed-seed slots over
-    /// ten weights, each frequency within 5 standard deviations of its
-    /// probability.
+    /// The threshold form of the one-slot reservoir ([`WeightedReservoir`])
+    /// keeps candidate `i` with probability `w_i/W` (zero weights never),
+    /// as [`weighted_replace`] does, and takes `Σ w_i/W_i` candidates on
+    /// average, drawing one number per take: 200,000 fixed-seed one-slot
+    /// reservoirs over ten weights, each frequency within 5 standard
+    /// deviations of its probability.
     #[test]
     fn threshold_slot_keeps_each_candidate_by_its_weight() {
         use crate::xi::{pcg_hash, xi_from_bits};
@@ -371,17 +384,17 @@ mod tests {
         let (mut kept, mut takes) = ([0u32; 10], 0u64);
         let mut h = 0x5eed;
         for _ in 0..trials {
-            let (mut slot, mut threshold, mut sum) = (usize::MAX, 0.0f32, 0.0f32);
+            let mut r = WeightedReservoir::<1>::new();
             for (i, &wi) in w.iter().enumerate() {
-                sum += wi;
-                if wi > 0.0 && sum > threshold {
-                    slot = i;
+                r.push(i as u32, wi, || {
                     takes += 1;
                     h = pcg_hash(h);
-                    threshold = weighted_threshold(sum, xi_from_bits(h));
-                }
+                    xi_from_bits(h)
+                });
             }
-            kept[slot] += 1;
+            for (i, _) in r.picks() {
+                kept[i as usize] += 1;
+            }
         }
         for (i, &wi) in w.iter().enumerate() {
             let p = (wi / total) as f64;

@@ -27,7 +27,7 @@ use slc_core::light::{Light, connection_cosine, connection_factor};
 use slc_core::range::{RangeParams, random_range2};
 use slc_core::reservoir::{
     resample_target, reservoir_slot, reservoir_takes, reservoir_weight, slot_share, slot_target,
-    weighted_pick_weight, weighted_threshold,
+    threshold_takes, weighted_pick_weight,
 };
 use slc_core::xi::{pcg_hash, pick_stream, point_stream, xi_for, xi_from_bits};
 use slc_scene::RenderError;
@@ -289,7 +289,7 @@ impl DirectLights {
 /// kernels' loops in `bsh_weighted_collect` and the resampled picks): slot
 /// `q`, whose candidates so far weigh `total` including this one's `w`
 /// (`weights(q) = (w, total)`), takes `item(q)` with probability `w/total`
-/// where `w > 0`, in the threshold form ([`weighted_threshold`]): where
+/// where `w > 0`, in the threshold form ([`threshold_takes`]): where
 /// `total` passes the slot's threshold, one hash of `h` sets the next.
 fn offer<T>(
     slots: &mut [T],
@@ -300,10 +300,13 @@ fn offer<T>(
 ) {
     for (q, (s, threshold)) in slots.iter_mut().zip(thresholds.iter_mut()).enumerate() {
         let (w, total) = weights(q);
-        if w > 0.0 && total > *threshold {
+        if w > 0.0
+            && threshold_takes(total, threshold, || {
+                *h = pcg_hash(*h);
+                xi_from_bits(*h)
+            })
+        {
             *s = item(q);
-            *h = pcg_hash(*h);
-            *threshold = weighted_threshold(total, xi_from_bits(*h));
         }
     }
 }
