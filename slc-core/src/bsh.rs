@@ -108,7 +108,7 @@ pub mod walk {
         BSH_NONE, BshNode, BshNodes, bsh_count, bsh_node, bsh_range_bound, bsh_scaled_radius,
     };
     use crate::importance::{cone_cos_of, range_scale_at, range_scale_toward};
-    use crate::sphere::{sphere_contains_point, sphere_pad, sphere_union};
+    use crate::sphere::{sphere_contains_point, sphere_overlaps_aabb, sphere_pad, sphere_union};
     use crate::wgsl::*;
 
     crate::shared! {
@@ -200,6 +200,76 @@ pub mod walk {
                 }
             }
             return BSH_NONE;
+        }
+
+        /// Depth of the subtrees the direct pass's tile walk deals out
+        /// among a tile's invocations ([`bsh_subtree`]).
+        pub const BSH_TILE_DEPTH: u32 = 8;
+
+        /// Their number, `2^BSH_TILE_DEPTH`.
+        pub const BSH_TILE_SUBTREES: u32 = 256;
+
+        /// Whether node `node` may reach some receiver in the box
+        /// `[lo, hi]` whose range lobes' largest scale `rl.w` is at most
+        /// `w`: [`bsh_reaches`]'s outer bound (`node.radius · max(1,
+        /// 1.0001·w)`, past which it rejects every point) tested against
+        /// the box, padded by another 1e-4 so that a point's test rounded
+        /// differently elsewhere never accepts a node this rejects. A
+        /// superset of [`bsh_reaches`] for every point of the box: the
+        /// direct pass's tile walk (one walk per tile, then each pixel's
+        /// exact test in the same order).
+        pub fn bsh_reaches_box(node: BshNode, lo: vec3f, hi: vec3f, w: f32) -> bool {
+            return sphere_overlaps_aabb(node.center, node.radius * (max(1.0, w * 1.0001) * 1.0001), lo, hi);
+        }
+
+        /// The root of subtree `s` of the `2^depth` at depth `depth`
+        /// (bit `depth − 1 − j` of `s` picks the child at level `j`: 0 the
+        /// first, 1 the second), or `BSH_NONE` where the tree has no node
+        /// there. A leaf above depth `depth` (1..=31) is the subtree of its
+        /// leftmost index (the one whose lower bits are 0); the others are
+        /// empty.
+        /// The subtrees in index order hold the leaves in traversal order,
+        /// each leaf once.
+        pub fn bsh_subtree(nodes: BshNodes, s: u32, depth: u32) -> u32 {
+            let mut i: u32 = bsh_first(nodes);
+            let mut level: u32 = 0;
+            while level < depth && i != BSH_NONE {
+                let node: BshNode = bsh_node(nodes, i);
+                let below: u32 = depth - level;
+                if node.child == BSH_NONE {
+                    if (s << (32 - below)) != 0 {
+                        return BSH_NONE;
+                    }
+                    return i;
+                }
+                if ((s >> (below - 1)) & 1) == 0 {
+                    i = node.child;
+                } else {
+                    i = bsh_node(nodes, node.child).next;
+                }
+                level += 1;
+            }
+            return i;
+        }
+
+        /// The first leaf at or after node `start`, before node `end`
+        /// (the node after the subtree being walked; `BSH_NONE` for the
+        /// whole tree), that [`bsh_reaches_box`] the box `[lo, hi]` at
+        /// scale `w`, or `end`.
+        pub fn bsh_next_leaf_box(nodes: BshNodes, start: u32, end: u32, lo: vec3f, hi: vec3f, w: f32) -> u32 {
+            let mut i: u32 = start;
+            while i != end {
+                let node: BshNode = bsh_node(nodes, i);
+                if bsh_reaches_box(node, lo, hi, w) {
+                    if node.child == BSH_NONE {
+                        return i;
+                    }
+                    i = node.child;
+                } else {
+                    i = node.next;
+                }
+            }
+            return end;
         }
 
         /// The refit's step at inner node `i`: the union of its two

@@ -484,13 +484,14 @@ impl Default for Features {
     }
 }
 
-const TEMPLATES: [(&str, &str); 35] = [
+const TEMPLATES: [(&str, &str); 36] = [
     ("header.wgsl", include_str!("templates/header.wgsl")),
     ("workgroup_box.wgsl", include_str!("templates/workgroup_box.wgsl")),
     ("lights.wgsl", include_str!("templates/lights.wgsl")),
     ("geometry.wgsl", include_str!("templates/geometry.wgsl")),
     ("bsh_walk.wgsl", include_str!("templates/bsh_walk.wgsl")),
     ("bsh_collect.wgsl", include_str!("templates/bsh_collect.wgsl")),
+    ("bsh_tile.wgsl", include_str!("templates/bsh_tile.wgsl")),
     ("light_update", include_str!("templates/light_update.wgsl")),
     ("bsh_refit", include_str!("templates/bsh_refit.wgsl")),
     ("vpl_tiled", include_str!("templates/vpl_tiled.wgsl")),
@@ -543,6 +544,15 @@ pub fn vpl_workgroup_bytes(kernel: Kernel, f: &Features) -> u64 {
         Kernel::VplTiled | Kernel::VplNear => 32 * threads + 32 + list + counts,
         _ => 0,
     }
+}
+
+/// Workgroup memory in bytes of `direct_light` specialised to `f`: its
+/// tile walk's box reduction (two `vec3f` per invocation and the box), the
+/// list of `max_tile_lights` entries, the 256 subtrees' positions and two
+/// scalars (checked against naga's layout in the tests).
+pub fn direct_workgroup_bytes(f: &Features) -> u64 {
+    let threads = f.tile_size as u64 * f.tile_size as u64;
+    32 * threads + 32 + 4 * f.max_tile_lights as u64 + 4 * 256 + 8
 }
 
 /// Checks the feature ranges and the combinations a kernel supports.
@@ -626,8 +636,18 @@ pub fn check(kernel: Kernel, f: &Features) -> Result<(), ShaderError> {
                     f.selection
                 ));
             }
-            if !(1..=16).contains(&f.tile_size) {
-                return bad(format!("direct_light: tile {} must be in 1..=16", f.tile_size));
+            if !(f.tile_size.is_power_of_two() && f.tile_size <= 16) {
+                return bad(format!(
+                    "direct_light: tile {} must be 1, 2, 4, 8 or 16 (its walk reduces over a power of two)",
+                    f.tile_size
+                ));
+            }
+            let bytes = direct_workgroup_bytes(f);
+            if bytes > 16384 {
+                return bad(format!(
+                    "direct_light: a {0}-entry tile list needs {bytes} bytes of workgroup memory (WebGPU guarantees 16384)",
+                    f.max_tile_lights
+                ));
             }
             if f.reuse_domains > 0 && f.selection != Selection::Resampled {
                 return bad(format!(

@@ -212,3 +212,42 @@ fn vpl_workgroup_bytes_match_naga() {
         }
     }
 }
+
+/// `direct_workgroup_bytes` is the size naga lays out for the generated
+/// `direct_light`'s workgroup variables (its tile walk), for each tile
+/// size and a few list capacities, with and without counters.
+#[test]
+fn direct_workgroup_bytes_match_naga() {
+    use slc_shared_shaders::{
+        Features, Kernel, LightTypes, Selection, direct_workgroup_bytes, generate_module,
+    };
+    for tile in [1u32, 4, 8, 16] {
+        for list in [16u32, 1024] {
+            for counters in [false, true] {
+                let f = Features {
+                    lights: LightTypes { point: true, ..LightTypes::default() },
+                    selection: Selection::Weighted,
+                    tile_size: tile,
+                    max_tile_lights: list,
+                    counters,
+                    ..Features::default()
+                };
+                let g = generate_module(Kernel::DirectLight, &f).unwrap();
+                let mut layouter = Layouter::default();
+                layouter.update(g.module.to_ctx()).unwrap();
+                let naga_bytes: u64 = g
+                    .module
+                    .global_variables
+                    .iter()
+                    .filter(|(_, v)| v.space == naga::AddressSpace::WorkGroup)
+                    .map(|(_, v)| layouter[v.ty].size as u64)
+                    .sum();
+                assert_eq!(
+                    direct_workgroup_bytes(&f),
+                    naga_bytes,
+                    "tile {tile} list {list} counters {counters}"
+                );
+            }
+        }
+    }
+}

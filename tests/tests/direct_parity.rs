@@ -81,6 +81,8 @@ struct Outcome {
     count_differs: usize,
     value_differs: usize,
     worst_rel: f64,
+    /// The most lights in range at one point (the CPU's count).
+    most_in_range: u32,
 }
 
 /// Boxes (a cube mesh in forty random placements, rotated and scaled) for
@@ -182,8 +184,14 @@ fn compare(
             "shadows change only {changed} of {lit} lit points: the comparison says little"
         );
     }
-    let mut o =
-        Outcome { points: points.len(), count_differs: 0, value_differs: 0, worst_rel: 0.0 };
+    let most_in_range = a.iter().map(|d| d.in_range).max().unwrap_or(0);
+    let mut o = Outcome {
+        points: points.len(),
+        count_differs: 0,
+        value_differs: 0,
+        worst_rel: 0.0,
+        most_in_range,
+    };
     for (p, q) in a.iter().zip(&b) {
         assert!(
             q.irradiance.is_finite() || !p.irradiance.is_finite(),
@@ -272,7 +280,22 @@ fn extreme_intensities_and_error_bounds_agree() {
     }
 }
 
+/// More lights in range of a tile than its list holds (1,024: the GPU's
+/// tile walk lists them in rounds): with ranges this long most lights
+/// reach most points, and each point finds the same lights as the CPU's
+/// walk, in its order. 1,500 lights keep each invocation's loops under
+/// lavapipe's 65,535 iterations.
+fn long_tile_lists_agree() {
+    for (selection, shadowed) in SELECTIONS {
+        let Some(o) = compare(11, 1_500, (3.0, 4.0), 1e-4, 5, selection, shadowed) else { return };
+        check(&o, &format!("1,500 lights in range, {selection:?}, shadowed: {shadowed}"));
+        assert_eq!(o.count_differs, 0, "the same lights in range everywhere");
+        assert!(o.most_in_range > 1_024, "at most {} lights in range", o.most_in_range);
+    }
+}
+
 slc_tests::harness!(
     Gpu: random_light_sets_agree,
     Gpu: extreme_intensities_and_error_bounds_agree,
+    Gpu: long_tile_lists_agree,
 );

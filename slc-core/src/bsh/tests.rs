@@ -276,3 +276,98 @@ fn glossy_walk_matches_brute_force() {
         "{found} found, {below_peak} below the peak, {at_peak} at it"
     );
 }
+
+/// The direct pass's tile walk: the subtrees at any depth, walked in index
+/// order against a box, list the leaves that reach the box's points in
+/// traversal order, and each point's exact test over that list finds the
+/// same lights in the same order as its own walk (glossy receivers
+/// included: the box test bounds every range lobe up to the largest).
+#[test]
+fn tile_walk_lists_every_point_walk_in_order() {
+    use crate::brdf::{range_lobe, receiver_lobe};
+    use rand_core::{RngCore, SeedableRng};
+    let mut rng = rand_pcg::Pcg32::seed_from_u64(47);
+    let mut u = move || rng.next_u32() as f32 / 4294967296.0;
+    let (mut listed, mut found, mut pruned) = (0usize, 0usize, 0usize);
+    for case in 0..400 {
+        let n = 1 + (u() * 300.0) as usize;
+        let b: Vec<LightBound> = (0..n)
+            .map(|_| LightBound {
+                center: Vec3::new(u(), u(), u()) * 4.0 - 2.0,
+                extent: if u() < 0.5 { 0.0 } else { 0.02 * u() },
+            })
+            .collect();
+        let r2: Vec<f32> = (0..n).map(|_| (0.15 / (1.0 - u()).sqrt()).powi(2)).collect();
+        let mut t = Bsh::build(&b).unwrap();
+        t.refit(&r2).unwrap();
+        let nodes = t.nodes();
+        let depth = case % 10;
+        // Every leaf once, in traversal order, through an unbounded box.
+        let all = |lo: Vec3, hi: Vec3, w: f32| {
+            let mut out = Vec::new();
+            for s in 0..(1u32 << depth) {
+                let root = walk::bsh_subtree(nodes, s, depth);
+                if root == BSH_NONE {
+                    continue;
+                }
+                let end = nodes[root as usize].next;
+                let mut i = walk::bsh_next_leaf_box(nodes, root, end, lo, hi, w);
+                while i != end {
+                    out.push(i);
+                    i = walk::bsh_next_leaf_box(nodes, nodes[i as usize].next, end, lo, hi, w);
+                }
+            }
+            out
+        };
+        // The flat array is in pre-order: its leaves are the traversal's.
+        let leaves: Vec<u32> =
+            (0..nodes.len() as u32).filter(|&i| nodes[i as usize].child == BSH_NONE).collect();
+        assert_eq!(
+            all(Vec3::splat(-1e30), Vec3::splat(1e30), 1.0),
+            leaves,
+            "{n} lights, depth {depth}"
+        );
+        // A small box of receivers, each with its own lobe.
+        let lo = Vec3::new(u(), u(), u()) * 4.0 - 2.0;
+        let hi = lo + Vec3::new(u(), u(), u()) * 0.3;
+        let receivers: Vec<_> = (0..16)
+            .map(|_| {
+                let x = lo + (hi - lo) * Vec3::new(u(), u(), u());
+                let nrm = (Vec3::new(u(), u(), u()) - 0.5).normalize();
+                let v = (Vec3::new(u(), u(), u()) - 0.5 + nrm).normalize();
+                let lobe = receiver_lobe(
+                    Vec3::splat(0.8),
+                    if u() < 0.5 { 1.0 } else { 0.0 },
+                    Vec3::splat(0.04),
+                    1.0,
+                    (0.05 + 0.95 * u()).powi(2),
+                    nrm.dot(v),
+                );
+                let lambertian = u() < 0.3;
+                let rl =
+                    if lambertian { glam::Vec4::new(1.0, 0.0, 1.0, 1.0) } else { range_lobe(lobe) };
+                (x, if lambertian { x } else { crate::brdf::mirror_dir(nrm, v) }, rl)
+            })
+            .collect();
+        let w = receivers.iter().map(|r| r.2.w).fold(0.0, f32::max);
+        let list = all(lo, hi, w);
+        listed += list.len();
+        pruned += n - list.len();
+        for (x, r, rl) in receivers {
+            let mut own = Vec::new();
+            t.for_each_reaching(x, r, rl, |l| own.push(l));
+            let from_list: Vec<u32> = list
+                .iter()
+                .map(|&i| nodes[i as usize])
+                .filter(|node| walk::bsh_reaches(*node, x, r, rl))
+                .map(|node| node.light)
+                .collect();
+            assert_eq!(from_list, own, "{n} lights, depth {depth}, receiver at {x}");
+            found += own.len();
+        }
+    }
+    assert!(
+        found > 2_000 && pruned > 10_000 && listed > 1_000,
+        "{found} found, {listed} listed, {pruned} pruned"
+    );
+}

@@ -20,18 +20,24 @@ fn bsh_collect(x: vec3f, r: vec3f, rl: vec4f, seed: u32) -> Picks {
     picks.n = 0u;
     var h = seed;
     for (var i = bsh_next_leaf_lobe(BSH, bsh_first(BSH), x, r, rl); i != BSH_NONE; i = bsh_next_leaf_lobe(BSH, bsh_nodes[i].next, x, r, rl)) {
-        if reservoir_takes(picks.n) {
-            picks.n += 1u;
-            h = pcg_hash(h);
-            let hi = h;
-            h = pcg_hash(h);
-            let slot = reservoir_slot(picks.n, K, hi, h);
-            if slot < K {
-                picks.light[slot] = bsh_nodes[i].light;
-            }
-        }
+        reservoir_offer(&picks, &h, bsh_nodes[i].light);
     }
     return picks;
+}
+
+/// Streams the candidate `light` through the reservoir `picks`, its
+/// random choices drawn from the stream `h`.
+fn reservoir_offer(picks: ptr<function, Picks>, h: ptr<function, u32>, light: u32) {
+    if reservoir_takes((*picks).n) {
+        (*picks).n += 1u;
+        *h = pcg_hash(*h);
+        let hi = *h;
+        *h = pcg_hash(*h);
+        let slot = reservoir_slot((*picks).n, K, hi, *h);
+        if slot < K {
+            (*picks).light[slot] = light;
+        }
+    }
 }
 
 /// The next threshold of a weighted one-slot reservoir that has just taken

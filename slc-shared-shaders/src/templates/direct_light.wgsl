@@ -17,6 +17,9 @@ fn occluded(a: vec3f, b: vec3f) -> bool {
 {% include "bsh_weighted.wgsl" %}
 {% endif %}
 {% include "gbuffer_read.wgsl" %}
+const TILE_THREADS: u32 = {{ tile }}u * {{ tile }}u;
+const BOX_THREADS: u32 = TILE_THREADS;
+{% include "bsh_tile.wgsl" %}
 // The engine's direct pass: at every G-buffer pixel, the lights whose random
 // range reaches it (BSH traversal), {% if selection == "weighted" %}{{ k }} importance-weighted picks among them{% elif selection == "resampled" %}{{ k }} picks resampled from them in proportion to their unshadowed contributions{% if reuse %} and reused across frames and pixels{% endif %}{% elif selection == "all" %}every one of them (exact given ξ){% else %}{{ k }} uniform picks among them (Algorithm R){% endif %},
 // each sampled (a point on a triangle), RR-tested at that point with its own
@@ -295,26 +298,25 @@ fn gris_combine(q: u32, cur: ReuseSlot, cur_ris: bool, cur_c: f32, k0: u32, k1: 
 {% endif %}
 
 @compute @workgroup_size({{ tile }}, {{ tile }})
-fn main(@builtin(global_invocation_id) gid: vec3u) {
-    if gid.x >= view.width || gid.y >= view.height {
-        return;
-    }
+fn main(@builtin(global_invocation_id) gid: vec3u, @builtin(local_invocation_index) lid: u32) {
+    // Every invocation takes part in its tile's walk (barriers); one
+    // outside the image, or without a surface (or a finite position),
+    // lists nothing and writes zeros where its texel is.
+    let inside = gid.x < view.width && gid.y < view.height;
     let texel = vec2i(i32(gid.x), i32(gid.y));
-    let s = surface_at(texel);
-    let nn = textureLoad(normal_tex, texel, 0).xyz;
-    let len2 = dot(nn, nn);
-    if s.w <= 0.0 || !(len2 > 0.0) {
-        textureStore(out_tex, texel, vec4f(0.0));
-{% if pbr == "split" %}
-        textureStore(specular_tex, texel, vec4f(0.0));
-{% endif %}
-{% if reuse %}
-        reuse_next[gid.y * view.width + gid.x].surface.m = 0.0;
-{% endif %}
-        return;
+    var s = vec4f(0.0);
+    var nn = vec3f(0.0);
+    if inside {
+        s = surface_at(texel);
+        nn = textureLoad(normal_tex, texel, 0).xyz;
     }
+    let len2 = dot(nn, nn);
     let x = s.xyz;
-    let n = nn / sqrt(len2);
+    let has = inside && s.w > 0.0 && len2 > 0.0 && all(abs(x) <= vec3f(F32_MAX));
+    var n = vec3f(0.0, 0.0, 1.0);
+    if has {
+        n = nn / sqrt(len2);
+    }
     var m: Material;
     // The receiver as light selection sees it: Lambertian for irradiance;
     // with a material, its lobe, mirror direction and range scale s (a
@@ -323,16 +325,18 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     var lobe = vec4f(1.0, 0.0, 1.0, 1.0);
     var r = n;
 {% if pbr != "none" %}
-    let mr = textureLoad(metal_rough_tex, texel, 0);
-    m = material_of(textureLoad(base_color_tex, texel, 0).xyz, mr.z, mr.y, mr.w, normalize(view.eye - x));
+    if has {
+        let mr = textureLoad(metal_rough_tex, texel, 0);
+        m = material_of(textureLoad(base_color_tex, texel, 0).xyz, mr.z, mr.y, mr.w, normalize(view.eye - x));
 {% if pbr == "bevy" %}
-    // Selection sees Bevy's material through the glTF lobe of the same F0
-    // (any importance keeps the estimate unbiased).
-    lobe = receiver_lobe(m.base, m.metallic, vec3f(bevy_f0(mr.w)), 1.0, m.alpha, dot(n, m.v));
+        // Selection sees Bevy's material through the glTF lobe of the same
+        // F0 (any importance keeps the estimate unbiased).
+        lobe = receiver_lobe(m.base, m.metallic, vec3f(bevy_f0(mr.w)), 1.0, m.alpha, dot(n, m.v));
 {% else %}
-    lobe = receiver_lobe(m.base, m.metallic, view.f0_d, view.f90_d, m.alpha, dot(n, m.v));
+        lobe = receiver_lobe(m.base, m.metallic, view.f0_d, view.f90_d, m.alpha, dot(n, m.v));
 {% endif %}
-    r = mirror_dir(n, m.v);
+        r = mirror_dir(n, m.v);
+    }
 {% endif %}
     let rl = range_lobe(lobe);
     let eps = view.shadow_offset * length(view.eye - x);
@@ -340,7 +344,113 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     var h = pick_stream(seed);
     var t = Shaded(vec3f(0.0), vec3f(0.0), vec3f(0.0));
 {% if selection == "weighted" %}
-    let picks = bsh_weighted_collect(x, n, r, lobe, rl, seed);
+    var picks = weighted_picks(seed);
+{% elif selection == "resampled" %}
+    // Resampled importance sampling over every light in range: each is
+    // sampled (its point from the pick stream{% if reuse %}, on the 16-bit grid{% endif %}) and evaluated without a
+    // shadow ray, and K independent one-slot weighted reservoirs (the
+    // seed's stream, one hash per take: the threshold form) keep candidate
+    // j with probability p_j / P, p_j the slot's target (slc-core's
+    // slot_target: one colour channel per slot, the channel mean below 3
+    // slots) and P their sum. {% if reuse %}Slot k's pick then has the unbiased
+    // contribution weight P / p̂(y), p̂ its whole unranged target (p_j is
+    // p̂ times the roulette's 1/p), and enters the reuse.{% else %}A kept candidate adds its
+    // contribution shadowed, weighted P / p_j times the slot's share of
+    // each channel (slot_share): the expectation is the shadowed sum. The
+    // rays go only where light arrives unshadowed; a candidate kept by
+    // several slots casts one ray, weighted by all their shares.{% endif %}
+
+    var slot_light: array<u32, K>;
+    var slot_u: array<vec2f, K>;
+    var slot_p: array<f32, K>;
+{% if reuse %}
+    var slot_cells: array<u32, K>;
+{% endif %}
+    var total = vec3f(0.0);
+    var count = 0u;
+    var hc = seed;
+    // Each slot's threshold on its running sum (next_threshold; 0
+    // while empty): one hash per take.
+    var threshold: array<f32, K>;
+{% elif selection == "all" %}
+    var count = 0u;
+{% else %}
+    var picks: Picks;
+    picks.n = 0u;
+    var hr = seed;
+{% endif %}
+    // The lights in range, from the tile's list (bsh_tile.wgsl): the ones
+    // this pixel's own walk of the hierarchy finds, in its order.
+    let walk = tile_walk_begin(lid, x, rl.w, has && rl.w >= 0.0);
+    for (var start = 0u; start < walk.total; start += TILE_LIST) {
+        let listed = tile_walk_fill(lid, walk, start);
+        for (var j = 0u; j < listed; j++) {
+            let b = tile_list[j];
+            if !has || !bsh_reaches(bsh_nodes[b], x, r, rl) {
+                continue;
+            }
+            let li = bsh_nodes[b].light;
+{% if selection == "weighted" %}
+            weighted_offer(&picks, li, light_weight(li, x, n, r, lobe, rl));
+{% elif selection == "resampled" %}
+            count += 1u;
+            h = pcg_hash(h);
+{% if reuse %}
+            let h1 = h;
+            h = pcg_hash(h);
+            let cells = grid_cells(h1, h);
+            let u = vec2f(grid_coordinate(h1), grid_coordinate(h));
+{% else %}
+            let u1 = xi_from_bits(h);
+            h = pcg_hash(h);
+            let u = vec2f(u1, xi_from_bits(h));
+{% endif %}
+            let c = output_of(shade_pick_traced(li, x, n, r, rl, m, 1.0, u.x, u.y, eps, false));
+{% if counters %}
+            evaluations += 1u;
+{% endif %}
+            if resample_target(c) > 0.0 {
+                total += c;
+                for (var q = 0u; q < K; q++) {
+                    let p = slot_target(c, q, K);
+                    let sum = slot_target(total, q, K);
+                    if p > 0.0 && sum > threshold[q] {
+                        slot_light[q] = li;
+                        slot_u[q] = u;
+                        slot_p[q] = p;
+{% if reuse %}
+                        slot_cells[q] = cells;
+{% endif %}
+                        threshold[q] = next_threshold(sum, &hc);
+                    }
+                }
+            }
+{% elif selection == "all" %}
+            count += 1u;
+            h = pcg_hash(h);
+            let u1 = xi_from_bits(h);
+            h = pcg_hash(h);
+            t = add(t, shade_pick(li, x, n, r, rl, m, 1.0, u1, xi_from_bits(h), eps));
+{% else %}
+            reservoir_offer(&picks, &hr, li);
+{% endif %}
+        }
+        // The next round refills the list.
+        workgroupBarrier();
+    }
+    if !has {
+        if inside {
+            textureStore(out_tex, texel, vec4f(0.0));
+{% if pbr == "split" %}
+            textureStore(specular_tex, texel, vec4f(0.0));
+{% endif %}
+{% if reuse %}
+            reuse_next[gid.y * view.width + gid.x].surface.m = 0.0;
+{% endif %}
+        }
+        return;
+    }
+{% if selection == "weighted" %}
     if picks.w_sum > 0.0 {
         // The picks are independent, so a light may be picked more than
         // once. A light without area (point, spot, IES, VPL) has no point
@@ -373,67 +483,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     }
     let count = picks.n;
 {% elif selection == "resampled" %}
-    // Resampled importance sampling over every light in range: each is
-    // sampled (its point from the pick stream{% if reuse %}, on the 16-bit grid{% endif %}) and evaluated without a
-    // shadow ray, and K independent one-slot weighted reservoirs (the
-    // seed's stream, one hash per take: the threshold form) keep candidate
-    // j with probability p_j / P, p_j the slot's target (slc-core's
-    // slot_target: one colour channel per slot, the channel mean below 3
-    // slots) and P their sum. {% if reuse %}Slot k's pick then has the unbiased
-    // contribution weight P / p̂(y), p̂ its whole unranged target (p_j is
-    // p̂ times the roulette's 1/p), and enters the reuse.{% else %}A kept candidate adds its
-    // contribution shadowed, weighted P / p_j times the slot's share of
-    // each channel (slot_share): the expectation is the shadowed sum. The
-    // rays go only where light arrives unshadowed; a candidate kept by
-    // several slots casts one ray, weighted by all their shares.{% endif %}
-
-    var slot_light: array<u32, K>;
-    var slot_u: array<vec2f, K>;
-    var slot_p: array<f32, K>;
-{% if reuse %}
-    var slot_cells: array<u32, K>;
-{% endif %}
-    var total = vec3f(0.0);
-    var count = 0u;
-    var hc = seed;
-    // Each slot's threshold on its running sum (next_threshold; 0
-    // while empty): one hash per take.
-    var threshold: array<f32, K>;
-    for (var b = bsh_next_leaf_lobe(BSH, bsh_first(BSH), x, r, rl); b != BSH_NONE; b = bsh_next_leaf_lobe(BSH, bsh_nodes[b].next, x, r, rl)) {
-        count += 1u;
-        let li = bsh_nodes[b].light;
-        h = pcg_hash(h);
-{% if reuse %}
-        let h1 = h;
-        h = pcg_hash(h);
-        let cells = grid_cells(h1, h);
-        let u = vec2f(grid_coordinate(h1), grid_coordinate(h));
-{% else %}
-        let u1 = xi_from_bits(h);
-        h = pcg_hash(h);
-        let u = vec2f(u1, xi_from_bits(h));
-{% endif %}
-        let c = output_of(shade_pick_traced(li, x, n, r, rl, m, 1.0, u.x, u.y, eps, false));
-{% if counters %}
-        evaluations += 1u;
-{% endif %}
-        if resample_target(c) > 0.0 {
-            total += c;
-            for (var q = 0u; q < K; q++) {
-                let p = slot_target(c, q, K);
-                let sum = slot_target(total, q, K);
-                if p > 0.0 && sum > threshold[q] {
-                    slot_light[q] = li;
-                    slot_u[q] = u;
-                    slot_p[q] = p;
-{% if reuse %}
-                    slot_cells[q] = cells;
-{% endif %}
-                    threshold[q] = next_threshold(sum, &hc);
-                }
-            }
-        }
-    }
+    // The resampled slots' picks (their candidates taken in the tile loop).
 {% if reuse %}
     // Each slot first combines this frame's pick (confidence 1) with the
     // same slot of the pixel's own history (the reprojected pixel, where it
@@ -523,16 +573,8 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     }
 {% endif %}
 {% elif selection == "all" %}
-    var count = 0u;
-    for (var b = bsh_next_leaf_lobe(BSH, bsh_first(BSH), x, r, rl); b != BSH_NONE; b = bsh_next_leaf_lobe(BSH, bsh_nodes[b].next, x, r, rl)) {
-        count += 1u;
-        h = pcg_hash(h);
-        let u1 = xi_from_bits(h);
-        h = pcg_hash(h);
-        t = add(t, shade_pick(bsh_nodes[b].light, x, n, r, rl, m, 1.0, u1, xi_from_bits(h), eps));
-    }
+    // Every light in range is shaded in the tile loop above.
 {% else %}
-    let picks = bsh_collect(x, r, rl, seed);
     let w_res = reservoir_weight(picks.n, K);
     for (var k = 0u; k < min(picks.n, K); k++) {
         h = pcg_hash(h);

@@ -71,6 +71,8 @@ const TEMPORAL_CHANGE_LOW: f32 = 4f;
 const TEMPORAL_CHANGE_HIGH: f32 = 8f;
 const TEMPORAL_MIN_WEIGHT: f32 = 0.01f;
 const BSH: u32 = 0u;
+const BSH_TILE_DEPTH: u32 = 8u;
+const BSH_TILE_SUBTREES: u32 = 256u;
 
 @group(0) @binding(0) 
 var<uniform> params: RefitParams;

@@ -115,6 +115,8 @@ const TEMPORAL_CHANGE_HIGH: f32 = 8f;
 const TEMPORAL_MIN_WEIGHT: f32 = 0.01f;
 const K: u32 = 8u;
 const BSH: u32 = 0u;
+const BSH_TILE_DEPTH: u32 = 8u;
+const BSH_TILE_SUBTREES: u32 = 256u;
 
 @group(1) @binding(0) 
 var<storage> slc_table: array<f32>;
@@ -828,13 +830,40 @@ fn bsh_next_leaf_lobe(nodes_3: u32, start_1: u32, x_10: vec3<f32>, r_4: vec3<f32
     return BSH_NONE;
 }
 
+fn reservoir_offer(picks: ptr<function, Picks>, h_1: ptr<function, u32>, light: u32) {
+    let _e4 = (*picks).n;
+    let _e5 = reservoir_takes(_e4);
+    if _e5 {
+        let _e7 = (*picks).n;
+        (*picks).n = (_e7 + 1u);
+        let _e10 = (*h_1);
+        let _e11 = pcg_hash(_e10);
+        (*h_1) = _e11;
+        let hi_4 = (*h_1);
+        let _e13 = (*h_1);
+        let _e14 = pcg_hash(_e13);
+        (*h_1) = _e14;
+        let _e16 = (*picks).n;
+        let _e18 = (*h_1);
+        let _e19 = reservoir_slot(_e16, K, hi_4, _e18);
+        if (_e19 < K) {
+            (*picks).light[_e19] = light;
+            return;
+        } else {
+            return;
+        }
+    } else {
+        return;
+    }
+}
+
 fn bsh_collect(x_11: vec3<f32>, r_5: vec3<f32>, rl_5: vec4<f32>, seed_1: u32) -> Picks {
-    var picks: Picks;
-    var h_1: u32;
+    var picks_1: Picks;
+    var h_2: u32;
     var i_4: u32;
 
-    picks.n = 0u;
-    h_1 = seed_1;
+    picks_1.n = 0u;
+    h_2 = seed_1;
     let _e10 = bsh_first(BSH);
     let _e11 = bsh_next_leaf_lobe(BSH, _e10, x_11, r_5, rl_5);
     i_4 = _e11;
@@ -845,37 +874,19 @@ fn bsh_collect(x_11: vec3<f32>, r_5: vec3<f32>, rl_5: vec4<f32>, seed_1: u32) ->
             break;
         }
         {
-            let _e17 = picks.n;
-            let _e18 = reservoir_takes(_e17);
-            if _e18 {
-                let _e20 = picks.n;
-                picks.n = (_e20 + 1u);
-                let _e23 = h_1;
-                let _e24 = pcg_hash(_e23);
-                h_1 = _e24;
-                let hi_4 = h_1;
-                let _e26 = h_1;
-                let _e27 = pcg_hash(_e26);
-                h_1 = _e27;
-                let _e29 = picks.n;
-                let _e31 = h_1;
-                let _e32 = reservoir_slot(_e29, K, hi_4, _e31);
-                if (_e32 < K) {
-                    let _e38 = i_4;
-                    let _e41 = bsh_nodes[_e38].light;
-                    picks.light[_e32] = _e41;
-                }
-            }
+            let _e17 = i_4;
+            let _e20 = bsh_nodes[_e17].light;
+            reservoir_offer((&picks_1), (&h_2), _e20);
         }
         continuing {
-            let _e44 = i_4;
-            let _e47 = bsh_nodes[_e44].next;
-            let _e48 = bsh_next_leaf_lobe(BSH, _e47, x_11, r_5, rl_5);
-            i_4 = _e48;
+            let _e23 = i_4;
+            let _e26 = bsh_nodes[_e23].next;
+            let _e27 = bsh_next_leaf_lobe(BSH, _e26, x_11, r_5, rl_5);
+            i_4 = _e27;
         }
     }
-    let _e49 = picks;
-    return _e49;
+    let _e28 = picks_1;
+    return _e28;
 }
 
 fn connect_record(l_2: GpuLight, x_12: vec3<f32>, n_6: vec3<f32>, ng_1: vec3<f32>, r2_2: f32, rt2_2: f32, w_res: f32, u1_1: f32, u2_1: f32, eps: f32, trace_1: bool) -> Connection {

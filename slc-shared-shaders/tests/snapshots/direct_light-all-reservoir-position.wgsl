@@ -44,6 +44,18 @@ struct Connection {
     cos_x: f32,
 }
 
+struct WorkgroupBox {
+    lo: vec3<f32>,
+    hi: vec3<f32>,
+}
+
+struct TileWalk {
+    lo: vec3<f32>,
+    hi: vec3<f32>,
+    w: f32,
+    total: u32,
+}
+
 struct Shaded {
     e: vec3<f32>,
     diffuse: vec3<f32>,
@@ -117,6 +129,11 @@ const TEMPORAL_CHANGE_HIGH: f32 = 8f;
 const TEMPORAL_MIN_WEIGHT: f32 = 0.01f;
 const K: u32 = 8u;
 const BSH: u32 = 0u;
+const BSH_TILE_DEPTH: u32 = 8u;
+const BSH_TILE_SUBTREES: u32 = 256u;
+const TILE_THREADS: u32 = 64u;
+const BOX_THREADS: u32 = 64u;
+const TILE_LIST: u32 = 1024u;
 
 @group(1) @binding(0) 
 var<storage> slc_table: array<f32>;
@@ -136,6 +153,13 @@ var<storage> rt2_3: array<f32>;
 var<storage> r2_3: array<f32>;
 @group(1) @binding(4) 
 var<storage> bsh_nodes: array<BshNode>;
+var<workgroup> wg_lo: array<vec3<f32>, 64>;
+var<workgroup> wg_hi: array<vec3<f32>, 64>;
+var<workgroup> wg_box: WorkgroupBox;
+var<workgroup> tile_list: array<u32, 1024>;
+var<workgroup> subtree_at: array<u32, 256>;
+var<workgroup> tile_scale: atomic<u32>;
+var<workgroup> tile_total: u32;
 
 fn at(tab: u32, i: u32) -> f32 {
     let _e4 = slc_table[i];
@@ -202,6 +226,12 @@ fn sphere_contains_point(c: vec3<f32>, r_1: f32, x_2: vec3<f32>) -> bool {
     return (dot(v_2, v_2) <= (r_1 * r_1));
 }
 
+fn sphere_overlaps_aabb(c_1: vec3<f32>, r_2: f32, bmin: vec3<f32>, bmax: vec3<f32>) -> bool {
+    let q = clamp(c_1, bmin, bmax);
+    let v_3 = (q - c_1);
+    return (dot(v_3, v_3) <= (r_2 * r_2));
+}
+
 fn inverse_square(d2_2: f32) -> f32 {
     return (1f / max(d2_2, MIN_D2_));
 }
@@ -212,30 +242,30 @@ fn connection_factor(cos_x: f32, d2_3: f32, rt2_1: f32, w: f32) -> f32 {
     return (((cos_x * _e4) * _e6) * w);
 }
 
-fn connection_cosine(x_3: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, r2_1: f32) -> f32 {
-    var local_2: bool;
-    var local_3: bool;
+fn connection_cosine(x_3: vec3<f32>, y: vec3<f32>, n_1: vec3<f32>, ng: vec3<f32>, r2_1: f32) -> f32 {
+    var local_6: bool;
+    var local_7: bool;
 
-    let v_3 = (x_3 - y);
-    let d2_6 = dot(v_3, v_3);
+    let v_4 = (x_3 - y);
+    let d2_6 = dot(v_4, v_4);
     let _e7 = slc_keep(r2_1, d2_6);
     if !(!(_e7)) {
-        local_2 = !((d2_6 > 0f));
+        local_6 = !((d2_6 > 0f));
     } else {
-        local_2 = true;
+        local_6 = true;
     }
-    let _e16 = local_2;
+    let _e16 = local_6;
     if _e16 {
         return 0f;
     }
-    let w_6 = (v_3 / vec3(sqrt(d2_6)));
-    let cos_x_1 = -(dot(n, w_6));
+    let w_9 = (v_4 / vec3(sqrt(d2_6)));
+    let cos_x_1 = -(dot(n_1, w_9));
     if !((cos_x_1 <= 0f)) {
-        local_3 = (dot(ng, w_6) >= 0f);
+        local_7 = (dot(ng, w_9) >= 0f);
     } else {
-        local_3 = true;
+        local_7 = true;
     }
-    let _e32 = local_3;
+    let _e32 = local_7;
     if _e32 {
         return 0f;
     }
@@ -246,19 +276,19 @@ fn spot_falloff(cos_theta: f32, cos_outer: f32, cos_inner: f32, shape: f32) -> f
     if (cos_inner <= cos_outer) {
         return select(0f, 1f, (cos_theta >= cos_outer));
     }
-    let t_2 = saturate(((cos_theta - cos_outer) / (cos_inner - cos_outer)));
-    return select(((t_2 * t_2) * (3f - (2f * t_2))), (t_2 * t_2), (shape > 0.5f));
+    let t_5 = saturate(((cos_theta - cos_outer) / (cos_inner - cos_outer)));
+    return select(((t_5 * t_5) * (3f - (2f * t_5))), (t_5 * t_5), (shape > 0.5f));
 }
 
-fn triangle_lobe(n_1: vec3<f32>, area: f32, w_1: vec3<f32>) -> f32 {
-    return (area * max(dot(n_1, w_1), 0f));
+fn triangle_lobe(n_2: vec3<f32>, area: f32, w_1: vec3<f32>) -> f32 {
+    return (area * max(dot(n_2, w_1), 0f));
 }
 
-fn triangle_sample(a_2: vec3<f32>, b_2: vec3<f32>, c_1: vec3<f32>, u1_: f32, u2_: f32) -> vec3<f32> {
+fn triangle_sample(a_2: vec3<f32>, b_2: vec3<f32>, c_2: vec3<f32>, u1_: f32, u2_: f32) -> vec3<f32> {
     let su = sqrt(u1_);
     let b0_ = (1f - su);
     let b1_ = (u2_ * su);
-    return (((a_2 * b0_) + (b_2 * b1_)) + (c_1 * ((1f - b0_) - b1_)));
+    return (((a_2 * b0_) + (b_2 * b1_)) + (c_2 * ((1f - b0_) - b1_)));
 }
 
 fn atan_portable(x_4: f32) -> f32 {
@@ -282,8 +312,8 @@ fn atan_portable(x_4: f32) -> f32 {
     let _e21 = base;
     let _e33 = t_1;
     let _e35 = t_1;
-    let r_9 = (_e21 + (((((((((0.080537446f * z) - 0.13877685f) * z) + 0.19977711f) * z) - 0.3333295f) * z) * _e33) + _e35));
-    return select(r_9, -(r_9), (x_4 < 0f));
+    let r_8 = (_e21 + (((((((((0.080537446f * z) - 0.13877685f) * z) + 0.19977711f) * z) - 0.3333295f) * z) * _e33) + _e35));
+    return select(r_8, -(r_8), (x_4 < 0f));
 }
 
 fn atan2_portable(y_1: f32, x_5: f32) -> f32 {
@@ -306,10 +336,10 @@ fn atan2_portable(y_1: f32, x_5: f32) -> f32 {
     return (_e12 - 3.1415927f);
 }
 
-fn ies_fold_c(c_2: f32, h_first: f32, h_last: f32) -> f32 {
+fn ies_fold_c(c_3: f32, h_first: f32, h_last: f32) -> f32 {
     var a_3: f32;
 
-    a_3 = (c_2 - (360f * floor((c_2 / 360f))));
+    a_3 = (c_3 - (360f * floor((c_3 / 360f))));
     if (h_last <= 0f) {
         return 0f;
     }
@@ -355,14 +385,14 @@ fn ies_fold_c(c_2: f32, h_first: f32, h_last: f32) -> f32 {
     return _e52;
 }
 
-fn ies_segment(tab_1: u32, start: u32, n_2: u32, x_6: f32) -> u32 {
+fn ies_segment(tab_1: u32, start_1: u32, n_3: u32, x_6: f32) -> u32 {
     var lo: u32 = 0u;
     var hi: u32;
 
-    if (n_2 < 2u) {
+    if (n_3 < 2u) {
         return 0u;
     }
-    hi = (n_2 - 1u);
+    hi = (n_3 - 1u);
     loop {
         let _e12 = hi;
         let _e13 = lo;
@@ -374,7 +404,7 @@ fn ies_segment(tab_1: u32, start: u32, n_2: u32, x_6: f32) -> u32 {
             let _e17 = lo;
             let _e18 = hi;
             let mid = ((_e17 + _e18) >> 1u);
-            let _e23 = at(tab_1, (start + mid));
+            let _e23 = at(tab_1, (start_1 + mid));
             if (_e23 <= x_6) {
                 lo = mid;
             } else {
@@ -393,8 +423,8 @@ fn ies_lerp_t(a0_: f32, a1_: f32, x_7: f32) -> f32 {
     return saturate(((x_7 - a0_) / (a1_ - a0_)));
 }
 
-fn ies_candela(tab_2: u32, base_1: u32, gamma: f32, c_3: f32) -> f32 {
-    var local_4: bool;
+fn ies_candela(tab_2: u32, base_1: u32, gamma: f32, c_4: f32) -> f32 {
+    var local_8: bool;
 
     let _e4 = at(tab_2, base_1);
     let _e5 = to_u32_(_e4);
@@ -406,17 +436,17 @@ fn ies_candela(tab_2: u32, base_1: u32, gamma: f32, c_3: f32) -> f32 {
     let _e14 = at(tab_2, v0_);
     if !((gamma < _e14)) {
         let _e22 = at(tab_2, ((v0_ + _e5) - 1u));
-        local_4 = (gamma > _e22);
+        local_8 = (gamma > _e22);
     } else {
-        local_4 = true;
+        local_8 = true;
     }
-    let _e25 = local_4;
+    let _e25 = local_8;
     if _e25 {
         return 0f;
     }
     let _e27 = at(tab_2, h0_);
     let _e31 = at(tab_2, ((h0_ + _e9) - 1u));
-    let _e32 = ies_fold_c(c_3, _e27, _e31);
+    let _e32 = ies_fold_c(c_4, _e27, _e31);
     let _e33 = ies_segment(tab_2, v0_, _e5, gamma);
     let _e34 = ies_segment(tab_2, h0_, _e9, _e32);
     let iv1_ = min((_e33 + 1u), (_e5 - 1u));
@@ -432,8 +462,8 @@ fn ies_candela(tab_2: u32, base_1: u32, gamma: f32, c_3: f32) -> f32 {
     let a_11 = ((_e58 * (1f - _e49)) + (_e65 * _e49));
     let _e71 = at(tab_2, ((c0_ + (ih1_ * _e5)) + _e33));
     let _e78 = at(tab_2, ((c0_ + (ih1_ * _e5)) + iv1_));
-    let b_7 = ((_e71 * (1f - _e49)) + (_e78 * _e49));
-    return ((a_11 * (1f - _e54)) + (b_7 * _e54));
+    let b_9 = ((_e71 * (1f - _e49)) + (_e78 * _e49));
+    return ((a_11 * (1f - _e54)) + (b_9 * _e54));
 }
 
 fn ies_candela_dir(tab_3: u32, base_2: u32, wn: f32, wr: f32, ws: f32) -> f32 {
@@ -441,8 +471,8 @@ fn ies_candela_dir(tab_3: u32, base_2: u32, wn: f32, wr: f32, ws: f32) -> f32 {
     let gamma_1 = degrees(_e9);
     let on_axis = ((abs(wr) + abs(ws)) <= 0f);
     let _e16 = atan2_portable(ws, wr);
-    let c_7 = select(degrees(_e16), 0f, on_axis);
-    let _e20 = ies_candela(tab_3, base_2, gamma_1, c_7);
+    let c_8 = select(degrees(_e16), 0f, on_axis);
+    let _e20 = ies_candela(tab_3, base_2, gamma_1, c_8);
     return _e20;
 }
 
@@ -483,33 +513,33 @@ fn mul_hi_u32_(a_4: u32, b_3: u32) -> u32 {
     return (((hh + (lh >> 16u)) + (hl >> 16u)) + (mid_1 >> 16u));
 }
 
-fn uniform_index(n_3: u32, hi_1: u32, lo_1: u32) -> u32 {
-    let _e3 = mul_lo_u32_(hi_1, n_3);
-    let _e4 = mul_hi_u32_(hi_1, n_3);
-    let _e5 = mul_hi_u32_(lo_1, n_3);
+fn uniform_index(n_4: u32, hi_1: u32, lo_1: u32) -> u32 {
+    let _e3 = mul_lo_u32_(hi_1, n_4);
+    let _e4 = mul_hi_u32_(hi_1, n_4);
+    let _e5 = mul_hi_u32_(lo_1, n_4);
     if (_e3 > (4294967295u - _e5)) {
         return (_e4 + 1u);
     }
     return _e4;
 }
 
-fn reservoir_slot(n_4: u32, k_1: u32, hi_2: u32, lo_2: u32) -> u32 {
-    if (n_4 <= k_1) {
-        return (n_4 - 1u);
+fn reservoir_slot(n_5: u32, k_1: u32, hi_2: u32, lo_2: u32) -> u32 {
+    if (n_5 <= k_1) {
+        return (n_5 - 1u);
     }
-    let _e7 = uniform_index(n_4, hi_2, lo_2);
+    let _e7 = uniform_index(n_5, hi_2, lo_2);
     if (_e7 < k_1) {
         return _e7;
     }
     return k_1;
 }
 
-fn reservoir_takes(n_5: u32) -> bool {
-    return (n_5 < RESERVOIR_FULL);
+fn reservoir_takes(n_6: u32) -> bool {
+    return (n_6 < RESERVOIR_FULL);
 }
 
-fn reservoir_weight(n_6: u32, k_2: u32) -> f32 {
-    let _e2 = to_f32_(n_6);
+fn reservoir_weight(n_7: u32, k_2: u32) -> f32 {
+    let _e2 = to_f32_(n_7);
     let _e3 = to_f32_(k_2);
     return max((_e2 / _e3), 1f);
 }
@@ -547,65 +577,65 @@ fn range_lobe(lobe_4: vec4<f32>) -> vec4<f32> {
 }
 
 fn cone_cos_of(v: vec3<f32>, d2_4: f32, a_5: f32, d: vec3<f32>) -> f32 {
-    var local_5: bool;
-    var local_6: bool;
+    var local_9: bool;
+    var local_10: bool;
 
     let vd = dot(v, d);
     let h2_ = (d2_4 - (a_5 * a_5));
     if !((h2_ <= 0f)) {
         if (vd >= 0f) {
-            local_6 = ((vd * vd) >= h2_);
+            local_10 = ((vd * vd) >= h2_);
         } else {
-            local_6 = false;
+            local_10 = false;
         }
-        let _e19 = local_6;
-        local_5 = _e19;
+        let _e19 = local_10;
+        local_9 = _e19;
     } else {
-        local_5 = true;
+        local_9 = true;
     }
-    let _e21 = local_5;
+    let _e21 = local_9;
     if _e21 {
         return 1f;
     }
-    let c_8 = cross(v, d);
-    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_8, c_8)) * a_5)) / d2_4), 1f);
+    let c_9 = cross(v, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_9, c_9)) * a_5)) / d2_4), 1f);
 }
 
 fn cone_cos_toward(center: vec3<f32>, radius: f32, p: vec3<f32>, d_1: vec3<f32>) -> f32 {
-    let v_4 = (center - p);
-    let _e6 = cone_cos_of(v_4, dot(v_4, v_4), radius, d_1);
+    let v_5 = (center - p);
+    let _e6 = cone_cos_of(v_5, dot(v_5, v_5), radius, d_1);
     return _e6;
 }
 
 fn range_scale_at(rl: vec4<f32>, cos_t: f32) -> f32 {
-    let t_3 = (((0.5f + (0.5f * cos_t)) * (rl.z - 1f)) + 1f);
-    return clamp((rl.x + ((rl.y * rl.z) / (t_3 * t_3))), 1f, (rl.w * rl.w));
+    let t_6 = (((0.5f + (0.5f * cos_t)) * (rl.z - 1f)) + 1f);
+    return clamp((rl.x + ((rl.y * rl.z) / (t_6 * t_6))), 1f, (rl.w * rl.w));
 }
 
-fn range_scale_toward(rl_1: vec4<f32>, center_1: vec3<f32>, radius_1: f32, p_1: vec3<f32>, r_2: vec3<f32>) -> f32 {
+fn range_scale_toward(rl_1: vec4<f32>, center_1: vec3<f32>, radius_1: f32, p_1: vec3<f32>, r_3: vec3<f32>) -> f32 {
     if (rl_1.w <= 1f) {
         return 1f;
     }
-    let _e9 = cone_cos_toward(center_1, radius_1, p_1, r_2);
+    let _e9 = cone_cos_toward(center_1, radius_1, p_1, r_3);
     let _e10 = range_scale_at(rl_1, _e9);
     return _e10;
 }
 
-fn triangle_normal(a_6: vec3<f32>, b_4: vec3<f32>, c_4: vec3<f32>) -> vec3<f32> {
-    var local_7: bool;
+fn triangle_normal(a_6: vec3<f32>, b_4: vec3<f32>, c_5: vec3<f32>) -> vec3<f32> {
+    var local_11: bool;
 
-    let n_12 = cross((b_4 - a_6), (c_4 - a_6));
-    let l2_ = dot(n_12, n_12);
+    let n_13 = cross((b_4 - a_6), (c_5 - a_6));
+    let l2_ = dot(n_13, n_13);
     if !(!((l2_ > 0f))) {
-        local_7 = !((l2_ < 300000000000000000000000000000000000000f));
+        local_11 = !((l2_ < 300000000000000000000000000000000000000f));
     } else {
-        local_7 = true;
+        local_11 = true;
     }
-    let _e17 = local_7;
+    let _e17 = local_11;
     if _e17 {
         return vec3<f32>(0f, 0f, 0f);
     }
-    return (n_12 / vec3(sqrt(l2_)));
+    return (n_13 / vec3(sqrt(l2_)));
 }
 
 fn light_intensity(l: GpuLight, w_3: vec3<f32>) -> vec3<f32> {
@@ -661,15 +691,15 @@ fn bsh_first(nodes_2: u32) -> u32 {
     return BSH_NONE;
 }
 
-fn bsh_inner_scale(a_8: f32, v_1: vec3<f32>, d2_5: f32, r_3: vec3<f32>, rl_2: vec4<f32>) -> f32 {
-    let _e5 = cone_cos_of(v_1, d2_5, a_8, r_3);
+fn bsh_inner_scale(a_8: f32, v_1: vec3<f32>, d2_5: f32, r_4: vec3<f32>, rl_2: vec4<f32>) -> f32 {
+    let _e5 = cone_cos_of(v_1, d2_5, a_8, r_4);
     let _e8 = range_scale_at(rl_2, (_e5 + 0.000002f));
     return _e8;
 }
 
-fn bsh_reaches(node_2: BshNode, x_8: vec3<f32>, r_4: vec3<f32>, rl_3: vec4<f32>) -> bool {
-    var local_8: bool;
-    var local_9: bool;
+fn bsh_reaches(node_2: BshNode, x_8: vec3<f32>, r_5: vec3<f32>, rl_3: vec4<f32>) -> bool {
+    var local_12: bool;
+    var local_13: bool;
 
     let _e6 = sphere_contains_point(node_2.center, node_2.radius, x_8);
     if _e6 {
@@ -677,282 +707,619 @@ fn bsh_reaches(node_2: BshNode, x_8: vec3<f32>, r_4: vec3<f32>, rl_3: vec4<f32>)
     }
     if !((rl_3.w <= 1f)) {
         let _e20 = sphere_contains_point(node_2.center, (node_2.radius * (rl_3.w * 1.0001f)), x_8);
-        local_8 = !(_e20);
+        local_12 = !(_e20);
     } else {
-        local_8 = true;
+        local_12 = true;
     }
-    let _e23 = local_8;
+    let _e23 = local_12;
     if _e23 {
         return false;
     }
     let _e25 = bsh_range_bound(node_2);
-    let v_5 = (x_8 - node_2.center);
-    let d2_7 = dot(v_5, v_5);
+    let v_6 = (x_8 - node_2.center);
+    let d2_7 = dot(v_6, v_6);
     let reach_max = (node_2.extent + ((rl_3.w * 1.001f) * _e25));
     if (d2_7 > (reach_max * reach_max)) {
         return false;
     }
     if (node_2.child == BSH_NONE) {
-        let _e43 = range_scale_toward(rl_3, node_2.center, node_2.extent, x_8, r_4);
+        let _e43 = range_scale_toward(rl_3, node_2.center, node_2.extent, x_8, r_5);
         let _e46 = bsh_scaled_radius(node_2, sqrt(_e43));
         let _e47 = sphere_contains_point(node_2.center, _e46, x_8);
         return _e47;
     }
-    let _e50 = bsh_inner_scale(node_2.extent, -(v_5), d2_7, r_4, rl_3);
+    let _e50 = bsh_inner_scale(node_2.extent, -(v_6), d2_7, r_5, rl_3);
     let s_c = (_e50 * 1.001f);
     let reach = (node_2.extent + (sqrt(s_c) * _e25));
     if (d2_7 <= ((node_2.radius * node_2.radius) * s_c)) {
-        local_9 = (d2_7 <= (reach * reach));
+        local_13 = (d2_7 <= (reach * reach));
     } else {
-        local_9 = false;
+        local_13 = false;
     }
-    let _e67 = local_9;
+    let _e67 = local_13;
     return _e67;
 }
 
-fn bsh_next_leaf_lobe(nodes_3: u32, start_1: u32, x_9: vec3<f32>, r_5: vec3<f32>, rl_4: vec4<f32>) -> u32 {
-    var i_2: u32;
+fn bsh_reaches_box(node_3: BshNode, lo_3: vec3<f32>, hi_3: vec3<f32>, w_4: f32) -> bool {
+    let _e13 = sphere_overlaps_aabb(node_3.center, (node_3.radius * (max(1f, (w_4 * 1.0001f)) * 1.0001f)), lo_3, hi_3);
+    return _e13;
+}
 
-    i_2 = start_1;
+fn bsh_subtree(nodes_3: u32, s_1: u32, depth: u32) -> u32 {
+    var i_2: u32;
+    var level: u32 = 0u;
+    var local_14: bool;
+
+    let _e3 = bsh_first(nodes_3);
+    i_2 = _e3;
     loop {
-        let _e6 = i_2;
-        if (_e6 != BSH_NONE) {
+        let _e7 = level;
+        if (_e7 < depth) {
+            let _e11 = i_2;
+            local_14 = (_e11 != BSH_NONE);
+        } else {
+            local_14 = false;
+        }
+        let _e15 = local_14;
+        if _e15 {
         } else {
             break;
         }
         {
-            let _e9 = i_2;
-            let _e10 = bsh_node(nodes_3, _e9);
-            let _e11 = bsh_reaches(_e10, x_9, r_5, rl_4);
-            if _e11 {
-                if (_e10.child == BSH_NONE) {
-                    let _e15 = i_2;
-                    return _e15;
+            let _e16 = i_2;
+            let _e17 = bsh_node(nodes_3, _e16);
+            let _e18 = level;
+            let below = (depth - _e18);
+            if (_e17.child == BSH_NONE) {
+                if ((s_1 << (32u - below)) != 0u) {
+                    return BSH_NONE;
                 }
-                i_2 = _e10.child;
-            } else {
-                i_2 = _e10.next;
+                let _e29 = i_2;
+                return _e29;
             }
+            if (((s_1 >> (below - 1u)) & 1u) == 0u) {
+                i_2 = _e17.child;
+            } else {
+                let _e39 = bsh_node(nodes_3, _e17.child);
+                i_2 = _e39.next;
+            }
+            let _e41 = level;
+            level = (_e41 + 1u);
         }
     }
-    return BSH_NONE;
+    let _e44 = i_2;
+    return _e44;
 }
 
-fn bsh_collect(x_10: vec3<f32>, r_6: vec3<f32>, rl_5: vec4<f32>, seed_1: u32) -> Picks {
-    var picks: Picks;
-    var h_1: u32;
+fn bsh_next_leaf_box(nodes_4: u32, start_2: u32, end: u32, lo_4: vec3<f32>, hi_4: vec3<f32>, w_5: f32) -> u32 {
     var i_3: u32;
 
-    picks.n = 0u;
-    h_1 = seed_1;
-    let _e10 = bsh_first(BSH);
-    let _e11 = bsh_next_leaf_lobe(BSH, _e10, x_10, r_6, rl_5);
-    i_3 = _e11;
+    i_3 = start_2;
     loop {
-        let _e13 = i_3;
-        if (_e13 != BSH_NONE) {
+        let _e7 = i_3;
+        if (_e7 != end) {
         } else {
             break;
         }
         {
-            let _e17 = picks.n;
-            let _e18 = reservoir_takes(_e17);
-            if _e18 {
-                let _e20 = picks.n;
-                picks.n = (_e20 + 1u);
-                let _e23 = h_1;
-                let _e24 = pcg_hash(_e23);
-                h_1 = _e24;
-                let hi_3 = h_1;
-                let _e26 = h_1;
-                let _e27 = pcg_hash(_e26);
-                h_1 = _e27;
-                let _e29 = picks.n;
-                let _e31 = h_1;
-                let _e32 = reservoir_slot(_e29, K, hi_3, _e31);
-                if (_e32 < K) {
-                    let _e38 = i_3;
-                    let _e41 = bsh_nodes[_e38].light;
-                    picks.light[_e32] = _e41;
+            let _e9 = i_3;
+            let _e10 = bsh_node(nodes_4, _e9);
+            let _e11 = bsh_reaches_box(_e10, lo_4, hi_4, w_5);
+            if _e11 {
+                if (_e10.child == BSH_NONE) {
+                    let _e15 = i_3;
+                    return _e15;
                 }
+                i_3 = _e10.child;
+            } else {
+                i_3 = _e10.next;
             }
         }
-        continuing {
-            let _e44 = i_3;
-            let _e47 = bsh_nodes[_e44].next;
-            let _e48 = bsh_next_leaf_lobe(BSH, _e47, x_10, r_6, rl_5);
-            i_3 = _e48;
-        }
     }
-    let _e49 = picks;
-    return _e49;
+    return end;
 }
 
-fn connect_record(l_2: GpuLight, x_11: vec3<f32>, n_7: vec3<f32>, ng_1: vec3<f32>, r2_2: f32, rt2_2: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32, trace: bool) -> Connection {
-    var c_5: Connection;
-    var local_10: bool;
-    var local_11: bool;
+fn reservoir_offer(picks_1: ptr<function, Picks>, h_1: ptr<function, u32>, light: u32) {
+    let _e4 = (*picks_1).n;
+    let _e5 = reservoir_takes(_e4);
+    if _e5 {
+        let _e7 = (*picks_1).n;
+        (*picks_1).n = (_e7 + 1u);
+        let _e10 = (*h_1);
+        let _e11 = pcg_hash(_e10);
+        (*h_1) = _e11;
+        let hi_6 = (*h_1);
+        let _e13 = (*h_1);
+        let _e14 = pcg_hash(_e13);
+        (*h_1) = _e14;
+        let _e16 = (*picks_1).n;
+        let _e18 = (*h_1);
+        let _e19 = reservoir_slot(_e16, K, hi_6, _e18);
+        if (_e19 < K) {
+            (*picks_1).light[_e19] = light;
+            return;
+        } else {
+            return;
+        }
+    } else {
+        return;
+    }
+}
 
-    c_5.e = vec3(0f);
+fn connect_record(l_2: GpuLight, x_9: vec3<f32>, n_8: vec3<f32>, ng_1: vec3<f32>, r2_2: f32, rt2_2: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32, trace: bool) -> Connection {
+    var c_6: Connection;
+    var local_15: bool;
+    var local_16: bool;
+
+    c_6.e = vec3(0f);
     let _e16 = light_point(l_2, u1_2, u2_2);
-    c_5.y = _e16;
-    let _e19 = c_5.y;
-    let _e20 = connection_cosine(x_11, _e19, n_7, ng_1, r2_2);
-    c_5.cos_x = _e20;
-    let _e22 = c_5.cos_x;
+    c_6.y = _e16;
+    let _e19 = c_6.y;
+    let _e20 = connection_cosine(x_9, _e19, n_8, ng_1, r2_2);
+    c_6.cos_x = _e20;
+    let _e22 = c_6.cos_x;
     if !((_e22 <= 0f)) {
         if trace {
-            let _e33 = c_5.y;
-            let _e34 = occluded((x_11 + (ng_1 * eps)), _e33);
-            local_11 = _e34;
+            let _e33 = c_6.y;
+            let _e34 = occluded((x_9 + (ng_1 * eps)), _e33);
+            local_16 = _e34;
         } else {
-            local_11 = false;
+            local_16 = false;
         }
-        let _e36 = local_11;
-        local_10 = _e36;
+        let _e36 = local_16;
+        local_15 = _e36;
     } else {
-        local_10 = true;
+        local_15 = true;
     }
-    let _e38 = local_10;
+    let _e38 = local_15;
     if _e38 {
-        let _e39 = c_5;
+        let _e39 = c_6;
         return _e39;
     }
-    let _e41 = c_5.y;
-    let v_6 = (x_11 - _e41);
-    let d2_8 = dot(v_6, v_6);
-    let _e48 = light_intensity(l_2, (v_6 / vec3(sqrt(d2_8))));
-    let _e50 = c_5.cos_x;
+    let _e41 = c_6.y;
+    let v_7 = (x_9 - _e41);
+    let d2_8 = dot(v_7, v_7);
+    let _e48 = light_intensity(l_2, (v_7 / vec3(sqrt(d2_8))));
+    let _e50 = c_6.cos_x;
     let _e51 = connection_factor(_e50, d2_8, rt2_2, w_res);
-    c_5.e = (_e48 * _e51);
-    let _e53 = c_5;
+    c_6.e = (_e48 * _e51);
+    let _e53 = c_6;
     return _e53;
 }
 
-fn connect_traced(li: u32, x_12: vec3<f32>, n_8: vec3<f32>, ng_2: vec3<f32>, s: f32, w_res_1: f32, u1_3: f32, u2_3: f32, eps_1: f32, trace_1: bool) -> Connection {
+fn connect_traced(li: u32, x_10: vec3<f32>, n_9: vec3<f32>, ng_2: vec3<f32>, s_2: f32, w_res_1: f32, u1_3: f32, u2_3: f32, eps_1: f32, trace_1: bool) -> Connection {
     let _e12 = lights[li];
     let _e15 = r2_3[li];
     let _e19 = rt2_3[li];
-    let _e21 = connect_record(_e12, x_12, n_8, ng_2, (s * _e15), (s * _e19), w_res_1, u1_3, u2_3, eps_1, trace_1);
+    let _e21 = connect_record(_e12, x_10, n_9, ng_2, (s_2 * _e15), (s_2 * _e19), w_res_1, u1_3, u2_3, eps_1, trace_1);
     return _e21;
 }
 
 fn surface_at(texel: vec2<i32>) -> vec4<f32> {
-    let p_2 = textureLoad(position_tex, texel, 0i);
-    return select(vec4(0f), vec4<f32>(p_2.xyz, 1f), (p_2.w > 0f));
+    let p_4 = textureLoad(position_tex, texel, 0i);
+    return select(vec4(0f), vec4<f32>(p_4.xyz, 1f), (p_4.w > 0f));
 }
 
-fn shade_connection(c_6: Connection, x_13: vec3<f32>, n_9: vec3<f32>, m_1: Material) -> Shaded {
-    var s_1: Shaded;
+fn workgroup_bounds(li_1: u32, lo_5: vec3<f32>, hi_5: vec3<f32>) -> WorkgroupBox {
+    var stride: u32 = 32u;
 
-    s_1.e = c_6.e;
-    s_1.diffuse = vec3(0f);
-    s_1.specular = vec3(0f);
-    let _e13 = s_1;
+    wg_lo[li_1] = lo_5;
+    wg_hi[li_1] = hi_5;
+    workgroupBarrier();
+    loop {
+        let _e9 = stride;
+        if (_e9 > 0u) {
+        } else {
+            break;
+        }
+        {
+            let _e12 = stride;
+            if (li_1 < _e12) {
+                let _e18 = wg_lo[li_1];
+                let _e20 = stride;
+                let _e23 = wg_lo[(li_1 + _e20)];
+                wg_lo[li_1] = min(_e18, _e23);
+                let _e29 = wg_hi[li_1];
+                let _e31 = stride;
+                let _e34 = wg_hi[(li_1 + _e31)];
+                wg_hi[li_1] = max(_e29, _e34);
+            }
+            workgroupBarrier();
+        }
+        continuing {
+            let _e36 = stride;
+            stride = (_e36 / 2u);
+        }
+    }
+    if (li_1 == 0u) {
+        let _e44 = wg_lo[0];
+        let _e47 = wg_hi[0];
+        wg_box = WorkgroupBox(_e44, _e47);
+    }
+    let _e50 = workgroupUniformLoad((&wg_box));
+    return _e50;
+}
+
+fn workgroup_box(li_2: u32, p_2: vec3<f32>, has: bool) -> WorkgroupBox {
+    let _e9 = workgroup_bounds(li_2, select(vec3(340282350000000000000000000000000000000f), p_2, has), select(vec3(-340282350000000000000000000000000000000f), p_2, has));
+    return _e9;
+}
+
+fn box_is_empty(b_6: WorkgroupBox) -> bool {
+    return (b_6.lo.x > b_6.hi.x);
+}
+
+fn tile_subtree(s_3: u32, t_2: TileWalk, list: bool, at_1: u32, start_3: u32, to: u32) -> u32 {
+    var p_3: u32;
+    var b_7: u32;
+    var local_17: bool;
+    var local_18: bool;
+    var local_19: bool;
+
+    let _e8 = bsh_subtree(BSH, s_3, BSH_TILE_DEPTH);
+    if (_e8 == BSH_NONE) {
+        return 0u;
+    }
+    let end_1 = bsh_nodes[_e8].next;
+    p_3 = at_1;
+    let _e21 = bsh_next_leaf_box(BSH, _e8, end_1, t_2.lo, t_2.hi, t_2.w);
+    b_7 = _e21;
+    loop {
+        let _e23 = b_7;
+        if (_e23 != end_1) {
+            if !(!(list)) {
+                let _e31 = p_3;
+                local_18 = (_e31 < to);
+            } else {
+                local_18 = true;
+            }
+            let _e34 = local_18;
+            local_17 = _e34;
+        } else {
+            local_17 = false;
+        }
+        let _e36 = local_17;
+        if _e36 {
+        } else {
+            break;
+        }
+        {
+            if list {
+                let _e39 = p_3;
+                local_19 = (_e39 >= start_3);
+            } else {
+                local_19 = false;
+            }
+            let _e42 = local_19;
+            if _e42 {
+                let _e44 = p_3;
+                let _e47 = b_7;
+                tile_list[(_e44 - start_3)] = _e47;
+            }
+            let _e48 = p_3;
+            p_3 = (_e48 + 1u);
+        }
+        continuing {
+            let _e53 = b_7;
+            let _e56 = bsh_nodes[_e53].next;
+            let _e60 = bsh_next_leaf_box(BSH, _e56, end_1, t_2.lo, t_2.hi, t_2.w);
+            b_7 = _e60;
+        }
+    }
+    let _e61 = p_3;
+    return (_e61 - at_1);
+}
+
+fn tile_walk_begin(li_3: u32, x_11: vec3<f32>, w_6: f32, has_1: bool) -> TileWalk {
+    var t_3: TileWalk;
+    var s_4: u32;
+    var sum: u32 = 0u;
+    var s_5: u32 = 0u;
+
+    let _e8 = atomicMax((&tile_scale), select(0u, bitcast<u32>(w_6), has_1));
+    let _e9 = workgroup_box(li_3, x_11, has_1);
+    let _e13 = workgroupUniformLoad((&tile_scale));
+    t_3 = TileWalk(_e9.lo, _e9.hi, bitcast<f32>(_e13), 0u);
+    let _e18 = box_is_empty(_e9);
+    if _e18 {
+        let _e19 = t_3;
+        return _e19;
+    }
+    s_4 = li_3;
+    loop {
+        let _e21 = s_4;
+        if (_e21 < BSH_TILE_SUBTREES) {
+        } else {
+            break;
+        }
+        {
+            let _e25 = s_4;
+            let _e27 = s_4;
+            let _e28 = t_3;
+            let _e33 = tile_subtree(_e27, _e28, false, 0u, 0u, 0u);
+            subtree_at[_e25] = _e33;
+        }
+        continuing {
+            let _e34 = s_4;
+            s_4 = (_e34 + TILE_THREADS);
+        }
+    }
+    workgroupBarrier();
+    if (li_3 == 0u) {
+        loop {
+            let _e43 = s_5;
+            if (_e43 < BSH_TILE_SUBTREES) {
+            } else {
+                break;
+            }
+            {
+                let _e47 = s_5;
+                let c_10 = subtree_at[_e47];
+                let _e51 = s_5;
+                let _e53 = sum;
+                subtree_at[_e51] = _e53;
+                let _e54 = sum;
+                sum = (_e54 + c_10);
+            }
+            continuing {
+                let _e57 = s_5;
+                s_5 = (_e57 + 1u);
+            }
+        }
+        let _e60 = sum;
+        tile_total = _e60;
+    }
+    let _e63 = workgroupUniformLoad((&tile_total));
+    t_3.total = _e63;
+    let _e64 = t_3;
+    return _e64;
+}
+
+fn tile_walk_fill(li_4: u32, t_4: TileWalk, start_4: u32) -> u32 {
+    var s_6: u32;
+    var past: u32;
+    var local_20: bool;
+
+    let to_1 = min(t_4.total, (start_4 + TILE_LIST));
+    s_6 = li_4;
+    loop {
+        let _e8 = s_6;
+        if (_e8 < BSH_TILE_SUBTREES) {
+        } else {
+            break;
+        }
+        {
+            let _e12 = s_6;
+            let at_2 = subtree_at[_e12];
+            past = t_4.total;
+            let _e17 = s_6;
+            if ((_e17 + 1u) < BSH_TILE_SUBTREES) {
+                let _e23 = s_6;
+                let _e27 = subtree_at[(_e23 + 1u)];
+                past = _e27;
+            }
+            if (at_2 < to_1) {
+                let _e31 = past;
+                local_20 = (_e31 > start_4);
+            } else {
+                local_20 = false;
+            }
+            let _e34 = local_20;
+            if _e34 {
+                let _e35 = s_6;
+                let _e37 = tile_subtree(_e35, t_4, true, at_2, start_4, to_1);
+            }
+        }
+        continuing {
+            let _e38 = s_6;
+            s_6 = (_e38 + TILE_THREADS);
+        }
+    }
+    workgroupBarrier();
+    return (to_1 - start_4);
+}
+
+fn shade_connection(c_7: Connection, x_12: vec3<f32>, n_10: vec3<f32>, m_1: Material) -> Shaded {
+    var s_7: Shaded;
+
+    s_7.e = c_7.e;
+    s_7.diffuse = vec3(0f);
+    s_7.specular = vec3(0f);
+    let _e13 = s_7;
     return _e13;
 }
 
-fn shade_pick_traced(li_1: u32, x_14: vec3<f32>, n_10: vec3<f32>, r_7: vec3<f32>, rl_6: vec4<f32>, m_2: Material, w_4: f32, u1_4: f32, u2_4: f32, eps_2: f32, trace_2: bool) -> Shaded {
-    let _e12 = connect_traced(li_1, x_14, n_10, n_10, 1f, w_4, u1_4, u2_4, eps_2, trace_2);
-    let _e13 = shade_connection(_e12, x_14, n_10, m_2);
+fn shade_pick_traced(li_5: u32, x_13: vec3<f32>, n_11: vec3<f32>, r_6: vec3<f32>, rl_4: vec4<f32>, m_2: Material, w_7: f32, u1_4: f32, u2_4: f32, eps_2: f32, trace_2: bool) -> Shaded {
+    let _e12 = connect_traced(li_5, x_13, n_11, n_11, 1f, w_7, u1_4, u2_4, eps_2, trace_2);
+    let _e13 = shade_connection(_e12, x_13, n_11, m_2);
     return _e13;
 }
 
-fn shade_pick(li_2: u32, x_15: vec3<f32>, n_11: vec3<f32>, r_8: vec3<f32>, rl_7: vec4<f32>, m_3: Material, w_5: f32, u1_5: f32, u2_5: f32, eps_3: f32) -> Shaded {
-    let _e11 = shade_pick_traced(li_2, x_15, n_11, r_8, rl_7, m_3, w_5, u1_5, u2_5, eps_3, true);
+fn shade_pick(li_6: u32, x_14: vec3<f32>, n_12: vec3<f32>, r_7: vec3<f32>, rl_5: vec4<f32>, m_3: Material, w_8: f32, u1_5: f32, u2_5: f32, eps_3: f32) -> Shaded {
+    let _e11 = shade_pick_traced(li_6, x_14, n_12, r_7, rl_5, m_3, w_8, u1_5, u2_5, eps_3, true);
     return _e11;
 }
 
-fn add(a_9: Shaded, b_6: Shaded) -> Shaded {
-    return Shaded((a_9.e + b_6.e), (a_9.diffuse + b_6.diffuse), (a_9.specular + b_6.specular));
+fn add(a_9: Shaded, b_8: Shaded) -> Shaded {
+    return Shaded((a_9.e + b_8.e), (a_9.diffuse + b_8.diffuse), (a_9.specular + b_8.specular));
 }
 
 @compute @workgroup_size(8, 8, 1) 
-fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
+fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
     var local: bool;
+    var s: vec4<f32> = vec4(0f);
+    var nn: vec3<f32> = vec3(0f);
     var local_1: bool;
+    var local_2: bool;
+    var local_3: bool;
+    var n: vec3<f32> = vec3<f32>(0f, 0f, 1f);
     var m: Material;
     var lobe: vec4<f32> = vec4<f32>(1f, 0f, 1f, 1f);
     var r: vec3<f32>;
     var h: u32;
     var t: Shaded = Shaded(vec3(0f), vec3(0f), vec3(0f));
+    var picks: Picks;
+    var hr: u32;
+    var local_4: bool;
+    var start: u32 = 0u;
+    var j: u32;
+    var local_5: bool;
     var k: u32 = 0u;
 
-    let _e4 = view.width;
-    if !((gid.x >= _e4)) {
+    let _e5 = view.width;
+    if (gid.x < _e5) {
         let _e12 = view.height;
-        local = (gid.y >= _e12);
+        local = (gid.y < _e12);
     } else {
-        local = true;
+        local = false;
     }
-    let _e15 = local;
-    if _e15 {
-        return;
-    }
+    let inside = local;
     let texel_1 = vec2<i32>(i32(gid.x), i32(gid.y));
-    let _e21 = surface_at(texel_1);
-    let _e24 = textureLoad(normal_tex, texel_1, 0i);
-    let nn = _e24.xyz;
-    let len2_ = dot(nn, nn);
-    if !((_e21.w <= 0f)) {
-        local_1 = !((len2_ > 0f));
+    if inside {
+        let _e27 = surface_at(texel_1);
+        s = _e27;
+        let _e30 = textureLoad(normal_tex, texel_1, 0i);
+        nn = _e30.xyz;
+    }
+    let _e32 = nn;
+    let _e33 = nn;
+    let len2_ = dot(_e32, _e33);
+    let _e35 = s;
+    let x_15 = _e35.xyz;
+    if inside {
+        let _e40 = s.w;
+        local_1 = (_e40 > 0f);
     } else {
-        local_1 = true;
+        local_1 = false;
     }
-    let _e37 = local_1;
-    if _e37 {
-        textureStore(out_tex, texel_1, vec4(0f));
-        return;
+    let _e44 = local_1;
+    if _e44 {
+        local_2 = (len2_ > 0f);
+    } else {
+        local_2 = false;
     }
-    let x_16 = _e21.xyz;
-    let n_13 = (nn / vec3(sqrt(len2_)));
-    r = n_13;
-    let _e53 = lobe;
-    let _e54 = range_lobe(_e53);
-    let _e57 = view.shadow_offset;
-    let _e60 = view.eye;
-    let eps_4 = (_e57 * length((_e60 - x_16)));
-    let _e66 = view.seed;
-    let _e70 = view.width;
-    let _e76 = view.frame;
-    let _e77 = point_stream(_e66, ((gid.y * _e70) + gid.x), _e76);
-    let _e78 = pick_stream(_e77);
-    h = _e78;
-    let _e88 = r;
-    let _e89 = bsh_collect(x_16, _e88, _e54, _e77);
-    let _e92 = reservoir_weight(_e89.n, K);
+    let _e50 = local_2;
+    if _e50 {
+        local_3 = all((abs(x_15) <= vec3(340282350000000000000000000000000000000f)));
+    } else {
+        local_3 = false;
+    }
+    let has_2 = local_3;
+    if has_2 {
+        let _e65 = nn;
+        n = (_e65 / vec3(sqrt(len2_)));
+    }
+    let _e76 = n;
+    r = _e76;
+    let _e78 = lobe;
+    let _e79 = range_lobe(_e78);
+    let _e82 = view.shadow_offset;
+    let _e85 = view.eye;
+    let eps_4 = (_e82 * length((_e85 - x_15)));
+    let _e91 = view.seed;
+    let _e95 = view.width;
+    let _e101 = view.frame;
+    let _e102 = point_stream(_e91, ((gid.y * _e95) + gid.x), _e101);
+    let _e103 = pick_stream(_e102);
+    h = _e103;
+    picks.n = 0u;
+    hr = _e102;
+    if has_2 {
+        local_4 = (_e79.w >= 0f);
+    } else {
+        local_4 = false;
+    }
+    let _e124 = local_4;
+    let _e125 = tile_walk_begin(lid, x_15, _e79.w, _e124);
     loop {
-        let _e95 = k;
-        if (_e95 < min(_e89.n, K)) {
+        let _e128 = start;
+        if (_e128 < _e125.total) {
         } else {
             break;
         }
         {
-            let _e100 = h;
-            let _e101 = pcg_hash(_e100);
-            h = _e101;
-            let _e102 = h;
-            let _e103 = xi_from_bits(_e102);
-            let _e104 = h;
-            let _e105 = pcg_hash(_e104);
-            h = _e105;
-            let _e106 = t;
-            let _e108 = k;
-            let _e110 = r;
-            let _e111 = m;
-            let _e112 = h;
-            let _e113 = xi_from_bits(_e112);
-            let _e114 = shade_pick(_e89.light[_e108], x_16, n_13, _e110, _e54, _e111, _e92, _e103, _e113, eps_4);
-            let _e115 = add(_e106, _e114);
-            t = _e115;
+            let _e131 = start;
+            let _e132 = tile_walk_fill(lid, _e125, _e131);
+            j = 0u;
+            loop {
+                let _e135 = j;
+                if (_e135 < _e132) {
+                } else {
+                    break;
+                }
+                {
+                    let _e138 = j;
+                    let b_10 = tile_list[_e138];
+                    if !(!(has_2)) {
+                        let _e147 = bsh_nodes[b_10];
+                        let _e148 = r;
+                        let _e149 = bsh_reaches(_e147, x_15, _e148, _e79);
+                        local_5 = !(_e149);
+                    } else {
+                        local_5 = true;
+                    }
+                    let _e152 = local_5;
+                    if _e152 {
+                        continue;
+                    }
+                    let li_7 = bsh_nodes[b_10].light;
+                    reservoir_offer((&picks), (&hr), li_7);
+                }
+                continuing {
+                    let _e158 = j;
+                    j = (_e158 + 1u);
+                }
+            }
+            workgroupBarrier();
         }
         continuing {
-            let _e117 = k;
-            k = (_e117 + 1u);
+            let _e160 = start;
+            start = (_e160 + TILE_LIST);
         }
     }
-    let count = _e89.n;
-    let _e122 = t.e;
-    textureStore(out_tex, texel_1, vec4<f32>(_e122, f32(count)));
+    if !(has_2) {
+        if inside {
+            textureStore(out_tex, texel_1, vec4(0f));
+        }
+        return;
+    }
+    let _e168 = picks.n;
+    let _e170 = reservoir_weight(_e168, K);
+    loop {
+        let _e173 = k;
+        let _e175 = picks.n;
+        if (_e173 < min(_e175, K)) {
+        } else {
+            break;
+        }
+        {
+            let _e179 = h;
+            let _e180 = pcg_hash(_e179);
+            h = _e180;
+            let _e181 = h;
+            let _e182 = xi_from_bits(_e181);
+            let _e183 = h;
+            let _e184 = pcg_hash(_e183);
+            h = _e184;
+            let _e185 = t;
+            let _e187 = k;
+            let _e189 = picks.light[_e187];
+            let _e190 = n;
+            let _e191 = r;
+            let _e192 = m;
+            let _e193 = h;
+            let _e194 = xi_from_bits(_e193);
+            let _e195 = shade_pick(_e189, x_15, _e190, _e191, _e79, _e192, _e170, _e182, _e194, eps_4);
+            let _e196 = add(_e185, _e195);
+            t = _e196;
+        }
+        continuing {
+            let _e198 = k;
+            k = (_e198 + 1u);
+        }
+    }
+    let count = picks.n;
+    let _e204 = t.e;
+    textureStore(out_tex, texel_1, vec4<f32>(_e204, f32(count)));
     return;
 }

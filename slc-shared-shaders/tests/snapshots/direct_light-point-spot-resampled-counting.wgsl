@@ -60,6 +60,18 @@ struct Connection {
     cos_x: f32,
 }
 
+struct WorkgroupBox {
+    lo: vec3<f32>,
+    hi: vec3<f32>,
+}
+
+struct TileWalk {
+    lo: vec3<f32>,
+    hi: vec3<f32>,
+    w: f32,
+    total: u32,
+}
+
 struct Shaded {
     e: vec3<f32>,
     diffuse: vec3<f32>,
@@ -133,6 +145,11 @@ const TEMPORAL_CHANGE_HIGH: f32 = 8f;
 const TEMPORAL_MIN_WEIGHT: f32 = 0.01f;
 const K: u32 = 8u;
 const BSH: u32 = 0u;
+const BSH_TILE_DEPTH: u32 = 8u;
+const BSH_TILE_SUBTREES: u32 = 256u;
+const TILE_THREADS: u32 = 64u;
+const BOX_THREADS: u32 = 64u;
+const TILE_LIST: u32 = 1024u;
 
 var<private> rays_cast: u32;
 var<private> nodes_visited: u32;
@@ -158,18 +175,25 @@ var<storage> r2_3: array<f32>;
 var<storage> bsh_nodes: array<BshNode>;
 @group(0) @binding(8) 
 var<storage, read_write> counters: array<atomic<u32>>;
+var<workgroup> wg_lo: array<vec3<f32>, 64>;
+var<workgroup> wg_hi: array<vec3<f32>, 64>;
+var<workgroup> wg_box: WorkgroupBox;
+var<workgroup> tile_list: array<u32, 1024>;
+var<workgroup> subtree_at: array<u32, 256>;
+var<workgroup> tile_scale: atomic<u32>;
+var<workgroup> tile_total: u32;
 var<private> evaluations: u32;
 
 fn to_f32_(u: u32) -> f32 {
     return f32(u);
 }
 
-fn mul_lo_u32_(a: u32, b_1: u32) -> u32 {
-    return (a * b_1);
+fn mul_lo_u32_(a: u32, b: u32) -> u32 {
+    return (a * b);
 }
 
-fn add_wrap_u32_(a_1: u32, b_2: u32) -> u32 {
-    return (a_1 + b_2);
+fn add_wrap_u32_(a_1: u32, b_1: u32) -> u32 {
+    return (a_1 + b_1);
 }
 
 fn f32_from_bits(u_1: u32) -> f32 {
@@ -216,6 +240,12 @@ fn sphere_contains_point(c: vec3<f32>, r_1: f32, x_1: vec3<f32>) -> bool {
     return (dot(v_2, v_2) <= (r_1 * r_1));
 }
 
+fn sphere_overlaps_aabb(c_1: vec3<f32>, r_2: f32, bmin: vec3<f32>, bmax: vec3<f32>) -> bool {
+    let q_1 = clamp(c_1, bmin, bmax);
+    let v_3 = (q_1 - c_1);
+    return (dot(v_3, v_3) <= (r_2 * r_2));
+}
+
 fn inverse_square(d2_2: f32) -> f32 {
     return (1f / max(d2_2, MIN_D2_));
 }
@@ -226,30 +256,30 @@ fn connection_factor(cos_x: f32, d2_3: f32, rt2_1: f32, w_1: f32) -> f32 {
     return (((cos_x * _e4) * _e6) * w_1);
 }
 
-fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, r2_1: f32) -> f32 {
-    var local_4: bool;
-    var local_5: bool;
+fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n_1: vec3<f32>, ng: vec3<f32>, r2_1: f32) -> f32 {
+    var local_8: bool;
+    var local_9: bool;
 
-    let v_3 = (x_2 - y);
-    let d2_6 = dot(v_3, v_3);
+    let v_4 = (x_2 - y);
+    let d2_6 = dot(v_4, v_4);
     let _e7 = slc_keep(r2_1, d2_6);
     if !(!(_e7)) {
-        local_4 = !((d2_6 > 0f));
+        local_8 = !((d2_6 > 0f));
     } else {
-        local_4 = true;
+        local_8 = true;
     }
-    let _e16 = local_4;
+    let _e16 = local_8;
     if _e16 {
         return 0f;
     }
-    let w_6 = (v_3 / vec3(sqrt(d2_6)));
-    let cos_x_1 = -(dot(n, w_6));
+    let w_9 = (v_4 / vec3(sqrt(d2_6)));
+    let cos_x_1 = -(dot(n_1, w_9));
     if !((cos_x_1 <= 0f)) {
-        local_5 = (dot(ng, w_6) >= 0f);
+        local_9 = (dot(ng, w_9) >= 0f);
     } else {
-        local_5 = true;
+        local_9 = true;
     }
-    let _e32 = local_5;
+    let _e32 = local_9;
     if _e32 {
         return 0f;
     }
@@ -260,8 +290,8 @@ fn spot_falloff(cos_theta: f32, cos_outer: f32, cos_inner: f32, shape: f32) -> f
     if (cos_inner <= cos_outer) {
         return select(0f, 1f, (cos_theta >= cos_outer));
     }
-    let t_1 = saturate(((cos_theta - cos_outer) / (cos_inner - cos_outer)));
-    return select(((t_1 * t_1) * (3f - (2f * t_1))), (t_1 * t_1), (shape > 0.5f));
+    let t_4 = saturate(((cos_theta - cos_outer) / (cos_inner - cos_outer)));
+    return select(((t_4 * t_4) * (3f - (2f * t_4))), (t_4 * t_4), (shape > 0.5f));
 }
 
 fn bsh_scaled_radius(node: BshNode, scale: f32) -> f32 {
@@ -286,41 +316,41 @@ fn weighted_threshold(w_sum: f32, u_2: f32) -> f32 {
     return (w_sum / (1f - u_2));
 }
 
-fn resample_target(c_1: vec3<f32>) -> f32 {
-    return (((c_1.x + c_1.y) + c_1.z) * 0.33333334f);
+fn resample_target(c_2: vec3<f32>) -> f32 {
+    return (((c_2.x + c_2.y) + c_2.z) * 0.33333334f);
 }
 
-fn slot_target(c_2: vec3<f32>, slot: u32, k_2: u32) -> f32 {
+fn slot_target(c_3: vec3<f32>, slot: u32, k_2: u32) -> f32 {
     if (k_2 < 3u) {
-        let _e5 = resample_target(c_2);
+        let _e5 = resample_target(c_3);
         return _e5;
     }
-    let j_2 = (slot % 3u);
-    if (j_2 == 0u) {
-        return c_2.x;
+    let j_3 = (slot % 3u);
+    if (j_3 == 0u) {
+        return c_3.x;
     }
-    if (j_2 == 1u) {
-        return c_2.y;
+    if (j_3 == 1u) {
+        return c_3.y;
     }
-    return c_2.z;
+    return c_3.z;
 }
 
 fn slot_share(slot_1: u32, k_3: u32) -> vec3<f32> {
     if (k_3 < 3u) {
         let _e4 = to_f32_(k_3);
-        let w_7 = (1f / _e4);
-        return vec3<f32>(w_7, w_7, w_7);
+        let w_10 = (1f / _e4);
+        return vec3<f32>(w_10, w_10, w_10);
     }
-    let j_3 = (slot_1 % 3u);
-    let _e15 = to_f32_((((k_3 + 2u) - j_3) / 3u));
-    let w_8 = (1f / _e15);
-    if (j_3 == 0u) {
-        return vec3<f32>(w_8, 0f, 0f);
+    let j_4 = (slot_1 % 3u);
+    let _e15 = to_f32_((((k_3 + 2u) - j_4) / 3u));
+    let w_11 = (1f / _e15);
+    if (j_4 == 0u) {
+        return vec3<f32>(w_11, 0f, 0f);
     }
-    if (j_3 == 1u) {
-        return vec3<f32>(0f, w_8, 0f);
+    if (j_4 == 1u) {
+        return vec3<f32>(0f, w_11, 0f);
     }
-    return vec3<f32>(0f, 0f, w_8);
+    return vec3<f32>(0f, 0f, w_11);
 }
 
 fn smith_root(cos_: f32, alpha: f32) -> f32 {
@@ -356,46 +386,46 @@ fn range_lobe(lobe_4: vec4<f32>) -> vec4<f32> {
 }
 
 fn cone_cos_of(v: vec3<f32>, d2_4: f32, a_2: f32, d: vec3<f32>) -> f32 {
-    var local_6: bool;
-    var local_7: bool;
+    var local_10: bool;
+    var local_11: bool;
 
     let vd = dot(v, d);
     let h2_ = (d2_4 - (a_2 * a_2));
     if !((h2_ <= 0f)) {
         if (vd >= 0f) {
-            local_7 = ((vd * vd) >= h2_);
+            local_11 = ((vd * vd) >= h2_);
         } else {
-            local_7 = false;
+            local_11 = false;
         }
-        let _e19 = local_7;
-        local_6 = _e19;
+        let _e19 = local_11;
+        local_10 = _e19;
     } else {
-        local_6 = true;
+        local_10 = true;
     }
-    let _e21 = local_6;
+    let _e21 = local_10;
     if _e21 {
         return 1f;
     }
-    let c_6 = cross(v, d);
-    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_6, c_6)) * a_2)) / d2_4), 1f);
+    let c_7 = cross(v, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_7, c_7)) * a_2)) / d2_4), 1f);
 }
 
 fn cone_cos_toward(center: vec3<f32>, radius: f32, p: vec3<f32>, d_1: vec3<f32>) -> f32 {
-    let v_4 = (center - p);
-    let _e6 = cone_cos_of(v_4, dot(v_4, v_4), radius, d_1);
+    let v_5 = (center - p);
+    let _e6 = cone_cos_of(v_5, dot(v_5, v_5), radius, d_1);
     return _e6;
 }
 
 fn range_scale_at(rl: vec4<f32>, cos_t: f32) -> f32 {
-    let t_2 = (((0.5f + (0.5f * cos_t)) * (rl.z - 1f)) + 1f);
-    return clamp((rl.x + ((rl.y * rl.z) / (t_2 * t_2))), 1f, (rl.w * rl.w));
+    let t_5 = (((0.5f + (0.5f * cos_t)) * (rl.z - 1f)) + 1f);
+    return clamp((rl.x + ((rl.y * rl.z) / (t_5 * t_5))), 1f, (rl.w * rl.w));
 }
 
-fn range_scale_toward(rl_1: vec4<f32>, center_1: vec3<f32>, radius_1: f32, p_1: vec3<f32>, r_2: vec3<f32>) -> f32 {
+fn range_scale_toward(rl_1: vec4<f32>, center_1: vec3<f32>, radius_1: f32, p_1: vec3<f32>, r_3: vec3<f32>) -> f32 {
     if (rl_1.w <= 1f) {
         return 1f;
     }
-    let _e9 = cone_cos_toward(center_1, radius_1, p_1, r_2);
+    let _e9 = cone_cos_toward(center_1, radius_1, p_1, r_3);
     let _e10 = range_scale_at(rl_1, _e9);
     return _e10;
 }
@@ -415,63 +445,63 @@ fn ray_inverse3_(d_2: vec3<f32>) -> vec3<f32> {
     return vec3<f32>(_e2, _e4, _e6);
 }
 
-fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin: vec3<f32>, bmax: vec3<f32>, t_max: f32) -> f32 {
-    let t0_ = ((bmin - o) * inv_d);
-    let t1_ = ((bmax - o) * inv_d);
-    let lo = min(t0_, t1_);
-    let hi = max(t0_, t1_);
-    let t_in = max(max(lo.x, lo.y), max(lo.z, 0f));
-    let t_out = min(min(hi.x, hi.y), min(hi.z, t_max));
+fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin_1: vec3<f32>, bmax_1: vec3<f32>, t_max: f32) -> f32 {
+    let t0_ = ((bmin_1 - o) * inv_d);
+    let t1_ = ((bmax_1 - o) * inv_d);
+    let lo_3 = min(t0_, t1_);
+    let hi_3 = max(t0_, t1_);
+    let t_in = max(max(lo_3.x, lo_3.y), max(lo_3.z, 0f));
+    let t_out = min(min(hi_3.x, hi_3.y), min(hi_3.z, t_max));
     if (t_in <= t_out) {
         return t_in;
     }
     return -1f;
 }
 
-fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_3: vec3<f32>, b_3: vec3<f32>, c_3: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
-    var local_8: bool;
-    var local_9: bool;
-    var local_10: bool;
+fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_3: vec3<f32>, b_2: vec3<f32>, c_4: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
+    var local_12: bool;
+    var local_13: bool;
+    var local_14: bool;
 
-    let e1_ = (b_3 - a_3);
-    let e2_ = (c_3 - a_3);
-    let p_2 = cross(d_3, e2_);
-    let det = dot(e1_, p_2);
+    let e1_ = (b_2 - a_3);
+    let e2_ = (c_4 - a_3);
+    let p_4 = cross(d_3, e2_);
+    let det = dot(e1_, p_4);
     if (abs(det) <= 0f) {
         return -1f;
     }
     let inv = (1f / det);
-    let s_4 = (o_1 - a_3);
-    let u_3 = (dot(s_4, p_2) * inv);
+    let s_10 = (o_1 - a_3);
+    let u_3 = (dot(s_10, p_4) * inv);
     if !((u_3 < 0f)) {
-        local_8 = (u_3 > 1f);
+        local_12 = (u_3 > 1f);
     } else {
-        local_8 = true;
+        local_12 = true;
     }
-    let _e28 = local_8;
+    let _e28 = local_12;
     if _e28 {
         return -1f;
     }
-    let q_1 = cross(s_4, e1_);
-    let v_5 = (dot(d_3, q_1) * inv);
-    if !((v_5 < 0f)) {
-        local_9 = ((u_3 + v_5) > 1f);
+    let q_2 = cross(s_10, e1_);
+    let v_6 = (dot(d_3, q_2) * inv);
+    if !((v_6 < 0f)) {
+        local_13 = ((u_3 + v_6) > 1f);
     } else {
-        local_9 = true;
+        local_13 = true;
     }
-    let _e42 = local_9;
+    let _e42 = local_13;
     if _e42 {
         return -1f;
     }
-    let t_3 = (dot(e2_, q_1) * inv);
-    if (t_3 > t_min) {
-        local_10 = (t_3 < t_max_1);
+    let t_6 = (dot(e2_, q_2) * inv);
+    if (t_6 > t_min) {
+        local_14 = (t_6 < t_max_1);
     } else {
-        local_10 = false;
+        local_14 = false;
     }
-    let _e51 = local_10;
+    let _e51 = local_14;
     if _e51 {
-        return t_3;
+        return t_6;
     }
     return -1f;
 }
@@ -511,25 +541,25 @@ fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
     let _e14 = ray_inverse3_(d_4);
     loop {
         let _e21 = node_2;
-        let n_7 = geo_nodes[_e21];
+        let n_8 = geo_nodes[_e21];
         let _e25 = nodes_visited;
         nodes_visited = (_e25 + 1u);
         let _e31 = hit.t;
-        let _e32 = ray_aabb(o_2, _e14, n_7.bmin, n_7.bmax, _e31);
+        let _e32 = ray_aabb(o_2, _e14, n_8.bmin, n_8.bmax, _e31);
         if (_e32 >= 0f) {
-            if (n_7.count > 0u) {
-                i = n_7.first;
+            if (n_8.count > 0u) {
+                i = n_8.first;
                 loop {
                     let _e40 = i;
-                    if (_e40 < (n_7.first + n_7.count)) {
+                    if (_e40 < (n_8.first + n_8.count)) {
                     } else {
                         break;
                     }
                     {
                         let _e46 = i;
-                        let t_4 = geo_tris[_e46];
+                        let t_7 = geo_tris[_e46];
                         let _e53 = hit.t;
-                        let _e54 = ray_triangle(o_2, d_4, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e53);
+                        let _e54 = ray_triangle(o_2, d_4, t_7.v0_, t_7.v1_, t_7.v2_, t_min_1, _e53);
                         if (_e54 > 0f) {
                             hit.t = _e54;
                             let _e59 = i;
@@ -549,11 +579,11 @@ fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
                 let _e64 = sp;
                 if (_e64 < 64u) {
                     let _e67 = sp;
-                    stack[_e67] = (n_7.first + 1u);
+                    stack[_e67] = (n_8.first + 1u);
                     let _e72 = sp;
                     sp = (_e72 + 1u);
                 }
-                node_2 = n_7.first;
+                node_2 = n_8.first;
                 continue;
             }
         }
@@ -571,8 +601,8 @@ fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
     return _e85;
 }
 
-fn occluded(a_4: vec3<f32>, b_4: vec3<f32>) -> bool {
-    let dv = (b_4 - a_4);
+fn occluded(a_4: vec3<f32>, b_3: vec3<f32>) -> bool {
+    let dv = (b_3 - a_4);
     let len_1 = length(dv);
     if (len_1 <= 0f) {
         return false;
@@ -601,15 +631,15 @@ fn bsh_first(nodes_2: u32) -> u32 {
     return BSH_NONE;
 }
 
-fn bsh_inner_scale(a_5: f32, v_1: vec3<f32>, d2_5: f32, r_3: vec3<f32>, rl_2: vec4<f32>) -> f32 {
-    let _e5 = cone_cos_of(v_1, d2_5, a_5, r_3);
+fn bsh_inner_scale(a_5: f32, v_1: vec3<f32>, d2_5: f32, r_4: vec3<f32>, rl_2: vec4<f32>) -> f32 {
+    let _e5 = cone_cos_of(v_1, d2_5, a_5, r_4);
     let _e8 = range_scale_at(rl_2, (_e5 + 0.000002f));
     return _e8;
 }
 
-fn bsh_reaches(node_3: BshNode, x_4: vec3<f32>, r_4: vec3<f32>, rl_3: vec4<f32>) -> bool {
-    var local_11: bool;
-    var local_12: bool;
+fn bsh_reaches(node_3: BshNode, x_4: vec3<f32>, r_5: vec3<f32>, rl_3: vec4<f32>) -> bool {
+    var local_15: bool;
+    var local_16: bool;
 
     let _e6 = sphere_contains_point(node_3.center, node_3.radius, x_4);
     if _e6 {
@@ -617,65 +647,116 @@ fn bsh_reaches(node_3: BshNode, x_4: vec3<f32>, r_4: vec3<f32>, rl_3: vec4<f32>)
     }
     if !((rl_3.w <= 1f)) {
         let _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001f)), x_4);
-        local_11 = !(_e20);
+        local_15 = !(_e20);
     } else {
-        local_11 = true;
+        local_15 = true;
     }
-    let _e23 = local_11;
+    let _e23 = local_15;
     if _e23 {
         return false;
     }
     let _e25 = bsh_range_bound(node_3);
-    let v_6 = (x_4 - node_3.center);
-    let d2_7 = dot(v_6, v_6);
+    let v_7 = (x_4 - node_3.center);
+    let d2_7 = dot(v_7, v_7);
     let reach_max = (node_3.extent + ((rl_3.w * 1.001f) * _e25));
     if (d2_7 > (reach_max * reach_max)) {
         return false;
     }
     if (node_3.child == BSH_NONE) {
-        let _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_4, r_4);
+        let _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_4, r_5);
         let _e46 = bsh_scaled_radius(node_3, sqrt(_e43));
         let _e47 = sphere_contains_point(node_3.center, _e46, x_4);
         return _e47;
     }
-    let _e50 = bsh_inner_scale(node_3.extent, -(v_6), d2_7, r_4, rl_3);
+    let _e50 = bsh_inner_scale(node_3.extent, -(v_7), d2_7, r_5, rl_3);
     let s_c = (_e50 * 1.001f);
     let reach = (node_3.extent + (sqrt(s_c) * _e25));
     if (d2_7 <= ((node_3.radius * node_3.radius) * s_c)) {
-        local_12 = (d2_7 <= (reach * reach));
+        local_16 = (d2_7 <= (reach * reach));
     } else {
-        local_12 = false;
+        local_16 = false;
     }
-    let _e67 = local_12;
+    let _e67 = local_16;
     return _e67;
 }
 
-fn bsh_next_leaf_lobe(nodes_3: u32, start: u32, x_5: vec3<f32>, r_5: vec3<f32>, rl_4: vec4<f32>) -> u32 {
-    var i_2: u32;
+fn bsh_reaches_box(node_4: BshNode, lo: vec3<f32>, hi: vec3<f32>, w_3: f32) -> bool {
+    let _e13 = sphere_overlaps_aabb(node_4.center, (node_4.radius * (max(1f, (w_3 * 1.0001f)) * 1.0001f)), lo, hi);
+    return _e13;
+}
 
-    i_2 = start;
+fn bsh_subtree(nodes_3: u32, s_1: u32, depth: u32) -> u32 {
+    var i_2: u32;
+    var level: u32 = 0u;
+    var local_17: bool;
+
+    let _e3 = bsh_first(nodes_3);
+    i_2 = _e3;
     loop {
-        let _e6 = i_2;
-        if (_e6 != BSH_NONE) {
+        let _e7 = level;
+        if (_e7 < depth) {
+            let _e11 = i_2;
+            local_17 = (_e11 != BSH_NONE);
+        } else {
+            local_17 = false;
+        }
+        let _e15 = local_17;
+        if _e15 {
         } else {
             break;
         }
         {
-            let _e9 = i_2;
-            let _e10 = bsh_node(nodes_3, _e9);
-            let _e11 = bsh_reaches(_e10, x_5, r_5, rl_4);
+            let _e16 = i_2;
+            let _e17 = bsh_node(nodes_3, _e16);
+            let _e18 = level;
+            let below = (depth - _e18);
+            if (_e17.child == BSH_NONE) {
+                if ((s_1 << (32u - below)) != 0u) {
+                    return BSH_NONE;
+                }
+                let _e29 = i_2;
+                return _e29;
+            }
+            if (((s_1 >> (below - 1u)) & 1u) == 0u) {
+                i_2 = _e17.child;
+            } else {
+                let _e39 = bsh_node(nodes_3, _e17.child);
+                i_2 = _e39.next;
+            }
+            let _e41 = level;
+            level = (_e41 + 1u);
+        }
+    }
+    let _e44 = i_2;
+    return _e44;
+}
+
+fn bsh_next_leaf_box(nodes_4: u32, start_1: u32, end: u32, lo_1: vec3<f32>, hi_1: vec3<f32>, w_4: f32) -> u32 {
+    var i_3: u32;
+
+    i_3 = start_1;
+    loop {
+        let _e7 = i_3;
+        if (_e7 != end) {
+        } else {
+            break;
+        }
+        {
+            let _e9 = i_3;
+            let _e10 = bsh_node(nodes_4, _e9);
+            let _e11 = bsh_reaches_box(_e10, lo_1, hi_1, w_4);
             if _e11 {
                 if (_e10.child == BSH_NONE) {
-                    let _e15 = i_2;
+                    let _e15 = i_3;
                     return _e15;
                 }
-                i_2 = _e10.child;
+                i_3 = _e10.child;
             } else {
-                i_2 = _e10.next;
+                i_3 = _e10.next;
             }
         }
     }
-    return BSH_NONE;
+    return end;
 }
 
 fn next_threshold(sum: f32, h_1: ptr<function, u32>) -> f32 {
@@ -688,63 +769,282 @@ fn next_threshold(sum: f32, h_1: ptr<function, u32>) -> f32 {
     return _e6;
 }
 
-fn connect_record(l_2: GpuLight, x_6: vec3<f32>, n_1: vec3<f32>, ng_1: vec3<f32>, r2_2: f32, rt2_2: f32, w_res: f32, u1_1: f32, u2_1: f32, eps: f32, trace_1: bool) -> Connection {
-    var c_4: Connection;
-    var local_13: bool;
-    var local_14: bool;
+fn connect_record(l_2: GpuLight, x_5: vec3<f32>, n_2: vec3<f32>, ng_1: vec3<f32>, r2_2: f32, rt2_2: f32, w_res: f32, u1_1: f32, u2_1: f32, eps: f32, trace_1: bool) -> Connection {
+    var c_5: Connection;
+    var local_18: bool;
+    var local_19: bool;
 
-    c_4.e = vec3(0f);
+    c_5.e = vec3(0f);
     let _e16 = light_point(l_2, u1_1, u2_1);
-    c_4.y = _e16;
-    let _e19 = c_4.y;
-    let _e20 = connection_cosine(x_6, _e19, n_1, ng_1, r2_2);
-    c_4.cos_x = _e20;
-    let _e22 = c_4.cos_x;
+    c_5.y = _e16;
+    let _e19 = c_5.y;
+    let _e20 = connection_cosine(x_5, _e19, n_2, ng_1, r2_2);
+    c_5.cos_x = _e20;
+    let _e22 = c_5.cos_x;
     if !((_e22 <= 0f)) {
         if trace_1 {
-            let _e33 = c_4.y;
-            let _e34 = occluded((x_6 + (ng_1 * eps)), _e33);
-            local_14 = _e34;
+            let _e33 = c_5.y;
+            let _e34 = occluded((x_5 + (ng_1 * eps)), _e33);
+            local_19 = _e34;
         } else {
-            local_14 = false;
+            local_19 = false;
         }
-        let _e36 = local_14;
-        local_13 = _e36;
+        let _e36 = local_19;
+        local_18 = _e36;
     } else {
-        local_13 = true;
+        local_18 = true;
     }
-    let _e38 = local_13;
+    let _e38 = local_18;
     if _e38 {
-        let _e39 = c_4;
+        let _e39 = c_5;
         return _e39;
     }
-    let _e41 = c_4.y;
-    let v_7 = (x_6 - _e41);
-    let d2_8 = dot(v_7, v_7);
-    let _e48 = light_intensity(l_2, (v_7 / vec3(sqrt(d2_8))));
-    let _e50 = c_4.cos_x;
+    let _e41 = c_5.y;
+    let v_8 = (x_5 - _e41);
+    let d2_8 = dot(v_8, v_8);
+    let _e48 = light_intensity(l_2, (v_8 / vec3(sqrt(d2_8))));
+    let _e50 = c_5.cos_x;
     let _e51 = connection_factor(_e50, d2_8, rt2_2, w_res);
-    c_4.e = (_e48 * _e51);
-    let _e53 = c_4;
+    c_5.e = (_e48 * _e51);
+    let _e53 = c_5;
     return _e53;
 }
 
-fn connect_traced(li: u32, x_7: vec3<f32>, n_2: vec3<f32>, ng_2: vec3<f32>, s: f32, w_res_1: f32, u1_2: f32, u2_2: f32, eps_1: f32, trace_2: bool) -> Connection {
+fn connect_traced(li: u32, x_6: vec3<f32>, n_3: vec3<f32>, ng_2: vec3<f32>, s_2: f32, w_res_1: f32, u1_2: f32, u2_2: f32, eps_1: f32, trace_2: bool) -> Connection {
     let _e12 = lights[li];
     let _e15 = r2_3[li];
     let _e19 = rt2_3[li];
-    let _e21 = connect_record(_e12, x_7, n_2, ng_2, (s * _e15), (s * _e19), w_res_1, u1_2, u2_2, eps_1, trace_2);
+    let _e21 = connect_record(_e12, x_6, n_3, ng_2, (s_2 * _e15), (s_2 * _e19), w_res_1, u1_2, u2_2, eps_1, trace_2);
     return _e21;
 }
 
 fn surface_at(texel: vec2<i32>) -> vec4<f32> {
-    let p_3 = textureLoad(position_tex, texel, 0i);
-    return select(vec4(0f), vec4<f32>(p_3.xyz, 1f), (p_3.w > 0f));
+    let p_5 = textureLoad(position_tex, texel, 0i);
+    return select(vec4(0f), vec4<f32>(p_5.xyz, 1f), (p_5.w > 0f));
 }
 
-fn counter_add(f: u32, n_3: u32) {
-    let _e6 = atomicAdd((&counters[(2u * f)]), n_3);
-    if ((_e6 + n_3) < _e6) {
+fn workgroup_bounds(li_1: u32, lo_2: vec3<f32>, hi_2: vec3<f32>) -> WorkgroupBox {
+    var stride: u32 = 32u;
+
+    wg_lo[li_1] = lo_2;
+    wg_hi[li_1] = hi_2;
+    workgroupBarrier();
+    loop {
+        let _e9 = stride;
+        if (_e9 > 0u) {
+        } else {
+            break;
+        }
+        {
+            let _e12 = stride;
+            if (li_1 < _e12) {
+                let _e18 = wg_lo[li_1];
+                let _e20 = stride;
+                let _e23 = wg_lo[(li_1 + _e20)];
+                wg_lo[li_1] = min(_e18, _e23);
+                let _e29 = wg_hi[li_1];
+                let _e31 = stride;
+                let _e34 = wg_hi[(li_1 + _e31)];
+                wg_hi[li_1] = max(_e29, _e34);
+            }
+            workgroupBarrier();
+        }
+        continuing {
+            let _e36 = stride;
+            stride = (_e36 / 2u);
+        }
+    }
+    if (li_1 == 0u) {
+        let _e44 = wg_lo[0];
+        let _e47 = wg_hi[0];
+        wg_box = WorkgroupBox(_e44, _e47);
+    }
+    let _e50 = workgroupUniformLoad((&wg_box));
+    return _e50;
+}
+
+fn workgroup_box(li_2: u32, p_2: vec3<f32>, has: bool) -> WorkgroupBox {
+    let _e9 = workgroup_bounds(li_2, select(vec3(340282350000000000000000000000000000000f), p_2, has), select(vec3(-340282350000000000000000000000000000000f), p_2, has));
+    return _e9;
+}
+
+fn box_is_empty(b_4: WorkgroupBox) -> bool {
+    return (b_4.lo.x > b_4.hi.x);
+}
+
+fn tile_subtree(s_3: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: u32) -> u32 {
+    var p_3: u32;
+    var b_5: u32;
+    var local_20: bool;
+    var local_21: bool;
+    var local_22: bool;
+
+    let _e8 = bsh_subtree(BSH, s_3, BSH_TILE_DEPTH);
+    if (_e8 == BSH_NONE) {
+        return 0u;
+    }
+    let end_1 = bsh_nodes[_e8].next;
+    p_3 = at;
+    let _e21 = bsh_next_leaf_box(BSH, _e8, end_1, t_1.lo, t_1.hi, t_1.w);
+    b_5 = _e21;
+    loop {
+        let _e23 = b_5;
+        if (_e23 != end_1) {
+            if !(!(list)) {
+                let _e31 = p_3;
+                local_21 = (_e31 < to);
+            } else {
+                local_21 = true;
+            }
+            let _e34 = local_21;
+            local_20 = _e34;
+        } else {
+            local_20 = false;
+        }
+        let _e36 = local_20;
+        if _e36 {
+        } else {
+            break;
+        }
+        {
+            if list {
+                let _e39 = p_3;
+                local_22 = (_e39 >= start_2);
+            } else {
+                local_22 = false;
+            }
+            let _e42 = local_22;
+            if _e42 {
+                let _e44 = p_3;
+                let _e47 = b_5;
+                tile_list[(_e44 - start_2)] = _e47;
+            }
+            let _e48 = p_3;
+            p_3 = (_e48 + 1u);
+        }
+        continuing {
+            let _e53 = b_5;
+            let _e56 = bsh_nodes[_e53].next;
+            let _e60 = bsh_next_leaf_box(BSH, _e56, end_1, t_1.lo, t_1.hi, t_1.w);
+            b_5 = _e60;
+        }
+    }
+    let _e61 = p_3;
+    return (_e61 - at);
+}
+
+fn tile_walk_begin(li_3: u32, x_7: vec3<f32>, w_5: f32, has_1: bool) -> TileWalk {
+    var t_2: TileWalk;
+    var s_4: u32;
+    var sum_1: u32 = 0u;
+    var s_5: u32 = 0u;
+
+    let _e8 = atomicMax((&tile_scale), select(0u, bitcast<u32>(w_5), has_1));
+    let _e9 = workgroup_box(li_3, x_7, has_1);
+    let _e13 = workgroupUniformLoad((&tile_scale));
+    t_2 = TileWalk(_e9.lo, _e9.hi, bitcast<f32>(_e13), 0u);
+    let _e18 = box_is_empty(_e9);
+    if _e18 {
+        let _e19 = t_2;
+        return _e19;
+    }
+    s_4 = li_3;
+    loop {
+        let _e21 = s_4;
+        if (_e21 < BSH_TILE_SUBTREES) {
+        } else {
+            break;
+        }
+        {
+            let _e25 = s_4;
+            let _e27 = s_4;
+            let _e28 = t_2;
+            let _e33 = tile_subtree(_e27, _e28, false, 0u, 0u, 0u);
+            subtree_at[_e25] = _e33;
+        }
+        continuing {
+            let _e34 = s_4;
+            s_4 = (_e34 + TILE_THREADS);
+        }
+    }
+    workgroupBarrier();
+    if (li_3 == 0u) {
+        loop {
+            let _e43 = s_5;
+            if (_e43 < BSH_TILE_SUBTREES) {
+            } else {
+                break;
+            }
+            {
+                let _e47 = s_5;
+                let c_8 = subtree_at[_e47];
+                let _e51 = s_5;
+                let _e53 = sum_1;
+                subtree_at[_e51] = _e53;
+                let _e54 = sum_1;
+                sum_1 = (_e54 + c_8);
+            }
+            continuing {
+                let _e57 = s_5;
+                s_5 = (_e57 + 1u);
+            }
+        }
+        let _e60 = sum_1;
+        tile_total = _e60;
+    }
+    let _e63 = workgroupUniformLoad((&tile_total));
+    t_2.total = _e63;
+    let _e64 = t_2;
+    return _e64;
+}
+
+fn tile_walk_fill(li_4: u32, t_3: TileWalk, start_3: u32) -> u32 {
+    var s_6: u32;
+    var past: u32;
+    var local_23: bool;
+
+    let to_1 = min(t_3.total, (start_3 + TILE_LIST));
+    s_6 = li_4;
+    loop {
+        let _e8 = s_6;
+        if (_e8 < BSH_TILE_SUBTREES) {
+        } else {
+            break;
+        }
+        {
+            let _e12 = s_6;
+            let at_1 = subtree_at[_e12];
+            past = t_3.total;
+            let _e17 = s_6;
+            if ((_e17 + 1u) < BSH_TILE_SUBTREES) {
+                let _e23 = s_6;
+                let _e27 = subtree_at[(_e23 + 1u)];
+                past = _e27;
+            }
+            if (at_1 < to_1) {
+                let _e31 = past;
+                local_23 = (_e31 > start_3);
+            } else {
+                local_23 = false;
+            }
+            let _e34 = local_23;
+            if _e34 {
+                let _e35 = s_6;
+                let _e37 = tile_subtree(_e35, t_3, true, at_1, start_3, to_1);
+            }
+        }
+        continuing {
+            let _e38 = s_6;
+            s_6 = (_e38 + TILE_THREADS);
+        }
+    }
+    workgroupBarrier();
+    return (to_1 - start_3);
+}
+
+fn counter_add(f: u32, n_4: u32) {
+    let _e6 = atomicAdd((&counters[(2u * f)]), n_4);
+    if ((_e6 + n_4) < _e6) {
         let _e16 = atomicAdd((&counters[((2u * f) + 1u)]), 1u);
         return;
     } else {
@@ -752,41 +1052,41 @@ fn counter_add(f: u32, n_3: u32) {
     }
 }
 
-fn shade_connection(c_5: Connection, x_8: vec3<f32>, n_4: vec3<f32>, m_1: Material) -> Shaded {
-    var s_1: Shaded;
+fn shade_connection(c_6: Connection, x_8: vec3<f32>, n_5: vec3<f32>, m_1: Material) -> Shaded {
+    var s_7: Shaded;
 
-    s_1.e = c_5.e;
-    s_1.diffuse = vec3(0f);
-    s_1.specular = vec3(0f);
-    let _e13 = s_1;
+    s_7.e = c_6.e;
+    s_7.diffuse = vec3(0f);
+    s_7.specular = vec3(0f);
+    let _e13 = s_7;
     return _e13;
 }
 
-fn shade_pick_traced(li_1: u32, x_9: vec3<f32>, n_5: vec3<f32>, r_6: vec3<f32>, rl_5: vec4<f32>, m_2: Material, w_3: f32, u1_3: f32, u2_3: f32, eps_2: f32, trace_3: bool) -> Shaded {
-    let _e12 = connect_traced(li_1, x_9, n_5, n_5, 1f, w_3, u1_3, u2_3, eps_2, trace_3);
-    let _e13 = shade_connection(_e12, x_9, n_5, m_2);
+fn shade_pick_traced(li_5: u32, x_9: vec3<f32>, n_6: vec3<f32>, r_6: vec3<f32>, rl_4: vec4<f32>, m_2: Material, w_6: f32, u1_3: f32, u2_3: f32, eps_2: f32, trace_3: bool) -> Shaded {
+    let _e12 = connect_traced(li_5, x_9, n_6, n_6, 1f, w_6, u1_3, u2_3, eps_2, trace_3);
+    let _e13 = shade_connection(_e12, x_9, n_6, m_2);
     return _e13;
 }
 
-fn shade_pick(li_2: u32, x_10: vec3<f32>, n_6: vec3<f32>, r_7: vec3<f32>, rl_6: vec4<f32>, m_3: Material, w_4: f32, u1_4: f32, u2_4: f32, eps_3: f32) -> Shaded {
-    let _e11 = shade_pick_traced(li_2, x_10, n_6, r_7, rl_6, m_3, w_4, u1_4, u2_4, eps_3, true);
+fn shade_pick(li_6: u32, x_10: vec3<f32>, n_7: vec3<f32>, r_7: vec3<f32>, rl_5: vec4<f32>, m_3: Material, w_7: f32, u1_4: f32, u2_4: f32, eps_3: f32) -> Shaded {
+    let _e11 = shade_pick_traced(li_6, x_10, n_7, r_7, rl_5, m_3, w_7, u1_4, u2_4, eps_3, true);
     return _e11;
 }
 
-fn add(a_6: Shaded, b_5: Shaded) -> Shaded {
-    return Shaded((a_6.e + b_5.e), (a_6.diffuse + b_5.diffuse), (a_6.specular + b_5.specular));
+fn add(a_6: Shaded, b_6: Shaded) -> Shaded {
+    return Shaded((a_6.e + b_6.e), (a_6.diffuse + b_6.diffuse), (a_6.specular + b_6.specular));
 }
 
-fn scaled(s_2: Shaded, w_5: vec3<f32>) -> Shaded {
-    return Shaded((s_2.e * w_5), (s_2.diffuse * w_5), (s_2.specular * w_5));
+fn scaled(s_8: Shaded, w_8: vec3<f32>) -> Shaded {
+    return Shaded((s_8.e * w_8), (s_8.diffuse * w_8), (s_8.specular * w_8));
 }
 
 fn first_holders(keys_1: array<vec2<u32>, 8>, held_1: array<bool, 8>) -> array<u32, 8> {
     var first: array<u32, 8>;
     var k_4: u32 = 0u;
-    var j_1: u32;
-    var local_15: bool;
-    var local_16: bool;
+    var j_2: u32;
+    var local_24: bool;
+    var local_25: bool;
 
     loop {
         let _e5 = k_4;
@@ -799,41 +1099,41 @@ fn first_holders(keys_1: array<vec2<u32>, 8>, held_1: array<bool, 8>) -> array<u
             let _e11 = k_4;
             let _e12 = k_4;
             first[_e8] = select(K, _e11, held_1[_e12]);
-            j_1 = 0u;
+            j_2 = 0u;
             loop {
-                let _e17 = j_1;
+                let _e17 = j_2;
                 let _e18 = k_4;
                 if (_e17 < _e18) {
                     let _e22 = k_4;
-                    local_15 = held_1[_e22];
+                    local_24 = held_1[_e22];
                 } else {
-                    local_15 = false;
+                    local_24 = false;
                 }
-                let _e25 = local_15;
+                let _e25 = local_24;
                 if _e25 {
                 } else {
                     break;
                 }
                 {
-                    let _e26 = j_1;
+                    let _e26 = j_2;
                     if held_1[_e26] {
-                        let _e30 = j_1;
+                        let _e30 = j_2;
                         let _e32 = k_4;
-                        local_16 = all((keys_1[_e30] == keys_1[_e32]));
+                        local_25 = all((keys_1[_e30] == keys_1[_e32]));
                     } else {
-                        local_16 = false;
+                        local_25 = false;
                     }
-                    let _e37 = local_16;
+                    let _e37 = local_25;
                     if _e37 {
                         let _e38 = k_4;
-                        let _e40 = j_1;
+                        let _e40 = j_2;
                         first[_e38] = _e40;
                         break;
                     }
                 }
                 continuing {
-                    let _e42 = j_1;
-                    j_1 = (_e42 + 1u);
+                    let _e42 = j_2;
+                    j_2 = (_e42 + 1u);
                 }
             }
         }
@@ -846,14 +1146,19 @@ fn first_holders(keys_1: array<vec2<u32>, 8>, held_1: array<bool, 8>) -> array<u
     return _e47;
 }
 
-fn output_of(s_3: Shaded) -> vec3<f32> {
-    return s_3.e;
+fn output_of(s_9: Shaded) -> vec3<f32> {
+    return s_9.e;
 }
 
 @compute @workgroup_size(8, 8, 1) 
-fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
+fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
     var local: bool;
+    var s: vec4<f32> = vec4(0f);
+    var nn: vec3<f32> = vec3(0f);
     var local_1: bool;
+    var local_2: bool;
+    var local_3: bool;
+    var n: vec3<f32> = vec3<f32>(0f, 0f, 1f);
     var m: Material;
     var lobe: vec4<f32> = vec4<f32>(1f, 0f, 1f, 1f);
     var r: vec3<f32>;
@@ -866,244 +1171,301 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     var count: u32 = 0u;
     var hc: u32;
     var threshold: array<f32, 8>;
-    var b: u32;
+    var local_4: bool;
+    var start: u32 = 0u;
+    var j: u32;
+    var local_5: bool;
     var q: u32;
-    var local_2: bool;
+    var local_6: bool;
     var keys: array<vec2<u32>, 8>;
     var held: array<bool, 8>;
     var k: u32 = 0u;
     var k_1: u32 = 0u;
     var w: vec3<f32>;
-    var j: u32;
-    var local_3: bool;
+    var j_1: u32;
+    var local_7: bool;
 
-    let _e4 = view.width;
-    if !((gid.x >= _e4)) {
+    let _e5 = view.width;
+    if (gid.x < _e5) {
         let _e12 = view.height;
-        local = (gid.y >= _e12);
+        local = (gid.y < _e12);
     } else {
-        local = true;
+        local = false;
     }
-    let _e15 = local;
-    if _e15 {
-        return;
-    }
+    let inside = local;
     let texel_1 = vec2<i32>(i32(gid.x), i32(gid.y));
-    let _e21 = surface_at(texel_1);
-    let _e24 = textureLoad(normal_tex, texel_1, 0i);
-    let nn = _e24.xyz;
-    let len2_ = dot(nn, nn);
-    if !((_e21.w <= 0f)) {
-        local_1 = !((len2_ > 0f));
+    if inside {
+        let _e27 = surface_at(texel_1);
+        s = _e27;
+        let _e30 = textureLoad(normal_tex, texel_1, 0i);
+        nn = _e30.xyz;
+    }
+    let _e32 = nn;
+    let _e33 = nn;
+    let len2_ = dot(_e32, _e33);
+    let _e35 = s;
+    let x_11 = _e35.xyz;
+    if inside {
+        let _e40 = s.w;
+        local_1 = (_e40 > 0f);
     } else {
-        local_1 = true;
+        local_1 = false;
     }
-    let _e37 = local_1;
-    if _e37 {
-        textureStore(out_tex, texel_1, vec4(0f));
-        return;
+    let _e44 = local_1;
+    if _e44 {
+        local_2 = (len2_ > 0f);
+    } else {
+        local_2 = false;
     }
-    let x_11 = _e21.xyz;
-    let n_8 = (nn / vec3(sqrt(len2_)));
-    r = n_8;
-    let _e53 = lobe;
-    let _e54 = range_lobe(_e53);
-    let _e57 = view.shadow_offset;
-    let _e60 = view.eye;
-    let eps_4 = (_e57 * length((_e60 - x_11)));
-    let _e66 = view.seed;
-    let _e70 = view.width;
-    let _e76 = view.frame;
-    let _e77 = point_stream(_e66, ((gid.y * _e70) + gid.x), _e76);
-    let _e78 = pick_stream(_e77);
-    h = _e78;
-    hc = _e77;
-    let _e100 = bsh_first(BSH);
-    let _e101 = r;
-    let _e102 = bsh_next_leaf_lobe(BSH, _e100, x_11, _e101, _e54);
-    b = _e102;
+    let _e50 = local_2;
+    if _e50 {
+        local_3 = all((abs(x_11) <= vec3(340282350000000000000000000000000000000f)));
+    } else {
+        local_3 = false;
+    }
+    let has_2 = local_3;
+    if has_2 {
+        let _e65 = nn;
+        n = (_e65 / vec3(sqrt(len2_)));
+    }
+    let _e76 = n;
+    r = _e76;
+    let _e78 = lobe;
+    let _e79 = range_lobe(_e78);
+    let _e82 = view.shadow_offset;
+    let _e85 = view.eye;
+    let eps_4 = (_e82 * length((_e85 - x_11)));
+    let _e91 = view.seed;
+    let _e95 = view.width;
+    let _e101 = view.frame;
+    let _e102 = point_stream(_e91, ((gid.y * _e95) + gid.x), _e101);
+    let _e103 = pick_stream(_e102);
+    h = _e103;
+    hc = _e102;
+    if has_2 {
+        local_4 = (_e79.w >= 0f);
+    } else {
+        local_4 = false;
+    }
+    let _e130 = local_4;
+    let _e131 = tile_walk_begin(lid, x_11, _e79.w, _e130);
     loop {
-        let _e104 = b;
-        if (_e104 != BSH_NONE) {
+        let _e134 = start;
+        if (_e134 < _e131.total) {
         } else {
             break;
         }
         {
-            let _e107 = count;
-            count = (_e107 + 1u);
-            let _e111 = b;
-            let li_3 = bsh_nodes[_e111].light;
-            let _e115 = h;
-            let _e116 = pcg_hash(_e115);
-            h = _e116;
-            let _e117 = h;
-            let _e118 = xi_from_bits(_e117);
-            let _e119 = h;
-            let _e120 = pcg_hash(_e119);
-            h = _e120;
-            let _e121 = h;
-            let _e122 = xi_from_bits(_e121);
-            let u_4 = vec2<f32>(_e118, _e122);
-            let _e124 = r;
-            let _e125 = m;
-            let _e130 = shade_pick_traced(li_3, x_11, n_8, _e124, _e54, _e125, 1f, u_4.x, u_4.y, eps_4, false);
-            let _e131 = output_of(_e130);
-            let _e133 = evaluations;
-            evaluations = (_e133 + 1u);
-            let _e136 = resample_target(_e131);
-            if (_e136 > 0f) {
-                let _e139 = total;
-                total = (_e139 + _e131);
-                q = 0u;
-                loop {
-                    let _e143 = q;
-                    if (_e143 < K) {
+            let _e137 = start;
+            let _e138 = tile_walk_fill(lid, _e131, _e137);
+            j = 0u;
+            loop {
+                let _e141 = j;
+                if (_e141 < _e138) {
+                } else {
+                    break;
+                }
+                {
+                    let _e144 = j;
+                    let b_7 = tile_list[_e144];
+                    if !(!(has_2)) {
+                        let _e153 = bsh_nodes[b_7];
+                        let _e154 = r;
+                        let _e155 = bsh_reaches(_e153, x_11, _e154, _e79);
+                        local_5 = !(_e155);
                     } else {
-                        break;
+                        local_5 = true;
                     }
-                    {
-                        let _e146 = q;
-                        let _e148 = slot_target(_e131, _e146, K);
-                        let _e149 = total;
-                        let _e150 = q;
-                        let _e152 = slot_target(_e149, _e150, K);
-                        if (_e148 > 0f) {
-                            let _e157 = q;
-                            let _e159 = threshold[_e157];
-                            local_2 = (_e152 > _e159);
-                        } else {
-                            local_2 = false;
-                        }
-                        let _e162 = local_2;
-                        if _e162 {
-                            let _e163 = q;
-                            slot_light[_e163] = li_3;
-                            let _e165 = q;
-                            slot_u[_e165] = u_4;
-                            let _e167 = q;
-                            slot_p[_e167] = _e148;
-                            let _e169 = q;
-                            let _e171 = next_threshold(_e152, (&hc));
-                            threshold[_e169] = _e171;
-                        }
+                    let _e158 = local_5;
+                    if _e158 {
+                        continue;
                     }
-                    continuing {
-                        let _e173 = q;
-                        q = (_e173 + 1u);
+                    let li_7 = bsh_nodes[b_7].light;
+                    let _e163 = count;
+                    count = (_e163 + 1u);
+                    let _e166 = h;
+                    let _e167 = pcg_hash(_e166);
+                    h = _e167;
+                    let _e168 = h;
+                    let _e169 = xi_from_bits(_e168);
+                    let _e170 = h;
+                    let _e171 = pcg_hash(_e170);
+                    h = _e171;
+                    let _e172 = h;
+                    let _e173 = xi_from_bits(_e172);
+                    let u_4 = vec2<f32>(_e169, _e173);
+                    let _e175 = n;
+                    let _e176 = r;
+                    let _e177 = m;
+                    let _e182 = shade_pick_traced(li_7, x_11, _e175, _e176, _e79, _e177, 1f, u_4.x, u_4.y, eps_4, false);
+                    let _e183 = output_of(_e182);
+                    let _e185 = evaluations;
+                    evaluations = (_e185 + 1u);
+                    let _e188 = resample_target(_e183);
+                    if (_e188 > 0f) {
+                        let _e191 = total;
+                        total = (_e191 + _e183);
+                        q = 0u;
+                        loop {
+                            let _e195 = q;
+                            if (_e195 < K) {
+                            } else {
+                                break;
+                            }
+                            {
+                                let _e198 = q;
+                                let _e200 = slot_target(_e183, _e198, K);
+                                let _e201 = total;
+                                let _e202 = q;
+                                let _e204 = slot_target(_e201, _e202, K);
+                                if (_e200 > 0f) {
+                                    let _e209 = q;
+                                    let _e211 = threshold[_e209];
+                                    local_6 = (_e204 > _e211);
+                                } else {
+                                    local_6 = false;
+                                }
+                                let _e214 = local_6;
+                                if _e214 {
+                                    let _e215 = q;
+                                    slot_light[_e215] = li_7;
+                                    let _e217 = q;
+                                    slot_u[_e217] = u_4;
+                                    let _e219 = q;
+                                    slot_p[_e219] = _e200;
+                                    let _e221 = q;
+                                    let _e223 = next_threshold(_e204, (&hc));
+                                    threshold[_e221] = _e223;
+                                }
+                            }
+                            continuing {
+                                let _e225 = q;
+                                q = (_e225 + 1u);
+                            }
+                        }
                     }
                 }
+                continuing {
+                    let _e228 = j;
+                    j = (_e228 + 1u);
+                }
             }
+            workgroupBarrier();
         }
         continuing {
-            let _e177 = b;
-            let _e180 = bsh_nodes[_e177].next;
-            let _e181 = r;
-            let _e182 = bsh_next_leaf_lobe(BSH, _e180, x_11, _e181, _e54);
-            b = _e182;
+            let _e230 = start;
+            start = (_e230 + TILE_LIST);
         }
     }
+    if !(has_2) {
+        if inside {
+            textureStore(out_tex, texel_1, vec4(0f));
+        }
+        return;
+    }
     loop {
-        let _e187 = k;
-        if (_e187 < K) {
+        let _e241 = k;
+        if (_e241 < K) {
         } else {
             break;
         }
         {
-            let _e190 = k;
-            let _e192 = k;
-            let _e194 = slot_light[_e192];
-            keys[_e190] = vec2<u32>(_e194, 0u);
-            let _e197 = k;
-            let _e199 = k;
-            let _e201 = slot_p[_e199];
-            held[_e197] = (_e201 > 0f);
+            let _e244 = k;
+            let _e246 = k;
+            let _e248 = slot_light[_e246];
+            keys[_e244] = vec2<u32>(_e248, 0u);
+            let _e251 = k;
+            let _e253 = k;
+            let _e255 = slot_p[_e253];
+            held[_e251] = (_e255 > 0f);
         }
         continuing {
-            let _e205 = k;
-            k = (_e205 + 1u);
+            let _e259 = k;
+            k = (_e259 + 1u);
         }
     }
-    let _e207 = keys;
-    let _e208 = held;
-    let _e209 = first_holders(_e207, _e208);
+    let _e261 = keys;
+    let _e262 = held;
+    let _e263 = first_holders(_e261, _e262);
     loop {
-        let _e212 = k_1;
-        if (_e212 < K) {
+        let _e266 = k_1;
+        if (_e266 < K) {
         } else {
             break;
         }
         {
             w = vec3(0f);
-            let _e218 = k_1;
-            let _e220 = k_1;
-            let first_1 = (_e209[_e218] == _e220);
-            let _e222 = k_1;
-            j = _e222;
+            let _e272 = k_1;
+            let _e274 = k_1;
+            let first_1 = (_e263[_e272] == _e274);
+            let _e276 = k_1;
+            j_1 = _e276;
             loop {
-                let _e224 = j;
-                if (_e224 < K) {
-                    local_3 = first_1;
+                let _e278 = j_1;
+                if (_e278 < K) {
+                    local_7 = first_1;
                 } else {
-                    local_3 = false;
+                    local_7 = false;
                 }
-                let _e230 = local_3;
-                if _e230 {
+                let _e284 = local_7;
+                if _e284 {
                 } else {
                     break;
                 }
                 {
-                    let _e231 = j;
-                    let _e233 = k_1;
-                    if (_e209[_e231] == _e233) {
-                        let _e235 = w;
-                        let _e236 = total;
-                        let _e237 = j;
-                        let _e239 = slot_target(_e236, _e237, K);
-                        let _e240 = j;
-                        let _e242 = slot_p[_e240];
-                        let _e244 = j;
-                        let _e246 = slot_share(_e244, K);
-                        w = (_e235 + ((_e239 / _e242) * _e246));
+                    let _e285 = j_1;
+                    let _e287 = k_1;
+                    if (_e263[_e285] == _e287) {
+                        let _e289 = w;
+                        let _e290 = total;
+                        let _e291 = j_1;
+                        let _e293 = slot_target(_e290, _e291, K);
+                        let _e294 = j_1;
+                        let _e296 = slot_p[_e294];
+                        let _e298 = j_1;
+                        let _e300 = slot_share(_e298, K);
+                        w = (_e289 + ((_e293 / _e296) * _e300));
                     }
                 }
                 continuing {
-                    let _e250 = j;
-                    j = (_e250 + 1u);
+                    let _e304 = j_1;
+                    j_1 = (_e304 + 1u);
                 }
             }
             if first_1 {
-                let _e252 = t;
-                let _e253 = k_1;
-                let _e255 = slot_light[_e253];
-                let _e256 = r;
-                let _e257 = m;
-                let _e259 = k_1;
-                let _e262 = slot_u[_e259].x;
-                let _e263 = k_1;
-                let _e266 = slot_u[_e263].y;
-                let _e267 = shade_pick(_e255, x_11, n_8, _e256, _e54, _e257, 1f, _e262, _e266, eps_4);
-                let _e268 = w;
-                let _e269 = scaled(_e267, _e268);
-                let _e270 = add(_e252, _e269);
-                t = _e270;
+                let _e306 = t;
+                let _e307 = k_1;
+                let _e309 = slot_light[_e307];
+                let _e310 = n;
+                let _e311 = r;
+                let _e312 = m;
+                let _e314 = k_1;
+                let _e317 = slot_u[_e314].x;
+                let _e318 = k_1;
+                let _e321 = slot_u[_e318].y;
+                let _e322 = shade_pick(_e309, x_11, _e310, _e311, _e79, _e312, 1f, _e317, _e321, eps_4);
+                let _e323 = w;
+                let _e324 = scaled(_e322, _e323);
+                let _e325 = add(_e306, _e324);
+                t = _e325;
             }
         }
         continuing {
-            let _e272 = k_1;
-            k_1 = (_e272 + 1u);
+            let _e327 = k_1;
+            k_1 = (_e327 + 1u);
         }
     }
-    let _e276 = t.e;
-    let _e277 = count;
-    textureStore(out_tex, texel_1, vec4<f32>(_e276, f32(_e277)));
+    let _e331 = t.e;
+    let _e332 = count;
+    textureStore(out_tex, texel_1, vec4<f32>(_e331, f32(_e332)));
     counter_add(DIRECT_COUNT_PIXELS, 1u);
-    let _e283 = count;
-    counter_add(DIRECT_COUNT_CANDIDATES, _e283);
-    let _e286 = evaluations;
-    counter_add(DIRECT_COUNT_EVALUATIONS, _e286);
-    let _e289 = rays_cast;
-    counter_add(DIRECT_COUNT_RAYS, _e289);
-    let _e292 = nodes_visited;
-    counter_add(DIRECT_COUNT_NODES, _e292);
+    let _e338 = count;
+    counter_add(DIRECT_COUNT_CANDIDATES, _e338);
+    let _e341 = evaluations;
+    counter_add(DIRECT_COUNT_EVALUATIONS, _e341);
+    let _e344 = rays_cast;
+    counter_add(DIRECT_COUNT_RAYS, _e344);
+    let _e347 = nodes_visited;
+    counter_add(DIRECT_COUNT_NODES, _e347);
     return;
 }

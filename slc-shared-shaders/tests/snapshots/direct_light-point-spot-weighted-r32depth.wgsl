@@ -74,9 +74,22 @@ struct Connection {
 struct WeightedPicks {
     light: array<u32, 8>,
     w: array<f32, 8>,
+    threshold: array<f32, 8>,
     w_sum: f32,
     n: u32,
     h: u32,
+}
+
+struct WorkgroupBox {
+    lo: vec3<f32>,
+    hi: vec3<f32>,
+}
+
+struct TileWalk {
+    lo: vec3<f32>,
+    hi: vec3<f32>,
+    w: f32,
+    total: u32,
 }
 
 struct Shaded {
@@ -152,6 +165,11 @@ const TEMPORAL_CHANGE_HIGH: f32 = 8f;
 const TEMPORAL_MIN_WEIGHT: f32 = 0.01f;
 const K: u32 = 8u;
 const BSH: u32 = 0u;
+const BSH_TILE_DEPTH: u32 = 8u;
+const BSH_TILE_SUBTREES: u32 = 256u;
+const TILE_THREADS: u32 = 64u;
+const BOX_THREADS: u32 = 64u;
+const TILE_LIST: u32 = 1024u;
 
 @group(1) @binding(6) 
 var<storage> geo_nodes: array<GpuGeoNode>;
@@ -175,6 +193,13 @@ var<storage> r2_4: array<f32>;
 var<storage> bsh_nodes: array<BshNode>;
 @group(1) @binding(5) 
 var<storage> light_cones: array<GpuLightCone>;
+var<workgroup> wg_lo: array<vec3<f32>, 64>;
+var<workgroup> wg_hi: array<vec3<f32>, 64>;
+var<workgroup> wg_box: WorkgroupBox;
+var<workgroup> tile_list: array<u32, 1024>;
+var<workgroup> subtree_at: array<u32, 256>;
+var<workgroup> tile_scale: atomic<u32>;
+var<workgroup> tile_total: u32;
 
 fn to_f32_(u: u32) -> f32 {
     return f32(u);
@@ -232,6 +257,12 @@ fn sphere_contains_point(c: vec3<f32>, r_1: f32, x_1: vec3<f32>) -> bool {
     return (dot(v_3, v_3) <= (r_1 * r_1));
 }
 
+fn sphere_overlaps_aabb(c_1: vec3<f32>, r_2: f32, bmin: vec3<f32>, bmax: vec3<f32>) -> bool {
+    let q = clamp(c_1, bmin, bmax);
+    let v_4 = (q - c_1);
+    return (dot(v_4, v_4) <= (r_2 * r_2));
+}
+
 fn inverse_square(d2_2: f32) -> f32 {
     return (1f / max(d2_2, MIN_D2_));
 }
@@ -242,30 +273,30 @@ fn connection_factor(cos_x: f32, d2_3: f32, rt2_1: f32, w: f32) -> f32 {
     return (((cos_x * _e4) * _e6) * w);
 }
 
-fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, r2_1: f32) -> f32 {
-    var local_2: bool;
-    var local_3: bool;
+fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n_1: vec3<f32>, ng: vec3<f32>, r2_1: f32) -> f32 {
+    var local_6: bool;
+    var local_7: bool;
 
-    let v_4 = (x_2 - y);
-    let d2_7 = dot(v_4, v_4);
+    let v_5 = (x_2 - y);
+    let d2_7 = dot(v_5, v_5);
     let _e7 = slc_keep(r2_1, d2_7);
     if !(!(_e7)) {
-        local_2 = !((d2_7 > 0f));
+        local_6 = !((d2_7 > 0f));
     } else {
-        local_2 = true;
+        local_6 = true;
     }
-    let _e16 = local_2;
+    let _e16 = local_6;
     if _e16 {
         return 0f;
     }
-    let w_5 = (v_4 / vec3(sqrt(d2_7)));
-    let cos_x_1 = -(dot(n, w_5));
+    let w_9 = (v_5 / vec3(sqrt(d2_7)));
+    let cos_x_1 = -(dot(n_1, w_9));
     if !((cos_x_1 <= 0f)) {
-        local_3 = (dot(ng, w_5) >= 0f);
+        local_7 = (dot(ng, w_9) >= 0f);
     } else {
-        local_3 = true;
+        local_7 = true;
     }
-    let _e32 = local_3;
+    let _e32 = local_7;
     if _e32 {
         return 0f;
     }
@@ -276,8 +307,8 @@ fn spot_falloff(cos_theta: f32, cos_outer: f32, cos_inner: f32, shape: f32) -> f
     if (cos_inner <= cos_outer) {
         return select(0f, 1f, (cos_theta >= cos_outer));
     }
-    let t_1 = saturate(((cos_theta - cos_outer) / (cos_inner - cos_outer)));
-    return select(((t_1 * t_1) * (3f - (2f * t_1))), (t_1 * t_1), (shape > 0.5f));
+    let t_4 = saturate(((cos_theta - cos_outer) / (cos_inner - cos_outer)));
+    return select(((t_4 * t_4) * (3f - (2f * t_4))), (t_4 * t_4), (shape > 0.5f));
 }
 
 fn bsh_scaled_radius(node: BshNode, scale: f32) -> f32 {
@@ -312,8 +343,8 @@ fn ggx_d(cos_h: f32, sin2_h: f32, alpha: f32) -> f32 {
         return 0f;
     }
     let a2_ = (alpha * alpha);
-    let t_2 = (((cos_h * cos_h) * a2_) + sin2_h);
-    return ((a2_ * INV_PI) / (t_2 * t_2));
+    let t_5 = (((cos_h * cos_h) * a2_) + sin2_h);
+    return ((a2_ * INV_PI) / (t_5 * t_5));
 }
 
 fn smith_root(cos_: f32, alpha_1: f32) -> f32 {
@@ -372,11 +403,11 @@ fn subtended_cos(dist2_: f32, r2_2: f32) -> f32 {
 }
 
 fn emitter_cone(center: vec3<f32>, radius: f32, axis: vec3<f32>, cos_o: f32, p: vec3<f32>) -> vec4<f32> {
-    let v_5 = (p - center);
-    let dist2_1 = dot(v_5, v_5);
+    let v_6 = (p - center);
+    let dist2_1 = dot(v_6, v_6);
     let r2_5 = (radius * radius);
     let d2_8 = max(max(dist2_1, r2_5), MIN_D2_);
-    let wi = select(vec3<f32>(0f, 0f, 0f), (v_5 / vec3(sqrt(dist2_1))), (dist2_1 > 0f));
+    let wi = select(vec3<f32>(0f, 0f, 0f), (v_6 / vec3(sqrt(dist2_1))), (dist2_1 > 0f));
     let cos_w = dot(axis, wi);
     let _e25 = safe_sqrt((1f - (cos_w * cos_w)));
     let _e26 = subtended_cos(dist2_1, r2_5);
@@ -397,51 +428,51 @@ fn emitter_importance(center_1: vec3<f32>, radius_1: f32, phi: f32, axis_1: vec3
 }
 
 fn cone_cos_of(v: vec3<f32>, d2_4: f32, a_2: f32, d: vec3<f32>) -> f32 {
-    var local_4: bool;
-    var local_5: bool;
+    var local_8: bool;
+    var local_9: bool;
 
     let vd = dot(v, d);
     let h2_ = (d2_4 - (a_2 * a_2));
     if !((h2_ <= 0f)) {
         if (vd >= 0f) {
-            local_5 = ((vd * vd) >= h2_);
+            local_9 = ((vd * vd) >= h2_);
         } else {
-            local_5 = false;
+            local_9 = false;
         }
-        let _e19 = local_5;
-        local_4 = _e19;
+        let _e19 = local_9;
+        local_8 = _e19;
     } else {
-        local_4 = true;
+        local_8 = true;
     }
-    let _e21 = local_4;
+    let _e21 = local_8;
     if _e21 {
         return 1f;
     }
-    let c_4 = cross(v, d);
-    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_4, c_4)) * a_2)) / d2_4), 1f);
+    let c_5 = cross(v, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_5, c_5)) * a_2)) / d2_4), 1f);
 }
 
 fn cone_cos_toward(center_2: vec3<f32>, radius_2: f32, p_2: vec3<f32>, d_1: vec3<f32>) -> f32 {
-    let v_6 = (center_2 - p_2);
-    let _e6 = cone_cos_of(v_6, dot(v_6, v_6), radius_2, d_1);
+    let v_7 = (center_2 - p_2);
+    let _e6 = cone_cos_of(v_7, dot(v_7, v_7), radius_2, d_1);
     return _e6;
 }
 
 fn range_scale_at(rl: vec4<f32>, cos_t: f32) -> f32 {
-    let t_3 = (((0.5f + (0.5f * cos_t)) * (rl.z - 1f)) + 1f);
-    return clamp((rl.x + ((rl.y * rl.z) / (t_3 * t_3))), 1f, (rl.w * rl.w));
+    let t_6 = (((0.5f + (0.5f * cos_t)) * (rl.z - 1f)) + 1f);
+    return clamp((rl.x + ((rl.y * rl.z) / (t_6 * t_6))), 1f, (rl.w * rl.w));
 }
 
-fn range_scale_toward(rl_1: vec4<f32>, center_3: vec3<f32>, radius_3: f32, p_3: vec3<f32>, r_2: vec3<f32>) -> f32 {
+fn range_scale_toward(rl_1: vec4<f32>, center_3: vec3<f32>, radius_3: f32, p_3: vec3<f32>, r_3: vec3<f32>) -> f32 {
     if (rl_1.w <= 1f) {
         return 1f;
     }
-    let _e9 = cone_cos_toward(center_3, radius_3, p_3, r_2);
+    let _e9 = cone_cos_toward(center_3, radius_3, p_3, r_3);
     let _e10 = range_scale_at(rl_1, _e9);
     return _e10;
 }
 
-fn light_importance(center_4: vec3<f32>, radius_4: f32, phi_1: f32, axis_2: vec3<f32>, cos_o_2: f32, cos_e_1: f32, p_4: vec3<f32>, n_1: vec3<f32>) -> f32 {
+fn light_importance(center_4: vec3<f32>, radius_4: f32, phi_1: f32, axis_2: vec3<f32>, cos_o_2: f32, cos_e_1: f32, p_4: vec3<f32>, n_2: vec3<f32>) -> f32 {
     var imp: f32;
 
     let _e8 = emitter_cone(center_4, radius_4, axis_2, cos_o_2, p_4);
@@ -449,10 +480,10 @@ fn light_importance(center_4: vec3<f32>, radius_4: f32, phi_1: f32, axis_2: vec3
         return 0f;
     }
     imp = ((phi_1 * _e8.x) / _e8.y);
-    if (dot(n_1, n_1) > 0f) {
-        let v_7 = (center_4 - p_4);
-        let dist2_2 = dot(v_7, v_7);
-        let cos_i = dot(select(vec3<f32>(0f, 0f, 0f), (v_7 / vec3(sqrt(dist2_2))), (dist2_2 > 0f)), n_1);
+    if (dot(n_2, n_2) > 0f) {
+        let v_8 = (center_4 - p_4);
+        let dist2_2 = dot(v_8, v_8);
+        let cos_i = dot(select(vec3<f32>(0f, 0f, 0f), (v_8 / vec3(sqrt(dist2_2))), (dist2_2 > 0f)), n_2);
         let _e33 = imp;
         let _e37 = safe_sqrt((1f - (cos_i * cos_i)));
         let _e40 = cos_sub_clamped(_e37, cos_i, _e8.w, _e8.z);
@@ -462,21 +493,21 @@ fn light_importance(center_4: vec3<f32>, radius_4: f32, phi_1: f32, axis_2: vec3
     return max(_e44, 0f);
 }
 
-fn glossy_importance(center_5: vec3<f32>, radius_5: f32, phi_2: f32, axis_3: vec3<f32>, cos_o_3: f32, cos_e_2: f32, p_5: vec3<f32>, n_2: vec3<f32>, r_3: vec3<f32>, lobe_5: vec4<f32>) -> f32 {
-    var local_6: bool;
+fn glossy_importance(center_5: vec3<f32>, radius_5: f32, phi_2: f32, axis_3: vec3<f32>, cos_o_3: f32, cos_e_2: f32, p_5: vec3<f32>, n_3: vec3<f32>, r_4: vec3<f32>, lobe_5: vec4<f32>) -> f32 {
+    var local_10: bool;
 
     let _e10 = emitter_importance(center_5, radius_5, phi_2, axis_3, cos_o_3, cos_e_2, p_5);
-    let _e11 = cone_cos_toward(center_5, radius_5, p_5, n_2);
+    let _e11 = cone_cos_toward(center_5, radius_5, p_5, n_3);
     if !((_e10 <= 0f)) {
-        local_6 = (_e11 <= 0f);
+        local_10 = (_e11 <= 0f);
     } else {
-        local_6 = true;
+        local_10 = true;
     }
-    let _e20 = local_6;
+    let _e20 = local_10;
     if _e20 {
         return 0f;
     }
-    let _e22 = cone_cos_toward(center_5, radius_5, p_5, r_3);
+    let _e22 = cone_cos_toward(center_5, radius_5, p_5, r_4);
     let _e27 = safe_sqrt((0.5f + (0.5f * _e22)));
     let _e33 = ggx_d(_e27, (1f - (_e27 * _e27)), lobe_5.z);
     let _e39 = smith_root(lobe_5.w, lobe_5.z);
@@ -489,34 +520,34 @@ fn candidate_weight(importance: f32, rt2_2: f32, d2_5: f32) -> f32 {
     return (importance * _e3);
 }
 
-fn cone_weight(center_6: vec3<f32>, radius_6: f32, phi_3: f32, axis_4: vec3<f32>, cos_o_4: f32, cos_e_3: f32, rt2_3: f32, p_6: vec3<f32>, n_3: vec3<f32>, r_4: vec3<f32>, lobe_6: vec4<f32>) -> f32 {
-    let v_8 = (p_6 - center_6);
+fn cone_weight(center_6: vec3<f32>, radius_6: f32, phi_3: f32, axis_4: vec3<f32>, cos_o_4: f32, cos_e_3: f32, rt2_3: f32, p_6: vec3<f32>, n_4: vec3<f32>, r_5: vec3<f32>, lobe_6: vec4<f32>) -> f32 {
+    let v_9 = (p_6 - center_6);
     if (lobe_6.y <= 0f) {
-        let _e15 = light_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_3);
-        let _e19 = candidate_weight((_e15 * INV_PI), rt2_3, dot(v_8, v_8));
+        let _e15 = light_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_4);
+        let _e19 = candidate_weight((_e15 * INV_PI), rt2_3, dot(v_9, v_9));
         return _e19;
     }
-    let _e20 = glossy_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_3, r_4, lobe_6);
-    let _e22 = candidate_weight(_e20, rt2_3, dot(v_8, v_8));
+    let _e20 = glossy_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_4, r_5, lobe_6);
+    let _e22 = candidate_weight(_e20, rt2_3, dot(v_9, v_9));
     return _e22;
 }
 
 fn finite3_(v_1: vec3<f32>) -> bool {
-    var local_7: bool;
-    var local_8: bool;
+    var local_11: bool;
+    var local_12: bool;
 
     if (abs(v_1.x) <= F32_MAX) {
-        local_7 = (abs(v_1.y) <= F32_MAX);
+        local_11 = (abs(v_1.y) <= F32_MAX);
     } else {
-        local_7 = false;
+        local_11 = false;
     }
-    let _e12 = local_7;
+    let _e12 = local_11;
     if _e12 {
-        local_8 = (abs(v_1.z) <= F32_MAX);
+        local_12 = (abs(v_1.z) <= F32_MAX);
     } else {
-        local_8 = false;
+        local_12 = false;
     }
-    let _e20 = local_8;
+    let _e20 = local_12;
     return _e20;
 }
 
@@ -535,63 +566,63 @@ fn ray_inverse3_(d_2: vec3<f32>) -> vec3<f32> {
     return vec3<f32>(_e2, _e4, _e6);
 }
 
-fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin: vec3<f32>, bmax: vec3<f32>, t_max: f32) -> f32 {
-    let t0_ = ((bmin - o) * inv_d);
-    let t1_ = ((bmax - o) * inv_d);
-    let lo = min(t0_, t1_);
-    let hi = max(t0_, t1_);
-    let t_in = max(max(lo.x, lo.y), max(lo.z, 0f));
-    let t_out = min(min(hi.x, hi.y), min(hi.z, t_max));
+fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin_1: vec3<f32>, bmax_1: vec3<f32>, t_max: f32) -> f32 {
+    let t0_ = ((bmin_1 - o) * inv_d);
+    let t1_ = ((bmax_1 - o) * inv_d);
+    let lo_3 = min(t0_, t1_);
+    let hi_3 = max(t0_, t1_);
+    let t_in = max(max(lo_3.x, lo_3.y), max(lo_3.z, 0f));
+    let t_out = min(min(hi_3.x, hi_3.y), min(hi_3.z, t_max));
     if (t_in <= t_out) {
         return t_in;
     }
     return -1f;
 }
 
-fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_3: vec3<f32>, b_2: vec3<f32>, c_1: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
-    var local_9: bool;
-    var local_10: bool;
-    var local_11: bool;
+fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_3: vec3<f32>, b_2: vec3<f32>, c_2: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
+    var local_13: bool;
+    var local_14: bool;
+    var local_15: bool;
 
     let e1_ = (b_2 - a_3);
-    let e2_ = (c_1 - a_3);
-    let p_7 = cross(d_3, e2_);
-    let det = dot(e1_, p_7);
+    let e2_ = (c_2 - a_3);
+    let p_9 = cross(d_3, e2_);
+    let det = dot(e1_, p_9);
     if (abs(det) <= 0f) {
         return -1f;
     }
     let inv = (1f / det);
-    let s_3 = (o_1 - a_3);
-    let u_3 = (dot(s_3, p_7) * inv);
+    let s_9 = (o_1 - a_3);
+    let u_3 = (dot(s_9, p_9) * inv);
     if !((u_3 < 0f)) {
-        local_9 = (u_3 > 1f);
+        local_13 = (u_3 > 1f);
     } else {
-        local_9 = true;
+        local_13 = true;
     }
-    let _e28 = local_9;
+    let _e28 = local_13;
     if _e28 {
         return -1f;
     }
-    let q = cross(s_3, e1_);
-    let v_9 = (dot(d_3, q) * inv);
-    if !((v_9 < 0f)) {
-        local_10 = ((u_3 + v_9) > 1f);
+    let q_1 = cross(s_9, e1_);
+    let v_10 = (dot(d_3, q_1) * inv);
+    if !((v_10 < 0f)) {
+        local_14 = ((u_3 + v_10) > 1f);
     } else {
-        local_10 = true;
+        local_14 = true;
     }
-    let _e42 = local_10;
+    let _e42 = local_14;
     if _e42 {
         return -1f;
     }
-    let t_4 = (dot(e2_, q) * inv);
-    if (t_4 > t_min) {
-        local_11 = (t_4 < t_max_1);
+    let t_7 = (dot(e2_, q_1) * inv);
+    if (t_7 > t_min) {
+        local_15 = (t_7 < t_max_1);
     } else {
-        local_11 = false;
+        local_15 = false;
     }
-    let _e51 = local_11;
+    let _e51 = local_15;
     if _e51 {
-        return t_4;
+        return t_7;
     }
     return -1f;
 }
@@ -645,9 +676,9 @@ fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
                     }
                     {
                         let _e42 = i;
-                        let t_5 = geo_tris[_e42];
+                        let t_8 = geo_tris[_e42];
                         let _e49 = hit.t;
-                        let _e50 = ray_triangle(o_2, d_4, t_5.v0_, t_5.v1_, t_5.v2_, t_min_1, _e49);
+                        let _e50 = ray_triangle(o_2, d_4, t_8.v0_, t_8.v1_, t_8.v2_, t_min_1, _e49);
                         if (_e50 > 0f) {
                             hit.t = _e50;
                             let _e55 = i;
@@ -717,15 +748,15 @@ fn bsh_first(nodes_2: u32) -> u32 {
     return BSH_NONE;
 }
 
-fn bsh_inner_scale(a_5: f32, v_2: vec3<f32>, d2_6: f32, r_5: vec3<f32>, rl_2: vec4<f32>) -> f32 {
-    let _e5 = cone_cos_of(v_2, d2_6, a_5, r_5);
+fn bsh_inner_scale(a_5: f32, v_2: vec3<f32>, d2_6: f32, r_6: vec3<f32>, rl_2: vec4<f32>) -> f32 {
+    let _e5 = cone_cos_of(v_2, d2_6, a_5, r_6);
     let _e8 = range_scale_at(rl_2, (_e5 + 0.000002f));
     return _e8;
 }
 
-fn bsh_reaches(node_3: BshNode, x_5: vec3<f32>, r_6: vec3<f32>, rl_3: vec4<f32>) -> bool {
-    var local_12: bool;
-    var local_13: bool;
+fn bsh_reaches(node_3: BshNode, x_5: vec3<f32>, r_7: vec3<f32>, rl_3: vec4<f32>) -> bool {
+    var local_16: bool;
+    var local_17: bool;
 
     let _e6 = sphere_contains_point(node_3.center, node_3.radius, x_5);
     if _e6 {
@@ -733,65 +764,116 @@ fn bsh_reaches(node_3: BshNode, x_5: vec3<f32>, r_6: vec3<f32>, rl_3: vec4<f32>)
     }
     if !((rl_3.w <= 1f)) {
         let _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001f)), x_5);
-        local_12 = !(_e20);
+        local_16 = !(_e20);
     } else {
-        local_12 = true;
+        local_16 = true;
     }
-    let _e23 = local_12;
+    let _e23 = local_16;
     if _e23 {
         return false;
     }
     let _e25 = bsh_range_bound(node_3);
-    let v_10 = (x_5 - node_3.center);
-    let d2_9 = dot(v_10, v_10);
+    let v_11 = (x_5 - node_3.center);
+    let d2_9 = dot(v_11, v_11);
     let reach_max = (node_3.extent + ((rl_3.w * 1.001f) * _e25));
     if (d2_9 > (reach_max * reach_max)) {
         return false;
     }
     if (node_3.child == BSH_NONE) {
-        let _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_5, r_6);
+        let _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_5, r_7);
         let _e46 = bsh_scaled_radius(node_3, sqrt(_e43));
         let _e47 = sphere_contains_point(node_3.center, _e46, x_5);
         return _e47;
     }
-    let _e50 = bsh_inner_scale(node_3.extent, -(v_10), d2_9, r_6, rl_3);
+    let _e50 = bsh_inner_scale(node_3.extent, -(v_11), d2_9, r_7, rl_3);
     let s_c = (_e50 * 1.001f);
     let reach = (node_3.extent + (sqrt(s_c) * _e25));
     if (d2_9 <= ((node_3.radius * node_3.radius) * s_c)) {
-        local_13 = (d2_9 <= (reach * reach));
+        local_17 = (d2_9 <= (reach * reach));
     } else {
-        local_13 = false;
+        local_17 = false;
     }
-    let _e67 = local_13;
+    let _e67 = local_17;
     return _e67;
 }
 
-fn bsh_next_leaf_lobe(nodes_3: u32, start: u32, x_6: vec3<f32>, r_7: vec3<f32>, rl_4: vec4<f32>) -> u32 {
-    var i_2: u32;
+fn bsh_reaches_box(node_4: BshNode, lo: vec3<f32>, hi: vec3<f32>, w_3: f32) -> bool {
+    let _e13 = sphere_overlaps_aabb(node_4.center, (node_4.radius * (max(1f, (w_3 * 1.0001f)) * 1.0001f)), lo, hi);
+    return _e13;
+}
 
-    i_2 = start;
+fn bsh_subtree(nodes_3: u32, s_1: u32, depth: u32) -> u32 {
+    var i_2: u32;
+    var level: u32 = 0u;
+    var local_18: bool;
+
+    let _e3 = bsh_first(nodes_3);
+    i_2 = _e3;
     loop {
-        let _e6 = i_2;
-        if (_e6 != BSH_NONE) {
+        let _e7 = level;
+        if (_e7 < depth) {
+            let _e11 = i_2;
+            local_18 = (_e11 != BSH_NONE);
+        } else {
+            local_18 = false;
+        }
+        let _e15 = local_18;
+        if _e15 {
         } else {
             break;
         }
         {
-            let _e9 = i_2;
-            let _e10 = bsh_node(nodes_3, _e9);
-            let _e11 = bsh_reaches(_e10, x_6, r_7, rl_4);
+            let _e16 = i_2;
+            let _e17 = bsh_node(nodes_3, _e16);
+            let _e18 = level;
+            let below = (depth - _e18);
+            if (_e17.child == BSH_NONE) {
+                if ((s_1 << (32u - below)) != 0u) {
+                    return BSH_NONE;
+                }
+                let _e29 = i_2;
+                return _e29;
+            }
+            if (((s_1 >> (below - 1u)) & 1u) == 0u) {
+                i_2 = _e17.child;
+            } else {
+                let _e39 = bsh_node(nodes_3, _e17.child);
+                i_2 = _e39.next;
+            }
+            let _e41 = level;
+            level = (_e41 + 1u);
+        }
+    }
+    let _e44 = i_2;
+    return _e44;
+}
+
+fn bsh_next_leaf_box(nodes_4: u32, start_1: u32, end: u32, lo_1: vec3<f32>, hi_1: vec3<f32>, w_4: f32) -> u32 {
+    var i_3: u32;
+
+    i_3 = start_1;
+    loop {
+        let _e7 = i_3;
+        if (_e7 != end) {
+        } else {
+            break;
+        }
+        {
+            let _e9 = i_3;
+            let _e10 = bsh_node(nodes_4, _e9);
+            let _e11 = bsh_reaches_box(_e10, lo_1, hi_1, w_4);
             if _e11 {
                 if (_e10.child == BSH_NONE) {
-                    let _e15 = i_2;
+                    let _e15 = i_3;
                     return _e15;
                 }
-                i_2 = _e10.child;
+                i_3 = _e10.child;
             } else {
-                i_2 = _e10.next;
+                i_3 = _e10.next;
             }
         }
     }
-    return BSH_NONE;
+    return end;
 }
 
 fn next_threshold(sum: f32, h_1: ptr<function, u32>) -> f32 {
@@ -804,165 +886,150 @@ fn next_threshold(sum: f32, h_1: ptr<function, u32>) -> f32 {
     return _e6;
 }
 
-fn connect_record(l_2: GpuLight, x_7: vec3<f32>, n_4: vec3<f32>, ng_1: vec3<f32>, r2_3: f32, rt2_4: f32, w_res: f32, u1_1: f32, u2_1: f32, eps: f32, trace_1: bool) -> Connection {
-    var c_2: Connection;
-    var local_14: bool;
-    var local_15: bool;
+fn connect_record(l_2: GpuLight, x_6: vec3<f32>, n_5: vec3<f32>, ng_1: vec3<f32>, r2_3: f32, rt2_4: f32, w_res: f32, u1_1: f32, u2_1: f32, eps: f32, trace_1: bool) -> Connection {
+    var c_3: Connection;
+    var local_19: bool;
+    var local_20: bool;
 
-    c_2.e = vec3(0f);
+    c_3.e = vec3(0f);
     let _e16 = light_point(l_2, u1_1, u2_1);
-    c_2.y = _e16;
-    let _e19 = c_2.y;
-    let _e20 = connection_cosine(x_7, _e19, n_4, ng_1, r2_3);
-    c_2.cos_x = _e20;
-    let _e22 = c_2.cos_x;
+    c_3.y = _e16;
+    let _e19 = c_3.y;
+    let _e20 = connection_cosine(x_6, _e19, n_5, ng_1, r2_3);
+    c_3.cos_x = _e20;
+    let _e22 = c_3.cos_x;
     if !((_e22 <= 0f)) {
         if trace_1 {
-            let _e33 = c_2.y;
-            let _e34 = occluded((x_7 + (ng_1 * eps)), _e33);
-            local_15 = _e34;
+            let _e33 = c_3.y;
+            let _e34 = occluded((x_6 + (ng_1 * eps)), _e33);
+            local_20 = _e34;
         } else {
-            local_15 = false;
+            local_20 = false;
         }
-        let _e36 = local_15;
-        local_14 = _e36;
+        let _e36 = local_20;
+        local_19 = _e36;
     } else {
-        local_14 = true;
+        local_19 = true;
     }
-    let _e38 = local_14;
+    let _e38 = local_19;
     if _e38 {
-        let _e39 = c_2;
+        let _e39 = c_3;
         return _e39;
     }
-    let _e41 = c_2.y;
-    let v_11 = (x_7 - _e41);
-    let d2_10 = dot(v_11, v_11);
-    let _e48 = light_intensity(l_2, (v_11 / vec3(sqrt(d2_10))));
-    let _e50 = c_2.cos_x;
+    let _e41 = c_3.y;
+    let v_12 = (x_6 - _e41);
+    let d2_10 = dot(v_12, v_12);
+    let _e48 = light_intensity(l_2, (v_12 / vec3(sqrt(d2_10))));
+    let _e50 = c_3.cos_x;
     let _e51 = connection_factor(_e50, d2_10, rt2_4, w_res);
-    c_2.e = (_e48 * _e51);
-    let _e53 = c_2;
+    c_3.e = (_e48 * _e51);
+    let _e53 = c_3;
     return _e53;
 }
 
-fn connect_traced(li: u32, x_8: vec3<f32>, n_5: vec3<f32>, ng_2: vec3<f32>, s: f32, w_res_1: f32, u1_2: f32, u2_2: f32, eps_1: f32, trace_2: bool) -> Connection {
+fn connect_traced(li: u32, x_7: vec3<f32>, n_6: vec3<f32>, ng_2: vec3<f32>, s_2: f32, w_res_1: f32, u1_2: f32, u2_2: f32, eps_1: f32, trace_2: bool) -> Connection {
     let _e12 = lights[li];
     let _e15 = r2_4[li];
     let _e19 = rt2_5[li];
-    let _e21 = connect_record(_e12, x_8, n_5, ng_2, (s * _e15), (s * _e19), w_res_1, u1_2, u2_2, eps_1, trace_2);
+    let _e21 = connect_record(_e12, x_7, n_6, ng_2, (s_2 * _e15), (s_2 * _e19), w_res_1, u1_2, u2_2, eps_1, trace_2);
     return _e21;
 }
 
-fn light_range_scale(li_1: u32, x_9: vec3<f32>, r_8: vec3<f32>, rl_5: vec4<f32>) -> f32 {
-    let c_5 = light_cones[li_1];
-    let _e9 = range_scale_toward(rl_5, c_5.center, c_5.radius, x_9, r_8);
+fn light_range_scale(li_1: u32, x_8: vec3<f32>, r_8: vec3<f32>, rl_4: vec4<f32>) -> f32 {
+    let c_6 = light_cones[li_1];
+    let _e9 = range_scale_toward(rl_4, c_6.center, c_6.radius, x_8, r_8);
     return _e9;
 }
 
-fn light_weight(li_2: u32, x_10: vec3<f32>, n_6: vec3<f32>, r_9: vec3<f32>, lobe_7: vec4<f32>, rl_6: vec4<f32>) -> f32 {
-    let c_6 = light_cones[li_2];
-    let _e15 = light_range_scale(li_2, x_10, r_9, rl_6);
+fn light_weight(li_2: u32, x_9: vec3<f32>, n_7: vec3<f32>, r_9: vec3<f32>, lobe_7: vec4<f32>, rl_5: vec4<f32>) -> f32 {
+    let c_7 = light_cones[li_2];
+    let _e15 = light_range_scale(li_2, x_9, r_9, rl_5);
     let _e18 = rt2_5[li_2];
-    let _e20 = cone_weight(c_6.center, c_6.radius, c_6.phi, c_6.axis, c_6.cos_o, c_6.cos_e, (_e15 * _e18), x_10, n_6, r_9, lobe_7);
+    let _e20 = cone_weight(c_7.center, c_7.radius, c_7.phi, c_7.axis, c_7.cos_o, c_7.cos_e, (_e15 * _e18), x_9, n_7, r_9, lobe_7);
     return _e20;
 }
 
-fn bsh_weighted_collect(x_11: vec3<f32>, n_7: vec3<f32>, r_10: vec3<f32>, lobe_8: vec4<f32>, rl_7: vec4<f32>, h0_: u32) -> WeightedPicks {
-    var picks: WeightedPicks;
-    var h_2: u32;
-    var threshold: array<f32, 8>;
-    var b_4: u32;
-    var s_1: u32;
+fn weighted_picks(h_2: u32) -> WeightedPicks {
+    var picks_1: WeightedPicks;
 
-    picks.w_sum = 0f;
-    picks.n = 0u;
-    h_2 = h0_;
-    let _e15 = bsh_first(BSH);
-    let _e16 = bsh_next_leaf_lobe(BSH, _e15, x_11, r_10, rl_7);
-    b_4 = _e16;
-    loop {
-        let _e18 = b_4;
-        if (_e18 != BSH_NONE) {
-        } else {
-            break;
-        }
-        {
-            let _e22 = picks.n;
-            picks.n = (_e22 + 1u);
-            let _e26 = b_4;
-            let li_5 = bsh_nodes[_e26].light;
-            let _e30 = light_weight(li_5, x_11, n_7, r_10, lobe_8, rl_7);
-            if (_e30 > 0f) {
-                let _e34 = picks.w_sum;
-                picks.w_sum = (_e34 + _e30);
-                s_1 = 0u;
-                loop {
-                    let _e38 = s_1;
-                    if (_e38 < K) {
-                    } else {
-                        break;
-                    }
-                    {
-                        let _e42 = picks.w_sum;
-                        let _e43 = s_1;
-                        let _e45 = threshold[_e43];
-                        if (_e42 > _e45) {
-                            let _e48 = s_1;
-                            picks.light[_e48] = li_5;
-                            let _e51 = s_1;
-                            picks.w[_e51] = _e30;
-                            let _e53 = s_1;
-                            let _e56 = picks.w_sum;
-                            let _e57 = next_threshold(_e56, (&h_2));
-                            threshold[_e53] = _e57;
-                        }
-                    }
-                    continuing {
-                        let _e59 = s_1;
-                        s_1 = (_e59 + 1u);
-                    }
-                }
-            }
-        }
-        continuing {
-            let _e63 = b_4;
-            let _e66 = bsh_nodes[_e63].next;
-            let _e67 = bsh_next_leaf_lobe(BSH, _e66, x_11, r_10, rl_7);
-            b_4 = _e67;
-        }
-    }
-    let _e69 = h_2;
-    picks.h = _e69;
-    let _e70 = picks;
-    return _e70;
+    picks_1.w_sum = 0f;
+    picks_1.n = 0u;
+    picks_1.h = h_2;
+    let _e7 = picks_1;
+    return _e7;
 }
 
-fn unproject_pixel(c0_: vec4<f32>, c1_: vec4<f32>, c2_: vec4<f32>, c3_: vec4<f32>, px: f32, py: f32, width: f32, height: f32, depth: f32) -> vec4<f32> {
-    var local_16: bool;
-    var local_17: bool;
+fn weighted_offer(picks_2: ptr<function, WeightedPicks>, li_3: u32, w_5: f32) {
+    var h_3: u32;
+    var s_3: u32 = 0u;
 
-    if (depth > 0f) {
-        local_16 = (depth < 1f);
+    let _e4 = (*picks_2).n;
+    (*picks_2).n = (_e4 + 1u);
+    if (w_5 > 0f) {
+        let _e10 = (*picks_2).w_sum;
+        (*picks_2).w_sum = (_e10 + w_5);
+        let _e13 = (*picks_2).h;
+        h_3 = _e13;
+        loop {
+            let _e17 = s_3;
+            if (_e17 < K) {
+            } else {
+                break;
+            }
+            {
+                let _e21 = (*picks_2).w_sum;
+                let _e23 = s_3;
+                let _e25 = (*picks_2).threshold[_e23];
+                if (_e21 > _e25) {
+                    let _e28 = s_3;
+                    (*picks_2).light[_e28] = li_3;
+                    let _e31 = s_3;
+                    (*picks_2).w[_e31] = w_5;
+                    let _e34 = s_3;
+                    let _e37 = (*picks_2).w_sum;
+                    let _e38 = next_threshold(_e37, (&h_3));
+                    (*picks_2).threshold[_e34] = _e38;
+                }
+            }
+            continuing {
+                let _e40 = s_3;
+                s_3 = (_e40 + 1u);
+            }
+        }
+        let _e43 = h_3;
+        (*picks_2).h = _e43;
+        return;
     } else {
-        local_16 = false;
+        return;
     }
-    let _e16 = local_16;
+}
+
+fn unproject_pixel(c0_: vec4<f32>, c1_: vec4<f32>, c2_: vec4<f32>, c3_: vec4<f32>, px: f32, py: f32, width: f32, height: f32, depth_1: f32) -> vec4<f32> {
+    var local_21: bool;
+    var local_22: bool;
+
+    if (depth_1 > 0f) {
+        local_21 = (depth_1 < 1f);
+    } else {
+        local_21 = false;
+    }
+    let _e16 = local_21;
     if !(_e16) {
         return vec4<f32>(0f, 0f, 0f, 0f);
     }
-    let x_15 = ((((px + 0.5f) / width) * 2f) - 1f);
+    let x_14 = ((((px + 0.5f) / width) * 2f) - 1f);
     let y_1 = (1f - (((py + 0.5f) / height) * 2f));
-    let p_8 = ((((c0_ * x_15) + (c1_ * y_1)) + (c2_ * depth)) + c3_);
-    let q_1 = vec3<f32>((p_8.x / p_8.w), (p_8.y / p_8.w), (p_8.z / p_8.w));
-    if (abs(p_8.w) > 0f) {
-        let _e59 = finite3_(q_1);
-        local_17 = _e59;
+    let p_10 = ((((c0_ * x_14) + (c1_ * y_1)) + (c2_ * depth_1)) + c3_);
+    let q_2 = vec3<f32>((p_10.x / p_10.w), (p_10.y / p_10.w), (p_10.z / p_10.w));
+    if (abs(p_10.w) > 0f) {
+        let _e59 = finite3_(q_2);
+        local_22 = _e59;
     } else {
-        local_17 = false;
+        local_22 = false;
     }
-    let _e61 = local_17;
+    let _e61 = local_22;
     if _e61 {
-        return vec4<f32>(q_1.x, q_1.y, q_1.z, 1f);
+        return vec4<f32>(q_2.x, q_2.y, q_2.z, 1f);
     }
     return vec4<f32>(0f, 0f, 0f, 0f);
 }
@@ -980,37 +1047,256 @@ fn surface_at(texel: vec2<i32>) -> vec4<f32> {
     return _e29;
 }
 
-fn shade_connection(c_3: Connection, x_12: vec3<f32>, n_8: vec3<f32>, m_1: Material) -> Shaded {
-    var s_2: Shaded;
+fn workgroup_bounds(li_4: u32, lo_2: vec3<f32>, hi_2: vec3<f32>) -> WorkgroupBox {
+    var stride: u32 = 32u;
 
-    s_2.e = c_3.e;
-    s_2.diffuse = vec3(0f);
-    s_2.specular = vec3(0f);
-    let _e13 = s_2;
+    wg_lo[li_4] = lo_2;
+    wg_hi[li_4] = hi_2;
+    workgroupBarrier();
+    loop {
+        let _e9 = stride;
+        if (_e9 > 0u) {
+        } else {
+            break;
+        }
+        {
+            let _e12 = stride;
+            if (li_4 < _e12) {
+                let _e18 = wg_lo[li_4];
+                let _e20 = stride;
+                let _e23 = wg_lo[(li_4 + _e20)];
+                wg_lo[li_4] = min(_e18, _e23);
+                let _e29 = wg_hi[li_4];
+                let _e31 = stride;
+                let _e34 = wg_hi[(li_4 + _e31)];
+                wg_hi[li_4] = max(_e29, _e34);
+            }
+            workgroupBarrier();
+        }
+        continuing {
+            let _e36 = stride;
+            stride = (_e36 / 2u);
+        }
+    }
+    if (li_4 == 0u) {
+        let _e44 = wg_lo[0];
+        let _e47 = wg_hi[0];
+        wg_box = WorkgroupBox(_e44, _e47);
+    }
+    let _e50 = workgroupUniformLoad((&wg_box));
+    return _e50;
+}
+
+fn workgroup_box(li_5: u32, p_7: vec3<f32>, has: bool) -> WorkgroupBox {
+    let _e9 = workgroup_bounds(li_5, select(vec3(340282350000000000000000000000000000000f), p_7, has), select(vec3(-340282350000000000000000000000000000000f), p_7, has));
+    return _e9;
+}
+
+fn box_is_empty(b_4: WorkgroupBox) -> bool {
+    return (b_4.lo.x > b_4.hi.x);
+}
+
+fn tile_subtree(s_4: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: u32) -> u32 {
+    var p_8: u32;
+    var b_5: u32;
+    var local_23: bool;
+    var local_24: bool;
+    var local_25: bool;
+
+    let _e8 = bsh_subtree(BSH, s_4, BSH_TILE_DEPTH);
+    if (_e8 == BSH_NONE) {
+        return 0u;
+    }
+    let end_1 = bsh_nodes[_e8].next;
+    p_8 = at;
+    let _e21 = bsh_next_leaf_box(BSH, _e8, end_1, t_1.lo, t_1.hi, t_1.w);
+    b_5 = _e21;
+    loop {
+        let _e23 = b_5;
+        if (_e23 != end_1) {
+            if !(!(list)) {
+                let _e31 = p_8;
+                local_24 = (_e31 < to);
+            } else {
+                local_24 = true;
+            }
+            let _e34 = local_24;
+            local_23 = _e34;
+        } else {
+            local_23 = false;
+        }
+        let _e36 = local_23;
+        if _e36 {
+        } else {
+            break;
+        }
+        {
+            if list {
+                let _e39 = p_8;
+                local_25 = (_e39 >= start_2);
+            } else {
+                local_25 = false;
+            }
+            let _e42 = local_25;
+            if _e42 {
+                let _e44 = p_8;
+                let _e47 = b_5;
+                tile_list[(_e44 - start_2)] = _e47;
+            }
+            let _e48 = p_8;
+            p_8 = (_e48 + 1u);
+        }
+        continuing {
+            let _e53 = b_5;
+            let _e56 = bsh_nodes[_e53].next;
+            let _e60 = bsh_next_leaf_box(BSH, _e56, end_1, t_1.lo, t_1.hi, t_1.w);
+            b_5 = _e60;
+        }
+    }
+    let _e61 = p_8;
+    return (_e61 - at);
+}
+
+fn tile_walk_begin(li_6: u32, x_10: vec3<f32>, w_6: f32, has_1: bool) -> TileWalk {
+    var t_2: TileWalk;
+    var s_5: u32;
+    var sum_1: u32 = 0u;
+    var s_6: u32 = 0u;
+
+    let _e8 = atomicMax((&tile_scale), select(0u, bitcast<u32>(w_6), has_1));
+    let _e9 = workgroup_box(li_6, x_10, has_1);
+    let _e13 = workgroupUniformLoad((&tile_scale));
+    t_2 = TileWalk(_e9.lo, _e9.hi, bitcast<f32>(_e13), 0u);
+    let _e18 = box_is_empty(_e9);
+    if _e18 {
+        let _e19 = t_2;
+        return _e19;
+    }
+    s_5 = li_6;
+    loop {
+        let _e21 = s_5;
+        if (_e21 < BSH_TILE_SUBTREES) {
+        } else {
+            break;
+        }
+        {
+            let _e25 = s_5;
+            let _e27 = s_5;
+            let _e28 = t_2;
+            let _e33 = tile_subtree(_e27, _e28, false, 0u, 0u, 0u);
+            subtree_at[_e25] = _e33;
+        }
+        continuing {
+            let _e34 = s_5;
+            s_5 = (_e34 + TILE_THREADS);
+        }
+    }
+    workgroupBarrier();
+    if (li_6 == 0u) {
+        loop {
+            let _e43 = s_6;
+            if (_e43 < BSH_TILE_SUBTREES) {
+            } else {
+                break;
+            }
+            {
+                let _e47 = s_6;
+                let c_8 = subtree_at[_e47];
+                let _e51 = s_6;
+                let _e53 = sum_1;
+                subtree_at[_e51] = _e53;
+                let _e54 = sum_1;
+                sum_1 = (_e54 + c_8);
+            }
+            continuing {
+                let _e57 = s_6;
+                s_6 = (_e57 + 1u);
+            }
+        }
+        let _e60 = sum_1;
+        tile_total = _e60;
+    }
+    let _e63 = workgroupUniformLoad((&tile_total));
+    t_2.total = _e63;
+    let _e64 = t_2;
+    return _e64;
+}
+
+fn tile_walk_fill(li_7: u32, t_3: TileWalk, start_3: u32) -> u32 {
+    var s_7: u32;
+    var past: u32;
+    var local_26: bool;
+
+    let to_1 = min(t_3.total, (start_3 + TILE_LIST));
+    s_7 = li_7;
+    loop {
+        let _e8 = s_7;
+        if (_e8 < BSH_TILE_SUBTREES) {
+        } else {
+            break;
+        }
+        {
+            let _e12 = s_7;
+            let at_1 = subtree_at[_e12];
+            past = t_3.total;
+            let _e17 = s_7;
+            if ((_e17 + 1u) < BSH_TILE_SUBTREES) {
+                let _e23 = s_7;
+                let _e27 = subtree_at[(_e23 + 1u)];
+                past = _e27;
+            }
+            if (at_1 < to_1) {
+                let _e31 = past;
+                local_26 = (_e31 > start_3);
+            } else {
+                local_26 = false;
+            }
+            let _e34 = local_26;
+            if _e34 {
+                let _e35 = s_7;
+                let _e37 = tile_subtree(_e35, t_3, true, at_1, start_3, to_1);
+            }
+        }
+        continuing {
+            let _e38 = s_7;
+            s_7 = (_e38 + TILE_THREADS);
+        }
+    }
+    workgroupBarrier();
+    return (to_1 - start_3);
+}
+
+fn shade_connection(c_4: Connection, x_11: vec3<f32>, n_8: vec3<f32>, m_1: Material) -> Shaded {
+    var s_8: Shaded;
+
+    s_8.e = c_4.e;
+    s_8.diffuse = vec3(0f);
+    s_8.specular = vec3(0f);
+    let _e13 = s_8;
     return _e13;
 }
 
-fn shade_pick_traced(li_3: u32, x_13: vec3<f32>, n_9: vec3<f32>, r_11: vec3<f32>, rl_8: vec4<f32>, m_2: Material, w_3: f32, u1_3: f32, u2_3: f32, eps_2: f32, trace_3: bool) -> Shaded {
-    let _e12 = connect_traced(li_3, x_13, n_9, n_9, 1f, w_3, u1_3, u2_3, eps_2, trace_3);
-    let _e13 = shade_connection(_e12, x_13, n_9, m_2);
+fn shade_pick_traced(li_8: u32, x_12: vec3<f32>, n_9: vec3<f32>, r_10: vec3<f32>, rl_6: vec4<f32>, m_2: Material, w_7: f32, u1_3: f32, u2_3: f32, eps_2: f32, trace_3: bool) -> Shaded {
+    let _e12 = connect_traced(li_8, x_12, n_9, n_9, 1f, w_7, u1_3, u2_3, eps_2, trace_3);
+    let _e13 = shade_connection(_e12, x_12, n_9, m_2);
     return _e13;
 }
 
-fn shade_pick(li_4: u32, x_14: vec3<f32>, n_10: vec3<f32>, r_12: vec3<f32>, rl_9: vec4<f32>, m_3: Material, w_4: f32, u1_4: f32, u2_4: f32, eps_3: f32) -> Shaded {
-    let _e11 = shade_pick_traced(li_4, x_14, n_10, r_12, rl_9, m_3, w_4, u1_4, u2_4, eps_3, true);
+fn shade_pick(li_9: u32, x_13: vec3<f32>, n_10: vec3<f32>, r_11: vec3<f32>, rl_7: vec4<f32>, m_3: Material, w_8: f32, u1_4: f32, u2_4: f32, eps_3: f32) -> Shaded {
+    let _e11 = shade_pick_traced(li_9, x_13, n_10, r_11, rl_7, m_3, w_8, u1_4, u2_4, eps_3, true);
     return _e11;
 }
 
-fn add(a_6: Shaded, b_5: Shaded) -> Shaded {
-    return Shaded((a_6.e + b_5.e), (a_6.diffuse + b_5.diffuse), (a_6.specular + b_5.specular));
+fn add(a_6: Shaded, b_6: Shaded) -> Shaded {
+    return Shaded((a_6.e + b_6.e), (a_6.diffuse + b_6.diffuse), (a_6.specular + b_6.specular));
 }
 
 fn first_holders(keys_1: array<vec2<u32>, 8>, held_1: array<bool, 8>) -> array<u32, 8> {
     var first: array<u32, 8>;
     var k_3: u32 = 0u;
-    var j_1: u32;
-    var local_18: bool;
-    var local_19: bool;
+    var j_2: u32;
+    var local_27: bool;
+    var local_28: bool;
 
     loop {
         let _e5 = k_3;
@@ -1023,41 +1309,41 @@ fn first_holders(keys_1: array<vec2<u32>, 8>, held_1: array<bool, 8>) -> array<u
             let _e11 = k_3;
             let _e12 = k_3;
             first[_e8] = select(K, _e11, held_1[_e12]);
-            j_1 = 0u;
+            j_2 = 0u;
             loop {
-                let _e17 = j_1;
+                let _e17 = j_2;
                 let _e18 = k_3;
                 if (_e17 < _e18) {
                     let _e22 = k_3;
-                    local_18 = held_1[_e22];
+                    local_27 = held_1[_e22];
                 } else {
-                    local_18 = false;
+                    local_27 = false;
                 }
-                let _e25 = local_18;
+                let _e25 = local_27;
                 if _e25 {
                 } else {
                     break;
                 }
                 {
-                    let _e26 = j_1;
+                    let _e26 = j_2;
                     if held_1[_e26] {
-                        let _e30 = j_1;
+                        let _e30 = j_2;
                         let _e32 = k_3;
-                        local_19 = all((keys_1[_e30] == keys_1[_e32]));
+                        local_28 = all((keys_1[_e30] == keys_1[_e32]));
                     } else {
-                        local_19 = false;
+                        local_28 = false;
                     }
-                    let _e37 = local_19;
+                    let _e37 = local_28;
                     if _e37 {
                         let _e38 = k_3;
-                        let _e40 = j_1;
+                        let _e40 = j_2;
                         first[_e38] = _e40;
                         break;
                     }
                 }
                 continuing {
-                    let _e42 = j_1;
-                    j_1 = (_e42 + 1u);
+                    let _e42 = j_2;
+                    j_2 = (_e42 + 1u);
                 }
             }
         }
@@ -1071,150 +1357,244 @@ fn first_holders(keys_1: array<vec2<u32>, 8>, held_1: array<bool, 8>) -> array<u
 }
 
 @compute @workgroup_size(8, 8, 1) 
-fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
+fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
     var local: bool;
+    var s: vec4<f32> = vec4(0f);
+    var nn: vec3<f32> = vec3(0f);
     var local_1: bool;
+    var local_2: bool;
+    var local_3: bool;
+    var n: vec3<f32> = vec3<f32>(0f, 0f, 1f);
     var m: Material;
     var lobe: vec4<f32> = vec4<f32>(1f, 0f, 1f, 1f);
     var r: vec3<f32>;
     var h: u32;
     var t: Shaded = Shaded(vec3(0f), vec3(0f), vec3(0f));
+    var picks: WeightedPicks;
+    var local_4: bool;
+    var start: u32 = 0u;
+    var j: u32;
+    var local_5: bool;
     var keys: array<vec2<u32>, 8>;
     var held: array<bool, 8>;
     var k: u32 = 0u;
     var k_1: u32 = 0u;
     var copies: u32;
-    var j: u32;
+    var j_1: u32;
 
-    let _e4 = view.width;
-    if !((gid.x >= _e4)) {
+    let _e5 = view.width;
+    if (gid.x < _e5) {
         let _e12 = view.height;
-        local = (gid.y >= _e12);
+        local = (gid.y < _e12);
     } else {
-        local = true;
+        local = false;
     }
-    let _e15 = local;
-    if _e15 {
-        return;
-    }
+    let inside = local;
     let texel_1 = vec2<i32>(i32(gid.x), i32(gid.y));
-    let _e21 = surface_at(texel_1);
-    let _e24 = textureLoad(normal_tex, texel_1, 0i);
-    let nn = _e24.xyz;
-    let len2_ = dot(nn, nn);
-    if !((_e21.w <= 0f)) {
-        local_1 = !((len2_ > 0f));
-    } else {
-        local_1 = true;
+    if inside {
+        let _e27 = surface_at(texel_1);
+        s = _e27;
+        let _e30 = textureLoad(normal_tex, texel_1, 0i);
+        nn = _e30.xyz;
     }
-    let _e37 = local_1;
-    if _e37 {
-        textureStore(out_tex, texel_1, vec4(0f));
+    let _e32 = nn;
+    let _e33 = nn;
+    let len2_ = dot(_e32, _e33);
+    let _e35 = s;
+    let x_15 = _e35.xyz;
+    if inside {
+        let _e40 = s.w;
+        local_1 = (_e40 > 0f);
+    } else {
+        local_1 = false;
+    }
+    let _e44 = local_1;
+    if _e44 {
+        local_2 = (len2_ > 0f);
+    } else {
+        local_2 = false;
+    }
+    let _e50 = local_2;
+    if _e50 {
+        local_3 = all((abs(x_15) <= vec3(340282350000000000000000000000000000000f)));
+    } else {
+        local_3 = false;
+    }
+    let has_2 = local_3;
+    if has_2 {
+        let _e65 = nn;
+        n = (_e65 / vec3(sqrt(len2_)));
+    }
+    let _e76 = n;
+    r = _e76;
+    let _e78 = lobe;
+    let _e79 = range_lobe(_e78);
+    let _e82 = view.shadow_offset;
+    let _e85 = view.eye;
+    let eps_4 = (_e82 * length((_e85 - x_15)));
+    let _e91 = view.seed;
+    let _e95 = view.width;
+    let _e101 = view.frame;
+    let _e102 = point_stream(_e91, ((gid.y * _e95) + gid.x), _e101);
+    let _e103 = pick_stream(_e102);
+    h = _e103;
+    let _e113 = weighted_picks(_e102);
+    picks = _e113;
+    if has_2 {
+        local_4 = (_e79.w >= 0f);
+    } else {
+        local_4 = false;
+    }
+    let _e122 = local_4;
+    let _e123 = tile_walk_begin(lid, x_15, _e79.w, _e122);
+    loop {
+        let _e126 = start;
+        if (_e126 < _e123.total) {
+        } else {
+            break;
+        }
+        {
+            let _e129 = start;
+            let _e130 = tile_walk_fill(lid, _e123, _e129);
+            j = 0u;
+            loop {
+                let _e133 = j;
+                if (_e133 < _e130) {
+                } else {
+                    break;
+                }
+                {
+                    let _e136 = j;
+                    let b_7 = tile_list[_e136];
+                    if !(!(has_2)) {
+                        let _e145 = bsh_nodes[b_7];
+                        let _e146 = r;
+                        let _e147 = bsh_reaches(_e145, x_15, _e146, _e79);
+                        local_5 = !(_e147);
+                    } else {
+                        local_5 = true;
+                    }
+                    let _e150 = local_5;
+                    if _e150 {
+                        continue;
+                    }
+                    let li_10 = bsh_nodes[b_7].light;
+                    let _e155 = n;
+                    let _e156 = r;
+                    let _e157 = lobe;
+                    let _e158 = light_weight(li_10, x_15, _e155, _e156, _e157, _e79);
+                    weighted_offer((&picks), li_10, _e158);
+                }
+                continuing {
+                    let _e160 = j;
+                    j = (_e160 + 1u);
+                }
+            }
+            workgroupBarrier();
+        }
+        continuing {
+            let _e162 = start;
+            start = (_e162 + TILE_LIST);
+        }
+    }
+    if !(has_2) {
+        if inside {
+            textureStore(out_tex, texel_1, vec4(0f));
+        }
         return;
     }
-    let x_16 = _e21.xyz;
-    let n_12 = (nn / vec3(sqrt(len2_)));
-    r = n_12;
-    let _e53 = lobe;
-    let _e54 = range_lobe(_e53);
-    let _e57 = view.shadow_offset;
-    let _e60 = view.eye;
-    let eps_4 = (_e57 * length((_e60 - x_16)));
-    let _e66 = view.seed;
-    let _e70 = view.width;
-    let _e76 = view.frame;
-    let _e77 = point_stream(_e66, ((gid.y * _e70) + gid.x), _e76);
-    let _e78 = pick_stream(_e77);
-    h = _e78;
-    let _e88 = r;
-    let _e89 = lobe;
-    let _e90 = bsh_weighted_collect(x_16, n_12, _e88, _e89, _e54, _e77);
-    if (_e90.w_sum > 0f) {
+    let _e170 = picks.w_sum;
+    if (_e170 > 0f) {
         loop {
-            let _e98 = k;
-            if (_e98 < K) {
+            let _e177 = k;
+            if (_e177 < K) {
             } else {
                 break;
             }
             {
-                let _e102 = k;
-                let _e107 = k;
-                let _e111 = lights[_e90.light[_e107]].kind;
-                let own = select(0u, (_e102 + 1u), (_e111 == LIGHT_TRIANGLE));
-                let _e115 = k;
-                let _e118 = k;
-                keys[_e115] = vec2<u32>(_e90.light[_e118], own);
-                let _e121 = k;
-                held[_e121] = true;
+                let _e181 = k;
+                let _e186 = k;
+                let _e188 = picks.light[_e186];
+                let _e191 = lights[_e188].kind;
+                let own = select(0u, (_e181 + 1u), (_e191 == LIGHT_TRIANGLE));
+                let _e195 = k;
+                let _e198 = k;
+                let _e200 = picks.light[_e198];
+                keys[_e195] = vec2<u32>(_e200, own);
+                let _e202 = k;
+                held[_e202] = true;
             }
             continuing {
-                let _e125 = k;
-                k = (_e125 + 1u);
+                let _e206 = k;
+                k = (_e206 + 1u);
             }
         }
-        let _e127 = keys;
-        let _e128 = held;
-        let _e129 = first_holders(_e127, _e128);
+        let _e208 = keys;
+        let _e209 = held;
+        let _e210 = first_holders(_e208, _e209);
         loop {
-            let _e132 = k_1;
-            if (_e132 < K) {
+            let _e213 = k_1;
+            if (_e213 < K) {
             } else {
                 break;
             }
             {
-                let _e135 = h;
-                let _e136 = pcg_hash(_e135);
-                h = _e136;
-                let _e137 = h;
-                let _e138 = xi_from_bits(_e137);
-                let _e139 = h;
-                let _e140 = pcg_hash(_e139);
-                h = _e140;
-                let _e141 = h;
-                let _e142 = xi_from_bits(_e141);
-                let _e144 = k_1;
-                let li_6 = _e90.light[_e144];
+                let _e216 = h;
+                let _e217 = pcg_hash(_e216);
+                h = _e217;
+                let _e218 = h;
+                let _e219 = xi_from_bits(_e218);
+                let _e220 = h;
+                let _e221 = pcg_hash(_e220);
+                h = _e221;
+                let _e222 = h;
+                let _e223 = xi_from_bits(_e222);
+                let _e225 = k_1;
+                let li_11 = picks.light[_e225];
                 copies = 0u;
-                let _e148 = k_1;
-                j = _e148;
+                let _e230 = k_1;
+                j_1 = _e230;
                 loop {
-                    let _e150 = j;
-                    if (_e150 < K) {
+                    let _e232 = j_1;
+                    if (_e232 < K) {
                     } else {
                         break;
                     }
                     {
-                        let _e153 = copies;
-                        let _e156 = j;
-                        let _e158 = k_1;
-                        copies = (_e153 + select(0u, 1u, (_e129[_e156] == _e158)));
+                        let _e235 = copies;
+                        let _e238 = j_1;
+                        let _e240 = k_1;
+                        copies = (_e235 + select(0u, 1u, (_e210[_e238] == _e240)));
                     }
                     continuing {
-                        let _e163 = j;
-                        j = (_e163 + 1u);
+                        let _e245 = j_1;
+                        j_1 = (_e245 + 1u);
                     }
                 }
-                let _e165 = copies;
-                if (_e165 > 0u) {
-                    let _e168 = t;
-                    let _e169 = r;
-                    let _e170 = m;
-                    let _e173 = k_1;
-                    let _e176 = weighted_pick_weight(_e90.w_sum, _e90.w[_e173], K);
-                    let _e177 = copies;
-                    let _e180 = shade_pick(li_6, x_16, n_12, _e169, _e54, _e170, (_e176 * f32(_e177)), _e138, _e142, eps_4);
-                    let _e181 = add(_e168, _e180);
-                    t = _e181;
+                let _e247 = copies;
+                if (_e247 > 0u) {
+                    let _e250 = t;
+                    let _e251 = n;
+                    let _e252 = r;
+                    let _e253 = m;
+                    let _e255 = picks.w_sum;
+                    let _e257 = k_1;
+                    let _e259 = picks.w[_e257];
+                    let _e261 = weighted_pick_weight(_e255, _e259, K);
+                    let _e262 = copies;
+                    let _e265 = shade_pick(li_11, x_15, _e251, _e252, _e79, _e253, (_e261 * f32(_e262)), _e219, _e223, eps_4);
+                    let _e266 = add(_e250, _e265);
+                    t = _e266;
                 }
             }
             continuing {
-                let _e183 = k_1;
-                k_1 = (_e183 + 1u);
+                let _e268 = k_1;
+                k_1 = (_e268 + 1u);
             }
         }
     }
-    let count = _e90.n;
-    let _e188 = t.e;
-    textureStore(out_tex, texel_1, vec4<f32>(_e188, f32(count)));
+    let count = picks.n;
+    let _e274 = t.e;
+    textureStore(out_tex, texel_1, vec4<f32>(_e274, f32(count)));
     return;
 }

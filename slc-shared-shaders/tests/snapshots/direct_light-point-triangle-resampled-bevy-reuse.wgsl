@@ -106,6 +106,18 @@ struct Connection {
     cos_x: f32,
 }
 
+struct WorkgroupBox {
+    lo: vec3<f32>,
+    hi: vec3<f32>,
+}
+
+struct TileWalk {
+    lo: vec3<f32>,
+    hi: vec3<f32>,
+    w: f32,
+    total: u32,
+}
+
 struct Shaded {
     e: vec3<f32>,
     diffuse: vec3<f32>,
@@ -188,6 +200,11 @@ const TEMPORAL_CHANGE_HIGH: f32 = 8f;
 const TEMPORAL_MIN_WEIGHT: f32 = 0.01f;
 const K: u32 = 8u;
 const BSH: u32 = 0u;
+const BSH_TILE_DEPTH: u32 = 8u;
+const BSH_TILE_SUBTREES: u32 = 256u;
+const TILE_THREADS: u32 = 64u;
+const BOX_THREADS: u32 = 64u;
+const TILE_LIST: u32 = 1024u;
 const DOMAINS: u32 = 3u;
 
 @group(1) @binding(6) 
@@ -224,17 +241,24 @@ var<storage> lights_prev: array<GpuLight>;
 var<storage> reuse_prev: array<ReusePixel>;
 @group(1) @binding(10) 
 var<storage, read_write> reuse_next: array<ReusePixel>;
+var<workgroup> wg_lo: array<vec3<f32>, 64>;
+var<workgroup> wg_hi: array<vec3<f32>, 64>;
+var<workgroup> wg_box: WorkgroupBox;
+var<workgroup> tile_list: array<u32, 1024>;
+var<workgroup> subtree_at: array<u32, 256>;
+var<workgroup> tile_scale: atomic<u32>;
+var<workgroup> tile_total: u32;
 
 fn to_f32_(u: u32) -> f32 {
     return f32(u);
 }
 
-fn mul_lo_u32_(a: u32, b_1: u32) -> u32 {
-    return (a * b_1);
+fn mul_lo_u32_(a: u32, b: u32) -> u32 {
+    return (a * b);
 }
 
-fn add_wrap_u32_(a_1: u32, b_2: u32) -> u32 {
-    return (a_1 + b_2);
+fn add_wrap_u32_(a_1: u32, b_1: u32) -> u32 {
+    return (a_1 + b_1);
 }
 
 fn f32_from_bits(u_1: u32) -> f32 {
@@ -287,6 +311,12 @@ fn sphere_contains_point(c: vec3<f32>, r_1: f32, x_1: vec3<f32>) -> bool {
     return (dot(v_5, v_5) <= (r_1 * r_1));
 }
 
+fn sphere_overlaps_aabb(c_1: vec3<f32>, r_2: f32, bmin: vec3<f32>, bmax: vec3<f32>) -> bool {
+    let q_5 = clamp(c_1, bmin, bmax);
+    let v_6 = (q_5 - c_1);
+    return (dot(v_6, v_6) <= (r_2 * r_2));
+}
+
 fn inverse_square(d2_2: f32) -> f32 {
     return (1f / max(d2_2, MIN_D2_));
 }
@@ -297,45 +327,45 @@ fn connection_factor(cos_x: f32, d2_3: f32, rt2_1: f32, w_1: f32) -> f32 {
     return (((cos_x * _e4) * _e6) * w_1);
 }
 
-fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, r2_1: f32) -> f32 {
-    var local_5: bool;
-    var local_6: bool;
+fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n_1: vec3<f32>, ng: vec3<f32>, r2_1: f32) -> f32 {
+    var local_9: bool;
+    var local_10: bool;
 
-    let v_6 = (x_2 - y);
-    let d2_6 = dot(v_6, v_6);
+    let v_7 = (x_2 - y);
+    let d2_6 = dot(v_7, v_7);
     let _e7 = slc_keep(r2_1, d2_6);
     if !(!(_e7)) {
-        local_5 = !((d2_6 > 0f));
+        local_9 = !((d2_6 > 0f));
     } else {
-        local_5 = true;
+        local_9 = true;
     }
-    let _e16 = local_5;
+    let _e16 = local_9;
     if _e16 {
         return 0f;
     }
-    let w_8 = (v_6 / vec3(sqrt(d2_6)));
-    let cos_x_1 = -(dot(n, w_8));
+    let w_11 = (v_7 / vec3(sqrt(d2_6)));
+    let cos_x_1 = -(dot(n_1, w_11));
     if !((cos_x_1 <= 0f)) {
-        local_6 = (dot(ng, w_8) >= 0f);
+        local_10 = (dot(ng, w_11) >= 0f);
     } else {
-        local_6 = true;
+        local_10 = true;
     }
-    let _e32 = local_6;
+    let _e32 = local_10;
     if _e32 {
         return 0f;
     }
     return cos_x_1;
 }
 
-fn triangle_lobe(n_1: vec3<f32>, area: f32, w_2: vec3<f32>) -> f32 {
-    return (area * max(dot(n_1, w_2), 0f));
+fn triangle_lobe(n_2: vec3<f32>, area: f32, w_2: vec3<f32>) -> f32 {
+    return (area * max(dot(n_2, w_2), 0f));
 }
 
-fn triangle_sample(a_2: vec3<f32>, b_3: vec3<f32>, c_1: vec3<f32>, u1_: f32, u2_: f32) -> vec3<f32> {
+fn triangle_sample(a_2: vec3<f32>, b_2: vec3<f32>, c_2: vec3<f32>, u1_: f32, u2_: f32) -> vec3<f32> {
     let su = sqrt(u1_);
     let b0_ = (1f - su);
     let b1_ = (u2_ * su);
-    return (((a_2 * b0_) + (b_3 * b1_)) + (c_1 * ((1f - b0_) - b1_)));
+    return (((a_2 * b0_) + (b_2 * b1_)) + (c_2 * ((1f - b0_) - b1_)));
 }
 
 fn bsh_scaled_radius(node: BshNode, scale: f32) -> f32 {
@@ -364,41 +394,41 @@ fn weighted_threshold(w_sum_1: f32, u_3: f32) -> f32 {
     return (w_sum_1 / (1f - u_3));
 }
 
-fn resample_target(c_2: vec3<f32>) -> f32 {
-    return (((c_2.x + c_2.y) + c_2.z) * 0.33333334f);
+fn resample_target(c_3: vec3<f32>) -> f32 {
+    return (((c_3.x + c_3.y) + c_3.z) * 0.33333334f);
 }
 
-fn slot_target(c_3: vec3<f32>, slot: u32, k_2: u32) -> f32 {
+fn slot_target(c_4: vec3<f32>, slot: u32, k_2: u32) -> f32 {
     if (k_2 < 3u) {
-        let _e5 = resample_target(c_3);
+        let _e5 = resample_target(c_4);
         return _e5;
     }
-    let j_5 = (slot % 3u);
-    if (j_5 == 0u) {
-        return c_3.x;
+    let j_6 = (slot % 3u);
+    if (j_6 == 0u) {
+        return c_4.x;
     }
-    if (j_5 == 1u) {
-        return c_3.y;
+    if (j_6 == 1u) {
+        return c_4.y;
     }
-    return c_3.z;
+    return c_4.z;
 }
 
 fn slot_share(slot_1: u32, k_3: u32) -> vec3<f32> {
     if (k_3 < 3u) {
         let _e4 = to_f32_(k_3);
-        let w_9 = (1f / _e4);
-        return vec3<f32>(w_9, w_9, w_9);
+        let w_12 = (1f / _e4);
+        return vec3<f32>(w_12, w_12, w_12);
     }
-    let j_6 = (slot_1 % 3u);
-    let _e15 = to_f32_((((k_3 + 2u) - j_6) / 3u));
-    let w_10 = (1f / _e15);
-    if (j_6 == 0u) {
-        return vec3<f32>(w_10, 0f, 0f);
+    let j_7 = (slot_1 % 3u);
+    let _e15 = to_f32_((((k_3 + 2u) - j_7) / 3u));
+    let w_13 = (1f / _e15);
+    if (j_7 == 0u) {
+        return vec3<f32>(w_13, 0f, 0f);
     }
-    if (j_6 == 1u) {
-        return vec3<f32>(0f, w_10, 0f);
+    if (j_7 == 1u) {
+        return vec3<f32>(0f, w_13, 0f);
     }
-    return vec3<f32>(0f, 0f, w_10);
+    return vec3<f32>(0f, 0f, w_13);
 }
 
 fn grid_coordinate(bits_1: u32) -> f32 {
@@ -410,9 +440,9 @@ fn grid_cells(h1_: u32, h2_: u32) -> u32 {
     return ((h1_ & 4294901760u) | (h2_ >> 16u));
 }
 
-fn disk_offset(r_2: f32, u1_1: f32, u2_1: f32) -> vec2<f32> {
+fn disk_offset(r_3: f32, u1_1: f32, u2_1: f32) -> vec2<f32> {
     let a_9 = (TWO_PI * u2_1);
-    return (vec2<f32>(cos(a_9), sin(a_9)) * (r_2 * sqrt(u1_1)));
+    return (vec2<f32>(cos(a_9), sin(a_9)) * (r_3 * sqrt(u1_1)));
 }
 
 fn gris_weight(own: f32, all_: f32, p_hat: f32, w_4: f32) -> f32 {
@@ -434,8 +464,8 @@ fn ggx_d(cos_h: f32, sin2_h: f32, alpha: f32) -> f32 {
         return 0f;
     }
     let a2_ = (alpha * alpha);
-    let t_1 = (((cos_h * cos_h) * a2_) + sin2_h);
-    return ((a2_ * INV_PI) / (t_1 * t_1));
+    let t_4 = (((cos_h * cos_h) * a2_) + sin2_h);
+    return ((a2_ * INV_PI) / (t_4 * t_4));
 }
 
 fn smith_root(cos_: f32, alpha_1: f32) -> f32 {
@@ -444,14 +474,14 @@ fn smith_root(cos_: f32, alpha_1: f32) -> f32 {
 }
 
 fn smith_visibility(n_l: f32, n_v: f32, alpha_2: f32) -> f32 {
-    var local_7: bool;
+    var local_11: bool;
 
     if !((n_l <= 0f)) {
-        local_7 = (n_v <= 0f);
+        local_11 = (n_v <= 0f);
     } else {
-        local_7 = true;
+        local_11 = true;
     }
-    let _e11 = local_7;
+    let _e11 = local_11;
     if _e11 {
         return 0f;
     }
@@ -461,9 +491,9 @@ fn smith_visibility(n_l: f32, n_v: f32, alpha_2: f32) -> f32 {
 }
 
 fn fresnel_schlick(f0_: vec3<f32>, f90_: f32, v_h: f32) -> vec3<f32> {
-    let c_10 = saturate((1f - v_h));
-    let c2_1 = (c_10 * c_10);
-    return (f0_ + ((vec3<f32>(f90_, f90_, f90_) - f0_) * ((c2_1 * c2_1) * c_10)));
+    let c_11 = saturate((1f - v_h));
+    let c2_1 = (c_11 * c_11);
+    return (f0_ + ((vec3<f32>(f90_, f90_, f90_) - f0_) * ((c2_1 * c2_1) * c_11)));
 }
 
 fn specular_fresnel(base: vec3<f32>, metallic: f32, f0_d: vec3<f32>, f90_d: f32, v_h_1: f32) -> vec3<f32> {
@@ -473,40 +503,40 @@ fn specular_fresnel(base: vec3<f32>, metallic: f32, f0_d: vec3<f32>, f90_d: f32,
 }
 
 fn has_specular(metallic_1: f32, f0_d_1: vec3<f32>, f90_d_1: f32) -> bool {
-    var local_8: bool;
-    var local_9: bool;
+    var local_12: bool;
+    var local_13: bool;
 
     if !((metallic_1 > 0f)) {
-        local_8 = (f90_d_1 > 0f);
+        local_12 = (f90_d_1 > 0f);
     } else {
-        local_8 = true;
+        local_12 = true;
     }
-    let _e11 = local_8;
+    let _e11 = local_12;
     if !(_e11) {
-        local_9 = (max(max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0f);
+        local_13 = (max(max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0f);
     } else {
-        local_9 = true;
+        local_13 = true;
     }
-    let _e23 = local_9;
+    let _e23 = local_13;
     return _e23;
 }
 
-fn channel_mean(c_4: vec3<f32>) -> f32 {
-    return (((c_4.x + c_4.y) + c_4.z) * 0.33333334f);
+fn channel_mean(c_5: vec3<f32>) -> f32 {
+    return (((c_5.x + c_5.y) + c_5.z) * 0.33333334f);
 }
 
 fn receiver_lobe(base_1: vec3<f32>, metallic_2: f32, f0_d_2: vec3<f32>, f90_d_2: f32, alpha_3: f32, n_v_1: f32) -> vec4<f32> {
-    var local_10: bool;
+    var local_14: bool;
 
     let _e10 = fresnel_schlick(f0_d_2, f90_d_2, n_v_1);
     let _e16 = channel_mean((((vec3<f32>(1f, 1f, 1f) - _e10) * base_1) * (1f - metallic_2)));
     if !((n_v_1 <= 0f)) {
         let _e22 = has_specular(metallic_2, f0_d_2, f90_d_2);
-        local_10 = !(_e22);
+        local_14 = !(_e22);
     } else {
-        local_10 = true;
+        local_14 = true;
     }
-    let _e25 = local_10;
+    let _e25 = local_14;
     if _e25 {
         return vec4<f32>(_e16, 0f, alpha_3, n_v_1);
     }
@@ -542,8 +572,8 @@ fn range_lobe(lobe_4: vec4<f32>) -> vec4<f32> {
     return vec4<f32>(lobe_4.x, _e10, (lobe_4.z * lobe_4.z), sqrt(_e14));
 }
 
-fn mirror_dir(n_2: vec3<f32>, v: vec3<f32>) -> vec3<f32> {
-    return ((n_2 * (2f * dot(n_2, v))) - v);
+fn mirror_dir(n_3: vec3<f32>, v: vec3<f32>) -> vec3<f32> {
+    return ((n_3 * (2f * dot(n_3, v))) - v);
 }
 
 fn bevy_alpha(perceptual: f32) -> f32 {
@@ -555,23 +585,23 @@ fn bevy_f0_(reflectance: f32) -> f32 {
     return ((0.16f * reflectance) * reflectance);
 }
 
-fn bevy_dfg(r_3: f32, n_v_2: f32) -> f32 {
-    let rx = (1f - r_3);
-    let a004_ = ((min((rx * rx), exp2((-9.28f * n_v_2))) * rx) + (0.0425f - (0.0275f * r_3)));
-    let x_15 = max(((1.04f - (0.572f * r_3)) - (1.04f * a004_)), 0.00005f);
-    let y_1 = max((((0.022f * r_3) - 0.04f) + (1.04f * a004_)), 0.00005f);
+fn bevy_dfg(r_4: f32, n_v_2: f32) -> f32 {
+    let rx = (1f - r_4);
+    let a004_ = ((min((rx * rx), exp2((-9.28f * n_v_2))) * rx) + (0.0425f - (0.0275f * r_4)));
+    let x_15 = max(((1.04f - (0.572f * r_4)) - (1.04f * a004_)), 0.00005f);
+    let y_1 = max((((0.022f * r_4) - 0.04f) + (1.04f * a004_)), 0.00005f);
     return (x_15 + y_1);
 }
 
-fn bevy_brdf(base_2: vec3<f32>, metallic_3: f32, r_4: f32, reflectance_1: f32, n_3: vec3<f32>, v_1: vec3<f32>, l: vec3<f32>) -> vec3<f32> {
-    let n_l_1 = saturate(dot(n_3, l));
+fn bevy_brdf(base_2: vec3<f32>, metallic_3: f32, r_5: f32, reflectance_1: f32, n_4: vec3<f32>, v_1: vec3<f32>, l: vec3<f32>) -> vec3<f32> {
+    let n_l_1 = saturate(dot(n_4, l));
     if (n_l_1 <= 0f) {
         return vec3<f32>(0f, 0f, 0f);
     }
-    let _e15 = bevy_alpha(r_4);
-    let n_v_3 = max(dot(n_3, v_1), 0.0001f);
+    let _e15 = bevy_alpha(r_5);
+    let n_v_3 = max(dot(n_4, v_1), 0.0001f);
     let h_3 = normalize((l + v_1));
-    let n_h = saturate(dot(n_3, h_3));
+    let n_h = saturate(dot(n_4, h_3));
     let l_h = saturate(dot(l, h_3));
     let f90_d_3 = (0.5f + (((2f * _e15) * l_h) * l_h));
     let _e35 = fresnel_schlick(vec3<f32>(1f, 1f, 1f), f90_d_3, n_l_1);
@@ -582,7 +612,7 @@ fn bevy_brdf(base_2: vec3<f32>, metallic_3: f32, r_4: f32, reflectance_1: f32, n
     let f90_1 = saturate((((f0_1.x + f0_1.y) + f0_1.z) * 16.5f));
     let _e64 = ggx_d(n_h, (1f - (n_h * n_h)), _e15);
     let _e65 = smith_visibility(n_l_1, n_v_3, _e15);
-    let _e70 = bevy_dfg(r_4, n_v_3);
+    let _e70 = bevy_dfg(r_5, n_v_3);
     let comp = (vec3<f32>(1f, 1f, 1f) + (f0_1 * ((1f / _e70) - 1f)));
     let _e77 = fresnel_schlick(f0_1, f90_1, l_h);
     let spec = ((_e77 * comp) * (_e64 * _e65));
@@ -590,46 +620,46 @@ fn bevy_brdf(base_2: vec3<f32>, metallic_3: f32, r_4: f32, reflectance_1: f32, n
 }
 
 fn cone_cos_of(v_2: vec3<f32>, d2_4: f32, a_3: f32, d: vec3<f32>) -> f32 {
-    var local_11: bool;
-    var local_12: bool;
+    var local_15: bool;
+    var local_16: bool;
 
     let vd = dot(v_2, d);
     let h2_1 = (d2_4 - (a_3 * a_3));
     if !((h2_1 <= 0f)) {
         if (vd >= 0f) {
-            local_12 = ((vd * vd) >= h2_1);
+            local_16 = ((vd * vd) >= h2_1);
         } else {
-            local_12 = false;
+            local_16 = false;
         }
-        let _e19 = local_12;
-        local_11 = _e19;
+        let _e19 = local_16;
+        local_15 = _e19;
     } else {
-        local_11 = true;
+        local_15 = true;
     }
-    let _e21 = local_11;
+    let _e21 = local_15;
     if _e21 {
         return 1f;
     }
-    let c_11 = cross(v_2, d);
-    return min((((vd * sqrt(h2_1)) + (sqrt(dot(c_11, c_11)) * a_3)) / d2_4), 1f);
+    let c_12 = cross(v_2, d);
+    return min((((vd * sqrt(h2_1)) + (sqrt(dot(c_12, c_12)) * a_3)) / d2_4), 1f);
 }
 
 fn cone_cos_toward(center: vec3<f32>, radius: f32, p: vec3<f32>, d_1: vec3<f32>) -> f32 {
-    let v_7 = (center - p);
-    let _e6 = cone_cos_of(v_7, dot(v_7, v_7), radius, d_1);
+    let v_8 = (center - p);
+    let _e6 = cone_cos_of(v_8, dot(v_8, v_8), radius, d_1);
     return _e6;
 }
 
 fn range_scale_at(rl: vec4<f32>, cos_t: f32) -> f32 {
-    let t_2 = (((0.5f + (0.5f * cos_t)) * (rl.z - 1f)) + 1f);
-    return clamp((rl.x + ((rl.y * rl.z) / (t_2 * t_2))), 1f, (rl.w * rl.w));
+    let t_5 = (((0.5f + (0.5f * cos_t)) * (rl.z - 1f)) + 1f);
+    return clamp((rl.x + ((rl.y * rl.z) / (t_5 * t_5))), 1f, (rl.w * rl.w));
 }
 
-fn range_scale_toward(rl_1: vec4<f32>, center_1: vec3<f32>, radius_1: f32, p_1: vec3<f32>, r_5: vec3<f32>) -> f32 {
+fn range_scale_toward(rl_1: vec4<f32>, center_1: vec3<f32>, radius_1: f32, p_1: vec3<f32>, r_6: vec3<f32>) -> f32 {
     if (rl_1.w <= 1f) {
         return 1f;
     }
-    let _e9 = cone_cos_toward(center_1, radius_1, p_1, r_5);
+    let _e9 = cone_cos_toward(center_1, radius_1, p_1, r_6);
     let _e10 = range_scale_at(rl_1, _e9);
     return _e10;
 }
@@ -649,80 +679,80 @@ fn ray_inverse3_(d_2: vec3<f32>) -> vec3<f32> {
     return vec3<f32>(_e2, _e4, _e6);
 }
 
-fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin: vec3<f32>, bmax: vec3<f32>, t_max: f32) -> f32 {
-    let t0_ = ((bmin - o) * inv_d);
-    let t1_ = ((bmax - o) * inv_d);
-    let lo = min(t0_, t1_);
-    let hi = max(t0_, t1_);
-    let t_in = max(max(lo.x, lo.y), max(lo.z, 0f));
-    let t_out = min(min(hi.x, hi.y), min(hi.z, t_max));
+fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin_1: vec3<f32>, bmax_1: vec3<f32>, t_max: f32) -> f32 {
+    let t0_ = ((bmin_1 - o) * inv_d);
+    let t1_ = ((bmax_1 - o) * inv_d);
+    let lo_3 = min(t0_, t1_);
+    let hi_3 = max(t0_, t1_);
+    let t_in = max(max(lo_3.x, lo_3.y), max(lo_3.z, 0f));
+    let t_out = min(min(hi_3.x, hi_3.y), min(hi_3.z, t_max));
     if (t_in <= t_out) {
         return t_in;
     }
     return -1f;
 }
 
-fn triangle_normal(a_4: vec3<f32>, b_4: vec3<f32>, c_5: vec3<f32>) -> vec3<f32> {
-    var local_13: bool;
+fn triangle_normal(a_4: vec3<f32>, b_3: vec3<f32>, c_6: vec3<f32>) -> vec3<f32> {
+    var local_17: bool;
 
-    let n_13 = cross((b_4 - a_4), (c_5 - a_4));
-    let l2_ = dot(n_13, n_13);
+    let n_14 = cross((b_3 - a_4), (c_6 - a_4));
+    let l2_ = dot(n_14, n_14);
     if !(!((l2_ > 0f))) {
-        local_13 = !((l2_ < 300000000000000000000000000000000000000f));
+        local_17 = !((l2_ < 300000000000000000000000000000000000000f));
     } else {
-        local_13 = true;
+        local_17 = true;
     }
-    let _e17 = local_13;
+    let _e17 = local_17;
     if _e17 {
         return vec3<f32>(0f, 0f, 0f);
     }
-    return (n_13 / vec3(sqrt(l2_)));
+    return (n_14 / vec3(sqrt(l2_)));
 }
 
-fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_5: vec3<f32>, c_6: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
-    var local_14: bool;
-    var local_15: bool;
-    var local_16: bool;
+fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_4: vec3<f32>, c_7: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
+    var local_18: bool;
+    var local_19: bool;
+    var local_20: bool;
 
-    let e1_ = (b_5 - a_5);
-    let e2_ = (c_6 - a_5);
-    let p_5 = cross(d_3, e2_);
-    let det = dot(e1_, p_5);
+    let e1_ = (b_4 - a_5);
+    let e2_ = (c_7 - a_5);
+    let p_7 = cross(d_3, e2_);
+    let det = dot(e1_, p_7);
     if (abs(det) <= 0f) {
         return -1f;
     }
     let inv = (1f / det);
-    let s_6 = (o_1 - a_5);
-    let u_4 = (dot(s_6, p_5) * inv);
+    let s_12 = (o_1 - a_5);
+    let u_4 = (dot(s_12, p_7) * inv);
     if !((u_4 < 0f)) {
-        local_14 = (u_4 > 1f);
+        local_18 = (u_4 > 1f);
     } else {
-        local_14 = true;
+        local_18 = true;
     }
-    let _e28 = local_14;
+    let _e28 = local_18;
     if _e28 {
         return -1f;
     }
-    let q_5 = cross(s_6, e1_);
-    let v_8 = (dot(d_3, q_5) * inv);
-    if !((v_8 < 0f)) {
-        local_15 = ((u_4 + v_8) > 1f);
+    let q_6 = cross(s_12, e1_);
+    let v_9 = (dot(d_3, q_6) * inv);
+    if !((v_9 < 0f)) {
+        local_19 = ((u_4 + v_9) > 1f);
     } else {
-        local_15 = true;
+        local_19 = true;
     }
-    let _e42 = local_15;
+    let _e42 = local_19;
     if _e42 {
         return -1f;
     }
-    let t_3 = (dot(e2_, q_5) * inv);
-    if (t_3 > t_min) {
-        local_16 = (t_3 < t_max_1);
+    let t_6 = (dot(e2_, q_6) * inv);
+    if (t_6 > t_min) {
+        local_20 = (t_6 < t_max_1);
     } else {
-        local_16 = false;
+        local_20 = false;
     }
-    let _e51 = local_16;
+    let _e51 = local_20;
     if _e51 {
-        return t_3;
+        return t_6;
     }
     return -1f;
 }
@@ -737,15 +767,15 @@ fn reproject(c0_: vec4<f32>, c1_: vec4<f32>, c2_: vec4<f32>, c3_: vec4<f32>, p_2
     return vec3<f32>(x_16, y_2, clip.w);
 }
 
-fn history_matches(n_4: vec3<f32>, nh: vec3<f32>, p_3: vec3<f32>, oh: f32, d_4: f32) -> bool {
-    var local_17: bool;
+fn history_matches(n_5: vec3<f32>, nh: vec3<f32>, p_3: vec3<f32>, oh: f32, d_4: f32) -> bool {
+    var local_21: bool;
 
     if (abs((dot(nh, p_3) - oh)) <= (TEMPORAL_DEPTH_TOLERANCE * d_4)) {
-        local_17 = (dot(n_4, nh) >= TEMPORAL_NORMAL_COS);
+        local_21 = (dot(n_5, nh) >= TEMPORAL_NORMAL_COS);
     } else {
-        local_17 = false;
+        local_21 = false;
     }
-    let _e17 = local_17;
+    let _e17 = local_21;
     return _e17;
 }
 
@@ -789,23 +819,23 @@ fn trace(o_2: vec3<f32>, d_5: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
     let _e14 = ray_inverse3_(d_5);
     loop {
         let _e21 = node_2;
-        let n_14 = geo_nodes[_e21];
+        let n_15 = geo_nodes[_e21];
         let _e27 = hit.t;
-        let _e28 = ray_aabb(o_2, _e14, n_14.bmin, n_14.bmax, _e27);
+        let _e28 = ray_aabb(o_2, _e14, n_15.bmin, n_15.bmax, _e27);
         if (_e28 >= 0f) {
-            if (n_14.count > 0u) {
-                i = n_14.first;
+            if (n_15.count > 0u) {
+                i = n_15.first;
                 loop {
                     let _e36 = i;
-                    if (_e36 < (n_14.first + n_14.count)) {
+                    if (_e36 < (n_15.first + n_15.count)) {
                     } else {
                         break;
                     }
                     {
                         let _e42 = i;
-                        let t_4 = geo_tris[_e42];
+                        let t_7 = geo_tris[_e42];
                         let _e49 = hit.t;
-                        let _e50 = ray_triangle(o_2, d_5, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e49);
+                        let _e50 = ray_triangle(o_2, d_5, t_7.v0_, t_7.v1_, t_7.v2_, t_min_1, _e49);
                         if (_e50 > 0f) {
                             hit.t = _e50;
                             let _e55 = i;
@@ -825,11 +855,11 @@ fn trace(o_2: vec3<f32>, d_5: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
                 let _e60 = sp;
                 if (_e60 < 64u) {
                     let _e63 = sp;
-                    stack[_e63] = (n_14.first + 1u);
+                    stack[_e63] = (n_15.first + 1u);
                     let _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_2 = n_14.first;
+                node_2 = n_15.first;
                 continue;
             }
         }
@@ -847,8 +877,8 @@ fn trace(o_2: vec3<f32>, d_5: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
     return _e81;
 }
 
-fn occluded(a_6: vec3<f32>, b_6: vec3<f32>) -> bool {
-    let dv = (b_6 - a_6);
+fn occluded(a_6: vec3<f32>, b_5: vec3<f32>) -> bool {
+    let dv = (b_5 - a_6);
     let len_1 = length(dv);
     if (len_1 <= 0f) {
         return false;
@@ -875,15 +905,15 @@ fn bsh_first(nodes_2: u32) -> u32 {
     return BSH_NONE;
 }
 
-fn bsh_inner_scale(a_7: f32, v_3: vec3<f32>, d2_5: f32, r_6: vec3<f32>, rl_2: vec4<f32>) -> f32 {
-    let _e5 = cone_cos_of(v_3, d2_5, a_7, r_6);
+fn bsh_inner_scale(a_7: f32, v_3: vec3<f32>, d2_5: f32, r_7: vec3<f32>, rl_2: vec4<f32>) -> f32 {
+    let _e5 = cone_cos_of(v_3, d2_5, a_7, r_7);
     let _e8 = range_scale_at(rl_2, (_e5 + 0.000002f));
     return _e8;
 }
 
-fn bsh_reaches(node_3: BshNode, x_4: vec3<f32>, r_7: vec3<f32>, rl_3: vec4<f32>) -> bool {
-    var local_18: bool;
-    var local_19: bool;
+fn bsh_reaches(node_3: BshNode, x_4: vec3<f32>, r_8: vec3<f32>, rl_3: vec4<f32>) -> bool {
+    var local_22: bool;
+    var local_23: bool;
 
     let _e6 = sphere_contains_point(node_3.center, node_3.radius, x_4);
     if _e6 {
@@ -891,65 +921,116 @@ fn bsh_reaches(node_3: BshNode, x_4: vec3<f32>, r_7: vec3<f32>, rl_3: vec4<f32>)
     }
     if !((rl_3.w <= 1f)) {
         let _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001f)), x_4);
-        local_18 = !(_e20);
+        local_22 = !(_e20);
     } else {
-        local_18 = true;
+        local_22 = true;
     }
-    let _e23 = local_18;
+    let _e23 = local_22;
     if _e23 {
         return false;
     }
     let _e25 = bsh_range_bound(node_3);
-    let v_9 = (x_4 - node_3.center);
-    let d2_7 = dot(v_9, v_9);
+    let v_10 = (x_4 - node_3.center);
+    let d2_7 = dot(v_10, v_10);
     let reach_max = (node_3.extent + ((rl_3.w * 1.001f) * _e25));
     if (d2_7 > (reach_max * reach_max)) {
         return false;
     }
     if (node_3.child == BSH_NONE) {
-        let _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_4, r_7);
+        let _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_4, r_8);
         let _e46 = bsh_scaled_radius(node_3, sqrt(_e43));
         let _e47 = sphere_contains_point(node_3.center, _e46, x_4);
         return _e47;
     }
-    let _e50 = bsh_inner_scale(node_3.extent, -(v_9), d2_7, r_7, rl_3);
+    let _e50 = bsh_inner_scale(node_3.extent, -(v_10), d2_7, r_8, rl_3);
     let s_c = (_e50 * 1.001f);
     let reach = (node_3.extent + (sqrt(s_c) * _e25));
     if (d2_7 <= ((node_3.radius * node_3.radius) * s_c)) {
-        local_19 = (d2_7 <= (reach * reach));
+        local_23 = (d2_7 <= (reach * reach));
     } else {
-        local_19 = false;
+        local_23 = false;
     }
-    let _e67 = local_19;
+    let _e67 = local_23;
     return _e67;
 }
 
-fn bsh_next_leaf_lobe(nodes_3: u32, start: u32, x_5: vec3<f32>, r_8: vec3<f32>, rl_4: vec4<f32>) -> u32 {
-    var i_2: u32;
+fn bsh_reaches_box(node_4: BshNode, lo: vec3<f32>, hi: vec3<f32>, w_6: f32) -> bool {
+    let _e13 = sphere_overlaps_aabb(node_4.center, (node_4.radius * (max(1f, (w_6 * 1.0001f)) * 1.0001f)), lo, hi);
+    return _e13;
+}
 
-    i_2 = start;
+fn bsh_subtree(nodes_3: u32, s_1: u32, depth: u32) -> u32 {
+    var i_2: u32;
+    var level: u32 = 0u;
+    var local_24: bool;
+
+    let _e3 = bsh_first(nodes_3);
+    i_2 = _e3;
     loop {
-        let _e6 = i_2;
-        if (_e6 != BSH_NONE) {
+        let _e7 = level;
+        if (_e7 < depth) {
+            let _e11 = i_2;
+            local_24 = (_e11 != BSH_NONE);
+        } else {
+            local_24 = false;
+        }
+        let _e15 = local_24;
+        if _e15 {
         } else {
             break;
         }
         {
-            let _e9 = i_2;
-            let _e10 = bsh_node(nodes_3, _e9);
-            let _e11 = bsh_reaches(_e10, x_5, r_8, rl_4);
+            let _e16 = i_2;
+            let _e17 = bsh_node(nodes_3, _e16);
+            let _e18 = level;
+            let below = (depth - _e18);
+            if (_e17.child == BSH_NONE) {
+                if ((s_1 << (32u - below)) != 0u) {
+                    return BSH_NONE;
+                }
+                let _e29 = i_2;
+                return _e29;
+            }
+            if (((s_1 >> (below - 1u)) & 1u) == 0u) {
+                i_2 = _e17.child;
+            } else {
+                let _e39 = bsh_node(nodes_3, _e17.child);
+                i_2 = _e39.next;
+            }
+            let _e41 = level;
+            level = (_e41 + 1u);
+        }
+    }
+    let _e44 = i_2;
+    return _e44;
+}
+
+fn bsh_next_leaf_box(nodes_4: u32, start_1: u32, end: u32, lo_1: vec3<f32>, hi_1: vec3<f32>, w_7: f32) -> u32 {
+    var i_3: u32;
+
+    i_3 = start_1;
+    loop {
+        let _e7 = i_3;
+        if (_e7 != end) {
+        } else {
+            break;
+        }
+        {
+            let _e9 = i_3;
+            let _e10 = bsh_node(nodes_4, _e9);
+            let _e11 = bsh_reaches_box(_e10, lo_1, hi_1, w_7);
             if _e11 {
                 if (_e10.child == BSH_NONE) {
-                    let _e15 = i_2;
+                    let _e15 = i_3;
                     return _e15;
                 }
-                i_2 = _e10.child;
+                i_3 = _e10.child;
             } else {
-                i_2 = _e10.next;
+                i_3 = _e10.next;
             }
         }
     }
-    return BSH_NONE;
+    return end;
 }
 
 fn next_threshold(sum: f32, h_1: ptr<function, u32>) -> f32 {
@@ -962,84 +1043,303 @@ fn next_threshold(sum: f32, h_1: ptr<function, u32>) -> f32 {
     return _e6;
 }
 
-fn connect_record(l_3: GpuLight, x_6: vec3<f32>, n_5: vec3<f32>, ng_1: vec3<f32>, r2_2: f32, rt2_2: f32, w_res: f32, u1_3: f32, u2_3: f32, eps: f32, trace_1: bool) -> Connection {
-    var c_7: Connection;
-    var local_20: bool;
-    var local_21: bool;
+fn connect_record(l_3: GpuLight, x_5: vec3<f32>, n_6: vec3<f32>, ng_1: vec3<f32>, r2_2: f32, rt2_2: f32, w_res: f32, u1_3: f32, u2_3: f32, eps: f32, trace_1: bool) -> Connection {
+    var c_8: Connection;
+    var local_25: bool;
+    var local_26: bool;
 
-    c_7.e = vec3(0f);
+    c_8.e = vec3(0f);
     let _e16 = light_point(l_3, u1_3, u2_3);
-    c_7.y = _e16;
-    let _e19 = c_7.y;
-    let _e20 = connection_cosine(x_6, _e19, n_5, ng_1, r2_2);
-    c_7.cos_x = _e20;
-    let _e22 = c_7.cos_x;
+    c_8.y = _e16;
+    let _e19 = c_8.y;
+    let _e20 = connection_cosine(x_5, _e19, n_6, ng_1, r2_2);
+    c_8.cos_x = _e20;
+    let _e22 = c_8.cos_x;
     if !((_e22 <= 0f)) {
         if trace_1 {
-            let _e33 = c_7.y;
-            let _e34 = occluded((x_6 + (ng_1 * eps)), _e33);
-            local_21 = _e34;
+            let _e33 = c_8.y;
+            let _e34 = occluded((x_5 + (ng_1 * eps)), _e33);
+            local_26 = _e34;
         } else {
-            local_21 = false;
+            local_26 = false;
         }
-        let _e36 = local_21;
-        local_20 = _e36;
+        let _e36 = local_26;
+        local_25 = _e36;
     } else {
-        local_20 = true;
+        local_25 = true;
     }
-    let _e38 = local_20;
+    let _e38 = local_25;
     if _e38 {
-        let _e39 = c_7;
+        let _e39 = c_8;
         return _e39;
     }
-    let _e41 = c_7.y;
-    let v_10 = (x_6 - _e41);
-    let d2_8 = dot(v_10, v_10);
-    let _e48 = light_intensity(l_3, (v_10 / vec3(sqrt(d2_8))));
-    let _e50 = c_7.cos_x;
+    let _e41 = c_8.y;
+    let v_11 = (x_5 - _e41);
+    let d2_8 = dot(v_11, v_11);
+    let _e48 = light_intensity(l_3, (v_11 / vec3(sqrt(d2_8))));
+    let _e50 = c_8.cos_x;
     let _e51 = connection_factor(_e50, d2_8, rt2_2, w_res);
-    c_7.e = (_e48 * _e51);
-    let _e53 = c_7;
+    c_8.e = (_e48 * _e51);
+    let _e53 = c_8;
     return _e53;
 }
 
-fn connect_traced(li: u32, x_7: vec3<f32>, n_6: vec3<f32>, ng_2: vec3<f32>, s: f32, w_res_1: f32, u1_4: f32, u2_4: f32, eps_1: f32, trace_2: bool) -> Connection {
+fn connect_traced(li: u32, x_6: vec3<f32>, n_7: vec3<f32>, ng_2: vec3<f32>, s_2: f32, w_res_1: f32, u1_4: f32, u2_4: f32, eps_1: f32, trace_2: bool) -> Connection {
     let _e12 = lights[li];
     let _e15 = r2_3[li];
     let _e19 = rt2_3[li];
-    let _e21 = connect_record(_e12, x_7, n_6, ng_2, (s * _e15), (s * _e19), w_res_1, u1_4, u2_4, eps_1, trace_2);
+    let _e21 = connect_record(_e12, x_6, n_7, ng_2, (s_2 * _e15), (s_2 * _e19), w_res_1, u1_4, u2_4, eps_1, trace_2);
     return _e21;
 }
 
-fn light_range_scale(li_1: u32, x_8: vec3<f32>, r_9: vec3<f32>, rl_5: vec4<f32>) -> f32 {
-    let c_12 = light_cones[li_1];
-    let _e9 = range_scale_toward(rl_5, c_12.center, c_12.radius, x_8, r_9);
+fn light_range_scale(li_1: u32, x_7: vec3<f32>, r_9: vec3<f32>, rl_4: vec4<f32>) -> f32 {
+    let c_13 = light_cones[li_1];
+    let _e9 = range_scale_toward(rl_4, c_13.center, c_13.radius, x_7, r_9);
     return _e9;
 }
 
 fn surface_at(texel: vec2<i32>) -> vec4<f32> {
-    let p_6 = textureLoad(position_tex, texel, 0i);
-    return select(vec4(0f), vec4<f32>(p_6.xyz, 1f), (p_6.w > 0f));
+    let p_8 = textureLoad(position_tex, texel, 0i);
+    return select(vec4(0f), vec4<f32>(p_8.xyz, 1f), (p_8.w > 0f));
 }
 
-fn shade_connection(c_8: Connection, x_9: vec3<f32>, n_7: vec3<f32>, m_1: Material) -> Shaded {
-    var s_1: Shaded;
+fn workgroup_bounds(li_2: u32, lo_2: vec3<f32>, hi_2: vec3<f32>) -> WorkgroupBox {
+    var stride: u32 = 32u;
 
-    s_1.e = c_8.e;
-    s_1.diffuse = vec3(0f);
-    s_1.specular = vec3(0f);
-    if (c_8.cos_x > 0f) {
-        let _e25 = bevy_brdf(m_1.base, m_1.metallic, m_1.roughness, m_1.reflectance, n_7, m_1.v, normalize((c_8.y - x_9)));
-        s_1.diffuse = (_e25 * c_8.e);
+    wg_lo[li_2] = lo_2;
+    wg_hi[li_2] = hi_2;
+    workgroupBarrier();
+    loop {
+        let _e9 = stride;
+        if (_e9 > 0u) {
+        } else {
+            break;
+        }
+        {
+            let _e12 = stride;
+            if (li_2 < _e12) {
+                let _e18 = wg_lo[li_2];
+                let _e20 = stride;
+                let _e23 = wg_lo[(li_2 + _e20)];
+                wg_lo[li_2] = min(_e18, _e23);
+                let _e29 = wg_hi[li_2];
+                let _e31 = stride;
+                let _e34 = wg_hi[(li_2 + _e31)];
+                wg_hi[li_2] = max(_e29, _e34);
+            }
+            workgroupBarrier();
+        }
+        continuing {
+            let _e36 = stride;
+            stride = (_e36 / 2u);
+        }
     }
-    let _e28 = s_1;
+    if (li_2 == 0u) {
+        let _e44 = wg_lo[0];
+        let _e47 = wg_hi[0];
+        wg_box = WorkgroupBox(_e44, _e47);
+    }
+    let _e50 = workgroupUniformLoad((&wg_box));
+    return _e50;
+}
+
+fn workgroup_box(li_3: u32, p_4: vec3<f32>, has: bool) -> WorkgroupBox {
+    let _e9 = workgroup_bounds(li_3, select(vec3(340282350000000000000000000000000000000f), p_4, has), select(vec3(-340282350000000000000000000000000000000f), p_4, has));
+    return _e9;
+}
+
+fn box_is_empty(b_6: WorkgroupBox) -> bool {
+    return (b_6.lo.x > b_6.hi.x);
+}
+
+fn tile_subtree(s_3: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: u32) -> u32 {
+    var p_5: u32;
+    var b_7: u32;
+    var local_27: bool;
+    var local_28: bool;
+    var local_29: bool;
+
+    let _e8 = bsh_subtree(BSH, s_3, BSH_TILE_DEPTH);
+    if (_e8 == BSH_NONE) {
+        return 0u;
+    }
+    let end_1 = bsh_nodes[_e8].next;
+    p_5 = at;
+    let _e21 = bsh_next_leaf_box(BSH, _e8, end_1, t_1.lo, t_1.hi, t_1.w);
+    b_7 = _e21;
+    loop {
+        let _e23 = b_7;
+        if (_e23 != end_1) {
+            if !(!(list)) {
+                let _e31 = p_5;
+                local_28 = (_e31 < to);
+            } else {
+                local_28 = true;
+            }
+            let _e34 = local_28;
+            local_27 = _e34;
+        } else {
+            local_27 = false;
+        }
+        let _e36 = local_27;
+        if _e36 {
+        } else {
+            break;
+        }
+        {
+            if list {
+                let _e39 = p_5;
+                local_29 = (_e39 >= start_2);
+            } else {
+                local_29 = false;
+            }
+            let _e42 = local_29;
+            if _e42 {
+                let _e44 = p_5;
+                let _e47 = b_7;
+                tile_list[(_e44 - start_2)] = _e47;
+            }
+            let _e48 = p_5;
+            p_5 = (_e48 + 1u);
+        }
+        continuing {
+            let _e53 = b_7;
+            let _e56 = bsh_nodes[_e53].next;
+            let _e60 = bsh_next_leaf_box(BSH, _e56, end_1, t_1.lo, t_1.hi, t_1.w);
+            b_7 = _e60;
+        }
+    }
+    let _e61 = p_5;
+    return (_e61 - at);
+}
+
+fn tile_walk_begin(li_4: u32, x_8: vec3<f32>, w_8: f32, has_1: bool) -> TileWalk {
+    var t_2: TileWalk;
+    var s_4: u32;
+    var sum_1: u32 = 0u;
+    var s_5: u32 = 0u;
+
+    let _e8 = atomicMax((&tile_scale), select(0u, bitcast<u32>(w_8), has_1));
+    let _e9 = workgroup_box(li_4, x_8, has_1);
+    let _e13 = workgroupUniformLoad((&tile_scale));
+    t_2 = TileWalk(_e9.lo, _e9.hi, bitcast<f32>(_e13), 0u);
+    let _e18 = box_is_empty(_e9);
+    if _e18 {
+        let _e19 = t_2;
+        return _e19;
+    }
+    s_4 = li_4;
+    loop {
+        let _e21 = s_4;
+        if (_e21 < BSH_TILE_SUBTREES) {
+        } else {
+            break;
+        }
+        {
+            let _e25 = s_4;
+            let _e27 = s_4;
+            let _e28 = t_2;
+            let _e33 = tile_subtree(_e27, _e28, false, 0u, 0u, 0u);
+            subtree_at[_e25] = _e33;
+        }
+        continuing {
+            let _e34 = s_4;
+            s_4 = (_e34 + TILE_THREADS);
+        }
+    }
+    workgroupBarrier();
+    if (li_4 == 0u) {
+        loop {
+            let _e43 = s_5;
+            if (_e43 < BSH_TILE_SUBTREES) {
+            } else {
+                break;
+            }
+            {
+                let _e47 = s_5;
+                let c_14 = subtree_at[_e47];
+                let _e51 = s_5;
+                let _e53 = sum_1;
+                subtree_at[_e51] = _e53;
+                let _e54 = sum_1;
+                sum_1 = (_e54 + c_14);
+            }
+            continuing {
+                let _e57 = s_5;
+                s_5 = (_e57 + 1u);
+            }
+        }
+        let _e60 = sum_1;
+        tile_total = _e60;
+    }
+    let _e63 = workgroupUniformLoad((&tile_total));
+    t_2.total = _e63;
+    let _e64 = t_2;
+    return _e64;
+}
+
+fn tile_walk_fill(li_5: u32, t_3: TileWalk, start_3: u32) -> u32 {
+    var s_6: u32;
+    var past: u32;
+    var local_30: bool;
+
+    let to_1 = min(t_3.total, (start_3 + TILE_LIST));
+    s_6 = li_5;
+    loop {
+        let _e8 = s_6;
+        if (_e8 < BSH_TILE_SUBTREES) {
+        } else {
+            break;
+        }
+        {
+            let _e12 = s_6;
+            let at_1 = subtree_at[_e12];
+            past = t_3.total;
+            let _e17 = s_6;
+            if ((_e17 + 1u) < BSH_TILE_SUBTREES) {
+                let _e23 = s_6;
+                let _e27 = subtree_at[(_e23 + 1u)];
+                past = _e27;
+            }
+            if (at_1 < to_1) {
+                let _e31 = past;
+                local_30 = (_e31 > start_3);
+            } else {
+                local_30 = false;
+            }
+            let _e34 = local_30;
+            if _e34 {
+                let _e35 = s_6;
+                let _e37 = tile_subtree(_e35, t_3, true, at_1, start_3, to_1);
+            }
+        }
+        continuing {
+            let _e38 = s_6;
+            s_6 = (_e38 + TILE_THREADS);
+        }
+    }
+    workgroupBarrier();
+    return (to_1 - start_3);
+}
+
+fn shade_connection(c_9: Connection, x_9: vec3<f32>, n_8: vec3<f32>, m_1: Material) -> Shaded {
+    var s_7: Shaded;
+
+    s_7.e = c_9.e;
+    s_7.diffuse = vec3(0f);
+    s_7.specular = vec3(0f);
+    if (c_9.cos_x > 0f) {
+        let _e25 = bevy_brdf(m_1.base, m_1.metallic, m_1.roughness, m_1.reflectance, n_8, m_1.v, normalize((c_9.y - x_9)));
+        s_7.diffuse = (_e25 * c_9.e);
+    }
+    let _e28 = s_7;
     return _e28;
 }
 
-fn shade_pick_traced(li_2: u32, x_10: vec3<f32>, n_8: vec3<f32>, r_10: vec3<f32>, rl_6: vec4<f32>, m_2: Material, w_6: f32, u1_5: f32, u2_5: f32, eps_2: f32, trace_3: bool) -> Shaded {
-    let _e11 = light_range_scale(li_2, x_10, r_10, rl_6);
-    let _e12 = connect_traced(li_2, x_10, n_8, n_8, _e11, w_6, u1_5, u2_5, eps_2, trace_3);
-    let _e13 = shade_connection(_e12, x_10, n_8, m_2);
+fn shade_pick_traced(li_6: u32, x_10: vec3<f32>, n_9: vec3<f32>, r_10: vec3<f32>, rl_5: vec4<f32>, m_2: Material, w_9: f32, u1_5: f32, u2_5: f32, eps_2: f32, trace_3: bool) -> Shaded {
+    let _e11 = light_range_scale(li_6, x_10, r_10, rl_5);
+    let _e12 = connect_traced(li_6, x_10, n_9, n_9, _e11, w_9, u1_5, u2_5, eps_2, trace_3);
+    let _e13 = shade_connection(_e12, x_10, n_9, m_2);
     return _e13;
 }
 
@@ -1048,20 +1348,20 @@ fn material_of(base_3: vec3<f32>, metallic_4: f32, roughness: f32, reflectance_2
     return Material(base_3, saturate(metallic_4), _e6, v_4, roughness, reflectance_2);
 }
 
-fn add(a_8: Shaded, b_7: Shaded) -> Shaded {
-    return Shaded((a_8.e + b_7.e), (a_8.diffuse + b_7.diffuse), (a_8.specular + b_7.specular));
+fn add(a_8: Shaded, b_8: Shaded) -> Shaded {
+    return Shaded((a_8.e + b_8.e), (a_8.diffuse + b_8.diffuse), (a_8.specular + b_8.specular));
 }
 
-fn scaled(s_2: Shaded, w_7: vec3<f32>) -> Shaded {
-    return Shaded((s_2.e * w_7), (s_2.diffuse * w_7), (s_2.specular * w_7));
+fn scaled(s_8: Shaded, w_10: vec3<f32>) -> Shaded {
+    return Shaded((s_8.e * w_10), (s_8.diffuse * w_10), (s_8.specular * w_10));
 }
 
 fn first_holders(keys_1: array<vec2<u32>, 8>, held_1: array<bool, 8>) -> array<u32, 8> {
     var first: array<u32, 8>;
     var k_4: u32 = 0u;
-    var j_2: u32;
-    var local_22: bool;
-    var local_23: bool;
+    var j_3: u32;
+    var local_31: bool;
+    var local_32: bool;
 
     loop {
         let _e5 = k_4;
@@ -1074,41 +1374,41 @@ fn first_holders(keys_1: array<vec2<u32>, 8>, held_1: array<bool, 8>) -> array<u
             let _e11 = k_4;
             let _e12 = k_4;
             first[_e8] = select(K, _e11, held_1[_e12]);
-            j_2 = 0u;
+            j_3 = 0u;
             loop {
-                let _e17 = j_2;
+                let _e17 = j_3;
                 let _e18 = k_4;
                 if (_e17 < _e18) {
                     let _e22 = k_4;
-                    local_22 = held_1[_e22];
+                    local_31 = held_1[_e22];
                 } else {
-                    local_22 = false;
+                    local_31 = false;
                 }
-                let _e25 = local_22;
+                let _e25 = local_31;
                 if _e25 {
                 } else {
                     break;
                 }
                 {
-                    let _e26 = j_2;
+                    let _e26 = j_3;
                     if held_1[_e26] {
-                        let _e30 = j_2;
+                        let _e30 = j_3;
                         let _e32 = k_4;
-                        local_23 = all((keys_1[_e30] == keys_1[_e32]));
+                        local_32 = all((keys_1[_e30] == keys_1[_e32]));
                     } else {
-                        local_23 = false;
+                        local_32 = false;
                     }
-                    let _e37 = local_23;
+                    let _e37 = local_32;
                     if _e37 {
                         let _e38 = k_4;
-                        let _e40 = j_2;
+                        let _e40 = j_3;
                         first[_e38] = _e40;
                         break;
                     }
                 }
                 continuing {
-                    let _e42 = j_2;
-                    j_2 = (_e42 + 1u);
+                    let _e42 = j_3;
+                    j_3 = (_e42 + 1u);
                 }
             }
         }
@@ -1121,44 +1421,44 @@ fn first_holders(keys_1: array<vec2<u32>, 8>, held_1: array<bool, 8>) -> array<u
     return _e47;
 }
 
-fn output_of(s_3: Shaded) -> vec3<f32> {
-    return (s_3.diffuse + s_3.specular);
+fn output_of(s_9: Shaded) -> vec3<f32> {
+    return (s_9.diffuse + s_9.specular);
 }
 
-fn reuse_target(q_3: u32, l_4: GpuLight, cells: u32, x_11: vec3<f32>, n_9: vec3<f32>, m_3: Material) -> f32 {
+fn reuse_target(q_3: u32, l_4: GpuLight, cells: u32, x_11: vec3<f32>, n_10: vec3<f32>, m_3: Material) -> f32 {
     let _e9 = grid_coordinate(cells);
     let _e12 = grid_coordinate((cells << 16u));
-    let _e15 = connect_record(l_4, x_11, n_9, n_9, UNRANGED, UNRANGED, 1f, _e9, _e12, 0f, false);
-    let _e16 = shade_connection(_e15, x_11, n_9, m_3);
+    let _e15 = connect_record(l_4, x_11, n_10, n_10, UNRANGED, UNRANGED, 1f, _e9, _e12, 0f, false);
+    let _e16 = shade_connection(_e15, x_11, n_10, m_3);
     let _e17 = output_of(_e16);
     let _e19 = slot_target(_e17, q_3, K);
     return _e19;
 }
 
-fn reuse_surface(x_12: vec3<f32>, n_10: vec3<f32>, m_4: Material, c_9: f32) -> ReuseSurface {
-    return ReuseSurface(x_12, c_9, n_10, pack4x8unorm(vec4<f32>(m_4.base, m_4.metallic)), pack2x16unorm(vec2<f32>(saturate(m_4.roughness), saturate(m_4.reflectance))), 0u, 0u, 0u);
+fn reuse_surface(x_12: vec3<f32>, n_11: vec3<f32>, m_4: Material, c_10: f32) -> ReuseSurface {
+    return ReuseSurface(x_12, c_10, n_11, pack4x8unorm(vec4<f32>(m_4.base, m_4.metallic)), pack2x16unorm(vec2<f32>(saturate(m_4.roughness), saturate(m_4.reflectance))), 0u, 0u, 0u);
 }
 
-fn reuse_material(s_4: ReuseSurface, eye: vec3<f32>) -> Material {
-    let b_8 = unpack4x8unorm(s_4.base);
-    let r_12 = unpack2x16unorm(s_4.rough);
-    let _e13 = material_of(b_8.xyz, b_8.w, r_12.x, r_12.y, normalize((eye - s_4.x)));
+fn reuse_material(s_10: ReuseSurface, eye: vec3<f32>) -> Material {
+    let b_9 = unpack4x8unorm(s_10.base);
+    let r_12 = unpack2x16unorm(s_10.rough);
+    let _e13 = material_of(b_9.xyz, b_9.w, r_12.x, r_12.y, normalize((eye - s_10.x)));
     return _e13;
 }
 
-fn reuse_domains(x_13: vec3<f32>, n_11: vec3<f32>, d_6: f32, h_2: u32, doms_1: ptr<function, array<Domain, 3>>) -> u32 {
+fn reuse_domains(x_13: vec3<f32>, n_12: vec3<f32>, d_6: f32, h_2: u32, doms_1: ptr<function, array<Domain, 3>>) -> u32 {
     var nd: u32 = 0u;
     var hr: u32;
-    var j_3: u32 = 0u;
-    var p_4: vec2<f32>;
-    var local_24: bool;
-    var local_25: bool;
-    var local_26: bool;
+    var j_4: u32 = 0u;
+    var p_6: vec2<f32>;
+    var local_33: bool;
+    var local_34: bool;
+    var local_35: bool;
     var seen: bool;
     var k_5: u32;
-    var local_27: bool;
-    var local_28: bool;
-    var local_29: bool;
+    var local_36: bool;
+    var local_37: bool;
+    var local_38: bool;
 
     let _e9 = reuse.has_history;
     if (_e9 != 1u) {
@@ -1176,14 +1476,14 @@ fn reuse_domains(x_13: vec3<f32>, n_11: vec3<f32>, d_6: f32, h_2: u32, doms_1: p
     }
     hr = h_2;
     loop {
-        let _e41 = j_3;
+        let _e41 = j_4;
         if (_e41 < DOMAINS) {
         } else {
             break;
         }
         {
-            p_4 = _e33.xy;
-            let _e46 = j_3;
+            p_6 = _e33.xy;
+            let _e46 = j_4;
             if (_e46 > 0u) {
                 let _e49 = hr;
                 let _e50 = pcg_hash(_e49);
@@ -1193,40 +1493,40 @@ fn reuse_domains(x_13: vec3<f32>, n_11: vec3<f32>, d_6: f32, h_2: u32, doms_1: p
                 let _e53 = hr;
                 let _e54 = pcg_hash(_e53);
                 hr = _e54;
-                let _e55 = p_4;
+                let _e55 = p_6;
                 let _e58 = reuse.radius;
                 let _e59 = hr;
                 let _e60 = xi_from_bits(_e59);
                 let _e61 = disk_offset(_e58, _e52, _e60);
-                p_4 = (_e55 + _e61);
+                p_6 = (_e55 + _e61);
             }
-            let _e63 = p_4;
-            let t_5 = vec2<i32>(round(_e63));
-            if !((t_5.x < 0i)) {
-                local_24 = (t_5.y < 0i);
+            let _e63 = p_6;
+            let t_8 = vec2<i32>(round(_e63));
+            if !((t_8.x < 0i)) {
+                local_33 = (t_8.y < 0i);
             } else {
-                local_24 = true;
+                local_33 = true;
             }
-            let _e76 = local_24;
+            let _e76 = local_33;
             if !(_e76) {
                 let _e83 = view.width;
-                local_25 = (t_5.x >= i32(_e83));
+                local_34 = (t_8.x >= i32(_e83));
             } else {
-                local_25 = true;
+                local_34 = true;
             }
-            let _e87 = local_25;
+            let _e87 = local_34;
             if !(_e87) {
                 let _e94 = view.height;
-                local_26 = (t_5.y >= i32(_e94));
+                local_35 = (t_8.y >= i32(_e94));
             } else {
-                local_26 = true;
+                local_35 = true;
             }
-            let _e98 = local_26;
+            let _e98 = local_35;
             if _e98 {
                 continue;
             }
             let _e103 = view.width;
-            let pixel = ((u32(t_5.y) * _e103) + u32(t_5.x));
+            let pixel = ((u32(t_8.y) * _e103) + u32(t_8.x));
             seen = false;
             k_5 = 0u;
             loop {
@@ -1241,11 +1541,11 @@ fn reuse_domains(x_13: vec3<f32>, n_11: vec3<f32>, d_6: f32, h_2: u32, doms_1: p
                     if !(_e115) {
                         let _e119 = k_5;
                         let _e122 = (*doms_1)[_e119].pixel;
-                        local_27 = (_e122 == pixel);
+                        local_36 = (_e122 == pixel);
                     } else {
-                        local_27 = true;
+                        local_36 = true;
                     }
-                    let _e125 = local_27;
+                    let _e125 = local_36;
                     seen = _e125;
                 }
                 continuing {
@@ -1253,101 +1553,101 @@ fn reuse_domains(x_13: vec3<f32>, n_11: vec3<f32>, d_6: f32, h_2: u32, doms_1: p
                     k_5 = (_e127 + 1u);
                 }
             }
-            let s_7 = reuse_prev[pixel].surface;
+            let s_13 = reuse_prev[pixel].surface;
             let _e133 = seen;
             if !(_e133) {
-                local_28 = !((s_7.m > 0f));
+                local_37 = !((s_13.m > 0f));
             } else {
-                local_28 = true;
+                local_37 = true;
             }
-            let _e142 = local_28;
+            let _e142 = local_37;
             if !(_e142) {
-                let _e150 = history_matches(n_11, s_7.n, x_13, dot(s_7.n, s_7.x), d_6);
-                local_29 = !(_e150);
+                let _e150 = history_matches(n_12, s_13.n, x_13, dot(s_13.n, s_13.x), d_6);
+                local_38 = !(_e150);
             } else {
-                local_29 = true;
+                local_38 = true;
             }
-            let _e153 = local_29;
+            let _e153 = local_38;
             if _e153 {
                 continue;
             }
             let _e154 = nd;
             let _e160 = reuse.prev_eye;
-            let _e161 = reuse_material(s_7, _e160);
+            let _e161 = reuse_material(s_13, _e160);
             let _e165 = reuse.max_confidence;
-            let _e167 = j_3;
-            (*doms_1)[_e154] = Domain(pixel, s_7.x, s_7.n, _e161, min(s_7.m, _e165), (_e167 == 0u));
+            let _e167 = j_4;
+            (*doms_1)[_e154] = Domain(pixel, s_13.x, s_13.n, _e161, min(s_13.m, _e165), (_e167 == 0u));
             let _e171 = nd;
             nd = (_e171 + 1u);
         }
         continuing {
-            let _e175 = j_3;
-            j_3 = (_e175 + 1u);
+            let _e175 = j_4;
+            j_4 = (_e175 + 1u);
         }
     }
     let _e177 = nd;
     return _e177;
 }
 
-fn gris_combine(q_4: u32, cur: ReuseSlot, cur_ris: bool, cur_c: f32, k0_: u32, k1_: u32, x_14: vec3<f32>, n_12: vec3<f32>, m_5: Material, doms_2: ptr<function, array<Domain, 3>>, hs_1: ptr<function, u32>) -> ReuseSlot {
+fn gris_combine(q_4: u32, cur: ReuseSlot, cur_ris: bool, cur_c: f32, k0_: u32, k1_: u32, x_14: vec3<f32>, n_13: vec3<f32>, m_5: Material, doms_2: ptr<function, array<Domain, 3>>, hs_1: ptr<function, u32>) -> ReuseSlot {
     var w_sum_3: f32 = 0f;
     var out: ReuseSlot = ReuseSlot(0u, 0u, 0f);
     var out_target: f32 = 0f;
-    var j_4: u32;
-    var s_5: ReuseSlot;
-    var local_30: bool;
+    var j_5: u32;
+    var s_11: ReuseSlot;
+    var local_39: bool;
     var w_in: f32;
-    var local_31: bool;
+    var local_40: bool;
     var own_1: f32;
     var all_1: f32;
     var k_6: u32;
-    var local_32: bool;
+    var local_41: bool;
 
-    j_4 = k0_;
+    j_5 = k0_;
     loop {
-        let _e21 = j_4;
+        let _e21 = j_5;
         if (_e21 <= k1_) {
         } else {
             break;
         }
         {
-            s_5 = cur;
-            let _e24 = j_4;
+            s_11 = cur;
+            let _e24 = j_5;
             if (_e24 > k0_) {
-                let _e27 = j_4;
+                let _e27 = j_5;
                 let _e32 = (*doms_2)[(_e27 - 1u)].pixel;
                 let _e36 = reuse_prev[_e32].slots[q_4];
-                s_5 = _e36;
+                s_11 = _e36;
             }
-            let _e38 = s_5.w;
+            let _e38 = s_11.w;
             if !(!((_e38 > 0f))) {
-                let _e46 = s_5.light;
-                local_30 = (_e46 >= arrayLength((&lights)));
+                let _e46 = s_11.light;
+                local_39 = (_e46 >= arrayLength((&lights)));
             } else {
-                local_30 = true;
+                local_39 = true;
             }
-            let _e51 = local_30;
+            let _e51 = local_39;
             if _e51 {
                 continue;
             }
-            let _e54 = s_5.light;
+            let _e54 = s_11.light;
             let _e56 = lights[_e54];
-            let _e58 = s_5.u;
-            let _e59 = reuse_target(q_4, _e56, _e58, x_14, n_12, m_5);
+            let _e58 = s_11.u;
+            let _e59 = reuse_target(q_4, _e56, _e58, x_14, n_13, m_5);
             if !((_e59 > 0f)) {
                 continue;
             }
-            let _e64 = s_5.w;
+            let _e64 = s_11.w;
             w_in = _e64;
-            let _e66 = j_4;
+            let _e66 = j_5;
             if (_e66 == k0_) {
-                local_31 = cur_ris;
+                local_40 = cur_ris;
             } else {
-                local_31 = false;
+                local_40 = false;
             }
-            let _e71 = local_31;
+            let _e71 = local_40;
             if _e71 {
-                let _e73 = s_5.w;
+                let _e73 = s_11.w;
                 w_in = (_e73 / _e59);
             }
             own_1 = (cur_c * _e59);
@@ -1363,9 +1663,9 @@ fn gris_combine(q_4: u32, cur: ReuseSlot, cur_ris: bool, cur_c: f32, k0_: u32, k
                 {
                     let _e82 = k_6;
                     let _e85 = (*doms_2)[_e82].c;
-                    let _e88 = s_5.light;
+                    let _e88 = s_11.light;
                     let _e90 = lights_prev[_e88];
-                    let _e92 = s_5.u;
+                    let _e92 = s_11.u;
                     let _e93 = k_6;
                     let _e96 = (*doms_2)[_e93].x;
                     let _e97 = k_6;
@@ -1373,13 +1673,13 @@ fn gris_combine(q_4: u32, cur: ReuseSlot, cur_ris: bool, cur_c: f32, k0_: u32, k
                     let _e101 = k_6;
                     let _e104 = (*doms_2)[_e101].m;
                     let _e105 = reuse_target(q_4, _e90, _e92, _e96, _e100, _e104);
-                    let t_6 = (_e85 * _e105);
+                    let t_9 = (_e85 * _e105);
                     let _e107 = all_1;
-                    all_1 = (_e107 + t_6);
+                    all_1 = (_e107 + t_9);
                     let _e109 = k_6;
-                    let _e112 = j_4;
+                    let _e112 = j_5;
                     if ((_e109 + 1u) == _e112) {
-                        own_1 = t_6;
+                        own_1 = t_9;
                     }
                 }
                 continuing {
@@ -1401,20 +1701,20 @@ fn gris_combine(q_4: u32, cur: ReuseSlot, cur_ris: bool, cur_c: f32, k0_: u32, k
                 let _e130 = (*hs_1);
                 let _e131 = xi_from_bits(_e130);
                 let _e132 = weighted_replace(_e120, _e129, _e131);
-                local_32 = _e132;
+                local_41 = _e132;
             } else {
-                local_32 = false;
+                local_41 = false;
             }
-            let _e134 = local_32;
+            let _e134 = local_41;
             if _e134 {
-                let _e135 = s_5;
+                let _e135 = s_11;
                 out = _e135;
                 out_target = _e59;
             }
         }
         continuing {
-            let _e137 = j_4;
-            j_4 = (_e137 + 1u);
+            let _e137 = j_5;
+            j_5 = (_e137 + 1u);
         }
     }
     let _e140 = w_sum_3;
@@ -1426,9 +1726,14 @@ fn gris_combine(q_4: u32, cur: ReuseSlot, cur_ris: bool, cur_c: f32, k0_: u32, k
 }
 
 @compute @workgroup_size(8, 8, 1) 
-fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
+fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
     var local: bool;
+    var s: vec4<f32> = vec4(0f);
+    var nn: vec3<f32> = vec3(0f);
     var local_1: bool;
+    var local_2: bool;
+    var local_3: bool;
+    var n: vec3<f32> = vec3<f32>(0f, 0f, 1f);
     var m: Material;
     var lobe: vec4<f32> = vec4<f32>(1f, 0f, 1f, 1f);
     var r: vec3<f32>;
@@ -1442,11 +1747,14 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     var count: u32 = 0u;
     var hc: u32;
     var threshold: array<f32, 8>;
-    var b: u32;
+    var local_4: bool;
+    var start: u32 = 0u;
+    var j: u32;
+    var local_5: bool;
     var q: u32;
-    var local_2: bool;
+    var local_6: bool;
     var doms: array<Domain, 3>;
-    var local_3: bool;
+    var local_7: bool;
     var hs: u32;
     var kept: array<ReuseSlot, 8>;
     var fin: array<ReuseSlot, 8>;
@@ -1457,362 +1765,426 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     var visible: array<bool, 8>;
     var k_1: u32 = 0u;
     var w: vec3<f32>;
-    var j: u32;
     var j_1: u32;
+    var j_2: u32;
     var q_2: u32 = 0u;
-    var local_4: bool;
+    var local_8: bool;
 
-    let _e4 = view.width;
-    if !((gid.x >= _e4)) {
+    let _e5 = view.width;
+    if (gid.x < _e5) {
         let _e12 = view.height;
-        local = (gid.y >= _e12);
+        local = (gid.y < _e12);
     } else {
-        local = true;
+        local = false;
     }
-    let _e15 = local;
-    if _e15 {
-        return;
-    }
+    let inside = local;
     let texel_1 = vec2<i32>(i32(gid.x), i32(gid.y));
-    let _e21 = surface_at(texel_1);
-    let _e24 = textureLoad(normal_tex, texel_1, 0i);
-    let nn = _e24.xyz;
-    let len2_ = dot(nn, nn);
-    if !((_e21.w <= 0f)) {
-        local_1 = !((len2_ > 0f));
+    if inside {
+        let _e27 = surface_at(texel_1);
+        s = _e27;
+        let _e30 = textureLoad(normal_tex, texel_1, 0i);
+        nn = _e30.xyz;
+    }
+    let _e32 = nn;
+    let _e33 = nn;
+    let len2_ = dot(_e32, _e33);
+    let _e35 = s;
+    let x_17 = _e35.xyz;
+    if inside {
+        let _e40 = s.w;
+        local_1 = (_e40 > 0f);
     } else {
-        local_1 = true;
+        local_1 = false;
     }
-    let _e37 = local_1;
-    if _e37 {
-        textureStore(out_tex, texel_1, vec4(0f));
-        let _e45 = view.width;
-        reuse_next[((gid.y * _e45) + gid.x)].surface.m = 0f;
-        return;
+    let _e44 = local_1;
+    if _e44 {
+        local_2 = (len2_ > 0f);
+    } else {
+        local_2 = false;
     }
-    let x_17 = _e21.xyz;
-    let n_15 = (nn / vec3(sqrt(len2_)));
-    r = n_15;
-    let mr = textureLoad(metal_rough_tex, texel_1, 0i);
-    let _e70 = textureLoad(base_color_tex, texel_1, 0i);
-    let _e77 = view.eye;
-    let _e80 = material_of(_e70.xyz, mr.z, mr.y, mr.w, normalize((_e77 - x_17)));
-    m = _e80;
-    let _e82 = m.base;
-    let _e84 = m.metallic;
-    let _e86 = bevy_f0_(mr.w);
-    let _e90 = m.alpha;
-    let _e92 = m.v;
-    let _e94 = receiver_lobe(_e82, _e84, vec3(_e86), 1f, _e90, dot(n_15, _e92));
-    lobe = _e94;
-    let _e96 = m.v;
-    let _e97 = mirror_dir(n_15, _e96);
-    r = _e97;
-    let _e98 = lobe;
-    let _e99 = range_lobe(_e98);
-    let _e102 = view.shadow_offset;
-    let _e105 = view.eye;
-    let eps_3 = (_e102 * length((_e105 - x_17)));
-    let _e111 = view.seed;
-    let _e115 = view.width;
-    let _e121 = view.frame;
-    let _e122 = point_stream(_e111, ((gid.y * _e115) + gid.x), _e121);
-    let _e123 = pick_stream(_e122);
-    h = _e123;
-    hc = _e122;
-    let _e146 = bsh_first(BSH);
-    let _e147 = r;
-    let _e148 = bsh_next_leaf_lobe(BSH, _e146, x_17, _e147, _e99);
-    b = _e148;
-    loop {
-        let _e150 = b;
-        if (_e150 != BSH_NONE) {
-        } else {
-            break;
-        }
-        {
-            let _e153 = count;
-            count = (_e153 + 1u);
-            let _e157 = b;
-            let li_3 = bsh_nodes[_e157].light;
-            let _e161 = h;
-            let _e162 = pcg_hash(_e161);
-            h = _e162;
-            let h1_1 = h;
-            let _e164 = h;
-            let _e165 = pcg_hash(_e164);
-            h = _e165;
-            let _e166 = h;
-            let _e167 = grid_cells(h1_1, _e166);
-            let _e168 = grid_coordinate(h1_1);
-            let _e169 = h;
-            let _e170 = grid_coordinate(_e169);
-            let u_5 = vec2<f32>(_e168, _e170);
-            let _e172 = r;
-            let _e173 = m;
-            let _e178 = shade_pick_traced(li_3, x_17, n_15, _e172, _e99, _e173, 1f, u_5.x, u_5.y, eps_3, false);
-            let _e179 = output_of(_e178);
-            let _e180 = resample_target(_e179);
-            if (_e180 > 0f) {
-                let _e183 = total;
-                total = (_e183 + _e179);
-                q = 0u;
-                loop {
-                    let _e187 = q;
-                    if (_e187 < K) {
-                    } else {
-                        break;
-                    }
-                    {
-                        let _e190 = q;
-                        let _e192 = slot_target(_e179, _e190, K);
-                        let _e193 = total;
-                        let _e194 = q;
-                        let _e196 = slot_target(_e193, _e194, K);
-                        if (_e192 > 0f) {
-                            let _e201 = q;
-                            let _e203 = threshold[_e201];
-                            local_2 = (_e196 > _e203);
-                        } else {
-                            local_2 = false;
-                        }
-                        let _e206 = local_2;
-                        if _e206 {
-                            let _e207 = q;
-                            slot_light[_e207] = li_3;
-                            let _e209 = q;
-                            slot_u[_e209] = u_5;
-                            let _e211 = q;
-                            slot_p[_e211] = _e192;
-                            let _e213 = q;
-                            slot_cells[_e213] = _e167;
-                            let _e215 = q;
-                            let _e217 = next_threshold(_e196, (&hc));
-                            threshold[_e215] = _e217;
-                        }
-                    }
-                    continuing {
-                        let _e219 = q;
-                        q = (_e219 + 1u);
-                    }
-                }
-            }
-        }
-        continuing {
-            let _e223 = b;
-            let _e226 = bsh_nodes[_e223].next;
-            let _e227 = r;
-            let _e228 = bsh_next_leaf_lobe(BSH, _e226, x_17, _e227, _e99);
-            b = _e228;
-        }
-    }
-    let _e232 = view.width;
-    let pixel_1 = ((gid.y * _e232) + gid.x);
-    let _e239 = view.eye;
-    let _e243 = reuse_stream(_e122, 0u);
-    let _e244 = reuse_domains(x_17, n_15, length((_e239 - x_17)), _e243, (&doms));
-    if (_e244 > 0u) {
-        let _e251 = doms[0].temporal;
-        local_3 = _e251;
+    let _e50 = local_2;
+    if _e50 {
+        local_3 = all((abs(x_17) <= vec3(340282350000000000000000000000000000000f)));
     } else {
         local_3 = false;
     }
-    let own_history = local_3;
-    let first_1 = select(0u, 1u, own_history);
-    let _e259 = doms[0].c;
-    let confidence = (1f + select(0f, _e259, own_history));
-    let _e265 = reuse_stream(_e122, 1u);
-    hs = _e265;
+    let has_2 = local_3;
+    if has_2 {
+        let _e65 = nn;
+        n = (_e65 / vec3(sqrt(len2_)));
+    }
+    let _e76 = n;
+    r = _e76;
+    if has_2 {
+        let mr = textureLoad(metal_rough_tex, texel_1, 0i);
+        let _e83 = textureLoad(base_color_tex, texel_1, 0i);
+        let _e90 = view.eye;
+        let _e93 = material_of(_e83.xyz, mr.z, mr.y, mr.w, normalize((_e90 - x_17)));
+        m = _e93;
+        let _e95 = m.base;
+        let _e97 = m.metallic;
+        let _e99 = bevy_f0_(mr.w);
+        let _e103 = m.alpha;
+        let _e104 = n;
+        let _e106 = m.v;
+        let _e108 = receiver_lobe(_e95, _e97, vec3(_e99), 1f, _e103, dot(_e104, _e106));
+        lobe = _e108;
+        let _e109 = n;
+        let _e111 = m.v;
+        let _e112 = mirror_dir(_e109, _e111);
+        r = _e112;
+    }
+    let _e113 = lobe;
+    let _e114 = range_lobe(_e113);
+    let _e117 = view.shadow_offset;
+    let _e120 = view.eye;
+    let eps_3 = (_e117 * length((_e120 - x_17)));
+    let _e126 = view.seed;
+    let _e130 = view.width;
+    let _e136 = view.frame;
+    let _e137 = point_stream(_e126, ((gid.y * _e130) + gid.x), _e136);
+    let _e138 = pick_stream(_e137);
+    h = _e138;
+    hc = _e137;
+    if has_2 {
+        local_4 = (_e114.w >= 0f);
+    } else {
+        local_4 = false;
+    }
+    let _e166 = local_4;
+    let _e167 = tile_walk_begin(lid, x_17, _e114.w, _e166);
     loop {
-        let _e271 = q_1;
-        if (_e271 < K) {
+        let _e170 = start;
+        if (_e170 < _e167.total) {
         } else {
             break;
         }
         {
-            let _e274 = q_1;
-            let _e276 = q_1;
-            let _e277 = q_1;
-            let _e279 = slot_light[_e277];
-            let _e280 = q_1;
-            let _e282 = slot_cells[_e280];
-            let _e283 = total;
-            let _e284 = q_1;
-            let _e286 = slot_target(_e283, _e284, K);
-            let _e287 = q_1;
-            let _e289 = slot_p[_e287];
-            let _e298 = m;
-            let _e299 = gris_combine(_e276, ReuseSlot(_e279, _e282, select(0f, _e286, (_e289 > 0f))), true, 1f, 0u, first_1, x_17, n_15, _e298, (&doms), (&hs));
-            kept[_e274] = _e299;
-            let _e300 = q_1;
-            let _e302 = q_1;
-            let _e304 = kept[_e302];
-            fin[_e300] = _e304;
-            if (_e244 > first_1) {
-                let _e306 = q_1;
-                let _e308 = q_1;
-                let _e309 = q_1;
-                let _e311 = kept[_e309];
-                let _e313 = m;
-                let _e314 = gris_combine(_e308, _e311, false, confidence, first_1, _e244, x_17, n_15, _e313, (&doms), (&hs));
-                fin[_e306] = _e314;
+            let _e173 = start;
+            let _e174 = tile_walk_fill(lid, _e167, _e173);
+            j = 0u;
+            loop {
+                let _e177 = j;
+                if (_e177 < _e174) {
+                } else {
+                    break;
+                }
+                {
+                    let _e180 = j;
+                    let b_10 = tile_list[_e180];
+                    if !(!(has_2)) {
+                        let _e189 = bsh_nodes[b_10];
+                        let _e190 = r;
+                        let _e191 = bsh_reaches(_e189, x_17, _e190, _e114);
+                        local_5 = !(_e191);
+                    } else {
+                        local_5 = true;
+                    }
+                    let _e194 = local_5;
+                    if _e194 {
+                        continue;
+                    }
+                    let li_7 = bsh_nodes[b_10].light;
+                    let _e199 = count;
+                    count = (_e199 + 1u);
+                    let _e202 = h;
+                    let _e203 = pcg_hash(_e202);
+                    h = _e203;
+                    let h1_1 = h;
+                    let _e205 = h;
+                    let _e206 = pcg_hash(_e205);
+                    h = _e206;
+                    let _e207 = h;
+                    let _e208 = grid_cells(h1_1, _e207);
+                    let _e209 = grid_coordinate(h1_1);
+                    let _e210 = h;
+                    let _e211 = grid_coordinate(_e210);
+                    let u_5 = vec2<f32>(_e209, _e211);
+                    let _e213 = n;
+                    let _e214 = r;
+                    let _e215 = m;
+                    let _e220 = shade_pick_traced(li_7, x_17, _e213, _e214, _e114, _e215, 1f, u_5.x, u_5.y, eps_3, false);
+                    let _e221 = output_of(_e220);
+                    let _e222 = resample_target(_e221);
+                    if (_e222 > 0f) {
+                        let _e225 = total;
+                        total = (_e225 + _e221);
+                        q = 0u;
+                        loop {
+                            let _e229 = q;
+                            if (_e229 < K) {
+                            } else {
+                                break;
+                            }
+                            {
+                                let _e232 = q;
+                                let _e234 = slot_target(_e221, _e232, K);
+                                let _e235 = total;
+                                let _e236 = q;
+                                let _e238 = slot_target(_e235, _e236, K);
+                                if (_e234 > 0f) {
+                                    let _e243 = q;
+                                    let _e245 = threshold[_e243];
+                                    local_6 = (_e238 > _e245);
+                                } else {
+                                    local_6 = false;
+                                }
+                                let _e248 = local_6;
+                                if _e248 {
+                                    let _e249 = q;
+                                    slot_light[_e249] = li_7;
+                                    let _e251 = q;
+                                    slot_u[_e251] = u_5;
+                                    let _e253 = q;
+                                    slot_p[_e253] = _e234;
+                                    let _e255 = q;
+                                    slot_cells[_e255] = _e208;
+                                    let _e257 = q;
+                                    let _e259 = next_threshold(_e238, (&hc));
+                                    threshold[_e257] = _e259;
+                                }
+                            }
+                            continuing {
+                                let _e261 = q;
+                                q = (_e261 + 1u);
+                            }
+                        }
+                    }
+                }
+                continuing {
+                    let _e264 = j;
+                    j = (_e264 + 1u);
+                }
+            }
+            workgroupBarrier();
+        }
+        continuing {
+            let _e266 = start;
+            start = (_e266 + TILE_LIST);
+        }
+    }
+    if !(has_2) {
+        if inside {
+            textureStore(out_tex, texel_1, vec4(0f));
+            let _e277 = view.width;
+            reuse_next[((gid.y * _e277) + gid.x)].surface.m = 0f;
+        }
+        return;
+    }
+    let _e288 = view.width;
+    let pixel_1 = ((gid.y * _e288) + gid.x);
+    let _e293 = n;
+    let _e296 = view.eye;
+    let _e300 = reuse_stream(_e137, 0u);
+    let _e301 = reuse_domains(x_17, _e293, length((_e296 - x_17)), _e300, (&doms));
+    if (_e301 > 0u) {
+        let _e308 = doms[0].temporal;
+        local_7 = _e308;
+    } else {
+        local_7 = false;
+    }
+    let own_history = local_7;
+    let first_1 = select(0u, 1u, own_history);
+    let _e316 = doms[0].c;
+    let confidence = (1f + select(0f, _e316, own_history));
+    let _e322 = reuse_stream(_e137, 1u);
+    hs = _e322;
+    loop {
+        let _e328 = q_1;
+        if (_e328 < K) {
+        } else {
+            break;
+        }
+        {
+            let _e331 = q_1;
+            let _e333 = q_1;
+            let _e334 = q_1;
+            let _e336 = slot_light[_e334];
+            let _e337 = q_1;
+            let _e339 = slot_cells[_e337];
+            let _e340 = total;
+            let _e341 = q_1;
+            let _e343 = slot_target(_e340, _e341, K);
+            let _e344 = q_1;
+            let _e346 = slot_p[_e344];
+            let _e355 = n;
+            let _e356 = m;
+            let _e357 = gris_combine(_e333, ReuseSlot(_e336, _e339, select(0f, _e343, (_e346 > 0f))), true, 1f, 0u, first_1, x_17, _e355, _e356, (&doms), (&hs));
+            kept[_e331] = _e357;
+            let _e358 = q_1;
+            let _e360 = q_1;
+            let _e362 = kept[_e360];
+            fin[_e358] = _e362;
+            if (_e301 > first_1) {
+                let _e364 = q_1;
+                let _e366 = q_1;
+                let _e367 = q_1;
+                let _e369 = kept[_e367];
+                let _e371 = n;
+                let _e372 = m;
+                let _e373 = gris_combine(_e366, _e369, false, confidence, first_1, _e301, x_17, _e371, _e372, (&doms), (&hs));
+                fin[_e364] = _e373;
             }
         }
         continuing {
-            let _e316 = q_1;
-            q_1 = (_e316 + 1u);
+            let _e375 = q_1;
+            q_1 = (_e375 + 1u);
         }
     }
     loop {
-        let _e322 = k;
-        if (_e322 < K) {
+        let _e381 = k;
+        if (_e381 < K) {
         } else {
             break;
         }
         {
-            let _e325 = k;
-            let _e327 = k;
-            let _e330 = fin[_e327].light;
-            let _e332 = k;
-            let _e335 = fin[_e332].u;
-            let _e337 = k;
-            let _e340 = fin[_e337].light;
-            let _e343 = lights[_e340].kind;
-            keys[_e325] = vec2<u32>(_e330, select(0u, _e335, (_e343 == LIGHT_TRIANGLE)));
-            let _e348 = k;
-            let _e350 = k;
-            let _e353 = fin[_e350].w;
-            held[_e348] = (_e353 > 0f);
+            let _e384 = k;
+            let _e386 = k;
+            let _e389 = fin[_e386].light;
+            let _e391 = k;
+            let _e394 = fin[_e391].u;
+            let _e396 = k;
+            let _e399 = fin[_e396].light;
+            let _e402 = lights[_e399].kind;
+            keys[_e384] = vec2<u32>(_e389, select(0u, _e394, (_e402 == LIGHT_TRIANGLE)));
+            let _e407 = k;
+            let _e409 = k;
+            let _e412 = fin[_e409].w;
+            held[_e407] = (_e412 > 0f);
         }
         continuing {
-            let _e357 = k;
-            k = (_e357 + 1u);
+            let _e416 = k;
+            k = (_e416 + 1u);
         }
     }
-    let _e359 = keys;
-    let _e360 = held;
-    let _e361 = first_holders(_e359, _e360);
+    let _e418 = keys;
+    let _e419 = held;
+    let _e420 = first_holders(_e418, _e419);
     loop {
-        let _e365 = k_1;
-        if (_e365 < K) {
+        let _e424 = k_1;
+        if (_e424 < K) {
         } else {
             break;
         }
         {
-            let _e368 = k_1;
-            let _e370 = k_1;
-            if (_e361[_e368] != _e370) {
+            let _e427 = k_1;
+            let _e429 = k_1;
+            if (_e420[_e427] != _e429) {
                 continue;
             }
             w = vec3(0f);
-            let _e375 = k_1;
-            j = _e375;
+            let _e434 = k_1;
+            j_1 = _e434;
             loop {
-                let _e377 = j;
-                if (_e377 < K) {
+                let _e436 = j_1;
+                if (_e436 < K) {
                 } else {
                     break;
                 }
                 {
-                    let _e380 = j;
-                    let _e382 = k_1;
-                    if (_e361[_e380] == _e382) {
-                        let _e384 = w;
-                        let _e385 = j;
-                        let _e388 = fin[_e385].w;
-                        let _e389 = j;
-                        let _e391 = slot_share(_e389, K);
-                        w = (_e384 + (_e388 * _e391));
+                    let _e439 = j_1;
+                    let _e441 = k_1;
+                    if (_e420[_e439] == _e441) {
+                        let _e443 = w;
+                        let _e444 = j_1;
+                        let _e447 = fin[_e444].w;
+                        let _e448 = j_1;
+                        let _e450 = slot_share(_e448, K);
+                        w = (_e443 + (_e447 * _e450));
                     }
                 }
                 continuing {
-                    let _e395 = j;
-                    j = (_e395 + 1u);
+                    let _e454 = j_1;
+                    j_1 = (_e454 + 1u);
                 }
             }
-            let _e398 = k_1;
-            let _e401 = fin[_e398].light;
-            let _e403 = lights[_e401];
-            let _e407 = k_1;
-            let _e410 = fin[_e407].u;
-            let _e411 = grid_coordinate(_e410);
-            let _e412 = k_1;
-            let _e415 = fin[_e412].u;
-            let _e418 = grid_coordinate((_e415 << 16u));
-            let _e420 = connect_record(_e403, x_17, n_15, n_15, UNRANGED, UNRANGED, 1f, _e411, _e418, eps_3, true);
-            let _e421 = m;
-            let _e422 = shade_connection(_e420, x_17, n_15, _e421);
-            let _e423 = t;
-            let _e424 = w;
-            let _e425 = scaled(_e422, _e424);
-            let _e426 = add(_e423, _e425);
-            t = _e426;
-            let _e427 = k_1;
-            j_1 = _e427;
+            let _e457 = k_1;
+            let _e460 = fin[_e457].light;
+            let _e462 = lights[_e460];
+            let _e463 = n;
+            let _e464 = n;
+            let _e468 = k_1;
+            let _e471 = fin[_e468].u;
+            let _e472 = grid_coordinate(_e471);
+            let _e473 = k_1;
+            let _e476 = fin[_e473].u;
+            let _e479 = grid_coordinate((_e476 << 16u));
+            let _e481 = connect_record(_e462, x_17, _e463, _e464, UNRANGED, UNRANGED, 1f, _e472, _e479, eps_3, true);
+            let _e482 = n;
+            let _e483 = m;
+            let _e484 = shade_connection(_e481, x_17, _e482, _e483);
+            let _e485 = t;
+            let _e486 = w;
+            let _e487 = scaled(_e484, _e486);
+            let _e488 = add(_e485, _e487);
+            t = _e488;
+            let _e489 = k_1;
+            j_2 = _e489;
             loop {
-                let _e429 = j_1;
-                if (_e429 < K) {
+                let _e491 = j_2;
+                if (_e491 < K) {
                 } else {
                     break;
                 }
                 {
-                    let _e432 = j_1;
-                    let _e434 = k_1;
-                    if (_e361[_e432] == _e434) {
-                        let _e436 = j_1;
-                        let _e438 = output_of(_e422);
-                        let _e439 = resample_target(_e438);
-                        visible[_e436] = (_e439 > 0f);
+                    let _e494 = j_2;
+                    let _e496 = k_1;
+                    if (_e420[_e494] == _e496) {
+                        let _e498 = j_2;
+                        let _e500 = output_of(_e484);
+                        let _e501 = resample_target(_e500);
+                        visible[_e498] = (_e501 > 0f);
                     }
                 }
                 continuing {
-                    let _e443 = j_1;
-                    j_1 = (_e443 + 1u);
+                    let _e505 = j_2;
+                    j_2 = (_e505 + 1u);
                 }
             }
         }
         continuing {
-            let _e446 = k_1;
-            k_1 = (_e446 + 1u);
+            let _e508 = k_1;
+            k_1 = (_e508 + 1u);
         }
     }
     loop {
-        let _e450 = q_2;
-        if (_e450 < K) {
+        let _e512 = q_2;
+        if (_e512 < K) {
         } else {
             break;
         }
         {
-            let _e455 = reuse.visibility;
-            if !((_e455 == 0u)) {
-                let _e461 = q_2;
-                let _e463 = visible[_e461];
-                local_4 = _e463;
+            let _e517 = reuse.visibility;
+            if !((_e517 == 0u)) {
+                let _e523 = q_2;
+                let _e525 = visible[_e523];
+                local_8 = _e525;
             } else {
-                local_4 = true;
+                local_8 = true;
             }
-            let keep = local_4;
-            let _e469 = q_2;
-            let _e471 = q_2;
-            let _e474 = kept[_e471].light;
-            let _e475 = q_2;
-            let _e478 = kept[_e475].u;
-            let _e479 = q_2;
-            let _e482 = kept[_e479].w;
-            reuse_next[pixel_1].slots[_e469] = ReuseSlot(_e474, _e478, select(0f, _e482, keep));
+            let keep = local_8;
+            let _e531 = q_2;
+            let _e533 = q_2;
+            let _e536 = kept[_e533].light;
+            let _e537 = q_2;
+            let _e540 = kept[_e537].u;
+            let _e541 = q_2;
+            let _e544 = kept[_e541].w;
+            reuse_next[pixel_1].slots[_e531] = ReuseSlot(_e536, _e540, select(0f, _e544, keep));
         }
         continuing {
-            let _e487 = q_2;
-            q_2 = (_e487 + 1u);
+            let _e549 = q_2;
+            q_2 = (_e549 + 1u);
         }
     }
-    let _e492 = m;
-    let _e495 = reuse.max_confidence;
-    let _e497 = reuse_surface(x_17, n_15, _e492, min(confidence, _e495));
-    reuse_next[pixel_1].surface = _e497;
-    let _e500 = t.diffuse;
-    let _e502 = t.specular;
-    let _e504 = count;
-    textureStore(out_tex, texel_1, vec4<f32>((_e500 + _e502), f32(_e504)));
+    let _e554 = n;
+    let _e555 = m;
+    let _e558 = reuse.max_confidence;
+    let _e560 = reuse_surface(x_17, _e554, _e555, min(confidence, _e558));
+    reuse_next[pixel_1].surface = _e560;
+    let _e563 = t.diffuse;
+    let _e565 = t.specular;
+    let _e567 = count;
+    textureStore(out_tex, texel_1, vec4<f32>((_e563 + _e565), f32(_e567)));
     return;
 }

@@ -71,6 +71,18 @@ struct Connection {
     cos_x: f32,
 }
 
+struct WorkgroupBox {
+    lo: vec3<f32>,
+    hi: vec3<f32>,
+}
+
+struct TileWalk {
+    lo: vec3<f32>,
+    hi: vec3<f32>,
+    w: f32,
+    total: u32,
+}
+
 struct Shaded {
     e: vec3<f32>,
     diffuse: vec3<f32>,
@@ -144,6 +156,11 @@ const TEMPORAL_CHANGE_HIGH: f32 = 8f;
 const TEMPORAL_MIN_WEIGHT: f32 = 0.01f;
 const K: u32 = 8u;
 const BSH: u32 = 0u;
+const BSH_TILE_DEPTH: u32 = 8u;
+const BSH_TILE_SUBTREES: u32 = 256u;
+const TILE_THREADS: u32 = 64u;
+const BOX_THREADS: u32 = 64u;
+const TILE_LIST: u32 = 1024u;
 
 @group(1) @binding(6) 
 var<storage> geo_nodes: array<GpuGeoNode>;
@@ -171,17 +188,24 @@ var<storage> r2_3: array<f32>;
 var<storage> bsh_nodes: array<BshNode>;
 @group(1) @binding(5) 
 var<storage> light_cones: array<GpuLightCone>;
+var<workgroup> wg_lo: array<vec3<f32>, 64>;
+var<workgroup> wg_hi: array<vec3<f32>, 64>;
+var<workgroup> wg_box: WorkgroupBox;
+var<workgroup> tile_list: array<u32, 1024>;
+var<workgroup> subtree_at: array<u32, 256>;
+var<workgroup> tile_scale: atomic<u32>;
+var<workgroup> tile_total: u32;
 
 fn to_f32_(u: u32) -> f32 {
     return f32(u);
 }
 
-fn mul_lo_u32_(a: u32, b_1: u32) -> u32 {
-    return (a * b_1);
+fn mul_lo_u32_(a: u32, b: u32) -> u32 {
+    return (a * b);
 }
 
-fn add_wrap_u32_(a_1: u32, b_2: u32) -> u32 {
-    return (a_1 + b_2);
+fn add_wrap_u32_(a_1: u32, b_1: u32) -> u32 {
+    return (a_1 + b_1);
 }
 
 fn f32_from_bits(u_1: u32) -> f32 {
@@ -228,6 +252,12 @@ fn sphere_contains_point(c: vec3<f32>, r_1: f32, x_1: vec3<f32>) -> bool {
     return (dot(v_5, v_5) <= (r_1 * r_1));
 }
 
+fn sphere_overlaps_aabb(c_1: vec3<f32>, r_2: f32, bmin: vec3<f32>, bmax: vec3<f32>) -> bool {
+    let q_1 = clamp(c_1, bmin, bmax);
+    let v_6 = (q_1 - c_1);
+    return (dot(v_6, v_6) <= (r_2 * r_2));
+}
+
 fn inverse_square(d2_2: f32) -> f32 {
     return (1f / max(d2_2, MIN_D2_));
 }
@@ -238,45 +268,45 @@ fn connection_factor(cos_x: f32, d2_3: f32, rt2_1: f32, w_1: f32) -> f32 {
     return (((cos_x * _e4) * _e6) * w_1);
 }
 
-fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, r2_1: f32) -> f32 {
-    var local_4: bool;
-    var local_5: bool;
+fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n_1: vec3<f32>, ng: vec3<f32>, r2_1: f32) -> f32 {
+    var local_8: bool;
+    var local_9: bool;
 
-    let v_6 = (x_2 - y);
-    let d2_6 = dot(v_6, v_6);
+    let v_7 = (x_2 - y);
+    let d2_6 = dot(v_7, v_7);
     let _e7 = slc_keep(r2_1, d2_6);
     if !(!(_e7)) {
-        local_4 = !((d2_6 > 0f));
+        local_8 = !((d2_6 > 0f));
     } else {
-        local_4 = true;
+        local_8 = true;
     }
-    let _e16 = local_4;
+    let _e16 = local_8;
     if _e16 {
         return 0f;
     }
-    let w_7 = (v_6 / vec3(sqrt(d2_6)));
-    let cos_x_1 = -(dot(n, w_7));
+    let w_10 = (v_7 / vec3(sqrt(d2_6)));
+    let cos_x_1 = -(dot(n_1, w_10));
     if !((cos_x_1 <= 0f)) {
-        local_5 = (dot(ng, w_7) >= 0f);
+        local_9 = (dot(ng, w_10) >= 0f);
     } else {
-        local_5 = true;
+        local_9 = true;
     }
-    let _e32 = local_5;
+    let _e32 = local_9;
     if _e32 {
         return 0f;
     }
     return cos_x_1;
 }
 
-fn triangle_lobe(n_1: vec3<f32>, area: f32, w_2: vec3<f32>) -> f32 {
-    return (area * max(dot(n_1, w_2), 0f));
+fn triangle_lobe(n_2: vec3<f32>, area: f32, w_2: vec3<f32>) -> f32 {
+    return (area * max(dot(n_2, w_2), 0f));
 }
 
-fn triangle_sample(a_2: vec3<f32>, b_3: vec3<f32>, c_1: vec3<f32>, u1_: f32, u2_: f32) -> vec3<f32> {
+fn triangle_sample(a_2: vec3<f32>, b_2: vec3<f32>, c_2: vec3<f32>, u1_: f32, u2_: f32) -> vec3<f32> {
     let su = sqrt(u1_);
     let b0_ = (1f - su);
     let b1_ = (u2_ * su);
-    return (((a_2 * b0_) + (b_3 * b1_)) + (c_1 * ((1f - b0_) - b1_)));
+    return (((a_2 * b0_) + (b_2 * b1_)) + (c_2 * ((1f - b0_) - b1_)));
 }
 
 fn bsh_scaled_radius(node: BshNode, scale: f32) -> f32 {
@@ -301,41 +331,41 @@ fn weighted_threshold(w_sum: f32, u_2: f32) -> f32 {
     return (w_sum / (1f - u_2));
 }
 
-fn resample_target(c_2: vec3<f32>) -> f32 {
-    return (((c_2.x + c_2.y) + c_2.z) * 0.33333334f);
+fn resample_target(c_3: vec3<f32>) -> f32 {
+    return (((c_3.x + c_3.y) + c_3.z) * 0.33333334f);
 }
 
-fn slot_target(c_3: vec3<f32>, slot: u32, k_2: u32) -> f32 {
+fn slot_target(c_4: vec3<f32>, slot: u32, k_2: u32) -> f32 {
     if (k_2 < 3u) {
-        let _e5 = resample_target(c_3);
+        let _e5 = resample_target(c_4);
         return _e5;
     }
-    let j_2 = (slot % 3u);
-    if (j_2 == 0u) {
-        return c_3.x;
+    let j_3 = (slot % 3u);
+    if (j_3 == 0u) {
+        return c_4.x;
     }
-    if (j_2 == 1u) {
-        return c_3.y;
+    if (j_3 == 1u) {
+        return c_4.y;
     }
-    return c_3.z;
+    return c_4.z;
 }
 
 fn slot_share(slot_1: u32, k_3: u32) -> vec3<f32> {
     if (k_3 < 3u) {
         let _e4 = to_f32_(k_3);
-        let w_8 = (1f / _e4);
-        return vec3<f32>(w_8, w_8, w_8);
+        let w_11 = (1f / _e4);
+        return vec3<f32>(w_11, w_11, w_11);
     }
-    let j_3 = (slot_1 % 3u);
-    let _e15 = to_f32_((((k_3 + 2u) - j_3) / 3u));
-    let w_9 = (1f / _e15);
-    if (j_3 == 0u) {
-        return vec3<f32>(w_9, 0f, 0f);
+    let j_4 = (slot_1 % 3u);
+    let _e15 = to_f32_((((k_3 + 2u) - j_4) / 3u));
+    let w_12 = (1f / _e15);
+    if (j_4 == 0u) {
+        return vec3<f32>(w_12, 0f, 0f);
     }
-    if (j_3 == 1u) {
-        return vec3<f32>(0f, w_9, 0f);
+    if (j_4 == 1u) {
+        return vec3<f32>(0f, w_12, 0f);
     }
-    return vec3<f32>(0f, 0f, w_9);
+    return vec3<f32>(0f, 0f, w_12);
 }
 
 fn ggx_d(cos_h: f32, sin2_h: f32, alpha: f32) -> f32 {
@@ -343,8 +373,8 @@ fn ggx_d(cos_h: f32, sin2_h: f32, alpha: f32) -> f32 {
         return 0f;
     }
     let a2_ = (alpha * alpha);
-    let t_1 = (((cos_h * cos_h) * a2_) + sin2_h);
-    return ((a2_ * INV_PI) / (t_1 * t_1));
+    let t_4 = (((cos_h * cos_h) * a2_) + sin2_h);
+    return ((a2_ * INV_PI) / (t_4 * t_4));
 }
 
 fn smith_root(cos_: f32, alpha_1: f32) -> f32 {
@@ -353,14 +383,14 @@ fn smith_root(cos_: f32, alpha_1: f32) -> f32 {
 }
 
 fn smith_visibility(n_l: f32, n_v: f32, alpha_2: f32) -> f32 {
-    var local_6: bool;
+    var local_10: bool;
 
     if !((n_l <= 0f)) {
-        local_6 = (n_v <= 0f);
+        local_10 = (n_v <= 0f);
     } else {
-        local_6 = true;
+        local_10 = true;
     }
-    let _e11 = local_6;
+    let _e11 = local_10;
     if _e11 {
         return 0f;
     }
@@ -370,9 +400,9 @@ fn smith_visibility(n_l: f32, n_v: f32, alpha_2: f32) -> f32 {
 }
 
 fn fresnel_schlick(f0_: vec3<f32>, f90_: f32, v_h: f32) -> vec3<f32> {
-    let c_9 = saturate((1f - v_h));
-    let c2_ = (c_9 * c_9);
-    return (f0_ + ((vec3<f32>(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_9)));
+    let c_10 = saturate((1f - v_h));
+    let c2_ = (c_10 * c_10);
+    return (f0_ + ((vec3<f32>(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_10)));
 }
 
 fn specular_fresnel(base: vec3<f32>, metallic: f32, f0_d: vec3<f32>, f90_d: f32, v_h_1: f32) -> vec3<f32> {
@@ -382,40 +412,40 @@ fn specular_fresnel(base: vec3<f32>, metallic: f32, f0_d: vec3<f32>, f90_d: f32,
 }
 
 fn has_specular(metallic_1: f32, f0_d_1: vec3<f32>, f90_d_1: f32) -> bool {
-    var local_7: bool;
-    var local_8: bool;
+    var local_11: bool;
+    var local_12: bool;
 
     if !((metallic_1 > 0f)) {
-        local_7 = (f90_d_1 > 0f);
+        local_11 = (f90_d_1 > 0f);
     } else {
-        local_7 = true;
+        local_11 = true;
     }
-    let _e11 = local_7;
+    let _e11 = local_11;
     if !(_e11) {
-        local_8 = (max(max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0f);
+        local_12 = (max(max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0f);
     } else {
-        local_8 = true;
+        local_12 = true;
     }
-    let _e23 = local_8;
+    let _e23 = local_12;
     return _e23;
 }
 
-fn channel_mean(c_4: vec3<f32>) -> f32 {
-    return (((c_4.x + c_4.y) + c_4.z) * 0.33333334f);
+fn channel_mean(c_5: vec3<f32>) -> f32 {
+    return (((c_5.x + c_5.y) + c_5.z) * 0.33333334f);
 }
 
 fn receiver_lobe(base_1: vec3<f32>, metallic_2: f32, f0_d_2: vec3<f32>, f90_d_2: f32, alpha_3: f32, n_v_1: f32) -> vec4<f32> {
-    var local_9: bool;
+    var local_13: bool;
 
     let _e10 = fresnel_schlick(f0_d_2, f90_d_2, n_v_1);
     let _e16 = channel_mean((((vec3<f32>(1f, 1f, 1f) - _e10) * base_1) * (1f - metallic_2)));
     if !((n_v_1 <= 0f)) {
         let _e22 = has_specular(metallic_2, f0_d_2, f90_d_2);
-        local_9 = !(_e22);
+        local_13 = !(_e22);
     } else {
-        local_9 = true;
+        local_13 = true;
     }
-    let _e25 = local_9;
+    let _e25 = local_13;
     if _e25 {
         return vec4<f32>(_e16, 0f, alpha_3, n_v_1);
     }
@@ -451,8 +481,8 @@ fn range_lobe(lobe_4: vec4<f32>) -> vec4<f32> {
     return vec4<f32>(lobe_4.x, _e10, (lobe_4.z * lobe_4.z), sqrt(_e14));
 }
 
-fn mirror_dir(n_2: vec3<f32>, v: vec3<f32>) -> vec3<f32> {
-    return ((n_2 * (2f * dot(n_2, v))) - v);
+fn mirror_dir(n_3: vec3<f32>, v: vec3<f32>) -> vec3<f32> {
+    return ((n_3 * (2f * dot(n_3, v))) - v);
 }
 
 fn bevy_alpha(perceptual: f32) -> f32 {
@@ -464,23 +494,23 @@ fn bevy_f0_(reflectance: f32) -> f32 {
     return ((0.16f * reflectance) * reflectance);
 }
 
-fn bevy_dfg(r_2: f32, n_v_2: f32) -> f32 {
-    let rx = (1f - r_2);
-    let a004_ = ((min((rx * rx), exp2((-9.28f * n_v_2))) * rx) + (0.0425f - (0.0275f * r_2)));
-    let x_12 = max(((1.04f - (0.572f * r_2)) - (1.04f * a004_)), 0.00005f);
-    let y_1 = max((((0.022f * r_2) - 0.04f) + (1.04f * a004_)), 0.00005f);
+fn bevy_dfg(r_3: f32, n_v_2: f32) -> f32 {
+    let rx = (1f - r_3);
+    let a004_ = ((min((rx * rx), exp2((-9.28f * n_v_2))) * rx) + (0.0425f - (0.0275f * r_3)));
+    let x_12 = max(((1.04f - (0.572f * r_3)) - (1.04f * a004_)), 0.00005f);
+    let y_1 = max((((0.022f * r_3) - 0.04f) + (1.04f * a004_)), 0.00005f);
     return (x_12 + y_1);
 }
 
-fn bevy_brdf(base_2: vec3<f32>, metallic_3: f32, r_3: f32, reflectance_1: f32, n_3: vec3<f32>, v_1: vec3<f32>, l: vec3<f32>) -> vec3<f32> {
-    let n_l_1 = saturate(dot(n_3, l));
+fn bevy_brdf(base_2: vec3<f32>, metallic_3: f32, r_4: f32, reflectance_1: f32, n_4: vec3<f32>, v_1: vec3<f32>, l: vec3<f32>) -> vec3<f32> {
+    let n_l_1 = saturate(dot(n_4, l));
     if (n_l_1 <= 0f) {
         return vec3<f32>(0f, 0f, 0f);
     }
-    let _e15 = bevy_alpha(r_3);
-    let n_v_3 = max(dot(n_3, v_1), 0.0001f);
+    let _e15 = bevy_alpha(r_4);
+    let n_v_3 = max(dot(n_4, v_1), 0.0001f);
     let h_2 = normalize((l + v_1));
-    let n_h = saturate(dot(n_3, h_2));
+    let n_h = saturate(dot(n_4, h_2));
     let l_h = saturate(dot(l, h_2));
     let f90_d_3 = (0.5f + (((2f * _e15) * l_h) * l_h));
     let _e35 = fresnel_schlick(vec3<f32>(1f, 1f, 1f), f90_d_3, n_l_1);
@@ -491,7 +521,7 @@ fn bevy_brdf(base_2: vec3<f32>, metallic_3: f32, r_3: f32, reflectance_1: f32, n
     let f90_1 = saturate((((f0_1.x + f0_1.y) + f0_1.z) * 16.5f));
     let _e64 = ggx_d(n_h, (1f - (n_h * n_h)), _e15);
     let _e65 = smith_visibility(n_l_1, n_v_3, _e15);
-    let _e70 = bevy_dfg(r_3, n_v_3);
+    let _e70 = bevy_dfg(r_4, n_v_3);
     let comp = (vec3<f32>(1f, 1f, 1f) + (f0_1 * ((1f / _e70) - 1f)));
     let _e77 = fresnel_schlick(f0_1, f90_1, l_h);
     let spec = ((_e77 * comp) * (_e64 * _e65));
@@ -499,46 +529,46 @@ fn bevy_brdf(base_2: vec3<f32>, metallic_3: f32, r_3: f32, reflectance_1: f32, n
 }
 
 fn cone_cos_of(v_2: vec3<f32>, d2_4: f32, a_3: f32, d: vec3<f32>) -> f32 {
-    var local_10: bool;
-    var local_11: bool;
+    var local_14: bool;
+    var local_15: bool;
 
     let vd = dot(v_2, d);
     let h2_ = (d2_4 - (a_3 * a_3));
     if !((h2_ <= 0f)) {
         if (vd >= 0f) {
-            local_11 = ((vd * vd) >= h2_);
+            local_15 = ((vd * vd) >= h2_);
         } else {
-            local_11 = false;
+            local_15 = false;
         }
-        let _e19 = local_11;
-        local_10 = _e19;
+        let _e19 = local_15;
+        local_14 = _e19;
     } else {
-        local_10 = true;
+        local_14 = true;
     }
-    let _e21 = local_10;
+    let _e21 = local_14;
     if _e21 {
         return 1f;
     }
-    let c_10 = cross(v_2, d);
-    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_10, c_10)) * a_3)) / d2_4), 1f);
+    let c_11 = cross(v_2, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_11, c_11)) * a_3)) / d2_4), 1f);
 }
 
 fn cone_cos_toward(center: vec3<f32>, radius: f32, p: vec3<f32>, d_1: vec3<f32>) -> f32 {
-    let v_7 = (center - p);
-    let _e6 = cone_cos_of(v_7, dot(v_7, v_7), radius, d_1);
+    let v_8 = (center - p);
+    let _e6 = cone_cos_of(v_8, dot(v_8, v_8), radius, d_1);
     return _e6;
 }
 
 fn range_scale_at(rl: vec4<f32>, cos_t: f32) -> f32 {
-    let t_2 = (((0.5f + (0.5f * cos_t)) * (rl.z - 1f)) + 1f);
-    return clamp((rl.x + ((rl.y * rl.z) / (t_2 * t_2))), 1f, (rl.w * rl.w));
+    let t_5 = (((0.5f + (0.5f * cos_t)) * (rl.z - 1f)) + 1f);
+    return clamp((rl.x + ((rl.y * rl.z) / (t_5 * t_5))), 1f, (rl.w * rl.w));
 }
 
-fn range_scale_toward(rl_1: vec4<f32>, center_1: vec3<f32>, radius_1: f32, p_1: vec3<f32>, r_4: vec3<f32>) -> f32 {
+fn range_scale_toward(rl_1: vec4<f32>, center_1: vec3<f32>, radius_1: f32, p_1: vec3<f32>, r_5: vec3<f32>) -> f32 {
     if (rl_1.w <= 1f) {
         return 1f;
     }
-    let _e9 = cone_cos_toward(center_1, radius_1, p_1, r_4);
+    let _e9 = cone_cos_toward(center_1, radius_1, p_1, r_5);
     let _e10 = range_scale_at(rl_1, _e9);
     return _e10;
 }
@@ -558,80 +588,80 @@ fn ray_inverse3_(d_2: vec3<f32>) -> vec3<f32> {
     return vec3<f32>(_e2, _e4, _e6);
 }
 
-fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin: vec3<f32>, bmax: vec3<f32>, t_max: f32) -> f32 {
-    let t0_ = ((bmin - o) * inv_d);
-    let t1_ = ((bmax - o) * inv_d);
-    let lo = min(t0_, t1_);
-    let hi = max(t0_, t1_);
-    let t_in = max(max(lo.x, lo.y), max(lo.z, 0f));
-    let t_out = min(min(hi.x, hi.y), min(hi.z, t_max));
+fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin_1: vec3<f32>, bmax_1: vec3<f32>, t_max: f32) -> f32 {
+    let t0_ = ((bmin_1 - o) * inv_d);
+    let t1_ = ((bmax_1 - o) * inv_d);
+    let lo_3 = min(t0_, t1_);
+    let hi_3 = max(t0_, t1_);
+    let t_in = max(max(lo_3.x, lo_3.y), max(lo_3.z, 0f));
+    let t_out = min(min(hi_3.x, hi_3.y), min(hi_3.z, t_max));
     if (t_in <= t_out) {
         return t_in;
     }
     return -1f;
 }
 
-fn triangle_normal(a_4: vec3<f32>, b_4: vec3<f32>, c_5: vec3<f32>) -> vec3<f32> {
-    var local_12: bool;
+fn triangle_normal(a_4: vec3<f32>, b_3: vec3<f32>, c_6: vec3<f32>) -> vec3<f32> {
+    var local_16: bool;
 
-    let n_9 = cross((b_4 - a_4), (c_5 - a_4));
-    let l2_ = dot(n_9, n_9);
+    let n_10 = cross((b_3 - a_4), (c_6 - a_4));
+    let l2_ = dot(n_10, n_10);
     if !(!((l2_ > 0f))) {
-        local_12 = !((l2_ < 300000000000000000000000000000000000000f));
+        local_16 = !((l2_ < 300000000000000000000000000000000000000f));
     } else {
-        local_12 = true;
+        local_16 = true;
     }
-    let _e17 = local_12;
+    let _e17 = local_16;
     if _e17 {
         return vec3<f32>(0f, 0f, 0f);
     }
-    return (n_9 / vec3(sqrt(l2_)));
+    return (n_10 / vec3(sqrt(l2_)));
 }
 
-fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_5: vec3<f32>, c_6: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
-    var local_13: bool;
-    var local_14: bool;
-    var local_15: bool;
+fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_4: vec3<f32>, c_7: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
+    var local_17: bool;
+    var local_18: bool;
+    var local_19: bool;
 
-    let e1_ = (b_5 - a_5);
-    let e2_ = (c_6 - a_5);
-    let p_2 = cross(d_3, e2_);
-    let det = dot(e1_, p_2);
+    let e1_ = (b_4 - a_5);
+    let e2_ = (c_7 - a_5);
+    let p_4 = cross(d_3, e2_);
+    let det = dot(e1_, p_4);
     if (abs(det) <= 0f) {
         return -1f;
     }
     let inv = (1f / det);
-    let s_4 = (o_1 - a_5);
-    let u_3 = (dot(s_4, p_2) * inv);
+    let s_10 = (o_1 - a_5);
+    let u_3 = (dot(s_10, p_4) * inv);
     if !((u_3 < 0f)) {
-        local_13 = (u_3 > 1f);
+        local_17 = (u_3 > 1f);
     } else {
-        local_13 = true;
+        local_17 = true;
     }
-    let _e28 = local_13;
+    let _e28 = local_17;
     if _e28 {
         return -1f;
     }
-    let q_1 = cross(s_4, e1_);
-    let v_8 = (dot(d_3, q_1) * inv);
-    if !((v_8 < 0f)) {
-        local_14 = ((u_3 + v_8) > 1f);
+    let q_2 = cross(s_10, e1_);
+    let v_9 = (dot(d_3, q_2) * inv);
+    if !((v_9 < 0f)) {
+        local_18 = ((u_3 + v_9) > 1f);
     } else {
-        local_14 = true;
+        local_18 = true;
     }
-    let _e42 = local_14;
+    let _e42 = local_18;
     if _e42 {
         return -1f;
     }
-    let t_3 = (dot(e2_, q_1) * inv);
-    if (t_3 > t_min) {
-        local_15 = (t_3 < t_max_1);
+    let t_6 = (dot(e2_, q_2) * inv);
+    if (t_6 > t_min) {
+        local_19 = (t_6 < t_max_1);
     } else {
-        local_15 = false;
+        local_19 = false;
     }
-    let _e51 = local_15;
+    let _e51 = local_19;
     if _e51 {
-        return t_3;
+        return t_6;
     }
     return -1f;
 }
@@ -676,23 +706,23 @@ fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
     let _e14 = ray_inverse3_(d_4);
     loop {
         let _e21 = node_2;
-        let n_10 = geo_nodes[_e21];
+        let n_11 = geo_nodes[_e21];
         let _e27 = hit.t;
-        let _e28 = ray_aabb(o_2, _e14, n_10.bmin, n_10.bmax, _e27);
+        let _e28 = ray_aabb(o_2, _e14, n_11.bmin, n_11.bmax, _e27);
         if (_e28 >= 0f) {
-            if (n_10.count > 0u) {
-                i = n_10.first;
+            if (n_11.count > 0u) {
+                i = n_11.first;
                 loop {
                     let _e36 = i;
-                    if (_e36 < (n_10.first + n_10.count)) {
+                    if (_e36 < (n_11.first + n_11.count)) {
                     } else {
                         break;
                     }
                     {
                         let _e42 = i;
-                        let t_4 = geo_tris[_e42];
+                        let t_7 = geo_tris[_e42];
                         let _e49 = hit.t;
-                        let _e50 = ray_triangle(o_2, d_4, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e49);
+                        let _e50 = ray_triangle(o_2, d_4, t_7.v0_, t_7.v1_, t_7.v2_, t_min_1, _e49);
                         if (_e50 > 0f) {
                             hit.t = _e50;
                             let _e55 = i;
@@ -712,11 +742,11 @@ fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
                 let _e60 = sp;
                 if (_e60 < 64u) {
                     let _e63 = sp;
-                    stack[_e63] = (n_10.first + 1u);
+                    stack[_e63] = (n_11.first + 1u);
                     let _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_2 = n_10.first;
+                node_2 = n_11.first;
                 continue;
             }
         }
@@ -734,8 +764,8 @@ fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
     return _e81;
 }
 
-fn occluded(a_6: vec3<f32>, b_6: vec3<f32>) -> bool {
-    let dv = (b_6 - a_6);
+fn occluded(a_6: vec3<f32>, b_5: vec3<f32>) -> bool {
+    let dv = (b_5 - a_6);
     let len_1 = length(dv);
     if (len_1 <= 0f) {
         return false;
@@ -762,15 +792,15 @@ fn bsh_first(nodes_2: u32) -> u32 {
     return BSH_NONE;
 }
 
-fn bsh_inner_scale(a_7: f32, v_3: vec3<f32>, d2_5: f32, r_5: vec3<f32>, rl_2: vec4<f32>) -> f32 {
-    let _e5 = cone_cos_of(v_3, d2_5, a_7, r_5);
+fn bsh_inner_scale(a_7: f32, v_3: vec3<f32>, d2_5: f32, r_6: vec3<f32>, rl_2: vec4<f32>) -> f32 {
+    let _e5 = cone_cos_of(v_3, d2_5, a_7, r_6);
     let _e8 = range_scale_at(rl_2, (_e5 + 0.000002f));
     return _e8;
 }
 
-fn bsh_reaches(node_3: BshNode, x_4: vec3<f32>, r_6: vec3<f32>, rl_3: vec4<f32>) -> bool {
-    var local_16: bool;
-    var local_17: bool;
+fn bsh_reaches(node_3: BshNode, x_4: vec3<f32>, r_7: vec3<f32>, rl_3: vec4<f32>) -> bool {
+    var local_20: bool;
+    var local_21: bool;
 
     let _e6 = sphere_contains_point(node_3.center, node_3.radius, x_4);
     if _e6 {
@@ -778,65 +808,116 @@ fn bsh_reaches(node_3: BshNode, x_4: vec3<f32>, r_6: vec3<f32>, rl_3: vec4<f32>)
     }
     if !((rl_3.w <= 1f)) {
         let _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001f)), x_4);
-        local_16 = !(_e20);
+        local_20 = !(_e20);
     } else {
-        local_16 = true;
+        local_20 = true;
     }
-    let _e23 = local_16;
+    let _e23 = local_20;
     if _e23 {
         return false;
     }
     let _e25 = bsh_range_bound(node_3);
-    let v_9 = (x_4 - node_3.center);
-    let d2_7 = dot(v_9, v_9);
+    let v_10 = (x_4 - node_3.center);
+    let d2_7 = dot(v_10, v_10);
     let reach_max = (node_3.extent + ((rl_3.w * 1.001f) * _e25));
     if (d2_7 > (reach_max * reach_max)) {
         return false;
     }
     if (node_3.child == BSH_NONE) {
-        let _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_4, r_6);
+        let _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_4, r_7);
         let _e46 = bsh_scaled_radius(node_3, sqrt(_e43));
         let _e47 = sphere_contains_point(node_3.center, _e46, x_4);
         return _e47;
     }
-    let _e50 = bsh_inner_scale(node_3.extent, -(v_9), d2_7, r_6, rl_3);
+    let _e50 = bsh_inner_scale(node_3.extent, -(v_10), d2_7, r_7, rl_3);
     let s_c = (_e50 * 1.001f);
     let reach = (node_3.extent + (sqrt(s_c) * _e25));
     if (d2_7 <= ((node_3.radius * node_3.radius) * s_c)) {
-        local_17 = (d2_7 <= (reach * reach));
+        local_21 = (d2_7 <= (reach * reach));
     } else {
-        local_17 = false;
+        local_21 = false;
     }
-    let _e67 = local_17;
+    let _e67 = local_21;
     return _e67;
 }
 
-fn bsh_next_leaf_lobe(nodes_3: u32, start: u32, x_5: vec3<f32>, r_7: vec3<f32>, rl_4: vec4<f32>) -> u32 {
-    var i_2: u32;
+fn bsh_reaches_box(node_4: BshNode, lo: vec3<f32>, hi: vec3<f32>, w_4: f32) -> bool {
+    let _e13 = sphere_overlaps_aabb(node_4.center, (node_4.radius * (max(1f, (w_4 * 1.0001f)) * 1.0001f)), lo, hi);
+    return _e13;
+}
 
-    i_2 = start;
+fn bsh_subtree(nodes_3: u32, s_1: u32, depth: u32) -> u32 {
+    var i_2: u32;
+    var level: u32 = 0u;
+    var local_22: bool;
+
+    let _e3 = bsh_first(nodes_3);
+    i_2 = _e3;
     loop {
-        let _e6 = i_2;
-        if (_e6 != BSH_NONE) {
+        let _e7 = level;
+        if (_e7 < depth) {
+            let _e11 = i_2;
+            local_22 = (_e11 != BSH_NONE);
+        } else {
+            local_22 = false;
+        }
+        let _e15 = local_22;
+        if _e15 {
         } else {
             break;
         }
         {
-            let _e9 = i_2;
-            let _e10 = bsh_node(nodes_3, _e9);
-            let _e11 = bsh_reaches(_e10, x_5, r_7, rl_4);
+            let _e16 = i_2;
+            let _e17 = bsh_node(nodes_3, _e16);
+            let _e18 = level;
+            let below = (depth - _e18);
+            if (_e17.child == BSH_NONE) {
+                if ((s_1 << (32u - below)) != 0u) {
+                    return BSH_NONE;
+                }
+                let _e29 = i_2;
+                return _e29;
+            }
+            if (((s_1 >> (below - 1u)) & 1u) == 0u) {
+                i_2 = _e17.child;
+            } else {
+                let _e39 = bsh_node(nodes_3, _e17.child);
+                i_2 = _e39.next;
+            }
+            let _e41 = level;
+            level = (_e41 + 1u);
+        }
+    }
+    let _e44 = i_2;
+    return _e44;
+}
+
+fn bsh_next_leaf_box(nodes_4: u32, start_1: u32, end: u32, lo_1: vec3<f32>, hi_1: vec3<f32>, w_5: f32) -> u32 {
+    var i_3: u32;
+
+    i_3 = start_1;
+    loop {
+        let _e7 = i_3;
+        if (_e7 != end) {
+        } else {
+            break;
+        }
+        {
+            let _e9 = i_3;
+            let _e10 = bsh_node(nodes_4, _e9);
+            let _e11 = bsh_reaches_box(_e10, lo_1, hi_1, w_5);
             if _e11 {
                 if (_e10.child == BSH_NONE) {
-                    let _e15 = i_2;
+                    let _e15 = i_3;
                     return _e15;
                 }
-                i_2 = _e10.child;
+                i_3 = _e10.child;
             } else {
-                i_2 = _e10.next;
+                i_3 = _e10.next;
             }
         }
     }
-    return BSH_NONE;
+    return end;
 }
 
 fn next_threshold(sum: f32, h_1: ptr<function, u32>) -> f32 {
@@ -849,89 +930,308 @@ fn next_threshold(sum: f32, h_1: ptr<function, u32>) -> f32 {
     return _e6;
 }
 
-fn connect_record(l_3: GpuLight, x_6: vec3<f32>, n_4: vec3<f32>, ng_1: vec3<f32>, r2_2: f32, rt2_2: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32, trace_1: bool) -> Connection {
-    var c_7: Connection;
-    var local_18: bool;
-    var local_19: bool;
+fn connect_record(l_3: GpuLight, x_5: vec3<f32>, n_5: vec3<f32>, ng_1: vec3<f32>, r2_2: f32, rt2_2: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32, trace_1: bool) -> Connection {
+    var c_8: Connection;
+    var local_23: bool;
+    var local_24: bool;
 
-    c_7.e = vec3(0f);
+    c_8.e = vec3(0f);
     let _e16 = light_point(l_3, u1_2, u2_2);
-    c_7.y = _e16;
-    let _e19 = c_7.y;
-    let _e20 = connection_cosine(x_6, _e19, n_4, ng_1, r2_2);
-    c_7.cos_x = _e20;
-    let _e22 = c_7.cos_x;
+    c_8.y = _e16;
+    let _e19 = c_8.y;
+    let _e20 = connection_cosine(x_5, _e19, n_5, ng_1, r2_2);
+    c_8.cos_x = _e20;
+    let _e22 = c_8.cos_x;
     if !((_e22 <= 0f)) {
         if trace_1 {
-            let _e33 = c_7.y;
-            let _e34 = occluded((x_6 + (ng_1 * eps)), _e33);
-            local_19 = _e34;
+            let _e33 = c_8.y;
+            let _e34 = occluded((x_5 + (ng_1 * eps)), _e33);
+            local_24 = _e34;
         } else {
-            local_19 = false;
+            local_24 = false;
         }
-        let _e36 = local_19;
-        local_18 = _e36;
+        let _e36 = local_24;
+        local_23 = _e36;
     } else {
-        local_18 = true;
+        local_23 = true;
     }
-    let _e38 = local_18;
+    let _e38 = local_23;
     if _e38 {
-        let _e39 = c_7;
+        let _e39 = c_8;
         return _e39;
     }
-    let _e41 = c_7.y;
-    let v_10 = (x_6 - _e41);
-    let d2_8 = dot(v_10, v_10);
-    let _e48 = light_intensity(l_3, (v_10 / vec3(sqrt(d2_8))));
-    let _e50 = c_7.cos_x;
+    let _e41 = c_8.y;
+    let v_11 = (x_5 - _e41);
+    let d2_8 = dot(v_11, v_11);
+    let _e48 = light_intensity(l_3, (v_11 / vec3(sqrt(d2_8))));
+    let _e50 = c_8.cos_x;
     let _e51 = connection_factor(_e50, d2_8, rt2_2, w_res);
-    c_7.e = (_e48 * _e51);
-    let _e53 = c_7;
+    c_8.e = (_e48 * _e51);
+    let _e53 = c_8;
     return _e53;
 }
 
-fn connect_traced(li: u32, x_7: vec3<f32>, n_5: vec3<f32>, ng_2: vec3<f32>, s: f32, w_res_1: f32, u1_3: f32, u2_3: f32, eps_1: f32, trace_2: bool) -> Connection {
+fn connect_traced(li: u32, x_6: vec3<f32>, n_6: vec3<f32>, ng_2: vec3<f32>, s_2: f32, w_res_1: f32, u1_3: f32, u2_3: f32, eps_1: f32, trace_2: bool) -> Connection {
     let _e12 = lights[li];
     let _e15 = r2_3[li];
     let _e19 = rt2_3[li];
-    let _e21 = connect_record(_e12, x_7, n_5, ng_2, (s * _e15), (s * _e19), w_res_1, u1_3, u2_3, eps_1, trace_2);
+    let _e21 = connect_record(_e12, x_6, n_6, ng_2, (s_2 * _e15), (s_2 * _e19), w_res_1, u1_3, u2_3, eps_1, trace_2);
     return _e21;
 }
 
-fn light_range_scale(li_1: u32, x_8: vec3<f32>, r_8: vec3<f32>, rl_5: vec4<f32>) -> f32 {
-    let c_11 = light_cones[li_1];
-    let _e9 = range_scale_toward(rl_5, c_11.center, c_11.radius, x_8, r_8);
+fn light_range_scale(li_1: u32, x_7: vec3<f32>, r_8: vec3<f32>, rl_4: vec4<f32>) -> f32 {
+    let c_12 = light_cones[li_1];
+    let _e9 = range_scale_toward(rl_4, c_12.center, c_12.radius, x_7, r_8);
     return _e9;
 }
 
 fn surface_at(texel: vec2<i32>) -> vec4<f32> {
-    let p_3 = textureLoad(position_tex, texel, 0i);
-    return select(vec4(0f), vec4<f32>(p_3.xyz, 1f), (p_3.w > 0f));
+    let p_5 = textureLoad(position_tex, texel, 0i);
+    return select(vec4(0f), vec4<f32>(p_5.xyz, 1f), (p_5.w > 0f));
 }
 
-fn shade_connection(c_8: Connection, x_9: vec3<f32>, n_6: vec3<f32>, m_1: Material) -> Shaded {
-    var s_1: Shaded;
+fn workgroup_bounds(li_2: u32, lo_2: vec3<f32>, hi_2: vec3<f32>) -> WorkgroupBox {
+    var stride: u32 = 32u;
 
-    s_1.e = c_8.e;
-    s_1.diffuse = vec3(0f);
-    s_1.specular = vec3(0f);
-    if (c_8.cos_x > 0f) {
-        let _e25 = bevy_brdf(m_1.base, m_1.metallic, m_1.roughness, m_1.reflectance, n_6, m_1.v, normalize((c_8.y - x_9)));
-        s_1.diffuse = (_e25 * c_8.e);
+    wg_lo[li_2] = lo_2;
+    wg_hi[li_2] = hi_2;
+    workgroupBarrier();
+    loop {
+        let _e9 = stride;
+        if (_e9 > 0u) {
+        } else {
+            break;
+        }
+        {
+            let _e12 = stride;
+            if (li_2 < _e12) {
+                let _e18 = wg_lo[li_2];
+                let _e20 = stride;
+                let _e23 = wg_lo[(li_2 + _e20)];
+                wg_lo[li_2] = min(_e18, _e23);
+                let _e29 = wg_hi[li_2];
+                let _e31 = stride;
+                let _e34 = wg_hi[(li_2 + _e31)];
+                wg_hi[li_2] = max(_e29, _e34);
+            }
+            workgroupBarrier();
+        }
+        continuing {
+            let _e36 = stride;
+            stride = (_e36 / 2u);
+        }
     }
-    let _e28 = s_1;
+    if (li_2 == 0u) {
+        let _e44 = wg_lo[0];
+        let _e47 = wg_hi[0];
+        wg_box = WorkgroupBox(_e44, _e47);
+    }
+    let _e50 = workgroupUniformLoad((&wg_box));
+    return _e50;
+}
+
+fn workgroup_box(li_3: u32, p_2: vec3<f32>, has: bool) -> WorkgroupBox {
+    let _e9 = workgroup_bounds(li_3, select(vec3(340282350000000000000000000000000000000f), p_2, has), select(vec3(-340282350000000000000000000000000000000f), p_2, has));
+    return _e9;
+}
+
+fn box_is_empty(b_6: WorkgroupBox) -> bool {
+    return (b_6.lo.x > b_6.hi.x);
+}
+
+fn tile_subtree(s_3: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: u32) -> u32 {
+    var p_3: u32;
+    var b_7: u32;
+    var local_25: bool;
+    var local_26: bool;
+    var local_27: bool;
+
+    let _e8 = bsh_subtree(BSH, s_3, BSH_TILE_DEPTH);
+    if (_e8 == BSH_NONE) {
+        return 0u;
+    }
+    let end_1 = bsh_nodes[_e8].next;
+    p_3 = at;
+    let _e21 = bsh_next_leaf_box(BSH, _e8, end_1, t_1.lo, t_1.hi, t_1.w);
+    b_7 = _e21;
+    loop {
+        let _e23 = b_7;
+        if (_e23 != end_1) {
+            if !(!(list)) {
+                let _e31 = p_3;
+                local_26 = (_e31 < to);
+            } else {
+                local_26 = true;
+            }
+            let _e34 = local_26;
+            local_25 = _e34;
+        } else {
+            local_25 = false;
+        }
+        let _e36 = local_25;
+        if _e36 {
+        } else {
+            break;
+        }
+        {
+            if list {
+                let _e39 = p_3;
+                local_27 = (_e39 >= start_2);
+            } else {
+                local_27 = false;
+            }
+            let _e42 = local_27;
+            if _e42 {
+                let _e44 = p_3;
+                let _e47 = b_7;
+                tile_list[(_e44 - start_2)] = _e47;
+            }
+            let _e48 = p_3;
+            p_3 = (_e48 + 1u);
+        }
+        continuing {
+            let _e53 = b_7;
+            let _e56 = bsh_nodes[_e53].next;
+            let _e60 = bsh_next_leaf_box(BSH, _e56, end_1, t_1.lo, t_1.hi, t_1.w);
+            b_7 = _e60;
+        }
+    }
+    let _e61 = p_3;
+    return (_e61 - at);
+}
+
+fn tile_walk_begin(li_4: u32, x_8: vec3<f32>, w_6: f32, has_1: bool) -> TileWalk {
+    var t_2: TileWalk;
+    var s_4: u32;
+    var sum_1: u32 = 0u;
+    var s_5: u32 = 0u;
+
+    let _e8 = atomicMax((&tile_scale), select(0u, bitcast<u32>(w_6), has_1));
+    let _e9 = workgroup_box(li_4, x_8, has_1);
+    let _e13 = workgroupUniformLoad((&tile_scale));
+    t_2 = TileWalk(_e9.lo, _e9.hi, bitcast<f32>(_e13), 0u);
+    let _e18 = box_is_empty(_e9);
+    if _e18 {
+        let _e19 = t_2;
+        return _e19;
+    }
+    s_4 = li_4;
+    loop {
+        let _e21 = s_4;
+        if (_e21 < BSH_TILE_SUBTREES) {
+        } else {
+            break;
+        }
+        {
+            let _e25 = s_4;
+            let _e27 = s_4;
+            let _e28 = t_2;
+            let _e33 = tile_subtree(_e27, _e28, false, 0u, 0u, 0u);
+            subtree_at[_e25] = _e33;
+        }
+        continuing {
+            let _e34 = s_4;
+            s_4 = (_e34 + TILE_THREADS);
+        }
+    }
+    workgroupBarrier();
+    if (li_4 == 0u) {
+        loop {
+            let _e43 = s_5;
+            if (_e43 < BSH_TILE_SUBTREES) {
+            } else {
+                break;
+            }
+            {
+                let _e47 = s_5;
+                let c_13 = subtree_at[_e47];
+                let _e51 = s_5;
+                let _e53 = sum_1;
+                subtree_at[_e51] = _e53;
+                let _e54 = sum_1;
+                sum_1 = (_e54 + c_13);
+            }
+            continuing {
+                let _e57 = s_5;
+                s_5 = (_e57 + 1u);
+            }
+        }
+        let _e60 = sum_1;
+        tile_total = _e60;
+    }
+    let _e63 = workgroupUniformLoad((&tile_total));
+    t_2.total = _e63;
+    let _e64 = t_2;
+    return _e64;
+}
+
+fn tile_walk_fill(li_5: u32, t_3: TileWalk, start_3: u32) -> u32 {
+    var s_6: u32;
+    var past: u32;
+    var local_28: bool;
+
+    let to_1 = min(t_3.total, (start_3 + TILE_LIST));
+    s_6 = li_5;
+    loop {
+        let _e8 = s_6;
+        if (_e8 < BSH_TILE_SUBTREES) {
+        } else {
+            break;
+        }
+        {
+            let _e12 = s_6;
+            let at_1 = subtree_at[_e12];
+            past = t_3.total;
+            let _e17 = s_6;
+            if ((_e17 + 1u) < BSH_TILE_SUBTREES) {
+                let _e23 = s_6;
+                let _e27 = subtree_at[(_e23 + 1u)];
+                past = _e27;
+            }
+            if (at_1 < to_1) {
+                let _e31 = past;
+                local_28 = (_e31 > start_3);
+            } else {
+                local_28 = false;
+            }
+            let _e34 = local_28;
+            if _e34 {
+                let _e35 = s_6;
+                let _e37 = tile_subtree(_e35, t_3, true, at_1, start_3, to_1);
+            }
+        }
+        continuing {
+            let _e38 = s_6;
+            s_6 = (_e38 + TILE_THREADS);
+        }
+    }
+    workgroupBarrier();
+    return (to_1 - start_3);
+}
+
+fn shade_connection(c_9: Connection, x_9: vec3<f32>, n_7: vec3<f32>, m_1: Material) -> Shaded {
+    var s_7: Shaded;
+
+    s_7.e = c_9.e;
+    s_7.diffuse = vec3(0f);
+    s_7.specular = vec3(0f);
+    if (c_9.cos_x > 0f) {
+        let _e25 = bevy_brdf(m_1.base, m_1.metallic, m_1.roughness, m_1.reflectance, n_7, m_1.v, normalize((c_9.y - x_9)));
+        s_7.diffuse = (_e25 * c_9.e);
+    }
+    let _e28 = s_7;
     return _e28;
 }
 
-fn shade_pick_traced(li_2: u32, x_10: vec3<f32>, n_7: vec3<f32>, r_9: vec3<f32>, rl_6: vec4<f32>, m_2: Material, w_4: f32, u1_4: f32, u2_4: f32, eps_2: f32, trace_3: bool) -> Shaded {
-    let _e11 = light_range_scale(li_2, x_10, r_9, rl_6);
-    let _e12 = connect_traced(li_2, x_10, n_7, n_7, _e11, w_4, u1_4, u2_4, eps_2, trace_3);
-    let _e13 = shade_connection(_e12, x_10, n_7, m_2);
+fn shade_pick_traced(li_6: u32, x_10: vec3<f32>, n_8: vec3<f32>, r_9: vec3<f32>, rl_5: vec4<f32>, m_2: Material, w_7: f32, u1_4: f32, u2_4: f32, eps_2: f32, trace_3: bool) -> Shaded {
+    let _e11 = light_range_scale(li_6, x_10, r_9, rl_5);
+    let _e12 = connect_traced(li_6, x_10, n_8, n_8, _e11, w_7, u1_4, u2_4, eps_2, trace_3);
+    let _e13 = shade_connection(_e12, x_10, n_8, m_2);
     return _e13;
 }
 
-fn shade_pick(li_3: u32, x_11: vec3<f32>, n_8: vec3<f32>, r_10: vec3<f32>, rl_7: vec4<f32>, m_3: Material, w_5: f32, u1_5: f32, u2_5: f32, eps_3: f32) -> Shaded {
-    let _e11 = shade_pick_traced(li_3, x_11, n_8, r_10, rl_7, m_3, w_5, u1_5, u2_5, eps_3, true);
+fn shade_pick(li_7: u32, x_11: vec3<f32>, n_9: vec3<f32>, r_10: vec3<f32>, rl_6: vec4<f32>, m_3: Material, w_8: f32, u1_5: f32, u2_5: f32, eps_3: f32) -> Shaded {
+    let _e11 = shade_pick_traced(li_7, x_11, n_9, r_10, rl_6, m_3, w_8, u1_5, u2_5, eps_3, true);
     return _e11;
 }
 
@@ -940,20 +1240,20 @@ fn material_of(base_3: vec3<f32>, metallic_4: f32, roughness: f32, reflectance_2
     return Material(base_3, saturate(metallic_4), _e6, v_4, roughness, reflectance_2);
 }
 
-fn add(a_8: Shaded, b_7: Shaded) -> Shaded {
-    return Shaded((a_8.e + b_7.e), (a_8.diffuse + b_7.diffuse), (a_8.specular + b_7.specular));
+fn add(a_8: Shaded, b_8: Shaded) -> Shaded {
+    return Shaded((a_8.e + b_8.e), (a_8.diffuse + b_8.diffuse), (a_8.specular + b_8.specular));
 }
 
-fn scaled(s_2: Shaded, w_6: vec3<f32>) -> Shaded {
-    return Shaded((s_2.e * w_6), (s_2.diffuse * w_6), (s_2.specular * w_6));
+fn scaled(s_8: Shaded, w_9: vec3<f32>) -> Shaded {
+    return Shaded((s_8.e * w_9), (s_8.diffuse * w_9), (s_8.specular * w_9));
 }
 
 fn first_holders(keys_1: array<vec2<u32>, 8>, held_1: array<bool, 8>) -> array<u32, 8> {
     var first: array<u32, 8>;
     var k_4: u32 = 0u;
-    var j_1: u32;
-    var local_20: bool;
-    var local_21: bool;
+    var j_2: u32;
+    var local_29: bool;
+    var local_30: bool;
 
     loop {
         let _e5 = k_4;
@@ -966,41 +1266,41 @@ fn first_holders(keys_1: array<vec2<u32>, 8>, held_1: array<bool, 8>) -> array<u
             let _e11 = k_4;
             let _e12 = k_4;
             first[_e8] = select(K, _e11, held_1[_e12]);
-            j_1 = 0u;
+            j_2 = 0u;
             loop {
-                let _e17 = j_1;
+                let _e17 = j_2;
                 let _e18 = k_4;
                 if (_e17 < _e18) {
                     let _e22 = k_4;
-                    local_20 = held_1[_e22];
+                    local_29 = held_1[_e22];
                 } else {
-                    local_20 = false;
+                    local_29 = false;
                 }
-                let _e25 = local_20;
+                let _e25 = local_29;
                 if _e25 {
                 } else {
                     break;
                 }
                 {
-                    let _e26 = j_1;
+                    let _e26 = j_2;
                     if held_1[_e26] {
-                        let _e30 = j_1;
+                        let _e30 = j_2;
                         let _e32 = k_4;
-                        local_21 = all((keys_1[_e30] == keys_1[_e32]));
+                        local_30 = all((keys_1[_e30] == keys_1[_e32]));
                     } else {
-                        local_21 = false;
+                        local_30 = false;
                     }
-                    let _e37 = local_21;
+                    let _e37 = local_30;
                     if _e37 {
                         let _e38 = k_4;
-                        let _e40 = j_1;
+                        let _e40 = j_2;
                         first[_e38] = _e40;
                         break;
                     }
                 }
                 continuing {
-                    let _e42 = j_1;
-                    j_1 = (_e42 + 1u);
+                    let _e42 = j_2;
+                    j_2 = (_e42 + 1u);
                 }
             }
         }
@@ -1013,14 +1313,19 @@ fn first_holders(keys_1: array<vec2<u32>, 8>, held_1: array<bool, 8>) -> array<u
     return _e47;
 }
 
-fn output_of(s_3: Shaded) -> vec3<f32> {
-    return (s_3.diffuse + s_3.specular);
+fn output_of(s_9: Shaded) -> vec3<f32> {
+    return (s_9.diffuse + s_9.specular);
 }
 
 @compute @workgroup_size(8, 8, 1) 
-fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
+fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
     var local: bool;
+    var s: vec4<f32> = vec4(0f);
+    var nn: vec3<f32> = vec3(0f);
     var local_1: bool;
+    var local_2: bool;
+    var local_3: bool;
+    var n: vec3<f32> = vec3<f32>(0f, 0f, 1f);
     var m: Material;
     var lobe: vec4<f32> = vec4<f32>(1f, 0f, 1f, 1f);
     var r: vec3<f32>;
@@ -1033,249 +1338,310 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     var count: u32 = 0u;
     var hc: u32;
     var threshold: array<f32, 8>;
-    var b: u32;
+    var local_4: bool;
+    var start: u32 = 0u;
+    var j: u32;
+    var local_5: bool;
     var q: u32;
-    var local_2: bool;
+    var local_6: bool;
     var keys: array<vec2<u32>, 8>;
     var held: array<bool, 8>;
     var k: u32 = 0u;
     var k_1: u32 = 0u;
     var w: vec3<f32>;
-    var j: u32;
-    var local_3: bool;
+    var j_1: u32;
+    var local_7: bool;
 
-    let _e4 = view.width;
-    if !((gid.x >= _e4)) {
+    let _e5 = view.width;
+    if (gid.x < _e5) {
         let _e12 = view.height;
-        local = (gid.y >= _e12);
+        local = (gid.y < _e12);
     } else {
-        local = true;
+        local = false;
     }
-    let _e15 = local;
-    if _e15 {
-        return;
-    }
+    let inside = local;
     let texel_1 = vec2<i32>(i32(gid.x), i32(gid.y));
-    let _e21 = surface_at(texel_1);
-    let _e24 = textureLoad(normal_tex, texel_1, 0i);
-    let nn = _e24.xyz;
-    let len2_ = dot(nn, nn);
-    if !((_e21.w <= 0f)) {
-        local_1 = !((len2_ > 0f));
+    if inside {
+        let _e27 = surface_at(texel_1);
+        s = _e27;
+        let _e30 = textureLoad(normal_tex, texel_1, 0i);
+        nn = _e30.xyz;
+    }
+    let _e32 = nn;
+    let _e33 = nn;
+    let len2_ = dot(_e32, _e33);
+    let _e35 = s;
+    let x_13 = _e35.xyz;
+    if inside {
+        let _e40 = s.w;
+        local_1 = (_e40 > 0f);
     } else {
-        local_1 = true;
+        local_1 = false;
     }
-    let _e37 = local_1;
-    if _e37 {
-        textureStore(out_tex, texel_1, vec4(0f));
-        return;
+    let _e44 = local_1;
+    if _e44 {
+        local_2 = (len2_ > 0f);
+    } else {
+        local_2 = false;
     }
-    let x_13 = _e21.xyz;
-    let n_11 = (nn / vec3(sqrt(len2_)));
-    r = n_11;
-    let mr = textureLoad(metal_rough_tex, texel_1, 0i);
-    let _e58 = textureLoad(base_color_tex, texel_1, 0i);
-    let _e65 = view.eye;
-    let _e68 = material_of(_e58.xyz, mr.z, mr.y, mr.w, normalize((_e65 - x_13)));
-    m = _e68;
-    let _e70 = m.base;
-    let _e72 = m.metallic;
-    let _e74 = bevy_f0_(mr.w);
-    let _e78 = m.alpha;
-    let _e80 = m.v;
-    let _e82 = receiver_lobe(_e70, _e72, vec3(_e74), 1f, _e78, dot(n_11, _e80));
-    lobe = _e82;
-    let _e84 = m.v;
-    let _e85 = mirror_dir(n_11, _e84);
-    r = _e85;
-    let _e86 = lobe;
-    let _e87 = range_lobe(_e86);
-    let _e90 = view.shadow_offset;
-    let _e93 = view.eye;
-    let eps_4 = (_e90 * length((_e93 - x_13)));
-    let _e99 = view.seed;
-    let _e103 = view.width;
-    let _e109 = view.frame;
-    let _e110 = point_stream(_e99, ((gid.y * _e103) + gid.x), _e109);
-    let _e111 = pick_stream(_e110);
-    h = _e111;
-    hc = _e110;
-    let _e133 = bsh_first(BSH);
-    let _e134 = r;
-    let _e135 = bsh_next_leaf_lobe(BSH, _e133, x_13, _e134, _e87);
-    b = _e135;
+    let _e50 = local_2;
+    if _e50 {
+        local_3 = all((abs(x_13) <= vec3(340282350000000000000000000000000000000f)));
+    } else {
+        local_3 = false;
+    }
+    let has_2 = local_3;
+    if has_2 {
+        let _e65 = nn;
+        n = (_e65 / vec3(sqrt(len2_)));
+    }
+    let _e76 = n;
+    r = _e76;
+    if has_2 {
+        let mr = textureLoad(metal_rough_tex, texel_1, 0i);
+        let _e83 = textureLoad(base_color_tex, texel_1, 0i);
+        let _e90 = view.eye;
+        let _e93 = material_of(_e83.xyz, mr.z, mr.y, mr.w, normalize((_e90 - x_13)));
+        m = _e93;
+        let _e95 = m.base;
+        let _e97 = m.metallic;
+        let _e99 = bevy_f0_(mr.w);
+        let _e103 = m.alpha;
+        let _e104 = n;
+        let _e106 = m.v;
+        let _e108 = receiver_lobe(_e95, _e97, vec3(_e99), 1f, _e103, dot(_e104, _e106));
+        lobe = _e108;
+        let _e109 = n;
+        let _e111 = m.v;
+        let _e112 = mirror_dir(_e109, _e111);
+        r = _e112;
+    }
+    let _e113 = lobe;
+    let _e114 = range_lobe(_e113);
+    let _e117 = view.shadow_offset;
+    let _e120 = view.eye;
+    let eps_4 = (_e117 * length((_e120 - x_13)));
+    let _e126 = view.seed;
+    let _e130 = view.width;
+    let _e136 = view.frame;
+    let _e137 = point_stream(_e126, ((gid.y * _e130) + gid.x), _e136);
+    let _e138 = pick_stream(_e137);
+    h = _e138;
+    hc = _e137;
+    if has_2 {
+        local_4 = (_e114.w >= 0f);
+    } else {
+        local_4 = false;
+    }
+    let _e165 = local_4;
+    let _e166 = tile_walk_begin(lid, x_13, _e114.w, _e165);
     loop {
-        let _e137 = b;
-        if (_e137 != BSH_NONE) {
+        let _e169 = start;
+        if (_e169 < _e166.total) {
         } else {
             break;
         }
         {
-            let _e140 = count;
-            count = (_e140 + 1u);
-            let _e144 = b;
-            let li_4 = bsh_nodes[_e144].light;
-            let _e148 = h;
-            let _e149 = pcg_hash(_e148);
-            h = _e149;
-            let _e150 = h;
-            let _e151 = xi_from_bits(_e150);
-            let _e152 = h;
-            let _e153 = pcg_hash(_e152);
-            h = _e153;
-            let _e154 = h;
-            let _e155 = xi_from_bits(_e154);
-            let u_4 = vec2<f32>(_e151, _e155);
-            let _e157 = r;
-            let _e158 = m;
-            let _e163 = shade_pick_traced(li_4, x_13, n_11, _e157, _e87, _e158, 1f, u_4.x, u_4.y, eps_4, false);
-            let _e164 = output_of(_e163);
-            let _e165 = resample_target(_e164);
-            if (_e165 > 0f) {
-                let _e168 = total;
-                total = (_e168 + _e164);
-                q = 0u;
-                loop {
-                    let _e172 = q;
-                    if (_e172 < K) {
+            let _e172 = start;
+            let _e173 = tile_walk_fill(lid, _e166, _e172);
+            j = 0u;
+            loop {
+                let _e176 = j;
+                if (_e176 < _e173) {
+                } else {
+                    break;
+                }
+                {
+                    let _e179 = j;
+                    let b_9 = tile_list[_e179];
+                    if !(!(has_2)) {
+                        let _e188 = bsh_nodes[b_9];
+                        let _e189 = r;
+                        let _e190 = bsh_reaches(_e188, x_13, _e189, _e114);
+                        local_5 = !(_e190);
                     } else {
-                        break;
+                        local_5 = true;
                     }
-                    {
-                        let _e175 = q;
-                        let _e177 = slot_target(_e164, _e175, K);
-                        let _e178 = total;
-                        let _e179 = q;
-                        let _e181 = slot_target(_e178, _e179, K);
-                        if (_e177 > 0f) {
-                            let _e186 = q;
-                            let _e188 = threshold[_e186];
-                            local_2 = (_e181 > _e188);
-                        } else {
-                            local_2 = false;
-                        }
-                        let _e191 = local_2;
-                        if _e191 {
-                            let _e192 = q;
-                            slot_light[_e192] = li_4;
-                            let _e194 = q;
-                            slot_u[_e194] = u_4;
-                            let _e196 = q;
-                            slot_p[_e196] = _e177;
-                            let _e198 = q;
-                            let _e200 = next_threshold(_e181, (&hc));
-                            threshold[_e198] = _e200;
-                        }
+                    let _e193 = local_5;
+                    if _e193 {
+                        continue;
                     }
-                    continuing {
-                        let _e202 = q;
-                        q = (_e202 + 1u);
+                    let li_8 = bsh_nodes[b_9].light;
+                    let _e198 = count;
+                    count = (_e198 + 1u);
+                    let _e201 = h;
+                    let _e202 = pcg_hash(_e201);
+                    h = _e202;
+                    let _e203 = h;
+                    let _e204 = xi_from_bits(_e203);
+                    let _e205 = h;
+                    let _e206 = pcg_hash(_e205);
+                    h = _e206;
+                    let _e207 = h;
+                    let _e208 = xi_from_bits(_e207);
+                    let u_4 = vec2<f32>(_e204, _e208);
+                    let _e210 = n;
+                    let _e211 = r;
+                    let _e212 = m;
+                    let _e217 = shade_pick_traced(li_8, x_13, _e210, _e211, _e114, _e212, 1f, u_4.x, u_4.y, eps_4, false);
+                    let _e218 = output_of(_e217);
+                    let _e219 = resample_target(_e218);
+                    if (_e219 > 0f) {
+                        let _e222 = total;
+                        total = (_e222 + _e218);
+                        q = 0u;
+                        loop {
+                            let _e226 = q;
+                            if (_e226 < K) {
+                            } else {
+                                break;
+                            }
+                            {
+                                let _e229 = q;
+                                let _e231 = slot_target(_e218, _e229, K);
+                                let _e232 = total;
+                                let _e233 = q;
+                                let _e235 = slot_target(_e232, _e233, K);
+                                if (_e231 > 0f) {
+                                    let _e240 = q;
+                                    let _e242 = threshold[_e240];
+                                    local_6 = (_e235 > _e242);
+                                } else {
+                                    local_6 = false;
+                                }
+                                let _e245 = local_6;
+                                if _e245 {
+                                    let _e246 = q;
+                                    slot_light[_e246] = li_8;
+                                    let _e248 = q;
+                                    slot_u[_e248] = u_4;
+                                    let _e250 = q;
+                                    slot_p[_e250] = _e231;
+                                    let _e252 = q;
+                                    let _e254 = next_threshold(_e235, (&hc));
+                                    threshold[_e252] = _e254;
+                                }
+                            }
+                            continuing {
+                                let _e256 = q;
+                                q = (_e256 + 1u);
+                            }
+                        }
                     }
                 }
+                continuing {
+                    let _e259 = j;
+                    j = (_e259 + 1u);
+                }
             }
+            workgroupBarrier();
         }
         continuing {
-            let _e206 = b;
-            let _e209 = bsh_nodes[_e206].next;
-            let _e210 = r;
-            let _e211 = bsh_next_leaf_lobe(BSH, _e209, x_13, _e210, _e87);
-            b = _e211;
+            let _e261 = start;
+            start = (_e261 + TILE_LIST);
         }
     }
+    if !(has_2) {
+        if inside {
+            textureStore(out_tex, texel_1, vec4(0f));
+        }
+        return;
+    }
     loop {
-        let _e216 = k;
-        if (_e216 < K) {
+        let _e272 = k;
+        if (_e272 < K) {
         } else {
             break;
         }
         {
-            let _e219 = k;
-            let _e221 = k;
-            let _e223 = slot_light[_e221];
-            keys[_e219] = vec2<u32>(_e223, 0u);
-            let _e226 = k;
-            let _e228 = k;
-            let _e230 = slot_p[_e228];
-            held[_e226] = (_e230 > 0f);
+            let _e275 = k;
+            let _e277 = k;
+            let _e279 = slot_light[_e277];
+            keys[_e275] = vec2<u32>(_e279, 0u);
+            let _e282 = k;
+            let _e284 = k;
+            let _e286 = slot_p[_e284];
+            held[_e282] = (_e286 > 0f);
         }
         continuing {
-            let _e234 = k;
-            k = (_e234 + 1u);
+            let _e290 = k;
+            k = (_e290 + 1u);
         }
     }
-    let _e236 = keys;
-    let _e237 = held;
-    let _e238 = first_holders(_e236, _e237);
+    let _e292 = keys;
+    let _e293 = held;
+    let _e294 = first_holders(_e292, _e293);
     loop {
-        let _e241 = k_1;
-        if (_e241 < K) {
+        let _e297 = k_1;
+        if (_e297 < K) {
         } else {
             break;
         }
         {
             w = vec3(0f);
-            let _e247 = k_1;
-            let _e249 = k_1;
-            let first_1 = (_e238[_e247] == _e249);
-            let _e251 = k_1;
-            j = _e251;
+            let _e303 = k_1;
+            let _e305 = k_1;
+            let first_1 = (_e294[_e303] == _e305);
+            let _e307 = k_1;
+            j_1 = _e307;
             loop {
-                let _e253 = j;
-                if (_e253 < K) {
-                    local_3 = first_1;
+                let _e309 = j_1;
+                if (_e309 < K) {
+                    local_7 = first_1;
                 } else {
-                    local_3 = false;
+                    local_7 = false;
                 }
-                let _e259 = local_3;
-                if _e259 {
+                let _e315 = local_7;
+                if _e315 {
                 } else {
                     break;
                 }
                 {
-                    let _e260 = j;
-                    let _e262 = k_1;
-                    if (_e238[_e260] == _e262) {
-                        let _e264 = w;
-                        let _e265 = total;
-                        let _e266 = j;
-                        let _e268 = slot_target(_e265, _e266, K);
-                        let _e269 = j;
-                        let _e271 = slot_p[_e269];
-                        let _e273 = j;
-                        let _e275 = slot_share(_e273, K);
-                        w = (_e264 + ((_e268 / _e271) * _e275));
+                    let _e316 = j_1;
+                    let _e318 = k_1;
+                    if (_e294[_e316] == _e318) {
+                        let _e320 = w;
+                        let _e321 = total;
+                        let _e322 = j_1;
+                        let _e324 = slot_target(_e321, _e322, K);
+                        let _e325 = j_1;
+                        let _e327 = slot_p[_e325];
+                        let _e329 = j_1;
+                        let _e331 = slot_share(_e329, K);
+                        w = (_e320 + ((_e324 / _e327) * _e331));
                     }
                 }
                 continuing {
-                    let _e279 = j;
-                    j = (_e279 + 1u);
+                    let _e335 = j_1;
+                    j_1 = (_e335 + 1u);
                 }
             }
             if first_1 {
-                let _e281 = t;
-                let _e282 = k_1;
-                let _e284 = slot_light[_e282];
-                let _e285 = r;
-                let _e286 = m;
-                let _e288 = k_1;
-                let _e291 = slot_u[_e288].x;
-                let _e292 = k_1;
-                let _e295 = slot_u[_e292].y;
-                let _e296 = shade_pick(_e284, x_13, n_11, _e285, _e87, _e286, 1f, _e291, _e295, eps_4);
-                let _e297 = w;
-                let _e298 = scaled(_e296, _e297);
-                let _e299 = add(_e281, _e298);
-                t = _e299;
+                let _e337 = t;
+                let _e338 = k_1;
+                let _e340 = slot_light[_e338];
+                let _e341 = n;
+                let _e342 = r;
+                let _e343 = m;
+                let _e345 = k_1;
+                let _e348 = slot_u[_e345].x;
+                let _e349 = k_1;
+                let _e352 = slot_u[_e349].y;
+                let _e353 = shade_pick(_e340, x_13, _e341, _e342, _e114, _e343, 1f, _e348, _e352, eps_4);
+                let _e354 = w;
+                let _e355 = scaled(_e353, _e354);
+                let _e356 = add(_e337, _e355);
+                t = _e356;
             }
         }
         continuing {
-            let _e301 = k_1;
-            k_1 = (_e301 + 1u);
+            let _e358 = k_1;
+            k_1 = (_e358 + 1u);
         }
     }
-    let _e305 = t.diffuse;
-    let _e307 = t.specular;
-    let _e309 = count;
-    textureStore(out_tex, texel_1, vec4<f32>((_e305 + _e307), f32(_e309)));
+    let _e362 = t.diffuse;
+    let _e364 = t.specular;
+    let _e366 = count;
+    textureStore(out_tex, texel_1, vec4<f32>((_e362 + _e364), f32(_e366)));
     return;
 }

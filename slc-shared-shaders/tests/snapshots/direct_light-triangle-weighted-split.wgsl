@@ -74,9 +74,22 @@ struct Connection {
 struct WeightedPicks {
     light: array<u32, 8>,
     w: array<f32, 8>,
+    threshold: array<f32, 8>,
     w_sum: f32,
     n: u32,
     h: u32,
+}
+
+struct WorkgroupBox {
+    lo: vec3<f32>,
+    hi: vec3<f32>,
+}
+
+struct TileWalk {
+    lo: vec3<f32>,
+    hi: vec3<f32>,
+    w: f32,
+    total: u32,
 }
 
 struct Shaded {
@@ -152,6 +165,11 @@ const TEMPORAL_CHANGE_HIGH: f32 = 8f;
 const TEMPORAL_MIN_WEIGHT: f32 = 0.01f;
 const K: u32 = 8u;
 const BSH: u32 = 0u;
+const BSH_TILE_DEPTH: u32 = 8u;
+const BSH_TILE_SUBTREES: u32 = 256u;
+const TILE_THREADS: u32 = 64u;
+const BOX_THREADS: u32 = 64u;
+const TILE_LIST: u32 = 1024u;
 
 @group(1) @binding(6) 
 var<storage> geo_nodes: array<GpuGeoNode>;
@@ -181,6 +199,13 @@ var<storage> r2_4: array<f32>;
 var<storage> bsh_nodes: array<BshNode>;
 @group(1) @binding(5) 
 var<storage> light_cones: array<GpuLightCone>;
+var<workgroup> wg_lo: array<vec3<f32>, 64>;
+var<workgroup> wg_hi: array<vec3<f32>, 64>;
+var<workgroup> wg_box: WorkgroupBox;
+var<workgroup> tile_list: array<u32, 1024>;
+var<workgroup> subtree_at: array<u32, 256>;
+var<workgroup> tile_scale: atomic<u32>;
+var<workgroup> tile_total: u32;
 
 fn to_f32_(u: u32) -> f32 {
     return f32(u);
@@ -238,6 +263,12 @@ fn sphere_contains_point(c: vec3<f32>, r_1: f32, x_1: vec3<f32>) -> bool {
     return (dot(v_6, v_6) <= (r_1 * r_1));
 }
 
+fn sphere_overlaps_aabb(c_1: vec3<f32>, r_2: f32, bmin: vec3<f32>, bmax: vec3<f32>) -> bool {
+    let q = clamp(c_1, bmin, bmax);
+    let v_7 = (q - c_1);
+    return (dot(v_7, v_7) <= (r_2 * r_2));
+}
+
 fn inverse_square(d2_2: f32) -> f32 {
     return (1f / max(d2_2, MIN_D2_));
 }
@@ -248,45 +279,45 @@ fn connection_factor(cos_x: f32, d2_3: f32, rt2_1: f32, w: f32) -> f32 {
     return (((cos_x * _e4) * _e6) * w);
 }
 
-fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, r2_1: f32) -> f32 {
-    var local_2: bool;
-    var local_3: bool;
+fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n_1: vec3<f32>, ng: vec3<f32>, r2_1: f32) -> f32 {
+    var local_6: bool;
+    var local_7: bool;
 
-    let v_7 = (x_2 - y);
-    let d2_7 = dot(v_7, v_7);
+    let v_8 = (x_2 - y);
+    let d2_7 = dot(v_8, v_8);
     let _e7 = slc_keep(r2_1, d2_7);
     if !(!(_e7)) {
-        local_2 = !((d2_7 > 0f));
+        local_6 = !((d2_7 > 0f));
     } else {
-        local_2 = true;
+        local_6 = true;
     }
-    let _e16 = local_2;
+    let _e16 = local_6;
     if _e16 {
         return 0f;
     }
-    let w_6 = (v_7 / vec3(sqrt(d2_7)));
-    let cos_x_1 = -(dot(n, w_6));
+    let w_10 = (v_8 / vec3(sqrt(d2_7)));
+    let cos_x_1 = -(dot(n_1, w_10));
     if !((cos_x_1 <= 0f)) {
-        local_3 = (dot(ng, w_6) >= 0f);
+        local_7 = (dot(ng, w_10) >= 0f);
     } else {
-        local_3 = true;
+        local_7 = true;
     }
-    let _e32 = local_3;
+    let _e32 = local_7;
     if _e32 {
         return 0f;
     }
     return cos_x_1;
 }
 
-fn triangle_lobe(n_1: vec3<f32>, area: f32, w_1: vec3<f32>) -> f32 {
-    return (area * max(dot(n_1, w_1), 0f));
+fn triangle_lobe(n_2: vec3<f32>, area: f32, w_1: vec3<f32>) -> f32 {
+    return (area * max(dot(n_2, w_1), 0f));
 }
 
-fn triangle_sample(a_2: vec3<f32>, b_2: vec3<f32>, c_1: vec3<f32>, u1_: f32, u2_: f32) -> vec3<f32> {
+fn triangle_sample(a_2: vec3<f32>, b_2: vec3<f32>, c_2: vec3<f32>, u1_: f32, u2_: f32) -> vec3<f32> {
     let su = sqrt(u1_);
     let b0_ = (1f - su);
     let b1_ = (u2_ * su);
-    return (((a_2 * b0_) + (b_2 * b1_)) + (c_1 * ((1f - b0_) - b1_)));
+    return (((a_2 * b0_) + (b_2 * b1_)) + (c_2 * ((1f - b0_) - b1_)));
 }
 
 fn bsh_scaled_radius(node: BshNode, scale: f32) -> f32 {
@@ -325,8 +356,8 @@ fn ggx_d(cos_h: f32, sin2_h: f32, alpha: f32) -> f32 {
         return 0f;
     }
     let a2_ = (alpha * alpha);
-    let t_1 = (((cos_h * cos_h) * a2_) + sin2_h);
-    return ((a2_ * INV_PI) / (t_1 * t_1));
+    let t_4 = (((cos_h * cos_h) * a2_) + sin2_h);
+    return ((a2_ * INV_PI) / (t_4 * t_4));
 }
 
 fn smith_root(cos_: f32, alpha_1: f32) -> f32 {
@@ -335,14 +366,14 @@ fn smith_root(cos_: f32, alpha_1: f32) -> f32 {
 }
 
 fn smith_visibility(n_l: f32, n_v: f32, alpha_2: f32) -> f32 {
-    var local_4: bool;
+    var local_8: bool;
 
     if !((n_l <= 0f)) {
-        local_4 = (n_v <= 0f);
+        local_8 = (n_v <= 0f);
     } else {
-        local_4 = true;
+        local_8 = true;
     }
-    let _e11 = local_4;
+    let _e11 = local_8;
     if _e11 {
         return 0f;
     }
@@ -352,9 +383,9 @@ fn smith_visibility(n_l: f32, n_v: f32, alpha_2: f32) -> f32 {
 }
 
 fn fresnel_schlick(f0_: vec3<f32>, f90_: f32, v_h: f32) -> vec3<f32> {
-    let c_7 = saturate((1f - v_h));
-    let c2_ = (c_7 * c_7);
-    return (f0_ + ((vec3<f32>(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_7)));
+    let c_8 = saturate((1f - v_h));
+    let c2_ = (c_8 * c_8);
+    return (f0_ + ((vec3<f32>(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_8)));
 }
 
 fn specular_fresnel(base: vec3<f32>, metallic: f32, f0_d: vec3<f32>, f90_d: f32, v_h_1: f32) -> vec3<f32> {
@@ -369,73 +400,73 @@ fn diffuse_brdf(base_1: vec3<f32>, metallic_1: f32, f0_d_1: vec3<f32>, f90_d_1: 
 }
 
 fn half_cosine(v: vec3<f32>, l: vec3<f32>) -> f32 {
-    let h_3 = (v + l);
-    let len2_ = dot(h_3, h_3);
+    let h_4 = (v + l);
+    let len2_ = dot(h_4, h_4);
     if (len2_ <= 0f) {
         return 0f;
     }
-    return saturate((dot(v, h_3) / sqrt(len2_)));
+    return saturate((dot(v, h_4) / sqrt(len2_)));
 }
 
-fn specular_brdf(base_2: vec3<f32>, metallic_2: f32, f0_d_2: vec3<f32>, f90_d_2: f32, alpha_3: f32, n_2: vec3<f32>, v_1: vec3<f32>, l_1: vec3<f32>) -> vec3<f32> {
-    var local_5: bool;
+fn specular_brdf(base_2: vec3<f32>, metallic_2: f32, f0_d_2: vec3<f32>, f90_d_2: f32, alpha_3: f32, n_3: vec3<f32>, v_1: vec3<f32>, l_1: vec3<f32>) -> vec3<f32> {
+    var local_9: bool;
 
-    let n_l_1 = dot(n_2, l_1);
-    let n_v_2 = dot(n_2, v_1);
+    let n_l_1 = dot(n_3, l_1);
+    let n_v_2 = dot(n_3, v_1);
     if !((n_l_1 <= 0f)) {
-        local_5 = (n_v_2 <= 0f);
+        local_9 = (n_v_2 <= 0f);
     } else {
-        local_5 = true;
+        local_9 = true;
     }
-    let _e18 = local_5;
+    let _e18 = local_9;
     if _e18 {
         return vec3<f32>(0f, 0f, 0f);
     }
     let hs = (v_1 + l_1);
     let inv = (1f / sqrt(dot(hs, hs)));
-    let h_4 = (hs * inv);
-    let c_8 = cross(n_2, h_4);
-    let _e32 = ggx_d(dot(n_2, h_4), dot(c_8, c_8), alpha_3);
-    let _e34 = specular_fresnel(base_2, metallic_2, f0_d_2, f90_d_2, dot(v_1, h_4));
+    let h_5 = (hs * inv);
+    let c_9 = cross(n_3, h_5);
+    let _e32 = ggx_d(dot(n_3, h_5), dot(c_9, c_9), alpha_3);
+    let _e34 = specular_fresnel(base_2, metallic_2, f0_d_2, f90_d_2, dot(v_1, h_5));
     let _e35 = smith_visibility(n_l_1, n_v_2, alpha_3);
     return (_e34 * (_e32 * _e35));
 }
 
 fn has_specular(metallic_3: f32, f0_d_3: vec3<f32>, f90_d_3: f32) -> bool {
-    var local_6: bool;
-    var local_7: bool;
+    var local_10: bool;
+    var local_11: bool;
 
     if !((metallic_3 > 0f)) {
-        local_6 = (f90_d_3 > 0f);
+        local_10 = (f90_d_3 > 0f);
     } else {
-        local_6 = true;
+        local_10 = true;
     }
-    let _e11 = local_6;
+    let _e11 = local_10;
     if !(_e11) {
-        local_7 = (max(max(f0_d_3.x, f0_d_3.y), f0_d_3.z) > 0f);
+        local_11 = (max(max(f0_d_3.x, f0_d_3.y), f0_d_3.z) > 0f);
     } else {
-        local_7 = true;
+        local_11 = true;
     }
-    let _e23 = local_7;
+    let _e23 = local_11;
     return _e23;
 }
 
-fn channel_mean(c_2: vec3<f32>) -> f32 {
-    return (((c_2.x + c_2.y) + c_2.z) * 0.33333334f);
+fn channel_mean(c_3: vec3<f32>) -> f32 {
+    return (((c_3.x + c_3.y) + c_3.z) * 0.33333334f);
 }
 
 fn receiver_lobe(base_3: vec3<f32>, metallic_4: f32, f0_d_4: vec3<f32>, f90_d_4: f32, alpha_4: f32, n_v_1: f32) -> vec4<f32> {
-    var local_8: bool;
+    var local_12: bool;
 
     let _e10 = fresnel_schlick(f0_d_4, f90_d_4, n_v_1);
     let _e16 = channel_mean((((vec3<f32>(1f, 1f, 1f) - _e10) * base_3) * (1f - metallic_4)));
     if !((n_v_1 <= 0f)) {
         let _e22 = has_specular(metallic_4, f0_d_4, f90_d_4);
-        local_8 = !(_e22);
+        local_12 = !(_e22);
     } else {
-        local_8 = true;
+        local_12 = true;
     }
-    let _e25 = local_8;
+    let _e25 = local_12;
     if _e25 {
         return vec4<f32>(_e16, 0f, alpha_4, n_v_1);
     }
@@ -471,8 +502,8 @@ fn range_lobe(lobe_4: vec4<f32>) -> vec4<f32> {
     return vec4<f32>(lobe_4.x, _e10, (lobe_4.z * lobe_4.z), sqrt(_e14));
 }
 
-fn mirror_dir(n_3: vec3<f32>, v_2: vec3<f32>) -> vec3<f32> {
-    return ((n_3 * (2f * dot(n_3, v_2))) - v_2);
+fn mirror_dir(n_4: vec3<f32>, v_2: vec3<f32>) -> vec3<f32> {
+    return ((n_4 * (2f * dot(n_4, v_2))) - v_2);
 }
 
 fn cos_sub_clamped(sin_a: f32, cos_a: f32, sin_b: f32, cos_b: f32) -> f32 {
@@ -499,11 +530,11 @@ fn subtended_cos(dist2_: f32, r2_2: f32) -> f32 {
 }
 
 fn emitter_cone(center: vec3<f32>, radius: f32, axis: vec3<f32>, cos_o: f32, p: vec3<f32>) -> vec4<f32> {
-    let v_8 = (p - center);
-    let dist2_1 = dot(v_8, v_8);
+    let v_9 = (p - center);
+    let dist2_1 = dot(v_9, v_9);
     let r2_5 = (radius * radius);
     let d2_8 = max(max(dist2_1, r2_5), MIN_D2_);
-    let wi = select(vec3<f32>(0f, 0f, 0f), (v_8 / vec3(sqrt(dist2_1))), (dist2_1 > 0f));
+    let wi = select(vec3<f32>(0f, 0f, 0f), (v_9 / vec3(sqrt(dist2_1))), (dist2_1 > 0f));
     let cos_w = dot(axis, wi);
     let _e25 = safe_sqrt((1f - (cos_w * cos_w)));
     let _e26 = subtended_cos(dist2_1, r2_5);
@@ -524,51 +555,51 @@ fn emitter_importance(center_1: vec3<f32>, radius_1: f32, phi: f32, axis_1: vec3
 }
 
 fn cone_cos_of(v_3: vec3<f32>, d2_4: f32, a_3: f32, d: vec3<f32>) -> f32 {
-    var local_9: bool;
-    var local_10: bool;
+    var local_13: bool;
+    var local_14: bool;
 
     let vd = dot(v_3, d);
     let h2_ = (d2_4 - (a_3 * a_3));
     if !((h2_ <= 0f)) {
         if (vd >= 0f) {
-            local_10 = ((vd * vd) >= h2_);
+            local_14 = ((vd * vd) >= h2_);
         } else {
-            local_10 = false;
+            local_14 = false;
         }
-        let _e19 = local_10;
-        local_9 = _e19;
+        let _e19 = local_14;
+        local_13 = _e19;
     } else {
-        local_9 = true;
+        local_13 = true;
     }
-    let _e21 = local_9;
+    let _e21 = local_13;
     if _e21 {
         return 1f;
     }
-    let c_9 = cross(v_3, d);
-    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_9, c_9)) * a_3)) / d2_4), 1f);
+    let c_10 = cross(v_3, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_10, c_10)) * a_3)) / d2_4), 1f);
 }
 
 fn cone_cos_toward(center_2: vec3<f32>, radius_2: f32, p_2: vec3<f32>, d_1: vec3<f32>) -> f32 {
-    let v_9 = (center_2 - p_2);
-    let _e6 = cone_cos_of(v_9, dot(v_9, v_9), radius_2, d_1);
+    let v_10 = (center_2 - p_2);
+    let _e6 = cone_cos_of(v_10, dot(v_10, v_10), radius_2, d_1);
     return _e6;
 }
 
 fn range_scale_at(rl: vec4<f32>, cos_t: f32) -> f32 {
-    let t_2 = (((0.5f + (0.5f * cos_t)) * (rl.z - 1f)) + 1f);
-    return clamp((rl.x + ((rl.y * rl.z) / (t_2 * t_2))), 1f, (rl.w * rl.w));
+    let t_5 = (((0.5f + (0.5f * cos_t)) * (rl.z - 1f)) + 1f);
+    return clamp((rl.x + ((rl.y * rl.z) / (t_5 * t_5))), 1f, (rl.w * rl.w));
 }
 
-fn range_scale_toward(rl_1: vec4<f32>, center_3: vec3<f32>, radius_3: f32, p_3: vec3<f32>, r_2: vec3<f32>) -> f32 {
+fn range_scale_toward(rl_1: vec4<f32>, center_3: vec3<f32>, radius_3: f32, p_3: vec3<f32>, r_3: vec3<f32>) -> f32 {
     if (rl_1.w <= 1f) {
         return 1f;
     }
-    let _e9 = cone_cos_toward(center_3, radius_3, p_3, r_2);
+    let _e9 = cone_cos_toward(center_3, radius_3, p_3, r_3);
     let _e10 = range_scale_at(rl_1, _e9);
     return _e10;
 }
 
-fn light_importance(center_4: vec3<f32>, radius_4: f32, phi_1: f32, axis_2: vec3<f32>, cos_o_2: f32, cos_e_1: f32, p_4: vec3<f32>, n_4: vec3<f32>) -> f32 {
+fn light_importance(center_4: vec3<f32>, radius_4: f32, phi_1: f32, axis_2: vec3<f32>, cos_o_2: f32, cos_e_1: f32, p_4: vec3<f32>, n_5: vec3<f32>) -> f32 {
     var imp: f32;
 
     let _e8 = emitter_cone(center_4, radius_4, axis_2, cos_o_2, p_4);
@@ -576,10 +607,10 @@ fn light_importance(center_4: vec3<f32>, radius_4: f32, phi_1: f32, axis_2: vec3
         return 0f;
     }
     imp = ((phi_1 * _e8.x) / _e8.y);
-    if (dot(n_4, n_4) > 0f) {
-        let v_10 = (center_4 - p_4);
-        let dist2_2 = dot(v_10, v_10);
-        let cos_i = dot(select(vec3<f32>(0f, 0f, 0f), (v_10 / vec3(sqrt(dist2_2))), (dist2_2 > 0f)), n_4);
+    if (dot(n_5, n_5) > 0f) {
+        let v_11 = (center_4 - p_4);
+        let dist2_2 = dot(v_11, v_11);
+        let cos_i = dot(select(vec3<f32>(0f, 0f, 0f), (v_11 / vec3(sqrt(dist2_2))), (dist2_2 > 0f)), n_5);
         let _e33 = imp;
         let _e37 = safe_sqrt((1f - (cos_i * cos_i)));
         let _e40 = cos_sub_clamped(_e37, cos_i, _e8.w, _e8.z);
@@ -589,21 +620,21 @@ fn light_importance(center_4: vec3<f32>, radius_4: f32, phi_1: f32, axis_2: vec3
     return max(_e44, 0f);
 }
 
-fn glossy_importance(center_5: vec3<f32>, radius_5: f32, phi_2: f32, axis_3: vec3<f32>, cos_o_3: f32, cos_e_2: f32, p_5: vec3<f32>, n_5: vec3<f32>, r_3: vec3<f32>, lobe_5: vec4<f32>) -> f32 {
-    var local_11: bool;
+fn glossy_importance(center_5: vec3<f32>, radius_5: f32, phi_2: f32, axis_3: vec3<f32>, cos_o_3: f32, cos_e_2: f32, p_5: vec3<f32>, n_6: vec3<f32>, r_4: vec3<f32>, lobe_5: vec4<f32>) -> f32 {
+    var local_15: bool;
 
     let _e10 = emitter_importance(center_5, radius_5, phi_2, axis_3, cos_o_3, cos_e_2, p_5);
-    let _e11 = cone_cos_toward(center_5, radius_5, p_5, n_5);
+    let _e11 = cone_cos_toward(center_5, radius_5, p_5, n_6);
     if !((_e10 <= 0f)) {
-        local_11 = (_e11 <= 0f);
+        local_15 = (_e11 <= 0f);
     } else {
-        local_11 = true;
+        local_15 = true;
     }
-    let _e20 = local_11;
+    let _e20 = local_15;
     if _e20 {
         return 0f;
     }
-    let _e22 = cone_cos_toward(center_5, radius_5, p_5, r_3);
+    let _e22 = cone_cos_toward(center_5, radius_5, p_5, r_4);
     let _e27 = safe_sqrt((0.5f + (0.5f * _e22)));
     let _e33 = ggx_d(_e27, (1f - (_e27 * _e27)), lobe_5.z);
     let _e39 = smith_root(lobe_5.w, lobe_5.z);
@@ -616,15 +647,15 @@ fn candidate_weight(importance: f32, rt2_2: f32, d2_5: f32) -> f32 {
     return (importance * _e3);
 }
 
-fn cone_weight(center_6: vec3<f32>, radius_6: f32, phi_3: f32, axis_4: vec3<f32>, cos_o_4: f32, cos_e_3: f32, rt2_3: f32, p_6: vec3<f32>, n_6: vec3<f32>, r_4: vec3<f32>, lobe_6: vec4<f32>) -> f32 {
-    let v_11 = (p_6 - center_6);
+fn cone_weight(center_6: vec3<f32>, radius_6: f32, phi_3: f32, axis_4: vec3<f32>, cos_o_4: f32, cos_e_3: f32, rt2_3: f32, p_6: vec3<f32>, n_7: vec3<f32>, r_5: vec3<f32>, lobe_6: vec4<f32>) -> f32 {
+    let v_12 = (p_6 - center_6);
     if (lobe_6.y <= 0f) {
-        let _e15 = light_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_6);
-        let _e19 = candidate_weight((_e15 * INV_PI), rt2_3, dot(v_11, v_11));
+        let _e15 = light_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_7);
+        let _e19 = candidate_weight((_e15 * INV_PI), rt2_3, dot(v_12, v_12));
         return _e19;
     }
-    let _e20 = glossy_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_6, r_4, lobe_6);
-    let _e22 = candidate_weight(_e20, rt2_3, dot(v_11, v_11));
+    let _e20 = glossy_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_7, r_5, lobe_6);
+    let _e22 = candidate_weight(_e20, rt2_3, dot(v_12, v_12));
     return _e22;
 }
 
@@ -643,80 +674,80 @@ fn ray_inverse3_(d_2: vec3<f32>) -> vec3<f32> {
     return vec3<f32>(_e2, _e4, _e6);
 }
 
-fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin: vec3<f32>, bmax: vec3<f32>, t_max: f32) -> f32 {
-    let t0_ = ((bmin - o) * inv_d);
-    let t1_ = ((bmax - o) * inv_d);
-    let lo = min(t0_, t1_);
-    let hi = max(t0_, t1_);
-    let t_in = max(max(lo.x, lo.y), max(lo.z, 0f));
-    let t_out = min(min(hi.x, hi.y), min(hi.z, t_max));
+fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin_1: vec3<f32>, bmax_1: vec3<f32>, t_max: f32) -> f32 {
+    let t0_ = ((bmin_1 - o) * inv_d);
+    let t1_ = ((bmax_1 - o) * inv_d);
+    let lo_3 = min(t0_, t1_);
+    let hi_3 = max(t0_, t1_);
+    let t_in = max(max(lo_3.x, lo_3.y), max(lo_3.z, 0f));
+    let t_out = min(min(hi_3.x, hi_3.y), min(hi_3.z, t_max));
     if (t_in <= t_out) {
         return t_in;
     }
     return -1f;
 }
 
-fn triangle_normal(a_4: vec3<f32>, b_3: vec3<f32>, c_3: vec3<f32>) -> vec3<f32> {
-    var local_12: bool;
+fn triangle_normal(a_4: vec3<f32>, b_3: vec3<f32>, c_4: vec3<f32>) -> vec3<f32> {
+    var local_16: bool;
 
-    let n_14 = cross((b_3 - a_4), (c_3 - a_4));
+    let n_14 = cross((b_3 - a_4), (c_4 - a_4));
     let l2_ = dot(n_14, n_14);
     if !(!((l2_ > 0f))) {
-        local_12 = !((l2_ < 300000000000000000000000000000000000000f));
+        local_16 = !((l2_ < 300000000000000000000000000000000000000f));
     } else {
-        local_12 = true;
+        local_16 = true;
     }
-    let _e17 = local_12;
+    let _e17 = local_16;
     if _e17 {
         return vec3<f32>(0f, 0f, 0f);
     }
     return (n_14 / vec3(sqrt(l2_)));
 }
 
-fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_4: vec3<f32>, c_4: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
-    var local_13: bool;
-    var local_14: bool;
-    var local_15: bool;
+fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_4: vec3<f32>, c_5: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
+    var local_17: bool;
+    var local_18: bool;
+    var local_19: bool;
 
     let e1_ = (b_4 - a_5);
-    let e2_ = (c_4 - a_5);
-    let p_7 = cross(d_3, e2_);
-    let det = dot(e1_, p_7);
+    let e2_ = (c_5 - a_5);
+    let p_9 = cross(d_3, e2_);
+    let det = dot(e1_, p_9);
     if (abs(det) <= 0f) {
         return -1f;
     }
     let inv_1 = (1f / det);
-    let s_3 = (o_1 - a_5);
-    let u_3 = (dot(s_3, p_7) * inv_1);
+    let s_9 = (o_1 - a_5);
+    let u_3 = (dot(s_9, p_9) * inv_1);
     if !((u_3 < 0f)) {
-        local_13 = (u_3 > 1f);
+        local_17 = (u_3 > 1f);
     } else {
-        local_13 = true;
+        local_17 = true;
     }
-    let _e28 = local_13;
+    let _e28 = local_17;
     if _e28 {
         return -1f;
     }
-    let q = cross(s_3, e1_);
-    let v_12 = (dot(d_3, q) * inv_1);
-    if !((v_12 < 0f)) {
-        local_14 = ((u_3 + v_12) > 1f);
+    let q_1 = cross(s_9, e1_);
+    let v_13 = (dot(d_3, q_1) * inv_1);
+    if !((v_13 < 0f)) {
+        local_18 = ((u_3 + v_13) > 1f);
     } else {
-        local_14 = true;
+        local_18 = true;
     }
-    let _e42 = local_14;
+    let _e42 = local_18;
     if _e42 {
         return -1f;
     }
-    let t_3 = (dot(e2_, q) * inv_1);
-    if (t_3 > t_min) {
-        local_15 = (t_3 < t_max_1);
+    let t_6 = (dot(e2_, q_1) * inv_1);
+    if (t_6 > t_min) {
+        local_19 = (t_6 < t_max_1);
     } else {
-        local_15 = false;
+        local_19 = false;
     }
-    let _e51 = local_15;
+    let _e51 = local_19;
     if _e51 {
-        return t_3;
+        return t_6;
     }
     return -1f;
 }
@@ -772,9 +803,9 @@ fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
                     }
                     {
                         let _e42 = i;
-                        let t_4 = geo_tris[_e42];
+                        let t_7 = geo_tris[_e42];
                         let _e49 = hit.t;
-                        let _e50 = ray_triangle(o_2, d_4, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e49);
+                        let _e50 = ray_triangle(o_2, d_4, t_7.v0_, t_7.v1_, t_7.v2_, t_min_1, _e49);
                         if (_e50 > 0f) {
                             hit.t = _e50;
                             let _e55 = i;
@@ -844,15 +875,15 @@ fn bsh_first(nodes_2: u32) -> u32 {
     return BSH_NONE;
 }
 
-fn bsh_inner_scale(a_7: f32, v_4: vec3<f32>, d2_6: f32, r_5: vec3<f32>, rl_2: vec4<f32>) -> f32 {
-    let _e5 = cone_cos_of(v_4, d2_6, a_7, r_5);
+fn bsh_inner_scale(a_7: f32, v_4: vec3<f32>, d2_6: f32, r_6: vec3<f32>, rl_2: vec4<f32>) -> f32 {
+    let _e5 = cone_cos_of(v_4, d2_6, a_7, r_6);
     let _e8 = range_scale_at(rl_2, (_e5 + 0.000002f));
     return _e8;
 }
 
-fn bsh_reaches(node_3: BshNode, x_5: vec3<f32>, r_6: vec3<f32>, rl_3: vec4<f32>) -> bool {
-    var local_16: bool;
-    var local_17: bool;
+fn bsh_reaches(node_3: BshNode, x_5: vec3<f32>, r_7: vec3<f32>, rl_3: vec4<f32>) -> bool {
+    var local_20: bool;
+    var local_21: bool;
 
     let _e6 = sphere_contains_point(node_3.center, node_3.radius, x_5);
     if _e6 {
@@ -860,65 +891,116 @@ fn bsh_reaches(node_3: BshNode, x_5: vec3<f32>, r_6: vec3<f32>, rl_3: vec4<f32>)
     }
     if !((rl_3.w <= 1f)) {
         let _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001f)), x_5);
-        local_16 = !(_e20);
+        local_20 = !(_e20);
     } else {
-        local_16 = true;
+        local_20 = true;
     }
-    let _e23 = local_16;
+    let _e23 = local_20;
     if _e23 {
         return false;
     }
     let _e25 = bsh_range_bound(node_3);
-    let v_13 = (x_5 - node_3.center);
-    let d2_9 = dot(v_13, v_13);
+    let v_14 = (x_5 - node_3.center);
+    let d2_9 = dot(v_14, v_14);
     let reach_max = (node_3.extent + ((rl_3.w * 1.001f) * _e25));
     if (d2_9 > (reach_max * reach_max)) {
         return false;
     }
     if (node_3.child == BSH_NONE) {
-        let _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_5, r_6);
+        let _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_5, r_7);
         let _e46 = bsh_scaled_radius(node_3, sqrt(_e43));
         let _e47 = sphere_contains_point(node_3.center, _e46, x_5);
         return _e47;
     }
-    let _e50 = bsh_inner_scale(node_3.extent, -(v_13), d2_9, r_6, rl_3);
+    let _e50 = bsh_inner_scale(node_3.extent, -(v_14), d2_9, r_7, rl_3);
     let s_c = (_e50 * 1.001f);
     let reach = (node_3.extent + (sqrt(s_c) * _e25));
     if (d2_9 <= ((node_3.radius * node_3.radius) * s_c)) {
-        local_17 = (d2_9 <= (reach * reach));
+        local_21 = (d2_9 <= (reach * reach));
     } else {
-        local_17 = false;
+        local_21 = false;
     }
-    let _e67 = local_17;
+    let _e67 = local_21;
     return _e67;
 }
 
-fn bsh_next_leaf_lobe(nodes_3: u32, start: u32, x_6: vec3<f32>, r_7: vec3<f32>, rl_4: vec4<f32>) -> u32 {
-    var i_2: u32;
+fn bsh_reaches_box(node_4: BshNode, lo: vec3<f32>, hi: vec3<f32>, w_4: f32) -> bool {
+    let _e13 = sphere_overlaps_aabb(node_4.center, (node_4.radius * (max(1f, (w_4 * 1.0001f)) * 1.0001f)), lo, hi);
+    return _e13;
+}
 
-    i_2 = start;
+fn bsh_subtree(nodes_3: u32, s_1: u32, depth: u32) -> u32 {
+    var i_2: u32;
+    var level: u32 = 0u;
+    var local_22: bool;
+
+    let _e3 = bsh_first(nodes_3);
+    i_2 = _e3;
     loop {
-        let _e6 = i_2;
-        if (_e6 != BSH_NONE) {
+        let _e7 = level;
+        if (_e7 < depth) {
+            let _e11 = i_2;
+            local_22 = (_e11 != BSH_NONE);
+        } else {
+            local_22 = false;
+        }
+        let _e15 = local_22;
+        if _e15 {
         } else {
             break;
         }
         {
-            let _e9 = i_2;
-            let _e10 = bsh_node(nodes_3, _e9);
-            let _e11 = bsh_reaches(_e10, x_6, r_7, rl_4);
+            let _e16 = i_2;
+            let _e17 = bsh_node(nodes_3, _e16);
+            let _e18 = level;
+            let below = (depth - _e18);
+            if (_e17.child == BSH_NONE) {
+                if ((s_1 << (32u - below)) != 0u) {
+                    return BSH_NONE;
+                }
+                let _e29 = i_2;
+                return _e29;
+            }
+            if (((s_1 >> (below - 1u)) & 1u) == 0u) {
+                i_2 = _e17.child;
+            } else {
+                let _e39 = bsh_node(nodes_3, _e17.child);
+                i_2 = _e39.next;
+            }
+            let _e41 = level;
+            level = (_e41 + 1u);
+        }
+    }
+    let _e44 = i_2;
+    return _e44;
+}
+
+fn bsh_next_leaf_box(nodes_4: u32, start_1: u32, end: u32, lo_1: vec3<f32>, hi_1: vec3<f32>, w_5: f32) -> u32 {
+    var i_3: u32;
+
+    i_3 = start_1;
+    loop {
+        let _e7 = i_3;
+        if (_e7 != end) {
+        } else {
+            break;
+        }
+        {
+            let _e9 = i_3;
+            let _e10 = bsh_node(nodes_4, _e9);
+            let _e11 = bsh_reaches_box(_e10, lo_1, hi_1, w_5);
             if _e11 {
                 if (_e10.child == BSH_NONE) {
-                    let _e15 = i_2;
+                    let _e15 = i_3;
                     return _e15;
                 }
-                i_2 = _e10.child;
+                i_3 = _e10.child;
             } else {
-                i_2 = _e10.next;
+                i_3 = _e10.next;
             }
         }
     }
-    return BSH_NONE;
+    return end;
 }
 
 fn next_threshold(sum: f32, h_1: ptr<function, u32>) -> f32 {
@@ -931,175 +1013,379 @@ fn next_threshold(sum: f32, h_1: ptr<function, u32>) -> f32 {
     return _e6;
 }
 
-fn connect_record(l_4: GpuLight, x_7: vec3<f32>, n_7: vec3<f32>, ng_1: vec3<f32>, r2_3: f32, rt2_4: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32, trace_1: bool) -> Connection {
-    var c_5: Connection;
-    var local_18: bool;
-    var local_19: bool;
+fn connect_record(l_4: GpuLight, x_6: vec3<f32>, n_8: vec3<f32>, ng_1: vec3<f32>, r2_3: f32, rt2_4: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32, trace_1: bool) -> Connection {
+    var c_6: Connection;
+    var local_23: bool;
+    var local_24: bool;
 
-    c_5.e = vec3(0f);
+    c_6.e = vec3(0f);
     let _e16 = light_point(l_4, u1_2, u2_2);
-    c_5.y = _e16;
-    let _e19 = c_5.y;
-    let _e20 = connection_cosine(x_7, _e19, n_7, ng_1, r2_3);
-    c_5.cos_x = _e20;
-    let _e22 = c_5.cos_x;
+    c_6.y = _e16;
+    let _e19 = c_6.y;
+    let _e20 = connection_cosine(x_6, _e19, n_8, ng_1, r2_3);
+    c_6.cos_x = _e20;
+    let _e22 = c_6.cos_x;
     if !((_e22 <= 0f)) {
         if trace_1 {
-            let _e33 = c_5.y;
-            let _e34 = occluded((x_7 + (ng_1 * eps)), _e33);
-            local_19 = _e34;
+            let _e33 = c_6.y;
+            let _e34 = occluded((x_6 + (ng_1 * eps)), _e33);
+            local_24 = _e34;
         } else {
-            local_19 = false;
+            local_24 = false;
         }
-        let _e36 = local_19;
-        local_18 = _e36;
+        let _e36 = local_24;
+        local_23 = _e36;
     } else {
-        local_18 = true;
+        local_23 = true;
     }
-    let _e38 = local_18;
+    let _e38 = local_23;
     if _e38 {
-        let _e39 = c_5;
+        let _e39 = c_6;
         return _e39;
     }
-    let _e41 = c_5.y;
-    let v_14 = (x_7 - _e41);
-    let d2_10 = dot(v_14, v_14);
-    let _e48 = light_intensity(l_4, (v_14 / vec3(sqrt(d2_10))));
-    let _e50 = c_5.cos_x;
+    let _e41 = c_6.y;
+    let v_15 = (x_6 - _e41);
+    let d2_10 = dot(v_15, v_15);
+    let _e48 = light_intensity(l_4, (v_15 / vec3(sqrt(d2_10))));
+    let _e50 = c_6.cos_x;
     let _e51 = connection_factor(_e50, d2_10, rt2_4, w_res);
-    c_5.e = (_e48 * _e51);
-    let _e53 = c_5;
+    c_6.e = (_e48 * _e51);
+    let _e53 = c_6;
     return _e53;
 }
 
-fn connect_traced(li: u32, x_8: vec3<f32>, n_8: vec3<f32>, ng_2: vec3<f32>, s: f32, w_res_1: f32, u1_3: f32, u2_3: f32, eps_1: f32, trace_2: bool) -> Connection {
+fn connect_traced(li: u32, x_7: vec3<f32>, n_9: vec3<f32>, ng_2: vec3<f32>, s_2: f32, w_res_1: f32, u1_3: f32, u2_3: f32, eps_1: f32, trace_2: bool) -> Connection {
     let _e12 = lights[li];
     let _e15 = r2_4[li];
     let _e19 = rt2_5[li];
-    let _e21 = connect_record(_e12, x_8, n_8, ng_2, (s * _e15), (s * _e19), w_res_1, u1_3, u2_3, eps_1, trace_2);
+    let _e21 = connect_record(_e12, x_7, n_9, ng_2, (s_2 * _e15), (s_2 * _e19), w_res_1, u1_3, u2_3, eps_1, trace_2);
     return _e21;
 }
 
-fn light_range_scale(li_1: u32, x_9: vec3<f32>, r_8: vec3<f32>, rl_5: vec4<f32>) -> f32 {
-    let c_10 = light_cones[li_1];
-    let _e9 = range_scale_toward(rl_5, c_10.center, c_10.radius, x_9, r_8);
+fn light_range_scale(li_1: u32, x_8: vec3<f32>, r_8: vec3<f32>, rl_4: vec4<f32>) -> f32 {
+    let c_11 = light_cones[li_1];
+    let _e9 = range_scale_toward(rl_4, c_11.center, c_11.radius, x_8, r_8);
     return _e9;
 }
 
-fn light_weight(li_2: u32, x_10: vec3<f32>, n_9: vec3<f32>, r_9: vec3<f32>, lobe_7: vec4<f32>, rl_6: vec4<f32>) -> f32 {
-    let c_11 = light_cones[li_2];
-    let _e15 = light_range_scale(li_2, x_10, r_9, rl_6);
+fn light_weight(li_2: u32, x_9: vec3<f32>, n_10: vec3<f32>, r_9: vec3<f32>, lobe_7: vec4<f32>, rl_5: vec4<f32>) -> f32 {
+    let c_12 = light_cones[li_2];
+    let _e15 = light_range_scale(li_2, x_9, r_9, rl_5);
     let _e18 = rt2_5[li_2];
-    let _e20 = cone_weight(c_11.center, c_11.radius, c_11.phi, c_11.axis, c_11.cos_o, c_11.cos_e, (_e15 * _e18), x_10, n_9, r_9, lobe_7);
+    let _e20 = cone_weight(c_12.center, c_12.radius, c_12.phi, c_12.axis, c_12.cos_o, c_12.cos_e, (_e15 * _e18), x_9, n_10, r_9, lobe_7);
     return _e20;
 }
 
-fn bsh_weighted_collect(x_11: vec3<f32>, n_10: vec3<f32>, r_10: vec3<f32>, lobe_8: vec4<f32>, rl_7: vec4<f32>, h0_: u32) -> WeightedPicks {
-    var picks: WeightedPicks;
-    var h_2: u32;
-    var threshold: array<f32, 8>;
-    var b_6: u32;
-    var s_1: u32;
+fn weighted_picks(h_2: u32) -> WeightedPicks {
+    var picks_1: WeightedPicks;
 
-    picks.w_sum = 0f;
-    picks.n = 0u;
-    h_2 = h0_;
-    let _e15 = bsh_first(BSH);
-    let _e16 = bsh_next_leaf_lobe(BSH, _e15, x_11, r_10, rl_7);
-    b_6 = _e16;
+    picks_1.w_sum = 0f;
+    picks_1.n = 0u;
+    picks_1.h = h_2;
+    let _e7 = picks_1;
+    return _e7;
+}
+
+fn weighted_offer(picks_2: ptr<function, WeightedPicks>, li_3: u32, w_6: f32) {
+    var h_3: u32;
+    var s_3: u32 = 0u;
+
+    let _e4 = (*picks_2).n;
+    (*picks_2).n = (_e4 + 1u);
+    if (w_6 > 0f) {
+        let _e10 = (*picks_2).w_sum;
+        (*picks_2).w_sum = (_e10 + w_6);
+        let _e13 = (*picks_2).h;
+        h_3 = _e13;
+        loop {
+            let _e17 = s_3;
+            if (_e17 < K) {
+            } else {
+                break;
+            }
+            {
+                let _e21 = (*picks_2).w_sum;
+                let _e23 = s_3;
+                let _e25 = (*picks_2).threshold[_e23];
+                if (_e21 > _e25) {
+                    let _e28 = s_3;
+                    (*picks_2).light[_e28] = li_3;
+                    let _e31 = s_3;
+                    (*picks_2).w[_e31] = w_6;
+                    let _e34 = s_3;
+                    let _e37 = (*picks_2).w_sum;
+                    let _e38 = next_threshold(_e37, (&h_3));
+                    (*picks_2).threshold[_e34] = _e38;
+                }
+            }
+            continuing {
+                let _e40 = s_3;
+                s_3 = (_e40 + 1u);
+            }
+        }
+        let _e43 = h_3;
+        (*picks_2).h = _e43;
+        return;
+    } else {
+        return;
+    }
+}
+
+fn surface_at(texel: vec2<i32>) -> vec4<f32> {
+    let p_10 = textureLoad(position_tex, texel, 0i);
+    return select(vec4(0f), vec4<f32>(p_10.xyz, 1f), (p_10.w > 0f));
+}
+
+fn workgroup_bounds(li_4: u32, lo_2: vec3<f32>, hi_2: vec3<f32>) -> WorkgroupBox {
+    var stride: u32 = 32u;
+
+    wg_lo[li_4] = lo_2;
+    wg_hi[li_4] = hi_2;
+    workgroupBarrier();
     loop {
-        let _e18 = b_6;
-        if (_e18 != BSH_NONE) {
+        let _e9 = stride;
+        if (_e9 > 0u) {
         } else {
             break;
         }
         {
-            let _e22 = picks.n;
-            picks.n = (_e22 + 1u);
-            let _e26 = b_6;
-            let li_5 = bsh_nodes[_e26].light;
-            let _e30 = light_weight(li_5, x_11, n_10, r_10, lobe_8, rl_7);
-            if (_e30 > 0f) {
-                let _e34 = picks.w_sum;
-                picks.w_sum = (_e34 + _e30);
-                s_1 = 0u;
-                loop {
-                    let _e38 = s_1;
-                    if (_e38 < K) {
-                    } else {
-                        break;
-                    }
-                    {
-                        let _e42 = picks.w_sum;
-                        let _e43 = s_1;
-                        let _e45 = threshold[_e43];
-                        if (_e42 > _e45) {
-                            let _e48 = s_1;
-                            picks.light[_e48] = li_5;
-                            let _e51 = s_1;
-                            picks.w[_e51] = _e30;
-                            let _e53 = s_1;
-                            let _e56 = picks.w_sum;
-                            let _e57 = next_threshold(_e56, (&h_2));
-                            threshold[_e53] = _e57;
-                        }
-                    }
-                    continuing {
-                        let _e59 = s_1;
-                        s_1 = (_e59 + 1u);
-                    }
-                }
+            let _e12 = stride;
+            if (li_4 < _e12) {
+                let _e18 = wg_lo[li_4];
+                let _e20 = stride;
+                let _e23 = wg_lo[(li_4 + _e20)];
+                wg_lo[li_4] = min(_e18, _e23);
+                let _e29 = wg_hi[li_4];
+                let _e31 = stride;
+                let _e34 = wg_hi[(li_4 + _e31)];
+                wg_hi[li_4] = max(_e29, _e34);
+            }
+            workgroupBarrier();
+        }
+        continuing {
+            let _e36 = stride;
+            stride = (_e36 / 2u);
+        }
+    }
+    if (li_4 == 0u) {
+        let _e44 = wg_lo[0];
+        let _e47 = wg_hi[0];
+        wg_box = WorkgroupBox(_e44, _e47);
+    }
+    let _e50 = workgroupUniformLoad((&wg_box));
+    return _e50;
+}
+
+fn workgroup_box(li_5: u32, p_7: vec3<f32>, has: bool) -> WorkgroupBox {
+    let _e9 = workgroup_bounds(li_5, select(vec3(340282350000000000000000000000000000000f), p_7, has), select(vec3(-340282350000000000000000000000000000000f), p_7, has));
+    return _e9;
+}
+
+fn box_is_empty(b_6: WorkgroupBox) -> bool {
+    return (b_6.lo.x > b_6.hi.x);
+}
+
+fn tile_subtree(s_4: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: u32) -> u32 {
+    var p_8: u32;
+    var b_7: u32;
+    var local_25: bool;
+    var local_26: bool;
+    var local_27: bool;
+
+    let _e8 = bsh_subtree(BSH, s_4, BSH_TILE_DEPTH);
+    if (_e8 == BSH_NONE) {
+        return 0u;
+    }
+    let end_1 = bsh_nodes[_e8].next;
+    p_8 = at;
+    let _e21 = bsh_next_leaf_box(BSH, _e8, end_1, t_1.lo, t_1.hi, t_1.w);
+    b_7 = _e21;
+    loop {
+        let _e23 = b_7;
+        if (_e23 != end_1) {
+            if !(!(list)) {
+                let _e31 = p_8;
+                local_26 = (_e31 < to);
+            } else {
+                local_26 = true;
+            }
+            let _e34 = local_26;
+            local_25 = _e34;
+        } else {
+            local_25 = false;
+        }
+        let _e36 = local_25;
+        if _e36 {
+        } else {
+            break;
+        }
+        {
+            if list {
+                let _e39 = p_8;
+                local_27 = (_e39 >= start_2);
+            } else {
+                local_27 = false;
+            }
+            let _e42 = local_27;
+            if _e42 {
+                let _e44 = p_8;
+                let _e47 = b_7;
+                tile_list[(_e44 - start_2)] = _e47;
+            }
+            let _e48 = p_8;
+            p_8 = (_e48 + 1u);
+        }
+        continuing {
+            let _e53 = b_7;
+            let _e56 = bsh_nodes[_e53].next;
+            let _e60 = bsh_next_leaf_box(BSH, _e56, end_1, t_1.lo, t_1.hi, t_1.w);
+            b_7 = _e60;
+        }
+    }
+    let _e61 = p_8;
+    return (_e61 - at);
+}
+
+fn tile_walk_begin(li_6: u32, x_10: vec3<f32>, w_7: f32, has_1: bool) -> TileWalk {
+    var t_2: TileWalk;
+    var s_5: u32;
+    var sum_1: u32 = 0u;
+    var s_6: u32 = 0u;
+
+    let _e8 = atomicMax((&tile_scale), select(0u, bitcast<u32>(w_7), has_1));
+    let _e9 = workgroup_box(li_6, x_10, has_1);
+    let _e13 = workgroupUniformLoad((&tile_scale));
+    t_2 = TileWalk(_e9.lo, _e9.hi, bitcast<f32>(_e13), 0u);
+    let _e18 = box_is_empty(_e9);
+    if _e18 {
+        let _e19 = t_2;
+        return _e19;
+    }
+    s_5 = li_6;
+    loop {
+        let _e21 = s_5;
+        if (_e21 < BSH_TILE_SUBTREES) {
+        } else {
+            break;
+        }
+        {
+            let _e25 = s_5;
+            let _e27 = s_5;
+            let _e28 = t_2;
+            let _e33 = tile_subtree(_e27, _e28, false, 0u, 0u, 0u);
+            subtree_at[_e25] = _e33;
+        }
+        continuing {
+            let _e34 = s_5;
+            s_5 = (_e34 + TILE_THREADS);
+        }
+    }
+    workgroupBarrier();
+    if (li_6 == 0u) {
+        loop {
+            let _e43 = s_6;
+            if (_e43 < BSH_TILE_SUBTREES) {
+            } else {
+                break;
+            }
+            {
+                let _e47 = s_6;
+                let c_13 = subtree_at[_e47];
+                let _e51 = s_6;
+                let _e53 = sum_1;
+                subtree_at[_e51] = _e53;
+                let _e54 = sum_1;
+                sum_1 = (_e54 + c_13);
+            }
+            continuing {
+                let _e57 = s_6;
+                s_6 = (_e57 + 1u);
+            }
+        }
+        let _e60 = sum_1;
+        tile_total = _e60;
+    }
+    let _e63 = workgroupUniformLoad((&tile_total));
+    t_2.total = _e63;
+    let _e64 = t_2;
+    return _e64;
+}
+
+fn tile_walk_fill(li_7: u32, t_3: TileWalk, start_3: u32) -> u32 {
+    var s_7: u32;
+    var past: u32;
+    var local_28: bool;
+
+    let to_1 = min(t_3.total, (start_3 + TILE_LIST));
+    s_7 = li_7;
+    loop {
+        let _e8 = s_7;
+        if (_e8 < BSH_TILE_SUBTREES) {
+        } else {
+            break;
+        }
+        {
+            let _e12 = s_7;
+            let at_1 = subtree_at[_e12];
+            past = t_3.total;
+            let _e17 = s_7;
+            if ((_e17 + 1u) < BSH_TILE_SUBTREES) {
+                let _e23 = s_7;
+                let _e27 = subtree_at[(_e23 + 1u)];
+                past = _e27;
+            }
+            if (at_1 < to_1) {
+                let _e31 = past;
+                local_28 = (_e31 > start_3);
+            } else {
+                local_28 = false;
+            }
+            let _e34 = local_28;
+            if _e34 {
+                let _e35 = s_7;
+                let _e37 = tile_subtree(_e35, t_3, true, at_1, start_3, to_1);
             }
         }
         continuing {
-            let _e63 = b_6;
-            let _e66 = bsh_nodes[_e63].next;
-            let _e67 = bsh_next_leaf_lobe(BSH, _e66, x_11, r_10, rl_7);
-            b_6 = _e67;
+            let _e38 = s_7;
+            s_7 = (_e38 + TILE_THREADS);
         }
     }
-    let _e69 = h_2;
-    picks.h = _e69;
-    let _e70 = picks;
-    return _e70;
+    workgroupBarrier();
+    return (to_1 - start_3);
 }
 
-fn surface_at(texel: vec2<i32>) -> vec4<f32> {
-    let p_8 = textureLoad(position_tex, texel, 0i);
-    return select(vec4(0f), vec4<f32>(p_8.xyz, 1f), (p_8.w > 0f));
-}
+fn shade_connection(c_7: Connection, x_11: vec3<f32>, n_11: vec3<f32>, m_1: Material) -> Shaded {
+    var s_8: Shaded;
 
-fn shade_connection(c_6: Connection, x_12: vec3<f32>, n_11: vec3<f32>, m_1: Material) -> Shaded {
-    var s_2: Shaded;
-
-    s_2.e = c_6.e;
-    s_2.diffuse = vec3(0f);
-    s_2.specular = vec3(0f);
-    if (c_6.cos_x > 0f) {
-        let l_5 = normalize((c_6.y - x_12));
+    s_8.e = c_7.e;
+    s_8.diffuse = vec3(0f);
+    s_8.specular = vec3(0f);
+    if (c_7.cos_x > 0f) {
+        let l_5 = normalize((c_7.y - x_11));
         let _e24 = view.f0_d;
         let _e27 = view.f90_d;
         let _e29 = half_cosine(m_1.v, l_5);
         let _e30 = diffuse_brdf(m_1.base, m_1.metallic, _e24, _e27, _e29);
-        s_2.diffuse = (_e30 * c_6.e);
+        s_8.diffuse = (_e30 * c_7.e);
         let _e38 = view.f0_d;
         let _e41 = view.f90_d;
         let _e44 = specular_brdf(m_1.base, m_1.metallic, _e38, _e41, m_1.alpha, n_11, m_1.v, l_5);
-        s_2.specular = (_e44 * c_6.e);
+        s_8.specular = (_e44 * c_7.e);
     }
-    let _e47 = s_2;
+    let _e47 = s_8;
     return _e47;
 }
 
-fn shade_pick_traced(li_3: u32, x_13: vec3<f32>, n_12: vec3<f32>, r_11: vec3<f32>, rl_8: vec4<f32>, m_2: Material, w_4: f32, u1_4: f32, u2_4: f32, eps_2: f32, trace_3: bool) -> Shaded {
-    let _e11 = light_range_scale(li_3, x_13, r_11, rl_8);
-    let _e12 = connect_traced(li_3, x_13, n_12, n_12, _e11, w_4, u1_4, u2_4, eps_2, trace_3);
-    let _e13 = shade_connection(_e12, x_13, n_12, m_2);
+fn shade_pick_traced(li_8: u32, x_12: vec3<f32>, n_12: vec3<f32>, r_10: vec3<f32>, rl_6: vec4<f32>, m_2: Material, w_8: f32, u1_4: f32, u2_4: f32, eps_2: f32, trace_3: bool) -> Shaded {
+    let _e11 = light_range_scale(li_8, x_12, r_10, rl_6);
+    let _e12 = connect_traced(li_8, x_12, n_12, n_12, _e11, w_8, u1_4, u2_4, eps_2, trace_3);
+    let _e13 = shade_connection(_e12, x_12, n_12, m_2);
     return _e13;
 }
 
-fn shade_pick(li_4: u32, x_14: vec3<f32>, n_13: vec3<f32>, r_12: vec3<f32>, rl_9: vec4<f32>, m_3: Material, w_5: f32, u1_5: f32, u2_5: f32, eps_3: f32) -> Shaded {
-    let _e11 = shade_pick_traced(li_4, x_14, n_13, r_12, rl_9, m_3, w_5, u1_5, u2_5, eps_3, true);
+fn shade_pick(li_9: u32, x_13: vec3<f32>, n_13: vec3<f32>, r_11: vec3<f32>, rl_7: vec4<f32>, m_3: Material, w_9: f32, u1_5: f32, u2_5: f32, eps_3: f32) -> Shaded {
+    let _e11 = shade_pick_traced(li_9, x_13, n_13, r_11, rl_7, m_3, w_9, u1_5, u2_5, eps_3, true);
     return _e11;
 }
 
@@ -1108,16 +1394,16 @@ fn material_of(base_4: vec3<f32>, metallic_5: f32, roughness_1: f32, reflectance
     return Material(base_4, saturate(metallic_5), _e7, v_5, roughness_1, 0f);
 }
 
-fn add(a_8: Shaded, b_7: Shaded) -> Shaded {
-    return Shaded((a_8.e + b_7.e), (a_8.diffuse + b_7.diffuse), (a_8.specular + b_7.specular));
+fn add(a_8: Shaded, b_8: Shaded) -> Shaded {
+    return Shaded((a_8.e + b_8.e), (a_8.diffuse + b_8.diffuse), (a_8.specular + b_8.specular));
 }
 
 fn first_holders(keys_1: array<vec2<u32>, 8>, held_1: array<bool, 8>) -> array<u32, 8> {
     var first: array<u32, 8>;
     var k_3: u32 = 0u;
-    var j_1: u32;
-    var local_20: bool;
-    var local_21: bool;
+    var j_2: u32;
+    var local_29: bool;
+    var local_30: bool;
 
     loop {
         let _e5 = k_3;
@@ -1130,41 +1416,41 @@ fn first_holders(keys_1: array<vec2<u32>, 8>, held_1: array<bool, 8>) -> array<u
             let _e11 = k_3;
             let _e12 = k_3;
             first[_e8] = select(K, _e11, held_1[_e12]);
-            j_1 = 0u;
+            j_2 = 0u;
             loop {
-                let _e17 = j_1;
+                let _e17 = j_2;
                 let _e18 = k_3;
                 if (_e17 < _e18) {
                     let _e22 = k_3;
-                    local_20 = held_1[_e22];
+                    local_29 = held_1[_e22];
                 } else {
-                    local_20 = false;
+                    local_29 = false;
                 }
-                let _e25 = local_20;
+                let _e25 = local_29;
                 if _e25 {
                 } else {
                     break;
                 }
                 {
-                    let _e26 = j_1;
+                    let _e26 = j_2;
                     if held_1[_e26] {
-                        let _e30 = j_1;
+                        let _e30 = j_2;
                         let _e32 = k_3;
-                        local_21 = all((keys_1[_e30] == keys_1[_e32]));
+                        local_30 = all((keys_1[_e30] == keys_1[_e32]));
                     } else {
-                        local_21 = false;
+                        local_30 = false;
                     }
-                    let _e37 = local_21;
+                    let _e37 = local_30;
                     if _e37 {
                         let _e38 = k_3;
-                        let _e40 = j_1;
+                        let _e40 = j_2;
                         first[_e38] = _e40;
                         break;
                     }
                 }
                 continuing {
-                    let _e42 = j_1;
-                    j_1 = (_e42 + 1u);
+                    let _e42 = j_2;
+                    j_2 = (_e42 + 1u);
                 }
             }
         }
@@ -1178,169 +1464,267 @@ fn first_holders(keys_1: array<vec2<u32>, 8>, held_1: array<bool, 8>) -> array<u
 }
 
 @compute @workgroup_size(8, 8, 1) 
-fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
+fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
     var local: bool;
+    var s: vec4<f32> = vec4(0f);
+    var nn: vec3<f32> = vec3(0f);
     var local_1: bool;
+    var local_2: bool;
+    var local_3: bool;
+    var n: vec3<f32> = vec3<f32>(0f, 0f, 1f);
     var m: Material;
     var lobe: vec4<f32> = vec4<f32>(1f, 0f, 1f, 1f);
     var r: vec3<f32>;
     var h: u32;
     var t: Shaded = Shaded(vec3(0f), vec3(0f), vec3(0f));
+    var picks: WeightedPicks;
+    var local_4: bool;
+    var start: u32 = 0u;
+    var j: u32;
+    var local_5: bool;
     var keys: array<vec2<u32>, 8>;
     var held: array<bool, 8>;
     var k: u32 = 0u;
     var k_1: u32 = 0u;
     var copies: u32;
-    var j: u32;
+    var j_1: u32;
 
-    let _e4 = view.width;
-    if !((gid.x >= _e4)) {
+    let _e5 = view.width;
+    if (gid.x < _e5) {
         let _e12 = view.height;
-        local = (gid.y >= _e12);
+        local = (gid.y < _e12);
     } else {
-        local = true;
+        local = false;
     }
-    let _e15 = local;
-    if _e15 {
-        return;
-    }
+    let inside = local;
     let texel_1 = vec2<i32>(i32(gid.x), i32(gid.y));
-    let _e21 = surface_at(texel_1);
-    let _e24 = textureLoad(normal_tex, texel_1, 0i);
-    let nn = _e24.xyz;
-    let len2_1 = dot(nn, nn);
-    if !((_e21.w <= 0f)) {
-        local_1 = !((len2_1 > 0f));
-    } else {
-        local_1 = true;
+    if inside {
+        let _e27 = surface_at(texel_1);
+        s = _e27;
+        let _e30 = textureLoad(normal_tex, texel_1, 0i);
+        nn = _e30.xyz;
     }
-    let _e37 = local_1;
-    if _e37 {
-        textureStore(out_tex, texel_1, vec4(0f));
-        textureStore(specular_tex, texel_1, vec4(0f));
+    let _e32 = nn;
+    let _e33 = nn;
+    let len2_1 = dot(_e32, _e33);
+    let _e35 = s;
+    let x_14 = _e35.xyz;
+    if inside {
+        let _e40 = s.w;
+        local_1 = (_e40 > 0f);
+    } else {
+        local_1 = false;
+    }
+    let _e44 = local_1;
+    if _e44 {
+        local_2 = (len2_1 > 0f);
+    } else {
+        local_2 = false;
+    }
+    let _e50 = local_2;
+    if _e50 {
+        local_3 = all((abs(x_14) <= vec3(340282350000000000000000000000000000000f)));
+    } else {
+        local_3 = false;
+    }
+    let has_2 = local_3;
+    if has_2 {
+        let _e65 = nn;
+        n = (_e65 / vec3(sqrt(len2_1)));
+    }
+    let _e76 = n;
+    r = _e76;
+    if has_2 {
+        let mr = textureLoad(metal_rough_tex, texel_1, 0i);
+        let _e83 = textureLoad(base_color_tex, texel_1, 0i);
+        let _e90 = view.eye;
+        let _e93 = material_of(_e83.xyz, mr.z, mr.y, mr.w, normalize((_e90 - x_14)));
+        m = _e93;
+        let _e95 = m.base;
+        let _e97 = m.metallic;
+        let _e100 = view.f0_d;
+        let _e103 = view.f90_d;
+        let _e105 = m.alpha;
+        let _e106 = n;
+        let _e108 = m.v;
+        let _e110 = receiver_lobe(_e95, _e97, _e100, _e103, _e105, dot(_e106, _e108));
+        lobe = _e110;
+        let _e111 = n;
+        let _e113 = m.v;
+        let _e114 = mirror_dir(_e111, _e113);
+        r = _e114;
+    }
+    let _e115 = lobe;
+    let _e116 = range_lobe(_e115);
+    let _e119 = view.shadow_offset;
+    let _e122 = view.eye;
+    let eps_4 = (_e119 * length((_e122 - x_14)));
+    let _e128 = view.seed;
+    let _e132 = view.width;
+    let _e138 = view.frame;
+    let _e139 = point_stream(_e128, ((gid.y * _e132) + gid.x), _e138);
+    let _e140 = pick_stream(_e139);
+    h = _e140;
+    let _e150 = weighted_picks(_e139);
+    picks = _e150;
+    if has_2 {
+        local_4 = (_e116.w >= 0f);
+    } else {
+        local_4 = false;
+    }
+    let _e159 = local_4;
+    let _e160 = tile_walk_begin(lid, x_14, _e116.w, _e159);
+    loop {
+        let _e163 = start;
+        if (_e163 < _e160.total) {
+        } else {
+            break;
+        }
+        {
+            let _e166 = start;
+            let _e167 = tile_walk_fill(lid, _e160, _e166);
+            j = 0u;
+            loop {
+                let _e170 = j;
+                if (_e170 < _e167) {
+                } else {
+                    break;
+                }
+                {
+                    let _e173 = j;
+                    let b_9 = tile_list[_e173];
+                    if !(!(has_2)) {
+                        let _e182 = bsh_nodes[b_9];
+                        let _e183 = r;
+                        let _e184 = bsh_reaches(_e182, x_14, _e183, _e116);
+                        local_5 = !(_e184);
+                    } else {
+                        local_5 = true;
+                    }
+                    let _e187 = local_5;
+                    if _e187 {
+                        continue;
+                    }
+                    let li_10 = bsh_nodes[b_9].light;
+                    let _e192 = n;
+                    let _e193 = r;
+                    let _e194 = lobe;
+                    let _e195 = light_weight(li_10, x_14, _e192, _e193, _e194, _e116);
+                    weighted_offer((&picks), li_10, _e195);
+                }
+                continuing {
+                    let _e197 = j;
+                    j = (_e197 + 1u);
+                }
+            }
+            workgroupBarrier();
+        }
+        continuing {
+            let _e199 = start;
+            start = (_e199 + TILE_LIST);
+        }
+    }
+    if !(has_2) {
+        if inside {
+            textureStore(out_tex, texel_1, vec4(0f));
+            textureStore(specular_tex, texel_1, vec4(0f));
+        }
         return;
     }
-    let x_15 = _e21.xyz;
-    let n_16 = (nn / vec3(sqrt(len2_1)));
-    r = n_16;
-    let mr = textureLoad(metal_rough_tex, texel_1, 0i);
-    let _e61 = textureLoad(base_color_tex, texel_1, 0i);
-    let _e68 = view.eye;
-    let _e71 = material_of(_e61.xyz, mr.z, mr.y, mr.w, normalize((_e68 - x_15)));
-    m = _e71;
-    let _e73 = m.base;
-    let _e75 = m.metallic;
-    let _e78 = view.f0_d;
-    let _e81 = view.f90_d;
-    let _e83 = m.alpha;
-    let _e85 = m.v;
-    let _e87 = receiver_lobe(_e73, _e75, _e78, _e81, _e83, dot(n_16, _e85));
-    lobe = _e87;
-    let _e89 = m.v;
-    let _e90 = mirror_dir(n_16, _e89);
-    r = _e90;
-    let _e91 = lobe;
-    let _e92 = range_lobe(_e91);
-    let _e95 = view.shadow_offset;
-    let _e98 = view.eye;
-    let eps_4 = (_e95 * length((_e98 - x_15)));
-    let _e104 = view.seed;
-    let _e108 = view.width;
-    let _e114 = view.frame;
-    let _e115 = point_stream(_e104, ((gid.y * _e108) + gid.x), _e114);
-    let _e116 = pick_stream(_e115);
-    h = _e116;
-    let _e126 = r;
-    let _e127 = lobe;
-    let _e128 = bsh_weighted_collect(x_15, n_16, _e126, _e127, _e92, _e115);
-    if (_e128.w_sum > 0f) {
+    let _e210 = picks.w_sum;
+    if (_e210 > 0f) {
         loop {
-            let _e136 = k;
-            if (_e136 < K) {
+            let _e217 = k;
+            if (_e217 < K) {
             } else {
                 break;
             }
             {
-                let _e140 = k;
-                let _e145 = k;
-                let _e149 = lights[_e128.light[_e145]].kind;
-                let own = select(0u, (_e140 + 1u), (_e149 == LIGHT_TRIANGLE));
-                let _e153 = k;
-                let _e156 = k;
-                keys[_e153] = vec2<u32>(_e128.light[_e156], own);
-                let _e159 = k;
-                held[_e159] = true;
+                let _e221 = k;
+                let _e226 = k;
+                let _e228 = picks.light[_e226];
+                let _e231 = lights[_e228].kind;
+                let own = select(0u, (_e221 + 1u), (_e231 == LIGHT_TRIANGLE));
+                let _e235 = k;
+                let _e238 = k;
+                let _e240 = picks.light[_e238];
+                keys[_e235] = vec2<u32>(_e240, own);
+                let _e242 = k;
+                held[_e242] = true;
             }
             continuing {
-                let _e163 = k;
-                k = (_e163 + 1u);
+                let _e246 = k;
+                k = (_e246 + 1u);
             }
         }
-        let _e165 = keys;
-        let _e166 = held;
-        let _e167 = first_holders(_e165, _e166);
+        let _e248 = keys;
+        let _e249 = held;
+        let _e250 = first_holders(_e248, _e249);
         loop {
-            let _e170 = k_1;
-            if (_e170 < K) {
+            let _e253 = k_1;
+            if (_e253 < K) {
             } else {
                 break;
             }
             {
-                let _e173 = h;
-                let _e174 = pcg_hash(_e173);
-                h = _e174;
-                let _e175 = h;
-                let _e176 = xi_from_bits(_e175);
-                let _e177 = h;
-                let _e178 = pcg_hash(_e177);
-                h = _e178;
-                let _e179 = h;
-                let _e180 = xi_from_bits(_e179);
-                let _e182 = k_1;
-                let li_6 = _e128.light[_e182];
+                let _e256 = h;
+                let _e257 = pcg_hash(_e256);
+                h = _e257;
+                let _e258 = h;
+                let _e259 = xi_from_bits(_e258);
+                let _e260 = h;
+                let _e261 = pcg_hash(_e260);
+                h = _e261;
+                let _e262 = h;
+                let _e263 = xi_from_bits(_e262);
+                let _e265 = k_1;
+                let li_11 = picks.light[_e265];
                 copies = 0u;
-                let _e186 = k_1;
-                j = _e186;
+                let _e270 = k_1;
+                j_1 = _e270;
                 loop {
-                    let _e188 = j;
-                    if (_e188 < K) {
+                    let _e272 = j_1;
+                    if (_e272 < K) {
                     } else {
                         break;
                     }
                     {
-                        let _e191 = copies;
-                        let _e194 = j;
-                        let _e196 = k_1;
-                        copies = (_e191 + select(0u, 1u, (_e167[_e194] == _e196)));
+                        let _e275 = copies;
+                        let _e278 = j_1;
+                        let _e280 = k_1;
+                        copies = (_e275 + select(0u, 1u, (_e250[_e278] == _e280)));
                     }
                     continuing {
-                        let _e201 = j;
-                        j = (_e201 + 1u);
+                        let _e285 = j_1;
+                        j_1 = (_e285 + 1u);
                     }
                 }
-                let _e203 = copies;
-                if (_e203 > 0u) {
-                    let _e206 = t;
-                    let _e207 = r;
-                    let _e208 = m;
-                    let _e211 = k_1;
-                    let _e214 = weighted_pick_weight(_e128.w_sum, _e128.w[_e211], K);
-                    let _e215 = copies;
-                    let _e218 = shade_pick(li_6, x_15, n_16, _e207, _e92, _e208, (_e214 * f32(_e215)), _e176, _e180, eps_4);
-                    let _e219 = add(_e206, _e218);
-                    t = _e219;
+                let _e287 = copies;
+                if (_e287 > 0u) {
+                    let _e290 = t;
+                    let _e291 = n;
+                    let _e292 = r;
+                    let _e293 = m;
+                    let _e295 = picks.w_sum;
+                    let _e297 = k_1;
+                    let _e299 = picks.w[_e297];
+                    let _e301 = weighted_pick_weight(_e295, _e299, K);
+                    let _e302 = copies;
+                    let _e305 = shade_pick(li_11, x_14, _e291, _e292, _e116, _e293, (_e301 * f32(_e302)), _e259, _e263, eps_4);
+                    let _e306 = add(_e290, _e305);
+                    t = _e306;
                 }
             }
             continuing {
-                let _e221 = k_1;
-                k_1 = (_e221 + 1u);
+                let _e308 = k_1;
+                k_1 = (_e308 + 1u);
             }
         }
     }
-    let count = _e128.n;
-    let _e226 = t.e;
-    textureStore(out_tex, texel_1, vec4<f32>(_e226, f32(count)));
-    let _e231 = t.specular;
-    textureStore(specular_tex, texel_1, vec4<f32>(_e231, 0f));
+    let count = picks.n;
+    let _e314 = t.e;
+    textureStore(out_tex, texel_1, vec4<f32>(_e314, f32(count)));
+    let _e319 = t.specular;
+    textureStore(specular_tex, texel_1, vec4<f32>(_e319, 0f));
     return;
 }

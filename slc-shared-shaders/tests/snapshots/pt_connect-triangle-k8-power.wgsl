@@ -148,6 +148,8 @@ const TEMPORAL_CHANGE_HIGH: f32 = 8f;
 const TEMPORAL_MIN_WEIGHT: f32 = 0.01f;
 const K: u32 = 8u;
 const BSH: u32 = 0u;
+const BSH_TILE_DEPTH: u32 = 8u;
+const BSH_TILE_SUBTREES: u32 = 256u;
 const BVH: u32 = 0u;
 
 @group(0) @binding(6) 
@@ -482,12 +484,12 @@ fn diffuse_brdf(base_1: vec3<f32>, metallic_1: f32, f0_d_1: vec3<f32>, f90_d_1: 
 }
 
 fn half_cosine(v: vec3<f32>, l: vec3<f32>) -> f32 {
-    let h_2 = (v + l);
-    let len2_ = dot(h_2, h_2);
+    let h_3 = (v + l);
+    let len2_ = dot(h_3, h_3);
     if (len2_ <= 0f) {
         return 0f;
     }
-    return saturate((dot(v, h_2) / sqrt(len2_)));
+    return saturate((dot(v, h_3) / sqrt(len2_)));
 }
 
 fn specular_brdf(base_2: vec3<f32>, metallic_2: f32, f0_d_2: vec3<f32>, f90_d_2: f32, alpha_3: f32, n_9: vec3<f32>, v_1: vec3<f32>, l_1: vec3<f32>) -> vec3<f32> {
@@ -506,10 +508,10 @@ fn specular_brdf(base_2: vec3<f32>, metallic_2: f32, f0_d_2: vec3<f32>, f90_d_2:
     }
     let hs = (v_1 + l_1);
     let inv = (1f / sqrt(dot(hs, hs)));
-    let h_3 = (hs * inv);
-    let c_8 = cross(n_9, h_3);
-    let _e32 = ggx_d(dot(n_9, h_3), dot(c_8, c_8), alpha_3);
-    let _e34 = specular_fresnel(base_2, metallic_2, f0_d_2, f90_d_2, dot(v_1, h_3));
+    let h_4 = (hs * inv);
+    let c_8 = cross(n_9, h_4);
+    let _e32 = ggx_d(dot(n_9, h_4), dot(c_8, c_8), alpha_3);
+    let _e34 = specular_fresnel(base_2, metallic_2, f0_d_2, f90_d_2, dot(v_1, h_4));
     let _e35 = smith_visibility(n_l_1, n_v_2, alpha_3);
     return (_e34 * (_e32 * _e35));
 }
@@ -1019,13 +1021,40 @@ fn bsh_next_leaf_lobe(nodes_3: u32, start: u32, x_5: vec3<f32>, r_4: vec3<f32>, 
     return BSH_NONE;
 }
 
+fn reservoir_offer(picks: ptr<function, Picks>, h_1: ptr<function, u32>, light: u32) {
+    let _e4 = (*picks).n;
+    let _e5 = reservoir_takes(_e4);
+    if _e5 {
+        let _e7 = (*picks).n;
+        (*picks).n = (_e7 + 1u);
+        let _e10 = (*h_1);
+        let _e11 = pcg_hash(_e10);
+        (*h_1) = _e11;
+        let hi_3 = (*h_1);
+        let _e13 = (*h_1);
+        let _e14 = pcg_hash(_e13);
+        (*h_1) = _e14;
+        let _e16 = (*picks).n;
+        let _e18 = (*h_1);
+        let _e19 = reservoir_slot(_e16, K, hi_3, _e18);
+        if (_e19 < K) {
+            (*picks).light[_e19] = light;
+            return;
+        } else {
+            return;
+        }
+    } else {
+        return;
+    }
+}
+
 fn bsh_collect(x_6: vec3<f32>, r_5: vec3<f32>, rl_5: vec4<f32>, seed_1: u32) -> Picks {
-    var picks: Picks;
-    var h_1: u32;
+    var picks_1: Picks;
+    var h_2: u32;
     var i_3: u32;
 
-    picks.n = 0u;
-    h_1 = seed_1;
+    picks_1.n = 0u;
+    h_2 = seed_1;
     let _e10 = bsh_first(BSH);
     let _e11 = bsh_next_leaf_lobe(BSH, _e10, x_6, r_5, rl_5);
     i_3 = _e11;
@@ -1036,37 +1065,19 @@ fn bsh_collect(x_6: vec3<f32>, r_5: vec3<f32>, rl_5: vec4<f32>, seed_1: u32) -> 
             break;
         }
         {
-            let _e17 = picks.n;
-            let _e18 = reservoir_takes(_e17);
-            if _e18 {
-                let _e20 = picks.n;
-                picks.n = (_e20 + 1u);
-                let _e23 = h_1;
-                let _e24 = pcg_hash(_e23);
-                h_1 = _e24;
-                let hi_3 = h_1;
-                let _e26 = h_1;
-                let _e27 = pcg_hash(_e26);
-                h_1 = _e27;
-                let _e29 = picks.n;
-                let _e31 = h_1;
-                let _e32 = reservoir_slot(_e29, K, hi_3, _e31);
-                if (_e32 < K) {
-                    let _e38 = i_3;
-                    let _e41 = bsh_nodes[_e38].light;
-                    picks.light[_e32] = _e41;
-                }
-            }
+            let _e17 = i_3;
+            let _e20 = bsh_nodes[_e17].light;
+            reservoir_offer((&picks_1), (&h_2), _e20);
         }
         continuing {
-            let _e44 = i_3;
-            let _e47 = bsh_nodes[_e44].next;
-            let _e48 = bsh_next_leaf_lobe(BSH, _e47, x_6, r_5, rl_5);
-            i_3 = _e48;
+            let _e23 = i_3;
+            let _e26 = bsh_nodes[_e23].next;
+            let _e27 = bsh_next_leaf_lobe(BSH, _e26, x_6, r_5, rl_5);
+            i_3 = _e27;
         }
     }
-    let _e49 = picks;
-    return _e49;
+    let _e28 = picks_1;
+    return _e28;
 }
 
 fn connect_record(l_8: GpuLight, x_7: vec3<f32>, n_13: vec3<f32>, ng_1: vec3<f32>, r2_2: f32, rt2_4: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32, trace_1: bool) -> Connection {

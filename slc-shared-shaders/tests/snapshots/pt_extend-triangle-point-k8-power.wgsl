@@ -162,6 +162,8 @@ const TEMPORAL_MIN_WEIGHT: f32 = 0.01f;
 const K: u32 = 8u;
 const BVH: u32 = 0u;
 const BSH: u32 = 0u;
+const BSH_TILE_DEPTH: u32 = 8u;
+const BSH_TILE_SUBTREES: u32 = 256u;
 
 @group(0) @binding(5) 
 var<storage> geo_nodes: array<GpuGeoNode>;

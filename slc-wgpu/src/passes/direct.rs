@@ -579,6 +579,11 @@ impl DirectPass {
             ..Features::default()
         };
         check_light_limits(gpu, lights.len() as u64, 0)?;
+        gpu.require(
+            "max_compute_workgroup_storage_size (direct pass tile list)",
+            slc_shared_shaders::direct_workgroup_bytes(&features),
+            gpu.limits.max_compute_workgroup_storage_size as u64,
+        )?;
         check_kernels(
             gpu,
             &[

@@ -74,6 +74,8 @@ const float TEMPORAL_CHANGE_LOW = 4.0;
 const float TEMPORAL_CHANGE_HIGH = 8.0;
 const float TEMPORAL_MIN_WEIGHT = 0.01;
 const uint BSH = 0u;
+const uint BSH_TILE_DEPTH = 8u;
+const uint BSH_TILE_SUBTREES = 256u;
 
 layout(std140) uniform RefitParams_block_0Compute { RefitParams _group_0_binding_0_cs; };
 

@@ -68,6 +68,16 @@ struct Connection {
     vec3 y;
     float cos_x;
 };
+struct WorkgroupBox {
+    vec3 lo;
+    vec3 hi;
+};
+struct TileWalk {
+    vec3 lo;
+    vec3 hi;
+    float w;
+    uint total;
+};
 struct Shaded {
     vec3 e;
     vec3 diffuse;
@@ -139,6 +149,11 @@ const float TEMPORAL_CHANGE_HIGH = 8.0;
 const float TEMPORAL_MIN_WEIGHT = 0.01;
 const uint K = 8u;
 const uint BSH = 0u;
+const uint BSH_TILE_DEPTH = 8u;
+const uint BSH_TILE_SUBTREES = 256u;
+const uint TILE_THREADS = 64u;
+const uint BOX_THREADS = 64u;
+const uint TILE_LIST = 1024u;
 
 layout(std430) readonly buffer type_7_block_0Compute { GpuGeoNode _group_1_binding_6_cs[]; };
 
@@ -166,17 +181,31 @@ layout(std430) readonly buffer type_13_block_6Compute { BshNode _group_1_binding
 
 layout(std430) readonly buffer type_14_block_7Compute { GpuLightCone _group_1_binding_5_cs[]; };
 
+shared vec3 wg_lo[64];
+
+shared vec3 wg_hi[64];
+
+shared WorkgroupBox wg_box;
+
+shared uint tile_list[1024];
+
+shared uint subtree_at[256];
+
+shared uint tile_scale;
+
+shared uint tile_total;
+
 
 float to_f32_(uint u) {
     return float(u);
 }
 
-uint mul_lo_u32_(uint a, uint b_1) {
-    return (a * b_1);
+uint mul_lo_u32_(uint a, uint b) {
+    return (a * b);
 }
 
-uint add_wrap_u32_(uint a_1, uint b_2) {
-    return (a_1 + b_2);
+uint add_wrap_u32_(uint a_1, uint b_1) {
+    return (a_1 + b_1);
 }
 
 float f32_from_bits(uint u_1) {
@@ -223,6 +252,12 @@ bool sphere_contains_point(vec3 c, float r_1, vec3 x_1) {
     return (dot(v_5, v_5) <= (r_1 * r_1));
 }
 
+bool sphere_overlaps_aabb(vec3 c_1, float r_2, vec3 bmin, vec3 bmax) {
+    vec3 q_1 = clamp(c_1, bmin, bmax);
+    vec3 v_6 = (q_1 - c_1);
+    return (dot(v_6, v_6) <= (r_2 * r_2));
+}
+
 float inverse_square(float d2_2) {
     return (1.0 / max(d2_2, MIN_D2_));
 }
@@ -233,44 +268,44 @@ float connection_factor(float cos_x, float d2_3, float rt2_1, float w_1) {
     return (((cos_x * _e4) * _e6) * w_1);
 }
 
-float connection_cosine(vec3 x_2, vec3 y, vec3 n, vec3 ng, float r2_1) {
-    bool local_4 = false;
-    bool local_5 = false;
-    vec3 v_6 = (x_2 - y);
-    float d2_6 = dot(v_6, v_6);
+float connection_cosine(vec3 x_2, vec3 y, vec3 n_1, vec3 ng, float r2_1) {
+    bool local_8 = false;
+    bool local_9 = false;
+    vec3 v_7 = (x_2 - y);
+    float d2_6 = dot(v_7, v_7);
     bool _e7 = slc_keep(r2_1, d2_6);
     if (!(!(_e7))) {
-        local_4 = !((d2_6 > 0.0));
+        local_8 = !((d2_6 > 0.0));
     } else {
-        local_4 = true;
+        local_8 = true;
     }
-    bool _e16 = local_4;
+    bool _e16 = local_8;
     if (_e16) {
         return 0.0;
     }
-    vec3 w_7 = (v_6 / vec3(sqrt(d2_6)));
-    float cos_x_1 = -(dot(n, w_7));
+    vec3 w_10 = (v_7 / vec3(sqrt(d2_6)));
+    float cos_x_1 = -(dot(n_1, w_10));
     if (!((cos_x_1 <= 0.0))) {
-        local_5 = (dot(ng, w_7) >= 0.0);
+        local_9 = (dot(ng, w_10) >= 0.0);
     } else {
-        local_5 = true;
+        local_9 = true;
     }
-    bool _e32 = local_5;
+    bool _e32 = local_9;
     if (_e32) {
         return 0.0;
     }
     return cos_x_1;
 }
 
-float triangle_lobe(vec3 n_1, float area, vec3 w_2) {
-    return (area * max(dot(n_1, w_2), 0.0));
+float triangle_lobe(vec3 n_2, float area, vec3 w_2) {
+    return (area * max(dot(n_2, w_2), 0.0));
 }
 
-vec3 triangle_sample(vec3 a_2, vec3 b_3, vec3 c_1, float u1_, float u2_) {
+vec3 triangle_sample(vec3 a_2, vec3 b_2, vec3 c_2, float u1_, float u2_) {
     float su = sqrt(u1_);
     float b0_ = (1.0 - su);
     float b1_ = (u2_ * su);
-    return (((a_2 * b0_) + (b_3 * b1_)) + (c_1 * ((1.0 - b0_) - b1_)));
+    return (((a_2 * b0_) + (b_2 * b1_)) + (c_2 * ((1.0 - b0_) - b1_)));
 }
 
 float bsh_scaled_radius(BshNode node, float scale) {
@@ -295,41 +330,41 @@ float weighted_threshold(float w_sum, float u_2) {
     return (w_sum / (1.0 - u_2));
 }
 
-float resample_target(vec3 c_2) {
-    return (((c_2.x + c_2.y) + c_2.z) * 0.33333334);
+float resample_target(vec3 c_3) {
+    return (((c_3.x + c_3.y) + c_3.z) * 0.33333334);
 }
 
-float slot_target(vec3 c_3, uint slot, uint k_2) {
+float slot_target(vec3 c_4, uint slot, uint k_2) {
     if ((k_2 < 3u)) {
-        float _e5 = resample_target(c_3);
+        float _e5 = resample_target(c_4);
         return _e5;
     }
-    uint j_2 = (slot % 3u);
-    if ((j_2 == 0u)) {
-        return c_3.x;
+    uint j_3 = (slot % 3u);
+    if ((j_3 == 0u)) {
+        return c_4.x;
     }
-    if ((j_2 == 1u)) {
-        return c_3.y;
+    if ((j_3 == 1u)) {
+        return c_4.y;
     }
-    return c_3.z;
+    return c_4.z;
 }
 
 vec3 slot_share(uint slot_1, uint k_3) {
     if ((k_3 < 3u)) {
         float _e4 = to_f32_(k_3);
-        float w_8 = (1.0 / _e4);
-        return vec3(w_8, w_8, w_8);
+        float w_11 = (1.0 / _e4);
+        return vec3(w_11, w_11, w_11);
     }
-    uint j_3 = (slot_1 % 3u);
-    float _e15 = to_f32_((((k_3 + 2u) - j_3) / 3u));
-    float w_9 = (1.0 / _e15);
-    if ((j_3 == 0u)) {
-        return vec3(w_9, 0.0, 0.0);
+    uint j_4 = (slot_1 % 3u);
+    float _e15 = to_f32_((((k_3 + 2u) - j_4) / 3u));
+    float w_12 = (1.0 / _e15);
+    if ((j_4 == 0u)) {
+        return vec3(w_12, 0.0, 0.0);
     }
-    if ((j_3 == 1u)) {
-        return vec3(0.0, w_9, 0.0);
+    if ((j_4 == 1u)) {
+        return vec3(0.0, w_12, 0.0);
     }
-    return vec3(0.0, 0.0, w_9);
+    return vec3(0.0, 0.0, w_12);
 }
 
 float ggx_d(float cos_h, float sin2_h, float alpha) {
@@ -337,8 +372,8 @@ float ggx_d(float cos_h, float sin2_h, float alpha) {
         return 0.0;
     }
     float a2_ = (alpha * alpha);
-    float t_1 = (((cos_h * cos_h) * a2_) + sin2_h);
-    return ((a2_ * INV_PI) / (t_1 * t_1));
+    float t_4 = (((cos_h * cos_h) * a2_) + sin2_h);
+    return ((a2_ * INV_PI) / (t_4 * t_4));
 }
 
 float smith_root(float cos_, float alpha_1) {
@@ -347,13 +382,13 @@ float smith_root(float cos_, float alpha_1) {
 }
 
 float smith_visibility(float n_l, float n_v, float alpha_2) {
-    bool local_6 = false;
+    bool local_10 = false;
     if (!((n_l <= 0.0))) {
-        local_6 = (n_v <= 0.0);
+        local_10 = (n_v <= 0.0);
     } else {
-        local_6 = true;
+        local_10 = true;
     }
-    bool _e11 = local_6;
+    bool _e11 = local_10;
     if (_e11) {
         return 0.0;
     }
@@ -363,9 +398,9 @@ float smith_visibility(float n_l, float n_v, float alpha_2) {
 }
 
 vec3 fresnel_schlick(vec3 f0_, float f90_, float v_h) {
-    float c_9 = clamp((1.0 - v_h), 0.0, 1.0);
-    float c2_ = (c_9 * c_9);
-    return (f0_ + ((vec3(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_9)));
+    float c_10 = clamp((1.0 - v_h), 0.0, 1.0);
+    float c2_ = (c_10 * c_10);
+    return (f0_ + ((vec3(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_10)));
 }
 
 vec3 specular_fresnel(vec3 base, float metallic, vec3 f0_d, float f90_d, float v_h_1) {
@@ -375,38 +410,38 @@ vec3 specular_fresnel(vec3 base, float metallic, vec3 f0_d, float f90_d, float v
 }
 
 bool has_specular(float metallic_1, vec3 f0_d_1, float f90_d_1) {
-    bool local_7 = false;
-    bool local_8 = false;
+    bool local_11 = false;
+    bool local_12 = false;
     if (!((metallic_1 > 0.0))) {
-        local_7 = (f90_d_1 > 0.0);
+        local_11 = (f90_d_1 > 0.0);
     } else {
-        local_7 = true;
+        local_11 = true;
     }
-    bool _e11 = local_7;
+    bool _e11 = local_11;
     if (!(_e11)) {
-        local_8 = (max(max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0.0);
+        local_12 = (max(max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0.0);
     } else {
-        local_8 = true;
+        local_12 = true;
     }
-    bool _e23 = local_8;
+    bool _e23 = local_12;
     return _e23;
 }
 
-float channel_mean(vec3 c_4) {
-    return (((c_4.x + c_4.y) + c_4.z) * 0.33333334);
+float channel_mean(vec3 c_5) {
+    return (((c_5.x + c_5.y) + c_5.z) * 0.33333334);
 }
 
 vec4 receiver_lobe(vec3 base_1, float metallic_2, vec3 f0_d_2, float f90_d_2, float alpha_3, float n_v_1) {
-    bool local_9 = false;
+    bool local_13 = false;
     vec3 _e10 = fresnel_schlick(f0_d_2, f90_d_2, n_v_1);
     float _e16 = channel_mean((((vec3(1.0, 1.0, 1.0) - _e10) * base_1) * (1.0 - metallic_2)));
     if (!((n_v_1 <= 0.0))) {
         bool _e22 = has_specular(metallic_2, f0_d_2, f90_d_2);
-        local_9 = !(_e22);
+        local_13 = !(_e22);
     } else {
-        local_9 = true;
+        local_13 = true;
     }
-    bool _e25 = local_9;
+    bool _e25 = local_13;
     if (_e25) {
         return vec4(_e16, 0.0, alpha_3, n_v_1);
     }
@@ -442,8 +477,8 @@ vec4 range_lobe(vec4 lobe_4) {
     return vec4(lobe_4.x, _e10, (lobe_4.z * lobe_4.z), sqrt(_e14));
 }
 
-vec3 mirror_dir(vec3 n_2, vec3 v) {
-    return ((n_2 * (2.0 * dot(n_2, v))) - v);
+vec3 mirror_dir(vec3 n_3, vec3 v) {
+    return ((n_3 * (2.0 * dot(n_3, v))) - v);
 }
 
 float bevy_alpha(float perceptual) {
@@ -455,23 +490,23 @@ float bevy_f0_(float reflectance) {
     return ((0.16 * reflectance) * reflectance);
 }
 
-float bevy_dfg(float r_2, float n_v_2) {
-    float rx = (1.0 - r_2);
-    float a004_ = ((min((rx * rx), exp2((-9.28 * n_v_2))) * rx) + (0.0425 - (0.0275 * r_2)));
-    float x_12 = max(((1.04 - (0.572 * r_2)) - (1.04 * a004_)), 5e-5);
-    float y_1 = max((((0.022 * r_2) - 0.04) + (1.04 * a004_)), 5e-5);
+float bevy_dfg(float r_3, float n_v_2) {
+    float rx = (1.0 - r_3);
+    float a004_ = ((min((rx * rx), exp2((-9.28 * n_v_2))) * rx) + (0.0425 - (0.0275 * r_3)));
+    float x_12 = max(((1.04 - (0.572 * r_3)) - (1.04 * a004_)), 5e-5);
+    float y_1 = max((((0.022 * r_3) - 0.04) + (1.04 * a004_)), 5e-5);
     return (x_12 + y_1);
 }
 
-vec3 bevy_brdf(vec3 base_2, float metallic_3, float r_3, float reflectance_1, vec3 n_3, vec3 v_1, vec3 l) {
-    float n_l_1 = clamp(dot(n_3, l), 0.0, 1.0);
+vec3 bevy_brdf(vec3 base_2, float metallic_3, float r_4, float reflectance_1, vec3 n_4, vec3 v_1, vec3 l) {
+    float n_l_1 = clamp(dot(n_4, l), 0.0, 1.0);
     if ((n_l_1 <= 0.0)) {
         return vec3(0.0, 0.0, 0.0);
     }
-    float _e15 = bevy_alpha(r_3);
-    float n_v_3 = max(dot(n_3, v_1), 0.0001);
+    float _e15 = bevy_alpha(r_4);
+    float n_v_3 = max(dot(n_4, v_1), 0.0001);
     vec3 h_2 = normalize((l + v_1));
-    float n_h = clamp(dot(n_3, h_2), 0.0, 1.0);
+    float n_h = clamp(dot(n_4, h_2), 0.0, 1.0);
     float l_h = clamp(dot(l, h_2), 0.0, 1.0);
     float f90_d_3 = (0.5 + (((2.0 * _e15) * l_h) * l_h));
     vec3 _e35 = fresnel_schlick(vec3(1.0, 1.0, 1.0), f90_d_3, n_l_1);
@@ -482,7 +517,7 @@ vec3 bevy_brdf(vec3 base_2, float metallic_3, float r_3, float reflectance_1, ve
     float f90_1 = clamp((((f0_1.x + f0_1.y) + f0_1.z) * 16.5), 0.0, 1.0);
     float _e64 = ggx_d(n_h, (1.0 - (n_h * n_h)), _e15);
     float _e65 = smith_visibility(n_l_1, n_v_3, _e15);
-    float _e70 = bevy_dfg(r_3, n_v_3);
+    float _e70 = bevy_dfg(r_4, n_v_3);
     vec3 comp = (vec3(1.0, 1.0, 1.0) + (f0_1 * ((1.0 / _e70) - 1.0)));
     vec3 _e77 = fresnel_schlick(f0_1, f90_1, l_h);
     vec3 spec = ((_e77 * comp) * (_e64 * _e65));
@@ -490,45 +525,45 @@ vec3 bevy_brdf(vec3 base_2, float metallic_3, float r_3, float reflectance_1, ve
 }
 
 float cone_cos_of(vec3 v_2, float d2_4, float a_3, vec3 d) {
-    bool local_10 = false;
-    bool local_11 = false;
+    bool local_14 = false;
+    bool local_15 = false;
     float vd = dot(v_2, d);
     float h2_ = (d2_4 - (a_3 * a_3));
     if (!((h2_ <= 0.0))) {
         if ((vd >= 0.0)) {
-            local_11 = ((vd * vd) >= h2_);
+            local_15 = ((vd * vd) >= h2_);
         } else {
-            local_11 = false;
+            local_15 = false;
         }
-        bool _e19 = local_11;
-        local_10 = _e19;
+        bool _e19 = local_15;
+        local_14 = _e19;
     } else {
-        local_10 = true;
+        local_14 = true;
     }
-    bool _e21 = local_10;
+    bool _e21 = local_14;
     if (_e21) {
         return 1.0;
     }
-    vec3 c_10 = cross(v_2, d);
-    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_10, c_10)) * a_3)) / d2_4), 1.0);
+    vec3 c_11 = cross(v_2, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_11, c_11)) * a_3)) / d2_4), 1.0);
 }
 
 float cone_cos_toward(vec3 center, float radius, vec3 p, vec3 d_1) {
-    vec3 v_7 = (center - p);
-    float _e6 = cone_cos_of(v_7, dot(v_7, v_7), radius, d_1);
+    vec3 v_8 = (center - p);
+    float _e6 = cone_cos_of(v_8, dot(v_8, v_8), radius, d_1);
     return _e6;
 }
 
 float range_scale_at(vec4 rl, float cos_t) {
-    float t_2 = (((0.5 + (0.5 * cos_t)) * (rl.z - 1.0)) + 1.0);
-    return clamp((rl.x + ((rl.y * rl.z) / (t_2 * t_2))), 1.0, (rl.w * rl.w));
+    float t_5 = (((0.5 + (0.5 * cos_t)) * (rl.z - 1.0)) + 1.0);
+    return clamp((rl.x + ((rl.y * rl.z) / (t_5 * t_5))), 1.0, (rl.w * rl.w));
 }
 
-float range_scale_toward(vec4 rl_1, vec3 center_1, float radius_1, vec3 p_1, vec3 r_4) {
+float range_scale_toward(vec4 rl_1, vec3 center_1, float radius_1, vec3 p_1, vec3 r_5) {
     if ((rl_1.w <= 1.0)) {
         return 1.0;
     }
-    float _e9 = cone_cos_toward(center_1, radius_1, p_1, r_4);
+    float _e9 = cone_cos_toward(center_1, radius_1, p_1, r_5);
     float _e10 = range_scale_at(rl_1, _e9);
     return _e10;
 }
@@ -548,78 +583,78 @@ vec3 ray_inverse3_(vec3 d_2) {
     return vec3(_e2, _e4, _e6);
 }
 
-float ray_aabb(vec3 o, vec3 inv_d, vec3 bmin, vec3 bmax, float t_max) {
-    vec3 t0_ = ((bmin - o) * inv_d);
-    vec3 t1_ = ((bmax - o) * inv_d);
-    vec3 lo = min(t0_, t1_);
-    vec3 hi = max(t0_, t1_);
-    float t_in = max(max(lo.x, lo.y), max(lo.z, 0.0));
-    float t_out = min(min(hi.x, hi.y), min(hi.z, t_max));
+float ray_aabb(vec3 o, vec3 inv_d, vec3 bmin_1, vec3 bmax_1, float t_max) {
+    vec3 t0_ = ((bmin_1 - o) * inv_d);
+    vec3 t1_ = ((bmax_1 - o) * inv_d);
+    vec3 lo_3 = min(t0_, t1_);
+    vec3 hi_3 = max(t0_, t1_);
+    float t_in = max(max(lo_3.x, lo_3.y), max(lo_3.z, 0.0));
+    float t_out = min(min(hi_3.x, hi_3.y), min(hi_3.z, t_max));
     if ((t_in <= t_out)) {
         return t_in;
     }
     return -1.0;
 }
 
-vec3 triangle_normal(vec3 a_4, vec3 b_4, vec3 c_5) {
-    bool local_12 = false;
-    vec3 n_9 = cross((b_4 - a_4), (c_5 - a_4));
-    float l2_ = dot(n_9, n_9);
+vec3 triangle_normal(vec3 a_4, vec3 b_3, vec3 c_6) {
+    bool local_16 = false;
+    vec3 n_10 = cross((b_3 - a_4), (c_6 - a_4));
+    float l2_ = dot(n_10, n_10);
     if (!(!((l2_ > 0.0)))) {
-        local_12 = !((l2_ < 3e38));
+        local_16 = !((l2_ < 3e38));
     } else {
-        local_12 = true;
+        local_16 = true;
     }
-    bool _e17 = local_12;
+    bool _e17 = local_16;
     if (_e17) {
         return vec3(0.0, 0.0, 0.0);
     }
-    return (n_9 / vec3(sqrt(l2_)));
+    return (n_10 / vec3(sqrt(l2_)));
 }
 
-float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_5, vec3 b_5, vec3 c_6, float t_min, float t_max_1) {
-    bool local_13 = false;
-    bool local_14 = false;
-    bool local_15 = false;
-    vec3 e1_ = (b_5 - a_5);
-    vec3 e2_ = (c_6 - a_5);
-    vec3 p_2 = cross(d_3, e2_);
-    float det = dot(e1_, p_2);
+float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_5, vec3 b_4, vec3 c_7, float t_min, float t_max_1) {
+    bool local_17 = false;
+    bool local_18 = false;
+    bool local_19 = false;
+    vec3 e1_ = (b_4 - a_5);
+    vec3 e2_ = (c_7 - a_5);
+    vec3 p_4 = cross(d_3, e2_);
+    float det = dot(e1_, p_4);
     if ((abs(det) <= 0.0)) {
         return -1.0;
     }
     float inv = (1.0 / det);
-    vec3 s_4 = (o_1 - a_5);
-    float u_3 = (dot(s_4, p_2) * inv);
+    vec3 s_10 = (o_1 - a_5);
+    float u_3 = (dot(s_10, p_4) * inv);
     if (!((u_3 < 0.0))) {
-        local_13 = (u_3 > 1.0);
+        local_17 = (u_3 > 1.0);
     } else {
-        local_13 = true;
+        local_17 = true;
     }
-    bool _e28 = local_13;
+    bool _e28 = local_17;
     if (_e28) {
         return -1.0;
     }
-    vec3 q_1 = cross(s_4, e1_);
-    float v_8 = (dot(d_3, q_1) * inv);
-    if (!((v_8 < 0.0))) {
-        local_14 = ((u_3 + v_8) > 1.0);
+    vec3 q_2 = cross(s_10, e1_);
+    float v_9 = (dot(d_3, q_2) * inv);
+    if (!((v_9 < 0.0))) {
+        local_18 = ((u_3 + v_9) > 1.0);
     } else {
-        local_14 = true;
+        local_18 = true;
     }
-    bool _e42 = local_14;
+    bool _e42 = local_18;
     if (_e42) {
         return -1.0;
     }
-    float t_3 = (dot(e2_, q_1) * inv);
-    if ((t_3 > t_min)) {
-        local_15 = (t_3 < t_max_1);
+    float t_6 = (dot(e2_, q_2) * inv);
+    if ((t_6 > t_min)) {
+        local_19 = (t_6 < t_max_1);
     } else {
-        local_15 = false;
+        local_19 = false;
     }
-    bool _e51 = local_15;
+    bool _e51 = local_19;
     if (_e51) {
-        return t_3;
+        return t_6;
     }
     return -1.0;
 }
@@ -663,12 +698,12 @@ GeoHit trace(vec3 o_2, vec3 d_4, float t_min_1, float t_max_2, bool any_hit) {
     vec3 _e14 = ray_inverse3_(d_4);
     while(true) {
         uint _e21 = node_2;
-        GpuGeoNode n_10 = _group_1_binding_6_cs[_e21];
+        GpuGeoNode n_11 = _group_1_binding_6_cs[_e21];
         float _e27 = hit.t;
-        float _e28 = ray_aabb(o_2, _e14, n_10.bmin, n_10.bmax, _e27);
+        float _e28 = ray_aabb(o_2, _e14, n_11.bmin, n_11.bmax, _e27);
         if ((_e28 >= 0.0)) {
-            if ((n_10.count > 0u)) {
-                i = n_10.first;
+            if ((n_11.count > 0u)) {
+                i = n_11.first;
                 bool loop_init = true;
                 while(true) {
                     if (!loop_init) {
@@ -677,15 +712,15 @@ GeoHit trace(vec3 o_2, vec3 d_4, float t_min_1, float t_max_2, bool any_hit) {
                     }
                     loop_init = false;
                     uint _e36 = i;
-                    if ((_e36 < (n_10.first + n_10.count))) {
+                    if ((_e36 < (n_11.first + n_11.count))) {
                     } else {
                         break;
                     }
                     {
                         uint _e42 = i;
-                        GpuTriangle t_4 = _group_1_binding_7_cs[_e42];
+                        GpuTriangle t_7 = _group_1_binding_7_cs[_e42];
                         float _e49 = hit.t;
-                        float _e50 = ray_triangle(o_2, d_4, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e49);
+                        float _e50 = ray_triangle(o_2, d_4, t_7.v0_, t_7.v1_, t_7.v2_, t_min_1, _e49);
                         if ((_e50 > 0.0)) {
                             hit.t = _e50;
                             uint _e55 = i;
@@ -701,11 +736,11 @@ GeoHit trace(vec3 o_2, vec3 d_4, float t_min_1, float t_max_2, bool any_hit) {
                 uint _e60 = sp;
                 if ((_e60 < 64u)) {
                     uint _e63 = sp;
-                    stack[_e63] = (n_10.first + 1u);
+                    stack[_e63] = (n_11.first + 1u);
                     uint _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_2 = n_10.first;
+                node_2 = n_11.first;
                 continue;
             }
         }
@@ -723,8 +758,8 @@ GeoHit trace(vec3 o_2, vec3 d_4, float t_min_1, float t_max_2, bool any_hit) {
     return _e81;
 }
 
-bool occluded(vec3 a_6, vec3 b_6) {
-    vec3 dv = (b_6 - a_6);
+bool occluded(vec3 a_6, vec3 b_5) {
+    vec3 dv = (b_5 - a_6);
     float len_1 = length(dv);
     if ((len_1 <= 0.0)) {
         return false;
@@ -751,79 +786,129 @@ uint bsh_first(uint nodes_2) {
     return BSH_NONE;
 }
 
-float bsh_inner_scale(float a_7, vec3 v_3, float d2_5, vec3 r_5, vec4 rl_2) {
-    float _e5 = cone_cos_of(v_3, d2_5, a_7, r_5);
+float bsh_inner_scale(float a_7, vec3 v_3, float d2_5, vec3 r_6, vec4 rl_2) {
+    float _e5 = cone_cos_of(v_3, d2_5, a_7, r_6);
     float _e8 = range_scale_at(rl_2, (_e5 + 2e-6));
     return _e8;
 }
 
-bool bsh_reaches(BshNode node_3, vec3 x_4, vec3 r_6, vec4 rl_3) {
-    bool local_16 = false;
-    bool local_17 = false;
+bool bsh_reaches(BshNode node_3, vec3 x_4, vec3 r_7, vec4 rl_3) {
+    bool local_20 = false;
+    bool local_21 = false;
     bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_4);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
         bool _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001)), x_4);
-        local_16 = !(_e20);
+        local_20 = !(_e20);
     } else {
-        local_16 = true;
+        local_20 = true;
     }
-    bool _e23 = local_16;
+    bool _e23 = local_20;
     if (_e23) {
         return false;
     }
     float _e25 = bsh_range_bound(node_3);
-    vec3 v_9 = (x_4 - node_3.center);
-    float d2_7 = dot(v_9, v_9);
+    vec3 v_10 = (x_4 - node_3.center);
+    float d2_7 = dot(v_10, v_10);
     float reach_max = (node_3.extent + ((rl_3.w * 1.001) * _e25));
     if ((d2_7 > (reach_max * reach_max))) {
         return false;
     }
     if ((node_3.child == BSH_NONE)) {
-        float _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_4, r_6);
+        float _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_4, r_7);
         float _e46 = bsh_scaled_radius(node_3, sqrt(_e43));
         bool _e47 = sphere_contains_point(node_3.center, _e46, x_4);
         return _e47;
     }
-    float _e50 = bsh_inner_scale(node_3.extent, -(v_9), d2_7, r_6, rl_3);
+    float _e50 = bsh_inner_scale(node_3.extent, -(v_10), d2_7, r_7, rl_3);
     float s_c = (_e50 * 1.001);
     float reach = (node_3.extent + (sqrt(s_c) * _e25));
     if ((d2_7 <= ((node_3.radius * node_3.radius) * s_c))) {
-        local_17 = (d2_7 <= (reach * reach));
+        local_21 = (d2_7 <= (reach * reach));
     } else {
-        local_17 = false;
+        local_21 = false;
     }
-    bool _e67 = local_17;
+    bool _e67 = local_21;
     return _e67;
 }
 
-uint bsh_next_leaf_lobe(uint nodes_3, uint start, vec3 x_5, vec3 r_7, vec4 rl_4) {
+bool bsh_reaches_box(BshNode node_4, vec3 lo, vec3 hi, float w_4) {
+    bool _e13 = sphere_overlaps_aabb(node_4.center, (node_4.radius * (max(1.0, (w_4 * 1.0001)) * 1.0001)), lo, hi);
+    return _e13;
+}
+
+uint bsh_subtree(uint nodes_3, uint s_1, uint depth) {
     uint i_2 = 0u;
-    i_2 = start;
+    uint level = 0u;
+    bool local_22 = false;
+    uint _e3 = bsh_first(nodes_3);
+    i_2 = _e3;
     while(true) {
-        uint _e6 = i_2;
-        if ((_e6 != BSH_NONE)) {
+        uint _e7 = level;
+        if ((_e7 < depth)) {
+            uint _e11 = i_2;
+            local_22 = (_e11 != BSH_NONE);
+        } else {
+            local_22 = false;
+        }
+        bool _e15 = local_22;
+        if (_e15) {
         } else {
             break;
         }
         {
-            uint _e9 = i_2;
-            BshNode _e10 = bsh_node(nodes_3, _e9);
-            bool _e11 = bsh_reaches(_e10, x_5, r_7, rl_4);
+            uint _e16 = i_2;
+            BshNode _e17 = bsh_node(nodes_3, _e16);
+            uint _e18 = level;
+            uint below = (depth - _e18);
+            if ((_e17.child == BSH_NONE)) {
+                if (((s_1 << (32u - below)) != 0u)) {
+                    return BSH_NONE;
+                }
+                uint _e29 = i_2;
+                return _e29;
+            }
+            if ((((s_1 >> (below - 1u)) & 1u) == 0u)) {
+                i_2 = _e17.child;
+            } else {
+                BshNode _e39 = bsh_node(nodes_3, _e17.child);
+                i_2 = _e39.next;
+            }
+            uint _e41 = level;
+            level = (_e41 + 1u);
+        }
+    }
+    uint _e44 = i_2;
+    return _e44;
+}
+
+uint bsh_next_leaf_box(uint nodes_4, uint start_1, uint end, vec3 lo_1, vec3 hi_1, float w_5) {
+    uint i_3 = 0u;
+    i_3 = start_1;
+    while(true) {
+        uint _e7 = i_3;
+        if ((_e7 != end)) {
+        } else {
+            break;
+        }
+        {
+            uint _e9 = i_3;
+            BshNode _e10 = bsh_node(nodes_4, _e9);
+            bool _e11 = bsh_reaches_box(_e10, lo_1, hi_1, w_5);
             if (_e11) {
                 if ((_e10.child == BSH_NONE)) {
-                    uint _e15 = i_2;
+                    uint _e15 = i_3;
                     return _e15;
                 }
-                i_2 = _e10.child;
+                i_3 = _e10.child;
             } else {
-                i_2 = _e10.next;
+                i_3 = _e10.next;
             }
         }
     }
-    return BSH_NONE;
+    return end;
 }
 
 float next_threshold(float sum, inout uint h_1) {
@@ -836,87 +921,328 @@ float next_threshold(float sum, inout uint h_1) {
     return _e6;
 }
 
-Connection connect_record(GpuLight l_3, vec3 x_6, vec3 n_4, vec3 ng_1, float r2_2, float rt2_2, float w_res, float u1_2, float u2_2, float eps, bool trace_1) {
-    Connection c_7 = Connection(vec3(0.0), vec3(0.0), 0.0);
-    bool local_18 = false;
-    bool local_19 = false;
-    c_7.e = vec3(0.0);
+Connection connect_record(GpuLight l_3, vec3 x_5, vec3 n_5, vec3 ng_1, float r2_2, float rt2_2, float w_res, float u1_2, float u2_2, float eps, bool trace_1) {
+    Connection c_8 = Connection(vec3(0.0), vec3(0.0), 0.0);
+    bool local_23 = false;
+    bool local_24 = false;
+    c_8.e = vec3(0.0);
     vec3 _e16 = light_point(l_3, u1_2, u2_2);
-    c_7.y = _e16;
-    vec3 _e19 = c_7.y;
-    float _e20 = connection_cosine(x_6, _e19, n_4, ng_1, r2_2);
-    c_7.cos_x = _e20;
-    float _e22 = c_7.cos_x;
+    c_8.y = _e16;
+    vec3 _e19 = c_8.y;
+    float _e20 = connection_cosine(x_5, _e19, n_5, ng_1, r2_2);
+    c_8.cos_x = _e20;
+    float _e22 = c_8.cos_x;
     if (!((_e22 <= 0.0))) {
         if (trace_1) {
-            vec3 _e33 = c_7.y;
-            bool _e34 = occluded((x_6 + (ng_1 * eps)), _e33);
-            local_19 = _e34;
+            vec3 _e33 = c_8.y;
+            bool _e34 = occluded((x_5 + (ng_1 * eps)), _e33);
+            local_24 = _e34;
         } else {
-            local_19 = false;
+            local_24 = false;
         }
-        bool _e36 = local_19;
-        local_18 = _e36;
+        bool _e36 = local_24;
+        local_23 = _e36;
     } else {
-        local_18 = true;
+        local_23 = true;
     }
-    bool _e38 = local_18;
+    bool _e38 = local_23;
     if (_e38) {
-        Connection _e39 = c_7;
+        Connection _e39 = c_8;
         return _e39;
     }
-    vec3 _e41 = c_7.y;
-    vec3 v_10 = (x_6 - _e41);
-    float d2_8 = dot(v_10, v_10);
-    vec3 _e48 = light_intensity(l_3, (v_10 / vec3(sqrt(d2_8))));
-    float _e50 = c_7.cos_x;
+    vec3 _e41 = c_8.y;
+    vec3 v_11 = (x_5 - _e41);
+    float d2_8 = dot(v_11, v_11);
+    vec3 _e48 = light_intensity(l_3, (v_11 / vec3(sqrt(d2_8))));
+    float _e50 = c_8.cos_x;
     float _e51 = connection_factor(_e50, d2_8, rt2_2, w_res);
-    c_7.e = (_e48 * _e51);
-    Connection _e53 = c_7;
+    c_8.e = (_e48 * _e51);
+    Connection _e53 = c_8;
     return _e53;
 }
 
-Connection connect_traced(uint li, vec3 x_7, vec3 n_5, vec3 ng_2, float s, float w_res_1, float u1_3, float u2_3, float eps_1, bool trace_2) {
+Connection connect_traced(uint li, vec3 x_6, vec3 n_6, vec3 ng_2, float s_2, float w_res_1, float u1_3, float u2_3, float eps_1, bool trace_2) {
     GpuLight _e12 = _group_1_binding_1_cs[li];
     float _e15 = _group_1_binding_3_cs[li];
     float _e19 = _group_1_binding_2_cs[li];
-    Connection _e21 = connect_record(_e12, x_7, n_5, ng_2, (s * _e15), (s * _e19), w_res_1, u1_3, u2_3, eps_1, trace_2);
+    Connection _e21 = connect_record(_e12, x_6, n_6, ng_2, (s_2 * _e15), (s_2 * _e19), w_res_1, u1_3, u2_3, eps_1, trace_2);
     return _e21;
 }
 
-float light_range_scale(uint li_1, vec3 x_8, vec3 r_8, vec4 rl_5) {
-    GpuLightCone c_11 = _group_1_binding_5_cs[li_1];
-    float _e9 = range_scale_toward(rl_5, c_11.center, c_11.radius, x_8, r_8);
+float light_range_scale(uint li_1, vec3 x_7, vec3 r_8, vec4 rl_4) {
+    GpuLightCone c_12 = _group_1_binding_5_cs[li_1];
+    float _e9 = range_scale_toward(rl_4, c_12.center, c_12.radius, x_7, r_8);
     return _e9;
 }
 
 vec4 surface_at(ivec2 texel) {
-    vec4 p_3 = texelFetch(_group_0_binding_1_cs, texel, 0);
-    return ((p_3.w > 0.0) ? vec4(p_3.xyz, 1.0) : vec4(0.0));
+    vec4 p_5 = texelFetch(_group_0_binding_1_cs, texel, 0);
+    return ((p_5.w > 0.0) ? vec4(p_5.xyz, 1.0) : vec4(0.0));
 }
 
-Shaded shade_connection(Connection c_8, vec3 x_9, vec3 n_6, Material m_1) {
-    Shaded s_1 = Shaded(vec3(0.0), vec3(0.0), vec3(0.0));
-    s_1.e = c_8.e;
-    s_1.diffuse = vec3(0.0);
-    s_1.specular = vec3(0.0);
-    if ((c_8.cos_x > 0.0)) {
-        vec3 _e25 = bevy_brdf(m_1.base, m_1.metallic, m_1.roughness, m_1.reflectance, n_6, m_1.v, normalize((c_8.y - x_9)));
-        s_1.diffuse = (_e25 * c_8.e);
+WorkgroupBox workgroup_bounds(uint li_2, vec3 lo_2, vec3 hi_2) {
+    uint stride = 32u;
+    wg_lo[li_2] = lo_2;
+    wg_hi[li_2] = hi_2;
+    memoryBarrierShared();
+    barrier();
+    bool loop_init_1 = true;
+    while(true) {
+        if (!loop_init_1) {
+            uint _e36 = stride;
+            stride = (_e36 / 2u);
+        }
+        loop_init_1 = false;
+        uint _e9 = stride;
+        if ((_e9 > 0u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e12 = stride;
+            if ((li_2 < _e12)) {
+                vec3 _e18 = wg_lo[li_2];
+                uint _e20 = stride;
+                vec3 _e23 = wg_lo[(li_2 + _e20)];
+                wg_lo[li_2] = min(_e18, _e23);
+                vec3 _e29 = wg_hi[li_2];
+                uint _e31 = stride;
+                vec3 _e34 = wg_hi[(li_2 + _e31)];
+                wg_hi[li_2] = max(_e29, _e34);
+            }
+            memoryBarrierShared();
+            barrier();
+        }
     }
-    Shaded _e28 = s_1;
+    if ((li_2 == 0u)) {
+        vec3 _e44 = wg_lo[0];
+        vec3 _e47 = wg_hi[0];
+        wg_box = WorkgroupBox(_e44, _e47);
+    }
+    memoryBarrierShared();
+    barrier();
+    WorkgroupBox _e50 = wg_box;
+    memoryBarrierShared();
+    barrier();
+    return _e50;
+}
+
+WorkgroupBox workgroup_box(uint li_3, vec3 p_2, bool has) {
+    WorkgroupBox _e9 = workgroup_bounds(li_3, (has ? p_2 : vec3(3.4028235e38)), (has ? p_2 : vec3(-3.4028235e38)));
+    return _e9;
+}
+
+bool box_is_empty(WorkgroupBox b_6) {
+    return (b_6.lo.x > b_6.hi.x);
+}
+
+uint tile_subtree(uint s_3, TileWalk t_1, bool list, uint at, uint start_2, uint to) {
+    uint p_3 = 0u;
+    uint b_7 = 0u;
+    bool local_25 = false;
+    bool local_26 = false;
+    bool local_27 = false;
+    uint _e8 = bsh_subtree(BSH, s_3, BSH_TILE_DEPTH);
+    if ((_e8 == BSH_NONE)) {
+        return 0u;
+    }
+    uint end_1 = _group_1_binding_4_cs[_e8].next;
+    p_3 = at;
+    uint _e21 = bsh_next_leaf_box(BSH, _e8, end_1, t_1.lo, t_1.hi, t_1.w);
+    b_7 = _e21;
+    bool loop_init_2 = true;
+    while(true) {
+        if (!loop_init_2) {
+            uint _e53 = b_7;
+            uint _e56 = _group_1_binding_4_cs[_e53].next;
+            uint _e60 = bsh_next_leaf_box(BSH, _e56, end_1, t_1.lo, t_1.hi, t_1.w);
+            b_7 = _e60;
+        }
+        loop_init_2 = false;
+        uint _e23 = b_7;
+        if ((_e23 != end_1)) {
+            if (!(!(list))) {
+                uint _e31 = p_3;
+                local_26 = (_e31 < to);
+            } else {
+                local_26 = true;
+            }
+            bool _e34 = local_26;
+            local_25 = _e34;
+        } else {
+            local_25 = false;
+        }
+        bool _e36 = local_25;
+        if (_e36) {
+        } else {
+            break;
+        }
+        {
+            if (list) {
+                uint _e39 = p_3;
+                local_27 = (_e39 >= start_2);
+            } else {
+                local_27 = false;
+            }
+            bool _e42 = local_27;
+            if (_e42) {
+                uint _e44 = p_3;
+                uint _e47 = b_7;
+                tile_list[(_e44 - start_2)] = _e47;
+            }
+            uint _e48 = p_3;
+            p_3 = (_e48 + 1u);
+        }
+    }
+    uint _e61 = p_3;
+    return (_e61 - at);
+}
+
+TileWalk tile_walk_begin(uint li_4, vec3 x_8, float w_6, bool has_1) {
+    TileWalk t_2 = TileWalk(vec3(0.0), vec3(0.0), 0.0, 0u);
+    uint s_4 = 0u;
+    uint sum_1 = 0u;
+    uint s_5 = 0u;
+    uint _e8 = atomicMax(tile_scale, (has_1 ? floatBitsToUint(w_6) : 0u));
+    WorkgroupBox _e9 = workgroup_box(li_4, x_8, has_1);
+    memoryBarrierShared();
+    barrier();
+    uint _e13 = tile_scale;
+    memoryBarrierShared();
+    barrier();
+    t_2 = TileWalk(_e9.lo, _e9.hi, uintBitsToFloat(_e13), 0u);
+    bool _e18 = box_is_empty(_e9);
+    if (_e18) {
+        TileWalk _e19 = t_2;
+        return _e19;
+    }
+    s_4 = li_4;
+    bool loop_init_3 = true;
+    while(true) {
+        if (!loop_init_3) {
+            uint _e34 = s_4;
+            s_4 = (_e34 + TILE_THREADS);
+        }
+        loop_init_3 = false;
+        uint _e21 = s_4;
+        if ((_e21 < BSH_TILE_SUBTREES)) {
+        } else {
+            break;
+        }
+        {
+            uint _e25 = s_4;
+            uint _e27 = s_4;
+            TileWalk _e28 = t_2;
+            uint _e33 = tile_subtree(_e27, _e28, false, 0u, 0u, 0u);
+            subtree_at[_e25] = _e33;
+        }
+    }
+    memoryBarrierShared();
+    barrier();
+    if ((li_4 == 0u)) {
+        bool loop_init_4 = true;
+        while(true) {
+            if (!loop_init_4) {
+                uint _e57 = s_5;
+                s_5 = (_e57 + 1u);
+            }
+            loop_init_4 = false;
+            uint _e43 = s_5;
+            if ((_e43 < BSH_TILE_SUBTREES)) {
+            } else {
+                break;
+            }
+            {
+                uint _e47 = s_5;
+                uint c_13 = subtree_at[_e47];
+                uint _e51 = s_5;
+                uint _e53 = sum_1;
+                subtree_at[_e51] = _e53;
+                uint _e54 = sum_1;
+                sum_1 = (_e54 + c_13);
+            }
+        }
+        uint _e60 = sum_1;
+        tile_total = _e60;
+    }
+    memoryBarrierShared();
+    barrier();
+    uint _e63 = tile_total;
+    memoryBarrierShared();
+    barrier();
+    t_2.total = _e63;
+    TileWalk _e64 = t_2;
+    return _e64;
+}
+
+uint tile_walk_fill(uint li_5, TileWalk t_3, uint start_3) {
+    uint s_6 = 0u;
+    uint past = 0u;
+    bool local_28 = false;
+    uint to_1 = min(t_3.total, (start_3 + TILE_LIST));
+    s_6 = li_5;
+    bool loop_init_5 = true;
+    while(true) {
+        if (!loop_init_5) {
+            uint _e38 = s_6;
+            s_6 = (_e38 + TILE_THREADS);
+        }
+        loop_init_5 = false;
+        uint _e8 = s_6;
+        if ((_e8 < BSH_TILE_SUBTREES)) {
+        } else {
+            break;
+        }
+        {
+            uint _e12 = s_6;
+            uint at_1 = subtree_at[_e12];
+            past = t_3.total;
+            uint _e17 = s_6;
+            if (((_e17 + 1u) < BSH_TILE_SUBTREES)) {
+                uint _e23 = s_6;
+                uint _e27 = subtree_at[(_e23 + 1u)];
+                past = _e27;
+            }
+            if ((at_1 < to_1)) {
+                uint _e31 = past;
+                local_28 = (_e31 > start_3);
+            } else {
+                local_28 = false;
+            }
+            bool _e34 = local_28;
+            if (_e34) {
+                uint _e35 = s_6;
+                uint _e37 = tile_subtree(_e35, t_3, true, at_1, start_3, to_1);
+            }
+        }
+    }
+    memoryBarrierShared();
+    barrier();
+    return (to_1 - start_3);
+}
+
+Shaded shade_connection(Connection c_9, vec3 x_9, vec3 n_7, Material m_1) {
+    Shaded s_7 = Shaded(vec3(0.0), vec3(0.0), vec3(0.0));
+    s_7.e = c_9.e;
+    s_7.diffuse = vec3(0.0);
+    s_7.specular = vec3(0.0);
+    if ((c_9.cos_x > 0.0)) {
+        vec3 _e25 = bevy_brdf(m_1.base, m_1.metallic, m_1.roughness, m_1.reflectance, n_7, m_1.v, normalize((c_9.y - x_9)));
+        s_7.diffuse = (_e25 * c_9.e);
+    }
+    Shaded _e28 = s_7;
     return _e28;
 }
 
-Shaded shade_pick_traced(uint li_2, vec3 x_10, vec3 n_7, vec3 r_9, vec4 rl_6, Material m_2, float w_4, float u1_4, float u2_4, float eps_2, bool trace_3) {
-    float _e11 = light_range_scale(li_2, x_10, r_9, rl_6);
-    Connection _e12 = connect_traced(li_2, x_10, n_7, n_7, _e11, w_4, u1_4, u2_4, eps_2, trace_3);
-    Shaded _e13 = shade_connection(_e12, x_10, n_7, m_2);
+Shaded shade_pick_traced(uint li_6, vec3 x_10, vec3 n_8, vec3 r_9, vec4 rl_5, Material m_2, float w_7, float u1_4, float u2_4, float eps_2, bool trace_3) {
+    float _e11 = light_range_scale(li_6, x_10, r_9, rl_5);
+    Connection _e12 = connect_traced(li_6, x_10, n_8, n_8, _e11, w_7, u1_4, u2_4, eps_2, trace_3);
+    Shaded _e13 = shade_connection(_e12, x_10, n_8, m_2);
     return _e13;
 }
 
-Shaded shade_pick(uint li_3, vec3 x_11, vec3 n_8, vec3 r_10, vec4 rl_7, Material m_3, float w_5, float u1_5, float u2_5, float eps_3) {
-    Shaded _e11 = shade_pick_traced(li_3, x_11, n_8, r_10, rl_7, m_3, w_5, u1_5, u2_5, eps_3, true);
+Shaded shade_pick(uint li_7, vec3 x_11, vec3 n_9, vec3 r_10, vec4 rl_6, Material m_3, float w_8, float u1_5, float u2_5, float eps_3) {
+    Shaded _e11 = shade_pick_traced(li_7, x_11, n_9, r_10, rl_6, m_3, w_8, u1_5, u2_5, eps_3, true);
     return _e11;
 }
 
@@ -925,27 +1251,27 @@ Material material_of(vec3 base_3, float metallic_4, float roughness, float refle
     return Material(base_3, clamp(metallic_4, 0.0, 1.0), _e6, v_4, roughness, reflectance_2);
 }
 
-Shaded add(Shaded a_8, Shaded b_7) {
-    return Shaded((a_8.e + b_7.e), (a_8.diffuse + b_7.diffuse), (a_8.specular + b_7.specular));
+Shaded add(Shaded a_8, Shaded b_8) {
+    return Shaded((a_8.e + b_8.e), (a_8.diffuse + b_8.diffuse), (a_8.specular + b_8.specular));
 }
 
-Shaded scaled(Shaded s_2, vec3 w_6) {
-    return Shaded((s_2.e * w_6), (s_2.diffuse * w_6), (s_2.specular * w_6));
+Shaded scaled(Shaded s_8, vec3 w_9) {
+    return Shaded((s_8.e * w_9), (s_8.diffuse * w_9), (s_8.specular * w_9));
 }
 
 uint[8] first_holders(uvec2 keys_1[8], bool held_1[8]) {
     uint first[8] = uint[8](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
     uint k_4 = 0u;
-    uint j_1 = 0u;
-    bool local_20 = false;
-    bool local_21 = false;
-    bool loop_init_1 = true;
+    uint j_2 = 0u;
+    bool local_29 = false;
+    bool local_30 = false;
+    bool loop_init_6 = true;
     while(true) {
-        if (!loop_init_1) {
+        if (!loop_init_6) {
             uint _e45 = k_4;
             k_4 = (_e45 + 1u);
         }
-        loop_init_1 = false;
+        loop_init_6 = false;
         uint _e5 = k_4;
         if ((_e5 < K)) {
         } else {
@@ -956,40 +1282,40 @@ uint[8] first_holders(uvec2 keys_1[8], bool held_1[8]) {
             uint _e11 = k_4;
             uint _e12 = k_4;
             first[_e8] = (held_1[_e12] ? _e11 : K);
-            j_1 = 0u;
-            bool loop_init_2 = true;
+            j_2 = 0u;
+            bool loop_init_7 = true;
             while(true) {
-                if (!loop_init_2) {
-                    uint _e42 = j_1;
-                    j_1 = (_e42 + 1u);
+                if (!loop_init_7) {
+                    uint _e42 = j_2;
+                    j_2 = (_e42 + 1u);
                 }
-                loop_init_2 = false;
-                uint _e17 = j_1;
+                loop_init_7 = false;
+                uint _e17 = j_2;
                 uint _e18 = k_4;
                 if ((_e17 < _e18)) {
                     uint _e22 = k_4;
-                    local_20 = held_1[_e22];
+                    local_29 = held_1[_e22];
                 } else {
-                    local_20 = false;
+                    local_29 = false;
                 }
-                bool _e25 = local_20;
+                bool _e25 = local_29;
                 if (_e25) {
                 } else {
                     break;
                 }
                 {
-                    uint _e26 = j_1;
+                    uint _e26 = j_2;
                     if (held_1[_e26]) {
-                        uint _e30 = j_1;
+                        uint _e30 = j_2;
                         uint _e32 = k_4;
-                        local_21 = all(equal(keys_1[_e30], keys_1[_e32]));
+                        local_30 = all(equal(keys_1[_e30], keys_1[_e32]));
                     } else {
-                        local_21 = false;
+                        local_30 = false;
                     }
-                    bool _e37 = local_21;
+                    bool _e37 = local_30;
                     if (_e37) {
                         uint _e38 = k_4;
-                        uint _e40 = j_1;
+                        uint _e40 = j_2;
                         first[_e38] = _e40;
                         break;
                     }
@@ -1001,14 +1327,31 @@ uint[8] first_holders(uvec2 keys_1[8], bool held_1[8]) {
     return _e47;
 }
 
-vec3 output_of(Shaded s_3) {
-    return (s_3.diffuse + s_3.specular);
+vec3 output_of(Shaded s_9) {
+    return (s_9.diffuse + s_9.specular);
 }
 
 void main() {
+    if (gl_LocalInvocationID == uvec3(0u)) {
+        wg_lo = vec3[64](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
+        wg_hi = vec3[64](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
+        wg_box = WorkgroupBox(vec3(0.0), vec3(0.0));
+        tile_list = uint[1024](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
+        subtree_at = uint[256](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
+        tile_scale = 0u;
+        tile_total = 0u;
+    }
+    memoryBarrierShared();
+    barrier();
     uvec3 gid = gl_GlobalInvocationID;
+    uint lid = gl_LocalInvocationIndex;
     bool local = false;
+    vec4 s = vec4(0.0);
+    vec3 nn = vec3(0.0);
     bool local_1 = false;
+    bool local_2 = false;
+    bool local_3 = false;
+    vec3 n = vec3(0.0, 0.0, 1.0);
     Material m = Material(vec3(0.0), 0.0, 0.0, vec3(0.0), 0.0, 0.0);
     vec4 lobe = vec4(1.0, 0.0, 1.0, 1.0);
     vec3 r = vec3(0.0);
@@ -1021,259 +1364,323 @@ void main() {
     uint count = 0u;
     uint hc = 0u;
     float threshold[8] = float[8](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
-    uint b = 0u;
+    bool local_4 = false;
+    uint start = 0u;
+    uint j = 0u;
+    bool local_5 = false;
     uint q = 0u;
-    bool local_2 = false;
+    bool local_6 = false;
     uvec2 keys[8] = uvec2[8](uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u));
     bool held[8] = bool[8](false, false, false, false, false, false, false, false);
     uint k = 0u;
     uint k_1 = 0u;
     vec3 w = vec3(0.0);
-    uint j = 0u;
-    bool local_3 = false;
-    uint _e4 = _group_0_binding_0_cs.width;
-    if (!((gid.x >= _e4))) {
+    uint j_1 = 0u;
+    bool local_7 = false;
+    uint _e5 = _group_0_binding_0_cs.width;
+    if ((gid.x < _e5)) {
         uint _e12 = _group_0_binding_0_cs.height;
-        local = (gid.y >= _e12);
+        local = (gid.y < _e12);
     } else {
-        local = true;
+        local = false;
     }
-    bool _e15 = local;
-    if (_e15) {
-        return;
-    }
+    bool inside = local;
     ivec2 texel_1 = ivec2(int(gid.x), int(gid.y));
-    vec4 _e21 = surface_at(texel_1);
-    vec4 _e24 = texelFetch(_group_0_binding_2_cs, texel_1, 0);
-    vec3 nn = _e24.xyz;
-    float len2_ = dot(nn, nn);
-    if (!((_e21.w <= 0.0))) {
-        local_1 = !((len2_ > 0.0));
+    if (inside) {
+        vec4 _e27 = surface_at(texel_1);
+        s = _e27;
+        vec4 _e30 = texelFetch(_group_0_binding_2_cs, texel_1, 0);
+        nn = _e30.xyz;
+    }
+    vec3 _e32 = nn;
+    vec3 _e33 = nn;
+    float len2_ = dot(_e32, _e33);
+    vec4 _e35 = s;
+    vec3 x_13 = _e35.xyz;
+    if (inside) {
+        float _e40 = s.w;
+        local_1 = (_e40 > 0.0);
     } else {
-        local_1 = true;
+        local_1 = false;
     }
-    bool _e37 = local_1;
-    if (_e37) {
-        imageStore(_group_0_binding_3_cs, texel_1, vec4(0.0));
-        return;
+    bool _e44 = local_1;
+    if (_e44) {
+        local_2 = (len2_ > 0.0);
+    } else {
+        local_2 = false;
     }
-    vec3 x_13 = _e21.xyz;
-    vec3 n_11 = (nn / vec3(sqrt(len2_)));
-    r = n_11;
-    vec4 mr = texelFetch(_group_0_binding_5_cs, texel_1, 0);
-    vec4 _e58 = texelFetch(_group_0_binding_4_cs, texel_1, 0);
-    vec3 _e65 = _group_0_binding_0_cs.eye;
-    Material _e68 = material_of(_e58.xyz, mr.z, mr.y, mr.w, normalize((_e65 - x_13)));
-    m = _e68;
-    vec3 _e70 = m.base;
-    float _e72 = m.metallic;
-    float _e74 = bevy_f0_(mr.w);
-    float _e78 = m.alpha;
-    vec3 _e80 = m.v;
-    vec4 _e82 = receiver_lobe(_e70, _e72, vec3(_e74), 1.0, _e78, dot(n_11, _e80));
-    lobe = _e82;
-    vec3 _e84 = m.v;
-    vec3 _e85 = mirror_dir(n_11, _e84);
-    r = _e85;
-    vec4 _e86 = lobe;
-    vec4 _e87 = range_lobe(_e86);
-    float _e90 = _group_0_binding_0_cs.shadow_offset;
-    vec3 _e93 = _group_0_binding_0_cs.eye;
-    float eps_4 = (_e90 * length((_e93 - x_13)));
-    uint _e99 = _group_0_binding_0_cs.seed;
-    uint _e103 = _group_0_binding_0_cs.width;
-    uint _e109 = _group_0_binding_0_cs.frame;
-    uint _e110 = point_stream(_e99, ((gid.y * _e103) + gid.x), _e109);
-    uint _e111 = pick_stream(_e110);
-    h = _e111;
-    hc = _e110;
-    uint _e133 = bsh_first(BSH);
-    vec3 _e134 = r;
-    uint _e135 = bsh_next_leaf_lobe(BSH, _e133, x_13, _e134, _e87);
-    b = _e135;
-    bool loop_init_3 = true;
+    bool _e50 = local_2;
+    if (_e50) {
+        local_3 = all(lessThanEqual(abs(x_13), vec3(3.4028235e38)));
+    } else {
+        local_3 = false;
+    }
+    bool has_2 = local_3;
+    if (has_2) {
+        vec3 _e65 = nn;
+        n = (_e65 / vec3(sqrt(len2_)));
+    }
+    vec3 _e76 = n;
+    r = _e76;
+    if (has_2) {
+        vec4 mr = texelFetch(_group_0_binding_5_cs, texel_1, 0);
+        vec4 _e83 = texelFetch(_group_0_binding_4_cs, texel_1, 0);
+        vec3 _e90 = _group_0_binding_0_cs.eye;
+        Material _e93 = material_of(_e83.xyz, mr.z, mr.y, mr.w, normalize((_e90 - x_13)));
+        m = _e93;
+        vec3 _e95 = m.base;
+        float _e97 = m.metallic;
+        float _e99 = bevy_f0_(mr.w);
+        float _e103 = m.alpha;
+        vec3 _e104 = n;
+        vec3 _e106 = m.v;
+        vec4 _e108 = receiver_lobe(_e95, _e97, vec3(_e99), 1.0, _e103, dot(_e104, _e106));
+        lobe = _e108;
+        vec3 _e109 = n;
+        vec3 _e111 = m.v;
+        vec3 _e112 = mirror_dir(_e109, _e111);
+        r = _e112;
+    }
+    vec4 _e113 = lobe;
+    vec4 _e114 = range_lobe(_e113);
+    float _e117 = _group_0_binding_0_cs.shadow_offset;
+    vec3 _e120 = _group_0_binding_0_cs.eye;
+    float eps_4 = (_e117 * length((_e120 - x_13)));
+    uint _e126 = _group_0_binding_0_cs.seed;
+    uint _e130 = _group_0_binding_0_cs.width;
+    uint _e136 = _group_0_binding_0_cs.frame;
+    uint _e137 = point_stream(_e126, ((gid.y * _e130) + gid.x), _e136);
+    uint _e138 = pick_stream(_e137);
+    h = _e138;
+    hc = _e137;
+    if (has_2) {
+        local_4 = (_e114.w >= 0.0);
+    } else {
+        local_4 = false;
+    }
+    bool _e165 = local_4;
+    TileWalk _e166 = tile_walk_begin(lid, x_13, _e114.w, _e165);
+    bool loop_init_8 = true;
     while(true) {
-        if (!loop_init_3) {
-            uint _e206 = b;
-            uint _e209 = _group_1_binding_4_cs[_e206].next;
-            vec3 _e210 = r;
-            uint _e211 = bsh_next_leaf_lobe(BSH, _e209, x_13, _e210, _e87);
-            b = _e211;
+        if (!loop_init_8) {
+            uint _e261 = start;
+            start = (_e261 + TILE_LIST);
         }
-        loop_init_3 = false;
-        uint _e137 = b;
-        if ((_e137 != BSH_NONE)) {
+        loop_init_8 = false;
+        uint _e169 = start;
+        if ((_e169 < _e166.total)) {
         } else {
             break;
         }
         {
-            uint _e140 = count;
-            count = (_e140 + 1u);
-            uint _e144 = b;
-            uint li_4 = _group_1_binding_4_cs[_e144].light;
-            uint _e148 = h;
-            uint _e149 = pcg_hash(_e148);
-            h = _e149;
-            uint _e150 = h;
-            float _e151 = xi_from_bits(_e150);
-            uint _e152 = h;
-            uint _e153 = pcg_hash(_e152);
-            h = _e153;
-            uint _e154 = h;
-            float _e155 = xi_from_bits(_e154);
-            vec2 u_4 = vec2(_e151, _e155);
-            vec3 _e157 = r;
-            Material _e158 = m;
-            Shaded _e163 = shade_pick_traced(li_4, x_13, n_11, _e157, _e87, _e158, 1.0, u_4.x, u_4.y, eps_4, false);
-            vec3 _e164 = output_of(_e163);
-            float _e165 = resample_target(_e164);
-            if ((_e165 > 0.0)) {
-                vec3 _e168 = total;
-                total = (_e168 + _e164);
-                q = 0u;
-                bool loop_init_4 = true;
-                while(true) {
-                    if (!loop_init_4) {
-                        uint _e202 = q;
-                        q = (_e202 + 1u);
-                    }
-                    loop_init_4 = false;
-                    uint _e172 = q;
-                    if ((_e172 < K)) {
+            uint _e172 = start;
+            uint _e173 = tile_walk_fill(lid, _e166, _e172);
+            j = 0u;
+            bool loop_init_9 = true;
+            while(true) {
+                if (!loop_init_9) {
+                    uint _e259 = j;
+                    j = (_e259 + 1u);
+                }
+                loop_init_9 = false;
+                uint _e176 = j;
+                if ((_e176 < _e173)) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e179 = j;
+                    uint b_9 = tile_list[_e179];
+                    if (!(!(has_2))) {
+                        BshNode _e188 = _group_1_binding_4_cs[b_9];
+                        vec3 _e189 = r;
+                        bool _e190 = bsh_reaches(_e188, x_13, _e189, _e114);
+                        local_5 = !(_e190);
                     } else {
-                        break;
+                        local_5 = true;
                     }
-                    {
-                        uint _e175 = q;
-                        float _e177 = slot_target(_e164, _e175, K);
-                        vec3 _e178 = total;
-                        uint _e179 = q;
-                        float _e181 = slot_target(_e178, _e179, K);
-                        if ((_e177 > 0.0)) {
-                            uint _e186 = q;
-                            float _e188 = threshold[_e186];
-                            local_2 = (_e181 > _e188);
-                        } else {
-                            local_2 = false;
-                        }
-                        bool _e191 = local_2;
-                        if (_e191) {
-                            uint _e192 = q;
-                            slot_light[_e192] = li_4;
-                            uint _e194 = q;
-                            slot_u[_e194] = u_4;
-                            uint _e196 = q;
-                            slot_p[_e196] = _e177;
-                            uint _e198 = q;
-                            float _e200 = next_threshold(_e181, hc);
-                            threshold[_e198] = _e200;
+                    bool _e193 = local_5;
+                    if (_e193) {
+                        continue;
+                    }
+                    uint li_8 = _group_1_binding_4_cs[b_9].light;
+                    uint _e198 = count;
+                    count = (_e198 + 1u);
+                    uint _e201 = h;
+                    uint _e202 = pcg_hash(_e201);
+                    h = _e202;
+                    uint _e203 = h;
+                    float _e204 = xi_from_bits(_e203);
+                    uint _e205 = h;
+                    uint _e206 = pcg_hash(_e205);
+                    h = _e206;
+                    uint _e207 = h;
+                    float _e208 = xi_from_bits(_e207);
+                    vec2 u_4 = vec2(_e204, _e208);
+                    vec3 _e210 = n;
+                    vec3 _e211 = r;
+                    Material _e212 = m;
+                    Shaded _e217 = shade_pick_traced(li_8, x_13, _e210, _e211, _e114, _e212, 1.0, u_4.x, u_4.y, eps_4, false);
+                    vec3 _e218 = output_of(_e217);
+                    float _e219 = resample_target(_e218);
+                    if ((_e219 > 0.0)) {
+                        vec3 _e222 = total;
+                        total = (_e222 + _e218);
+                        q = 0u;
+                        bool loop_init_10 = true;
+                        while(true) {
+                            if (!loop_init_10) {
+                                uint _e256 = q;
+                                q = (_e256 + 1u);
+                            }
+                            loop_init_10 = false;
+                            uint _e226 = q;
+                            if ((_e226 < K)) {
+                            } else {
+                                break;
+                            }
+                            {
+                                uint _e229 = q;
+                                float _e231 = slot_target(_e218, _e229, K);
+                                vec3 _e232 = total;
+                                uint _e233 = q;
+                                float _e235 = slot_target(_e232, _e233, K);
+                                if ((_e231 > 0.0)) {
+                                    uint _e240 = q;
+                                    float _e242 = threshold[_e240];
+                                    local_6 = (_e235 > _e242);
+                                } else {
+                                    local_6 = false;
+                                }
+                                bool _e245 = local_6;
+                                if (_e245) {
+                                    uint _e246 = q;
+                                    slot_light[_e246] = li_8;
+                                    uint _e248 = q;
+                                    slot_u[_e248] = u_4;
+                                    uint _e250 = q;
+                                    slot_p[_e250] = _e231;
+                                    uint _e252 = q;
+                                    float _e254 = next_threshold(_e235, hc);
+                                    threshold[_e252] = _e254;
+                                }
+                            }
                         }
                     }
                 }
             }
+            memoryBarrierShared();
+            barrier();
         }
     }
-    bool loop_init_5 = true;
-    while(true) {
-        if (!loop_init_5) {
-            uint _e234 = k;
-            k = (_e234 + 1u);
+    if (!(has_2)) {
+        if (inside) {
+            imageStore(_group_0_binding_3_cs, texel_1, vec4(0.0));
         }
-        loop_init_5 = false;
-        uint _e216 = k;
-        if ((_e216 < K)) {
+        return;
+    }
+    bool loop_init_11 = true;
+    while(true) {
+        if (!loop_init_11) {
+            uint _e290 = k;
+            k = (_e290 + 1u);
+        }
+        loop_init_11 = false;
+        uint _e272 = k;
+        if ((_e272 < K)) {
         } else {
             break;
         }
         {
-            uint _e219 = k;
-            uint _e221 = k;
-            uint _e223 = slot_light[_e221];
-            keys[_e219] = uvec2(_e223, 0u);
-            uint _e226 = k;
-            uint _e228 = k;
-            float _e230 = slot_p[_e228];
-            held[_e226] = (_e230 > 0.0);
+            uint _e275 = k;
+            uint _e277 = k;
+            uint _e279 = slot_light[_e277];
+            keys[_e275] = uvec2(_e279, 0u);
+            uint _e282 = k;
+            uint _e284 = k;
+            float _e286 = slot_p[_e284];
+            held[_e282] = (_e286 > 0.0);
         }
     }
-    uvec2 _e236[8] = keys;
-    bool _e237[8] = held;
-    uint _e238[8] = first_holders(_e236, _e237);
-    bool loop_init_6 = true;
+    uvec2 _e292[8] = keys;
+    bool _e293[8] = held;
+    uint _e294[8] = first_holders(_e292, _e293);
+    bool loop_init_12 = true;
     while(true) {
-        if (!loop_init_6) {
-            uint _e301 = k_1;
-            k_1 = (_e301 + 1u);
+        if (!loop_init_12) {
+            uint _e358 = k_1;
+            k_1 = (_e358 + 1u);
         }
-        loop_init_6 = false;
-        uint _e241 = k_1;
-        if ((_e241 < K)) {
+        loop_init_12 = false;
+        uint _e297 = k_1;
+        if ((_e297 < K)) {
         } else {
             break;
         }
         {
             w = vec3(0.0);
-            uint _e247 = k_1;
-            uint _e249 = k_1;
-            bool first_1 = (_e238[_e247] == _e249);
-            uint _e251 = k_1;
-            j = _e251;
-            bool loop_init_7 = true;
+            uint _e303 = k_1;
+            uint _e305 = k_1;
+            bool first_1 = (_e294[_e303] == _e305);
+            uint _e307 = k_1;
+            j_1 = _e307;
+            bool loop_init_13 = true;
             while(true) {
-                if (!loop_init_7) {
-                    uint _e279 = j;
-                    j = (_e279 + 1u);
+                if (!loop_init_13) {
+                    uint _e335 = j_1;
+                    j_1 = (_e335 + 1u);
                 }
-                loop_init_7 = false;
-                uint _e253 = j;
-                if ((_e253 < K)) {
-                    local_3 = first_1;
+                loop_init_13 = false;
+                uint _e309 = j_1;
+                if ((_e309 < K)) {
+                    local_7 = first_1;
                 } else {
-                    local_3 = false;
+                    local_7 = false;
                 }
-                bool _e259 = local_3;
-                if (_e259) {
+                bool _e315 = local_7;
+                if (_e315) {
                 } else {
                     break;
                 }
                 {
-                    uint _e260 = j;
-                    uint _e262 = k_1;
-                    if ((_e238[_e260] == _e262)) {
-                        vec3 _e264 = w;
-                        vec3 _e265 = total;
-                        uint _e266 = j;
-                        float _e268 = slot_target(_e265, _e266, K);
-                        uint _e269 = j;
-                        float _e271 = slot_p[_e269];
-                        uint _e273 = j;
-                        vec3 _e275 = slot_share(_e273, K);
-                        w = (_e264 + ((_e268 / _e271) * _e275));
+                    uint _e316 = j_1;
+                    uint _e318 = k_1;
+                    if ((_e294[_e316] == _e318)) {
+                        vec3 _e320 = w;
+                        vec3 _e321 = total;
+                        uint _e322 = j_1;
+                        float _e324 = slot_target(_e321, _e322, K);
+                        uint _e325 = j_1;
+                        float _e327 = slot_p[_e325];
+                        uint _e329 = j_1;
+                        vec3 _e331 = slot_share(_e329, K);
+                        w = (_e320 + ((_e324 / _e327) * _e331));
                     }
                 }
             }
             if (first_1) {
-                Shaded _e281 = t;
-                uint _e282 = k_1;
-                uint _e284 = slot_light[_e282];
-                vec3 _e285 = r;
-                Material _e286 = m;
-                uint _e288 = k_1;
-                float _e291 = slot_u[_e288].x;
-                uint _e292 = k_1;
-                float _e295 = slot_u[_e292].y;
-                Shaded _e296 = shade_pick(_e284, x_13, n_11, _e285, _e87, _e286, 1.0, _e291, _e295, eps_4);
-                vec3 _e297 = w;
-                Shaded _e298 = scaled(_e296, _e297);
-                Shaded _e299 = add(_e281, _e298);
-                t = _e299;
+                Shaded _e337 = t;
+                uint _e338 = k_1;
+                uint _e340 = slot_light[_e338];
+                vec3 _e341 = n;
+                vec3 _e342 = r;
+                Material _e343 = m;
+                uint _e345 = k_1;
+                float _e348 = slot_u[_e345].x;
+                uint _e349 = k_1;
+                float _e352 = slot_u[_e349].y;
+                Shaded _e353 = shade_pick(_e340, x_13, _e341, _e342, _e114, _e343, 1.0, _e348, _e352, eps_4);
+                vec3 _e354 = w;
+                Shaded _e355 = scaled(_e353, _e354);
+                Shaded _e356 = add(_e337, _e355);
+                t = _e356;
             }
         }
     }
-    vec3 _e305 = t.diffuse;
-    vec3 _e307 = t.specular;
-    uint _e309 = count;
-    imageStore(_group_0_binding_3_cs, texel_1, vec4((_e305 + _e307), float(_e309)));
+    vec3 _e362 = t.diffuse;
+    vec3 _e364 = t.specular;
+    uint _e366 = count;
+    imageStore(_group_0_binding_3_cs, texel_1, vec4((_e362 + _e364), float(_e366)));
     return;
 }
 

@@ -142,6 +142,8 @@ const float TEMPORAL_CHANGE_HIGH = 8.0;
 const float TEMPORAL_MIN_WEIGHT = 0.01;
 const uint K = 16u;
 const uint BSH = 0u;
+const uint BSH_TILE_DEPTH = 8u;
+const uint BSH_TILE_SUBTREES = 256u;
 const uint BVH = 0u;
 
 layout(std430) readonly buffer type_4_block_0Compute { float _group_1_binding_0_cs[]; };
@@ -152,23 +154,23 @@ layout(std430) readonly buffer type_7_block_2Compute { GpuTriangle _group_0_bind
 
 layout(std430) readonly buffer type_10_block_3Compute { BshNode _group_0_binding_5_cs[]; };
 
-layout(std430) readonly buffer type_11_block_4Compute { GpuLight _group_0_binding_2_cs[]; };
+layout(std430) readonly buffer type_13_block_4Compute { GpuLight _group_0_binding_2_cs[]; };
 
 layout(std430) readonly buffer type_4_block_5Compute { float _group_0_binding_4_cs[]; };
 
 layout(std430) readonly buffer type_4_block_6Compute { float _group_0_binding_3_cs[]; };
 
-layout(std430) readonly buffer type_12_block_7Compute { GpuLightCone _group_1_binding_2_cs[]; };
+layout(std430) readonly buffer type_14_block_7Compute { GpuLightCone _group_1_binding_2_cs[]; };
 
 layout(std140) uniform ShadeParams_block_8Compute { ShadeParams _group_0_binding_0_cs; };
 
-layout(std430) readonly buffer type_13_block_9Compute { GpuPathVertex _group_0_binding_1_cs[]; };
+layout(std430) readonly buffer type_15_block_9Compute { GpuPathVertex _group_0_binding_1_cs[]; };
 
-layout(std430) readonly buffer type_14_block_10Compute { GpuMaterial _group_0_binding_8_cs[]; };
+layout(std430) readonly buffer type_16_block_10Compute { GpuMaterial _group_0_binding_8_cs[]; };
 
-layout(std430) buffer type_15_block_11Compute { vec4 _group_0_binding_9_cs[]; };
+layout(std430) buffer type_17_block_11Compute { vec4 _group_0_binding_9_cs[]; };
 
-layout(std430) buffer type_16_block_12Compute { uint _group_0_binding_10_cs[]; };
+layout(std430) buffer type_18_block_12Compute { uint _group_0_binding_10_cs[]; };
 
 
 float at(uint tab, uint i) {
@@ -681,12 +683,12 @@ vec3 diffuse_brdf(vec3 base_5, float metallic_1, vec3 f0_d_1, float f90_d_1, flo
 }
 
 float half_cosine(vec3 v, vec3 l) {
-    vec3 h_2 = (v + l);
-    float len2_ = dot(h_2, h_2);
+    vec3 h_3 = (v + l);
+    float len2_ = dot(h_3, h_3);
     if ((len2_ <= 0.0)) {
         return 0.0;
     }
-    return clamp((dot(v, h_2) / sqrt(len2_)), 0.0, 1.0);
+    return clamp((dot(v, h_3) / sqrt(len2_)), 0.0, 1.0);
 }
 
 vec3 specular_brdf(vec3 base_6, float metallic_2, vec3 f0_d_2, float f90_d_2, float alpha_3, vec3 n_11, vec3 v_1, vec3 l_1) {
@@ -704,10 +706,10 @@ vec3 specular_brdf(vec3 base_6, float metallic_2, vec3 f0_d_2, float f90_d_2, fl
     }
     vec3 hs = (v_1 + l_1);
     float inv = (1.0 / sqrt(dot(hs, hs)));
-    vec3 h_3 = (hs * inv);
-    vec3 c_11 = cross(n_11, h_3);
-    float _e32 = ggx_d(dot(n_11, h_3), dot(c_11, c_11), alpha_3);
-    vec3 _e34 = specular_fresnel(base_6, metallic_2, f0_d_2, f90_d_2, dot(v_1, h_3));
+    vec3 h_4 = (hs * inv);
+    vec3 c_11 = cross(n_11, h_4);
+    float _e32 = ggx_d(dot(n_11, h_4), dot(c_11, c_11), alpha_3);
+    vec3 _e34 = specular_fresnel(base_6, metallic_2, f0_d_2, f90_d_2, dot(v_1, h_4));
     float _e35 = smith_visibility(n_l_1, n_v_2, alpha_3);
     return (_e34 * (_e32 * _e35));
 }
@@ -1224,22 +1226,49 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start_1, vec3 x_10, vec3 r_4, vec4 rl
     return BSH_NONE;
 }
 
+void reservoir_offer(inout Picks picks, inout uint h_1, uint light) {
+    uint _e4 = picks.n;
+    bool _e5 = reservoir_takes(_e4);
+    if (_e5) {
+        uint _e7 = picks.n;
+        picks.n = (_e7 + 1u);
+        uint _e10 = h_1;
+        uint _e11 = pcg_hash(_e10);
+        h_1 = _e11;
+        uint hi_4 = h_1;
+        uint _e13 = h_1;
+        uint _e14 = pcg_hash(_e13);
+        h_1 = _e14;
+        uint _e16 = picks.n;
+        uint _e18 = h_1;
+        uint _e19 = reservoir_slot(_e16, K, hi_4, _e18);
+        if ((_e19 < K)) {
+            picks.light[_e19] = light;
+            return;
+        } else {
+            return;
+        }
+    } else {
+        return;
+    }
+}
+
 Picks bsh_collect(vec3 x_11, vec3 r_5, vec4 rl_5, uint seed_1) {
-    Picks picks = Picks(uint[16](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u), 0u);
-    uint h_1 = 0u;
+    Picks picks_1 = Picks(uint[16](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u), 0u);
+    uint h_2 = 0u;
     uint i_4 = 0u;
-    picks.n = 0u;
-    h_1 = seed_1;
+    picks_1.n = 0u;
+    h_2 = seed_1;
     uint _e10 = bsh_first(BSH);
     uint _e11 = bsh_next_leaf_lobe(BSH, _e10, x_11, r_5, rl_5);
     i_4 = _e11;
     bool loop_init_1 = true;
     while(true) {
         if (!loop_init_1) {
-            uint _e44 = i_4;
-            uint _e47 = _group_0_binding_5_cs[_e44].next;
-            uint _e48 = bsh_next_leaf_lobe(BSH, _e47, x_11, r_5, rl_5);
-            i_4 = _e48;
+            uint _e23 = i_4;
+            uint _e26 = _group_0_binding_5_cs[_e23].next;
+            uint _e27 = bsh_next_leaf_lobe(BSH, _e26, x_11, r_5, rl_5);
+            i_4 = _e27;
         }
         loop_init_1 = false;
         uint _e13 = i_4;
@@ -1248,31 +1277,13 @@ Picks bsh_collect(vec3 x_11, vec3 r_5, vec4 rl_5, uint seed_1) {
             break;
         }
         {
-            uint _e17 = picks.n;
-            bool _e18 = reservoir_takes(_e17);
-            if (_e18) {
-                uint _e20 = picks.n;
-                picks.n = (_e20 + 1u);
-                uint _e23 = h_1;
-                uint _e24 = pcg_hash(_e23);
-                h_1 = _e24;
-                uint hi_4 = h_1;
-                uint _e26 = h_1;
-                uint _e27 = pcg_hash(_e26);
-                h_1 = _e27;
-                uint _e29 = picks.n;
-                uint _e31 = h_1;
-                uint _e32 = reservoir_slot(_e29, K, hi_4, _e31);
-                if ((_e32 < K)) {
-                    uint _e38 = i_4;
-                    uint _e41 = _group_0_binding_5_cs[_e38].light;
-                    picks.light[_e32] = _e41;
-                }
-            }
+            uint _e17 = i_4;
+            uint _e20 = _group_0_binding_5_cs[_e17].light;
+            reservoir_offer(picks_1, h_2, _e20);
         }
     }
-    Picks _e49 = picks;
-    return _e49;
+    Picks _e28 = picks_1;
+    return _e28;
 }
 
 Connection connect_record(GpuLight l_8, vec3 x_12, vec3 n_15, vec3 ng_1, float r2_2, float rt2_4, float w_res, float u1_2, float u2_2, float eps, bool trace_1) {

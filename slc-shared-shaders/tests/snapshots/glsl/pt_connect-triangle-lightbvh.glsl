@@ -144,6 +144,8 @@ const float TEMPORAL_CHANGE_HIGH = 8.0;
 const float TEMPORAL_MIN_WEIGHT = 0.01;
 const uint K = 8u;
 const uint BSH = 0u;
+const uint BSH_TILE_DEPTH = 8u;
+const uint BSH_TILE_SUBTREES = 256u;
 const uint BVH = 0u;
 
 layout(std430) readonly buffer type_6_block_0Compute { GpuGeoNode _group_0_binding_6_cs[]; };

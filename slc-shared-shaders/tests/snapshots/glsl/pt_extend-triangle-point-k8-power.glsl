@@ -157,6 +157,8 @@ const float TEMPORAL_MIN_WEIGHT = 0.01;
 const uint K = 8u;
 const uint BVH = 0u;
 const uint BSH = 0u;
+const uint BSH_TILE_DEPTH = 8u;
+const uint BSH_TILE_SUBTREES = 256u;
 
 layout(std430) readonly buffer type_6_block_0Compute { GpuGeoNode _group_0_binding_5_cs[]; };
 

@@ -71,6 +71,8 @@ static const float TEMPORAL_CHANGE_LOW = 4.0;
 static const float TEMPORAL_CHANGE_HIGH = 8.0;
 static const float TEMPORAL_MIN_WEIGHT = 0.01;
 static const uint BSH = 0u;
+static const uint BSH_TILE_DEPTH = 8u;
+static const uint BSH_TILE_SUBTREES = 256u;
 
 cbuffer params : register(b0) { RefitParams params; }
 ByteAddressBuffer order : register(t1);

@@ -95,6 +95,8 @@ static const float TEMPORAL_CHANGE_HIGH = 8.0;
 static const float TEMPORAL_MIN_WEIGHT = 0.01;
 static const uint K = 8u;
 static const uint BSH = 0u;
+static const uint BSH_TILE_DEPTH = 8u;
+static const uint BSH_TILE_SUBTREES = 256u;
 
 ByteAddressBuffer bsh_nodes : register(t6);
 ByteAddressBuffer lights : register(t3);
@@ -517,14 +519,42 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start, float3 x_4, float3 r_4, float4
     return BSH_NONE;
 }
 
+void reservoir_offer(inout Picks picks, inout uint h_1, uint light)
+{
+    uint _e4 = picks.n;
+    const bool _e5 = reservoir_takes(_e4);
+    if (_e5) {
+        uint _e7 = picks.n;
+        picks.n = (_e7 + 1u);
+        uint _e10 = h_1;
+        const uint _e11 = pcg_hash(_e10);
+        h_1 = _e11;
+        uint hi_2 = h_1;
+        uint _e13 = h_1;
+        const uint _e14 = pcg_hash(_e13);
+        h_1 = _e14;
+        uint _e16 = picks.n;
+        uint _e18 = h_1;
+        const uint _e19 = reservoir_slot(_e16, K, hi_2, _e18);
+        if ((_e19 < K)) {
+            picks.light[min(uint(_e19), 7u)] = light;
+            return;
+        } else {
+            return;
+        }
+    } else {
+        return;
+    }
+}
+
 Picks bsh_collect(float3 x_5, float3 r_5, float4 rl_5, uint seed_1)
 {
-    Picks picks = (Picks)0;
-    uint h_1 = (uint)0;
+    Picks picks_1 = (Picks)0;
+    uint h_2 = (uint)0;
     uint i_2 = (uint)0;
 
-    picks.n = 0u;
-    h_1 = seed_1;
+    picks_1.n = 0u;
+    h_2 = seed_1;
     const uint _e10 = bsh_first(BSH);
     const uint _e11 = bsh_next_leaf_lobe(BSH, _e10, x_5, r_5, rl_5);
     i_2 = _e11;
@@ -534,10 +564,10 @@ Picks bsh_collect(float3 x_5, float3 r_5, float4 rl_5, uint seed_1)
         if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
         loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
         if (!loop_init) {
-            uint _e44 = i_2;
-            uint _e47 = asuint(bsh_nodes.Load(20+_e44*32));
-            const uint _e48 = bsh_next_leaf_lobe(BSH, _e47, x_5, r_5, rl_5);
-            i_2 = _e48;
+            uint _e23 = i_2;
+            uint _e26 = asuint(bsh_nodes.Load(20+_e23*32));
+            const uint _e27 = bsh_next_leaf_lobe(BSH, _e26, x_5, r_5, rl_5);
+            i_2 = _e27;
         }
         loop_init = false;
         uint _e13 = i_2;
@@ -546,32 +576,14 @@ Picks bsh_collect(float3 x_5, float3 r_5, float4 rl_5, uint seed_1)
             break;
         }
         {
-            uint _e17 = picks.n;
-            const bool _e18 = reservoir_takes(_e17);
-            if (_e18) {
-                uint _e20 = picks.n;
-                picks.n = (_e20 + 1u);
-                uint _e23 = h_1;
-                const uint _e24 = pcg_hash(_e23);
-                h_1 = _e24;
-                uint hi_2 = h_1;
-                uint _e26 = h_1;
-                const uint _e27 = pcg_hash(_e26);
-                h_1 = _e27;
-                uint _e29 = picks.n;
-                uint _e31 = h_1;
-                const uint _e32 = reservoir_slot(_e29, K, hi_2, _e31);
-                if ((_e32 < K)) {
-                    uint _e38 = i_2;
-                    uint _e41 = asuint(bsh_nodes.Load(24+_e38*32));
-                    picks.light[min(uint(_e32), 7u)] = _e41;
-                }
-            }
+            uint _e17 = i_2;
+            uint _e20 = asuint(bsh_nodes.Load(24+_e17*32));
+            reservoir_offer(picks_1, h_2, _e20);
         }
     }
-    Picks _e49 = picks;
-    const Picks picks_1 = _e49;
-    return picks_1;
+    Picks _e28 = picks_1;
+    const Picks picks_2 = _e28;
+    return picks_2;
 }
 
 Connection connect_record(GpuLight l_2, float3 x_6, float3 n_6, float3 ng_1, float r2_2, float rt2_2, float w_res, float u1_2, float u2_2, float eps, bool trace)

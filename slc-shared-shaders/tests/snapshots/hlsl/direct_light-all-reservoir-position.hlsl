@@ -45,6 +45,24 @@ struct Connection {
     float cos_x;
 };
 
+struct WorkgroupBox {
+    float3 lo;
+    int _pad1_0;
+    float3 hi;
+    int _end_pad_0;
+};
+
+struct TileWalk {
+    float3 lo;
+    int _pad1_0;
+    float3 hi;
+    float w;
+    uint total;
+    int _end_pad_0;
+    int _end_pad_1;
+    int _end_pad_2;
+};
+
 struct Shaded {
     float3 e;
     int _pad1_0;
@@ -127,6 +145,11 @@ static const float TEMPORAL_CHANGE_HIGH = 8.0;
 static const float TEMPORAL_MIN_WEIGHT = 0.01;
 static const uint K = 8u;
 static const uint BSH = 0u;
+static const uint BSH_TILE_DEPTH = 8u;
+static const uint BSH_TILE_SUBTREES = 256u;
+static const uint TILE_THREADS = 64u;
+static const uint BOX_THREADS = 64u;
+static const uint TILE_LIST = 1024u;
 
 ByteAddressBuffer slc_table : register(t0, space1);
 cbuffer view : register(b0) { ViewParams view; }
@@ -137,6 +160,13 @@ ByteAddressBuffer lights : register(t1, space1);
 ByteAddressBuffer rt2_3 : register(t2, space1);
 ByteAddressBuffer r2_3 : register(t3, space1);
 ByteAddressBuffer bsh_nodes : register(t4, space1);
+groupshared float3 wg_lo[64];
+groupshared float3 wg_hi[64];
+groupshared WorkgroupBox wg_box;
+groupshared uint tile_list[1024];
+groupshared uint subtree_at[256];
+groupshared uint tile_scale;
+groupshared uint tile_total;
 
 float at(uint tab, uint i)
 {
@@ -220,6 +250,13 @@ bool sphere_contains_point(float3 c, float r_1, float3 x_2)
     return (dot(v_2, v_2) <= (r_1 * r_1));
 }
 
+bool sphere_overlaps_aabb(float3 c_1, float r_2, float3 bmin, float3 bmax)
+{
+    float3 q = clamp(c_1, bmin, bmax);
+    float3 v_3 = (q - c_1);
+    return (dot(v_3, v_3) <= (r_2 * r_2));
+}
+
 float inverse_square(float d2_2)
 {
     return (1.0 / max(d2_2, MIN_D2_));
@@ -232,31 +269,31 @@ float connection_factor(float cos_x, float d2_3, float rt2_1, float w)
     return (((cos_x * _e4) * _e6) * w);
 }
 
-float connection_cosine(float3 x_3, float3 y, float3 n, float3 ng, float r2_1)
+float connection_cosine(float3 x_3, float3 y, float3 n_1, float3 ng, float r2_1)
 {
-    bool local_2 = (bool)0;
-    bool local_3 = (bool)0;
+    bool local_6 = (bool)0;
+    bool local_7 = (bool)0;
 
-    float3 v_3 = (x_3 - y);
-    float d2_6 = dot(v_3, v_3);
+    float3 v_4 = (x_3 - y);
+    float d2_6 = dot(v_4, v_4);
     const bool _e7 = slc_keep(r2_1, d2_6);
     if (!(!(_e7))) {
-        local_2 = !((d2_6 > 0.0));
+        local_6 = !((d2_6 > 0.0));
     } else {
-        local_2 = true;
+        local_6 = true;
     }
-    bool _e16 = local_2;
+    bool _e16 = local_6;
     if (_e16) {
         return 0.0;
     }
-    float3 w_6 = (v_3 / (sqrt(d2_6)).xxx);
-    float cos_x_1 = -(dot(n, w_6));
+    float3 w_9 = (v_4 / (sqrt(d2_6)).xxx);
+    float cos_x_1 = -(dot(n_1, w_9));
     if (!((cos_x_1 <= 0.0))) {
-        local_3 = (dot(ng, w_6) >= 0.0);
+        local_7 = (dot(ng, w_9) >= 0.0);
     } else {
-        local_3 = true;
+        local_7 = true;
     }
-    bool _e32 = local_3;
+    bool _e32 = local_7;
     if (_e32) {
         return 0.0;
     }
@@ -268,21 +305,21 @@ float spot_falloff(float cos_theta, float cos_outer, float cos_inner, float shap
     if ((cos_inner <= cos_outer)) {
         return ((cos_theta >= cos_outer) ? 1.0 : 0.0);
     }
-    float t_2 = saturate(((cos_theta - cos_outer) / (cos_inner - cos_outer)));
-    return ((shape > 0.5) ? (t_2 * t_2) : ((t_2 * t_2) * (3.0 - (2.0 * t_2))));
+    float t_5 = saturate(((cos_theta - cos_outer) / (cos_inner - cos_outer)));
+    return ((shape > 0.5) ? (t_5 * t_5) : ((t_5 * t_5) * (3.0 - (2.0 * t_5))));
 }
 
-float triangle_lobe(float3 n_1, float area, float3 w_1)
+float triangle_lobe(float3 n_2, float area, float3 w_1)
 {
-    return (area * max(dot(n_1, w_1), 0.0));
+    return (area * max(dot(n_2, w_1), 0.0));
 }
 
-float3 triangle_sample(float3 a_2, float3 b_2, float3 c_1, float u1_, float u2_)
+float3 triangle_sample(float3 a_2, float3 b_2, float3 c_2, float u1_, float u2_)
 {
     float su = sqrt(u1_);
     float b0_ = (1.0 - su);
     float b1_ = (u2_ * su);
-    return (((a_2 * b0_) + (b_2 * b1_)) + (c_1 * ((1.0 - b0_) - b1_)));
+    return (((a_2 * b0_) + (b_2 * b1_)) + (c_2 * ((1.0 - b0_) - b1_)));
 }
 
 float atan_portable(float x_4)
@@ -307,8 +344,8 @@ float atan_portable(float x_4)
     float _e21 = base;
     float _e33 = t_1;
     float _e35 = t_1;
-    float r_9 = (_e21 + (((((((((0.080537446 * z) - 0.13877685) * z) + 0.19977711) * z) - 0.3333295) * z) * _e33) + _e35));
-    return ((x_4 < 0.0) ? -(r_9) : r_9);
+    float r_8 = (_e21 + (((((((((0.080537446 * z) - 0.13877685) * z) + 0.19977711) * z) - 0.3333295) * z) * _e33) + _e35));
+    return ((x_4 < 0.0) ? -(r_8) : r_8);
 }
 
 float atan2_portable(float y_1, float x_5)
@@ -332,11 +369,11 @@ float atan2_portable(float y_1, float x_5)
     return (_e12 - 3.1415927);
 }
 
-float ies_fold_c(float c_2, float h_first, float h_last)
+float ies_fold_c(float c_3, float h_first, float h_last)
 {
     float a_3 = (float)0;
 
-    a_3 = (c_2 - (360.0 * floor((c_2 / 360.0))));
+    a_3 = (c_3 - (360.0 * floor((c_3 / 360.0))));
     if ((h_last <= 0.0)) {
         return 0.0;
     }
@@ -382,15 +419,15 @@ float ies_fold_c(float c_2, float h_first, float h_last)
     return _e52;
 }
 
-uint ies_segment(uint tab_1, uint start, uint n_2, float x_6)
+uint ies_segment(uint tab_1, uint start_1, uint n_3, float x_6)
 {
     uint lo = 0u;
     uint hi = (uint)0;
 
-    if ((n_2 < 2u)) {
+    if ((n_3 < 2u)) {
         return 0u;
     }
-    hi = (n_2 - 1u);
+    hi = (n_3 - 1u);
     uint2 loop_bound = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound == uint2(0u, 0u))) { break; }
@@ -405,7 +442,7 @@ uint ies_segment(uint tab_1, uint start, uint n_2, float x_6)
             uint _e17 = lo;
             uint _e18 = hi;
             uint mid = ((_e17 + _e18) >> 1u);
-            const float _e23 = at(tab_1, (start + mid));
+            const float _e23 = at(tab_1, (start_1 + mid));
             if ((_e23 <= x_6)) {
                 lo = mid;
             } else {
@@ -425,9 +462,9 @@ float ies_lerp_t(float a0_, float a1_, float x_7)
     return saturate(((x_7 - a0_) / (a1_ - a0_)));
 }
 
-float ies_candela(uint tab_2, uint base_1, float gamma, float c_3)
+float ies_candela(uint tab_2, uint base_1, float gamma, float c_4)
 {
-    bool local_4 = (bool)0;
+    bool local_8 = (bool)0;
 
     const float _e4 = at(tab_2, base_1);
     const uint _e5 = to_u32_(_e4);
@@ -439,17 +476,17 @@ float ies_candela(uint tab_2, uint base_1, float gamma, float c_3)
     const float _e14 = at(tab_2, v0_);
     if (!((gamma < _e14))) {
         const float _e22 = at(tab_2, ((v0_ + _e5) - 1u));
-        local_4 = (gamma > _e22);
+        local_8 = (gamma > _e22);
     } else {
-        local_4 = true;
+        local_8 = true;
     }
-    bool _e25 = local_4;
+    bool _e25 = local_8;
     if (_e25) {
         return 0.0;
     }
     const float _e27 = at(tab_2, h0_);
     const float _e31 = at(tab_2, ((h0_ + _e9) - 1u));
-    const float _e32 = ies_fold_c(c_3, _e27, _e31);
+    const float _e32 = ies_fold_c(c_4, _e27, _e31);
     const uint _e33 = ies_segment(tab_2, v0_, _e5, gamma);
     const uint _e34 = ies_segment(tab_2, h0_, _e9, _e32);
     uint iv1_ = min((_e33 + 1u), (_e5 - 1u));
@@ -465,8 +502,8 @@ float ies_candela(uint tab_2, uint base_1, float gamma, float c_3)
     float a_11 = ((_e58 * (1.0 - _e49)) + (_e65 * _e49));
     const float _e71 = at(tab_2, ((c0_ + (ih1_ * _e5)) + _e33));
     const float _e78 = at(tab_2, ((c0_ + (ih1_ * _e5)) + iv1_));
-    float b_7 = ((_e71 * (1.0 - _e49)) + (_e78 * _e49));
-    return ((a_11 * (1.0 - _e54)) + (b_7 * _e54));
+    float b_9 = ((_e71 * (1.0 - _e49)) + (_e78 * _e49));
+    return ((a_11 * (1.0 - _e54)) + (b_9 * _e54));
 }
 
 float ies_candela_dir(uint tab_3, uint base_2, float wn, float wr, float ws)
@@ -475,8 +512,8 @@ float ies_candela_dir(uint tab_3, uint base_2, float wn, float wr, float ws)
     float gamma_1 = degrees(_e9);
     bool on_axis = ((abs(wr) + abs(ws)) <= 0.0);
     const float _e16 = atan2_portable(ws, wr);
-    float c_7 = (on_axis ? 0.0 : degrees(_e16));
-    const float _e20 = ies_candela(tab_3, base_2, gamma_1, c_7);
+    float c_8 = (on_axis ? 0.0 : degrees(_e16));
+    const float _e20 = ies_candela(tab_3, base_2, gamma_1, c_8);
     return _e20;
 }
 
@@ -521,37 +558,37 @@ uint mul_hi_u32_(uint a_4, uint b_3)
     return (((hh + (lh >> 16u)) + (hl >> 16u)) + (mid_1 >> 16u));
 }
 
-uint uniform_index(uint n_3, uint hi_1, uint lo_1)
+uint uniform_index(uint n_4, uint hi_1, uint lo_1)
 {
-    const uint _e3 = mul_lo_u32_(hi_1, n_3);
-    const uint _e4 = mul_hi_u32_(hi_1, n_3);
-    const uint _e5 = mul_hi_u32_(lo_1, n_3);
+    const uint _e3 = mul_lo_u32_(hi_1, n_4);
+    const uint _e4 = mul_hi_u32_(hi_1, n_4);
+    const uint _e5 = mul_hi_u32_(lo_1, n_4);
     if ((_e3 > (4294967295u - _e5))) {
         return (_e4 + 1u);
     }
     return _e4;
 }
 
-uint reservoir_slot(uint n_4, uint k_1, uint hi_2, uint lo_2)
+uint reservoir_slot(uint n_5, uint k_1, uint hi_2, uint lo_2)
 {
-    if ((n_4 <= k_1)) {
-        return (n_4 - 1u);
+    if ((n_5 <= k_1)) {
+        return (n_5 - 1u);
     }
-    const uint _e7 = uniform_index(n_4, hi_2, lo_2);
+    const uint _e7 = uniform_index(n_5, hi_2, lo_2);
     if ((_e7 < k_1)) {
         return _e7;
     }
     return k_1;
 }
 
-bool reservoir_takes(uint n_5)
+bool reservoir_takes(uint n_6)
 {
-    return (n_5 < RESERVOIR_FULL);
+    return (n_6 < RESERVOIR_FULL);
 }
 
-float reservoir_weight(uint n_6, uint k_2)
+float reservoir_weight(uint n_7, uint k_2)
 {
-    const float _e2 = to_f32_(n_6);
+    const float _e2 = to_f32_(n_7);
     const float _e3 = to_f32_(k_2);
     return max((_e2 / _e3), 1.0);
 }
@@ -595,69 +632,69 @@ float4 range_lobe(float4 lobe_4)
 
 float cone_cos_of(float3 v, float d2_4, float a_5, float3 d)
 {
-    bool local_5 = (bool)0;
-    bool local_6 = (bool)0;
+    bool local_9 = (bool)0;
+    bool local_10 = (bool)0;
 
     float vd = dot(v, d);
     float h2_ = (d2_4 - (a_5 * a_5));
     if (!((h2_ <= 0.0))) {
         if ((vd >= 0.0)) {
-            local_6 = ((vd * vd) >= h2_);
+            local_10 = ((vd * vd) >= h2_);
         } else {
-            local_6 = false;
+            local_10 = false;
         }
-        bool _e19 = local_6;
-        local_5 = _e19;
+        bool _e19 = local_10;
+        local_9 = _e19;
     } else {
-        local_5 = true;
+        local_9 = true;
     }
-    bool _e21 = local_5;
+    bool _e21 = local_9;
     if (_e21) {
         return 1.0;
     }
-    float3 c_8 = cross(v, d);
-    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_8, c_8)) * a_5)) / d2_4), 1.0);
+    float3 c_9 = cross(v, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_9, c_9)) * a_5)) / d2_4), 1.0);
 }
 
 float cone_cos_toward(float3 center_, float radius, float3 p, float3 d_1)
 {
-    float3 v_4 = (center_ - p);
-    const float _e6 = cone_cos_of(v_4, dot(v_4, v_4), radius, d_1);
+    float3 v_5 = (center_ - p);
+    const float _e6 = cone_cos_of(v_5, dot(v_5, v_5), radius, d_1);
     return _e6;
 }
 
 float range_scale_at(float4 rl, float cos_t)
 {
-    float t_3 = (((0.5 + (0.5 * cos_t)) * (rl.z - 1.0)) + 1.0);
-    return clamp((rl.x + ((rl.y * rl.z) / (t_3 * t_3))), 1.0, (rl.w * rl.w));
+    float t_6 = (((0.5 + (0.5 * cos_t)) * (rl.z - 1.0)) + 1.0);
+    return clamp((rl.x + ((rl.y * rl.z) / (t_6 * t_6))), 1.0, (rl.w * rl.w));
 }
 
-float range_scale_toward(float4 rl_1, float3 center_1, float radius_1, float3 p_1, float3 r_2)
+float range_scale_toward(float4 rl_1, float3 center_1, float radius_1, float3 p_1, float3 r_3)
 {
     if ((rl_1.w <= 1.0)) {
         return 1.0;
     }
-    const float _e9 = cone_cos_toward(center_1, radius_1, p_1, r_2);
+    const float _e9 = cone_cos_toward(center_1, radius_1, p_1, r_3);
     const float _e10 = range_scale_at(rl_1, _e9);
     return _e10;
 }
 
-float3 triangle_normal(float3 a_6, float3 b_4, float3 c_4)
+float3 triangle_normal(float3 a_6, float3 b_4, float3 c_5)
 {
-    bool local_7 = (bool)0;
+    bool local_11 = (bool)0;
 
-    float3 n_12 = cross((b_4 - a_6), (c_4 - a_6));
-    float l2_ = dot(n_12, n_12);
+    float3 n_13 = cross((b_4 - a_6), (c_5 - a_6));
+    float l2_ = dot(n_13, n_13);
     if (!(!((l2_ > 0.0)))) {
-        local_7 = !((l2_ < 3e38));
+        local_11 = !((l2_ < 3e38));
     } else {
-        local_7 = true;
+        local_11 = true;
     }
-    bool _e17 = local_7;
+    bool _e17 = local_11;
     if (_e17) {
         return float3(0.0, 0.0, 0.0);
     }
-    return (n_12 / (sqrt(l2_)).xxx);
+    return (n_13 / (sqrt(l2_)).xxx);
 }
 
 float3 light_intensity(GpuLight l, float3 w_3)
@@ -738,17 +775,17 @@ uint bsh_first(uint nodes_2)
     return BSH_NONE;
 }
 
-float bsh_inner_scale(float a_8, float3 v_1, float d2_5, float3 r_3, float4 rl_2)
+float bsh_inner_scale(float a_8, float3 v_1, float d2_5, float3 r_4, float4 rl_2)
 {
-    const float _e5 = cone_cos_of(v_1, d2_5, a_8, r_3);
+    const float _e5 = cone_cos_of(v_1, d2_5, a_8, r_4);
     const float _e8 = range_scale_at(rl_2, (_e5 + 2e-6));
     return _e8;
 }
 
-bool bsh_reaches(BshNode node_2, float3 x_8, float3 r_4, float4 rl_3)
+bool bsh_reaches(BshNode node_2, float3 x_8, float3 r_5, float4 rl_3)
 {
-    bool local_8 = (bool)0;
-    bool local_9 = (bool)0;
+    bool local_12 = (bool)0;
+    bool local_13 = (bool)0;
 
     const bool _e6 = sphere_contains_point(node_2.center_, node_2.radius, x_8);
     if (_e6) {
@@ -756,168 +793,195 @@ bool bsh_reaches(BshNode node_2, float3 x_8, float3 r_4, float4 rl_3)
     }
     if (!((rl_3.w <= 1.0))) {
         const bool _e20 = sphere_contains_point(node_2.center_, (node_2.radius * (rl_3.w * 1.0001)), x_8);
-        local_8 = !(_e20);
+        local_12 = !(_e20);
     } else {
-        local_8 = true;
+        local_12 = true;
     }
-    bool _e23 = local_8;
+    bool _e23 = local_12;
     if (_e23) {
         return false;
     }
     const float _e25 = bsh_range_bound(node_2);
-    float3 v_5 = (x_8 - node_2.center_);
-    float d2_7 = dot(v_5, v_5);
+    float3 v_6 = (x_8 - node_2.center_);
+    float d2_7 = dot(v_6, v_6);
     float reach_max = (node_2.extent + ((rl_3.w * 1.001) * _e25));
     if ((d2_7 > (reach_max * reach_max))) {
         return false;
     }
     if ((node_2.child == BSH_NONE)) {
-        const float _e43 = range_scale_toward(rl_3, node_2.center_, node_2.extent, x_8, r_4);
+        const float _e43 = range_scale_toward(rl_3, node_2.center_, node_2.extent, x_8, r_5);
         const float _e46 = bsh_scaled_radius(node_2, sqrt(_e43));
         const bool _e47 = sphere_contains_point(node_2.center_, _e46, x_8);
         return _e47;
     }
-    const float _e50 = bsh_inner_scale(node_2.extent, -(v_5), d2_7, r_4, rl_3);
+    const float _e50 = bsh_inner_scale(node_2.extent, -(v_6), d2_7, r_5, rl_3);
     float s_c = (_e50 * 1.001);
     float reach = (node_2.extent + (sqrt(s_c) * _e25));
     if ((d2_7 <= ((node_2.radius * node_2.radius) * s_c))) {
-        local_9 = (d2_7 <= (reach * reach));
+        local_13 = (d2_7 <= (reach * reach));
     } else {
-        local_9 = false;
+        local_13 = false;
     }
-    bool _e67 = local_9;
+    bool _e67 = local_13;
     return _e67;
 }
 
-uint bsh_next_leaf_lobe(uint nodes_3, uint start_1, float3 x_9, float3 r_5, float4 rl_4)
+bool bsh_reaches_box(BshNode node_3, float3 lo_3, float3 hi_3, float w_4)
+{
+    const bool _e13 = sphere_overlaps_aabb(node_3.center_, (node_3.radius * (max(1.0, (w_4 * 1.0001)) * 1.0001)), lo_3, hi_3);
+    return _e13;
+}
+
+uint bsh_subtree(uint nodes_3, uint s_1, uint depth)
 {
     uint i_2 = (uint)0;
+    uint level = 0u;
+    bool local_14 = (bool)0;
 
-    i_2 = start_1;
+    const uint _e3 = bsh_first(nodes_3);
+    i_2 = _e3;
     uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
         loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
-        uint _e6 = i_2;
-        if ((_e6 != BSH_NONE)) {
+        uint _e7 = level;
+        if ((_e7 < depth)) {
+            uint _e11 = i_2;
+            local_14 = (_e11 != BSH_NONE);
+        } else {
+            local_14 = false;
+        }
+        bool _e15 = local_14;
+        if (_e15) {
         } else {
             break;
         }
         {
-            uint _e9 = i_2;
-            const BshNode _e10 = bsh_node(nodes_3, _e9);
-            const bool _e11 = bsh_reaches(_e10, x_9, r_5, rl_4);
-            if (_e11) {
-                if ((_e10.child == BSH_NONE)) {
-                    uint _e15 = i_2;
-                    return _e15;
+            uint _e16 = i_2;
+            const BshNode _e17 = bsh_node(nodes_3, _e16);
+            uint _e18 = level;
+            uint below = (depth - _e18);
+            if ((_e17.child == BSH_NONE)) {
+                if (((s_1 << (32u - below)) != 0u)) {
+                    return BSH_NONE;
                 }
-                i_2 = _e10.child;
-            } else {
-                i_2 = _e10.next;
+                uint _e29 = i_2;
+                return _e29;
             }
+            if ((((s_1 >> (below - 1u)) & 1u) == 0u)) {
+                i_2 = _e17.child;
+            } else {
+                const BshNode _e39 = bsh_node(nodes_3, _e17.child);
+                i_2 = _e39.next;
+            }
+            uint _e41 = level;
+            level = (_e41 + 1u);
         }
     }
-    return BSH_NONE;
+    uint _e44 = i_2;
+    return _e44;
 }
 
-Picks bsh_collect(float3 x_10, float3 r_6, float4 rl_5, uint seed_1)
+uint bsh_next_leaf_box(uint nodes_4, uint start_2, uint end, float3 lo_4, float3 hi_4, float w_5)
 {
-    Picks picks = (Picks)0;
-    uint h_1 = (uint)0;
     uint i_3 = (uint)0;
 
-    picks.n = 0u;
-    h_1 = seed_1;
-    const uint _e10 = bsh_first(BSH);
-    const uint _e11 = bsh_next_leaf_lobe(BSH, _e10, x_10, r_6, rl_5);
-    i_3 = _e11;
+    i_3 = start_2;
     uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
-    bool loop_init = true;
     while(true) {
         if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
         loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
-        if (!loop_init) {
-            uint _e44 = i_3;
-            uint _e47 = asuint(bsh_nodes.Load(20+_e44*32));
-            const uint _e48 = bsh_next_leaf_lobe(BSH, _e47, x_10, r_6, rl_5);
-            i_3 = _e48;
-        }
-        loop_init = false;
-        uint _e13 = i_3;
-        if ((_e13 != BSH_NONE)) {
+        uint _e7 = i_3;
+        if ((_e7 != end)) {
         } else {
             break;
         }
         {
-            uint _e17 = picks.n;
-            const bool _e18 = reservoir_takes(_e17);
-            if (_e18) {
-                uint _e20 = picks.n;
-                picks.n = (_e20 + 1u);
-                uint _e23 = h_1;
-                const uint _e24 = pcg_hash(_e23);
-                h_1 = _e24;
-                uint hi_3 = h_1;
-                uint _e26 = h_1;
-                const uint _e27 = pcg_hash(_e26);
-                h_1 = _e27;
-                uint _e29 = picks.n;
-                uint _e31 = h_1;
-                const uint _e32 = reservoir_slot(_e29, K, hi_3, _e31);
-                if ((_e32 < K)) {
-                    uint _e38 = i_3;
-                    uint _e41 = asuint(bsh_nodes.Load(24+_e38*32));
-                    picks.light[min(uint(_e32), 7u)] = _e41;
+            uint _e9 = i_3;
+            const BshNode _e10 = bsh_node(nodes_4, _e9);
+            const bool _e11 = bsh_reaches_box(_e10, lo_4, hi_4, w_5);
+            if (_e11) {
+                if ((_e10.child == BSH_NONE)) {
+                    uint _e15 = i_3;
+                    return _e15;
                 }
+                i_3 = _e10.child;
+            } else {
+                i_3 = _e10.next;
             }
         }
     }
-    Picks _e49 = picks;
-    const Picks picks_1 = _e49;
-    return picks_1;
+    return end;
 }
 
-Connection connect_record(GpuLight l_2, float3 x_11, float3 n_7, float3 ng_1, float r2_2, float rt2_2, float w_res, float u1_2, float u2_2, float eps, bool trace)
+void reservoir_offer(inout Picks picks_1, inout uint h_1, uint light)
 {
-    Connection c_5 = (Connection)0;
-    bool local_10 = (bool)0;
-    bool local_11 = (bool)0;
+    uint _e4 = picks_1.n;
+    const bool _e5 = reservoir_takes(_e4);
+    if (_e5) {
+        uint _e7 = picks_1.n;
+        picks_1.n = (_e7 + 1u);
+        uint _e10 = h_1;
+        const uint _e11 = pcg_hash(_e10);
+        h_1 = _e11;
+        uint hi_6 = h_1;
+        uint _e13 = h_1;
+        const uint _e14 = pcg_hash(_e13);
+        h_1 = _e14;
+        uint _e16 = picks_1.n;
+        uint _e18 = h_1;
+        const uint _e19 = reservoir_slot(_e16, K, hi_6, _e18);
+        if ((_e19 < K)) {
+            picks_1.light[min(uint(_e19), 7u)] = light;
+            return;
+        } else {
+            return;
+        }
+    } else {
+        return;
+    }
+}
 
-    c_5.e = (0.0).xxx;
+Connection connect_record(GpuLight l_2, float3 x_9, float3 n_8, float3 ng_1, float r2_2, float rt2_2, float w_res, float u1_2, float u2_2, float eps, bool trace)
+{
+    Connection c_6 = (Connection)0;
+    bool local_15 = (bool)0;
+    bool local_16 = (bool)0;
+
+    c_6.e = (0.0).xxx;
     const float3 _e16 = light_point(l_2, u1_2, u2_2);
-    c_5.y = _e16;
-    float3 _e19 = c_5.y;
-    const float _e20 = connection_cosine(x_11, _e19, n_7, ng_1, r2_2);
-    c_5.cos_x = _e20;
-    float _e22 = c_5.cos_x;
+    c_6.y = _e16;
+    float3 _e19 = c_6.y;
+    const float _e20 = connection_cosine(x_9, _e19, n_8, ng_1, r2_2);
+    c_6.cos_x = _e20;
+    float _e22 = c_6.cos_x;
     if (!((_e22 <= 0.0))) {
         if (trace) {
-            float3 _e33 = c_5.y;
-            const bool _e34 = occluded((x_11 + (ng_1 * eps)), _e33);
-            local_11 = _e34;
+            float3 _e33 = c_6.y;
+            const bool _e34 = occluded((x_9 + (ng_1 * eps)), _e33);
+            local_16 = _e34;
         } else {
-            local_11 = false;
+            local_16 = false;
         }
-        bool _e36 = local_11;
-        local_10 = _e36;
+        bool _e36 = local_16;
+        local_15 = _e36;
     } else {
-        local_10 = true;
+        local_15 = true;
     }
-    bool _e38 = local_10;
+    bool _e38 = local_15;
     if (_e38) {
-        Connection _e39 = c_5;
+        Connection _e39 = c_6;
         const Connection connection = _e39;
         return connection;
     }
-    float3 _e41 = c_5.y;
-    float3 v_6 = (x_11 - _e41);
-    float d2_8 = dot(v_6, v_6);
-    const float3 _e48 = light_intensity(l_2, (v_6 / (sqrt(d2_8)).xxx));
-    float _e50 = c_5.cos_x;
+    float3 _e41 = c_6.y;
+    float3 v_7 = (x_9 - _e41);
+    float d2_8 = dot(v_7, v_7);
+    const float3 _e48 = light_intensity(l_2, (v_7 / (sqrt(d2_8)).xxx));
+    float _e50 = c_6.cos_x;
     const float _e51 = connection_factor(_e50, d2_8, rt2_2, w_res);
-    c_5.e = (_e48 * _e51);
-    Connection _e53 = c_5;
+    c_6.e = (_e48 * _e51);
+    Connection _e53 = c_6;
     const Connection connection_1 = _e53;
     return connection_1;
 }
@@ -935,45 +999,325 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
     return ret;
 }
 
-Connection connect_traced(uint li, float3 x_12, float3 n_8, float3 ng_2, float s, float w_res_1, float u1_3, float u2_3, float eps_1, bool trace_1)
+Connection connect_traced(uint li, float3 x_10, float3 n_9, float3 ng_2, float s_2, float w_res_1, float u1_3, float u2_3, float eps_1, bool trace_1)
 {
     GpuLight _e12 = ConstructGpuLight(asfloat(lights.Load3(li*64+0)), asuint(lights.Load(li*64+12)), asfloat(lights.Load3(li*64+16)), asfloat(lights.Load(li*64+28)), asfloat(lights.Load3(li*64+32)), asfloat(lights.Load(li*64+44)), asfloat(lights.Load3(li*64+48)), asuint(lights.Load(li*64+60)));
     float _e15 = asfloat(r2_3.Load(li*4));
     float _e19 = asfloat(rt2_3.Load(li*4));
-    const Connection _e21 = connect_record(_e12, x_12, n_8, ng_2, (s * _e15), (s * _e19), w_res_1, u1_3, u2_3, eps_1, trace_1);
+    const Connection _e21 = connect_record(_e12, x_10, n_9, ng_2, (s_2 * _e15), (s_2 * _e19), w_res_1, u1_3, u2_3, eps_1, trace_1);
     const Connection connection_2 = _e21;
     return connection_2;
 }
 
 float4 surface_at(int2 texel)
 {
-    float4 p_2 = position_tex.Load(int3(texel, int(0)));
-    return ((p_2.w > 0.0) ? float4(p_2.xyz, 1.0) : (0.0).xxxx);
+    float4 p_4 = position_tex.Load(int3(texel, int(0)));
+    return ((p_4.w > 0.0) ? float4(p_4.xyz, 1.0) : (0.0).xxxx);
 }
 
-Shaded shade_connection(Connection c_6, float3 x_13, float3 n_9, Material m_1)
-{
-    Shaded s_1 = (Shaded)0;
+uint naga_div(uint lhs, uint rhs) {
+    return lhs / (rhs == 0u ? 1u : rhs);
+}
 
-    s_1.e = c_6.e;
-    s_1.diffuse = (0.0).xxx;
-    s_1.specular = (0.0).xxx;
-    Shaded _e13 = s_1;
+WorkgroupBox ConstructWorkgroupBox(float3 arg0, float3 arg1) {
+    WorkgroupBox ret = (WorkgroupBox)0;
+    ret.lo = arg0;
+    ret.hi = arg1;
+    return ret;
+}
+
+WorkgroupBox workgroup_bounds(uint li_1, float3 lo_5, float3 hi_5)
+{
+    uint stride = 32u;
+
+    wg_lo[min(uint(li_1), 63u)] = lo_5;
+    wg_hi[min(uint(li_1), 63u)] = hi_5;
+    GroupMemoryBarrierWithGroupSync();
+    uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
+    bool loop_init = true;
+    while(true) {
+        if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
+        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+        if (!loop_init) {
+            uint _e36 = stride;
+            stride = naga_div(_e36, 2u);
+        }
+        loop_init = false;
+        uint _e9 = stride;
+        if ((_e9 > 0u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e12 = stride;
+            if ((li_1 < _e12)) {
+                float3 _e18 = wg_lo[min(uint(li_1), 63u)];
+                uint _e20 = stride;
+                float3 _e23 = wg_lo[min(uint((li_1 + _e20)), 63u)];
+                wg_lo[min(uint(li_1), 63u)] = min(_e18, _e23);
+                float3 _e29 = wg_hi[min(uint(li_1), 63u)];
+                uint _e31 = stride;
+                float3 _e34 = wg_hi[min(uint((li_1 + _e31)), 63u)];
+                wg_hi[min(uint(li_1), 63u)] = max(_e29, _e34);
+            }
+            GroupMemoryBarrierWithGroupSync();
+        }
+    }
+    if ((li_1 == 0u)) {
+        float3 _e44 = wg_lo[0];
+        float3 _e47 = wg_hi[0];
+        wg_box = ConstructWorkgroupBox(_e44, _e47);
+    }
+    GroupMemoryBarrierWithGroupSync();
+    WorkgroupBox _e50 = wg_box;
+    GroupMemoryBarrierWithGroupSync();
+    const WorkgroupBox workgroupbox = _e50;
+    return workgroupbox;
+}
+
+WorkgroupBox workgroup_box(uint li_2, float3 p_2, bool has)
+{
+    const WorkgroupBox _e9 = workgroup_bounds(li_2, (has ? p_2 : (3.4028235e38).xxx), (has ? p_2 : (-3.4028235e38).xxx));
+    const WorkgroupBox workgroupbox_1 = _e9;
+    return workgroupbox_1;
+}
+
+bool box_is_empty(WorkgroupBox b_6)
+{
+    return (b_6.lo.x > b_6.hi.x);
+}
+
+uint tile_subtree(uint s_3, TileWalk t_2, bool list, uint at_1, uint start_3, uint to)
+{
+    uint p_3 = (uint)0;
+    uint b_7 = (uint)0;
+    bool local_17 = (bool)0;
+    bool local_18 = (bool)0;
+    bool local_19 = (bool)0;
+
+    const uint _e8 = bsh_subtree(BSH, s_3, BSH_TILE_DEPTH);
+    if ((_e8 == BSH_NONE)) {
+        return 0u;
+    }
+    uint end_1 = asuint(bsh_nodes.Load(20+_e8*32));
+    p_3 = at_1;
+    const uint _e21 = bsh_next_leaf_box(BSH, _e8, end_1, t_2.lo, t_2.hi, t_2.w);
+    b_7 = _e21;
+    uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
+    bool loop_init_1 = true;
+    while(true) {
+        if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
+        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+        if (!loop_init_1) {
+            uint _e53 = b_7;
+            uint _e56 = asuint(bsh_nodes.Load(20+_e53*32));
+            const uint _e60 = bsh_next_leaf_box(BSH, _e56, end_1, t_2.lo, t_2.hi, t_2.w);
+            b_7 = _e60;
+        }
+        loop_init_1 = false;
+        uint _e23 = b_7;
+        if ((_e23 != end_1)) {
+            if (!(!(list))) {
+                uint _e31 = p_3;
+                local_18 = (_e31 < to);
+            } else {
+                local_18 = true;
+            }
+            bool _e34 = local_18;
+            local_17 = _e34;
+        } else {
+            local_17 = false;
+        }
+        bool _e36 = local_17;
+        if (_e36) {
+        } else {
+            break;
+        }
+        {
+            if (list) {
+                uint _e39 = p_3;
+                local_19 = (_e39 >= start_3);
+            } else {
+                local_19 = false;
+            }
+            bool _e42 = local_19;
+            if (_e42) {
+                uint _e44 = p_3;
+                uint _e47 = b_7;
+                tile_list[min(uint((_e44 - start_3)), 1023u)] = _e47;
+            }
+            uint _e48 = p_3;
+            p_3 = (_e48 + 1u);
+        }
+    }
+    uint _e61 = p_3;
+    return (_e61 - at_1);
+}
+
+TileWalk ConstructTileWalk(float3 arg0, float3 arg1, float arg2, uint arg3) {
+    TileWalk ret = (TileWalk)0;
+    ret.lo = arg0;
+    ret.hi = arg1;
+    ret.w = arg2;
+    ret.total = arg3;
+    return ret;
+}
+
+TileWalk tile_walk_begin(uint li_3, float3 x_11, float w_6, bool has_1)
+{
+    TileWalk t_3 = (TileWalk)0;
+    uint s_4 = (uint)0;
+    uint sum = 0u;
+    uint s_5 = 0u;
+
+    uint _e8; InterlockedMax(tile_scale, (has_1 ? asuint(w_6) : 0u), _e8);
+    const WorkgroupBox _e9 = workgroup_box(li_3, x_11, has_1);
+    GroupMemoryBarrierWithGroupSync();
+    uint _e13 = tile_scale;
+    GroupMemoryBarrierWithGroupSync();
+    t_3 = ConstructTileWalk(_e9.lo, _e9.hi, asfloat(_e13), 0u);
+    const bool _e18 = box_is_empty(_e9);
+    if (_e18) {
+        TileWalk _e19 = t_3;
+        const TileWalk tilewalk = _e19;
+        return tilewalk;
+    }
+    s_4 = li_3;
+    uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
+    bool loop_init_2 = true;
+    while(true) {
+        if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
+        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+        if (!loop_init_2) {
+            uint _e34 = s_4;
+            s_4 = (_e34 + TILE_THREADS);
+        }
+        loop_init_2 = false;
+        uint _e21 = s_4;
+        if ((_e21 < BSH_TILE_SUBTREES)) {
+        } else {
+            break;
+        }
+        {
+            uint _e25 = s_4;
+            uint _e27 = s_4;
+            TileWalk _e28 = t_3;
+            const uint _e33 = tile_subtree(_e27, _e28, false, 0u, 0u, 0u);
+            subtree_at[min(uint(_e25), 255u)] = _e33;
+        }
+    }
+    GroupMemoryBarrierWithGroupSync();
+    if ((li_3 == 0u)) {
+        uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
+        bool loop_init_3 = true;
+        while(true) {
+            if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
+            loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+            if (!loop_init_3) {
+                uint _e57 = s_5;
+                s_5 = (_e57 + 1u);
+            }
+            loop_init_3 = false;
+            uint _e43 = s_5;
+            if ((_e43 < BSH_TILE_SUBTREES)) {
+            } else {
+                break;
+            }
+            {
+                uint _e47 = s_5;
+                uint c_10 = subtree_at[min(uint(_e47), 255u)];
+                uint _e51 = s_5;
+                uint _e53 = sum;
+                subtree_at[min(uint(_e51), 255u)] = _e53;
+                uint _e54 = sum;
+                sum = (_e54 + c_10);
+            }
+        }
+        uint _e60 = sum;
+        tile_total = _e60;
+    }
+    GroupMemoryBarrierWithGroupSync();
+    uint _e63 = tile_total;
+    GroupMemoryBarrierWithGroupSync();
+    t_3.total = _e63;
+    TileWalk _e64 = t_3;
+    const TileWalk tilewalk_1 = _e64;
+    return tilewalk_1;
+}
+
+uint tile_walk_fill(uint li_4, TileWalk t_4, uint start_4)
+{
+    uint s_6 = (uint)0;
+    uint past = (uint)0;
+    bool local_20 = (bool)0;
+
+    uint to_1 = min(t_4.total, (start_4 + TILE_LIST));
+    s_6 = li_4;
+    uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
+    bool loop_init_4 = true;
+    while(true) {
+        if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
+        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+        if (!loop_init_4) {
+            uint _e38 = s_6;
+            s_6 = (_e38 + TILE_THREADS);
+        }
+        loop_init_4 = false;
+        uint _e8 = s_6;
+        if ((_e8 < BSH_TILE_SUBTREES)) {
+        } else {
+            break;
+        }
+        {
+            uint _e12 = s_6;
+            uint at_2 = subtree_at[min(uint(_e12), 255u)];
+            past = t_4.total;
+            uint _e17 = s_6;
+            if (((_e17 + 1u) < BSH_TILE_SUBTREES)) {
+                uint _e23 = s_6;
+                uint _e27 = subtree_at[min(uint((_e23 + 1u)), 255u)];
+                past = _e27;
+            }
+            if ((at_2 < to_1)) {
+                uint _e31 = past;
+                local_20 = (_e31 > start_4);
+            } else {
+                local_20 = false;
+            }
+            bool _e34 = local_20;
+            if (_e34) {
+                uint _e35 = s_6;
+                const uint _e37 = tile_subtree(_e35, t_4, true, at_2, start_4, to_1);
+            }
+        }
+    }
+    GroupMemoryBarrierWithGroupSync();
+    return (to_1 - start_4);
+}
+
+Shaded shade_connection(Connection c_7, float3 x_12, float3 n_10, Material m_1)
+{
+    Shaded s_7 = (Shaded)0;
+
+    s_7.e = c_7.e;
+    s_7.diffuse = (0.0).xxx;
+    s_7.specular = (0.0).xxx;
+    Shaded _e13 = s_7;
     const Shaded shaded = _e13;
     return shaded;
 }
 
-Shaded shade_pick_traced(uint li_1, float3 x_14, float3 n_10, float3 r_7, float4 rl_6, Material m_2, float w_4, float u1_4, float u2_4, float eps_2, bool trace_2)
+Shaded shade_pick_traced(uint li_5, float3 x_13, float3 n_11, float3 r_6, float4 rl_4, Material m_2, float w_7, float u1_4, float u2_4, float eps_2, bool trace_2)
 {
-    const Connection _e12 = connect_traced(li_1, x_14, n_10, n_10, 1.0, w_4, u1_4, u2_4, eps_2, trace_2);
-    const Shaded _e13 = shade_connection(_e12, x_14, n_10, m_2);
+    const Connection _e12 = connect_traced(li_5, x_13, n_11, n_11, 1.0, w_7, u1_4, u2_4, eps_2, trace_2);
+    const Shaded _e13 = shade_connection(_e12, x_13, n_11, m_2);
     const Shaded shaded_1 = _e13;
     return shaded_1;
 }
 
-Shaded shade_pick(uint li_2, float3 x_15, float3 n_11, float3 r_8, float4 rl_7, Material m_3, float w_5, float u1_5, float u2_5, float eps_3)
+Shaded shade_pick(uint li_6, float3 x_14, float3 n_12, float3 r_7, float4 rl_5, Material m_3, float w_8, float u1_5, float u2_5, float eps_3)
 {
-    const Shaded _e11 = shade_pick_traced(li_2, x_15, n_11, r_8, rl_7, m_3, w_5, u1_5, u2_5, eps_3, true);
+    const Shaded _e11 = shade_pick_traced(li_6, x_14, n_12, r_7, rl_5, m_3, w_8, u1_5, u2_5, eps_3, true);
     const Shaded shaded_2 = _e11;
     return shaded_2;
 }
@@ -986,104 +1330,214 @@ Shaded ConstructShaded(float3 arg0, float3 arg1, float3 arg2) {
     return ret;
 }
 
-Shaded add(Shaded a_9, Shaded b_6)
+Shaded add(Shaded a_9, Shaded b_8)
 {
-    const Shaded shaded_3 = ConstructShaded((a_9.e + b_6.e), (a_9.diffuse + b_6.diffuse), (a_9.specular + b_6.specular));
+    const Shaded shaded_3 = ConstructShaded((a_9.e + b_8.e), (a_9.diffuse + b_8.diffuse), (a_9.specular + b_8.specular));
     return shaded_3;
 }
 
 [numthreads(8, 8, 1)]
-void main(uint3 gid : SV_DispatchThreadID)
+void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
 {
+    if (lid == 0) {
+        wg_lo = (float3[64])0;
+        wg_hi = (float3[64])0;
+        wg_box = (WorkgroupBox)0;
+        tile_list = (uint[1024])0;
+        subtree_at = (uint[256])0;
+        tile_scale = (uint)0;
+        tile_total = (uint)0;
+    }
+    GroupMemoryBarrierWithGroupSync();
     bool local = (bool)0;
+    float4 s = (0.0).xxxx;
+    float3 nn = (0.0).xxx;
     bool local_1 = (bool)0;
+    bool local_2 = (bool)0;
+    bool local_3 = (bool)0;
+    float3 n = float3(0.0, 0.0, 1.0);
     Material m = (Material)0;
     float4 lobe = float4(1.0, 0.0, 1.0, 1.0);
     float3 r = (float3)0;
     uint h = (uint)0;
     Shaded t = ConstructShaded((0.0).xxx, (0.0).xxx, (0.0).xxx);
+    Picks picks = (Picks)0;
+    uint hr = (uint)0;
+    bool local_4 = (bool)0;
+    uint start = 0u;
+    uint j = (uint)0;
+    bool local_5 = (bool)0;
     uint k = 0u;
 
-    uint _e4 = view.width;
-    if (!((gid.x >= _e4))) {
+    uint _e5 = view.width;
+    if ((gid.x < _e5)) {
         uint _e12 = view.height;
-        local = (gid.y >= _e12);
+        local = (gid.y < _e12);
     } else {
-        local = true;
+        local = false;
     }
-    bool _e15 = local;
-    if (_e15) {
-        return;
-    }
+    bool inside = local;
     int2 texel_1 = int2(int(gid.x), int(gid.y));
-    const float4 _e21 = surface_at(texel_1);
-    float4 _e24 = normal_tex.Load(int3(texel_1, int(0)));
-    float3 nn = _e24.xyz;
-    float len2_ = dot(nn, nn);
-    if (!((_e21.w <= 0.0))) {
-        local_1 = !((len2_ > 0.0));
+    if (inside) {
+        const float4 _e27 = surface_at(texel_1);
+        s = _e27;
+        float4 _e30 = normal_tex.Load(int3(texel_1, int(0)));
+        nn = _e30.xyz;
+    }
+    float3 _e32 = nn;
+    float3 _e33 = nn;
+    float len2_ = dot(_e32, _e33);
+    float4 _e35 = s;
+    float3 x_15 = _e35.xyz;
+    if (inside) {
+        float _e40 = s.w;
+        local_1 = (_e40 > 0.0);
     } else {
-        local_1 = true;
+        local_1 = false;
     }
-    bool _e37 = local_1;
-    if (_e37) {
-        out_tex[texel_1] = (0.0).xxxx;
-        return;
+    bool _e44 = local_1;
+    if (_e44) {
+        local_2 = (len2_ > 0.0);
+    } else {
+        local_2 = false;
     }
-    float3 x_16 = _e21.xyz;
-    float3 n_13 = (nn / (sqrt(len2_)).xxx);
-    r = n_13;
-    float4 _e53 = lobe;
-    const float4 _e54 = range_lobe(_e53);
-    float _e57 = view.shadow_offset;
-    float3 _e60 = view.eye;
-    float eps_4 = (_e57 * length((_e60 - x_16)));
-    uint _e66 = view.seed;
-    uint _e70 = view.width;
-    uint _e76 = view.frame;
-    const uint _e77 = point_stream(_e66, ((gid.y * _e70) + gid.x), _e76);
-    const uint _e78 = pick_stream(_e77);
-    h = _e78;
-    float3 _e88 = r;
-    const Picks _e89 = bsh_collect(x_16, _e88, _e54, _e77);
-    const float _e92 = reservoir_weight(_e89.n, K);
-    uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
-    bool loop_init_1 = true;
+    bool _e50 = local_2;
+    if (_e50) {
+        local_3 = all((abs(x_15) <= (3.4028235e38).xxx));
+    } else {
+        local_3 = false;
+    }
+    bool has_2 = local_3;
+    if (has_2) {
+        float3 _e65 = nn;
+        n = (_e65 / (sqrt(len2_)).xxx);
+    }
+    float3 _e76 = n;
+    r = _e76;
+    float4 _e78 = lobe;
+    const float4 _e79 = range_lobe(_e78);
+    float _e82 = view.shadow_offset;
+    float3 _e85 = view.eye;
+    float eps_4 = (_e82 * length((_e85 - x_15)));
+    uint _e91 = view.seed;
+    uint _e95 = view.width;
+    uint _e101 = view.frame;
+    const uint _e102 = point_stream(_e91, ((gid.y * _e95) + gid.x), _e101);
+    const uint _e103 = pick_stream(_e102);
+    h = _e103;
+    picks.n = 0u;
+    hr = _e102;
+    if (has_2) {
+        local_4 = (_e79.w >= 0.0);
+    } else {
+        local_4 = false;
+    }
+    bool _e124 = local_4;
+    const TileWalk _e125 = tile_walk_begin(lid, x_15, _e79.w, _e124);
+    uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
+    bool loop_init_5 = true;
     while(true) {
-        if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
-        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-        if (!loop_init_1) {
-            uint _e117 = k;
-            k = (_e117 + 1u);
+        if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
+        loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
+        if (!loop_init_5) {
+            uint _e160 = start;
+            start = (_e160 + TILE_LIST);
         }
-        loop_init_1 = false;
-        uint _e95 = k;
-        if ((_e95 < min(_e89.n, K))) {
+        loop_init_5 = false;
+        uint _e128 = start;
+        if ((_e128 < _e125.total)) {
         } else {
             break;
         }
         {
-            uint _e100 = h;
-            const uint _e101 = pcg_hash(_e100);
-            h = _e101;
-            uint _e102 = h;
-            const float _e103 = xi_from_bits(_e102);
-            uint _e104 = h;
-            const uint _e105 = pcg_hash(_e104);
-            h = _e105;
-            Shaded _e106 = t;
-            uint _e108 = k;
-            float3 _e110 = r;
-            Material _e111 = m;
-            uint _e112 = h;
-            const float _e113 = xi_from_bits(_e112);
-            const Shaded _e114 = shade_pick(_e89.light[min(uint(_e108), 7u)], x_16, n_13, _e110, _e54, _e111, _e92, _e103, _e113, eps_4);
-            const Shaded _e115 = add(_e106, _e114);
-            t = _e115;
+            uint _e131 = start;
+            const uint _e132 = tile_walk_fill(lid, _e125, _e131);
+            j = 0u;
+            uint2 loop_bound_9 = uint2(4294967295u, 4294967295u);
+            bool loop_init_6 = true;
+            while(true) {
+                if (all(loop_bound_9 == uint2(0u, 0u))) { break; }
+                loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
+                if (!loop_init_6) {
+                    uint _e158 = j;
+                    j = (_e158 + 1u);
+                }
+                loop_init_6 = false;
+                uint _e135 = j;
+                if ((_e135 < _e132)) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e138 = j;
+                    uint b_10 = tile_list[min(uint(_e138), 1023u)];
+                    if (!(!(has_2))) {
+                        BshNode _e147 = ConstructBshNode(asfloat(bsh_nodes.Load3(b_10*32+0)), asfloat(bsh_nodes.Load(b_10*32+12)), asuint(bsh_nodes.Load(b_10*32+16)), asuint(bsh_nodes.Load(b_10*32+20)), asuint(bsh_nodes.Load(b_10*32+24)), asfloat(bsh_nodes.Load(b_10*32+28)));
+                        float3 _e148 = r;
+                        const bool _e149 = bsh_reaches(_e147, x_15, _e148, _e79);
+                        local_5 = !(_e149);
+                    } else {
+                        local_5 = true;
+                    }
+                    bool _e152 = local_5;
+                    if (_e152) {
+                        continue;
+                    }
+                    uint li_7 = asuint(bsh_nodes.Load(24+b_10*32));
+                    reservoir_offer(picks, hr, li_7);
+                }
+            }
+            GroupMemoryBarrierWithGroupSync();
         }
     }
-    uint count = _e89.n;
-    float3 _e122 = t.e;
-    out_tex[texel_1] = float4(_e122, float(count));
+    if (!(has_2)) {
+        if (inside) {
+            out_tex[texel_1] = (0.0).xxxx;
+        }
+        return;
+    }
+    uint _e168 = picks.n;
+    const float _e170 = reservoir_weight(_e168, K);
+    uint2 loop_bound_10 = uint2(4294967295u, 4294967295u);
+    bool loop_init_7 = true;
+    while(true) {
+        if (all(loop_bound_10 == uint2(0u, 0u))) { break; }
+        loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
+        if (!loop_init_7) {
+            uint _e198 = k;
+            k = (_e198 + 1u);
+        }
+        loop_init_7 = false;
+        uint _e173 = k;
+        uint _e175 = picks.n;
+        if ((_e173 < min(_e175, K))) {
+        } else {
+            break;
+        }
+        {
+            uint _e179 = h;
+            const uint _e180 = pcg_hash(_e179);
+            h = _e180;
+            uint _e181 = h;
+            const float _e182 = xi_from_bits(_e181);
+            uint _e183 = h;
+            const uint _e184 = pcg_hash(_e183);
+            h = _e184;
+            Shaded _e185 = t;
+            uint _e187 = k;
+            uint _e189 = picks.light[min(uint(_e187), 7u)];
+            float3 _e190 = n;
+            float3 _e191 = r;
+            Material _e192 = m;
+            uint _e193 = h;
+            const float _e194 = xi_from_bits(_e193);
+            const Shaded _e195 = shade_pick(_e189, x_15, _e190, _e191, _e79, _e192, _e170, _e182, _e194, eps_4);
+            const Shaded _e196 = add(_e185, _e195);
+            t = _e196;
+        }
+    }
+    uint count = picks.n;
+    float3 _e204 = t.e;
+    out_tex[texel_1] = float4(_e204, float(count));
     return;
 }

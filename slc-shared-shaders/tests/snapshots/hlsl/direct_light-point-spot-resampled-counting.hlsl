@@ -61,6 +61,24 @@ struct Connection {
     float cos_x;
 };
 
+struct WorkgroupBox {
+    float3 lo;
+    int _pad1_0;
+    float3 hi;
+    int _end_pad_0;
+};
+
+struct TileWalk {
+    float3 lo;
+    int _pad1_0;
+    float3 hi;
+    float w;
+    uint total;
+    int _end_pad_0;
+    int _end_pad_1;
+    int _end_pad_2;
+};
+
 struct Shaded {
     float3 e;
     int _pad1_0;
@@ -143,6 +161,11 @@ static const float TEMPORAL_CHANGE_HIGH = 8.0;
 static const float TEMPORAL_MIN_WEIGHT = 0.01;
 static const uint K = 8u;
 static const uint BSH = 0u;
+static const uint BSH_TILE_DEPTH = 8u;
+static const uint BSH_TILE_SUBTREES = 256u;
+static const uint TILE_THREADS = 64u;
+static const uint BOX_THREADS = 64u;
+static const uint TILE_LIST = 1024u;
 
 static uint rays_cast = (uint)0;
 static uint nodes_visited = (uint)0;
@@ -157,6 +180,13 @@ ByteAddressBuffer rt2_3 : register(t2, space1);
 ByteAddressBuffer r2_3 : register(t3, space1);
 ByteAddressBuffer bsh_nodes : register(t4, space1);
 RWByteAddressBuffer counters : register(u8);
+groupshared float3 wg_lo[64];
+groupshared float3 wg_hi[64];
+groupshared WorkgroupBox wg_box;
+groupshared uint tile_list[1024];
+groupshared uint subtree_at[256];
+groupshared uint tile_scale;
+groupshared uint tile_total;
 static uint evaluations = (uint)0;
 
 float to_f32_(uint u)
@@ -164,14 +194,14 @@ float to_f32_(uint u)
     return float(u);
 }
 
-uint mul_lo_u32_(uint a, uint b_1)
+uint mul_lo_u32_(uint a, uint b)
 {
-    return (a * b_1);
+    return (a * b);
 }
 
-uint add_wrap_u32_(uint a_1, uint b_2)
+uint add_wrap_u32_(uint a_1, uint b_1)
 {
-    return (a_1 + b_2);
+    return (a_1 + b_1);
 }
 
 float f32_from_bits(uint u_1)
@@ -226,6 +256,13 @@ bool sphere_contains_point(float3 c, float r_1, float3 x_1)
     return (dot(v_2, v_2) <= (r_1 * r_1));
 }
 
+bool sphere_overlaps_aabb(float3 c_1, float r_2, float3 bmin, float3 bmax)
+{
+    float3 q_1 = clamp(c_1, bmin, bmax);
+    float3 v_3 = (q_1 - c_1);
+    return (dot(v_3, v_3) <= (r_2 * r_2));
+}
+
 float inverse_square(float d2_2)
 {
     return (1.0 / max(d2_2, MIN_D2_));
@@ -238,31 +275,31 @@ float connection_factor(float cos_x, float d2_3, float rt2_1, float w_1)
     return (((cos_x * _e4) * _e6) * w_1);
 }
 
-float connection_cosine(float3 x_2, float3 y, float3 n, float3 ng, float r2_1)
+float connection_cosine(float3 x_2, float3 y, float3 n_1, float3 ng, float r2_1)
 {
-    bool local_4 = (bool)0;
-    bool local_5 = (bool)0;
+    bool local_8 = (bool)0;
+    bool local_9 = (bool)0;
 
-    float3 v_3 = (x_2 - y);
-    float d2_6 = dot(v_3, v_3);
+    float3 v_4 = (x_2 - y);
+    float d2_6 = dot(v_4, v_4);
     const bool _e7 = slc_keep(r2_1, d2_6);
     if (!(!(_e7))) {
-        local_4 = !((d2_6 > 0.0));
+        local_8 = !((d2_6 > 0.0));
     } else {
-        local_4 = true;
+        local_8 = true;
     }
-    bool _e16 = local_4;
+    bool _e16 = local_8;
     if (_e16) {
         return 0.0;
     }
-    float3 w_6 = (v_3 / (sqrt(d2_6)).xxx);
-    float cos_x_1 = -(dot(n, w_6));
+    float3 w_9 = (v_4 / (sqrt(d2_6)).xxx);
+    float cos_x_1 = -(dot(n_1, w_9));
     if (!((cos_x_1 <= 0.0))) {
-        local_5 = (dot(ng, w_6) >= 0.0);
+        local_9 = (dot(ng, w_9) >= 0.0);
     } else {
-        local_5 = true;
+        local_9 = true;
     }
-    bool _e32 = local_5;
+    bool _e32 = local_9;
     if (_e32) {
         return 0.0;
     }
@@ -274,8 +311,8 @@ float spot_falloff(float cos_theta, float cos_outer, float cos_inner, float shap
     if ((cos_inner <= cos_outer)) {
         return ((cos_theta >= cos_outer) ? 1.0 : 0.0);
     }
-    float t_1 = saturate(((cos_theta - cos_outer) / (cos_inner - cos_outer)));
-    return ((shape > 0.5) ? (t_1 * t_1) : ((t_1 * t_1) * (3.0 - (2.0 * t_1))));
+    float t_4 = saturate(((cos_theta - cos_outer) / (cos_inner - cos_outer)));
+    return ((shape > 0.5) ? (t_4 * t_4) : ((t_4 * t_4) * (3.0 - (2.0 * t_4))));
 }
 
 float bsh_scaled_radius(BshNode node, float scale)
@@ -303,29 +340,29 @@ float weighted_threshold(float w_sum, float u_2)
     return (w_sum / (1.0 - u_2));
 }
 
-float resample_target(float3 c_1)
+float resample_target(float3 c_2)
 {
-    return (((c_1.x + c_1.y) + c_1.z) * 0.33333334);
+    return (((c_2.x + c_2.y) + c_2.z) * 0.33333334);
 }
 
 uint naga_mod(uint lhs, uint rhs) {
     return lhs % (rhs == 0u ? 1u : rhs);
 }
 
-float slot_target(float3 c_2, uint slot, uint k_2)
+float slot_target(float3 c_3, uint slot, uint k_2)
 {
     if ((k_2 < 3u)) {
-        const float _e5 = resample_target(c_2);
+        const float _e5 = resample_target(c_3);
         return _e5;
     }
-    uint j_2 = naga_mod(slot, 3u);
-    if ((j_2 == 0u)) {
-        return c_2.x;
+    uint j_3 = naga_mod(slot, 3u);
+    if ((j_3 == 0u)) {
+        return c_3.x;
     }
-    if ((j_2 == 1u)) {
-        return c_2.y;
+    if ((j_3 == 1u)) {
+        return c_3.y;
     }
-    return c_2.z;
+    return c_3.z;
 }
 
 uint naga_div(uint lhs, uint rhs) {
@@ -336,19 +373,19 @@ float3 slot_share(uint slot_1, uint k_3)
 {
     if ((k_3 < 3u)) {
         const float _e4 = to_f32_(k_3);
-        float w_7 = (1.0 / _e4);
-        return float3(w_7, w_7, w_7);
+        float w_10 = (1.0 / _e4);
+        return float3(w_10, w_10, w_10);
     }
-    uint j_3 = naga_mod(slot_1, 3u);
-    const float _e15 = to_f32_(naga_div(((k_3 + 2u) - j_3), 3u));
-    float w_8 = (1.0 / _e15);
-    if ((j_3 == 0u)) {
-        return float3(w_8, 0.0, 0.0);
+    uint j_4 = naga_mod(slot_1, 3u);
+    const float _e15 = to_f32_(naga_div(((k_3 + 2u) - j_4), 3u));
+    float w_11 = (1.0 / _e15);
+    if ((j_4 == 0u)) {
+        return float3(w_11, 0.0, 0.0);
     }
-    if ((j_3 == 1u)) {
-        return float3(0.0, w_8, 0.0);
+    if ((j_4 == 1u)) {
+        return float3(0.0, w_11, 0.0);
     }
-    return float3(0.0, 0.0, w_8);
+    return float3(0.0, 0.0, w_11);
 }
 
 float smith_root(float cos_, float alpha)
@@ -390,49 +427,49 @@ float4 range_lobe(float4 lobe_4)
 
 float cone_cos_of(float3 v, float d2_4, float a_2, float3 d)
 {
-    bool local_6 = (bool)0;
-    bool local_7 = (bool)0;
+    bool local_10 = (bool)0;
+    bool local_11 = (bool)0;
 
     float vd = dot(v, d);
     float h2_ = (d2_4 - (a_2 * a_2));
     if (!((h2_ <= 0.0))) {
         if ((vd >= 0.0)) {
-            local_7 = ((vd * vd) >= h2_);
+            local_11 = ((vd * vd) >= h2_);
         } else {
-            local_7 = false;
+            local_11 = false;
         }
-        bool _e19 = local_7;
-        local_6 = _e19;
+        bool _e19 = local_11;
+        local_10 = _e19;
     } else {
-        local_6 = true;
+        local_10 = true;
     }
-    bool _e21 = local_6;
+    bool _e21 = local_10;
     if (_e21) {
         return 1.0;
     }
-    float3 c_6 = cross(v, d);
-    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_6, c_6)) * a_2)) / d2_4), 1.0);
+    float3 c_7 = cross(v, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_7, c_7)) * a_2)) / d2_4), 1.0);
 }
 
 float cone_cos_toward(float3 center_, float radius, float3 p, float3 d_1)
 {
-    float3 v_4 = (center_ - p);
-    const float _e6 = cone_cos_of(v_4, dot(v_4, v_4), radius, d_1);
+    float3 v_5 = (center_ - p);
+    const float _e6 = cone_cos_of(v_5, dot(v_5, v_5), radius, d_1);
     return _e6;
 }
 
 float range_scale_at(float4 rl, float cos_t)
 {
-    float t_2 = (((0.5 + (0.5 * cos_t)) * (rl.z - 1.0)) + 1.0);
-    return clamp((rl.x + ((rl.y * rl.z) / (t_2 * t_2))), 1.0, (rl.w * rl.w));
+    float t_5 = (((0.5 + (0.5 * cos_t)) * (rl.z - 1.0)) + 1.0);
+    return clamp((rl.x + ((rl.y * rl.z) / (t_5 * t_5))), 1.0, (rl.w * rl.w));
 }
 
-float range_scale_toward(float4 rl_1, float3 center_1, float radius_1, float3 p_1, float3 r_2)
+float range_scale_toward(float4 rl_1, float3 center_1, float radius_1, float3 p_1, float3 r_3)
 {
     if ((rl_1.w <= 1.0)) {
         return 1.0;
     }
-    const float _e9 = cone_cos_toward(center_1, radius_1, p_1, r_2);
+    const float _e9 = cone_cos_toward(center_1, radius_1, p_1, r_3);
     const float _e10 = range_scale_at(rl_1, _e9);
     return _e10;
 }
@@ -455,65 +492,65 @@ float3 ray_inverse3_(float3 d_2)
     return float3(_e2, _e4, _e6);
 }
 
-float ray_aabb(float3 o, float3 inv_d, float3 bmin, float3 bmax, float t_max)
+float ray_aabb(float3 o, float3 inv_d, float3 bmin_1, float3 bmax_1, float t_max)
 {
-    float3 t0_ = ((bmin - o) * inv_d);
-    float3 t1_ = ((bmax - o) * inv_d);
-    float3 lo = min(t0_, t1_);
-    float3 hi = max(t0_, t1_);
-    float t_in = max(max(lo.x, lo.y), max(lo.z, 0.0));
-    float t_out = min(min(hi.x, hi.y), min(hi.z, t_max));
+    float3 t0_ = ((bmin_1 - o) * inv_d);
+    float3 t1_ = ((bmax_1 - o) * inv_d);
+    float3 lo_3 = min(t0_, t1_);
+    float3 hi_3 = max(t0_, t1_);
+    float t_in = max(max(lo_3.x, lo_3.y), max(lo_3.z, 0.0));
+    float t_out = min(min(hi_3.x, hi_3.y), min(hi_3.z, t_max));
     if ((t_in <= t_out)) {
         return t_in;
     }
     return -1.0;
 }
 
-float ray_triangle(float3 o_1, float3 d_3, float3 a_3, float3 b_3, float3 c_3, float t_min, float t_max_1)
+float ray_triangle(float3 o_1, float3 d_3, float3 a_3, float3 b_2, float3 c_4, float t_min, float t_max_1)
 {
-    bool local_8 = (bool)0;
-    bool local_9 = (bool)0;
-    bool local_10 = (bool)0;
+    bool local_12 = (bool)0;
+    bool local_13 = (bool)0;
+    bool local_14 = (bool)0;
 
-    float3 e1_ = (b_3 - a_3);
-    float3 e2_ = (c_3 - a_3);
-    float3 p_2 = cross(d_3, e2_);
-    float det = dot(e1_, p_2);
+    float3 e1_ = (b_2 - a_3);
+    float3 e2_ = (c_4 - a_3);
+    float3 p_4 = cross(d_3, e2_);
+    float det = dot(e1_, p_4);
     if ((abs(det) <= 0.0)) {
         return -1.0;
     }
     float inv = (1.0 / det);
-    float3 s_4 = (o_1 - a_3);
-    float u_3 = (dot(s_4, p_2) * inv);
+    float3 s_10 = (o_1 - a_3);
+    float u_3 = (dot(s_10, p_4) * inv);
     if (!((u_3 < 0.0))) {
-        local_8 = (u_3 > 1.0);
+        local_12 = (u_3 > 1.0);
     } else {
-        local_8 = true;
+        local_12 = true;
     }
-    bool _e28 = local_8;
+    bool _e28 = local_12;
     if (_e28) {
         return -1.0;
     }
-    float3 q_1 = cross(s_4, e1_);
-    float v_5 = (dot(d_3, q_1) * inv);
-    if (!((v_5 < 0.0))) {
-        local_9 = ((u_3 + v_5) > 1.0);
+    float3 q_2 = cross(s_10, e1_);
+    float v_6 = (dot(d_3, q_2) * inv);
+    if (!((v_6 < 0.0))) {
+        local_13 = ((u_3 + v_6) > 1.0);
     } else {
-        local_9 = true;
+        local_13 = true;
     }
-    bool _e42 = local_9;
+    bool _e42 = local_13;
     if (_e42) {
         return -1.0;
     }
-    float t_3 = (dot(e2_, q_1) * inv);
-    if ((t_3 > t_min)) {
-        local_10 = (t_3 < t_max_1);
+    float t_6 = (dot(e2_, q_2) * inv);
+    if ((t_6 > t_min)) {
+        local_14 = (t_6 < t_max_1);
     } else {
-        local_10 = false;
+        local_14 = false;
     }
-    bool _e51 = local_10;
+    bool _e51 = local_14;
     if (_e51) {
-        return t_3;
+        return t_6;
     }
     return -1.0;
 }
@@ -587,14 +624,14 @@ GeoHit trace(float3 o_2, float3 d_4, float t_min_1, float t_max_2, bool any_hit)
         if (all(loop_bound == uint2(0u, 0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         uint _e21 = node_2;
-        GpuGeoNode n_7 = ConstructGpuGeoNode(asfloat(geo_nodes.Load3(_e21*32+0)), asuint(geo_nodes.Load(_e21*32+12)), asfloat(geo_nodes.Load3(_e21*32+16)), asuint(geo_nodes.Load(_e21*32+28)));
+        GpuGeoNode n_8 = ConstructGpuGeoNode(asfloat(geo_nodes.Load3(_e21*32+0)), asuint(geo_nodes.Load(_e21*32+12)), asfloat(geo_nodes.Load3(_e21*32+16)), asuint(geo_nodes.Load(_e21*32+28)));
         uint _e25 = nodes_visited;
         nodes_visited = (_e25 + 1u);
         float _e31 = hit.t;
-        const float _e32 = ray_aabb(o_2, _e14, n_7.bmin, n_7.bmax, _e31);
+        const float _e32 = ray_aabb(o_2, _e14, n_8.bmin, n_8.bmax, _e31);
         if ((_e32 >= 0.0)) {
-            if ((n_7.count > 0u)) {
-                i = n_7.first;
+            if ((n_8.count > 0u)) {
+                i = n_8.first;
                 uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
                 bool loop_init = true;
                 while(true) {
@@ -606,15 +643,15 @@ GeoHit trace(float3 o_2, float3 d_4, float t_min_1, float t_max_2, bool any_hit)
                     }
                     loop_init = false;
                     uint _e40 = i;
-                    if ((_e40 < (n_7.first + n_7.count))) {
+                    if ((_e40 < (n_8.first + n_8.count))) {
                     } else {
                         break;
                     }
                     {
                         uint _e46 = i;
-                        GpuTriangle t_4 = ConstructGpuTriangle(asfloat(geo_tris.Load3(_e46*48+0)), asuint(geo_tris.Load(_e46*48+12)), asfloat(geo_tris.Load3(_e46*48+16)), asuint(geo_tris.Load(_e46*48+28)), asfloat(geo_tris.Load3(_e46*48+32)), asuint(geo_tris.Load(_e46*48+44)));
+                        GpuTriangle t_7 = ConstructGpuTriangle(asfloat(geo_tris.Load3(_e46*48+0)), asuint(geo_tris.Load(_e46*48+12)), asfloat(geo_tris.Load3(_e46*48+16)), asuint(geo_tris.Load(_e46*48+28)), asfloat(geo_tris.Load3(_e46*48+32)), asuint(geo_tris.Load(_e46*48+44)));
                         float _e53 = hit.t;
-                        const float _e54 = ray_triangle(o_2, d_4, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e53);
+                        const float _e54 = ray_triangle(o_2, d_4, t_7.v0_, t_7.v1_, t_7.v2_, t_min_1, _e53);
                         if ((_e54 > 0.0)) {
                             hit.t = _e54;
                             uint _e59 = i;
@@ -631,11 +668,11 @@ GeoHit trace(float3 o_2, float3 d_4, float t_min_1, float t_max_2, bool any_hit)
                 uint _e64 = sp;
                 if ((_e64 < 64u)) {
                     uint _e67 = sp;
-                    stack[min(uint(_e67), 63u)] = (n_7.first + 1u);
+                    stack[min(uint(_e67), 63u)] = (n_8.first + 1u);
                     uint _e72 = sp;
                     sp = (_e72 + 1u);
                 }
-                node_2 = n_7.first;
+                node_2 = n_8.first;
                 continue;
             }
         }
@@ -654,9 +691,9 @@ GeoHit trace(float3 o_2, float3 d_4, float t_min_1, float t_max_2, bool any_hit)
     return geohit_2;
 }
 
-bool occluded(float3 a_4, float3 b_4)
+bool occluded(float3 a_4, float3 b_3)
 {
-    float3 dv = (b_4 - a_4);
+    float3 dv = (b_3 - a_4);
     float len_1 = length(dv);
     if ((len_1 <= 0.0)) {
         return false;
@@ -700,17 +737,17 @@ uint bsh_first(uint nodes_2)
     return BSH_NONE;
 }
 
-float bsh_inner_scale(float a_5, float3 v_1, float d2_5, float3 r_3, float4 rl_2)
+float bsh_inner_scale(float a_5, float3 v_1, float d2_5, float3 r_4, float4 rl_2)
 {
-    const float _e5 = cone_cos_of(v_1, d2_5, a_5, r_3);
+    const float _e5 = cone_cos_of(v_1, d2_5, a_5, r_4);
     const float _e8 = range_scale_at(rl_2, (_e5 + 2e-6));
     return _e8;
 }
 
-bool bsh_reaches(BshNode node_3, float3 x_4, float3 r_4, float4 rl_3)
+bool bsh_reaches(BshNode node_3, float3 x_4, float3 r_5, float4 rl_3)
 {
-    bool local_11 = (bool)0;
-    bool local_12 = (bool)0;
+    bool local_15 = (bool)0;
+    bool local_16 = (bool)0;
 
     const bool _e6 = sphere_contains_point(node_3.center_, node_3.radius, x_4);
     if (_e6) {
@@ -718,69 +755,125 @@ bool bsh_reaches(BshNode node_3, float3 x_4, float3 r_4, float4 rl_3)
     }
     if (!((rl_3.w <= 1.0))) {
         const bool _e20 = sphere_contains_point(node_3.center_, (node_3.radius * (rl_3.w * 1.0001)), x_4);
-        local_11 = !(_e20);
+        local_15 = !(_e20);
     } else {
-        local_11 = true;
+        local_15 = true;
     }
-    bool _e23 = local_11;
+    bool _e23 = local_15;
     if (_e23) {
         return false;
     }
     const float _e25 = bsh_range_bound(node_3);
-    float3 v_6 = (x_4 - node_3.center_);
-    float d2_7 = dot(v_6, v_6);
+    float3 v_7 = (x_4 - node_3.center_);
+    float d2_7 = dot(v_7, v_7);
     float reach_max = (node_3.extent + ((rl_3.w * 1.001) * _e25));
     if ((d2_7 > (reach_max * reach_max))) {
         return false;
     }
     if ((node_3.child == BSH_NONE)) {
-        const float _e43 = range_scale_toward(rl_3, node_3.center_, node_3.extent, x_4, r_4);
+        const float _e43 = range_scale_toward(rl_3, node_3.center_, node_3.extent, x_4, r_5);
         const float _e46 = bsh_scaled_radius(node_3, sqrt(_e43));
         const bool _e47 = sphere_contains_point(node_3.center_, _e46, x_4);
         return _e47;
     }
-    const float _e50 = bsh_inner_scale(node_3.extent, -(v_6), d2_7, r_4, rl_3);
+    const float _e50 = bsh_inner_scale(node_3.extent, -(v_7), d2_7, r_5, rl_3);
     float s_c = (_e50 * 1.001);
     float reach = (node_3.extent + (sqrt(s_c) * _e25));
     if ((d2_7 <= ((node_3.radius * node_3.radius) * s_c))) {
-        local_12 = (d2_7 <= (reach * reach));
+        local_16 = (d2_7 <= (reach * reach));
     } else {
-        local_12 = false;
+        local_16 = false;
     }
-    bool _e67 = local_12;
+    bool _e67 = local_16;
     return _e67;
 }
 
-uint bsh_next_leaf_lobe(uint nodes_3, uint start, float3 x_5, float3 r_5, float4 rl_4)
+bool bsh_reaches_box(BshNode node_4, float3 lo, float3 hi, float w_3)
+{
+    const bool _e13 = sphere_overlaps_aabb(node_4.center_, (node_4.radius * (max(1.0, (w_3 * 1.0001)) * 1.0001)), lo, hi);
+    return _e13;
+}
+
+uint bsh_subtree(uint nodes_3, uint s_1, uint depth)
 {
     uint i_2 = (uint)0;
+    uint level = 0u;
+    bool local_17 = (bool)0;
 
-    i_2 = start;
+    const uint _e3 = bsh_first(nodes_3);
+    i_2 = _e3;
     uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
         loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
-        uint _e6 = i_2;
-        if ((_e6 != BSH_NONE)) {
+        uint _e7 = level;
+        if ((_e7 < depth)) {
+            uint _e11 = i_2;
+            local_17 = (_e11 != BSH_NONE);
+        } else {
+            local_17 = false;
+        }
+        bool _e15 = local_17;
+        if (_e15) {
         } else {
             break;
         }
         {
-            uint _e9 = i_2;
-            const BshNode _e10 = bsh_node(nodes_3, _e9);
-            const bool _e11 = bsh_reaches(_e10, x_5, r_5, rl_4);
+            uint _e16 = i_2;
+            const BshNode _e17 = bsh_node(nodes_3, _e16);
+            uint _e18 = level;
+            uint below = (depth - _e18);
+            if ((_e17.child == BSH_NONE)) {
+                if (((s_1 << (32u - below)) != 0u)) {
+                    return BSH_NONE;
+                }
+                uint _e29 = i_2;
+                return _e29;
+            }
+            if ((((s_1 >> (below - 1u)) & 1u) == 0u)) {
+                i_2 = _e17.child;
+            } else {
+                const BshNode _e39 = bsh_node(nodes_3, _e17.child);
+                i_2 = _e39.next;
+            }
+            uint _e41 = level;
+            level = (_e41 + 1u);
+        }
+    }
+    uint _e44 = i_2;
+    return _e44;
+}
+
+uint bsh_next_leaf_box(uint nodes_4, uint start_1, uint end, float3 lo_1, float3 hi_1, float w_4)
+{
+    uint i_3 = (uint)0;
+
+    i_3 = start_1;
+    uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
+    while(true) {
+        if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
+        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+        uint _e7 = i_3;
+        if ((_e7 != end)) {
+        } else {
+            break;
+        }
+        {
+            uint _e9 = i_3;
+            const BshNode _e10 = bsh_node(nodes_4, _e9);
+            const bool _e11 = bsh_reaches_box(_e10, lo_1, hi_1, w_4);
             if (_e11) {
                 if ((_e10.child == BSH_NONE)) {
-                    uint _e15 = i_2;
+                    uint _e15 = i_3;
                     return _e15;
                 }
-                i_2 = _e10.child;
+                i_3 = _e10.child;
             } else {
-                i_2 = _e10.next;
+                i_3 = _e10.next;
             }
         }
     }
-    return BSH_NONE;
+    return end;
 }
 
 float next_threshold(float sum, inout uint h_1)
@@ -794,46 +887,46 @@ float next_threshold(float sum, inout uint h_1)
     return _e6;
 }
 
-Connection connect_record(GpuLight l_2, float3 x_6, float3 n_1, float3 ng_1, float r2_2, float rt2_2, float w_res, float u1_1, float u2_1, float eps, bool trace_1)
+Connection connect_record(GpuLight l_2, float3 x_5, float3 n_2, float3 ng_1, float r2_2, float rt2_2, float w_res, float u1_1, float u2_1, float eps, bool trace_1)
 {
-    Connection c_4 = (Connection)0;
-    bool local_13 = (bool)0;
-    bool local_14 = (bool)0;
+    Connection c_5 = (Connection)0;
+    bool local_18 = (bool)0;
+    bool local_19 = (bool)0;
 
-    c_4.e = (0.0).xxx;
+    c_5.e = (0.0).xxx;
     const float3 _e16 = light_point(l_2, u1_1, u2_1);
-    c_4.y = _e16;
-    float3 _e19 = c_4.y;
-    const float _e20 = connection_cosine(x_6, _e19, n_1, ng_1, r2_2);
-    c_4.cos_x = _e20;
-    float _e22 = c_4.cos_x;
+    c_5.y = _e16;
+    float3 _e19 = c_5.y;
+    const float _e20 = connection_cosine(x_5, _e19, n_2, ng_1, r2_2);
+    c_5.cos_x = _e20;
+    float _e22 = c_5.cos_x;
     if (!((_e22 <= 0.0))) {
         if (trace_1) {
-            float3 _e33 = c_4.y;
-            const bool _e34 = occluded((x_6 + (ng_1 * eps)), _e33);
-            local_14 = _e34;
+            float3 _e33 = c_5.y;
+            const bool _e34 = occluded((x_5 + (ng_1 * eps)), _e33);
+            local_19 = _e34;
         } else {
-            local_14 = false;
+            local_19 = false;
         }
-        bool _e36 = local_14;
-        local_13 = _e36;
+        bool _e36 = local_19;
+        local_18 = _e36;
     } else {
-        local_13 = true;
+        local_18 = true;
     }
-    bool _e38 = local_13;
+    bool _e38 = local_18;
     if (_e38) {
-        Connection _e39 = c_4;
+        Connection _e39 = c_5;
         const Connection connection = _e39;
         return connection;
     }
-    float3 _e41 = c_4.y;
-    float3 v_7 = (x_6 - _e41);
-    float d2_8 = dot(v_7, v_7);
-    const float3 _e48 = light_intensity(l_2, (v_7 / (sqrt(d2_8)).xxx));
-    float _e50 = c_4.cos_x;
+    float3 _e41 = c_5.y;
+    float3 v_8 = (x_5 - _e41);
+    float d2_8 = dot(v_8, v_8);
+    const float3 _e48 = light_intensity(l_2, (v_8 / (sqrt(d2_8)).xxx));
+    float _e50 = c_5.cos_x;
     const float _e51 = connection_factor(_e50, d2_8, rt2_2, w_res);
-    c_4.e = (_e48 * _e51);
-    Connection _e53 = c_4;
+    c_5.e = (_e48 * _e51);
+    Connection _e53 = c_5;
     const Connection connection_1 = _e53;
     return connection_1;
 }
@@ -851,26 +944,302 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
     return ret;
 }
 
-Connection connect_traced(uint li, float3 x_7, float3 n_2, float3 ng_2, float s, float w_res_1, float u1_2, float u2_2, float eps_1, bool trace_2)
+Connection connect_traced(uint li, float3 x_6, float3 n_3, float3 ng_2, float s_2, float w_res_1, float u1_2, float u2_2, float eps_1, bool trace_2)
 {
     GpuLight _e12 = ConstructGpuLight(asfloat(lights.Load3(li*64+0)), asuint(lights.Load(li*64+12)), asfloat(lights.Load3(li*64+16)), asfloat(lights.Load(li*64+28)), asfloat(lights.Load3(li*64+32)), asfloat(lights.Load(li*64+44)), asfloat(lights.Load3(li*64+48)), asuint(lights.Load(li*64+60)));
     float _e15 = asfloat(r2_3.Load(li*4));
     float _e19 = asfloat(rt2_3.Load(li*4));
-    const Connection _e21 = connect_record(_e12, x_7, n_2, ng_2, (s * _e15), (s * _e19), w_res_1, u1_2, u2_2, eps_1, trace_2);
+    const Connection _e21 = connect_record(_e12, x_6, n_3, ng_2, (s_2 * _e15), (s_2 * _e19), w_res_1, u1_2, u2_2, eps_1, trace_2);
     const Connection connection_2 = _e21;
     return connection_2;
 }
 
 float4 surface_at(int2 texel)
 {
-    float4 p_3 = position_tex.Load(int3(texel, int(0)));
-    return ((p_3.w > 0.0) ? float4(p_3.xyz, 1.0) : (0.0).xxxx);
+    float4 p_5 = position_tex.Load(int3(texel, int(0)));
+    return ((p_5.w > 0.0) ? float4(p_5.xyz, 1.0) : (0.0).xxxx);
 }
 
-void counter_add(uint f, uint n_3)
+WorkgroupBox ConstructWorkgroupBox(float3 arg0, float3 arg1) {
+    WorkgroupBox ret = (WorkgroupBox)0;
+    ret.lo = arg0;
+    ret.hi = arg1;
+    return ret;
+}
+
+WorkgroupBox workgroup_bounds(uint li_1, float3 lo_2, float3 hi_2)
 {
-    uint _e6; counters.InterlockedAdd((2u * f)*4, n_3, _e6);
-    if (((_e6 + n_3) < _e6)) {
+    uint stride = 32u;
+
+    wg_lo[min(uint(li_1), 63u)] = lo_2;
+    wg_hi[min(uint(li_1), 63u)] = hi_2;
+    GroupMemoryBarrierWithGroupSync();
+    uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
+    bool loop_init_1 = true;
+    while(true) {
+        if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
+        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+        if (!loop_init_1) {
+            uint _e36 = stride;
+            stride = naga_div(_e36, 2u);
+        }
+        loop_init_1 = false;
+        uint _e9 = stride;
+        if ((_e9 > 0u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e12 = stride;
+            if ((li_1 < _e12)) {
+                float3 _e18 = wg_lo[min(uint(li_1), 63u)];
+                uint _e20 = stride;
+                float3 _e23 = wg_lo[min(uint((li_1 + _e20)), 63u)];
+                wg_lo[min(uint(li_1), 63u)] = min(_e18, _e23);
+                float3 _e29 = wg_hi[min(uint(li_1), 63u)];
+                uint _e31 = stride;
+                float3 _e34 = wg_hi[min(uint((li_1 + _e31)), 63u)];
+                wg_hi[min(uint(li_1), 63u)] = max(_e29, _e34);
+            }
+            GroupMemoryBarrierWithGroupSync();
+        }
+    }
+    if ((li_1 == 0u)) {
+        float3 _e44 = wg_lo[0];
+        float3 _e47 = wg_hi[0];
+        wg_box = ConstructWorkgroupBox(_e44, _e47);
+    }
+    GroupMemoryBarrierWithGroupSync();
+    WorkgroupBox _e50 = wg_box;
+    GroupMemoryBarrierWithGroupSync();
+    const WorkgroupBox workgroupbox = _e50;
+    return workgroupbox;
+}
+
+WorkgroupBox workgroup_box(uint li_2, float3 p_2, bool has)
+{
+    const WorkgroupBox _e9 = workgroup_bounds(li_2, (has ? p_2 : (3.4028235e38).xxx), (has ? p_2 : (-3.4028235e38).xxx));
+    const WorkgroupBox workgroupbox_1 = _e9;
+    return workgroupbox_1;
+}
+
+bool box_is_empty(WorkgroupBox b_4)
+{
+    return (b_4.lo.x > b_4.hi.x);
+}
+
+uint tile_subtree(uint s_3, TileWalk t_1, bool list, uint at, uint start_2, uint to)
+{
+    uint p_3 = (uint)0;
+    uint b_5 = (uint)0;
+    bool local_20 = (bool)0;
+    bool local_21 = (bool)0;
+    bool local_22 = (bool)0;
+
+    const uint _e8 = bsh_subtree(BSH, s_3, BSH_TILE_DEPTH);
+    if ((_e8 == BSH_NONE)) {
+        return 0u;
+    }
+    uint end_1 = asuint(bsh_nodes.Load(20+_e8*32));
+    p_3 = at;
+    const uint _e21 = bsh_next_leaf_box(BSH, _e8, end_1, t_1.lo, t_1.hi, t_1.w);
+    b_5 = _e21;
+    uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
+    bool loop_init_2 = true;
+    while(true) {
+        if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
+        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+        if (!loop_init_2) {
+            uint _e53 = b_5;
+            uint _e56 = asuint(bsh_nodes.Load(20+_e53*32));
+            const uint _e60 = bsh_next_leaf_box(BSH, _e56, end_1, t_1.lo, t_1.hi, t_1.w);
+            b_5 = _e60;
+        }
+        loop_init_2 = false;
+        uint _e23 = b_5;
+        if ((_e23 != end_1)) {
+            if (!(!(list))) {
+                uint _e31 = p_3;
+                local_21 = (_e31 < to);
+            } else {
+                local_21 = true;
+            }
+            bool _e34 = local_21;
+            local_20 = _e34;
+        } else {
+            local_20 = false;
+        }
+        bool _e36 = local_20;
+        if (_e36) {
+        } else {
+            break;
+        }
+        {
+            if (list) {
+                uint _e39 = p_3;
+                local_22 = (_e39 >= start_2);
+            } else {
+                local_22 = false;
+            }
+            bool _e42 = local_22;
+            if (_e42) {
+                uint _e44 = p_3;
+                uint _e47 = b_5;
+                tile_list[min(uint((_e44 - start_2)), 1023u)] = _e47;
+            }
+            uint _e48 = p_3;
+            p_3 = (_e48 + 1u);
+        }
+    }
+    uint _e61 = p_3;
+    return (_e61 - at);
+}
+
+TileWalk ConstructTileWalk(float3 arg0, float3 arg1, float arg2, uint arg3) {
+    TileWalk ret = (TileWalk)0;
+    ret.lo = arg0;
+    ret.hi = arg1;
+    ret.w = arg2;
+    ret.total = arg3;
+    return ret;
+}
+
+TileWalk tile_walk_begin(uint li_3, float3 x_7, float w_5, bool has_1)
+{
+    TileWalk t_2 = (TileWalk)0;
+    uint s_4 = (uint)0;
+    uint sum_1 = 0u;
+    uint s_5 = 0u;
+
+    uint _e8; InterlockedMax(tile_scale, (has_1 ? asuint(w_5) : 0u), _e8);
+    const WorkgroupBox _e9 = workgroup_box(li_3, x_7, has_1);
+    GroupMemoryBarrierWithGroupSync();
+    uint _e13 = tile_scale;
+    GroupMemoryBarrierWithGroupSync();
+    t_2 = ConstructTileWalk(_e9.lo, _e9.hi, asfloat(_e13), 0u);
+    const bool _e18 = box_is_empty(_e9);
+    if (_e18) {
+        TileWalk _e19 = t_2;
+        const TileWalk tilewalk = _e19;
+        return tilewalk;
+    }
+    s_4 = li_3;
+    uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
+    bool loop_init_3 = true;
+    while(true) {
+        if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
+        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+        if (!loop_init_3) {
+            uint _e34 = s_4;
+            s_4 = (_e34 + TILE_THREADS);
+        }
+        loop_init_3 = false;
+        uint _e21 = s_4;
+        if ((_e21 < BSH_TILE_SUBTREES)) {
+        } else {
+            break;
+        }
+        {
+            uint _e25 = s_4;
+            uint _e27 = s_4;
+            TileWalk _e28 = t_2;
+            const uint _e33 = tile_subtree(_e27, _e28, false, 0u, 0u, 0u);
+            subtree_at[min(uint(_e25), 255u)] = _e33;
+        }
+    }
+    GroupMemoryBarrierWithGroupSync();
+    if ((li_3 == 0u)) {
+        uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
+        bool loop_init_4 = true;
+        while(true) {
+            if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
+            loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+            if (!loop_init_4) {
+                uint _e57 = s_5;
+                s_5 = (_e57 + 1u);
+            }
+            loop_init_4 = false;
+            uint _e43 = s_5;
+            if ((_e43 < BSH_TILE_SUBTREES)) {
+            } else {
+                break;
+            }
+            {
+                uint _e47 = s_5;
+                uint c_8 = subtree_at[min(uint(_e47), 255u)];
+                uint _e51 = s_5;
+                uint _e53 = sum_1;
+                subtree_at[min(uint(_e51), 255u)] = _e53;
+                uint _e54 = sum_1;
+                sum_1 = (_e54 + c_8);
+            }
+        }
+        uint _e60 = sum_1;
+        tile_total = _e60;
+    }
+    GroupMemoryBarrierWithGroupSync();
+    uint _e63 = tile_total;
+    GroupMemoryBarrierWithGroupSync();
+    t_2.total = _e63;
+    TileWalk _e64 = t_2;
+    const TileWalk tilewalk_1 = _e64;
+    return tilewalk_1;
+}
+
+uint tile_walk_fill(uint li_4, TileWalk t_3, uint start_3)
+{
+    uint s_6 = (uint)0;
+    uint past = (uint)0;
+    bool local_23 = (bool)0;
+
+    uint to_1 = min(t_3.total, (start_3 + TILE_LIST));
+    s_6 = li_4;
+    uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
+    bool loop_init_5 = true;
+    while(true) {
+        if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
+        loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
+        if (!loop_init_5) {
+            uint _e38 = s_6;
+            s_6 = (_e38 + TILE_THREADS);
+        }
+        loop_init_5 = false;
+        uint _e8 = s_6;
+        if ((_e8 < BSH_TILE_SUBTREES)) {
+        } else {
+            break;
+        }
+        {
+            uint _e12 = s_6;
+            uint at_1 = subtree_at[min(uint(_e12), 255u)];
+            past = t_3.total;
+            uint _e17 = s_6;
+            if (((_e17 + 1u) < BSH_TILE_SUBTREES)) {
+                uint _e23 = s_6;
+                uint _e27 = subtree_at[min(uint((_e23 + 1u)), 255u)];
+                past = _e27;
+            }
+            if ((at_1 < to_1)) {
+                uint _e31 = past;
+                local_23 = (_e31 > start_3);
+            } else {
+                local_23 = false;
+            }
+            bool _e34 = local_23;
+            if (_e34) {
+                uint _e35 = s_6;
+                const uint _e37 = tile_subtree(_e35, t_3, true, at_1, start_3, to_1);
+            }
+        }
+    }
+    GroupMemoryBarrierWithGroupSync();
+    return (to_1 - start_3);
+}
+
+void counter_add(uint f, uint n_4)
+{
+    uint _e6; counters.InterlockedAdd((2u * f)*4, n_4, _e6);
+    if (((_e6 + n_4) < _e6)) {
         uint _e16; counters.InterlockedAdd(((2u * f) + 1u)*4, 1u, _e16);
         return;
     } else {
@@ -878,29 +1247,29 @@ void counter_add(uint f, uint n_3)
     }
 }
 
-Shaded shade_connection(Connection c_5, float3 x_8, float3 n_4, Material m_1)
+Shaded shade_connection(Connection c_6, float3 x_8, float3 n_5, Material m_1)
 {
-    Shaded s_1 = (Shaded)0;
+    Shaded s_7 = (Shaded)0;
 
-    s_1.e = c_5.e;
-    s_1.diffuse = (0.0).xxx;
-    s_1.specular = (0.0).xxx;
-    Shaded _e13 = s_1;
+    s_7.e = c_6.e;
+    s_7.diffuse = (0.0).xxx;
+    s_7.specular = (0.0).xxx;
+    Shaded _e13 = s_7;
     const Shaded shaded = _e13;
     return shaded;
 }
 
-Shaded shade_pick_traced(uint li_1, float3 x_9, float3 n_5, float3 r_6, float4 rl_5, Material m_2, float w_3, float u1_3, float u2_3, float eps_2, bool trace_3)
+Shaded shade_pick_traced(uint li_5, float3 x_9, float3 n_6, float3 r_6, float4 rl_4, Material m_2, float w_6, float u1_3, float u2_3, float eps_2, bool trace_3)
 {
-    const Connection _e12 = connect_traced(li_1, x_9, n_5, n_5, 1.0, w_3, u1_3, u2_3, eps_2, trace_3);
-    const Shaded _e13 = shade_connection(_e12, x_9, n_5, m_2);
+    const Connection _e12 = connect_traced(li_5, x_9, n_6, n_6, 1.0, w_6, u1_3, u2_3, eps_2, trace_3);
+    const Shaded _e13 = shade_connection(_e12, x_9, n_6, m_2);
     const Shaded shaded_1 = _e13;
     return shaded_1;
 }
 
-Shaded shade_pick(uint li_2, float3 x_10, float3 n_6, float3 r_7, float4 rl_6, Material m_3, float w_4, float u1_4, float u2_4, float eps_3)
+Shaded shade_pick(uint li_6, float3 x_10, float3 n_7, float3 r_7, float4 rl_5, Material m_3, float w_7, float u1_4, float u2_4, float eps_3)
 {
-    const Shaded _e11 = shade_pick_traced(li_2, x_10, n_6, r_7, rl_6, m_3, w_4, u1_4, u2_4, eps_3, true);
+    const Shaded _e11 = shade_pick_traced(li_6, x_10, n_7, r_7, rl_5, m_3, w_7, u1_4, u2_4, eps_3, true);
     const Shaded shaded_2 = _e11;
     return shaded_2;
 }
@@ -913,15 +1282,15 @@ Shaded ConstructShaded(float3 arg0, float3 arg1, float3 arg2) {
     return ret;
 }
 
-Shaded add(Shaded a_6, Shaded b_5)
+Shaded add(Shaded a_6, Shaded b_6)
 {
-    const Shaded shaded_3 = ConstructShaded((a_6.e + b_5.e), (a_6.diffuse + b_5.diffuse), (a_6.specular + b_5.specular));
+    const Shaded shaded_3 = ConstructShaded((a_6.e + b_6.e), (a_6.diffuse + b_6.diffuse), (a_6.specular + b_6.specular));
     return shaded_3;
 }
 
-Shaded scaled(Shaded s_2, float3 w_5)
+Shaded scaled(Shaded s_8, float3 w_8)
 {
-    const Shaded shaded_4 = ConstructShaded((s_2.e * w_5), (s_2.diffuse * w_5), (s_2.specular * w_5));
+    const Shaded shaded_4 = ConstructShaded((s_8.e * w_8), (s_8.diffuse * w_8), (s_8.specular * w_8));
     return shaded_4;
 }
 
@@ -930,20 +1299,20 @@ ret_first_holders first_holders(uint2 keys_1[8], bool held_1[8])
 {
     uint first[8] = (uint[8])0;
     uint k_4 = 0u;
-    uint j_1 = (uint)0;
-    bool local_15 = (bool)0;
-    bool local_16 = (bool)0;
+    uint j_2 = (uint)0;
+    bool local_24 = (bool)0;
+    bool local_25 = (bool)0;
 
-    uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
-    bool loop_init_1 = true;
+    uint2 loop_bound_9 = uint2(4294967295u, 4294967295u);
+    bool loop_init_6 = true;
     while(true) {
-        if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
-        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-        if (!loop_init_1) {
+        if (all(loop_bound_9 == uint2(0u, 0u))) { break; }
+        loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
+        if (!loop_init_6) {
             uint _e45 = k_4;
             k_4 = (_e45 + 1u);
         }
-        loop_init_1 = false;
+        loop_init_6 = false;
         uint _e5 = k_4;
         if ((_e5 < K)) {
         } else {
@@ -954,43 +1323,43 @@ ret_first_holders first_holders(uint2 keys_1[8], bool held_1[8])
             uint _e11 = k_4;
             uint _e12 = k_4;
             first[min(uint(_e8), 7u)] = (held_1[min(uint(_e12), 7u)] ? _e11 : K);
-            j_1 = 0u;
-            uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
-            bool loop_init_2 = true;
+            j_2 = 0u;
+            uint2 loop_bound_10 = uint2(4294967295u, 4294967295u);
+            bool loop_init_7 = true;
             while(true) {
-                if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
-                loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
-                if (!loop_init_2) {
-                    uint _e42 = j_1;
-                    j_1 = (_e42 + 1u);
+                if (all(loop_bound_10 == uint2(0u, 0u))) { break; }
+                loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
+                if (!loop_init_7) {
+                    uint _e42 = j_2;
+                    j_2 = (_e42 + 1u);
                 }
-                loop_init_2 = false;
-                uint _e17 = j_1;
+                loop_init_7 = false;
+                uint _e17 = j_2;
                 uint _e18 = k_4;
                 if ((_e17 < _e18)) {
                     uint _e22 = k_4;
-                    local_15 = held_1[min(uint(_e22), 7u)];
+                    local_24 = held_1[min(uint(_e22), 7u)];
                 } else {
-                    local_15 = false;
+                    local_24 = false;
                 }
-                bool _e25 = local_15;
+                bool _e25 = local_24;
                 if (_e25) {
                 } else {
                     break;
                 }
                 {
-                    uint _e26 = j_1;
+                    uint _e26 = j_2;
                     if (held_1[min(uint(_e26), 7u)]) {
-                        uint _e30 = j_1;
+                        uint _e30 = j_2;
                         uint _e32 = k_4;
-                        local_16 = all((keys_1[min(uint(_e30), 7u)] == keys_1[min(uint(_e32), 7u)]));
+                        local_25 = all((keys_1[min(uint(_e30), 7u)] == keys_1[min(uint(_e32), 7u)]));
                     } else {
-                        local_16 = false;
+                        local_25 = false;
                     }
-                    bool _e37 = local_16;
+                    bool _e37 = local_25;
                     if (_e37) {
                         uint _e38 = k_4;
-                        uint _e40 = j_1;
+                        uint _e40 = j_2;
                         first[min(uint(_e38), 7u)] = _e40;
                         break;
                     }
@@ -1002,16 +1371,31 @@ ret_first_holders first_holders(uint2 keys_1[8], bool held_1[8])
     return _e47;
 }
 
-float3 output_of(Shaded s_3)
+float3 output_of(Shaded s_9)
 {
-    return s_3.e;
+    return s_9.e;
 }
 
 [numthreads(8, 8, 1)]
-void main(uint3 gid : SV_DispatchThreadID)
+void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
 {
+    if (lid == 0) {
+        wg_lo = (float3[64])0;
+        wg_hi = (float3[64])0;
+        wg_box = (WorkgroupBox)0;
+        tile_list = (uint[1024])0;
+        subtree_at = (uint[256])0;
+        tile_scale = (uint)0;
+        tile_total = (uint)0;
+    }
+    GroupMemoryBarrierWithGroupSync();
     bool local = (bool)0;
+    float4 s = (0.0).xxxx;
+    float3 nn = (0.0).xxx;
     bool local_1 = (bool)0;
+    bool local_2 = (bool)0;
+    bool local_3 = (bool)0;
+    float3 n = float3(0.0, 0.0, 1.0);
     Material m = (Material)0;
     float4 lobe = float4(1.0, 0.0, 1.0, 1.0);
     float3 r = (float3)0;
@@ -1024,269 +1408,331 @@ void main(uint3 gid : SV_DispatchThreadID)
     uint count = 0u;
     uint hc = (uint)0;
     float threshold[8] = (float[8])0;
-    uint b = (uint)0;
+    bool local_4 = (bool)0;
+    uint start = 0u;
+    uint j = (uint)0;
+    bool local_5 = (bool)0;
     uint q = (uint)0;
-    bool local_2 = (bool)0;
+    bool local_6 = (bool)0;
     uint2 keys[8] = (uint2[8])0;
     bool held[8] = (bool[8])0;
     uint k = 0u;
     uint k_1 = 0u;
     float3 w = (float3)0;
-    uint j = (uint)0;
-    bool local_3 = (bool)0;
+    uint j_1 = (uint)0;
+    bool local_7 = (bool)0;
 
-    uint _e4 = view.width;
-    if (!((gid.x >= _e4))) {
+    uint _e5 = view.width;
+    if ((gid.x < _e5)) {
         uint _e12 = view.height;
-        local = (gid.y >= _e12);
+        local = (gid.y < _e12);
     } else {
-        local = true;
+        local = false;
     }
-    bool _e15 = local;
-    if (_e15) {
-        return;
-    }
+    bool inside = local;
     int2 texel_1 = int2(int(gid.x), int(gid.y));
-    const float4 _e21 = surface_at(texel_1);
-    float4 _e24 = normal_tex.Load(int3(texel_1, int(0)));
-    float3 nn = _e24.xyz;
-    float len2_ = dot(nn, nn);
-    if (!((_e21.w <= 0.0))) {
-        local_1 = !((len2_ > 0.0));
+    if (inside) {
+        const float4 _e27 = surface_at(texel_1);
+        s = _e27;
+        float4 _e30 = normal_tex.Load(int3(texel_1, int(0)));
+        nn = _e30.xyz;
+    }
+    float3 _e32 = nn;
+    float3 _e33 = nn;
+    float len2_ = dot(_e32, _e33);
+    float4 _e35 = s;
+    float3 x_11 = _e35.xyz;
+    if (inside) {
+        float _e40 = s.w;
+        local_1 = (_e40 > 0.0);
     } else {
-        local_1 = true;
+        local_1 = false;
     }
-    bool _e37 = local_1;
-    if (_e37) {
-        out_tex[texel_1] = (0.0).xxxx;
-        return;
+    bool _e44 = local_1;
+    if (_e44) {
+        local_2 = (len2_ > 0.0);
+    } else {
+        local_2 = false;
     }
-    float3 x_11 = _e21.xyz;
-    float3 n_8 = (nn / (sqrt(len2_)).xxx);
-    r = n_8;
-    float4 _e53 = lobe;
-    const float4 _e54 = range_lobe(_e53);
-    float _e57 = view.shadow_offset;
-    float3 _e60 = view.eye;
-    float eps_4 = (_e57 * length((_e60 - x_11)));
-    uint _e66 = view.seed;
-    uint _e70 = view.width;
-    uint _e76 = view.frame;
-    const uint _e77 = point_stream(_e66, ((gid.y * _e70) + gid.x), _e76);
-    const uint _e78 = pick_stream(_e77);
-    h = _e78;
-    hc = _e77;
-    const uint _e100 = bsh_first(BSH);
-    float3 _e101 = r;
-    const uint _e102 = bsh_next_leaf_lobe(BSH, _e100, x_11, _e101, _e54);
-    b = _e102;
-    uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
-    bool loop_init_3 = true;
+    bool _e50 = local_2;
+    if (_e50) {
+        local_3 = all((abs(x_11) <= (3.4028235e38).xxx));
+    } else {
+        local_3 = false;
+    }
+    bool has_2 = local_3;
+    if (has_2) {
+        float3 _e65 = nn;
+        n = (_e65 / (sqrt(len2_)).xxx);
+    }
+    float3 _e76 = n;
+    r = _e76;
+    float4 _e78 = lobe;
+    const float4 _e79 = range_lobe(_e78);
+    float _e82 = view.shadow_offset;
+    float3 _e85 = view.eye;
+    float eps_4 = (_e82 * length((_e85 - x_11)));
+    uint _e91 = view.seed;
+    uint _e95 = view.width;
+    uint _e101 = view.frame;
+    const uint _e102 = point_stream(_e91, ((gid.y * _e95) + gid.x), _e101);
+    const uint _e103 = pick_stream(_e102);
+    h = _e103;
+    hc = _e102;
+    if (has_2) {
+        local_4 = (_e79.w >= 0.0);
+    } else {
+        local_4 = false;
+    }
+    bool _e130 = local_4;
+    const TileWalk _e131 = tile_walk_begin(lid, x_11, _e79.w, _e130);
+    uint2 loop_bound_11 = uint2(4294967295u, 4294967295u);
+    bool loop_init_8 = true;
     while(true) {
-        if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
-        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
-        if (!loop_init_3) {
-            uint _e177 = b;
-            uint _e180 = asuint(bsh_nodes.Load(20+_e177*32));
-            float3 _e181 = r;
-            const uint _e182 = bsh_next_leaf_lobe(BSH, _e180, x_11, _e181, _e54);
-            b = _e182;
+        if (all(loop_bound_11 == uint2(0u, 0u))) { break; }
+        loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
+        if (!loop_init_8) {
+            uint _e230 = start;
+            start = (_e230 + TILE_LIST);
         }
-        loop_init_3 = false;
-        uint _e104 = b;
-        if ((_e104 != BSH_NONE)) {
+        loop_init_8 = false;
+        uint _e134 = start;
+        if ((_e134 < _e131.total)) {
         } else {
             break;
         }
         {
-            uint _e107 = count;
-            count = (_e107 + 1u);
-            uint _e111 = b;
-            uint li_3 = asuint(bsh_nodes.Load(24+_e111*32));
-            uint _e115 = h;
-            const uint _e116 = pcg_hash(_e115);
-            h = _e116;
-            uint _e117 = h;
-            const float _e118 = xi_from_bits(_e117);
-            uint _e119 = h;
-            const uint _e120 = pcg_hash(_e119);
-            h = _e120;
-            uint _e121 = h;
-            const float _e122 = xi_from_bits(_e121);
-            float2 u_4 = float2(_e118, _e122);
-            float3 _e124 = r;
-            Material _e125 = m;
-            const Shaded _e130 = shade_pick_traced(li_3, x_11, n_8, _e124, _e54, _e125, 1.0, u_4.x, u_4.y, eps_4, false);
-            const float3 _e131 = output_of(_e130);
-            uint _e133 = evaluations;
-            evaluations = (_e133 + 1u);
-            const float _e136 = resample_target(_e131);
-            if ((_e136 > 0.0)) {
-                float3 _e139 = total;
-                total = (_e139 + _e131);
-                q = 0u;
-                uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
-                bool loop_init_4 = true;
-                while(true) {
-                    if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
-                    loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-                    if (!loop_init_4) {
-                        uint _e173 = q;
-                        q = (_e173 + 1u);
-                    }
-                    loop_init_4 = false;
-                    uint _e143 = q;
-                    if ((_e143 < K)) {
+            uint _e137 = start;
+            const uint _e138 = tile_walk_fill(lid, _e131, _e137);
+            j = 0u;
+            uint2 loop_bound_12 = uint2(4294967295u, 4294967295u);
+            bool loop_init_9 = true;
+            while(true) {
+                if (all(loop_bound_12 == uint2(0u, 0u))) { break; }
+                loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
+                if (!loop_init_9) {
+                    uint _e228 = j;
+                    j = (_e228 + 1u);
+                }
+                loop_init_9 = false;
+                uint _e141 = j;
+                if ((_e141 < _e138)) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e144 = j;
+                    uint b_7 = tile_list[min(uint(_e144), 1023u)];
+                    if (!(!(has_2))) {
+                        BshNode _e153 = ConstructBshNode(asfloat(bsh_nodes.Load3(b_7*32+0)), asfloat(bsh_nodes.Load(b_7*32+12)), asuint(bsh_nodes.Load(b_7*32+16)), asuint(bsh_nodes.Load(b_7*32+20)), asuint(bsh_nodes.Load(b_7*32+24)), asfloat(bsh_nodes.Load(b_7*32+28)));
+                        float3 _e154 = r;
+                        const bool _e155 = bsh_reaches(_e153, x_11, _e154, _e79);
+                        local_5 = !(_e155);
                     } else {
-                        break;
+                        local_5 = true;
                     }
-                    {
-                        uint _e146 = q;
-                        const float _e148 = slot_target(_e131, _e146, K);
-                        float3 _e149 = total;
-                        uint _e150 = q;
-                        const float _e152 = slot_target(_e149, _e150, K);
-                        if ((_e148 > 0.0)) {
-                            uint _e157 = q;
-                            float _e159 = threshold[min(uint(_e157), 7u)];
-                            local_2 = (_e152 > _e159);
-                        } else {
-                            local_2 = false;
-                        }
-                        bool _e162 = local_2;
-                        if (_e162) {
-                            uint _e163 = q;
-                            slot_light[min(uint(_e163), 7u)] = li_3;
-                            uint _e165 = q;
-                            slot_u[min(uint(_e165), 7u)] = u_4;
-                            uint _e167 = q;
-                            slot_p[min(uint(_e167), 7u)] = _e148;
-                            uint _e169 = q;
-                            const float _e171 = next_threshold(_e152, hc);
-                            threshold[min(uint(_e169), 7u)] = _e171;
+                    bool _e158 = local_5;
+                    if (_e158) {
+                        continue;
+                    }
+                    uint li_7 = asuint(bsh_nodes.Load(24+b_7*32));
+                    uint _e163 = count;
+                    count = (_e163 + 1u);
+                    uint _e166 = h;
+                    const uint _e167 = pcg_hash(_e166);
+                    h = _e167;
+                    uint _e168 = h;
+                    const float _e169 = xi_from_bits(_e168);
+                    uint _e170 = h;
+                    const uint _e171 = pcg_hash(_e170);
+                    h = _e171;
+                    uint _e172 = h;
+                    const float _e173 = xi_from_bits(_e172);
+                    float2 u_4 = float2(_e169, _e173);
+                    float3 _e175 = n;
+                    float3 _e176 = r;
+                    Material _e177 = m;
+                    const Shaded _e182 = shade_pick_traced(li_7, x_11, _e175, _e176, _e79, _e177, 1.0, u_4.x, u_4.y, eps_4, false);
+                    const float3 _e183 = output_of(_e182);
+                    uint _e185 = evaluations;
+                    evaluations = (_e185 + 1u);
+                    const float _e188 = resample_target(_e183);
+                    if ((_e188 > 0.0)) {
+                        float3 _e191 = total;
+                        total = (_e191 + _e183);
+                        q = 0u;
+                        uint2 loop_bound_13 = uint2(4294967295u, 4294967295u);
+                        bool loop_init_10 = true;
+                        while(true) {
+                            if (all(loop_bound_13 == uint2(0u, 0u))) { break; }
+                            loop_bound_13 -= uint2(loop_bound_13.y == 0u, 1u);
+                            if (!loop_init_10) {
+                                uint _e225 = q;
+                                q = (_e225 + 1u);
+                            }
+                            loop_init_10 = false;
+                            uint _e195 = q;
+                            if ((_e195 < K)) {
+                            } else {
+                                break;
+                            }
+                            {
+                                uint _e198 = q;
+                                const float _e200 = slot_target(_e183, _e198, K);
+                                float3 _e201 = total;
+                                uint _e202 = q;
+                                const float _e204 = slot_target(_e201, _e202, K);
+                                if ((_e200 > 0.0)) {
+                                    uint _e209 = q;
+                                    float _e211 = threshold[min(uint(_e209), 7u)];
+                                    local_6 = (_e204 > _e211);
+                                } else {
+                                    local_6 = false;
+                                }
+                                bool _e214 = local_6;
+                                if (_e214) {
+                                    uint _e215 = q;
+                                    slot_light[min(uint(_e215), 7u)] = li_7;
+                                    uint _e217 = q;
+                                    slot_u[min(uint(_e217), 7u)] = u_4;
+                                    uint _e219 = q;
+                                    slot_p[min(uint(_e219), 7u)] = _e200;
+                                    uint _e221 = q;
+                                    const float _e223 = next_threshold(_e204, hc);
+                                    threshold[min(uint(_e221), 7u)] = _e223;
+                                }
+                            }
                         }
                     }
                 }
             }
+            GroupMemoryBarrierWithGroupSync();
         }
     }
-    uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
-    bool loop_init_5 = true;
-    while(true) {
-        if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
-        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
-        if (!loop_init_5) {
-            uint _e205 = k;
-            k = (_e205 + 1u);
+    if (!(has_2)) {
+        if (inside) {
+            out_tex[texel_1] = (0.0).xxxx;
         }
-        loop_init_5 = false;
-        uint _e187 = k;
-        if ((_e187 < K)) {
+        return;
+    }
+    uint2 loop_bound_14 = uint2(4294967295u, 4294967295u);
+    bool loop_init_11 = true;
+    while(true) {
+        if (all(loop_bound_14 == uint2(0u, 0u))) { break; }
+        loop_bound_14 -= uint2(loop_bound_14.y == 0u, 1u);
+        if (!loop_init_11) {
+            uint _e259 = k;
+            k = (_e259 + 1u);
+        }
+        loop_init_11 = false;
+        uint _e241 = k;
+        if ((_e241 < K)) {
         } else {
             break;
         }
         {
-            uint _e190 = k;
-            uint _e192 = k;
-            uint _e194 = slot_light[min(uint(_e192), 7u)];
-            keys[min(uint(_e190), 7u)] = uint2(_e194, 0u);
-            uint _e197 = k;
-            uint _e199 = k;
-            float _e201 = slot_p[min(uint(_e199), 7u)];
-            held[min(uint(_e197), 7u)] = (_e201 > 0.0);
+            uint _e244 = k;
+            uint _e246 = k;
+            uint _e248 = slot_light[min(uint(_e246), 7u)];
+            keys[min(uint(_e244), 7u)] = uint2(_e248, 0u);
+            uint _e251 = k;
+            uint _e253 = k;
+            float _e255 = slot_p[min(uint(_e253), 7u)];
+            held[min(uint(_e251), 7u)] = (_e255 > 0.0);
         }
     }
-    uint2 _e207[8] = keys;
-    bool _e208[8] = held;
-    const uint _e209[8] = first_holders(_e207, _e208);
-    uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
-    bool loop_init_6 = true;
+    uint2 _e261[8] = keys;
+    bool _e262[8] = held;
+    const uint _e263[8] = first_holders(_e261, _e262);
+    uint2 loop_bound_15 = uint2(4294967295u, 4294967295u);
+    bool loop_init_12 = true;
     while(true) {
-        if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
-        loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
-        if (!loop_init_6) {
-            uint _e272 = k_1;
-            k_1 = (_e272 + 1u);
+        if (all(loop_bound_15 == uint2(0u, 0u))) { break; }
+        loop_bound_15 -= uint2(loop_bound_15.y == 0u, 1u);
+        if (!loop_init_12) {
+            uint _e327 = k_1;
+            k_1 = (_e327 + 1u);
         }
-        loop_init_6 = false;
-        uint _e212 = k_1;
-        if ((_e212 < K)) {
+        loop_init_12 = false;
+        uint _e266 = k_1;
+        if ((_e266 < K)) {
         } else {
             break;
         }
         {
             w = (0.0).xxx;
-            uint _e218 = k_1;
-            uint _e220 = k_1;
-            bool first_1 = (_e209[min(uint(_e218), 7u)] == _e220);
-            uint _e222 = k_1;
-            j = _e222;
-            uint2 loop_bound_9 = uint2(4294967295u, 4294967295u);
-            bool loop_init_7 = true;
+            uint _e272 = k_1;
+            uint _e274 = k_1;
+            bool first_1 = (_e263[min(uint(_e272), 7u)] == _e274);
+            uint _e276 = k_1;
+            j_1 = _e276;
+            uint2 loop_bound_16 = uint2(4294967295u, 4294967295u);
+            bool loop_init_13 = true;
             while(true) {
-                if (all(loop_bound_9 == uint2(0u, 0u))) { break; }
-                loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
-                if (!loop_init_7) {
-                    uint _e250 = j;
-                    j = (_e250 + 1u);
+                if (all(loop_bound_16 == uint2(0u, 0u))) { break; }
+                loop_bound_16 -= uint2(loop_bound_16.y == 0u, 1u);
+                if (!loop_init_13) {
+                    uint _e304 = j_1;
+                    j_1 = (_e304 + 1u);
                 }
-                loop_init_7 = false;
-                uint _e224 = j;
-                if ((_e224 < K)) {
-                    local_3 = first_1;
+                loop_init_13 = false;
+                uint _e278 = j_1;
+                if ((_e278 < K)) {
+                    local_7 = first_1;
                 } else {
-                    local_3 = false;
+                    local_7 = false;
                 }
-                bool _e230 = local_3;
-                if (_e230) {
+                bool _e284 = local_7;
+                if (_e284) {
                 } else {
                     break;
                 }
                 {
-                    uint _e231 = j;
-                    uint _e233 = k_1;
-                    if ((_e209[min(uint(_e231), 7u)] == _e233)) {
-                        float3 _e235 = w;
-                        float3 _e236 = total;
-                        uint _e237 = j;
-                        const float _e239 = slot_target(_e236, _e237, K);
-                        uint _e240 = j;
-                        float _e242 = slot_p[min(uint(_e240), 7u)];
-                        uint _e244 = j;
-                        const float3 _e246 = slot_share(_e244, K);
-                        w = (_e235 + ((_e239 / _e242) * _e246));
+                    uint _e285 = j_1;
+                    uint _e287 = k_1;
+                    if ((_e263[min(uint(_e285), 7u)] == _e287)) {
+                        float3 _e289 = w;
+                        float3 _e290 = total;
+                        uint _e291 = j_1;
+                        const float _e293 = slot_target(_e290, _e291, K);
+                        uint _e294 = j_1;
+                        float _e296 = slot_p[min(uint(_e294), 7u)];
+                        uint _e298 = j_1;
+                        const float3 _e300 = slot_share(_e298, K);
+                        w = (_e289 + ((_e293 / _e296) * _e300));
                     }
                 }
             }
             if (first_1) {
-                Shaded _e252 = t;
-                uint _e253 = k_1;
-                uint _e255 = slot_light[min(uint(_e253), 7u)];
-                float3 _e256 = r;
-                Material _e257 = m;
-                uint _e259 = k_1;
-                float _e262 = slot_u[min(uint(_e259), 7u)].x;
-                uint _e263 = k_1;
-                float _e266 = slot_u[min(uint(_e263), 7u)].y;
-                const Shaded _e267 = shade_pick(_e255, x_11, n_8, _e256, _e54, _e257, 1.0, _e262, _e266, eps_4);
-                float3 _e268 = w;
-                const Shaded _e269 = scaled(_e267, _e268);
-                const Shaded _e270 = add(_e252, _e269);
-                t = _e270;
+                Shaded _e306 = t;
+                uint _e307 = k_1;
+                uint _e309 = slot_light[min(uint(_e307), 7u)];
+                float3 _e310 = n;
+                float3 _e311 = r;
+                Material _e312 = m;
+                uint _e314 = k_1;
+                float _e317 = slot_u[min(uint(_e314), 7u)].x;
+                uint _e318 = k_1;
+                float _e321 = slot_u[min(uint(_e318), 7u)].y;
+                const Shaded _e322 = shade_pick(_e309, x_11, _e310, _e311, _e79, _e312, 1.0, _e317, _e321, eps_4);
+                float3 _e323 = w;
+                const Shaded _e324 = scaled(_e322, _e323);
+                const Shaded _e325 = add(_e306, _e324);
+                t = _e325;
             }
         }
     }
-    float3 _e276 = t.e;
-    uint _e277 = count;
-    out_tex[texel_1] = float4(_e276, float(_e277));
+    float3 _e331 = t.e;
+    uint _e332 = count;
+    out_tex[texel_1] = float4(_e331, float(_e332));
     counter_add(DIRECT_COUNT_PIXELS, 1u);
-    uint _e283 = count;
-    counter_add(DIRECT_COUNT_CANDIDATES, _e283);
-    uint _e286 = evaluations;
-    counter_add(DIRECT_COUNT_EVALUATIONS, _e286);
-    uint _e289 = rays_cast;
-    counter_add(DIRECT_COUNT_RAYS, _e289);
-    uint _e292 = nodes_visited;
-    counter_add(DIRECT_COUNT_NODES, _e292);
+    uint _e338 = count;
+    counter_add(DIRECT_COUNT_CANDIDATES, _e338);
+    uint _e341 = evaluations;
+    counter_add(DIRECT_COUNT_EVALUATIONS, _e341);
+    uint _e344 = rays_cast;
+    counter_add(DIRECT_COUNT_RAYS, _e344);
+    uint _e347 = nodes_visited;
+    counter_add(DIRECT_COUNT_NODES, _e347);
     return;
 }

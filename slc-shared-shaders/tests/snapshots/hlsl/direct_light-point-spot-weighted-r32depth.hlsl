@@ -75,9 +75,28 @@ struct Connection {
 struct WeightedPicks {
     uint light[8];
     float w[8];
+    float threshold[8];
     float w_sum;
     uint n;
     uint h;
+};
+
+struct WorkgroupBox {
+    float3 lo;
+    int _pad1_0;
+    float3 hi;
+    int _end_pad_0;
+};
+
+struct TileWalk {
+    float3 lo;
+    int _pad1_0;
+    float3 hi;
+    float w;
+    uint total;
+    int _end_pad_0;
+    int _end_pad_1;
+    int _end_pad_2;
 };
 
 struct Shaded {
@@ -162,6 +181,11 @@ static const float TEMPORAL_CHANGE_HIGH = 8.0;
 static const float TEMPORAL_MIN_WEIGHT = 0.01;
 static const uint K = 8u;
 static const uint BSH = 0u;
+static const uint BSH_TILE_DEPTH = 8u;
+static const uint BSH_TILE_SUBTREES = 256u;
+static const uint TILE_THREADS = 64u;
+static const uint BOX_THREADS = 64u;
+static const uint TILE_LIST = 1024u;
 
 ByteAddressBuffer geo_nodes : register(t6, space1);
 ByteAddressBuffer geo_tris : register(t7, space1);
@@ -174,6 +198,13 @@ ByteAddressBuffer rt2_5 : register(t2, space1);
 ByteAddressBuffer r2_4 : register(t3, space1);
 ByteAddressBuffer bsh_nodes : register(t4, space1);
 ByteAddressBuffer light_cones : register(t5, space1);
+groupshared float3 wg_lo[64];
+groupshared float3 wg_hi[64];
+groupshared WorkgroupBox wg_box;
+groupshared uint tile_list[1024];
+groupshared uint subtree_at[256];
+groupshared uint tile_scale;
+groupshared uint tile_total;
 
 float to_f32_(uint u)
 {
@@ -242,6 +273,13 @@ bool sphere_contains_point(float3 c, float r_1, float3 x_1)
     return (dot(v_3, v_3) <= (r_1 * r_1));
 }
 
+bool sphere_overlaps_aabb(float3 c_1, float r_2, float3 bmin, float3 bmax)
+{
+    float3 q = clamp(c_1, bmin, bmax);
+    float3 v_4 = (q - c_1);
+    return (dot(v_4, v_4) <= (r_2 * r_2));
+}
+
 float inverse_square(float d2_2)
 {
     return (1.0 / max(d2_2, MIN_D2_));
@@ -254,31 +292,31 @@ float connection_factor(float cos_x, float d2_3, float rt2_1, float w)
     return (((cos_x * _e4) * _e6) * w);
 }
 
-float connection_cosine(float3 x_2, float3 y, float3 n, float3 ng, float r2_1)
+float connection_cosine(float3 x_2, float3 y, float3 n_1, float3 ng, float r2_1)
 {
-    bool local_2 = (bool)0;
-    bool local_3 = (bool)0;
+    bool local_6 = (bool)0;
+    bool local_7 = (bool)0;
 
-    float3 v_4 = (x_2 - y);
-    float d2_7 = dot(v_4, v_4);
+    float3 v_5 = (x_2 - y);
+    float d2_7 = dot(v_5, v_5);
     const bool _e7 = slc_keep(r2_1, d2_7);
     if (!(!(_e7))) {
-        local_2 = !((d2_7 > 0.0));
+        local_6 = !((d2_7 > 0.0));
     } else {
-        local_2 = true;
+        local_6 = true;
     }
-    bool _e16 = local_2;
+    bool _e16 = local_6;
     if (_e16) {
         return 0.0;
     }
-    float3 w_5 = (v_4 / (sqrt(d2_7)).xxx);
-    float cos_x_1 = -(dot(n, w_5));
+    float3 w_9 = (v_5 / (sqrt(d2_7)).xxx);
+    float cos_x_1 = -(dot(n_1, w_9));
     if (!((cos_x_1 <= 0.0))) {
-        local_3 = (dot(ng, w_5) >= 0.0);
+        local_7 = (dot(ng, w_9) >= 0.0);
     } else {
-        local_3 = true;
+        local_7 = true;
     }
-    bool _e32 = local_3;
+    bool _e32 = local_7;
     if (_e32) {
         return 0.0;
     }
@@ -290,8 +328,8 @@ float spot_falloff(float cos_theta, float cos_outer, float cos_inner, float shap
     if ((cos_inner <= cos_outer)) {
         return ((cos_theta >= cos_outer) ? 1.0 : 0.0);
     }
-    float t_1 = saturate(((cos_theta - cos_outer) / (cos_inner - cos_outer)));
-    return ((shape > 0.5) ? (t_1 * t_1) : ((t_1 * t_1) * (3.0 - (2.0 * t_1))));
+    float t_4 = saturate(((cos_theta - cos_outer) / (cos_inner - cos_outer)));
+    return ((shape > 0.5) ? (t_4 * t_4) : ((t_4 * t_4) * (3.0 - (2.0 * t_4))));
 }
 
 float bsh_scaled_radius(BshNode node, float scale)
@@ -331,8 +369,8 @@ float ggx_d(float cos_h, float sin2_h, float alpha)
         return 0.0;
     }
     float a2_ = (alpha * alpha);
-    float t_2 = (((cos_h * cos_h) * a2_) + sin2_h);
-    return ((a2_ * INV_PI) / (t_2 * t_2));
+    float t_5 = (((cos_h * cos_h) * a2_) + sin2_h);
+    return ((a2_ * INV_PI) / (t_5 * t_5));
 }
 
 float smith_root(float cos_, float alpha_1)
@@ -401,11 +439,11 @@ float subtended_cos(float dist2_, float r2_2)
 
 float4 emitter_cone(float3 center_, float radius, float3 axis, float cos_o, float3 p)
 {
-    float3 v_5 = (p - center_);
-    float dist2_1 = dot(v_5, v_5);
+    float3 v_6 = (p - center_);
+    float dist2_1 = dot(v_6, v_6);
     float r2_5 = (radius * radius);
     float d2_8 = max(max(dist2_1, r2_5), MIN_D2_);
-    float3 wi = ((dist2_1 > 0.0) ? (v_5 / (sqrt(dist2_1)).xxx) : float3(0.0, 0.0, 0.0));
+    float3 wi = ((dist2_1 > 0.0) ? (v_6 / (sqrt(dist2_1)).xxx) : float3(0.0, 0.0, 0.0));
     float cos_w = dot(axis, wi);
     const float _e25 = safe_sqrt((1.0 - (cos_w * cos_w)));
     const float _e26 = subtended_cos(dist2_1, r2_5);
@@ -428,54 +466,54 @@ float emitter_importance(float3 center_1, float radius_1, float phi, float3 axis
 
 float cone_cos_of(float3 v, float d2_4, float a_2, float3 d)
 {
-    bool local_4 = (bool)0;
-    bool local_5 = (bool)0;
+    bool local_8 = (bool)0;
+    bool local_9 = (bool)0;
 
     float vd = dot(v, d);
     float h2_ = (d2_4 - (a_2 * a_2));
     if (!((h2_ <= 0.0))) {
         if ((vd >= 0.0)) {
-            local_5 = ((vd * vd) >= h2_);
+            local_9 = ((vd * vd) >= h2_);
         } else {
-            local_5 = false;
+            local_9 = false;
         }
-        bool _e19 = local_5;
-        local_4 = _e19;
+        bool _e19 = local_9;
+        local_8 = _e19;
     } else {
-        local_4 = true;
+        local_8 = true;
     }
-    bool _e21 = local_4;
+    bool _e21 = local_8;
     if (_e21) {
         return 1.0;
     }
-    float3 c_4 = cross(v, d);
-    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_4, c_4)) * a_2)) / d2_4), 1.0);
+    float3 c_5 = cross(v, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_5, c_5)) * a_2)) / d2_4), 1.0);
 }
 
 float cone_cos_toward(float3 center_2, float radius_2, float3 p_2, float3 d_1)
 {
-    float3 v_6 = (center_2 - p_2);
-    const float _e6 = cone_cos_of(v_6, dot(v_6, v_6), radius_2, d_1);
+    float3 v_7 = (center_2 - p_2);
+    const float _e6 = cone_cos_of(v_7, dot(v_7, v_7), radius_2, d_1);
     return _e6;
 }
 
 float range_scale_at(float4 rl, float cos_t)
 {
-    float t_3 = (((0.5 + (0.5 * cos_t)) * (rl.z - 1.0)) + 1.0);
-    return clamp((rl.x + ((rl.y * rl.z) / (t_3 * t_3))), 1.0, (rl.w * rl.w));
+    float t_6 = (((0.5 + (0.5 * cos_t)) * (rl.z - 1.0)) + 1.0);
+    return clamp((rl.x + ((rl.y * rl.z) / (t_6 * t_6))), 1.0, (rl.w * rl.w));
 }
 
-float range_scale_toward(float4 rl_1, float3 center_3, float radius_3, float3 p_3, float3 r_2)
+float range_scale_toward(float4 rl_1, float3 center_3, float radius_3, float3 p_3, float3 r_3)
 {
     if ((rl_1.w <= 1.0)) {
         return 1.0;
     }
-    const float _e9 = cone_cos_toward(center_3, radius_3, p_3, r_2);
+    const float _e9 = cone_cos_toward(center_3, radius_3, p_3, r_3);
     const float _e10 = range_scale_at(rl_1, _e9);
     return _e10;
 }
 
-float light_importance(float3 center_4, float radius_4, float phi_1, float3 axis_2, float cos_o_2, float cos_e_1, float3 p_4, float3 n_1)
+float light_importance(float3 center_4, float radius_4, float phi_1, float3 axis_2, float cos_o_2, float cos_e_1, float3 p_4, float3 n_2)
 {
     float imp = (float)0;
 
@@ -484,10 +522,10 @@ float light_importance(float3 center_4, float radius_4, float phi_1, float3 axis
         return 0.0;
     }
     imp = ((phi_1 * _e8.x) / _e8.y);
-    if ((dot(n_1, n_1) > 0.0)) {
-        float3 v_7 = (center_4 - p_4);
-        float dist2_2 = dot(v_7, v_7);
-        float cos_i = dot(((dist2_2 > 0.0) ? (v_7 / (sqrt(dist2_2)).xxx) : float3(0.0, 0.0, 0.0)), n_1);
+    if ((dot(n_2, n_2) > 0.0)) {
+        float3 v_8 = (center_4 - p_4);
+        float dist2_2 = dot(v_8, v_8);
+        float cos_i = dot(((dist2_2 > 0.0) ? (v_8 / (sqrt(dist2_2)).xxx) : float3(0.0, 0.0, 0.0)), n_2);
         float _e33 = imp;
         const float _e37 = safe_sqrt((1.0 - (cos_i * cos_i)));
         const float _e40 = cos_sub_clamped(_e37, cos_i, _e8.w, _e8.z);
@@ -497,22 +535,22 @@ float light_importance(float3 center_4, float radius_4, float phi_1, float3 axis
     return max(_e44, 0.0);
 }
 
-float glossy_importance(float3 center_5, float radius_5, float phi_2, float3 axis_3, float cos_o_3, float cos_e_2, float3 p_5, float3 n_2, float3 r_3, float4 lobe_5)
+float glossy_importance(float3 center_5, float radius_5, float phi_2, float3 axis_3, float cos_o_3, float cos_e_2, float3 p_5, float3 n_3, float3 r_4, float4 lobe_5)
 {
-    bool local_6 = (bool)0;
+    bool local_10 = (bool)0;
 
     const float _e10 = emitter_importance(center_5, radius_5, phi_2, axis_3, cos_o_3, cos_e_2, p_5);
-    const float _e11 = cone_cos_toward(center_5, radius_5, p_5, n_2);
+    const float _e11 = cone_cos_toward(center_5, radius_5, p_5, n_3);
     if (!((_e10 <= 0.0))) {
-        local_6 = (_e11 <= 0.0);
+        local_10 = (_e11 <= 0.0);
     } else {
-        local_6 = true;
+        local_10 = true;
     }
-    bool _e20 = local_6;
+    bool _e20 = local_10;
     if (_e20) {
         return 0.0;
     }
-    const float _e22 = cone_cos_toward(center_5, radius_5, p_5, r_3);
+    const float _e22 = cone_cos_toward(center_5, radius_5, p_5, r_4);
     const float _e27 = safe_sqrt((0.5 + (0.5 * _e22)));
     const float _e33 = ggx_d(_e27, (1.0 - (_e27 * _e27)), lobe_5.z);
     const float _e39 = smith_root(lobe_5.w, lobe_5.z);
@@ -526,36 +564,36 @@ float candidate_weight(float importance, float rt2_2, float d2_5)
     return (importance * _e3);
 }
 
-float cone_weight(float3 center_6, float radius_6, float phi_3, float3 axis_4, float cos_o_4, float cos_e_3, float rt2_3, float3 p_6, float3 n_3, float3 r_4, float4 lobe_6)
+float cone_weight(float3 center_6, float radius_6, float phi_3, float3 axis_4, float cos_o_4, float cos_e_3, float rt2_3, float3 p_6, float3 n_4, float3 r_5, float4 lobe_6)
 {
-    float3 v_8 = (p_6 - center_6);
+    float3 v_9 = (p_6 - center_6);
     if ((lobe_6.y <= 0.0)) {
-        const float _e15 = light_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_3);
-        const float _e19 = candidate_weight((_e15 * INV_PI), rt2_3, dot(v_8, v_8));
+        const float _e15 = light_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_4);
+        const float _e19 = candidate_weight((_e15 * INV_PI), rt2_3, dot(v_9, v_9));
         return _e19;
     }
-    const float _e20 = glossy_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_3, r_4, lobe_6);
-    const float _e22 = candidate_weight(_e20, rt2_3, dot(v_8, v_8));
+    const float _e20 = glossy_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_4, r_5, lobe_6);
+    const float _e22 = candidate_weight(_e20, rt2_3, dot(v_9, v_9));
     return _e22;
 }
 
 bool finite3_(float3 v_1)
 {
-    bool local_7 = (bool)0;
-    bool local_8 = (bool)0;
+    bool local_11 = (bool)0;
+    bool local_12 = (bool)0;
 
     if ((abs(v_1.x) <= F32_MAX)) {
-        local_7 = (abs(v_1.y) <= F32_MAX);
+        local_11 = (abs(v_1.y) <= F32_MAX);
     } else {
-        local_7 = false;
+        local_11 = false;
     }
-    bool _e12 = local_7;
+    bool _e12 = local_11;
     if (_e12) {
-        local_8 = (abs(v_1.z) <= F32_MAX);
+        local_12 = (abs(v_1.z) <= F32_MAX);
     } else {
-        local_8 = false;
+        local_12 = false;
     }
-    bool _e20 = local_8;
+    bool _e20 = local_12;
     return _e20;
 }
 
@@ -577,65 +615,65 @@ float3 ray_inverse3_(float3 d_2)
     return float3(_e2, _e4, _e6);
 }
 
-float ray_aabb(float3 o, float3 inv_d, float3 bmin, float3 bmax, float t_max)
+float ray_aabb(float3 o, float3 inv_d, float3 bmin_1, float3 bmax_1, float t_max)
 {
-    float3 t0_ = ((bmin - o) * inv_d);
-    float3 t1_ = ((bmax - o) * inv_d);
-    float3 lo = min(t0_, t1_);
-    float3 hi = max(t0_, t1_);
-    float t_in = max(max(lo.x, lo.y), max(lo.z, 0.0));
-    float t_out = min(min(hi.x, hi.y), min(hi.z, t_max));
+    float3 t0_ = ((bmin_1 - o) * inv_d);
+    float3 t1_ = ((bmax_1 - o) * inv_d);
+    float3 lo_3 = min(t0_, t1_);
+    float3 hi_3 = max(t0_, t1_);
+    float t_in = max(max(lo_3.x, lo_3.y), max(lo_3.z, 0.0));
+    float t_out = min(min(hi_3.x, hi_3.y), min(hi_3.z, t_max));
     if ((t_in <= t_out)) {
         return t_in;
     }
     return -1.0;
 }
 
-float ray_triangle(float3 o_1, float3 d_3, float3 a_3, float3 b_2, float3 c_1, float t_min, float t_max_1)
+float ray_triangle(float3 o_1, float3 d_3, float3 a_3, float3 b_2, float3 c_2, float t_min, float t_max_1)
 {
-    bool local_9 = (bool)0;
-    bool local_10 = (bool)0;
-    bool local_11 = (bool)0;
+    bool local_13 = (bool)0;
+    bool local_14 = (bool)0;
+    bool local_15 = (bool)0;
 
     float3 e1_ = (b_2 - a_3);
-    float3 e2_ = (c_1 - a_3);
-    float3 p_7 = cross(d_3, e2_);
-    float det = dot(e1_, p_7);
+    float3 e2_ = (c_2 - a_3);
+    float3 p_9 = cross(d_3, e2_);
+    float det = dot(e1_, p_9);
     if ((abs(det) <= 0.0)) {
         return -1.0;
     }
     float inv = (1.0 / det);
-    float3 s_3 = (o_1 - a_3);
-    float u_3 = (dot(s_3, p_7) * inv);
+    float3 s_9 = (o_1 - a_3);
+    float u_3 = (dot(s_9, p_9) * inv);
     if (!((u_3 < 0.0))) {
-        local_9 = (u_3 > 1.0);
+        local_13 = (u_3 > 1.0);
     } else {
-        local_9 = true;
+        local_13 = true;
     }
-    bool _e28 = local_9;
+    bool _e28 = local_13;
     if (_e28) {
         return -1.0;
     }
-    float3 q = cross(s_3, e1_);
-    float v_9 = (dot(d_3, q) * inv);
-    if (!((v_9 < 0.0))) {
-        local_10 = ((u_3 + v_9) > 1.0);
+    float3 q_1 = cross(s_9, e1_);
+    float v_10 = (dot(d_3, q_1) * inv);
+    if (!((v_10 < 0.0))) {
+        local_14 = ((u_3 + v_10) > 1.0);
     } else {
-        local_10 = true;
+        local_14 = true;
     }
-    bool _e42 = local_10;
+    bool _e42 = local_14;
     if (_e42) {
         return -1.0;
     }
-    float t_4 = (dot(e2_, q) * inv);
-    if ((t_4 > t_min)) {
-        local_11 = (t_4 < t_max_1);
+    float t_7 = (dot(e2_, q_1) * inv);
+    if ((t_7 > t_min)) {
+        local_15 = (t_7 < t_max_1);
     } else {
-        local_11 = false;
+        local_15 = false;
     }
-    bool _e51 = local_11;
+    bool _e51 = local_15;
     if (_e51) {
-        return t_4;
+        return t_7;
     }
     return -1.0;
 }
@@ -732,9 +770,9 @@ GeoHit trace(float3 o_2, float3 d_4, float t_min_1, float t_max_2, bool any_hit)
                     }
                     {
                         uint _e42 = i;
-                        GpuTriangle t_5 = ConstructGpuTriangle(asfloat(geo_tris.Load3(_e42*48+0)), asuint(geo_tris.Load(_e42*48+12)), asfloat(geo_tris.Load3(_e42*48+16)), asuint(geo_tris.Load(_e42*48+28)), asfloat(geo_tris.Load3(_e42*48+32)), asuint(geo_tris.Load(_e42*48+44)));
+                        GpuTriangle t_8 = ConstructGpuTriangle(asfloat(geo_tris.Load3(_e42*48+0)), asuint(geo_tris.Load(_e42*48+12)), asfloat(geo_tris.Load3(_e42*48+16)), asuint(geo_tris.Load(_e42*48+28)), asfloat(geo_tris.Load3(_e42*48+32)), asuint(geo_tris.Load(_e42*48+44)));
                         float _e49 = hit.t;
-                        const float _e50 = ray_triangle(o_2, d_4, t_5.v0_, t_5.v1_, t_5.v2_, t_min_1, _e49);
+                        const float _e50 = ray_triangle(o_2, d_4, t_8.v0_, t_8.v1_, t_8.v2_, t_min_1, _e49);
                         if ((_e50 > 0.0)) {
                             hit.t = _e50;
                             uint _e55 = i;
@@ -818,17 +856,17 @@ uint bsh_first(uint nodes_2)
     return BSH_NONE;
 }
 
-float bsh_inner_scale(float a_5, float3 v_2, float d2_6, float3 r_5, float4 rl_2)
+float bsh_inner_scale(float a_5, float3 v_2, float d2_6, float3 r_6, float4 rl_2)
 {
-    const float _e5 = cone_cos_of(v_2, d2_6, a_5, r_5);
+    const float _e5 = cone_cos_of(v_2, d2_6, a_5, r_6);
     const float _e8 = range_scale_at(rl_2, (_e5 + 2e-6));
     return _e8;
 }
 
-bool bsh_reaches(BshNode node_3, float3 x_5, float3 r_6, float4 rl_3)
+bool bsh_reaches(BshNode node_3, float3 x_5, float3 r_7, float4 rl_3)
 {
-    bool local_12 = (bool)0;
-    bool local_13 = (bool)0;
+    bool local_16 = (bool)0;
+    bool local_17 = (bool)0;
 
     const bool _e6 = sphere_contains_point(node_3.center_, node_3.radius, x_5);
     if (_e6) {
@@ -836,69 +874,125 @@ bool bsh_reaches(BshNode node_3, float3 x_5, float3 r_6, float4 rl_3)
     }
     if (!((rl_3.w <= 1.0))) {
         const bool _e20 = sphere_contains_point(node_3.center_, (node_3.radius * (rl_3.w * 1.0001)), x_5);
-        local_12 = !(_e20);
+        local_16 = !(_e20);
     } else {
-        local_12 = true;
+        local_16 = true;
     }
-    bool _e23 = local_12;
+    bool _e23 = local_16;
     if (_e23) {
         return false;
     }
     const float _e25 = bsh_range_bound(node_3);
-    float3 v_10 = (x_5 - node_3.center_);
-    float d2_9 = dot(v_10, v_10);
+    float3 v_11 = (x_5 - node_3.center_);
+    float d2_9 = dot(v_11, v_11);
     float reach_max = (node_3.extent + ((rl_3.w * 1.001) * _e25));
     if ((d2_9 > (reach_max * reach_max))) {
         return false;
     }
     if ((node_3.child == BSH_NONE)) {
-        const float _e43 = range_scale_toward(rl_3, node_3.center_, node_3.extent, x_5, r_6);
+        const float _e43 = range_scale_toward(rl_3, node_3.center_, node_3.extent, x_5, r_7);
         const float _e46 = bsh_scaled_radius(node_3, sqrt(_e43));
         const bool _e47 = sphere_contains_point(node_3.center_, _e46, x_5);
         return _e47;
     }
-    const float _e50 = bsh_inner_scale(node_3.extent, -(v_10), d2_9, r_6, rl_3);
+    const float _e50 = bsh_inner_scale(node_3.extent, -(v_11), d2_9, r_7, rl_3);
     float s_c = (_e50 * 1.001);
     float reach = (node_3.extent + (sqrt(s_c) * _e25));
     if ((d2_9 <= ((node_3.radius * node_3.radius) * s_c))) {
-        local_13 = (d2_9 <= (reach * reach));
+        local_17 = (d2_9 <= (reach * reach));
     } else {
-        local_13 = false;
+        local_17 = false;
     }
-    bool _e67 = local_13;
+    bool _e67 = local_17;
     return _e67;
 }
 
-uint bsh_next_leaf_lobe(uint nodes_3, uint start, float3 x_6, float3 r_7, float4 rl_4)
+bool bsh_reaches_box(BshNode node_4, float3 lo, float3 hi, float w_3)
+{
+    const bool _e13 = sphere_overlaps_aabb(node_4.center_, (node_4.radius * (max(1.0, (w_3 * 1.0001)) * 1.0001)), lo, hi);
+    return _e13;
+}
+
+uint bsh_subtree(uint nodes_3, uint s_1, uint depth)
 {
     uint i_2 = (uint)0;
+    uint level = 0u;
+    bool local_18 = (bool)0;
 
-    i_2 = start;
+    const uint _e3 = bsh_first(nodes_3);
+    i_2 = _e3;
     uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
         loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
-        uint _e6 = i_2;
-        if ((_e6 != BSH_NONE)) {
+        uint _e7 = level;
+        if ((_e7 < depth)) {
+            uint _e11 = i_2;
+            local_18 = (_e11 != BSH_NONE);
+        } else {
+            local_18 = false;
+        }
+        bool _e15 = local_18;
+        if (_e15) {
         } else {
             break;
         }
         {
-            uint _e9 = i_2;
-            const BshNode _e10 = bsh_node(nodes_3, _e9);
-            const bool _e11 = bsh_reaches(_e10, x_6, r_7, rl_4);
+            uint _e16 = i_2;
+            const BshNode _e17 = bsh_node(nodes_3, _e16);
+            uint _e18 = level;
+            uint below = (depth - _e18);
+            if ((_e17.child == BSH_NONE)) {
+                if (((s_1 << (32u - below)) != 0u)) {
+                    return BSH_NONE;
+                }
+                uint _e29 = i_2;
+                return _e29;
+            }
+            if ((((s_1 >> (below - 1u)) & 1u) == 0u)) {
+                i_2 = _e17.child;
+            } else {
+                const BshNode _e39 = bsh_node(nodes_3, _e17.child);
+                i_2 = _e39.next;
+            }
+            uint _e41 = level;
+            level = (_e41 + 1u);
+        }
+    }
+    uint _e44 = i_2;
+    return _e44;
+}
+
+uint bsh_next_leaf_box(uint nodes_4, uint start_1, uint end, float3 lo_1, float3 hi_1, float w_4)
+{
+    uint i_3 = (uint)0;
+
+    i_3 = start_1;
+    uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
+    while(true) {
+        if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
+        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+        uint _e7 = i_3;
+        if ((_e7 != end)) {
+        } else {
+            break;
+        }
+        {
+            uint _e9 = i_3;
+            const BshNode _e10 = bsh_node(nodes_4, _e9);
+            const bool _e11 = bsh_reaches_box(_e10, lo_1, hi_1, w_4);
             if (_e11) {
                 if ((_e10.child == BSH_NONE)) {
-                    uint _e15 = i_2;
+                    uint _e15 = i_3;
                     return _e15;
                 }
-                i_2 = _e10.child;
+                i_3 = _e10.child;
             } else {
-                i_2 = _e10.next;
+                i_3 = _e10.next;
             }
         }
     }
-    return BSH_NONE;
+    return end;
 }
 
 float next_threshold(float sum, inout uint h_1)
@@ -912,46 +1006,46 @@ float next_threshold(float sum, inout uint h_1)
     return _e6;
 }
 
-Connection connect_record(GpuLight l_2, float3 x_7, float3 n_4, float3 ng_1, float r2_3, float rt2_4, float w_res, float u1_1, float u2_1, float eps, bool trace_1)
+Connection connect_record(GpuLight l_2, float3 x_6, float3 n_5, float3 ng_1, float r2_3, float rt2_4, float w_res, float u1_1, float u2_1, float eps, bool trace_1)
 {
-    Connection c_2 = (Connection)0;
-    bool local_14 = (bool)0;
-    bool local_15 = (bool)0;
+    Connection c_3 = (Connection)0;
+    bool local_19 = (bool)0;
+    bool local_20 = (bool)0;
 
-    c_2.e = (0.0).xxx;
+    c_3.e = (0.0).xxx;
     const float3 _e16 = light_point(l_2, u1_1, u2_1);
-    c_2.y = _e16;
-    float3 _e19 = c_2.y;
-    const float _e20 = connection_cosine(x_7, _e19, n_4, ng_1, r2_3);
-    c_2.cos_x = _e20;
-    float _e22 = c_2.cos_x;
+    c_3.y = _e16;
+    float3 _e19 = c_3.y;
+    const float _e20 = connection_cosine(x_6, _e19, n_5, ng_1, r2_3);
+    c_3.cos_x = _e20;
+    float _e22 = c_3.cos_x;
     if (!((_e22 <= 0.0))) {
         if (trace_1) {
-            float3 _e33 = c_2.y;
-            const bool _e34 = occluded((x_7 + (ng_1 * eps)), _e33);
-            local_15 = _e34;
+            float3 _e33 = c_3.y;
+            const bool _e34 = occluded((x_6 + (ng_1 * eps)), _e33);
+            local_20 = _e34;
         } else {
-            local_15 = false;
+            local_20 = false;
         }
-        bool _e36 = local_15;
-        local_14 = _e36;
+        bool _e36 = local_20;
+        local_19 = _e36;
     } else {
-        local_14 = true;
+        local_19 = true;
     }
-    bool _e38 = local_14;
+    bool _e38 = local_19;
     if (_e38) {
-        Connection _e39 = c_2;
+        Connection _e39 = c_3;
         const Connection connection = _e39;
         return connection;
     }
-    float3 _e41 = c_2.y;
-    float3 v_11 = (x_7 - _e41);
-    float d2_10 = dot(v_11, v_11);
-    const float3 _e48 = light_intensity(l_2, (v_11 / (sqrt(d2_10)).xxx));
-    float _e50 = c_2.cos_x;
+    float3 _e41 = c_3.y;
+    float3 v_12 = (x_6 - _e41);
+    float d2_10 = dot(v_12, v_12);
+    const float3 _e48 = light_intensity(l_2, (v_12 / (sqrt(d2_10)).xxx));
+    float _e50 = c_3.cos_x;
     const float _e51 = connection_factor(_e50, d2_10, rt2_4, w_res);
-    c_2.e = (_e48 * _e51);
-    Connection _e53 = c_2;
+    c_3.e = (_e48 * _e51);
+    Connection _e53 = c_3;
     const Connection connection_1 = _e53;
     return connection_1;
 }
@@ -969,12 +1063,12 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
     return ret;
 }
 
-Connection connect_traced(uint li, float3 x_8, float3 n_5, float3 ng_2, float s, float w_res_1, float u1_2, float u2_2, float eps_1, bool trace_2)
+Connection connect_traced(uint li, float3 x_7, float3 n_6, float3 ng_2, float s_2, float w_res_1, float u1_2, float u2_2, float eps_1, bool trace_2)
 {
     GpuLight _e12 = ConstructGpuLight(asfloat(lights.Load3(li*64+0)), asuint(lights.Load(li*64+12)), asfloat(lights.Load3(li*64+16)), asfloat(lights.Load(li*64+28)), asfloat(lights.Load3(li*64+32)), asfloat(lights.Load(li*64+44)), asfloat(lights.Load3(li*64+48)), asuint(lights.Load(li*64+60)));
     float _e15 = asfloat(r2_4.Load(li*4));
     float _e19 = asfloat(rt2_5.Load(li*4));
-    const Connection _e21 = connect_record(_e12, x_8, n_5, ng_2, (s * _e15), (s * _e19), w_res_1, u1_2, u2_2, eps_1, trace_2);
+    const Connection _e21 = connect_record(_e12, x_7, n_6, ng_2, (s_2 * _e15), (s_2 * _e19), w_res_1, u1_2, u2_2, eps_1, trace_2);
     const Connection connection_2 = _e21;
     return connection_2;
 }
@@ -992,131 +1086,112 @@ GpuLightCone ConstructGpuLightCone(float3 arg0, float arg1, float3 arg2, float a
     return ret;
 }
 
-float light_range_scale(uint li_1, float3 x_9, float3 r_8, float4 rl_5)
+float light_range_scale(uint li_1, float3 x_8, float3 r_8, float4 rl_4)
 {
-    GpuLightCone c_5 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_1*48+0)), asfloat(light_cones.Load(li_1*48+12)), asfloat(light_cones.Load3(li_1*48+16)), asfloat(light_cones.Load(li_1*48+28)), asfloat(light_cones.Load(li_1*48+32)), asfloat(light_cones.Load(li_1*48+36)), asuint(light_cones.Load(li_1*48+40)), asuint(light_cones.Load(li_1*48+44)));
-    const float _e9 = range_scale_toward(rl_5, c_5.center_, c_5.radius, x_9, r_8);
+    GpuLightCone c_6 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_1*48+0)), asfloat(light_cones.Load(li_1*48+12)), asfloat(light_cones.Load3(li_1*48+16)), asfloat(light_cones.Load(li_1*48+28)), asfloat(light_cones.Load(li_1*48+32)), asfloat(light_cones.Load(li_1*48+36)), asuint(light_cones.Load(li_1*48+40)), asuint(light_cones.Load(li_1*48+44)));
+    const float _e9 = range_scale_toward(rl_4, c_6.center_, c_6.radius, x_8, r_8);
     return _e9;
 }
 
-float light_weight(uint li_2, float3 x_10, float3 n_6, float3 r_9, float4 lobe_7, float4 rl_6)
+float light_weight(uint li_2, float3 x_9, float3 n_7, float3 r_9, float4 lobe_7, float4 rl_5)
 {
-    GpuLightCone c_6 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_2*48+0)), asfloat(light_cones.Load(li_2*48+12)), asfloat(light_cones.Load3(li_2*48+16)), asfloat(light_cones.Load(li_2*48+28)), asfloat(light_cones.Load(li_2*48+32)), asfloat(light_cones.Load(li_2*48+36)), asuint(light_cones.Load(li_2*48+40)), asuint(light_cones.Load(li_2*48+44)));
-    const float _e15 = light_range_scale(li_2, x_10, r_9, rl_6);
+    GpuLightCone c_7 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_2*48+0)), asfloat(light_cones.Load(li_2*48+12)), asfloat(light_cones.Load3(li_2*48+16)), asfloat(light_cones.Load(li_2*48+28)), asfloat(light_cones.Load(li_2*48+32)), asfloat(light_cones.Load(li_2*48+36)), asuint(light_cones.Load(li_2*48+40)), asuint(light_cones.Load(li_2*48+44)));
+    const float _e15 = light_range_scale(li_2, x_9, r_9, rl_5);
     float _e18 = asfloat(rt2_5.Load(li_2*4));
-    const float _e20 = cone_weight(c_6.center_, c_6.radius, c_6.phi, c_6.axis, c_6.cos_o, c_6.cos_e, (_e15 * _e18), x_10, n_6, r_9, lobe_7);
+    const float _e20 = cone_weight(c_7.center_, c_7.radius, c_7.phi, c_7.axis, c_7.cos_o, c_7.cos_e, (_e15 * _e18), x_9, n_7, r_9, lobe_7);
     return _e20;
 }
 
-WeightedPicks bsh_weighted_collect(float3 x_11, float3 n_7, float3 r_10, float4 lobe_8, float4 rl_7, uint h0_)
+WeightedPicks weighted_picks(uint h_2)
 {
-    WeightedPicks picks = (WeightedPicks)0;
-    uint h_2 = (uint)0;
-    float threshold[8] = (float[8])0;
-    uint b_4 = (uint)0;
-    uint s_1 = (uint)0;
+    WeightedPicks picks_1 = (WeightedPicks)0;
 
-    picks.w_sum = 0.0;
-    picks.n = 0u;
-    h_2 = h0_;
-    const uint _e15 = bsh_first(BSH);
-    const uint _e16 = bsh_next_leaf_lobe(BSH, _e15, x_11, r_10, rl_7);
-    b_4 = _e16;
-    uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
-    bool loop_init_1 = true;
-    while(true) {
-        if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
-        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-        if (!loop_init_1) {
-            uint _e63 = b_4;
-            uint _e66 = asuint(bsh_nodes.Load(20+_e63*32));
-            const uint _e67 = bsh_next_leaf_lobe(BSH, _e66, x_11, r_10, rl_7);
-            b_4 = _e67;
-        }
-        loop_init_1 = false;
-        uint _e18 = b_4;
-        if ((_e18 != BSH_NONE)) {
-        } else {
-            break;
-        }
-        {
-            uint _e22 = picks.n;
-            picks.n = (_e22 + 1u);
-            uint _e26 = b_4;
-            uint li_5 = asuint(bsh_nodes.Load(24+_e26*32));
-            const float _e30 = light_weight(li_5, x_11, n_7, r_10, lobe_8, rl_7);
-            if ((_e30 > 0.0)) {
-                float _e34 = picks.w_sum;
-                picks.w_sum = (_e34 + _e30);
-                s_1 = 0u;
-                uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
-                bool loop_init_2 = true;
-                while(true) {
-                    if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
-                    loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
-                    if (!loop_init_2) {
-                        uint _e59 = s_1;
-                        s_1 = (_e59 + 1u);
-                    }
-                    loop_init_2 = false;
-                    uint _e38 = s_1;
-                    if ((_e38 < K)) {
-                    } else {
-                        break;
-                    }
-                    {
-                        float _e42 = picks.w_sum;
-                        uint _e43 = s_1;
-                        float _e45 = threshold[min(uint(_e43), 7u)];
-                        if ((_e42 > _e45)) {
-                            uint _e48 = s_1;
-                            picks.light[min(uint(_e48), 7u)] = li_5;
-                            uint _e51 = s_1;
-                            picks.w[min(uint(_e51), 7u)] = _e30;
-                            uint _e53 = s_1;
-                            float _e56 = picks.w_sum;
-                            const float _e57 = next_threshold(_e56, h_2);
-                            threshold[min(uint(_e53), 7u)] = _e57;
-                        }
-                    }
-                }
-            }
-        }
-    }
-    uint _e69 = h_2;
-    picks.h = _e69;
-    WeightedPicks _e70 = picks;
-    const WeightedPicks weightedpicks = _e70;
+    picks_1.w_sum = 0.0;
+    picks_1.n = 0u;
+    picks_1.h = h_2;
+    WeightedPicks _e7 = picks_1;
+    const WeightedPicks weightedpicks = _e7;
     return weightedpicks;
 }
 
-float4 unproject_pixel(float4 c0_, float4 c1_, float4 c2_, float4 c3_, float px, float py, float width, float height, float depth)
+void weighted_offer(inout WeightedPicks picks_2, uint li_3, float w_5)
 {
-    bool local_16 = (bool)0;
-    bool local_17 = (bool)0;
+    uint h_3 = (uint)0;
+    uint s_3 = 0u;
 
-    if ((depth > 0.0)) {
-        local_16 = (depth < 1.0);
+    uint _e4 = picks_2.n;
+    picks_2.n = (_e4 + 1u);
+    if ((w_5 > 0.0)) {
+        float _e10 = picks_2.w_sum;
+        picks_2.w_sum = (_e10 + w_5);
+        uint _e13 = picks_2.h;
+        h_3 = _e13;
+        uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
+        bool loop_init_1 = true;
+        while(true) {
+            if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
+            loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+            if (!loop_init_1) {
+                uint _e40 = s_3;
+                s_3 = (_e40 + 1u);
+            }
+            loop_init_1 = false;
+            uint _e17 = s_3;
+            if ((_e17 < K)) {
+            } else {
+                break;
+            }
+            {
+                float _e21 = picks_2.w_sum;
+                uint _e23 = s_3;
+                float _e25 = picks_2.threshold[min(uint(_e23), 7u)];
+                if ((_e21 > _e25)) {
+                    uint _e28 = s_3;
+                    picks_2.light[min(uint(_e28), 7u)] = li_3;
+                    uint _e31 = s_3;
+                    picks_2.w[min(uint(_e31), 7u)] = w_5;
+                    uint _e34 = s_3;
+                    float _e37 = picks_2.w_sum;
+                    const float _e38 = next_threshold(_e37, h_3);
+                    picks_2.threshold[min(uint(_e34), 7u)] = _e38;
+                }
+            }
+        }
+        uint _e43 = h_3;
+        picks_2.h = _e43;
+        return;
     } else {
-        local_16 = false;
+        return;
     }
-    bool _e16 = local_16;
+}
+
+float4 unproject_pixel(float4 c0_, float4 c1_, float4 c2_, float4 c3_, float px, float py, float width, float height, float depth_1)
+{
+    bool local_21 = (bool)0;
+    bool local_22 = (bool)0;
+
+    if ((depth_1 > 0.0)) {
+        local_21 = (depth_1 < 1.0);
+    } else {
+        local_21 = false;
+    }
+    bool _e16 = local_21;
     if (!(_e16)) {
         return float4(0.0, 0.0, 0.0, 0.0);
     }
-    float x_15 = ((((px + 0.5) / width) * 2.0) - 1.0);
+    float x_14 = ((((px + 0.5) / width) * 2.0) - 1.0);
     float y_1 = (1.0 - (((py + 0.5) / height) * 2.0));
-    float4 p_8 = ((((c0_ * x_15) + (c1_ * y_1)) + (c2_ * depth)) + c3_);
-    float3 q_1 = float3((p_8.x / p_8.w), (p_8.y / p_8.w), (p_8.z / p_8.w));
-    if ((abs(p_8.w) > 0.0)) {
-        const bool _e59 = finite3_(q_1);
-        local_17 = _e59;
+    float4 p_10 = ((((c0_ * x_14) + (c1_ * y_1)) + (c2_ * depth_1)) + c3_);
+    float3 q_2 = float3((p_10.x / p_10.w), (p_10.y / p_10.w), (p_10.z / p_10.w));
+    if ((abs(p_10.w) > 0.0)) {
+        const bool _e59 = finite3_(q_2);
+        local_22 = _e59;
     } else {
-        local_17 = false;
+        local_22 = false;
     }
-    bool _e61 = local_17;
+    bool _e61 = local_22;
     if (_e61) {
-        return float4(q_1.x, q_1.y, q_1.z, 1.0);
+        return float4(q_2.x, q_2.y, q_2.z, 1.0);
     }
     return float4(0.0, 0.0, 0.0, 0.0);
 }
@@ -1135,29 +1210,309 @@ float4 surface_at(int2 texel)
     return _e29;
 }
 
-Shaded shade_connection(Connection c_3, float3 x_12, float3 n_8, Material m_1)
-{
-    Shaded s_2 = (Shaded)0;
+uint naga_div(uint lhs, uint rhs) {
+    return lhs / (rhs == 0u ? 1u : rhs);
+}
 
-    s_2.e = c_3.e;
-    s_2.diffuse = (0.0).xxx;
-    s_2.specular = (0.0).xxx;
-    Shaded _e13 = s_2;
+WorkgroupBox ConstructWorkgroupBox(float3 arg0, float3 arg1) {
+    WorkgroupBox ret = (WorkgroupBox)0;
+    ret.lo = arg0;
+    ret.hi = arg1;
+    return ret;
+}
+
+WorkgroupBox workgroup_bounds(uint li_4, float3 lo_2, float3 hi_2)
+{
+    uint stride = 32u;
+
+    wg_lo[min(uint(li_4), 63u)] = lo_2;
+    wg_hi[min(uint(li_4), 63u)] = hi_2;
+    GroupMemoryBarrierWithGroupSync();
+    uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
+    bool loop_init_2 = true;
+    while(true) {
+        if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
+        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+        if (!loop_init_2) {
+            uint _e36 = stride;
+            stride = naga_div(_e36, 2u);
+        }
+        loop_init_2 = false;
+        uint _e9 = stride;
+        if ((_e9 > 0u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e12 = stride;
+            if ((li_4 < _e12)) {
+                float3 _e18 = wg_lo[min(uint(li_4), 63u)];
+                uint _e20 = stride;
+                float3 _e23 = wg_lo[min(uint((li_4 + _e20)), 63u)];
+                wg_lo[min(uint(li_4), 63u)] = min(_e18, _e23);
+                float3 _e29 = wg_hi[min(uint(li_4), 63u)];
+                uint _e31 = stride;
+                float3 _e34 = wg_hi[min(uint((li_4 + _e31)), 63u)];
+                wg_hi[min(uint(li_4), 63u)] = max(_e29, _e34);
+            }
+            GroupMemoryBarrierWithGroupSync();
+        }
+    }
+    if ((li_4 == 0u)) {
+        float3 _e44 = wg_lo[0];
+        float3 _e47 = wg_hi[0];
+        wg_box = ConstructWorkgroupBox(_e44, _e47);
+    }
+    GroupMemoryBarrierWithGroupSync();
+    WorkgroupBox _e50 = wg_box;
+    GroupMemoryBarrierWithGroupSync();
+    const WorkgroupBox workgroupbox = _e50;
+    return workgroupbox;
+}
+
+WorkgroupBox workgroup_box(uint li_5, float3 p_7, bool has)
+{
+    const WorkgroupBox _e9 = workgroup_bounds(li_5, (has ? p_7 : (3.4028235e38).xxx), (has ? p_7 : (-3.4028235e38).xxx));
+    const WorkgroupBox workgroupbox_1 = _e9;
+    return workgroupbox_1;
+}
+
+bool box_is_empty(WorkgroupBox b_4)
+{
+    return (b_4.lo.x > b_4.hi.x);
+}
+
+uint tile_subtree(uint s_4, TileWalk t_1, bool list, uint at, uint start_2, uint to)
+{
+    uint p_8 = (uint)0;
+    uint b_5 = (uint)0;
+    bool local_23 = (bool)0;
+    bool local_24 = (bool)0;
+    bool local_25 = (bool)0;
+
+    const uint _e8 = bsh_subtree(BSH, s_4, BSH_TILE_DEPTH);
+    if ((_e8 == BSH_NONE)) {
+        return 0u;
+    }
+    uint end_1 = asuint(bsh_nodes.Load(20+_e8*32));
+    p_8 = at;
+    const uint _e21 = bsh_next_leaf_box(BSH, _e8, end_1, t_1.lo, t_1.hi, t_1.w);
+    b_5 = _e21;
+    uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
+    bool loop_init_3 = true;
+    while(true) {
+        if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
+        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+        if (!loop_init_3) {
+            uint _e53 = b_5;
+            uint _e56 = asuint(bsh_nodes.Load(20+_e53*32));
+            const uint _e60 = bsh_next_leaf_box(BSH, _e56, end_1, t_1.lo, t_1.hi, t_1.w);
+            b_5 = _e60;
+        }
+        loop_init_3 = false;
+        uint _e23 = b_5;
+        if ((_e23 != end_1)) {
+            if (!(!(list))) {
+                uint _e31 = p_8;
+                local_24 = (_e31 < to);
+            } else {
+                local_24 = true;
+            }
+            bool _e34 = local_24;
+            local_23 = _e34;
+        } else {
+            local_23 = false;
+        }
+        bool _e36 = local_23;
+        if (_e36) {
+        } else {
+            break;
+        }
+        {
+            if (list) {
+                uint _e39 = p_8;
+                local_25 = (_e39 >= start_2);
+            } else {
+                local_25 = false;
+            }
+            bool _e42 = local_25;
+            if (_e42) {
+                uint _e44 = p_8;
+                uint _e47 = b_5;
+                tile_list[min(uint((_e44 - start_2)), 1023u)] = _e47;
+            }
+            uint _e48 = p_8;
+            p_8 = (_e48 + 1u);
+        }
+    }
+    uint _e61 = p_8;
+    return (_e61 - at);
+}
+
+TileWalk ConstructTileWalk(float3 arg0, float3 arg1, float arg2, uint arg3) {
+    TileWalk ret = (TileWalk)0;
+    ret.lo = arg0;
+    ret.hi = arg1;
+    ret.w = arg2;
+    ret.total = arg3;
+    return ret;
+}
+
+TileWalk tile_walk_begin(uint li_6, float3 x_10, float w_6, bool has_1)
+{
+    TileWalk t_2 = (TileWalk)0;
+    uint s_5 = (uint)0;
+    uint sum_1 = 0u;
+    uint s_6 = 0u;
+
+    uint _e8; InterlockedMax(tile_scale, (has_1 ? asuint(w_6) : 0u), _e8);
+    const WorkgroupBox _e9 = workgroup_box(li_6, x_10, has_1);
+    GroupMemoryBarrierWithGroupSync();
+    uint _e13 = tile_scale;
+    GroupMemoryBarrierWithGroupSync();
+    t_2 = ConstructTileWalk(_e9.lo, _e9.hi, asfloat(_e13), 0u);
+    const bool _e18 = box_is_empty(_e9);
+    if (_e18) {
+        TileWalk _e19 = t_2;
+        const TileWalk tilewalk = _e19;
+        return tilewalk;
+    }
+    s_5 = li_6;
+    uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
+    bool loop_init_4 = true;
+    while(true) {
+        if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
+        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+        if (!loop_init_4) {
+            uint _e34 = s_5;
+            s_5 = (_e34 + TILE_THREADS);
+        }
+        loop_init_4 = false;
+        uint _e21 = s_5;
+        if ((_e21 < BSH_TILE_SUBTREES)) {
+        } else {
+            break;
+        }
+        {
+            uint _e25 = s_5;
+            uint _e27 = s_5;
+            TileWalk _e28 = t_2;
+            const uint _e33 = tile_subtree(_e27, _e28, false, 0u, 0u, 0u);
+            subtree_at[min(uint(_e25), 255u)] = _e33;
+        }
+    }
+    GroupMemoryBarrierWithGroupSync();
+    if ((li_6 == 0u)) {
+        uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
+        bool loop_init_5 = true;
+        while(true) {
+            if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
+            loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
+            if (!loop_init_5) {
+                uint _e57 = s_6;
+                s_6 = (_e57 + 1u);
+            }
+            loop_init_5 = false;
+            uint _e43 = s_6;
+            if ((_e43 < BSH_TILE_SUBTREES)) {
+            } else {
+                break;
+            }
+            {
+                uint _e47 = s_6;
+                uint c_8 = subtree_at[min(uint(_e47), 255u)];
+                uint _e51 = s_6;
+                uint _e53 = sum_1;
+                subtree_at[min(uint(_e51), 255u)] = _e53;
+                uint _e54 = sum_1;
+                sum_1 = (_e54 + c_8);
+            }
+        }
+        uint _e60 = sum_1;
+        tile_total = _e60;
+    }
+    GroupMemoryBarrierWithGroupSync();
+    uint _e63 = tile_total;
+    GroupMemoryBarrierWithGroupSync();
+    t_2.total = _e63;
+    TileWalk _e64 = t_2;
+    const TileWalk tilewalk_1 = _e64;
+    return tilewalk_1;
+}
+
+uint tile_walk_fill(uint li_7, TileWalk t_3, uint start_3)
+{
+    uint s_7 = (uint)0;
+    uint past = (uint)0;
+    bool local_26 = (bool)0;
+
+    uint to_1 = min(t_3.total, (start_3 + TILE_LIST));
+    s_7 = li_7;
+    uint2 loop_bound_9 = uint2(4294967295u, 4294967295u);
+    bool loop_init_6 = true;
+    while(true) {
+        if (all(loop_bound_9 == uint2(0u, 0u))) { break; }
+        loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
+        if (!loop_init_6) {
+            uint _e38 = s_7;
+            s_7 = (_e38 + TILE_THREADS);
+        }
+        loop_init_6 = false;
+        uint _e8 = s_7;
+        if ((_e8 < BSH_TILE_SUBTREES)) {
+        } else {
+            break;
+        }
+        {
+            uint _e12 = s_7;
+            uint at_1 = subtree_at[min(uint(_e12), 255u)];
+            past = t_3.total;
+            uint _e17 = s_7;
+            if (((_e17 + 1u) < BSH_TILE_SUBTREES)) {
+                uint _e23 = s_7;
+                uint _e27 = subtree_at[min(uint((_e23 + 1u)), 255u)];
+                past = _e27;
+            }
+            if ((at_1 < to_1)) {
+                uint _e31 = past;
+                local_26 = (_e31 > start_3);
+            } else {
+                local_26 = false;
+            }
+            bool _e34 = local_26;
+            if (_e34) {
+                uint _e35 = s_7;
+                const uint _e37 = tile_subtree(_e35, t_3, true, at_1, start_3, to_1);
+            }
+        }
+    }
+    GroupMemoryBarrierWithGroupSync();
+    return (to_1 - start_3);
+}
+
+Shaded shade_connection(Connection c_4, float3 x_11, float3 n_8, Material m_1)
+{
+    Shaded s_8 = (Shaded)0;
+
+    s_8.e = c_4.e;
+    s_8.diffuse = (0.0).xxx;
+    s_8.specular = (0.0).xxx;
+    Shaded _e13 = s_8;
     const Shaded shaded = _e13;
     return shaded;
 }
 
-Shaded shade_pick_traced(uint li_3, float3 x_13, float3 n_9, float3 r_11, float4 rl_8, Material m_2, float w_3, float u1_3, float u2_3, float eps_2, bool trace_3)
+Shaded shade_pick_traced(uint li_8, float3 x_12, float3 n_9, float3 r_10, float4 rl_6, Material m_2, float w_7, float u1_3, float u2_3, float eps_2, bool trace_3)
 {
-    const Connection _e12 = connect_traced(li_3, x_13, n_9, n_9, 1.0, w_3, u1_3, u2_3, eps_2, trace_3);
-    const Shaded _e13 = shade_connection(_e12, x_13, n_9, m_2);
+    const Connection _e12 = connect_traced(li_8, x_12, n_9, n_9, 1.0, w_7, u1_3, u2_3, eps_2, trace_3);
+    const Shaded _e13 = shade_connection(_e12, x_12, n_9, m_2);
     const Shaded shaded_1 = _e13;
     return shaded_1;
 }
 
-Shaded shade_pick(uint li_4, float3 x_14, float3 n_10, float3 r_12, float4 rl_9, Material m_3, float w_4, float u1_4, float u2_4, float eps_3)
+Shaded shade_pick(uint li_9, float3 x_13, float3 n_10, float3 r_11, float4 rl_7, Material m_3, float w_8, float u1_4, float u2_4, float eps_3)
 {
-    const Shaded _e11 = shade_pick_traced(li_4, x_14, n_10, r_12, rl_9, m_3, w_4, u1_4, u2_4, eps_3, true);
+    const Shaded _e11 = shade_pick_traced(li_9, x_13, n_10, r_11, rl_7, m_3, w_8, u1_4, u2_4, eps_3, true);
     const Shaded shaded_2 = _e11;
     return shaded_2;
 }
@@ -1170,9 +1525,9 @@ Shaded ConstructShaded(float3 arg0, float3 arg1, float3 arg2) {
     return ret;
 }
 
-Shaded add(Shaded a_6, Shaded b_5)
+Shaded add(Shaded a_6, Shaded b_6)
 {
-    const Shaded shaded_3 = ConstructShaded((a_6.e + b_5.e), (a_6.diffuse + b_5.diffuse), (a_6.specular + b_5.specular));
+    const Shaded shaded_3 = ConstructShaded((a_6.e + b_6.e), (a_6.diffuse + b_6.diffuse), (a_6.specular + b_6.specular));
     return shaded_3;
 }
 
@@ -1181,20 +1536,20 @@ ret_first_holders first_holders(uint2 keys_1[8], bool held_1[8])
 {
     uint first[8] = (uint[8])0;
     uint k_3 = 0u;
-    uint j_1 = (uint)0;
-    bool local_18 = (bool)0;
-    bool local_19 = (bool)0;
+    uint j_2 = (uint)0;
+    bool local_27 = (bool)0;
+    bool local_28 = (bool)0;
 
-    uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
-    bool loop_init_3 = true;
+    uint2 loop_bound_10 = uint2(4294967295u, 4294967295u);
+    bool loop_init_7 = true;
     while(true) {
-        if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
-        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
-        if (!loop_init_3) {
+        if (all(loop_bound_10 == uint2(0u, 0u))) { break; }
+        loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
+        if (!loop_init_7) {
             uint _e45 = k_3;
             k_3 = (_e45 + 1u);
         }
-        loop_init_3 = false;
+        loop_init_7 = false;
         uint _e5 = k_3;
         if ((_e5 < K)) {
         } else {
@@ -1205,43 +1560,43 @@ ret_first_holders first_holders(uint2 keys_1[8], bool held_1[8])
             uint _e11 = k_3;
             uint _e12 = k_3;
             first[min(uint(_e8), 7u)] = (held_1[min(uint(_e12), 7u)] ? _e11 : K);
-            j_1 = 0u;
-            uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
-            bool loop_init_4 = true;
+            j_2 = 0u;
+            uint2 loop_bound_11 = uint2(4294967295u, 4294967295u);
+            bool loop_init_8 = true;
             while(true) {
-                if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
-                loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-                if (!loop_init_4) {
-                    uint _e42 = j_1;
-                    j_1 = (_e42 + 1u);
+                if (all(loop_bound_11 == uint2(0u, 0u))) { break; }
+                loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
+                if (!loop_init_8) {
+                    uint _e42 = j_2;
+                    j_2 = (_e42 + 1u);
                 }
-                loop_init_4 = false;
-                uint _e17 = j_1;
+                loop_init_8 = false;
+                uint _e17 = j_2;
                 uint _e18 = k_3;
                 if ((_e17 < _e18)) {
                     uint _e22 = k_3;
-                    local_18 = held_1[min(uint(_e22), 7u)];
+                    local_27 = held_1[min(uint(_e22), 7u)];
                 } else {
-                    local_18 = false;
+                    local_27 = false;
                 }
-                bool _e25 = local_18;
+                bool _e25 = local_27;
                 if (_e25) {
                 } else {
                     break;
                 }
                 {
-                    uint _e26 = j_1;
+                    uint _e26 = j_2;
                     if (held_1[min(uint(_e26), 7u)]) {
-                        uint _e30 = j_1;
+                        uint _e30 = j_2;
                         uint _e32 = k_3;
-                        local_19 = all((keys_1[min(uint(_e30), 7u)] == keys_1[min(uint(_e32), 7u)]));
+                        local_28 = all((keys_1[min(uint(_e30), 7u)] == keys_1[min(uint(_e32), 7u)]));
                     } else {
-                        local_19 = false;
+                        local_28 = false;
                     }
-                    bool _e37 = local_19;
+                    bool _e37 = local_28;
                     if (_e37) {
                         uint _e38 = k_3;
-                        uint _e40 = j_1;
+                        uint _e40 = j_2;
                         first[min(uint(_e38), 7u)] = _e40;
                         break;
                     }
@@ -1254,166 +1609,280 @@ ret_first_holders first_holders(uint2 keys_1[8], bool held_1[8])
 }
 
 [numthreads(8, 8, 1)]
-void main(uint3 gid : SV_DispatchThreadID)
+void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
 {
+    if (lid == 0) {
+        wg_lo = (float3[64])0;
+        wg_hi = (float3[64])0;
+        wg_box = (WorkgroupBox)0;
+        tile_list = (uint[1024])0;
+        subtree_at = (uint[256])0;
+        tile_scale = (uint)0;
+        tile_total = (uint)0;
+    }
+    GroupMemoryBarrierWithGroupSync();
     bool local = (bool)0;
+    float4 s = (0.0).xxxx;
+    float3 nn = (0.0).xxx;
     bool local_1 = (bool)0;
+    bool local_2 = (bool)0;
+    bool local_3 = (bool)0;
+    float3 n = float3(0.0, 0.0, 1.0);
     Material m = (Material)0;
     float4 lobe = float4(1.0, 0.0, 1.0, 1.0);
     float3 r = (float3)0;
     uint h = (uint)0;
     Shaded t = ConstructShaded((0.0).xxx, (0.0).xxx, (0.0).xxx);
+    WeightedPicks picks = (WeightedPicks)0;
+    bool local_4 = (bool)0;
+    uint start = 0u;
+    uint j = (uint)0;
+    bool local_5 = (bool)0;
     uint2 keys[8] = (uint2[8])0;
     bool held[8] = (bool[8])0;
     uint k = 0u;
     uint k_1 = 0u;
     uint copies = (uint)0;
-    uint j = (uint)0;
+    uint j_1 = (uint)0;
 
-    uint _e4 = view.width;
-    if (!((gid.x >= _e4))) {
+    uint _e5 = view.width;
+    if ((gid.x < _e5)) {
         uint _e12 = view.height;
-        local = (gid.y >= _e12);
+        local = (gid.y < _e12);
     } else {
-        local = true;
+        local = false;
     }
-    bool _e15 = local;
-    if (_e15) {
-        return;
-    }
+    bool inside = local;
     int2 texel_1 = int2(int(gid.x), int(gid.y));
-    const float4 _e21 = surface_at(texel_1);
-    float4 _e24 = normal_tex.Load(int3(texel_1, int(0)));
-    float3 nn = _e24.xyz;
-    float len2_ = dot(nn, nn);
-    if (!((_e21.w <= 0.0))) {
-        local_1 = !((len2_ > 0.0));
-    } else {
-        local_1 = true;
+    if (inside) {
+        const float4 _e27 = surface_at(texel_1);
+        s = _e27;
+        float4 _e30 = normal_tex.Load(int3(texel_1, int(0)));
+        nn = _e30.xyz;
     }
-    bool _e37 = local_1;
-    if (_e37) {
-        out_tex[texel_1] = (0.0).xxxx;
+    float3 _e32 = nn;
+    float3 _e33 = nn;
+    float len2_ = dot(_e32, _e33);
+    float4 _e35 = s;
+    float3 x_15 = _e35.xyz;
+    if (inside) {
+        float _e40 = s.w;
+        local_1 = (_e40 > 0.0);
+    } else {
+        local_1 = false;
+    }
+    bool _e44 = local_1;
+    if (_e44) {
+        local_2 = (len2_ > 0.0);
+    } else {
+        local_2 = false;
+    }
+    bool _e50 = local_2;
+    if (_e50) {
+        local_3 = all((abs(x_15) <= (3.4028235e38).xxx));
+    } else {
+        local_3 = false;
+    }
+    bool has_2 = local_3;
+    if (has_2) {
+        float3 _e65 = nn;
+        n = (_e65 / (sqrt(len2_)).xxx);
+    }
+    float3 _e76 = n;
+    r = _e76;
+    float4 _e78 = lobe;
+    const float4 _e79 = range_lobe(_e78);
+    float _e82 = view.shadow_offset;
+    float3 _e85 = view.eye;
+    float eps_4 = (_e82 * length((_e85 - x_15)));
+    uint _e91 = view.seed;
+    uint _e95 = view.width;
+    uint _e101 = view.frame;
+    const uint _e102 = point_stream(_e91, ((gid.y * _e95) + gid.x), _e101);
+    const uint _e103 = pick_stream(_e102);
+    h = _e103;
+    const WeightedPicks _e113 = weighted_picks(_e102);
+    picks = _e113;
+    if (has_2) {
+        local_4 = (_e79.w >= 0.0);
+    } else {
+        local_4 = false;
+    }
+    bool _e122 = local_4;
+    const TileWalk _e123 = tile_walk_begin(lid, x_15, _e79.w, _e122);
+    uint2 loop_bound_12 = uint2(4294967295u, 4294967295u);
+    bool loop_init_9 = true;
+    while(true) {
+        if (all(loop_bound_12 == uint2(0u, 0u))) { break; }
+        loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
+        if (!loop_init_9) {
+            uint _e162 = start;
+            start = (_e162 + TILE_LIST);
+        }
+        loop_init_9 = false;
+        uint _e126 = start;
+        if ((_e126 < _e123.total)) {
+        } else {
+            break;
+        }
+        {
+            uint _e129 = start;
+            const uint _e130 = tile_walk_fill(lid, _e123, _e129);
+            j = 0u;
+            uint2 loop_bound_13 = uint2(4294967295u, 4294967295u);
+            bool loop_init_10 = true;
+            while(true) {
+                if (all(loop_bound_13 == uint2(0u, 0u))) { break; }
+                loop_bound_13 -= uint2(loop_bound_13.y == 0u, 1u);
+                if (!loop_init_10) {
+                    uint _e160 = j;
+                    j = (_e160 + 1u);
+                }
+                loop_init_10 = false;
+                uint _e133 = j;
+                if ((_e133 < _e130)) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e136 = j;
+                    uint b_7 = tile_list[min(uint(_e136), 1023u)];
+                    if (!(!(has_2))) {
+                        BshNode _e145 = ConstructBshNode(asfloat(bsh_nodes.Load3(b_7*32+0)), asfloat(bsh_nodes.Load(b_7*32+12)), asuint(bsh_nodes.Load(b_7*32+16)), asuint(bsh_nodes.Load(b_7*32+20)), asuint(bsh_nodes.Load(b_7*32+24)), asfloat(bsh_nodes.Load(b_7*32+28)));
+                        float3 _e146 = r;
+                        const bool _e147 = bsh_reaches(_e145, x_15, _e146, _e79);
+                        local_5 = !(_e147);
+                    } else {
+                        local_5 = true;
+                    }
+                    bool _e150 = local_5;
+                    if (_e150) {
+                        continue;
+                    }
+                    uint li_10 = asuint(bsh_nodes.Load(24+b_7*32));
+                    float3 _e155 = n;
+                    float3 _e156 = r;
+                    float4 _e157 = lobe;
+                    const float _e158 = light_weight(li_10, x_15, _e155, _e156, _e157, _e79);
+                    weighted_offer(picks, li_10, _e158);
+                }
+            }
+            GroupMemoryBarrierWithGroupSync();
+        }
+    }
+    if (!(has_2)) {
+        if (inside) {
+            out_tex[texel_1] = (0.0).xxxx;
+        }
         return;
     }
-    float3 x_16 = _e21.xyz;
-    float3 n_12 = (nn / (sqrt(len2_)).xxx);
-    r = n_12;
-    float4 _e53 = lobe;
-    const float4 _e54 = range_lobe(_e53);
-    float _e57 = view.shadow_offset;
-    float3 _e60 = view.eye;
-    float eps_4 = (_e57 * length((_e60 - x_16)));
-    uint _e66 = view.seed;
-    uint _e70 = view.width;
-    uint _e76 = view.frame;
-    const uint _e77 = point_stream(_e66, ((gid.y * _e70) + gid.x), _e76);
-    const uint _e78 = pick_stream(_e77);
-    h = _e78;
-    float3 _e88 = r;
-    float4 _e89 = lobe;
-    const WeightedPicks _e90 = bsh_weighted_collect(x_16, n_12, _e88, _e89, _e54, _e77);
-    if ((_e90.w_sum > 0.0)) {
-        uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
-        bool loop_init_5 = true;
+    float _e170 = picks.w_sum;
+    if ((_e170 > 0.0)) {
+        uint2 loop_bound_14 = uint2(4294967295u, 4294967295u);
+        bool loop_init_11 = true;
         while(true) {
-            if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
-            loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
-            if (!loop_init_5) {
-                uint _e125 = k;
-                k = (_e125 + 1u);
+            if (all(loop_bound_14 == uint2(0u, 0u))) { break; }
+            loop_bound_14 -= uint2(loop_bound_14.y == 0u, 1u);
+            if (!loop_init_11) {
+                uint _e206 = k;
+                k = (_e206 + 1u);
             }
-            loop_init_5 = false;
-            uint _e98 = k;
-            if ((_e98 < K)) {
+            loop_init_11 = false;
+            uint _e177 = k;
+            if ((_e177 < K)) {
             } else {
                 break;
             }
             {
-                uint _e102 = k;
-                uint _e107 = k;
-                uint _e111 = asuint(lights.Load(12+_e90.light[min(uint(_e107), 7u)]*64));
-                uint own = ((_e111 == LIGHT_TRIANGLE) ? (_e102 + 1u) : 0u);
-                uint _e115 = k;
-                uint _e118 = k;
-                keys[min(uint(_e115), 7u)] = uint2(_e90.light[min(uint(_e118), 7u)], own);
-                uint _e121 = k;
-                held[min(uint(_e121), 7u)] = true;
+                uint _e181 = k;
+                uint _e186 = k;
+                uint _e188 = picks.light[min(uint(_e186), 7u)];
+                uint _e191 = asuint(lights.Load(12+_e188*64));
+                uint own = ((_e191 == LIGHT_TRIANGLE) ? (_e181 + 1u) : 0u);
+                uint _e195 = k;
+                uint _e198 = k;
+                uint _e200 = picks.light[min(uint(_e198), 7u)];
+                keys[min(uint(_e195), 7u)] = uint2(_e200, own);
+                uint _e202 = k;
+                held[min(uint(_e202), 7u)] = true;
             }
         }
-        uint2 _e127[8] = keys;
-        bool _e128[8] = held;
-        const uint _e129[8] = first_holders(_e127, _e128);
-        uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
-        bool loop_init_6 = true;
+        uint2 _e208[8] = keys;
+        bool _e209[8] = held;
+        const uint _e210[8] = first_holders(_e208, _e209);
+        uint2 loop_bound_15 = uint2(4294967295u, 4294967295u);
+        bool loop_init_12 = true;
         while(true) {
-            if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
-            loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
-            if (!loop_init_6) {
-                uint _e183 = k_1;
-                k_1 = (_e183 + 1u);
+            if (all(loop_bound_15 == uint2(0u, 0u))) { break; }
+            loop_bound_15 -= uint2(loop_bound_15.y == 0u, 1u);
+            if (!loop_init_12) {
+                uint _e268 = k_1;
+                k_1 = (_e268 + 1u);
             }
-            loop_init_6 = false;
-            uint _e132 = k_1;
-            if ((_e132 < K)) {
+            loop_init_12 = false;
+            uint _e213 = k_1;
+            if ((_e213 < K)) {
             } else {
                 break;
             }
             {
-                uint _e135 = h;
-                const uint _e136 = pcg_hash(_e135);
-                h = _e136;
-                uint _e137 = h;
-                const float _e138 = xi_from_bits(_e137);
-                uint _e139 = h;
-                const uint _e140 = pcg_hash(_e139);
-                h = _e140;
-                uint _e141 = h;
-                const float _e142 = xi_from_bits(_e141);
-                uint _e144 = k_1;
-                uint li_6 = _e90.light[min(uint(_e144), 7u)];
+                uint _e216 = h;
+                const uint _e217 = pcg_hash(_e216);
+                h = _e217;
+                uint _e218 = h;
+                const float _e219 = xi_from_bits(_e218);
+                uint _e220 = h;
+                const uint _e221 = pcg_hash(_e220);
+                h = _e221;
+                uint _e222 = h;
+                const float _e223 = xi_from_bits(_e222);
+                uint _e225 = k_1;
+                uint li_11 = picks.light[min(uint(_e225), 7u)];
                 copies = 0u;
-                uint _e148 = k_1;
-                j = _e148;
-                uint2 loop_bound_9 = uint2(4294967295u, 4294967295u);
-                bool loop_init_7 = true;
+                uint _e230 = k_1;
+                j_1 = _e230;
+                uint2 loop_bound_16 = uint2(4294967295u, 4294967295u);
+                bool loop_init_13 = true;
                 while(true) {
-                    if (all(loop_bound_9 == uint2(0u, 0u))) { break; }
-                    loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
-                    if (!loop_init_7) {
-                        uint _e163 = j;
-                        j = (_e163 + 1u);
+                    if (all(loop_bound_16 == uint2(0u, 0u))) { break; }
+                    loop_bound_16 -= uint2(loop_bound_16.y == 0u, 1u);
+                    if (!loop_init_13) {
+                        uint _e245 = j_1;
+                        j_1 = (_e245 + 1u);
                     }
-                    loop_init_7 = false;
-                    uint _e150 = j;
-                    if ((_e150 < K)) {
+                    loop_init_13 = false;
+                    uint _e232 = j_1;
+                    if ((_e232 < K)) {
                     } else {
                         break;
                     }
                     {
-                        uint _e153 = copies;
-                        uint _e156 = j;
-                        uint _e158 = k_1;
-                        copies = (_e153 + ((_e129[min(uint(_e156), 7u)] == _e158) ? 1u : 0u));
+                        uint _e235 = copies;
+                        uint _e238 = j_1;
+                        uint _e240 = k_1;
+                        copies = (_e235 + ((_e210[min(uint(_e238), 7u)] == _e240) ? 1u : 0u));
                     }
                 }
-                uint _e165 = copies;
-                if ((_e165 > 0u)) {
-                    Shaded _e168 = t;
-                    float3 _e169 = r;
-                    Material _e170 = m;
-                    uint _e173 = k_1;
-                    const float _e176 = weighted_pick_weight(_e90.w_sum, _e90.w[min(uint(_e173), 7u)], K);
-                    uint _e177 = copies;
-                    const Shaded _e180 = shade_pick(li_6, x_16, n_12, _e169, _e54, _e170, (_e176 * float(_e177)), _e138, _e142, eps_4);
-                    const Shaded _e181 = add(_e168, _e180);
-                    t = _e181;
+                uint _e247 = copies;
+                if ((_e247 > 0u)) {
+                    Shaded _e250 = t;
+                    float3 _e251 = n;
+                    float3 _e252 = r;
+                    Material _e253 = m;
+                    float _e255 = picks.w_sum;
+                    uint _e257 = k_1;
+                    float _e259 = picks.w[min(uint(_e257), 7u)];
+                    const float _e261 = weighted_pick_weight(_e255, _e259, K);
+                    uint _e262 = copies;
+                    const Shaded _e265 = shade_pick(li_11, x_15, _e251, _e252, _e79, _e253, (_e261 * float(_e262)), _e219, _e223, eps_4);
+                    const Shaded _e266 = add(_e250, _e265);
+                    t = _e266;
                 }
             }
         }
     }
-    uint count = _e90.n;
-    float3 _e188 = t.e;
-    out_tex[texel_1] = float4(_e188, float(count));
+    uint count = picks.n;
+    float3 _e274 = t.e;
+    out_tex[texel_1] = float4(_e274, float(count));
     return;
 }

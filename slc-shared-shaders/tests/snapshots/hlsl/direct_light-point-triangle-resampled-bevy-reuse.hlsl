@@ -107,6 +107,24 @@ struct Connection {
     float cos_x;
 };
 
+struct WorkgroupBox {
+    float3 lo;
+    int _pad1_0;
+    float3 hi;
+    int _end_pad_0;
+};
+
+struct TileWalk {
+    float3 lo;
+    int _pad1_0;
+    float3 hi;
+    float w;
+    uint total;
+    int _end_pad_0;
+    int _end_pad_1;
+    int _end_pad_2;
+};
+
 struct Shaded {
     float3 e;
     int _pad1_0;
@@ -205,6 +223,11 @@ static const float TEMPORAL_CHANGE_HIGH = 8.0;
 static const float TEMPORAL_MIN_WEIGHT = 0.01;
 static const uint K = 8u;
 static const uint BSH = 0u;
+static const uint BSH_TILE_DEPTH = 8u;
+static const uint BSH_TILE_SUBTREES = 256u;
+static const uint TILE_THREADS = 64u;
+static const uint BOX_THREADS = 64u;
+static const uint TILE_LIST = 1024u;
 static const uint DOMAINS = 3u;
 
 ByteAddressBuffer geo_nodes : register(t6, space1);
@@ -224,20 +247,27 @@ cbuffer reuse : register(b7) { ReuseParams reuse; }
 ByteAddressBuffer lights_prev : register(t8, space1);
 ByteAddressBuffer reuse_prev : register(t9, space1);
 RWByteAddressBuffer reuse_next : register(u10, space1);
+groupshared float3 wg_lo[64];
+groupshared float3 wg_hi[64];
+groupshared WorkgroupBox wg_box;
+groupshared uint tile_list[1024];
+groupshared uint subtree_at[256];
+groupshared uint tile_scale;
+groupshared uint tile_total;
 
 float to_f32_(uint u)
 {
     return float(u);
 }
 
-uint mul_lo_u32_(uint a, uint b_1)
+uint mul_lo_u32_(uint a, uint b)
 {
-    return (a * b_1);
+    return (a * b);
 }
 
-uint add_wrap_u32_(uint a_1, uint b_2)
+uint add_wrap_u32_(uint a_1, uint b_1)
 {
-    return (a_1 + b_2);
+    return (a_1 + b_1);
 }
 
 float f32_from_bits(uint u_1)
@@ -299,6 +329,13 @@ bool sphere_contains_point(float3 c, float r_1, float3 x_1)
     return (dot(v_5, v_5) <= (r_1 * r_1));
 }
 
+bool sphere_overlaps_aabb(float3 c_1, float r_2, float3 bmin, float3 bmax)
+{
+    float3 q_5 = clamp(c_1, bmin, bmax);
+    float3 v_6 = (q_5 - c_1);
+    return (dot(v_6, v_6) <= (r_2 * r_2));
+}
+
 float inverse_square(float d2_2)
 {
     return (1.0 / max(d2_2, MIN_D2_));
@@ -311,48 +348,48 @@ float connection_factor(float cos_x, float d2_3, float rt2_1, float w_1)
     return (((cos_x * _e4) * _e6) * w_1);
 }
 
-float connection_cosine(float3 x_2, float3 y, float3 n, float3 ng, float r2_1)
+float connection_cosine(float3 x_2, float3 y, float3 n_1, float3 ng, float r2_1)
 {
-    bool local_5 = (bool)0;
-    bool local_6 = (bool)0;
+    bool local_9 = (bool)0;
+    bool local_10 = (bool)0;
 
-    float3 v_6 = (x_2 - y);
-    float d2_6 = dot(v_6, v_6);
+    float3 v_7 = (x_2 - y);
+    float d2_6 = dot(v_7, v_7);
     const bool _e7 = slc_keep(r2_1, d2_6);
     if (!(!(_e7))) {
-        local_5 = !((d2_6 > 0.0));
+        local_9 = !((d2_6 > 0.0));
     } else {
-        local_5 = true;
+        local_9 = true;
     }
-    bool _e16 = local_5;
+    bool _e16 = local_9;
     if (_e16) {
         return 0.0;
     }
-    float3 w_8 = (v_6 / (sqrt(d2_6)).xxx);
-    float cos_x_1 = -(dot(n, w_8));
+    float3 w_11 = (v_7 / (sqrt(d2_6)).xxx);
+    float cos_x_1 = -(dot(n_1, w_11));
     if (!((cos_x_1 <= 0.0))) {
-        local_6 = (dot(ng, w_8) >= 0.0);
+        local_10 = (dot(ng, w_11) >= 0.0);
     } else {
-        local_6 = true;
+        local_10 = true;
     }
-    bool _e32 = local_6;
+    bool _e32 = local_10;
     if (_e32) {
         return 0.0;
     }
     return cos_x_1;
 }
 
-float triangle_lobe(float3 n_1, float area, float3 w_2)
+float triangle_lobe(float3 n_2, float area, float3 w_2)
 {
-    return (area * max(dot(n_1, w_2), 0.0));
+    return (area * max(dot(n_2, w_2), 0.0));
 }
 
-float3 triangle_sample(float3 a_2, float3 b_3, float3 c_1, float u1_, float u2_)
+float3 triangle_sample(float3 a_2, float3 b_2, float3 c_2, float u1_, float u2_)
 {
     float su = sqrt(u1_);
     float b0_ = (1.0 - su);
     float b1_ = (u2_ * su);
-    return (((a_2 * b0_) + (b_3 * b1_)) + (c_1 * ((1.0 - b0_) - b1_)));
+    return (((a_2 * b0_) + (b_2 * b1_)) + (c_2 * ((1.0 - b0_) - b1_)));
 }
 
 float bsh_scaled_radius(BshNode node, float scale)
@@ -385,29 +422,29 @@ float weighted_threshold(float w_sum_1, float u_3)
     return (w_sum_1 / (1.0 - u_3));
 }
 
-float resample_target(float3 c_2)
+float resample_target(float3 c_3)
 {
-    return (((c_2.x + c_2.y) + c_2.z) * 0.33333334);
+    return (((c_3.x + c_3.y) + c_3.z) * 0.33333334);
 }
 
 uint naga_mod(uint lhs, uint rhs) {
     return lhs % (rhs == 0u ? 1u : rhs);
 }
 
-float slot_target(float3 c_3, uint slot, uint k_2)
+float slot_target(float3 c_4, uint slot, uint k_2)
 {
     if ((k_2 < 3u)) {
-        const float _e5 = resample_target(c_3);
+        const float _e5 = resample_target(c_4);
         return _e5;
     }
-    uint j_5 = naga_mod(slot, 3u);
-    if ((j_5 == 0u)) {
-        return c_3.x;
+    uint j_6 = naga_mod(slot, 3u);
+    if ((j_6 == 0u)) {
+        return c_4.x;
     }
-    if ((j_5 == 1u)) {
-        return c_3.y;
+    if ((j_6 == 1u)) {
+        return c_4.y;
     }
-    return c_3.z;
+    return c_4.z;
 }
 
 uint naga_div(uint lhs, uint rhs) {
@@ -418,19 +455,19 @@ float3 slot_share(uint slot_1, uint k_3)
 {
     if ((k_3 < 3u)) {
         const float _e4 = to_f32_(k_3);
-        float w_9 = (1.0 / _e4);
-        return float3(w_9, w_9, w_9);
+        float w_12 = (1.0 / _e4);
+        return float3(w_12, w_12, w_12);
     }
-    uint j_6 = naga_mod(slot_1, 3u);
-    const float _e15 = to_f32_(naga_div(((k_3 + 2u) - j_6), 3u));
-    float w_10 = (1.0 / _e15);
-    if ((j_6 == 0u)) {
-        return float3(w_10, 0.0, 0.0);
+    uint j_7 = naga_mod(slot_1, 3u);
+    const float _e15 = to_f32_(naga_div(((k_3 + 2u) - j_7), 3u));
+    float w_13 = (1.0 / _e15);
+    if ((j_7 == 0u)) {
+        return float3(w_13, 0.0, 0.0);
     }
-    if ((j_6 == 1u)) {
-        return float3(0.0, w_10, 0.0);
+    if ((j_7 == 1u)) {
+        return float3(0.0, w_13, 0.0);
     }
-    return float3(0.0, 0.0, w_10);
+    return float3(0.0, 0.0, w_13);
 }
 
 float grid_coordinate(uint bits_1)
@@ -444,10 +481,10 @@ uint grid_cells(uint h1_, uint h2_)
     return ((h1_ & 4294901760u) | (h2_ >> 16u));
 }
 
-float2 disk_offset(float r_2, float u1_1, float u2_1)
+float2 disk_offset(float r_3, float u1_1, float u2_1)
 {
     float a_9 = (TWO_PI * u2_1);
-    return (float2(cos(a_9), sin(a_9)) * (r_2 * sqrt(u1_1)));
+    return (float2(cos(a_9), sin(a_9)) * (r_3 * sqrt(u1_1)));
 }
 
 float gris_weight(float own, float all_, float p_hat, float w_4)
@@ -472,8 +509,8 @@ float ggx_d(float cos_h, float sin2_h, float alpha)
         return 0.0;
     }
     float a2_ = (alpha * alpha);
-    float t_1 = (((cos_h * cos_h) * a2_) + sin2_h);
-    return ((a2_ * INV_PI) / (t_1 * t_1));
+    float t_4 = (((cos_h * cos_h) * a2_) + sin2_h);
+    return ((a2_ * INV_PI) / (t_4 * t_4));
 }
 
 float smith_root(float cos_, float alpha_1)
@@ -484,14 +521,14 @@ float smith_root(float cos_, float alpha_1)
 
 float smith_visibility(float n_l, float n_v, float alpha_2)
 {
-    bool local_7 = (bool)0;
+    bool local_11 = (bool)0;
 
     if (!((n_l <= 0.0))) {
-        local_7 = (n_v <= 0.0);
+        local_11 = (n_v <= 0.0);
     } else {
-        local_7 = true;
+        local_11 = true;
     }
-    bool _e11 = local_7;
+    bool _e11 = local_11;
     if (_e11) {
         return 0.0;
     }
@@ -502,9 +539,9 @@ float smith_visibility(float n_l, float n_v, float alpha_2)
 
 float3 fresnel_schlick(float3 f0_, float f90_, float v_h)
 {
-    float c_10 = saturate((1.0 - v_h));
-    float c2_1 = (c_10 * c_10);
-    return (f0_ + ((float3(f90_, f90_, f90_) - f0_) * ((c2_1 * c2_1) * c_10)));
+    float c_11 = saturate((1.0 - v_h));
+    float c2_1 = (c_11 * c_11);
+    return (f0_ + ((float3(f90_, f90_, f90_) - f0_) * ((c2_1 * c2_1) * c_11)));
 }
 
 float3 specular_fresnel(float3 base, float metallic, float3 f0_d, float f90_d, float v_h_1)
@@ -516,42 +553,42 @@ float3 specular_fresnel(float3 base, float metallic, float3 f0_d, float f90_d, f
 
 bool has_specular(float metallic_1, float3 f0_d_1, float f90_d_1)
 {
-    bool local_8 = (bool)0;
-    bool local_9 = (bool)0;
+    bool local_12 = (bool)0;
+    bool local_13 = (bool)0;
 
     if (!((metallic_1 > 0.0))) {
-        local_8 = (f90_d_1 > 0.0);
+        local_12 = (f90_d_1 > 0.0);
     } else {
-        local_8 = true;
+        local_12 = true;
     }
-    bool _e11 = local_8;
+    bool _e11 = local_12;
     if (!(_e11)) {
-        local_9 = (max(max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0.0);
+        local_13 = (max(max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0.0);
     } else {
-        local_9 = true;
+        local_13 = true;
     }
-    bool _e23 = local_9;
+    bool _e23 = local_13;
     return _e23;
 }
 
-float channel_mean(float3 c_4)
+float channel_mean(float3 c_5)
 {
-    return (((c_4.x + c_4.y) + c_4.z) * 0.33333334);
+    return (((c_5.x + c_5.y) + c_5.z) * 0.33333334);
 }
 
 float4 receiver_lobe(float3 base_1, float metallic_2, float3 f0_d_2, float f90_d_2, float alpha_3, float n_v_1)
 {
-    bool local_10 = (bool)0;
+    bool local_14 = (bool)0;
 
     const float3 _e10 = fresnel_schlick(f0_d_2, f90_d_2, n_v_1);
     const float _e16 = channel_mean((((float3(1.0, 1.0, 1.0) - _e10) * base_1) * (1.0 - metallic_2)));
     if (!((n_v_1 <= 0.0))) {
         const bool _e22 = has_specular(metallic_2, f0_d_2, f90_d_2);
-        local_10 = !(_e22);
+        local_14 = !(_e22);
     } else {
-        local_10 = true;
+        local_14 = true;
     }
-    bool _e25 = local_10;
+    bool _e25 = local_14;
     if (_e25) {
         return float4(_e16, 0.0, alpha_3, n_v_1);
     }
@@ -591,9 +628,9 @@ float4 range_lobe(float4 lobe_4)
     return float4(lobe_4.x, _e10, (lobe_4.z * lobe_4.z), sqrt(_e14));
 }
 
-float3 mirror_dir(float3 n_2, float3 v)
+float3 mirror_dir(float3 n_3, float3 v)
 {
-    return ((n_2 * (2.0 * dot(n_2, v))) - v);
+    return ((n_3 * (2.0 * dot(n_3, v))) - v);
 }
 
 float bevy_alpha(float perceptual)
@@ -607,25 +644,25 @@ float bevy_f0_(float reflectance)
     return ((0.16 * reflectance) * reflectance);
 }
 
-float bevy_dfg(float r_3, float n_v_2)
+float bevy_dfg(float r_4, float n_v_2)
 {
-    float rx = (1.0 - r_3);
-    float a004_ = ((min((rx * rx), exp2((-9.28 * n_v_2))) * rx) + (0.0425 - (0.0275 * r_3)));
-    float x_15 = max(((1.04 - (0.572 * r_3)) - (1.04 * a004_)), 5e-5);
-    float y_1 = max((((0.022 * r_3) - 0.04) + (1.04 * a004_)), 5e-5);
+    float rx = (1.0 - r_4);
+    float a004_ = ((min((rx * rx), exp2((-9.28 * n_v_2))) * rx) + (0.0425 - (0.0275 * r_4)));
+    float x_15 = max(((1.04 - (0.572 * r_4)) - (1.04 * a004_)), 5e-5);
+    float y_1 = max((((0.022 * r_4) - 0.04) + (1.04 * a004_)), 5e-5);
     return (x_15 + y_1);
 }
 
-float3 bevy_brdf(float3 base_2, float metallic_3, float r_4, float reflectance_1, float3 n_3, float3 v_1, float3 l)
+float3 bevy_brdf(float3 base_2, float metallic_3, float r_5, float reflectance_1, float3 n_4, float3 v_1, float3 l)
 {
-    float n_l_1 = saturate(dot(n_3, l));
+    float n_l_1 = saturate(dot(n_4, l));
     if ((n_l_1 <= 0.0)) {
         return float3(0.0, 0.0, 0.0);
     }
-    const float _e15 = bevy_alpha(r_4);
-    float n_v_3 = max(dot(n_3, v_1), 0.0001);
+    const float _e15 = bevy_alpha(r_5);
+    float n_v_3 = max(dot(n_4, v_1), 0.0001);
     float3 h_3 = normalize((l + v_1));
-    float n_h = saturate(dot(n_3, h_3));
+    float n_h = saturate(dot(n_4, h_3));
     float l_h = saturate(dot(l, h_3));
     float f90_d_3 = (0.5 + (((2.0 * _e15) * l_h) * l_h));
     const float3 _e35 = fresnel_schlick(float3(1.0, 1.0, 1.0), f90_d_3, n_l_1);
@@ -636,7 +673,7 @@ float3 bevy_brdf(float3 base_2, float metallic_3, float r_4, float reflectance_1
     float f90_1 = saturate((((f0_1.x + f0_1.y) + f0_1.z) * 16.5));
     const float _e64 = ggx_d(n_h, (1.0 - (n_h * n_h)), _e15);
     const float _e65 = smith_visibility(n_l_1, n_v_3, _e15);
-    const float _e70 = bevy_dfg(r_4, n_v_3);
+    const float _e70 = bevy_dfg(r_5, n_v_3);
     float3 comp = (float3(1.0, 1.0, 1.0) + (f0_1 * ((1.0 / _e70) - 1.0)));
     const float3 _e77 = fresnel_schlick(f0_1, f90_1, l_h);
     float3 spec = ((_e77 * comp) * (_e64 * _e65));
@@ -645,49 +682,49 @@ float3 bevy_brdf(float3 base_2, float metallic_3, float r_4, float reflectance_1
 
 float cone_cos_of(float3 v_2, float d2_4, float a_3, float3 d)
 {
-    bool local_11 = (bool)0;
-    bool local_12 = (bool)0;
+    bool local_15 = (bool)0;
+    bool local_16 = (bool)0;
 
     float vd = dot(v_2, d);
     float h2_1 = (d2_4 - (a_3 * a_3));
     if (!((h2_1 <= 0.0))) {
         if ((vd >= 0.0)) {
-            local_12 = ((vd * vd) >= h2_1);
+            local_16 = ((vd * vd) >= h2_1);
         } else {
-            local_12 = false;
+            local_16 = false;
         }
-        bool _e19 = local_12;
-        local_11 = _e19;
+        bool _e19 = local_16;
+        local_15 = _e19;
     } else {
-        local_11 = true;
+        local_15 = true;
     }
-    bool _e21 = local_11;
+    bool _e21 = local_15;
     if (_e21) {
         return 1.0;
     }
-    float3 c_11 = cross(v_2, d);
-    return min((((vd * sqrt(h2_1)) + (sqrt(dot(c_11, c_11)) * a_3)) / d2_4), 1.0);
+    float3 c_12 = cross(v_2, d);
+    return min((((vd * sqrt(h2_1)) + (sqrt(dot(c_12, c_12)) * a_3)) / d2_4), 1.0);
 }
 
 float cone_cos_toward(float3 center_, float radius, float3 p, float3 d_1)
 {
-    float3 v_7 = (center_ - p);
-    const float _e6 = cone_cos_of(v_7, dot(v_7, v_7), radius, d_1);
+    float3 v_8 = (center_ - p);
+    const float _e6 = cone_cos_of(v_8, dot(v_8, v_8), radius, d_1);
     return _e6;
 }
 
 float range_scale_at(float4 rl, float cos_t)
 {
-    float t_2 = (((0.5 + (0.5 * cos_t)) * (rl.z - 1.0)) + 1.0);
-    return clamp((rl.x + ((rl.y * rl.z) / (t_2 * t_2))), 1.0, (rl.w * rl.w));
+    float t_5 = (((0.5 + (0.5 * cos_t)) * (rl.z - 1.0)) + 1.0);
+    return clamp((rl.x + ((rl.y * rl.z) / (t_5 * t_5))), 1.0, (rl.w * rl.w));
 }
 
-float range_scale_toward(float4 rl_1, float3 center_1, float radius_1, float3 p_1, float3 r_5)
+float range_scale_toward(float4 rl_1, float3 center_1, float radius_1, float3 p_1, float3 r_6)
 {
     if ((rl_1.w <= 1.0)) {
         return 1.0;
     }
-    const float _e9 = cone_cos_toward(center_1, radius_1, p_1, r_5);
+    const float _e9 = cone_cos_toward(center_1, radius_1, p_1, r_6);
     const float _e10 = range_scale_at(rl_1, _e9);
     return _e10;
 }
@@ -710,83 +747,83 @@ float3 ray_inverse3_(float3 d_2)
     return float3(_e2, _e4, _e6);
 }
 
-float ray_aabb(float3 o, float3 inv_d, float3 bmin, float3 bmax, float t_max)
+float ray_aabb(float3 o, float3 inv_d, float3 bmin_1, float3 bmax_1, float t_max)
 {
-    float3 t0_ = ((bmin - o) * inv_d);
-    float3 t1_ = ((bmax - o) * inv_d);
-    float3 lo = min(t0_, t1_);
-    float3 hi = max(t0_, t1_);
-    float t_in = max(max(lo.x, lo.y), max(lo.z, 0.0));
-    float t_out = min(min(hi.x, hi.y), min(hi.z, t_max));
+    float3 t0_ = ((bmin_1 - o) * inv_d);
+    float3 t1_ = ((bmax_1 - o) * inv_d);
+    float3 lo_3 = min(t0_, t1_);
+    float3 hi_3 = max(t0_, t1_);
+    float t_in = max(max(lo_3.x, lo_3.y), max(lo_3.z, 0.0));
+    float t_out = min(min(hi_3.x, hi_3.y), min(hi_3.z, t_max));
     if ((t_in <= t_out)) {
         return t_in;
     }
     return -1.0;
 }
 
-float3 triangle_normal(float3 a_4, float3 b_4, float3 c_5)
+float3 triangle_normal(float3 a_4, float3 b_3, float3 c_6)
 {
-    bool local_13 = (bool)0;
+    bool local_17 = (bool)0;
 
-    float3 n_13 = cross((b_4 - a_4), (c_5 - a_4));
-    float l2_ = dot(n_13, n_13);
+    float3 n_14 = cross((b_3 - a_4), (c_6 - a_4));
+    float l2_ = dot(n_14, n_14);
     if (!(!((l2_ > 0.0)))) {
-        local_13 = !((l2_ < 3e38));
+        local_17 = !((l2_ < 3e38));
     } else {
-        local_13 = true;
+        local_17 = true;
     }
-    bool _e17 = local_13;
+    bool _e17 = local_17;
     if (_e17) {
         return float3(0.0, 0.0, 0.0);
     }
-    return (n_13 / (sqrt(l2_)).xxx);
+    return (n_14 / (sqrt(l2_)).xxx);
 }
 
-float ray_triangle(float3 o_1, float3 d_3, float3 a_5, float3 b_5, float3 c_6, float t_min, float t_max_1)
+float ray_triangle(float3 o_1, float3 d_3, float3 a_5, float3 b_4, float3 c_7, float t_min, float t_max_1)
 {
-    bool local_14 = (bool)0;
-    bool local_15 = (bool)0;
-    bool local_16 = (bool)0;
+    bool local_18 = (bool)0;
+    bool local_19 = (bool)0;
+    bool local_20 = (bool)0;
 
-    float3 e1_ = (b_5 - a_5);
-    float3 e2_ = (c_6 - a_5);
-    float3 p_5 = cross(d_3, e2_);
-    float det = dot(e1_, p_5);
+    float3 e1_ = (b_4 - a_5);
+    float3 e2_ = (c_7 - a_5);
+    float3 p_7 = cross(d_3, e2_);
+    float det = dot(e1_, p_7);
     if ((abs(det) <= 0.0)) {
         return -1.0;
     }
     float inv = (1.0 / det);
-    float3 s_6 = (o_1 - a_5);
-    float u_4 = (dot(s_6, p_5) * inv);
+    float3 s_12 = (o_1 - a_5);
+    float u_4 = (dot(s_12, p_7) * inv);
     if (!((u_4 < 0.0))) {
-        local_14 = (u_4 > 1.0);
+        local_18 = (u_4 > 1.0);
     } else {
-        local_14 = true;
+        local_18 = true;
     }
-    bool _e28 = local_14;
+    bool _e28 = local_18;
     if (_e28) {
         return -1.0;
     }
-    float3 q_5 = cross(s_6, e1_);
-    float v_8 = (dot(d_3, q_5) * inv);
-    if (!((v_8 < 0.0))) {
-        local_15 = ((u_4 + v_8) > 1.0);
+    float3 q_6 = cross(s_12, e1_);
+    float v_9 = (dot(d_3, q_6) * inv);
+    if (!((v_9 < 0.0))) {
+        local_19 = ((u_4 + v_9) > 1.0);
     } else {
-        local_15 = true;
+        local_19 = true;
     }
-    bool _e42 = local_15;
+    bool _e42 = local_19;
     if (_e42) {
         return -1.0;
     }
-    float t_3 = (dot(e2_, q_5) * inv);
-    if ((t_3 > t_min)) {
-        local_16 = (t_3 < t_max_1);
+    float t_6 = (dot(e2_, q_6) * inv);
+    if ((t_6 > t_min)) {
+        local_20 = (t_6 < t_max_1);
     } else {
-        local_16 = false;
+        local_20 = false;
     }
-    bool _e51 = local_16;
+    bool _e51 = local_20;
     if (_e51) {
-        return t_3;
+        return t_6;
     }
     return -1.0;
 }
@@ -802,16 +839,16 @@ float3 reproject(float4 c0_, float4 c1_, float4 c2_, float4 c3_, float3 p_2, flo
     return float3(x_16, y_2, clip_.w);
 }
 
-bool history_matches(float3 n_4, float3 nh, float3 p_3, float oh, float d_4)
+bool history_matches(float3 n_5, float3 nh, float3 p_3, float oh, float d_4)
 {
-    bool local_17 = (bool)0;
+    bool local_21 = (bool)0;
 
     if ((abs((dot(nh, p_3) - oh)) <= (TEMPORAL_DEPTH_TOLERANCE * d_4))) {
-        local_17 = (dot(n_4, nh) >= TEMPORAL_NORMAL_COS);
+        local_21 = (dot(n_5, nh) >= TEMPORAL_NORMAL_COS);
     } else {
-        local_17 = false;
+        local_21 = false;
     }
-    bool _e17 = local_17;
+    bool _e17 = local_21;
     return _e17;
 }
 
@@ -889,12 +926,12 @@ GeoHit trace(float3 o_2, float3 d_5, float t_min_1, float t_max_2, bool any_hit)
         if (all(loop_bound == uint2(0u, 0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         uint _e21 = node_2;
-        GpuGeoNode n_14 = ConstructGpuGeoNode(asfloat(geo_nodes.Load3(_e21*32+0)), asuint(geo_nodes.Load(_e21*32+12)), asfloat(geo_nodes.Load3(_e21*32+16)), asuint(geo_nodes.Load(_e21*32+28)));
+        GpuGeoNode n_15 = ConstructGpuGeoNode(asfloat(geo_nodes.Load3(_e21*32+0)), asuint(geo_nodes.Load(_e21*32+12)), asfloat(geo_nodes.Load3(_e21*32+16)), asuint(geo_nodes.Load(_e21*32+28)));
         float _e27 = hit.t;
-        const float _e28 = ray_aabb(o_2, _e14, n_14.bmin, n_14.bmax, _e27);
+        const float _e28 = ray_aabb(o_2, _e14, n_15.bmin, n_15.bmax, _e27);
         if ((_e28 >= 0.0)) {
-            if ((n_14.count > 0u)) {
-                i = n_14.first;
+            if ((n_15.count > 0u)) {
+                i = n_15.first;
                 uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
                 bool loop_init = true;
                 while(true) {
@@ -906,15 +943,15 @@ GeoHit trace(float3 o_2, float3 d_5, float t_min_1, float t_max_2, bool any_hit)
                     }
                     loop_init = false;
                     uint _e36 = i;
-                    if ((_e36 < (n_14.first + n_14.count))) {
+                    if ((_e36 < (n_15.first + n_15.count))) {
                     } else {
                         break;
                     }
                     {
                         uint _e42 = i;
-                        GpuTriangle t_4 = ConstructGpuTriangle(asfloat(geo_tris.Load3(_e42*48+0)), asuint(geo_tris.Load(_e42*48+12)), asfloat(geo_tris.Load3(_e42*48+16)), asuint(geo_tris.Load(_e42*48+28)), asfloat(geo_tris.Load3(_e42*48+32)), asuint(geo_tris.Load(_e42*48+44)));
+                        GpuTriangle t_7 = ConstructGpuTriangle(asfloat(geo_tris.Load3(_e42*48+0)), asuint(geo_tris.Load(_e42*48+12)), asfloat(geo_tris.Load3(_e42*48+16)), asuint(geo_tris.Load(_e42*48+28)), asfloat(geo_tris.Load3(_e42*48+32)), asuint(geo_tris.Load(_e42*48+44)));
                         float _e49 = hit.t;
-                        const float _e50 = ray_triangle(o_2, d_5, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e49);
+                        const float _e50 = ray_triangle(o_2, d_5, t_7.v0_, t_7.v1_, t_7.v2_, t_min_1, _e49);
                         if ((_e50 > 0.0)) {
                             hit.t = _e50;
                             uint _e55 = i;
@@ -931,11 +968,11 @@ GeoHit trace(float3 o_2, float3 d_5, float t_min_1, float t_max_2, bool any_hit)
                 uint _e60 = sp;
                 if ((_e60 < 64u)) {
                     uint _e63 = sp;
-                    stack[min(uint(_e63), 63u)] = (n_14.first + 1u);
+                    stack[min(uint(_e63), 63u)] = (n_15.first + 1u);
                     uint _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_2 = n_14.first;
+                node_2 = n_15.first;
                 continue;
             }
         }
@@ -954,9 +991,9 @@ GeoHit trace(float3 o_2, float3 d_5, float t_min_1, float t_max_2, bool any_hit)
     return geohit_2;
 }
 
-bool occluded(float3 a_6, float3 b_6)
+bool occluded(float3 a_6, float3 b_5)
 {
-    float3 dv = (b_6 - a_6);
+    float3 dv = (b_5 - a_6);
     float len_1 = length(dv);
     if ((len_1 <= 0.0)) {
         return false;
@@ -998,17 +1035,17 @@ uint bsh_first(uint nodes_2)
     return BSH_NONE;
 }
 
-float bsh_inner_scale(float a_7, float3 v_3, float d2_5, float3 r_6, float4 rl_2)
+float bsh_inner_scale(float a_7, float3 v_3, float d2_5, float3 r_7, float4 rl_2)
 {
-    const float _e5 = cone_cos_of(v_3, d2_5, a_7, r_6);
+    const float _e5 = cone_cos_of(v_3, d2_5, a_7, r_7);
     const float _e8 = range_scale_at(rl_2, (_e5 + 2e-6));
     return _e8;
 }
 
-bool bsh_reaches(BshNode node_3, float3 x_4, float3 r_7, float4 rl_3)
+bool bsh_reaches(BshNode node_3, float3 x_4, float3 r_8, float4 rl_3)
 {
-    bool local_18 = (bool)0;
-    bool local_19 = (bool)0;
+    bool local_22 = (bool)0;
+    bool local_23 = (bool)0;
 
     const bool _e6 = sphere_contains_point(node_3.center_, node_3.radius, x_4);
     if (_e6) {
@@ -1016,69 +1053,125 @@ bool bsh_reaches(BshNode node_3, float3 x_4, float3 r_7, float4 rl_3)
     }
     if (!((rl_3.w <= 1.0))) {
         const bool _e20 = sphere_contains_point(node_3.center_, (node_3.radius * (rl_3.w * 1.0001)), x_4);
-        local_18 = !(_e20);
+        local_22 = !(_e20);
     } else {
-        local_18 = true;
+        local_22 = true;
     }
-    bool _e23 = local_18;
+    bool _e23 = local_22;
     if (_e23) {
         return false;
     }
     const float _e25 = bsh_range_bound(node_3);
-    float3 v_9 = (x_4 - node_3.center_);
-    float d2_7 = dot(v_9, v_9);
+    float3 v_10 = (x_4 - node_3.center_);
+    float d2_7 = dot(v_10, v_10);
     float reach_max = (node_3.extent + ((rl_3.w * 1.001) * _e25));
     if ((d2_7 > (reach_max * reach_max))) {
         return false;
     }
     if ((node_3.child == BSH_NONE)) {
-        const float _e43 = range_scale_toward(rl_3, node_3.center_, node_3.extent, x_4, r_7);
+        const float _e43 = range_scale_toward(rl_3, node_3.center_, node_3.extent, x_4, r_8);
         const float _e46 = bsh_scaled_radius(node_3, sqrt(_e43));
         const bool _e47 = sphere_contains_point(node_3.center_, _e46, x_4);
         return _e47;
     }
-    const float _e50 = bsh_inner_scale(node_3.extent, -(v_9), d2_7, r_7, rl_3);
+    const float _e50 = bsh_inner_scale(node_3.extent, -(v_10), d2_7, r_8, rl_3);
     float s_c = (_e50 * 1.001);
     float reach = (node_3.extent + (sqrt(s_c) * _e25));
     if ((d2_7 <= ((node_3.radius * node_3.radius) * s_c))) {
-        local_19 = (d2_7 <= (reach * reach));
+        local_23 = (d2_7 <= (reach * reach));
     } else {
-        local_19 = false;
+        local_23 = false;
     }
-    bool _e67 = local_19;
+    bool _e67 = local_23;
     return _e67;
 }
 
-uint bsh_next_leaf_lobe(uint nodes_3, uint start, float3 x_5, float3 r_8, float4 rl_4)
+bool bsh_reaches_box(BshNode node_4, float3 lo, float3 hi, float w_6)
+{
+    const bool _e13 = sphere_overlaps_aabb(node_4.center_, (node_4.radius * (max(1.0, (w_6 * 1.0001)) * 1.0001)), lo, hi);
+    return _e13;
+}
+
+uint bsh_subtree(uint nodes_3, uint s_1, uint depth)
 {
     uint i_2 = (uint)0;
+    uint level = 0u;
+    bool local_24 = (bool)0;
 
-    i_2 = start;
+    const uint _e3 = bsh_first(nodes_3);
+    i_2 = _e3;
     uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
         loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
-        uint _e6 = i_2;
-        if ((_e6 != BSH_NONE)) {
+        uint _e7 = level;
+        if ((_e7 < depth)) {
+            uint _e11 = i_2;
+            local_24 = (_e11 != BSH_NONE);
+        } else {
+            local_24 = false;
+        }
+        bool _e15 = local_24;
+        if (_e15) {
         } else {
             break;
         }
         {
-            uint _e9 = i_2;
-            const BshNode _e10 = bsh_node(nodes_3, _e9);
-            const bool _e11 = bsh_reaches(_e10, x_5, r_8, rl_4);
+            uint _e16 = i_2;
+            const BshNode _e17 = bsh_node(nodes_3, _e16);
+            uint _e18 = level;
+            uint below = (depth - _e18);
+            if ((_e17.child == BSH_NONE)) {
+                if (((s_1 << (32u - below)) != 0u)) {
+                    return BSH_NONE;
+                }
+                uint _e29 = i_2;
+                return _e29;
+            }
+            if ((((s_1 >> (below - 1u)) & 1u) == 0u)) {
+                i_2 = _e17.child;
+            } else {
+                const BshNode _e39 = bsh_node(nodes_3, _e17.child);
+                i_2 = _e39.next;
+            }
+            uint _e41 = level;
+            level = (_e41 + 1u);
+        }
+    }
+    uint _e44 = i_2;
+    return _e44;
+}
+
+uint bsh_next_leaf_box(uint nodes_4, uint start_1, uint end, float3 lo_1, float3 hi_1, float w_7)
+{
+    uint i_3 = (uint)0;
+
+    i_3 = start_1;
+    uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
+    while(true) {
+        if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
+        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+        uint _e7 = i_3;
+        if ((_e7 != end)) {
+        } else {
+            break;
+        }
+        {
+            uint _e9 = i_3;
+            const BshNode _e10 = bsh_node(nodes_4, _e9);
+            const bool _e11 = bsh_reaches_box(_e10, lo_1, hi_1, w_7);
             if (_e11) {
                 if ((_e10.child == BSH_NONE)) {
-                    uint _e15 = i_2;
+                    uint _e15 = i_3;
                     return _e15;
                 }
-                i_2 = _e10.child;
+                i_3 = _e10.child;
             } else {
-                i_2 = _e10.next;
+                i_3 = _e10.next;
             }
         }
     }
-    return BSH_NONE;
+    return end;
 }
 
 float next_threshold(float sum, inout uint h_1)
@@ -1092,46 +1185,46 @@ float next_threshold(float sum, inout uint h_1)
     return _e6;
 }
 
-Connection connect_record(GpuLight l_3, float3 x_6, float3 n_5, float3 ng_1, float r2_2, float rt2_2, float w_res, float u1_3, float u2_3, float eps, bool trace_1)
+Connection connect_record(GpuLight l_3, float3 x_5, float3 n_6, float3 ng_1, float r2_2, float rt2_2, float w_res, float u1_3, float u2_3, float eps, bool trace_1)
 {
-    Connection c_7 = (Connection)0;
-    bool local_20 = (bool)0;
-    bool local_21 = (bool)0;
+    Connection c_8 = (Connection)0;
+    bool local_25 = (bool)0;
+    bool local_26 = (bool)0;
 
-    c_7.e = (0.0).xxx;
+    c_8.e = (0.0).xxx;
     const float3 _e16 = light_point(l_3, u1_3, u2_3);
-    c_7.y = _e16;
-    float3 _e19 = c_7.y;
-    const float _e20 = connection_cosine(x_6, _e19, n_5, ng_1, r2_2);
-    c_7.cos_x = _e20;
-    float _e22 = c_7.cos_x;
+    c_8.y = _e16;
+    float3 _e19 = c_8.y;
+    const float _e20 = connection_cosine(x_5, _e19, n_6, ng_1, r2_2);
+    c_8.cos_x = _e20;
+    float _e22 = c_8.cos_x;
     if (!((_e22 <= 0.0))) {
         if (trace_1) {
-            float3 _e33 = c_7.y;
-            const bool _e34 = occluded((x_6 + (ng_1 * eps)), _e33);
-            local_21 = _e34;
+            float3 _e33 = c_8.y;
+            const bool _e34 = occluded((x_5 + (ng_1 * eps)), _e33);
+            local_26 = _e34;
         } else {
-            local_21 = false;
+            local_26 = false;
         }
-        bool _e36 = local_21;
-        local_20 = _e36;
+        bool _e36 = local_26;
+        local_25 = _e36;
     } else {
-        local_20 = true;
+        local_25 = true;
     }
-    bool _e38 = local_20;
+    bool _e38 = local_25;
     if (_e38) {
-        Connection _e39 = c_7;
+        Connection _e39 = c_8;
         const Connection connection = _e39;
         return connection;
     }
-    float3 _e41 = c_7.y;
-    float3 v_10 = (x_6 - _e41);
-    float d2_8 = dot(v_10, v_10);
-    const float3 _e48 = light_intensity(l_3, (v_10 / (sqrt(d2_8)).xxx));
-    float _e50 = c_7.cos_x;
+    float3 _e41 = c_8.y;
+    float3 v_11 = (x_5 - _e41);
+    float d2_8 = dot(v_11, v_11);
+    const float3 _e48 = light_intensity(l_3, (v_11 / (sqrt(d2_8)).xxx));
+    float _e50 = c_8.cos_x;
     const float _e51 = connection_factor(_e50, d2_8, rt2_2, w_res);
-    c_7.e = (_e48 * _e51);
-    Connection _e53 = c_7;
+    c_8.e = (_e48 * _e51);
+    Connection _e53 = c_8;
     const Connection connection_1 = _e53;
     return connection_1;
 }
@@ -1149,12 +1242,12 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
     return ret;
 }
 
-Connection connect_traced(uint li, float3 x_7, float3 n_6, float3 ng_2, float s, float w_res_1, float u1_4, float u2_4, float eps_1, bool trace_2)
+Connection connect_traced(uint li, float3 x_6, float3 n_7, float3 ng_2, float s_2, float w_res_1, float u1_4, float u2_4, float eps_1, bool trace_2)
 {
     GpuLight _e12 = ConstructGpuLight(asfloat(lights.Load3(li*64+0)), asuint(lights.Load(li*64+12)), asfloat(lights.Load3(li*64+16)), asfloat(lights.Load(li*64+28)), asfloat(lights.Load3(li*64+32)), asfloat(lights.Load(li*64+44)), asfloat(lights.Load3(li*64+48)), asuint(lights.Load(li*64+60)));
     float _e15 = asfloat(r2_3.Load(li*4));
     float _e19 = asfloat(rt2_3.Load(li*4));
-    const Connection _e21 = connect_record(_e12, x_7, n_6, ng_2, (s * _e15), (s * _e19), w_res_1, u1_4, u2_4, eps_1, trace_2);
+    const Connection _e21 = connect_record(_e12, x_6, n_7, ng_2, (s_2 * _e15), (s_2 * _e19), w_res_1, u1_4, u2_4, eps_1, trace_2);
     const Connection connection_2 = _e21;
     return connection_2;
 }
@@ -1172,40 +1265,316 @@ GpuLightCone ConstructGpuLightCone(float3 arg0, float arg1, float3 arg2, float a
     return ret;
 }
 
-float light_range_scale(uint li_1, float3 x_8, float3 r_9, float4 rl_5)
+float light_range_scale(uint li_1, float3 x_7, float3 r_9, float4 rl_4)
 {
-    GpuLightCone c_12 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_1*48+0)), asfloat(light_cones.Load(li_1*48+12)), asfloat(light_cones.Load3(li_1*48+16)), asfloat(light_cones.Load(li_1*48+28)), asfloat(light_cones.Load(li_1*48+32)), asfloat(light_cones.Load(li_1*48+36)), asuint(light_cones.Load(li_1*48+40)), asuint(light_cones.Load(li_1*48+44)));
-    const float _e9 = range_scale_toward(rl_5, c_12.center_, c_12.radius, x_8, r_9);
+    GpuLightCone c_13 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_1*48+0)), asfloat(light_cones.Load(li_1*48+12)), asfloat(light_cones.Load3(li_1*48+16)), asfloat(light_cones.Load(li_1*48+28)), asfloat(light_cones.Load(li_1*48+32)), asfloat(light_cones.Load(li_1*48+36)), asuint(light_cones.Load(li_1*48+40)), asuint(light_cones.Load(li_1*48+44)));
+    const float _e9 = range_scale_toward(rl_4, c_13.center_, c_13.radius, x_7, r_9);
     return _e9;
 }
 
 float4 surface_at(int2 texel)
 {
-    float4 p_6 = position_tex.Load(int3(texel, int(0)));
-    return ((p_6.w > 0.0) ? float4(p_6.xyz, 1.0) : (0.0).xxxx);
+    float4 p_8 = position_tex.Load(int3(texel, int(0)));
+    return ((p_8.w > 0.0) ? float4(p_8.xyz, 1.0) : (0.0).xxxx);
 }
 
-Shaded shade_connection(Connection c_8, float3 x_9, float3 n_7, Material m_1)
-{
-    Shaded s_1 = (Shaded)0;
+WorkgroupBox ConstructWorkgroupBox(float3 arg0, float3 arg1) {
+    WorkgroupBox ret = (WorkgroupBox)0;
+    ret.lo = arg0;
+    ret.hi = arg1;
+    return ret;
+}
 
-    s_1.e = c_8.e;
-    s_1.diffuse = (0.0).xxx;
-    s_1.specular = (0.0).xxx;
-    if ((c_8.cos_x > 0.0)) {
-        const float3 _e25 = bevy_brdf(m_1.base, m_1.metallic, m_1.roughness, m_1.reflectance, n_7, m_1.v, normalize((c_8.y - x_9)));
-        s_1.diffuse = (_e25 * c_8.e);
+WorkgroupBox workgroup_bounds(uint li_2, float3 lo_2, float3 hi_2)
+{
+    uint stride = 32u;
+
+    wg_lo[min(uint(li_2), 63u)] = lo_2;
+    wg_hi[min(uint(li_2), 63u)] = hi_2;
+    GroupMemoryBarrierWithGroupSync();
+    uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
+    bool loop_init_1 = true;
+    while(true) {
+        if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
+        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+        if (!loop_init_1) {
+            uint _e36 = stride;
+            stride = naga_div(_e36, 2u);
+        }
+        loop_init_1 = false;
+        uint _e9 = stride;
+        if ((_e9 > 0u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e12 = stride;
+            if ((li_2 < _e12)) {
+                float3 _e18 = wg_lo[min(uint(li_2), 63u)];
+                uint _e20 = stride;
+                float3 _e23 = wg_lo[min(uint((li_2 + _e20)), 63u)];
+                wg_lo[min(uint(li_2), 63u)] = min(_e18, _e23);
+                float3 _e29 = wg_hi[min(uint(li_2), 63u)];
+                uint _e31 = stride;
+                float3 _e34 = wg_hi[min(uint((li_2 + _e31)), 63u)];
+                wg_hi[min(uint(li_2), 63u)] = max(_e29, _e34);
+            }
+            GroupMemoryBarrierWithGroupSync();
+        }
     }
-    Shaded _e28 = s_1;
+    if ((li_2 == 0u)) {
+        float3 _e44 = wg_lo[0];
+        float3 _e47 = wg_hi[0];
+        wg_box = ConstructWorkgroupBox(_e44, _e47);
+    }
+    GroupMemoryBarrierWithGroupSync();
+    WorkgroupBox _e50 = wg_box;
+    GroupMemoryBarrierWithGroupSync();
+    const WorkgroupBox workgroupbox = _e50;
+    return workgroupbox;
+}
+
+WorkgroupBox workgroup_box(uint li_3, float3 p_4, bool has)
+{
+    const WorkgroupBox _e9 = workgroup_bounds(li_3, (has ? p_4 : (3.4028235e38).xxx), (has ? p_4 : (-3.4028235e38).xxx));
+    const WorkgroupBox workgroupbox_1 = _e9;
+    return workgroupbox_1;
+}
+
+bool box_is_empty(WorkgroupBox b_6)
+{
+    return (b_6.lo.x > b_6.hi.x);
+}
+
+uint tile_subtree(uint s_3, TileWalk t_1, bool list, uint at, uint start_2, uint to)
+{
+    uint p_5 = (uint)0;
+    uint b_7 = (uint)0;
+    bool local_27 = (bool)0;
+    bool local_28 = (bool)0;
+    bool local_29 = (bool)0;
+
+    const uint _e8 = bsh_subtree(BSH, s_3, BSH_TILE_DEPTH);
+    if ((_e8 == BSH_NONE)) {
+        return 0u;
+    }
+    uint end_1 = asuint(bsh_nodes.Load(20+_e8*32));
+    p_5 = at;
+    const uint _e21 = bsh_next_leaf_box(BSH, _e8, end_1, t_1.lo, t_1.hi, t_1.w);
+    b_7 = _e21;
+    uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
+    bool loop_init_2 = true;
+    while(true) {
+        if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
+        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+        if (!loop_init_2) {
+            uint _e53 = b_7;
+            uint _e56 = asuint(bsh_nodes.Load(20+_e53*32));
+            const uint _e60 = bsh_next_leaf_box(BSH, _e56, end_1, t_1.lo, t_1.hi, t_1.w);
+            b_7 = _e60;
+        }
+        loop_init_2 = false;
+        uint _e23 = b_7;
+        if ((_e23 != end_1)) {
+            if (!(!(list))) {
+                uint _e31 = p_5;
+                local_28 = (_e31 < to);
+            } else {
+                local_28 = true;
+            }
+            bool _e34 = local_28;
+            local_27 = _e34;
+        } else {
+            local_27 = false;
+        }
+        bool _e36 = local_27;
+        if (_e36) {
+        } else {
+            break;
+        }
+        {
+            if (list) {
+                uint _e39 = p_5;
+                local_29 = (_e39 >= start_2);
+            } else {
+                local_29 = false;
+            }
+            bool _e42 = local_29;
+            if (_e42) {
+                uint _e44 = p_5;
+                uint _e47 = b_7;
+                tile_list[min(uint((_e44 - start_2)), 1023u)] = _e47;
+            }
+            uint _e48 = p_5;
+            p_5 = (_e48 + 1u);
+        }
+    }
+    uint _e61 = p_5;
+    return (_e61 - at);
+}
+
+TileWalk ConstructTileWalk(float3 arg0, float3 arg1, float arg2, uint arg3) {
+    TileWalk ret = (TileWalk)0;
+    ret.lo = arg0;
+    ret.hi = arg1;
+    ret.w = arg2;
+    ret.total = arg3;
+    return ret;
+}
+
+TileWalk tile_walk_begin(uint li_4, float3 x_8, float w_8, bool has_1)
+{
+    TileWalk t_2 = (TileWalk)0;
+    uint s_4 = (uint)0;
+    uint sum_1 = 0u;
+    uint s_5 = 0u;
+
+    uint _e8; InterlockedMax(tile_scale, (has_1 ? asuint(w_8) : 0u), _e8);
+    const WorkgroupBox _e9 = workgroup_box(li_4, x_8, has_1);
+    GroupMemoryBarrierWithGroupSync();
+    uint _e13 = tile_scale;
+    GroupMemoryBarrierWithGroupSync();
+    t_2 = ConstructTileWalk(_e9.lo, _e9.hi, asfloat(_e13), 0u);
+    const bool _e18 = box_is_empty(_e9);
+    if (_e18) {
+        TileWalk _e19 = t_2;
+        const TileWalk tilewalk = _e19;
+        return tilewalk;
+    }
+    s_4 = li_4;
+    uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
+    bool loop_init_3 = true;
+    while(true) {
+        if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
+        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+        if (!loop_init_3) {
+            uint _e34 = s_4;
+            s_4 = (_e34 + TILE_THREADS);
+        }
+        loop_init_3 = false;
+        uint _e21 = s_4;
+        if ((_e21 < BSH_TILE_SUBTREES)) {
+        } else {
+            break;
+        }
+        {
+            uint _e25 = s_4;
+            uint _e27 = s_4;
+            TileWalk _e28 = t_2;
+            const uint _e33 = tile_subtree(_e27, _e28, false, 0u, 0u, 0u);
+            subtree_at[min(uint(_e25), 255u)] = _e33;
+        }
+    }
+    GroupMemoryBarrierWithGroupSync();
+    if ((li_4 == 0u)) {
+        uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
+        bool loop_init_4 = true;
+        while(true) {
+            if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
+            loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+            if (!loop_init_4) {
+                uint _e57 = s_5;
+                s_5 = (_e57 + 1u);
+            }
+            loop_init_4 = false;
+            uint _e43 = s_5;
+            if ((_e43 < BSH_TILE_SUBTREES)) {
+            } else {
+                break;
+            }
+            {
+                uint _e47 = s_5;
+                uint c_14 = subtree_at[min(uint(_e47), 255u)];
+                uint _e51 = s_5;
+                uint _e53 = sum_1;
+                subtree_at[min(uint(_e51), 255u)] = _e53;
+                uint _e54 = sum_1;
+                sum_1 = (_e54 + c_14);
+            }
+        }
+        uint _e60 = sum_1;
+        tile_total = _e60;
+    }
+    GroupMemoryBarrierWithGroupSync();
+    uint _e63 = tile_total;
+    GroupMemoryBarrierWithGroupSync();
+    t_2.total = _e63;
+    TileWalk _e64 = t_2;
+    const TileWalk tilewalk_1 = _e64;
+    return tilewalk_1;
+}
+
+uint tile_walk_fill(uint li_5, TileWalk t_3, uint start_3)
+{
+    uint s_6 = (uint)0;
+    uint past = (uint)0;
+    bool local_30 = (bool)0;
+
+    uint to_1 = min(t_3.total, (start_3 + TILE_LIST));
+    s_6 = li_5;
+    uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
+    bool loop_init_5 = true;
+    while(true) {
+        if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
+        loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
+        if (!loop_init_5) {
+            uint _e38 = s_6;
+            s_6 = (_e38 + TILE_THREADS);
+        }
+        loop_init_5 = false;
+        uint _e8 = s_6;
+        if ((_e8 < BSH_TILE_SUBTREES)) {
+        } else {
+            break;
+        }
+        {
+            uint _e12 = s_6;
+            uint at_1 = subtree_at[min(uint(_e12), 255u)];
+            past = t_3.total;
+            uint _e17 = s_6;
+            if (((_e17 + 1u) < BSH_TILE_SUBTREES)) {
+                uint _e23 = s_6;
+                uint _e27 = subtree_at[min(uint((_e23 + 1u)), 255u)];
+                past = _e27;
+            }
+            if ((at_1 < to_1)) {
+                uint _e31 = past;
+                local_30 = (_e31 > start_3);
+            } else {
+                local_30 = false;
+            }
+            bool _e34 = local_30;
+            if (_e34) {
+                uint _e35 = s_6;
+                const uint _e37 = tile_subtree(_e35, t_3, true, at_1, start_3, to_1);
+            }
+        }
+    }
+    GroupMemoryBarrierWithGroupSync();
+    return (to_1 - start_3);
+}
+
+Shaded shade_connection(Connection c_9, float3 x_9, float3 n_8, Material m_1)
+{
+    Shaded s_7 = (Shaded)0;
+
+    s_7.e = c_9.e;
+    s_7.diffuse = (0.0).xxx;
+    s_7.specular = (0.0).xxx;
+    if ((c_9.cos_x > 0.0)) {
+        const float3 _e25 = bevy_brdf(m_1.base, m_1.metallic, m_1.roughness, m_1.reflectance, n_8, m_1.v, normalize((c_9.y - x_9)));
+        s_7.diffuse = (_e25 * c_9.e);
+    }
+    Shaded _e28 = s_7;
     const Shaded shaded = _e28;
     return shaded;
 }
 
-Shaded shade_pick_traced(uint li_2, float3 x_10, float3 n_8, float3 r_10, float4 rl_6, Material m_2, float w_6, float u1_5, float u2_5, float eps_2, bool trace_3)
+Shaded shade_pick_traced(uint li_6, float3 x_10, float3 n_9, float3 r_10, float4 rl_5, Material m_2, float w_9, float u1_5, float u2_5, float eps_2, bool trace_3)
 {
-    const float _e11 = light_range_scale(li_2, x_10, r_10, rl_6);
-    const Connection _e12 = connect_traced(li_2, x_10, n_8, n_8, _e11, w_6, u1_5, u2_5, eps_2, trace_3);
-    const Shaded _e13 = shade_connection(_e12, x_10, n_8, m_2);
+    const float _e11 = light_range_scale(li_6, x_10, r_10, rl_5);
+    const Connection _e12 = connect_traced(li_6, x_10, n_9, n_9, _e11, w_9, u1_5, u2_5, eps_2, trace_3);
+    const Shaded _e13 = shade_connection(_e12, x_10, n_9, m_2);
     const Shaded shaded_1 = _e13;
     return shaded_1;
 }
@@ -1236,15 +1605,15 @@ Shaded ConstructShaded(float3 arg0, float3 arg1, float3 arg2) {
     return ret;
 }
 
-Shaded add(Shaded a_8, Shaded b_7)
+Shaded add(Shaded a_8, Shaded b_8)
 {
-    const Shaded shaded_2 = ConstructShaded((a_8.e + b_7.e), (a_8.diffuse + b_7.diffuse), (a_8.specular + b_7.specular));
+    const Shaded shaded_2 = ConstructShaded((a_8.e + b_8.e), (a_8.diffuse + b_8.diffuse), (a_8.specular + b_8.specular));
     return shaded_2;
 }
 
-Shaded scaled(Shaded s_2, float3 w_7)
+Shaded scaled(Shaded s_8, float3 w_10)
 {
-    const Shaded shaded_3 = ConstructShaded((s_2.e * w_7), (s_2.diffuse * w_7), (s_2.specular * w_7));
+    const Shaded shaded_3 = ConstructShaded((s_8.e * w_10), (s_8.diffuse * w_10), (s_8.specular * w_10));
     return shaded_3;
 }
 
@@ -1253,20 +1622,20 @@ ret_first_holders first_holders(uint2 keys_1[8], bool held_1[8])
 {
     uint first[8] = (uint[8])0;
     uint k_4 = 0u;
-    uint j_2 = (uint)0;
-    bool local_22 = (bool)0;
-    bool local_23 = (bool)0;
+    uint j_3 = (uint)0;
+    bool local_31 = (bool)0;
+    bool local_32 = (bool)0;
 
-    uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
-    bool loop_init_1 = true;
+    uint2 loop_bound_9 = uint2(4294967295u, 4294967295u);
+    bool loop_init_6 = true;
     while(true) {
-        if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
-        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-        if (!loop_init_1) {
+        if (all(loop_bound_9 == uint2(0u, 0u))) { break; }
+        loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
+        if (!loop_init_6) {
             uint _e45 = k_4;
             k_4 = (_e45 + 1u);
         }
-        loop_init_1 = false;
+        loop_init_6 = false;
         uint _e5 = k_4;
         if ((_e5 < K)) {
         } else {
@@ -1277,43 +1646,43 @@ ret_first_holders first_holders(uint2 keys_1[8], bool held_1[8])
             uint _e11 = k_4;
             uint _e12 = k_4;
             first[min(uint(_e8), 7u)] = (held_1[min(uint(_e12), 7u)] ? _e11 : K);
-            j_2 = 0u;
-            uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
-            bool loop_init_2 = true;
+            j_3 = 0u;
+            uint2 loop_bound_10 = uint2(4294967295u, 4294967295u);
+            bool loop_init_7 = true;
             while(true) {
-                if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
-                loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
-                if (!loop_init_2) {
-                    uint _e42 = j_2;
-                    j_2 = (_e42 + 1u);
+                if (all(loop_bound_10 == uint2(0u, 0u))) { break; }
+                loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
+                if (!loop_init_7) {
+                    uint _e42 = j_3;
+                    j_3 = (_e42 + 1u);
                 }
-                loop_init_2 = false;
-                uint _e17 = j_2;
+                loop_init_7 = false;
+                uint _e17 = j_3;
                 uint _e18 = k_4;
                 if ((_e17 < _e18)) {
                     uint _e22 = k_4;
-                    local_22 = held_1[min(uint(_e22), 7u)];
+                    local_31 = held_1[min(uint(_e22), 7u)];
                 } else {
-                    local_22 = false;
+                    local_31 = false;
                 }
-                bool _e25 = local_22;
+                bool _e25 = local_31;
                 if (_e25) {
                 } else {
                     break;
                 }
                 {
-                    uint _e26 = j_2;
+                    uint _e26 = j_3;
                     if (held_1[min(uint(_e26), 7u)]) {
-                        uint _e30 = j_2;
+                        uint _e30 = j_3;
                         uint _e32 = k_4;
-                        local_23 = all((keys_1[min(uint(_e30), 7u)] == keys_1[min(uint(_e32), 7u)]));
+                        local_32 = all((keys_1[min(uint(_e30), 7u)] == keys_1[min(uint(_e32), 7u)]));
                     } else {
-                        local_23 = false;
+                        local_32 = false;
                     }
-                    bool _e37 = local_23;
+                    bool _e37 = local_32;
                     if (_e37) {
                         uint _e38 = k_4;
-                        uint _e40 = j_2;
+                        uint _e40 = j_3;
                         first[min(uint(_e38), 7u)] = _e40;
                         break;
                     }
@@ -1325,17 +1694,17 @@ ret_first_holders first_holders(uint2 keys_1[8], bool held_1[8])
     return _e47;
 }
 
-float3 output_of(Shaded s_3)
+float3 output_of(Shaded s_9)
 {
-    return (s_3.diffuse + s_3.specular);
+    return (s_9.diffuse + s_9.specular);
 }
 
-float reuse_target(uint q_3, GpuLight l_4, uint cells, float3 x_11, float3 n_9, Material m_3)
+float reuse_target(uint q_3, GpuLight l_4, uint cells, float3 x_11, float3 n_10, Material m_3)
 {
     const float _e9 = grid_coordinate(cells);
     const float _e12 = grid_coordinate((cells << 16u));
-    const Connection _e15 = connect_record(l_4, x_11, n_9, n_9, UNRANGED, UNRANGED, 1.0, _e9, _e12, 0.0, false);
-    const Shaded _e16 = shade_connection(_e15, x_11, n_9, m_3);
+    const Connection _e15 = connect_record(l_4, x_11, n_10, n_10, UNRANGED, UNRANGED, 1.0, _e9, _e12, 0.0, false);
+    const Shaded _e16 = shade_connection(_e15, x_11, n_10, m_3);
     const float3 _e17 = output_of(_e16);
     const float _e19 = slot_target(_e17, q_3, K);
     return _e19;
@@ -1354,21 +1723,21 @@ ReuseSurface ConstructReuseSurface(float3 arg0, float arg1, float3 arg2, uint ar
     return ret;
 }
 
-ReuseSurface reuse_surface(float3 x_12, float3 n_10, Material m_4, float c_9)
+ReuseSurface reuse_surface(float3 x_12, float3 n_11, Material m_4, float c_10)
 {
     float4 _e6 = float4(m_4.base, m_4.metallic);
     float2 _e12 = float2(saturate(m_4.roughness), saturate(m_4.reflectance));
-    const ReuseSurface reusesurface = ConstructReuseSurface(x_12, c_9, n_10, (uint(round(clamp(_e6[0], 0.0, 1.0) * 255.0)) | uint(round(clamp(_e6[1], 0.0, 1.0) * 255.0)) << 8 | uint(round(clamp(_e6[2], 0.0, 1.0) * 255.0)) << 16 | uint(round(clamp(_e6[3], 0.0, 1.0) * 255.0)) << 24), (uint(round(clamp(_e12[0], 0.0, 1.0) * 65535.0)) | uint(round(clamp(_e12[1], 0.0, 1.0) * 65535.0)) << 16), 0u, 0u, 0u);
+    const ReuseSurface reusesurface = ConstructReuseSurface(x_12, c_10, n_11, (uint(round(clamp(_e6[0], 0.0, 1.0) * 255.0)) | uint(round(clamp(_e6[1], 0.0, 1.0) * 255.0)) << 8 | uint(round(clamp(_e6[2], 0.0, 1.0) * 255.0)) << 16 | uint(round(clamp(_e6[3], 0.0, 1.0) * 255.0)) << 24), (uint(round(clamp(_e12[0], 0.0, 1.0) * 65535.0)) | uint(round(clamp(_e12[1], 0.0, 1.0) * 65535.0)) << 16), 0u, 0u, 0u);
     return reusesurface;
 }
 
-Material reuse_material(ReuseSurface s_4, float3 eye)
+Material reuse_material(ReuseSurface s_10, float3 eye)
 {
-    uint _e2 = s_4.base;
-    float4 b_8 = (float4(_e2 & 0xFF, _e2 >> 8 & 0xFF, _e2 >> 16 & 0xFF, _e2 >> 24) / 255.0);
-    uint _e4 = s_4.rough;
+    uint _e2 = s_10.base;
+    float4 b_9 = (float4(_e2 & 0xFF, _e2 >> 8 & 0xFF, _e2 >> 16 & 0xFF, _e2 >> 24) / 255.0);
+    uint _e4 = s_10.rough;
     float2 r_12 = (float2(_e4 & 0xFFFF, _e4 >> 16) / 65535.0);
-    const Material _e13 = material_of(b_8.xyz, b_8.w, r_12.x, r_12.y, normalize((eye - s_4.x)));
+    const Material _e13 = material_of(b_9.xyz, b_9.w, r_12.x, r_12.y, normalize((eye - s_10.x)));
     const Material material_1 = _e13;
     return material_1;
 }
@@ -1388,20 +1757,20 @@ int2 naga_f2i32(float2 value) {
     return int2(clamp(value, -2147483600.0, 2147483500.0));
 }
 
-uint reuse_domains(float3 x_13, float3 n_11, float d_6, uint h_2, inout Domain doms_1[3])
+uint reuse_domains(float3 x_13, float3 n_12, float d_6, uint h_2, inout Domain doms_1[3])
 {
     uint nd = 0u;
     uint hr = (uint)0;
-    uint j_3 = 0u;
-    float2 p_4 = (float2)0;
-    bool local_24 = (bool)0;
-    bool local_25 = (bool)0;
-    bool local_26 = (bool)0;
+    uint j_4 = 0u;
+    float2 p_6 = (float2)0;
+    bool local_33 = (bool)0;
+    bool local_34 = (bool)0;
+    bool local_35 = (bool)0;
     bool seen = (bool)0;
     uint k_5 = (uint)0;
-    bool local_27 = (bool)0;
-    bool local_28 = (bool)0;
-    bool local_29 = (bool)0;
+    bool local_36 = (bool)0;
+    bool local_37 = (bool)0;
+    bool local_38 = (bool)0;
 
     uint _e9 = reuse.has_history;
     if ((_e9 != 1u)) {
@@ -1418,24 +1787,24 @@ uint reuse_domains(float3 x_13, float3 n_11, float d_6, uint h_2, inout Domain d
         return 0u;
     }
     hr = h_2;
-    uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
-    bool loop_init_3 = true;
+    uint2 loop_bound_11 = uint2(4294967295u, 4294967295u);
+    bool loop_init_8 = true;
     while(true) {
-        if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
-        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
-        if (!loop_init_3) {
-            uint _e175 = j_3;
-            j_3 = (_e175 + 1u);
+        if (all(loop_bound_11 == uint2(0u, 0u))) { break; }
+        loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
+        if (!loop_init_8) {
+            uint _e175 = j_4;
+            j_4 = (_e175 + 1u);
         }
-        loop_init_3 = false;
-        uint _e41 = j_3;
+        loop_init_8 = false;
+        uint _e41 = j_4;
         if ((_e41 < DOMAINS)) {
         } else {
             break;
         }
         {
-            p_4 = _e33.xy;
-            uint _e46 = j_3;
+            p_6 = _e33.xy;
+            uint _e46 = j_4;
             if ((_e46 > 0u)) {
                 uint _e49 = hr;
                 const uint _e50 = pcg_hash(_e49);
@@ -1445,52 +1814,52 @@ uint reuse_domains(float3 x_13, float3 n_11, float d_6, uint h_2, inout Domain d
                 uint _e53 = hr;
                 const uint _e54 = pcg_hash(_e53);
                 hr = _e54;
-                float2 _e55 = p_4;
+                float2 _e55 = p_6;
                 float _e58 = reuse.radius;
                 uint _e59 = hr;
                 const float _e60 = xi_from_bits(_e59);
                 const float2 _e61 = disk_offset(_e58, _e52, _e60);
-                p_4 = (_e55 + _e61);
+                p_6 = (_e55 + _e61);
             }
-            float2 _e63 = p_4;
-            int2 t_5 = naga_f2i32(round(_e63));
-            if (!((t_5.x < int(0)))) {
-                local_24 = (t_5.y < int(0));
+            float2 _e63 = p_6;
+            int2 t_8 = naga_f2i32(round(_e63));
+            if (!((t_8.x < int(0)))) {
+                local_33 = (t_8.y < int(0));
             } else {
-                local_24 = true;
+                local_33 = true;
             }
-            bool _e76 = local_24;
+            bool _e76 = local_33;
             if (!(_e76)) {
                 uint _e83 = view.width;
-                local_25 = (t_5.x >= int(_e83));
+                local_34 = (t_8.x >= int(_e83));
             } else {
-                local_25 = true;
+                local_34 = true;
             }
-            bool _e87 = local_25;
+            bool _e87 = local_34;
             if (!(_e87)) {
                 uint _e94 = view.height;
-                local_26 = (t_5.y >= int(_e94));
+                local_35 = (t_8.y >= int(_e94));
             } else {
-                local_26 = true;
+                local_35 = true;
             }
-            bool _e98 = local_26;
+            bool _e98 = local_35;
             if (_e98) {
                 continue;
             }
             uint _e103 = view.width;
-            uint pixel = ((uint(t_5.y) * _e103) + uint(t_5.x));
+            uint pixel = ((uint(t_8.y) * _e103) + uint(t_8.x));
             seen = false;
             k_5 = 0u;
-            uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
-            bool loop_init_4 = true;
+            uint2 loop_bound_12 = uint2(4294967295u, 4294967295u);
+            bool loop_init_9 = true;
             while(true) {
-                if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
-                loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-                if (!loop_init_4) {
+                if (all(loop_bound_12 == uint2(0u, 0u))) { break; }
+                loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
+                if (!loop_init_9) {
                     uint _e127 = k_5;
                     k_5 = (_e127 + 1u);
                 }
-                loop_init_4 = false;
+                loop_init_9 = false;
                 uint _e112 = k_5;
                 uint _e113 = nd;
                 if ((_e112 < _e113)) {
@@ -1502,38 +1871,38 @@ uint reuse_domains(float3 x_13, float3 n_11, float d_6, uint h_2, inout Domain d
                     if (!(_e115)) {
                         uint _e119 = k_5;
                         uint _e122 = doms_1[min(uint(_e119), 2u)].pixel;
-                        local_27 = (_e122 == pixel);
+                        local_36 = (_e122 == pixel);
                     } else {
-                        local_27 = true;
+                        local_36 = true;
                     }
-                    bool _e125 = local_27;
+                    bool _e125 = local_36;
                     seen = _e125;
                 }
             }
-            ReuseSurface s_7 = ConstructReuseSurface(asfloat(reuse_prev.Load3(0+pixel*144+0)), asfloat(reuse_prev.Load(0+pixel*144+12)), asfloat(reuse_prev.Load3(0+pixel*144+16)), asuint(reuse_prev.Load(0+pixel*144+28)), asuint(reuse_prev.Load(0+pixel*144+32)), asuint(reuse_prev.Load(0+pixel*144+36)), asuint(reuse_prev.Load(0+pixel*144+40)), asuint(reuse_prev.Load(0+pixel*144+44)));
+            ReuseSurface s_13 = ConstructReuseSurface(asfloat(reuse_prev.Load3(0+pixel*144+0)), asfloat(reuse_prev.Load(0+pixel*144+12)), asfloat(reuse_prev.Load3(0+pixel*144+16)), asuint(reuse_prev.Load(0+pixel*144+28)), asuint(reuse_prev.Load(0+pixel*144+32)), asuint(reuse_prev.Load(0+pixel*144+36)), asuint(reuse_prev.Load(0+pixel*144+40)), asuint(reuse_prev.Load(0+pixel*144+44)));
             bool _e133 = seen;
             if (!(_e133)) {
-                local_28 = !((s_7.m > 0.0));
+                local_37 = !((s_13.m > 0.0));
             } else {
-                local_28 = true;
+                local_37 = true;
             }
-            bool _e142 = local_28;
+            bool _e142 = local_37;
             if (!(_e142)) {
-                const bool _e150 = history_matches(n_11, s_7.n, x_13, dot(s_7.n, s_7.x), d_6);
-                local_29 = !(_e150);
+                const bool _e150 = history_matches(n_12, s_13.n, x_13, dot(s_13.n, s_13.x), d_6);
+                local_38 = !(_e150);
             } else {
-                local_29 = true;
+                local_38 = true;
             }
-            bool _e153 = local_29;
+            bool _e153 = local_38;
             if (_e153) {
                 continue;
             }
             uint _e154 = nd;
             float3 _e160 = reuse.prev_eye;
-            const Material _e161 = reuse_material(s_7, _e160);
+            const Material _e161 = reuse_material(s_13, _e160);
             float _e165 = reuse.max_confidence;
-            uint _e167 = j_3;
-            doms_1[min(uint(_e154), 2u)] = ConstructDomain(pixel, s_7.x, s_7.n, _e161, min(s_7.m, _e165), (_e167 == 0u));
+            uint _e167 = j_4;
+            doms_1[min(uint(_e154), 2u)] = ConstructDomain(pixel, s_13.x, s_13.n, _e161, min(s_13.m, _e165), (_e167 == 0u));
             uint _e171 = nd;
             nd = (_e171 + 1u);
         }
@@ -1550,91 +1919,91 @@ ReuseSlot ConstructReuseSlot(uint arg0, uint arg1, float arg2) {
     return ret;
 }
 
-ReuseSlot gris_combine(uint q_4, ReuseSlot cur, bool cur_ris, float cur_c, uint k0_, uint k1_, float3 x_14, float3 n_12, Material m_5, inout Domain doms_2[3], inout uint hs_1)
+ReuseSlot gris_combine(uint q_4, ReuseSlot cur, bool cur_ris, float cur_c, uint k0_, uint k1_, float3 x_14, float3 n_13, Material m_5, inout Domain doms_2[3], inout uint hs_1)
 {
     float w_sum_3 = 0.0;
     ReuseSlot out_ = ConstructReuseSlot(0u, 0u, 0.0);
     float out_target = 0.0;
-    uint j_4 = (uint)0;
-    ReuseSlot s_5 = (ReuseSlot)0;
-    bool local_30 = (bool)0;
+    uint j_5 = (uint)0;
+    ReuseSlot s_11 = (ReuseSlot)0;
+    bool local_39 = (bool)0;
     float w_in = (float)0;
-    bool local_31 = (bool)0;
+    bool local_40 = (bool)0;
     float own_1 = (float)0;
     float all_1 = (float)0;
     uint k_6 = (uint)0;
-    bool local_32 = (bool)0;
+    bool local_41 = (bool)0;
 
-    j_4 = k0_;
-    uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
-    bool loop_init_5 = true;
+    j_5 = k0_;
+    uint2 loop_bound_13 = uint2(4294967295u, 4294967295u);
+    bool loop_init_10 = true;
     while(true) {
-        if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
-        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
-        if (!loop_init_5) {
-            uint _e137 = j_4;
-            j_4 = (_e137 + 1u);
+        if (all(loop_bound_13 == uint2(0u, 0u))) { break; }
+        loop_bound_13 -= uint2(loop_bound_13.y == 0u, 1u);
+        if (!loop_init_10) {
+            uint _e137 = j_5;
+            j_5 = (_e137 + 1u);
         }
-        loop_init_5 = false;
-        uint _e21 = j_4;
+        loop_init_10 = false;
+        uint _e21 = j_5;
         if ((_e21 <= k1_)) {
         } else {
             break;
         }
         {
-            s_5 = cur;
-            uint _e24 = j_4;
+            s_11 = cur;
+            uint _e24 = j_5;
             if ((_e24 > k0_)) {
-                uint _e27 = j_4;
+                uint _e27 = j_5;
                 uint _e32 = doms_2[min(uint((_e27 - 1u)), 2u)].pixel;
                 ReuseSlot _e36 = ConstructReuseSlot(asuint(reuse_prev.Load(q_4*12+48+_e32*144+0)), asuint(reuse_prev.Load(q_4*12+48+_e32*144+4)), asfloat(reuse_prev.Load(q_4*12+48+_e32*144+8)));
-                s_5 = _e36;
+                s_11 = _e36;
             }
-            float _e38 = s_5.w;
+            float _e38 = s_11.w;
             if (!(!((_e38 > 0.0)))) {
-                uint _e46 = s_5.light;
-                local_30 = (_e46 >= ((NagaBufferLength(lights) - 0) / 64));
+                uint _e46 = s_11.light;
+                local_39 = (_e46 >= ((NagaBufferLength(lights) - 0) / 64));
             } else {
-                local_30 = true;
+                local_39 = true;
             }
-            bool _e51 = local_30;
+            bool _e51 = local_39;
             if (_e51) {
                 continue;
             }
-            uint _e54 = s_5.light;
+            uint _e54 = s_11.light;
             GpuLight _e56 = ConstructGpuLight(asfloat(lights.Load3(_e54*64+0)), asuint(lights.Load(_e54*64+12)), asfloat(lights.Load3(_e54*64+16)), asfloat(lights.Load(_e54*64+28)), asfloat(lights.Load3(_e54*64+32)), asfloat(lights.Load(_e54*64+44)), asfloat(lights.Load3(_e54*64+48)), asuint(lights.Load(_e54*64+60)));
-            uint _e58 = s_5.u;
-            const float _e59 = reuse_target(q_4, _e56, _e58, x_14, n_12, m_5);
+            uint _e58 = s_11.u;
+            const float _e59 = reuse_target(q_4, _e56, _e58, x_14, n_13, m_5);
             if (!((_e59 > 0.0))) {
                 continue;
             }
-            float _e64 = s_5.w;
+            float _e64 = s_11.w;
             w_in = _e64;
-            uint _e66 = j_4;
+            uint _e66 = j_5;
             if ((_e66 == k0_)) {
-                local_31 = cur_ris;
+                local_40 = cur_ris;
             } else {
-                local_31 = false;
+                local_40 = false;
             }
-            bool _e71 = local_31;
+            bool _e71 = local_40;
             if (_e71) {
-                float _e73 = s_5.w;
+                float _e73 = s_11.w;
                 w_in = (_e73 / _e59);
             }
             own_1 = (cur_c * _e59);
             float _e77 = own_1;
             all_1 = _e77;
             k_6 = k0_;
-            uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
-            bool loop_init_6 = true;
+            uint2 loop_bound_14 = uint2(4294967295u, 4294967295u);
+            bool loop_init_11 = true;
             while(true) {
-                if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
-                loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
-                if (!loop_init_6) {
+                if (all(loop_bound_14 == uint2(0u, 0u))) { break; }
+                loop_bound_14 -= uint2(loop_bound_14.y == 0u, 1u);
+                if (!loop_init_11) {
                     uint _e115 = k_6;
                     k_6 = (_e115 + 1u);
                 }
-                loop_init_6 = false;
+                loop_init_11 = false;
                 uint _e80 = k_6;
                 if ((_e80 < k1_)) {
                 } else {
@@ -1643,9 +2012,9 @@ ReuseSlot gris_combine(uint q_4, ReuseSlot cur, bool cur_ris, float cur_c, uint 
                 {
                     uint _e82 = k_6;
                     float _e85 = doms_2[min(uint(_e82), 2u)].c;
-                    uint _e88 = s_5.light;
+                    uint _e88 = s_11.light;
                     GpuLight _e90 = ConstructGpuLight(asfloat(lights_prev.Load3(_e88*64+0)), asuint(lights_prev.Load(_e88*64+12)), asfloat(lights_prev.Load3(_e88*64+16)), asfloat(lights_prev.Load(_e88*64+28)), asfloat(lights_prev.Load3(_e88*64+32)), asfloat(lights_prev.Load(_e88*64+44)), asfloat(lights_prev.Load3(_e88*64+48)), asuint(lights_prev.Load(_e88*64+60)));
-                    uint _e92 = s_5.u;
+                    uint _e92 = s_11.u;
                     uint _e93 = k_6;
                     float3 _e96 = doms_2[min(uint(_e93), 2u)].x;
                     uint _e97 = k_6;
@@ -1653,13 +2022,13 @@ ReuseSlot gris_combine(uint q_4, ReuseSlot cur, bool cur_ris, float cur_c, uint 
                     uint _e101 = k_6;
                     Material _e104 = doms_2[min(uint(_e101), 2u)].m;
                     const float _e105 = reuse_target(q_4, _e90, _e92, _e96, _e100, _e104);
-                    float t_6 = (_e85 * _e105);
+                    float t_9 = (_e85 * _e105);
                     float _e107 = all_1;
-                    all_1 = (_e107 + t_6);
+                    all_1 = (_e107 + t_9);
                     uint _e109 = k_6;
-                    uint _e112 = j_4;
+                    uint _e112 = j_5;
                     if (((_e109 + 1u) == _e112)) {
-                        own_1 = t_6;
+                        own_1 = t_9;
                     }
                 }
             }
@@ -1677,13 +2046,13 @@ ReuseSlot gris_combine(uint q_4, ReuseSlot cur, bool cur_ris, float cur_c, uint 
                 uint _e130 = hs_1;
                 const float _e131 = xi_from_bits(_e130);
                 const bool _e132 = weighted_replace(_e120, _e129, _e131);
-                local_32 = _e132;
+                local_41 = _e132;
             } else {
-                local_32 = false;
+                local_41 = false;
             }
-            bool _e134 = local_32;
+            bool _e134 = local_41;
             if (_e134) {
-                ReuseSlot _e135 = s_5;
+                ReuseSlot _e135 = s_11;
                 out_ = _e135;
                 out_target = _e59;
             }
@@ -1699,10 +2068,25 @@ ReuseSlot gris_combine(uint q_4, ReuseSlot cur, bool cur_ris, float cur_c, uint 
 }
 
 [numthreads(8, 8, 1)]
-void main(uint3 gid : SV_DispatchThreadID)
+void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
 {
+    if (lid == 0) {
+        wg_lo = (float3[64])0;
+        wg_hi = (float3[64])0;
+        wg_box = (WorkgroupBox)0;
+        tile_list = (uint[1024])0;
+        subtree_at = (uint[256])0;
+        tile_scale = (uint)0;
+        tile_total = (uint)0;
+    }
+    GroupMemoryBarrierWithGroupSync();
     bool local = (bool)0;
+    float4 s = (0.0).xxxx;
+    float3 nn = (0.0).xxx;
     bool local_1 = (bool)0;
+    bool local_2 = (bool)0;
+    bool local_3 = (bool)0;
+    float3 n = float3(0.0, 0.0, 1.0);
     Material m = (Material)0;
     float4 lobe = float4(1.0, 0.0, 1.0, 1.0);
     float3 r = (float3)0;
@@ -1716,11 +2100,14 @@ void main(uint3 gid : SV_DispatchThreadID)
     uint count = 0u;
     uint hc = (uint)0;
     float threshold[8] = (float[8])0;
-    uint b = (uint)0;
+    bool local_4 = (bool)0;
+    uint start = 0u;
+    uint j = (uint)0;
+    bool local_5 = (bool)0;
     uint q = (uint)0;
-    bool local_2 = (bool)0;
+    bool local_6 = (bool)0;
     Domain doms[3] = (Domain[3])0;
-    bool local_3 = (bool)0;
+    bool local_7 = (bool)0;
     uint hs = (uint)0;
     ReuseSlot kept[8] = (ReuseSlot[8])0;
     ReuseSlot fin[8] = (ReuseSlot[8])0;
@@ -1731,405 +2118,474 @@ void main(uint3 gid : SV_DispatchThreadID)
     bool visible[8] = (bool[8])0;
     uint k_1 = 0u;
     float3 w = (float3)0;
-    uint j = (uint)0;
     uint j_1 = (uint)0;
+    uint j_2 = (uint)0;
     uint q_2 = 0u;
-    bool local_4 = (bool)0;
+    bool local_8 = (bool)0;
 
-    uint _e4 = view.width;
-    if (!((gid.x >= _e4))) {
+    uint _e5 = view.width;
+    if ((gid.x < _e5)) {
         uint _e12 = view.height;
-        local = (gid.y >= _e12);
+        local = (gid.y < _e12);
     } else {
-        local = true;
+        local = false;
     }
-    bool _e15 = local;
-    if (_e15) {
-        return;
-    }
+    bool inside = local;
     int2 texel_1 = int2(int(gid.x), int(gid.y));
-    const float4 _e21 = surface_at(texel_1);
-    float4 _e24 = normal_tex.Load(int3(texel_1, int(0)));
-    float3 nn = _e24.xyz;
-    float len2_ = dot(nn, nn);
-    if (!((_e21.w <= 0.0))) {
-        local_1 = !((len2_ > 0.0));
+    if (inside) {
+        const float4 _e27 = surface_at(texel_1);
+        s = _e27;
+        float4 _e30 = normal_tex.Load(int3(texel_1, int(0)));
+        nn = _e30.xyz;
+    }
+    float3 _e32 = nn;
+    float3 _e33 = nn;
+    float len2_ = dot(_e32, _e33);
+    float4 _e35 = s;
+    float3 x_17 = _e35.xyz;
+    if (inside) {
+        float _e40 = s.w;
+        local_1 = (_e40 > 0.0);
     } else {
-        local_1 = true;
+        local_1 = false;
     }
-    bool _e37 = local_1;
-    if (_e37) {
-        out_tex[texel_1] = (0.0).xxxx;
-        uint _e45 = view.width;
-        reuse_next.Store(12+0+((gid.y * _e45) + gid.x)*144, asuint(0.0));
-        return;
+    bool _e44 = local_1;
+    if (_e44) {
+        local_2 = (len2_ > 0.0);
+    } else {
+        local_2 = false;
     }
-    float3 x_17 = _e21.xyz;
-    float3 n_15 = (nn / (sqrt(len2_)).xxx);
-    r = n_15;
-    float4 mr = metal_rough_tex.Load(int3(texel_1, int(0)));
-    float4 _e70 = base_color_tex.Load(int3(texel_1, int(0)));
-    float3 _e77 = view.eye;
-    const Material _e80 = material_of(_e70.xyz, mr.z, mr.y, mr.w, normalize((_e77 - x_17)));
-    m = _e80;
-    float3 _e82 = m.base;
-    float _e84 = m.metallic;
-    const float _e86 = bevy_f0_(mr.w);
-    float _e90 = m.alpha;
-    float3 _e92 = m.v;
-    const float4 _e94 = receiver_lobe(_e82, _e84, (_e86).xxx, 1.0, _e90, dot(n_15, _e92));
-    lobe = _e94;
-    float3 _e96 = m.v;
-    const float3 _e97 = mirror_dir(n_15, _e96);
-    r = _e97;
-    float4 _e98 = lobe;
-    const float4 _e99 = range_lobe(_e98);
-    float _e102 = view.shadow_offset;
-    float3 _e105 = view.eye;
-    float eps_3 = (_e102 * length((_e105 - x_17)));
-    uint _e111 = view.seed;
-    uint _e115 = view.width;
-    uint _e121 = view.frame;
-    const uint _e122 = point_stream(_e111, ((gid.y * _e115) + gid.x), _e121);
-    const uint _e123 = pick_stream(_e122);
-    h = _e123;
-    hc = _e122;
-    const uint _e146 = bsh_first(BSH);
-    float3 _e147 = r;
-    const uint _e148 = bsh_next_leaf_lobe(BSH, _e146, x_17, _e147, _e99);
-    b = _e148;
-    uint2 loop_bound_9 = uint2(4294967295u, 4294967295u);
-    bool loop_init_7 = true;
-    while(true) {
-        if (all(loop_bound_9 == uint2(0u, 0u))) { break; }
-        loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
-        if (!loop_init_7) {
-            uint _e223 = b;
-            uint _e226 = asuint(bsh_nodes.Load(20+_e223*32));
-            float3 _e227 = r;
-            const uint _e228 = bsh_next_leaf_lobe(BSH, _e226, x_17, _e227, _e99);
-            b = _e228;
-        }
-        loop_init_7 = false;
-        uint _e150 = b;
-        if ((_e150 != BSH_NONE)) {
-        } else {
-            break;
-        }
-        {
-            uint _e153 = count;
-            count = (_e153 + 1u);
-            uint _e157 = b;
-            uint li_3 = asuint(bsh_nodes.Load(24+_e157*32));
-            uint _e161 = h;
-            const uint _e162 = pcg_hash(_e161);
-            h = _e162;
-            uint h1_1 = h;
-            uint _e164 = h;
-            const uint _e165 = pcg_hash(_e164);
-            h = _e165;
-            uint _e166 = h;
-            const uint _e167 = grid_cells(h1_1, _e166);
-            const float _e168 = grid_coordinate(h1_1);
-            uint _e169 = h;
-            const float _e170 = grid_coordinate(_e169);
-            float2 u_5 = float2(_e168, _e170);
-            float3 _e172 = r;
-            Material _e173 = m;
-            const Shaded _e178 = shade_pick_traced(li_3, x_17, n_15, _e172, _e99, _e173, 1.0, u_5.x, u_5.y, eps_3, false);
-            const float3 _e179 = output_of(_e178);
-            const float _e180 = resample_target(_e179);
-            if ((_e180 > 0.0)) {
-                float3 _e183 = total;
-                total = (_e183 + _e179);
-                q = 0u;
-                uint2 loop_bound_10 = uint2(4294967295u, 4294967295u);
-                bool loop_init_8 = true;
-                while(true) {
-                    if (all(loop_bound_10 == uint2(0u, 0u))) { break; }
-                    loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
-                    if (!loop_init_8) {
-                        uint _e219 = q;
-                        q = (_e219 + 1u);
-                    }
-                    loop_init_8 = false;
-                    uint _e187 = q;
-                    if ((_e187 < K)) {
-                    } else {
-                        break;
-                    }
-                    {
-                        uint _e190 = q;
-                        const float _e192 = slot_target(_e179, _e190, K);
-                        float3 _e193 = total;
-                        uint _e194 = q;
-                        const float _e196 = slot_target(_e193, _e194, K);
-                        if ((_e192 > 0.0)) {
-                            uint _e201 = q;
-                            float _e203 = threshold[min(uint(_e201), 7u)];
-                            local_2 = (_e196 > _e203);
-                        } else {
-                            local_2 = false;
-                        }
-                        bool _e206 = local_2;
-                        if (_e206) {
-                            uint _e207 = q;
-                            slot_light[min(uint(_e207), 7u)] = li_3;
-                            uint _e209 = q;
-                            slot_u[min(uint(_e209), 7u)] = u_5;
-                            uint _e211 = q;
-                            slot_p[min(uint(_e211), 7u)] = _e192;
-                            uint _e213 = q;
-                            slot_cells[min(uint(_e213), 7u)] = _e167;
-                            uint _e215 = q;
-                            const float _e217 = next_threshold(_e196, hc);
-                            threshold[min(uint(_e215), 7u)] = _e217;
-                        }
-                    }
-                }
-            }
-        }
-    }
-    uint _e232 = view.width;
-    uint pixel_1 = ((gid.y * _e232) + gid.x);
-    float3 _e239 = view.eye;
-    const uint _e243 = reuse_stream(_e122, 0u);
-    const uint _e244 = reuse_domains(x_17, n_15, length((_e239 - x_17)), _e243, doms);
-    if ((_e244 > 0u)) {
-        bool _e251 = doms[0].temporal;
-        local_3 = _e251;
+    bool _e50 = local_2;
+    if (_e50) {
+        local_3 = all((abs(x_17) <= (3.4028235e38).xxx));
     } else {
         local_3 = false;
     }
-    bool own_history = local_3;
-    uint first_1 = (own_history ? 1u : 0u);
-    float _e259 = doms[0].c;
-    float confidence = (1.0 + (own_history ? _e259 : 0.0));
-    const uint _e265 = reuse_stream(_e122, 1u);
-    hs = _e265;
-    uint2 loop_bound_11 = uint2(4294967295u, 4294967295u);
-    bool loop_init_9 = true;
+    bool has_2 = local_3;
+    if (has_2) {
+        float3 _e65 = nn;
+        n = (_e65 / (sqrt(len2_)).xxx);
+    }
+    float3 _e76 = n;
+    r = _e76;
+    if (has_2) {
+        float4 mr = metal_rough_tex.Load(int3(texel_1, int(0)));
+        float4 _e83 = base_color_tex.Load(int3(texel_1, int(0)));
+        float3 _e90 = view.eye;
+        const Material _e93 = material_of(_e83.xyz, mr.z, mr.y, mr.w, normalize((_e90 - x_17)));
+        m = _e93;
+        float3 _e95 = m.base;
+        float _e97 = m.metallic;
+        const float _e99 = bevy_f0_(mr.w);
+        float _e103 = m.alpha;
+        float3 _e104 = n;
+        float3 _e106 = m.v;
+        const float4 _e108 = receiver_lobe(_e95, _e97, (_e99).xxx, 1.0, _e103, dot(_e104, _e106));
+        lobe = _e108;
+        float3 _e109 = n;
+        float3 _e111 = m.v;
+        const float3 _e112 = mirror_dir(_e109, _e111);
+        r = _e112;
+    }
+    float4 _e113 = lobe;
+    const float4 _e114 = range_lobe(_e113);
+    float _e117 = view.shadow_offset;
+    float3 _e120 = view.eye;
+    float eps_3 = (_e117 * length((_e120 - x_17)));
+    uint _e126 = view.seed;
+    uint _e130 = view.width;
+    uint _e136 = view.frame;
+    const uint _e137 = point_stream(_e126, ((gid.y * _e130) + gid.x), _e136);
+    const uint _e138 = pick_stream(_e137);
+    h = _e138;
+    hc = _e137;
+    if (has_2) {
+        local_4 = (_e114.w >= 0.0);
+    } else {
+        local_4 = false;
+    }
+    bool _e166 = local_4;
+    const TileWalk _e167 = tile_walk_begin(lid, x_17, _e114.w, _e166);
+    uint2 loop_bound_15 = uint2(4294967295u, 4294967295u);
+    bool loop_init_12 = true;
     while(true) {
-        if (all(loop_bound_11 == uint2(0u, 0u))) { break; }
-        loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
-        if (!loop_init_9) {
-            uint _e316 = q_1;
-            q_1 = (_e316 + 1u);
+        if (all(loop_bound_15 == uint2(0u, 0u))) { break; }
+        loop_bound_15 -= uint2(loop_bound_15.y == 0u, 1u);
+        if (!loop_init_12) {
+            uint _e266 = start;
+            start = (_e266 + TILE_LIST);
         }
-        loop_init_9 = false;
-        uint _e271 = q_1;
-        if ((_e271 < K)) {
+        loop_init_12 = false;
+        uint _e170 = start;
+        if ((_e170 < _e167.total)) {
         } else {
             break;
         }
         {
-            uint _e274 = q_1;
-            uint _e276 = q_1;
-            uint _e277 = q_1;
-            uint _e279 = slot_light[min(uint(_e277), 7u)];
-            uint _e280 = q_1;
-            uint _e282 = slot_cells[min(uint(_e280), 7u)];
-            float3 _e283 = total;
-            uint _e284 = q_1;
-            const float _e286 = slot_target(_e283, _e284, K);
-            uint _e287 = q_1;
-            float _e289 = slot_p[min(uint(_e287), 7u)];
-            Material _e298 = m;
-            const ReuseSlot _e299 = gris_combine(_e276, ConstructReuseSlot(_e279, _e282, ((_e289 > 0.0) ? _e286 : 0.0)), true, 1.0, 0u, first_1, x_17, n_15, _e298, doms, hs);
-            kept[min(uint(_e274), 7u)] = _e299;
-            uint _e300 = q_1;
-            uint _e302 = q_1;
-            ReuseSlot _e304 = kept[min(uint(_e302), 7u)];
-            fin[min(uint(_e300), 7u)] = _e304;
-            if ((_e244 > first_1)) {
-                uint _e306 = q_1;
-                uint _e308 = q_1;
-                uint _e309 = q_1;
-                ReuseSlot _e311 = kept[min(uint(_e309), 7u)];
-                Material _e313 = m;
-                const ReuseSlot _e314 = gris_combine(_e308, _e311, false, confidence, first_1, _e244, x_17, n_15, _e313, doms, hs);
-                fin[min(uint(_e306), 7u)] = _e314;
+            uint _e173 = start;
+            const uint _e174 = tile_walk_fill(lid, _e167, _e173);
+            j = 0u;
+            uint2 loop_bound_16 = uint2(4294967295u, 4294967295u);
+            bool loop_init_13 = true;
+            while(true) {
+                if (all(loop_bound_16 == uint2(0u, 0u))) { break; }
+                loop_bound_16 -= uint2(loop_bound_16.y == 0u, 1u);
+                if (!loop_init_13) {
+                    uint _e264 = j;
+                    j = (_e264 + 1u);
+                }
+                loop_init_13 = false;
+                uint _e177 = j;
+                if ((_e177 < _e174)) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e180 = j;
+                    uint b_10 = tile_list[min(uint(_e180), 1023u)];
+                    if (!(!(has_2))) {
+                        BshNode _e189 = ConstructBshNode(asfloat(bsh_nodes.Load3(b_10*32+0)), asfloat(bsh_nodes.Load(b_10*32+12)), asuint(bsh_nodes.Load(b_10*32+16)), asuint(bsh_nodes.Load(b_10*32+20)), asuint(bsh_nodes.Load(b_10*32+24)), asfloat(bsh_nodes.Load(b_10*32+28)));
+                        float3 _e190 = r;
+                        const bool _e191 = bsh_reaches(_e189, x_17, _e190, _e114);
+                        local_5 = !(_e191);
+                    } else {
+                        local_5 = true;
+                    }
+                    bool _e194 = local_5;
+                    if (_e194) {
+                        continue;
+                    }
+                    uint li_7 = asuint(bsh_nodes.Load(24+b_10*32));
+                    uint _e199 = count;
+                    count = (_e199 + 1u);
+                    uint _e202 = h;
+                    const uint _e203 = pcg_hash(_e202);
+                    h = _e203;
+                    uint h1_1 = h;
+                    uint _e205 = h;
+                    const uint _e206 = pcg_hash(_e205);
+                    h = _e206;
+                    uint _e207 = h;
+                    const uint _e208 = grid_cells(h1_1, _e207);
+                    const float _e209 = grid_coordinate(h1_1);
+                    uint _e210 = h;
+                    const float _e211 = grid_coordinate(_e210);
+                    float2 u_5 = float2(_e209, _e211);
+                    float3 _e213 = n;
+                    float3 _e214 = r;
+                    Material _e215 = m;
+                    const Shaded _e220 = shade_pick_traced(li_7, x_17, _e213, _e214, _e114, _e215, 1.0, u_5.x, u_5.y, eps_3, false);
+                    const float3 _e221 = output_of(_e220);
+                    const float _e222 = resample_target(_e221);
+                    if ((_e222 > 0.0)) {
+                        float3 _e225 = total;
+                        total = (_e225 + _e221);
+                        q = 0u;
+                        uint2 loop_bound_17 = uint2(4294967295u, 4294967295u);
+                        bool loop_init_14 = true;
+                        while(true) {
+                            if (all(loop_bound_17 == uint2(0u, 0u))) { break; }
+                            loop_bound_17 -= uint2(loop_bound_17.y == 0u, 1u);
+                            if (!loop_init_14) {
+                                uint _e261 = q;
+                                q = (_e261 + 1u);
+                            }
+                            loop_init_14 = false;
+                            uint _e229 = q;
+                            if ((_e229 < K)) {
+                            } else {
+                                break;
+                            }
+                            {
+                                uint _e232 = q;
+                                const float _e234 = slot_target(_e221, _e232, K);
+                                float3 _e235 = total;
+                                uint _e236 = q;
+                                const float _e238 = slot_target(_e235, _e236, K);
+                                if ((_e234 > 0.0)) {
+                                    uint _e243 = q;
+                                    float _e245 = threshold[min(uint(_e243), 7u)];
+                                    local_6 = (_e238 > _e245);
+                                } else {
+                                    local_6 = false;
+                                }
+                                bool _e248 = local_6;
+                                if (_e248) {
+                                    uint _e249 = q;
+                                    slot_light[min(uint(_e249), 7u)] = li_7;
+                                    uint _e251 = q;
+                                    slot_u[min(uint(_e251), 7u)] = u_5;
+                                    uint _e253 = q;
+                                    slot_p[min(uint(_e253), 7u)] = _e234;
+                                    uint _e255 = q;
+                                    slot_cells[min(uint(_e255), 7u)] = _e208;
+                                    uint _e257 = q;
+                                    const float _e259 = next_threshold(_e238, hc);
+                                    threshold[min(uint(_e257), 7u)] = _e259;
+                                }
+                            }
+                        }
+                    }
+                }
+            }
+            GroupMemoryBarrierWithGroupSync();
+        }
+    }
+    if (!(has_2)) {
+        if (inside) {
+            out_tex[texel_1] = (0.0).xxxx;
+            uint _e277 = view.width;
+            reuse_next.Store(12+0+((gid.y * _e277) + gid.x)*144, asuint(0.0));
+        }
+        return;
+    }
+    uint _e288 = view.width;
+    uint pixel_1 = ((gid.y * _e288) + gid.x);
+    float3 _e293 = n;
+    float3 _e296 = view.eye;
+    const uint _e300 = reuse_stream(_e137, 0u);
+    const uint _e301 = reuse_domains(x_17, _e293, length((_e296 - x_17)), _e300, doms);
+    if ((_e301 > 0u)) {
+        bool _e308 = doms[0].temporal;
+        local_7 = _e308;
+    } else {
+        local_7 = false;
+    }
+    bool own_history = local_7;
+    uint first_1 = (own_history ? 1u : 0u);
+    float _e316 = doms[0].c;
+    float confidence = (1.0 + (own_history ? _e316 : 0.0));
+    const uint _e322 = reuse_stream(_e137, 1u);
+    hs = _e322;
+    uint2 loop_bound_18 = uint2(4294967295u, 4294967295u);
+    bool loop_init_15 = true;
+    while(true) {
+        if (all(loop_bound_18 == uint2(0u, 0u))) { break; }
+        loop_bound_18 -= uint2(loop_bound_18.y == 0u, 1u);
+        if (!loop_init_15) {
+            uint _e375 = q_1;
+            q_1 = (_e375 + 1u);
+        }
+        loop_init_15 = false;
+        uint _e328 = q_1;
+        if ((_e328 < K)) {
+        } else {
+            break;
+        }
+        {
+            uint _e331 = q_1;
+            uint _e333 = q_1;
+            uint _e334 = q_1;
+            uint _e336 = slot_light[min(uint(_e334), 7u)];
+            uint _e337 = q_1;
+            uint _e339 = slot_cells[min(uint(_e337), 7u)];
+            float3 _e340 = total;
+            uint _e341 = q_1;
+            const float _e343 = slot_target(_e340, _e341, K);
+            uint _e344 = q_1;
+            float _e346 = slot_p[min(uint(_e344), 7u)];
+            float3 _e355 = n;
+            Material _e356 = m;
+            const ReuseSlot _e357 = gris_combine(_e333, ConstructReuseSlot(_e336, _e339, ((_e346 > 0.0) ? _e343 : 0.0)), true, 1.0, 0u, first_1, x_17, _e355, _e356, doms, hs);
+            kept[min(uint(_e331), 7u)] = _e357;
+            uint _e358 = q_1;
+            uint _e360 = q_1;
+            ReuseSlot _e362 = kept[min(uint(_e360), 7u)];
+            fin[min(uint(_e358), 7u)] = _e362;
+            if ((_e301 > first_1)) {
+                uint _e364 = q_1;
+                uint _e366 = q_1;
+                uint _e367 = q_1;
+                ReuseSlot _e369 = kept[min(uint(_e367), 7u)];
+                float3 _e371 = n;
+                Material _e372 = m;
+                const ReuseSlot _e373 = gris_combine(_e366, _e369, false, confidence, first_1, _e301, x_17, _e371, _e372, doms, hs);
+                fin[min(uint(_e364), 7u)] = _e373;
             }
         }
     }
-    uint2 loop_bound_12 = uint2(4294967295u, 4294967295u);
-    bool loop_init_10 = true;
+    uint2 loop_bound_19 = uint2(4294967295u, 4294967295u);
+    bool loop_init_16 = true;
     while(true) {
-        if (all(loop_bound_12 == uint2(0u, 0u))) { break; }
-        loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
-        if (!loop_init_10) {
-            uint _e357 = k;
-            k = (_e357 + 1u);
+        if (all(loop_bound_19 == uint2(0u, 0u))) { break; }
+        loop_bound_19 -= uint2(loop_bound_19.y == 0u, 1u);
+        if (!loop_init_16) {
+            uint _e416 = k;
+            k = (_e416 + 1u);
         }
-        loop_init_10 = false;
-        uint _e322 = k;
-        if ((_e322 < K)) {
+        loop_init_16 = false;
+        uint _e381 = k;
+        if ((_e381 < K)) {
         } else {
             break;
         }
         {
-            uint _e325 = k;
-            uint _e327 = k;
-            uint _e330 = fin[min(uint(_e327), 7u)].light;
-            uint _e332 = k;
-            uint _e335 = fin[min(uint(_e332), 7u)].u;
-            uint _e337 = k;
-            uint _e340 = fin[min(uint(_e337), 7u)].light;
-            uint _e343 = asuint(lights.Load(12+_e340*64));
-            keys[min(uint(_e325), 7u)] = uint2(_e330, ((_e343 == LIGHT_TRIANGLE) ? _e335 : 0u));
-            uint _e348 = k;
-            uint _e350 = k;
-            float _e353 = fin[min(uint(_e350), 7u)].w;
-            held[min(uint(_e348), 7u)] = (_e353 > 0.0);
+            uint _e384 = k;
+            uint _e386 = k;
+            uint _e389 = fin[min(uint(_e386), 7u)].light;
+            uint _e391 = k;
+            uint _e394 = fin[min(uint(_e391), 7u)].u;
+            uint _e396 = k;
+            uint _e399 = fin[min(uint(_e396), 7u)].light;
+            uint _e402 = asuint(lights.Load(12+_e399*64));
+            keys[min(uint(_e384), 7u)] = uint2(_e389, ((_e402 == LIGHT_TRIANGLE) ? _e394 : 0u));
+            uint _e407 = k;
+            uint _e409 = k;
+            float _e412 = fin[min(uint(_e409), 7u)].w;
+            held[min(uint(_e407), 7u)] = (_e412 > 0.0);
         }
     }
-    uint2 _e359[8] = keys;
-    bool _e360[8] = held;
-    const uint _e361[8] = first_holders(_e359, _e360);
-    uint2 loop_bound_13 = uint2(4294967295u, 4294967295u);
-    bool loop_init_11 = true;
+    uint2 _e418[8] = keys;
+    bool _e419[8] = held;
+    const uint _e420[8] = first_holders(_e418, _e419);
+    uint2 loop_bound_20 = uint2(4294967295u, 4294967295u);
+    bool loop_init_17 = true;
     while(true) {
-        if (all(loop_bound_13 == uint2(0u, 0u))) { break; }
-        loop_bound_13 -= uint2(loop_bound_13.y == 0u, 1u);
-        if (!loop_init_11) {
-            uint _e446 = k_1;
-            k_1 = (_e446 + 1u);
+        if (all(loop_bound_20 == uint2(0u, 0u))) { break; }
+        loop_bound_20 -= uint2(loop_bound_20.y == 0u, 1u);
+        if (!loop_init_17) {
+            uint _e508 = k_1;
+            k_1 = (_e508 + 1u);
         }
-        loop_init_11 = false;
-        uint _e365 = k_1;
-        if ((_e365 < K)) {
+        loop_init_17 = false;
+        uint _e424 = k_1;
+        if ((_e424 < K)) {
         } else {
             break;
         }
         {
-            uint _e368 = k_1;
-            uint _e370 = k_1;
-            if ((_e361[min(uint(_e368), 7u)] != _e370)) {
+            uint _e427 = k_1;
+            uint _e429 = k_1;
+            if ((_e420[min(uint(_e427), 7u)] != _e429)) {
                 continue;
             }
             w = (0.0).xxx;
-            uint _e375 = k_1;
-            j = _e375;
-            uint2 loop_bound_14 = uint2(4294967295u, 4294967295u);
-            bool loop_init_12 = true;
+            uint _e434 = k_1;
+            j_1 = _e434;
+            uint2 loop_bound_21 = uint2(4294967295u, 4294967295u);
+            bool loop_init_18 = true;
             while(true) {
-                if (all(loop_bound_14 == uint2(0u, 0u))) { break; }
-                loop_bound_14 -= uint2(loop_bound_14.y == 0u, 1u);
-                if (!loop_init_12) {
-                    uint _e395 = j;
-                    j = (_e395 + 1u);
+                if (all(loop_bound_21 == uint2(0u, 0u))) { break; }
+                loop_bound_21 -= uint2(loop_bound_21.y == 0u, 1u);
+                if (!loop_init_18) {
+                    uint _e454 = j_1;
+                    j_1 = (_e454 + 1u);
                 }
-                loop_init_12 = false;
-                uint _e377 = j;
-                if ((_e377 < K)) {
+                loop_init_18 = false;
+                uint _e436 = j_1;
+                if ((_e436 < K)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e380 = j;
-                    uint _e382 = k_1;
-                    if ((_e361[min(uint(_e380), 7u)] == _e382)) {
-                        float3 _e384 = w;
-                        uint _e385 = j;
-                        float _e388 = fin[min(uint(_e385), 7u)].w;
-                        uint _e389 = j;
-                        const float3 _e391 = slot_share(_e389, K);
-                        w = (_e384 + (_e388 * _e391));
+                    uint _e439 = j_1;
+                    uint _e441 = k_1;
+                    if ((_e420[min(uint(_e439), 7u)] == _e441)) {
+                        float3 _e443 = w;
+                        uint _e444 = j_1;
+                        float _e447 = fin[min(uint(_e444), 7u)].w;
+                        uint _e448 = j_1;
+                        const float3 _e450 = slot_share(_e448, K);
+                        w = (_e443 + (_e447 * _e450));
                     }
                 }
             }
-            uint _e398 = k_1;
-            uint _e401 = fin[min(uint(_e398), 7u)].light;
-            GpuLight _e403 = ConstructGpuLight(asfloat(lights.Load3(_e401*64+0)), asuint(lights.Load(_e401*64+12)), asfloat(lights.Load3(_e401*64+16)), asfloat(lights.Load(_e401*64+28)), asfloat(lights.Load3(_e401*64+32)), asfloat(lights.Load(_e401*64+44)), asfloat(lights.Load3(_e401*64+48)), asuint(lights.Load(_e401*64+60)));
-            uint _e407 = k_1;
-            uint _e410 = fin[min(uint(_e407), 7u)].u;
-            const float _e411 = grid_coordinate(_e410);
-            uint _e412 = k_1;
-            uint _e415 = fin[min(uint(_e412), 7u)].u;
-            const float _e418 = grid_coordinate((_e415 << 16u));
-            const Connection _e420 = connect_record(_e403, x_17, n_15, n_15, UNRANGED, UNRANGED, 1.0, _e411, _e418, eps_3, true);
-            Material _e421 = m;
-            const Shaded _e422 = shade_connection(_e420, x_17, n_15, _e421);
-            Shaded _e423 = t;
-            float3 _e424 = w;
-            const Shaded _e425 = scaled(_e422, _e424);
-            const Shaded _e426 = add(_e423, _e425);
-            t = _e426;
-            uint _e427 = k_1;
-            j_1 = _e427;
-            uint2 loop_bound_15 = uint2(4294967295u, 4294967295u);
-            bool loop_init_13 = true;
+            uint _e457 = k_1;
+            uint _e460 = fin[min(uint(_e457), 7u)].light;
+            GpuLight _e462 = ConstructGpuLight(asfloat(lights.Load3(_e460*64+0)), asuint(lights.Load(_e460*64+12)), asfloat(lights.Load3(_e460*64+16)), asfloat(lights.Load(_e460*64+28)), asfloat(lights.Load3(_e460*64+32)), asfloat(lights.Load(_e460*64+44)), asfloat(lights.Load3(_e460*64+48)), asuint(lights.Load(_e460*64+60)));
+            float3 _e463 = n;
+            float3 _e464 = n;
+            uint _e468 = k_1;
+            uint _e471 = fin[min(uint(_e468), 7u)].u;
+            const float _e472 = grid_coordinate(_e471);
+            uint _e473 = k_1;
+            uint _e476 = fin[min(uint(_e473), 7u)].u;
+            const float _e479 = grid_coordinate((_e476 << 16u));
+            const Connection _e481 = connect_record(_e462, x_17, _e463, _e464, UNRANGED, UNRANGED, 1.0, _e472, _e479, eps_3, true);
+            float3 _e482 = n;
+            Material _e483 = m;
+            const Shaded _e484 = shade_connection(_e481, x_17, _e482, _e483);
+            Shaded _e485 = t;
+            float3 _e486 = w;
+            const Shaded _e487 = scaled(_e484, _e486);
+            const Shaded _e488 = add(_e485, _e487);
+            t = _e488;
+            uint _e489 = k_1;
+            j_2 = _e489;
+            uint2 loop_bound_22 = uint2(4294967295u, 4294967295u);
+            bool loop_init_19 = true;
             while(true) {
-                if (all(loop_bound_15 == uint2(0u, 0u))) { break; }
-                loop_bound_15 -= uint2(loop_bound_15.y == 0u, 1u);
-                if (!loop_init_13) {
-                    uint _e443 = j_1;
-                    j_1 = (_e443 + 1u);
+                if (all(loop_bound_22 == uint2(0u, 0u))) { break; }
+                loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
+                if (!loop_init_19) {
+                    uint _e505 = j_2;
+                    j_2 = (_e505 + 1u);
                 }
-                loop_init_13 = false;
-                uint _e429 = j_1;
-                if ((_e429 < K)) {
+                loop_init_19 = false;
+                uint _e491 = j_2;
+                if ((_e491 < K)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e432 = j_1;
-                    uint _e434 = k_1;
-                    if ((_e361[min(uint(_e432), 7u)] == _e434)) {
-                        uint _e436 = j_1;
-                        const float3 _e438 = output_of(_e422);
-                        const float _e439 = resample_target(_e438);
-                        visible[min(uint(_e436), 7u)] = (_e439 > 0.0);
+                    uint _e494 = j_2;
+                    uint _e496 = k_1;
+                    if ((_e420[min(uint(_e494), 7u)] == _e496)) {
+                        uint _e498 = j_2;
+                        const float3 _e500 = output_of(_e484);
+                        const float _e501 = resample_target(_e500);
+                        visible[min(uint(_e498), 7u)] = (_e501 > 0.0);
                     }
                 }
             }
         }
     }
-    uint2 loop_bound_16 = uint2(4294967295u, 4294967295u);
-    bool loop_init_14 = true;
+    uint2 loop_bound_23 = uint2(4294967295u, 4294967295u);
+    bool loop_init_20 = true;
     while(true) {
-        if (all(loop_bound_16 == uint2(0u, 0u))) { break; }
-        loop_bound_16 -= uint2(loop_bound_16.y == 0u, 1u);
-        if (!loop_init_14) {
-            uint _e487 = q_2;
-            q_2 = (_e487 + 1u);
+        if (all(loop_bound_23 == uint2(0u, 0u))) { break; }
+        loop_bound_23 -= uint2(loop_bound_23.y == 0u, 1u);
+        if (!loop_init_20) {
+            uint _e549 = q_2;
+            q_2 = (_e549 + 1u);
         }
-        loop_init_14 = false;
-        uint _e450 = q_2;
-        if ((_e450 < K)) {
+        loop_init_20 = false;
+        uint _e512 = q_2;
+        if ((_e512 < K)) {
         } else {
             break;
         }
         {
-            uint _e455 = reuse.visibility;
-            if (!((_e455 == 0u))) {
-                uint _e461 = q_2;
-                bool _e463 = visible[min(uint(_e461), 7u)];
-                local_4 = _e463;
+            uint _e517 = reuse.visibility;
+            if (!((_e517 == 0u))) {
+                uint _e523 = q_2;
+                bool _e525 = visible[min(uint(_e523), 7u)];
+                local_8 = _e525;
             } else {
-                local_4 = true;
+                local_8 = true;
             }
-            bool keep = local_4;
-            uint _e469 = q_2;
-            uint _e471 = q_2;
-            uint _e474 = kept[min(uint(_e471), 7u)].light;
-            uint _e475 = q_2;
-            uint _e478 = kept[min(uint(_e475), 7u)].u;
-            uint _e479 = q_2;
-            float _e482 = kept[min(uint(_e479), 7u)].w;
+            bool keep = local_8;
+            uint _e531 = q_2;
+            uint _e533 = q_2;
+            uint _e536 = kept[min(uint(_e533), 7u)].light;
+            uint _e537 = q_2;
+            uint _e540 = kept[min(uint(_e537), 7u)].u;
+            uint _e541 = q_2;
+            float _e544 = kept[min(uint(_e541), 7u)].w;
             {
-                ReuseSlot _value4 = ConstructReuseSlot(_e474, _e478, (keep ? _e482 : 0.0));
-                reuse_next.Store(_e469*12+48+pixel_1*144+0, asuint(_value4.light));
-                reuse_next.Store(_e469*12+48+pixel_1*144+4, asuint(_value4.u));
-                reuse_next.Store(_e469*12+48+pixel_1*144+8, asuint(_value4.w));
+                ReuseSlot _value4 = ConstructReuseSlot(_e536, _e540, (keep ? _e544 : 0.0));
+                reuse_next.Store(_e531*12+48+pixel_1*144+0, asuint(_value4.light));
+                reuse_next.Store(_e531*12+48+pixel_1*144+4, asuint(_value4.u));
+                reuse_next.Store(_e531*12+48+pixel_1*144+8, asuint(_value4.w));
             }
         }
     }
-    Material _e492 = m;
-    float _e495 = reuse.max_confidence;
-    const ReuseSurface _e497 = reuse_surface(x_17, n_15, _e492, min(confidence, _e495));
+    float3 _e554 = n;
+    Material _e555 = m;
+    float _e558 = reuse.max_confidence;
+    const ReuseSurface _e560 = reuse_surface(x_17, _e554, _e555, min(confidence, _e558));
     {
-        ReuseSurface _value2 = _e497;
+        ReuseSurface _value2 = _e560;
         reuse_next.Store3(0+pixel_1*144+0, asuint(_value2.x));
         reuse_next.Store(0+pixel_1*144+12, asuint(_value2.m));
         reuse_next.Store3(0+pixel_1*144+16, asuint(_value2.n));
@@ -2139,9 +2595,9 @@ void main(uint3 gid : SV_DispatchThreadID)
         reuse_next.Store(0+pixel_1*144+40, asuint(_value2.pad1_));
         reuse_next.Store(0+pixel_1*144+44, asuint(_value2.pad2_));
     }
-    float3 _e500 = t.diffuse;
-    float3 _e502 = t.specular;
-    uint _e504 = count;
-    out_tex[texel_1] = float4((_e500 + _e502), float(_e504));
+    float3 _e563 = t.diffuse;
+    float3 _e565 = t.specular;
+    uint _e567 = count;
+    out_tex[texel_1] = float4((_e563 + _e565), float(_e567));
     return;
 }

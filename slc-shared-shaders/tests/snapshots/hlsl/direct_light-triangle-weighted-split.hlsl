@@ -75,9 +75,28 @@ struct Connection {
 struct WeightedPicks {
     uint light[8];
     float w[8];
+    float threshold[8];
     float w_sum;
     uint n;
     uint h;
+};
+
+struct WorkgroupBox {
+    float3 lo;
+    int _pad1_0;
+    float3 hi;
+    int _end_pad_0;
+};
+
+struct TileWalk {
+    float3 lo;
+    int _pad1_0;
+    float3 hi;
+    float w;
+    uint total;
+    int _end_pad_0;
+    int _end_pad_1;
+    int _end_pad_2;
 };
 
 struct Shaded {
@@ -162,6 +181,11 @@ static const float TEMPORAL_CHANGE_HIGH = 8.0;
 static const float TEMPORAL_MIN_WEIGHT = 0.01;
 static const uint K = 8u;
 static const uint BSH = 0u;
+static const uint BSH_TILE_DEPTH = 8u;
+static const uint BSH_TILE_SUBTREES = 256u;
+static const uint TILE_THREADS = 64u;
+static const uint BOX_THREADS = 64u;
+static const uint TILE_LIST = 1024u;
 
 ByteAddressBuffer geo_nodes : register(t6, space1);
 ByteAddressBuffer geo_tris : register(t7, space1);
@@ -177,6 +201,13 @@ ByteAddressBuffer rt2_5 : register(t2, space1);
 ByteAddressBuffer r2_4 : register(t3, space1);
 ByteAddressBuffer bsh_nodes : register(t4, space1);
 ByteAddressBuffer light_cones : register(t5, space1);
+groupshared float3 wg_lo[64];
+groupshared float3 wg_hi[64];
+groupshared WorkgroupBox wg_box;
+groupshared uint tile_list[1024];
+groupshared uint subtree_at[256];
+groupshared uint tile_scale;
+groupshared uint tile_total;
 
 float to_f32_(uint u)
 {
@@ -245,6 +276,13 @@ bool sphere_contains_point(float3 c, float r_1, float3 x_1)
     return (dot(v_6, v_6) <= (r_1 * r_1));
 }
 
+bool sphere_overlaps_aabb(float3 c_1, float r_2, float3 bmin, float3 bmax)
+{
+    float3 q = clamp(c_1, bmin, bmax);
+    float3 v_7 = (q - c_1);
+    return (dot(v_7, v_7) <= (r_2 * r_2));
+}
+
 float inverse_square(float d2_2)
 {
     return (1.0 / max(d2_2, MIN_D2_));
@@ -257,48 +295,48 @@ float connection_factor(float cos_x, float d2_3, float rt2_1, float w)
     return (((cos_x * _e4) * _e6) * w);
 }
 
-float connection_cosine(float3 x_2, float3 y, float3 n, float3 ng, float r2_1)
+float connection_cosine(float3 x_2, float3 y, float3 n_1, float3 ng, float r2_1)
 {
-    bool local_2 = (bool)0;
-    bool local_3 = (bool)0;
+    bool local_6 = (bool)0;
+    bool local_7 = (bool)0;
 
-    float3 v_7 = (x_2 - y);
-    float d2_7 = dot(v_7, v_7);
+    float3 v_8 = (x_2 - y);
+    float d2_7 = dot(v_8, v_8);
     const bool _e7 = slc_keep(r2_1, d2_7);
     if (!(!(_e7))) {
-        local_2 = !((d2_7 > 0.0));
+        local_6 = !((d2_7 > 0.0));
     } else {
-        local_2 = true;
+        local_6 = true;
     }
-    bool _e16 = local_2;
+    bool _e16 = local_6;
     if (_e16) {
         return 0.0;
     }
-    float3 w_6 = (v_7 / (sqrt(d2_7)).xxx);
-    float cos_x_1 = -(dot(n, w_6));
+    float3 w_10 = (v_8 / (sqrt(d2_7)).xxx);
+    float cos_x_1 = -(dot(n_1, w_10));
     if (!((cos_x_1 <= 0.0))) {
-        local_3 = (dot(ng, w_6) >= 0.0);
+        local_7 = (dot(ng, w_10) >= 0.0);
     } else {
-        local_3 = true;
+        local_7 = true;
     }
-    bool _e32 = local_3;
+    bool _e32 = local_7;
     if (_e32) {
         return 0.0;
     }
     return cos_x_1;
 }
 
-float triangle_lobe(float3 n_1, float area, float3 w_1)
+float triangle_lobe(float3 n_2, float area, float3 w_1)
 {
-    return (area * max(dot(n_1, w_1), 0.0));
+    return (area * max(dot(n_2, w_1), 0.0));
 }
 
-float3 triangle_sample(float3 a_2, float3 b_2, float3 c_1, float u1_, float u2_)
+float3 triangle_sample(float3 a_2, float3 b_2, float3 c_2, float u1_, float u2_)
 {
     float su = sqrt(u1_);
     float b0_ = (1.0 - su);
     float b1_ = (u2_ * su);
-    return (((a_2 * b0_) + (b_2 * b1_)) + (c_1 * ((1.0 - b0_) - b1_)));
+    return (((a_2 * b0_) + (b_2 * b1_)) + (c_2 * ((1.0 - b0_) - b1_)));
 }
 
 float bsh_scaled_radius(BshNode node, float scale)
@@ -343,8 +381,8 @@ float ggx_d(float cos_h, float sin2_h, float alpha)
         return 0.0;
     }
     float a2_ = (alpha * alpha);
-    float t_1 = (((cos_h * cos_h) * a2_) + sin2_h);
-    return ((a2_ * INV_PI) / (t_1 * t_1));
+    float t_4 = (((cos_h * cos_h) * a2_) + sin2_h);
+    return ((a2_ * INV_PI) / (t_4 * t_4));
 }
 
 float smith_root(float cos_, float alpha_1)
@@ -355,14 +393,14 @@ float smith_root(float cos_, float alpha_1)
 
 float smith_visibility(float n_l, float n_v, float alpha_2)
 {
-    bool local_4 = (bool)0;
+    bool local_8 = (bool)0;
 
     if (!((n_l <= 0.0))) {
-        local_4 = (n_v <= 0.0);
+        local_8 = (n_v <= 0.0);
     } else {
-        local_4 = true;
+        local_8 = true;
     }
-    bool _e11 = local_4;
+    bool _e11 = local_8;
     if (_e11) {
         return 0.0;
     }
@@ -373,9 +411,9 @@ float smith_visibility(float n_l, float n_v, float alpha_2)
 
 float3 fresnel_schlick(float3 f0_, float f90_, float v_h)
 {
-    float c_7 = saturate((1.0 - v_h));
-    float c2_ = (c_7 * c_7);
-    return (f0_ + ((float3(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_7)));
+    float c_8 = saturate((1.0 - v_h));
+    float c2_ = (c_8 * c_8);
+    return (f0_ + ((float3(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_8)));
 }
 
 float3 specular_fresnel(float3 base, float metallic, float3 f0_d, float f90_d, float v_h_1)
@@ -393,77 +431,77 @@ float3 diffuse_brdf(float3 base_1, float metallic_1, float3 f0_d_1, float f90_d_
 
 float half_cosine(float3 v, float3 l)
 {
-    float3 h_3 = (v + l);
-    float len2_ = dot(h_3, h_3);
+    float3 h_4 = (v + l);
+    float len2_ = dot(h_4, h_4);
     if ((len2_ <= 0.0)) {
         return 0.0;
     }
-    return saturate((dot(v, h_3) / sqrt(len2_)));
+    return saturate((dot(v, h_4) / sqrt(len2_)));
 }
 
-float3 specular_brdf(float3 base_2, float metallic_2, float3 f0_d_2, float f90_d_2, float alpha_3, float3 n_2, float3 v_1, float3 l_1)
+float3 specular_brdf(float3 base_2, float metallic_2, float3 f0_d_2, float f90_d_2, float alpha_3, float3 n_3, float3 v_1, float3 l_1)
 {
-    bool local_5 = (bool)0;
+    bool local_9 = (bool)0;
 
-    float n_l_1 = dot(n_2, l_1);
-    float n_v_2 = dot(n_2, v_1);
+    float n_l_1 = dot(n_3, l_1);
+    float n_v_2 = dot(n_3, v_1);
     if (!((n_l_1 <= 0.0))) {
-        local_5 = (n_v_2 <= 0.0);
+        local_9 = (n_v_2 <= 0.0);
     } else {
-        local_5 = true;
+        local_9 = true;
     }
-    bool _e18 = local_5;
+    bool _e18 = local_9;
     if (_e18) {
         return float3(0.0, 0.0, 0.0);
     }
     float3 hs = (v_1 + l_1);
     float inv = (1.0 / sqrt(dot(hs, hs)));
-    float3 h_4 = (hs * inv);
-    float3 c_8 = cross(n_2, h_4);
-    const float _e32 = ggx_d(dot(n_2, h_4), dot(c_8, c_8), alpha_3);
-    const float3 _e34 = specular_fresnel(base_2, metallic_2, f0_d_2, f90_d_2, dot(v_1, h_4));
+    float3 h_5 = (hs * inv);
+    float3 c_9 = cross(n_3, h_5);
+    const float _e32 = ggx_d(dot(n_3, h_5), dot(c_9, c_9), alpha_3);
+    const float3 _e34 = specular_fresnel(base_2, metallic_2, f0_d_2, f90_d_2, dot(v_1, h_5));
     const float _e35 = smith_visibility(n_l_1, n_v_2, alpha_3);
     return (_e34 * (_e32 * _e35));
 }
 
 bool has_specular(float metallic_3, float3 f0_d_3, float f90_d_3)
 {
-    bool local_6 = (bool)0;
-    bool local_7 = (bool)0;
+    bool local_10 = (bool)0;
+    bool local_11 = (bool)0;
 
     if (!((metallic_3 > 0.0))) {
-        local_6 = (f90_d_3 > 0.0);
+        local_10 = (f90_d_3 > 0.0);
     } else {
-        local_6 = true;
+        local_10 = true;
     }
-    bool _e11 = local_6;
+    bool _e11 = local_10;
     if (!(_e11)) {
-        local_7 = (max(max(f0_d_3.x, f0_d_3.y), f0_d_3.z) > 0.0);
+        local_11 = (max(max(f0_d_3.x, f0_d_3.y), f0_d_3.z) > 0.0);
     } else {
-        local_7 = true;
+        local_11 = true;
     }
-    bool _e23 = local_7;
+    bool _e23 = local_11;
     return _e23;
 }
 
-float channel_mean(float3 c_2)
+float channel_mean(float3 c_3)
 {
-    return (((c_2.x + c_2.y) + c_2.z) * 0.33333334);
+    return (((c_3.x + c_3.y) + c_3.z) * 0.33333334);
 }
 
 float4 receiver_lobe(float3 base_3, float metallic_4, float3 f0_d_4, float f90_d_4, float alpha_4, float n_v_1)
 {
-    bool local_8 = (bool)0;
+    bool local_12 = (bool)0;
 
     const float3 _e10 = fresnel_schlick(f0_d_4, f90_d_4, n_v_1);
     const float _e16 = channel_mean((((float3(1.0, 1.0, 1.0) - _e10) * base_3) * (1.0 - metallic_4)));
     if (!((n_v_1 <= 0.0))) {
         const bool _e22 = has_specular(metallic_4, f0_d_4, f90_d_4);
-        local_8 = !(_e22);
+        local_12 = !(_e22);
     } else {
-        local_8 = true;
+        local_12 = true;
     }
-    bool _e25 = local_8;
+    bool _e25 = local_12;
     if (_e25) {
         return float4(_e16, 0.0, alpha_4, n_v_1);
     }
@@ -503,9 +541,9 @@ float4 range_lobe(float4 lobe_4)
     return float4(lobe_4.x, _e10, (lobe_4.z * lobe_4.z), sqrt(_e14));
 }
 
-float3 mirror_dir(float3 n_3, float3 v_2)
+float3 mirror_dir(float3 n_4, float3 v_2)
 {
-    return ((n_3 * (2.0 * dot(n_3, v_2))) - v_2);
+    return ((n_4 * (2.0 * dot(n_4, v_2))) - v_2);
 }
 
 float cos_sub_clamped(float sin_a, float cos_a, float sin_b, float cos_b)
@@ -537,11 +575,11 @@ float subtended_cos(float dist2_, float r2_2)
 
 float4 emitter_cone(float3 center_, float radius, float3 axis, float cos_o, float3 p)
 {
-    float3 v_8 = (p - center_);
-    float dist2_1 = dot(v_8, v_8);
+    float3 v_9 = (p - center_);
+    float dist2_1 = dot(v_9, v_9);
     float r2_5 = (radius * radius);
     float d2_8 = max(max(dist2_1, r2_5), MIN_D2_);
-    float3 wi = ((dist2_1 > 0.0) ? (v_8 / (sqrt(dist2_1)).xxx) : float3(0.0, 0.0, 0.0));
+    float3 wi = ((dist2_1 > 0.0) ? (v_9 / (sqrt(dist2_1)).xxx) : float3(0.0, 0.0, 0.0));
     float cos_w = dot(axis, wi);
     const float _e25 = safe_sqrt((1.0 - (cos_w * cos_w)));
     const float _e26 = subtended_cos(dist2_1, r2_5);
@@ -564,54 +602,54 @@ float emitter_importance(float3 center_1, float radius_1, float phi, float3 axis
 
 float cone_cos_of(float3 v_3, float d2_4, float a_3, float3 d)
 {
-    bool local_9 = (bool)0;
-    bool local_10 = (bool)0;
+    bool local_13 = (bool)0;
+    bool local_14 = (bool)0;
 
     float vd = dot(v_3, d);
     float h2_ = (d2_4 - (a_3 * a_3));
     if (!((h2_ <= 0.0))) {
         if ((vd >= 0.0)) {
-            local_10 = ((vd * vd) >= h2_);
+            local_14 = ((vd * vd) >= h2_);
         } else {
-            local_10 = false;
+            local_14 = false;
         }
-        bool _e19 = local_10;
-        local_9 = _e19;
+        bool _e19 = local_14;
+        local_13 = _e19;
     } else {
-        local_9 = true;
+        local_13 = true;
     }
-    bool _e21 = local_9;
+    bool _e21 = local_13;
     if (_e21) {
         return 1.0;
     }
-    float3 c_9 = cross(v_3, d);
-    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_9, c_9)) * a_3)) / d2_4), 1.0);
+    float3 c_10 = cross(v_3, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_10, c_10)) * a_3)) / d2_4), 1.0);
 }
 
 float cone_cos_toward(float3 center_2, float radius_2, float3 p_2, float3 d_1)
 {
-    float3 v_9 = (center_2 - p_2);
-    const float _e6 = cone_cos_of(v_9, dot(v_9, v_9), radius_2, d_1);
+    float3 v_10 = (center_2 - p_2);
+    const float _e6 = cone_cos_of(v_10, dot(v_10, v_10), radius_2, d_1);
     return _e6;
 }
 
 float range_scale_at(float4 rl, float cos_t)
 {
-    float t_2 = (((0.5 + (0.5 * cos_t)) * (rl.z - 1.0)) + 1.0);
-    return clamp((rl.x + ((rl.y * rl.z) / (t_2 * t_2))), 1.0, (rl.w * rl.w));
+    float t_5 = (((0.5 + (0.5 * cos_t)) * (rl.z - 1.0)) + 1.0);
+    return clamp((rl.x + ((rl.y * rl.z) / (t_5 * t_5))), 1.0, (rl.w * rl.w));
 }
 
-float range_scale_toward(float4 rl_1, float3 center_3, float radius_3, float3 p_3, float3 r_2)
+float range_scale_toward(float4 rl_1, float3 center_3, float radius_3, float3 p_3, float3 r_3)
 {
     if ((rl_1.w <= 1.0)) {
         return 1.0;
     }
-    const float _e9 = cone_cos_toward(center_3, radius_3, p_3, r_2);
+    const float _e9 = cone_cos_toward(center_3, radius_3, p_3, r_3);
     const float _e10 = range_scale_at(rl_1, _e9);
     return _e10;
 }
 
-float light_importance(float3 center_4, float radius_4, float phi_1, float3 axis_2, float cos_o_2, float cos_e_1, float3 p_4, float3 n_4)
+float light_importance(float3 center_4, float radius_4, float phi_1, float3 axis_2, float cos_o_2, float cos_e_1, float3 p_4, float3 n_5)
 {
     float imp = (float)0;
 
@@ -620,10 +658,10 @@ float light_importance(float3 center_4, float radius_4, float phi_1, float3 axis
         return 0.0;
     }
     imp = ((phi_1 * _e8.x) / _e8.y);
-    if ((dot(n_4, n_4) > 0.0)) {
-        float3 v_10 = (center_4 - p_4);
-        float dist2_2 = dot(v_10, v_10);
-        float cos_i = dot(((dist2_2 > 0.0) ? (v_10 / (sqrt(dist2_2)).xxx) : float3(0.0, 0.0, 0.0)), n_4);
+    if ((dot(n_5, n_5) > 0.0)) {
+        float3 v_11 = (center_4 - p_4);
+        float dist2_2 = dot(v_11, v_11);
+        float cos_i = dot(((dist2_2 > 0.0) ? (v_11 / (sqrt(dist2_2)).xxx) : float3(0.0, 0.0, 0.0)), n_5);
         float _e33 = imp;
         const float _e37 = safe_sqrt((1.0 - (cos_i * cos_i)));
         const float _e40 = cos_sub_clamped(_e37, cos_i, _e8.w, _e8.z);
@@ -633,22 +671,22 @@ float light_importance(float3 center_4, float radius_4, float phi_1, float3 axis
     return max(_e44, 0.0);
 }
 
-float glossy_importance(float3 center_5, float radius_5, float phi_2, float3 axis_3, float cos_o_3, float cos_e_2, float3 p_5, float3 n_5, float3 r_3, float4 lobe_5)
+float glossy_importance(float3 center_5, float radius_5, float phi_2, float3 axis_3, float cos_o_3, float cos_e_2, float3 p_5, float3 n_6, float3 r_4, float4 lobe_5)
 {
-    bool local_11 = (bool)0;
+    bool local_15 = (bool)0;
 
     const float _e10 = emitter_importance(center_5, radius_5, phi_2, axis_3, cos_o_3, cos_e_2, p_5);
-    const float _e11 = cone_cos_toward(center_5, radius_5, p_5, n_5);
+    const float _e11 = cone_cos_toward(center_5, radius_5, p_5, n_6);
     if (!((_e10 <= 0.0))) {
-        local_11 = (_e11 <= 0.0);
+        local_15 = (_e11 <= 0.0);
     } else {
-        local_11 = true;
+        local_15 = true;
     }
-    bool _e20 = local_11;
+    bool _e20 = local_15;
     if (_e20) {
         return 0.0;
     }
-    const float _e22 = cone_cos_toward(center_5, radius_5, p_5, r_3);
+    const float _e22 = cone_cos_toward(center_5, radius_5, p_5, r_4);
     const float _e27 = safe_sqrt((0.5 + (0.5 * _e22)));
     const float _e33 = ggx_d(_e27, (1.0 - (_e27 * _e27)), lobe_5.z);
     const float _e39 = smith_root(lobe_5.w, lobe_5.z);
@@ -662,16 +700,16 @@ float candidate_weight(float importance, float rt2_2, float d2_5)
     return (importance * _e3);
 }
 
-float cone_weight(float3 center_6, float radius_6, float phi_3, float3 axis_4, float cos_o_4, float cos_e_3, float rt2_3, float3 p_6, float3 n_6, float3 r_4, float4 lobe_6)
+float cone_weight(float3 center_6, float radius_6, float phi_3, float3 axis_4, float cos_o_4, float cos_e_3, float rt2_3, float3 p_6, float3 n_7, float3 r_5, float4 lobe_6)
 {
-    float3 v_11 = (p_6 - center_6);
+    float3 v_12 = (p_6 - center_6);
     if ((lobe_6.y <= 0.0)) {
-        const float _e15 = light_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_6);
-        const float _e19 = candidate_weight((_e15 * INV_PI), rt2_3, dot(v_11, v_11));
+        const float _e15 = light_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_7);
+        const float _e19 = candidate_weight((_e15 * INV_PI), rt2_3, dot(v_12, v_12));
         return _e19;
     }
-    const float _e20 = glossy_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_6, r_4, lobe_6);
-    const float _e22 = candidate_weight(_e20, rt2_3, dot(v_11, v_11));
+    const float _e20 = glossy_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_7, r_5, lobe_6);
+    const float _e22 = candidate_weight(_e20, rt2_3, dot(v_12, v_12));
     return _e22;
 }
 
@@ -693,83 +731,83 @@ float3 ray_inverse3_(float3 d_2)
     return float3(_e2, _e4, _e6);
 }
 
-float ray_aabb(float3 o, float3 inv_d, float3 bmin, float3 bmax, float t_max)
+float ray_aabb(float3 o, float3 inv_d, float3 bmin_1, float3 bmax_1, float t_max)
 {
-    float3 t0_ = ((bmin - o) * inv_d);
-    float3 t1_ = ((bmax - o) * inv_d);
-    float3 lo = min(t0_, t1_);
-    float3 hi = max(t0_, t1_);
-    float t_in = max(max(lo.x, lo.y), max(lo.z, 0.0));
-    float t_out = min(min(hi.x, hi.y), min(hi.z, t_max));
+    float3 t0_ = ((bmin_1 - o) * inv_d);
+    float3 t1_ = ((bmax_1 - o) * inv_d);
+    float3 lo_3 = min(t0_, t1_);
+    float3 hi_3 = max(t0_, t1_);
+    float t_in = max(max(lo_3.x, lo_3.y), max(lo_3.z, 0.0));
+    float t_out = min(min(hi_3.x, hi_3.y), min(hi_3.z, t_max));
     if ((t_in <= t_out)) {
         return t_in;
     }
     return -1.0;
 }
 
-float3 triangle_normal(float3 a_4, float3 b_3, float3 c_3)
+float3 triangle_normal(float3 a_4, float3 b_3, float3 c_4)
 {
-    bool local_12 = (bool)0;
+    bool local_16 = (bool)0;
 
-    float3 n_14 = cross((b_3 - a_4), (c_3 - a_4));
+    float3 n_14 = cross((b_3 - a_4), (c_4 - a_4));
     float l2_ = dot(n_14, n_14);
     if (!(!((l2_ > 0.0)))) {
-        local_12 = !((l2_ < 3e38));
+        local_16 = !((l2_ < 3e38));
     } else {
-        local_12 = true;
+        local_16 = true;
     }
-    bool _e17 = local_12;
+    bool _e17 = local_16;
     if (_e17) {
         return float3(0.0, 0.0, 0.0);
     }
     return (n_14 / (sqrt(l2_)).xxx);
 }
 
-float ray_triangle(float3 o_1, float3 d_3, float3 a_5, float3 b_4, float3 c_4, float t_min, float t_max_1)
+float ray_triangle(float3 o_1, float3 d_3, float3 a_5, float3 b_4, float3 c_5, float t_min, float t_max_1)
 {
-    bool local_13 = (bool)0;
-    bool local_14 = (bool)0;
-    bool local_15 = (bool)0;
+    bool local_17 = (bool)0;
+    bool local_18 = (bool)0;
+    bool local_19 = (bool)0;
 
     float3 e1_ = (b_4 - a_5);
-    float3 e2_ = (c_4 - a_5);
-    float3 p_7 = cross(d_3, e2_);
-    float det = dot(e1_, p_7);
+    float3 e2_ = (c_5 - a_5);
+    float3 p_9 = cross(d_3, e2_);
+    float det = dot(e1_, p_9);
     if ((abs(det) <= 0.0)) {
         return -1.0;
     }
     float inv_1 = (1.0 / det);
-    float3 s_3 = (o_1 - a_5);
-    float u_3 = (dot(s_3, p_7) * inv_1);
+    float3 s_9 = (o_1 - a_5);
+    float u_3 = (dot(s_9, p_9) * inv_1);
     if (!((u_3 < 0.0))) {
-        local_13 = (u_3 > 1.0);
+        local_17 = (u_3 > 1.0);
     } else {
-        local_13 = true;
+        local_17 = true;
     }
-    bool _e28 = local_13;
+    bool _e28 = local_17;
     if (_e28) {
         return -1.0;
     }
-    float3 q = cross(s_3, e1_);
-    float v_12 = (dot(d_3, q) * inv_1);
-    if (!((v_12 < 0.0))) {
-        local_14 = ((u_3 + v_12) > 1.0);
+    float3 q_1 = cross(s_9, e1_);
+    float v_13 = (dot(d_3, q_1) * inv_1);
+    if (!((v_13 < 0.0))) {
+        local_18 = ((u_3 + v_13) > 1.0);
     } else {
-        local_14 = true;
+        local_18 = true;
     }
-    bool _e42 = local_14;
+    bool _e42 = local_18;
     if (_e42) {
         return -1.0;
     }
-    float t_3 = (dot(e2_, q) * inv_1);
-    if ((t_3 > t_min)) {
-        local_15 = (t_3 < t_max_1);
+    float t_6 = (dot(e2_, q_1) * inv_1);
+    if ((t_6 > t_min)) {
+        local_19 = (t_6 < t_max_1);
     } else {
-        local_15 = false;
+        local_19 = false;
     }
-    bool _e51 = local_15;
+    bool _e51 = local_19;
     if (_e51) {
-        return t_3;
+        return t_6;
     }
     return -1.0;
 }
@@ -868,9 +906,9 @@ GeoHit trace(float3 o_2, float3 d_4, float t_min_1, float t_max_2, bool any_hit)
                     }
                     {
                         uint _e42 = i;
-                        GpuTriangle t_4 = ConstructGpuTriangle(asfloat(geo_tris.Load3(_e42*48+0)), asuint(geo_tris.Load(_e42*48+12)), asfloat(geo_tris.Load3(_e42*48+16)), asuint(geo_tris.Load(_e42*48+28)), asfloat(geo_tris.Load3(_e42*48+32)), asuint(geo_tris.Load(_e42*48+44)));
+                        GpuTriangle t_7 = ConstructGpuTriangle(asfloat(geo_tris.Load3(_e42*48+0)), asuint(geo_tris.Load(_e42*48+12)), asfloat(geo_tris.Load3(_e42*48+16)), asuint(geo_tris.Load(_e42*48+28)), asfloat(geo_tris.Load3(_e42*48+32)), asuint(geo_tris.Load(_e42*48+44)));
                         float _e49 = hit.t;
-                        const float _e50 = ray_triangle(o_2, d_4, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e49);
+                        const float _e50 = ray_triangle(o_2, d_4, t_7.v0_, t_7.v1_, t_7.v2_, t_min_1, _e49);
                         if ((_e50 > 0.0)) {
                             hit.t = _e50;
                             uint _e55 = i;
@@ -954,17 +992,17 @@ uint bsh_first(uint nodes_2)
     return BSH_NONE;
 }
 
-float bsh_inner_scale(float a_7, float3 v_4, float d2_6, float3 r_5, float4 rl_2)
+float bsh_inner_scale(float a_7, float3 v_4, float d2_6, float3 r_6, float4 rl_2)
 {
-    const float _e5 = cone_cos_of(v_4, d2_6, a_7, r_5);
+    const float _e5 = cone_cos_of(v_4, d2_6, a_7, r_6);
     const float _e8 = range_scale_at(rl_2, (_e5 + 2e-6));
     return _e8;
 }
 
-bool bsh_reaches(BshNode node_3, float3 x_5, float3 r_6, float4 rl_3)
+bool bsh_reaches(BshNode node_3, float3 x_5, float3 r_7, float4 rl_3)
 {
-    bool local_16 = (bool)0;
-    bool local_17 = (bool)0;
+    bool local_20 = (bool)0;
+    bool local_21 = (bool)0;
 
     const bool _e6 = sphere_contains_point(node_3.center_, node_3.radius, x_5);
     if (_e6) {
@@ -972,69 +1010,125 @@ bool bsh_reaches(BshNode node_3, float3 x_5, float3 r_6, float4 rl_3)
     }
     if (!((rl_3.w <= 1.0))) {
         const bool _e20 = sphere_contains_point(node_3.center_, (node_3.radius * (rl_3.w * 1.0001)), x_5);
-        local_16 = !(_e20);
+        local_20 = !(_e20);
     } else {
-        local_16 = true;
+        local_20 = true;
     }
-    bool _e23 = local_16;
+    bool _e23 = local_20;
     if (_e23) {
         return false;
     }
     const float _e25 = bsh_range_bound(node_3);
-    float3 v_13 = (x_5 - node_3.center_);
-    float d2_9 = dot(v_13, v_13);
+    float3 v_14 = (x_5 - node_3.center_);
+    float d2_9 = dot(v_14, v_14);
     float reach_max = (node_3.extent + ((rl_3.w * 1.001) * _e25));
     if ((d2_9 > (reach_max * reach_max))) {
         return false;
     }
     if ((node_3.child == BSH_NONE)) {
-        const float _e43 = range_scale_toward(rl_3, node_3.center_, node_3.extent, x_5, r_6);
+        const float _e43 = range_scale_toward(rl_3, node_3.center_, node_3.extent, x_5, r_7);
         const float _e46 = bsh_scaled_radius(node_3, sqrt(_e43));
         const bool _e47 = sphere_contains_point(node_3.center_, _e46, x_5);
         return _e47;
     }
-    const float _e50 = bsh_inner_scale(node_3.extent, -(v_13), d2_9, r_6, rl_3);
+    const float _e50 = bsh_inner_scale(node_3.extent, -(v_14), d2_9, r_7, rl_3);
     float s_c = (_e50 * 1.001);
     float reach = (node_3.extent + (sqrt(s_c) * _e25));
     if ((d2_9 <= ((node_3.radius * node_3.radius) * s_c))) {
-        local_17 = (d2_9 <= (reach * reach));
+        local_21 = (d2_9 <= (reach * reach));
     } else {
-        local_17 = false;
+        local_21 = false;
     }
-    bool _e67 = local_17;
+    bool _e67 = local_21;
     return _e67;
 }
 
-uint bsh_next_leaf_lobe(uint nodes_3, uint start, float3 x_6, float3 r_7, float4 rl_4)
+bool bsh_reaches_box(BshNode node_4, float3 lo, float3 hi, float w_4)
+{
+    const bool _e13 = sphere_overlaps_aabb(node_4.center_, (node_4.radius * (max(1.0, (w_4 * 1.0001)) * 1.0001)), lo, hi);
+    return _e13;
+}
+
+uint bsh_subtree(uint nodes_3, uint s_1, uint depth)
 {
     uint i_2 = (uint)0;
+    uint level = 0u;
+    bool local_22 = (bool)0;
 
-    i_2 = start;
+    const uint _e3 = bsh_first(nodes_3);
+    i_2 = _e3;
     uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
         loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
-        uint _e6 = i_2;
-        if ((_e6 != BSH_NONE)) {
+        uint _e7 = level;
+        if ((_e7 < depth)) {
+            uint _e11 = i_2;
+            local_22 = (_e11 != BSH_NONE);
+        } else {
+            local_22 = false;
+        }
+        bool _e15 = local_22;
+        if (_e15) {
         } else {
             break;
         }
         {
-            uint _e9 = i_2;
-            const BshNode _e10 = bsh_node(nodes_3, _e9);
-            const bool _e11 = bsh_reaches(_e10, x_6, r_7, rl_4);
+            uint _e16 = i_2;
+            const BshNode _e17 = bsh_node(nodes_3, _e16);
+            uint _e18 = level;
+            uint below = (depth - _e18);
+            if ((_e17.child == BSH_NONE)) {
+                if (((s_1 << (32u - below)) != 0u)) {
+                    return BSH_NONE;
+                }
+                uint _e29 = i_2;
+                return _e29;
+            }
+            if ((((s_1 >> (below - 1u)) & 1u) == 0u)) {
+                i_2 = _e17.child;
+            } else {
+                const BshNode _e39 = bsh_node(nodes_3, _e17.child);
+                i_2 = _e39.next;
+            }
+            uint _e41 = level;
+            level = (_e41 + 1u);
+        }
+    }
+    uint _e44 = i_2;
+    return _e44;
+}
+
+uint bsh_next_leaf_box(uint nodes_4, uint start_1, uint end, float3 lo_1, float3 hi_1, float w_5)
+{
+    uint i_3 = (uint)0;
+
+    i_3 = start_1;
+    uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
+    while(true) {
+        if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
+        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+        uint _e7 = i_3;
+        if ((_e7 != end)) {
+        } else {
+            break;
+        }
+        {
+            uint _e9 = i_3;
+            const BshNode _e10 = bsh_node(nodes_4, _e9);
+            const bool _e11 = bsh_reaches_box(_e10, lo_1, hi_1, w_5);
             if (_e11) {
                 if ((_e10.child == BSH_NONE)) {
-                    uint _e15 = i_2;
+                    uint _e15 = i_3;
                     return _e15;
                 }
-                i_2 = _e10.child;
+                i_3 = _e10.child;
             } else {
-                i_2 = _e10.next;
+                i_3 = _e10.next;
             }
         }
     }
-    return BSH_NONE;
+    return end;
 }
 
 float next_threshold(float sum, inout uint h_1)
@@ -1048,46 +1142,46 @@ float next_threshold(float sum, inout uint h_1)
     return _e6;
 }
 
-Connection connect_record(GpuLight l_4, float3 x_7, float3 n_7, float3 ng_1, float r2_3, float rt2_4, float w_res, float u1_2, float u2_2, float eps, bool trace_1)
+Connection connect_record(GpuLight l_4, float3 x_6, float3 n_8, float3 ng_1, float r2_3, float rt2_4, float w_res, float u1_2, float u2_2, float eps, bool trace_1)
 {
-    Connection c_5 = (Connection)0;
-    bool local_18 = (bool)0;
-    bool local_19 = (bool)0;
+    Connection c_6 = (Connection)0;
+    bool local_23 = (bool)0;
+    bool local_24 = (bool)0;
 
-    c_5.e = (0.0).xxx;
+    c_6.e = (0.0).xxx;
     const float3 _e16 = light_point(l_4, u1_2, u2_2);
-    c_5.y = _e16;
-    float3 _e19 = c_5.y;
-    const float _e20 = connection_cosine(x_7, _e19, n_7, ng_1, r2_3);
-    c_5.cos_x = _e20;
-    float _e22 = c_5.cos_x;
+    c_6.y = _e16;
+    float3 _e19 = c_6.y;
+    const float _e20 = connection_cosine(x_6, _e19, n_8, ng_1, r2_3);
+    c_6.cos_x = _e20;
+    float _e22 = c_6.cos_x;
     if (!((_e22 <= 0.0))) {
         if (trace_1) {
-            float3 _e33 = c_5.y;
-            const bool _e34 = occluded((x_7 + (ng_1 * eps)), _e33);
-            local_19 = _e34;
+            float3 _e33 = c_6.y;
+            const bool _e34 = occluded((x_6 + (ng_1 * eps)), _e33);
+            local_24 = _e34;
         } else {
-            local_19 = false;
+            local_24 = false;
         }
-        bool _e36 = local_19;
-        local_18 = _e36;
+        bool _e36 = local_24;
+        local_23 = _e36;
     } else {
-        local_18 = true;
+        local_23 = true;
     }
-    bool _e38 = local_18;
+    bool _e38 = local_23;
     if (_e38) {
-        Connection _e39 = c_5;
+        Connection _e39 = c_6;
         const Connection connection = _e39;
         return connection;
     }
-    float3 _e41 = c_5.y;
-    float3 v_14 = (x_7 - _e41);
-    float d2_10 = dot(v_14, v_14);
-    const float3 _e48 = light_intensity(l_4, (v_14 / (sqrt(d2_10)).xxx));
-    float _e50 = c_5.cos_x;
+    float3 _e41 = c_6.y;
+    float3 v_15 = (x_6 - _e41);
+    float d2_10 = dot(v_15, v_15);
+    const float3 _e48 = light_intensity(l_4, (v_15 / (sqrt(d2_10)).xxx));
+    float _e50 = c_6.cos_x;
     const float _e51 = connection_factor(_e50, d2_10, rt2_4, w_res);
-    c_5.e = (_e48 * _e51);
-    Connection _e53 = c_5;
+    c_6.e = (_e48 * _e51);
+    Connection _e53 = c_6;
     const Connection connection_1 = _e53;
     return connection_1;
 }
@@ -1105,12 +1199,12 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
     return ret;
 }
 
-Connection connect_traced(uint li, float3 x_8, float3 n_8, float3 ng_2, float s, float w_res_1, float u1_3, float u2_3, float eps_1, bool trace_2)
+Connection connect_traced(uint li, float3 x_7, float3 n_9, float3 ng_2, float s_2, float w_res_1, float u1_3, float u2_3, float eps_1, bool trace_2)
 {
     GpuLight _e12 = ConstructGpuLight(asfloat(lights.Load3(li*64+0)), asuint(lights.Load(li*64+12)), asfloat(lights.Load3(li*64+16)), asfloat(lights.Load(li*64+28)), asfloat(lights.Load3(li*64+32)), asfloat(lights.Load(li*64+44)), asfloat(lights.Load3(li*64+48)), asuint(lights.Load(li*64+60)));
     float _e15 = asfloat(r2_4.Load(li*4));
     float _e19 = asfloat(rt2_5.Load(li*4));
-    const Connection _e21 = connect_record(_e12, x_8, n_8, ng_2, (s * _e15), (s * _e19), w_res_1, u1_3, u2_3, eps_1, trace_2);
+    const Connection _e21 = connect_record(_e12, x_7, n_9, ng_2, (s_2 * _e15), (s_2 * _e19), w_res_1, u1_3, u2_3, eps_1, trace_2);
     const Connection connection_2 = _e21;
     return connection_2;
 }
@@ -1128,146 +1222,407 @@ GpuLightCone ConstructGpuLightCone(float3 arg0, float arg1, float3 arg2, float a
     return ret;
 }
 
-float light_range_scale(uint li_1, float3 x_9, float3 r_8, float4 rl_5)
+float light_range_scale(uint li_1, float3 x_8, float3 r_8, float4 rl_4)
 {
-    GpuLightCone c_10 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_1*48+0)), asfloat(light_cones.Load(li_1*48+12)), asfloat(light_cones.Load3(li_1*48+16)), asfloat(light_cones.Load(li_1*48+28)), asfloat(light_cones.Load(li_1*48+32)), asfloat(light_cones.Load(li_1*48+36)), asuint(light_cones.Load(li_1*48+40)), asuint(light_cones.Load(li_1*48+44)));
-    const float _e9 = range_scale_toward(rl_5, c_10.center_, c_10.radius, x_9, r_8);
+    GpuLightCone c_11 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_1*48+0)), asfloat(light_cones.Load(li_1*48+12)), asfloat(light_cones.Load3(li_1*48+16)), asfloat(light_cones.Load(li_1*48+28)), asfloat(light_cones.Load(li_1*48+32)), asfloat(light_cones.Load(li_1*48+36)), asuint(light_cones.Load(li_1*48+40)), asuint(light_cones.Load(li_1*48+44)));
+    const float _e9 = range_scale_toward(rl_4, c_11.center_, c_11.radius, x_8, r_8);
     return _e9;
 }
 
-float light_weight(uint li_2, float3 x_10, float3 n_9, float3 r_9, float4 lobe_7, float4 rl_6)
+float light_weight(uint li_2, float3 x_9, float3 n_10, float3 r_9, float4 lobe_7, float4 rl_5)
 {
-    GpuLightCone c_11 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_2*48+0)), asfloat(light_cones.Load(li_2*48+12)), asfloat(light_cones.Load3(li_2*48+16)), asfloat(light_cones.Load(li_2*48+28)), asfloat(light_cones.Load(li_2*48+32)), asfloat(light_cones.Load(li_2*48+36)), asuint(light_cones.Load(li_2*48+40)), asuint(light_cones.Load(li_2*48+44)));
-    const float _e15 = light_range_scale(li_2, x_10, r_9, rl_6);
+    GpuLightCone c_12 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_2*48+0)), asfloat(light_cones.Load(li_2*48+12)), asfloat(light_cones.Load3(li_2*48+16)), asfloat(light_cones.Load(li_2*48+28)), asfloat(light_cones.Load(li_2*48+32)), asfloat(light_cones.Load(li_2*48+36)), asuint(light_cones.Load(li_2*48+40)), asuint(light_cones.Load(li_2*48+44)));
+    const float _e15 = light_range_scale(li_2, x_9, r_9, rl_5);
     float _e18 = asfloat(rt2_5.Load(li_2*4));
-    const float _e20 = cone_weight(c_11.center_, c_11.radius, c_11.phi, c_11.axis, c_11.cos_o, c_11.cos_e, (_e15 * _e18), x_10, n_9, r_9, lobe_7);
+    const float _e20 = cone_weight(c_12.center_, c_12.radius, c_12.phi, c_12.axis, c_12.cos_o, c_12.cos_e, (_e15 * _e18), x_9, n_10, r_9, lobe_7);
     return _e20;
 }
 
-WeightedPicks bsh_weighted_collect(float3 x_11, float3 n_10, float3 r_10, float4 lobe_8, float4 rl_7, uint h0_)
+WeightedPicks weighted_picks(uint h_2)
 {
-    WeightedPicks picks = (WeightedPicks)0;
-    uint h_2 = (uint)0;
-    float threshold[8] = (float[8])0;
-    uint b_6 = (uint)0;
-    uint s_1 = (uint)0;
+    WeightedPicks picks_1 = (WeightedPicks)0;
 
-    picks.w_sum = 0.0;
-    picks.n = 0u;
-    h_2 = h0_;
-    const uint _e15 = bsh_first(BSH);
-    const uint _e16 = bsh_next_leaf_lobe(BSH, _e15, x_11, r_10, rl_7);
-    b_6 = _e16;
-    uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
-    bool loop_init_1 = true;
-    while(true) {
-        if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
-        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-        if (!loop_init_1) {
-            uint _e63 = b_6;
-            uint _e66 = asuint(bsh_nodes.Load(20+_e63*32));
-            const uint _e67 = bsh_next_leaf_lobe(BSH, _e66, x_11, r_10, rl_7);
-            b_6 = _e67;
-        }
-        loop_init_1 = false;
-        uint _e18 = b_6;
-        if ((_e18 != BSH_NONE)) {
-        } else {
-            break;
-        }
-        {
-            uint _e22 = picks.n;
-            picks.n = (_e22 + 1u);
-            uint _e26 = b_6;
-            uint li_5 = asuint(bsh_nodes.Load(24+_e26*32));
-            const float _e30 = light_weight(li_5, x_11, n_10, r_10, lobe_8, rl_7);
-            if ((_e30 > 0.0)) {
-                float _e34 = picks.w_sum;
-                picks.w_sum = (_e34 + _e30);
-                s_1 = 0u;
-                uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
-                bool loop_init_2 = true;
-                while(true) {
-                    if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
-                    loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
-                    if (!loop_init_2) {
-                        uint _e59 = s_1;
-                        s_1 = (_e59 + 1u);
-                    }
-                    loop_init_2 = false;
-                    uint _e38 = s_1;
-                    if ((_e38 < K)) {
-                    } else {
-                        break;
-                    }
-                    {
-                        float _e42 = picks.w_sum;
-                        uint _e43 = s_1;
-                        float _e45 = threshold[min(uint(_e43), 7u)];
-                        if ((_e42 > _e45)) {
-                            uint _e48 = s_1;
-                            picks.light[min(uint(_e48), 7u)] = li_5;
-                            uint _e51 = s_1;
-                            picks.w[min(uint(_e51), 7u)] = _e30;
-                            uint _e53 = s_1;
-                            float _e56 = picks.w_sum;
-                            const float _e57 = next_threshold(_e56, h_2);
-                            threshold[min(uint(_e53), 7u)] = _e57;
-                        }
-                    }
+    picks_1.w_sum = 0.0;
+    picks_1.n = 0u;
+    picks_1.h = h_2;
+    WeightedPicks _e7 = picks_1;
+    const WeightedPicks weightedpicks = _e7;
+    return weightedpicks;
+}
+
+void weighted_offer(inout WeightedPicks picks_2, uint li_3, float w_6)
+{
+    uint h_3 = (uint)0;
+    uint s_3 = 0u;
+
+    uint _e4 = picks_2.n;
+    picks_2.n = (_e4 + 1u);
+    if ((w_6 > 0.0)) {
+        float _e10 = picks_2.w_sum;
+        picks_2.w_sum = (_e10 + w_6);
+        uint _e13 = picks_2.h;
+        h_3 = _e13;
+        uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
+        bool loop_init_1 = true;
+        while(true) {
+            if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
+            loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+            if (!loop_init_1) {
+                uint _e40 = s_3;
+                s_3 = (_e40 + 1u);
+            }
+            loop_init_1 = false;
+            uint _e17 = s_3;
+            if ((_e17 < K)) {
+            } else {
+                break;
+            }
+            {
+                float _e21 = picks_2.w_sum;
+                uint _e23 = s_3;
+                float _e25 = picks_2.threshold[min(uint(_e23), 7u)];
+                if ((_e21 > _e25)) {
+                    uint _e28 = s_3;
+                    picks_2.light[min(uint(_e28), 7u)] = li_3;
+                    uint _e31 = s_3;
+                    picks_2.w[min(uint(_e31), 7u)] = w_6;
+                    uint _e34 = s_3;
+                    float _e37 = picks_2.w_sum;
+                    const float _e38 = next_threshold(_e37, h_3);
+                    picks_2.threshold[min(uint(_e34), 7u)] = _e38;
                 }
             }
         }
+        uint _e43 = h_3;
+        picks_2.h = _e43;
+        return;
+    } else {
+        return;
     }
-    uint _e69 = h_2;
-    picks.h = _e69;
-    WeightedPicks _e70 = picks;
-    const WeightedPicks weightedpicks = _e70;
-    return weightedpicks;
 }
 
 float4 surface_at(int2 texel)
 {
-    float4 p_8 = position_tex.Load(int3(texel, int(0)));
-    return ((p_8.w > 0.0) ? float4(p_8.xyz, 1.0) : (0.0).xxxx);
+    float4 p_10 = position_tex.Load(int3(texel, int(0)));
+    return ((p_10.w > 0.0) ? float4(p_10.xyz, 1.0) : (0.0).xxxx);
 }
 
-Shaded shade_connection(Connection c_6, float3 x_12, float3 n_11, Material m_1)
-{
-    Shaded s_2 = (Shaded)0;
+uint naga_div(uint lhs, uint rhs) {
+    return lhs / (rhs == 0u ? 1u : rhs);
+}
 
-    s_2.e = c_6.e;
-    s_2.diffuse = (0.0).xxx;
-    s_2.specular = (0.0).xxx;
-    if ((c_6.cos_x > 0.0)) {
-        float3 l_5 = normalize((c_6.y - x_12));
+WorkgroupBox ConstructWorkgroupBox(float3 arg0, float3 arg1) {
+    WorkgroupBox ret = (WorkgroupBox)0;
+    ret.lo = arg0;
+    ret.hi = arg1;
+    return ret;
+}
+
+WorkgroupBox workgroup_bounds(uint li_4, float3 lo_2, float3 hi_2)
+{
+    uint stride = 32u;
+
+    wg_lo[min(uint(li_4), 63u)] = lo_2;
+    wg_hi[min(uint(li_4), 63u)] = hi_2;
+    GroupMemoryBarrierWithGroupSync();
+    uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
+    bool loop_init_2 = true;
+    while(true) {
+        if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
+        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+        if (!loop_init_2) {
+            uint _e36 = stride;
+            stride = naga_div(_e36, 2u);
+        }
+        loop_init_2 = false;
+        uint _e9 = stride;
+        if ((_e9 > 0u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e12 = stride;
+            if ((li_4 < _e12)) {
+                float3 _e18 = wg_lo[min(uint(li_4), 63u)];
+                uint _e20 = stride;
+                float3 _e23 = wg_lo[min(uint((li_4 + _e20)), 63u)];
+                wg_lo[min(uint(li_4), 63u)] = min(_e18, _e23);
+                float3 _e29 = wg_hi[min(uint(li_4), 63u)];
+                uint _e31 = stride;
+                float3 _e34 = wg_hi[min(uint((li_4 + _e31)), 63u)];
+                wg_hi[min(uint(li_4), 63u)] = max(_e29, _e34);
+            }
+            GroupMemoryBarrierWithGroupSync();
+        }
+    }
+    if ((li_4 == 0u)) {
+        float3 _e44 = wg_lo[0];
+        float3 _e47 = wg_hi[0];
+        wg_box = ConstructWorkgroupBox(_e44, _e47);
+    }
+    GroupMemoryBarrierWithGroupSync();
+    WorkgroupBox _e50 = wg_box;
+    GroupMemoryBarrierWithGroupSync();
+    const WorkgroupBox workgroupbox = _e50;
+    return workgroupbox;
+}
+
+WorkgroupBox workgroup_box(uint li_5, float3 p_7, bool has)
+{
+    const WorkgroupBox _e9 = workgroup_bounds(li_5, (has ? p_7 : (3.4028235e38).xxx), (has ? p_7 : (-3.4028235e38).xxx));
+    const WorkgroupBox workgroupbox_1 = _e9;
+    return workgroupbox_1;
+}
+
+bool box_is_empty(WorkgroupBox b_6)
+{
+    return (b_6.lo.x > b_6.hi.x);
+}
+
+uint tile_subtree(uint s_4, TileWalk t_1, bool list, uint at, uint start_2, uint to)
+{
+    uint p_8 = (uint)0;
+    uint b_7 = (uint)0;
+    bool local_25 = (bool)0;
+    bool local_26 = (bool)0;
+    bool local_27 = (bool)0;
+
+    const uint _e8 = bsh_subtree(BSH, s_4, BSH_TILE_DEPTH);
+    if ((_e8 == BSH_NONE)) {
+        return 0u;
+    }
+    uint end_1 = asuint(bsh_nodes.Load(20+_e8*32));
+    p_8 = at;
+    const uint _e21 = bsh_next_leaf_box(BSH, _e8, end_1, t_1.lo, t_1.hi, t_1.w);
+    b_7 = _e21;
+    uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
+    bool loop_init_3 = true;
+    while(true) {
+        if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
+        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+        if (!loop_init_3) {
+            uint _e53 = b_7;
+            uint _e56 = asuint(bsh_nodes.Load(20+_e53*32));
+            const uint _e60 = bsh_next_leaf_box(BSH, _e56, end_1, t_1.lo, t_1.hi, t_1.w);
+            b_7 = _e60;
+        }
+        loop_init_3 = false;
+        uint _e23 = b_7;
+        if ((_e23 != end_1)) {
+            if (!(!(list))) {
+                uint _e31 = p_8;
+                local_26 = (_e31 < to);
+            } else {
+                local_26 = true;
+            }
+            bool _e34 = local_26;
+            local_25 = _e34;
+        } else {
+            local_25 = false;
+        }
+        bool _e36 = local_25;
+        if (_e36) {
+        } else {
+            break;
+        }
+        {
+            if (list) {
+                uint _e39 = p_8;
+                local_27 = (_e39 >= start_2);
+            } else {
+                local_27 = false;
+            }
+            bool _e42 = local_27;
+            if (_e42) {
+                uint _e44 = p_8;
+                uint _e47 = b_7;
+                tile_list[min(uint((_e44 - start_2)), 1023u)] = _e47;
+            }
+            uint _e48 = p_8;
+            p_8 = (_e48 + 1u);
+        }
+    }
+    uint _e61 = p_8;
+    return (_e61 - at);
+}
+
+TileWalk ConstructTileWalk(float3 arg0, float3 arg1, float arg2, uint arg3) {
+    TileWalk ret = (TileWalk)0;
+    ret.lo = arg0;
+    ret.hi = arg1;
+    ret.w = arg2;
+    ret.total = arg3;
+    return ret;
+}
+
+TileWalk tile_walk_begin(uint li_6, float3 x_10, float w_7, bool has_1)
+{
+    TileWalk t_2 = (TileWalk)0;
+    uint s_5 = (uint)0;
+    uint sum_1 = 0u;
+    uint s_6 = 0u;
+
+    uint _e8; InterlockedMax(tile_scale, (has_1 ? asuint(w_7) : 0u), _e8);
+    const WorkgroupBox _e9 = workgroup_box(li_6, x_10, has_1);
+    GroupMemoryBarrierWithGroupSync();
+    uint _e13 = tile_scale;
+    GroupMemoryBarrierWithGroupSync();
+    t_2 = ConstructTileWalk(_e9.lo, _e9.hi, asfloat(_e13), 0u);
+    const bool _e18 = box_is_empty(_e9);
+    if (_e18) {
+        TileWalk _e19 = t_2;
+        const TileWalk tilewalk = _e19;
+        return tilewalk;
+    }
+    s_5 = li_6;
+    uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
+    bool loop_init_4 = true;
+    while(true) {
+        if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
+        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+        if (!loop_init_4) {
+            uint _e34 = s_5;
+            s_5 = (_e34 + TILE_THREADS);
+        }
+        loop_init_4 = false;
+        uint _e21 = s_5;
+        if ((_e21 < BSH_TILE_SUBTREES)) {
+        } else {
+            break;
+        }
+        {
+            uint _e25 = s_5;
+            uint _e27 = s_5;
+            TileWalk _e28 = t_2;
+            const uint _e33 = tile_subtree(_e27, _e28, false, 0u, 0u, 0u);
+            subtree_at[min(uint(_e25), 255u)] = _e33;
+        }
+    }
+    GroupMemoryBarrierWithGroupSync();
+    if ((li_6 == 0u)) {
+        uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
+        bool loop_init_5 = true;
+        while(true) {
+            if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
+            loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
+            if (!loop_init_5) {
+                uint _e57 = s_6;
+                s_6 = (_e57 + 1u);
+            }
+            loop_init_5 = false;
+            uint _e43 = s_6;
+            if ((_e43 < BSH_TILE_SUBTREES)) {
+            } else {
+                break;
+            }
+            {
+                uint _e47 = s_6;
+                uint c_13 = subtree_at[min(uint(_e47), 255u)];
+                uint _e51 = s_6;
+                uint _e53 = sum_1;
+                subtree_at[min(uint(_e51), 255u)] = _e53;
+                uint _e54 = sum_1;
+                sum_1 = (_e54 + c_13);
+            }
+        }
+        uint _e60 = sum_1;
+        tile_total = _e60;
+    }
+    GroupMemoryBarrierWithGroupSync();
+    uint _e63 = tile_total;
+    GroupMemoryBarrierWithGroupSync();
+    t_2.total = _e63;
+    TileWalk _e64 = t_2;
+    const TileWalk tilewalk_1 = _e64;
+    return tilewalk_1;
+}
+
+uint tile_walk_fill(uint li_7, TileWalk t_3, uint start_3)
+{
+    uint s_7 = (uint)0;
+    uint past = (uint)0;
+    bool local_28 = (bool)0;
+
+    uint to_1 = min(t_3.total, (start_3 + TILE_LIST));
+    s_7 = li_7;
+    uint2 loop_bound_9 = uint2(4294967295u, 4294967295u);
+    bool loop_init_6 = true;
+    while(true) {
+        if (all(loop_bound_9 == uint2(0u, 0u))) { break; }
+        loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
+        if (!loop_init_6) {
+            uint _e38 = s_7;
+            s_7 = (_e38 + TILE_THREADS);
+        }
+        loop_init_6 = false;
+        uint _e8 = s_7;
+        if ((_e8 < BSH_TILE_SUBTREES)) {
+        } else {
+            break;
+        }
+        {
+            uint _e12 = s_7;
+            uint at_1 = subtree_at[min(uint(_e12), 255u)];
+            past = t_3.total;
+            uint _e17 = s_7;
+            if (((_e17 + 1u) < BSH_TILE_SUBTREES)) {
+                uint _e23 = s_7;
+                uint _e27 = subtree_at[min(uint((_e23 + 1u)), 255u)];
+                past = _e27;
+            }
+            if ((at_1 < to_1)) {
+                uint _e31 = past;
+                local_28 = (_e31 > start_3);
+            } else {
+                local_28 = false;
+            }
+            bool _e34 = local_28;
+            if (_e34) {
+                uint _e35 = s_7;
+                const uint _e37 = tile_subtree(_e35, t_3, true, at_1, start_3, to_1);
+            }
+        }
+    }
+    GroupMemoryBarrierWithGroupSync();
+    return (to_1 - start_3);
+}
+
+Shaded shade_connection(Connection c_7, float3 x_11, float3 n_11, Material m_1)
+{
+    Shaded s_8 = (Shaded)0;
+
+    s_8.e = c_7.e;
+    s_8.diffuse = (0.0).xxx;
+    s_8.specular = (0.0).xxx;
+    if ((c_7.cos_x > 0.0)) {
+        float3 l_5 = normalize((c_7.y - x_11));
         float3 _e24 = view.f0_d;
         float _e27 = view.f90_d;
         const float _e29 = half_cosine(m_1.v, l_5);
         const float3 _e30 = diffuse_brdf(m_1.base, m_1.metallic, _e24, _e27, _e29);
-        s_2.diffuse = (_e30 * c_6.e);
+        s_8.diffuse = (_e30 * c_7.e);
         float3 _e38 = view.f0_d;
         float _e41 = view.f90_d;
         const float3 _e44 = specular_brdf(m_1.base, m_1.metallic, _e38, _e41, m_1.alpha, n_11, m_1.v, l_5);
-        s_2.specular = (_e44 * c_6.e);
+        s_8.specular = (_e44 * c_7.e);
     }
-    Shaded _e47 = s_2;
+    Shaded _e47 = s_8;
     const Shaded shaded = _e47;
     return shaded;
 }
 
-Shaded shade_pick_traced(uint li_3, float3 x_13, float3 n_12, float3 r_11, float4 rl_8, Material m_2, float w_4, float u1_4, float u2_4, float eps_2, bool trace_3)
+Shaded shade_pick_traced(uint li_8, float3 x_12, float3 n_12, float3 r_10, float4 rl_6, Material m_2, float w_8, float u1_4, float u2_4, float eps_2, bool trace_3)
 {
-    const float _e11 = light_range_scale(li_3, x_13, r_11, rl_8);
-    const Connection _e12 = connect_traced(li_3, x_13, n_12, n_12, _e11, w_4, u1_4, u2_4, eps_2, trace_3);
-    const Shaded _e13 = shade_connection(_e12, x_13, n_12, m_2);
+    const float _e11 = light_range_scale(li_8, x_12, r_10, rl_6);
+    const Connection _e12 = connect_traced(li_8, x_12, n_12, n_12, _e11, w_8, u1_4, u2_4, eps_2, trace_3);
+    const Shaded _e13 = shade_connection(_e12, x_12, n_12, m_2);
     const Shaded shaded_1 = _e13;
     return shaded_1;
 }
 
-Shaded shade_pick(uint li_4, float3 x_14, float3 n_13, float3 r_12, float4 rl_9, Material m_3, float w_5, float u1_5, float u2_5, float eps_3)
+Shaded shade_pick(uint li_9, float3 x_13, float3 n_13, float3 r_11, float4 rl_7, Material m_3, float w_9, float u1_5, float u2_5, float eps_3)
 {
-    const Shaded _e11 = shade_pick_traced(li_4, x_14, n_13, r_12, rl_9, m_3, w_5, u1_5, u2_5, eps_3, true);
+    const Shaded _e11 = shade_pick_traced(li_9, x_13, n_13, r_11, rl_7, m_3, w_9, u1_5, u2_5, eps_3, true);
     const Shaded shaded_2 = _e11;
     return shaded_2;
 }
@@ -1298,9 +1653,9 @@ Shaded ConstructShaded(float3 arg0, float3 arg1, float3 arg2) {
     return ret;
 }
 
-Shaded add(Shaded a_8, Shaded b_7)
+Shaded add(Shaded a_8, Shaded b_8)
 {
-    const Shaded shaded_3 = ConstructShaded((a_8.e + b_7.e), (a_8.diffuse + b_7.diffuse), (a_8.specular + b_7.specular));
+    const Shaded shaded_3 = ConstructShaded((a_8.e + b_8.e), (a_8.diffuse + b_8.diffuse), (a_8.specular + b_8.specular));
     return shaded_3;
 }
 
@@ -1309,20 +1664,20 @@ ret_first_holders first_holders(uint2 keys_1[8], bool held_1[8])
 {
     uint first[8] = (uint[8])0;
     uint k_3 = 0u;
-    uint j_1 = (uint)0;
-    bool local_20 = (bool)0;
-    bool local_21 = (bool)0;
+    uint j_2 = (uint)0;
+    bool local_29 = (bool)0;
+    bool local_30 = (bool)0;
 
-    uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
-    bool loop_init_3 = true;
+    uint2 loop_bound_10 = uint2(4294967295u, 4294967295u);
+    bool loop_init_7 = true;
     while(true) {
-        if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
-        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
-        if (!loop_init_3) {
+        if (all(loop_bound_10 == uint2(0u, 0u))) { break; }
+        loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
+        if (!loop_init_7) {
             uint _e45 = k_3;
             k_3 = (_e45 + 1u);
         }
-        loop_init_3 = false;
+        loop_init_7 = false;
         uint _e5 = k_3;
         if ((_e5 < K)) {
         } else {
@@ -1333,43 +1688,43 @@ ret_first_holders first_holders(uint2 keys_1[8], bool held_1[8])
             uint _e11 = k_3;
             uint _e12 = k_3;
             first[min(uint(_e8), 7u)] = (held_1[min(uint(_e12), 7u)] ? _e11 : K);
-            j_1 = 0u;
-            uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
-            bool loop_init_4 = true;
+            j_2 = 0u;
+            uint2 loop_bound_11 = uint2(4294967295u, 4294967295u);
+            bool loop_init_8 = true;
             while(true) {
-                if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
-                loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-                if (!loop_init_4) {
-                    uint _e42 = j_1;
-                    j_1 = (_e42 + 1u);
+                if (all(loop_bound_11 == uint2(0u, 0u))) { break; }
+                loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
+                if (!loop_init_8) {
+                    uint _e42 = j_2;
+                    j_2 = (_e42 + 1u);
                 }
-                loop_init_4 = false;
-                uint _e17 = j_1;
+                loop_init_8 = false;
+                uint _e17 = j_2;
                 uint _e18 = k_3;
                 if ((_e17 < _e18)) {
                     uint _e22 = k_3;
-                    local_20 = held_1[min(uint(_e22), 7u)];
+                    local_29 = held_1[min(uint(_e22), 7u)];
                 } else {
-                    local_20 = false;
+                    local_29 = false;
                 }
-                bool _e25 = local_20;
+                bool _e25 = local_29;
                 if (_e25) {
                 } else {
                     break;
                 }
                 {
-                    uint _e26 = j_1;
+                    uint _e26 = j_2;
                     if (held_1[min(uint(_e26), 7u)]) {
-                        uint _e30 = j_1;
+                        uint _e30 = j_2;
                         uint _e32 = k_3;
-                        local_21 = all((keys_1[min(uint(_e30), 7u)] == keys_1[min(uint(_e32), 7u)]));
+                        local_30 = all((keys_1[min(uint(_e30), 7u)] == keys_1[min(uint(_e32), 7u)]));
                     } else {
-                        local_21 = false;
+                        local_30 = false;
                     }
-                    bool _e37 = local_21;
+                    bool _e37 = local_30;
                     if (_e37) {
                         uint _e38 = k_3;
-                        uint _e40 = j_1;
+                        uint _e40 = j_2;
                         first[min(uint(_e38), 7u)] = _e40;
                         break;
                     }
@@ -1382,185 +1737,303 @@ ret_first_holders first_holders(uint2 keys_1[8], bool held_1[8])
 }
 
 [numthreads(8, 8, 1)]
-void main(uint3 gid : SV_DispatchThreadID)
+void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
 {
+    if (lid == 0) {
+        wg_lo = (float3[64])0;
+        wg_hi = (float3[64])0;
+        wg_box = (WorkgroupBox)0;
+        tile_list = (uint[1024])0;
+        subtree_at = (uint[256])0;
+        tile_scale = (uint)0;
+        tile_total = (uint)0;
+    }
+    GroupMemoryBarrierWithGroupSync();
     bool local = (bool)0;
+    float4 s = (0.0).xxxx;
+    float3 nn = (0.0).xxx;
     bool local_1 = (bool)0;
+    bool local_2 = (bool)0;
+    bool local_3 = (bool)0;
+    float3 n = float3(0.0, 0.0, 1.0);
     Material m = (Material)0;
     float4 lobe = float4(1.0, 0.0, 1.0, 1.0);
     float3 r = (float3)0;
     uint h = (uint)0;
     Shaded t = ConstructShaded((0.0).xxx, (0.0).xxx, (0.0).xxx);
+    WeightedPicks picks = (WeightedPicks)0;
+    bool local_4 = (bool)0;
+    uint start = 0u;
+    uint j = (uint)0;
+    bool local_5 = (bool)0;
     uint2 keys[8] = (uint2[8])0;
     bool held[8] = (bool[8])0;
     uint k = 0u;
     uint k_1 = 0u;
     uint copies = (uint)0;
-    uint j = (uint)0;
+    uint j_1 = (uint)0;
 
-    uint _e4 = view.width;
-    if (!((gid.x >= _e4))) {
+    uint _e5 = view.width;
+    if ((gid.x < _e5)) {
         uint _e12 = view.height;
-        local = (gid.y >= _e12);
+        local = (gid.y < _e12);
     } else {
-        local = true;
+        local = false;
     }
-    bool _e15 = local;
-    if (_e15) {
-        return;
-    }
+    bool inside = local;
     int2 texel_1 = int2(int(gid.x), int(gid.y));
-    const float4 _e21 = surface_at(texel_1);
-    float4 _e24 = normal_tex.Load(int3(texel_1, int(0)));
-    float3 nn = _e24.xyz;
-    float len2_1 = dot(nn, nn);
-    if (!((_e21.w <= 0.0))) {
-        local_1 = !((len2_1 > 0.0));
-    } else {
-        local_1 = true;
+    if (inside) {
+        const float4 _e27 = surface_at(texel_1);
+        s = _e27;
+        float4 _e30 = normal_tex.Load(int3(texel_1, int(0)));
+        nn = _e30.xyz;
     }
-    bool _e37 = local_1;
-    if (_e37) {
-        out_tex[texel_1] = (0.0).xxxx;
-        specular_tex[texel_1] = (0.0).xxxx;
+    float3 _e32 = nn;
+    float3 _e33 = nn;
+    float len2_1 = dot(_e32, _e33);
+    float4 _e35 = s;
+    float3 x_14 = _e35.xyz;
+    if (inside) {
+        float _e40 = s.w;
+        local_1 = (_e40 > 0.0);
+    } else {
+        local_1 = false;
+    }
+    bool _e44 = local_1;
+    if (_e44) {
+        local_2 = (len2_1 > 0.0);
+    } else {
+        local_2 = false;
+    }
+    bool _e50 = local_2;
+    if (_e50) {
+        local_3 = all((abs(x_14) <= (3.4028235e38).xxx));
+    } else {
+        local_3 = false;
+    }
+    bool has_2 = local_3;
+    if (has_2) {
+        float3 _e65 = nn;
+        n = (_e65 / (sqrt(len2_1)).xxx);
+    }
+    float3 _e76 = n;
+    r = _e76;
+    if (has_2) {
+        float4 mr = metal_rough_tex.Load(int3(texel_1, int(0)));
+        float4 _e83 = base_color_tex.Load(int3(texel_1, int(0)));
+        float3 _e90 = view.eye;
+        const Material _e93 = material_of(_e83.xyz, mr.z, mr.y, mr.w, normalize((_e90 - x_14)));
+        m = _e93;
+        float3 _e95 = m.base;
+        float _e97 = m.metallic;
+        float3 _e100 = view.f0_d;
+        float _e103 = view.f90_d;
+        float _e105 = m.alpha;
+        float3 _e106 = n;
+        float3 _e108 = m.v;
+        const float4 _e110 = receiver_lobe(_e95, _e97, _e100, _e103, _e105, dot(_e106, _e108));
+        lobe = _e110;
+        float3 _e111 = n;
+        float3 _e113 = m.v;
+        const float3 _e114 = mirror_dir(_e111, _e113);
+        r = _e114;
+    }
+    float4 _e115 = lobe;
+    const float4 _e116 = range_lobe(_e115);
+    float _e119 = view.shadow_offset;
+    float3 _e122 = view.eye;
+    float eps_4 = (_e119 * length((_e122 - x_14)));
+    uint _e128 = view.seed;
+    uint _e132 = view.width;
+    uint _e138 = view.frame;
+    const uint _e139 = point_stream(_e128, ((gid.y * _e132) + gid.x), _e138);
+    const uint _e140 = pick_stream(_e139);
+    h = _e140;
+    const WeightedPicks _e150 = weighted_picks(_e139);
+    picks = _e150;
+    if (has_2) {
+        local_4 = (_e116.w >= 0.0);
+    } else {
+        local_4 = false;
+    }
+    bool _e159 = local_4;
+    const TileWalk _e160 = tile_walk_begin(lid, x_14, _e116.w, _e159);
+    uint2 loop_bound_12 = uint2(4294967295u, 4294967295u);
+    bool loop_init_9 = true;
+    while(true) {
+        if (all(loop_bound_12 == uint2(0u, 0u))) { break; }
+        loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
+        if (!loop_init_9) {
+            uint _e199 = start;
+            start = (_e199 + TILE_LIST);
+        }
+        loop_init_9 = false;
+        uint _e163 = start;
+        if ((_e163 < _e160.total)) {
+        } else {
+            break;
+        }
+        {
+            uint _e166 = start;
+            const uint _e167 = tile_walk_fill(lid, _e160, _e166);
+            j = 0u;
+            uint2 loop_bound_13 = uint2(4294967295u, 4294967295u);
+            bool loop_init_10 = true;
+            while(true) {
+                if (all(loop_bound_13 == uint2(0u, 0u))) { break; }
+                loop_bound_13 -= uint2(loop_bound_13.y == 0u, 1u);
+                if (!loop_init_10) {
+                    uint _e197 = j;
+                    j = (_e197 + 1u);
+                }
+                loop_init_10 = false;
+                uint _e170 = j;
+                if ((_e170 < _e167)) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e173 = j;
+                    uint b_9 = tile_list[min(uint(_e173), 1023u)];
+                    if (!(!(has_2))) {
+                        BshNode _e182 = ConstructBshNode(asfloat(bsh_nodes.Load3(b_9*32+0)), asfloat(bsh_nodes.Load(b_9*32+12)), asuint(bsh_nodes.Load(b_9*32+16)), asuint(bsh_nodes.Load(b_9*32+20)), asuint(bsh_nodes.Load(b_9*32+24)), asfloat(bsh_nodes.Load(b_9*32+28)));
+                        float3 _e183 = r;
+                        const bool _e184 = bsh_reaches(_e182, x_14, _e183, _e116);
+                        local_5 = !(_e184);
+                    } else {
+                        local_5 = true;
+                    }
+                    bool _e187 = local_5;
+                    if (_e187) {
+                        continue;
+                    }
+                    uint li_10 = asuint(bsh_nodes.Load(24+b_9*32));
+                    float3 _e192 = n;
+                    float3 _e193 = r;
+                    float4 _e194 = lobe;
+                    const float _e195 = light_weight(li_10, x_14, _e192, _e193, _e194, _e116);
+                    weighted_offer(picks, li_10, _e195);
+                }
+            }
+            GroupMemoryBarrierWithGroupSync();
+        }
+    }
+    if (!(has_2)) {
+        if (inside) {
+            out_tex[texel_1] = (0.0).xxxx;
+            specular_tex[texel_1] = (0.0).xxxx;
+        }
         return;
     }
-    float3 x_15 = _e21.xyz;
-    float3 n_16 = (nn / (sqrt(len2_1)).xxx);
-    r = n_16;
-    float4 mr = metal_rough_tex.Load(int3(texel_1, int(0)));
-    float4 _e61 = base_color_tex.Load(int3(texel_1, int(0)));
-    float3 _e68 = view.eye;
-    const Material _e71 = material_of(_e61.xyz, mr.z, mr.y, mr.w, normalize((_e68 - x_15)));
-    m = _e71;
-    float3 _e73 = m.base;
-    float _e75 = m.metallic;
-    float3 _e78 = view.f0_d;
-    float _e81 = view.f90_d;
-    float _e83 = m.alpha;
-    float3 _e85 = m.v;
-    const float4 _e87 = receiver_lobe(_e73, _e75, _e78, _e81, _e83, dot(n_16, _e85));
-    lobe = _e87;
-    float3 _e89 = m.v;
-    const float3 _e90 = mirror_dir(n_16, _e89);
-    r = _e90;
-    float4 _e91 = lobe;
-    const float4 _e92 = range_lobe(_e91);
-    float _e95 = view.shadow_offset;
-    float3 _e98 = view.eye;
-    float eps_4 = (_e95 * length((_e98 - x_15)));
-    uint _e104 = view.seed;
-    uint _e108 = view.width;
-    uint _e114 = view.frame;
-    const uint _e115 = point_stream(_e104, ((gid.y * _e108) + gid.x), _e114);
-    const uint _e116 = pick_stream(_e115);
-    h = _e116;
-    float3 _e126 = r;
-    float4 _e127 = lobe;
-    const WeightedPicks _e128 = bsh_weighted_collect(x_15, n_16, _e126, _e127, _e92, _e115);
-    if ((_e128.w_sum > 0.0)) {
-        uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
-        bool loop_init_5 = true;
+    float _e210 = picks.w_sum;
+    if ((_e210 > 0.0)) {
+        uint2 loop_bound_14 = uint2(4294967295u, 4294967295u);
+        bool loop_init_11 = true;
         while(true) {
-            if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
-            loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
-            if (!loop_init_5) {
-                uint _e163 = k;
-                k = (_e163 + 1u);
+            if (all(loop_bound_14 == uint2(0u, 0u))) { break; }
+            loop_bound_14 -= uint2(loop_bound_14.y == 0u, 1u);
+            if (!loop_init_11) {
+                uint _e246 = k;
+                k = (_e246 + 1u);
             }
-            loop_init_5 = false;
-            uint _e136 = k;
-            if ((_e136 < K)) {
+            loop_init_11 = false;
+            uint _e217 = k;
+            if ((_e217 < K)) {
             } else {
                 break;
             }
             {
-                uint _e140 = k;
-                uint _e145 = k;
-                uint _e149 = asuint(lights.Load(12+_e128.light[min(uint(_e145), 7u)]*64));
-                uint own = ((_e149 == LIGHT_TRIANGLE) ? (_e140 + 1u) : 0u);
-                uint _e153 = k;
-                uint _e156 = k;
-                keys[min(uint(_e153), 7u)] = uint2(_e128.light[min(uint(_e156), 7u)], own);
-                uint _e159 = k;
-                held[min(uint(_e159), 7u)] = true;
+                uint _e221 = k;
+                uint _e226 = k;
+                uint _e228 = picks.light[min(uint(_e226), 7u)];
+                uint _e231 = asuint(lights.Load(12+_e228*64));
+                uint own = ((_e231 == LIGHT_TRIANGLE) ? (_e221 + 1u) : 0u);
+                uint _e235 = k;
+                uint _e238 = k;
+                uint _e240 = picks.light[min(uint(_e238), 7u)];
+                keys[min(uint(_e235), 7u)] = uint2(_e240, own);
+                uint _e242 = k;
+                held[min(uint(_e242), 7u)] = true;
             }
         }
-        uint2 _e165[8] = keys;
-        bool _e166[8] = held;
-        const uint _e167[8] = first_holders(_e165, _e166);
-        uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
-        bool loop_init_6 = true;
+        uint2 _e248[8] = keys;
+        bool _e249[8] = held;
+        const uint _e250[8] = first_holders(_e248, _e249);
+        uint2 loop_bound_15 = uint2(4294967295u, 4294967295u);
+        bool loop_init_12 = true;
         while(true) {
-            if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
-            loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
-            if (!loop_init_6) {
-                uint _e221 = k_1;
-                k_1 = (_e221 + 1u);
+            if (all(loop_bound_15 == uint2(0u, 0u))) { break; }
+            loop_bound_15 -= uint2(loop_bound_15.y == 0u, 1u);
+            if (!loop_init_12) {
+                uint _e308 = k_1;
+                k_1 = (_e308 + 1u);
             }
-            loop_init_6 = false;
-            uint _e170 = k_1;
-            if ((_e170 < K)) {
+            loop_init_12 = false;
+            uint _e253 = k_1;
+            if ((_e253 < K)) {
             } else {
                 break;
             }
             {
-                uint _e173 = h;
-                const uint _e174 = pcg_hash(_e173);
-                h = _e174;
-                uint _e175 = h;
-                const float _e176 = xi_from_bits(_e175);
-                uint _e177 = h;
-                const uint _e178 = pcg_hash(_e177);
-                h = _e178;
-                uint _e179 = h;
-                const float _e180 = xi_from_bits(_e179);
-                uint _e182 = k_1;
-                uint li_6 = _e128.light[min(uint(_e182), 7u)];
+                uint _e256 = h;
+                const uint _e257 = pcg_hash(_e256);
+                h = _e257;
+                uint _e258 = h;
+                const float _e259 = xi_from_bits(_e258);
+                uint _e260 = h;
+                const uint _e261 = pcg_hash(_e260);
+                h = _e261;
+                uint _e262 = h;
+                const float _e263 = xi_from_bits(_e262);
+                uint _e265 = k_1;
+                uint li_11 = picks.light[min(uint(_e265), 7u)];
                 copies = 0u;
-                uint _e186 = k_1;
-                j = _e186;
-                uint2 loop_bound_9 = uint2(4294967295u, 4294967295u);
-                bool loop_init_7 = true;
+                uint _e270 = k_1;
+                j_1 = _e270;
+                uint2 loop_bound_16 = uint2(4294967295u, 4294967295u);
+                bool loop_init_13 = true;
                 while(true) {
-                    if (all(loop_bound_9 == uint2(0u, 0u))) { break; }
-                    loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
-                    if (!loop_init_7) {
-                        uint _e201 = j;
-                        j = (_e201 + 1u);
+                    if (all(loop_bound_16 == uint2(0u, 0u))) { break; }
+                    loop_bound_16 -= uint2(loop_bound_16.y == 0u, 1u);
+                    if (!loop_init_13) {
+                        uint _e285 = j_1;
+                        j_1 = (_e285 + 1u);
                     }
-                    loop_init_7 = false;
-                    uint _e188 = j;
-                    if ((_e188 < K)) {
+                    loop_init_13 = false;
+                    uint _e272 = j_1;
+                    if ((_e272 < K)) {
                     } else {
                         break;
                     }
                     {
-                        uint _e191 = copies;
-                        uint _e194 = j;
-                        uint _e196 = k_1;
-                        copies = (_e191 + ((_e167[min(uint(_e194), 7u)] == _e196) ? 1u : 0u));
+                        uint _e275 = copies;
+                        uint _e278 = j_1;
+                        uint _e280 = k_1;
+                        copies = (_e275 + ((_e250[min(uint(_e278), 7u)] == _e280) ? 1u : 0u));
                     }
                 }
-                uint _e203 = copies;
-                if ((_e203 > 0u)) {
-                    Shaded _e206 = t;
-                    float3 _e207 = r;
-                    Material _e208 = m;
-                    uint _e211 = k_1;
-                    const float _e214 = weighted_pick_weight(_e128.w_sum, _e128.w[min(uint(_e211), 7u)], K);
-                    uint _e215 = copies;
-                    const Shaded _e218 = shade_pick(li_6, x_15, n_16, _e207, _e92, _e208, (_e214 * float(_e215)), _e176, _e180, eps_4);
-                    const Shaded _e219 = add(_e206, _e218);
-                    t = _e219;
+                uint _e287 = copies;
+                if ((_e287 > 0u)) {
+                    Shaded _e290 = t;
+                    float3 _e291 = n;
+                    float3 _e292 = r;
+                    Material _e293 = m;
+                    float _e295 = picks.w_sum;
+                    uint _e297 = k_1;
+                    float _e299 = picks.w[min(uint(_e297), 7u)];
+                    const float _e301 = weighted_pick_weight(_e295, _e299, K);
+                    uint _e302 = copies;
+                    const Shaded _e305 = shade_pick(li_11, x_14, _e291, _e292, _e116, _e293, (_e301 * float(_e302)), _e259, _e263, eps_4);
+                    const Shaded _e306 = add(_e290, _e305);
+                    t = _e306;
                 }
             }
         }
     }
-    uint count = _e128.n;
-    float3 _e226 = t.e;
-    out_tex[texel_1] = float4(_e226, float(count));
-    float3 _e231 = t.specular;
-    specular_tex[texel_1] = float4(_e231, 0.0);
+    uint count = picks.n;
+    float3 _e314 = t.e;
+    out_tex[texel_1] = float4(_e314, float(count));
+    float3 _e319 = t.specular;
+    specular_tex[texel_1] = float4(_e319, 0.0);
     return;
 }

@@ -149,6 +149,8 @@ static const float TEMPORAL_CHANGE_HIGH = 8.0;
 static const float TEMPORAL_MIN_WEIGHT = 0.01;
 static const uint K = 16u;
 static const uint BSH = 0u;
+static const uint BSH_TILE_DEPTH = 8u;
+static const uint BSH_TILE_SUBTREES = 256u;
 static const uint BVH = 0u;
 
 ByteAddressBuffer slc_table : register(t0, space1);
@@ -741,12 +743,12 @@ float3 diffuse_brdf(float3 base_5, float metallic_1, float3 f0_d_1, float f90_d_
 
 float half_cosine(float3 v, float3 l)
 {
-    float3 h_2 = (v + l);
-    float len2_ = dot(h_2, h_2);
+    float3 h_3 = (v + l);
+    float len2_ = dot(h_3, h_3);
     if ((len2_ <= 0.0)) {
         return 0.0;
     }
-    return saturate((dot(v, h_2) / sqrt(len2_)));
+    return saturate((dot(v, h_3) / sqrt(len2_)));
 }
 
 float3 specular_brdf(float3 base_6, float metallic_2, float3 f0_d_2, float f90_d_2, float alpha_3, float3 n_11, float3 v_1, float3 l_1)
@@ -766,10 +768,10 @@ float3 specular_brdf(float3 base_6, float metallic_2, float3 f0_d_2, float f90_d
     }
     float3 hs = (v_1 + l_1);
     float inv = (1.0 / sqrt(dot(hs, hs)));
-    float3 h_3 = (hs * inv);
-    float3 c_11 = cross(n_11, h_3);
-    const float _e32 = ggx_d(dot(n_11, h_3), dot(c_11, c_11), alpha_3);
-    const float3 _e34 = specular_fresnel(base_6, metallic_2, f0_d_2, f90_d_2, dot(v_1, h_3));
+    float3 h_4 = (hs * inv);
+    float3 c_11 = cross(n_11, h_4);
+    const float _e32 = ggx_d(dot(n_11, h_4), dot(c_11, c_11), alpha_3);
+    const float3 _e34 = specular_fresnel(base_6, metallic_2, f0_d_2, f90_d_2, dot(v_1, h_4));
     const float _e35 = smith_visibility(n_l_1, n_v_2, alpha_3);
     return (_e34 * (_e32 * _e35));
 }
@@ -1383,14 +1385,42 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start_1, float3 x_10, float3 r_4, flo
     return BSH_NONE;
 }
 
+void reservoir_offer(inout Picks picks, inout uint h_1, uint light)
+{
+    uint _e4 = picks.n;
+    const bool _e5 = reservoir_takes(_e4);
+    if (_e5) {
+        uint _e7 = picks.n;
+        picks.n = (_e7 + 1u);
+        uint _e10 = h_1;
+        const uint _e11 = pcg_hash(_e10);
+        h_1 = _e11;
+        uint hi_4 = h_1;
+        uint _e13 = h_1;
+        const uint _e14 = pcg_hash(_e13);
+        h_1 = _e14;
+        uint _e16 = picks.n;
+        uint _e18 = h_1;
+        const uint _e19 = reservoir_slot(_e16, K, hi_4, _e18);
+        if ((_e19 < K)) {
+            picks.light[min(uint(_e19), 15u)] = light;
+            return;
+        } else {
+            return;
+        }
+    } else {
+        return;
+    }
+}
+
 Picks bsh_collect(float3 x_11, float3 r_5, float4 rl_5, uint seed_1)
 {
-    Picks picks = (Picks)0;
-    uint h_1 = (uint)0;
+    Picks picks_1 = (Picks)0;
+    uint h_2 = (uint)0;
     uint i_4 = (uint)0;
 
-    picks.n = 0u;
-    h_1 = seed_1;
+    picks_1.n = 0u;
+    h_2 = seed_1;
     const uint _e10 = bsh_first(BSH);
     const uint _e11 = bsh_next_leaf_lobe(BSH, _e10, x_11, r_5, rl_5);
     i_4 = _e11;
@@ -1400,10 +1430,10 @@ Picks bsh_collect(float3 x_11, float3 r_5, float4 rl_5, uint seed_1)
         if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e44 = i_4;
-            uint _e47 = asuint(bsh_nodes.Load(20+_e44*32));
-            const uint _e48 = bsh_next_leaf_lobe(BSH, _e47, x_11, r_5, rl_5);
-            i_4 = _e48;
+            uint _e23 = i_4;
+            uint _e26 = asuint(bsh_nodes.Load(20+_e23*32));
+            const uint _e27 = bsh_next_leaf_lobe(BSH, _e26, x_11, r_5, rl_5);
+            i_4 = _e27;
         }
         loop_init_1 = false;
         uint _e13 = i_4;
@@ -1412,32 +1442,14 @@ Picks bsh_collect(float3 x_11, float3 r_5, float4 rl_5, uint seed_1)
             break;
         }
         {
-            uint _e17 = picks.n;
-            const bool _e18 = reservoir_takes(_e17);
-            if (_e18) {
-                uint _e20 = picks.n;
-                picks.n = (_e20 + 1u);
-                uint _e23 = h_1;
-                const uint _e24 = pcg_hash(_e23);
-                h_1 = _e24;
-                uint hi_4 = h_1;
-                uint _e26 = h_1;
-                const uint _e27 = pcg_hash(_e26);
-                h_1 = _e27;
-                uint _e29 = picks.n;
-                uint _e31 = h_1;
-                const uint _e32 = reservoir_slot(_e29, K, hi_4, _e31);
-                if ((_e32 < K)) {
-                    uint _e38 = i_4;
-                    uint _e41 = asuint(bsh_nodes.Load(24+_e38*32));
-                    picks.light[min(uint(_e32), 15u)] = _e41;
-                }
-            }
+            uint _e17 = i_4;
+            uint _e20 = asuint(bsh_nodes.Load(24+_e17*32));
+            reservoir_offer(picks_1, h_2, _e20);
         }
     }
-    Picks _e49 = picks;
-    const Picks picks_1 = _e49;
-    return picks_1;
+    Picks _e28 = picks_1;
+    const Picks picks_2 = _e28;
+    return picks_2;
 }
 
 Connection connect_record(GpuLight l_8, float3 x_12, float3 n_15, float3 ng_1, float r2_2, float rt2_4, float w_res, float u1_2, float u2_2, float eps, bool trace_1)

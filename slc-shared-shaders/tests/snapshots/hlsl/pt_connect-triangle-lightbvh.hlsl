@@ -151,6 +151,8 @@ static const float TEMPORAL_CHANGE_HIGH = 8.0;
 static const float TEMPORAL_MIN_WEIGHT = 0.01;
 static const uint K = 8u;
 static const uint BSH = 0u;
+static const uint BSH_TILE_DEPTH = 8u;
+static const uint BSH_TILE_SUBTREES = 256u;
 static const uint BVH = 0u;
 
 ByteAddressBuffer geo_nodes : register(t6);

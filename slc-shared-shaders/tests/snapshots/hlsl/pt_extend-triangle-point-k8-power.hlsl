@@ -162,6 +162,8 @@ static const float TEMPORAL_MIN_WEIGHT = 0.01;
 static const uint K = 8u;
 static const uint BVH = 0u;
 static const uint BSH = 0u;
+static const uint BSH_TILE_DEPTH = 8u;
+static const uint BSH_TILE_SUBTREES = 256u;
 
 ByteAddressBuffer geo_nodes : register(t5);
 ByteAddressBuffer geo_tris : register(t6);

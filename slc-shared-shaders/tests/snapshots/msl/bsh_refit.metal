@@ -87,6 +87,8 @@ constant float TEMPORAL_CHANGE_LOW = 4.0;
 constant float TEMPORAL_CHANGE_HIGH = 8.0;
 constant float TEMPORAL_MIN_WEIGHT = 0.01;
 constant BshNodes BSH = 0u;
+constant uint BSH_TILE_DEPTH = 8u;
+constant uint BSH_TILE_SUBTREES = 256u;
 
 float f32_from_bits(
     uint u

@@ -80,8 +80,8 @@ struct Connection {
     metal::packed_float3 y;
     float cos_x;
 };
-typedef GpuLight type_11[1];
-typedef metal::float4 type_12[1];
+typedef GpuLight type_13[1];
+typedef metal::float4 type_14[1];
 constant uint LIGHT_POINT = 0u;
 constant uint LIGHT_SPOT = 1u;
 constant uint LIGHT_IES = 2u;
@@ -140,6 +140,8 @@ constant float TEMPORAL_CHANGE_HIGH = 8.0;
 constant float TEMPORAL_MIN_WEIGHT = 0.01;
 constant uint K = 8u;
 constant BshNodes BSH = 0u;
+constant uint BSH_TILE_DEPTH = 8u;
+constant uint BSH_TILE_SUBTREES = 256u;
 
 float at(
     Table tab,
@@ -1053,6 +1055,37 @@ uint bsh_next_leaf_lobe(
     return BSH_NONE;
 }
 
+void reservoir_offer(
+    thread Picks& picks,
+    thread uint& h_1,
+    uint light
+) {
+    uint _e4 = picks.n;
+    bool _e5 = reservoir_takes(_e4);
+    if (_e5) {
+        uint _e7 = picks.n;
+        picks.n = _e7 + 1u;
+        uint _e10 = h_1;
+        uint _e11 = pcg_hash(_e10);
+        h_1 = _e11;
+        uint hi_4 = h_1;
+        uint _e13 = h_1;
+        uint _e14 = pcg_hash(_e13);
+        h_1 = _e14;
+        uint _e16 = picks.n;
+        uint _e18 = h_1;
+        uint _e19 = reservoir_slot(_e16, K, hi_4, _e18);
+        if (_e19 < K) {
+            picks.light.inner[_e19] = light;
+            return;
+        } else {
+            return;
+        }
+    } else {
+        return;
+    }
+}
+
 Picks bsh_collect(
     metal::float3 x_11,
     metal::float3 r_5,
@@ -1061,11 +1094,11 @@ Picks bsh_collect(
     device type_10 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Picks picks = {};
-    uint h_1 = {};
+    Picks picks_1 = {};
+    uint h_2 = {};
     uint i_4 = {};
-    picks.n = 0u;
-    h_1 = seed_1;
+    picks_1.n = 0u;
+    h_2 = seed_1;
     uint _e10 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
     uint _e11 = bsh_next_leaf_lobe(BSH, _e10, x_11, r_5, rl_5, bsh_nodes, _buffer_sizes);
     i_4 = _e11;
@@ -1075,10 +1108,10 @@ Picks bsh_collect(
         if (metal::all(loop_bound_4 == uint2(0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e44 = i_4;
-            uint _e47 = bsh_nodes[_e44].next;
-            uint _e48 = bsh_next_leaf_lobe(BSH, _e47, x_11, r_5, rl_5, bsh_nodes, _buffer_sizes);
-            i_4 = _e48;
+            uint _e23 = i_4;
+            uint _e26 = bsh_nodes[_e23].next;
+            uint _e27 = bsh_next_leaf_lobe(BSH, _e26, x_11, r_5, rl_5, bsh_nodes, _buffer_sizes);
+            i_4 = _e27;
         }
         loop_init_1 = false;
         uint _e13 = i_4;
@@ -1087,31 +1120,13 @@ Picks bsh_collect(
             break;
         }
         {
-            uint _e17 = picks.n;
-            bool _e18 = reservoir_takes(_e17);
-            if (_e18) {
-                uint _e20 = picks.n;
-                picks.n = _e20 + 1u;
-                uint _e23 = h_1;
-                uint _e24 = pcg_hash(_e23);
-                h_1 = _e24;
-                uint hi_4 = h_1;
-                uint _e26 = h_1;
-                uint _e27 = pcg_hash(_e26);
-                h_1 = _e27;
-                uint _e29 = picks.n;
-                uint _e31 = h_1;
-                uint _e32 = reservoir_slot(_e29, K, hi_4, _e31);
-                if (_e32 < K) {
-                    uint _e38 = i_4;
-                    uint _e41 = bsh_nodes[_e38].light;
-                    picks.light.inner[_e32] = _e41;
-                }
-            }
+            uint _e17 = i_4;
+            uint _e20 = bsh_nodes[_e17].light;
+            reservoir_offer(picks_1, h_2, _e20);
         }
     }
-    Picks _e49 = picks;
-    return _e49;
+    Picks _e28 = picks_1;
+    return _e28;
 }
 
 Connection connect_record(
@@ -1184,7 +1199,7 @@ Connection connect_traced(
     device type_4 const& slc_table,
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
-    device type_11 const& lights,
+    device type_13 const& lights,
     device type_4 const& r2_3,
     device type_4 const& rt2_3,
     constant _mslBufferSizes& _buffer_sizes
@@ -1209,7 +1224,7 @@ Connection connect(
     device type_4 const& slc_table,
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
-    device type_11 const& lights,
+    device type_13 const& lights,
     device type_4 const& r2_3,
     device type_4 const& rt2_3,
     constant _mslBufferSizes& _buffer_sizes
@@ -1226,13 +1241,13 @@ kernel void main_(
 , device type_6 const& geo_nodes [[user(fake0)]]
 , device type_7 const& geo_tris [[user(fake0)]]
 , device type_10 const& bsh_nodes [[user(fake0)]]
-, device type_11 const& lights [[user(fake0)]]
+, device type_13 const& lights [[user(fake0)]]
 , device type_4 const& r2_3 [[user(fake0)]]
 , device type_4 const& rt2_3 [[user(fake0)]]
 , constant ShadeParams& params [[user(fake0)]]
-, device type_12 const& points [[user(fake0)]]
-, device type_12 const& normals [[user(fake0)]]
-, device type_12& irradiance [[user(fake0)]]
+, device type_14 const& points [[user(fake0)]]
+, device type_14 const& normals [[user(fake0)]]
+, device type_14& irradiance [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
     uint h = {};

@@ -61,6 +61,26 @@ struct Connection {
     metal::packed_float3 y;
     float cos_x;
 };
+struct type_14 {
+    metal::float3 inner[64];
+};
+struct WorkgroupBox {
+    metal::float3 lo;
+    metal::float3 hi;
+};
+struct type_15 {
+    uint inner[1024];
+};
+struct type_16 {
+    uint inner[256];
+};
+struct TileWalk {
+    metal::float3 lo;
+    metal::packed_float3 hi;
+    float w;
+    uint total;
+    char _pad4[12];
+};
 struct Shaded {
     metal::float3 e;
     metal::float3 diffuse;
@@ -134,6 +154,11 @@ constant float TEMPORAL_CHANGE_HIGH = 8.0;
 constant float TEMPORAL_MIN_WEIGHT = 0.01;
 constant uint K = 8u;
 constant BshNodes BSH = 0u;
+constant uint BSH_TILE_DEPTH = 8u;
+constant uint BSH_TILE_SUBTREES = 256u;
+constant uint TILE_THREADS = 64u;
+constant uint BOX_THREADS = 64u;
+constant uint TILE_LIST = 1024u;
 
 float at(
     Table tab,
@@ -241,6 +266,17 @@ bool sphere_contains_point(
     return metal::dot(v_2, v_2) <= (r_1 * r_1);
 }
 
+bool sphere_overlaps_aabb(
+    metal::float3 c_1,
+    float r_2,
+    metal::float3 bmin,
+    metal::float3 bmax
+) {
+    metal::float3 q = metal::clamp(c_1, bmin, bmax);
+    metal::float3 v_3 = q - c_1;
+    return metal::dot(v_3, v_3) <= (r_2 * r_2);
+}
+
 float inverse_square(
     float d2_2
 ) {
@@ -261,32 +297,32 @@ float connection_factor(
 float connection_cosine(
     metal::float3 x_3,
     metal::float3 y,
-    metal::float3 n,
+    metal::float3 n_1,
     metal::float3 ng,
     float r2_1
 ) {
-    bool local_2 = {};
-    bool local_3 = {};
-    metal::float3 v_3 = x_3 - y;
-    float d2_6 = metal::dot(v_3, v_3);
+    bool local_6 = {};
+    bool local_7 = {};
+    metal::float3 v_4 = x_3 - y;
+    float d2_6 = metal::dot(v_4, v_4);
     bool _e7 = slc_keep(r2_1, d2_6);
     if (!(!(_e7))) {
-        local_2 = !((d2_6 > 0.0));
+        local_6 = !((d2_6 > 0.0));
     } else {
-        local_2 = true;
+        local_6 = true;
     }
-    bool _e16 = local_2;
+    bool _e16 = local_6;
     if (_e16) {
         return 0.0;
     }
-    metal::float3 w_6 = v_3 / metal::float3(metal::sqrt(d2_6));
-    float cos_x_1 = -(metal::dot(n, w_6));
+    metal::float3 w_9 = v_4 / metal::float3(metal::sqrt(d2_6));
+    float cos_x_1 = -(metal::dot(n_1, w_9));
     if (!((cos_x_1 <= 0.0))) {
-        local_3 = metal::dot(ng, w_6) >= 0.0;
+        local_7 = metal::dot(ng, w_9) >= 0.0;
     } else {
-        local_3 = true;
+        local_7 = true;
     }
-    bool _e32 = local_3;
+    bool _e32 = local_7;
     if (_e32) {
         return 0.0;
     }
@@ -302,29 +338,29 @@ float spot_falloff(
     if (cos_inner <= cos_outer) {
         return (cos_theta >= cos_outer) ? 1.0 : 0.0;
     }
-    float t_2 = metal::saturate((cos_theta - cos_outer) / (cos_inner - cos_outer));
-    return (shape > 0.5) ? (t_2 * t_2) : ((t_2 * t_2) * (3.0 - (2.0 * t_2)));
+    float t_5 = metal::saturate((cos_theta - cos_outer) / (cos_inner - cos_outer));
+    return (shape > 0.5) ? (t_5 * t_5) : ((t_5 * t_5) * (3.0 - (2.0 * t_5)));
 }
 
 float triangle_lobe(
-    metal::float3 n_1,
+    metal::float3 n_2,
     float area,
     metal::float3 w_1
 ) {
-    return area * metal::max(metal::dot(n_1, w_1), 0.0);
+    return area * metal::max(metal::dot(n_2, w_1), 0.0);
 }
 
 metal::float3 triangle_sample(
     metal::float3 a_2,
     metal::float3 b_2,
-    metal::float3 c_1,
+    metal::float3 c_2,
     float u1_,
     float u2_
 ) {
     float su = metal::sqrt(u1_);
     float b0_ = 1.0 - su;
     float b1_ = u2_ * su;
-    return ((a_2 * b0_) + (b_2 * b1_)) + (c_1 * ((1.0 - b0_) - b1_));
+    return ((a_2 * b0_) + (b_2 * b1_)) + (c_2 * ((1.0 - b0_) - b1_));
 }
 
 float atan_portable(
@@ -349,8 +385,8 @@ float atan_portable(
     float _e21 = base;
     float _e33 = t_1;
     float _e35 = t_1;
-    float r_9 = _e21 + (((((((((0.080537446 * z) - 0.13877685) * z) + 0.19977711) * z) - 0.3333295) * z) * _e33) + _e35);
-    return (x_4 < 0.0) ? -(r_9) : r_9;
+    float r_8 = _e21 + (((((((((0.080537446 * z) - 0.13877685) * z) + 0.19977711) * z) - 0.3333295) * z) * _e33) + _e35);
+    return (x_4 < 0.0) ? -(r_8) : r_8;
 }
 
 float atan2_portable(
@@ -377,12 +413,12 @@ float atan2_portable(
 }
 
 float ies_fold_c(
-    float c_2,
+    float c_3,
     float h_first,
     float h_last
 ) {
     float a_3 = {};
-    a_3 = c_2 - (360.0 * metal::floor(c_2 / 360.0));
+    a_3 = c_3 - (360.0 * metal::floor(c_3 / 360.0));
     if (h_last <= 0.0) {
         return 0.0;
     }
@@ -430,18 +466,18 @@ float ies_fold_c(
 
 uint ies_segment(
     Table tab_1,
-    uint start,
-    uint n_2,
+    uint start_1,
+    uint n_3,
     float x_6,
     device type_4 const& slc_table,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint lo = 0u;
     uint hi = {};
-    if (n_2 < 2u) {
+    if (n_3 < 2u) {
         return 0u;
     }
-    hi = n_2 - 1u;
+    hi = n_3 - 1u;
     uint2 loop_bound = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound == uint2(0u))) { break; }
@@ -456,7 +492,7 @@ uint ies_segment(
             uint _e17 = lo;
             uint _e18 = hi;
             uint mid = (_e17 + _e18) >> 1u;
-            float _e23 = at(tab_1, start + mid, slc_table, _buffer_sizes);
+            float _e23 = at(tab_1, start_1 + mid, slc_table, _buffer_sizes);
             if (_e23 <= x_6) {
                 lo = mid;
             } else {
@@ -483,11 +519,11 @@ float ies_candela(
     Table tab_2,
     uint base_1,
     float gamma,
-    float c_3,
+    float c_4,
     device type_4 const& slc_table,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    bool local_4 = {};
+    bool local_8 = {};
     float _e4 = at(tab_2, base_1, slc_table, _buffer_sizes);
     uint _e5 = to_u32_(_e4);
     float _e8 = at(tab_2, base_1 + 1u, slc_table, _buffer_sizes);
@@ -498,17 +534,17 @@ float ies_candela(
     float _e14 = at(tab_2, v0_, slc_table, _buffer_sizes);
     if (!((gamma < _e14))) {
         float _e22 = at(tab_2, (v0_ + _e5) - 1u, slc_table, _buffer_sizes);
-        local_4 = gamma > _e22;
+        local_8 = gamma > _e22;
     } else {
-        local_4 = true;
+        local_8 = true;
     }
-    bool _e25 = local_4;
+    bool _e25 = local_8;
     if (_e25) {
         return 0.0;
     }
     float _e27 = at(tab_2, h0_, slc_table, _buffer_sizes);
     float _e31 = at(tab_2, (h0_ + _e9) - 1u, slc_table, _buffer_sizes);
-    float _e32 = ies_fold_c(c_3, _e27, _e31);
+    float _e32 = ies_fold_c(c_4, _e27, _e31);
     uint _e33 = ies_segment(tab_2, v0_, _e5, gamma, slc_table, _buffer_sizes);
     uint _e34 = ies_segment(tab_2, h0_, _e9, _e32, slc_table, _buffer_sizes);
     uint iv1_ = metal::min(_e33 + 1u, _e5 - 1u);
@@ -524,8 +560,8 @@ float ies_candela(
     float a_11 = (_e58 * (1.0 - _e49)) + (_e65 * _e49);
     float _e71 = at(tab_2, (c0_ + (ih1_ * _e5)) + _e33, slc_table, _buffer_sizes);
     float _e78 = at(tab_2, (c0_ + (ih1_ * _e5)) + iv1_, slc_table, _buffer_sizes);
-    float b_7 = (_e71 * (1.0 - _e49)) + (_e78 * _e49);
-    return (a_11 * (1.0 - _e54)) + (b_7 * _e54);
+    float b_9 = (_e71 * (1.0 - _e49)) + (_e78 * _e49);
+    return (a_11 * (1.0 - _e54)) + (b_9 * _e54);
 }
 
 float ies_candela_dir(
@@ -541,8 +577,8 @@ float ies_candela_dir(
     float gamma_1 = ((_e9) * 57.295779513082322865);
     bool on_axis = (metal::abs(wr) + metal::abs(ws)) <= 0.0;
     float _e16 = atan2_portable(ws, wr);
-    float c_7 = on_axis ? 0.0 : ((_e16) * 57.295779513082322865);
-    float _e20 = ies_candela(tab_3, base_2, gamma_1, c_7, slc_table, _buffer_sizes);
+    float c_8 = on_axis ? 0.0 : ((_e16) * 57.295779513082322865);
+    float _e20 = ies_candela(tab_3, base_2, gamma_1, c_8, slc_table, _buffer_sizes);
     return _e20;
 }
 
@@ -600,13 +636,13 @@ uint mul_hi_u32_(
 }
 
 uint uniform_index(
-    uint n_3,
+    uint n_4,
     uint hi_1,
     uint lo_1
 ) {
-    uint _e3 = mul_lo_u32_(hi_1, n_3);
-    uint _e4 = mul_hi_u32_(hi_1, n_3);
-    uint _e5 = mul_hi_u32_(lo_1, n_3);
+    uint _e3 = mul_lo_u32_(hi_1, n_4);
+    uint _e4 = mul_hi_u32_(hi_1, n_4);
+    uint _e5 = mul_hi_u32_(lo_1, n_4);
     if (_e3 > (4294967295u - _e5)) {
         return _e4 + 1u;
     }
@@ -614,15 +650,15 @@ uint uniform_index(
 }
 
 uint reservoir_slot(
-    uint n_4,
+    uint n_5,
     uint k_1,
     uint hi_2,
     uint lo_2
 ) {
-    if (n_4 <= k_1) {
-        return n_4 - 1u;
+    if (n_5 <= k_1) {
+        return n_5 - 1u;
     }
-    uint _e7 = uniform_index(n_4, hi_2, lo_2);
+    uint _e7 = uniform_index(n_5, hi_2, lo_2);
     if (_e7 < k_1) {
         return _e7;
     }
@@ -630,16 +666,16 @@ uint reservoir_slot(
 }
 
 bool reservoir_takes(
-    uint n_5
+    uint n_6
 ) {
-    return n_5 < RESERVOIR_FULL;
+    return n_6 < RESERVOIR_FULL;
 }
 
 float reservoir_weight(
-    uint n_6,
+    uint n_7,
     uint k_2
 ) {
-    float _e2 = to_f32_(n_6);
+    float _e2 = to_f32_(n_7);
     float _e3 = to_f32_(k_2);
     return metal::max(_e2 / _e3, 1.0);
 }
@@ -693,27 +729,27 @@ float cone_cos_of(
     float a_5,
     metal::float3 d
 ) {
-    bool local_5 = {};
-    bool local_6 = {};
+    bool local_9 = {};
+    bool local_10 = {};
     float vd = metal::dot(v, d);
     float h2_ = d2_4 - (a_5 * a_5);
     if (!((h2_ <= 0.0))) {
         if (vd >= 0.0) {
-            local_6 = (vd * vd) >= h2_;
+            local_10 = (vd * vd) >= h2_;
         } else {
-            local_6 = false;
+            local_10 = false;
         }
-        bool _e19 = local_6;
-        local_5 = _e19;
+        bool _e19 = local_10;
+        local_9 = _e19;
     } else {
-        local_5 = true;
+        local_9 = true;
     }
-    bool _e21 = local_5;
+    bool _e21 = local_9;
     if (_e21) {
         return 1.0;
     }
-    metal::float3 c_8 = metal::cross(v, d);
-    return metal::min(((vd * metal::sqrt(h2_)) + (metal::sqrt(metal::dot(c_8, c_8)) * a_5)) / d2_4, 1.0);
+    metal::float3 c_9 = metal::cross(v, d);
+    return metal::min(((vd * metal::sqrt(h2_)) + (metal::sqrt(metal::dot(c_9, c_9)) * a_5)) / d2_4, 1.0);
 }
 
 float cone_cos_toward(
@@ -722,8 +758,8 @@ float cone_cos_toward(
     metal::float3 p,
     metal::float3 d_1
 ) {
-    metal::float3 v_4 = center - p;
-    float _e6 = cone_cos_of(v_4, metal::dot(v_4, v_4), radius, d_1);
+    metal::float3 v_5 = center - p;
+    float _e6 = cone_cos_of(v_5, metal::dot(v_5, v_5), radius, d_1);
     return _e6;
 }
 
@@ -731,8 +767,8 @@ float range_scale_at(
     metal::float4 rl,
     float cos_t
 ) {
-    float t_3 = ((0.5 + (0.5 * cos_t)) * (rl.z - 1.0)) + 1.0;
-    return metal::clamp(rl.x + ((rl.y * rl.z) / (t_3 * t_3)), 1.0, rl.w * rl.w);
+    float t_6 = ((0.5 + (0.5 * cos_t)) * (rl.z - 1.0)) + 1.0;
+    return metal::clamp(rl.x + ((rl.y * rl.z) / (t_6 * t_6)), 1.0, rl.w * rl.w);
 }
 
 float range_scale_toward(
@@ -740,12 +776,12 @@ float range_scale_toward(
     metal::float3 center_1,
     float radius_1,
     metal::float3 p_1,
-    metal::float3 r_2
+    metal::float3 r_3
 ) {
     if (rl_1.w <= 1.0) {
         return 1.0;
     }
-    float _e9 = cone_cos_toward(center_1, radius_1, p_1, r_2);
+    float _e9 = cone_cos_toward(center_1, radius_1, p_1, r_3);
     float _e10 = range_scale_at(rl_1, _e9);
     return _e10;
 }
@@ -753,21 +789,21 @@ float range_scale_toward(
 metal::float3 triangle_normal(
     metal::float3 a_6,
     metal::float3 b_4,
-    metal::float3 c_4
+    metal::float3 c_5
 ) {
-    bool local_7 = {};
-    metal::float3 n_12 = metal::cross(b_4 - a_6, c_4 - a_6);
-    float l2_ = metal::dot(n_12, n_12);
+    bool local_11 = {};
+    metal::float3 n_13 = metal::cross(b_4 - a_6, c_5 - a_6);
+    float l2_ = metal::dot(n_13, n_13);
     if (!(!((l2_ > 0.0)))) {
-        local_7 = !((l2_ < 300000000000000000000000000000000000000.0));
+        local_11 = !((l2_ < 300000000000000000000000000000000000000.0));
     } else {
-        local_7 = true;
+        local_11 = true;
     }
-    bool _e17 = local_7;
+    bool _e17 = local_11;
     if (_e17) {
         return metal::float3(0.0, 0.0, 0.0);
     }
-    return n_12 / metal::float3(metal::sqrt(l2_));
+    return n_13 / metal::float3(metal::sqrt(l2_));
 }
 
 metal::float3 light_intensity(
@@ -852,10 +888,10 @@ float bsh_inner_scale(
     float a_8,
     metal::float3 v_1,
     float d2_5,
-    metal::float3 r_3,
+    metal::float3 r_4,
     metal::float4 rl_2
 ) {
-    float _e5 = cone_cos_of(v_1, d2_5, a_8, r_3);
+    float _e5 = cone_cos_of(v_1, d2_5, a_8, r_4);
     float _e8 = range_scale_at(rl_2, _e5 + 0.000002);
     return _e8;
 }
@@ -863,153 +899,188 @@ float bsh_inner_scale(
 bool bsh_reaches(
     BshNode node_2,
     metal::float3 x_8,
-    metal::float3 r_4,
+    metal::float3 r_5,
     metal::float4 rl_3
 ) {
-    bool local_8 = {};
-    bool local_9 = {};
+    bool local_12 = {};
+    bool local_13 = {};
     bool _e6 = sphere_contains_point(node_2.center, node_2.radius, x_8);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
         bool _e20 = sphere_contains_point(node_2.center, node_2.radius * (rl_3.w * 1.0001), x_8);
-        local_8 = !(_e20);
+        local_12 = !(_e20);
     } else {
-        local_8 = true;
+        local_12 = true;
     }
-    bool _e23 = local_8;
+    bool _e23 = local_12;
     if (_e23) {
         return false;
     }
     float _e25 = bsh_range_bound(node_2);
-    metal::float3 v_5 = x_8 - node_2.center;
-    float d2_7 = metal::dot(v_5, v_5);
+    metal::float3 v_6 = x_8 - node_2.center;
+    float d2_7 = metal::dot(v_6, v_6);
     float reach_max = node_2.extent + ((rl_3.w * 1.001) * _e25);
     if (d2_7 > (reach_max * reach_max)) {
         return false;
     }
     if (node_2.child == BSH_NONE) {
-        float _e43 = range_scale_toward(rl_3, node_2.center, node_2.extent, x_8, r_4);
+        float _e43 = range_scale_toward(rl_3, node_2.center, node_2.extent, x_8, r_5);
         float _e46 = bsh_scaled_radius(node_2, metal::sqrt(_e43));
         bool _e47 = sphere_contains_point(node_2.center, _e46, x_8);
         return _e47;
     }
-    float _e50 = bsh_inner_scale(node_2.extent, -(v_5), d2_7, r_4, rl_3);
+    float _e50 = bsh_inner_scale(node_2.extent, -(v_6), d2_7, r_5, rl_3);
     float s_c = _e50 * 1.001;
     float reach = node_2.extent + (metal::sqrt(s_c) * _e25);
     if (d2_7 <= ((node_2.radius * node_2.radius) * s_c)) {
-        local_9 = d2_7 <= (reach * reach);
+        local_13 = d2_7 <= (reach * reach);
     } else {
-        local_9 = false;
+        local_13 = false;
     }
-    bool _e67 = local_9;
+    bool _e67 = local_13;
     return _e67;
 }
 
-uint bsh_next_leaf_lobe(
+bool bsh_reaches_box(
+    BshNode node_3,
+    metal::float3 lo_3,
+    metal::float3 hi_3,
+    float w_4
+) {
+    bool _e13 = sphere_overlaps_aabb(node_3.center, node_3.radius * (metal::max(1.0, w_4 * 1.0001) * 1.0001), lo_3, hi_3);
+    return _e13;
+}
+
+uint bsh_subtree(
     BshNodes nodes_3,
-    uint start_1,
-    metal::float3 x_9,
-    metal::float3 r_5,
-    metal::float4 rl_4,
+    uint s_1,
+    uint depth,
     device type_9 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint i_2 = {};
-    i_2 = start_1;
+    uint level = 0u;
+    bool local_14 = {};
+    uint _e3 = bsh_first(nodes_3, bsh_nodes, _buffer_sizes);
+    i_2 = _e3;
     uint2 loop_bound_1 = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound_1 == uint2(0u))) { break; }
         loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
-        uint _e6 = i_2;
-        if (_e6 != BSH_NONE) {
+        uint _e7 = level;
+        if (_e7 < depth) {
+            uint _e11 = i_2;
+            local_14 = _e11 != BSH_NONE;
+        } else {
+            local_14 = false;
+        }
+        bool _e15 = local_14;
+        if (_e15) {
         } else {
             break;
         }
         {
-            uint _e9 = i_2;
-            BshNode _e10 = bsh_node(nodes_3, _e9, bsh_nodes, _buffer_sizes);
-            bool _e11 = bsh_reaches(_e10, x_9, r_5, rl_4);
-            if (_e11) {
-                if (_e10.child == BSH_NONE) {
-                    uint _e15 = i_2;
-                    return _e15;
+            uint _e16 = i_2;
+            BshNode _e17 = bsh_node(nodes_3, _e16, bsh_nodes, _buffer_sizes);
+            uint _e18 = level;
+            uint below = depth - _e18;
+            if (_e17.child == BSH_NONE) {
+                if ((s_1 << (32u - below)) != 0u) {
+                    return BSH_NONE;
                 }
-                i_2 = _e10.child;
-            } else {
-                i_2 = _e10.next;
+                uint _e29 = i_2;
+                return _e29;
             }
+            if (((s_1 >> (below - 1u)) & 1u) == 0u) {
+                i_2 = _e17.child;
+            } else {
+                BshNode _e39 = bsh_node(nodes_3, _e17.child, bsh_nodes, _buffer_sizes);
+                i_2 = _e39.next;
+            }
+            uint _e41 = level;
+            level = _e41 + 1u;
         }
     }
-    return BSH_NONE;
+    uint _e44 = i_2;
+    return _e44;
 }
 
-Picks bsh_collect(
-    metal::float3 x_10,
-    metal::float3 r_6,
-    metal::float4 rl_5,
-    uint seed_1,
+uint bsh_next_leaf_box(
+    BshNodes nodes_4,
+    uint start_2,
+    uint end,
+    metal::float3 lo_4,
+    metal::float3 hi_4,
+    float w_5,
     device type_9 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Picks picks = {};
-    uint h_1 = {};
     uint i_3 = {};
-    picks.n = 0u;
-    h_1 = seed_1;
-    uint _e10 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
-    uint _e11 = bsh_next_leaf_lobe(BSH, _e10, x_10, r_6, rl_5, bsh_nodes, _buffer_sizes);
-    i_3 = _e11;
+    i_3 = start_2;
     uint2 loop_bound_2 = uint2(4294967295u);
-    bool loop_init = true;
     while(true) {
         if (metal::all(loop_bound_2 == uint2(0u))) { break; }
         loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
-        if (!loop_init) {
-            uint _e44 = i_3;
-            uint _e47 = bsh_nodes[_e44].next;
-            uint _e48 = bsh_next_leaf_lobe(BSH, _e47, x_10, r_6, rl_5, bsh_nodes, _buffer_sizes);
-            i_3 = _e48;
-        }
-        loop_init = false;
-        uint _e13 = i_3;
-        if (_e13 != BSH_NONE) {
+        uint _e7 = i_3;
+        if (_e7 != end) {
         } else {
             break;
         }
         {
-            uint _e17 = picks.n;
-            bool _e18 = reservoir_takes(_e17);
-            if (_e18) {
-                uint _e20 = picks.n;
-                picks.n = _e20 + 1u;
-                uint _e23 = h_1;
-                uint _e24 = pcg_hash(_e23);
-                h_1 = _e24;
-                uint hi_3 = h_1;
-                uint _e26 = h_1;
-                uint _e27 = pcg_hash(_e26);
-                h_1 = _e27;
-                uint _e29 = picks.n;
-                uint _e31 = h_1;
-                uint _e32 = reservoir_slot(_e29, K, hi_3, _e31);
-                if (_e32 < K) {
-                    uint _e38 = i_3;
-                    uint _e41 = bsh_nodes[_e38].light;
-                    picks.light.inner[_e32] = _e41;
+            uint _e9 = i_3;
+            BshNode _e10 = bsh_node(nodes_4, _e9, bsh_nodes, _buffer_sizes);
+            bool _e11 = bsh_reaches_box(_e10, lo_4, hi_4, w_5);
+            if (_e11) {
+                if (_e10.child == BSH_NONE) {
+                    uint _e15 = i_3;
+                    return _e15;
                 }
+                i_3 = _e10.child;
+            } else {
+                i_3 = _e10.next;
             }
         }
     }
-    Picks _e49 = picks;
-    return _e49;
+    return end;
+}
+
+void reservoir_offer(
+    thread Picks& picks_1,
+    thread uint& h_1,
+    uint light
+) {
+    uint _e4 = picks_1.n;
+    bool _e5 = reservoir_takes(_e4);
+    if (_e5) {
+        uint _e7 = picks_1.n;
+        picks_1.n = _e7 + 1u;
+        uint _e10 = h_1;
+        uint _e11 = pcg_hash(_e10);
+        h_1 = _e11;
+        uint hi_6 = h_1;
+        uint _e13 = h_1;
+        uint _e14 = pcg_hash(_e13);
+        h_1 = _e14;
+        uint _e16 = picks_1.n;
+        uint _e18 = h_1;
+        uint _e19 = reservoir_slot(_e16, K, hi_6, _e18);
+        if (_e19 < K) {
+            picks_1.light.inner[_e19] = light;
+            return;
+        } else {
+            return;
+        }
+    } else {
+        return;
+    }
 }
 
 Connection connect_record(
     GpuLight l_2,
-    metal::float3 x_11,
-    metal::float3 n_7,
+    metal::float3 x_9,
+    metal::float3 n_8,
     metal::float3 ng_1,
     float r2_2,
     float rt2_2,
@@ -1021,51 +1092,51 @@ Connection connect_record(
     device type_4 const& slc_table,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Connection c_5 = {};
-    bool local_10 = {};
-    bool local_11 = {};
-    c_5.e = metal::float3(0.0);
+    Connection c_6 = {};
+    bool local_15 = {};
+    bool local_16 = {};
+    c_6.e = metal::float3(0.0);
     metal::float3 _e16 = light_point(l_2, u1_2, u2_2);
-    c_5.y = _e16;
-    metal::float3 _e19 = c_5.y;
-    float _e20 = connection_cosine(x_11, _e19, n_7, ng_1, r2_2);
-    c_5.cos_x = _e20;
-    float _e22 = c_5.cos_x;
+    c_6.y = _e16;
+    metal::float3 _e19 = c_6.y;
+    float _e20 = connection_cosine(x_9, _e19, n_8, ng_1, r2_2);
+    c_6.cos_x = _e20;
+    float _e22 = c_6.cos_x;
     if (!((_e22 <= 0.0))) {
         if (trace) {
-            metal::float3 _e33 = c_5.y;
-            bool _e34 = occluded(x_11 + (ng_1 * eps), _e33);
-            local_11 = _e34;
+            metal::float3 _e33 = c_6.y;
+            bool _e34 = occluded(x_9 + (ng_1 * eps), _e33);
+            local_16 = _e34;
         } else {
-            local_11 = false;
+            local_16 = false;
         }
-        bool _e36 = local_11;
-        local_10 = _e36;
+        bool _e36 = local_16;
+        local_15 = _e36;
     } else {
-        local_10 = true;
+        local_15 = true;
     }
-    bool _e38 = local_10;
+    bool _e38 = local_15;
     if (_e38) {
-        Connection _e39 = c_5;
+        Connection _e39 = c_6;
         return _e39;
     }
-    metal::float3 _e41 = c_5.y;
-    metal::float3 v_6 = x_11 - _e41;
-    float d2_8 = metal::dot(v_6, v_6);
-    metal::float3 _e48 = light_intensity(l_2, v_6 / metal::float3(metal::sqrt(d2_8)), slc_table, _buffer_sizes);
-    float _e50 = c_5.cos_x;
+    metal::float3 _e41 = c_6.y;
+    metal::float3 v_7 = x_9 - _e41;
+    float d2_8 = metal::dot(v_7, v_7);
+    metal::float3 _e48 = light_intensity(l_2, v_7 / metal::float3(metal::sqrt(d2_8)), slc_table, _buffer_sizes);
+    float _e50 = c_6.cos_x;
     float _e51 = connection_factor(_e50, d2_8, rt2_2, w_res);
-    c_5.e = _e48 * _e51;
-    Connection _e53 = c_5;
+    c_6.e = _e48 * _e51;
+    Connection _e53 = c_6;
     return _e53;
 }
 
 Connection connect_traced(
     uint li,
-    metal::float3 x_12,
-    metal::float3 n_8,
+    metal::float3 x_10,
+    metal::float3 n_9,
     metal::float3 ng_2,
-    float s,
+    float s_2,
     float w_res_1,
     float u1_3,
     float u2_3,
@@ -1080,7 +1151,7 @@ Connection connect_traced(
     GpuLight _e12 = lights[li];
     float _e15 = r2_3[li];
     float _e19 = rt2_3[li];
-    Connection _e21 = connect_record(_e12, x_12, n_8, ng_2, s * _e15, s * _e19, w_res_1, u1_3, u2_3, eps_1, trace_1, slc_table, _buffer_sizes);
+    Connection _e21 = connect_record(_e12, x_10, n_9, ng_2, s_2 * _e15, s_2 * _e19, w_res_1, u1_3, u2_3, eps_1, trace_1, slc_table, _buffer_sizes);
     return _e21;
 }
 
@@ -1088,32 +1159,330 @@ metal::float4 surface_at(
     metal::int2 texel,
     metal::texture2d<float, metal::access::sample> position_tex
 ) {
-    metal::float4 p_2 = position_tex.read(metal::uint2(texel), 0);
-    return (p_2.w > 0.0) ? metal::float4(p_2.xyz, 1.0) : metal::float4(0.0);
+    metal::float4 p_4 = position_tex.read(metal::uint2(texel), 0);
+    return (p_4.w > 0.0) ? metal::float4(p_4.xyz, 1.0) : metal::float4(0.0);
+}
+
+uint naga_div(uint lhs, uint rhs) {
+    return lhs / metal::select(rhs, 1u, rhs == 0u);
+}
+
+WorkgroupBox workgroup_bounds(
+    uint li_1,
+    metal::float3 lo_5,
+    metal::float3 hi_5,
+    threadgroup type_14& wg_lo,
+    threadgroup type_14& wg_hi,
+    threadgroup WorkgroupBox& wg_box
+) {
+    uint stride = 32u;
+    wg_lo.inner[li_1] = lo_5;
+    wg_hi.inner[li_1] = hi_5;
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    uint2 loop_bound_3 = uint2(4294967295u);
+    bool loop_init = true;
+    while(true) {
+        if (metal::all(loop_bound_3 == uint2(0u))) { break; }
+        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+        if (!loop_init) {
+            uint _e36 = stride;
+            stride = naga_div(_e36, 2u);
+        }
+        loop_init = false;
+        uint _e9 = stride;
+        if (_e9 > 0u) {
+        } else {
+            break;
+        }
+        {
+            uint _e12 = stride;
+            if (li_1 < _e12) {
+                metal::float3 _e18 = wg_lo.inner[li_1];
+                uint _e20 = stride;
+                metal::float3 _e23 = wg_lo.inner[li_1 + _e20];
+                wg_lo.inner[li_1] = metal::min(_e18, _e23);
+                metal::float3 _e29 = wg_hi.inner[li_1];
+                uint _e31 = stride;
+                metal::float3 _e34 = wg_hi.inner[li_1 + _e31];
+                wg_hi.inner[li_1] = metal::max(_e29, _e34);
+            }
+            metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+        }
+    }
+    if (li_1 == 0u) {
+        metal::float3 _e44 = wg_lo.inner[0];
+        metal::float3 _e47 = wg_hi.inner[0];
+        wg_box = WorkgroupBox {_e44, _e47};
+    }
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    WorkgroupBox unnamed = wg_box;
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    return unnamed;
+}
+
+WorkgroupBox workgroup_box(
+    uint li_2,
+    metal::float3 p_2,
+    bool has,
+    threadgroup type_14& wg_lo,
+    threadgroup type_14& wg_hi,
+    threadgroup WorkgroupBox& wg_box
+) {
+    WorkgroupBox _e9 = workgroup_bounds(li_2, has ? p_2 : metal::float3(340282350000000000000000000000000000000.0), has ? p_2 : metal::float3(-340282350000000000000000000000000000000.0), wg_lo, wg_hi, wg_box);
+    return _e9;
+}
+
+bool box_is_empty(
+    WorkgroupBox b_6
+) {
+    return b_6.lo.x > b_6.hi.x;
+}
+
+uint tile_subtree(
+    uint s_3,
+    TileWalk t_2,
+    bool list,
+    uint at_1,
+    uint start_3,
+    uint to,
+    device type_9 const& bsh_nodes,
+    threadgroup type_15& tile_list,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint p_3 = {};
+    uint b_7 = {};
+    bool local_17 = {};
+    bool local_18 = {};
+    bool local_19 = {};
+    uint _e8 = bsh_subtree(BSH, s_3, BSH_TILE_DEPTH, bsh_nodes, _buffer_sizes);
+    if (_e8 == BSH_NONE) {
+        return 0u;
+    }
+    uint end_1 = bsh_nodes[_e8].next;
+    p_3 = at_1;
+    uint _e21 = bsh_next_leaf_box(BSH, _e8, end_1, t_2.lo, t_2.hi, t_2.w, bsh_nodes, _buffer_sizes);
+    b_7 = _e21;
+    uint2 loop_bound_4 = uint2(4294967295u);
+    bool loop_init_1 = true;
+    while(true) {
+        if (metal::all(loop_bound_4 == uint2(0u))) { break; }
+        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+        if (!loop_init_1) {
+            uint _e53 = b_7;
+            uint _e56 = bsh_nodes[_e53].next;
+            uint _e60 = bsh_next_leaf_box(BSH, _e56, end_1, t_2.lo, t_2.hi, t_2.w, bsh_nodes, _buffer_sizes);
+            b_7 = _e60;
+        }
+        loop_init_1 = false;
+        uint _e23 = b_7;
+        if (_e23 != end_1) {
+            if (!(!(list))) {
+                uint _e31 = p_3;
+                local_18 = _e31 < to;
+            } else {
+                local_18 = true;
+            }
+            bool _e34 = local_18;
+            local_17 = _e34;
+        } else {
+            local_17 = false;
+        }
+        bool _e36 = local_17;
+        if (_e36) {
+        } else {
+            break;
+        }
+        {
+            if (list) {
+                uint _e39 = p_3;
+                local_19 = _e39 >= start_3;
+            } else {
+                local_19 = false;
+            }
+            bool _e42 = local_19;
+            if (_e42) {
+                uint _e44 = p_3;
+                uint _e47 = b_7;
+                tile_list.inner[_e44 - start_3] = _e47;
+            }
+            uint _e48 = p_3;
+            p_3 = _e48 + 1u;
+        }
+    }
+    uint _e61 = p_3;
+    return _e61 - at_1;
+}
+
+TileWalk tile_walk_begin(
+    uint li_3,
+    metal::float3 x_11,
+    float w_6,
+    bool has_1,
+    device type_9 const& bsh_nodes,
+    threadgroup type_14& wg_lo,
+    threadgroup type_14& wg_hi,
+    threadgroup WorkgroupBox& wg_box,
+    threadgroup type_15& tile_list,
+    threadgroup type_16& subtree_at,
+    threadgroup metal::atomic_uint& tile_scale,
+    threadgroup uint& tile_total,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    TileWalk t_3 = {};
+    uint s_4 = {};
+    uint sum = 0u;
+    uint s_5 = 0u;
+    uint _e8 = metal::atomic_fetch_max_explicit(&tile_scale, has_1 ? as_type<uint>(w_6) : 0u, metal::memory_order_relaxed);
+    WorkgroupBox _e9 = workgroup_box(li_3, x_11, has_1, wg_lo, wg_hi, wg_box);
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    uint unnamed_1 = metal::atomic_load_explicit(&tile_scale, metal::memory_order_relaxed);
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    t_3 = TileWalk {_e9.lo, _e9.hi, as_type<float>(unnamed_1), 0u};
+    bool _e18 = box_is_empty(_e9);
+    if (_e18) {
+        TileWalk _e19 = t_3;
+        return _e19;
+    }
+    s_4 = li_3;
+    uint2 loop_bound_5 = uint2(4294967295u);
+    bool loop_init_2 = true;
+    while(true) {
+        if (metal::all(loop_bound_5 == uint2(0u))) { break; }
+        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+        if (!loop_init_2) {
+            uint _e34 = s_4;
+            s_4 = _e34 + TILE_THREADS;
+        }
+        loop_init_2 = false;
+        uint _e21 = s_4;
+        if (_e21 < BSH_TILE_SUBTREES) {
+        } else {
+            break;
+        }
+        {
+            uint _e25 = s_4;
+            uint _e27 = s_4;
+            TileWalk _e28 = t_3;
+            uint _e33 = tile_subtree(_e27, _e28, false, 0u, 0u, 0u, bsh_nodes, tile_list, _buffer_sizes);
+            subtree_at.inner[_e25] = _e33;
+        }
+    }
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    if (li_3 == 0u) {
+        uint2 loop_bound_6 = uint2(4294967295u);
+        bool loop_init_3 = true;
+        while(true) {
+            if (metal::all(loop_bound_6 == uint2(0u))) { break; }
+            loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+            if (!loop_init_3) {
+                uint _e57 = s_5;
+                s_5 = _e57 + 1u;
+            }
+            loop_init_3 = false;
+            uint _e43 = s_5;
+            if (_e43 < BSH_TILE_SUBTREES) {
+            } else {
+                break;
+            }
+            {
+                uint _e47 = s_5;
+                uint c_10 = subtree_at.inner[_e47];
+                uint _e51 = s_5;
+                uint _e53 = sum;
+                subtree_at.inner[_e51] = _e53;
+                uint _e54 = sum;
+                sum = _e54 + c_10;
+            }
+        }
+        uint _e60 = sum;
+        tile_total = _e60;
+    }
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    uint unnamed_2 = tile_total;
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    t_3.total = unnamed_2;
+    TileWalk _e64 = t_3;
+    return _e64;
+}
+
+uint tile_walk_fill(
+    uint li_4,
+    TileWalk t_4,
+    uint start_4,
+    device type_9 const& bsh_nodes,
+    threadgroup type_15& tile_list,
+    threadgroup type_16& subtree_at,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint s_6 = {};
+    uint past = {};
+    bool local_20 = {};
+    uint to_1 = metal::min(t_4.total, start_4 + TILE_LIST);
+    s_6 = li_4;
+    uint2 loop_bound_7 = uint2(4294967295u);
+    bool loop_init_4 = true;
+    while(true) {
+        if (metal::all(loop_bound_7 == uint2(0u))) { break; }
+        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+        if (!loop_init_4) {
+            uint _e38 = s_6;
+            s_6 = _e38 + TILE_THREADS;
+        }
+        loop_init_4 = false;
+        uint _e8 = s_6;
+        if (_e8 < BSH_TILE_SUBTREES) {
+        } else {
+            break;
+        }
+        {
+            uint _e12 = s_6;
+            uint at_2 = subtree_at.inner[_e12];
+            past = t_4.total;
+            uint _e17 = s_6;
+            if ((_e17 + 1u) < BSH_TILE_SUBTREES) {
+                uint _e23 = s_6;
+                uint _e27 = subtree_at.inner[_e23 + 1u];
+                past = _e27;
+            }
+            if (at_2 < to_1) {
+                uint _e31 = past;
+                local_20 = _e31 > start_4;
+            } else {
+                local_20 = false;
+            }
+            bool _e34 = local_20;
+            if (_e34) {
+                uint _e35 = s_6;
+                uint _e37 = tile_subtree(_e35, t_4, true, at_2, start_4, to_1, bsh_nodes, tile_list, _buffer_sizes);
+            }
+        }
+    }
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    return to_1 - start_4;
 }
 
 Shaded shade_connection(
-    Connection c_6,
-    metal::float3 x_13,
-    metal::float3 n_9,
+    Connection c_7,
+    metal::float3 x_12,
+    metal::float3 n_10,
     Material m_1
 ) {
-    Shaded s_1 = {};
-    s_1.e = c_6.e;
-    s_1.diffuse = metal::float3(0.0);
-    s_1.specular = metal::float3(0.0);
-    Shaded _e13 = s_1;
+    Shaded s_7 = {};
+    s_7.e = c_7.e;
+    s_7.diffuse = metal::float3(0.0);
+    s_7.specular = metal::float3(0.0);
+    Shaded _e13 = s_7;
     return _e13;
 }
 
 Shaded shade_pick_traced(
-    uint li_1,
-    metal::float3 x_14,
-    metal::float3 n_10,
-    metal::float3 r_7,
-    metal::float4 rl_6,
+    uint li_5,
+    metal::float3 x_13,
+    metal::float3 n_11,
+    metal::float3 r_6,
+    metal::float4 rl_4,
     Material m_2,
-    float w_4,
+    float w_7,
     float u1_4,
     float u2_4,
     float eps_2,
@@ -1124,19 +1493,19 @@ Shaded shade_pick_traced(
     device type_4 const& r2_3,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Connection _e12 = connect_traced(li_1, x_14, n_10, n_10, 1.0, w_4, u1_4, u2_4, eps_2, trace_2, slc_table, lights, rt2_3, r2_3, _buffer_sizes);
-    Shaded _e13 = shade_connection(_e12, x_14, n_10, m_2);
+    Connection _e12 = connect_traced(li_5, x_13, n_11, n_11, 1.0, w_7, u1_4, u2_4, eps_2, trace_2, slc_table, lights, rt2_3, r2_3, _buffer_sizes);
+    Shaded _e13 = shade_connection(_e12, x_13, n_11, m_2);
     return _e13;
 }
 
 Shaded shade_pick(
-    uint li_2,
-    metal::float3 x_15,
-    metal::float3 n_11,
-    metal::float3 r_8,
-    metal::float4 rl_7,
+    uint li_6,
+    metal::float3 x_14,
+    metal::float3 n_12,
+    metal::float3 r_7,
+    metal::float4 rl_5,
     Material m_3,
-    float w_5,
+    float w_8,
     float u1_5,
     float u2_5,
     float eps_3,
@@ -1146,21 +1515,22 @@ Shaded shade_pick(
     device type_4 const& r2_3,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Shaded _e11 = shade_pick_traced(li_2, x_15, n_11, r_8, rl_7, m_3, w_5, u1_5, u2_5, eps_3, true, slc_table, lights, rt2_3, r2_3, _buffer_sizes);
+    Shaded _e11 = shade_pick_traced(li_6, x_14, n_12, r_7, rl_5, m_3, w_8, u1_5, u2_5, eps_3, true, slc_table, lights, rt2_3, r2_3, _buffer_sizes);
     return _e11;
 }
 
 Shaded add(
     Shaded a_9,
-    Shaded b_6
+    Shaded b_8
 ) {
-    return Shaded {a_9.e + b_6.e, a_9.diffuse + b_6.diffuse, a_9.specular + b_6.specular};
+    return Shaded {a_9.e + b_8.e, a_9.diffuse + b_8.diffuse, a_9.specular + b_8.specular};
 }
 
 struct main_Input {
 };
 kernel void main_(
   metal::uint3 gid [[thread_position_in_grid]]
+, uint lid [[thread_index_in_threadgroup]]
 , device type_4 const& slc_table [[user(fake0)]]
 , constant ViewParams& view [[user(fake0)]]
 , metal::texture2d<float, metal::access::sample> position_tex [[user(fake0)]]
@@ -1170,96 +1540,213 @@ kernel void main_(
 , device type_4 const& rt2_3 [[user(fake0)]]
 , device type_4 const& r2_3 [[user(fake0)]]
 , device type_9 const& bsh_nodes [[user(fake0)]]
+, threadgroup type_14& wg_lo
+, threadgroup type_14& wg_hi
+, threadgroup WorkgroupBox& wg_box
+, threadgroup type_15& tile_list
+, threadgroup type_16& subtree_at
+, threadgroup metal::atomic_uint& tile_scale
+, threadgroup uint& tile_total
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
+    if (lid == 0u) {
+        wg_lo = {};
+        wg_hi = {};
+        wg_box = {};
+        tile_list = {};
+        subtree_at = {};
+        metal::atomic_store_explicit(&tile_scale, 0, metal::memory_order_relaxed);
+        tile_total = {};
+    }
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
     bool local = {};
+    metal::float4 s = metal::float4(0.0);
+    metal::float3 nn = metal::float3(0.0);
     bool local_1 = {};
+    bool local_2 = {};
+    bool local_3 = {};
+    metal::float3 n = metal::float3(0.0, 0.0, 1.0);
     Material m = {};
     metal::float4 lobe = metal::float4(1.0, 0.0, 1.0, 1.0);
     metal::float3 r = {};
     uint h = {};
     Shaded t = Shaded {metal::float3(0.0), metal::float3(0.0), metal::float3(0.0)};
+    Picks picks = {};
+    uint hr = {};
+    bool local_4 = {};
+    uint start = 0u;
+    uint j = {};
+    bool local_5 = {};
     uint k = 0u;
-    uint _e4 = view.width;
-    if (!((gid.x >= _e4))) {
+    uint _e5 = view.width;
+    if (gid.x < _e5) {
         uint _e12 = view.height;
-        local = gid.y >= _e12;
+        local = gid.y < _e12;
     } else {
-        local = true;
+        local = false;
     }
-    bool _e15 = local;
-    if (_e15) {
-        return;
-    }
+    bool inside = local;
     metal::int2 texel_1 = metal::int2(static_cast<int>(gid.x), static_cast<int>(gid.y));
-    metal::float4 _e21 = surface_at(texel_1, position_tex);
-    metal::float4 _e24 = normal_tex.read(metal::uint2(texel_1), 0);
-    metal::float3 nn = _e24.xyz;
-    float len2_ = metal::dot(nn, nn);
-    if (!((_e21.w <= 0.0))) {
-        local_1 = !((len2_ > 0.0));
+    if (inside) {
+        metal::float4 _e27 = surface_at(texel_1, position_tex);
+        s = _e27;
+        metal::float4 _e30 = normal_tex.read(metal::uint2(texel_1), 0);
+        nn = _e30.xyz;
+    }
+    metal::float3 _e32 = nn;
+    metal::float3 _e33 = nn;
+    float len2_ = metal::dot(_e32, _e33);
+    metal::float4 _e35 = s;
+    metal::float3 x_15 = _e35.xyz;
+    if (inside) {
+        float _e40 = s.w;
+        local_1 = _e40 > 0.0;
     } else {
-        local_1 = true;
+        local_1 = false;
     }
-    bool _e37 = local_1;
-    if (_e37) {
-        out_tex.write(metal::float4(0.0), metal::uint2(texel_1));
-        return;
+    bool _e44 = local_1;
+    if (_e44) {
+        local_2 = len2_ > 0.0;
+    } else {
+        local_2 = false;
     }
-    metal::float3 x_16 = _e21.xyz;
-    metal::float3 n_13 = nn / metal::float3(metal::sqrt(len2_));
-    r = n_13;
-    metal::float4 _e53 = lobe;
-    metal::float4 _e54 = range_lobe(_e53);
-    float _e57 = view.shadow_offset;
-    metal::float3 _e60 = view.eye;
-    float eps_4 = _e57 * metal::length(_e60 - x_16);
-    uint _e66 = view.seed;
-    uint _e70 = view.width;
-    uint _e76 = view.frame;
-    uint _e77 = point_stream(_e66, (gid.y * _e70) + gid.x, _e76);
-    uint _e78 = pick_stream(_e77);
-    h = _e78;
-    metal::float3 _e88 = r;
-    Picks _e89 = bsh_collect(x_16, _e88, _e54, _e77, bsh_nodes, _buffer_sizes);
-    float _e92 = reservoir_weight(_e89.n, K);
-    uint2 loop_bound_3 = uint2(4294967295u);
-    bool loop_init_1 = true;
+    bool _e50 = local_2;
+    if (_e50) {
+        local_3 = metal::all(metal::abs(x_15) <= metal::float3(340282350000000000000000000000000000000.0));
+    } else {
+        local_3 = false;
+    }
+    bool has_2 = local_3;
+    if (has_2) {
+        metal::float3 _e65 = nn;
+        n = _e65 / metal::float3(metal::sqrt(len2_));
+    }
+    metal::float3 _e76 = n;
+    r = _e76;
+    metal::float4 _e78 = lobe;
+    metal::float4 _e79 = range_lobe(_e78);
+    float _e82 = view.shadow_offset;
+    metal::float3 _e85 = view.eye;
+    float eps_4 = _e82 * metal::length(_e85 - x_15);
+    uint _e91 = view.seed;
+    uint _e95 = view.width;
+    uint _e101 = view.frame;
+    uint _e102 = point_stream(_e91, (gid.y * _e95) + gid.x, _e101);
+    uint _e103 = pick_stream(_e102);
+    h = _e103;
+    picks.n = 0u;
+    hr = _e102;
+    if (has_2) {
+        local_4 = _e79.w >= 0.0;
+    } else {
+        local_4 = false;
+    }
+    bool _e124 = local_4;
+    TileWalk _e125 = tile_walk_begin(lid, x_15, _e79.w, _e124, bsh_nodes, wg_lo, wg_hi, wg_box, tile_list, subtree_at, tile_scale, tile_total, _buffer_sizes);
+    uint2 loop_bound_8 = uint2(4294967295u);
+    bool loop_init_5 = true;
     while(true) {
-        if (metal::all(loop_bound_3 == uint2(0u))) { break; }
-        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-        if (!loop_init_1) {
-            uint _e117 = k;
-            k = _e117 + 1u;
+        if (metal::all(loop_bound_8 == uint2(0u))) { break; }
+        loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
+        if (!loop_init_5) {
+            uint _e160 = start;
+            start = _e160 + TILE_LIST;
         }
-        loop_init_1 = false;
-        uint _e95 = k;
-        if (_e95 < metal::min(_e89.n, K)) {
+        loop_init_5 = false;
+        uint _e128 = start;
+        if (_e128 < _e125.total) {
         } else {
             break;
         }
         {
-            uint _e100 = h;
-            uint _e101 = pcg_hash(_e100);
-            h = _e101;
-            uint _e102 = h;
-            float _e103 = xi_from_bits(_e102);
-            uint _e104 = h;
-            uint _e105 = pcg_hash(_e104);
-            h = _e105;
-            Shaded _e106 = t;
-            uint _e108 = k;
-            metal::float3 _e110 = r;
-            Material _e111 = m;
-            uint _e112 = h;
-            float _e113 = xi_from_bits(_e112);
-            Shaded _e114 = shade_pick(_e89.light.inner[_e108], x_16, n_13, _e110, _e54, _e111, _e92, _e103, _e113, eps_4, slc_table, lights, rt2_3, r2_3, _buffer_sizes);
-            Shaded _e115 = add(_e106, _e114);
-            t = _e115;
+            uint _e131 = start;
+            uint _e132 = tile_walk_fill(lid, _e125, _e131, bsh_nodes, tile_list, subtree_at, _buffer_sizes);
+            j = 0u;
+            uint2 loop_bound_9 = uint2(4294967295u);
+            bool loop_init_6 = true;
+            while(true) {
+                if (metal::all(loop_bound_9 == uint2(0u))) { break; }
+                loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
+                if (!loop_init_6) {
+                    uint _e158 = j;
+                    j = _e158 + 1u;
+                }
+                loop_init_6 = false;
+                uint _e135 = j;
+                if (_e135 < _e132) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e138 = j;
+                    uint b_10 = tile_list.inner[_e138];
+                    if (!(!(has_2))) {
+                        BshNode _e147 = bsh_nodes[b_10];
+                        metal::float3 _e148 = r;
+                        bool _e149 = bsh_reaches(_e147, x_15, _e148, _e79);
+                        local_5 = !(_e149);
+                    } else {
+                        local_5 = true;
+                    }
+                    bool _e152 = local_5;
+                    if (_e152) {
+                        continue;
+                    }
+                    uint li_7 = bsh_nodes[b_10].light;
+                    reservoir_offer(picks, hr, li_7);
+                }
+            }
+            metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
         }
     }
-    uint count = _e89.n;
-    metal::float3 _e122 = t.e;
-    out_tex.write(metal::float4(_e122, static_cast<float>(count)), metal::uint2(texel_1));
+    if (!(has_2)) {
+        if (inside) {
+            out_tex.write(metal::float4(0.0), metal::uint2(texel_1));
+        }
+        return;
+    }
+    uint _e168 = picks.n;
+    float _e170 = reservoir_weight(_e168, K);
+    uint2 loop_bound_10 = uint2(4294967295u);
+    bool loop_init_7 = true;
+    while(true) {
+        if (metal::all(loop_bound_10 == uint2(0u))) { break; }
+        loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
+        if (!loop_init_7) {
+            uint _e198 = k;
+            k = _e198 + 1u;
+        }
+        loop_init_7 = false;
+        uint _e173 = k;
+        uint _e175 = picks.n;
+        if (_e173 < metal::min(_e175, K)) {
+        } else {
+            break;
+        }
+        {
+            uint _e179 = h;
+            uint _e180 = pcg_hash(_e179);
+            h = _e180;
+            uint _e181 = h;
+            float _e182 = xi_from_bits(_e181);
+            uint _e183 = h;
+            uint _e184 = pcg_hash(_e183);
+            h = _e184;
+            Shaded _e185 = t;
+            uint _e187 = k;
+            uint _e189 = picks.light.inner[_e187];
+            metal::float3 _e190 = n;
+            metal::float3 _e191 = r;
+            Material _e192 = m;
+            uint _e193 = h;
+            float _e194 = xi_from_bits(_e193);
+            Shaded _e195 = shade_pick(_e189, x_15, _e190, _e191, _e79, _e192, _e170, _e182, _e194, eps_4, slc_table, lights, rt2_3, r2_3, _buffer_sizes);
+            Shaded _e196 = add(_e185, _e195);
+            t = _e196;
+        }
+    }
+    uint count = picks.n;
+    metal::float3 _e204 = t.e;
+    out_tex.write(metal::float4(_e204, static_cast<float>(count)), metal::uint2(texel_1));
     return;
 }

@@ -98,9 +98,30 @@ struct type_16 {
 struct WeightedPicks {
     type_14 light;
     type_16 w;
+    type_16 threshold;
     float w_sum;
     uint n;
     uint h;
+};
+struct type_19 {
+    metal::float3 inner[64];
+};
+struct WorkgroupBox {
+    metal::float3 lo;
+    metal::float3 hi;
+};
+struct type_20 {
+    uint inner[1024];
+};
+struct type_21 {
+    uint inner[256];
+};
+struct TileWalk {
+    metal::float3 lo;
+    metal::packed_float3 hi;
+    float w;
+    uint total;
+    char _pad4[12];
 };
 struct Shaded {
     metal::float3 e;
@@ -117,10 +138,10 @@ struct Material {
     float reflectance;
     char _pad6[12];
 };
-struct type_19 {
+struct type_24 {
     metal::uint2 inner[8];
 };
-struct type_20 {
+struct type_25 {
     bool inner[8];
 };
 constant uint LIGHT_POINT = 0u;
@@ -181,6 +202,11 @@ constant float TEMPORAL_CHANGE_HIGH = 8.0;
 constant float TEMPORAL_MIN_WEIGHT = 0.01;
 constant uint K = 8u;
 constant BshNodes BSH = 0u;
+constant uint BSH_TILE_DEPTH = 8u;
+constant uint BSH_TILE_SUBTREES = 256u;
+constant uint TILE_THREADS = 64u;
+constant uint BOX_THREADS = 64u;
+constant uint TILE_LIST = 1024u;
 
 float to_f32_(
     uint u
@@ -268,6 +294,17 @@ bool sphere_contains_point(
     return metal::dot(v_3, v_3) <= (r_1 * r_1);
 }
 
+bool sphere_overlaps_aabb(
+    metal::float3 c_1,
+    float r_2,
+    metal::float3 bmin,
+    metal::float3 bmax
+) {
+    metal::float3 q = metal::clamp(c_1, bmin, bmax);
+    metal::float3 v_4 = q - c_1;
+    return metal::dot(v_4, v_4) <= (r_2 * r_2);
+}
+
 float inverse_square(
     float d2_2
 ) {
@@ -288,32 +325,32 @@ float connection_factor(
 float connection_cosine(
     metal::float3 x_2,
     metal::float3 y,
-    metal::float3 n,
+    metal::float3 n_1,
     metal::float3 ng,
     float r2_1
 ) {
-    bool local_2 = {};
-    bool local_3 = {};
-    metal::float3 v_4 = x_2 - y;
-    float d2_7 = metal::dot(v_4, v_4);
+    bool local_6 = {};
+    bool local_7 = {};
+    metal::float3 v_5 = x_2 - y;
+    float d2_7 = metal::dot(v_5, v_5);
     bool _e7 = slc_keep(r2_1, d2_7);
     if (!(!(_e7))) {
-        local_2 = !((d2_7 > 0.0));
+        local_6 = !((d2_7 > 0.0));
     } else {
-        local_2 = true;
+        local_6 = true;
     }
-    bool _e16 = local_2;
+    bool _e16 = local_6;
     if (_e16) {
         return 0.0;
     }
-    metal::float3 w_5 = v_4 / metal::float3(metal::sqrt(d2_7));
-    float cos_x_1 = -(metal::dot(n, w_5));
+    metal::float3 w_9 = v_5 / metal::float3(metal::sqrt(d2_7));
+    float cos_x_1 = -(metal::dot(n_1, w_9));
     if (!((cos_x_1 <= 0.0))) {
-        local_3 = metal::dot(ng, w_5) >= 0.0;
+        local_7 = metal::dot(ng, w_9) >= 0.0;
     } else {
-        local_3 = true;
+        local_7 = true;
     }
-    bool _e32 = local_3;
+    bool _e32 = local_7;
     if (_e32) {
         return 0.0;
     }
@@ -329,8 +366,8 @@ float spot_falloff(
     if (cos_inner <= cos_outer) {
         return (cos_theta >= cos_outer) ? 1.0 : 0.0;
     }
-    float t_1 = metal::saturate((cos_theta - cos_outer) / (cos_inner - cos_outer));
-    return (shape > 0.5) ? (t_1 * t_1) : ((t_1 * t_1) * (3.0 - (2.0 * t_1)));
+    float t_4 = metal::saturate((cos_theta - cos_outer) / (cos_inner - cos_outer));
+    return (shape > 0.5) ? (t_4 * t_4) : ((t_4 * t_4) * (3.0 - (2.0 * t_4)));
 }
 
 float bsh_scaled_radius(
@@ -381,8 +418,8 @@ float ggx_d(
         return 0.0;
     }
     float a2_ = alpha * alpha;
-    float t_2 = ((cos_h * cos_h) * a2_) + sin2_h;
-    return (a2_ * INV_PI) / (t_2 * t_2);
+    float t_5 = ((cos_h * cos_h) * a2_) + sin2_h;
+    return (a2_ * INV_PI) / (t_5 * t_5);
 }
 
 float smith_root(
@@ -473,11 +510,11 @@ metal::float4 emitter_cone(
     float cos_o,
     metal::float3 p
 ) {
-    metal::float3 v_5 = p - center;
-    float dist2_1 = metal::dot(v_5, v_5);
+    metal::float3 v_6 = p - center;
+    float dist2_1 = metal::dot(v_6, v_6);
     float r2_5 = radius * radius;
     float d2_8 = metal::max(metal::max(dist2_1, r2_5), MIN_D2_);
-    metal::float3 wi = (dist2_1 > 0.0) ? (v_5 / metal::float3(metal::sqrt(dist2_1))) : metal::float3(0.0, 0.0, 0.0);
+    metal::float3 wi = (dist2_1 > 0.0) ? (v_6 / metal::float3(metal::sqrt(dist2_1))) : metal::float3(0.0, 0.0, 0.0);
     float cos_w = metal::dot(axis, wi);
     float _e25 = safe_sqrt(1.0 - (cos_w * cos_w));
     float _e26 = subtended_cos(dist2_1, r2_5);
@@ -511,27 +548,27 @@ float cone_cos_of(
     float a_2,
     metal::float3 d
 ) {
-    bool local_4 = {};
-    bool local_5 = {};
+    bool local_8 = {};
+    bool local_9 = {};
     float vd = metal::dot(v, d);
     float h2_ = d2_4 - (a_2 * a_2);
     if (!((h2_ <= 0.0))) {
         if (vd >= 0.0) {
-            local_5 = (vd * vd) >= h2_;
+            local_9 = (vd * vd) >= h2_;
         } else {
-            local_5 = false;
+            local_9 = false;
         }
-        bool _e19 = local_5;
-        local_4 = _e19;
+        bool _e19 = local_9;
+        local_8 = _e19;
     } else {
-        local_4 = true;
+        local_8 = true;
     }
-    bool _e21 = local_4;
+    bool _e21 = local_8;
     if (_e21) {
         return 1.0;
     }
-    metal::float3 c_4 = metal::cross(v, d);
-    return metal::min(((vd * metal::sqrt(h2_)) + (metal::sqrt(metal::dot(c_4, c_4)) * a_2)) / d2_4, 1.0);
+    metal::float3 c_5 = metal::cross(v, d);
+    return metal::min(((vd * metal::sqrt(h2_)) + (metal::sqrt(metal::dot(c_5, c_5)) * a_2)) / d2_4, 1.0);
 }
 
 float cone_cos_toward(
@@ -540,8 +577,8 @@ float cone_cos_toward(
     metal::float3 p_2,
     metal::float3 d_1
 ) {
-    metal::float3 v_6 = center_2 - p_2;
-    float _e6 = cone_cos_of(v_6, metal::dot(v_6, v_6), radius_2, d_1);
+    metal::float3 v_7 = center_2 - p_2;
+    float _e6 = cone_cos_of(v_7, metal::dot(v_7, v_7), radius_2, d_1);
     return _e6;
 }
 
@@ -549,8 +586,8 @@ float range_scale_at(
     metal::float4 rl,
     float cos_t
 ) {
-    float t_3 = ((0.5 + (0.5 * cos_t)) * (rl.z - 1.0)) + 1.0;
-    return metal::clamp(rl.x + ((rl.y * rl.z) / (t_3 * t_3)), 1.0, rl.w * rl.w);
+    float t_6 = ((0.5 + (0.5 * cos_t)) * (rl.z - 1.0)) + 1.0;
+    return metal::clamp(rl.x + ((rl.y * rl.z) / (t_6 * t_6)), 1.0, rl.w * rl.w);
 }
 
 float range_scale_toward(
@@ -558,12 +595,12 @@ float range_scale_toward(
     metal::float3 center_3,
     float radius_3,
     metal::float3 p_3,
-    metal::float3 r_2
+    metal::float3 r_3
 ) {
     if (rl_1.w <= 1.0) {
         return 1.0;
     }
-    float _e9 = cone_cos_toward(center_3, radius_3, p_3, r_2);
+    float _e9 = cone_cos_toward(center_3, radius_3, p_3, r_3);
     float _e10 = range_scale_at(rl_1, _e9);
     return _e10;
 }
@@ -576,7 +613,7 @@ float light_importance(
     float cos_o_2,
     float cos_e_1,
     metal::float3 p_4,
-    metal::float3 n_1
+    metal::float3 n_2
 ) {
     float imp = {};
     metal::float4 _e8 = emitter_cone(center_4, radius_4, axis_2, cos_o_2, p_4);
@@ -584,10 +621,10 @@ float light_importance(
         return 0.0;
     }
     imp = (phi_1 * _e8.x) / _e8.y;
-    if (metal::dot(n_1, n_1) > 0.0) {
-        metal::float3 v_7 = center_4 - p_4;
-        float dist2_2 = metal::dot(v_7, v_7);
-        float cos_i = metal::dot((dist2_2 > 0.0) ? (v_7 / metal::float3(metal::sqrt(dist2_2))) : metal::float3(0.0, 0.0, 0.0), n_1);
+    if (metal::dot(n_2, n_2) > 0.0) {
+        metal::float3 v_8 = center_4 - p_4;
+        float dist2_2 = metal::dot(v_8, v_8);
+        float cos_i = metal::dot((dist2_2 > 0.0) ? (v_8 / metal::float3(metal::sqrt(dist2_2))) : metal::float3(0.0, 0.0, 0.0), n_2);
         float _e33 = imp;
         float _e37 = safe_sqrt(1.0 - (cos_i * cos_i));
         float _e40 = cos_sub_clamped(_e37, cos_i, _e8.w, _e8.z);
@@ -605,23 +642,23 @@ float glossy_importance(
     float cos_o_3,
     float cos_e_2,
     metal::float3 p_5,
-    metal::float3 n_2,
-    metal::float3 r_3,
+    metal::float3 n_3,
+    metal::float3 r_4,
     metal::float4 lobe_5
 ) {
-    bool local_6 = {};
+    bool local_10 = {};
     float _e10 = emitter_importance(center_5, radius_5, phi_2, axis_3, cos_o_3, cos_e_2, p_5);
-    float _e11 = cone_cos_toward(center_5, radius_5, p_5, n_2);
+    float _e11 = cone_cos_toward(center_5, radius_5, p_5, n_3);
     if (!((_e10 <= 0.0))) {
-        local_6 = _e11 <= 0.0;
+        local_10 = _e11 <= 0.0;
     } else {
-        local_6 = true;
+        local_10 = true;
     }
-    bool _e20 = local_6;
+    bool _e20 = local_10;
     if (_e20) {
         return 0.0;
     }
-    float _e22 = cone_cos_toward(center_5, radius_5, p_5, r_3);
+    float _e22 = cone_cos_toward(center_5, radius_5, p_5, r_4);
     float _e27 = safe_sqrt(0.5 + (0.5 * _e22));
     float _e33 = ggx_d(_e27, 1.0 - (_e27 * _e27), lobe_5.z);
     float _e39 = smith_root(lobe_5.w, lobe_5.z);
@@ -647,38 +684,38 @@ float cone_weight(
     float cos_e_3,
     float rt2_3,
     metal::float3 p_6,
-    metal::float3 n_3,
-    metal::float3 r_4,
+    metal::float3 n_4,
+    metal::float3 r_5,
     metal::float4 lobe_6
 ) {
-    metal::float3 v_8 = p_6 - center_6;
+    metal::float3 v_9 = p_6 - center_6;
     if (lobe_6.y <= 0.0) {
-        float _e15 = light_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_3);
-        float _e19 = candidate_weight(_e15 * INV_PI, rt2_3, metal::dot(v_8, v_8));
+        float _e15 = light_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_4);
+        float _e19 = candidate_weight(_e15 * INV_PI, rt2_3, metal::dot(v_9, v_9));
         return _e19;
     }
-    float _e20 = glossy_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_3, r_4, lobe_6);
-    float _e22 = candidate_weight(_e20, rt2_3, metal::dot(v_8, v_8));
+    float _e20 = glossy_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_4, r_5, lobe_6);
+    float _e22 = candidate_weight(_e20, rt2_3, metal::dot(v_9, v_9));
     return _e22;
 }
 
 bool finite3_(
     metal::float3 v_1
 ) {
-    bool local_7 = {};
-    bool local_8 = {};
+    bool local_11 = {};
+    bool local_12 = {};
     if (metal::abs(v_1.x) <= F32_MAX) {
-        local_7 = metal::abs(v_1.y) <= F32_MAX;
+        local_11 = metal::abs(v_1.y) <= F32_MAX;
     } else {
-        local_7 = false;
+        local_11 = false;
     }
-    bool _e12 = local_7;
+    bool _e12 = local_11;
     if (_e12) {
-        local_8 = metal::abs(v_1.z) <= F32_MAX;
+        local_12 = metal::abs(v_1.z) <= F32_MAX;
     } else {
-        local_8 = false;
+        local_12 = false;
     }
-    bool _e20 = local_8;
+    bool _e20 = local_12;
     return _e20;
 }
 
@@ -706,16 +743,16 @@ metal::float3 ray_inverse3_(
 float ray_aabb(
     metal::float3 o,
     metal::float3 inv_d,
-    metal::float3 bmin,
-    metal::float3 bmax,
+    metal::float3 bmin_1,
+    metal::float3 bmax_1,
     float t_max
 ) {
-    metal::float3 t0_ = (bmin - o) * inv_d;
-    metal::float3 t1_ = (bmax - o) * inv_d;
-    metal::float3 lo = metal::min(t0_, t1_);
-    metal::float3 hi = metal::max(t0_, t1_);
-    float t_in = metal::max(metal::max(lo.x, lo.y), metal::max(lo.z, 0.0));
-    float t_out = metal::min(metal::min(hi.x, hi.y), metal::min(hi.z, t_max));
+    metal::float3 t0_ = (bmin_1 - o) * inv_d;
+    metal::float3 t1_ = (bmax_1 - o) * inv_d;
+    metal::float3 lo_3 = metal::min(t0_, t1_);
+    metal::float3 hi_3 = metal::max(t0_, t1_);
+    float t_in = metal::max(metal::max(lo_3.x, lo_3.y), metal::max(lo_3.z, 0.0));
+    float t_out = metal::min(metal::min(hi_3.x, hi_3.y), metal::min(hi_3.z, t_max));
     if (t_in <= t_out) {
         return t_in;
     }
@@ -727,52 +764,52 @@ float ray_triangle(
     metal::float3 d_3,
     metal::float3 a_3,
     metal::float3 b_2,
-    metal::float3 c_1,
+    metal::float3 c_2,
     float t_min,
     float t_max_1
 ) {
-    bool local_9 = {};
-    bool local_10 = {};
-    bool local_11 = {};
+    bool local_13 = {};
+    bool local_14 = {};
+    bool local_15 = {};
     metal::float3 e1_ = b_2 - a_3;
-    metal::float3 e2_ = c_1 - a_3;
-    metal::float3 p_7 = metal::cross(d_3, e2_);
-    float det = metal::dot(e1_, p_7);
+    metal::float3 e2_ = c_2 - a_3;
+    metal::float3 p_9 = metal::cross(d_3, e2_);
+    float det = metal::dot(e1_, p_9);
     if (metal::abs(det) <= 0.0) {
         return -1.0;
     }
     float inv = 1.0 / det;
-    metal::float3 s_3 = o_1 - a_3;
-    float u_3 = metal::dot(s_3, p_7) * inv;
+    metal::float3 s_9 = o_1 - a_3;
+    float u_3 = metal::dot(s_9, p_9) * inv;
     if (!((u_3 < 0.0))) {
-        local_9 = u_3 > 1.0;
+        local_13 = u_3 > 1.0;
     } else {
-        local_9 = true;
+        local_13 = true;
     }
-    bool _e28 = local_9;
+    bool _e28 = local_13;
     if (_e28) {
         return -1.0;
     }
-    metal::float3 q = metal::cross(s_3, e1_);
-    float v_9 = metal::dot(d_3, q) * inv;
-    if (!((v_9 < 0.0))) {
-        local_10 = (u_3 + v_9) > 1.0;
+    metal::float3 q_1 = metal::cross(s_9, e1_);
+    float v_10 = metal::dot(d_3, q_1) * inv;
+    if (!((v_10 < 0.0))) {
+        local_14 = (u_3 + v_10) > 1.0;
     } else {
-        local_10 = true;
+        local_14 = true;
     }
-    bool _e42 = local_10;
+    bool _e42 = local_14;
     if (_e42) {
         return -1.0;
     }
-    float t_4 = metal::dot(e2_, q) * inv;
-    if (t_4 > t_min) {
-        local_11 = t_4 < t_max_1;
+    float t_7 = metal::dot(e2_, q_1) * inv;
+    if (t_7 > t_min) {
+        local_15 = t_7 < t_max_1;
     } else {
-        local_11 = false;
+        local_15 = false;
     }
-    bool _e51 = local_11;
+    bool _e51 = local_15;
     if (_e51) {
-        return t_4;
+        return t_7;
     }
     return -1.0;
 }
@@ -853,9 +890,9 @@ GeoHit trace(
                     }
                     {
                         uint _e42 = i;
-                        GpuTriangle t_5 = geo_tris[_e42];
+                        GpuTriangle t_8 = geo_tris[_e42];
                         float _e49 = hit.t;
-                        float _e50 = ray_triangle(o_2, d_4, t_5.v0_, t_5.v1_, t_5.v2_, t_min_1, _e49);
+                        float _e50 = ray_triangle(o_2, d_4, t_8.v0_, t_8.v1_, t_8.v2_, t_min_1, _e49);
                         if (_e50 > 0.0) {
                             hit.t = _e50;
                             uint _e55 = i;
@@ -944,10 +981,10 @@ float bsh_inner_scale(
     float a_5,
     metal::float3 v_2,
     float d2_6,
-    metal::float3 r_5,
+    metal::float3 r_6,
     metal::float4 rl_2
 ) {
-    float _e5 = cone_cos_of(v_2, d2_6, a_5, r_5);
+    float _e5 = cone_cos_of(v_2, d2_6, a_5, r_6);
     float _e8 = range_scale_at(rl_2, _e5 + 0.000002);
     return _e8;
 }
@@ -955,86 +992,151 @@ float bsh_inner_scale(
 bool bsh_reaches(
     BshNode node_3,
     metal::float3 x_5,
-    metal::float3 r_6,
+    metal::float3 r_7,
     metal::float4 rl_3
 ) {
-    bool local_12 = {};
-    bool local_13 = {};
+    bool local_16 = {};
+    bool local_17 = {};
     bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_5);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
         bool _e20 = sphere_contains_point(node_3.center, node_3.radius * (rl_3.w * 1.0001), x_5);
-        local_12 = !(_e20);
+        local_16 = !(_e20);
     } else {
-        local_12 = true;
+        local_16 = true;
     }
-    bool _e23 = local_12;
+    bool _e23 = local_16;
     if (_e23) {
         return false;
     }
     float _e25 = bsh_range_bound(node_3);
-    metal::float3 v_10 = x_5 - node_3.center;
-    float d2_9 = metal::dot(v_10, v_10);
+    metal::float3 v_11 = x_5 - node_3.center;
+    float d2_9 = metal::dot(v_11, v_11);
     float reach_max = node_3.extent + ((rl_3.w * 1.001) * _e25);
     if (d2_9 > (reach_max * reach_max)) {
         return false;
     }
     if (node_3.child == BSH_NONE) {
-        float _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_5, r_6);
+        float _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_5, r_7);
         float _e46 = bsh_scaled_radius(node_3, metal::sqrt(_e43));
         bool _e47 = sphere_contains_point(node_3.center, _e46, x_5);
         return _e47;
     }
-    float _e50 = bsh_inner_scale(node_3.extent, -(v_10), d2_9, r_6, rl_3);
+    float _e50 = bsh_inner_scale(node_3.extent, -(v_11), d2_9, r_7, rl_3);
     float s_c = _e50 * 1.001;
     float reach = node_3.extent + (metal::sqrt(s_c) * _e25);
     if (d2_9 <= ((node_3.radius * node_3.radius) * s_c)) {
-        local_13 = d2_9 <= (reach * reach);
+        local_17 = d2_9 <= (reach * reach);
     } else {
-        local_13 = false;
+        local_17 = false;
     }
-    bool _e67 = local_13;
+    bool _e67 = local_17;
     return _e67;
 }
 
-uint bsh_next_leaf_lobe(
+bool bsh_reaches_box(
+    BshNode node_4,
+    metal::float3 lo,
+    metal::float3 hi,
+    float w_3
+) {
+    bool _e13 = sphere_overlaps_aabb(node_4.center, node_4.radius * (metal::max(1.0, w_3 * 1.0001) * 1.0001), lo, hi);
+    return _e13;
+}
+
+uint bsh_subtree(
     BshNodes nodes_3,
-    uint start,
-    metal::float3 x_6,
-    metal::float3 r_7,
-    metal::float4 rl_4,
+    uint s_1,
+    uint depth,
     device type_12 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint i_2 = {};
-    i_2 = start;
+    uint level = 0u;
+    bool local_18 = {};
+    uint _e3 = bsh_first(nodes_3, bsh_nodes, _buffer_sizes);
+    i_2 = _e3;
     uint2 loop_bound_2 = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound_2 == uint2(0u))) { break; }
         loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
-        uint _e6 = i_2;
-        if (_e6 != BSH_NONE) {
+        uint _e7 = level;
+        if (_e7 < depth) {
+            uint _e11 = i_2;
+            local_18 = _e11 != BSH_NONE;
+        } else {
+            local_18 = false;
+        }
+        bool _e15 = local_18;
+        if (_e15) {
         } else {
             break;
         }
         {
-            uint _e9 = i_2;
-            BshNode _e10 = bsh_node(nodes_3, _e9, bsh_nodes, _buffer_sizes);
-            bool _e11 = bsh_reaches(_e10, x_6, r_7, rl_4);
+            uint _e16 = i_2;
+            BshNode _e17 = bsh_node(nodes_3, _e16, bsh_nodes, _buffer_sizes);
+            uint _e18 = level;
+            uint below = depth - _e18;
+            if (_e17.child == BSH_NONE) {
+                if ((s_1 << (32u - below)) != 0u) {
+                    return BSH_NONE;
+                }
+                uint _e29 = i_2;
+                return _e29;
+            }
+            if (((s_1 >> (below - 1u)) & 1u) == 0u) {
+                i_2 = _e17.child;
+            } else {
+                BshNode _e39 = bsh_node(nodes_3, _e17.child, bsh_nodes, _buffer_sizes);
+                i_2 = _e39.next;
+            }
+            uint _e41 = level;
+            level = _e41 + 1u;
+        }
+    }
+    uint _e44 = i_2;
+    return _e44;
+}
+
+uint bsh_next_leaf_box(
+    BshNodes nodes_4,
+    uint start_1,
+    uint end,
+    metal::float3 lo_1,
+    metal::float3 hi_1,
+    float w_4,
+    device type_12 const& bsh_nodes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint i_3 = {};
+    i_3 = start_1;
+    uint2 loop_bound_3 = uint2(4294967295u);
+    while(true) {
+        if (metal::all(loop_bound_3 == uint2(0u))) { break; }
+        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+        uint _e7 = i_3;
+        if (_e7 != end) {
+        } else {
+            break;
+        }
+        {
+            uint _e9 = i_3;
+            BshNode _e10 = bsh_node(nodes_4, _e9, bsh_nodes, _buffer_sizes);
+            bool _e11 = bsh_reaches_box(_e10, lo_1, hi_1, w_4);
             if (_e11) {
                 if (_e10.child == BSH_NONE) {
-                    uint _e15 = i_2;
+                    uint _e15 = i_3;
                     return _e15;
                 }
-                i_2 = _e10.child;
+                i_3 = _e10.child;
             } else {
-                i_2 = _e10.next;
+                i_3 = _e10.next;
             }
         }
     }
-    return BSH_NONE;
+    return end;
 }
 
 float next_threshold(
@@ -1052,8 +1154,8 @@ float next_threshold(
 
 Connection connect_record(
     GpuLight l_2,
-    metal::float3 x_7,
-    metal::float3 n_4,
+    metal::float3 x_6,
+    metal::float3 n_5,
     metal::float3 ng_1,
     float r2_3,
     float rt2_4,
@@ -1066,51 +1168,51 @@ Connection connect_record(
     device type_7 const& geo_tris,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Connection c_2 = {};
-    bool local_14 = {};
-    bool local_15 = {};
-    c_2.e = metal::float3(0.0);
+    Connection c_3 = {};
+    bool local_19 = {};
+    bool local_20 = {};
+    c_3.e = metal::float3(0.0);
     metal::float3 _e16 = light_point(l_2, u1_1, u2_1);
-    c_2.y = _e16;
-    metal::float3 _e19 = c_2.y;
-    float _e20 = connection_cosine(x_7, _e19, n_4, ng_1, r2_3);
-    c_2.cos_x = _e20;
-    float _e22 = c_2.cos_x;
+    c_3.y = _e16;
+    metal::float3 _e19 = c_3.y;
+    float _e20 = connection_cosine(x_6, _e19, n_5, ng_1, r2_3);
+    c_3.cos_x = _e20;
+    float _e22 = c_3.cos_x;
     if (!((_e22 <= 0.0))) {
         if (trace_1) {
-            metal::float3 _e33 = c_2.y;
-            bool _e34 = occluded(x_7 + (ng_1 * eps), _e33, geo_nodes, geo_tris, _buffer_sizes);
-            local_15 = _e34;
+            metal::float3 _e33 = c_3.y;
+            bool _e34 = occluded(x_6 + (ng_1 * eps), _e33, geo_nodes, geo_tris, _buffer_sizes);
+            local_20 = _e34;
         } else {
-            local_15 = false;
+            local_20 = false;
         }
-        bool _e36 = local_15;
-        local_14 = _e36;
+        bool _e36 = local_20;
+        local_19 = _e36;
     } else {
-        local_14 = true;
+        local_19 = true;
     }
-    bool _e38 = local_14;
+    bool _e38 = local_19;
     if (_e38) {
-        Connection _e39 = c_2;
+        Connection _e39 = c_3;
         return _e39;
     }
-    metal::float3 _e41 = c_2.y;
-    metal::float3 v_11 = x_7 - _e41;
-    float d2_10 = metal::dot(v_11, v_11);
-    metal::float3 _e48 = light_intensity(l_2, v_11 / metal::float3(metal::sqrt(d2_10)));
-    float _e50 = c_2.cos_x;
+    metal::float3 _e41 = c_3.y;
+    metal::float3 v_12 = x_6 - _e41;
+    float d2_10 = metal::dot(v_12, v_12);
+    metal::float3 _e48 = light_intensity(l_2, v_12 / metal::float3(metal::sqrt(d2_10)));
+    float _e50 = c_3.cos_x;
     float _e51 = connection_factor(_e50, d2_10, rt2_4, w_res);
-    c_2.e = _e48 * _e51;
-    Connection _e53 = c_2;
+    c_3.e = _e48 * _e51;
+    Connection _e53 = c_3;
     return _e53;
 }
 
 Connection connect_traced(
     uint li,
-    metal::float3 x_8,
-    metal::float3 n_5,
+    metal::float3 x_7,
+    metal::float3 n_6,
     metal::float3 ng_2,
-    float s,
+    float s_2,
     float w_res_1,
     float u1_2,
     float u2_2,
@@ -1126,129 +1228,103 @@ Connection connect_traced(
     GpuLight _e12 = lights[li];
     float _e15 = r2_4[li];
     float _e19 = rt2_5[li];
-    Connection _e21 = connect_record(_e12, x_8, n_5, ng_2, s * _e15, s * _e19, w_res_1, u1_2, u2_2, eps_1, trace_2, geo_nodes, geo_tris, _buffer_sizes);
+    Connection _e21 = connect_record(_e12, x_7, n_6, ng_2, s_2 * _e15, s_2 * _e19, w_res_1, u1_2, u2_2, eps_1, trace_2, geo_nodes, geo_tris, _buffer_sizes);
     return _e21;
 }
 
 float light_range_scale(
     uint li_1,
-    metal::float3 x_9,
+    metal::float3 x_8,
     metal::float3 r_8,
-    metal::float4 rl_5,
+    metal::float4 rl_4,
     device type_13 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuLightCone c_5 = light_cones[li_1];
-    float _e9 = range_scale_toward(rl_5, c_5.center, c_5.radius, x_9, r_8);
+    GpuLightCone c_6 = light_cones[li_1];
+    float _e9 = range_scale_toward(rl_4, c_6.center, c_6.radius, x_8, r_8);
     return _e9;
 }
 
 float light_weight(
     uint li_2,
-    metal::float3 x_10,
-    metal::float3 n_6,
+    metal::float3 x_9,
+    metal::float3 n_7,
     metal::float3 r_9,
     metal::float4 lobe_7,
-    metal::float4 rl_6,
+    metal::float4 rl_5,
     device type_4 const& rt2_5,
     device type_13 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuLightCone c_6 = light_cones[li_2];
-    float _e15 = light_range_scale(li_2, x_10, r_9, rl_6, light_cones, _buffer_sizes);
+    GpuLightCone c_7 = light_cones[li_2];
+    float _e15 = light_range_scale(li_2, x_9, r_9, rl_5, light_cones, _buffer_sizes);
     float _e18 = rt2_5[li_2];
-    float _e20 = cone_weight(c_6.center, c_6.radius, c_6.phi, c_6.axis, c_6.cos_o, c_6.cos_e, _e15 * _e18, x_10, n_6, r_9, lobe_7);
+    float _e20 = cone_weight(c_7.center, c_7.radius, c_7.phi, c_7.axis, c_7.cos_o, c_7.cos_e, _e15 * _e18, x_9, n_7, r_9, lobe_7);
     return _e20;
 }
 
-WeightedPicks bsh_weighted_collect(
-    metal::float3 x_11,
-    metal::float3 n_7,
-    metal::float3 r_10,
-    metal::float4 lobe_8,
-    metal::float4 rl_7,
-    uint h0_,
-    device type_4 const& rt2_5,
-    device type_12 const& bsh_nodes,
-    device type_13 const& light_cones,
-    constant _mslBufferSizes& _buffer_sizes
+WeightedPicks weighted_picks(
+    uint h_2
 ) {
-    WeightedPicks picks = {};
-    uint h_2 = {};
-    type_16 threshold = {};
-    uint b_4 = {};
-    uint s_1 = {};
-    picks.w_sum = 0.0;
-    picks.n = 0u;
-    h_2 = h0_;
-    uint _e15 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
-    uint _e16 = bsh_next_leaf_lobe(BSH, _e15, x_11, r_10, rl_7, bsh_nodes, _buffer_sizes);
-    b_4 = _e16;
-    uint2 loop_bound_3 = uint2(4294967295u);
-    bool loop_init_1 = true;
-    while(true) {
-        if (metal::all(loop_bound_3 == uint2(0u))) { break; }
-        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-        if (!loop_init_1) {
-            uint _e63 = b_4;
-            uint _e66 = bsh_nodes[_e63].next;
-            uint _e67 = bsh_next_leaf_lobe(BSH, _e66, x_11, r_10, rl_7, bsh_nodes, _buffer_sizes);
-            b_4 = _e67;
-        }
-        loop_init_1 = false;
-        uint _e18 = b_4;
-        if (_e18 != BSH_NONE) {
-        } else {
-            break;
-        }
-        {
-            uint _e22 = picks.n;
-            picks.n = _e22 + 1u;
-            uint _e26 = b_4;
-            uint li_5 = bsh_nodes[_e26].light;
-            float _e30 = light_weight(li_5, x_11, n_7, r_10, lobe_8, rl_7, rt2_5, light_cones, _buffer_sizes);
-            if (_e30 > 0.0) {
-                float _e34 = picks.w_sum;
-                picks.w_sum = _e34 + _e30;
-                s_1 = 0u;
-                uint2 loop_bound_4 = uint2(4294967295u);
-                bool loop_init_2 = true;
-                while(true) {
-                    if (metal::all(loop_bound_4 == uint2(0u))) { break; }
-                    loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
-                    if (!loop_init_2) {
-                        uint _e59 = s_1;
-                        s_1 = _e59 + 1u;
-                    }
-                    loop_init_2 = false;
-                    uint _e38 = s_1;
-                    if (_e38 < K) {
-                    } else {
-                        break;
-                    }
-                    {
-                        float _e42 = picks.w_sum;
-                        uint _e43 = s_1;
-                        float _e45 = threshold.inner[_e43];
-                        if (_e42 > _e45) {
-                            uint _e48 = s_1;
-                            picks.light.inner[_e48] = li_5;
-                            uint _e51 = s_1;
-                            picks.w.inner[_e51] = _e30;
-                            uint _e53 = s_1;
-                            float _e56 = picks.w_sum;
-                            float _e57 = next_threshold(_e56, h_2);
-                            threshold.inner[_e53] = _e57;
-                        }
-                    }
+    WeightedPicks picks_1 = {};
+    picks_1.w_sum = 0.0;
+    picks_1.n = 0u;
+    picks_1.h = h_2;
+    WeightedPicks _e7 = picks_1;
+    return _e7;
+}
+
+void weighted_offer(
+    thread WeightedPicks& picks_2,
+    uint li_3,
+    float w_5
+) {
+    uint h_3 = {};
+    uint s_3 = 0u;
+    uint _e4 = picks_2.n;
+    picks_2.n = _e4 + 1u;
+    if (w_5 > 0.0) {
+        float _e10 = picks_2.w_sum;
+        picks_2.w_sum = _e10 + w_5;
+        uint _e13 = picks_2.h;
+        h_3 = _e13;
+        uint2 loop_bound_4 = uint2(4294967295u);
+        bool loop_init_1 = true;
+        while(true) {
+            if (metal::all(loop_bound_4 == uint2(0u))) { break; }
+            loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+            if (!loop_init_1) {
+                uint _e40 = s_3;
+                s_3 = _e40 + 1u;
+            }
+            loop_init_1 = false;
+            uint _e17 = s_3;
+            if (_e17 < K) {
+            } else {
+                break;
+            }
+            {
+                float _e21 = picks_2.w_sum;
+                uint _e23 = s_3;
+                float _e25 = picks_2.threshold.inner[_e23];
+                if (_e21 > _e25) {
+                    uint _e28 = s_3;
+                    picks_2.light.inner[_e28] = li_3;
+                    uint _e31 = s_3;
+                    picks_2.w.inner[_e31] = w_5;
+                    uint _e34 = s_3;
+                    float _e37 = picks_2.w_sum;
+                    float _e38 = next_threshold(_e37, h_3);
+                    picks_2.threshold.inner[_e34] = _e38;
                 }
             }
         }
+        uint _e43 = h_3;
+        picks_2.h = _e43;
+        return;
+    } else {
+        return;
     }
-    uint _e69 = h_2;
-    picks.h = _e69;
-    WeightedPicks _e70 = picks;
-    return _e70;
 }
 
 metal::float4 unproject_pixel(
@@ -1260,32 +1336,32 @@ metal::float4 unproject_pixel(
     float py,
     float width,
     float height,
-    float depth
+    float depth_1
 ) {
-    bool local_16 = {};
-    bool local_17 = {};
-    if (depth > 0.0) {
-        local_16 = depth < 1.0;
+    bool local_21 = {};
+    bool local_22 = {};
+    if (depth_1 > 0.0) {
+        local_21 = depth_1 < 1.0;
     } else {
-        local_16 = false;
+        local_21 = false;
     }
-    bool _e16 = local_16;
+    bool _e16 = local_21;
     if (!(_e16)) {
         return metal::float4(0.0, 0.0, 0.0, 0.0);
     }
-    float x_15 = (((px + 0.5) / width) * 2.0) - 1.0;
+    float x_14 = (((px + 0.5) / width) * 2.0) - 1.0;
     float y_1 = 1.0 - (((py + 0.5) / height) * 2.0);
-    metal::float4 p_8 = (((c0_ * x_15) + (c1_ * y_1)) + (c2_ * depth)) + c3_;
-    metal::float3 q_1 = metal::float3(p_8.x / p_8.w, p_8.y / p_8.w, p_8.z / p_8.w);
-    if (metal::abs(p_8.w) > 0.0) {
-        bool _e59 = finite3_(q_1);
-        local_17 = _e59;
+    metal::float4 p_10 = (((c0_ * x_14) + (c1_ * y_1)) + (c2_ * depth_1)) + c3_;
+    metal::float3 q_2 = metal::float3(p_10.x / p_10.w, p_10.y / p_10.w, p_10.z / p_10.w);
+    if (metal::abs(p_10.w) > 0.0) {
+        bool _e59 = finite3_(q_2);
+        local_22 = _e59;
     } else {
-        local_17 = false;
+        local_22 = false;
     }
-    bool _e61 = local_17;
+    bool _e61 = local_22;
     if (_e61) {
-        return metal::float4(q_1.x, q_1.y, q_1.z, 1.0);
+        return metal::float4(q_2.x, q_2.y, q_2.z, 1.0);
     }
     return metal::float4(0.0, 0.0, 0.0, 0.0);
 }
@@ -1307,28 +1383,326 @@ metal::float4 surface_at(
     return _e29;
 }
 
+uint naga_div(uint lhs, uint rhs) {
+    return lhs / metal::select(rhs, 1u, rhs == 0u);
+}
+
+WorkgroupBox workgroup_bounds(
+    uint li_4,
+    metal::float3 lo_2,
+    metal::float3 hi_2,
+    threadgroup type_19& wg_lo,
+    threadgroup type_19& wg_hi,
+    threadgroup WorkgroupBox& wg_box
+) {
+    uint stride = 32u;
+    wg_lo.inner[li_4] = lo_2;
+    wg_hi.inner[li_4] = hi_2;
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    uint2 loop_bound_5 = uint2(4294967295u);
+    bool loop_init_2 = true;
+    while(true) {
+        if (metal::all(loop_bound_5 == uint2(0u))) { break; }
+        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+        if (!loop_init_2) {
+            uint _e36 = stride;
+            stride = naga_div(_e36, 2u);
+        }
+        loop_init_2 = false;
+        uint _e9 = stride;
+        if (_e9 > 0u) {
+        } else {
+            break;
+        }
+        {
+            uint _e12 = stride;
+            if (li_4 < _e12) {
+                metal::float3 _e18 = wg_lo.inner[li_4];
+                uint _e20 = stride;
+                metal::float3 _e23 = wg_lo.inner[li_4 + _e20];
+                wg_lo.inner[li_4] = metal::min(_e18, _e23);
+                metal::float3 _e29 = wg_hi.inner[li_4];
+                uint _e31 = stride;
+                metal::float3 _e34 = wg_hi.inner[li_4 + _e31];
+                wg_hi.inner[li_4] = metal::max(_e29, _e34);
+            }
+            metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+        }
+    }
+    if (li_4 == 0u) {
+        metal::float3 _e44 = wg_lo.inner[0];
+        metal::float3 _e47 = wg_hi.inner[0];
+        wg_box = WorkgroupBox {_e44, _e47};
+    }
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    WorkgroupBox unnamed = wg_box;
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    return unnamed;
+}
+
+WorkgroupBox workgroup_box(
+    uint li_5,
+    metal::float3 p_7,
+    bool has,
+    threadgroup type_19& wg_lo,
+    threadgroup type_19& wg_hi,
+    threadgroup WorkgroupBox& wg_box
+) {
+    WorkgroupBox _e9 = workgroup_bounds(li_5, has ? p_7 : metal::float3(340282350000000000000000000000000000000.0), has ? p_7 : metal::float3(-340282350000000000000000000000000000000.0), wg_lo, wg_hi, wg_box);
+    return _e9;
+}
+
+bool box_is_empty(
+    WorkgroupBox b_4
+) {
+    return b_4.lo.x > b_4.hi.x;
+}
+
+uint tile_subtree(
+    uint s_4,
+    TileWalk t_1,
+    bool list,
+    uint at,
+    uint start_2,
+    uint to,
+    device type_12 const& bsh_nodes,
+    threadgroup type_20& tile_list,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint p_8 = {};
+    uint b_5 = {};
+    bool local_23 = {};
+    bool local_24 = {};
+    bool local_25 = {};
+    uint _e8 = bsh_subtree(BSH, s_4, BSH_TILE_DEPTH, bsh_nodes, _buffer_sizes);
+    if (_e8 == BSH_NONE) {
+        return 0u;
+    }
+    uint end_1 = bsh_nodes[_e8].next;
+    p_8 = at;
+    uint _e21 = bsh_next_leaf_box(BSH, _e8, end_1, t_1.lo, t_1.hi, t_1.w, bsh_nodes, _buffer_sizes);
+    b_5 = _e21;
+    uint2 loop_bound_6 = uint2(4294967295u);
+    bool loop_init_3 = true;
+    while(true) {
+        if (metal::all(loop_bound_6 == uint2(0u))) { break; }
+        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+        if (!loop_init_3) {
+            uint _e53 = b_5;
+            uint _e56 = bsh_nodes[_e53].next;
+            uint _e60 = bsh_next_leaf_box(BSH, _e56, end_1, t_1.lo, t_1.hi, t_1.w, bsh_nodes, _buffer_sizes);
+            b_5 = _e60;
+        }
+        loop_init_3 = false;
+        uint _e23 = b_5;
+        if (_e23 != end_1) {
+            if (!(!(list))) {
+                uint _e31 = p_8;
+                local_24 = _e31 < to;
+            } else {
+                local_24 = true;
+            }
+            bool _e34 = local_24;
+            local_23 = _e34;
+        } else {
+            local_23 = false;
+        }
+        bool _e36 = local_23;
+        if (_e36) {
+        } else {
+            break;
+        }
+        {
+            if (list) {
+                uint _e39 = p_8;
+                local_25 = _e39 >= start_2;
+            } else {
+                local_25 = false;
+            }
+            bool _e42 = local_25;
+            if (_e42) {
+                uint _e44 = p_8;
+                uint _e47 = b_5;
+                tile_list.inner[_e44 - start_2] = _e47;
+            }
+            uint _e48 = p_8;
+            p_8 = _e48 + 1u;
+        }
+    }
+    uint _e61 = p_8;
+    return _e61 - at;
+}
+
+TileWalk tile_walk_begin(
+    uint li_6,
+    metal::float3 x_10,
+    float w_6,
+    bool has_1,
+    device type_12 const& bsh_nodes,
+    threadgroup type_19& wg_lo,
+    threadgroup type_19& wg_hi,
+    threadgroup WorkgroupBox& wg_box,
+    threadgroup type_20& tile_list,
+    threadgroup type_21& subtree_at,
+    threadgroup metal::atomic_uint& tile_scale,
+    threadgroup uint& tile_total,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    TileWalk t_2 = {};
+    uint s_5 = {};
+    uint sum_1 = 0u;
+    uint s_6 = 0u;
+    uint _e8 = metal::atomic_fetch_max_explicit(&tile_scale, has_1 ? as_type<uint>(w_6) : 0u, metal::memory_order_relaxed);
+    WorkgroupBox _e9 = workgroup_box(li_6, x_10, has_1, wg_lo, wg_hi, wg_box);
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    uint unnamed_1 = metal::atomic_load_explicit(&tile_scale, metal::memory_order_relaxed);
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    t_2 = TileWalk {_e9.lo, _e9.hi, as_type<float>(unnamed_1), 0u};
+    bool _e18 = box_is_empty(_e9);
+    if (_e18) {
+        TileWalk _e19 = t_2;
+        return _e19;
+    }
+    s_5 = li_6;
+    uint2 loop_bound_7 = uint2(4294967295u);
+    bool loop_init_4 = true;
+    while(true) {
+        if (metal::all(loop_bound_7 == uint2(0u))) { break; }
+        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+        if (!loop_init_4) {
+            uint _e34 = s_5;
+            s_5 = _e34 + TILE_THREADS;
+        }
+        loop_init_4 = false;
+        uint _e21 = s_5;
+        if (_e21 < BSH_TILE_SUBTREES) {
+        } else {
+            break;
+        }
+        {
+            uint _e25 = s_5;
+            uint _e27 = s_5;
+            TileWalk _e28 = t_2;
+            uint _e33 = tile_subtree(_e27, _e28, false, 0u, 0u, 0u, bsh_nodes, tile_list, _buffer_sizes);
+            subtree_at.inner[_e25] = _e33;
+        }
+    }
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    if (li_6 == 0u) {
+        uint2 loop_bound_8 = uint2(4294967295u);
+        bool loop_init_5 = true;
+        while(true) {
+            if (metal::all(loop_bound_8 == uint2(0u))) { break; }
+            loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
+            if (!loop_init_5) {
+                uint _e57 = s_6;
+                s_6 = _e57 + 1u;
+            }
+            loop_init_5 = false;
+            uint _e43 = s_6;
+            if (_e43 < BSH_TILE_SUBTREES) {
+            } else {
+                break;
+            }
+            {
+                uint _e47 = s_6;
+                uint c_8 = subtree_at.inner[_e47];
+                uint _e51 = s_6;
+                uint _e53 = sum_1;
+                subtree_at.inner[_e51] = _e53;
+                uint _e54 = sum_1;
+                sum_1 = _e54 + c_8;
+            }
+        }
+        uint _e60 = sum_1;
+        tile_total = _e60;
+    }
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    uint unnamed_2 = tile_total;
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    t_2.total = unnamed_2;
+    TileWalk _e64 = t_2;
+    return _e64;
+}
+
+uint tile_walk_fill(
+    uint li_7,
+    TileWalk t_3,
+    uint start_3,
+    device type_12 const& bsh_nodes,
+    threadgroup type_20& tile_list,
+    threadgroup type_21& subtree_at,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint s_7 = {};
+    uint past = {};
+    bool local_26 = {};
+    uint to_1 = metal::min(t_3.total, start_3 + TILE_LIST);
+    s_7 = li_7;
+    uint2 loop_bound_9 = uint2(4294967295u);
+    bool loop_init_6 = true;
+    while(true) {
+        if (metal::all(loop_bound_9 == uint2(0u))) { break; }
+        loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
+        if (!loop_init_6) {
+            uint _e38 = s_7;
+            s_7 = _e38 + TILE_THREADS;
+        }
+        loop_init_6 = false;
+        uint _e8 = s_7;
+        if (_e8 < BSH_TILE_SUBTREES) {
+        } else {
+            break;
+        }
+        {
+            uint _e12 = s_7;
+            uint at_1 = subtree_at.inner[_e12];
+            past = t_3.total;
+            uint _e17 = s_7;
+            if ((_e17 + 1u) < BSH_TILE_SUBTREES) {
+                uint _e23 = s_7;
+                uint _e27 = subtree_at.inner[_e23 + 1u];
+                past = _e27;
+            }
+            if (at_1 < to_1) {
+                uint _e31 = past;
+                local_26 = _e31 > start_3;
+            } else {
+                local_26 = false;
+            }
+            bool _e34 = local_26;
+            if (_e34) {
+                uint _e35 = s_7;
+                uint _e37 = tile_subtree(_e35, t_3, true, at_1, start_3, to_1, bsh_nodes, tile_list, _buffer_sizes);
+            }
+        }
+    }
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    return to_1 - start_3;
+}
+
 Shaded shade_connection(
-    Connection c_3,
-    metal::float3 x_12,
+    Connection c_4,
+    metal::float3 x_11,
     metal::float3 n_8,
     Material m_1
 ) {
-    Shaded s_2 = {};
-    s_2.e = c_3.e;
-    s_2.diffuse = metal::float3(0.0);
-    s_2.specular = metal::float3(0.0);
-    Shaded _e13 = s_2;
+    Shaded s_8 = {};
+    s_8.e = c_4.e;
+    s_8.diffuse = metal::float3(0.0);
+    s_8.specular = metal::float3(0.0);
+    Shaded _e13 = s_8;
     return _e13;
 }
 
 Shaded shade_pick_traced(
-    uint li_3,
-    metal::float3 x_13,
+    uint li_8,
+    metal::float3 x_12,
     metal::float3 n_9,
-    metal::float3 r_11,
-    metal::float4 rl_8,
+    metal::float3 r_10,
+    metal::float4 rl_6,
     Material m_2,
-    float w_3,
+    float w_7,
     float u1_3,
     float u2_3,
     float eps_2,
@@ -1340,19 +1714,19 @@ Shaded shade_pick_traced(
     device type_4 const& r2_4,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Connection _e12 = connect_traced(li_3, x_13, n_9, n_9, 1.0, w_3, u1_3, u2_3, eps_2, trace_3, geo_nodes, geo_tris, lights, rt2_5, r2_4, _buffer_sizes);
-    Shaded _e13 = shade_connection(_e12, x_13, n_9, m_2);
+    Connection _e12 = connect_traced(li_8, x_12, n_9, n_9, 1.0, w_7, u1_3, u2_3, eps_2, trace_3, geo_nodes, geo_tris, lights, rt2_5, r2_4, _buffer_sizes);
+    Shaded _e13 = shade_connection(_e12, x_12, n_9, m_2);
     return _e13;
 }
 
 Shaded shade_pick(
-    uint li_4,
-    metal::float3 x_14,
+    uint li_9,
+    metal::float3 x_13,
     metal::float3 n_10,
-    metal::float3 r_12,
-    metal::float4 rl_9,
+    metal::float3 r_11,
+    metal::float4 rl_7,
     Material m_3,
-    float w_4,
+    float w_8,
     float u1_4,
     float u2_4,
     float eps_3,
@@ -1363,36 +1737,36 @@ Shaded shade_pick(
     device type_4 const& r2_4,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Shaded _e11 = shade_pick_traced(li_4, x_14, n_10, r_12, rl_9, m_3, w_4, u1_4, u2_4, eps_3, true, geo_nodes, geo_tris, lights, rt2_5, r2_4, _buffer_sizes);
+    Shaded _e11 = shade_pick_traced(li_9, x_13, n_10, r_11, rl_7, m_3, w_8, u1_4, u2_4, eps_3, true, geo_nodes, geo_tris, lights, rt2_5, r2_4, _buffer_sizes);
     return _e11;
 }
 
 Shaded add(
     Shaded a_6,
-    Shaded b_5
+    Shaded b_6
 ) {
-    return Shaded {a_6.e + b_5.e, a_6.diffuse + b_5.diffuse, a_6.specular + b_5.specular};
+    return Shaded {a_6.e + b_6.e, a_6.diffuse + b_6.diffuse, a_6.specular + b_6.specular};
 }
 
 type_14 first_holders(
-    type_19 keys_1,
-    type_20 held_1
+    type_24 keys_1,
+    type_25 held_1
 ) {
     type_14 first = {};
     uint k_3 = 0u;
-    uint j_1 = {};
-    bool local_18 = {};
-    bool local_19 = {};
-    uint2 loop_bound_5 = uint2(4294967295u);
-    bool loop_init_3 = true;
+    uint j_2 = {};
+    bool local_27 = {};
+    bool local_28 = {};
+    uint2 loop_bound_10 = uint2(4294967295u);
+    bool loop_init_7 = true;
     while(true) {
-        if (metal::all(loop_bound_5 == uint2(0u))) { break; }
-        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
-        if (!loop_init_3) {
+        if (metal::all(loop_bound_10 == uint2(0u))) { break; }
+        loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
+        if (!loop_init_7) {
             uint _e45 = k_3;
             k_3 = _e45 + 1u;
         }
-        loop_init_3 = false;
+        loop_init_7 = false;
         uint _e5 = k_3;
         if (_e5 < K) {
         } else {
@@ -1403,43 +1777,43 @@ type_14 first_holders(
             uint _e11 = k_3;
             uint _e12 = k_3;
             first.inner[_e8] = held_1.inner[_e12] ? _e11 : K;
-            j_1 = 0u;
-            uint2 loop_bound_6 = uint2(4294967295u);
-            bool loop_init_4 = true;
+            j_2 = 0u;
+            uint2 loop_bound_11 = uint2(4294967295u);
+            bool loop_init_8 = true;
             while(true) {
-                if (metal::all(loop_bound_6 == uint2(0u))) { break; }
-                loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-                if (!loop_init_4) {
-                    uint _e42 = j_1;
-                    j_1 = _e42 + 1u;
+                if (metal::all(loop_bound_11 == uint2(0u))) { break; }
+                loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
+                if (!loop_init_8) {
+                    uint _e42 = j_2;
+                    j_2 = _e42 + 1u;
                 }
-                loop_init_4 = false;
-                uint _e17 = j_1;
+                loop_init_8 = false;
+                uint _e17 = j_2;
                 uint _e18 = k_3;
                 if (_e17 < _e18) {
                     uint _e22 = k_3;
-                    local_18 = held_1.inner[_e22];
+                    local_27 = held_1.inner[_e22];
                 } else {
-                    local_18 = false;
+                    local_27 = false;
                 }
-                bool _e25 = local_18;
+                bool _e25 = local_27;
                 if (_e25) {
                 } else {
                     break;
                 }
                 {
-                    uint _e26 = j_1;
+                    uint _e26 = j_2;
                     if (held_1.inner[_e26]) {
-                        uint _e30 = j_1;
+                        uint _e30 = j_2;
                         uint _e32 = k_3;
-                        local_19 = metal::all(keys_1.inner[_e30] == keys_1.inner[_e32]);
+                        local_28 = metal::all(keys_1.inner[_e30] == keys_1.inner[_e32]);
                     } else {
-                        local_19 = false;
+                        local_28 = false;
                     }
-                    bool _e37 = local_19;
+                    bool _e37 = local_28;
                     if (_e37) {
                         uint _e38 = k_3;
-                        uint _e40 = j_1;
+                        uint _e40 = j_2;
                         first.inner[_e38] = _e40;
                         break;
                     }
@@ -1455,6 +1829,7 @@ struct main_Input {
 };
 kernel void main_(
   metal::uint3 gid [[thread_position_in_grid]]
+, uint lid [[thread_index_in_threadgroup]]
 , device type_6 const& geo_nodes [[user(fake0)]]
 , device type_7 const& geo_tris [[user(fake0)]]
 , constant ViewParams& view [[user(fake0)]]
@@ -1466,165 +1841,286 @@ kernel void main_(
 , device type_4 const& r2_4 [[user(fake0)]]
 , device type_12 const& bsh_nodes [[user(fake0)]]
 , device type_13 const& light_cones [[user(fake0)]]
+, threadgroup type_19& wg_lo
+, threadgroup type_19& wg_hi
+, threadgroup WorkgroupBox& wg_box
+, threadgroup type_20& tile_list
+, threadgroup type_21& subtree_at
+, threadgroup metal::atomic_uint& tile_scale
+, threadgroup uint& tile_total
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
+    if (lid == 0u) {
+        wg_lo = {};
+        wg_hi = {};
+        wg_box = {};
+        tile_list = {};
+        subtree_at = {};
+        metal::atomic_store_explicit(&tile_scale, 0, metal::memory_order_relaxed);
+        tile_total = {};
+    }
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
     bool local = {};
+    metal::float4 s = metal::float4(0.0);
+    metal::float3 nn = metal::float3(0.0);
     bool local_1 = {};
+    bool local_2 = {};
+    bool local_3 = {};
+    metal::float3 n = metal::float3(0.0, 0.0, 1.0);
     Material m = {};
     metal::float4 lobe = metal::float4(1.0, 0.0, 1.0, 1.0);
     metal::float3 r = {};
     uint h = {};
     Shaded t = Shaded {metal::float3(0.0), metal::float3(0.0), metal::float3(0.0)};
-    type_19 keys = {};
-    type_20 held = {};
+    WeightedPicks picks = {};
+    bool local_4 = {};
+    uint start = 0u;
+    uint j = {};
+    bool local_5 = {};
+    type_24 keys = {};
+    type_25 held = {};
     uint k = 0u;
     uint k_1 = 0u;
     uint copies = {};
-    uint j = {};
-    uint _e4 = view.width;
-    if (!((gid.x >= _e4))) {
+    uint j_1 = {};
+    uint _e5 = view.width;
+    if (gid.x < _e5) {
         uint _e12 = view.height;
-        local = gid.y >= _e12;
+        local = gid.y < _e12;
     } else {
-        local = true;
+        local = false;
     }
-    bool _e15 = local;
-    if (_e15) {
-        return;
-    }
+    bool inside = local;
     metal::int2 texel_1 = metal::int2(static_cast<int>(gid.x), static_cast<int>(gid.y));
-    metal::float4 _e21 = surface_at(texel_1, view, depth_tex);
-    metal::float4 _e24 = normal_tex.read(metal::uint2(texel_1), 0);
-    metal::float3 nn = _e24.xyz;
-    float len2_ = metal::dot(nn, nn);
-    if (!((_e21.w <= 0.0))) {
-        local_1 = !((len2_ > 0.0));
-    } else {
-        local_1 = true;
+    if (inside) {
+        metal::float4 _e27 = surface_at(texel_1, view, depth_tex);
+        s = _e27;
+        metal::float4 _e30 = normal_tex.read(metal::uint2(texel_1), 0);
+        nn = _e30.xyz;
     }
-    bool _e37 = local_1;
-    if (_e37) {
-        out_tex.write(metal::float4(0.0), metal::uint2(texel_1));
+    metal::float3 _e32 = nn;
+    metal::float3 _e33 = nn;
+    float len2_ = metal::dot(_e32, _e33);
+    metal::float4 _e35 = s;
+    metal::float3 x_15 = _e35.xyz;
+    if (inside) {
+        float _e40 = s.w;
+        local_1 = _e40 > 0.0;
+    } else {
+        local_1 = false;
+    }
+    bool _e44 = local_1;
+    if (_e44) {
+        local_2 = len2_ > 0.0;
+    } else {
+        local_2 = false;
+    }
+    bool _e50 = local_2;
+    if (_e50) {
+        local_3 = metal::all(metal::abs(x_15) <= metal::float3(340282350000000000000000000000000000000.0));
+    } else {
+        local_3 = false;
+    }
+    bool has_2 = local_3;
+    if (has_2) {
+        metal::float3 _e65 = nn;
+        n = _e65 / metal::float3(metal::sqrt(len2_));
+    }
+    metal::float3 _e76 = n;
+    r = _e76;
+    metal::float4 _e78 = lobe;
+    metal::float4 _e79 = range_lobe(_e78);
+    float _e82 = view.shadow_offset;
+    metal::float3 _e85 = view.eye;
+    float eps_4 = _e82 * metal::length(_e85 - x_15);
+    uint _e91 = view.seed;
+    uint _e95 = view.width;
+    uint _e101 = view.frame;
+    uint _e102 = point_stream(_e91, (gid.y * _e95) + gid.x, _e101);
+    uint _e103 = pick_stream(_e102);
+    h = _e103;
+    WeightedPicks _e113 = weighted_picks(_e102);
+    picks = _e113;
+    if (has_2) {
+        local_4 = _e79.w >= 0.0;
+    } else {
+        local_4 = false;
+    }
+    bool _e122 = local_4;
+    TileWalk _e123 = tile_walk_begin(lid, x_15, _e79.w, _e122, bsh_nodes, wg_lo, wg_hi, wg_box, tile_list, subtree_at, tile_scale, tile_total, _buffer_sizes);
+    uint2 loop_bound_12 = uint2(4294967295u);
+    bool loop_init_9 = true;
+    while(true) {
+        if (metal::all(loop_bound_12 == uint2(0u))) { break; }
+        loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
+        if (!loop_init_9) {
+            uint _e162 = start;
+            start = _e162 + TILE_LIST;
+        }
+        loop_init_9 = false;
+        uint _e126 = start;
+        if (_e126 < _e123.total) {
+        } else {
+            break;
+        }
+        {
+            uint _e129 = start;
+            uint _e130 = tile_walk_fill(lid, _e123, _e129, bsh_nodes, tile_list, subtree_at, _buffer_sizes);
+            j = 0u;
+            uint2 loop_bound_13 = uint2(4294967295u);
+            bool loop_init_10 = true;
+            while(true) {
+                if (metal::all(loop_bound_13 == uint2(0u))) { break; }
+                loop_bound_13 -= uint2(loop_bound_13.y == 0u, 1u);
+                if (!loop_init_10) {
+                    uint _e160 = j;
+                    j = _e160 + 1u;
+                }
+                loop_init_10 = false;
+                uint _e133 = j;
+                if (_e133 < _e130) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e136 = j;
+                    uint b_7 = tile_list.inner[_e136];
+                    if (!(!(has_2))) {
+                        BshNode _e145 = bsh_nodes[b_7];
+                        metal::float3 _e146 = r;
+                        bool _e147 = bsh_reaches(_e145, x_15, _e146, _e79);
+                        local_5 = !(_e147);
+                    } else {
+                        local_5 = true;
+                    }
+                    bool _e150 = local_5;
+                    if (_e150) {
+                        continue;
+                    }
+                    uint li_10 = bsh_nodes[b_7].light;
+                    metal::float3 _e155 = n;
+                    metal::float3 _e156 = r;
+                    metal::float4 _e157 = lobe;
+                    float _e158 = light_weight(li_10, x_15, _e155, _e156, _e157, _e79, rt2_5, light_cones, _buffer_sizes);
+                    weighted_offer(picks, li_10, _e158);
+                }
+            }
+            metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+        }
+    }
+    if (!(has_2)) {
+        if (inside) {
+            out_tex.write(metal::float4(0.0), metal::uint2(texel_1));
+        }
         return;
     }
-    metal::float3 x_16 = _e21.xyz;
-    metal::float3 n_12 = nn / metal::float3(metal::sqrt(len2_));
-    r = n_12;
-    metal::float4 _e53 = lobe;
-    metal::float4 _e54 = range_lobe(_e53);
-    float _e57 = view.shadow_offset;
-    metal::float3 _e60 = view.eye;
-    float eps_4 = _e57 * metal::length(_e60 - x_16);
-    uint _e66 = view.seed;
-    uint _e70 = view.width;
-    uint _e76 = view.frame;
-    uint _e77 = point_stream(_e66, (gid.y * _e70) + gid.x, _e76);
-    uint _e78 = pick_stream(_e77);
-    h = _e78;
-    metal::float3 _e88 = r;
-    metal::float4 _e89 = lobe;
-    WeightedPicks _e90 = bsh_weighted_collect(x_16, n_12, _e88, _e89, _e54, _e77, rt2_5, bsh_nodes, light_cones, _buffer_sizes);
-    if (_e90.w_sum > 0.0) {
-        uint2 loop_bound_7 = uint2(4294967295u);
-        bool loop_init_5 = true;
+    float _e170 = picks.w_sum;
+    if (_e170 > 0.0) {
+        uint2 loop_bound_14 = uint2(4294967295u);
+        bool loop_init_11 = true;
         while(true) {
-            if (metal::all(loop_bound_7 == uint2(0u))) { break; }
-            loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
-            if (!loop_init_5) {
-                uint _e125 = k;
-                k = _e125 + 1u;
+            if (metal::all(loop_bound_14 == uint2(0u))) { break; }
+            loop_bound_14 -= uint2(loop_bound_14.y == 0u, 1u);
+            if (!loop_init_11) {
+                uint _e206 = k;
+                k = _e206 + 1u;
             }
-            loop_init_5 = false;
-            uint _e98 = k;
-            if (_e98 < K) {
+            loop_init_11 = false;
+            uint _e177 = k;
+            if (_e177 < K) {
             } else {
                 break;
             }
             {
-                uint _e102 = k;
-                uint _e107 = k;
-                uint _e111 = lights[_e90.light.inner[_e107]].kind;
-                uint own = (_e111 == LIGHT_TRIANGLE) ? (_e102 + 1u) : 0u;
-                uint _e115 = k;
-                uint _e118 = k;
-                keys.inner[_e115] = metal::uint2(_e90.light.inner[_e118], own);
-                uint _e121 = k;
-                held.inner[_e121] = true;
+                uint _e181 = k;
+                uint _e186 = k;
+                uint _e188 = picks.light.inner[_e186];
+                uint _e191 = lights[_e188].kind;
+                uint own = (_e191 == LIGHT_TRIANGLE) ? (_e181 + 1u) : 0u;
+                uint _e195 = k;
+                uint _e198 = k;
+                uint _e200 = picks.light.inner[_e198];
+                keys.inner[_e195] = metal::uint2(_e200, own);
+                uint _e202 = k;
+                held.inner[_e202] = true;
             }
         }
-        type_19 _e127 = keys;
-        type_20 _e128 = held;
-        type_14 _e129 = first_holders(_e127, _e128);
-        uint2 loop_bound_8 = uint2(4294967295u);
-        bool loop_init_6 = true;
+        type_24 _e208 = keys;
+        type_25 _e209 = held;
+        type_14 _e210 = first_holders(_e208, _e209);
+        uint2 loop_bound_15 = uint2(4294967295u);
+        bool loop_init_12 = true;
         while(true) {
-            if (metal::all(loop_bound_8 == uint2(0u))) { break; }
-            loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
-            if (!loop_init_6) {
-                uint _e183 = k_1;
-                k_1 = _e183 + 1u;
+            if (metal::all(loop_bound_15 == uint2(0u))) { break; }
+            loop_bound_15 -= uint2(loop_bound_15.y == 0u, 1u);
+            if (!loop_init_12) {
+                uint _e268 = k_1;
+                k_1 = _e268 + 1u;
             }
-            loop_init_6 = false;
-            uint _e132 = k_1;
-            if (_e132 < K) {
+            loop_init_12 = false;
+            uint _e213 = k_1;
+            if (_e213 < K) {
             } else {
                 break;
             }
             {
-                uint _e135 = h;
-                uint _e136 = pcg_hash(_e135);
-                h = _e136;
-                uint _e137 = h;
-                float _e138 = xi_from_bits(_e137);
-                uint _e139 = h;
-                uint _e140 = pcg_hash(_e139);
-                h = _e140;
-                uint _e141 = h;
-                float _e142 = xi_from_bits(_e141);
-                uint _e144 = k_1;
-                uint li_6 = _e90.light.inner[_e144];
+                uint _e216 = h;
+                uint _e217 = pcg_hash(_e216);
+                h = _e217;
+                uint _e218 = h;
+                float _e219 = xi_from_bits(_e218);
+                uint _e220 = h;
+                uint _e221 = pcg_hash(_e220);
+                h = _e221;
+                uint _e222 = h;
+                float _e223 = xi_from_bits(_e222);
+                uint _e225 = k_1;
+                uint li_11 = picks.light.inner[_e225];
                 copies = 0u;
-                uint _e148 = k_1;
-                j = _e148;
-                uint2 loop_bound_9 = uint2(4294967295u);
-                bool loop_init_7 = true;
+                uint _e230 = k_1;
+                j_1 = _e230;
+                uint2 loop_bound_16 = uint2(4294967295u);
+                bool loop_init_13 = true;
                 while(true) {
-                    if (metal::all(loop_bound_9 == uint2(0u))) { break; }
-                    loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
-                    if (!loop_init_7) {
-                        uint _e163 = j;
-                        j = _e163 + 1u;
+                    if (metal::all(loop_bound_16 == uint2(0u))) { break; }
+                    loop_bound_16 -= uint2(loop_bound_16.y == 0u, 1u);
+                    if (!loop_init_13) {
+                        uint _e245 = j_1;
+                        j_1 = _e245 + 1u;
                     }
-                    loop_init_7 = false;
-                    uint _e150 = j;
-                    if (_e150 < K) {
+                    loop_init_13 = false;
+                    uint _e232 = j_1;
+                    if (_e232 < K) {
                     } else {
                         break;
                     }
                     {
-                        uint _e153 = copies;
-                        uint _e156 = j;
-                        uint _e158 = k_1;
-                        copies = _e153 + ((_e129.inner[_e156] == _e158) ? 1u : 0u);
+                        uint _e235 = copies;
+                        uint _e238 = j_1;
+                        uint _e240 = k_1;
+                        copies = _e235 + ((_e210.inner[_e238] == _e240) ? 1u : 0u);
                     }
                 }
-                uint _e165 = copies;
-                if (_e165 > 0u) {
-                    Shaded _e168 = t;
-                    metal::float3 _e169 = r;
-                    Material _e170 = m;
-                    uint _e173 = k_1;
-                    float _e176 = weighted_pick_weight(_e90.w_sum, _e90.w.inner[_e173], K);
-                    uint _e177 = copies;
-                    Shaded _e180 = shade_pick(li_6, x_16, n_12, _e169, _e54, _e170, _e176 * static_cast<float>(_e177), _e138, _e142, eps_4, geo_nodes, geo_tris, lights, rt2_5, r2_4, _buffer_sizes);
-                    Shaded _e181 = add(_e168, _e180);
-                    t = _e181;
+                uint _e247 = copies;
+                if (_e247 > 0u) {
+                    Shaded _e250 = t;
+                    metal::float3 _e251 = n;
+                    metal::float3 _e252 = r;
+                    Material _e253 = m;
+                    float _e255 = picks.w_sum;
+                    uint _e257 = k_1;
+                    float _e259 = picks.w.inner[_e257];
+                    float _e261 = weighted_pick_weight(_e255, _e259, K);
+                    uint _e262 = copies;
+                    Shaded _e265 = shade_pick(li_11, x_15, _e251, _e252, _e79, _e253, _e261 * static_cast<float>(_e262), _e219, _e223, eps_4, geo_nodes, geo_tris, lights, rt2_5, r2_4, _buffer_sizes);
+                    Shaded _e266 = add(_e250, _e265);
+                    t = _e266;
                 }
             }
         }
     }
-    uint count = _e90.n;
-    metal::float3 _e188 = t.e;
-    out_tex.write(metal::float4(_e188, static_cast<float>(count)), metal::uint2(texel_1));
+    uint count = picks.n;
+    metal::float3 _e274 = t.e;
+    out_tex.write(metal::float4(_e274, static_cast<float>(count)), metal::uint2(texel_1));
     return;
 }

@@ -130,6 +130,26 @@ struct Connection {
     metal::packed_float3 y;
     float cos_x;
 };
+struct type_20 {
+    metal::float3 inner[64];
+};
+struct WorkgroupBox {
+    metal::float3 lo;
+    metal::float3 hi;
+};
+struct type_21 {
+    uint inner[1024];
+};
+struct type_22 {
+    uint inner[256];
+};
+struct TileWalk {
+    metal::float3 lo;
+    metal::packed_float3 hi;
+    float w;
+    uint total;
+    char _pad4[12];
+};
 struct Shaded {
     metal::float3 e;
     metal::float3 diffuse;
@@ -145,10 +165,10 @@ struct Material {
     float reflectance;
     char _pad6[12];
 };
-struct type_21 {
+struct type_25 {
     metal::uint2 inner[8];
 };
-struct type_22 {
+struct type_26 {
     bool inner[8];
 };
 struct Domain {
@@ -161,13 +181,13 @@ struct Domain {
     bool temporal;
     char _pad6[11];
 };
-struct type_23 {
+struct type_27 {
     Domain inner[3];
 };
-struct type_26 {
+struct type_30 {
     metal::float2 inner[8];
 };
-struct type_27 {
+struct type_31 {
     float inner[8];
 };
 constant uint LIGHT_POINT = 0u;
@@ -228,6 +248,11 @@ constant float TEMPORAL_CHANGE_HIGH = 8.0;
 constant float TEMPORAL_MIN_WEIGHT = 0.01;
 constant uint K = 8u;
 constant BshNodes BSH = 0u;
+constant uint BSH_TILE_DEPTH = 8u;
+constant uint BSH_TILE_SUBTREES = 256u;
+constant uint TILE_THREADS = 64u;
+constant uint BOX_THREADS = 64u;
+constant uint TILE_LIST = 1024u;
 constant uint DOMAINS = 3u;
 
 float to_f32_(
@@ -238,16 +263,16 @@ float to_f32_(
 
 uint mul_lo_u32_(
     uint a,
-    uint b_1
+    uint b
 ) {
-    return a * b_1;
+    return a * b;
 }
 
 uint add_wrap_u32_(
     uint a_1,
-    uint b_2
+    uint b_1
 ) {
-    return a_1 + b_2;
+    return a_1 + b_1;
 }
 
 float f32_from_bits(
@@ -325,6 +350,17 @@ bool sphere_contains_point(
     return metal::dot(v_5, v_5) <= (r_1 * r_1);
 }
 
+bool sphere_overlaps_aabb(
+    metal::float3 c_1,
+    float r_2,
+    metal::float3 bmin,
+    metal::float3 bmax
+) {
+    metal::float3 q_5 = metal::clamp(c_1, bmin, bmax);
+    metal::float3 v_6 = q_5 - c_1;
+    return metal::dot(v_6, v_6) <= (r_2 * r_2);
+}
+
 float inverse_square(
     float d2_2
 ) {
@@ -345,32 +381,32 @@ float connection_factor(
 float connection_cosine(
     metal::float3 x_2,
     metal::float3 y,
-    metal::float3 n,
+    metal::float3 n_1,
     metal::float3 ng,
     float r2_1
 ) {
-    bool local_5 = {};
-    bool local_6 = {};
-    metal::float3 v_6 = x_2 - y;
-    float d2_6 = metal::dot(v_6, v_6);
+    bool local_9 = {};
+    bool local_10 = {};
+    metal::float3 v_7 = x_2 - y;
+    float d2_6 = metal::dot(v_7, v_7);
     bool _e7 = slc_keep(r2_1, d2_6);
     if (!(!(_e7))) {
-        local_5 = !((d2_6 > 0.0));
+        local_9 = !((d2_6 > 0.0));
     } else {
-        local_5 = true;
+        local_9 = true;
     }
-    bool _e16 = local_5;
+    bool _e16 = local_9;
     if (_e16) {
         return 0.0;
     }
-    metal::float3 w_8 = v_6 / metal::float3(metal::sqrt(d2_6));
-    float cos_x_1 = -(metal::dot(n, w_8));
+    metal::float3 w_11 = v_7 / metal::float3(metal::sqrt(d2_6));
+    float cos_x_1 = -(metal::dot(n_1, w_11));
     if (!((cos_x_1 <= 0.0))) {
-        local_6 = metal::dot(ng, w_8) >= 0.0;
+        local_10 = metal::dot(ng, w_11) >= 0.0;
     } else {
-        local_6 = true;
+        local_10 = true;
     }
-    bool _e32 = local_6;
+    bool _e32 = local_10;
     if (_e32) {
         return 0.0;
     }
@@ -378,24 +414,24 @@ float connection_cosine(
 }
 
 float triangle_lobe(
-    metal::float3 n_1,
+    metal::float3 n_2,
     float area,
     metal::float3 w_2
 ) {
-    return area * metal::max(metal::dot(n_1, w_2), 0.0);
+    return area * metal::max(metal::dot(n_2, w_2), 0.0);
 }
 
 metal::float3 triangle_sample(
     metal::float3 a_2,
-    metal::float3 b_3,
-    metal::float3 c_1,
+    metal::float3 b_2,
+    metal::float3 c_2,
     float u1_,
     float u2_
 ) {
     float su = metal::sqrt(u1_);
     float b0_ = 1.0 - su;
     float b1_ = u2_ * su;
-    return ((a_2 * b0_) + (b_3 * b1_)) + (c_1 * ((1.0 - b0_) - b1_));
+    return ((a_2 * b0_) + (b_2 * b1_)) + (c_2 * ((1.0 - b0_) - b1_));
 }
 
 float bsh_scaled_radius(
@@ -437,9 +473,9 @@ float weighted_threshold(
 }
 
 float resample_target(
-    metal::float3 c_2
+    metal::float3 c_3
 ) {
-    return ((c_2.x + c_2.y) + c_2.z) * 0.33333334;
+    return ((c_3.x + c_3.y) + c_3.z) * 0.33333334;
 }
 
 uint naga_mod(uint lhs, uint rhs) {
@@ -447,22 +483,22 @@ uint naga_mod(uint lhs, uint rhs) {
 }
 
 float slot_target(
-    metal::float3 c_3,
+    metal::float3 c_4,
     uint slot,
     uint k_2
 ) {
     if (k_2 < 3u) {
-        float _e5 = resample_target(c_3);
+        float _e5 = resample_target(c_4);
         return _e5;
     }
-    uint j_5 = naga_mod(slot, 3u);
-    if (j_5 == 0u) {
-        return c_3.x;
+    uint j_6 = naga_mod(slot, 3u);
+    if (j_6 == 0u) {
+        return c_4.x;
     }
-    if (j_5 == 1u) {
-        return c_3.y;
+    if (j_6 == 1u) {
+        return c_4.y;
     }
-    return c_3.z;
+    return c_4.z;
 }
 
 uint naga_div(uint lhs, uint rhs) {
@@ -475,19 +511,19 @@ metal::float3 slot_share(
 ) {
     if (k_3 < 3u) {
         float _e4 = to_f32_(k_3);
-        float w_9 = 1.0 / _e4;
-        return metal::float3(w_9, w_9, w_9);
+        float w_12 = 1.0 / _e4;
+        return metal::float3(w_12, w_12, w_12);
     }
-    uint j_6 = naga_mod(slot_1, 3u);
-    float _e15 = to_f32_(naga_div((k_3 + 2u) - j_6, 3u));
-    float w_10 = 1.0 / _e15;
-    if (j_6 == 0u) {
-        return metal::float3(w_10, 0.0, 0.0);
+    uint j_7 = naga_mod(slot_1, 3u);
+    float _e15 = to_f32_(naga_div((k_3 + 2u) - j_7, 3u));
+    float w_13 = 1.0 / _e15;
+    if (j_7 == 0u) {
+        return metal::float3(w_13, 0.0, 0.0);
     }
-    if (j_6 == 1u) {
-        return metal::float3(0.0, w_10, 0.0);
+    if (j_7 == 1u) {
+        return metal::float3(0.0, w_13, 0.0);
     }
-    return metal::float3(0.0, 0.0, w_10);
+    return metal::float3(0.0, 0.0, w_13);
 }
 
 float grid_coordinate(
@@ -505,12 +541,12 @@ uint grid_cells(
 }
 
 metal::float2 disk_offset(
-    float r_2,
+    float r_3,
     float u1_1,
     float u2_1
 ) {
     float a_9 = TWO_PI * u2_1;
-    return metal::float2(metal::cos(a_9), metal::sin(a_9)) * (r_2 * metal::sqrt(u1_1));
+    return metal::float2(metal::cos(a_9), metal::sin(a_9)) * (r_3 * metal::sqrt(u1_1));
 }
 
 float gris_weight(
@@ -544,8 +580,8 @@ float ggx_d(
         return 0.0;
     }
     float a2_ = alpha * alpha;
-    float t_1 = ((cos_h * cos_h) * a2_) + sin2_h;
-    return (a2_ * INV_PI) / (t_1 * t_1);
+    float t_4 = ((cos_h * cos_h) * a2_) + sin2_h;
+    return (a2_ * INV_PI) / (t_4 * t_4);
 }
 
 float smith_root(
@@ -561,13 +597,13 @@ float smith_visibility(
     float n_v,
     float alpha_2
 ) {
-    bool local_7 = {};
+    bool local_11 = {};
     if (!((n_l <= 0.0))) {
-        local_7 = n_v <= 0.0;
+        local_11 = n_v <= 0.0;
     } else {
-        local_7 = true;
+        local_11 = true;
     }
-    bool _e11 = local_7;
+    bool _e11 = local_11;
     if (_e11) {
         return 0.0;
     }
@@ -581,9 +617,9 @@ metal::float3 fresnel_schlick(
     float f90_,
     float v_h
 ) {
-    float c_10 = metal::saturate(1.0 - v_h);
-    float c2_1 = c_10 * c_10;
-    return f0_ + ((metal::float3(f90_, f90_, f90_) - f0_) * ((c2_1 * c2_1) * c_10));
+    float c_11 = metal::saturate(1.0 - v_h);
+    float c2_1 = c_11 * c_11;
+    return f0_ + ((metal::float3(f90_, f90_, f90_) - f0_) * ((c2_1 * c2_1) * c_11));
 }
 
 metal::float3 specular_fresnel(
@@ -603,27 +639,27 @@ bool has_specular(
     metal::float3 f0_d_1,
     float f90_d_1
 ) {
-    bool local_8 = {};
-    bool local_9 = {};
+    bool local_12 = {};
+    bool local_13 = {};
     if (!((metallic_1 > 0.0))) {
-        local_8 = f90_d_1 > 0.0;
+        local_12 = f90_d_1 > 0.0;
     } else {
-        local_8 = true;
+        local_12 = true;
     }
-    bool _e11 = local_8;
+    bool _e11 = local_12;
     if (!(_e11)) {
-        local_9 = metal::max(metal::max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0.0;
+        local_13 = metal::max(metal::max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0.0;
     } else {
-        local_9 = true;
+        local_13 = true;
     }
-    bool _e23 = local_9;
+    bool _e23 = local_13;
     return _e23;
 }
 
 float channel_mean(
-    metal::float3 c_4
+    metal::float3 c_5
 ) {
-    return ((c_4.x + c_4.y) + c_4.z) * 0.33333334;
+    return ((c_5.x + c_5.y) + c_5.z) * 0.33333334;
 }
 
 metal::float4 receiver_lobe(
@@ -634,16 +670,16 @@ metal::float4 receiver_lobe(
     float alpha_3,
     float n_v_1
 ) {
-    bool local_10 = {};
+    bool local_14 = {};
     metal::float3 _e10 = fresnel_schlick(f0_d_2, f90_d_2, n_v_1);
     float _e16 = channel_mean(((metal::float3(1.0, 1.0, 1.0) - _e10) * base_1) * (1.0 - metallic_2));
     if (!((n_v_1 <= 0.0))) {
         bool _e22 = has_specular(metallic_2, f0_d_2, f90_d_2);
-        local_10 = !(_e22);
+        local_14 = !(_e22);
     } else {
-        local_10 = true;
+        local_14 = true;
     }
-    bool _e25 = local_10;
+    bool _e25 = local_14;
     if (_e25) {
         return metal::float4(_e16, 0.0, alpha_3, n_v_1);
     }
@@ -688,10 +724,10 @@ metal::float4 range_lobe(
 }
 
 metal::float3 mirror_dir(
-    metal::float3 n_2,
+    metal::float3 n_3,
     metal::float3 v
 ) {
-    return (n_2 * (2.0 * metal::dot(n_2, v))) - v;
+    return (n_3 * (2.0 * metal::dot(n_3, v))) - v;
 }
 
 float bevy_alpha(
@@ -708,33 +744,33 @@ float bevy_f0_(
 }
 
 float bevy_dfg(
-    float r_3,
+    float r_4,
     float n_v_2
 ) {
-    float rx = 1.0 - r_3;
-    float a004_ = (metal::min(rx * rx, metal::exp2(-9.28 * n_v_2)) * rx) + (0.0425 - (0.0275 * r_3));
-    float x_15 = metal::max((1.04 - (0.572 * r_3)) - (1.04 * a004_), 0.00005);
-    float y_1 = metal::max(((0.022 * r_3) - 0.04) + (1.04 * a004_), 0.00005);
+    float rx = 1.0 - r_4;
+    float a004_ = (metal::min(rx * rx, metal::exp2(-9.28 * n_v_2)) * rx) + (0.0425 - (0.0275 * r_4));
+    float x_15 = metal::max((1.04 - (0.572 * r_4)) - (1.04 * a004_), 0.00005);
+    float y_1 = metal::max(((0.022 * r_4) - 0.04) + (1.04 * a004_), 0.00005);
     return x_15 + y_1;
 }
 
 metal::float3 bevy_brdf(
     metal::float3 base_2,
     float metallic_3,
-    float r_4,
+    float r_5,
     float reflectance_1,
-    metal::float3 n_3,
+    metal::float3 n_4,
     metal::float3 v_1,
     metal::float3 l
 ) {
-    float n_l_1 = metal::saturate(metal::dot(n_3, l));
+    float n_l_1 = metal::saturate(metal::dot(n_4, l));
     if (n_l_1 <= 0.0) {
         return metal::float3(0.0, 0.0, 0.0);
     }
-    float _e15 = bevy_alpha(r_4);
-    float n_v_3 = metal::max(metal::dot(n_3, v_1), 0.0001);
+    float _e15 = bevy_alpha(r_5);
+    float n_v_3 = metal::max(metal::dot(n_4, v_1), 0.0001);
     metal::float3 h_3 = metal::normalize(l + v_1);
-    float n_h = metal::saturate(metal::dot(n_3, h_3));
+    float n_h = metal::saturate(metal::dot(n_4, h_3));
     float l_h = metal::saturate(metal::dot(l, h_3));
     float f90_d_3 = 0.5 + (((2.0 * _e15) * l_h) * l_h);
     metal::float3 _e35 = fresnel_schlick(metal::float3(1.0, 1.0, 1.0), f90_d_3, n_l_1);
@@ -745,7 +781,7 @@ metal::float3 bevy_brdf(
     float f90_1 = metal::saturate(((f0_1.x + f0_1.y) + f0_1.z) * 16.5);
     float _e64 = ggx_d(n_h, 1.0 - (n_h * n_h), _e15);
     float _e65 = smith_visibility(n_l_1, n_v_3, _e15);
-    float _e70 = bevy_dfg(r_4, n_v_3);
+    float _e70 = bevy_dfg(r_5, n_v_3);
     metal::float3 comp = metal::float3(1.0, 1.0, 1.0) + (f0_1 * ((1.0 / _e70) - 1.0));
     metal::float3 _e77 = fresnel_schlick(f0_1, f90_1, l_h);
     metal::float3 spec = (_e77 * comp) * (_e64 * _e65);
@@ -758,27 +794,27 @@ float cone_cos_of(
     float a_3,
     metal::float3 d
 ) {
-    bool local_11 = {};
-    bool local_12 = {};
+    bool local_15 = {};
+    bool local_16 = {};
     float vd = metal::dot(v_2, d);
     float h2_1 = d2_4 - (a_3 * a_3);
     if (!((h2_1 <= 0.0))) {
         if (vd >= 0.0) {
-            local_12 = (vd * vd) >= h2_1;
+            local_16 = (vd * vd) >= h2_1;
         } else {
-            local_12 = false;
+            local_16 = false;
         }
-        bool _e19 = local_12;
-        local_11 = _e19;
+        bool _e19 = local_16;
+        local_15 = _e19;
     } else {
-        local_11 = true;
+        local_15 = true;
     }
-    bool _e21 = local_11;
+    bool _e21 = local_15;
     if (_e21) {
         return 1.0;
     }
-    metal::float3 c_11 = metal::cross(v_2, d);
-    return metal::min(((vd * metal::sqrt(h2_1)) + (metal::sqrt(metal::dot(c_11, c_11)) * a_3)) / d2_4, 1.0);
+    metal::float3 c_12 = metal::cross(v_2, d);
+    return metal::min(((vd * metal::sqrt(h2_1)) + (metal::sqrt(metal::dot(c_12, c_12)) * a_3)) / d2_4, 1.0);
 }
 
 float cone_cos_toward(
@@ -787,8 +823,8 @@ float cone_cos_toward(
     metal::float3 p,
     metal::float3 d_1
 ) {
-    metal::float3 v_7 = center - p;
-    float _e6 = cone_cos_of(v_7, metal::dot(v_7, v_7), radius, d_1);
+    metal::float3 v_8 = center - p;
+    float _e6 = cone_cos_of(v_8, metal::dot(v_8, v_8), radius, d_1);
     return _e6;
 }
 
@@ -796,8 +832,8 @@ float range_scale_at(
     metal::float4 rl,
     float cos_t
 ) {
-    float t_2 = ((0.5 + (0.5 * cos_t)) * (rl.z - 1.0)) + 1.0;
-    return metal::clamp(rl.x + ((rl.y * rl.z) / (t_2 * t_2)), 1.0, rl.w * rl.w);
+    float t_5 = ((0.5 + (0.5 * cos_t)) * (rl.z - 1.0)) + 1.0;
+    return metal::clamp(rl.x + ((rl.y * rl.z) / (t_5 * t_5)), 1.0, rl.w * rl.w);
 }
 
 float range_scale_toward(
@@ -805,12 +841,12 @@ float range_scale_toward(
     metal::float3 center_1,
     float radius_1,
     metal::float3 p_1,
-    metal::float3 r_5
+    metal::float3 r_6
 ) {
     if (rl_1.w <= 1.0) {
         return 1.0;
     }
-    float _e9 = cone_cos_toward(center_1, radius_1, p_1, r_5);
+    float _e9 = cone_cos_toward(center_1, radius_1, p_1, r_6);
     float _e10 = range_scale_at(rl_1, _e9);
     return _e10;
 }
@@ -839,16 +875,16 @@ metal::float3 ray_inverse3_(
 float ray_aabb(
     metal::float3 o,
     metal::float3 inv_d,
-    metal::float3 bmin,
-    metal::float3 bmax,
+    metal::float3 bmin_1,
+    metal::float3 bmax_1,
     float t_max
 ) {
-    metal::float3 t0_ = (bmin - o) * inv_d;
-    metal::float3 t1_ = (bmax - o) * inv_d;
-    metal::float3 lo = metal::min(t0_, t1_);
-    metal::float3 hi = metal::max(t0_, t1_);
-    float t_in = metal::max(metal::max(lo.x, lo.y), metal::max(lo.z, 0.0));
-    float t_out = metal::min(metal::min(hi.x, hi.y), metal::min(hi.z, t_max));
+    metal::float3 t0_ = (bmin_1 - o) * inv_d;
+    metal::float3 t1_ = (bmax_1 - o) * inv_d;
+    metal::float3 lo_3 = metal::min(t0_, t1_);
+    metal::float3 hi_3 = metal::max(t0_, t1_);
+    float t_in = metal::max(metal::max(lo_3.x, lo_3.y), metal::max(lo_3.z, 0.0));
+    float t_out = metal::min(metal::min(hi_3.x, hi_3.y), metal::min(hi_3.z, t_max));
     if (t_in <= t_out) {
         return t_in;
     }
@@ -857,75 +893,75 @@ float ray_aabb(
 
 metal::float3 triangle_normal(
     metal::float3 a_4,
-    metal::float3 b_4,
-    metal::float3 c_5
+    metal::float3 b_3,
+    metal::float3 c_6
 ) {
-    bool local_13 = {};
-    metal::float3 n_13 = metal::cross(b_4 - a_4, c_5 - a_4);
-    float l2_ = metal::dot(n_13, n_13);
+    bool local_17 = {};
+    metal::float3 n_14 = metal::cross(b_3 - a_4, c_6 - a_4);
+    float l2_ = metal::dot(n_14, n_14);
     if (!(!((l2_ > 0.0)))) {
-        local_13 = !((l2_ < 300000000000000000000000000000000000000.0));
+        local_17 = !((l2_ < 300000000000000000000000000000000000000.0));
     } else {
-        local_13 = true;
+        local_17 = true;
     }
-    bool _e17 = local_13;
+    bool _e17 = local_17;
     if (_e17) {
         return metal::float3(0.0, 0.0, 0.0);
     }
-    return n_13 / metal::float3(metal::sqrt(l2_));
+    return n_14 / metal::float3(metal::sqrt(l2_));
 }
 
 float ray_triangle(
     metal::float3 o_1,
     metal::float3 d_3,
     metal::float3 a_5,
-    metal::float3 b_5,
-    metal::float3 c_6,
+    metal::float3 b_4,
+    metal::float3 c_7,
     float t_min,
     float t_max_1
 ) {
-    bool local_14 = {};
-    bool local_15 = {};
-    bool local_16 = {};
-    metal::float3 e1_ = b_5 - a_5;
-    metal::float3 e2_ = c_6 - a_5;
-    metal::float3 p_5 = metal::cross(d_3, e2_);
-    float det = metal::dot(e1_, p_5);
+    bool local_18 = {};
+    bool local_19 = {};
+    bool local_20 = {};
+    metal::float3 e1_ = b_4 - a_5;
+    metal::float3 e2_ = c_7 - a_5;
+    metal::float3 p_7 = metal::cross(d_3, e2_);
+    float det = metal::dot(e1_, p_7);
     if (metal::abs(det) <= 0.0) {
         return -1.0;
     }
     float inv = 1.0 / det;
-    metal::float3 s_6 = o_1 - a_5;
-    float u_4 = metal::dot(s_6, p_5) * inv;
+    metal::float3 s_12 = o_1 - a_5;
+    float u_4 = metal::dot(s_12, p_7) * inv;
     if (!((u_4 < 0.0))) {
-        local_14 = u_4 > 1.0;
+        local_18 = u_4 > 1.0;
     } else {
-        local_14 = true;
+        local_18 = true;
     }
-    bool _e28 = local_14;
+    bool _e28 = local_18;
     if (_e28) {
         return -1.0;
     }
-    metal::float3 q_5 = metal::cross(s_6, e1_);
-    float v_8 = metal::dot(d_3, q_5) * inv;
-    if (!((v_8 < 0.0))) {
-        local_15 = (u_4 + v_8) > 1.0;
+    metal::float3 q_6 = metal::cross(s_12, e1_);
+    float v_9 = metal::dot(d_3, q_6) * inv;
+    if (!((v_9 < 0.0))) {
+        local_19 = (u_4 + v_9) > 1.0;
     } else {
-        local_15 = true;
+        local_19 = true;
     }
-    bool _e42 = local_15;
+    bool _e42 = local_19;
     if (_e42) {
         return -1.0;
     }
-    float t_3 = metal::dot(e2_, q_5) * inv;
-    if (t_3 > t_min) {
-        local_16 = t_3 < t_max_1;
+    float t_6 = metal::dot(e2_, q_6) * inv;
+    if (t_6 > t_min) {
+        local_20 = t_6 < t_max_1;
     } else {
-        local_16 = false;
+        local_20 = false;
     }
-    bool _e51 = local_16;
+    bool _e51 = local_20;
     if (_e51) {
-        return t_3;
+        return t_6;
     }
     return -1.0;
 }
@@ -949,19 +985,19 @@ metal::float3 reproject(
 }
 
 bool history_matches(
-    metal::float3 n_4,
+    metal::float3 n_5,
     metal::float3 nh,
     metal::float3 p_3,
     float oh,
     float d_4
 ) {
-    bool local_17 = {};
+    bool local_21 = {};
     if (metal::abs(metal::dot(nh, p_3) - oh) <= (TEMPORAL_DEPTH_TOLERANCE * d_4)) {
-        local_17 = metal::dot(n_4, nh) >= TEMPORAL_NORMAL_COS;
+        local_21 = metal::dot(n_5, nh) >= TEMPORAL_NORMAL_COS;
     } else {
-        local_17 = false;
+        local_21 = false;
     }
-    bool _e17 = local_17;
+    bool _e17 = local_21;
     return _e17;
 }
 
@@ -1023,12 +1059,12 @@ GeoHit trace(
         if (metal::all(loop_bound == uint2(0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         uint _e21 = node_2;
-        GpuGeoNode n_14 = geo_nodes[_e21];
+        GpuGeoNode n_15 = geo_nodes[_e21];
         float _e27 = hit.t;
-        float _e28 = ray_aabb(o_2, _e14, n_14.bmin, n_14.bmax, _e27);
+        float _e28 = ray_aabb(o_2, _e14, n_15.bmin, n_15.bmax, _e27);
         if (_e28 >= 0.0) {
-            if (n_14.count > 0u) {
-                i = n_14.first;
+            if (n_15.count > 0u) {
+                i = n_15.first;
                 uint2 loop_bound_1 = uint2(4294967295u);
                 bool loop_init = true;
                 while(true) {
@@ -1040,15 +1076,15 @@ GeoHit trace(
                     }
                     loop_init = false;
                     uint _e36 = i;
-                    if (_e36 < (n_14.first + n_14.count)) {
+                    if (_e36 < (n_15.first + n_15.count)) {
                     } else {
                         break;
                     }
                     {
                         uint _e42 = i;
-                        GpuTriangle t_4 = geo_tris[_e42];
+                        GpuTriangle t_7 = geo_tris[_e42];
                         float _e49 = hit.t;
-                        float _e50 = ray_triangle(o_2, d_5, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e49);
+                        float _e50 = ray_triangle(o_2, d_5, t_7.v0_, t_7.v1_, t_7.v2_, t_min_1, _e49);
                         if (_e50 > 0.0) {
                             hit.t = _e50;
                             uint _e55 = i;
@@ -1064,11 +1100,11 @@ GeoHit trace(
                 uint _e60 = sp;
                 if (_e60 < 64u) {
                     uint _e63 = sp;
-                    stack.inner[_e63] = n_14.first + 1u;
+                    stack.inner[_e63] = n_15.first + 1u;
                     uint _e68 = sp;
                     sp = _e68 + 1u;
                 }
-                node_2 = n_14.first;
+                node_2 = n_15.first;
                 continue;
             }
         }
@@ -1088,12 +1124,12 @@ GeoHit trace(
 
 bool occluded(
     metal::float3 a_6,
-    metal::float3 b_6,
+    metal::float3 b_5,
     device type_7 const& geo_nodes,
     device type_8 const& geo_tris,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 dv = b_6 - a_6;
+    metal::float3 dv = b_5 - a_6;
     float len_1 = metal::length(dv);
     if (len_1 <= 0.0) {
         return false;
@@ -1137,10 +1173,10 @@ float bsh_inner_scale(
     float a_7,
     metal::float3 v_3,
     float d2_5,
-    metal::float3 r_6,
+    metal::float3 r_7,
     metal::float4 rl_2
 ) {
-    float _e5 = cone_cos_of(v_3, d2_5, a_7, r_6);
+    float _e5 = cone_cos_of(v_3, d2_5, a_7, r_7);
     float _e8 = range_scale_at(rl_2, _e5 + 0.000002);
     return _e8;
 }
@@ -1148,86 +1184,151 @@ float bsh_inner_scale(
 bool bsh_reaches(
     BshNode node_3,
     metal::float3 x_4,
-    metal::float3 r_7,
+    metal::float3 r_8,
     metal::float4 rl_3
 ) {
-    bool local_18 = {};
-    bool local_19 = {};
+    bool local_22 = {};
+    bool local_23 = {};
     bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_4);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
         bool _e20 = sphere_contains_point(node_3.center, node_3.radius * (rl_3.w * 1.0001), x_4);
-        local_18 = !(_e20);
+        local_22 = !(_e20);
     } else {
-        local_18 = true;
+        local_22 = true;
     }
-    bool _e23 = local_18;
+    bool _e23 = local_22;
     if (_e23) {
         return false;
     }
     float _e25 = bsh_range_bound(node_3);
-    metal::float3 v_9 = x_4 - node_3.center;
-    float d2_7 = metal::dot(v_9, v_9);
+    metal::float3 v_10 = x_4 - node_3.center;
+    float d2_7 = metal::dot(v_10, v_10);
     float reach_max = node_3.extent + ((rl_3.w * 1.001) * _e25);
     if (d2_7 > (reach_max * reach_max)) {
         return false;
     }
     if (node_3.child == BSH_NONE) {
-        float _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_4, r_7);
+        float _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_4, r_8);
         float _e46 = bsh_scaled_radius(node_3, metal::sqrt(_e43));
         bool _e47 = sphere_contains_point(node_3.center, _e46, x_4);
         return _e47;
     }
-    float _e50 = bsh_inner_scale(node_3.extent, -(v_9), d2_7, r_7, rl_3);
+    float _e50 = bsh_inner_scale(node_3.extent, -(v_10), d2_7, r_8, rl_3);
     float s_c = _e50 * 1.001;
     float reach = node_3.extent + (metal::sqrt(s_c) * _e25);
     if (d2_7 <= ((node_3.radius * node_3.radius) * s_c)) {
-        local_19 = d2_7 <= (reach * reach);
+        local_23 = d2_7 <= (reach * reach);
     } else {
-        local_19 = false;
+        local_23 = false;
     }
-    bool _e67 = local_19;
+    bool _e67 = local_23;
     return _e67;
 }
 
-uint bsh_next_leaf_lobe(
+bool bsh_reaches_box(
+    BshNode node_4,
+    metal::float3 lo,
+    metal::float3 hi,
+    float w_6
+) {
+    bool _e13 = sphere_overlaps_aabb(node_4.center, node_4.radius * (metal::max(1.0, w_6 * 1.0001) * 1.0001), lo, hi);
+    return _e13;
+}
+
+uint bsh_subtree(
     BshNodes nodes_3,
-    uint start,
-    metal::float3 x_5,
-    metal::float3 r_8,
-    metal::float4 rl_4,
+    uint s_1,
+    uint depth,
     device type_13 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint i_2 = {};
-    i_2 = start;
+    uint level = 0u;
+    bool local_24 = {};
+    uint _e3 = bsh_first(nodes_3, bsh_nodes, _buffer_sizes);
+    i_2 = _e3;
     uint2 loop_bound_2 = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound_2 == uint2(0u))) { break; }
         loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
-        uint _e6 = i_2;
-        if (_e6 != BSH_NONE) {
+        uint _e7 = level;
+        if (_e7 < depth) {
+            uint _e11 = i_2;
+            local_24 = _e11 != BSH_NONE;
+        } else {
+            local_24 = false;
+        }
+        bool _e15 = local_24;
+        if (_e15) {
         } else {
             break;
         }
         {
-            uint _e9 = i_2;
-            BshNode _e10 = bsh_node(nodes_3, _e9, bsh_nodes, _buffer_sizes);
-            bool _e11 = bsh_reaches(_e10, x_5, r_8, rl_4);
+            uint _e16 = i_2;
+            BshNode _e17 = bsh_node(nodes_3, _e16, bsh_nodes, _buffer_sizes);
+            uint _e18 = level;
+            uint below = depth - _e18;
+            if (_e17.child == BSH_NONE) {
+                if ((s_1 << (32u - below)) != 0u) {
+                    return BSH_NONE;
+                }
+                uint _e29 = i_2;
+                return _e29;
+            }
+            if (((s_1 >> (below - 1u)) & 1u) == 0u) {
+                i_2 = _e17.child;
+            } else {
+                BshNode _e39 = bsh_node(nodes_3, _e17.child, bsh_nodes, _buffer_sizes);
+                i_2 = _e39.next;
+            }
+            uint _e41 = level;
+            level = _e41 + 1u;
+        }
+    }
+    uint _e44 = i_2;
+    return _e44;
+}
+
+uint bsh_next_leaf_box(
+    BshNodes nodes_4,
+    uint start_1,
+    uint end,
+    metal::float3 lo_1,
+    metal::float3 hi_1,
+    float w_7,
+    device type_13 const& bsh_nodes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint i_3 = {};
+    i_3 = start_1;
+    uint2 loop_bound_3 = uint2(4294967295u);
+    while(true) {
+        if (metal::all(loop_bound_3 == uint2(0u))) { break; }
+        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+        uint _e7 = i_3;
+        if (_e7 != end) {
+        } else {
+            break;
+        }
+        {
+            uint _e9 = i_3;
+            BshNode _e10 = bsh_node(nodes_4, _e9, bsh_nodes, _buffer_sizes);
+            bool _e11 = bsh_reaches_box(_e10, lo_1, hi_1, w_7);
             if (_e11) {
                 if (_e10.child == BSH_NONE) {
-                    uint _e15 = i_2;
+                    uint _e15 = i_3;
                     return _e15;
                 }
-                i_2 = _e10.child;
+                i_3 = _e10.child;
             } else {
-                i_2 = _e10.next;
+                i_3 = _e10.next;
             }
         }
     }
-    return BSH_NONE;
+    return end;
 }
 
 float next_threshold(
@@ -1245,8 +1346,8 @@ float next_threshold(
 
 Connection connect_record(
     GpuLight l_3,
-    metal::float3 x_6,
-    metal::float3 n_5,
+    metal::float3 x_5,
+    metal::float3 n_6,
     metal::float3 ng_1,
     float r2_2,
     float rt2_2,
@@ -1259,51 +1360,51 @@ Connection connect_record(
     device type_8 const& geo_tris,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Connection c_7 = {};
-    bool local_20 = {};
-    bool local_21 = {};
-    c_7.e = metal::float3(0.0);
+    Connection c_8 = {};
+    bool local_25 = {};
+    bool local_26 = {};
+    c_8.e = metal::float3(0.0);
     metal::float3 _e16 = light_point(l_3, u1_3, u2_3);
-    c_7.y = _e16;
-    metal::float3 _e19 = c_7.y;
-    float _e20 = connection_cosine(x_6, _e19, n_5, ng_1, r2_2);
-    c_7.cos_x = _e20;
-    float _e22 = c_7.cos_x;
+    c_8.y = _e16;
+    metal::float3 _e19 = c_8.y;
+    float _e20 = connection_cosine(x_5, _e19, n_6, ng_1, r2_2);
+    c_8.cos_x = _e20;
+    float _e22 = c_8.cos_x;
     if (!((_e22 <= 0.0))) {
         if (trace_1) {
-            metal::float3 _e33 = c_7.y;
-            bool _e34 = occluded(x_6 + (ng_1 * eps), _e33, geo_nodes, geo_tris, _buffer_sizes);
-            local_21 = _e34;
+            metal::float3 _e33 = c_8.y;
+            bool _e34 = occluded(x_5 + (ng_1 * eps), _e33, geo_nodes, geo_tris, _buffer_sizes);
+            local_26 = _e34;
         } else {
-            local_21 = false;
+            local_26 = false;
         }
-        bool _e36 = local_21;
-        local_20 = _e36;
+        bool _e36 = local_26;
+        local_25 = _e36;
     } else {
-        local_20 = true;
+        local_25 = true;
     }
-    bool _e38 = local_20;
+    bool _e38 = local_25;
     if (_e38) {
-        Connection _e39 = c_7;
+        Connection _e39 = c_8;
         return _e39;
     }
-    metal::float3 _e41 = c_7.y;
-    metal::float3 v_10 = x_6 - _e41;
-    float d2_8 = metal::dot(v_10, v_10);
-    metal::float3 _e48 = light_intensity(l_3, v_10 / metal::float3(metal::sqrt(d2_8)));
-    float _e50 = c_7.cos_x;
+    metal::float3 _e41 = c_8.y;
+    metal::float3 v_11 = x_5 - _e41;
+    float d2_8 = metal::dot(v_11, v_11);
+    metal::float3 _e48 = light_intensity(l_3, v_11 / metal::float3(metal::sqrt(d2_8)));
+    float _e50 = c_8.cos_x;
     float _e51 = connection_factor(_e50, d2_8, rt2_2, w_res);
-    c_7.e = _e48 * _e51;
-    Connection _e53 = c_7;
+    c_8.e = _e48 * _e51;
+    Connection _e53 = c_8;
     return _e53;
 }
 
 Connection connect_traced(
     uint li,
-    metal::float3 x_7,
-    metal::float3 n_6,
+    metal::float3 x_6,
+    metal::float3 n_7,
     metal::float3 ng_2,
-    float s,
+    float s_2,
     float w_res_1,
     float u1_4,
     float u2_4,
@@ -1319,20 +1420,20 @@ Connection connect_traced(
     GpuLight _e12 = lights[li];
     float _e15 = r2_3[li];
     float _e19 = rt2_3[li];
-    Connection _e21 = connect_record(_e12, x_7, n_6, ng_2, s * _e15, s * _e19, w_res_1, u1_4, u2_4, eps_1, trace_2, geo_nodes, geo_tris, _buffer_sizes);
+    Connection _e21 = connect_record(_e12, x_6, n_7, ng_2, s_2 * _e15, s_2 * _e19, w_res_1, u1_4, u2_4, eps_1, trace_2, geo_nodes, geo_tris, _buffer_sizes);
     return _e21;
 }
 
 float light_range_scale(
     uint li_1,
-    metal::float3 x_8,
+    metal::float3 x_7,
     metal::float3 r_9,
-    metal::float4 rl_5,
+    metal::float4 rl_4,
     device type_14 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuLightCone c_12 = light_cones[li_1];
-    float _e9 = range_scale_toward(rl_5, c_12.center, c_12.radius, x_8, r_9);
+    GpuLightCone c_13 = light_cones[li_1];
+    float _e9 = range_scale_toward(rl_4, c_13.center, c_13.radius, x_7, r_9);
     return _e9;
 }
 
@@ -1340,36 +1441,330 @@ metal::float4 surface_at(
     metal::int2 texel,
     metal::texture2d<float, metal::access::sample> position_tex
 ) {
-    metal::float4 p_6 = position_tex.read(metal::uint2(texel), 0);
-    return (p_6.w > 0.0) ? metal::float4(p_6.xyz, 1.0) : metal::float4(0.0);
+    metal::float4 p_8 = position_tex.read(metal::uint2(texel), 0);
+    return (p_8.w > 0.0) ? metal::float4(p_8.xyz, 1.0) : metal::float4(0.0);
+}
+
+WorkgroupBox workgroup_bounds(
+    uint li_2,
+    metal::float3 lo_2,
+    metal::float3 hi_2,
+    threadgroup type_20& wg_lo,
+    threadgroup type_20& wg_hi,
+    threadgroup WorkgroupBox& wg_box
+) {
+    uint stride = 32u;
+    wg_lo.inner[li_2] = lo_2;
+    wg_hi.inner[li_2] = hi_2;
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    uint2 loop_bound_4 = uint2(4294967295u);
+    bool loop_init_1 = true;
+    while(true) {
+        if (metal::all(loop_bound_4 == uint2(0u))) { break; }
+        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+        if (!loop_init_1) {
+            uint _e36 = stride;
+            stride = naga_div(_e36, 2u);
+        }
+        loop_init_1 = false;
+        uint _e9 = stride;
+        if (_e9 > 0u) {
+        } else {
+            break;
+        }
+        {
+            uint _e12 = stride;
+            if (li_2 < _e12) {
+                metal::float3 _e18 = wg_lo.inner[li_2];
+                uint _e20 = stride;
+                metal::float3 _e23 = wg_lo.inner[li_2 + _e20];
+                wg_lo.inner[li_2] = metal::min(_e18, _e23);
+                metal::float3 _e29 = wg_hi.inner[li_2];
+                uint _e31 = stride;
+                metal::float3 _e34 = wg_hi.inner[li_2 + _e31];
+                wg_hi.inner[li_2] = metal::max(_e29, _e34);
+            }
+            metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+        }
+    }
+    if (li_2 == 0u) {
+        metal::float3 _e44 = wg_lo.inner[0];
+        metal::float3 _e47 = wg_hi.inner[0];
+        wg_box = WorkgroupBox {_e44, _e47};
+    }
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    WorkgroupBox unnamed = wg_box;
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    return unnamed;
+}
+
+WorkgroupBox workgroup_box(
+    uint li_3,
+    metal::float3 p_4,
+    bool has,
+    threadgroup type_20& wg_lo,
+    threadgroup type_20& wg_hi,
+    threadgroup WorkgroupBox& wg_box
+) {
+    WorkgroupBox _e9 = workgroup_bounds(li_3, has ? p_4 : metal::float3(340282350000000000000000000000000000000.0), has ? p_4 : metal::float3(-340282350000000000000000000000000000000.0), wg_lo, wg_hi, wg_box);
+    return _e9;
+}
+
+bool box_is_empty(
+    WorkgroupBox b_6
+) {
+    return b_6.lo.x > b_6.hi.x;
+}
+
+uint tile_subtree(
+    uint s_3,
+    TileWalk t_1,
+    bool list,
+    uint at,
+    uint start_2,
+    uint to,
+    device type_13 const& bsh_nodes,
+    threadgroup type_21& tile_list,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint p_5 = {};
+    uint b_7 = {};
+    bool local_27 = {};
+    bool local_28 = {};
+    bool local_29 = {};
+    uint _e8 = bsh_subtree(BSH, s_3, BSH_TILE_DEPTH, bsh_nodes, _buffer_sizes);
+    if (_e8 == BSH_NONE) {
+        return 0u;
+    }
+    uint end_1 = bsh_nodes[_e8].next;
+    p_5 = at;
+    uint _e21 = bsh_next_leaf_box(BSH, _e8, end_1, t_1.lo, t_1.hi, t_1.w, bsh_nodes, _buffer_sizes);
+    b_7 = _e21;
+    uint2 loop_bound_5 = uint2(4294967295u);
+    bool loop_init_2 = true;
+    while(true) {
+        if (metal::all(loop_bound_5 == uint2(0u))) { break; }
+        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+        if (!loop_init_2) {
+            uint _e53 = b_7;
+            uint _e56 = bsh_nodes[_e53].next;
+            uint _e60 = bsh_next_leaf_box(BSH, _e56, end_1, t_1.lo, t_1.hi, t_1.w, bsh_nodes, _buffer_sizes);
+            b_7 = _e60;
+        }
+        loop_init_2 = false;
+        uint _e23 = b_7;
+        if (_e23 != end_1) {
+            if (!(!(list))) {
+                uint _e31 = p_5;
+                local_28 = _e31 < to;
+            } else {
+                local_28 = true;
+            }
+            bool _e34 = local_28;
+            local_27 = _e34;
+        } else {
+            local_27 = false;
+        }
+        bool _e36 = local_27;
+        if (_e36) {
+        } else {
+            break;
+        }
+        {
+            if (list) {
+                uint _e39 = p_5;
+                local_29 = _e39 >= start_2;
+            } else {
+                local_29 = false;
+            }
+            bool _e42 = local_29;
+            if (_e42) {
+                uint _e44 = p_5;
+                uint _e47 = b_7;
+                tile_list.inner[_e44 - start_2] = _e47;
+            }
+            uint _e48 = p_5;
+            p_5 = _e48 + 1u;
+        }
+    }
+    uint _e61 = p_5;
+    return _e61 - at;
+}
+
+TileWalk tile_walk_begin(
+    uint li_4,
+    metal::float3 x_8,
+    float w_8,
+    bool has_1,
+    device type_13 const& bsh_nodes,
+    threadgroup type_20& wg_lo,
+    threadgroup type_20& wg_hi,
+    threadgroup WorkgroupBox& wg_box,
+    threadgroup type_21& tile_list,
+    threadgroup type_22& subtree_at,
+    threadgroup metal::atomic_uint& tile_scale,
+    threadgroup uint& tile_total,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    TileWalk t_2 = {};
+    uint s_4 = {};
+    uint sum_1 = 0u;
+    uint s_5 = 0u;
+    uint _e8 = metal::atomic_fetch_max_explicit(&tile_scale, has_1 ? as_type<uint>(w_8) : 0u, metal::memory_order_relaxed);
+    WorkgroupBox _e9 = workgroup_box(li_4, x_8, has_1, wg_lo, wg_hi, wg_box);
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    uint unnamed_1 = metal::atomic_load_explicit(&tile_scale, metal::memory_order_relaxed);
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    t_2 = TileWalk {_e9.lo, _e9.hi, as_type<float>(unnamed_1), 0u};
+    bool _e18 = box_is_empty(_e9);
+    if (_e18) {
+        TileWalk _e19 = t_2;
+        return _e19;
+    }
+    s_4 = li_4;
+    uint2 loop_bound_6 = uint2(4294967295u);
+    bool loop_init_3 = true;
+    while(true) {
+        if (metal::all(loop_bound_6 == uint2(0u))) { break; }
+        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+        if (!loop_init_3) {
+            uint _e34 = s_4;
+            s_4 = _e34 + TILE_THREADS;
+        }
+        loop_init_3 = false;
+        uint _e21 = s_4;
+        if (_e21 < BSH_TILE_SUBTREES) {
+        } else {
+            break;
+        }
+        {
+            uint _e25 = s_4;
+            uint _e27 = s_4;
+            TileWalk _e28 = t_2;
+            uint _e33 = tile_subtree(_e27, _e28, false, 0u, 0u, 0u, bsh_nodes, tile_list, _buffer_sizes);
+            subtree_at.inner[_e25] = _e33;
+        }
+    }
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    if (li_4 == 0u) {
+        uint2 loop_bound_7 = uint2(4294967295u);
+        bool loop_init_4 = true;
+        while(true) {
+            if (metal::all(loop_bound_7 == uint2(0u))) { break; }
+            loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+            if (!loop_init_4) {
+                uint _e57 = s_5;
+                s_5 = _e57 + 1u;
+            }
+            loop_init_4 = false;
+            uint _e43 = s_5;
+            if (_e43 < BSH_TILE_SUBTREES) {
+            } else {
+                break;
+            }
+            {
+                uint _e47 = s_5;
+                uint c_14 = subtree_at.inner[_e47];
+                uint _e51 = s_5;
+                uint _e53 = sum_1;
+                subtree_at.inner[_e51] = _e53;
+                uint _e54 = sum_1;
+                sum_1 = _e54 + c_14;
+            }
+        }
+        uint _e60 = sum_1;
+        tile_total = _e60;
+    }
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    uint unnamed_2 = tile_total;
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    t_2.total = unnamed_2;
+    TileWalk _e64 = t_2;
+    return _e64;
+}
+
+uint tile_walk_fill(
+    uint li_5,
+    TileWalk t_3,
+    uint start_3,
+    device type_13 const& bsh_nodes,
+    threadgroup type_21& tile_list,
+    threadgroup type_22& subtree_at,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint s_6 = {};
+    uint past = {};
+    bool local_30 = {};
+    uint to_1 = metal::min(t_3.total, start_3 + TILE_LIST);
+    s_6 = li_5;
+    uint2 loop_bound_8 = uint2(4294967295u);
+    bool loop_init_5 = true;
+    while(true) {
+        if (metal::all(loop_bound_8 == uint2(0u))) { break; }
+        loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
+        if (!loop_init_5) {
+            uint _e38 = s_6;
+            s_6 = _e38 + TILE_THREADS;
+        }
+        loop_init_5 = false;
+        uint _e8 = s_6;
+        if (_e8 < BSH_TILE_SUBTREES) {
+        } else {
+            break;
+        }
+        {
+            uint _e12 = s_6;
+            uint at_1 = subtree_at.inner[_e12];
+            past = t_3.total;
+            uint _e17 = s_6;
+            if ((_e17 + 1u) < BSH_TILE_SUBTREES) {
+                uint _e23 = s_6;
+                uint _e27 = subtree_at.inner[_e23 + 1u];
+                past = _e27;
+            }
+            if (at_1 < to_1) {
+                uint _e31 = past;
+                local_30 = _e31 > start_3;
+            } else {
+                local_30 = false;
+            }
+            bool _e34 = local_30;
+            if (_e34) {
+                uint _e35 = s_6;
+                uint _e37 = tile_subtree(_e35, t_3, true, at_1, start_3, to_1, bsh_nodes, tile_list, _buffer_sizes);
+            }
+        }
+    }
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    return to_1 - start_3;
 }
 
 Shaded shade_connection(
-    Connection c_8,
+    Connection c_9,
     metal::float3 x_9,
-    metal::float3 n_7,
+    metal::float3 n_8,
     Material m_1
 ) {
-    Shaded s_1 = {};
-    s_1.e = c_8.e;
-    s_1.diffuse = metal::float3(0.0);
-    s_1.specular = metal::float3(0.0);
-    if (c_8.cos_x > 0.0) {
-        metal::float3 _e25 = bevy_brdf(m_1.base, m_1.metallic, m_1.roughness, m_1.reflectance, n_7, m_1.v, metal::normalize(c_8.y - x_9));
-        s_1.diffuse = _e25 * c_8.e;
+    Shaded s_7 = {};
+    s_7.e = c_9.e;
+    s_7.diffuse = metal::float3(0.0);
+    s_7.specular = metal::float3(0.0);
+    if (c_9.cos_x > 0.0) {
+        metal::float3 _e25 = bevy_brdf(m_1.base, m_1.metallic, m_1.roughness, m_1.reflectance, n_8, m_1.v, metal::normalize(c_9.y - x_9));
+        s_7.diffuse = _e25 * c_9.e;
     }
-    Shaded _e28 = s_1;
+    Shaded _e28 = s_7;
     return _e28;
 }
 
 Shaded shade_pick_traced(
-    uint li_2,
+    uint li_6,
     metal::float3 x_10,
-    metal::float3 n_8,
+    metal::float3 n_9,
     metal::float3 r_10,
-    metal::float4 rl_6,
+    metal::float4 rl_5,
     Material m_2,
-    float w_6,
+    float w_9,
     float u1_5,
     float u2_5,
     float eps_2,
@@ -1382,9 +1777,9 @@ Shaded shade_pick_traced(
     device type_14 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e11 = light_range_scale(li_2, x_10, r_10, rl_6, light_cones, _buffer_sizes);
-    Connection _e12 = connect_traced(li_2, x_10, n_8, n_8, _e11, w_6, u1_5, u2_5, eps_2, trace_3, geo_nodes, geo_tris, lights, rt2_3, r2_3, _buffer_sizes);
-    Shaded _e13 = shade_connection(_e12, x_10, n_8, m_2);
+    float _e11 = light_range_scale(li_6, x_10, r_10, rl_5, light_cones, _buffer_sizes);
+    Connection _e12 = connect_traced(li_6, x_10, n_9, n_9, _e11, w_9, u1_5, u2_5, eps_2, trace_3, geo_nodes, geo_tris, lights, rt2_3, r2_3, _buffer_sizes);
+    Shaded _e13 = shade_connection(_e12, x_10, n_9, m_2);
     return _e13;
 }
 
@@ -1401,37 +1796,37 @@ Material material_of(
 
 Shaded add(
     Shaded a_8,
-    Shaded b_7
+    Shaded b_8
 ) {
-    return Shaded {a_8.e + b_7.e, a_8.diffuse + b_7.diffuse, a_8.specular + b_7.specular};
+    return Shaded {a_8.e + b_8.e, a_8.diffuse + b_8.diffuse, a_8.specular + b_8.specular};
 }
 
 Shaded scaled(
-    Shaded s_2,
-    metal::float3 w_7
+    Shaded s_8,
+    metal::float3 w_10
 ) {
-    return Shaded {s_2.e * w_7, s_2.diffuse * w_7, s_2.specular * w_7};
+    return Shaded {s_8.e * w_10, s_8.diffuse * w_10, s_8.specular * w_10};
 }
 
 type_17 first_holders(
-    type_21 keys_1,
-    type_22 held_1
+    type_25 keys_1,
+    type_26 held_1
 ) {
     type_17 first = {};
     uint k_4 = 0u;
-    uint j_2 = {};
-    bool local_22 = {};
-    bool local_23 = {};
-    uint2 loop_bound_3 = uint2(4294967295u);
-    bool loop_init_1 = true;
+    uint j_3 = {};
+    bool local_31 = {};
+    bool local_32 = {};
+    uint2 loop_bound_9 = uint2(4294967295u);
+    bool loop_init_6 = true;
     while(true) {
-        if (metal::all(loop_bound_3 == uint2(0u))) { break; }
-        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-        if (!loop_init_1) {
+        if (metal::all(loop_bound_9 == uint2(0u))) { break; }
+        loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
+        if (!loop_init_6) {
             uint _e45 = k_4;
             k_4 = _e45 + 1u;
         }
-        loop_init_1 = false;
+        loop_init_6 = false;
         uint _e5 = k_4;
         if (_e5 < K) {
         } else {
@@ -1442,43 +1837,43 @@ type_17 first_holders(
             uint _e11 = k_4;
             uint _e12 = k_4;
             first.inner[_e8] = held_1.inner[_e12] ? _e11 : K;
-            j_2 = 0u;
-            uint2 loop_bound_4 = uint2(4294967295u);
-            bool loop_init_2 = true;
+            j_3 = 0u;
+            uint2 loop_bound_10 = uint2(4294967295u);
+            bool loop_init_7 = true;
             while(true) {
-                if (metal::all(loop_bound_4 == uint2(0u))) { break; }
-                loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
-                if (!loop_init_2) {
-                    uint _e42 = j_2;
-                    j_2 = _e42 + 1u;
+                if (metal::all(loop_bound_10 == uint2(0u))) { break; }
+                loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
+                if (!loop_init_7) {
+                    uint _e42 = j_3;
+                    j_3 = _e42 + 1u;
                 }
-                loop_init_2 = false;
-                uint _e17 = j_2;
+                loop_init_7 = false;
+                uint _e17 = j_3;
                 uint _e18 = k_4;
                 if (_e17 < _e18) {
                     uint _e22 = k_4;
-                    local_22 = held_1.inner[_e22];
+                    local_31 = held_1.inner[_e22];
                 } else {
-                    local_22 = false;
+                    local_31 = false;
                 }
-                bool _e25 = local_22;
+                bool _e25 = local_31;
                 if (_e25) {
                 } else {
                     break;
                 }
                 {
-                    uint _e26 = j_2;
+                    uint _e26 = j_3;
                     if (held_1.inner[_e26]) {
-                        uint _e30 = j_2;
+                        uint _e30 = j_3;
                         uint _e32 = k_4;
-                        local_23 = metal::all(keys_1.inner[_e30] == keys_1.inner[_e32]);
+                        local_32 = metal::all(keys_1.inner[_e30] == keys_1.inner[_e32]);
                     } else {
-                        local_23 = false;
+                        local_32 = false;
                     }
-                    bool _e37 = local_23;
+                    bool _e37 = local_32;
                     if (_e37) {
                         uint _e38 = k_4;
-                        uint _e40 = j_2;
+                        uint _e40 = j_3;
                         first.inner[_e38] = _e40;
                         break;
                     }
@@ -1491,9 +1886,9 @@ type_17 first_holders(
 }
 
 metal::float3 output_of(
-    Shaded s_3
+    Shaded s_9
 ) {
-    return s_3.diffuse + s_3.specular;
+    return s_9.diffuse + s_9.specular;
 }
 
 float reuse_target(
@@ -1501,7 +1896,7 @@ float reuse_target(
     GpuLight l_4,
     uint cells,
     metal::float3 x_11,
-    metal::float3 n_9,
+    metal::float3 n_10,
     Material m_3,
     device type_7 const& geo_nodes,
     device type_8 const& geo_tris,
@@ -1509,8 +1904,8 @@ float reuse_target(
 ) {
     float _e9 = grid_coordinate(cells);
     float _e12 = grid_coordinate(cells << 16u);
-    Connection _e15 = connect_record(l_4, x_11, n_9, n_9, UNRANGED, UNRANGED, 1.0, _e9, _e12, 0.0, false, geo_nodes, geo_tris, _buffer_sizes);
-    Shaded _e16 = shade_connection(_e15, x_11, n_9, m_3);
+    Connection _e15 = connect_record(l_4, x_11, n_10, n_10, UNRANGED, UNRANGED, 1.0, _e9, _e12, 0.0, false, geo_nodes, geo_tris, _buffer_sizes);
+    Shaded _e16 = shade_connection(_e15, x_11, n_10, m_3);
     metal::float3 _e17 = output_of(_e16);
     float _e19 = slot_target(_e17, q_3, K);
     return _e19;
@@ -1518,20 +1913,20 @@ float reuse_target(
 
 ReuseSurface reuse_surface(
     metal::float3 x_12,
-    metal::float3 n_10,
+    metal::float3 n_11,
     Material m_4,
-    float c_9
+    float c_10
 ) {
-    return ReuseSurface {x_12, c_9, n_10, metal::pack_float_to_unorm4x8(metal::float4(m_4.base, m_4.metallic)), metal::pack_float_to_unorm2x16(metal::float2(metal::saturate(m_4.roughness), metal::saturate(m_4.reflectance))), 0u, 0u, 0u};
+    return ReuseSurface {x_12, c_10, n_11, metal::pack_float_to_unorm4x8(metal::float4(m_4.base, m_4.metallic)), metal::pack_float_to_unorm2x16(metal::float2(metal::saturate(m_4.roughness), metal::saturate(m_4.reflectance))), 0u, 0u, 0u};
 }
 
 Material reuse_material(
-    ReuseSurface s_4,
+    ReuseSurface s_10,
     metal::float3 eye
 ) {
-    metal::float4 b_8 = metal::unpack_unorm4x8_to_float(s_4.base);
-    metal::float2 r_12 = metal::unpack_unorm2x16_to_float(s_4.rough);
-    Material _e13 = material_of(b_8.xyz, b_8.w, r_12.x, r_12.y, metal::normalize(eye - s_4.x));
+    metal::float4 b_9 = metal::unpack_unorm4x8_to_float(s_10.base);
+    metal::float2 r_12 = metal::unpack_unorm2x16_to_float(s_10.rough);
+    Material _e13 = material_of(b_9.xyz, b_9.w, r_12.x, r_12.y, metal::normalize(eye - s_10.x));
     return _e13;
 }
 
@@ -1541,10 +1936,10 @@ metal::int2 naga_f2i32(metal::float2 value) {
 
 uint reuse_domains(
     metal::float3 x_13,
-    metal::float3 n_11,
+    metal::float3 n_12,
     float d_6,
     uint h_2,
-    thread type_23& doms_1,
+    thread type_27& doms_1,
     constant ViewParams& view,
     constant ReuseParams& reuse,
     device type_16 const& reuse_prev,
@@ -1552,16 +1947,16 @@ uint reuse_domains(
 ) {
     uint nd = 0u;
     uint hr = {};
-    uint j_3 = 0u;
-    metal::float2 p_4 = {};
-    bool local_24 = {};
-    bool local_25 = {};
-    bool local_26 = {};
+    uint j_4 = 0u;
+    metal::float2 p_6 = {};
+    bool local_33 = {};
+    bool local_34 = {};
+    bool local_35 = {};
     bool seen = {};
     uint k_5 = {};
-    bool local_27 = {};
-    bool local_28 = {};
-    bool local_29 = {};
+    bool local_36 = {};
+    bool local_37 = {};
+    bool local_38 = {};
     uint _e9 = reuse.has_history;
     if (_e9 != 1u) {
         return 0u;
@@ -1577,24 +1972,24 @@ uint reuse_domains(
         return 0u;
     }
     hr = h_2;
-    uint2 loop_bound_5 = uint2(4294967295u);
-    bool loop_init_3 = true;
+    uint2 loop_bound_11 = uint2(4294967295u);
+    bool loop_init_8 = true;
     while(true) {
-        if (metal::all(loop_bound_5 == uint2(0u))) { break; }
-        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
-        if (!loop_init_3) {
-            uint _e175 = j_3;
-            j_3 = _e175 + 1u;
+        if (metal::all(loop_bound_11 == uint2(0u))) { break; }
+        loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
+        if (!loop_init_8) {
+            uint _e175 = j_4;
+            j_4 = _e175 + 1u;
         }
-        loop_init_3 = false;
-        uint _e41 = j_3;
+        loop_init_8 = false;
+        uint _e41 = j_4;
         if (_e41 < DOMAINS) {
         } else {
             break;
         }
         {
-            p_4 = _e33.xy;
-            uint _e46 = j_3;
+            p_6 = _e33.xy;
+            uint _e46 = j_4;
             if (_e46 > 0u) {
                 uint _e49 = hr;
                 uint _e50 = pcg_hash(_e49);
@@ -1604,52 +1999,52 @@ uint reuse_domains(
                 uint _e53 = hr;
                 uint _e54 = pcg_hash(_e53);
                 hr = _e54;
-                metal::float2 _e55 = p_4;
+                metal::float2 _e55 = p_6;
                 float _e58 = reuse.radius;
                 uint _e59 = hr;
                 float _e60 = xi_from_bits(_e59);
                 metal::float2 _e61 = disk_offset(_e58, _e52, _e60);
-                p_4 = _e55 + _e61;
+                p_6 = _e55 + _e61;
             }
-            metal::float2 _e63 = p_4;
-            metal::int2 t_5 = naga_f2i32(metal::rint(_e63));
-            if (!((t_5.x < 0))) {
-                local_24 = t_5.y < 0;
+            metal::float2 _e63 = p_6;
+            metal::int2 t_8 = naga_f2i32(metal::rint(_e63));
+            if (!((t_8.x < 0))) {
+                local_33 = t_8.y < 0;
             } else {
-                local_24 = true;
+                local_33 = true;
             }
-            bool _e76 = local_24;
+            bool _e76 = local_33;
             if (!(_e76)) {
                 uint _e83 = view.width;
-                local_25 = t_5.x >= static_cast<int>(_e83);
+                local_34 = t_8.x >= static_cast<int>(_e83);
             } else {
-                local_25 = true;
+                local_34 = true;
             }
-            bool _e87 = local_25;
+            bool _e87 = local_34;
             if (!(_e87)) {
                 uint _e94 = view.height;
-                local_26 = t_5.y >= static_cast<int>(_e94);
+                local_35 = t_8.y >= static_cast<int>(_e94);
             } else {
-                local_26 = true;
+                local_35 = true;
             }
-            bool _e98 = local_26;
+            bool _e98 = local_35;
             if (_e98) {
                 continue;
             }
             uint _e103 = view.width;
-            uint pixel = (static_cast<uint>(t_5.y) * _e103) + static_cast<uint>(t_5.x);
+            uint pixel = (static_cast<uint>(t_8.y) * _e103) + static_cast<uint>(t_8.x);
             seen = false;
             k_5 = 0u;
-            uint2 loop_bound_6 = uint2(4294967295u);
-            bool loop_init_4 = true;
+            uint2 loop_bound_12 = uint2(4294967295u);
+            bool loop_init_9 = true;
             while(true) {
-                if (metal::all(loop_bound_6 == uint2(0u))) { break; }
-                loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-                if (!loop_init_4) {
+                if (metal::all(loop_bound_12 == uint2(0u))) { break; }
+                loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
+                if (!loop_init_9) {
                     uint _e127 = k_5;
                     k_5 = _e127 + 1u;
                 }
-                loop_init_4 = false;
+                loop_init_9 = false;
                 uint _e112 = k_5;
                 uint _e113 = nd;
                 if (_e112 < _e113) {
@@ -1661,38 +2056,38 @@ uint reuse_domains(
                     if (!(_e115)) {
                         uint _e119 = k_5;
                         uint _e122 = doms_1.inner[_e119].pixel;
-                        local_27 = _e122 == pixel;
+                        local_36 = _e122 == pixel;
                     } else {
-                        local_27 = true;
+                        local_36 = true;
                     }
-                    bool _e125 = local_27;
+                    bool _e125 = local_36;
                     seen = _e125;
                 }
             }
-            ReuseSurface s_7 = reuse_prev[pixel].surface;
+            ReuseSurface s_13 = reuse_prev[pixel].surface;
             bool _e133 = seen;
             if (!(_e133)) {
-                local_28 = !((s_7.m > 0.0));
+                local_37 = !((s_13.m > 0.0));
             } else {
-                local_28 = true;
+                local_37 = true;
             }
-            bool _e142 = local_28;
+            bool _e142 = local_37;
             if (!(_e142)) {
-                bool _e150 = history_matches(n_11, s_7.n, x_13, metal::dot(s_7.n, s_7.x), d_6);
-                local_29 = !(_e150);
+                bool _e150 = history_matches(n_12, s_13.n, x_13, metal::dot(s_13.n, s_13.x), d_6);
+                local_38 = !(_e150);
             } else {
-                local_29 = true;
+                local_38 = true;
             }
-            bool _e153 = local_29;
+            bool _e153 = local_38;
             if (_e153) {
                 continue;
             }
             uint _e154 = nd;
             metal::float3 _e160 = reuse.prev_eye;
-            Material _e161 = reuse_material(s_7, _e160);
+            Material _e161 = reuse_material(s_13, _e160);
             float _e165 = reuse.max_confidence;
-            uint _e167 = j_3;
-            doms_1.inner[_e154] = Domain {pixel, {}, s_7.x, s_7.n, _e161, metal::min(s_7.m, _e165), _e167 == 0u};
+            uint _e167 = j_4;
+            doms_1.inner[_e154] = Domain {pixel, {}, s_13.x, s_13.n, _e161, metal::min(s_13.m, _e165), _e167 == 0u};
             uint _e171 = nd;
             nd = _e171 + 1u;
         }
@@ -1709,9 +2104,9 @@ ReuseSlot gris_combine(
     uint k0_,
     uint k1_,
     metal::float3 x_14,
-    metal::float3 n_12,
+    metal::float3 n_13,
     Material m_5,
-    thread type_23& doms_2,
+    thread type_27& doms_2,
     thread uint& hs_1,
     device type_7 const& geo_nodes,
     device type_8 const& geo_tris,
@@ -1723,85 +2118,85 @@ ReuseSlot gris_combine(
     float w_sum_3 = 0.0;
     ReuseSlot out = ReuseSlot {0u, 0u, 0.0};
     float out_target = 0.0;
-    uint j_4 = {};
-    ReuseSlot s_5 = {};
-    bool local_30 = {};
+    uint j_5 = {};
+    ReuseSlot s_11 = {};
+    bool local_39 = {};
     float w_in = {};
-    bool local_31 = {};
+    bool local_40 = {};
     float own_1 = {};
     float all_1 = {};
     uint k_6 = {};
-    bool local_32 = {};
-    j_4 = k0_;
-    uint2 loop_bound_7 = uint2(4294967295u);
-    bool loop_init_5 = true;
+    bool local_41 = {};
+    j_5 = k0_;
+    uint2 loop_bound_13 = uint2(4294967295u);
+    bool loop_init_10 = true;
     while(true) {
-        if (metal::all(loop_bound_7 == uint2(0u))) { break; }
-        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
-        if (!loop_init_5) {
-            uint _e137 = j_4;
-            j_4 = _e137 + 1u;
+        if (metal::all(loop_bound_13 == uint2(0u))) { break; }
+        loop_bound_13 -= uint2(loop_bound_13.y == 0u, 1u);
+        if (!loop_init_10) {
+            uint _e137 = j_5;
+            j_5 = _e137 + 1u;
         }
-        loop_init_5 = false;
-        uint _e21 = j_4;
+        loop_init_10 = false;
+        uint _e21 = j_5;
         if (_e21 <= k1_) {
         } else {
             break;
         }
         {
-            s_5 = cur;
-            uint _e24 = j_4;
+            s_11 = cur;
+            uint _e24 = j_5;
             if (_e24 > k0_) {
-                uint _e27 = j_4;
+                uint _e27 = j_5;
                 uint _e32 = doms_2.inner[_e27 - 1u].pixel;
                 ReuseSlot _e36 = reuse_prev[_e32].slots.inner[q_4];
-                s_5 = _e36;
+                s_11 = _e36;
             }
-            float _e38 = s_5.w;
+            float _e38 = s_11.w;
             if (!(!((_e38 > 0.0)))) {
-                uint _e46 = s_5.light;
-                local_30 = _e46 >= (1 + (_buffer_sizes.size8 - 0 - 64) / 64);
+                uint _e46 = s_11.light;
+                local_39 = _e46 >= (1 + (_buffer_sizes.size8 - 0 - 64) / 64);
             } else {
-                local_30 = true;
+                local_39 = true;
             }
-            bool _e51 = local_30;
+            bool _e51 = local_39;
             if (_e51) {
                 continue;
             }
-            uint _e54 = s_5.light;
+            uint _e54 = s_11.light;
             GpuLight _e56 = lights[_e54];
-            uint _e58 = s_5.u;
-            float _e59 = reuse_target(q_4, _e56, _e58, x_14, n_12, m_5, geo_nodes, geo_tris, _buffer_sizes);
+            uint _e58 = s_11.u;
+            float _e59 = reuse_target(q_4, _e56, _e58, x_14, n_13, m_5, geo_nodes, geo_tris, _buffer_sizes);
             if (!((_e59 > 0.0))) {
                 continue;
             }
-            float _e64 = s_5.w;
+            float _e64 = s_11.w;
             w_in = _e64;
-            uint _e66 = j_4;
+            uint _e66 = j_5;
             if (_e66 == k0_) {
-                local_31 = cur_ris;
+                local_40 = cur_ris;
             } else {
-                local_31 = false;
+                local_40 = false;
             }
-            bool _e71 = local_31;
+            bool _e71 = local_40;
             if (_e71) {
-                float _e73 = s_5.w;
+                float _e73 = s_11.w;
                 w_in = _e73 / _e59;
             }
             own_1 = cur_c * _e59;
             float _e77 = own_1;
             all_1 = _e77;
             k_6 = k0_;
-            uint2 loop_bound_8 = uint2(4294967295u);
-            bool loop_init_6 = true;
+            uint2 loop_bound_14 = uint2(4294967295u);
+            bool loop_init_11 = true;
             while(true) {
-                if (metal::all(loop_bound_8 == uint2(0u))) { break; }
-                loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
-                if (!loop_init_6) {
+                if (metal::all(loop_bound_14 == uint2(0u))) { break; }
+                loop_bound_14 -= uint2(loop_bound_14.y == 0u, 1u);
+                if (!loop_init_11) {
                     uint _e115 = k_6;
                     k_6 = _e115 + 1u;
                 }
-                loop_init_6 = false;
+                loop_init_11 = false;
                 uint _e80 = k_6;
                 if (_e80 < k1_) {
                 } else {
@@ -1810,9 +2205,9 @@ ReuseSlot gris_combine(
                 {
                     uint _e82 = k_6;
                     float _e85 = doms_2.inner[_e82].c;
-                    uint _e88 = s_5.light;
+                    uint _e88 = s_11.light;
                     GpuLight _e90 = lights_prev[_e88];
-                    uint _e92 = s_5.u;
+                    uint _e92 = s_11.u;
                     uint _e93 = k_6;
                     metal::float3 _e96 = doms_2.inner[_e93].x;
                     uint _e97 = k_6;
@@ -1820,13 +2215,13 @@ ReuseSlot gris_combine(
                     uint _e101 = k_6;
                     Material _e104 = doms_2.inner[_e101].m;
                     float _e105 = reuse_target(q_4, _e90, _e92, _e96, _e100, _e104, geo_nodes, geo_tris, _buffer_sizes);
-                    float t_6 = _e85 * _e105;
+                    float t_9 = _e85 * _e105;
                     float _e107 = all_1;
-                    all_1 = _e107 + t_6;
+                    all_1 = _e107 + t_9;
                     uint _e109 = k_6;
-                    uint _e112 = j_4;
+                    uint _e112 = j_5;
                     if ((_e109 + 1u) == _e112) {
-                        own_1 = t_6;
+                        own_1 = t_9;
                     }
                 }
             }
@@ -1844,13 +2239,13 @@ ReuseSlot gris_combine(
                 uint _e130 = hs_1;
                 float _e131 = xi_from_bits(_e130);
                 bool _e132 = weighted_replace(_e120, _e129, _e131);
-                local_32 = _e132;
+                local_41 = _e132;
             } else {
-                local_32 = false;
+                local_41 = false;
             }
-            bool _e134 = local_32;
+            bool _e134 = local_41;
             if (_e134) {
-                ReuseSlot _e135 = s_5;
+                ReuseSlot _e135 = s_11;
                 out = _e135;
                 out_target = _e59;
             }
@@ -1868,6 +2263,7 @@ struct main_Input {
 };
 kernel void main_(
   metal::uint3 gid [[thread_position_in_grid]]
+, uint lid [[thread_index_in_threadgroup]]
 , device type_7 const& geo_nodes [[user(fake0)]]
 , device type_8 const& geo_tris [[user(fake0)]]
 , constant ViewParams& view [[user(fake0)]]
@@ -1885,433 +2281,527 @@ kernel void main_(
 , device type_12 const& lights_prev [[user(fake0)]]
 , device type_16 const& reuse_prev [[user(fake0)]]
 , device type_16& reuse_next [[user(fake0)]]
+, threadgroup type_20& wg_lo
+, threadgroup type_20& wg_hi
+, threadgroup WorkgroupBox& wg_box
+, threadgroup type_21& tile_list
+, threadgroup type_22& subtree_at
+, threadgroup metal::atomic_uint& tile_scale
+, threadgroup uint& tile_total
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
+    if (lid == 0u) {
+        wg_lo = {};
+        wg_hi = {};
+        wg_box = {};
+        tile_list = {};
+        subtree_at = {};
+        metal::atomic_store_explicit(&tile_scale, 0, metal::memory_order_relaxed);
+        tile_total = {};
+    }
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
     bool local = {};
+    metal::float4 s = metal::float4(0.0);
+    metal::float3 nn = metal::float3(0.0);
     bool local_1 = {};
+    bool local_2 = {};
+    bool local_3 = {};
+    metal::float3 n = metal::float3(0.0, 0.0, 1.0);
     Material m = {};
     metal::float4 lobe = metal::float4(1.0, 0.0, 1.0, 1.0);
     metal::float3 r = {};
     uint h = {};
     Shaded t = Shaded {metal::float3(0.0), metal::float3(0.0), metal::float3(0.0)};
     type_17 slot_light = {};
-    type_26 slot_u = {};
-    type_27 slot_p = {};
+    type_30 slot_u = {};
+    type_31 slot_p = {};
     type_17 slot_cells = {};
     metal::float3 total = metal::float3(0.0);
     uint count = 0u;
     uint hc = {};
-    type_27 threshold = {};
-    uint b = {};
+    type_31 threshold = {};
+    bool local_4 = {};
+    uint start = 0u;
+    uint j = {};
+    bool local_5 = {};
     uint q = {};
-    bool local_2 = {};
-    type_23 doms = {};
-    bool local_3 = {};
+    bool local_6 = {};
+    type_27 doms = {};
+    bool local_7 = {};
     uint hs = {};
     type_15 kept = {};
     type_15 fin = {};
     uint q_1 = 0u;
-    type_21 keys = {};
-    type_22 held = {};
+    type_25 keys = {};
+    type_26 held = {};
     uint k = 0u;
-    type_22 visible = {};
+    type_26 visible = {};
     uint k_1 = 0u;
     metal::float3 w = {};
-    uint j = {};
     uint j_1 = {};
+    uint j_2 = {};
     uint q_2 = 0u;
-    bool local_4 = {};
-    uint _e4 = view.width;
-    if (!((gid.x >= _e4))) {
+    bool local_8 = {};
+    uint _e5 = view.width;
+    if (gid.x < _e5) {
         uint _e12 = view.height;
-        local = gid.y >= _e12;
+        local = gid.y < _e12;
     } else {
-        local = true;
+        local = false;
     }
-    bool _e15 = local;
-    if (_e15) {
-        return;
-    }
+    bool inside = local;
     metal::int2 texel_1 = metal::int2(static_cast<int>(gid.x), static_cast<int>(gid.y));
-    metal::float4 _e21 = surface_at(texel_1, position_tex);
-    metal::float4 _e24 = normal_tex.read(metal::uint2(texel_1), 0);
-    metal::float3 nn = _e24.xyz;
-    float len2_ = metal::dot(nn, nn);
-    if (!((_e21.w <= 0.0))) {
-        local_1 = !((len2_ > 0.0));
+    if (inside) {
+        metal::float4 _e27 = surface_at(texel_1, position_tex);
+        s = _e27;
+        metal::float4 _e30 = normal_tex.read(metal::uint2(texel_1), 0);
+        nn = _e30.xyz;
+    }
+    metal::float3 _e32 = nn;
+    metal::float3 _e33 = nn;
+    float len2_ = metal::dot(_e32, _e33);
+    metal::float4 _e35 = s;
+    metal::float3 x_17 = _e35.xyz;
+    if (inside) {
+        float _e40 = s.w;
+        local_1 = _e40 > 0.0;
     } else {
-        local_1 = true;
+        local_1 = false;
     }
-    bool _e37 = local_1;
-    if (_e37) {
-        out_tex.write(metal::float4(0.0), metal::uint2(texel_1));
-        uint _e45 = view.width;
-        reuse_next[(gid.y * _e45) + gid.x].surface.m = 0.0;
-        return;
+    bool _e44 = local_1;
+    if (_e44) {
+        local_2 = len2_ > 0.0;
+    } else {
+        local_2 = false;
     }
-    metal::float3 x_17 = _e21.xyz;
-    metal::float3 n_15 = nn / metal::float3(metal::sqrt(len2_));
-    r = n_15;
-    metal::float4 mr = metal_rough_tex.read(metal::uint2(texel_1), 0);
-    metal::float4 _e70 = base_color_tex.read(metal::uint2(texel_1), 0);
-    metal::float3 _e77 = view.eye;
-    Material _e80 = material_of(_e70.xyz, mr.z, mr.y, mr.w, metal::normalize(_e77 - x_17));
-    m = _e80;
-    metal::float3 _e82 = m.base;
-    float _e84 = m.metallic;
-    float _e86 = bevy_f0_(mr.w);
-    float _e90 = m.alpha;
-    metal::float3 _e92 = m.v;
-    metal::float4 _e94 = receiver_lobe(_e82, _e84, metal::float3(_e86), 1.0, _e90, metal::dot(n_15, _e92));
-    lobe = _e94;
-    metal::float3 _e96 = m.v;
-    metal::float3 _e97 = mirror_dir(n_15, _e96);
-    r = _e97;
-    metal::float4 _e98 = lobe;
-    metal::float4 _e99 = range_lobe(_e98);
-    float _e102 = view.shadow_offset;
-    metal::float3 _e105 = view.eye;
-    float eps_3 = _e102 * metal::length(_e105 - x_17);
-    uint _e111 = view.seed;
-    uint _e115 = view.width;
-    uint _e121 = view.frame;
-    uint _e122 = point_stream(_e111, (gid.y * _e115) + gid.x, _e121);
-    uint _e123 = pick_stream(_e122);
-    h = _e123;
-    hc = _e122;
-    uint _e146 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
-    metal::float3 _e147 = r;
-    uint _e148 = bsh_next_leaf_lobe(BSH, _e146, x_17, _e147, _e99, bsh_nodes, _buffer_sizes);
-    b = _e148;
-    uint2 loop_bound_9 = uint2(4294967295u);
-    bool loop_init_7 = true;
-    while(true) {
-        if (metal::all(loop_bound_9 == uint2(0u))) { break; }
-        loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
-        if (!loop_init_7) {
-            uint _e223 = b;
-            uint _e226 = bsh_nodes[_e223].next;
-            metal::float3 _e227 = r;
-            uint _e228 = bsh_next_leaf_lobe(BSH, _e226, x_17, _e227, _e99, bsh_nodes, _buffer_sizes);
-            b = _e228;
-        }
-        loop_init_7 = false;
-        uint _e150 = b;
-        if (_e150 != BSH_NONE) {
-        } else {
-            break;
-        }
-        {
-            uint _e153 = count;
-            count = _e153 + 1u;
-            uint _e157 = b;
-            uint li_3 = bsh_nodes[_e157].light;
-            uint _e161 = h;
-            uint _e162 = pcg_hash(_e161);
-            h = _e162;
-            uint h1_1 = h;
-            uint _e164 = h;
-            uint _e165 = pcg_hash(_e164);
-            h = _e165;
-            uint _e166 = h;
-            uint _e167 = grid_cells(h1_1, _e166);
-            float _e168 = grid_coordinate(h1_1);
-            uint _e169 = h;
-            float _e170 = grid_coordinate(_e169);
-            metal::float2 u_5 = metal::float2(_e168, _e170);
-            metal::float3 _e172 = r;
-            Material _e173 = m;
-            Shaded _e178 = shade_pick_traced(li_3, x_17, n_15, _e172, _e99, _e173, 1.0, u_5.x, u_5.y, eps_3, false, geo_nodes, geo_tris, lights, rt2_3, r2_3, light_cones, _buffer_sizes);
-            metal::float3 _e179 = output_of(_e178);
-            float _e180 = resample_target(_e179);
-            if (_e180 > 0.0) {
-                metal::float3 _e183 = total;
-                total = _e183 + _e179;
-                q = 0u;
-                uint2 loop_bound_10 = uint2(4294967295u);
-                bool loop_init_8 = true;
-                while(true) {
-                    if (metal::all(loop_bound_10 == uint2(0u))) { break; }
-                    loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
-                    if (!loop_init_8) {
-                        uint _e219 = q;
-                        q = _e219 + 1u;
-                    }
-                    loop_init_8 = false;
-                    uint _e187 = q;
-                    if (_e187 < K) {
-                    } else {
-                        break;
-                    }
-                    {
-                        uint _e190 = q;
-                        float _e192 = slot_target(_e179, _e190, K);
-                        metal::float3 _e193 = total;
-                        uint _e194 = q;
-                        float _e196 = slot_target(_e193, _e194, K);
-                        if (_e192 > 0.0) {
-                            uint _e201 = q;
-                            float _e203 = threshold.inner[_e201];
-                            local_2 = _e196 > _e203;
-                        } else {
-                            local_2 = false;
-                        }
-                        bool _e206 = local_2;
-                        if (_e206) {
-                            uint _e207 = q;
-                            slot_light.inner[_e207] = li_3;
-                            uint _e209 = q;
-                            slot_u.inner[_e209] = u_5;
-                            uint _e211 = q;
-                            slot_p.inner[_e211] = _e192;
-                            uint _e213 = q;
-                            slot_cells.inner[_e213] = _e167;
-                            uint _e215 = q;
-                            float _e217 = next_threshold(_e196, hc);
-                            threshold.inner[_e215] = _e217;
-                        }
-                    }
-                }
-            }
-        }
-    }
-    uint _e232 = view.width;
-    uint pixel_1 = (gid.y * _e232) + gid.x;
-    metal::float3 _e239 = view.eye;
-    uint _e243 = reuse_stream(_e122, 0u);
-    uint _e244 = reuse_domains(x_17, n_15, metal::length(_e239 - x_17), _e243, doms, view, reuse, reuse_prev, _buffer_sizes);
-    if (_e244 > 0u) {
-        bool _e251 = doms.inner[0].temporal;
-        local_3 = _e251;
+    bool _e50 = local_2;
+    if (_e50) {
+        local_3 = metal::all(metal::abs(x_17) <= metal::float3(340282350000000000000000000000000000000.0));
     } else {
         local_3 = false;
     }
-    bool own_history = local_3;
-    uint first_1 = own_history ? 1u : 0u;
-    float _e259 = doms.inner[0].c;
-    float confidence = 1.0 + (own_history ? _e259 : 0.0);
-    uint _e265 = reuse_stream(_e122, 1u);
-    hs = _e265;
-    uint2 loop_bound_11 = uint2(4294967295u);
-    bool loop_init_9 = true;
+    bool has_2 = local_3;
+    if (has_2) {
+        metal::float3 _e65 = nn;
+        n = _e65 / metal::float3(metal::sqrt(len2_));
+    }
+    metal::float3 _e76 = n;
+    r = _e76;
+    if (has_2) {
+        metal::float4 mr = metal_rough_tex.read(metal::uint2(texel_1), 0);
+        metal::float4 _e83 = base_color_tex.read(metal::uint2(texel_1), 0);
+        metal::float3 _e90 = view.eye;
+        Material _e93 = material_of(_e83.xyz, mr.z, mr.y, mr.w, metal::normalize(_e90 - x_17));
+        m = _e93;
+        metal::float3 _e95 = m.base;
+        float _e97 = m.metallic;
+        float _e99 = bevy_f0_(mr.w);
+        float _e103 = m.alpha;
+        metal::float3 _e104 = n;
+        metal::float3 _e106 = m.v;
+        metal::float4 _e108 = receiver_lobe(_e95, _e97, metal::float3(_e99), 1.0, _e103, metal::dot(_e104, _e106));
+        lobe = _e108;
+        metal::float3 _e109 = n;
+        metal::float3 _e111 = m.v;
+        metal::float3 _e112 = mirror_dir(_e109, _e111);
+        r = _e112;
+    }
+    metal::float4 _e113 = lobe;
+    metal::float4 _e114 = range_lobe(_e113);
+    float _e117 = view.shadow_offset;
+    metal::float3 _e120 = view.eye;
+    float eps_3 = _e117 * metal::length(_e120 - x_17);
+    uint _e126 = view.seed;
+    uint _e130 = view.width;
+    uint _e136 = view.frame;
+    uint _e137 = point_stream(_e126, (gid.y * _e130) + gid.x, _e136);
+    uint _e138 = pick_stream(_e137);
+    h = _e138;
+    hc = _e137;
+    if (has_2) {
+        local_4 = _e114.w >= 0.0;
+    } else {
+        local_4 = false;
+    }
+    bool _e166 = local_4;
+    TileWalk _e167 = tile_walk_begin(lid, x_17, _e114.w, _e166, bsh_nodes, wg_lo, wg_hi, wg_box, tile_list, subtree_at, tile_scale, tile_total, _buffer_sizes);
+    uint2 loop_bound_15 = uint2(4294967295u);
+    bool loop_init_12 = true;
     while(true) {
-        if (metal::all(loop_bound_11 == uint2(0u))) { break; }
-        loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
-        if (!loop_init_9) {
-            uint _e316 = q_1;
-            q_1 = _e316 + 1u;
+        if (metal::all(loop_bound_15 == uint2(0u))) { break; }
+        loop_bound_15 -= uint2(loop_bound_15.y == 0u, 1u);
+        if (!loop_init_12) {
+            uint _e266 = start;
+            start = _e266 + TILE_LIST;
         }
-        loop_init_9 = false;
-        uint _e271 = q_1;
-        if (_e271 < K) {
+        loop_init_12 = false;
+        uint _e170 = start;
+        if (_e170 < _e167.total) {
         } else {
             break;
         }
         {
-            uint _e274 = q_1;
-            uint _e276 = q_1;
-            uint _e277 = q_1;
-            uint _e279 = slot_light.inner[_e277];
-            uint _e280 = q_1;
-            uint _e282 = slot_cells.inner[_e280];
-            metal::float3 _e283 = total;
-            uint _e284 = q_1;
-            float _e286 = slot_target(_e283, _e284, K);
-            uint _e287 = q_1;
-            float _e289 = slot_p.inner[_e287];
-            Material _e298 = m;
-            ReuseSlot _e299 = gris_combine(_e276, ReuseSlot {_e279, _e282, (_e289 > 0.0) ? _e286 : 0.0}, true, 1.0, 0u, first_1, x_17, n_15, _e298, doms, hs, geo_nodes, geo_tris, lights, lights_prev, reuse_prev, _buffer_sizes);
-            kept.inner[_e274] = _e299;
-            uint _e300 = q_1;
-            uint _e302 = q_1;
-            ReuseSlot _e304 = kept.inner[_e302];
-            fin.inner[_e300] = _e304;
-            if (_e244 > first_1) {
-                uint _e306 = q_1;
-                uint _e308 = q_1;
-                uint _e309 = q_1;
-                ReuseSlot _e311 = kept.inner[_e309];
-                Material _e313 = m;
-                ReuseSlot _e314 = gris_combine(_e308, _e311, false, confidence, first_1, _e244, x_17, n_15, _e313, doms, hs, geo_nodes, geo_tris, lights, lights_prev, reuse_prev, _buffer_sizes);
-                fin.inner[_e306] = _e314;
+            uint _e173 = start;
+            uint _e174 = tile_walk_fill(lid, _e167, _e173, bsh_nodes, tile_list, subtree_at, _buffer_sizes);
+            j = 0u;
+            uint2 loop_bound_16 = uint2(4294967295u);
+            bool loop_init_13 = true;
+            while(true) {
+                if (metal::all(loop_bound_16 == uint2(0u))) { break; }
+                loop_bound_16 -= uint2(loop_bound_16.y == 0u, 1u);
+                if (!loop_init_13) {
+                    uint _e264 = j;
+                    j = _e264 + 1u;
+                }
+                loop_init_13 = false;
+                uint _e177 = j;
+                if (_e177 < _e174) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e180 = j;
+                    uint b_10 = tile_list.inner[_e180];
+                    if (!(!(has_2))) {
+                        BshNode _e189 = bsh_nodes[b_10];
+                        metal::float3 _e190 = r;
+                        bool _e191 = bsh_reaches(_e189, x_17, _e190, _e114);
+                        local_5 = !(_e191);
+                    } else {
+                        local_5 = true;
+                    }
+                    bool _e194 = local_5;
+                    if (_e194) {
+                        continue;
+                    }
+                    uint li_7 = bsh_nodes[b_10].light;
+                    uint _e199 = count;
+                    count = _e199 + 1u;
+                    uint _e202 = h;
+                    uint _e203 = pcg_hash(_e202);
+                    h = _e203;
+                    uint h1_1 = h;
+                    uint _e205 = h;
+                    uint _e206 = pcg_hash(_e205);
+                    h = _e206;
+                    uint _e207 = h;
+                    uint _e208 = grid_cells(h1_1, _e207);
+                    float _e209 = grid_coordinate(h1_1);
+                    uint _e210 = h;
+                    float _e211 = grid_coordinate(_e210);
+                    metal::float2 u_5 = metal::float2(_e209, _e211);
+                    metal::float3 _e213 = n;
+                    metal::float3 _e214 = r;
+                    Material _e215 = m;
+                    Shaded _e220 = shade_pick_traced(li_7, x_17, _e213, _e214, _e114, _e215, 1.0, u_5.x, u_5.y, eps_3, false, geo_nodes, geo_tris, lights, rt2_3, r2_3, light_cones, _buffer_sizes);
+                    metal::float3 _e221 = output_of(_e220);
+                    float _e222 = resample_target(_e221);
+                    if (_e222 > 0.0) {
+                        metal::float3 _e225 = total;
+                        total = _e225 + _e221;
+                        q = 0u;
+                        uint2 loop_bound_17 = uint2(4294967295u);
+                        bool loop_init_14 = true;
+                        while(true) {
+                            if (metal::all(loop_bound_17 == uint2(0u))) { break; }
+                            loop_bound_17 -= uint2(loop_bound_17.y == 0u, 1u);
+                            if (!loop_init_14) {
+                                uint _e261 = q;
+                                q = _e261 + 1u;
+                            }
+                            loop_init_14 = false;
+                            uint _e229 = q;
+                            if (_e229 < K) {
+                            } else {
+                                break;
+                            }
+                            {
+                                uint _e232 = q;
+                                float _e234 = slot_target(_e221, _e232, K);
+                                metal::float3 _e235 = total;
+                                uint _e236 = q;
+                                float _e238 = slot_target(_e235, _e236, K);
+                                if (_e234 > 0.0) {
+                                    uint _e243 = q;
+                                    float _e245 = threshold.inner[_e243];
+                                    local_6 = _e238 > _e245;
+                                } else {
+                                    local_6 = false;
+                                }
+                                bool _e248 = local_6;
+                                if (_e248) {
+                                    uint _e249 = q;
+                                    slot_light.inner[_e249] = li_7;
+                                    uint _e251 = q;
+                                    slot_u.inner[_e251] = u_5;
+                                    uint _e253 = q;
+                                    slot_p.inner[_e253] = _e234;
+                                    uint _e255 = q;
+                                    slot_cells.inner[_e255] = _e208;
+                                    uint _e257 = q;
+                                    float _e259 = next_threshold(_e238, hc);
+                                    threshold.inner[_e257] = _e259;
+                                }
+                            }
+                        }
+                    }
+                }
+            }
+            metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+        }
+    }
+    if (!(has_2)) {
+        if (inside) {
+            out_tex.write(metal::float4(0.0), metal::uint2(texel_1));
+            uint _e277 = view.width;
+            reuse_next[(gid.y * _e277) + gid.x].surface.m = 0.0;
+        }
+        return;
+    }
+    uint _e288 = view.width;
+    uint pixel_1 = (gid.y * _e288) + gid.x;
+    metal::float3 _e293 = n;
+    metal::float3 _e296 = view.eye;
+    uint _e300 = reuse_stream(_e137, 0u);
+    uint _e301 = reuse_domains(x_17, _e293, metal::length(_e296 - x_17), _e300, doms, view, reuse, reuse_prev, _buffer_sizes);
+    if (_e301 > 0u) {
+        bool _e308 = doms.inner[0].temporal;
+        local_7 = _e308;
+    } else {
+        local_7 = false;
+    }
+    bool own_history = local_7;
+    uint first_1 = own_history ? 1u : 0u;
+    float _e316 = doms.inner[0].c;
+    float confidence = 1.0 + (own_history ? _e316 : 0.0);
+    uint _e322 = reuse_stream(_e137, 1u);
+    hs = _e322;
+    uint2 loop_bound_18 = uint2(4294967295u);
+    bool loop_init_15 = true;
+    while(true) {
+        if (metal::all(loop_bound_18 == uint2(0u))) { break; }
+        loop_bound_18 -= uint2(loop_bound_18.y == 0u, 1u);
+        if (!loop_init_15) {
+            uint _e375 = q_1;
+            q_1 = _e375 + 1u;
+        }
+        loop_init_15 = false;
+        uint _e328 = q_1;
+        if (_e328 < K) {
+        } else {
+            break;
+        }
+        {
+            uint _e331 = q_1;
+            uint _e333 = q_1;
+            uint _e334 = q_1;
+            uint _e336 = slot_light.inner[_e334];
+            uint _e337 = q_1;
+            uint _e339 = slot_cells.inner[_e337];
+            metal::float3 _e340 = total;
+            uint _e341 = q_1;
+            float _e343 = slot_target(_e340, _e341, K);
+            uint _e344 = q_1;
+            float _e346 = slot_p.inner[_e344];
+            metal::float3 _e355 = n;
+            Material _e356 = m;
+            ReuseSlot _e357 = gris_combine(_e333, ReuseSlot {_e336, _e339, (_e346 > 0.0) ? _e343 : 0.0}, true, 1.0, 0u, first_1, x_17, _e355, _e356, doms, hs, geo_nodes, geo_tris, lights, lights_prev, reuse_prev, _buffer_sizes);
+            kept.inner[_e331] = _e357;
+            uint _e358 = q_1;
+            uint _e360 = q_1;
+            ReuseSlot _e362 = kept.inner[_e360];
+            fin.inner[_e358] = _e362;
+            if (_e301 > first_1) {
+                uint _e364 = q_1;
+                uint _e366 = q_1;
+                uint _e367 = q_1;
+                ReuseSlot _e369 = kept.inner[_e367];
+                metal::float3 _e371 = n;
+                Material _e372 = m;
+                ReuseSlot _e373 = gris_combine(_e366, _e369, false, confidence, first_1, _e301, x_17, _e371, _e372, doms, hs, geo_nodes, geo_tris, lights, lights_prev, reuse_prev, _buffer_sizes);
+                fin.inner[_e364] = _e373;
             }
         }
     }
-    uint2 loop_bound_12 = uint2(4294967295u);
-    bool loop_init_10 = true;
+    uint2 loop_bound_19 = uint2(4294967295u);
+    bool loop_init_16 = true;
     while(true) {
-        if (metal::all(loop_bound_12 == uint2(0u))) { break; }
-        loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
-        if (!loop_init_10) {
-            uint _e357 = k;
-            k = _e357 + 1u;
+        if (metal::all(loop_bound_19 == uint2(0u))) { break; }
+        loop_bound_19 -= uint2(loop_bound_19.y == 0u, 1u);
+        if (!loop_init_16) {
+            uint _e416 = k;
+            k = _e416 + 1u;
         }
-        loop_init_10 = false;
-        uint _e322 = k;
-        if (_e322 < K) {
+        loop_init_16 = false;
+        uint _e381 = k;
+        if (_e381 < K) {
         } else {
             break;
         }
         {
-            uint _e325 = k;
-            uint _e327 = k;
-            uint _e330 = fin.inner[_e327].light;
-            uint _e332 = k;
-            uint _e335 = fin.inner[_e332].u;
-            uint _e337 = k;
-            uint _e340 = fin.inner[_e337].light;
-            uint _e343 = lights[_e340].kind;
-            keys.inner[_e325] = metal::uint2(_e330, (_e343 == LIGHT_TRIANGLE) ? _e335 : 0u);
-            uint _e348 = k;
-            uint _e350 = k;
-            float _e353 = fin.inner[_e350].w;
-            held.inner[_e348] = _e353 > 0.0;
+            uint _e384 = k;
+            uint _e386 = k;
+            uint _e389 = fin.inner[_e386].light;
+            uint _e391 = k;
+            uint _e394 = fin.inner[_e391].u;
+            uint _e396 = k;
+            uint _e399 = fin.inner[_e396].light;
+            uint _e402 = lights[_e399].kind;
+            keys.inner[_e384] = metal::uint2(_e389, (_e402 == LIGHT_TRIANGLE) ? _e394 : 0u);
+            uint _e407 = k;
+            uint _e409 = k;
+            float _e412 = fin.inner[_e409].w;
+            held.inner[_e407] = _e412 > 0.0;
         }
     }
-    type_21 _e359 = keys;
-    type_22 _e360 = held;
-    type_17 _e361 = first_holders(_e359, _e360);
-    uint2 loop_bound_13 = uint2(4294967295u);
-    bool loop_init_11 = true;
+    type_25 _e418 = keys;
+    type_26 _e419 = held;
+    type_17 _e420 = first_holders(_e418, _e419);
+    uint2 loop_bound_20 = uint2(4294967295u);
+    bool loop_init_17 = true;
     while(true) {
-        if (metal::all(loop_bound_13 == uint2(0u))) { break; }
-        loop_bound_13 -= uint2(loop_bound_13.y == 0u, 1u);
-        if (!loop_init_11) {
-            uint _e446 = k_1;
-            k_1 = _e446 + 1u;
+        if (metal::all(loop_bound_20 == uint2(0u))) { break; }
+        loop_bound_20 -= uint2(loop_bound_20.y == 0u, 1u);
+        if (!loop_init_17) {
+            uint _e508 = k_1;
+            k_1 = _e508 + 1u;
         }
-        loop_init_11 = false;
-        uint _e365 = k_1;
-        if (_e365 < K) {
+        loop_init_17 = false;
+        uint _e424 = k_1;
+        if (_e424 < K) {
         } else {
             break;
         }
         {
-            uint _e368 = k_1;
-            uint _e370 = k_1;
-            if (_e361.inner[_e368] != _e370) {
+            uint _e427 = k_1;
+            uint _e429 = k_1;
+            if (_e420.inner[_e427] != _e429) {
                 continue;
             }
             w = metal::float3(0.0);
-            uint _e375 = k_1;
-            j = _e375;
-            uint2 loop_bound_14 = uint2(4294967295u);
-            bool loop_init_12 = true;
+            uint _e434 = k_1;
+            j_1 = _e434;
+            uint2 loop_bound_21 = uint2(4294967295u);
+            bool loop_init_18 = true;
             while(true) {
-                if (metal::all(loop_bound_14 == uint2(0u))) { break; }
-                loop_bound_14 -= uint2(loop_bound_14.y == 0u, 1u);
-                if (!loop_init_12) {
-                    uint _e395 = j;
-                    j = _e395 + 1u;
+                if (metal::all(loop_bound_21 == uint2(0u))) { break; }
+                loop_bound_21 -= uint2(loop_bound_21.y == 0u, 1u);
+                if (!loop_init_18) {
+                    uint _e454 = j_1;
+                    j_1 = _e454 + 1u;
                 }
-                loop_init_12 = false;
-                uint _e377 = j;
-                if (_e377 < K) {
+                loop_init_18 = false;
+                uint _e436 = j_1;
+                if (_e436 < K) {
                 } else {
                     break;
                 }
                 {
-                    uint _e380 = j;
-                    uint _e382 = k_1;
-                    if (_e361.inner[_e380] == _e382) {
-                        metal::float3 _e384 = w;
-                        uint _e385 = j;
-                        float _e388 = fin.inner[_e385].w;
-                        uint _e389 = j;
-                        metal::float3 _e391 = slot_share(_e389, K);
-                        w = _e384 + (_e388 * _e391);
+                    uint _e439 = j_1;
+                    uint _e441 = k_1;
+                    if (_e420.inner[_e439] == _e441) {
+                        metal::float3 _e443 = w;
+                        uint _e444 = j_1;
+                        float _e447 = fin.inner[_e444].w;
+                        uint _e448 = j_1;
+                        metal::float3 _e450 = slot_share(_e448, K);
+                        w = _e443 + (_e447 * _e450);
                     }
                 }
             }
-            uint _e398 = k_1;
-            uint _e401 = fin.inner[_e398].light;
-            GpuLight _e403 = lights[_e401];
-            uint _e407 = k_1;
-            uint _e410 = fin.inner[_e407].u;
-            float _e411 = grid_coordinate(_e410);
-            uint _e412 = k_1;
-            uint _e415 = fin.inner[_e412].u;
-            float _e418 = grid_coordinate(_e415 << 16u);
-            Connection _e420 = connect_record(_e403, x_17, n_15, n_15, UNRANGED, UNRANGED, 1.0, _e411, _e418, eps_3, true, geo_nodes, geo_tris, _buffer_sizes);
-            Material _e421 = m;
-            Shaded _e422 = shade_connection(_e420, x_17, n_15, _e421);
-            Shaded _e423 = t;
-            metal::float3 _e424 = w;
-            Shaded _e425 = scaled(_e422, _e424);
-            Shaded _e426 = add(_e423, _e425);
-            t = _e426;
-            uint _e427 = k_1;
-            j_1 = _e427;
-            uint2 loop_bound_15 = uint2(4294967295u);
-            bool loop_init_13 = true;
+            uint _e457 = k_1;
+            uint _e460 = fin.inner[_e457].light;
+            GpuLight _e462 = lights[_e460];
+            metal::float3 _e463 = n;
+            metal::float3 _e464 = n;
+            uint _e468 = k_1;
+            uint _e471 = fin.inner[_e468].u;
+            float _e472 = grid_coordinate(_e471);
+            uint _e473 = k_1;
+            uint _e476 = fin.inner[_e473].u;
+            float _e479 = grid_coordinate(_e476 << 16u);
+            Connection _e481 = connect_record(_e462, x_17, _e463, _e464, UNRANGED, UNRANGED, 1.0, _e472, _e479, eps_3, true, geo_nodes, geo_tris, _buffer_sizes);
+            metal::float3 _e482 = n;
+            Material _e483 = m;
+            Shaded _e484 = shade_connection(_e481, x_17, _e482, _e483);
+            Shaded _e485 = t;
+            metal::float3 _e486 = w;
+            Shaded _e487 = scaled(_e484, _e486);
+            Shaded _e488 = add(_e485, _e487);
+            t = _e488;
+            uint _e489 = k_1;
+            j_2 = _e489;
+            uint2 loop_bound_22 = uint2(4294967295u);
+            bool loop_init_19 = true;
             while(true) {
-                if (metal::all(loop_bound_15 == uint2(0u))) { break; }
-                loop_bound_15 -= uint2(loop_bound_15.y == 0u, 1u);
-                if (!loop_init_13) {
-                    uint _e443 = j_1;
-                    j_1 = _e443 + 1u;
+                if (metal::all(loop_bound_22 == uint2(0u))) { break; }
+                loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
+                if (!loop_init_19) {
+                    uint _e505 = j_2;
+                    j_2 = _e505 + 1u;
                 }
-                loop_init_13 = false;
-                uint _e429 = j_1;
-                if (_e429 < K) {
+                loop_init_19 = false;
+                uint _e491 = j_2;
+                if (_e491 < K) {
                 } else {
                     break;
                 }
                 {
-                    uint _e432 = j_1;
-                    uint _e434 = k_1;
-                    if (_e361.inner[_e432] == _e434) {
-                        uint _e436 = j_1;
-                        metal::float3 _e438 = output_of(_e422);
-                        float _e439 = resample_target(_e438);
-                        visible.inner[_e436] = _e439 > 0.0;
+                    uint _e494 = j_2;
+                    uint _e496 = k_1;
+                    if (_e420.inner[_e494] == _e496) {
+                        uint _e498 = j_2;
+                        metal::float3 _e500 = output_of(_e484);
+                        float _e501 = resample_target(_e500);
+                        visible.inner[_e498] = _e501 > 0.0;
                     }
                 }
             }
         }
     }
-    uint2 loop_bound_16 = uint2(4294967295u);
-    bool loop_init_14 = true;
+    uint2 loop_bound_23 = uint2(4294967295u);
+    bool loop_init_20 = true;
     while(true) {
-        if (metal::all(loop_bound_16 == uint2(0u))) { break; }
-        loop_bound_16 -= uint2(loop_bound_16.y == 0u, 1u);
-        if (!loop_init_14) {
-            uint _e487 = q_2;
-            q_2 = _e487 + 1u;
+        if (metal::all(loop_bound_23 == uint2(0u))) { break; }
+        loop_bound_23 -= uint2(loop_bound_23.y == 0u, 1u);
+        if (!loop_init_20) {
+            uint _e549 = q_2;
+            q_2 = _e549 + 1u;
         }
-        loop_init_14 = false;
-        uint _e450 = q_2;
-        if (_e450 < K) {
+        loop_init_20 = false;
+        uint _e512 = q_2;
+        if (_e512 < K) {
         } else {
             break;
         }
         {
-            uint _e455 = reuse.visibility;
-            if (!((_e455 == 0u))) {
-                uint _e461 = q_2;
-                bool _e463 = visible.inner[_e461];
-                local_4 = _e463;
+            uint _e517 = reuse.visibility;
+            if (!((_e517 == 0u))) {
+                uint _e523 = q_2;
+                bool _e525 = visible.inner[_e523];
+                local_8 = _e525;
             } else {
-                local_4 = true;
+                local_8 = true;
             }
-            bool keep = local_4;
-            uint _e469 = q_2;
-            uint _e471 = q_2;
-            uint _e474 = kept.inner[_e471].light;
-            uint _e475 = q_2;
-            uint _e478 = kept.inner[_e475].u;
-            uint _e479 = q_2;
-            float _e482 = kept.inner[_e479].w;
-            reuse_next[pixel_1].slots.inner[_e469] = ReuseSlot {_e474, _e478, keep ? _e482 : 0.0};
+            bool keep = local_8;
+            uint _e531 = q_2;
+            uint _e533 = q_2;
+            uint _e536 = kept.inner[_e533].light;
+            uint _e537 = q_2;
+            uint _e540 = kept.inner[_e537].u;
+            uint _e541 = q_2;
+            float _e544 = kept.inner[_e541].w;
+            reuse_next[pixel_1].slots.inner[_e531] = ReuseSlot {_e536, _e540, keep ? _e544 : 0.0};
         }
     }
-    Material _e492 = m;
-    float _e495 = reuse.max_confidence;
-    ReuseSurface _e497 = reuse_surface(x_17, n_15, _e492, metal::min(confidence, _e495));
-    reuse_next[pixel_1].surface = _e497;
-    metal::float3 _e500 = t.diffuse;
-    metal::float3 _e502 = t.specular;
-    uint _e504 = count;
-    out_tex.write(metal::float4(_e500 + _e502, static_cast<float>(_e504)), metal::uint2(texel_1));
+    metal::float3 _e554 = n;
+    Material _e555 = m;
+    float _e558 = reuse.max_confidence;
+    ReuseSurface _e560 = reuse_surface(x_17, _e554, _e555, metal::min(confidence, _e558));
+    reuse_next[pixel_1].surface = _e560;
+    metal::float3 _e563 = t.diffuse;
+    metal::float3 _e565 = t.specular;
+    uint _e567 = count;
+    out_tex.write(metal::float4(_e563 + _e565, static_cast<float>(_e567)), metal::uint2(texel_1));
     return;
 }

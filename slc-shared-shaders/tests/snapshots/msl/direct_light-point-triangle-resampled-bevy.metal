@@ -92,6 +92,26 @@ struct Connection {
     metal::packed_float3 y;
     float cos_x;
 };
+struct type_18 {
+    metal::float3 inner[64];
+};
+struct WorkgroupBox {
+    metal::float3 lo;
+    metal::float3 hi;
+};
+struct type_19 {
+    uint inner[1024];
+};
+struct type_20 {
+    uint inner[256];
+};
+struct TileWalk {
+    metal::float3 lo;
+    metal::packed_float3 hi;
+    float w;
+    uint total;
+    char _pad4[12];
+};
 struct Shaded {
     metal::float3 e;
     metal::float3 diffuse;
@@ -107,16 +127,16 @@ struct Material {
     float reflectance;
     char _pad6[12];
 };
-struct type_19 {
+struct type_23 {
     metal::uint2 inner[8];
 };
-struct type_20 {
+struct type_24 {
     bool inner[8];
 };
-struct type_22 {
+struct type_26 {
     metal::float2 inner[8];
 };
-struct type_23 {
+struct type_27 {
     float inner[8];
 };
 constant uint LIGHT_POINT = 0u;
@@ -177,6 +197,11 @@ constant float TEMPORAL_CHANGE_HIGH = 8.0;
 constant float TEMPORAL_MIN_WEIGHT = 0.01;
 constant uint K = 8u;
 constant BshNodes BSH = 0u;
+constant uint BSH_TILE_DEPTH = 8u;
+constant uint BSH_TILE_SUBTREES = 256u;
+constant uint TILE_THREADS = 64u;
+constant uint BOX_THREADS = 64u;
+constant uint TILE_LIST = 1024u;
 
 float to_f32_(
     uint u
@@ -186,16 +211,16 @@ float to_f32_(
 
 uint mul_lo_u32_(
     uint a,
-    uint b_1
+    uint b
 ) {
-    return a * b_1;
+    return a * b;
 }
 
 uint add_wrap_u32_(
     uint a_1,
-    uint b_2
+    uint b_1
 ) {
-    return a_1 + b_2;
+    return a_1 + b_1;
 }
 
 float f32_from_bits(
@@ -264,6 +289,17 @@ bool sphere_contains_point(
     return metal::dot(v_5, v_5) <= (r_1 * r_1);
 }
 
+bool sphere_overlaps_aabb(
+    metal::float3 c_1,
+    float r_2,
+    metal::float3 bmin,
+    metal::float3 bmax
+) {
+    metal::float3 q_1 = metal::clamp(c_1, bmin, bmax);
+    metal::float3 v_6 = q_1 - c_1;
+    return metal::dot(v_6, v_6) <= (r_2 * r_2);
+}
+
 float inverse_square(
     float d2_2
 ) {
@@ -284,32 +320,32 @@ float connection_factor(
 float connection_cosine(
     metal::float3 x_2,
     metal::float3 y,
-    metal::float3 n,
+    metal::float3 n_1,
     metal::float3 ng,
     float r2_1
 ) {
-    bool local_4 = {};
-    bool local_5 = {};
-    metal::float3 v_6 = x_2 - y;
-    float d2_6 = metal::dot(v_6, v_6);
+    bool local_8 = {};
+    bool local_9 = {};
+    metal::float3 v_7 = x_2 - y;
+    float d2_6 = metal::dot(v_7, v_7);
     bool _e7 = slc_keep(r2_1, d2_6);
     if (!(!(_e7))) {
-        local_4 = !((d2_6 > 0.0));
+        local_8 = !((d2_6 > 0.0));
     } else {
-        local_4 = true;
+        local_8 = true;
     }
-    bool _e16 = local_4;
+    bool _e16 = local_8;
     if (_e16) {
         return 0.0;
     }
-    metal::float3 w_7 = v_6 / metal::float3(metal::sqrt(d2_6));
-    float cos_x_1 = -(metal::dot(n, w_7));
+    metal::float3 w_10 = v_7 / metal::float3(metal::sqrt(d2_6));
+    float cos_x_1 = -(metal::dot(n_1, w_10));
     if (!((cos_x_1 <= 0.0))) {
-        local_5 = metal::dot(ng, w_7) >= 0.0;
+        local_9 = metal::dot(ng, w_10) >= 0.0;
     } else {
-        local_5 = true;
+        local_9 = true;
     }
-    bool _e32 = local_5;
+    bool _e32 = local_9;
     if (_e32) {
         return 0.0;
     }
@@ -317,24 +353,24 @@ float connection_cosine(
 }
 
 float triangle_lobe(
-    metal::float3 n_1,
+    metal::float3 n_2,
     float area,
     metal::float3 w_2
 ) {
-    return area * metal::max(metal::dot(n_1, w_2), 0.0);
+    return area * metal::max(metal::dot(n_2, w_2), 0.0);
 }
 
 metal::float3 triangle_sample(
     metal::float3 a_2,
-    metal::float3 b_3,
-    metal::float3 c_1,
+    metal::float3 b_2,
+    metal::float3 c_2,
     float u1_,
     float u2_
 ) {
     float su = metal::sqrt(u1_);
     float b0_ = 1.0 - su;
     float b1_ = u2_ * su;
-    return ((a_2 * b0_) + (b_3 * b1_)) + (c_1 * ((1.0 - b0_) - b1_));
+    return ((a_2 * b0_) + (b_2 * b1_)) + (c_2 * ((1.0 - b0_) - b1_));
 }
 
 float bsh_scaled_radius(
@@ -368,9 +404,9 @@ float weighted_threshold(
 }
 
 float resample_target(
-    metal::float3 c_2
+    metal::float3 c_3
 ) {
-    return ((c_2.x + c_2.y) + c_2.z) * 0.33333334;
+    return ((c_3.x + c_3.y) + c_3.z) * 0.33333334;
 }
 
 uint naga_mod(uint lhs, uint rhs) {
@@ -378,22 +414,22 @@ uint naga_mod(uint lhs, uint rhs) {
 }
 
 float slot_target(
-    metal::float3 c_3,
+    metal::float3 c_4,
     uint slot,
     uint k_2
 ) {
     if (k_2 < 3u) {
-        float _e5 = resample_target(c_3);
+        float _e5 = resample_target(c_4);
         return _e5;
     }
-    uint j_2 = naga_mod(slot, 3u);
-    if (j_2 == 0u) {
-        return c_3.x;
+    uint j_3 = naga_mod(slot, 3u);
+    if (j_3 == 0u) {
+        return c_4.x;
     }
-    if (j_2 == 1u) {
-        return c_3.y;
+    if (j_3 == 1u) {
+        return c_4.y;
     }
-    return c_3.z;
+    return c_4.z;
 }
 
 uint naga_div(uint lhs, uint rhs) {
@@ -406,19 +442,19 @@ metal::float3 slot_share(
 ) {
     if (k_3 < 3u) {
         float _e4 = to_f32_(k_3);
-        float w_8 = 1.0 / _e4;
-        return metal::float3(w_8, w_8, w_8);
+        float w_11 = 1.0 / _e4;
+        return metal::float3(w_11, w_11, w_11);
     }
-    uint j_3 = naga_mod(slot_1, 3u);
-    float _e15 = to_f32_(naga_div((k_3 + 2u) - j_3, 3u));
-    float w_9 = 1.0 / _e15;
-    if (j_3 == 0u) {
-        return metal::float3(w_9, 0.0, 0.0);
+    uint j_4 = naga_mod(slot_1, 3u);
+    float _e15 = to_f32_(naga_div((k_3 + 2u) - j_4, 3u));
+    float w_12 = 1.0 / _e15;
+    if (j_4 == 0u) {
+        return metal::float3(w_12, 0.0, 0.0);
     }
-    if (j_3 == 1u) {
-        return metal::float3(0.0, w_9, 0.0);
+    if (j_4 == 1u) {
+        return metal::float3(0.0, w_12, 0.0);
     }
-    return metal::float3(0.0, 0.0, w_9);
+    return metal::float3(0.0, 0.0, w_12);
 }
 
 float ggx_d(
@@ -430,8 +466,8 @@ float ggx_d(
         return 0.0;
     }
     float a2_ = alpha * alpha;
-    float t_1 = ((cos_h * cos_h) * a2_) + sin2_h;
-    return (a2_ * INV_PI) / (t_1 * t_1);
+    float t_4 = ((cos_h * cos_h) * a2_) + sin2_h;
+    return (a2_ * INV_PI) / (t_4 * t_4);
 }
 
 float smith_root(
@@ -447,13 +483,13 @@ float smith_visibility(
     float n_v,
     float alpha_2
 ) {
-    bool local_6 = {};
+    bool local_10 = {};
     if (!((n_l <= 0.0))) {
-        local_6 = n_v <= 0.0;
+        local_10 = n_v <= 0.0;
     } else {
-        local_6 = true;
+        local_10 = true;
     }
-    bool _e11 = local_6;
+    bool _e11 = local_10;
     if (_e11) {
         return 0.0;
     }
@@ -467,9 +503,9 @@ metal::float3 fresnel_schlick(
     float f90_,
     float v_h
 ) {
-    float c_9 = metal::saturate(1.0 - v_h);
-    float c2_ = c_9 * c_9;
-    return f0_ + ((metal::float3(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_9));
+    float c_10 = metal::saturate(1.0 - v_h);
+    float c2_ = c_10 * c_10;
+    return f0_ + ((metal::float3(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_10));
 }
 
 metal::float3 specular_fresnel(
@@ -489,27 +525,27 @@ bool has_specular(
     metal::float3 f0_d_1,
     float f90_d_1
 ) {
-    bool local_7 = {};
-    bool local_8 = {};
+    bool local_11 = {};
+    bool local_12 = {};
     if (!((metallic_1 > 0.0))) {
-        local_7 = f90_d_1 > 0.0;
+        local_11 = f90_d_1 > 0.0;
     } else {
-        local_7 = true;
+        local_11 = true;
     }
-    bool _e11 = local_7;
+    bool _e11 = local_11;
     if (!(_e11)) {
-        local_8 = metal::max(metal::max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0.0;
+        local_12 = metal::max(metal::max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0.0;
     } else {
-        local_8 = true;
+        local_12 = true;
     }
-    bool _e23 = local_8;
+    bool _e23 = local_12;
     return _e23;
 }
 
 float channel_mean(
-    metal::float3 c_4
+    metal::float3 c_5
 ) {
-    return ((c_4.x + c_4.y) + c_4.z) * 0.33333334;
+    return ((c_5.x + c_5.y) + c_5.z) * 0.33333334;
 }
 
 metal::float4 receiver_lobe(
@@ -520,16 +556,16 @@ metal::float4 receiver_lobe(
     float alpha_3,
     float n_v_1
 ) {
-    bool local_9 = {};
+    bool local_13 = {};
     metal::float3 _e10 = fresnel_schlick(f0_d_2, f90_d_2, n_v_1);
     float _e16 = channel_mean(((metal::float3(1.0, 1.0, 1.0) - _e10) * base_1) * (1.0 - metallic_2));
     if (!((n_v_1 <= 0.0))) {
         bool _e22 = has_specular(metallic_2, f0_d_2, f90_d_2);
-        local_9 = !(_e22);
+        local_13 = !(_e22);
     } else {
-        local_9 = true;
+        local_13 = true;
     }
-    bool _e25 = local_9;
+    bool _e25 = local_13;
     if (_e25) {
         return metal::float4(_e16, 0.0, alpha_3, n_v_1);
     }
@@ -574,10 +610,10 @@ metal::float4 range_lobe(
 }
 
 metal::float3 mirror_dir(
-    metal::float3 n_2,
+    metal::float3 n_3,
     metal::float3 v
 ) {
-    return (n_2 * (2.0 * metal::dot(n_2, v))) - v;
+    return (n_3 * (2.0 * metal::dot(n_3, v))) - v;
 }
 
 float bevy_alpha(
@@ -594,33 +630,33 @@ float bevy_f0_(
 }
 
 float bevy_dfg(
-    float r_2,
+    float r_3,
     float n_v_2
 ) {
-    float rx = 1.0 - r_2;
-    float a004_ = (metal::min(rx * rx, metal::exp2(-9.28 * n_v_2)) * rx) + (0.0425 - (0.0275 * r_2));
-    float x_12 = metal::max((1.04 - (0.572 * r_2)) - (1.04 * a004_), 0.00005);
-    float y_1 = metal::max(((0.022 * r_2) - 0.04) + (1.04 * a004_), 0.00005);
+    float rx = 1.0 - r_3;
+    float a004_ = (metal::min(rx * rx, metal::exp2(-9.28 * n_v_2)) * rx) + (0.0425 - (0.0275 * r_3));
+    float x_12 = metal::max((1.04 - (0.572 * r_3)) - (1.04 * a004_), 0.00005);
+    float y_1 = metal::max(((0.022 * r_3) - 0.04) + (1.04 * a004_), 0.00005);
     return x_12 + y_1;
 }
 
 metal::float3 bevy_brdf(
     metal::float3 base_2,
     float metallic_3,
-    float r_3,
+    float r_4,
     float reflectance_1,
-    metal::float3 n_3,
+    metal::float3 n_4,
     metal::float3 v_1,
     metal::float3 l
 ) {
-    float n_l_1 = metal::saturate(metal::dot(n_3, l));
+    float n_l_1 = metal::saturate(metal::dot(n_4, l));
     if (n_l_1 <= 0.0) {
         return metal::float3(0.0, 0.0, 0.0);
     }
-    float _e15 = bevy_alpha(r_3);
-    float n_v_3 = metal::max(metal::dot(n_3, v_1), 0.0001);
+    float _e15 = bevy_alpha(r_4);
+    float n_v_3 = metal::max(metal::dot(n_4, v_1), 0.0001);
     metal::float3 h_2 = metal::normalize(l + v_1);
-    float n_h = metal::saturate(metal::dot(n_3, h_2));
+    float n_h = metal::saturate(metal::dot(n_4, h_2));
     float l_h = metal::saturate(metal::dot(l, h_2));
     float f90_d_3 = 0.5 + (((2.0 * _e15) * l_h) * l_h);
     metal::float3 _e35 = fresnel_schlick(metal::float3(1.0, 1.0, 1.0), f90_d_3, n_l_1);
@@ -631,7 +667,7 @@ metal::float3 bevy_brdf(
     float f90_1 = metal::saturate(((f0_1.x + f0_1.y) + f0_1.z) * 16.5);
     float _e64 = ggx_d(n_h, 1.0 - (n_h * n_h), _e15);
     float _e65 = smith_visibility(n_l_1, n_v_3, _e15);
-    float _e70 = bevy_dfg(r_3, n_v_3);
+    float _e70 = bevy_dfg(r_4, n_v_3);
     metal::float3 comp = metal::float3(1.0, 1.0, 1.0) + (f0_1 * ((1.0 / _e70) - 1.0));
     metal::float3 _e77 = fresnel_schlick(f0_1, f90_1, l_h);
     metal::float3 spec = (_e77 * comp) * (_e64 * _e65);
@@ -644,27 +680,27 @@ float cone_cos_of(
     float a_3,
     metal::float3 d
 ) {
-    bool local_10 = {};
-    bool local_11 = {};
+    bool local_14 = {};
+    bool local_15 = {};
     float vd = metal::dot(v_2, d);
     float h2_ = d2_4 - (a_3 * a_3);
     if (!((h2_ <= 0.0))) {
         if (vd >= 0.0) {
-            local_11 = (vd * vd) >= h2_;
+            local_15 = (vd * vd) >= h2_;
         } else {
-            local_11 = false;
+            local_15 = false;
         }
-        bool _e19 = local_11;
-        local_10 = _e19;
+        bool _e19 = local_15;
+        local_14 = _e19;
     } else {
-        local_10 = true;
+        local_14 = true;
     }
-    bool _e21 = local_10;
+    bool _e21 = local_14;
     if (_e21) {
         return 1.0;
     }
-    metal::float3 c_10 = metal::cross(v_2, d);
-    return metal::min(((vd * metal::sqrt(h2_)) + (metal::sqrt(metal::dot(c_10, c_10)) * a_3)) / d2_4, 1.0);
+    metal::float3 c_11 = metal::cross(v_2, d);
+    return metal::min(((vd * metal::sqrt(h2_)) + (metal::sqrt(metal::dot(c_11, c_11)) * a_3)) / d2_4, 1.0);
 }
 
 float cone_cos_toward(
@@ -673,8 +709,8 @@ float cone_cos_toward(
     metal::float3 p,
     metal::float3 d_1
 ) {
-    metal::float3 v_7 = center - p;
-    float _e6 = cone_cos_of(v_7, metal::dot(v_7, v_7), radius, d_1);
+    metal::float3 v_8 = center - p;
+    float _e6 = cone_cos_of(v_8, metal::dot(v_8, v_8), radius, d_1);
     return _e6;
 }
 
@@ -682,8 +718,8 @@ float range_scale_at(
     metal::float4 rl,
     float cos_t
 ) {
-    float t_2 = ((0.5 + (0.5 * cos_t)) * (rl.z - 1.0)) + 1.0;
-    return metal::clamp(rl.x + ((rl.y * rl.z) / (t_2 * t_2)), 1.0, rl.w * rl.w);
+    float t_5 = ((0.5 + (0.5 * cos_t)) * (rl.z - 1.0)) + 1.0;
+    return metal::clamp(rl.x + ((rl.y * rl.z) / (t_5 * t_5)), 1.0, rl.w * rl.w);
 }
 
 float range_scale_toward(
@@ -691,12 +727,12 @@ float range_scale_toward(
     metal::float3 center_1,
     float radius_1,
     metal::float3 p_1,
-    metal::float3 r_4
+    metal::float3 r_5
 ) {
     if (rl_1.w <= 1.0) {
         return 1.0;
     }
-    float _e9 = cone_cos_toward(center_1, radius_1, p_1, r_4);
+    float _e9 = cone_cos_toward(center_1, radius_1, p_1, r_5);
     float _e10 = range_scale_at(rl_1, _e9);
     return _e10;
 }
@@ -725,16 +761,16 @@ metal::float3 ray_inverse3_(
 float ray_aabb(
     metal::float3 o,
     metal::float3 inv_d,
-    metal::float3 bmin,
-    metal::float3 bmax,
+    metal::float3 bmin_1,
+    metal::float3 bmax_1,
     float t_max
 ) {
-    metal::float3 t0_ = (bmin - o) * inv_d;
-    metal::float3 t1_ = (bmax - o) * inv_d;
-    metal::float3 lo = metal::min(t0_, t1_);
-    metal::float3 hi = metal::max(t0_, t1_);
-    float t_in = metal::max(metal::max(lo.x, lo.y), metal::max(lo.z, 0.0));
-    float t_out = metal::min(metal::min(hi.x, hi.y), metal::min(hi.z, t_max));
+    metal::float3 t0_ = (bmin_1 - o) * inv_d;
+    metal::float3 t1_ = (bmax_1 - o) * inv_d;
+    metal::float3 lo_3 = metal::min(t0_, t1_);
+    metal::float3 hi_3 = metal::max(t0_, t1_);
+    float t_in = metal::max(metal::max(lo_3.x, lo_3.y), metal::max(lo_3.z, 0.0));
+    float t_out = metal::min(metal::min(hi_3.x, hi_3.y), metal::min(hi_3.z, t_max));
     if (t_in <= t_out) {
         return t_in;
     }
@@ -743,75 +779,75 @@ float ray_aabb(
 
 metal::float3 triangle_normal(
     metal::float3 a_4,
-    metal::float3 b_4,
-    metal::float3 c_5
+    metal::float3 b_3,
+    metal::float3 c_6
 ) {
-    bool local_12 = {};
-    metal::float3 n_9 = metal::cross(b_4 - a_4, c_5 - a_4);
-    float l2_ = metal::dot(n_9, n_9);
+    bool local_16 = {};
+    metal::float3 n_10 = metal::cross(b_3 - a_4, c_6 - a_4);
+    float l2_ = metal::dot(n_10, n_10);
     if (!(!((l2_ > 0.0)))) {
-        local_12 = !((l2_ < 300000000000000000000000000000000000000.0));
+        local_16 = !((l2_ < 300000000000000000000000000000000000000.0));
     } else {
-        local_12 = true;
+        local_16 = true;
     }
-    bool _e17 = local_12;
+    bool _e17 = local_16;
     if (_e17) {
         return metal::float3(0.0, 0.0, 0.0);
     }
-    return n_9 / metal::float3(metal::sqrt(l2_));
+    return n_10 / metal::float3(metal::sqrt(l2_));
 }
 
 float ray_triangle(
     metal::float3 o_1,
     metal::float3 d_3,
     metal::float3 a_5,
-    metal::float3 b_5,
-    metal::float3 c_6,
+    metal::float3 b_4,
+    metal::float3 c_7,
     float t_min,
     float t_max_1
 ) {
-    bool local_13 = {};
-    bool local_14 = {};
-    bool local_15 = {};
-    metal::float3 e1_ = b_5 - a_5;
-    metal::float3 e2_ = c_6 - a_5;
-    metal::float3 p_2 = metal::cross(d_3, e2_);
-    float det = metal::dot(e1_, p_2);
+    bool local_17 = {};
+    bool local_18 = {};
+    bool local_19 = {};
+    metal::float3 e1_ = b_4 - a_5;
+    metal::float3 e2_ = c_7 - a_5;
+    metal::float3 p_4 = metal::cross(d_3, e2_);
+    float det = metal::dot(e1_, p_4);
     if (metal::abs(det) <= 0.0) {
         return -1.0;
     }
     float inv = 1.0 / det;
-    metal::float3 s_4 = o_1 - a_5;
-    float u_3 = metal::dot(s_4, p_2) * inv;
+    metal::float3 s_10 = o_1 - a_5;
+    float u_3 = metal::dot(s_10, p_4) * inv;
     if (!((u_3 < 0.0))) {
-        local_13 = u_3 > 1.0;
+        local_17 = u_3 > 1.0;
     } else {
-        local_13 = true;
+        local_17 = true;
     }
-    bool _e28 = local_13;
+    bool _e28 = local_17;
     if (_e28) {
         return -1.0;
     }
-    metal::float3 q_1 = metal::cross(s_4, e1_);
-    float v_8 = metal::dot(d_3, q_1) * inv;
-    if (!((v_8 < 0.0))) {
-        local_14 = (u_3 + v_8) > 1.0;
+    metal::float3 q_2 = metal::cross(s_10, e1_);
+    float v_9 = metal::dot(d_3, q_2) * inv;
+    if (!((v_9 < 0.0))) {
+        local_18 = (u_3 + v_9) > 1.0;
     } else {
-        local_14 = true;
+        local_18 = true;
     }
-    bool _e42 = local_14;
+    bool _e42 = local_18;
     if (_e42) {
         return -1.0;
     }
-    float t_3 = metal::dot(e2_, q_1) * inv;
-    if (t_3 > t_min) {
-        local_15 = t_3 < t_max_1;
+    float t_6 = metal::dot(e2_, q_2) * inv;
+    if (t_6 > t_min) {
+        local_19 = t_6 < t_max_1;
     } else {
-        local_15 = false;
+        local_19 = false;
     }
-    bool _e51 = local_15;
+    bool _e51 = local_19;
     if (_e51) {
-        return t_3;
+        return t_6;
     }
     return -1.0;
 }
@@ -874,12 +910,12 @@ GeoHit trace(
         if (metal::all(loop_bound == uint2(0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         uint _e21 = node_2;
-        GpuGeoNode n_10 = geo_nodes[_e21];
+        GpuGeoNode n_11 = geo_nodes[_e21];
         float _e27 = hit.t;
-        float _e28 = ray_aabb(o_2, _e14, n_10.bmin, n_10.bmax, _e27);
+        float _e28 = ray_aabb(o_2, _e14, n_11.bmin, n_11.bmax, _e27);
         if (_e28 >= 0.0) {
-            if (n_10.count > 0u) {
-                i = n_10.first;
+            if (n_11.count > 0u) {
+                i = n_11.first;
                 uint2 loop_bound_1 = uint2(4294967295u);
                 bool loop_init = true;
                 while(true) {
@@ -891,15 +927,15 @@ GeoHit trace(
                     }
                     loop_init = false;
                     uint _e36 = i;
-                    if (_e36 < (n_10.first + n_10.count)) {
+                    if (_e36 < (n_11.first + n_11.count)) {
                     } else {
                         break;
                     }
                     {
                         uint _e42 = i;
-                        GpuTriangle t_4 = geo_tris[_e42];
+                        GpuTriangle t_7 = geo_tris[_e42];
                         float _e49 = hit.t;
-                        float _e50 = ray_triangle(o_2, d_4, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e49);
+                        float _e50 = ray_triangle(o_2, d_4, t_7.v0_, t_7.v1_, t_7.v2_, t_min_1, _e49);
                         if (_e50 > 0.0) {
                             hit.t = _e50;
                             uint _e55 = i;
@@ -915,11 +951,11 @@ GeoHit trace(
                 uint _e60 = sp;
                 if (_e60 < 64u) {
                     uint _e63 = sp;
-                    stack.inner[_e63] = n_10.first + 1u;
+                    stack.inner[_e63] = n_11.first + 1u;
                     uint _e68 = sp;
                     sp = _e68 + 1u;
                 }
-                node_2 = n_10.first;
+                node_2 = n_11.first;
                 continue;
             }
         }
@@ -939,12 +975,12 @@ GeoHit trace(
 
 bool occluded(
     metal::float3 a_6,
-    metal::float3 b_6,
+    metal::float3 b_5,
     device type_7 const& geo_nodes,
     device type_8 const& geo_tris,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 dv = b_6 - a_6;
+    metal::float3 dv = b_5 - a_6;
     float len_1 = metal::length(dv);
     if (len_1 <= 0.0) {
         return false;
@@ -988,10 +1024,10 @@ float bsh_inner_scale(
     float a_7,
     metal::float3 v_3,
     float d2_5,
-    metal::float3 r_5,
+    metal::float3 r_6,
     metal::float4 rl_2
 ) {
-    float _e5 = cone_cos_of(v_3, d2_5, a_7, r_5);
+    float _e5 = cone_cos_of(v_3, d2_5, a_7, r_6);
     float _e8 = range_scale_at(rl_2, _e5 + 0.000002);
     return _e8;
 }
@@ -999,86 +1035,151 @@ float bsh_inner_scale(
 bool bsh_reaches(
     BshNode node_3,
     metal::float3 x_4,
-    metal::float3 r_6,
+    metal::float3 r_7,
     metal::float4 rl_3
 ) {
-    bool local_16 = {};
-    bool local_17 = {};
+    bool local_20 = {};
+    bool local_21 = {};
     bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_4);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
         bool _e20 = sphere_contains_point(node_3.center, node_3.radius * (rl_3.w * 1.0001), x_4);
-        local_16 = !(_e20);
+        local_20 = !(_e20);
     } else {
-        local_16 = true;
+        local_20 = true;
     }
-    bool _e23 = local_16;
+    bool _e23 = local_20;
     if (_e23) {
         return false;
     }
     float _e25 = bsh_range_bound(node_3);
-    metal::float3 v_9 = x_4 - node_3.center;
-    float d2_7 = metal::dot(v_9, v_9);
+    metal::float3 v_10 = x_4 - node_3.center;
+    float d2_7 = metal::dot(v_10, v_10);
     float reach_max = node_3.extent + ((rl_3.w * 1.001) * _e25);
     if (d2_7 > (reach_max * reach_max)) {
         return false;
     }
     if (node_3.child == BSH_NONE) {
-        float _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_4, r_6);
+        float _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_4, r_7);
         float _e46 = bsh_scaled_radius(node_3, metal::sqrt(_e43));
         bool _e47 = sphere_contains_point(node_3.center, _e46, x_4);
         return _e47;
     }
-    float _e50 = bsh_inner_scale(node_3.extent, -(v_9), d2_7, r_6, rl_3);
+    float _e50 = bsh_inner_scale(node_3.extent, -(v_10), d2_7, r_7, rl_3);
     float s_c = _e50 * 1.001;
     float reach = node_3.extent + (metal::sqrt(s_c) * _e25);
     if (d2_7 <= ((node_3.radius * node_3.radius) * s_c)) {
-        local_17 = d2_7 <= (reach * reach);
+        local_21 = d2_7 <= (reach * reach);
     } else {
-        local_17 = false;
+        local_21 = false;
     }
-    bool _e67 = local_17;
+    bool _e67 = local_21;
     return _e67;
 }
 
-uint bsh_next_leaf_lobe(
+bool bsh_reaches_box(
+    BshNode node_4,
+    metal::float3 lo,
+    metal::float3 hi,
+    float w_4
+) {
+    bool _e13 = sphere_overlaps_aabb(node_4.center, node_4.radius * (metal::max(1.0, w_4 * 1.0001) * 1.0001), lo, hi);
+    return _e13;
+}
+
+uint bsh_subtree(
     BshNodes nodes_3,
-    uint start,
-    metal::float3 x_5,
-    metal::float3 r_7,
-    metal::float4 rl_4,
+    uint s_1,
+    uint depth,
     device type_13 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint i_2 = {};
-    i_2 = start;
+    uint level = 0u;
+    bool local_22 = {};
+    uint _e3 = bsh_first(nodes_3, bsh_nodes, _buffer_sizes);
+    i_2 = _e3;
     uint2 loop_bound_2 = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound_2 == uint2(0u))) { break; }
         loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
-        uint _e6 = i_2;
-        if (_e6 != BSH_NONE) {
+        uint _e7 = level;
+        if (_e7 < depth) {
+            uint _e11 = i_2;
+            local_22 = _e11 != BSH_NONE;
+        } else {
+            local_22 = false;
+        }
+        bool _e15 = local_22;
+        if (_e15) {
         } else {
             break;
         }
         {
-            uint _e9 = i_2;
-            BshNode _e10 = bsh_node(nodes_3, _e9, bsh_nodes, _buffer_sizes);
-            bool _e11 = bsh_reaches(_e10, x_5, r_7, rl_4);
+            uint _e16 = i_2;
+            BshNode _e17 = bsh_node(nodes_3, _e16, bsh_nodes, _buffer_sizes);
+            uint _e18 = level;
+            uint below = depth - _e18;
+            if (_e17.child == BSH_NONE) {
+                if ((s_1 << (32u - below)) != 0u) {
+                    return BSH_NONE;
+                }
+                uint _e29 = i_2;
+                return _e29;
+            }
+            if (((s_1 >> (below - 1u)) & 1u) == 0u) {
+                i_2 = _e17.child;
+            } else {
+                BshNode _e39 = bsh_node(nodes_3, _e17.child, bsh_nodes, _buffer_sizes);
+                i_2 = _e39.next;
+            }
+            uint _e41 = level;
+            level = _e41 + 1u;
+        }
+    }
+    uint _e44 = i_2;
+    return _e44;
+}
+
+uint bsh_next_leaf_box(
+    BshNodes nodes_4,
+    uint start_1,
+    uint end,
+    metal::float3 lo_1,
+    metal::float3 hi_1,
+    float w_5,
+    device type_13 const& bsh_nodes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint i_3 = {};
+    i_3 = start_1;
+    uint2 loop_bound_3 = uint2(4294967295u);
+    while(true) {
+        if (metal::all(loop_bound_3 == uint2(0u))) { break; }
+        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+        uint _e7 = i_3;
+        if (_e7 != end) {
+        } else {
+            break;
+        }
+        {
+            uint _e9 = i_3;
+            BshNode _e10 = bsh_node(nodes_4, _e9, bsh_nodes, _buffer_sizes);
+            bool _e11 = bsh_reaches_box(_e10, lo_1, hi_1, w_5);
             if (_e11) {
                 if (_e10.child == BSH_NONE) {
-                    uint _e15 = i_2;
+                    uint _e15 = i_3;
                     return _e15;
                 }
-                i_2 = _e10.child;
+                i_3 = _e10.child;
             } else {
-                i_2 = _e10.next;
+                i_3 = _e10.next;
             }
         }
     }
-    return BSH_NONE;
+    return end;
 }
 
 float next_threshold(
@@ -1096,8 +1197,8 @@ float next_threshold(
 
 Connection connect_record(
     GpuLight l_3,
-    metal::float3 x_6,
-    metal::float3 n_4,
+    metal::float3 x_5,
+    metal::float3 n_5,
     metal::float3 ng_1,
     float r2_2,
     float rt2_2,
@@ -1110,51 +1211,51 @@ Connection connect_record(
     device type_8 const& geo_tris,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Connection c_7 = {};
-    bool local_18 = {};
-    bool local_19 = {};
-    c_7.e = metal::float3(0.0);
+    Connection c_8 = {};
+    bool local_23 = {};
+    bool local_24 = {};
+    c_8.e = metal::float3(0.0);
     metal::float3 _e16 = light_point(l_3, u1_2, u2_2);
-    c_7.y = _e16;
-    metal::float3 _e19 = c_7.y;
-    float _e20 = connection_cosine(x_6, _e19, n_4, ng_1, r2_2);
-    c_7.cos_x = _e20;
-    float _e22 = c_7.cos_x;
+    c_8.y = _e16;
+    metal::float3 _e19 = c_8.y;
+    float _e20 = connection_cosine(x_5, _e19, n_5, ng_1, r2_2);
+    c_8.cos_x = _e20;
+    float _e22 = c_8.cos_x;
     if (!((_e22 <= 0.0))) {
         if (trace_1) {
-            metal::float3 _e33 = c_7.y;
-            bool _e34 = occluded(x_6 + (ng_1 * eps), _e33, geo_nodes, geo_tris, _buffer_sizes);
-            local_19 = _e34;
+            metal::float3 _e33 = c_8.y;
+            bool _e34 = occluded(x_5 + (ng_1 * eps), _e33, geo_nodes, geo_tris, _buffer_sizes);
+            local_24 = _e34;
         } else {
-            local_19 = false;
+            local_24 = false;
         }
-        bool _e36 = local_19;
-        local_18 = _e36;
+        bool _e36 = local_24;
+        local_23 = _e36;
     } else {
-        local_18 = true;
+        local_23 = true;
     }
-    bool _e38 = local_18;
+    bool _e38 = local_23;
     if (_e38) {
-        Connection _e39 = c_7;
+        Connection _e39 = c_8;
         return _e39;
     }
-    metal::float3 _e41 = c_7.y;
-    metal::float3 v_10 = x_6 - _e41;
-    float d2_8 = metal::dot(v_10, v_10);
-    metal::float3 _e48 = light_intensity(l_3, v_10 / metal::float3(metal::sqrt(d2_8)));
-    float _e50 = c_7.cos_x;
+    metal::float3 _e41 = c_8.y;
+    metal::float3 v_11 = x_5 - _e41;
+    float d2_8 = metal::dot(v_11, v_11);
+    metal::float3 _e48 = light_intensity(l_3, v_11 / metal::float3(metal::sqrt(d2_8)));
+    float _e50 = c_8.cos_x;
     float _e51 = connection_factor(_e50, d2_8, rt2_2, w_res);
-    c_7.e = _e48 * _e51;
-    Connection _e53 = c_7;
+    c_8.e = _e48 * _e51;
+    Connection _e53 = c_8;
     return _e53;
 }
 
 Connection connect_traced(
     uint li,
-    metal::float3 x_7,
-    metal::float3 n_5,
+    metal::float3 x_6,
+    metal::float3 n_6,
     metal::float3 ng_2,
-    float s,
+    float s_2,
     float w_res_1,
     float u1_3,
     float u2_3,
@@ -1170,20 +1271,20 @@ Connection connect_traced(
     GpuLight _e12 = lights[li];
     float _e15 = r2_3[li];
     float _e19 = rt2_3[li];
-    Connection _e21 = connect_record(_e12, x_7, n_5, ng_2, s * _e15, s * _e19, w_res_1, u1_3, u2_3, eps_1, trace_2, geo_nodes, geo_tris, _buffer_sizes);
+    Connection _e21 = connect_record(_e12, x_6, n_6, ng_2, s_2 * _e15, s_2 * _e19, w_res_1, u1_3, u2_3, eps_1, trace_2, geo_nodes, geo_tris, _buffer_sizes);
     return _e21;
 }
 
 float light_range_scale(
     uint li_1,
-    metal::float3 x_8,
+    metal::float3 x_7,
     metal::float3 r_8,
-    metal::float4 rl_5,
+    metal::float4 rl_4,
     device type_14 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuLightCone c_11 = light_cones[li_1];
-    float _e9 = range_scale_toward(rl_5, c_11.center, c_11.radius, x_8, r_8);
+    GpuLightCone c_12 = light_cones[li_1];
+    float _e9 = range_scale_toward(rl_4, c_12.center, c_12.radius, x_7, r_8);
     return _e9;
 }
 
@@ -1191,36 +1292,330 @@ metal::float4 surface_at(
     metal::int2 texel,
     metal::texture2d<float, metal::access::sample> position_tex
 ) {
-    metal::float4 p_3 = position_tex.read(metal::uint2(texel), 0);
-    return (p_3.w > 0.0) ? metal::float4(p_3.xyz, 1.0) : metal::float4(0.0);
+    metal::float4 p_5 = position_tex.read(metal::uint2(texel), 0);
+    return (p_5.w > 0.0) ? metal::float4(p_5.xyz, 1.0) : metal::float4(0.0);
+}
+
+WorkgroupBox workgroup_bounds(
+    uint li_2,
+    metal::float3 lo_2,
+    metal::float3 hi_2,
+    threadgroup type_18& wg_lo,
+    threadgroup type_18& wg_hi,
+    threadgroup WorkgroupBox& wg_box
+) {
+    uint stride = 32u;
+    wg_lo.inner[li_2] = lo_2;
+    wg_hi.inner[li_2] = hi_2;
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    uint2 loop_bound_4 = uint2(4294967295u);
+    bool loop_init_1 = true;
+    while(true) {
+        if (metal::all(loop_bound_4 == uint2(0u))) { break; }
+        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+        if (!loop_init_1) {
+            uint _e36 = stride;
+            stride = naga_div(_e36, 2u);
+        }
+        loop_init_1 = false;
+        uint _e9 = stride;
+        if (_e9 > 0u) {
+        } else {
+            break;
+        }
+        {
+            uint _e12 = stride;
+            if (li_2 < _e12) {
+                metal::float3 _e18 = wg_lo.inner[li_2];
+                uint _e20 = stride;
+                metal::float3 _e23 = wg_lo.inner[li_2 + _e20];
+                wg_lo.inner[li_2] = metal::min(_e18, _e23);
+                metal::float3 _e29 = wg_hi.inner[li_2];
+                uint _e31 = stride;
+                metal::float3 _e34 = wg_hi.inner[li_2 + _e31];
+                wg_hi.inner[li_2] = metal::max(_e29, _e34);
+            }
+            metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+        }
+    }
+    if (li_2 == 0u) {
+        metal::float3 _e44 = wg_lo.inner[0];
+        metal::float3 _e47 = wg_hi.inner[0];
+        wg_box = WorkgroupBox {_e44, _e47};
+    }
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    WorkgroupBox unnamed = wg_box;
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    return unnamed;
+}
+
+WorkgroupBox workgroup_box(
+    uint li_3,
+    metal::float3 p_2,
+    bool has,
+    threadgroup type_18& wg_lo,
+    threadgroup type_18& wg_hi,
+    threadgroup WorkgroupBox& wg_box
+) {
+    WorkgroupBox _e9 = workgroup_bounds(li_3, has ? p_2 : metal::float3(340282350000000000000000000000000000000.0), has ? p_2 : metal::float3(-340282350000000000000000000000000000000.0), wg_lo, wg_hi, wg_box);
+    return _e9;
+}
+
+bool box_is_empty(
+    WorkgroupBox b_6
+) {
+    return b_6.lo.x > b_6.hi.x;
+}
+
+uint tile_subtree(
+    uint s_3,
+    TileWalk t_1,
+    bool list,
+    uint at,
+    uint start_2,
+    uint to,
+    device type_13 const& bsh_nodes,
+    threadgroup type_19& tile_list,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint p_3 = {};
+    uint b_7 = {};
+    bool local_25 = {};
+    bool local_26 = {};
+    bool local_27 = {};
+    uint _e8 = bsh_subtree(BSH, s_3, BSH_TILE_DEPTH, bsh_nodes, _buffer_sizes);
+    if (_e8 == BSH_NONE) {
+        return 0u;
+    }
+    uint end_1 = bsh_nodes[_e8].next;
+    p_3 = at;
+    uint _e21 = bsh_next_leaf_box(BSH, _e8, end_1, t_1.lo, t_1.hi, t_1.w, bsh_nodes, _buffer_sizes);
+    b_7 = _e21;
+    uint2 loop_bound_5 = uint2(4294967295u);
+    bool loop_init_2 = true;
+    while(true) {
+        if (metal::all(loop_bound_5 == uint2(0u))) { break; }
+        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+        if (!loop_init_2) {
+            uint _e53 = b_7;
+            uint _e56 = bsh_nodes[_e53].next;
+            uint _e60 = bsh_next_leaf_box(BSH, _e56, end_1, t_1.lo, t_1.hi, t_1.w, bsh_nodes, _buffer_sizes);
+            b_7 = _e60;
+        }
+        loop_init_2 = false;
+        uint _e23 = b_7;
+        if (_e23 != end_1) {
+            if (!(!(list))) {
+                uint _e31 = p_3;
+                local_26 = _e31 < to;
+            } else {
+                local_26 = true;
+            }
+            bool _e34 = local_26;
+            local_25 = _e34;
+        } else {
+            local_25 = false;
+        }
+        bool _e36 = local_25;
+        if (_e36) {
+        } else {
+            break;
+        }
+        {
+            if (list) {
+                uint _e39 = p_3;
+                local_27 = _e39 >= start_2;
+            } else {
+                local_27 = false;
+            }
+            bool _e42 = local_27;
+            if (_e42) {
+                uint _e44 = p_3;
+                uint _e47 = b_7;
+                tile_list.inner[_e44 - start_2] = _e47;
+            }
+            uint _e48 = p_3;
+            p_3 = _e48 + 1u;
+        }
+    }
+    uint _e61 = p_3;
+    return _e61 - at;
+}
+
+TileWalk tile_walk_begin(
+    uint li_4,
+    metal::float3 x_8,
+    float w_6,
+    bool has_1,
+    device type_13 const& bsh_nodes,
+    threadgroup type_18& wg_lo,
+    threadgroup type_18& wg_hi,
+    threadgroup WorkgroupBox& wg_box,
+    threadgroup type_19& tile_list,
+    threadgroup type_20& subtree_at,
+    threadgroup metal::atomic_uint& tile_scale,
+    threadgroup uint& tile_total,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    TileWalk t_2 = {};
+    uint s_4 = {};
+    uint sum_1 = 0u;
+    uint s_5 = 0u;
+    uint _e8 = metal::atomic_fetch_max_explicit(&tile_scale, has_1 ? as_type<uint>(w_6) : 0u, metal::memory_order_relaxed);
+    WorkgroupBox _e9 = workgroup_box(li_4, x_8, has_1, wg_lo, wg_hi, wg_box);
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    uint unnamed_1 = metal::atomic_load_explicit(&tile_scale, metal::memory_order_relaxed);
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    t_2 = TileWalk {_e9.lo, _e9.hi, as_type<float>(unnamed_1), 0u};
+    bool _e18 = box_is_empty(_e9);
+    if (_e18) {
+        TileWalk _e19 = t_2;
+        return _e19;
+    }
+    s_4 = li_4;
+    uint2 loop_bound_6 = uint2(4294967295u);
+    bool loop_init_3 = true;
+    while(true) {
+        if (metal::all(loop_bound_6 == uint2(0u))) { break; }
+        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+        if (!loop_init_3) {
+            uint _e34 = s_4;
+            s_4 = _e34 + TILE_THREADS;
+        }
+        loop_init_3 = false;
+        uint _e21 = s_4;
+        if (_e21 < BSH_TILE_SUBTREES) {
+        } else {
+            break;
+        }
+        {
+            uint _e25 = s_4;
+            uint _e27 = s_4;
+            TileWalk _e28 = t_2;
+            uint _e33 = tile_subtree(_e27, _e28, false, 0u, 0u, 0u, bsh_nodes, tile_list, _buffer_sizes);
+            subtree_at.inner[_e25] = _e33;
+        }
+    }
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    if (li_4 == 0u) {
+        uint2 loop_bound_7 = uint2(4294967295u);
+        bool loop_init_4 = true;
+        while(true) {
+            if (metal::all(loop_bound_7 == uint2(0u))) { break; }
+            loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+            if (!loop_init_4) {
+                uint _e57 = s_5;
+                s_5 = _e57 + 1u;
+            }
+            loop_init_4 = false;
+            uint _e43 = s_5;
+            if (_e43 < BSH_TILE_SUBTREES) {
+            } else {
+                break;
+            }
+            {
+                uint _e47 = s_5;
+                uint c_13 = subtree_at.inner[_e47];
+                uint _e51 = s_5;
+                uint _e53 = sum_1;
+                subtree_at.inner[_e51] = _e53;
+                uint _e54 = sum_1;
+                sum_1 = _e54 + c_13;
+            }
+        }
+        uint _e60 = sum_1;
+        tile_total = _e60;
+    }
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    uint unnamed_2 = tile_total;
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    t_2.total = unnamed_2;
+    TileWalk _e64 = t_2;
+    return _e64;
+}
+
+uint tile_walk_fill(
+    uint li_5,
+    TileWalk t_3,
+    uint start_3,
+    device type_13 const& bsh_nodes,
+    threadgroup type_19& tile_list,
+    threadgroup type_20& subtree_at,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint s_6 = {};
+    uint past = {};
+    bool local_28 = {};
+    uint to_1 = metal::min(t_3.total, start_3 + TILE_LIST);
+    s_6 = li_5;
+    uint2 loop_bound_8 = uint2(4294967295u);
+    bool loop_init_5 = true;
+    while(true) {
+        if (metal::all(loop_bound_8 == uint2(0u))) { break; }
+        loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
+        if (!loop_init_5) {
+            uint _e38 = s_6;
+            s_6 = _e38 + TILE_THREADS;
+        }
+        loop_init_5 = false;
+        uint _e8 = s_6;
+        if (_e8 < BSH_TILE_SUBTREES) {
+        } else {
+            break;
+        }
+        {
+            uint _e12 = s_6;
+            uint at_1 = subtree_at.inner[_e12];
+            past = t_3.total;
+            uint _e17 = s_6;
+            if ((_e17 + 1u) < BSH_TILE_SUBTREES) {
+                uint _e23 = s_6;
+                uint _e27 = subtree_at.inner[_e23 + 1u];
+                past = _e27;
+            }
+            if (at_1 < to_1) {
+                uint _e31 = past;
+                local_28 = _e31 > start_3;
+            } else {
+                local_28 = false;
+            }
+            bool _e34 = local_28;
+            if (_e34) {
+                uint _e35 = s_6;
+                uint _e37 = tile_subtree(_e35, t_3, true, at_1, start_3, to_1, bsh_nodes, tile_list, _buffer_sizes);
+            }
+        }
+    }
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    return to_1 - start_3;
 }
 
 Shaded shade_connection(
-    Connection c_8,
+    Connection c_9,
     metal::float3 x_9,
-    metal::float3 n_6,
+    metal::float3 n_7,
     Material m_1
 ) {
-    Shaded s_1 = {};
-    s_1.e = c_8.e;
-    s_1.diffuse = metal::float3(0.0);
-    s_1.specular = metal::float3(0.0);
-    if (c_8.cos_x > 0.0) {
-        metal::float3 _e25 = bevy_brdf(m_1.base, m_1.metallic, m_1.roughness, m_1.reflectance, n_6, m_1.v, metal::normalize(c_8.y - x_9));
-        s_1.diffuse = _e25 * c_8.e;
+    Shaded s_7 = {};
+    s_7.e = c_9.e;
+    s_7.diffuse = metal::float3(0.0);
+    s_7.specular = metal::float3(0.0);
+    if (c_9.cos_x > 0.0) {
+        metal::float3 _e25 = bevy_brdf(m_1.base, m_1.metallic, m_1.roughness, m_1.reflectance, n_7, m_1.v, metal::normalize(c_9.y - x_9));
+        s_7.diffuse = _e25 * c_9.e;
     }
-    Shaded _e28 = s_1;
+    Shaded _e28 = s_7;
     return _e28;
 }
 
 Shaded shade_pick_traced(
-    uint li_2,
+    uint li_6,
     metal::float3 x_10,
-    metal::float3 n_7,
+    metal::float3 n_8,
     metal::float3 r_9,
-    metal::float4 rl_6,
+    metal::float4 rl_5,
     Material m_2,
-    float w_4,
+    float w_7,
     float u1_4,
     float u2_4,
     float eps_2,
@@ -1233,20 +1628,20 @@ Shaded shade_pick_traced(
     device type_14 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e11 = light_range_scale(li_2, x_10, r_9, rl_6, light_cones, _buffer_sizes);
-    Connection _e12 = connect_traced(li_2, x_10, n_7, n_7, _e11, w_4, u1_4, u2_4, eps_2, trace_3, geo_nodes, geo_tris, lights, rt2_3, r2_3, _buffer_sizes);
-    Shaded _e13 = shade_connection(_e12, x_10, n_7, m_2);
+    float _e11 = light_range_scale(li_6, x_10, r_9, rl_5, light_cones, _buffer_sizes);
+    Connection _e12 = connect_traced(li_6, x_10, n_8, n_8, _e11, w_7, u1_4, u2_4, eps_2, trace_3, geo_nodes, geo_tris, lights, rt2_3, r2_3, _buffer_sizes);
+    Shaded _e13 = shade_connection(_e12, x_10, n_8, m_2);
     return _e13;
 }
 
 Shaded shade_pick(
-    uint li_3,
+    uint li_7,
     metal::float3 x_11,
-    metal::float3 n_8,
+    metal::float3 n_9,
     metal::float3 r_10,
-    metal::float4 rl_7,
+    metal::float4 rl_6,
     Material m_3,
-    float w_5,
+    float w_8,
     float u1_5,
     float u2_5,
     float eps_3,
@@ -1258,7 +1653,7 @@ Shaded shade_pick(
     device type_14 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Shaded _e11 = shade_pick_traced(li_3, x_11, n_8, r_10, rl_7, m_3, w_5, u1_5, u2_5, eps_3, true, geo_nodes, geo_tris, lights, rt2_3, r2_3, light_cones, _buffer_sizes);
+    Shaded _e11 = shade_pick_traced(li_7, x_11, n_9, r_10, rl_6, m_3, w_8, u1_5, u2_5, eps_3, true, geo_nodes, geo_tris, lights, rt2_3, r2_3, light_cones, _buffer_sizes);
     return _e11;
 }
 
@@ -1275,37 +1670,37 @@ Material material_of(
 
 Shaded add(
     Shaded a_8,
-    Shaded b_7
+    Shaded b_8
 ) {
-    return Shaded {a_8.e + b_7.e, a_8.diffuse + b_7.diffuse, a_8.specular + b_7.specular};
+    return Shaded {a_8.e + b_8.e, a_8.diffuse + b_8.diffuse, a_8.specular + b_8.specular};
 }
 
 Shaded scaled(
-    Shaded s_2,
-    metal::float3 w_6
+    Shaded s_8,
+    metal::float3 w_9
 ) {
-    return Shaded {s_2.e * w_6, s_2.diffuse * w_6, s_2.specular * w_6};
+    return Shaded {s_8.e * w_9, s_8.diffuse * w_9, s_8.specular * w_9};
 }
 
 type_15 first_holders(
-    type_19 keys_1,
-    type_20 held_1
+    type_23 keys_1,
+    type_24 held_1
 ) {
     type_15 first = {};
     uint k_4 = 0u;
-    uint j_1 = {};
-    bool local_20 = {};
-    bool local_21 = {};
-    uint2 loop_bound_3 = uint2(4294967295u);
-    bool loop_init_1 = true;
+    uint j_2 = {};
+    bool local_29 = {};
+    bool local_30 = {};
+    uint2 loop_bound_9 = uint2(4294967295u);
+    bool loop_init_6 = true;
     while(true) {
-        if (metal::all(loop_bound_3 == uint2(0u))) { break; }
-        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-        if (!loop_init_1) {
+        if (metal::all(loop_bound_9 == uint2(0u))) { break; }
+        loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
+        if (!loop_init_6) {
             uint _e45 = k_4;
             k_4 = _e45 + 1u;
         }
-        loop_init_1 = false;
+        loop_init_6 = false;
         uint _e5 = k_4;
         if (_e5 < K) {
         } else {
@@ -1316,43 +1711,43 @@ type_15 first_holders(
             uint _e11 = k_4;
             uint _e12 = k_4;
             first.inner[_e8] = held_1.inner[_e12] ? _e11 : K;
-            j_1 = 0u;
-            uint2 loop_bound_4 = uint2(4294967295u);
-            bool loop_init_2 = true;
+            j_2 = 0u;
+            uint2 loop_bound_10 = uint2(4294967295u);
+            bool loop_init_7 = true;
             while(true) {
-                if (metal::all(loop_bound_4 == uint2(0u))) { break; }
-                loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
-                if (!loop_init_2) {
-                    uint _e42 = j_1;
-                    j_1 = _e42 + 1u;
+                if (metal::all(loop_bound_10 == uint2(0u))) { break; }
+                loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
+                if (!loop_init_7) {
+                    uint _e42 = j_2;
+                    j_2 = _e42 + 1u;
                 }
-                loop_init_2 = false;
-                uint _e17 = j_1;
+                loop_init_7 = false;
+                uint _e17 = j_2;
                 uint _e18 = k_4;
                 if (_e17 < _e18) {
                     uint _e22 = k_4;
-                    local_20 = held_1.inner[_e22];
+                    local_29 = held_1.inner[_e22];
                 } else {
-                    local_20 = false;
+                    local_29 = false;
                 }
-                bool _e25 = local_20;
+                bool _e25 = local_29;
                 if (_e25) {
                 } else {
                     break;
                 }
                 {
-                    uint _e26 = j_1;
+                    uint _e26 = j_2;
                     if (held_1.inner[_e26]) {
-                        uint _e30 = j_1;
+                        uint _e30 = j_2;
                         uint _e32 = k_4;
-                        local_21 = metal::all(keys_1.inner[_e30] == keys_1.inner[_e32]);
+                        local_30 = metal::all(keys_1.inner[_e30] == keys_1.inner[_e32]);
                     } else {
-                        local_21 = false;
+                        local_30 = false;
                     }
-                    bool _e37 = local_21;
+                    bool _e37 = local_30;
                     if (_e37) {
                         uint _e38 = k_4;
-                        uint _e40 = j_1;
+                        uint _e40 = j_2;
                         first.inner[_e38] = _e40;
                         break;
                     }
@@ -1365,15 +1760,16 @@ type_15 first_holders(
 }
 
 metal::float3 output_of(
-    Shaded s_3
+    Shaded s_9
 ) {
-    return s_3.diffuse + s_3.specular;
+    return s_9.diffuse + s_9.specular;
 }
 
 struct main_Input {
 };
 kernel void main_(
   metal::uint3 gid [[thread_position_in_grid]]
+, uint lid [[thread_index_in_threadgroup]]
 , device type_7 const& geo_nodes [[user(fake0)]]
 , device type_8 const& geo_tris [[user(fake0)]]
 , constant ViewParams& view [[user(fake0)]]
@@ -1387,289 +1783,377 @@ kernel void main_(
 , device type_4 const& r2_3 [[user(fake0)]]
 , device type_13 const& bsh_nodes [[user(fake0)]]
 , device type_14 const& light_cones [[user(fake0)]]
+, threadgroup type_18& wg_lo
+, threadgroup type_18& wg_hi
+, threadgroup WorkgroupBox& wg_box
+, threadgroup type_19& tile_list
+, threadgroup type_20& subtree_at
+, threadgroup metal::atomic_uint& tile_scale
+, threadgroup uint& tile_total
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
+    if (lid == 0u) {
+        wg_lo = {};
+        wg_hi = {};
+        wg_box = {};
+        tile_list = {};
+        subtree_at = {};
+        metal::atomic_store_explicit(&tile_scale, 0, metal::memory_order_relaxed);
+        tile_total = {};
+    }
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
     bool local = {};
+    metal::float4 s = metal::float4(0.0);
+    metal::float3 nn = metal::float3(0.0);
     bool local_1 = {};
+    bool local_2 = {};
+    bool local_3 = {};
+    metal::float3 n = metal::float3(0.0, 0.0, 1.0);
     Material m = {};
     metal::float4 lobe = metal::float4(1.0, 0.0, 1.0, 1.0);
     metal::float3 r = {};
     uint h = {};
     Shaded t = Shaded {metal::float3(0.0), metal::float3(0.0), metal::float3(0.0)};
     type_15 slot_light = {};
-    type_22 slot_u = {};
-    type_23 slot_p = {};
+    type_26 slot_u = {};
+    type_27 slot_p = {};
     metal::float3 total = metal::float3(0.0);
     uint count = 0u;
     uint hc = {};
-    type_23 threshold = {};
-    uint b = {};
+    type_27 threshold = {};
+    bool local_4 = {};
+    uint start = 0u;
+    uint j = {};
+    bool local_5 = {};
     uint q = {};
-    bool local_2 = {};
-    type_19 keys = {};
-    type_20 held = {};
+    bool local_6 = {};
+    type_23 keys = {};
+    type_24 held = {};
     uint k = 0u;
     uint k_1 = 0u;
     metal::float3 w = {};
-    uint j = {};
-    bool local_3 = {};
-    uint _e4 = view.width;
-    if (!((gid.x >= _e4))) {
+    uint j_1 = {};
+    bool local_7 = {};
+    uint _e5 = view.width;
+    if (gid.x < _e5) {
         uint _e12 = view.height;
-        local = gid.y >= _e12;
+        local = gid.y < _e12;
     } else {
-        local = true;
+        local = false;
     }
-    bool _e15 = local;
-    if (_e15) {
-        return;
-    }
+    bool inside = local;
     metal::int2 texel_1 = metal::int2(static_cast<int>(gid.x), static_cast<int>(gid.y));
-    metal::float4 _e21 = surface_at(texel_1, position_tex);
-    metal::float4 _e24 = normal_tex.read(metal::uint2(texel_1), 0);
-    metal::float3 nn = _e24.xyz;
-    float len2_ = metal::dot(nn, nn);
-    if (!((_e21.w <= 0.0))) {
-        local_1 = !((len2_ > 0.0));
+    if (inside) {
+        metal::float4 _e27 = surface_at(texel_1, position_tex);
+        s = _e27;
+        metal::float4 _e30 = normal_tex.read(metal::uint2(texel_1), 0);
+        nn = _e30.xyz;
+    }
+    metal::float3 _e32 = nn;
+    metal::float3 _e33 = nn;
+    float len2_ = metal::dot(_e32, _e33);
+    metal::float4 _e35 = s;
+    metal::float3 x_13 = _e35.xyz;
+    if (inside) {
+        float _e40 = s.w;
+        local_1 = _e40 > 0.0;
     } else {
-        local_1 = true;
+        local_1 = false;
     }
-    bool _e37 = local_1;
-    if (_e37) {
-        out_tex.write(metal::float4(0.0), metal::uint2(texel_1));
-        return;
+    bool _e44 = local_1;
+    if (_e44) {
+        local_2 = len2_ > 0.0;
+    } else {
+        local_2 = false;
     }
-    metal::float3 x_13 = _e21.xyz;
-    metal::float3 n_11 = nn / metal::float3(metal::sqrt(len2_));
-    r = n_11;
-    metal::float4 mr = metal_rough_tex.read(metal::uint2(texel_1), 0);
-    metal::float4 _e58 = base_color_tex.read(metal::uint2(texel_1), 0);
-    metal::float3 _e65 = view.eye;
-    Material _e68 = material_of(_e58.xyz, mr.z, mr.y, mr.w, metal::normalize(_e65 - x_13));
-    m = _e68;
-    metal::float3 _e70 = m.base;
-    float _e72 = m.metallic;
-    float _e74 = bevy_f0_(mr.w);
-    float _e78 = m.alpha;
-    metal::float3 _e80 = m.v;
-    metal::float4 _e82 = receiver_lobe(_e70, _e72, metal::float3(_e74), 1.0, _e78, metal::dot(n_11, _e80));
-    lobe = _e82;
-    metal::float3 _e84 = m.v;
-    metal::float3 _e85 = mirror_dir(n_11, _e84);
-    r = _e85;
-    metal::float4 _e86 = lobe;
-    metal::float4 _e87 = range_lobe(_e86);
-    float _e90 = view.shadow_offset;
-    metal::float3 _e93 = view.eye;
-    float eps_4 = _e90 * metal::length(_e93 - x_13);
-    uint _e99 = view.seed;
-    uint _e103 = view.width;
-    uint _e109 = view.frame;
-    uint _e110 = point_stream(_e99, (gid.y * _e103) + gid.x, _e109);
-    uint _e111 = pick_stream(_e110);
-    h = _e111;
-    hc = _e110;
-    uint _e133 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
-    metal::float3 _e134 = r;
-    uint _e135 = bsh_next_leaf_lobe(BSH, _e133, x_13, _e134, _e87, bsh_nodes, _buffer_sizes);
-    b = _e135;
-    uint2 loop_bound_5 = uint2(4294967295u);
-    bool loop_init_3 = true;
+    bool _e50 = local_2;
+    if (_e50) {
+        local_3 = metal::all(metal::abs(x_13) <= metal::float3(340282350000000000000000000000000000000.0));
+    } else {
+        local_3 = false;
+    }
+    bool has_2 = local_3;
+    if (has_2) {
+        metal::float3 _e65 = nn;
+        n = _e65 / metal::float3(metal::sqrt(len2_));
+    }
+    metal::float3 _e76 = n;
+    r = _e76;
+    if (has_2) {
+        metal::float4 mr = metal_rough_tex.read(metal::uint2(texel_1), 0);
+        metal::float4 _e83 = base_color_tex.read(metal::uint2(texel_1), 0);
+        metal::float3 _e90 = view.eye;
+        Material _e93 = material_of(_e83.xyz, mr.z, mr.y, mr.w, metal::normalize(_e90 - x_13));
+        m = _e93;
+        metal::float3 _e95 = m.base;
+        float _e97 = m.metallic;
+        float _e99 = bevy_f0_(mr.w);
+        float _e103 = m.alpha;
+        metal::float3 _e104 = n;
+        metal::float3 _e106 = m.v;
+        metal::float4 _e108 = receiver_lobe(_e95, _e97, metal::float3(_e99), 1.0, _e103, metal::dot(_e104, _e106));
+        lobe = _e108;
+        metal::float3 _e109 = n;
+        metal::float3 _e111 = m.v;
+        metal::float3 _e112 = mirror_dir(_e109, _e111);
+        r = _e112;
+    }
+    metal::float4 _e113 = lobe;
+    metal::float4 _e114 = range_lobe(_e113);
+    float _e117 = view.shadow_offset;
+    metal::float3 _e120 = view.eye;
+    float eps_4 = _e117 * metal::length(_e120 - x_13);
+    uint _e126 = view.seed;
+    uint _e130 = view.width;
+    uint _e136 = view.frame;
+    uint _e137 = point_stream(_e126, (gid.y * _e130) + gid.x, _e136);
+    uint _e138 = pick_stream(_e137);
+    h = _e138;
+    hc = _e137;
+    if (has_2) {
+        local_4 = _e114.w >= 0.0;
+    } else {
+        local_4 = false;
+    }
+    bool _e165 = local_4;
+    TileWalk _e166 = tile_walk_begin(lid, x_13, _e114.w, _e165, bsh_nodes, wg_lo, wg_hi, wg_box, tile_list, subtree_at, tile_scale, tile_total, _buffer_sizes);
+    uint2 loop_bound_11 = uint2(4294967295u);
+    bool loop_init_8 = true;
     while(true) {
-        if (metal::all(loop_bound_5 == uint2(0u))) { break; }
-        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
-        if (!loop_init_3) {
-            uint _e206 = b;
-            uint _e209 = bsh_nodes[_e206].next;
-            metal::float3 _e210 = r;
-            uint _e211 = bsh_next_leaf_lobe(BSH, _e209, x_13, _e210, _e87, bsh_nodes, _buffer_sizes);
-            b = _e211;
+        if (metal::all(loop_bound_11 == uint2(0u))) { break; }
+        loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
+        if (!loop_init_8) {
+            uint _e261 = start;
+            start = _e261 + TILE_LIST;
         }
-        loop_init_3 = false;
-        uint _e137 = b;
-        if (_e137 != BSH_NONE) {
+        loop_init_8 = false;
+        uint _e169 = start;
+        if (_e169 < _e166.total) {
         } else {
             break;
         }
         {
-            uint _e140 = count;
-            count = _e140 + 1u;
-            uint _e144 = b;
-            uint li_4 = bsh_nodes[_e144].light;
-            uint _e148 = h;
-            uint _e149 = pcg_hash(_e148);
-            h = _e149;
-            uint _e150 = h;
-            float _e151 = xi_from_bits(_e150);
-            uint _e152 = h;
-            uint _e153 = pcg_hash(_e152);
-            h = _e153;
-            uint _e154 = h;
-            float _e155 = xi_from_bits(_e154);
-            metal::float2 u_4 = metal::float2(_e151, _e155);
-            metal::float3 _e157 = r;
-            Material _e158 = m;
-            Shaded _e163 = shade_pick_traced(li_4, x_13, n_11, _e157, _e87, _e158, 1.0, u_4.x, u_4.y, eps_4, false, geo_nodes, geo_tris, lights, rt2_3, r2_3, light_cones, _buffer_sizes);
-            metal::float3 _e164 = output_of(_e163);
-            float _e165 = resample_target(_e164);
-            if (_e165 > 0.0) {
-                metal::float3 _e168 = total;
-                total = _e168 + _e164;
-                q = 0u;
-                uint2 loop_bound_6 = uint2(4294967295u);
-                bool loop_init_4 = true;
-                while(true) {
-                    if (metal::all(loop_bound_6 == uint2(0u))) { break; }
-                    loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-                    if (!loop_init_4) {
-                        uint _e202 = q;
-                        q = _e202 + 1u;
-                    }
-                    loop_init_4 = false;
-                    uint _e172 = q;
-                    if (_e172 < K) {
+            uint _e172 = start;
+            uint _e173 = tile_walk_fill(lid, _e166, _e172, bsh_nodes, tile_list, subtree_at, _buffer_sizes);
+            j = 0u;
+            uint2 loop_bound_12 = uint2(4294967295u);
+            bool loop_init_9 = true;
+            while(true) {
+                if (metal::all(loop_bound_12 == uint2(0u))) { break; }
+                loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
+                if (!loop_init_9) {
+                    uint _e259 = j;
+                    j = _e259 + 1u;
+                }
+                loop_init_9 = false;
+                uint _e176 = j;
+                if (_e176 < _e173) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e179 = j;
+                    uint b_9 = tile_list.inner[_e179];
+                    if (!(!(has_2))) {
+                        BshNode _e188 = bsh_nodes[b_9];
+                        metal::float3 _e189 = r;
+                        bool _e190 = bsh_reaches(_e188, x_13, _e189, _e114);
+                        local_5 = !(_e190);
                     } else {
-                        break;
+                        local_5 = true;
                     }
-                    {
-                        uint _e175 = q;
-                        float _e177 = slot_target(_e164, _e175, K);
-                        metal::float3 _e178 = total;
-                        uint _e179 = q;
-                        float _e181 = slot_target(_e178, _e179, K);
-                        if (_e177 > 0.0) {
-                            uint _e186 = q;
-                            float _e188 = threshold.inner[_e186];
-                            local_2 = _e181 > _e188;
-                        } else {
-                            local_2 = false;
-                        }
-                        bool _e191 = local_2;
-                        if (_e191) {
-                            uint _e192 = q;
-                            slot_light.inner[_e192] = li_4;
-                            uint _e194 = q;
-                            slot_u.inner[_e194] = u_4;
-                            uint _e196 = q;
-                            slot_p.inner[_e196] = _e177;
-                            uint _e198 = q;
-                            float _e200 = next_threshold(_e181, hc);
-                            threshold.inner[_e198] = _e200;
+                    bool _e193 = local_5;
+                    if (_e193) {
+                        continue;
+                    }
+                    uint li_8 = bsh_nodes[b_9].light;
+                    uint _e198 = count;
+                    count = _e198 + 1u;
+                    uint _e201 = h;
+                    uint _e202 = pcg_hash(_e201);
+                    h = _e202;
+                    uint _e203 = h;
+                    float _e204 = xi_from_bits(_e203);
+                    uint _e205 = h;
+                    uint _e206 = pcg_hash(_e205);
+                    h = _e206;
+                    uint _e207 = h;
+                    float _e208 = xi_from_bits(_e207);
+                    metal::float2 u_4 = metal::float2(_e204, _e208);
+                    metal::float3 _e210 = n;
+                    metal::float3 _e211 = r;
+                    Material _e212 = m;
+                    Shaded _e217 = shade_pick_traced(li_8, x_13, _e210, _e211, _e114, _e212, 1.0, u_4.x, u_4.y, eps_4, false, geo_nodes, geo_tris, lights, rt2_3, r2_3, light_cones, _buffer_sizes);
+                    metal::float3 _e218 = output_of(_e217);
+                    float _e219 = resample_target(_e218);
+                    if (_e219 > 0.0) {
+                        metal::float3 _e222 = total;
+                        total = _e222 + _e218;
+                        q = 0u;
+                        uint2 loop_bound_13 = uint2(4294967295u);
+                        bool loop_init_10 = true;
+                        while(true) {
+                            if (metal::all(loop_bound_13 == uint2(0u))) { break; }
+                            loop_bound_13 -= uint2(loop_bound_13.y == 0u, 1u);
+                            if (!loop_init_10) {
+                                uint _e256 = q;
+                                q = _e256 + 1u;
+                            }
+                            loop_init_10 = false;
+                            uint _e226 = q;
+                            if (_e226 < K) {
+                            } else {
+                                break;
+                            }
+                            {
+                                uint _e229 = q;
+                                float _e231 = slot_target(_e218, _e229, K);
+                                metal::float3 _e232 = total;
+                                uint _e233 = q;
+                                float _e235 = slot_target(_e232, _e233, K);
+                                if (_e231 > 0.0) {
+                                    uint _e240 = q;
+                                    float _e242 = threshold.inner[_e240];
+                                    local_6 = _e235 > _e242;
+                                } else {
+                                    local_6 = false;
+                                }
+                                bool _e245 = local_6;
+                                if (_e245) {
+                                    uint _e246 = q;
+                                    slot_light.inner[_e246] = li_8;
+                                    uint _e248 = q;
+                                    slot_u.inner[_e248] = u_4;
+                                    uint _e250 = q;
+                                    slot_p.inner[_e250] = _e231;
+                                    uint _e252 = q;
+                                    float _e254 = next_threshold(_e235, hc);
+                                    threshold.inner[_e252] = _e254;
+                                }
+                            }
                         }
                     }
                 }
             }
+            metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
         }
     }
-    uint2 loop_bound_7 = uint2(4294967295u);
-    bool loop_init_5 = true;
-    while(true) {
-        if (metal::all(loop_bound_7 == uint2(0u))) { break; }
-        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
-        if (!loop_init_5) {
-            uint _e234 = k;
-            k = _e234 + 1u;
+    if (!(has_2)) {
+        if (inside) {
+            out_tex.write(metal::float4(0.0), metal::uint2(texel_1));
         }
-        loop_init_5 = false;
-        uint _e216 = k;
-        if (_e216 < K) {
+        return;
+    }
+    uint2 loop_bound_14 = uint2(4294967295u);
+    bool loop_init_11 = true;
+    while(true) {
+        if (metal::all(loop_bound_14 == uint2(0u))) { break; }
+        loop_bound_14 -= uint2(loop_bound_14.y == 0u, 1u);
+        if (!loop_init_11) {
+            uint _e290 = k;
+            k = _e290 + 1u;
+        }
+        loop_init_11 = false;
+        uint _e272 = k;
+        if (_e272 < K) {
         } else {
             break;
         }
         {
-            uint _e219 = k;
-            uint _e221 = k;
-            uint _e223 = slot_light.inner[_e221];
-            keys.inner[_e219] = metal::uint2(_e223, 0u);
-            uint _e226 = k;
-            uint _e228 = k;
-            float _e230 = slot_p.inner[_e228];
-            held.inner[_e226] = _e230 > 0.0;
+            uint _e275 = k;
+            uint _e277 = k;
+            uint _e279 = slot_light.inner[_e277];
+            keys.inner[_e275] = metal::uint2(_e279, 0u);
+            uint _e282 = k;
+            uint _e284 = k;
+            float _e286 = slot_p.inner[_e284];
+            held.inner[_e282] = _e286 > 0.0;
         }
     }
-    type_19 _e236 = keys;
-    type_20 _e237 = held;
-    type_15 _e238 = first_holders(_e236, _e237);
-    uint2 loop_bound_8 = uint2(4294967295u);
-    bool loop_init_6 = true;
+    type_23 _e292 = keys;
+    type_24 _e293 = held;
+    type_15 _e294 = first_holders(_e292, _e293);
+    uint2 loop_bound_15 = uint2(4294967295u);
+    bool loop_init_12 = true;
     while(true) {
-        if (metal::all(loop_bound_8 == uint2(0u))) { break; }
-        loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
-        if (!loop_init_6) {
-            uint _e301 = k_1;
-            k_1 = _e301 + 1u;
+        if (metal::all(loop_bound_15 == uint2(0u))) { break; }
+        loop_bound_15 -= uint2(loop_bound_15.y == 0u, 1u);
+        if (!loop_init_12) {
+            uint _e358 = k_1;
+            k_1 = _e358 + 1u;
         }
-        loop_init_6 = false;
-        uint _e241 = k_1;
-        if (_e241 < K) {
+        loop_init_12 = false;
+        uint _e297 = k_1;
+        if (_e297 < K) {
         } else {
             break;
         }
         {
             w = metal::float3(0.0);
-            uint _e247 = k_1;
-            uint _e249 = k_1;
-            bool first_1 = _e238.inner[_e247] == _e249;
-            uint _e251 = k_1;
-            j = _e251;
-            uint2 loop_bound_9 = uint2(4294967295u);
-            bool loop_init_7 = true;
+            uint _e303 = k_1;
+            uint _e305 = k_1;
+            bool first_1 = _e294.inner[_e303] == _e305;
+            uint _e307 = k_1;
+            j_1 = _e307;
+            uint2 loop_bound_16 = uint2(4294967295u);
+            bool loop_init_13 = true;
             while(true) {
-                if (metal::all(loop_bound_9 == uint2(0u))) { break; }
-                loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
-                if (!loop_init_7) {
-                    uint _e279 = j;
-                    j = _e279 + 1u;
+                if (metal::all(loop_bound_16 == uint2(0u))) { break; }
+                loop_bound_16 -= uint2(loop_bound_16.y == 0u, 1u);
+                if (!loop_init_13) {
+                    uint _e335 = j_1;
+                    j_1 = _e335 + 1u;
                 }
-                loop_init_7 = false;
-                uint _e253 = j;
-                if (_e253 < K) {
-                    local_3 = first_1;
+                loop_init_13 = false;
+                uint _e309 = j_1;
+                if (_e309 < K) {
+                    local_7 = first_1;
                 } else {
-                    local_3 = false;
+                    local_7 = false;
                 }
-                bool _e259 = local_3;
-                if (_e259) {
+                bool _e315 = local_7;
+                if (_e315) {
                 } else {
                     break;
                 }
                 {
-                    uint _e260 = j;
-                    uint _e262 = k_1;
-                    if (_e238.inner[_e260] == _e262) {
-                        metal::float3 _e264 = w;
-                        metal::float3 _e265 = total;
-                        uint _e266 = j;
-                        float _e268 = slot_target(_e265, _e266, K);
-                        uint _e269 = j;
-                        float _e271 = slot_p.inner[_e269];
-                        uint _e273 = j;
-                        metal::float3 _e275 = slot_share(_e273, K);
-                        w = _e264 + ((_e268 / _e271) * _e275);
+                    uint _e316 = j_1;
+                    uint _e318 = k_1;
+                    if (_e294.inner[_e316] == _e318) {
+                        metal::float3 _e320 = w;
+                        metal::float3 _e321 = total;
+                        uint _e322 = j_1;
+                        float _e324 = slot_target(_e321, _e322, K);
+                        uint _e325 = j_1;
+                        float _e327 = slot_p.inner[_e325];
+                        uint _e329 = j_1;
+                        metal::float3 _e331 = slot_share(_e329, K);
+                        w = _e320 + ((_e324 / _e327) * _e331);
                     }
                 }
             }
             if (first_1) {
-                Shaded _e281 = t;
-                uint _e282 = k_1;
-                uint _e284 = slot_light.inner[_e282];
-                metal::float3 _e285 = r;
-                Material _e286 = m;
-                uint _e288 = k_1;
-                float _e291 = slot_u.inner[_e288].x;
-                uint _e292 = k_1;
-                float _e295 = slot_u.inner[_e292].y;
-                Shaded _e296 = shade_pick(_e284, x_13, n_11, _e285, _e87, _e286, 1.0, _e291, _e295, eps_4, geo_nodes, geo_tris, lights, rt2_3, r2_3, light_cones, _buffer_sizes);
-                metal::float3 _e297 = w;
-                Shaded _e298 = scaled(_e296, _e297);
-                Shaded _e299 = add(_e281, _e298);
-                t = _e299;
+                Shaded _e337 = t;
+                uint _e338 = k_1;
+                uint _e340 = slot_light.inner[_e338];
+                metal::float3 _e341 = n;
+                metal::float3 _e342 = r;
+                Material _e343 = m;
+                uint _e345 = k_1;
+                float _e348 = slot_u.inner[_e345].x;
+                uint _e349 = k_1;
+                float _e352 = slot_u.inner[_e349].y;
+                Shaded _e353 = shade_pick(_e340, x_13, _e341, _e342, _e114, _e343, 1.0, _e348, _e352, eps_4, geo_nodes, geo_tris, lights, rt2_3, r2_3, light_cones, _buffer_sizes);
+                metal::float3 _e354 = w;
+                Shaded _e355 = scaled(_e353, _e354);
+                Shaded _e356 = add(_e337, _e355);
+                t = _e356;
             }
         }
     }
-    metal::float3 _e305 = t.diffuse;
-    metal::float3 _e307 = t.specular;
-    uint _e309 = count;
-    out_tex.write(metal::float4(_e305 + _e307, static_cast<float>(_e309)), metal::uint2(texel_1));
+    metal::float3 _e362 = t.diffuse;
+    metal::float3 _e364 = t.specular;
+    uint _e366 = count;
+    out_tex.write(metal::float4(_e362 + _e364, static_cast<float>(_e366)), metal::uint2(texel_1));
     return;
 }

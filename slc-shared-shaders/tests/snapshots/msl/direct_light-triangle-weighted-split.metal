@@ -98,9 +98,30 @@ struct type_16 {
 struct WeightedPicks {
     type_14 light;
     type_16 w;
+    type_16 threshold;
     float w_sum;
     uint n;
     uint h;
+};
+struct type_19 {
+    metal::float3 inner[64];
+};
+struct WorkgroupBox {
+    metal::float3 lo;
+    metal::float3 hi;
+};
+struct type_20 {
+    uint inner[1024];
+};
+struct type_21 {
+    uint inner[256];
+};
+struct TileWalk {
+    metal::float3 lo;
+    metal::packed_float3 hi;
+    float w;
+    uint total;
+    char _pad4[12];
 };
 struct Shaded {
     metal::float3 e;
@@ -117,10 +138,10 @@ struct Material {
     float reflectance;
     char _pad6[12];
 };
-struct type_19 {
+struct type_24 {
     metal::uint2 inner[8];
 };
-struct type_20 {
+struct type_25 {
     bool inner[8];
 };
 constant uint LIGHT_POINT = 0u;
@@ -181,6 +202,11 @@ constant float TEMPORAL_CHANGE_HIGH = 8.0;
 constant float TEMPORAL_MIN_WEIGHT = 0.01;
 constant uint K = 8u;
 constant BshNodes BSH = 0u;
+constant uint BSH_TILE_DEPTH = 8u;
+constant uint BSH_TILE_SUBTREES = 256u;
+constant uint TILE_THREADS = 64u;
+constant uint BOX_THREADS = 64u;
+constant uint TILE_LIST = 1024u;
 
 float to_f32_(
     uint u
@@ -268,6 +294,17 @@ bool sphere_contains_point(
     return metal::dot(v_6, v_6) <= (r_1 * r_1);
 }
 
+bool sphere_overlaps_aabb(
+    metal::float3 c_1,
+    float r_2,
+    metal::float3 bmin,
+    metal::float3 bmax
+) {
+    metal::float3 q = metal::clamp(c_1, bmin, bmax);
+    metal::float3 v_7 = q - c_1;
+    return metal::dot(v_7, v_7) <= (r_2 * r_2);
+}
+
 float inverse_square(
     float d2_2
 ) {
@@ -288,32 +325,32 @@ float connection_factor(
 float connection_cosine(
     metal::float3 x_2,
     metal::float3 y,
-    metal::float3 n,
+    metal::float3 n_1,
     metal::float3 ng,
     float r2_1
 ) {
-    bool local_2 = {};
-    bool local_3 = {};
-    metal::float3 v_7 = x_2 - y;
-    float d2_7 = metal::dot(v_7, v_7);
+    bool local_6 = {};
+    bool local_7 = {};
+    metal::float3 v_8 = x_2 - y;
+    float d2_7 = metal::dot(v_8, v_8);
     bool _e7 = slc_keep(r2_1, d2_7);
     if (!(!(_e7))) {
-        local_2 = !((d2_7 > 0.0));
+        local_6 = !((d2_7 > 0.0));
     } else {
-        local_2 = true;
+        local_6 = true;
     }
-    bool _e16 = local_2;
+    bool _e16 = local_6;
     if (_e16) {
         return 0.0;
     }
-    metal::float3 w_6 = v_7 / metal::float3(metal::sqrt(d2_7));
-    float cos_x_1 = -(metal::dot(n, w_6));
+    metal::float3 w_10 = v_8 / metal::float3(metal::sqrt(d2_7));
+    float cos_x_1 = -(metal::dot(n_1, w_10));
     if (!((cos_x_1 <= 0.0))) {
-        local_3 = metal::dot(ng, w_6) >= 0.0;
+        local_7 = metal::dot(ng, w_10) >= 0.0;
     } else {
-        local_3 = true;
+        local_7 = true;
     }
-    bool _e32 = local_3;
+    bool _e32 = local_7;
     if (_e32) {
         return 0.0;
     }
@@ -321,24 +358,24 @@ float connection_cosine(
 }
 
 float triangle_lobe(
-    metal::float3 n_1,
+    metal::float3 n_2,
     float area,
     metal::float3 w_1
 ) {
-    return area * metal::max(metal::dot(n_1, w_1), 0.0);
+    return area * metal::max(metal::dot(n_2, w_1), 0.0);
 }
 
 metal::float3 triangle_sample(
     metal::float3 a_2,
     metal::float3 b_2,
-    metal::float3 c_1,
+    metal::float3 c_2,
     float u1_,
     float u2_
 ) {
     float su = metal::sqrt(u1_);
     float b0_ = 1.0 - su;
     float b1_ = u2_ * su;
-    return ((a_2 * b0_) + (b_2 * b1_)) + (c_1 * ((1.0 - b0_) - b1_));
+    return ((a_2 * b0_) + (b_2 * b1_)) + (c_2 * ((1.0 - b0_) - b1_));
 }
 
 float bsh_scaled_radius(
@@ -395,8 +432,8 @@ float ggx_d(
         return 0.0;
     }
     float a2_ = alpha * alpha;
-    float t_1 = ((cos_h * cos_h) * a2_) + sin2_h;
-    return (a2_ * INV_PI) / (t_1 * t_1);
+    float t_4 = ((cos_h * cos_h) * a2_) + sin2_h;
+    return (a2_ * INV_PI) / (t_4 * t_4);
 }
 
 float smith_root(
@@ -412,13 +449,13 @@ float smith_visibility(
     float n_v,
     float alpha_2
 ) {
-    bool local_4 = {};
+    bool local_8 = {};
     if (!((n_l <= 0.0))) {
-        local_4 = n_v <= 0.0;
+        local_8 = n_v <= 0.0;
     } else {
-        local_4 = true;
+        local_8 = true;
     }
-    bool _e11 = local_4;
+    bool _e11 = local_8;
     if (_e11) {
         return 0.0;
     }
@@ -432,9 +469,9 @@ metal::float3 fresnel_schlick(
     float f90_,
     float v_h
 ) {
-    float c_7 = metal::saturate(1.0 - v_h);
-    float c2_ = c_7 * c_7;
-    return f0_ + ((metal::float3(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_7));
+    float c_8 = metal::saturate(1.0 - v_h);
+    float c2_ = c_8 * c_8;
+    return f0_ + ((metal::float3(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_8));
 }
 
 metal::float3 specular_fresnel(
@@ -464,12 +501,12 @@ float half_cosine(
     metal::float3 v,
     metal::float3 l
 ) {
-    metal::float3 h_3 = v + l;
-    float len2_ = metal::dot(h_3, h_3);
+    metal::float3 h_4 = v + l;
+    float len2_ = metal::dot(h_4, h_4);
     if (len2_ <= 0.0) {
         return 0.0;
     }
-    return metal::saturate(metal::dot(v, h_3) / metal::sqrt(len2_));
+    return metal::saturate(metal::dot(v, h_4) / metal::sqrt(len2_));
 }
 
 metal::float3 specular_brdf(
@@ -478,28 +515,28 @@ metal::float3 specular_brdf(
     metal::float3 f0_d_2,
     float f90_d_2,
     float alpha_3,
-    metal::float3 n_2,
+    metal::float3 n_3,
     metal::float3 v_1,
     metal::float3 l_1
 ) {
-    bool local_5 = {};
-    float n_l_1 = metal::dot(n_2, l_1);
-    float n_v_2 = metal::dot(n_2, v_1);
+    bool local_9 = {};
+    float n_l_1 = metal::dot(n_3, l_1);
+    float n_v_2 = metal::dot(n_3, v_1);
     if (!((n_l_1 <= 0.0))) {
-        local_5 = n_v_2 <= 0.0;
+        local_9 = n_v_2 <= 0.0;
     } else {
-        local_5 = true;
+        local_9 = true;
     }
-    bool _e18 = local_5;
+    bool _e18 = local_9;
     if (_e18) {
         return metal::float3(0.0, 0.0, 0.0);
     }
     metal::float3 hs = v_1 + l_1;
     float inv = 1.0 / metal::sqrt(metal::dot(hs, hs));
-    metal::float3 h_4 = hs * inv;
-    metal::float3 c_8 = metal::cross(n_2, h_4);
-    float _e32 = ggx_d(metal::dot(n_2, h_4), metal::dot(c_8, c_8), alpha_3);
-    metal::float3 _e34 = specular_fresnel(base_2, metallic_2, f0_d_2, f90_d_2, metal::dot(v_1, h_4));
+    metal::float3 h_5 = hs * inv;
+    metal::float3 c_9 = metal::cross(n_3, h_5);
+    float _e32 = ggx_d(metal::dot(n_3, h_5), metal::dot(c_9, c_9), alpha_3);
+    metal::float3 _e34 = specular_fresnel(base_2, metallic_2, f0_d_2, f90_d_2, metal::dot(v_1, h_5));
     float _e35 = smith_visibility(n_l_1, n_v_2, alpha_3);
     return _e34 * (_e32 * _e35);
 }
@@ -509,27 +546,27 @@ bool has_specular(
     metal::float3 f0_d_3,
     float f90_d_3
 ) {
-    bool local_6 = {};
-    bool local_7 = {};
+    bool local_10 = {};
+    bool local_11 = {};
     if (!((metallic_3 > 0.0))) {
-        local_6 = f90_d_3 > 0.0;
+        local_10 = f90_d_3 > 0.0;
     } else {
-        local_6 = true;
+        local_10 = true;
     }
-    bool _e11 = local_6;
+    bool _e11 = local_10;
     if (!(_e11)) {
-        local_7 = metal::max(metal::max(f0_d_3.x, f0_d_3.y), f0_d_3.z) > 0.0;
+        local_11 = metal::max(metal::max(f0_d_3.x, f0_d_3.y), f0_d_3.z) > 0.0;
     } else {
-        local_7 = true;
+        local_11 = true;
     }
-    bool _e23 = local_7;
+    bool _e23 = local_11;
     return _e23;
 }
 
 float channel_mean(
-    metal::float3 c_2
+    metal::float3 c_3
 ) {
-    return ((c_2.x + c_2.y) + c_2.z) * 0.33333334;
+    return ((c_3.x + c_3.y) + c_3.z) * 0.33333334;
 }
 
 metal::float4 receiver_lobe(
@@ -540,16 +577,16 @@ metal::float4 receiver_lobe(
     float alpha_4,
     float n_v_1
 ) {
-    bool local_8 = {};
+    bool local_12 = {};
     metal::float3 _e10 = fresnel_schlick(f0_d_4, f90_d_4, n_v_1);
     float _e16 = channel_mean(((metal::float3(1.0, 1.0, 1.0) - _e10) * base_3) * (1.0 - metallic_4));
     if (!((n_v_1 <= 0.0))) {
         bool _e22 = has_specular(metallic_4, f0_d_4, f90_d_4);
-        local_8 = !(_e22);
+        local_12 = !(_e22);
     } else {
-        local_8 = true;
+        local_12 = true;
     }
-    bool _e25 = local_8;
+    bool _e25 = local_12;
     if (_e25) {
         return metal::float4(_e16, 0.0, alpha_4, n_v_1);
     }
@@ -594,10 +631,10 @@ metal::float4 range_lobe(
 }
 
 metal::float3 mirror_dir(
-    metal::float3 n_3,
+    metal::float3 n_4,
     metal::float3 v_2
 ) {
-    return (n_3 * (2.0 * metal::dot(n_3, v_2))) - v_2;
+    return (n_4 * (2.0 * metal::dot(n_4, v_2))) - v_2;
 }
 
 float cos_sub_clamped(
@@ -645,11 +682,11 @@ metal::float4 emitter_cone(
     float cos_o,
     metal::float3 p
 ) {
-    metal::float3 v_8 = p - center;
-    float dist2_1 = metal::dot(v_8, v_8);
+    metal::float3 v_9 = p - center;
+    float dist2_1 = metal::dot(v_9, v_9);
     float r2_5 = radius * radius;
     float d2_8 = metal::max(metal::max(dist2_1, r2_5), MIN_D2_);
-    metal::float3 wi = (dist2_1 > 0.0) ? (v_8 / metal::float3(metal::sqrt(dist2_1))) : metal::float3(0.0, 0.0, 0.0);
+    metal::float3 wi = (dist2_1 > 0.0) ? (v_9 / metal::float3(metal::sqrt(dist2_1))) : metal::float3(0.0, 0.0, 0.0);
     float cos_w = metal::dot(axis, wi);
     float _e25 = safe_sqrt(1.0 - (cos_w * cos_w));
     float _e26 = subtended_cos(dist2_1, r2_5);
@@ -683,27 +720,27 @@ float cone_cos_of(
     float a_3,
     metal::float3 d
 ) {
-    bool local_9 = {};
-    bool local_10 = {};
+    bool local_13 = {};
+    bool local_14 = {};
     float vd = metal::dot(v_3, d);
     float h2_ = d2_4 - (a_3 * a_3);
     if (!((h2_ <= 0.0))) {
         if (vd >= 0.0) {
-            local_10 = (vd * vd) >= h2_;
+            local_14 = (vd * vd) >= h2_;
         } else {
-            local_10 = false;
+            local_14 = false;
         }
-        bool _e19 = local_10;
-        local_9 = _e19;
+        bool _e19 = local_14;
+        local_13 = _e19;
     } else {
-        local_9 = true;
+        local_13 = true;
     }
-    bool _e21 = local_9;
+    bool _e21 = local_13;
     if (_e21) {
         return 1.0;
     }
-    metal::float3 c_9 = metal::cross(v_3, d);
-    return metal::min(((vd * metal::sqrt(h2_)) + (metal::sqrt(metal::dot(c_9, c_9)) * a_3)) / d2_4, 1.0);
+    metal::float3 c_10 = metal::cross(v_3, d);
+    return metal::min(((vd * metal::sqrt(h2_)) + (metal::sqrt(metal::dot(c_10, c_10)) * a_3)) / d2_4, 1.0);
 }
 
 float cone_cos_toward(
@@ -712,8 +749,8 @@ float cone_cos_toward(
     metal::float3 p_2,
     metal::float3 d_1
 ) {
-    metal::float3 v_9 = center_2 - p_2;
-    float _e6 = cone_cos_of(v_9, metal::dot(v_9, v_9), radius_2, d_1);
+    metal::float3 v_10 = center_2 - p_2;
+    float _e6 = cone_cos_of(v_10, metal::dot(v_10, v_10), radius_2, d_1);
     return _e6;
 }
 
@@ -721,8 +758,8 @@ float range_scale_at(
     metal::float4 rl,
     float cos_t
 ) {
-    float t_2 = ((0.5 + (0.5 * cos_t)) * (rl.z - 1.0)) + 1.0;
-    return metal::clamp(rl.x + ((rl.y * rl.z) / (t_2 * t_2)), 1.0, rl.w * rl.w);
+    float t_5 = ((0.5 + (0.5 * cos_t)) * (rl.z - 1.0)) + 1.0;
+    return metal::clamp(rl.x + ((rl.y * rl.z) / (t_5 * t_5)), 1.0, rl.w * rl.w);
 }
 
 float range_scale_toward(
@@ -730,12 +767,12 @@ float range_scale_toward(
     metal::float3 center_3,
     float radius_3,
     metal::float3 p_3,
-    metal::float3 r_2
+    metal::float3 r_3
 ) {
     if (rl_1.w <= 1.0) {
         return 1.0;
     }
-    float _e9 = cone_cos_toward(center_3, radius_3, p_3, r_2);
+    float _e9 = cone_cos_toward(center_3, radius_3, p_3, r_3);
     float _e10 = range_scale_at(rl_1, _e9);
     return _e10;
 }
@@ -748,7 +785,7 @@ float light_importance(
     float cos_o_2,
     float cos_e_1,
     metal::float3 p_4,
-    metal::float3 n_4
+    metal::float3 n_5
 ) {
     float imp = {};
     metal::float4 _e8 = emitter_cone(center_4, radius_4, axis_2, cos_o_2, p_4);
@@ -756,10 +793,10 @@ float light_importance(
         return 0.0;
     }
     imp = (phi_1 * _e8.x) / _e8.y;
-    if (metal::dot(n_4, n_4) > 0.0) {
-        metal::float3 v_10 = center_4 - p_4;
-        float dist2_2 = metal::dot(v_10, v_10);
-        float cos_i = metal::dot((dist2_2 > 0.0) ? (v_10 / metal::float3(metal::sqrt(dist2_2))) : metal::float3(0.0, 0.0, 0.0), n_4);
+    if (metal::dot(n_5, n_5) > 0.0) {
+        metal::float3 v_11 = center_4 - p_4;
+        float dist2_2 = metal::dot(v_11, v_11);
+        float cos_i = metal::dot((dist2_2 > 0.0) ? (v_11 / metal::float3(metal::sqrt(dist2_2))) : metal::float3(0.0, 0.0, 0.0), n_5);
         float _e33 = imp;
         float _e37 = safe_sqrt(1.0 - (cos_i * cos_i));
         float _e40 = cos_sub_clamped(_e37, cos_i, _e8.w, _e8.z);
@@ -777,23 +814,23 @@ float glossy_importance(
     float cos_o_3,
     float cos_e_2,
     metal::float3 p_5,
-    metal::float3 n_5,
-    metal::float3 r_3,
+    metal::float3 n_6,
+    metal::float3 r_4,
     metal::float4 lobe_5
 ) {
-    bool local_11 = {};
+    bool local_15 = {};
     float _e10 = emitter_importance(center_5, radius_5, phi_2, axis_3, cos_o_3, cos_e_2, p_5);
-    float _e11 = cone_cos_toward(center_5, radius_5, p_5, n_5);
+    float _e11 = cone_cos_toward(center_5, radius_5, p_5, n_6);
     if (!((_e10 <= 0.0))) {
-        local_11 = _e11 <= 0.0;
+        local_15 = _e11 <= 0.0;
     } else {
-        local_11 = true;
+        local_15 = true;
     }
-    bool _e20 = local_11;
+    bool _e20 = local_15;
     if (_e20) {
         return 0.0;
     }
-    float _e22 = cone_cos_toward(center_5, radius_5, p_5, r_3);
+    float _e22 = cone_cos_toward(center_5, radius_5, p_5, r_4);
     float _e27 = safe_sqrt(0.5 + (0.5 * _e22));
     float _e33 = ggx_d(_e27, 1.0 - (_e27 * _e27), lobe_5.z);
     float _e39 = smith_root(lobe_5.w, lobe_5.z);
@@ -819,18 +856,18 @@ float cone_weight(
     float cos_e_3,
     float rt2_3,
     metal::float3 p_6,
-    metal::float3 n_6,
-    metal::float3 r_4,
+    metal::float3 n_7,
+    metal::float3 r_5,
     metal::float4 lobe_6
 ) {
-    metal::float3 v_11 = p_6 - center_6;
+    metal::float3 v_12 = p_6 - center_6;
     if (lobe_6.y <= 0.0) {
-        float _e15 = light_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_6);
-        float _e19 = candidate_weight(_e15 * INV_PI, rt2_3, metal::dot(v_11, v_11));
+        float _e15 = light_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_7);
+        float _e19 = candidate_weight(_e15 * INV_PI, rt2_3, metal::dot(v_12, v_12));
         return _e19;
     }
-    float _e20 = glossy_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_6, r_4, lobe_6);
-    float _e22 = candidate_weight(_e20, rt2_3, metal::dot(v_11, v_11));
+    float _e20 = glossy_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_7, r_5, lobe_6);
+    float _e22 = candidate_weight(_e20, rt2_3, metal::dot(v_12, v_12));
     return _e22;
 }
 
@@ -858,16 +895,16 @@ metal::float3 ray_inverse3_(
 float ray_aabb(
     metal::float3 o,
     metal::float3 inv_d,
-    metal::float3 bmin,
-    metal::float3 bmax,
+    metal::float3 bmin_1,
+    metal::float3 bmax_1,
     float t_max
 ) {
-    metal::float3 t0_ = (bmin - o) * inv_d;
-    metal::float3 t1_ = (bmax - o) * inv_d;
-    metal::float3 lo = metal::min(t0_, t1_);
-    metal::float3 hi = metal::max(t0_, t1_);
-    float t_in = metal::max(metal::max(lo.x, lo.y), metal::max(lo.z, 0.0));
-    float t_out = metal::min(metal::min(hi.x, hi.y), metal::min(hi.z, t_max));
+    metal::float3 t0_ = (bmin_1 - o) * inv_d;
+    metal::float3 t1_ = (bmax_1 - o) * inv_d;
+    metal::float3 lo_3 = metal::min(t0_, t1_);
+    metal::float3 hi_3 = metal::max(t0_, t1_);
+    float t_in = metal::max(metal::max(lo_3.x, lo_3.y), metal::max(lo_3.z, 0.0));
+    float t_out = metal::min(metal::min(hi_3.x, hi_3.y), metal::min(hi_3.z, t_max));
     if (t_in <= t_out) {
         return t_in;
     }
@@ -877,17 +914,17 @@ float ray_aabb(
 metal::float3 triangle_normal(
     metal::float3 a_4,
     metal::float3 b_3,
-    metal::float3 c_3
+    metal::float3 c_4
 ) {
-    bool local_12 = {};
-    metal::float3 n_14 = metal::cross(b_3 - a_4, c_3 - a_4);
+    bool local_16 = {};
+    metal::float3 n_14 = metal::cross(b_3 - a_4, c_4 - a_4);
     float l2_ = metal::dot(n_14, n_14);
     if (!(!((l2_ > 0.0)))) {
-        local_12 = !((l2_ < 300000000000000000000000000000000000000.0));
+        local_16 = !((l2_ < 300000000000000000000000000000000000000.0));
     } else {
-        local_12 = true;
+        local_16 = true;
     }
-    bool _e17 = local_12;
+    bool _e17 = local_16;
     if (_e17) {
         return metal::float3(0.0, 0.0, 0.0);
     }
@@ -899,52 +936,52 @@ float ray_triangle(
     metal::float3 d_3,
     metal::float3 a_5,
     metal::float3 b_4,
-    metal::float3 c_4,
+    metal::float3 c_5,
     float t_min,
     float t_max_1
 ) {
-    bool local_13 = {};
-    bool local_14 = {};
-    bool local_15 = {};
+    bool local_17 = {};
+    bool local_18 = {};
+    bool local_19 = {};
     metal::float3 e1_ = b_4 - a_5;
-    metal::float3 e2_ = c_4 - a_5;
-    metal::float3 p_7 = metal::cross(d_3, e2_);
-    float det = metal::dot(e1_, p_7);
+    metal::float3 e2_ = c_5 - a_5;
+    metal::float3 p_9 = metal::cross(d_3, e2_);
+    float det = metal::dot(e1_, p_9);
     if (metal::abs(det) <= 0.0) {
         return -1.0;
     }
     float inv_1 = 1.0 / det;
-    metal::float3 s_3 = o_1 - a_5;
-    float u_3 = metal::dot(s_3, p_7) * inv_1;
+    metal::float3 s_9 = o_1 - a_5;
+    float u_3 = metal::dot(s_9, p_9) * inv_1;
     if (!((u_3 < 0.0))) {
-        local_13 = u_3 > 1.0;
+        local_17 = u_3 > 1.0;
     } else {
-        local_13 = true;
+        local_17 = true;
     }
-    bool _e28 = local_13;
+    bool _e28 = local_17;
     if (_e28) {
         return -1.0;
     }
-    metal::float3 q = metal::cross(s_3, e1_);
-    float v_12 = metal::dot(d_3, q) * inv_1;
-    if (!((v_12 < 0.0))) {
-        local_14 = (u_3 + v_12) > 1.0;
+    metal::float3 q_1 = metal::cross(s_9, e1_);
+    float v_13 = metal::dot(d_3, q_1) * inv_1;
+    if (!((v_13 < 0.0))) {
+        local_18 = (u_3 + v_13) > 1.0;
     } else {
-        local_14 = true;
+        local_18 = true;
     }
-    bool _e42 = local_14;
+    bool _e42 = local_18;
     if (_e42) {
         return -1.0;
     }
-    float t_3 = metal::dot(e2_, q) * inv_1;
-    if (t_3 > t_min) {
-        local_15 = t_3 < t_max_1;
+    float t_6 = metal::dot(e2_, q_1) * inv_1;
+    if (t_6 > t_min) {
+        local_19 = t_6 < t_max_1;
     } else {
-        local_15 = false;
+        local_19 = false;
     }
-    bool _e51 = local_15;
+    bool _e51 = local_19;
     if (_e51) {
-        return t_3;
+        return t_6;
     }
     return -1.0;
 }
@@ -1027,9 +1064,9 @@ GeoHit trace(
                     }
                     {
                         uint _e42 = i;
-                        GpuTriangle t_4 = geo_tris[_e42];
+                        GpuTriangle t_7 = geo_tris[_e42];
                         float _e49 = hit.t;
-                        float _e50 = ray_triangle(o_2, d_4, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e49);
+                        float _e50 = ray_triangle(o_2, d_4, t_7.v0_, t_7.v1_, t_7.v2_, t_min_1, _e49);
                         if (_e50 > 0.0) {
                             hit.t = _e50;
                             uint _e55 = i;
@@ -1118,10 +1155,10 @@ float bsh_inner_scale(
     float a_7,
     metal::float3 v_4,
     float d2_6,
-    metal::float3 r_5,
+    metal::float3 r_6,
     metal::float4 rl_2
 ) {
-    float _e5 = cone_cos_of(v_4, d2_6, a_7, r_5);
+    float _e5 = cone_cos_of(v_4, d2_6, a_7, r_6);
     float _e8 = range_scale_at(rl_2, _e5 + 0.000002);
     return _e8;
 }
@@ -1129,86 +1166,151 @@ float bsh_inner_scale(
 bool bsh_reaches(
     BshNode node_3,
     metal::float3 x_5,
-    metal::float3 r_6,
+    metal::float3 r_7,
     metal::float4 rl_3
 ) {
-    bool local_16 = {};
-    bool local_17 = {};
+    bool local_20 = {};
+    bool local_21 = {};
     bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_5);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
         bool _e20 = sphere_contains_point(node_3.center, node_3.radius * (rl_3.w * 1.0001), x_5);
-        local_16 = !(_e20);
+        local_20 = !(_e20);
     } else {
-        local_16 = true;
+        local_20 = true;
     }
-    bool _e23 = local_16;
+    bool _e23 = local_20;
     if (_e23) {
         return false;
     }
     float _e25 = bsh_range_bound(node_3);
-    metal::float3 v_13 = x_5 - node_3.center;
-    float d2_9 = metal::dot(v_13, v_13);
+    metal::float3 v_14 = x_5 - node_3.center;
+    float d2_9 = metal::dot(v_14, v_14);
     float reach_max = node_3.extent + ((rl_3.w * 1.001) * _e25);
     if (d2_9 > (reach_max * reach_max)) {
         return false;
     }
     if (node_3.child == BSH_NONE) {
-        float _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_5, r_6);
+        float _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_5, r_7);
         float _e46 = bsh_scaled_radius(node_3, metal::sqrt(_e43));
         bool _e47 = sphere_contains_point(node_3.center, _e46, x_5);
         return _e47;
     }
-    float _e50 = bsh_inner_scale(node_3.extent, -(v_13), d2_9, r_6, rl_3);
+    float _e50 = bsh_inner_scale(node_3.extent, -(v_14), d2_9, r_7, rl_3);
     float s_c = _e50 * 1.001;
     float reach = node_3.extent + (metal::sqrt(s_c) * _e25);
     if (d2_9 <= ((node_3.radius * node_3.radius) * s_c)) {
-        local_17 = d2_9 <= (reach * reach);
+        local_21 = d2_9 <= (reach * reach);
     } else {
-        local_17 = false;
+        local_21 = false;
     }
-    bool _e67 = local_17;
+    bool _e67 = local_21;
     return _e67;
 }
 
-uint bsh_next_leaf_lobe(
+bool bsh_reaches_box(
+    BshNode node_4,
+    metal::float3 lo,
+    metal::float3 hi,
+    float w_4
+) {
+    bool _e13 = sphere_overlaps_aabb(node_4.center, node_4.radius * (metal::max(1.0, w_4 * 1.0001) * 1.0001), lo, hi);
+    return _e13;
+}
+
+uint bsh_subtree(
     BshNodes nodes_3,
-    uint start,
-    metal::float3 x_6,
-    metal::float3 r_7,
-    metal::float4 rl_4,
+    uint s_1,
+    uint depth,
     device type_12 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint i_2 = {};
-    i_2 = start;
+    uint level = 0u;
+    bool local_22 = {};
+    uint _e3 = bsh_first(nodes_3, bsh_nodes, _buffer_sizes);
+    i_2 = _e3;
     uint2 loop_bound_2 = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound_2 == uint2(0u))) { break; }
         loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
-        uint _e6 = i_2;
-        if (_e6 != BSH_NONE) {
+        uint _e7 = level;
+        if (_e7 < depth) {
+            uint _e11 = i_2;
+            local_22 = _e11 != BSH_NONE;
+        } else {
+            local_22 = false;
+        }
+        bool _e15 = local_22;
+        if (_e15) {
         } else {
             break;
         }
         {
-            uint _e9 = i_2;
-            BshNode _e10 = bsh_node(nodes_3, _e9, bsh_nodes, _buffer_sizes);
-            bool _e11 = bsh_reaches(_e10, x_6, r_7, rl_4);
+            uint _e16 = i_2;
+            BshNode _e17 = bsh_node(nodes_3, _e16, bsh_nodes, _buffer_sizes);
+            uint _e18 = level;
+            uint below = depth - _e18;
+            if (_e17.child == BSH_NONE) {
+                if ((s_1 << (32u - below)) != 0u) {
+                    return BSH_NONE;
+                }
+                uint _e29 = i_2;
+                return _e29;
+            }
+            if (((s_1 >> (below - 1u)) & 1u) == 0u) {
+                i_2 = _e17.child;
+            } else {
+                BshNode _e39 = bsh_node(nodes_3, _e17.child, bsh_nodes, _buffer_sizes);
+                i_2 = _e39.next;
+            }
+            uint _e41 = level;
+            level = _e41 + 1u;
+        }
+    }
+    uint _e44 = i_2;
+    return _e44;
+}
+
+uint bsh_next_leaf_box(
+    BshNodes nodes_4,
+    uint start_1,
+    uint end,
+    metal::float3 lo_1,
+    metal::float3 hi_1,
+    float w_5,
+    device type_12 const& bsh_nodes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint i_3 = {};
+    i_3 = start_1;
+    uint2 loop_bound_3 = uint2(4294967295u);
+    while(true) {
+        if (metal::all(loop_bound_3 == uint2(0u))) { break; }
+        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+        uint _e7 = i_3;
+        if (_e7 != end) {
+        } else {
+            break;
+        }
+        {
+            uint _e9 = i_3;
+            BshNode _e10 = bsh_node(nodes_4, _e9, bsh_nodes, _buffer_sizes);
+            bool _e11 = bsh_reaches_box(_e10, lo_1, hi_1, w_5);
             if (_e11) {
                 if (_e10.child == BSH_NONE) {
-                    uint _e15 = i_2;
+                    uint _e15 = i_3;
                     return _e15;
                 }
-                i_2 = _e10.child;
+                i_3 = _e10.child;
             } else {
-                i_2 = _e10.next;
+                i_3 = _e10.next;
             }
         }
     }
-    return BSH_NONE;
+    return end;
 }
 
 float next_threshold(
@@ -1226,8 +1328,8 @@ float next_threshold(
 
 Connection connect_record(
     GpuLight l_4,
-    metal::float3 x_7,
-    metal::float3 n_7,
+    metal::float3 x_6,
+    metal::float3 n_8,
     metal::float3 ng_1,
     float r2_3,
     float rt2_4,
@@ -1240,51 +1342,51 @@ Connection connect_record(
     device type_7 const& geo_tris,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Connection c_5 = {};
-    bool local_18 = {};
-    bool local_19 = {};
-    c_5.e = metal::float3(0.0);
+    Connection c_6 = {};
+    bool local_23 = {};
+    bool local_24 = {};
+    c_6.e = metal::float3(0.0);
     metal::float3 _e16 = light_point(l_4, u1_2, u2_2);
-    c_5.y = _e16;
-    metal::float3 _e19 = c_5.y;
-    float _e20 = connection_cosine(x_7, _e19, n_7, ng_1, r2_3);
-    c_5.cos_x = _e20;
-    float _e22 = c_5.cos_x;
+    c_6.y = _e16;
+    metal::float3 _e19 = c_6.y;
+    float _e20 = connection_cosine(x_6, _e19, n_8, ng_1, r2_3);
+    c_6.cos_x = _e20;
+    float _e22 = c_6.cos_x;
     if (!((_e22 <= 0.0))) {
         if (trace_1) {
-            metal::float3 _e33 = c_5.y;
-            bool _e34 = occluded(x_7 + (ng_1 * eps), _e33, geo_nodes, geo_tris, _buffer_sizes);
-            local_19 = _e34;
+            metal::float3 _e33 = c_6.y;
+            bool _e34 = occluded(x_6 + (ng_1 * eps), _e33, geo_nodes, geo_tris, _buffer_sizes);
+            local_24 = _e34;
         } else {
-            local_19 = false;
+            local_24 = false;
         }
-        bool _e36 = local_19;
-        local_18 = _e36;
+        bool _e36 = local_24;
+        local_23 = _e36;
     } else {
-        local_18 = true;
+        local_23 = true;
     }
-    bool _e38 = local_18;
+    bool _e38 = local_23;
     if (_e38) {
-        Connection _e39 = c_5;
+        Connection _e39 = c_6;
         return _e39;
     }
-    metal::float3 _e41 = c_5.y;
-    metal::float3 v_14 = x_7 - _e41;
-    float d2_10 = metal::dot(v_14, v_14);
-    metal::float3 _e48 = light_intensity(l_4, v_14 / metal::float3(metal::sqrt(d2_10)));
-    float _e50 = c_5.cos_x;
+    metal::float3 _e41 = c_6.y;
+    metal::float3 v_15 = x_6 - _e41;
+    float d2_10 = metal::dot(v_15, v_15);
+    metal::float3 _e48 = light_intensity(l_4, v_15 / metal::float3(metal::sqrt(d2_10)));
+    float _e50 = c_6.cos_x;
     float _e51 = connection_factor(_e50, d2_10, rt2_4, w_res);
-    c_5.e = _e48 * _e51;
-    Connection _e53 = c_5;
+    c_6.e = _e48 * _e51;
+    Connection _e53 = c_6;
     return _e53;
 }
 
 Connection connect_traced(
     uint li,
-    metal::float3 x_8,
-    metal::float3 n_8,
+    metal::float3 x_7,
+    metal::float3 n_9,
     metal::float3 ng_2,
-    float s,
+    float s_2,
     float w_res_1,
     float u1_3,
     float u2_3,
@@ -1300,174 +1402,446 @@ Connection connect_traced(
     GpuLight _e12 = lights[li];
     float _e15 = r2_4[li];
     float _e19 = rt2_5[li];
-    Connection _e21 = connect_record(_e12, x_8, n_8, ng_2, s * _e15, s * _e19, w_res_1, u1_3, u2_3, eps_1, trace_2, geo_nodes, geo_tris, _buffer_sizes);
+    Connection _e21 = connect_record(_e12, x_7, n_9, ng_2, s_2 * _e15, s_2 * _e19, w_res_1, u1_3, u2_3, eps_1, trace_2, geo_nodes, geo_tris, _buffer_sizes);
     return _e21;
 }
 
 float light_range_scale(
     uint li_1,
-    metal::float3 x_9,
+    metal::float3 x_8,
     metal::float3 r_8,
-    metal::float4 rl_5,
+    metal::float4 rl_4,
     device type_13 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuLightCone c_10 = light_cones[li_1];
-    float _e9 = range_scale_toward(rl_5, c_10.center, c_10.radius, x_9, r_8);
+    GpuLightCone c_11 = light_cones[li_1];
+    float _e9 = range_scale_toward(rl_4, c_11.center, c_11.radius, x_8, r_8);
     return _e9;
 }
 
 float light_weight(
     uint li_2,
-    metal::float3 x_10,
-    metal::float3 n_9,
+    metal::float3 x_9,
+    metal::float3 n_10,
     metal::float3 r_9,
     metal::float4 lobe_7,
-    metal::float4 rl_6,
+    metal::float4 rl_5,
     device type_4 const& rt2_5,
     device type_13 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuLightCone c_11 = light_cones[li_2];
-    float _e15 = light_range_scale(li_2, x_10, r_9, rl_6, light_cones, _buffer_sizes);
+    GpuLightCone c_12 = light_cones[li_2];
+    float _e15 = light_range_scale(li_2, x_9, r_9, rl_5, light_cones, _buffer_sizes);
     float _e18 = rt2_5[li_2];
-    float _e20 = cone_weight(c_11.center, c_11.radius, c_11.phi, c_11.axis, c_11.cos_o, c_11.cos_e, _e15 * _e18, x_10, n_9, r_9, lobe_7);
+    float _e20 = cone_weight(c_12.center, c_12.radius, c_12.phi, c_12.axis, c_12.cos_o, c_12.cos_e, _e15 * _e18, x_9, n_10, r_9, lobe_7);
     return _e20;
 }
 
-WeightedPicks bsh_weighted_collect(
-    metal::float3 x_11,
-    metal::float3 n_10,
-    metal::float3 r_10,
-    metal::float4 lobe_8,
-    metal::float4 rl_7,
-    uint h0_,
-    device type_4 const& rt2_5,
-    device type_12 const& bsh_nodes,
-    device type_13 const& light_cones,
-    constant _mslBufferSizes& _buffer_sizes
+WeightedPicks weighted_picks(
+    uint h_2
 ) {
-    WeightedPicks picks = {};
-    uint h_2 = {};
-    type_16 threshold = {};
-    uint b_6 = {};
-    uint s_1 = {};
-    picks.w_sum = 0.0;
-    picks.n = 0u;
-    h_2 = h0_;
-    uint _e15 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
-    uint _e16 = bsh_next_leaf_lobe(BSH, _e15, x_11, r_10, rl_7, bsh_nodes, _buffer_sizes);
-    b_6 = _e16;
-    uint2 loop_bound_3 = uint2(4294967295u);
-    bool loop_init_1 = true;
-    while(true) {
-        if (metal::all(loop_bound_3 == uint2(0u))) { break; }
-        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-        if (!loop_init_1) {
-            uint _e63 = b_6;
-            uint _e66 = bsh_nodes[_e63].next;
-            uint _e67 = bsh_next_leaf_lobe(BSH, _e66, x_11, r_10, rl_7, bsh_nodes, _buffer_sizes);
-            b_6 = _e67;
-        }
-        loop_init_1 = false;
-        uint _e18 = b_6;
-        if (_e18 != BSH_NONE) {
-        } else {
-            break;
-        }
-        {
-            uint _e22 = picks.n;
-            picks.n = _e22 + 1u;
-            uint _e26 = b_6;
-            uint li_5 = bsh_nodes[_e26].light;
-            float _e30 = light_weight(li_5, x_11, n_10, r_10, lobe_8, rl_7, rt2_5, light_cones, _buffer_sizes);
-            if (_e30 > 0.0) {
-                float _e34 = picks.w_sum;
-                picks.w_sum = _e34 + _e30;
-                s_1 = 0u;
-                uint2 loop_bound_4 = uint2(4294967295u);
-                bool loop_init_2 = true;
-                while(true) {
-                    if (metal::all(loop_bound_4 == uint2(0u))) { break; }
-                    loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
-                    if (!loop_init_2) {
-                        uint _e59 = s_1;
-                        s_1 = _e59 + 1u;
-                    }
-                    loop_init_2 = false;
-                    uint _e38 = s_1;
-                    if (_e38 < K) {
-                    } else {
-                        break;
-                    }
-                    {
-                        float _e42 = picks.w_sum;
-                        uint _e43 = s_1;
-                        float _e45 = threshold.inner[_e43];
-                        if (_e42 > _e45) {
-                            uint _e48 = s_1;
-                            picks.light.inner[_e48] = li_5;
-                            uint _e51 = s_1;
-                            picks.w.inner[_e51] = _e30;
-                            uint _e53 = s_1;
-                            float _e56 = picks.w_sum;
-                            float _e57 = next_threshold(_e56, h_2);
-                            threshold.inner[_e53] = _e57;
-                        }
-                    }
+    WeightedPicks picks_1 = {};
+    picks_1.w_sum = 0.0;
+    picks_1.n = 0u;
+    picks_1.h = h_2;
+    WeightedPicks _e7 = picks_1;
+    return _e7;
+}
+
+void weighted_offer(
+    thread WeightedPicks& picks_2,
+    uint li_3,
+    float w_6
+) {
+    uint h_3 = {};
+    uint s_3 = 0u;
+    uint _e4 = picks_2.n;
+    picks_2.n = _e4 + 1u;
+    if (w_6 > 0.0) {
+        float _e10 = picks_2.w_sum;
+        picks_2.w_sum = _e10 + w_6;
+        uint _e13 = picks_2.h;
+        h_3 = _e13;
+        uint2 loop_bound_4 = uint2(4294967295u);
+        bool loop_init_1 = true;
+        while(true) {
+            if (metal::all(loop_bound_4 == uint2(0u))) { break; }
+            loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+            if (!loop_init_1) {
+                uint _e40 = s_3;
+                s_3 = _e40 + 1u;
+            }
+            loop_init_1 = false;
+            uint _e17 = s_3;
+            if (_e17 < K) {
+            } else {
+                break;
+            }
+            {
+                float _e21 = picks_2.w_sum;
+                uint _e23 = s_3;
+                float _e25 = picks_2.threshold.inner[_e23];
+                if (_e21 > _e25) {
+                    uint _e28 = s_3;
+                    picks_2.light.inner[_e28] = li_3;
+                    uint _e31 = s_3;
+                    picks_2.w.inner[_e31] = w_6;
+                    uint _e34 = s_3;
+                    float _e37 = picks_2.w_sum;
+                    float _e38 = next_threshold(_e37, h_3);
+                    picks_2.threshold.inner[_e34] = _e38;
                 }
             }
         }
+        uint _e43 = h_3;
+        picks_2.h = _e43;
+        return;
+    } else {
+        return;
     }
-    uint _e69 = h_2;
-    picks.h = _e69;
-    WeightedPicks _e70 = picks;
-    return _e70;
 }
 
 metal::float4 surface_at(
     metal::int2 texel,
     metal::texture2d<float, metal::access::sample> position_tex
 ) {
-    metal::float4 p_8 = position_tex.read(metal::uint2(texel), 0);
-    return (p_8.w > 0.0) ? metal::float4(p_8.xyz, 1.0) : metal::float4(0.0);
+    metal::float4 p_10 = position_tex.read(metal::uint2(texel), 0);
+    return (p_10.w > 0.0) ? metal::float4(p_10.xyz, 1.0) : metal::float4(0.0);
+}
+
+uint naga_div(uint lhs, uint rhs) {
+    return lhs / metal::select(rhs, 1u, rhs == 0u);
+}
+
+WorkgroupBox workgroup_bounds(
+    uint li_4,
+    metal::float3 lo_2,
+    metal::float3 hi_2,
+    threadgroup type_19& wg_lo,
+    threadgroup type_19& wg_hi,
+    threadgroup WorkgroupBox& wg_box
+) {
+    uint stride = 32u;
+    wg_lo.inner[li_4] = lo_2;
+    wg_hi.inner[li_4] = hi_2;
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    uint2 loop_bound_5 = uint2(4294967295u);
+    bool loop_init_2 = true;
+    while(true) {
+        if (metal::all(loop_bound_5 == uint2(0u))) { break; }
+        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+        if (!loop_init_2) {
+            uint _e36 = stride;
+            stride = naga_div(_e36, 2u);
+        }
+        loop_init_2 = false;
+        uint _e9 = stride;
+        if (_e9 > 0u) {
+        } else {
+            break;
+        }
+        {
+            uint _e12 = stride;
+            if (li_4 < _e12) {
+                metal::float3 _e18 = wg_lo.inner[li_4];
+                uint _e20 = stride;
+                metal::float3 _e23 = wg_lo.inner[li_4 + _e20];
+                wg_lo.inner[li_4] = metal::min(_e18, _e23);
+                metal::float3 _e29 = wg_hi.inner[li_4];
+                uint _e31 = stride;
+                metal::float3 _e34 = wg_hi.inner[li_4 + _e31];
+                wg_hi.inner[li_4] = metal::max(_e29, _e34);
+            }
+            metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+        }
+    }
+    if (li_4 == 0u) {
+        metal::float3 _e44 = wg_lo.inner[0];
+        metal::float3 _e47 = wg_hi.inner[0];
+        wg_box = WorkgroupBox {_e44, _e47};
+    }
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    WorkgroupBox unnamed = wg_box;
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    return unnamed;
+}
+
+WorkgroupBox workgroup_box(
+    uint li_5,
+    metal::float3 p_7,
+    bool has,
+    threadgroup type_19& wg_lo,
+    threadgroup type_19& wg_hi,
+    threadgroup WorkgroupBox& wg_box
+) {
+    WorkgroupBox _e9 = workgroup_bounds(li_5, has ? p_7 : metal::float3(340282350000000000000000000000000000000.0), has ? p_7 : metal::float3(-340282350000000000000000000000000000000.0), wg_lo, wg_hi, wg_box);
+    return _e9;
+}
+
+bool box_is_empty(
+    WorkgroupBox b_6
+) {
+    return b_6.lo.x > b_6.hi.x;
+}
+
+uint tile_subtree(
+    uint s_4,
+    TileWalk t_1,
+    bool list,
+    uint at,
+    uint start_2,
+    uint to,
+    device type_12 const& bsh_nodes,
+    threadgroup type_20& tile_list,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint p_8 = {};
+    uint b_7 = {};
+    bool local_25 = {};
+    bool local_26 = {};
+    bool local_27 = {};
+    uint _e8 = bsh_subtree(BSH, s_4, BSH_TILE_DEPTH, bsh_nodes, _buffer_sizes);
+    if (_e8 == BSH_NONE) {
+        return 0u;
+    }
+    uint end_1 = bsh_nodes[_e8].next;
+    p_8 = at;
+    uint _e21 = bsh_next_leaf_box(BSH, _e8, end_1, t_1.lo, t_1.hi, t_1.w, bsh_nodes, _buffer_sizes);
+    b_7 = _e21;
+    uint2 loop_bound_6 = uint2(4294967295u);
+    bool loop_init_3 = true;
+    while(true) {
+        if (metal::all(loop_bound_6 == uint2(0u))) { break; }
+        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+        if (!loop_init_3) {
+            uint _e53 = b_7;
+            uint _e56 = bsh_nodes[_e53].next;
+            uint _e60 = bsh_next_leaf_box(BSH, _e56, end_1, t_1.lo, t_1.hi, t_1.w, bsh_nodes, _buffer_sizes);
+            b_7 = _e60;
+        }
+        loop_init_3 = false;
+        uint _e23 = b_7;
+        if (_e23 != end_1) {
+            if (!(!(list))) {
+                uint _e31 = p_8;
+                local_26 = _e31 < to;
+            } else {
+                local_26 = true;
+            }
+            bool _e34 = local_26;
+            local_25 = _e34;
+        } else {
+            local_25 = false;
+        }
+        bool _e36 = local_25;
+        if (_e36) {
+        } else {
+            break;
+        }
+        {
+            if (list) {
+                uint _e39 = p_8;
+                local_27 = _e39 >= start_2;
+            } else {
+                local_27 = false;
+            }
+            bool _e42 = local_27;
+            if (_e42) {
+                uint _e44 = p_8;
+                uint _e47 = b_7;
+                tile_list.inner[_e44 - start_2] = _e47;
+            }
+            uint _e48 = p_8;
+            p_8 = _e48 + 1u;
+        }
+    }
+    uint _e61 = p_8;
+    return _e61 - at;
+}
+
+TileWalk tile_walk_begin(
+    uint li_6,
+    metal::float3 x_10,
+    float w_7,
+    bool has_1,
+    device type_12 const& bsh_nodes,
+    threadgroup type_19& wg_lo,
+    threadgroup type_19& wg_hi,
+    threadgroup WorkgroupBox& wg_box,
+    threadgroup type_20& tile_list,
+    threadgroup type_21& subtree_at,
+    threadgroup metal::atomic_uint& tile_scale,
+    threadgroup uint& tile_total,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    TileWalk t_2 = {};
+    uint s_5 = {};
+    uint sum_1 = 0u;
+    uint s_6 = 0u;
+    uint _e8 = metal::atomic_fetch_max_explicit(&tile_scale, has_1 ? as_type<uint>(w_7) : 0u, metal::memory_order_relaxed);
+    WorkgroupBox _e9 = workgroup_box(li_6, x_10, has_1, wg_lo, wg_hi, wg_box);
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    uint unnamed_1 = metal::atomic_load_explicit(&tile_scale, metal::memory_order_relaxed);
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    t_2 = TileWalk {_e9.lo, _e9.hi, as_type<float>(unnamed_1), 0u};
+    bool _e18 = box_is_empty(_e9);
+    if (_e18) {
+        TileWalk _e19 = t_2;
+        return _e19;
+    }
+    s_5 = li_6;
+    uint2 loop_bound_7 = uint2(4294967295u);
+    bool loop_init_4 = true;
+    while(true) {
+        if (metal::all(loop_bound_7 == uint2(0u))) { break; }
+        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+        if (!loop_init_4) {
+            uint _e34 = s_5;
+            s_5 = _e34 + TILE_THREADS;
+        }
+        loop_init_4 = false;
+        uint _e21 = s_5;
+        if (_e21 < BSH_TILE_SUBTREES) {
+        } else {
+            break;
+        }
+        {
+            uint _e25 = s_5;
+            uint _e27 = s_5;
+            TileWalk _e28 = t_2;
+            uint _e33 = tile_subtree(_e27, _e28, false, 0u, 0u, 0u, bsh_nodes, tile_list, _buffer_sizes);
+            subtree_at.inner[_e25] = _e33;
+        }
+    }
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    if (li_6 == 0u) {
+        uint2 loop_bound_8 = uint2(4294967295u);
+        bool loop_init_5 = true;
+        while(true) {
+            if (metal::all(loop_bound_8 == uint2(0u))) { break; }
+            loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
+            if (!loop_init_5) {
+                uint _e57 = s_6;
+                s_6 = _e57 + 1u;
+            }
+            loop_init_5 = false;
+            uint _e43 = s_6;
+            if (_e43 < BSH_TILE_SUBTREES) {
+            } else {
+                break;
+            }
+            {
+                uint _e47 = s_6;
+                uint c_13 = subtree_at.inner[_e47];
+                uint _e51 = s_6;
+                uint _e53 = sum_1;
+                subtree_at.inner[_e51] = _e53;
+                uint _e54 = sum_1;
+                sum_1 = _e54 + c_13;
+            }
+        }
+        uint _e60 = sum_1;
+        tile_total = _e60;
+    }
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    uint unnamed_2 = tile_total;
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    t_2.total = unnamed_2;
+    TileWalk _e64 = t_2;
+    return _e64;
+}
+
+uint tile_walk_fill(
+    uint li_7,
+    TileWalk t_3,
+    uint start_3,
+    device type_12 const& bsh_nodes,
+    threadgroup type_20& tile_list,
+    threadgroup type_21& subtree_at,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint s_7 = {};
+    uint past = {};
+    bool local_28 = {};
+    uint to_1 = metal::min(t_3.total, start_3 + TILE_LIST);
+    s_7 = li_7;
+    uint2 loop_bound_9 = uint2(4294967295u);
+    bool loop_init_6 = true;
+    while(true) {
+        if (metal::all(loop_bound_9 == uint2(0u))) { break; }
+        loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
+        if (!loop_init_6) {
+            uint _e38 = s_7;
+            s_7 = _e38 + TILE_THREADS;
+        }
+        loop_init_6 = false;
+        uint _e8 = s_7;
+        if (_e8 < BSH_TILE_SUBTREES) {
+        } else {
+            break;
+        }
+        {
+            uint _e12 = s_7;
+            uint at_1 = subtree_at.inner[_e12];
+            past = t_3.total;
+            uint _e17 = s_7;
+            if ((_e17 + 1u) < BSH_TILE_SUBTREES) {
+                uint _e23 = s_7;
+                uint _e27 = subtree_at.inner[_e23 + 1u];
+                past = _e27;
+            }
+            if (at_1 < to_1) {
+                uint _e31 = past;
+                local_28 = _e31 > start_3;
+            } else {
+                local_28 = false;
+            }
+            bool _e34 = local_28;
+            if (_e34) {
+                uint _e35 = s_7;
+                uint _e37 = tile_subtree(_e35, t_3, true, at_1, start_3, to_1, bsh_nodes, tile_list, _buffer_sizes);
+            }
+        }
+    }
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    return to_1 - start_3;
 }
 
 Shaded shade_connection(
-    Connection c_6,
-    metal::float3 x_12,
+    Connection c_7,
+    metal::float3 x_11,
     metal::float3 n_11,
     Material m_1,
     constant ViewParams& view
 ) {
-    Shaded s_2 = {};
-    s_2.e = c_6.e;
-    s_2.diffuse = metal::float3(0.0);
-    s_2.specular = metal::float3(0.0);
-    if (c_6.cos_x > 0.0) {
-        metal::float3 l_5 = metal::normalize(c_6.y - x_12);
+    Shaded s_8 = {};
+    s_8.e = c_7.e;
+    s_8.diffuse = metal::float3(0.0);
+    s_8.specular = metal::float3(0.0);
+    if (c_7.cos_x > 0.0) {
+        metal::float3 l_5 = metal::normalize(c_7.y - x_11);
         metal::float3 _e24 = view.f0_d;
         float _e27 = view.f90_d;
         float _e29 = half_cosine(m_1.v, l_5);
         metal::float3 _e30 = diffuse_brdf(m_1.base, m_1.metallic, _e24, _e27, _e29);
-        s_2.diffuse = _e30 * c_6.e;
+        s_8.diffuse = _e30 * c_7.e;
         metal::float3 _e38 = view.f0_d;
         float _e41 = view.f90_d;
         metal::float3 _e44 = specular_brdf(m_1.base, m_1.metallic, _e38, _e41, m_1.alpha, n_11, m_1.v, l_5);
-        s_2.specular = _e44 * c_6.e;
+        s_8.specular = _e44 * c_7.e;
     }
-    Shaded _e47 = s_2;
+    Shaded _e47 = s_8;
     return _e47;
 }
 
 Shaded shade_pick_traced(
-    uint li_3,
-    metal::float3 x_13,
+    uint li_8,
+    metal::float3 x_12,
     metal::float3 n_12,
-    metal::float3 r_11,
-    metal::float4 rl_8,
+    metal::float3 r_10,
+    metal::float4 rl_6,
     Material m_2,
-    float w_4,
+    float w_8,
     float u1_4,
     float u2_4,
     float eps_2,
@@ -1481,20 +1855,20 @@ Shaded shade_pick_traced(
     device type_13 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e11 = light_range_scale(li_3, x_13, r_11, rl_8, light_cones, _buffer_sizes);
-    Connection _e12 = connect_traced(li_3, x_13, n_12, n_12, _e11, w_4, u1_4, u2_4, eps_2, trace_3, geo_nodes, geo_tris, lights, rt2_5, r2_4, _buffer_sizes);
-    Shaded _e13 = shade_connection(_e12, x_13, n_12, m_2, view);
+    float _e11 = light_range_scale(li_8, x_12, r_10, rl_6, light_cones, _buffer_sizes);
+    Connection _e12 = connect_traced(li_8, x_12, n_12, n_12, _e11, w_8, u1_4, u2_4, eps_2, trace_3, geo_nodes, geo_tris, lights, rt2_5, r2_4, _buffer_sizes);
+    Shaded _e13 = shade_connection(_e12, x_12, n_12, m_2, view);
     return _e13;
 }
 
 Shaded shade_pick(
-    uint li_4,
-    metal::float3 x_14,
+    uint li_9,
+    metal::float3 x_13,
     metal::float3 n_13,
-    metal::float3 r_12,
-    metal::float4 rl_9,
+    metal::float3 r_11,
+    metal::float4 rl_7,
     Material m_3,
-    float w_5,
+    float w_9,
     float u1_5,
     float u2_5,
     float eps_3,
@@ -1507,7 +1881,7 @@ Shaded shade_pick(
     device type_13 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Shaded _e11 = shade_pick_traced(li_4, x_14, n_13, r_12, rl_9, m_3, w_5, u1_5, u2_5, eps_3, true, geo_nodes, geo_tris, view, lights, rt2_5, r2_4, light_cones, _buffer_sizes);
+    Shaded _e11 = shade_pick_traced(li_9, x_13, n_13, r_11, rl_7, m_3, w_9, u1_5, u2_5, eps_3, true, geo_nodes, geo_tris, view, lights, rt2_5, r2_4, light_cones, _buffer_sizes);
     return _e11;
 }
 
@@ -1524,30 +1898,30 @@ Material material_of(
 
 Shaded add(
     Shaded a_8,
-    Shaded b_7
+    Shaded b_8
 ) {
-    return Shaded {a_8.e + b_7.e, a_8.diffuse + b_7.diffuse, a_8.specular + b_7.specular};
+    return Shaded {a_8.e + b_8.e, a_8.diffuse + b_8.diffuse, a_8.specular + b_8.specular};
 }
 
 type_14 first_holders(
-    type_19 keys_1,
-    type_20 held_1
+    type_24 keys_1,
+    type_25 held_1
 ) {
     type_14 first = {};
     uint k_3 = 0u;
-    uint j_1 = {};
-    bool local_20 = {};
-    bool local_21 = {};
-    uint2 loop_bound_5 = uint2(4294967295u);
-    bool loop_init_3 = true;
+    uint j_2 = {};
+    bool local_29 = {};
+    bool local_30 = {};
+    uint2 loop_bound_10 = uint2(4294967295u);
+    bool loop_init_7 = true;
     while(true) {
-        if (metal::all(loop_bound_5 == uint2(0u))) { break; }
-        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
-        if (!loop_init_3) {
+        if (metal::all(loop_bound_10 == uint2(0u))) { break; }
+        loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
+        if (!loop_init_7) {
             uint _e45 = k_3;
             k_3 = _e45 + 1u;
         }
-        loop_init_3 = false;
+        loop_init_7 = false;
         uint _e5 = k_3;
         if (_e5 < K) {
         } else {
@@ -1558,43 +1932,43 @@ type_14 first_holders(
             uint _e11 = k_3;
             uint _e12 = k_3;
             first.inner[_e8] = held_1.inner[_e12] ? _e11 : K;
-            j_1 = 0u;
-            uint2 loop_bound_6 = uint2(4294967295u);
-            bool loop_init_4 = true;
+            j_2 = 0u;
+            uint2 loop_bound_11 = uint2(4294967295u);
+            bool loop_init_8 = true;
             while(true) {
-                if (metal::all(loop_bound_6 == uint2(0u))) { break; }
-                loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-                if (!loop_init_4) {
-                    uint _e42 = j_1;
-                    j_1 = _e42 + 1u;
+                if (metal::all(loop_bound_11 == uint2(0u))) { break; }
+                loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
+                if (!loop_init_8) {
+                    uint _e42 = j_2;
+                    j_2 = _e42 + 1u;
                 }
-                loop_init_4 = false;
-                uint _e17 = j_1;
+                loop_init_8 = false;
+                uint _e17 = j_2;
                 uint _e18 = k_3;
                 if (_e17 < _e18) {
                     uint _e22 = k_3;
-                    local_20 = held_1.inner[_e22];
+                    local_29 = held_1.inner[_e22];
                 } else {
-                    local_20 = false;
+                    local_29 = false;
                 }
-                bool _e25 = local_20;
+                bool _e25 = local_29;
                 if (_e25) {
                 } else {
                     break;
                 }
                 {
-                    uint _e26 = j_1;
+                    uint _e26 = j_2;
                     if (held_1.inner[_e26]) {
-                        uint _e30 = j_1;
+                        uint _e30 = j_2;
                         uint _e32 = k_3;
-                        local_21 = metal::all(keys_1.inner[_e30] == keys_1.inner[_e32]);
+                        local_30 = metal::all(keys_1.inner[_e30] == keys_1.inner[_e32]);
                     } else {
-                        local_21 = false;
+                        local_30 = false;
                     }
-                    bool _e37 = local_21;
+                    bool _e37 = local_30;
                     if (_e37) {
                         uint _e38 = k_3;
-                        uint _e40 = j_1;
+                        uint _e40 = j_2;
                         first.inner[_e38] = _e40;
                         break;
                     }
@@ -1610,6 +1984,7 @@ struct main_Input {
 };
 kernel void main_(
   metal::uint3 gid [[thread_position_in_grid]]
+, uint lid [[thread_index_in_threadgroup]]
 , device type_6 const& geo_nodes [[user(fake0)]]
 , device type_7 const& geo_tris [[user(fake0)]]
 , constant ViewParams& view [[user(fake0)]]
@@ -1624,184 +1999,309 @@ kernel void main_(
 , device type_4 const& r2_4 [[user(fake0)]]
 , device type_12 const& bsh_nodes [[user(fake0)]]
 , device type_13 const& light_cones [[user(fake0)]]
+, threadgroup type_19& wg_lo
+, threadgroup type_19& wg_hi
+, threadgroup WorkgroupBox& wg_box
+, threadgroup type_20& tile_list
+, threadgroup type_21& subtree_at
+, threadgroup metal::atomic_uint& tile_scale
+, threadgroup uint& tile_total
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
+    if (lid == 0u) {
+        wg_lo = {};
+        wg_hi = {};
+        wg_box = {};
+        tile_list = {};
+        subtree_at = {};
+        metal::atomic_store_explicit(&tile_scale, 0, metal::memory_order_relaxed);
+        tile_total = {};
+    }
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
     bool local = {};
+    metal::float4 s = metal::float4(0.0);
+    metal::float3 nn = metal::float3(0.0);
     bool local_1 = {};
+    bool local_2 = {};
+    bool local_3 = {};
+    metal::float3 n = metal::float3(0.0, 0.0, 1.0);
     Material m = {};
     metal::float4 lobe = metal::float4(1.0, 0.0, 1.0, 1.0);
     metal::float3 r = {};
     uint h = {};
     Shaded t = Shaded {metal::float3(0.0), metal::float3(0.0), metal::float3(0.0)};
-    type_19 keys = {};
-    type_20 held = {};
+    WeightedPicks picks = {};
+    bool local_4 = {};
+    uint start = 0u;
+    uint j = {};
+    bool local_5 = {};
+    type_24 keys = {};
+    type_25 held = {};
     uint k = 0u;
     uint k_1 = 0u;
     uint copies = {};
-    uint j = {};
-    uint _e4 = view.width;
-    if (!((gid.x >= _e4))) {
+    uint j_1 = {};
+    uint _e5 = view.width;
+    if (gid.x < _e5) {
         uint _e12 = view.height;
-        local = gid.y >= _e12;
+        local = gid.y < _e12;
     } else {
-        local = true;
+        local = false;
     }
-    bool _e15 = local;
-    if (_e15) {
-        return;
-    }
+    bool inside = local;
     metal::int2 texel_1 = metal::int2(static_cast<int>(gid.x), static_cast<int>(gid.y));
-    metal::float4 _e21 = surface_at(texel_1, position_tex);
-    metal::float4 _e24 = normal_tex.read(metal::uint2(texel_1), 0);
-    metal::float3 nn = _e24.xyz;
-    float len2_1 = metal::dot(nn, nn);
-    if (!((_e21.w <= 0.0))) {
-        local_1 = !((len2_1 > 0.0));
-    } else {
-        local_1 = true;
+    if (inside) {
+        metal::float4 _e27 = surface_at(texel_1, position_tex);
+        s = _e27;
+        metal::float4 _e30 = normal_tex.read(metal::uint2(texel_1), 0);
+        nn = _e30.xyz;
     }
-    bool _e37 = local_1;
-    if (_e37) {
-        out_tex.write(metal::float4(0.0), metal::uint2(texel_1));
-        specular_tex.write(metal::float4(0.0), metal::uint2(texel_1));
+    metal::float3 _e32 = nn;
+    metal::float3 _e33 = nn;
+    float len2_1 = metal::dot(_e32, _e33);
+    metal::float4 _e35 = s;
+    metal::float3 x_14 = _e35.xyz;
+    if (inside) {
+        float _e40 = s.w;
+        local_1 = _e40 > 0.0;
+    } else {
+        local_1 = false;
+    }
+    bool _e44 = local_1;
+    if (_e44) {
+        local_2 = len2_1 > 0.0;
+    } else {
+        local_2 = false;
+    }
+    bool _e50 = local_2;
+    if (_e50) {
+        local_3 = metal::all(metal::abs(x_14) <= metal::float3(340282350000000000000000000000000000000.0));
+    } else {
+        local_3 = false;
+    }
+    bool has_2 = local_3;
+    if (has_2) {
+        metal::float3 _e65 = nn;
+        n = _e65 / metal::float3(metal::sqrt(len2_1));
+    }
+    metal::float3 _e76 = n;
+    r = _e76;
+    if (has_2) {
+        metal::float4 mr = metal_rough_tex.read(metal::uint2(texel_1), 0);
+        metal::float4 _e83 = base_color_tex.read(metal::uint2(texel_1), 0);
+        metal::float3 _e90 = view.eye;
+        Material _e93 = material_of(_e83.xyz, mr.z, mr.y, mr.w, metal::normalize(_e90 - x_14));
+        m = _e93;
+        metal::float3 _e95 = m.base;
+        float _e97 = m.metallic;
+        metal::float3 _e100 = view.f0_d;
+        float _e103 = view.f90_d;
+        float _e105 = m.alpha;
+        metal::float3 _e106 = n;
+        metal::float3 _e108 = m.v;
+        metal::float4 _e110 = receiver_lobe(_e95, _e97, _e100, _e103, _e105, metal::dot(_e106, _e108));
+        lobe = _e110;
+        metal::float3 _e111 = n;
+        metal::float3 _e113 = m.v;
+        metal::float3 _e114 = mirror_dir(_e111, _e113);
+        r = _e114;
+    }
+    metal::float4 _e115 = lobe;
+    metal::float4 _e116 = range_lobe(_e115);
+    float _e119 = view.shadow_offset;
+    metal::float3 _e122 = view.eye;
+    float eps_4 = _e119 * metal::length(_e122 - x_14);
+    uint _e128 = view.seed;
+    uint _e132 = view.width;
+    uint _e138 = view.frame;
+    uint _e139 = point_stream(_e128, (gid.y * _e132) + gid.x, _e138);
+    uint _e140 = pick_stream(_e139);
+    h = _e140;
+    WeightedPicks _e150 = weighted_picks(_e139);
+    picks = _e150;
+    if (has_2) {
+        local_4 = _e116.w >= 0.0;
+    } else {
+        local_4 = false;
+    }
+    bool _e159 = local_4;
+    TileWalk _e160 = tile_walk_begin(lid, x_14, _e116.w, _e159, bsh_nodes, wg_lo, wg_hi, wg_box, tile_list, subtree_at, tile_scale, tile_total, _buffer_sizes);
+    uint2 loop_bound_12 = uint2(4294967295u);
+    bool loop_init_9 = true;
+    while(true) {
+        if (metal::all(loop_bound_12 == uint2(0u))) { break; }
+        loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
+        if (!loop_init_9) {
+            uint _e199 = start;
+            start = _e199 + TILE_LIST;
+        }
+        loop_init_9 = false;
+        uint _e163 = start;
+        if (_e163 < _e160.total) {
+        } else {
+            break;
+        }
+        {
+            uint _e166 = start;
+            uint _e167 = tile_walk_fill(lid, _e160, _e166, bsh_nodes, tile_list, subtree_at, _buffer_sizes);
+            j = 0u;
+            uint2 loop_bound_13 = uint2(4294967295u);
+            bool loop_init_10 = true;
+            while(true) {
+                if (metal::all(loop_bound_13 == uint2(0u))) { break; }
+                loop_bound_13 -= uint2(loop_bound_13.y == 0u, 1u);
+                if (!loop_init_10) {
+                    uint _e197 = j;
+                    j = _e197 + 1u;
+                }
+                loop_init_10 = false;
+                uint _e170 = j;
+                if (_e170 < _e167) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e173 = j;
+                    uint b_9 = tile_list.inner[_e173];
+                    if (!(!(has_2))) {
+                        BshNode _e182 = bsh_nodes[b_9];
+                        metal::float3 _e183 = r;
+                        bool _e184 = bsh_reaches(_e182, x_14, _e183, _e116);
+                        local_5 = !(_e184);
+                    } else {
+                        local_5 = true;
+                    }
+                    bool _e187 = local_5;
+                    if (_e187) {
+                        continue;
+                    }
+                    uint li_10 = bsh_nodes[b_9].light;
+                    metal::float3 _e192 = n;
+                    metal::float3 _e193 = r;
+                    metal::float4 _e194 = lobe;
+                    float _e195 = light_weight(li_10, x_14, _e192, _e193, _e194, _e116, rt2_5, light_cones, _buffer_sizes);
+                    weighted_offer(picks, li_10, _e195);
+                }
+            }
+            metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+        }
+    }
+    if (!(has_2)) {
+        if (inside) {
+            out_tex.write(metal::float4(0.0), metal::uint2(texel_1));
+            specular_tex.write(metal::float4(0.0), metal::uint2(texel_1));
+        }
         return;
     }
-    metal::float3 x_15 = _e21.xyz;
-    metal::float3 n_16 = nn / metal::float3(metal::sqrt(len2_1));
-    r = n_16;
-    metal::float4 mr = metal_rough_tex.read(metal::uint2(texel_1), 0);
-    metal::float4 _e61 = base_color_tex.read(metal::uint2(texel_1), 0);
-    metal::float3 _e68 = view.eye;
-    Material _e71 = material_of(_e61.xyz, mr.z, mr.y, mr.w, metal::normalize(_e68 - x_15));
-    m = _e71;
-    metal::float3 _e73 = m.base;
-    float _e75 = m.metallic;
-    metal::float3 _e78 = view.f0_d;
-    float _e81 = view.f90_d;
-    float _e83 = m.alpha;
-    metal::float3 _e85 = m.v;
-    metal::float4 _e87 = receiver_lobe(_e73, _e75, _e78, _e81, _e83, metal::dot(n_16, _e85));
-    lobe = _e87;
-    metal::float3 _e89 = m.v;
-    metal::float3 _e90 = mirror_dir(n_16, _e89);
-    r = _e90;
-    metal::float4 _e91 = lobe;
-    metal::float4 _e92 = range_lobe(_e91);
-    float _e95 = view.shadow_offset;
-    metal::float3 _e98 = view.eye;
-    float eps_4 = _e95 * metal::length(_e98 - x_15);
-    uint _e104 = view.seed;
-    uint _e108 = view.width;
-    uint _e114 = view.frame;
-    uint _e115 = point_stream(_e104, (gid.y * _e108) + gid.x, _e114);
-    uint _e116 = pick_stream(_e115);
-    h = _e116;
-    metal::float3 _e126 = r;
-    metal::float4 _e127 = lobe;
-    WeightedPicks _e128 = bsh_weighted_collect(x_15, n_16, _e126, _e127, _e92, _e115, rt2_5, bsh_nodes, light_cones, _buffer_sizes);
-    if (_e128.w_sum > 0.0) {
-        uint2 loop_bound_7 = uint2(4294967295u);
-        bool loop_init_5 = true;
+    float _e210 = picks.w_sum;
+    if (_e210 > 0.0) {
+        uint2 loop_bound_14 = uint2(4294967295u);
+        bool loop_init_11 = true;
         while(true) {
-            if (metal::all(loop_bound_7 == uint2(0u))) { break; }
-            loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
-            if (!loop_init_5) {
-                uint _e163 = k;
-                k = _e163 + 1u;
+            if (metal::all(loop_bound_14 == uint2(0u))) { break; }
+            loop_bound_14 -= uint2(loop_bound_14.y == 0u, 1u);
+            if (!loop_init_11) {
+                uint _e246 = k;
+                k = _e246 + 1u;
             }
-            loop_init_5 = false;
-            uint _e136 = k;
-            if (_e136 < K) {
+            loop_init_11 = false;
+            uint _e217 = k;
+            if (_e217 < K) {
             } else {
                 break;
             }
             {
-                uint _e140 = k;
-                uint _e145 = k;
-                uint _e149 = lights[_e128.light.inner[_e145]].kind;
-                uint own = (_e149 == LIGHT_TRIANGLE) ? (_e140 + 1u) : 0u;
-                uint _e153 = k;
-                uint _e156 = k;
-                keys.inner[_e153] = metal::uint2(_e128.light.inner[_e156], own);
-                uint _e159 = k;
-                held.inner[_e159] = true;
+                uint _e221 = k;
+                uint _e226 = k;
+                uint _e228 = picks.light.inner[_e226];
+                uint _e231 = lights[_e228].kind;
+                uint own = (_e231 == LIGHT_TRIANGLE) ? (_e221 + 1u) : 0u;
+                uint _e235 = k;
+                uint _e238 = k;
+                uint _e240 = picks.light.inner[_e238];
+                keys.inner[_e235] = metal::uint2(_e240, own);
+                uint _e242 = k;
+                held.inner[_e242] = true;
             }
         }
-        type_19 _e165 = keys;
-        type_20 _e166 = held;
-        type_14 _e167 = first_holders(_e165, _e166);
-        uint2 loop_bound_8 = uint2(4294967295u);
-        bool loop_init_6 = true;
+        type_24 _e248 = keys;
+        type_25 _e249 = held;
+        type_14 _e250 = first_holders(_e248, _e249);
+        uint2 loop_bound_15 = uint2(4294967295u);
+        bool loop_init_12 = true;
         while(true) {
-            if (metal::all(loop_bound_8 == uint2(0u))) { break; }
-            loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
-            if (!loop_init_6) {
-                uint _e221 = k_1;
-                k_1 = _e221 + 1u;
+            if (metal::all(loop_bound_15 == uint2(0u))) { break; }
+            loop_bound_15 -= uint2(loop_bound_15.y == 0u, 1u);
+            if (!loop_init_12) {
+                uint _e308 = k_1;
+                k_1 = _e308 + 1u;
             }
-            loop_init_6 = false;
-            uint _e170 = k_1;
-            if (_e170 < K) {
+            loop_init_12 = false;
+            uint _e253 = k_1;
+            if (_e253 < K) {
             } else {
                 break;
             }
             {
-                uint _e173 = h;
-                uint _e174 = pcg_hash(_e173);
-                h = _e174;
-                uint _e175 = h;
-                float _e176 = xi_from_bits(_e175);
-                uint _e177 = h;
-                uint _e178 = pcg_hash(_e177);
-                h = _e178;
-                uint _e179 = h;
-                float _e180 = xi_from_bits(_e179);
-                uint _e182 = k_1;
-                uint li_6 = _e128.light.inner[_e182];
+                uint _e256 = h;
+                uint _e257 = pcg_hash(_e256);
+                h = _e257;
+                uint _e258 = h;
+                float _e259 = xi_from_bits(_e258);
+                uint _e260 = h;
+                uint _e261 = pcg_hash(_e260);
+                h = _e261;
+                uint _e262 = h;
+                float _e263 = xi_from_bits(_e262);
+                uint _e265 = k_1;
+                uint li_11 = picks.light.inner[_e265];
                 copies = 0u;
-                uint _e186 = k_1;
-                j = _e186;
-                uint2 loop_bound_9 = uint2(4294967295u);
-                bool loop_init_7 = true;
+                uint _e270 = k_1;
+                j_1 = _e270;
+                uint2 loop_bound_16 = uint2(4294967295u);
+                bool loop_init_13 = true;
                 while(true) {
-                    if (metal::all(loop_bound_9 == uint2(0u))) { break; }
-                    loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
-                    if (!loop_init_7) {
-                        uint _e201 = j;
-                        j = _e201 + 1u;
+                    if (metal::all(loop_bound_16 == uint2(0u))) { break; }
+                    loop_bound_16 -= uint2(loop_bound_16.y == 0u, 1u);
+                    if (!loop_init_13) {
+                        uint _e285 = j_1;
+                        j_1 = _e285 + 1u;
                     }
-                    loop_init_7 = false;
-                    uint _e188 = j;
-                    if (_e188 < K) {
+                    loop_init_13 = false;
+                    uint _e272 = j_1;
+                    if (_e272 < K) {
                     } else {
                         break;
                     }
                     {
-                        uint _e191 = copies;
-                        uint _e194 = j;
-                        uint _e196 = k_1;
-                        copies = _e191 + ((_e167.inner[_e194] == _e196) ? 1u : 0u);
+                        uint _e275 = copies;
+                        uint _e278 = j_1;
+                        uint _e280 = k_1;
+                        copies = _e275 + ((_e250.inner[_e278] == _e280) ? 1u : 0u);
                     }
                 }
-                uint _e203 = copies;
-                if (_e203 > 0u) {
-                    Shaded _e206 = t;
-                    metal::float3 _e207 = r;
-                    Material _e208 = m;
-                    uint _e211 = k_1;
-                    float _e214 = weighted_pick_weight(_e128.w_sum, _e128.w.inner[_e211], K);
-                    uint _e215 = copies;
-                    Shaded _e218 = shade_pick(li_6, x_15, n_16, _e207, _e92, _e208, _e214 * static_cast<float>(_e215), _e176, _e180, eps_4, geo_nodes, geo_tris, view, lights, rt2_5, r2_4, light_cones, _buffer_sizes);
-                    Shaded _e219 = add(_e206, _e218);
-                    t = _e219;
+                uint _e287 = copies;
+                if (_e287 > 0u) {
+                    Shaded _e290 = t;
+                    metal::float3 _e291 = n;
+                    metal::float3 _e292 = r;
+                    Material _e293 = m;
+                    float _e295 = picks.w_sum;
+                    uint _e297 = k_1;
+                    float _e299 = picks.w.inner[_e297];
+                    float _e301 = weighted_pick_weight(_e295, _e299, K);
+                    uint _e302 = copies;
+                    Shaded _e305 = shade_pick(li_11, x_14, _e291, _e292, _e116, _e293, _e301 * static_cast<float>(_e302), _e259, _e263, eps_4, geo_nodes, geo_tris, view, lights, rt2_5, r2_4, light_cones, _buffer_sizes);
+                    Shaded _e306 = add(_e290, _e305);
+                    t = _e306;
                 }
             }
         }
     }
-    uint count = _e128.n;
-    metal::float3 _e226 = t.e;
-    out_tex.write(metal::float4(_e226, static_cast<float>(count)), metal::uint2(texel_1));
-    metal::float3 _e231 = t.specular;
-    specular_tex.write(metal::float4(_e231, 0.0), metal::uint2(texel_1));
+    uint count = picks.n;
+    metal::float3 _e314 = t.e;
+    out_tex.write(metal::float4(_e314, static_cast<float>(count)), metal::uint2(texel_1));
+    metal::float3 _e319 = t.specular;
+    specular_tex.write(metal::float4(_e319, 0.0), metal::uint2(texel_1));
     return;
 }

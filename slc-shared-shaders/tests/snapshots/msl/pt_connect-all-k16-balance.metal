@@ -112,13 +112,13 @@ struct Connection {
     metal::packed_float3 y;
     float cos_x;
 };
-typedef GpuLight type_11[1];
-typedef GpuLightCone type_12[1];
+typedef GpuLight type_13[1];
+typedef GpuLightCone type_14[1];
 typedef uint BvhNodes;
-typedef GpuPathVertex type_13[1];
-typedef GpuMaterial type_14[1];
-typedef metal::float4 type_15[1];
-typedef uint type_16[1];
+typedef GpuPathVertex type_15[1];
+typedef GpuMaterial type_16[1];
+typedef metal::float4 type_17[1];
+typedef uint type_18[1];
 constant uint LIGHT_POINT = 0u;
 constant uint LIGHT_SPOT = 1u;
 constant uint LIGHT_IES = 2u;
@@ -177,6 +177,8 @@ constant float TEMPORAL_CHANGE_HIGH = 8.0;
 constant float TEMPORAL_MIN_WEIGHT = 0.01;
 constant uint K = 16u;
 constant BshNodes BSH = 0u;
+constant uint BSH_TILE_DEPTH = 8u;
+constant uint BSH_TILE_SUBTREES = 256u;
 constant BvhNodes BVH = 0u;
 
 float at(
@@ -888,12 +890,12 @@ float half_cosine(
     metal::float3 v,
     metal::float3 l
 ) {
-    metal::float3 h_2 = v + l;
-    float len2_ = metal::dot(h_2, h_2);
+    metal::float3 h_3 = v + l;
+    float len2_ = metal::dot(h_3, h_3);
     if (len2_ <= 0.0) {
         return 0.0;
     }
-    return metal::saturate(metal::dot(v, h_2) / metal::sqrt(len2_));
+    return metal::saturate(metal::dot(v, h_3) / metal::sqrt(len2_));
 }
 
 metal::float3 specular_brdf(
@@ -920,10 +922,10 @@ metal::float3 specular_brdf(
     }
     metal::float3 hs = v_1 + l_1;
     float inv = 1.0 / metal::sqrt(metal::dot(hs, hs));
-    metal::float3 h_3 = hs * inv;
-    metal::float3 c_11 = metal::cross(n_11, h_3);
-    float _e32 = ggx_d(metal::dot(n_11, h_3), metal::dot(c_11, c_11), alpha_3);
-    metal::float3 _e34 = specular_fresnel(base_6, metallic_2, f0_d_2, f90_d_2, metal::dot(v_1, h_3));
+    metal::float3 h_4 = hs * inv;
+    metal::float3 c_11 = metal::cross(n_11, h_4);
+    float _e32 = ggx_d(metal::dot(n_11, h_4), metal::dot(c_11, c_11), alpha_3);
+    metal::float3 _e34 = specular_fresnel(base_6, metallic_2, f0_d_2, f90_d_2, metal::dot(v_1, h_4));
     float _e35 = smith_visibility(n_l_1, n_v_2, alpha_3);
     return _e34 * (_e32 * _e35);
 }
@@ -1602,6 +1604,37 @@ uint bsh_next_leaf_lobe(
     return BSH_NONE;
 }
 
+void reservoir_offer(
+    thread Picks& picks,
+    thread uint& h_1,
+    uint light
+) {
+    uint _e4 = picks.n;
+    bool _e5 = reservoir_takes(_e4);
+    if (_e5) {
+        uint _e7 = picks.n;
+        picks.n = _e7 + 1u;
+        uint _e10 = h_1;
+        uint _e11 = pcg_hash(_e10);
+        h_1 = _e11;
+        uint hi_4 = h_1;
+        uint _e13 = h_1;
+        uint _e14 = pcg_hash(_e13);
+        h_1 = _e14;
+        uint _e16 = picks.n;
+        uint _e18 = h_1;
+        uint _e19 = reservoir_slot(_e16, K, hi_4, _e18);
+        if (_e19 < K) {
+            picks.light.inner[_e19] = light;
+            return;
+        } else {
+            return;
+        }
+    } else {
+        return;
+    }
+}
+
 Picks bsh_collect(
     metal::float3 x_11,
     metal::float3 r_5,
@@ -1610,11 +1643,11 @@ Picks bsh_collect(
     device type_10 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Picks picks = {};
-    uint h_1 = {};
+    Picks picks_1 = {};
+    uint h_2 = {};
     uint i_4 = {};
-    picks.n = 0u;
-    h_1 = seed_1;
+    picks_1.n = 0u;
+    h_2 = seed_1;
     uint _e10 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
     uint _e11 = bsh_next_leaf_lobe(BSH, _e10, x_11, r_5, rl_5, bsh_nodes, _buffer_sizes);
     i_4 = _e11;
@@ -1624,10 +1657,10 @@ Picks bsh_collect(
         if (metal::all(loop_bound_4 == uint2(0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e44 = i_4;
-            uint _e47 = bsh_nodes[_e44].next;
-            uint _e48 = bsh_next_leaf_lobe(BSH, _e47, x_11, r_5, rl_5, bsh_nodes, _buffer_sizes);
-            i_4 = _e48;
+            uint _e23 = i_4;
+            uint _e26 = bsh_nodes[_e23].next;
+            uint _e27 = bsh_next_leaf_lobe(BSH, _e26, x_11, r_5, rl_5, bsh_nodes, _buffer_sizes);
+            i_4 = _e27;
         }
         loop_init_1 = false;
         uint _e13 = i_4;
@@ -1636,31 +1669,13 @@ Picks bsh_collect(
             break;
         }
         {
-            uint _e17 = picks.n;
-            bool _e18 = reservoir_takes(_e17);
-            if (_e18) {
-                uint _e20 = picks.n;
-                picks.n = _e20 + 1u;
-                uint _e23 = h_1;
-                uint _e24 = pcg_hash(_e23);
-                h_1 = _e24;
-                uint hi_4 = h_1;
-                uint _e26 = h_1;
-                uint _e27 = pcg_hash(_e26);
-                h_1 = _e27;
-                uint _e29 = picks.n;
-                uint _e31 = h_1;
-                uint _e32 = reservoir_slot(_e29, K, hi_4, _e31);
-                if (_e32 < K) {
-                    uint _e38 = i_4;
-                    uint _e41 = bsh_nodes[_e38].light;
-                    picks.light.inner[_e32] = _e41;
-                }
-            }
+            uint _e17 = i_4;
+            uint _e20 = bsh_nodes[_e17].light;
+            reservoir_offer(picks_1, h_2, _e20);
         }
     }
-    Picks _e49 = picks;
-    return _e49;
+    Picks _e28 = picks_1;
+    return _e28;
 }
 
 Connection connect_record(
@@ -1733,7 +1748,7 @@ Connection connect_traced(
     device type_4 const& slc_table,
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
-    device type_11 const& lights,
+    device type_13 const& lights,
     device type_4 const& r2_3,
     device type_4 const& rt2_5,
     constant _mslBufferSizes& _buffer_sizes
@@ -1758,7 +1773,7 @@ Connection connect(
     device type_4 const& slc_table,
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
-    device type_11 const& lights,
+    device type_13 const& lights,
     device type_4 const& r2_3,
     device type_4 const& rt2_5,
     constant _mslBufferSizes& _buffer_sizes
@@ -1780,7 +1795,7 @@ float light_range_scale(
     metal::float3 x_15,
     metal::float3 r_6,
     metal::float4 rl_6,
-    device type_12 const& light_cones,
+    device type_14 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuLightCone c_13 = light_cones[li_2];
@@ -1809,9 +1824,9 @@ float light_pdf_selected(
     metal::float4 rl_8,
     metal::float3 y_2,
     float sel,
-    device type_11 const& lights,
+    device type_13 const& lights,
     device type_4 const& rt2_5,
-    device type_12 const& light_cones,
+    device type_14 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuLight l_9 = lights[li_4];
@@ -1836,9 +1851,9 @@ float light_pdf(
     metal::float3 y_3,
     uint nee_1,
     bool in_range_2,
-    device type_11 const& lights,
+    device type_13 const& lights,
     device type_4 const& rt2_5,
-    device type_12 const& light_cones,
+    device type_14 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     float _e9 = select_pdf(li_5, x_18, n_19, r_9, lobe_6, rl_9, nee_1, in_range_2);
@@ -1863,10 +1878,10 @@ metal::float3 shade_pick(
     device type_4 const& slc_table,
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
-    device type_11 const& lights,
+    device type_13 const& lights,
     device type_4 const& r2_3,
     device type_4 const& rt2_5,
-    device type_12 const& light_cones,
+    device type_14 const& light_cones,
     constant ShadeParams& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1900,15 +1915,15 @@ kernel void main_(
 , device type_6 const& geo_nodes [[user(fake0)]]
 , device type_7 const& geo_tris [[user(fake0)]]
 , device type_10 const& bsh_nodes [[user(fake0)]]
-, device type_11 const& lights [[user(fake0)]]
+, device type_13 const& lights [[user(fake0)]]
 , device type_4 const& r2_3 [[user(fake0)]]
 , device type_4 const& rt2_5 [[user(fake0)]]
-, device type_12 const& light_cones [[user(fake0)]]
+, device type_14 const& light_cones [[user(fake0)]]
 , constant ShadeParams& params [[user(fake0)]]
-, device type_13 const& vertices [[user(fake0)]]
-, device type_14 const& materials [[user(fake0)]]
-, device type_15& radiance [[user(fake0)]]
-, device type_16& candidates [[user(fake0)]]
+, device type_15 const& vertices [[user(fake0)]]
+, device type_16 const& materials [[user(fake0)]]
+, device type_17& radiance [[user(fake0)]]
+, device type_18& candidates [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
     uint h = {};

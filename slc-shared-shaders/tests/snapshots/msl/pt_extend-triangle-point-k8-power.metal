@@ -190,6 +190,8 @@ constant float TEMPORAL_MIN_WEIGHT = 0.01;
 constant uint K = 8u;
 constant BvhNodes BVH = 0u;
 constant BshNodes BSH = 0u;
+constant uint BSH_TILE_DEPTH = 8u;
+constant uint BSH_TILE_SUBTREES = 256u;
 
 float to_f32_(
     uint u
