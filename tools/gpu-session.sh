@@ -8,10 +8,11 @@
 # over the 64 MiB a call carries; Python's lzma unpacks it there) and writes .gpu/commands.sh:
 # - issue 46: the default VPL frame at 1080p, 65,536 and 1,048,576 VPLs, twice each (two runs must agree
 #   within 5% per stage);
-# - issue 47: many_lights at 1080p with 4,000 lights (every configuration, then slc's alone at eps 0.03),
-#   500 and 20,000 (Bevy at unbounded ranges left out there: minutes);
+# - issue 47: many_lights at 1080p with 4,000 lights (every configuration, then slc's alone with the walk
+#   per pixel instead of per tile, and at eps 0.03), 500 and 20,000 (Bevy at unbounded ranges left out
+#   there: minutes);
 # - issue 48: the path-tracing suite at 512x512, noise from seed pairs.
-# About 400 s on an NVIDIA H200 (the last call's steps: docs/results/gpu-h200-b/log.txt). Results land
+# About 430 s on an NVIDIA H200 (the last call's steps: docs/results/gpu-h200-b/log.txt). Results land
 # in the call's $OUT; copy them to docs/results/ with the adapter's name and the date.
 set -euo pipefail
 cd "$(git rev-parse --show-toplevel)"
@@ -31,6 +32,7 @@ python3 -c "import lzma, shutil; shutil.copyfileobj(lzma.open('many_lights.xz'),
 chmod +x many_lights
 export RUST_LOG=warn
 step 100 env SLC_BEVY_BENCH=$OUT/bevy-4000.json ./many_lights 4000
+step 60 env SLC_BEVY_WALK=pixel SLC_BEVY_BENCH_MODES=slc SLC_BEVY_BENCH=$OUT/bevy-4000-pixel-walk.json ./many_lights 4000
 step 60 env SLC_BEVY_EPSILON=0.03 SLC_BEVY_BENCH_MODES=slc SLC_BEVY_BENCH=$OUT/bevy-4000-eps003.json ./many_lights 4000
 step 60 env SLC_BEVY_BENCH=$OUT/bevy-500.json ./many_lights 500
 step 120 env SLC_BEVY_BENCH_FRAMES=32 SLC_BEVY_BENCH_MODES=slc,default SLC_BEVY_BENCH=$OUT/bevy-20000.json ./many_lights 20000

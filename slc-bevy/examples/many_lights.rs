@@ -20,7 +20,8 @@
 //! (`slc`, `default`, `unbounded`) picks the starting mode; `SLC_BEVY_SIZE`
 //! (`WxH`) the window's size; `SLC_BEVY_SHADOWS=off` starts without slc's
 //! shadows; `SLC_BEVY_EPSILON` sets slc's error bound ε (default 0.01; the
-//! bench too).
+//! bench too); `SLC_BEVY_WALK=pixel` walks the light hierarchy once per
+//! pixel instead of once per tile (`SlcCamera::walk`; the bench too).
 //!
 //! **Frame-time bench** (no window, no display): `SLC_BEVY_BENCH=out.json`
 //! renders into an image target at `SLC_BEVY_SIZE` (default 1920x1080)
@@ -53,7 +54,7 @@ use bevy::pbr::DefaultOpaqueRendererMethod;
 use bevy::prelude::*;
 use bevy::render::view::screenshot::{Screenshot, ScreenshotCaptured};
 use rand::{Rng, SeedableRng};
-use slc_bevy::{Culling, SlcCamera, SlcLight, SlcPlugin, SlcStatus};
+use slc_bevy::{Culling, DirectWalk, SlcCamera, SlcLight, SlcPlugin, SlcStatus};
 
 fn main() {
     let lights = std::env::args().nth(1).and_then(|s| s.parse().ok()).unwrap_or(4000usize);
@@ -130,6 +131,19 @@ fn culling() -> Culling {
         Ok(culling) => culling,
         Err(err) => {
             eprintln!("SLC_BEVY_EPSILON: {err}");
+            std::process::exit(2);
+        }
+    }
+}
+
+/// How slc finds each pixel's lights: `SLC_BEVY_WALK` (`tile`, the
+/// default, or `pixel`; another value exits with the reason).
+fn walk() -> DirectWalk {
+    match std::env::var("SLC_BEVY_WALK").as_deref() {
+        Err(_) | Ok("tile") => DirectWalk::Tile,
+        Ok("pixel") => DirectWalk::Pixel,
+        Ok(other) => {
+            eprintln!("SLC_BEVY_WALK: {other:?} is neither tile nor pixel");
             std::process::exit(2);
         }
     }
@@ -227,6 +241,7 @@ fn setup(
             SlcCamera {
                 shadows: std::env::var("SLC_BEVY_SHADOWS").as_deref() != Ok("off"),
                 culling: culling(),
+                walk: walk(),
                 ..default()
             },
             Tonemapping::AcesFitted,
@@ -524,7 +539,10 @@ fn bench(lights: usize, out: &str) -> Result<(), String> {
         .world()
         .get_resource::<RenderAdapterInfo>()
         .map_or("unknown".to_string(), |a| format!("{} ({:?})", a.name, a.backend));
-    println!("many_lights bench: {lights} lights, {w}x{h}, {frames} timed frames, on {adapter}");
+    let slc_walk = format!("{:?}", walk()).to_lowercase();
+    println!(
+        "many_lights bench: {lights} lights, {w}x{h}, {frames} timed frames, slc's {slc_walk} walk, on {adapter}"
+    );
     let mut results = Vec::new();
     for (name, mode, shadows, resample, reuse) in CONFIGS {
         if !modes.contains(&mode) {
@@ -625,6 +643,7 @@ fn bench(lights: usize, out: &str) -> Result<(), String> {
         "width": w,
         "height": h,
         "timed_frames": frames,
+        "slc_walk": slc_walk,
         "timestamps": timestamps,
         "configurations": results,
     });

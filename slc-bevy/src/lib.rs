@@ -151,6 +151,8 @@ use bevy::render::{Extract, ExtractSchedule, Render, RenderApp, RenderStartup, R
 /// How an [`SlcCamera`]'s lights are culled (slc's one culling vocabulary).
 pub use slc_wgpu::Culling;
 pub use slc_wgpu::passes::DirectCounts;
+/// How an [`SlcCamera`]'s direct pass finds each pixel's lights in range.
+pub use slc_wgpu::passes::DirectWalk;
 use slc_wgpu::passes::{
     DirectInputs, DirectOutputs, DirectPass, DirectPassDesc, DirectReuse, DirectSelection,
     DirectSettings, MaterialInputs, Shadows, TemporalInputs, TemporalPass, TemporalPassDesc,
@@ -227,6 +229,12 @@ pub struct SlcCamera {
     /// view's G-buffer as the previous frame left it (its record runs before
     /// this frame's unpack); the image is unchanged.
     pub count_work: bool,
+    /// How each pixel's lights in range are found: one walk of the light
+    /// hierarchy per 8×8 tile, shared (the default), or one per pixel.
+    /// The same lights either way, so the same image; which is faster
+    /// depends on the adapter (many_lights' bench compares them:
+    /// `SLC_BEVY_WALK`).
+    pub walk: DirectWalk,
 }
 
 impl Default for SlcCamera {
@@ -244,6 +252,7 @@ impl Default for SlcCamera {
             max_history: 32.0,
             shadows: true,
             count_work: false,
+            walk: DirectWalk::Tile,
         }
     }
 }
@@ -829,6 +838,7 @@ fn new_view(
         DirectSelection::Weighted { k: settings.picks }
     };
     desc.reuse = (settings.resample && settings.reuse).then(DirectReuse::default);
+    desc.walk = settings.walk;
     desc.outputs = DirectOutputs::BevyRadiance;
     desc.light_types = slc_shared_lights();
     let set = LightSet::new(lights.to_vec()).map_err(|e| e.to_string())?;
@@ -955,8 +965,8 @@ fn prepare_views(
         }
         let stale = views.0.get(&entity).is_none_or(|v| {
             v.size != size
-                || (v.settings.picks, v.settings.resample, v.settings.reuse)
-                    != (settings.picks, settings.resample, settings.reuse)
+                || (v.settings.picks, v.settings.resample, v.settings.reuse, v.settings.walk)
+                    != (settings.picks, settings.resample, settings.reuse, settings.walk)
                 || v.motion != motion
         });
         if stale {

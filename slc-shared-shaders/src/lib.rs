@@ -457,6 +457,10 @@ pub struct Features {
     /// `reuse` uniform (0.7) and `lights_prev`, `reuse_prev` and
     /// `reuse_next` (1.8–1.10).
     pub reuse_domains: u32,
+    /// `direct_light` walks the light hierarchy once per tile, shared by
+    /// its invocations (`bsh_tile.wgsl`; the default), rather than once
+    /// per pixel: the same lights in the same order either way.
+    pub tile_walk: bool,
 }
 
 impl Default for Features {
@@ -480,6 +484,7 @@ impl Default for Features {
             counters: false,
             motion_vectors: false,
             reuse_domains: 0,
+            tile_walk: true,
         }
     }
 }
@@ -546,12 +551,16 @@ pub fn vpl_workgroup_bytes(kernel: Kernel, f: &Features) -> u64 {
     }
 }
 
-/// Workgroup memory in bytes of `direct_light` specialised to `f`: its
-/// tile walk's box reduction (two `vec3f` per invocation and the box), the
-/// list of `max_tile_lights` entries, the 256 subtrees' positions and two
-/// scalars (checked against naga's layout in the tests).
+/// Workgroup memory in bytes of `direct_light` specialised to `f`: with
+/// the tile walk, its box reduction (two `vec3f` per invocation and the
+/// box), the list of `max_tile_lights` entries, the 256 subtrees'
+/// positions and two scalars; none without (checked against naga's
+/// layout in the tests).
 pub fn direct_workgroup_bytes(f: &Features) -> u64 {
     let threads = f.tile_size as u64 * f.tile_size as u64;
+    if !f.tile_walk {
+        return 0;
+    }
     32 * threads + 32 + 4 * f.max_tile_lights as u64 + 4 * 256 + 8
 }
 
@@ -733,6 +742,7 @@ pub fn generate_module(kernel: Kernel, features: &Features) -> Result<Generated,
         shadows => features.shadows,
         glossy => features.glossy,
         counters => features.counters,
+        tile_walk => features.tile_walk,
         motion => features.motion_vectors,
         reuse => features.reuse_domains > 0,
         reuse_domains => features.reuse_domains,

@@ -215,7 +215,8 @@ fn vpl_workgroup_bytes_match_naga() {
 
 /// `direct_workgroup_bytes` is the size naga lays out for the generated
 /// `direct_light`'s workgroup variables (its tile walk), for each tile
-/// size and a few list capacities, with and without counters.
+/// size and a few list capacities, with and without counters, and none
+/// with the walk per pixel.
 #[test]
 fn direct_workgroup_bytes_match_naga() {
     use slc_shared_shaders::{
@@ -223,13 +224,14 @@ fn direct_workgroup_bytes_match_naga() {
     };
     for tile in [1u32, 4, 8, 16] {
         for list in [16u32, 1024] {
-            for counters in [false, true] {
+            for (counters, tile_walk) in [(false, true), (true, true), (false, false)] {
                 let f = Features {
                     lights: LightTypes { point: true, ..LightTypes::default() },
                     selection: Selection::Weighted,
                     tile_size: tile,
                     max_tile_lights: list,
                     counters,
+                    tile_walk,
                     ..Features::default()
                 };
                 let g = generate_module(Kernel::DirectLight, &f).unwrap();
@@ -245,7 +247,7 @@ fn direct_workgroup_bytes_match_naga() {
                 assert_eq!(
                     direct_workgroup_bytes(&f),
                     naga_bytes,
-                    "tile {tile} list {list} counters {counters}"
+                    "tile {tile} list {list} counters {counters} tile walk {tile_walk}"
                 );
             }
         }

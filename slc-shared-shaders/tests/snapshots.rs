@@ -195,6 +195,16 @@ fn variants() -> Vec<(&'static str, Kernel, Features)> {
             },
         ),
         (
+            "direct_light-point-weighted-pixel-walk",
+            Kernel::DirectLight,
+            Features {
+                lights: LightTypes::parse("point").unwrap(),
+                selection: Selection::Weighted,
+                tile_walk: false,
+                ..Features::default()
+            },
+        ),
+        (
             "direct_light-all-reservoir-position",
             Kernel::DirectLight,
             Features {

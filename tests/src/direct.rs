@@ -15,8 +15,8 @@ use slc_scene::lights::{DIRECT_K, Direct, DirectSelection, LightSet};
 use slc_scene::occluders::Occluders;
 use slc_wgpu::glam::Vec3;
 use slc_wgpu::passes::{
-    Culling, DirectInputs, DirectPass, DirectPassDesc, DirectSettings, GBuffer, Shadows, Surface,
-    SurfaceDesc,
+    Culling, DirectInputs, DirectPass, DirectPassDesc, DirectSettings, DirectWalk, GBuffer,
+    Shadows, Surface, SurfaceDesc,
 };
 use slc_wgpu::{GpuContext, GpuError, LightTypes};
 
@@ -31,6 +31,8 @@ pub struct GpuDirect {
     pass: Option<DirectPass>,
     /// The occluders and normal offset of [`GpuDirect::set_shadows`].
     shadows: Option<(Occluders, f32)>,
+    /// How the pass finds each point's lights (tile walk by default).
+    pub walk: DirectWalk,
 }
 
 /// The light types of `lights` (what the pass compiles).
@@ -50,7 +52,13 @@ impl GpuDirect {
     /// (and again when the number of rows of points changes), checking the
     /// device's limits for them then.
     pub fn new(gpu: &GpuContext, lights: &LightSet) -> Result<Self, GpuError> {
-        Ok(GpuDirect { gpu: gpu.clone(), lights: lights.clone(), pass: None, shadows: None })
+        Ok(GpuDirect {
+            gpu: gpu.clone(),
+            lights: lights.clone(),
+            pass: None,
+            shadows: None,
+            walk: DirectWalk::default(),
+        })
     }
 
     /// Shadows every pick against `occluders` (a ray's origin offset along
@@ -110,13 +118,15 @@ impl GpuDirect {
             gpu.limits.max_texture_dimension_2d as u64,
         )?;
         if self.pass.as_ref().is_none_or(|p| {
-            (p.desc().width, p.desc().height, p.desc().selection) != (w, h, selection)
+            (p.desc().width, p.desc().height, p.desc().selection, p.desc().walk)
+                != (w, h, selection, self.walk)
         }) {
             let desc = DirectPassDesc {
                 surface: SurfaceDesc::Position,
                 output_format: wgpu::TextureFormat::Rgba32Float,
                 selection,
                 light_types: light_types(self.lights.lights()),
+                walk: self.walk,
                 ..DirectPassDesc::new(w, h)
             };
             let mut pass = DirectPass::new(&gpu, &self.lights, &desc)?;

@@ -6,7 +6,10 @@
 //! the weighted picks (the pass's default), every light in range, and the
 //! weighted picks shadowed by forty boxes (at random points: where 50 or
 //! more are lit, the shadows must change at least 2% of them; they change
-//! 30–60% in most cases).
+//! 30–60% in most cases). Every case runs with both of the pass's walks
+//! ([`DirectWalk`]: one per 8×8 tile, shared, and one per pixel), and a
+//! case with 1,500 lights in range makes a tile list longer than its
+//! 1,024 entries.
 //!
 //! Both backends draw the same random numbers (ξ per light, the reservoir's
 //! and the sampled points' hashes), so they agree number for number, except
@@ -40,6 +43,7 @@ use slc_scene::lights::{DirectSelection, LightSet};
 use slc_scene::occluders::{Instance, Occluders};
 use slc_tests::direct::{GpuDirect, unit_cube};
 use slc_tests::{gpu, shared_data};
+use slc_wgpu::passes::DirectWalk;
 use std::sync::{Arc, OnceLock};
 
 fn ies() -> Arc<IesProfile> {
@@ -115,6 +119,7 @@ fn compare(
     frame: u32,
     selection: DirectSelection,
     shadowed: bool,
+    walk: DirectWalk,
 ) -> Option<Outcome> {
     let g = gpu()?;
     let mut r = Gen(seed);
@@ -144,6 +149,7 @@ fn compare(
     let set = LightSet::new(lights).unwrap();
     let mut cpu = DirectLights::new(&set);
     let mut gpu_lights = GpuDirect::new(g, &set).unwrap();
+    gpu_lights.walk = walk;
     // Points: random ones, and ones on a light's threshold sphere r_t (where
     // p = 1 turns into p < 1) and at 0.999× and 1.001× of it; shadowed, only
     // random ones (a point on a small threshold sphere is too close to its
@@ -251,13 +257,19 @@ const SELECTIONS: [(DirectSelection, bool); 6] = [
     (DirectSelection::Resampled { k: 8 }, true),
 ];
 
+/// Both ways the pass finds a point's lights: each must equal the CPU's
+/// walk.
+const WALKS: [DirectWalk; 2] = [DirectWalk::Tile, DirectWalk::Pixel];
+
 proptest! {
     #![proptest_config(ProptestConfig { cases: 12, rng_seed: proptest::test_runner::RngSeed::Fixed(0x51C_D1EC7), failure_persistence: None, ..ProptestConfig::default() })]
     /// Random light sets and settings: decisions and irradiance agree.
     fn random_light_sets_agree(seed in any::<u32>(), n in 1usize..160, lo in -6.0f32..2.0, span in 0.0f32..6.0, log_eps in -4.0f32..-0.5, frame in 0u32..100) {
         for (selection, shadowed) in SELECTIONS {
-            if let Some(o) = compare(seed, n, (lo, lo + span), 10f32.powf(log_eps), frame, selection, shadowed) {
-                check(&o, &format!("seed {seed}, {n} lights, {selection:?}, shadowed: {shadowed}"));
+            for walk in WALKS {
+                if let Some(o) = compare(seed, n, (lo, lo + span), 10f32.powf(log_eps), frame, selection, shadowed, walk) {
+                    check(&o, &format!("seed {seed}, {n} lights, {selection:?}, shadowed: {shadowed}, {walk:?} walk"));
+                }
             }
         }
     }
@@ -274,8 +286,12 @@ fn extreme_intensities_and_error_bounds_agree() {
         ("huge error bound", (-2.0, 2.0), 1e30),
     ] {
         for (selection, shadowed) in SELECTIONS {
-            let Some(o) = compare(7, 64, range, eps, 3, selection, shadowed) else { return };
-            check(&o, &format!("{what}, {selection:?}, shadowed: {shadowed}"));
+            for walk in WALKS {
+                let Some(o) = compare(7, 64, range, eps, 3, selection, shadowed, walk) else {
+                    return;
+                };
+                check(&o, &format!("{what}, {selection:?}, shadowed: {shadowed}, {walk:?} walk"));
+            }
         }
     }
 }
@@ -287,7 +303,11 @@ fn extreme_intensities_and_error_bounds_agree() {
 /// lavapipe's 65,535 iterations.
 fn long_tile_lists_agree() {
     for (selection, shadowed) in SELECTIONS {
-        let Some(o) = compare(11, 1_500, (3.0, 4.0), 1e-4, 5, selection, shadowed) else { return };
+        let Some(o) =
+            compare(11, 1_500, (3.0, 4.0), 1e-4, 5, selection, shadowed, DirectWalk::Tile)
+        else {
+            return;
+        };
         check(&o, &format!("1,500 lights in range, {selection:?}, shadowed: {shadowed}"));
         assert_eq!(o.count_differs, 0, "the same lights in range everywhere");
         assert!(o.most_in_range > 1_024, "at most {} lights in range", o.most_in_range);

@@ -17,9 +17,11 @@ fn occluded(a: vec3f, b: vec3f) -> bool {
 {% include "bsh_weighted.wgsl" %}
 {% endif %}
 {% include "gbuffer_read.wgsl" %}
+{% if tile_walk %}
 const TILE_THREADS: u32 = {{ tile }}u * {{ tile }}u;
 const BOX_THREADS: u32 = TILE_THREADS;
 {% include "bsh_tile.wgsl" %}
+{% endif %}
 // The engine's direct pass: at every G-buffer pixel, the lights whose random
 // range reaches it (BSH traversal), {% if selection == "weighted" %}{{ k }} importance-weighted picks among them{% elif selection == "resampled" %}{{ k }} picks resampled from them in proportion to their unshadowed contributions{% if reuse %} and reused across frames and pixels{% endif %}{% elif selection == "all" %}every one of them (exact given ξ){% else %}{{ k }} uniform picks among them (Algorithm R){% endif %},
 // each sampled (a point on a triangle), RR-tested at that point with its own
@@ -301,7 +303,7 @@ fn gris_combine(q: u32, cur: ReuseSlot, cur_ris: bool, cur_c: f32, k0: u32, k1: 
 fn main(@builtin(global_invocation_id) gid: vec3u, @builtin(local_invocation_index) lid: u32) {
     // Every invocation takes part in its tile's walk (barriers); one
     // outside the image, or without a surface (or a finite position),
-    // lists nothing and writes zeros where its texel is.
+    // finds no light and writes zeros where its texel is.
     let inside = gid.x < view.width && gid.y < view.height;
     let texel = vec2i(i32(gid.x), i32(gid.y));
     var s = vec4f(0.0);
@@ -379,6 +381,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u, @builtin(local_invocation_ind
     picks.n = 0u;
     var hr = seed;
 {% endif %}
+{% if tile_walk %}
     // The lights in range, from the tile's list (bsh_tile.wgsl): the ones
     // this pixel's own walk of the hierarchy finds, in its order.
     let walk = tile_walk_begin(lid, x, rl.w, has && rl.w >= 0.0);
@@ -389,6 +392,11 @@ fn main(@builtin(global_invocation_id) gid: vec3u, @builtin(local_invocation_ind
             if !has || !bsh_reaches(bsh_nodes[b], x, r, rl) {
                 continue;
             }
+{% else %}
+    // The lights in range, from this pixel's own walk of the hierarchy.
+    if has {
+        for (var b = bsh_next_leaf_lobe(BSH, bsh_first(BSH), x, r, rl); b != BSH_NONE; b = bsh_next_leaf_lobe(BSH, bsh_nodes[b].next, x, r, rl)) {
+{% endif %}
             let li = bsh_nodes[b].light;
 {% if selection == "weighted" %}
             weighted_offer(&picks, li, light_weight(li, x, n, r, lobe, rl));
@@ -435,8 +443,10 @@ fn main(@builtin(global_invocation_id) gid: vec3u, @builtin(local_invocation_ind
             reservoir_offer(&picks, &hr, li);
 {% endif %}
         }
+{% if tile_walk %}
         // The next round refills the list.
         workgroupBarrier();
+{% endif %}
     }
     if !has {
         if inside {

@@ -11,6 +11,15 @@
 //! positions) and writes the output texture: no G-buffer copy, no
 //! intermediate image.
 //!
+//! **One walk per tile.** An 8×8 tile's invocations walk the light
+//! hierarchy together, once: its 256 depth-8 subtrees dealt out among them,
+//! each tested against the tile's box of positions at its pixels' largest
+//! range-lobe scale (`slc_core::bsh::walk::bsh_reaches_box`), into a list
+//! in workgroup memory (1,024 leaves at a time; a longer list in rounds).
+//! Each pixel tests the listed leaves exactly (`bsh_reaches`): the lights
+//! its own walk would find, in the same order, so the CPU twin
+//! (`slc_cpu::direct`), which walks per pixel, draws the same picks.
+//!
 //! **Shadows.** Unshadowed by default: the engine owns visibility (its
 //! shadow maps, or a ray query of its own). Given occluders
 //! ([`DirectPass::set_shadows`]: slc-scene's [`Occluders`], the engine's
@@ -251,6 +260,23 @@ pub struct DirectPassDesc {
     /// Reuse of the resampled picks across frames and pixels
     /// ([`DirectReuse`]; [`DirectSelection::Resampled`] only), or none.
     pub reuse: Option<DirectReuse>,
+    /// How each pixel's lights in range are found ([`DirectWalk`]).
+    pub walk: DirectWalk,
+}
+
+/// How the direct pass finds each pixel's lights in range. Either way a
+/// pixel gets the same lights in the same order, so the same picks and
+/// image: only the time differs, and which is faster depends on the
+/// adapter (measured in `docs/results/bevy-gpu-h200.md`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum DirectWalk {
+    /// One walk of the light hierarchy per 8×8 tile, shared by its
+    /// invocations, into a list in workgroup memory that each pixel then
+    /// tests exactly (the module docs, "One walk per tile").
+    #[default]
+    Tile,
+    /// One walk per pixel: no workgroup memory and no barriers.
+    Pixel,
 }
 
 /// Reuse of [`DirectSelection::Resampled`]'s picks across frames and
@@ -355,6 +381,7 @@ impl DirectPassDesc {
             },
             outputs: DirectOutputs::Irradiance,
             reuse: None,
+            walk: DirectWalk::Tile,
         }
     }
 }
@@ -576,6 +603,7 @@ impl DirectPass {
             tile_size: TILE,
             workgroup_size: WG,
             shadows: false,
+            tile_walk: desc.walk == DirectWalk::Tile,
             ..Features::default()
         };
         check_light_limits(gpu, lights.len() as u64, 0)?;

@@ -1,0 +1,1202 @@
+struct GpuLight {
+    p0_: vec3<f32>,
+    kind: u32,
+    p1_: vec3<f32>,
+    a: f32,
+    p2_: vec3<f32>,
+    b: f32,
+    intensity: vec3<f32>,
+    ies_base: u32,
+}
+
+struct GpuLightCone {
+    center: vec3<f32>,
+    radius: f32,
+    axis: vec3<f32>,
+    cos_o: f32,
+    phi: f32,
+    cos_e: f32,
+    bvh_leaf: u32,
+    pad: u32,
+}
+
+struct GpuGeoNode {
+    bmin: vec3<f32>,
+    first: u32,
+    bmax: vec3<f32>,
+    count: u32,
+}
+
+struct GpuTriangle {
+    v0_: vec3<f32>,
+    material: u32,
+    v1_: vec3<f32>,
+    light: u32,
+    v2_: vec3<f32>,
+    pad: u32,
+}
+
+struct ViewParams {
+    c0_: vec4<f32>,
+    c1_: vec4<f32>,
+    c2_: vec4<f32>,
+    c3_: vec4<f32>,
+    eye: vec3<f32>,
+    width: u32,
+    height: u32,
+    shadow_offset: f32,
+    seed: u32,
+    frame: u32,
+    f0_d: vec3<f32>,
+    f90_d: f32,
+}
+
+struct BshNode {
+    center: vec3<f32>,
+    radius: f32,
+    child: u32,
+    next: u32,
+    light: u32,
+    extent: f32,
+}
+
+struct GeoHit {
+    t: f32,
+    tri: u32,
+}
+
+struct Connection {
+    e: vec3<f32>,
+    y: vec3<f32>,
+    cos_x: f32,
+}
+
+struct WeightedPicks {
+    light: array<u32, 8>,
+    w: array<f32, 8>,
+    threshold: array<f32, 8>,
+    w_sum: f32,
+    n: u32,
+    h: u32,
+}
+
+struct Shaded {
+    e: vec3<f32>,
+    diffuse: vec3<f32>,
+    specular: vec3<f32>,
+}
+
+struct Material {
+    base: vec3<f32>,
+    metallic: f32,
+    alpha: f32,
+    v: vec3<f32>,
+    roughness: f32,
+    reflectance: f32,
+}
+
+const LIGHT_POINT: u32 = 0u;
+const LIGHT_SPOT: u32 = 1u;
+const LIGHT_IES: u32 = 2u;
+const LIGHT_TRIANGLE: u32 = 3u;
+const LIGHT_VPL: u32 = 4u;
+const NO_LIGHT: u32 = 4294967295u;
+const COUNT_TILES: u32 = 0u;
+const COUNT_GROUP_TESTS: u32 = 1u;
+const COUNT_CLUSTER_TESTS: u32 = 2u;
+const COUNT_SPHERE_TESTS: u32 = 3u;
+const COUNT_TESTED: u32 = 4u;
+const COUNT_KEPT: u32 = 5u;
+const COUNT_PIXELS: u32 = 6u;
+const COUNT_FIELDS: u32 = 7u;
+const DIRECT_COUNT_PIXELS: u32 = 0u;
+const DIRECT_COUNT_CANDIDATES: u32 = 1u;
+const DIRECT_COUNT_EVALUATIONS: u32 = 2u;
+const DIRECT_COUNT_RAYS: u32 = 3u;
+const DIRECT_COUNT_NODES: u32 = 4u;
+const DIRECT_COUNT_FIELDS: u32 = 5u;
+const MAP_CAMERA: u32 = 0u;
+const MAP_PERSPECTIVE: u32 = 1u;
+const MAP_ORTHOGRAPHIC: u32 = 2u;
+const XI_STEP: f32 = 0.000000059604645f;
+const PICK_STREAM: u32 = 2654435769u;
+const TWO_PI: f32 = 6.2831855f;
+const UNRANGED: f32 = 100000000000000000000000000000000000000f;
+const CULL_RADIUS_SCALE: f32 = 1.000001f;
+const SPHERE_PAD: f32 = 0.00000047683716f;
+const SPHERE_HUGE: f32 = 340282350000000000000000000000000000000f;
+const SPHERE_PAD_ABS: f32 = 0.000000000000000001f;
+const CLUSTER: u32 = 64u;
+const GROUP_SIDE: u32 = 8u;
+const INV_PI: f32 = 0.31830987f;
+const MIN_D2_: f32 = 0.000000000001f;
+const MAX_INTENSITY: f32 = 72057594000000000f;
+const BSH_NONE: u32 = 4294967295u;
+const RESERVOIR_FULL: u32 = 4294967295u;
+const GGX_ALPHA_MIN: f32 = 0.001f;
+const RANGE_SCALE_MAX: f32 = 64f;
+const LIGHT_BVH_LEAF: u32 = 4294967295u;
+const ONE_MINUS_EPSILON: f32 = 0.99999994f;
+const F32_MAX: f32 = 340282350000000000000000000000000000000f;
+const DEPTH_NONE: f32 = 1000000000000000000000000000000f;
+const DEPTH_SIGMA: f32 = 0.05f;
+const COVER_WEIGHT: f32 = 0.1f;
+const ROULETTE_DEPTH: u32 = 2u;
+const TEMPORAL_MAX_HISTORY: f32 = 32f;
+const TEMPORAL_DEPTH_TOLERANCE: f32 = 0.01f;
+const TEMPORAL_MOTION_DEPTH_TOLERANCE: f32 = 0.05f;
+const TEMPORAL_NORMAL_COS: f32 = 0.9f;
+const TEMPORAL_MIN_MOMENTS: f32 = 8f;
+const TEMPORAL_CHANGED_HISTORY: f32 = 1f;
+const TEMPORAL_CHANGE_LOW: f32 = 4f;
+const TEMPORAL_CHANGE_HIGH: f32 = 8f;
+const TEMPORAL_MIN_WEIGHT: f32 = 0.01f;
+const K: u32 = 8u;
+const BSH: u32 = 0u;
+const BSH_TILE_DEPTH: u32 = 8u;
+const BSH_TILE_SUBTREES: u32 = 256u;
+
+@group(1) @binding(6) 
+var<storage> geo_nodes: array<GpuGeoNode>;
+@group(1) @binding(7) 
+var<storage> geo_tris: array<GpuTriangle>;
+@group(0) @binding(0) 
+var<uniform> view: ViewParams;
+@group(0) @binding(1) 
+var position_tex: texture_2d<f32>;
+@group(0) @binding(2) 
+var normal_tex: texture_2d<f32>;
+@group(0) @binding(3) 
+var out_tex: texture_storage_2d<rgba16float,write>;
+@group(1) @binding(1) 
+var<storage> lights: array<GpuLight>;
+@group(1) @binding(2) 
+var<storage> rt2_5: array<f32>;
+@group(1) @binding(3) 
+var<storage> r2_4: array<f32>;
+@group(1) @binding(4) 
+var<storage> bsh_nodes: array<BshNode>;
+@group(1) @binding(5) 
+var<storage> light_cones: array<GpuLightCone>;
+
+fn to_f32_(u: u32) -> f32 {
+    return f32(u);
+}
+
+fn mul_lo_u32_(a: u32, b_1: u32) -> u32 {
+    return (a * b_1);
+}
+
+fn add_wrap_u32_(a_1: u32, b_2: u32) -> u32 {
+    return (a_1 + b_2);
+}
+
+fn f32_from_bits(u_1: u32) -> f32 {
+    return bitcast<f32>(u_1);
+}
+
+fn xi_from_bits(bits: u32) -> f32 {
+    let _e3 = to_f32_((bits >> 8u));
+    return (_e3 * XI_STEP);
+}
+
+fn pcg_hash(x: u32) -> u32 {
+    let _e2 = mul_lo_u32_(x, 747796405u);
+    let _e4 = add_wrap_u32_(_e2, 2891336453u);
+    let _e12 = mul_lo_u32_(((_e4 >> ((_e4 >> 28u) + 4u)) ^ _e4), 277803737u);
+    return ((_e12 >> 22u) ^ _e12);
+}
+
+fn point_stream(seed: u32, point: u32, frame: u32) -> u32 {
+    let _e3 = pcg_hash(frame);
+    let _e5 = pcg_hash((point ^ _e3));
+    let _e7 = pcg_hash((seed ^ _e5));
+    return _e7;
+}
+
+fn pick_stream(stream: u32) -> u32 {
+    let _e3 = pcg_hash((stream ^ PICK_STREAM));
+    return _e3;
+}
+
+fn slc_weight(rt2_: f32, d2_: f32) -> f32 {
+    if (d2_ <= rt2_) {
+        return 1f;
+    }
+    return (d2_ / rt2_);
+}
+
+fn slc_keep(r2_: f32, d2_1: f32) -> bool {
+    return (d2_1 < r2_);
+}
+
+fn sphere_contains_point(c: vec3<f32>, r_1: f32, x_1: vec3<f32>) -> bool {
+    let v_2 = (x_1 - c);
+    return (dot(v_2, v_2) <= (r_1 * r_1));
+}
+
+fn inverse_square(d2_2: f32) -> f32 {
+    return (1f / max(d2_2, MIN_D2_));
+}
+
+fn connection_factor(cos_x: f32, d2_3: f32, rt2_1: f32, w: f32) -> f32 {
+    let _e4 = inverse_square(d2_3);
+    let _e6 = slc_weight(rt2_1, d2_3);
+    return (((cos_x * _e4) * _e6) * w);
+}
+
+fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n_1: vec3<f32>, ng: vec3<f32>, r2_1: f32) -> f32 {
+    var local_4: bool;
+    var local_5: bool;
+
+    let v_3 = (x_2 - y);
+    let d2_7 = dot(v_3, v_3);
+    let _e7 = slc_keep(r2_1, d2_7);
+    if !(!(_e7)) {
+        local_4 = !((d2_7 > 0f));
+    } else {
+        local_4 = true;
+    }
+    let _e16 = local_4;
+    if _e16 {
+        return 0f;
+    }
+    let w_6 = (v_3 / vec3(sqrt(d2_7)));
+    let cos_x_1 = -(dot(n_1, w_6));
+    if !((cos_x_1 <= 0f)) {
+        local_5 = (dot(ng, w_6) >= 0f);
+    } else {
+        local_5 = true;
+    }
+    let _e32 = local_5;
+    if _e32 {
+        return 0f;
+    }
+    return cos_x_1;
+}
+
+fn bsh_scaled_radius(node: BshNode, scale: f32) -> f32 {
+    if (scale == 1f) {
+        return node.radius;
+    }
+    if (node.child == BSH_NONE) {
+        return (node.extent + (scale * (node.radius - node.extent)));
+    }
+    return (node.radius * scale);
+}
+
+fn bsh_range_bound(node_1: BshNode) -> f32 {
+    if (node_1.child == BSH_NONE) {
+        return (node_1.radius - node_1.extent);
+    }
+    let _e8 = f32_from_bits(node_1.light);
+    return _e8;
+}
+
+fn weighted_threshold(w_sum: f32, u_2: f32) -> f32 {
+    return (w_sum / (1f - u_2));
+}
+
+fn weighted_pick_weight(w_sum_1: f32, w_1: f32, k_2: u32) -> f32 {
+    let _e3 = to_f32_(k_2);
+    return (w_sum_1 / (_e3 * w_1));
+}
+
+fn ggx_d(cos_h: f32, sin2_h: f32, alpha: f32) -> f32 {
+    if (cos_h <= 0f) {
+        return 0f;
+    }
+    let a2_ = (alpha * alpha);
+    let t_1 = (((cos_h * cos_h) * a2_) + sin2_h);
+    return ((a2_ * INV_PI) / (t_1 * t_1));
+}
+
+fn smith_root(cos_: f32, alpha_1: f32) -> f32 {
+    let a2_1 = (alpha_1 * alpha_1);
+    return sqrt((((cos_ * cos_) * (1f - a2_1)) + a2_1));
+}
+
+fn specular_peak_factor(lobe_1: vec4<f32>) -> f32 {
+    let _e6 = smith_root(lobe_1.w, lobe_1.z);
+    return ((lobe_1.y * 0.5f) / (_e6 + max(lobe_1.w, 0f)));
+}
+
+fn receiver_peak(lobe_2: vec4<f32>) -> f32 {
+    let _e2 = specular_peak_factor(lobe_2);
+    return (lobe_2.x + (_e2 / (lobe_2.z * lobe_2.z)));
+}
+
+fn range_scale(lobe_3: vec4<f32>) -> f32 {
+    if (lobe_3.y <= 0f) {
+        return 1f;
+    }
+    let _e5 = receiver_peak(lobe_3);
+    return clamp(_e5, 1f, RANGE_SCALE_MAX);
+}
+
+fn range_lobe(lobe_4: vec4<f32>) -> vec4<f32> {
+    if (lobe_4.y <= 0f) {
+        return vec4<f32>(1f, 0f, 1f, 1f);
+    }
+    let _e10 = specular_peak_factor(lobe_4);
+    let _e14 = range_scale(lobe_4);
+    return vec4<f32>(lobe_4.x, _e10, (lobe_4.z * lobe_4.z), sqrt(_e14));
+}
+
+fn cos_sub_clamped(sin_a: f32, cos_a: f32, sin_b: f32, cos_b: f32) -> f32 {
+    if (cos_a > cos_b) {
+        return 1f;
+    }
+    return ((cos_a * cos_b) + (sin_a * sin_b));
+}
+
+fn sin_sub_clamped(sin_a_1: f32, cos_a_1: f32, sin_b_1: f32, cos_b_1: f32) -> f32 {
+    if (cos_a_1 > cos_b_1) {
+        return 0f;
+    }
+    return ((sin_a_1 * cos_b_1) - (cos_a_1 * sin_b_1));
+}
+
+fn safe_sqrt(x_3: f32) -> f32 {
+    return sqrt(max(x_3, 0f));
+}
+
+fn subtended_cos(dist2_: f32, r2_2: f32) -> f32 {
+    let _e5 = safe_sqrt((1f - (r2_2 / dist2_)));
+    return select(_e5, -1f, (dist2_ <= r2_2));
+}
+
+fn emitter_cone(center: vec3<f32>, radius: f32, axis: vec3<f32>, cos_o: f32, p: vec3<f32>) -> vec4<f32> {
+    let v_4 = (p - center);
+    let dist2_1 = dot(v_4, v_4);
+    let r2_5 = (radius * radius);
+    let d2_8 = max(max(dist2_1, r2_5), MIN_D2_);
+    let wi = select(vec3<f32>(0f, 0f, 0f), (v_4 / vec3(sqrt(dist2_1))), (dist2_1 > 0f));
+    let cos_w = dot(axis, wi);
+    let _e25 = safe_sqrt((1f - (cos_w * cos_w)));
+    let _e26 = subtended_cos(dist2_1, r2_5);
+    let _e30 = safe_sqrt((1f - (_e26 * _e26)));
+    let _e34 = safe_sqrt((1f - (cos_o * cos_o)));
+    let _e35 = cos_sub_clamped(_e25, cos_w, _e34, cos_o);
+    let _e36 = sin_sub_clamped(_e25, cos_w, _e34, cos_o);
+    let _e37 = cos_sub_clamped(_e36, _e35, _e30, _e26);
+    return vec4<f32>(_e37, d2_8, _e26, _e30);
+}
+
+fn emitter_importance(center_1: vec3<f32>, radius_1: f32, phi: f32, axis_1: vec3<f32>, cos_o_1: f32, cos_e: f32, p_1: vec3<f32>) -> f32 {
+    let _e7 = emitter_cone(center_1, radius_1, axis_1, cos_o_1, p_1);
+    if (_e7.x <= cos_e) {
+        return 0f;
+    }
+    return ((phi * _e7.x) / _e7.y);
+}
+
+fn cone_cos_of(v: vec3<f32>, d2_4: f32, a_2: f32, d: vec3<f32>) -> f32 {
+    var local_6: bool;
+    var local_7: bool;
+
+    let vd = dot(v, d);
+    let h2_ = (d2_4 - (a_2 * a_2));
+    if !((h2_ <= 0f)) {
+        if (vd >= 0f) {
+            local_7 = ((vd * vd) >= h2_);
+        } else {
+            local_7 = false;
+        }
+        let _e19 = local_7;
+        local_6 = _e19;
+    } else {
+        local_6 = true;
+    }
+    let _e21 = local_6;
+    if _e21 {
+        return 1f;
+    }
+    let c_4 = cross(v, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_4, c_4)) * a_2)) / d2_4), 1f);
+}
+
+fn cone_cos_toward(center_2: vec3<f32>, radius_2: f32, p_2: vec3<f32>, d_1: vec3<f32>) -> f32 {
+    let v_5 = (center_2 - p_2);
+    let _e6 = cone_cos_of(v_5, dot(v_5, v_5), radius_2, d_1);
+    return _e6;
+}
+
+fn range_scale_at(rl: vec4<f32>, cos_t: f32) -> f32 {
+    let t_2 = (((0.5f + (0.5f * cos_t)) * (rl.z - 1f)) + 1f);
+    return clamp((rl.x + ((rl.y * rl.z) / (t_2 * t_2))), 1f, (rl.w * rl.w));
+}
+
+fn range_scale_toward(rl_1: vec4<f32>, center_3: vec3<f32>, radius_3: f32, p_3: vec3<f32>, r_2: vec3<f32>) -> f32 {
+    if (rl_1.w <= 1f) {
+        return 1f;
+    }
+    let _e9 = cone_cos_toward(center_3, radius_3, p_3, r_2);
+    let _e10 = range_scale_at(rl_1, _e9);
+    return _e10;
+}
+
+fn light_importance(center_4: vec3<f32>, radius_4: f32, phi_1: f32, axis_2: vec3<f32>, cos_o_2: f32, cos_e_1: f32, p_4: vec3<f32>, n_2: vec3<f32>) -> f32 {
+    var imp: f32;
+
+    let _e8 = emitter_cone(center_4, radius_4, axis_2, cos_o_2, p_4);
+    if (_e8.x <= cos_e_1) {
+        return 0f;
+    }
+    imp = ((phi_1 * _e8.x) / _e8.y);
+    if (dot(n_2, n_2) > 0f) {
+        let v_6 = (center_4 - p_4);
+        let dist2_2 = dot(v_6, v_6);
+        let cos_i = dot(select(vec3<f32>(0f, 0f, 0f), (v_6 / vec3(sqrt(dist2_2))), (dist2_2 > 0f)), n_2);
+        let _e33 = imp;
+        let _e37 = safe_sqrt((1f - (cos_i * cos_i)));
+        let _e40 = cos_sub_clamped(_e37, cos_i, _e8.w, _e8.z);
+        imp = (_e33 * max(_e40, 0f));
+    }
+    let _e44 = imp;
+    return max(_e44, 0f);
+}
+
+fn glossy_importance(center_5: vec3<f32>, radius_5: f32, phi_2: f32, axis_3: vec3<f32>, cos_o_3: f32, cos_e_2: f32, p_5: vec3<f32>, n_3: vec3<f32>, r_3: vec3<f32>, lobe_5: vec4<f32>) -> f32 {
+    var local_8: bool;
+
+    let _e10 = emitter_importance(center_5, radius_5, phi_2, axis_3, cos_o_3, cos_e_2, p_5);
+    let _e11 = cone_cos_toward(center_5, radius_5, p_5, n_3);
+    if !((_e10 <= 0f)) {
+        local_8 = (_e11 <= 0f);
+    } else {
+        local_8 = true;
+    }
+    let _e20 = local_8;
+    if _e20 {
+        return 0f;
+    }
+    let _e22 = cone_cos_toward(center_5, radius_5, p_5, r_3);
+    let _e27 = safe_sqrt((0.5f + (0.5f * _e22)));
+    let _e33 = ggx_d(_e27, (1f - (_e27 * _e27)), lobe_5.z);
+    let _e39 = smith_root(lobe_5.w, lobe_5.z);
+    let spec = (((lobe_5.y * _e33) * 0.25f) / _e39);
+    return (_e10 * (((lobe_5.x * INV_PI) * _e11) + spec));
+}
+
+fn candidate_weight(importance: f32, rt2_2: f32, d2_5: f32) -> f32 {
+    let _e3 = slc_weight(rt2_2, d2_5);
+    return (importance * _e3);
+}
+
+fn cone_weight(center_6: vec3<f32>, radius_6: f32, phi_3: f32, axis_4: vec3<f32>, cos_o_4: f32, cos_e_3: f32, rt2_3: f32, p_6: vec3<f32>, n_4: vec3<f32>, r_4: vec3<f32>, lobe_6: vec4<f32>) -> f32 {
+    let v_7 = (p_6 - center_6);
+    if (lobe_6.y <= 0f) {
+        let _e15 = light_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_4);
+        let _e19 = candidate_weight((_e15 * INV_PI), rt2_3, dot(v_7, v_7));
+        return _e19;
+    }
+    let _e20 = glossy_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_4, r_4, lobe_6);
+    let _e22 = candidate_weight(_e20, rt2_3, dot(v_7, v_7));
+    return _e22;
+}
+
+fn shadow_margin(len: f32) -> f32 {
+    return (0.0001f * len);
+}
+
+fn ray_inverse(x_4: f32) -> f32 {
+    return (1f / select(x_4, 0.000000000000000000000000000001f, (abs(x_4) < 0.000000000000000000000000000001f)));
+}
+
+fn ray_inverse3_(d_2: vec3<f32>) -> vec3<f32> {
+    let _e2 = ray_inverse(d_2.x);
+    let _e4 = ray_inverse(d_2.y);
+    let _e6 = ray_inverse(d_2.z);
+    return vec3<f32>(_e2, _e4, _e6);
+}
+
+fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin: vec3<f32>, bmax: vec3<f32>, t_max: f32) -> f32 {
+    let t0_ = ((bmin - o) * inv_d);
+    let t1_ = ((bmax - o) * inv_d);
+    let lo = min(t0_, t1_);
+    let hi = max(t0_, t1_);
+    let t_in = max(max(lo.x, lo.y), max(lo.z, 0f));
+    let t_out = min(min(hi.x, hi.y), min(hi.z, t_max));
+    if (t_in <= t_out) {
+        return t_in;
+    }
+    return -1f;
+}
+
+fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_3: vec3<f32>, b_3: vec3<f32>, c_1: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
+    var local_9: bool;
+    var local_10: bool;
+    var local_11: bool;
+
+    let e1_ = (b_3 - a_3);
+    let e2_ = (c_1 - a_3);
+    let p_7 = cross(d_3, e2_);
+    let det = dot(e1_, p_7);
+    if (abs(det) <= 0f) {
+        return -1f;
+    }
+    let inv = (1f / det);
+    let s_4 = (o_1 - a_3);
+    let u_3 = (dot(s_4, p_7) * inv);
+    if !((u_3 < 0f)) {
+        local_9 = (u_3 > 1f);
+    } else {
+        local_9 = true;
+    }
+    let _e28 = local_9;
+    if _e28 {
+        return -1f;
+    }
+    let q = cross(s_4, e1_);
+    let v_8 = (dot(d_3, q) * inv);
+    if !((v_8 < 0f)) {
+        local_10 = ((u_3 + v_8) > 1f);
+    } else {
+        local_10 = true;
+    }
+    let _e42 = local_10;
+    if _e42 {
+        return -1f;
+    }
+    let t_3 = (dot(e2_, q) * inv);
+    if (t_3 > t_min) {
+        local_11 = (t_3 < t_max_1);
+    } else {
+        local_11 = false;
+    }
+    let _e51 = local_11;
+    if _e51 {
+        return t_3;
+    }
+    return -1f;
+}
+
+fn light_intensity(l: GpuLight, w_2: vec3<f32>) -> vec3<f32> {
+    switch l.kind {
+        case 0u: {
+            return l.intensity;
+        }
+        default: {
+            return vec3(0f);
+        }
+    }
+}
+
+fn light_point(l_1: GpuLight, u1_: f32, u2_: f32) -> vec3<f32> {
+    return l_1.p0_;
+}
+
+fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bool) -> GeoHit {
+    var hit: GeoHit;
+    var stack: array<u32, 64>;
+    var sp: u32 = 0u;
+    var node_2: u32 = 0u;
+    var i: u32;
+
+    hit.t = t_max_2;
+    hit.tri = NO_LIGHT;
+    if (arrayLength((&geo_nodes)) == 0u) {
+        let _e13 = hit;
+        return _e13;
+    }
+    let _e14 = ray_inverse3_(d_4);
+    loop {
+        let _e21 = node_2;
+        let n_11 = geo_nodes[_e21];
+        let _e27 = hit.t;
+        let _e28 = ray_aabb(o_2, _e14, n_11.bmin, n_11.bmax, _e27);
+        if (_e28 >= 0f) {
+            if (n_11.count > 0u) {
+                i = n_11.first;
+                loop {
+                    let _e36 = i;
+                    if (_e36 < (n_11.first + n_11.count)) {
+                    } else {
+                        break;
+                    }
+                    {
+                        let _e42 = i;
+                        let t_4 = geo_tris[_e42];
+                        let _e49 = hit.t;
+                        let _e50 = ray_triangle(o_2, d_4, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e49);
+                        if (_e50 > 0f) {
+                            hit.t = _e50;
+                            let _e55 = i;
+                            hit.tri = _e55;
+                            if any_hit {
+                                let _e56 = hit;
+                                return _e56;
+                            }
+                        }
+                    }
+                    continuing {
+                        let _e58 = i;
+                        i = (_e58 + 1u);
+                    }
+                }
+            } else {
+                let _e60 = sp;
+                if (_e60 < 64u) {
+                    let _e63 = sp;
+                    stack[_e63] = (n_11.first + 1u);
+                    let _e68 = sp;
+                    sp = (_e68 + 1u);
+                }
+                node_2 = n_11.first;
+                continue;
+            }
+        }
+        let _e72 = sp;
+        if (_e72 == 0u) {
+            break;
+        }
+        let _e75 = sp;
+        sp = (_e75 - 1u);
+        let _e78 = sp;
+        let _e80 = stack[_e78];
+        node_2 = _e80;
+    }
+    let _e81 = hit;
+    return _e81;
+}
+
+fn occluded(a_4: vec3<f32>, b_4: vec3<f32>) -> bool {
+    let dv = (b_4 - a_4);
+    let len_1 = length(dv);
+    if (len_1 <= 0f) {
+        return false;
+    }
+    let _e7 = shadow_margin(len_1);
+    let _e12 = trace(a_4, (dv / vec3(len_1)), _e7, (len_1 - _e7), true);
+    return (_e12.tri != NO_LIGHT);
+}
+
+fn bsh_node(nodes: u32, i_1: u32) -> BshNode {
+    let _e4 = bsh_nodes[i_1];
+    return _e4;
+}
+
+fn bsh_count(nodes_1: u32) -> u32 {
+    return arrayLength((&bsh_nodes));
+}
+
+fn bsh_first(nodes_2: u32) -> u32 {
+    let _e1 = bsh_count(nodes_2);
+    if (_e1 > 0u) {
+        return 0u;
+    }
+    return BSH_NONE;
+}
+
+fn bsh_inner_scale(a_5: f32, v_1: vec3<f32>, d2_6: f32, r_5: vec3<f32>, rl_2: vec4<f32>) -> f32 {
+    let _e5 = cone_cos_of(v_1, d2_6, a_5, r_5);
+    let _e8 = range_scale_at(rl_2, (_e5 + 0.000002f));
+    return _e8;
+}
+
+fn bsh_reaches(node_3: BshNode, x_5: vec3<f32>, r_6: vec3<f32>, rl_3: vec4<f32>) -> bool {
+    var local_12: bool;
+    var local_13: bool;
+
+    let _e6 = sphere_contains_point(node_3.center, node_3.radius, x_5);
+    if _e6 {
+        return true;
+    }
+    if !((rl_3.w <= 1f)) {
+        let _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001f)), x_5);
+        local_12 = !(_e20);
+    } else {
+        local_12 = true;
+    }
+    let _e23 = local_12;
+    if _e23 {
+        return false;
+    }
+    let _e25 = bsh_range_bound(node_3);
+    let v_9 = (x_5 - node_3.center);
+    let d2_9 = dot(v_9, v_9);
+    let reach_max = (node_3.extent + ((rl_3.w * 1.001f) * _e25));
+    if (d2_9 > (reach_max * reach_max)) {
+        return false;
+    }
+    if (node_3.child == BSH_NONE) {
+        let _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_5, r_6);
+        let _e46 = bsh_scaled_radius(node_3, sqrt(_e43));
+        let _e47 = sphere_contains_point(node_3.center, _e46, x_5);
+        return _e47;
+    }
+    let _e50 = bsh_inner_scale(node_3.extent, -(v_9), d2_9, r_6, rl_3);
+    let s_c = (_e50 * 1.001f);
+    let reach = (node_3.extent + (sqrt(s_c) * _e25));
+    if (d2_9 <= ((node_3.radius * node_3.radius) * s_c)) {
+        local_13 = (d2_9 <= (reach * reach));
+    } else {
+        local_13 = false;
+    }
+    let _e67 = local_13;
+    return _e67;
+}
+
+fn bsh_next_leaf_lobe(nodes_3: u32, start: u32, x_6: vec3<f32>, r_7: vec3<f32>, rl_4: vec4<f32>) -> u32 {
+    var i_2: u32;
+
+    i_2 = start;
+    loop {
+        let _e6 = i_2;
+        if (_e6 != BSH_NONE) {
+        } else {
+            break;
+        }
+        {
+            let _e9 = i_2;
+            let _e10 = bsh_node(nodes_3, _e9);
+            let _e11 = bsh_reaches(_e10, x_6, r_7, rl_4);
+            if _e11 {
+                if (_e10.child == BSH_NONE) {
+                    let _e15 = i_2;
+                    return _e15;
+                }
+                i_2 = _e10.child;
+            } else {
+                i_2 = _e10.next;
+            }
+        }
+    }
+    return BSH_NONE;
+}
+
+fn next_threshold(sum: f32, h_1: ptr<function, u32>) -> f32 {
+    let _e2 = (*h_1);
+    let _e3 = pcg_hash(_e2);
+    (*h_1) = _e3;
+    let _e4 = (*h_1);
+    let _e5 = xi_from_bits(_e4);
+    let _e6 = weighted_threshold(sum, _e5);
+    return _e6;
+}
+
+fn connect_record(l_2: GpuLight, x_7: vec3<f32>, n_5: vec3<f32>, ng_1: vec3<f32>, r2_3: f32, rt2_4: f32, w_res: f32, u1_1: f32, u2_1: f32, eps: f32, trace_1: bool) -> Connection {
+    var c_2: Connection;
+    var local_14: bool;
+    var local_15: bool;
+
+    c_2.e = vec3(0f);
+    let _e16 = light_point(l_2, u1_1, u2_1);
+    c_2.y = _e16;
+    let _e19 = c_2.y;
+    let _e20 = connection_cosine(x_7, _e19, n_5, ng_1, r2_3);
+    c_2.cos_x = _e20;
+    let _e22 = c_2.cos_x;
+    if !((_e22 <= 0f)) {
+        if trace_1 {
+            let _e33 = c_2.y;
+            let _e34 = occluded((x_7 + (ng_1 * eps)), _e33);
+            local_15 = _e34;
+        } else {
+            local_15 = false;
+        }
+        let _e36 = local_15;
+        local_14 = _e36;
+    } else {
+        local_14 = true;
+    }
+    let _e38 = local_14;
+    if _e38 {
+        let _e39 = c_2;
+        return _e39;
+    }
+    let _e41 = c_2.y;
+    let v_10 = (x_7 - _e41);
+    let d2_10 = dot(v_10, v_10);
+    let _e48 = light_intensity(l_2, (v_10 / vec3(sqrt(d2_10))));
+    let _e50 = c_2.cos_x;
+    let _e51 = connection_factor(_e50, d2_10, rt2_4, w_res);
+    c_2.e = (_e48 * _e51);
+    let _e53 = c_2;
+    return _e53;
+}
+
+fn connect_traced(li: u32, x_8: vec3<f32>, n_6: vec3<f32>, ng_2: vec3<f32>, s_1: f32, w_res_1: f32, u1_2: f32, u2_2: f32, eps_1: f32, trace_2: bool) -> Connection {
+    let _e12 = lights[li];
+    let _e15 = r2_4[li];
+    let _e19 = rt2_5[li];
+    let _e21 = connect_record(_e12, x_8, n_6, ng_2, (s_1 * _e15), (s_1 * _e19), w_res_1, u1_2, u2_2, eps_1, trace_2);
+    return _e21;
+}
+
+fn light_range_scale(li_1: u32, x_9: vec3<f32>, r_8: vec3<f32>, rl_5: vec4<f32>) -> f32 {
+    let c_5 = light_cones[li_1];
+    let _e9 = range_scale_toward(rl_5, c_5.center, c_5.radius, x_9, r_8);
+    return _e9;
+}
+
+fn light_weight(li_2: u32, x_10: vec3<f32>, n_7: vec3<f32>, r_9: vec3<f32>, lobe_7: vec4<f32>, rl_6: vec4<f32>) -> f32 {
+    let c_6 = light_cones[li_2];
+    let _e15 = light_range_scale(li_2, x_10, r_9, rl_6);
+    let _e18 = rt2_5[li_2];
+    let _e20 = cone_weight(c_6.center, c_6.radius, c_6.phi, c_6.axis, c_6.cos_o, c_6.cos_e, (_e15 * _e18), x_10, n_7, r_9, lobe_7);
+    return _e20;
+}
+
+fn weighted_picks(h_2: u32) -> WeightedPicks {
+    var picks_1: WeightedPicks;
+
+    picks_1.w_sum = 0f;
+    picks_1.n = 0u;
+    picks_1.h = h_2;
+    let _e7 = picks_1;
+    return _e7;
+}
+
+fn weighted_offer(picks_2: ptr<function, WeightedPicks>, li_3: u32, w_3: f32) {
+    var h_3: u32;
+    var s_2: u32 = 0u;
+
+    let _e4 = (*picks_2).n;
+    (*picks_2).n = (_e4 + 1u);
+    if (w_3 > 0f) {
+        let _e10 = (*picks_2).w_sum;
+        (*picks_2).w_sum = (_e10 + w_3);
+        let _e13 = (*picks_2).h;
+        h_3 = _e13;
+        loop {
+            let _e17 = s_2;
+            if (_e17 < K) {
+            } else {
+                break;
+            }
+            {
+                let _e21 = (*picks_2).w_sum;
+                let _e23 = s_2;
+                let _e25 = (*picks_2).threshold[_e23];
+                if (_e21 > _e25) {
+                    let _e28 = s_2;
+                    (*picks_2).light[_e28] = li_3;
+                    let _e31 = s_2;
+                    (*picks_2).w[_e31] = w_3;
+                    let _e34 = s_2;
+                    let _e37 = (*picks_2).w_sum;
+                    let _e38 = next_threshold(_e37, (&h_3));
+                    (*picks_2).threshold[_e34] = _e38;
+                }
+            }
+            continuing {
+                let _e40 = s_2;
+                s_2 = (_e40 + 1u);
+            }
+        }
+        let _e43 = h_3;
+        (*picks_2).h = _e43;
+        return;
+    } else {
+        return;
+    }
+}
+
+fn surface_at(texel: vec2<i32>) -> vec4<f32> {
+    let p_8 = textureLoad(position_tex, texel, 0i);
+    return select(vec4(0f), vec4<f32>(p_8.xyz, 1f), (p_8.w > 0f));
+}
+
+fn shade_connection(c_3: Connection, x_11: vec3<f32>, n_8: vec3<f32>, m_1: Material) -> Shaded {
+    var s_3: Shaded;
+
+    s_3.e = c_3.e;
+    s_3.diffuse = vec3(0f);
+    s_3.specular = vec3(0f);
+    let _e13 = s_3;
+    return _e13;
+}
+
+fn shade_pick_traced(li_4: u32, x_12: vec3<f32>, n_9: vec3<f32>, r_10: vec3<f32>, rl_7: vec4<f32>, m_2: Material, w_4: f32, u1_3: f32, u2_3: f32, eps_2: f32, trace_3: bool) -> Shaded {
+    let _e12 = connect_traced(li_4, x_12, n_9, n_9, 1f, w_4, u1_3, u2_3, eps_2, trace_3);
+    let _e13 = shade_connection(_e12, x_12, n_9, m_2);
+    return _e13;
+}
+
+fn shade_pick(li_5: u32, x_13: vec3<f32>, n_10: vec3<f32>, r_11: vec3<f32>, rl_8: vec4<f32>, m_3: Material, w_5: f32, u1_4: f32, u2_4: f32, eps_3: f32) -> Shaded {
+    let _e11 = shade_pick_traced(li_5, x_13, n_10, r_11, rl_8, m_3, w_5, u1_4, u2_4, eps_3, true);
+    return _e11;
+}
+
+fn add(a_6: Shaded, b_5: Shaded) -> Shaded {
+    return Shaded((a_6.e + b_5.e), (a_6.diffuse + b_5.diffuse), (a_6.specular + b_5.specular));
+}
+
+fn first_holders(keys_1: array<vec2<u32>, 8>, held_1: array<bool, 8>) -> array<u32, 8> {
+    var first: array<u32, 8>;
+    var k_3: u32 = 0u;
+    var j_1: u32;
+    var local_16: bool;
+    var local_17: bool;
+
+    loop {
+        let _e5 = k_3;
+        if (_e5 < K) {
+        } else {
+            break;
+        }
+        {
+            let _e8 = k_3;
+            let _e11 = k_3;
+            let _e12 = k_3;
+            first[_e8] = select(K, _e11, held_1[_e12]);
+            j_1 = 0u;
+            loop {
+                let _e17 = j_1;
+                let _e18 = k_3;
+                if (_e17 < _e18) {
+                    let _e22 = k_3;
+                    local_16 = held_1[_e22];
+                } else {
+                    local_16 = false;
+                }
+                let _e25 = local_16;
+                if _e25 {
+                } else {
+                    break;
+                }
+                {
+                    let _e26 = j_1;
+                    if held_1[_e26] {
+                        let _e30 = j_1;
+                        let _e32 = k_3;
+                        local_17 = all((keys_1[_e30] == keys_1[_e32]));
+                    } else {
+                        local_17 = false;
+                    }
+                    let _e37 = local_17;
+                    if _e37 {
+                        let _e38 = k_3;
+                        let _e40 = j_1;
+                        first[_e38] = _e40;
+                        break;
+                    }
+                }
+                continuing {
+                    let _e42 = j_1;
+                    j_1 = (_e42 + 1u);
+                }
+            }
+        }
+        continuing {
+            let _e45 = k_3;
+            k_3 = (_e45 + 1u);
+        }
+    }
+    let _e47 = first;
+    return _e47;
+}
+
+@compute @workgroup_size(8, 8, 1) 
+fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
+    var local: bool;
+    var s: vec4<f32> = vec4(0f);
+    var nn: vec3<f32> = vec3(0f);
+    var local_1: bool;
+    var local_2: bool;
+    var local_3: bool;
+    var n: vec3<f32> = vec3<f32>(0f, 0f, 1f);
+    var m: Material;
+    var lobe: vec4<f32> = vec4<f32>(1f, 0f, 1f, 1f);
+    var r: vec3<f32>;
+    var h: u32;
+    var t: Shaded = Shaded(vec3(0f), vec3(0f), vec3(0f));
+    var picks: WeightedPicks;
+    var b: u32;
+    var keys: array<vec2<u32>, 8>;
+    var held: array<bool, 8>;
+    var k: u32 = 0u;
+    var k_1: u32 = 0u;
+    var copies: u32;
+    var j: u32;
+
+    let _e5 = view.width;
+    if (gid.x < _e5) {
+        let _e12 = view.height;
+        local = (gid.y < _e12);
+    } else {
+        local = false;
+    }
+    let inside = local;
+    let texel_1 = vec2<i32>(i32(gid.x), i32(gid.y));
+    if inside {
+        let _e27 = surface_at(texel_1);
+        s = _e27;
+        let _e30 = textureLoad(normal_tex, texel_1, 0i);
+        nn = _e30.xyz;
+    }
+    let _e32 = nn;
+    let _e33 = nn;
+    let len2_ = dot(_e32, _e33);
+    let _e35 = s;
+    let x_14 = _e35.xyz;
+    if inside {
+        let _e40 = s.w;
+        local_1 = (_e40 > 0f);
+    } else {
+        local_1 = false;
+    }
+    let _e44 = local_1;
+    if _e44 {
+        local_2 = (len2_ > 0f);
+    } else {
+        local_2 = false;
+    }
+    let _e50 = local_2;
+    if _e50 {
+        local_3 = all((abs(x_14) <= vec3(340282350000000000000000000000000000000f)));
+    } else {
+        local_3 = false;
+    }
+    let has = local_3;
+    if has {
+        let _e65 = nn;
+        n = (_e65 / vec3(sqrt(len2_)));
+    }
+    let _e76 = n;
+    r = _e76;
+    let _e78 = lobe;
+    let _e79 = range_lobe(_e78);
+    let _e82 = view.shadow_offset;
+    let _e85 = view.eye;
+    let eps_4 = (_e82 * length((_e85 - x_14)));
+    let _e91 = view.seed;
+    let _e95 = view.width;
+    let _e101 = view.frame;
+    let _e102 = point_stream(_e91, ((gid.y * _e95) + gid.x), _e101);
+    let _e103 = pick_stream(_e102);
+    h = _e103;
+    let _e113 = weighted_picks(_e102);
+    picks = _e113;
+    if has {
+        let _e117 = bsh_first(BSH);
+        let _e118 = r;
+        let _e119 = bsh_next_leaf_lobe(BSH, _e117, x_14, _e118, _e79);
+        b = _e119;
+        loop {
+            let _e121 = b;
+            if (_e121 != BSH_NONE) {
+            } else {
+                break;
+            }
+            {
+                let _e125 = b;
+                let li_6 = bsh_nodes[_e125].light;
+                let _e129 = n;
+                let _e130 = r;
+                let _e131 = lobe;
+                let _e132 = light_weight(li_6, x_14, _e129, _e130, _e131, _e79);
+                weighted_offer((&picks), li_6, _e132);
+            }
+            continuing {
+                let _e135 = b;
+                let _e138 = bsh_nodes[_e135].next;
+                let _e139 = r;
+                let _e140 = bsh_next_leaf_lobe(BSH, _e138, x_14, _e139, _e79);
+                b = _e140;
+            }
+        }
+    }
+    if !(has) {
+        if inside {
+            textureStore(out_tex, texel_1, vec4(0f));
+        }
+        return;
+    }
+    let _e146 = picks.w_sum;
+    if (_e146 > 0f) {
+        loop {
+            let _e153 = k;
+            if (_e153 < K) {
+            } else {
+                break;
+            }
+            {
+                let _e157 = k;
+                let _e162 = k;
+                let _e164 = picks.light[_e162];
+                let _e167 = lights[_e164].kind;
+                let own = select(0u, (_e157 + 1u), (_e167 == LIGHT_TRIANGLE));
+                let _e171 = k;
+                let _e174 = k;
+                let _e176 = picks.light[_e174];
+                keys[_e171] = vec2<u32>(_e176, own);
+                let _e178 = k;
+                held[_e178] = true;
+            }
+            continuing {
+                let _e182 = k;
+                k = (_e182 + 1u);
+            }
+        }
+        let _e184 = keys;
+        let _e185 = held;
+        let _e186 = first_holders(_e184, _e185);
+        loop {
+            let _e189 = k_1;
+            if (_e189 < K) {
+            } else {
+                break;
+            }
+            {
+                let _e192 = h;
+                let _e193 = pcg_hash(_e192);
+                h = _e193;
+                let _e194 = h;
+                let _e195 = xi_from_bits(_e194);
+                let _e196 = h;
+                let _e197 = pcg_hash(_e196);
+                h = _e197;
+                let _e198 = h;
+                let _e199 = xi_from_bits(_e198);
+                let _e201 = k_1;
+                let li_7 = picks.light[_e201];
+                copies = 0u;
+                let _e206 = k_1;
+                j = _e206;
+                loop {
+                    let _e208 = j;
+                    if (_e208 < K) {
+                    } else {
+                        break;
+                    }
+                    {
+                        let _e211 = copies;
+                        let _e214 = j;
+                        let _e216 = k_1;
+                        copies = (_e211 + select(0u, 1u, (_e186[_e214] == _e216)));
+                    }
+                    continuing {
+                        let _e221 = j;
+                        j = (_e221 + 1u);
+                    }
+                }
+                let _e223 = copies;
+                if (_e223 > 0u) {
+                    let _e226 = t;
+                    let _e227 = n;
+                    let _e228 = r;
+                    let _e229 = m;
+                    let _e231 = picks.w_sum;
+                    let _e233 = k_1;
+                    let _e235 = picks.w[_e233];
+                    let _e237 = weighted_pick_weight(_e231, _e235, K);
+                    let _e238 = copies;
+                    let _e241 = shade_pick(li_7, x_14, _e227, _e228, _e79, _e229, (_e237 * f32(_e238)), _e195, _e199, eps_4);
+                    let _e242 = add(_e226, _e241);
+                    t = _e242;
+                }
+            }
+            continuing {
+                let _e244 = k_1;
+                k_1 = (_e244 + 1u);
+            }
+        }
+    }
+    let count = picks.n;
+    let _e250 = t.e;
+    textureStore(out_tex, texel_1, vec4<f32>(_e250, f32(count)));
+    return;
+}

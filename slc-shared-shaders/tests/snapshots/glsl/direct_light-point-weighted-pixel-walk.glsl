@@ -1,0 +1,1200 @@
+#version 430 core
+#extension GL_ARB_compute_shader : require
+#extension GL_ARB_shader_storage_buffer_object : require
+layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
+
+struct GpuLight {
+    vec3 p0_;
+    uint kind;
+    vec3 p1_;
+    float a;
+    vec3 p2_;
+    float b;
+    vec3 intensity;
+    uint ies_base;
+};
+struct GpuLightCone {
+    vec3 center;
+    float radius;
+    vec3 axis;
+    float cos_o;
+    float phi;
+    float cos_e;
+    uint bvh_leaf;
+    uint pad;
+};
+struct GpuGeoNode {
+    vec3 bmin;
+    uint first;
+    vec3 bmax;
+    uint count;
+};
+struct GpuTriangle {
+    vec3 v0_;
+    uint material;
+    vec3 v1_;
+    uint light;
+    vec3 v2_;
+    uint pad;
+};
+struct ViewParams {
+    vec4 c0_;
+    vec4 c1_;
+    vec4 c2_;
+    vec4 c3_;
+    vec3 eye;
+    uint width;
+    uint height;
+    float shadow_offset;
+    uint seed;
+    uint frame;
+    vec3 f0_d;
+    float f90_d;
+};
+struct BshNode {
+    vec3 center;
+    float radius;
+    uint child;
+    uint next;
+    uint light;
+    float extent;
+};
+struct GeoHit {
+    float t;
+    uint tri;
+};
+struct Connection {
+    vec3 e;
+    vec3 y;
+    float cos_x;
+};
+struct WeightedPicks {
+    uint light[8];
+    float w[8];
+    float threshold[8];
+    float w_sum;
+    uint n;
+    uint h;
+};
+struct Shaded {
+    vec3 e;
+    vec3 diffuse;
+    vec3 specular;
+};
+struct Material {
+    vec3 base;
+    float metallic;
+    float alpha;
+    vec3 v;
+    float roughness;
+    float reflectance;
+};
+const uint LIGHT_POINT = 0u;
+const uint LIGHT_SPOT = 1u;
+const uint LIGHT_IES = 2u;
+const uint LIGHT_TRIANGLE = 3u;
+const uint LIGHT_VPL = 4u;
+const uint NO_LIGHT = 4294967295u;
+const uint COUNT_TILES = 0u;
+const uint COUNT_GROUP_TESTS = 1u;
+const uint COUNT_CLUSTER_TESTS = 2u;
+const uint COUNT_SPHERE_TESTS = 3u;
+const uint COUNT_TESTED = 4u;
+const uint COUNT_KEPT = 5u;
+const uint COUNT_PIXELS = 6u;
+const uint COUNT_FIELDS = 7u;
+const uint DIRECT_COUNT_PIXELS = 0u;
+const uint DIRECT_COUNT_CANDIDATES = 1u;
+const uint DIRECT_COUNT_EVALUATIONS = 2u;
+const uint DIRECT_COUNT_RAYS = 3u;
+const uint DIRECT_COUNT_NODES = 4u;
+const uint DIRECT_COUNT_FIELDS = 5u;
+const uint MAP_CAMERA = 0u;
+const uint MAP_PERSPECTIVE = 1u;
+const uint MAP_ORTHOGRAPHIC = 2u;
+const float XI_STEP = 5.9604645e-8;
+const uint PICK_STREAM = 2654435769u;
+const float TWO_PI = 6.2831855;
+const float UNRANGED = 1e38;
+const float CULL_RADIUS_SCALE = 1.000001;
+const float SPHERE_PAD = 4.7683716e-7;
+const float SPHERE_HUGE = 3.4028235e38;
+const float SPHERE_PAD_ABS = 1e-18;
+const uint CLUSTER = 64u;
+const uint GROUP_SIDE = 8u;
+const float INV_PI = 0.31830987;
+const float MIN_D2_ = 1e-12;
+const float MAX_INTENSITY = 7.2057594e16;
+const uint BSH_NONE = 4294967295u;
+const uint RESERVOIR_FULL = 4294967295u;
+const float GGX_ALPHA_MIN = 0.001;
+const float RANGE_SCALE_MAX = 64.0;
+const uint LIGHT_BVH_LEAF = 4294967295u;
+const float ONE_MINUS_EPSILON = 0.99999994;
+const float F32_MAX = 3.4028235e38;
+const float DEPTH_NONE = 1e30;
+const float DEPTH_SIGMA = 0.05;
+const float COVER_WEIGHT = 0.1;
+const uint ROULETTE_DEPTH = 2u;
+const float TEMPORAL_MAX_HISTORY = 32.0;
+const float TEMPORAL_DEPTH_TOLERANCE = 0.01;
+const float TEMPORAL_MOTION_DEPTH_TOLERANCE = 0.05;
+const float TEMPORAL_NORMAL_COS = 0.9;
+const float TEMPORAL_MIN_MOMENTS = 8.0;
+const float TEMPORAL_CHANGED_HISTORY = 1.0;
+const float TEMPORAL_CHANGE_LOW = 4.0;
+const float TEMPORAL_CHANGE_HIGH = 8.0;
+const float TEMPORAL_MIN_WEIGHT = 0.01;
+const uint K = 8u;
+const uint BSH = 0u;
+const uint BSH_TILE_DEPTH = 8u;
+const uint BSH_TILE_SUBTREES = 256u;
+
+layout(std430) readonly buffer type_6_block_0Compute { GpuGeoNode _group_1_binding_6_cs[]; };
+
+layout(std430) readonly buffer type_7_block_1Compute { GpuTriangle _group_1_binding_7_cs[]; };
+
+layout(std140) uniform ViewParams_block_2Compute { ViewParams _group_0_binding_0_cs; };
+
+uniform sampler2D _group_0_binding_1_cs;
+
+uniform sampler2D _group_0_binding_2_cs;
+
+layout(rgba16f) writeonly uniform image2D _group_0_binding_3_cs;
+
+layout(std430) readonly buffer type_11_block_3Compute { GpuLight _group_1_binding_1_cs[]; };
+
+layout(std430) readonly buffer type_4_block_4Compute { float _group_1_binding_2_cs[]; };
+
+layout(std430) readonly buffer type_4_block_5Compute { float _group_1_binding_3_cs[]; };
+
+layout(std430) readonly buffer type_12_block_6Compute { BshNode _group_1_binding_4_cs[]; };
+
+layout(std430) readonly buffer type_13_block_7Compute { GpuLightCone _group_1_binding_5_cs[]; };
+
+
+float to_f32_(uint u) {
+    return float(u);
+}
+
+uint mul_lo_u32_(uint a, uint b_1) {
+    return (a * b_1);
+}
+
+uint add_wrap_u32_(uint a_1, uint b_2) {
+    return (a_1 + b_2);
+}
+
+float f32_from_bits(uint u_1) {
+    return uintBitsToFloat(u_1);
+}
+
+float xi_from_bits(uint bits) {
+    float _e3 = to_f32_((bits >> 8u));
+    return (_e3 * XI_STEP);
+}
+
+uint pcg_hash(uint x) {
+    uint _e2 = mul_lo_u32_(x, 747796405u);
+    uint _e4 = add_wrap_u32_(_e2, 2891336453u);
+    uint _e12 = mul_lo_u32_(((_e4 >> ((_e4 >> 28u) + 4u)) ^ _e4), 277803737u);
+    return ((_e12 >> 22u) ^ _e12);
+}
+
+uint point_stream(uint seed, uint point, uint frame) {
+    uint _e3 = pcg_hash(frame);
+    uint _e5 = pcg_hash((point ^ _e3));
+    uint _e7 = pcg_hash((seed ^ _e5));
+    return _e7;
+}
+
+uint pick_stream(uint stream) {
+    uint _e3 = pcg_hash((stream ^ PICK_STREAM));
+    return _e3;
+}
+
+float slc_weight(float rt2_, float d2_) {
+    if ((d2_ <= rt2_)) {
+        return 1.0;
+    }
+    return (d2_ / rt2_);
+}
+
+bool slc_keep(float r2_, float d2_1) {
+    return (d2_1 < r2_);
+}
+
+bool sphere_contains_point(vec3 c, float r_1, vec3 x_1) {
+    vec3 v_2 = (x_1 - c);
+    return (dot(v_2, v_2) <= (r_1 * r_1));
+}
+
+float inverse_square(float d2_2) {
+    return (1.0 / max(d2_2, MIN_D2_));
+}
+
+float connection_factor(float cos_x, float d2_3, float rt2_1, float w) {
+    float _e4 = inverse_square(d2_3);
+    float _e6 = slc_weight(rt2_1, d2_3);
+    return (((cos_x * _e4) * _e6) * w);
+}
+
+float connection_cosine(vec3 x_2, vec3 y, vec3 n_1, vec3 ng, float r2_1) {
+    bool local_4 = false;
+    bool local_5 = false;
+    vec3 v_3 = (x_2 - y);
+    float d2_7 = dot(v_3, v_3);
+    bool _e7 = slc_keep(r2_1, d2_7);
+    if (!(!(_e7))) {
+        local_4 = !((d2_7 > 0.0));
+    } else {
+        local_4 = true;
+    }
+    bool _e16 = local_4;
+    if (_e16) {
+        return 0.0;
+    }
+    vec3 w_6 = (v_3 / vec3(sqrt(d2_7)));
+    float cos_x_1 = -(dot(n_1, w_6));
+    if (!((cos_x_1 <= 0.0))) {
+        local_5 = (dot(ng, w_6) >= 0.0);
+    } else {
+        local_5 = true;
+    }
+    bool _e32 = local_5;
+    if (_e32) {
+        return 0.0;
+    }
+    return cos_x_1;
+}
+
+float bsh_scaled_radius(BshNode node, float scale) {
+    if ((scale == 1.0)) {
+        return node.radius;
+    }
+    if ((node.child == BSH_NONE)) {
+        return (node.extent + (scale * (node.radius - node.extent)));
+    }
+    return (node.radius * scale);
+}
+
+float bsh_range_bound(BshNode node_1) {
+    if ((node_1.child == BSH_NONE)) {
+        return (node_1.radius - node_1.extent);
+    }
+    float _e8 = f32_from_bits(node_1.light);
+    return _e8;
+}
+
+float weighted_threshold(float w_sum, float u_2) {
+    return (w_sum / (1.0 - u_2));
+}
+
+float weighted_pick_weight(float w_sum_1, float w_1, uint k_2) {
+    float _e3 = to_f32_(k_2);
+    return (w_sum_1 / (_e3 * w_1));
+}
+
+float ggx_d(float cos_h, float sin2_h, float alpha) {
+    if ((cos_h <= 0.0)) {
+        return 0.0;
+    }
+    float a2_ = (alpha * alpha);
+    float t_1 = (((cos_h * cos_h) * a2_) + sin2_h);
+    return ((a2_ * INV_PI) / (t_1 * t_1));
+}
+
+float smith_root(float cos_, float alpha_1) {
+    float a2_1 = (alpha_1 * alpha_1);
+    return sqrt((((cos_ * cos_) * (1.0 - a2_1)) + a2_1));
+}
+
+float specular_peak_factor(vec4 lobe_1) {
+    float _e6 = smith_root(lobe_1.w, lobe_1.z);
+    return ((lobe_1.y * 0.5) / (_e6 + max(lobe_1.w, 0.0)));
+}
+
+float receiver_peak(vec4 lobe_2) {
+    float _e2 = specular_peak_factor(lobe_2);
+    return (lobe_2.x + (_e2 / (lobe_2.z * lobe_2.z)));
+}
+
+float range_scale(vec4 lobe_3) {
+    if ((lobe_3.y <= 0.0)) {
+        return 1.0;
+    }
+    float _e5 = receiver_peak(lobe_3);
+    return clamp(_e5, 1.0, RANGE_SCALE_MAX);
+}
+
+vec4 range_lobe(vec4 lobe_4) {
+    if ((lobe_4.y <= 0.0)) {
+        return vec4(1.0, 0.0, 1.0, 1.0);
+    }
+    float _e10 = specular_peak_factor(lobe_4);
+    float _e14 = range_scale(lobe_4);
+    return vec4(lobe_4.x, _e10, (lobe_4.z * lobe_4.z), sqrt(_e14));
+}
+
+float cos_sub_clamped(float sin_a, float cos_a, float sin_b, float cos_b) {
+    if ((cos_a > cos_b)) {
+        return 1.0;
+    }
+    return ((cos_a * cos_b) + (sin_a * sin_b));
+}
+
+float sin_sub_clamped(float sin_a_1, float cos_a_1, float sin_b_1, float cos_b_1) {
+    if ((cos_a_1 > cos_b_1)) {
+        return 0.0;
+    }
+    return ((sin_a_1 * cos_b_1) - (cos_a_1 * sin_b_1));
+}
+
+float safe_sqrt(float x_3) {
+    return sqrt(max(x_3, 0.0));
+}
+
+float subtended_cos(float dist2_, float r2_2) {
+    float _e5 = safe_sqrt((1.0 - (r2_2 / dist2_)));
+    return ((dist2_ <= r2_2) ? -1.0 : _e5);
+}
+
+vec4 emitter_cone(vec3 center, float radius, vec3 axis, float cos_o, vec3 p) {
+    vec3 v_4 = (p - center);
+    float dist2_1 = dot(v_4, v_4);
+    float r2_5 = (radius * radius);
+    float d2_8 = max(max(dist2_1, r2_5), MIN_D2_);
+    vec3 wi = ((dist2_1 > 0.0) ? (v_4 / vec3(sqrt(dist2_1))) : vec3(0.0, 0.0, 0.0));
+    float cos_w = dot(axis, wi);
+    float _e25 = safe_sqrt((1.0 - (cos_w * cos_w)));
+    float _e26 = subtended_cos(dist2_1, r2_5);
+    float _e30 = safe_sqrt((1.0 - (_e26 * _e26)));
+    float _e34 = safe_sqrt((1.0 - (cos_o * cos_o)));
+    float _e35 = cos_sub_clamped(_e25, cos_w, _e34, cos_o);
+    float _e36 = sin_sub_clamped(_e25, cos_w, _e34, cos_o);
+    float _e37 = cos_sub_clamped(_e36, _e35, _e30, _e26);
+    return vec4(_e37, d2_8, _e26, _e30);
+}
+
+float emitter_importance(vec3 center_1, float radius_1, float phi, vec3 axis_1, float cos_o_1, float cos_e, vec3 p_1) {
+    vec4 _e7 = emitter_cone(center_1, radius_1, axis_1, cos_o_1, p_1);
+    if ((_e7.x <= cos_e)) {
+        return 0.0;
+    }
+    return ((phi * _e7.x) / _e7.y);
+}
+
+float cone_cos_of(vec3 v, float d2_4, float a_2, vec3 d) {
+    bool local_6 = false;
+    bool local_7 = false;
+    float vd = dot(v, d);
+    float h2_ = (d2_4 - (a_2 * a_2));
+    if (!((h2_ <= 0.0))) {
+        if ((vd >= 0.0)) {
+            local_7 = ((vd * vd) >= h2_);
+        } else {
+            local_7 = false;
+        }
+        bool _e19 = local_7;
+        local_6 = _e19;
+    } else {
+        local_6 = true;
+    }
+    bool _e21 = local_6;
+    if (_e21) {
+        return 1.0;
+    }
+    vec3 c_4 = cross(v, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_4, c_4)) * a_2)) / d2_4), 1.0);
+}
+
+float cone_cos_toward(vec3 center_2, float radius_2, vec3 p_2, vec3 d_1) {
+    vec3 v_5 = (center_2 - p_2);
+    float _e6 = cone_cos_of(v_5, dot(v_5, v_5), radius_2, d_1);
+    return _e6;
+}
+
+float range_scale_at(vec4 rl, float cos_t) {
+    float t_2 = (((0.5 + (0.5 * cos_t)) * (rl.z - 1.0)) + 1.0);
+    return clamp((rl.x + ((rl.y * rl.z) / (t_2 * t_2))), 1.0, (rl.w * rl.w));
+}
+
+float range_scale_toward(vec4 rl_1, vec3 center_3, float radius_3, vec3 p_3, vec3 r_2) {
+    if ((rl_1.w <= 1.0)) {
+        return 1.0;
+    }
+    float _e9 = cone_cos_toward(center_3, radius_3, p_3, r_2);
+    float _e10 = range_scale_at(rl_1, _e9);
+    return _e10;
+}
+
+float light_importance(vec3 center_4, float radius_4, float phi_1, vec3 axis_2, float cos_o_2, float cos_e_1, vec3 p_4, vec3 n_2) {
+    float imp = 0.0;
+    vec4 _e8 = emitter_cone(center_4, radius_4, axis_2, cos_o_2, p_4);
+    if ((_e8.x <= cos_e_1)) {
+        return 0.0;
+    }
+    imp = ((phi_1 * _e8.x) / _e8.y);
+    if ((dot(n_2, n_2) > 0.0)) {
+        vec3 v_6 = (center_4 - p_4);
+        float dist2_2 = dot(v_6, v_6);
+        float cos_i = dot(((dist2_2 > 0.0) ? (v_6 / vec3(sqrt(dist2_2))) : vec3(0.0, 0.0, 0.0)), n_2);
+        float _e33 = imp;
+        float _e37 = safe_sqrt((1.0 - (cos_i * cos_i)));
+        float _e40 = cos_sub_clamped(_e37, cos_i, _e8.w, _e8.z);
+        imp = (_e33 * max(_e40, 0.0));
+    }
+    float _e44 = imp;
+    return max(_e44, 0.0);
+}
+
+float glossy_importance(vec3 center_5, float radius_5, float phi_2, vec3 axis_3, float cos_o_3, float cos_e_2, vec3 p_5, vec3 n_3, vec3 r_3, vec4 lobe_5) {
+    bool local_8 = false;
+    float _e10 = emitter_importance(center_5, radius_5, phi_2, axis_3, cos_o_3, cos_e_2, p_5);
+    float _e11 = cone_cos_toward(center_5, radius_5, p_5, n_3);
+    if (!((_e10 <= 0.0))) {
+        local_8 = (_e11 <= 0.0);
+    } else {
+        local_8 = true;
+    }
+    bool _e20 = local_8;
+    if (_e20) {
+        return 0.0;
+    }
+    float _e22 = cone_cos_toward(center_5, radius_5, p_5, r_3);
+    float _e27 = safe_sqrt((0.5 + (0.5 * _e22)));
+    float _e33 = ggx_d(_e27, (1.0 - (_e27 * _e27)), lobe_5.z);
+    float _e39 = smith_root(lobe_5.w, lobe_5.z);
+    float spec = (((lobe_5.y * _e33) * 0.25) / _e39);
+    return (_e10 * (((lobe_5.x * INV_PI) * _e11) + spec));
+}
+
+float candidate_weight(float importance, float rt2_2, float d2_5) {
+    float _e3 = slc_weight(rt2_2, d2_5);
+    return (importance * _e3);
+}
+
+float cone_weight(vec3 center_6, float radius_6, float phi_3, vec3 axis_4, float cos_o_4, float cos_e_3, float rt2_3, vec3 p_6, vec3 n_4, vec3 r_4, vec4 lobe_6) {
+    vec3 v_7 = (p_6 - center_6);
+    if ((lobe_6.y <= 0.0)) {
+        float _e15 = light_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_4);
+        float _e19 = candidate_weight((_e15 * INV_PI), rt2_3, dot(v_7, v_7));
+        return _e19;
+    }
+    float _e20 = glossy_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_4, r_4, lobe_6);
+    float _e22 = candidate_weight(_e20, rt2_3, dot(v_7, v_7));
+    return _e22;
+}
+
+float shadow_margin(float len) {
+    return (0.0001 * len);
+}
+
+float ray_inverse(float x_4) {
+    return (1.0 / ((abs(x_4) < 1e-30) ? 1e-30 : x_4));
+}
+
+vec3 ray_inverse3_(vec3 d_2) {
+    float _e2 = ray_inverse(d_2.x);
+    float _e4 = ray_inverse(d_2.y);
+    float _e6 = ray_inverse(d_2.z);
+    return vec3(_e2, _e4, _e6);
+}
+
+float ray_aabb(vec3 o, vec3 inv_d, vec3 bmin, vec3 bmax, float t_max) {
+    vec3 t0_ = ((bmin - o) * inv_d);
+    vec3 t1_ = ((bmax - o) * inv_d);
+    vec3 lo = min(t0_, t1_);
+    vec3 hi = max(t0_, t1_);
+    float t_in = max(max(lo.x, lo.y), max(lo.z, 0.0));
+    float t_out = min(min(hi.x, hi.y), min(hi.z, t_max));
+    if ((t_in <= t_out)) {
+        return t_in;
+    }
+    return -1.0;
+}
+
+float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_3, vec3 b_3, vec3 c_1, float t_min, float t_max_1) {
+    bool local_9 = false;
+    bool local_10 = false;
+    bool local_11 = false;
+    vec3 e1_ = (b_3 - a_3);
+    vec3 e2_ = (c_1 - a_3);
+    vec3 p_7 = cross(d_3, e2_);
+    float det = dot(e1_, p_7);
+    if ((abs(det) <= 0.0)) {
+        return -1.0;
+    }
+    float inv = (1.0 / det);
+    vec3 s_4 = (o_1 - a_3);
+    float u_3 = (dot(s_4, p_7) * inv);
+    if (!((u_3 < 0.0))) {
+        local_9 = (u_3 > 1.0);
+    } else {
+        local_9 = true;
+    }
+    bool _e28 = local_9;
+    if (_e28) {
+        return -1.0;
+    }
+    vec3 q = cross(s_4, e1_);
+    float v_8 = (dot(d_3, q) * inv);
+    if (!((v_8 < 0.0))) {
+        local_10 = ((u_3 + v_8) > 1.0);
+    } else {
+        local_10 = true;
+    }
+    bool _e42 = local_10;
+    if (_e42) {
+        return -1.0;
+    }
+    float t_3 = (dot(e2_, q) * inv);
+    if ((t_3 > t_min)) {
+        local_11 = (t_3 < t_max_1);
+    } else {
+        local_11 = false;
+    }
+    bool _e51 = local_11;
+    if (_e51) {
+        return t_3;
+    }
+    return -1.0;
+}
+
+vec3 light_intensity(GpuLight l, vec3 w_2) {
+    switch(l.kind) {
+        case 0u: {
+            return l.intensity;
+        }
+        default: {
+            return vec3(0.0);
+        }
+    }
+}
+
+vec3 light_point(GpuLight l_1, float u1_, float u2_) {
+    return l_1.p0_;
+}
+
+GeoHit trace(vec3 o_2, vec3 d_4, float t_min_1, float t_max_2, bool any_hit) {
+    GeoHit hit = GeoHit(0.0, 0u);
+    uint stack[64] = uint[64](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
+    uint sp = 0u;
+    uint node_2 = 0u;
+    uint i = 0u;
+    hit.t = t_max_2;
+    hit.tri = NO_LIGHT;
+    if ((uint(_group_1_binding_6_cs.length()) == 0u)) {
+        GeoHit _e13 = hit;
+        return _e13;
+    }
+    vec3 _e14 = ray_inverse3_(d_4);
+    while(true) {
+        uint _e21 = node_2;
+        GpuGeoNode n_11 = _group_1_binding_6_cs[_e21];
+        float _e27 = hit.t;
+        float _e28 = ray_aabb(o_2, _e14, n_11.bmin, n_11.bmax, _e27);
+        if ((_e28 >= 0.0)) {
+            if ((n_11.count > 0u)) {
+                i = n_11.first;
+                bool loop_init = true;
+                while(true) {
+                    if (!loop_init) {
+                        uint _e58 = i;
+                        i = (_e58 + 1u);
+                    }
+                    loop_init = false;
+                    uint _e36 = i;
+                    if ((_e36 < (n_11.first + n_11.count))) {
+                    } else {
+                        break;
+                    }
+                    {
+                        uint _e42 = i;
+                        GpuTriangle t_4 = _group_1_binding_7_cs[_e42];
+                        float _e49 = hit.t;
+                        float _e50 = ray_triangle(o_2, d_4, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e49);
+                        if ((_e50 > 0.0)) {
+                            hit.t = _e50;
+                            uint _e55 = i;
+                            hit.tri = _e55;
+                            if (any_hit) {
+                                GeoHit _e56 = hit;
+                                return _e56;
+                            }
+                        }
+                    }
+                }
+            } else {
+                uint _e60 = sp;
+                if ((_e60 < 64u)) {
+                    uint _e63 = sp;
+                    stack[_e63] = (n_11.first + 1u);
+                    uint _e68 = sp;
+                    sp = (_e68 + 1u);
+                }
+                node_2 = n_11.first;
+                continue;
+            }
+        }
+        uint _e72 = sp;
+        if ((_e72 == 0u)) {
+            break;
+        }
+        uint _e75 = sp;
+        sp = (_e75 - 1u);
+        uint _e78 = sp;
+        uint _e80 = stack[_e78];
+        node_2 = _e80;
+    }
+    GeoHit _e81 = hit;
+    return _e81;
+}
+
+bool occluded(vec3 a_4, vec3 b_4) {
+    vec3 dv = (b_4 - a_4);
+    float len_1 = length(dv);
+    if ((len_1 <= 0.0)) {
+        return false;
+    }
+    float _e7 = shadow_margin(len_1);
+    GeoHit _e12 = trace(a_4, (dv / vec3(len_1)), _e7, (len_1 - _e7), true);
+    return (_e12.tri != NO_LIGHT);
+}
+
+BshNode bsh_node(uint nodes, uint i_1) {
+    BshNode _e4 = _group_1_binding_4_cs[i_1];
+    return _e4;
+}
+
+uint bsh_count(uint nodes_1) {
+    return uint(_group_1_binding_4_cs.length());
+}
+
+uint bsh_first(uint nodes_2) {
+    uint _e1 = bsh_count(nodes_2);
+    if ((_e1 > 0u)) {
+        return 0u;
+    }
+    return BSH_NONE;
+}
+
+float bsh_inner_scale(float a_5, vec3 v_1, float d2_6, vec3 r_5, vec4 rl_2) {
+    float _e5 = cone_cos_of(v_1, d2_6, a_5, r_5);
+    float _e8 = range_scale_at(rl_2, (_e5 + 2e-6));
+    return _e8;
+}
+
+bool bsh_reaches(BshNode node_3, vec3 x_5, vec3 r_6, vec4 rl_3) {
+    bool local_12 = false;
+    bool local_13 = false;
+    bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_5);
+    if (_e6) {
+        return true;
+    }
+    if (!((rl_3.w <= 1.0))) {
+        bool _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001)), x_5);
+        local_12 = !(_e20);
+    } else {
+        local_12 = true;
+    }
+    bool _e23 = local_12;
+    if (_e23) {
+        return false;
+    }
+    float _e25 = bsh_range_bound(node_3);
+    vec3 v_9 = (x_5 - node_3.center);
+    float d2_9 = dot(v_9, v_9);
+    float reach_max = (node_3.extent + ((rl_3.w * 1.001) * _e25));
+    if ((d2_9 > (reach_max * reach_max))) {
+        return false;
+    }
+    if ((node_3.child == BSH_NONE)) {
+        float _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_5, r_6);
+        float _e46 = bsh_scaled_radius(node_3, sqrt(_e43));
+        bool _e47 = sphere_contains_point(node_3.center, _e46, x_5);
+        return _e47;
+    }
+    float _e50 = bsh_inner_scale(node_3.extent, -(v_9), d2_9, r_6, rl_3);
+    float s_c = (_e50 * 1.001);
+    float reach = (node_3.extent + (sqrt(s_c) * _e25));
+    if ((d2_9 <= ((node_3.radius * node_3.radius) * s_c))) {
+        local_13 = (d2_9 <= (reach * reach));
+    } else {
+        local_13 = false;
+    }
+    bool _e67 = local_13;
+    return _e67;
+}
+
+uint bsh_next_leaf_lobe(uint nodes_3, uint start, vec3 x_6, vec3 r_7, vec4 rl_4) {
+    uint i_2 = 0u;
+    i_2 = start;
+    while(true) {
+        uint _e6 = i_2;
+        if ((_e6 != BSH_NONE)) {
+        } else {
+            break;
+        }
+        {
+            uint _e9 = i_2;
+            BshNode _e10 = bsh_node(nodes_3, _e9);
+            bool _e11 = bsh_reaches(_e10, x_6, r_7, rl_4);
+            if (_e11) {
+                if ((_e10.child == BSH_NONE)) {
+                    uint _e15 = i_2;
+                    return _e15;
+                }
+                i_2 = _e10.child;
+            } else {
+                i_2 = _e10.next;
+            }
+        }
+    }
+    return BSH_NONE;
+}
+
+float next_threshold(float sum, inout uint h_1) {
+    uint _e2 = h_1;
+    uint _e3 = pcg_hash(_e2);
+    h_1 = _e3;
+    uint _e4 = h_1;
+    float _e5 = xi_from_bits(_e4);
+    float _e6 = weighted_threshold(sum, _e5);
+    return _e6;
+}
+
+Connection connect_record(GpuLight l_2, vec3 x_7, vec3 n_5, vec3 ng_1, float r2_3, float rt2_4, float w_res, float u1_1, float u2_1, float eps, bool trace_1) {
+    Connection c_2 = Connection(vec3(0.0), vec3(0.0), 0.0);
+    bool local_14 = false;
+    bool local_15 = false;
+    c_2.e = vec3(0.0);
+    vec3 _e16 = light_point(l_2, u1_1, u2_1);
+    c_2.y = _e16;
+    vec3 _e19 = c_2.y;
+    float _e20 = connection_cosine(x_7, _e19, n_5, ng_1, r2_3);
+    c_2.cos_x = _e20;
+    float _e22 = c_2.cos_x;
+    if (!((_e22 <= 0.0))) {
+        if (trace_1) {
+            vec3 _e33 = c_2.y;
+            bool _e34 = occluded((x_7 + (ng_1 * eps)), _e33);
+            local_15 = _e34;
+        } else {
+            local_15 = false;
+        }
+        bool _e36 = local_15;
+        local_14 = _e36;
+    } else {
+        local_14 = true;
+    }
+    bool _e38 = local_14;
+    if (_e38) {
+        Connection _e39 = c_2;
+        return _e39;
+    }
+    vec3 _e41 = c_2.y;
+    vec3 v_10 = (x_7 - _e41);
+    float d2_10 = dot(v_10, v_10);
+    vec3 _e48 = light_intensity(l_2, (v_10 / vec3(sqrt(d2_10))));
+    float _e50 = c_2.cos_x;
+    float _e51 = connection_factor(_e50, d2_10, rt2_4, w_res);
+    c_2.e = (_e48 * _e51);
+    Connection _e53 = c_2;
+    return _e53;
+}
+
+Connection connect_traced(uint li, vec3 x_8, vec3 n_6, vec3 ng_2, float s_1, float w_res_1, float u1_2, float u2_2, float eps_1, bool trace_2) {
+    GpuLight _e12 = _group_1_binding_1_cs[li];
+    float _e15 = _group_1_binding_3_cs[li];
+    float _e19 = _group_1_binding_2_cs[li];
+    Connection _e21 = connect_record(_e12, x_8, n_6, ng_2, (s_1 * _e15), (s_1 * _e19), w_res_1, u1_2, u2_2, eps_1, trace_2);
+    return _e21;
+}
+
+float light_range_scale(uint li_1, vec3 x_9, vec3 r_8, vec4 rl_5) {
+    GpuLightCone c_5 = _group_1_binding_5_cs[li_1];
+    float _e9 = range_scale_toward(rl_5, c_5.center, c_5.radius, x_9, r_8);
+    return _e9;
+}
+
+float light_weight(uint li_2, vec3 x_10, vec3 n_7, vec3 r_9, vec4 lobe_7, vec4 rl_6) {
+    GpuLightCone c_6 = _group_1_binding_5_cs[li_2];
+    float _e15 = light_range_scale(li_2, x_10, r_9, rl_6);
+    float _e18 = _group_1_binding_2_cs[li_2];
+    float _e20 = cone_weight(c_6.center, c_6.radius, c_6.phi, c_6.axis, c_6.cos_o, c_6.cos_e, (_e15 * _e18), x_10, n_7, r_9, lobe_7);
+    return _e20;
+}
+
+WeightedPicks weighted_picks(uint h_2) {
+    WeightedPicks picks_1 = WeightedPicks(uint[8](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u), float[8](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), float[8](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0.0, 0u, 0u);
+    picks_1.w_sum = 0.0;
+    picks_1.n = 0u;
+    picks_1.h = h_2;
+    WeightedPicks _e7 = picks_1;
+    return _e7;
+}
+
+void weighted_offer(inout WeightedPicks picks_2, uint li_3, float w_3) {
+    uint h_3 = 0u;
+    uint s_2 = 0u;
+    uint _e4 = picks_2.n;
+    picks_2.n = (_e4 + 1u);
+    if ((w_3 > 0.0)) {
+        float _e10 = picks_2.w_sum;
+        picks_2.w_sum = (_e10 + w_3);
+        uint _e13 = picks_2.h;
+        h_3 = _e13;
+        bool loop_init_1 = true;
+        while(true) {
+            if (!loop_init_1) {
+                uint _e40 = s_2;
+                s_2 = (_e40 + 1u);
+            }
+            loop_init_1 = false;
+            uint _e17 = s_2;
+            if ((_e17 < K)) {
+            } else {
+                break;
+            }
+            {
+                float _e21 = picks_2.w_sum;
+                uint _e23 = s_2;
+                float _e25 = picks_2.threshold[_e23];
+                if ((_e21 > _e25)) {
+                    uint _e28 = s_2;
+                    picks_2.light[_e28] = li_3;
+                    uint _e31 = s_2;
+                    picks_2.w[_e31] = w_3;
+                    uint _e34 = s_2;
+                    float _e37 = picks_2.w_sum;
+                    float _e38 = next_threshold(_e37, h_3);
+                    picks_2.threshold[_e34] = _e38;
+                }
+            }
+        }
+        uint _e43 = h_3;
+        picks_2.h = _e43;
+        return;
+    } else {
+        return;
+    }
+}
+
+vec4 surface_at(ivec2 texel) {
+    vec4 p_8 = texelFetch(_group_0_binding_1_cs, texel, 0);
+    return ((p_8.w > 0.0) ? vec4(p_8.xyz, 1.0) : vec4(0.0));
+}
+
+Shaded shade_connection(Connection c_3, vec3 x_11, vec3 n_8, Material m_1) {
+    Shaded s_3 = Shaded(vec3(0.0), vec3(0.0), vec3(0.0));
+    s_3.e = c_3.e;
+    s_3.diffuse = vec3(0.0);
+    s_3.specular = vec3(0.0);
+    Shaded _e13 = s_3;
+    return _e13;
+}
+
+Shaded shade_pick_traced(uint li_4, vec3 x_12, vec3 n_9, vec3 r_10, vec4 rl_7, Material m_2, float w_4, float u1_3, float u2_3, float eps_2, bool trace_3) {
+    Connection _e12 = connect_traced(li_4, x_12, n_9, n_9, 1.0, w_4, u1_3, u2_3, eps_2, trace_3);
+    Shaded _e13 = shade_connection(_e12, x_12, n_9, m_2);
+    return _e13;
+}
+
+Shaded shade_pick(uint li_5, vec3 x_13, vec3 n_10, vec3 r_11, vec4 rl_8, Material m_3, float w_5, float u1_4, float u2_4, float eps_3) {
+    Shaded _e11 = shade_pick_traced(li_5, x_13, n_10, r_11, rl_8, m_3, w_5, u1_4, u2_4, eps_3, true);
+    return _e11;
+}
+
+Shaded add(Shaded a_6, Shaded b_5) {
+    return Shaded((a_6.e + b_5.e), (a_6.diffuse + b_5.diffuse), (a_6.specular + b_5.specular));
+}
+
+uint[8] first_holders(uvec2 keys_1[8], bool held_1[8]) {
+    uint first[8] = uint[8](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
+    uint k_3 = 0u;
+    uint j_1 = 0u;
+    bool local_16 = false;
+    bool local_17 = false;
+    bool loop_init_2 = true;
+    while(true) {
+        if (!loop_init_2) {
+            uint _e45 = k_3;
+            k_3 = (_e45 + 1u);
+        }
+        loop_init_2 = false;
+        uint _e5 = k_3;
+        if ((_e5 < K)) {
+        } else {
+            break;
+        }
+        {
+            uint _e8 = k_3;
+            uint _e11 = k_3;
+            uint _e12 = k_3;
+            first[_e8] = (held_1[_e12] ? _e11 : K);
+            j_1 = 0u;
+            bool loop_init_3 = true;
+            while(true) {
+                if (!loop_init_3) {
+                    uint _e42 = j_1;
+                    j_1 = (_e42 + 1u);
+                }
+                loop_init_3 = false;
+                uint _e17 = j_1;
+                uint _e18 = k_3;
+                if ((_e17 < _e18)) {
+                    uint _e22 = k_3;
+                    local_16 = held_1[_e22];
+                } else {
+                    local_16 = false;
+                }
+                bool _e25 = local_16;
+                if (_e25) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e26 = j_1;
+                    if (held_1[_e26]) {
+                        uint _e30 = j_1;
+                        uint _e32 = k_3;
+                        local_17 = all(equal(keys_1[_e30], keys_1[_e32]));
+                    } else {
+                        local_17 = false;
+                    }
+                    bool _e37 = local_17;
+                    if (_e37) {
+                        uint _e38 = k_3;
+                        uint _e40 = j_1;
+                        first[_e38] = _e40;
+                        break;
+                    }
+                }
+            }
+        }
+    }
+    uint _e47[8] = first;
+    return _e47;
+}
+
+void main() {
+    uvec3 gid = gl_GlobalInvocationID;
+    uint lid = gl_LocalInvocationIndex;
+    bool local = false;
+    vec4 s = vec4(0.0);
+    vec3 nn = vec3(0.0);
+    bool local_1 = false;
+    bool local_2 = false;
+    bool local_3 = false;
+    vec3 n = vec3(0.0, 0.0, 1.0);
+    Material m = Material(vec3(0.0), 0.0, 0.0, vec3(0.0), 0.0, 0.0);
+    vec4 lobe = vec4(1.0, 0.0, 1.0, 1.0);
+    vec3 r = vec3(0.0);
+    uint h = 0u;
+    Shaded t = Shaded(vec3(0.0), vec3(0.0), vec3(0.0));
+    WeightedPicks picks = WeightedPicks(uint[8](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u), float[8](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), float[8](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0.0, 0u, 0u);
+    uint b = 0u;
+    uvec2 keys[8] = uvec2[8](uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u));
+    bool held[8] = bool[8](false, false, false, false, false, false, false, false);
+    uint k = 0u;
+    uint k_1 = 0u;
+    uint copies = 0u;
+    uint j = 0u;
+    uint _e5 = _group_0_binding_0_cs.width;
+    if ((gid.x < _e5)) {
+        uint _e12 = _group_0_binding_0_cs.height;
+        local = (gid.y < _e12);
+    } else {
+        local = false;
+    }
+    bool inside = local;
+    ivec2 texel_1 = ivec2(int(gid.x), int(gid.y));
+    if (inside) {
+        vec4 _e27 = surface_at(texel_1);
+        s = _e27;
+        vec4 _e30 = texelFetch(_group_0_binding_2_cs, texel_1, 0);
+        nn = _e30.xyz;
+    }
+    vec3 _e32 = nn;
+    vec3 _e33 = nn;
+    float len2_ = dot(_e32, _e33);
+    vec4 _e35 = s;
+    vec3 x_14 = _e35.xyz;
+    if (inside) {
+        float _e40 = s.w;
+        local_1 = (_e40 > 0.0);
+    } else {
+        local_1 = false;
+    }
+    bool _e44 = local_1;
+    if (_e44) {
+        local_2 = (len2_ > 0.0);
+    } else {
+        local_2 = false;
+    }
+    bool _e50 = local_2;
+    if (_e50) {
+        local_3 = all(lessThanEqual(abs(x_14), vec3(3.4028235e38)));
+    } else {
+        local_3 = false;
+    }
+    bool has = local_3;
+    if (has) {
+        vec3 _e65 = nn;
+        n = (_e65 / vec3(sqrt(len2_)));
+    }
+    vec3 _e76 = n;
+    r = _e76;
+    vec4 _e78 = lobe;
+    vec4 _e79 = range_lobe(_e78);
+    float _e82 = _group_0_binding_0_cs.shadow_offset;
+    vec3 _e85 = _group_0_binding_0_cs.eye;
+    float eps_4 = (_e82 * length((_e85 - x_14)));
+    uint _e91 = _group_0_binding_0_cs.seed;
+    uint _e95 = _group_0_binding_0_cs.width;
+    uint _e101 = _group_0_binding_0_cs.frame;
+    uint _e102 = point_stream(_e91, ((gid.y * _e95) + gid.x), _e101);
+    uint _e103 = pick_stream(_e102);
+    h = _e103;
+    WeightedPicks _e113 = weighted_picks(_e102);
+    picks = _e113;
+    if (has) {
+        uint _e117 = bsh_first(BSH);
+        vec3 _e118 = r;
+        uint _e119 = bsh_next_leaf_lobe(BSH, _e117, x_14, _e118, _e79);
+        b = _e119;
+        bool loop_init_4 = true;
+        while(true) {
+            if (!loop_init_4) {
+                uint _e135 = b;
+                uint _e138 = _group_1_binding_4_cs[_e135].next;
+                vec3 _e139 = r;
+                uint _e140 = bsh_next_leaf_lobe(BSH, _e138, x_14, _e139, _e79);
+                b = _e140;
+            }
+            loop_init_4 = false;
+            uint _e121 = b;
+            if ((_e121 != BSH_NONE)) {
+            } else {
+                break;
+            }
+            {
+                uint _e125 = b;
+                uint li_6 = _group_1_binding_4_cs[_e125].light;
+                vec3 _e129 = n;
+                vec3 _e130 = r;
+                vec4 _e131 = lobe;
+                float _e132 = light_weight(li_6, x_14, _e129, _e130, _e131, _e79);
+                weighted_offer(picks, li_6, _e132);
+            }
+        }
+    }
+    if (!(has)) {
+        if (inside) {
+            imageStore(_group_0_binding_3_cs, texel_1, vec4(0.0));
+        }
+        return;
+    }
+    float _e146 = picks.w_sum;
+    if ((_e146 > 0.0)) {
+        bool loop_init_5 = true;
+        while(true) {
+            if (!loop_init_5) {
+                uint _e182 = k;
+                k = (_e182 + 1u);
+            }
+            loop_init_5 = false;
+            uint _e153 = k;
+            if ((_e153 < K)) {
+            } else {
+                break;
+            }
+            {
+                uint _e157 = k;
+                uint _e162 = k;
+                uint _e164 = picks.light[_e162];
+                uint _e167 = _group_1_binding_1_cs[_e164].kind;
+                uint own = ((_e167 == LIGHT_TRIANGLE) ? (_e157 + 1u) : 0u);
+                uint _e171 = k;
+                uint _e174 = k;
+                uint _e176 = picks.light[_e174];
+                keys[_e171] = uvec2(_e176, own);
+                uint _e178 = k;
+                held[_e178] = true;
+            }
+        }
+        uvec2 _e184[8] = keys;
+        bool _e185[8] = held;
+        uint _e186[8] = first_holders(_e184, _e185);
+        bool loop_init_6 = true;
+        while(true) {
+            if (!loop_init_6) {
+                uint _e244 = k_1;
+                k_1 = (_e244 + 1u);
+            }
+            loop_init_6 = false;
+            uint _e189 = k_1;
+            if ((_e189 < K)) {
+            } else {
+                break;
+            }
+            {
+                uint _e192 = h;
+                uint _e193 = pcg_hash(_e192);
+                h = _e193;
+                uint _e194 = h;
+                float _e195 = xi_from_bits(_e194);
+                uint _e196 = h;
+                uint _e197 = pcg_hash(_e196);
+                h = _e197;
+                uint _e198 = h;
+                float _e199 = xi_from_bits(_e198);
+                uint _e201 = k_1;
+                uint li_7 = picks.light[_e201];
+                copies = 0u;
+                uint _e206 = k_1;
+                j = _e206;
+                bool loop_init_7 = true;
+                while(true) {
+                    if (!loop_init_7) {
+                        uint _e221 = j;
+                        j = (_e221 + 1u);
+                    }
+                    loop_init_7 = false;
+                    uint _e208 = j;
+                    if ((_e208 < K)) {
+                    } else {
+                        break;
+                    }
+                    {
+                        uint _e211 = copies;
+                        uint _e214 = j;
+                        uint _e216 = k_1;
+                        copies = (_e211 + ((_e186[_e214] == _e216) ? 1u : 0u));
+                    }
+                }
+                uint _e223 = copies;
+                if ((_e223 > 0u)) {
+                    Shaded _e226 = t;
+                    vec3 _e227 = n;
+                    vec3 _e228 = r;
+                    Material _e229 = m;
+                    float _e231 = picks.w_sum;
+                    uint _e233 = k_1;
+                    float _e235 = picks.w[_e233];
+                    float _e237 = weighted_pick_weight(_e231, _e235, K);
+                    uint _e238 = copies;
+                    Shaded _e241 = shade_pick(li_7, x_14, _e227, _e228, _e79, _e229, (_e237 * float(_e238)), _e195, _e199, eps_4);
+                    Shaded _e242 = add(_e226, _e241);
+                    t = _e242;
+                }
+            }
+        }
+    }
+    uint count = picks.n;
+    vec3 _e250 = t.e;
+    imageStore(_group_0_binding_3_cs, texel_1, vec4(_e250, float(count)));
+    return;
+}
+
