@@ -32,6 +32,7 @@ struct Input {
     motion_vectors: bool,
     counters: bool,
     reuse_domains: u8,
+    tile_walk: bool,
 }
 
 fuzz_target!(|i: Input| {
@@ -70,6 +71,7 @@ fuzz_target!(|i: Input| {
         counters: i.counters,
         // 0..=9: no reuse, every allowed count of reused pixels, one too many.
         reuse_domains: i.reuse_domains as u32 % 10,
+        tile_walk: i.tile_walk,
     };
     match generate(kernel, &features) {
         Ok(wgsl) => assert!(wgsl.contains("fn "), "{kernel:?}: empty source"),

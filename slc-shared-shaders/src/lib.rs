@@ -645,11 +645,19 @@ pub fn check(kernel: Kernel, f: &Features) -> Result<(), ShaderError> {
                     f.selection
                 ));
             }
-            if !(f.tile_size.is_power_of_two() && f.tile_size <= 16) {
+            if !(1..=16).contains(&f.tile_size) {
+                return bad(format!("direct_light: tile {} must be in 1..=16", f.tile_size));
+            }
+            if f.tile_walk && !f.tile_size.is_power_of_two() {
                 return bad(format!(
-                    "direct_light: tile {} must be 1, 2, 4, 8 or 16 (its walk reduces over a power of two)",
+                    "direct_light: tile {} must be 1, 2, 4, 8 or 16 for the tile walk (it reduces over a power of two)",
                     f.tile_size
                 ));
+            }
+            if f.tile_walk && f.max_tile_lights == 0 {
+                return bad(
+                    "direct_light: the tile walk's list must hold at least one light".into()
+                );
             }
             let bytes = direct_workgroup_bytes(f);
             if bytes > 16384 {

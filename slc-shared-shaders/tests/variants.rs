@@ -239,6 +239,24 @@ fn every_direct_light_variant_validates() {
         }
     }
     assert_eq!(n, 31 * 3 * 3 * 4);
-    let bad = Features { selection: Selection::Power, ..Features::default() };
-    assert!(matches!(generate_module(Kernel::DirectLight, &bad), Err(ShaderError::Unsupported(_))));
+    let weighted = Features { selection: Selection::Weighted, ..Features::default() };
+    // The tile walk: a power-of-two tile, a list of at least one entry that
+    // fits WebGPU's 16 KiB of workgroup memory; without it, any list.
+    for bad in [
+        Features { selection: Selection::Power, ..Features::default() },
+        Features { tile_size: 3, ..weighted },
+        Features { tile_size: 32, ..weighted },
+        Features { max_tile_lights: 0, ..weighted },
+        Features { max_tile_lights: 4096, ..weighted },
+    ] {
+        let r = generate_module(Kernel::DirectLight, &bad);
+        assert!(matches!(r, Err(ShaderError::Unsupported(_))), "{bad:?}");
+    }
+    for good in [
+        Features { tile_size: 3, tile_walk: false, ..weighted },
+        Features { max_tile_lights: 0, tile_walk: false, ..weighted },
+        Features { max_tile_lights: 1, ..weighted },
+    ] {
+        generate_module(Kernel::DirectLight, &good).unwrap_or_else(|e| panic!("{good:?}: {e}"));
+    }
 }
