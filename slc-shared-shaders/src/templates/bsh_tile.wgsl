@@ -56,9 +56,11 @@ fn tile_subtree(s: u32, t: TileWalk, list: bool, at: u32, start: u32, to: u32) -
 
 /// Starts the tile's walk for the pixel at `x` with range-lobe scale `w`
 /// (`has`: whether it has a surface) and sizes its list. Every invocation
-/// calls it (barriers); `li` is its local_invocation_index.
+/// calls it (barriers); `li` is its local_invocation_index. A NaN scale
+/// is left out of the tile's (that pixel's `bsh_reaches` accepts only the
+/// plain spheres that hold it), its position is not.
 fn tile_walk_begin(li: u32, x: vec3f, w: f32, has: bool) -> TileWalk {
-    atomicMax(&tile_scale, select(0u, bitcast<u32>(w), has));
+    atomicMax(&tile_scale, select(0u, bitcast<u32>(w), has && w >= 0.0));
     let box = workgroup_box(li, x, has);
     var t = TileWalk(box.lo, box.hi, bitcast<f32>(workgroupUniformLoad(&tile_scale)), 0u);
     if box_is_empty(box) {

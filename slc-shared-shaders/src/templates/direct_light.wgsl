@@ -384,7 +384,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u, @builtin(local_invocation_ind
 {% if tile_walk %}
     // The lights in range, from the tile's list (bsh_tile.wgsl): the ones
     // this pixel's own walk of the hierarchy finds, in its order.
-    let walk = tile_walk_begin(lid, x, rl.w, has && rl.w >= 0.0);
+    let walk = tile_walk_begin(lid, x, rl.w, has);
     for (var start = 0u; start < walk.total; start += TILE_LIST) {
         let listed = tile_walk_fill(lid, walk, start);
         for (var j = 0u; j < listed; j++) {

@@ -243,29 +243,29 @@ fn connection_factor(cos_x: f32, d2_3: f32, rt2_1: f32, w: f32) -> f32 {
 }
 
 fn connection_cosine(x_3: vec3<f32>, y: vec3<f32>, n_1: vec3<f32>, ng: vec3<f32>, r2_1: f32) -> f32 {
+    var local_5: bool;
     var local_6: bool;
-    var local_7: bool;
 
     let v_4 = (x_3 - y);
     let d2_6 = dot(v_4, v_4);
     let _e7 = slc_keep(r2_1, d2_6);
     if !(!(_e7)) {
-        local_6 = !((d2_6 > 0f));
+        local_5 = !((d2_6 > 0f));
     } else {
-        local_6 = true;
+        local_5 = true;
     }
-    let _e16 = local_6;
+    let _e16 = local_5;
     if _e16 {
         return 0f;
     }
     let w_9 = (v_4 / vec3(sqrt(d2_6)));
     let cos_x_1 = -(dot(n_1, w_9));
     if !((cos_x_1 <= 0f)) {
-        local_7 = (dot(ng, w_9) >= 0f);
+        local_6 = (dot(ng, w_9) >= 0f);
     } else {
-        local_7 = true;
+        local_6 = true;
     }
-    let _e32 = local_7;
+    let _e32 = local_6;
     if _e32 {
         return 0f;
     }
@@ -424,7 +424,7 @@ fn ies_lerp_t(a0_: f32, a1_: f32, x_7: f32) -> f32 {
 }
 
 fn ies_candela(tab_2: u32, base_1: u32, gamma: f32, c_4: f32) -> f32 {
-    var local_8: bool;
+    var local_7: bool;
 
     let _e4 = at(tab_2, base_1);
     let _e5 = to_u32_(_e4);
@@ -436,11 +436,11 @@ fn ies_candela(tab_2: u32, base_1: u32, gamma: f32, c_4: f32) -> f32 {
     let _e14 = at(tab_2, v0_);
     if !((gamma < _e14)) {
         let _e22 = at(tab_2, ((v0_ + _e5) - 1u));
-        local_8 = (gamma > _e22);
+        local_7 = (gamma > _e22);
     } else {
-        local_8 = true;
+        local_7 = true;
     }
-    let _e25 = local_8;
+    let _e25 = local_7;
     if _e25 {
         return 0f;
     }
@@ -577,23 +577,23 @@ fn range_lobe(lobe_4: vec4<f32>) -> vec4<f32> {
 }
 
 fn cone_cos_of(v: vec3<f32>, d2_4: f32, a_5: f32, d: vec3<f32>) -> f32 {
+    var local_8: bool;
     var local_9: bool;
-    var local_10: bool;
 
     let vd = dot(v, d);
     let h2_ = (d2_4 - (a_5 * a_5));
     if !((h2_ <= 0f)) {
         if (vd >= 0f) {
-            local_10 = ((vd * vd) >= h2_);
+            local_9 = ((vd * vd) >= h2_);
         } else {
-            local_10 = false;
+            local_9 = false;
         }
-        let _e19 = local_10;
-        local_9 = _e19;
+        let _e19 = local_9;
+        local_8 = _e19;
     } else {
-        local_9 = true;
+        local_8 = true;
     }
-    let _e21 = local_9;
+    let _e21 = local_8;
     if _e21 {
         return 1f;
     }
@@ -622,16 +622,16 @@ fn range_scale_toward(rl_1: vec4<f32>, center_1: vec3<f32>, radius_1: f32, p_1: 
 }
 
 fn triangle_normal(a_6: vec3<f32>, b_4: vec3<f32>, c_5: vec3<f32>) -> vec3<f32> {
-    var local_11: bool;
+    var local_10: bool;
 
     let n_13 = cross((b_4 - a_6), (c_5 - a_6));
     let l2_ = dot(n_13, n_13);
     if !(!((l2_ > 0f))) {
-        local_11 = !((l2_ < 300000000000000000000000000000000000000f));
+        local_10 = !((l2_ < 300000000000000000000000000000000000000f));
     } else {
-        local_11 = true;
+        local_10 = true;
     }
-    let _e17 = local_11;
+    let _e17 = local_10;
     if _e17 {
         return vec3<f32>(0f, 0f, 0f);
     }
@@ -698,8 +698,8 @@ fn bsh_inner_scale(a_8: f32, v_1: vec3<f32>, d2_5: f32, r_4: vec3<f32>, rl_2: ve
 }
 
 fn bsh_reaches(node_2: BshNode, x_8: vec3<f32>, r_5: vec3<f32>, rl_3: vec4<f32>) -> bool {
+    var local_11: bool;
     var local_12: bool;
-    var local_13: bool;
 
     let _e6 = sphere_contains_point(node_2.center, node_2.radius, x_8);
     if _e6 {
@@ -707,11 +707,11 @@ fn bsh_reaches(node_2: BshNode, x_8: vec3<f32>, r_5: vec3<f32>, rl_3: vec4<f32>)
     }
     if !((rl_3.w <= 1f)) {
         let _e20 = sphere_contains_point(node_2.center, (node_2.radius * (rl_3.w * 1.0001f)), x_8);
-        local_12 = !(_e20);
+        local_11 = !(_e20);
     } else {
-        local_12 = true;
+        local_11 = true;
     }
-    let _e23 = local_12;
+    let _e23 = local_11;
     if _e23 {
         return false;
     }
@@ -732,11 +732,11 @@ fn bsh_reaches(node_2: BshNode, x_8: vec3<f32>, r_5: vec3<f32>, rl_3: vec4<f32>)
     let s_c = (_e50 * 1.001f);
     let reach = (node_2.extent + (sqrt(s_c) * _e25));
     if (d2_7 <= ((node_2.radius * node_2.radius) * s_c)) {
-        local_13 = (d2_7 <= (reach * reach));
+        local_12 = (d2_7 <= (reach * reach));
     } else {
-        local_13 = false;
+        local_12 = false;
     }
-    let _e67 = local_13;
+    let _e67 = local_12;
     return _e67;
 }
 
@@ -748,7 +748,7 @@ fn bsh_reaches_box(node_3: BshNode, lo_3: vec3<f32>, hi_3: vec3<f32>, w_4: f32) 
 fn bsh_subtree(nodes_3: u32, s_1: u32, depth: u32) -> u32 {
     var i_2: u32;
     var level: u32 = 0u;
-    var local_14: bool;
+    var local_13: bool;
 
     let _e3 = bsh_first(nodes_3);
     i_2 = _e3;
@@ -756,11 +756,11 @@ fn bsh_subtree(nodes_3: u32, s_1: u32, depth: u32) -> u32 {
         let _e7 = level;
         if (_e7 < depth) {
             let _e11 = i_2;
-            local_14 = (_e11 != BSH_NONE);
+            local_13 = (_e11 != BSH_NONE);
         } else {
-            local_14 = false;
+            local_13 = false;
         }
-        let _e15 = local_14;
+        let _e15 = local_13;
         if _e15 {
         } else {
             break;
@@ -848,8 +848,8 @@ fn reservoir_offer(picks_1: ptr<function, Picks>, h_1: ptr<function, u32>, light
 
 fn connect_record(l_2: GpuLight, x_9: vec3<f32>, n_8: vec3<f32>, ng_1: vec3<f32>, r2_2: f32, rt2_2: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32, trace: bool) -> Connection {
     var c_6: Connection;
+    var local_14: bool;
     var local_15: bool;
-    var local_16: bool;
 
     c_6.e = vec3(0f);
     let _e16 = light_point(l_2, u1_2, u2_2);
@@ -862,16 +862,16 @@ fn connect_record(l_2: GpuLight, x_9: vec3<f32>, n_8: vec3<f32>, ng_1: vec3<f32>
         if trace {
             let _e33 = c_6.y;
             let _e34 = occluded((x_9 + (ng_1 * eps)), _e33);
-            local_16 = _e34;
+            local_15 = _e34;
         } else {
-            local_16 = false;
+            local_15 = false;
         }
-        let _e36 = local_16;
-        local_15 = _e36;
+        let _e36 = local_15;
+        local_14 = _e36;
     } else {
-        local_15 = true;
+        local_14 = true;
     }
-    let _e38 = local_15;
+    let _e38 = local_14;
     if _e38 {
         let _e39 = c_6;
         return _e39;
@@ -952,9 +952,9 @@ fn box_is_empty(b_6: WorkgroupBox) -> bool {
 fn tile_subtree(s_3: u32, t_2: TileWalk, list: bool, at_1: u32, start_3: u32, to: u32) -> u32 {
     var p_3: u32;
     var b_7: u32;
+    var local_16: bool;
     var local_17: bool;
     var local_18: bool;
-    var local_19: bool;
 
     let _e8 = bsh_subtree(BSH, s_3, BSH_TILE_DEPTH);
     if (_e8 == BSH_NONE) {
@@ -969,16 +969,16 @@ fn tile_subtree(s_3: u32, t_2: TileWalk, list: bool, at_1: u32, start_3: u32, to
         if (_e23 != end_1) {
             if !(!(list)) {
                 let _e31 = p_3;
-                local_18 = (_e31 < to);
+                local_17 = (_e31 < to);
             } else {
-                local_18 = true;
+                local_17 = true;
             }
-            let _e34 = local_18;
-            local_17 = _e34;
+            let _e34 = local_17;
+            local_16 = _e34;
         } else {
-            local_17 = false;
+            local_16 = false;
         }
-        let _e36 = local_17;
+        let _e36 = local_16;
         if _e36 {
         } else {
             break;
@@ -986,11 +986,11 @@ fn tile_subtree(s_3: u32, t_2: TileWalk, list: bool, at_1: u32, start_3: u32, to
         {
             if list {
                 let _e39 = p_3;
-                local_19 = (_e39 >= start_3);
+                local_18 = (_e39 >= start_3);
             } else {
-                local_19 = false;
+                local_18 = false;
             }
-            let _e42 = local_19;
+            let _e42 = local_18;
             if _e42 {
                 let _e44 = p_3;
                 let _e47 = b_7;
@@ -1011,68 +1011,75 @@ fn tile_subtree(s_3: u32, t_2: TileWalk, list: bool, at_1: u32, start_3: u32, to
 }
 
 fn tile_walk_begin(li_3: u32, x_11: vec3<f32>, w_6: f32, has_1: bool) -> TileWalk {
+    var local_19: bool;
     var t_3: TileWalk;
     var s_4: u32;
     var sum: u32 = 0u;
     var s_5: u32 = 0u;
 
-    let _e8 = atomicMax((&tile_scale), select(0u, bitcast<u32>(w_6), has_1));
-    let _e9 = workgroup_box(li_3, x_11, has_1);
-    let _e13 = workgroupUniformLoad((&tile_scale));
-    t_3 = TileWalk(_e9.lo, _e9.hi, bitcast<f32>(_e13), 0u);
-    let _e18 = box_is_empty(_e9);
-    if _e18 {
-        let _e19 = t_3;
-        return _e19;
+    if has_1 {
+        local_19 = (w_6 >= 0f);
+    } else {
+        local_19 = false;
+    }
+    let _e12 = local_19;
+    let _e14 = atomicMax((&tile_scale), select(0u, bitcast<u32>(w_6), _e12));
+    let _e15 = workgroup_box(li_3, x_11, has_1);
+    let _e19 = workgroupUniformLoad((&tile_scale));
+    t_3 = TileWalk(_e15.lo, _e15.hi, bitcast<f32>(_e19), 0u);
+    let _e24 = box_is_empty(_e15);
+    if _e24 {
+        let _e25 = t_3;
+        return _e25;
     }
     s_4 = li_3;
     loop {
-        let _e21 = s_4;
-        if (_e21 < BSH_TILE_SUBTREES) {
+        let _e27 = s_4;
+        if (_e27 < BSH_TILE_SUBTREES) {
         } else {
             break;
         }
         {
-            let _e25 = s_4;
-            let _e27 = s_4;
-            let _e28 = t_3;
-            let _e33 = tile_subtree(_e27, _e28, false, 0u, 0u, 0u);
-            subtree_at[_e25] = _e33;
+            let _e31 = s_4;
+            let _e33 = s_4;
+            let _e34 = t_3;
+            let _e39 = tile_subtree(_e33, _e34, false, 0u, 0u, 0u);
+            subtree_at[_e31] = _e39;
         }
         continuing {
-            let _e34 = s_4;
-            s_4 = (_e34 + TILE_THREADS);
+            let _e40 = s_4;
+            s_4 = (_e40 + TILE_THREADS);
         }
     }
     workgroupBarrier();
     if (li_3 == 0u) {
         loop {
-            let _e43 = s_5;
-            if (_e43 < BSH_TILE_SUBTREES) {
+            let _e49 = s_5;
+            if (_e49 < BSH_TILE_SUBTREES) {
             } else {
                 break;
             }
             {
-                let _e47 = s_5;
-                let c_10 = subtree_at[_e47];
-                let _e51 = s_5;
-                let _e53 = sum;
-                subtree_at[_e51] = _e53;
-                let _e54 = sum;
-                sum = (_e54 + c_10);
+                let _e53 = s_5;
+                let c_10 = subtree_at[_e53];
+                let _e57 = s_5;
+                let _e59 = sum;
+                subtree_at[_e57] = _e59;
+                let _e60 = sum;
+                sum = (_e60 + c_10);
             }
             continuing {
-                let _e57 = s_5;
-                s_5 = (_e57 + 1u);
+                let _e63 = s_5;
+                s_5 = (_e63 + 1u);
             }
         }
-        let _e60 = sum;
-        tile_total = _e60;
+        let _e66 = sum;
+        tile_total = _e66;
     }
-    let _e63 = workgroupUniformLoad((&tile_total));
-    t_3.total = _e63;
-    let _e64 = t_3;
-    return _e64;
+    let _e69 = workgroupUniformLoad((&tile_total));
+    t_3.total = _e69;
+    let _e70 = t_3;
+    return _e70;
 }
 
 fn tile_walk_fill(li_4: u32, t_4: TileWalk, start_4: u32) -> u32 {
@@ -1160,10 +1167,9 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
     var t: Shaded = Shaded(vec3(0f), vec3(0f), vec3(0f));
     var picks: Picks;
     var hr: u32;
-    var local_4: bool;
     var start: u32 = 0u;
     var j: u32;
-    var local_5: bool;
+    var local_4: bool;
     var k: u32 = 0u;
 
     let _e5 = view.width;
@@ -1224,57 +1230,51 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
     h = _e103;
     picks.n = 0u;
     hr = _e102;
-    if has_2 {
-        local_4 = (_e79.w >= 0f);
-    } else {
-        local_4 = false;
-    }
-    let _e124 = local_4;
-    let _e125 = tile_walk_begin(lid, x_15, _e79.w, _e124);
+    let _e118 = tile_walk_begin(lid, x_15, _e79.w, has_2);
     loop {
-        let _e128 = start;
-        if (_e128 < _e125.total) {
+        let _e121 = start;
+        if (_e121 < _e118.total) {
         } else {
             break;
         }
         {
-            let _e131 = start;
-            let _e132 = tile_walk_fill(lid, _e125, _e131);
+            let _e124 = start;
+            let _e125 = tile_walk_fill(lid, _e118, _e124);
             j = 0u;
             loop {
-                let _e135 = j;
-                if (_e135 < _e132) {
+                let _e128 = j;
+                if (_e128 < _e125) {
                 } else {
                     break;
                 }
                 {
-                    let _e138 = j;
-                    let b_10 = tile_list[_e138];
+                    let _e131 = j;
+                    let b_10 = tile_list[_e131];
                     if !(!(has_2)) {
-                        let _e147 = bsh_nodes[b_10];
-                        let _e148 = r;
-                        let _e149 = bsh_reaches(_e147, x_15, _e148, _e79);
-                        local_5 = !(_e149);
+                        let _e140 = bsh_nodes[b_10];
+                        let _e141 = r;
+                        let _e142 = bsh_reaches(_e140, x_15, _e141, _e79);
+                        local_4 = !(_e142);
                     } else {
-                        local_5 = true;
+                        local_4 = true;
                     }
-                    let _e152 = local_5;
-                    if _e152 {
+                    let _e145 = local_4;
+                    if _e145 {
                         continue;
                     }
                     let li_7 = bsh_nodes[b_10].light;
                     reservoir_offer((&picks), (&hr), li_7);
                 }
                 continuing {
-                    let _e158 = j;
-                    j = (_e158 + 1u);
+                    let _e151 = j;
+                    j = (_e151 + 1u);
                 }
             }
             workgroupBarrier();
         }
         continuing {
-            let _e160 = start;
-            start = (_e160 + TILE_LIST);
+            let _e153 = start;
+            start = (_e153 + TILE_LIST);
         }
     }
     if !(has_2) {
@@ -1283,43 +1283,43 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
         }
         return;
     }
-    let _e168 = picks.n;
-    let _e170 = reservoir_weight(_e168, K);
+    let _e161 = picks.n;
+    let _e163 = reservoir_weight(_e161, K);
     loop {
-        let _e173 = k;
-        let _e175 = picks.n;
-        if (_e173 < min(_e175, K)) {
+        let _e166 = k;
+        let _e168 = picks.n;
+        if (_e166 < min(_e168, K)) {
         } else {
             break;
         }
         {
-            let _e179 = h;
-            let _e180 = pcg_hash(_e179);
-            h = _e180;
-            let _e181 = h;
-            let _e182 = xi_from_bits(_e181);
-            let _e183 = h;
-            let _e184 = pcg_hash(_e183);
-            h = _e184;
-            let _e185 = t;
-            let _e187 = k;
-            let _e189 = picks.light[_e187];
-            let _e190 = n;
-            let _e191 = r;
-            let _e192 = m;
-            let _e193 = h;
-            let _e194 = xi_from_bits(_e193);
-            let _e195 = shade_pick(_e189, x_15, _e190, _e191, _e79, _e192, _e170, _e182, _e194, eps_4);
-            let _e196 = add(_e185, _e195);
-            t = _e196;
+            let _e172 = h;
+            let _e173 = pcg_hash(_e172);
+            h = _e173;
+            let _e174 = h;
+            let _e175 = xi_from_bits(_e174);
+            let _e176 = h;
+            let _e177 = pcg_hash(_e176);
+            h = _e177;
+            let _e178 = t;
+            let _e180 = k;
+            let _e182 = picks.light[_e180];
+            let _e183 = n;
+            let _e184 = r;
+            let _e185 = m;
+            let _e186 = h;
+            let _e187 = xi_from_bits(_e186);
+            let _e188 = shade_pick(_e182, x_15, _e183, _e184, _e79, _e185, _e163, _e175, _e187, eps_4);
+            let _e189 = add(_e178, _e188);
+            t = _e189;
         }
         continuing {
-            let _e198 = k;
-            k = (_e198 + 1u);
+            let _e191 = k;
+            k = (_e191 + 1u);
         }
     }
     let count = picks.n;
-    let _e204 = t.e;
-    textureStore(out_tex, texel_1, vec4<f32>(_e204, f32(count)));
+    let _e197 = t.e;
+    textureStore(out_tex, texel_1, vec4<f32>(_e197, f32(count)));
     return;
 }

@@ -257,29 +257,29 @@ fn connection_factor(cos_x: f32, d2_3: f32, rt2_1: f32, w_1: f32) -> f32 {
 }
 
 fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n_1: vec3<f32>, ng: vec3<f32>, r2_1: f32) -> f32 {
+    var local_7: bool;
     var local_8: bool;
-    var local_9: bool;
 
     let v_4 = (x_2 - y);
     let d2_6 = dot(v_4, v_4);
     let _e7 = slc_keep(r2_1, d2_6);
     if !(!(_e7)) {
-        local_8 = !((d2_6 > 0f));
+        local_7 = !((d2_6 > 0f));
     } else {
-        local_8 = true;
+        local_7 = true;
     }
-    let _e16 = local_8;
+    let _e16 = local_7;
     if _e16 {
         return 0f;
     }
     let w_9 = (v_4 / vec3(sqrt(d2_6)));
     let cos_x_1 = -(dot(n_1, w_9));
     if !((cos_x_1 <= 0f)) {
-        local_9 = (dot(ng, w_9) >= 0f);
+        local_8 = (dot(ng, w_9) >= 0f);
     } else {
-        local_9 = true;
+        local_8 = true;
     }
-    let _e32 = local_9;
+    let _e32 = local_8;
     if _e32 {
         return 0f;
     }
@@ -386,23 +386,23 @@ fn range_lobe(lobe_4: vec4<f32>) -> vec4<f32> {
 }
 
 fn cone_cos_of(v: vec3<f32>, d2_4: f32, a_2: f32, d: vec3<f32>) -> f32 {
+    var local_9: bool;
     var local_10: bool;
-    var local_11: bool;
 
     let vd = dot(v, d);
     let h2_ = (d2_4 - (a_2 * a_2));
     if !((h2_ <= 0f)) {
         if (vd >= 0f) {
-            local_11 = ((vd * vd) >= h2_);
+            local_10 = ((vd * vd) >= h2_);
         } else {
-            local_11 = false;
+            local_10 = false;
         }
-        let _e19 = local_11;
-        local_10 = _e19;
+        let _e19 = local_10;
+        local_9 = _e19;
     } else {
-        local_10 = true;
+        local_9 = true;
     }
-    let _e21 = local_10;
+    let _e21 = local_9;
     if _e21 {
         return 1f;
     }
@@ -459,9 +459,9 @@ fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin_1: vec3<f32>, bmax_1: vec3<f32>
 }
 
 fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_3: vec3<f32>, b_2: vec3<f32>, c_4: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
+    var local_11: bool;
     var local_12: bool;
     var local_13: bool;
-    var local_14: bool;
 
     let e1_ = (b_2 - a_3);
     let e2_ = (c_4 - a_3);
@@ -474,32 +474,32 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_3: vec3<f32>, b_2: vec3<f32>, 
     let s_10 = (o_1 - a_3);
     let u_3 = (dot(s_10, p_4) * inv);
     if !((u_3 < 0f)) {
-        local_12 = (u_3 > 1f);
+        local_11 = (u_3 > 1f);
     } else {
-        local_12 = true;
+        local_11 = true;
     }
-    let _e28 = local_12;
+    let _e28 = local_11;
     if _e28 {
         return -1f;
     }
     let q_2 = cross(s_10, e1_);
     let v_6 = (dot(d_3, q_2) * inv);
     if !((v_6 < 0f)) {
-        local_13 = ((u_3 + v_6) > 1f);
+        local_12 = ((u_3 + v_6) > 1f);
     } else {
-        local_13 = true;
+        local_12 = true;
     }
-    let _e42 = local_13;
+    let _e42 = local_12;
     if _e42 {
         return -1f;
     }
     let t_6 = (dot(e2_, q_2) * inv);
     if (t_6 > t_min) {
-        local_14 = (t_6 < t_max_1);
+        local_13 = (t_6 < t_max_1);
     } else {
-        local_14 = false;
+        local_13 = false;
     }
-    let _e51 = local_14;
+    let _e51 = local_13;
     if _e51 {
         return t_6;
     }
@@ -638,8 +638,8 @@ fn bsh_inner_scale(a_5: f32, v_1: vec3<f32>, d2_5: f32, r_4: vec3<f32>, rl_2: ve
 }
 
 fn bsh_reaches(node_3: BshNode, x_4: vec3<f32>, r_5: vec3<f32>, rl_3: vec4<f32>) -> bool {
+    var local_14: bool;
     var local_15: bool;
-    var local_16: bool;
 
     let _e6 = sphere_contains_point(node_3.center, node_3.radius, x_4);
     if _e6 {
@@ -647,11 +647,11 @@ fn bsh_reaches(node_3: BshNode, x_4: vec3<f32>, r_5: vec3<f32>, rl_3: vec4<f32>)
     }
     if !((rl_3.w <= 1f)) {
         let _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001f)), x_4);
-        local_15 = !(_e20);
+        local_14 = !(_e20);
     } else {
-        local_15 = true;
+        local_14 = true;
     }
-    let _e23 = local_15;
+    let _e23 = local_14;
     if _e23 {
         return false;
     }
@@ -672,11 +672,11 @@ fn bsh_reaches(node_3: BshNode, x_4: vec3<f32>, r_5: vec3<f32>, rl_3: vec4<f32>)
     let s_c = (_e50 * 1.001f);
     let reach = (node_3.extent + (sqrt(s_c) * _e25));
     if (d2_7 <= ((node_3.radius * node_3.radius) * s_c)) {
-        local_16 = (d2_7 <= (reach * reach));
+        local_15 = (d2_7 <= (reach * reach));
     } else {
-        local_16 = false;
+        local_15 = false;
     }
-    let _e67 = local_16;
+    let _e67 = local_15;
     return _e67;
 }
 
@@ -688,7 +688,7 @@ fn bsh_reaches_box(node_4: BshNode, lo: vec3<f32>, hi: vec3<f32>, w_3: f32) -> b
 fn bsh_subtree(nodes_3: u32, s_1: u32, depth: u32) -> u32 {
     var i_2: u32;
     var level: u32 = 0u;
-    var local_17: bool;
+    var local_16: bool;
 
     let _e3 = bsh_first(nodes_3);
     i_2 = _e3;
@@ -696,11 +696,11 @@ fn bsh_subtree(nodes_3: u32, s_1: u32, depth: u32) -> u32 {
         let _e7 = level;
         if (_e7 < depth) {
             let _e11 = i_2;
-            local_17 = (_e11 != BSH_NONE);
+            local_16 = (_e11 != BSH_NONE);
         } else {
-            local_17 = false;
+            local_16 = false;
         }
-        let _e15 = local_17;
+        let _e15 = local_16;
         if _e15 {
         } else {
             break;
@@ -771,8 +771,8 @@ fn next_threshold(sum: f32, h_1: ptr<function, u32>) -> f32 {
 
 fn connect_record(l_2: GpuLight, x_5: vec3<f32>, n_2: vec3<f32>, ng_1: vec3<f32>, r2_2: f32, rt2_2: f32, w_res: f32, u1_1: f32, u2_1: f32, eps: f32, trace_1: bool) -> Connection {
     var c_5: Connection;
+    var local_17: bool;
     var local_18: bool;
-    var local_19: bool;
 
     c_5.e = vec3(0f);
     let _e16 = light_point(l_2, u1_1, u2_1);
@@ -785,16 +785,16 @@ fn connect_record(l_2: GpuLight, x_5: vec3<f32>, n_2: vec3<f32>, ng_1: vec3<f32>
         if trace_1 {
             let _e33 = c_5.y;
             let _e34 = occluded((x_5 + (ng_1 * eps)), _e33);
-            local_19 = _e34;
+            local_18 = _e34;
         } else {
-            local_19 = false;
+            local_18 = false;
         }
-        let _e36 = local_19;
-        local_18 = _e36;
+        let _e36 = local_18;
+        local_17 = _e36;
     } else {
-        local_18 = true;
+        local_17 = true;
     }
-    let _e38 = local_18;
+    let _e38 = local_17;
     if _e38 {
         let _e39 = c_5;
         return _e39;
@@ -875,9 +875,9 @@ fn box_is_empty(b_4: WorkgroupBox) -> bool {
 fn tile_subtree(s_3: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: u32) -> u32 {
     var p_3: u32;
     var b_5: u32;
+    var local_19: bool;
     var local_20: bool;
     var local_21: bool;
-    var local_22: bool;
 
     let _e8 = bsh_subtree(BSH, s_3, BSH_TILE_DEPTH);
     if (_e8 == BSH_NONE) {
@@ -892,16 +892,16 @@ fn tile_subtree(s_3: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: 
         if (_e23 != end_1) {
             if !(!(list)) {
                 let _e31 = p_3;
-                local_21 = (_e31 < to);
+                local_20 = (_e31 < to);
             } else {
-                local_21 = true;
+                local_20 = true;
             }
-            let _e34 = local_21;
-            local_20 = _e34;
+            let _e34 = local_20;
+            local_19 = _e34;
         } else {
-            local_20 = false;
+            local_19 = false;
         }
-        let _e36 = local_20;
+        let _e36 = local_19;
         if _e36 {
         } else {
             break;
@@ -909,11 +909,11 @@ fn tile_subtree(s_3: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: 
         {
             if list {
                 let _e39 = p_3;
-                local_22 = (_e39 >= start_2);
+                local_21 = (_e39 >= start_2);
             } else {
-                local_22 = false;
+                local_21 = false;
             }
-            let _e42 = local_22;
+            let _e42 = local_21;
             if _e42 {
                 let _e44 = p_3;
                 let _e47 = b_5;
@@ -934,68 +934,75 @@ fn tile_subtree(s_3: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: 
 }
 
 fn tile_walk_begin(li_3: u32, x_7: vec3<f32>, w_5: f32, has_1: bool) -> TileWalk {
+    var local_22: bool;
     var t_2: TileWalk;
     var s_4: u32;
     var sum_1: u32 = 0u;
     var s_5: u32 = 0u;
 
-    let _e8 = atomicMax((&tile_scale), select(0u, bitcast<u32>(w_5), has_1));
-    let _e9 = workgroup_box(li_3, x_7, has_1);
-    let _e13 = workgroupUniformLoad((&tile_scale));
-    t_2 = TileWalk(_e9.lo, _e9.hi, bitcast<f32>(_e13), 0u);
-    let _e18 = box_is_empty(_e9);
-    if _e18 {
-        let _e19 = t_2;
-        return _e19;
+    if has_1 {
+        local_22 = (w_5 >= 0f);
+    } else {
+        local_22 = false;
+    }
+    let _e12 = local_22;
+    let _e14 = atomicMax((&tile_scale), select(0u, bitcast<u32>(w_5), _e12));
+    let _e15 = workgroup_box(li_3, x_7, has_1);
+    let _e19 = workgroupUniformLoad((&tile_scale));
+    t_2 = TileWalk(_e15.lo, _e15.hi, bitcast<f32>(_e19), 0u);
+    let _e24 = box_is_empty(_e15);
+    if _e24 {
+        let _e25 = t_2;
+        return _e25;
     }
     s_4 = li_3;
     loop {
-        let _e21 = s_4;
-        if (_e21 < BSH_TILE_SUBTREES) {
+        let _e27 = s_4;
+        if (_e27 < BSH_TILE_SUBTREES) {
         } else {
             break;
         }
         {
-            let _e25 = s_4;
-            let _e27 = s_4;
-            let _e28 = t_2;
-            let _e33 = tile_subtree(_e27, _e28, false, 0u, 0u, 0u);
-            subtree_at[_e25] = _e33;
+            let _e31 = s_4;
+            let _e33 = s_4;
+            let _e34 = t_2;
+            let _e39 = tile_subtree(_e33, _e34, false, 0u, 0u, 0u);
+            subtree_at[_e31] = _e39;
         }
         continuing {
-            let _e34 = s_4;
-            s_4 = (_e34 + TILE_THREADS);
+            let _e40 = s_4;
+            s_4 = (_e40 + TILE_THREADS);
         }
     }
     workgroupBarrier();
     if (li_3 == 0u) {
         loop {
-            let _e43 = s_5;
-            if (_e43 < BSH_TILE_SUBTREES) {
+            let _e49 = s_5;
+            if (_e49 < BSH_TILE_SUBTREES) {
             } else {
                 break;
             }
             {
-                let _e47 = s_5;
-                let c_8 = subtree_at[_e47];
-                let _e51 = s_5;
-                let _e53 = sum_1;
-                subtree_at[_e51] = _e53;
-                let _e54 = sum_1;
-                sum_1 = (_e54 + c_8);
+                let _e53 = s_5;
+                let c_8 = subtree_at[_e53];
+                let _e57 = s_5;
+                let _e59 = sum_1;
+                subtree_at[_e57] = _e59;
+                let _e60 = sum_1;
+                sum_1 = (_e60 + c_8);
             }
             continuing {
-                let _e57 = s_5;
-                s_5 = (_e57 + 1u);
+                let _e63 = s_5;
+                s_5 = (_e63 + 1u);
             }
         }
-        let _e60 = sum_1;
-        tile_total = _e60;
+        let _e66 = sum_1;
+        tile_total = _e66;
     }
-    let _e63 = workgroupUniformLoad((&tile_total));
-    t_2.total = _e63;
-    let _e64 = t_2;
-    return _e64;
+    let _e69 = workgroupUniformLoad((&tile_total));
+    t_2.total = _e69;
+    let _e70 = t_2;
+    return _e70;
 }
 
 fn tile_walk_fill(li_4: u32, t_3: TileWalk, start_3: u32) -> u32 {
@@ -1171,19 +1178,18 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
     var count: u32 = 0u;
     var hc: u32;
     var threshold: array<f32, 8>;
-    var local_4: bool;
     var start: u32 = 0u;
     var j: u32;
-    var local_5: bool;
+    var local_4: bool;
     var q: u32;
-    var local_6: bool;
+    var local_5: bool;
     var keys: array<vec2<u32>, 8>;
     var held: array<bool, 8>;
     var k: u32 = 0u;
     var k_1: u32 = 0u;
     var w: vec3<f32>;
     var j_1: u32;
-    var local_7: bool;
+    var local_6: bool;
 
     let _e5 = view.width;
     if (gid.x < _e5) {
@@ -1242,119 +1248,113 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
     let _e103 = pick_stream(_e102);
     h = _e103;
     hc = _e102;
-    if has_2 {
-        local_4 = (_e79.w >= 0f);
-    } else {
-        local_4 = false;
-    }
-    let _e130 = local_4;
-    let _e131 = tile_walk_begin(lid, x_11, _e79.w, _e130);
+    let _e124 = tile_walk_begin(lid, x_11, _e79.w, has_2);
     loop {
-        let _e134 = start;
-        if (_e134 < _e131.total) {
+        let _e127 = start;
+        if (_e127 < _e124.total) {
         } else {
             break;
         }
         {
-            let _e137 = start;
-            let _e138 = tile_walk_fill(lid, _e131, _e137);
+            let _e130 = start;
+            let _e131 = tile_walk_fill(lid, _e124, _e130);
             j = 0u;
             loop {
-                let _e141 = j;
-                if (_e141 < _e138) {
+                let _e134 = j;
+                if (_e134 < _e131) {
                 } else {
                     break;
                 }
                 {
-                    let _e144 = j;
-                    let b_7 = tile_list[_e144];
+                    let _e137 = j;
+                    let b_7 = tile_list[_e137];
                     if !(!(has_2)) {
-                        let _e153 = bsh_nodes[b_7];
-                        let _e154 = r;
-                        let _e155 = bsh_reaches(_e153, x_11, _e154, _e79);
-                        local_5 = !(_e155);
+                        let _e146 = bsh_nodes[b_7];
+                        let _e147 = r;
+                        let _e148 = bsh_reaches(_e146, x_11, _e147, _e79);
+                        local_4 = !(_e148);
                     } else {
-                        local_5 = true;
+                        local_4 = true;
                     }
-                    let _e158 = local_5;
-                    if _e158 {
+                    let _e151 = local_4;
+                    if _e151 {
                         continue;
                     }
                     let li_7 = bsh_nodes[b_7].light;
-                    let _e163 = count;
-                    count = (_e163 + 1u);
-                    let _e166 = h;
-                    let _e167 = pcg_hash(_e166);
-                    h = _e167;
-                    let _e168 = h;
-                    let _e169 = xi_from_bits(_e168);
-                    let _e170 = h;
-                    let _e171 = pcg_hash(_e170);
-                    h = _e171;
-                    let _e172 = h;
-                    let _e173 = xi_from_bits(_e172);
-                    let u_4 = vec2<f32>(_e169, _e173);
-                    let _e175 = n;
-                    let _e176 = r;
-                    let _e177 = m;
-                    let _e182 = shade_pick_traced(li_7, x_11, _e175, _e176, _e79, _e177, 1f, u_4.x, u_4.y, eps_4, false);
-                    let _e183 = output_of(_e182);
-                    let _e185 = evaluations;
-                    evaluations = (_e185 + 1u);
-                    let _e188 = resample_target(_e183);
-                    if (_e188 > 0f) {
-                        let _e191 = total;
-                        total = (_e191 + _e183);
+                    let _e156 = count;
+                    count = (_e156 + 1u);
+                    let _e159 = h;
+                    let _e160 = pcg_hash(_e159);
+                    h = _e160;
+                    let _e161 = h;
+                    let _e162 = xi_from_bits(_e161);
+                    let _e163 = h;
+                    let _e164 = pcg_hash(_e163);
+                    h = _e164;
+                    let _e165 = h;
+                    let _e166 = xi_from_bits(_e165);
+                    let u_4 = vec2<f32>(_e162, _e166);
+                    let _e168 = n;
+                    let _e169 = r;
+                    let _e170 = m;
+                    let _e175 = shade_pick_traced(li_7, x_11, _e168, _e169, _e79, _e170, 1f, u_4.x, u_4.y, eps_4, false);
+                    let _e176 = output_of(_e175);
+                    let _e178 = evaluations;
+                    evaluations = (_e178 + 1u);
+                    let _e181 = resample_target(_e176);
+                    if (_e181 > 0f) {
+                        let _e184 = total;
+                        total = (_e184 + _e176);
                         q = 0u;
                         loop {
-                            let _e195 = q;
-                            if (_e195 < K) {
+                            let _e188 = q;
+                            if (_e188 < K) {
                             } else {
                                 break;
                             }
                             {
-                                let _e198 = q;
-                                let _e200 = slot_target(_e183, _e198, K);
-                                let _e201 = total;
-                                let _e202 = q;
-                                let _e204 = slot_target(_e201, _e202, K);
-                                if (_e200 > 0f) {
-                                    let _e209 = q;
-                                    let _e211 = threshold[_e209];
-                                    local_6 = (_e204 > _e211);
+                                let _e191 = q;
+                                let _e193 = slot_target(_e176, _e191, K);
+                                let _e194 = total;
+                                let _e195 = q;
+                                let _e197 = slot_target(_e194, _e195, K);
+                                if (_e193 > 0f) {
+                                    let _e202 = q;
+                                    let _e204 = threshold[_e202];
+                                    local_5 = (_e197 > _e204);
                                 } else {
-                                    local_6 = false;
+                                    local_5 = false;
                                 }
-                                let _e214 = local_6;
-                                if _e214 {
-                                    let _e215 = q;
-                                    slot_light[_e215] = li_7;
-                                    let _e217 = q;
-                                    slot_u[_e217] = u_4;
-                                    let _e219 = q;
-                                    slot_p[_e219] = _e200;
-                                    let _e221 = q;
-                                    let _e223 = next_threshold(_e204, (&hc));
-                                    threshold[_e221] = _e223;
+                                let _e207 = local_5;
+                                if _e207 {
+                                    let _e208 = q;
+                                    slot_light[_e208] = li_7;
+                                    let _e210 = q;
+                                    slot_u[_e210] = u_4;
+                                    let _e212 = q;
+                                    slot_p[_e212] = _e193;
+                                    let _e214 = q;
+                                    let _e216 = next_threshold(_e197, (&hc));
+                                    threshold[_e214] = _e216;
                                 }
                             }
                             continuing {
-                                let _e225 = q;
-                                q = (_e225 + 1u);
+                                let _e218 = q;
+                                q = (_e218 + 1u);
                             }
                         }
                     }
                 }
                 continuing {
-                    let _e228 = j;
-                    j = (_e228 + 1u);
+                    let _e221 = j;
+                    j = (_e221 + 1u);
                 }
             }
             workgroupBarrier();
         }
         continuing {
-            let _e230 = start;
-            start = (_e230 + TILE_LIST);
+            let _e223 = start;
+            start = (_e223 + TILE_LIST);
         }
     }
     if !(has_2) {
@@ -1364,108 +1364,108 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
         return;
     }
     loop {
-        let _e241 = k;
-        if (_e241 < K) {
+        let _e234 = k;
+        if (_e234 < K) {
         } else {
             break;
         }
         {
+            let _e237 = k;
+            let _e239 = k;
+            let _e241 = slot_light[_e239];
+            keys[_e237] = vec2<u32>(_e241, 0u);
             let _e244 = k;
             let _e246 = k;
-            let _e248 = slot_light[_e246];
-            keys[_e244] = vec2<u32>(_e248, 0u);
-            let _e251 = k;
-            let _e253 = k;
-            let _e255 = slot_p[_e253];
-            held[_e251] = (_e255 > 0f);
+            let _e248 = slot_p[_e246];
+            held[_e244] = (_e248 > 0f);
         }
         continuing {
-            let _e259 = k;
-            k = (_e259 + 1u);
+            let _e252 = k;
+            k = (_e252 + 1u);
         }
     }
-    let _e261 = keys;
-    let _e262 = held;
-    let _e263 = first_holders(_e261, _e262);
+    let _e254 = keys;
+    let _e255 = held;
+    let _e256 = first_holders(_e254, _e255);
     loop {
-        let _e266 = k_1;
-        if (_e266 < K) {
+        let _e259 = k_1;
+        if (_e259 < K) {
         } else {
             break;
         }
         {
             w = vec3(0f);
-            let _e272 = k_1;
-            let _e274 = k_1;
-            let first_1 = (_e263[_e272] == _e274);
-            let _e276 = k_1;
-            j_1 = _e276;
+            let _e265 = k_1;
+            let _e267 = k_1;
+            let first_1 = (_e256[_e265] == _e267);
+            let _e269 = k_1;
+            j_1 = _e269;
             loop {
-                let _e278 = j_1;
-                if (_e278 < K) {
-                    local_7 = first_1;
+                let _e271 = j_1;
+                if (_e271 < K) {
+                    local_6 = first_1;
                 } else {
-                    local_7 = false;
+                    local_6 = false;
                 }
-                let _e284 = local_7;
-                if _e284 {
+                let _e277 = local_6;
+                if _e277 {
                 } else {
                     break;
                 }
                 {
-                    let _e285 = j_1;
-                    let _e287 = k_1;
-                    if (_e263[_e285] == _e287) {
-                        let _e289 = w;
-                        let _e290 = total;
+                    let _e278 = j_1;
+                    let _e280 = k_1;
+                    if (_e256[_e278] == _e280) {
+                        let _e282 = w;
+                        let _e283 = total;
+                        let _e284 = j_1;
+                        let _e286 = slot_target(_e283, _e284, K);
+                        let _e287 = j_1;
+                        let _e289 = slot_p[_e287];
                         let _e291 = j_1;
-                        let _e293 = slot_target(_e290, _e291, K);
-                        let _e294 = j_1;
-                        let _e296 = slot_p[_e294];
-                        let _e298 = j_1;
-                        let _e300 = slot_share(_e298, K);
-                        w = (_e289 + ((_e293 / _e296) * _e300));
+                        let _e293 = slot_share(_e291, K);
+                        w = (_e282 + ((_e286 / _e289) * _e293));
                     }
                 }
                 continuing {
-                    let _e304 = j_1;
-                    j_1 = (_e304 + 1u);
+                    let _e297 = j_1;
+                    j_1 = (_e297 + 1u);
                 }
             }
             if first_1 {
-                let _e306 = t;
+                let _e299 = t;
+                let _e300 = k_1;
+                let _e302 = slot_light[_e300];
+                let _e303 = n;
+                let _e304 = r;
+                let _e305 = m;
                 let _e307 = k_1;
-                let _e309 = slot_light[_e307];
-                let _e310 = n;
-                let _e311 = r;
-                let _e312 = m;
-                let _e314 = k_1;
-                let _e317 = slot_u[_e314].x;
-                let _e318 = k_1;
-                let _e321 = slot_u[_e318].y;
-                let _e322 = shade_pick(_e309, x_11, _e310, _e311, _e79, _e312, 1f, _e317, _e321, eps_4);
-                let _e323 = w;
-                let _e324 = scaled(_e322, _e323);
-                let _e325 = add(_e306, _e324);
-                t = _e325;
+                let _e310 = slot_u[_e307].x;
+                let _e311 = k_1;
+                let _e314 = slot_u[_e311].y;
+                let _e315 = shade_pick(_e302, x_11, _e303, _e304, _e79, _e305, 1f, _e310, _e314, eps_4);
+                let _e316 = w;
+                let _e317 = scaled(_e315, _e316);
+                let _e318 = add(_e299, _e317);
+                t = _e318;
             }
         }
         continuing {
-            let _e327 = k_1;
-            k_1 = (_e327 + 1u);
+            let _e320 = k_1;
+            k_1 = (_e320 + 1u);
         }
     }
-    let _e331 = t.e;
-    let _e332 = count;
-    textureStore(out_tex, texel_1, vec4<f32>(_e331, f32(_e332)));
+    let _e324 = t.e;
+    let _e325 = count;
+    textureStore(out_tex, texel_1, vec4<f32>(_e324, f32(_e325)));
     counter_add(DIRECT_COUNT_PIXELS, 1u);
-    let _e338 = count;
-    counter_add(DIRECT_COUNT_CANDIDATES, _e338);
-    let _e341 = evaluations;
-    counter_add(DIRECT_COUNT_EVALUATIONS, _e341);
-    let _e344 = rays_cast;
-    counter_add(DIRECT_COUNT_RAYS, _e344);
-    let _e347 = nodes_visited;
-    counter_add(DIRECT_COUNT_NODES, _e347);
+    let _e331 = count;
+    counter_add(DIRECT_COUNT_CANDIDATES, _e331);
+    let _e334 = evaluations;
+    counter_add(DIRECT_COUNT_EVALUATIONS, _e334);
+    let _e337 = rays_cast;
+    counter_add(DIRECT_COUNT_RAYS, _e337);
+    let _e340 = nodes_visited;
+    counter_add(DIRECT_COUNT_NODES, _e340);
     return;
 }

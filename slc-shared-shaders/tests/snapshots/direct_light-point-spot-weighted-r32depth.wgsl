@@ -274,29 +274,29 @@ fn connection_factor(cos_x: f32, d2_3: f32, rt2_1: f32, w: f32) -> f32 {
 }
 
 fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n_1: vec3<f32>, ng: vec3<f32>, r2_1: f32) -> f32 {
+    var local_5: bool;
     var local_6: bool;
-    var local_7: bool;
 
     let v_5 = (x_2 - y);
     let d2_7 = dot(v_5, v_5);
     let _e7 = slc_keep(r2_1, d2_7);
     if !(!(_e7)) {
-        local_6 = !((d2_7 > 0f));
+        local_5 = !((d2_7 > 0f));
     } else {
-        local_6 = true;
+        local_5 = true;
     }
-    let _e16 = local_6;
+    let _e16 = local_5;
     if _e16 {
         return 0f;
     }
     let w_9 = (v_5 / vec3(sqrt(d2_7)));
     let cos_x_1 = -(dot(n_1, w_9));
     if !((cos_x_1 <= 0f)) {
-        local_7 = (dot(ng, w_9) >= 0f);
+        local_6 = (dot(ng, w_9) >= 0f);
     } else {
-        local_7 = true;
+        local_6 = true;
     }
-    let _e32 = local_7;
+    let _e32 = local_6;
     if _e32 {
         return 0f;
     }
@@ -428,23 +428,23 @@ fn emitter_importance(center_1: vec3<f32>, radius_1: f32, phi: f32, axis_1: vec3
 }
 
 fn cone_cos_of(v: vec3<f32>, d2_4: f32, a_2: f32, d: vec3<f32>) -> f32 {
+    var local_7: bool;
     var local_8: bool;
-    var local_9: bool;
 
     let vd = dot(v, d);
     let h2_ = (d2_4 - (a_2 * a_2));
     if !((h2_ <= 0f)) {
         if (vd >= 0f) {
-            local_9 = ((vd * vd) >= h2_);
+            local_8 = ((vd * vd) >= h2_);
         } else {
-            local_9 = false;
+            local_8 = false;
         }
-        let _e19 = local_9;
-        local_8 = _e19;
+        let _e19 = local_8;
+        local_7 = _e19;
     } else {
-        local_8 = true;
+        local_7 = true;
     }
-    let _e21 = local_8;
+    let _e21 = local_7;
     if _e21 {
         return 1f;
     }
@@ -494,16 +494,16 @@ fn light_importance(center_4: vec3<f32>, radius_4: f32, phi_1: f32, axis_2: vec3
 }
 
 fn glossy_importance(center_5: vec3<f32>, radius_5: f32, phi_2: f32, axis_3: vec3<f32>, cos_o_3: f32, cos_e_2: f32, p_5: vec3<f32>, n_3: vec3<f32>, r_4: vec3<f32>, lobe_5: vec4<f32>) -> f32 {
-    var local_10: bool;
+    var local_9: bool;
 
     let _e10 = emitter_importance(center_5, radius_5, phi_2, axis_3, cos_o_3, cos_e_2, p_5);
     let _e11 = cone_cos_toward(center_5, radius_5, p_5, n_3);
     if !((_e10 <= 0f)) {
-        local_10 = (_e11 <= 0f);
+        local_9 = (_e11 <= 0f);
     } else {
-        local_10 = true;
+        local_9 = true;
     }
-    let _e20 = local_10;
+    let _e20 = local_9;
     if _e20 {
         return 0f;
     }
@@ -533,21 +533,21 @@ fn cone_weight(center_6: vec3<f32>, radius_6: f32, phi_3: f32, axis_4: vec3<f32>
 }
 
 fn finite3_(v_1: vec3<f32>) -> bool {
+    var local_10: bool;
     var local_11: bool;
-    var local_12: bool;
 
     if (abs(v_1.x) <= F32_MAX) {
-        local_11 = (abs(v_1.y) <= F32_MAX);
+        local_10 = (abs(v_1.y) <= F32_MAX);
+    } else {
+        local_10 = false;
+    }
+    let _e12 = local_10;
+    if _e12 {
+        local_11 = (abs(v_1.z) <= F32_MAX);
     } else {
         local_11 = false;
     }
-    let _e12 = local_11;
-    if _e12 {
-        local_12 = (abs(v_1.z) <= F32_MAX);
-    } else {
-        local_12 = false;
-    }
-    let _e20 = local_12;
+    let _e20 = local_11;
     return _e20;
 }
 
@@ -580,9 +580,9 @@ fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin_1: vec3<f32>, bmax_1: vec3<f32>
 }
 
 fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_3: vec3<f32>, b_2: vec3<f32>, c_2: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
+    var local_12: bool;
     var local_13: bool;
     var local_14: bool;
-    var local_15: bool;
 
     let e1_ = (b_2 - a_3);
     let e2_ = (c_2 - a_3);
@@ -595,32 +595,32 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_3: vec3<f32>, b_2: vec3<f32>, 
     let s_9 = (o_1 - a_3);
     let u_3 = (dot(s_9, p_9) * inv);
     if !((u_3 < 0f)) {
-        local_13 = (u_3 > 1f);
+        local_12 = (u_3 > 1f);
     } else {
-        local_13 = true;
+        local_12 = true;
     }
-    let _e28 = local_13;
+    let _e28 = local_12;
     if _e28 {
         return -1f;
     }
     let q_1 = cross(s_9, e1_);
     let v_10 = (dot(d_3, q_1) * inv);
     if !((v_10 < 0f)) {
-        local_14 = ((u_3 + v_10) > 1f);
+        local_13 = ((u_3 + v_10) > 1f);
     } else {
-        local_14 = true;
+        local_13 = true;
     }
-    let _e42 = local_14;
+    let _e42 = local_13;
     if _e42 {
         return -1f;
     }
     let t_7 = (dot(e2_, q_1) * inv);
     if (t_7 > t_min) {
-        local_15 = (t_7 < t_max_1);
+        local_14 = (t_7 < t_max_1);
     } else {
-        local_15 = false;
+        local_14 = false;
     }
-    let _e51 = local_15;
+    let _e51 = local_14;
     if _e51 {
         return t_7;
     }
@@ -755,8 +755,8 @@ fn bsh_inner_scale(a_5: f32, v_2: vec3<f32>, d2_6: f32, r_6: vec3<f32>, rl_2: ve
 }
 
 fn bsh_reaches(node_3: BshNode, x_5: vec3<f32>, r_7: vec3<f32>, rl_3: vec4<f32>) -> bool {
+    var local_15: bool;
     var local_16: bool;
-    var local_17: bool;
 
     let _e6 = sphere_contains_point(node_3.center, node_3.radius, x_5);
     if _e6 {
@@ -764,11 +764,11 @@ fn bsh_reaches(node_3: BshNode, x_5: vec3<f32>, r_7: vec3<f32>, rl_3: vec4<f32>)
     }
     if !((rl_3.w <= 1f)) {
         let _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001f)), x_5);
-        local_16 = !(_e20);
+        local_15 = !(_e20);
     } else {
-        local_16 = true;
+        local_15 = true;
     }
-    let _e23 = local_16;
+    let _e23 = local_15;
     if _e23 {
         return false;
     }
@@ -789,11 +789,11 @@ fn bsh_reaches(node_3: BshNode, x_5: vec3<f32>, r_7: vec3<f32>, rl_3: vec4<f32>)
     let s_c = (_e50 * 1.001f);
     let reach = (node_3.extent + (sqrt(s_c) * _e25));
     if (d2_9 <= ((node_3.radius * node_3.radius) * s_c)) {
-        local_17 = (d2_9 <= (reach * reach));
+        local_16 = (d2_9 <= (reach * reach));
     } else {
-        local_17 = false;
+        local_16 = false;
     }
-    let _e67 = local_17;
+    let _e67 = local_16;
     return _e67;
 }
 
@@ -805,7 +805,7 @@ fn bsh_reaches_box(node_4: BshNode, lo: vec3<f32>, hi: vec3<f32>, w_3: f32) -> b
 fn bsh_subtree(nodes_3: u32, s_1: u32, depth: u32) -> u32 {
     var i_2: u32;
     var level: u32 = 0u;
-    var local_18: bool;
+    var local_17: bool;
 
     let _e3 = bsh_first(nodes_3);
     i_2 = _e3;
@@ -813,11 +813,11 @@ fn bsh_subtree(nodes_3: u32, s_1: u32, depth: u32) -> u32 {
         let _e7 = level;
         if (_e7 < depth) {
             let _e11 = i_2;
-            local_18 = (_e11 != BSH_NONE);
+            local_17 = (_e11 != BSH_NONE);
         } else {
-            local_18 = false;
+            local_17 = false;
         }
-        let _e15 = local_18;
+        let _e15 = local_17;
         if _e15 {
         } else {
             break;
@@ -888,8 +888,8 @@ fn next_threshold(sum: f32, h_1: ptr<function, u32>) -> f32 {
 
 fn connect_record(l_2: GpuLight, x_6: vec3<f32>, n_5: vec3<f32>, ng_1: vec3<f32>, r2_3: f32, rt2_4: f32, w_res: f32, u1_1: f32, u2_1: f32, eps: f32, trace_1: bool) -> Connection {
     var c_3: Connection;
+    var local_18: bool;
     var local_19: bool;
-    var local_20: bool;
 
     c_3.e = vec3(0f);
     let _e16 = light_point(l_2, u1_1, u2_1);
@@ -902,16 +902,16 @@ fn connect_record(l_2: GpuLight, x_6: vec3<f32>, n_5: vec3<f32>, ng_1: vec3<f32>
         if trace_1 {
             let _e33 = c_3.y;
             let _e34 = occluded((x_6 + (ng_1 * eps)), _e33);
-            local_20 = _e34;
+            local_19 = _e34;
         } else {
-            local_20 = false;
+            local_19 = false;
         }
-        let _e36 = local_20;
-        local_19 = _e36;
+        let _e36 = local_19;
+        local_18 = _e36;
     } else {
-        local_19 = true;
+        local_18 = true;
     }
-    let _e38 = local_19;
+    let _e38 = local_18;
     if _e38 {
         let _e39 = c_3;
         return _e39;
@@ -1005,15 +1005,15 @@ fn weighted_offer(picks_2: ptr<function, WeightedPicks>, li_3: u32, w_5: f32) {
 }
 
 fn unproject_pixel(c0_: vec4<f32>, c1_: vec4<f32>, c2_: vec4<f32>, c3_: vec4<f32>, px: f32, py: f32, width: f32, height: f32, depth_1: f32) -> vec4<f32> {
+    var local_20: bool;
     var local_21: bool;
-    var local_22: bool;
 
     if (depth_1 > 0f) {
-        local_21 = (depth_1 < 1f);
+        local_20 = (depth_1 < 1f);
     } else {
-        local_21 = false;
+        local_20 = false;
     }
-    let _e16 = local_21;
+    let _e16 = local_20;
     if !(_e16) {
         return vec4<f32>(0f, 0f, 0f, 0f);
     }
@@ -1023,11 +1023,11 @@ fn unproject_pixel(c0_: vec4<f32>, c1_: vec4<f32>, c2_: vec4<f32>, c3_: vec4<f32
     let q_2 = vec3<f32>((p_10.x / p_10.w), (p_10.y / p_10.w), (p_10.z / p_10.w));
     if (abs(p_10.w) > 0f) {
         let _e59 = finite3_(q_2);
-        local_22 = _e59;
+        local_21 = _e59;
     } else {
-        local_22 = false;
+        local_21 = false;
     }
-    let _e61 = local_22;
+    let _e61 = local_21;
     if _e61 {
         return vec4<f32>(q_2.x, q_2.y, q_2.z, 1f);
     }
@@ -1099,9 +1099,9 @@ fn box_is_empty(b_4: WorkgroupBox) -> bool {
 fn tile_subtree(s_4: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: u32) -> u32 {
     var p_8: u32;
     var b_5: u32;
+    var local_22: bool;
     var local_23: bool;
     var local_24: bool;
-    var local_25: bool;
 
     let _e8 = bsh_subtree(BSH, s_4, BSH_TILE_DEPTH);
     if (_e8 == BSH_NONE) {
@@ -1116,16 +1116,16 @@ fn tile_subtree(s_4: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: 
         if (_e23 != end_1) {
             if !(!(list)) {
                 let _e31 = p_8;
-                local_24 = (_e31 < to);
+                local_23 = (_e31 < to);
             } else {
-                local_24 = true;
+                local_23 = true;
             }
-            let _e34 = local_24;
-            local_23 = _e34;
+            let _e34 = local_23;
+            local_22 = _e34;
         } else {
-            local_23 = false;
+            local_22 = false;
         }
-        let _e36 = local_23;
+        let _e36 = local_22;
         if _e36 {
         } else {
             break;
@@ -1133,11 +1133,11 @@ fn tile_subtree(s_4: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: 
         {
             if list {
                 let _e39 = p_8;
-                local_25 = (_e39 >= start_2);
+                local_24 = (_e39 >= start_2);
             } else {
-                local_25 = false;
+                local_24 = false;
             }
-            let _e42 = local_25;
+            let _e42 = local_24;
             if _e42 {
                 let _e44 = p_8;
                 let _e47 = b_5;
@@ -1158,68 +1158,75 @@ fn tile_subtree(s_4: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: 
 }
 
 fn tile_walk_begin(li_6: u32, x_10: vec3<f32>, w_6: f32, has_1: bool) -> TileWalk {
+    var local_25: bool;
     var t_2: TileWalk;
     var s_5: u32;
     var sum_1: u32 = 0u;
     var s_6: u32 = 0u;
 
-    let _e8 = atomicMax((&tile_scale), select(0u, bitcast<u32>(w_6), has_1));
-    let _e9 = workgroup_box(li_6, x_10, has_1);
-    let _e13 = workgroupUniformLoad((&tile_scale));
-    t_2 = TileWalk(_e9.lo, _e9.hi, bitcast<f32>(_e13), 0u);
-    let _e18 = box_is_empty(_e9);
-    if _e18 {
-        let _e19 = t_2;
-        return _e19;
+    if has_1 {
+        local_25 = (w_6 >= 0f);
+    } else {
+        local_25 = false;
+    }
+    let _e12 = local_25;
+    let _e14 = atomicMax((&tile_scale), select(0u, bitcast<u32>(w_6), _e12));
+    let _e15 = workgroup_box(li_6, x_10, has_1);
+    let _e19 = workgroupUniformLoad((&tile_scale));
+    t_2 = TileWalk(_e15.lo, _e15.hi, bitcast<f32>(_e19), 0u);
+    let _e24 = box_is_empty(_e15);
+    if _e24 {
+        let _e25 = t_2;
+        return _e25;
     }
     s_5 = li_6;
     loop {
-        let _e21 = s_5;
-        if (_e21 < BSH_TILE_SUBTREES) {
+        let _e27 = s_5;
+        if (_e27 < BSH_TILE_SUBTREES) {
         } else {
             break;
         }
         {
-            let _e25 = s_5;
-            let _e27 = s_5;
-            let _e28 = t_2;
-            let _e33 = tile_subtree(_e27, _e28, false, 0u, 0u, 0u);
-            subtree_at[_e25] = _e33;
+            let _e31 = s_5;
+            let _e33 = s_5;
+            let _e34 = t_2;
+            let _e39 = tile_subtree(_e33, _e34, false, 0u, 0u, 0u);
+            subtree_at[_e31] = _e39;
         }
         continuing {
-            let _e34 = s_5;
-            s_5 = (_e34 + TILE_THREADS);
+            let _e40 = s_5;
+            s_5 = (_e40 + TILE_THREADS);
         }
     }
     workgroupBarrier();
     if (li_6 == 0u) {
         loop {
-            let _e43 = s_6;
-            if (_e43 < BSH_TILE_SUBTREES) {
+            let _e49 = s_6;
+            if (_e49 < BSH_TILE_SUBTREES) {
             } else {
                 break;
             }
             {
-                let _e47 = s_6;
-                let c_8 = subtree_at[_e47];
-                let _e51 = s_6;
-                let _e53 = sum_1;
-                subtree_at[_e51] = _e53;
-                let _e54 = sum_1;
-                sum_1 = (_e54 + c_8);
+                let _e53 = s_6;
+                let c_8 = subtree_at[_e53];
+                let _e57 = s_6;
+                let _e59 = sum_1;
+                subtree_at[_e57] = _e59;
+                let _e60 = sum_1;
+                sum_1 = (_e60 + c_8);
             }
             continuing {
-                let _e57 = s_6;
-                s_6 = (_e57 + 1u);
+                let _e63 = s_6;
+                s_6 = (_e63 + 1u);
             }
         }
-        let _e60 = sum_1;
-        tile_total = _e60;
+        let _e66 = sum_1;
+        tile_total = _e66;
     }
-    let _e63 = workgroupUniformLoad((&tile_total));
-    t_2.total = _e63;
-    let _e64 = t_2;
-    return _e64;
+    let _e69 = workgroupUniformLoad((&tile_total));
+    t_2.total = _e69;
+    let _e70 = t_2;
+    return _e70;
 }
 
 fn tile_walk_fill(li_7: u32, t_3: TileWalk, start_3: u32) -> u32 {
@@ -1371,10 +1378,9 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
     var h: u32;
     var t: Shaded = Shaded(vec3(0f), vec3(0f), vec3(0f));
     var picks: WeightedPicks;
-    var local_4: bool;
     var start: u32 = 0u;
     var j: u32;
-    var local_5: bool;
+    var local_4: bool;
     var keys: array<vec2<u32>, 8>;
     var held: array<bool, 8>;
     var k: u32 = 0u;
@@ -1440,61 +1446,55 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
     h = _e103;
     let _e113 = weighted_picks(_e102);
     picks = _e113;
-    if has_2 {
-        local_4 = (_e79.w >= 0f);
-    } else {
-        local_4 = false;
-    }
-    let _e122 = local_4;
-    let _e123 = tile_walk_begin(lid, x_15, _e79.w, _e122);
+    let _e116 = tile_walk_begin(lid, x_15, _e79.w, has_2);
     loop {
-        let _e126 = start;
-        if (_e126 < _e123.total) {
+        let _e119 = start;
+        if (_e119 < _e116.total) {
         } else {
             break;
         }
         {
-            let _e129 = start;
-            let _e130 = tile_walk_fill(lid, _e123, _e129);
+            let _e122 = start;
+            let _e123 = tile_walk_fill(lid, _e116, _e122);
             j = 0u;
             loop {
-                let _e133 = j;
-                if (_e133 < _e130) {
+                let _e126 = j;
+                if (_e126 < _e123) {
                 } else {
                     break;
                 }
                 {
-                    let _e136 = j;
-                    let b_7 = tile_list[_e136];
+                    let _e129 = j;
+                    let b_7 = tile_list[_e129];
                     if !(!(has_2)) {
-                        let _e145 = bsh_nodes[b_7];
-                        let _e146 = r;
-                        let _e147 = bsh_reaches(_e145, x_15, _e146, _e79);
-                        local_5 = !(_e147);
+                        let _e138 = bsh_nodes[b_7];
+                        let _e139 = r;
+                        let _e140 = bsh_reaches(_e138, x_15, _e139, _e79);
+                        local_4 = !(_e140);
                     } else {
-                        local_5 = true;
+                        local_4 = true;
                     }
-                    let _e150 = local_5;
-                    if _e150 {
+                    let _e143 = local_4;
+                    if _e143 {
                         continue;
                     }
                     let li_10 = bsh_nodes[b_7].light;
-                    let _e155 = n;
-                    let _e156 = r;
-                    let _e157 = lobe;
-                    let _e158 = light_weight(li_10, x_15, _e155, _e156, _e157, _e79);
-                    weighted_offer((&picks), li_10, _e158);
+                    let _e148 = n;
+                    let _e149 = r;
+                    let _e150 = lobe;
+                    let _e151 = light_weight(li_10, x_15, _e148, _e149, _e150, _e79);
+                    weighted_offer((&picks), li_10, _e151);
                 }
                 continuing {
-                    let _e160 = j;
-                    j = (_e160 + 1u);
+                    let _e153 = j;
+                    j = (_e153 + 1u);
                 }
             }
             workgroupBarrier();
         }
         continuing {
-            let _e162 = start;
-            start = (_e162 + TILE_LIST);
+            let _e155 = start;
+            start = (_e155 + TILE_LIST);
         }
     }
     if !(has_2) {
@@ -1503,98 +1503,98 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
         }
         return;
     }
-    let _e170 = picks.w_sum;
-    if (_e170 > 0f) {
+    let _e163 = picks.w_sum;
+    if (_e163 > 0f) {
         loop {
-            let _e177 = k;
-            if (_e177 < K) {
+            let _e170 = k;
+            if (_e170 < K) {
             } else {
                 break;
             }
             {
-                let _e181 = k;
-                let _e186 = k;
-                let _e188 = picks.light[_e186];
-                let _e191 = lights[_e188].kind;
-                let own = select(0u, (_e181 + 1u), (_e191 == LIGHT_TRIANGLE));
+                let _e174 = k;
+                let _e179 = k;
+                let _e181 = picks.light[_e179];
+                let _e184 = lights[_e181].kind;
+                let own = select(0u, (_e174 + 1u), (_e184 == LIGHT_TRIANGLE));
+                let _e188 = k;
+                let _e191 = k;
+                let _e193 = picks.light[_e191];
+                keys[_e188] = vec2<u32>(_e193, own);
                 let _e195 = k;
-                let _e198 = k;
-                let _e200 = picks.light[_e198];
-                keys[_e195] = vec2<u32>(_e200, own);
-                let _e202 = k;
-                held[_e202] = true;
+                held[_e195] = true;
             }
             continuing {
-                let _e206 = k;
-                k = (_e206 + 1u);
+                let _e199 = k;
+                k = (_e199 + 1u);
             }
         }
-        let _e208 = keys;
-        let _e209 = held;
-        let _e210 = first_holders(_e208, _e209);
+        let _e201 = keys;
+        let _e202 = held;
+        let _e203 = first_holders(_e201, _e202);
         loop {
-            let _e213 = k_1;
-            if (_e213 < K) {
+            let _e206 = k_1;
+            if (_e206 < K) {
             } else {
                 break;
             }
             {
-                let _e216 = h;
-                let _e217 = pcg_hash(_e216);
-                h = _e217;
-                let _e218 = h;
-                let _e219 = xi_from_bits(_e218);
-                let _e220 = h;
-                let _e221 = pcg_hash(_e220);
-                h = _e221;
-                let _e222 = h;
-                let _e223 = xi_from_bits(_e222);
-                let _e225 = k_1;
-                let li_11 = picks.light[_e225];
+                let _e209 = h;
+                let _e210 = pcg_hash(_e209);
+                h = _e210;
+                let _e211 = h;
+                let _e212 = xi_from_bits(_e211);
+                let _e213 = h;
+                let _e214 = pcg_hash(_e213);
+                h = _e214;
+                let _e215 = h;
+                let _e216 = xi_from_bits(_e215);
+                let _e218 = k_1;
+                let li_11 = picks.light[_e218];
                 copies = 0u;
-                let _e230 = k_1;
-                j_1 = _e230;
+                let _e223 = k_1;
+                j_1 = _e223;
                 loop {
-                    let _e232 = j_1;
-                    if (_e232 < K) {
+                    let _e225 = j_1;
+                    if (_e225 < K) {
                     } else {
                         break;
                     }
                     {
-                        let _e235 = copies;
-                        let _e238 = j_1;
-                        let _e240 = k_1;
-                        copies = (_e235 + select(0u, 1u, (_e210[_e238] == _e240)));
+                        let _e228 = copies;
+                        let _e231 = j_1;
+                        let _e233 = k_1;
+                        copies = (_e228 + select(0u, 1u, (_e203[_e231] == _e233)));
                     }
                     continuing {
-                        let _e245 = j_1;
-                        j_1 = (_e245 + 1u);
+                        let _e238 = j_1;
+                        j_1 = (_e238 + 1u);
                     }
                 }
-                let _e247 = copies;
-                if (_e247 > 0u) {
-                    let _e250 = t;
-                    let _e251 = n;
-                    let _e252 = r;
-                    let _e253 = m;
-                    let _e255 = picks.w_sum;
-                    let _e257 = k_1;
-                    let _e259 = picks.w[_e257];
-                    let _e261 = weighted_pick_weight(_e255, _e259, K);
-                    let _e262 = copies;
-                    let _e265 = shade_pick(li_11, x_15, _e251, _e252, _e79, _e253, (_e261 * f32(_e262)), _e219, _e223, eps_4);
-                    let _e266 = add(_e250, _e265);
-                    t = _e266;
+                let _e240 = copies;
+                if (_e240 > 0u) {
+                    let _e243 = t;
+                    let _e244 = n;
+                    let _e245 = r;
+                    let _e246 = m;
+                    let _e248 = picks.w_sum;
+                    let _e250 = k_1;
+                    let _e252 = picks.w[_e250];
+                    let _e254 = weighted_pick_weight(_e248, _e252, K);
+                    let _e255 = copies;
+                    let _e258 = shade_pick(li_11, x_15, _e244, _e245, _e79, _e246, (_e254 * f32(_e255)), _e212, _e216, eps_4);
+                    let _e259 = add(_e243, _e258);
+                    t = _e259;
                 }
             }
             continuing {
-                let _e268 = k_1;
-                k_1 = (_e268 + 1u);
+                let _e261 = k_1;
+                k_1 = (_e261 + 1u);
             }
         }
     }
     let count = picks.n;
-    let _e274 = t.e;
-    textureStore(out_tex, texel_1, vec4<f32>(_e274, f32(count)));
+    let _e267 = t.e;
+    textureStore(out_tex, texel_1, vec4<f32>(_e267, f32(count)));
     return;
 }

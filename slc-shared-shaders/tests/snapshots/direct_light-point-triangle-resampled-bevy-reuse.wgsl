@@ -328,29 +328,29 @@ fn connection_factor(cos_x: f32, d2_3: f32, rt2_1: f32, w_1: f32) -> f32 {
 }
 
 fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n_1: vec3<f32>, ng: vec3<f32>, r2_1: f32) -> f32 {
+    var local_8: bool;
     var local_9: bool;
-    var local_10: bool;
 
     let v_7 = (x_2 - y);
     let d2_6 = dot(v_7, v_7);
     let _e7 = slc_keep(r2_1, d2_6);
     if !(!(_e7)) {
-        local_9 = !((d2_6 > 0f));
+        local_8 = !((d2_6 > 0f));
     } else {
-        local_9 = true;
+        local_8 = true;
     }
-    let _e16 = local_9;
+    let _e16 = local_8;
     if _e16 {
         return 0f;
     }
     let w_11 = (v_7 / vec3(sqrt(d2_6)));
     let cos_x_1 = -(dot(n_1, w_11));
     if !((cos_x_1 <= 0f)) {
-        local_10 = (dot(ng, w_11) >= 0f);
+        local_9 = (dot(ng, w_11) >= 0f);
     } else {
-        local_10 = true;
+        local_9 = true;
     }
-    let _e32 = local_10;
+    let _e32 = local_9;
     if _e32 {
         return 0f;
     }
@@ -474,14 +474,14 @@ fn smith_root(cos_: f32, alpha_1: f32) -> f32 {
 }
 
 fn smith_visibility(n_l: f32, n_v: f32, alpha_2: f32) -> f32 {
-    var local_11: bool;
+    var local_10: bool;
 
     if !((n_l <= 0f)) {
-        local_11 = (n_v <= 0f);
+        local_10 = (n_v <= 0f);
     } else {
-        local_11 = true;
+        local_10 = true;
     }
-    let _e11 = local_11;
+    let _e11 = local_10;
     if _e11 {
         return 0f;
     }
@@ -503,21 +503,21 @@ fn specular_fresnel(base: vec3<f32>, metallic: f32, f0_d: vec3<f32>, f90_d: f32,
 }
 
 fn has_specular(metallic_1: f32, f0_d_1: vec3<f32>, f90_d_1: f32) -> bool {
+    var local_11: bool;
     var local_12: bool;
-    var local_13: bool;
 
     if !((metallic_1 > 0f)) {
-        local_12 = (f90_d_1 > 0f);
+        local_11 = (f90_d_1 > 0f);
+    } else {
+        local_11 = true;
+    }
+    let _e11 = local_11;
+    if !(_e11) {
+        local_12 = (max(max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0f);
     } else {
         local_12 = true;
     }
-    let _e11 = local_12;
-    if !(_e11) {
-        local_13 = (max(max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0f);
-    } else {
-        local_13 = true;
-    }
-    let _e23 = local_13;
+    let _e23 = local_12;
     return _e23;
 }
 
@@ -526,17 +526,17 @@ fn channel_mean(c_5: vec3<f32>) -> f32 {
 }
 
 fn receiver_lobe(base_1: vec3<f32>, metallic_2: f32, f0_d_2: vec3<f32>, f90_d_2: f32, alpha_3: f32, n_v_1: f32) -> vec4<f32> {
-    var local_14: bool;
+    var local_13: bool;
 
     let _e10 = fresnel_schlick(f0_d_2, f90_d_2, n_v_1);
     let _e16 = channel_mean((((vec3<f32>(1f, 1f, 1f) - _e10) * base_1) * (1f - metallic_2)));
     if !((n_v_1 <= 0f)) {
         let _e22 = has_specular(metallic_2, f0_d_2, f90_d_2);
-        local_14 = !(_e22);
+        local_13 = !(_e22);
     } else {
-        local_14 = true;
+        local_13 = true;
     }
-    let _e25 = local_14;
+    let _e25 = local_13;
     if _e25 {
         return vec4<f32>(_e16, 0f, alpha_3, n_v_1);
     }
@@ -620,23 +620,23 @@ fn bevy_brdf(base_2: vec3<f32>, metallic_3: f32, r_5: f32, reflectance_1: f32, n
 }
 
 fn cone_cos_of(v_2: vec3<f32>, d2_4: f32, a_3: f32, d: vec3<f32>) -> f32 {
+    var local_14: bool;
     var local_15: bool;
-    var local_16: bool;
 
     let vd = dot(v_2, d);
     let h2_1 = (d2_4 - (a_3 * a_3));
     if !((h2_1 <= 0f)) {
         if (vd >= 0f) {
-            local_16 = ((vd * vd) >= h2_1);
+            local_15 = ((vd * vd) >= h2_1);
         } else {
-            local_16 = false;
+            local_15 = false;
         }
-        let _e19 = local_16;
-        local_15 = _e19;
+        let _e19 = local_15;
+        local_14 = _e19;
     } else {
-        local_15 = true;
+        local_14 = true;
     }
-    let _e21 = local_15;
+    let _e21 = local_14;
     if _e21 {
         return 1f;
     }
@@ -693,16 +693,16 @@ fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin_1: vec3<f32>, bmax_1: vec3<f32>
 }
 
 fn triangle_normal(a_4: vec3<f32>, b_3: vec3<f32>, c_6: vec3<f32>) -> vec3<f32> {
-    var local_17: bool;
+    var local_16: bool;
 
     let n_14 = cross((b_3 - a_4), (c_6 - a_4));
     let l2_ = dot(n_14, n_14);
     if !(!((l2_ > 0f))) {
-        local_17 = !((l2_ < 300000000000000000000000000000000000000f));
+        local_16 = !((l2_ < 300000000000000000000000000000000000000f));
     } else {
-        local_17 = true;
+        local_16 = true;
     }
-    let _e17 = local_17;
+    let _e17 = local_16;
     if _e17 {
         return vec3<f32>(0f, 0f, 0f);
     }
@@ -710,9 +710,9 @@ fn triangle_normal(a_4: vec3<f32>, b_3: vec3<f32>, c_6: vec3<f32>) -> vec3<f32> 
 }
 
 fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_4: vec3<f32>, c_7: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
+    var local_17: bool;
     var local_18: bool;
     var local_19: bool;
-    var local_20: bool;
 
     let e1_ = (b_4 - a_5);
     let e2_ = (c_7 - a_5);
@@ -725,32 +725,32 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_4: vec3<f32>, 
     let s_12 = (o_1 - a_5);
     let u_4 = (dot(s_12, p_7) * inv);
     if !((u_4 < 0f)) {
-        local_18 = (u_4 > 1f);
+        local_17 = (u_4 > 1f);
     } else {
-        local_18 = true;
+        local_17 = true;
     }
-    let _e28 = local_18;
+    let _e28 = local_17;
     if _e28 {
         return -1f;
     }
     let q_6 = cross(s_12, e1_);
     let v_9 = (dot(d_3, q_6) * inv);
     if !((v_9 < 0f)) {
-        local_19 = ((u_4 + v_9) > 1f);
+        local_18 = ((u_4 + v_9) > 1f);
     } else {
-        local_19 = true;
+        local_18 = true;
     }
-    let _e42 = local_19;
+    let _e42 = local_18;
     if _e42 {
         return -1f;
     }
     let t_6 = (dot(e2_, q_6) * inv);
     if (t_6 > t_min) {
-        local_20 = (t_6 < t_max_1);
+        local_19 = (t_6 < t_max_1);
     } else {
-        local_20 = false;
+        local_19 = false;
     }
-    let _e51 = local_20;
+    let _e51 = local_19;
     if _e51 {
         return t_6;
     }
@@ -768,14 +768,14 @@ fn reproject(c0_: vec4<f32>, c1_: vec4<f32>, c2_: vec4<f32>, c3_: vec4<f32>, p_2
 }
 
 fn history_matches(n_5: vec3<f32>, nh: vec3<f32>, p_3: vec3<f32>, oh: f32, d_4: f32) -> bool {
-    var local_21: bool;
+    var local_20: bool;
 
     if (abs((dot(nh, p_3) - oh)) <= (TEMPORAL_DEPTH_TOLERANCE * d_4)) {
-        local_21 = (dot(n_5, nh) >= TEMPORAL_NORMAL_COS);
+        local_20 = (dot(n_5, nh) >= TEMPORAL_NORMAL_COS);
     } else {
-        local_21 = false;
+        local_20 = false;
     }
-    let _e17 = local_21;
+    let _e17 = local_20;
     return _e17;
 }
 
@@ -912,8 +912,8 @@ fn bsh_inner_scale(a_7: f32, v_3: vec3<f32>, d2_5: f32, r_7: vec3<f32>, rl_2: ve
 }
 
 fn bsh_reaches(node_3: BshNode, x_4: vec3<f32>, r_8: vec3<f32>, rl_3: vec4<f32>) -> bool {
+    var local_21: bool;
     var local_22: bool;
-    var local_23: bool;
 
     let _e6 = sphere_contains_point(node_3.center, node_3.radius, x_4);
     if _e6 {
@@ -921,11 +921,11 @@ fn bsh_reaches(node_3: BshNode, x_4: vec3<f32>, r_8: vec3<f32>, rl_3: vec4<f32>)
     }
     if !((rl_3.w <= 1f)) {
         let _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001f)), x_4);
-        local_22 = !(_e20);
+        local_21 = !(_e20);
     } else {
-        local_22 = true;
+        local_21 = true;
     }
-    let _e23 = local_22;
+    let _e23 = local_21;
     if _e23 {
         return false;
     }
@@ -946,11 +946,11 @@ fn bsh_reaches(node_3: BshNode, x_4: vec3<f32>, r_8: vec3<f32>, rl_3: vec4<f32>)
     let s_c = (_e50 * 1.001f);
     let reach = (node_3.extent + (sqrt(s_c) * _e25));
     if (d2_7 <= ((node_3.radius * node_3.radius) * s_c)) {
-        local_23 = (d2_7 <= (reach * reach));
+        local_22 = (d2_7 <= (reach * reach));
     } else {
-        local_23 = false;
+        local_22 = false;
     }
-    let _e67 = local_23;
+    let _e67 = local_22;
     return _e67;
 }
 
@@ -962,7 +962,7 @@ fn bsh_reaches_box(node_4: BshNode, lo: vec3<f32>, hi: vec3<f32>, w_6: f32) -> b
 fn bsh_subtree(nodes_3: u32, s_1: u32, depth: u32) -> u32 {
     var i_2: u32;
     var level: u32 = 0u;
-    var local_24: bool;
+    var local_23: bool;
 
     let _e3 = bsh_first(nodes_3);
     i_2 = _e3;
@@ -970,11 +970,11 @@ fn bsh_subtree(nodes_3: u32, s_1: u32, depth: u32) -> u32 {
         let _e7 = level;
         if (_e7 < depth) {
             let _e11 = i_2;
-            local_24 = (_e11 != BSH_NONE);
+            local_23 = (_e11 != BSH_NONE);
         } else {
-            local_24 = false;
+            local_23 = false;
         }
-        let _e15 = local_24;
+        let _e15 = local_23;
         if _e15 {
         } else {
             break;
@@ -1045,8 +1045,8 @@ fn next_threshold(sum: f32, h_1: ptr<function, u32>) -> f32 {
 
 fn connect_record(l_3: GpuLight, x_5: vec3<f32>, n_6: vec3<f32>, ng_1: vec3<f32>, r2_2: f32, rt2_2: f32, w_res: f32, u1_3: f32, u2_3: f32, eps: f32, trace_1: bool) -> Connection {
     var c_8: Connection;
+    var local_24: bool;
     var local_25: bool;
-    var local_26: bool;
 
     c_8.e = vec3(0f);
     let _e16 = light_point(l_3, u1_3, u2_3);
@@ -1059,16 +1059,16 @@ fn connect_record(l_3: GpuLight, x_5: vec3<f32>, n_6: vec3<f32>, ng_1: vec3<f32>
         if trace_1 {
             let _e33 = c_8.y;
             let _e34 = occluded((x_5 + (ng_1 * eps)), _e33);
-            local_26 = _e34;
+            local_25 = _e34;
         } else {
-            local_26 = false;
+            local_25 = false;
         }
-        let _e36 = local_26;
-        local_25 = _e36;
+        let _e36 = local_25;
+        local_24 = _e36;
     } else {
-        local_25 = true;
+        local_24 = true;
     }
-    let _e38 = local_25;
+    let _e38 = local_24;
     if _e38 {
         let _e39 = c_8;
         return _e39;
@@ -1155,9 +1155,9 @@ fn box_is_empty(b_6: WorkgroupBox) -> bool {
 fn tile_subtree(s_3: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: u32) -> u32 {
     var p_5: u32;
     var b_7: u32;
+    var local_26: bool;
     var local_27: bool;
     var local_28: bool;
-    var local_29: bool;
 
     let _e8 = bsh_subtree(BSH, s_3, BSH_TILE_DEPTH);
     if (_e8 == BSH_NONE) {
@@ -1172,16 +1172,16 @@ fn tile_subtree(s_3: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: 
         if (_e23 != end_1) {
             if !(!(list)) {
                 let _e31 = p_5;
-                local_28 = (_e31 < to);
+                local_27 = (_e31 < to);
             } else {
-                local_28 = true;
+                local_27 = true;
             }
-            let _e34 = local_28;
-            local_27 = _e34;
+            let _e34 = local_27;
+            local_26 = _e34;
         } else {
-            local_27 = false;
+            local_26 = false;
         }
-        let _e36 = local_27;
+        let _e36 = local_26;
         if _e36 {
         } else {
             break;
@@ -1189,11 +1189,11 @@ fn tile_subtree(s_3: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: 
         {
             if list {
                 let _e39 = p_5;
-                local_29 = (_e39 >= start_2);
+                local_28 = (_e39 >= start_2);
             } else {
-                local_29 = false;
+                local_28 = false;
             }
-            let _e42 = local_29;
+            let _e42 = local_28;
             if _e42 {
                 let _e44 = p_5;
                 let _e47 = b_7;
@@ -1214,68 +1214,75 @@ fn tile_subtree(s_3: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: 
 }
 
 fn tile_walk_begin(li_4: u32, x_8: vec3<f32>, w_8: f32, has_1: bool) -> TileWalk {
+    var local_29: bool;
     var t_2: TileWalk;
     var s_4: u32;
     var sum_1: u32 = 0u;
     var s_5: u32 = 0u;
 
-    let _e8 = atomicMax((&tile_scale), select(0u, bitcast<u32>(w_8), has_1));
-    let _e9 = workgroup_box(li_4, x_8, has_1);
-    let _e13 = workgroupUniformLoad((&tile_scale));
-    t_2 = TileWalk(_e9.lo, _e9.hi, bitcast<f32>(_e13), 0u);
-    let _e18 = box_is_empty(_e9);
-    if _e18 {
-        let _e19 = t_2;
-        return _e19;
+    if has_1 {
+        local_29 = (w_8 >= 0f);
+    } else {
+        local_29 = false;
+    }
+    let _e12 = local_29;
+    let _e14 = atomicMax((&tile_scale), select(0u, bitcast<u32>(w_8), _e12));
+    let _e15 = workgroup_box(li_4, x_8, has_1);
+    let _e19 = workgroupUniformLoad((&tile_scale));
+    t_2 = TileWalk(_e15.lo, _e15.hi, bitcast<f32>(_e19), 0u);
+    let _e24 = box_is_empty(_e15);
+    if _e24 {
+        let _e25 = t_2;
+        return _e25;
     }
     s_4 = li_4;
     loop {
-        let _e21 = s_4;
-        if (_e21 < BSH_TILE_SUBTREES) {
+        let _e27 = s_4;
+        if (_e27 < BSH_TILE_SUBTREES) {
         } else {
             break;
         }
         {
-            let _e25 = s_4;
-            let _e27 = s_4;
-            let _e28 = t_2;
-            let _e33 = tile_subtree(_e27, _e28, false, 0u, 0u, 0u);
-            subtree_at[_e25] = _e33;
+            let _e31 = s_4;
+            let _e33 = s_4;
+            let _e34 = t_2;
+            let _e39 = tile_subtree(_e33, _e34, false, 0u, 0u, 0u);
+            subtree_at[_e31] = _e39;
         }
         continuing {
-            let _e34 = s_4;
-            s_4 = (_e34 + TILE_THREADS);
+            let _e40 = s_4;
+            s_4 = (_e40 + TILE_THREADS);
         }
     }
     workgroupBarrier();
     if (li_4 == 0u) {
         loop {
-            let _e43 = s_5;
-            if (_e43 < BSH_TILE_SUBTREES) {
+            let _e49 = s_5;
+            if (_e49 < BSH_TILE_SUBTREES) {
             } else {
                 break;
             }
             {
-                let _e47 = s_5;
-                let c_14 = subtree_at[_e47];
-                let _e51 = s_5;
-                let _e53 = sum_1;
-                subtree_at[_e51] = _e53;
-                let _e54 = sum_1;
-                sum_1 = (_e54 + c_14);
+                let _e53 = s_5;
+                let c_14 = subtree_at[_e53];
+                let _e57 = s_5;
+                let _e59 = sum_1;
+                subtree_at[_e57] = _e59;
+                let _e60 = sum_1;
+                sum_1 = (_e60 + c_14);
             }
             continuing {
-                let _e57 = s_5;
-                s_5 = (_e57 + 1u);
+                let _e63 = s_5;
+                s_5 = (_e63 + 1u);
             }
         }
-        let _e60 = sum_1;
-        tile_total = _e60;
+        let _e66 = sum_1;
+        tile_total = _e66;
     }
-    let _e63 = workgroupUniformLoad((&tile_total));
-    t_2.total = _e63;
-    let _e64 = t_2;
-    return _e64;
+    let _e69 = workgroupUniformLoad((&tile_total));
+    t_2.total = _e69;
+    let _e70 = t_2;
+    return _e70;
 }
 
 fn tile_walk_fill(li_5: u32, t_3: TileWalk, start_3: u32) -> u32 {
@@ -1747,14 +1754,13 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
     var count: u32 = 0u;
     var hc: u32;
     var threshold: array<f32, 8>;
-    var local_4: bool;
     var start: u32 = 0u;
     var j: u32;
-    var local_5: bool;
+    var local_4: bool;
     var q: u32;
-    var local_6: bool;
+    var local_5: bool;
     var doms: array<Domain, 3>;
-    var local_7: bool;
+    var local_6: bool;
     var hs: u32;
     var kept: array<ReuseSlot, 8>;
     var fin: array<ReuseSlot, 8>;
@@ -1768,7 +1774,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
     var j_1: u32;
     var j_2: u32;
     var q_2: u32 = 0u;
-    var local_8: bool;
+    var local_7: bool;
 
     let _e5 = view.width;
     if (gid.x < _e5) {
@@ -1846,345 +1852,339 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
     let _e138 = pick_stream(_e137);
     h = _e138;
     hc = _e137;
-    if has_2 {
-        local_4 = (_e114.w >= 0f);
-    } else {
-        local_4 = false;
-    }
-    let _e166 = local_4;
-    let _e167 = tile_walk_begin(lid, x_17, _e114.w, _e166);
+    let _e160 = tile_walk_begin(lid, x_17, _e114.w, has_2);
     loop {
-        let _e170 = start;
-        if (_e170 < _e167.total) {
+        let _e163 = start;
+        if (_e163 < _e160.total) {
         } else {
             break;
         }
         {
-            let _e173 = start;
-            let _e174 = tile_walk_fill(lid, _e167, _e173);
+            let _e166 = start;
+            let _e167 = tile_walk_fill(lid, _e160, _e166);
             j = 0u;
             loop {
-                let _e177 = j;
-                if (_e177 < _e174) {
+                let _e170 = j;
+                if (_e170 < _e167) {
                 } else {
                     break;
                 }
                 {
-                    let _e180 = j;
-                    let b_10 = tile_list[_e180];
+                    let _e173 = j;
+                    let b_10 = tile_list[_e173];
                     if !(!(has_2)) {
-                        let _e189 = bsh_nodes[b_10];
-                        let _e190 = r;
-                        let _e191 = bsh_reaches(_e189, x_17, _e190, _e114);
-                        local_5 = !(_e191);
+                        let _e182 = bsh_nodes[b_10];
+                        let _e183 = r;
+                        let _e184 = bsh_reaches(_e182, x_17, _e183, _e114);
+                        local_4 = !(_e184);
                     } else {
-                        local_5 = true;
+                        local_4 = true;
                     }
-                    let _e194 = local_5;
-                    if _e194 {
+                    let _e187 = local_4;
+                    if _e187 {
                         continue;
                     }
                     let li_7 = bsh_nodes[b_10].light;
-                    let _e199 = count;
-                    count = (_e199 + 1u);
-                    let _e202 = h;
-                    let _e203 = pcg_hash(_e202);
-                    h = _e203;
+                    let _e192 = count;
+                    count = (_e192 + 1u);
+                    let _e195 = h;
+                    let _e196 = pcg_hash(_e195);
+                    h = _e196;
                     let h1_1 = h;
-                    let _e205 = h;
-                    let _e206 = pcg_hash(_e205);
-                    h = _e206;
-                    let _e207 = h;
-                    let _e208 = grid_cells(h1_1, _e207);
-                    let _e209 = grid_coordinate(h1_1);
-                    let _e210 = h;
-                    let _e211 = grid_coordinate(_e210);
-                    let u_5 = vec2<f32>(_e209, _e211);
-                    let _e213 = n;
-                    let _e214 = r;
-                    let _e215 = m;
-                    let _e220 = shade_pick_traced(li_7, x_17, _e213, _e214, _e114, _e215, 1f, u_5.x, u_5.y, eps_3, false);
-                    let _e221 = output_of(_e220);
-                    let _e222 = resample_target(_e221);
-                    if (_e222 > 0f) {
-                        let _e225 = total;
-                        total = (_e225 + _e221);
+                    let _e198 = h;
+                    let _e199 = pcg_hash(_e198);
+                    h = _e199;
+                    let _e200 = h;
+                    let _e201 = grid_cells(h1_1, _e200);
+                    let _e202 = grid_coordinate(h1_1);
+                    let _e203 = h;
+                    let _e204 = grid_coordinate(_e203);
+                    let u_5 = vec2<f32>(_e202, _e204);
+                    let _e206 = n;
+                    let _e207 = r;
+                    let _e208 = m;
+                    let _e213 = shade_pick_traced(li_7, x_17, _e206, _e207, _e114, _e208, 1f, u_5.x, u_5.y, eps_3, false);
+                    let _e214 = output_of(_e213);
+                    let _e215 = resample_target(_e214);
+                    if (_e215 > 0f) {
+                        let _e218 = total;
+                        total = (_e218 + _e214);
                         q = 0u;
                         loop {
-                            let _e229 = q;
-                            if (_e229 < K) {
+                            let _e222 = q;
+                            if (_e222 < K) {
                             } else {
                                 break;
                             }
                             {
-                                let _e232 = q;
-                                let _e234 = slot_target(_e221, _e232, K);
-                                let _e235 = total;
-                                let _e236 = q;
-                                let _e238 = slot_target(_e235, _e236, K);
-                                if (_e234 > 0f) {
-                                    let _e243 = q;
-                                    let _e245 = threshold[_e243];
-                                    local_6 = (_e238 > _e245);
+                                let _e225 = q;
+                                let _e227 = slot_target(_e214, _e225, K);
+                                let _e228 = total;
+                                let _e229 = q;
+                                let _e231 = slot_target(_e228, _e229, K);
+                                if (_e227 > 0f) {
+                                    let _e236 = q;
+                                    let _e238 = threshold[_e236];
+                                    local_5 = (_e231 > _e238);
                                 } else {
-                                    local_6 = false;
+                                    local_5 = false;
                                 }
-                                let _e248 = local_6;
-                                if _e248 {
-                                    let _e249 = q;
-                                    slot_light[_e249] = li_7;
-                                    let _e251 = q;
-                                    slot_u[_e251] = u_5;
-                                    let _e253 = q;
-                                    slot_p[_e253] = _e234;
-                                    let _e255 = q;
-                                    slot_cells[_e255] = _e208;
-                                    let _e257 = q;
-                                    let _e259 = next_threshold(_e238, (&hc));
-                                    threshold[_e257] = _e259;
+                                let _e241 = local_5;
+                                if _e241 {
+                                    let _e242 = q;
+                                    slot_light[_e242] = li_7;
+                                    let _e244 = q;
+                                    slot_u[_e244] = u_5;
+                                    let _e246 = q;
+                                    slot_p[_e246] = _e227;
+                                    let _e248 = q;
+                                    slot_cells[_e248] = _e201;
+                                    let _e250 = q;
+                                    let _e252 = next_threshold(_e231, (&hc));
+                                    threshold[_e250] = _e252;
                                 }
                             }
                             continuing {
-                                let _e261 = q;
-                                q = (_e261 + 1u);
+                                let _e254 = q;
+                                q = (_e254 + 1u);
                             }
                         }
                     }
                 }
                 continuing {
-                    let _e264 = j;
-                    j = (_e264 + 1u);
+                    let _e257 = j;
+                    j = (_e257 + 1u);
                 }
             }
             workgroupBarrier();
         }
         continuing {
-            let _e266 = start;
-            start = (_e266 + TILE_LIST);
+            let _e259 = start;
+            start = (_e259 + TILE_LIST);
         }
     }
     if !(has_2) {
         if inside {
             textureStore(out_tex, texel_1, vec4(0f));
-            let _e277 = view.width;
-            reuse_next[((gid.y * _e277) + gid.x)].surface.m = 0f;
+            let _e270 = view.width;
+            reuse_next[((gid.y * _e270) + gid.x)].surface.m = 0f;
         }
         return;
     }
-    let _e288 = view.width;
-    let pixel_1 = ((gid.y * _e288) + gid.x);
-    let _e293 = n;
-    let _e296 = view.eye;
-    let _e300 = reuse_stream(_e137, 0u);
-    let _e301 = reuse_domains(x_17, _e293, length((_e296 - x_17)), _e300, (&doms));
-    if (_e301 > 0u) {
-        let _e308 = doms[0].temporal;
-        local_7 = _e308;
+    let _e281 = view.width;
+    let pixel_1 = ((gid.y * _e281) + gid.x);
+    let _e286 = n;
+    let _e289 = view.eye;
+    let _e293 = reuse_stream(_e137, 0u);
+    let _e294 = reuse_domains(x_17, _e286, length((_e289 - x_17)), _e293, (&doms));
+    if (_e294 > 0u) {
+        let _e301 = doms[0].temporal;
+        local_6 = _e301;
     } else {
-        local_7 = false;
+        local_6 = false;
     }
-    let own_history = local_7;
+    let own_history = local_6;
     let first_1 = select(0u, 1u, own_history);
-    let _e316 = doms[0].c;
-    let confidence = (1f + select(0f, _e316, own_history));
-    let _e322 = reuse_stream(_e137, 1u);
-    hs = _e322;
+    let _e309 = doms[0].c;
+    let confidence = (1f + select(0f, _e309, own_history));
+    let _e315 = reuse_stream(_e137, 1u);
+    hs = _e315;
     loop {
-        let _e328 = q_1;
-        if (_e328 < K) {
+        let _e321 = q_1;
+        if (_e321 < K) {
         } else {
             break;
         }
         {
-            let _e331 = q_1;
-            let _e333 = q_1;
+            let _e324 = q_1;
+            let _e326 = q_1;
+            let _e327 = q_1;
+            let _e329 = slot_light[_e327];
+            let _e330 = q_1;
+            let _e332 = slot_cells[_e330];
+            let _e333 = total;
             let _e334 = q_1;
-            let _e336 = slot_light[_e334];
+            let _e336 = slot_target(_e333, _e334, K);
             let _e337 = q_1;
-            let _e339 = slot_cells[_e337];
-            let _e340 = total;
-            let _e341 = q_1;
-            let _e343 = slot_target(_e340, _e341, K);
-            let _e344 = q_1;
-            let _e346 = slot_p[_e344];
-            let _e355 = n;
-            let _e356 = m;
-            let _e357 = gris_combine(_e333, ReuseSlot(_e336, _e339, select(0f, _e343, (_e346 > 0f))), true, 1f, 0u, first_1, x_17, _e355, _e356, (&doms), (&hs));
-            kept[_e331] = _e357;
-            let _e358 = q_1;
-            let _e360 = q_1;
-            let _e362 = kept[_e360];
-            fin[_e358] = _e362;
-            if (_e301 > first_1) {
-                let _e364 = q_1;
-                let _e366 = q_1;
-                let _e367 = q_1;
-                let _e369 = kept[_e367];
-                let _e371 = n;
-                let _e372 = m;
-                let _e373 = gris_combine(_e366, _e369, false, confidence, first_1, _e301, x_17, _e371, _e372, (&doms), (&hs));
-                fin[_e364] = _e373;
+            let _e339 = slot_p[_e337];
+            let _e348 = n;
+            let _e349 = m;
+            let _e350 = gris_combine(_e326, ReuseSlot(_e329, _e332, select(0f, _e336, (_e339 > 0f))), true, 1f, 0u, first_1, x_17, _e348, _e349, (&doms), (&hs));
+            kept[_e324] = _e350;
+            let _e351 = q_1;
+            let _e353 = q_1;
+            let _e355 = kept[_e353];
+            fin[_e351] = _e355;
+            if (_e294 > first_1) {
+                let _e357 = q_1;
+                let _e359 = q_1;
+                let _e360 = q_1;
+                let _e362 = kept[_e360];
+                let _e364 = n;
+                let _e365 = m;
+                let _e366 = gris_combine(_e359, _e362, false, confidence, first_1, _e294, x_17, _e364, _e365, (&doms), (&hs));
+                fin[_e357] = _e366;
             }
         }
         continuing {
-            let _e375 = q_1;
-            q_1 = (_e375 + 1u);
+            let _e368 = q_1;
+            q_1 = (_e368 + 1u);
         }
     }
     loop {
-        let _e381 = k;
-        if (_e381 < K) {
+        let _e374 = k;
+        if (_e374 < K) {
         } else {
             break;
         }
         {
+            let _e377 = k;
+            let _e379 = k;
+            let _e382 = fin[_e379].light;
             let _e384 = k;
-            let _e386 = k;
-            let _e389 = fin[_e386].light;
-            let _e391 = k;
-            let _e394 = fin[_e391].u;
-            let _e396 = k;
-            let _e399 = fin[_e396].light;
-            let _e402 = lights[_e399].kind;
-            keys[_e384] = vec2<u32>(_e389, select(0u, _e394, (_e402 == LIGHT_TRIANGLE)));
-            let _e407 = k;
-            let _e409 = k;
-            let _e412 = fin[_e409].w;
-            held[_e407] = (_e412 > 0f);
+            let _e387 = fin[_e384].u;
+            let _e389 = k;
+            let _e392 = fin[_e389].light;
+            let _e395 = lights[_e392].kind;
+            keys[_e377] = vec2<u32>(_e382, select(0u, _e387, (_e395 == LIGHT_TRIANGLE)));
+            let _e400 = k;
+            let _e402 = k;
+            let _e405 = fin[_e402].w;
+            held[_e400] = (_e405 > 0f);
         }
         continuing {
-            let _e416 = k;
-            k = (_e416 + 1u);
+            let _e409 = k;
+            k = (_e409 + 1u);
         }
     }
-    let _e418 = keys;
-    let _e419 = held;
-    let _e420 = first_holders(_e418, _e419);
+    let _e411 = keys;
+    let _e412 = held;
+    let _e413 = first_holders(_e411, _e412);
     loop {
-        let _e424 = k_1;
-        if (_e424 < K) {
+        let _e417 = k_1;
+        if (_e417 < K) {
         } else {
             break;
         }
         {
-            let _e427 = k_1;
-            let _e429 = k_1;
-            if (_e420[_e427] != _e429) {
+            let _e420 = k_1;
+            let _e422 = k_1;
+            if (_e413[_e420] != _e422) {
                 continue;
             }
             w = vec3(0f);
-            let _e434 = k_1;
-            j_1 = _e434;
+            let _e427 = k_1;
+            j_1 = _e427;
             loop {
-                let _e436 = j_1;
-                if (_e436 < K) {
+                let _e429 = j_1;
+                if (_e429 < K) {
                 } else {
                     break;
                 }
                 {
-                    let _e439 = j_1;
-                    let _e441 = k_1;
-                    if (_e420[_e439] == _e441) {
-                        let _e443 = w;
-                        let _e444 = j_1;
-                        let _e447 = fin[_e444].w;
-                        let _e448 = j_1;
-                        let _e450 = slot_share(_e448, K);
-                        w = (_e443 + (_e447 * _e450));
+                    let _e432 = j_1;
+                    let _e434 = k_1;
+                    if (_e413[_e432] == _e434) {
+                        let _e436 = w;
+                        let _e437 = j_1;
+                        let _e440 = fin[_e437].w;
+                        let _e441 = j_1;
+                        let _e443 = slot_share(_e441, K);
+                        w = (_e436 + (_e440 * _e443));
                     }
                 }
                 continuing {
-                    let _e454 = j_1;
-                    j_1 = (_e454 + 1u);
+                    let _e447 = j_1;
+                    j_1 = (_e447 + 1u);
                 }
             }
-            let _e457 = k_1;
-            let _e460 = fin[_e457].light;
-            let _e462 = lights[_e460];
-            let _e463 = n;
-            let _e464 = n;
-            let _e468 = k_1;
-            let _e471 = fin[_e468].u;
-            let _e472 = grid_coordinate(_e471);
-            let _e473 = k_1;
-            let _e476 = fin[_e473].u;
-            let _e479 = grid_coordinate((_e476 << 16u));
-            let _e481 = connect_record(_e462, x_17, _e463, _e464, UNRANGED, UNRANGED, 1f, _e472, _e479, eps_3, true);
-            let _e482 = n;
-            let _e483 = m;
-            let _e484 = shade_connection(_e481, x_17, _e482, _e483);
-            let _e485 = t;
-            let _e486 = w;
-            let _e487 = scaled(_e484, _e486);
-            let _e488 = add(_e485, _e487);
-            t = _e488;
-            let _e489 = k_1;
-            j_2 = _e489;
+            let _e450 = k_1;
+            let _e453 = fin[_e450].light;
+            let _e455 = lights[_e453];
+            let _e456 = n;
+            let _e457 = n;
+            let _e461 = k_1;
+            let _e464 = fin[_e461].u;
+            let _e465 = grid_coordinate(_e464);
+            let _e466 = k_1;
+            let _e469 = fin[_e466].u;
+            let _e472 = grid_coordinate((_e469 << 16u));
+            let _e474 = connect_record(_e455, x_17, _e456, _e457, UNRANGED, UNRANGED, 1f, _e465, _e472, eps_3, true);
+            let _e475 = n;
+            let _e476 = m;
+            let _e477 = shade_connection(_e474, x_17, _e475, _e476);
+            let _e478 = t;
+            let _e479 = w;
+            let _e480 = scaled(_e477, _e479);
+            let _e481 = add(_e478, _e480);
+            t = _e481;
+            let _e482 = k_1;
+            j_2 = _e482;
             loop {
-                let _e491 = j_2;
-                if (_e491 < K) {
+                let _e484 = j_2;
+                if (_e484 < K) {
                 } else {
                     break;
                 }
                 {
-                    let _e494 = j_2;
-                    let _e496 = k_1;
-                    if (_e420[_e494] == _e496) {
-                        let _e498 = j_2;
-                        let _e500 = output_of(_e484);
-                        let _e501 = resample_target(_e500);
-                        visible[_e498] = (_e501 > 0f);
+                    let _e487 = j_2;
+                    let _e489 = k_1;
+                    if (_e413[_e487] == _e489) {
+                        let _e491 = j_2;
+                        let _e493 = output_of(_e477);
+                        let _e494 = resample_target(_e493);
+                        visible[_e491] = (_e494 > 0f);
                     }
                 }
                 continuing {
-                    let _e505 = j_2;
-                    j_2 = (_e505 + 1u);
+                    let _e498 = j_2;
+                    j_2 = (_e498 + 1u);
                 }
             }
         }
         continuing {
-            let _e508 = k_1;
-            k_1 = (_e508 + 1u);
+            let _e501 = k_1;
+            k_1 = (_e501 + 1u);
         }
     }
     loop {
-        let _e512 = q_2;
-        if (_e512 < K) {
+        let _e505 = q_2;
+        if (_e505 < K) {
         } else {
             break;
         }
         {
-            let _e517 = reuse.visibility;
-            if !((_e517 == 0u)) {
-                let _e523 = q_2;
-                let _e525 = visible[_e523];
-                local_8 = _e525;
+            let _e510 = reuse.visibility;
+            if !((_e510 == 0u)) {
+                let _e516 = q_2;
+                let _e518 = visible[_e516];
+                local_7 = _e518;
             } else {
-                local_8 = true;
+                local_7 = true;
             }
-            let keep = local_8;
-            let _e531 = q_2;
-            let _e533 = q_2;
-            let _e536 = kept[_e533].light;
-            let _e537 = q_2;
-            let _e540 = kept[_e537].u;
-            let _e541 = q_2;
-            let _e544 = kept[_e541].w;
-            reuse_next[pixel_1].slots[_e531] = ReuseSlot(_e536, _e540, select(0f, _e544, keep));
+            let keep = local_7;
+            let _e524 = q_2;
+            let _e526 = q_2;
+            let _e529 = kept[_e526].light;
+            let _e530 = q_2;
+            let _e533 = kept[_e530].u;
+            let _e534 = q_2;
+            let _e537 = kept[_e534].w;
+            reuse_next[pixel_1].slots[_e524] = ReuseSlot(_e529, _e533, select(0f, _e537, keep));
         }
         continuing {
-            let _e549 = q_2;
-            q_2 = (_e549 + 1u);
+            let _e542 = q_2;
+            q_2 = (_e542 + 1u);
         }
     }
-    let _e554 = n;
-    let _e555 = m;
-    let _e558 = reuse.max_confidence;
-    let _e560 = reuse_surface(x_17, _e554, _e555, min(confidence, _e558));
-    reuse_next[pixel_1].surface = _e560;
-    let _e563 = t.diffuse;
-    let _e565 = t.specular;
-    let _e567 = count;
-    textureStore(out_tex, texel_1, vec4<f32>((_e563 + _e565), f32(_e567)));
+    let _e547 = n;
+    let _e548 = m;
+    let _e551 = reuse.max_confidence;
+    let _e553 = reuse_surface(x_17, _e547, _e548, min(confidence, _e551));
+    reuse_next[pixel_1].surface = _e553;
+    let _e556 = t.diffuse;
+    let _e558 = t.specular;
+    let _e560 = count;
+    textureStore(out_tex, texel_1, vec4<f32>((_e556 + _e558), f32(_e560)));
     return;
 }

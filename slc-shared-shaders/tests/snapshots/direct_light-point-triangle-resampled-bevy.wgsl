@@ -269,29 +269,29 @@ fn connection_factor(cos_x: f32, d2_3: f32, rt2_1: f32, w_1: f32) -> f32 {
 }
 
 fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n_1: vec3<f32>, ng: vec3<f32>, r2_1: f32) -> f32 {
+    var local_7: bool;
     var local_8: bool;
-    var local_9: bool;
 
     let v_7 = (x_2 - y);
     let d2_6 = dot(v_7, v_7);
     let _e7 = slc_keep(r2_1, d2_6);
     if !(!(_e7)) {
-        local_8 = !((d2_6 > 0f));
+        local_7 = !((d2_6 > 0f));
     } else {
-        local_8 = true;
+        local_7 = true;
     }
-    let _e16 = local_8;
+    let _e16 = local_7;
     if _e16 {
         return 0f;
     }
     let w_10 = (v_7 / vec3(sqrt(d2_6)));
     let cos_x_1 = -(dot(n_1, w_10));
     if !((cos_x_1 <= 0f)) {
-        local_9 = (dot(ng, w_10) >= 0f);
+        local_8 = (dot(ng, w_10) >= 0f);
     } else {
-        local_9 = true;
+        local_8 = true;
     }
-    let _e32 = local_9;
+    let _e32 = local_8;
     if _e32 {
         return 0f;
     }
@@ -383,14 +383,14 @@ fn smith_root(cos_: f32, alpha_1: f32) -> f32 {
 }
 
 fn smith_visibility(n_l: f32, n_v: f32, alpha_2: f32) -> f32 {
-    var local_10: bool;
+    var local_9: bool;
 
     if !((n_l <= 0f)) {
-        local_10 = (n_v <= 0f);
+        local_9 = (n_v <= 0f);
     } else {
-        local_10 = true;
+        local_9 = true;
     }
-    let _e11 = local_10;
+    let _e11 = local_9;
     if _e11 {
         return 0f;
     }
@@ -412,21 +412,21 @@ fn specular_fresnel(base: vec3<f32>, metallic: f32, f0_d: vec3<f32>, f90_d: f32,
 }
 
 fn has_specular(metallic_1: f32, f0_d_1: vec3<f32>, f90_d_1: f32) -> bool {
+    var local_10: bool;
     var local_11: bool;
-    var local_12: bool;
 
     if !((metallic_1 > 0f)) {
-        local_11 = (f90_d_1 > 0f);
+        local_10 = (f90_d_1 > 0f);
+    } else {
+        local_10 = true;
+    }
+    let _e11 = local_10;
+    if !(_e11) {
+        local_11 = (max(max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0f);
     } else {
         local_11 = true;
     }
-    let _e11 = local_11;
-    if !(_e11) {
-        local_12 = (max(max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0f);
-    } else {
-        local_12 = true;
-    }
-    let _e23 = local_12;
+    let _e23 = local_11;
     return _e23;
 }
 
@@ -435,17 +435,17 @@ fn channel_mean(c_5: vec3<f32>) -> f32 {
 }
 
 fn receiver_lobe(base_1: vec3<f32>, metallic_2: f32, f0_d_2: vec3<f32>, f90_d_2: f32, alpha_3: f32, n_v_1: f32) -> vec4<f32> {
-    var local_13: bool;
+    var local_12: bool;
 
     let _e10 = fresnel_schlick(f0_d_2, f90_d_2, n_v_1);
     let _e16 = channel_mean((((vec3<f32>(1f, 1f, 1f) - _e10) * base_1) * (1f - metallic_2)));
     if !((n_v_1 <= 0f)) {
         let _e22 = has_specular(metallic_2, f0_d_2, f90_d_2);
-        local_13 = !(_e22);
+        local_12 = !(_e22);
     } else {
-        local_13 = true;
+        local_12 = true;
     }
-    let _e25 = local_13;
+    let _e25 = local_12;
     if _e25 {
         return vec4<f32>(_e16, 0f, alpha_3, n_v_1);
     }
@@ -529,23 +529,23 @@ fn bevy_brdf(base_2: vec3<f32>, metallic_3: f32, r_4: f32, reflectance_1: f32, n
 }
 
 fn cone_cos_of(v_2: vec3<f32>, d2_4: f32, a_3: f32, d: vec3<f32>) -> f32 {
+    var local_13: bool;
     var local_14: bool;
-    var local_15: bool;
 
     let vd = dot(v_2, d);
     let h2_ = (d2_4 - (a_3 * a_3));
     if !((h2_ <= 0f)) {
         if (vd >= 0f) {
-            local_15 = ((vd * vd) >= h2_);
+            local_14 = ((vd * vd) >= h2_);
         } else {
-            local_15 = false;
+            local_14 = false;
         }
-        let _e19 = local_15;
-        local_14 = _e19;
+        let _e19 = local_14;
+        local_13 = _e19;
     } else {
-        local_14 = true;
+        local_13 = true;
     }
-    let _e21 = local_14;
+    let _e21 = local_13;
     if _e21 {
         return 1f;
     }
@@ -602,16 +602,16 @@ fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin_1: vec3<f32>, bmax_1: vec3<f32>
 }
 
 fn triangle_normal(a_4: vec3<f32>, b_3: vec3<f32>, c_6: vec3<f32>) -> vec3<f32> {
-    var local_16: bool;
+    var local_15: bool;
 
     let n_10 = cross((b_3 - a_4), (c_6 - a_4));
     let l2_ = dot(n_10, n_10);
     if !(!((l2_ > 0f))) {
-        local_16 = !((l2_ < 300000000000000000000000000000000000000f));
+        local_15 = !((l2_ < 300000000000000000000000000000000000000f));
     } else {
-        local_16 = true;
+        local_15 = true;
     }
-    let _e17 = local_16;
+    let _e17 = local_15;
     if _e17 {
         return vec3<f32>(0f, 0f, 0f);
     }
@@ -619,9 +619,9 @@ fn triangle_normal(a_4: vec3<f32>, b_3: vec3<f32>, c_6: vec3<f32>) -> vec3<f32> 
 }
 
 fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_4: vec3<f32>, c_7: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
+    var local_16: bool;
     var local_17: bool;
     var local_18: bool;
-    var local_19: bool;
 
     let e1_ = (b_4 - a_5);
     let e2_ = (c_7 - a_5);
@@ -634,32 +634,32 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_4: vec3<f32>, 
     let s_10 = (o_1 - a_5);
     let u_3 = (dot(s_10, p_4) * inv);
     if !((u_3 < 0f)) {
-        local_17 = (u_3 > 1f);
+        local_16 = (u_3 > 1f);
     } else {
-        local_17 = true;
+        local_16 = true;
     }
-    let _e28 = local_17;
+    let _e28 = local_16;
     if _e28 {
         return -1f;
     }
     let q_2 = cross(s_10, e1_);
     let v_9 = (dot(d_3, q_2) * inv);
     if !((v_9 < 0f)) {
-        local_18 = ((u_3 + v_9) > 1f);
+        local_17 = ((u_3 + v_9) > 1f);
     } else {
-        local_18 = true;
+        local_17 = true;
     }
-    let _e42 = local_18;
+    let _e42 = local_17;
     if _e42 {
         return -1f;
     }
     let t_6 = (dot(e2_, q_2) * inv);
     if (t_6 > t_min) {
-        local_19 = (t_6 < t_max_1);
+        local_18 = (t_6 < t_max_1);
     } else {
-        local_19 = false;
+        local_18 = false;
     }
-    let _e51 = local_19;
+    let _e51 = local_18;
     if _e51 {
         return t_6;
     }
@@ -799,8 +799,8 @@ fn bsh_inner_scale(a_7: f32, v_3: vec3<f32>, d2_5: f32, r_6: vec3<f32>, rl_2: ve
 }
 
 fn bsh_reaches(node_3: BshNode, x_4: vec3<f32>, r_7: vec3<f32>, rl_3: vec4<f32>) -> bool {
+    var local_19: bool;
     var local_20: bool;
-    var local_21: bool;
 
     let _e6 = sphere_contains_point(node_3.center, node_3.radius, x_4);
     if _e6 {
@@ -808,11 +808,11 @@ fn bsh_reaches(node_3: BshNode, x_4: vec3<f32>, r_7: vec3<f32>, rl_3: vec4<f32>)
     }
     if !((rl_3.w <= 1f)) {
         let _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001f)), x_4);
-        local_20 = !(_e20);
+        local_19 = !(_e20);
     } else {
-        local_20 = true;
+        local_19 = true;
     }
-    let _e23 = local_20;
+    let _e23 = local_19;
     if _e23 {
         return false;
     }
@@ -833,11 +833,11 @@ fn bsh_reaches(node_3: BshNode, x_4: vec3<f32>, r_7: vec3<f32>, rl_3: vec4<f32>)
     let s_c = (_e50 * 1.001f);
     let reach = (node_3.extent + (sqrt(s_c) * _e25));
     if (d2_7 <= ((node_3.radius * node_3.radius) * s_c)) {
-        local_21 = (d2_7 <= (reach * reach));
+        local_20 = (d2_7 <= (reach * reach));
     } else {
-        local_21 = false;
+        local_20 = false;
     }
-    let _e67 = local_21;
+    let _e67 = local_20;
     return _e67;
 }
 
@@ -849,7 +849,7 @@ fn bsh_reaches_box(node_4: BshNode, lo: vec3<f32>, hi: vec3<f32>, w_4: f32) -> b
 fn bsh_subtree(nodes_3: u32, s_1: u32, depth: u32) -> u32 {
     var i_2: u32;
     var level: u32 = 0u;
-    var local_22: bool;
+    var local_21: bool;
 
     let _e3 = bsh_first(nodes_3);
     i_2 = _e3;
@@ -857,11 +857,11 @@ fn bsh_subtree(nodes_3: u32, s_1: u32, depth: u32) -> u32 {
         let _e7 = level;
         if (_e7 < depth) {
             let _e11 = i_2;
-            local_22 = (_e11 != BSH_NONE);
+            local_21 = (_e11 != BSH_NONE);
         } else {
-            local_22 = false;
+            local_21 = false;
         }
-        let _e15 = local_22;
+        let _e15 = local_21;
         if _e15 {
         } else {
             break;
@@ -932,8 +932,8 @@ fn next_threshold(sum: f32, h_1: ptr<function, u32>) -> f32 {
 
 fn connect_record(l_3: GpuLight, x_5: vec3<f32>, n_5: vec3<f32>, ng_1: vec3<f32>, r2_2: f32, rt2_2: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32, trace_1: bool) -> Connection {
     var c_8: Connection;
+    var local_22: bool;
     var local_23: bool;
-    var local_24: bool;
 
     c_8.e = vec3(0f);
     let _e16 = light_point(l_3, u1_2, u2_2);
@@ -946,16 +946,16 @@ fn connect_record(l_3: GpuLight, x_5: vec3<f32>, n_5: vec3<f32>, ng_1: vec3<f32>
         if trace_1 {
             let _e33 = c_8.y;
             let _e34 = occluded((x_5 + (ng_1 * eps)), _e33);
-            local_24 = _e34;
+            local_23 = _e34;
         } else {
-            local_24 = false;
+            local_23 = false;
         }
-        let _e36 = local_24;
-        local_23 = _e36;
+        let _e36 = local_23;
+        local_22 = _e36;
     } else {
-        local_23 = true;
+        local_22 = true;
     }
-    let _e38 = local_23;
+    let _e38 = local_22;
     if _e38 {
         let _e39 = c_8;
         return _e39;
@@ -1042,9 +1042,9 @@ fn box_is_empty(b_6: WorkgroupBox) -> bool {
 fn tile_subtree(s_3: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: u32) -> u32 {
     var p_3: u32;
     var b_7: u32;
+    var local_24: bool;
     var local_25: bool;
     var local_26: bool;
-    var local_27: bool;
 
     let _e8 = bsh_subtree(BSH, s_3, BSH_TILE_DEPTH);
     if (_e8 == BSH_NONE) {
@@ -1059,16 +1059,16 @@ fn tile_subtree(s_3: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: 
         if (_e23 != end_1) {
             if !(!(list)) {
                 let _e31 = p_3;
-                local_26 = (_e31 < to);
+                local_25 = (_e31 < to);
             } else {
-                local_26 = true;
+                local_25 = true;
             }
-            let _e34 = local_26;
-            local_25 = _e34;
+            let _e34 = local_25;
+            local_24 = _e34;
         } else {
-            local_25 = false;
+            local_24 = false;
         }
-        let _e36 = local_25;
+        let _e36 = local_24;
         if _e36 {
         } else {
             break;
@@ -1076,11 +1076,11 @@ fn tile_subtree(s_3: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: 
         {
             if list {
                 let _e39 = p_3;
-                local_27 = (_e39 >= start_2);
+                local_26 = (_e39 >= start_2);
             } else {
-                local_27 = false;
+                local_26 = false;
             }
-            let _e42 = local_27;
+            let _e42 = local_26;
             if _e42 {
                 let _e44 = p_3;
                 let _e47 = b_7;
@@ -1101,68 +1101,75 @@ fn tile_subtree(s_3: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: 
 }
 
 fn tile_walk_begin(li_4: u32, x_8: vec3<f32>, w_6: f32, has_1: bool) -> TileWalk {
+    var local_27: bool;
     var t_2: TileWalk;
     var s_4: u32;
     var sum_1: u32 = 0u;
     var s_5: u32 = 0u;
 
-    let _e8 = atomicMax((&tile_scale), select(0u, bitcast<u32>(w_6), has_1));
-    let _e9 = workgroup_box(li_4, x_8, has_1);
-    let _e13 = workgroupUniformLoad((&tile_scale));
-    t_2 = TileWalk(_e9.lo, _e9.hi, bitcast<f32>(_e13), 0u);
-    let _e18 = box_is_empty(_e9);
-    if _e18 {
-        let _e19 = t_2;
-        return _e19;
+    if has_1 {
+        local_27 = (w_6 >= 0f);
+    } else {
+        local_27 = false;
+    }
+    let _e12 = local_27;
+    let _e14 = atomicMax((&tile_scale), select(0u, bitcast<u32>(w_6), _e12));
+    let _e15 = workgroup_box(li_4, x_8, has_1);
+    let _e19 = workgroupUniformLoad((&tile_scale));
+    t_2 = TileWalk(_e15.lo, _e15.hi, bitcast<f32>(_e19), 0u);
+    let _e24 = box_is_empty(_e15);
+    if _e24 {
+        let _e25 = t_2;
+        return _e25;
     }
     s_4 = li_4;
     loop {
-        let _e21 = s_4;
-        if (_e21 < BSH_TILE_SUBTREES) {
+        let _e27 = s_4;
+        if (_e27 < BSH_TILE_SUBTREES) {
         } else {
             break;
         }
         {
-            let _e25 = s_4;
-            let _e27 = s_4;
-            let _e28 = t_2;
-            let _e33 = tile_subtree(_e27, _e28, false, 0u, 0u, 0u);
-            subtree_at[_e25] = _e33;
+            let _e31 = s_4;
+            let _e33 = s_4;
+            let _e34 = t_2;
+            let _e39 = tile_subtree(_e33, _e34, false, 0u, 0u, 0u);
+            subtree_at[_e31] = _e39;
         }
         continuing {
-            let _e34 = s_4;
-            s_4 = (_e34 + TILE_THREADS);
+            let _e40 = s_4;
+            s_4 = (_e40 + TILE_THREADS);
         }
     }
     workgroupBarrier();
     if (li_4 == 0u) {
         loop {
-            let _e43 = s_5;
-            if (_e43 < BSH_TILE_SUBTREES) {
+            let _e49 = s_5;
+            if (_e49 < BSH_TILE_SUBTREES) {
             } else {
                 break;
             }
             {
-                let _e47 = s_5;
-                let c_13 = subtree_at[_e47];
-                let _e51 = s_5;
-                let _e53 = sum_1;
-                subtree_at[_e51] = _e53;
-                let _e54 = sum_1;
-                sum_1 = (_e54 + c_13);
+                let _e53 = s_5;
+                let c_13 = subtree_at[_e53];
+                let _e57 = s_5;
+                let _e59 = sum_1;
+                subtree_at[_e57] = _e59;
+                let _e60 = sum_1;
+                sum_1 = (_e60 + c_13);
             }
             continuing {
-                let _e57 = s_5;
-                s_5 = (_e57 + 1u);
+                let _e63 = s_5;
+                s_5 = (_e63 + 1u);
             }
         }
-        let _e60 = sum_1;
-        tile_total = _e60;
+        let _e66 = sum_1;
+        tile_total = _e66;
     }
-    let _e63 = workgroupUniformLoad((&tile_total));
-    t_2.total = _e63;
-    let _e64 = t_2;
-    return _e64;
+    let _e69 = workgroupUniformLoad((&tile_total));
+    t_2.total = _e69;
+    let _e70 = t_2;
+    return _e70;
 }
 
 fn tile_walk_fill(li_5: u32, t_3: TileWalk, start_3: u32) -> u32 {
@@ -1338,19 +1345,18 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
     var count: u32 = 0u;
     var hc: u32;
     var threshold: array<f32, 8>;
-    var local_4: bool;
     var start: u32 = 0u;
     var j: u32;
-    var local_5: bool;
+    var local_4: bool;
     var q: u32;
-    var local_6: bool;
+    var local_5: bool;
     var keys: array<vec2<u32>, 8>;
     var held: array<bool, 8>;
     var k: u32 = 0u;
     var k_1: u32 = 0u;
     var w: vec3<f32>;
     var j_1: u32;
-    var local_7: bool;
+    var local_6: bool;
 
     let _e5 = view.width;
     if (gid.x < _e5) {
@@ -1428,117 +1434,111 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
     let _e138 = pick_stream(_e137);
     h = _e138;
     hc = _e137;
-    if has_2 {
-        local_4 = (_e114.w >= 0f);
-    } else {
-        local_4 = false;
-    }
-    let _e165 = local_4;
-    let _e166 = tile_walk_begin(lid, x_13, _e114.w, _e165);
+    let _e159 = tile_walk_begin(lid, x_13, _e114.w, has_2);
     loop {
-        let _e169 = start;
-        if (_e169 < _e166.total) {
+        let _e162 = start;
+        if (_e162 < _e159.total) {
         } else {
             break;
         }
         {
-            let _e172 = start;
-            let _e173 = tile_walk_fill(lid, _e166, _e172);
+            let _e165 = start;
+            let _e166 = tile_walk_fill(lid, _e159, _e165);
             j = 0u;
             loop {
-                let _e176 = j;
-                if (_e176 < _e173) {
+                let _e169 = j;
+                if (_e169 < _e166) {
                 } else {
                     break;
                 }
                 {
-                    let _e179 = j;
-                    let b_9 = tile_list[_e179];
+                    let _e172 = j;
+                    let b_9 = tile_list[_e172];
                     if !(!(has_2)) {
-                        let _e188 = bsh_nodes[b_9];
-                        let _e189 = r;
-                        let _e190 = bsh_reaches(_e188, x_13, _e189, _e114);
-                        local_5 = !(_e190);
+                        let _e181 = bsh_nodes[b_9];
+                        let _e182 = r;
+                        let _e183 = bsh_reaches(_e181, x_13, _e182, _e114);
+                        local_4 = !(_e183);
                     } else {
-                        local_5 = true;
+                        local_4 = true;
                     }
-                    let _e193 = local_5;
-                    if _e193 {
+                    let _e186 = local_4;
+                    if _e186 {
                         continue;
                     }
                     let li_8 = bsh_nodes[b_9].light;
-                    let _e198 = count;
-                    count = (_e198 + 1u);
-                    let _e201 = h;
-                    let _e202 = pcg_hash(_e201);
-                    h = _e202;
-                    let _e203 = h;
-                    let _e204 = xi_from_bits(_e203);
-                    let _e205 = h;
-                    let _e206 = pcg_hash(_e205);
-                    h = _e206;
-                    let _e207 = h;
-                    let _e208 = xi_from_bits(_e207);
-                    let u_4 = vec2<f32>(_e204, _e208);
-                    let _e210 = n;
-                    let _e211 = r;
-                    let _e212 = m;
-                    let _e217 = shade_pick_traced(li_8, x_13, _e210, _e211, _e114, _e212, 1f, u_4.x, u_4.y, eps_4, false);
-                    let _e218 = output_of(_e217);
-                    let _e219 = resample_target(_e218);
-                    if (_e219 > 0f) {
-                        let _e222 = total;
-                        total = (_e222 + _e218);
+                    let _e191 = count;
+                    count = (_e191 + 1u);
+                    let _e194 = h;
+                    let _e195 = pcg_hash(_e194);
+                    h = _e195;
+                    let _e196 = h;
+                    let _e197 = xi_from_bits(_e196);
+                    let _e198 = h;
+                    let _e199 = pcg_hash(_e198);
+                    h = _e199;
+                    let _e200 = h;
+                    let _e201 = xi_from_bits(_e200);
+                    let u_4 = vec2<f32>(_e197, _e201);
+                    let _e203 = n;
+                    let _e204 = r;
+                    let _e205 = m;
+                    let _e210 = shade_pick_traced(li_8, x_13, _e203, _e204, _e114, _e205, 1f, u_4.x, u_4.y, eps_4, false);
+                    let _e211 = output_of(_e210);
+                    let _e212 = resample_target(_e211);
+                    if (_e212 > 0f) {
+                        let _e215 = total;
+                        total = (_e215 + _e211);
                         q = 0u;
                         loop {
-                            let _e226 = q;
-                            if (_e226 < K) {
+                            let _e219 = q;
+                            if (_e219 < K) {
                             } else {
                                 break;
                             }
                             {
-                                let _e229 = q;
-                                let _e231 = slot_target(_e218, _e229, K);
-                                let _e232 = total;
-                                let _e233 = q;
-                                let _e235 = slot_target(_e232, _e233, K);
-                                if (_e231 > 0f) {
-                                    let _e240 = q;
-                                    let _e242 = threshold[_e240];
-                                    local_6 = (_e235 > _e242);
+                                let _e222 = q;
+                                let _e224 = slot_target(_e211, _e222, K);
+                                let _e225 = total;
+                                let _e226 = q;
+                                let _e228 = slot_target(_e225, _e226, K);
+                                if (_e224 > 0f) {
+                                    let _e233 = q;
+                                    let _e235 = threshold[_e233];
+                                    local_5 = (_e228 > _e235);
                                 } else {
-                                    local_6 = false;
+                                    local_5 = false;
                                 }
-                                let _e245 = local_6;
-                                if _e245 {
-                                    let _e246 = q;
-                                    slot_light[_e246] = li_8;
-                                    let _e248 = q;
-                                    slot_u[_e248] = u_4;
-                                    let _e250 = q;
-                                    slot_p[_e250] = _e231;
-                                    let _e252 = q;
-                                    let _e254 = next_threshold(_e235, (&hc));
-                                    threshold[_e252] = _e254;
+                                let _e238 = local_5;
+                                if _e238 {
+                                    let _e239 = q;
+                                    slot_light[_e239] = li_8;
+                                    let _e241 = q;
+                                    slot_u[_e241] = u_4;
+                                    let _e243 = q;
+                                    slot_p[_e243] = _e224;
+                                    let _e245 = q;
+                                    let _e247 = next_threshold(_e228, (&hc));
+                                    threshold[_e245] = _e247;
                                 }
                             }
                             continuing {
-                                let _e256 = q;
-                                q = (_e256 + 1u);
+                                let _e249 = q;
+                                q = (_e249 + 1u);
                             }
                         }
                     }
                 }
                 continuing {
-                    let _e259 = j;
-                    j = (_e259 + 1u);
+                    let _e252 = j;
+                    j = (_e252 + 1u);
                 }
             }
             workgroupBarrier();
         }
         continuing {
-            let _e261 = start;
-            start = (_e261 + TILE_LIST);
+            let _e254 = start;
+            start = (_e254 + TILE_LIST);
         }
     }
     if !(has_2) {
@@ -1548,100 +1548,100 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
         return;
     }
     loop {
-        let _e272 = k;
-        if (_e272 < K) {
+        let _e265 = k;
+        if (_e265 < K) {
         } else {
             break;
         }
         {
+            let _e268 = k;
+            let _e270 = k;
+            let _e272 = slot_light[_e270];
+            keys[_e268] = vec2<u32>(_e272, 0u);
             let _e275 = k;
             let _e277 = k;
-            let _e279 = slot_light[_e277];
-            keys[_e275] = vec2<u32>(_e279, 0u);
-            let _e282 = k;
-            let _e284 = k;
-            let _e286 = slot_p[_e284];
-            held[_e282] = (_e286 > 0f);
+            let _e279 = slot_p[_e277];
+            held[_e275] = (_e279 > 0f);
         }
         continuing {
-            let _e290 = k;
-            k = (_e290 + 1u);
+            let _e283 = k;
+            k = (_e283 + 1u);
         }
     }
-    let _e292 = keys;
-    let _e293 = held;
-    let _e294 = first_holders(_e292, _e293);
+    let _e285 = keys;
+    let _e286 = held;
+    let _e287 = first_holders(_e285, _e286);
     loop {
-        let _e297 = k_1;
-        if (_e297 < K) {
+        let _e290 = k_1;
+        if (_e290 < K) {
         } else {
             break;
         }
         {
             w = vec3(0f);
-            let _e303 = k_1;
-            let _e305 = k_1;
-            let first_1 = (_e294[_e303] == _e305);
-            let _e307 = k_1;
-            j_1 = _e307;
+            let _e296 = k_1;
+            let _e298 = k_1;
+            let first_1 = (_e287[_e296] == _e298);
+            let _e300 = k_1;
+            j_1 = _e300;
             loop {
-                let _e309 = j_1;
-                if (_e309 < K) {
-                    local_7 = first_1;
+                let _e302 = j_1;
+                if (_e302 < K) {
+                    local_6 = first_1;
                 } else {
-                    local_7 = false;
+                    local_6 = false;
                 }
-                let _e315 = local_7;
-                if _e315 {
+                let _e308 = local_6;
+                if _e308 {
                 } else {
                     break;
                 }
                 {
-                    let _e316 = j_1;
-                    let _e318 = k_1;
-                    if (_e294[_e316] == _e318) {
-                        let _e320 = w;
-                        let _e321 = total;
+                    let _e309 = j_1;
+                    let _e311 = k_1;
+                    if (_e287[_e309] == _e311) {
+                        let _e313 = w;
+                        let _e314 = total;
+                        let _e315 = j_1;
+                        let _e317 = slot_target(_e314, _e315, K);
+                        let _e318 = j_1;
+                        let _e320 = slot_p[_e318];
                         let _e322 = j_1;
-                        let _e324 = slot_target(_e321, _e322, K);
-                        let _e325 = j_1;
-                        let _e327 = slot_p[_e325];
-                        let _e329 = j_1;
-                        let _e331 = slot_share(_e329, K);
-                        w = (_e320 + ((_e324 / _e327) * _e331));
+                        let _e324 = slot_share(_e322, K);
+                        w = (_e313 + ((_e317 / _e320) * _e324));
                     }
                 }
                 continuing {
-                    let _e335 = j_1;
-                    j_1 = (_e335 + 1u);
+                    let _e328 = j_1;
+                    j_1 = (_e328 + 1u);
                 }
             }
             if first_1 {
-                let _e337 = t;
+                let _e330 = t;
+                let _e331 = k_1;
+                let _e333 = slot_light[_e331];
+                let _e334 = n;
+                let _e335 = r;
+                let _e336 = m;
                 let _e338 = k_1;
-                let _e340 = slot_light[_e338];
-                let _e341 = n;
-                let _e342 = r;
-                let _e343 = m;
-                let _e345 = k_1;
-                let _e348 = slot_u[_e345].x;
-                let _e349 = k_1;
-                let _e352 = slot_u[_e349].y;
-                let _e353 = shade_pick(_e340, x_13, _e341, _e342, _e114, _e343, 1f, _e348, _e352, eps_4);
-                let _e354 = w;
-                let _e355 = scaled(_e353, _e354);
-                let _e356 = add(_e337, _e355);
-                t = _e356;
+                let _e341 = slot_u[_e338].x;
+                let _e342 = k_1;
+                let _e345 = slot_u[_e342].y;
+                let _e346 = shade_pick(_e333, x_13, _e334, _e335, _e114, _e336, 1f, _e341, _e345, eps_4);
+                let _e347 = w;
+                let _e348 = scaled(_e346, _e347);
+                let _e349 = add(_e330, _e348);
+                t = _e349;
             }
         }
         continuing {
-            let _e358 = k_1;
-            k_1 = (_e358 + 1u);
+            let _e351 = k_1;
+            k_1 = (_e351 + 1u);
         }
     }
-    let _e362 = t.diffuse;
-    let _e364 = t.specular;
-    let _e366 = count;
-    textureStore(out_tex, texel_1, vec4<f32>((_e362 + _e364), f32(_e366)));
+    let _e355 = t.diffuse;
+    let _e357 = t.specular;
+    let _e359 = count;
+    textureStore(out_tex, texel_1, vec4<f32>((_e355 + _e357), f32(_e359)));
     return;
 }

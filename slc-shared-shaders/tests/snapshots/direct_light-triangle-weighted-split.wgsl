@@ -280,29 +280,29 @@ fn connection_factor(cos_x: f32, d2_3: f32, rt2_1: f32, w: f32) -> f32 {
 }
 
 fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n_1: vec3<f32>, ng: vec3<f32>, r2_1: f32) -> f32 {
+    var local_5: bool;
     var local_6: bool;
-    var local_7: bool;
 
     let v_8 = (x_2 - y);
     let d2_7 = dot(v_8, v_8);
     let _e7 = slc_keep(r2_1, d2_7);
     if !(!(_e7)) {
-        local_6 = !((d2_7 > 0f));
+        local_5 = !((d2_7 > 0f));
     } else {
-        local_6 = true;
+        local_5 = true;
     }
-    let _e16 = local_6;
+    let _e16 = local_5;
     if _e16 {
         return 0f;
     }
     let w_10 = (v_8 / vec3(sqrt(d2_7)));
     let cos_x_1 = -(dot(n_1, w_10));
     if !((cos_x_1 <= 0f)) {
-        local_7 = (dot(ng, w_10) >= 0f);
+        local_6 = (dot(ng, w_10) >= 0f);
     } else {
-        local_7 = true;
+        local_6 = true;
     }
-    let _e32 = local_7;
+    let _e32 = local_6;
     if _e32 {
         return 0f;
     }
@@ -366,14 +366,14 @@ fn smith_root(cos_: f32, alpha_1: f32) -> f32 {
 }
 
 fn smith_visibility(n_l: f32, n_v: f32, alpha_2: f32) -> f32 {
-    var local_8: bool;
+    var local_7: bool;
 
     if !((n_l <= 0f)) {
-        local_8 = (n_v <= 0f);
+        local_7 = (n_v <= 0f);
     } else {
-        local_8 = true;
+        local_7 = true;
     }
-    let _e11 = local_8;
+    let _e11 = local_7;
     if _e11 {
         return 0f;
     }
@@ -409,16 +409,16 @@ fn half_cosine(v: vec3<f32>, l: vec3<f32>) -> f32 {
 }
 
 fn specular_brdf(base_2: vec3<f32>, metallic_2: f32, f0_d_2: vec3<f32>, f90_d_2: f32, alpha_3: f32, n_3: vec3<f32>, v_1: vec3<f32>, l_1: vec3<f32>) -> vec3<f32> {
-    var local_9: bool;
+    var local_8: bool;
 
     let n_l_1 = dot(n_3, l_1);
     let n_v_2 = dot(n_3, v_1);
     if !((n_l_1 <= 0f)) {
-        local_9 = (n_v_2 <= 0f);
+        local_8 = (n_v_2 <= 0f);
     } else {
-        local_9 = true;
+        local_8 = true;
     }
-    let _e18 = local_9;
+    let _e18 = local_8;
     if _e18 {
         return vec3<f32>(0f, 0f, 0f);
     }
@@ -433,21 +433,21 @@ fn specular_brdf(base_2: vec3<f32>, metallic_2: f32, f0_d_2: vec3<f32>, f90_d_2:
 }
 
 fn has_specular(metallic_3: f32, f0_d_3: vec3<f32>, f90_d_3: f32) -> bool {
+    var local_9: bool;
     var local_10: bool;
-    var local_11: bool;
 
     if !((metallic_3 > 0f)) {
-        local_10 = (f90_d_3 > 0f);
+        local_9 = (f90_d_3 > 0f);
+    } else {
+        local_9 = true;
+    }
+    let _e11 = local_9;
+    if !(_e11) {
+        local_10 = (max(max(f0_d_3.x, f0_d_3.y), f0_d_3.z) > 0f);
     } else {
         local_10 = true;
     }
-    let _e11 = local_10;
-    if !(_e11) {
-        local_11 = (max(max(f0_d_3.x, f0_d_3.y), f0_d_3.z) > 0f);
-    } else {
-        local_11 = true;
-    }
-    let _e23 = local_11;
+    let _e23 = local_10;
     return _e23;
 }
 
@@ -456,17 +456,17 @@ fn channel_mean(c_3: vec3<f32>) -> f32 {
 }
 
 fn receiver_lobe(base_3: vec3<f32>, metallic_4: f32, f0_d_4: vec3<f32>, f90_d_4: f32, alpha_4: f32, n_v_1: f32) -> vec4<f32> {
-    var local_12: bool;
+    var local_11: bool;
 
     let _e10 = fresnel_schlick(f0_d_4, f90_d_4, n_v_1);
     let _e16 = channel_mean((((vec3<f32>(1f, 1f, 1f) - _e10) * base_3) * (1f - metallic_4)));
     if !((n_v_1 <= 0f)) {
         let _e22 = has_specular(metallic_4, f0_d_4, f90_d_4);
-        local_12 = !(_e22);
+        local_11 = !(_e22);
     } else {
-        local_12 = true;
+        local_11 = true;
     }
-    let _e25 = local_12;
+    let _e25 = local_11;
     if _e25 {
         return vec4<f32>(_e16, 0f, alpha_4, n_v_1);
     }
@@ -555,23 +555,23 @@ fn emitter_importance(center_1: vec3<f32>, radius_1: f32, phi: f32, axis_1: vec3
 }
 
 fn cone_cos_of(v_3: vec3<f32>, d2_4: f32, a_3: f32, d: vec3<f32>) -> f32 {
+    var local_12: bool;
     var local_13: bool;
-    var local_14: bool;
 
     let vd = dot(v_3, d);
     let h2_ = (d2_4 - (a_3 * a_3));
     if !((h2_ <= 0f)) {
         if (vd >= 0f) {
-            local_14 = ((vd * vd) >= h2_);
+            local_13 = ((vd * vd) >= h2_);
         } else {
-            local_14 = false;
+            local_13 = false;
         }
-        let _e19 = local_14;
-        local_13 = _e19;
+        let _e19 = local_13;
+        local_12 = _e19;
     } else {
-        local_13 = true;
+        local_12 = true;
     }
-    let _e21 = local_13;
+    let _e21 = local_12;
     if _e21 {
         return 1f;
     }
@@ -621,16 +621,16 @@ fn light_importance(center_4: vec3<f32>, radius_4: f32, phi_1: f32, axis_2: vec3
 }
 
 fn glossy_importance(center_5: vec3<f32>, radius_5: f32, phi_2: f32, axis_3: vec3<f32>, cos_o_3: f32, cos_e_2: f32, p_5: vec3<f32>, n_6: vec3<f32>, r_4: vec3<f32>, lobe_5: vec4<f32>) -> f32 {
-    var local_15: bool;
+    var local_14: bool;
 
     let _e10 = emitter_importance(center_5, radius_5, phi_2, axis_3, cos_o_3, cos_e_2, p_5);
     let _e11 = cone_cos_toward(center_5, radius_5, p_5, n_6);
     if !((_e10 <= 0f)) {
-        local_15 = (_e11 <= 0f);
+        local_14 = (_e11 <= 0f);
     } else {
-        local_15 = true;
+        local_14 = true;
     }
-    let _e20 = local_15;
+    let _e20 = local_14;
     if _e20 {
         return 0f;
     }
@@ -688,16 +688,16 @@ fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin_1: vec3<f32>, bmax_1: vec3<f32>
 }
 
 fn triangle_normal(a_4: vec3<f32>, b_3: vec3<f32>, c_4: vec3<f32>) -> vec3<f32> {
-    var local_16: bool;
+    var local_15: bool;
 
     let n_14 = cross((b_3 - a_4), (c_4 - a_4));
     let l2_ = dot(n_14, n_14);
     if !(!((l2_ > 0f))) {
-        local_16 = !((l2_ < 300000000000000000000000000000000000000f));
+        local_15 = !((l2_ < 300000000000000000000000000000000000000f));
     } else {
-        local_16 = true;
+        local_15 = true;
     }
-    let _e17 = local_16;
+    let _e17 = local_15;
     if _e17 {
         return vec3<f32>(0f, 0f, 0f);
     }
@@ -705,9 +705,9 @@ fn triangle_normal(a_4: vec3<f32>, b_3: vec3<f32>, c_4: vec3<f32>) -> vec3<f32> 
 }
 
 fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_4: vec3<f32>, c_5: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
+    var local_16: bool;
     var local_17: bool;
     var local_18: bool;
-    var local_19: bool;
 
     let e1_ = (b_4 - a_5);
     let e2_ = (c_5 - a_5);
@@ -720,32 +720,32 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_4: vec3<f32>, 
     let s_9 = (o_1 - a_5);
     let u_3 = (dot(s_9, p_9) * inv_1);
     if !((u_3 < 0f)) {
-        local_17 = (u_3 > 1f);
+        local_16 = (u_3 > 1f);
     } else {
-        local_17 = true;
+        local_16 = true;
     }
-    let _e28 = local_17;
+    let _e28 = local_16;
     if _e28 {
         return -1f;
     }
     let q_1 = cross(s_9, e1_);
     let v_13 = (dot(d_3, q_1) * inv_1);
     if !((v_13 < 0f)) {
-        local_18 = ((u_3 + v_13) > 1f);
+        local_17 = ((u_3 + v_13) > 1f);
     } else {
-        local_18 = true;
+        local_17 = true;
     }
-    let _e42 = local_18;
+    let _e42 = local_17;
     if _e42 {
         return -1f;
     }
     let t_6 = (dot(e2_, q_1) * inv_1);
     if (t_6 > t_min) {
-        local_19 = (t_6 < t_max_1);
+        local_18 = (t_6 < t_max_1);
     } else {
-        local_19 = false;
+        local_18 = false;
     }
-    let _e51 = local_19;
+    let _e51 = local_18;
     if _e51 {
         return t_6;
     }
@@ -882,8 +882,8 @@ fn bsh_inner_scale(a_7: f32, v_4: vec3<f32>, d2_6: f32, r_6: vec3<f32>, rl_2: ve
 }
 
 fn bsh_reaches(node_3: BshNode, x_5: vec3<f32>, r_7: vec3<f32>, rl_3: vec4<f32>) -> bool {
+    var local_19: bool;
     var local_20: bool;
-    var local_21: bool;
 
     let _e6 = sphere_contains_point(node_3.center, node_3.radius, x_5);
     if _e6 {
@@ -891,11 +891,11 @@ fn bsh_reaches(node_3: BshNode, x_5: vec3<f32>, r_7: vec3<f32>, rl_3: vec4<f32>)
     }
     if !((rl_3.w <= 1f)) {
         let _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001f)), x_5);
-        local_20 = !(_e20);
+        local_19 = !(_e20);
     } else {
-        local_20 = true;
+        local_19 = true;
     }
-    let _e23 = local_20;
+    let _e23 = local_19;
     if _e23 {
         return false;
     }
@@ -916,11 +916,11 @@ fn bsh_reaches(node_3: BshNode, x_5: vec3<f32>, r_7: vec3<f32>, rl_3: vec4<f32>)
     let s_c = (_e50 * 1.001f);
     let reach = (node_3.extent + (sqrt(s_c) * _e25));
     if (d2_9 <= ((node_3.radius * node_3.radius) * s_c)) {
-        local_21 = (d2_9 <= (reach * reach));
+        local_20 = (d2_9 <= (reach * reach));
     } else {
-        local_21 = false;
+        local_20 = false;
     }
-    let _e67 = local_21;
+    let _e67 = local_20;
     return _e67;
 }
 
@@ -932,7 +932,7 @@ fn bsh_reaches_box(node_4: BshNode, lo: vec3<f32>, hi: vec3<f32>, w_4: f32) -> b
 fn bsh_subtree(nodes_3: u32, s_1: u32, depth: u32) -> u32 {
     var i_2: u32;
     var level: u32 = 0u;
-    var local_22: bool;
+    var local_21: bool;
 
     let _e3 = bsh_first(nodes_3);
     i_2 = _e3;
@@ -940,11 +940,11 @@ fn bsh_subtree(nodes_3: u32, s_1: u32, depth: u32) -> u32 {
         let _e7 = level;
         if (_e7 < depth) {
             let _e11 = i_2;
-            local_22 = (_e11 != BSH_NONE);
+            local_21 = (_e11 != BSH_NONE);
         } else {
-            local_22 = false;
+            local_21 = false;
         }
-        let _e15 = local_22;
+        let _e15 = local_21;
         if _e15 {
         } else {
             break;
@@ -1015,8 +1015,8 @@ fn next_threshold(sum: f32, h_1: ptr<function, u32>) -> f32 {
 
 fn connect_record(l_4: GpuLight, x_6: vec3<f32>, n_8: vec3<f32>, ng_1: vec3<f32>, r2_3: f32, rt2_4: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32, trace_1: bool) -> Connection {
     var c_6: Connection;
+    var local_22: bool;
     var local_23: bool;
-    var local_24: bool;
 
     c_6.e = vec3(0f);
     let _e16 = light_point(l_4, u1_2, u2_2);
@@ -1029,16 +1029,16 @@ fn connect_record(l_4: GpuLight, x_6: vec3<f32>, n_8: vec3<f32>, ng_1: vec3<f32>
         if trace_1 {
             let _e33 = c_6.y;
             let _e34 = occluded((x_6 + (ng_1 * eps)), _e33);
-            local_24 = _e34;
+            local_23 = _e34;
         } else {
-            local_24 = false;
+            local_23 = false;
         }
-        let _e36 = local_24;
-        local_23 = _e36;
+        let _e36 = local_23;
+        local_22 = _e36;
     } else {
-        local_23 = true;
+        local_22 = true;
     }
-    let _e38 = local_23;
+    let _e38 = local_22;
     if _e38 {
         let _e39 = c_6;
         return _e39;
@@ -1188,9 +1188,9 @@ fn box_is_empty(b_6: WorkgroupBox) -> bool {
 fn tile_subtree(s_4: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: u32) -> u32 {
     var p_8: u32;
     var b_7: u32;
+    var local_24: bool;
     var local_25: bool;
     var local_26: bool;
-    var local_27: bool;
 
     let _e8 = bsh_subtree(BSH, s_4, BSH_TILE_DEPTH);
     if (_e8 == BSH_NONE) {
@@ -1205,16 +1205,16 @@ fn tile_subtree(s_4: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: 
         if (_e23 != end_1) {
             if !(!(list)) {
                 let _e31 = p_8;
-                local_26 = (_e31 < to);
+                local_25 = (_e31 < to);
             } else {
-                local_26 = true;
+                local_25 = true;
             }
-            let _e34 = local_26;
-            local_25 = _e34;
+            let _e34 = local_25;
+            local_24 = _e34;
         } else {
-            local_25 = false;
+            local_24 = false;
         }
-        let _e36 = local_25;
+        let _e36 = local_24;
         if _e36 {
         } else {
             break;
@@ -1222,11 +1222,11 @@ fn tile_subtree(s_4: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: 
         {
             if list {
                 let _e39 = p_8;
-                local_27 = (_e39 >= start_2);
+                local_26 = (_e39 >= start_2);
             } else {
-                local_27 = false;
+                local_26 = false;
             }
-            let _e42 = local_27;
+            let _e42 = local_26;
             if _e42 {
                 let _e44 = p_8;
                 let _e47 = b_7;
@@ -1247,68 +1247,75 @@ fn tile_subtree(s_4: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: 
 }
 
 fn tile_walk_begin(li_6: u32, x_10: vec3<f32>, w_7: f32, has_1: bool) -> TileWalk {
+    var local_27: bool;
     var t_2: TileWalk;
     var s_5: u32;
     var sum_1: u32 = 0u;
     var s_6: u32 = 0u;
 
-    let _e8 = atomicMax((&tile_scale), select(0u, bitcast<u32>(w_7), has_1));
-    let _e9 = workgroup_box(li_6, x_10, has_1);
-    let _e13 = workgroupUniformLoad((&tile_scale));
-    t_2 = TileWalk(_e9.lo, _e9.hi, bitcast<f32>(_e13), 0u);
-    let _e18 = box_is_empty(_e9);
-    if _e18 {
-        let _e19 = t_2;
-        return _e19;
+    if has_1 {
+        local_27 = (w_7 >= 0f);
+    } else {
+        local_27 = false;
+    }
+    let _e12 = local_27;
+    let _e14 = atomicMax((&tile_scale), select(0u, bitcast<u32>(w_7), _e12));
+    let _e15 = workgroup_box(li_6, x_10, has_1);
+    let _e19 = workgroupUniformLoad((&tile_scale));
+    t_2 = TileWalk(_e15.lo, _e15.hi, bitcast<f32>(_e19), 0u);
+    let _e24 = box_is_empty(_e15);
+    if _e24 {
+        let _e25 = t_2;
+        return _e25;
     }
     s_5 = li_6;
     loop {
-        let _e21 = s_5;
-        if (_e21 < BSH_TILE_SUBTREES) {
+        let _e27 = s_5;
+        if (_e27 < BSH_TILE_SUBTREES) {
         } else {
             break;
         }
         {
-            let _e25 = s_5;
-            let _e27 = s_5;
-            let _e28 = t_2;
-            let _e33 = tile_subtree(_e27, _e28, false, 0u, 0u, 0u);
-            subtree_at[_e25] = _e33;
+            let _e31 = s_5;
+            let _e33 = s_5;
+            let _e34 = t_2;
+            let _e39 = tile_subtree(_e33, _e34, false, 0u, 0u, 0u);
+            subtree_at[_e31] = _e39;
         }
         continuing {
-            let _e34 = s_5;
-            s_5 = (_e34 + TILE_THREADS);
+            let _e40 = s_5;
+            s_5 = (_e40 + TILE_THREADS);
         }
     }
     workgroupBarrier();
     if (li_6 == 0u) {
         loop {
-            let _e43 = s_6;
-            if (_e43 < BSH_TILE_SUBTREES) {
+            let _e49 = s_6;
+            if (_e49 < BSH_TILE_SUBTREES) {
             } else {
                 break;
             }
             {
-                let _e47 = s_6;
-                let c_13 = subtree_at[_e47];
-                let _e51 = s_6;
-                let _e53 = sum_1;
-                subtree_at[_e51] = _e53;
-                let _e54 = sum_1;
-                sum_1 = (_e54 + c_13);
+                let _e53 = s_6;
+                let c_13 = subtree_at[_e53];
+                let _e57 = s_6;
+                let _e59 = sum_1;
+                subtree_at[_e57] = _e59;
+                let _e60 = sum_1;
+                sum_1 = (_e60 + c_13);
             }
             continuing {
-                let _e57 = s_6;
-                s_6 = (_e57 + 1u);
+                let _e63 = s_6;
+                s_6 = (_e63 + 1u);
             }
         }
-        let _e60 = sum_1;
-        tile_total = _e60;
+        let _e66 = sum_1;
+        tile_total = _e66;
     }
-    let _e63 = workgroupUniformLoad((&tile_total));
-    t_2.total = _e63;
-    let _e64 = t_2;
-    return _e64;
+    let _e69 = workgroupUniformLoad((&tile_total));
+    t_2.total = _e69;
+    let _e70 = t_2;
+    return _e70;
 }
 
 fn tile_walk_fill(li_7: u32, t_3: TileWalk, start_3: u32) -> u32 {
@@ -1478,10 +1485,9 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
     var h: u32;
     var t: Shaded = Shaded(vec3(0f), vec3(0f), vec3(0f));
     var picks: WeightedPicks;
-    var local_4: bool;
     var start: u32 = 0u;
     var j: u32;
-    var local_5: bool;
+    var local_4: bool;
     var keys: array<vec2<u32>, 8>;
     var held: array<bool, 8>;
     var k: u32 = 0u;
@@ -1567,61 +1573,55 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
     h = _e140;
     let _e150 = weighted_picks(_e139);
     picks = _e150;
-    if has_2 {
-        local_4 = (_e116.w >= 0f);
-    } else {
-        local_4 = false;
-    }
-    let _e159 = local_4;
-    let _e160 = tile_walk_begin(lid, x_14, _e116.w, _e159);
+    let _e153 = tile_walk_begin(lid, x_14, _e116.w, has_2);
     loop {
-        let _e163 = start;
-        if (_e163 < _e160.total) {
+        let _e156 = start;
+        if (_e156 < _e153.total) {
         } else {
             break;
         }
         {
-            let _e166 = start;
-            let _e167 = tile_walk_fill(lid, _e160, _e166);
+            let _e159 = start;
+            let _e160 = tile_walk_fill(lid, _e153, _e159);
             j = 0u;
             loop {
-                let _e170 = j;
-                if (_e170 < _e167) {
+                let _e163 = j;
+                if (_e163 < _e160) {
                 } else {
                     break;
                 }
                 {
-                    let _e173 = j;
-                    let b_9 = tile_list[_e173];
+                    let _e166 = j;
+                    let b_9 = tile_list[_e166];
                     if !(!(has_2)) {
-                        let _e182 = bsh_nodes[b_9];
-                        let _e183 = r;
-                        let _e184 = bsh_reaches(_e182, x_14, _e183, _e116);
-                        local_5 = !(_e184);
+                        let _e175 = bsh_nodes[b_9];
+                        let _e176 = r;
+                        let _e177 = bsh_reaches(_e175, x_14, _e176, _e116);
+                        local_4 = !(_e177);
                     } else {
-                        local_5 = true;
+                        local_4 = true;
                     }
-                    let _e187 = local_5;
-                    if _e187 {
+                    let _e180 = local_4;
+                    if _e180 {
                         continue;
                     }
                     let li_10 = bsh_nodes[b_9].light;
-                    let _e192 = n;
-                    let _e193 = r;
-                    let _e194 = lobe;
-                    let _e195 = light_weight(li_10, x_14, _e192, _e193, _e194, _e116);
-                    weighted_offer((&picks), li_10, _e195);
+                    let _e185 = n;
+                    let _e186 = r;
+                    let _e187 = lobe;
+                    let _e188 = light_weight(li_10, x_14, _e185, _e186, _e187, _e116);
+                    weighted_offer((&picks), li_10, _e188);
                 }
                 continuing {
-                    let _e197 = j;
-                    j = (_e197 + 1u);
+                    let _e190 = j;
+                    j = (_e190 + 1u);
                 }
             }
             workgroupBarrier();
         }
         continuing {
-            let _e199 = start;
-            start = (_e199 + TILE_LIST);
+            let _e192 = start;
+            start = (_e192 + TILE_LIST);
         }
     }
     if !(has_2) {
@@ -1631,100 +1631,100 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
         }
         return;
     }
-    let _e210 = picks.w_sum;
-    if (_e210 > 0f) {
+    let _e203 = picks.w_sum;
+    if (_e203 > 0f) {
         loop {
-            let _e217 = k;
-            if (_e217 < K) {
+            let _e210 = k;
+            if (_e210 < K) {
             } else {
                 break;
             }
             {
-                let _e221 = k;
-                let _e226 = k;
-                let _e228 = picks.light[_e226];
-                let _e231 = lights[_e228].kind;
-                let own = select(0u, (_e221 + 1u), (_e231 == LIGHT_TRIANGLE));
+                let _e214 = k;
+                let _e219 = k;
+                let _e221 = picks.light[_e219];
+                let _e224 = lights[_e221].kind;
+                let own = select(0u, (_e214 + 1u), (_e224 == LIGHT_TRIANGLE));
+                let _e228 = k;
+                let _e231 = k;
+                let _e233 = picks.light[_e231];
+                keys[_e228] = vec2<u32>(_e233, own);
                 let _e235 = k;
-                let _e238 = k;
-                let _e240 = picks.light[_e238];
-                keys[_e235] = vec2<u32>(_e240, own);
-                let _e242 = k;
-                held[_e242] = true;
+                held[_e235] = true;
             }
             continuing {
-                let _e246 = k;
-                k = (_e246 + 1u);
+                let _e239 = k;
+                k = (_e239 + 1u);
             }
         }
-        let _e248 = keys;
-        let _e249 = held;
-        let _e250 = first_holders(_e248, _e249);
+        let _e241 = keys;
+        let _e242 = held;
+        let _e243 = first_holders(_e241, _e242);
         loop {
-            let _e253 = k_1;
-            if (_e253 < K) {
+            let _e246 = k_1;
+            if (_e246 < K) {
             } else {
                 break;
             }
             {
-                let _e256 = h;
-                let _e257 = pcg_hash(_e256);
-                h = _e257;
-                let _e258 = h;
-                let _e259 = xi_from_bits(_e258);
-                let _e260 = h;
-                let _e261 = pcg_hash(_e260);
-                h = _e261;
-                let _e262 = h;
-                let _e263 = xi_from_bits(_e262);
-                let _e265 = k_1;
-                let li_11 = picks.light[_e265];
+                let _e249 = h;
+                let _e250 = pcg_hash(_e249);
+                h = _e250;
+                let _e251 = h;
+                let _e252 = xi_from_bits(_e251);
+                let _e253 = h;
+                let _e254 = pcg_hash(_e253);
+                h = _e254;
+                let _e255 = h;
+                let _e256 = xi_from_bits(_e255);
+                let _e258 = k_1;
+                let li_11 = picks.light[_e258];
                 copies = 0u;
-                let _e270 = k_1;
-                j_1 = _e270;
+                let _e263 = k_1;
+                j_1 = _e263;
                 loop {
-                    let _e272 = j_1;
-                    if (_e272 < K) {
+                    let _e265 = j_1;
+                    if (_e265 < K) {
                     } else {
                         break;
                     }
                     {
-                        let _e275 = copies;
-                        let _e278 = j_1;
-                        let _e280 = k_1;
-                        copies = (_e275 + select(0u, 1u, (_e250[_e278] == _e280)));
+                        let _e268 = copies;
+                        let _e271 = j_1;
+                        let _e273 = k_1;
+                        copies = (_e268 + select(0u, 1u, (_e243[_e271] == _e273)));
                     }
                     continuing {
-                        let _e285 = j_1;
-                        j_1 = (_e285 + 1u);
+                        let _e278 = j_1;
+                        j_1 = (_e278 + 1u);
                     }
                 }
-                let _e287 = copies;
-                if (_e287 > 0u) {
-                    let _e290 = t;
-                    let _e291 = n;
-                    let _e292 = r;
-                    let _e293 = m;
-                    let _e295 = picks.w_sum;
-                    let _e297 = k_1;
-                    let _e299 = picks.w[_e297];
-                    let _e301 = weighted_pick_weight(_e295, _e299, K);
-                    let _e302 = copies;
-                    let _e305 = shade_pick(li_11, x_14, _e291, _e292, _e116, _e293, (_e301 * f32(_e302)), _e259, _e263, eps_4);
-                    let _e306 = add(_e290, _e305);
-                    t = _e306;
+                let _e280 = copies;
+                if (_e280 > 0u) {
+                    let _e283 = t;
+                    let _e284 = n;
+                    let _e285 = r;
+                    let _e286 = m;
+                    let _e288 = picks.w_sum;
+                    let _e290 = k_1;
+                    let _e292 = picks.w[_e290];
+                    let _e294 = weighted_pick_weight(_e288, _e292, K);
+                    let _e295 = copies;
+                    let _e298 = shade_pick(li_11, x_14, _e284, _e285, _e116, _e286, (_e294 * f32(_e295)), _e252, _e256, eps_4);
+                    let _e299 = add(_e283, _e298);
+                    t = _e299;
                 }
             }
             continuing {
-                let _e308 = k_1;
-                k_1 = (_e308 + 1u);
+                let _e301 = k_1;
+                k_1 = (_e301 + 1u);
             }
         }
     }
     let count = picks.n;
-    let _e314 = t.e;
-    textureStore(out_tex, texel_1, vec4<f32>(_e314, f32(count)));
-    let _e319 = t.specular;
-    textureStore(specular_tex, texel_1, vec4<f32>(_e319, 0f));
+    let _e307 = t.e;
+    textureStore(out_tex, texel_1, vec4<f32>(_e307, f32(count)));
+    let _e312 = t.specular;
+    textureStore(specular_tex, texel_1, vec4<f32>(_e312, 0f));
     return;
 }

@@ -246,28 +246,28 @@ float connection_factor(float cos_x, float d2_3, float rt2_1, float w) {
 }
 
 float connection_cosine(vec3 x_3, vec3 y, vec3 n_1, vec3 ng, float r2_1) {
+    bool local_5 = false;
     bool local_6 = false;
-    bool local_7 = false;
     vec3 v_4 = (x_3 - y);
     float d2_6 = dot(v_4, v_4);
     bool _e7 = slc_keep(r2_1, d2_6);
     if (!(!(_e7))) {
-        local_6 = !((d2_6 > 0.0));
+        local_5 = !((d2_6 > 0.0));
     } else {
-        local_6 = true;
+        local_5 = true;
     }
-    bool _e16 = local_6;
+    bool _e16 = local_5;
     if (_e16) {
         return 0.0;
     }
     vec3 w_9 = (v_4 / vec3(sqrt(d2_6)));
     float cos_x_1 = -(dot(n_1, w_9));
     if (!((cos_x_1 <= 0.0))) {
-        local_7 = (dot(ng, w_9) >= 0.0);
+        local_6 = (dot(ng, w_9) >= 0.0);
     } else {
-        local_7 = true;
+        local_6 = true;
     }
-    bool _e32 = local_7;
+    bool _e32 = local_6;
     if (_e32) {
         return 0.0;
     }
@@ -423,7 +423,7 @@ float ies_lerp_t(float a0_, float a1_, float x_7) {
 }
 
 float ies_candela(uint tab_2, uint base_1, float gamma, float c_4) {
-    bool local_8 = false;
+    bool local_7 = false;
     float _e4 = at(tab_2, base_1);
     uint _e5 = to_u32_(_e4);
     float _e8 = at(tab_2, (base_1 + 1u));
@@ -434,11 +434,11 @@ float ies_candela(uint tab_2, uint base_1, float gamma, float c_4) {
     float _e14 = at(tab_2, v0_);
     if (!((gamma < _e14))) {
         float _e22 = at(tab_2, ((v0_ + _e5) - 1u));
-        local_8 = (gamma > _e22);
+        local_7 = (gamma > _e22);
     } else {
-        local_8 = true;
+        local_7 = true;
     }
-    bool _e25 = local_8;
+    bool _e25 = local_7;
     if (_e25) {
         return 0.0;
     }
@@ -575,22 +575,22 @@ vec4 range_lobe(vec4 lobe_4) {
 }
 
 float cone_cos_of(vec3 v, float d2_4, float a_5, vec3 d) {
+    bool local_8 = false;
     bool local_9 = false;
-    bool local_10 = false;
     float vd = dot(v, d);
     float h2_ = (d2_4 - (a_5 * a_5));
     if (!((h2_ <= 0.0))) {
         if ((vd >= 0.0)) {
-            local_10 = ((vd * vd) >= h2_);
+            local_9 = ((vd * vd) >= h2_);
         } else {
-            local_10 = false;
+            local_9 = false;
         }
-        bool _e19 = local_10;
-        local_9 = _e19;
+        bool _e19 = local_9;
+        local_8 = _e19;
     } else {
-        local_9 = true;
+        local_8 = true;
     }
-    bool _e21 = local_9;
+    bool _e21 = local_8;
     if (_e21) {
         return 1.0;
     }
@@ -619,15 +619,15 @@ float range_scale_toward(vec4 rl_1, vec3 center_1, float radius_1, vec3 p_1, vec
 }
 
 vec3 triangle_normal(vec3 a_6, vec3 b_4, vec3 c_5) {
-    bool local_11 = false;
+    bool local_10 = false;
     vec3 n_13 = cross((b_4 - a_6), (c_5 - a_6));
     float l2_ = dot(n_13, n_13);
     if (!(!((l2_ > 0.0)))) {
-        local_11 = !((l2_ < 3e38));
+        local_10 = !((l2_ < 3e38));
     } else {
-        local_11 = true;
+        local_10 = true;
     }
-    bool _e17 = local_11;
+    bool _e17 = local_10;
     if (_e17) {
         return vec3(0.0, 0.0, 0.0);
     }
@@ -694,19 +694,19 @@ float bsh_inner_scale(float a_8, vec3 v_1, float d2_5, vec3 r_4, vec4 rl_2) {
 }
 
 bool bsh_reaches(BshNode node_2, vec3 x_8, vec3 r_5, vec4 rl_3) {
+    bool local_11 = false;
     bool local_12 = false;
-    bool local_13 = false;
     bool _e6 = sphere_contains_point(node_2.center, node_2.radius, x_8);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
         bool _e20 = sphere_contains_point(node_2.center, (node_2.radius * (rl_3.w * 1.0001)), x_8);
-        local_12 = !(_e20);
+        local_11 = !(_e20);
     } else {
-        local_12 = true;
+        local_11 = true;
     }
-    bool _e23 = local_12;
+    bool _e23 = local_11;
     if (_e23) {
         return false;
     }
@@ -727,11 +727,11 @@ bool bsh_reaches(BshNode node_2, vec3 x_8, vec3 r_5, vec4 rl_3) {
     float s_c = (_e50 * 1.001);
     float reach = (node_2.extent + (sqrt(s_c) * _e25));
     if ((d2_7 <= ((node_2.radius * node_2.radius) * s_c))) {
-        local_13 = (d2_7 <= (reach * reach));
+        local_12 = (d2_7 <= (reach * reach));
     } else {
-        local_13 = false;
+        local_12 = false;
     }
-    bool _e67 = local_13;
+    bool _e67 = local_12;
     return _e67;
 }
 
@@ -743,18 +743,18 @@ bool bsh_reaches_box(BshNode node_3, vec3 lo_3, vec3 hi_3, float w_4) {
 uint bsh_subtree(uint nodes_3, uint s_1, uint depth) {
     uint i_2 = 0u;
     uint level = 0u;
-    bool local_14 = false;
+    bool local_13 = false;
     uint _e3 = bsh_first(nodes_3);
     i_2 = _e3;
     while(true) {
         uint _e7 = level;
         if ((_e7 < depth)) {
             uint _e11 = i_2;
-            local_14 = (_e11 != BSH_NONE);
+            local_13 = (_e11 != BSH_NONE);
         } else {
-            local_14 = false;
+            local_13 = false;
         }
-        bool _e15 = local_14;
+        bool _e15 = local_13;
         if (_e15) {
         } else {
             break;
@@ -841,8 +841,8 @@ void reservoir_offer(inout Picks picks_1, inout uint h_1, uint light) {
 
 Connection connect_record(GpuLight l_2, vec3 x_9, vec3 n_8, vec3 ng_1, float r2_2, float rt2_2, float w_res, float u1_2, float u2_2, float eps, bool trace) {
     Connection c_6 = Connection(vec3(0.0), vec3(0.0), 0.0);
+    bool local_14 = false;
     bool local_15 = false;
-    bool local_16 = false;
     c_6.e = vec3(0.0);
     vec3 _e16 = light_point(l_2, u1_2, u2_2);
     c_6.y = _e16;
@@ -854,16 +854,16 @@ Connection connect_record(GpuLight l_2, vec3 x_9, vec3 n_8, vec3 ng_1, float r2_
         if (trace) {
             vec3 _e33 = c_6.y;
             bool _e34 = occluded((x_9 + (ng_1 * eps)), _e33);
-            local_16 = _e34;
+            local_15 = _e34;
         } else {
-            local_16 = false;
+            local_15 = false;
         }
-        bool _e36 = local_16;
-        local_15 = _e36;
+        bool _e36 = local_15;
+        local_14 = _e36;
     } else {
-        local_15 = true;
+        local_14 = true;
     }
-    bool _e38 = local_15;
+    bool _e38 = local_14;
     if (_e38) {
         Connection _e39 = c_6;
         return _e39;
@@ -951,9 +951,9 @@ bool box_is_empty(WorkgroupBox b_6) {
 uint tile_subtree(uint s_3, TileWalk t_2, bool list, uint at_1, uint start_3, uint to) {
     uint p_3 = 0u;
     uint b_7 = 0u;
+    bool local_16 = false;
     bool local_17 = false;
     bool local_18 = false;
-    bool local_19 = false;
     uint _e8 = bsh_subtree(BSH, s_3, BSH_TILE_DEPTH);
     if ((_e8 == BSH_NONE)) {
         return 0u;
@@ -975,16 +975,16 @@ uint tile_subtree(uint s_3, TileWalk t_2, bool list, uint at_1, uint start_3, ui
         if ((_e23 != end_1)) {
             if (!(!(list))) {
                 uint _e31 = p_3;
-                local_18 = (_e31 < to);
+                local_17 = (_e31 < to);
             } else {
-                local_18 = true;
+                local_17 = true;
             }
-            bool _e34 = local_18;
-            local_17 = _e34;
+            bool _e34 = local_17;
+            local_16 = _e34;
         } else {
-            local_17 = false;
+            local_16 = false;
         }
-        bool _e36 = local_17;
+        bool _e36 = local_16;
         if (_e36) {
         } else {
             break;
@@ -992,11 +992,11 @@ uint tile_subtree(uint s_3, TileWalk t_2, bool list, uint at_1, uint start_3, ui
         {
             if (list) {
                 uint _e39 = p_3;
-                local_19 = (_e39 >= start_3);
+                local_18 = (_e39 >= start_3);
             } else {
-                local_19 = false;
+                local_18 = false;
             }
-            bool _e42 = local_19;
+            bool _e42 = local_18;
             if (_e42) {
                 uint _e44 = p_3;
                 uint _e47 = b_7;
@@ -1011,42 +1011,49 @@ uint tile_subtree(uint s_3, TileWalk t_2, bool list, uint at_1, uint start_3, ui
 }
 
 TileWalk tile_walk_begin(uint li_3, vec3 x_11, float w_6, bool has_1) {
+    bool local_19 = false;
     TileWalk t_3 = TileWalk(vec3(0.0), vec3(0.0), 0.0, 0u);
     uint s_4 = 0u;
     uint sum = 0u;
     uint s_5 = 0u;
-    uint _e8 = atomicMax(tile_scale, (has_1 ? floatBitsToUint(w_6) : 0u));
-    WorkgroupBox _e9 = workgroup_box(li_3, x_11, has_1);
+    if (has_1) {
+        local_19 = (w_6 >= 0.0);
+    } else {
+        local_19 = false;
+    }
+    bool _e12 = local_19;
+    uint _e14 = atomicMax(tile_scale, (_e12 ? floatBitsToUint(w_6) : 0u));
+    WorkgroupBox _e15 = workgroup_box(li_3, x_11, has_1);
     memoryBarrierShared();
     barrier();
-    uint _e13 = tile_scale;
+    uint _e19 = tile_scale;
     memoryBarrierShared();
     barrier();
-    t_3 = TileWalk(_e9.lo, _e9.hi, uintBitsToFloat(_e13), 0u);
-    bool _e18 = box_is_empty(_e9);
-    if (_e18) {
-        TileWalk _e19 = t_3;
-        return _e19;
+    t_3 = TileWalk(_e15.lo, _e15.hi, uintBitsToFloat(_e19), 0u);
+    bool _e24 = box_is_empty(_e15);
+    if (_e24) {
+        TileWalk _e25 = t_3;
+        return _e25;
     }
     s_4 = li_3;
     bool loop_init_2 = true;
     while(true) {
         if (!loop_init_2) {
-            uint _e34 = s_4;
-            s_4 = (_e34 + TILE_THREADS);
+            uint _e40 = s_4;
+            s_4 = (_e40 + TILE_THREADS);
         }
         loop_init_2 = false;
-        uint _e21 = s_4;
-        if ((_e21 < BSH_TILE_SUBTREES)) {
+        uint _e27 = s_4;
+        if ((_e27 < BSH_TILE_SUBTREES)) {
         } else {
             break;
         }
         {
-            uint _e25 = s_4;
-            uint _e27 = s_4;
-            TileWalk _e28 = t_3;
-            uint _e33 = tile_subtree(_e27, _e28, false, 0u, 0u, 0u);
-            subtree_at[_e25] = _e33;
+            uint _e31 = s_4;
+            uint _e33 = s_4;
+            TileWalk _e34 = t_3;
+            uint _e39 = tile_subtree(_e33, _e34, false, 0u, 0u, 0u);
+            subtree_at[_e31] = _e39;
         }
     }
     memoryBarrierShared();
@@ -1055,36 +1062,36 @@ TileWalk tile_walk_begin(uint li_3, vec3 x_11, float w_6, bool has_1) {
         bool loop_init_3 = true;
         while(true) {
             if (!loop_init_3) {
-                uint _e57 = s_5;
-                s_5 = (_e57 + 1u);
+                uint _e63 = s_5;
+                s_5 = (_e63 + 1u);
             }
             loop_init_3 = false;
-            uint _e43 = s_5;
-            if ((_e43 < BSH_TILE_SUBTREES)) {
+            uint _e49 = s_5;
+            if ((_e49 < BSH_TILE_SUBTREES)) {
             } else {
                 break;
             }
             {
-                uint _e47 = s_5;
-                uint c_10 = subtree_at[_e47];
-                uint _e51 = s_5;
-                uint _e53 = sum;
-                subtree_at[_e51] = _e53;
-                uint _e54 = sum;
-                sum = (_e54 + c_10);
+                uint _e53 = s_5;
+                uint c_10 = subtree_at[_e53];
+                uint _e57 = s_5;
+                uint _e59 = sum;
+                subtree_at[_e57] = _e59;
+                uint _e60 = sum;
+                sum = (_e60 + c_10);
             }
         }
-        uint _e60 = sum;
-        tile_total = _e60;
+        uint _e66 = sum;
+        tile_total = _e66;
     }
     memoryBarrierShared();
     barrier();
-    uint _e63 = tile_total;
+    uint _e69 = tile_total;
     memoryBarrierShared();
     barrier();
-    t_3.total = _e63;
-    TileWalk _e64 = t_3;
-    return _e64;
+    t_3.total = _e69;
+    TileWalk _e70 = t_3;
+    return _e70;
 }
 
 uint tile_walk_fill(uint li_4, TileWalk t_4, uint start_4) {
@@ -1185,10 +1192,9 @@ void main() {
     Shaded t = Shaded(vec3(0.0), vec3(0.0), vec3(0.0));
     Picks picks = Picks(uint[8](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u), 0u);
     uint hr = 0u;
-    bool local_4 = false;
     uint start = 0u;
     uint j = 0u;
-    bool local_5 = false;
+    bool local_4 = false;
     uint k = 0u;
     uint _e5 = _group_0_binding_0_cs.width;
     if ((gid.x < _e5)) {
@@ -1248,54 +1254,48 @@ void main() {
     h = _e103;
     picks.n = 0u;
     hr = _e102;
-    if (has_2) {
-        local_4 = (_e79.w >= 0.0);
-    } else {
-        local_4 = false;
-    }
-    bool _e124 = local_4;
-    TileWalk _e125 = tile_walk_begin(lid, x_15, _e79.w, _e124);
+    TileWalk _e118 = tile_walk_begin(lid, x_15, _e79.w, has_2);
     bool loop_init_5 = true;
     while(true) {
         if (!loop_init_5) {
-            uint _e160 = start;
-            start = (_e160 + TILE_LIST);
+            uint _e153 = start;
+            start = (_e153 + TILE_LIST);
         }
         loop_init_5 = false;
-        uint _e128 = start;
-        if ((_e128 < _e125.total)) {
+        uint _e121 = start;
+        if ((_e121 < _e118.total)) {
         } else {
             break;
         }
         {
-            uint _e131 = start;
-            uint _e132 = tile_walk_fill(lid, _e125, _e131);
+            uint _e124 = start;
+            uint _e125 = tile_walk_fill(lid, _e118, _e124);
             j = 0u;
             bool loop_init_6 = true;
             while(true) {
                 if (!loop_init_6) {
-                    uint _e158 = j;
-                    j = (_e158 + 1u);
+                    uint _e151 = j;
+                    j = (_e151 + 1u);
                 }
                 loop_init_6 = false;
-                uint _e135 = j;
-                if ((_e135 < _e132)) {
+                uint _e128 = j;
+                if ((_e128 < _e125)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e138 = j;
-                    uint b_10 = tile_list[_e138];
+                    uint _e131 = j;
+                    uint b_10 = tile_list[_e131];
                     if (!(!(has_2))) {
-                        BshNode _e147 = _group_1_binding_4_cs[b_10];
-                        vec3 _e148 = r;
-                        bool _e149 = bsh_reaches(_e147, x_15, _e148, _e79);
-                        local_5 = !(_e149);
+                        BshNode _e140 = _group_1_binding_4_cs[b_10];
+                        vec3 _e141 = r;
+                        bool _e142 = bsh_reaches(_e140, x_15, _e141, _e79);
+                        local_4 = !(_e142);
                     } else {
-                        local_5 = true;
+                        local_4 = true;
                     }
-                    bool _e152 = local_5;
-                    if (_e152) {
+                    bool _e145 = local_4;
+                    if (_e145) {
                         continue;
                     }
                     uint li_7 = _group_1_binding_4_cs[b_10].light;
@@ -1312,46 +1312,46 @@ void main() {
         }
         return;
     }
-    uint _e168 = picks.n;
-    float _e170 = reservoir_weight(_e168, K);
+    uint _e161 = picks.n;
+    float _e163 = reservoir_weight(_e161, K);
     bool loop_init_7 = true;
     while(true) {
         if (!loop_init_7) {
-            uint _e198 = k;
-            k = (_e198 + 1u);
+            uint _e191 = k;
+            k = (_e191 + 1u);
         }
         loop_init_7 = false;
-        uint _e173 = k;
-        uint _e175 = picks.n;
-        if ((_e173 < min(_e175, K))) {
+        uint _e166 = k;
+        uint _e168 = picks.n;
+        if ((_e166 < min(_e168, K))) {
         } else {
             break;
         }
         {
-            uint _e179 = h;
-            uint _e180 = pcg_hash(_e179);
-            h = _e180;
-            uint _e181 = h;
-            float _e182 = xi_from_bits(_e181);
-            uint _e183 = h;
-            uint _e184 = pcg_hash(_e183);
-            h = _e184;
-            Shaded _e185 = t;
-            uint _e187 = k;
-            uint _e189 = picks.light[_e187];
-            vec3 _e190 = n;
-            vec3 _e191 = r;
-            Material _e192 = m;
-            uint _e193 = h;
-            float _e194 = xi_from_bits(_e193);
-            Shaded _e195 = shade_pick(_e189, x_15, _e190, _e191, _e79, _e192, _e170, _e182, _e194, eps_4);
-            Shaded _e196 = add(_e185, _e195);
-            t = _e196;
+            uint _e172 = h;
+            uint _e173 = pcg_hash(_e172);
+            h = _e173;
+            uint _e174 = h;
+            float _e175 = xi_from_bits(_e174);
+            uint _e176 = h;
+            uint _e177 = pcg_hash(_e176);
+            h = _e177;
+            Shaded _e178 = t;
+            uint _e180 = k;
+            uint _e182 = picks.light[_e180];
+            vec3 _e183 = n;
+            vec3 _e184 = r;
+            Material _e185 = m;
+            uint _e186 = h;
+            float _e187 = xi_from_bits(_e186);
+            Shaded _e188 = shade_pick(_e182, x_15, _e183, _e184, _e79, _e185, _e163, _e175, _e187, eps_4);
+            Shaded _e189 = add(_e178, _e188);
+            t = _e189;
         }
     }
     uint count = picks.n;
-    vec3 _e204 = t.e;
-    imageStore(_group_0_binding_3_cs, texel_1, vec4(_e204, float(count)));
+    vec3 _e197 = t.e;
+    imageStore(_group_0_binding_3_cs, texel_1, vec4(_e197, float(count)));
     return;
 }
 

@@ -273,28 +273,28 @@ float connection_factor(float cos_x, float d2_3, float rt2_1, float w) {
 }
 
 float connection_cosine(vec3 x_2, vec3 y, vec3 n_1, vec3 ng, float r2_1) {
+    bool local_5 = false;
     bool local_6 = false;
-    bool local_7 = false;
     vec3 v_5 = (x_2 - y);
     float d2_7 = dot(v_5, v_5);
     bool _e7 = slc_keep(r2_1, d2_7);
     if (!(!(_e7))) {
-        local_6 = !((d2_7 > 0.0));
+        local_5 = !((d2_7 > 0.0));
     } else {
-        local_6 = true;
+        local_5 = true;
     }
-    bool _e16 = local_6;
+    bool _e16 = local_5;
     if (_e16) {
         return 0.0;
     }
     vec3 w_9 = (v_5 / vec3(sqrt(d2_7)));
     float cos_x_1 = -(dot(n_1, w_9));
     if (!((cos_x_1 <= 0.0))) {
-        local_7 = (dot(ng, w_9) >= 0.0);
+        local_6 = (dot(ng, w_9) >= 0.0);
     } else {
-        local_7 = true;
+        local_6 = true;
     }
-    bool _e32 = local_7;
+    bool _e32 = local_6;
     if (_e32) {
         return 0.0;
     }
@@ -426,22 +426,22 @@ float emitter_importance(vec3 center_1, float radius_1, float phi, vec3 axis_1, 
 }
 
 float cone_cos_of(vec3 v, float d2_4, float a_2, vec3 d) {
+    bool local_7 = false;
     bool local_8 = false;
-    bool local_9 = false;
     float vd = dot(v, d);
     float h2_ = (d2_4 - (a_2 * a_2));
     if (!((h2_ <= 0.0))) {
         if ((vd >= 0.0)) {
-            local_9 = ((vd * vd) >= h2_);
+            local_8 = ((vd * vd) >= h2_);
         } else {
-            local_9 = false;
+            local_8 = false;
         }
-        bool _e19 = local_9;
-        local_8 = _e19;
+        bool _e19 = local_8;
+        local_7 = _e19;
     } else {
-        local_8 = true;
+        local_7 = true;
     }
-    bool _e21 = local_8;
+    bool _e21 = local_7;
     if (_e21) {
         return 1.0;
     }
@@ -490,15 +490,15 @@ float light_importance(vec3 center_4, float radius_4, float phi_1, vec3 axis_2, 
 }
 
 float glossy_importance(vec3 center_5, float radius_5, float phi_2, vec3 axis_3, float cos_o_3, float cos_e_2, vec3 p_5, vec3 n_3, vec3 r_4, vec4 lobe_5) {
-    bool local_10 = false;
+    bool local_9 = false;
     float _e10 = emitter_importance(center_5, radius_5, phi_2, axis_3, cos_o_3, cos_e_2, p_5);
     float _e11 = cone_cos_toward(center_5, radius_5, p_5, n_3);
     if (!((_e10 <= 0.0))) {
-        local_10 = (_e11 <= 0.0);
+        local_9 = (_e11 <= 0.0);
     } else {
-        local_10 = true;
+        local_9 = true;
     }
-    bool _e20 = local_10;
+    bool _e20 = local_9;
     if (_e20) {
         return 0.0;
     }
@@ -528,20 +528,20 @@ float cone_weight(vec3 center_6, float radius_6, float phi_3, vec3 axis_4, float
 }
 
 bool finite3_(vec3 v_1) {
+    bool local_10 = false;
     bool local_11 = false;
-    bool local_12 = false;
     if ((abs(v_1.x) <= F32_MAX)) {
-        local_11 = (abs(v_1.y) <= F32_MAX);
+        local_10 = (abs(v_1.y) <= F32_MAX);
+    } else {
+        local_10 = false;
+    }
+    bool _e12 = local_10;
+    if (_e12) {
+        local_11 = (abs(v_1.z) <= F32_MAX);
     } else {
         local_11 = false;
     }
-    bool _e12 = local_11;
-    if (_e12) {
-        local_12 = (abs(v_1.z) <= F32_MAX);
-    } else {
-        local_12 = false;
-    }
-    bool _e20 = local_12;
+    bool _e20 = local_11;
     return _e20;
 }
 
@@ -574,9 +574,9 @@ float ray_aabb(vec3 o, vec3 inv_d, vec3 bmin_1, vec3 bmax_1, float t_max) {
 }
 
 float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_3, vec3 b_2, vec3 c_2, float t_min, float t_max_1) {
+    bool local_12 = false;
     bool local_13 = false;
     bool local_14 = false;
-    bool local_15 = false;
     vec3 e1_ = (b_2 - a_3);
     vec3 e2_ = (c_2 - a_3);
     vec3 p_9 = cross(d_3, e2_);
@@ -588,32 +588,32 @@ float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_3, vec3 b_2, vec3 c_2, float t_min
     vec3 s_9 = (o_1 - a_3);
     float u_3 = (dot(s_9, p_9) * inv);
     if (!((u_3 < 0.0))) {
-        local_13 = (u_3 > 1.0);
+        local_12 = (u_3 > 1.0);
     } else {
-        local_13 = true;
+        local_12 = true;
     }
-    bool _e28 = local_13;
+    bool _e28 = local_12;
     if (_e28) {
         return -1.0;
     }
     vec3 q_1 = cross(s_9, e1_);
     float v_10 = (dot(d_3, q_1) * inv);
     if (!((v_10 < 0.0))) {
-        local_14 = ((u_3 + v_10) > 1.0);
+        local_13 = ((u_3 + v_10) > 1.0);
     } else {
-        local_14 = true;
+        local_13 = true;
     }
-    bool _e42 = local_14;
+    bool _e42 = local_13;
     if (_e42) {
         return -1.0;
     }
     float t_7 = (dot(e2_, q_1) * inv);
     if ((t_7 > t_min)) {
-        local_15 = (t_7 < t_max_1);
+        local_14 = (t_7 < t_max_1);
     } else {
-        local_15 = false;
+        local_14 = false;
     }
-    bool _e51 = local_15;
+    bool _e51 = local_14;
     if (_e51) {
         return t_7;
     }
@@ -749,19 +749,19 @@ float bsh_inner_scale(float a_5, vec3 v_2, float d2_6, vec3 r_6, vec4 rl_2) {
 }
 
 bool bsh_reaches(BshNode node_3, vec3 x_5, vec3 r_7, vec4 rl_3) {
+    bool local_15 = false;
     bool local_16 = false;
-    bool local_17 = false;
     bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_5);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
         bool _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001)), x_5);
-        local_16 = !(_e20);
+        local_15 = !(_e20);
     } else {
-        local_16 = true;
+        local_15 = true;
     }
-    bool _e23 = local_16;
+    bool _e23 = local_15;
     if (_e23) {
         return false;
     }
@@ -782,11 +782,11 @@ bool bsh_reaches(BshNode node_3, vec3 x_5, vec3 r_7, vec4 rl_3) {
     float s_c = (_e50 * 1.001);
     float reach = (node_3.extent + (sqrt(s_c) * _e25));
     if ((d2_9 <= ((node_3.radius * node_3.radius) * s_c))) {
-        local_17 = (d2_9 <= (reach * reach));
+        local_16 = (d2_9 <= (reach * reach));
     } else {
-        local_17 = false;
+        local_16 = false;
     }
-    bool _e67 = local_17;
+    bool _e67 = local_16;
     return _e67;
 }
 
@@ -798,18 +798,18 @@ bool bsh_reaches_box(BshNode node_4, vec3 lo, vec3 hi, float w_3) {
 uint bsh_subtree(uint nodes_3, uint s_1, uint depth) {
     uint i_2 = 0u;
     uint level = 0u;
-    bool local_18 = false;
+    bool local_17 = false;
     uint _e3 = bsh_first(nodes_3);
     i_2 = _e3;
     while(true) {
         uint _e7 = level;
         if ((_e7 < depth)) {
             uint _e11 = i_2;
-            local_18 = (_e11 != BSH_NONE);
+            local_17 = (_e11 != BSH_NONE);
         } else {
-            local_18 = false;
+            local_17 = false;
         }
-        bool _e15 = local_18;
+        bool _e15 = local_17;
         if (_e15) {
         } else {
             break;
@@ -879,8 +879,8 @@ float next_threshold(float sum, inout uint h_1) {
 
 Connection connect_record(GpuLight l_2, vec3 x_6, vec3 n_5, vec3 ng_1, float r2_3, float rt2_4, float w_res, float u1_1, float u2_1, float eps, bool trace_1) {
     Connection c_3 = Connection(vec3(0.0), vec3(0.0), 0.0);
+    bool local_18 = false;
     bool local_19 = false;
-    bool local_20 = false;
     c_3.e = vec3(0.0);
     vec3 _e16 = light_point(l_2, u1_1, u2_1);
     c_3.y = _e16;
@@ -892,16 +892,16 @@ Connection connect_record(GpuLight l_2, vec3 x_6, vec3 n_5, vec3 ng_1, float r2_
         if (trace_1) {
             vec3 _e33 = c_3.y;
             bool _e34 = occluded((x_6 + (ng_1 * eps)), _e33);
-            local_20 = _e34;
+            local_19 = _e34;
         } else {
-            local_20 = false;
+            local_19 = false;
         }
-        bool _e36 = local_20;
-        local_19 = _e36;
+        bool _e36 = local_19;
+        local_18 = _e36;
     } else {
-        local_19 = true;
+        local_18 = true;
     }
-    bool _e38 = local_19;
+    bool _e38 = local_18;
     if (_e38) {
         Connection _e39 = c_3;
         return _e39;
@@ -995,14 +995,14 @@ void weighted_offer(inout WeightedPicks picks_2, uint li_3, float w_5) {
 }
 
 vec4 unproject_pixel(vec4 c0_, vec4 c1_, vec4 c2_, vec4 c3_, float px, float py, float width, float height, float depth_1) {
+    bool local_20 = false;
     bool local_21 = false;
-    bool local_22 = false;
     if ((depth_1 > 0.0)) {
-        local_21 = (depth_1 < 1.0);
+        local_20 = (depth_1 < 1.0);
     } else {
-        local_21 = false;
+        local_20 = false;
     }
-    bool _e16 = local_21;
+    bool _e16 = local_20;
     if (!(_e16)) {
         return vec4(0.0, 0.0, 0.0, 0.0);
     }
@@ -1012,11 +1012,11 @@ vec4 unproject_pixel(vec4 c0_, vec4 c1_, vec4 c2_, vec4 c3_, float px, float py,
     vec3 q_2 = vec3((p_10.x / p_10.w), (p_10.y / p_10.w), (p_10.z / p_10.w));
     if ((abs(p_10.w) > 0.0)) {
         bool _e59 = finite3_(q_2);
-        local_22 = _e59;
+        local_21 = _e59;
     } else {
-        local_22 = false;
+        local_21 = false;
     }
-    bool _e61 = local_22;
+    bool _e61 = local_21;
     if (_e61) {
         return vec4(q_2.x, q_2.y, q_2.z, 1.0);
     }
@@ -1095,9 +1095,9 @@ bool box_is_empty(WorkgroupBox b_4) {
 uint tile_subtree(uint s_4, TileWalk t_1, bool list, uint at, uint start_2, uint to) {
     uint p_8 = 0u;
     uint b_5 = 0u;
+    bool local_22 = false;
     bool local_23 = false;
     bool local_24 = false;
-    bool local_25 = false;
     uint _e8 = bsh_subtree(BSH, s_4, BSH_TILE_DEPTH);
     if ((_e8 == BSH_NONE)) {
         return 0u;
@@ -1119,16 +1119,16 @@ uint tile_subtree(uint s_4, TileWalk t_1, bool list, uint at, uint start_2, uint
         if ((_e23 != end_1)) {
             if (!(!(list))) {
                 uint _e31 = p_8;
-                local_24 = (_e31 < to);
+                local_23 = (_e31 < to);
             } else {
-                local_24 = true;
+                local_23 = true;
             }
-            bool _e34 = local_24;
-            local_23 = _e34;
+            bool _e34 = local_23;
+            local_22 = _e34;
         } else {
-            local_23 = false;
+            local_22 = false;
         }
-        bool _e36 = local_23;
+        bool _e36 = local_22;
         if (_e36) {
         } else {
             break;
@@ -1136,11 +1136,11 @@ uint tile_subtree(uint s_4, TileWalk t_1, bool list, uint at, uint start_2, uint
         {
             if (list) {
                 uint _e39 = p_8;
-                local_25 = (_e39 >= start_2);
+                local_24 = (_e39 >= start_2);
             } else {
-                local_25 = false;
+                local_24 = false;
             }
-            bool _e42 = local_25;
+            bool _e42 = local_24;
             if (_e42) {
                 uint _e44 = p_8;
                 uint _e47 = b_5;
@@ -1155,42 +1155,49 @@ uint tile_subtree(uint s_4, TileWalk t_1, bool list, uint at, uint start_2, uint
 }
 
 TileWalk tile_walk_begin(uint li_6, vec3 x_10, float w_6, bool has_1) {
+    bool local_25 = false;
     TileWalk t_2 = TileWalk(vec3(0.0), vec3(0.0), 0.0, 0u);
     uint s_5 = 0u;
     uint sum_1 = 0u;
     uint s_6 = 0u;
-    uint _e8 = atomicMax(tile_scale, (has_1 ? floatBitsToUint(w_6) : 0u));
-    WorkgroupBox _e9 = workgroup_box(li_6, x_10, has_1);
+    if (has_1) {
+        local_25 = (w_6 >= 0.0);
+    } else {
+        local_25 = false;
+    }
+    bool _e12 = local_25;
+    uint _e14 = atomicMax(tile_scale, (_e12 ? floatBitsToUint(w_6) : 0u));
+    WorkgroupBox _e15 = workgroup_box(li_6, x_10, has_1);
     memoryBarrierShared();
     barrier();
-    uint _e13 = tile_scale;
+    uint _e19 = tile_scale;
     memoryBarrierShared();
     barrier();
-    t_2 = TileWalk(_e9.lo, _e9.hi, uintBitsToFloat(_e13), 0u);
-    bool _e18 = box_is_empty(_e9);
-    if (_e18) {
-        TileWalk _e19 = t_2;
-        return _e19;
+    t_2 = TileWalk(_e15.lo, _e15.hi, uintBitsToFloat(_e19), 0u);
+    bool _e24 = box_is_empty(_e15);
+    if (_e24) {
+        TileWalk _e25 = t_2;
+        return _e25;
     }
     s_5 = li_6;
     bool loop_init_4 = true;
     while(true) {
         if (!loop_init_4) {
-            uint _e34 = s_5;
-            s_5 = (_e34 + TILE_THREADS);
+            uint _e40 = s_5;
+            s_5 = (_e40 + TILE_THREADS);
         }
         loop_init_4 = false;
-        uint _e21 = s_5;
-        if ((_e21 < BSH_TILE_SUBTREES)) {
+        uint _e27 = s_5;
+        if ((_e27 < BSH_TILE_SUBTREES)) {
         } else {
             break;
         }
         {
-            uint _e25 = s_5;
-            uint _e27 = s_5;
-            TileWalk _e28 = t_2;
-            uint _e33 = tile_subtree(_e27, _e28, false, 0u, 0u, 0u);
-            subtree_at[_e25] = _e33;
+            uint _e31 = s_5;
+            uint _e33 = s_5;
+            TileWalk _e34 = t_2;
+            uint _e39 = tile_subtree(_e33, _e34, false, 0u, 0u, 0u);
+            subtree_at[_e31] = _e39;
         }
     }
     memoryBarrierShared();
@@ -1199,36 +1206,36 @@ TileWalk tile_walk_begin(uint li_6, vec3 x_10, float w_6, bool has_1) {
         bool loop_init_5 = true;
         while(true) {
             if (!loop_init_5) {
-                uint _e57 = s_6;
-                s_6 = (_e57 + 1u);
+                uint _e63 = s_6;
+                s_6 = (_e63 + 1u);
             }
             loop_init_5 = false;
-            uint _e43 = s_6;
-            if ((_e43 < BSH_TILE_SUBTREES)) {
+            uint _e49 = s_6;
+            if ((_e49 < BSH_TILE_SUBTREES)) {
             } else {
                 break;
             }
             {
-                uint _e47 = s_6;
-                uint c_8 = subtree_at[_e47];
-                uint _e51 = s_6;
-                uint _e53 = sum_1;
-                subtree_at[_e51] = _e53;
-                uint _e54 = sum_1;
-                sum_1 = (_e54 + c_8);
+                uint _e53 = s_6;
+                uint c_8 = subtree_at[_e53];
+                uint _e57 = s_6;
+                uint _e59 = sum_1;
+                subtree_at[_e57] = _e59;
+                uint _e60 = sum_1;
+                sum_1 = (_e60 + c_8);
             }
         }
-        uint _e60 = sum_1;
-        tile_total = _e60;
+        uint _e66 = sum_1;
+        tile_total = _e66;
     }
     memoryBarrierShared();
     barrier();
-    uint _e63 = tile_total;
+    uint _e69 = tile_total;
     memoryBarrierShared();
     barrier();
-    t_2.total = _e63;
-    TileWalk _e64 = t_2;
-    return _e64;
+    t_2.total = _e69;
+    TileWalk _e70 = t_2;
+    return _e70;
 }
 
 uint tile_walk_fill(uint li_7, TileWalk t_3, uint start_3) {
@@ -1396,10 +1403,9 @@ void main() {
     uint h = 0u;
     Shaded t = Shaded(vec3(0.0), vec3(0.0), vec3(0.0));
     WeightedPicks picks = WeightedPicks(uint[8](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u), float[8](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), float[8](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0.0, 0u, 0u);
-    bool local_4 = false;
     uint start = 0u;
     uint j = 0u;
-    bool local_5 = false;
+    bool local_4 = false;
     uvec2 keys[8] = uvec2[8](uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u));
     bool held[8] = bool[8](false, false, false, false, false, false, false, false);
     uint k = 0u;
@@ -1464,62 +1470,56 @@ void main() {
     h = _e103;
     WeightedPicks _e113 = weighted_picks(_e102);
     picks = _e113;
-    if (has_2) {
-        local_4 = (_e79.w >= 0.0);
-    } else {
-        local_4 = false;
-    }
-    bool _e122 = local_4;
-    TileWalk _e123 = tile_walk_begin(lid, x_15, _e79.w, _e122);
+    TileWalk _e116 = tile_walk_begin(lid, x_15, _e79.w, has_2);
     bool loop_init_9 = true;
     while(true) {
         if (!loop_init_9) {
-            uint _e162 = start;
-            start = (_e162 + TILE_LIST);
+            uint _e155 = start;
+            start = (_e155 + TILE_LIST);
         }
         loop_init_9 = false;
-        uint _e126 = start;
-        if ((_e126 < _e123.total)) {
+        uint _e119 = start;
+        if ((_e119 < _e116.total)) {
         } else {
             break;
         }
         {
-            uint _e129 = start;
-            uint _e130 = tile_walk_fill(lid, _e123, _e129);
+            uint _e122 = start;
+            uint _e123 = tile_walk_fill(lid, _e116, _e122);
             j = 0u;
             bool loop_init_10 = true;
             while(true) {
                 if (!loop_init_10) {
-                    uint _e160 = j;
-                    j = (_e160 + 1u);
+                    uint _e153 = j;
+                    j = (_e153 + 1u);
                 }
                 loop_init_10 = false;
-                uint _e133 = j;
-                if ((_e133 < _e130)) {
+                uint _e126 = j;
+                if ((_e126 < _e123)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e136 = j;
-                    uint b_7 = tile_list[_e136];
+                    uint _e129 = j;
+                    uint b_7 = tile_list[_e129];
                     if (!(!(has_2))) {
-                        BshNode _e145 = _group_1_binding_4_cs[b_7];
-                        vec3 _e146 = r;
-                        bool _e147 = bsh_reaches(_e145, x_15, _e146, _e79);
-                        local_5 = !(_e147);
+                        BshNode _e138 = _group_1_binding_4_cs[b_7];
+                        vec3 _e139 = r;
+                        bool _e140 = bsh_reaches(_e138, x_15, _e139, _e79);
+                        local_4 = !(_e140);
                     } else {
-                        local_5 = true;
+                        local_4 = true;
                     }
-                    bool _e150 = local_5;
-                    if (_e150) {
+                    bool _e143 = local_4;
+                    if (_e143) {
                         continue;
                     }
                     uint li_10 = _group_1_binding_4_cs[b_7].light;
-                    vec3 _e155 = n;
-                    vec3 _e156 = r;
-                    vec4 _e157 = lobe;
-                    float _e158 = light_weight(li_10, x_15, _e155, _e156, _e157, _e79);
-                    weighted_offer(picks, li_10, _e158);
+                    vec3 _e148 = n;
+                    vec3 _e149 = r;
+                    vec4 _e150 = lobe;
+                    float _e151 = light_weight(li_10, x_15, _e148, _e149, _e150, _e79);
+                    weighted_offer(picks, li_10, _e151);
                 }
             }
             memoryBarrierShared();
@@ -1532,105 +1532,105 @@ void main() {
         }
         return;
     }
-    float _e170 = picks.w_sum;
-    if ((_e170 > 0.0)) {
+    float _e163 = picks.w_sum;
+    if ((_e163 > 0.0)) {
         bool loop_init_11 = true;
         while(true) {
             if (!loop_init_11) {
-                uint _e206 = k;
-                k = (_e206 + 1u);
+                uint _e199 = k;
+                k = (_e199 + 1u);
             }
             loop_init_11 = false;
-            uint _e177 = k;
-            if ((_e177 < K)) {
+            uint _e170 = k;
+            if ((_e170 < K)) {
             } else {
                 break;
             }
             {
-                uint _e181 = k;
-                uint _e186 = k;
-                uint _e188 = picks.light[_e186];
-                uint _e191 = _group_1_binding_1_cs[_e188].kind;
-                uint own = ((_e191 == LIGHT_TRIANGLE) ? (_e181 + 1u) : 0u);
+                uint _e174 = k;
+                uint _e179 = k;
+                uint _e181 = picks.light[_e179];
+                uint _e184 = _group_1_binding_1_cs[_e181].kind;
+                uint own = ((_e184 == LIGHT_TRIANGLE) ? (_e174 + 1u) : 0u);
+                uint _e188 = k;
+                uint _e191 = k;
+                uint _e193 = picks.light[_e191];
+                keys[_e188] = uvec2(_e193, own);
                 uint _e195 = k;
-                uint _e198 = k;
-                uint _e200 = picks.light[_e198];
-                keys[_e195] = uvec2(_e200, own);
-                uint _e202 = k;
-                held[_e202] = true;
+                held[_e195] = true;
             }
         }
-        uvec2 _e208[8] = keys;
-        bool _e209[8] = held;
-        uint _e210[8] = first_holders(_e208, _e209);
+        uvec2 _e201[8] = keys;
+        bool _e202[8] = held;
+        uint _e203[8] = first_holders(_e201, _e202);
         bool loop_init_12 = true;
         while(true) {
             if (!loop_init_12) {
-                uint _e268 = k_1;
-                k_1 = (_e268 + 1u);
+                uint _e261 = k_1;
+                k_1 = (_e261 + 1u);
             }
             loop_init_12 = false;
-            uint _e213 = k_1;
-            if ((_e213 < K)) {
+            uint _e206 = k_1;
+            if ((_e206 < K)) {
             } else {
                 break;
             }
             {
-                uint _e216 = h;
-                uint _e217 = pcg_hash(_e216);
-                h = _e217;
-                uint _e218 = h;
-                float _e219 = xi_from_bits(_e218);
-                uint _e220 = h;
-                uint _e221 = pcg_hash(_e220);
-                h = _e221;
-                uint _e222 = h;
-                float _e223 = xi_from_bits(_e222);
-                uint _e225 = k_1;
-                uint li_11 = picks.light[_e225];
+                uint _e209 = h;
+                uint _e210 = pcg_hash(_e209);
+                h = _e210;
+                uint _e211 = h;
+                float _e212 = xi_from_bits(_e211);
+                uint _e213 = h;
+                uint _e214 = pcg_hash(_e213);
+                h = _e214;
+                uint _e215 = h;
+                float _e216 = xi_from_bits(_e215);
+                uint _e218 = k_1;
+                uint li_11 = picks.light[_e218];
                 copies = 0u;
-                uint _e230 = k_1;
-                j_1 = _e230;
+                uint _e223 = k_1;
+                j_1 = _e223;
                 bool loop_init_13 = true;
                 while(true) {
                     if (!loop_init_13) {
-                        uint _e245 = j_1;
-                        j_1 = (_e245 + 1u);
+                        uint _e238 = j_1;
+                        j_1 = (_e238 + 1u);
                     }
                     loop_init_13 = false;
-                    uint _e232 = j_1;
-                    if ((_e232 < K)) {
+                    uint _e225 = j_1;
+                    if ((_e225 < K)) {
                     } else {
                         break;
                     }
                     {
-                        uint _e235 = copies;
-                        uint _e238 = j_1;
-                        uint _e240 = k_1;
-                        copies = (_e235 + ((_e210[_e238] == _e240) ? 1u : 0u));
+                        uint _e228 = copies;
+                        uint _e231 = j_1;
+                        uint _e233 = k_1;
+                        copies = (_e228 + ((_e203[_e231] == _e233) ? 1u : 0u));
                     }
                 }
-                uint _e247 = copies;
-                if ((_e247 > 0u)) {
-                    Shaded _e250 = t;
-                    vec3 _e251 = n;
-                    vec3 _e252 = r;
-                    Material _e253 = m;
-                    float _e255 = picks.w_sum;
-                    uint _e257 = k_1;
-                    float _e259 = picks.w[_e257];
-                    float _e261 = weighted_pick_weight(_e255, _e259, K);
-                    uint _e262 = copies;
-                    Shaded _e265 = shade_pick(li_11, x_15, _e251, _e252, _e79, _e253, (_e261 * float(_e262)), _e219, _e223, eps_4);
-                    Shaded _e266 = add(_e250, _e265);
-                    t = _e266;
+                uint _e240 = copies;
+                if ((_e240 > 0u)) {
+                    Shaded _e243 = t;
+                    vec3 _e244 = n;
+                    vec3 _e245 = r;
+                    Material _e246 = m;
+                    float _e248 = picks.w_sum;
+                    uint _e250 = k_1;
+                    float _e252 = picks.w[_e250];
+                    float _e254 = weighted_pick_weight(_e248, _e252, K);
+                    uint _e255 = copies;
+                    Shaded _e258 = shade_pick(li_11, x_15, _e244, _e245, _e79, _e246, (_e254 * float(_e255)), _e212, _e216, eps_4);
+                    Shaded _e259 = add(_e243, _e258);
+                    t = _e259;
                 }
             }
         }
     }
     uint count = picks.n;
-    vec3 _e274 = t.e;
-    imageStore(_group_0_binding_3_cs, texel_1, vec4(_e274, float(count)));
+    vec3 _e267 = t.e;
+    imageStore(_group_0_binding_3_cs, texel_1, vec4(_e267, float(count)));
     return;
 }
 

@@ -269,28 +269,28 @@ float connection_factor(float cos_x, float d2_3, float rt2_1, float w_1) {
 }
 
 float connection_cosine(vec3 x_2, vec3 y, vec3 n_1, vec3 ng, float r2_1) {
+    bool local_7 = false;
     bool local_8 = false;
-    bool local_9 = false;
     vec3 v_7 = (x_2 - y);
     float d2_6 = dot(v_7, v_7);
     bool _e7 = slc_keep(r2_1, d2_6);
     if (!(!(_e7))) {
-        local_8 = !((d2_6 > 0.0));
+        local_7 = !((d2_6 > 0.0));
     } else {
-        local_8 = true;
+        local_7 = true;
     }
-    bool _e16 = local_8;
+    bool _e16 = local_7;
     if (_e16) {
         return 0.0;
     }
     vec3 w_10 = (v_7 / vec3(sqrt(d2_6)));
     float cos_x_1 = -(dot(n_1, w_10));
     if (!((cos_x_1 <= 0.0))) {
-        local_9 = (dot(ng, w_10) >= 0.0);
+        local_8 = (dot(ng, w_10) >= 0.0);
     } else {
-        local_9 = true;
+        local_8 = true;
     }
-    bool _e32 = local_9;
+    bool _e32 = local_8;
     if (_e32) {
         return 0.0;
     }
@@ -382,13 +382,13 @@ float smith_root(float cos_, float alpha_1) {
 }
 
 float smith_visibility(float n_l, float n_v, float alpha_2) {
-    bool local_10 = false;
+    bool local_9 = false;
     if (!((n_l <= 0.0))) {
-        local_10 = (n_v <= 0.0);
+        local_9 = (n_v <= 0.0);
     } else {
-        local_10 = true;
+        local_9 = true;
     }
-    bool _e11 = local_10;
+    bool _e11 = local_9;
     if (_e11) {
         return 0.0;
     }
@@ -410,20 +410,20 @@ vec3 specular_fresnel(vec3 base, float metallic, vec3 f0_d, float f90_d, float v
 }
 
 bool has_specular(float metallic_1, vec3 f0_d_1, float f90_d_1) {
+    bool local_10 = false;
     bool local_11 = false;
-    bool local_12 = false;
     if (!((metallic_1 > 0.0))) {
-        local_11 = (f90_d_1 > 0.0);
+        local_10 = (f90_d_1 > 0.0);
+    } else {
+        local_10 = true;
+    }
+    bool _e11 = local_10;
+    if (!(_e11)) {
+        local_11 = (max(max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0.0);
     } else {
         local_11 = true;
     }
-    bool _e11 = local_11;
-    if (!(_e11)) {
-        local_12 = (max(max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0.0);
-    } else {
-        local_12 = true;
-    }
-    bool _e23 = local_12;
+    bool _e23 = local_11;
     return _e23;
 }
 
@@ -432,16 +432,16 @@ float channel_mean(vec3 c_5) {
 }
 
 vec4 receiver_lobe(vec3 base_1, float metallic_2, vec3 f0_d_2, float f90_d_2, float alpha_3, float n_v_1) {
-    bool local_13 = false;
+    bool local_12 = false;
     vec3 _e10 = fresnel_schlick(f0_d_2, f90_d_2, n_v_1);
     float _e16 = channel_mean((((vec3(1.0, 1.0, 1.0) - _e10) * base_1) * (1.0 - metallic_2)));
     if (!((n_v_1 <= 0.0))) {
         bool _e22 = has_specular(metallic_2, f0_d_2, f90_d_2);
-        local_13 = !(_e22);
+        local_12 = !(_e22);
     } else {
-        local_13 = true;
+        local_12 = true;
     }
-    bool _e25 = local_13;
+    bool _e25 = local_12;
     if (_e25) {
         return vec4(_e16, 0.0, alpha_3, n_v_1);
     }
@@ -525,22 +525,22 @@ vec3 bevy_brdf(vec3 base_2, float metallic_3, float r_4, float reflectance_1, ve
 }
 
 float cone_cos_of(vec3 v_2, float d2_4, float a_3, vec3 d) {
+    bool local_13 = false;
     bool local_14 = false;
-    bool local_15 = false;
     float vd = dot(v_2, d);
     float h2_ = (d2_4 - (a_3 * a_3));
     if (!((h2_ <= 0.0))) {
         if ((vd >= 0.0)) {
-            local_15 = ((vd * vd) >= h2_);
+            local_14 = ((vd * vd) >= h2_);
         } else {
-            local_15 = false;
+            local_14 = false;
         }
-        bool _e19 = local_15;
-        local_14 = _e19;
+        bool _e19 = local_14;
+        local_13 = _e19;
     } else {
-        local_14 = true;
+        local_13 = true;
     }
-    bool _e21 = local_14;
+    bool _e21 = local_13;
     if (_e21) {
         return 1.0;
     }
@@ -597,15 +597,15 @@ float ray_aabb(vec3 o, vec3 inv_d, vec3 bmin_1, vec3 bmax_1, float t_max) {
 }
 
 vec3 triangle_normal(vec3 a_4, vec3 b_3, vec3 c_6) {
-    bool local_16 = false;
+    bool local_15 = false;
     vec3 n_10 = cross((b_3 - a_4), (c_6 - a_4));
     float l2_ = dot(n_10, n_10);
     if (!(!((l2_ > 0.0)))) {
-        local_16 = !((l2_ < 3e38));
+        local_15 = !((l2_ < 3e38));
     } else {
-        local_16 = true;
+        local_15 = true;
     }
-    bool _e17 = local_16;
+    bool _e17 = local_15;
     if (_e17) {
         return vec3(0.0, 0.0, 0.0);
     }
@@ -613,9 +613,9 @@ vec3 triangle_normal(vec3 a_4, vec3 b_3, vec3 c_6) {
 }
 
 float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_5, vec3 b_4, vec3 c_7, float t_min, float t_max_1) {
+    bool local_16 = false;
     bool local_17 = false;
     bool local_18 = false;
-    bool local_19 = false;
     vec3 e1_ = (b_4 - a_5);
     vec3 e2_ = (c_7 - a_5);
     vec3 p_4 = cross(d_3, e2_);
@@ -627,32 +627,32 @@ float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_5, vec3 b_4, vec3 c_7, float t_min
     vec3 s_10 = (o_1 - a_5);
     float u_3 = (dot(s_10, p_4) * inv);
     if (!((u_3 < 0.0))) {
-        local_17 = (u_3 > 1.0);
+        local_16 = (u_3 > 1.0);
     } else {
-        local_17 = true;
+        local_16 = true;
     }
-    bool _e28 = local_17;
+    bool _e28 = local_16;
     if (_e28) {
         return -1.0;
     }
     vec3 q_2 = cross(s_10, e1_);
     float v_9 = (dot(d_3, q_2) * inv);
     if (!((v_9 < 0.0))) {
-        local_18 = ((u_3 + v_9) > 1.0);
+        local_17 = ((u_3 + v_9) > 1.0);
     } else {
-        local_18 = true;
+        local_17 = true;
     }
-    bool _e42 = local_18;
+    bool _e42 = local_17;
     if (_e42) {
         return -1.0;
     }
     float t_6 = (dot(e2_, q_2) * inv);
     if ((t_6 > t_min)) {
-        local_19 = (t_6 < t_max_1);
+        local_18 = (t_6 < t_max_1);
     } else {
-        local_19 = false;
+        local_18 = false;
     }
-    bool _e51 = local_19;
+    bool _e51 = local_18;
     if (_e51) {
         return t_6;
     }
@@ -793,19 +793,19 @@ float bsh_inner_scale(float a_7, vec3 v_3, float d2_5, vec3 r_6, vec4 rl_2) {
 }
 
 bool bsh_reaches(BshNode node_3, vec3 x_4, vec3 r_7, vec4 rl_3) {
+    bool local_19 = false;
     bool local_20 = false;
-    bool local_21 = false;
     bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_4);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
         bool _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001)), x_4);
-        local_20 = !(_e20);
+        local_19 = !(_e20);
     } else {
-        local_20 = true;
+        local_19 = true;
     }
-    bool _e23 = local_20;
+    bool _e23 = local_19;
     if (_e23) {
         return false;
     }
@@ -826,11 +826,11 @@ bool bsh_reaches(BshNode node_3, vec3 x_4, vec3 r_7, vec4 rl_3) {
     float s_c = (_e50 * 1.001);
     float reach = (node_3.extent + (sqrt(s_c) * _e25));
     if ((d2_7 <= ((node_3.radius * node_3.radius) * s_c))) {
-        local_21 = (d2_7 <= (reach * reach));
+        local_20 = (d2_7 <= (reach * reach));
     } else {
-        local_21 = false;
+        local_20 = false;
     }
-    bool _e67 = local_21;
+    bool _e67 = local_20;
     return _e67;
 }
 
@@ -842,18 +842,18 @@ bool bsh_reaches_box(BshNode node_4, vec3 lo, vec3 hi, float w_4) {
 uint bsh_subtree(uint nodes_3, uint s_1, uint depth) {
     uint i_2 = 0u;
     uint level = 0u;
-    bool local_22 = false;
+    bool local_21 = false;
     uint _e3 = bsh_first(nodes_3);
     i_2 = _e3;
     while(true) {
         uint _e7 = level;
         if ((_e7 < depth)) {
             uint _e11 = i_2;
-            local_22 = (_e11 != BSH_NONE);
+            local_21 = (_e11 != BSH_NONE);
         } else {
-            local_22 = false;
+            local_21 = false;
         }
-        bool _e15 = local_22;
+        bool _e15 = local_21;
         if (_e15) {
         } else {
             break;
@@ -923,8 +923,8 @@ float next_threshold(float sum, inout uint h_1) {
 
 Connection connect_record(GpuLight l_3, vec3 x_5, vec3 n_5, vec3 ng_1, float r2_2, float rt2_2, float w_res, float u1_2, float u2_2, float eps, bool trace_1) {
     Connection c_8 = Connection(vec3(0.0), vec3(0.0), 0.0);
+    bool local_22 = false;
     bool local_23 = false;
-    bool local_24 = false;
     c_8.e = vec3(0.0);
     vec3 _e16 = light_point(l_3, u1_2, u2_2);
     c_8.y = _e16;
@@ -936,16 +936,16 @@ Connection connect_record(GpuLight l_3, vec3 x_5, vec3 n_5, vec3 ng_1, float r2_
         if (trace_1) {
             vec3 _e33 = c_8.y;
             bool _e34 = occluded((x_5 + (ng_1 * eps)), _e33);
-            local_24 = _e34;
+            local_23 = _e34;
         } else {
-            local_24 = false;
+            local_23 = false;
         }
-        bool _e36 = local_24;
-        local_23 = _e36;
+        bool _e36 = local_23;
+        local_22 = _e36;
     } else {
-        local_23 = true;
+        local_22 = true;
     }
-    bool _e38 = local_23;
+    bool _e38 = local_22;
     if (_e38) {
         Connection _e39 = c_8;
         return _e39;
@@ -1039,9 +1039,9 @@ bool box_is_empty(WorkgroupBox b_6) {
 uint tile_subtree(uint s_3, TileWalk t_1, bool list, uint at, uint start_2, uint to) {
     uint p_3 = 0u;
     uint b_7 = 0u;
+    bool local_24 = false;
     bool local_25 = false;
     bool local_26 = false;
-    bool local_27 = false;
     uint _e8 = bsh_subtree(BSH, s_3, BSH_TILE_DEPTH);
     if ((_e8 == BSH_NONE)) {
         return 0u;
@@ -1063,16 +1063,16 @@ uint tile_subtree(uint s_3, TileWalk t_1, bool list, uint at, uint start_2, uint
         if ((_e23 != end_1)) {
             if (!(!(list))) {
                 uint _e31 = p_3;
-                local_26 = (_e31 < to);
+                local_25 = (_e31 < to);
             } else {
-                local_26 = true;
+                local_25 = true;
             }
-            bool _e34 = local_26;
-            local_25 = _e34;
+            bool _e34 = local_25;
+            local_24 = _e34;
         } else {
-            local_25 = false;
+            local_24 = false;
         }
-        bool _e36 = local_25;
+        bool _e36 = local_24;
         if (_e36) {
         } else {
             break;
@@ -1080,11 +1080,11 @@ uint tile_subtree(uint s_3, TileWalk t_1, bool list, uint at, uint start_2, uint
         {
             if (list) {
                 uint _e39 = p_3;
-                local_27 = (_e39 >= start_2);
+                local_26 = (_e39 >= start_2);
             } else {
-                local_27 = false;
+                local_26 = false;
             }
-            bool _e42 = local_27;
+            bool _e42 = local_26;
             if (_e42) {
                 uint _e44 = p_3;
                 uint _e47 = b_7;
@@ -1099,42 +1099,49 @@ uint tile_subtree(uint s_3, TileWalk t_1, bool list, uint at, uint start_2, uint
 }
 
 TileWalk tile_walk_begin(uint li_4, vec3 x_8, float w_6, bool has_1) {
+    bool local_27 = false;
     TileWalk t_2 = TileWalk(vec3(0.0), vec3(0.0), 0.0, 0u);
     uint s_4 = 0u;
     uint sum_1 = 0u;
     uint s_5 = 0u;
-    uint _e8 = atomicMax(tile_scale, (has_1 ? floatBitsToUint(w_6) : 0u));
-    WorkgroupBox _e9 = workgroup_box(li_4, x_8, has_1);
+    if (has_1) {
+        local_27 = (w_6 >= 0.0);
+    } else {
+        local_27 = false;
+    }
+    bool _e12 = local_27;
+    uint _e14 = atomicMax(tile_scale, (_e12 ? floatBitsToUint(w_6) : 0u));
+    WorkgroupBox _e15 = workgroup_box(li_4, x_8, has_1);
     memoryBarrierShared();
     barrier();
-    uint _e13 = tile_scale;
+    uint _e19 = tile_scale;
     memoryBarrierShared();
     barrier();
-    t_2 = TileWalk(_e9.lo, _e9.hi, uintBitsToFloat(_e13), 0u);
-    bool _e18 = box_is_empty(_e9);
-    if (_e18) {
-        TileWalk _e19 = t_2;
-        return _e19;
+    t_2 = TileWalk(_e15.lo, _e15.hi, uintBitsToFloat(_e19), 0u);
+    bool _e24 = box_is_empty(_e15);
+    if (_e24) {
+        TileWalk _e25 = t_2;
+        return _e25;
     }
     s_4 = li_4;
     bool loop_init_3 = true;
     while(true) {
         if (!loop_init_3) {
-            uint _e34 = s_4;
-            s_4 = (_e34 + TILE_THREADS);
+            uint _e40 = s_4;
+            s_4 = (_e40 + TILE_THREADS);
         }
         loop_init_3 = false;
-        uint _e21 = s_4;
-        if ((_e21 < BSH_TILE_SUBTREES)) {
+        uint _e27 = s_4;
+        if ((_e27 < BSH_TILE_SUBTREES)) {
         } else {
             break;
         }
         {
-            uint _e25 = s_4;
-            uint _e27 = s_4;
-            TileWalk _e28 = t_2;
-            uint _e33 = tile_subtree(_e27, _e28, false, 0u, 0u, 0u);
-            subtree_at[_e25] = _e33;
+            uint _e31 = s_4;
+            uint _e33 = s_4;
+            TileWalk _e34 = t_2;
+            uint _e39 = tile_subtree(_e33, _e34, false, 0u, 0u, 0u);
+            subtree_at[_e31] = _e39;
         }
     }
     memoryBarrierShared();
@@ -1143,36 +1150,36 @@ TileWalk tile_walk_begin(uint li_4, vec3 x_8, float w_6, bool has_1) {
         bool loop_init_4 = true;
         while(true) {
             if (!loop_init_4) {
-                uint _e57 = s_5;
-                s_5 = (_e57 + 1u);
+                uint _e63 = s_5;
+                s_5 = (_e63 + 1u);
             }
             loop_init_4 = false;
-            uint _e43 = s_5;
-            if ((_e43 < BSH_TILE_SUBTREES)) {
+            uint _e49 = s_5;
+            if ((_e49 < BSH_TILE_SUBTREES)) {
             } else {
                 break;
             }
             {
-                uint _e47 = s_5;
-                uint c_13 = subtree_at[_e47];
-                uint _e51 = s_5;
-                uint _e53 = sum_1;
-                subtree_at[_e51] = _e53;
-                uint _e54 = sum_1;
-                sum_1 = (_e54 + c_13);
+                uint _e53 = s_5;
+                uint c_13 = subtree_at[_e53];
+                uint _e57 = s_5;
+                uint _e59 = sum_1;
+                subtree_at[_e57] = _e59;
+                uint _e60 = sum_1;
+                sum_1 = (_e60 + c_13);
             }
         }
-        uint _e60 = sum_1;
-        tile_total = _e60;
+        uint _e66 = sum_1;
+        tile_total = _e66;
     }
     memoryBarrierShared();
     barrier();
-    uint _e63 = tile_total;
+    uint _e69 = tile_total;
     memoryBarrierShared();
     barrier();
-    t_2.total = _e63;
-    TileWalk _e64 = t_2;
-    return _e64;
+    t_2.total = _e69;
+    TileWalk _e70 = t_2;
+    return _e70;
 }
 
 uint tile_walk_fill(uint li_5, TileWalk t_3, uint start_3) {
@@ -1364,19 +1371,18 @@ void main() {
     uint count = 0u;
     uint hc = 0u;
     float threshold[8] = float[8](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
-    bool local_4 = false;
     uint start = 0u;
     uint j = 0u;
-    bool local_5 = false;
+    bool local_4 = false;
     uint q = 0u;
-    bool local_6 = false;
+    bool local_5 = false;
     uvec2 keys[8] = uvec2[8](uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u));
     bool held[8] = bool[8](false, false, false, false, false, false, false, false);
     uint k = 0u;
     uint k_1 = 0u;
     vec3 w = vec3(0.0);
     uint j_1 = 0u;
-    bool local_7 = false;
+    bool local_6 = false;
     uint _e5 = _group_0_binding_0_cs.width;
     if ((gid.x < _e5)) {
         uint _e12 = _group_0_binding_0_cs.height;
@@ -1453,116 +1459,110 @@ void main() {
     uint _e138 = pick_stream(_e137);
     h = _e138;
     hc = _e137;
-    if (has_2) {
-        local_4 = (_e114.w >= 0.0);
-    } else {
-        local_4 = false;
-    }
-    bool _e165 = local_4;
-    TileWalk _e166 = tile_walk_begin(lid, x_13, _e114.w, _e165);
+    TileWalk _e159 = tile_walk_begin(lid, x_13, _e114.w, has_2);
     bool loop_init_8 = true;
     while(true) {
         if (!loop_init_8) {
-            uint _e261 = start;
-            start = (_e261 + TILE_LIST);
+            uint _e254 = start;
+            start = (_e254 + TILE_LIST);
         }
         loop_init_8 = false;
-        uint _e169 = start;
-        if ((_e169 < _e166.total)) {
+        uint _e162 = start;
+        if ((_e162 < _e159.total)) {
         } else {
             break;
         }
         {
-            uint _e172 = start;
-            uint _e173 = tile_walk_fill(lid, _e166, _e172);
+            uint _e165 = start;
+            uint _e166 = tile_walk_fill(lid, _e159, _e165);
             j = 0u;
             bool loop_init_9 = true;
             while(true) {
                 if (!loop_init_9) {
-                    uint _e259 = j;
-                    j = (_e259 + 1u);
+                    uint _e252 = j;
+                    j = (_e252 + 1u);
                 }
                 loop_init_9 = false;
-                uint _e176 = j;
-                if ((_e176 < _e173)) {
+                uint _e169 = j;
+                if ((_e169 < _e166)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e179 = j;
-                    uint b_9 = tile_list[_e179];
+                    uint _e172 = j;
+                    uint b_9 = tile_list[_e172];
                     if (!(!(has_2))) {
-                        BshNode _e188 = _group_1_binding_4_cs[b_9];
-                        vec3 _e189 = r;
-                        bool _e190 = bsh_reaches(_e188, x_13, _e189, _e114);
-                        local_5 = !(_e190);
+                        BshNode _e181 = _group_1_binding_4_cs[b_9];
+                        vec3 _e182 = r;
+                        bool _e183 = bsh_reaches(_e181, x_13, _e182, _e114);
+                        local_4 = !(_e183);
                     } else {
-                        local_5 = true;
+                        local_4 = true;
                     }
-                    bool _e193 = local_5;
-                    if (_e193) {
+                    bool _e186 = local_4;
+                    if (_e186) {
                         continue;
                     }
                     uint li_8 = _group_1_binding_4_cs[b_9].light;
-                    uint _e198 = count;
-                    count = (_e198 + 1u);
-                    uint _e201 = h;
-                    uint _e202 = pcg_hash(_e201);
-                    h = _e202;
-                    uint _e203 = h;
-                    float _e204 = xi_from_bits(_e203);
-                    uint _e205 = h;
-                    uint _e206 = pcg_hash(_e205);
-                    h = _e206;
-                    uint _e207 = h;
-                    float _e208 = xi_from_bits(_e207);
-                    vec2 u_4 = vec2(_e204, _e208);
-                    vec3 _e210 = n;
-                    vec3 _e211 = r;
-                    Material _e212 = m;
-                    Shaded _e217 = shade_pick_traced(li_8, x_13, _e210, _e211, _e114, _e212, 1.0, u_4.x, u_4.y, eps_4, false);
-                    vec3 _e218 = output_of(_e217);
-                    float _e219 = resample_target(_e218);
-                    if ((_e219 > 0.0)) {
-                        vec3 _e222 = total;
-                        total = (_e222 + _e218);
+                    uint _e191 = count;
+                    count = (_e191 + 1u);
+                    uint _e194 = h;
+                    uint _e195 = pcg_hash(_e194);
+                    h = _e195;
+                    uint _e196 = h;
+                    float _e197 = xi_from_bits(_e196);
+                    uint _e198 = h;
+                    uint _e199 = pcg_hash(_e198);
+                    h = _e199;
+                    uint _e200 = h;
+                    float _e201 = xi_from_bits(_e200);
+                    vec2 u_4 = vec2(_e197, _e201);
+                    vec3 _e203 = n;
+                    vec3 _e204 = r;
+                    Material _e205 = m;
+                    Shaded _e210 = shade_pick_traced(li_8, x_13, _e203, _e204, _e114, _e205, 1.0, u_4.x, u_4.y, eps_4, false);
+                    vec3 _e211 = output_of(_e210);
+                    float _e212 = resample_target(_e211);
+                    if ((_e212 > 0.0)) {
+                        vec3 _e215 = total;
+                        total = (_e215 + _e211);
                         q = 0u;
                         bool loop_init_10 = true;
                         while(true) {
                             if (!loop_init_10) {
-                                uint _e256 = q;
-                                q = (_e256 + 1u);
+                                uint _e249 = q;
+                                q = (_e249 + 1u);
                             }
                             loop_init_10 = false;
-                            uint _e226 = q;
-                            if ((_e226 < K)) {
+                            uint _e219 = q;
+                            if ((_e219 < K)) {
                             } else {
                                 break;
                             }
                             {
-                                uint _e229 = q;
-                                float _e231 = slot_target(_e218, _e229, K);
-                                vec3 _e232 = total;
-                                uint _e233 = q;
-                                float _e235 = slot_target(_e232, _e233, K);
-                                if ((_e231 > 0.0)) {
-                                    uint _e240 = q;
-                                    float _e242 = threshold[_e240];
-                                    local_6 = (_e235 > _e242);
+                                uint _e222 = q;
+                                float _e224 = slot_target(_e211, _e222, K);
+                                vec3 _e225 = total;
+                                uint _e226 = q;
+                                float _e228 = slot_target(_e225, _e226, K);
+                                if ((_e224 > 0.0)) {
+                                    uint _e233 = q;
+                                    float _e235 = threshold[_e233];
+                                    local_5 = (_e228 > _e235);
                                 } else {
-                                    local_6 = false;
+                                    local_5 = false;
                                 }
-                                bool _e245 = local_6;
-                                if (_e245) {
-                                    uint _e246 = q;
-                                    slot_light[_e246] = li_8;
-                                    uint _e248 = q;
-                                    slot_u[_e248] = u_4;
-                                    uint _e250 = q;
-                                    slot_p[_e250] = _e231;
-                                    uint _e252 = q;
-                                    float _e254 = next_threshold(_e235, hc);
-                                    threshold[_e252] = _e254;
+                                bool _e238 = local_5;
+                                if (_e238) {
+                                    uint _e239 = q;
+                                    slot_light[_e239] = li_8;
+                                    uint _e241 = q;
+                                    slot_u[_e241] = u_4;
+                                    uint _e243 = q;
+                                    slot_p[_e243] = _e224;
+                                    uint _e245 = q;
+                                    float _e247 = next_threshold(_e228, hc);
+                                    threshold[_e245] = _e247;
                                 }
                             }
                         }
@@ -1582,105 +1582,105 @@ void main() {
     bool loop_init_11 = true;
     while(true) {
         if (!loop_init_11) {
-            uint _e290 = k;
-            k = (_e290 + 1u);
+            uint _e283 = k;
+            k = (_e283 + 1u);
         }
         loop_init_11 = false;
-        uint _e272 = k;
-        if ((_e272 < K)) {
+        uint _e265 = k;
+        if ((_e265 < K)) {
         } else {
             break;
         }
         {
+            uint _e268 = k;
+            uint _e270 = k;
+            uint _e272 = slot_light[_e270];
+            keys[_e268] = uvec2(_e272, 0u);
             uint _e275 = k;
             uint _e277 = k;
-            uint _e279 = slot_light[_e277];
-            keys[_e275] = uvec2(_e279, 0u);
-            uint _e282 = k;
-            uint _e284 = k;
-            float _e286 = slot_p[_e284];
-            held[_e282] = (_e286 > 0.0);
+            float _e279 = slot_p[_e277];
+            held[_e275] = (_e279 > 0.0);
         }
     }
-    uvec2 _e292[8] = keys;
-    bool _e293[8] = held;
-    uint _e294[8] = first_holders(_e292, _e293);
+    uvec2 _e285[8] = keys;
+    bool _e286[8] = held;
+    uint _e287[8] = first_holders(_e285, _e286);
     bool loop_init_12 = true;
     while(true) {
         if (!loop_init_12) {
-            uint _e358 = k_1;
-            k_1 = (_e358 + 1u);
+            uint _e351 = k_1;
+            k_1 = (_e351 + 1u);
         }
         loop_init_12 = false;
-        uint _e297 = k_1;
-        if ((_e297 < K)) {
+        uint _e290 = k_1;
+        if ((_e290 < K)) {
         } else {
             break;
         }
         {
             w = vec3(0.0);
-            uint _e303 = k_1;
-            uint _e305 = k_1;
-            bool first_1 = (_e294[_e303] == _e305);
-            uint _e307 = k_1;
-            j_1 = _e307;
+            uint _e296 = k_1;
+            uint _e298 = k_1;
+            bool first_1 = (_e287[_e296] == _e298);
+            uint _e300 = k_1;
+            j_1 = _e300;
             bool loop_init_13 = true;
             while(true) {
                 if (!loop_init_13) {
-                    uint _e335 = j_1;
-                    j_1 = (_e335 + 1u);
+                    uint _e328 = j_1;
+                    j_1 = (_e328 + 1u);
                 }
                 loop_init_13 = false;
-                uint _e309 = j_1;
-                if ((_e309 < K)) {
-                    local_7 = first_1;
+                uint _e302 = j_1;
+                if ((_e302 < K)) {
+                    local_6 = first_1;
                 } else {
-                    local_7 = false;
+                    local_6 = false;
                 }
-                bool _e315 = local_7;
-                if (_e315) {
+                bool _e308 = local_6;
+                if (_e308) {
                 } else {
                     break;
                 }
                 {
-                    uint _e316 = j_1;
-                    uint _e318 = k_1;
-                    if ((_e294[_e316] == _e318)) {
-                        vec3 _e320 = w;
-                        vec3 _e321 = total;
+                    uint _e309 = j_1;
+                    uint _e311 = k_1;
+                    if ((_e287[_e309] == _e311)) {
+                        vec3 _e313 = w;
+                        vec3 _e314 = total;
+                        uint _e315 = j_1;
+                        float _e317 = slot_target(_e314, _e315, K);
+                        uint _e318 = j_1;
+                        float _e320 = slot_p[_e318];
                         uint _e322 = j_1;
-                        float _e324 = slot_target(_e321, _e322, K);
-                        uint _e325 = j_1;
-                        float _e327 = slot_p[_e325];
-                        uint _e329 = j_1;
-                        vec3 _e331 = slot_share(_e329, K);
-                        w = (_e320 + ((_e324 / _e327) * _e331));
+                        vec3 _e324 = slot_share(_e322, K);
+                        w = (_e313 + ((_e317 / _e320) * _e324));
                     }
                 }
             }
             if (first_1) {
-                Shaded _e337 = t;
+                Shaded _e330 = t;
+                uint _e331 = k_1;
+                uint _e333 = slot_light[_e331];
+                vec3 _e334 = n;
+                vec3 _e335 = r;
+                Material _e336 = m;
                 uint _e338 = k_1;
-                uint _e340 = slot_light[_e338];
-                vec3 _e341 = n;
-                vec3 _e342 = r;
-                Material _e343 = m;
-                uint _e345 = k_1;
-                float _e348 = slot_u[_e345].x;
-                uint _e349 = k_1;
-                float _e352 = slot_u[_e349].y;
-                Shaded _e353 = shade_pick(_e340, x_13, _e341, _e342, _e114, _e343, 1.0, _e348, _e352, eps_4);
-                vec3 _e354 = w;
-                Shaded _e355 = scaled(_e353, _e354);
-                Shaded _e356 = add(_e337, _e355);
-                t = _e356;
+                float _e341 = slot_u[_e338].x;
+                uint _e342 = k_1;
+                float _e345 = slot_u[_e342].y;
+                Shaded _e346 = shade_pick(_e333, x_13, _e334, _e335, _e114, _e336, 1.0, _e341, _e345, eps_4);
+                vec3 _e347 = w;
+                Shaded _e348 = scaled(_e346, _e347);
+                Shaded _e349 = add(_e330, _e348);
+                t = _e349;
             }
         }
     }
-    vec3 _e362 = t.diffuse;
-    vec3 _e364 = t.specular;
-    uint _e366 = count;
-    imageStore(_group_0_binding_3_cs, texel_1, vec4((_e362 + _e364), float(_e366)));
+    vec3 _e355 = t.diffuse;
+    vec3 _e357 = t.specular;
+    uint _e359 = count;
+    imageStore(_group_0_binding_3_cs, texel_1, vec4((_e355 + _e357), float(_e359)));
     return;
 }
 

@@ -279,28 +279,28 @@ float connection_factor(float cos_x, float d2_3, float rt2_1, float w) {
 }
 
 float connection_cosine(vec3 x_2, vec3 y, vec3 n_1, vec3 ng, float r2_1) {
+    bool local_5 = false;
     bool local_6 = false;
-    bool local_7 = false;
     vec3 v_8 = (x_2 - y);
     float d2_7 = dot(v_8, v_8);
     bool _e7 = slc_keep(r2_1, d2_7);
     if (!(!(_e7))) {
-        local_6 = !((d2_7 > 0.0));
+        local_5 = !((d2_7 > 0.0));
     } else {
-        local_6 = true;
+        local_5 = true;
     }
-    bool _e16 = local_6;
+    bool _e16 = local_5;
     if (_e16) {
         return 0.0;
     }
     vec3 w_10 = (v_8 / vec3(sqrt(d2_7)));
     float cos_x_1 = -(dot(n_1, w_10));
     if (!((cos_x_1 <= 0.0))) {
-        local_7 = (dot(ng, w_10) >= 0.0);
+        local_6 = (dot(ng, w_10) >= 0.0);
     } else {
-        local_7 = true;
+        local_6 = true;
     }
-    bool _e32 = local_7;
+    bool _e32 = local_6;
     if (_e32) {
         return 0.0;
     }
@@ -364,13 +364,13 @@ float smith_root(float cos_, float alpha_1) {
 }
 
 float smith_visibility(float n_l, float n_v, float alpha_2) {
-    bool local_8 = false;
+    bool local_7 = false;
     if (!((n_l <= 0.0))) {
-        local_8 = (n_v <= 0.0);
+        local_7 = (n_v <= 0.0);
     } else {
-        local_8 = true;
+        local_7 = true;
     }
-    bool _e11 = local_8;
+    bool _e11 = local_7;
     if (_e11) {
         return 0.0;
     }
@@ -406,15 +406,15 @@ float half_cosine(vec3 v, vec3 l) {
 }
 
 vec3 specular_brdf(vec3 base_2, float metallic_2, vec3 f0_d_2, float f90_d_2, float alpha_3, vec3 n_3, vec3 v_1, vec3 l_1) {
-    bool local_9 = false;
+    bool local_8 = false;
     float n_l_1 = dot(n_3, l_1);
     float n_v_2 = dot(n_3, v_1);
     if (!((n_l_1 <= 0.0))) {
-        local_9 = (n_v_2 <= 0.0);
+        local_8 = (n_v_2 <= 0.0);
     } else {
-        local_9 = true;
+        local_8 = true;
     }
-    bool _e18 = local_9;
+    bool _e18 = local_8;
     if (_e18) {
         return vec3(0.0, 0.0, 0.0);
     }
@@ -429,20 +429,20 @@ vec3 specular_brdf(vec3 base_2, float metallic_2, vec3 f0_d_2, float f90_d_2, fl
 }
 
 bool has_specular(float metallic_3, vec3 f0_d_3, float f90_d_3) {
+    bool local_9 = false;
     bool local_10 = false;
-    bool local_11 = false;
     if (!((metallic_3 > 0.0))) {
-        local_10 = (f90_d_3 > 0.0);
+        local_9 = (f90_d_3 > 0.0);
+    } else {
+        local_9 = true;
+    }
+    bool _e11 = local_9;
+    if (!(_e11)) {
+        local_10 = (max(max(f0_d_3.x, f0_d_3.y), f0_d_3.z) > 0.0);
     } else {
         local_10 = true;
     }
-    bool _e11 = local_10;
-    if (!(_e11)) {
-        local_11 = (max(max(f0_d_3.x, f0_d_3.y), f0_d_3.z) > 0.0);
-    } else {
-        local_11 = true;
-    }
-    bool _e23 = local_11;
+    bool _e23 = local_10;
     return _e23;
 }
 
@@ -451,16 +451,16 @@ float channel_mean(vec3 c_3) {
 }
 
 vec4 receiver_lobe(vec3 base_3, float metallic_4, vec3 f0_d_4, float f90_d_4, float alpha_4, float n_v_1) {
-    bool local_12 = false;
+    bool local_11 = false;
     vec3 _e10 = fresnel_schlick(f0_d_4, f90_d_4, n_v_1);
     float _e16 = channel_mean((((vec3(1.0, 1.0, 1.0) - _e10) * base_3) * (1.0 - metallic_4)));
     if (!((n_v_1 <= 0.0))) {
         bool _e22 = has_specular(metallic_4, f0_d_4, f90_d_4);
-        local_12 = !(_e22);
+        local_11 = !(_e22);
     } else {
-        local_12 = true;
+        local_11 = true;
     }
-    bool _e25 = local_12;
+    bool _e25 = local_11;
     if (_e25) {
         return vec4(_e16, 0.0, alpha_4, n_v_1);
     }
@@ -549,22 +549,22 @@ float emitter_importance(vec3 center_1, float radius_1, float phi, vec3 axis_1, 
 }
 
 float cone_cos_of(vec3 v_3, float d2_4, float a_3, vec3 d) {
+    bool local_12 = false;
     bool local_13 = false;
-    bool local_14 = false;
     float vd = dot(v_3, d);
     float h2_ = (d2_4 - (a_3 * a_3));
     if (!((h2_ <= 0.0))) {
         if ((vd >= 0.0)) {
-            local_14 = ((vd * vd) >= h2_);
+            local_13 = ((vd * vd) >= h2_);
         } else {
-            local_14 = false;
+            local_13 = false;
         }
-        bool _e19 = local_14;
-        local_13 = _e19;
+        bool _e19 = local_13;
+        local_12 = _e19;
     } else {
-        local_13 = true;
+        local_12 = true;
     }
-    bool _e21 = local_13;
+    bool _e21 = local_12;
     if (_e21) {
         return 1.0;
     }
@@ -613,15 +613,15 @@ float light_importance(vec3 center_4, float radius_4, float phi_1, vec3 axis_2, 
 }
 
 float glossy_importance(vec3 center_5, float radius_5, float phi_2, vec3 axis_3, float cos_o_3, float cos_e_2, vec3 p_5, vec3 n_6, vec3 r_4, vec4 lobe_5) {
-    bool local_15 = false;
+    bool local_14 = false;
     float _e10 = emitter_importance(center_5, radius_5, phi_2, axis_3, cos_o_3, cos_e_2, p_5);
     float _e11 = cone_cos_toward(center_5, radius_5, p_5, n_6);
     if (!((_e10 <= 0.0))) {
-        local_15 = (_e11 <= 0.0);
+        local_14 = (_e11 <= 0.0);
     } else {
-        local_15 = true;
+        local_14 = true;
     }
-    bool _e20 = local_15;
+    bool _e20 = local_14;
     if (_e20) {
         return 0.0;
     }
@@ -679,15 +679,15 @@ float ray_aabb(vec3 o, vec3 inv_d, vec3 bmin_1, vec3 bmax_1, float t_max) {
 }
 
 vec3 triangle_normal(vec3 a_4, vec3 b_3, vec3 c_4) {
-    bool local_16 = false;
+    bool local_15 = false;
     vec3 n_14 = cross((b_3 - a_4), (c_4 - a_4));
     float l2_ = dot(n_14, n_14);
     if (!(!((l2_ > 0.0)))) {
-        local_16 = !((l2_ < 3e38));
+        local_15 = !((l2_ < 3e38));
     } else {
-        local_16 = true;
+        local_15 = true;
     }
-    bool _e17 = local_16;
+    bool _e17 = local_15;
     if (_e17) {
         return vec3(0.0, 0.0, 0.0);
     }
@@ -695,9 +695,9 @@ vec3 triangle_normal(vec3 a_4, vec3 b_3, vec3 c_4) {
 }
 
 float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_5, vec3 b_4, vec3 c_5, float t_min, float t_max_1) {
+    bool local_16 = false;
     bool local_17 = false;
     bool local_18 = false;
-    bool local_19 = false;
     vec3 e1_ = (b_4 - a_5);
     vec3 e2_ = (c_5 - a_5);
     vec3 p_9 = cross(d_3, e2_);
@@ -709,32 +709,32 @@ float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_5, vec3 b_4, vec3 c_5, float t_min
     vec3 s_9 = (o_1 - a_5);
     float u_3 = (dot(s_9, p_9) * inv_1);
     if (!((u_3 < 0.0))) {
-        local_17 = (u_3 > 1.0);
+        local_16 = (u_3 > 1.0);
     } else {
-        local_17 = true;
+        local_16 = true;
     }
-    bool _e28 = local_17;
+    bool _e28 = local_16;
     if (_e28) {
         return -1.0;
     }
     vec3 q_1 = cross(s_9, e1_);
     float v_13 = (dot(d_3, q_1) * inv_1);
     if (!((v_13 < 0.0))) {
-        local_18 = ((u_3 + v_13) > 1.0);
+        local_17 = ((u_3 + v_13) > 1.0);
     } else {
-        local_18 = true;
+        local_17 = true;
     }
-    bool _e42 = local_18;
+    bool _e42 = local_17;
     if (_e42) {
         return -1.0;
     }
     float t_6 = (dot(e2_, q_1) * inv_1);
     if ((t_6 > t_min)) {
-        local_19 = (t_6 < t_max_1);
+        local_18 = (t_6 < t_max_1);
     } else {
-        local_19 = false;
+        local_18 = false;
     }
-    bool _e51 = local_19;
+    bool _e51 = local_18;
     if (_e51) {
         return t_6;
     }
@@ -872,19 +872,19 @@ float bsh_inner_scale(float a_7, vec3 v_4, float d2_6, vec3 r_6, vec4 rl_2) {
 }
 
 bool bsh_reaches(BshNode node_3, vec3 x_5, vec3 r_7, vec4 rl_3) {
+    bool local_19 = false;
     bool local_20 = false;
-    bool local_21 = false;
     bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_5);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
         bool _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001)), x_5);
-        local_20 = !(_e20);
+        local_19 = !(_e20);
     } else {
-        local_20 = true;
+        local_19 = true;
     }
-    bool _e23 = local_20;
+    bool _e23 = local_19;
     if (_e23) {
         return false;
     }
@@ -905,11 +905,11 @@ bool bsh_reaches(BshNode node_3, vec3 x_5, vec3 r_7, vec4 rl_3) {
     float s_c = (_e50 * 1.001);
     float reach = (node_3.extent + (sqrt(s_c) * _e25));
     if ((d2_9 <= ((node_3.radius * node_3.radius) * s_c))) {
-        local_21 = (d2_9 <= (reach * reach));
+        local_20 = (d2_9 <= (reach * reach));
     } else {
-        local_21 = false;
+        local_20 = false;
     }
-    bool _e67 = local_21;
+    bool _e67 = local_20;
     return _e67;
 }
 
@@ -921,18 +921,18 @@ bool bsh_reaches_box(BshNode node_4, vec3 lo, vec3 hi, float w_4) {
 uint bsh_subtree(uint nodes_3, uint s_1, uint depth) {
     uint i_2 = 0u;
     uint level = 0u;
-    bool local_22 = false;
+    bool local_21 = false;
     uint _e3 = bsh_first(nodes_3);
     i_2 = _e3;
     while(true) {
         uint _e7 = level;
         if ((_e7 < depth)) {
             uint _e11 = i_2;
-            local_22 = (_e11 != BSH_NONE);
+            local_21 = (_e11 != BSH_NONE);
         } else {
-            local_22 = false;
+            local_21 = false;
         }
-        bool _e15 = local_22;
+        bool _e15 = local_21;
         if (_e15) {
         } else {
             break;
@@ -1002,8 +1002,8 @@ float next_threshold(float sum, inout uint h_1) {
 
 Connection connect_record(GpuLight l_4, vec3 x_6, vec3 n_8, vec3 ng_1, float r2_3, float rt2_4, float w_res, float u1_2, float u2_2, float eps, bool trace_1) {
     Connection c_6 = Connection(vec3(0.0), vec3(0.0), 0.0);
+    bool local_22 = false;
     bool local_23 = false;
-    bool local_24 = false;
     c_6.e = vec3(0.0);
     vec3 _e16 = light_point(l_4, u1_2, u2_2);
     c_6.y = _e16;
@@ -1015,16 +1015,16 @@ Connection connect_record(GpuLight l_4, vec3 x_6, vec3 n_8, vec3 ng_1, float r2_
         if (trace_1) {
             vec3 _e33 = c_6.y;
             bool _e34 = occluded((x_6 + (ng_1 * eps)), _e33);
-            local_24 = _e34;
+            local_23 = _e34;
         } else {
-            local_24 = false;
+            local_23 = false;
         }
-        bool _e36 = local_24;
-        local_23 = _e36;
+        bool _e36 = local_23;
+        local_22 = _e36;
     } else {
-        local_23 = true;
+        local_22 = true;
     }
-    bool _e38 = local_23;
+    bool _e38 = local_22;
     if (_e38) {
         Connection _e39 = c_6;
         return _e39;
@@ -1181,9 +1181,9 @@ bool box_is_empty(WorkgroupBox b_6) {
 uint tile_subtree(uint s_4, TileWalk t_1, bool list, uint at, uint start_2, uint to) {
     uint p_8 = 0u;
     uint b_7 = 0u;
+    bool local_24 = false;
     bool local_25 = false;
     bool local_26 = false;
-    bool local_27 = false;
     uint _e8 = bsh_subtree(BSH, s_4, BSH_TILE_DEPTH);
     if ((_e8 == BSH_NONE)) {
         return 0u;
@@ -1205,16 +1205,16 @@ uint tile_subtree(uint s_4, TileWalk t_1, bool list, uint at, uint start_2, uint
         if ((_e23 != end_1)) {
             if (!(!(list))) {
                 uint _e31 = p_8;
-                local_26 = (_e31 < to);
+                local_25 = (_e31 < to);
             } else {
-                local_26 = true;
+                local_25 = true;
             }
-            bool _e34 = local_26;
-            local_25 = _e34;
+            bool _e34 = local_25;
+            local_24 = _e34;
         } else {
-            local_25 = false;
+            local_24 = false;
         }
-        bool _e36 = local_25;
+        bool _e36 = local_24;
         if (_e36) {
         } else {
             break;
@@ -1222,11 +1222,11 @@ uint tile_subtree(uint s_4, TileWalk t_1, bool list, uint at, uint start_2, uint
         {
             if (list) {
                 uint _e39 = p_8;
-                local_27 = (_e39 >= start_2);
+                local_26 = (_e39 >= start_2);
             } else {
-                local_27 = false;
+                local_26 = false;
             }
-            bool _e42 = local_27;
+            bool _e42 = local_26;
             if (_e42) {
                 uint _e44 = p_8;
                 uint _e47 = b_7;
@@ -1241,42 +1241,49 @@ uint tile_subtree(uint s_4, TileWalk t_1, bool list, uint at, uint start_2, uint
 }
 
 TileWalk tile_walk_begin(uint li_6, vec3 x_10, float w_7, bool has_1) {
+    bool local_27 = false;
     TileWalk t_2 = TileWalk(vec3(0.0), vec3(0.0), 0.0, 0u);
     uint s_5 = 0u;
     uint sum_1 = 0u;
     uint s_6 = 0u;
-    uint _e8 = atomicMax(tile_scale, (has_1 ? floatBitsToUint(w_7) : 0u));
-    WorkgroupBox _e9 = workgroup_box(li_6, x_10, has_1);
+    if (has_1) {
+        local_27 = (w_7 >= 0.0);
+    } else {
+        local_27 = false;
+    }
+    bool _e12 = local_27;
+    uint _e14 = atomicMax(tile_scale, (_e12 ? floatBitsToUint(w_7) : 0u));
+    WorkgroupBox _e15 = workgroup_box(li_6, x_10, has_1);
     memoryBarrierShared();
     barrier();
-    uint _e13 = tile_scale;
+    uint _e19 = tile_scale;
     memoryBarrierShared();
     barrier();
-    t_2 = TileWalk(_e9.lo, _e9.hi, uintBitsToFloat(_e13), 0u);
-    bool _e18 = box_is_empty(_e9);
-    if (_e18) {
-        TileWalk _e19 = t_2;
-        return _e19;
+    t_2 = TileWalk(_e15.lo, _e15.hi, uintBitsToFloat(_e19), 0u);
+    bool _e24 = box_is_empty(_e15);
+    if (_e24) {
+        TileWalk _e25 = t_2;
+        return _e25;
     }
     s_5 = li_6;
     bool loop_init_4 = true;
     while(true) {
         if (!loop_init_4) {
-            uint _e34 = s_5;
-            s_5 = (_e34 + TILE_THREADS);
+            uint _e40 = s_5;
+            s_5 = (_e40 + TILE_THREADS);
         }
         loop_init_4 = false;
-        uint _e21 = s_5;
-        if ((_e21 < BSH_TILE_SUBTREES)) {
+        uint _e27 = s_5;
+        if ((_e27 < BSH_TILE_SUBTREES)) {
         } else {
             break;
         }
         {
-            uint _e25 = s_5;
-            uint _e27 = s_5;
-            TileWalk _e28 = t_2;
-            uint _e33 = tile_subtree(_e27, _e28, false, 0u, 0u, 0u);
-            subtree_at[_e25] = _e33;
+            uint _e31 = s_5;
+            uint _e33 = s_5;
+            TileWalk _e34 = t_2;
+            uint _e39 = tile_subtree(_e33, _e34, false, 0u, 0u, 0u);
+            subtree_at[_e31] = _e39;
         }
     }
     memoryBarrierShared();
@@ -1285,36 +1292,36 @@ TileWalk tile_walk_begin(uint li_6, vec3 x_10, float w_7, bool has_1) {
         bool loop_init_5 = true;
         while(true) {
             if (!loop_init_5) {
-                uint _e57 = s_6;
-                s_6 = (_e57 + 1u);
+                uint _e63 = s_6;
+                s_6 = (_e63 + 1u);
             }
             loop_init_5 = false;
-            uint _e43 = s_6;
-            if ((_e43 < BSH_TILE_SUBTREES)) {
+            uint _e49 = s_6;
+            if ((_e49 < BSH_TILE_SUBTREES)) {
             } else {
                 break;
             }
             {
-                uint _e47 = s_6;
-                uint c_13 = subtree_at[_e47];
-                uint _e51 = s_6;
-                uint _e53 = sum_1;
-                subtree_at[_e51] = _e53;
-                uint _e54 = sum_1;
-                sum_1 = (_e54 + c_13);
+                uint _e53 = s_6;
+                uint c_13 = subtree_at[_e53];
+                uint _e57 = s_6;
+                uint _e59 = sum_1;
+                subtree_at[_e57] = _e59;
+                uint _e60 = sum_1;
+                sum_1 = (_e60 + c_13);
             }
         }
-        uint _e60 = sum_1;
-        tile_total = _e60;
+        uint _e66 = sum_1;
+        tile_total = _e66;
     }
     memoryBarrierShared();
     barrier();
-    uint _e63 = tile_total;
+    uint _e69 = tile_total;
     memoryBarrierShared();
     barrier();
-    t_2.total = _e63;
-    TileWalk _e64 = t_2;
-    return _e64;
+    t_2.total = _e69;
+    TileWalk _e70 = t_2;
+    return _e70;
 }
 
 uint tile_walk_fill(uint li_7, TileWalk t_3, uint start_3) {
@@ -1500,10 +1507,9 @@ void main() {
     uint h = 0u;
     Shaded t = Shaded(vec3(0.0), vec3(0.0), vec3(0.0));
     WeightedPicks picks = WeightedPicks(uint[8](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u), float[8](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), float[8](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0.0, 0u, 0u);
-    bool local_4 = false;
     uint start = 0u;
     uint j = 0u;
-    bool local_5 = false;
+    bool local_4 = false;
     uvec2 keys[8] = uvec2[8](uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u));
     bool held[8] = bool[8](false, false, false, false, false, false, false, false);
     uint k = 0u;
@@ -1588,62 +1594,56 @@ void main() {
     h = _e140;
     WeightedPicks _e150 = weighted_picks(_e139);
     picks = _e150;
-    if (has_2) {
-        local_4 = (_e116.w >= 0.0);
-    } else {
-        local_4 = false;
-    }
-    bool _e159 = local_4;
-    TileWalk _e160 = tile_walk_begin(lid, x_14, _e116.w, _e159);
+    TileWalk _e153 = tile_walk_begin(lid, x_14, _e116.w, has_2);
     bool loop_init_9 = true;
     while(true) {
         if (!loop_init_9) {
-            uint _e199 = start;
-            start = (_e199 + TILE_LIST);
+            uint _e192 = start;
+            start = (_e192 + TILE_LIST);
         }
         loop_init_9 = false;
-        uint _e163 = start;
-        if ((_e163 < _e160.total)) {
+        uint _e156 = start;
+        if ((_e156 < _e153.total)) {
         } else {
             break;
         }
         {
-            uint _e166 = start;
-            uint _e167 = tile_walk_fill(lid, _e160, _e166);
+            uint _e159 = start;
+            uint _e160 = tile_walk_fill(lid, _e153, _e159);
             j = 0u;
             bool loop_init_10 = true;
             while(true) {
                 if (!loop_init_10) {
-                    uint _e197 = j;
-                    j = (_e197 + 1u);
+                    uint _e190 = j;
+                    j = (_e190 + 1u);
                 }
                 loop_init_10 = false;
-                uint _e170 = j;
-                if ((_e170 < _e167)) {
+                uint _e163 = j;
+                if ((_e163 < _e160)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e173 = j;
-                    uint b_9 = tile_list[_e173];
+                    uint _e166 = j;
+                    uint b_9 = tile_list[_e166];
                     if (!(!(has_2))) {
-                        BshNode _e182 = _group_1_binding_4_cs[b_9];
-                        vec3 _e183 = r;
-                        bool _e184 = bsh_reaches(_e182, x_14, _e183, _e116);
-                        local_5 = !(_e184);
+                        BshNode _e175 = _group_1_binding_4_cs[b_9];
+                        vec3 _e176 = r;
+                        bool _e177 = bsh_reaches(_e175, x_14, _e176, _e116);
+                        local_4 = !(_e177);
                     } else {
-                        local_5 = true;
+                        local_4 = true;
                     }
-                    bool _e187 = local_5;
-                    if (_e187) {
+                    bool _e180 = local_4;
+                    if (_e180) {
                         continue;
                     }
                     uint li_10 = _group_1_binding_4_cs[b_9].light;
-                    vec3 _e192 = n;
-                    vec3 _e193 = r;
-                    vec4 _e194 = lobe;
-                    float _e195 = light_weight(li_10, x_14, _e192, _e193, _e194, _e116);
-                    weighted_offer(picks, li_10, _e195);
+                    vec3 _e185 = n;
+                    vec3 _e186 = r;
+                    vec4 _e187 = lobe;
+                    float _e188 = light_weight(li_10, x_14, _e185, _e186, _e187, _e116);
+                    weighted_offer(picks, li_10, _e188);
                 }
             }
             memoryBarrierShared();
@@ -1657,107 +1657,107 @@ void main() {
         }
         return;
     }
-    float _e210 = picks.w_sum;
-    if ((_e210 > 0.0)) {
+    float _e203 = picks.w_sum;
+    if ((_e203 > 0.0)) {
         bool loop_init_11 = true;
         while(true) {
             if (!loop_init_11) {
-                uint _e246 = k;
-                k = (_e246 + 1u);
+                uint _e239 = k;
+                k = (_e239 + 1u);
             }
             loop_init_11 = false;
-            uint _e217 = k;
-            if ((_e217 < K)) {
+            uint _e210 = k;
+            if ((_e210 < K)) {
             } else {
                 break;
             }
             {
-                uint _e221 = k;
-                uint _e226 = k;
-                uint _e228 = picks.light[_e226];
-                uint _e231 = _group_1_binding_1_cs[_e228].kind;
-                uint own = ((_e231 == LIGHT_TRIANGLE) ? (_e221 + 1u) : 0u);
+                uint _e214 = k;
+                uint _e219 = k;
+                uint _e221 = picks.light[_e219];
+                uint _e224 = _group_1_binding_1_cs[_e221].kind;
+                uint own = ((_e224 == LIGHT_TRIANGLE) ? (_e214 + 1u) : 0u);
+                uint _e228 = k;
+                uint _e231 = k;
+                uint _e233 = picks.light[_e231];
+                keys[_e228] = uvec2(_e233, own);
                 uint _e235 = k;
-                uint _e238 = k;
-                uint _e240 = picks.light[_e238];
-                keys[_e235] = uvec2(_e240, own);
-                uint _e242 = k;
-                held[_e242] = true;
+                held[_e235] = true;
             }
         }
-        uvec2 _e248[8] = keys;
-        bool _e249[8] = held;
-        uint _e250[8] = first_holders(_e248, _e249);
+        uvec2 _e241[8] = keys;
+        bool _e242[8] = held;
+        uint _e243[8] = first_holders(_e241, _e242);
         bool loop_init_12 = true;
         while(true) {
             if (!loop_init_12) {
-                uint _e308 = k_1;
-                k_1 = (_e308 + 1u);
+                uint _e301 = k_1;
+                k_1 = (_e301 + 1u);
             }
             loop_init_12 = false;
-            uint _e253 = k_1;
-            if ((_e253 < K)) {
+            uint _e246 = k_1;
+            if ((_e246 < K)) {
             } else {
                 break;
             }
             {
-                uint _e256 = h;
-                uint _e257 = pcg_hash(_e256);
-                h = _e257;
-                uint _e258 = h;
-                float _e259 = xi_from_bits(_e258);
-                uint _e260 = h;
-                uint _e261 = pcg_hash(_e260);
-                h = _e261;
-                uint _e262 = h;
-                float _e263 = xi_from_bits(_e262);
-                uint _e265 = k_1;
-                uint li_11 = picks.light[_e265];
+                uint _e249 = h;
+                uint _e250 = pcg_hash(_e249);
+                h = _e250;
+                uint _e251 = h;
+                float _e252 = xi_from_bits(_e251);
+                uint _e253 = h;
+                uint _e254 = pcg_hash(_e253);
+                h = _e254;
+                uint _e255 = h;
+                float _e256 = xi_from_bits(_e255);
+                uint _e258 = k_1;
+                uint li_11 = picks.light[_e258];
                 copies = 0u;
-                uint _e270 = k_1;
-                j_1 = _e270;
+                uint _e263 = k_1;
+                j_1 = _e263;
                 bool loop_init_13 = true;
                 while(true) {
                     if (!loop_init_13) {
-                        uint _e285 = j_1;
-                        j_1 = (_e285 + 1u);
+                        uint _e278 = j_1;
+                        j_1 = (_e278 + 1u);
                     }
                     loop_init_13 = false;
-                    uint _e272 = j_1;
-                    if ((_e272 < K)) {
+                    uint _e265 = j_1;
+                    if ((_e265 < K)) {
                     } else {
                         break;
                     }
                     {
-                        uint _e275 = copies;
-                        uint _e278 = j_1;
-                        uint _e280 = k_1;
-                        copies = (_e275 + ((_e250[_e278] == _e280) ? 1u : 0u));
+                        uint _e268 = copies;
+                        uint _e271 = j_1;
+                        uint _e273 = k_1;
+                        copies = (_e268 + ((_e243[_e271] == _e273) ? 1u : 0u));
                     }
                 }
-                uint _e287 = copies;
-                if ((_e287 > 0u)) {
-                    Shaded _e290 = t;
-                    vec3 _e291 = n;
-                    vec3 _e292 = r;
-                    Material _e293 = m;
-                    float _e295 = picks.w_sum;
-                    uint _e297 = k_1;
-                    float _e299 = picks.w[_e297];
-                    float _e301 = weighted_pick_weight(_e295, _e299, K);
-                    uint _e302 = copies;
-                    Shaded _e305 = shade_pick(li_11, x_14, _e291, _e292, _e116, _e293, (_e301 * float(_e302)), _e259, _e263, eps_4);
-                    Shaded _e306 = add(_e290, _e305);
-                    t = _e306;
+                uint _e280 = copies;
+                if ((_e280 > 0u)) {
+                    Shaded _e283 = t;
+                    vec3 _e284 = n;
+                    vec3 _e285 = r;
+                    Material _e286 = m;
+                    float _e288 = picks.w_sum;
+                    uint _e290 = k_1;
+                    float _e292 = picks.w[_e290];
+                    float _e294 = weighted_pick_weight(_e288, _e292, K);
+                    uint _e295 = copies;
+                    Shaded _e298 = shade_pick(li_11, x_14, _e284, _e285, _e116, _e286, (_e294 * float(_e295)), _e252, _e256, eps_4);
+                    Shaded _e299 = add(_e283, _e298);
+                    t = _e299;
                 }
             }
         }
     }
     uint count = picks.n;
-    vec3 _e314 = t.e;
-    imageStore(_group_0_binding_3_cs, texel_1, vec4(_e314, float(count)));
-    vec3 _e319 = t.specular;
-    imageStore(_group_0_binding_6_cs, texel_1, vec4(_e319, 0.0));
+    vec3 _e307 = t.e;
+    imageStore(_group_0_binding_3_cs, texel_1, vec4(_e307, float(count)));
+    vec3 _e312 = t.specular;
+    imageStore(_group_0_binding_6_cs, texel_1, vec4(_e312, 0.0));
     return;
 }
 

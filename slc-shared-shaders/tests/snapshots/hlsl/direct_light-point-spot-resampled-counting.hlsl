@@ -277,29 +277,29 @@ float connection_factor(float cos_x, float d2_3, float rt2_1, float w_1)
 
 float connection_cosine(float3 x_2, float3 y, float3 n_1, float3 ng, float r2_1)
 {
+    bool local_7 = (bool)0;
     bool local_8 = (bool)0;
-    bool local_9 = (bool)0;
 
     float3 v_4 = (x_2 - y);
     float d2_6 = dot(v_4, v_4);
     const bool _e7 = slc_keep(r2_1, d2_6);
     if (!(!(_e7))) {
-        local_8 = !((d2_6 > 0.0));
+        local_7 = !((d2_6 > 0.0));
     } else {
-        local_8 = true;
+        local_7 = true;
     }
-    bool _e16 = local_8;
+    bool _e16 = local_7;
     if (_e16) {
         return 0.0;
     }
     float3 w_9 = (v_4 / (sqrt(d2_6)).xxx);
     float cos_x_1 = -(dot(n_1, w_9));
     if (!((cos_x_1 <= 0.0))) {
-        local_9 = (dot(ng, w_9) >= 0.0);
+        local_8 = (dot(ng, w_9) >= 0.0);
     } else {
-        local_9 = true;
+        local_8 = true;
     }
-    bool _e32 = local_9;
+    bool _e32 = local_8;
     if (_e32) {
         return 0.0;
     }
@@ -427,23 +427,23 @@ float4 range_lobe(float4 lobe_4)
 
 float cone_cos_of(float3 v, float d2_4, float a_2, float3 d)
 {
+    bool local_9 = (bool)0;
     bool local_10 = (bool)0;
-    bool local_11 = (bool)0;
 
     float vd = dot(v, d);
     float h2_ = (d2_4 - (a_2 * a_2));
     if (!((h2_ <= 0.0))) {
         if ((vd >= 0.0)) {
-            local_11 = ((vd * vd) >= h2_);
+            local_10 = ((vd * vd) >= h2_);
         } else {
-            local_11 = false;
+            local_10 = false;
         }
-        bool _e19 = local_11;
-        local_10 = _e19;
+        bool _e19 = local_10;
+        local_9 = _e19;
     } else {
-        local_10 = true;
+        local_9 = true;
     }
-    bool _e21 = local_10;
+    bool _e21 = local_9;
     if (_e21) {
         return 1.0;
     }
@@ -508,9 +508,9 @@ float ray_aabb(float3 o, float3 inv_d, float3 bmin_1, float3 bmax_1, float t_max
 
 float ray_triangle(float3 o_1, float3 d_3, float3 a_3, float3 b_2, float3 c_4, float t_min, float t_max_1)
 {
+    bool local_11 = (bool)0;
     bool local_12 = (bool)0;
     bool local_13 = (bool)0;
-    bool local_14 = (bool)0;
 
     float3 e1_ = (b_2 - a_3);
     float3 e2_ = (c_4 - a_3);
@@ -523,32 +523,32 @@ float ray_triangle(float3 o_1, float3 d_3, float3 a_3, float3 b_2, float3 c_4, f
     float3 s_10 = (o_1 - a_3);
     float u_3 = (dot(s_10, p_4) * inv);
     if (!((u_3 < 0.0))) {
-        local_12 = (u_3 > 1.0);
+        local_11 = (u_3 > 1.0);
     } else {
-        local_12 = true;
+        local_11 = true;
     }
-    bool _e28 = local_12;
+    bool _e28 = local_11;
     if (_e28) {
         return -1.0;
     }
     float3 q_2 = cross(s_10, e1_);
     float v_6 = (dot(d_3, q_2) * inv);
     if (!((v_6 < 0.0))) {
-        local_13 = ((u_3 + v_6) > 1.0);
+        local_12 = ((u_3 + v_6) > 1.0);
     } else {
-        local_13 = true;
+        local_12 = true;
     }
-    bool _e42 = local_13;
+    bool _e42 = local_12;
     if (_e42) {
         return -1.0;
     }
     float t_6 = (dot(e2_, q_2) * inv);
     if ((t_6 > t_min)) {
-        local_14 = (t_6 < t_max_1);
+        local_13 = (t_6 < t_max_1);
     } else {
-        local_14 = false;
+        local_13 = false;
     }
-    bool _e51 = local_14;
+    bool _e51 = local_13;
     if (_e51) {
         return t_6;
     }
@@ -746,8 +746,8 @@ float bsh_inner_scale(float a_5, float3 v_1, float d2_5, float3 r_4, float4 rl_2
 
 bool bsh_reaches(BshNode node_3, float3 x_4, float3 r_5, float4 rl_3)
 {
+    bool local_14 = (bool)0;
     bool local_15 = (bool)0;
-    bool local_16 = (bool)0;
 
     const bool _e6 = sphere_contains_point(node_3.center_, node_3.radius, x_4);
     if (_e6) {
@@ -755,11 +755,11 @@ bool bsh_reaches(BshNode node_3, float3 x_4, float3 r_5, float4 rl_3)
     }
     if (!((rl_3.w <= 1.0))) {
         const bool _e20 = sphere_contains_point(node_3.center_, (node_3.radius * (rl_3.w * 1.0001)), x_4);
-        local_15 = !(_e20);
+        local_14 = !(_e20);
     } else {
-        local_15 = true;
+        local_14 = true;
     }
-    bool _e23 = local_15;
+    bool _e23 = local_14;
     if (_e23) {
         return false;
     }
@@ -780,11 +780,11 @@ bool bsh_reaches(BshNode node_3, float3 x_4, float3 r_5, float4 rl_3)
     float s_c = (_e50 * 1.001);
     float reach = (node_3.extent + (sqrt(s_c) * _e25));
     if ((d2_7 <= ((node_3.radius * node_3.radius) * s_c))) {
-        local_16 = (d2_7 <= (reach * reach));
+        local_15 = (d2_7 <= (reach * reach));
     } else {
-        local_16 = false;
+        local_15 = false;
     }
-    bool _e67 = local_16;
+    bool _e67 = local_15;
     return _e67;
 }
 
@@ -798,7 +798,7 @@ uint bsh_subtree(uint nodes_3, uint s_1, uint depth)
 {
     uint i_2 = (uint)0;
     uint level = 0u;
-    bool local_17 = (bool)0;
+    bool local_16 = (bool)0;
 
     const uint _e3 = bsh_first(nodes_3);
     i_2 = _e3;
@@ -809,11 +809,11 @@ uint bsh_subtree(uint nodes_3, uint s_1, uint depth)
         uint _e7 = level;
         if ((_e7 < depth)) {
             uint _e11 = i_2;
-            local_17 = (_e11 != BSH_NONE);
+            local_16 = (_e11 != BSH_NONE);
         } else {
-            local_17 = false;
+            local_16 = false;
         }
-        bool _e15 = local_17;
+        bool _e15 = local_16;
         if (_e15) {
         } else {
             break;
@@ -890,8 +890,8 @@ float next_threshold(float sum, inout uint h_1)
 Connection connect_record(GpuLight l_2, float3 x_5, float3 n_2, float3 ng_1, float r2_2, float rt2_2, float w_res, float u1_1, float u2_1, float eps, bool trace_1)
 {
     Connection c_5 = (Connection)0;
+    bool local_17 = (bool)0;
     bool local_18 = (bool)0;
-    bool local_19 = (bool)0;
 
     c_5.e = (0.0).xxx;
     const float3 _e16 = light_point(l_2, u1_1, u2_1);
@@ -904,16 +904,16 @@ Connection connect_record(GpuLight l_2, float3 x_5, float3 n_2, float3 ng_1, flo
         if (trace_1) {
             float3 _e33 = c_5.y;
             const bool _e34 = occluded((x_5 + (ng_1 * eps)), _e33);
-            local_19 = _e34;
+            local_18 = _e34;
         } else {
-            local_19 = false;
+            local_18 = false;
         }
-        bool _e36 = local_19;
-        local_18 = _e36;
+        bool _e36 = local_18;
+        local_17 = _e36;
     } else {
-        local_18 = true;
+        local_17 = true;
     }
-    bool _e38 = local_18;
+    bool _e38 = local_17;
     if (_e38) {
         Connection _e39 = c_5;
         const Connection connection = _e39;
@@ -1032,9 +1032,9 @@ uint tile_subtree(uint s_3, TileWalk t_1, bool list, uint at, uint start_2, uint
 {
     uint p_3 = (uint)0;
     uint b_5 = (uint)0;
+    bool local_19 = (bool)0;
     bool local_20 = (bool)0;
     bool local_21 = (bool)0;
-    bool local_22 = (bool)0;
 
     const uint _e8 = bsh_subtree(BSH, s_3, BSH_TILE_DEPTH);
     if ((_e8 == BSH_NONE)) {
@@ -1060,16 +1060,16 @@ uint tile_subtree(uint s_3, TileWalk t_1, bool list, uint at, uint start_2, uint
         if ((_e23 != end_1)) {
             if (!(!(list))) {
                 uint _e31 = p_3;
-                local_21 = (_e31 < to);
+                local_20 = (_e31 < to);
             } else {
-                local_21 = true;
+                local_20 = true;
             }
-            bool _e34 = local_21;
-            local_20 = _e34;
+            bool _e34 = local_20;
+            local_19 = _e34;
         } else {
-            local_20 = false;
+            local_19 = false;
         }
-        bool _e36 = local_20;
+        bool _e36 = local_19;
         if (_e36) {
         } else {
             break;
@@ -1077,11 +1077,11 @@ uint tile_subtree(uint s_3, TileWalk t_1, bool list, uint at, uint start_2, uint
         {
             if (list) {
                 uint _e39 = p_3;
-                local_22 = (_e39 >= start_2);
+                local_21 = (_e39 >= start_2);
             } else {
-                local_22 = false;
+                local_21 = false;
             }
-            bool _e42 = local_22;
+            bool _e42 = local_21;
             if (_e42) {
                 uint _e44 = p_3;
                 uint _e47 = b_5;
@@ -1106,21 +1106,28 @@ TileWalk ConstructTileWalk(float3 arg0, float3 arg1, float arg2, uint arg3) {
 
 TileWalk tile_walk_begin(uint li_3, float3 x_7, float w_5, bool has_1)
 {
+    bool local_22 = (bool)0;
     TileWalk t_2 = (TileWalk)0;
     uint s_4 = (uint)0;
     uint sum_1 = 0u;
     uint s_5 = 0u;
 
-    uint _e8; InterlockedMax(tile_scale, (has_1 ? asuint(w_5) : 0u), _e8);
-    const WorkgroupBox _e9 = workgroup_box(li_3, x_7, has_1);
+    if (has_1) {
+        local_22 = (w_5 >= 0.0);
+    } else {
+        local_22 = false;
+    }
+    bool _e12 = local_22;
+    uint _e14; InterlockedMax(tile_scale, (_e12 ? asuint(w_5) : 0u), _e14);
+    const WorkgroupBox _e15 = workgroup_box(li_3, x_7, has_1);
     GroupMemoryBarrierWithGroupSync();
-    uint _e13 = tile_scale;
+    uint _e19 = tile_scale;
     GroupMemoryBarrierWithGroupSync();
-    t_2 = ConstructTileWalk(_e9.lo, _e9.hi, asfloat(_e13), 0u);
-    const bool _e18 = box_is_empty(_e9);
-    if (_e18) {
-        TileWalk _e19 = t_2;
-        const TileWalk tilewalk = _e19;
+    t_2 = ConstructTileWalk(_e15.lo, _e15.hi, asfloat(_e19), 0u);
+    const bool _e24 = box_is_empty(_e15);
+    if (_e24) {
+        TileWalk _e25 = t_2;
+        const TileWalk tilewalk = _e25;
         return tilewalk;
     }
     s_4 = li_3;
@@ -1130,21 +1137,21 @@ TileWalk tile_walk_begin(uint li_3, float3 x_7, float w_5, bool has_1)
         if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
         loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
         if (!loop_init_3) {
-            uint _e34 = s_4;
-            s_4 = (_e34 + TILE_THREADS);
+            uint _e40 = s_4;
+            s_4 = (_e40 + TILE_THREADS);
         }
         loop_init_3 = false;
-        uint _e21 = s_4;
-        if ((_e21 < BSH_TILE_SUBTREES)) {
+        uint _e27 = s_4;
+        if ((_e27 < BSH_TILE_SUBTREES)) {
         } else {
             break;
         }
         {
-            uint _e25 = s_4;
-            uint _e27 = s_4;
-            TileWalk _e28 = t_2;
-            const uint _e33 = tile_subtree(_e27, _e28, false, 0u, 0u, 0u);
-            subtree_at[min(uint(_e25), 255u)] = _e33;
+            uint _e31 = s_4;
+            uint _e33 = s_4;
+            TileWalk _e34 = t_2;
+            const uint _e39 = tile_subtree(_e33, _e34, false, 0u, 0u, 0u);
+            subtree_at[min(uint(_e31), 255u)] = _e39;
         }
     }
     GroupMemoryBarrierWithGroupSync();
@@ -1155,34 +1162,34 @@ TileWalk tile_walk_begin(uint li_3, float3 x_7, float w_5, bool has_1)
             if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
             loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
             if (!loop_init_4) {
-                uint _e57 = s_5;
-                s_5 = (_e57 + 1u);
+                uint _e63 = s_5;
+                s_5 = (_e63 + 1u);
             }
             loop_init_4 = false;
-            uint _e43 = s_5;
-            if ((_e43 < BSH_TILE_SUBTREES)) {
+            uint _e49 = s_5;
+            if ((_e49 < BSH_TILE_SUBTREES)) {
             } else {
                 break;
             }
             {
-                uint _e47 = s_5;
-                uint c_8 = subtree_at[min(uint(_e47), 255u)];
-                uint _e51 = s_5;
-                uint _e53 = sum_1;
-                subtree_at[min(uint(_e51), 255u)] = _e53;
-                uint _e54 = sum_1;
-                sum_1 = (_e54 + c_8);
+                uint _e53 = s_5;
+                uint c_8 = subtree_at[min(uint(_e53), 255u)];
+                uint _e57 = s_5;
+                uint _e59 = sum_1;
+                subtree_at[min(uint(_e57), 255u)] = _e59;
+                uint _e60 = sum_1;
+                sum_1 = (_e60 + c_8);
             }
         }
-        uint _e60 = sum_1;
-        tile_total = _e60;
+        uint _e66 = sum_1;
+        tile_total = _e66;
     }
     GroupMemoryBarrierWithGroupSync();
-    uint _e63 = tile_total;
+    uint _e69 = tile_total;
     GroupMemoryBarrierWithGroupSync();
-    t_2.total = _e63;
-    TileWalk _e64 = t_2;
-    const TileWalk tilewalk_1 = _e64;
+    t_2.total = _e69;
+    TileWalk _e70 = t_2;
+    const TileWalk tilewalk_1 = _e70;
     return tilewalk_1;
 }
 
@@ -1408,19 +1415,18 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
     uint count = 0u;
     uint hc = (uint)0;
     float threshold[8] = (float[8])0;
-    bool local_4 = (bool)0;
     uint start = 0u;
     uint j = (uint)0;
-    bool local_5 = (bool)0;
+    bool local_4 = (bool)0;
     uint q = (uint)0;
-    bool local_6 = (bool)0;
+    bool local_5 = (bool)0;
     uint2 keys[8] = (uint2[8])0;
     bool held[8] = (bool[8])0;
     uint k = 0u;
     uint k_1 = 0u;
     float3 w = (float3)0;
     uint j_1 = (uint)0;
-    bool local_7 = (bool)0;
+    bool local_6 = (bool)0;
 
     uint _e5 = view.width;
     if ((gid.x < _e5)) {
@@ -1479,31 +1485,25 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
     const uint _e103 = pick_stream(_e102);
     h = _e103;
     hc = _e102;
-    if (has_2) {
-        local_4 = (_e79.w >= 0.0);
-    } else {
-        local_4 = false;
-    }
-    bool _e130 = local_4;
-    const TileWalk _e131 = tile_walk_begin(lid, x_11, _e79.w, _e130);
+    const TileWalk _e124 = tile_walk_begin(lid, x_11, _e79.w, has_2);
     uint2 loop_bound_11 = uint2(4294967295u, 4294967295u);
     bool loop_init_8 = true;
     while(true) {
         if (all(loop_bound_11 == uint2(0u, 0u))) { break; }
         loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
         if (!loop_init_8) {
-            uint _e230 = start;
-            start = (_e230 + TILE_LIST);
+            uint _e223 = start;
+            start = (_e223 + TILE_LIST);
         }
         loop_init_8 = false;
-        uint _e134 = start;
-        if ((_e134 < _e131.total)) {
+        uint _e127 = start;
+        if ((_e127 < _e124.total)) {
         } else {
             break;
         }
         {
-            uint _e137 = start;
-            const uint _e138 = tile_walk_fill(lid, _e131, _e137);
+            uint _e130 = start;
+            const uint _e131 = tile_walk_fill(lid, _e124, _e130);
             j = 0u;
             uint2 loop_bound_12 = uint2(4294967295u, 4294967295u);
             bool loop_init_9 = true;
@@ -1511,55 +1511,55 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
                 if (all(loop_bound_12 == uint2(0u, 0u))) { break; }
                 loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
                 if (!loop_init_9) {
-                    uint _e228 = j;
-                    j = (_e228 + 1u);
+                    uint _e221 = j;
+                    j = (_e221 + 1u);
                 }
                 loop_init_9 = false;
-                uint _e141 = j;
-                if ((_e141 < _e138)) {
+                uint _e134 = j;
+                if ((_e134 < _e131)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e144 = j;
-                    uint b_7 = tile_list[min(uint(_e144), 1023u)];
+                    uint _e137 = j;
+                    uint b_7 = tile_list[min(uint(_e137), 1023u)];
                     if (!(!(has_2))) {
-                        BshNode _e153 = ConstructBshNode(asfloat(bsh_nodes.Load3(b_7*32+0)), asfloat(bsh_nodes.Load(b_7*32+12)), asuint(bsh_nodes.Load(b_7*32+16)), asuint(bsh_nodes.Load(b_7*32+20)), asuint(bsh_nodes.Load(b_7*32+24)), asfloat(bsh_nodes.Load(b_7*32+28)));
-                        float3 _e154 = r;
-                        const bool _e155 = bsh_reaches(_e153, x_11, _e154, _e79);
-                        local_5 = !(_e155);
+                        BshNode _e146 = ConstructBshNode(asfloat(bsh_nodes.Load3(b_7*32+0)), asfloat(bsh_nodes.Load(b_7*32+12)), asuint(bsh_nodes.Load(b_7*32+16)), asuint(bsh_nodes.Load(b_7*32+20)), asuint(bsh_nodes.Load(b_7*32+24)), asfloat(bsh_nodes.Load(b_7*32+28)));
+                        float3 _e147 = r;
+                        const bool _e148 = bsh_reaches(_e146, x_11, _e147, _e79);
+                        local_4 = !(_e148);
                     } else {
-                        local_5 = true;
+                        local_4 = true;
                     }
-                    bool _e158 = local_5;
-                    if (_e158) {
+                    bool _e151 = local_4;
+                    if (_e151) {
                         continue;
                     }
                     uint li_7 = asuint(bsh_nodes.Load(24+b_7*32));
-                    uint _e163 = count;
-                    count = (_e163 + 1u);
-                    uint _e166 = h;
-                    const uint _e167 = pcg_hash(_e166);
-                    h = _e167;
-                    uint _e168 = h;
-                    const float _e169 = xi_from_bits(_e168);
-                    uint _e170 = h;
-                    const uint _e171 = pcg_hash(_e170);
-                    h = _e171;
-                    uint _e172 = h;
-                    const float _e173 = xi_from_bits(_e172);
-                    float2 u_4 = float2(_e169, _e173);
-                    float3 _e175 = n;
-                    float3 _e176 = r;
-                    Material _e177 = m;
-                    const Shaded _e182 = shade_pick_traced(li_7, x_11, _e175, _e176, _e79, _e177, 1.0, u_4.x, u_4.y, eps_4, false);
-                    const float3 _e183 = output_of(_e182);
-                    uint _e185 = evaluations;
-                    evaluations = (_e185 + 1u);
-                    const float _e188 = resample_target(_e183);
-                    if ((_e188 > 0.0)) {
-                        float3 _e191 = total;
-                        total = (_e191 + _e183);
+                    uint _e156 = count;
+                    count = (_e156 + 1u);
+                    uint _e159 = h;
+                    const uint _e160 = pcg_hash(_e159);
+                    h = _e160;
+                    uint _e161 = h;
+                    const float _e162 = xi_from_bits(_e161);
+                    uint _e163 = h;
+                    const uint _e164 = pcg_hash(_e163);
+                    h = _e164;
+                    uint _e165 = h;
+                    const float _e166 = xi_from_bits(_e165);
+                    float2 u_4 = float2(_e162, _e166);
+                    float3 _e168 = n;
+                    float3 _e169 = r;
+                    Material _e170 = m;
+                    const Shaded _e175 = shade_pick_traced(li_7, x_11, _e168, _e169, _e79, _e170, 1.0, u_4.x, u_4.y, eps_4, false);
+                    const float3 _e176 = output_of(_e175);
+                    uint _e178 = evaluations;
+                    evaluations = (_e178 + 1u);
+                    const float _e181 = resample_target(_e176);
+                    if ((_e181 > 0.0)) {
+                        float3 _e184 = total;
+                        total = (_e184 + _e176);
                         q = 0u;
                         uint2 loop_bound_13 = uint2(4294967295u, 4294967295u);
                         bool loop_init_10 = true;
@@ -1567,39 +1567,39 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
                             if (all(loop_bound_13 == uint2(0u, 0u))) { break; }
                             loop_bound_13 -= uint2(loop_bound_13.y == 0u, 1u);
                             if (!loop_init_10) {
-                                uint _e225 = q;
-                                q = (_e225 + 1u);
+                                uint _e218 = q;
+                                q = (_e218 + 1u);
                             }
                             loop_init_10 = false;
-                            uint _e195 = q;
-                            if ((_e195 < K)) {
+                            uint _e188 = q;
+                            if ((_e188 < K)) {
                             } else {
                                 break;
                             }
                             {
-                                uint _e198 = q;
-                                const float _e200 = slot_target(_e183, _e198, K);
-                                float3 _e201 = total;
-                                uint _e202 = q;
-                                const float _e204 = slot_target(_e201, _e202, K);
-                                if ((_e200 > 0.0)) {
-                                    uint _e209 = q;
-                                    float _e211 = threshold[min(uint(_e209), 7u)];
-                                    local_6 = (_e204 > _e211);
+                                uint _e191 = q;
+                                const float _e193 = slot_target(_e176, _e191, K);
+                                float3 _e194 = total;
+                                uint _e195 = q;
+                                const float _e197 = slot_target(_e194, _e195, K);
+                                if ((_e193 > 0.0)) {
+                                    uint _e202 = q;
+                                    float _e204 = threshold[min(uint(_e202), 7u)];
+                                    local_5 = (_e197 > _e204);
                                 } else {
-                                    local_6 = false;
+                                    local_5 = false;
                                 }
-                                bool _e214 = local_6;
-                                if (_e214) {
-                                    uint _e215 = q;
-                                    slot_light[min(uint(_e215), 7u)] = li_7;
-                                    uint _e217 = q;
-                                    slot_u[min(uint(_e217), 7u)] = u_4;
-                                    uint _e219 = q;
-                                    slot_p[min(uint(_e219), 7u)] = _e200;
-                                    uint _e221 = q;
-                                    const float _e223 = next_threshold(_e204, hc);
-                                    threshold[min(uint(_e221), 7u)] = _e223;
+                                bool _e207 = local_5;
+                                if (_e207) {
+                                    uint _e208 = q;
+                                    slot_light[min(uint(_e208), 7u)] = li_7;
+                                    uint _e210 = q;
+                                    slot_u[min(uint(_e210), 7u)] = u_4;
+                                    uint _e212 = q;
+                                    slot_p[min(uint(_e212), 7u)] = _e193;
+                                    uint _e214 = q;
+                                    const float _e216 = next_threshold(_e197, hc);
+                                    threshold[min(uint(_e214), 7u)] = _e216;
                                 }
                             }
                         }
@@ -1621,118 +1621,118 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
         if (all(loop_bound_14 == uint2(0u, 0u))) { break; }
         loop_bound_14 -= uint2(loop_bound_14.y == 0u, 1u);
         if (!loop_init_11) {
-            uint _e259 = k;
-            k = (_e259 + 1u);
+            uint _e252 = k;
+            k = (_e252 + 1u);
         }
         loop_init_11 = false;
-        uint _e241 = k;
-        if ((_e241 < K)) {
+        uint _e234 = k;
+        if ((_e234 < K)) {
         } else {
             break;
         }
         {
+            uint _e237 = k;
+            uint _e239 = k;
+            uint _e241 = slot_light[min(uint(_e239), 7u)];
+            keys[min(uint(_e237), 7u)] = uint2(_e241, 0u);
             uint _e244 = k;
             uint _e246 = k;
-            uint _e248 = slot_light[min(uint(_e246), 7u)];
-            keys[min(uint(_e244), 7u)] = uint2(_e248, 0u);
-            uint _e251 = k;
-            uint _e253 = k;
-            float _e255 = slot_p[min(uint(_e253), 7u)];
-            held[min(uint(_e251), 7u)] = (_e255 > 0.0);
+            float _e248 = slot_p[min(uint(_e246), 7u)];
+            held[min(uint(_e244), 7u)] = (_e248 > 0.0);
         }
     }
-    uint2 _e261[8] = keys;
-    bool _e262[8] = held;
-    const uint _e263[8] = first_holders(_e261, _e262);
+    uint2 _e254[8] = keys;
+    bool _e255[8] = held;
+    const uint _e256[8] = first_holders(_e254, _e255);
     uint2 loop_bound_15 = uint2(4294967295u, 4294967295u);
     bool loop_init_12 = true;
     while(true) {
         if (all(loop_bound_15 == uint2(0u, 0u))) { break; }
         loop_bound_15 -= uint2(loop_bound_15.y == 0u, 1u);
         if (!loop_init_12) {
-            uint _e327 = k_1;
-            k_1 = (_e327 + 1u);
+            uint _e320 = k_1;
+            k_1 = (_e320 + 1u);
         }
         loop_init_12 = false;
-        uint _e266 = k_1;
-        if ((_e266 < K)) {
+        uint _e259 = k_1;
+        if ((_e259 < K)) {
         } else {
             break;
         }
         {
             w = (0.0).xxx;
-            uint _e272 = k_1;
-            uint _e274 = k_1;
-            bool first_1 = (_e263[min(uint(_e272), 7u)] == _e274);
-            uint _e276 = k_1;
-            j_1 = _e276;
+            uint _e265 = k_1;
+            uint _e267 = k_1;
+            bool first_1 = (_e256[min(uint(_e265), 7u)] == _e267);
+            uint _e269 = k_1;
+            j_1 = _e269;
             uint2 loop_bound_16 = uint2(4294967295u, 4294967295u);
             bool loop_init_13 = true;
             while(true) {
                 if (all(loop_bound_16 == uint2(0u, 0u))) { break; }
                 loop_bound_16 -= uint2(loop_bound_16.y == 0u, 1u);
                 if (!loop_init_13) {
-                    uint _e304 = j_1;
-                    j_1 = (_e304 + 1u);
+                    uint _e297 = j_1;
+                    j_1 = (_e297 + 1u);
                 }
                 loop_init_13 = false;
-                uint _e278 = j_1;
-                if ((_e278 < K)) {
-                    local_7 = first_1;
+                uint _e271 = j_1;
+                if ((_e271 < K)) {
+                    local_6 = first_1;
                 } else {
-                    local_7 = false;
+                    local_6 = false;
                 }
-                bool _e284 = local_7;
-                if (_e284) {
+                bool _e277 = local_6;
+                if (_e277) {
                 } else {
                     break;
                 }
                 {
-                    uint _e285 = j_1;
-                    uint _e287 = k_1;
-                    if ((_e263[min(uint(_e285), 7u)] == _e287)) {
-                        float3 _e289 = w;
-                        float3 _e290 = total;
+                    uint _e278 = j_1;
+                    uint _e280 = k_1;
+                    if ((_e256[min(uint(_e278), 7u)] == _e280)) {
+                        float3 _e282 = w;
+                        float3 _e283 = total;
+                        uint _e284 = j_1;
+                        const float _e286 = slot_target(_e283, _e284, K);
+                        uint _e287 = j_1;
+                        float _e289 = slot_p[min(uint(_e287), 7u)];
                         uint _e291 = j_1;
-                        const float _e293 = slot_target(_e290, _e291, K);
-                        uint _e294 = j_1;
-                        float _e296 = slot_p[min(uint(_e294), 7u)];
-                        uint _e298 = j_1;
-                        const float3 _e300 = slot_share(_e298, K);
-                        w = (_e289 + ((_e293 / _e296) * _e300));
+                        const float3 _e293 = slot_share(_e291, K);
+                        w = (_e282 + ((_e286 / _e289) * _e293));
                     }
                 }
             }
             if (first_1) {
-                Shaded _e306 = t;
+                Shaded _e299 = t;
+                uint _e300 = k_1;
+                uint _e302 = slot_light[min(uint(_e300), 7u)];
+                float3 _e303 = n;
+                float3 _e304 = r;
+                Material _e305 = m;
                 uint _e307 = k_1;
-                uint _e309 = slot_light[min(uint(_e307), 7u)];
-                float3 _e310 = n;
-                float3 _e311 = r;
-                Material _e312 = m;
-                uint _e314 = k_1;
-                float _e317 = slot_u[min(uint(_e314), 7u)].x;
-                uint _e318 = k_1;
-                float _e321 = slot_u[min(uint(_e318), 7u)].y;
-                const Shaded _e322 = shade_pick(_e309, x_11, _e310, _e311, _e79, _e312, 1.0, _e317, _e321, eps_4);
-                float3 _e323 = w;
-                const Shaded _e324 = scaled(_e322, _e323);
-                const Shaded _e325 = add(_e306, _e324);
-                t = _e325;
+                float _e310 = slot_u[min(uint(_e307), 7u)].x;
+                uint _e311 = k_1;
+                float _e314 = slot_u[min(uint(_e311), 7u)].y;
+                const Shaded _e315 = shade_pick(_e302, x_11, _e303, _e304, _e79, _e305, 1.0, _e310, _e314, eps_4);
+                float3 _e316 = w;
+                const Shaded _e317 = scaled(_e315, _e316);
+                const Shaded _e318 = add(_e299, _e317);
+                t = _e318;
             }
         }
     }
-    float3 _e331 = t.e;
-    uint _e332 = count;
-    out_tex[texel_1] = float4(_e331, float(_e332));
+    float3 _e324 = t.e;
+    uint _e325 = count;
+    out_tex[texel_1] = float4(_e324, float(_e325));
     counter_add(DIRECT_COUNT_PIXELS, 1u);
-    uint _e338 = count;
-    counter_add(DIRECT_COUNT_CANDIDATES, _e338);
-    uint _e341 = evaluations;
-    counter_add(DIRECT_COUNT_EVALUATIONS, _e341);
-    uint _e344 = rays_cast;
-    counter_add(DIRECT_COUNT_RAYS, _e344);
-    uint _e347 = nodes_visited;
-    counter_add(DIRECT_COUNT_NODES, _e347);
+    uint _e331 = count;
+    counter_add(DIRECT_COUNT_CANDIDATES, _e331);
+    uint _e334 = evaluations;
+    counter_add(DIRECT_COUNT_EVALUATIONS, _e334);
+    uint _e337 = rays_cast;
+    counter_add(DIRECT_COUNT_RAYS, _e337);
+    uint _e340 = nodes_visited;
+    counter_add(DIRECT_COUNT_NODES, _e340);
     return;
 }

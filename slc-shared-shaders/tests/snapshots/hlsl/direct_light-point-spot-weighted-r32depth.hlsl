@@ -294,29 +294,29 @@ float connection_factor(float cos_x, float d2_3, float rt2_1, float w)
 
 float connection_cosine(float3 x_2, float3 y, float3 n_1, float3 ng, float r2_1)
 {
+    bool local_5 = (bool)0;
     bool local_6 = (bool)0;
-    bool local_7 = (bool)0;
 
     float3 v_5 = (x_2 - y);
     float d2_7 = dot(v_5, v_5);
     const bool _e7 = slc_keep(r2_1, d2_7);
     if (!(!(_e7))) {
-        local_6 = !((d2_7 > 0.0));
+        local_5 = !((d2_7 > 0.0));
     } else {
-        local_6 = true;
+        local_5 = true;
     }
-    bool _e16 = local_6;
+    bool _e16 = local_5;
     if (_e16) {
         return 0.0;
     }
     float3 w_9 = (v_5 / (sqrt(d2_7)).xxx);
     float cos_x_1 = -(dot(n_1, w_9));
     if (!((cos_x_1 <= 0.0))) {
-        local_7 = (dot(ng, w_9) >= 0.0);
+        local_6 = (dot(ng, w_9) >= 0.0);
     } else {
-        local_7 = true;
+        local_6 = true;
     }
-    bool _e32 = local_7;
+    bool _e32 = local_6;
     if (_e32) {
         return 0.0;
     }
@@ -466,23 +466,23 @@ float emitter_importance(float3 center_1, float radius_1, float phi, float3 axis
 
 float cone_cos_of(float3 v, float d2_4, float a_2, float3 d)
 {
+    bool local_7 = (bool)0;
     bool local_8 = (bool)0;
-    bool local_9 = (bool)0;
 
     float vd = dot(v, d);
     float h2_ = (d2_4 - (a_2 * a_2));
     if (!((h2_ <= 0.0))) {
         if ((vd >= 0.0)) {
-            local_9 = ((vd * vd) >= h2_);
+            local_8 = ((vd * vd) >= h2_);
         } else {
-            local_9 = false;
+            local_8 = false;
         }
-        bool _e19 = local_9;
-        local_8 = _e19;
+        bool _e19 = local_8;
+        local_7 = _e19;
     } else {
-        local_8 = true;
+        local_7 = true;
     }
-    bool _e21 = local_8;
+    bool _e21 = local_7;
     if (_e21) {
         return 1.0;
     }
@@ -537,16 +537,16 @@ float light_importance(float3 center_4, float radius_4, float phi_1, float3 axis
 
 float glossy_importance(float3 center_5, float radius_5, float phi_2, float3 axis_3, float cos_o_3, float cos_e_2, float3 p_5, float3 n_3, float3 r_4, float4 lobe_5)
 {
-    bool local_10 = (bool)0;
+    bool local_9 = (bool)0;
 
     const float _e10 = emitter_importance(center_5, radius_5, phi_2, axis_3, cos_o_3, cos_e_2, p_5);
     const float _e11 = cone_cos_toward(center_5, radius_5, p_5, n_3);
     if (!((_e10 <= 0.0))) {
-        local_10 = (_e11 <= 0.0);
+        local_9 = (_e11 <= 0.0);
     } else {
-        local_10 = true;
+        local_9 = true;
     }
-    bool _e20 = local_10;
+    bool _e20 = local_9;
     if (_e20) {
         return 0.0;
     }
@@ -579,21 +579,21 @@ float cone_weight(float3 center_6, float radius_6, float phi_3, float3 axis_4, f
 
 bool finite3_(float3 v_1)
 {
+    bool local_10 = (bool)0;
     bool local_11 = (bool)0;
-    bool local_12 = (bool)0;
 
     if ((abs(v_1.x) <= F32_MAX)) {
-        local_11 = (abs(v_1.y) <= F32_MAX);
+        local_10 = (abs(v_1.y) <= F32_MAX);
+    } else {
+        local_10 = false;
+    }
+    bool _e12 = local_10;
+    if (_e12) {
+        local_11 = (abs(v_1.z) <= F32_MAX);
     } else {
         local_11 = false;
     }
-    bool _e12 = local_11;
-    if (_e12) {
-        local_12 = (abs(v_1.z) <= F32_MAX);
-    } else {
-        local_12 = false;
-    }
-    bool _e20 = local_12;
+    bool _e20 = local_11;
     return _e20;
 }
 
@@ -631,9 +631,9 @@ float ray_aabb(float3 o, float3 inv_d, float3 bmin_1, float3 bmax_1, float t_max
 
 float ray_triangle(float3 o_1, float3 d_3, float3 a_3, float3 b_2, float3 c_2, float t_min, float t_max_1)
 {
+    bool local_12 = (bool)0;
     bool local_13 = (bool)0;
     bool local_14 = (bool)0;
-    bool local_15 = (bool)0;
 
     float3 e1_ = (b_2 - a_3);
     float3 e2_ = (c_2 - a_3);
@@ -646,32 +646,32 @@ float ray_triangle(float3 o_1, float3 d_3, float3 a_3, float3 b_2, float3 c_2, f
     float3 s_9 = (o_1 - a_3);
     float u_3 = (dot(s_9, p_9) * inv);
     if (!((u_3 < 0.0))) {
-        local_13 = (u_3 > 1.0);
+        local_12 = (u_3 > 1.0);
     } else {
-        local_13 = true;
+        local_12 = true;
     }
-    bool _e28 = local_13;
+    bool _e28 = local_12;
     if (_e28) {
         return -1.0;
     }
     float3 q_1 = cross(s_9, e1_);
     float v_10 = (dot(d_3, q_1) * inv);
     if (!((v_10 < 0.0))) {
-        local_14 = ((u_3 + v_10) > 1.0);
+        local_13 = ((u_3 + v_10) > 1.0);
     } else {
-        local_14 = true;
+        local_13 = true;
     }
-    bool _e42 = local_14;
+    bool _e42 = local_13;
     if (_e42) {
         return -1.0;
     }
     float t_7 = (dot(e2_, q_1) * inv);
     if ((t_7 > t_min)) {
-        local_15 = (t_7 < t_max_1);
+        local_14 = (t_7 < t_max_1);
     } else {
-        local_15 = false;
+        local_14 = false;
     }
-    bool _e51 = local_15;
+    bool _e51 = local_14;
     if (_e51) {
         return t_7;
     }
@@ -865,8 +865,8 @@ float bsh_inner_scale(float a_5, float3 v_2, float d2_6, float3 r_6, float4 rl_2
 
 bool bsh_reaches(BshNode node_3, float3 x_5, float3 r_7, float4 rl_3)
 {
+    bool local_15 = (bool)0;
     bool local_16 = (bool)0;
-    bool local_17 = (bool)0;
 
     const bool _e6 = sphere_contains_point(node_3.center_, node_3.radius, x_5);
     if (_e6) {
@@ -874,11 +874,11 @@ bool bsh_reaches(BshNode node_3, float3 x_5, float3 r_7, float4 rl_3)
     }
     if (!((rl_3.w <= 1.0))) {
         const bool _e20 = sphere_contains_point(node_3.center_, (node_3.radius * (rl_3.w * 1.0001)), x_5);
-        local_16 = !(_e20);
+        local_15 = !(_e20);
     } else {
-        local_16 = true;
+        local_15 = true;
     }
-    bool _e23 = local_16;
+    bool _e23 = local_15;
     if (_e23) {
         return false;
     }
@@ -899,11 +899,11 @@ bool bsh_reaches(BshNode node_3, float3 x_5, float3 r_7, float4 rl_3)
     float s_c = (_e50 * 1.001);
     float reach = (node_3.extent + (sqrt(s_c) * _e25));
     if ((d2_9 <= ((node_3.radius * node_3.radius) * s_c))) {
-        local_17 = (d2_9 <= (reach * reach));
+        local_16 = (d2_9 <= (reach * reach));
     } else {
-        local_17 = false;
+        local_16 = false;
     }
-    bool _e67 = local_17;
+    bool _e67 = local_16;
     return _e67;
 }
 
@@ -917,7 +917,7 @@ uint bsh_subtree(uint nodes_3, uint s_1, uint depth)
 {
     uint i_2 = (uint)0;
     uint level = 0u;
-    bool local_18 = (bool)0;
+    bool local_17 = (bool)0;
 
     const uint _e3 = bsh_first(nodes_3);
     i_2 = _e3;
@@ -928,11 +928,11 @@ uint bsh_subtree(uint nodes_3, uint s_1, uint depth)
         uint _e7 = level;
         if ((_e7 < depth)) {
             uint _e11 = i_2;
-            local_18 = (_e11 != BSH_NONE);
+            local_17 = (_e11 != BSH_NONE);
         } else {
-            local_18 = false;
+            local_17 = false;
         }
-        bool _e15 = local_18;
+        bool _e15 = local_17;
         if (_e15) {
         } else {
             break;
@@ -1009,8 +1009,8 @@ float next_threshold(float sum, inout uint h_1)
 Connection connect_record(GpuLight l_2, float3 x_6, float3 n_5, float3 ng_1, float r2_3, float rt2_4, float w_res, float u1_1, float u2_1, float eps, bool trace_1)
 {
     Connection c_3 = (Connection)0;
+    bool local_18 = (bool)0;
     bool local_19 = (bool)0;
-    bool local_20 = (bool)0;
 
     c_3.e = (0.0).xxx;
     const float3 _e16 = light_point(l_2, u1_1, u2_1);
@@ -1023,16 +1023,16 @@ Connection connect_record(GpuLight l_2, float3 x_6, float3 n_5, float3 ng_1, flo
         if (trace_1) {
             float3 _e33 = c_3.y;
             const bool _e34 = occluded((x_6 + (ng_1 * eps)), _e33);
-            local_20 = _e34;
+            local_19 = _e34;
         } else {
-            local_20 = false;
+            local_19 = false;
         }
-        bool _e36 = local_20;
-        local_19 = _e36;
+        bool _e36 = local_19;
+        local_18 = _e36;
     } else {
-        local_19 = true;
+        local_18 = true;
     }
-    bool _e38 = local_19;
+    bool _e38 = local_18;
     if (_e38) {
         Connection _e39 = c_3;
         const Connection connection = _e39;
@@ -1167,15 +1167,15 @@ void weighted_offer(inout WeightedPicks picks_2, uint li_3, float w_5)
 
 float4 unproject_pixel(float4 c0_, float4 c1_, float4 c2_, float4 c3_, float px, float py, float width, float height, float depth_1)
 {
+    bool local_20 = (bool)0;
     bool local_21 = (bool)0;
-    bool local_22 = (bool)0;
 
     if ((depth_1 > 0.0)) {
-        local_21 = (depth_1 < 1.0);
+        local_20 = (depth_1 < 1.0);
     } else {
-        local_21 = false;
+        local_20 = false;
     }
-    bool _e16 = local_21;
+    bool _e16 = local_20;
     if (!(_e16)) {
         return float4(0.0, 0.0, 0.0, 0.0);
     }
@@ -1185,11 +1185,11 @@ float4 unproject_pixel(float4 c0_, float4 c1_, float4 c2_, float4 c3_, float px,
     float3 q_2 = float3((p_10.x / p_10.w), (p_10.y / p_10.w), (p_10.z / p_10.w));
     if ((abs(p_10.w) > 0.0)) {
         const bool _e59 = finite3_(q_2);
-        local_22 = _e59;
+        local_21 = _e59;
     } else {
-        local_22 = false;
+        local_21 = false;
     }
-    bool _e61 = local_22;
+    bool _e61 = local_21;
     if (_e61) {
         return float4(q_2.x, q_2.y, q_2.z, 1.0);
     }
@@ -1286,9 +1286,9 @@ uint tile_subtree(uint s_4, TileWalk t_1, bool list, uint at, uint start_2, uint
 {
     uint p_8 = (uint)0;
     uint b_5 = (uint)0;
+    bool local_22 = (bool)0;
     bool local_23 = (bool)0;
     bool local_24 = (bool)0;
-    bool local_25 = (bool)0;
 
     const uint _e8 = bsh_subtree(BSH, s_4, BSH_TILE_DEPTH);
     if ((_e8 == BSH_NONE)) {
@@ -1314,16 +1314,16 @@ uint tile_subtree(uint s_4, TileWalk t_1, bool list, uint at, uint start_2, uint
         if ((_e23 != end_1)) {
             if (!(!(list))) {
                 uint _e31 = p_8;
-                local_24 = (_e31 < to);
+                local_23 = (_e31 < to);
             } else {
-                local_24 = true;
+                local_23 = true;
             }
-            bool _e34 = local_24;
-            local_23 = _e34;
+            bool _e34 = local_23;
+            local_22 = _e34;
         } else {
-            local_23 = false;
+            local_22 = false;
         }
-        bool _e36 = local_23;
+        bool _e36 = local_22;
         if (_e36) {
         } else {
             break;
@@ -1331,11 +1331,11 @@ uint tile_subtree(uint s_4, TileWalk t_1, bool list, uint at, uint start_2, uint
         {
             if (list) {
                 uint _e39 = p_8;
-                local_25 = (_e39 >= start_2);
+                local_24 = (_e39 >= start_2);
             } else {
-                local_25 = false;
+                local_24 = false;
             }
-            bool _e42 = local_25;
+            bool _e42 = local_24;
             if (_e42) {
                 uint _e44 = p_8;
                 uint _e47 = b_5;
@@ -1360,21 +1360,28 @@ TileWalk ConstructTileWalk(float3 arg0, float3 arg1, float arg2, uint arg3) {
 
 TileWalk tile_walk_begin(uint li_6, float3 x_10, float w_6, bool has_1)
 {
+    bool local_25 = (bool)0;
     TileWalk t_2 = (TileWalk)0;
     uint s_5 = (uint)0;
     uint sum_1 = 0u;
     uint s_6 = 0u;
 
-    uint _e8; InterlockedMax(tile_scale, (has_1 ? asuint(w_6) : 0u), _e8);
-    const WorkgroupBox _e9 = workgroup_box(li_6, x_10, has_1);
+    if (has_1) {
+        local_25 = (w_6 >= 0.0);
+    } else {
+        local_25 = false;
+    }
+    bool _e12 = local_25;
+    uint _e14; InterlockedMax(tile_scale, (_e12 ? asuint(w_6) : 0u), _e14);
+    const WorkgroupBox _e15 = workgroup_box(li_6, x_10, has_1);
     GroupMemoryBarrierWithGroupSync();
-    uint _e13 = tile_scale;
+    uint _e19 = tile_scale;
     GroupMemoryBarrierWithGroupSync();
-    t_2 = ConstructTileWalk(_e9.lo, _e9.hi, asfloat(_e13), 0u);
-    const bool _e18 = box_is_empty(_e9);
-    if (_e18) {
-        TileWalk _e19 = t_2;
-        const TileWalk tilewalk = _e19;
+    t_2 = ConstructTileWalk(_e15.lo, _e15.hi, asfloat(_e19), 0u);
+    const bool _e24 = box_is_empty(_e15);
+    if (_e24) {
+        TileWalk _e25 = t_2;
+        const TileWalk tilewalk = _e25;
         return tilewalk;
     }
     s_5 = li_6;
@@ -1384,21 +1391,21 @@ TileWalk tile_walk_begin(uint li_6, float3 x_10, float w_6, bool has_1)
         if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
         loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
         if (!loop_init_4) {
-            uint _e34 = s_5;
-            s_5 = (_e34 + TILE_THREADS);
+            uint _e40 = s_5;
+            s_5 = (_e40 + TILE_THREADS);
         }
         loop_init_4 = false;
-        uint _e21 = s_5;
-        if ((_e21 < BSH_TILE_SUBTREES)) {
+        uint _e27 = s_5;
+        if ((_e27 < BSH_TILE_SUBTREES)) {
         } else {
             break;
         }
         {
-            uint _e25 = s_5;
-            uint _e27 = s_5;
-            TileWalk _e28 = t_2;
-            const uint _e33 = tile_subtree(_e27, _e28, false, 0u, 0u, 0u);
-            subtree_at[min(uint(_e25), 255u)] = _e33;
+            uint _e31 = s_5;
+            uint _e33 = s_5;
+            TileWalk _e34 = t_2;
+            const uint _e39 = tile_subtree(_e33, _e34, false, 0u, 0u, 0u);
+            subtree_at[min(uint(_e31), 255u)] = _e39;
         }
     }
     GroupMemoryBarrierWithGroupSync();
@@ -1409,34 +1416,34 @@ TileWalk tile_walk_begin(uint li_6, float3 x_10, float w_6, bool has_1)
             if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
             loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
             if (!loop_init_5) {
-                uint _e57 = s_6;
-                s_6 = (_e57 + 1u);
+                uint _e63 = s_6;
+                s_6 = (_e63 + 1u);
             }
             loop_init_5 = false;
-            uint _e43 = s_6;
-            if ((_e43 < BSH_TILE_SUBTREES)) {
+            uint _e49 = s_6;
+            if ((_e49 < BSH_TILE_SUBTREES)) {
             } else {
                 break;
             }
             {
-                uint _e47 = s_6;
-                uint c_8 = subtree_at[min(uint(_e47), 255u)];
-                uint _e51 = s_6;
-                uint _e53 = sum_1;
-                subtree_at[min(uint(_e51), 255u)] = _e53;
-                uint _e54 = sum_1;
-                sum_1 = (_e54 + c_8);
+                uint _e53 = s_6;
+                uint c_8 = subtree_at[min(uint(_e53), 255u)];
+                uint _e57 = s_6;
+                uint _e59 = sum_1;
+                subtree_at[min(uint(_e57), 255u)] = _e59;
+                uint _e60 = sum_1;
+                sum_1 = (_e60 + c_8);
             }
         }
-        uint _e60 = sum_1;
-        tile_total = _e60;
+        uint _e66 = sum_1;
+        tile_total = _e66;
     }
     GroupMemoryBarrierWithGroupSync();
-    uint _e63 = tile_total;
+    uint _e69 = tile_total;
     GroupMemoryBarrierWithGroupSync();
-    t_2.total = _e63;
-    TileWalk _e64 = t_2;
-    const TileWalk tilewalk_1 = _e64;
+    t_2.total = _e69;
+    TileWalk _e70 = t_2;
+    const TileWalk tilewalk_1 = _e70;
     return tilewalk_1;
 }
 
@@ -1634,10 +1641,9 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
     uint h = (uint)0;
     Shaded t = ConstructShaded((0.0).xxx, (0.0).xxx, (0.0).xxx);
     WeightedPicks picks = (WeightedPicks)0;
-    bool local_4 = (bool)0;
     uint start = 0u;
     uint j = (uint)0;
-    bool local_5 = (bool)0;
+    bool local_4 = (bool)0;
     uint2 keys[8] = (uint2[8])0;
     bool held[8] = (bool[8])0;
     uint k = 0u;
@@ -1703,31 +1709,25 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
     h = _e103;
     const WeightedPicks _e113 = weighted_picks(_e102);
     picks = _e113;
-    if (has_2) {
-        local_4 = (_e79.w >= 0.0);
-    } else {
-        local_4 = false;
-    }
-    bool _e122 = local_4;
-    const TileWalk _e123 = tile_walk_begin(lid, x_15, _e79.w, _e122);
+    const TileWalk _e116 = tile_walk_begin(lid, x_15, _e79.w, has_2);
     uint2 loop_bound_12 = uint2(4294967295u, 4294967295u);
     bool loop_init_9 = true;
     while(true) {
         if (all(loop_bound_12 == uint2(0u, 0u))) { break; }
         loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
         if (!loop_init_9) {
-            uint _e162 = start;
-            start = (_e162 + TILE_LIST);
+            uint _e155 = start;
+            start = (_e155 + TILE_LIST);
         }
         loop_init_9 = false;
-        uint _e126 = start;
-        if ((_e126 < _e123.total)) {
+        uint _e119 = start;
+        if ((_e119 < _e116.total)) {
         } else {
             break;
         }
         {
-            uint _e129 = start;
-            const uint _e130 = tile_walk_fill(lid, _e123, _e129);
+            uint _e122 = start;
+            const uint _e123 = tile_walk_fill(lid, _e116, _e122);
             j = 0u;
             uint2 loop_bound_13 = uint2(4294967295u, 4294967295u);
             bool loop_init_10 = true;
@@ -1735,36 +1735,36 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
                 if (all(loop_bound_13 == uint2(0u, 0u))) { break; }
                 loop_bound_13 -= uint2(loop_bound_13.y == 0u, 1u);
                 if (!loop_init_10) {
-                    uint _e160 = j;
-                    j = (_e160 + 1u);
+                    uint _e153 = j;
+                    j = (_e153 + 1u);
                 }
                 loop_init_10 = false;
-                uint _e133 = j;
-                if ((_e133 < _e130)) {
+                uint _e126 = j;
+                if ((_e126 < _e123)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e136 = j;
-                    uint b_7 = tile_list[min(uint(_e136), 1023u)];
+                    uint _e129 = j;
+                    uint b_7 = tile_list[min(uint(_e129), 1023u)];
                     if (!(!(has_2))) {
-                        BshNode _e145 = ConstructBshNode(asfloat(bsh_nodes.Load3(b_7*32+0)), asfloat(bsh_nodes.Load(b_7*32+12)), asuint(bsh_nodes.Load(b_7*32+16)), asuint(bsh_nodes.Load(b_7*32+20)), asuint(bsh_nodes.Load(b_7*32+24)), asfloat(bsh_nodes.Load(b_7*32+28)));
-                        float3 _e146 = r;
-                        const bool _e147 = bsh_reaches(_e145, x_15, _e146, _e79);
-                        local_5 = !(_e147);
+                        BshNode _e138 = ConstructBshNode(asfloat(bsh_nodes.Load3(b_7*32+0)), asfloat(bsh_nodes.Load(b_7*32+12)), asuint(bsh_nodes.Load(b_7*32+16)), asuint(bsh_nodes.Load(b_7*32+20)), asuint(bsh_nodes.Load(b_7*32+24)), asfloat(bsh_nodes.Load(b_7*32+28)));
+                        float3 _e139 = r;
+                        const bool _e140 = bsh_reaches(_e138, x_15, _e139, _e79);
+                        local_4 = !(_e140);
                     } else {
-                        local_5 = true;
+                        local_4 = true;
                     }
-                    bool _e150 = local_5;
-                    if (_e150) {
+                    bool _e143 = local_4;
+                    if (_e143) {
                         continue;
                     }
                     uint li_10 = asuint(bsh_nodes.Load(24+b_7*32));
-                    float3 _e155 = n;
-                    float3 _e156 = r;
-                    float4 _e157 = lobe;
-                    const float _e158 = light_weight(li_10, x_15, _e155, _e156, _e157, _e79);
-                    weighted_offer(picks, li_10, _e158);
+                    float3 _e148 = n;
+                    float3 _e149 = r;
+                    float4 _e150 = lobe;
+                    const float _e151 = light_weight(li_10, x_15, _e148, _e149, _e150, _e79);
+                    weighted_offer(picks, li_10, _e151);
                 }
             }
             GroupMemoryBarrierWithGroupSync();
@@ -1776,113 +1776,113 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
         }
         return;
     }
-    float _e170 = picks.w_sum;
-    if ((_e170 > 0.0)) {
+    float _e163 = picks.w_sum;
+    if ((_e163 > 0.0)) {
         uint2 loop_bound_14 = uint2(4294967295u, 4294967295u);
         bool loop_init_11 = true;
         while(true) {
             if (all(loop_bound_14 == uint2(0u, 0u))) { break; }
             loop_bound_14 -= uint2(loop_bound_14.y == 0u, 1u);
             if (!loop_init_11) {
-                uint _e206 = k;
-                k = (_e206 + 1u);
+                uint _e199 = k;
+                k = (_e199 + 1u);
             }
             loop_init_11 = false;
-            uint _e177 = k;
-            if ((_e177 < K)) {
+            uint _e170 = k;
+            if ((_e170 < K)) {
             } else {
                 break;
             }
             {
-                uint _e181 = k;
-                uint _e186 = k;
-                uint _e188 = picks.light[min(uint(_e186), 7u)];
-                uint _e191 = asuint(lights.Load(12+_e188*64));
-                uint own = ((_e191 == LIGHT_TRIANGLE) ? (_e181 + 1u) : 0u);
+                uint _e174 = k;
+                uint _e179 = k;
+                uint _e181 = picks.light[min(uint(_e179), 7u)];
+                uint _e184 = asuint(lights.Load(12+_e181*64));
+                uint own = ((_e184 == LIGHT_TRIANGLE) ? (_e174 + 1u) : 0u);
+                uint _e188 = k;
+                uint _e191 = k;
+                uint _e193 = picks.light[min(uint(_e191), 7u)];
+                keys[min(uint(_e188), 7u)] = uint2(_e193, own);
                 uint _e195 = k;
-                uint _e198 = k;
-                uint _e200 = picks.light[min(uint(_e198), 7u)];
-                keys[min(uint(_e195), 7u)] = uint2(_e200, own);
-                uint _e202 = k;
-                held[min(uint(_e202), 7u)] = true;
+                held[min(uint(_e195), 7u)] = true;
             }
         }
-        uint2 _e208[8] = keys;
-        bool _e209[8] = held;
-        const uint _e210[8] = first_holders(_e208, _e209);
+        uint2 _e201[8] = keys;
+        bool _e202[8] = held;
+        const uint _e203[8] = first_holders(_e201, _e202);
         uint2 loop_bound_15 = uint2(4294967295u, 4294967295u);
         bool loop_init_12 = true;
         while(true) {
             if (all(loop_bound_15 == uint2(0u, 0u))) { break; }
             loop_bound_15 -= uint2(loop_bound_15.y == 0u, 1u);
             if (!loop_init_12) {
-                uint _e268 = k_1;
-                k_1 = (_e268 + 1u);
+                uint _e261 = k_1;
+                k_1 = (_e261 + 1u);
             }
             loop_init_12 = false;
-            uint _e213 = k_1;
-            if ((_e213 < K)) {
+            uint _e206 = k_1;
+            if ((_e206 < K)) {
             } else {
                 break;
             }
             {
-                uint _e216 = h;
-                const uint _e217 = pcg_hash(_e216);
-                h = _e217;
-                uint _e218 = h;
-                const float _e219 = xi_from_bits(_e218);
-                uint _e220 = h;
-                const uint _e221 = pcg_hash(_e220);
-                h = _e221;
-                uint _e222 = h;
-                const float _e223 = xi_from_bits(_e222);
-                uint _e225 = k_1;
-                uint li_11 = picks.light[min(uint(_e225), 7u)];
+                uint _e209 = h;
+                const uint _e210 = pcg_hash(_e209);
+                h = _e210;
+                uint _e211 = h;
+                const float _e212 = xi_from_bits(_e211);
+                uint _e213 = h;
+                const uint _e214 = pcg_hash(_e213);
+                h = _e214;
+                uint _e215 = h;
+                const float _e216 = xi_from_bits(_e215);
+                uint _e218 = k_1;
+                uint li_11 = picks.light[min(uint(_e218), 7u)];
                 copies = 0u;
-                uint _e230 = k_1;
-                j_1 = _e230;
+                uint _e223 = k_1;
+                j_1 = _e223;
                 uint2 loop_bound_16 = uint2(4294967295u, 4294967295u);
                 bool loop_init_13 = true;
                 while(true) {
                     if (all(loop_bound_16 == uint2(0u, 0u))) { break; }
                     loop_bound_16 -= uint2(loop_bound_16.y == 0u, 1u);
                     if (!loop_init_13) {
-                        uint _e245 = j_1;
-                        j_1 = (_e245 + 1u);
+                        uint _e238 = j_1;
+                        j_1 = (_e238 + 1u);
                     }
                     loop_init_13 = false;
-                    uint _e232 = j_1;
-                    if ((_e232 < K)) {
+                    uint _e225 = j_1;
+                    if ((_e225 < K)) {
                     } else {
                         break;
                     }
                     {
-                        uint _e235 = copies;
-                        uint _e238 = j_1;
-                        uint _e240 = k_1;
-                        copies = (_e235 + ((_e210[min(uint(_e238), 7u)] == _e240) ? 1u : 0u));
+                        uint _e228 = copies;
+                        uint _e231 = j_1;
+                        uint _e233 = k_1;
+                        copies = (_e228 + ((_e203[min(uint(_e231), 7u)] == _e233) ? 1u : 0u));
                     }
                 }
-                uint _e247 = copies;
-                if ((_e247 > 0u)) {
-                    Shaded _e250 = t;
-                    float3 _e251 = n;
-                    float3 _e252 = r;
-                    Material _e253 = m;
-                    float _e255 = picks.w_sum;
-                    uint _e257 = k_1;
-                    float _e259 = picks.w[min(uint(_e257), 7u)];
-                    const float _e261 = weighted_pick_weight(_e255, _e259, K);
-                    uint _e262 = copies;
-                    const Shaded _e265 = shade_pick(li_11, x_15, _e251, _e252, _e79, _e253, (_e261 * float(_e262)), _e219, _e223, eps_4);
-                    const Shaded _e266 = add(_e250, _e265);
-                    t = _e266;
+                uint _e240 = copies;
+                if ((_e240 > 0u)) {
+                    Shaded _e243 = t;
+                    float3 _e244 = n;
+                    float3 _e245 = r;
+                    Material _e246 = m;
+                    float _e248 = picks.w_sum;
+                    uint _e250 = k_1;
+                    float _e252 = picks.w[min(uint(_e250), 7u)];
+                    const float _e254 = weighted_pick_weight(_e248, _e252, K);
+                    uint _e255 = copies;
+                    const Shaded _e258 = shade_pick(li_11, x_15, _e244, _e245, _e79, _e246, (_e254 * float(_e255)), _e212, _e216, eps_4);
+                    const Shaded _e259 = add(_e243, _e258);
+                    t = _e259;
                 }
             }
         }
     }
     uint count = picks.n;
-    float3 _e274 = t.e;
-    out_tex[texel_1] = float4(_e274, float(count));
+    float3 _e267 = t.e;
+    out_tex[texel_1] = float4(_e267, float(count));
     return;
 }

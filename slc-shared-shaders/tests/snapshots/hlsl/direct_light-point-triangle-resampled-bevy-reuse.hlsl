@@ -350,29 +350,29 @@ float connection_factor(float cos_x, float d2_3, float rt2_1, float w_1)
 
 float connection_cosine(float3 x_2, float3 y, float3 n_1, float3 ng, float r2_1)
 {
+    bool local_8 = (bool)0;
     bool local_9 = (bool)0;
-    bool local_10 = (bool)0;
 
     float3 v_7 = (x_2 - y);
     float d2_6 = dot(v_7, v_7);
     const bool _e7 = slc_keep(r2_1, d2_6);
     if (!(!(_e7))) {
-        local_9 = !((d2_6 > 0.0));
+        local_8 = !((d2_6 > 0.0));
     } else {
-        local_9 = true;
+        local_8 = true;
     }
-    bool _e16 = local_9;
+    bool _e16 = local_8;
     if (_e16) {
         return 0.0;
     }
     float3 w_11 = (v_7 / (sqrt(d2_6)).xxx);
     float cos_x_1 = -(dot(n_1, w_11));
     if (!((cos_x_1 <= 0.0))) {
-        local_10 = (dot(ng, w_11) >= 0.0);
+        local_9 = (dot(ng, w_11) >= 0.0);
     } else {
-        local_10 = true;
+        local_9 = true;
     }
-    bool _e32 = local_10;
+    bool _e32 = local_9;
     if (_e32) {
         return 0.0;
     }
@@ -521,14 +521,14 @@ float smith_root(float cos_, float alpha_1)
 
 float smith_visibility(float n_l, float n_v, float alpha_2)
 {
-    bool local_11 = (bool)0;
+    bool local_10 = (bool)0;
 
     if (!((n_l <= 0.0))) {
-        local_11 = (n_v <= 0.0);
+        local_10 = (n_v <= 0.0);
     } else {
-        local_11 = true;
+        local_10 = true;
     }
-    bool _e11 = local_11;
+    bool _e11 = local_10;
     if (_e11) {
         return 0.0;
     }
@@ -553,21 +553,21 @@ float3 specular_fresnel(float3 base, float metallic, float3 f0_d, float f90_d, f
 
 bool has_specular(float metallic_1, float3 f0_d_1, float f90_d_1)
 {
+    bool local_11 = (bool)0;
     bool local_12 = (bool)0;
-    bool local_13 = (bool)0;
 
     if (!((metallic_1 > 0.0))) {
-        local_12 = (f90_d_1 > 0.0);
+        local_11 = (f90_d_1 > 0.0);
+    } else {
+        local_11 = true;
+    }
+    bool _e11 = local_11;
+    if (!(_e11)) {
+        local_12 = (max(max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0.0);
     } else {
         local_12 = true;
     }
-    bool _e11 = local_12;
-    if (!(_e11)) {
-        local_13 = (max(max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0.0);
-    } else {
-        local_13 = true;
-    }
-    bool _e23 = local_13;
+    bool _e23 = local_12;
     return _e23;
 }
 
@@ -578,17 +578,17 @@ float channel_mean(float3 c_5)
 
 float4 receiver_lobe(float3 base_1, float metallic_2, float3 f0_d_2, float f90_d_2, float alpha_3, float n_v_1)
 {
-    bool local_14 = (bool)0;
+    bool local_13 = (bool)0;
 
     const float3 _e10 = fresnel_schlick(f0_d_2, f90_d_2, n_v_1);
     const float _e16 = channel_mean((((float3(1.0, 1.0, 1.0) - _e10) * base_1) * (1.0 - metallic_2)));
     if (!((n_v_1 <= 0.0))) {
         const bool _e22 = has_specular(metallic_2, f0_d_2, f90_d_2);
-        local_14 = !(_e22);
+        local_13 = !(_e22);
     } else {
-        local_14 = true;
+        local_13 = true;
     }
-    bool _e25 = local_14;
+    bool _e25 = local_13;
     if (_e25) {
         return float4(_e16, 0.0, alpha_3, n_v_1);
     }
@@ -682,23 +682,23 @@ float3 bevy_brdf(float3 base_2, float metallic_3, float r_5, float reflectance_1
 
 float cone_cos_of(float3 v_2, float d2_4, float a_3, float3 d)
 {
+    bool local_14 = (bool)0;
     bool local_15 = (bool)0;
-    bool local_16 = (bool)0;
 
     float vd = dot(v_2, d);
     float h2_1 = (d2_4 - (a_3 * a_3));
     if (!((h2_1 <= 0.0))) {
         if ((vd >= 0.0)) {
-            local_16 = ((vd * vd) >= h2_1);
+            local_15 = ((vd * vd) >= h2_1);
         } else {
-            local_16 = false;
+            local_15 = false;
         }
-        bool _e19 = local_16;
-        local_15 = _e19;
+        bool _e19 = local_15;
+        local_14 = _e19;
     } else {
-        local_15 = true;
+        local_14 = true;
     }
-    bool _e21 = local_15;
+    bool _e21 = local_14;
     if (_e21) {
         return 1.0;
     }
@@ -763,16 +763,16 @@ float ray_aabb(float3 o, float3 inv_d, float3 bmin_1, float3 bmax_1, float t_max
 
 float3 triangle_normal(float3 a_4, float3 b_3, float3 c_6)
 {
-    bool local_17 = (bool)0;
+    bool local_16 = (bool)0;
 
     float3 n_14 = cross((b_3 - a_4), (c_6 - a_4));
     float l2_ = dot(n_14, n_14);
     if (!(!((l2_ > 0.0)))) {
-        local_17 = !((l2_ < 3e38));
+        local_16 = !((l2_ < 3e38));
     } else {
-        local_17 = true;
+        local_16 = true;
     }
-    bool _e17 = local_17;
+    bool _e17 = local_16;
     if (_e17) {
         return float3(0.0, 0.0, 0.0);
     }
@@ -781,9 +781,9 @@ float3 triangle_normal(float3 a_4, float3 b_3, float3 c_6)
 
 float ray_triangle(float3 o_1, float3 d_3, float3 a_5, float3 b_4, float3 c_7, float t_min, float t_max_1)
 {
+    bool local_17 = (bool)0;
     bool local_18 = (bool)0;
     bool local_19 = (bool)0;
-    bool local_20 = (bool)0;
 
     float3 e1_ = (b_4 - a_5);
     float3 e2_ = (c_7 - a_5);
@@ -796,32 +796,32 @@ float ray_triangle(float3 o_1, float3 d_3, float3 a_5, float3 b_4, float3 c_7, f
     float3 s_12 = (o_1 - a_5);
     float u_4 = (dot(s_12, p_7) * inv);
     if (!((u_4 < 0.0))) {
-        local_18 = (u_4 > 1.0);
+        local_17 = (u_4 > 1.0);
     } else {
-        local_18 = true;
+        local_17 = true;
     }
-    bool _e28 = local_18;
+    bool _e28 = local_17;
     if (_e28) {
         return -1.0;
     }
     float3 q_6 = cross(s_12, e1_);
     float v_9 = (dot(d_3, q_6) * inv);
     if (!((v_9 < 0.0))) {
-        local_19 = ((u_4 + v_9) > 1.0);
+        local_18 = ((u_4 + v_9) > 1.0);
     } else {
-        local_19 = true;
+        local_18 = true;
     }
-    bool _e42 = local_19;
+    bool _e42 = local_18;
     if (_e42) {
         return -1.0;
     }
     float t_6 = (dot(e2_, q_6) * inv);
     if ((t_6 > t_min)) {
-        local_20 = (t_6 < t_max_1);
+        local_19 = (t_6 < t_max_1);
     } else {
-        local_20 = false;
+        local_19 = false;
     }
-    bool _e51 = local_20;
+    bool _e51 = local_19;
     if (_e51) {
         return t_6;
     }
@@ -841,14 +841,14 @@ float3 reproject(float4 c0_, float4 c1_, float4 c2_, float4 c3_, float3 p_2, flo
 
 bool history_matches(float3 n_5, float3 nh, float3 p_3, float oh, float d_4)
 {
-    bool local_21 = (bool)0;
+    bool local_20 = (bool)0;
 
     if ((abs((dot(nh, p_3) - oh)) <= (TEMPORAL_DEPTH_TOLERANCE * d_4))) {
-        local_21 = (dot(n_5, nh) >= TEMPORAL_NORMAL_COS);
+        local_20 = (dot(n_5, nh) >= TEMPORAL_NORMAL_COS);
     } else {
-        local_21 = false;
+        local_20 = false;
     }
-    bool _e17 = local_21;
+    bool _e17 = local_20;
     return _e17;
 }
 
@@ -1044,8 +1044,8 @@ float bsh_inner_scale(float a_7, float3 v_3, float d2_5, float3 r_7, float4 rl_2
 
 bool bsh_reaches(BshNode node_3, float3 x_4, float3 r_8, float4 rl_3)
 {
+    bool local_21 = (bool)0;
     bool local_22 = (bool)0;
-    bool local_23 = (bool)0;
 
     const bool _e6 = sphere_contains_point(node_3.center_, node_3.radius, x_4);
     if (_e6) {
@@ -1053,11 +1053,11 @@ bool bsh_reaches(BshNode node_3, float3 x_4, float3 r_8, float4 rl_3)
     }
     if (!((rl_3.w <= 1.0))) {
         const bool _e20 = sphere_contains_point(node_3.center_, (node_3.radius * (rl_3.w * 1.0001)), x_4);
-        local_22 = !(_e20);
+        local_21 = !(_e20);
     } else {
-        local_22 = true;
+        local_21 = true;
     }
-    bool _e23 = local_22;
+    bool _e23 = local_21;
     if (_e23) {
         return false;
     }
@@ -1078,11 +1078,11 @@ bool bsh_reaches(BshNode node_3, float3 x_4, float3 r_8, float4 rl_3)
     float s_c = (_e50 * 1.001);
     float reach = (node_3.extent + (sqrt(s_c) * _e25));
     if ((d2_7 <= ((node_3.radius * node_3.radius) * s_c))) {
-        local_23 = (d2_7 <= (reach * reach));
+        local_22 = (d2_7 <= (reach * reach));
     } else {
-        local_23 = false;
+        local_22 = false;
     }
-    bool _e67 = local_23;
+    bool _e67 = local_22;
     return _e67;
 }
 
@@ -1096,7 +1096,7 @@ uint bsh_subtree(uint nodes_3, uint s_1, uint depth)
 {
     uint i_2 = (uint)0;
     uint level = 0u;
-    bool local_24 = (bool)0;
+    bool local_23 = (bool)0;
 
     const uint _e3 = bsh_first(nodes_3);
     i_2 = _e3;
@@ -1107,11 +1107,11 @@ uint bsh_subtree(uint nodes_3, uint s_1, uint depth)
         uint _e7 = level;
         if ((_e7 < depth)) {
             uint _e11 = i_2;
-            local_24 = (_e11 != BSH_NONE);
+            local_23 = (_e11 != BSH_NONE);
         } else {
-            local_24 = false;
+            local_23 = false;
         }
-        bool _e15 = local_24;
+        bool _e15 = local_23;
         if (_e15) {
         } else {
             break;
@@ -1188,8 +1188,8 @@ float next_threshold(float sum, inout uint h_1)
 Connection connect_record(GpuLight l_3, float3 x_5, float3 n_6, float3 ng_1, float r2_2, float rt2_2, float w_res, float u1_3, float u2_3, float eps, bool trace_1)
 {
     Connection c_8 = (Connection)0;
+    bool local_24 = (bool)0;
     bool local_25 = (bool)0;
-    bool local_26 = (bool)0;
 
     c_8.e = (0.0).xxx;
     const float3 _e16 = light_point(l_3, u1_3, u2_3);
@@ -1202,16 +1202,16 @@ Connection connect_record(GpuLight l_3, float3 x_5, float3 n_6, float3 ng_1, flo
         if (trace_1) {
             float3 _e33 = c_8.y;
             const bool _e34 = occluded((x_5 + (ng_1 * eps)), _e33);
-            local_26 = _e34;
+            local_25 = _e34;
         } else {
-            local_26 = false;
+            local_25 = false;
         }
-        bool _e36 = local_26;
-        local_25 = _e36;
+        bool _e36 = local_25;
+        local_24 = _e36;
     } else {
-        local_25 = true;
+        local_24 = true;
     }
-    bool _e38 = local_25;
+    bool _e38 = local_24;
     if (_e38) {
         Connection _e39 = c_8;
         const Connection connection = _e39;
@@ -1350,9 +1350,9 @@ uint tile_subtree(uint s_3, TileWalk t_1, bool list, uint at, uint start_2, uint
 {
     uint p_5 = (uint)0;
     uint b_7 = (uint)0;
+    bool local_26 = (bool)0;
     bool local_27 = (bool)0;
     bool local_28 = (bool)0;
-    bool local_29 = (bool)0;
 
     const uint _e8 = bsh_subtree(BSH, s_3, BSH_TILE_DEPTH);
     if ((_e8 == BSH_NONE)) {
@@ -1378,16 +1378,16 @@ uint tile_subtree(uint s_3, TileWalk t_1, bool list, uint at, uint start_2, uint
         if ((_e23 != end_1)) {
             if (!(!(list))) {
                 uint _e31 = p_5;
-                local_28 = (_e31 < to);
+                local_27 = (_e31 < to);
             } else {
-                local_28 = true;
+                local_27 = true;
             }
-            bool _e34 = local_28;
-            local_27 = _e34;
+            bool _e34 = local_27;
+            local_26 = _e34;
         } else {
-            local_27 = false;
+            local_26 = false;
         }
-        bool _e36 = local_27;
+        bool _e36 = local_26;
         if (_e36) {
         } else {
             break;
@@ -1395,11 +1395,11 @@ uint tile_subtree(uint s_3, TileWalk t_1, bool list, uint at, uint start_2, uint
         {
             if (list) {
                 uint _e39 = p_5;
-                local_29 = (_e39 >= start_2);
+                local_28 = (_e39 >= start_2);
             } else {
-                local_29 = false;
+                local_28 = false;
             }
-            bool _e42 = local_29;
+            bool _e42 = local_28;
             if (_e42) {
                 uint _e44 = p_5;
                 uint _e47 = b_7;
@@ -1424,21 +1424,28 @@ TileWalk ConstructTileWalk(float3 arg0, float3 arg1, float arg2, uint arg3) {
 
 TileWalk tile_walk_begin(uint li_4, float3 x_8, float w_8, bool has_1)
 {
+    bool local_29 = (bool)0;
     TileWalk t_2 = (TileWalk)0;
     uint s_4 = (uint)0;
     uint sum_1 = 0u;
     uint s_5 = 0u;
 
-    uint _e8; InterlockedMax(tile_scale, (has_1 ? asuint(w_8) : 0u), _e8);
-    const WorkgroupBox _e9 = workgroup_box(li_4, x_8, has_1);
+    if (has_1) {
+        local_29 = (w_8 >= 0.0);
+    } else {
+        local_29 = false;
+    }
+    bool _e12 = local_29;
+    uint _e14; InterlockedMax(tile_scale, (_e12 ? asuint(w_8) : 0u), _e14);
+    const WorkgroupBox _e15 = workgroup_box(li_4, x_8, has_1);
     GroupMemoryBarrierWithGroupSync();
-    uint _e13 = tile_scale;
+    uint _e19 = tile_scale;
     GroupMemoryBarrierWithGroupSync();
-    t_2 = ConstructTileWalk(_e9.lo, _e9.hi, asfloat(_e13), 0u);
-    const bool _e18 = box_is_empty(_e9);
-    if (_e18) {
-        TileWalk _e19 = t_2;
-        const TileWalk tilewalk = _e19;
+    t_2 = ConstructTileWalk(_e15.lo, _e15.hi, asfloat(_e19), 0u);
+    const bool _e24 = box_is_empty(_e15);
+    if (_e24) {
+        TileWalk _e25 = t_2;
+        const TileWalk tilewalk = _e25;
         return tilewalk;
     }
     s_4 = li_4;
@@ -1448,21 +1455,21 @@ TileWalk tile_walk_begin(uint li_4, float3 x_8, float w_8, bool has_1)
         if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
         loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
         if (!loop_init_3) {
-            uint _e34 = s_4;
-            s_4 = (_e34 + TILE_THREADS);
+            uint _e40 = s_4;
+            s_4 = (_e40 + TILE_THREADS);
         }
         loop_init_3 = false;
-        uint _e21 = s_4;
-        if ((_e21 < BSH_TILE_SUBTREES)) {
+        uint _e27 = s_4;
+        if ((_e27 < BSH_TILE_SUBTREES)) {
         } else {
             break;
         }
         {
-            uint _e25 = s_4;
-            uint _e27 = s_4;
-            TileWalk _e28 = t_2;
-            const uint _e33 = tile_subtree(_e27, _e28, false, 0u, 0u, 0u);
-            subtree_at[min(uint(_e25), 255u)] = _e33;
+            uint _e31 = s_4;
+            uint _e33 = s_4;
+            TileWalk _e34 = t_2;
+            const uint _e39 = tile_subtree(_e33, _e34, false, 0u, 0u, 0u);
+            subtree_at[min(uint(_e31), 255u)] = _e39;
         }
     }
     GroupMemoryBarrierWithGroupSync();
@@ -1473,34 +1480,34 @@ TileWalk tile_walk_begin(uint li_4, float3 x_8, float w_8, bool has_1)
             if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
             loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
             if (!loop_init_4) {
-                uint _e57 = s_5;
-                s_5 = (_e57 + 1u);
+                uint _e63 = s_5;
+                s_5 = (_e63 + 1u);
             }
             loop_init_4 = false;
-            uint _e43 = s_5;
-            if ((_e43 < BSH_TILE_SUBTREES)) {
+            uint _e49 = s_5;
+            if ((_e49 < BSH_TILE_SUBTREES)) {
             } else {
                 break;
             }
             {
-                uint _e47 = s_5;
-                uint c_14 = subtree_at[min(uint(_e47), 255u)];
-                uint _e51 = s_5;
-                uint _e53 = sum_1;
-                subtree_at[min(uint(_e51), 255u)] = _e53;
-                uint _e54 = sum_1;
-                sum_1 = (_e54 + c_14);
+                uint _e53 = s_5;
+                uint c_14 = subtree_at[min(uint(_e53), 255u)];
+                uint _e57 = s_5;
+                uint _e59 = sum_1;
+                subtree_at[min(uint(_e57), 255u)] = _e59;
+                uint _e60 = sum_1;
+                sum_1 = (_e60 + c_14);
             }
         }
-        uint _e60 = sum_1;
-        tile_total = _e60;
+        uint _e66 = sum_1;
+        tile_total = _e66;
     }
     GroupMemoryBarrierWithGroupSync();
-    uint _e63 = tile_total;
+    uint _e69 = tile_total;
     GroupMemoryBarrierWithGroupSync();
-    t_2.total = _e63;
-    TileWalk _e64 = t_2;
-    const TileWalk tilewalk_1 = _e64;
+    t_2.total = _e69;
+    TileWalk _e70 = t_2;
+    const TileWalk tilewalk_1 = _e70;
     return tilewalk_1;
 }
 
@@ -2100,14 +2107,13 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
     uint count = 0u;
     uint hc = (uint)0;
     float threshold[8] = (float[8])0;
-    bool local_4 = (bool)0;
     uint start = 0u;
     uint j = (uint)0;
-    bool local_5 = (bool)0;
+    bool local_4 = (bool)0;
     uint q = (uint)0;
-    bool local_6 = (bool)0;
+    bool local_5 = (bool)0;
     Domain doms[3] = (Domain[3])0;
-    bool local_7 = (bool)0;
+    bool local_6 = (bool)0;
     uint hs = (uint)0;
     ReuseSlot kept[8] = (ReuseSlot[8])0;
     ReuseSlot fin[8] = (ReuseSlot[8])0;
@@ -2121,7 +2127,7 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
     uint j_1 = (uint)0;
     uint j_2 = (uint)0;
     uint q_2 = 0u;
-    bool local_8 = (bool)0;
+    bool local_7 = (bool)0;
 
     uint _e5 = view.width;
     if ((gid.x < _e5)) {
@@ -2199,31 +2205,25 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
     const uint _e138 = pick_stream(_e137);
     h = _e138;
     hc = _e137;
-    if (has_2) {
-        local_4 = (_e114.w >= 0.0);
-    } else {
-        local_4 = false;
-    }
-    bool _e166 = local_4;
-    const TileWalk _e167 = tile_walk_begin(lid, x_17, _e114.w, _e166);
+    const TileWalk _e160 = tile_walk_begin(lid, x_17, _e114.w, has_2);
     uint2 loop_bound_15 = uint2(4294967295u, 4294967295u);
     bool loop_init_12 = true;
     while(true) {
         if (all(loop_bound_15 == uint2(0u, 0u))) { break; }
         loop_bound_15 -= uint2(loop_bound_15.y == 0u, 1u);
         if (!loop_init_12) {
-            uint _e266 = start;
-            start = (_e266 + TILE_LIST);
+            uint _e259 = start;
+            start = (_e259 + TILE_LIST);
         }
         loop_init_12 = false;
-        uint _e170 = start;
-        if ((_e170 < _e167.total)) {
+        uint _e163 = start;
+        if ((_e163 < _e160.total)) {
         } else {
             break;
         }
         {
-            uint _e173 = start;
-            const uint _e174 = tile_walk_fill(lid, _e167, _e173);
+            uint _e166 = start;
+            const uint _e167 = tile_walk_fill(lid, _e160, _e166);
             j = 0u;
             uint2 loop_bound_16 = uint2(4294967295u, 4294967295u);
             bool loop_init_13 = true;
@@ -2231,55 +2231,55 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
                 if (all(loop_bound_16 == uint2(0u, 0u))) { break; }
                 loop_bound_16 -= uint2(loop_bound_16.y == 0u, 1u);
                 if (!loop_init_13) {
-                    uint _e264 = j;
-                    j = (_e264 + 1u);
+                    uint _e257 = j;
+                    j = (_e257 + 1u);
                 }
                 loop_init_13 = false;
-                uint _e177 = j;
-                if ((_e177 < _e174)) {
+                uint _e170 = j;
+                if ((_e170 < _e167)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e180 = j;
-                    uint b_10 = tile_list[min(uint(_e180), 1023u)];
+                    uint _e173 = j;
+                    uint b_10 = tile_list[min(uint(_e173), 1023u)];
                     if (!(!(has_2))) {
-                        BshNode _e189 = ConstructBshNode(asfloat(bsh_nodes.Load3(b_10*32+0)), asfloat(bsh_nodes.Load(b_10*32+12)), asuint(bsh_nodes.Load(b_10*32+16)), asuint(bsh_nodes.Load(b_10*32+20)), asuint(bsh_nodes.Load(b_10*32+24)), asfloat(bsh_nodes.Load(b_10*32+28)));
-                        float3 _e190 = r;
-                        const bool _e191 = bsh_reaches(_e189, x_17, _e190, _e114);
-                        local_5 = !(_e191);
+                        BshNode _e182 = ConstructBshNode(asfloat(bsh_nodes.Load3(b_10*32+0)), asfloat(bsh_nodes.Load(b_10*32+12)), asuint(bsh_nodes.Load(b_10*32+16)), asuint(bsh_nodes.Load(b_10*32+20)), asuint(bsh_nodes.Load(b_10*32+24)), asfloat(bsh_nodes.Load(b_10*32+28)));
+                        float3 _e183 = r;
+                        const bool _e184 = bsh_reaches(_e182, x_17, _e183, _e114);
+                        local_4 = !(_e184);
                     } else {
-                        local_5 = true;
+                        local_4 = true;
                     }
-                    bool _e194 = local_5;
-                    if (_e194) {
+                    bool _e187 = local_4;
+                    if (_e187) {
                         continue;
                     }
                     uint li_7 = asuint(bsh_nodes.Load(24+b_10*32));
-                    uint _e199 = count;
-                    count = (_e199 + 1u);
-                    uint _e202 = h;
-                    const uint _e203 = pcg_hash(_e202);
-                    h = _e203;
+                    uint _e192 = count;
+                    count = (_e192 + 1u);
+                    uint _e195 = h;
+                    const uint _e196 = pcg_hash(_e195);
+                    h = _e196;
                     uint h1_1 = h;
-                    uint _e205 = h;
-                    const uint _e206 = pcg_hash(_e205);
-                    h = _e206;
-                    uint _e207 = h;
-                    const uint _e208 = grid_cells(h1_1, _e207);
-                    const float _e209 = grid_coordinate(h1_1);
-                    uint _e210 = h;
-                    const float _e211 = grid_coordinate(_e210);
-                    float2 u_5 = float2(_e209, _e211);
-                    float3 _e213 = n;
-                    float3 _e214 = r;
-                    Material _e215 = m;
-                    const Shaded _e220 = shade_pick_traced(li_7, x_17, _e213, _e214, _e114, _e215, 1.0, u_5.x, u_5.y, eps_3, false);
-                    const float3 _e221 = output_of(_e220);
-                    const float _e222 = resample_target(_e221);
-                    if ((_e222 > 0.0)) {
-                        float3 _e225 = total;
-                        total = (_e225 + _e221);
+                    uint _e198 = h;
+                    const uint _e199 = pcg_hash(_e198);
+                    h = _e199;
+                    uint _e200 = h;
+                    const uint _e201 = grid_cells(h1_1, _e200);
+                    const float _e202 = grid_coordinate(h1_1);
+                    uint _e203 = h;
+                    const float _e204 = grid_coordinate(_e203);
+                    float2 u_5 = float2(_e202, _e204);
+                    float3 _e206 = n;
+                    float3 _e207 = r;
+                    Material _e208 = m;
+                    const Shaded _e213 = shade_pick_traced(li_7, x_17, _e206, _e207, _e114, _e208, 1.0, u_5.x, u_5.y, eps_3, false);
+                    const float3 _e214 = output_of(_e213);
+                    const float _e215 = resample_target(_e214);
+                    if ((_e215 > 0.0)) {
+                        float3 _e218 = total;
+                        total = (_e218 + _e214);
                         q = 0u;
                         uint2 loop_bound_17 = uint2(4294967295u, 4294967295u);
                         bool loop_init_14 = true;
@@ -2287,41 +2287,41 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
                             if (all(loop_bound_17 == uint2(0u, 0u))) { break; }
                             loop_bound_17 -= uint2(loop_bound_17.y == 0u, 1u);
                             if (!loop_init_14) {
-                                uint _e261 = q;
-                                q = (_e261 + 1u);
+                                uint _e254 = q;
+                                q = (_e254 + 1u);
                             }
                             loop_init_14 = false;
-                            uint _e229 = q;
-                            if ((_e229 < K)) {
+                            uint _e222 = q;
+                            if ((_e222 < K)) {
                             } else {
                                 break;
                             }
                             {
-                                uint _e232 = q;
-                                const float _e234 = slot_target(_e221, _e232, K);
-                                float3 _e235 = total;
-                                uint _e236 = q;
-                                const float _e238 = slot_target(_e235, _e236, K);
-                                if ((_e234 > 0.0)) {
-                                    uint _e243 = q;
-                                    float _e245 = threshold[min(uint(_e243), 7u)];
-                                    local_6 = (_e238 > _e245);
+                                uint _e225 = q;
+                                const float _e227 = slot_target(_e214, _e225, K);
+                                float3 _e228 = total;
+                                uint _e229 = q;
+                                const float _e231 = slot_target(_e228, _e229, K);
+                                if ((_e227 > 0.0)) {
+                                    uint _e236 = q;
+                                    float _e238 = threshold[min(uint(_e236), 7u)];
+                                    local_5 = (_e231 > _e238);
                                 } else {
-                                    local_6 = false;
+                                    local_5 = false;
                                 }
-                                bool _e248 = local_6;
-                                if (_e248) {
-                                    uint _e249 = q;
-                                    slot_light[min(uint(_e249), 7u)] = li_7;
-                                    uint _e251 = q;
-                                    slot_u[min(uint(_e251), 7u)] = u_5;
-                                    uint _e253 = q;
-                                    slot_p[min(uint(_e253), 7u)] = _e234;
-                                    uint _e255 = q;
-                                    slot_cells[min(uint(_e255), 7u)] = _e208;
-                                    uint _e257 = q;
-                                    const float _e259 = next_threshold(_e238, hc);
-                                    threshold[min(uint(_e257), 7u)] = _e259;
+                                bool _e241 = local_5;
+                                if (_e241) {
+                                    uint _e242 = q;
+                                    slot_light[min(uint(_e242), 7u)] = li_7;
+                                    uint _e244 = q;
+                                    slot_u[min(uint(_e244), 7u)] = u_5;
+                                    uint _e246 = q;
+                                    slot_p[min(uint(_e246), 7u)] = _e227;
+                                    uint _e248 = q;
+                                    slot_cells[min(uint(_e248), 7u)] = _e201;
+                                    uint _e250 = q;
+                                    const float _e252 = next_threshold(_e231, hc);
+                                    threshold[min(uint(_e250), 7u)] = _e252;
                                 }
                             }
                         }
@@ -2334,73 +2334,73 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
     if (!(has_2)) {
         if (inside) {
             out_tex[texel_1] = (0.0).xxxx;
-            uint _e277 = view.width;
-            reuse_next.Store(12+0+((gid.y * _e277) + gid.x)*144, asuint(0.0));
+            uint _e270 = view.width;
+            reuse_next.Store(12+0+((gid.y * _e270) + gid.x)*144, asuint(0.0));
         }
         return;
     }
-    uint _e288 = view.width;
-    uint pixel_1 = ((gid.y * _e288) + gid.x);
-    float3 _e293 = n;
-    float3 _e296 = view.eye;
-    const uint _e300 = reuse_stream(_e137, 0u);
-    const uint _e301 = reuse_domains(x_17, _e293, length((_e296 - x_17)), _e300, doms);
-    if ((_e301 > 0u)) {
-        bool _e308 = doms[0].temporal;
-        local_7 = _e308;
+    uint _e281 = view.width;
+    uint pixel_1 = ((gid.y * _e281) + gid.x);
+    float3 _e286 = n;
+    float3 _e289 = view.eye;
+    const uint _e293 = reuse_stream(_e137, 0u);
+    const uint _e294 = reuse_domains(x_17, _e286, length((_e289 - x_17)), _e293, doms);
+    if ((_e294 > 0u)) {
+        bool _e301 = doms[0].temporal;
+        local_6 = _e301;
     } else {
-        local_7 = false;
+        local_6 = false;
     }
-    bool own_history = local_7;
+    bool own_history = local_6;
     uint first_1 = (own_history ? 1u : 0u);
-    float _e316 = doms[0].c;
-    float confidence = (1.0 + (own_history ? _e316 : 0.0));
-    const uint _e322 = reuse_stream(_e137, 1u);
-    hs = _e322;
+    float _e309 = doms[0].c;
+    float confidence = (1.0 + (own_history ? _e309 : 0.0));
+    const uint _e315 = reuse_stream(_e137, 1u);
+    hs = _e315;
     uint2 loop_bound_18 = uint2(4294967295u, 4294967295u);
     bool loop_init_15 = true;
     while(true) {
         if (all(loop_bound_18 == uint2(0u, 0u))) { break; }
         loop_bound_18 -= uint2(loop_bound_18.y == 0u, 1u);
         if (!loop_init_15) {
-            uint _e375 = q_1;
-            q_1 = (_e375 + 1u);
+            uint _e368 = q_1;
+            q_1 = (_e368 + 1u);
         }
         loop_init_15 = false;
-        uint _e328 = q_1;
-        if ((_e328 < K)) {
+        uint _e321 = q_1;
+        if ((_e321 < K)) {
         } else {
             break;
         }
         {
-            uint _e331 = q_1;
-            uint _e333 = q_1;
+            uint _e324 = q_1;
+            uint _e326 = q_1;
+            uint _e327 = q_1;
+            uint _e329 = slot_light[min(uint(_e327), 7u)];
+            uint _e330 = q_1;
+            uint _e332 = slot_cells[min(uint(_e330), 7u)];
+            float3 _e333 = total;
             uint _e334 = q_1;
-            uint _e336 = slot_light[min(uint(_e334), 7u)];
+            const float _e336 = slot_target(_e333, _e334, K);
             uint _e337 = q_1;
-            uint _e339 = slot_cells[min(uint(_e337), 7u)];
-            float3 _e340 = total;
-            uint _e341 = q_1;
-            const float _e343 = slot_target(_e340, _e341, K);
-            uint _e344 = q_1;
-            float _e346 = slot_p[min(uint(_e344), 7u)];
-            float3 _e355 = n;
-            Material _e356 = m;
-            const ReuseSlot _e357 = gris_combine(_e333, ConstructReuseSlot(_e336, _e339, ((_e346 > 0.0) ? _e343 : 0.0)), true, 1.0, 0u, first_1, x_17, _e355, _e356, doms, hs);
-            kept[min(uint(_e331), 7u)] = _e357;
-            uint _e358 = q_1;
-            uint _e360 = q_1;
-            ReuseSlot _e362 = kept[min(uint(_e360), 7u)];
-            fin[min(uint(_e358), 7u)] = _e362;
-            if ((_e301 > first_1)) {
-                uint _e364 = q_1;
-                uint _e366 = q_1;
-                uint _e367 = q_1;
-                ReuseSlot _e369 = kept[min(uint(_e367), 7u)];
-                float3 _e371 = n;
-                Material _e372 = m;
-                const ReuseSlot _e373 = gris_combine(_e366, _e369, false, confidence, first_1, _e301, x_17, _e371, _e372, doms, hs);
-                fin[min(uint(_e364), 7u)] = _e373;
+            float _e339 = slot_p[min(uint(_e337), 7u)];
+            float3 _e348 = n;
+            Material _e349 = m;
+            const ReuseSlot _e350 = gris_combine(_e326, ConstructReuseSlot(_e329, _e332, ((_e339 > 0.0) ? _e336 : 0.0)), true, 1.0, 0u, first_1, x_17, _e348, _e349, doms, hs);
+            kept[min(uint(_e324), 7u)] = _e350;
+            uint _e351 = q_1;
+            uint _e353 = q_1;
+            ReuseSlot _e355 = kept[min(uint(_e353), 7u)];
+            fin[min(uint(_e351), 7u)] = _e355;
+            if ((_e294 > first_1)) {
+                uint _e357 = q_1;
+                uint _e359 = q_1;
+                uint _e360 = q_1;
+                ReuseSlot _e362 = kept[min(uint(_e360), 7u)];
+                float3 _e364 = n;
+                Material _e365 = m;
+                const ReuseSlot _e366 = gris_combine(_e359, _e362, false, confidence, first_1, _e294, x_17, _e364, _e365, doms, hs);
+                fin[min(uint(_e357), 7u)] = _e366;
             }
         }
     }
@@ -2410,131 +2410,131 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
         if (all(loop_bound_19 == uint2(0u, 0u))) { break; }
         loop_bound_19 -= uint2(loop_bound_19.y == 0u, 1u);
         if (!loop_init_16) {
-            uint _e416 = k;
-            k = (_e416 + 1u);
+            uint _e409 = k;
+            k = (_e409 + 1u);
         }
         loop_init_16 = false;
-        uint _e381 = k;
-        if ((_e381 < K)) {
+        uint _e374 = k;
+        if ((_e374 < K)) {
         } else {
             break;
         }
         {
+            uint _e377 = k;
+            uint _e379 = k;
+            uint _e382 = fin[min(uint(_e379), 7u)].light;
             uint _e384 = k;
-            uint _e386 = k;
-            uint _e389 = fin[min(uint(_e386), 7u)].light;
-            uint _e391 = k;
-            uint _e394 = fin[min(uint(_e391), 7u)].u;
-            uint _e396 = k;
-            uint _e399 = fin[min(uint(_e396), 7u)].light;
-            uint _e402 = asuint(lights.Load(12+_e399*64));
-            keys[min(uint(_e384), 7u)] = uint2(_e389, ((_e402 == LIGHT_TRIANGLE) ? _e394 : 0u));
-            uint _e407 = k;
-            uint _e409 = k;
-            float _e412 = fin[min(uint(_e409), 7u)].w;
-            held[min(uint(_e407), 7u)] = (_e412 > 0.0);
+            uint _e387 = fin[min(uint(_e384), 7u)].u;
+            uint _e389 = k;
+            uint _e392 = fin[min(uint(_e389), 7u)].light;
+            uint _e395 = asuint(lights.Load(12+_e392*64));
+            keys[min(uint(_e377), 7u)] = uint2(_e382, ((_e395 == LIGHT_TRIANGLE) ? _e387 : 0u));
+            uint _e400 = k;
+            uint _e402 = k;
+            float _e405 = fin[min(uint(_e402), 7u)].w;
+            held[min(uint(_e400), 7u)] = (_e405 > 0.0);
         }
     }
-    uint2 _e418[8] = keys;
-    bool _e419[8] = held;
-    const uint _e420[8] = first_holders(_e418, _e419);
+    uint2 _e411[8] = keys;
+    bool _e412[8] = held;
+    const uint _e413[8] = first_holders(_e411, _e412);
     uint2 loop_bound_20 = uint2(4294967295u, 4294967295u);
     bool loop_init_17 = true;
     while(true) {
         if (all(loop_bound_20 == uint2(0u, 0u))) { break; }
         loop_bound_20 -= uint2(loop_bound_20.y == 0u, 1u);
         if (!loop_init_17) {
-            uint _e508 = k_1;
-            k_1 = (_e508 + 1u);
+            uint _e501 = k_1;
+            k_1 = (_e501 + 1u);
         }
         loop_init_17 = false;
-        uint _e424 = k_1;
-        if ((_e424 < K)) {
+        uint _e417 = k_1;
+        if ((_e417 < K)) {
         } else {
             break;
         }
         {
-            uint _e427 = k_1;
-            uint _e429 = k_1;
-            if ((_e420[min(uint(_e427), 7u)] != _e429)) {
+            uint _e420 = k_1;
+            uint _e422 = k_1;
+            if ((_e413[min(uint(_e420), 7u)] != _e422)) {
                 continue;
             }
             w = (0.0).xxx;
-            uint _e434 = k_1;
-            j_1 = _e434;
+            uint _e427 = k_1;
+            j_1 = _e427;
             uint2 loop_bound_21 = uint2(4294967295u, 4294967295u);
             bool loop_init_18 = true;
             while(true) {
                 if (all(loop_bound_21 == uint2(0u, 0u))) { break; }
                 loop_bound_21 -= uint2(loop_bound_21.y == 0u, 1u);
                 if (!loop_init_18) {
-                    uint _e454 = j_1;
-                    j_1 = (_e454 + 1u);
+                    uint _e447 = j_1;
+                    j_1 = (_e447 + 1u);
                 }
                 loop_init_18 = false;
-                uint _e436 = j_1;
-                if ((_e436 < K)) {
+                uint _e429 = j_1;
+                if ((_e429 < K)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e439 = j_1;
-                    uint _e441 = k_1;
-                    if ((_e420[min(uint(_e439), 7u)] == _e441)) {
-                        float3 _e443 = w;
-                        uint _e444 = j_1;
-                        float _e447 = fin[min(uint(_e444), 7u)].w;
-                        uint _e448 = j_1;
-                        const float3 _e450 = slot_share(_e448, K);
-                        w = (_e443 + (_e447 * _e450));
+                    uint _e432 = j_1;
+                    uint _e434 = k_1;
+                    if ((_e413[min(uint(_e432), 7u)] == _e434)) {
+                        float3 _e436 = w;
+                        uint _e437 = j_1;
+                        float _e440 = fin[min(uint(_e437), 7u)].w;
+                        uint _e441 = j_1;
+                        const float3 _e443 = slot_share(_e441, K);
+                        w = (_e436 + (_e440 * _e443));
                     }
                 }
             }
-            uint _e457 = k_1;
-            uint _e460 = fin[min(uint(_e457), 7u)].light;
-            GpuLight _e462 = ConstructGpuLight(asfloat(lights.Load3(_e460*64+0)), asuint(lights.Load(_e460*64+12)), asfloat(lights.Load3(_e460*64+16)), asfloat(lights.Load(_e460*64+28)), asfloat(lights.Load3(_e460*64+32)), asfloat(lights.Load(_e460*64+44)), asfloat(lights.Load3(_e460*64+48)), asuint(lights.Load(_e460*64+60)));
-            float3 _e463 = n;
-            float3 _e464 = n;
-            uint _e468 = k_1;
-            uint _e471 = fin[min(uint(_e468), 7u)].u;
-            const float _e472 = grid_coordinate(_e471);
-            uint _e473 = k_1;
-            uint _e476 = fin[min(uint(_e473), 7u)].u;
-            const float _e479 = grid_coordinate((_e476 << 16u));
-            const Connection _e481 = connect_record(_e462, x_17, _e463, _e464, UNRANGED, UNRANGED, 1.0, _e472, _e479, eps_3, true);
-            float3 _e482 = n;
-            Material _e483 = m;
-            const Shaded _e484 = shade_connection(_e481, x_17, _e482, _e483);
-            Shaded _e485 = t;
-            float3 _e486 = w;
-            const Shaded _e487 = scaled(_e484, _e486);
-            const Shaded _e488 = add(_e485, _e487);
-            t = _e488;
-            uint _e489 = k_1;
-            j_2 = _e489;
+            uint _e450 = k_1;
+            uint _e453 = fin[min(uint(_e450), 7u)].light;
+            GpuLight _e455 = ConstructGpuLight(asfloat(lights.Load3(_e453*64+0)), asuint(lights.Load(_e453*64+12)), asfloat(lights.Load3(_e453*64+16)), asfloat(lights.Load(_e453*64+28)), asfloat(lights.Load3(_e453*64+32)), asfloat(lights.Load(_e453*64+44)), asfloat(lights.Load3(_e453*64+48)), asuint(lights.Load(_e453*64+60)));
+            float3 _e456 = n;
+            float3 _e457 = n;
+            uint _e461 = k_1;
+            uint _e464 = fin[min(uint(_e461), 7u)].u;
+            const float _e465 = grid_coordinate(_e464);
+            uint _e466 = k_1;
+            uint _e469 = fin[min(uint(_e466), 7u)].u;
+            const float _e472 = grid_coordinate((_e469 << 16u));
+            const Connection _e474 = connect_record(_e455, x_17, _e456, _e457, UNRANGED, UNRANGED, 1.0, _e465, _e472, eps_3, true);
+            float3 _e475 = n;
+            Material _e476 = m;
+            const Shaded _e477 = shade_connection(_e474, x_17, _e475, _e476);
+            Shaded _e478 = t;
+            float3 _e479 = w;
+            const Shaded _e480 = scaled(_e477, _e479);
+            const Shaded _e481 = add(_e478, _e480);
+            t = _e481;
+            uint _e482 = k_1;
+            j_2 = _e482;
             uint2 loop_bound_22 = uint2(4294967295u, 4294967295u);
             bool loop_init_19 = true;
             while(true) {
                 if (all(loop_bound_22 == uint2(0u, 0u))) { break; }
                 loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
                 if (!loop_init_19) {
-                    uint _e505 = j_2;
-                    j_2 = (_e505 + 1u);
+                    uint _e498 = j_2;
+                    j_2 = (_e498 + 1u);
                 }
                 loop_init_19 = false;
-                uint _e491 = j_2;
-                if ((_e491 < K)) {
+                uint _e484 = j_2;
+                if ((_e484 < K)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e494 = j_2;
-                    uint _e496 = k_1;
-                    if ((_e420[min(uint(_e494), 7u)] == _e496)) {
-                        uint _e498 = j_2;
-                        const float3 _e500 = output_of(_e484);
-                        const float _e501 = resample_target(_e500);
-                        visible[min(uint(_e498), 7u)] = (_e501 > 0.0);
+                    uint _e487 = j_2;
+                    uint _e489 = k_1;
+                    if ((_e413[min(uint(_e487), 7u)] == _e489)) {
+                        uint _e491 = j_2;
+                        const float3 _e493 = output_of(_e477);
+                        const float _e494 = resample_target(_e493);
+                        visible[min(uint(_e491), 7u)] = (_e494 > 0.0);
                     }
                 }
             }
@@ -2546,46 +2546,46 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
         if (all(loop_bound_23 == uint2(0u, 0u))) { break; }
         loop_bound_23 -= uint2(loop_bound_23.y == 0u, 1u);
         if (!loop_init_20) {
-            uint _e549 = q_2;
-            q_2 = (_e549 + 1u);
+            uint _e542 = q_2;
+            q_2 = (_e542 + 1u);
         }
         loop_init_20 = false;
-        uint _e512 = q_2;
-        if ((_e512 < K)) {
+        uint _e505 = q_2;
+        if ((_e505 < K)) {
         } else {
             break;
         }
         {
-            uint _e517 = reuse.visibility;
-            if (!((_e517 == 0u))) {
-                uint _e523 = q_2;
-                bool _e525 = visible[min(uint(_e523), 7u)];
-                local_8 = _e525;
+            uint _e510 = reuse.visibility;
+            if (!((_e510 == 0u))) {
+                uint _e516 = q_2;
+                bool _e518 = visible[min(uint(_e516), 7u)];
+                local_7 = _e518;
             } else {
-                local_8 = true;
+                local_7 = true;
             }
-            bool keep = local_8;
-            uint _e531 = q_2;
-            uint _e533 = q_2;
-            uint _e536 = kept[min(uint(_e533), 7u)].light;
-            uint _e537 = q_2;
-            uint _e540 = kept[min(uint(_e537), 7u)].u;
-            uint _e541 = q_2;
-            float _e544 = kept[min(uint(_e541), 7u)].w;
+            bool keep = local_7;
+            uint _e524 = q_2;
+            uint _e526 = q_2;
+            uint _e529 = kept[min(uint(_e526), 7u)].light;
+            uint _e530 = q_2;
+            uint _e533 = kept[min(uint(_e530), 7u)].u;
+            uint _e534 = q_2;
+            float _e537 = kept[min(uint(_e534), 7u)].w;
             {
-                ReuseSlot _value4 = ConstructReuseSlot(_e536, _e540, (keep ? _e544 : 0.0));
-                reuse_next.Store(_e531*12+48+pixel_1*144+0, asuint(_value4.light));
-                reuse_next.Store(_e531*12+48+pixel_1*144+4, asuint(_value4.u));
-                reuse_next.Store(_e531*12+48+pixel_1*144+8, asuint(_value4.w));
+                ReuseSlot _value4 = ConstructReuseSlot(_e529, _e533, (keep ? _e537 : 0.0));
+                reuse_next.Store(_e524*12+48+pixel_1*144+0, asuint(_value4.light));
+                reuse_next.Store(_e524*12+48+pixel_1*144+4, asuint(_value4.u));
+                reuse_next.Store(_e524*12+48+pixel_1*144+8, asuint(_value4.w));
             }
         }
     }
-    float3 _e554 = n;
-    Material _e555 = m;
-    float _e558 = reuse.max_confidence;
-    const ReuseSurface _e560 = reuse_surface(x_17, _e554, _e555, min(confidence, _e558));
+    float3 _e547 = n;
+    Material _e548 = m;
+    float _e551 = reuse.max_confidence;
+    const ReuseSurface _e553 = reuse_surface(x_17, _e547, _e548, min(confidence, _e551));
     {
-        ReuseSurface _value2 = _e560;
+        ReuseSurface _value2 = _e553;
         reuse_next.Store3(0+pixel_1*144+0, asuint(_value2.x));
         reuse_next.Store(0+pixel_1*144+12, asuint(_value2.m));
         reuse_next.Store3(0+pixel_1*144+16, asuint(_value2.n));
@@ -2595,9 +2595,9 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
         reuse_next.Store(0+pixel_1*144+40, asuint(_value2.pad1_));
         reuse_next.Store(0+pixel_1*144+44, asuint(_value2.pad2_));
     }
-    float3 _e563 = t.diffuse;
-    float3 _e565 = t.specular;
-    uint _e567 = count;
-    out_tex[texel_1] = float4((_e563 + _e565), float(_e567));
+    float3 _e556 = t.diffuse;
+    float3 _e558 = t.specular;
+    uint _e560 = count;
+    out_tex[texel_1] = float4((_e556 + _e558), float(_e560));
     return;
 }

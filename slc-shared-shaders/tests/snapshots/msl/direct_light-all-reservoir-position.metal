@@ -301,28 +301,28 @@ float connection_cosine(
     metal::float3 ng,
     float r2_1
 ) {
+    bool local_5 = {};
     bool local_6 = {};
-    bool local_7 = {};
     metal::float3 v_4 = x_3 - y;
     float d2_6 = metal::dot(v_4, v_4);
     bool _e7 = slc_keep(r2_1, d2_6);
     if (!(!(_e7))) {
-        local_6 = !((d2_6 > 0.0));
+        local_5 = !((d2_6 > 0.0));
     } else {
-        local_6 = true;
+        local_5 = true;
     }
-    bool _e16 = local_6;
+    bool _e16 = local_5;
     if (_e16) {
         return 0.0;
     }
     metal::float3 w_9 = v_4 / metal::float3(metal::sqrt(d2_6));
     float cos_x_1 = -(metal::dot(n_1, w_9));
     if (!((cos_x_1 <= 0.0))) {
-        local_7 = metal::dot(ng, w_9) >= 0.0;
+        local_6 = metal::dot(ng, w_9) >= 0.0;
     } else {
-        local_7 = true;
+        local_6 = true;
     }
-    bool _e32 = local_7;
+    bool _e32 = local_6;
     if (_e32) {
         return 0.0;
     }
@@ -523,7 +523,7 @@ float ies_candela(
     device type_4 const& slc_table,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    bool local_8 = {};
+    bool local_7 = {};
     float _e4 = at(tab_2, base_1, slc_table, _buffer_sizes);
     uint _e5 = to_u32_(_e4);
     float _e8 = at(tab_2, base_1 + 1u, slc_table, _buffer_sizes);
@@ -534,11 +534,11 @@ float ies_candela(
     float _e14 = at(tab_2, v0_, slc_table, _buffer_sizes);
     if (!((gamma < _e14))) {
         float _e22 = at(tab_2, (v0_ + _e5) - 1u, slc_table, _buffer_sizes);
-        local_8 = gamma > _e22;
+        local_7 = gamma > _e22;
     } else {
-        local_8 = true;
+        local_7 = true;
     }
-    bool _e25 = local_8;
+    bool _e25 = local_7;
     if (_e25) {
         return 0.0;
     }
@@ -729,22 +729,22 @@ float cone_cos_of(
     float a_5,
     metal::float3 d
 ) {
+    bool local_8 = {};
     bool local_9 = {};
-    bool local_10 = {};
     float vd = metal::dot(v, d);
     float h2_ = d2_4 - (a_5 * a_5);
     if (!((h2_ <= 0.0))) {
         if (vd >= 0.0) {
-            local_10 = (vd * vd) >= h2_;
+            local_9 = (vd * vd) >= h2_;
         } else {
-            local_10 = false;
+            local_9 = false;
         }
-        bool _e19 = local_10;
-        local_9 = _e19;
+        bool _e19 = local_9;
+        local_8 = _e19;
     } else {
-        local_9 = true;
+        local_8 = true;
     }
-    bool _e21 = local_9;
+    bool _e21 = local_8;
     if (_e21) {
         return 1.0;
     }
@@ -791,15 +791,15 @@ metal::float3 triangle_normal(
     metal::float3 b_4,
     metal::float3 c_5
 ) {
-    bool local_11 = {};
+    bool local_10 = {};
     metal::float3 n_13 = metal::cross(b_4 - a_6, c_5 - a_6);
     float l2_ = metal::dot(n_13, n_13);
     if (!(!((l2_ > 0.0)))) {
-        local_11 = !((l2_ < 300000000000000000000000000000000000000.0));
+        local_10 = !((l2_ < 300000000000000000000000000000000000000.0));
     } else {
-        local_11 = true;
+        local_10 = true;
     }
-    bool _e17 = local_11;
+    bool _e17 = local_10;
     if (_e17) {
         return metal::float3(0.0, 0.0, 0.0);
     }
@@ -902,19 +902,19 @@ bool bsh_reaches(
     metal::float3 r_5,
     metal::float4 rl_3
 ) {
+    bool local_11 = {};
     bool local_12 = {};
-    bool local_13 = {};
     bool _e6 = sphere_contains_point(node_2.center, node_2.radius, x_8);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
         bool _e20 = sphere_contains_point(node_2.center, node_2.radius * (rl_3.w * 1.0001), x_8);
-        local_12 = !(_e20);
+        local_11 = !(_e20);
     } else {
-        local_12 = true;
+        local_11 = true;
     }
-    bool _e23 = local_12;
+    bool _e23 = local_11;
     if (_e23) {
         return false;
     }
@@ -935,11 +935,11 @@ bool bsh_reaches(
     float s_c = _e50 * 1.001;
     float reach = node_2.extent + (metal::sqrt(s_c) * _e25);
     if (d2_7 <= ((node_2.radius * node_2.radius) * s_c)) {
-        local_13 = d2_7 <= (reach * reach);
+        local_12 = d2_7 <= (reach * reach);
     } else {
-        local_13 = false;
+        local_12 = false;
     }
-    bool _e67 = local_13;
+    bool _e67 = local_12;
     return _e67;
 }
 
@@ -962,7 +962,7 @@ uint bsh_subtree(
 ) {
     uint i_2 = {};
     uint level = 0u;
-    bool local_14 = {};
+    bool local_13 = {};
     uint _e3 = bsh_first(nodes_3, bsh_nodes, _buffer_sizes);
     i_2 = _e3;
     uint2 loop_bound_1 = uint2(4294967295u);
@@ -972,11 +972,11 @@ uint bsh_subtree(
         uint _e7 = level;
         if (_e7 < depth) {
             uint _e11 = i_2;
-            local_14 = _e11 != BSH_NONE;
+            local_13 = _e11 != BSH_NONE;
         } else {
-            local_14 = false;
+            local_13 = false;
         }
-        bool _e15 = local_14;
+        bool _e15 = local_13;
         if (_e15) {
         } else {
             break;
@@ -1093,8 +1093,8 @@ Connection connect_record(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Connection c_6 = {};
+    bool local_14 = {};
     bool local_15 = {};
-    bool local_16 = {};
     c_6.e = metal::float3(0.0);
     metal::float3 _e16 = light_point(l_2, u1_2, u2_2);
     c_6.y = _e16;
@@ -1106,16 +1106,16 @@ Connection connect_record(
         if (trace) {
             metal::float3 _e33 = c_6.y;
             bool _e34 = occluded(x_9 + (ng_1 * eps), _e33);
-            local_16 = _e34;
+            local_15 = _e34;
         } else {
-            local_16 = false;
+            local_15 = false;
         }
-        bool _e36 = local_16;
-        local_15 = _e36;
+        bool _e36 = local_15;
+        local_14 = _e36;
     } else {
-        local_15 = true;
+        local_14 = true;
     }
-    bool _e38 = local_15;
+    bool _e38 = local_14;
     if (_e38) {
         Connection _e39 = c_6;
         return _e39;
@@ -1251,9 +1251,9 @@ uint tile_subtree(
 ) {
     uint p_3 = {};
     uint b_7 = {};
+    bool local_16 = {};
     bool local_17 = {};
     bool local_18 = {};
-    bool local_19 = {};
     uint _e8 = bsh_subtree(BSH, s_3, BSH_TILE_DEPTH, bsh_nodes, _buffer_sizes);
     if (_e8 == BSH_NONE) {
         return 0u;
@@ -1278,16 +1278,16 @@ uint tile_subtree(
         if (_e23 != end_1) {
             if (!(!(list))) {
                 uint _e31 = p_3;
-                local_18 = _e31 < to;
+                local_17 = _e31 < to;
             } else {
-                local_18 = true;
+                local_17 = true;
             }
-            bool _e34 = local_18;
-            local_17 = _e34;
+            bool _e34 = local_17;
+            local_16 = _e34;
         } else {
-            local_17 = false;
+            local_16 = false;
         }
-        bool _e36 = local_17;
+        bool _e36 = local_16;
         if (_e36) {
         } else {
             break;
@@ -1295,11 +1295,11 @@ uint tile_subtree(
         {
             if (list) {
                 uint _e39 = p_3;
-                local_19 = _e39 >= start_3;
+                local_18 = _e39 >= start_3;
             } else {
-                local_19 = false;
+                local_18 = false;
             }
-            bool _e42 = local_19;
+            bool _e42 = local_18;
             if (_e42) {
                 uint _e44 = p_3;
                 uint _e47 = b_7;
@@ -1328,20 +1328,27 @@ TileWalk tile_walk_begin(
     threadgroup uint& tile_total,
     constant _mslBufferSizes& _buffer_sizes
 ) {
+    bool local_19 = {};
     TileWalk t_3 = {};
     uint s_4 = {};
     uint sum = 0u;
     uint s_5 = 0u;
-    uint _e8 = metal::atomic_fetch_max_explicit(&tile_scale, has_1 ? as_type<uint>(w_6) : 0u, metal::memory_order_relaxed);
-    WorkgroupBox _e9 = workgroup_box(li_3, x_11, has_1, wg_lo, wg_hi, wg_box);
+    if (has_1) {
+        local_19 = w_6 >= 0.0;
+    } else {
+        local_19 = false;
+    }
+    bool _e12 = local_19;
+    uint _e14 = metal::atomic_fetch_max_explicit(&tile_scale, _e12 ? as_type<uint>(w_6) : 0u, metal::memory_order_relaxed);
+    WorkgroupBox _e15 = workgroup_box(li_3, x_11, has_1, wg_lo, wg_hi, wg_box);
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
     uint unnamed_1 = metal::atomic_load_explicit(&tile_scale, metal::memory_order_relaxed);
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-    t_3 = TileWalk {_e9.lo, _e9.hi, as_type<float>(unnamed_1), 0u};
-    bool _e18 = box_is_empty(_e9);
-    if (_e18) {
-        TileWalk _e19 = t_3;
-        return _e19;
+    t_3 = TileWalk {_e15.lo, _e15.hi, as_type<float>(unnamed_1), 0u};
+    bool _e24 = box_is_empty(_e15);
+    if (_e24) {
+        TileWalk _e25 = t_3;
+        return _e25;
     }
     s_4 = li_3;
     uint2 loop_bound_5 = uint2(4294967295u);
@@ -1350,21 +1357,21 @@ TileWalk tile_walk_begin(
         if (metal::all(loop_bound_5 == uint2(0u))) { break; }
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e34 = s_4;
-            s_4 = _e34 + TILE_THREADS;
+            uint _e40 = s_4;
+            s_4 = _e40 + TILE_THREADS;
         }
         loop_init_2 = false;
-        uint _e21 = s_4;
-        if (_e21 < BSH_TILE_SUBTREES) {
+        uint _e27 = s_4;
+        if (_e27 < BSH_TILE_SUBTREES) {
         } else {
             break;
         }
         {
-            uint _e25 = s_4;
-            uint _e27 = s_4;
-            TileWalk _e28 = t_3;
-            uint _e33 = tile_subtree(_e27, _e28, false, 0u, 0u, 0u, bsh_nodes, tile_list, _buffer_sizes);
-            subtree_at.inner[_e25] = _e33;
+            uint _e31 = s_4;
+            uint _e33 = s_4;
+            TileWalk _e34 = t_3;
+            uint _e39 = tile_subtree(_e33, _e34, false, 0u, 0u, 0u, bsh_nodes, tile_list, _buffer_sizes);
+            subtree_at.inner[_e31] = _e39;
         }
     }
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
@@ -1375,34 +1382,34 @@ TileWalk tile_walk_begin(
             if (metal::all(loop_bound_6 == uint2(0u))) { break; }
             loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
             if (!loop_init_3) {
-                uint _e57 = s_5;
-                s_5 = _e57 + 1u;
+                uint _e63 = s_5;
+                s_5 = _e63 + 1u;
             }
             loop_init_3 = false;
-            uint _e43 = s_5;
-            if (_e43 < BSH_TILE_SUBTREES) {
+            uint _e49 = s_5;
+            if (_e49 < BSH_TILE_SUBTREES) {
             } else {
                 break;
             }
             {
-                uint _e47 = s_5;
-                uint c_10 = subtree_at.inner[_e47];
-                uint _e51 = s_5;
-                uint _e53 = sum;
-                subtree_at.inner[_e51] = _e53;
-                uint _e54 = sum;
-                sum = _e54 + c_10;
+                uint _e53 = s_5;
+                uint c_10 = subtree_at.inner[_e53];
+                uint _e57 = s_5;
+                uint _e59 = sum;
+                subtree_at.inner[_e57] = _e59;
+                uint _e60 = sum;
+                sum = _e60 + c_10;
             }
         }
-        uint _e60 = sum;
-        tile_total = _e60;
+        uint _e66 = sum;
+        tile_total = _e66;
     }
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
     uint unnamed_2 = tile_total;
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
     t_3.total = unnamed_2;
-    TileWalk _e64 = t_3;
-    return _e64;
+    TileWalk _e70 = t_3;
+    return _e70;
 }
 
 uint tile_walk_fill(
@@ -1573,10 +1580,9 @@ kernel void main_(
     Shaded t = Shaded {metal::float3(0.0), metal::float3(0.0), metal::float3(0.0)};
     Picks picks = {};
     uint hr = {};
-    bool local_4 = {};
     uint start = 0u;
     uint j = {};
-    bool local_5 = {};
+    bool local_4 = {};
     uint k = 0u;
     uint _e5 = view.width;
     if (gid.x < _e5) {
@@ -1636,31 +1642,25 @@ kernel void main_(
     h = _e103;
     picks.n = 0u;
     hr = _e102;
-    if (has_2) {
-        local_4 = _e79.w >= 0.0;
-    } else {
-        local_4 = false;
-    }
-    bool _e124 = local_4;
-    TileWalk _e125 = tile_walk_begin(lid, x_15, _e79.w, _e124, bsh_nodes, wg_lo, wg_hi, wg_box, tile_list, subtree_at, tile_scale, tile_total, _buffer_sizes);
+    TileWalk _e118 = tile_walk_begin(lid, x_15, _e79.w, has_2, bsh_nodes, wg_lo, wg_hi, wg_box, tile_list, subtree_at, tile_scale, tile_total, _buffer_sizes);
     uint2 loop_bound_8 = uint2(4294967295u);
     bool loop_init_5 = true;
     while(true) {
         if (metal::all(loop_bound_8 == uint2(0u))) { break; }
         loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
         if (!loop_init_5) {
-            uint _e160 = start;
-            start = _e160 + TILE_LIST;
+            uint _e153 = start;
+            start = _e153 + TILE_LIST;
         }
         loop_init_5 = false;
-        uint _e128 = start;
-        if (_e128 < _e125.total) {
+        uint _e121 = start;
+        if (_e121 < _e118.total) {
         } else {
             break;
         }
         {
-            uint _e131 = start;
-            uint _e132 = tile_walk_fill(lid, _e125, _e131, bsh_nodes, tile_list, subtree_at, _buffer_sizes);
+            uint _e124 = start;
+            uint _e125 = tile_walk_fill(lid, _e118, _e124, bsh_nodes, tile_list, subtree_at, _buffer_sizes);
             j = 0u;
             uint2 loop_bound_9 = uint2(4294967295u);
             bool loop_init_6 = true;
@@ -1668,28 +1668,28 @@ kernel void main_(
                 if (metal::all(loop_bound_9 == uint2(0u))) { break; }
                 loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
                 if (!loop_init_6) {
-                    uint _e158 = j;
-                    j = _e158 + 1u;
+                    uint _e151 = j;
+                    j = _e151 + 1u;
                 }
                 loop_init_6 = false;
-                uint _e135 = j;
-                if (_e135 < _e132) {
+                uint _e128 = j;
+                if (_e128 < _e125) {
                 } else {
                     break;
                 }
                 {
-                    uint _e138 = j;
-                    uint b_10 = tile_list.inner[_e138];
+                    uint _e131 = j;
+                    uint b_10 = tile_list.inner[_e131];
                     if (!(!(has_2))) {
-                        BshNode _e147 = bsh_nodes[b_10];
-                        metal::float3 _e148 = r;
-                        bool _e149 = bsh_reaches(_e147, x_15, _e148, _e79);
-                        local_5 = !(_e149);
+                        BshNode _e140 = bsh_nodes[b_10];
+                        metal::float3 _e141 = r;
+                        bool _e142 = bsh_reaches(_e140, x_15, _e141, _e79);
+                        local_4 = !(_e142);
                     } else {
-                        local_5 = true;
+                        local_4 = true;
                     }
-                    bool _e152 = local_5;
-                    if (_e152) {
+                    bool _e145 = local_4;
+                    if (_e145) {
                         continue;
                     }
                     uint li_7 = bsh_nodes[b_10].light;
@@ -1705,48 +1705,48 @@ kernel void main_(
         }
         return;
     }
-    uint _e168 = picks.n;
-    float _e170 = reservoir_weight(_e168, K);
+    uint _e161 = picks.n;
+    float _e163 = reservoir_weight(_e161, K);
     uint2 loop_bound_10 = uint2(4294967295u);
     bool loop_init_7 = true;
     while(true) {
         if (metal::all(loop_bound_10 == uint2(0u))) { break; }
         loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
         if (!loop_init_7) {
-            uint _e198 = k;
-            k = _e198 + 1u;
+            uint _e191 = k;
+            k = _e191 + 1u;
         }
         loop_init_7 = false;
-        uint _e173 = k;
-        uint _e175 = picks.n;
-        if (_e173 < metal::min(_e175, K)) {
+        uint _e166 = k;
+        uint _e168 = picks.n;
+        if (_e166 < metal::min(_e168, K)) {
         } else {
             break;
         }
         {
-            uint _e179 = h;
-            uint _e180 = pcg_hash(_e179);
-            h = _e180;
-            uint _e181 = h;
-            float _e182 = xi_from_bits(_e181);
-            uint _e183 = h;
-            uint _e184 = pcg_hash(_e183);
-            h = _e184;
-            Shaded _e185 = t;
-            uint _e187 = k;
-            uint _e189 = picks.light.inner[_e187];
-            metal::float3 _e190 = n;
-            metal::float3 _e191 = r;
-            Material _e192 = m;
-            uint _e193 = h;
-            float _e194 = xi_from_bits(_e193);
-            Shaded _e195 = shade_pick(_e189, x_15, _e190, _e191, _e79, _e192, _e170, _e182, _e194, eps_4, slc_table, lights, rt2_3, r2_3, _buffer_sizes);
-            Shaded _e196 = add(_e185, _e195);
-            t = _e196;
+            uint _e172 = h;
+            uint _e173 = pcg_hash(_e172);
+            h = _e173;
+            uint _e174 = h;
+            float _e175 = xi_from_bits(_e174);
+            uint _e176 = h;
+            uint _e177 = pcg_hash(_e176);
+            h = _e177;
+            Shaded _e178 = t;
+            uint _e180 = k;
+            uint _e182 = picks.light.inner[_e180];
+            metal::float3 _e183 = n;
+            metal::float3 _e184 = r;
+            Material _e185 = m;
+            uint _e186 = h;
+            float _e187 = xi_from_bits(_e186);
+            Shaded _e188 = shade_pick(_e182, x_15, _e183, _e184, _e79, _e185, _e163, _e175, _e187, eps_4, slc_table, lights, rt2_3, r2_3, _buffer_sizes);
+            Shaded _e189 = add(_e178, _e188);
+            t = _e189;
         }
     }
     uint count = picks.n;
-    metal::float3 _e204 = t.e;
-    out_tex.write(metal::float4(_e204, static_cast<float>(count)), metal::uint2(texel_1));
+    metal::float3 _e197 = t.e;
+    out_tex.write(metal::float4(_e197, static_cast<float>(count)), metal::uint2(texel_1));
     return;
 }

@@ -329,28 +329,28 @@ float connection_cosine(
     metal::float3 ng,
     float r2_1
 ) {
+    bool local_5 = {};
     bool local_6 = {};
-    bool local_7 = {};
     metal::float3 v_5 = x_2 - y;
     float d2_7 = metal::dot(v_5, v_5);
     bool _e7 = slc_keep(r2_1, d2_7);
     if (!(!(_e7))) {
-        local_6 = !((d2_7 > 0.0));
+        local_5 = !((d2_7 > 0.0));
     } else {
-        local_6 = true;
+        local_5 = true;
     }
-    bool _e16 = local_6;
+    bool _e16 = local_5;
     if (_e16) {
         return 0.0;
     }
     metal::float3 w_9 = v_5 / metal::float3(metal::sqrt(d2_7));
     float cos_x_1 = -(metal::dot(n_1, w_9));
     if (!((cos_x_1 <= 0.0))) {
-        local_7 = metal::dot(ng, w_9) >= 0.0;
+        local_6 = metal::dot(ng, w_9) >= 0.0;
     } else {
-        local_7 = true;
+        local_6 = true;
     }
-    bool _e32 = local_7;
+    bool _e32 = local_6;
     if (_e32) {
         return 0.0;
     }
@@ -548,22 +548,22 @@ float cone_cos_of(
     float a_2,
     metal::float3 d
 ) {
+    bool local_7 = {};
     bool local_8 = {};
-    bool local_9 = {};
     float vd = metal::dot(v, d);
     float h2_ = d2_4 - (a_2 * a_2);
     if (!((h2_ <= 0.0))) {
         if (vd >= 0.0) {
-            local_9 = (vd * vd) >= h2_;
+            local_8 = (vd * vd) >= h2_;
         } else {
-            local_9 = false;
+            local_8 = false;
         }
-        bool _e19 = local_9;
-        local_8 = _e19;
+        bool _e19 = local_8;
+        local_7 = _e19;
     } else {
-        local_8 = true;
+        local_7 = true;
     }
-    bool _e21 = local_8;
+    bool _e21 = local_7;
     if (_e21) {
         return 1.0;
     }
@@ -646,15 +646,15 @@ float glossy_importance(
     metal::float3 r_4,
     metal::float4 lobe_5
 ) {
-    bool local_10 = {};
+    bool local_9 = {};
     float _e10 = emitter_importance(center_5, radius_5, phi_2, axis_3, cos_o_3, cos_e_2, p_5);
     float _e11 = cone_cos_toward(center_5, radius_5, p_5, n_3);
     if (!((_e10 <= 0.0))) {
-        local_10 = _e11 <= 0.0;
+        local_9 = _e11 <= 0.0;
     } else {
-        local_10 = true;
+        local_9 = true;
     }
-    bool _e20 = local_10;
+    bool _e20 = local_9;
     if (_e20) {
         return 0.0;
     }
@@ -702,20 +702,20 @@ float cone_weight(
 bool finite3_(
     metal::float3 v_1
 ) {
+    bool local_10 = {};
     bool local_11 = {};
-    bool local_12 = {};
     if (metal::abs(v_1.x) <= F32_MAX) {
-        local_11 = metal::abs(v_1.y) <= F32_MAX;
+        local_10 = metal::abs(v_1.y) <= F32_MAX;
+    } else {
+        local_10 = false;
+    }
+    bool _e12 = local_10;
+    if (_e12) {
+        local_11 = metal::abs(v_1.z) <= F32_MAX;
     } else {
         local_11 = false;
     }
-    bool _e12 = local_11;
-    if (_e12) {
-        local_12 = metal::abs(v_1.z) <= F32_MAX;
-    } else {
-        local_12 = false;
-    }
-    bool _e20 = local_12;
+    bool _e20 = local_11;
     return _e20;
 }
 
@@ -768,9 +768,9 @@ float ray_triangle(
     float t_min,
     float t_max_1
 ) {
+    bool local_12 = {};
     bool local_13 = {};
     bool local_14 = {};
-    bool local_15 = {};
     metal::float3 e1_ = b_2 - a_3;
     metal::float3 e2_ = c_2 - a_3;
     metal::float3 p_9 = metal::cross(d_3, e2_);
@@ -782,32 +782,32 @@ float ray_triangle(
     metal::float3 s_9 = o_1 - a_3;
     float u_3 = metal::dot(s_9, p_9) * inv;
     if (!((u_3 < 0.0))) {
-        local_13 = u_3 > 1.0;
+        local_12 = u_3 > 1.0;
     } else {
-        local_13 = true;
+        local_12 = true;
     }
-    bool _e28 = local_13;
+    bool _e28 = local_12;
     if (_e28) {
         return -1.0;
     }
     metal::float3 q_1 = metal::cross(s_9, e1_);
     float v_10 = metal::dot(d_3, q_1) * inv;
     if (!((v_10 < 0.0))) {
-        local_14 = (u_3 + v_10) > 1.0;
+        local_13 = (u_3 + v_10) > 1.0;
     } else {
-        local_14 = true;
+        local_13 = true;
     }
-    bool _e42 = local_14;
+    bool _e42 = local_13;
     if (_e42) {
         return -1.0;
     }
     float t_7 = metal::dot(e2_, q_1) * inv;
     if (t_7 > t_min) {
-        local_15 = t_7 < t_max_1;
+        local_14 = t_7 < t_max_1;
     } else {
-        local_15 = false;
+        local_14 = false;
     }
-    bool _e51 = local_15;
+    bool _e51 = local_14;
     if (_e51) {
         return t_7;
     }
@@ -995,19 +995,19 @@ bool bsh_reaches(
     metal::float3 r_7,
     metal::float4 rl_3
 ) {
+    bool local_15 = {};
     bool local_16 = {};
-    bool local_17 = {};
     bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_5);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
         bool _e20 = sphere_contains_point(node_3.center, node_3.radius * (rl_3.w * 1.0001), x_5);
-        local_16 = !(_e20);
+        local_15 = !(_e20);
     } else {
-        local_16 = true;
+        local_15 = true;
     }
-    bool _e23 = local_16;
+    bool _e23 = local_15;
     if (_e23) {
         return false;
     }
@@ -1028,11 +1028,11 @@ bool bsh_reaches(
     float s_c = _e50 * 1.001;
     float reach = node_3.extent + (metal::sqrt(s_c) * _e25);
     if (d2_9 <= ((node_3.radius * node_3.radius) * s_c)) {
-        local_17 = d2_9 <= (reach * reach);
+        local_16 = d2_9 <= (reach * reach);
     } else {
-        local_17 = false;
+        local_16 = false;
     }
-    bool _e67 = local_17;
+    bool _e67 = local_16;
     return _e67;
 }
 
@@ -1055,7 +1055,7 @@ uint bsh_subtree(
 ) {
     uint i_2 = {};
     uint level = 0u;
-    bool local_18 = {};
+    bool local_17 = {};
     uint _e3 = bsh_first(nodes_3, bsh_nodes, _buffer_sizes);
     i_2 = _e3;
     uint2 loop_bound_2 = uint2(4294967295u);
@@ -1065,11 +1065,11 @@ uint bsh_subtree(
         uint _e7 = level;
         if (_e7 < depth) {
             uint _e11 = i_2;
-            local_18 = _e11 != BSH_NONE;
+            local_17 = _e11 != BSH_NONE;
         } else {
-            local_18 = false;
+            local_17 = false;
         }
-        bool _e15 = local_18;
+        bool _e15 = local_17;
         if (_e15) {
         } else {
             break;
@@ -1169,8 +1169,8 @@ Connection connect_record(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Connection c_3 = {};
+    bool local_18 = {};
     bool local_19 = {};
-    bool local_20 = {};
     c_3.e = metal::float3(0.0);
     metal::float3 _e16 = light_point(l_2, u1_1, u2_1);
     c_3.y = _e16;
@@ -1182,16 +1182,16 @@ Connection connect_record(
         if (trace_1) {
             metal::float3 _e33 = c_3.y;
             bool _e34 = occluded(x_6 + (ng_1 * eps), _e33, geo_nodes, geo_tris, _buffer_sizes);
-            local_20 = _e34;
+            local_19 = _e34;
         } else {
-            local_20 = false;
+            local_19 = false;
         }
-        bool _e36 = local_20;
-        local_19 = _e36;
+        bool _e36 = local_19;
+        local_18 = _e36;
     } else {
-        local_19 = true;
+        local_18 = true;
     }
-    bool _e38 = local_19;
+    bool _e38 = local_18;
     if (_e38) {
         Connection _e39 = c_3;
         return _e39;
@@ -1338,14 +1338,14 @@ metal::float4 unproject_pixel(
     float height,
     float depth_1
 ) {
+    bool local_20 = {};
     bool local_21 = {};
-    bool local_22 = {};
     if (depth_1 > 0.0) {
-        local_21 = depth_1 < 1.0;
+        local_20 = depth_1 < 1.0;
     } else {
-        local_21 = false;
+        local_20 = false;
     }
-    bool _e16 = local_21;
+    bool _e16 = local_20;
     if (!(_e16)) {
         return metal::float4(0.0, 0.0, 0.0, 0.0);
     }
@@ -1355,11 +1355,11 @@ metal::float4 unproject_pixel(
     metal::float3 q_2 = metal::float3(p_10.x / p_10.w, p_10.y / p_10.w, p_10.z / p_10.w);
     if (metal::abs(p_10.w) > 0.0) {
         bool _e59 = finite3_(q_2);
-        local_22 = _e59;
+        local_21 = _e59;
     } else {
-        local_22 = false;
+        local_21 = false;
     }
-    bool _e61 = local_22;
+    bool _e61 = local_21;
     if (_e61) {
         return metal::float4(q_2.x, q_2.y, q_2.z, 1.0);
     }
@@ -1471,9 +1471,9 @@ uint tile_subtree(
 ) {
     uint p_8 = {};
     uint b_5 = {};
+    bool local_22 = {};
     bool local_23 = {};
     bool local_24 = {};
-    bool local_25 = {};
     uint _e8 = bsh_subtree(BSH, s_4, BSH_TILE_DEPTH, bsh_nodes, _buffer_sizes);
     if (_e8 == BSH_NONE) {
         return 0u;
@@ -1498,16 +1498,16 @@ uint tile_subtree(
         if (_e23 != end_1) {
             if (!(!(list))) {
                 uint _e31 = p_8;
-                local_24 = _e31 < to;
+                local_23 = _e31 < to;
             } else {
-                local_24 = true;
+                local_23 = true;
             }
-            bool _e34 = local_24;
-            local_23 = _e34;
+            bool _e34 = local_23;
+            local_22 = _e34;
         } else {
-            local_23 = false;
+            local_22 = false;
         }
-        bool _e36 = local_23;
+        bool _e36 = local_22;
         if (_e36) {
         } else {
             break;
@@ -1515,11 +1515,11 @@ uint tile_subtree(
         {
             if (list) {
                 uint _e39 = p_8;
-                local_25 = _e39 >= start_2;
+                local_24 = _e39 >= start_2;
             } else {
-                local_25 = false;
+                local_24 = false;
             }
-            bool _e42 = local_25;
+            bool _e42 = local_24;
             if (_e42) {
                 uint _e44 = p_8;
                 uint _e47 = b_5;
@@ -1548,20 +1548,27 @@ TileWalk tile_walk_begin(
     threadgroup uint& tile_total,
     constant _mslBufferSizes& _buffer_sizes
 ) {
+    bool local_25 = {};
     TileWalk t_2 = {};
     uint s_5 = {};
     uint sum_1 = 0u;
     uint s_6 = 0u;
-    uint _e8 = metal::atomic_fetch_max_explicit(&tile_scale, has_1 ? as_type<uint>(w_6) : 0u, metal::memory_order_relaxed);
-    WorkgroupBox _e9 = workgroup_box(li_6, x_10, has_1, wg_lo, wg_hi, wg_box);
+    if (has_1) {
+        local_25 = w_6 >= 0.0;
+    } else {
+        local_25 = false;
+    }
+    bool _e12 = local_25;
+    uint _e14 = metal::atomic_fetch_max_explicit(&tile_scale, _e12 ? as_type<uint>(w_6) : 0u, metal::memory_order_relaxed);
+    WorkgroupBox _e15 = workgroup_box(li_6, x_10, has_1, wg_lo, wg_hi, wg_box);
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
     uint unnamed_1 = metal::atomic_load_explicit(&tile_scale, metal::memory_order_relaxed);
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-    t_2 = TileWalk {_e9.lo, _e9.hi, as_type<float>(unnamed_1), 0u};
-    bool _e18 = box_is_empty(_e9);
-    if (_e18) {
-        TileWalk _e19 = t_2;
-        return _e19;
+    t_2 = TileWalk {_e15.lo, _e15.hi, as_type<float>(unnamed_1), 0u};
+    bool _e24 = box_is_empty(_e15);
+    if (_e24) {
+        TileWalk _e25 = t_2;
+        return _e25;
     }
     s_5 = li_6;
     uint2 loop_bound_7 = uint2(4294967295u);
@@ -1570,21 +1577,21 @@ TileWalk tile_walk_begin(
         if (metal::all(loop_bound_7 == uint2(0u))) { break; }
         loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
         if (!loop_init_4) {
-            uint _e34 = s_5;
-            s_5 = _e34 + TILE_THREADS;
+            uint _e40 = s_5;
+            s_5 = _e40 + TILE_THREADS;
         }
         loop_init_4 = false;
-        uint _e21 = s_5;
-        if (_e21 < BSH_TILE_SUBTREES) {
+        uint _e27 = s_5;
+        if (_e27 < BSH_TILE_SUBTREES) {
         } else {
             break;
         }
         {
-            uint _e25 = s_5;
-            uint _e27 = s_5;
-            TileWalk _e28 = t_2;
-            uint _e33 = tile_subtree(_e27, _e28, false, 0u, 0u, 0u, bsh_nodes, tile_list, _buffer_sizes);
-            subtree_at.inner[_e25] = _e33;
+            uint _e31 = s_5;
+            uint _e33 = s_5;
+            TileWalk _e34 = t_2;
+            uint _e39 = tile_subtree(_e33, _e34, false, 0u, 0u, 0u, bsh_nodes, tile_list, _buffer_sizes);
+            subtree_at.inner[_e31] = _e39;
         }
     }
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
@@ -1595,34 +1602,34 @@ TileWalk tile_walk_begin(
             if (metal::all(loop_bound_8 == uint2(0u))) { break; }
             loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
             if (!loop_init_5) {
-                uint _e57 = s_6;
-                s_6 = _e57 + 1u;
+                uint _e63 = s_6;
+                s_6 = _e63 + 1u;
             }
             loop_init_5 = false;
-            uint _e43 = s_6;
-            if (_e43 < BSH_TILE_SUBTREES) {
+            uint _e49 = s_6;
+            if (_e49 < BSH_TILE_SUBTREES) {
             } else {
                 break;
             }
             {
-                uint _e47 = s_6;
-                uint c_8 = subtree_at.inner[_e47];
-                uint _e51 = s_6;
-                uint _e53 = sum_1;
-                subtree_at.inner[_e51] = _e53;
-                uint _e54 = sum_1;
-                sum_1 = _e54 + c_8;
+                uint _e53 = s_6;
+                uint c_8 = subtree_at.inner[_e53];
+                uint _e57 = s_6;
+                uint _e59 = sum_1;
+                subtree_at.inner[_e57] = _e59;
+                uint _e60 = sum_1;
+                sum_1 = _e60 + c_8;
             }
         }
-        uint _e60 = sum_1;
-        tile_total = _e60;
+        uint _e66 = sum_1;
+        tile_total = _e66;
     }
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
     uint unnamed_2 = tile_total;
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
     t_2.total = unnamed_2;
-    TileWalk _e64 = t_2;
-    return _e64;
+    TileWalk _e70 = t_2;
+    return _e70;
 }
 
 uint tile_walk_fill(
@@ -1873,10 +1880,9 @@ kernel void main_(
     uint h = {};
     Shaded t = Shaded {metal::float3(0.0), metal::float3(0.0), metal::float3(0.0)};
     WeightedPicks picks = {};
-    bool local_4 = {};
     uint start = 0u;
     uint j = {};
-    bool local_5 = {};
+    bool local_4 = {};
     type_24 keys = {};
     type_25 held = {};
     uint k = 0u;
@@ -1941,31 +1947,25 @@ kernel void main_(
     h = _e103;
     WeightedPicks _e113 = weighted_picks(_e102);
     picks = _e113;
-    if (has_2) {
-        local_4 = _e79.w >= 0.0;
-    } else {
-        local_4 = false;
-    }
-    bool _e122 = local_4;
-    TileWalk _e123 = tile_walk_begin(lid, x_15, _e79.w, _e122, bsh_nodes, wg_lo, wg_hi, wg_box, tile_list, subtree_at, tile_scale, tile_total, _buffer_sizes);
+    TileWalk _e116 = tile_walk_begin(lid, x_15, _e79.w, has_2, bsh_nodes, wg_lo, wg_hi, wg_box, tile_list, subtree_at, tile_scale, tile_total, _buffer_sizes);
     uint2 loop_bound_12 = uint2(4294967295u);
     bool loop_init_9 = true;
     while(true) {
         if (metal::all(loop_bound_12 == uint2(0u))) { break; }
         loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
         if (!loop_init_9) {
-            uint _e162 = start;
-            start = _e162 + TILE_LIST;
+            uint _e155 = start;
+            start = _e155 + TILE_LIST;
         }
         loop_init_9 = false;
-        uint _e126 = start;
-        if (_e126 < _e123.total) {
+        uint _e119 = start;
+        if (_e119 < _e116.total) {
         } else {
             break;
         }
         {
-            uint _e129 = start;
-            uint _e130 = tile_walk_fill(lid, _e123, _e129, bsh_nodes, tile_list, subtree_at, _buffer_sizes);
+            uint _e122 = start;
+            uint _e123 = tile_walk_fill(lid, _e116, _e122, bsh_nodes, tile_list, subtree_at, _buffer_sizes);
             j = 0u;
             uint2 loop_bound_13 = uint2(4294967295u);
             bool loop_init_10 = true;
@@ -1973,36 +1973,36 @@ kernel void main_(
                 if (metal::all(loop_bound_13 == uint2(0u))) { break; }
                 loop_bound_13 -= uint2(loop_bound_13.y == 0u, 1u);
                 if (!loop_init_10) {
-                    uint _e160 = j;
-                    j = _e160 + 1u;
+                    uint _e153 = j;
+                    j = _e153 + 1u;
                 }
                 loop_init_10 = false;
-                uint _e133 = j;
-                if (_e133 < _e130) {
+                uint _e126 = j;
+                if (_e126 < _e123) {
                 } else {
                     break;
                 }
                 {
-                    uint _e136 = j;
-                    uint b_7 = tile_list.inner[_e136];
+                    uint _e129 = j;
+                    uint b_7 = tile_list.inner[_e129];
                     if (!(!(has_2))) {
-                        BshNode _e145 = bsh_nodes[b_7];
-                        metal::float3 _e146 = r;
-                        bool _e147 = bsh_reaches(_e145, x_15, _e146, _e79);
-                        local_5 = !(_e147);
+                        BshNode _e138 = bsh_nodes[b_7];
+                        metal::float3 _e139 = r;
+                        bool _e140 = bsh_reaches(_e138, x_15, _e139, _e79);
+                        local_4 = !(_e140);
                     } else {
-                        local_5 = true;
+                        local_4 = true;
                     }
-                    bool _e150 = local_5;
-                    if (_e150) {
+                    bool _e143 = local_4;
+                    if (_e143) {
                         continue;
                     }
                     uint li_10 = bsh_nodes[b_7].light;
-                    metal::float3 _e155 = n;
-                    metal::float3 _e156 = r;
-                    metal::float4 _e157 = lobe;
-                    float _e158 = light_weight(li_10, x_15, _e155, _e156, _e157, _e79, rt2_5, light_cones, _buffer_sizes);
-                    weighted_offer(picks, li_10, _e158);
+                    metal::float3 _e148 = n;
+                    metal::float3 _e149 = r;
+                    metal::float4 _e150 = lobe;
+                    float _e151 = light_weight(li_10, x_15, _e148, _e149, _e150, _e79, rt2_5, light_cones, _buffer_sizes);
+                    weighted_offer(picks, li_10, _e151);
                 }
             }
             metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
@@ -2014,113 +2014,113 @@ kernel void main_(
         }
         return;
     }
-    float _e170 = picks.w_sum;
-    if (_e170 > 0.0) {
+    float _e163 = picks.w_sum;
+    if (_e163 > 0.0) {
         uint2 loop_bound_14 = uint2(4294967295u);
         bool loop_init_11 = true;
         while(true) {
             if (metal::all(loop_bound_14 == uint2(0u))) { break; }
             loop_bound_14 -= uint2(loop_bound_14.y == 0u, 1u);
             if (!loop_init_11) {
-                uint _e206 = k;
-                k = _e206 + 1u;
+                uint _e199 = k;
+                k = _e199 + 1u;
             }
             loop_init_11 = false;
-            uint _e177 = k;
-            if (_e177 < K) {
+            uint _e170 = k;
+            if (_e170 < K) {
             } else {
                 break;
             }
             {
-                uint _e181 = k;
-                uint _e186 = k;
-                uint _e188 = picks.light.inner[_e186];
-                uint _e191 = lights[_e188].kind;
-                uint own = (_e191 == LIGHT_TRIANGLE) ? (_e181 + 1u) : 0u;
+                uint _e174 = k;
+                uint _e179 = k;
+                uint _e181 = picks.light.inner[_e179];
+                uint _e184 = lights[_e181].kind;
+                uint own = (_e184 == LIGHT_TRIANGLE) ? (_e174 + 1u) : 0u;
+                uint _e188 = k;
+                uint _e191 = k;
+                uint _e193 = picks.light.inner[_e191];
+                keys.inner[_e188] = metal::uint2(_e193, own);
                 uint _e195 = k;
-                uint _e198 = k;
-                uint _e200 = picks.light.inner[_e198];
-                keys.inner[_e195] = metal::uint2(_e200, own);
-                uint _e202 = k;
-                held.inner[_e202] = true;
+                held.inner[_e195] = true;
             }
         }
-        type_24 _e208 = keys;
-        type_25 _e209 = held;
-        type_14 _e210 = first_holders(_e208, _e209);
+        type_24 _e201 = keys;
+        type_25 _e202 = held;
+        type_14 _e203 = first_holders(_e201, _e202);
         uint2 loop_bound_15 = uint2(4294967295u);
         bool loop_init_12 = true;
         while(true) {
             if (metal::all(loop_bound_15 == uint2(0u))) { break; }
             loop_bound_15 -= uint2(loop_bound_15.y == 0u, 1u);
             if (!loop_init_12) {
-                uint _e268 = k_1;
-                k_1 = _e268 + 1u;
+                uint _e261 = k_1;
+                k_1 = _e261 + 1u;
             }
             loop_init_12 = false;
-            uint _e213 = k_1;
-            if (_e213 < K) {
+            uint _e206 = k_1;
+            if (_e206 < K) {
             } else {
                 break;
             }
             {
-                uint _e216 = h;
-                uint _e217 = pcg_hash(_e216);
-                h = _e217;
-                uint _e218 = h;
-                float _e219 = xi_from_bits(_e218);
-                uint _e220 = h;
-                uint _e221 = pcg_hash(_e220);
-                h = _e221;
-                uint _e222 = h;
-                float _e223 = xi_from_bits(_e222);
-                uint _e225 = k_1;
-                uint li_11 = picks.light.inner[_e225];
+                uint _e209 = h;
+                uint _e210 = pcg_hash(_e209);
+                h = _e210;
+                uint _e211 = h;
+                float _e212 = xi_from_bits(_e211);
+                uint _e213 = h;
+                uint _e214 = pcg_hash(_e213);
+                h = _e214;
+                uint _e215 = h;
+                float _e216 = xi_from_bits(_e215);
+                uint _e218 = k_1;
+                uint li_11 = picks.light.inner[_e218];
                 copies = 0u;
-                uint _e230 = k_1;
-                j_1 = _e230;
+                uint _e223 = k_1;
+                j_1 = _e223;
                 uint2 loop_bound_16 = uint2(4294967295u);
                 bool loop_init_13 = true;
                 while(true) {
                     if (metal::all(loop_bound_16 == uint2(0u))) { break; }
                     loop_bound_16 -= uint2(loop_bound_16.y == 0u, 1u);
                     if (!loop_init_13) {
-                        uint _e245 = j_1;
-                        j_1 = _e245 + 1u;
+                        uint _e238 = j_1;
+                        j_1 = _e238 + 1u;
                     }
                     loop_init_13 = false;
-                    uint _e232 = j_1;
-                    if (_e232 < K) {
+                    uint _e225 = j_1;
+                    if (_e225 < K) {
                     } else {
                         break;
                     }
                     {
-                        uint _e235 = copies;
-                        uint _e238 = j_1;
-                        uint _e240 = k_1;
-                        copies = _e235 + ((_e210.inner[_e238] == _e240) ? 1u : 0u);
+                        uint _e228 = copies;
+                        uint _e231 = j_1;
+                        uint _e233 = k_1;
+                        copies = _e228 + ((_e203.inner[_e231] == _e233) ? 1u : 0u);
                     }
                 }
-                uint _e247 = copies;
-                if (_e247 > 0u) {
-                    Shaded _e250 = t;
-                    metal::float3 _e251 = n;
-                    metal::float3 _e252 = r;
-                    Material _e253 = m;
-                    float _e255 = picks.w_sum;
-                    uint _e257 = k_1;
-                    float _e259 = picks.w.inner[_e257];
-                    float _e261 = weighted_pick_weight(_e255, _e259, K);
-                    uint _e262 = copies;
-                    Shaded _e265 = shade_pick(li_11, x_15, _e251, _e252, _e79, _e253, _e261 * static_cast<float>(_e262), _e219, _e223, eps_4, geo_nodes, geo_tris, lights, rt2_5, r2_4, _buffer_sizes);
-                    Shaded _e266 = add(_e250, _e265);
-                    t = _e266;
+                uint _e240 = copies;
+                if (_e240 > 0u) {
+                    Shaded _e243 = t;
+                    metal::float3 _e244 = n;
+                    metal::float3 _e245 = r;
+                    Material _e246 = m;
+                    float _e248 = picks.w_sum;
+                    uint _e250 = k_1;
+                    float _e252 = picks.w.inner[_e250];
+                    float _e254 = weighted_pick_weight(_e248, _e252, K);
+                    uint _e255 = copies;
+                    Shaded _e258 = shade_pick(li_11, x_15, _e244, _e245, _e79, _e246, _e254 * static_cast<float>(_e255), _e212, _e216, eps_4, geo_nodes, geo_tris, lights, rt2_5, r2_4, _buffer_sizes);
+                    Shaded _e259 = add(_e243, _e258);
+                    t = _e259;
                 }
             }
         }
     }
     uint count = picks.n;
-    metal::float3 _e274 = t.e;
-    out_tex.write(metal::float4(_e274, static_cast<float>(count)), metal::uint2(texel_1));
+    metal::float3 _e267 = t.e;
+    out_tex.write(metal::float4(_e267, static_cast<float>(count)), metal::uint2(texel_1));
     return;
 }

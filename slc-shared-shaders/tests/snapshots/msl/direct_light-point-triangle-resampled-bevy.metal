@@ -324,28 +324,28 @@ float connection_cosine(
     metal::float3 ng,
     float r2_1
 ) {
+    bool local_7 = {};
     bool local_8 = {};
-    bool local_9 = {};
     metal::float3 v_7 = x_2 - y;
     float d2_6 = metal::dot(v_7, v_7);
     bool _e7 = slc_keep(r2_1, d2_6);
     if (!(!(_e7))) {
-        local_8 = !((d2_6 > 0.0));
+        local_7 = !((d2_6 > 0.0));
     } else {
-        local_8 = true;
+        local_7 = true;
     }
-    bool _e16 = local_8;
+    bool _e16 = local_7;
     if (_e16) {
         return 0.0;
     }
     metal::float3 w_10 = v_7 / metal::float3(metal::sqrt(d2_6));
     float cos_x_1 = -(metal::dot(n_1, w_10));
     if (!((cos_x_1 <= 0.0))) {
-        local_9 = metal::dot(ng, w_10) >= 0.0;
+        local_8 = metal::dot(ng, w_10) >= 0.0;
     } else {
-        local_9 = true;
+        local_8 = true;
     }
-    bool _e32 = local_9;
+    bool _e32 = local_8;
     if (_e32) {
         return 0.0;
     }
@@ -483,13 +483,13 @@ float smith_visibility(
     float n_v,
     float alpha_2
 ) {
-    bool local_10 = {};
+    bool local_9 = {};
     if (!((n_l <= 0.0))) {
-        local_10 = n_v <= 0.0;
+        local_9 = n_v <= 0.0;
     } else {
-        local_10 = true;
+        local_9 = true;
     }
-    bool _e11 = local_10;
+    bool _e11 = local_9;
     if (_e11) {
         return 0.0;
     }
@@ -525,20 +525,20 @@ bool has_specular(
     metal::float3 f0_d_1,
     float f90_d_1
 ) {
+    bool local_10 = {};
     bool local_11 = {};
-    bool local_12 = {};
     if (!((metallic_1 > 0.0))) {
-        local_11 = f90_d_1 > 0.0;
+        local_10 = f90_d_1 > 0.0;
+    } else {
+        local_10 = true;
+    }
+    bool _e11 = local_10;
+    if (!(_e11)) {
+        local_11 = metal::max(metal::max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0.0;
     } else {
         local_11 = true;
     }
-    bool _e11 = local_11;
-    if (!(_e11)) {
-        local_12 = metal::max(metal::max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0.0;
-    } else {
-        local_12 = true;
-    }
-    bool _e23 = local_12;
+    bool _e23 = local_11;
     return _e23;
 }
 
@@ -556,16 +556,16 @@ metal::float4 receiver_lobe(
     float alpha_3,
     float n_v_1
 ) {
-    bool local_13 = {};
+    bool local_12 = {};
     metal::float3 _e10 = fresnel_schlick(f0_d_2, f90_d_2, n_v_1);
     float _e16 = channel_mean(((metal::float3(1.0, 1.0, 1.0) - _e10) * base_1) * (1.0 - metallic_2));
     if (!((n_v_1 <= 0.0))) {
         bool _e22 = has_specular(metallic_2, f0_d_2, f90_d_2);
-        local_13 = !(_e22);
+        local_12 = !(_e22);
     } else {
-        local_13 = true;
+        local_12 = true;
     }
-    bool _e25 = local_13;
+    bool _e25 = local_12;
     if (_e25) {
         return metal::float4(_e16, 0.0, alpha_3, n_v_1);
     }
@@ -680,22 +680,22 @@ float cone_cos_of(
     float a_3,
     metal::float3 d
 ) {
+    bool local_13 = {};
     bool local_14 = {};
-    bool local_15 = {};
     float vd = metal::dot(v_2, d);
     float h2_ = d2_4 - (a_3 * a_3);
     if (!((h2_ <= 0.0))) {
         if (vd >= 0.0) {
-            local_15 = (vd * vd) >= h2_;
+            local_14 = (vd * vd) >= h2_;
         } else {
-            local_15 = false;
+            local_14 = false;
         }
-        bool _e19 = local_15;
-        local_14 = _e19;
+        bool _e19 = local_14;
+        local_13 = _e19;
     } else {
-        local_14 = true;
+        local_13 = true;
     }
-    bool _e21 = local_14;
+    bool _e21 = local_13;
     if (_e21) {
         return 1.0;
     }
@@ -782,15 +782,15 @@ metal::float3 triangle_normal(
     metal::float3 b_3,
     metal::float3 c_6
 ) {
-    bool local_16 = {};
+    bool local_15 = {};
     metal::float3 n_10 = metal::cross(b_3 - a_4, c_6 - a_4);
     float l2_ = metal::dot(n_10, n_10);
     if (!(!((l2_ > 0.0)))) {
-        local_16 = !((l2_ < 300000000000000000000000000000000000000.0));
+        local_15 = !((l2_ < 300000000000000000000000000000000000000.0));
     } else {
-        local_16 = true;
+        local_15 = true;
     }
-    bool _e17 = local_16;
+    bool _e17 = local_15;
     if (_e17) {
         return metal::float3(0.0, 0.0, 0.0);
     }
@@ -806,9 +806,9 @@ float ray_triangle(
     float t_min,
     float t_max_1
 ) {
+    bool local_16 = {};
     bool local_17 = {};
     bool local_18 = {};
-    bool local_19 = {};
     metal::float3 e1_ = b_4 - a_5;
     metal::float3 e2_ = c_7 - a_5;
     metal::float3 p_4 = metal::cross(d_3, e2_);
@@ -820,32 +820,32 @@ float ray_triangle(
     metal::float3 s_10 = o_1 - a_5;
     float u_3 = metal::dot(s_10, p_4) * inv;
     if (!((u_3 < 0.0))) {
-        local_17 = u_3 > 1.0;
+        local_16 = u_3 > 1.0;
     } else {
-        local_17 = true;
+        local_16 = true;
     }
-    bool _e28 = local_17;
+    bool _e28 = local_16;
     if (_e28) {
         return -1.0;
     }
     metal::float3 q_2 = metal::cross(s_10, e1_);
     float v_9 = metal::dot(d_3, q_2) * inv;
     if (!((v_9 < 0.0))) {
-        local_18 = (u_3 + v_9) > 1.0;
+        local_17 = (u_3 + v_9) > 1.0;
     } else {
-        local_18 = true;
+        local_17 = true;
     }
-    bool _e42 = local_18;
+    bool _e42 = local_17;
     if (_e42) {
         return -1.0;
     }
     float t_6 = metal::dot(e2_, q_2) * inv;
     if (t_6 > t_min) {
-        local_19 = t_6 < t_max_1;
+        local_18 = t_6 < t_max_1;
     } else {
-        local_19 = false;
+        local_18 = false;
     }
-    bool _e51 = local_19;
+    bool _e51 = local_18;
     if (_e51) {
         return t_6;
     }
@@ -1038,19 +1038,19 @@ bool bsh_reaches(
     metal::float3 r_7,
     metal::float4 rl_3
 ) {
+    bool local_19 = {};
     bool local_20 = {};
-    bool local_21 = {};
     bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_4);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
         bool _e20 = sphere_contains_point(node_3.center, node_3.radius * (rl_3.w * 1.0001), x_4);
-        local_20 = !(_e20);
+        local_19 = !(_e20);
     } else {
-        local_20 = true;
+        local_19 = true;
     }
-    bool _e23 = local_20;
+    bool _e23 = local_19;
     if (_e23) {
         return false;
     }
@@ -1071,11 +1071,11 @@ bool bsh_reaches(
     float s_c = _e50 * 1.001;
     float reach = node_3.extent + (metal::sqrt(s_c) * _e25);
     if (d2_7 <= ((node_3.radius * node_3.radius) * s_c)) {
-        local_21 = d2_7 <= (reach * reach);
+        local_20 = d2_7 <= (reach * reach);
     } else {
-        local_21 = false;
+        local_20 = false;
     }
-    bool _e67 = local_21;
+    bool _e67 = local_20;
     return _e67;
 }
 
@@ -1098,7 +1098,7 @@ uint bsh_subtree(
 ) {
     uint i_2 = {};
     uint level = 0u;
-    bool local_22 = {};
+    bool local_21 = {};
     uint _e3 = bsh_first(nodes_3, bsh_nodes, _buffer_sizes);
     i_2 = _e3;
     uint2 loop_bound_2 = uint2(4294967295u);
@@ -1108,11 +1108,11 @@ uint bsh_subtree(
         uint _e7 = level;
         if (_e7 < depth) {
             uint _e11 = i_2;
-            local_22 = _e11 != BSH_NONE;
+            local_21 = _e11 != BSH_NONE;
         } else {
-            local_22 = false;
+            local_21 = false;
         }
-        bool _e15 = local_22;
+        bool _e15 = local_21;
         if (_e15) {
         } else {
             break;
@@ -1212,8 +1212,8 @@ Connection connect_record(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Connection c_8 = {};
+    bool local_22 = {};
     bool local_23 = {};
-    bool local_24 = {};
     c_8.e = metal::float3(0.0);
     metal::float3 _e16 = light_point(l_3, u1_2, u2_2);
     c_8.y = _e16;
@@ -1225,16 +1225,16 @@ Connection connect_record(
         if (trace_1) {
             metal::float3 _e33 = c_8.y;
             bool _e34 = occluded(x_5 + (ng_1 * eps), _e33, geo_nodes, geo_tris, _buffer_sizes);
-            local_24 = _e34;
+            local_23 = _e34;
         } else {
-            local_24 = false;
+            local_23 = false;
         }
-        bool _e36 = local_24;
-        local_23 = _e36;
+        bool _e36 = local_23;
+        local_22 = _e36;
     } else {
-        local_23 = true;
+        local_22 = true;
     }
-    bool _e38 = local_23;
+    bool _e38 = local_22;
     if (_e38) {
         Connection _e39 = c_8;
         return _e39;
@@ -1380,9 +1380,9 @@ uint tile_subtree(
 ) {
     uint p_3 = {};
     uint b_7 = {};
+    bool local_24 = {};
     bool local_25 = {};
     bool local_26 = {};
-    bool local_27 = {};
     uint _e8 = bsh_subtree(BSH, s_3, BSH_TILE_DEPTH, bsh_nodes, _buffer_sizes);
     if (_e8 == BSH_NONE) {
         return 0u;
@@ -1407,16 +1407,16 @@ uint tile_subtree(
         if (_e23 != end_1) {
             if (!(!(list))) {
                 uint _e31 = p_3;
-                local_26 = _e31 < to;
+                local_25 = _e31 < to;
             } else {
-                local_26 = true;
+                local_25 = true;
             }
-            bool _e34 = local_26;
-            local_25 = _e34;
+            bool _e34 = local_25;
+            local_24 = _e34;
         } else {
-            local_25 = false;
+            local_24 = false;
         }
-        bool _e36 = local_25;
+        bool _e36 = local_24;
         if (_e36) {
         } else {
             break;
@@ -1424,11 +1424,11 @@ uint tile_subtree(
         {
             if (list) {
                 uint _e39 = p_3;
-                local_27 = _e39 >= start_2;
+                local_26 = _e39 >= start_2;
             } else {
-                local_27 = false;
+                local_26 = false;
             }
-            bool _e42 = local_27;
+            bool _e42 = local_26;
             if (_e42) {
                 uint _e44 = p_3;
                 uint _e47 = b_7;
@@ -1457,20 +1457,27 @@ TileWalk tile_walk_begin(
     threadgroup uint& tile_total,
     constant _mslBufferSizes& _buffer_sizes
 ) {
+    bool local_27 = {};
     TileWalk t_2 = {};
     uint s_4 = {};
     uint sum_1 = 0u;
     uint s_5 = 0u;
-    uint _e8 = metal::atomic_fetch_max_explicit(&tile_scale, has_1 ? as_type<uint>(w_6) : 0u, metal::memory_order_relaxed);
-    WorkgroupBox _e9 = workgroup_box(li_4, x_8, has_1, wg_lo, wg_hi, wg_box);
+    if (has_1) {
+        local_27 = w_6 >= 0.0;
+    } else {
+        local_27 = false;
+    }
+    bool _e12 = local_27;
+    uint _e14 = metal::atomic_fetch_max_explicit(&tile_scale, _e12 ? as_type<uint>(w_6) : 0u, metal::memory_order_relaxed);
+    WorkgroupBox _e15 = workgroup_box(li_4, x_8, has_1, wg_lo, wg_hi, wg_box);
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
     uint unnamed_1 = metal::atomic_load_explicit(&tile_scale, metal::memory_order_relaxed);
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-    t_2 = TileWalk {_e9.lo, _e9.hi, as_type<float>(unnamed_1), 0u};
-    bool _e18 = box_is_empty(_e9);
-    if (_e18) {
-        TileWalk _e19 = t_2;
-        return _e19;
+    t_2 = TileWalk {_e15.lo, _e15.hi, as_type<float>(unnamed_1), 0u};
+    bool _e24 = box_is_empty(_e15);
+    if (_e24) {
+        TileWalk _e25 = t_2;
+        return _e25;
     }
     s_4 = li_4;
     uint2 loop_bound_6 = uint2(4294967295u);
@@ -1479,21 +1486,21 @@ TileWalk tile_walk_begin(
         if (metal::all(loop_bound_6 == uint2(0u))) { break; }
         loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
         if (!loop_init_3) {
-            uint _e34 = s_4;
-            s_4 = _e34 + TILE_THREADS;
+            uint _e40 = s_4;
+            s_4 = _e40 + TILE_THREADS;
         }
         loop_init_3 = false;
-        uint _e21 = s_4;
-        if (_e21 < BSH_TILE_SUBTREES) {
+        uint _e27 = s_4;
+        if (_e27 < BSH_TILE_SUBTREES) {
         } else {
             break;
         }
         {
-            uint _e25 = s_4;
-            uint _e27 = s_4;
-            TileWalk _e28 = t_2;
-            uint _e33 = tile_subtree(_e27, _e28, false, 0u, 0u, 0u, bsh_nodes, tile_list, _buffer_sizes);
-            subtree_at.inner[_e25] = _e33;
+            uint _e31 = s_4;
+            uint _e33 = s_4;
+            TileWalk _e34 = t_2;
+            uint _e39 = tile_subtree(_e33, _e34, false, 0u, 0u, 0u, bsh_nodes, tile_list, _buffer_sizes);
+            subtree_at.inner[_e31] = _e39;
         }
     }
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
@@ -1504,34 +1511,34 @@ TileWalk tile_walk_begin(
             if (metal::all(loop_bound_7 == uint2(0u))) { break; }
             loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
             if (!loop_init_4) {
-                uint _e57 = s_5;
-                s_5 = _e57 + 1u;
+                uint _e63 = s_5;
+                s_5 = _e63 + 1u;
             }
             loop_init_4 = false;
-            uint _e43 = s_5;
-            if (_e43 < BSH_TILE_SUBTREES) {
+            uint _e49 = s_5;
+            if (_e49 < BSH_TILE_SUBTREES) {
             } else {
                 break;
             }
             {
-                uint _e47 = s_5;
-                uint c_13 = subtree_at.inner[_e47];
-                uint _e51 = s_5;
-                uint _e53 = sum_1;
-                subtree_at.inner[_e51] = _e53;
-                uint _e54 = sum_1;
-                sum_1 = _e54 + c_13;
+                uint _e53 = s_5;
+                uint c_13 = subtree_at.inner[_e53];
+                uint _e57 = s_5;
+                uint _e59 = sum_1;
+                subtree_at.inner[_e57] = _e59;
+                uint _e60 = sum_1;
+                sum_1 = _e60 + c_13;
             }
         }
-        uint _e60 = sum_1;
-        tile_total = _e60;
+        uint _e66 = sum_1;
+        tile_total = _e66;
     }
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
     uint unnamed_2 = tile_total;
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
     t_2.total = unnamed_2;
-    TileWalk _e64 = t_2;
-    return _e64;
+    TileWalk _e70 = t_2;
+    return _e70;
 }
 
 uint tile_walk_fill(
@@ -1821,19 +1828,18 @@ kernel void main_(
     uint count = 0u;
     uint hc = {};
     type_27 threshold = {};
-    bool local_4 = {};
     uint start = 0u;
     uint j = {};
-    bool local_5 = {};
+    bool local_4 = {};
     uint q = {};
-    bool local_6 = {};
+    bool local_5 = {};
     type_23 keys = {};
     type_24 held = {};
     uint k = 0u;
     uint k_1 = 0u;
     metal::float3 w = {};
     uint j_1 = {};
-    bool local_7 = {};
+    bool local_6 = {};
     uint _e5 = view.width;
     if (gid.x < _e5) {
         uint _e12 = view.height;
@@ -1910,31 +1916,25 @@ kernel void main_(
     uint _e138 = pick_stream(_e137);
     h = _e138;
     hc = _e137;
-    if (has_2) {
-        local_4 = _e114.w >= 0.0;
-    } else {
-        local_4 = false;
-    }
-    bool _e165 = local_4;
-    TileWalk _e166 = tile_walk_begin(lid, x_13, _e114.w, _e165, bsh_nodes, wg_lo, wg_hi, wg_box, tile_list, subtree_at, tile_scale, tile_total, _buffer_sizes);
+    TileWalk _e159 = tile_walk_begin(lid, x_13, _e114.w, has_2, bsh_nodes, wg_lo, wg_hi, wg_box, tile_list, subtree_at, tile_scale, tile_total, _buffer_sizes);
     uint2 loop_bound_11 = uint2(4294967295u);
     bool loop_init_8 = true;
     while(true) {
         if (metal::all(loop_bound_11 == uint2(0u))) { break; }
         loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
         if (!loop_init_8) {
-            uint _e261 = start;
-            start = _e261 + TILE_LIST;
+            uint _e254 = start;
+            start = _e254 + TILE_LIST;
         }
         loop_init_8 = false;
-        uint _e169 = start;
-        if (_e169 < _e166.total) {
+        uint _e162 = start;
+        if (_e162 < _e159.total) {
         } else {
             break;
         }
         {
-            uint _e172 = start;
-            uint _e173 = tile_walk_fill(lid, _e166, _e172, bsh_nodes, tile_list, subtree_at, _buffer_sizes);
+            uint _e165 = start;
+            uint _e166 = tile_walk_fill(lid, _e159, _e165, bsh_nodes, tile_list, subtree_at, _buffer_sizes);
             j = 0u;
             uint2 loop_bound_12 = uint2(4294967295u);
             bool loop_init_9 = true;
@@ -1942,53 +1942,53 @@ kernel void main_(
                 if (metal::all(loop_bound_12 == uint2(0u))) { break; }
                 loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
                 if (!loop_init_9) {
-                    uint _e259 = j;
-                    j = _e259 + 1u;
+                    uint _e252 = j;
+                    j = _e252 + 1u;
                 }
                 loop_init_9 = false;
-                uint _e176 = j;
-                if (_e176 < _e173) {
+                uint _e169 = j;
+                if (_e169 < _e166) {
                 } else {
                     break;
                 }
                 {
-                    uint _e179 = j;
-                    uint b_9 = tile_list.inner[_e179];
+                    uint _e172 = j;
+                    uint b_9 = tile_list.inner[_e172];
                     if (!(!(has_2))) {
-                        BshNode _e188 = bsh_nodes[b_9];
-                        metal::float3 _e189 = r;
-                        bool _e190 = bsh_reaches(_e188, x_13, _e189, _e114);
-                        local_5 = !(_e190);
+                        BshNode _e181 = bsh_nodes[b_9];
+                        metal::float3 _e182 = r;
+                        bool _e183 = bsh_reaches(_e181, x_13, _e182, _e114);
+                        local_4 = !(_e183);
                     } else {
-                        local_5 = true;
+                        local_4 = true;
                     }
-                    bool _e193 = local_5;
-                    if (_e193) {
+                    bool _e186 = local_4;
+                    if (_e186) {
                         continue;
                     }
                     uint li_8 = bsh_nodes[b_9].light;
-                    uint _e198 = count;
-                    count = _e198 + 1u;
-                    uint _e201 = h;
-                    uint _e202 = pcg_hash(_e201);
-                    h = _e202;
-                    uint _e203 = h;
-                    float _e204 = xi_from_bits(_e203);
-                    uint _e205 = h;
-                    uint _e206 = pcg_hash(_e205);
-                    h = _e206;
-                    uint _e207 = h;
-                    float _e208 = xi_from_bits(_e207);
-                    metal::float2 u_4 = metal::float2(_e204, _e208);
-                    metal::float3 _e210 = n;
-                    metal::float3 _e211 = r;
-                    Material _e212 = m;
-                    Shaded _e217 = shade_pick_traced(li_8, x_13, _e210, _e211, _e114, _e212, 1.0, u_4.x, u_4.y, eps_4, false, geo_nodes, geo_tris, lights, rt2_3, r2_3, light_cones, _buffer_sizes);
-                    metal::float3 _e218 = output_of(_e217);
-                    float _e219 = resample_target(_e218);
-                    if (_e219 > 0.0) {
-                        metal::float3 _e222 = total;
-                        total = _e222 + _e218;
+                    uint _e191 = count;
+                    count = _e191 + 1u;
+                    uint _e194 = h;
+                    uint _e195 = pcg_hash(_e194);
+                    h = _e195;
+                    uint _e196 = h;
+                    float _e197 = xi_from_bits(_e196);
+                    uint _e198 = h;
+                    uint _e199 = pcg_hash(_e198);
+                    h = _e199;
+                    uint _e200 = h;
+                    float _e201 = xi_from_bits(_e200);
+                    metal::float2 u_4 = metal::float2(_e197, _e201);
+                    metal::float3 _e203 = n;
+                    metal::float3 _e204 = r;
+                    Material _e205 = m;
+                    Shaded _e210 = shade_pick_traced(li_8, x_13, _e203, _e204, _e114, _e205, 1.0, u_4.x, u_4.y, eps_4, false, geo_nodes, geo_tris, lights, rt2_3, r2_3, light_cones, _buffer_sizes);
+                    metal::float3 _e211 = output_of(_e210);
+                    float _e212 = resample_target(_e211);
+                    if (_e212 > 0.0) {
+                        metal::float3 _e215 = total;
+                        total = _e215 + _e211;
                         q = 0u;
                         uint2 loop_bound_13 = uint2(4294967295u);
                         bool loop_init_10 = true;
@@ -1996,39 +1996,39 @@ kernel void main_(
                             if (metal::all(loop_bound_13 == uint2(0u))) { break; }
                             loop_bound_13 -= uint2(loop_bound_13.y == 0u, 1u);
                             if (!loop_init_10) {
-                                uint _e256 = q;
-                                q = _e256 + 1u;
+                                uint _e249 = q;
+                                q = _e249 + 1u;
                             }
                             loop_init_10 = false;
-                            uint _e226 = q;
-                            if (_e226 < K) {
+                            uint _e219 = q;
+                            if (_e219 < K) {
                             } else {
                                 break;
                             }
                             {
-                                uint _e229 = q;
-                                float _e231 = slot_target(_e218, _e229, K);
-                                metal::float3 _e232 = total;
-                                uint _e233 = q;
-                                float _e235 = slot_target(_e232, _e233, K);
-                                if (_e231 > 0.0) {
-                                    uint _e240 = q;
-                                    float _e242 = threshold.inner[_e240];
-                                    local_6 = _e235 > _e242;
+                                uint _e222 = q;
+                                float _e224 = slot_target(_e211, _e222, K);
+                                metal::float3 _e225 = total;
+                                uint _e226 = q;
+                                float _e228 = slot_target(_e225, _e226, K);
+                                if (_e224 > 0.0) {
+                                    uint _e233 = q;
+                                    float _e235 = threshold.inner[_e233];
+                                    local_5 = _e228 > _e235;
                                 } else {
-                                    local_6 = false;
+                                    local_5 = false;
                                 }
-                                bool _e245 = local_6;
-                                if (_e245) {
-                                    uint _e246 = q;
-                                    slot_light.inner[_e246] = li_8;
-                                    uint _e248 = q;
-                                    slot_u.inner[_e248] = u_4;
-                                    uint _e250 = q;
-                                    slot_p.inner[_e250] = _e231;
-                                    uint _e252 = q;
-                                    float _e254 = next_threshold(_e235, hc);
-                                    threshold.inner[_e252] = _e254;
+                                bool _e238 = local_5;
+                                if (_e238) {
+                                    uint _e239 = q;
+                                    slot_light.inner[_e239] = li_8;
+                                    uint _e241 = q;
+                                    slot_u.inner[_e241] = u_4;
+                                    uint _e243 = q;
+                                    slot_p.inner[_e243] = _e224;
+                                    uint _e245 = q;
+                                    float _e247 = next_threshold(_e228, hc);
+                                    threshold.inner[_e245] = _e247;
                                 }
                             }
                         }
@@ -2050,110 +2050,110 @@ kernel void main_(
         if (metal::all(loop_bound_14 == uint2(0u))) { break; }
         loop_bound_14 -= uint2(loop_bound_14.y == 0u, 1u);
         if (!loop_init_11) {
-            uint _e290 = k;
-            k = _e290 + 1u;
+            uint _e283 = k;
+            k = _e283 + 1u;
         }
         loop_init_11 = false;
-        uint _e272 = k;
-        if (_e272 < K) {
+        uint _e265 = k;
+        if (_e265 < K) {
         } else {
             break;
         }
         {
+            uint _e268 = k;
+            uint _e270 = k;
+            uint _e272 = slot_light.inner[_e270];
+            keys.inner[_e268] = metal::uint2(_e272, 0u);
             uint _e275 = k;
             uint _e277 = k;
-            uint _e279 = slot_light.inner[_e277];
-            keys.inner[_e275] = metal::uint2(_e279, 0u);
-            uint _e282 = k;
-            uint _e284 = k;
-            float _e286 = slot_p.inner[_e284];
-            held.inner[_e282] = _e286 > 0.0;
+            float _e279 = slot_p.inner[_e277];
+            held.inner[_e275] = _e279 > 0.0;
         }
     }
-    type_23 _e292 = keys;
-    type_24 _e293 = held;
-    type_15 _e294 = first_holders(_e292, _e293);
+    type_23 _e285 = keys;
+    type_24 _e286 = held;
+    type_15 _e287 = first_holders(_e285, _e286);
     uint2 loop_bound_15 = uint2(4294967295u);
     bool loop_init_12 = true;
     while(true) {
         if (metal::all(loop_bound_15 == uint2(0u))) { break; }
         loop_bound_15 -= uint2(loop_bound_15.y == 0u, 1u);
         if (!loop_init_12) {
-            uint _e358 = k_1;
-            k_1 = _e358 + 1u;
+            uint _e351 = k_1;
+            k_1 = _e351 + 1u;
         }
         loop_init_12 = false;
-        uint _e297 = k_1;
-        if (_e297 < K) {
+        uint _e290 = k_1;
+        if (_e290 < K) {
         } else {
             break;
         }
         {
             w = metal::float3(0.0);
-            uint _e303 = k_1;
-            uint _e305 = k_1;
-            bool first_1 = _e294.inner[_e303] == _e305;
-            uint _e307 = k_1;
-            j_1 = _e307;
+            uint _e296 = k_1;
+            uint _e298 = k_1;
+            bool first_1 = _e287.inner[_e296] == _e298;
+            uint _e300 = k_1;
+            j_1 = _e300;
             uint2 loop_bound_16 = uint2(4294967295u);
             bool loop_init_13 = true;
             while(true) {
                 if (metal::all(loop_bound_16 == uint2(0u))) { break; }
                 loop_bound_16 -= uint2(loop_bound_16.y == 0u, 1u);
                 if (!loop_init_13) {
-                    uint _e335 = j_1;
-                    j_1 = _e335 + 1u;
+                    uint _e328 = j_1;
+                    j_1 = _e328 + 1u;
                 }
                 loop_init_13 = false;
-                uint _e309 = j_1;
-                if (_e309 < K) {
-                    local_7 = first_1;
+                uint _e302 = j_1;
+                if (_e302 < K) {
+                    local_6 = first_1;
                 } else {
-                    local_7 = false;
+                    local_6 = false;
                 }
-                bool _e315 = local_7;
-                if (_e315) {
+                bool _e308 = local_6;
+                if (_e308) {
                 } else {
                     break;
                 }
                 {
-                    uint _e316 = j_1;
-                    uint _e318 = k_1;
-                    if (_e294.inner[_e316] == _e318) {
-                        metal::float3 _e320 = w;
-                        metal::float3 _e321 = total;
+                    uint _e309 = j_1;
+                    uint _e311 = k_1;
+                    if (_e287.inner[_e309] == _e311) {
+                        metal::float3 _e313 = w;
+                        metal::float3 _e314 = total;
+                        uint _e315 = j_1;
+                        float _e317 = slot_target(_e314, _e315, K);
+                        uint _e318 = j_1;
+                        float _e320 = slot_p.inner[_e318];
                         uint _e322 = j_1;
-                        float _e324 = slot_target(_e321, _e322, K);
-                        uint _e325 = j_1;
-                        float _e327 = slot_p.inner[_e325];
-                        uint _e329 = j_1;
-                        metal::float3 _e331 = slot_share(_e329, K);
-                        w = _e320 + ((_e324 / _e327) * _e331);
+                        metal::float3 _e324 = slot_share(_e322, K);
+                        w = _e313 + ((_e317 / _e320) * _e324);
                     }
                 }
             }
             if (first_1) {
-                Shaded _e337 = t;
+                Shaded _e330 = t;
+                uint _e331 = k_1;
+                uint _e333 = slot_light.inner[_e331];
+                metal::float3 _e334 = n;
+                metal::float3 _e335 = r;
+                Material _e336 = m;
                 uint _e338 = k_1;
-                uint _e340 = slot_light.inner[_e338];
-                metal::float3 _e341 = n;
-                metal::float3 _e342 = r;
-                Material _e343 = m;
-                uint _e345 = k_1;
-                float _e348 = slot_u.inner[_e345].x;
-                uint _e349 = k_1;
-                float _e352 = slot_u.inner[_e349].y;
-                Shaded _e353 = shade_pick(_e340, x_13, _e341, _e342, _e114, _e343, 1.0, _e348, _e352, eps_4, geo_nodes, geo_tris, lights, rt2_3, r2_3, light_cones, _buffer_sizes);
-                metal::float3 _e354 = w;
-                Shaded _e355 = scaled(_e353, _e354);
-                Shaded _e356 = add(_e337, _e355);
-                t = _e356;
+                float _e341 = slot_u.inner[_e338].x;
+                uint _e342 = k_1;
+                float _e345 = slot_u.inner[_e342].y;
+                Shaded _e346 = shade_pick(_e333, x_13, _e334, _e335, _e114, _e336, 1.0, _e341, _e345, eps_4, geo_nodes, geo_tris, lights, rt2_3, r2_3, light_cones, _buffer_sizes);
+                metal::float3 _e347 = w;
+                Shaded _e348 = scaled(_e346, _e347);
+                Shaded _e349 = add(_e330, _e348);
+                t = _e349;
             }
         }
     }
-    metal::float3 _e362 = t.diffuse;
-    metal::float3 _e364 = t.specular;
-    uint _e366 = count;
-    out_tex.write(metal::float4(_e362 + _e364, static_cast<float>(_e366)), metal::uint2(texel_1));
+    metal::float3 _e355 = t.diffuse;
+    metal::float3 _e357 = t.specular;
+    uint _e359 = count;
+    out_tex.write(metal::float4(_e355 + _e357, static_cast<float>(_e359)), metal::uint2(texel_1));
     return;
 }

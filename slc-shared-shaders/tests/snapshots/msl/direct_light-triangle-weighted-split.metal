@@ -329,28 +329,28 @@ float connection_cosine(
     metal::float3 ng,
     float r2_1
 ) {
+    bool local_5 = {};
     bool local_6 = {};
-    bool local_7 = {};
     metal::float3 v_8 = x_2 - y;
     float d2_7 = metal::dot(v_8, v_8);
     bool _e7 = slc_keep(r2_1, d2_7);
     if (!(!(_e7))) {
-        local_6 = !((d2_7 > 0.0));
+        local_5 = !((d2_7 > 0.0));
     } else {
-        local_6 = true;
+        local_5 = true;
     }
-    bool _e16 = local_6;
+    bool _e16 = local_5;
     if (_e16) {
         return 0.0;
     }
     metal::float3 w_10 = v_8 / metal::float3(metal::sqrt(d2_7));
     float cos_x_1 = -(metal::dot(n_1, w_10));
     if (!((cos_x_1 <= 0.0))) {
-        local_7 = metal::dot(ng, w_10) >= 0.0;
+        local_6 = metal::dot(ng, w_10) >= 0.0;
     } else {
-        local_7 = true;
+        local_6 = true;
     }
-    bool _e32 = local_7;
+    bool _e32 = local_6;
     if (_e32) {
         return 0.0;
     }
@@ -449,13 +449,13 @@ float smith_visibility(
     float n_v,
     float alpha_2
 ) {
-    bool local_8 = {};
+    bool local_7 = {};
     if (!((n_l <= 0.0))) {
-        local_8 = n_v <= 0.0;
+        local_7 = n_v <= 0.0;
     } else {
-        local_8 = true;
+        local_7 = true;
     }
-    bool _e11 = local_8;
+    bool _e11 = local_7;
     if (_e11) {
         return 0.0;
     }
@@ -519,15 +519,15 @@ metal::float3 specular_brdf(
     metal::float3 v_1,
     metal::float3 l_1
 ) {
-    bool local_9 = {};
+    bool local_8 = {};
     float n_l_1 = metal::dot(n_3, l_1);
     float n_v_2 = metal::dot(n_3, v_1);
     if (!((n_l_1 <= 0.0))) {
-        local_9 = n_v_2 <= 0.0;
+        local_8 = n_v_2 <= 0.0;
     } else {
-        local_9 = true;
+        local_8 = true;
     }
-    bool _e18 = local_9;
+    bool _e18 = local_8;
     if (_e18) {
         return metal::float3(0.0, 0.0, 0.0);
     }
@@ -546,20 +546,20 @@ bool has_specular(
     metal::float3 f0_d_3,
     float f90_d_3
 ) {
+    bool local_9 = {};
     bool local_10 = {};
-    bool local_11 = {};
     if (!((metallic_3 > 0.0))) {
-        local_10 = f90_d_3 > 0.0;
+        local_9 = f90_d_3 > 0.0;
+    } else {
+        local_9 = true;
+    }
+    bool _e11 = local_9;
+    if (!(_e11)) {
+        local_10 = metal::max(metal::max(f0_d_3.x, f0_d_3.y), f0_d_3.z) > 0.0;
     } else {
         local_10 = true;
     }
-    bool _e11 = local_10;
-    if (!(_e11)) {
-        local_11 = metal::max(metal::max(f0_d_3.x, f0_d_3.y), f0_d_3.z) > 0.0;
-    } else {
-        local_11 = true;
-    }
-    bool _e23 = local_11;
+    bool _e23 = local_10;
     return _e23;
 }
 
@@ -577,16 +577,16 @@ metal::float4 receiver_lobe(
     float alpha_4,
     float n_v_1
 ) {
-    bool local_12 = {};
+    bool local_11 = {};
     metal::float3 _e10 = fresnel_schlick(f0_d_4, f90_d_4, n_v_1);
     float _e16 = channel_mean(((metal::float3(1.0, 1.0, 1.0) - _e10) * base_3) * (1.0 - metallic_4));
     if (!((n_v_1 <= 0.0))) {
         bool _e22 = has_specular(metallic_4, f0_d_4, f90_d_4);
-        local_12 = !(_e22);
+        local_11 = !(_e22);
     } else {
-        local_12 = true;
+        local_11 = true;
     }
-    bool _e25 = local_12;
+    bool _e25 = local_11;
     if (_e25) {
         return metal::float4(_e16, 0.0, alpha_4, n_v_1);
     }
@@ -720,22 +720,22 @@ float cone_cos_of(
     float a_3,
     metal::float3 d
 ) {
+    bool local_12 = {};
     bool local_13 = {};
-    bool local_14 = {};
     float vd = metal::dot(v_3, d);
     float h2_ = d2_4 - (a_3 * a_3);
     if (!((h2_ <= 0.0))) {
         if (vd >= 0.0) {
-            local_14 = (vd * vd) >= h2_;
+            local_13 = (vd * vd) >= h2_;
         } else {
-            local_14 = false;
+            local_13 = false;
         }
-        bool _e19 = local_14;
-        local_13 = _e19;
+        bool _e19 = local_13;
+        local_12 = _e19;
     } else {
-        local_13 = true;
+        local_12 = true;
     }
-    bool _e21 = local_13;
+    bool _e21 = local_12;
     if (_e21) {
         return 1.0;
     }
@@ -818,15 +818,15 @@ float glossy_importance(
     metal::float3 r_4,
     metal::float4 lobe_5
 ) {
-    bool local_15 = {};
+    bool local_14 = {};
     float _e10 = emitter_importance(center_5, radius_5, phi_2, axis_3, cos_o_3, cos_e_2, p_5);
     float _e11 = cone_cos_toward(center_5, radius_5, p_5, n_6);
     if (!((_e10 <= 0.0))) {
-        local_15 = _e11 <= 0.0;
+        local_14 = _e11 <= 0.0;
     } else {
-        local_15 = true;
+        local_14 = true;
     }
-    bool _e20 = local_15;
+    bool _e20 = local_14;
     if (_e20) {
         return 0.0;
     }
@@ -916,15 +916,15 @@ metal::float3 triangle_normal(
     metal::float3 b_3,
     metal::float3 c_4
 ) {
-    bool local_16 = {};
+    bool local_15 = {};
     metal::float3 n_14 = metal::cross(b_3 - a_4, c_4 - a_4);
     float l2_ = metal::dot(n_14, n_14);
     if (!(!((l2_ > 0.0)))) {
-        local_16 = !((l2_ < 300000000000000000000000000000000000000.0));
+        local_15 = !((l2_ < 300000000000000000000000000000000000000.0));
     } else {
-        local_16 = true;
+        local_15 = true;
     }
-    bool _e17 = local_16;
+    bool _e17 = local_15;
     if (_e17) {
         return metal::float3(0.0, 0.0, 0.0);
     }
@@ -940,9 +940,9 @@ float ray_triangle(
     float t_min,
     float t_max_1
 ) {
+    bool local_16 = {};
     bool local_17 = {};
     bool local_18 = {};
-    bool local_19 = {};
     metal::float3 e1_ = b_4 - a_5;
     metal::float3 e2_ = c_5 - a_5;
     metal::float3 p_9 = metal::cross(d_3, e2_);
@@ -954,32 +954,32 @@ float ray_triangle(
     metal::float3 s_9 = o_1 - a_5;
     float u_3 = metal::dot(s_9, p_9) * inv_1;
     if (!((u_3 < 0.0))) {
-        local_17 = u_3 > 1.0;
+        local_16 = u_3 > 1.0;
     } else {
-        local_17 = true;
+        local_16 = true;
     }
-    bool _e28 = local_17;
+    bool _e28 = local_16;
     if (_e28) {
         return -1.0;
     }
     metal::float3 q_1 = metal::cross(s_9, e1_);
     float v_13 = metal::dot(d_3, q_1) * inv_1;
     if (!((v_13 < 0.0))) {
-        local_18 = (u_3 + v_13) > 1.0;
+        local_17 = (u_3 + v_13) > 1.0;
     } else {
-        local_18 = true;
+        local_17 = true;
     }
-    bool _e42 = local_18;
+    bool _e42 = local_17;
     if (_e42) {
         return -1.0;
     }
     float t_6 = metal::dot(e2_, q_1) * inv_1;
     if (t_6 > t_min) {
-        local_19 = t_6 < t_max_1;
+        local_18 = t_6 < t_max_1;
     } else {
-        local_19 = false;
+        local_18 = false;
     }
-    bool _e51 = local_19;
+    bool _e51 = local_18;
     if (_e51) {
         return t_6;
     }
@@ -1169,19 +1169,19 @@ bool bsh_reaches(
     metal::float3 r_7,
     metal::float4 rl_3
 ) {
+    bool local_19 = {};
     bool local_20 = {};
-    bool local_21 = {};
     bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_5);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
         bool _e20 = sphere_contains_point(node_3.center, node_3.radius * (rl_3.w * 1.0001), x_5);
-        local_20 = !(_e20);
+        local_19 = !(_e20);
     } else {
-        local_20 = true;
+        local_19 = true;
     }
-    bool _e23 = local_20;
+    bool _e23 = local_19;
     if (_e23) {
         return false;
     }
@@ -1202,11 +1202,11 @@ bool bsh_reaches(
     float s_c = _e50 * 1.001;
     float reach = node_3.extent + (metal::sqrt(s_c) * _e25);
     if (d2_9 <= ((node_3.radius * node_3.radius) * s_c)) {
-        local_21 = d2_9 <= (reach * reach);
+        local_20 = d2_9 <= (reach * reach);
     } else {
-        local_21 = false;
+        local_20 = false;
     }
-    bool _e67 = local_21;
+    bool _e67 = local_20;
     return _e67;
 }
 
@@ -1229,7 +1229,7 @@ uint bsh_subtree(
 ) {
     uint i_2 = {};
     uint level = 0u;
-    bool local_22 = {};
+    bool local_21 = {};
     uint _e3 = bsh_first(nodes_3, bsh_nodes, _buffer_sizes);
     i_2 = _e3;
     uint2 loop_bound_2 = uint2(4294967295u);
@@ -1239,11 +1239,11 @@ uint bsh_subtree(
         uint _e7 = level;
         if (_e7 < depth) {
             uint _e11 = i_2;
-            local_22 = _e11 != BSH_NONE;
+            local_21 = _e11 != BSH_NONE;
         } else {
-            local_22 = false;
+            local_21 = false;
         }
-        bool _e15 = local_22;
+        bool _e15 = local_21;
         if (_e15) {
         } else {
             break;
@@ -1343,8 +1343,8 @@ Connection connect_record(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Connection c_6 = {};
+    bool local_22 = {};
     bool local_23 = {};
-    bool local_24 = {};
     c_6.e = metal::float3(0.0);
     metal::float3 _e16 = light_point(l_4, u1_2, u2_2);
     c_6.y = _e16;
@@ -1356,16 +1356,16 @@ Connection connect_record(
         if (trace_1) {
             metal::float3 _e33 = c_6.y;
             bool _e34 = occluded(x_6 + (ng_1 * eps), _e33, geo_nodes, geo_tris, _buffer_sizes);
-            local_24 = _e34;
+            local_23 = _e34;
         } else {
-            local_24 = false;
+            local_23 = false;
         }
-        bool _e36 = local_24;
-        local_23 = _e36;
+        bool _e36 = local_23;
+        local_22 = _e36;
     } else {
-        local_23 = true;
+        local_22 = true;
     }
-    bool _e38 = local_23;
+    bool _e38 = local_22;
     if (_e38) {
         Connection _e39 = c_6;
         return _e39;
@@ -1597,9 +1597,9 @@ uint tile_subtree(
 ) {
     uint p_8 = {};
     uint b_7 = {};
+    bool local_24 = {};
     bool local_25 = {};
     bool local_26 = {};
-    bool local_27 = {};
     uint _e8 = bsh_subtree(BSH, s_4, BSH_TILE_DEPTH, bsh_nodes, _buffer_sizes);
     if (_e8 == BSH_NONE) {
         return 0u;
@@ -1624,16 +1624,16 @@ uint tile_subtree(
         if (_e23 != end_1) {
             if (!(!(list))) {
                 uint _e31 = p_8;
-                local_26 = _e31 < to;
+                local_25 = _e31 < to;
             } else {
-                local_26 = true;
+                local_25 = true;
             }
-            bool _e34 = local_26;
-            local_25 = _e34;
+            bool _e34 = local_25;
+            local_24 = _e34;
         } else {
-            local_25 = false;
+            local_24 = false;
         }
-        bool _e36 = local_25;
+        bool _e36 = local_24;
         if (_e36) {
         } else {
             break;
@@ -1641,11 +1641,11 @@ uint tile_subtree(
         {
             if (list) {
                 uint _e39 = p_8;
-                local_27 = _e39 >= start_2;
+                local_26 = _e39 >= start_2;
             } else {
-                local_27 = false;
+                local_26 = false;
             }
-            bool _e42 = local_27;
+            bool _e42 = local_26;
             if (_e42) {
                 uint _e44 = p_8;
                 uint _e47 = b_7;
@@ -1674,20 +1674,27 @@ TileWalk tile_walk_begin(
     threadgroup uint& tile_total,
     constant _mslBufferSizes& _buffer_sizes
 ) {
+    bool local_27 = {};
     TileWalk t_2 = {};
     uint s_5 = {};
     uint sum_1 = 0u;
     uint s_6 = 0u;
-    uint _e8 = metal::atomic_fetch_max_explicit(&tile_scale, has_1 ? as_type<uint>(w_7) : 0u, metal::memory_order_relaxed);
-    WorkgroupBox _e9 = workgroup_box(li_6, x_10, has_1, wg_lo, wg_hi, wg_box);
+    if (has_1) {
+        local_27 = w_7 >= 0.0;
+    } else {
+        local_27 = false;
+    }
+    bool _e12 = local_27;
+    uint _e14 = metal::atomic_fetch_max_explicit(&tile_scale, _e12 ? as_type<uint>(w_7) : 0u, metal::memory_order_relaxed);
+    WorkgroupBox _e15 = workgroup_box(li_6, x_10, has_1, wg_lo, wg_hi, wg_box);
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
     uint unnamed_1 = metal::atomic_load_explicit(&tile_scale, metal::memory_order_relaxed);
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-    t_2 = TileWalk {_e9.lo, _e9.hi, as_type<float>(unnamed_1), 0u};
-    bool _e18 = box_is_empty(_e9);
-    if (_e18) {
-        TileWalk _e19 = t_2;
-        return _e19;
+    t_2 = TileWalk {_e15.lo, _e15.hi, as_type<float>(unnamed_1), 0u};
+    bool _e24 = box_is_empty(_e15);
+    if (_e24) {
+        TileWalk _e25 = t_2;
+        return _e25;
     }
     s_5 = li_6;
     uint2 loop_bound_7 = uint2(4294967295u);
@@ -1696,21 +1703,21 @@ TileWalk tile_walk_begin(
         if (metal::all(loop_bound_7 == uint2(0u))) { break; }
         loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
         if (!loop_init_4) {
-            uint _e34 = s_5;
-            s_5 = _e34 + TILE_THREADS;
+            uint _e40 = s_5;
+            s_5 = _e40 + TILE_THREADS;
         }
         loop_init_4 = false;
-        uint _e21 = s_5;
-        if (_e21 < BSH_TILE_SUBTREES) {
+        uint _e27 = s_5;
+        if (_e27 < BSH_TILE_SUBTREES) {
         } else {
             break;
         }
         {
-            uint _e25 = s_5;
-            uint _e27 = s_5;
-            TileWalk _e28 = t_2;
-            uint _e33 = tile_subtree(_e27, _e28, false, 0u, 0u, 0u, bsh_nodes, tile_list, _buffer_sizes);
-            subtree_at.inner[_e25] = _e33;
+            uint _e31 = s_5;
+            uint _e33 = s_5;
+            TileWalk _e34 = t_2;
+            uint _e39 = tile_subtree(_e33, _e34, false, 0u, 0u, 0u, bsh_nodes, tile_list, _buffer_sizes);
+            subtree_at.inner[_e31] = _e39;
         }
     }
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
@@ -1721,34 +1728,34 @@ TileWalk tile_walk_begin(
             if (metal::all(loop_bound_8 == uint2(0u))) { break; }
             loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
             if (!loop_init_5) {
-                uint _e57 = s_6;
-                s_6 = _e57 + 1u;
+                uint _e63 = s_6;
+                s_6 = _e63 + 1u;
             }
             loop_init_5 = false;
-            uint _e43 = s_6;
-            if (_e43 < BSH_TILE_SUBTREES) {
+            uint _e49 = s_6;
+            if (_e49 < BSH_TILE_SUBTREES) {
             } else {
                 break;
             }
             {
-                uint _e47 = s_6;
-                uint c_13 = subtree_at.inner[_e47];
-                uint _e51 = s_6;
-                uint _e53 = sum_1;
-                subtree_at.inner[_e51] = _e53;
-                uint _e54 = sum_1;
-                sum_1 = _e54 + c_13;
+                uint _e53 = s_6;
+                uint c_13 = subtree_at.inner[_e53];
+                uint _e57 = s_6;
+                uint _e59 = sum_1;
+                subtree_at.inner[_e57] = _e59;
+                uint _e60 = sum_1;
+                sum_1 = _e60 + c_13;
             }
         }
-        uint _e60 = sum_1;
-        tile_total = _e60;
+        uint _e66 = sum_1;
+        tile_total = _e66;
     }
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
     uint unnamed_2 = tile_total;
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
     t_2.total = unnamed_2;
-    TileWalk _e64 = t_2;
-    return _e64;
+    TileWalk _e70 = t_2;
+    return _e70;
 }
 
 uint tile_walk_fill(
@@ -2031,10 +2038,9 @@ kernel void main_(
     uint h = {};
     Shaded t = Shaded {metal::float3(0.0), metal::float3(0.0), metal::float3(0.0)};
     WeightedPicks picks = {};
-    bool local_4 = {};
     uint start = 0u;
     uint j = {};
-    bool local_5 = {};
+    bool local_4 = {};
     type_24 keys = {};
     type_25 held = {};
     uint k = 0u;
@@ -2119,31 +2125,25 @@ kernel void main_(
     h = _e140;
     WeightedPicks _e150 = weighted_picks(_e139);
     picks = _e150;
-    if (has_2) {
-        local_4 = _e116.w >= 0.0;
-    } else {
-        local_4 = false;
-    }
-    bool _e159 = local_4;
-    TileWalk _e160 = tile_walk_begin(lid, x_14, _e116.w, _e159, bsh_nodes, wg_lo, wg_hi, wg_box, tile_list, subtree_at, tile_scale, tile_total, _buffer_sizes);
+    TileWalk _e153 = tile_walk_begin(lid, x_14, _e116.w, has_2, bsh_nodes, wg_lo, wg_hi, wg_box, tile_list, subtree_at, tile_scale, tile_total, _buffer_sizes);
     uint2 loop_bound_12 = uint2(4294967295u);
     bool loop_init_9 = true;
     while(true) {
         if (metal::all(loop_bound_12 == uint2(0u))) { break; }
         loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
         if (!loop_init_9) {
-            uint _e199 = start;
-            start = _e199 + TILE_LIST;
+            uint _e192 = start;
+            start = _e192 + TILE_LIST;
         }
         loop_init_9 = false;
-        uint _e163 = start;
-        if (_e163 < _e160.total) {
+        uint _e156 = start;
+        if (_e156 < _e153.total) {
         } else {
             break;
         }
         {
-            uint _e166 = start;
-            uint _e167 = tile_walk_fill(lid, _e160, _e166, bsh_nodes, tile_list, subtree_at, _buffer_sizes);
+            uint _e159 = start;
+            uint _e160 = tile_walk_fill(lid, _e153, _e159, bsh_nodes, tile_list, subtree_at, _buffer_sizes);
             j = 0u;
             uint2 loop_bound_13 = uint2(4294967295u);
             bool loop_init_10 = true;
@@ -2151,36 +2151,36 @@ kernel void main_(
                 if (metal::all(loop_bound_13 == uint2(0u))) { break; }
                 loop_bound_13 -= uint2(loop_bound_13.y == 0u, 1u);
                 if (!loop_init_10) {
-                    uint _e197 = j;
-                    j = _e197 + 1u;
+                    uint _e190 = j;
+                    j = _e190 + 1u;
                 }
                 loop_init_10 = false;
-                uint _e170 = j;
-                if (_e170 < _e167) {
+                uint _e163 = j;
+                if (_e163 < _e160) {
                 } else {
                     break;
                 }
                 {
-                    uint _e173 = j;
-                    uint b_9 = tile_list.inner[_e173];
+                    uint _e166 = j;
+                    uint b_9 = tile_list.inner[_e166];
                     if (!(!(has_2))) {
-                        BshNode _e182 = bsh_nodes[b_9];
-                        metal::float3 _e183 = r;
-                        bool _e184 = bsh_reaches(_e182, x_14, _e183, _e116);
-                        local_5 = !(_e184);
+                        BshNode _e175 = bsh_nodes[b_9];
+                        metal::float3 _e176 = r;
+                        bool _e177 = bsh_reaches(_e175, x_14, _e176, _e116);
+                        local_4 = !(_e177);
                     } else {
-                        local_5 = true;
+                        local_4 = true;
                     }
-                    bool _e187 = local_5;
-                    if (_e187) {
+                    bool _e180 = local_4;
+                    if (_e180) {
                         continue;
                     }
                     uint li_10 = bsh_nodes[b_9].light;
-                    metal::float3 _e192 = n;
-                    metal::float3 _e193 = r;
-                    metal::float4 _e194 = lobe;
-                    float _e195 = light_weight(li_10, x_14, _e192, _e193, _e194, _e116, rt2_5, light_cones, _buffer_sizes);
-                    weighted_offer(picks, li_10, _e195);
+                    metal::float3 _e185 = n;
+                    metal::float3 _e186 = r;
+                    metal::float4 _e187 = lobe;
+                    float _e188 = light_weight(li_10, x_14, _e185, _e186, _e187, _e116, rt2_5, light_cones, _buffer_sizes);
+                    weighted_offer(picks, li_10, _e188);
                 }
             }
             metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
@@ -2193,115 +2193,115 @@ kernel void main_(
         }
         return;
     }
-    float _e210 = picks.w_sum;
-    if (_e210 > 0.0) {
+    float _e203 = picks.w_sum;
+    if (_e203 > 0.0) {
         uint2 loop_bound_14 = uint2(4294967295u);
         bool loop_init_11 = true;
         while(true) {
             if (metal::all(loop_bound_14 == uint2(0u))) { break; }
             loop_bound_14 -= uint2(loop_bound_14.y == 0u, 1u);
             if (!loop_init_11) {
-                uint _e246 = k;
-                k = _e246 + 1u;
+                uint _e239 = k;
+                k = _e239 + 1u;
             }
             loop_init_11 = false;
-            uint _e217 = k;
-            if (_e217 < K) {
+            uint _e210 = k;
+            if (_e210 < K) {
             } else {
                 break;
             }
             {
-                uint _e221 = k;
-                uint _e226 = k;
-                uint _e228 = picks.light.inner[_e226];
-                uint _e231 = lights[_e228].kind;
-                uint own = (_e231 == LIGHT_TRIANGLE) ? (_e221 + 1u) : 0u;
+                uint _e214 = k;
+                uint _e219 = k;
+                uint _e221 = picks.light.inner[_e219];
+                uint _e224 = lights[_e221].kind;
+                uint own = (_e224 == LIGHT_TRIANGLE) ? (_e214 + 1u) : 0u;
+                uint _e228 = k;
+                uint _e231 = k;
+                uint _e233 = picks.light.inner[_e231];
+                keys.inner[_e228] = metal::uint2(_e233, own);
                 uint _e235 = k;
-                uint _e238 = k;
-                uint _e240 = picks.light.inner[_e238];
-                keys.inner[_e235] = metal::uint2(_e240, own);
-                uint _e242 = k;
-                held.inner[_e242] = true;
+                held.inner[_e235] = true;
             }
         }
-        type_24 _e248 = keys;
-        type_25 _e249 = held;
-        type_14 _e250 = first_holders(_e248, _e249);
+        type_24 _e241 = keys;
+        type_25 _e242 = held;
+        type_14 _e243 = first_holders(_e241, _e242);
         uint2 loop_bound_15 = uint2(4294967295u);
         bool loop_init_12 = true;
         while(true) {
             if (metal::all(loop_bound_15 == uint2(0u))) { break; }
             loop_bound_15 -= uint2(loop_bound_15.y == 0u, 1u);
             if (!loop_init_12) {
-                uint _e308 = k_1;
-                k_1 = _e308 + 1u;
+                uint _e301 = k_1;
+                k_1 = _e301 + 1u;
             }
             loop_init_12 = false;
-            uint _e253 = k_1;
-            if (_e253 < K) {
+            uint _e246 = k_1;
+            if (_e246 < K) {
             } else {
                 break;
             }
             {
-                uint _e256 = h;
-                uint _e257 = pcg_hash(_e256);
-                h = _e257;
-                uint _e258 = h;
-                float _e259 = xi_from_bits(_e258);
-                uint _e260 = h;
-                uint _e261 = pcg_hash(_e260);
-                h = _e261;
-                uint _e262 = h;
-                float _e263 = xi_from_bits(_e262);
-                uint _e265 = k_1;
-                uint li_11 = picks.light.inner[_e265];
+                uint _e249 = h;
+                uint _e250 = pcg_hash(_e249);
+                h = _e250;
+                uint _e251 = h;
+                float _e252 = xi_from_bits(_e251);
+                uint _e253 = h;
+                uint _e254 = pcg_hash(_e253);
+                h = _e254;
+                uint _e255 = h;
+                float _e256 = xi_from_bits(_e255);
+                uint _e258 = k_1;
+                uint li_11 = picks.light.inner[_e258];
                 copies = 0u;
-                uint _e270 = k_1;
-                j_1 = _e270;
+                uint _e263 = k_1;
+                j_1 = _e263;
                 uint2 loop_bound_16 = uint2(4294967295u);
                 bool loop_init_13 = true;
                 while(true) {
                     if (metal::all(loop_bound_16 == uint2(0u))) { break; }
                     loop_bound_16 -= uint2(loop_bound_16.y == 0u, 1u);
                     if (!loop_init_13) {
-                        uint _e285 = j_1;
-                        j_1 = _e285 + 1u;
+                        uint _e278 = j_1;
+                        j_1 = _e278 + 1u;
                     }
                     loop_init_13 = false;
-                    uint _e272 = j_1;
-                    if (_e272 < K) {
+                    uint _e265 = j_1;
+                    if (_e265 < K) {
                     } else {
                         break;
                     }
                     {
-                        uint _e275 = copies;
-                        uint _e278 = j_1;
-                        uint _e280 = k_1;
-                        copies = _e275 + ((_e250.inner[_e278] == _e280) ? 1u : 0u);
+                        uint _e268 = copies;
+                        uint _e271 = j_1;
+                        uint _e273 = k_1;
+                        copies = _e268 + ((_e243.inner[_e271] == _e273) ? 1u : 0u);
                     }
                 }
-                uint _e287 = copies;
-                if (_e287 > 0u) {
-                    Shaded _e290 = t;
-                    metal::float3 _e291 = n;
-                    metal::float3 _e292 = r;
-                    Material _e293 = m;
-                    float _e295 = picks.w_sum;
-                    uint _e297 = k_1;
-                    float _e299 = picks.w.inner[_e297];
-                    float _e301 = weighted_pick_weight(_e295, _e299, K);
-                    uint _e302 = copies;
-                    Shaded _e305 = shade_pick(li_11, x_14, _e291, _e292, _e116, _e293, _e301 * static_cast<float>(_e302), _e259, _e263, eps_4, geo_nodes, geo_tris, view, lights, rt2_5, r2_4, light_cones, _buffer_sizes);
-                    Shaded _e306 = add(_e290, _e305);
-                    t = _e306;
+                uint _e280 = copies;
+                if (_e280 > 0u) {
+                    Shaded _e283 = t;
+                    metal::float3 _e284 = n;
+                    metal::float3 _e285 = r;
+                    Material _e286 = m;
+                    float _e288 = picks.w_sum;
+                    uint _e290 = k_1;
+                    float _e292 = picks.w.inner[_e290];
+                    float _e294 = weighted_pick_weight(_e288, _e292, K);
+                    uint _e295 = copies;
+                    Shaded _e298 = shade_pick(li_11, x_14, _e284, _e285, _e116, _e286, _e294 * static_cast<float>(_e295), _e252, _e256, eps_4, geo_nodes, geo_tris, view, lights, rt2_5, r2_4, light_cones, _buffer_sizes);
+                    Shaded _e299 = add(_e283, _e298);
+                    t = _e299;
                 }
             }
         }
     }
     uint count = picks.n;
-    metal::float3 _e314 = t.e;
-    out_tex.write(metal::float4(_e314, static_cast<float>(count)), metal::uint2(texel_1));
-    metal::float3 _e319 = t.specular;
-    specular_tex.write(metal::float4(_e319, 0.0), metal::uint2(texel_1));
+    metal::float3 _e307 = t.e;
+    out_tex.write(metal::float4(_e307, static_cast<float>(count)), metal::uint2(texel_1));
+    metal::float3 _e312 = t.specular;
+    specular_tex.write(metal::float4(_e312, 0.0), metal::uint2(texel_1));
     return;
 }
