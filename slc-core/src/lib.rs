@@ -45,6 +45,7 @@
 //! assert!((slc_weight(rt2, d2) - 2.0).abs() < 1e-6);
 //! ```
 #![no_std]
+#![forbid(unsafe_code)]
 #![deny(missing_docs)]
 // `!(x > 0.0)` is how the validators reject NaN along with the bad range.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]

@@ -30,6 +30,7 @@
 //! let frame = ctx.render(&VplSettings { culling, ..Default::default() }).unwrap();
 //! assert!(frame.image.is_finite() && frame.image.mean() > 0.0);
 //! ```
+#![forbid(unsafe_code)]
 #![deny(missing_docs)]
 // `!(x > 0.0)` is how the validators reject NaN along with the bad range.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]

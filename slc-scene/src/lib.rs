@@ -29,6 +29,7 @@
 //! let pts = PtScene::new(&Scene::cornell_box(), &[]).unwrap();
 //! assert_eq!(pts.light_count(), 2); // the ceiling light's two triangles
 //! ```
+#![forbid(unsafe_code)]
 #![deny(missing_docs)]
 // `!(x > 0.0)` is how the validators reject NaN along with the bad range.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]

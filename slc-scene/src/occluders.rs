@@ -346,6 +346,14 @@ impl Occluders {
         (inst as u32, mesh.source[i - self.blocks[inst].1 as usize])
     }
 
+    /// Mesh `m`'s triangles in object space, zero-area ones left out (in
+    /// its BVH's leaf order): what an acceleration structure per mesh is
+    /// built from (slc-wgpu's ray-query shadows). Empty for a mesh that
+    /// does not exist.
+    pub fn mesh_triangles(&self, m: usize) -> &[[Vec3; 3]] {
+        self.meshes.get(m).map_or(&[], |mesh| &mesh.tris)
+    }
+
     /// The instances with their current transforms.
     pub fn instances(&self) -> &[Instance] {
         &self.instances

@@ -35,6 +35,9 @@ pub enum Resource {
     DepthTexture,
     /// `texture_storage_2d<format, write>`.
     StorageTexture(OutputFormat),
+    /// `acceleration_structure`: a top-level acceleration structure for
+    /// ray queries ([`Features::ray_query`]).
+    AccelerationStructure,
 }
 
 /// One binding of a kernel.
@@ -336,7 +339,9 @@ pub fn bindings(kernel: Kernel, f: &Features) -> Vec<Binding> {
             if f.selection == Selection::Weighted || f.direct_output != DirectOutput::Irradiance {
                 v.push(b(1, 5, "light_cones", Resource::Read("array<GpuLightCone>"), "each light's bounding sphere and importance cone", "host"));
             }
-            if f.shadows {
+            if f.shadows && f.ray_query {
+                v.push(b(1, 6, "geo_tlas", Resource::AccelerationStructure, "the occluders' instances over one acceleration structure per mesh", "host (slc-scene's `Occluders`)"));
+            } else if f.shadows {
                 v.push(b(1, 6, "geo_nodes", Resource::Read("array<GpuGeoNode>"), "the occluders' BVH nodes", "host (slc-scene's `Occluders`)"));
                 v.push(b(1, 7, "geo_tris", Resource::Read("array<GpuTriangle>"), "the occluders' triangles in leaf order", "host"));
             }
@@ -526,6 +531,7 @@ pub fn declarations(bindings: &[Binding]) -> String {
             Resource::StorageTexture(f) => {
                 format!("var {}: texture_storage_2d<{}, write>", b.name, f.wgsl())
             }
+            Resource::AccelerationStructure => format!("var {}: acceleration_structure", b.name),
         };
         s.push_str(&format!("@group({}) @binding({}) {ty};\n", b.group, b.binding));
     }
@@ -548,6 +554,7 @@ pub fn markdown(bindings: &[Binding]) -> String {
             Resource::StorageTexture(f) => {
                 format!("`{}: texture_storage_2d<{}, write>`", b.name, f.wgsl())
             }
+            Resource::AccelerationStructure => format!("`{}: acceleration_structure`", b.name),
         };
         let content = if b.bound {
             b.content.to_string()
@@ -573,6 +580,8 @@ pub struct BindingCounts {
     pub sampled_textures: u32,
     /// Storage textures.
     pub storage_textures: u32,
+    /// Acceleration structures.
+    pub acceleration_structures: u32,
     /// Bind groups (highest group + 1).
     pub bind_groups: u32,
 }
@@ -589,6 +598,7 @@ pub fn counts(bindings: &[Binding]) -> BindingCounts {
             Resource::Read(_) | Resource::ReadWrite(_) => c.storage_buffers += 1,
             Resource::Texture | Resource::DepthTexture => c.sampled_textures += 1,
             Resource::StorageTexture(_) => c.storage_textures += 1,
+            Resource::AccelerationStructure => c.acceleration_structures += 1,
         }
         c.bind_groups = c.bind_groups.max(b.group + 1);
     }

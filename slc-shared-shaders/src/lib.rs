@@ -43,6 +43,7 @@
 //! // Bind FrameParams, ids, rt2 and r2 as in the table above and dispatch
 //! // ceil(light_count / workgroup_size) workgroups.
 //! ```
+#![forbid(unsafe_code)]
 #![deny(missing_docs)]
 
 pub mod bindings;
@@ -461,6 +462,13 @@ pub struct Features {
     /// its invocations (`bsh_tile.wgsl`; the default), rather than once
     /// per pixel: the same lights in the same order either way.
     pub tile_walk: bool,
+    /// `direct_light`'s shadow rays are the adapter's ray queries through
+    /// an acceleration structure (binding 1.6 `geo_tlas`, wgpu's
+    /// experimental ray query, native adapters only) instead of the WGSL
+    /// BVH walk over `geo_nodes` and `geo_tris`: the same segments, the
+    /// same end margins. Needs `shadows`; not with `counters` (a ray
+    /// query counts no node).
+    pub ray_query: bool,
 }
 
 impl Default for Features {
@@ -485,6 +493,7 @@ impl Default for Features {
             motion_vectors: false,
             reuse_domains: 0,
             tile_walk: true,
+            ray_query: false,
         }
     }
 }
@@ -573,6 +582,12 @@ pub fn check(kernel: Kernel, f: &Features) -> Result<(), ShaderError> {
     if !(1..=256).contains(&f.workgroup_size) {
         return bad(format!("workgroup size {} must be in 1..=256", f.workgroup_size));
     }
+    if f.ray_query && kernel != Kernel::DirectLight {
+        return bad(format!(
+            "{}: only direct_light casts its shadow rays as ray queries",
+            kernel.name()
+        ));
+    }
     match kernel {
         Kernel::VplDenoise
         | Kernel::VplPack
@@ -635,6 +650,15 @@ pub fn check(kernel: Kernel, f: &Features) -> Result<(), ShaderError> {
         Kernel::DirectLight => {
             if f.lights.is_empty() {
                 return bad("direct_light needs at least one light type".into());
+            }
+            if f.ray_query && !f.shadows {
+                return bad("direct_light: ray queries are shadow rays: they need shadows".into());
+            }
+            if f.ray_query && f.counters {
+                return bad(
+                    "direct_light: the counting variant walks the WGSL BVH (a ray query counts no node)"
+                        .into(),
+                );
             }
             if !matches!(
                 f.selection,
@@ -751,6 +775,7 @@ pub fn generate_module(kernel: Kernel, features: &Features) -> Result<Generated,
         glossy => features.glossy,
         counters => features.counters,
         tile_walk => features.tile_walk,
+        ray_query => features.ray_query,
         motion => features.motion_vectors,
         reuse => features.reuse_domains > 0,
         reuse_domains => features.reuse_domains,
@@ -775,7 +800,7 @@ impl Generated {
     pub fn compacted(&self) -> Result<Generated, ShaderError> {
         let mut module = self.module.clone();
         naga::compact::compact(&mut module, naga::compact::KeepUnused::No);
-        let info = Validator::new(ValidationFlags::all(), Capabilities::default())
+        let info = Validator::new(ValidationFlags::all(), capabilities(&module))
             .validate(&module)
             .map_err(|e| ShaderError::Naga {
                 kernel: self.kernel.name(),
@@ -790,17 +815,28 @@ pub fn generate(kernel: Kernel, features: &Features) -> Result<String, ShaderErr
     generate_module(kernel, features).map(|g| g.source)
 }
 
-/// Parses and validates WGSL with naga (WebGPU's baseline capabilities).
+/// Parses and validates WGSL with naga: WebGPU's baseline capabilities,
+/// and ray queries where the module declares an acceleration structure
+/// ([`Features::ray_query`]).
 pub fn validate(
     kernel: &'static str,
     source: &str,
 ) -> Result<(naga::Module, ModuleInfo), ShaderError> {
     let module = naga::front::wgsl::parse_str(source)
         .map_err(|e| ShaderError::Naga { kernel, message: e.emit_to_string(source) })?;
-    let info = Validator::new(ValidationFlags::all(), Capabilities::default())
+    let info = Validator::new(ValidationFlags::all(), capabilities(&module))
         .validate(&module)
         .map_err(|e| ShaderError::Naga { kernel, message: e.emit_to_string(source) })?;
     Ok((module, info))
+}
+
+/// WebGPU's baseline capabilities, with [`Capabilities::RAY_QUERY`] where
+/// `module` declares an acceleration structure.
+fn capabilities(module: &naga::Module) -> Capabilities {
+    let rq = module.global_variables.iter().any(|(_, v)| {
+        matches!(module.types[v.ty].inner, naga::TypeInner::AccelerationStructure { .. })
+    });
+    if rq { Capabilities::default() | Capabilities::RAY_QUERY } else { Capabilities::default() }
 }
 
 /// Every kernel that applies to the features, generated and validated:

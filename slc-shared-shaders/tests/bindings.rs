@@ -42,6 +42,14 @@ fn feature_sets() -> Vec<Features> {
             }
         }
     }
+    // Shadow rays as ray queries (direct_light only).
+    v.push(Features { ray_query: true, ..Features::default() });
+    v.push(Features {
+        ray_query: true,
+        selection: Selection::Weighted,
+        surface: SurfaceSource::Depth,
+        ..Features::default()
+    });
     v
 }
 
@@ -50,6 +58,9 @@ fn tables_match_the_modules() {
     let mut checked = 0;
     for f in feature_sets() {
         for &kernel in &Kernel::ALL {
+            if f.ray_query && kernel != Kernel::DirectLight {
+                continue;
+            }
             if kernel.is_vpl_frame()
                 && f.lights != (LightTypes { vpl: true, ..LightTypes::default() })
             {
@@ -114,6 +125,9 @@ fn tables_match_the_modules() {
                         matches!(inner, TypeInner::Image { class: ImageClass::Storage { .. }, .. }),
                         "{what}"
                     ),
+                    Resource::AccelerationStructure => {
+                        assert!(matches!(inner, TypeInner::AccelerationStructure { .. }), "{what}")
+                    }
                 }
                 // A bound entry is used by an entry point; an unbound one by none.
                 let used = g.info.get_entry_point(0)[handle] != naga::valid::GlobalUse::empty()

@@ -133,6 +133,7 @@ impl KernelLayout {
                                     wgpu::TextureFormat::Rgba32Float
                                 }
                             }),
+                            Resource::AccelerationStructure => B::AccelerationStructure,
                         };
                         (b.binding, kind)
                     })
@@ -141,6 +142,11 @@ impl KernelLayout {
             })
             .collect();
         Ok(KernelLayout { kernel, table, groups })
+    }
+
+    /// Whether the kernel binds a resource called `name`.
+    pub(crate) fn binds(&self, name: &str) -> bool {
+        self.table.iter().any(|b| b.bound && b.name == name)
     }
 
     /// Group `g`'s layout.
@@ -270,6 +276,8 @@ pub(crate) enum B {
     Depth,
     /// `texture_storage_2d<format, write>`.
     Storage(wgpu::TextureFormat),
+    /// `acceleration_structure` (a TLAS for ray queries).
+    AccelerationStructure,
 }
 
 /// A compute bind-group layout with the given `(binding, kind)` entries.
@@ -312,6 +320,9 @@ pub(crate) fn layout_for(
                     format,
                     view_dimension: wgpu::TextureViewDimension::D2,
                 },
+                B::AccelerationStructure => {
+                    wgpu::BindingType::AccelerationStructure { vertex_return: false }
+                }
             };
             wgpu::BindGroupLayoutEntry { binding, visibility, ty, count: None }
         })

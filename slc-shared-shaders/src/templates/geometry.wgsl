@@ -1,5 +1,10 @@
+{% if ray_query %}
+// Shadow rays as the adapter's ray queries through the occluders'
+// acceleration structure (binding geo_tlas; Features::ray_query).
+{% else %}
 // Ray casting through the geometry BVH (bindings geo_nodes, geo_tris): one
 // stack traversal serves closest-hit and shadow (any-hit) rays.
+{% endif %}
 
 {% if counters and kernel == "direct_light" %}
 /// The counting variant's tallies of this invocation: shadow rays cast and
@@ -8,6 +13,18 @@ var<private> rays_cast: u32;
 var<private> nodes_visited: u32;
 
 {% endif %}
+{% if ray_query %}
+/// `true` when the ray `o + t·d`, `t ∈ (t_min, t_max)`, hits a triangle of
+/// `geo_tlas` (any hit; triangles are opaque and two-sided, as `trace`'s).
+fn ray_query_hits(o: vec3f, d: vec3f, t_min: f32, t_max: f32) -> bool {
+    var rq: ray_query;
+    let flags = RAY_FLAG_TERMINATE_ON_FIRST_HIT | RAY_FLAG_FORCE_OPAQUE;
+    // Cull mask: every bit, so every instance whatever its mask.
+    rayQueryInitialize(&rq, geo_tlas, RayDesc(flags, ~0u, t_min, t_max, o, d));
+    rayQueryProceed(&rq);
+    return rayQueryGetCommittedIntersection(&rq).kind != RAY_QUERY_INTERSECTION_NONE;
+}
+{% else %}
 /// A ray hit: distance `t` and triangle index (in `geo_tris`), or
 /// `tri = NO_LIGHT` for a miss.
 struct GeoHit {
@@ -63,6 +80,7 @@ fn trace(o: vec3f, d: vec3f, t_min: f32, t_max: f32, any_hit: bool) -> GeoHit {
     }
     return hit;
 }
+{% endif %}
 
 /// `true` when the open segment from `a` to `b` hits a triangle (a relative
 /// epsilon keeps the end points' own surfaces out).
@@ -76,5 +94,9 @@ fn occluded(a: vec3f, b: vec3f) -> bool {
 {% if counters and kernel == "direct_light" %}
     rays_cast += 1u;
 {% endif %}
+{% if ray_query %}
+    return ray_query_hits(a, dv / len, eps, len - eps);
+{% else %}
     return trace(a, dv / len, eps, len - eps, true).tri != NO_LIGHT;
+{% endif %}
 }
