@@ -9,10 +9,11 @@
 # - issue 46: the default VPL frame at 1080p, 65,536 and 1,048,576 VPLs, twice each (two runs must agree
 #   within 5% per stage);
 # - issue 47: many_lights at 1080p with 4,000 lights (every configuration, then slc's alone with the walk
-#   per pixel instead of per tile, and at eps 0.03), 500 and 20,000 (Bevy at unbounded ranges left out
+#   per pixel instead of per tile, with hardware ray queries for the shadow rays, and at eps 0.03),
+#   500 and 20,000 (Bevy at unbounded ranges left out
 #   there: minutes);
 # - issue 48: the path-tracing suite at 512x512, noise from seed pairs.
-# About 430 s on an NVIDIA H200 (the last call's steps: docs/results/gpu-h200-b/log.txt). Results land
+# About 490 s on an NVIDIA H200 (the last call's steps: docs/results/gpu-h200-b/log.txt). Results land
 # in the call's $OUT; copy them to docs/results/ with the adapter's name and the date.
 set -euo pipefail
 cd "$(git rev-parse --show-toplevel)"
@@ -33,6 +34,7 @@ chmod +x many_lights
 export RUST_LOG=warn
 step 100 env SLC_BEVY_BENCH=$OUT/bevy-4000.json ./many_lights 4000
 step 60 env SLC_BEVY_WALK=pixel SLC_BEVY_BENCH_MODES=slc SLC_BEVY_BENCH=$OUT/bevy-4000-pixel-walk.json ./many_lights 4000
+step 60 env SLC_BEVY_RAY_QUERY=1 SLC_BEVY_BENCH_MODES=slc SLC_BEVY_BENCH=$OUT/bevy-4000-ray-query.json ./many_lights 4000
 step 60 env SLC_BEVY_EPSILON=0.03 SLC_BEVY_BENCH_MODES=slc SLC_BEVY_BENCH=$OUT/bevy-4000-eps003.json ./many_lights 4000
 step 60 env SLC_BEVY_BENCH=$OUT/bevy-500.json ./many_lights 500
 step 120 env SLC_BEVY_BENCH_FRAMES=32 SLC_BEVY_BENCH_MODES=slc,default SLC_BEVY_BENCH=$OUT/bevy-20000.json ./many_lights 20000

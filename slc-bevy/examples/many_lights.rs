@@ -21,7 +21,9 @@
 //! (`WxH`) the window's size; `SLC_BEVY_SHADOWS=off` starts without slc's
 //! shadows; `SLC_BEVY_EPSILON` sets slc's error bound ε (default 0.01; the
 //! bench too); `SLC_BEVY_WALK=pixel` walks the light hierarchy once per
-//! pixel instead of once per tile (`SlcCamera::walk`; the bench too).
+//! pixel instead of once per tile (`SlcCamera::walk`; the bench too);
+//! `SLC_BEVY_RAY_QUERY=1` casts slc's shadow rays as hardware ray queries
+//! where the device has them (`SlcCamera::ray_query`; the bench too).
 //!
 //! **Frame-time bench** (no window, no display): `SLC_BEVY_BENCH=out.json`
 //! renders into an image target at `SLC_BEVY_SIZE` (default 1920x1080)
@@ -136,6 +138,11 @@ fn culling() -> Culling {
     }
 }
 
+/// Whether slc's shadow rays are ray queries: `SLC_BEVY_RAY_QUERY=1`.
+fn ray_query() -> bool {
+    std::env::var("SLC_BEVY_RAY_QUERY").as_deref() == Ok("1")
+}
+
 /// How slc finds each pixel's lights: `SLC_BEVY_WALK` (`tile`, the
 /// default, or `pixel`; another value exits with the reason).
 fn walk() -> DirectWalk {
@@ -242,6 +249,7 @@ fn setup(
                 shadows: std::env::var("SLC_BEVY_SHADOWS").as_deref() != Ok("off"),
                 culling: culling(),
                 walk: walk(),
+                ray_query: ray_query(),
                 ..default()
             },
             Tonemapping::AcesFitted,
@@ -540,8 +548,9 @@ fn bench(lights: usize, out: &str) -> Result<(), String> {
         .get_resource::<RenderAdapterInfo>()
         .map_or("unknown".to_string(), |a| format!("{} ({:?})", a.name, a.backend));
     let slc_walk = format!("{:?}", walk()).to_lowercase();
+    let rays = if ray_query() { "ray queries where the device has them" } else { "a WGSL walk" };
     println!(
-        "many_lights bench: {lights} lights, {w}x{h}, {frames} timed frames, slc's {slc_walk} walk, on {adapter}"
+        "many_lights bench: {lights} lights, {w}x{h}, {frames} timed frames, slc's {slc_walk} walk, shadow rays by {rays}, on {adapter}"
     );
     let mut results = Vec::new();
     for (name, mode, shadows, resample, reuse) in CONFIGS {
@@ -644,6 +653,7 @@ fn bench(lights: usize, out: &str) -> Result<(), String> {
         "height": h,
         "timed_frames": frames,
         "slc_walk": slc_walk,
+        "slc_ray_query_asked": ray_query(),
         "timestamps": timestamps,
         "configurations": results,
     });

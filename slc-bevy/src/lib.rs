@@ -151,12 +151,12 @@ use bevy::render::{Extract, ExtractSchedule, Render, RenderApp, RenderStartup, R
 /// How an [`SlcCamera`]'s lights are culled (slc's one culling vocabulary).
 pub use slc_wgpu::Culling;
 pub use slc_wgpu::passes::DirectCounts;
-/// How an [`SlcCamera`]'s direct pass finds each pixel's lights in range.
-pub use slc_wgpu::passes::DirectWalk;
 use slc_wgpu::passes::{
     DirectInputs, DirectOutputs, DirectPass, DirectPassDesc, DirectReuse, DirectSelection,
     DirectSettings, MaterialInputs, Shadows, TemporalInputs, TemporalPass, TemporalPassDesc,
 };
+/// How an [`SlcCamera`]'s direct pass finds each pixel's lights in range.
+pub use slc_wgpu::passes::{DirectWalk, ShadowRays};
 use slc_wgpu::{
     GBuffer, GpuContext, Instance, Light, LightSet, Occluders, PointLight as SlcPoint,
     SpotLight as SlcSpot, Surface, SurfaceDesc, TemporalSettings, TemporalView, TriangleLight,
@@ -235,6 +235,13 @@ pub struct SlcCamera {
     /// depends on the adapter (many_lights' bench compares them:
     /// `SLC_BEVY_WALK`).
     pub walk: DirectWalk,
+    /// Cast the shadow rays as the render device's hardware ray queries
+    /// where it has them (slc-wgpu's `ShadowRays::RayQuery`; Bevy's default
+    /// `WgpuSettings` ask for every feature the adapter has, wgpu's
+    /// experimental ray queries included), else the WGSL walk: the same
+    /// rays, the same image. Off by default until a real GPU has timed
+    /// both (many_lights: `SLC_BEVY_RAY_QUERY=1`).
+    pub ray_query: bool,
 }
 
 impl Default for SlcCamera {
@@ -253,6 +260,7 @@ impl Default for SlcCamera {
             shadows: true,
             count_work: false,
             walk: DirectWalk::Tile,
+            ray_query: false,
         }
     }
 }
@@ -747,8 +755,9 @@ struct View {
     composite_groups: [wgpu::BindGroup; 2],
     /// The light set changed size this frame (the history is capped).
     changed: bool,
-    /// The occluders' generation the pass shadows against, if shadowed.
-    shadowed: Option<u64>,
+    /// The occluders' generation the pass shadows against and how its
+    /// rays are cast, if shadowed.
+    shadowed: Option<(u64, ShadowRays)>,
     accumulated: wgpu::TextureView,
     size: (u32, u32),
     lights: usize,
@@ -992,10 +1001,16 @@ fn prepare_views(
             skip(&mut views, e, &mut report);
             continue;
         }
+        let rays = if settings.ray_query && gpu.ctx.ray_query {
+            ShadowRays::RayQuery
+        } else {
+            ShadowRays::Software
+        };
         let shadowed =
-            (settings.shadows && occluders.error.is_none()).then_some(occluders.generation);
+            (settings.shadows && occluders.error.is_none()).then_some((occluders.generation, rays));
         if v.shadowed != shadowed {
-            let sh = shadowed.map(|_| Shadows::new(&occluders.occluders));
+            let sh =
+                shadowed.map(|(_, rays)| Shadows { rays, ..Shadows::new(&occluders.occluders) });
             if let Err(e) = v.pass.set_shadows(sh) {
                 skip(&mut views, e.to_string(), &mut report);
                 continue;

@@ -20,6 +20,11 @@ pub struct GpuContext {
     pub limits: wgpu::Limits,
     /// Whether GPU timestamps can be taken in compute passes.
     pub timestamps: bool,
+    /// Whether the device has wgpu's experimental ray queries
+    /// (`Features::EXPERIMENTAL_RAY_QUERY`): what the direct pass's
+    /// [`ShadowRays::RayQuery`](crate::passes::direct::ShadowRays) needs.
+    /// Only [`GpuContext::open_with`] asks for them.
+    pub ray_query: bool,
     errors: Arc<Mutex<Vec<String>>>,
 }
 
@@ -28,9 +33,14 @@ impl GpuContext {
     /// `WGPU_POWER_PREF` environment variables are honoured) and opens a
     /// device with the adapter's full limits.
     pub fn new() -> Result<GpuContext, GpuError> {
+        GpuContext::with_options(&GpuOptions::default())
+    }
+
+    /// [`GpuContext::new`] with `options`.
+    pub fn with_options(options: &GpuOptions) -> Result<GpuContext, GpuError> {
         let instance =
             wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle_from_env());
-        GpuContext::open(&pick_adapter(&instance, None)?)
+        GpuContext::open_with(&pick_adapter(&instance, None)?, options)
     }
 
     /// Opens a device on `adapter` with the adapter's full limits and
@@ -39,15 +49,34 @@ impl GpuContext {
     /// An application that picks its own adapter (one that can present to
     /// its window, as `slc view` does) starts here.
     pub fn open(adapter: &wgpu::Adapter) -> Result<GpuContext, GpuError> {
+        GpuContext::open_with(adapter, &GpuOptions::default())
+    }
+
+    /// [`GpuContext::open`] with `options`: with
+    /// [`GpuOptions::ray_query`], the device also gets wgpu's
+    /// experimental ray queries where the adapter has them
+    /// ([`GpuContext::ray_query`] says whether it did).
+    pub fn open_with(
+        adapter: &wgpu::Adapter,
+        options: &GpuOptions,
+    ) -> Result<GpuContext, GpuError> {
         let info = adapter.get_info();
         let limits = adapter.limits();
         let timestamps = adapter.features().contains(wgpu::Features::TIMESTAMP_QUERY);
-        let required_features =
+        let ray_query = options.ray_query
+            && adapter.features().contains(wgpu::Features::EXPERIMENTAL_RAY_QUERY);
+        let mut required_features =
             if timestamps { wgpu::Features::TIMESTAMP_QUERY } else { wgpu::Features::empty() };
+        let mut experimental_features = wgpu::ExperimentalFeatures::disabled();
+        if ray_query {
+            required_features |= wgpu::Features::EXPERIMENTAL_RAY_QUERY;
+            experimental_features = experimental_ray_query();
+        }
         let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
             label: Some("slc"),
             required_features,
             required_limits: limits.clone(),
+            experimental_features,
             ..Default::default()
         }))
         .map_err(|e| GpuError::Device(e.to_string()))?;
@@ -64,7 +93,7 @@ impl GpuContext {
                 v.push(format!("device lost ({reason:?}): {msg}"));
             }
         });
-        Ok(GpuContext { device, queue, adapter: info, limits, timestamps, errors })
+        Ok(GpuContext { device, queue, adapter: info, limits, timestamps, ray_query, errors })
     }
 
     /// Wraps a device and queue the caller (an engine) already has: no
@@ -76,7 +105,8 @@ impl GpuContext {
         let adapter = device.adapter_info();
         let limits = device.limits();
         let timestamps = device.features().contains(wgpu::Features::TIMESTAMP_QUERY);
-        GpuContext { device, queue, adapter, limits, timestamps, errors: Arc::default() }
+        let ray_query = device.features().contains(wgpu::Features::EXPERIMENTAL_RAY_QUERY);
+        GpuContext { device, queue, adapter, limits, timestamps, ray_query, errors: Arc::default() }
     }
 
     /// One line naming the adapter, e.g. "llvmpipe (LLVM 15.0.6, 256 bits), Vulkan, Cpu".
@@ -110,6 +140,29 @@ impl GpuContext {
             .map_err(|e| GpuError::Device(e.to_string()))?;
         self.take_errors()
     }
+}
+
+/// How [`GpuContext::open_with`] opens a device.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct GpuOptions {
+    /// Ask for wgpu's experimental ray queries
+    /// (`Features::EXPERIMENTAL_RAY_QUERY`) where the adapter has them,
+    /// for the direct pass's hardware shadow rays. wgpu marks them
+    /// experimental: not yet held to WebGPU's guarantees on every driver.
+    /// Default: no.
+    pub ray_query: bool,
+}
+
+/// wgpu's opt-in to its experimental features, asked for by
+/// [`GpuOptions::ray_query`] only.
+#[allow(unsafe_code)]
+fn experimental_ray_query() -> wgpu::ExperimentalFeatures {
+    // SAFETY: wgpu's token says the caller accepts that experimental
+    // features may not uphold its validation guarantees. slc asks for it
+    // only when the application sets `GpuOptions::ray_query`, and uses
+    // ray queries only as shadow rays through acceleration structures it
+    // builds from validated, finite geometry (slc-scene's `Occluders`).
+    unsafe { wgpu::ExperimentalFeatures::enabled() }
 }
 
 /// The adapter slc runs on, compatible with `surface` when one is given:

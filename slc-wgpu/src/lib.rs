@@ -61,7 +61,7 @@ mod record;
 mod texture;
 pub mod timing;
 
-pub use context::{GpuContext, pick_adapter};
+pub use context::{GpuContext, GpuOptions, pick_adapter};
 /// The vector and matrix types the API takes (`Vec3` positions and
 /// colours, `Mat4` view-projections): glam, re-exported so that an engine
 /// needs no second dependency, or one at this exact version.

@@ -3,6 +3,16 @@
 //! buffers the kernels' `trace` walks (slc-shared-shaders' `geometry.wgsl`).
 //! The path tracer's scene and the direct pass's shadows go through here;
 //! slc-scene's module is re-exported whole.
+//!
+//! **Ray queries.** For the direct pass's hardware shadow rays
+//! ([`ShadowRays::RayQuery`](crate::passes::direct::ShadowRays)) the same
+//! occluders also become the adapter's acceleration structures
+//! (`GpuAccel`): one bottom level per mesh, built once from its
+//! object-space triangles, and a top level over the instances with their
+//! transforms, rebuilt whenever one moves (wgpu 30 builds, it does not
+//! refit: O(instances) on the GPU). Unlike the flattened BVH, an instance
+//! costs no copy of its mesh; the flattened BVH's buffers are kept beside
+//! them all the same (the counting variant walks them).
 
 use crate::kernel::storage;
 use crate::{GpuContext, GpuError};
@@ -72,11 +82,142 @@ pub(crate) fn check_limits(gpu: &GpuContext, o: &Occluders) -> Result<(), GpuErr
     gpu.require("max_storage_buffer_binding_size (occluder BVH nodes)", nodes, max)
 }
 
+/// Checks the acceleration structures of `o` against the device's limits
+/// (and that the device has ray queries at all).
+pub(crate) fn check_accel_limits(gpu: &GpuContext, o: &Occluders) -> Result<(), GpuError> {
+    if !gpu.ray_query {
+        return Err(GpuError::Setting(format!(
+            "ray-query shadows need a device with wgpu's EXPERIMENTAL_RAY_QUERY, which {} was not opened with (GpuContext::open_with and GpuOptions::ray_query ask for it where the adapter has it); ShadowRays::Software works everywhere",
+            gpu.describe()
+        )));
+    }
+    let lim = &gpu.limits;
+    gpu.require(
+        "max_tlas_instance_count (occluder instances)",
+        o.instances().len() as u64,
+        lim.max_tlas_instance_count as u64,
+    )?;
+    let largest = (0..o.mesh_count()).map(|m| o.mesh_triangles(m).len()).max().unwrap_or(0);
+    gpu.require(
+        "max_blas_primitive_count (triangles of the largest occluder mesh)",
+        largest as u64,
+        lim.max_blas_primitive_count as u64,
+    )
+}
+
+/// Occluders as the adapter's acceleration structures (the module docs,
+/// "Ray queries"): a bottom level per mesh and the top level `tlas` the
+/// kernels bind as `geo_tlas`, for one layout of the occluders.
+pub(crate) struct GpuAccel {
+    /// One per mesh of the occluders, in mesh order (kept alive: the top
+    /// level refers to them).
+    blases: Vec<wgpu::Blas>,
+    pub(crate) tlas: wgpu::Tlas,
+}
+
+/// `m` as the row-major 3×4 matrix a top-level instance carries.
+fn row_major(m: &Affine3A) -> [f32; 12] {
+    let (c, t) = (m.matrix3, m.translation);
+    [
+        c.x_axis.x, c.y_axis.x, c.z_axis.x, t.x, //
+        c.x_axis.y, c.y_axis.y, c.z_axis.y, t.y, //
+        c.x_axis.z, c.y_axis.z, c.z_axis.z, t.z,
+    ]
+}
+
+impl GpuAccel {
+    /// Builds the bottom level of each of `o`'s meshes and the top level
+    /// over its instances (limits checked first), and submits the builds.
+    pub(crate) fn new(gpu: &GpuContext, o: &Occluders) -> Result<Self, GpuError> {
+        check_accel_limits(gpu, o)?;
+        let sizes: Vec<wgpu::BlasTriangleGeometrySizeDescriptor> = (0..o.mesh_count())
+            .map(|m| wgpu::BlasTriangleGeometrySizeDescriptor {
+                vertex_format: wgpu::VertexFormat::Float32x3,
+                vertex_count: 3 * o.mesh_triangles(m).len() as u32,
+                index_format: None,
+                index_count: None,
+                flags: wgpu::AccelerationStructureGeometryFlags::OPAQUE,
+            })
+            .collect();
+        let vertices: Vec<wgpu::Buffer> = (0..o.mesh_count())
+            .map(|m| {
+                let usage = wgpu::BufferUsages::BLAS_INPUT;
+                storage(gpu, "slc occluder mesh", bytemuck::cast_slice(o.mesh_triangles(m)), usage)
+            })
+            .collect();
+        let blases: Vec<wgpu::Blas> = sizes
+            .iter()
+            .map(|size| {
+                gpu.device.create_blas(
+                    &wgpu::CreateBlasDescriptor {
+                        label: Some("slc occluder mesh"),
+                        flags: wgpu::AccelerationStructureFlags::PREFER_FAST_TRACE,
+                        update_mode: wgpu::AccelerationStructureUpdateMode::Build,
+                    },
+                    wgpu::BlasGeometrySizeDescriptors::Triangles {
+                        descriptors: vec![size.clone()],
+                    },
+                )
+            })
+            .collect();
+        let tlas = gpu.device.create_tlas(&wgpu::CreateTlasDescriptor {
+            label: Some("slc occluder instances"),
+            max_instances: o.instances().len().max(1) as u32,
+            flags: wgpu::AccelerationStructureFlags::PREFER_FAST_TRACE,
+            update_mode: wgpu::AccelerationStructureUpdateMode::Build,
+        });
+        let mut accel = GpuAccel { blases, tlas };
+        accel.place(o);
+        let entries: Vec<wgpu::BlasBuildEntry> = (0..sizes.len())
+            .map(|m| wgpu::BlasBuildEntry {
+                blas: &accel.blases[m],
+                geometry: wgpu::BlasGeometries::TriangleGeometries(vec![
+                    wgpu::BlasTriangleGeometry {
+                        size: &sizes[m],
+                        vertex_buffer: &vertices[m],
+                        first_vertex: 0,
+                        vertex_stride: 12,
+                        index_buffer: None,
+                        first_index: None,
+                        transform_buffer: None,
+                        transform_buffer_offset: None,
+                    },
+                ]),
+            })
+            .collect();
+        let mut encoder = gpu.device.create_command_encoder(&Default::default());
+        encoder.build_acceleration_structures(&entries, [&accel.tlas]);
+        gpu.queue.submit([encoder.finish()]);
+        Ok(accel)
+    }
+
+    /// Sets the top level's instances to `o`'s (the same layout: each
+    /// instance keeps its mesh).
+    fn place(&mut self, o: &Occluders) {
+        for (i, inst) in o.instances().iter().enumerate() {
+            let blas = &self.blases[inst.mesh as usize];
+            self.tlas[i] = Some(wgpu::TlasInstance::new(blas, row_major(&inst.transform), 0, 0xff));
+        }
+    }
+
+    /// Rebuilds the top level over `o`'s moved instances (the layout it
+    /// was built for) and submits the build: O(instances), no mesh.
+    fn replace(&mut self, gpu: &GpuContext, o: &Occluders) {
+        self.place(o);
+        let mut encoder = gpu.device.create_command_encoder(&Default::default());
+        encoder.build_acceleration_structures(std::iter::empty(), [&self.tlas]);
+        gpu.queue.submit([encoder.finish()]);
+    }
+}
+
 /// Occluders for shadow rays, uploaded: nodes and triangles (no material,
-/// no light), with the layout and transforms they hold.
+/// no light), with the layout and transforms they hold, and with ray
+/// queries their acceleration structures.
 pub(crate) struct GpuOccluders {
     pub(crate) nodes: wgpu::Buffer,
     pub(crate) tris: wgpu::Buffer,
+    /// The acceleration structures, for ray-query shadows.
+    pub(crate) accel: Option<GpuAccel>,
     /// [`Occluders::layout_id`] of the contents.
     layout: u64,
     /// Each instance's transform in the contents.
@@ -84,14 +225,17 @@ pub(crate) struct GpuOccluders {
 }
 
 impl GpuOccluders {
-    /// Uploads `o` after checking the device's limits.
-    pub(crate) fn new(gpu: &GpuContext, o: &Occluders) -> Result<Self, GpuError> {
+    /// Uploads `o` after checking the device's limits, and with
+    /// `ray_query` builds its acceleration structures.
+    pub(crate) fn new(gpu: &GpuContext, o: &Occluders, ray_query: bool) -> Result<Self, GpuError> {
         check_limits(gpu, o)?;
+        let accel = if ray_query { Some(GpuAccel::new(gpu, o)?) } else { None };
         let (nodes, tris) = (gpu_nodes(o), gpu_triangles(o, |_| (0, NO_LIGHT)));
         let usage = wgpu::BufferUsages::empty();
         Ok(GpuOccluders {
             nodes: storage(gpu, "slc occluder nodes", bytemuck::cast_slice(&nodes), usage),
             tris: storage(gpu, "slc occluder triangles", bytemuck::cast_slice(&tris), usage),
+            accel,
             layout: o.layout_id(),
             transforms: Self::transforms_of(o),
         })
@@ -112,9 +256,13 @@ impl GpuOccluders {
     /// and instances, moved), only what moving changed is written: the top
     /// level and the moved instances' blocks (an engine's static scene
     /// with a few moving objects uploads a few kilobytes a frame); with
-    /// another layout of the same sizes, everything.
+    /// another layout of the same sizes, everything. The acceleration
+    /// structures, where there are, get a new top level for the same
+    /// layout; another layout is `false` (it may instance other meshes).
     pub(crate) fn rewrite(&mut self, gpu: &GpuContext, o: &Occluders) -> bool {
-        if buffer_sizes(o) != (self.nodes.size(), self.tris.size()) {
+        if buffer_sizes(o) != (self.nodes.size(), self.tris.size())
+            || (self.accel.is_some() && o.layout_id() != self.layout)
+        {
             return false;
         }
         let node_at = |i: usize| (i * size_of::<GpuGeoNode>()) as u64;
@@ -137,6 +285,9 @@ impl GpuOccluders {
             if !moved.is_empty() {
                 let top = nodes_as_gpu(&o.nodes()[..o.top_level_len()]);
                 gpu.queue.write_buffer(&self.nodes, 0, bytemuck::cast_slice(&top));
+                if let Some(a) = self.accel.as_mut() {
+                    a.replace(gpu, o);
+                }
             }
         } else {
             let tris = gpu_triangles(o, |_| (0, NO_LIGHT));

@@ -67,8 +67,10 @@ impl GpuDirect {
     pub fn set_shadows(&mut self, shadows: Option<(&Occluders, f32)>) -> Result<(), GpuError> {
         self.shadows = shadows.map(|(o, f)| (o.clone(), f));
         if let Some(pass) = self.pass.as_mut() {
-            let sh =
-                self.shadows.as_ref().map(|(o, f)| Shadows { occluders: o, normal_offset: *f });
+            let sh = self
+                .shadows
+                .as_ref()
+                .map(|(o, f)| Shadows { normal_offset: *f, ..Shadows::new(o) });
             pass.set_shadows(sh)?;
         }
         Ok(())
@@ -130,8 +132,10 @@ impl GpuDirect {
                 ..DirectPassDesc::new(w, h)
             };
             let mut pass = DirectPass::new(&gpu, &self.lights, &desc)?;
-            let sh =
-                self.shadows.as_ref().map(|(o, f)| Shadows { occluders: o, normal_offset: *f });
+            let sh = self
+                .shadows
+                .as_ref()
+                .map(|(o, f)| Shadows { normal_offset: *f, ..Shadows::new(o) });
             pass.set_shadows(sh)?;
             self.pass = Some(pass);
         }

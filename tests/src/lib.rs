@@ -37,6 +37,39 @@ fn context() -> &'static Result<slc_wgpu::GpuContext, String> {
     })
 }
 
+/// The shared context opened with wgpu's ray queries, or why there is
+/// none (no adapter, or one without `EXPERIMENTAL_RAY_QUERY`).
+static RQ_CTX: OnceLock<Result<slc_wgpu::GpuContext, String>> = OnceLock::new();
+
+fn ray_query_context() -> &'static Result<slc_wgpu::GpuContext, String> {
+    RQ_CTX.get_or_init(|| {
+        let options = slc_wgpu::GpuOptions { ray_query: true };
+        match slc_wgpu::GpuContext::with_options(&options) {
+            Ok(c) if c.ray_query => {
+                eprintln!("ray-query tests run on: {}", c.describe());
+                Ok(c)
+            }
+            Ok(c) => Err(format!(
+                "{} has no ray queries (wgpu's EXPERIMENTAL_RAY_QUERY; Mesa 25's lavapipe has: tools/lavapipe-ray-query.sh)",
+                c.describe()
+            )),
+            Err(e) => Err(e.to_string()),
+        }
+    })
+}
+
+/// The shared context with ray queries, for tests declared
+/// [`Needs::RayQuery`] (which [`run`] starts only when it exists).
+///
+/// # Panics
+/// Without one: the calling test is not declared [`Needs::RayQuery`].
+pub fn ray_query_gpu() -> Option<&'static slc_wgpu::GpuContext> {
+    match ray_query_context() {
+        Ok(c) => Some(c),
+        Err(e) => panic!("this test uses ray queries but is not declared Needs::RayQuery ({e})"),
+    }
+}
+
 /// The shared GPU context, for tests declared [`Needs::Gpu`] (which
 /// [`run`] starts only when an adapter exists). Always `Some`: the
 /// `Option` keeps call sites short.
@@ -63,6 +96,11 @@ pub enum Needs {
     /// the program under it). Without one the test shows as ignored;
     /// under `SLC_REQUIRE_DISPLAY=1` (CI, which installs Xvfb) it fails.
     Display,
+    /// A GPU adapter with wgpu's experimental ray queries
+    /// ([`ray_query_gpu`]). Without one the test shows as ignored; under
+    /// `SLC_REQUIRE_RAY_QUERY=1` (CI's run on Mesa 25's lavapipe,
+    /// `tools/lavapipe-ray-query.sh`) it fails.
+    RayQuery,
 }
 
 /// Why no window can be opened here, or `None` when a display exists or
@@ -127,6 +165,17 @@ pub fn run(tests: &[(&'static str, Needs, fn())]) -> std::process::ExitCode {
     }
     let no_display =
         if tests.iter().any(|t| t.1 == Needs::Display) { display_missing() } else { None };
+    let no_ray_query = if tests.iter().any(|t| t.1 == Needs::RayQuery) {
+        ray_query_context().as_ref().err().cloned()
+    } else {
+        None
+    };
+    let ray_query_required = std::env::var("SLC_REQUIRE_RAY_QUERY").as_deref() == Ok("1");
+    if let Some(reason) = &no_ray_query {
+        let n = tests.iter().filter(|t| t.1 == Needs::RayQuery).count();
+        let verb = if ray_query_required { "fail (SLC_REQUIRE_RAY_QUERY=1)" } else { "ignored" };
+        eprintln!("{n} ray-query test(s) {verb}: {reason}");
+    }
     let display_required = std::env::var("SLC_REQUIRE_DISPLAY").as_deref() == Ok("1");
     if let Some(reason) = &no_display {
         let n = tests.iter().filter(|t| t.1 == Needs::Display).count();
@@ -136,6 +185,19 @@ pub fn run(tests: &[(&'static str, Needs, fn())]) -> std::process::ExitCode {
     let trials = tests
         .iter()
         .map(|&(name, needs, test)| match (needs, &missing, &no_display) {
+            (Needs::RayQuery, _, _) => match &no_ray_query {
+                Some(reason) => {
+                    let why = format!("needs ray queries: {reason}");
+                    libtest_mimic::Trial::test(name, move || Err(why.into()))
+                        .with_kind("ray query")
+                        .with_ignored_flag(!ray_query_required)
+                }
+                None => libtest_mimic::Trial::test(name, move || {
+                    test();
+                    Ok(())
+                })
+                .with_kind("ray query"),
+            },
             (Needs::Gpu | Needs::Display, Some(reason), _) => {
                 let why = format!("needs a GPU adapter: {reason}");
                 libtest_mimic::Trial::test(name, move || Err(why.into()))
@@ -168,8 +230,10 @@ pub fn run(tests: &[(&'static str, Needs, fn())]) -> std::process::ExitCode {
     // Exit with no GPU work in flight: a short test binary leaving
     // lavapipe busy crashed in the process's exit handlers about 1 run in
     // 30 after every test had passed.
-    if let Some(Ok(gpu)) = CTX.get() {
-        gpu.wait().ok();
+    for ctx in [CTX.get(), RQ_CTX.get()] {
+        if let Some(Ok(gpu)) = ctx {
+            gpu.wait().ok();
+        }
     }
     conclusion.exit_code()
 }

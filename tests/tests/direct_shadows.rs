@@ -21,6 +21,13 @@
 //!   the moved geometry and of none; a bad normal offset is refused.
 //! - 100,000 point lights (unshadowed): every frame finite, the mean of 32
 //!   frames equal to the unculled brute force per 8×8 block.
+//! - Hardware shadow rays ([`ShadowRays::RayQuery`], on a device with
+//!   wgpu's ray queries: Mesa 25's lavapipe in CI, `tools/lavapipe-ray-query.sh`):
+//!   the exact image equals the brute force as the software walk's does,
+//!   moved, laid out anew, with no instance and switched to software and
+//!   back; a frame of 8 weighted picks equals the software walk's frame
+//!   (the same picks) but at edge-grazing rays. On a device without them
+//!   the choice is a typed error that changes nothing.
 
 use glam::{Affine3A, Quat, Vec3};
 use slc_core::light::{Light, PointLight, SpotLight, connection_cosine, inverse_square};
@@ -35,7 +42,7 @@ use slc_tests::engine;
 use slc_tests::gpu;
 use slc_wgpu::passes::{
     Culling, DirectInputs, DirectPass, DirectPassDesc, DirectReuse, DirectSelection,
-    DirectSettings, GBuffer, Shadows, Surface, SurfaceDesc,
+    DirectSettings, GBuffer, ShadowRays, Shadows, Surface, SurfaceDesc,
 };
 use slc_wgpu::{GpuContext, GpuError};
 
@@ -235,7 +242,7 @@ fn exact_shadows_and_moving_instances() {
     assert_exact(&frame(gpu, &s, &mut pass, Culling::None, 2), &brute_force(&s, None), "off");
     // A bad offset is a typed error and changes nothing.
     for bad in [-1e-3, f32::NAN, f32::INFINITY] {
-        let sh = Shadows { occluders: &occ, normal_offset: bad };
+        let sh = Shadows { normal_offset: bad, ..Shadows::new(&occ) };
         assert!(matches!(pass.set_shadows(Some(sh)), Err(GpuError::Setting(_))), "offset {bad}");
     }
     assert_exact(&frame(gpu, &s, &mut pass, Culling::None, 3), &brute_force(&s, None), "refused");
@@ -623,7 +630,116 @@ fn a_hundred_thousand_lights() {
     gpu.take_errors().unwrap();
 }
 
+/// Shadows cast as ray queries.
+fn ray_queries(o: &Occluders) -> Shadows<'_> {
+    Shadows { rays: ShadowRays::RayQuery, ..Shadows::new(o) }
+}
+
+/// Pixels where two frames differ by more than 1e-4 relative; panics past
+/// 0.5% of the shaded pixels (edge-grazing rays the two triangle tests
+/// decide differently).
+fn assert_same(a: &[[f32; 4]], b: &[[f32; 4]], s: &Setup, what: &str) {
+    let (mut shaded, mut off) = (0, 0);
+    for ((x, y), p) in a.iter().zip(b).zip(&s.points) {
+        if p.is_none() {
+            continue;
+        }
+        shaded += 1;
+        let d = (0..3).map(|c| (x[c] - y[c]).abs()).fold(0.0, f32::max);
+        let m = (0..3).map(|c| x[c].abs().max(y[c].abs())).fold(0.0, f32::max);
+        if d > 1e-4 * m + 1e-7 {
+            off += 1;
+        }
+    }
+    assert!(shaded > 2000, "{what}: only {shaded} shaded pixels");
+    assert!(off * 200 <= shaded, "{what}: {off} of {shaded} pixels differ");
+}
+
+fn ray_query_exact_shadows_and_moving_instances() {
+    let Some(gpu) = slc_tests::ray_query_gpu() else { return };
+    let s = setup(gpu);
+    let mut pass = pass(gpu, &s, DirectSelection::All);
+    let first = instances(Vec3::new(0.38, 0.18, 0.33));
+    let mut occ = Occluders::new(&s.meshes, &first).unwrap();
+    pass.set_shadows(Some(ray_queries(&occ))).unwrap();
+    let shadowed = brute_force(&s, Some(&first));
+    let hardware = frame(gpu, &s, &mut pass, Culling::None, 0);
+    assert_exact(&hardware, &shadowed, "ray queries");
+    // The software walk on the same device gives the same image.
+    pass.set_shadows(Some(Shadows::new(&occ))).unwrap();
+    let software = frame(gpu, &s, &mut pass, Culling::None, 0);
+    assert_same(&hardware, &software, &s, "ray queries against the software walk");
+    // Back to ray queries, then the second cube moves: the top level is
+    // rebuilt over the moved instance, the bottom levels kept.
+    pass.set_shadows(Some(ray_queries(&occ))).unwrap();
+    let moved = instances(Vec3::new(0.12, 0.4, 0.4));
+    let transforms: Vec<Affine3A> = moved.iter().map(|i| i.transform).collect();
+    assert!(occ.set_transforms(&transforms).unwrap());
+    pass.set_shadows(Some(ray_queries(&occ))).unwrap();
+    assert_exact(
+        &frame(gpu, &s, &mut pass, Culling::None, 1),
+        &brute_force(&s, Some(&moved)),
+        "moved",
+    );
+    // Laid out anew: new acceleration structures.
+    occ.set_instances(&first).unwrap();
+    pass.set_shadows(Some(ray_queries(&occ))).unwrap();
+    assert_exact(&frame(gpu, &s, &mut pass, Culling::None, 4), &shadowed, "laid out again");
+    // No instance: nothing occludes.
+    let empty = Occluders::new(&s.meshes, &[]).unwrap();
+    pass.set_shadows(Some(ray_queries(&empty))).unwrap();
+    let unshadowed = brute_force(&s, None);
+    assert_exact(&frame(gpu, &s, &mut pass, Culling::None, 2), &unshadowed, "no instance");
+    pass.set_shadows(None).unwrap();
+    assert_exact(&frame(gpu, &s, &mut pass, Culling::None, 3), &unshadowed, "off");
+    gpu.take_errors().unwrap();
+}
+
+fn ray_query_picks_equal_the_software_walk() {
+    let Some(gpu) = slc_tests::ray_query_gpu() else { return };
+    let s = setup(gpu);
+    let occ = Occluders::new(&s.meshes, &instances(Vec3::new(0.38, 0.18, 0.33))).unwrap();
+    let culling = Culling::Stochastic(RangeParams::new(0.01, 1.0).unwrap());
+    for selection in [DirectSelection::Weighted { k: 8 }, DirectSelection::Resampled { k: 4 }] {
+        let mut pass = pass(gpu, &s, selection);
+        pass.set_shadows(Some(Shadows::new(&occ))).unwrap();
+        let software = frame(gpu, &s, &mut pass, culling, 5);
+        pass.set_shadows(Some(ray_queries(&occ))).unwrap();
+        let hardware = frame(gpu, &s, &mut pass, culling, 5);
+        assert_same(&hardware, &software, &s, &format!("{selection:?}"));
+        let lit = hardware.iter().filter(|p| p[0] + p[1] + p[2] > 0.0).count();
+        assert!(lit > 1000, "{selection:?}: only {lit} lit pixels");
+    }
+    gpu.take_errors().unwrap();
+}
+
+/// On a device opened without ray queries, asking for them is a typed
+/// error that leaves the pass as it was.
+fn ray_queries_without_the_feature() {
+    let Some(gpu) = gpu() else { return };
+    assert!(!gpu.ray_query, "GpuContext::new asks for no ray queries");
+    let s = setup(gpu);
+    let mut pass = pass(gpu, &s, DirectSelection::All);
+    let first = instances(Vec3::new(0.38, 0.18, 0.33));
+    let occ = Occluders::new(&s.meshes, &first).unwrap();
+    pass.set_shadows(Some(Shadows::new(&occ))).unwrap();
+    let r = pass.set_shadows(Some(ray_queries(&occ)));
+    assert!(
+        matches!(&r, Err(GpuError::Setting(m)) if m.contains("EXPERIMENTAL_RAY_QUERY")),
+        "{r:?}"
+    );
+    assert_exact(
+        &frame(gpu, &s, &mut pass, Culling::None, 0),
+        &brute_force(&s, Some(&first)),
+        "kept",
+    );
+    gpu.take_errors().unwrap();
+}
+
 slc_tests::harness!(
+    RayQuery: ray_query_exact_shadows_and_moving_instances,
+    RayQuery: ray_query_picks_equal_the_software_walk,
+    Gpu: ray_queries_without_the_feature,
     Gpu: exact_shadows_and_moving_instances,
     Gpu: stochastic_mean_matches_the_brute_force,
     Gpu: a_hundred_thousand_lights,

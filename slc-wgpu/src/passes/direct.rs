@@ -38,6 +38,18 @@
 //! a BVH walk; a light without area (point, spot, IES) picked more than
 //! once casts one ray for all its picks.
 //!
+//! **Hardware shadow rays.** On a device with wgpu's experimental ray
+//! queries ([`GpuContext::open_with`] with
+//! [`GpuOptions::ray_query`](crate::GpuOptions)), [`Shadows::rays`] =
+//! [`ShadowRays::RayQuery`] casts the same segments, with the same end
+//! margins, as the adapter's ray queries through acceleration structures
+//! built from the same occluders (a bottom level per mesh, a top level
+//! over the instances, rebuilt when one moves: `crate::occluders`). A ray
+//! may decide an edge-grazing hit differently (the adapter's triangle
+//! test against `geometry.wgsl`'s), nothing else: `tests/tests/ray_query.rs`
+//! compares both on a ray-query adapter (Mesa 25's lavapipe in CI).
+//! [`DirectPass::count_work`] counts the software walk's rays and nodes.
+//!
 //! | input | format | size | usage | content |
 //! |---|---|---|---|---|
 //! | `gbuffer.surface` | `Depth32Float` or `R32Float` (depth), or `Rgba32Float`/`Rgba16Float` (positions) as the descriptor's [`SurfaceDesc`] says | `width × height` | `TEXTURE_BINDING` | depth with the view's inverse view-projection, or world position (`w > 0` where a surface is) |
@@ -164,7 +176,7 @@ use super::{
 };
 use crate::kernel::{KernelLayout, UniformSlots, check_kernels, zeroed};
 use crate::lights::{GpuLightSet, TABLES, WG, check_light_limits, light_set, types_within};
-use crate::occluders::{GpuOccluders, check_limits};
+use crate::occluders::{GpuOccluders, check_accel_limits, check_limits};
 use crate::record::Uploads;
 use crate::{GpuContext, GpuError};
 use glam::{Mat4, Vec3};
@@ -441,13 +453,27 @@ pub struct Shadows<'a> {
     /// [`Shadows::new`]: `10⁻³` (about a pixel's footprint at 1080p and a
     /// 60° field of view).
     pub normal_offset: f32,
+    /// How the rays are cast. [`Shadows::new`]: [`ShadowRays::Software`].
+    pub rays: ShadowRays,
+}
+
+/// How the direct pass casts its shadow rays (the module docs, "Hardware
+/// shadow rays"): the same segments either way.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum ShadowRays {
+    /// A BVH walk in WGSL: every adapter, lavapipe included.
+    #[default]
+    Software,
+    /// The adapter's ray queries through acceleration structures: needs a
+    /// device with wgpu's `EXPERIMENTAL_RAY_QUERY` ([`GpuContext::ray_query`]).
+    RayQuery,
 }
 
 impl<'a> Shadows<'a> {
     /// Shadows against `occluders` with a normal offset of `10⁻³` × the eye
-    /// distance.
+    /// distance, cast in software.
     pub fn new(occluders: &'a Occluders) -> Self {
-        Shadows { occluders, normal_offset: 1e-3 }
+        Shadows { occluders, normal_offset: 1e-3, rays: ShadowRays::Software }
     }
 }
 
@@ -459,15 +485,19 @@ type Pipe = (wgpu::ComputePipeline, KernelLayout);
 pub struct DirectPass {
     gpu: GpuContext,
     desc: DirectPassDesc,
-    /// The unshadowed kernel's features (the shadowed one sets `shadows`).
+    /// The unshadowed kernel's features (the shadowed one sets `shadows`,
+    /// and `ray_query` for [`ShadowRays::RayQuery`]).
     features: Features,
     set: GpuLightSet,
     ranges: Pipe,
     ranges_group: wgpu::BindGroup,
     /// `direct_light`, shadowed when `occluders` is set.
     shade: Pipe,
-    /// The other variant of `direct_light`, once built.
-    other: Option<Pipe>,
+    /// The features of `shade`.
+    shade_features: Features,
+    /// The variant of `direct_light` active before, once built, and its
+    /// features.
+    other: Option<(Features, Pipe)>,
     /// The occluders' buffers and the normal offset.
     occluders: Option<(GpuOccluders, f32)>,
     /// `direct_light`'s group 1, one per parity of the reuse's ping-pong
@@ -674,6 +704,7 @@ impl DirectPass {
             ranges,
             ranges_group,
             shade,
+            shade_features: features,
             other: None,
             occluders: None,
             lights_groups,
@@ -770,12 +801,16 @@ impl DirectPass {
     /// more storage buffers); a call with the same meshes and instances,
     /// moved ([`Occluders::set_transforms`]), rewrites in place through the
     /// queue the moved instances' parts of the buffers and the top level,
-    /// and nothing else. On an error nothing changes. Takes effect at the next
-    /// submission, as [`DirectPass::update_lights`] does.
+    /// and nothing else. [`ShadowRays::RayQuery`] (a device with ray
+    /// queries, else a typed error) builds the acceleration structures too
+    /// and, for moved instances, rebuilds their top level; switching
+    /// between the two kinds of rays builds the other kernel once. On an
+    /// error nothing changes. Takes effect at the next submission, as
+    /// [`DirectPass::update_lights`] does.
     pub fn set_shadows(&mut self, shadows: Option<Shadows>) -> Result<(), GpuError> {
         let Some(sh) = shadows else {
             if self.occluders.is_some() {
-                self.swap_kernel(false)?;
+                self.swap_kernel(self.features)?;
                 self.occluders = None;
                 self.remake_groups();
             }
@@ -787,40 +822,66 @@ impl DirectPass {
                 sh.normal_offset
             )));
         }
+        let ray_query = sh.rays == ShadowRays::RayQuery;
         check_limits(&self.gpu, sh.occluders)?;
+        if ray_query {
+            check_accel_limits(&self.gpu, sh.occluders)?;
+        }
+        let shadowed = Features { shadows: true, ray_query, ..self.features };
         if let Some((o, offset)) = self.occluders.as_mut()
+            && o.accel.is_some() == ray_query
             && o.rewrite(&self.gpu, sh.occluders)
         {
             *offset = sh.normal_offset;
             return Ok(());
         }
-        let shadowed = Features { shadows: true, ..self.features };
         check_kernels(&self.gpu, &[(Kernel::DirectLight, &shadowed, 0)])?;
-        let gpu_occ = GpuOccluders::new(&self.gpu, sh.occluders)?;
         // The kernel first: where it cannot be built, nothing changes.
-        if self.occluders.is_none() {
-            self.swap_kernel(true)?;
-        }
+        let swapped = self.swap_kernel(shadowed)?;
+        let gpu_occ = match GpuOccluders::new(&self.gpu, sh.occluders, ray_query) {
+            Ok(o) => o,
+            Err(e) => {
+                if swapped {
+                    self.swap_back();
+                }
+                return Err(e);
+            }
+        };
         self.occluders = Some((gpu_occ, sh.normal_offset));
         self.remake_groups();
         self.gpu.take_errors()
     }
 
-    /// Makes the other variant of `direct_light` (the `shadows` one) the
-    /// active one, building it the first time; on an error nothing
-    /// changes.
-    fn swap_kernel(&mut self, shadows: bool) -> Result<(), GpuError> {
-        let other = match self.other.take() {
-            Some(p) => p,
-            None => {
-                let f = Features { shadows, ..self.features };
+    /// Makes the variant of `direct_light` for `f` the active one (the
+    /// one active before stays built for a swap back), building it unless
+    /// it is active or was before; returns whether it changed. On an
+    /// error nothing changes.
+    fn swap_kernel(&mut self, f: Features) -> Result<bool, GpuError> {
+        if self.shade_features == f {
+            return Ok(false);
+        }
+        let pipe = match self.other.take() {
+            Some((of, p)) if of == f => p,
+            kept => {
+                self.other = kept;
                 let layout = KernelLayout::new(&self.gpu, Kernel::DirectLight, &f)?;
                 (layout.pipeline(&self.gpu, &f, None)?, layout)
             }
         };
-        self.other = Some(std::mem::replace(&mut self.shade, other));
+        let before = std::mem::replace(&mut self.shade, pipe);
+        self.other = Some((std::mem::replace(&mut self.shade_features, f), before));
         self.cache = ViewCache::new();
-        Ok(())
+        Ok(true)
+    }
+
+    /// Undoes the last [`DirectPass::swap_kernel`] that changed the
+    /// variant.
+    fn swap_back(&mut self) {
+        if let Some((f, p)) = self.other.take() {
+            let before = std::mem::replace(&mut self.shade, p);
+            self.other = Some((std::mem::replace(&mut self.shade_features, f), before));
+            self.cache = ViewCache::new();
+        }
     }
 
     /// Checks `inputs` against the descriptor (formats, sizes, usages).
@@ -1131,8 +1192,12 @@ fn groups(
     if ies {
         lights.push(("slc_table", res(&set.table_buf)));
     }
-    if let Some(o) = occluders {
-        lights.extend([("geo_nodes", res(&o.nodes)), ("geo_tris", res(&o.tris))]);
+    match occluders {
+        Some(GpuOccluders { accel: Some(a), .. }) if shade.binds("geo_tlas") => {
+            lights.push(("geo_tlas", wgpu::BindingResource::AccelerationStructure(&a.tlas)));
+        }
+        Some(o) => lights.extend([("geo_nodes", res(&o.nodes)), ("geo_tris", res(&o.tris))]),
+        None => {}
     }
     let Some(r) = reuse else {
         return (ranges_group, vec![shade.group(gpu, 1, &lights)]);

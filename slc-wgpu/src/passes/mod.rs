@@ -75,7 +75,7 @@ pub mod temporal;
 
 pub use direct::{
     Dielectric, DirectCounts, DirectInputs, DirectOutputs, DirectPass, DirectPassDesc, DirectReuse,
-    DirectSelection, DirectSettings, DirectWalk, MaterialInputs, Shadows,
+    DirectSelection, DirectSettings, DirectWalk, MaterialInputs, ShadowRays, Shadows,
 };
 pub use indirect::{
     IndirectInputs, IndirectMaterials, IndirectPass, IndirectPassDesc, IndirectSettings, VplInput,
