@@ -10,6 +10,10 @@
 //!   lights create no buffer, bind group, view or pipeline;
 //! - the same of `GpuVpl`'s shades (every method, fixed ξ, the reference)
 //!   once each has run, Lambertian and glossy;
+//! - on a device with less workgroup memory than the direct pass's tile
+//!   list needs, the tile walk is a typed [`GpuError::Limit`] with no
+//!   validation error, and the walk per pixel (no workgroup memory) builds
+//!   and shades the same image as the tile walk on a full device;
 //! - on a device with WebGPU's default limits (8 storage buffers per
 //!   stage), the indirect pass builds and records with its material input
 //!   (glossy: `vpl_near` then binds 8), as does the glossy `GpuVpl`, with
@@ -28,9 +32,9 @@ use slc_scene::vpl::VplSettings;
 use slc_tests::engine::{self, upload};
 use slc_tests::gpu;
 use slc_wgpu::passes::{
-    Culling, DirectInputs, DirectPass, DirectPassDesc, DirectSettings, GBuffer, IndirectInputs,
-    IndirectPass, IndirectPassDesc, IndirectSettings, Shadows, Surface, SurfaceDesc,
-    TemporalInputs, TemporalPass, TemporalPassDesc, VplInput, VplSourceDesc,
+    Culling, DirectInputs, DirectPass, DirectPassDesc, DirectSettings, DirectWalk, GBuffer,
+    IndirectInputs, IndirectPass, IndirectPassDesc, IndirectSettings, Shadows, Surface,
+    SurfaceDesc, TemporalInputs, TemporalPass, TemporalPassDesc, VplInput, VplSourceDesc,
 };
 use slc_wgpu::{GpuContext, GpuError, LightSet, Occluders, RangeParams};
 use std::sync::Arc;
@@ -449,7 +453,60 @@ fn shadowed_direct_pass_fits_webgpu_default_limits() {
     assert_eq!(errors.load(Ordering::SeqCst), 0, "validation errors");
 }
 
+fn tile_walk_needs_its_workgroup_memory() {
+    let need = slc_shared_shaders::direct_workgroup_bytes(&slc_shared_shaders::Features {
+        selection: slc_shared_shaders::Selection::Weighted,
+        ..slc_shared_shaders::Features::default()
+    }) as u32;
+    assert!(need > 2048, "the default tile list needs only {need} bytes");
+    let small = wgpu::Limits { max_compute_workgroup_storage_size: need - 1, ..Default::default() };
+    let (device, queue, errors) = device_with(small);
+    let gpu = GpuContext::from_device(device.clone(), queue);
+    let scene = Scene::cornell_box();
+    let desc = DirectPassDesc {
+        surface: SurfaceDesc::Position,
+        output_format: wgpu::TextureFormat::Rgba32Float,
+        ..DirectPassDesc::new(16, 16)
+    };
+    let r = DirectPass::new(&gpu, &point_lights(32), &desc);
+    match r {
+        Err(GpuError::Limit { name, need: n, have }) => {
+            assert!(name.contains("max_compute_workgroup_storage_size"), "{name}");
+            assert_eq!((n, have), (need as u64, need as u64 - 1));
+        }
+        Err(e) => panic!("another error: {e}"),
+        Ok(_) => panic!("the tile walk built with {} bytes of workgroup memory", need - 1),
+    }
+    // The walk per pixel needs none, and finds the same lights.
+    let image = |gpu: &GpuContext, desc: &DirectPassDesc| {
+        let g = engine::upload_gbuffer(gpu, &scene, (16, 16));
+        let mut pass = DirectPass::new(gpu, &point_lights(32), desc).unwrap();
+        let out = engine::output(gpu, (16, 16));
+        let view = out.create_view(&Default::default());
+        let gbuffer =
+            GBuffer { surface: Surface::Position(&g.position), normal: &g.normal, eye: g.cpu.eye };
+        let mut enc = gpu.device.create_command_encoder(&Default::default());
+        let culling = Culling::Stochastic(RangeParams::new(0.01, 1.0).unwrap());
+        let settings = DirectSettings { culling, seed: 1, frame: 0 };
+        pass.record(&mut enc, &DirectInputs::new(gbuffer, &view), &settings).unwrap();
+        engine::submit_and_read(gpu, enc, &out)
+    };
+    let pixel = image(&gpu, &DirectPassDesc { walk: DirectWalk::Pixel, ..desc });
+    let Some(full) = slc_tests::gpu() else { return };
+    let tile = image(full, &desc);
+    let lit = tile.iter().filter(|p| p[0] + p[1] + p[2] > 0.0).count();
+    assert!(lit > 100, "only {lit} lit pixels");
+    for (a, b) in pixel.iter().zip(&tile) {
+        for c in 0..4 {
+            assert!((a[c] - b[c]).abs() <= 1e-5 * a[c].abs().max(b[c].abs()) + 1e-9, "{a:?} {b:?}");
+        }
+    }
+    gpu.take_errors().unwrap();
+    assert_eq!(errors.load(Ordering::SeqCst), 0, "validation errors");
+}
+
 slc_tests::harness!(
+    Gpu: tile_walk_needs_its_workgroup_memory,
     Gpu: glossy_pass_fits_webgpu_default_limits,
     Gpu: shadowed_direct_pass_fits_webgpu_default_limits,
     Gpu: downlevel_constructors_are_typed_errors,
