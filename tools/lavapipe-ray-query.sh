@@ -8,7 +8,7 @@
 # Vulkan loader at:
 #
 #   VK_ICD_FILENAMES=$(bash tools/lavapipe-ray-query.sh) SLC_REQUIRE_RAY_QUERY=1 \
-#       cargo test -p slc-tests --test direct_shadows -- ray_quer
+#       cargo test --workspace --test direct_shadows -- ray_quer
 #
 # Needs apt-get and dpkg-deb (Debian or Ubuntu) and the Debian mirror.
 set -euo pipefail

@@ -549,10 +549,10 @@ fn bench(lights: usize, out: &str) -> Result<(), String> {
         .map_or("unknown".to_string(), |a| format!("{} ({:?})", a.name, a.backend));
     let slc_walk = format!("{:?}", walk()).to_lowercase();
     // Bevy's device has every feature of the adapter's (its default settings).
-    let device_rq = app
-        .world()
-        .get_resource::<bevy::render::renderer::RenderDevice>()
-        .is_some_and(|d| d.features().contains(bevy::render::settings::WgpuFeatures::EXPERIMENTAL_RAY_QUERY));
+    let device_rq =
+        app.world().get_resource::<bevy::render::renderer::RenderDevice>().is_some_and(|d| {
+            d.features().contains(bevy::render::settings::WgpuFeatures::EXPERIMENTAL_RAY_QUERY)
+        });
     let slc_ray_query = ray_query() && device_rq;
     let rays = match (ray_query(), device_rq) {
         (true, true) => "ray queries",
