@@ -25,9 +25,12 @@
 //!   wgpu's ray queries: Mesa 25's lavapipe in CI, `tools/lavapipe-ray-query.sh`):
 //!   the exact image equals the brute force as the software walk's does,
 //!   moved, laid out anew, with no instance and switched to software and
-//!   back; a frame of 8 weighted picks equals the software walk's frame
-//!   (the same picks) but at edge-grazing rays. On a device without them
-//!   the choice is a typed error that changes nothing.
+//!   back; a frame of 8 weighted (or 4 resampled) picks equals the
+//!   software walk's frame (the same picks) but at edge-grazing rays, and
+//!   so do four frames of visibility reuse, whose history keeps what the
+//!   rays saw; the counting variant counts what the software pass does.
+//!   On a device without them the choice is a typed error that changes
+//!   nothing.
 
 use glam::{Affine3A, Quat, Vec3};
 use slc_core::light::{Light, PointLight, SpotLight, connection_cosine, inverse_square};
@@ -710,6 +713,39 @@ fn ray_query_picks_equal_the_software_walk() {
         let lit = hardware.iter().filter(|p| p[0] + p[1] + p[2] > 0.0).count();
         assert!(lit > 1000, "{selection:?}: only {lit} lit pixels");
     }
+    // Visibility reuse keeps what the rays saw: four frames of each kind of
+    // ray from the same start give the same images, frame after frame.
+    let reuse = Some(DirectReuse { visibility: true, ..DirectReuse::default() });
+    let frames = |rays: ShadowRays| -> Vec<Vec<[f32; 4]>> {
+        let mut pass = reusing_pass(gpu, &s, DirectSelection::Resampled { k: 8 }, reuse);
+        pass.set_shadows(Some(Shadows { rays, ..Shadows::new(&occ) })).unwrap();
+        (0..4)
+            .map(|frame| {
+                seeded_frame(gpu, &s, &mut pass, DirectSettings { culling, seed: 9, frame })
+            })
+            .collect()
+    };
+    let (software, hardware) = (frames(ShadowRays::Software), frames(ShadowRays::RayQuery));
+    for (f, (a, b)) in hardware.iter().zip(&software).enumerate() {
+        assert_same(a, b, &s, &format!("visibility reuse, frame {f}"));
+    }
+    // The counting variant walks the software BVH beside the ray queries:
+    // the same counts as a pass casting its rays in software.
+    let out = engine::output(gpu, (W, H));
+    let view = out.create_view(&Default::default());
+    let inputs = DirectInputs::new(
+        GBuffer { surface: Surface::Position(&s.position), normal: &s.normal, eye: s.eye },
+        &view,
+    );
+    let settings = DirectSettings { culling, seed: 3, frame: 5 };
+    let counts = |rays: ShadowRays| {
+        let mut pass = pass(gpu, &s, DirectSelection::Weighted { k: 8 });
+        pass.set_shadows(Some(Shadows { rays, ..Shadows::new(&occ) })).unwrap();
+        pass.count_work(&inputs, &settings).unwrap()
+    };
+    let c = counts(ShadowRays::RayQuery);
+    assert_eq!(c, counts(ShadowRays::Software));
+    assert!(c.rays > c.pixels, "{c:?}");
     gpu.take_errors().unwrap();
 }
 
