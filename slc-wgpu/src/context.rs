@@ -23,7 +23,9 @@ pub struct GpuContext {
     /// Whether the device has wgpu's experimental ray queries
     /// (`Features::EXPERIMENTAL_RAY_QUERY`): what the direct pass's
     /// [`ShadowRays::RayQuery`](crate::passes::direct::ShadowRays) needs.
-    /// Only [`GpuContext::open_with`] asks for them.
+    /// [`GpuContext::open_with`] and [`GpuContext::with_options`] ask for
+    /// them with [`GpuOptions::ray_query`]; [`GpuContext::from_device`]
+    /// reads them off the device.
     pub ray_query: bool,
     errors: Arc<Mutex<Vec<String>>>,
 }

@@ -10,9 +10,11 @@
 //! (`GpuAccel`): one bottom level per mesh, built once from its
 //! object-space triangles, and a top level over the instances with their
 //! transforms, rebuilt whenever one moves (wgpu 30 builds, it does not
-//! refit: O(instances) on the GPU). Unlike the flattened BVH, an instance
-//! costs no copy of its mesh; the flattened BVH's buffers are kept beside
-//! them all the same (the counting variant walks them).
+//! refit: O(instances) on the GPU). The builds are recorded into the
+//! direct pass's next record, before its dispatches: nothing is submitted
+//! here. They add to the flattened BVH's buffers, which stay (the counting
+//! variant walks them): a vertex buffer and a bottom level per mesh, a top
+//! level per instance.
 
 use crate::kernel::storage;
 use crate::{GpuContext, GpuError};
@@ -107,12 +109,19 @@ pub(crate) fn check_accel_limits(gpu: &GpuContext, o: &Occluders) -> Result<(), 
 
 /// Occluders as the adapter's acceleration structures (the module docs,
 /// "Ray queries"): a bottom level per mesh and the top level `tlas` the
-/// kernels bind as `geo_tlas`, for one layout of the occluders.
+/// kernels bind as `geo_tlas`, for one layout of the occluders. Nothing is
+/// submitted here: the builds wait for [`GpuAccel::record_builds`] (the
+/// direct pass's next record, before its dispatches).
 pub(crate) struct GpuAccel {
     /// One per mesh of the occluders, in mesh order (kept alive: the top
     /// level refers to them).
     blases: Vec<wgpu::Blas>,
     pub(crate) tlas: wgpu::Tlas,
+    /// The bottom levels' sizes and vertex buffers until their build is
+    /// recorded.
+    unbuilt: Option<(Vec<wgpu::BlasTriangleGeometrySizeDescriptor>, Vec<wgpu::Buffer>)>,
+    /// The top level's instances changed since its build was recorded.
+    stale: bool,
 }
 
 /// `m` as the row-major 3×4 matrix a top-level instance carries.
@@ -126,8 +135,9 @@ fn row_major(m: &Affine3A) -> [f32; 12] {
 }
 
 impl GpuAccel {
-    /// Builds the bottom level of each of `o`'s meshes and the top level
-    /// over its instances (limits checked first), and submits the builds.
+    /// The bottom level of each of `o`'s meshes and the top level over its
+    /// instances (limits checked first), created and uploaded; their
+    /// builds wait for [`GpuAccel::record_builds`].
     pub(crate) fn new(gpu: &GpuContext, o: &Occluders) -> Result<Self, GpuError> {
         check_accel_limits(gpu, o)?;
         let sizes: Vec<wgpu::BlasTriangleGeometrySizeDescriptor> = (0..o.mesh_count())
@@ -166,11 +176,33 @@ impl GpuAccel {
             flags: wgpu::AccelerationStructureFlags::PREFER_FAST_TRACE,
             update_mode: wgpu::AccelerationStructureUpdateMode::Build,
         });
-        let mut accel = GpuAccel { blases, tlas };
+        let mut accel = GpuAccel { blases, tlas, unbuilt: Some((sizes, vertices)), stale: true };
         accel.place(o);
+        Ok(accel)
+    }
+
+    /// Sets the top level's instances to `o`'s (the same layout: each
+    /// instance keeps its mesh); its build waits for the next
+    /// [`GpuAccel::record_builds`].
+    pub(crate) fn place(&mut self, o: &Occluders) {
+        for (i, inst) in o.instances().iter().enumerate() {
+            let blas = &self.blases[inst.mesh as usize];
+            self.tlas[i] = Some(wgpu::TlasInstance::new(blas, row_major(&inst.transform), 0, 0xff));
+        }
+        self.stale = true;
+    }
+
+    /// Records into `encoder` the builds that wait: the bottom levels once,
+    /// the top level whenever its instances changed (wgpu 30 builds it
+    /// anew: O(instances) on the GPU). Nothing when nothing changed.
+    pub(crate) fn record_builds(&mut self, encoder: &mut wgpu::CommandEncoder) {
+        if !self.stale {
+            return;
+        }
+        let (sizes, vertices) = self.unbuilt.take().unwrap_or_default();
         let entries: Vec<wgpu::BlasBuildEntry> = (0..sizes.len())
             .map(|m| wgpu::BlasBuildEntry {
-                blas: &accel.blases[m],
+                blas: &self.blases[m],
                 geometry: wgpu::BlasGeometries::TriangleGeometries(vec![
                     wgpu::BlasTriangleGeometry {
                         size: &sizes[m],
@@ -185,28 +217,8 @@ impl GpuAccel {
                 ]),
             })
             .collect();
-        let mut encoder = gpu.device.create_command_encoder(&Default::default());
-        encoder.build_acceleration_structures(&entries, [&accel.tlas]);
-        gpu.queue.submit([encoder.finish()]);
-        Ok(accel)
-    }
-
-    /// Sets the top level's instances to `o`'s (the same layout: each
-    /// instance keeps its mesh).
-    fn place(&mut self, o: &Occluders) {
-        for (i, inst) in o.instances().iter().enumerate() {
-            let blas = &self.blases[inst.mesh as usize];
-            self.tlas[i] = Some(wgpu::TlasInstance::new(blas, row_major(&inst.transform), 0, 0xff));
-        }
-    }
-
-    /// Rebuilds the top level over `o`'s moved instances (the layout it
-    /// was built for) and submits the build: O(instances), no mesh.
-    fn replace(&mut self, gpu: &GpuContext, o: &Occluders) {
-        self.place(o);
-        let mut encoder = gpu.device.create_command_encoder(&Default::default());
-        encoder.build_acceleration_structures(std::iter::empty(), [&self.tlas]);
-        gpu.queue.submit([encoder.finish()]);
+        encoder.build_acceleration_structures(&entries, [&self.tlas]);
+        self.stale = false;
     }
 }
 
@@ -286,7 +298,7 @@ impl GpuOccluders {
                 let top = nodes_as_gpu(&o.nodes()[..o.top_level_len()]);
                 gpu.queue.write_buffer(&self.nodes, 0, bytemuck::cast_slice(&top));
                 if let Some(a) = self.accel.as_mut() {
-                    a.replace(gpu, o);
+                    a.place(o);
                 }
             }
         } else {

@@ -665,11 +665,13 @@ fn ray_query_exact_shadows_and_moving_instances() {
     let first = instances(Vec3::new(0.38, 0.18, 0.33));
     let mut occ = Occluders::new(&s.meshes, &first).unwrap();
     pass.set_shadows(Some(ray_queries(&occ))).unwrap();
+    assert_eq!(pass.shadow_rays(), Some(ShadowRays::RayQuery));
     let shadowed = brute_force(&s, Some(&first));
     let hardware = frame(gpu, &s, &mut pass, Culling::None, 0);
     assert_exact(&hardware, &shadowed, "ray queries");
     // The software walk on the same device gives the same image.
     pass.set_shadows(Some(Shadows::new(&occ))).unwrap();
+    assert_eq!(pass.shadow_rays(), Some(ShadowRays::Software));
     let software = frame(gpu, &s, &mut pass, Culling::None, 0);
     assert_same(&hardware, &software, &s, "ray queries against the software walk");
     // Back to ray queries, then the second cube moves: the top level is
@@ -694,6 +696,7 @@ fn ray_query_exact_shadows_and_moving_instances() {
     let unshadowed = brute_force(&s, None);
     assert_exact(&frame(gpu, &s, &mut pass, Culling::None, 2), &unshadowed, "no instance");
     pass.set_shadows(None).unwrap();
+    assert_eq!(pass.shadow_rays(), None);
     assert_exact(&frame(gpu, &s, &mut pass, Culling::None, 3), &unshadowed, "off");
     gpu.take_errors().unwrap();
 }
@@ -764,6 +767,7 @@ fn ray_queries_without_the_feature() {
         matches!(&r, Err(GpuError::Setting(m)) if m.contains("EXPERIMENTAL_RAY_QUERY")),
         "{r:?}"
     );
+    assert_eq!(pass.shadow_rays(), Some(ShadowRays::Software));
     assert_exact(
         &frame(gpu, &s, &mut pass, Culling::None, 0),
         &brute_force(&s, Some(&first)),

@@ -46,9 +46,13 @@
 //! built from the same occluders (a bottom level per mesh, a top level
 //! over the instances, rebuilt when one moves: `crate::occluders`). A ray
 //! may decide an edge-grazing hit differently (the adapter's triangle
-//! test against `geometry.wgsl`'s), nothing else: `tests/tests/ray_query.rs`
-//! compares both on a ray-query adapter (Mesa 25's lavapipe in CI).
-//! [`DirectPass::count_work`] counts the software walk's rays and nodes.
+//! test against `geometry.wgsl`'s), nothing else: `tests/tests/direct_shadows.rs`
+//! compares both on a ray-query adapter (Mesa 25's lavapipe in CI). The
+//! builds are recorded into the next record's encoder, before its
+//! dispatches (the pass submits nothing); the flattened BVH's buffers stay
+//! beside the acceleration structures, and [`DirectPass::count_work`]
+//! counts the software walk's rays and nodes. [`DirectPass::shadow_rays`]
+//! says which rays a pass casts.
 //!
 //! | input | format | size | usage | content |
 //! |---|---|---|---|---|
@@ -802,10 +806,13 @@ impl DirectPass {
     /// moved ([`Occluders::set_transforms`]), rewrites in place through the
     /// queue the moved instances' parts of the buffers and the top level,
     /// and nothing else. [`ShadowRays::RayQuery`] (a device with ray
-    /// queries, else a typed error) builds the acceleration structures too
-    /// and, for moved instances, rebuilds their top level; switching
-    /// between the two kinds of rays builds the other kernel once. On an
-    /// error nothing changes. Takes effect at the next submission, as
+    /// queries, else a typed error: its limits `max_tlas_instance_count`
+    /// and `max_blas_primitive_count`, the largest mesh, are checked too)
+    /// also makes the acceleration structures, whose builds the next
+    /// record records before its dispatches: every mesh's bottom level for
+    /// a new layout, the top level when instances moved. Switching between
+    /// the two kinds of rays builds the other kernel once. On an error
+    /// nothing changes. Takes effect at the next submission, as
     /// [`DirectPass::update_lights`] does.
     pub fn set_shadows(&mut self, shadows: Option<Shadows>) -> Result<(), GpuError> {
         let Some(sh) = shadows else {
@@ -850,6 +857,14 @@ impl DirectPass {
         self.occluders = Some((gpu_occ, sh.normal_offset));
         self.remake_groups();
         self.gpu.take_errors()
+    }
+
+    /// How the pass casts its shadow rays, or `None` when it is
+    /// unshadowed.
+    pub fn shadow_rays(&self) -> Option<ShadowRays> {
+        self.occluders.as_ref().map(|(o, _)| {
+            if o.accel.is_some() { ShadowRays::RayQuery } else { ShadowRays::Software }
+        })
     }
 
     /// Makes the variant of `direct_light` for `f` the active one (the
@@ -1066,6 +1081,12 @@ impl DirectPass {
             uploads.push(&r.params, &params);
         }
         uploads.record(&self.gpu, encoder);
+        // Acceleration structures made or moved since the last record.
+        if let Some((o, _)) = self.occluders.as_mut()
+            && let Some(a) = o.accel.as_mut()
+        {
+            a.record_builds(encoder);
+        }
         let g = inputs.gbuffer;
         let tex = wgpu::BindingResource::TextureView;
         let mut views = vec![
