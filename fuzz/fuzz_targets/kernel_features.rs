@@ -33,6 +33,7 @@ struct Input {
     counters: bool,
     reuse_domains: u8,
     tile_walk: bool,
+    ray_query: bool,
 }
 
 fuzz_target!(|i: Input| {
@@ -72,6 +73,7 @@ fuzz_target!(|i: Input| {
         // 0..=9: no reuse, every allowed count of reused pixels, one too many.
         reuse_domains: i.reuse_domains as u32 % 10,
         tile_walk: i.tile_walk,
+        ray_query: i.ray_query,
     };
     match generate(kernel, &features) {
         Ok(wgsl) => assert!(wgsl.contains("fn "), "{kernel:?}: empty source"),
