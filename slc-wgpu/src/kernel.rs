@@ -242,23 +242,6 @@ pub(crate) fn zeroed(
     })
 }
 
-/// Bind-group layout of a kernel from its binding table: binding 0 a
-/// uniform (with a dynamic offset when `dynamic`), then `reads` read-only
-/// storage buffers, then `writes` read-write ones. Explicit, because an
-/// automatic layout drops the bindings a variant does not use.
-pub(crate) fn bind_layout(
-    gpu: &GpuContext,
-    label: &str,
-    reads: u32,
-    writes: u32,
-    dynamic: bool,
-) -> wgpu::BindGroupLayout {
-    let mut kinds = vec![(0, if dynamic { B::DynamicUniform } else { B::Uniform })];
-    kinds.extend((1..=reads).map(|b| (b, B::Read)));
-    kinds.extend((reads + 1..=reads + writes).map(|b| (b, B::Write)));
-    layout(gpu, label, &kinds)
-}
-
 /// A binding of a kernel's bind-group layout.
 #[derive(Clone, Copy)]
 pub(crate) enum B {
@@ -280,12 +263,8 @@ pub(crate) enum B {
     AccelerationStructure,
 }
 
-/// A compute bind-group layout with the given `(binding, kind)` entries.
-pub(crate) fn layout(gpu: &GpuContext, label: &str, kinds: &[(u32, B)]) -> wgpu::BindGroupLayout {
-    layout_for(gpu, label, kinds, wgpu::ShaderStages::COMPUTE)
-}
-
-/// [`layout`] for the shader stages `visibility` (raster passes).
+/// A bind-group layout with the given `(binding, kind)` entries, visible
+/// to the shader stages `visibility`.
 pub(crate) fn layout_for(
     gpu: &GpuContext,
     label: &str,
@@ -357,37 +336,6 @@ pub(crate) fn pipeline(
         entry_point: Some("main"),
         compilation_options: Default::default(),
         cache: None,
-    })
-}
-
-/// A bind group binding `bufs` in order; the first (the uniform) is bound
-/// as a `uniform_size`-byte window when given (dynamic offsets), else whole.
-pub(crate) fn bind_group(
-    gpu: &GpuContext,
-    label: &str,
-    layout: &wgpu::BindGroupLayout,
-    bufs: &[&wgpu::Buffer],
-    uniform_size: Option<u64>,
-) -> wgpu::BindGroup {
-    let entries: Vec<wgpu::BindGroupEntry> = bufs
-        .iter()
-        .enumerate()
-        .map(|(i, b)| {
-            let resource = match (i, uniform_size) {
-                (0, Some(size)) => wgpu::BindingResource::Buffer(wgpu::BufferBinding {
-                    buffer: b,
-                    offset: 0,
-                    size: wgpu::BufferSize::new(size),
-                }),
-                _ => b.as_entire_binding(),
-            };
-            wgpu::BindGroupEntry { binding: i as u32, resource }
-        })
-        .collect();
-    gpu.device.create_bind_group(&wgpu::BindGroupDescriptor {
-        label: Some(label),
-        layout,
-        entries: &entries,
     })
 }
 

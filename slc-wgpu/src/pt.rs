@@ -19,7 +19,7 @@
 //! backends draw their per-path random numbers differently, so they agree in
 //! expectation (the tests crate checks it), not pixel by pixel.
 
-use crate::kernel::{UniformSlots, bind_group, bind_layout, pipeline, read_back, storage, zeroed};
+use crate::kernel::{KernelLayout, UniformSlots, pipeline, read_back, storage, zeroed};
 use crate::lights::{GpuLightSet, WG};
 use crate::occluders;
 use crate::timing::Timer;
@@ -212,7 +212,10 @@ impl GpuPt {
         let shade_params = UniformSlots::new::<ShadeParams>(gpu, "shade params", MAX_DEPTH as u64);
         // One bind group per kernel; one pipeline per light selection,
         // built on the selection's first render.
-        let kernel = |k: Kernel, reads: u32, writes: u32, bufs: &[&wgpu::Buffer], uniform: u64| {
+        // Group 0 of each kernel, bound by its binding table's names (the
+        // tables do not depend on the light selection); group 1 is the
+        // light set's tables.
+        let kernel = |k: Kernel, params: &UniformSlots, bufs: &[(&str, &wgpu::Buffer)]| {
             let wgsl = PtMethod::ALL
                 .iter()
                 .map(|&m| {
@@ -220,50 +223,47 @@ impl GpuPt {
                     generate(k, &Features { selection, reservoir_k: k_slots as u32, ..base })
                 })
                 .collect::<Result<Vec<_>, _>>()?;
-            let layout = bind_layout(gpu, k.name(), reads, writes, true);
-            let bind_group = bind_group(gpu, k.name(), &layout, bufs, Some(uniform));
+            let layout = KernelLayout::new(gpu, k, &base)?;
+            let mut res = vec![("params", params.binding())];
+            res.extend(bufs.iter().map(|&(name, b)| (name, crate::kernel::whole(b))));
+            let bind_group = layout.group(gpu, 0, &res);
             let pipelines = vec![None; wgsl.len()];
+            let layout = layout.group_layout(0).clone();
             Ok::<_, GpuError>(Kernels { name: k.name(), layout, wgsl, pipelines, bind_group })
         };
         let extend = kernel(
             Kernel::PtExtend,
-            9,
-            3,
+            &pt_params,
             &[
-                &pt_params.buffer,
-                &set.lights,
-                &set.rt2,
-                &set.bsh,
-                &set.leaf,
-                &geo_nodes_buf,
-                &geo_tris_buf,
-                &materials_buf,
-                &geo_normals_buf,
-                &candidates,
-                &paths,
-                &vertices,
-                &radiance,
+                ("lights", &set.lights),
+                ("rt2", &set.rt2),
+                ("bsh_nodes", &set.bsh),
+                ("light_leaf", &set.leaf),
+                ("geo_nodes", &geo_nodes_buf),
+                ("geo_tris", &geo_tris_buf),
+                ("materials", &materials_buf),
+                ("geo_normals", &geo_normals_buf),
+                ("candidates", &candidates),
+                ("paths", &paths),
+                ("vertices", &vertices),
+                ("radiance", &radiance),
             ],
-            pt_params.size,
         )?;
         let connect = kernel(
             Kernel::PtConnect,
-            8,
-            2,
+            &shade_params,
             &[
-                &shade_params.buffer,
-                &vertices,
-                &set.lights,
-                &set.rt2,
-                &set.r2,
-                &set.bsh,
-                &geo_nodes_buf,
-                &geo_tris_buf,
-                &materials_buf,
-                &radiance,
-                &candidates,
+                ("vertices", &vertices),
+                ("lights", &set.lights),
+                ("rt2", &set.rt2),
+                ("r2", &set.r2),
+                ("bsh_nodes", &set.bsh),
+                ("geo_nodes", &geo_nodes_buf),
+                ("geo_tris", &geo_tris_buf),
+                ("materials", &materials_buf),
+                ("radiance", &radiance),
+                ("candidates", &candidates),
             ],
-            shade_params.size,
         )?;
         let cam = &pts.scene().camera;
         let (f, r, u) = cam.scaled_basis(width, height);
