@@ -184,46 +184,37 @@ pub fn run(tests: &[(&'static str, Needs, fn())]) -> std::process::ExitCode {
     }
     let trials = tests
         .iter()
-        .map(|&(name, needs, test)| match (needs, &missing, &no_display) {
-            (Needs::RayQuery, _, _) => match &no_ray_query {
-                Some(reason) => {
-                    let why = format!("needs ray queries: {reason}");
-                    libtest_mimic::Trial::test(name, move || Err(why.into()))
-                        .with_kind("ray query")
-                        .with_ignored_flag(!ray_query_required)
+        .map(|&(name, needs, test)| {
+            // The test's kind, and why it cannot run here with whether
+            // that fails it (else it shows as ignored).
+            let skip = |reason: &Option<String>, what: &str, fails: bool| {
+                reason.as_ref().map(|r| (format!("needs {what}: {r}"), fails))
+            };
+            let (kind, skip) = match needs {
+                Needs::Cpu => (None, None),
+                Needs::RayQuery => {
+                    (Some("ray query"), skip(&no_ray_query, "ray queries", ray_query_required))
                 }
+                Needs::Gpu | Needs::Display if missing.is_some() => {
+                    (Some("gpu"), skip(&missing, "a GPU adapter", required))
+                }
+                Needs::Gpu => (Some("gpu"), None),
+                Needs::Display => {
+                    (Some("window"), skip(&no_display, "a display", display_required))
+                }
+            };
+            let trial = match skip {
+                Some((why, fails)) => libtest_mimic::Trial::test(name, move || Err(why.into()))
+                    .with_ignored_flag(!fails),
                 None => libtest_mimic::Trial::test(name, move || {
                     test();
                     Ok(())
-                })
-                .with_kind("ray query"),
-            },
-            (Needs::Gpu | Needs::Display, Some(reason), _) => {
-                let why = format!("needs a GPU adapter: {reason}");
-                libtest_mimic::Trial::test(name, move || Err(why.into()))
-                    .with_kind("gpu")
-                    .with_ignored_flag(!required)
+                }),
+            };
+            match kind {
+                Some(k) => trial.with_kind(k),
+                None => trial,
             }
-            (Needs::Display, None, Some(reason)) => {
-                let why = format!("needs a display: {reason}");
-                libtest_mimic::Trial::test(name, move || Err(why.into()))
-                    .with_kind("window")
-                    .with_ignored_flag(!display_required)
-            }
-            (Needs::Gpu, None, _) => libtest_mimic::Trial::test(name, move || {
-                test();
-                Ok(())
-            })
-            .with_kind("gpu"),
-            (Needs::Display, None, None) => libtest_mimic::Trial::test(name, move || {
-                test();
-                Ok(())
-            })
-            .with_kind("window"),
-            (Needs::Cpu, _, _) => libtest_mimic::Trial::test(name, move || {
-                test();
-                Ok(())
-            }),
         })
         .collect();
     let conclusion = libtest_mimic::run(&args, trials);

@@ -883,9 +883,7 @@ impl DirectPass {
                 (layout.pipeline(&self.gpu, &f, None)?, layout)
             }
         };
-        let before = std::mem::replace(&mut self.shade, pipe);
-        self.other = Some((std::mem::replace(&mut self.shade_features, f), before));
-        self.cache = ViewCache::new();
+        self.activate(f, pipe);
         Ok(true)
     }
 
@@ -893,10 +891,16 @@ impl DirectPass {
     /// variant.
     fn swap_back(&mut self) {
         if let Some((f, p)) = self.other.take() {
-            let before = std::mem::replace(&mut self.shade, p);
-            self.other = Some((std::mem::replace(&mut self.shade_features, f), before));
-            self.cache = ViewCache::new();
+            self.activate(f, p);
         }
+    }
+
+    /// Makes `pipe` (the variant for `f`) the active one, keeping the one
+    /// it replaces as `other`.
+    fn activate(&mut self, f: Features, pipe: Pipe) {
+        let before = std::mem::replace(&mut self.shade, pipe);
+        self.other = Some((std::mem::replace(&mut self.shade_features, f), before));
+        self.cache = ViewCache::new();
     }
 
     /// Checks `inputs` against the descriptor (formats, sizes, usages).
