@@ -6,9 +6,12 @@
 //! taken out; with `--noise seeds`, no reference: the noise σ from two
 //! renders of different seeds, at any resolution), its noise per sample `rmse_net · √spp` (what the selection
 //! buys, independent of speed) and its time per sample against uniform
-//! sampling's (what it costs), and slc-weighted's net RMSE over the best
-//! peer's (uniform, power, lightbvh): the target is ≤ 1 in every
-//! scene and ≤ 0.8 in the median one.
+//! sampling's (what it costs), and slc-weighted against the best peer
+//! (uniform, power, lightbvh; the least net RMSE): its net RMSE over the
+//! peer's, split into the two factors it is the product of at equal time,
+//! noise per sample over the peer's times the root of time per sample over
+//! the peer's ([`AgainstBest`]), so a loss says whether the selection or
+//! its cost lost it.
 
 use super::args::BenchArgs;
 use super::pt::pt_equal_time;
@@ -31,6 +34,27 @@ struct SuiteReport {
     noise: String,
     scenes: Vec<PtReport>,
     rows: Vec<SuiteRow>,
+    /// slc-weighted against the best peer, per scene (scenes where a
+    /// method is missing left out).
+    against_best: Vec<AgainstBest>,
+}
+
+/// slc-weighted against the best peer of one scene, the peer with the
+/// least net RMSE at equal time. At equal time `rmse = σ₁/√spp` and
+/// `spp = T/t`, so `rmse` over the peer's is `noise_per_sample` over the
+/// peer's times `√(time_per_sample over the peer's)`.
+#[derive(Serialize, Clone, Debug, PartialEq)]
+pub struct AgainstBest {
+    pub scene: String,
+    /// The best peer's method name.
+    pub peer: String,
+    /// slc-weighted's net RMSE over the peer's (≤ 1: slc-weighted wins).
+    pub rmse: f64,
+    /// Its noise per sample (`rmse_net · √spp`) over the peer's: what the
+    /// selection buys.
+    pub noise_per_sample: f64,
+    /// Its time per sample over the peer's: what the selection costs.
+    pub time_per_sample: f64,
 }
 
 /// The scene files of `dir`, sorted by name.
@@ -74,12 +98,36 @@ pub fn rows(scene: &str, r: &PtReport) -> Vec<SuiteRow> {
         .collect()
 }
 
-/// slc-weighted's net RMSE over the best peer's, per scene (NaN where a
-/// method is missing).
-pub fn weighted_over_best_peer(rows: &[SuiteRow], scene: &str) -> f64 {
-    let of = |m: &str| rows.iter().find(|r| r.scene == scene && r.method == m).map(|r| r.rmse_net);
-    let best = PEERS.iter().filter_map(|m| of(m)).fold(f64::INFINITY, f64::min);
-    of("slc-weighted").map_or(f64::NAN, |w| w / best)
+/// slc-weighted against the best peer in `scene`, or `None` where it or
+/// every peer is missing or unmeasurable (a NaN net RMSE).
+pub fn against_best_peer(rows: &[SuiteRow], scene: &str) -> Option<AgainstBest> {
+    let of = |m: &str| rows.iter().find(|r| r.scene == scene && r.method == m);
+    let w = of("slc-weighted").filter(|w| w.rmse_net.is_finite())?;
+    let best = PEERS
+        .iter()
+        .filter_map(|m| of(m))
+        .filter(|r| r.rmse_net.is_finite())
+        .min_by(|a, b| a.rmse_net.total_cmp(&b.rmse_net))?;
+    Some(AgainstBest {
+        scene: scene.to_string(),
+        peer: best.method.clone(),
+        rmse: w.rmse_net / best.rmse_net,
+        noise_per_sample: w.noise_per_sample / best.noise_per_sample,
+        time_per_sample: w.time_per_sample_vs_uniform / best.time_per_sample_vs_uniform,
+    })
+}
+
+/// The median of `v`: the middle value, or the mean of the two middle
+/// values for an even count; `None` for none.
+pub fn median(v: &[f64]) -> Option<f64> {
+    let mut s = v.to_vec();
+    s.sort_by(f64::total_cmp);
+    let n = s.len();
+    match n {
+        0 => None,
+        _ if n % 2 == 1 => Some(s[n / 2]),
+        _ => Some(0.5 * (s[n / 2 - 1] + s[n / 2])),
+    }
 }
 
 pub fn run(a: &BenchArgs, dir: &Path) -> anyhow::Result<()> {
@@ -97,6 +145,8 @@ pub fn run(a: &BenchArgs, dir: &Path) -> anyhow::Result<()> {
         all_rows.extend(rows(&name, &report));
         scenes.push(report);
     }
+    let against_best =
+        scenes.iter().filter_map(|s| against_best_peer(&all_rows, &s.scene)).collect();
     let report = SuiteReport {
         folder: dir.display().to_string(),
         seconds_per_method: a.seconds,
@@ -106,6 +156,7 @@ pub fn run(a: &BenchArgs, dir: &Path) -> anyhow::Result<()> {
         },
         scenes,
         rows: all_rows,
+        against_best,
     };
     if let Some(path) = &a.json {
         std::fs::write(path, serde_json::to_string_pretty(&report)?)
@@ -142,8 +193,8 @@ fn print_summary(report: &SuiteReport) {
     for m in &methods {
         print!(" {:>16}", m);
     }
-    println!(" {:>10} {:>10}", "w/best", "w t/spp");
-    let mut ratios = Vec::new();
+    println!(" {:>10} {:>8} {:>8} {:>8} {:>10}", "w/best", "best", "nps", "t/spp", "w t/spp");
+    let num = |v: f64| if v.is_finite() { format!("{v:.2}") } else { "-".into() };
     for s in &report.scenes {
         print!("{:<24} {:>7}", s.scene, s.lights);
         for m in &methods {
@@ -153,15 +204,22 @@ fn print_summary(report: &SuiteReport) {
                 .map_or("-".into(), |r| format!("{:.2}", r.rmse_vs_uniform));
             print!(" {:>16}", format!("{ratio} ({})", r.map_or(0, |r| r.spp)));
         }
-        let ratio = weighted_over_best_peer(&report.rows, &s.scene);
         let tps = report
             .rows
             .iter()
             .find(|r| r.scene == s.scene && r.method == "slc-weighted")
             .map_or(f64::NAN, |r| r.time_per_sample_vs_uniform);
-        ratios.push(ratio);
-        let num = |v: f64| if v.is_finite() { format!("{v:.2}") } else { "-".into() };
-        println!(" {:>10} {:>10}", num(ratio), num(tps));
+        match report.against_best.iter().find(|b| b.scene == s.scene) {
+            Some(b) => println!(
+                " {:>10} {:>8} {:>8} {:>8} {:>10}",
+                num(b.rmse),
+                b.peer,
+                num(b.noise_per_sample),
+                num(b.time_per_sample),
+                num(tps)
+            ),
+            None => println!(" {:>10} {:>8} {:>8} {:>8} {:>10}", "-", "-", "-", "-", num(tps)),
+        }
     }
     for s in &report.scenes {
         if let Some(r) = s.runs.iter().find(|r| s.reference_noise > r.rmse_net / 3.0) {
@@ -171,21 +229,70 @@ fn print_summary(report: &SuiteReport) {
             );
         }
     }
-    let mut sorted: Vec<f64> = ratios.iter().copied().filter(|r| r.is_finite()).collect();
-    sorted.sort_by(f64::total_cmp);
-    if sorted.is_empty() {
-        println!(
+    let b = &report.against_best;
+    let ratios: Vec<f64> = b.iter().map(|b| b.rmse).collect();
+    match median(&ratios) {
+        None => println!(
             "slc-weighted / best peer (uniform, power, lightbvh): not measurable in any scene (raise --reference-spp)"
-        );
-    } else {
-        let median = sorted[sorted.len() / 2];
-        let wins = sorted.iter().filter(|&&r| r <= 1.0).count();
-        println!(
-            "slc-weighted / best peer (uniform, power, lightbvh): median {median:.2}, at most 1 in {wins} of {} scenes (targets: <= 1 in every scene, median <= 0.8)",
-            sorted.len()
-        );
+        ),
+        Some(m) => {
+            let wins = ratios.iter().filter(|&&r| r <= 1.0).count();
+            let losses: Vec<&AgainstBest> = b.iter().filter(|b| b.rmse > 1.0).collect();
+            let by_noise = losses.iter().filter(|b| b.noise_per_sample > 1.0).count();
+            println!(
+                "slc-weighted / best peer (uniform, power, lightbvh): median {m:.2}, at most 1 in {wins} of {} scenes; of the {} losses, {by_noise} with more noise per sample than the peer, {} with less (lost on time per sample alone)",
+                ratios.len(),
+                losses.len(),
+                losses.len() - by_noise
+            );
+        }
     }
     println!(
-        "(w/best: slc-weighted's net RMSE over the best peer's; w t/spp: its time per sample over uniform's)"
+        "(w/best: slc-weighted's net RMSE over the best peer's, = nps · √(t/spp): its noise per sample and time per sample over that peer's; w t/spp: its time per sample over uniform's)"
     );
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn row(method: &str, rmse_net: f64, spp: u32, tps: f64) -> SuiteRow {
+        SuiteRow {
+            scene: "s".into(),
+            method: method.into(),
+            spp,
+            rmse_net,
+            noise_per_sample: rmse_net * (spp as f64).sqrt(),
+            time_per_sample_vs_uniform: tps,
+            rmse_vs_uniform: f64::NAN,
+        }
+    }
+
+    #[test]
+    fn median_of_an_even_count_is_the_mean_of_the_middle_two() {
+        assert_eq!(median(&[]), None);
+        assert_eq!(median(&[3.0]), Some(3.0));
+        assert_eq!(median(&[4.0, 1.0, 3.0]), Some(3.0));
+        assert_eq!(median(&[0.71, 0.58, 2.0, 0.1]), Some(0.645));
+    }
+
+    #[test]
+    fn against_best_splits_the_ratio_into_noise_and_time_per_sample() {
+        // At equal time: uniform 400 spp, power 100 spp (4x the time per
+        // sample), slc-weighted 200 spp (2x).
+        let rows = [
+            row("uniform", 0.05, 400, 1.0),
+            row("power", 0.04, 100, 4.0),
+            row("lightbvh", f64::NAN, 0, f64::NAN),
+            row("slc-weighted", 0.03, 200, 2.0),
+        ];
+        let b = against_best_peer(&rows, "s").unwrap();
+        assert_eq!(b.peer, "power");
+        assert!((b.rmse - 0.75).abs() < 1e-12);
+        assert!((b.time_per_sample - 0.5).abs() < 1e-12);
+        // 0.03·√200 / (0.04·√100)
+        assert!((b.noise_per_sample - 0.03 * 200f64.sqrt() / 0.4).abs() < 1e-12);
+        assert!((b.noise_per_sample * b.time_per_sample.sqrt() - b.rmse).abs() < 1e-12);
+        assert_eq!(against_best_peer(&rows[..3], "s"), None);
+    }
 }
