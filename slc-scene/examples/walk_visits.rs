@@ -1,0 +1,153 @@
+//! How many BSH nodes the path tracer's walk visits per shading point, and
+//! how many it would visit with two cheaper walks (issue 48, item 2), at
+//! the automatic ε, for Lambertian receivers (the plain sphere test):
+//!
+//! - `spheres`: the walk as built (`slc_core::bsh::walk::bsh_next_leaf`);
+//! - `+ boxes`: each inner node also tested against the bounding box of its
+//!   lights' bounds `c ± R` padded by the largest range below it (every
+//!   light's range sphere lies in it, so the walk finds the same leaves);
+//! - `tail N`: the `N` largest range spheres left out of the tree (tested
+//!   flat, `N` tests per point, not counted here), alone and with the boxes.
+//!
+//! One ξ set (seed 1, pass 0), 2,000 points uniform by area on the
+//! non-emissive surfaces. Counts, not times: the same on every machine.
+//!
+//!     cargo run --release -p slc-scene --example walk_visits -- [--tail N] SCENE.toml [SCENE.toml ...]
+
+use glam::Vec3;
+use slc_core::bsh::{BSH_NONE, Bsh, BshNode};
+use slc_core::range::{RangeParams, random_range2};
+use slc_core::xi::xi_for;
+use slc_scene::error_bound::{TARGET_CANDIDATES, auto_error_bound};
+use slc_scene::placement::{Stream, Surfaces};
+use slc_scene::pt::PtScene;
+use slc_scene::scene_file::SceneFile;
+
+/// Shading points per scene.
+const POINTS: u32 = 2000;
+
+/// Per node: the box of its lights' bounds and the largest range below it.
+fn boxes(
+    nodes: &[BshNode],
+    bounds: &[slc_core::light::LightBound],
+    r2: &[f32],
+) -> Vec<(Vec3, Vec3, f32)> {
+    let mut b = vec![(Vec3::ZERO, Vec3::ZERO, 0.0); nodes.len()];
+    // Reverse pre-order: children before parents.
+    for i in (0..nodes.len()).rev() {
+        let n = nodes[i];
+        b[i] = if n.child == BSH_NONE {
+            let l = &bounds[n.light as usize];
+            (l.center - l.extent, l.center + l.extent, r2[n.light as usize].sqrt())
+        } else {
+            let (l, r) = (b[n.child as usize], b[nodes[n.child as usize].next as usize]);
+            (l.0.min(r.0), l.1.max(r.1), l.2.max(r.2))
+        };
+    }
+    b
+}
+
+/// Nodes visited and leaves found by the stackless walk at `x`.
+fn walk(nodes: &[BshNode], boxes: Option<&[(Vec3, Vec3, f32)]>, x: Vec3) -> (u32, u32) {
+    let (mut visits, mut found, mut i) = (0, 0, if nodes.is_empty() { BSH_NONE } else { 0 });
+    while i != BSH_NONE {
+        let n = nodes[i as usize];
+        visits += 1;
+        let mut hit = (x - n.center).length_squared() <= n.radius * n.radius;
+        if let Some(b) = boxes.filter(|_| hit && n.child != BSH_NONE) {
+            let (lo, hi, r) = b[i as usize];
+            hit = x.cmpge(lo - r).all() && x.cmple(hi + r).all();
+        }
+        i = match (hit, n.child == BSH_NONE) {
+            (true, true) => {
+                found += 1;
+                n.next
+            }
+            (true, false) => n.child,
+            (false, _) => n.next,
+        };
+    }
+    (visits, found)
+}
+
+fn main() -> Result<(), Box<dyn std::error::Error>> {
+    let mut args: Vec<String> = std::env::args().skip(1).collect();
+    let mut tail = 16;
+    if let Some(k) = args.iter().position(|a| a == "--tail") {
+        tail = args.get(k + 1).ok_or("--tail N")?.parse()?;
+        args.drain(k..k + 2);
+    }
+    println!(
+        "{:<40} {:>7} {:>9} {:>10} {:>9} {:>9} {:>9} {:>13}",
+        "scene",
+        "lights",
+        "auto eps",
+        "candidates",
+        "spheres",
+        "+ boxes",
+        format!("tail {tail}"),
+        "tail + boxes"
+    );
+    for path in args {
+        let f = SceneFile::load(std::path::Path::new(&path))?;
+        let pts = PtScene::new(&f.scene, &f.lights)?;
+        let eps = auto_error_bound(&pts, 1.0, TARGET_CANDIDATES).ok_or("no automatic bound")?;
+        let params = RangeParams::new(eps, 1.0)?;
+        let bounds = pts.light_set().bounds();
+        let r2: Vec<f32> = pts
+            .lights()
+            .iter()
+            .enumerate()
+            .map(|(i, l)| random_range2(params.threshold_range2(l.peak()), xi_for(1, 0, i as u32)))
+            .collect();
+        // The tail: the lights of the largest range spheres, ranges set to 0
+        // in the tree (their leaves then hold only their own bound).
+        let mut order: Vec<usize> = (0..r2.len()).collect();
+        let radius = |l: usize| bounds[l].extent + r2[l].sqrt();
+        order.sort_by(|&a, &b| radius(b).total_cmp(&radius(a)));
+        let mut r2_tail = r2.clone();
+        for &l in order.iter().take(tail) {
+            r2_tail[l] = 0.0;
+        }
+        let surfaces = Surfaces::new(pts.scene())?;
+        let mut row = Vec::new();
+        let mut found_by = Vec::new();
+        let mut candidates = 0.0;
+        for (ranges, with_boxes) in [(&r2, false), (&r2, true), (&r2_tail, false), (&r2_tail, true)]
+        {
+            let mut bsh: Bsh = pts.light_set().bsh().clone();
+            bsh.refit(ranges)?;
+            let b = boxes(bsh.nodes(), bounds, ranges);
+            let (mut visits, mut found) = (0u64, 0u64);
+            for k in 0..POINTS {
+                let x = surfaces.sample(&mut Stream::new(0x1234, k)).0;
+                let (v, c) = walk(bsh.nodes(), with_boxes.then_some(&b[..]), x);
+                visits += v as u64;
+                found += c as u64;
+            }
+            if std::ptr::eq(ranges, &r2) && !with_boxes {
+                candidates = found as f64 / POINTS as f64;
+            }
+            row.push(visits as f64 / POINTS as f64);
+            found_by.push(found);
+        }
+        // The boxes only prune: the same leaves with and without them.
+        assert_eq!(
+            (found_by[0], found_by[2]),
+            (found_by[1], found_by[3]),
+            "{path}: boxes changed the leaves"
+        );
+        let name = std::path::Path::new(&path)
+            .file_stem()
+            .map_or(path.clone(), |s| s.to_string_lossy().into());
+        println!(
+            "{name:<40} {:>7} {eps:>9.4} {candidates:>10.2} {:>9.1} {:>9.1} {:>9.1} {:>13.1}",
+            pts.lights().len(),
+            row[0],
+            row[1],
+            row[2],
+            row[3]
+        );
+    }
+    Ok(())
+}
