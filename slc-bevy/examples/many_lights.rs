@@ -436,13 +436,16 @@ const CONFIGS: [(&str, Mode, bool, bool, bool); 6] = [
     ("Bevy, unbounded ranges", Mode::BevyUnbounded, false, true, true),
 ];
 
-/// The median of `v` (0 for none).
+/// The median of `v`: the middle value, or the mean of the middle two for
+/// an even count (0 for none).
 fn median(mut v: Vec<f64>) -> f64 {
-    if v.is_empty() {
-        return 0.0;
-    }
     v.sort_by(f64::total_cmp);
-    v[v.len() / 2]
+    let n = v.len();
+    match n {
+        0 => 0.0,
+        _ if n % 2 == 1 => v[n / 2],
+        _ => 0.5 * (v[n / 2 - 1] + v[n / 2]),
+    }
 }
 
 /// One frame of the bench, then a wait until the GPU has run everything
