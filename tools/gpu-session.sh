@@ -2,7 +2,7 @@
 # The real-GPU measurements issues 46-48 still wait for, packed for one device call.
 #
 #   ../shared/tools/gpu-bench.sh prepare && tools/gpu-session.sh
-#   then the device's run: command `bash .gpu/gpu-bench.sh run`, carry [".gpu"], timeout_s 560
+#   then the device's run: command `bash .gpu/gpu-bench.sh run`, carry [".gpu"], timeout_s 600
 #
 # Adds slc-bevy's many_lights example to .gpu/ (stripped and xz-compressed: the release binary is 90 MB,
 # over the 64 MiB a call carries; Python's lzma unpacks it there) and writes .gpu/commands.sh:
@@ -12,8 +12,10 @@
 #   per pixel instead of per tile, with hardware ray queries for the shadow rays, and at eps 0.03),
 #   500 and 20,000 (Bevy at unbounded ranges left out
 #   there: minutes);
-# - issue 48: the path-tracing suite at 512x512, noise from seed pairs.
-# About 490 s on an NVIDIA H200 (the last call's steps: docs/results/gpu-h200-b/log.txt). Results land
+# - issue 48: the path-tracing suite at 512x512, noise from seed pairs; then the losing scenes again with the
+#   light connections' shadow rays as hardware ray queries (--ray-query).
+# About 530 s on an NVIDIA H200 (the last call's steps: docs/results/gpu-h200-b/log.txt, 490 s, before the
+# ray-query suite); give the run timeout_s 600. Results land
 # in the call's $OUT; copy them to docs/results/ with the adapter's name and the date.
 set -euo pipefail
 cd "$(git rev-parse --show-toplevel)"
@@ -39,6 +41,8 @@ step 60 env SLC_BEVY_EPSILON=0.03 SLC_BEVY_BENCH_MODES=slc SLC_BEVY_BENCH=$OUT/b
 step 60 env SLC_BEVY_BENCH=$OUT/bevy-500.json ./many_lights 500
 step 120 env SLC_BEVY_BENCH_FRAMES=32 SLC_BEVY_BENCH_MODES=slc,default SLC_BEVY_BENCH=$OUT/bevy-20000.json ./many_lights 20000
 step 150 $S bench --app pt --backend gpu --suite scenes/suite --width 512 --height 512 --seconds 0.3 --noise seeds --json $OUT/pt-suite-512.json
+mkdir -p rq-suite && cp scenes/suite/tri-*-49152.toml scenes/suite/tri-away-2048.toml scenes/suite/points-clusters-49152.toml rq-suite/
+step 60 $S bench --app pt --backend gpu --ray-query --suite rq-suite --width 512 --height 512 --seconds 0.3 --noise seeds --json $OUT/pt-suite-512-ray-query.json
 CMDS
 du -sh .gpu
-echo "prepared: run 'bash .gpu/gpu-bench.sh run' on the device, carry [\".gpu\"], timeout_s 560"
+echo "prepared: run 'bash .gpu/gpu-bench.sh run' on the device, carry [\".gpu\"], timeout_s 600"

@@ -7,7 +7,8 @@ use clap::ValueEnum;
 use slc_cpu::pt::CpuPathTracer;
 use slc_scene::backend::DynPathTracer;
 use slc_scene::pt::PtScene;
-use slc_wgpu::GpuContext;
+use slc_wgpu::passes::ShadowRays;
+use slc_wgpu::{GpuContext, GpuOptions};
 
 /// Which backend.
 #[derive(Clone, Copy, Debug, ValueEnum, PartialEq, Eq)]
@@ -20,22 +21,38 @@ pub enum Backend {
 
 /// The GPU context when `backend` is `gpu`; its error says how to fall back.
 pub fn gpu_context(backend: Backend) -> anyhow::Result<Option<GpuContext>> {
+    gpu_context_with(backend, false)
+}
+
+/// [`gpu_context`], asking for ray queries when `ray_query` (`--ray-query`;
+/// refused on the CPU backend).
+pub fn gpu_context_with(backend: Backend, ray_query: bool) -> anyhow::Result<Option<GpuContext>> {
     match backend {
+        Backend::Cpu if ray_query => {
+            anyhow::bail!("--ray-query: ray queries are the GPU's (add --backend gpu)")
+        }
         Backend::Cpu => Ok(None),
-        Backend::Gpu => GpuContext::new().map(Some).map_err(anyhow::Error::from),
+        Backend::Gpu => GpuContext::with_options(&GpuOptions { ray_query })
+            .map(Some)
+            .map_err(anyhow::Error::from),
     }
 }
 
 /// The path tracer of `pts` at `width × height`: the GPU's when `gpu`
-/// holds a context, else the CPU's.
+/// holds a context (its shadow rays as ray queries when `ray_query`), else
+/// the CPU's.
 pub fn path_tracer(
     gpu: Option<&GpuContext>,
     pts: &PtScene,
     width: u32,
     height: u32,
+    ray_query: bool,
 ) -> anyhow::Result<Box<dyn DynPathTracer>> {
+    let rays = if ray_query { ShadowRays::RayQuery } else { ShadowRays::Software };
     match gpu {
-        Some(g) => Ok(Box::new(slc_wgpu::pt::GpuPt::new(g, pts, width, height)?)),
+        Some(g) => {
+            Ok(Box::new(slc_wgpu::pt::GpuPt::with_shadow_rays(g, pts, width, height, rays)?))
+        }
         None => Ok(Box::new(CpuPathTracer::new(pts))),
     }
 }

@@ -18,7 +18,7 @@ mod scene_args;
 mod suite;
 mod view;
 
-use backends::{Backend, GPU_BATCH, gpu_context, path_tracer};
+use backends::{Backend, GPU_BATCH, gpu_context, gpu_context_with, path_tracer};
 use clap::{Args, Parser, Subcommand};
 use methods::{MethodFlags, pt_method, vpl_settings};
 use notes::{PT_LIGHTS_NOTE, timing_note};
@@ -213,6 +213,7 @@ fn render(a: RenderArgs) -> anyhow::Result<()> {
     if a.scene.app == App::Pt {
         return render_pt(a);
     }
+    a.scene.pt_only_flags()?;
     if a.scene.backend == Backend::Gpu {
         return render_vpl_gpu(a);
     }
@@ -378,8 +379,8 @@ fn render_pt(a: RenderArgs) -> anyhow::Result<()> {
         seed: a.seed.or(f.seed).unwrap_or(d.seed),
         ..d
     };
-    let ctx = gpu_context(a.scene.backend)?;
-    let mut tracer = path_tracer(ctx.as_ref(), &pts, w, h)?;
+    let ctx = gpu_context_with(a.scene.backend, a.scene.ray_query)?;
+    let mut tracer = path_tracer(ctx.as_ref(), &pts, w, h, a.scene.ray_query)?;
     let batch = if on_gpu { GPU_BATCH } else { 1 };
     let mut acc = PtRender::new(w, h);
     let bar = indicatif::ProgressBar::new(0);

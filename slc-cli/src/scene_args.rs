@@ -57,6 +57,9 @@ pub struct SceneArgs {
     /// Edge of the primary light's shadow map (GPU frame; the CPU casts shadow rays).
     #[arg(long, default_value_t = 2048)]
     pub shadow_size: u32,
+    /// GPU path tracer: cast the light connections' shadow rays as the adapter's ray queries (wgpu's experimental ray queries: GPUs with ray tracing, Mesa 25's lavapipe) instead of the WGSL BVH walk; the closest hits still walk it.
+    #[arg(long)]
+    pub ray_query: bool,
 }
 
 /// The resolved scene and sizes of the VPL application.
@@ -116,6 +119,16 @@ impl SceneArgs {
             }
         }
         Ok(loaded)
+    }
+
+    /// Refuses the path tracer's flags for the VPL application.
+    pub fn pt_only_flags(&self) -> anyhow::Result<()> {
+        if self.ray_query {
+            anyhow::bail!(
+                "--ray-query: only the GPU path tracer (--app pt --backend gpu) casts ray queries"
+            );
+        }
+        Ok(())
     }
 
     /// Loads the scene and resolves the VPL application's sizes.

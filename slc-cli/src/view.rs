@@ -77,6 +77,7 @@ pub fn run(a: ViewArgs) -> anyhow::Result<()> {
         near_radius: a.near_radius,
         tile: VplSettings::default().tile,
         shadow_size: a.shadow_size,
+        ray_query: false,
     };
     let r = scene_args.resolve()?;
     let flags = crate::methods::MethodFlags {

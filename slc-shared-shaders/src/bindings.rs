@@ -364,12 +364,18 @@ pub fn bindings(kernel: Kernel, f: &Features) -> Vec<Binding> {
                 read(3, "rt2", "array<f32>", "threshold range²", "host"),
                 read(4, "r2", "array<f32>", "random range²", "`light_update`"),
                 read(5, "bsh_nodes", "array<BshNode>", "the refitted BSH", "`bsh_refit`"),
-                read(6, "geo_nodes", "array<GpuGeoNode>", "geometry BVH nodes", "host"),
-                read(7, "geo_tris", "array<GpuTriangle>", "geometry BVH triangles", "host"),
+            ];
+            if f.ray_query {
+                v.push(b(0, 6, "geo_tlas", Resource::AccelerationStructure, "the scene's triangles as one acceleration structure (shadow rays)", "host (slc-scene's `Occluders`)"));
+            } else {
+                v.push(read(6, "geo_nodes", "array<GpuGeoNode>", "geometry BVH nodes", "host"));
+                v.push(read(7, "geo_tris", "array<GpuTriangle>", "geometry BVH triangles", "host"));
+            }
+            v.extend([
                 read(8, "materials", "array<GpuMaterial>", "glTF metallic-roughness per material", "host"),
                 write(9, "radiance", vec4, "accumulated radiance"),
                 write(10, "candidates", "array<u32>", "what the traversal found per vertex (MIS)"),
-            ];
+            ]);
             v.extend(pt_tables(ies));
             return v;
         }

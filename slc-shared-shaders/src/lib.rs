@@ -582,9 +582,9 @@ pub fn check(kernel: Kernel, f: &Features) -> Result<(), ShaderError> {
     if !(1..=256).contains(&f.workgroup_size) {
         return bad(format!("workgroup size {} must be in 1..=256", f.workgroup_size));
     }
-    if f.ray_query && kernel != Kernel::DirectLight {
+    if f.ray_query && !matches!(kernel, Kernel::DirectLight | Kernel::PtConnect) {
         return bad(format!(
-            "{}: only direct_light casts its shadow rays as ray queries",
+            "{}: only direct_light and pt_connect cast their shadow rays as ray queries",
             kernel.name()
         ));
     }

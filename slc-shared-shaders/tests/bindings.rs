@@ -42,7 +42,7 @@ fn feature_sets() -> Vec<Features> {
             }
         }
     }
-    // Shadow rays as ray queries (direct_light only).
+    // Shadow rays as ray queries (direct_light and pt_connect only).
     v.push(Features { ray_query: true, ..Features::default() });
     v.push(Features {
         ray_query: true,
@@ -58,7 +58,7 @@ fn tables_match_the_modules() {
     let mut checked = 0;
     for f in feature_sets() {
         for &kernel in &Kernel::ALL {
-            if f.ray_query && kernel != Kernel::DirectLight {
+            if f.ray_query && !matches!(kernel, Kernel::DirectLight | Kernel::PtConnect) {
                 continue;
             }
             if kernel.is_vpl_frame()

@@ -261,26 +261,43 @@ fn every_direct_light_variant_validates() {
     }
 }
 
-/// Shadow rays as ray queries: `direct_light` with shadows binds the
-/// acceleration structure instead of the BVH's buffers and validates only
-/// with naga's ray-query capability; every other combination is refused.
+/// Shadow rays as ray queries: `direct_light` with shadows and
+/// `pt_connect` bind the acceleration structure instead of the BVH's
+/// buffers and validate only with naga's ray-query capability; every other
+/// combination is refused.
 #[test]
 fn ray_query_variant() {
     use slc_shared_shaders::bindings::{Resource, bindings};
     let rq = Features { ray_query: true, ..Features::default() };
-    for f in [
-        rq,
-        Features { selection: Selection::Weighted, tile_walk: false, ..rq },
-        Features { selection: Selection::Resampled, reuse_domains: 3, ..rq },
+    let pt = Features { reservoir_k: 8, ..rq };
+    for (kernel, f, slot) in [
+        (Kernel::DirectLight, rq, (1, 6)),
+        (
+            Kernel::DirectLight,
+            Features { selection: Selection::Weighted, tile_walk: false, ..rq },
+            (1, 6),
+        ),
+        (
+            Kernel::DirectLight,
+            Features { selection: Selection::Resampled, reuse_domains: 3, ..rq },
+            (1, 6),
+        ),
+        (Kernel::PtConnect, pt, (0, 6)),
+        (Kernel::PtConnect, Features { selection: Selection::Weighted, ..pt }, (0, 6)),
+        (
+            Kernel::PtConnect,
+            Features { selection: Selection::Uniform, reservoir_k: 1, ..pt },
+            (0, 6),
+        ),
     ] {
-        let g = generate_module(Kernel::DirectLight, &f).unwrap_or_else(|e| panic!("{f:?}: {e}"));
+        let g = generate_module(kernel, &f).unwrap_or_else(|e| panic!("{f:?}: {e}"));
         assert!(g.source.contains("rayQueryInitialize"));
         assert!(!g.source.contains("geo_nodes"));
-        let t = bindings(Kernel::DirectLight, &f);
+        let t = bindings(kernel, &f);
         let tlas: Vec<_> =
             t.iter().filter(|b| b.resource == Resource::AccelerationStructure).collect();
         assert_eq!(tlas.len(), 1);
-        assert_eq!((tlas[0].group, tlas[0].binding, tlas[0].name), (1, 6, "geo_tlas"));
+        assert_eq!((tlas[0].group, tlas[0].binding, tlas[0].name), (slot.0, slot.1, "geo_tlas"));
         // Without the capability naga refuses it: the module really holds a ray query.
         let r = naga::valid::Validator::new(
             naga::valid::ValidationFlags::all(),
@@ -294,7 +311,7 @@ fn ray_query_variant() {
         (Kernel::DirectLight, Features { shadows: false, ..rq }),
         (Kernel::DirectLight, Features { counters: true, ..rq }),
         (Kernel::BshReservoir, rq),
-        (Kernel::PtConnect, rq),
+        (Kernel::PtExtend, rq),
     ] {
         let r = generate_module(bad.0, &bad.1);
         assert!(matches!(r, Err(ShaderError::Unsupported(_))), "{bad:?}");

@@ -18,10 +18,20 @@
 //! walked by the same slc-core steps as the CPU's); the two
 //! backends draw their per-path random numbers differently, so they agree in
 //! expectation (the tests crate checks it), not pixel by pixel.
+//!
+//! `pt_connect`'s shadow rays walk the same WGSL BVH as `pt_extend`'s
+//! closest hits, on every adapter; [`GpuPt::with_shadow_rays`] with
+//! [`ShadowRays::RayQuery`] casts them as the adapter's ray queries instead
+//! (one acceleration structure over the scene's triangles, built before the
+//! first pass; the BVH stays for `pt_extend`), on a device opened with
+//! wgpu's `EXPERIMENTAL_RAY_QUERY` ([`GpuContext::ray_query`]). The segments
+//! and their offsets are the same (`occluded`, geometry.wgsl), so the image
+//! is the software walk's up to rays that graze an edge.
 
 use crate::kernel::{KernelLayout, UniformSlots, pipeline, read_back, storage, zeroed};
 use crate::lights::{GpuLightSet, WG};
-use crate::occluders;
+use crate::occluders::{self, GpuAccel};
+use crate::passes::ShadowRays;
 use crate::timing::Timer;
 use crate::{GpuContext, GpuError};
 use glam::Vec3;
@@ -49,12 +59,11 @@ type Geometry = (Vec<GpuGeoNode>, Vec<GpuTriangle>, Vec<[f32; 4]>);
 /// pass's shadows use too), the triangles in leaf order with their
 /// material and light, and their vertex normals (three per triangle, the
 /// same order; geometric ones where the scene has none).
-fn geometry(pts: &PtScene) -> Result<Geometry, GpuError> {
+fn geometry(occ: &Occluders, pts: &PtScene) -> Geometry {
     let scene = pts.scene();
-    let occ = Occluders::from_triangles(&scene.triangles)?;
     let source: Vec<usize> = (0..occ.triangles().len()).map(|i| occ.source(i).1 as usize).collect();
     let lot = pts.light_of_triangle();
-    let tris = occluders::gpu_triangles(&occ, |i| {
+    let tris = occluders::gpu_triangles(occ, |i| {
         let light = lot[source[i]];
         (scene.material_of[source[i]], if light == u32::MAX { NO_LIGHT } else { light })
     });
@@ -62,7 +71,7 @@ fn geometry(pts: &PtScene) -> Result<Geometry, GpuError> {
         .iter()
         .flat_map(|&i| scene.vertex_normals(i).map(|n| [n.x, n.y, n.z, 0.0]))
         .collect();
-    Ok((occluders::gpu_nodes(&occ), tris, normals))
+    (occluders::gpu_nodes(occ), tris, normals)
 }
 
 /// A scene material as the kernels read it.
@@ -126,6 +135,9 @@ pub struct GpuPt {
     shade_params: UniformSlots,
     extend: Kernels,
     connect: Kernels,
+    /// The scene's triangles as an acceleration structure, where
+    /// `pt_connect` casts ray queries.
+    accel: Option<GpuAccel>,
 }
 
 impl GpuPt {
@@ -134,13 +146,32 @@ impl GpuPt {
     /// method's pipelines are built on its first render). Buffer,
     /// binding-count, dispatch and traversal-depth limits are checked first.
     pub fn new(gpu: &GpuContext, pts: &PtScene, width: u32, height: u32) -> Result<Self, GpuError> {
+        Self::with_shadow_rays(gpu, pts, width, height, ShadowRays::Software)
+    }
+
+    /// [`GpuPt::new`] with `pt_connect`'s shadow rays cast as `rays` (the
+    /// module docs). [`ShadowRays::RayQuery`] on a device without wgpu's
+    /// `EXPERIMENTAL_RAY_QUERY`, or past its acceleration-structure limits,
+    /// is a typed error before anything is uploaded.
+    pub fn with_shadow_rays(
+        gpu: &GpuContext,
+        pts: &PtScene,
+        width: u32,
+        height: u32,
+        rays: ShadowRays,
+    ) -> Result<Self, GpuError> {
         if !(1..=16384).contains(&width) || !(1..=16384).contains(&height) {
             return Err(GpuError::Setting(format!(
                 "image size {width}x{height} must be within 1..=16384 on each side"
             )));
         }
         let pixels = width as u64 * height as u64;
-        let (geo_nodes, geo_tris, geo_normals) = geometry(pts)?;
+        let occ = Occluders::from_triangles(&pts.scene().triangles)?;
+        let ray_query = rays == ShadowRays::RayQuery;
+        if ray_query {
+            occluders::check_accel_limits(gpu, &occ)?;
+        }
+        let (geo_nodes, geo_tris, geo_normals) = geometry(&occ, pts);
         let lim = &gpu.limits;
         let max_binding = lim.max_storage_buffer_binding_size;
         gpu.require(
@@ -215,17 +246,23 @@ impl GpuPt {
         // Group 0 of each kernel, bound by its binding table's names (the
         // tables do not depend on the light selection); group 1 is the
         // light set's tables.
-        let kernel = |k: Kernel, params: &UniformSlots, bufs: &[(&str, &wgpu::Buffer)]| {
+        let accel = if ray_query { Some(GpuAccel::new(gpu, &occ)?) } else { None };
+        let kernel = |k: Kernel,
+                      f: &Features,
+                      params: &UniformSlots,
+                      bufs: &[(&str, &wgpu::Buffer)],
+                      tlas: Option<&wgpu::Tlas>| {
             let wgsl = PtMethod::ALL
                 .iter()
                 .map(|&m| {
                     let (selection, k_slots) = selection(m);
-                    generate(k, &Features { selection, reservoir_k: k_slots as u32, ..base })
+                    generate(k, &Features { selection, reservoir_k: k_slots as u32, ..*f })
                 })
                 .collect::<Result<Vec<_>, _>>()?;
-            let layout = KernelLayout::new(gpu, k, &base)?;
+            let layout = KernelLayout::new(gpu, k, f)?;
             let mut res = vec![("params", params.binding())];
             res.extend(bufs.iter().map(|&(name, b)| (name, crate::kernel::whole(b))));
+            res.extend(tlas.map(|t| ("geo_tlas", wgpu::BindingResource::AccelerationStructure(t))));
             let bind_group = layout.group(gpu, 0, &res);
             let pipelines = vec![None; wgsl.len()];
             let layout = layout.group_layout(0).clone();
@@ -233,6 +270,7 @@ impl GpuPt {
         };
         let extend = kernel(
             Kernel::PtExtend,
+            &base,
             &pt_params,
             &[
                 ("lights", &set.lights),
@@ -248,22 +286,27 @@ impl GpuPt {
                 ("vertices", &vertices),
                 ("radiance", &radiance),
             ],
+            None,
         )?;
+        let mut connect_bufs = vec![
+            ("vertices", &vertices),
+            ("lights", &set.lights),
+            ("rt2", &set.rt2),
+            ("r2", &set.r2),
+            ("bsh_nodes", &set.bsh),
+            ("materials", &materials_buf),
+            ("radiance", &radiance),
+            ("candidates", &candidates),
+        ];
+        if !ray_query {
+            connect_bufs.extend([("geo_nodes", &geo_nodes_buf), ("geo_tris", &geo_tris_buf)]);
+        }
         let connect = kernel(
             Kernel::PtConnect,
+            &Features { ray_query, ..base },
             &shade_params,
-            &[
-                ("vertices", &vertices),
-                ("lights", &set.lights),
-                ("rt2", &set.rt2),
-                ("r2", &set.r2),
-                ("bsh_nodes", &set.bsh),
-                ("geo_nodes", &geo_nodes_buf),
-                ("geo_tris", &geo_tris_buf),
-                ("materials", &materials_buf),
-                ("radiance", &radiance),
-                ("candidates", &candidates),
-            ],
+            &connect_bufs,
+            accel.as_ref().map(|a| &a.tlas),
         )?;
         let cam = &pts.scene().camera;
         let (f, r, u) = cam.scaled_basis(width, height);
@@ -280,6 +323,7 @@ impl GpuPt {
             shade_params,
             extend,
             connect,
+            accel,
         };
         gpu.wait()?;
         Ok(g)
@@ -324,6 +368,10 @@ impl GpuPt {
             .device
             .create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("clear") });
         enc.clear_buffer(&self.radiance, 0, None);
+        // The acceleration structure's build, once, before the first pass.
+        if let Some(a) = &mut self.accel {
+            a.record_builds(&mut enc);
+        }
         gpu.queue.submit([enc.finish()]);
         let (pos, right, up, fwd) = self.camera;
         // Timestamps for every pass, or none (then wall time).

@@ -41,6 +41,9 @@ pub fn run(a: BenchArgs) -> anyhow::Result<()> {
             slc_cpu::simd::SimdPath::best().name()
         ));
     }
+    if a.scene.app != App::Pt {
+        a.scene.pt_only_flags()?;
+    }
     if a.flicker {
         if a.scene.app == App::Pt {
             return Err(anyhow!("--flicker measures the VPL frame (--app vpl)"));

@@ -2,7 +2,7 @@
 //! RMSE against a reference.
 
 use super::args::{BenchArgs, Noise};
-use crate::backends::{GPU_BATCH, gpu_context, path_tracer};
+use crate::backends::{GPU_BATCH, gpu_context_with, path_tracer};
 use crate::reference::pt_reference;
 use crate::report::{PtReport, PtRun, write_pt_csv};
 use anyhow::{Context, anyhow};
@@ -77,8 +77,8 @@ pub(super) fn pt_equal_time(
         }
     };
     // The reference stays on the CPU; the methods run on the chosen backend.
-    let ctx = gpu_context(a.scene.backend)?;
-    let mut tracer = path_tracer(ctx.as_ref(), &pts, w, h)?;
+    let ctx = gpu_context_with(a.scene.backend, a.scene.ray_query)?;
+    let mut tracer = path_tracer(ctx.as_ref(), &pts, w, h, a.scene.ray_query)?;
     let batch = if ctx.is_some() { GPU_BATCH } else { 1 };
     let methods = PtMethod::ALL;
     let mut runs = Vec::new();

@@ -1,3 +1,6 @@
+{% if ray_query %}
+enable wgpu_ray_query;
+{% endif %}
 {% include "header.wgsl" %}
 {% include "lights.wgsl" %}
 {% include "geometry.wgsl" %}
