@@ -136,10 +136,11 @@ fn row_major(m: &Affine3A) -> [f32; 12] {
 
 impl GpuAccel {
     /// The bottom level of each of `o`'s meshes and the top level over its
-    /// instances (limits checked first), created and uploaded; their
-    /// builds wait for [`GpuAccel::record_builds`].
+    /// instances, created and uploaded; their builds wait for
+    /// [`GpuAccel::record_builds`]. The caller has checked
+    /// [`check_accel_limits`] first, before it changed anything (the direct
+    /// pass's `set_shadows`, the path tracer's `with_shadow_rays`).
     pub(crate) fn new(gpu: &GpuContext, o: &Occluders) -> Result<Self, GpuError> {
-        check_accel_limits(gpu, o)?;
         let sizes: Vec<wgpu::BlasTriangleGeometrySizeDescriptor> = (0..o.mesh_count())
             .map(|m| wgpu::BlasTriangleGeometrySizeDescriptor {
                 vertex_format: wgpu::VertexFormat::Float32x3,
@@ -237,10 +238,11 @@ pub(crate) struct GpuOccluders {
 }
 
 impl GpuOccluders {
-    /// Uploads `o` after checking the device's limits, and with
-    /// `ray_query` builds its acceleration structures.
+    /// Uploads `o`, and with `ray_query` makes its acceleration
+    /// structures. The caller (the direct pass's `set_shadows`) has checked
+    /// [`check_limits`] and, with `ray_query`, [`check_accel_limits`]
+    /// first, before it changed anything.
     pub(crate) fn new(gpu: &GpuContext, o: &Occluders, ray_query: bool) -> Result<Self, GpuError> {
-        check_limits(gpu, o)?;
         let accel = if ray_query { Some(GpuAccel::new(gpu, o)?) } else { None };
         let (nodes, tris) = (gpu_nodes(o), gpu_triangles(o, |_| (0, NO_LIGHT)));
         let usage = wgpu::BufferUsages::empty();

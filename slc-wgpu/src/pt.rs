@@ -26,7 +26,9 @@
 //! first pass; the BVH stays for `pt_extend`), on a device opened with
 //! wgpu's `EXPERIMENTAL_RAY_QUERY` ([`GpuContext::ray_query`]). The segments
 //! and their offsets are the same (`occluded`, geometry.wgsl), so the image
-//! is the software walk's up to rays that graze an edge.
+//! is the software walk's wherever the two agree on a segment (Mesa 25's
+//! lavapipe does not on a few segments toward thin triangle lights:
+//! docs/results/pt-ray-queries.md).
 
 use crate::kernel::{KernelLayout, UniformSlots, pipeline, read_back, storage, zeroed};
 use crate::lights::{GpuLightSet, WG};
