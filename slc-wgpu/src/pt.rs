@@ -249,11 +249,29 @@ impl GpuPt {
         // tables do not depend on the light selection); group 1 is the
         // light set's tables.
         let accel = if ray_query { Some(GpuAccel::new(gpu, &occ)?) } else { None };
-        let kernel = |k: Kernel,
-                      f: &Features,
-                      params: &UniformSlots,
-                      bufs: &[(&str, &wgpu::Buffer)],
-                      tlas: Option<&wgpu::Tlas>| {
+        // Every group-0 resource of the two kernels by its binding name:
+        // each kernel binds those its binding table binds (pt_connect with
+        // ray queries binds geo_tlas, not geo_nodes and geo_tris).
+        let whole = crate::kernel::whole;
+        let mut resources = vec![
+            ("lights", whole(&set.lights)),
+            ("rt2", whole(&set.rt2)),
+            ("r2", whole(&set.r2)),
+            ("bsh_nodes", whole(&set.bsh)),
+            ("light_leaf", whole(&set.leaf)),
+            ("geo_nodes", whole(&geo_nodes_buf)),
+            ("geo_tris", whole(&geo_tris_buf)),
+            ("materials", whole(&materials_buf)),
+            ("geo_normals", whole(&geo_normals_buf)),
+            ("candidates", whole(&candidates)),
+            ("paths", whole(&paths)),
+            ("vertices", whole(&vertices)),
+            ("radiance", whole(&radiance)),
+        ];
+        if let Some(a) = &accel {
+            resources.push(("geo_tlas", wgpu::BindingResource::AccelerationStructure(&a.tlas)));
+        }
+        let kernel = |k: Kernel, f: &Features, params: &UniformSlots| {
             let wgsl = PtMethod::ALL
                 .iter()
                 .map(|&m| {
@@ -263,53 +281,14 @@ impl GpuPt {
                 .collect::<Result<Vec<_>, _>>()?;
             let layout = KernelLayout::new(gpu, k, f)?;
             let mut res = vec![("params", params.binding())];
-            res.extend(bufs.iter().map(|&(name, b)| (name, crate::kernel::whole(b))));
-            res.extend(tlas.map(|t| ("geo_tlas", wgpu::BindingResource::AccelerationStructure(t))));
+            res.extend(resources.iter().filter(|(name, _)| layout.binds(name)).cloned());
             let bind_group = layout.group(gpu, 0, &res);
             let pipelines = vec![None; wgsl.len()];
             let layout = layout.group_layout(0).clone();
             Ok::<_, GpuError>(Kernels { name: k.name(), layout, wgsl, pipelines, bind_group })
         };
-        let extend = kernel(
-            Kernel::PtExtend,
-            &base,
-            &pt_params,
-            &[
-                ("lights", &set.lights),
-                ("rt2", &set.rt2),
-                ("bsh_nodes", &set.bsh),
-                ("light_leaf", &set.leaf),
-                ("geo_nodes", &geo_nodes_buf),
-                ("geo_tris", &geo_tris_buf),
-                ("materials", &materials_buf),
-                ("geo_normals", &geo_normals_buf),
-                ("candidates", &candidates),
-                ("paths", &paths),
-                ("vertices", &vertices),
-                ("radiance", &radiance),
-            ],
-            None,
-        )?;
-        let mut connect_bufs = vec![
-            ("vertices", &vertices),
-            ("lights", &set.lights),
-            ("rt2", &set.rt2),
-            ("r2", &set.r2),
-            ("bsh_nodes", &set.bsh),
-            ("materials", &materials_buf),
-            ("radiance", &radiance),
-            ("candidates", &candidates),
-        ];
-        if !ray_query {
-            connect_bufs.extend([("geo_nodes", &geo_nodes_buf), ("geo_tris", &geo_tris_buf)]);
-        }
-        let connect = kernel(
-            Kernel::PtConnect,
-            &Features { ray_query, ..base },
-            &shade_params,
-            &connect_bufs,
-            accel.as_ref().map(|a| &a.tlas),
-        )?;
+        let extend = kernel(Kernel::PtExtend, &base, &pt_params)?;
+        let connect = kernel(Kernel::PtConnect, &Features { ray_query, ..base }, &shade_params)?;
         let cam = &pts.scene().camera;
         let (f, r, u) = cam.scaled_basis(width, height);
         let g = GpuPt {
