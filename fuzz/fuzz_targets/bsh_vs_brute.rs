@@ -1,6 +1,7 @@
 //! The bounding-sphere hierarchy on arbitrary light sets, NaN and ∞
 //! included: bad input is rejected before it reaches the tree; accepted
-//! input answers every query exactly as a brute-force scan.
+//! input answers every query exactly as a brute-force scan, with a range
+//! tail of 0 to 4 lights (`Bsh::with_tail`) as without.
 #![no_main]
 
 use arbitrary::Arbitrary;
@@ -14,6 +15,7 @@ use slc_core::sphere::{Aabb, Sphere};
 struct Input {
     lights: Vec<([f32; 3], f32, f32)>,
     queries: Vec<([f32; 3], f32, [f32; 3])>,
+    tail: u8,
 }
 
 fuzz_target!(|input: Input| {
@@ -25,7 +27,7 @@ fuzz_target!(|input: Input| {
     let mut bsh = match Bsh::build(&bounds) {
         Ok(t) => {
             assert!(valid, "accepted invalid bounds");
-            t
+            t.with_tail(input.tail as usize % 5).expect("a tail of at most 4")
         }
         Err(_) => {
             assert!(!valid, "rejected valid bounds");

@@ -495,6 +495,7 @@ fn shaders(out: &Path, lights: &str, reservoir_k: u32) -> anyhow::Result<()> {
     let mut jobs: Vec<(String, Kernel, Features)> = [
         Kernel::LightUpdate,
         Kernel::BshRefit,
+        Kernel::BshTail,
         Kernel::BshReservoir,
         Kernel::PtConnect,
         Kernel::PtExtend,

@@ -20,6 +20,15 @@
 //! - **Queries** return exactly the lights whose own range sphere passes the
 //!   test (leaf test = brute-force test), because every inner sphere
 //!   contains its children in f32 (see [`crate::sphere`]).
+//! - **Range tail** (optional, [`Bsh::with_tail`]; issue 30's measurement:
+//!   the few largest random ranges inflate every sphere above them): each
+//!   refit leaves the lights whose range sphere falls in the top bins of a
+//!   histogram of radii ([`bsh_tail_key`], at most `k` lights:
+//!   [`walk::bsh_tail_cut`]) out of the tree (their leaves refit with range
+//!   0 and marked [`BSH_TAIL`], skipped by the walks) and writes them, in
+//!   light order, as leaves after the tree, chained from the nodes whose
+//!   `next` ended the walk: every walk then tests them flat after the tree.
+//!   The same lights are found; only the inner spheres shrink.
 
 use crate::BshError;
 use crate::light::LightBound;
@@ -31,6 +40,26 @@ use glam::Vec3;
 crate::shared! {
     /// "No node" / "no light" marker in [`BshNode`] links.
     pub const BSH_NONE: u32 = 4294967295;
+
+    /// Bit of a leaf's `light` that marks it as in the range tail this
+    /// refit: its range is left out of the tree (its radius is its extent)
+    /// and the walks skip it; its copy after the tree holds its range.
+    /// Light indices stay below it ([`crate::BshError::TooManyLights`]).
+    pub const BSH_TAIL: u32 = 2147483648;
+
+    /// Bins of the range tail's histogram ([`bsh_tail_key`]).
+    pub const BSH_TAIL_BINS: u32 = 1024;
+
+    /// The longest range tail: what the GPU's one-invocation sort of the
+    /// tail takes (`k²` steps) and what a walk tests flat.
+    pub const BSH_TAIL_MAX: u32 = 64;
+
+    /// The range tail's histogram bin of a range-sphere radius `ρ`: the top
+    /// ten bits of `|ρ|`'s f32 (its exponent and two mantissa bits: bins
+    /// 19% wide), monotone in `ρ ≥ 0`; +∞ falls in bin 1020.
+    pub fn bsh_tail_key(radius: f32) -> u32 {
+        return (f32_to_bits(radius) & 2147483647) >> 21;
+    }
 
     /// One node of the flat hierarchy; 32 bytes, the same layout in Rust
     /// (`#[repr(C)]`) and WGSL storage buffers.
@@ -107,7 +136,9 @@ pub mod walk {
     use super::{
         BSH_NONE, BshNode, BshNodes, bsh_count, bsh_node, bsh_range_bound, bsh_scaled_radius,
     };
+    use super::{BSH_TAIL, bsh_tail_key};
     use crate::importance::{cone_cos_of, range_scale_at, range_scale_toward};
+    use crate::light::range_radius;
     use crate::sphere::{sphere_contains_point, sphere_overlaps_aabb, sphere_pad, sphere_union};
     use crate::wgsl::*;
 
@@ -192,14 +223,58 @@ pub mod walk {
                 let node: BshNode = bsh_node(nodes, i);
                 if bsh_reaches(node, x, r, rl) {
                     if node.child == BSH_NONE {
-                        return i;
+                        if (node.light & BSH_TAIL) == 0 {
+                            return i;
+                        }
+                        i = node.next;
+                    } else {
+                        i = node.child;
                     }
-                    i = node.child;
                 } else {
                     i = node.next;
                 }
             }
             return BSH_NONE;
+        }
+
+        /// Whether a light of extent `R` and squared random range `r2`
+        /// belongs to the range tail of a refit whose histogram cut is `cut`
+        /// ([`bsh_tail_cut`]; [`BSH_TAIL_BINS`] for none): its range
+        /// sphere's radius falls in a bin at or above the cut.
+        pub fn bsh_in_tail(extent: f32, r2: f32, cut: u32) -> bool {
+            return bsh_tail_key(range_radius(extent, r2)) >= cut;
+        }
+
+        /// The node after `i` on the tree's rightmost path (its second
+        /// child), or `BSH_NONE` at its leaf: the nodes whose `next` ends a
+        /// walk of the tree, which the refit points at the range tail.
+        pub fn bsh_rightmost_next(nodes: BshNodes, i: u32) -> u32 {
+            let node: BshNode = bsh_node(nodes, i);
+            if node.child == BSH_NONE {
+                return BSH_NONE;
+            }
+            return bsh_node(nodes, node.child).next;
+        }
+
+        /// Light `li`'s leaf `i` as a walk would test it: the leaf itself,
+        /// or, where the refit put its light in the range tail
+        /// ([`BSH_TAIL`]), its copy after the tree, which holds its range
+        /// (found on the chain from the root's `next`).
+        pub fn bsh_range_leaf(nodes: BshNodes, i: u32) -> BshNode {
+            let leaf: BshNode = bsh_node(nodes, i);
+            if (leaf.light & BSH_TAIL) == 0 {
+                return leaf;
+            }
+            let li: u32 = leaf.light & (BSH_TAIL - 1);
+            let mut t: u32 = bsh_node(nodes, 0).next;
+            while t != BSH_NONE {
+                let copy: BshNode = bsh_node(nodes, t);
+                if copy.light == li {
+                    return copy;
+                }
+                t = copy.next;
+            }
+            return leaf;
         }
 
         /// Depth of the subtrees the direct pass's tile walk deals out
@@ -262,9 +337,13 @@ pub mod walk {
                 let node: BshNode = bsh_node(nodes, i);
                 if bsh_reaches_box(node, lo, hi, w) {
                     if node.child == BSH_NONE {
-                        return i;
+                        if (node.light & BSH_TAIL) == 0 {
+                            return i;
+                        }
+                        i = node.next;
+                    } else {
+                        i = node.child;
                     }
-                    i = node.child;
                 } else {
                     i = node.next;
                 }
@@ -321,6 +400,43 @@ pub mod walk {
     }
 }
 
+/// The range tail's histogram as the shared cut reads it: a slice of
+/// [`BSH_TAIL_BINS`] counts on the CPU; the GPU's `bsh_tail` kernel
+/// declares `alias TailHist = u32` and the reader [`bsh_tail_bin`] over its
+/// atomic `tail_hist` buffer, then includes [`tail`]'s WGSL.
+pub type TailHist<'a> = &'a [u32];
+
+/// Bin `b` of `hist` (the GPU kernel's reader: `atomicLoad(&tail_hist[b])`).
+#[inline]
+pub fn bsh_tail_bin(hist: TailHist, b: u32) -> u32 {
+    hist[b as usize]
+}
+
+/// The range tail's selection, written once for both backends (its WGSL
+/// is [`tail::WGSL`], which only the GPU's `bsh_tail` kernel includes).
+pub mod tail {
+    use super::{BSH_TAIL_BINS, TailHist, bsh_tail_bin};
+
+    crate::shared! {
+        /// The range tail's cut: the lowest bin `b` such that the bins from
+        /// `b` up hold at most `k` lights of the histogram `hist` (read
+        /// through `bsh_tail_bin`); [`BSH_TAIL_BINS`] when the top bin alone
+        /// holds more. The lights at or above it are the tail: the `k`
+        /// largest spheres or fewer (a bin is all in or all out), the same
+        /// on both backends.
+        pub fn bsh_tail_cut(hist: TailHist, k: u32) -> u32 {
+            let mut b: u32 = BSH_TAIL_BINS;
+            let mut sum: u32 = 0;
+            while b > 0 && sum + bsh_tail_bin(hist, b - 1) <= k {
+                sum += bsh_tail_bin(hist, b - 1);
+                b -= 1;
+            }
+            return b;
+        }
+
+    }
+}
+
 /// Bounding-sphere hierarchy; see the module docs.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Bsh {
@@ -328,6 +444,9 @@ pub struct Bsh {
     bounds: Vec<LightBound>,
     /// Each light's leaf (node index).
     leaves: Vec<u32>,
+    /// The range tail's length limit `k` (0: no tail); its `k` slots follow
+    /// the tree in `nodes`.
+    tail: usize,
 }
 
 impl Bsh {
@@ -351,6 +470,7 @@ impl Bsh {
             nodes: Vec::with_capacity(2 * bounds.len()),
             bounds: bounds.to_vec(),
             leaves: Vec::new(),
+            tail: 0,
         };
         if !bounds.is_empty() {
             let mut idx: Vec<u32> = (0..bounds.len() as u32).collect();
@@ -410,6 +530,42 @@ impl Bsh {
         self.emit(right, next);
     }
 
+    /// The tree with a range tail of at most `k` lights (module docs): from
+    /// the next refit on, the lights whose range spheres fall in the
+    /// histogram's top bins, at most `k` ([`tail::bsh_tail_cut`]), are
+    /// tested flat after the tree. Walks find the same lights; `k = 0`
+    /// takes the tail away. At most [`BSH_TAIL_MAX`]. The ranges start at 0
+    /// again (as after [`Bsh::build`]) until the next refit.
+    pub fn with_tail(mut self, k: usize) -> Result<Bsh, BshError> {
+        if k > BSH_TAIL_MAX as usize {
+            return Err(BshError::TailTooLong(k));
+        }
+        let tree = self.tree_len();
+        self.nodes.truncate(tree);
+        self.tail = k;
+        let mut i = if tree == 0 { BSH_NONE } else { 0 };
+        while i != BSH_NONE {
+            self.nodes[i as usize].next = BSH_NONE;
+            i = walk::bsh_rightmost_next(&self.nodes, i);
+        }
+        if !self.nodes.is_empty() {
+            let slot = BshNode { child: BSH_NONE, next: BSH_NONE, ..self.nodes[0] };
+            self.nodes.resize(tree + k, slot);
+            self.refit(&alloc::vec![0.0; self.bounds.len()])?;
+        }
+        Ok(self)
+    }
+
+    /// The range tail's length limit (0: none; [`Bsh::with_tail`]).
+    pub fn tail_capacity(&self) -> usize {
+        self.tail
+    }
+
+    /// Nodes of the tree proper: the range tail's slots follow them.
+    pub fn tree_len(&self) -> usize {
+        if self.nodes.is_empty() { 0 } else { 2 * self.bounds.len() - 1 }
+    }
+
     /// Refits every sphere for new squared random ranges, one per light
     /// (`r2[i]` for light `i`, as from [`crate::range::random_range2`]).
     /// O(n). `r2` must have one finite-or-+∞, non-negative value per light.
@@ -425,10 +581,65 @@ impl Bsh {
     /// array).
     pub fn refit_split(&mut self, r2: &[f32], grain: usize, join: &Join) -> Result<(), BshError> {
         self.check_ranges(r2)?;
-        if !self.nodes.is_empty() {
-            refit_subtree(&mut self.nodes, 0, &self.bounds, r2, grain.max(1), join);
+        if self.nodes.is_empty() {
+            return Ok(());
+        }
+        let cut = self.tail_cut(r2);
+        let tree = self.tree_len();
+        let leaf = LeafRefit { bounds: &self.bounds, r2, cut };
+        refit_subtree(&mut self.nodes[..tree], 0, &leaf, grain.max(1), join);
+        if self.tail > 0 {
+            self.link_tail(r2, cut);
         }
         Ok(())
+    }
+
+    /// The range tail's cut for ranges `r2`: the histogram of the lights'
+    /// range-sphere bins ([`bsh_tail_key`]) cut at the tail's length
+    /// ([`tail::bsh_tail_cut`]); [`BSH_TAIL_BINS`] (nothing) without a tail.
+    fn tail_cut(&self, r2: &[f32]) -> u32 {
+        if self.tail == 0 {
+            return BSH_TAIL_BINS;
+        }
+        let mut hist = alloc::vec![0u32; BSH_TAIL_BINS as usize];
+        for (b, &r) in self.bounds.iter().zip(r2) {
+            hist[bsh_tail_key(crate::light::range_radius(b.extent, r)) as usize] += 1;
+        }
+        tail::bsh_tail_cut(&hist, self.tail as u32)
+    }
+
+    /// Writes the tail's lights (those at or above `cut`, in light order)
+    /// as leaves after the tree, chained, and points the tree's rightmost
+    /// path at the first (`BSH_NONE` when the tail is empty): what the
+    /// GPU's `bsh_tail` kernel writes.
+    fn link_tail(&mut self, r2: &[f32], cut: u32) {
+        let tree = self.tree_len();
+        let mut count = 0;
+        for (li, (b, &r)) in self.bounds.iter().zip(r2).enumerate() {
+            if walk::bsh_in_tail(b.extent, r, cut) {
+                let at = tree + count;
+                self.nodes[at] = BshNode {
+                    center: b.center,
+                    radius: crate::light::range_radius(b.extent, r),
+                    child: BSH_NONE,
+                    next: at as u32 + 1,
+                    light: li as u32,
+                    extent: b.extent,
+                };
+                count += 1;
+            }
+        }
+        let first = if count == 0 {
+            BSH_NONE
+        } else {
+            self.nodes[tree + count - 1].next = BSH_NONE;
+            tree as u32
+        };
+        let mut i = 0;
+        while i != BSH_NONE {
+            self.nodes[i as usize].next = first;
+            i = walk::bsh_rightmost_next(&self.nodes, i);
+        }
     }
 
     /// `r2` has one finite-or-+∞, non-negative value per light.
@@ -442,9 +653,11 @@ impl Bsh {
         Ok(())
     }
 
-    /// Light `i`'s leaf as the last refit left it.
+    /// Light `i`'s leaf as the last refit left it, with its range: for a
+    /// light in the range tail, its copy after the tree
+    /// ([`walk::bsh_range_leaf`]).
     pub fn leaf(&self, i: usize) -> BshNode {
-        self.nodes[self.leaves[i] as usize]
+        walk::bsh_range_leaf(&self.nodes, self.leaves[i])
     }
 
     /// The flat node array (pre-order; upload as-is to the GPU).
@@ -464,9 +677,10 @@ impl Bsh {
 
     /// The current range sphere of light `i` (as its leaf holds it).
     pub fn light_sphere(&self, i: usize) -> Option<Sphere> {
-        self.leaves
-            .get(i)
-            .map(|&k| Sphere::new(self.nodes[k as usize].center, self.nodes[k as usize].radius))
+        (i < self.leaves.len()).then(|| {
+            let l = self.leaf(i);
+            Sphere::new(l.center, l.radius)
+        })
     }
 
     /// The talk's stackless traversal: calls `visit(light)` for every leaf
@@ -478,7 +692,9 @@ impl Bsh {
             let n = &self.nodes[i as usize];
             if hit(n.center, n.radius) {
                 if n.child == BSH_NONE {
-                    visit(n.light);
+                    if n.light & BSH_TAIL == 0 {
+                        visit(n.light);
+                    }
                     i = n.next;
                 } else {
                     i = n.child;
@@ -542,11 +758,27 @@ fn serial_join(a: &mut (dyn FnMut() + Send), b: &mut (dyn FnMut() + Send)) {
     b();
 }
 
-/// A leaf refitted: its light's range sphere `(c, R + r)`.
-fn leaf_refitted(mut n: BshNode, bounds: &[LightBound], r2: &[f32]) -> BshNode {
-    let s = bounds[n.light as usize].range_sphere(r2[n.light as usize]);
-    (n.center, n.radius) = (s.center, s.radius);
-    n
+/// What a leaf's refit reads: the lights' bounds, their squared ranges
+/// and the range tail's cut.
+struct LeafRefit<'a> {
+    bounds: &'a [LightBound],
+    r2: &'a [f32],
+    cut: u32,
+}
+
+impl LeafRefit<'_> {
+    /// A leaf refitted: its light's range sphere `(c, R + r)`, or for a
+    /// light in the range tail ([`walk::bsh_in_tail`]) `(c, R)`, marked
+    /// [`BSH_TAIL`].
+    fn leaf(&self, mut n: BshNode) -> BshNode {
+        let li = (n.light & (BSH_TAIL - 1)) as usize;
+        let (b, r2) = (&self.bounds[li], self.r2[li]);
+        let tail = walk::bsh_in_tail(b.extent, r2, self.cut);
+        let s = b.range_sphere(if tail { 0.0 } else { r2 });
+        (n.center, n.radius) = (s.center, s.radius);
+        n.light = li as u32 | if tail { BSH_TAIL } else { 0 };
+        n
+    }
 }
 
 /// An inner node refitted from its two children: the union of their
@@ -566,20 +798,13 @@ fn inner_refitted(mut n: BshNode, left: BshNode, right: BshNode) -> BshNode {
 /// Refits the subtree that is all of `nodes`, its root `nodes[0]` at index
 /// `base` of the whole array (links are absolute): subtrees above `grain`
 /// nodes split in two through `join`, smaller ones in reverse pre-order.
-fn refit_subtree(
-    nodes: &mut [BshNode],
-    base: u32,
-    bounds: &[LightBound],
-    r2: &[f32],
-    grain: usize,
-    join: &Join,
-) {
+fn refit_subtree(nodes: &mut [BshNode], base: u32, leaf: &LeafRefit, grain: usize, join: &Join) {
     // A leaf is a subtree of one node (`grain ≥ 1`).
     if nodes.len() <= grain {
         for k in (0..nodes.len()).rev() {
             let n = nodes[k];
             nodes[k] = if n.child == BSH_NONE {
-                leaf_refitted(n, bounds, r2)
+                leaf.leaf(n)
             } else {
                 let left = nodes[(n.child - base) as usize];
                 inner_refitted(n, left, nodes[(left.next - base) as usize])
@@ -591,8 +816,8 @@ fn refit_subtree(
     let right_at = (nodes[1].next - base) as usize;
     let (head, rest) = nodes.split_at_mut(1);
     let (left, right) = rest.split_at_mut(right_at - 1);
-    join(&mut || refit_subtree(left, base + 1, bounds, r2, grain, join), &mut || {
-        refit_subtree(right, base + right_at as u32, bounds, r2, grain, join)
+    join(&mut || refit_subtree(left, base + 1, leaf, grain, join), &mut || {
+        refit_subtree(right, base + right_at as u32, leaf, grain, join)
     });
     head[0] = inner_refitted(head[0], left[0], right[0]);
 }

@@ -171,6 +171,9 @@ pub enum BshError {
     /// More lights than 32-bit links can address.
     #[error("{0} lights exceed the hierarchy's 32-bit index space")]
     TooManyLights(usize),
+    /// A range tail longer than [`crate::bsh::BSH_TAIL_MAX`].
+    #[error("a range tail of {0} lights exceeds the most the walk tests flat ({max})", max = crate::bsh::BSH_TAIL_MAX)]
+    TailTooLong(usize),
 }
 
 /// An LM-63 parse error with the (1-based) line it was found on.

@@ -9,6 +9,7 @@ use crate::light_bvh::LightBvh;
 use crate::lights::{LightSet, emissive_triangles};
 use crate::scene::Scene;
 use glam::Vec3;
+use slc_core::bsh::Bsh;
 use slc_core::light::Light;
 
 /// Reservoir slots of `slc-reservoir`.
@@ -124,7 +125,18 @@ pub struct PtScene {
     light_bvh: LightBvh,
     /// Light index of each emissive triangle (u32::MAX for others).
     light_of_triangle: Vec<u32>,
+    /// The BSH both path tracers refit and walk: the light set's, with a
+    /// range tail of [`RANGE_TAIL`].
+    bsh: Bsh,
 }
+
+/// The path tracers' range tail ([`Bsh::with_tail`]): the 16 largest range
+/// spheres of a pass, tested flat after the tree. Issue 30's measurement
+/// (`slc-scene/examples/walk_visits.rs`, docs/results/bsh-walk-visits.md):
+/// 16 take 2–94% of the walk's visits away on the scene suite (most in
+/// clustered lights, whose few largest ranges bound every fixture's
+/// subtree), and 64 or 256 little more.
+pub const RANGE_TAIL: usize = 16;
 
 impl PtScene {
     /// Emissive triangles become triangle lights; `extra` lights (point,
@@ -141,7 +153,12 @@ impl PtScene {
         }
         let lights = LightSet::new(lights)?;
         let light_bvh = LightBvh::new(lights.lights(), lights.cones());
-        Ok(PtScene { scene: scene.clone(), lights, light_bvh, light_of_triangle })
+        let bsh = lights
+            .bsh()
+            .clone()
+            .with_tail(RANGE_TAIL)
+            .map_err(|e| RenderError::Setting(e.to_string()))?;
+        Ok(PtScene { scene: scene.clone(), lights, light_bvh, light_of_triangle, bsh })
     }
 
     /// Number of lights.
@@ -157,6 +174,12 @@ impl PtScene {
     /// The lights with their BSH and power table.
     pub fn light_set(&self) -> &LightSet {
         &self.lights
+    }
+
+    /// The BSH the path tracers refit every pass and walk, as built: the
+    /// light set's with a range tail of [`RANGE_TAIL`].
+    pub fn bsh(&self) -> &Bsh {
+        &self.bsh
     }
 
     /// The light BVH of the `lightbvh` baseline.

@@ -220,6 +220,15 @@ pub fn bindings(kernel: Kernel, f: &Features) -> Vec<Binding> {
             read(2, "bounds", vec4, "each light's bound: centre (xyz) and extent `R` (w)", "host"),
             read(3, "r2", "array<f32>", "random range²", "`light_update` or `light_ranges`"),
             b(0, 4, "bsh_nodes", Resource::ReadWrite("array<BshNode>"), "the BSH", "host (build), this kernel (refit)"),
+            read(5, "tail", "array<u32>", "the range tail: its histogram cut (1024: no tail), length and lights", "`bsh_tail`"),
+        ],
+        Kernel::BshTail => vec![
+            uniform(0, "params", "TailParams", true, "the stage, light count, the tail's length limit and the tree's node count"),
+            read(1, "bounds", vec4, "each light's bound: centre (xyz) and extent `R` (w)", "host"),
+            read(2, "r2", "array<f32>", "random range²", "`light_update`"),
+            write(3, "tail_hist", "array<atomic<u32>>", "lights per radius bin (zero between passes)"),
+            write(4, "tail", "array<atomic<u32>>", "the range tail: its histogram cut, length and lights"),
+            b(0, 5, "bsh_nodes", Resource::ReadWrite("array<BshNode>"), "the BSH", "host (build), `bsh_refit`, this kernel (the tail's leaves and links)"),
         ],
         Kernel::VplTiled => {
             let mut v = vec![uniform(0, "params", "VplParams", true, "image size, slots per subset, clamp distance, near field, the culling grids")];

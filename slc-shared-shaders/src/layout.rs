@@ -212,6 +212,21 @@ slc_core::shared! {
         pub pad1: u32,
     }
 
+    /// Uniforms of one `bsh_tail` dispatch: its stage (0 the histogram, 1
+    /// the cut, 2 the lights at or above it, 3 their leaves after the
+    /// tree), the light count, the tail's length limit `k` and the tree's
+    /// node count (where the tail's leaves start).
+    pub struct TailParams {
+        /// Stage.
+        pub stage: u32,
+        /// Lights.
+        pub count: u32,
+        /// Length limit of the tail.
+        pub k: u32,
+        /// Nodes of the tree before the tail.
+        pub tree: u32,
+    }
+
     /// Uniforms of `vpl_tiled`, `vpl_near`, `vpl_denoise`, `vpl_clusters`
     /// and `vpl_groups`, 80 bytes. `boxes` holds the far field's cluster
     /// boxes (subset after subset), its group boxes, the near field's

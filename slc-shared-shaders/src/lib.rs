@@ -21,7 +21,7 @@
 //! `ies_base` is its offset), bound where IES lights are compiled in; the
 //! path-tracing kernels' group 1 also holds the power alias table, the
 //! importance cones and the light BVH ([`Selection`]). A pass of the path
-//! tracer: `light_update`, `bsh_refit` (every level), then `pt_extend` and
+//! tracer: `light_update`, `bsh_tail`, `bsh_refit` (every level), then `pt_extend` and
 //! `pt_connect` once per depth (slc-wgpu's `pt`); the engine's direct
 //! pass: `light_ranges`, `bsh_refit`, `direct_light`.
 //!
@@ -169,6 +169,11 @@ pub enum Kernel {
     LightUpdate,
     /// BSH refit, one level per dispatch.
     BshRefit,
+    /// The BSH's range tail for the pass's ranges (slc-core's
+    /// `bsh::tail`), before the refit: a histogram of the range spheres'
+    /// radii, its cut, the lights above it and their leaves after the
+    /// tree.
+    BshTail,
     /// Tiled culling + VPL shading per interleaved sub-image.
     VplTiled,
     /// BSH traversal into a k-slot reservoir + shading with shadow rays.
@@ -215,9 +220,10 @@ pub enum Kernel {
 
 impl Kernel {
     /// All kernels.
-    pub const ALL: [Kernel; 18] = [
+    pub const ALL: [Kernel; 19] = [
         Kernel::LightUpdate,
         Kernel::BshRefit,
+        Kernel::BshTail,
         Kernel::VplTiled,
         Kernel::VplDenoise,
         Kernel::VplNear,
@@ -241,6 +247,7 @@ impl Kernel {
         match self {
             Kernel::LightUpdate => "light_update",
             Kernel::BshRefit => "bsh_refit",
+            Kernel::BshTail => "bsh_tail",
             Kernel::VplTiled => "vpl_tiled",
             Kernel::BshReservoir => "bsh_reservoir",
             Kernel::PtConnect => "pt_connect",
@@ -498,7 +505,7 @@ impl Default for Features {
     }
 }
 
-const TEMPLATES: [(&str, &str); 36] = [
+const TEMPLATES: [(&str, &str); 37] = [
     ("header.wgsl", include_str!("templates/header.wgsl")),
     ("workgroup_box.wgsl", include_str!("templates/workgroup_box.wgsl")),
     ("lights.wgsl", include_str!("templates/lights.wgsl")),
@@ -508,6 +515,7 @@ const TEMPLATES: [(&str, &str); 36] = [
     ("bsh_tile.wgsl", include_str!("templates/bsh_tile.wgsl")),
     ("light_update", include_str!("templates/light_update.wgsl")),
     ("bsh_refit", include_str!("templates/bsh_refit.wgsl")),
+    ("bsh_tail", include_str!("templates/bsh_tail.wgsl")),
     ("vpl_tiled", include_str!("templates/vpl_tiled.wgsl")),
     ("vpl_denoise", include_str!("templates/vpl_denoise.wgsl")),
     ("vpl_near", include_str!("templates/vpl_near.wgsl")),
@@ -757,6 +765,7 @@ pub fn generate_module(kernel: Kernel, features: &Features) -> Result<Generated,
         kernel => kernel.name(),
         core => slc_core::wgsl::library(),
         bsh_walk => slc_core::wgsl::translate(slc_core::bsh::walk::WGSL),
+        bsh_tail => slc_core::wgsl::translate(slc_core::bsh::tail::WGSL),
         bvh_walk => slc_core::wgsl::translate(slc_core::light_bvh::walk::WGSL) + slc_core::light_bvh::WALK_WGSL_PRELUDE,
         layout => slc_core::wgsl::translate(layout::WGSL),
         light_names => l.names().join(", "),

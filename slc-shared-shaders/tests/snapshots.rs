@@ -18,6 +18,7 @@ fn variants() -> Vec<(&'static str, Kernel, Features)> {
     vec![
         ("light_update", Kernel::LightUpdate, Features::default()),
         ("bsh_refit", Kernel::BshRefit, Features::default()),
+        ("bsh_tail", Kernel::BshTail, Features::default()),
         (
             "vpl_tiled-slc-tile8-p8",
             Kernel::VplTiled,

@@ -61,13 +61,13 @@ fn every_bsh_variant_validates() {
         }
     }
     for wg in [1, 32, 64, 256] {
-        for kernel in [Kernel::LightUpdate, Kernel::BshRefit] {
+        for kernel in [Kernel::LightUpdate, Kernel::BshRefit, Kernel::BshTail] {
             generate_module(kernel, &Features { workgroup_size: wg, ..Features::default() })
                 .unwrap();
             n += 1;
         }
     }
-    assert_eq!(n, 31 * 3 * 2 * 11 + 8);
+    assert_eq!(n, 31 * 3 * 2 * 11 + 12);
 }
 
 #[test]

@@ -54,6 +54,7 @@ pub(crate) fn check_kernels(
             Kernel::LightUpdate
             | Kernel::LightRanges
             | Kernel::BshRefit
+            | Kernel::BshTail
             | Kernel::BshReservoir
             | Kernel::PtConnect
             | Kernel::PtExtend => (f.workgroup_size, 1),

@@ -20,7 +20,7 @@
 //!   every pixel).
 //! - [`timing`]: the frame's stages, their times, and how they are timed.
 //! - [`pt::GpuPt`]: application B, a wavefront progressive path tracer
-//!   (`light_update`, `bsh_refit` per level, then `pt_extend` and
+//!   (`light_update`, `bsh_tail`, `bsh_refit` per level, then `pt_extend` and
 //!   `pt_connect` per bounce), with GPU timestamps where the adapter has
 //!   them.
 //!

@@ -3,18 +3,20 @@
 //! (`light_update`, or the direct pass's `light_ranges`) and the BSH
 //! refitted to them level by level (`bsh_refit`, deepest level first, leaf
 //! centres read from the lights' bounds so that moved lights refit in
-//! place). Shared by the path tracer and the direct pass.
+//! place), after its range tail where the BSH has one (`bsh_tail`: the path
+//! tracer's). Shared by the path tracer and the direct pass.
 
 use crate::kernel::{KernelLayout, UniformSlots, check_kernels, storage, zeroed};
 use crate::{GpuContext, GpuError};
 use glam::Vec3;
-use slc_core::bsh::{BSH_NONE, Bsh};
+use slc_core::bsh::{BSH_NONE, BSH_TAIL, BSH_TAIL_BINS, Bsh};
 use slc_core::importance::LightCone;
 use slc_core::light::{Light, LightBound};
 use slc_core::range::RangeParams;
 use slc_scene::light_bvh::LightBvh;
 use slc_shared_shaders::layout::{
-    FrameParams, GpuLight, GpuLightCone, RefitParams, pack_cones, pack_light_bvh, pack_lights,
+    FrameParams, GpuLight, GpuLightCone, RefitParams, TailParams, pack_cones, pack_light_bvh,
+    pack_lights,
 };
 use slc_shared_shaders::{Features, Kernel, LightTypes};
 
@@ -40,15 +42,16 @@ pub(crate) fn types_within(inner: LightTypes, outer: LightTypes) -> bool {
 }
 
 /// BSH node indices level by level, deepest level first, and each level's
-/// `(first, count)` in that list; plus each light's leaf.
+/// `(first, count)` in that list; plus each light's leaf (the tree's; the
+/// range tail's slots after it are `bsh_tail`'s).
 fn refit_order(bsh: &Bsh, n_lights: usize) -> (Vec<u32>, Vec<(u32, u32)>, Vec<u32>) {
-    let nodes = bsh.nodes();
+    let nodes = &bsh.nodes()[..bsh.tree_len()];
     let mut depth = vec![0u32; nodes.len()];
     let mut leaf = vec![0u32; n_lights];
     for i in 0..nodes.len() {
         let n = &nodes[i];
         if n.child == BSH_NONE {
-            leaf[n.light as usize] = i as u32;
+            leaf[(n.light & !BSH_TAIL) as usize] = i as u32;
         } else {
             let left = n.child as usize;
             depth[left] = depth[i] + 1;
@@ -114,6 +117,11 @@ pub(crate) struct LightBuffers {
     bounds: wgpu::Buffer,
     levels: Vec<(u32, u32)>,
     refit_params: UniformSlots,
+    /// The range tail's length limit (0: none, `bsh_tail` not run), its
+    /// four stages' uniforms and bind group.
+    tail_k: u32,
+    tail_params: UniformSlots,
+    tail_group: wgpu::BindGroup,
     power: wgpu::Buffer,
     bvh: wgpu::Buffer,
     update_group: wgpu::BindGroup,
@@ -128,6 +136,7 @@ pub(crate) struct GpuLightSet {
     frame_params: UniformSlots,
     update: (wgpu::ComputePipeline, KernelLayout),
     refit: (wgpu::ComputePipeline, KernelLayout),
+    tail: (wgpu::ComputePipeline, KernelLayout),
     /// Group 1 of the path tracer's kernels: the IES table, the power alias
     /// table, the importance cones and the light BVH.
     pub(crate) table_layout: wgpu::BindGroupLayout,
@@ -163,10 +172,15 @@ impl GpuLightSet {
         let features = Features { workgroup_size: WG, ..Features::default() };
         check_kernels(
             gpu,
-            &[(Kernel::LightUpdate, &features, TABLES), (Kernel::BshRefit, &features, TABLES)],
+            &[
+                (Kernel::LightUpdate, &features, TABLES),
+                (Kernel::BshRefit, &features, 0),
+                (Kernel::BshTail, &features, 0),
+            ],
         )?;
         let update_layout = KernelLayout::new(gpu, Kernel::LightUpdate, &features)?;
         let refit_layout = KernelLayout::new(gpu, Kernel::BshRefit, &features)?;
+        let tail_layout = KernelLayout::new(gpu, Kernel::BshTail, &features)?;
         // Group 1 of the path tracer: four read-only tables.
         let table_layout = {
             let e = |binding| wgpu::BindGroupLayoutEntry {
@@ -185,7 +199,10 @@ impl GpuLightSet {
             })
         };
         let update = update_layout.pipeline(gpu, &features, Some(&table_layout))?;
-        let refit = refit_layout.pipeline(gpu, &features, Some(&table_layout))?;
+        // The refit and the tail read no table: without group 1 they stay
+        // within WebGPU's default of 8 storage buffers per stage.
+        let refit = refit_layout.pipeline(gpu, &features, None)?;
+        let tail = tail_layout.pipeline(gpu, &features, None)?;
         let frame_params = UniformSlots::new::<FrameParams>(gpu, "frame params", 1);
         let b = LightBuffers::new(
             gpu,
@@ -196,8 +213,7 @@ impl GpuLightSet {
             cones,
             &bvh,
             light_bvh,
-            &update_layout,
-            &refit_layout,
+            [&update_layout, &refit_layout, &tail_layout],
             &table_layout,
             &frame_params,
         )?;
@@ -207,6 +223,7 @@ impl GpuLightSet {
             frame_params,
             update: (update, update_layout),
             refit: (refit, refit_layout),
+            tail: (tail, tail_layout),
             table_layout,
         })
     }
@@ -218,7 +235,7 @@ impl GpuLightSet {
         gpu: &GpuContext,
         set: &slc_scene::lights::LightSet,
     ) -> Result<(), GpuError> {
-        let (update, refit) = (&self.update.1, &self.refit.1);
+        let layouts = [&self.update.1, &self.refit.1, &self.tail.1];
         self.b = LightBuffers::new(
             gpu,
             set.lights(),
@@ -228,8 +245,7 @@ impl GpuLightSet {
             set.cones(),
             &pack_light_bvh(&[]),
             None,
-            update,
-            refit,
+            layouts,
             &self.table_layout,
             &self.frame_params,
         )?;
@@ -318,10 +334,18 @@ impl GpuLightSet {
         cp.set_bind_group(1, &self.table, &[]);
     }
 
-    /// Records the BSH refit alone (every level, deepest first), for ranges
-    /// another kernel wrote.
+    /// Records the BSH refit alone (the range tail's four stages where the
+    /// BSH has one, then every level, deepest first), for ranges another
+    /// kernel wrote (group 1, the scene tables, is left as it was bound).
     pub(crate) fn encode_refit(&self, cp: &mut wgpu::ComputePass) {
-        self.bind_tables(cp);
+        if self.b.tail_k > 0 {
+            cp.set_pipeline(&self.tail.0);
+            for stage in 0..4 {
+                cp.set_bind_group(0, &self.b.tail_group, &[self.b.tail_params.offset(stage)]);
+                let per_light = stage == 0 || stage == 2;
+                cp.dispatch_workgroups(if per_light { self.n.div_ceil(WG) } else { 1 }, 1, 1);
+            }
+        }
         cp.set_pipeline(&self.refit.0);
         for (i, &(_, count)) in self.b.levels.iter().enumerate() {
             cp.set_bind_group(0, &self.b.refit_group, &[self.b.refit_params.offset(i)]);
@@ -343,8 +367,7 @@ impl LightBuffers {
         cones: &[LightCone],
         bvh: &[slc_shared_shaders::layout::GpuLightBvhNode],
         light_bvh: Option<&LightBvh>,
-        update: &KernelLayout,
-        refit: &KernelLayout,
+        [update, refit, tail_layout]: [&KernelLayout; 3],
         table_layout: &wgpu::BindGroupLayout,
         frame_params: &UniformSlots,
     ) -> Result<LightBuffers, GpuError> {
@@ -372,7 +395,31 @@ impl LightBuffers {
         let ids = s("ids", bytemuck::cast_slice(&ids));
         let order = s("bsh order", bytemuck::cast_slice(&order));
         let bounds = storage(gpu, "light bounds", bytemuck::cast_slice(&pack_bounds(bounds)), dst);
-        let bsh = s("bsh nodes", bytemuck::cast_slice(bsh.nodes()));
+        // COPY_SRC: read back by the tests that compare it with the CPU's.
+        let bsh_buf = storage(
+            gpu,
+            "bsh nodes",
+            bytemuck::cast_slice(bsh.nodes()),
+            wgpu::BufferUsages::COPY_SRC,
+        );
+        // The range tail: its cut (none until `bsh_tail` runs: the CPU's
+        // as built), length and slots; the histogram, zero between passes.
+        let tail_k = bsh.tail_capacity() as u32;
+        let mut tail_init = vec![BSH_TAIL_BINS, 0];
+        tail_init.resize(2 + tail_k as usize, 0);
+        let tail = s("bsh tail", bytemuck::cast_slice(&tail_init));
+        let tail_hist = zeroed(
+            gpu,
+            "bsh tail histogram",
+            BSH_TAIL_BINS as u64 * 4,
+            wgpu::BufferUsages::STORAGE,
+        );
+        let tail_params = UniformSlots::new::<TailParams>(gpu, "tail params", 4);
+        let tree = bsh.tree_len() as u32;
+        let stages: Vec<TailParams> =
+            (0..4).map(|stage| TailParams { stage, count: n as u32, k: tail_k, tree }).collect();
+        tail_params.write(gpu, &stages);
+        let bsh = bsh_buf;
         let res = crate::kernel::whole;
         let update_group = update.group(
             gpu,
@@ -392,6 +439,19 @@ impl LightBuffers {
                 ("order", res(&order)),
                 ("bounds", res(&bounds)),
                 ("r2", res(&r2)),
+                ("bsh_nodes", res(&bsh)),
+                ("tail", res(&tail)),
+            ],
+        );
+        let tail_group = tail_layout.group(
+            gpu,
+            0,
+            &[
+                ("params", tail_params.binding()),
+                ("bounds", res(&bounds)),
+                ("r2", res(&r2)),
+                ("tail_hist", res(&tail_hist)),
+                ("tail", res(&tail)),
                 ("bsh_nodes", res(&bsh)),
             ],
         );
@@ -426,6 +486,9 @@ impl LightBuffers {
             bounds,
             levels,
             refit_params,
+            tail_k,
+            tail_params,
+            tail_group,
             power,
             bvh,
             update_group,

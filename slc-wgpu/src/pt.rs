@@ -3,8 +3,9 @@
 //!
 //! 1. `light_update`: every light's random range `r² = r_t²/(1−ξ)` from the
 //!    same `ξ = xi_for(seed, pass, light)` as the CPU path tracer;
-//! 2. `bsh_refit`: the BSH over the lights refitted to those ranges, one
-//!    dispatch per level, deepest first;
+//! 2. `bsh_tail`, then `bsh_refit`: the BSH's range tail for those ranges
+//!    (the largest spheres, tested flat after the tree: `Bsh::with_tail`)
+//!    and the tree refitted to them, one dispatch per level, deepest first;
 //! 3. per bounce, `pt_extend` (camera or BSDF ray, closest hit through the
 //!    geometry BVH, emission with MIS, next ray, Russian roulette) and
 //!    `pt_connect` (BSH traversal into a k-slot reservoir, RR test at the
@@ -208,7 +209,7 @@ impl GpuPt {
             gpu,
             ls.lights(),
             ls.bounds(),
-            ls.bsh(),
+            pts.bsh(),
             &ls.power_table(),
             ls.cones(),
             Some(pts.light_bvh()),
@@ -439,6 +440,21 @@ impl GpuPt {
         let sum: Vec<Vec3> = data.iter().map(|d| Vec3::new(d[0], d[1], d[2])).collect();
         acc.accumulate(&sum, passes, ms);
         Ok(timestamps)
+    }
+}
+
+impl GpuPt {
+    /// The BSH as the last render's refit left it, range tail included,
+    /// read back: for the tests that compare it with the CPU's refit.
+    #[doc(hidden)]
+    pub fn read_bsh(&self, gpu: &GpuContext) -> Result<Vec<slc_core::bsh::BshNode>, GpuError> {
+        let staging = gpu.device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("bsh readback"),
+            size: self.set.bsh.size(),
+            usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        read_back(gpu, &self.set.bsh, &staging)
     }
 }
 

@@ -405,7 +405,79 @@ fn ray_query_path_tracer_without_the_feature() {
     g.take_errors().unwrap();
 }
 
+/// The GPU's range tail (`bsh_tail`) takes the lights the CPU's refit
+/// takes for the same pass, chains them after the tree in light order and
+/// marks the same tree leaves; every sphere of the tree and of the tail in
+/// use agrees within 1e-5 (the ranges are computed apart, a few ulps). Over the scene suite's 2,048-light
+/// points (volume, clusters) and triangles, and passes 0..3.
+fn gpu_range_tail_matches_the_cpu_refit() {
+    use slc_core::bsh::{BSH_NONE, BSH_TAIL, BshNode};
+    use slc_core::range::{RangeParams, random_range2};
+    use slc_core::xi::xi_for;
+    let Some(g) = gpu() else { return };
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../scenes/suite");
+    for name in ["points-volume-2048", "points-clusters-2048", "tri-away-2048"] {
+        let f = slc_scene::scene_file::SceneFile::load(&dir.join(format!("{name}.toml"))).unwrap();
+        let pts = PtScene::new(&f.scene, &f.lights).unwrap();
+        let eps = 0.5;
+        let mut gpt = GpuPt::new(g, &pts, 4, 4).unwrap();
+        let set = PtSettings {
+            method: PtMethod::SlcWeighted,
+            error_bound: eps,
+            seed: 5,
+            max_depth: 1,
+            ..PtSettings::default()
+        };
+        let params = RangeParams::new(eps, set.exposure).unwrap();
+        let mut acc = PtRender::new(4, 4);
+        for pass in 0..3 {
+            gpt.render(&mut acc, &set, 1).unwrap();
+            let gn = gpt.read_bsh(g).unwrap();
+            let r2: Vec<f32> = pts
+                .lights()
+                .iter()
+                .enumerate()
+                .map(|(i, l)| {
+                    random_range2(params.threshold_range2(l.peak()), xi_for(5, pass, i as u32))
+                })
+                .collect();
+            let mut cpu = pts.bsh().clone();
+            cpu.refit(&r2).unwrap();
+            let cn = cpu.nodes();
+            assert_eq!(gn.len(), cn.len());
+            let chain = |n: &[BshNode]| {
+                let (mut v, mut i) = (Vec::new(), n[0].next);
+                while i != BSH_NONE {
+                    v.push(n[i as usize].light);
+                    i = n[i as usize].next;
+                }
+                v
+            };
+            let tail = chain(cn);
+            assert!(!tail.is_empty() && tail.len() <= 16, "{name}: a tail of {}", tail.len());
+            assert_eq!(chain(&gn), tail, "{name}, pass {pass}");
+            // The tree and the tail's slots in use (the others are stale).
+            let used = cpu.tree_len() + tail.len();
+            for (i, (a, b)) in gn[..used].iter().zip(&cn[..used]).enumerate() {
+                let close = |x: f32, y: f32| (x - y).abs() <= 1e-5 * x.abs().max(y.abs());
+                assert!(
+                    close(a.radius, b.radius) && (a.center - b.center).length() <= 1e-5 * b.radius,
+                    "{name}, pass {pass}, node {i}: {a:?} against {b:?}"
+                );
+                assert_eq!((a.child, a.next), (b.child, b.next), "{name}, node {i}");
+                if b.child == BSH_NONE {
+                    assert_eq!(a.light, b.light, "{name}, pass {pass}, leaf {i}");
+                }
+            }
+            let marked = cn.iter().filter(|n| n.child == BSH_NONE && n.light & BSH_TAIL != 0);
+            assert_eq!(marked.count(), tail.len());
+        }
+    }
+    g.take_errors().unwrap();
+}
+
 slc_tests::harness!(
+    Gpu: gpu_range_tail_matches_the_cpu_refit,
     RayQuery: ray_query_path_tracer_equals_the_software_walk,
     Gpu: ray_query_path_tracer_without_the_feature,
     Gpu: gpu_path_tracer_matches_cpu_and_unculled_in_expectation,

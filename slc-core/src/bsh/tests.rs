@@ -43,21 +43,85 @@ fn split_refit_equals_serial_refit() {
         .map(|_| LightBound { center: Vec3::new(u(), u(), u()) * 10.0, extent: u() * 0.1 })
         .collect();
     let r2: Vec<f32> = (0..300).map(|_| 0.01 / (1.0 - u()).max(1e-6)).collect();
-    let mut serial = Bsh::build(&b).unwrap();
-    serial.refit(&r2).unwrap();
     let reversed: &Join = &|a, b| {
         b();
         a();
     };
-    for grain in [0, 1, 2, 7, 64, 1000] {
-        let mut split = Bsh::build(&b).unwrap();
-        split.refit_split(&r2, grain, reversed).unwrap();
-        assert!(serial.nodes() == split.nodes(), "grain {grain}");
+    for tail in [0, 16] {
+        let mut serial = Bsh::build(&b).unwrap().with_tail(tail).unwrap();
+        serial.refit(&r2).unwrap();
+        for grain in [0, 1, 2, 7, 64, 1000] {
+            let mut split = Bsh::build(&b).unwrap().with_tail(tail).unwrap();
+            split.refit_split(&r2, grain, reversed).unwrap();
+            assert!(serial.nodes() == split.nodes(), "grain {grain}, tail {tail}");
+        }
+        for l in 0..300 {
+            let leaf = serial.leaf(l);
+            assert!(leaf.child == BSH_NONE && leaf.light == l as u32);
+            assert_eq!(leaf.radius, b[l].range_sphere(r2[l]).radius);
+        }
+        assert!(serial.refit_split(&[1.0], 8, reversed).is_err());
     }
-    for l in 0..300 {
-        assert!(serial.leaf(l).child == BSH_NONE && serial.leaf(l).light == l as u32);
+}
+
+/// The range tail holds the lights of the largest range spheres, at most
+/// `k` and no fewer than the histogram's top bins that fit allow; their
+/// tree leaves are marked and shrunk to their bounds; the root's sphere
+/// no longer holds their ranges; a refit with a smaller tail, and
+/// `with_tail(0)`, take them back.
+#[test]
+fn range_tail_takes_the_largest_spheres() {
+    use rand_core::{RngCore, SeedableRng};
+    let mut rng = rand_pcg::Pcg32::seed_from_u64(29);
+    let mut u = move || rng.next_u32() as f32 / 4294967296.0;
+    let n = 2000;
+    let b: Vec<_> = (0..n)
+        .map(|_| LightBound { center: Vec3::new(u(), u(), u()) * 10.0, extent: u() * 0.01 })
+        .collect();
+    let r2: Vec<f32> = (0..n).map(|_| 0.01 / (1.0 - u()).max(1e-9)).collect();
+    let radius: Vec<f32> = b.iter().zip(&r2).map(|(b, &r)| b.range_sphere(r).radius).collect();
+    let mut plain = Bsh::build(&b).unwrap();
+    plain.refit(&r2).unwrap();
+    for k in [1, 4, 16, 64] {
+        let mut t = Bsh::build(&b).unwrap().with_tail(k).unwrap();
+        t.refit(&r2).unwrap();
+        assert_eq!((t.tail_capacity(), t.nodes().len()), (k, t.tree_len() + k));
+        let tail: Vec<u32> = (0..n as u32)
+            .filter(|&l| t.nodes()[t.leaves[l as usize] as usize].light & BSH_TAIL != 0)
+            .collect();
+        assert!(tail.len() <= k, "tail of {} for k = {k}", tail.len());
+        // The tail is a top set: every light outside it is no larger.
+        let smallest_in = tail.iter().map(|&l| radius[l as usize]).fold(f32::INFINITY, f32::min);
+        let largest_out =
+            (0..n).filter(|l| !tail.contains(&(*l as u32))).map(|l| radius[l]).fold(0.0, f32::max);
+        assert!(tail.is_empty() || largest_out <= smallest_in);
+        // With the next bin in, the tail would exceed k.
+        let cut = bsh_tail_key(smallest_in.min(largest_out * 2.0)).min(bsh_tail_key(largest_out));
+        let next_bin = (0..n).filter(|&l| bsh_tail_key(radius[l]) >= cut).count();
+        assert!(next_bin > k || next_bin == tail.len(), "k = {k}: {next_bin} in the next bin");
+        // The chain after the tree holds them in light order, with ranges.
+        let mut chain = Vec::new();
+        let mut i = t.nodes()[0].next;
+        while i != BSH_NONE {
+            let c = t.nodes()[i as usize];
+            assert_eq!(c.radius, radius[c.light as usize]);
+            chain.push(c.light);
+            i = c.next;
+        }
+        assert_eq!(chain, tail);
+        for &l in &tail {
+            let leaf = t.nodes()[t.leaves[l as usize] as usize];
+            assert_eq!(leaf.radius, b[l as usize].extent);
+        }
+        if k >= 16 {
+            assert!(!tail.is_empty());
+            assert!(t.nodes()[0].radius < plain.nodes()[0].radius);
+        }
+        let mut none = t.clone().with_tail(0).unwrap();
+        none.refit(&r2).unwrap();
+        assert!(none.nodes() == plain.nodes());
     }
-    assert!(serial.refit_split(&[1.0], 8, reversed).is_err());
+    assert!(matches!(plain.with_tail(65), Err(crate::BshError::TailTooLong(65))));
 }
 
 #[test]
@@ -131,7 +195,8 @@ fn queries_match_brute_force_at_every_scale() {
             })
             .collect();
         let r2: Vec<f32> = (0..n).map(|_| (u() * scale).powi(2)).collect();
-        let mut t = Bsh::build(&b).unwrap();
+        let tail = (u() * 4.0) as usize;
+        let mut t = Bsh::build(&b).unwrap().with_tail(tail).unwrap();
         t.refit(&r2).unwrap();
         let spheres: Vec<Sphere> = b.iter().zip(&r2).map(|(b, &r)| b.range_sphere(r)).collect();
         let brute = |test: &dyn Fn(&Sphere) -> bool| -> Vec<u32> {
@@ -225,7 +290,7 @@ fn glossy_walk_matches_brute_force() {
             })
             .collect();
         let r2: Vec<f32> = (0..n).map(|_| (0.05 / (1.0 - u()).sqrt()).powi(2)).collect();
-        let mut t = Bsh::build(&b).unwrap();
+        let mut t = Bsh::build(&b).unwrap().with_tail([0, 1, 8][(u() * 3.0) as usize]).unwrap();
         t.refit(&r2).unwrap();
         let x = Vec3::new(u(), u(), u()) - 0.5;
         let nrm = (Vec3::new(u(), u(), u()) - 0.5).normalize();
@@ -242,11 +307,7 @@ fn glossy_walk_matches_brute_force() {
         let r = crate::brdf::mirror_dir(nrm, v);
         let rl = range_lobe(lobe);
         let peak = range_scale(lobe);
-        let leaves: Vec<BshNode> = (0..n)
-            .map(|i| {
-                *t.nodes().iter().find(|l| l.child == BSH_NONE && l.light == i as u32).unwrap()
-            })
-            .collect();
+        let leaves: Vec<BshNode> = (0..n).map(|i| t.leaf(i)).collect();
         let mut brute = Vec::new();
         for i in 0..n {
             let s = range_scale_toward(rl, b[i].center, b[i].extent, x, r);

@@ -79,7 +79,7 @@ impl CpuPathTracer {
         let scene = pts.scene();
         CpuPathTracer {
             geo: Geometry::new(&scene.triangles),
-            bsh: pts.light_set().bsh().clone(),
+            bsh: pts.bsh().clone(),
             rt2: None,
             diag: scene.diagonal(),
             pts: pts.clone(),

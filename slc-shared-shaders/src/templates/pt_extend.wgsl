@@ -65,7 +65,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     if tri.light != NO_LIGHT && sees_emission(gn, st.dir) {
         var w = 1.0;
         if st.pdf_bsdf > 0.0 {
-            let leaf = bsh_nodes[light_leaf[tri.light]];
+            let leaf = bsh_range_leaf(BSH, light_leaf[tri.light]);
             let rl = range_lobe(st.prev_lobe);
             let in_range = bsh_reaches(leaf, st.prev, st.prev_r, rl);
             w = mis_weight(st.pdf_bsdf, light_pdf(tri.light, st.prev, st.prev_normal, st.prev_r, st.prev_lobe, rl, x, candidates[i], in_range));

@@ -51,6 +51,9 @@ const INV_PI: f32 = 0.31830987f;
 const MIN_D2_: f32 = 0.000000000001f;
 const MAX_INTENSITY: f32 = 72057594000000000f;
 const BSH_NONE: u32 = 4294967295u;
+const BSH_TAIL: u32 = 2147483648u;
+const BSH_TAIL_BINS: u32 = 1024u;
+const BSH_TAIL_MAX: u32 = 64u;
 const RESERVOIR_FULL: u32 = 4294967295u;
 const GGX_ALPHA_MIN: f32 = 0.001f;
 const RANGE_SCALE_MAX: f32 = 64f;
@@ -81,9 +84,11 @@ var<storage> order: array<u32>;
 @group(0) @binding(2) 
 var<storage> bounds: array<vec4<f32>>;
 @group(0) @binding(3) 
-var<storage> r2_2: array<f32>;
+var<storage> r2_3: array<f32>;
 @group(0) @binding(4) 
 var<storage, read_write> bsh_nodes: array<BshNode>;
+@group(0) @binding(5) 
+var<storage> tail: array<u32>;
 
 fn f32_from_bits(u: u32) -> f32 {
     return bitcast<f32>(u);
@@ -142,6 +147,11 @@ fn range_radius(extent: f32, r2_1: f32) -> f32 {
     return (extent + sqrt(r2_1));
 }
 
+fn bsh_tail_key(radius: f32) -> u32 {
+    let _e1 = f32_to_bits(radius);
+    return ((_e1 & 2147483647u) >> 21u);
+}
+
 fn bsh_range_bound(node: BshNode) -> f32 {
     if (node.child == BSH_NONE) {
         return (node.radius - node.extent);
@@ -153,6 +163,12 @@ fn bsh_range_bound(node: BshNode) -> f32 {
 fn bsh_node(nodes: u32, i: u32) -> BshNode {
     let _e4 = bsh_nodes[i];
     return _e4;
+}
+
+fn bsh_in_tail(extent_1: f32, r2_2: f32, cut: u32) -> bool {
+    let _e3 = range_radius(extent_1, r2_2);
+    let _e4 = bsh_tail_key(_e3);
+    return (_e4 >= cut);
 }
 
 fn bsh_pair_sphere(left: BshNode, right: BshNode) -> vec4<f32> {
@@ -208,21 +224,26 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     let i_4 = order[(_e9 + gid.x)];
     let node_1 = bsh_nodes[i_4];
     if (node_1.child == BSH_NONE) {
-        let bound = bounds[node_1.light];
+        let li = (node_1.light & 2147483647u);
+        let bound = bounds[li];
+        let _e29 = r2_3[li];
+        let _e32 = tail[0];
+        let _e33 = bsh_in_tail(bound.w, _e29, _e32);
         bsh_nodes[i_4].center = bound.xyz;
-        let _e35 = r2_2[node_1.light];
-        let _e36 = range_radius(bound.w, _e35);
-        bsh_nodes[i_4].radius = _e36;
+        let _e44 = r2_3[li];
+        let _e47 = range_radius(bound.w, select(_e44, 0f, _e33));
+        bsh_nodes[i_4].radius = _e47;
         bsh_nodes[i_4].extent = bound.w;
+        bsh_nodes[i_4].light = (li | select(0u, BSH_TAIL, _e33));
         return;
     }
-    let _e42 = bsh_children_sphere(BSH, i_4);
-    bsh_nodes[i_4].center = _e42.xyz;
-    bsh_nodes[i_4].radius = _e42.w;
-    let _e56 = bsh_children_extent(BSH, i_4, _e42.xyz);
-    bsh_nodes[i_4].extent = _e56;
-    let _e61 = bsh_children_range(BSH, i_4);
-    let _e62 = f32_to_bits(_e61);
-    bsh_nodes[i_4].light = _e62;
+    let _e60 = bsh_children_sphere(BSH, i_4);
+    bsh_nodes[i_4].center = _e60.xyz;
+    bsh_nodes[i_4].radius = _e60.w;
+    let _e74 = bsh_children_extent(BSH, i_4, _e60.xyz);
+    bsh_nodes[i_4].extent = _e74;
+    let _e79 = bsh_children_range(BSH, i_4);
+    let _e80 = f32_to_bits(_e79);
+    bsh_nodes[i_4].light = _e80;
     return;
 }

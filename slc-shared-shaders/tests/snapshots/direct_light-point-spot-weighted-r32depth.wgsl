@@ -144,6 +144,9 @@ const INV_PI: f32 = 0.31830987f;
 const MIN_D2_: f32 = 0.000000000001f;
 const MAX_INTENSITY: f32 = 72057594000000000f;
 const BSH_NONE: u32 = 4294967295u;
+const BSH_TAIL: u32 = 2147483648u;
+const BSH_TAIL_BINS: u32 = 1024u;
+const BSH_TAIL_MAX: u32 = 64u;
 const RESERVOIR_FULL: u32 = 4294967295u;
 const GGX_ALPHA_MIN: f32 = 0.001f;
 const RANGE_SCALE_MAX: f32 = 64f;
@@ -864,10 +867,14 @@ fn bsh_next_leaf_box(nodes_4: u32, start_1: u32, end: u32, lo_1: vec3<f32>, hi_1
             let _e11 = bsh_reaches_box(_e10, lo_1, hi_1, w_4);
             if _e11 {
                 if (_e10.child == BSH_NONE) {
-                    let _e15 = i_3;
-                    return _e15;
+                    if ((_e10.light & BSH_TAIL) == 0u) {
+                        let _e20 = i_3;
+                        return _e20;
+                    }
+                    i_3 = _e10.next;
+                } else {
+                    i_3 = _e10.child;
                 }
-                i_3 = _e10.child;
             } else {
                 i_3 = _e10.next;
             }

@@ -32,6 +32,9 @@ const INV_PI: f32 = 0.31830987f;
 const MIN_D2_: f32 = 0.000000000001f;
 const MAX_INTENSITY: f32 = 72057594000000000f;
 const BSH_NONE: u32 = 4294967295u;
+const BSH_TAIL: u32 = 2147483648u;
+const BSH_TAIL_BINS: u32 = 1024u;
+const BSH_TAIL_MAX: u32 = 64u;
 const RESERVOIR_FULL: u32 = 4294967295u;
 const GGX_ALPHA_MIN: f32 = 0.001f;
 const RANGE_SCALE_MAX: f32 = 64f;
@@ -686,6 +689,11 @@ fn ies_light_candela(tab_4: u32, base_3: u32, nadir: vec3<f32>, reference: vec3<
     return _e9;
 }
 
+fn bsh_tail_key(radius: f32) -> u32 {
+    let _e1 = f32_to_bits(radius);
+    return ((_e1 & 2147483647u) >> 21u);
+}
+
 fn bsh_scaled_radius(node: BshNode, scale: f32) -> f32 {
     if (scale == 1f) {
         return node.radius;
@@ -1255,10 +1263,10 @@ fn subtended_cos(dist2_: f32, r2_6: f32) -> f32 {
     return select(_e5, -1f, (dist2_ <= r2_6));
 }
 
-fn emitter_cone(center: vec3<f32>, radius: f32, axis: vec3<f32>, cos_o: f32, p: vec3<f32>) -> vec4<f32> {
+fn emitter_cone(center: vec3<f32>, radius_1: f32, axis: vec3<f32>, cos_o: f32, p: vec3<f32>) -> vec4<f32> {
     let v_19 = (p - center);
     let dist2_1 = dot(v_19, v_19);
-    let r2_11 = (radius * radius);
+    let r2_11 = (radius_1 * radius_1);
     let d2_18 = max(max(dist2_1, r2_11), MIN_D2_);
     let wi_3 = select(vec3<f32>(0f, 0f, 0f), (v_19 / vec3(sqrt(dist2_1))), (dist2_1 > 0f));
     let cos_w = dot(axis, wi_3);
@@ -1272,8 +1280,8 @@ fn emitter_cone(center: vec3<f32>, radius: f32, axis: vec3<f32>, cos_o: f32, p: 
     return vec4<f32>(_e37, d2_18, _e26, _e30);
 }
 
-fn emitter_importance(center_1: vec3<f32>, radius_1: f32, phi: f32, axis_1: vec3<f32>, cos_o_1: f32, cos_e: f32, p_1: vec3<f32>) -> f32 {
-    let _e7 = emitter_cone(center_1, radius_1, axis_1, cos_o_1, p_1);
+fn emitter_importance(center_1: vec3<f32>, radius_2: f32, phi: f32, axis_1: vec3<f32>, cos_o_1: f32, cos_e: f32, p_1: vec3<f32>) -> f32 {
+    let _e7 = emitter_cone(center_1, radius_2, axis_1, cos_o_1, p_1);
     if (_e7.x <= cos_e) {
         return 0f;
     }
@@ -1305,9 +1313,9 @@ fn cone_cos_of(v_11: vec3<f32>, d2_9: f32, a_5: f32, d_1: vec3<f32>) -> f32 {
     return min((((vd * sqrt(h2_1)) + (sqrt(dot(c_22, c_22)) * a_5)) / d2_9), 1f);
 }
 
-fn cone_cos_toward(center_2: vec3<f32>, radius_2: f32, p_2: vec3<f32>, d_2: vec3<f32>) -> f32 {
+fn cone_cos_toward(center_2: vec3<f32>, radius_3: f32, p_2: vec3<f32>, d_2: vec3<f32>) -> f32 {
     let v_20 = (center_2 - p_2);
-    let _e6 = cone_cos_of(v_20, dot(v_20, v_20), radius_2, d_2);
+    let _e6 = cone_cos_of(v_20, dot(v_20, v_20), radius_3, d_2);
     return _e6;
 }
 
@@ -1316,19 +1324,19 @@ fn range_scale_at(rl: vec4<f32>, cos_t: f32) -> f32 {
     return clamp((rl.x + ((rl.y * rl.z) / (t_5 * t_5))), 1f, (rl.w * rl.w));
 }
 
-fn range_scale_toward(rl_1: vec4<f32>, center_3: vec3<f32>, radius_3: f32, p_3: vec3<f32>, r_6: vec3<f32>) -> f32 {
+fn range_scale_toward(rl_1: vec4<f32>, center_3: vec3<f32>, radius_4: f32, p_3: vec3<f32>, r_6: vec3<f32>) -> f32 {
     if (rl_1.w <= 1f) {
         return 1f;
     }
-    let _e9 = cone_cos_toward(center_3, radius_3, p_3, r_6);
+    let _e9 = cone_cos_toward(center_3, radius_4, p_3, r_6);
     let _e10 = range_scale_at(rl_1, _e9);
     return _e10;
 }
 
-fn light_importance(center_4: vec3<f32>, radius_4: f32, phi_1: f32, axis_2: vec3<f32>, cos_o_2: f32, cos_e_1: f32, p_4: vec3<f32>, n_21: vec3<f32>) -> f32 {
+fn light_importance(center_4: vec3<f32>, radius_5: f32, phi_1: f32, axis_2: vec3<f32>, cos_o_2: f32, cos_e_1: f32, p_4: vec3<f32>, n_21: vec3<f32>) -> f32 {
     var imp: f32;
 
-    let _e8 = emitter_cone(center_4, radius_4, axis_2, cos_o_2, p_4);
+    let _e8 = emitter_cone(center_4, radius_5, axis_2, cos_o_2, p_4);
     if (_e8.x <= cos_e_1) {
         return 0f;
     }
@@ -1346,11 +1354,11 @@ fn light_importance(center_4: vec3<f32>, radius_4: f32, phi_1: f32, axis_2: vec3
     return max(_e44, 0f);
 }
 
-fn glossy_importance(center_5: vec3<f32>, radius_5: f32, phi_2: f32, axis_3: vec3<f32>, cos_o_3: f32, cos_e_2: f32, p_5: vec3<f32>, n_22: vec3<f32>, r_7: vec3<f32>, lobe_5: vec4<f32>) -> f32 {
+fn glossy_importance(center_5: vec3<f32>, radius_6: f32, phi_2: f32, axis_3: vec3<f32>, cos_o_3: f32, cos_e_2: f32, p_5: vec3<f32>, n_22: vec3<f32>, r_7: vec3<f32>, lobe_5: vec4<f32>) -> f32 {
     var local_20: bool;
 
-    let _e10 = emitter_importance(center_5, radius_5, phi_2, axis_3, cos_o_3, cos_e_2, p_5);
-    let _e11 = cone_cos_toward(center_5, radius_5, p_5, n_22);
+    let _e10 = emitter_importance(center_5, radius_6, phi_2, axis_3, cos_o_3, cos_e_2, p_5);
+    let _e11 = cone_cos_toward(center_5, radius_6, p_5, n_22);
     if !((_e10 <= 0f)) {
         local_20 = (_e11 <= 0f);
     } else {
@@ -1360,7 +1368,7 @@ fn glossy_importance(center_5: vec3<f32>, radius_5: f32, phi_2: f32, axis_3: vec
     if _e20 {
         return 0f;
     }
-    let _e22 = cone_cos_toward(center_5, radius_5, p_5, r_7);
+    let _e22 = cone_cos_toward(center_5, radius_6, p_5, r_7);
     let _e27 = safe_sqrt((0.5f + (0.5f * _e22)));
     let _e33 = ggx_d(_e27, (1f - (_e27 * _e27)), lobe_5.z);
     let _e39 = smith_root(lobe_5.w, lobe_5.z);
@@ -1368,12 +1376,12 @@ fn glossy_importance(center_5: vec3<f32>, radius_5: f32, phi_2: f32, axis_3: vec
     return (_e10 * (((lobe_5.x * INV_PI) * _e11) + spec_1));
 }
 
-fn receiver_importance(center_6: vec3<f32>, radius_6: f32, phi_3: f32, axis_4: vec3<f32>, cos_o_4: f32, cos_e_3: f32, p_6: vec3<f32>, n_23: vec3<f32>, r_8: vec3<f32>, lobe_6: vec4<f32>) -> f32 {
+fn receiver_importance(center_6: vec3<f32>, radius_7: f32, phi_3: f32, axis_4: vec3<f32>, cos_o_4: f32, cos_e_3: f32, p_6: vec3<f32>, n_23: vec3<f32>, r_8: vec3<f32>, lobe_6: vec4<f32>) -> f32 {
     if (lobe_6.y <= 0f) {
-        let _e13 = light_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_23);
+        let _e13 = light_importance(center_6, radius_7, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_23);
         return _e13;
     }
-    let _e14 = glossy_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_23, r_8, lobe_6);
+    let _e14 = glossy_importance(center_6, radius_7, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_23, r_8, lobe_6);
     return _e14;
 }
 
@@ -1382,14 +1390,14 @@ fn candidate_weight(importance: f32, rt2_5: f32, d2_10: f32) -> f32 {
     return (importance * _e3);
 }
 
-fn cone_weight(center_7: vec3<f32>, radius_7: f32, phi_4: f32, axis_5: vec3<f32>, cos_o_5: f32, cos_e_4: f32, rt2_6: f32, p_7: vec3<f32>, n_24: vec3<f32>, r_9: vec3<f32>, lobe_7: vec4<f32>) -> f32 {
+fn cone_weight(center_7: vec3<f32>, radius_8: f32, phi_4: f32, axis_5: vec3<f32>, cos_o_5: f32, cos_e_4: f32, rt2_6: f32, p_7: vec3<f32>, n_24: vec3<f32>, r_9: vec3<f32>, lobe_7: vec4<f32>) -> f32 {
     let v_22 = (p_7 - center_7);
     if (lobe_7.y <= 0f) {
-        let _e15 = light_importance(center_7, radius_7, phi_4, axis_5, cos_o_5, cos_e_4, p_7, n_24);
+        let _e15 = light_importance(center_7, radius_8, phi_4, axis_5, cos_o_5, cos_e_4, p_7, n_24);
         let _e19 = candidate_weight((_e15 * INV_PI), rt2_6, dot(v_22, v_22));
         return _e19;
     }
-    let _e20 = glossy_importance(center_7, radius_7, phi_4, axis_5, cos_o_5, cos_e_4, p_7, n_24, r_9, lobe_7);
+    let _e20 = glossy_importance(center_7, radius_8, phi_4, axis_5, cos_o_5, cos_e_4, p_7, n_24, r_9, lobe_7);
     let _e22 = candidate_weight(_e20, rt2_6, dot(v_22, v_22));
     return _e22;
 }

@@ -140,6 +140,9 @@ const INV_PI: f32 = 0.31830987f;
 const MIN_D2_: f32 = 0.000000000001f;
 const MAX_INTENSITY: f32 = 72057594000000000f;
 const BSH_NONE: u32 = 4294967295u;
+const BSH_TAIL: u32 = 2147483648u;
+const BSH_TAIL_BINS: u32 = 1024u;
+const BSH_TAIL_MAX: u32 = 64u;
 const RESERVOIR_FULL: u32 = 4294967295u;
 const GGX_ALPHA_MIN: f32 = 0.001f;
 const RANGE_SCALE_MAX: f32 = 64f;
@@ -371,8 +374,8 @@ fn ggx_d(cos_h: f32, sin2_h: f32, alpha: f32) -> f32 {
         return 0f;
     }
     let a2_1 = (alpha * alpha);
-    let t = (((cos_h * cos_h) * a2_1) + sin2_h);
-    return ((a2_1 * INV_PI) / (t * t));
+    let t_1 = (((cos_h * cos_h) * a2_1) + sin2_h);
+    return ((a2_1 * INV_PI) / (t_1 * t_1));
 }
 
 fn smith_root(cos_: f32, alpha_1: f32) -> f32 {
@@ -576,9 +579,9 @@ fn ggx_vndf_pdf(wi_2: vec3<f32>, wo: vec3<f32>, alpha_8: f32) -> f32 {
     let hs_1 = (wi_2 + wo);
     let m_1 = (hs_1 / vec3(sqrt(dot(hs_1, hs_1))));
     let _e28 = ggx_d(m_1.z, ((m_1.x * m_1.x) + (m_1.y * m_1.y)), alpha_8);
-    let t_1 = sqrt((((alpha_8 * alpha_8) * ((wi_2.x * wi_2.x) + (wi_2.y * wi_2.y))) + (wi_2.z * wi_2.z)));
+    let t_2 = sqrt((((alpha_8 * alpha_8) * ((wi_2.x * wi_2.x) + (wi_2.y * wi_2.y))) + (wi_2.z * wi_2.z)));
     let _e43 = bounded_vndf_k(wi_2, alpha_8);
-    return (_e28 / (2f * ((_e43 * wi_2.z) + t_1)));
+    return (_e28 / (2f * ((_e43 * wi_2.z) + t_2)));
 }
 
 fn bsdf_sample(n_9: vec3<f32>, v_5: vec3<f32>, alpha_9: f32, p_spec: f32, u1_2: f32, u2_2: f32) -> vec3<f32> {
@@ -638,8 +641,8 @@ fn cone_cos_toward(center: vec3<f32>, radius: f32, p: vec3<f32>, d_2: vec3<f32>)
 }
 
 fn range_scale_at(rl: vec4<f32>, cos_t: f32) -> f32 {
-    let t_2 = (((0.5f + (0.5f * cos_t)) * (rl.z - 1f)) + 1f);
-    return clamp((rl.x + ((rl.y * rl.z) / (t_2 * t_2))), 1f, (rl.w * rl.w));
+    let t_3 = (((0.5f + (0.5f * cos_t)) * (rl.z - 1f)) + 1f);
+    return clamp((rl.x + ((rl.y * rl.z) / (t_3 * t_3))), 1f, (rl.w * rl.w));
 }
 
 fn range_scale_toward(rl_1: vec4<f32>, center_1: vec3<f32>, radius_1: f32, p_1: vec3<f32>, r_1: vec3<f32>) -> f32 {
@@ -784,15 +787,15 @@ fn ray_triangle(o_1: vec3<f32>, d_4: vec3<f32>, a_5: vec3<f32>, b_4: vec3<f32>, 
     if _e42 {
         return -1f;
     }
-    let t_3 = (dot(e2_1, q_1) * inv_1);
-    if (t_3 > t_min) {
-        local_20 = (t_3 < t_max_1);
+    let t_4 = (dot(e2_1, q_1) * inv_1);
+    if (t_4 > t_min) {
+        local_20 = (t_4 < t_max_1);
     } else {
         local_20 = false;
     }
     let _e51 = local_20;
     if _e51 {
-        return t_3;
+        return t_4;
     }
     return -1f;
 }
@@ -877,9 +880,9 @@ fn trace(o_2: vec3<f32>, d_5: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
                     }
                     {
                         let _e42 = i;
-                        let t_4 = geo_tris[_e42];
+                        let t_5 = geo_tris[_e42];
                         let _e49 = hit.t;
-                        let _e50 = ray_triangle(o_2, d_5, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e49);
+                        let _e50 = ray_triangle(o_2, d_5, t_5.v0_, t_5.v1_, t_5.v2_, t_min_1, _e49);
                         if (_e50 > 0f) {
                             hit.t = _e50;
                             let _e55 = i;
@@ -956,6 +959,11 @@ fn light_pdf(li_3: u32, x_6: vec3<f32>, n_14: vec3<f32>, r_5: vec3<f32>, lobe_6:
     return _e10;
 }
 
+fn bsh_node(nodes: u32, i_1: u32) -> BshNode {
+    let _e4 = bsh_nodes[i_1];
+    return _e4;
+}
+
 fn bsh_inner_scale(a_6: f32, v_9: vec3<f32>, d2_4: f32, r_6: vec3<f32>, rl_6: vec4<f32>) -> f32 {
     let _e5 = cone_cos_of(v_9, d2_4, a_6, r_6);
     let _e8 = range_scale_at(rl_6, (_e5 + 0.000002f));
@@ -1005,6 +1013,34 @@ fn bsh_reaches(node_3: BshNode, x_7: vec3<f32>, r_7: vec3<f32>, rl_7: vec4<f32>)
     return _e67;
 }
 
+fn bsh_range_leaf(nodes_1: u32, i_2: u32) -> BshNode {
+    var t: u32;
+
+    let _e2 = bsh_node(nodes_1, i_2);
+    if ((_e2.light & BSH_TAIL) == 0u) {
+        return _e2;
+    }
+    let li_4 = (_e2.light & 2147483647u);
+    let _e12 = bsh_node(nodes_1, 0u);
+    t = _e12.next;
+    loop {
+        let _e15 = t;
+        if (_e15 != BSH_NONE) {
+        } else {
+            break;
+        }
+        {
+            let _e18 = t;
+            let _e19 = bsh_node(nodes_1, _e18);
+            if (_e19.light == li_4) {
+                return _e19;
+            }
+            t = _e19.next;
+        }
+    }
+    return _e2;
+}
+
 fn next_uniform(state: ptr<function, u32>) -> f32 {
     let _e1 = (*state);
     let _e2 = pcg_hash(_e1);
@@ -1025,24 +1061,24 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     var local_1: bool;
     var local_2: bool;
 
-    let i_1 = gid.x;
+    let i_3 = gid.x;
     let _e4 = params.width;
     let _e7 = params.height;
-    if (i_1 >= (_e4 * _e7)) {
+    if (i_3 >= (_e4 * _e7)) {
         return;
     }
     let _e13 = params.depth;
     if (_e13 == 0u) {
         let _e18 = params.seed;
         let _e21 = params.pass_index;
-        let _e22 = path_stream(_e18, i_1, _e21);
+        let _e22 = path_stream(_e18, i_3, _e21);
         h = _e22;
         let _e26 = params.width;
         let _e28 = next_uniform((&h));
-        let _e29 = jittered_pixel((i_1 % _e26), _e28);
+        let _e29 = jittered_pixel((i_3 % _e26), _e28);
         let _e32 = params.width;
         let _e34 = next_uniform((&h));
-        let _e35 = jittered_pixel((i_1 / _e32), _e34);
+        let _e35 = jittered_pixel((i_3 / _e32), _e34);
         let _e39 = params.cam_pos;
         st.origin = _e39;
         let _e43 = params.cam_forward;
@@ -1060,14 +1096,14 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         let _e71 = params.cam_pos;
         st.prev = _e71;
     } else {
-        let _e74 = paths[i_1];
+        let _e74 = paths[i_3];
         st = _e74;
     }
     v.alive = 0u;
     let _e79 = st.alive;
     if (_e79 == 0u) {
         let _e84 = v;
-        vertices[i_1] = _e84;
+        vertices[i_3] = _e84;
         return;
     }
     let _e86 = st.origin;
@@ -1077,9 +1113,9 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     if (_e94.tri == NO_LIGHT) {
         st.alive = 0u;
         let _e102 = st;
-        paths[i_1] = _e102;
+        paths[i_3] = _e102;
         let _e105 = v;
-        vertices[i_1] = _e105;
+        vertices[i_3] = _e105;
         return;
     }
     let tri = geo_tris[_e94.tri];
@@ -1107,114 +1143,114 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         let _e161 = st.pdf_bsdf;
         if (_e161 > 0f) {
             let _e168 = light_leaf[tri.light];
-            let leaf = bsh_nodes[_e168];
-            let _e172 = st.prev_lobe;
-            let _e173 = range_lobe(_e172);
-            let _e175 = st.prev;
-            let _e177 = st.prev_r;
-            let _e178 = bsh_reaches(leaf, _e175, _e177, _e173);
-            let _e180 = st.pdf_bsdf;
-            let _e183 = st.prev;
-            let _e185 = st.prev_normal;
-            let _e187 = st.prev_r;
-            let _e189 = st.prev_lobe;
-            let _e192 = candidates[i_1];
-            let _e193 = light_pdf(tri.light, _e183, _e185, _e187, _e189, _e173, x_8, _e192, _e178);
-            let _e194 = mis_weight(_e180, _e193);
-            w = _e194;
+            let _e169 = bsh_range_leaf(BSH, _e168);
+            let _e171 = st.prev_lobe;
+            let _e172 = range_lobe(_e171);
+            let _e174 = st.prev;
+            let _e176 = st.prev_r;
+            let _e177 = bsh_reaches(_e169, _e174, _e176, _e172);
+            let _e179 = st.pdf_bsdf;
+            let _e182 = st.prev;
+            let _e184 = st.prev_normal;
+            let _e186 = st.prev_r;
+            let _e188 = st.prev_lobe;
+            let _e191 = candidates[i_3];
+            let _e192 = light_pdf(tri.light, _e182, _e184, _e186, _e188, _e172, x_8, _e191, _e177);
+            let _e193 = mis_weight(_e179, _e192);
+            w = _e193;
         }
-        let _e196 = st.beta;
-        let _e201 = lights[tri.light].intensity;
-        let _e203 = w;
-        let add = ((_e196 * _e201) * _e203);
-        let _e205 = finite3_(add);
-        if _e205 {
-            let _e208 = radiance[i_1];
-            radiance[i_1] = (_e208 + vec4<f32>(add, 0f));
+        let _e195 = st.beta;
+        let _e200 = lights[tri.light].intensity;
+        let _e202 = w;
+        let add = ((_e195 * _e200) * _e202);
+        let _e204 = finite3_(add);
+        if _e204 {
+            let _e207 = radiance[i_3];
+            radiance[i_3] = (_e207 + vec4<f32>(add, 0f));
         }
     }
-    let _e214 = params.depth;
-    let _e217 = params.max_depth;
-    if (_e214 >= _e217) {
+    let _e213 = params.depth;
+    let _e216 = params.max_depth;
+    if (_e213 >= _e216) {
         st.alive = 0u;
-        let _e223 = st;
-        paths[i_1] = _e223;
-        let _e226 = v;
-        vertices[i_1] = _e226;
+        let _e222 = st;
+        paths[i_3] = _e222;
+        let _e225 = v;
+        vertices[i_3] = _e225;
         return;
     }
     let m_2 = materials[tri.material];
-    let _e232 = st.dir;
-    let wo_1 = -(_e232);
-    let _e240 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, dot(_e147, wo_1));
+    let _e231 = st.dir;
+    let wo_1 = -(_e231);
+    let _e239 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, dot(_e147, wo_1));
     v.position = x_8;
     v.normal = _e147;
     v.material = tri.material;
     v.gnormal = _e123;
-    let _e248 = st.beta;
-    v.weight = _e248;
+    let _e247 = st.beta;
+    v.weight = _e247;
     v.wo = wo_1;
     v.alive = 1u;
-    let _e254 = v;
-    vertices[i_1] = _e254;
-    let _e256 = st.rng;
-    rng = _e256;
+    let _e253 = v;
+    vertices[i_3] = _e253;
+    let _e255 = st.rng;
+    rng = _e255;
+    let _e257 = next_uniform((&rng));
     let _e258 = next_uniform((&rng));
-    let _e259 = next_uniform((&rng));
-    let _e260 = specular_probability(_e240);
-    let _e262 = bsdf_sample(_e147, wo_1, m_2.alpha, _e260, _e258, _e259);
-    let _e264 = bsdf_pdf(_e147, wo_1, _e262, m_2.alpha, _e260);
-    let _e268 = has_specular(m_2.metallic, m_2.f0_, m_2.f90_);
-    if _e268 {
-        let _e270 = st.beta;
-        let _e276 = brdf_eval(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, _e147, wo_1, _e262);
-        st.beta = (_e270 * (_e276 * (dot(_e262, _e147) / _e264)));
+    let _e259 = specular_probability(_e239);
+    let _e261 = bsdf_sample(_e147, wo_1, m_2.alpha, _e259, _e257, _e258);
+    let _e263 = bsdf_pdf(_e147, wo_1, _e261, m_2.alpha, _e259);
+    let _e267 = has_specular(m_2.metallic, m_2.f0_, m_2.f90_);
+    if _e267 {
+        let _e269 = st.beta;
+        let _e275 = brdf_eval(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, _e147, wo_1, _e261);
+        st.beta = (_e269 * (_e275 * (dot(_e261, _e147) / _e263)));
     } else {
-        let _e282 = st.beta;
-        st.beta = (_e282 * m_2.albedo);
+        let _e281 = st.beta;
+        st.beta = (_e281 * m_2.albedo);
     }
     st.prev = x_8;
     st.prev_normal = _e147;
-    let _e288 = mirror_dir(_e147, wo_1);
-    st.prev_r = _e288;
-    st.prev_lobe = _e240;
-    st.pdf_bsdf = _e264;
-    let _e294 = params.eps;
-    st.origin = (x_8 + (_e123 * _e294));
-    st.dir = _e262;
-    let _e298 = continues_path(_e262, _e147, _e123);
-    if !(!(_e298)) {
-        local_1 = !((_e264 > 0f));
+    let _e287 = mirror_dir(_e147, wo_1);
+    st.prev_r = _e287;
+    st.prev_lobe = _e239;
+    st.pdf_bsdf = _e263;
+    let _e293 = params.eps;
+    st.origin = (x_8 + (_e123 * _e293));
+    st.dir = _e261;
+    let _e297 = continues_path(_e261, _e147, _e123);
+    if !(!(_e297)) {
+        local_1 = !((_e263 > 0f));
     } else {
         local_1 = true;
     }
-    let _e307 = local_1;
-    if _e307 {
+    let _e306 = local_1;
+    if _e306 {
         st.alive = 0u;
     }
-    let _e312 = params.depth;
-    let _e313 = plays_roulette(_e312);
-    if _e313 {
-        let _e317 = st.alive;
-        local_2 = (_e317 == 1u);
+    let _e311 = params.depth;
+    let _e312 = plays_roulette(_e311);
+    if _e312 {
+        let _e316 = st.alive;
+        local_2 = (_e316 == 1u);
     } else {
         local_2 = false;
     }
-    let _e321 = local_2;
-    if _e321 {
-        let _e323 = st.beta;
-        let _e324 = path_survival(_e323);
-        let _e325 = next_uniform((&rng));
-        if (_e325 >= _e324) {
+    let _e320 = local_2;
+    if _e320 {
+        let _e322 = st.beta;
+        let _e323 = path_survival(_e322);
+        let _e324 = next_uniform((&rng));
+        if (_e324 >= _e323) {
             st.alive = 0u;
         } else {
-            let _e330 = st.beta;
-            st.beta = (_e330 / vec3(_e324));
+            let _e329 = st.beta;
+            st.beta = (_e329 / vec3(_e323));
         }
     }
-    let _e334 = rng;
-    st.rng = _e334;
-    let _e337 = st;
-    paths[i_1] = _e337;
+    let _e333 = rng;
+    st.rng = _e333;
+    let _e336 = st;
+    paths[i_3] = _e336;
     return;
 }

@@ -652,7 +652,8 @@ impl DirectPass {
                 (Kernel::LightRanges, &features, 0),
                 (Kernel::DirectLight, &features, 0),
                 (Kernel::LightUpdate, &features, TABLES),
-                (Kernel::BshRefit, &features, TABLES),
+                (Kernel::BshRefit, &features, 0),
+                (Kernel::BshTail, &features, 0),
             ],
         )?;
         let reuse_bytes = DirectReuse::pixel_bytes(k) * w as u64 * h as u64;

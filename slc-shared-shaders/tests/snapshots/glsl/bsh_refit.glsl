@@ -54,6 +54,9 @@ const float INV_PI = 0.31830987;
 const float MIN_D2_ = 1e-12;
 const float MAX_INTENSITY = 7.2057594e16;
 const uint BSH_NONE = 4294967295u;
+const uint BSH_TAIL = 2147483648u;
+const uint BSH_TAIL_BINS = 1024u;
+const uint BSH_TAIL_MAX = 64u;
 const uint RESERVOIR_FULL = 4294967295u;
 const float GGX_ALPHA_MIN = 0.001;
 const float RANGE_SCALE_MAX = 64.0;
@@ -86,6 +89,8 @@ layout(std430) readonly buffer type_7_block_2Compute { vec4 _group_0_binding_2_c
 layout(std430) readonly buffer type_4_block_3Compute { float _group_0_binding_3_cs[]; };
 
 layout(std430) buffer type_8_block_4Compute { BshNode _group_0_binding_4_cs[]; };
+
+layout(std430) readonly buffer type_6_block_5Compute { uint _group_0_binding_5_cs[]; };
 
 
 float f32_from_bits(uint u) {
@@ -144,6 +149,11 @@ float range_radius(float extent, float r2_1) {
     return (extent + sqrt(r2_1));
 }
 
+uint bsh_tail_key(float radius) {
+    uint _e1 = f32_to_bits(radius);
+    return ((_e1 & 2147483647u) >> 21u);
+}
+
 float bsh_range_bound(BshNode node) {
     if ((node.child == BSH_NONE)) {
         return (node.radius - node.extent);
@@ -155,6 +165,12 @@ float bsh_range_bound(BshNode node) {
 BshNode bsh_node(uint nodes, uint i) {
     BshNode _e4 = _group_0_binding_4_cs[i];
     return _e4;
+}
+
+bool bsh_in_tail(float extent_1, float r2_2, uint cut) {
+    float _e3 = range_radius(extent_1, r2_2);
+    uint _e4 = bsh_tail_key(_e3);
+    return (_e4 >= cut);
 }
 
 vec4 bsh_pair_sphere(BshNode left, BshNode right) {
@@ -210,22 +226,27 @@ void main() {
     uint i_4 = _group_0_binding_1_cs[(_e9 + gid.x)];
     BshNode node_1 = _group_0_binding_4_cs[i_4];
     if ((node_1.child == BSH_NONE)) {
-        vec4 bound = _group_0_binding_2_cs[node_1.light];
+        uint li = (node_1.light & 2147483647u);
+        vec4 bound = _group_0_binding_2_cs[li];
+        float _e29 = _group_0_binding_3_cs[li];
+        uint _e32 = _group_0_binding_5_cs[0];
+        bool _e33 = bsh_in_tail(bound.w, _e29, _e32);
         _group_0_binding_4_cs[i_4].center = bound.xyz;
-        float _e35 = _group_0_binding_3_cs[node_1.light];
-        float _e36 = range_radius(bound.w, _e35);
-        _group_0_binding_4_cs[i_4].radius = _e36;
+        float _e44 = _group_0_binding_3_cs[li];
+        float _e47 = range_radius(bound.w, (_e33 ? 0.0 : _e44));
+        _group_0_binding_4_cs[i_4].radius = _e47;
         _group_0_binding_4_cs[i_4].extent = bound.w;
+        _group_0_binding_4_cs[i_4].light = (li | (_e33 ? BSH_TAIL : 0u));
         return;
     }
-    vec4 _e42 = bsh_children_sphere(BSH, i_4);
-    _group_0_binding_4_cs[i_4].center = _e42.xyz;
-    _group_0_binding_4_cs[i_4].radius = _e42.w;
-    float _e56 = bsh_children_extent(BSH, i_4, _e42.xyz);
-    _group_0_binding_4_cs[i_4].extent = _e56;
-    float _e61 = bsh_children_range(BSH, i_4);
-    uint _e62 = f32_to_bits(_e61);
-    _group_0_binding_4_cs[i_4].light = _e62;
+    vec4 _e60 = bsh_children_sphere(BSH, i_4);
+    _group_0_binding_4_cs[i_4].center = _e60.xyz;
+    _group_0_binding_4_cs[i_4].radius = _e60.w;
+    float _e74 = bsh_children_extent(BSH, i_4, _e60.xyz);
+    _group_0_binding_4_cs[i_4].extent = _e74;
+    float _e79 = bsh_children_range(BSH, i_4);
+    uint _e80 = f32_to_bits(_e79);
+    _group_0_binding_4_cs[i_4].light = _e80;
     return;
 }
 

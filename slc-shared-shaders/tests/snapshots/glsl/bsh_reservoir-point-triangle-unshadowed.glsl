@@ -73,6 +73,9 @@ const float INV_PI = 0.31830987;
 const float MIN_D2_ = 1e-12;
 const float MAX_INTENSITY = 7.2057594e16;
 const uint BSH_NONE = 4294967295u;
+const uint BSH_TAIL = 2147483648u;
+const uint BSH_TAIL_BINS = 1024u;
+const uint BSH_TAIL_MAX = 64u;
 const uint RESERVOIR_FULL = 4294967295u;
 const float GGX_ALPHA_MIN = 0.001;
 const float RANGE_SCALE_MAX = 64.0;
@@ -450,10 +453,14 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start, vec3 x_4, vec3 r_4, vec4 rl_4)
             bool _e11 = bsh_reaches(_e10, x_4, r_4, rl_4);
             if (_e11) {
                 if ((_e10.child == BSH_NONE)) {
-                    uint _e15 = i_1;
-                    return _e15;
+                    if (((_e10.light & BSH_TAIL) == 0u)) {
+                        uint _e20 = i_1;
+                        return _e20;
+                    }
+                    i_1 = _e10.next;
+                } else {
+                    i_1 = _e10.child;
                 }
-                i_1 = _e10.child;
             } else {
                 i_1 = _e10.next;
             }

@@ -135,6 +135,9 @@ const float INV_PI = 0.31830987;
 const float MIN_D2_ = 1e-12;
 const float MAX_INTENSITY = 7.2057594e16;
 const uint BSH_NONE = 4294967295u;
+const uint BSH_TAIL = 2147483648u;
+const uint BSH_TAIL_BINS = 1024u;
+const uint BSH_TAIL_MAX = 64u;
 const uint RESERVOIR_FULL = 4294967295u;
 const float GGX_ALPHA_MIN = 0.001;
 const float RANGE_SCALE_MAX = 64.0;
@@ -364,8 +367,8 @@ float ggx_d(float cos_h, float sin2_h, float alpha) {
         return 0.0;
     }
     float a2_1 = (alpha * alpha);
-    float t = (((cos_h * cos_h) * a2_1) + sin2_h);
-    return ((a2_1 * INV_PI) / (t * t));
+    float t_1 = (((cos_h * cos_h) * a2_1) + sin2_h);
+    return ((a2_1 * INV_PI) / (t_1 * t_1));
 }
 
 float smith_root(float cos_, float alpha_1) {
@@ -564,9 +567,9 @@ float ggx_vndf_pdf(vec3 wi_2, vec3 wo, float alpha_8) {
     vec3 hs_1 = (wi_2 + wo);
     vec3 m_1 = (hs_1 / vec3(sqrt(dot(hs_1, hs_1))));
     float _e28 = ggx_d(m_1.z, ((m_1.x * m_1.x) + (m_1.y * m_1.y)), alpha_8);
-    float t_1 = sqrt((((alpha_8 * alpha_8) * ((wi_2.x * wi_2.x) + (wi_2.y * wi_2.y))) + (wi_2.z * wi_2.z)));
+    float t_2 = sqrt((((alpha_8 * alpha_8) * ((wi_2.x * wi_2.x) + (wi_2.y * wi_2.y))) + (wi_2.z * wi_2.z)));
     float _e43 = bounded_vndf_k(wi_2, alpha_8);
-    return (_e28 / (2.0 * ((_e43 * wi_2.z) + t_1)));
+    return (_e28 / (2.0 * ((_e43 * wi_2.z) + t_2)));
 }
 
 vec3 bsdf_sample(vec3 n_9, vec3 v_5, float alpha_9, float p_spec, float u1_2, float u2_2) {
@@ -625,8 +628,8 @@ float cone_cos_toward(vec3 center, float radius, vec3 p, vec3 d_2) {
 }
 
 float range_scale_at(vec4 rl, float cos_t) {
-    float t_2 = (((0.5 + (0.5 * cos_t)) * (rl.z - 1.0)) + 1.0);
-    return clamp((rl.x + ((rl.y * rl.z) / (t_2 * t_2))), 1.0, (rl.w * rl.w));
+    float t_3 = (((0.5 + (0.5 * cos_t)) * (rl.z - 1.0)) + 1.0);
+    return clamp((rl.x + ((rl.y * rl.z) / (t_3 * t_3))), 1.0, (rl.w * rl.w));
 }
 
 float range_scale_toward(vec4 rl_1, vec3 center_1, float radius_1, vec3 p_1, vec3 r_1) {
@@ -767,15 +770,15 @@ float ray_triangle(vec3 o_1, vec3 d_4, vec3 a_5, vec3 b_4, vec3 c_4, float t_min
     if (_e42) {
         return -1.0;
     }
-    float t_3 = (dot(e2_1, q_1) * inv_1);
-    if ((t_3 > t_min)) {
-        local_20 = (t_3 < t_max_1);
+    float t_4 = (dot(e2_1, q_1) * inv_1);
+    if ((t_4 > t_min)) {
+        local_20 = (t_4 < t_max_1);
     } else {
         local_20 = false;
     }
     bool _e51 = local_20;
     if (_e51) {
-        return t_3;
+        return t_4;
     }
     return -1.0;
 }
@@ -864,9 +867,9 @@ GeoHit trace(vec3 o_2, vec3 d_5, float t_min_1, float t_max_2, bool any_hit) {
                     }
                     {
                         uint _e42 = i;
-                        GpuTriangle t_4 = _group_0_binding_6_cs[_e42];
+                        GpuTriangle t_5 = _group_0_binding_6_cs[_e42];
                         float _e49 = hit.t;
-                        float _e50 = ray_triangle(o_2, d_5, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e49);
+                        float _e50 = ray_triangle(o_2, d_5, t_5.v0_, t_5.v1_, t_5.v2_, t_min_1, _e49);
                         if ((_e50 > 0.0)) {
                             hit.t = _e50;
                             uint _e55 = i;
@@ -939,6 +942,11 @@ float light_pdf(uint li_3, vec3 x_6, vec3 n_14, vec3 r_5, vec4 lobe_6, vec4 rl_5
     return _e10;
 }
 
+BshNode bsh_node(uint nodes, uint i_1) {
+    BshNode _e4 = _group_0_binding_3_cs[i_1];
+    return _e4;
+}
+
 float bsh_inner_scale(float a_6, vec3 v_9, float d2_4, vec3 r_6, vec4 rl_6) {
     float _e5 = cone_cos_of(v_9, d2_4, a_6, r_6);
     float _e8 = range_scale_at(rl_6, (_e5 + 2e-6));
@@ -987,6 +995,33 @@ bool bsh_reaches(BshNode node_3, vec3 x_7, vec3 r_7, vec4 rl_7) {
     return _e67;
 }
 
+BshNode bsh_range_leaf(uint nodes_1, uint i_2) {
+    uint t = 0u;
+    BshNode _e2 = bsh_node(nodes_1, i_2);
+    if (((_e2.light & BSH_TAIL) == 0u)) {
+        return _e2;
+    }
+    uint li_4 = (_e2.light & 2147483647u);
+    BshNode _e12 = bsh_node(nodes_1, 0u);
+    t = _e12.next;
+    while(true) {
+        uint _e15 = t;
+        if ((_e15 != BSH_NONE)) {
+        } else {
+            break;
+        }
+        {
+            uint _e18 = t;
+            BshNode _e19 = bsh_node(nodes_1, _e18);
+            if ((_e19.light == li_4)) {
+                return _e19;
+            }
+            t = _e19.next;
+        }
+    }
+    return _e2;
+}
+
 float next_uniform(inout uint state) {
     uint _e1 = state;
     uint _e2 = pcg_hash(_e1);
@@ -1006,24 +1041,24 @@ void main() {
     uint rng = 0u;
     bool local_1 = false;
     bool local_2 = false;
-    uint i_1 = gid.x;
+    uint i_3 = gid.x;
     uint _e4 = _group_0_binding_0_cs.width;
     uint _e7 = _group_0_binding_0_cs.height;
-    if ((i_1 >= (_e4 * _e7))) {
+    if ((i_3 >= (_e4 * _e7))) {
         return;
     }
     uint _e13 = _group_0_binding_0_cs.depth;
     if ((_e13 == 0u)) {
         uint _e18 = _group_0_binding_0_cs.seed;
         uint _e21 = _group_0_binding_0_cs.pass_index;
-        uint _e22 = path_stream(_e18, i_1, _e21);
+        uint _e22 = path_stream(_e18, i_3, _e21);
         h = _e22;
         uint _e26 = _group_0_binding_0_cs.width;
         float _e28 = next_uniform(h);
-        float _e29 = jittered_pixel((i_1 % _e26), _e28);
+        float _e29 = jittered_pixel((i_3 % _e26), _e28);
         uint _e32 = _group_0_binding_0_cs.width;
         float _e34 = next_uniform(h);
-        float _e35 = jittered_pixel((i_1 / _e32), _e34);
+        float _e35 = jittered_pixel((i_3 / _e32), _e34);
         vec3 _e39 = _group_0_binding_0_cs.cam_pos;
         st.origin = _e39;
         vec3 _e43 = _group_0_binding_0_cs.cam_forward;
@@ -1041,14 +1076,14 @@ void main() {
         vec3 _e71 = _group_0_binding_0_cs.cam_pos;
         st.prev = _e71;
     } else {
-        GpuPathState _e74 = _group_0_binding_10_cs[i_1];
+        GpuPathState _e74 = _group_0_binding_10_cs[i_3];
         st = _e74;
     }
     v.alive = 0u;
     uint _e79 = st.alive;
     if ((_e79 == 0u)) {
         GpuPathVertex _e84 = v;
-        _group_0_binding_11_cs[i_1] = _e84;
+        _group_0_binding_11_cs[i_3] = _e84;
         return;
     }
     vec3 _e86 = st.origin;
@@ -1058,9 +1093,9 @@ void main() {
     if ((_e94.tri == NO_LIGHT)) {
         st.alive = 0u;
         GpuPathState _e102 = st;
-        _group_0_binding_10_cs[i_1] = _e102;
+        _group_0_binding_10_cs[i_3] = _e102;
         GpuPathVertex _e105 = v;
-        _group_0_binding_11_cs[i_1] = _e105;
+        _group_0_binding_11_cs[i_3] = _e105;
         return;
     }
     GpuTriangle tri = _group_0_binding_6_cs[_e94.tri];
@@ -1088,115 +1123,115 @@ void main() {
         float _e161 = st.pdf_bsdf;
         if ((_e161 > 0.0)) {
             uint _e168 = _group_0_binding_4_cs[tri.light];
-            BshNode leaf = _group_0_binding_3_cs[_e168];
-            vec4 _e172 = st.prev_lobe;
-            vec4 _e173 = range_lobe(_e172);
-            vec3 _e175 = st.prev;
-            vec3 _e177 = st.prev_r;
-            bool _e178 = bsh_reaches(leaf, _e175, _e177, _e173);
-            float _e180 = st.pdf_bsdf;
-            vec3 _e183 = st.prev;
-            vec3 _e185 = st.prev_normal;
-            vec3 _e187 = st.prev_r;
-            vec4 _e189 = st.prev_lobe;
-            uint _e192 = _group_0_binding_9_cs[i_1];
-            float _e193 = light_pdf(tri.light, _e183, _e185, _e187, _e189, _e173, x_8, _e192, _e178);
-            float _e194 = mis_weight(_e180, _e193);
-            w = _e194;
+            BshNode _e169 = bsh_range_leaf(BSH, _e168);
+            vec4 _e171 = st.prev_lobe;
+            vec4 _e172 = range_lobe(_e171);
+            vec3 _e174 = st.prev;
+            vec3 _e176 = st.prev_r;
+            bool _e177 = bsh_reaches(_e169, _e174, _e176, _e172);
+            float _e179 = st.pdf_bsdf;
+            vec3 _e182 = st.prev;
+            vec3 _e184 = st.prev_normal;
+            vec3 _e186 = st.prev_r;
+            vec4 _e188 = st.prev_lobe;
+            uint _e191 = _group_0_binding_9_cs[i_3];
+            float _e192 = light_pdf(tri.light, _e182, _e184, _e186, _e188, _e172, x_8, _e191, _e177);
+            float _e193 = mis_weight(_e179, _e192);
+            w = _e193;
         }
-        vec3 _e196 = st.beta;
-        vec3 _e201 = _group_0_binding_1_cs[tri.light].intensity;
-        float _e203 = w;
-        vec3 add = ((_e196 * _e201) * _e203);
-        bool _e205 = finite3_(add);
-        if (_e205) {
-            vec4 _e208 = _group_0_binding_12_cs[i_1];
-            _group_0_binding_12_cs[i_1] = (_e208 + vec4(add, 0.0));
+        vec3 _e195 = st.beta;
+        vec3 _e200 = _group_0_binding_1_cs[tri.light].intensity;
+        float _e202 = w;
+        vec3 add = ((_e195 * _e200) * _e202);
+        bool _e204 = finite3_(add);
+        if (_e204) {
+            vec4 _e207 = _group_0_binding_12_cs[i_3];
+            _group_0_binding_12_cs[i_3] = (_e207 + vec4(add, 0.0));
         }
     }
-    uint _e214 = _group_0_binding_0_cs.depth;
-    uint _e217 = _group_0_binding_0_cs.max_depth;
-    if ((_e214 >= _e217)) {
+    uint _e213 = _group_0_binding_0_cs.depth;
+    uint _e216 = _group_0_binding_0_cs.max_depth;
+    if ((_e213 >= _e216)) {
         st.alive = 0u;
-        GpuPathState _e223 = st;
-        _group_0_binding_10_cs[i_1] = _e223;
-        GpuPathVertex _e226 = v;
-        _group_0_binding_11_cs[i_1] = _e226;
+        GpuPathState _e222 = st;
+        _group_0_binding_10_cs[i_3] = _e222;
+        GpuPathVertex _e225 = v;
+        _group_0_binding_11_cs[i_3] = _e225;
         return;
     }
     GpuMaterial m_2 = _group_0_binding_7_cs[tri.material];
-    vec3 _e232 = st.dir;
-    vec3 wo_1 = -(_e232);
-    vec4 _e240 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, dot(_e147, wo_1));
+    vec3 _e231 = st.dir;
+    vec3 wo_1 = -(_e231);
+    vec4 _e239 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, dot(_e147, wo_1));
     v.position = x_8;
     v.normal = _e147;
     v.material = tri.material;
     v.gnormal = _e123;
-    vec3 _e248 = st.beta;
-    v.weight = _e248;
+    vec3 _e247 = st.beta;
+    v.weight = _e247;
     v.wo = wo_1;
     v.alive = 1u;
-    GpuPathVertex _e254 = v;
-    _group_0_binding_11_cs[i_1] = _e254;
-    uint _e256 = st.rng;
-    rng = _e256;
+    GpuPathVertex _e253 = v;
+    _group_0_binding_11_cs[i_3] = _e253;
+    uint _e255 = st.rng;
+    rng = _e255;
+    float _e257 = next_uniform(rng);
     float _e258 = next_uniform(rng);
-    float _e259 = next_uniform(rng);
-    float _e260 = specular_probability(_e240);
-    vec3 _e262 = bsdf_sample(_e147, wo_1, m_2.alpha, _e260, _e258, _e259);
-    float _e264 = bsdf_pdf(_e147, wo_1, _e262, m_2.alpha, _e260);
-    bool _e268 = has_specular(m_2.metallic, m_2.f0_, m_2.f90_);
-    if (_e268) {
-        vec3 _e270 = st.beta;
-        vec3 _e276 = brdf_eval(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, _e147, wo_1, _e262);
-        st.beta = (_e270 * (_e276 * (dot(_e262, _e147) / _e264)));
+    float _e259 = specular_probability(_e239);
+    vec3 _e261 = bsdf_sample(_e147, wo_1, m_2.alpha, _e259, _e257, _e258);
+    float _e263 = bsdf_pdf(_e147, wo_1, _e261, m_2.alpha, _e259);
+    bool _e267 = has_specular(m_2.metallic, m_2.f0_, m_2.f90_);
+    if (_e267) {
+        vec3 _e269 = st.beta;
+        vec3 _e275 = brdf_eval(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, _e147, wo_1, _e261);
+        st.beta = (_e269 * (_e275 * (dot(_e261, _e147) / _e263)));
     } else {
-        vec3 _e282 = st.beta;
-        st.beta = (_e282 * m_2.albedo);
+        vec3 _e281 = st.beta;
+        st.beta = (_e281 * m_2.albedo);
     }
     st.prev = x_8;
     st.prev_normal = _e147;
-    vec3 _e288 = mirror_dir(_e147, wo_1);
-    st.prev_r = _e288;
-    st.prev_lobe = _e240;
-    st.pdf_bsdf = _e264;
-    float _e294 = _group_0_binding_0_cs.eps;
-    st.origin = (x_8 + (_e123 * _e294));
-    st.dir = _e262;
-    bool _e298 = continues_path(_e262, _e147, _e123);
-    if (!(!(_e298))) {
-        local_1 = !((_e264 > 0.0));
+    vec3 _e287 = mirror_dir(_e147, wo_1);
+    st.prev_r = _e287;
+    st.prev_lobe = _e239;
+    st.pdf_bsdf = _e263;
+    float _e293 = _group_0_binding_0_cs.eps;
+    st.origin = (x_8 + (_e123 * _e293));
+    st.dir = _e261;
+    bool _e297 = continues_path(_e261, _e147, _e123);
+    if (!(!(_e297))) {
+        local_1 = !((_e263 > 0.0));
     } else {
         local_1 = true;
     }
-    bool _e307 = local_1;
-    if (_e307) {
+    bool _e306 = local_1;
+    if (_e306) {
         st.alive = 0u;
     }
-    uint _e312 = _group_0_binding_0_cs.depth;
-    bool _e313 = plays_roulette(_e312);
-    if (_e313) {
-        uint _e317 = st.alive;
-        local_2 = (_e317 == 1u);
+    uint _e311 = _group_0_binding_0_cs.depth;
+    bool _e312 = plays_roulette(_e311);
+    if (_e312) {
+        uint _e316 = st.alive;
+        local_2 = (_e316 == 1u);
     } else {
         local_2 = false;
     }
-    bool _e321 = local_2;
-    if (_e321) {
-        vec3 _e323 = st.beta;
-        float _e324 = path_survival(_e323);
-        float _e325 = next_uniform(rng);
-        if ((_e325 >= _e324)) {
+    bool _e320 = local_2;
+    if (_e320) {
+        vec3 _e322 = st.beta;
+        float _e323 = path_survival(_e322);
+        float _e324 = next_uniform(rng);
+        if ((_e324 >= _e323)) {
             st.alive = 0u;
         } else {
-            vec3 _e330 = st.beta;
-            st.beta = (_e330 / vec3(_e324));
+            vec3 _e329 = st.beta;
+            st.beta = (_e329 / vec3(_e323));
         }
     }
-    uint _e334 = rng;
-    st.rng = _e334;
-    GpuPathState _e337 = st;
-    _group_0_binding_10_cs[i_1] = _e337;
+    uint _e333 = rng;
+    st.rng = _e333;
+    GpuPathState _e336 = st;
+    _group_0_binding_10_cs[i_3] = _e336;
     return;
 }
 

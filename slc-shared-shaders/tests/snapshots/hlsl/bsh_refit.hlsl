@@ -51,6 +51,9 @@ static const float INV_PI = 0.31830987;
 static const float MIN_D2_ = 1e-12;
 static const float MAX_INTENSITY = 7.2057594e16;
 static const uint BSH_NONE = 4294967295u;
+static const uint BSH_TAIL = 2147483648u;
+static const uint BSH_TAIL_BINS = 1024u;
+static const uint BSH_TAIL_MAX = 64u;
 static const uint RESERVOIR_FULL = 4294967295u;
 static const float GGX_ALPHA_MIN = 0.001;
 static const float RANGE_SCALE_MAX = 64.0;
@@ -77,8 +80,9 @@ static const uint BSH_TILE_SUBTREES = 256u;
 cbuffer params : register(b0) { RefitParams params; }
 ByteAddressBuffer order : register(t1);
 ByteAddressBuffer bounds : register(t2);
-ByteAddressBuffer r2_2 : register(t3);
+ByteAddressBuffer r2_3 : register(t3);
 RWByteAddressBuffer bsh_nodes : register(u4);
+ByteAddressBuffer tail : register(t5);
 
 float f32_from_bits(uint u)
 {
@@ -142,6 +146,12 @@ float range_radius(float extent, float r2_1)
     return (extent + sqrt(r2_1));
 }
 
+uint bsh_tail_key(float radius)
+{
+    const uint _e1 = f32_to_bits(radius);
+    return ((_e1 & 2147483647u) >> 21u);
+}
+
 float bsh_range_bound(BshNode node)
 {
     if ((node.child == BSH_NONE)) {
@@ -167,6 +177,13 @@ BshNode bsh_node(uint nodes, uint i)
     BshNode _e4 = ConstructBshNode(asfloat(bsh_nodes.Load3(i*32+0)), asfloat(bsh_nodes.Load(i*32+12)), asuint(bsh_nodes.Load(i*32+16)), asuint(bsh_nodes.Load(i*32+20)), asuint(bsh_nodes.Load(i*32+24)), asfloat(bsh_nodes.Load(i*32+28)));
     const BshNode bshnode = _e4;
     return bshnode;
+}
+
+bool bsh_in_tail(float extent_1, float r2_2, uint cut)
+{
+    const float _e3 = range_radius(extent_1, r2_2);
+    const uint _e4 = bsh_tail_key(_e3);
+    return (_e4 >= cut);
 }
 
 float4 bsh_pair_sphere(BshNode left, BshNode right)
@@ -229,21 +246,26 @@ void main(uint3 gid : SV_DispatchThreadID)
     uint i_4 = asuint(order.Load((_e9 + gid.x)*4));
     BshNode node_1 = ConstructBshNode(asfloat(bsh_nodes.Load3(i_4*32+0)), asfloat(bsh_nodes.Load(i_4*32+12)), asuint(bsh_nodes.Load(i_4*32+16)), asuint(bsh_nodes.Load(i_4*32+20)), asuint(bsh_nodes.Load(i_4*32+24)), asfloat(bsh_nodes.Load(i_4*32+28)));
     if ((node_1.child == BSH_NONE)) {
-        float4 bound = asfloat(bounds.Load4(node_1.light*16));
+        uint li = (node_1.light & 2147483647u);
+        float4 bound = asfloat(bounds.Load4(li*16));
+        float _e29 = asfloat(r2_3.Load(li*4));
+        uint _e32 = asuint(tail.Load(0));
+        const bool _e33 = bsh_in_tail(bound.w, _e29, _e32);
         bsh_nodes.Store3(0+i_4*32, asuint(bound.xyz));
-        float _e35 = asfloat(r2_2.Load(node_1.light*4));
-        const float _e36 = range_radius(bound.w, _e35);
-        bsh_nodes.Store(12+i_4*32, asuint(_e36));
+        float _e44 = asfloat(r2_3.Load(li*4));
+        const float _e47 = range_radius(bound.w, (_e33 ? 0.0 : _e44));
+        bsh_nodes.Store(12+i_4*32, asuint(_e47));
         bsh_nodes.Store(28+i_4*32, asuint(bound.w));
+        bsh_nodes.Store(24+i_4*32, asuint((li | (_e33 ? BSH_TAIL : 0u))));
         return;
     }
-    const float4 _e42 = bsh_children_sphere(BSH, i_4);
-    bsh_nodes.Store3(0+i_4*32, asuint(_e42.xyz));
-    bsh_nodes.Store(12+i_4*32, asuint(_e42.w));
-    const float _e56 = bsh_children_extent(BSH, i_4, _e42.xyz);
-    bsh_nodes.Store(28+i_4*32, asuint(_e56));
-    const float _e61 = bsh_children_range(BSH, i_4);
-    const uint _e62 = f32_to_bits(_e61);
-    bsh_nodes.Store(24+i_4*32, asuint(_e62));
+    const float4 _e60 = bsh_children_sphere(BSH, i_4);
+    bsh_nodes.Store3(0+i_4*32, asuint(_e60.xyz));
+    bsh_nodes.Store(12+i_4*32, asuint(_e60.w));
+    const float _e74 = bsh_children_extent(BSH, i_4, _e60.xyz);
+    bsh_nodes.Store(28+i_4*32, asuint(_e74));
+    const float _e79 = bsh_children_range(BSH, i_4);
+    const uint _e80 = f32_to_bits(_e79);
+    bsh_nodes.Store(24+i_4*32, asuint(_e80));
     return;
 }

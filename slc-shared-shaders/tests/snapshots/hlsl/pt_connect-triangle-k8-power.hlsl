@@ -128,6 +128,9 @@ static const float INV_PI = 0.31830987;
 static const float MIN_D2_ = 1e-12;
 static const float MAX_INTENSITY = 7.2057594e16;
 static const uint BSH_NONE = 4294967295u;
+static const uint BSH_TAIL = 2147483648u;
+static const uint BSH_TAIL_BINS = 1024u;
+static const uint BSH_TAIL_MAX = 64u;
 static const uint RESERVOIR_FULL = 4294967295u;
 static const float GGX_ALPHA_MIN = 0.001;
 static const float RANGE_SCALE_MAX = 64.0;
@@ -1127,10 +1130,14 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start, float3 x_5, float3 r_4, float4
             const bool _e11 = bsh_reaches(_e10, x_5, r_4, rl_4);
             if (_e11) {
                 if ((_e10.child == BSH_NONE)) {
-                    uint _e15 = i_2;
-                    return _e15;
+                    if (((_e10.light & BSH_TAIL) == 0u)) {
+                        uint _e20 = i_2;
+                        return _e20;
+                    }
+                    i_2 = _e10.next;
+                } else {
+                    i_2 = _e10.child;
                 }
-                i_2 = _e10.child;
             } else {
                 i_2 = _e10.next;
             }

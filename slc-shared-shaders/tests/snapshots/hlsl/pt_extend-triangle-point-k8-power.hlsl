@@ -140,6 +140,9 @@ static const float INV_PI = 0.31830987;
 static const float MIN_D2_ = 1e-12;
 static const float MAX_INTENSITY = 7.2057594e16;
 static const uint BSH_NONE = 4294967295u;
+static const uint BSH_TAIL = 2147483648u;
+static const uint BSH_TAIL_BINS = 1024u;
+static const uint BSH_TAIL_MAX = 64u;
 static const uint RESERVOIR_FULL = 4294967295u;
 static const float GGX_ALPHA_MIN = 0.001;
 static const float RANGE_SCALE_MAX = 64.0;
@@ -381,8 +384,8 @@ float ggx_d(float cos_h, float sin2_h, float alpha)
         return 0.0;
     }
     float a2_1 = (alpha * alpha);
-    float t = (((cos_h * cos_h) * a2_1) + sin2_h);
-    return ((a2_1 * INV_PI) / (t * t));
+    float t_1 = (((cos_h * cos_h) * a2_1) + sin2_h);
+    return ((a2_1 * INV_PI) / (t_1 * t_1));
 }
 
 float smith_root(float cos_, float alpha_1)
@@ -606,9 +609,9 @@ float ggx_vndf_pdf(float3 wi_2, float3 wo, float alpha_8)
     float3 hs_1 = (wi_2 + wo);
     float3 m_1 = (hs_1 / (sqrt(dot(hs_1, hs_1))).xxx);
     const float _e28 = ggx_d(m_1.z, ((m_1.x * m_1.x) + (m_1.y * m_1.y)), alpha_8);
-    float t_1 = sqrt((((alpha_8 * alpha_8) * ((wi_2.x * wi_2.x) + (wi_2.y * wi_2.y))) + (wi_2.z * wi_2.z)));
+    float t_2 = sqrt((((alpha_8 * alpha_8) * ((wi_2.x * wi_2.x) + (wi_2.y * wi_2.y))) + (wi_2.z * wi_2.z)));
     const float _e43 = bounded_vndf_k(wi_2, alpha_8);
-    return (_e28 / (2.0 * ((_e43 * wi_2.z) + t_1)));
+    return (_e28 / (2.0 * ((_e43 * wi_2.z) + t_2)));
 }
 
 float3 bsdf_sample(float3 n_9, float3 v_5, float alpha_9, float p_spec, float u1_2, float u2_2)
@@ -673,8 +676,8 @@ float cone_cos_toward(float3 center_, float radius, float3 p, float3 d_2)
 
 float range_scale_at(float4 rl, float cos_t)
 {
-    float t_2 = (((0.5 + (0.5 * cos_t)) * (rl.z - 1.0)) + 1.0);
-    return clamp((rl.x + ((rl.y * rl.z) / (t_2 * t_2))), 1.0, (rl.w * rl.w));
+    float t_3 = (((0.5 + (0.5 * cos_t)) * (rl.z - 1.0)) + 1.0);
+    return clamp((rl.x + ((rl.y * rl.z) / (t_3 * t_3))), 1.0, (rl.w * rl.w));
 }
 
 float range_scale_toward(float4 rl_1, float3 center_1, float radius_1, float3 p_1, float3 r_1)
@@ -829,15 +832,15 @@ float ray_triangle(float3 o_1, float3 d_4, float3 a_5, float3 b_4, float3 c_4, f
     if (_e42) {
         return -1.0;
     }
-    float t_3 = (dot(e2_1, q_1) * inv_1);
-    if ((t_3 > t_min)) {
-        local_20 = (t_3 < t_max_1);
+    float t_4 = (dot(e2_1, q_1) * inv_1);
+    if ((t_4 > t_min)) {
+        local_20 = (t_4 < t_max_1);
     } else {
         local_20 = false;
     }
     bool _e51 = local_20;
     if (_e51) {
-        return t_3;
+        return t_4;
     }
     return -1.0;
 }
@@ -971,9 +974,9 @@ GeoHit trace(float3 o_2, float3 d_5, float t_min_1, float t_max_2, bool any_hit)
                     }
                     {
                         uint _e42 = i;
-                        GpuTriangle t_4 = ConstructGpuTriangle(asfloat(geo_tris.Load3(_e42*48+0)), asuint(geo_tris.Load(_e42*48+12)), asfloat(geo_tris.Load3(_e42*48+16)), asuint(geo_tris.Load(_e42*48+28)), asfloat(geo_tris.Load3(_e42*48+32)), asuint(geo_tris.Load(_e42*48+44)));
+                        GpuTriangle t_5 = ConstructGpuTriangle(asfloat(geo_tris.Load3(_e42*48+0)), asuint(geo_tris.Load(_e42*48+12)), asfloat(geo_tris.Load3(_e42*48+16)), asuint(geo_tris.Load(_e42*48+28)), asfloat(geo_tris.Load3(_e42*48+32)), asuint(geo_tris.Load(_e42*48+44)));
                         float _e49 = hit.t;
-                        const float _e50 = ray_triangle(o_2, d_5, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e49);
+                        const float _e50 = ray_triangle(o_2, d_5, t_5.v0_, t_5.v1_, t_5.v2_, t_min_1, _e49);
                         if ((_e50 > 0.0)) {
                             hit.t = _e50;
                             uint _e55 = i;
@@ -1079,6 +1082,24 @@ float light_pdf(uint li_3, float3 x_6, float3 n_14, float3 r_5, float4 lobe_6, f
     return _e10;
 }
 
+BshNode ConstructBshNode(float3 arg0, float arg1, uint arg2, uint arg3, uint arg4, float arg5) {
+    BshNode ret = (BshNode)0;
+    ret.center_ = arg0;
+    ret.radius = arg1;
+    ret.child = arg2;
+    ret.next = arg3;
+    ret.light = arg4;
+    ret.extent = arg5;
+    return ret;
+}
+
+BshNode bsh_node(uint nodes, uint i_1)
+{
+    BshNode _e4 = ConstructBshNode(asfloat(bsh_nodes.Load3(i_1*32+0)), asfloat(bsh_nodes.Load(i_1*32+12)), asuint(bsh_nodes.Load(i_1*32+16)), asuint(bsh_nodes.Load(i_1*32+20)), asuint(bsh_nodes.Load(i_1*32+24)), asfloat(bsh_nodes.Load(i_1*32+28)));
+    const BshNode bshnode = _e4;
+    return bshnode;
+}
+
 float bsh_inner_scale(float a_6, float3 v_9, float d2_4, float3 r_6, float4 rl_6)
 {
     const float _e5 = cone_cos_of(v_9, d2_4, a_6, r_6);
@@ -1130,6 +1151,41 @@ bool bsh_reaches(BshNode node_3, float3 x_7, float3 r_7, float4 rl_7)
     return _e67;
 }
 
+BshNode bsh_range_leaf(uint nodes_1, uint i_2)
+{
+    uint t = (uint)0;
+
+    const BshNode _e2 = bsh_node(nodes_1, i_2);
+    if (((_e2.light & BSH_TAIL) == 0u)) {
+        const BshNode bshnode_1 = _e2;
+        return bshnode_1;
+    }
+    uint li_4 = (_e2.light & 2147483647u);
+    const BshNode _e12 = bsh_node(nodes_1, 0u);
+    t = _e12.next;
+    uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
+    while(true) {
+        if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
+        loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
+        uint _e15 = t;
+        if ((_e15 != BSH_NONE)) {
+        } else {
+            break;
+        }
+        {
+            uint _e18 = t;
+            const BshNode _e19 = bsh_node(nodes_1, _e18);
+            if ((_e19.light == li_4)) {
+                const BshNode bshnode_2 = _e19;
+                return bshnode_2;
+            }
+            t = _e19.next;
+        }
+    }
+    const BshNode bshnode_3 = _e2;
+    return bshnode_3;
+}
+
 float next_uniform(inout uint state)
 {
     uint _e1 = state;
@@ -1166,17 +1222,6 @@ GpuPathState ConstructGpuPathState(float3 arg0, uint arg1, float3 arg2, uint arg
     return ret;
 }
 
-BshNode ConstructBshNode(float3 arg0, float arg1, uint arg2, uint arg3, uint arg4, float arg5) {
-    BshNode ret = (BshNode)0;
-    ret.center_ = arg0;
-    ret.radius = arg1;
-    ret.child = arg2;
-    ret.next = arg3;
-    ret.light = arg4;
-    ret.extent = arg5;
-    return ret;
-}
-
 GpuMaterial ConstructGpuMaterial(float3 arg0, float arg1, float3 arg2, float arg3, float3 arg4, float arg5) {
     GpuMaterial ret = (GpuMaterial)0;
     ret.albedo = arg0;
@@ -1200,24 +1245,24 @@ void main(uint3 gid : SV_DispatchThreadID)
     bool local_1 = (bool)0;
     bool local_2 = (bool)0;
 
-    uint i_1 = gid.x;
+    uint i_3 = gid.x;
     uint _e4 = params.width;
     uint _e7 = params.height;
-    if ((i_1 >= (_e4 * _e7))) {
+    if ((i_3 >= (_e4 * _e7))) {
         return;
     }
     uint _e13 = params.depth;
     if ((_e13 == 0u)) {
         uint _e18 = params.seed;
         uint _e21 = params.pass_index;
-        const uint _e22 = path_stream(_e18, i_1, _e21);
+        const uint _e22 = path_stream(_e18, i_3, _e21);
         h = _e22;
         uint _e26 = params.width;
         const float _e28 = next_uniform(h);
-        const float _e29 = jittered_pixel(naga_mod(i_1, _e26), _e28);
+        const float _e29 = jittered_pixel(naga_mod(i_3, _e26), _e28);
         uint _e32 = params.width;
         const float _e34 = next_uniform(h);
-        const float _e35 = jittered_pixel(naga_div(i_1, _e32), _e34);
+        const float _e35 = jittered_pixel(naga_div(i_3, _e32), _e34);
         float3 _e39 = params.cam_pos;
         st.origin = _e39;
         float3 _e43 = params.cam_forward;
@@ -1235,7 +1280,7 @@ void main(uint3 gid : SV_DispatchThreadID)
         float3 _e71 = params.cam_pos;
         st.prev = _e71;
     } else {
-        GpuPathState _e74 = ConstructGpuPathState(asfloat(paths.Load3(i_1*112+0)), asuint(paths.Load(i_1*112+12)), asfloat(paths.Load3(i_1*112+16)), asuint(paths.Load(i_1*112+28)), asfloat(paths.Load3(i_1*112+32)), asfloat(paths.Load(i_1*112+44)), asfloat(paths.Load3(i_1*112+48)), asuint(paths.Load(i_1*112+60)), asfloat(paths.Load3(i_1*112+64)), asuint(paths.Load(i_1*112+76)), asfloat(paths.Load3(i_1*112+80)), asuint(paths.Load(i_1*112+92)), asfloat(paths.Load4(i_1*112+96)));
+        GpuPathState _e74 = ConstructGpuPathState(asfloat(paths.Load3(i_3*112+0)), asuint(paths.Load(i_3*112+12)), asfloat(paths.Load3(i_3*112+16)), asuint(paths.Load(i_3*112+28)), asfloat(paths.Load3(i_3*112+32)), asfloat(paths.Load(i_3*112+44)), asfloat(paths.Load3(i_3*112+48)), asuint(paths.Load(i_3*112+60)), asfloat(paths.Load3(i_3*112+64)), asuint(paths.Load(i_3*112+76)), asfloat(paths.Load3(i_3*112+80)), asuint(paths.Load(i_3*112+92)), asfloat(paths.Load4(i_3*112+96)));
         st = _e74;
     }
     v.alive = 0u;
@@ -1244,16 +1289,16 @@ void main(uint3 gid : SV_DispatchThreadID)
         GpuPathVertex _e84 = v;
         {
             GpuPathVertex _value3 = _e84;
-            vertices_.Store3(i_1*80+0, asuint(_value3.position));
-            vertices_.Store(i_1*80+12, asuint(_value3.alive));
-            vertices_.Store3(i_1*80+16, asuint(_value3.normal));
-            vertices_.Store(i_1*80+28, asuint(_value3.material));
-            vertices_.Store3(i_1*80+32, asuint(_value3.weight));
-            vertices_.Store(i_1*80+44, asuint(_value3.pad1_));
-            vertices_.Store3(i_1*80+48, asuint(_value3.gnormal));
-            vertices_.Store(i_1*80+60, asuint(_value3.pad2_));
-            vertices_.Store3(i_1*80+64, asuint(_value3.wo));
-            vertices_.Store(i_1*80+76, asuint(_value3.pad3_));
+            vertices_.Store3(i_3*80+0, asuint(_value3.position));
+            vertices_.Store(i_3*80+12, asuint(_value3.alive));
+            vertices_.Store3(i_3*80+16, asuint(_value3.normal));
+            vertices_.Store(i_3*80+28, asuint(_value3.material));
+            vertices_.Store3(i_3*80+32, asuint(_value3.weight));
+            vertices_.Store(i_3*80+44, asuint(_value3.pad1_));
+            vertices_.Store3(i_3*80+48, asuint(_value3.gnormal));
+            vertices_.Store(i_3*80+60, asuint(_value3.pad2_));
+            vertices_.Store3(i_3*80+64, asuint(_value3.wo));
+            vertices_.Store(i_3*80+76, asuint(_value3.pad3_));
         }
         return;
     }
@@ -1266,33 +1311,33 @@ void main(uint3 gid : SV_DispatchThreadID)
         GpuPathState _e102 = st;
         {
             GpuPathState _value3 = _e102;
-            paths.Store3(i_1*112+0, asuint(_value3.origin));
-            paths.Store(i_1*112+12, asuint(_value3.alive));
-            paths.Store3(i_1*112+16, asuint(_value3.dir));
-            paths.Store(i_1*112+28, asuint(_value3.rng));
-            paths.Store3(i_1*112+32, asuint(_value3.beta));
-            paths.Store(i_1*112+44, asuint(_value3.pdf_bsdf));
-            paths.Store3(i_1*112+48, asuint(_value3.prev));
-            paths.Store(i_1*112+60, asuint(_value3.pad));
-            paths.Store3(i_1*112+64, asuint(_value3.prev_normal));
-            paths.Store(i_1*112+76, asuint(_value3.pad2_));
-            paths.Store3(i_1*112+80, asuint(_value3.prev_r));
-            paths.Store(i_1*112+92, asuint(_value3.pad3_));
-            paths.Store4(i_1*112+96, asuint(_value3.prev_lobe));
+            paths.Store3(i_3*112+0, asuint(_value3.origin));
+            paths.Store(i_3*112+12, asuint(_value3.alive));
+            paths.Store3(i_3*112+16, asuint(_value3.dir));
+            paths.Store(i_3*112+28, asuint(_value3.rng));
+            paths.Store3(i_3*112+32, asuint(_value3.beta));
+            paths.Store(i_3*112+44, asuint(_value3.pdf_bsdf));
+            paths.Store3(i_3*112+48, asuint(_value3.prev));
+            paths.Store(i_3*112+60, asuint(_value3.pad));
+            paths.Store3(i_3*112+64, asuint(_value3.prev_normal));
+            paths.Store(i_3*112+76, asuint(_value3.pad2_));
+            paths.Store3(i_3*112+80, asuint(_value3.prev_r));
+            paths.Store(i_3*112+92, asuint(_value3.pad3_));
+            paths.Store4(i_3*112+96, asuint(_value3.prev_lobe));
         }
         GpuPathVertex _e105 = v;
         {
             GpuPathVertex _value3 = _e105;
-            vertices_.Store3(i_1*80+0, asuint(_value3.position));
-            vertices_.Store(i_1*80+12, asuint(_value3.alive));
-            vertices_.Store3(i_1*80+16, asuint(_value3.normal));
-            vertices_.Store(i_1*80+28, asuint(_value3.material));
-            vertices_.Store3(i_1*80+32, asuint(_value3.weight));
-            vertices_.Store(i_1*80+44, asuint(_value3.pad1_));
-            vertices_.Store3(i_1*80+48, asuint(_value3.gnormal));
-            vertices_.Store(i_1*80+60, asuint(_value3.pad2_));
-            vertices_.Store3(i_1*80+64, asuint(_value3.wo));
-            vertices_.Store(i_1*80+76, asuint(_value3.pad3_));
+            vertices_.Store3(i_3*80+0, asuint(_value3.position));
+            vertices_.Store(i_3*80+12, asuint(_value3.alive));
+            vertices_.Store3(i_3*80+16, asuint(_value3.normal));
+            vertices_.Store(i_3*80+28, asuint(_value3.material));
+            vertices_.Store3(i_3*80+32, asuint(_value3.weight));
+            vertices_.Store(i_3*80+44, asuint(_value3.pad1_));
+            vertices_.Store3(i_3*80+48, asuint(_value3.gnormal));
+            vertices_.Store(i_3*80+60, asuint(_value3.pad2_));
+            vertices_.Store3(i_3*80+64, asuint(_value3.wo));
+            vertices_.Store(i_3*80+76, asuint(_value3.pad3_));
         }
         return;
     }
@@ -1321,168 +1366,168 @@ void main(uint3 gid : SV_DispatchThreadID)
         float _e161 = st.pdf_bsdf;
         if ((_e161 > 0.0)) {
             uint _e168 = asuint(light_leaf.Load(tri.light*4));
-            BshNode leaf = ConstructBshNode(asfloat(bsh_nodes.Load3(_e168*32+0)), asfloat(bsh_nodes.Load(_e168*32+12)), asuint(bsh_nodes.Load(_e168*32+16)), asuint(bsh_nodes.Load(_e168*32+20)), asuint(bsh_nodes.Load(_e168*32+24)), asfloat(bsh_nodes.Load(_e168*32+28)));
-            float4 _e172 = st.prev_lobe;
-            const float4 _e173 = range_lobe(_e172);
-            float3 _e175 = st.prev;
-            float3 _e177 = st.prev_r;
-            const bool _e178 = bsh_reaches(leaf, _e175, _e177, _e173);
-            float _e180 = st.pdf_bsdf;
-            float3 _e183 = st.prev;
-            float3 _e185 = st.prev_normal;
-            float3 _e187 = st.prev_r;
-            float4 _e189 = st.prev_lobe;
-            uint _e192 = asuint(candidates.Load(i_1*4));
-            const float _e193 = light_pdf(tri.light, _e183, _e185, _e187, _e189, _e173, x_8, _e192, _e178);
-            const float _e194 = mis_weight(_e180, _e193);
-            w = _e194;
+            const BshNode _e169 = bsh_range_leaf(BSH, _e168);
+            float4 _e171 = st.prev_lobe;
+            const float4 _e172 = range_lobe(_e171);
+            float3 _e174 = st.prev;
+            float3 _e176 = st.prev_r;
+            const bool _e177 = bsh_reaches(_e169, _e174, _e176, _e172);
+            float _e179 = st.pdf_bsdf;
+            float3 _e182 = st.prev;
+            float3 _e184 = st.prev_normal;
+            float3 _e186 = st.prev_r;
+            float4 _e188 = st.prev_lobe;
+            uint _e191 = asuint(candidates.Load(i_3*4));
+            const float _e192 = light_pdf(tri.light, _e182, _e184, _e186, _e188, _e172, x_8, _e191, _e177);
+            const float _e193 = mis_weight(_e179, _e192);
+            w = _e193;
         }
-        float3 _e196 = st.beta;
-        float3 _e201 = asfloat(lights.Load3(48+tri.light*64));
-        float _e203 = w;
-        float3 add = ((_e196 * _e201) * _e203);
-        const bool _e205 = finite3_(add);
-        if (_e205) {
-            float4 _e208 = asfloat(radiance.Load4(i_1*16));
-            radiance.Store4(i_1*16, asuint((_e208 + float4(add, 0.0))));
+        float3 _e195 = st.beta;
+        float3 _e200 = asfloat(lights.Load3(48+tri.light*64));
+        float _e202 = w;
+        float3 add = ((_e195 * _e200) * _e202);
+        const bool _e204 = finite3_(add);
+        if (_e204) {
+            float4 _e207 = asfloat(radiance.Load4(i_3*16));
+            radiance.Store4(i_3*16, asuint((_e207 + float4(add, 0.0))));
         }
     }
-    uint _e214 = params.depth;
-    uint _e217 = params.max_depth;
-    if ((_e214 >= _e217)) {
+    uint _e213 = params.depth;
+    uint _e216 = params.max_depth;
+    if ((_e213 >= _e216)) {
         st.alive = 0u;
-        GpuPathState _e223 = st;
+        GpuPathState _e222 = st;
         {
-            GpuPathState _value3 = _e223;
-            paths.Store3(i_1*112+0, asuint(_value3.origin));
-            paths.Store(i_1*112+12, asuint(_value3.alive));
-            paths.Store3(i_1*112+16, asuint(_value3.dir));
-            paths.Store(i_1*112+28, asuint(_value3.rng));
-            paths.Store3(i_1*112+32, asuint(_value3.beta));
-            paths.Store(i_1*112+44, asuint(_value3.pdf_bsdf));
-            paths.Store3(i_1*112+48, asuint(_value3.prev));
-            paths.Store(i_1*112+60, asuint(_value3.pad));
-            paths.Store3(i_1*112+64, asuint(_value3.prev_normal));
-            paths.Store(i_1*112+76, asuint(_value3.pad2_));
-            paths.Store3(i_1*112+80, asuint(_value3.prev_r));
-            paths.Store(i_1*112+92, asuint(_value3.pad3_));
-            paths.Store4(i_1*112+96, asuint(_value3.prev_lobe));
+            GpuPathState _value3 = _e222;
+            paths.Store3(i_3*112+0, asuint(_value3.origin));
+            paths.Store(i_3*112+12, asuint(_value3.alive));
+            paths.Store3(i_3*112+16, asuint(_value3.dir));
+            paths.Store(i_3*112+28, asuint(_value3.rng));
+            paths.Store3(i_3*112+32, asuint(_value3.beta));
+            paths.Store(i_3*112+44, asuint(_value3.pdf_bsdf));
+            paths.Store3(i_3*112+48, asuint(_value3.prev));
+            paths.Store(i_3*112+60, asuint(_value3.pad));
+            paths.Store3(i_3*112+64, asuint(_value3.prev_normal));
+            paths.Store(i_3*112+76, asuint(_value3.pad2_));
+            paths.Store3(i_3*112+80, asuint(_value3.prev_r));
+            paths.Store(i_3*112+92, asuint(_value3.pad3_));
+            paths.Store4(i_3*112+96, asuint(_value3.prev_lobe));
         }
-        GpuPathVertex _e226 = v;
+        GpuPathVertex _e225 = v;
         {
-            GpuPathVertex _value3 = _e226;
-            vertices_.Store3(i_1*80+0, asuint(_value3.position));
-            vertices_.Store(i_1*80+12, asuint(_value3.alive));
-            vertices_.Store3(i_1*80+16, asuint(_value3.normal));
-            vertices_.Store(i_1*80+28, asuint(_value3.material));
-            vertices_.Store3(i_1*80+32, asuint(_value3.weight));
-            vertices_.Store(i_1*80+44, asuint(_value3.pad1_));
-            vertices_.Store3(i_1*80+48, asuint(_value3.gnormal));
-            vertices_.Store(i_1*80+60, asuint(_value3.pad2_));
-            vertices_.Store3(i_1*80+64, asuint(_value3.wo));
-            vertices_.Store(i_1*80+76, asuint(_value3.pad3_));
+            GpuPathVertex _value3 = _e225;
+            vertices_.Store3(i_3*80+0, asuint(_value3.position));
+            vertices_.Store(i_3*80+12, asuint(_value3.alive));
+            vertices_.Store3(i_3*80+16, asuint(_value3.normal));
+            vertices_.Store(i_3*80+28, asuint(_value3.material));
+            vertices_.Store3(i_3*80+32, asuint(_value3.weight));
+            vertices_.Store(i_3*80+44, asuint(_value3.pad1_));
+            vertices_.Store3(i_3*80+48, asuint(_value3.gnormal));
+            vertices_.Store(i_3*80+60, asuint(_value3.pad2_));
+            vertices_.Store3(i_3*80+64, asuint(_value3.wo));
+            vertices_.Store(i_3*80+76, asuint(_value3.pad3_));
         }
         return;
     }
     GpuMaterial m_2 = ConstructGpuMaterial(asfloat(materials.Load3(tri.material*48+0)), asfloat(materials.Load(tri.material*48+12)), asfloat(materials.Load3(tri.material*48+16)), asfloat(materials.Load(tri.material*48+28)), asfloat(materials.Load3(tri.material*48+32)), asfloat(materials.Load(tri.material*48+44)));
-    float3 _e232 = st.dir;
-    float3 wo_1 = -(_e232);
-    const float4 _e240 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, dot(_e147, wo_1));
+    float3 _e231 = st.dir;
+    float3 wo_1 = -(_e231);
+    const float4 _e239 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, dot(_e147, wo_1));
     v.position = x_8;
     v.normal = _e147;
     v.material = tri.material;
     v.gnormal = _e123;
-    float3 _e248 = st.beta;
-    v.weight = _e248;
+    float3 _e247 = st.beta;
+    v.weight = _e247;
     v.wo = wo_1;
     v.alive = 1u;
-    GpuPathVertex _e254 = v;
+    GpuPathVertex _e253 = v;
     {
-        GpuPathVertex _value2 = _e254;
-        vertices_.Store3(i_1*80+0, asuint(_value2.position));
-        vertices_.Store(i_1*80+12, asuint(_value2.alive));
-        vertices_.Store3(i_1*80+16, asuint(_value2.normal));
-        vertices_.Store(i_1*80+28, asuint(_value2.material));
-        vertices_.Store3(i_1*80+32, asuint(_value2.weight));
-        vertices_.Store(i_1*80+44, asuint(_value2.pad1_));
-        vertices_.Store3(i_1*80+48, asuint(_value2.gnormal));
-        vertices_.Store(i_1*80+60, asuint(_value2.pad2_));
-        vertices_.Store3(i_1*80+64, asuint(_value2.wo));
-        vertices_.Store(i_1*80+76, asuint(_value2.pad3_));
+        GpuPathVertex _value2 = _e253;
+        vertices_.Store3(i_3*80+0, asuint(_value2.position));
+        vertices_.Store(i_3*80+12, asuint(_value2.alive));
+        vertices_.Store3(i_3*80+16, asuint(_value2.normal));
+        vertices_.Store(i_3*80+28, asuint(_value2.material));
+        vertices_.Store3(i_3*80+32, asuint(_value2.weight));
+        vertices_.Store(i_3*80+44, asuint(_value2.pad1_));
+        vertices_.Store3(i_3*80+48, asuint(_value2.gnormal));
+        vertices_.Store(i_3*80+60, asuint(_value2.pad2_));
+        vertices_.Store3(i_3*80+64, asuint(_value2.wo));
+        vertices_.Store(i_3*80+76, asuint(_value2.pad3_));
     }
-    uint _e256 = st.rng;
-    rng = _e256;
+    uint _e255 = st.rng;
+    rng = _e255;
+    const float _e257 = next_uniform(rng);
     const float _e258 = next_uniform(rng);
-    const float _e259 = next_uniform(rng);
-    const float _e260 = specular_probability(_e240);
-    const float3 _e262 = bsdf_sample(_e147, wo_1, m_2.alpha, _e260, _e258, _e259);
-    const float _e264 = bsdf_pdf(_e147, wo_1, _e262, m_2.alpha, _e260);
-    const bool _e268 = has_specular(m_2.metallic, m_2.f0_, m_2.f90_);
-    if (_e268) {
-        float3 _e270 = st.beta;
-        const float3 _e276 = brdf_eval(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, _e147, wo_1, _e262);
-        st.beta = (_e270 * (_e276 * (dot(_e262, _e147) / _e264)));
+    const float _e259 = specular_probability(_e239);
+    const float3 _e261 = bsdf_sample(_e147, wo_1, m_2.alpha, _e259, _e257, _e258);
+    const float _e263 = bsdf_pdf(_e147, wo_1, _e261, m_2.alpha, _e259);
+    const bool _e267 = has_specular(m_2.metallic, m_2.f0_, m_2.f90_);
+    if (_e267) {
+        float3 _e269 = st.beta;
+        const float3 _e275 = brdf_eval(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, _e147, wo_1, _e261);
+        st.beta = (_e269 * (_e275 * (dot(_e261, _e147) / _e263)));
     } else {
-        float3 _e282 = st.beta;
-        st.beta = (_e282 * m_2.albedo);
+        float3 _e281 = st.beta;
+        st.beta = (_e281 * m_2.albedo);
     }
     st.prev = x_8;
     st.prev_normal = _e147;
-    const float3 _e288 = mirror_dir(_e147, wo_1);
-    st.prev_r = _e288;
-    st.prev_lobe = _e240;
-    st.pdf_bsdf = _e264;
-    float _e294 = params.eps;
-    st.origin = (x_8 + (_e123 * _e294));
-    st.dir = _e262;
-    const bool _e298 = continues_path(_e262, _e147, _e123);
-    if (!(!(_e298))) {
-        local_1 = !((_e264 > 0.0));
+    const float3 _e287 = mirror_dir(_e147, wo_1);
+    st.prev_r = _e287;
+    st.prev_lobe = _e239;
+    st.pdf_bsdf = _e263;
+    float _e293 = params.eps;
+    st.origin = (x_8 + (_e123 * _e293));
+    st.dir = _e261;
+    const bool _e297 = continues_path(_e261, _e147, _e123);
+    if (!(!(_e297))) {
+        local_1 = !((_e263 > 0.0));
     } else {
         local_1 = true;
     }
-    bool _e307 = local_1;
-    if (_e307) {
+    bool _e306 = local_1;
+    if (_e306) {
         st.alive = 0u;
     }
-    uint _e312 = params.depth;
-    const bool _e313 = plays_roulette(_e312);
-    if (_e313) {
-        uint _e317 = st.alive;
-        local_2 = (_e317 == 1u);
+    uint _e311 = params.depth;
+    const bool _e312 = plays_roulette(_e311);
+    if (_e312) {
+        uint _e316 = st.alive;
+        local_2 = (_e316 == 1u);
     } else {
         local_2 = false;
     }
-    bool _e321 = local_2;
-    if (_e321) {
-        float3 _e323 = st.beta;
-        const float _e324 = path_survival(_e323);
-        const float _e325 = next_uniform(rng);
-        if ((_e325 >= _e324)) {
+    bool _e320 = local_2;
+    if (_e320) {
+        float3 _e322 = st.beta;
+        const float _e323 = path_survival(_e322);
+        const float _e324 = next_uniform(rng);
+        if ((_e324 >= _e323)) {
             st.alive = 0u;
         } else {
-            float3 _e330 = st.beta;
-            st.beta = (_e330 / (_e324).xxx);
+            float3 _e329 = st.beta;
+            st.beta = (_e329 / (_e323).xxx);
         }
     }
-    uint _e334 = rng;
-    st.rng = _e334;
-    GpuPathState _e337 = st;
+    uint _e333 = rng;
+    st.rng = _e333;
+    GpuPathState _e336 = st;
     {
-        GpuPathState _value2 = _e337;
-        paths.Store3(i_1*112+0, asuint(_value2.origin));
-        paths.Store(i_1*112+12, asuint(_value2.alive));
-        paths.Store3(i_1*112+16, asuint(_value2.dir));
-        paths.Store(i_1*112+28, asuint(_value2.rng));
-        paths.Store3(i_1*112+32, asuint(_value2.beta));
-        paths.Store(i_1*112+44, asuint(_value2.pdf_bsdf));
-        paths.Store3(i_1*112+48, asuint(_value2.prev));
-        paths.Store(i_1*112+60, asuint(_value2.pad));
-        paths.Store3(i_1*112+64, asuint(_value2.prev_normal));
-        paths.Store(i_1*112+76, asuint(_value2.pad2_));
-        paths.Store3(i_1*112+80, asuint(_value2.prev_r));
-        paths.Store(i_1*112+92, asuint(_value2.pad3_));
-        paths.Store4(i_1*112+96, asuint(_value2.prev_lobe));
+        GpuPathState _value2 = _e336;
+        paths.Store3(i_3*112+0, asuint(_value2.origin));
+        paths.Store(i_3*112+12, asuint(_value2.alive));
+        paths.Store3(i_3*112+16, asuint(_value2.dir));
+        paths.Store(i_3*112+28, asuint(_value2.rng));
+        paths.Store3(i_3*112+32, asuint(_value2.beta));
+        paths.Store(i_3*112+44, asuint(_value2.pdf_bsdf));
+        paths.Store3(i_3*112+48, asuint(_value2.prev));
+        paths.Store(i_3*112+60, asuint(_value2.pad));
+        paths.Store3(i_3*112+64, asuint(_value2.prev_normal));
+        paths.Store(i_3*112+76, asuint(_value2.pad2_));
+        paths.Store3(i_3*112+80, asuint(_value2.prev_r));
+        paths.Store(i_3*112+92, asuint(_value2.pad3_));
+        paths.Store4(i_3*112+96, asuint(_value2.prev_lobe));
     }
     return;
 }

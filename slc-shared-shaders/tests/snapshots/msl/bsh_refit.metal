@@ -9,6 +9,7 @@ struct _mslBufferSizes {
     uint size2;
     uint size3;
     uint size4;
+    uint size5;
 };
 
 struct RefitParams {
@@ -67,6 +68,9 @@ constant float INV_PI = 0.31830987;
 constant float MIN_D2_ = 0.000000000001;
 constant float MAX_INTENSITY = 72057594000000000.0;
 constant uint BSH_NONE = 4294967295u;
+constant uint BSH_TAIL = 2147483648u;
+constant uint BSH_TAIL_BINS = 1024u;
+constant uint BSH_TAIL_MAX = 64u;
 constant uint RESERVOIR_FULL = 4294967295u;
 constant float GGX_ALPHA_MIN = 0.001;
 constant float RANGE_SCALE_MAX = 64.0;
@@ -161,6 +165,13 @@ float range_radius(
     return extent + metal::sqrt(r2_1);
 }
 
+uint bsh_tail_key(
+    float radius
+) {
+    uint _e1 = f32_to_bits(radius);
+    return (_e1 & 2147483647u) >> 21u;
+}
+
 float bsh_range_bound(
     BshNode node
 ) {
@@ -179,6 +190,16 @@ BshNode bsh_node(
 ) {
     BshNode _e4 = bsh_nodes[i];
     return _e4;
+}
+
+bool bsh_in_tail(
+    float extent_1,
+    float r2_2,
+    uint cut
+) {
+    float _e3 = range_radius(extent_1, r2_2);
+    uint _e4 = bsh_tail_key(_e3);
+    return _e4 >= cut;
 }
 
 metal::float4 bsh_pair_sphere(
@@ -257,8 +278,9 @@ kernel void main_(
 , constant RefitParams& params [[user(fake0)]]
 , device type_6 const& order [[user(fake0)]]
 , device type_7 const& bounds [[user(fake0)]]
-, device type_4 const& r2_2 [[user(fake0)]]
+, device type_4 const& r2_3 [[user(fake0)]]
 , device type_8& bsh_nodes [[user(fake0)]]
+, device type_6 const& tail [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
     uint _e4 = params.count;
@@ -269,21 +291,26 @@ kernel void main_(
     uint i_4 = order[_e9 + gid.x];
     BshNode node_1 = bsh_nodes[i_4];
     if (node_1.child == BSH_NONE) {
-        metal::float4 bound = bounds[node_1.light];
+        uint li = node_1.light & 2147483647u;
+        metal::float4 bound = bounds[li];
+        float _e29 = r2_3[li];
+        uint _e32 = tail[0];
+        bool _e33 = bsh_in_tail(bound.w, _e29, _e32);
         bsh_nodes[i_4].center = bound.xyz;
-        float _e35 = r2_2[node_1.light];
-        float _e36 = range_radius(bound.w, _e35);
-        bsh_nodes[i_4].radius = _e36;
+        float _e44 = r2_3[li];
+        float _e47 = range_radius(bound.w, _e33 ? 0.0 : _e44);
+        bsh_nodes[i_4].radius = _e47;
         bsh_nodes[i_4].extent = bound.w;
+        bsh_nodes[i_4].light = li | (_e33 ? BSH_TAIL : 0u);
         return;
     }
-    metal::float4 _e42 = bsh_children_sphere(BSH, i_4, bsh_nodes, _buffer_sizes);
-    bsh_nodes[i_4].center = _e42.xyz;
-    bsh_nodes[i_4].radius = _e42.w;
-    float _e56 = bsh_children_extent(BSH, i_4, _e42.xyz, bsh_nodes, _buffer_sizes);
-    bsh_nodes[i_4].extent = _e56;
-    float _e61 = bsh_children_range(BSH, i_4, bsh_nodes, _buffer_sizes);
-    uint _e62 = f32_to_bits(_e61);
-    bsh_nodes[i_4].light = _e62;
+    metal::float4 _e60 = bsh_children_sphere(BSH, i_4, bsh_nodes, _buffer_sizes);
+    bsh_nodes[i_4].center = _e60.xyz;
+    bsh_nodes[i_4].radius = _e60.w;
+    float _e74 = bsh_children_extent(BSH, i_4, _e60.xyz, bsh_nodes, _buffer_sizes);
+    bsh_nodes[i_4].extent = _e74;
+    float _e79 = bsh_children_range(BSH, i_4, bsh_nodes, _buffer_sizes);
+    uint _e80 = f32_to_bits(_e79);
+    bsh_nodes[i_4].light = _e80;
     return;
 }

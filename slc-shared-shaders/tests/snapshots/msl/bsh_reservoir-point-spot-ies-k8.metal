@@ -119,6 +119,9 @@ constant float INV_PI = 0.31830987;
 constant float MIN_D2_ = 0.000000000001;
 constant float MAX_INTENSITY = 72057594000000000.0;
 constant uint BSH_NONE = 4294967295u;
+constant uint BSH_TAIL = 2147483648u;
+constant uint BSH_TAIL_BINS = 1024u;
+constant uint BSH_TAIL_MAX = 64u;
 constant uint RESERVOIR_FULL = 4294967295u;
 constant float GGX_ALPHA_MIN = 0.001;
 constant float RANGE_SCALE_MAX = 64.0;
@@ -1043,10 +1046,14 @@ uint bsh_next_leaf_lobe(
             bool _e11 = bsh_reaches(_e10, x_10, r_4, rl_4);
             if (_e11) {
                 if (_e10.child == BSH_NONE) {
-                    uint _e15 = i_3;
-                    return _e15;
+                    if ((_e10.light & BSH_TAIL) == 0u) {
+                        uint _e20 = i_3;
+                        return _e20;
+                    }
+                    i_3 = _e10.next;
+                } else {
+                    i_3 = _e10.child;
                 }
-                i_3 = _e10.child;
             } else {
                 i_3 = _e10.next;
             }

@@ -168,6 +168,9 @@ constant float INV_PI = 0.31830987;
 constant float MIN_D2_ = 0.000000000001;
 constant float MAX_INTENSITY = 72057594000000000.0;
 constant uint BSH_NONE = 4294967295u;
+constant uint BSH_TAIL = 2147483648u;
+constant uint BSH_TAIL_BINS = 1024u;
+constant uint BSH_TAIL_MAX = 64u;
 constant uint RESERVOIR_FULL = 4294967295u;
 constant float GGX_ALPHA_MIN = 0.001;
 constant float RANGE_SCALE_MAX = 64.0;
@@ -442,8 +445,8 @@ float ggx_d(
         return 0.0;
     }
     float a2_1 = alpha * alpha;
-    float t = ((cos_h * cos_h) * a2_1) + sin2_h;
-    return (a2_1 * INV_PI) / (t * t);
+    float t_1 = ((cos_h * cos_h) * a2_1) + sin2_h;
+    return (a2_1 * INV_PI) / (t_1 * t_1);
 }
 
 float smith_root(
@@ -724,9 +727,9 @@ float ggx_vndf_pdf(
     metal::float3 hs_1 = wi_2 + wo;
     metal::float3 m_1 = hs_1 / metal::float3(metal::sqrt(metal::dot(hs_1, hs_1)));
     float _e28 = ggx_d(m_1.z, (m_1.x * m_1.x) + (m_1.y * m_1.y), alpha_8);
-    float t_1 = metal::sqrt(((alpha_8 * alpha_8) * ((wi_2.x * wi_2.x) + (wi_2.y * wi_2.y))) + (wi_2.z * wi_2.z));
+    float t_2 = metal::sqrt(((alpha_8 * alpha_8) * ((wi_2.x * wi_2.x) + (wi_2.y * wi_2.y))) + (wi_2.z * wi_2.z));
     float _e43 = bounded_vndf_k(wi_2, alpha_8);
-    return _e28 / (2.0 * ((_e43 * wi_2.z) + t_1));
+    return _e28 / (2.0 * ((_e43 * wi_2.z) + t_2));
 }
 
 metal::float3 bsdf_sample(
@@ -811,8 +814,8 @@ float range_scale_at(
     metal::float4 rl,
     float cos_t
 ) {
-    float t_2 = ((0.5 + (0.5 * cos_t)) * (rl.z - 1.0)) + 1.0;
-    return metal::clamp(rl.x + ((rl.y * rl.z) / (t_2 * t_2)), 1.0, rl.w * rl.w);
+    float t_3 = ((0.5 + (0.5 * cos_t)) * (rl.z - 1.0)) + 1.0;
+    return metal::clamp(rl.x + ((rl.y * rl.z) / (t_3 * t_3)), 1.0, rl.w * rl.w);
 }
 
 float range_scale_toward(
@@ -997,15 +1000,15 @@ float ray_triangle(
     if (_e42) {
         return -1.0;
     }
-    float t_3 = metal::dot(e2_1, q_1) * inv_1;
-    if (t_3 > t_min) {
-        local_20 = t_3 < t_max_1;
+    float t_4 = metal::dot(e2_1, q_1) * inv_1;
+    if (t_4 > t_min) {
+        local_20 = t_4 < t_max_1;
     } else {
         local_20 = false;
     }
     bool _e51 = local_20;
     if (_e51) {
-        return t_3;
+        return t_4;
     }
     return -1.0;
 }
@@ -1135,9 +1138,9 @@ GeoHit trace(
                     }
                     {
                         uint _e42 = i;
-                        GpuTriangle t_4 = geo_tris[_e42];
+                        GpuTriangle t_5 = geo_tris[_e42];
                         float _e49 = hit.t;
-                        float _e50 = ray_triangle(o_2, d_5, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e49);
+                        float _e50 = ray_triangle(o_2, d_5, t_5.v0_, t_5.v1_, t_5.v2_, t_min_1, _e49);
                         if (_e50 > 0.0) {
                             hit.t = _e50;
                             uint _e55 = i;
@@ -1254,6 +1257,16 @@ float light_pdf(
     return _e10;
 }
 
+BshNode bsh_node(
+    BshNodes nodes,
+    uint i_1,
+    device type_11 const& bsh_nodes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    BshNode _e4 = bsh_nodes[i_1];
+    return _e4;
+}
+
 float bsh_inner_scale(
     float a_6,
     metal::float3 v_9,
@@ -1313,6 +1326,41 @@ bool bsh_reaches(
     return _e67;
 }
 
+BshNode bsh_range_leaf(
+    BshNodes nodes_1,
+    uint i_2,
+    device type_11 const& bsh_nodes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint t = {};
+    BshNode _e2 = bsh_node(nodes_1, i_2, bsh_nodes, _buffer_sizes);
+    if ((_e2.light & BSH_TAIL) == 0u) {
+        return _e2;
+    }
+    uint li_4 = _e2.light & 2147483647u;
+    BshNode _e12 = bsh_node(nodes_1, 0u, bsh_nodes, _buffer_sizes);
+    t = _e12.next;
+    uint2 loop_bound_2 = uint2(4294967295u);
+    while(true) {
+        if (metal::all(loop_bound_2 == uint2(0u))) { break; }
+        loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
+        uint _e15 = t;
+        if (_e15 != BSH_NONE) {
+        } else {
+            break;
+        }
+        {
+            uint _e18 = t;
+            BshNode _e19 = bsh_node(nodes_1, _e18, bsh_nodes, _buffer_sizes);
+            if (_e19.light == li_4) {
+                return _e19;
+            }
+            t = _e19.next;
+        }
+    }
+    return _e2;
+}
+
 float next_uniform(
     thread uint& state
 ) {
@@ -1360,24 +1408,24 @@ kernel void main_(
     uint rng = {};
     bool local_1 = {};
     bool local_2 = {};
-    uint i_1 = gid.x;
+    uint i_3 = gid.x;
     uint _e4 = params.width;
     uint _e7 = params.height;
-    if (i_1 >= (_e4 * _e7)) {
+    if (i_3 >= (_e4 * _e7)) {
         return;
     }
     uint _e13 = params.depth;
     if (_e13 == 0u) {
         uint _e18 = params.seed;
         uint _e21 = params.pass_index;
-        uint _e22 = path_stream(_e18, i_1, _e21);
+        uint _e22 = path_stream(_e18, i_3, _e21);
         h = _e22;
         uint _e26 = params.width;
         float _e28 = next_uniform(h);
-        float _e29 = jittered_pixel(naga_mod(i_1, _e26), _e28);
+        float _e29 = jittered_pixel(naga_mod(i_3, _e26), _e28);
         uint _e32 = params.width;
         float _e34 = next_uniform(h);
-        float _e35 = jittered_pixel(naga_div(i_1, _e32), _e34);
+        float _e35 = jittered_pixel(naga_div(i_3, _e32), _e34);
         metal::float3 _e39 = params.cam_pos;
         st.origin = _e39;
         metal::float3 _e43 = params.cam_forward;
@@ -1395,14 +1443,14 @@ kernel void main_(
         metal::float3 _e71 = params.cam_pos;
         st.prev = _e71;
     } else {
-        GpuPathState _e74 = paths[i_1];
+        GpuPathState _e74 = paths[i_3];
         st = _e74;
     }
     v.alive = 0u;
     uint _e79 = st.alive;
     if (_e79 == 0u) {
         GpuPathVertex _e84 = v;
-        vertices[i_1] = _e84;
+        vertices[i_3] = _e84;
         return;
     }
     metal::float3 _e86 = st.origin;
@@ -1412,9 +1460,9 @@ kernel void main_(
     if (_e94.tri == NO_LIGHT) {
         st.alive = 0u;
         GpuPathState _e102 = st;
-        paths[i_1] = _e102;
+        paths[i_3] = _e102;
         GpuPathVertex _e105 = v;
-        vertices[i_1] = _e105;
+        vertices[i_3] = _e105;
         return;
     }
     GpuTriangle tri = geo_tris[_e94.tri];
@@ -1442,114 +1490,114 @@ kernel void main_(
         float _e161 = st.pdf_bsdf;
         if (_e161 > 0.0) {
             uint _e168 = light_leaf[tri.light];
-            BshNode leaf = bsh_nodes[_e168];
-            metal::float4 _e172 = st.prev_lobe;
-            metal::float4 _e173 = range_lobe(_e172);
-            metal::float3 _e175 = st.prev;
-            metal::float3 _e177 = st.prev_r;
-            bool _e178 = bsh_reaches(leaf, _e175, _e177, _e173);
-            float _e180 = st.pdf_bsdf;
-            metal::float3 _e183 = st.prev;
-            metal::float3 _e185 = st.prev_normal;
-            metal::float3 _e187 = st.prev_r;
-            metal::float4 _e189 = st.prev_lobe;
-            uint _e192 = candidates[i_1];
-            float _e193 = light_pdf(tri.light, _e183, _e185, _e187, _e189, _e173, x_8, _e192, _e178, light_cones, rt2_2, lights, _buffer_sizes);
-            float _e194 = mis_weight(_e180, _e193);
-            w = _e194;
+            BshNode _e169 = bsh_range_leaf(BSH, _e168, bsh_nodes, _buffer_sizes);
+            metal::float4 _e171 = st.prev_lobe;
+            metal::float4 _e172 = range_lobe(_e171);
+            metal::float3 _e174 = st.prev;
+            metal::float3 _e176 = st.prev_r;
+            bool _e177 = bsh_reaches(_e169, _e174, _e176, _e172);
+            float _e179 = st.pdf_bsdf;
+            metal::float3 _e182 = st.prev;
+            metal::float3 _e184 = st.prev_normal;
+            metal::float3 _e186 = st.prev_r;
+            metal::float4 _e188 = st.prev_lobe;
+            uint _e191 = candidates[i_3];
+            float _e192 = light_pdf(tri.light, _e182, _e184, _e186, _e188, _e172, x_8, _e191, _e177, light_cones, rt2_2, lights, _buffer_sizes);
+            float _e193 = mis_weight(_e179, _e192);
+            w = _e193;
         }
-        metal::float3 _e196 = st.beta;
-        metal::float3 _e201 = lights[tri.light].intensity;
-        float _e203 = w;
-        metal::float3 add = (_e196 * _e201) * _e203;
-        bool _e205 = finite3_(add);
-        if (_e205) {
-            metal::float4 _e208 = radiance[i_1];
-            radiance[i_1] = _e208 + metal::float4(add, 0.0);
+        metal::float3 _e195 = st.beta;
+        metal::float3 _e200 = lights[tri.light].intensity;
+        float _e202 = w;
+        metal::float3 add = (_e195 * _e200) * _e202;
+        bool _e204 = finite3_(add);
+        if (_e204) {
+            metal::float4 _e207 = radiance[i_3];
+            radiance[i_3] = _e207 + metal::float4(add, 0.0);
         }
     }
-    uint _e214 = params.depth;
-    uint _e217 = params.max_depth;
-    if (_e214 >= _e217) {
+    uint _e213 = params.depth;
+    uint _e216 = params.max_depth;
+    if (_e213 >= _e216) {
         st.alive = 0u;
-        GpuPathState _e223 = st;
-        paths[i_1] = _e223;
-        GpuPathVertex _e226 = v;
-        vertices[i_1] = _e226;
+        GpuPathState _e222 = st;
+        paths[i_3] = _e222;
+        GpuPathVertex _e225 = v;
+        vertices[i_3] = _e225;
         return;
     }
     GpuMaterial m_2 = materials[tri.material];
-    metal::float3 _e232 = st.dir;
-    metal::float3 wo_1 = -(_e232);
-    metal::float4 _e240 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, metal::dot(_e147, wo_1));
+    metal::float3 _e231 = st.dir;
+    metal::float3 wo_1 = -(_e231);
+    metal::float4 _e239 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, metal::dot(_e147, wo_1));
     v.position = x_8;
     v.normal = _e147;
     v.material = tri.material;
     v.gnormal = _e123;
-    metal::float3 _e248 = st.beta;
-    v.weight = _e248;
+    metal::float3 _e247 = st.beta;
+    v.weight = _e247;
     v.wo = wo_1;
     v.alive = 1u;
-    GpuPathVertex _e254 = v;
-    vertices[i_1] = _e254;
-    uint _e256 = st.rng;
-    rng = _e256;
+    GpuPathVertex _e253 = v;
+    vertices[i_3] = _e253;
+    uint _e255 = st.rng;
+    rng = _e255;
+    float _e257 = next_uniform(rng);
     float _e258 = next_uniform(rng);
-    float _e259 = next_uniform(rng);
-    float _e260 = specular_probability(_e240);
-    metal::float3 _e262 = bsdf_sample(_e147, wo_1, m_2.alpha, _e260, _e258, _e259);
-    float _e264 = bsdf_pdf(_e147, wo_1, _e262, m_2.alpha, _e260);
-    bool _e268 = has_specular(m_2.metallic, m_2.f0_, m_2.f90_);
-    if (_e268) {
-        metal::float3 _e270 = st.beta;
-        metal::float3 _e276 = brdf_eval(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, _e147, wo_1, _e262);
-        st.beta = _e270 * (_e276 * (metal::dot(_e262, _e147) / _e264));
+    float _e259 = specular_probability(_e239);
+    metal::float3 _e261 = bsdf_sample(_e147, wo_1, m_2.alpha, _e259, _e257, _e258);
+    float _e263 = bsdf_pdf(_e147, wo_1, _e261, m_2.alpha, _e259);
+    bool _e267 = has_specular(m_2.metallic, m_2.f0_, m_2.f90_);
+    if (_e267) {
+        metal::float3 _e269 = st.beta;
+        metal::float3 _e275 = brdf_eval(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, _e147, wo_1, _e261);
+        st.beta = _e269 * (_e275 * (metal::dot(_e261, _e147) / _e263));
     } else {
-        metal::float3 _e282 = st.beta;
-        st.beta = _e282 * m_2.albedo;
+        metal::float3 _e281 = st.beta;
+        st.beta = _e281 * m_2.albedo;
     }
     st.prev = x_8;
     st.prev_normal = _e147;
-    metal::float3 _e288 = mirror_dir(_e147, wo_1);
-    st.prev_r = _e288;
-    st.prev_lobe = _e240;
-    st.pdf_bsdf = _e264;
-    float _e294 = params.eps;
-    st.origin = x_8 + (_e123 * _e294);
-    st.dir = _e262;
-    bool _e298 = continues_path(_e262, _e147, _e123);
-    if (!(!(_e298))) {
-        local_1 = !((_e264 > 0.0));
+    metal::float3 _e287 = mirror_dir(_e147, wo_1);
+    st.prev_r = _e287;
+    st.prev_lobe = _e239;
+    st.pdf_bsdf = _e263;
+    float _e293 = params.eps;
+    st.origin = x_8 + (_e123 * _e293);
+    st.dir = _e261;
+    bool _e297 = continues_path(_e261, _e147, _e123);
+    if (!(!(_e297))) {
+        local_1 = !((_e263 > 0.0));
     } else {
         local_1 = true;
     }
-    bool _e307 = local_1;
-    if (_e307) {
+    bool _e306 = local_1;
+    if (_e306) {
         st.alive = 0u;
     }
-    uint _e312 = params.depth;
-    bool _e313 = plays_roulette(_e312);
-    if (_e313) {
-        uint _e317 = st.alive;
-        local_2 = _e317 == 1u;
+    uint _e311 = params.depth;
+    bool _e312 = plays_roulette(_e311);
+    if (_e312) {
+        uint _e316 = st.alive;
+        local_2 = _e316 == 1u;
     } else {
         local_2 = false;
     }
-    bool _e321 = local_2;
-    if (_e321) {
-        metal::float3 _e323 = st.beta;
-        float _e324 = path_survival(_e323);
-        float _e325 = next_uniform(rng);
-        if (_e325 >= _e324) {
+    bool _e320 = local_2;
+    if (_e320) {
+        metal::float3 _e322 = st.beta;
+        float _e323 = path_survival(_e322);
+        float _e324 = next_uniform(rng);
+        if (_e324 >= _e323) {
             st.alive = 0u;
         } else {
-            metal::float3 _e330 = st.beta;
-            st.beta = _e330 / metal::float3(_e324);
+            metal::float3 _e329 = st.beta;
+            st.beta = _e329 / metal::float3(_e323);
         }
     }
-    uint _e334 = rng;
-    st.rng = _e334;
-    GpuPathState _e337 = st;
-    paths[i_1] = _e337;
+    uint _e333 = rng;
+    st.rng = _e333;
+    GpuPathState _e336 = st;
+    paths[i_3] = _e336;
     return;
 }
