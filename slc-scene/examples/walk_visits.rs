@@ -2,12 +2,18 @@
 //! how many it would visit with two cheaper walks (issue 48, item 2), at
 //! the automatic ε, for Lambertian receivers (the plain sphere test):
 //!
-//! - `spheres`: the walk as built (`slc_core::bsh::walk::bsh_next_leaf`);
+//! - `spheres`: the walk without a range tail (`slc_core::bsh::walk::bsh_next_leaf`
+//!   over the light set's BSH);
 //! - `+ boxes`: each inner node also tested against the bounding box of its
 //!   lights' bounds `c ± R` padded by the largest range below it (every
 //!   light's range sphere lies in it, so the walk finds the same leaves);
 //! - `tail N`: the `N` largest range spheres left out of the tree (tested
-//!   flat, `N` tests per point, not counted here), alone and with the boxes.
+//!   flat, `N` tests per point, not counted here), alone and with the boxes
+//!   (the path tracers' tail, `Bsh::with_tail`, takes at most 16: whole
+//!   histogram bins);
+//! - `+ cones`: nodes whose emitter bounds (pbrt-v4's, unioned as the light
+//!   BVH does) send nothing toward the point also rejected, and all three;
+//!   `lit cand.` counts the candidates left (those of nonzero weight).
 //!
 //! One ξ set (seed 1, pass 0), 2,000 points uniform by area on the
 //! non-emissive surfaces. Counts, not times: the same on every machine.
@@ -16,9 +22,11 @@
 
 use glam::Vec3;
 use slc_core::bsh::{BSH_NONE, Bsh, BshNode};
+use slc_core::importance::{LightCone, emitter_cone};
 use slc_core::range::{RangeParams, random_range2};
 use slc_core::xi::xi_for;
 use slc_scene::error_bound::{TARGET_CANDIDATES, auto_error_bound};
+use slc_scene::light_bvh::LightBounds;
 use slc_scene::placement::{Stream, Surfaces};
 use slc_scene::pt::PtScene;
 use slc_scene::scene_file::SceneFile;
@@ -48,7 +56,12 @@ fn boxes(
 }
 
 /// Nodes visited and leaves found by the stackless walk at `x`.
-fn walk(nodes: &[BshNode], boxes: Option<&[(Vec3, Vec3, f32)]>, x: Vec3) -> (u32, u32) {
+fn walk(
+    nodes: &[BshNode],
+    boxes: Option<&[(Vec3, Vec3, f32)]>,
+    cones: Option<&[LightCone]>,
+    x: Vec3,
+) -> (u32, u32) {
     let (mut visits, mut found, mut i) = (0, 0, if nodes.is_empty() { BSH_NONE } else { 0 });
     while i != BSH_NONE {
         let n = nodes[i as usize];
@@ -57,6 +70,10 @@ fn walk(nodes: &[BshNode], boxes: Option<&[(Vec3, Vec3, f32)]>, x: Vec3) -> (u32
         if let Some(b) = boxes.filter(|_| hit && n.child != BSH_NONE) {
             let (lo, hi, r) = b[i as usize];
             hit = x.cmpge(lo - r).all() && x.cmple(hi + r).all();
+        }
+        if let Some(c) = cones.filter(|_| hit) {
+            let c = c[i as usize];
+            hit = emitter_cone(c.center, c.radius, c.axis, c.cos_o, x).x > c.cos_e;
         }
         i = match (hit, n.child == BSH_NONE) {
             (true, true) => {
@@ -78,7 +95,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         args.drain(k..k + 2);
     }
     println!(
-        "{:<40} {:>7} {:>9} {:>10} {:>9} {:>9} {:>9} {:>13}",
+        "{:<40} {:>7} {:>9} {:>10} {:>9} {:>9} {:>9} {:>13} {:>9} {:>13} {:>9}",
         "scene",
         "lights",
         "auto eps",
@@ -86,7 +103,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         "spheres",
         "+ boxes",
         format!("tail {tail}"),
-        "tail + boxes"
+        "tail + boxes",
+        "+ cones",
+        "all three",
+        "lit cand."
     );
     for path in args {
         let f = SceneFile::load(std::path::Path::new(&path))?;
@@ -109,23 +129,52 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         for &l in order.iter().take(tail) {
             r2_tail[l] = 0.0;
         }
+        // Each node's emitter bounds (pbrt-v4's, as the light BVH unions them).
+        let lb: Vec<LightBounds> = pts
+            .lights()
+            .iter()
+            .zip(pts.light_set().cones())
+            .map(|(l, c)| LightBounds::of_light(l, c))
+            .collect();
+        let nodes = pts.light_set().bsh().nodes();
+        let mut nb = vec![lb[0]; nodes.len()];
+        for i in (0..nodes.len()).rev() {
+            let n = nodes[i];
+            nb[i] = if n.child == BSH_NONE {
+                lb[n.light as usize]
+            } else {
+                nb[n.child as usize].union(&nb[nodes[n.child as usize].next as usize])
+            };
+        }
+        let cones: Vec<LightCone> = nb.iter().map(LightBounds::cone).collect();
         let surfaces = Surfaces::new(pts.scene())?;
         let mut row = Vec::new();
         let mut found_by = Vec::new();
         let mut candidates = 0.0;
-        for (ranges, with_boxes) in [(&r2, false), (&r2, true), (&r2_tail, false), (&r2_tail, true)]
-        {
+        for (ranges, with_boxes, with_cones) in [
+            (&r2, false, false),
+            (&r2, true, false),
+            (&r2_tail, false, false),
+            (&r2_tail, true, false),
+            (&r2, false, true),
+            (&r2_tail, true, true),
+        ] {
             let mut bsh: Bsh = pts.light_set().bsh().clone();
             bsh.refit(ranges)?;
             let b = boxes(bsh.nodes(), bounds, ranges);
             let (mut visits, mut found) = (0u64, 0u64);
             for k in 0..POINTS {
                 let x = surfaces.sample(&mut Stream::new(0x1234, k)).0;
-                let (v, c) = walk(bsh.nodes(), with_boxes.then_some(&b[..]), x);
+                let (v, c) = walk(
+                    bsh.nodes(),
+                    with_boxes.then_some(&b[..]),
+                    with_cones.then_some(&cones),
+                    x,
+                );
                 visits += v as u64;
                 found += c as u64;
             }
-            if std::ptr::eq(ranges, &r2) && !with_boxes {
+            if std::ptr::eq(ranges, &r2) && !with_boxes && !with_cones {
                 candidates = found as f64 / POINTS as f64;
             }
             row.push(visits as f64 / POINTS as f64);
@@ -141,12 +190,15 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             .file_stem()
             .map_or(path.clone(), |s| s.to_string_lossy().into());
         println!(
-            "{name:<40} {:>7} {eps:>9.4} {candidates:>10.2} {:>9.1} {:>9.1} {:>9.1} {:>13.1}",
+            "{name:<40} {:>7} {eps:>9.4} {candidates:>10.2} {:>9.1} {:>9.1} {:>9.1} {:>13.1} {:>9.1} {:>13.1} {:>9.2}",
             pts.lights().len(),
             row[0],
             row[1],
             row[2],
-            row[3]
+            row[3],
+            row[4],
+            row[5],
+            found_by[4] as f64 / POINTS as f64
         );
     }
     Ok(())
