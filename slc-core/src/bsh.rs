@@ -402,32 +402,53 @@ pub mod walk {
 
 /// The range tail's histogram as the shared cut reads it: a slice of
 /// [`BSH_TAIL_BINS`] counts on the CPU; the GPU's `bsh_tail` kernel
-/// declares `alias TailHist = u32` and the reader [`bsh_tail_bin`] over its
-/// atomic `tail_hist` buffer, then includes [`tail`]'s WGSL.
+/// declares `alias TailHist = u32` and the readers [`bsh_tail_bin`] and
+/// [`bsh_tail_chunk`] over a copy in workgroup memory, then includes
+/// [`tail`]'s WGSL.
 pub type TailHist<'a> = &'a [u32];
 
-/// Bin `b` of `hist` (the GPU kernel's reader: `atomicLoad(&tail_hist[b])`).
+/// Bin `b` of `hist`.
 #[inline]
 pub fn bsh_tail_bin(hist: TailHist, b: u32) -> u32 {
     hist[b as usize]
 }
 
+/// The lights in chunk `c` of `hist`: bins `c·32 .. c·32 + 32`
+/// ([`tail::BSH_TAIL_CHUNK`]; the GPU kernel sums them in parallel).
+#[inline]
+pub fn bsh_tail_chunk(hist: TailHist, c: u32) -> u32 {
+    let w = tail::BSH_TAIL_CHUNK as usize;
+    hist[c as usize * w..][..w].iter().sum()
+}
+
 /// The range tail's selection, written once for both backends (its WGSL
 /// is [`tail::WGSL`], which only the GPU's `bsh_tail` kernel includes).
 pub mod tail {
-    use super::{BSH_TAIL_BINS, TailHist, bsh_tail_bin};
+    use super::{BSH_TAIL_BINS, TailHist, bsh_tail_bin, bsh_tail_chunk};
+    use crate::wgsl::*;
 
     crate::shared! {
+        /// Bins per chunk of the cut's first, coarse scan (32 chunks).
+        pub const BSH_TAIL_CHUNK: u32 = 32;
+
         /// The range tail's cut: the lowest bin `b` such that the bins from
         /// `b` up hold at most `k` lights of the histogram `hist` (read
-        /// through `bsh_tail_bin`); [`BSH_TAIL_BINS`] when the top bin alone
-        /// holds more. The lights at or above it are the tail: the `k`
-        /// largest spheres or fewer (a bin is all in or all out), the same
-        /// on both backends.
+        /// through `bsh_tail_chunk` and `bsh_tail_bin`); [`BSH_TAIL_BINS`]
+        /// when the top bin alone holds more. The lights at or above it are
+        /// the tail: the `k` largest spheres or fewer (a bin is all in or
+        /// all out), the same on both backends. Whole chunks from the top
+        /// first, then the bins of the chunk that does not fit: at most 64
+        /// steps.
         pub fn bsh_tail_cut(hist: TailHist, k: u32) -> u32 {
-            let mut b: u32 = BSH_TAIL_BINS;
+            let mut c: u32 = BSH_TAIL_BINS / BSH_TAIL_CHUNK;
             let mut sum: u32 = 0;
-            while b > 0 && sum + bsh_tail_bin(hist, b - 1) <= k {
+            while c > 0 && sum + bsh_tail_chunk(hist, c - 1) <= k {
+                sum += bsh_tail_chunk(hist, c - 1);
+                c -= 1;
+            }
+            let mut b: u32 = c * BSH_TAIL_CHUNK;
+            let end: u32 = b - min(b, BSH_TAIL_CHUNK);
+            while b > end && sum + bsh_tail_bin(hist, b - 1) <= k {
                 sum += bsh_tail_bin(hist, b - 1);
                 b -= 1;
             }

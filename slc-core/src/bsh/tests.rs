@@ -432,3 +432,30 @@ fn tile_walk_lists_every_point_walk_in_order() {
         "{found} found, {listed} listed, {pruned} pruned"
     );
 }
+
+/// The two-level cut (whole chunks, then bins) is the lowest bin whose
+/// suffix holds at most `k` lights, as a bin-by-bin scan from the top finds
+/// it: sparse, dense, empty and all-fitting histograms.
+#[test]
+fn tail_cut_is_the_lowest_bin_that_fits() {
+    use rand_core::{RngCore, SeedableRng};
+    let mut rng = rand_pcg::Pcg32::seed_from_u64(31);
+    let naive = |h: &[u32], k: u32| {
+        let (mut b, mut sum) = (h.len(), 0);
+        while b > 0 && sum + h[b - 1] <= k {
+            sum += h[b - 1];
+            b -= 1;
+        }
+        b as u32
+    };
+    for case in 0..2000 {
+        let mut h = alloc::vec![0u32; BSH_TAIL_BINS as usize];
+        let (fill, max) = [(0, 0), (3, 5), (40, 3), (1024, 2), (200, 40)][case % 5];
+        for _ in 0..fill {
+            let b = rng.next_u32() as usize % h.len();
+            h[b] += rng.next_u32() % (max + 1);
+        }
+        let k = rng.next_u32() % 70;
+        assert_eq!(tail::bsh_tail_cut(&h, k), naive(&h, k), "case {case}, k {k}");
+    }
+}

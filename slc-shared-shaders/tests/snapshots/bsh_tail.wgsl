@@ -77,6 +77,7 @@ const BSH: u32 = 0u;
 const BSH_TILE_DEPTH: u32 = 8u;
 const BSH_TILE_SUBTREES: u32 = 256u;
 const HIST: u32 = 0u;
+const BSH_TAIL_CHUNK: u32 = 32u;
 
 @group(0) @binding(0) 
 var<uniform> params: TailParams;
@@ -90,6 +91,8 @@ var<storage, read_write> tail_hist: array<atomic<u32>>;
 var<storage, read_write> tail: array<atomic<u32>>;
 @group(0) @binding(5) 
 var<storage, read_write> bsh_nodes: array<BshNode>;
+var<workgroup> wg_bins: array<u32, 1024>;
+var<workgroup> wg_chunks: array<u32, 32>;
 
 fn f32_to_bits(x: f32) -> u32 {
     return bitcast<u32>(x);
@@ -124,22 +127,29 @@ fn bsh_rightmost_next(nodes_1: u32, i_1: u32) -> u32 {
     return _e8.next;
 }
 
-fn bsh_tail_bin(hist: u32, b_1: u32) -> u32 {
-    let _e4 = atomicLoad((&tail_hist[b_1]));
+fn bsh_tail_bin(hist: u32, b_3: u32) -> u32 {
+    let _e4 = wg_bins[b_3];
     return _e4;
 }
 
-fn bsh_tail_cut(hist_1: u32, k: u32) -> u32 {
-    var b_2: u32 = BSH_TAIL_BINS;
-    var sum: u32 = 0u;
+fn bsh_tail_chunk(hist_1: u32, c_2: u32) -> u32 {
+    let _e4 = wg_chunks[c_2];
+    return _e4;
+}
+
+fn bsh_tail_cut(hist_2: u32, k: u32) -> u32 {
+    var c_3: u32 = 32u;
+    var sum_1: u32 = 0u;
     var local_2: bool;
+    var b_4: u32;
+    var local_3: bool;
 
     loop {
-        let _e6 = b_2;
+        let _e6 = c_3;
         if (_e6 > 0u) {
-            let _e11 = sum;
-            let _e12 = b_2;
-            let _e15 = bsh_tail_bin(hist_1, (_e12 - 1u));
+            let _e11 = sum_1;
+            let _e12 = c_3;
+            let _e15 = bsh_tail_chunk(hist_2, (_e12 - 1u));
             local_2 = ((_e11 + _e15) <= k);
         } else {
             local_2 = false;
@@ -150,16 +160,45 @@ fn bsh_tail_cut(hist_1: u32, k: u32) -> u32 {
             break;
         }
         {
-            let _e20 = sum;
-            let _e21 = b_2;
-            let _e24 = bsh_tail_bin(hist_1, (_e21 - 1u));
-            sum = (_e20 + _e24);
-            let _e26 = b_2;
-            b_2 = (_e26 - 1u);
+            let _e20 = sum_1;
+            let _e21 = c_3;
+            let _e24 = bsh_tail_chunk(hist_2, (_e21 - 1u));
+            sum_1 = (_e20 + _e24);
+            let _e26 = c_3;
+            c_3 = (_e26 - 1u);
         }
     }
-    let _e29 = b_2;
-    return _e29;
+    let _e29 = c_3;
+    b_4 = (_e29 * BSH_TAIL_CHUNK);
+    let _e33 = b_4;
+    let _e34 = b_4;
+    let end = (_e33 - min(_e34, BSH_TAIL_CHUNK));
+    loop {
+        let _e38 = b_4;
+        if (_e38 > end) {
+            let _e42 = sum_1;
+            let _e43 = b_4;
+            let _e46 = bsh_tail_bin(hist_2, (_e43 - 1u));
+            local_3 = ((_e42 + _e46) <= k);
+        } else {
+            local_3 = false;
+        }
+        let _e50 = local_3;
+        if _e50 {
+        } else {
+            break;
+        }
+        {
+            let _e51 = sum_1;
+            let _e52 = b_4;
+            let _e55 = bsh_tail_bin(hist_2, (_e52 - 1u));
+            sum_1 = (_e51 + _e55);
+            let _e57 = b_4;
+            b_4 = (_e57 - 1u);
+        }
+    }
+    let _e60 = b_4;
+    return _e60;
 }
 
 fn tail_light(s_1: u32) -> u32 {
@@ -169,76 +208,136 @@ fn tail_light(s_1: u32) -> u32 {
 
 @compute @workgroup_size(64, 1, 1) 
 fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
-    var local: bool;
     var b: u32;
-    var a: u32 = 1u;
     var c: u32;
+    var sum: u32;
+    var b_1: u32;
+    var local: bool;
+    var b_2: u32;
+    var a: u32 = 1u;
+    var c_1: u32;
     var local_1: bool;
     var s: u32 = 0u;
     var n: u32 = 0u;
 
     let i_2 = gid.x;
     let _e4 = params.stage;
-    switch _e4 {
-        case 0u: {
-            let _e7 = params.count;
-            if (i_2 < _e7) {
-                let _e13 = bounds[i_2].w;
-                let _e16 = r2_2[i_2];
-                let _e17 = range_radius(_e13, _e16);
-                let _e18 = bsh_tail_key(_e17);
-                let _e21 = atomicAdd((&tail_hist[_e18]), 1u);
-                return;
+    if (_e4 == 1u) {
+        b = i_2;
+        loop {
+            let _e8 = b;
+            if (_e8 < BSH_TAIL_BINS) {
             } else {
-                return;
+                break;
+            }
+            {
+                let _e12 = b;
+                let _e15 = b;
+                let _e17 = atomicLoad((&tail_hist[_e15]));
+                wg_bins[_e12] = _e17;
+            }
+            continuing {
+                let _e18 = b;
+                b = (_e18 + 64u);
             }
         }
-        case 1u: {
-            if (i_2 == 0u) {
-                let _e29 = params.k;
-                let _e30 = bsh_tail_cut(HIST, _e29);
-                atomicStore((&tail[0]), _e30);
-                atomicStore((&tail[1]), 0u);
+        workgroupBarrier();
+        c = i_2;
+        loop {
+            let _e22 = c;
+            if (_e22 < 32u) {
+            } else {
+                break;
+            }
+            {
+                sum = 0u;
+                b_1 = 0u;
+                loop {
+                    let _e29 = b_1;
+                    if (_e29 < BSH_TAIL_CHUNK) {
+                    } else {
+                        break;
+                    }
+                    {
+                        let _e32 = sum;
+                        let _e34 = c;
+                        let _e37 = b_1;
+                        let _e40 = wg_bins[((_e34 * BSH_TAIL_CHUNK) + _e37)];
+                        sum = (_e32 + _e40);
+                    }
+                    continuing {
+                        let _e43 = b_1;
+                        b_1 = (_e43 + 1u);
+                    }
+                }
+                let _e46 = c;
+                let _e48 = sum;
+                wg_chunks[_e46] = _e48;
+            }
+            continuing {
+                let _e49 = c;
+                c = (_e49 + 64u);
+            }
+        }
+        workgroupBarrier();
+        if (i_2 == 0u) {
+            let _e59 = params.k;
+            let _e60 = bsh_tail_cut(HIST, _e59);
+            atomicStore((&tail[0]), _e60);
+            atomicStore((&tail[1]), 0u);
+        }
+        return;
+    }
+    let _e66 = params.stage;
+    switch _e66 {
+        case 0u: {
+            let _e69 = params.count;
+            if (i_2 < _e69) {
+                let _e75 = bounds[i_2].w;
+                let _e78 = r2_2[i_2];
+                let _e79 = range_radius(_e75, _e78);
+                let _e80 = bsh_tail_key(_e79);
+                let _e83 = atomicAdd((&tail_hist[_e80]), 1u);
                 return;
             } else {
                 return;
             }
         }
         case 2u: {
-            let _e36 = params.count;
-            if (i_2 < _e36) {
-                let _e43 = bounds[i_2].w;
-                let _e46 = r2_2[i_2];
-                let _e49 = atomicLoad((&tail[0]));
-                let _e50 = bsh_in_tail(_e43, _e46, _e49);
-                local = _e50;
+            let _e86 = params.count;
+            if (i_2 < _e86) {
+                let _e93 = bounds[i_2].w;
+                let _e96 = r2_2[i_2];
+                let _e99 = atomicLoad((&tail[0]));
+                let _e100 = bsh_in_tail(_e93, _e96, _e99);
+                local = _e100;
             } else {
                 local = false;
             }
-            let _e52 = local;
-            if _e52 {
-                let _e58 = atomicAdd((&tail[1]), 1u);
-                atomicStore((&tail[(2u + _e58)]), i_2);
+            let _e102 = local;
+            if _e102 {
+                let _e108 = atomicAdd((&tail[1]), 1u);
+                atomicStore((&tail[(2u + _e108)]), i_2);
                 return;
             } else {
                 return;
             }
         }
         default: {
-            b = i_2;
+            b_2 = i_2;
             loop {
-                let _e62 = b;
-                if (_e62 < BSH_TAIL_BINS) {
+                let _e112 = b_2;
+                if (_e112 < BSH_TAIL_BINS) {
                 } else {
                     break;
                 }
                 {
-                    let _e66 = b;
-                    atomicStore((&tail_hist[_e66]), 0u);
+                    let _e116 = b_2;
+                    atomicStore((&tail_hist[_e116]), 0u);
                 }
                 continuing {
-                    let _e69 = b;
-                    b = (_e69 + 64u);
+                    let _e119 = b_2;
+                    b_2 = (_e119 + 64u);
                 }
             }
             if (i_2 != 0u) {
@@ -246,88 +345,88 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
             }
             let count = atomicLoad((&tail[1]));
             loop {
-                let _e79 = a;
-                if (_e79 < count) {
+                let _e129 = a;
+                if (_e129 < count) {
                 } else {
                     break;
                 }
                 {
-                    let _e81 = a;
-                    let _e82 = tail_light(_e81);
-                    let _e83 = a;
-                    c = _e83;
+                    let _e131 = a;
+                    let _e132 = tail_light(_e131);
+                    let _e133 = a;
+                    c_1 = _e133;
                     loop {
-                        let _e85 = c;
-                        if (_e85 > 0u) {
-                            let _e90 = c;
-                            let _e93 = tail_light((_e90 - 1u));
-                            local_1 = (_e93 > _e82);
+                        let _e135 = c_1;
+                        if (_e135 > 0u) {
+                            let _e140 = c_1;
+                            let _e143 = tail_light((_e140 - 1u));
+                            local_1 = (_e143 > _e132);
                         } else {
                             local_1 = false;
                         }
-                        let _e96 = local_1;
-                        if _e96 {
+                        let _e146 = local_1;
+                        if _e146 {
                         } else {
                             break;
                         }
                         {
-                            let _e99 = c;
-                            let _e102 = c;
-                            let _e105 = tail_light((_e102 - 1u));
-                            atomicStore((&tail[(2u + _e99)]), _e105);
-                            let _e106 = c;
-                            c = (_e106 - 1u);
+                            let _e149 = c_1;
+                            let _e152 = c_1;
+                            let _e155 = tail_light((_e152 - 1u));
+                            atomicStore((&tail[(2u + _e149)]), _e155);
+                            let _e156 = c_1;
+                            c_1 = (_e156 - 1u);
                         }
                     }
-                    let _e111 = c;
-                    atomicStore((&tail[(2u + _e111)]), _e82);
+                    let _e161 = c_1;
+                    atomicStore((&tail[(2u + _e161)]), _e132);
                 }
                 continuing {
-                    let _e115 = a;
-                    a = (_e115 + 1u);
+                    let _e165 = a;
+                    a = (_e165 + 1u);
                 }
             }
             loop {
-                let _e119 = s;
-                if (_e119 < count) {
+                let _e169 = s;
+                if (_e169 < count) {
                 } else {
                     break;
                 }
                 {
-                    let _e121 = s;
-                    let _e122 = tail_light(_e121);
-                    let b_3 = bounds[_e122];
-                    let _e128 = params.tree;
-                    let _e129 = s;
-                    let _e134 = s;
-                    let next = select(((_e128 + _e129) + 1u), BSH_NONE, ((_e134 + 1u) == count));
-                    let _e142 = params.tree;
-                    let _e143 = s;
-                    let _e150 = r2_2[_e122];
-                    let _e151 = range_radius(b_3.w, _e150);
-                    bsh_nodes[(_e142 + _e143)] = BshNode(b_3.xyz, _e151, BSH_NONE, next, _e122, b_3.w);
+                    let _e171 = s;
+                    let _e172 = tail_light(_e171);
+                    let b_5 = bounds[_e172];
+                    let _e178 = params.tree;
+                    let _e179 = s;
+                    let _e184 = s;
+                    let next = select(((_e178 + _e179) + 1u), BSH_NONE, ((_e184 + 1u) == count));
+                    let _e192 = params.tree;
+                    let _e193 = s;
+                    let _e200 = r2_2[_e172];
+                    let _e201 = range_radius(b_5.w, _e200);
+                    bsh_nodes[(_e192 + _e193)] = BshNode(b_5.xyz, _e201, BSH_NONE, next, _e172, b_5.w);
                 }
                 continuing {
-                    let _e156 = s;
-                    s = (_e156 + 1u);
+                    let _e206 = s;
+                    s = (_e206 + 1u);
                 }
             }
-            let _e160 = params.tree;
-            let first = select(_e160, BSH_NONE, (count == 0u));
+            let _e210 = params.tree;
+            let first = select(_e210, BSH_NONE, (count == 0u));
             loop {
-                let _e167 = n;
-                if (_e167 != BSH_NONE) {
+                let _e217 = n;
+                if (_e217 != BSH_NONE) {
                 } else {
                     break;
                 }
                 {
-                    let _e171 = n;
-                    bsh_nodes[_e171].next = first;
+                    let _e221 = n;
+                    bsh_nodes[_e221].next = first;
                 }
                 continuing {
-                    let _e175 = n;
-                    let _e176 = bsh_rightmost_next(BSH, _e175);
-                    n = _e176;
+                    let _e225 = n;
+                    let _e226 = bsh_rightmost_next(BSH, _e225);
+                    n = _e226;
                 }
             }
             return;

@@ -80,6 +80,7 @@ const uint BSH = 0u;
 const uint BSH_TILE_DEPTH = 8u;
 const uint BSH_TILE_SUBTREES = 256u;
 const uint HIST = 0u;
+const uint BSH_TAIL_CHUNK = 32u;
 
 layout(std140) uniform TailParams_block_0Compute { TailParams _group_0_binding_0_cs; };
 
@@ -92,6 +93,10 @@ layout(std430) buffer type_8_block_3Compute { uint _group_0_binding_3_cs[]; };
 layout(std430) buffer type_8_block_4Compute { uint _group_0_binding_4_cs[]; };
 
 layout(std430) buffer type_9_block_5Compute { BshNode _group_0_binding_5_cs[]; };
+
+shared uint wg_bins[1024];
+
+shared uint wg_chunks[32];
 
 
 uint f32_to_bits(float x) {
@@ -127,21 +132,28 @@ uint bsh_rightmost_next(uint nodes_1, uint i_1) {
     return _e8.next;
 }
 
-uint bsh_tail_bin(uint hist, uint b_1) {
-    uint _e4 = atomicOr(_group_0_binding_3_cs[b_1], 0u);
+uint bsh_tail_bin(uint hist, uint b_3) {
+    uint _e4 = wg_bins[b_3];
     return _e4;
 }
 
-uint bsh_tail_cut(uint hist_1, uint k) {
-    uint b_2 = BSH_TAIL_BINS;
-    uint sum = 0u;
+uint bsh_tail_chunk(uint hist_1, uint c_2) {
+    uint _e4 = wg_chunks[c_2];
+    return _e4;
+}
+
+uint bsh_tail_cut(uint hist_2, uint k) {
+    uint c_3 = 32u;
+    uint sum_1 = 0u;
     bool local_2 = false;
+    uint b_4 = 0u;
+    bool local_3 = false;
     while(true) {
-        uint _e6 = b_2;
+        uint _e6 = c_3;
         if ((_e6 > 0u)) {
-            uint _e11 = sum;
-            uint _e12 = b_2;
-            uint _e15 = bsh_tail_bin(hist_1, (_e12 - 1u));
+            uint _e11 = sum_1;
+            uint _e12 = c_3;
+            uint _e15 = bsh_tail_chunk(hist_2, (_e12 - 1u));
             local_2 = ((_e11 + _e15) <= k);
         } else {
             local_2 = false;
@@ -152,16 +164,45 @@ uint bsh_tail_cut(uint hist_1, uint k) {
             break;
         }
         {
-            uint _e20 = sum;
-            uint _e21 = b_2;
-            uint _e24 = bsh_tail_bin(hist_1, (_e21 - 1u));
-            sum = (_e20 + _e24);
-            uint _e26 = b_2;
-            b_2 = (_e26 - 1u);
+            uint _e20 = sum_1;
+            uint _e21 = c_3;
+            uint _e24 = bsh_tail_chunk(hist_2, (_e21 - 1u));
+            sum_1 = (_e20 + _e24);
+            uint _e26 = c_3;
+            c_3 = (_e26 - 1u);
         }
     }
-    uint _e29 = b_2;
-    return _e29;
+    uint _e29 = c_3;
+    b_4 = (_e29 * BSH_TAIL_CHUNK);
+    uint _e33 = b_4;
+    uint _e34 = b_4;
+    uint end = (_e33 - min(_e34, BSH_TAIL_CHUNK));
+    while(true) {
+        uint _e38 = b_4;
+        if ((_e38 > end)) {
+            uint _e42 = sum_1;
+            uint _e43 = b_4;
+            uint _e46 = bsh_tail_bin(hist_2, (_e43 - 1u));
+            local_3 = ((_e42 + _e46) <= k);
+        } else {
+            local_3 = false;
+        }
+        bool _e50 = local_3;
+        if (_e50) {
+        } else {
+            break;
+        }
+        {
+            uint _e51 = sum_1;
+            uint _e52 = b_4;
+            uint _e55 = bsh_tail_bin(hist_2, (_e52 - 1u));
+            sum_1 = (_e51 + _e55);
+            uint _e57 = b_4;
+            b_4 = (_e57 - 1u);
+        }
+    }
+    uint _e60 = b_4;
+    return _e60;
 }
 
 uint tail_light(uint s_1) {
@@ -170,37 +211,110 @@ uint tail_light(uint s_1) {
 }
 
 void main() {
+    if (gl_LocalInvocationID == uvec3(0u)) {
+        wg_bins = uint[1024](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
+        wg_chunks = uint[32](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
+    }
+    memoryBarrierShared();
+    barrier();
     uvec3 gid = gl_GlobalInvocationID;
-    bool local = false;
     uint b = 0u;
-    uint a = 1u;
     uint c = 0u;
+    uint sum = 0u;
+    uint b_1 = 0u;
+    bool local = false;
+    uint b_2 = 0u;
+    uint a = 1u;
+    uint c_1 = 0u;
     bool local_1 = false;
     uint s = 0u;
     uint n = 0u;
     uint i_2 = gid.x;
     uint _e4 = _group_0_binding_0_cs.stage;
-    switch(_e4) {
-        case 0u: {
-            uint _e7 = _group_0_binding_0_cs.count;
-            if ((i_2 < _e7)) {
-                float _e13 = _group_0_binding_1_cs[i_2].w;
-                float _e16 = _group_0_binding_2_cs[i_2];
-                float _e17 = range_radius(_e13, _e16);
-                uint _e18 = bsh_tail_key(_e17);
-                uint _e21 = atomicAdd(_group_0_binding_3_cs[_e18], 1u);
-                return;
-            } else {
-                return;
+    if ((_e4 == 1u)) {
+        b = i_2;
+        bool loop_init = true;
+        while(true) {
+            if (!loop_init) {
+                uint _e18 = b;
+                b = (_e18 + 64u);
             }
-            break;
+            loop_init = false;
+            uint _e8 = b;
+            if ((_e8 < BSH_TAIL_BINS)) {
+            } else {
+                break;
+            }
+            {
+                uint _e12 = b;
+                uint _e15 = b;
+                uint _e17 = atomicOr(_group_0_binding_3_cs[_e15], 0u);
+                wg_bins[_e12] = _e17;
+            }
         }
-        case 1u: {
-            if ((i_2 == 0u)) {
-                uint _e29 = _group_0_binding_0_cs.k;
-                uint _e30 = bsh_tail_cut(HIST, _e29);
-                atomicExchange(_group_0_binding_4_cs[0], _e30);
-                atomicExchange(_group_0_binding_4_cs[1], 0u);
+        memoryBarrierShared();
+        barrier();
+        c = i_2;
+        bool loop_init_1 = true;
+        while(true) {
+            if (!loop_init_1) {
+                uint _e49 = c;
+                c = (_e49 + 64u);
+            }
+            loop_init_1 = false;
+            uint _e22 = c;
+            if ((_e22 < 32u)) {
+            } else {
+                break;
+            }
+            {
+                sum = 0u;
+                b_1 = 0u;
+                bool loop_init_2 = true;
+                while(true) {
+                    if (!loop_init_2) {
+                        uint _e43 = b_1;
+                        b_1 = (_e43 + 1u);
+                    }
+                    loop_init_2 = false;
+                    uint _e29 = b_1;
+                    if ((_e29 < BSH_TAIL_CHUNK)) {
+                    } else {
+                        break;
+                    }
+                    {
+                        uint _e32 = sum;
+                        uint _e34 = c;
+                        uint _e37 = b_1;
+                        uint _e40 = wg_bins[((_e34 * BSH_TAIL_CHUNK) + _e37)];
+                        sum = (_e32 + _e40);
+                    }
+                }
+                uint _e46 = c;
+                uint _e48 = sum;
+                wg_chunks[_e46] = _e48;
+            }
+        }
+        memoryBarrierShared();
+        barrier();
+        if ((i_2 == 0u)) {
+            uint _e59 = _group_0_binding_0_cs.k;
+            uint _e60 = bsh_tail_cut(HIST, _e59);
+            atomicExchange(_group_0_binding_4_cs[0], _e60);
+            atomicExchange(_group_0_binding_4_cs[1], 0u);
+        }
+        return;
+    }
+    uint _e66 = _group_0_binding_0_cs.stage;
+    switch(_e66) {
+        case 0u: {
+            uint _e69 = _group_0_binding_0_cs.count;
+            if ((i_2 < _e69)) {
+                float _e75 = _group_0_binding_1_cs[i_2].w;
+                float _e78 = _group_0_binding_2_cs[i_2];
+                float _e79 = range_radius(_e75, _e78);
+                uint _e80 = bsh_tail_key(_e79);
+                uint _e83 = atomicAdd(_group_0_binding_3_cs[_e80], 1u);
                 return;
             } else {
                 return;
@@ -208,20 +322,20 @@ void main() {
             break;
         }
         case 2u: {
-            uint _e36 = _group_0_binding_0_cs.count;
-            if ((i_2 < _e36)) {
-                float _e43 = _group_0_binding_1_cs[i_2].w;
-                float _e46 = _group_0_binding_2_cs[i_2];
-                uint _e49 = atomicOr(_group_0_binding_4_cs[0], 0u);
-                bool _e50 = bsh_in_tail(_e43, _e46, _e49);
-                local = _e50;
+            uint _e86 = _group_0_binding_0_cs.count;
+            if ((i_2 < _e86)) {
+                float _e93 = _group_0_binding_1_cs[i_2].w;
+                float _e96 = _group_0_binding_2_cs[i_2];
+                uint _e99 = atomicOr(_group_0_binding_4_cs[0], 0u);
+                bool _e100 = bsh_in_tail(_e93, _e96, _e99);
+                local = _e100;
             } else {
                 local = false;
             }
-            bool _e52 = local;
-            if (_e52) {
-                uint _e58 = atomicAdd(_group_0_binding_4_cs[1], 1u);
-                atomicExchange(_group_0_binding_4_cs[(2u + _e58)], i_2);
+            bool _e102 = local;
+            if (_e102) {
+                uint _e108 = atomicAdd(_group_0_binding_4_cs[1], 1u);
+                atomicExchange(_group_0_binding_4_cs[(2u + _e108)], i_2);
                 return;
             } else {
                 return;
@@ -229,117 +343,117 @@ void main() {
             break;
         }
         default: {
-            b = i_2;
-            bool loop_init = true;
+            b_2 = i_2;
+            bool loop_init_3 = true;
             while(true) {
-                if (!loop_init) {
-                    uint _e69 = b;
-                    b = (_e69 + 64u);
+                if (!loop_init_3) {
+                    uint _e119 = b_2;
+                    b_2 = (_e119 + 64u);
                 }
-                loop_init = false;
-                uint _e62 = b;
-                if ((_e62 < BSH_TAIL_BINS)) {
+                loop_init_3 = false;
+                uint _e112 = b_2;
+                if ((_e112 < BSH_TAIL_BINS)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e66 = b;
-                    atomicExchange(_group_0_binding_3_cs[_e66], 0u);
+                    uint _e116 = b_2;
+                    atomicExchange(_group_0_binding_3_cs[_e116], 0u);
                 }
             }
             if ((i_2 != 0u)) {
                 return;
             }
             uint count = atomicOr(_group_0_binding_4_cs[1], 0u);
-            bool loop_init_1 = true;
+            bool loop_init_4 = true;
             while(true) {
-                if (!loop_init_1) {
-                    uint _e115 = a;
-                    a = (_e115 + 1u);
+                if (!loop_init_4) {
+                    uint _e165 = a;
+                    a = (_e165 + 1u);
                 }
-                loop_init_1 = false;
-                uint _e79 = a;
-                if ((_e79 < count)) {
+                loop_init_4 = false;
+                uint _e129 = a;
+                if ((_e129 < count)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e81 = a;
-                    uint _e82 = tail_light(_e81);
-                    uint _e83 = a;
-                    c = _e83;
+                    uint _e131 = a;
+                    uint _e132 = tail_light(_e131);
+                    uint _e133 = a;
+                    c_1 = _e133;
                     while(true) {
-                        uint _e85 = c;
-                        if ((_e85 > 0u)) {
-                            uint _e90 = c;
-                            uint _e93 = tail_light((_e90 - 1u));
-                            local_1 = (_e93 > _e82);
+                        uint _e135 = c_1;
+                        if ((_e135 > 0u)) {
+                            uint _e140 = c_1;
+                            uint _e143 = tail_light((_e140 - 1u));
+                            local_1 = (_e143 > _e132);
                         } else {
                             local_1 = false;
                         }
-                        bool _e96 = local_1;
-                        if (_e96) {
+                        bool _e146 = local_1;
+                        if (_e146) {
                         } else {
                             break;
                         }
                         {
-                            uint _e99 = c;
-                            uint _e102 = c;
-                            uint _e105 = tail_light((_e102 - 1u));
-                            atomicExchange(_group_0_binding_4_cs[(2u + _e99)], _e105);
-                            uint _e106 = c;
-                            c = (_e106 - 1u);
+                            uint _e149 = c_1;
+                            uint _e152 = c_1;
+                            uint _e155 = tail_light((_e152 - 1u));
+                            atomicExchange(_group_0_binding_4_cs[(2u + _e149)], _e155);
+                            uint _e156 = c_1;
+                            c_1 = (_e156 - 1u);
                         }
                     }
-                    uint _e111 = c;
-                    atomicExchange(_group_0_binding_4_cs[(2u + _e111)], _e82);
+                    uint _e161 = c_1;
+                    atomicExchange(_group_0_binding_4_cs[(2u + _e161)], _e132);
                 }
             }
-            bool loop_init_2 = true;
+            bool loop_init_5 = true;
             while(true) {
-                if (!loop_init_2) {
-                    uint _e156 = s;
-                    s = (_e156 + 1u);
+                if (!loop_init_5) {
+                    uint _e206 = s;
+                    s = (_e206 + 1u);
                 }
-                loop_init_2 = false;
-                uint _e119 = s;
-                if ((_e119 < count)) {
+                loop_init_5 = false;
+                uint _e169 = s;
+                if ((_e169 < count)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e121 = s;
-                    uint _e122 = tail_light(_e121);
-                    vec4 b_3 = _group_0_binding_1_cs[_e122];
-                    uint _e128 = _group_0_binding_0_cs.tree;
-                    uint _e129 = s;
-                    uint _e134 = s;
-                    uint next = (((_e134 + 1u) == count) ? BSH_NONE : ((_e128 + _e129) + 1u));
-                    uint _e142 = _group_0_binding_0_cs.tree;
-                    uint _e143 = s;
-                    float _e150 = _group_0_binding_2_cs[_e122];
-                    float _e151 = range_radius(b_3.w, _e150);
-                    _group_0_binding_5_cs[(_e142 + _e143)] = BshNode(b_3.xyz, _e151, BSH_NONE, next, _e122, b_3.w);
+                    uint _e171 = s;
+                    uint _e172 = tail_light(_e171);
+                    vec4 b_5 = _group_0_binding_1_cs[_e172];
+                    uint _e178 = _group_0_binding_0_cs.tree;
+                    uint _e179 = s;
+                    uint _e184 = s;
+                    uint next = (((_e184 + 1u) == count) ? BSH_NONE : ((_e178 + _e179) + 1u));
+                    uint _e192 = _group_0_binding_0_cs.tree;
+                    uint _e193 = s;
+                    float _e200 = _group_0_binding_2_cs[_e172];
+                    float _e201 = range_radius(b_5.w, _e200);
+                    _group_0_binding_5_cs[(_e192 + _e193)] = BshNode(b_5.xyz, _e201, BSH_NONE, next, _e172, b_5.w);
                 }
             }
-            uint _e160 = _group_0_binding_0_cs.tree;
-            uint first = ((count == 0u) ? BSH_NONE : _e160);
-            bool loop_init_3 = true;
+            uint _e210 = _group_0_binding_0_cs.tree;
+            uint first = ((count == 0u) ? BSH_NONE : _e210);
+            bool loop_init_6 = true;
             while(true) {
-                if (!loop_init_3) {
-                    uint _e175 = n;
-                    uint _e176 = bsh_rightmost_next(BSH, _e175);
-                    n = _e176;
+                if (!loop_init_6) {
+                    uint _e225 = n;
+                    uint _e226 = bsh_rightmost_next(BSH, _e225);
+                    n = _e226;
                 }
-                loop_init_3 = false;
-                uint _e167 = n;
-                if ((_e167 != BSH_NONE)) {
+                loop_init_6 = false;
+                uint _e217 = n;
+                if ((_e217 != BSH_NONE)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e171 = n;
-                    _group_0_binding_5_cs[_e171].next = first;
+                    uint _e221 = n;
+                    _group_0_binding_5_cs[_e221].next = first;
                 }
             }
             return;

@@ -77,6 +77,7 @@ static const uint BSH = 0u;
 static const uint BSH_TILE_DEPTH = 8u;
 static const uint BSH_TILE_SUBTREES = 256u;
 static const uint HIST = 0u;
+static const uint BSH_TAIL_CHUNK = 32u;
 
 cbuffer params : register(b0) { TailParams params; }
 ByteAddressBuffer bounds : register(t1);
@@ -84,6 +85,8 @@ ByteAddressBuffer r2_2 : register(t2);
 RWByteAddressBuffer tail_hist : register(u3);
 RWByteAddressBuffer tail : register(u4);
 RWByteAddressBuffer bsh_nodes : register(u5);
+groupshared uint wg_bins[1024];
+groupshared uint wg_chunks[32];
 
 uint f32_to_bits(float x)
 {
@@ -136,27 +139,35 @@ uint bsh_rightmost_next(uint nodes_1, uint i_1)
     return _e8.next;
 }
 
-uint bsh_tail_bin(uint hist, uint b_1)
+uint bsh_tail_bin(uint hist, uint b_3)
 {
-    uint _e4; tail_hist.InterlockedOr(b_1*4, 0, _e4);
+    uint _e4 = wg_bins[min(uint(b_3), 1023u)];
     return _e4;
 }
 
-uint bsh_tail_cut(uint hist_1, uint k)
+uint bsh_tail_chunk(uint hist_1, uint c_2)
 {
-    uint b_2 = BSH_TAIL_BINS;
-    uint sum = 0u;
+    uint _e4 = wg_chunks[min(uint(c_2), 31u)];
+    return _e4;
+}
+
+uint bsh_tail_cut(uint hist_2, uint k)
+{
+    uint c_3 = 32u;
+    uint sum_1 = 0u;
     bool local_2 = (bool)0;
+    uint b_4 = (uint)0;
+    bool local_3 = (bool)0;
 
     uint2 loop_bound = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound == uint2(0u, 0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        uint _e6 = b_2;
+        uint _e6 = c_3;
         if ((_e6 > 0u)) {
-            uint _e11 = sum;
-            uint _e12 = b_2;
-            const uint _e15 = bsh_tail_bin(hist_1, (_e12 - 1u));
+            uint _e11 = sum_1;
+            uint _e12 = c_3;
+            const uint _e15 = bsh_tail_chunk(hist_2, (_e12 - 1u));
             local_2 = ((_e11 + _e15) <= k);
         } else {
             local_2 = false;
@@ -167,16 +178,48 @@ uint bsh_tail_cut(uint hist_1, uint k)
             break;
         }
         {
-            uint _e20 = sum;
-            uint _e21 = b_2;
-            const uint _e24 = bsh_tail_bin(hist_1, (_e21 - 1u));
-            sum = (_e20 + _e24);
-            uint _e26 = b_2;
-            b_2 = (_e26 - 1u);
+            uint _e20 = sum_1;
+            uint _e21 = c_3;
+            const uint _e24 = bsh_tail_chunk(hist_2, (_e21 - 1u));
+            sum_1 = (_e20 + _e24);
+            uint _e26 = c_3;
+            c_3 = (_e26 - 1u);
         }
     }
-    uint _e29 = b_2;
-    return _e29;
+    uint _e29 = c_3;
+    b_4 = (_e29 * BSH_TAIL_CHUNK);
+    uint _e33 = b_4;
+    uint _e34 = b_4;
+    uint end = (_e33 - min(_e34, BSH_TAIL_CHUNK));
+    uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
+    while(true) {
+        if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
+        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+        uint _e38 = b_4;
+        if ((_e38 > end)) {
+            uint _e42 = sum_1;
+            uint _e43 = b_4;
+            const uint _e46 = bsh_tail_bin(hist_2, (_e43 - 1u));
+            local_3 = ((_e42 + _e46) <= k);
+        } else {
+            local_3 = false;
+        }
+        bool _e50 = local_3;
+        if (_e50) {
+        } else {
+            break;
+        }
+        {
+            uint _e51 = sum_1;
+            uint _e52 = b_4;
+            const uint _e55 = bsh_tail_bin(hist_2, (_e52 - 1u));
+            sum_1 = (_e51 + _e55);
+            uint _e57 = b_4;
+            b_4 = (_e57 - 1u);
+        }
+    }
+    uint _e60 = b_4;
+    return _e60;
 }
 
 uint tail_light(uint s_1)
@@ -186,39 +229,118 @@ uint tail_light(uint s_1)
 }
 
 [numthreads(64, 1, 1)]
-void main(uint3 gid : SV_DispatchThreadID)
+void main(uint3 gid : SV_DispatchThreadID, uint local_invocation_index : SV_GroupIndex)
 {
-    bool local = (bool)0;
+    if (local_invocation_index == 0) {
+        wg_bins = (uint[1024])0;
+        wg_chunks = (uint[32])0;
+    }
+    GroupMemoryBarrierWithGroupSync();
     uint b = (uint)0;
-    uint a = 1u;
     uint c = (uint)0;
+    uint sum = (uint)0;
+    uint b_1 = (uint)0;
+    bool local = (bool)0;
+    uint b_2 = (uint)0;
+    uint a = 1u;
+    uint c_1 = (uint)0;
     bool local_1 = (bool)0;
     uint s = 0u;
     uint n = 0u;
 
     uint i_2 = gid.x;
     uint _e4 = params.stage;
-    switch(_e4) {
-        case 0u: {
-            uint _e7 = params.count;
-            if ((i_2 < _e7)) {
-                float _e13 = asfloat(bounds.Load(12+i_2*16));
-                float _e16 = asfloat(r2_2.Load(i_2*4));
-                const float _e17 = range_radius(_e13, _e16);
-                const uint _e18 = bsh_tail_key(_e17);
-                uint _e21; tail_hist.InterlockedAdd(_e18*4, 1u, _e21);
-                return;
-            } else {
-                return;
+    if ((_e4 == 1u)) {
+        b = i_2;
+        uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
+        bool loop_init = true;
+        while(true) {
+            if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
+            loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
+            if (!loop_init) {
+                uint _e18 = b;
+                b = (_e18 + 64u);
             }
-            break;
+            loop_init = false;
+            uint _e8 = b;
+            if ((_e8 < BSH_TAIL_BINS)) {
+            } else {
+                break;
+            }
+            {
+                uint _e12 = b;
+                uint _e15 = b;
+                uint _e17; tail_hist.InterlockedOr(_e15*4, 0, _e17);
+                wg_bins[min(uint(_e12), 1023u)] = _e17;
+            }
         }
-        case 1u: {
-            if ((i_2 == 0u)) {
-                uint _e29 = params.k;
-                const uint _e30 = bsh_tail_cut(HIST, _e29);
-                { uint dummy = 0; tail.InterlockedExchange(0, _e30, dummy); }
-                { uint dummy_1 = 0; tail.InterlockedExchange(4, 0u, dummy_1); }
+        GroupMemoryBarrierWithGroupSync();
+        c = i_2;
+        uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
+        bool loop_init_1 = true;
+        while(true) {
+            if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
+            loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+            if (!loop_init_1) {
+                uint _e49 = c;
+                c = (_e49 + 64u);
+            }
+            loop_init_1 = false;
+            uint _e22 = c;
+            if ((_e22 < 32u)) {
+            } else {
+                break;
+            }
+            {
+                sum = 0u;
+                b_1 = 0u;
+                uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
+                bool loop_init_2 = true;
+                while(true) {
+                    if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
+                    loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+                    if (!loop_init_2) {
+                        uint _e43 = b_1;
+                        b_1 = (_e43 + 1u);
+                    }
+                    loop_init_2 = false;
+                    uint _e29 = b_1;
+                    if ((_e29 < BSH_TAIL_CHUNK)) {
+                    } else {
+                        break;
+                    }
+                    {
+                        uint _e32 = sum;
+                        uint _e34 = c;
+                        uint _e37 = b_1;
+                        uint _e40 = wg_bins[min(uint(((_e34 * BSH_TAIL_CHUNK) + _e37)), 1023u)];
+                        sum = (_e32 + _e40);
+                    }
+                }
+                uint _e46 = c;
+                uint _e48 = sum;
+                wg_chunks[min(uint(_e46), 31u)] = _e48;
+            }
+        }
+        GroupMemoryBarrierWithGroupSync();
+        if ((i_2 == 0u)) {
+            uint _e59 = params.k;
+            const uint _e60 = bsh_tail_cut(HIST, _e59);
+            { uint dummy = 0; tail.InterlockedExchange(0, _e60, dummy); }
+            { uint dummy_1 = 0; tail.InterlockedExchange(4, 0u, dummy_1); }
+        }
+        return;
+    }
+    uint _e66 = params.stage;
+    switch(_e66) {
+        case 0u: {
+            uint _e69 = params.count;
+            if ((i_2 < _e69)) {
+                float _e75 = asfloat(bounds.Load(12+i_2*16));
+                float _e78 = asfloat(r2_2.Load(i_2*4));
+                const float _e79 = range_radius(_e75, _e78);
+                const uint _e80 = bsh_tail_key(_e79);
+                uint _e83; tail_hist.InterlockedAdd(_e80*4, 1u, _e83);
                 return;
             } else {
                 return;
@@ -226,20 +348,20 @@ void main(uint3 gid : SV_DispatchThreadID)
             break;
         }
         case 2u: {
-            uint _e36 = params.count;
-            if ((i_2 < _e36)) {
-                float _e43 = asfloat(bounds.Load(12+i_2*16));
-                float _e46 = asfloat(r2_2.Load(i_2*4));
-                uint _e49; tail.InterlockedOr(0, 0, _e49);
-                const bool _e50 = bsh_in_tail(_e43, _e46, _e49);
-                local = _e50;
+            uint _e86 = params.count;
+            if ((i_2 < _e86)) {
+                float _e93 = asfloat(bounds.Load(12+i_2*16));
+                float _e96 = asfloat(r2_2.Load(i_2*4));
+                uint _e99; tail.InterlockedOr(0, 0, _e99);
+                const bool _e100 = bsh_in_tail(_e93, _e96, _e99);
+                local = _e100;
             } else {
                 local = false;
             }
-            bool _e52 = local;
-            if (_e52) {
-                uint _e58; tail.InterlockedAdd(4, 1u, _e58);
-                { uint dummy_2 = 0; tail.InterlockedExchange((2u + _e58)*4, i_2, dummy_2); }
+            bool _e102 = local;
+            if (_e102) {
+                uint _e108; tail.InterlockedAdd(4, 1u, _e108);
+                { uint dummy_2 = 0; tail.InterlockedExchange((2u + _e108)*4, i_2, dummy_2); }
                 return;
             } else {
                 return;
@@ -247,140 +369,140 @@ void main(uint3 gid : SV_DispatchThreadID)
             break;
         }
         default: {
-            b = i_2;
-            uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
-            bool loop_init = true;
-            while(true) {
-                if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
-                loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
-                if (!loop_init) {
-                    uint _e69 = b;
-                    b = (_e69 + 64u);
-                }
-                loop_init = false;
-                uint _e62 = b;
-                if ((_e62 < BSH_TAIL_BINS)) {
-                } else {
-                    break;
-                }
-                {
-                    uint _e66 = b;
-                    { uint dummy_3 = 0; tail_hist.InterlockedExchange(_e66*4, 0u, dummy_3); }
-                }
-            }
-            if ((i_2 != 0u)) {
-                return;
-            }
-            uint count; tail.InterlockedOr(4, 0, count);
-            uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
-            bool loop_init_1 = true;
-            while(true) {
-                if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
-                loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
-                if (!loop_init_1) {
-                    uint _e115 = a;
-                    a = (_e115 + 1u);
-                }
-                loop_init_1 = false;
-                uint _e79 = a;
-                if ((_e79 < count)) {
-                } else {
-                    break;
-                }
-                {
-                    uint _e81 = a;
-                    const uint _e82 = tail_light(_e81);
-                    uint _e83 = a;
-                    c = _e83;
-                    uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
-                    while(true) {
-                        if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
-                        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-                        uint _e85 = c;
-                        if ((_e85 > 0u)) {
-                            uint _e90 = c;
-                            const uint _e93 = tail_light((_e90 - 1u));
-                            local_1 = (_e93 > _e82);
-                        } else {
-                            local_1 = false;
-                        }
-                        bool _e96 = local_1;
-                        if (_e96) {
-                        } else {
-                            break;
-                        }
-                        {
-                            uint _e99 = c;
-                            uint _e102 = c;
-                            const uint _e105 = tail_light((_e102 - 1u));
-                            { uint dummy_4 = 0; tail.InterlockedExchange((2u + _e99)*4, _e105, dummy_4); }
-                            uint _e106 = c;
-                            c = (_e106 - 1u);
-                        }
-                    }
-                    uint _e111 = c;
-                    { uint dummy_5 = 0; tail.InterlockedExchange((2u + _e111)*4, _e82, dummy_5); }
-                }
-            }
-            uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
-            bool loop_init_2 = true;
-            while(true) {
-                if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
-                loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
-                if (!loop_init_2) {
-                    uint _e156 = s;
-                    s = (_e156 + 1u);
-                }
-                loop_init_2 = false;
-                uint _e119 = s;
-                if ((_e119 < count)) {
-                } else {
-                    break;
-                }
-                {
-                    uint _e121 = s;
-                    const uint _e122 = tail_light(_e121);
-                    float4 b_3 = asfloat(bounds.Load4(_e122*16));
-                    uint _e128 = params.tree;
-                    uint _e129 = s;
-                    uint _e134 = s;
-                    uint next = (((_e134 + 1u) == count) ? BSH_NONE : ((_e128 + _e129) + 1u));
-                    uint _e142 = params.tree;
-                    uint _e143 = s;
-                    float _e150 = asfloat(r2_2.Load(_e122*4));
-                    const float _e151 = range_radius(b_3.w, _e150);
-                    {
-                        BshNode _value6 = ConstructBshNode(b_3.xyz, _e151, BSH_NONE, next, _e122, b_3.w);
-                        bsh_nodes.Store3((_e142 + _e143)*32+0, asuint(_value6.center_));
-                        bsh_nodes.Store((_e142 + _e143)*32+12, asuint(_value6.radius));
-                        bsh_nodes.Store((_e142 + _e143)*32+16, asuint(_value6.child));
-                        bsh_nodes.Store((_e142 + _e143)*32+20, asuint(_value6.next));
-                        bsh_nodes.Store((_e142 + _e143)*32+24, asuint(_value6.light));
-                        bsh_nodes.Store((_e142 + _e143)*32+28, asuint(_value6.extent));
-                    }
-                }
-            }
-            uint _e160 = params.tree;
-            uint first = ((count == 0u) ? BSH_NONE : _e160);
+            b_2 = i_2;
             uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
             bool loop_init_3 = true;
             while(true) {
                 if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
                 loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
                 if (!loop_init_3) {
-                    uint _e175 = n;
-                    const uint _e176 = bsh_rightmost_next(BSH, _e175);
-                    n = _e176;
+                    uint _e119 = b_2;
+                    b_2 = (_e119 + 64u);
                 }
                 loop_init_3 = false;
-                uint _e167 = n;
-                if ((_e167 != BSH_NONE)) {
+                uint _e112 = b_2;
+                if ((_e112 < BSH_TAIL_BINS)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e171 = n;
-                    bsh_nodes.Store(20+_e171*32, asuint(first));
+                    uint _e116 = b_2;
+                    { uint dummy_3 = 0; tail_hist.InterlockedExchange(_e116*4, 0u, dummy_3); }
+                }
+            }
+            if ((i_2 != 0u)) {
+                return;
+            }
+            uint count; tail.InterlockedOr(4, 0, count);
+            uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
+            bool loop_init_4 = true;
+            while(true) {
+                if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
+                loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+                if (!loop_init_4) {
+                    uint _e165 = a;
+                    a = (_e165 + 1u);
+                }
+                loop_init_4 = false;
+                uint _e129 = a;
+                if ((_e129 < count)) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e131 = a;
+                    const uint _e132 = tail_light(_e131);
+                    uint _e133 = a;
+                    c_1 = _e133;
+                    uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
+                    while(true) {
+                        if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
+                        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+                        uint _e135 = c_1;
+                        if ((_e135 > 0u)) {
+                            uint _e140 = c_1;
+                            const uint _e143 = tail_light((_e140 - 1u));
+                            local_1 = (_e143 > _e132);
+                        } else {
+                            local_1 = false;
+                        }
+                        bool _e146 = local_1;
+                        if (_e146) {
+                        } else {
+                            break;
+                        }
+                        {
+                            uint _e149 = c_1;
+                            uint _e152 = c_1;
+                            const uint _e155 = tail_light((_e152 - 1u));
+                            { uint dummy_4 = 0; tail.InterlockedExchange((2u + _e149)*4, _e155, dummy_4); }
+                            uint _e156 = c_1;
+                            c_1 = (_e156 - 1u);
+                        }
+                    }
+                    uint _e161 = c_1;
+                    { uint dummy_5 = 0; tail.InterlockedExchange((2u + _e161)*4, _e132, dummy_5); }
+                }
+            }
+            uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
+            bool loop_init_5 = true;
+            while(true) {
+                if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
+                loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
+                if (!loop_init_5) {
+                    uint _e206 = s;
+                    s = (_e206 + 1u);
+                }
+                loop_init_5 = false;
+                uint _e169 = s;
+                if ((_e169 < count)) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e171 = s;
+                    const uint _e172 = tail_light(_e171);
+                    float4 b_5 = asfloat(bounds.Load4(_e172*16));
+                    uint _e178 = params.tree;
+                    uint _e179 = s;
+                    uint _e184 = s;
+                    uint next = (((_e184 + 1u) == count) ? BSH_NONE : ((_e178 + _e179) + 1u));
+                    uint _e192 = params.tree;
+                    uint _e193 = s;
+                    float _e200 = asfloat(r2_2.Load(_e172*4));
+                    const float _e201 = range_radius(b_5.w, _e200);
+                    {
+                        BshNode _value6 = ConstructBshNode(b_5.xyz, _e201, BSH_NONE, next, _e172, b_5.w);
+                        bsh_nodes.Store3((_e192 + _e193)*32+0, asuint(_value6.center_));
+                        bsh_nodes.Store((_e192 + _e193)*32+12, asuint(_value6.radius));
+                        bsh_nodes.Store((_e192 + _e193)*32+16, asuint(_value6.child));
+                        bsh_nodes.Store((_e192 + _e193)*32+20, asuint(_value6.next));
+                        bsh_nodes.Store((_e192 + _e193)*32+24, asuint(_value6.light));
+                        bsh_nodes.Store((_e192 + _e193)*32+28, asuint(_value6.extent));
+                    }
+                }
+            }
+            uint _e210 = params.tree;
+            uint first = ((count == 0u) ? BSH_NONE : _e210);
+            uint2 loop_bound_9 = uint2(4294967295u, 4294967295u);
+            bool loop_init_6 = true;
+            while(true) {
+                if (all(loop_bound_9 == uint2(0u, 0u))) { break; }
+                loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
+                if (!loop_init_6) {
+                    uint _e225 = n;
+                    const uint _e226 = bsh_rightmost_next(BSH, _e225);
+                    n = _e226;
+                }
+                loop_init_6 = false;
+                uint _e217 = n;
+                if ((_e217 != BSH_NONE)) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e221 = n;
+                    bsh_nodes.Store(20+_e221*32, asuint(first));
                 }
             }
             return;

@@ -31,6 +31,12 @@ typedef metal::float4 type_6[1];
 typedef metal::atomic_uint type_8[1];
 typedef BshNode type_9[1];
 typedef uint BshNodes;
+struct type_10 {
+    uint inner[1024];
+};
+struct type_11 {
+    uint inner[32];
+};
 typedef uint TailHist;
 constant uint LIGHT_POINT = 0u;
 constant uint LIGHT_SPOT = 1u;
@@ -95,6 +101,7 @@ constant BshNodes BSH = 0u;
 constant uint BSH_TILE_DEPTH = 8u;
 constant uint BSH_TILE_SUBTREES = 256u;
 constant TailHist HIST = 0u;
+constant uint BSH_TAIL_CHUNK = 32u;
 
 uint f32_to_bits(
     float x
@@ -152,32 +159,42 @@ uint bsh_rightmost_next(
 
 uint bsh_tail_bin(
     TailHist hist,
-    uint b_1,
-    device type_8 const& tail_hist,
-    constant _mslBufferSizes& _buffer_sizes
+    uint b_3,
+    threadgroup type_10& wg_bins
 ) {
-    uint _e4 = metal::atomic_load_explicit(&tail_hist[b_1], metal::memory_order_relaxed);
+    uint _e4 = wg_bins.inner[b_3];
+    return _e4;
+}
+
+uint bsh_tail_chunk(
+    TailHist hist_1,
+    uint c_2,
+    threadgroup type_11& wg_chunks
+) {
+    uint _e4 = wg_chunks.inner[c_2];
     return _e4;
 }
 
 uint bsh_tail_cut(
-    TailHist hist_1,
+    TailHist hist_2,
     uint k,
-    device type_8 const& tail_hist,
-    constant _mslBufferSizes& _buffer_sizes
+    threadgroup type_10& wg_bins,
+    threadgroup type_11& wg_chunks
 ) {
-    uint b_2 = BSH_TAIL_BINS;
-    uint sum = 0u;
+    uint c_3 = 32u;
+    uint sum_1 = 0u;
     bool local_2 = {};
+    uint b_4 = {};
+    bool local_3 = {};
     uint2 loop_bound = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound == uint2(0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        uint _e6 = b_2;
+        uint _e6 = c_3;
         if (_e6 > 0u) {
-            uint _e11 = sum;
-            uint _e12 = b_2;
-            uint _e15 = bsh_tail_bin(hist_1, _e12 - 1u, tail_hist, _buffer_sizes);
+            uint _e11 = sum_1;
+            uint _e12 = c_3;
+            uint _e15 = bsh_tail_chunk(hist_2, _e12 - 1u, wg_chunks);
             local_2 = (_e11 + _e15) <= k;
         } else {
             local_2 = false;
@@ -188,16 +205,48 @@ uint bsh_tail_cut(
             break;
         }
         {
-            uint _e20 = sum;
-            uint _e21 = b_2;
-            uint _e24 = bsh_tail_bin(hist_1, _e21 - 1u, tail_hist, _buffer_sizes);
-            sum = _e20 + _e24;
-            uint _e26 = b_2;
-            b_2 = _e26 - 1u;
+            uint _e20 = sum_1;
+            uint _e21 = c_3;
+            uint _e24 = bsh_tail_chunk(hist_2, _e21 - 1u, wg_chunks);
+            sum_1 = _e20 + _e24;
+            uint _e26 = c_3;
+            c_3 = _e26 - 1u;
         }
     }
-    uint _e29 = b_2;
-    return _e29;
+    uint _e29 = c_3;
+    b_4 = _e29 * BSH_TAIL_CHUNK;
+    uint _e33 = b_4;
+    uint _e34 = b_4;
+    uint end = _e33 - metal::min(_e34, BSH_TAIL_CHUNK);
+    uint2 loop_bound_1 = uint2(4294967295u);
+    while(true) {
+        if (metal::all(loop_bound_1 == uint2(0u))) { break; }
+        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+        uint _e38 = b_4;
+        if (_e38 > end) {
+            uint _e42 = sum_1;
+            uint _e43 = b_4;
+            uint _e46 = bsh_tail_bin(hist_2, _e43 - 1u, wg_bins);
+            local_3 = (_e42 + _e46) <= k;
+        } else {
+            local_3 = false;
+        }
+        bool _e50 = local_3;
+        if (_e50) {
+        } else {
+            break;
+        }
+        {
+            uint _e51 = sum_1;
+            uint _e52 = b_4;
+            uint _e55 = bsh_tail_bin(hist_2, _e52 - 1u, wg_bins);
+            sum_1 = _e51 + _e55;
+            uint _e57 = b_4;
+            b_4 = _e57 - 1u;
+        }
+    }
+    uint _e60 = b_4;
+    return _e60;
 }
 
 uint tail_light(
@@ -213,44 +262,126 @@ struct main_Input {
 };
 kernel void main_(
   metal::uint3 gid [[thread_position_in_grid]]
+, uint __local_invocation_index [[thread_index_in_threadgroup]]
 , constant TailParams& params [[user(fake0)]]
 , device type_6 const& bounds [[user(fake0)]]
 , device type_4 const& r2_2 [[user(fake0)]]
 , device type_8& tail_hist [[user(fake0)]]
 , device type_8& tail [[user(fake0)]]
 , device type_9& bsh_nodes [[user(fake0)]]
+, threadgroup type_10& wg_bins
+, threadgroup type_11& wg_chunks
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
-    bool local = {};
+    if (__local_invocation_index == 0u) {
+        wg_bins = {};
+        wg_chunks = {};
+    }
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
     uint b = {};
-    uint a = 1u;
     uint c = {};
+    uint sum = {};
+    uint b_1 = {};
+    bool local = {};
+    uint b_2 = {};
+    uint a = 1u;
+    uint c_1 = {};
     bool local_1 = {};
     uint s = 0u;
     uint n = 0u;
     uint i_2 = gid.x;
     uint _e4 = params.stage;
-    switch(_e4) {
-        case 0u: {
-            uint _e7 = params.count;
-            if (i_2 < _e7) {
-                float _e13 = bounds[i_2].w;
-                float _e16 = r2_2[i_2];
-                float _e17 = range_radius(_e13, _e16);
-                uint _e18 = bsh_tail_key(_e17);
-                uint _e21 = metal::atomic_fetch_add_explicit(&tail_hist[_e18], 1u, metal::memory_order_relaxed);
-                return;
-            } else {
-                return;
+    if (_e4 == 1u) {
+        b = i_2;
+        uint2 loop_bound_2 = uint2(4294967295u);
+        bool loop_init = true;
+        while(true) {
+            if (metal::all(loop_bound_2 == uint2(0u))) { break; }
+            loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
+            if (!loop_init) {
+                uint _e18 = b;
+                b = _e18 + 64u;
             }
-            break;
+            loop_init = false;
+            uint _e8 = b;
+            if (_e8 < BSH_TAIL_BINS) {
+            } else {
+                break;
+            }
+            {
+                uint _e12 = b;
+                uint _e15 = b;
+                uint _e17 = metal::atomic_load_explicit(&tail_hist[_e15], metal::memory_order_relaxed);
+                wg_bins.inner[_e12] = _e17;
+            }
         }
-        case 1u: {
-            if (i_2 == 0u) {
-                uint _e29 = params.k;
-                uint _e30 = bsh_tail_cut(HIST, _e29, tail_hist, _buffer_sizes);
-                metal::atomic_store_explicit(&tail[0], _e30, metal::memory_order_relaxed);
-                metal::atomic_store_explicit(&tail[1], 0u, metal::memory_order_relaxed);
+        metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+        c = i_2;
+        uint2 loop_bound_3 = uint2(4294967295u);
+        bool loop_init_1 = true;
+        while(true) {
+            if (metal::all(loop_bound_3 == uint2(0u))) { break; }
+            loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+            if (!loop_init_1) {
+                uint _e49 = c;
+                c = _e49 + 64u;
+            }
+            loop_init_1 = false;
+            uint _e22 = c;
+            if (_e22 < 32u) {
+            } else {
+                break;
+            }
+            {
+                sum = 0u;
+                b_1 = 0u;
+                uint2 loop_bound_4 = uint2(4294967295u);
+                bool loop_init_2 = true;
+                while(true) {
+                    if (metal::all(loop_bound_4 == uint2(0u))) { break; }
+                    loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+                    if (!loop_init_2) {
+                        uint _e43 = b_1;
+                        b_1 = _e43 + 1u;
+                    }
+                    loop_init_2 = false;
+                    uint _e29 = b_1;
+                    if (_e29 < BSH_TAIL_CHUNK) {
+                    } else {
+                        break;
+                    }
+                    {
+                        uint _e32 = sum;
+                        uint _e34 = c;
+                        uint _e37 = b_1;
+                        uint _e40 = wg_bins.inner[(_e34 * BSH_TAIL_CHUNK) + _e37];
+                        sum = _e32 + _e40;
+                    }
+                }
+                uint _e46 = c;
+                uint _e48 = sum;
+                wg_chunks.inner[_e46] = _e48;
+            }
+        }
+        metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+        if (i_2 == 0u) {
+            uint _e59 = params.k;
+            uint _e60 = bsh_tail_cut(HIST, _e59, wg_bins, wg_chunks);
+            metal::atomic_store_explicit(&tail[0], _e60, metal::memory_order_relaxed);
+            metal::atomic_store_explicit(&tail[1], 0u, metal::memory_order_relaxed);
+        }
+        return;
+    }
+    uint _e66 = params.stage;
+    switch(_e66) {
+        case 0u: {
+            uint _e69 = params.count;
+            if (i_2 < _e69) {
+                float _e75 = bounds[i_2].w;
+                float _e78 = r2_2[i_2];
+                float _e79 = range_radius(_e75, _e78);
+                uint _e80 = bsh_tail_key(_e79);
+                uint _e83 = metal::atomic_fetch_add_explicit(&tail_hist[_e80], 1u, metal::memory_order_relaxed);
                 return;
             } else {
                 return;
@@ -258,20 +389,20 @@ kernel void main_(
             break;
         }
         case 2u: {
-            uint _e36 = params.count;
-            if (i_2 < _e36) {
-                float _e43 = bounds[i_2].w;
-                float _e46 = r2_2[i_2];
-                uint _e49 = metal::atomic_load_explicit(&tail[0], metal::memory_order_relaxed);
-                bool _e50 = bsh_in_tail(_e43, _e46, _e49);
-                local = _e50;
+            uint _e86 = params.count;
+            if (i_2 < _e86) {
+                float _e93 = bounds[i_2].w;
+                float _e96 = r2_2[i_2];
+                uint _e99 = metal::atomic_load_explicit(&tail[0], metal::memory_order_relaxed);
+                bool _e100 = bsh_in_tail(_e93, _e96, _e99);
+                local = _e100;
             } else {
                 local = false;
             }
-            bool _e52 = local;
-            if (_e52) {
-                uint _e58 = metal::atomic_fetch_add_explicit(&tail[1], 1u, metal::memory_order_relaxed);
-                metal::atomic_store_explicit(&tail[2u + _e58], i_2, metal::memory_order_relaxed);
+            bool _e102 = local;
+            if (_e102) {
+                uint _e108 = metal::atomic_fetch_add_explicit(&tail[1], 1u, metal::memory_order_relaxed);
+                metal::atomic_store_explicit(&tail[2u + _e108], i_2, metal::memory_order_relaxed);
                 return;
             } else {
                 return;
@@ -279,132 +410,132 @@ kernel void main_(
             break;
         }
         default: {
-            b = i_2;
-            uint2 loop_bound_1 = uint2(4294967295u);
-            bool loop_init = true;
-            while(true) {
-                if (metal::all(loop_bound_1 == uint2(0u))) { break; }
-                loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
-                if (!loop_init) {
-                    uint _e69 = b;
-                    b = _e69 + 64u;
-                }
-                loop_init = false;
-                uint _e62 = b;
-                if (_e62 < BSH_TAIL_BINS) {
-                } else {
-                    break;
-                }
-                {
-                    uint _e66 = b;
-                    metal::atomic_store_explicit(&tail_hist[_e66], 0u, metal::memory_order_relaxed);
-                }
-            }
-            if (i_2 != 0u) {
-                return;
-            }
-            uint count = metal::atomic_load_explicit(&tail[1], metal::memory_order_relaxed);
-            uint2 loop_bound_2 = uint2(4294967295u);
-            bool loop_init_1 = true;
-            while(true) {
-                if (metal::all(loop_bound_2 == uint2(0u))) { break; }
-                loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
-                if (!loop_init_1) {
-                    uint _e115 = a;
-                    a = _e115 + 1u;
-                }
-                loop_init_1 = false;
-                uint _e79 = a;
-                if (_e79 < count) {
-                } else {
-                    break;
-                }
-                {
-                    uint _e81 = a;
-                    uint _e82 = tail_light(_e81, tail, _buffer_sizes);
-                    uint _e83 = a;
-                    c = _e83;
-                    uint2 loop_bound_3 = uint2(4294967295u);
-                    while(true) {
-                        if (metal::all(loop_bound_3 == uint2(0u))) { break; }
-                        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-                        uint _e85 = c;
-                        if (_e85 > 0u) {
-                            uint _e90 = c;
-                            uint _e93 = tail_light(_e90 - 1u, tail, _buffer_sizes);
-                            local_1 = _e93 > _e82;
-                        } else {
-                            local_1 = false;
-                        }
-                        bool _e96 = local_1;
-                        if (_e96) {
-                        } else {
-                            break;
-                        }
-                        {
-                            uint _e99 = c;
-                            uint _e102 = c;
-                            uint _e105 = tail_light(_e102 - 1u, tail, _buffer_sizes);
-                            metal::atomic_store_explicit(&tail[2u + _e99], _e105, metal::memory_order_relaxed);
-                            uint _e106 = c;
-                            c = _e106 - 1u;
-                        }
-                    }
-                    uint _e111 = c;
-                    metal::atomic_store_explicit(&tail[2u + _e111], _e82, metal::memory_order_relaxed);
-                }
-            }
-            uint2 loop_bound_4 = uint2(4294967295u);
-            bool loop_init_2 = true;
-            while(true) {
-                if (metal::all(loop_bound_4 == uint2(0u))) { break; }
-                loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
-                if (!loop_init_2) {
-                    uint _e156 = s;
-                    s = _e156 + 1u;
-                }
-                loop_init_2 = false;
-                uint _e119 = s;
-                if (_e119 < count) {
-                } else {
-                    break;
-                }
-                {
-                    uint _e121 = s;
-                    uint _e122 = tail_light(_e121, tail, _buffer_sizes);
-                    metal::float4 b_3 = bounds[_e122];
-                    uint _e128 = params.tree;
-                    uint _e129 = s;
-                    uint _e134 = s;
-                    uint next = ((_e134 + 1u) == count) ? BSH_NONE : ((_e128 + _e129) + 1u);
-                    uint _e142 = params.tree;
-                    uint _e143 = s;
-                    float _e150 = r2_2[_e122];
-                    float _e151 = range_radius(b_3.w, _e150);
-                    bsh_nodes[_e142 + _e143] = BshNode {b_3.xyz, _e151, BSH_NONE, next, _e122, b_3.w};
-                }
-            }
-            uint _e160 = params.tree;
-            uint first = (count == 0u) ? BSH_NONE : _e160;
+            b_2 = i_2;
             uint2 loop_bound_5 = uint2(4294967295u);
             bool loop_init_3 = true;
             while(true) {
                 if (metal::all(loop_bound_5 == uint2(0u))) { break; }
                 loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
                 if (!loop_init_3) {
-                    uint _e175 = n;
-                    uint _e176 = bsh_rightmost_next(BSH, _e175, bsh_nodes, _buffer_sizes);
-                    n = _e176;
+                    uint _e119 = b_2;
+                    b_2 = _e119 + 64u;
                 }
                 loop_init_3 = false;
-                uint _e167 = n;
-                if (_e167 != BSH_NONE) {
+                uint _e112 = b_2;
+                if (_e112 < BSH_TAIL_BINS) {
                 } else {
                     break;
                 }
                 {
-                    uint _e171 = n;
-                    bsh_nodes[_e171].next = first;
+                    uint _e116 = b_2;
+                    metal::atomic_store_explicit(&tail_hist[_e116], 0u, metal::memory_order_relaxed);
+                }
+            }
+            if (i_2 != 0u) {
+                return;
+            }
+            uint count = metal::atomic_load_explicit(&tail[1], metal::memory_order_relaxed);
+            uint2 loop_bound_6 = uint2(4294967295u);
+            bool loop_init_4 = true;
+            while(true) {
+                if (metal::all(loop_bound_6 == uint2(0u))) { break; }
+                loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+                if (!loop_init_4) {
+                    uint _e165 = a;
+                    a = _e165 + 1u;
+                }
+                loop_init_4 = false;
+                uint _e129 = a;
+                if (_e129 < count) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e131 = a;
+                    uint _e132 = tail_light(_e131, tail, _buffer_sizes);
+                    uint _e133 = a;
+                    c_1 = _e133;
+                    uint2 loop_bound_7 = uint2(4294967295u);
+                    while(true) {
+                        if (metal::all(loop_bound_7 == uint2(0u))) { break; }
+                        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+                        uint _e135 = c_1;
+                        if (_e135 > 0u) {
+                            uint _e140 = c_1;
+                            uint _e143 = tail_light(_e140 - 1u, tail, _buffer_sizes);
+                            local_1 = _e143 > _e132;
+                        } else {
+                            local_1 = false;
+                        }
+                        bool _e146 = local_1;
+                        if (_e146) {
+                        } else {
+                            break;
+                        }
+                        {
+                            uint _e149 = c_1;
+                            uint _e152 = c_1;
+                            uint _e155 = tail_light(_e152 - 1u, tail, _buffer_sizes);
+                            metal::atomic_store_explicit(&tail[2u + _e149], _e155, metal::memory_order_relaxed);
+                            uint _e156 = c_1;
+                            c_1 = _e156 - 1u;
+                        }
+                    }
+                    uint _e161 = c_1;
+                    metal::atomic_store_explicit(&tail[2u + _e161], _e132, metal::memory_order_relaxed);
+                }
+            }
+            uint2 loop_bound_8 = uint2(4294967295u);
+            bool loop_init_5 = true;
+            while(true) {
+                if (metal::all(loop_bound_8 == uint2(0u))) { break; }
+                loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
+                if (!loop_init_5) {
+                    uint _e206 = s;
+                    s = _e206 + 1u;
+                }
+                loop_init_5 = false;
+                uint _e169 = s;
+                if (_e169 < count) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e171 = s;
+                    uint _e172 = tail_light(_e171, tail, _buffer_sizes);
+                    metal::float4 b_5 = bounds[_e172];
+                    uint _e178 = params.tree;
+                    uint _e179 = s;
+                    uint _e184 = s;
+                    uint next = ((_e184 + 1u) == count) ? BSH_NONE : ((_e178 + _e179) + 1u);
+                    uint _e192 = params.tree;
+                    uint _e193 = s;
+                    float _e200 = r2_2[_e172];
+                    float _e201 = range_radius(b_5.w, _e200);
+                    bsh_nodes[_e192 + _e193] = BshNode {b_5.xyz, _e201, BSH_NONE, next, _e172, b_5.w};
+                }
+            }
+            uint _e210 = params.tree;
+            uint first = (count == 0u) ? BSH_NONE : _e210;
+            uint2 loop_bound_9 = uint2(4294967295u);
+            bool loop_init_6 = true;
+            while(true) {
+                if (metal::all(loop_bound_9 == uint2(0u))) { break; }
+                loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
+                if (!loop_init_6) {
+                    uint _e225 = n;
+                    uint _e226 = bsh_rightmost_next(BSH, _e225, bsh_nodes, _buffer_sizes);
+                    n = _e226;
+                }
+                loop_init_6 = false;
+                uint _e217 = n;
+                if (_e217 != BSH_NONE) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e221 = n;
+                    bsh_nodes[_e221].next = first;
                 }
             }
             return;
