@@ -21,6 +21,7 @@ use crate::{GpuContext, GpuError};
 use glam::Affine3A;
 pub use slc_scene::occluders::*;
 use slc_shared_shaders::layout::{GpuGeoNode, GpuTriangle, NO_LIGHT};
+use wgpu::util::DeviceExt;
 
 /// The flattened tree's nodes as the kernels read them. A tree of no
 /// instance becomes one leaf over one zero-area triangle at the origin
@@ -152,8 +153,12 @@ impl GpuAccel {
             .collect();
         let vertices: Vec<wgpu::Buffer> = (0..o.mesh_count())
             .map(|m| {
-                let usage = wgpu::BufferUsages::BLAS_INPUT;
-                storage(gpu, "slc occluder mesh", bytemuck::cast_slice(o.mesh_triangles(m)), usage)
+                // Read by the BLAS build alone (once; the meshes never change).
+                gpu.device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+                    label: Some("slc occluder mesh"),
+                    contents: bytemuck::cast_slice(o.mesh_triangles(m)),
+                    usage: wgpu::BufferUsages::BLAS_INPUT,
+                })
             })
             .collect();
         let blases: Vec<wgpu::Blas> = sizes
