@@ -24,7 +24,7 @@
 //!   the few largest random ranges inflate every sphere above them): each
 //!   refit leaves the lights whose range sphere falls in the top bins of a
 //!   histogram of radii ([`bsh_tail_key`], at most `k` lights:
-//!   [`walk::bsh_tail_cut`]) out of the tree (their leaves refit with range
+//!   [`tail::bsh_tail_cut`]) out of the tree (their leaves refit with range
 //!   0 and marked [`BSH_TAIL`], skipped by the walks) and writes them, in
 //!   light order, as leaves after the tree, chained from the nodes whose
 //!   `next` ended the walk: every walk then tests them flat after the tree.
@@ -239,7 +239,7 @@ pub mod walk {
 
         /// Whether a light of extent `R` and squared random range `r2`
         /// belongs to the range tail of a refit whose histogram cut is `cut`
-        /// ([`bsh_tail_cut`]; [`BSH_TAIL_BINS`] for none): its range
+        /// ([`super::tail::bsh_tail_cut`]; [`super::BSH_TAIL_BINS`] for none): its range
         /// sphere's radius falls in a bin at or above the cut.
         pub fn bsh_in_tail(extent: f32, r2: f32, cut: u32) -> bool {
             return bsh_tail_key(range_radius(extent, r2)) >= cut;
