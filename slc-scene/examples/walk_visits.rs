@@ -13,7 +13,9 @@
 //!   histogram bins);
 //! - `+ cones`: nodes whose emitter bounds (pbrt-v4's, unioned as the light
 //!   BVH does) send nothing toward the point also rejected, and all three;
-//!   `lit cand.` counts the candidates left (those of nonzero weight).
+//!   `lit cand.` counts the candidates left (those of nonzero weight);
+//! - `built tail`: how many lights the path tracers' tail (`PtScene::bsh`)
+//!   takes for the same ranges.
 //!
 //! One ξ set (seed 1, pass 0), 2,000 points uniform by area on the
 //! non-emissive surfaces. Counts, not times: the same on every machine.
@@ -95,7 +97,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         args.drain(k..k + 2);
     }
     println!(
-        "{:<40} {:>7} {:>9} {:>10} {:>9} {:>9} {:>9} {:>13} {:>9} {:>13} {:>9}",
+        "{:<40} {:>7} {:>9} {:>10} {:>9} {:>9} {:>9} {:>13} {:>9} {:>13} {:>9} {:>10}",
         "scene",
         "lights",
         "auto eps",
@@ -106,7 +108,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         "tail + boxes",
         "+ cones",
         "all three",
-        "lit cand."
+        "lit cand.",
+        "built tail"
     );
     for path in args {
         let f = SceneFile::load(std::path::Path::new(&path))?;
@@ -147,6 +150,15 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             };
         }
         let cones: Vec<LightCone> = nb.iter().map(LightBounds::cone).collect();
+        // The path tracers' tail for these ranges (whole histogram bins):
+        // its length.
+        let mut built = pts.bsh().clone();
+        built.refit(&r2)?;
+        let (mut built_tail, mut t) = (0, built.nodes()[0].next);
+        while t != BSH_NONE {
+            built_tail += 1;
+            t = built.nodes()[t as usize].next;
+        }
         let surfaces = Surfaces::new(pts.scene())?;
         let mut row = Vec::new();
         let mut found_by = Vec::new();
@@ -190,7 +202,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             .file_stem()
             .map_or(path.clone(), |s| s.to_string_lossy().into());
         println!(
-            "{name:<40} {:>7} {eps:>9.4} {candidates:>10.2} {:>9.1} {:>9.1} {:>9.1} {:>13.1} {:>9.1} {:>13.1} {:>9.2}",
+            "{name:<40} {:>7} {eps:>9.4} {candidates:>10.2} {:>9.1} {:>9.1} {:>9.1} {:>13.1} {:>9.1} {:>13.1} {:>9.2} {built_tail:>10}",
             pts.lights().len(),
             row[0],
             row[1],
