@@ -12,8 +12,9 @@
 #   per pixel instead of per tile, with hardware ray queries for the shadow rays, and at eps 0.03),
 #   500 and 20,000 (Bevy at unbounded ranges left out
 #   there: minutes);
-# - issue 48: the path-tracing suite at 512x512, noise from seed pairs; then the losing scenes again with the
-#   light connections' shadow rays as hardware ray queries (--ray-query).
+# - issue 48: the path-tracing suite at 512x512, noise from seed pairs (since 97f020f with the BSH's range tail:
+#   against docs/results/gpu-h200/pt-suite-512.json, d001e5f, it measures the tail on the GPU); then the losing
+#   scenes again with the light connections' shadow rays as hardware ray queries (--ray-query).
 # About 530 s on an NVIDIA H200 (the last call's steps: docs/results/gpu-h200-b/log.txt, 490 s, before the
 # ray-query suite); give the run timeout_s 600. Results land
 # in the call's $OUT; copy them to docs/results/ with the adapter's name and the date.
