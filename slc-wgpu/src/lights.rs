@@ -395,16 +395,16 @@ impl LightBuffers {
         let ids = s("ids", bytemuck::cast_slice(&ids));
         let order = s("bsh order", bytemuck::cast_slice(&order));
         let bounds = storage(gpu, "light bounds", bytemuck::cast_slice(&pack_bounds(bounds)), dst);
+        // The range tail: its cut (none until `bsh_tail` runs: the CPU's
+        // as built), length and slots; the histogram, zero between passes.
+        let (tail_k, tree) = (bsh.tail_capacity() as u32, bsh.tree_len() as u32);
         // COPY_SRC: read back by the tests that compare it with the CPU's.
-        let bsh_buf = storage(
+        let bsh = storage(
             gpu,
             "bsh nodes",
             bytemuck::cast_slice(bsh.nodes()),
             wgpu::BufferUsages::COPY_SRC,
         );
-        // The range tail: its cut (none until `bsh_tail` runs: the CPU's
-        // as built), length and slots; the histogram, zero between passes.
-        let tail_k = bsh.tail_capacity() as u32;
         let mut tail_init = vec![BSH_TAIL_BINS, 0];
         tail_init.resize(2 + tail_k as usize, 0);
         let tail = s("bsh tail", bytemuck::cast_slice(&tail_init));
@@ -415,11 +415,9 @@ impl LightBuffers {
             wgpu::BufferUsages::STORAGE,
         );
         let tail_params = UniformSlots::new::<TailParams>(gpu, "tail params", 4);
-        let tree = bsh.tree_len() as u32;
         let stages: Vec<TailParams> =
             (0..4).map(|stage| TailParams { stage, count: n as u32, k: tail_k, tree }).collect();
         tail_params.write(gpu, &stages);
-        let bsh = bsh_buf;
         let res = crate::kernel::whole;
         let update_group = update.group(
             gpu,

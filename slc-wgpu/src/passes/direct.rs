@@ -179,7 +179,7 @@ use super::{
     Culling, GBuffer, SurfaceDesc, ViewCache, check_size, check_view, kernel_form, output_format,
 };
 use crate::kernel::{KernelLayout, UniformSlots, check_kernels, zeroed};
-use crate::lights::{GpuLightSet, TABLES, WG, check_light_limits, light_set, types_within};
+use crate::lights::{GpuLightSet, WG, check_light_limits, light_set, types_within};
 use crate::occluders::{GpuOccluders, check_accel_limits, check_limits};
 use crate::record::Uploads;
 use crate::{GpuContext, GpuError};
@@ -640,7 +640,6 @@ impl DirectPass {
             tile_walk: desc.walk == DirectWalk::Tile,
             ..Features::default()
         };
-        check_light_limits(gpu, lights.len() as u64, 0)?;
         gpu.require(
             "max_compute_workgroup_storage_size (direct pass tile list)",
             slc_shared_shaders::direct_workgroup_bytes(&features),
@@ -648,14 +647,10 @@ impl DirectPass {
         )?;
         check_kernels(
             gpu,
-            &[
-                (Kernel::LightRanges, &features, 0),
-                (Kernel::DirectLight, &features, 0),
-                (Kernel::LightUpdate, &features, TABLES),
-                (Kernel::BshRefit, &features, 0),
-                (Kernel::BshTail, &features, 0),
-            ],
+            &[(Kernel::LightRanges, &features, 0), (Kernel::DirectLight, &features, 0)],
         )?;
+        // The light set's own kernels and buffers: checked by
+        // `GpuLightSet::new` before it touches the device.
         let reuse_bytes = DirectReuse::pixel_bytes(k) * w as u64 * h as u64;
         if desc.reuse.is_some() {
             let lim = &gpu.limits;
