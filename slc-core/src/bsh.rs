@@ -1,11 +1,14 @@
 //! Bounding-sphere hierarchy (BSH) over light range spheres (talk: "Build
 //! Bounding Sphere Hierarchy", "Improving tree traversal & shading").
 //!
-//! - **Build** once over [`LightBound`]s. Split rule: top-down, each node's
-//!   lights are split at the *median* of their centres along the longest axis
-//!   of the centres' bounding box (a balanced binary tree, depth
-//!   `⌈log₂ n⌉`, one light per leaf). The order of the centres, not the
-//!   radii, decides the tree, so it stays valid when the radii change.
+//! - **Build** once over [`LightBound`]s, top-down, one light per leaf,
+//!   each node's lights split in two by a [`BshSplit`]: at the *median* of
+//!   their centres along the longest axis of the centres' box (a balanced
+//!   tree, depth `⌈log₂ n⌉`: the direct pass's lights), or by the
+//!   *sphere-area heuristic* (the path tracers' lights: fewer visits per
+//!   walk, depth at most [`BSH_MAX_DEPTH`]). The lights' bounds, not their
+//!   random ranges, decide the tree, so it stays valid when the ranges
+//!   change.
 //! - **Refit** every frame/pass for new random ranges in O(n): leaves become
 //!   `(c, R + r)`; each inner node the (f32-conservative) union of its two
 //!   children, and the radius about its centre that holds its lights'
@@ -476,6 +479,11 @@ impl Bsh {
     /// rejected here, before it can reach the tree. Leaf radii start at the
     /// extents (random range 0) until [`Bsh::refit`].
     pub fn build(bounds: &[LightBound]) -> Result<Self, BshError> {
+        Self::build_with(bounds, BshSplit::Median)
+    }
+
+    /// [`Bsh::build`] with the split rule `rule` ([`BshSplit`]).
+    pub fn build_with(bounds: &[LightBound], rule: BshSplit) -> Result<Self, BshError> {
         if bounds.len() >= BSH_NONE as usize / 2 {
             return Err(BshError::TooManyLights(bounds.len()));
         }
@@ -495,7 +503,7 @@ impl Bsh {
         };
         if !bounds.is_empty() {
             let mut idx: Vec<u32> = (0..bounds.len() as u32).collect();
-            bsh.emit(&mut idx, BSH_NONE);
+            bsh.emit(&mut idx, BSH_NONE, rule, 0);
         }
         bsh.leaves = alloc::vec![BSH_NONE; bounds.len()];
         for (i, n) in bsh.nodes.iter().enumerate().filter(|(_, n)| n.child == BSH_NONE) {
@@ -505,9 +513,9 @@ impl Bsh {
         Ok(bsh)
     }
 
-    /// Emits the subtree over `idx` in pre-order; `next` is the link to
-    /// store in the subtree's root.
-    fn emit(&mut self, idx: &mut [u32], next: u32) {
+    /// Emits the subtree over `idx` in pre-order, its root at `depth`;
+    /// `next` is the link to store in the subtree's root.
+    fn emit(&mut self, idx: &mut [u32], next: u32, rule: BshSplit, depth: u32) {
         let me = self.nodes.len() as u32;
         if idx.len() == 1 {
             let c = self.bounds[idx[0] as usize].center;
@@ -529,26 +537,13 @@ impl Bsh {
             light: BSH_NONE,
             extent: 0.0,
         });
-        let b = idx.iter().fold(Aabb::EMPTY, |b, &i| b.grow(self.bounds[i as usize].center));
-        let ext = b.max - b.min;
-        let axis = if ext.x >= ext.y && ext.x >= ext.z {
-            0
-        } else if ext.y >= ext.z {
-            1
-        } else {
-            2
-        };
-        let mid = idx.len() / 2;
-        let bounds = &self.bounds;
-        idx.select_nth_unstable_by(mid, |&a, &b| {
-            bounds[a as usize].center[axis].total_cmp(&bounds[b as usize].center[axis])
-        });
+        let mid = split::split(&self.bounds, idx, rule, depth);
         let (left, right) = idx.split_at_mut(mid);
         // The right child's index is known only after the left subtree:
         // a subtree over m lights has 2m − 1 nodes.
         let right_root = me + 1 + (2 * left.len() as u32 - 1);
-        self.emit(left, right_root);
-        self.emit(right, next);
+        self.emit(left, right_root, rule, depth + 1);
+        self.emit(right, next, rule, depth + 1);
     }
 
     /// The tree with a range tail of at most `k` lights (module docs): from
@@ -842,6 +837,9 @@ fn refit_subtree(nodes: &mut [BshNode], base: u32, leaf: &LeafRefit, grain: usiz
     });
     head[0] = inner_refitted(head[0], left[0], right[0]);
 }
+
+mod split;
+pub use split::{BSH_MAX_DEPTH, BshSplit};
 
 #[cfg(test)]
 mod tests;

@@ -15,7 +15,11 @@
 //!   BVH does) send nothing toward the point also rejected, and all three;
 //!   `lit cand.` counts the candidates left (those of nonzero weight);
 //! - `built tail`: how many lights the path tracers' tail (`PtScene::bsh`)
-//!   takes for the same ranges.
+//!   takes for the same ranges, and `built`: the visits of the path
+//!   tracers' own tree (split by the sphere-area heuristic,
+//!   `BshSplit::SphereArea`) with that tail (its flat tests not counted;
+//!   checked to find the same leaves with them). The other columns walk
+//!   the light set's balanced tree (`BshSplit::Median`).
 //!
 //! One ξ set (seed 1, pass 0), 2,000 points uniform by area on the
 //! non-emissive surfaces. Counts, not times: the same on every machine.
@@ -23,7 +27,7 @@
 //!     cargo run --release -p slc-scene --example walk_visits -- [--tail N] SCENE.toml [SCENE.toml ...]
 
 use glam::Vec3;
-use slc_core::bsh::{BSH_NONE, Bsh, BshNode};
+use slc_core::bsh::{BSH_NONE, BSH_TAIL, Bsh, BshNode};
 use slc_core::importance::{LightCone, emitter_cone};
 use slc_core::range::{RangeParams, random_range2};
 use slc_core::xi::xi_for;
@@ -57,18 +61,23 @@ fn boxes(
     b
 }
 
-/// Nodes visited and leaves found by the stackless walk at `x`.
+/// Nodes visited and leaves found by the stackless walk at `x`, in the
+/// tree's first `tree` nodes (a range tail after them is not walked, and
+/// its marked leaves in the tree are skipped, as the path tracers' walk
+/// does).
 fn walk(
     nodes: &[BshNode],
+    tree: usize,
     boxes: Option<&[(Vec3, Vec3, f32)]>,
     cones: Option<&[LightCone]>,
     x: Vec3,
 ) -> (u32, u32) {
     let (mut visits, mut found, mut i) = (0, 0, if nodes.is_empty() { BSH_NONE } else { 0 });
-    while i != BSH_NONE {
+    while i != BSH_NONE && (i as usize) < tree {
         let n = nodes[i as usize];
         visits += 1;
-        let mut hit = (x - n.center).length_squared() <= n.radius * n.radius;
+        let marked = n.child == BSH_NONE && n.light & BSH_TAIL != 0;
+        let mut hit = !marked && (x - n.center).length_squared() <= n.radius * n.radius;
         if let Some(b) = boxes.filter(|_| hit && n.child != BSH_NONE) {
             let (lo, hi, r) = b[i as usize];
             hit = x.cmpge(lo - r).all() && x.cmple(hi + r).all();
@@ -97,7 +106,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         args.drain(k..k + 2);
     }
     println!(
-        "{:<40} {:>7} {:>9} {:>10} {:>9} {:>9} {:>9} {:>13} {:>9} {:>13} {:>9} {:>10}",
+        "{:<40} {:>7} {:>9} {:>10} {:>9} {:>9} {:>9} {:>13} {:>9} {:>13} {:>9} {:>10} {:>9}",
         "scene",
         "lights",
         "auto eps",
@@ -109,7 +118,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         "+ cones",
         "all three",
         "lit cand.",
-        "built tail"
+        "built tail",
+        "built"
     );
     for path in args {
         let f = SceneFile::load(std::path::Path::new(&path))?;
@@ -179,6 +189,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                 let x = surfaces.sample(&mut Stream::new(0x1234, k)).0;
                 let (v, c) = walk(
                     bsh.nodes(),
+                    bsh.tree_len(),
                     with_boxes.then_some(&b[..]),
                     with_cones.then_some(&cones),
                     x,
@@ -192,6 +203,20 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             row.push(visits as f64 / POINTS as f64);
             found_by.push(found);
         }
+        // The path tracers' own tree (sphere-area split) with its built
+        // tail: its walk's visits, and the same leaves as the plain walk
+        // once its tail's flat tests are added.
+        let (mut built_visits, mut built_found) = (0u64, 0u64);
+        for k in 0..POINTS {
+            let x = surfaces.sample(&mut Stream::new(0x1234, k)).0;
+            let (v, c) = walk(built.nodes(), built.tree_len(), None, None, x);
+            let tail = &built.nodes()[built.tree_len()..built.tree_len() + built_tail];
+            let flat =
+                tail.iter().filter(|n| (x - n.center).length_squared() <= n.radius * n.radius);
+            built_visits += v as u64;
+            built_found += c as u64 + flat.count() as u64;
+        }
+        assert_eq!(built_found, found_by[0], "{path}: the built tree found other leaves");
         // The boxes only prune: the same leaves with and without them.
         assert_eq!(
             (found_by[0], found_by[2]),
@@ -202,7 +227,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             .file_stem()
             .map_or(path.clone(), |s| s.to_string_lossy().into());
         println!(
-            "{name:<40} {:>7} {eps:>9.4} {candidates:>10.2} {:>9.1} {:>9.1} {:>9.1} {:>13.1} {:>9.1} {:>13.1} {:>9.2} {built_tail:>10}",
+            "{name:<40} {:>7} {eps:>9.4} {candidates:>10.2} {:>9.1} {:>9.1} {:>9.1} {:>13.1} {:>9.1} {:>13.1} {:>9.2} {built_tail:>10} {:>9.1}",
             pts.lights().len(),
             row[0],
             row[1],
@@ -210,7 +235,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             row[3],
             row[4],
             row[5],
-            found_by[4] as f64 / POINTS as f64
+            found_by[4] as f64 / POINTS as f64,
+            built_visits as f64 / POINTS as f64
         );
     }
     Ok(())

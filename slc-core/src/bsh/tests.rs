@@ -6,6 +6,20 @@ fn pt(x: f32, y: f32, z: f32) -> LightBound {
     LightBound { center: Vec3::new(x, y, z), extent: 0.0 }
 }
 
+/// Either split rule, from a uniform number.
+fn split_of(u: f32) -> BshSplit {
+    if u < 0.5 { BshSplit::Median } else { BshSplit::SphereArea }
+}
+
+/// The depth of the deepest leaf (the root's is 0).
+fn depth(t: &Bsh) -> u32 {
+    fn below(n: &[BshNode], i: u32) -> u32 {
+        let c = n[i as usize].child;
+        if c == BSH_NONE { 0 } else { 1 + below(n, c).max(below(n, n[c as usize].next)) }
+    }
+    if t.is_empty() { 0 } else { below(t.nodes(), 0) }
+}
+
 #[test]
 fn links_form_preorder() {
     let b: Vec<_> = (0..7).map(|i| pt(i as f32, 0.0, 0.0)).collect();
@@ -33,7 +47,8 @@ fn links_form_preorder() {
 /// here the second before the first, which their independence allows)
 /// leaves the same nodes as the serial one, bit for bit, over 300
 /// lights with heavy-tailed ranges, an unbalanced count and extents, at
-/// every grain; every light's leaf is its own.
+/// every grain, on a balanced and a sphere-area tree; every light's leaf
+/// is its own.
 #[test]
 fn split_refit_equals_serial_refit() {
     use rand_core::{RngCore, SeedableRng};
@@ -47,11 +62,12 @@ fn split_refit_equals_serial_refit() {
         b();
         a();
     };
-    for tail in [0, 16] {
-        let mut serial = Bsh::build(&b).unwrap().with_tail(tail).unwrap();
+    for (tail, rule) in [(0, BshSplit::Median), (16, BshSplit::Median), (16, BshSplit::SphereArea)]
+    {
+        let mut serial = Bsh::build_with(&b, rule).unwrap().with_tail(tail).unwrap();
         serial.refit(&r2).unwrap();
         for grain in [0, 1, 2, 7, 64, 1000] {
-            let mut split = Bsh::build(&b).unwrap().with_tail(tail).unwrap();
+            let mut split = Bsh::build_with(&b, rule).unwrap().with_tail(tail).unwrap();
             split.refit_split(&r2, grain, reversed).unwrap();
             assert!(serial.nodes() == split.nodes(), "grain {grain}, tail {tail}");
         }
@@ -196,7 +212,7 @@ fn queries_match_brute_force_at_every_scale() {
             .collect();
         let r2: Vec<f32> = (0..n).map(|_| (u() * scale).powi(2)).collect();
         let tail = (u() * 4.0) as usize;
-        let mut t = Bsh::build(&b).unwrap().with_tail(tail).unwrap();
+        let mut t = Bsh::build_with(&b, split_of(u())).unwrap().with_tail(tail).unwrap();
         t.refit(&r2).unwrap();
         let spheres: Vec<Sphere> = b.iter().zip(&r2).map(|(b, &r)| b.range_sphere(r)).collect();
         let brute = |test: &dyn Fn(&Sphere) -> bool| -> Vec<u32> {
@@ -290,7 +306,8 @@ fn glossy_walk_matches_brute_force() {
             })
             .collect();
         let r2: Vec<f32> = (0..n).map(|_| (0.05 / (1.0 - u()).sqrt()).powi(2)).collect();
-        let mut t = Bsh::build(&b).unwrap().with_tail([0, 1, 8][(u() * 3.0) as usize]).unwrap();
+        let tail = [0, 1, 8][(u() * 3.0) as usize];
+        let mut t = Bsh::build_with(&b, split_of(u())).unwrap().with_tail(tail).unwrap();
         t.refit(&r2).unwrap();
         let x = Vec3::new(u(), u(), u()) - 0.5;
         let nrm = (Vec3::new(u(), u(), u()) - 0.5).normalize();
@@ -457,5 +474,66 @@ fn tail_cut_is_the_lowest_bin_that_fits() {
         }
         let k = rng.next_u32() % 70;
         assert_eq!(tail::bsh_tail_cut(&h, k), naive(&h, k), "case {case}, k {k}");
+    }
+}
+
+/// The sphere-area split keeps clusters whole where the median cuts
+/// through one: 3 lights about x = 0 and 13 about x = 10 (the median
+/// takes 8 and 8); the root's children are the two clusters. The
+/// balanced tree is `⌈log₂ n⌉` deep.
+#[test]
+fn sphere_area_split_keeps_clusters_whole() {
+    let b: Vec<_> =
+        (0..16)
+            .map(|i| {
+                if i < 3 {
+                    pt(i as f32 * 0.1, 0.0, 0.0)
+                } else {
+                    pt(10.0 + i as f32 * 0.1, 0.0, 0.0)
+                }
+            })
+            .collect();
+    let lights_under = |t: &Bsh, root: u32| -> Vec<u32> {
+        let n = t.nodes();
+        let end = n[root as usize].next;
+        let mut l: Vec<u32> = (root..end.min(t.tree_len() as u32))
+            .filter(|&i| n[i as usize].child == BSH_NONE)
+            .map(|i| n[i as usize].light)
+            .collect();
+        l.sort();
+        l
+    };
+    let area = Bsh::build_with(&b, BshSplit::SphereArea).unwrap();
+    assert_eq!(lights_under(&area, 1), [0, 1, 2]);
+    let median = Bsh::build(&b).unwrap();
+    assert_eq!(lights_under(&median, 1).len(), 8);
+    assert_eq!(depth(&median), 4);
+}
+
+/// A sphere-area tree stays within [`BSH_MAX_DEPTH`] where the heuristic
+/// would peel a few lights off per level (900 lights on six arms along
+/// the axes at `±2⁻ᵏ`, k < 150: each split cuts off an arm's far bins;
+/// without the bound, 107 levels), and still answers as brute force does.
+#[test]
+fn sphere_area_depth_is_bounded() {
+    let n = 6 * 150;
+    let b: Vec<_> = (0..n)
+        .map(|i| {
+            let x = 2f32.powi(-(i as i32 / 6)) * if i % 2 == 0 { 1.0 } else { -1.0 };
+            [pt(x, 0.0, 0.0), pt(0.0, x, 0.0), pt(0.0, 0.0, x)][i % 3]
+        })
+        .collect();
+    let mut t = Bsh::build_with(&b, BshSplit::SphereArea).unwrap();
+    let d = depth(&t);
+    assert!(d > 20 && d <= BSH_MAX_DEPTH, "depth {d}");
+    let r2: Vec<f32> = (0..n).map(|k| (1e-3 * (k % 7) as f32).powi(2)).collect();
+    t.refit(&r2).unwrap();
+    for x in [0.0, 1e-30, 1e-5, 0.01, -0.5, 0.9, 1.0] {
+        for x in [Vec3::new(x, 0.0, 0.0), Vec3::new(0.0, x, 1e-3)] {
+            let brute: Vec<u32> = (0..n as u32)
+                .filter(|&i| b[i as usize].range_sphere(r2[i as usize]).contains(x))
+                .collect();
+            assert_eq!(sorted(|f| t.for_each_containing(x, f)), brute);
+        }
     }
 }
