@@ -15,11 +15,12 @@
 //!   BVH does) send nothing toward the point also rejected, and all three;
 //!   `lit cand.` counts the candidates left (those of nonzero weight);
 //! - `built tail`: how many lights the path tracers' tail (`PtScene::bsh`)
-//!   takes for the same ranges, and `built`: the visits of the path
-//!   tracers' own tree (split by the sphere-area heuristic,
-//!   `BshSplit::SphereArea`) with that tail (its flat tests not counted;
-//!   checked to find the same leaves with them). The other columns walk
-//!   the light set's balanced tree (`BshSplit::Median`).
+//!   takes for the same ranges; `built`: the visits of the path tracers'
+//!   own tree (split by the sphere-area heuristic, `BshSplit::SphereArea`)
+//!   with that tail, and `balanced`: the light set's balanced tree
+//!   (`BshSplit::Median`, which the other columns walk) with the same
+//!   tail, as the path tracers walked before (the tail's flat tests not
+//!   counted; each checked to find the same leaves with them).
 //!
 //! One ξ set (seed 1, pass 0), 2,000 points uniform by area on the
 //! non-emissive surfaces. Counts, not times: the same on every machine.
@@ -34,7 +35,7 @@ use slc_core::xi::xi_for;
 use slc_scene::error_bound::{TARGET_CANDIDATES, auto_error_bound};
 use slc_scene::light_bvh::LightBounds;
 use slc_scene::placement::{Stream, Surfaces};
-use slc_scene::pt::PtScene;
+use slc_scene::pt::{PtScene, RANGE_TAIL};
 use slc_scene::scene_file::SceneFile;
 
 /// Shading points per scene.
@@ -106,7 +107,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         args.drain(k..k + 2);
     }
     println!(
-        "{:<40} {:>7} {:>9} {:>10} {:>9} {:>9} {:>9} {:>13} {:>9} {:>13} {:>9} {:>10} {:>9}",
+        "{:<40} {:>7} {:>9} {:>10} {:>9} {:>9} {:>9} {:>13} {:>9} {:>13} {:>9} {:>10} {:>9} {:>9}",
         "scene",
         "lights",
         "auto eps",
@@ -119,6 +120,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         "all three",
         "lit cand.",
         "built tail",
+        "balanced",
         "built"
     );
     for path in args {
@@ -206,17 +208,24 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         // The path tracers' own tree (sphere-area split) with its built
         // tail: its walk's visits, and the same leaves as the plain walk
         // once its tail's flat tests are added.
-        let (mut built_visits, mut built_found) = (0u64, 0u64);
-        for k in 0..POINTS {
-            let x = surfaces.sample(&mut Stream::new(0x1234, k)).0;
-            let (v, c) = walk(built.nodes(), built.tree_len(), None, None, x);
-            let tail = &built.nodes()[built.tree_len()..built.tree_len() + built_tail];
-            let flat =
-                tail.iter().filter(|n| (x - n.center).length_squared() <= n.radius * n.radius);
-            built_visits += v as u64;
-            built_found += c as u64 + flat.count() as u64;
+        // The same tail on the balanced tree: what the path tracers walked
+        // before the sphere-area split.
+        let mut balanced = pts.light_set().bsh().clone().with_tail(RANGE_TAIL)?;
+        balanced.refit(&r2)?;
+        let mut tree_visits = [0u64; 2];
+        for (t, visits) in [&balanced, &built].into_iter().zip(&mut tree_visits) {
+            let mut found = 0u64;
+            for k in 0..POINTS {
+                let x = surfaces.sample(&mut Stream::new(0x1234, k)).0;
+                let (v, c) = walk(t.nodes(), t.tree_len(), None, None, x);
+                let tail = &t.nodes()[t.tree_len()..t.tree_len() + built_tail];
+                let flat =
+                    tail.iter().filter(|n| (x - n.center).length_squared() <= n.radius * n.radius);
+                *visits += v as u64;
+                found += c as u64 + flat.count() as u64;
+            }
+            assert_eq!(found, found_by[0], "{path}: a tree with its tail found other leaves");
         }
-        assert_eq!(built_found, found_by[0], "{path}: the built tree found other leaves");
         // The boxes only prune: the same leaves with and without them.
         assert_eq!(
             (found_by[0], found_by[2]),
@@ -227,7 +236,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             .file_stem()
             .map_or(path.clone(), |s| s.to_string_lossy().into());
         println!(
-            "{name:<40} {:>7} {eps:>9.4} {candidates:>10.2} {:>9.1} {:>9.1} {:>9.1} {:>13.1} {:>9.1} {:>13.1} {:>9.2} {built_tail:>10} {:>9.1}",
+            "{name:<40} {:>7} {eps:>9.4} {candidates:>10.2} {:>9.1} {:>9.1} {:>9.1} {:>13.1} {:>9.1} {:>13.1} {:>9.2} {built_tail:>10} {:>9.1} {:>9.1}",
             pts.lights().len(),
             row[0],
             row[1],
@@ -236,7 +245,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             row[4],
             row[5],
             found_by[4] as f64 / POINTS as f64,
-            built_visits as f64 / POINTS as f64
+            tree_visits[0] as f64 / POINTS as f64,
+            tree_visits[1] as f64 / POINTS as f64
         );
     }
     Ok(())
