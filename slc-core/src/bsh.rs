@@ -82,7 +82,7 @@ crate::shared! {
         /// A leaf's light extent `R` (its radius is `R + r`); an inner
         /// node's radius about its centre holding every light bound
         /// `(c, R)` below it, ranges left out
-        /// ([`walk::bsh_children_extent`]): the cone a glossy receiver's
+        /// ([`walk::bsh_pair_extent`]): the cone a glossy receiver's
         /// range scale is taken over ([`walk::bsh_reaches`]).
         pub extent: f32,
     }
@@ -105,7 +105,7 @@ crate::shared! {
     /// The largest random range `r` of the lights below node `node`: a
     /// leaf's `radius − extent`, an inner node's stored bound (the bits in
     /// its `light` field, written by the refit:
-    /// `walk::bsh_children_range`).
+    /// `walk::bsh_pair_range`).
     pub fn bsh_range_bound(node: BshNode) -> f32 {
         if node.child == BSH_NONE {
             return node.radius - node.extent;
@@ -259,6 +259,37 @@ pub mod walk {
             return bsh_node(nodes, node.child).next;
         }
 
+        /// Leaf `node` refitted for its light's bound `bound` (centre,
+        /// extent `R`) and squared random range `r2` under the range
+        /// tail's cut `cut`: the sphere `(c, R + √r2)`, or for a light in
+        /// the tail ([`bsh_in_tail`]) `(c, R)` with the [`BSH_TAIL`] mark
+        /// on its light index; its links kept. What both refits write.
+        pub fn bsh_leaf_refitted(node: BshNode, bound: vec4f, r2: f32, cut: u32) -> BshNode {
+            let in_tail: bool = bsh_in_tail(bound.w, r2, cut);
+            let mut leaf: BshNode = node;
+            leaf.center = vec3f(bound.x, bound.y, bound.z);
+            leaf.radius = range_radius(bound.w, select(r2, 0.0, in_tail));
+            leaf.extent = bound.w;
+            leaf.light = (node.light & (BSH_TAIL - 1)) | select(0, BSH_TAIL, in_tail);
+            return leaf;
+        }
+
+        /// Light `li`'s copy in the range tail, linked to `next`: a leaf
+        /// holding its bound `bound` with its squared range `r2`, which
+        /// the walks test flat after the tree. Every field is written
+        /// (`slot` only gives the struct: shared code cannot construct
+        /// one). What both refits write after the tree.
+        pub fn bsh_tail_leaf(slot: BshNode, bound: vec4f, r2: f32, li: u32, next: u32) -> BshNode {
+            let mut leaf: BshNode = slot;
+            leaf.center = vec3f(bound.x, bound.y, bound.z);
+            leaf.radius = range_radius(bound.w, r2);
+            leaf.child = BSH_NONE;
+            leaf.next = next;
+            leaf.light = li;
+            leaf.extent = bound.w;
+            return leaf;
+        }
+
         /// Light `li`'s leaf `i` as a walk would test it: the leaf itself,
         /// or, where the refit put its light in the range tail
         /// ([`BSH_TAIL`]), its copy after the tree, which holds its range
@@ -354,28 +385,20 @@ pub mod walk {
             return end;
         }
 
-        /// The refit's step at inner node `i`: the union of its two
-        /// children's spheres (its first child is `child`, the second that
-        /// child's `next`), `(centre, radius)` ([`bsh_pair_sphere`]).
-        /// Leaves take `range_radius(R, r²)` around their light.
-        pub fn bsh_children_sphere(nodes: BshNodes, i: u32) -> vec4f {
-            let left: BshNode = bsh_node(nodes, bsh_node(nodes, i).child);
-            return bsh_pair_sphere(left, bsh_node(nodes, left.next));
-        }
-
-        /// The refit's light-bound radius of inner node `i` about its new
-        /// centre `center` (after [`bsh_children_sphere`];
-        /// [`bsh_pair_extent`]).
-        pub fn bsh_children_extent(nodes: BshNodes, i: u32, center: vec3f) -> f32 {
-            let left: BshNode = bsh_node(nodes, bsh_node(nodes, i).child);
-            return bsh_pair_extent(left, bsh_node(nodes, left.next), center);
-        }
-
-        /// The refit's largest range below inner node `i`
-        /// ([`bsh_pair_range`]; stored as the bits of its `light` field).
-        pub fn bsh_children_range(nodes: BshNodes, i: u32) -> f32 {
-            let left: BshNode = bsh_node(nodes, bsh_node(nodes, i).child);
-            return bsh_pair_range(left, bsh_node(nodes, left.next));
+        /// Inner node `node` refitted from its children `left` and
+        /// `right`: the union of their spheres ([`bsh_pair_sphere`]), the
+        /// radius about its new centre holding their light bounds
+        /// ([`bsh_pair_extent`]) and, as the bits of `light`, the largest
+        /// range below it ([`bsh_pair_range`]); its links kept. What both
+        /// refits write.
+        pub fn bsh_inner_refitted(node: BshNode, left: BshNode, right: BshNode) -> BshNode {
+            let u: vec4f = bsh_pair_sphere(left, right);
+            let mut inner: BshNode = node;
+            inner.center = vec3f(u.x, u.y, u.z);
+            inner.radius = u.w;
+            inner.extent = bsh_pair_extent(left, right, inner.center);
+            inner.light = f32_to_bits(bsh_pair_range(left, right));
+            return inner;
         }
 
         /// The union of an inner node's two children's spheres, `(centre,
@@ -634,14 +657,9 @@ impl Bsh {
         for (li, (b, &r)) in self.bounds.iter().zip(r2).enumerate() {
             if walk::bsh_in_tail(b.extent, r, cut) {
                 let at = tree + count;
-                self.nodes[at] = BshNode {
-                    center: b.center,
-                    radius: crate::light::range_radius(b.extent, r),
-                    child: BSH_NONE,
-                    next: at as u32 + 1,
-                    light: li as u32,
-                    extent: b.extent,
-                };
+                let bound = b.center.extend(b.extent);
+                self.nodes[at] =
+                    walk::bsh_tail_leaf(self.nodes[at], bound, r, li as u32, at as u32 + 1);
                 count += 1;
             }
         }
@@ -786,29 +804,11 @@ impl LeafRefit<'_> {
     /// A leaf refitted: its light's range sphere `(c, R + r)`, or for a
     /// light in the range tail ([`walk::bsh_in_tail`]) `(c, R)`, marked
     /// [`BSH_TAIL`].
-    fn leaf(&self, mut n: BshNode) -> BshNode {
+    fn leaf(&self, n: BshNode) -> BshNode {
         let li = (n.light & (BSH_TAIL - 1)) as usize;
-        let (b, r2) = (&self.bounds[li], self.r2[li]);
-        let tail = walk::bsh_in_tail(b.extent, r2, self.cut);
-        let s = b.range_sphere(if tail { 0.0 } else { r2 });
-        (n.center, n.radius) = (s.center, s.radius);
-        n.light = li as u32 | if tail { BSH_TAIL } else { 0 };
-        n
+        let b = &self.bounds[li];
+        walk::bsh_leaf_refitted(n, b.center.extend(b.extent), self.r2[li], self.cut)
     }
-}
-
-/// An inner node refitted from its two children: the union of their
-/// spheres, the radius of its light bounds about the new centre and the
-/// largest range below it ([`walk::bsh_pair_sphere`],
-/// [`walk::bsh_pair_extent`], [`walk::bsh_pair_range`]: the GPU refit's
-/// functions).
-fn inner_refitted(mut n: BshNode, left: BshNode, right: BshNode) -> BshNode {
-    let u = walk::bsh_pair_sphere(left, right);
-    let s = Sphere::new(Vec3::new(u.x, u.y, u.z), u.w);
-    (n.center, n.radius) = (s.center, s.radius);
-    n.extent = walk::bsh_pair_extent(left, right, s.center);
-    n.light = walk::bsh_pair_range(left, right).to_bits();
-    n
 }
 
 /// Refits the subtree that is all of `nodes`, its root `nodes[0]` at index
@@ -823,7 +823,7 @@ fn refit_subtree(nodes: &mut [BshNode], base: u32, leaf: &LeafRefit, grain: usiz
                 leaf.leaf(n)
             } else {
                 let left = nodes[(n.child - base) as usize];
-                inner_refitted(n, left, nodes[(left.next - base) as usize])
+                walk::bsh_inner_refitted(n, left, nodes[(left.next - base) as usize])
             };
         }
         return;
@@ -835,7 +835,7 @@ fn refit_subtree(nodes: &mut [BshNode], base: u32, leaf: &LeafRefit, grain: usiz
     join(&mut || refit_subtree(left, base + 1, leaf, grain, join), &mut || {
         refit_subtree(right, base + right_at as u32, leaf, grain, join)
     });
-    head[0] = inner_refitted(head[0], left[0], right[0]);
+    head[0] = walk::bsh_inner_refitted(head[0], left[0], right[0]);
 }
 
 mod split;

@@ -87,9 +87,9 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
             }
             for (var s = 0u; s < count; s++) {
                 let li = tail_light(s);
-                let b = bounds[li];
-                let next = select(params.tree + s + 1u, BSH_NONE, s + 1u == count);
-                bsh_nodes[params.tree + s] = BshNode(b.xyz, range_radius(b.w, r2[li]), BSH_NONE, next, li, b.w);
+                let at = params.tree + s;
+                let next = select(at + 1u, BSH_NONE, s + 1u == count);
+                bsh_nodes[at] = bsh_tail_leaf(bsh_nodes[at], bounds[li], r2[li], li, next);
             }
             let first = select(params.tree, BSH_NONE, count == 0u);
             for (var n = 0u; n != BSH_NONE; n = bsh_rightmost_next(BSH, n)) {

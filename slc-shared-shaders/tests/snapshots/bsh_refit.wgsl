@@ -84,7 +84,7 @@ var<storage> order: array<u32>;
 @group(0) @binding(2) 
 var<storage> bounds: array<vec4<f32>>;
 @group(0) @binding(3) 
-var<storage> r2_3: array<f32>;
+var<storage> r2_4: array<f32>;
 @group(0) @binding(4) 
 var<storage, read_write> bsh_nodes: array<BshNode>;
 @group(0) @binding(5) 
@@ -160,28 +160,29 @@ fn bsh_range_bound(node: BshNode) -> f32 {
     return _e8;
 }
 
-fn bsh_node(nodes: u32, i: u32) -> BshNode {
-    let _e4 = bsh_nodes[i];
-    return _e4;
-}
-
 fn bsh_in_tail(extent_1: f32, r2_2: f32, cut: u32) -> bool {
     let _e3 = range_radius(extent_1, r2_2);
     let _e4 = bsh_tail_key(_e3);
     return (_e4 >= cut);
 }
 
+fn bsh_leaf_refitted(node_1: BshNode, bound: vec4<f32>, r2_3: f32, cut_1: u32) -> BshNode {
+    var leaf: BshNode;
+
+    let _e5 = bsh_in_tail(bound.w, r2_3, cut_1);
+    leaf = node_1;
+    leaf.center = vec3<f32>(bound.x, bound.y, bound.z);
+    let _e16 = range_radius(bound.w, select(r2_3, 0f, _e5));
+    leaf.radius = _e16;
+    leaf.extent = bound.w;
+    leaf.light = ((node_1.light & 2147483647u) | select(0u, BSH_TAIL, _e5));
+    let _e27 = leaf;
+    return _e27;
+}
+
 fn bsh_pair_sphere(left: BshNode, right: BshNode) -> vec4<f32> {
     let _e6 = sphere_union(left.center, left.radius, right.center, right.radius);
     return _e6;
-}
-
-fn bsh_children_sphere(nodes_1: u32, i_1: u32) -> vec4<f32> {
-    let _e2 = bsh_node(nodes_1, i_1);
-    let _e4 = bsh_node(nodes_1, _e2.child);
-    let _e6 = bsh_node(nodes_1, _e4.next);
-    let _e7 = bsh_pair_sphere(_e4, _e6);
-    return _e7;
 }
 
 fn bsh_pair_extent(left_1: BshNode, right_1: BshNode, center: vec3<f32>) -> f32 {
@@ -192,26 +193,27 @@ fn bsh_pair_extent(left_1: BshNode, right_1: BshNode, center: vec3<f32>) -> f32 
     return (a + _e16);
 }
 
-fn bsh_children_extent(nodes_2: u32, i_2: u32, center_1: vec3<f32>) -> f32 {
-    let _e3 = bsh_node(nodes_2, i_2);
-    let _e5 = bsh_node(nodes_2, _e3.child);
-    let _e7 = bsh_node(nodes_2, _e5.next);
-    let _e8 = bsh_pair_extent(_e5, _e7, center_1);
-    return _e8;
-}
-
 fn bsh_pair_range(left_2: BshNode, right_2: BshNode) -> f32 {
     let _e2 = bsh_range_bound(left_2);
     let _e3 = bsh_range_bound(right_2);
     return max(_e2, _e3);
 }
 
-fn bsh_children_range(nodes_3: u32, i_3: u32) -> f32 {
-    let _e2 = bsh_node(nodes_3, i_3);
-    let _e4 = bsh_node(nodes_3, _e2.child);
-    let _e6 = bsh_node(nodes_3, _e4.next);
-    let _e7 = bsh_pair_range(_e4, _e6);
-    return _e7;
+fn bsh_inner_refitted(node_2: BshNode, left_3: BshNode, right_3: BshNode) -> BshNode {
+    var inner: BshNode;
+
+    let _e3 = bsh_pair_sphere(left_3, right_3);
+    inner = node_2;
+    inner.center = vec3<f32>(_e3.x, _e3.y, _e3.z);
+    inner.radius = _e3.w;
+    let _e14 = inner.center;
+    let _e15 = bsh_pair_extent(left_3, right_3, _e14);
+    inner.extent = _e15;
+    let _e17 = bsh_pair_range(left_3, right_3);
+    let _e18 = f32_to_bits(_e17);
+    inner.light = _e18;
+    let _e19 = inner;
+    return _e19;
 }
 
 @compute @workgroup_size(64, 1, 1) 
@@ -221,29 +223,20 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         return;
     }
     let _e9 = params.first;
-    let i_4 = order[(_e9 + gid.x)];
-    let node_1 = bsh_nodes[i_4];
-    if (node_1.child == BSH_NONE) {
-        let li = (node_1.light & 2147483647u);
-        let bound = bounds[li];
-        let _e29 = r2_3[li];
-        let _e32 = tail[0];
-        let _e33 = bsh_in_tail(bound.w, _e29, _e32);
-        bsh_nodes[i_4].center = bound.xyz;
-        let _e44 = r2_3[li];
-        let _e47 = range_radius(bound.w, select(_e44, 0f, _e33));
-        bsh_nodes[i_4].radius = _e47;
-        bsh_nodes[i_4].extent = bound.w;
-        bsh_nodes[i_4].light = (li | select(0u, BSH_TAIL, _e33));
+    let i = order[(_e9 + gid.x)];
+    let node_3 = bsh_nodes[i];
+    if (node_3.child == BSH_NONE) {
+        let li = (node_3.light & 2147483647u);
+        let _e27 = bounds[li];
+        let _e30 = r2_4[li];
+        let _e33 = tail[0];
+        let _e34 = bsh_leaf_refitted(node_3, _e27, _e30, _e33);
+        bsh_nodes[i] = _e34;
         return;
     }
-    let _e60 = bsh_children_sphere(BSH, i_4);
-    bsh_nodes[i_4].center = _e60.xyz;
-    bsh_nodes[i_4].radius = _e60.w;
-    let _e74 = bsh_children_extent(BSH, i_4, _e60.xyz);
-    bsh_nodes[i_4].extent = _e74;
-    let _e79 = bsh_children_range(BSH, i_4);
-    let _e80 = f32_to_bits(_e79);
-    bsh_nodes[i_4].light = _e80;
+    let left_4 = bsh_nodes[node_3.child];
+    let _e44 = bsh_nodes[left_4.next];
+    let _e45 = bsh_inner_refitted(node_3, left_4, _e44);
+    bsh_nodes[i] = _e45;
     return;
 }

@@ -84,7 +84,7 @@ var<uniform> params: TailParams;
 @group(0) @binding(1) 
 var<storage> bounds: array<vec4<f32>>;
 @group(0) @binding(2) 
-var<storage> r2_2: array<f32>;
+var<storage> r2_3: array<f32>;
 @group(0) @binding(3) 
 var<storage, read_write> tail_hist: array<atomic<u32>>;
 @group(0) @binding(4) 
@@ -125,6 +125,21 @@ fn bsh_rightmost_next(nodes_1: u32, i_1: u32) -> u32 {
     }
     let _e8 = bsh_node(nodes_1, _e2.child);
     return _e8.next;
+}
+
+fn bsh_tail_leaf(slot: BshNode, bound: vec4<f32>, r2_2: f32, li: u32, next: u32) -> BshNode {
+    var leaf: BshNode;
+
+    leaf = slot;
+    leaf.center = vec3<f32>(bound.x, bound.y, bound.z);
+    let _e13 = range_radius(bound.w, r2_2);
+    leaf.radius = _e13;
+    leaf.child = BSH_NONE;
+    leaf.next = next;
+    leaf.light = li;
+    leaf.extent = bound.w;
+    let _e20 = leaf;
+    return _e20;
 }
 
 fn bsh_tail_bin(hist: u32, b_3: u32) -> u32 {
@@ -294,7 +309,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
             let _e69 = params.count;
             if (i_2 < _e69) {
                 let _e75 = bounds[i_2].w;
-                let _e78 = r2_2[i_2];
+                let _e78 = r2_3[i_2];
                 let _e79 = range_radius(_e75, _e78);
                 let _e80 = bsh_tail_key(_e79);
                 let _e83 = atomicAdd((&tail_hist[_e80]), 1u);
@@ -307,7 +322,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
             let _e86 = params.count;
             if (i_2 < _e86) {
                 let _e93 = bounds[i_2].w;
-                let _e96 = r2_2[i_2];
+                let _e96 = r2_3[i_2];
                 let _e99 = atomicLoad((&tail[0]));
                 let _e100 = bsh_in_tail(_e93, _e96, _e99);
                 local = _e100;
@@ -395,38 +410,38 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
                 {
                     let _e171 = s;
                     let _e172 = tail_light(_e171);
-                    let b_5 = bounds[_e172];
-                    let _e178 = params.tree;
-                    let _e179 = s;
-                    let _e184 = s;
-                    let next = select(((_e178 + _e179) + 1u), BSH_NONE, ((_e184 + 1u) == count));
-                    let _e192 = params.tree;
-                    let _e193 = s;
-                    let _e200 = r2_2[_e172];
-                    let _e201 = range_radius(b_5.w, _e200);
-                    bsh_nodes[(_e192 + _e193)] = BshNode(b_5.xyz, _e201, BSH_NONE, next, _e172, b_5.w);
+                    let _e175 = params.tree;
+                    let _e176 = s;
+                    let at = (_e175 + _e176);
+                    let _e181 = s;
+                    let next_1 = select((at + 1u), BSH_NONE, ((_e181 + 1u) == count));
+                    let _e190 = bsh_nodes[at];
+                    let _e193 = bounds[_e172];
+                    let _e196 = r2_3[_e172];
+                    let _e197 = bsh_tail_leaf(_e190, _e193, _e196, _e172, next_1);
+                    bsh_nodes[at] = _e197;
                 }
                 continuing {
-                    let _e206 = s;
-                    s = (_e206 + 1u);
+                    let _e199 = s;
+                    s = (_e199 + 1u);
                 }
             }
-            let _e210 = params.tree;
-            let first = select(_e210, BSH_NONE, (count == 0u));
+            let _e203 = params.tree;
+            let first = select(_e203, BSH_NONE, (count == 0u));
             loop {
-                let _e217 = n;
-                if (_e217 != BSH_NONE) {
+                let _e210 = n;
+                if (_e210 != BSH_NONE) {
                 } else {
                     break;
                 }
                 {
-                    let _e221 = n;
-                    bsh_nodes[_e221].next = first;
+                    let _e214 = n;
+                    bsh_nodes[_e214].next = first;
                 }
                 continuing {
-                    let _e225 = n;
-                    let _e226 = bsh_rightmost_next(BSH, _e225);
-                    n = _e226;
+                    let _e218 = n;
+                    let _e219 = bsh_rightmost_next(BSH, _e218);
+                    n = _e219;
                 }
             }
             return;

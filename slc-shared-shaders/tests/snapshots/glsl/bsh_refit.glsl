@@ -162,28 +162,28 @@ float bsh_range_bound(BshNode node) {
     return _e8;
 }
 
-BshNode bsh_node(uint nodes, uint i) {
-    BshNode _e4 = _group_0_binding_4_cs[i];
-    return _e4;
-}
-
 bool bsh_in_tail(float extent_1, float r2_2, uint cut) {
     float _e3 = range_radius(extent_1, r2_2);
     uint _e4 = bsh_tail_key(_e3);
     return (_e4 >= cut);
 }
 
+BshNode bsh_leaf_refitted(BshNode node_1, vec4 bound, float r2_3, uint cut_1) {
+    BshNode leaf = BshNode(vec3(0.0), 0.0, 0u, 0u, 0u, 0.0);
+    bool _e5 = bsh_in_tail(bound.w, r2_3, cut_1);
+    leaf = node_1;
+    leaf.center = vec3(bound.x, bound.y, bound.z);
+    float _e16 = range_radius(bound.w, (_e5 ? 0.0 : r2_3));
+    leaf.radius = _e16;
+    leaf.extent = bound.w;
+    leaf.light = ((node_1.light & 2147483647u) | (_e5 ? BSH_TAIL : 0u));
+    BshNode _e27 = leaf;
+    return _e27;
+}
+
 vec4 bsh_pair_sphere(BshNode left, BshNode right) {
     vec4 _e6 = sphere_union(left.center, left.radius, right.center, right.radius);
     return _e6;
-}
-
-vec4 bsh_children_sphere(uint nodes_1, uint i_1) {
-    BshNode _e2 = bsh_node(nodes_1, i_1);
-    BshNode _e4 = bsh_node(nodes_1, _e2.child);
-    BshNode _e6 = bsh_node(nodes_1, _e4.next);
-    vec4 _e7 = bsh_pair_sphere(_e4, _e6);
-    return _e7;
 }
 
 float bsh_pair_extent(BshNode left_1, BshNode right_1, vec3 center) {
@@ -194,26 +194,26 @@ float bsh_pair_extent(BshNode left_1, BshNode right_1, vec3 center) {
     return (a + _e16);
 }
 
-float bsh_children_extent(uint nodes_2, uint i_2, vec3 center_1) {
-    BshNode _e3 = bsh_node(nodes_2, i_2);
-    BshNode _e5 = bsh_node(nodes_2, _e3.child);
-    BshNode _e7 = bsh_node(nodes_2, _e5.next);
-    float _e8 = bsh_pair_extent(_e5, _e7, center_1);
-    return _e8;
-}
-
 float bsh_pair_range(BshNode left_2, BshNode right_2) {
     float _e2 = bsh_range_bound(left_2);
     float _e3 = bsh_range_bound(right_2);
     return max(_e2, _e3);
 }
 
-float bsh_children_range(uint nodes_3, uint i_3) {
-    BshNode _e2 = bsh_node(nodes_3, i_3);
-    BshNode _e4 = bsh_node(nodes_3, _e2.child);
-    BshNode _e6 = bsh_node(nodes_3, _e4.next);
-    float _e7 = bsh_pair_range(_e4, _e6);
-    return _e7;
+BshNode bsh_inner_refitted(BshNode node_2, BshNode left_3, BshNode right_3) {
+    BshNode inner = BshNode(vec3(0.0), 0.0, 0u, 0u, 0u, 0.0);
+    vec4 _e3 = bsh_pair_sphere(left_3, right_3);
+    inner = node_2;
+    inner.center = vec3(_e3.x, _e3.y, _e3.z);
+    inner.radius = _e3.w;
+    vec3 _e14 = inner.center;
+    float _e15 = bsh_pair_extent(left_3, right_3, _e14);
+    inner.extent = _e15;
+    float _e17 = bsh_pair_range(left_3, right_3);
+    uint _e18 = f32_to_bits(_e17);
+    inner.light = _e18;
+    BshNode _e19 = inner;
+    return _e19;
 }
 
 void main() {
@@ -223,30 +223,21 @@ void main() {
         return;
     }
     uint _e9 = _group_0_binding_0_cs.first;
-    uint i_4 = _group_0_binding_1_cs[(_e9 + gid.x)];
-    BshNode node_1 = _group_0_binding_4_cs[i_4];
-    if ((node_1.child == BSH_NONE)) {
-        uint li = (node_1.light & 2147483647u);
-        vec4 bound = _group_0_binding_2_cs[li];
-        float _e29 = _group_0_binding_3_cs[li];
-        uint _e32 = _group_0_binding_5_cs[0];
-        bool _e33 = bsh_in_tail(bound.w, _e29, _e32);
-        _group_0_binding_4_cs[i_4].center = bound.xyz;
-        float _e44 = _group_0_binding_3_cs[li];
-        float _e47 = range_radius(bound.w, (_e33 ? 0.0 : _e44));
-        _group_0_binding_4_cs[i_4].radius = _e47;
-        _group_0_binding_4_cs[i_4].extent = bound.w;
-        _group_0_binding_4_cs[i_4].light = (li | (_e33 ? BSH_TAIL : 0u));
+    uint i = _group_0_binding_1_cs[(_e9 + gid.x)];
+    BshNode node_3 = _group_0_binding_4_cs[i];
+    if ((node_3.child == BSH_NONE)) {
+        uint li = (node_3.light & 2147483647u);
+        vec4 _e27 = _group_0_binding_2_cs[li];
+        float _e30 = _group_0_binding_3_cs[li];
+        uint _e33 = _group_0_binding_5_cs[0];
+        BshNode _e34 = bsh_leaf_refitted(node_3, _e27, _e30, _e33);
+        _group_0_binding_4_cs[i] = _e34;
         return;
     }
-    vec4 _e60 = bsh_children_sphere(BSH, i_4);
-    _group_0_binding_4_cs[i_4].center = _e60.xyz;
-    _group_0_binding_4_cs[i_4].radius = _e60.w;
-    float _e74 = bsh_children_extent(BSH, i_4, _e60.xyz);
-    _group_0_binding_4_cs[i_4].extent = _e74;
-    float _e79 = bsh_children_range(BSH, i_4);
-    uint _e80 = f32_to_bits(_e79);
-    _group_0_binding_4_cs[i_4].light = _e80;
+    BshNode left_4 = _group_0_binding_4_cs[node_3.child];
+    BshNode _e44 = _group_0_binding_4_cs[left_4.next];
+    BshNode _e45 = bsh_inner_refitted(node_3, left_4, _e44);
+    _group_0_binding_4_cs[i] = _e45;
     return;
 }
 

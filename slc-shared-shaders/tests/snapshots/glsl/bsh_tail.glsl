@@ -132,6 +132,20 @@ uint bsh_rightmost_next(uint nodes_1, uint i_1) {
     return _e8.next;
 }
 
+BshNode bsh_tail_leaf(BshNode slot, vec4 bound, float r2_2, uint li, uint next) {
+    BshNode leaf = BshNode(vec3(0.0), 0.0, 0u, 0u, 0u, 0.0);
+    leaf = slot;
+    leaf.center = vec3(bound.x, bound.y, bound.z);
+    float _e13 = range_radius(bound.w, r2_2);
+    leaf.radius = _e13;
+    leaf.child = BSH_NONE;
+    leaf.next = next;
+    leaf.light = li;
+    leaf.extent = bound.w;
+    BshNode _e20 = leaf;
+    return _e20;
+}
+
 uint bsh_tail_bin(uint hist, uint b_3) {
     uint _e4 = wg_bins[b_3];
     return _e4;
@@ -412,8 +426,8 @@ void main() {
             bool loop_init_5 = true;
             while(true) {
                 if (!loop_init_5) {
-                    uint _e206 = s;
-                    s = (_e206 + 1u);
+                    uint _e199 = s;
+                    s = (_e199 + 1u);
                 }
                 loop_init_5 = false;
                 uint _e169 = s;
@@ -424,36 +438,36 @@ void main() {
                 {
                     uint _e171 = s;
                     uint _e172 = tail_light(_e171);
-                    vec4 b_5 = _group_0_binding_1_cs[_e172];
-                    uint _e178 = _group_0_binding_0_cs.tree;
-                    uint _e179 = s;
-                    uint _e184 = s;
-                    uint next = (((_e184 + 1u) == count) ? BSH_NONE : ((_e178 + _e179) + 1u));
-                    uint _e192 = _group_0_binding_0_cs.tree;
-                    uint _e193 = s;
-                    float _e200 = _group_0_binding_2_cs[_e172];
-                    float _e201 = range_radius(b_5.w, _e200);
-                    _group_0_binding_5_cs[(_e192 + _e193)] = BshNode(b_5.xyz, _e201, BSH_NONE, next, _e172, b_5.w);
+                    uint _e175 = _group_0_binding_0_cs.tree;
+                    uint _e176 = s;
+                    uint at = (_e175 + _e176);
+                    uint _e181 = s;
+                    uint next_1 = (((_e181 + 1u) == count) ? BSH_NONE : (at + 1u));
+                    BshNode _e190 = _group_0_binding_5_cs[at];
+                    vec4 _e193 = _group_0_binding_1_cs[_e172];
+                    float _e196 = _group_0_binding_2_cs[_e172];
+                    BshNode _e197 = bsh_tail_leaf(_e190, _e193, _e196, _e172, next_1);
+                    _group_0_binding_5_cs[at] = _e197;
                 }
             }
-            uint _e210 = _group_0_binding_0_cs.tree;
-            uint first = ((count == 0u) ? BSH_NONE : _e210);
+            uint _e203 = _group_0_binding_0_cs.tree;
+            uint first = ((count == 0u) ? BSH_NONE : _e203);
             bool loop_init_6 = true;
             while(true) {
                 if (!loop_init_6) {
-                    uint _e225 = n;
-                    uint _e226 = bsh_rightmost_next(BSH, _e225);
-                    n = _e226;
+                    uint _e218 = n;
+                    uint _e219 = bsh_rightmost_next(BSH, _e218);
+                    n = _e219;
                 }
                 loop_init_6 = false;
-                uint _e217 = n;
-                if ((_e217 != BSH_NONE)) {
+                uint _e210 = n;
+                if ((_e210 != BSH_NONE)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e221 = n;
-                    _group_0_binding_5_cs[_e221].next = first;
+                    uint _e214 = n;
+                    _group_0_binding_5_cs[_e214].next = first;
                 }
             }
             return;

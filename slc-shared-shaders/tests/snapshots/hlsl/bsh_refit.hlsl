@@ -80,7 +80,7 @@ static const uint BSH_TILE_SUBTREES = 256u;
 cbuffer params : register(b0) { RefitParams params; }
 ByteAddressBuffer order : register(t1);
 ByteAddressBuffer bounds : register(t2);
-ByteAddressBuffer r2_3 : register(t3);
+ByteAddressBuffer r2_4 : register(t3);
 RWByteAddressBuffer bsh_nodes : register(u4);
 ByteAddressBuffer tail : register(t5);
 
@@ -161,24 +161,6 @@ float bsh_range_bound(BshNode node)
     return _e8;
 }
 
-BshNode ConstructBshNode(float3 arg0, float arg1, uint arg2, uint arg3, uint arg4, float arg5) {
-    BshNode ret = (BshNode)0;
-    ret.center_ = arg0;
-    ret.radius = arg1;
-    ret.child = arg2;
-    ret.next = arg3;
-    ret.light = arg4;
-    ret.extent = arg5;
-    return ret;
-}
-
-BshNode bsh_node(uint nodes, uint i)
-{
-    BshNode _e4 = ConstructBshNode(asfloat(bsh_nodes.Load3(i*32+0)), asfloat(bsh_nodes.Load(i*32+12)), asuint(bsh_nodes.Load(i*32+16)), asuint(bsh_nodes.Load(i*32+20)), asuint(bsh_nodes.Load(i*32+24)), asfloat(bsh_nodes.Load(i*32+28)));
-    const BshNode bshnode = _e4;
-    return bshnode;
-}
-
 bool bsh_in_tail(float extent_1, float r2_2, uint cut)
 {
     const float _e3 = range_radius(extent_1, r2_2);
@@ -186,19 +168,26 @@ bool bsh_in_tail(float extent_1, float r2_2, uint cut)
     return (_e4 >= cut);
 }
 
+BshNode bsh_leaf_refitted(BshNode node_1, float4 bound, float r2_3, uint cut_1)
+{
+    BshNode leaf = (BshNode)0;
+
+    const bool _e5 = bsh_in_tail(bound.w, r2_3, cut_1);
+    leaf = node_1;
+    leaf.center_ = float3(bound.x, bound.y, bound.z);
+    const float _e16 = range_radius(bound.w, (_e5 ? 0.0 : r2_3));
+    leaf.radius = _e16;
+    leaf.extent = bound.w;
+    leaf.light = ((node_1.light & 2147483647u) | (_e5 ? BSH_TAIL : 0u));
+    BshNode _e27 = leaf;
+    const BshNode bshnode = _e27;
+    return bshnode;
+}
+
 float4 bsh_pair_sphere(BshNode left, BshNode right)
 {
     const float4 _e6 = sphere_union(left.center_, left.radius, right.center_, right.radius);
     return _e6;
-}
-
-float4 bsh_children_sphere(uint nodes_1, uint i_1)
-{
-    const BshNode _e2 = bsh_node(nodes_1, i_1);
-    const BshNode _e4 = bsh_node(nodes_1, _e2.child);
-    const BshNode _e6 = bsh_node(nodes_1, _e4.next);
-    const float4 _e7 = bsh_pair_sphere(_e4, _e6);
-    return _e7;
 }
 
 float bsh_pair_extent(BshNode left_1, BshNode right_1, float3 center_)
@@ -210,15 +199,6 @@ float bsh_pair_extent(BshNode left_1, BshNode right_1, float3 center_)
     return (a + _e16);
 }
 
-float bsh_children_extent(uint nodes_2, uint i_2, float3 center_1)
-{
-    const BshNode _e3 = bsh_node(nodes_2, i_2);
-    const BshNode _e5 = bsh_node(nodes_2, _e3.child);
-    const BshNode _e7 = bsh_node(nodes_2, _e5.next);
-    const float _e8 = bsh_pair_extent(_e5, _e7, center_1);
-    return _e8;
-}
-
 float bsh_pair_range(BshNode left_2, BshNode right_2)
 {
     const float _e2 = bsh_range_bound(left_2);
@@ -226,13 +206,34 @@ float bsh_pair_range(BshNode left_2, BshNode right_2)
     return max(_e2, _e3);
 }
 
-float bsh_children_range(uint nodes_3, uint i_3)
+BshNode bsh_inner_refitted(BshNode node_2, BshNode left_3, BshNode right_3)
 {
-    const BshNode _e2 = bsh_node(nodes_3, i_3);
-    const BshNode _e4 = bsh_node(nodes_3, _e2.child);
-    const BshNode _e6 = bsh_node(nodes_3, _e4.next);
-    const float _e7 = bsh_pair_range(_e4, _e6);
-    return _e7;
+    BshNode inner = (BshNode)0;
+
+    const float4 _e3 = bsh_pair_sphere(left_3, right_3);
+    inner = node_2;
+    inner.center_ = float3(_e3.x, _e3.y, _e3.z);
+    inner.radius = _e3.w;
+    float3 _e14 = inner.center_;
+    const float _e15 = bsh_pair_extent(left_3, right_3, _e14);
+    inner.extent = _e15;
+    const float _e17 = bsh_pair_range(left_3, right_3);
+    const uint _e18 = f32_to_bits(_e17);
+    inner.light = _e18;
+    BshNode _e19 = inner;
+    const BshNode bshnode_1 = _e19;
+    return bshnode_1;
+}
+
+BshNode ConstructBshNode(float3 arg0, float arg1, uint arg2, uint arg3, uint arg4, float arg5) {
+    BshNode ret = (BshNode)0;
+    ret.center_ = arg0;
+    ret.radius = arg1;
+    ret.child = arg2;
+    ret.next = arg3;
+    ret.light = arg4;
+    ret.extent = arg5;
+    return ret;
 }
 
 [numthreads(64, 1, 1)]
@@ -243,29 +244,36 @@ void main(uint3 gid : SV_DispatchThreadID)
         return;
     }
     uint _e9 = params.first;
-    uint i_4 = asuint(order.Load((_e9 + gid.x)*4));
-    BshNode node_1 = ConstructBshNode(asfloat(bsh_nodes.Load3(i_4*32+0)), asfloat(bsh_nodes.Load(i_4*32+12)), asuint(bsh_nodes.Load(i_4*32+16)), asuint(bsh_nodes.Load(i_4*32+20)), asuint(bsh_nodes.Load(i_4*32+24)), asfloat(bsh_nodes.Load(i_4*32+28)));
-    if ((node_1.child == BSH_NONE)) {
-        uint li = (node_1.light & 2147483647u);
-        float4 bound = asfloat(bounds.Load4(li*16));
-        float _e29 = asfloat(r2_3.Load(li*4));
-        uint _e32 = asuint(tail.Load(0));
-        const bool _e33 = bsh_in_tail(bound.w, _e29, _e32);
-        bsh_nodes.Store3(0+i_4*32, asuint(bound.xyz));
-        float _e44 = asfloat(r2_3.Load(li*4));
-        const float _e47 = range_radius(bound.w, (_e33 ? 0.0 : _e44));
-        bsh_nodes.Store(12+i_4*32, asuint(_e47));
-        bsh_nodes.Store(28+i_4*32, asuint(bound.w));
-        bsh_nodes.Store(24+i_4*32, asuint((li | (_e33 ? BSH_TAIL : 0u))));
+    uint i = asuint(order.Load((_e9 + gid.x)*4));
+    BshNode node_3 = ConstructBshNode(asfloat(bsh_nodes.Load3(i*32+0)), asfloat(bsh_nodes.Load(i*32+12)), asuint(bsh_nodes.Load(i*32+16)), asuint(bsh_nodes.Load(i*32+20)), asuint(bsh_nodes.Load(i*32+24)), asfloat(bsh_nodes.Load(i*32+28)));
+    if ((node_3.child == BSH_NONE)) {
+        uint li = (node_3.light & 2147483647u);
+        float4 _e27 = asfloat(bounds.Load4(li*16));
+        float _e30 = asfloat(r2_4.Load(li*4));
+        uint _e33 = asuint(tail.Load(0));
+        const BshNode _e34 = bsh_leaf_refitted(node_3, _e27, _e30, _e33);
+        {
+            BshNode _value3 = _e34;
+            bsh_nodes.Store3(i*32+0, asuint(_value3.center_));
+            bsh_nodes.Store(i*32+12, asuint(_value3.radius));
+            bsh_nodes.Store(i*32+16, asuint(_value3.child));
+            bsh_nodes.Store(i*32+20, asuint(_value3.next));
+            bsh_nodes.Store(i*32+24, asuint(_value3.light));
+            bsh_nodes.Store(i*32+28, asuint(_value3.extent));
+        }
         return;
     }
-    const float4 _e60 = bsh_children_sphere(BSH, i_4);
-    bsh_nodes.Store3(0+i_4*32, asuint(_e60.xyz));
-    bsh_nodes.Store(12+i_4*32, asuint(_e60.w));
-    const float _e74 = bsh_children_extent(BSH, i_4, _e60.xyz);
-    bsh_nodes.Store(28+i_4*32, asuint(_e74));
-    const float _e79 = bsh_children_range(BSH, i_4);
-    const uint _e80 = f32_to_bits(_e79);
-    bsh_nodes.Store(24+i_4*32, asuint(_e80));
+    BshNode left_4 = ConstructBshNode(asfloat(bsh_nodes.Load3(node_3.child*32+0)), asfloat(bsh_nodes.Load(node_3.child*32+12)), asuint(bsh_nodes.Load(node_3.child*32+16)), asuint(bsh_nodes.Load(node_3.child*32+20)), asuint(bsh_nodes.Load(node_3.child*32+24)), asfloat(bsh_nodes.Load(node_3.child*32+28)));
+    BshNode _e44 = ConstructBshNode(asfloat(bsh_nodes.Load3(left_4.next*32+0)), asfloat(bsh_nodes.Load(left_4.next*32+12)), asuint(bsh_nodes.Load(left_4.next*32+16)), asuint(bsh_nodes.Load(left_4.next*32+20)), asuint(bsh_nodes.Load(left_4.next*32+24)), asfloat(bsh_nodes.Load(left_4.next*32+28)));
+    const BshNode _e45 = bsh_inner_refitted(node_3, left_4, _e44);
+    {
+        BshNode _value2 = _e45;
+        bsh_nodes.Store3(i*32+0, asuint(_value2.center_));
+        bsh_nodes.Store(i*32+12, asuint(_value2.radius));
+        bsh_nodes.Store(i*32+16, asuint(_value2.child));
+        bsh_nodes.Store(i*32+20, asuint(_value2.next));
+        bsh_nodes.Store(i*32+24, asuint(_value2.light));
+        bsh_nodes.Store(i*32+28, asuint(_value2.extent));
+    }
     return;
 }

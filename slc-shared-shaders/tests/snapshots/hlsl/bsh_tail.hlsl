@@ -81,7 +81,7 @@ static const uint BSH_TAIL_CHUNK = 32u;
 
 cbuffer params : register(b0) { TailParams params; }
 ByteAddressBuffer bounds : register(t1);
-ByteAddressBuffer r2_2 : register(t2);
+ByteAddressBuffer r2_3 : register(t2);
 RWByteAddressBuffer tail_hist : register(u3);
 RWByteAddressBuffer tail : register(u4);
 RWByteAddressBuffer bsh_nodes : register(u5);
@@ -137,6 +137,23 @@ uint bsh_rightmost_next(uint nodes_1, uint i_1)
     }
     const BshNode _e8 = bsh_node(nodes_1, _e2.child);
     return _e8.next;
+}
+
+BshNode bsh_tail_leaf(BshNode slot, float4 bound, float r2_2, uint li, uint next)
+{
+    BshNode leaf = (BshNode)0;
+
+    leaf = slot;
+    leaf.center_ = float3(bound.x, bound.y, bound.z);
+    const float _e13 = range_radius(bound.w, r2_2);
+    leaf.radius = _e13;
+    leaf.child = BSH_NONE;
+    leaf.next = next;
+    leaf.light = li;
+    leaf.extent = bound.w;
+    BshNode _e20 = leaf;
+    const BshNode bshnode_1 = _e20;
+    return bshnode_1;
 }
 
 uint bsh_tail_bin(uint hist, uint b_3)
@@ -337,7 +354,7 @@ void main(uint3 gid : SV_DispatchThreadID, uint local_invocation_index : SV_Grou
             uint _e69 = params.count;
             if ((i_2 < _e69)) {
                 float _e75 = asfloat(bounds.Load(12+i_2*16));
-                float _e78 = asfloat(r2_2.Load(i_2*4));
+                float _e78 = asfloat(r2_3.Load(i_2*4));
                 const float _e79 = range_radius(_e75, _e78);
                 const uint _e80 = bsh_tail_key(_e79);
                 uint _e83; tail_hist.InterlockedAdd(_e80*4, 1u, _e83);
@@ -351,7 +368,7 @@ void main(uint3 gid : SV_DispatchThreadID, uint local_invocation_index : SV_Grou
             uint _e86 = params.count;
             if ((i_2 < _e86)) {
                 float _e93 = asfloat(bounds.Load(12+i_2*16));
-                float _e96 = asfloat(r2_2.Load(i_2*4));
+                float _e96 = asfloat(r2_3.Load(i_2*4));
                 uint _e99; tail.InterlockedOr(0, 0, _e99);
                 const bool _e100 = bsh_in_tail(_e93, _e96, _e99);
                 local = _e100;
@@ -450,8 +467,8 @@ void main(uint3 gid : SV_DispatchThreadID, uint local_invocation_index : SV_Grou
                 if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
                 loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
                 if (!loop_init_5) {
-                    uint _e206 = s;
-                    s = (_e206 + 1u);
+                    uint _e199 = s;
+                    s = (_e199 + 1u);
                 }
                 loop_init_5 = false;
                 uint _e169 = s;
@@ -462,47 +479,47 @@ void main(uint3 gid : SV_DispatchThreadID, uint local_invocation_index : SV_Grou
                 {
                     uint _e171 = s;
                     const uint _e172 = tail_light(_e171);
-                    float4 b_5 = asfloat(bounds.Load4(_e172*16));
-                    uint _e178 = params.tree;
-                    uint _e179 = s;
-                    uint _e184 = s;
-                    uint next = (((_e184 + 1u) == count) ? BSH_NONE : ((_e178 + _e179) + 1u));
-                    uint _e192 = params.tree;
-                    uint _e193 = s;
-                    float _e200 = asfloat(r2_2.Load(_e172*4));
-                    const float _e201 = range_radius(b_5.w, _e200);
+                    uint _e175 = params.tree;
+                    uint _e176 = s;
+                    uint at = (_e175 + _e176);
+                    uint _e181 = s;
+                    uint next_1 = (((_e181 + 1u) == count) ? BSH_NONE : (at + 1u));
+                    BshNode _e190 = ConstructBshNode(asfloat(bsh_nodes.Load3(at*32+0)), asfloat(bsh_nodes.Load(at*32+12)), asuint(bsh_nodes.Load(at*32+16)), asuint(bsh_nodes.Load(at*32+20)), asuint(bsh_nodes.Load(at*32+24)), asfloat(bsh_nodes.Load(at*32+28)));
+                    float4 _e193 = asfloat(bounds.Load4(_e172*16));
+                    float _e196 = asfloat(r2_3.Load(_e172*4));
+                    const BshNode _e197 = bsh_tail_leaf(_e190, _e193, _e196, _e172, next_1);
                     {
-                        BshNode _value6 = ConstructBshNode(b_5.xyz, _e201, BSH_NONE, next, _e172, b_5.w);
-                        bsh_nodes.Store3((_e192 + _e193)*32+0, asuint(_value6.center_));
-                        bsh_nodes.Store((_e192 + _e193)*32+12, asuint(_value6.radius));
-                        bsh_nodes.Store((_e192 + _e193)*32+16, asuint(_value6.child));
-                        bsh_nodes.Store((_e192 + _e193)*32+20, asuint(_value6.next));
-                        bsh_nodes.Store((_e192 + _e193)*32+24, asuint(_value6.light));
-                        bsh_nodes.Store((_e192 + _e193)*32+28, asuint(_value6.extent));
+                        BshNode _value6 = _e197;
+                        bsh_nodes.Store3(at*32+0, asuint(_value6.center_));
+                        bsh_nodes.Store(at*32+12, asuint(_value6.radius));
+                        bsh_nodes.Store(at*32+16, asuint(_value6.child));
+                        bsh_nodes.Store(at*32+20, asuint(_value6.next));
+                        bsh_nodes.Store(at*32+24, asuint(_value6.light));
+                        bsh_nodes.Store(at*32+28, asuint(_value6.extent));
                     }
                 }
             }
-            uint _e210 = params.tree;
-            uint first = ((count == 0u) ? BSH_NONE : _e210);
+            uint _e203 = params.tree;
+            uint first = ((count == 0u) ? BSH_NONE : _e203);
             uint2 loop_bound_9 = uint2(4294967295u, 4294967295u);
             bool loop_init_6 = true;
             while(true) {
                 if (all(loop_bound_9 == uint2(0u, 0u))) { break; }
                 loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
                 if (!loop_init_6) {
-                    uint _e225 = n;
-                    const uint _e226 = bsh_rightmost_next(BSH, _e225);
-                    n = _e226;
+                    uint _e218 = n;
+                    const uint _e219 = bsh_rightmost_next(BSH, _e218);
+                    n = _e219;
                 }
                 loop_init_6 = false;
-                uint _e217 = n;
-                if ((_e217 != BSH_NONE)) {
+                uint _e210 = n;
+                if ((_e210 != BSH_NONE)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e221 = n;
-                    bsh_nodes.Store(20+_e221*32, asuint(first));
+                    uint _e214 = n;
+                    bsh_nodes.Store(20+_e214*32, asuint(first));
                 }
             }
             return;

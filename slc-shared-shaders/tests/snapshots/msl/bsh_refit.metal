@@ -182,16 +182,6 @@ float bsh_range_bound(
     return _e8;
 }
 
-BshNode bsh_node(
-    BshNodes nodes,
-    uint i,
-    device type_8 const& bsh_nodes,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    BshNode _e4 = bsh_nodes[i];
-    return _e4;
-}
-
 bool bsh_in_tail(
     float extent_1,
     float r2_2,
@@ -202,25 +192,30 @@ bool bsh_in_tail(
     return _e4 >= cut;
 }
 
+BshNode bsh_leaf_refitted(
+    BshNode node_1,
+    metal::float4 bound,
+    float r2_3,
+    uint cut_1
+) {
+    BshNode leaf = {};
+    bool _e5 = bsh_in_tail(bound.w, r2_3, cut_1);
+    leaf = node_1;
+    leaf.center = metal::float3(bound.x, bound.y, bound.z);
+    float _e16 = range_radius(bound.w, _e5 ? 0.0 : r2_3);
+    leaf.radius = _e16;
+    leaf.extent = bound.w;
+    leaf.light = (node_1.light & 2147483647u) | (_e5 ? BSH_TAIL : 0u);
+    BshNode _e27 = leaf;
+    return _e27;
+}
+
 metal::float4 bsh_pair_sphere(
     BshNode left,
     BshNode right
 ) {
     metal::float4 _e6 = sphere_union(left.center, left.radius, right.center, right.radius);
     return _e6;
-}
-
-metal::float4 bsh_children_sphere(
-    BshNodes nodes_1,
-    uint i_1,
-    device type_8 const& bsh_nodes,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    BshNode _e2 = bsh_node(nodes_1, i_1, bsh_nodes, _buffer_sizes);
-    BshNode _e4 = bsh_node(nodes_1, _e2.child, bsh_nodes, _buffer_sizes);
-    BshNode _e6 = bsh_node(nodes_1, _e4.next, bsh_nodes, _buffer_sizes);
-    metal::float4 _e7 = bsh_pair_sphere(_e4, _e6);
-    return _e7;
 }
 
 float bsh_pair_extent(
@@ -235,20 +230,6 @@ float bsh_pair_extent(
     return a + _e16;
 }
 
-float bsh_children_extent(
-    BshNodes nodes_2,
-    uint i_2,
-    metal::float3 center_1,
-    device type_8 const& bsh_nodes,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    BshNode _e3 = bsh_node(nodes_2, i_2, bsh_nodes, _buffer_sizes);
-    BshNode _e5 = bsh_node(nodes_2, _e3.child, bsh_nodes, _buffer_sizes);
-    BshNode _e7 = bsh_node(nodes_2, _e5.next, bsh_nodes, _buffer_sizes);
-    float _e8 = bsh_pair_extent(_e5, _e7, center_1);
-    return _e8;
-}
-
 float bsh_pair_range(
     BshNode left_2,
     BshNode right_2
@@ -258,17 +239,24 @@ float bsh_pair_range(
     return metal::max(_e2, _e3);
 }
 
-float bsh_children_range(
-    BshNodes nodes_3,
-    uint i_3,
-    device type_8 const& bsh_nodes,
-    constant _mslBufferSizes& _buffer_sizes
+BshNode bsh_inner_refitted(
+    BshNode node_2,
+    BshNode left_3,
+    BshNode right_3
 ) {
-    BshNode _e2 = bsh_node(nodes_3, i_3, bsh_nodes, _buffer_sizes);
-    BshNode _e4 = bsh_node(nodes_3, _e2.child, bsh_nodes, _buffer_sizes);
-    BshNode _e6 = bsh_node(nodes_3, _e4.next, bsh_nodes, _buffer_sizes);
-    float _e7 = bsh_pair_range(_e4, _e6);
-    return _e7;
+    BshNode inner = {};
+    metal::float4 _e3 = bsh_pair_sphere(left_3, right_3);
+    inner = node_2;
+    inner.center = metal::float3(_e3.x, _e3.y, _e3.z);
+    inner.radius = _e3.w;
+    metal::float3 _e14 = inner.center;
+    float _e15 = bsh_pair_extent(left_3, right_3, _e14);
+    inner.extent = _e15;
+    float _e17 = bsh_pair_range(left_3, right_3);
+    uint _e18 = f32_to_bits(_e17);
+    inner.light = _e18;
+    BshNode _e19 = inner;
+    return _e19;
 }
 
 struct main_Input {
@@ -278,7 +266,7 @@ kernel void main_(
 , constant RefitParams& params [[user(fake0)]]
 , device type_6 const& order [[user(fake0)]]
 , device type_7 const& bounds [[user(fake0)]]
-, device type_4 const& r2_3 [[user(fake0)]]
+, device type_4 const& r2_4 [[user(fake0)]]
 , device type_8& bsh_nodes [[user(fake0)]]
 , device type_6 const& tail [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
@@ -288,29 +276,20 @@ kernel void main_(
         return;
     }
     uint _e9 = params.first;
-    uint i_4 = order[_e9 + gid.x];
-    BshNode node_1 = bsh_nodes[i_4];
-    if (node_1.child == BSH_NONE) {
-        uint li = node_1.light & 2147483647u;
-        metal::float4 bound = bounds[li];
-        float _e29 = r2_3[li];
-        uint _e32 = tail[0];
-        bool _e33 = bsh_in_tail(bound.w, _e29, _e32);
-        bsh_nodes[i_4].center = bound.xyz;
-        float _e44 = r2_3[li];
-        float _e47 = range_radius(bound.w, _e33 ? 0.0 : _e44);
-        bsh_nodes[i_4].radius = _e47;
-        bsh_nodes[i_4].extent = bound.w;
-        bsh_nodes[i_4].light = li | (_e33 ? BSH_TAIL : 0u);
+    uint i = order[_e9 + gid.x];
+    BshNode node_3 = bsh_nodes[i];
+    if (node_3.child == BSH_NONE) {
+        uint li = node_3.light & 2147483647u;
+        metal::float4 _e27 = bounds[li];
+        float _e30 = r2_4[li];
+        uint _e33 = tail[0];
+        BshNode _e34 = bsh_leaf_refitted(node_3, _e27, _e30, _e33);
+        bsh_nodes[i] = _e34;
         return;
     }
-    metal::float4 _e60 = bsh_children_sphere(BSH, i_4, bsh_nodes, _buffer_sizes);
-    bsh_nodes[i_4].center = _e60.xyz;
-    bsh_nodes[i_4].radius = _e60.w;
-    float _e74 = bsh_children_extent(BSH, i_4, _e60.xyz, bsh_nodes, _buffer_sizes);
-    bsh_nodes[i_4].extent = _e74;
-    float _e79 = bsh_children_range(BSH, i_4, bsh_nodes, _buffer_sizes);
-    uint _e80 = f32_to_bits(_e79);
-    bsh_nodes[i_4].light = _e80;
+    BshNode left_4 = bsh_nodes[node_3.child];
+    BshNode _e44 = bsh_nodes[left_4.next];
+    BshNode _e45 = bsh_inner_refitted(node_3, left_4, _e44);
+    bsh_nodes[i] = _e45;
     return;
 }

@@ -157,6 +157,26 @@ uint bsh_rightmost_next(
     return _e8.next;
 }
 
+BshNode bsh_tail_leaf(
+    BshNode slot,
+    metal::float4 bound,
+    float r2_2,
+    uint li,
+    uint next
+) {
+    BshNode leaf = {};
+    leaf = slot;
+    leaf.center = metal::float3(bound.x, bound.y, bound.z);
+    float _e13 = range_radius(bound.w, r2_2);
+    leaf.radius = _e13;
+    leaf.child = BSH_NONE;
+    leaf.next = next;
+    leaf.light = li;
+    leaf.extent = bound.w;
+    BshNode _e20 = leaf;
+    return _e20;
+}
+
 uint bsh_tail_bin(
     TailHist hist,
     uint b_3,
@@ -265,7 +285,7 @@ kernel void main_(
 , uint __local_invocation_index [[thread_index_in_threadgroup]]
 , constant TailParams& params [[user(fake0)]]
 , device type_6 const& bounds [[user(fake0)]]
-, device type_4 const& r2_2 [[user(fake0)]]
+, device type_4 const& r2_3 [[user(fake0)]]
 , device type_8& tail_hist [[user(fake0)]]
 , device type_8& tail [[user(fake0)]]
 , device type_9& bsh_nodes [[user(fake0)]]
@@ -378,7 +398,7 @@ kernel void main_(
             uint _e69 = params.count;
             if (i_2 < _e69) {
                 float _e75 = bounds[i_2].w;
-                float _e78 = r2_2[i_2];
+                float _e78 = r2_3[i_2];
                 float _e79 = range_radius(_e75, _e78);
                 uint _e80 = bsh_tail_key(_e79);
                 uint _e83 = metal::atomic_fetch_add_explicit(&tail_hist[_e80], 1u, metal::memory_order_relaxed);
@@ -392,7 +412,7 @@ kernel void main_(
             uint _e86 = params.count;
             if (i_2 < _e86) {
                 float _e93 = bounds[i_2].w;
-                float _e96 = r2_2[i_2];
+                float _e96 = r2_3[i_2];
                 uint _e99 = metal::atomic_load_explicit(&tail[0], metal::memory_order_relaxed);
                 bool _e100 = bsh_in_tail(_e93, _e96, _e99);
                 local = _e100;
@@ -491,8 +511,8 @@ kernel void main_(
                 if (metal::all(loop_bound_8 == uint2(0u))) { break; }
                 loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
                 if (!loop_init_5) {
-                    uint _e206 = s;
-                    s = _e206 + 1u;
+                    uint _e199 = s;
+                    s = _e199 + 1u;
                 }
                 loop_init_5 = false;
                 uint _e169 = s;
@@ -503,39 +523,39 @@ kernel void main_(
                 {
                     uint _e171 = s;
                     uint _e172 = tail_light(_e171, tail, _buffer_sizes);
-                    metal::float4 b_5 = bounds[_e172];
-                    uint _e178 = params.tree;
-                    uint _e179 = s;
-                    uint _e184 = s;
-                    uint next = ((_e184 + 1u) == count) ? BSH_NONE : ((_e178 + _e179) + 1u);
-                    uint _e192 = params.tree;
-                    uint _e193 = s;
-                    float _e200 = r2_2[_e172];
-                    float _e201 = range_radius(b_5.w, _e200);
-                    bsh_nodes[_e192 + _e193] = BshNode {b_5.xyz, _e201, BSH_NONE, next, _e172, b_5.w};
+                    uint _e175 = params.tree;
+                    uint _e176 = s;
+                    uint at = _e175 + _e176;
+                    uint _e181 = s;
+                    uint next_1 = ((_e181 + 1u) == count) ? BSH_NONE : (at + 1u);
+                    BshNode _e190 = bsh_nodes[at];
+                    metal::float4 _e193 = bounds[_e172];
+                    float _e196 = r2_3[_e172];
+                    BshNode _e197 = bsh_tail_leaf(_e190, _e193, _e196, _e172, next_1);
+                    bsh_nodes[at] = _e197;
                 }
             }
-            uint _e210 = params.tree;
-            uint first = (count == 0u) ? BSH_NONE : _e210;
+            uint _e203 = params.tree;
+            uint first = (count == 0u) ? BSH_NONE : _e203;
             uint2 loop_bound_9 = uint2(4294967295u);
             bool loop_init_6 = true;
             while(true) {
                 if (metal::all(loop_bound_9 == uint2(0u))) { break; }
                 loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
                 if (!loop_init_6) {
-                    uint _e225 = n;
-                    uint _e226 = bsh_rightmost_next(BSH, _e225, bsh_nodes, _buffer_sizes);
-                    n = _e226;
+                    uint _e218 = n;
+                    uint _e219 = bsh_rightmost_next(BSH, _e218, bsh_nodes, _buffer_sizes);
+                    n = _e219;
                 }
                 loop_init_6 = false;
-                uint _e217 = n;
-                if (_e217 != BSH_NONE) {
+                uint _e210 = n;
+                if (_e210 != BSH_NONE) {
                 } else {
                     break;
                 }
                 {
-                    uint _e221 = n;
-                    bsh_nodes[_e221].next = first;
+                    uint _e214 = n;
+                    bsh_nodes[_e214].next = first;
                 }
             }
             return;
