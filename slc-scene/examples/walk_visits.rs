@@ -20,7 +20,9 @@
 //!   with that tail, and `balanced`: the light set's balanced tree
 //!   (`BshSplit::Median`, which the other columns walk) with the same
 //!   tail, as the path tracers walked before (the tail's flat tests not
-//!   counted; each checked to find the same leaves with them).
+//!   counted; each checked to find the same leaves with them); `levels`:
+//!   the built tree's (the GPU refits one level per dispatch; the balanced
+//!   tree has `⌈log₂ n⌉ + 1`).
 //!
 //! One ξ set (seed 1, pass 0), 2,000 points uniform by area on the
 //! non-emissive surfaces. Counts, not times: the same on every machine.
@@ -40,6 +42,19 @@ use slc_scene::scene_file::SceneFile;
 
 /// Shading points per scene.
 const POINTS: u32 = 2000;
+
+/// The levels of the tree in `nodes` (a lone leaf: 1).
+fn levels(nodes: &[BshNode]) -> u32 {
+    let mut below = vec![1u32; nodes.len()];
+    // Reverse pre-order: children before parents.
+    for i in (0..nodes.len()).rev() {
+        let c = nodes[i].child;
+        if c != BSH_NONE {
+            below[i] = 1 + below[c as usize].max(below[nodes[c as usize].next as usize]);
+        }
+    }
+    below.first().copied().unwrap_or(0)
+}
 
 /// Per node: the box of its lights' bounds and the largest range below it.
 fn boxes(
@@ -107,7 +122,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         args.drain(k..k + 2);
     }
     println!(
-        "{:<40} {:>7} {:>9} {:>10} {:>9} {:>9} {:>9} {:>13} {:>9} {:>13} {:>9} {:>10} {:>9} {:>9}",
+        "{:<40} {:>7} {:>9} {:>10} {:>9} {:>9} {:>9} {:>13} {:>9} {:>13} {:>9} {:>10} {:>9} {:>9} {:>7}",
         "scene",
         "lights",
         "auto eps",
@@ -121,7 +136,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         "lit cand.",
         "built tail",
         "balanced",
-        "built"
+        "built",
+        "levels"
     );
     for path in args {
         let f = SceneFile::load(std::path::Path::new(&path))?;
@@ -236,7 +252,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             .file_stem()
             .map_or(path.clone(), |s| s.to_string_lossy().into());
         println!(
-            "{name:<40} {:>7} {eps:>9.4} {candidates:>10.2} {:>9.1} {:>9.1} {:>9.1} {:>13.1} {:>9.1} {:>13.1} {:>9.2} {built_tail:>10} {:>9.1} {:>9.1}",
+            "{name:<40} {:>7} {eps:>9.4} {candidates:>10.2} {:>9.1} {:>9.1} {:>9.1} {:>13.1} {:>9.1} {:>13.1} {:>9.2} {built_tail:>10} {:>9.1} {:>9.1} {:>7}",
             pts.lights().len(),
             row[0],
             row[1],
@@ -246,7 +262,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             row[5],
             found_by[4] as f64 / POINTS as f64,
             tree_visits[0] as f64 / POINTS as f64,
-            tree_visits[1] as f64 / POINTS as f64
+            tree_visits[1] as f64 / POINTS as f64,
+            levels(&built.nodes()[..built.tree_len()])
         );
     }
     Ok(())
