@@ -2,13 +2,13 @@
 //! included: bad input is rejected before it reaches the tree; accepted
 //! input answers every query exactly as a brute-force scan, with a range
 //! tail of 0 to 4 lights (`Bsh::with_tail`) as without, split at the
-//! median or by the sphere-area heuristic.
+//! median or by the sphere-area heuristic, 2 to 8 wide.
 #![no_main]
 
 use arbitrary::Arbitrary;
 use glam::Vec3;
 use libfuzzer_sys::fuzz_target;
-use slc_core::bsh::{Bsh, BshSplit};
+use slc_core::bsh::{Bsh, BshShape, BshSplit};
 use slc_core::light::LightBound;
 use slc_core::sphere::{Aabb, Sphere};
 
@@ -25,11 +25,12 @@ fuzz_target!(|input: Input| {
         lights.iter().map(|&(c, e, _)| LightBound { center: Vec3::from(c), extent: e }).collect();
     let valid =
         bounds.iter().all(|b| b.center.is_finite() && b.extent.is_finite() && b.extent >= 0.0);
-    let rule = if input.tail & 0x80 == 0 { BshSplit::Median } else { BshSplit::SphereArea };
-    let mut bsh = match Bsh::build_with(&bounds, rule) {
+    let split = if input.tail & 0x80 == 0 { BshSplit::Median } else { BshSplit::SphereArea };
+    let shape = BshShape { split, width: 2 + (input.tail as u32 >> 4 & 7) % 7 };
+    let mut bsh = match Bsh::build_with(&bounds, shape) {
         Ok(t) => {
             assert!(valid, "accepted invalid bounds");
-            t.with_tail((input.tail & 0x7f) as usize % 5).expect("a tail of at most 4")
+            t.with_tail((input.tail & 0xf) as usize % 5).expect("a tail of at most 4")
         }
         Err(_) => {
             assert!(!valid, "rejected valid bounds");

@@ -6,19 +6,21 @@
 //!   their centres along the longest axis of the centres' box (a balanced
 //!   tree, depth `⌈log₂ n⌉`: the direct pass's lights), or by the
 //!   *sphere-area heuristic* (the path tracers' lights: fewer visits per
-//!   walk, depth at most [`BSH_MAX_DEPTH`]). The lights' bounds, not their
+//!   walk, depth at most [`BSH_MAX_DEPTH`]), then laid out ([`BshShape`]). The lights' bounds, not their
 //!   random ranges, decide the tree, so it stays valid when the ranges
 //!   change.
 //! - **Refit** every frame/pass for new random ranges in O(n): leaves become
 //!   `(c, R + r)`; each inner node the (f32-conservative) union of its two
 //!   children, and the radius about its centre that holds its lights'
 //!   bounds without their ranges (what a glossy receiver's walk takes its
-//!   range scale over), visited in reverse pre-order (children before
-//!   parents).
-//! - **Layout**: a flat array in depth-first pre-order. Each [`BshNode`] has
+//!   range scale over; a wider node's: [`walk::bsh_family_refitted`]),
+//!   visited children before parents.
+//! - **Layout**: a flat array, the binary tree in depth-first pre-order, or
+//!   regrouped 3–8 wide with each node's children side by side
+//!   ([`BshShape`]: the path tracers' tree is 4 wide). Each [`BshNode`] has
 //!   `child` (its first child, [`BSH_NONE`] for leaves) and `next` (the node
 //!   after its subtree, [`BSH_NONE`] at the end), so traversal is the talk's
-//!   stackless loop:
+//!   stackless loop in either:
 //!   `i = 0; while i != NONE { if hit(i) { if leaf { visit; i = next } else { i = child } } else { i = next } }`.
 //! - **Queries** return exactly the lights whose own range sphere passes the
 //!   test (leaf test = brute-force test), because every inner sphere
@@ -71,7 +73,9 @@ crate::shared! {
         pub center: vec3f,
         /// Bounding-sphere radius (may be +∞).
         pub radius: f32,
-        /// First child (always `self + 1`), or `BSH_NONE` for a leaf.
+        /// First child, or `BSH_NONE` for a leaf (in a binary tree
+        /// `self + 1`; in a wide one the first of its children side by
+        /// side, each one's `next` the following one: [`BshShape`]).
         pub child: u32,
         /// Next node after this subtree in pre-order, or `BSH_NONE`.
         pub next: u32,
@@ -248,15 +252,21 @@ pub mod walk {
             return bsh_tail_key(range_radius(extent, r2)) >= cut;
         }
 
-        /// The node after `i` on the tree's rightmost path (its second
-        /// child), or `BSH_NONE` at its leaf: the nodes whose `next` ends a
-        /// walk of the tree, which the refit points at the range tail.
+        /// The node after `i` on the tree's rightmost path (its last
+        /// child: the one whose `next` is `i`'s), or `BSH_NONE` at its
+        /// leaf: the nodes whose `next` ends a walk of the tree, which the
+        /// refit points at the range tail. Read it before rewriting `i`'s
+        /// `next`.
         pub fn bsh_rightmost_next(nodes: BshNodes, i: u32) -> u32 {
             let node: BshNode = bsh_node(nodes, i);
             if node.child == BSH_NONE {
                 return BSH_NONE;
             }
-            return bsh_node(nodes, node.child).next;
+            let mut c: u32 = node.child;
+            while bsh_node(nodes, c).next != node.next {
+                c = bsh_node(nodes, c).next;
+            }
+            return c;
         }
 
         /// Leaf `node` refitted for its light's bound `bound` (centre,
@@ -272,6 +282,25 @@ pub mod walk {
             leaf.extent = bound.w;
             leaf.light = (node.light & (BSH_TAIL - 1)) | select(0, BSH_TAIL, in_tail);
             return leaf;
+        }
+
+        /// Inner node `node` refitted from all its children (`child`, then
+        /// each one's `next` up to `node`'s own): [`bsh_inner_refitted`]
+        /// over the first two, then the result with each further child.
+        /// For a binary node it is [`bsh_inner_refitted`]'s result, bit
+        /// for bit. What the GPU's refit writes, and the CPU's for a wide
+        /// tree.
+        pub fn bsh_family_refitted(nodes: BshNodes, node: BshNode) -> BshNode {
+            let first: BshNode = bsh_node(nodes, node.child);
+            let second: BshNode = bsh_node(nodes, first.next);
+            let mut acc: BshNode = bsh_inner_refitted(node, first, second);
+            let mut c: u32 = second.next;
+            while c != node.next {
+                let n: BshNode = bsh_node(nodes, c);
+                acc = bsh_inner_refitted(acc, acc, n);
+                c = n.next;
+            }
+            return acc;
         }
 
         /// Light `li`'s copy in the range tail, linked to `next`: a leaf
@@ -338,7 +367,8 @@ pub mod walk {
         /// leftmost index (the one whose lower bits are 0); the others are
         /// empty.
         /// The subtrees in index order hold the leaves in traversal order,
-        /// each leaf once.
+        /// each leaf once. Binary trees only (the direct pass's:
+        /// [`BshShape::BALANCED`]).
         pub fn bsh_subtree(nodes: BshNodes, s: u32, depth: u32) -> u32 {
             let mut i: u32 = bsh_first(nodes);
             let mut level: u32 = 0;
@@ -494,6 +524,10 @@ pub struct Bsh {
     /// The range tail's length limit `k` (0: no tail); its `k` slots follow
     /// the tree in `nodes`.
     tail: usize,
+    /// Nodes of the tree proper (the tail's slots follow them).
+    tree: usize,
+    /// Children per inner node ([`BshShape::width`]).
+    width: u32,
 }
 
 impl Bsh {
@@ -502,11 +536,15 @@ impl Bsh {
     /// rejected here, before it can reach the tree. Leaf radii start at the
     /// extents (random range 0) until [`Bsh::refit`].
     pub fn build(bounds: &[LightBound]) -> Result<Self, BshError> {
-        Self::build_with(bounds, BshSplit::Median)
+        Self::build_with(bounds, BshShape::BALANCED)
     }
 
-    /// [`Bsh::build`] with the split rule `rule` ([`BshSplit`]).
-    pub fn build_with(bounds: &[LightBound], rule: BshSplit) -> Result<Self, BshError> {
+    /// [`Bsh::build`] in the shape `shape` ([`BshShape`]: the split rule and
+    /// the children per node).
+    pub fn build_with(bounds: &[LightBound], shape: BshShape) -> Result<Self, BshError> {
+        if !(2..=BSH_MAX_WIDTH).contains(&shape.width) {
+            return Err(BshError::BadWidth(shape.width));
+        }
         if bounds.len() >= BSH_NONE as usize / 2 {
             return Err(BshError::TooManyLights(bounds.len()));
         }
@@ -523,17 +561,54 @@ impl Bsh {
             bounds: bounds.to_vec(),
             leaves: Vec::new(),
             tail: 0,
+            tree: 0,
+            width: 2,
         };
         if !bounds.is_empty() {
             let mut idx: Vec<u32> = (0..bounds.len() as u32).collect();
-            bsh.emit(&mut idx, BSH_NONE, rule, 0);
+            bsh.emit(&mut idx, BSH_NONE, shape.split, 0);
         }
-        bsh.leaves = alloc::vec![BSH_NONE; bounds.len()];
-        for (i, n) in bsh.nodes.iter().enumerate().filter(|(_, n)| n.child == BSH_NONE) {
-            bsh.leaves[n.light as usize] = i as u32;
+        bsh.tree = bsh.nodes.len();
+        bsh.index_leaves();
+        let zero = alloc::vec![0.0; bounds.len()];
+        bsh.refit(&zero)?;
+        bsh.width = shape.width;
+        if shape.width > 2 && bsh.tree > 1 {
+            bsh.nodes = layout::regroup(&bsh.nodes, shape.width as usize);
+            bsh.tree = bsh.nodes.len();
+            bsh.index_leaves();
+            bsh.refit(&zero)?;
         }
-        bsh.refit_split(&alloc::vec![0.0; bounds.len()], usize::MAX, &serial_join)?;
         Ok(bsh)
+    }
+
+    /// Each light's leaf, from the tree's leaves.
+    fn index_leaves(&mut self) {
+        self.leaves = alloc::vec![BSH_NONE; self.bounds.len()];
+        for (i, n) in self.nodes.iter().enumerate().filter(|(_, n)| n.child == BSH_NONE) {
+            self.leaves[(n.light & (BSH_TAIL - 1)) as usize] = i as u32;
+        }
+    }
+
+    /// Children per inner node ([`BshShape::width`]).
+    pub fn width(&self) -> u32 {
+        self.width
+    }
+
+    /// Each tree node's depth (the root's is 0), in node order: what the
+    /// GPU's refit orders its levels by. A node's children follow it in
+    /// the array, in either layout.
+    pub fn depths(&self) -> Vec<u32> {
+        let mut depth = alloc::vec![0u32; self.tree];
+        for i in 0..self.tree {
+            let n = self.nodes[i];
+            let mut c = n.child;
+            while c != BSH_NONE && c != n.next {
+                depth[c as usize] = depth[i] + 1;
+                c = self.nodes[c as usize].next;
+            }
+        }
+        depth
     }
 
     /// Emits the subtree over `idx` in pre-order, its root at `depth`;
@@ -584,8 +659,9 @@ impl Bsh {
         self.tail = k;
         let mut i = if tree == 0 { BSH_NONE } else { 0 };
         while i != BSH_NONE {
+            let last = walk::bsh_rightmost_next(&self.nodes, i);
             self.nodes[i as usize].next = BSH_NONE;
-            i = walk::bsh_rightmost_next(&self.nodes, i);
+            i = last;
         }
         if !self.nodes.is_empty() {
             let slot = BshNode { child: BSH_NONE, next: BSH_NONE, ..self.nodes[0] };
@@ -602,7 +678,7 @@ impl Bsh {
 
     /// Nodes of the tree proper: the range tail's slots follow them.
     pub fn tree_len(&self) -> usize {
-        if self.nodes.is_empty() { 0 } else { 2 * self.bounds.len() - 1 }
+        self.tree
     }
 
     /// Refits every sphere for new squared random ranges, one per light
@@ -617,7 +693,8 @@ impl Bsh {
     /// may run the two at once (the CPU path tracer passes rayon's
     /// `join`): the same nodes, bit for bit (each node is a function of its
     /// children alone, and a subtree is a contiguous run of the pre-order
-    /// array).
+    /// array). A wide tree ([`BshShape::width`] > 2), whose subtrees are
+    /// not contiguous, refits serially.
     pub fn refit_split(&mut self, r2: &[f32], grain: usize, join: &Join) -> Result<(), BshError> {
         self.check_ranges(r2)?;
         if self.nodes.is_empty() {
@@ -626,7 +703,11 @@ impl Bsh {
         let cut = self.tail_cut(r2);
         let tree = self.tree_len();
         let leaf = LeafRefit { bounds: &self.bounds, r2, cut };
-        refit_subtree(&mut self.nodes[..tree], 0, &leaf, grain.max(1), join);
+        if self.width == 2 {
+            refit_subtree(&mut self.nodes[..tree], 0, &leaf, grain.max(1), join);
+        } else {
+            refit_wide(&mut self.nodes[..tree], &leaf);
+        }
         if self.tail > 0 {
             self.link_tail(r2, cut);
         }
@@ -671,8 +752,9 @@ impl Bsh {
         };
         let mut i = 0;
         while i != BSH_NONE {
+            let last = walk::bsh_rightmost_next(&self.nodes, i);
             self.nodes[i as usize].next = first;
-            i = walk::bsh_rightmost_next(&self.nodes, i);
+            i = last;
         }
     }
 
@@ -838,7 +920,19 @@ fn refit_subtree(nodes: &mut [BshNode], base: u32, leaf: &LeafRefit, grain: usiz
     head[0] = walk::bsh_inner_refitted(head[0], left[0], right[0]);
 }
 
+/// Refits a wide tree ([`BshShape::width`] > 2) serially, children before
+/// parents (its subtrees are not contiguous runs to split).
+fn refit_wide(nodes: &mut [BshNode], leaf: &LeafRefit) {
+    for k in (0..nodes.len()).rev() {
+        let n = nodes[k];
+        nodes[k] =
+            if n.child == BSH_NONE { leaf.leaf(n) } else { walk::bsh_family_refitted(&*nodes, n) };
+    }
+}
+
+mod layout;
 mod split;
+pub use layout::{BSH_MAX_WIDTH, BshShape};
 pub use split::{BSH_MAX_DEPTH, BshSplit};
 
 #[cfg(test)]

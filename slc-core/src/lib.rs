@@ -174,6 +174,9 @@ pub enum BshError {
     /// A range tail longer than [`crate::bsh::BSH_TAIL_MAX`].
     #[error("a range tail of {0} lights exceeds the most the walk tests flat ({max})", max = crate::bsh::BSH_TAIL_MAX)]
     TailTooLong(usize),
+    /// A tree width outside 2..=[`crate::bsh::BSH_MAX_WIDTH`].
+    #[error("a tree {0} children wide is outside 2..={max}", max = crate::bsh::BSH_MAX_WIDTH)]
+    BadWidth(u32),
 }
 
 /// An LM-63 parse error with the (1-based) line it was found on.

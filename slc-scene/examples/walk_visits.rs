@@ -16,13 +16,15 @@
 //!   `lit cand.` counts the candidates left (those of nonzero weight);
 //! - `built tail`: how many lights the path tracers' tail (`PtScene::bsh`)
 //!   takes for the same ranges; `built`: the visits of the path tracers'
-//!   own tree (split by the sphere-area heuristic, `BshSplit::SphereArea`)
-//!   with that tail, and `balanced`: the light set's balanced tree
+//!   own tree (split by the sphere-area heuristic and 4 wide,
+//!   `BshShape::WIDE`) with that tail, and `balanced`: the light set's balanced tree
 //!   (`BshSplit::Median`, which the other columns walk) with the same
 //!   tail, as the path tracers walked before (the tail's flat tests not
 //!   counted; each checked to find the same leaves with them); `levels`:
 //!   the built tree's (the GPU refits one level per dispatch; the balanced
-//!   tree has `⌈log₂ n⌉ + 1`).
+//!   tree has `⌈log₂ n⌉ + 1`). A visit is a node tested: a 4-wide tree
+//!   tests more nodes than a binary one, side by side (see `wide_walk`
+//!   for times).
 //!
 //! One ξ set (seed 1, pass 0), 2,000 points uniform by area on the
 //! non-emissive surfaces. Counts, not times: the same on every machine.
@@ -42,19 +44,6 @@ use slc_scene::scene_file::SceneFile;
 
 /// Shading points per scene.
 const POINTS: u32 = 2000;
-
-/// The levels of the tree in `nodes` (a lone leaf: 1).
-fn levels(nodes: &[BshNode]) -> u32 {
-    let mut below = vec![1u32; nodes.len()];
-    // Reverse pre-order: children before parents.
-    for i in (0..nodes.len()).rev() {
-        let c = nodes[i].child;
-        if c != BSH_NONE {
-            below[i] = 1 + below[c as usize].max(below[nodes[c as usize].next as usize]);
-        }
-    }
-    below.first().copied().unwrap_or(0)
-}
 
 /// Per node: the box of its lights' bounds and the largest range below it.
 fn boxes(
@@ -263,7 +252,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             found_by[4] as f64 / POINTS as f64,
             tree_visits[0] as f64 / POINTS as f64,
             tree_visits[1] as f64 / POINTS as f64,
-            levels(&built.nodes()[..built.tree_len()])
+            built.depths().into_iter().max().unwrap_or(0) + 1
         );
     }
     Ok(())

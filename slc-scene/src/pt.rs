@@ -9,7 +9,7 @@ use crate::light_bvh::LightBvh;
 use crate::lights::{LightSet, emissive_triangles};
 use crate::scene::Scene;
 use glam::Vec3;
-use slc_core::bsh::{Bsh, BshSplit};
+use slc_core::bsh::{Bsh, BshShape};
 use slc_core::light::Light;
 
 /// Reservoir slots of `slc-reservoir`.
@@ -126,9 +126,10 @@ pub struct PtScene {
     /// Light index of each emissive triangle (u32::MAX for others).
     light_of_triangle: Vec<u32>,
     /// The BSH both path tracers refit and walk: over the light set's
-    /// bounds, split by the sphere-area heuristic (fewer visits per walk
-    /// than the light set's balanced tree, which the direct pass deals
-    /// out to tiles), with a range tail of [`RANGE_TAIL`].
+    /// bounds, split by the sphere-area heuristic and 4 wide
+    /// ([`BshShape::WIDE`]: a faster walk than the light set's balanced
+    /// binary tree, which the direct pass deals out to tiles), with a range
+    /// tail of [`RANGE_TAIL`].
     bsh: Bsh,
 }
 
@@ -155,7 +156,7 @@ impl PtScene {
         }
         let lights = LightSet::new(lights)?;
         let light_bvh = LightBvh::new(lights.lights(), lights.cones());
-        let bsh = Bsh::build_with(lights.bounds(), BshSplit::SphereArea)
+        let bsh = Bsh::build_with(lights.bounds(), BshShape::WIDE)
             .and_then(|t| t.with_tail(RANGE_TAIL))
             .map_err(|e| RenderError::Setting(e.to_string()))?;
         Ok(PtScene { scene: scene.clone(), lights, light_bvh, light_of_triangle, bsh })
@@ -176,8 +177,8 @@ impl PtScene {
         &self.lights
     }
 
-    /// The BSH the path tracers refit every pass and walk, as built: split
-    /// by [`BshSplit::SphereArea`], with a range tail of [`RANGE_TAIL`].
+    /// The BSH the path tracers refit every pass and walk, as built:
+    /// [`BshShape::WIDE`], with a range tail of [`RANGE_TAIL`].
     pub fn bsh(&self) -> &Bsh {
         &self.bsh
     }

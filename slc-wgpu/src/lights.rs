@@ -46,17 +46,10 @@ pub(crate) fn types_within(inner: LightTypes, outer: LightTypes) -> bool {
 /// range tail's slots after it are `bsh_tail`'s).
 fn refit_order(bsh: &Bsh, n_lights: usize) -> (Vec<u32>, Vec<(u32, u32)>, Vec<u32>) {
     let nodes = &bsh.nodes()[..bsh.tree_len()];
-    let mut depth = vec![0u32; nodes.len()];
+    let depth = bsh.depths();
     let mut leaf = vec![0u32; n_lights];
-    for i in 0..nodes.len() {
-        let n = &nodes[i];
-        if n.child == BSH_NONE {
-            leaf[(n.light & !BSH_TAIL) as usize] = i as u32;
-        } else {
-            let left = n.child as usize;
-            depth[left] = depth[i] + 1;
-            depth[nodes[left].next as usize] = depth[i] + 1;
-        }
+    for (i, n) in nodes.iter().enumerate().filter(|(_, n)| n.child == BSH_NONE) {
+        leaf[(n.light & !BSH_TAIL) as usize] = i as u32;
     }
     let deepest = depth.iter().copied().max().unwrap_or(0);
     let mut order = Vec::with_capacity(nodes.len());

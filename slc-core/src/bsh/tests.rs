@@ -6,18 +6,16 @@ fn pt(x: f32, y: f32, z: f32) -> LightBound {
     LightBound { center: Vec3::new(x, y, z), extent: 0.0 }
 }
 
-/// Either split rule, from a uniform number.
-fn split_of(u: f32) -> BshSplit {
-    if u < 0.5 { BshSplit::Median } else { BshSplit::SphereArea }
+/// Either split rule and a width of 2, 3, 4 or 8, from two uniform
+/// numbers.
+fn shape_of(u: f32, v: f32) -> BshShape {
+    let split = if u < 0.5 { BshSplit::Median } else { BshSplit::SphereArea };
+    BshShape { split, width: [2, 3, 4, 8][(v * 4.0) as usize] }
 }
 
 /// The depth of the deepest leaf (the root's is 0).
 fn depth(t: &Bsh) -> u32 {
-    fn below(n: &[BshNode], i: u32) -> u32 {
-        let c = n[i as usize].child;
-        if c == BSH_NONE { 0 } else { 1 + below(n, c).max(below(n, n[c as usize].next)) }
-    }
-    if t.is_empty() { 0 } else { below(t.nodes(), 0) }
+    t.depths().into_iter().max().unwrap_or(0)
 }
 
 #[test]
@@ -47,8 +45,8 @@ fn links_form_preorder() {
 /// here the second before the first, which their independence allows)
 /// leaves the same nodes as the serial one, bit for bit, over 300
 /// lights with heavy-tailed ranges, an unbalanced count and extents, at
-/// every grain, on a balanced and a sphere-area tree; every light's leaf
-/// is its own.
+/// every grain, on balanced, sphere-area and 4-wide trees (which refit
+/// serially); every light's leaf is its own.
 #[test]
 fn split_refit_equals_serial_refit() {
     use rand_core::{RngCore, SeedableRng};
@@ -62,12 +60,14 @@ fn split_refit_equals_serial_refit() {
         b();
         a();
     };
-    for (tail, rule) in [(0, BshSplit::Median), (16, BshSplit::Median), (16, BshSplit::SphereArea)]
+    let sah = BshShape { split: BshSplit::SphereArea, width: 2 };
+    for (tail, shape) in
+        [(0, BshShape::BALANCED), (16, BshShape::BALANCED), (16, sah), (16, BshShape::WIDE)]
     {
-        let mut serial = Bsh::build_with(&b, rule).unwrap().with_tail(tail).unwrap();
+        let mut serial = Bsh::build_with(&b, shape).unwrap().with_tail(tail).unwrap();
         serial.refit(&r2).unwrap();
         for grain in [0, 1, 2, 7, 64, 1000] {
-            let mut split = Bsh::build_with(&b, rule).unwrap().with_tail(tail).unwrap();
+            let mut split = Bsh::build_with(&b, shape).unwrap().with_tail(tail).unwrap();
             split.refit_split(&r2, grain, reversed).unwrap();
             assert!(serial.nodes() == split.nodes(), "grain {grain}, tail {tail}");
         }
@@ -84,7 +84,7 @@ fn split_refit_equals_serial_refit() {
 /// `k` and no fewer than the histogram's top bins that fit allow; their
 /// tree leaves are marked and shrunk to their bounds; the root's sphere
 /// no longer holds their ranges; a refit with a smaller tail, and
-/// `with_tail(0)`, take them back.
+/// `with_tail(0)`, take them back. On a binary and a 4-wide tree.
 #[test]
 fn range_tail_takes_the_largest_spheres() {
     use rand_core::{RngCore, SeedableRng};
@@ -96,10 +96,12 @@ fn range_tail_takes_the_largest_spheres() {
         .collect();
     let r2: Vec<f32> = (0..n).map(|_| 0.01 / (1.0 - u()).max(1e-9)).collect();
     let radius: Vec<f32> = b.iter().zip(&r2).map(|(b, &r)| b.range_sphere(r).radius).collect();
-    let mut plain = Bsh::build(&b).unwrap();
-    plain.refit(&r2).unwrap();
-    for k in [1, 4, 16, 64] {
-        let mut t = Bsh::build(&b).unwrap().with_tail(k).unwrap();
+    for (shape, k) in
+        [1, 4, 16, 64].into_iter().map(|k| (BshShape::BALANCED, k)).chain([(BshShape::WIDE, 16)])
+    {
+        let mut plain = Bsh::build_with(&b, shape).unwrap();
+        plain.refit(&r2).unwrap();
+        let mut t = Bsh::build_with(&b, shape).unwrap().with_tail(k).unwrap();
         t.refit(&r2).unwrap();
         assert_eq!((t.tail_capacity(), t.nodes().len()), (k, t.tree_len() + k));
         let tail: Vec<u32> = (0..n as u32)
@@ -137,6 +139,7 @@ fn range_tail_takes_the_largest_spheres() {
         none.refit(&r2).unwrap();
         assert!(none.nodes() == plain.nodes());
     }
+    let plain = Bsh::build(&b).unwrap();
     assert!(matches!(plain.with_tail(65), Err(crate::BshError::TailTooLong(65))));
 }
 
@@ -212,7 +215,7 @@ fn queries_match_brute_force_at_every_scale() {
             .collect();
         let r2: Vec<f32> = (0..n).map(|_| (u() * scale).powi(2)).collect();
         let tail = (u() * 4.0) as usize;
-        let mut t = Bsh::build_with(&b, split_of(u())).unwrap().with_tail(tail).unwrap();
+        let mut t = Bsh::build_with(&b, shape_of(u(), u())).unwrap().with_tail(tail).unwrap();
         t.refit(&r2).unwrap();
         let spheres: Vec<Sphere> = b.iter().zip(&r2).map(|(b, &r)| b.range_sphere(r)).collect();
         let brute = |test: &dyn Fn(&Sphere) -> bool| -> Vec<u32> {
@@ -307,7 +310,7 @@ fn glossy_walk_matches_brute_force() {
             .collect();
         let r2: Vec<f32> = (0..n).map(|_| (0.05 / (1.0 - u()).sqrt()).powi(2)).collect();
         let tail = [0, 1, 8][(u() * 3.0) as usize];
-        let mut t = Bsh::build_with(&b, split_of(u())).unwrap().with_tail(tail).unwrap();
+        let mut t = Bsh::build_with(&b, shape_of(u(), u())).unwrap().with_tail(tail).unwrap();
         t.refit(&r2).unwrap();
         let x = Vec3::new(u(), u(), u()) - 0.5;
         let nrm = (Vec3::new(u(), u(), u()) - 0.5).normalize();
@@ -503,7 +506,7 @@ fn sphere_area_split_keeps_clusters_whole() {
         l.sort();
         l
     };
-    let area = Bsh::build_with(&b, BshSplit::SphereArea).unwrap();
+    let area = Bsh::build_with(&b, BshShape { split: BshSplit::SphereArea, width: 2 }).unwrap();
     assert_eq!(lights_under(&area, 1), [0, 1, 2]);
     let median = Bsh::build(&b).unwrap();
     assert_eq!(lights_under(&median, 1).len(), 8);
@@ -523,7 +526,7 @@ fn sphere_area_depth_is_bounded() {
             [pt(x, 0.0, 0.0), pt(0.0, x, 0.0), pt(0.0, 0.0, x)][i % 3]
         })
         .collect();
-    let mut t = Bsh::build_with(&b, BshSplit::SphereArea).unwrap();
+    let mut t = Bsh::build_with(&b, BshShape { split: BshSplit::SphereArea, width: 2 }).unwrap();
     let d = depth(&t);
     assert!(d > 20 && d <= BSH_MAX_DEPTH, "depth {d}");
     let r2: Vec<f32> = (0..n).map(|k| (1e-3 * (k % 7) as f32).powi(2)).collect();
@@ -535,5 +538,59 @@ fn sphere_area_depth_is_bounded() {
                 .collect();
             assert_eq!(sorted(|f| t.for_each_containing(x, f)), brute);
         }
+    }
+}
+
+/// A wide tree's links: every inner node has 2..=width children side by
+/// side after it (each one's `next` the following one, the last one's its
+/// parent's), every light sits in one leaf, the depth is at most the
+/// binary tree's, and a refit's every sphere holds its children's; too
+/// wide or too narrow a shape is a typed error.
+#[test]
+fn wide_tree_links() {
+    use rand_core::{RngCore, SeedableRng};
+    let mut rng = rand_pcg::Pcg32::seed_from_u64(29);
+    let mut u = move || rng.next_u32() as f32 / 4294967296.0;
+    for (n, width) in [(2, 4), (3, 4), (5, 3), (100, 4), (1000, 4), (777, 8)] {
+        let b: Vec<_> = (0..n)
+            .map(|_| LightBound { center: Vec3::new(u(), u(), u()), extent: 0.01 * u() })
+            .collect();
+        let binary =
+            Bsh::build_with(&b, BshShape { split: BshSplit::SphereArea, width: 2 }).unwrap();
+        let mut t = Bsh::build_with(&b, BshShape { split: BshSplit::SphereArea, width }).unwrap();
+        assert_eq!(t.width(), width);
+        assert!(depth(&t) <= depth(&binary), "{n} lights, {width} wide");
+        let r2: Vec<f32> = (0..n).map(|_| 0.001 / (1.0 - u()).max(1e-3)).collect();
+        t.refit(&r2).unwrap();
+        let nodes = t.nodes();
+        assert_eq!(nodes.len(), t.tree_len());
+        let mut seen = alloc::vec![0; n];
+        for (i, node) in nodes.iter().enumerate() {
+            if node.child == BSH_NONE {
+                seen[node.light as usize] += 1;
+                assert_eq!(t.leaf(node.light as usize), *node);
+                continue;
+            }
+            let (mut c, mut count) = (node.child, 0);
+            assert!(c as usize > i);
+            loop {
+                let child = nodes[c as usize];
+                count += 1;
+                let d = (child.center - node.center).length();
+                assert!(d + child.radius <= node.radius * 1.0001 + 1e-6, "node {i}, child {c}");
+                if child.next == node.next {
+                    break;
+                }
+                assert_eq!(child.next, c + 1, "node {i}: children side by side");
+                c = child.next;
+            }
+            assert!((2..=width).contains(&count), "node {i}: {count} children");
+        }
+        assert_eq!(seen, alloc::vec![1; n]);
+    }
+    for width in [0, 1, 9] {
+        let b = [pt(0.0, 0.0, 0.0), pt(1.0, 0.0, 0.0)];
+        let shape = BshShape { split: BshSplit::Median, width };
+        assert_eq!(Bsh::build_with(&b, shape), Err(BshError::BadWidth(width)));
     }
 }

@@ -3,10 +3,10 @@
 // (`order` lists node indices level by level; RefitParams picks the level):
 // leaves bsh_leaf_refitted (their light's centre, as lights move, radius
 // R + √r² and extent R; a light in the range tail, which `bsh_tail` cut
-// before: radius R and the BSH_TAIL mark), inner nodes bsh_inner_refitted
-// (the union of their two children, the radius about it holding their
-// light bounds and the largest range below them): slc-core's steps, which
-// the CPU's refit runs.
+// before: radius R and the BSH_TAIL mark), inner nodes bsh_family_refitted
+// (the union of their children, the radius about it holding their light
+// bounds and the largest range below them; a wide tree's nodes have up to
+// eight): slc-core's steps, which the CPU's refit runs.
 
 {{ bindings }}
 
@@ -24,6 +24,5 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
         bsh_nodes[i] = bsh_leaf_refitted(node, bounds[li], r2[li], tail[0]);
         return;
     }
-    let left = bsh_nodes[node.child];
-    bsh_nodes[i] = bsh_inner_refitted(node, left, bsh_nodes[left.next]);
+    bsh_nodes[i] = bsh_family_refitted(BSH, node);
 }

@@ -92,8 +92,12 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
                 bsh_nodes[at] = bsh_tail_leaf(bsh_nodes[at], bounds[li], r2[li], li, next);
             }
             let first = select(params.tree, BSH_NONE, count == 0u);
-            for (var n = 0u; n != BSH_NONE; n = bsh_rightmost_next(BSH, n)) {
+            // Each node's last child is found before its `next` changes.
+            var n = 0u;
+            while n != BSH_NONE {
+                let last = bsh_rightmost_next(BSH, n);
                 bsh_nodes[n].next = first;
+                n = last;
             }
         }
     }

@@ -135,12 +135,12 @@ fn sphere_union(c1_: vec3<f32>, r1_: f32, c2_: vec3<f32>, r2_: f32) -> vec4<f32>
         return vec4<f32>(c2_.x, c2_.y, c2_.z, (rm + _e58));
     }
     let r0_ = (0.5f * ((d + r1_) + r2_));
-    let c_1 = (c1_ + (v * ((r0_ - r1_) / d)));
-    let e1_ = (c_1 - c1_);
-    let e2_ = (c_1 - c2_);
+    let c_2 = (c1_ + (v * ((r0_ - r1_) / d)));
+    let e1_ = (c_2 - c1_);
+    let e2_ = (c_2 - c2_);
     let r_1 = max(r0_, max((sqrt(dot(e1_, e1_)) + r1_), (sqrt(dot(e2_, e2_)) + r2_)));
-    let _e82 = sphere_pad(r_1, c_1);
-    return vec4<f32>(c_1.x, c_1.y, c_1.z, (r_1 + _e82));
+    let _e82 = sphere_pad(r_1, c_2);
+    return vec4<f32>(c_2.x, c_2.y, c_2.z, (r_1 + _e82));
 }
 
 fn range_radius(extent: f32, r2_1: f32) -> f32 {
@@ -158,6 +158,11 @@ fn bsh_range_bound(node: BshNode) -> f32 {
     }
     let _e8 = f32_from_bits(node.light);
     return _e8;
+}
+
+fn bsh_node(nodes: u32, i: u32) -> BshNode {
+    let _e4 = bsh_nodes[i];
+    return _e4;
 }
 
 fn bsh_in_tail(extent_1: f32, r2_2: f32, cut: u32) -> bool {
@@ -216,6 +221,35 @@ fn bsh_inner_refitted(node_2: BshNode, left_3: BshNode, right_3: BshNode) -> Bsh
     return _e19;
 }
 
+fn bsh_family_refitted(nodes_1: u32, node_3: BshNode) -> BshNode {
+    var acc: BshNode;
+    var c_1: u32;
+
+    let _e3 = bsh_node(nodes_1, node_3.child);
+    let _e5 = bsh_node(nodes_1, _e3.next);
+    let _e6 = bsh_inner_refitted(node_3, _e3, _e5);
+    acc = _e6;
+    c_1 = _e5.next;
+    loop {
+        let _e10 = c_1;
+        if (_e10 != node_3.next) {
+        } else {
+            break;
+        }
+        {
+            let _e13 = c_1;
+            let _e14 = bsh_node(nodes_1, _e13);
+            let _e15 = acc;
+            let _e16 = acc;
+            let _e17 = bsh_inner_refitted(_e15, _e16, _e14);
+            acc = _e17;
+            c_1 = _e14.next;
+        }
+    }
+    let _e19 = acc;
+    return _e19;
+}
+
 @compute @workgroup_size(64, 1, 1) 
 fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     let _e4 = params.count;
@@ -223,20 +257,18 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         return;
     }
     let _e9 = params.first;
-    let i = order[(_e9 + gid.x)];
-    let node_3 = bsh_nodes[i];
-    if (node_3.child == BSH_NONE) {
-        let li = (node_3.light & 2147483647u);
+    let i_1 = order[(_e9 + gid.x)];
+    let node_4 = bsh_nodes[i_1];
+    if (node_4.child == BSH_NONE) {
+        let li = (node_4.light & 2147483647u);
         let _e27 = bounds[li];
         let _e30 = r2_4[li];
         let _e33 = tail[0];
-        let _e34 = bsh_leaf_refitted(node_3, _e27, _e30, _e33);
-        bsh_nodes[i] = _e34;
+        let _e34 = bsh_leaf_refitted(node_4, _e27, _e30, _e33);
+        bsh_nodes[i_1] = _e34;
         return;
     }
-    let left_4 = bsh_nodes[node_3.child];
-    let _e44 = bsh_nodes[left_4.next];
-    let _e45 = bsh_inner_refitted(node_3, left_4, _e44);
-    bsh_nodes[i] = _e45;
+    let _e38 = bsh_family_refitted(BSH, node_4);
+    bsh_nodes[i_1] = _e38;
     return;
 }

@@ -119,12 +119,28 @@ fn bsh_in_tail(extent_1: f32, r2_1: f32, cut: u32) -> bool {
 }
 
 fn bsh_rightmost_next(nodes_1: u32, i_1: u32) -> u32 {
+    var c_2: u32;
+
     let _e2 = bsh_node(nodes_1, i_1);
     if (_e2.child == BSH_NONE) {
         return BSH_NONE;
     }
-    let _e8 = bsh_node(nodes_1, _e2.child);
-    return _e8.next;
+    c_2 = _e2.child;
+    loop {
+        let _e9 = c_2;
+        let _e10 = bsh_node(nodes_1, _e9);
+        if (_e10.next != _e2.next) {
+        } else {
+            break;
+        }
+        {
+            let _e14 = c_2;
+            let _e15 = bsh_node(nodes_1, _e14);
+            c_2 = _e15.next;
+        }
+    }
+    let _e17 = c_2;
+    return _e17;
 }
 
 fn bsh_tail_leaf(slot: BshNode, bound: vec4<f32>, r2_2: f32, li: u32, next: u32) -> BshNode {
@@ -147,23 +163,23 @@ fn bsh_tail_bin(hist: u32, b_3: u32) -> u32 {
     return _e4;
 }
 
-fn bsh_tail_chunk(hist_1: u32, c_2: u32) -> u32 {
-    let _e4 = wg_chunks[c_2];
+fn bsh_tail_chunk(hist_1: u32, c_3: u32) -> u32 {
+    let _e4 = wg_chunks[c_3];
     return _e4;
 }
 
 fn bsh_tail_cut(hist_2: u32, k: u32) -> u32 {
-    var c_3: u32 = 32u;
+    var c_4: u32 = 32u;
     var sum_1: u32 = 0u;
     var local_2: bool;
     var b_4: u32;
     var local_3: bool;
 
     loop {
-        let _e6 = c_3;
+        let _e6 = c_4;
         if (_e6 > 0u) {
             let _e11 = sum_1;
-            let _e12 = c_3;
+            let _e12 = c_4;
             let _e15 = bsh_tail_chunk(hist_2, (_e12 - 1u));
             local_2 = ((_e11 + _e15) <= k);
         } else {
@@ -176,14 +192,14 @@ fn bsh_tail_cut(hist_2: u32, k: u32) -> u32 {
         }
         {
             let _e20 = sum_1;
-            let _e21 = c_3;
+            let _e21 = c_4;
             let _e24 = bsh_tail_chunk(hist_2, (_e21 - 1u));
             sum_1 = (_e20 + _e24);
-            let _e26 = c_3;
-            c_3 = (_e26 - 1u);
+            let _e26 = c_4;
+            c_4 = (_e26 - 1u);
         }
     }
-    let _e29 = c_3;
+    let _e29 = c_4;
     b_4 = (_e29 * BSH_TAIL_CHUNK);
     let _e33 = b_4;
     let _e34 = b_4;
@@ -436,12 +452,10 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
                 }
                 {
                     let _e214 = n;
-                    bsh_nodes[_e214].next = first;
-                }
-                continuing {
-                    let _e218 = n;
-                    let _e219 = bsh_rightmost_next(BSH, _e218);
-                    n = _e219;
+                    let _e215 = bsh_rightmost_next(BSH, _e214);
+                    let _e217 = n;
+                    bsh_nodes[_e217].next = first;
+                    n = _e215;
                 }
             }
             return;

@@ -137,12 +137,12 @@ vec4 sphere_union(vec3 c1_, float r1_, vec3 c2_, float r2_) {
         return vec4(c2_.x, c2_.y, c2_.z, (rm + _e58));
     }
     float r0_ = (0.5 * ((d + r1_) + r2_));
-    vec3 c_1 = (c1_ + (v * ((r0_ - r1_) / d)));
-    vec3 e1_ = (c_1 - c1_);
-    vec3 e2_ = (c_1 - c2_);
+    vec3 c_2 = (c1_ + (v * ((r0_ - r1_) / d)));
+    vec3 e1_ = (c_2 - c1_);
+    vec3 e2_ = (c_2 - c2_);
     float r_1 = max(r0_, max((sqrt(dot(e1_, e1_)) + r1_), (sqrt(dot(e2_, e2_)) + r2_)));
-    float _e82 = sphere_pad(r_1, c_1);
-    return vec4(c_1.x, c_1.y, c_1.z, (r_1 + _e82));
+    float _e82 = sphere_pad(r_1, c_2);
+    return vec4(c_2.x, c_2.y, c_2.z, (r_1 + _e82));
 }
 
 float range_radius(float extent, float r2_1) {
@@ -160,6 +160,11 @@ float bsh_range_bound(BshNode node) {
     }
     float _e8 = f32_from_bits(node.light);
     return _e8;
+}
+
+BshNode bsh_node(uint nodes, uint i) {
+    BshNode _e4 = _group_0_binding_4_cs[i];
+    return _e4;
 }
 
 bool bsh_in_tail(float extent_1, float r2_2, uint cut) {
@@ -216,6 +221,34 @@ BshNode bsh_inner_refitted(BshNode node_2, BshNode left_3, BshNode right_3) {
     return _e19;
 }
 
+BshNode bsh_family_refitted(uint nodes_1, BshNode node_3) {
+    BshNode acc = BshNode(vec3(0.0), 0.0, 0u, 0u, 0u, 0.0);
+    uint c_1 = 0u;
+    BshNode _e3 = bsh_node(nodes_1, node_3.child);
+    BshNode _e5 = bsh_node(nodes_1, _e3.next);
+    BshNode _e6 = bsh_inner_refitted(node_3, _e3, _e5);
+    acc = _e6;
+    c_1 = _e5.next;
+    while(true) {
+        uint _e10 = c_1;
+        if ((_e10 != node_3.next)) {
+        } else {
+            break;
+        }
+        {
+            uint _e13 = c_1;
+            BshNode _e14 = bsh_node(nodes_1, _e13);
+            BshNode _e15 = acc;
+            BshNode _e16 = acc;
+            BshNode _e17 = bsh_inner_refitted(_e15, _e16, _e14);
+            acc = _e17;
+            c_1 = _e14.next;
+        }
+    }
+    BshNode _e19 = acc;
+    return _e19;
+}
+
 void main() {
     uvec3 gid = gl_GlobalInvocationID;
     uint _e4 = _group_0_binding_0_cs.count;
@@ -223,21 +256,19 @@ void main() {
         return;
     }
     uint _e9 = _group_0_binding_0_cs.first;
-    uint i = _group_0_binding_1_cs[(_e9 + gid.x)];
-    BshNode node_3 = _group_0_binding_4_cs[i];
-    if ((node_3.child == BSH_NONE)) {
-        uint li = (node_3.light & 2147483647u);
+    uint i_1 = _group_0_binding_1_cs[(_e9 + gid.x)];
+    BshNode node_4 = _group_0_binding_4_cs[i_1];
+    if ((node_4.child == BSH_NONE)) {
+        uint li = (node_4.light & 2147483647u);
         vec4 _e27 = _group_0_binding_2_cs[li];
         float _e30 = _group_0_binding_3_cs[li];
         uint _e33 = _group_0_binding_5_cs[0];
-        BshNode _e34 = bsh_leaf_refitted(node_3, _e27, _e30, _e33);
-        _group_0_binding_4_cs[i] = _e34;
+        BshNode _e34 = bsh_leaf_refitted(node_4, _e27, _e30, _e33);
+        _group_0_binding_4_cs[i_1] = _e34;
         return;
     }
-    BshNode left_4 = _group_0_binding_4_cs[node_3.child];
-    BshNode _e44 = _group_0_binding_4_cs[left_4.next];
-    BshNode _e45 = bsh_inner_refitted(node_3, left_4, _e44);
-    _group_0_binding_4_cs[i] = _e45;
+    BshNode _e38 = bsh_family_refitted(BSH, node_4);
+    _group_0_binding_4_cs[i_1] = _e38;
     return;
 }
 

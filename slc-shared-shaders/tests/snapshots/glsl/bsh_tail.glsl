@@ -124,12 +124,27 @@ bool bsh_in_tail(float extent_1, float r2_1, uint cut) {
 }
 
 uint bsh_rightmost_next(uint nodes_1, uint i_1) {
+    uint c_2 = 0u;
     BshNode _e2 = bsh_node(nodes_1, i_1);
     if ((_e2.child == BSH_NONE)) {
         return BSH_NONE;
     }
-    BshNode _e8 = bsh_node(nodes_1, _e2.child);
-    return _e8.next;
+    c_2 = _e2.child;
+    while(true) {
+        uint _e9 = c_2;
+        BshNode _e10 = bsh_node(nodes_1, _e9);
+        if ((_e10.next != _e2.next)) {
+        } else {
+            break;
+        }
+        {
+            uint _e14 = c_2;
+            BshNode _e15 = bsh_node(nodes_1, _e14);
+            c_2 = _e15.next;
+        }
+    }
+    uint _e17 = c_2;
+    return _e17;
 }
 
 BshNode bsh_tail_leaf(BshNode slot, vec4 bound, float r2_2, uint li, uint next) {
@@ -151,22 +166,22 @@ uint bsh_tail_bin(uint hist, uint b_3) {
     return _e4;
 }
 
-uint bsh_tail_chunk(uint hist_1, uint c_2) {
-    uint _e4 = wg_chunks[c_2];
+uint bsh_tail_chunk(uint hist_1, uint c_3) {
+    uint _e4 = wg_chunks[c_3];
     return _e4;
 }
 
 uint bsh_tail_cut(uint hist_2, uint k) {
-    uint c_3 = 32u;
+    uint c_4 = 32u;
     uint sum_1 = 0u;
     bool local_2 = false;
     uint b_4 = 0u;
     bool local_3 = false;
     while(true) {
-        uint _e6 = c_3;
+        uint _e6 = c_4;
         if ((_e6 > 0u)) {
             uint _e11 = sum_1;
-            uint _e12 = c_3;
+            uint _e12 = c_4;
             uint _e15 = bsh_tail_chunk(hist_2, (_e12 - 1u));
             local_2 = ((_e11 + _e15) <= k);
         } else {
@@ -179,14 +194,14 @@ uint bsh_tail_cut(uint hist_2, uint k) {
         }
         {
             uint _e20 = sum_1;
-            uint _e21 = c_3;
+            uint _e21 = c_4;
             uint _e24 = bsh_tail_chunk(hist_2, (_e21 - 1u));
             sum_1 = (_e20 + _e24);
-            uint _e26 = c_3;
-            c_3 = (_e26 - 1u);
+            uint _e26 = c_4;
+            c_4 = (_e26 - 1u);
         }
     }
-    uint _e29 = c_3;
+    uint _e29 = c_4;
     b_4 = (_e29 * BSH_TAIL_CHUNK);
     uint _e33 = b_4;
     uint _e34 = b_4;
@@ -452,14 +467,7 @@ void main() {
             }
             uint _e203 = _group_0_binding_0_cs.tree;
             uint first = ((count == 0u) ? BSH_NONE : _e203);
-            bool loop_init_6 = true;
             while(true) {
-                if (!loop_init_6) {
-                    uint _e218 = n;
-                    uint _e219 = bsh_rightmost_next(BSH, _e218);
-                    n = _e219;
-                }
-                loop_init_6 = false;
                 uint _e210 = n;
                 if ((_e210 != BSH_NONE)) {
                 } else {
@@ -467,7 +475,10 @@ void main() {
                 }
                 {
                     uint _e214 = n;
-                    _group_0_binding_5_cs[_e214].next = first;
+                    uint _e215 = bsh_rightmost_next(BSH, _e214);
+                    uint _e217 = n;
+                    _group_0_binding_5_cs[_e217].next = first;
+                    n = _e215;
                 }
             }
             return;

@@ -133,12 +133,12 @@ float4 sphere_union(float3 c1_, float r1_, float3 c2_, float r2_)
         return float4(c2_.x, c2_.y, c2_.z, (rm + _e58));
     }
     float r0_ = (0.5 * ((d + r1_) + r2_));
-    float3 c_1 = (c1_ + (v * ((r0_ - r1_) / d)));
-    float3 e1_ = (c_1 - c1_);
-    float3 e2_ = (c_1 - c2_);
+    float3 c_2 = (c1_ + (v * ((r0_ - r1_) / d)));
+    float3 e1_ = (c_2 - c1_);
+    float3 e2_ = (c_2 - c2_);
     float r_1 = max(r0_, max((sqrt(dot(e1_, e1_)) + r1_), (sqrt(dot(e2_, e2_)) + r2_)));
-    const float _e82 = sphere_pad(r_1, c_1);
-    return float4(c_1.x, c_1.y, c_1.z, (r_1 + _e82));
+    const float _e82 = sphere_pad(r_1, c_2);
+    return float4(c_2.x, c_2.y, c_2.z, (r_1 + _e82));
 }
 
 float range_radius(float extent, float r2_1)
@@ -161,6 +161,24 @@ float bsh_range_bound(BshNode node)
     return _e8;
 }
 
+BshNode ConstructBshNode(float3 arg0, float arg1, uint arg2, uint arg3, uint arg4, float arg5) {
+    BshNode ret = (BshNode)0;
+    ret.center_ = arg0;
+    ret.radius = arg1;
+    ret.child = arg2;
+    ret.next = arg3;
+    ret.light = arg4;
+    ret.extent = arg5;
+    return ret;
+}
+
+BshNode bsh_node(uint nodes, uint i)
+{
+    BshNode _e4 = ConstructBshNode(asfloat(bsh_nodes.Load3(i*32+0)), asfloat(bsh_nodes.Load(i*32+12)), asuint(bsh_nodes.Load(i*32+16)), asuint(bsh_nodes.Load(i*32+20)), asuint(bsh_nodes.Load(i*32+24)), asfloat(bsh_nodes.Load(i*32+28)));
+    const BshNode bshnode = _e4;
+    return bshnode;
+}
+
 bool bsh_in_tail(float extent_1, float r2_2, uint cut)
 {
     const float _e3 = range_radius(extent_1, r2_2);
@@ -180,8 +198,8 @@ BshNode bsh_leaf_refitted(BshNode node_1, float4 bound, float r2_3, uint cut_1)
     leaf.extent = bound.w;
     leaf.light = ((node_1.light & 2147483647u) | (_e5 ? BSH_TAIL : 0u));
     BshNode _e27 = leaf;
-    const BshNode bshnode = _e27;
-    return bshnode;
+    const BshNode bshnode_1 = _e27;
+    return bshnode_1;
 }
 
 float4 bsh_pair_sphere(BshNode left, BshNode right)
@@ -221,19 +239,42 @@ BshNode bsh_inner_refitted(BshNode node_2, BshNode left_3, BshNode right_3)
     const uint _e18 = f32_to_bits(_e17);
     inner.light = _e18;
     BshNode _e19 = inner;
-    const BshNode bshnode_1 = _e19;
-    return bshnode_1;
+    const BshNode bshnode_2 = _e19;
+    return bshnode_2;
 }
 
-BshNode ConstructBshNode(float3 arg0, float arg1, uint arg2, uint arg3, uint arg4, float arg5) {
-    BshNode ret = (BshNode)0;
-    ret.center_ = arg0;
-    ret.radius = arg1;
-    ret.child = arg2;
-    ret.next = arg3;
-    ret.light = arg4;
-    ret.extent = arg5;
-    return ret;
+BshNode bsh_family_refitted(uint nodes_1, BshNode node_3)
+{
+    BshNode acc = (BshNode)0;
+    uint c_1 = (uint)0;
+
+    const BshNode _e3 = bsh_node(nodes_1, node_3.child);
+    const BshNode _e5 = bsh_node(nodes_1, _e3.next);
+    const BshNode _e6 = bsh_inner_refitted(node_3, _e3, _e5);
+    acc = _e6;
+    c_1 = _e5.next;
+    uint2 loop_bound = uint2(4294967295u, 4294967295u);
+    while(true) {
+        if (all(loop_bound == uint2(0u, 0u))) { break; }
+        loop_bound -= uint2(loop_bound.y == 0u, 1u);
+        uint _e10 = c_1;
+        if ((_e10 != node_3.next)) {
+        } else {
+            break;
+        }
+        {
+            uint _e13 = c_1;
+            const BshNode _e14 = bsh_node(nodes_1, _e13);
+            BshNode _e15 = acc;
+            BshNode _e16 = acc;
+            const BshNode _e17 = bsh_inner_refitted(_e15, _e16, _e14);
+            acc = _e17;
+            c_1 = _e14.next;
+        }
+    }
+    BshNode _e19 = acc;
+    const BshNode bshnode_3 = _e19;
+    return bshnode_3;
 }
 
 [numthreads(64, 1, 1)]
@@ -244,36 +285,34 @@ void main(uint3 gid : SV_DispatchThreadID)
         return;
     }
     uint _e9 = params.first;
-    uint i = asuint(order.Load((_e9 + gid.x)*4));
-    BshNode node_3 = ConstructBshNode(asfloat(bsh_nodes.Load3(i*32+0)), asfloat(bsh_nodes.Load(i*32+12)), asuint(bsh_nodes.Load(i*32+16)), asuint(bsh_nodes.Load(i*32+20)), asuint(bsh_nodes.Load(i*32+24)), asfloat(bsh_nodes.Load(i*32+28)));
-    if ((node_3.child == BSH_NONE)) {
-        uint li = (node_3.light & 2147483647u);
+    uint i_1 = asuint(order.Load((_e9 + gid.x)*4));
+    BshNode node_4 = ConstructBshNode(asfloat(bsh_nodes.Load3(i_1*32+0)), asfloat(bsh_nodes.Load(i_1*32+12)), asuint(bsh_nodes.Load(i_1*32+16)), asuint(bsh_nodes.Load(i_1*32+20)), asuint(bsh_nodes.Load(i_1*32+24)), asfloat(bsh_nodes.Load(i_1*32+28)));
+    if ((node_4.child == BSH_NONE)) {
+        uint li = (node_4.light & 2147483647u);
         float4 _e27 = asfloat(bounds.Load4(li*16));
         float _e30 = asfloat(r2_4.Load(li*4));
         uint _e33 = asuint(tail.Load(0));
-        const BshNode _e34 = bsh_leaf_refitted(node_3, _e27, _e30, _e33);
+        const BshNode _e34 = bsh_leaf_refitted(node_4, _e27, _e30, _e33);
         {
             BshNode _value3 = _e34;
-            bsh_nodes.Store3(i*32+0, asuint(_value3.center_));
-            bsh_nodes.Store(i*32+12, asuint(_value3.radius));
-            bsh_nodes.Store(i*32+16, asuint(_value3.child));
-            bsh_nodes.Store(i*32+20, asuint(_value3.next));
-            bsh_nodes.Store(i*32+24, asuint(_value3.light));
-            bsh_nodes.Store(i*32+28, asuint(_value3.extent));
+            bsh_nodes.Store3(i_1*32+0, asuint(_value3.center_));
+            bsh_nodes.Store(i_1*32+12, asuint(_value3.radius));
+            bsh_nodes.Store(i_1*32+16, asuint(_value3.child));
+            bsh_nodes.Store(i_1*32+20, asuint(_value3.next));
+            bsh_nodes.Store(i_1*32+24, asuint(_value3.light));
+            bsh_nodes.Store(i_1*32+28, asuint(_value3.extent));
         }
         return;
     }
-    BshNode left_4 = ConstructBshNode(asfloat(bsh_nodes.Load3(node_3.child*32+0)), asfloat(bsh_nodes.Load(node_3.child*32+12)), asuint(bsh_nodes.Load(node_3.child*32+16)), asuint(bsh_nodes.Load(node_3.child*32+20)), asuint(bsh_nodes.Load(node_3.child*32+24)), asfloat(bsh_nodes.Load(node_3.child*32+28)));
-    BshNode _e44 = ConstructBshNode(asfloat(bsh_nodes.Load3(left_4.next*32+0)), asfloat(bsh_nodes.Load(left_4.next*32+12)), asuint(bsh_nodes.Load(left_4.next*32+16)), asuint(bsh_nodes.Load(left_4.next*32+20)), asuint(bsh_nodes.Load(left_4.next*32+24)), asfloat(bsh_nodes.Load(left_4.next*32+28)));
-    const BshNode _e45 = bsh_inner_refitted(node_3, left_4, _e44);
+    const BshNode _e38 = bsh_family_refitted(BSH, node_4);
     {
-        BshNode _value2 = _e45;
-        bsh_nodes.Store3(i*32+0, asuint(_value2.center_));
-        bsh_nodes.Store(i*32+12, asuint(_value2.radius));
-        bsh_nodes.Store(i*32+16, asuint(_value2.child));
-        bsh_nodes.Store(i*32+20, asuint(_value2.next));
-        bsh_nodes.Store(i*32+24, asuint(_value2.light));
-        bsh_nodes.Store(i*32+28, asuint(_value2.extent));
+        BshNode _value2 = _e38;
+        bsh_nodes.Store3(i_1*32+0, asuint(_value2.center_));
+        bsh_nodes.Store(i_1*32+12, asuint(_value2.radius));
+        bsh_nodes.Store(i_1*32+16, asuint(_value2.child));
+        bsh_nodes.Store(i_1*32+20, asuint(_value2.next));
+        bsh_nodes.Store(i_1*32+24, asuint(_value2.light));
+        bsh_nodes.Store(i_1*32+28, asuint(_value2.extent));
     }
     return;
 }

@@ -131,12 +131,31 @@ bool bsh_in_tail(float extent_1, float r2_1, uint cut)
 
 uint bsh_rightmost_next(uint nodes_1, uint i_1)
 {
+    uint c_2 = (uint)0;
+
     const BshNode _e2 = bsh_node(nodes_1, i_1);
     if ((_e2.child == BSH_NONE)) {
         return BSH_NONE;
     }
-    const BshNode _e8 = bsh_node(nodes_1, _e2.child);
-    return _e8.next;
+    c_2 = _e2.child;
+    uint2 loop_bound = uint2(4294967295u, 4294967295u);
+    while(true) {
+        if (all(loop_bound == uint2(0u, 0u))) { break; }
+        loop_bound -= uint2(loop_bound.y == 0u, 1u);
+        uint _e9 = c_2;
+        const BshNode _e10 = bsh_node(nodes_1, _e9);
+        if ((_e10.next != _e2.next)) {
+        } else {
+            break;
+        }
+        {
+            uint _e14 = c_2;
+            const BshNode _e15 = bsh_node(nodes_1, _e14);
+            c_2 = _e15.next;
+        }
+    }
+    uint _e17 = c_2;
+    return _e17;
 }
 
 BshNode bsh_tail_leaf(BshNode slot, float4 bound, float r2_2, uint li, uint next)
@@ -162,28 +181,28 @@ uint bsh_tail_bin(uint hist, uint b_3)
     return _e4;
 }
 
-uint bsh_tail_chunk(uint hist_1, uint c_2)
+uint bsh_tail_chunk(uint hist_1, uint c_3)
 {
-    uint _e4 = wg_chunks[min(uint(c_2), 31u)];
+    uint _e4 = wg_chunks[min(uint(c_3), 31u)];
     return _e4;
 }
 
 uint bsh_tail_cut(uint hist_2, uint k)
 {
-    uint c_3 = 32u;
+    uint c_4 = 32u;
     uint sum_1 = 0u;
     bool local_2 = (bool)0;
     uint b_4 = (uint)0;
     bool local_3 = (bool)0;
 
-    uint2 loop_bound = uint2(4294967295u, 4294967295u);
+    uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
     while(true) {
-        if (all(loop_bound == uint2(0u, 0u))) { break; }
-        loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        uint _e6 = c_3;
+        if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
+        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+        uint _e6 = c_4;
         if ((_e6 > 0u)) {
             uint _e11 = sum_1;
-            uint _e12 = c_3;
+            uint _e12 = c_4;
             const uint _e15 = bsh_tail_chunk(hist_2, (_e12 - 1u));
             local_2 = ((_e11 + _e15) <= k);
         } else {
@@ -196,22 +215,22 @@ uint bsh_tail_cut(uint hist_2, uint k)
         }
         {
             uint _e20 = sum_1;
-            uint _e21 = c_3;
+            uint _e21 = c_4;
             const uint _e24 = bsh_tail_chunk(hist_2, (_e21 - 1u));
             sum_1 = (_e20 + _e24);
-            uint _e26 = c_3;
-            c_3 = (_e26 - 1u);
+            uint _e26 = c_4;
+            c_4 = (_e26 - 1u);
         }
     }
-    uint _e29 = c_3;
+    uint _e29 = c_4;
     b_4 = (_e29 * BSH_TAIL_CHUNK);
     uint _e33 = b_4;
     uint _e34 = b_4;
     uint end = (_e33 - min(_e34, BSH_TAIL_CHUNK));
-    uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
+    uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
     while(true) {
-        if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
-        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+        if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
+        loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
         uint _e38 = b_4;
         if ((_e38 > end)) {
             uint _e42 = sum_1;
@@ -269,11 +288,11 @@ void main(uint3 gid : SV_DispatchThreadID, uint local_invocation_index : SV_Grou
     uint _e4 = params.stage;
     if ((_e4 == 1u)) {
         b = i_2;
-        uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
+        uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
         bool loop_init = true;
         while(true) {
-            if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
-            loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
+            if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
+            loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
             if (!loop_init) {
                 uint _e18 = b;
                 b = (_e18 + 64u);
@@ -293,11 +312,11 @@ void main(uint3 gid : SV_DispatchThreadID, uint local_invocation_index : SV_Grou
         }
         GroupMemoryBarrierWithGroupSync();
         c = i_2;
-        uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
+        uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
         bool loop_init_1 = true;
         while(true) {
-            if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
-            loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+            if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
+            loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
             if (!loop_init_1) {
                 uint _e49 = c;
                 c = (_e49 + 64u);
@@ -311,11 +330,11 @@ void main(uint3 gid : SV_DispatchThreadID, uint local_invocation_index : SV_Grou
             {
                 sum = 0u;
                 b_1 = 0u;
-                uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
+                uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
                 bool loop_init_2 = true;
                 while(true) {
-                    if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
-                    loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+                    if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
+                    loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
                     if (!loop_init_2) {
                         uint _e43 = b_1;
                         b_1 = (_e43 + 1u);
@@ -387,11 +406,11 @@ void main(uint3 gid : SV_DispatchThreadID, uint local_invocation_index : SV_Grou
         }
         default: {
             b_2 = i_2;
-            uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
+            uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
             bool loop_init_3 = true;
             while(true) {
-                if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
-                loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+                if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
+                loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
                 if (!loop_init_3) {
                     uint _e119 = b_2;
                     b_2 = (_e119 + 64u);
@@ -411,11 +430,11 @@ void main(uint3 gid : SV_DispatchThreadID, uint local_invocation_index : SV_Grou
                 return;
             }
             uint count; tail.InterlockedOr(4, 0, count);
-            uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
+            uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
             bool loop_init_4 = true;
             while(true) {
-                if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
-                loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+                if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
+                loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
                 if (!loop_init_4) {
                     uint _e165 = a;
                     a = (_e165 + 1u);
@@ -431,10 +450,10 @@ void main(uint3 gid : SV_DispatchThreadID, uint local_invocation_index : SV_Grou
                     const uint _e132 = tail_light(_e131);
                     uint _e133 = a;
                     c_1 = _e133;
-                    uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
+                    uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
                     while(true) {
-                        if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
-                        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+                        if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
+                        loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
                         uint _e135 = c_1;
                         if ((_e135 > 0u)) {
                             uint _e140 = c_1;
@@ -461,11 +480,11 @@ void main(uint3 gid : SV_DispatchThreadID, uint local_invocation_index : SV_Grou
                     { uint dummy_5 = 0; tail.InterlockedExchange((2u + _e161)*4, _e132, dummy_5); }
                 }
             }
-            uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
+            uint2 loop_bound_9 = uint2(4294967295u, 4294967295u);
             bool loop_init_5 = true;
             while(true) {
-                if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
-                loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
+                if (all(loop_bound_9 == uint2(0u, 0u))) { break; }
+                loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
                 if (!loop_init_5) {
                     uint _e199 = s;
                     s = (_e199 + 1u);
@@ -501,17 +520,10 @@ void main(uint3 gid : SV_DispatchThreadID, uint local_invocation_index : SV_Grou
             }
             uint _e203 = params.tree;
             uint first = ((count == 0u) ? BSH_NONE : _e203);
-            uint2 loop_bound_9 = uint2(4294967295u, 4294967295u);
-            bool loop_init_6 = true;
+            uint2 loop_bound_10 = uint2(4294967295u, 4294967295u);
             while(true) {
-                if (all(loop_bound_9 == uint2(0u, 0u))) { break; }
-                loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
-                if (!loop_init_6) {
-                    uint _e218 = n;
-                    const uint _e219 = bsh_rightmost_next(BSH, _e218);
-                    n = _e219;
-                }
-                loop_init_6 = false;
+                if (all(loop_bound_10 == uint2(0u, 0u))) { break; }
+                loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
                 uint _e210 = n;
                 if ((_e210 != BSH_NONE)) {
                 } else {
@@ -519,7 +531,10 @@ void main(uint3 gid : SV_DispatchThreadID, uint local_invocation_index : SV_Grou
                 }
                 {
                     uint _e214 = n;
-                    bsh_nodes.Store(20+_e214*32, asuint(first));
+                    const uint _e215 = bsh_rightmost_next(BSH, _e214);
+                    uint _e217 = n;
+                    bsh_nodes.Store(20+_e217*32, asuint(first));
+                    n = _e215;
                 }
             }
             return;

@@ -150,12 +150,12 @@ metal::float4 sphere_union(
         return metal::float4(c2_.x, c2_.y, c2_.z, rm + _e58);
     }
     float r0_ = 0.5 * ((d + r1_) + r2_);
-    metal::float3 c_1 = c1_ + (v * ((r0_ - r1_) / d));
-    metal::float3 e1_ = c_1 - c1_;
-    metal::float3 e2_ = c_1 - c2_;
+    metal::float3 c_2 = c1_ + (v * ((r0_ - r1_) / d));
+    metal::float3 e1_ = c_2 - c1_;
+    metal::float3 e2_ = c_2 - c2_;
     float r_1 = metal::max(r0_, metal::max(metal::sqrt(metal::dot(e1_, e1_)) + r1_, metal::sqrt(metal::dot(e2_, e2_)) + r2_));
-    float _e82 = sphere_pad(r_1, c_1);
-    return metal::float4(c_1.x, c_1.y, c_1.z, r_1 + _e82);
+    float _e82 = sphere_pad(r_1, c_2);
+    return metal::float4(c_2.x, c_2.y, c_2.z, r_1 + _e82);
 }
 
 float range_radius(
@@ -180,6 +180,16 @@ float bsh_range_bound(
     }
     float _e8 = f32_from_bits(node.light);
     return _e8;
+}
+
+BshNode bsh_node(
+    BshNodes nodes,
+    uint i,
+    device type_8 const& bsh_nodes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    BshNode _e4 = bsh_nodes[i];
+    return _e4;
 }
 
 bool bsh_in_tail(
@@ -259,6 +269,42 @@ BshNode bsh_inner_refitted(
     return _e19;
 }
 
+BshNode bsh_family_refitted(
+    BshNodes nodes_1,
+    BshNode node_3,
+    device type_8 const& bsh_nodes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    BshNode acc = {};
+    uint c_1 = {};
+    BshNode _e3 = bsh_node(nodes_1, node_3.child, bsh_nodes, _buffer_sizes);
+    BshNode _e5 = bsh_node(nodes_1, _e3.next, bsh_nodes, _buffer_sizes);
+    BshNode _e6 = bsh_inner_refitted(node_3, _e3, _e5);
+    acc = _e6;
+    c_1 = _e5.next;
+    uint2 loop_bound = uint2(4294967295u);
+    while(true) {
+        if (metal::all(loop_bound == uint2(0u))) { break; }
+        loop_bound -= uint2(loop_bound.y == 0u, 1u);
+        uint _e10 = c_1;
+        if (_e10 != node_3.next) {
+        } else {
+            break;
+        }
+        {
+            uint _e13 = c_1;
+            BshNode _e14 = bsh_node(nodes_1, _e13, bsh_nodes, _buffer_sizes);
+            BshNode _e15 = acc;
+            BshNode _e16 = acc;
+            BshNode _e17 = bsh_inner_refitted(_e15, _e16, _e14);
+            acc = _e17;
+            c_1 = _e14.next;
+        }
+    }
+    BshNode _e19 = acc;
+    return _e19;
+}
+
 struct main_Input {
 };
 kernel void main_(
@@ -276,20 +322,18 @@ kernel void main_(
         return;
     }
     uint _e9 = params.first;
-    uint i = order[_e9 + gid.x];
-    BshNode node_3 = bsh_nodes[i];
-    if (node_3.child == BSH_NONE) {
-        uint li = node_3.light & 2147483647u;
+    uint i_1 = order[_e9 + gid.x];
+    BshNode node_4 = bsh_nodes[i_1];
+    if (node_4.child == BSH_NONE) {
+        uint li = node_4.light & 2147483647u;
         metal::float4 _e27 = bounds[li];
         float _e30 = r2_4[li];
         uint _e33 = tail[0];
-        BshNode _e34 = bsh_leaf_refitted(node_3, _e27, _e30, _e33);
-        bsh_nodes[i] = _e34;
+        BshNode _e34 = bsh_leaf_refitted(node_4, _e27, _e30, _e33);
+        bsh_nodes[i_1] = _e34;
         return;
     }
-    BshNode left_4 = bsh_nodes[node_3.child];
-    BshNode _e44 = bsh_nodes[left_4.next];
-    BshNode _e45 = bsh_inner_refitted(node_3, left_4, _e44);
-    bsh_nodes[i] = _e45;
+    BshNode _e38 = bsh_family_refitted(BSH, node_4, bsh_nodes, _buffer_sizes);
+    bsh_nodes[i_1] = _e38;
     return;
 }

@@ -149,12 +149,30 @@ uint bsh_rightmost_next(
     device type_9 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
+    uint c_2 = {};
     BshNode _e2 = bsh_node(nodes_1, i_1, bsh_nodes, _buffer_sizes);
     if (_e2.child == BSH_NONE) {
         return BSH_NONE;
     }
-    BshNode _e8 = bsh_node(nodes_1, _e2.child, bsh_nodes, _buffer_sizes);
-    return _e8.next;
+    c_2 = _e2.child;
+    uint2 loop_bound = uint2(4294967295u);
+    while(true) {
+        if (metal::all(loop_bound == uint2(0u))) { break; }
+        loop_bound -= uint2(loop_bound.y == 0u, 1u);
+        uint _e9 = c_2;
+        BshNode _e10 = bsh_node(nodes_1, _e9, bsh_nodes, _buffer_sizes);
+        if (_e10.next != _e2.next) {
+        } else {
+            break;
+        }
+        {
+            uint _e14 = c_2;
+            BshNode _e15 = bsh_node(nodes_1, _e14, bsh_nodes, _buffer_sizes);
+            c_2 = _e15.next;
+        }
+    }
+    uint _e17 = c_2;
+    return _e17;
 }
 
 BshNode bsh_tail_leaf(
@@ -188,10 +206,10 @@ uint bsh_tail_bin(
 
 uint bsh_tail_chunk(
     TailHist hist_1,
-    uint c_2,
+    uint c_3,
     threadgroup type_11& wg_chunks
 ) {
-    uint _e4 = wg_chunks.inner[c_2];
+    uint _e4 = wg_chunks.inner[c_3];
     return _e4;
 }
 
@@ -201,19 +219,19 @@ uint bsh_tail_cut(
     threadgroup type_10& wg_bins,
     threadgroup type_11& wg_chunks
 ) {
-    uint c_3 = 32u;
+    uint c_4 = 32u;
     uint sum_1 = 0u;
     bool local_2 = {};
     uint b_4 = {};
     bool local_3 = {};
-    uint2 loop_bound = uint2(4294967295u);
+    uint2 loop_bound_1 = uint2(4294967295u);
     while(true) {
-        if (metal::all(loop_bound == uint2(0u))) { break; }
-        loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        uint _e6 = c_3;
+        if (metal::all(loop_bound_1 == uint2(0u))) { break; }
+        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+        uint _e6 = c_4;
         if (_e6 > 0u) {
             uint _e11 = sum_1;
-            uint _e12 = c_3;
+            uint _e12 = c_4;
             uint _e15 = bsh_tail_chunk(hist_2, _e12 - 1u, wg_chunks);
             local_2 = (_e11 + _e15) <= k;
         } else {
@@ -226,22 +244,22 @@ uint bsh_tail_cut(
         }
         {
             uint _e20 = sum_1;
-            uint _e21 = c_3;
+            uint _e21 = c_4;
             uint _e24 = bsh_tail_chunk(hist_2, _e21 - 1u, wg_chunks);
             sum_1 = _e20 + _e24;
-            uint _e26 = c_3;
-            c_3 = _e26 - 1u;
+            uint _e26 = c_4;
+            c_4 = _e26 - 1u;
         }
     }
-    uint _e29 = c_3;
+    uint _e29 = c_4;
     b_4 = _e29 * BSH_TAIL_CHUNK;
     uint _e33 = b_4;
     uint _e34 = b_4;
     uint end = _e33 - metal::min(_e34, BSH_TAIL_CHUNK);
-    uint2 loop_bound_1 = uint2(4294967295u);
+    uint2 loop_bound_2 = uint2(4294967295u);
     while(true) {
-        if (metal::all(loop_bound_1 == uint2(0u))) { break; }
-        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+        if (metal::all(loop_bound_2 == uint2(0u))) { break; }
+        loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
         uint _e38 = b_4;
         if (_e38 > end) {
             uint _e42 = sum_1;
@@ -313,11 +331,11 @@ kernel void main_(
     uint _e4 = params.stage;
     if (_e4 == 1u) {
         b = i_2;
-        uint2 loop_bound_2 = uint2(4294967295u);
+        uint2 loop_bound_3 = uint2(4294967295u);
         bool loop_init = true;
         while(true) {
-            if (metal::all(loop_bound_2 == uint2(0u))) { break; }
-            loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
+            if (metal::all(loop_bound_3 == uint2(0u))) { break; }
+            loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
             if (!loop_init) {
                 uint _e18 = b;
                 b = _e18 + 64u;
@@ -337,11 +355,11 @@ kernel void main_(
         }
         metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
         c = i_2;
-        uint2 loop_bound_3 = uint2(4294967295u);
+        uint2 loop_bound_4 = uint2(4294967295u);
         bool loop_init_1 = true;
         while(true) {
-            if (metal::all(loop_bound_3 == uint2(0u))) { break; }
-            loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+            if (metal::all(loop_bound_4 == uint2(0u))) { break; }
+            loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
             if (!loop_init_1) {
                 uint _e49 = c;
                 c = _e49 + 64u;
@@ -355,11 +373,11 @@ kernel void main_(
             {
                 sum = 0u;
                 b_1 = 0u;
-                uint2 loop_bound_4 = uint2(4294967295u);
+                uint2 loop_bound_5 = uint2(4294967295u);
                 bool loop_init_2 = true;
                 while(true) {
-                    if (metal::all(loop_bound_4 == uint2(0u))) { break; }
-                    loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+                    if (metal::all(loop_bound_5 == uint2(0u))) { break; }
+                    loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
                     if (!loop_init_2) {
                         uint _e43 = b_1;
                         b_1 = _e43 + 1u;
@@ -431,11 +449,11 @@ kernel void main_(
         }
         default: {
             b_2 = i_2;
-            uint2 loop_bound_5 = uint2(4294967295u);
+            uint2 loop_bound_6 = uint2(4294967295u);
             bool loop_init_3 = true;
             while(true) {
-                if (metal::all(loop_bound_5 == uint2(0u))) { break; }
-                loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+                if (metal::all(loop_bound_6 == uint2(0u))) { break; }
+                loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
                 if (!loop_init_3) {
                     uint _e119 = b_2;
                     b_2 = _e119 + 64u;
@@ -455,11 +473,11 @@ kernel void main_(
                 return;
             }
             uint count = metal::atomic_load_explicit(&tail[1], metal::memory_order_relaxed);
-            uint2 loop_bound_6 = uint2(4294967295u);
+            uint2 loop_bound_7 = uint2(4294967295u);
             bool loop_init_4 = true;
             while(true) {
-                if (metal::all(loop_bound_6 == uint2(0u))) { break; }
-                loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+                if (metal::all(loop_bound_7 == uint2(0u))) { break; }
+                loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
                 if (!loop_init_4) {
                     uint _e165 = a;
                     a = _e165 + 1u;
@@ -475,10 +493,10 @@ kernel void main_(
                     uint _e132 = tail_light(_e131, tail, _buffer_sizes);
                     uint _e133 = a;
                     c_1 = _e133;
-                    uint2 loop_bound_7 = uint2(4294967295u);
+                    uint2 loop_bound_8 = uint2(4294967295u);
                     while(true) {
-                        if (metal::all(loop_bound_7 == uint2(0u))) { break; }
-                        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+                        if (metal::all(loop_bound_8 == uint2(0u))) { break; }
+                        loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
                         uint _e135 = c_1;
                         if (_e135 > 0u) {
                             uint _e140 = c_1;
@@ -505,11 +523,11 @@ kernel void main_(
                     metal::atomic_store_explicit(&tail[2u + _e161], _e132, metal::memory_order_relaxed);
                 }
             }
-            uint2 loop_bound_8 = uint2(4294967295u);
+            uint2 loop_bound_9 = uint2(4294967295u);
             bool loop_init_5 = true;
             while(true) {
-                if (metal::all(loop_bound_8 == uint2(0u))) { break; }
-                loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
+                if (metal::all(loop_bound_9 == uint2(0u))) { break; }
+                loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
                 if (!loop_init_5) {
                     uint _e199 = s;
                     s = _e199 + 1u;
@@ -537,17 +555,10 @@ kernel void main_(
             }
             uint _e203 = params.tree;
             uint first = (count == 0u) ? BSH_NONE : _e203;
-            uint2 loop_bound_9 = uint2(4294967295u);
-            bool loop_init_6 = true;
+            uint2 loop_bound_10 = uint2(4294967295u);
             while(true) {
-                if (metal::all(loop_bound_9 == uint2(0u))) { break; }
-                loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
-                if (!loop_init_6) {
-                    uint _e218 = n;
-                    uint _e219 = bsh_rightmost_next(BSH, _e218, bsh_nodes, _buffer_sizes);
-                    n = _e219;
-                }
-                loop_init_6 = false;
+                if (metal::all(loop_bound_10 == uint2(0u))) { break; }
+                loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
                 uint _e210 = n;
                 if (_e210 != BSH_NONE) {
                 } else {
@@ -555,7 +566,10 @@ kernel void main_(
                 }
                 {
                     uint _e214 = n;
-                    bsh_nodes[_e214].next = first;
+                    uint _e215 = bsh_rightmost_next(BSH, _e214, bsh_nodes, _buffer_sizes);
+                    uint _e217 = n;
+                    bsh_nodes[_e217].next = first;
+                    n = _e215;
                 }
             }
             return;
