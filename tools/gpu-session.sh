@@ -12,8 +12,9 @@
 #   per pixel instead of per tile, with hardware ray queries for the shadow rays, and at eps 0.03),
 #   500 and 20,000 (Bevy at unbounded ranges left out
 #   there: minutes);
-# - issue 48: the path-tracing suite at 512x512, noise from seed pairs (since 97f020f with the BSH's range tail:
-#   against docs/results/gpu-h200/pt-suite-512.json, d001e5f, it measures the tail on the GPU); then the losing
+# - issue 48: the path-tracing suite at 512x512, noise from seed pairs (since 97f020f with the BSH's range tail,
+#   since f8d059e and 72832ff with the path tracers' tree split by the sphere-area heuristic and 4 wide: against
+#   docs/results/gpu-h200/pt-suite-512.json, d001e5f, it measures the three on the GPU); then the losing
 #   scenes again with the light connections' shadow rays as hardware ray queries (--ray-query).
 # About 530 s on an NVIDIA H200 (the last call's steps: docs/results/gpu-h200-b/log.txt, 490 s, before the
 # ray-query suite); give the run timeout_s 600. Results land

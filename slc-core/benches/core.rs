@@ -1,11 +1,12 @@
 //! Criterion benchmarks of slc-core: keep-test/weight throughput, and BSH
-//! build, refit and point query at 1k, 65,536 and 1M lights.
+//! build, refit and point query at 1k, 65,536 and 1M lights, on the balanced
+//! binary tree and the path tracers' 4-wide one.
 //!
 //! `cargo bench -p slc-core` (add `-- --quick` for a fast pass).
 
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 use rand_core::{RngCore, SeedableRng};
-use slc_core::bsh::Bsh;
+use slc_core::bsh::{Bsh, BshShape};
 use slc_core::glam::Vec3;
 use slc_core::light::LightBound;
 use slc_core::range::{random_range2, slc_keep, slc_weight};
@@ -61,26 +62,37 @@ fn bsh(c: &mut Criterion) {
         g.bench_with_input(BenchmarkId::new("build", n), &bounds, |b, bounds| {
             b.iter(|| Bsh::build(bounds).unwrap())
         });
-        let mut t = Bsh::build(&bounds).unwrap();
-        g.bench_with_input(BenchmarkId::new("refit", n), &r2, |b, r2| {
-            b.iter(|| t.refit(r2).unwrap())
-        });
-        t.refit(&r2).unwrap();
-        let mut hits = 0u64;
-        for &x in &queries {
-            t.for_each_containing(x, |_| hits += 1);
+        // The direct pass's balanced binary tree and the path tracers' 4-wide one.
+        for (shape, name) in [(BshShape::BALANCED, ""), (BshShape::WIDE, "_wide")] {
+            g.throughput(Throughput::Elements(n as u64));
+            if shape == BshShape::WIDE {
+                g.bench_with_input(BenchmarkId::new("build_wide", n), &bounds, |b, bounds| {
+                    b.iter(|| Bsh::build_with(bounds, shape).unwrap())
+                });
+            }
+            let mut t = Bsh::build_with(&bounds, shape).unwrap();
+            g.bench_with_input(BenchmarkId::new(format!("refit{name}"), n), &r2, |b, r2| {
+                b.iter(|| t.refit(r2).unwrap())
+            });
+            t.refit(&r2).unwrap();
+            let mut hits = 0u64;
+            for &x in &queries {
+                t.for_each_containing(x, |_| hits += 1);
+            }
+            let per = hits as f64 / queries.len() as f64;
+            eprintln!("bsh{name} n = {n}: {per:.1} lights per query point");
+            g.throughput(Throughput::Elements(queries.len() as u64));
+            let id = BenchmarkId::new(format!("query_1024_points{name}"), n);
+            g.bench_with_input(id, &queries, |b, q| {
+                b.iter(|| {
+                    let mut hits = 0u32;
+                    for &x in q {
+                        t.for_each_containing(x, |_| hits += 1);
+                    }
+                    black_box(hits)
+                })
+            });
         }
-        eprintln!("bsh n = {n}: {:.1} lights per query point", hits as f64 / queries.len() as f64);
-        g.throughput(Throughput::Elements(queries.len() as u64));
-        g.bench_with_input(BenchmarkId::new("query_1024_points", n), &queries, |b, q| {
-            b.iter(|| {
-                let mut hits = 0u32;
-                for &x in q {
-                    t.for_each_containing(x, |_| hits += 1);
-                }
-                black_box(hits)
-            })
-        });
     }
     g.finish();
 }

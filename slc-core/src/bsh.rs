@@ -515,7 +515,7 @@ pub mod tail {
 }
 
 /// Bounding-sphere hierarchy; see the module docs.
-#[derive(Clone, Debug, Default, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct Bsh {
     nodes: Vec<BshNode>,
     bounds: Vec<LightBound>,
@@ -528,6 +528,20 @@ pub struct Bsh {
     tree: usize,
     /// Children per inner node ([`BshShape::width`]).
     width: u32,
+}
+
+/// The empty tree ([`Bsh::build`] over no lights).
+impl Default for Bsh {
+    fn default() -> Self {
+        Bsh {
+            nodes: Vec::new(),
+            bounds: Vec::new(),
+            leaves: Vec::new(),
+            tail: 0,
+            tree: 0,
+            width: 2,
+        }
+    }
 }
 
 impl Bsh {

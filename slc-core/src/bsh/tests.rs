@@ -146,6 +146,8 @@ fn range_tail_takes_the_largest_spheres() {
 #[test]
 fn empty_and_single() {
     let t = Bsh::build(&[]).unwrap();
+    assert_eq!(t, Bsh::default());
+    assert_eq!(Bsh::build_with(&[], BshShape::WIDE).unwrap().tree_len(), 0);
     let mut hits = 0;
     t.for_each_containing(Vec3::ZERO, |_| hits += 1);
     assert_eq!(hits, 0);
