@@ -32,15 +32,12 @@
 //!     cargo run --release -p slc-scene --example walk_visits -- [--tail N] SCENE.toml [SCENE.toml ...]
 
 use glam::Vec3;
+
+mod common;
 use slc_core::bsh::{BSH_NONE, BSH_TAIL, Bsh, BshNode};
 use slc_core::importance::{LightCone, emitter_cone};
-use slc_core::range::{RangeParams, random_range2};
-use slc_core::xi::xi_for;
-use slc_scene::error_bound::{TARGET_CANDIDATES, auto_error_bound};
 use slc_scene::light_bvh::LightBounds;
-use slc_scene::placement::{Stream, Surfaces};
-use slc_scene::pt::{PtScene, RANGE_TAIL};
-use slc_scene::scene_file::SceneFile;
+use slc_scene::pt::RANGE_TAIL;
 
 /// Shading points per scene.
 const POINTS: u32 = 2000;
@@ -129,17 +126,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         "levels"
     );
     for path in args {
-        let f = SceneFile::load(std::path::Path::new(&path))?;
-        let pts = PtScene::new(&f.scene, &f.lights)?;
-        let eps = auto_error_bound(&pts, 1.0, TARGET_CANDIDATES).ok_or("no automatic bound")?;
-        let params = RangeParams::new(eps, 1.0)?;
+        let w = common::Walked::load(&path)?;
+        let (pts, eps, r2) = (&w.pts, w.eps, w.r2.clone());
         let bounds = pts.light_set().bounds();
-        let r2: Vec<f32> = pts
-            .lights()
-            .iter()
-            .enumerate()
-            .map(|(i, l)| random_range2(params.threshold_range2(l.peak()), xi_for(1, 0, i as u32)))
-            .collect();
+        let xs = w.points(POINTS)?;
         // The tail: the lights of the largest range spheres, ranges set to 0
         // in the tree (their leaves then hold only their own bound).
         let mut order: Vec<usize> = (0..r2.len()).collect();
@@ -176,7 +166,6 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             built_tail += 1;
             t = built.nodes()[t as usize].next;
         }
-        let surfaces = Surfaces::new(pts.scene())?;
         let mut row = Vec::new();
         let mut found_by = Vec::new();
         let mut candidates = 0.0;
@@ -193,7 +182,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             let b = boxes(bsh.nodes(), bounds, ranges);
             let (mut visits, mut found) = (0u64, 0u64);
             for k in 0..POINTS {
-                let x = surfaces.sample(&mut Stream::new(0x1234, k)).0;
+                let x = xs[k as usize];
                 let (v, c) = walk(
                     bsh.nodes(),
                     bsh.tree_len(),
@@ -221,7 +210,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         for (t, visits) in [&balanced, &built].into_iter().zip(&mut tree_visits) {
             let mut found = 0u64;
             for k in 0..POINTS {
-                let x = surfaces.sample(&mut Stream::new(0x1234, k)).0;
+                let x = xs[k as usize];
                 let (v, c) = walk(t.nodes(), t.tree_len(), None, None, x);
                 let tail = &t.nodes()[t.tree_len()..t.tree_len() + built_tail];
                 let flat =
@@ -237,9 +226,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             (found_by[1], found_by[3]),
             "{path}: boxes changed the leaves"
         );
-        let name = std::path::Path::new(&path)
-            .file_stem()
-            .map_or(path.clone(), |s| s.to_string_lossy().into());
+        let name = &w.name;
         println!(
             "{name:<40} {:>7} {eps:>9.4} {candidates:>10.2} {:>9.1} {:>9.1} {:>9.1} {:>13.1} {:>9.1} {:>13.1} {:>9.2} {built_tail:>10} {:>9.1} {:>9.1} {:>7}",
             pts.lights().len(),

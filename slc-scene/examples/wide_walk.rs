@@ -20,13 +20,10 @@
 //!     cargo run --release -p slc-scene --example wide_walk -- SCENE.toml [SCENE.toml ...]
 
 use glam::Vec3;
+
+mod common;
 use slc_core::bsh::{BSH_NONE, BSH_TAIL, Bsh, BshNode, BshShape, BshSplit};
-use slc_core::range::{RangeParams, random_range2};
-use slc_core::xi::xi_for;
-use slc_scene::error_bound::{TARGET_CANDIDATES, auto_error_bound};
-use slc_scene::placement::{Stream, Surfaces};
-use slc_scene::pt::{PtScene, RANGE_TAIL};
-use slc_scene::scene_file::SceneFile;
+use slc_scene::pt::RANGE_TAIL;
 use std::time::Instant;
 
 /// Shading points per timed walk set.
@@ -119,22 +116,14 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         "stack/binary"
     );
     for path in std::env::args().skip(1) {
-        let f = SceneFile::load(std::path::Path::new(&path))?;
-        let pts = PtScene::new(&f.scene, &f.lights)?;
-        let eps = auto_error_bound(&pts, 1.0, TARGET_CANDIDATES).ok_or("no automatic bound")?;
-        let params = RangeParams::new(eps, 1.0)?;
-        let r2: Vec<f32> = pts
-            .lights()
-            .iter()
-            .enumerate()
-            .map(|(i, l)| random_range2(params.threshold_range2(l.peak()), xi_for(1, 0, i as u32)))
-            .collect();
+        let w = common::Walked::load(&path)?;
+        let (pts, r2) = (&w.pts, &w.r2);
         // The same split, binary, with the same tail; and the built tree.
         let shape = BshShape { split: BshSplit::SphereArea, width: 2 };
         let mut binary = Bsh::build_with(pts.light_set().bounds(), shape)?.with_tail(RANGE_TAIL)?;
-        binary.refit(&r2)?;
+        binary.refit(r2)?;
         let mut built = pts.bsh().clone();
-        built.refit(&r2)?;
+        built.refit(r2)?;
         let nodes = binary.nodes();
         let tree = binary.tree_len();
         if nodes[0].child == BSH_NONE {
@@ -156,9 +145,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                 }
             }
         };
-        let surfaces = Surfaces::new(pts.scene())?;
-        let xs: Vec<Vec3> =
-            (0..POINTS).map(|k| surfaces.sample(&mut Stream::new(0x1234, k)).0).collect();
+        let xs = w.points(POINTS)?;
         // The same lights at every point.
         let mut found = 0u64;
         for &x in &xs {
@@ -194,9 +181,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             best[2] = best[2].min(t0.elapsed().as_secs_f64());
         }
         std::hint::black_box(sink);
-        let name = std::path::Path::new(&path)
-            .file_stem()
-            .map_or(path.clone(), |s| s.to_string_lossy().into());
+        let name = &w.name;
         let ns = |s: f64| s * 1e9 / POINTS as f64;
         println!(
             "{name:<28} {:>7} {:>11.2} {:>10.1} {:>10.1} {:>10.1} {:>12.2} {:>12.2}",
