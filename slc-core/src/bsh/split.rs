@@ -12,7 +12,7 @@ use crate::sphere::Aabb;
 /// recursion over it stays shallow.
 pub const BSH_MAX_DEPTH: u32 = 48;
 
-/// Bins per axis of the sphere-area heuristic.
+/// Bins of the sphere-area heuristic.
 const BINS: usize = 32;
 
 /// The rule that splits each node's lights in two.
@@ -24,8 +24,9 @@ pub enum BshSplit {
     /// out to its invocations).
     #[default]
     Median,
-    /// The sphere-area heuristic: of 32 bins per axis over the centres'
-    /// box, the split that minimises `n_L·d_L² + n_R·d_R²`, `n` a side's
+    /// The sphere-area heuristic: of 32 bins along the longest axis of the
+    /// centres' box (as the median's; all three axes found the same visits
+    /// within 2% and took three times as long), the split that minimises `n_L·d_L² + n_R·d_R²`, `n` a side's
     /// lights and `d` the diagonal of the box of their bounds `c ± R`. A
     /// walk visits a node's children when the shading point lies in the
     /// node's sphere; a point on a surface does so with a chance that
@@ -58,17 +59,22 @@ pub(super) fn split(bounds: &[LightBound], idx: &mut [u32], rule: BshSplit, dept
     by_area.unwrap_or_else(|| median(bounds, idx))
 }
 
-/// The median split along the longest axis of the centres' box.
-fn median(bounds: &[LightBound], idx: &mut [u32]) -> usize {
-    let b = idx.iter().fold(Aabb::EMPTY, |b, &i| b.grow(bounds[i as usize].center));
+/// The longest axis of box `b` (x before y before z on ties).
+fn longest_axis(b: Aabb) -> usize {
     let ext = b.max - b.min;
-    let axis = if ext.x >= ext.y && ext.x >= ext.z {
+    if ext.x >= ext.y && ext.x >= ext.z {
         0
     } else if ext.y >= ext.z {
         1
     } else {
         2
-    };
+    }
+}
+
+/// The median split along the longest axis of the centres' box.
+fn median(bounds: &[LightBound], idx: &mut [u32]) -> usize {
+    let b = idx.iter().fold(Aabb::EMPTY, |b, &i| b.grow(bounds[i as usize].center));
+    let axis = longest_axis(b);
     let mid = idx.len() / 2;
     idx.select_nth_unstable_by(mid, |&a, &b| {
         bounds[a as usize].center[axis].total_cmp(&bounds[b as usize].center[axis])
@@ -127,44 +133,44 @@ impl Side {
 /// median.
 fn sphere_area(bounds: &[LightBound], idx: &mut [u32], depth: u32) -> Option<usize> {
     let centres = idx.iter().fold(Aabb::EMPTY, |b, &i| b.grow(bounds[i as usize].center));
-    let mut best: Option<(f64, Binning, usize)> = None;
-    for axis in 0..3 {
-        let (lo, hi) = (centres.min[axis] as f64, centres.max[axis] as f64);
-        if hi <= lo {
+    let axis = longest_axis(centres);
+    let (lo, hi) = (centres.min[axis] as f64, centres.max[axis] as f64);
+    if hi <= lo {
+        return None;
+    }
+    let binning = Binning { axis, lo, scale: BINS as f64 / (hi - lo) };
+    let mut bins = [Side::EMPTY; BINS];
+    for &i in idx.iter() {
+        let b = &bounds[i as usize];
+        let k = binning.bin(b);
+        bins[k] = bins[k].add(Side::of(b));
+    }
+    let mut right = [Side::EMPTY; BINS];
+    let mut acc = Side::EMPTY;
+    for k in (1..BINS).rev() {
+        acc = acc.add(bins[k]);
+        right[k] = acc;
+    }
+    // The last bin on the left side of the cheapest split.
+    let mut best: Option<(f64, usize)> = None;
+    let mut left = Side::EMPTY;
+    for k in 0..BINS - 1 {
+        left = left.add(bins[k]);
+        let r = right[k + 1];
+        if left.count == 0 || r.count == 0 {
             continue;
         }
-        let binning = Binning { axis, lo, scale: BINS as f64 / (hi - lo) };
-        let mut bins = [Side::EMPTY; BINS];
-        for &i in idx.iter() {
-            let b = &bounds[i as usize];
-            let k = binning.bin(b);
-            bins[k] = bins[k].add(Side::of(b));
+        // The deeper side must still fit within BSH_MAX_DEPTH when median
+        // splits finish it.
+        if depth + 1 + levels(left.count.max(r.count)) > BSH_MAX_DEPTH {
+            continue;
         }
-        let mut right = [Side::EMPTY; BINS];
-        let mut acc = Side::EMPTY;
-        for k in (1..BINS).rev() {
-            acc = acc.add(bins[k]);
-            right[k] = acc;
-        }
-        let mut left = Side::EMPTY;
-        for k in 0..BINS - 1 {
-            left = left.add(bins[k]);
-            let r = right[k + 1];
-            if left.count == 0 || r.count == 0 {
-                continue;
-            }
-            // The deeper side must still fit within BSH_MAX_DEPTH when
-            // median splits finish it.
-            if depth + 1 + levels(left.count.max(r.count)) > BSH_MAX_DEPTH {
-                continue;
-            }
-            let cost = left.cost() + r.cost();
-            if cost.is_finite() && best.as_ref().is_none_or(|b| cost < b.0) {
-                best = Some((cost, Binning { axis, lo, scale: binning.scale }, k));
-            }
+        let cost = left.cost() + r.cost();
+        if cost.is_finite() && best.is_none_or(|b| cost < b.0) {
+            best = Some((cost, k));
         }
     }
-    let (_, binning, k) = best?;
+    let (_, k) = best?;
     let mut mid = 0;
     for j in 0..idx.len() {
         if binning.bin(&bounds[idx[j] as usize]) <= k {
