@@ -368,7 +368,7 @@ pub mod walk {
         /// empty.
         /// The subtrees in index order hold the leaves in traversal order,
         /// each leaf once. Binary trees only (the direct pass's:
-        /// [`BshShape::BALANCED`]).
+        /// [`super::BshShape::BALANCED`]).
         pub fn bsh_subtree(nodes: BshNodes, s: u32, depth: u32) -> u32 {
             let mut i: u32 = bsh_first(nodes);
             let mut level: u32 = 0;
