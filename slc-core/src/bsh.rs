@@ -6,9 +6,9 @@
 //!   their centres along the longest axis of the centres' box (a balanced
 //!   tree, depth `⌈log₂ n⌉`: the direct pass's lights), or by the
 //!   *sphere-area heuristic* (the path tracers' lights: fewer visits per
-//!   walk, depth at most [`BSH_MAX_DEPTH`]), then laid out ([`BshShape`]). The lights' bounds, not their
-//!   random ranges, decide the tree, so it stays valid when the ranges
-//!   change.
+//!   walk, depth at most [`BSH_MAX_DEPTH`]), then laid out
+//!   ([`BshShape`]). The lights' bounds, not their random ranges, decide
+//!   the tree, so it stays valid when the ranges change.
 //! - **Refit** every frame/pass for new random ranges in O(n): leaves become
 //!   `(c, R + r)`; each inner node the (f32-conservative) union of its two
 //!   children, and the radius about its centre that holds its lights'
