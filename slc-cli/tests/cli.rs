@@ -22,10 +22,25 @@ fn ok(dir: &Path, args: &[&str]) -> String {
     text
 }
 
-fn tempdir(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("slc-cli-{name}-{}", std::process::id()));
-    std::fs::create_dir_all(&d).unwrap();
-    d
+/// A test's scratch directory (`slc-cli-NAME-…` in the system's temporary
+/// directory), removed when the test is done with it, a failed one too.
+struct Scratch(tempfile::TempDir);
+
+impl std::ops::Deref for Scratch {
+    type Target = Path;
+    fn deref(&self) -> &Path {
+        self.0.path()
+    }
+}
+
+impl AsRef<Path> for Scratch {
+    fn as_ref(&self) -> &Path {
+        self.0.path()
+    }
+}
+
+fn tempdir(name: &str) -> Scratch {
+    Scratch(tempfile::Builder::new().prefix(&format!("slc-cli-{name}-")).tempdir().unwrap())
 }
 
 /// README: `cargo run --release -p slc-cli` (no arguments).
@@ -36,7 +51,6 @@ fn main_job_with_no_arguments() {
         assert!(text.contains(key), "summary lacks {key}:\n{text}");
     }
     assert!(d.join("slc-out.exr").exists() && d.join("slc-out.png").exists());
-    std::fs::remove_dir_all(&d).ok();
 }
 
 /// README: `slc render` with each method, and with the shared Cornell OBJ.
@@ -63,7 +77,6 @@ fn render_commands() {
         args.extend(small);
         ok(&d, &args);
     }
-    std::fs::remove_dir_all(&d).ok();
 }
 
 /// README: `slc bench ... --json --csv`, plus `--plot` and `slc plot`.
@@ -155,7 +168,6 @@ fn bench_and_plot_commands() {
     );
     ok(&d, &["plot", "b.json", "--out", "p.png"]);
     assert!(std::fs::metadata(d.join("p.png")).unwrap().len() > 1000);
-    std::fs::remove_dir_all(&d).ok();
 }
 
 /// README: `slc ies FILE` (and `--plot`) on every shared IES file.
@@ -176,7 +188,6 @@ fn ies_command() {
         }
         assert!(std::fs::metadata(d.join("polar.png")).unwrap().len() > 1000);
     }
-    std::fs::remove_dir_all(&d).ok();
 }
 
 /// `slc diff`: statistics, heat map, and exit status 1 over --max-rmse.
@@ -199,7 +210,6 @@ fn diff_command() {
     // PNGs are previews: diff says it compares EXR images.
     let out = slc(&d, &["diff", "a.png", "b.exr"]);
     assert!(!out.status.success() && String::from_utf8_lossy(&out.stderr).contains("EXR"));
-    std::fs::remove_dir_all(&d).ok();
 }
 
 /// `--out x.png` writes `x.png` and the EXR beside it, and says so; an
@@ -214,7 +224,6 @@ fn out_paths() {
         slc(&d, &["render", "--width", "16", "--height", "16", "--vpls", "64", "--out", "x.jpg"]);
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(!out.status.success() && err.contains(".exr"), "{err}");
-    std::fs::remove_dir_all(&d).ok();
 }
 
 /// Bad input: a one-line error on stderr and a non-zero exit status.
@@ -235,7 +244,6 @@ fn bad_input_is_one_line_error() {
         let err = String::from_utf8_lossy(&out.stderr);
         assert!(err.trim().lines().count() == 1 && err.starts_with("error: "), "{args:?}: {err}");
     }
-    std::fs::remove_dir_all(&d).ok();
 }
 
 /// Without a GPU adapter (no Vulkan driver for the child process), `--backend
@@ -258,7 +266,6 @@ fn no_adapter_error_names_the_flag() {
             && last.ends_with("(--backend cpu renders on the CPU)"),
         "{err}"
     );
-    std::fs::remove_dir_all(&d).ok();
 }
 
 /// A GPU render on a machine without a display prints no `error:` line
@@ -291,7 +298,6 @@ fn gpu_start_up_is_quiet() {
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(out.status.success(), "{err}");
     assert!(!err.lines().any(|l| l.contains("error")), "stderr of a good GPU render:\n{err}");
-    std::fs::remove_dir_all(&d).ok();
 }
 
 /// Every example scene in `scenes/` loads and renders (small overrides on
@@ -328,7 +334,6 @@ fn example_scene_files_render() {
         }
     }
     assert!(n >= 3, "expected the example scenes, found {n}");
-    std::fs::remove_dir_all(&d).ok();
 }
 
 /// README: a glTF file renders in both applications from the command line
@@ -374,7 +379,6 @@ fn gltf_and_glossy_scenes_render() {
             "c.exr",
         ],
     );
-    std::fs::remove_dir_all(&d).ok();
 }
 
 /// README: `slc shaders --out DIR [--lights ...]` writes every kernel in
@@ -455,7 +459,6 @@ fn shaders_command_exports_every_kernel() {
     );
     let out = slc(&d, &["shaders", "--out", "k2", "--lights", "laser"]);
     assert!(!out.status.success());
-    std::fs::remove_dir_all(&d).ok();
 }
 
 /// `slc render --backend gpu` runs the whole frame on the GPU (rasterized
@@ -566,7 +569,6 @@ fn gpu_backend_renders_like_cpu() {
         assert!(r["rmse"].as_f64().unwrap().is_finite());
         assert!(r["stages"].as_array().unwrap().iter().any(|s| s["name"] == "shading"), "{r}");
     }
-    std::fs::remove_dir_all(&d).ok();
 }
 
 /// `slc render --scene cornell-glossy --backend gpu` shades the glossy
@@ -594,7 +596,6 @@ fn gpu_glossy_render_is_glossy() {
     );
     ok(&d, &[&["render", "--backend", "cpu", "--out", "c.exr"][..], &small].concat());
     ok(&d, &["diff", "c.exr", "g.exr", "--max-rmse", "0.01"]);
-    std::fs::remove_dir_all(&d).ok();
 }
 
 /// README: `slc render --app pt --backend gpu` and `slc bench --app pt
@@ -667,7 +668,6 @@ fn gpu_path_tracer_renders_and_benches() {
         ],
     );
     assert!(text.contains("method lightbvh") && d.join("p.exr").exists(), "{text}");
-    std::fs::remove_dir_all(&d).ok();
 }
 
 /// README: `slc render --app pt` with each method.
@@ -731,7 +731,6 @@ fn path_tracer_renders() {
     assert!(
         !out.status.success() && String::from_utf8_lossy(&out.stderr).contains("slc-reservoir")
     );
-    std::fs::remove_dir_all(&d).ok();
 }
 
 /// README: `slc suite` writes every family at every count, and `slc bench
@@ -799,7 +798,6 @@ fn suite_commands() {
         .unwrap();
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(!out.status.success() && err.contains("slc suite --out"), "{err}");
-    std::fs::remove_dir_all(&d).ok();
 }
 
 /// `slc bench --app pt`: equal-time runs with RMSE-over-time series, JSON,
@@ -862,7 +860,6 @@ fn path_tracer_bench() {
     // `slc plot` re-plots a path-tracing report too (RMSE over time).
     ok(&d, &["plot", "p.json", "--out", "q.svg"]);
     assert!(std::fs::read_to_string(d.join("q.svg")).unwrap().contains("RMSE"));
-    std::fs::remove_dir_all(&d).ok();
 }
 
 /// `slc bench --app pt --noise seeds`: no reference is rendered (nothing
@@ -904,7 +901,6 @@ fn path_tracer_bench_noise_from_seeds() {
         assert!(rmse.is_finite() && rmse > 0.0 && net == rmse, "{r}");
         assert!(r["spp"].as_u64().unwrap() >= 1, "{r}");
     }
-    std::fs::remove_dir_all(&d).ok();
 }
 
 /// MTL features slc does not model produce one warning line per material
@@ -1023,7 +1019,6 @@ fn view_renders_frames_and_saves_a_screenshot() {
             && lines[0].contains("no-such-adapter"),
         "{err}"
     );
-    std::fs::remove_dir_all(&d).ok();
 }
 
 /// Without a display `slc view` fails with one line that says so and how
@@ -1058,7 +1053,6 @@ fn view_without_a_display_is_a_clear_error() {
             "{args:?}: {err}"
         );
     }
-    std::fs::remove_dir_all(&d).ok();
 }
 
 slc_tests::harness!(
