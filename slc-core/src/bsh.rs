@@ -790,7 +790,12 @@ impl Bsh {
         walk::bsh_range_leaf(&self.nodes, self.leaves[i])
     }
 
-    /// The flat node array (pre-order; upload as-is to the GPU).
+    /// Each light's leaf: its node index in the tree (in light order).
+    pub fn leaf_indices(&self) -> &[u32] {
+        &self.leaves
+    }
+
+    /// The flat node array (upload as-is to the GPU).
     pub fn nodes(&self) -> &[BshNode] {
         &self.nodes
     }

@@ -9,7 +9,7 @@
 use crate::kernel::{KernelLayout, UniformSlots, check_kernels, storage, zeroed};
 use crate::{GpuContext, GpuError};
 use glam::Vec3;
-use slc_core::bsh::{BSH_NONE, BSH_TAIL, BSH_TAIL_BINS, Bsh};
+use slc_core::bsh::{BSH_TAIL_BINS, Bsh};
 use slc_core::importance::LightCone;
 use slc_core::light::{Light, LightBound};
 use slc_core::range::RangeParams;
@@ -42,24 +42,19 @@ pub(crate) fn types_within(inner: LightTypes, outer: LightTypes) -> bool {
 }
 
 /// BSH node indices level by level, deepest level first, and each level's
-/// `(first, count)` in that list; plus each light's leaf (the tree's; the
-/// range tail's slots after it are `bsh_tail`'s).
-fn refit_order(bsh: &Bsh, n_lights: usize) -> (Vec<u32>, Vec<(u32, u32)>, Vec<u32>) {
-    let nodes = &bsh.nodes()[..bsh.tree_len()];
+/// `(first, count)` in that list (the tree's nodes; the range tail's slots
+/// after it are `bsh_tail`'s).
+fn refit_order(bsh: &Bsh) -> (Vec<u32>, Vec<(u32, u32)>) {
     let depth = bsh.depths();
-    let mut leaf = vec![0u32; n_lights];
-    for (i, n) in nodes.iter().enumerate().filter(|(_, n)| n.child == BSH_NONE) {
-        leaf[(n.light & !BSH_TAIL) as usize] = i as u32;
-    }
     let deepest = depth.iter().copied().max().unwrap_or(0);
-    let mut order = Vec::with_capacity(nodes.len());
+    let mut order = Vec::with_capacity(depth.len());
     let mut levels = Vec::new();
     for d in (0..=deepest).rev() {
         let first = order.len() as u32;
-        order.extend((0..nodes.len() as u32).filter(|&i| depth[i as usize] == d));
+        order.extend((0..depth.len() as u32).filter(|&i| depth[i as usize] == d));
         levels.push((first, order.len() as u32 - first));
     }
-    (order, levels, leaf)
+    (order, levels)
 }
 
 /// Each light's bound as `bsh_refit` reads it: centre (xyz), extent (w).
@@ -366,10 +361,11 @@ impl LightBuffers {
     ) -> Result<LightBuffers, GpuError> {
         check_light_limits(gpu, lights.len() as u64, std::mem::size_of_val(bvh) as u64)?;
         let n = lights.len() as u64;
-        let (order, levels, leaf) = refit_order(bsh, lights.len());
+        let (order, levels) = refit_order(bsh);
         let (gpu_lights, table) = pack_lights(lights);
         let dst = wgpu::BufferUsages::COPY_DST;
         let s = |label: &str, bytes: &[u8]| storage(gpu, label, bytes, wgpu::BufferUsages::empty());
+        let leaf = s("light leaf", bytemuck::cast_slice(bsh.leaf_indices()));
         let ids: Vec<u32> = (0..n as u32).collect();
         let cones = if cones.is_empty() {
             vec![GpuLightCone::default()]
@@ -473,7 +469,7 @@ impl LightBuffers {
             rt2,
             r2,
             bsh,
-            leaf: s("light leaf", bytemuck::cast_slice(&leaf)),
+            leaf,
             bounds,
             levels,
             refit_params,

@@ -52,11 +52,13 @@ fn levels(m: usize) -> u32 {
 /// child's and `idx[mid..]` the right child's, `0 < mid < idx.len()`, and
 /// returns `mid`. `depth` is the node's depth (the root's is 0).
 pub(super) fn split(bounds: &[LightBound], idx: &mut [u32], rule: BshSplit, depth: u32) -> usize {
+    let centres = idx.iter().fold(Aabb::EMPTY, |b, &i| b.grow(bounds[i as usize].center));
+    let axis = longest_axis(centres);
     let by_area = match rule {
-        BshSplit::SphereArea => sphere_area(bounds, idx, depth),
+        BshSplit::SphereArea => sphere_area(bounds, idx, centres, axis, depth),
         BshSplit::Median => None,
     };
-    by_area.unwrap_or_else(|| median(bounds, idx))
+    by_area.unwrap_or_else(|| median(bounds, idx, axis))
 }
 
 /// The longest axis of box `b` (x before y before z on ties).
@@ -71,10 +73,8 @@ fn longest_axis(b: Aabb) -> usize {
     }
 }
 
-/// The median split along the longest axis of the centres' box.
-fn median(bounds: &[LightBound], idx: &mut [u32]) -> usize {
-    let b = idx.iter().fold(Aabb::EMPTY, |b, &i| b.grow(bounds[i as usize].center));
-    let axis = longest_axis(b);
+/// The median split along `axis` (the longest of the centres' box).
+fn median(bounds: &[LightBound], idx: &mut [u32], axis: usize) -> usize {
     let mid = idx.len() / 2;
     idx.select_nth_unstable_by(mid, |&a, &b| {
         bounds[a as usize].center[axis].total_cmp(&bounds[b as usize].center[axis])
@@ -131,9 +131,13 @@ impl Side {
 
 /// The sphere-area split ([`BshSplit::SphereArea`]), or `None` for the
 /// median.
-fn sphere_area(bounds: &[LightBound], idx: &mut [u32], depth: u32) -> Option<usize> {
-    let centres = idx.iter().fold(Aabb::EMPTY, |b, &i| b.grow(bounds[i as usize].center));
-    let axis = longest_axis(centres);
+fn sphere_area(
+    bounds: &[LightBound],
+    idx: &mut [u32],
+    centres: Aabb,
+    axis: usize,
+    depth: u32,
+) -> Option<usize> {
     let (lo, hi) = (centres.min[axis] as f64, centres.max[axis] as f64);
     if hi <= lo {
         return None;

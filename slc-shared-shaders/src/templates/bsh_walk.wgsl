@@ -1,5 +1,5 @@
 // slc-core's shared BSH steps (bsh::walk: bsh_first, bsh_next_leaf(_lobe), bsh_reaches,
-// bsh_leaf_refitted, bsh_inner_refitted) over the including kernel's `bsh_nodes` buffer,
+// bsh_leaf_refitted, bsh_family_refitted) over the including kernel's `bsh_nodes` buffer,
 // read through the two readers the steps expect.
 
 alias BshNodes = u32;
