@@ -116,7 +116,8 @@ struct RenderArgs {
     seconds: Option<f64>,
     /// SLC error bound ε, the largest standard deviation one light may add
     /// to a pixel [default: 0.004 (vpl); auto (pt): set from the scene so
-    /// that a shading point expects a fixed number of candidate lights].
+    /// that a shading point expects a fixed number of candidate lights;
+    /// auto:C for C of them].
     #[arg(long, value_parser = methods::bound_arg)]
     error_bound: Option<methods::BoundArg>,
     /// Clamp range R (scene units) for --method clamp [default: 0.1].
@@ -371,7 +372,7 @@ fn render_pt(a: RenderArgs) -> anyhow::Result<()> {
     let d = PtSettings::default();
     let on_gpu = a.scene.backend == Backend::Gpu;
     let exposure = a.scene.exposure.or(f.exposure).unwrap_or(1.0);
-    let (eps, eps_note) = methods::pt_error_bound(a.error_bound, f.error_bound, &pts, exposure);
+    let (eps, eps_note) = methods::pt_error_bound(a.error_bound, f.error_bound, &pts, exposure)?;
     let settings = PtSettings {
         method: pt_method(a.method.as_deref().or(f.method.as_deref()).unwrap_or("slc"))?,
         error_bound: eps,

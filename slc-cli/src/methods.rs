@@ -35,7 +35,7 @@ pub fn vpl_settings(
     let d = VplSettings::default();
     let error_bound = match m.error_bound {
         Some(BoundArg::Value(e)) => e,
-        Some(BoundArg::Auto) => {
+        Some(BoundArg::Auto(_)) => {
             return Err(anyhow!(
                 "--error-bound auto applies to path tracing (--app pt); give the VPL application a number"
             ));
@@ -55,45 +55,79 @@ pub fn vpl_settings(
     })
 }
 
-/// `--error-bound`: a number, or `auto` (path tracing: the ε whose
-/// expected SLC candidates per shading point are
-/// [`TARGET_CANDIDATES`], `slc_scene::error_bound`).
+/// `--error-bound`: a number, or `auto` / `auto:C` (path tracing: the ε
+/// whose expected SLC candidates per shading point are `C`, by default
+/// [`TARGET_CANDIDATES`]; `slc_scene::error_bound`).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum BoundArg {
-    /// Set from the scene.
-    Auto,
+    /// Set from the scene for this many expected candidates per point.
+    Auto(f64),
     /// This ε.
     Value(f32),
 }
 
-/// Parses `--error-bound`.
+/// Most expected candidates per point `auto:C` takes: every candidate
+/// costs a walk step and a weight, so more than this is no bound at all.
+pub const MAX_TARGET_CANDIDATES: f64 = 1e4;
+
+/// Parses `--error-bound`: a number, `auto`, or `auto:C` (a number C;
+/// [`pt_error_bound`] checks its range, as the range code checks ε, so bad
+/// values get the same one-line error).
 pub fn bound_arg(s: &str) -> anyhow::Result<BoundArg> {
     if s == "auto" {
-        return Ok(BoundArg::Auto);
+        return Ok(BoundArg::Auto(TARGET_CANDIDATES));
     }
-    s.parse::<f32>().map(BoundArg::Value).map_err(|_| anyhow!("'{s}' is neither a number nor auto"))
+    if let Some(c) = s.strip_prefix("auto:") {
+        return c
+            .parse::<f64>()
+            .map(BoundArg::Auto)
+            .map_err(|_| anyhow!("'{c}' in '{s}' is not a number of candidates"));
+    }
+    s.parse::<f32>()
+        .map(BoundArg::Value)
+        .map_err(|_| anyhow!("'{s}' is neither a number, auto nor auto:C"))
 }
 
 /// The path tracer's ε and how it was set: the flag's number, else the
-/// scene file's, else (or with `auto`) the automatic bound of `pts`
+/// scene file's, else (or with `auto`/`auto:C`) the automatic bound of `pts`
 /// (PtSettings' fixed default where the scene has no lights or surfaces).
 pub fn pt_error_bound(
     flag: Option<BoundArg>,
     file: Option<f32>,
     pts: &PtScene,
     exposure: f32,
-) -> (f32, String) {
-    match (flag, file) {
-        (Some(BoundArg::Value(e)), _) => (e, "given".into()),
-        (None, Some(e)) => (e, "the scene file's".into()),
-        _ => match auto_error_bound(pts, exposure, TARGET_CANDIDATES) {
-            Some(e) => {
-                (e, format!("automatic: {TARGET_CANDIDATES} expected candidates per surface point"))
-            }
-            None => (
-                PtSettings::default().error_bound,
-                "the fixed default: no lights or surfaces to set it from".into(),
-            ),
-        },
+) -> anyhow::Result<(f32, String)> {
+    let target = match (flag, file) {
+        (Some(BoundArg::Value(e)), _) => return Ok((e, "given".into())),
+        (None, Some(e)) => return Ok((e, "the scene file's".into())),
+        (Some(BoundArg::Auto(c)), _) => c,
+        (None, None) => TARGET_CANDIDATES,
+    };
+    if !(target > 0.0 && target <= MAX_TARGET_CANDIDATES) {
+        return Err(anyhow!(
+            "--error-bound auto:{target}: the expected candidates per point must be in (0, {MAX_TARGET_CANDIDATES}]"
+        ));
+    }
+    Ok(match auto_error_bound(pts, exposure, target) {
+        Some(e) => (e, format!("automatic: {target} expected candidates per surface point")),
+        None => (
+            PtSettings::default().error_bound,
+            "the fixed default: no lights or surfaces to set it from".into(),
+        ),
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn error_bound_flag_parses_numbers_auto_and_candidate_targets() {
+        assert_eq!(bound_arg("0.25").unwrap(), BoundArg::Value(0.25));
+        assert_eq!(bound_arg("auto").unwrap(), BoundArg::Auto(TARGET_CANDIDATES));
+        assert_eq!(bound_arg("auto:3").unwrap(), BoundArg::Auto(3.0));
+        for bad in ["auto:", "auto:x", "automatic", "x"] {
+            assert!(bound_arg(bad).is_err(), "{bad} was accepted");
+        }
     }
 }

@@ -232,6 +232,8 @@ fn bad_input_is_one_line_error() {
     for args in [
         vec!["render", "--vpls", "1000"],
         vec!["render", "--error-bound=-1", "--width", "8", "--height", "8", "--vpls", "64"],
+        vec!["render", "--app", "pt", "--error-bound", "auto:0", "--width", "8", "--height", "8"],
+        vec!["render", "--app", "pt", "--error-bound", "auto:1e9", "--width", "8", "--height", "8"],
         vec!["render", "--scene", "missing.obj"],
         vec!["ies", "missing.ies"],
         vec!["diff", "missing-a.exr", "missing-b.exr"],
@@ -717,6 +719,40 @@ fn path_tracer_renders() {
         ],
     );
     assert!(text.contains("error bound ε = 0.5000 (given)"), "{text}");
+    // `auto:C` sets ε for C expected candidates (more candidates: a smaller
+    // ε), on a scene with lights enough (2,048) that neither target is
+    // capped at half the light count.
+    let suite =
+        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../scenes/suite/points-clusters-2048.toml");
+    let eps_of = |text: &str| -> f32 {
+        let at = text.find("error bound ε = ").expect("ε printed") + "error bound ε = ".len();
+        text[at..].split_whitespace().next().unwrap().parse().unwrap()
+    };
+    let auto = |c: &str| {
+        ok(
+            &d,
+            &[
+                "render",
+                "--app",
+                "pt",
+                "--scene",
+                suite.to_str().unwrap(),
+                "--method",
+                "slc-weighted",
+                "--error-bound",
+                c,
+                "--width",
+                "8",
+                "--height",
+                "8",
+                "--spp",
+                "1",
+            ],
+        )
+    };
+    let (default, six) = (auto("auto"), auto("auto:6"));
+    assert!(six.contains("(automatic: 6 expected candidates per surface point)"), "{six}");
+    assert!(eps_of(&six) < eps_of(&default), "{six}\n{default}");
     // `auto` is the path tracer's: the VPL application refuses it in one line.
     let out = slc(
         &d,

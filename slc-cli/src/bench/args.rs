@@ -41,9 +41,9 @@ pub struct BenchArgs {
     /// writes it) and report them together.
     #[arg(long, num_args = 0..=1, default_missing_value = "scenes/suite")]
     pub suite: Option<PathBuf>,
-    /// Path tracing: the SLC error bound ε, or `auto` [default: auto: set
-    /// from each scene so that a shading point expects a fixed number of
-    /// candidate lights; `slc_scene::error_bound`].
+    /// Path tracing: the SLC error bound ε, `auto` or `auto:C` [default:
+    /// auto: set from each scene so that a shading point expects a fixed
+    /// number of candidate lights, or C of them; `slc_scene::error_bound`].
     #[arg(long, value_parser = crate::methods::bound_arg)]
     pub error_bound: Option<crate::methods::BoundArg>,
     /// Path tracing: seconds per method (equal time).
