@@ -2,13 +2,15 @@
 //! included: bad input is rejected before it reaches the tree; accepted
 //! input answers every query exactly as a brute-force scan, with a range
 //! tail of 0 to 4 lights (`Bsh::with_tail`) as without, split at the
-//! median or by the sphere-area heuristic, 2 to 8 wide.
+//! median or by the sphere-area heuristic, 2 to 8 wide; and the grid over
+//! its leaves (`BshGrid`, over a box the input draws) finds what the walk
+//! finds, in its order, wherever it answers.
 #![no_main]
 
 use arbitrary::Arbitrary;
 use glam::Vec3;
 use libfuzzer_sys::fuzz_target;
-use slc_core::bsh::{Bsh, BshShape, BshSplit};
+use slc_core::bsh::{Bsh, BshGrid, BshShape, BshSplit};
 use slc_core::light::LightBound;
 use slc_core::sphere::{Aabb, Sphere};
 
@@ -43,6 +45,9 @@ fuzz_target!(|input: Input| {
         return;
     }
     let spheres: Vec<Sphere> = bounds.iter().zip(&r2).map(|(b, &r)| b.range_sphere(r)).collect();
+    let grid = input.queries.first().and_then(|&(q, _, e)| {
+        BshGrid::build_at(&bsh, Vec3::from(q), Vec3::from(q) + Vec3::from(e), input.tail as u32)
+    });
     for &(q, r, e) in input.queries.iter().take(16) {
         let x = Vec3::from(q);
         let brute = |t: &dyn Fn(&Sphere) -> bool| -> Vec<u32> {
@@ -52,6 +57,13 @@ fuzz_target!(|input: Input| {
         bsh.for_each_containing(x, |i| got.push(i));
         got.sort_unstable();
         assert_eq!(got, brute(&|s| s.contains(x)), "containing {x:?}");
+        if let Some(g) = &grid {
+            let (mut walk, mut cells) = (Vec::new(), Vec::new());
+            bsh.for_each_containing(x, |i| walk.push(i));
+            if g.for_each_containing(x, |i| cells.push(i)) {
+                assert_eq!(cells, walk, "the grid at {x:?}");
+            }
+        }
         let s = Sphere::new(x, r);
         got.clear();
         bsh.for_each_overlapping_sphere(s, |i| got.push(i));

@@ -596,3 +596,78 @@ fn wide_tree_links() {
         assert_eq!(Bsh::build_with(&b, shape), Err(BshError::BadWidth(width)));
     }
 }
+
+/// The grid finds what the walk finds, in the walk's order (the same
+/// candidates and random numbers for the CPU's shortcut): every shape, the
+/// range tail, zero, huge and infinite ranges, points in and outside its
+/// box, scales from 10⁻⁶ to 10⁶; a box that is not finite and positive, an
+/// empty tree, or ranges as large as the scene give no grid.
+#[test]
+fn grid_finds_what_the_walk_finds_in_its_order() {
+    use rand_core::{RngCore, SeedableRng};
+    let mut rng = rand_pcg::Pcg32::seed_from_u64(23);
+    let mut u = move || rng.next_u32() as f32 / 4294967296.0;
+    let (mut grids, mut inside, mut found) = (0, 0, 0usize);
+    for _ in 0..400 {
+        let scale = 10f32.powf(6.0 - 12.0 * u());
+        let n = 1 + (u() * 400.0) as usize;
+        let b: Vec<LightBound> = (0..n)
+            .map(|_| LightBound {
+                center: Vec3::new(u(), u(), u()) * scale,
+                extent: if u() < 0.5 { 0.0 } else { u() * 0.01 * scale },
+            })
+            .collect();
+        let r2: Vec<f32> = (0..n)
+            .map(|_| match (u() * 20.0) as u32 {
+                0 => 0.0,
+                1 => f32::INFINITY,
+                2 => (u() * scale).powi(2),
+                _ => (u() * 0.05 * scale).powi(2),
+            })
+            .collect();
+        let mut t = Bsh::build_with(&b, shape_of(u(), u()))
+            .unwrap()
+            .with_tail((u() * 20.0) as usize)
+            .unwrap();
+        t.refit(&r2).unwrap();
+        let Some(g) = BshGrid::build(&t, Vec3::ZERO, Vec3::splat(scale)) else { continue };
+        grids += 1;
+        for _ in 0..200 {
+            let x = (Vec3::new(u(), u(), u()) * 1.2 - 0.1) * scale;
+            let mut walk = Vec::new();
+            t.for_each_containing(x, |l| walk.push(l));
+            let mut grid = Vec::new();
+            if g.for_each_containing(x, |l| grid.push(l)) {
+                assert_eq!(grid, walk, "at {x} of scale {scale}");
+                assert!(g.tested(x).unwrap() >= walk.len());
+                inside += 1;
+                found += walk.len();
+            } else {
+                assert!(
+                    grid.is_empty()
+                        && !(x.cmpge(Vec3::ZERO).all() && x.cmple(Vec3::splat(scale)).all())
+                );
+            }
+        }
+    }
+    assert!(grids > 300 && inside > 30_000 && found > 30_000, "{grids} {inside} {found}");
+    // No grid: bad boxes, an empty tree, every range covering the box.
+    let mut t = Bsh::build(&[pt(0.5, 0.5, 0.5); 64]).unwrap();
+    t.refit(&[0.0; 64]).unwrap();
+    for (lo, hi) in [
+        (Vec3::ONE, Vec3::ZERO),
+        (Vec3::ZERO, Vec3::new(1.0, 0.0, 1.0)),
+        (Vec3::ZERO, Vec3::INFINITY),
+        (Vec3::NAN, Vec3::ONE),
+    ] {
+        assert!(BshGrid::build(&t, lo, hi).is_none());
+    }
+    assert!(BshGrid::build(&t, Vec3::ZERO, Vec3::ONE).is_some());
+    assert!(BshGrid::build(&Bsh::build(&[]).unwrap(), Vec3::ZERO, Vec3::ONE).is_none());
+    t.refit(&[4.0; 64]).unwrap();
+    assert!(BshGrid::build(&t, Vec3::ZERO, Vec3::ONE).is_none());
+    // A NaN point finds nothing, as the walk.
+    t.refit(&[0.01; 64]).unwrap();
+    let g = BshGrid::build(&t, Vec3::ZERO, Vec3::ONE).unwrap();
+    assert!(g.for_each_containing(Vec3::NAN, |_| panic!("found at NaN")));
+}
