@@ -41,7 +41,7 @@ use rand_core::RngCore;
 use rand_pcg::Pcg32;
 use rayon::prelude::*;
 use slc_core::brdf::{bsdf_pdf, bsdf_sample, specular_probability};
-use slc_core::bsh::{Bsh, walk::bsh_reaches};
+use slc_core::bsh::{Bsh, BshGrid, walk::bsh_reaches};
 use slc_core::importance::Receiver;
 use slc_core::importance::weighted_select_pdf;
 use slc_core::light::{Light, connection_cosine, connection_factor};
@@ -121,6 +121,10 @@ const REFIT_GRAIN: usize = 4096;
 struct Pass {
     rt2: Arc<[f32]>,
     r2: Vec<f32>,
+    /// The refitted tree's leaves in a grid over the scene's box
+    /// ([`BshGrid`]; `None` where the ranges are too large for one): where
+    /// a Lambertian receiver finds its candidates.
+    grid: Option<BshGrid>,
 }
 
 impl CpuPathTracer {
@@ -159,7 +163,28 @@ impl CpuPathTracer {
         self.bsh
             .refit_split(&r2, REFIT_GRAIN, &|a, b| _ = rayon::join(a, b))
             .map_err(|e| RenderError::Setting(e.to_string()))?;
-        Ok(Pass { rt2, r2 })
+        let (lo, hi) = self.pts.scene().bounds();
+        let grid = BshGrid::build(&self.bsh, lo, hi);
+        Ok(Pass { rt2, r2, grid })
+    }
+
+    /// The lights whose range sphere, scaled for the receiver at `x`
+    /// (mirror direction `r`, range lobe `rl`), reaches it, in the walk's
+    /// order ([`Bsh::for_each_reaching`]): from the pass's grid for a
+    /// receiver without a range lobe (`rl.w ≤ 1`) inside the grid's box,
+    /// the same lights in the same order; else by the walk.
+    fn for_each_candidate(
+        &self,
+        st: &Pass,
+        x: Vec3,
+        r: Vec3,
+        rl: Vec4,
+        mut visit: impl FnMut(u32),
+    ) {
+        if rl.w <= 1.0 && st.grid.as_ref().is_some_and(|g| g.for_each_containing(x, &mut visit)) {
+            return;
+        }
+        self.bsh.for_each_reaching(x, r, rl, visit);
     }
 
     /// Renders `passes` more passes of one sample per pixel into `acc`
@@ -317,7 +342,7 @@ impl CpuPathTracer {
         match s.method {
             PtMethod::Slc => {
                 let mut cand = Vec::new();
-                self.bsh.for_each_reaching(x, vx.rc.r, vx.rl, |l| cand.push(l));
+                self.for_each_candidate(st, x, vx.rc.r, vx.rl, |l| cand.push(l));
                 let nee = NeeState { seen: cand.len() as u32, w_sum: 0.0 };
                 for l in cand {
                     if let Some(c) = self.connect(s, st, l as usize, vx, rng, nee, true, 1.0) {
@@ -328,7 +353,7 @@ impl CpuPathTracer {
             }
             PtMethod::SlcReservoir => {
                 let mut res = Reservoir::<RESERVOIR_K>::new();
-                self.bsh.for_each_reaching(x, vx.rc.r, vx.rl, |l| {
+                self.for_each_candidate(st, x, vx.rc.r, vx.rl, |l| {
                     res.push(l, rng.next_u32(), rng.next_u32())
                 });
                 let (nee, w) = (NeeState { seen: res.seen(), w_sum: 0.0 }, res.weight());
@@ -389,7 +414,7 @@ impl CpuPathTracer {
         let cones = self.pts.light_set().cones();
         let mut seen = 0;
         let rl = rc.range_lobe();
-        self.bsh.for_each_reaching(rc.p, rc.r, rl, |l| {
+        self.for_each_candidate(st, rc.p, rc.r, rl, |l| {
             seen += 1;
             let c = &cones[l as usize];
             let w = c.weight(rc, rc.range_scale_to(rl, c) * st.rt2[l as usize]);
@@ -663,6 +688,50 @@ mod tests {
     /// traversals each light is picked `k·w/W` times per traversal on
     /// average (within 5σ of the binomial count, per slot `w/W`); for a
     /// glossy receiver, whose lobe weighs the candidates.
+    /// The candidates a vertex gets (`for_each_candidate`: the pass's grid
+    /// for a Lambertian receiver in the scene's box) are the walk's, in
+    /// its order, at points on and off the surfaces, outside the box and
+    /// NaN, for Lambertian and glossy receivers; and the pass has a grid.
+    #[test]
+    fn candidates_are_the_walks_in_its_order() {
+        let mut pt =
+            CpuPathTracer::new(&PtScene::new(&Scene::cornell_box_split_light(16), &[]).unwrap());
+        let st = pt
+            .pass_state(PtMethod::SlcWeighted, &RangeParams::new(0.05, 1.0).unwrap(), 5, 1)
+            .unwrap();
+        assert!(st.grid.is_some());
+        let (lo, hi) = pt.pts.scene().bounds();
+        let mut rng = Pcg32::new(17, 3);
+        let (mut found, mut points) = (0, 0);
+        for k in 0..4_000 {
+            let u = Vec3::new(
+                xi_from_bits(rng.next_u32()),
+                xi_from_bits(rng.next_u32()),
+                xi_from_bits(rng.next_u32()),
+            );
+            let x = match k % 8 {
+                0 => lo + (hi - lo) * (u * 1.4 - 0.2),
+                1 => Vec3::NAN,
+                _ => lo + (hi - lo) * u,
+            };
+            let n = Vec3::new(u.y - 0.5, 1.0, u.x - 0.5).normalize();
+            for mat in [
+                Material::lambertian(Vec3::splat(0.5), Vec3::ZERO),
+                Material::gltf(Vec3::splat(0.9), 1.0, 0.3),
+            ] {
+                let rc = mat.receiver(x, n, n);
+                let rl = rc.range_lobe();
+                let (mut walk, mut got) = (Vec::new(), Vec::new());
+                pt.bsh.for_each_reaching(x, rc.r, rl, |l| walk.push(l));
+                pt.for_each_candidate(&st, x, rc.r, rl, |l| got.push(l));
+                assert_eq!(got, walk, "at {x}");
+                found += walk.len();
+                points += 1;
+            }
+        }
+        assert!(found > points, "{found} candidates at {points} points");
+    }
+
     #[test]
     fn weighted_picks_match_brute_force_enumeration() {
         let pts = {
