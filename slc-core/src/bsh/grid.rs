@@ -32,10 +32,11 @@ pub const GRID_RES_MAX: u32 = 64;
 /// cells at most).
 pub const GRID_RES_LIMIT: u32 = 256;
 
-/// Most entries a grid may hold per light in the tree (plus one per cell):
-/// past it the resolution halves, and below [`GRID_RES_MIN`] there is no
-/// grid (ranges as large as the scene: the tree is as good).
-pub const GRID_ENTRIES_PER_LIGHT: u64 = 16;
+/// Most entries a grid may hold per light in the tree (plus one per cell;
+/// 20 bytes each): past it the resolution halves, and below
+/// [`GRID_RES_MIN`] there is no grid (ranges as large as the scene: the
+/// tree is as good). The suite's scenes take 2–5 at their own resolution.
+pub const GRID_ENTRIES_PER_LIGHT: u64 = 8;
 
 /// A grid of one refit's leaf spheres (see the module docs).
 #[derive(Clone, Debug)]
@@ -141,7 +142,7 @@ impl BshGrid {
                     total += d.x as u64 * d.y as u64 * d.z as u64;
                 }
             }
-            if total > GRID_ENTRIES_PER_LIGHT * lights_in + cells as u64 {
+            if total > (GRID_ENTRIES_PER_LIGHT * lights_in + cells as u64).min(u32::MAX as u64) {
                 if res / 2 < GRID_RES_MIN {
                     return None;
                 }

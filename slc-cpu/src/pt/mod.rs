@@ -697,7 +697,7 @@ mod tests {
         let mut pt =
             CpuPathTracer::new(&PtScene::new(&Scene::cornell_box_split_light(16), &[]).unwrap());
         let st = pt
-            .pass_state(PtMethod::SlcWeighted, &RangeParams::new(0.05, 1.0).unwrap(), 5, 1)
+            .pass_state(PtMethod::SlcWeighted, &RangeParams::new(0.2, 1.0).unwrap(), 5, 1)
             .unwrap();
         assert!(st.grid.is_some());
         let (lo, hi) = pt.pts.scene().bounds();
