@@ -682,12 +682,6 @@ mod tests {
         );
     }
 
-    /// `slc-weighted` against brute-force enumeration of the candidates:
-    /// the traversal's `W` is the sum of the weights of exactly the lights
-    /// whose range sphere holds `x` (every light tested), and over 40,000
-    /// traversals each light is picked `k·w/W` times per traversal on
-    /// average (within 5σ of the binomial count, per slot `w/W`); for a
-    /// glossy receiver, whose lobe weighs the candidates.
     /// The candidates a vertex gets (`for_each_candidate`: the pass's grid
     /// for a Lambertian receiver in the scene's box) are the walk's, in
     /// its order, at points on and off the surfaces, outside the box and
@@ -732,6 +726,12 @@ mod tests {
         assert!(found > points, "{found} candidates at {points} points");
     }
 
+    /// `slc-weighted` against brute-force enumeration of the candidates:
+    /// the traversal's `W` is the sum of the weights of exactly the lights
+    /// whose range sphere holds `x` (every light tested), and over 40,000
+    /// traversals each light is picked `k·w/W` times per traversal on
+    /// average (within 5σ of the binomial count, per slot `w/W`); for a
+    /// glossy receiver, whose lobe weighs the candidates.
     #[test]
     fn weighted_picks_match_brute_force_enumeration() {
         let pts = {
