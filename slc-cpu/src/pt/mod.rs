@@ -71,6 +71,8 @@ pub struct CpuPathTracer {
     rt2: Option<(RangeParams, Arc<[f32]>)>,
     /// The scene's bounding-box diagonal (ray offsets scale with it).
     diag: f32,
+    /// The scene's bounding box (each pass's [`BshGrid`] covers it).
+    bounds: (Vec3, Vec3),
 }
 
 impl CpuPathTracer {
@@ -82,6 +84,7 @@ impl CpuPathTracer {
             bsh: pts.bsh().clone(),
             rt2: None,
             diag: scene.diagonal(),
+            bounds: scene.bounds(),
             pts: pts.clone(),
         }
     }
@@ -163,8 +166,7 @@ impl CpuPathTracer {
         self.bsh
             .refit_split(&r2, REFIT_GRAIN, &|a, b| _ = rayon::join(a, b))
             .map_err(|e| RenderError::Setting(e.to_string()))?;
-        let (lo, hi) = self.pts.scene().bounds();
-        let grid = BshGrid::build(&self.bsh, lo, hi);
+        let grid = BshGrid::build(&self.bsh, self.bounds.0, self.bounds.1);
         Ok(Pass { rt2, r2, grid })
     }
 
