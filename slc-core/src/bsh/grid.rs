@@ -9,12 +9,24 @@
 //! own order, with the walk's own leaf test ([`sphere_contains_point`] on
 //! the leaf's values). So it finds the same lights in the same order as
 //! [`Bsh::for_each_containing`]: same candidates, same random numbers, the
-//! same image. A grid cannot hold a glossy receiver's scaled ranges (their
-//! scale depends on the receiver); those, and points outside the grid's
-//! box, take the tree. The GPU keeps the stackless walk (a grid per pass
-//! there is a counting sort the kernels do not have yet).
+//! same image.
+//!
+//! A glossy receiver scales each light's range toward it by up to its
+//! range lobe's `rl.w` ([`crate::bsh::walk::bsh_reaches`]). A grid built
+//! for a *reach* `w` ([`BshGrid::build_reaching`]) lists each leaf in every
+//! cell its sphere so scaled at most can touch (`R + 1.001·w·r`, the
+//! walk's own bound), and a receiver with `rl.w ≤ w` tests its cell's
+//! leaves with the walk's leaf test: again the walk's lights in its order.
+//! Points outside the grid's box, and receivers whose lobe reaches beyond
+//! the grid's, take the tree. (A sharper lobe scales its ranges by more
+//! than `w²` only in a narrow cone around its mirror direction; its
+//! cell's lights below `w²` plus a walk that skips every node whose scale
+//! bound is at most `w²` took 1.3–1.7 of the plain walk's time: tried,
+//! not kept, docs/results/bsh-walk-visits.md.) The GPU keeps the stackless walk (a grid per
+//! pass there is a counting sort the kernels do not have yet).
 
-use super::{BSH_NONE, BSH_TAIL, Bsh};
+use super::walk::bsh_reaches;
+use super::{BSH_NONE, BSH_TAIL, Bsh, BshNode};
 use crate::sphere::sphere_contains_point;
 use alloc::vec;
 use alloc::vec::Vec;
@@ -45,14 +57,18 @@ pub struct BshGrid {
     hi: Vec3,
     inv: Vec3,
     n: UVec3,
+    /// The largest range lobe `rl.w` the cells hold (1: the plain spheres).
+    reach: f32,
     /// Cell `c`'s entries are `start[c]..start[c + 1]`.
     start: Vec<u32>,
-    /// Each entry's sphere `(centre, radius)` and light.
+    /// Each entry's sphere `(centre, radius)`, light and light extent `R`.
     spheres: Vec<Vec4>,
     lights: Vec<u32>,
-    /// The range tail's spheres and lights, tested at every point.
+    extents: Vec<f32>,
+    /// The range tail's spheres, lights and extents, tested at every point.
     tail_spheres: Vec<Vec4>,
     tail_lights: Vec<u32>,
+    tail_extents: Vec<f32>,
 }
 
 impl BshGrid {
@@ -61,8 +77,16 @@ impl BshGrid {
     /// `∛(n/2)` cells along the box's longest axis for `n` lights in the
     /// tree, within [`GRID_RES_MIN`]`..=`[`GRID_RES_MAX`] ([`Self::build_at`]).
     pub fn build(bsh: &Bsh, lo: Vec3, hi: Vec3) -> Option<BshGrid> {
+        Self::build_reaching(bsh, lo, hi, 1.0)
+    }
+
+    /// [`Self::build`] for receivers whose range lobe reaches up to `w`
+    /// (`rl.w ≤ w`; [`Self::for_each_reaching`]): each leaf in every cell
+    /// its sphere scaled by `w` can touch. `w ≤ 1` is [`Self::build`]'s
+    /// grid; `None` also for a `w` that is not finite.
+    pub fn build_reaching(bsh: &Bsh, lo: Vec3, hi: Vec3, w: f32) -> Option<BshGrid> {
         let res = libm::cbrtf(bsh.len() as f32 / 2.0) as u32;
-        Self::build_at(bsh, lo, hi, res.clamp(GRID_RES_MIN, GRID_RES_MAX))
+        Self::build_reaching_at(bsh, lo, hi, res.clamp(GRID_RES_MIN, GRID_RES_MAX), w)
     }
 
     /// [`Self::build`] at `res` cells along the box's longest axis, halved
@@ -70,10 +94,20 @@ impl BshGrid {
     /// empty tree, a box that is not finite and positive, or ranges so
     /// large that even [`GRID_RES_MIN`] cells a side would pass it.
     pub fn build_at(bsh: &Bsh, lo: Vec3, hi: Vec3, res: u32) -> Option<BshGrid> {
+        Self::build_reaching_at(bsh, lo, hi, res, 1.0)
+    }
+
+    /// [`Self::build_reaching`] at `res` cells along the box's longest
+    /// axis, halved as [`Self::build_at`] halves it.
+    pub fn build_reaching_at(bsh: &Bsh, lo: Vec3, hi: Vec3, res: u32, w: f32) -> Option<BshGrid> {
         let ext = hi - lo;
         if !(lo.is_finite() && ext.is_finite() && ext.min_element() > 0.0) || bsh.is_empty() {
             return None;
         }
+        if !w.is_finite() {
+            return None;
+        }
+        let w = w.max(1.0);
         // A flat box (a single wall) gets a thickness, so no axis's cells
         // are narrower than 10⁻³ of the longest; and every side a margin of
         // 10⁻⁴ of it, for points on the surfaces that rounding put outside.
@@ -84,7 +118,8 @@ impl BshGrid {
         // The walk's leaves in its order: the tree's, then the tail's copies.
         let nodes = bsh.nodes();
         let tree = bsh.tree_len();
-        let (mut inside, mut tail_spheres, mut tail_lights) = (Vec::new(), Vec::new(), Vec::new());
+        let (mut inside, mut tail_spheres, mut tail_lights, mut tail_extents) =
+            (Vec::new(), Vec::new(), Vec::new(), Vec::new());
         let mut i = 0u32;
         while i != BSH_NONE {
             let n = nodes[i as usize];
@@ -99,6 +134,7 @@ impl BshGrid {
                 } else {
                     tail_spheres.push(n.center.extend(n.radius));
                     tail_lights.push(n.light);
+                    tail_extents.push(n.extent);
                 }
             }
             i = n.next;
@@ -115,15 +151,22 @@ impl BshGrid {
             let cells = (n.x * n.y * n.z) as usize;
             let cover = |i: u32| {
                 let s = nodes[i as usize];
-                // A radius whose square overflows holds every point (the
+                // The farthest the leaf test reaches: the sphere, or for a
+                // lobe up to `w` the walk's bound `R + 1.001·w·r`.
+                let reach = if w > 1.0 {
+                    s.radius.max(s.extent + w * 1.001 * (s.radius - s.extent))
+                } else {
+                    s.radius
+                };
+                // A reach whose square overflows holds every point (the
                 // leaf test's `d² ≤ ∞`): every cell.
-                if s.radius * s.radius == f32::INFINITY {
+                if reach * reach == f32::INFINITY {
                     return (UVec3::ZERO, n - 1);
                 }
                 // Padded: the leaf test rounds, the box must not; and
                 // squares underflow, so a point within ~5e-23 of a centre
                 // passes even a zero radius.
-                let r = s.radius * (1.0 + 1e-5) + 1e-22;
+                let r = reach * (1.0 + 1e-5) + 1e-22;
                 let a = ((s.center - r - lo) * inv).floor().max(Vec3::ZERO);
                 let b = ((s.center + r - lo) * inv).floor().max(Vec3::ZERO);
                 let top = (n - 1).as_vec3();
@@ -169,12 +212,14 @@ impl BshGrid {
             let mut fill = start.clone();
             let mut spheres = vec![Vec4::ZERO; total as usize];
             let mut lights = vec![0u32; total as usize];
+            let mut extents = vec![0f32; total as usize];
             for (&i, &c) in inside.iter().zip(&covers) {
                 let s = nodes[i as usize];
                 each(c, &mut |c| {
                     let at = fill[c] as usize;
                     spheres[at] = s.center.extend(s.radius);
                     lights[at] = s.light;
+                    extents[at] = s.extent;
                     fill[c] += 1;
                 });
             }
@@ -183,11 +228,14 @@ impl BshGrid {
                 hi,
                 inv,
                 n,
+                reach: w,
                 start,
                 spheres,
                 lights,
+                extents,
                 tail_spheres,
                 tail_lights,
+                tail_extents,
             });
         }
     }
@@ -213,6 +261,55 @@ impl BshGrid {
             }
         }
         true
+    }
+
+    /// Calls `visit(light)` for each light whose range sphere, scaled for a
+    /// receiver at `x` with mirror direction `r` and range lobe `rl`,
+    /// reaches it ([`bsh_reaches`], the walk's own leaf test), in the
+    /// walk's order ([`Bsh::for_each_reaching`]), and returns `true`;
+    /// `false` (nothing visited) where `x` lies outside the grid's box or
+    /// the lobe reaches beyond the grid's (`rl.w` above the `w` it was
+    /// built for, or NaN): the caller walks the tree.
+    pub fn for_each_reaching(
+        &self,
+        x: Vec3,
+        r: Vec3,
+        rl: Vec4,
+        mut visit: impl FnMut(u32),
+    ) -> bool {
+        if rl.w <= 1.0 {
+            return self.for_each_containing(x, visit);
+        }
+        if !(rl.w <= self.reach) {
+            return false;
+        }
+        if x.is_nan() {
+            return true;
+        }
+        let Some(c) = self.cell(x) else { return false };
+        let (a, b) = (self.start[c] as usize, self.start[c + 1] as usize);
+        let leaf = |s: &Vec4, light: u32, extent: f32| BshNode {
+            center: s.truncate(),
+            radius: s.w,
+            child: BSH_NONE,
+            next: BSH_NONE,
+            light,
+            extent,
+        };
+        let cell = self.spheres[a..b].iter().zip(&self.lights[a..b]).zip(&self.extents[a..b]);
+        let tail = self.tail_spheres.iter().zip(&self.tail_lights).zip(&self.tail_extents);
+        for ((s, &l), &e) in cell.chain(tail) {
+            if bsh_reaches(leaf(s, l, e), x, r, rl) {
+                visit(l);
+            }
+        }
+        true
+    }
+
+    /// The largest range lobe `rl.w` the grid serves (1 for
+    /// [`Self::build`]'s).
+    pub fn reach(&self) -> f32 {
+        self.reach
     }
 
     /// How many spheres a point at `x` tests (its cell's and the range

@@ -600,14 +600,19 @@ fn wide_tree_links() {
 /// The grid finds what the walk finds, in the walk's order (the same
 /// candidates and random numbers for the CPU's shortcut): every shape, the
 /// range tail, zero, huge and infinite ranges, points in and outside its
-/// box, scales from 10⁻⁶ to 10⁶; a box that is not finite and positive, an
-/// empty tree, or ranges as large as the scene give no grid.
+/// box, scales from 10⁻⁶ to 10⁶; and so does a grid built for glossy
+/// receivers' lobes up to a reach `w`, for every receiver whose lobe it
+/// holds (the others, `rl.w > w`, are refused). A box that is not finite
+/// and positive, an empty tree, or ranges as large as the scene give no
+/// grid.
 #[test]
 fn grid_finds_what_the_walk_finds_in_its_order() {
+    use crate::brdf::{mirror_dir, range_lobe, receiver_lobe};
     use rand_core::{RngCore, SeedableRng};
     let mut rng = rand_pcg::Pcg32::seed_from_u64(23);
     let mut u = move || rng.next_u32() as f32 / 4294967296.0;
     let (mut grids, mut inside, mut found) = (0, 0, 0usize);
+    let (mut glossy, mut glossy_found, mut refused) = (0, 0usize, 0);
     for _ in 0..400 {
         let scale = 10f32.powf(6.0 - 12.0 * u());
         let n = 1 + (u() * 400.0) as usize;
@@ -630,10 +635,39 @@ fn grid_finds_what_the_walk_finds_in_its_order() {
             .with_tail((u() * 20.0) as usize)
             .unwrap();
         t.refit(&r2).unwrap();
+        let w = 1.0 + 7.0 * u();
+        let gw = BshGrid::build_reaching(&t, Vec3::ZERO, Vec3::splat(scale), w);
         let Some(g) = BshGrid::build(&t, Vec3::ZERO, Vec3::splat(scale)) else { continue };
         grids += 1;
         for _ in 0..200 {
             let x = (Vec3::new(u(), u(), u()) * 1.2 - 0.1) * scale;
+            let in_box = x.cmpge(Vec3::ZERO).all() && x.cmple(Vec3::splat(scale)).all();
+            if let Some(gw) = &gw {
+                let nrm = (Vec3::new(u(), u(), u()) - 0.5).normalize();
+                let v = (Vec3::new(u(), u(), u()) - 0.5 + nrm).normalize();
+                let metal = if u() < 0.5 { 1.0 } else { 0.0 };
+                let alpha = (0.05 + 0.95 * u()).powi(2);
+                let lobe = receiver_lobe(
+                    Vec3::splat(0.8),
+                    metal,
+                    Vec3::splat(0.04),
+                    1.0,
+                    alpha,
+                    nrm.dot(v),
+                );
+                let (r, rl) = (mirror_dir(nrm, v), range_lobe(lobe));
+                let mut walk = Vec::new();
+                t.for_each_reaching(x, r, rl, |l| walk.push(l));
+                let mut grid = Vec::new();
+                if gw.for_each_reaching(x, r, rl, |l| grid.push(l)) {
+                    assert_eq!(grid, walk, "at {x} of scale {scale}, lobe {rl} in a grid for {w}");
+                    glossy += (rl.w > 1.0) as u32;
+                    glossy_found += walk.len();
+                } else {
+                    assert!(grid.is_empty() && (rl.w > w || !in_box), "{rl} refused by {w}");
+                    refused += (rl.w > w) as u32;
+                }
+            }
             let mut walk = Vec::new();
             t.for_each_containing(x, |l| walk.push(l));
             let mut grid = Vec::new();
@@ -643,14 +677,15 @@ fn grid_finds_what_the_walk_finds_in_its_order() {
                 inside += 1;
                 found += walk.len();
             } else {
-                assert!(
-                    grid.is_empty()
-                        && !(x.cmpge(Vec3::ZERO).all() && x.cmple(Vec3::splat(scale)).all())
-                );
+                assert!(grid.is_empty() && !in_box);
             }
         }
     }
     assert!(grids > 250 && inside > 30_000 && found > 30_000, "{grids} {inside} {found}");
+    assert!(
+        glossy > 4_000 && glossy_found > 50_000 && refused > 4_000,
+        "{glossy} glossy receivers found {glossy_found}, {refused} refused"
+    );
     // No grid: bad boxes, an empty tree, every range covering the box.
     let mut t = Bsh::build(&[pt(0.5, 0.5, 0.5); 64]).unwrap();
     t.refit(&[0.0; 64]).unwrap();

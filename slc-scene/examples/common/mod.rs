@@ -42,7 +42,15 @@ impl Walked {
 
     /// `n` shading points, uniform by area on the non-emissive surfaces.
     pub fn points(&self, n: u32) -> Result<Vec<Vec3>, Box<dyn std::error::Error>> {
+        Ok(self.points_with_normals(n)?.into_iter().map(|(x, _)| x).collect())
+    }
+
+    /// [`Self::points`] with each one's surface normal.
+    pub fn points_with_normals(
+        &self,
+        n: u32,
+    ) -> Result<Vec<(Vec3, Vec3)>, Box<dyn std::error::Error>> {
         let surfaces = Surfaces::new(self.pts.scene())?;
-        Ok((0..n).map(|k| surfaces.sample(&mut Stream::new(0x1234, k)).0).collect())
+        Ok((0..n).map(|k| surfaces.sample(&mut Stream::new(0x1234, k))).collect())
     }
 }
