@@ -59,6 +59,7 @@ use slc_scene::pt::{PtMethod, PtRender, PtScene, PtSettings, RESERVOIR_K, WEIGHT
 use slc_scene::scene::Material;
 use std::sync::Arc;
 use std::sync::OnceLock;
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Instant;
 
 /// The CPU path tracer over a [`PtScene`]: the scene's geometry in a BVH,
@@ -126,13 +127,42 @@ struct Pass {
     rt2: Arc<[f32]>,
     r2: Vec<f32>,
     /// The refitted tree's leaves in a grid over the scene's box
-    /// ([`BshGrid`]; `None` where the ranges are too large for one): where
-    /// a Lambertian receiver finds its candidates. Built by the first
-    /// receiver that needs it.
-    grid: OnceLock<Option<BshGrid>>,
+    /// ([`BshGrid`]): where a Lambertian receiver finds its candidates.
+    grid: LazyGrid,
     /// The same for glossy receivers whose range lobe reaches at most
     /// [`GLOSSY_REACH`] ([`BshGrid::build_reaching`]).
-    glossy: OnceLock<Option<BshGrid>>,
+    glossy: LazyGrid,
+}
+
+/// A pass's grid, built by the first receiver that asks for it while the
+/// other threads go on walking the tree: the grid gives the walk's lights
+/// in the walk's order, so which one a receiver takes changes nothing in
+/// the image, and no thread waits for the serial build.
+#[derive(Default)]
+struct LazyGrid {
+    claimed: AtomicBool,
+    /// `None` inside: no grid this pass (ranges too large for one).
+    grid: OnceLock<Option<BshGrid>>,
+}
+
+impl LazyGrid {
+    /// The grid once built; `None` while another thread builds it, or
+    /// where the pass has none. The first caller builds it with `build`.
+    fn get(&self, build: impl FnOnce() -> Option<BshGrid>) -> Option<&BshGrid> {
+        if let Some(g) = self.grid.get() {
+            return g.as_ref();
+        }
+        if self.claimed.swap(true, Ordering::AcqRel) {
+            return None;
+        }
+        self.grid.get_or_init(build).as_ref()
+    }
+
+    /// Whether the grid has been built (a grid or none).
+    #[cfg(test)]
+    fn built(&self) -> Option<bool> {
+        self.grid.get().map(Option::is_some)
+    }
 }
 
 /// The largest range lobe `rl.w` (the square root of a receiver's range
@@ -188,7 +218,8 @@ impl CpuPathTracer {
     /// order ([`Bsh::for_each_reaching`]): from one of the pass's grids
     /// for a receiver inside the scene's box whose lobe reaches at most
     /// [`GLOSSY_REACH`] (the plain grid without a range lobe, `rl.w ≤ 1`),
-    /// the same lights in the same order; else by the walk.
+    /// the same lights in the same order; else, and while another thread
+    /// builds that grid ([`LazyGrid`]), by the walk.
     fn for_each_candidate(
         &self,
         st: &Pass,
@@ -199,14 +230,13 @@ impl CpuPathTracer {
     ) {
         let (lo, hi) = self.bounds;
         if rl.w <= 1.0 {
-            let grid = st.grid.get_or_init(|| BshGrid::build(&self.bsh, lo, hi));
-            if grid.as_ref().is_some_and(|g| g.for_each_containing(x, &mut visit)) {
+            let grid = st.grid.get(|| BshGrid::build(&self.bsh, lo, hi));
+            if grid.is_some_and(|g| g.for_each_containing(x, &mut visit)) {
                 return;
             }
         } else if rl.w <= GLOSSY_REACH {
-            let grid =
-                st.glossy.get_or_init(|| BshGrid::build_reaching(&self.bsh, lo, hi, GLOSSY_REACH));
-            if grid.as_ref().is_some_and(|g| g.for_each_reaching(x, r, rl, &mut visit)) {
+            let grid = st.glossy.get(|| BshGrid::build_reaching(&self.bsh, lo, hi, GLOSSY_REACH));
+            if grid.is_some_and(|g| g.for_each_reaching(x, r, rl, &mut visit)) {
                 return;
             }
         }
@@ -720,7 +750,7 @@ mod tests {
         let st = pt
             .pass_state(PtMethod::SlcWeighted, &RangeParams::new(0.3, 1.0).unwrap(), 5, 1)
             .unwrap();
-        assert!(st.grid.get().is_none() && st.glossy.get().is_none(), "built before asked");
+        assert!(st.grid.built().is_none() && st.glossy.built().is_none(), "built before asked");
         let (lo, hi) = pt.pts.scene().bounds();
         let mut rng = Pcg32::new(17, 3);
         let (mut found, mut points) = (0, 0);
@@ -757,8 +787,30 @@ mod tests {
         }
         assert!(found > points, "{found} candidates at {points} points");
         assert!(reach.iter().all(|&k| k > 2_000), "Lambertian, held, beyond: {reach:?}");
-        assert!(st.grid.get().is_some_and(Option::is_some));
-        assert!(st.glossy.get().is_some_and(Option::is_some));
+        assert_eq!((st.grid.built(), st.glossy.built()), (Some(true), Some(true)));
+    }
+
+    /// A pass's grid is built once, by the first receiver that asks; one
+    /// that asks while it is being built gets none (and walks the tree).
+    #[test]
+    fn a_grid_being_built_is_walked_around() {
+        let mut t =
+            Bsh::build(&[slc_core::light::LightBound { center: Vec3::splat(0.5), extent: 0.0 }; 4])
+                .unwrap();
+        t.refit(&[0.01; 4]).unwrap();
+        let lazy = LazyGrid::default();
+        let mut builds = 0;
+        let got = lazy.get(|| {
+            builds += 1;
+            assert!(
+                lazy.get(|| unreachable!("built twice")).is_none(),
+                "a grid before it is built"
+            );
+            BshGrid::build(&t, Vec3::ZERO, Vec3::ONE)
+        });
+        assert!(got.is_some() && builds == 1);
+        assert!(lazy.get(|| unreachable!("built twice")).is_some());
+        assert_eq!(lazy.built(), Some(true));
     }
 
     /// `slc-weighted` against brute-force enumeration of the candidates:
