@@ -259,6 +259,12 @@ impl CpuPathTracer {
                 s.max_depth
             )));
         }
+        // The light BVH is the lightbvh method's set-up (as the BSH is the
+        // SLC methods'): built here, on its first render, outside the
+        // passes' time.
+        if s.method == PtMethod::LightBvh {
+            self.pts.light_bvh();
+        }
         let (w, h) = acc.size();
         for _ in 0..passes {
             let t = Instant::now();
