@@ -22,8 +22,9 @@
 //! than `w²` only in a narrow cone around its mirror direction; its
 //! cell's lights below `w²` plus a walk that skips every node whose scale
 //! bound is at most `w²` took 1.3–1.7 of the plain walk's time: tried,
-//! not kept, docs/results/bsh-walk-visits.md.) The GPU keeps the stackless walk (a grid per
-//! pass there is a counting sort the kernels do not have yet).
+//! not kept, docs/results/bsh-walk-visits.md.) The GPU keeps the
+//! stackless walk (a grid per pass there is a counting sort the kernels
+//! do not have yet).
 
 use super::walk::bsh_reaches;
 use super::{BSH_NONE, BSH_TAIL, Bsh, BshNode};
