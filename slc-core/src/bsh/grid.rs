@@ -62,7 +62,9 @@ pub struct BshGrid {
     reach: f32,
     /// Cell `c`'s entries are `start[c]..start[c + 1]`.
     start: Vec<u32>,
-    /// Each entry's sphere `(centre, radius)`, light and light extent `R`.
+    /// Each entry's sphere `(centre, radius)`, light and light extent `R`
+    /// (the extents only for a reach above 1: a glossy lobe's test reads
+    /// them, the plain sphere test does not).
     spheres: Vec<Vec4>,
     lights: Vec<u32>,
     extents: Vec<f32>,
@@ -135,7 +137,9 @@ impl BshGrid {
                 } else {
                     tail_spheres.push(n.center.extend(n.radius));
                     tail_lights.push(n.light);
-                    tail_extents.push(n.extent);
+                    if w > 1.0 {
+                        tail_extents.push(n.extent);
+                    }
                 }
             }
             i = n.next;
@@ -213,14 +217,16 @@ impl BshGrid {
             let mut fill = start.clone();
             let mut spheres = vec![Vec4::ZERO; total as usize];
             let mut lights = vec![0u32; total as usize];
-            let mut extents = vec![0f32; total as usize];
+            let mut extents = vec![0f32; if w > 1.0 { total as usize } else { 0 }];
             for (&i, &c) in inside.iter().zip(&covers) {
                 let s = nodes[i as usize];
                 each(c, &mut |c| {
                     let at = fill[c] as usize;
                     spheres[at] = s.center.extend(s.radius);
                     lights[at] = s.light;
-                    extents[at] = s.extent;
+                    if let Some(e) = extents.get_mut(at) {
+                        *e = s.extent;
+                    }
                     fill[c] += 1;
                 });
             }
