@@ -116,6 +116,16 @@ crate::shared! {
         }
         return f32_from_bits(node.light);
     }
+
+    /// The farthest from node `node`'s centre that its lights' ranges,
+    /// scaled by at most `w` (a range lobe's `rl.w`), can reach:
+    /// `A + 1.001·w·b`, `A` its light extent and `b` its
+    /// [`bsh_range_bound`] (a little above the exact reach, for rounding).
+    /// [`walk::bsh_reaches`]'s cut for a glossy receiver, and what a
+    /// [`BshGrid`] built for a reach `w` covers.
+    pub fn bsh_reach_bound(node: BshNode, w: f32) -> f32 {
+        return node.extent + w * 1.001 * bsh_range_bound(node);
+    }
 }
 
 /// The nodes as the shared traversal step reads them: a slice on the CPU.
@@ -141,7 +151,8 @@ pub fn bsh_count(nodes: BshNodes) -> u32 {
 /// kernels that bind one declare (their WGSL is [`walk::WGSL`]).
 pub mod walk {
     use super::{
-        BSH_NONE, BshNode, BshNodes, bsh_count, bsh_node, bsh_range_bound, bsh_scaled_radius,
+        BSH_NONE, BshNode, BshNodes, bsh_count, bsh_node, bsh_range_bound, bsh_reach_bound,
+        bsh_scaled_radius,
     };
     use super::{BSH_TAIL, bsh_tail_key};
     use crate::importance::{cone_cos_of, range_scale_at, range_scale_toward};
@@ -194,10 +205,9 @@ pub mod walk {
             if rl.w <= 1.0 || !sphere_contains_point(node.center, node.radius * (rl.w * 1.0001), x) {
                 return false;
             }
-            let b: f32 = bsh_range_bound(node);
             let v: vec3f = x - node.center;
             let d2: f32 = dot(v, v);
-            let reach_max: f32 = node.extent + rl.w * 1.001 * b;
+            let reach_max: f32 = bsh_reach_bound(node, rl.w);
             if d2 > reach_max * reach_max {
                 return false;
             }
@@ -206,7 +216,7 @@ pub mod walk {
                 return sphere_contains_point(node.center, bsh_scaled_radius(node, sqrt(s)), x);
             }
             let s_c: f32 = bsh_inner_scale(node.extent, -v, d2, r, rl) * 1.001;
-            let reach: f32 = node.extent + sqrt(s_c) * b;
+            let reach: f32 = node.extent + sqrt(s_c) * bsh_range_bound(node);
             return d2 <= node.radius * node.radius * s_c && d2 <= reach * reach;
         }
 

@@ -14,7 +14,7 @@
 //! A glossy receiver scales each light's range toward it by up to its
 //! range lobe's `rl.w` ([`crate::bsh::walk::bsh_reaches`]). A grid built
 //! for a *reach* `w` ([`BshGrid::build_reaching`]) lists each leaf in every
-//! cell its sphere so scaled at most can touch (`R + 1.001·w·r`, the
+//! cell its sphere so scaled at most can touch ([`bsh_reach_bound`], the
 //! walk's own bound), and a receiver with `rl.w ≤ w` tests its cell's
 //! leaves with the walk's leaf test: again the walk's lights in its order.
 //! Points outside the grid's box, and receivers whose lobe reaches beyond
@@ -27,7 +27,7 @@
 //! do not have yet).
 
 use super::walk::bsh_reaches;
-use super::{BSH_NONE, BSH_TAIL, Bsh, BshNode};
+use super::{BSH_NONE, BSH_TAIL, Bsh, BshNode, bsh_reach_bound};
 use crate::sphere::sphere_contains_point;
 use alloc::vec;
 use alloc::vec::Vec;
@@ -157,12 +157,8 @@ impl BshGrid {
             let cover = |i: u32| {
                 let s = nodes[i as usize];
                 // The farthest the leaf test reaches: the sphere, or for a
-                // lobe up to `w` the walk's bound `R + 1.001·w·r`.
-                let reach = if w > 1.0 {
-                    s.radius.max(s.extent + w * 1.001 * (s.radius - s.extent))
-                } else {
-                    s.radius
-                };
+                // lobe up to `w` the walk's own bound.
+                let reach = if w > 1.0 { s.radius.max(bsh_reach_bound(s, w)) } else { s.radius };
                 // A reach whose square overflows holds every point (the
                 // leaf test's `d² ≤ ∞`): every cell.
                 if reach * reach == f32::INFINITY {

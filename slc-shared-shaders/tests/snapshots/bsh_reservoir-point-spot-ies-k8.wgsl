@@ -235,10 +235,10 @@ fn connection_cosine(x_3: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     if _e16 {
         return 0f;
     }
-    let w_3 = (v_3 / vec3(sqrt(d2_6)));
-    let cos_x_1 = -(dot(n, w_3));
+    let w_4 = (v_3 / vec3(sqrt(d2_6)));
+    let cos_x_1 = -(dot(n, w_4));
     if !((cos_x_1 <= 0f)) {
-        local_1 = (dot(ng, w_3) >= 0f);
+        local_1 = (dot(ng, w_4) >= 0f);
     } else {
         local_1 = true;
     }
@@ -466,6 +466,11 @@ fn bsh_range_bound(node_1: BshNode) -> f32 {
     return _e8;
 }
 
+fn bsh_reach_bound(node_2: BshNode, w_2: f32) -> f32 {
+    let _e5 = bsh_range_bound(node_2);
+    return (node_2.extent + ((w_2 * 1.001f) * _e5));
+}
+
 fn mul_hi_u32_(a_3: u32, b_2: u32) -> u32 {
     let a_lo = (a_3 & 65535u);
     let a_hi = (a_3 >> 16u);
@@ -631,17 +636,17 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_3: vec3<f32>, 
     return -1f;
 }
 
-fn light_intensity(l: GpuLight, w_2: vec3<f32>) -> vec3<f32> {
+fn light_intensity(l: GpuLight, w_3: vec3<f32>) -> vec3<f32> {
     switch l.kind {
         case 0u: {
             return l.intensity;
         }
         case 1u: {
-            let _e11 = spot_falloff(dot(l.p1_, w_2), l.a, l.b, l.p2_.x);
+            let _e11 = spot_falloff(dot(l.p1_, w_3), l.a, l.b, l.p2_.x);
             return (l.intensity * _e11);
         }
         case 2u: {
-            let _e18 = ies_light_candela(0u, l.ies_base, l.p1_, l.p2_, w_2);
+            let _e18 = ies_light_candela(0u, l.ies_base, l.p1_, l.p2_, w_3);
             return (l.intensity * _e18);
         }
         default: {
@@ -658,7 +663,7 @@ fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
     var hit: GeoHit;
     var stack: array<u32, 64>;
     var sp: u32 = 0u;
-    var node_2: u32 = 0u;
+    var node_3: u32 = 0u;
     var i_1: u32;
 
     hit.t = t_max_2;
@@ -669,7 +674,7 @@ fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
     }
     let _e14 = ray_inverse3_(d_4);
     loop {
-        let _e21 = node_2;
+        let _e21 = node_3;
         let n_9 = geo_nodes[_e21];
         let _e27 = hit.t;
         let _e28 = ray_aabb(o_2, _e14, n_9.bmin, n_9.bmax, _e27);
@@ -710,7 +715,7 @@ fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
                     let _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_2 = n_9.first;
+                node_3 = n_9.first;
                 continue;
             }
         }
@@ -722,7 +727,7 @@ fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
         sp = (_e75 - 1u);
         let _e78 = sp;
         let _e80 = stack[_e78];
-        node_2 = _e80;
+        node_3 = _e80;
     }
     let _e81 = hit;
     return _e81;
@@ -762,16 +767,16 @@ fn bsh_inner_scale(a_7: f32, v_1: vec3<f32>, d2_5: f32, r_2: vec3<f32>, rl_2: ve
     return _e8;
 }
 
-fn bsh_reaches(node_3: BshNode, x_9: vec3<f32>, r_3: vec3<f32>, rl_3: vec4<f32>) -> bool {
+fn bsh_reaches(node_4: BshNode, x_9: vec3<f32>, r_3: vec3<f32>, rl_3: vec4<f32>) -> bool {
     var local_8: bool;
     var local_9: bool;
 
-    let _e6 = sphere_contains_point(node_3.center, node_3.radius, x_9);
+    let _e6 = sphere_contains_point(node_4.center, node_4.radius, x_9);
     if _e6 {
         return true;
     }
     if !((rl_3.w <= 1f)) {
-        let _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001f)), x_9);
+        let _e20 = sphere_contains_point(node_4.center, (node_4.radius * (rl_3.w * 1.0001f)), x_9);
         local_8 = !(_e20);
     } else {
         local_8 = true;
@@ -780,29 +785,29 @@ fn bsh_reaches(node_3: BshNode, x_9: vec3<f32>, r_3: vec3<f32>, rl_3: vec4<f32>)
     if _e23 {
         return false;
     }
-    let _e25 = bsh_range_bound(node_3);
-    let v_6 = (x_9 - node_3.center);
+    let v_6 = (x_9 - node_4.center);
     let d2_7 = dot(v_6, v_6);
-    let reach_max = (node_3.extent + ((rl_3.w * 1.001f) * _e25));
-    if (d2_7 > (reach_max * reach_max)) {
+    let _e29 = bsh_reach_bound(node_4, rl_3.w);
+    if (d2_7 > (_e29 * _e29)) {
         return false;
     }
-    if (node_3.child == BSH_NONE) {
-        let _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_9, r_3);
-        let _e46 = bsh_scaled_radius(node_3, sqrt(_e43));
-        let _e47 = sphere_contains_point(node_3.center, _e46, x_9);
-        return _e47;
+    if (node_4.child == BSH_NONE) {
+        let _e38 = range_scale_toward(rl_3, node_4.center, node_4.extent, x_9, r_3);
+        let _e41 = bsh_scaled_radius(node_4, sqrt(_e38));
+        let _e42 = sphere_contains_point(node_4.center, _e41, x_9);
+        return _e42;
     }
-    let _e50 = bsh_inner_scale(node_3.extent, -(v_6), d2_7, r_3, rl_3);
-    let s_c = (_e50 * 1.001f);
-    let reach = (node_3.extent + (sqrt(s_c) * _e25));
-    if (d2_7 <= ((node_3.radius * node_3.radius) * s_c)) {
+    let _e45 = bsh_inner_scale(node_4.extent, -(v_6), d2_7, r_3, rl_3);
+    let s_c = (_e45 * 1.001f);
+    let _e50 = bsh_range_bound(node_4);
+    let reach = (node_4.extent + (sqrt(s_c) * _e50));
+    if (d2_7 <= ((node_4.radius * node_4.radius) * s_c)) {
         local_9 = (d2_7 <= (reach * reach));
     } else {
         local_9 = false;
     }
-    let _e67 = local_9;
-    return _e67;
+    let _e63 = local_9;
+    return _e63;
 }
 
 fn bsh_next_leaf_lobe(nodes_3: u32, start_1: u32, x_10: vec3<f32>, r_4: vec3<f32>, rl_4: vec4<f32>) -> u32 {

@@ -199,10 +199,10 @@ fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     if _e16 {
         return 0f;
     }
-    let w_3 = (v_3 / vec3(sqrt(d2_6)));
-    let cos_x_1 = -(dot(n, w_3));
+    let w_4 = (v_3 / vec3(sqrt(d2_6)));
+    let cos_x_1 = -(dot(n, w_4));
     if !((cos_x_1 <= 0f)) {
-        local_1 = (dot(ng, w_3) >= 0f);
+        local_1 = (dot(ng, w_4) >= 0f);
     } else {
         local_1 = true;
     }
@@ -240,6 +240,11 @@ fn bsh_range_bound(node_1: BshNode) -> f32 {
     }
     let _e8 = f32_from_bits(node_1.light);
     return _e8;
+}
+
+fn bsh_reach_bound(node_2: BshNode, w_2: f32) -> f32 {
+    let _e5 = bsh_range_bound(node_2);
+    return (node_2.extent + ((w_2 * 1.001f) * _e5));
 }
 
 fn mul_hi_u32_(a_3: u32, b_3: u32) -> u32 {
@@ -348,14 +353,14 @@ fn triangle_normal(a_5: vec3<f32>, b_4: vec3<f32>, c_2: vec3<f32>) -> vec3<f32> 
     return (n_9 / vec3(sqrt(l2_)));
 }
 
-fn light_intensity(l: GpuLight, w_2: vec3<f32>) -> vec3<f32> {
+fn light_intensity(l: GpuLight, w_3: vec3<f32>) -> vec3<f32> {
     switch l.kind {
         case 0u: {
             return l.intensity;
         }
         case 3u: {
             let _e8 = triangle_normal(l.p0_, l.p1_, l.p2_);
-            let _e10 = triangle_lobe(_e8, l.a, w_2);
+            let _e10 = triangle_lobe(_e8, l.a, w_3);
             return (l.intensity * _e10);
         }
         default: {
@@ -399,16 +404,16 @@ fn bsh_inner_scale(a_7: f32, v_1: vec3<f32>, d2_5: f32, r_2: vec3<f32>, rl_2: ve
     return _e8;
 }
 
-fn bsh_reaches(node_2: BshNode, x_3: vec3<f32>, r_3: vec3<f32>, rl_3: vec4<f32>) -> bool {
+fn bsh_reaches(node_3: BshNode, x_3: vec3<f32>, r_3: vec3<f32>, rl_3: vec4<f32>) -> bool {
     var local_5: bool;
     var local_6: bool;
 
-    let _e6 = sphere_contains_point(node_2.center, node_2.radius, x_3);
+    let _e6 = sphere_contains_point(node_3.center, node_3.radius, x_3);
     if _e6 {
         return true;
     }
     if !((rl_3.w <= 1f)) {
-        let _e20 = sphere_contains_point(node_2.center, (node_2.radius * (rl_3.w * 1.0001f)), x_3);
+        let _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001f)), x_3);
         local_5 = !(_e20);
     } else {
         local_5 = true;
@@ -417,29 +422,29 @@ fn bsh_reaches(node_2: BshNode, x_3: vec3<f32>, r_3: vec3<f32>, rl_3: vec4<f32>)
     if _e23 {
         return false;
     }
-    let _e25 = bsh_range_bound(node_2);
-    let v_5 = (x_3 - node_2.center);
+    let v_5 = (x_3 - node_3.center);
     let d2_7 = dot(v_5, v_5);
-    let reach_max = (node_2.extent + ((rl_3.w * 1.001f) * _e25));
-    if (d2_7 > (reach_max * reach_max)) {
+    let _e29 = bsh_reach_bound(node_3, rl_3.w);
+    if (d2_7 > (_e29 * _e29)) {
         return false;
     }
-    if (node_2.child == BSH_NONE) {
-        let _e43 = range_scale_toward(rl_3, node_2.center, node_2.extent, x_3, r_3);
-        let _e46 = bsh_scaled_radius(node_2, sqrt(_e43));
-        let _e47 = sphere_contains_point(node_2.center, _e46, x_3);
-        return _e47;
+    if (node_3.child == BSH_NONE) {
+        let _e38 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_3, r_3);
+        let _e41 = bsh_scaled_radius(node_3, sqrt(_e38));
+        let _e42 = sphere_contains_point(node_3.center, _e41, x_3);
+        return _e42;
     }
-    let _e50 = bsh_inner_scale(node_2.extent, -(v_5), d2_7, r_3, rl_3);
-    let s_c = (_e50 * 1.001f);
-    let reach = (node_2.extent + (sqrt(s_c) * _e25));
-    if (d2_7 <= ((node_2.radius * node_2.radius) * s_c)) {
+    let _e45 = bsh_inner_scale(node_3.extent, -(v_5), d2_7, r_3, rl_3);
+    let s_c = (_e45 * 1.001f);
+    let _e50 = bsh_range_bound(node_3);
+    let reach = (node_3.extent + (sqrt(s_c) * _e50));
+    if (d2_7 <= ((node_3.radius * node_3.radius) * s_c)) {
         local_6 = (d2_7 <= (reach * reach));
     } else {
         local_6 = false;
     }
-    let _e67 = local_6;
-    return _e67;
+    let _e63 = local_6;
+    return _e63;
 }
 
 fn bsh_next_leaf_lobe(nodes_3: u32, start: u32, x_4: vec3<f32>, r_4: vec3<f32>, rl_4: vec4<f32>) -> u32 {

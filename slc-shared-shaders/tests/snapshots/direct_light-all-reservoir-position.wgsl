@@ -261,10 +261,10 @@ fn connection_cosine(x_3: vec3<f32>, y: vec3<f32>, n_1: vec3<f32>, ng: vec3<f32>
     if _e16 {
         return 0f;
     }
-    let w_9 = (v_4 / vec3(sqrt(d2_6)));
-    let cos_x_1 = -(dot(n_1, w_9));
+    let w_10 = (v_4 / vec3(sqrt(d2_6)));
+    let cos_x_1 = -(dot(n_1, w_10));
     if !((cos_x_1 <= 0f)) {
-        local_6 = (dot(ng, w_9) >= 0f);
+        local_6 = (dot(ng, w_10) >= 0f);
     } else {
         local_6 = true;
     }
@@ -503,6 +503,11 @@ fn bsh_range_bound(node_1: BshNode) -> f32 {
     return _e8;
 }
 
+fn bsh_reach_bound(node_2: BshNode, w_3: f32) -> f32 {
+    let _e5 = bsh_range_bound(node_2);
+    return (node_2.extent + ((w_3 * 1.001f) * _e5));
+}
+
 fn mul_hi_u32_(a_4: u32, b_3: u32) -> u32 {
     let a_lo = (a_4 & 65535u);
     let a_hi = (a_4 >> 16u);
@@ -641,22 +646,22 @@ fn triangle_normal(a_6: vec3<f32>, b_4: vec3<f32>, c_5: vec3<f32>) -> vec3<f32> 
     return (n_13 / vec3(sqrt(l2_)));
 }
 
-fn light_intensity(l: GpuLight, w_3: vec3<f32>) -> vec3<f32> {
+fn light_intensity(l: GpuLight, w_4: vec3<f32>) -> vec3<f32> {
     switch l.kind {
         case 0u: {
             return l.intensity;
         }
         case 1u: {
-            let _e11 = spot_falloff(dot(l.p1_, w_3), l.a, l.b, l.p2_.x);
+            let _e11 = spot_falloff(dot(l.p1_, w_4), l.a, l.b, l.p2_.x);
             return (l.intensity * _e11);
         }
         case 2u: {
-            let _e18 = ies_light_candela(0u, l.ies_base, l.p1_, l.p2_, w_3);
+            let _e18 = ies_light_candela(0u, l.ies_base, l.p1_, l.p2_, w_4);
             return (l.intensity * _e18);
         }
         case 3u: {
             let _e24 = triangle_normal(l.p0_, l.p1_, l.p2_);
-            let _e26 = triangle_lobe(_e24, l.a, w_3);
+            let _e26 = triangle_lobe(_e24, l.a, w_4);
             return (l.intensity * _e26);
         }
         default: {
@@ -700,16 +705,16 @@ fn bsh_inner_scale(a_8: f32, v_1: vec3<f32>, d2_5: f32, r_4: vec3<f32>, rl_2: ve
     return _e8;
 }
 
-fn bsh_reaches(node_2: BshNode, x_8: vec3<f32>, r_5: vec3<f32>, rl_3: vec4<f32>) -> bool {
+fn bsh_reaches(node_3: BshNode, x_8: vec3<f32>, r_5: vec3<f32>, rl_3: vec4<f32>) -> bool {
     var local_11: bool;
     var local_12: bool;
 
-    let _e6 = sphere_contains_point(node_2.center, node_2.radius, x_8);
+    let _e6 = sphere_contains_point(node_3.center, node_3.radius, x_8);
     if _e6 {
         return true;
     }
     if !((rl_3.w <= 1f)) {
-        let _e20 = sphere_contains_point(node_2.center, (node_2.radius * (rl_3.w * 1.0001f)), x_8);
+        let _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001f)), x_8);
         local_11 = !(_e20);
     } else {
         local_11 = true;
@@ -718,33 +723,33 @@ fn bsh_reaches(node_2: BshNode, x_8: vec3<f32>, r_5: vec3<f32>, rl_3: vec4<f32>)
     if _e23 {
         return false;
     }
-    let _e25 = bsh_range_bound(node_2);
-    let v_6 = (x_8 - node_2.center);
+    let v_6 = (x_8 - node_3.center);
     let d2_7 = dot(v_6, v_6);
-    let reach_max = (node_2.extent + ((rl_3.w * 1.001f) * _e25));
-    if (d2_7 > (reach_max * reach_max)) {
+    let _e29 = bsh_reach_bound(node_3, rl_3.w);
+    if (d2_7 > (_e29 * _e29)) {
         return false;
     }
-    if (node_2.child == BSH_NONE) {
-        let _e43 = range_scale_toward(rl_3, node_2.center, node_2.extent, x_8, r_5);
-        let _e46 = bsh_scaled_radius(node_2, sqrt(_e43));
-        let _e47 = sphere_contains_point(node_2.center, _e46, x_8);
-        return _e47;
+    if (node_3.child == BSH_NONE) {
+        let _e38 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_8, r_5);
+        let _e41 = bsh_scaled_radius(node_3, sqrt(_e38));
+        let _e42 = sphere_contains_point(node_3.center, _e41, x_8);
+        return _e42;
     }
-    let _e50 = bsh_inner_scale(node_2.extent, -(v_6), d2_7, r_5, rl_3);
-    let s_c = (_e50 * 1.001f);
-    let reach = (node_2.extent + (sqrt(s_c) * _e25));
-    if (d2_7 <= ((node_2.radius * node_2.radius) * s_c)) {
+    let _e45 = bsh_inner_scale(node_3.extent, -(v_6), d2_7, r_5, rl_3);
+    let s_c = (_e45 * 1.001f);
+    let _e50 = bsh_range_bound(node_3);
+    let reach = (node_3.extent + (sqrt(s_c) * _e50));
+    if (d2_7 <= ((node_3.radius * node_3.radius) * s_c)) {
         local_12 = (d2_7 <= (reach * reach));
     } else {
         local_12 = false;
     }
-    let _e67 = local_12;
-    return _e67;
+    let _e63 = local_12;
+    return _e63;
 }
 
-fn bsh_reaches_box(node_3: BshNode, lo_3: vec3<f32>, hi_3: vec3<f32>, w_4: f32) -> bool {
-    let _e13 = sphere_overlaps_aabb(node_3.center, (node_3.radius * (max(1f, (w_4 * 1.0001f)) * 1.0001f)), lo_3, hi_3);
+fn bsh_reaches_box(node_4: BshNode, lo_3: vec3<f32>, hi_3: vec3<f32>, w_5: f32) -> bool {
+    let _e13 = sphere_overlaps_aabb(node_4.center, (node_4.radius * (max(1f, (w_5 * 1.0001f)) * 1.0001f)), lo_3, hi_3);
     return _e13;
 }
 
@@ -794,7 +799,7 @@ fn bsh_subtree(nodes_3: u32, s_1: u32, depth: u32) -> u32 {
     return _e44;
 }
 
-fn bsh_next_leaf_box(nodes_4: u32, start_2: u32, end: u32, lo_4: vec3<f32>, hi_4: vec3<f32>, w_5: f32) -> u32 {
+fn bsh_next_leaf_box(nodes_4: u32, start_2: u32, end: u32, lo_4: vec3<f32>, hi_4: vec3<f32>, w_6: f32) -> u32 {
     var i_3: u32;
 
     i_3 = start_2;
@@ -807,7 +812,7 @@ fn bsh_next_leaf_box(nodes_4: u32, start_2: u32, end: u32, lo_4: vec3<f32>, hi_4
         {
             let _e9 = i_3;
             let _e10 = bsh_node(nodes_4, _e9);
-            let _e11 = bsh_reaches_box(_e10, lo_4, hi_4, w_5);
+            let _e11 = bsh_reaches_box(_e10, lo_4, hi_4, w_6);
             if _e11 {
                 if (_e10.child == BSH_NONE) {
                     if ((_e10.light & BSH_TAIL) == 0u) {
@@ -1017,7 +1022,7 @@ fn tile_subtree(s_3: u32, t_2: TileWalk, list: bool, at_1: u32, start_3: u32, to
     return (_e61 - at_1);
 }
 
-fn tile_walk_begin(li_3: u32, x_11: vec3<f32>, w_6: f32, has_1: bool) -> TileWalk {
+fn tile_walk_begin(li_3: u32, x_11: vec3<f32>, w_7: f32, has_1: bool) -> TileWalk {
     var local_19: bool;
     var t_3: TileWalk;
     var s_4: u32;
@@ -1025,12 +1030,12 @@ fn tile_walk_begin(li_3: u32, x_11: vec3<f32>, w_6: f32, has_1: bool) -> TileWal
     var s_5: u32 = 0u;
 
     if has_1 {
-        local_19 = (w_6 >= 0f);
+        local_19 = (w_7 >= 0f);
     } else {
         local_19 = false;
     }
     let _e12 = local_19;
-    let _e14 = atomicMax((&tile_scale), select(0u, bitcast<u32>(w_6), _e12));
+    let _e14 = atomicMax((&tile_scale), select(0u, bitcast<u32>(w_7), _e12));
     let _e15 = workgroup_box(li_3, x_11, has_1);
     let _e19 = workgroupUniformLoad((&tile_scale));
     t_3 = TileWalk(_e15.lo, _e15.hi, bitcast<f32>(_e19), 0u);
@@ -1143,14 +1148,14 @@ fn shade_connection(c_7: Connection, x_12: vec3<f32>, n_10: vec3<f32>, m_1: Mate
     return _e13;
 }
 
-fn shade_pick_traced(li_5: u32, x_13: vec3<f32>, n_11: vec3<f32>, r_6: vec3<f32>, rl_4: vec4<f32>, m_2: Material, w_7: f32, u1_4: f32, u2_4: f32, eps_2: f32, trace_2: bool) -> Shaded {
-    let _e12 = connect_traced(li_5, x_13, n_11, n_11, 1f, w_7, u1_4, u2_4, eps_2, trace_2);
+fn shade_pick_traced(li_5: u32, x_13: vec3<f32>, n_11: vec3<f32>, r_6: vec3<f32>, rl_4: vec4<f32>, m_2: Material, w_8: f32, u1_4: f32, u2_4: f32, eps_2: f32, trace_2: bool) -> Shaded {
+    let _e12 = connect_traced(li_5, x_13, n_11, n_11, 1f, w_8, u1_4, u2_4, eps_2, trace_2);
     let _e13 = shade_connection(_e12, x_13, n_11, m_2);
     return _e13;
 }
 
-fn shade_pick(li_6: u32, x_14: vec3<f32>, n_12: vec3<f32>, r_7: vec3<f32>, rl_5: vec4<f32>, m_3: Material, w_8: f32, u1_5: f32, u2_5: f32, eps_3: f32) -> Shaded {
-    let _e11 = shade_pick_traced(li_6, x_14, n_12, r_7, rl_5, m_3, w_8, u1_5, u2_5, eps_3, true);
+fn shade_pick(li_6: u32, x_14: vec3<f32>, n_12: vec3<f32>, r_7: vec3<f32>, rl_5: vec4<f32>, m_3: Material, w_9: f32, u1_5: f32, u2_5: f32, eps_3: f32) -> Shaded {
+    let _e11 = shade_pick_traced(li_6, x_14, n_12, r_7, rl_5, m_3, w_9, u1_5, u2_5, eps_3, true);
     return _e11;
 }
 

@@ -275,10 +275,10 @@ fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n_1: vec3<f32>, ng: vec3<f32>
     if _e16 {
         return 0f;
     }
-    let w_9 = (v_4 / vec3(sqrt(d2_6)));
-    let cos_x_1 = -(dot(n_1, w_9));
+    let w_10 = (v_4 / vec3(sqrt(d2_6)));
+    let cos_x_1 = -(dot(n_1, w_10));
     if !((cos_x_1 <= 0f)) {
-        local_8 = (dot(ng, w_9) >= 0f);
+        local_8 = (dot(ng, w_10) >= 0f);
     } else {
         local_8 = true;
     }
@@ -315,6 +315,11 @@ fn bsh_range_bound(node_1: BshNode) -> f32 {
     return _e8;
 }
 
+fn bsh_reach_bound(node_2: BshNode, w_2: f32) -> f32 {
+    let _e5 = bsh_range_bound(node_2);
+    return (node_2.extent + ((w_2 * 1.001f) * _e5));
+}
+
 fn weighted_threshold(w_sum: f32, u_2: f32) -> f32 {
     return (w_sum / (1f - u_2));
 }
@@ -341,19 +346,19 @@ fn slot_target(c_3: vec3<f32>, slot: u32, k_2: u32) -> f32 {
 fn slot_share(slot_1: u32, k_3: u32) -> vec3<f32> {
     if (k_3 < 3u) {
         let _e4 = to_f32_(k_3);
-        let w_10 = (1f / _e4);
-        return vec3<f32>(w_10, w_10, w_10);
+        let w_11 = (1f / _e4);
+        return vec3<f32>(w_11, w_11, w_11);
     }
     let j_4 = (slot_1 % 3u);
     let _e15 = to_f32_((((k_3 + 2u) - j_4) / 3u));
-    let w_11 = (1f / _e15);
+    let w_12 = (1f / _e15);
     if (j_4 == 0u) {
-        return vec3<f32>(w_11, 0f, 0f);
+        return vec3<f32>(w_12, 0f, 0f);
     }
     if (j_4 == 1u) {
-        return vec3<f32>(0f, w_11, 0f);
+        return vec3<f32>(0f, w_12, 0f);
     }
-    return vec3<f32>(0f, 0f, w_11);
+    return vec3<f32>(0f, 0f, w_12);
 }
 
 fn smith_root(cos_: f32, alpha: f32) -> f32 {
@@ -509,13 +514,13 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_3: vec3<f32>, b_2: vec3<f32>, 
     return -1f;
 }
 
-fn light_intensity(l: GpuLight, w_2: vec3<f32>) -> vec3<f32> {
+fn light_intensity(l: GpuLight, w_3: vec3<f32>) -> vec3<f32> {
     switch l.kind {
         case 0u: {
             return l.intensity;
         }
         case 1u: {
-            let _e11 = spot_falloff(dot(l.p1_, w_2), l.a, l.b, l.p2_.x);
+            let _e11 = spot_falloff(dot(l.p1_, w_3), l.a, l.b, l.p2_.x);
             return (l.intensity * _e11);
         }
         default: {
@@ -532,7 +537,7 @@ fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
     var hit: GeoHit;
     var stack: array<u32, 64>;
     var sp: u32 = 0u;
-    var node_2: u32 = 0u;
+    var node_3: u32 = 0u;
     var i: u32;
 
     hit.t = t_max_2;
@@ -543,7 +548,7 @@ fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
     }
     let _e14 = ray_inverse3_(d_4);
     loop {
-        let _e21 = node_2;
+        let _e21 = node_3;
         let n_8 = geo_nodes[_e21];
         let _e25 = nodes_visited;
         nodes_visited = (_e25 + 1u);
@@ -586,7 +591,7 @@ fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
                     let _e72 = sp;
                     sp = (_e72 + 1u);
                 }
-                node_2 = n_8.first;
+                node_3 = n_8.first;
                 continue;
             }
         }
@@ -598,7 +603,7 @@ fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
         sp = (_e79 - 1u);
         let _e82 = sp;
         let _e84 = stack[_e82];
-        node_2 = _e84;
+        node_3 = _e84;
     }
     let _e85 = hit;
     return _e85;
@@ -640,16 +645,16 @@ fn bsh_inner_scale(a_5: f32, v_1: vec3<f32>, d2_5: f32, r_4: vec3<f32>, rl_2: ve
     return _e8;
 }
 
-fn bsh_reaches(node_3: BshNode, x_4: vec3<f32>, r_5: vec3<f32>, rl_3: vec4<f32>) -> bool {
+fn bsh_reaches(node_4: BshNode, x_4: vec3<f32>, r_5: vec3<f32>, rl_3: vec4<f32>) -> bool {
     var local_14: bool;
     var local_15: bool;
 
-    let _e6 = sphere_contains_point(node_3.center, node_3.radius, x_4);
+    let _e6 = sphere_contains_point(node_4.center, node_4.radius, x_4);
     if _e6 {
         return true;
     }
     if !((rl_3.w <= 1f)) {
-        let _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001f)), x_4);
+        let _e20 = sphere_contains_point(node_4.center, (node_4.radius * (rl_3.w * 1.0001f)), x_4);
         local_14 = !(_e20);
     } else {
         local_14 = true;
@@ -658,33 +663,33 @@ fn bsh_reaches(node_3: BshNode, x_4: vec3<f32>, r_5: vec3<f32>, rl_3: vec4<f32>)
     if _e23 {
         return false;
     }
-    let _e25 = bsh_range_bound(node_3);
-    let v_7 = (x_4 - node_3.center);
+    let v_7 = (x_4 - node_4.center);
     let d2_7 = dot(v_7, v_7);
-    let reach_max = (node_3.extent + ((rl_3.w * 1.001f) * _e25));
-    if (d2_7 > (reach_max * reach_max)) {
+    let _e29 = bsh_reach_bound(node_4, rl_3.w);
+    if (d2_7 > (_e29 * _e29)) {
         return false;
     }
-    if (node_3.child == BSH_NONE) {
-        let _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_4, r_5);
-        let _e46 = bsh_scaled_radius(node_3, sqrt(_e43));
-        let _e47 = sphere_contains_point(node_3.center, _e46, x_4);
-        return _e47;
+    if (node_4.child == BSH_NONE) {
+        let _e38 = range_scale_toward(rl_3, node_4.center, node_4.extent, x_4, r_5);
+        let _e41 = bsh_scaled_radius(node_4, sqrt(_e38));
+        let _e42 = sphere_contains_point(node_4.center, _e41, x_4);
+        return _e42;
     }
-    let _e50 = bsh_inner_scale(node_3.extent, -(v_7), d2_7, r_5, rl_3);
-    let s_c = (_e50 * 1.001f);
-    let reach = (node_3.extent + (sqrt(s_c) * _e25));
-    if (d2_7 <= ((node_3.radius * node_3.radius) * s_c)) {
+    let _e45 = bsh_inner_scale(node_4.extent, -(v_7), d2_7, r_5, rl_3);
+    let s_c = (_e45 * 1.001f);
+    let _e50 = bsh_range_bound(node_4);
+    let reach = (node_4.extent + (sqrt(s_c) * _e50));
+    if (d2_7 <= ((node_4.radius * node_4.radius) * s_c)) {
         local_15 = (d2_7 <= (reach * reach));
     } else {
         local_15 = false;
     }
-    let _e67 = local_15;
-    return _e67;
+    let _e63 = local_15;
+    return _e63;
 }
 
-fn bsh_reaches_box(node_4: BshNode, lo: vec3<f32>, hi: vec3<f32>, w_3: f32) -> bool {
-    let _e13 = sphere_overlaps_aabb(node_4.center, (node_4.radius * (max(1f, (w_3 * 1.0001f)) * 1.0001f)), lo, hi);
+fn bsh_reaches_box(node_5: BshNode, lo: vec3<f32>, hi: vec3<f32>, w_4: f32) -> bool {
+    let _e13 = sphere_overlaps_aabb(node_5.center, (node_5.radius * (max(1f, (w_4 * 1.0001f)) * 1.0001f)), lo, hi);
     return _e13;
 }
 
@@ -734,7 +739,7 @@ fn bsh_subtree(nodes_3: u32, s_1: u32, depth: u32) -> u32 {
     return _e44;
 }
 
-fn bsh_next_leaf_box(nodes_4: u32, start_1: u32, end: u32, lo_1: vec3<f32>, hi_1: vec3<f32>, w_4: f32) -> u32 {
+fn bsh_next_leaf_box(nodes_4: u32, start_1: u32, end: u32, lo_1: vec3<f32>, hi_1: vec3<f32>, w_5: f32) -> u32 {
     var i_3: u32;
 
     i_3 = start_1;
@@ -747,7 +752,7 @@ fn bsh_next_leaf_box(nodes_4: u32, start_1: u32, end: u32, lo_1: vec3<f32>, hi_1
         {
             let _e9 = i_3;
             let _e10 = bsh_node(nodes_4, _e9);
-            let _e11 = bsh_reaches_box(_e10, lo_1, hi_1, w_4);
+            let _e11 = bsh_reaches_box(_e10, lo_1, hi_1, w_5);
             if _e11 {
                 if (_e10.child == BSH_NONE) {
                     if ((_e10.light & BSH_TAIL) == 0u) {
@@ -940,7 +945,7 @@ fn tile_subtree(s_3: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: 
     return (_e61 - at);
 }
 
-fn tile_walk_begin(li_3: u32, x_7: vec3<f32>, w_5: f32, has_1: bool) -> TileWalk {
+fn tile_walk_begin(li_3: u32, x_7: vec3<f32>, w_6: f32, has_1: bool) -> TileWalk {
     var local_22: bool;
     var t_2: TileWalk;
     var s_4: u32;
@@ -948,12 +953,12 @@ fn tile_walk_begin(li_3: u32, x_7: vec3<f32>, w_5: f32, has_1: bool) -> TileWalk
     var s_5: u32 = 0u;
 
     if has_1 {
-        local_22 = (w_5 >= 0f);
+        local_22 = (w_6 >= 0f);
     } else {
         local_22 = false;
     }
     let _e12 = local_22;
-    let _e14 = atomicMax((&tile_scale), select(0u, bitcast<u32>(w_5), _e12));
+    let _e14 = atomicMax((&tile_scale), select(0u, bitcast<u32>(w_6), _e12));
     let _e15 = workgroup_box(li_3, x_7, has_1);
     let _e19 = workgroupUniformLoad((&tile_scale));
     t_2 = TileWalk(_e15.lo, _e15.hi, bitcast<f32>(_e19), 0u);
@@ -1076,14 +1081,14 @@ fn shade_connection(c_6: Connection, x_8: vec3<f32>, n_5: vec3<f32>, m_1: Materi
     return _e13;
 }
 
-fn shade_pick_traced(li_5: u32, x_9: vec3<f32>, n_6: vec3<f32>, r_6: vec3<f32>, rl_4: vec4<f32>, m_2: Material, w_6: f32, u1_3: f32, u2_3: f32, eps_2: f32, trace_3: bool) -> Shaded {
-    let _e12 = connect_traced(li_5, x_9, n_6, n_6, 1f, w_6, u1_3, u2_3, eps_2, trace_3);
+fn shade_pick_traced(li_5: u32, x_9: vec3<f32>, n_6: vec3<f32>, r_6: vec3<f32>, rl_4: vec4<f32>, m_2: Material, w_7: f32, u1_3: f32, u2_3: f32, eps_2: f32, trace_3: bool) -> Shaded {
+    let _e12 = connect_traced(li_5, x_9, n_6, n_6, 1f, w_7, u1_3, u2_3, eps_2, trace_3);
     let _e13 = shade_connection(_e12, x_9, n_6, m_2);
     return _e13;
 }
 
-fn shade_pick(li_6: u32, x_10: vec3<f32>, n_7: vec3<f32>, r_7: vec3<f32>, rl_5: vec4<f32>, m_3: Material, w_7: f32, u1_4: f32, u2_4: f32, eps_3: f32) -> Shaded {
-    let _e11 = shade_pick_traced(li_6, x_10, n_7, r_7, rl_5, m_3, w_7, u1_4, u2_4, eps_3, true);
+fn shade_pick(li_6: u32, x_10: vec3<f32>, n_7: vec3<f32>, r_7: vec3<f32>, rl_5: vec4<f32>, m_3: Material, w_8: f32, u1_4: f32, u2_4: f32, eps_3: f32) -> Shaded {
+    let _e11 = shade_pick_traced(li_6, x_10, n_7, r_7, rl_5, m_3, w_8, u1_4, u2_4, eps_3, true);
     return _e11;
 }
 
@@ -1091,8 +1096,8 @@ fn add(a_6: Shaded, b_6: Shaded) -> Shaded {
     return Shaded((a_6.e + b_6.e), (a_6.diffuse + b_6.diffuse), (a_6.specular + b_6.specular));
 }
 
-fn scaled(s_8: Shaded, w_8: vec3<f32>) -> Shaded {
-    return Shaded((s_8.e * w_8), (s_8.diffuse * w_8), (s_8.specular * w_8));
+fn scaled(s_8: Shaded, w_9: vec3<f32>) -> Shaded {
+    return Shaded((s_8.e * w_9), (s_8.diffuse * w_9), (s_8.specular * w_9));
 }
 
 fn first_holders(keys_1: array<vec2<u32>, 8>, held_1: array<bool, 8>) -> array<u32, 8> {

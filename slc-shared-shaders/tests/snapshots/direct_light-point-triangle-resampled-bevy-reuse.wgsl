@@ -346,10 +346,10 @@ fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n_1: vec3<f32>, ng: vec3<f32>
     if _e16 {
         return 0f;
     }
-    let w_11 = (v_7 / vec3(sqrt(d2_6)));
-    let cos_x_1 = -(dot(n_1, w_11));
+    let w_12 = (v_7 / vec3(sqrt(d2_6)));
+    let cos_x_1 = -(dot(n_1, w_12));
     if !((cos_x_1 <= 0f)) {
-        local_9 = (dot(ng, w_11) >= 0f);
+        local_9 = (dot(ng, w_12) >= 0f);
     } else {
         local_9 = true;
     }
@@ -389,8 +389,13 @@ fn bsh_range_bound(node_1: BshNode) -> f32 {
     return _e8;
 }
 
-fn weighted_replace(w_3: f32, w_sum: f32, u_2: f32) -> bool {
-    return ((u_2 * w_sum) < w_3);
+fn bsh_reach_bound(node_2: BshNode, w_3: f32) -> f32 {
+    let _e5 = bsh_range_bound(node_2);
+    return (node_2.extent + ((w_3 * 1.001f) * _e5));
+}
+
+fn weighted_replace(w_4: f32, w_sum: f32, u_2: f32) -> bool {
+    return ((u_2 * w_sum) < w_4);
 }
 
 fn weighted_threshold(w_sum_1: f32, u_3: f32) -> f32 {
@@ -419,19 +424,19 @@ fn slot_target(c_4: vec3<f32>, slot: u32, k_2: u32) -> f32 {
 fn slot_share(slot_1: u32, k_3: u32) -> vec3<f32> {
     if (k_3 < 3u) {
         let _e4 = to_f32_(k_3);
-        let w_12 = (1f / _e4);
-        return vec3<f32>(w_12, w_12, w_12);
+        let w_13 = (1f / _e4);
+        return vec3<f32>(w_13, w_13, w_13);
     }
     let j_7 = (slot_1 % 3u);
     let _e15 = to_f32_((((k_3 + 2u) - j_7) / 3u));
-    let w_13 = (1f / _e15);
+    let w_14 = (1f / _e15);
     if (j_7 == 0u) {
-        return vec3<f32>(w_13, 0f, 0f);
+        return vec3<f32>(w_14, 0f, 0f);
     }
     if (j_7 == 1u) {
-        return vec3<f32>(0f, w_13, 0f);
+        return vec3<f32>(0f, w_14, 0f);
     }
-    return vec3<f32>(0f, 0f, w_13);
+    return vec3<f32>(0f, 0f, w_14);
 }
 
 fn grid_coordinate(bits_1: u32) -> f32 {
@@ -448,11 +453,11 @@ fn disk_offset(r_3: f32, u1_1: f32, u2_1: f32) -> vec2<f32> {
     return (vec2<f32>(cos(a_9), sin(a_9)) * (r_3 * sqrt(u1_1)));
 }
 
-fn gris_weight(own: f32, all_: f32, p_hat: f32, w_4: f32) -> f32 {
+fn gris_weight(own: f32, all_: f32, p_hat: f32, w_5: f32) -> f32 {
     if !((all_ > 0f)) {
         return 0f;
     }
-    return (((own / all_) * p_hat) * w_4);
+    return (((own / all_) * p_hat) * w_5);
 }
 
 fn gris_contribution_weight(w_sum_2: f32, p_hat_1: f32) -> f32 {
@@ -782,14 +787,14 @@ fn history_matches(n_5: vec3<f32>, nh: vec3<f32>, p_3: vec3<f32>, oh: f32, d_4: 
     return _e17;
 }
 
-fn light_intensity(l_1: GpuLight, w_5: vec3<f32>) -> vec3<f32> {
+fn light_intensity(l_1: GpuLight, w_6: vec3<f32>) -> vec3<f32> {
     switch l_1.kind {
         case 0u: {
             return l_1.intensity;
         }
         case 3u: {
             let _e8 = triangle_normal(l_1.p0_, l_1.p1_, l_1.p2_);
-            let _e10 = triangle_lobe(_e8, l_1.a, w_5);
+            let _e10 = triangle_lobe(_e8, l_1.a, w_6);
             return (l_1.intensity * _e10);
         }
         default: {
@@ -810,7 +815,7 @@ fn trace(o_2: vec3<f32>, d_5: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
     var hit: GeoHit;
     var stack: array<u32, 64>;
     var sp: u32 = 0u;
-    var node_2: u32 = 0u;
+    var node_3: u32 = 0u;
     var i: u32;
 
     hit.t = t_max_2;
@@ -821,7 +826,7 @@ fn trace(o_2: vec3<f32>, d_5: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
     }
     let _e14 = ray_inverse3_(d_5);
     loop {
-        let _e21 = node_2;
+        let _e21 = node_3;
         let n_15 = geo_nodes[_e21];
         let _e27 = hit.t;
         let _e28 = ray_aabb(o_2, _e14, n_15.bmin, n_15.bmax, _e27);
@@ -862,7 +867,7 @@ fn trace(o_2: vec3<f32>, d_5: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
                     let _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_2 = n_15.first;
+                node_3 = n_15.first;
                 continue;
             }
         }
@@ -874,7 +879,7 @@ fn trace(o_2: vec3<f32>, d_5: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
         sp = (_e75 - 1u);
         let _e78 = sp;
         let _e80 = stack[_e78];
-        node_2 = _e80;
+        node_3 = _e80;
     }
     let _e81 = hit;
     return _e81;
@@ -914,16 +919,16 @@ fn bsh_inner_scale(a_7: f32, v_3: vec3<f32>, d2_5: f32, r_7: vec3<f32>, rl_2: ve
     return _e8;
 }
 
-fn bsh_reaches(node_3: BshNode, x_4: vec3<f32>, r_8: vec3<f32>, rl_3: vec4<f32>) -> bool {
+fn bsh_reaches(node_4: BshNode, x_4: vec3<f32>, r_8: vec3<f32>, rl_3: vec4<f32>) -> bool {
     var local_21: bool;
     var local_22: bool;
 
-    let _e6 = sphere_contains_point(node_3.center, node_3.radius, x_4);
+    let _e6 = sphere_contains_point(node_4.center, node_4.radius, x_4);
     if _e6 {
         return true;
     }
     if !((rl_3.w <= 1f)) {
-        let _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001f)), x_4);
+        let _e20 = sphere_contains_point(node_4.center, (node_4.radius * (rl_3.w * 1.0001f)), x_4);
         local_21 = !(_e20);
     } else {
         local_21 = true;
@@ -932,33 +937,33 @@ fn bsh_reaches(node_3: BshNode, x_4: vec3<f32>, r_8: vec3<f32>, rl_3: vec4<f32>)
     if _e23 {
         return false;
     }
-    let _e25 = bsh_range_bound(node_3);
-    let v_10 = (x_4 - node_3.center);
+    let v_10 = (x_4 - node_4.center);
     let d2_7 = dot(v_10, v_10);
-    let reach_max = (node_3.extent + ((rl_3.w * 1.001f) * _e25));
-    if (d2_7 > (reach_max * reach_max)) {
+    let _e29 = bsh_reach_bound(node_4, rl_3.w);
+    if (d2_7 > (_e29 * _e29)) {
         return false;
     }
-    if (node_3.child == BSH_NONE) {
-        let _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_4, r_8);
-        let _e46 = bsh_scaled_radius(node_3, sqrt(_e43));
-        let _e47 = sphere_contains_point(node_3.center, _e46, x_4);
-        return _e47;
+    if (node_4.child == BSH_NONE) {
+        let _e38 = range_scale_toward(rl_3, node_4.center, node_4.extent, x_4, r_8);
+        let _e41 = bsh_scaled_radius(node_4, sqrt(_e38));
+        let _e42 = sphere_contains_point(node_4.center, _e41, x_4);
+        return _e42;
     }
-    let _e50 = bsh_inner_scale(node_3.extent, -(v_10), d2_7, r_8, rl_3);
-    let s_c = (_e50 * 1.001f);
-    let reach = (node_3.extent + (sqrt(s_c) * _e25));
-    if (d2_7 <= ((node_3.radius * node_3.radius) * s_c)) {
+    let _e45 = bsh_inner_scale(node_4.extent, -(v_10), d2_7, r_8, rl_3);
+    let s_c = (_e45 * 1.001f);
+    let _e50 = bsh_range_bound(node_4);
+    let reach = (node_4.extent + (sqrt(s_c) * _e50));
+    if (d2_7 <= ((node_4.radius * node_4.radius) * s_c)) {
         local_22 = (d2_7 <= (reach * reach));
     } else {
         local_22 = false;
     }
-    let _e67 = local_22;
-    return _e67;
+    let _e63 = local_22;
+    return _e63;
 }
 
-fn bsh_reaches_box(node_4: BshNode, lo: vec3<f32>, hi: vec3<f32>, w_6: f32) -> bool {
-    let _e13 = sphere_overlaps_aabb(node_4.center, (node_4.radius * (max(1f, (w_6 * 1.0001f)) * 1.0001f)), lo, hi);
+fn bsh_reaches_box(node_5: BshNode, lo: vec3<f32>, hi: vec3<f32>, w_7: f32) -> bool {
+    let _e13 = sphere_overlaps_aabb(node_5.center, (node_5.radius * (max(1f, (w_7 * 1.0001f)) * 1.0001f)), lo, hi);
     return _e13;
 }
 
@@ -1008,7 +1013,7 @@ fn bsh_subtree(nodes_3: u32, s_1: u32, depth: u32) -> u32 {
     return _e44;
 }
 
-fn bsh_next_leaf_box(nodes_4: u32, start_1: u32, end: u32, lo_1: vec3<f32>, hi_1: vec3<f32>, w_7: f32) -> u32 {
+fn bsh_next_leaf_box(nodes_4: u32, start_1: u32, end: u32, lo_1: vec3<f32>, hi_1: vec3<f32>, w_8: f32) -> u32 {
     var i_3: u32;
 
     i_3 = start_1;
@@ -1021,7 +1026,7 @@ fn bsh_next_leaf_box(nodes_4: u32, start_1: u32, end: u32, lo_1: vec3<f32>, hi_1
         {
             let _e9 = i_3;
             let _e10 = bsh_node(nodes_4, _e9);
-            let _e11 = bsh_reaches_box(_e10, lo_1, hi_1, w_7);
+            let _e11 = bsh_reaches_box(_e10, lo_1, hi_1, w_8);
             if _e11 {
                 if (_e10.child == BSH_NONE) {
                     if ((_e10.light & BSH_TAIL) == 0u) {
@@ -1220,7 +1225,7 @@ fn tile_subtree(s_3: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: 
     return (_e61 - at);
 }
 
-fn tile_walk_begin(li_4: u32, x_8: vec3<f32>, w_8: f32, has_1: bool) -> TileWalk {
+fn tile_walk_begin(li_4: u32, x_8: vec3<f32>, w_9: f32, has_1: bool) -> TileWalk {
     var local_29: bool;
     var t_2: TileWalk;
     var s_4: u32;
@@ -1228,12 +1233,12 @@ fn tile_walk_begin(li_4: u32, x_8: vec3<f32>, w_8: f32, has_1: bool) -> TileWalk
     var s_5: u32 = 0u;
 
     if has_1 {
-        local_29 = (w_8 >= 0f);
+        local_29 = (w_9 >= 0f);
     } else {
         local_29 = false;
     }
     let _e12 = local_29;
-    let _e14 = atomicMax((&tile_scale), select(0u, bitcast<u32>(w_8), _e12));
+    let _e14 = atomicMax((&tile_scale), select(0u, bitcast<u32>(w_9), _e12));
     let _e15 = workgroup_box(li_4, x_8, has_1);
     let _e19 = workgroupUniformLoad((&tile_scale));
     t_2 = TileWalk(_e15.lo, _e15.hi, bitcast<f32>(_e19), 0u);
@@ -1350,9 +1355,9 @@ fn shade_connection(c_9: Connection, x_9: vec3<f32>, n_8: vec3<f32>, m_1: Materi
     return _e28;
 }
 
-fn shade_pick_traced(li_6: u32, x_10: vec3<f32>, n_9: vec3<f32>, r_10: vec3<f32>, rl_5: vec4<f32>, m_2: Material, w_9: f32, u1_5: f32, u2_5: f32, eps_2: f32, trace_3: bool) -> Shaded {
+fn shade_pick_traced(li_6: u32, x_10: vec3<f32>, n_9: vec3<f32>, r_10: vec3<f32>, rl_5: vec4<f32>, m_2: Material, w_10: f32, u1_5: f32, u2_5: f32, eps_2: f32, trace_3: bool) -> Shaded {
     let _e11 = light_range_scale(li_6, x_10, r_10, rl_5);
-    let _e12 = connect_traced(li_6, x_10, n_9, n_9, _e11, w_9, u1_5, u2_5, eps_2, trace_3);
+    let _e12 = connect_traced(li_6, x_10, n_9, n_9, _e11, w_10, u1_5, u2_5, eps_2, trace_3);
     let _e13 = shade_connection(_e12, x_10, n_9, m_2);
     return _e13;
 }
@@ -1366,8 +1371,8 @@ fn add(a_8: Shaded, b_8: Shaded) -> Shaded {
     return Shaded((a_8.e + b_8.e), (a_8.diffuse + b_8.diffuse), (a_8.specular + b_8.specular));
 }
 
-fn scaled(s_8: Shaded, w_10: vec3<f32>) -> Shaded {
-    return Shaded((s_8.e * w_10), (s_8.diffuse * w_10), (s_8.specular * w_10));
+fn scaled(s_8: Shaded, w_11: vec3<f32>) -> Shaded {
+    return Shaded((s_8.e * w_11), (s_8.diffuse * w_11), (s_8.specular * w_11));
 }
 
 fn first_holders(keys_1: array<vec2<u32>, 8>, held_1: array<bool, 8>) -> array<u32, 8> {

@@ -287,10 +287,10 @@ fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n_1: vec3<f32>, ng: vec3<f32>
     if _e16 {
         return 0f;
     }
-    let w_10 = (v_7 / vec3(sqrt(d2_6)));
-    let cos_x_1 = -(dot(n_1, w_10));
+    let w_11 = (v_7 / vec3(sqrt(d2_6)));
+    let cos_x_1 = -(dot(n_1, w_11));
     if !((cos_x_1 <= 0f)) {
-        local_8 = (dot(ng, w_10) >= 0f);
+        local_8 = (dot(ng, w_11) >= 0f);
     } else {
         local_8 = true;
     }
@@ -330,6 +330,11 @@ fn bsh_range_bound(node_1: BshNode) -> f32 {
     return _e8;
 }
 
+fn bsh_reach_bound(node_2: BshNode, w_3: f32) -> f32 {
+    let _e5 = bsh_range_bound(node_2);
+    return (node_2.extent + ((w_3 * 1.001f) * _e5));
+}
+
 fn weighted_threshold(w_sum: f32, u_2: f32) -> f32 {
     return (w_sum / (1f - u_2));
 }
@@ -356,19 +361,19 @@ fn slot_target(c_4: vec3<f32>, slot: u32, k_2: u32) -> f32 {
 fn slot_share(slot_1: u32, k_3: u32) -> vec3<f32> {
     if (k_3 < 3u) {
         let _e4 = to_f32_(k_3);
-        let w_11 = (1f / _e4);
-        return vec3<f32>(w_11, w_11, w_11);
+        let w_12 = (1f / _e4);
+        return vec3<f32>(w_12, w_12, w_12);
     }
     let j_4 = (slot_1 % 3u);
     let _e15 = to_f32_((((k_3 + 2u) - j_4) / 3u));
-    let w_12 = (1f / _e15);
+    let w_13 = (1f / _e15);
     if (j_4 == 0u) {
-        return vec3<f32>(w_12, 0f, 0f);
+        return vec3<f32>(w_13, 0f, 0f);
     }
     if (j_4 == 1u) {
-        return vec3<f32>(0f, w_12, 0f);
+        return vec3<f32>(0f, w_13, 0f);
     }
-    return vec3<f32>(0f, 0f, w_12);
+    return vec3<f32>(0f, 0f, w_13);
 }
 
 fn ggx_d(cos_h: f32, sin2_h: f32, alpha: f32) -> f32 {
@@ -669,14 +674,14 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_4: vec3<f32>, 
     return -1f;
 }
 
-fn light_intensity(l_1: GpuLight, w_3: vec3<f32>) -> vec3<f32> {
+fn light_intensity(l_1: GpuLight, w_4: vec3<f32>) -> vec3<f32> {
     switch l_1.kind {
         case 0u: {
             return l_1.intensity;
         }
         case 3u: {
             let _e8 = triangle_normal(l_1.p0_, l_1.p1_, l_1.p2_);
-            let _e10 = triangle_lobe(_e8, l_1.a, w_3);
+            let _e10 = triangle_lobe(_e8, l_1.a, w_4);
             return (l_1.intensity * _e10);
         }
         default: {
@@ -697,7 +702,7 @@ fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
     var hit: GeoHit;
     var stack: array<u32, 64>;
     var sp: u32 = 0u;
-    var node_2: u32 = 0u;
+    var node_3: u32 = 0u;
     var i: u32;
 
     hit.t = t_max_2;
@@ -708,7 +713,7 @@ fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
     }
     let _e14 = ray_inverse3_(d_4);
     loop {
-        let _e21 = node_2;
+        let _e21 = node_3;
         let n_11 = geo_nodes[_e21];
         let _e27 = hit.t;
         let _e28 = ray_aabb(o_2, _e14, n_11.bmin, n_11.bmax, _e27);
@@ -749,7 +754,7 @@ fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
                     let _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_2 = n_11.first;
+                node_3 = n_11.first;
                 continue;
             }
         }
@@ -761,7 +766,7 @@ fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
         sp = (_e75 - 1u);
         let _e78 = sp;
         let _e80 = stack[_e78];
-        node_2 = _e80;
+        node_3 = _e80;
     }
     let _e81 = hit;
     return _e81;
@@ -801,16 +806,16 @@ fn bsh_inner_scale(a_7: f32, v_3: vec3<f32>, d2_5: f32, r_6: vec3<f32>, rl_2: ve
     return _e8;
 }
 
-fn bsh_reaches(node_3: BshNode, x_4: vec3<f32>, r_7: vec3<f32>, rl_3: vec4<f32>) -> bool {
+fn bsh_reaches(node_4: BshNode, x_4: vec3<f32>, r_7: vec3<f32>, rl_3: vec4<f32>) -> bool {
     var local_19: bool;
     var local_20: bool;
 
-    let _e6 = sphere_contains_point(node_3.center, node_3.radius, x_4);
+    let _e6 = sphere_contains_point(node_4.center, node_4.radius, x_4);
     if _e6 {
         return true;
     }
     if !((rl_3.w <= 1f)) {
-        let _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001f)), x_4);
+        let _e20 = sphere_contains_point(node_4.center, (node_4.radius * (rl_3.w * 1.0001f)), x_4);
         local_19 = !(_e20);
     } else {
         local_19 = true;
@@ -819,33 +824,33 @@ fn bsh_reaches(node_3: BshNode, x_4: vec3<f32>, r_7: vec3<f32>, rl_3: vec4<f32>)
     if _e23 {
         return false;
     }
-    let _e25 = bsh_range_bound(node_3);
-    let v_10 = (x_4 - node_3.center);
+    let v_10 = (x_4 - node_4.center);
     let d2_7 = dot(v_10, v_10);
-    let reach_max = (node_3.extent + ((rl_3.w * 1.001f) * _e25));
-    if (d2_7 > (reach_max * reach_max)) {
+    let _e29 = bsh_reach_bound(node_4, rl_3.w);
+    if (d2_7 > (_e29 * _e29)) {
         return false;
     }
-    if (node_3.child == BSH_NONE) {
-        let _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_4, r_7);
-        let _e46 = bsh_scaled_radius(node_3, sqrt(_e43));
-        let _e47 = sphere_contains_point(node_3.center, _e46, x_4);
-        return _e47;
+    if (node_4.child == BSH_NONE) {
+        let _e38 = range_scale_toward(rl_3, node_4.center, node_4.extent, x_4, r_7);
+        let _e41 = bsh_scaled_radius(node_4, sqrt(_e38));
+        let _e42 = sphere_contains_point(node_4.center, _e41, x_4);
+        return _e42;
     }
-    let _e50 = bsh_inner_scale(node_3.extent, -(v_10), d2_7, r_7, rl_3);
-    let s_c = (_e50 * 1.001f);
-    let reach = (node_3.extent + (sqrt(s_c) * _e25));
-    if (d2_7 <= ((node_3.radius * node_3.radius) * s_c)) {
+    let _e45 = bsh_inner_scale(node_4.extent, -(v_10), d2_7, r_7, rl_3);
+    let s_c = (_e45 * 1.001f);
+    let _e50 = bsh_range_bound(node_4);
+    let reach = (node_4.extent + (sqrt(s_c) * _e50));
+    if (d2_7 <= ((node_4.radius * node_4.radius) * s_c)) {
         local_20 = (d2_7 <= (reach * reach));
     } else {
         local_20 = false;
     }
-    let _e67 = local_20;
-    return _e67;
+    let _e63 = local_20;
+    return _e63;
 }
 
-fn bsh_reaches_box(node_4: BshNode, lo: vec3<f32>, hi: vec3<f32>, w_4: f32) -> bool {
-    let _e13 = sphere_overlaps_aabb(node_4.center, (node_4.radius * (max(1f, (w_4 * 1.0001f)) * 1.0001f)), lo, hi);
+fn bsh_reaches_box(node_5: BshNode, lo: vec3<f32>, hi: vec3<f32>, w_5: f32) -> bool {
+    let _e13 = sphere_overlaps_aabb(node_5.center, (node_5.radius * (max(1f, (w_5 * 1.0001f)) * 1.0001f)), lo, hi);
     return _e13;
 }
 
@@ -895,7 +900,7 @@ fn bsh_subtree(nodes_3: u32, s_1: u32, depth: u32) -> u32 {
     return _e44;
 }
 
-fn bsh_next_leaf_box(nodes_4: u32, start_1: u32, end: u32, lo_1: vec3<f32>, hi_1: vec3<f32>, w_5: f32) -> u32 {
+fn bsh_next_leaf_box(nodes_4: u32, start_1: u32, end: u32, lo_1: vec3<f32>, hi_1: vec3<f32>, w_6: f32) -> u32 {
     var i_3: u32;
 
     i_3 = start_1;
@@ -908,7 +913,7 @@ fn bsh_next_leaf_box(nodes_4: u32, start_1: u32, end: u32, lo_1: vec3<f32>, hi_1
         {
             let _e9 = i_3;
             let _e10 = bsh_node(nodes_4, _e9);
-            let _e11 = bsh_reaches_box(_e10, lo_1, hi_1, w_5);
+            let _e11 = bsh_reaches_box(_e10, lo_1, hi_1, w_6);
             if _e11 {
                 if (_e10.child == BSH_NONE) {
                     if ((_e10.light & BSH_TAIL) == 0u) {
@@ -1107,7 +1112,7 @@ fn tile_subtree(s_3: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: 
     return (_e61 - at);
 }
 
-fn tile_walk_begin(li_4: u32, x_8: vec3<f32>, w_6: f32, has_1: bool) -> TileWalk {
+fn tile_walk_begin(li_4: u32, x_8: vec3<f32>, w_7: f32, has_1: bool) -> TileWalk {
     var local_27: bool;
     var t_2: TileWalk;
     var s_4: u32;
@@ -1115,12 +1120,12 @@ fn tile_walk_begin(li_4: u32, x_8: vec3<f32>, w_6: f32, has_1: bool) -> TileWalk
     var s_5: u32 = 0u;
 
     if has_1 {
-        local_27 = (w_6 >= 0f);
+        local_27 = (w_7 >= 0f);
     } else {
         local_27 = false;
     }
     let _e12 = local_27;
-    let _e14 = atomicMax((&tile_scale), select(0u, bitcast<u32>(w_6), _e12));
+    let _e14 = atomicMax((&tile_scale), select(0u, bitcast<u32>(w_7), _e12));
     let _e15 = workgroup_box(li_4, x_8, has_1);
     let _e19 = workgroupUniformLoad((&tile_scale));
     t_2 = TileWalk(_e15.lo, _e15.hi, bitcast<f32>(_e19), 0u);
@@ -1237,15 +1242,15 @@ fn shade_connection(c_9: Connection, x_9: vec3<f32>, n_7: vec3<f32>, m_1: Materi
     return _e28;
 }
 
-fn shade_pick_traced(li_6: u32, x_10: vec3<f32>, n_8: vec3<f32>, r_9: vec3<f32>, rl_5: vec4<f32>, m_2: Material, w_7: f32, u1_4: f32, u2_4: f32, eps_2: f32, trace_3: bool) -> Shaded {
+fn shade_pick_traced(li_6: u32, x_10: vec3<f32>, n_8: vec3<f32>, r_9: vec3<f32>, rl_5: vec4<f32>, m_2: Material, w_8: f32, u1_4: f32, u2_4: f32, eps_2: f32, trace_3: bool) -> Shaded {
     let _e11 = light_range_scale(li_6, x_10, r_9, rl_5);
-    let _e12 = connect_traced(li_6, x_10, n_8, n_8, _e11, w_7, u1_4, u2_4, eps_2, trace_3);
+    let _e12 = connect_traced(li_6, x_10, n_8, n_8, _e11, w_8, u1_4, u2_4, eps_2, trace_3);
     let _e13 = shade_connection(_e12, x_10, n_8, m_2);
     return _e13;
 }
 
-fn shade_pick(li_7: u32, x_11: vec3<f32>, n_9: vec3<f32>, r_10: vec3<f32>, rl_6: vec4<f32>, m_3: Material, w_8: f32, u1_5: f32, u2_5: f32, eps_3: f32) -> Shaded {
-    let _e11 = shade_pick_traced(li_7, x_11, n_9, r_10, rl_6, m_3, w_8, u1_5, u2_5, eps_3, true);
+fn shade_pick(li_7: u32, x_11: vec3<f32>, n_9: vec3<f32>, r_10: vec3<f32>, rl_6: vec4<f32>, m_3: Material, w_9: f32, u1_5: f32, u2_5: f32, eps_3: f32) -> Shaded {
+    let _e11 = shade_pick_traced(li_7, x_11, n_9, r_10, rl_6, m_3, w_9, u1_5, u2_5, eps_3, true);
     return _e11;
 }
 
@@ -1258,8 +1263,8 @@ fn add(a_8: Shaded, b_8: Shaded) -> Shaded {
     return Shaded((a_8.e + b_8.e), (a_8.diffuse + b_8.diffuse), (a_8.specular + b_8.specular));
 }
 
-fn scaled(s_8: Shaded, w_9: vec3<f32>) -> Shaded {
-    return Shaded((s_8.e * w_9), (s_8.diffuse * w_9), (s_8.specular * w_9));
+fn scaled(s_8: Shaded, w_10: vec3<f32>) -> Shaded {
+    return Shaded((s_8.e * w_10), (s_8.diffuse * w_10), (s_8.specular * w_10));
 }
 
 fn first_holders(keys_1: array<vec2<u32>, 8>, held_1: array<bool, 8>) -> array<u32, 8> {

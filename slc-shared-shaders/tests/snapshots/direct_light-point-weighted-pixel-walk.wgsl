@@ -264,10 +264,10 @@ fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n_1: vec3<f32>, ng: vec3<f32>
     if _e16 {
         return 0f;
     }
-    let w_6 = (v_3 / vec3(sqrt(d2_7)));
-    let cos_x_1 = -(dot(n_1, w_6));
+    let w_7 = (v_3 / vec3(sqrt(d2_7)));
+    let cos_x_1 = -(dot(n_1, w_7));
     if !((cos_x_1 <= 0f)) {
-        local_5 = (dot(ng, w_6) >= 0f);
+        local_5 = (dot(ng, w_7) >= 0f);
     } else {
         local_5 = true;
     }
@@ -296,13 +296,18 @@ fn bsh_range_bound(node_1: BshNode) -> f32 {
     return _e8;
 }
 
+fn bsh_reach_bound(node_2: BshNode, w_1: f32) -> f32 {
+    let _e5 = bsh_range_bound(node_2);
+    return (node_2.extent + ((w_1 * 1.001f) * _e5));
+}
+
 fn weighted_threshold(w_sum: f32, u_2: f32) -> f32 {
     return (w_sum / (1f - u_2));
 }
 
-fn weighted_pick_weight(w_sum_1: f32, w_1: f32, k_2: u32) -> f32 {
+fn weighted_pick_weight(w_sum_1: f32, w_2: f32, k_2: u32) -> f32 {
     let _e3 = to_f32_(k_2);
-    return (w_sum_1 / (_e3 * w_1));
+    return (w_sum_1 / (_e3 * w_2));
 }
 
 fn ggx_d(cos_h: f32, sin2_h: f32, alpha: f32) -> f32 {
@@ -575,7 +580,7 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_3: vec3<f32>, b_3: vec3<f32>, 
     return -1f;
 }
 
-fn light_intensity(l: GpuLight, w_2: vec3<f32>) -> vec3<f32> {
+fn light_intensity(l: GpuLight, w_3: vec3<f32>) -> vec3<f32> {
     switch l.kind {
         case 0u: {
             return l.intensity;
@@ -594,7 +599,7 @@ fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
     var hit: GeoHit;
     var stack: array<u32, 64>;
     var sp: u32 = 0u;
-    var node_2: u32 = 0u;
+    var node_3: u32 = 0u;
     var i: u32;
 
     hit.t = t_max_2;
@@ -605,7 +610,7 @@ fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
     }
     let _e14 = ray_inverse3_(d_4);
     loop {
-        let _e21 = node_2;
+        let _e21 = node_3;
         let n_11 = geo_nodes[_e21];
         let _e27 = hit.t;
         let _e28 = ray_aabb(o_2, _e14, n_11.bmin, n_11.bmax, _e27);
@@ -646,7 +651,7 @@ fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
                     let _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_2 = n_11.first;
+                node_3 = n_11.first;
                 continue;
             }
         }
@@ -658,7 +663,7 @@ fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
         sp = (_e75 - 1u);
         let _e78 = sp;
         let _e80 = stack[_e78];
-        node_2 = _e80;
+        node_3 = _e80;
     }
     let _e81 = hit;
     return _e81;
@@ -698,16 +703,16 @@ fn bsh_inner_scale(a_5: f32, v_1: vec3<f32>, d2_6: f32, r_5: vec3<f32>, rl_2: ve
     return _e8;
 }
 
-fn bsh_reaches(node_3: BshNode, x_5: vec3<f32>, r_6: vec3<f32>, rl_3: vec4<f32>) -> bool {
+fn bsh_reaches(node_4: BshNode, x_5: vec3<f32>, r_6: vec3<f32>, rl_3: vec4<f32>) -> bool {
     var local_12: bool;
     var local_13: bool;
 
-    let _e6 = sphere_contains_point(node_3.center, node_3.radius, x_5);
+    let _e6 = sphere_contains_point(node_4.center, node_4.radius, x_5);
     if _e6 {
         return true;
     }
     if !((rl_3.w <= 1f)) {
-        let _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001f)), x_5);
+        let _e20 = sphere_contains_point(node_4.center, (node_4.radius * (rl_3.w * 1.0001f)), x_5);
         local_12 = !(_e20);
     } else {
         local_12 = true;
@@ -716,29 +721,29 @@ fn bsh_reaches(node_3: BshNode, x_5: vec3<f32>, r_6: vec3<f32>, rl_3: vec4<f32>)
     if _e23 {
         return false;
     }
-    let _e25 = bsh_range_bound(node_3);
-    let v_9 = (x_5 - node_3.center);
+    let v_9 = (x_5 - node_4.center);
     let d2_9 = dot(v_9, v_9);
-    let reach_max = (node_3.extent + ((rl_3.w * 1.001f) * _e25));
-    if (d2_9 > (reach_max * reach_max)) {
+    let _e29 = bsh_reach_bound(node_4, rl_3.w);
+    if (d2_9 > (_e29 * _e29)) {
         return false;
     }
-    if (node_3.child == BSH_NONE) {
-        let _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_5, r_6);
-        let _e46 = bsh_scaled_radius(node_3, sqrt(_e43));
-        let _e47 = sphere_contains_point(node_3.center, _e46, x_5);
-        return _e47;
+    if (node_4.child == BSH_NONE) {
+        let _e38 = range_scale_toward(rl_3, node_4.center, node_4.extent, x_5, r_6);
+        let _e41 = bsh_scaled_radius(node_4, sqrt(_e38));
+        let _e42 = sphere_contains_point(node_4.center, _e41, x_5);
+        return _e42;
     }
-    let _e50 = bsh_inner_scale(node_3.extent, -(v_9), d2_9, r_6, rl_3);
-    let s_c = (_e50 * 1.001f);
-    let reach = (node_3.extent + (sqrt(s_c) * _e25));
-    if (d2_9 <= ((node_3.radius * node_3.radius) * s_c)) {
+    let _e45 = bsh_inner_scale(node_4.extent, -(v_9), d2_9, r_6, rl_3);
+    let s_c = (_e45 * 1.001f);
+    let _e50 = bsh_range_bound(node_4);
+    let reach = (node_4.extent + (sqrt(s_c) * _e50));
+    if (d2_9 <= ((node_4.radius * node_4.radius) * s_c)) {
         local_13 = (d2_9 <= (reach * reach));
     } else {
         local_13 = false;
     }
-    let _e67 = local_13;
-    return _e67;
+    let _e63 = local_13;
+    return _e63;
 }
 
 fn bsh_next_leaf_lobe(nodes_3: u32, start: u32, x_6: vec3<f32>, r_7: vec3<f32>, rl_4: vec4<f32>) -> u32 {
@@ -856,15 +861,15 @@ fn weighted_picks(h_2: u32) -> WeightedPicks {
     return _e7;
 }
 
-fn weighted_offer(picks_2: ptr<function, WeightedPicks>, li_3: u32, w_3: f32) {
+fn weighted_offer(picks_2: ptr<function, WeightedPicks>, li_3: u32, w_4: f32) {
     var h_3: u32;
     var s_2: u32 = 0u;
 
     let _e4 = (*picks_2).n;
     (*picks_2).n = (_e4 + 1u);
-    if (w_3 > 0f) {
+    if (w_4 > 0f) {
         let _e10 = (*picks_2).w_sum;
-        (*picks_2).w_sum = (_e10 + w_3);
+        (*picks_2).w_sum = (_e10 + w_4);
         let _e13 = (*picks_2).h;
         h_3 = _e13;
         loop {
@@ -881,7 +886,7 @@ fn weighted_offer(picks_2: ptr<function, WeightedPicks>, li_3: u32, w_3: f32) {
                     let _e28 = s_2;
                     (*picks_2).light[_e28] = li_3;
                     let _e31 = s_2;
-                    (*picks_2).w[_e31] = w_3;
+                    (*picks_2).w[_e31] = w_4;
                     let _e34 = s_2;
                     let _e37 = (*picks_2).w_sum;
                     let _e38 = next_threshold(_e37, (&h_3));
@@ -916,14 +921,14 @@ fn shade_connection(c_3: Connection, x_11: vec3<f32>, n_8: vec3<f32>, m_1: Mater
     return _e13;
 }
 
-fn shade_pick_traced(li_4: u32, x_12: vec3<f32>, n_9: vec3<f32>, r_10: vec3<f32>, rl_7: vec4<f32>, m_2: Material, w_4: f32, u1_3: f32, u2_3: f32, eps_2: f32, trace_3: bool) -> Shaded {
-    let _e12 = connect_traced(li_4, x_12, n_9, n_9, 1f, w_4, u1_3, u2_3, eps_2, trace_3);
+fn shade_pick_traced(li_4: u32, x_12: vec3<f32>, n_9: vec3<f32>, r_10: vec3<f32>, rl_7: vec4<f32>, m_2: Material, w_5: f32, u1_3: f32, u2_3: f32, eps_2: f32, trace_3: bool) -> Shaded {
+    let _e12 = connect_traced(li_4, x_12, n_9, n_9, 1f, w_5, u1_3, u2_3, eps_2, trace_3);
     let _e13 = shade_connection(_e12, x_12, n_9, m_2);
     return _e13;
 }
 
-fn shade_pick(li_5: u32, x_13: vec3<f32>, n_10: vec3<f32>, r_11: vec3<f32>, rl_8: vec4<f32>, m_3: Material, w_5: f32, u1_4: f32, u2_4: f32, eps_3: f32) -> Shaded {
-    let _e11 = shade_pick_traced(li_5, x_13, n_10, r_11, rl_8, m_3, w_5, u1_4, u2_4, eps_3, true);
+fn shade_pick(li_5: u32, x_13: vec3<f32>, n_10: vec3<f32>, r_11: vec3<f32>, rl_8: vec4<f32>, m_3: Material, w_6: f32, u1_4: f32, u2_4: f32, eps_3: f32) -> Shaded {
+    let _e11 = shade_pick_traced(li_5, x_13, n_10, r_11, rl_8, m_3, w_6, u1_4, u2_4, eps_3, true);
     return _e11;
 }
 

@@ -235,8 +235,8 @@ fn cull_radius(r2_1: f32) -> f32 {
 
 fn windowed_falloff(d2_4: f32, range2_1: f32) -> f32 {
     let q_3 = (d2_4 / range2_1);
-    let w_13 = saturate((1f - (q_3 * q_3)));
-    return ((w_13 * w_13) / max(d2_4, 0.0001f));
+    let w_14 = saturate((1f - (q_3 * q_3)));
+    return ((w_14 * w_14) / max(d2_4, 0.0001f));
 }
 
 fn sphere_contains_point(c: vec3<f32>, r: f32, x_5: vec3<f32>) -> bool {
@@ -329,11 +329,11 @@ fn group_clusters(g_1: u32, bw_3: u32, bh_2: u32, gw_3: u32, gh_2: u32) -> u32 {
 fn cluster_index(bx: u32, by: u32, bw_4: u32, bh_3: u32, gw_4: u32, gh_3: u32) -> u32 {
     let gx_2 = (bx / gw_4);
     let gy_2 = (by / gh_3);
-    let w_14 = min(gw_4, (bw_4 - (gw_4 * gx_2)));
+    let w_15 = min(gw_4, (bw_4 - (gw_4 * gx_2)));
     let _e11 = groups_across(bw_4, gw_4);
     let g_2 = ((gy_2 * _e11) + gx_2);
     let _e14 = group_first(g_2, bw_4, bh_3, gw_4, gh_3);
-    return ((_e14 + ((by - (gh_3 * gy_2)) * w_14)) + (bx - (gw_4 * gx_2)));
+    return ((_e14 + ((by - (gh_3 * gy_2)) * w_15)) + (bx - (gw_4 * gx_2)));
 }
 
 fn cluster_x(c_3: u32, bw_5: u32, bh_4: u32, gw_5: u32, gh_4: u32) -> u32 {
@@ -341,8 +341,8 @@ fn cluster_x(c_3: u32, bw_5: u32, bh_4: u32, gw_5: u32, gh_4: u32) -> u32 {
     let h_3 = min(gh_4, (bh_4 - (gh_4 * gy_3)));
     let rest = (c_3 - ((gy_3 * gh_4) * bw_5));
     let gx_3 = (rest / (gw_5 * h_3));
-    let w_15 = min(gw_5, (bw_5 - (gw_5 * gx_3)));
-    return ((gx_3 * gw_5) + ((rest - ((gx_3 * gw_5) * h_3)) % w_15));
+    let w_16 = min(gw_5, (bw_5 - (gw_5 * gx_3)));
+    return ((gx_3 * gw_5) + ((rest - ((gx_3 * gw_5) * h_3)) % w_16));
 }
 
 fn cluster_y(c_4: u32, bw_6: u32, bh_5: u32, gw_6: u32, gh_5: u32) -> u32 {
@@ -350,8 +350,8 @@ fn cluster_y(c_4: u32, bw_6: u32, bh_5: u32, gw_6: u32, gh_5: u32) -> u32 {
     let h_4 = min(gh_5, (bh_5 - (gh_5 * gy_4)));
     let rest_1 = (c_4 - ((gy_4 * gh_5) * bw_6));
     let gx_4 = (rest_1 / (gw_6 * h_4));
-    let w_16 = min(gw_6, (bw_6 - (gw_6 * gx_4)));
-    return ((gy_4 * gh_5) + ((rest_1 - ((gx_4 * gw_6) * h_4)) / w_16));
+    let w_17 = min(gw_6, (bw_6 - (gw_6 * gx_4)));
+    return ((gy_4 * gh_5) + ((rest_1 - ((gx_4 * gw_6) * h_4)) / w_17));
 }
 
 fn map_index(tx: u32, ty: u32, side: u32) -> u32 {
@@ -448,10 +448,10 @@ fn connection_cosine(x_6: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     if _e16 {
         return 0f;
     }
-    let w_17 = (v_18 / vec3(sqrt(d2_17)));
-    let cos_x_1 = -(dot(n, w_17));
+    let w_18 = (v_18 / vec3(sqrt(d2_17)));
+    let cos_x_1 = -(dot(n, w_18));
     if !((cos_x_1 <= 0f)) {
-        local_7 = (dot(ng, w_17) >= 0f);
+        local_7 = (dot(ng, w_18) >= 0f);
     } else {
         local_7 = true;
     }
@@ -712,6 +712,11 @@ fn bsh_range_bound(node_1: BshNode) -> f32 {
     return _e8;
 }
 
+fn bsh_reach_bound(node_2: BshNode, w_4: f32) -> f32 {
+    let _e5 = bsh_range_bound(node_2);
+    return (node_2.extent + ((w_4 * 1.001f) * _e5));
+}
+
 fn mul_hi_u32_(a_4: u32, b_3: u32) -> u32 {
     let a_lo = (a_4 & 65535u);
     let a_hi = (a_4 >> 16u);
@@ -756,17 +761,17 @@ fn reservoir_weight(n_7: u32, k_1: u32) -> f32 {
     return max((_e2 / _e3), 1f);
 }
 
-fn weighted_replace(w_4: f32, w_sum: f32, u_2: f32) -> bool {
-    return ((u_2 * w_sum) < w_4);
+fn weighted_replace(w_5: f32, w_sum: f32, u_2: f32) -> bool {
+    return ((u_2 * w_sum) < w_5);
 }
 
 fn weighted_threshold(w_sum_1: f32, u_3: f32) -> f32 {
     return (w_sum_1 / (1f - u_3));
 }
 
-fn weighted_pick_weight(w_sum_2: f32, w_5: f32, k_2: u32) -> f32 {
+fn weighted_pick_weight(w_sum_2: f32, w_6: f32, k_2: u32) -> f32 {
     let _e3 = to_f32_(k_2);
-    return (w_sum_2 / (_e3 * w_5));
+    return (w_sum_2 / (_e3 * w_6));
 }
 
 fn reservoir_select_pdf(seen: u32, in_range: bool, k_3: u32) -> f32 {
@@ -810,19 +815,19 @@ fn slot_target(c_9: vec3<f32>, slot: u32, k_4: u32) -> f32 {
 fn slot_share(slot_1: u32, k_5: u32) -> vec3<f32> {
     if (k_5 < 3u) {
         let _e4 = to_f32_(k_5);
-        let w_18 = (1f / _e4);
-        return vec3<f32>(w_18, w_18, w_18);
+        let w_19 = (1f / _e4);
+        return vec3<f32>(w_19, w_19, w_19);
     }
     let j_1 = (slot_1 % 3u);
     let _e15 = to_f32_((((k_5 + 2u) - j_1) / 3u));
-    let w_19 = (1f / _e15);
+    let w_20 = (1f / _e15);
     if (j_1 == 0u) {
-        return vec3<f32>(w_19, 0f, 0f);
+        return vec3<f32>(w_20, 0f, 0f);
     }
     if (j_1 == 1u) {
-        return vec3<f32>(0f, w_19, 0f);
+        return vec3<f32>(0f, w_20, 0f);
     }
-    return vec3<f32>(0f, 0f, w_19);
+    return vec3<f32>(0f, 0f, w_20);
 }
 
 fn grid_coordinate(bits_1: u32) -> f32 {
@@ -839,11 +844,11 @@ fn disk_offset(r_3: f32, u1_1: f32, u2_1: f32) -> vec2<f32> {
     return (vec2<f32>(cos(a_12), sin(a_12)) * (r_3 * sqrt(u1_1)));
 }
 
-fn gris_weight(own: f32, all_: f32, p_hat: f32, w_6: f32) -> f32 {
+fn gris_weight(own: f32, all_: f32, p_hat: f32, w_7: f32) -> f32 {
     if !((all_ > 0f)) {
         return 0f;
     }
-    return (((own / all_) * p_hat) * w_6);
+    return (((own / all_) * p_hat) * w_7);
 }
 
 fn gris_contribution_weight(w_sum_3: f32, p_hat_1: f32) -> f32 {
@@ -930,10 +935,10 @@ fn onb_to_world(n_11: vec3<f32>, d: vec3<f32>) -> vec3<f32> {
     return (((_e2 * d.x) + (_e5 * d.y)) + (n_11 * d.z));
 }
 
-fn onb_to_local(n_12: vec3<f32>, w_7: vec3<f32>) -> vec3<f32> {
+fn onb_to_local(n_12: vec3<f32>, w_8: vec3<f32>) -> vec3<f32> {
     let _e2 = onb_tangent(n_12);
     let _e4 = onb_bitangent(n_12);
-    return vec3<f32>(dot(w_7, _e2), dot(w_7, _e4), dot(w_7, n_12));
+    return vec3<f32>(dot(w_8, _e2), dot(w_8, _e4), dot(w_8, n_12));
 }
 
 fn cosine_direction(n_13: vec3<f32>, u1_2: f32, u2_2: f32) -> vec3<f32> {
@@ -1402,13 +1407,13 @@ fn cone_weight(center_7: vec3<f32>, radius_8: f32, phi_4: f32, axis_5: vec3<f32>
     return _e22;
 }
 
-fn weighted_select_pdf(w_8: f32, w_sum_4: f32, in_range_1: bool, k_6: u32) -> f32 {
-    if (w_8 <= 0f) {
+fn weighted_select_pdf(w_9: f32, w_sum_4: f32, in_range_1: bool, k_6: u32) -> f32 {
+    if (w_9 <= 0f) {
         return 0f;
     }
-    let total = select((w_sum_4 + w_8), w_sum_4, in_range_1);
+    let total = select((w_sum_4 + w_9), w_sum_4, in_range_1);
     let _e9 = to_f32_(k_6);
-    return ((_e9 * w_8) / total);
+    return ((_e9 * w_9) / total);
 }
 
 fn bvh_first_prob(c0_: f32, c1_2: f32) -> f32 {
@@ -1518,10 +1523,10 @@ fn barycentric(p_8: vec3<f32>, a_7: vec3<f32>, b_5: vec3<f32>, c_12: vec3<f32>) 
     return vec3<f32>(((1f - w1_) - w2_), w1_, w2_);
 }
 
-fn shading_normal(n0_: vec3<f32>, n1_: vec3<f32>, n2_: vec3<f32>, w_9: vec3<f32>, facing: vec3<f32>) -> vec3<f32> {
+fn shading_normal(n0_: vec3<f32>, n1_: vec3<f32>, n2_: vec3<f32>, w_10: vec3<f32>, facing: vec3<f32>) -> vec3<f32> {
     var local_24: bool;
 
-    let s_6 = (((n0_ * w_9.x) + (n1_ * w_9.y)) + (n2_ * w_9.z));
+    let s_6 = (((n0_ * w_10.x) + (n1_ * w_10.y)) + (n2_ * w_10.z));
     let l2_1 = dot(s_6, s_6);
     if !(!((l2_1 > 0.000000000001f))) {
         local_24 = !((l2_1 < 300000000000000000000000000000000000000f));
@@ -1750,8 +1755,8 @@ fn vpl_near_fixed_share(range2_3: f32, d2_16: f32, near_r2_6: f32) -> f32 {
     return select(0f, _e3, (_e4 & (_e3 > 0f)));
 }
 
-fn camera_dir(forward: vec3<f32>, right: vec3<f32>, up: vec3<f32>, px: f32, py: f32, w_10: f32, h: f32) -> vec3<f32> {
-    let sx = (((2f * px) / w_10) - 1f);
+fn camera_dir(forward: vec3<f32>, right: vec3<f32>, up: vec3<f32>, px: f32, py: f32, w_11: f32, h: f32) -> vec3<f32> {
+    let sx = (((2f * px) / w_11) - 1f);
     let sy = (1f - ((2f * py) / h));
     return normalize(((forward + (right * sx)) + (up * sy)));
 }
@@ -1980,7 +1985,7 @@ fn temporal_alpha(n_33: f32) -> f32 {
     return (1f / max(n_33, 1f));
 }
 
-fn history_tap_weight(w_11: f32, n_34: vec3<f32>, nh_1: vec3<f32>, p_11: vec3<f32>, oh_1: f32, d_8: f32, len_1: f32) -> f32 {
+fn history_tap_weight(w_12: f32, n_34: vec3<f32>, nh_1: vec3<f32>, p_11: vec3<f32>, oh_1: f32, d_8: f32, len_1: f32) -> f32 {
     var local_41: bool;
 
     if (len_1 > 0f) {
@@ -1990,10 +1995,10 @@ fn history_tap_weight(w_11: f32, n_34: vec3<f32>, nh_1: vec3<f32>, p_11: vec3<f3
         local_41 = false;
     }
     let _e13 = local_41;
-    return select(0f, w_11, _e13);
+    return select(0f, w_12, _e13);
 }
 
-fn history_tap_weight_motion(w_12: f32, n_35: vec3<f32>, nh_2: vec3<f32>, d_9: f32, dh: f32, len_2: f32) -> f32 {
+fn history_tap_weight_motion(w_13: f32, n_35: vec3<f32>, nh_2: vec3<f32>, d_9: f32, dh: f32, len_2: f32) -> f32 {
     var local_42: bool;
     var local_43: bool;
 
@@ -2009,7 +2014,7 @@ fn history_tap_weight_motion(w_12: f32, n_35: vec3<f32>, nh_2: vec3<f32>, d_9: f
         local_43 = false;
     }
     let _e23 = local_43;
-    return select(0f, w_12, _e23);
+    return select(0f, w_13, _e23);
 }
 
 fn persistent_change(l_7: f32, last: f32, m1_1: f32, noise_1: f32, n_36: f32) -> f32 {

@@ -280,10 +280,10 @@ fn connection_cosine(x_3: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     if _e16 {
         return 0f;
     }
-    let w_7 = (v_9 / vec3(sqrt(d2_9)));
-    let cos_x_1 = -(dot(n, w_7));
+    let w_8 = (v_9 / vec3(sqrt(d2_9)));
+    let cos_x_1 = -(dot(n, w_8));
     if !((cos_x_1 <= 0f)) {
-        local_1 = (dot(ng, w_7) >= 0f);
+        local_1 = (dot(ng, w_8) >= 0f);
     } else {
         local_1 = true;
     }
@@ -534,6 +534,11 @@ fn bsh_range_bound(node_1: BshNode) -> f32 {
     return _e8;
 }
 
+fn bsh_reach_bound(node_2: BshNode, w_4: f32) -> f32 {
+    let _e5 = bsh_range_bound(node_2);
+    return (node_2.extent + ((w_4 * 1.001f) * _e5));
+}
+
 fn mul_hi_u32_(a_4: u32, b_3: u32) -> u32 {
     let a_lo = (a_4 & 65535u);
     let a_hi = (a_4 >> 16u);
@@ -645,10 +650,10 @@ fn onb_bitangent(n_9: vec3<f32>) -> vec3<f32> {
     return vec3<f32>(((n_9.x * n_9.y) * a_13), (s_5 + ((n_9.y * n_9.y) * a_13)), -(n_9.y));
 }
 
-fn onb_to_local(n_10: vec3<f32>, w_4: vec3<f32>) -> vec3<f32> {
+fn onb_to_local(n_10: vec3<f32>, w_5: vec3<f32>) -> vec3<f32> {
     let _e2 = onb_tangent(n_10);
     let _e4 = onb_bitangent(n_10);
-    return vec3<f32>(dot(w_4, _e2), dot(w_4, _e4), dot(w_4, n_10));
+    return vec3<f32>(dot(w_5, _e2), dot(w_5, _e4), dot(w_5, n_10));
 }
 
 fn ggx_d(cos_h: f32, sin2_h: f32, alpha: f32) -> f32 {
@@ -1022,26 +1027,26 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_7: vec3<f32>, b_5: vec3<f32>, 
     return -1f;
 }
 
-fn light_intensity(l_4: GpuLight, w_5: vec3<f32>) -> vec3<f32> {
+fn light_intensity(l_4: GpuLight, w_6: vec3<f32>) -> vec3<f32> {
     switch l_4.kind {
         case 0u: {
             return l_4.intensity;
         }
         case 1u: {
-            let _e11 = spot_falloff(dot(l_4.p1_, w_5), l_4.a, l_4.b, l_4.p2_.x);
+            let _e11 = spot_falloff(dot(l_4.p1_, w_6), l_4.a, l_4.b, l_4.p2_.x);
             return (l_4.intensity * _e11);
         }
         case 2u: {
-            let _e18 = ies_light_candela(0u, l_4.ies_base, l_4.p1_, l_4.p2_, w_5);
+            let _e18 = ies_light_candela(0u, l_4.ies_base, l_4.p1_, l_4.p2_, w_6);
             return (l_4.intensity * _e18);
         }
         case 3u: {
             let _e24 = triangle_normal(l_4.p0_, l_4.p1_, l_4.p2_);
-            let _e26 = triangle_lobe(_e24, l_4.a, w_5);
+            let _e26 = triangle_lobe(_e24, l_4.a, w_6);
             return (l_4.intensity * _e26);
         }
         case 4u: {
-            let _e30 = vpl_lobe(l_4.p1_, w_5);
+            let _e30 = vpl_lobe(l_4.p1_, w_6);
             return (l_4.intensity * _e30);
         }
         default: {
@@ -1077,7 +1082,7 @@ fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
     var hit: GeoHit;
     var stack: array<u32, 64>;
     var sp: u32 = 0u;
-    var node_2: u32 = 0u;
+    var node_3: u32 = 0u;
     var i_1: u32;
 
     hit.t = t_max_2;
@@ -1088,7 +1093,7 @@ fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
     }
     let _e14 = ray_inverse3_(d_4);
     loop {
-        let _e21 = node_2;
+        let _e21 = node_3;
         let n_22 = geo_nodes[_e21];
         let _e27 = hit.t;
         let _e28 = ray_aabb(o_2, _e14, n_22.bmin, n_22.bmax, _e27);
@@ -1129,7 +1134,7 @@ fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
                     let _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_2 = n_22.first;
+                node_3 = n_22.first;
                 continue;
             }
         }
@@ -1141,7 +1146,7 @@ fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
         sp = (_e75 - 1u);
         let _e78 = sp;
         let _e80 = stack[_e78];
-        node_2 = _e80;
+        node_3 = _e80;
     }
     let _e81 = hit;
     return _e81;
@@ -1181,16 +1186,16 @@ fn bsh_inner_scale(a_9: f32, v_7: vec3<f32>, d2_8: f32, r_2: vec3<f32>, rl_2: ve
     return _e8;
 }
 
-fn bsh_reaches(node_3: BshNode, x_9: vec3<f32>, r_3: vec3<f32>, rl_3: vec4<f32>) -> bool {
+fn bsh_reaches(node_4: BshNode, x_9: vec3<f32>, r_3: vec3<f32>, rl_3: vec4<f32>) -> bool {
     var local_20: bool;
     var local_21: bool;
 
-    let _e6 = sphere_contains_point(node_3.center, node_3.radius, x_9);
+    let _e6 = sphere_contains_point(node_4.center, node_4.radius, x_9);
     if _e6 {
         return true;
     }
     if !((rl_3.w <= 1f)) {
-        let _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001f)), x_9);
+        let _e20 = sphere_contains_point(node_4.center, (node_4.radius * (rl_3.w * 1.0001f)), x_9);
         local_20 = !(_e20);
     } else {
         local_20 = true;
@@ -1199,29 +1204,29 @@ fn bsh_reaches(node_3: BshNode, x_9: vec3<f32>, r_3: vec3<f32>, rl_3: vec4<f32>)
     if _e23 {
         return false;
     }
-    let _e25 = bsh_range_bound(node_3);
-    let v_12 = (x_9 - node_3.center);
+    let v_12 = (x_9 - node_4.center);
     let d2_10 = dot(v_12, v_12);
-    let reach_max = (node_3.extent + ((rl_3.w * 1.001f) * _e25));
-    if (d2_10 > (reach_max * reach_max)) {
+    let _e29 = bsh_reach_bound(node_4, rl_3.w);
+    if (d2_10 > (_e29 * _e29)) {
         return false;
     }
-    if (node_3.child == BSH_NONE) {
-        let _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_9, r_3);
-        let _e46 = bsh_scaled_radius(node_3, sqrt(_e43));
-        let _e47 = sphere_contains_point(node_3.center, _e46, x_9);
-        return _e47;
+    if (node_4.child == BSH_NONE) {
+        let _e38 = range_scale_toward(rl_3, node_4.center, node_4.extent, x_9, r_3);
+        let _e41 = bsh_scaled_radius(node_4, sqrt(_e38));
+        let _e42 = sphere_contains_point(node_4.center, _e41, x_9);
+        return _e42;
     }
-    let _e50 = bsh_inner_scale(node_3.extent, -(v_12), d2_10, r_3, rl_3);
-    let s_c = (_e50 * 1.001f);
-    let reach = (node_3.extent + (sqrt(s_c) * _e25));
-    if (d2_10 <= ((node_3.radius * node_3.radius) * s_c)) {
+    let _e45 = bsh_inner_scale(node_4.extent, -(v_12), d2_10, r_3, rl_3);
+    let s_c = (_e45 * 1.001f);
+    let _e50 = bsh_range_bound(node_4);
+    let reach = (node_4.extent + (sqrt(s_c) * _e50));
+    if (d2_10 <= ((node_4.radius * node_4.radius) * s_c)) {
         local_21 = (d2_10 <= (reach * reach));
     } else {
         local_21 = false;
     }
-    let _e67 = local_21;
-    return _e67;
+    let _e63 = local_21;
+    return _e63;
 }
 
 fn bsh_next_leaf_lobe(nodes_3: u32, start_1: u32, x_10: vec3<f32>, r_4: vec3<f32>, rl_4: vec4<f32>) -> u32 {
@@ -1404,12 +1409,12 @@ fn light_pdf(li_5: u32, x_18: vec3<f32>, n_19: vec3<f32>, r_9: vec3<f32>, lobe_6
     return _e10;
 }
 
-fn shade_pick(li_6: u32, x_19: vec3<f32>, n_20: vec3<f32>, ng_4: vec3<f32>, m: GpuMaterial, wo_1: vec3<f32>, r_10: vec3<f32>, lobe_7: vec4<f32>, rl_10: vec4<f32>, w_6: f32, nee_2: u32, u1_5: f32, u2_5: f32) -> vec3<f32> {
+fn shade_pick(li_6: u32, x_19: vec3<f32>, n_20: vec3<f32>, ng_4: vec3<f32>, m: GpuMaterial, wo_1: vec3<f32>, r_10: vec3<f32>, lobe_7: vec4<f32>, rl_10: vec4<f32>, w_7: f32, nee_2: u32, u1_5: f32, u2_5: f32) -> vec3<f32> {
     var mis: f32 = 1f;
 
     let _e13 = light_range_scale(li_6, x_19, r_10, rl_10);
     let _e16 = params.eps;
-    let _e17 = connect(li_6, x_19, n_20, ng_4, _e13, w_6, u1_5, u2_5, _e16);
+    let _e17 = connect(li_6, x_19, n_20, ng_4, _e13, w_7, u1_5, u2_5, _e16);
     if (_e17.cos_x <= 0f) {
         return vec3(0f);
     }

@@ -269,10 +269,10 @@ fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     if _e16 {
         return 0f;
     }
-    let w_5 = (v_9 / vec3(sqrt(d2_9)));
-    let cos_x_1 = -(dot(n, w_5));
+    let w_6 = (v_9 / vec3(sqrt(d2_9)));
+    let cos_x_1 = -(dot(n, w_6));
     if !((cos_x_1 <= 0f)) {
-        local_1 = (dot(ng, w_5) >= 0f);
+        local_1 = (dot(ng, w_6) >= 0f);
     } else {
         local_1 = true;
     }
@@ -318,6 +318,11 @@ fn bsh_range_bound(node_1: BshNode) -> f32 {
     }
     let _e8 = f32_from_bits(node_1.light);
     return _e8;
+}
+
+fn bsh_reach_bound(node_2: BshNode, w_2: f32) -> f32 {
+    let _e5 = bsh_range_bound(node_2);
+    return (node_2.extent + ((w_2 * 1.001f) * _e5));
 }
 
 fn mul_hi_u32_(a_3: u32, b_3: u32) -> u32 {
@@ -432,10 +437,10 @@ fn onb_bitangent(n_7: vec3<f32>) -> vec3<f32> {
     return vec3<f32>(((n_7.x * n_7.y) * a_10), (s_5 + ((n_7.y * n_7.y) * a_10)), -(n_7.y));
 }
 
-fn onb_to_local(n_8: vec3<f32>, w_2: vec3<f32>) -> vec3<f32> {
+fn onb_to_local(n_8: vec3<f32>, w_3: vec3<f32>) -> vec3<f32> {
     let _e2 = onb_tangent(n_8);
     let _e4 = onb_bitangent(n_8);
-    return vec3<f32>(dot(w_2, _e2), dot(w_2, _e4), dot(w_2, n_8));
+    return vec3<f32>(dot(w_3, _e2), dot(w_3, _e4), dot(w_3, n_8));
 }
 
 fn ggx_d(cos_h: f32, sin2_h: f32, alpha: f32) -> f32 {
@@ -809,11 +814,11 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_6: vec3<f32>, b_5: vec3<f32>, 
     return -1f;
 }
 
-fn light_intensity(l_4: GpuLight, w_3: vec3<f32>) -> vec3<f32> {
+fn light_intensity(l_4: GpuLight, w_4: vec3<f32>) -> vec3<f32> {
     switch l_4.kind {
         case 3u: {
             let _e7 = triangle_normal(l_4.p0_, l_4.p1_, l_4.p2_);
-            let _e9 = triangle_lobe(_e7, l_4.a, w_3);
+            let _e9 = triangle_lobe(_e7, l_4.a, w_4);
             return (l_4.intensity * _e9);
         }
         default: {
@@ -849,7 +854,7 @@ fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
     var hit: GeoHit;
     var stack: array<u32, 64>;
     var sp: u32 = 0u;
-    var node_2: u32 = 0u;
+    var node_3: u32 = 0u;
     var i: u32;
 
     hit.t = t_max_2;
@@ -860,7 +865,7 @@ fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
     }
     let _e14 = ray_inverse3_(d_4);
     loop {
-        let _e21 = node_2;
+        let _e21 = node_3;
         let n_20 = geo_nodes[_e21];
         let _e27 = hit.t;
         let _e28 = ray_aabb(o_2, _e14, n_20.bmin, n_20.bmax, _e27);
@@ -901,7 +906,7 @@ fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
                     let _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_2 = n_20.first;
+                node_3 = n_20.first;
                 continue;
             }
         }
@@ -913,7 +918,7 @@ fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
         sp = (_e75 - 1u);
         let _e78 = sp;
         let _e80 = stack[_e78];
-        node_2 = _e80;
+        node_3 = _e80;
     }
     let _e81 = hit;
     return _e81;
@@ -953,16 +958,16 @@ fn bsh_inner_scale(a_8: f32, v_7: vec3<f32>, d2_8: f32, r_2: vec3<f32>, rl_2: ve
     return _e8;
 }
 
-fn bsh_reaches(node_3: BshNode, x_4: vec3<f32>, r_3: vec3<f32>, rl_3: vec4<f32>) -> bool {
+fn bsh_reaches(node_4: BshNode, x_4: vec3<f32>, r_3: vec3<f32>, rl_3: vec4<f32>) -> bool {
     var local_19: bool;
     var local_20: bool;
 
-    let _e6 = sphere_contains_point(node_3.center, node_3.radius, x_4);
+    let _e6 = sphere_contains_point(node_4.center, node_4.radius, x_4);
     if _e6 {
         return true;
     }
     if !((rl_3.w <= 1f)) {
-        let _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001f)), x_4);
+        let _e20 = sphere_contains_point(node_4.center, (node_4.radius * (rl_3.w * 1.0001f)), x_4);
         local_19 = !(_e20);
     } else {
         local_19 = true;
@@ -971,29 +976,29 @@ fn bsh_reaches(node_3: BshNode, x_4: vec3<f32>, r_3: vec3<f32>, rl_3: vec4<f32>)
     if _e23 {
         return false;
     }
-    let _e25 = bsh_range_bound(node_3);
-    let v_12 = (x_4 - node_3.center);
+    let v_12 = (x_4 - node_4.center);
     let d2_10 = dot(v_12, v_12);
-    let reach_max = (node_3.extent + ((rl_3.w * 1.001f) * _e25));
-    if (d2_10 > (reach_max * reach_max)) {
+    let _e29 = bsh_reach_bound(node_4, rl_3.w);
+    if (d2_10 > (_e29 * _e29)) {
         return false;
     }
-    if (node_3.child == BSH_NONE) {
-        let _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_4, r_3);
-        let _e46 = bsh_scaled_radius(node_3, sqrt(_e43));
-        let _e47 = sphere_contains_point(node_3.center, _e46, x_4);
-        return _e47;
+    if (node_4.child == BSH_NONE) {
+        let _e38 = range_scale_toward(rl_3, node_4.center, node_4.extent, x_4, r_3);
+        let _e41 = bsh_scaled_radius(node_4, sqrt(_e38));
+        let _e42 = sphere_contains_point(node_4.center, _e41, x_4);
+        return _e42;
     }
-    let _e50 = bsh_inner_scale(node_3.extent, -(v_12), d2_10, r_3, rl_3);
-    let s_c = (_e50 * 1.001f);
-    let reach = (node_3.extent + (sqrt(s_c) * _e25));
-    if (d2_10 <= ((node_3.radius * node_3.radius) * s_c)) {
+    let _e45 = bsh_inner_scale(node_4.extent, -(v_12), d2_10, r_3, rl_3);
+    let s_c = (_e45 * 1.001f);
+    let _e50 = bsh_range_bound(node_4);
+    let reach = (node_4.extent + (sqrt(s_c) * _e50));
+    if (d2_10 <= ((node_4.radius * node_4.radius) * s_c)) {
         local_20 = (d2_10 <= (reach * reach));
     } else {
         local_20 = false;
     }
-    let _e67 = local_20;
-    return _e67;
+    let _e63 = local_20;
+    return _e63;
 }
 
 fn bsh_next_leaf_lobe(nodes_3: u32, start: u32, x_5: vec3<f32>, r_4: vec3<f32>, rl_4: vec4<f32>) -> u32 {
@@ -1176,12 +1181,12 @@ fn light_pdf(li_5: u32, x_13: vec3<f32>, n_17: vec3<f32>, r_9: vec3<f32>, lobe_6
     return _e10;
 }
 
-fn shade_pick(li_6: u32, x_14: vec3<f32>, n_18: vec3<f32>, ng_4: vec3<f32>, m: GpuMaterial, wo_1: vec3<f32>, r_10: vec3<f32>, lobe_7: vec4<f32>, rl_10: vec4<f32>, w_4: f32, nee_2: u32, u1_5: f32, u2_5: f32) -> vec3<f32> {
+fn shade_pick(li_6: u32, x_14: vec3<f32>, n_18: vec3<f32>, ng_4: vec3<f32>, m: GpuMaterial, wo_1: vec3<f32>, r_10: vec3<f32>, lobe_7: vec4<f32>, rl_10: vec4<f32>, w_5: f32, nee_2: u32, u1_5: f32, u2_5: f32) -> vec3<f32> {
     var mis: f32 = 1f;
 
     let _e13 = light_range_scale(li_6, x_14, r_10, rl_10);
     let _e16 = params.eps;
-    let _e17 = connect(li_6, x_14, n_18, ng_4, _e13, w_4, u1_5, u2_5, _e16);
+    let _e17 = connect(li_6, x_14, n_18, ng_4, _e13, w_5, u1_5, u2_5, _e16);
     if (_e17.cos_x <= 0f) {
         return vec3(0f);
     }

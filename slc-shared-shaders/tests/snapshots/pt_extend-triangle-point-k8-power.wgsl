@@ -276,6 +276,11 @@ fn bsh_range_bound(node_1: BshNode) -> f32 {
     return _e8;
 }
 
+fn bsh_reach_bound(node_2: BshNode, w_1: f32) -> f32 {
+    let _e5 = bsh_range_bound(node_2);
+    return (node_2.extent + ((w_1 * 1.001f) * _e5));
+}
+
 fn reservoir_weight(n: u32, k: u32) -> f32 {
     let _e2 = to_f32_(n);
     let _e3 = to_f32_(k);
@@ -356,10 +361,10 @@ fn onb_to_world(n_3: vec3<f32>, d: vec3<f32>) -> vec3<f32> {
     return (((_e2 * d.x) + (_e5 * d.y)) + (n_3 * d.z));
 }
 
-fn onb_to_local(n_4: vec3<f32>, w_1: vec3<f32>) -> vec3<f32> {
+fn onb_to_local(n_4: vec3<f32>, w_2: vec3<f32>) -> vec3<f32> {
     let _e2 = onb_tangent(n_4);
     let _e4 = onb_bitangent(n_4);
-    return vec3<f32>(dot(w_1, _e2), dot(w_1, _e4), dot(w_1, n_4));
+    return vec3<f32>(dot(w_2, _e2), dot(w_2, _e4), dot(w_2, n_4));
 }
 
 fn cosine_direction(n_5: vec3<f32>, u1_: f32, u2_: f32) -> vec3<f32> {
@@ -734,10 +739,10 @@ fn barycentric(p_2: vec3<f32>, a_4: vec3<f32>, b_3: vec3<f32>, c_3: vec3<f32>) -
     return vec3<f32>(((1f - w1_) - w2_), w1_, w2_);
 }
 
-fn shading_normal(n0_: vec3<f32>, n1_: vec3<f32>, n2_: vec3<f32>, w_2: vec3<f32>, facing: vec3<f32>) -> vec3<f32> {
+fn shading_normal(n0_: vec3<f32>, n1_: vec3<f32>, n2_: vec3<f32>, w_3: vec3<f32>, facing: vec3<f32>) -> vec3<f32> {
     var local_17: bool;
 
-    let s_4 = (((n0_ * w_2.x) + (n1_ * w_2.y)) + (n2_ * w_2.z));
+    let s_4 = (((n0_ * w_3.x) + (n1_ * w_3.y)) + (n2_ * w_3.z));
     let l2_1 = dot(s_4, s_4);
     if !(!((l2_1 > 0.000000000001f))) {
         local_17 = !((l2_1 < 300000000000000000000000000000000000000f));
@@ -800,8 +805,8 @@ fn ray_triangle(o_1: vec3<f32>, d_4: vec3<f32>, a_5: vec3<f32>, b_4: vec3<f32>, 
     return -1f;
 }
 
-fn camera_dir(forward: vec3<f32>, right: vec3<f32>, up: vec3<f32>, px: f32, py: f32, w_3: f32, h_1: f32) -> vec3<f32> {
-    let sx = (((2f * px) / w_3) - 1f);
+fn camera_dir(forward: vec3<f32>, right: vec3<f32>, up: vec3<f32>, px: f32, py: f32, w_4: f32, h_1: f32) -> vec3<f32> {
+    let sx = (((2f * px) / w_4) - 1f);
     let sy = (1f - ((2f * py) / h_1));
     return normalize(((forward + (right * sx)) + (up * sy)));
 }
@@ -854,7 +859,7 @@ fn trace(o_2: vec3<f32>, d_5: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
     var hit: GeoHit;
     var stack: array<u32, 64>;
     var sp: u32 = 0u;
-    var node_2: u32 = 0u;
+    var node_3: u32 = 0u;
     var i: u32;
 
     hit.t = t_max_2;
@@ -865,7 +870,7 @@ fn trace(o_2: vec3<f32>, d_5: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
     }
     let _e14 = ray_inverse3_(d_5);
     loop {
-        let _e21 = node_2;
+        let _e21 = node_3;
         let n_17 = geo_nodes[_e21];
         let _e27 = hit.t;
         let _e28 = ray_aabb(o_2, _e14, n_17.bmin, n_17.bmax, _e27);
@@ -906,7 +911,7 @@ fn trace(o_2: vec3<f32>, d_5: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
                     let _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_2 = n_17.first;
+                node_3 = n_17.first;
                 continue;
             }
         }
@@ -918,7 +923,7 @@ fn trace(o_2: vec3<f32>, d_5: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
         sp = (_e75 - 1u);
         let _e78 = sp;
         let _e80 = stack[_e78];
-        node_2 = _e80;
+        node_3 = _e80;
     }
     let _e81 = hit;
     return _e81;
@@ -970,16 +975,16 @@ fn bsh_inner_scale(a_6: f32, v_9: vec3<f32>, d2_4: f32, r_6: vec3<f32>, rl_6: ve
     return _e8;
 }
 
-fn bsh_reaches(node_3: BshNode, x_7: vec3<f32>, r_7: vec3<f32>, rl_7: vec4<f32>) -> bool {
+fn bsh_reaches(node_4: BshNode, x_7: vec3<f32>, r_7: vec3<f32>, rl_7: vec4<f32>) -> bool {
     var local_22: bool;
     var local_23: bool;
 
-    let _e6 = sphere_contains_point(node_3.center, node_3.radius, x_7);
+    let _e6 = sphere_contains_point(node_4.center, node_4.radius, x_7);
     if _e6 {
         return true;
     }
     if !((rl_7.w <= 1f)) {
-        let _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_7.w * 1.0001f)), x_7);
+        let _e20 = sphere_contains_point(node_4.center, (node_4.radius * (rl_7.w * 1.0001f)), x_7);
         local_22 = !(_e20);
     } else {
         local_22 = true;
@@ -988,29 +993,29 @@ fn bsh_reaches(node_3: BshNode, x_7: vec3<f32>, r_7: vec3<f32>, rl_7: vec4<f32>)
     if _e23 {
         return false;
     }
-    let _e25 = bsh_range_bound(node_3);
-    let v_14 = (x_7 - node_3.center);
+    let v_14 = (x_7 - node_4.center);
     let d2_6 = dot(v_14, v_14);
-    let reach_max = (node_3.extent + ((rl_7.w * 1.001f) * _e25));
-    if (d2_6 > (reach_max * reach_max)) {
+    let _e29 = bsh_reach_bound(node_4, rl_7.w);
+    if (d2_6 > (_e29 * _e29)) {
         return false;
     }
-    if (node_3.child == BSH_NONE) {
-        let _e43 = range_scale_toward(rl_7, node_3.center, node_3.extent, x_7, r_7);
-        let _e46 = bsh_scaled_radius(node_3, sqrt(_e43));
-        let _e47 = sphere_contains_point(node_3.center, _e46, x_7);
-        return _e47;
+    if (node_4.child == BSH_NONE) {
+        let _e38 = range_scale_toward(rl_7, node_4.center, node_4.extent, x_7, r_7);
+        let _e41 = bsh_scaled_radius(node_4, sqrt(_e38));
+        let _e42 = sphere_contains_point(node_4.center, _e41, x_7);
+        return _e42;
     }
-    let _e50 = bsh_inner_scale(node_3.extent, -(v_14), d2_6, r_7, rl_7);
-    let s_c = (_e50 * 1.001f);
-    let reach = (node_3.extent + (sqrt(s_c) * _e25));
-    if (d2_6 <= ((node_3.radius * node_3.radius) * s_c)) {
+    let _e45 = bsh_inner_scale(node_4.extent, -(v_14), d2_6, r_7, rl_7);
+    let s_c = (_e45 * 1.001f);
+    let _e50 = bsh_range_bound(node_4);
+    let reach = (node_4.extent + (sqrt(s_c) * _e50));
+    if (d2_6 <= ((node_4.radius * node_4.radius) * s_c)) {
         local_23 = (d2_6 <= (reach * reach));
     } else {
         local_23 = false;
     }
-    let _e67 = local_23;
-    return _e67;
+    let _e63 = local_23;
+    return _e63;
 }
 
 fn bsh_range_leaf(nodes_1: u32, i_2: u32) -> BshNode {

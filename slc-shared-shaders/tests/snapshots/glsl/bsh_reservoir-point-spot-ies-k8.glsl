@@ -231,10 +231,10 @@ float connection_cosine(vec3 x_3, vec3 y, vec3 n, vec3 ng, float r2_1) {
     if (_e16) {
         return 0.0;
     }
-    vec3 w_3 = (v_3 / vec3(sqrt(d2_6)));
-    float cos_x_1 = -(dot(n, w_3));
+    vec3 w_4 = (v_3 / vec3(sqrt(d2_6)));
+    float cos_x_1 = -(dot(n, w_4));
     if (!((cos_x_1 <= 0.0))) {
-        local_1 = (dot(ng, w_3) >= 0.0);
+        local_1 = (dot(ng, w_4) >= 0.0);
     } else {
         local_1 = true;
     }
@@ -458,6 +458,11 @@ float bsh_range_bound(BshNode node_1) {
     return _e8;
 }
 
+float bsh_reach_bound(BshNode node_2, float w_2) {
+    float _e5 = bsh_range_bound(node_2);
+    return (node_2.extent + ((w_2 * 1.001) * _e5));
+}
+
 uint mul_hi_u32_(uint a_3, uint b_2) {
     uint a_lo = (a_3 & 65535u);
     uint a_hi = (a_3 >> 16u);
@@ -621,17 +626,17 @@ float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_5, vec3 b_3, vec3 c_3, float t_min
     return -1.0;
 }
 
-vec3 light_intensity(GpuLight l, vec3 w_2) {
+vec3 light_intensity(GpuLight l, vec3 w_3) {
     switch(l.kind) {
         case 0u: {
             return l.intensity;
         }
         case 1u: {
-            float _e11 = spot_falloff(dot(l.p1_, w_2), l.a, l.b, l.p2_.x);
+            float _e11 = spot_falloff(dot(l.p1_, w_3), l.a, l.b, l.p2_.x);
             return (l.intensity * _e11);
         }
         case 2u: {
-            float _e18 = ies_light_candela(0u, l.ies_base, l.p1_, l.p2_, w_2);
+            float _e18 = ies_light_candela(0u, l.ies_base, l.p1_, l.p2_, w_3);
             return (l.intensity * _e18);
         }
         default: {
@@ -648,7 +653,7 @@ GeoHit trace(vec3 o_2, vec3 d_4, float t_min_1, float t_max_2, bool any_hit) {
     GeoHit hit = GeoHit(0.0, 0u);
     uint stack[64] = uint[64](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
     uint sp = 0u;
-    uint node_2 = 0u;
+    uint node_3 = 0u;
     uint i_1 = 0u;
     hit.t = t_max_2;
     hit.tri = NO_LIGHT;
@@ -658,7 +663,7 @@ GeoHit trace(vec3 o_2, vec3 d_4, float t_min_1, float t_max_2, bool any_hit) {
     }
     vec3 _e14 = ray_inverse3_(d_4);
     while(true) {
-        uint _e21 = node_2;
+        uint _e21 = node_3;
         GpuGeoNode n_9 = _group_0_binding_7_cs[_e21];
         float _e27 = hit.t;
         float _e28 = ray_aabb(o_2, _e14, n_9.bmin, n_9.bmax, _e27);
@@ -701,7 +706,7 @@ GeoHit trace(vec3 o_2, vec3 d_4, float t_min_1, float t_max_2, bool any_hit) {
                     uint _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_2 = n_9.first;
+                node_3 = n_9.first;
                 continue;
             }
         }
@@ -713,7 +718,7 @@ GeoHit trace(vec3 o_2, vec3 d_4, float t_min_1, float t_max_2, bool any_hit) {
         sp = (_e75 - 1u);
         uint _e78 = sp;
         uint _e80 = stack[_e78];
-        node_2 = _e80;
+        node_3 = _e80;
     }
     GeoHit _e81 = hit;
     return _e81;
@@ -753,15 +758,15 @@ float bsh_inner_scale(float a_7, vec3 v_1, float d2_5, vec3 r_2, vec4 rl_2) {
     return _e8;
 }
 
-bool bsh_reaches(BshNode node_3, vec3 x_9, vec3 r_3, vec4 rl_3) {
+bool bsh_reaches(BshNode node_4, vec3 x_9, vec3 r_3, vec4 rl_3) {
     bool local_8 = false;
     bool local_9 = false;
-    bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_9);
+    bool _e6 = sphere_contains_point(node_4.center, node_4.radius, x_9);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
-        bool _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001)), x_9);
+        bool _e20 = sphere_contains_point(node_4.center, (node_4.radius * (rl_3.w * 1.0001)), x_9);
         local_8 = !(_e20);
     } else {
         local_8 = true;
@@ -770,29 +775,29 @@ bool bsh_reaches(BshNode node_3, vec3 x_9, vec3 r_3, vec4 rl_3) {
     if (_e23) {
         return false;
     }
-    float _e25 = bsh_range_bound(node_3);
-    vec3 v_6 = (x_9 - node_3.center);
+    vec3 v_6 = (x_9 - node_4.center);
     float d2_7 = dot(v_6, v_6);
-    float reach_max = (node_3.extent + ((rl_3.w * 1.001) * _e25));
-    if ((d2_7 > (reach_max * reach_max))) {
+    float _e29 = bsh_reach_bound(node_4, rl_3.w);
+    if ((d2_7 > (_e29 * _e29))) {
         return false;
     }
-    if ((node_3.child == BSH_NONE)) {
-        float _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_9, r_3);
-        float _e46 = bsh_scaled_radius(node_3, sqrt(_e43));
-        bool _e47 = sphere_contains_point(node_3.center, _e46, x_9);
-        return _e47;
+    if ((node_4.child == BSH_NONE)) {
+        float _e38 = range_scale_toward(rl_3, node_4.center, node_4.extent, x_9, r_3);
+        float _e41 = bsh_scaled_radius(node_4, sqrt(_e38));
+        bool _e42 = sphere_contains_point(node_4.center, _e41, x_9);
+        return _e42;
     }
-    float _e50 = bsh_inner_scale(node_3.extent, -(v_6), d2_7, r_3, rl_3);
-    float s_c = (_e50 * 1.001);
-    float reach = (node_3.extent + (sqrt(s_c) * _e25));
-    if ((d2_7 <= ((node_3.radius * node_3.radius) * s_c))) {
+    float _e45 = bsh_inner_scale(node_4.extent, -(v_6), d2_7, r_3, rl_3);
+    float s_c = (_e45 * 1.001);
+    float _e50 = bsh_range_bound(node_4);
+    float reach = (node_4.extent + (sqrt(s_c) * _e50));
+    if ((d2_7 <= ((node_4.radius * node_4.radius) * s_c))) {
         local_9 = (d2_7 <= (reach * reach));
     } else {
         local_9 = false;
     }
-    bool _e67 = local_9;
-    return _e67;
+    bool _e63 = local_9;
+    return _e63;
 }
 
 uint bsh_next_leaf_lobe(uint nodes_3, uint start_1, vec3 x_10, vec3 r_4, vec4 rl_4) {

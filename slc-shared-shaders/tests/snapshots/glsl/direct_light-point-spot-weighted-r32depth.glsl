@@ -290,10 +290,10 @@ float connection_cosine(vec3 x_2, vec3 y, vec3 n_1, vec3 ng, float r2_1) {
     if (_e16) {
         return 0.0;
     }
-    vec3 w_9 = (v_5 / vec3(sqrt(d2_7)));
-    float cos_x_1 = -(dot(n_1, w_9));
+    vec3 w_10 = (v_5 / vec3(sqrt(d2_7)));
+    float cos_x_1 = -(dot(n_1, w_10));
     if (!((cos_x_1 <= 0.0))) {
-        local_6 = (dot(ng, w_9) >= 0.0);
+        local_6 = (dot(ng, w_10) >= 0.0);
     } else {
         local_6 = true;
     }
@@ -330,13 +330,18 @@ float bsh_range_bound(BshNode node_1) {
     return _e8;
 }
 
+float bsh_reach_bound(BshNode node_2, float w_1) {
+    float _e5 = bsh_range_bound(node_2);
+    return (node_2.extent + ((w_1 * 1.001) * _e5));
+}
+
 float weighted_threshold(float w_sum, float u_2) {
     return (w_sum / (1.0 - u_2));
 }
 
-float weighted_pick_weight(float w_sum_1, float w_1, uint k_2) {
+float weighted_pick_weight(float w_sum_1, float w_2, uint k_2) {
     float _e3 = to_f32_(k_2);
-    return (w_sum_1 / (_e3 * w_1));
+    return (w_sum_1 / (_e3 * w_2));
 }
 
 float ggx_d(float cos_h, float sin2_h, float alpha) {
@@ -623,13 +628,13 @@ float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_3, vec3 b_2, vec3 c_2, float t_min
     return -1.0;
 }
 
-vec3 light_intensity(GpuLight l, vec3 w_2) {
+vec3 light_intensity(GpuLight l, vec3 w_3) {
     switch(l.kind) {
         case 0u: {
             return l.intensity;
         }
         case 1u: {
-            float _e11 = spot_falloff(dot(l.p1_, w_2), l.a, l.b, l.p2_.x);
+            float _e11 = spot_falloff(dot(l.p1_, w_3), l.a, l.b, l.p2_.x);
             return (l.intensity * _e11);
         }
         default: {
@@ -646,7 +651,7 @@ GeoHit trace(vec3 o_2, vec3 d_4, float t_min_1, float t_max_2, bool any_hit) {
     GeoHit hit = GeoHit(0.0, 0u);
     uint stack[64] = uint[64](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
     uint sp = 0u;
-    uint node_2 = 0u;
+    uint node_3 = 0u;
     uint i = 0u;
     hit.t = t_max_2;
     hit.tri = NO_LIGHT;
@@ -656,7 +661,7 @@ GeoHit trace(vec3 o_2, vec3 d_4, float t_min_1, float t_max_2, bool any_hit) {
     }
     vec3 _e14 = ray_inverse3_(d_4);
     while(true) {
-        uint _e21 = node_2;
+        uint _e21 = node_3;
         GpuGeoNode n_11 = _group_1_binding_6_cs[_e21];
         float _e27 = hit.t;
         float _e28 = ray_aabb(o_2, _e14, n_11.bmin, n_11.bmax, _e27);
@@ -699,7 +704,7 @@ GeoHit trace(vec3 o_2, vec3 d_4, float t_min_1, float t_max_2, bool any_hit) {
                     uint _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_2 = n_11.first;
+                node_3 = n_11.first;
                 continue;
             }
         }
@@ -711,7 +716,7 @@ GeoHit trace(vec3 o_2, vec3 d_4, float t_min_1, float t_max_2, bool any_hit) {
         sp = (_e75 - 1u);
         uint _e78 = sp;
         uint _e80 = stack[_e78];
-        node_2 = _e80;
+        node_3 = _e80;
     }
     GeoHit _e81 = hit;
     return _e81;
@@ -751,15 +756,15 @@ float bsh_inner_scale(float a_5, vec3 v_2, float d2_6, vec3 r_6, vec4 rl_2) {
     return _e8;
 }
 
-bool bsh_reaches(BshNode node_3, vec3 x_5, vec3 r_7, vec4 rl_3) {
+bool bsh_reaches(BshNode node_4, vec3 x_5, vec3 r_7, vec4 rl_3) {
     bool local_15 = false;
     bool local_16 = false;
-    bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_5);
+    bool _e6 = sphere_contains_point(node_4.center, node_4.radius, x_5);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
-        bool _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001)), x_5);
+        bool _e20 = sphere_contains_point(node_4.center, (node_4.radius * (rl_3.w * 1.0001)), x_5);
         local_15 = !(_e20);
     } else {
         local_15 = true;
@@ -768,33 +773,33 @@ bool bsh_reaches(BshNode node_3, vec3 x_5, vec3 r_7, vec4 rl_3) {
     if (_e23) {
         return false;
     }
-    float _e25 = bsh_range_bound(node_3);
-    vec3 v_11 = (x_5 - node_3.center);
+    vec3 v_11 = (x_5 - node_4.center);
     float d2_9 = dot(v_11, v_11);
-    float reach_max = (node_3.extent + ((rl_3.w * 1.001) * _e25));
-    if ((d2_9 > (reach_max * reach_max))) {
+    float _e29 = bsh_reach_bound(node_4, rl_3.w);
+    if ((d2_9 > (_e29 * _e29))) {
         return false;
     }
-    if ((node_3.child == BSH_NONE)) {
-        float _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_5, r_7);
-        float _e46 = bsh_scaled_radius(node_3, sqrt(_e43));
-        bool _e47 = sphere_contains_point(node_3.center, _e46, x_5);
-        return _e47;
+    if ((node_4.child == BSH_NONE)) {
+        float _e38 = range_scale_toward(rl_3, node_4.center, node_4.extent, x_5, r_7);
+        float _e41 = bsh_scaled_radius(node_4, sqrt(_e38));
+        bool _e42 = sphere_contains_point(node_4.center, _e41, x_5);
+        return _e42;
     }
-    float _e50 = bsh_inner_scale(node_3.extent, -(v_11), d2_9, r_7, rl_3);
-    float s_c = (_e50 * 1.001);
-    float reach = (node_3.extent + (sqrt(s_c) * _e25));
-    if ((d2_9 <= ((node_3.radius * node_3.radius) * s_c))) {
+    float _e45 = bsh_inner_scale(node_4.extent, -(v_11), d2_9, r_7, rl_3);
+    float s_c = (_e45 * 1.001);
+    float _e50 = bsh_range_bound(node_4);
+    float reach = (node_4.extent + (sqrt(s_c) * _e50));
+    if ((d2_9 <= ((node_4.radius * node_4.radius) * s_c))) {
         local_16 = (d2_9 <= (reach * reach));
     } else {
         local_16 = false;
     }
-    bool _e67 = local_16;
-    return _e67;
+    bool _e63 = local_16;
+    return _e63;
 }
 
-bool bsh_reaches_box(BshNode node_4, vec3 lo, vec3 hi, float w_3) {
-    bool _e13 = sphere_overlaps_aabb(node_4.center, (node_4.radius * (max(1.0, (w_3 * 1.0001)) * 1.0001)), lo, hi);
+bool bsh_reaches_box(BshNode node_5, vec3 lo, vec3 hi, float w_4) {
+    bool _e13 = sphere_overlaps_aabb(node_5.center, (node_5.radius * (max(1.0, (w_4 * 1.0001)) * 1.0001)), lo, hi);
     return _e13;
 }
 
@@ -843,7 +848,7 @@ uint bsh_subtree(uint nodes_3, uint s_1, uint depth) {
     return _e44;
 }
 
-uint bsh_next_leaf_box(uint nodes_4, uint start_1, uint end, vec3 lo_1, vec3 hi_1, float w_4) {
+uint bsh_next_leaf_box(uint nodes_4, uint start_1, uint end, vec3 lo_1, vec3 hi_1, float w_5) {
     uint i_3 = 0u;
     i_3 = start_1;
     while(true) {
@@ -855,7 +860,7 @@ uint bsh_next_leaf_box(uint nodes_4, uint start_1, uint end, vec3 lo_1, vec3 hi_
         {
             uint _e9 = i_3;
             BshNode _e10 = bsh_node(nodes_4, _e9);
-            bool _e11 = bsh_reaches_box(_e10, lo_1, hi_1, w_4);
+            bool _e11 = bsh_reaches_box(_e10, lo_1, hi_1, w_5);
             if (_e11) {
                 if ((_e10.child == BSH_NONE)) {
                     if (((_e10.light & BSH_TAIL) == 0u)) {
@@ -955,14 +960,14 @@ WeightedPicks weighted_picks(uint h_2) {
     return _e7;
 }
 
-void weighted_offer(inout WeightedPicks picks_2, uint li_3, float w_5) {
+void weighted_offer(inout WeightedPicks picks_2, uint li_3, float w_6) {
     uint h_3 = 0u;
     uint s_3 = 0u;
     uint _e4 = picks_2.n;
     picks_2.n = (_e4 + 1u);
-    if ((w_5 > 0.0)) {
+    if ((w_6 > 0.0)) {
         float _e10 = picks_2.w_sum;
-        picks_2.w_sum = (_e10 + w_5);
+        picks_2.w_sum = (_e10 + w_6);
         uint _e13 = picks_2.h;
         h_3 = _e13;
         bool loop_init_1 = true;
@@ -985,7 +990,7 @@ void weighted_offer(inout WeightedPicks picks_2, uint li_3, float w_5) {
                     uint _e28 = s_3;
                     picks_2.light[_e28] = li_3;
                     uint _e31 = s_3;
-                    picks_2.w[_e31] = w_5;
+                    picks_2.w[_e31] = w_6;
                     uint _e34 = s_3;
                     float _e37 = picks_2.w_sum;
                     float _e38 = next_threshold(_e37, h_3);
@@ -1161,19 +1166,19 @@ uint tile_subtree(uint s_4, TileWalk t_1, bool list, uint at, uint start_2, uint
     return (_e61 - at);
 }
 
-TileWalk tile_walk_begin(uint li_6, vec3 x_10, float w_6, bool has_1) {
+TileWalk tile_walk_begin(uint li_6, vec3 x_10, float w_7, bool has_1) {
     bool local_25 = false;
     TileWalk t_2 = TileWalk(vec3(0.0), vec3(0.0), 0.0, 0u);
     uint s_5 = 0u;
     uint sum_1 = 0u;
     uint s_6 = 0u;
     if (has_1) {
-        local_25 = (w_6 >= 0.0);
+        local_25 = (w_7 >= 0.0);
     } else {
         local_25 = false;
     }
     bool _e12 = local_25;
-    uint _e14 = atomicMax(tile_scale, (_e12 ? floatBitsToUint(w_6) : 0u));
+    uint _e14 = atomicMax(tile_scale, (_e12 ? floatBitsToUint(w_7) : 0u));
     WorkgroupBox _e15 = workgroup_box(li_6, x_10, has_1);
     memoryBarrierShared();
     barrier();
@@ -1300,14 +1305,14 @@ Shaded shade_connection(Connection c_4, vec3 x_11, vec3 n_8, Material m_1) {
     return _e13;
 }
 
-Shaded shade_pick_traced(uint li_8, vec3 x_12, vec3 n_9, vec3 r_10, vec4 rl_6, Material m_2, float w_7, float u1_3, float u2_3, float eps_2, bool trace_3) {
-    Connection _e12 = connect_traced(li_8, x_12, n_9, n_9, 1.0, w_7, u1_3, u2_3, eps_2, trace_3);
+Shaded shade_pick_traced(uint li_8, vec3 x_12, vec3 n_9, vec3 r_10, vec4 rl_6, Material m_2, float w_8, float u1_3, float u2_3, float eps_2, bool trace_3) {
+    Connection _e12 = connect_traced(li_8, x_12, n_9, n_9, 1.0, w_8, u1_3, u2_3, eps_2, trace_3);
     Shaded _e13 = shade_connection(_e12, x_12, n_9, m_2);
     return _e13;
 }
 
-Shaded shade_pick(uint li_9, vec3 x_13, vec3 n_10, vec3 r_11, vec4 rl_7, Material m_3, float w_8, float u1_4, float u2_4, float eps_3) {
-    Shaded _e11 = shade_pick_traced(li_9, x_13, n_10, r_11, rl_7, m_3, w_8, u1_4, u2_4, eps_3, true);
+Shaded shade_pick(uint li_9, vec3 x_13, vec3 n_10, vec3 r_11, vec4 rl_7, Material m_3, float w_9, float u1_4, float u2_4, float eps_3) {
+    Shaded _e11 = shade_pick_traced(li_9, x_13, n_10, r_11, rl_7, m_3, w_9, u1_4, u2_4, eps_3, true);
     return _e11;
 }
 

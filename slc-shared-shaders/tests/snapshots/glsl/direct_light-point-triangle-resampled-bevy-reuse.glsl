@@ -340,10 +340,10 @@ float connection_cosine(vec3 x_2, vec3 y, vec3 n_1, vec3 ng, float r2_1) {
     if (_e16) {
         return 0.0;
     }
-    vec3 w_11 = (v_7 / vec3(sqrt(d2_6)));
-    float cos_x_1 = -(dot(n_1, w_11));
+    vec3 w_12 = (v_7 / vec3(sqrt(d2_6)));
+    float cos_x_1 = -(dot(n_1, w_12));
     if (!((cos_x_1 <= 0.0))) {
-        local_9 = (dot(ng, w_11) >= 0.0);
+        local_9 = (dot(ng, w_12) >= 0.0);
     } else {
         local_9 = true;
     }
@@ -383,8 +383,13 @@ float bsh_range_bound(BshNode node_1) {
     return _e8;
 }
 
-bool weighted_replace(float w_3, float w_sum, float u_2) {
-    return ((u_2 * w_sum) < w_3);
+float bsh_reach_bound(BshNode node_2, float w_3) {
+    float _e5 = bsh_range_bound(node_2);
+    return (node_2.extent + ((w_3 * 1.001) * _e5));
+}
+
+bool weighted_replace(float w_4, float w_sum, float u_2) {
+    return ((u_2 * w_sum) < w_4);
 }
 
 float weighted_threshold(float w_sum_1, float u_3) {
@@ -413,19 +418,19 @@ float slot_target(vec3 c_4, uint slot, uint k_2) {
 vec3 slot_share(uint slot_1, uint k_3) {
     if ((k_3 < 3u)) {
         float _e4 = to_f32_(k_3);
-        float w_12 = (1.0 / _e4);
-        return vec3(w_12, w_12, w_12);
+        float w_13 = (1.0 / _e4);
+        return vec3(w_13, w_13, w_13);
     }
     uint j_7 = (slot_1 % 3u);
     float _e15 = to_f32_((((k_3 + 2u) - j_7) / 3u));
-    float w_13 = (1.0 / _e15);
+    float w_14 = (1.0 / _e15);
     if ((j_7 == 0u)) {
-        return vec3(w_13, 0.0, 0.0);
+        return vec3(w_14, 0.0, 0.0);
     }
     if ((j_7 == 1u)) {
-        return vec3(0.0, w_13, 0.0);
+        return vec3(0.0, w_14, 0.0);
     }
-    return vec3(0.0, 0.0, w_13);
+    return vec3(0.0, 0.0, w_14);
 }
 
 float grid_coordinate(uint bits_1) {
@@ -442,11 +447,11 @@ vec2 disk_offset(float r_3, float u1_1, float u2_1) {
     return (vec2(cos(a_9), sin(a_9)) * (r_3 * sqrt(u1_1)));
 }
 
-float gris_weight(float own, float all_, float p_hat, float w_4) {
+float gris_weight(float own, float all_, float p_hat, float w_5) {
     if (!((all_ > 0.0))) {
         return 0.0;
     }
-    return (((own / all_) * p_hat) * w_4);
+    return (((own / all_) * p_hat) * w_5);
 }
 
 float gris_contribution_weight(float w_sum_2, float p_hat_1) {
@@ -769,14 +774,14 @@ bool history_matches(vec3 n_5, vec3 nh, vec3 p_3, float oh, float d_4) {
     return _e17;
 }
 
-vec3 light_intensity(GpuLight l_1, vec3 w_5) {
+vec3 light_intensity(GpuLight l_1, vec3 w_6) {
     switch(l_1.kind) {
         case 0u: {
             return l_1.intensity;
         }
         case 3u: {
             vec3 _e8 = triangle_normal(l_1.p0_, l_1.p1_, l_1.p2_);
-            float _e10 = triangle_lobe(_e8, l_1.a, w_5);
+            float _e10 = triangle_lobe(_e8, l_1.a, w_6);
             return (l_1.intensity * _e10);
         }
         default: {
@@ -797,7 +802,7 @@ GeoHit trace(vec3 o_2, vec3 d_5, float t_min_1, float t_max_2, bool any_hit) {
     GeoHit hit = GeoHit(0.0, 0u);
     uint stack[64] = uint[64](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
     uint sp = 0u;
-    uint node_2 = 0u;
+    uint node_3 = 0u;
     uint i = 0u;
     hit.t = t_max_2;
     hit.tri = NO_LIGHT;
@@ -807,7 +812,7 @@ GeoHit trace(vec3 o_2, vec3 d_5, float t_min_1, float t_max_2, bool any_hit) {
     }
     vec3 _e14 = ray_inverse3_(d_5);
     while(true) {
-        uint _e21 = node_2;
+        uint _e21 = node_3;
         GpuGeoNode n_15 = _group_1_binding_6_cs[_e21];
         float _e27 = hit.t;
         float _e28 = ray_aabb(o_2, _e14, n_15.bmin, n_15.bmax, _e27);
@@ -850,7 +855,7 @@ GeoHit trace(vec3 o_2, vec3 d_5, float t_min_1, float t_max_2, bool any_hit) {
                     uint _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_2 = n_15.first;
+                node_3 = n_15.first;
                 continue;
             }
         }
@@ -862,7 +867,7 @@ GeoHit trace(vec3 o_2, vec3 d_5, float t_min_1, float t_max_2, bool any_hit) {
         sp = (_e75 - 1u);
         uint _e78 = sp;
         uint _e80 = stack[_e78];
-        node_2 = _e80;
+        node_3 = _e80;
     }
     GeoHit _e81 = hit;
     return _e81;
@@ -902,15 +907,15 @@ float bsh_inner_scale(float a_7, vec3 v_3, float d2_5, vec3 r_7, vec4 rl_2) {
     return _e8;
 }
 
-bool bsh_reaches(BshNode node_3, vec3 x_4, vec3 r_8, vec4 rl_3) {
+bool bsh_reaches(BshNode node_4, vec3 x_4, vec3 r_8, vec4 rl_3) {
     bool local_21 = false;
     bool local_22 = false;
-    bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_4);
+    bool _e6 = sphere_contains_point(node_4.center, node_4.radius, x_4);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
-        bool _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001)), x_4);
+        bool _e20 = sphere_contains_point(node_4.center, (node_4.radius * (rl_3.w * 1.0001)), x_4);
         local_21 = !(_e20);
     } else {
         local_21 = true;
@@ -919,33 +924,33 @@ bool bsh_reaches(BshNode node_3, vec3 x_4, vec3 r_8, vec4 rl_3) {
     if (_e23) {
         return false;
     }
-    float _e25 = bsh_range_bound(node_3);
-    vec3 v_10 = (x_4 - node_3.center);
+    vec3 v_10 = (x_4 - node_4.center);
     float d2_7 = dot(v_10, v_10);
-    float reach_max = (node_3.extent + ((rl_3.w * 1.001) * _e25));
-    if ((d2_7 > (reach_max * reach_max))) {
+    float _e29 = bsh_reach_bound(node_4, rl_3.w);
+    if ((d2_7 > (_e29 * _e29))) {
         return false;
     }
-    if ((node_3.child == BSH_NONE)) {
-        float _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_4, r_8);
-        float _e46 = bsh_scaled_radius(node_3, sqrt(_e43));
-        bool _e47 = sphere_contains_point(node_3.center, _e46, x_4);
-        return _e47;
+    if ((node_4.child == BSH_NONE)) {
+        float _e38 = range_scale_toward(rl_3, node_4.center, node_4.extent, x_4, r_8);
+        float _e41 = bsh_scaled_radius(node_4, sqrt(_e38));
+        bool _e42 = sphere_contains_point(node_4.center, _e41, x_4);
+        return _e42;
     }
-    float _e50 = bsh_inner_scale(node_3.extent, -(v_10), d2_7, r_8, rl_3);
-    float s_c = (_e50 * 1.001);
-    float reach = (node_3.extent + (sqrt(s_c) * _e25));
-    if ((d2_7 <= ((node_3.radius * node_3.radius) * s_c))) {
+    float _e45 = bsh_inner_scale(node_4.extent, -(v_10), d2_7, r_8, rl_3);
+    float s_c = (_e45 * 1.001);
+    float _e50 = bsh_range_bound(node_4);
+    float reach = (node_4.extent + (sqrt(s_c) * _e50));
+    if ((d2_7 <= ((node_4.radius * node_4.radius) * s_c))) {
         local_22 = (d2_7 <= (reach * reach));
     } else {
         local_22 = false;
     }
-    bool _e67 = local_22;
-    return _e67;
+    bool _e63 = local_22;
+    return _e63;
 }
 
-bool bsh_reaches_box(BshNode node_4, vec3 lo, vec3 hi, float w_6) {
-    bool _e13 = sphere_overlaps_aabb(node_4.center, (node_4.radius * (max(1.0, (w_6 * 1.0001)) * 1.0001)), lo, hi);
+bool bsh_reaches_box(BshNode node_5, vec3 lo, vec3 hi, float w_7) {
+    bool _e13 = sphere_overlaps_aabb(node_5.center, (node_5.radius * (max(1.0, (w_7 * 1.0001)) * 1.0001)), lo, hi);
     return _e13;
 }
 
@@ -994,7 +999,7 @@ uint bsh_subtree(uint nodes_3, uint s_1, uint depth) {
     return _e44;
 }
 
-uint bsh_next_leaf_box(uint nodes_4, uint start_1, uint end, vec3 lo_1, vec3 hi_1, float w_7) {
+uint bsh_next_leaf_box(uint nodes_4, uint start_1, uint end, vec3 lo_1, vec3 hi_1, float w_8) {
     uint i_3 = 0u;
     i_3 = start_1;
     while(true) {
@@ -1006,7 +1011,7 @@ uint bsh_next_leaf_box(uint nodes_4, uint start_1, uint end, vec3 lo_1, vec3 hi_
         {
             uint _e9 = i_3;
             BshNode _e10 = bsh_node(nodes_4, _e9);
-            bool _e11 = bsh_reaches_box(_e10, lo_1, hi_1, w_7);
+            bool _e11 = bsh_reaches_box(_e10, lo_1, hi_1, w_8);
             if (_e11) {
                 if ((_e10.child == BSH_NONE)) {
                     if (((_e10.light & BSH_TAIL) == 0u)) {
@@ -1212,19 +1217,19 @@ uint tile_subtree(uint s_3, TileWalk t_1, bool list, uint at, uint start_2, uint
     return (_e61 - at);
 }
 
-TileWalk tile_walk_begin(uint li_4, vec3 x_8, float w_8, bool has_1) {
+TileWalk tile_walk_begin(uint li_4, vec3 x_8, float w_9, bool has_1) {
     bool local_29 = false;
     TileWalk t_2 = TileWalk(vec3(0.0), vec3(0.0), 0.0, 0u);
     uint s_4 = 0u;
     uint sum_1 = 0u;
     uint s_5 = 0u;
     if (has_1) {
-        local_29 = (w_8 >= 0.0);
+        local_29 = (w_9 >= 0.0);
     } else {
         local_29 = false;
     }
     bool _e12 = local_29;
-    uint _e14 = atomicMax(tile_scale, (_e12 ? floatBitsToUint(w_8) : 0u));
+    uint _e14 = atomicMax(tile_scale, (_e12 ? floatBitsToUint(w_9) : 0u));
     WorkgroupBox _e15 = workgroup_box(li_4, x_8, has_1);
     memoryBarrierShared();
     barrier();
@@ -1355,9 +1360,9 @@ Shaded shade_connection(Connection c_9, vec3 x_9, vec3 n_8, Material m_1) {
     return _e28;
 }
 
-Shaded shade_pick_traced(uint li_6, vec3 x_10, vec3 n_9, vec3 r_10, vec4 rl_5, Material m_2, float w_9, float u1_5, float u2_5, float eps_2, bool trace_3) {
+Shaded shade_pick_traced(uint li_6, vec3 x_10, vec3 n_9, vec3 r_10, vec4 rl_5, Material m_2, float w_10, float u1_5, float u2_5, float eps_2, bool trace_3) {
     float _e11 = light_range_scale(li_6, x_10, r_10, rl_5);
-    Connection _e12 = connect_traced(li_6, x_10, n_9, n_9, _e11, w_9, u1_5, u2_5, eps_2, trace_3);
+    Connection _e12 = connect_traced(li_6, x_10, n_9, n_9, _e11, w_10, u1_5, u2_5, eps_2, trace_3);
     Shaded _e13 = shade_connection(_e12, x_10, n_9, m_2);
     return _e13;
 }
@@ -1371,8 +1376,8 @@ Shaded add(Shaded a_8, Shaded b_8) {
     return Shaded((a_8.e + b_8.e), (a_8.diffuse + b_8.diffuse), (a_8.specular + b_8.specular));
 }
 
-Shaded scaled(Shaded s_8, vec3 w_10) {
-    return Shaded((s_8.e * w_10), (s_8.diffuse * w_10), (s_8.specular * w_10));
+Shaded scaled(Shaded s_8, vec3 w_11) {
+    return Shaded((s_8.e * w_11), (s_8.diffuse * w_11), (s_8.specular * w_11));
 }
 
 uint[8] first_holders(uvec2 keys_1[8], bool held_1[8]) {

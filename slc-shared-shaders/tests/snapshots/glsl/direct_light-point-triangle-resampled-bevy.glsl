@@ -286,10 +286,10 @@ float connection_cosine(vec3 x_2, vec3 y, vec3 n_1, vec3 ng, float r2_1) {
     if (_e16) {
         return 0.0;
     }
-    vec3 w_10 = (v_7 / vec3(sqrt(d2_6)));
-    float cos_x_1 = -(dot(n_1, w_10));
+    vec3 w_11 = (v_7 / vec3(sqrt(d2_6)));
+    float cos_x_1 = -(dot(n_1, w_11));
     if (!((cos_x_1 <= 0.0))) {
-        local_8 = (dot(ng, w_10) >= 0.0);
+        local_8 = (dot(ng, w_11) >= 0.0);
     } else {
         local_8 = true;
     }
@@ -329,6 +329,11 @@ float bsh_range_bound(BshNode node_1) {
     return _e8;
 }
 
+float bsh_reach_bound(BshNode node_2, float w_3) {
+    float _e5 = bsh_range_bound(node_2);
+    return (node_2.extent + ((w_3 * 1.001) * _e5));
+}
+
 float weighted_threshold(float w_sum, float u_2) {
     return (w_sum / (1.0 - u_2));
 }
@@ -355,19 +360,19 @@ float slot_target(vec3 c_4, uint slot, uint k_2) {
 vec3 slot_share(uint slot_1, uint k_3) {
     if ((k_3 < 3u)) {
         float _e4 = to_f32_(k_3);
-        float w_11 = (1.0 / _e4);
-        return vec3(w_11, w_11, w_11);
+        float w_12 = (1.0 / _e4);
+        return vec3(w_12, w_12, w_12);
     }
     uint j_4 = (slot_1 % 3u);
     float _e15 = to_f32_((((k_3 + 2u) - j_4) / 3u));
-    float w_12 = (1.0 / _e15);
+    float w_13 = (1.0 / _e15);
     if ((j_4 == 0u)) {
-        return vec3(w_12, 0.0, 0.0);
+        return vec3(w_13, 0.0, 0.0);
     }
     if ((j_4 == 1u)) {
-        return vec3(0.0, w_12, 0.0);
+        return vec3(0.0, w_13, 0.0);
     }
-    return vec3(0.0, 0.0, w_12);
+    return vec3(0.0, 0.0, w_13);
 }
 
 float ggx_d(float cos_h, float sin2_h, float alpha) {
@@ -662,14 +667,14 @@ float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_5, vec3 b_4, vec3 c_7, float t_min
     return -1.0;
 }
 
-vec3 light_intensity(GpuLight l_1, vec3 w_3) {
+vec3 light_intensity(GpuLight l_1, vec3 w_4) {
     switch(l_1.kind) {
         case 0u: {
             return l_1.intensity;
         }
         case 3u: {
             vec3 _e8 = triangle_normal(l_1.p0_, l_1.p1_, l_1.p2_);
-            float _e10 = triangle_lobe(_e8, l_1.a, w_3);
+            float _e10 = triangle_lobe(_e8, l_1.a, w_4);
             return (l_1.intensity * _e10);
         }
         default: {
@@ -690,7 +695,7 @@ GeoHit trace(vec3 o_2, vec3 d_4, float t_min_1, float t_max_2, bool any_hit) {
     GeoHit hit = GeoHit(0.0, 0u);
     uint stack[64] = uint[64](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
     uint sp = 0u;
-    uint node_2 = 0u;
+    uint node_3 = 0u;
     uint i = 0u;
     hit.t = t_max_2;
     hit.tri = NO_LIGHT;
@@ -700,7 +705,7 @@ GeoHit trace(vec3 o_2, vec3 d_4, float t_min_1, float t_max_2, bool any_hit) {
     }
     vec3 _e14 = ray_inverse3_(d_4);
     while(true) {
-        uint _e21 = node_2;
+        uint _e21 = node_3;
         GpuGeoNode n_11 = _group_1_binding_6_cs[_e21];
         float _e27 = hit.t;
         float _e28 = ray_aabb(o_2, _e14, n_11.bmin, n_11.bmax, _e27);
@@ -743,7 +748,7 @@ GeoHit trace(vec3 o_2, vec3 d_4, float t_min_1, float t_max_2, bool any_hit) {
                     uint _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_2 = n_11.first;
+                node_3 = n_11.first;
                 continue;
             }
         }
@@ -755,7 +760,7 @@ GeoHit trace(vec3 o_2, vec3 d_4, float t_min_1, float t_max_2, bool any_hit) {
         sp = (_e75 - 1u);
         uint _e78 = sp;
         uint _e80 = stack[_e78];
-        node_2 = _e80;
+        node_3 = _e80;
     }
     GeoHit _e81 = hit;
     return _e81;
@@ -795,15 +800,15 @@ float bsh_inner_scale(float a_7, vec3 v_3, float d2_5, vec3 r_6, vec4 rl_2) {
     return _e8;
 }
 
-bool bsh_reaches(BshNode node_3, vec3 x_4, vec3 r_7, vec4 rl_3) {
+bool bsh_reaches(BshNode node_4, vec3 x_4, vec3 r_7, vec4 rl_3) {
     bool local_19 = false;
     bool local_20 = false;
-    bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_4);
+    bool _e6 = sphere_contains_point(node_4.center, node_4.radius, x_4);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
-        bool _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001)), x_4);
+        bool _e20 = sphere_contains_point(node_4.center, (node_4.radius * (rl_3.w * 1.0001)), x_4);
         local_19 = !(_e20);
     } else {
         local_19 = true;
@@ -812,33 +817,33 @@ bool bsh_reaches(BshNode node_3, vec3 x_4, vec3 r_7, vec4 rl_3) {
     if (_e23) {
         return false;
     }
-    float _e25 = bsh_range_bound(node_3);
-    vec3 v_10 = (x_4 - node_3.center);
+    vec3 v_10 = (x_4 - node_4.center);
     float d2_7 = dot(v_10, v_10);
-    float reach_max = (node_3.extent + ((rl_3.w * 1.001) * _e25));
-    if ((d2_7 > (reach_max * reach_max))) {
+    float _e29 = bsh_reach_bound(node_4, rl_3.w);
+    if ((d2_7 > (_e29 * _e29))) {
         return false;
     }
-    if ((node_3.child == BSH_NONE)) {
-        float _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_4, r_7);
-        float _e46 = bsh_scaled_radius(node_3, sqrt(_e43));
-        bool _e47 = sphere_contains_point(node_3.center, _e46, x_4);
-        return _e47;
+    if ((node_4.child == BSH_NONE)) {
+        float _e38 = range_scale_toward(rl_3, node_4.center, node_4.extent, x_4, r_7);
+        float _e41 = bsh_scaled_radius(node_4, sqrt(_e38));
+        bool _e42 = sphere_contains_point(node_4.center, _e41, x_4);
+        return _e42;
     }
-    float _e50 = bsh_inner_scale(node_3.extent, -(v_10), d2_7, r_7, rl_3);
-    float s_c = (_e50 * 1.001);
-    float reach = (node_3.extent + (sqrt(s_c) * _e25));
-    if ((d2_7 <= ((node_3.radius * node_3.radius) * s_c))) {
+    float _e45 = bsh_inner_scale(node_4.extent, -(v_10), d2_7, r_7, rl_3);
+    float s_c = (_e45 * 1.001);
+    float _e50 = bsh_range_bound(node_4);
+    float reach = (node_4.extent + (sqrt(s_c) * _e50));
+    if ((d2_7 <= ((node_4.radius * node_4.radius) * s_c))) {
         local_20 = (d2_7 <= (reach * reach));
     } else {
         local_20 = false;
     }
-    bool _e67 = local_20;
-    return _e67;
+    bool _e63 = local_20;
+    return _e63;
 }
 
-bool bsh_reaches_box(BshNode node_4, vec3 lo, vec3 hi, float w_4) {
-    bool _e13 = sphere_overlaps_aabb(node_4.center, (node_4.radius * (max(1.0, (w_4 * 1.0001)) * 1.0001)), lo, hi);
+bool bsh_reaches_box(BshNode node_5, vec3 lo, vec3 hi, float w_5) {
+    bool _e13 = sphere_overlaps_aabb(node_5.center, (node_5.radius * (max(1.0, (w_5 * 1.0001)) * 1.0001)), lo, hi);
     return _e13;
 }
 
@@ -887,7 +892,7 @@ uint bsh_subtree(uint nodes_3, uint s_1, uint depth) {
     return _e44;
 }
 
-uint bsh_next_leaf_box(uint nodes_4, uint start_1, uint end, vec3 lo_1, vec3 hi_1, float w_5) {
+uint bsh_next_leaf_box(uint nodes_4, uint start_1, uint end, vec3 lo_1, vec3 hi_1, float w_6) {
     uint i_3 = 0u;
     i_3 = start_1;
     while(true) {
@@ -899,7 +904,7 @@ uint bsh_next_leaf_box(uint nodes_4, uint start_1, uint end, vec3 lo_1, vec3 hi_
         {
             uint _e9 = i_3;
             BshNode _e10 = bsh_node(nodes_4, _e9);
-            bool _e11 = bsh_reaches_box(_e10, lo_1, hi_1, w_5);
+            bool _e11 = bsh_reaches_box(_e10, lo_1, hi_1, w_6);
             if (_e11) {
                 if ((_e10.child == BSH_NONE)) {
                     if (((_e10.light & BSH_TAIL) == 0u)) {
@@ -1105,19 +1110,19 @@ uint tile_subtree(uint s_3, TileWalk t_1, bool list, uint at, uint start_2, uint
     return (_e61 - at);
 }
 
-TileWalk tile_walk_begin(uint li_4, vec3 x_8, float w_6, bool has_1) {
+TileWalk tile_walk_begin(uint li_4, vec3 x_8, float w_7, bool has_1) {
     bool local_27 = false;
     TileWalk t_2 = TileWalk(vec3(0.0), vec3(0.0), 0.0, 0u);
     uint s_4 = 0u;
     uint sum_1 = 0u;
     uint s_5 = 0u;
     if (has_1) {
-        local_27 = (w_6 >= 0.0);
+        local_27 = (w_7 >= 0.0);
     } else {
         local_27 = false;
     }
     bool _e12 = local_27;
-    uint _e14 = atomicMax(tile_scale, (_e12 ? floatBitsToUint(w_6) : 0u));
+    uint _e14 = atomicMax(tile_scale, (_e12 ? floatBitsToUint(w_7) : 0u));
     WorkgroupBox _e15 = workgroup_box(li_4, x_8, has_1);
     memoryBarrierShared();
     barrier();
@@ -1248,15 +1253,15 @@ Shaded shade_connection(Connection c_9, vec3 x_9, vec3 n_7, Material m_1) {
     return _e28;
 }
 
-Shaded shade_pick_traced(uint li_6, vec3 x_10, vec3 n_8, vec3 r_9, vec4 rl_5, Material m_2, float w_7, float u1_4, float u2_4, float eps_2, bool trace_3) {
+Shaded shade_pick_traced(uint li_6, vec3 x_10, vec3 n_8, vec3 r_9, vec4 rl_5, Material m_2, float w_8, float u1_4, float u2_4, float eps_2, bool trace_3) {
     float _e11 = light_range_scale(li_6, x_10, r_9, rl_5);
-    Connection _e12 = connect_traced(li_6, x_10, n_8, n_8, _e11, w_7, u1_4, u2_4, eps_2, trace_3);
+    Connection _e12 = connect_traced(li_6, x_10, n_8, n_8, _e11, w_8, u1_4, u2_4, eps_2, trace_3);
     Shaded _e13 = shade_connection(_e12, x_10, n_8, m_2);
     return _e13;
 }
 
-Shaded shade_pick(uint li_7, vec3 x_11, vec3 n_9, vec3 r_10, vec4 rl_6, Material m_3, float w_8, float u1_5, float u2_5, float eps_3) {
-    Shaded _e11 = shade_pick_traced(li_7, x_11, n_9, r_10, rl_6, m_3, w_8, u1_5, u2_5, eps_3, true);
+Shaded shade_pick(uint li_7, vec3 x_11, vec3 n_9, vec3 r_10, vec4 rl_6, Material m_3, float w_9, float u1_5, float u2_5, float eps_3) {
+    Shaded _e11 = shade_pick_traced(li_7, x_11, n_9, r_10, rl_6, m_3, w_9, u1_5, u2_5, eps_3, true);
     return _e11;
 }
 
@@ -1269,8 +1274,8 @@ Shaded add(Shaded a_8, Shaded b_8) {
     return Shaded((a_8.e + b_8.e), (a_8.diffuse + b_8.diffuse), (a_8.specular + b_8.specular));
 }
 
-Shaded scaled(Shaded s_8, vec3 w_9) {
-    return Shaded((s_8.e * w_9), (s_8.diffuse * w_9), (s_8.specular * w_9));
+Shaded scaled(Shaded s_8, vec3 w_10) {
+    return Shaded((s_8.e * w_10), (s_8.diffuse * w_10), (s_8.specular * w_10));
 }
 
 uint[8] first_holders(uvec2 keys_1[8], bool held_1[8]) {

@@ -257,10 +257,10 @@ float connection_cosine(vec3 x_2, vec3 y, vec3 n_1, vec3 ng, float r2_1) {
     if (_e16) {
         return 0.0;
     }
-    vec3 w_6 = (v_3 / vec3(sqrt(d2_7)));
-    float cos_x_1 = -(dot(n_1, w_6));
+    vec3 w_7 = (v_3 / vec3(sqrt(d2_7)));
+    float cos_x_1 = -(dot(n_1, w_7));
     if (!((cos_x_1 <= 0.0))) {
-        local_5 = (dot(ng, w_6) >= 0.0);
+        local_5 = (dot(ng, w_7) >= 0.0);
     } else {
         local_5 = true;
     }
@@ -289,13 +289,18 @@ float bsh_range_bound(BshNode node_1) {
     return _e8;
 }
 
+float bsh_reach_bound(BshNode node_2, float w_1) {
+    float _e5 = bsh_range_bound(node_2);
+    return (node_2.extent + ((w_1 * 1.001) * _e5));
+}
+
 float weighted_threshold(float w_sum, float u_2) {
     return (w_sum / (1.0 - u_2));
 }
 
-float weighted_pick_weight(float w_sum_1, float w_1, uint k_2) {
+float weighted_pick_weight(float w_sum_1, float w_2, uint k_2) {
     float _e3 = to_f32_(k_2);
-    return (w_sum_1 / (_e3 * w_1));
+    return (w_sum_1 / (_e3 * w_2));
 }
 
 float ggx_d(float cos_h, float sin2_h, float alpha) {
@@ -564,7 +569,7 @@ float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_3, vec3 b_3, vec3 c_1, float t_min
     return -1.0;
 }
 
-vec3 light_intensity(GpuLight l, vec3 w_2) {
+vec3 light_intensity(GpuLight l, vec3 w_3) {
     switch(l.kind) {
         case 0u: {
             return l.intensity;
@@ -583,7 +588,7 @@ GeoHit trace(vec3 o_2, vec3 d_4, float t_min_1, float t_max_2, bool any_hit) {
     GeoHit hit = GeoHit(0.0, 0u);
     uint stack[64] = uint[64](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
     uint sp = 0u;
-    uint node_2 = 0u;
+    uint node_3 = 0u;
     uint i = 0u;
     hit.t = t_max_2;
     hit.tri = NO_LIGHT;
@@ -593,7 +598,7 @@ GeoHit trace(vec3 o_2, vec3 d_4, float t_min_1, float t_max_2, bool any_hit) {
     }
     vec3 _e14 = ray_inverse3_(d_4);
     while(true) {
-        uint _e21 = node_2;
+        uint _e21 = node_3;
         GpuGeoNode n_11 = _group_1_binding_6_cs[_e21];
         float _e27 = hit.t;
         float _e28 = ray_aabb(o_2, _e14, n_11.bmin, n_11.bmax, _e27);
@@ -636,7 +641,7 @@ GeoHit trace(vec3 o_2, vec3 d_4, float t_min_1, float t_max_2, bool any_hit) {
                     uint _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_2 = n_11.first;
+                node_3 = n_11.first;
                 continue;
             }
         }
@@ -648,7 +653,7 @@ GeoHit trace(vec3 o_2, vec3 d_4, float t_min_1, float t_max_2, bool any_hit) {
         sp = (_e75 - 1u);
         uint _e78 = sp;
         uint _e80 = stack[_e78];
-        node_2 = _e80;
+        node_3 = _e80;
     }
     GeoHit _e81 = hit;
     return _e81;
@@ -688,15 +693,15 @@ float bsh_inner_scale(float a_5, vec3 v_1, float d2_6, vec3 r_5, vec4 rl_2) {
     return _e8;
 }
 
-bool bsh_reaches(BshNode node_3, vec3 x_5, vec3 r_6, vec4 rl_3) {
+bool bsh_reaches(BshNode node_4, vec3 x_5, vec3 r_6, vec4 rl_3) {
     bool local_12 = false;
     bool local_13 = false;
-    bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_5);
+    bool _e6 = sphere_contains_point(node_4.center, node_4.radius, x_5);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
-        bool _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001)), x_5);
+        bool _e20 = sphere_contains_point(node_4.center, (node_4.radius * (rl_3.w * 1.0001)), x_5);
         local_12 = !(_e20);
     } else {
         local_12 = true;
@@ -705,29 +710,29 @@ bool bsh_reaches(BshNode node_3, vec3 x_5, vec3 r_6, vec4 rl_3) {
     if (_e23) {
         return false;
     }
-    float _e25 = bsh_range_bound(node_3);
-    vec3 v_9 = (x_5 - node_3.center);
+    vec3 v_9 = (x_5 - node_4.center);
     float d2_9 = dot(v_9, v_9);
-    float reach_max = (node_3.extent + ((rl_3.w * 1.001) * _e25));
-    if ((d2_9 > (reach_max * reach_max))) {
+    float _e29 = bsh_reach_bound(node_4, rl_3.w);
+    if ((d2_9 > (_e29 * _e29))) {
         return false;
     }
-    if ((node_3.child == BSH_NONE)) {
-        float _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_5, r_6);
-        float _e46 = bsh_scaled_radius(node_3, sqrt(_e43));
-        bool _e47 = sphere_contains_point(node_3.center, _e46, x_5);
-        return _e47;
+    if ((node_4.child == BSH_NONE)) {
+        float _e38 = range_scale_toward(rl_3, node_4.center, node_4.extent, x_5, r_6);
+        float _e41 = bsh_scaled_radius(node_4, sqrt(_e38));
+        bool _e42 = sphere_contains_point(node_4.center, _e41, x_5);
+        return _e42;
     }
-    float _e50 = bsh_inner_scale(node_3.extent, -(v_9), d2_9, r_6, rl_3);
-    float s_c = (_e50 * 1.001);
-    float reach = (node_3.extent + (sqrt(s_c) * _e25));
-    if ((d2_9 <= ((node_3.radius * node_3.radius) * s_c))) {
+    float _e45 = bsh_inner_scale(node_4.extent, -(v_9), d2_9, r_6, rl_3);
+    float s_c = (_e45 * 1.001);
+    float _e50 = bsh_range_bound(node_4);
+    float reach = (node_4.extent + (sqrt(s_c) * _e50));
+    if ((d2_9 <= ((node_4.radius * node_4.radius) * s_c))) {
         local_13 = (d2_9 <= (reach * reach));
     } else {
         local_13 = false;
     }
-    bool _e67 = local_13;
-    return _e67;
+    bool _e63 = local_13;
+    return _e63;
 }
 
 uint bsh_next_leaf_lobe(uint nodes_3, uint start, vec3 x_6, vec3 r_7, vec4 rl_4) {
@@ -842,14 +847,14 @@ WeightedPicks weighted_picks(uint h_2) {
     return _e7;
 }
 
-void weighted_offer(inout WeightedPicks picks_2, uint li_3, float w_3) {
+void weighted_offer(inout WeightedPicks picks_2, uint li_3, float w_4) {
     uint h_3 = 0u;
     uint s_2 = 0u;
     uint _e4 = picks_2.n;
     picks_2.n = (_e4 + 1u);
-    if ((w_3 > 0.0)) {
+    if ((w_4 > 0.0)) {
         float _e10 = picks_2.w_sum;
-        picks_2.w_sum = (_e10 + w_3);
+        picks_2.w_sum = (_e10 + w_4);
         uint _e13 = picks_2.h;
         h_3 = _e13;
         bool loop_init_1 = true;
@@ -872,7 +877,7 @@ void weighted_offer(inout WeightedPicks picks_2, uint li_3, float w_3) {
                     uint _e28 = s_2;
                     picks_2.light[_e28] = li_3;
                     uint _e31 = s_2;
-                    picks_2.w[_e31] = w_3;
+                    picks_2.w[_e31] = w_4;
                     uint _e34 = s_2;
                     float _e37 = picks_2.w_sum;
                     float _e38 = next_threshold(_e37, h_3);
@@ -902,14 +907,14 @@ Shaded shade_connection(Connection c_3, vec3 x_11, vec3 n_8, Material m_1) {
     return _e13;
 }
 
-Shaded shade_pick_traced(uint li_4, vec3 x_12, vec3 n_9, vec3 r_10, vec4 rl_7, Material m_2, float w_4, float u1_3, float u2_3, float eps_2, bool trace_3) {
-    Connection _e12 = connect_traced(li_4, x_12, n_9, n_9, 1.0, w_4, u1_3, u2_3, eps_2, trace_3);
+Shaded shade_pick_traced(uint li_4, vec3 x_12, vec3 n_9, vec3 r_10, vec4 rl_7, Material m_2, float w_5, float u1_3, float u2_3, float eps_2, bool trace_3) {
+    Connection _e12 = connect_traced(li_4, x_12, n_9, n_9, 1.0, w_5, u1_3, u2_3, eps_2, trace_3);
     Shaded _e13 = shade_connection(_e12, x_12, n_9, m_2);
     return _e13;
 }
 
-Shaded shade_pick(uint li_5, vec3 x_13, vec3 n_10, vec3 r_11, vec4 rl_8, Material m_3, float w_5, float u1_4, float u2_4, float eps_3) {
-    Shaded _e11 = shade_pick_traced(li_5, x_13, n_10, r_11, rl_8, m_3, w_5, u1_4, u2_4, eps_3, true);
+Shaded shade_pick(uint li_5, vec3 x_13, vec3 n_10, vec3 r_11, vec4 rl_8, Material m_3, float w_6, float u1_4, float u2_4, float eps_3) {
+    Shaded _e11 = shade_pick_traced(li_5, x_13, n_10, r_11, rl_8, m_3, w_6, u1_4, u2_4, eps_3, true);
     return _e11;
 }
 

@@ -273,10 +273,10 @@ float connection_cosine(vec3 x_3, vec3 y, vec3 n, vec3 ng, float r2_1) {
     if (_e16) {
         return 0.0;
     }
-    vec3 w_7 = (v_9 / vec3(sqrt(d2_9)));
-    float cos_x_1 = -(dot(n, w_7));
+    vec3 w_8 = (v_9 / vec3(sqrt(d2_9)));
+    float cos_x_1 = -(dot(n, w_8));
     if (!((cos_x_1 <= 0.0))) {
-        local_1 = (dot(ng, w_7) >= 0.0);
+        local_1 = (dot(ng, w_8) >= 0.0);
     } else {
         local_1 = true;
     }
@@ -523,6 +523,11 @@ float bsh_range_bound(BshNode node_1) {
     return _e8;
 }
 
+float bsh_reach_bound(BshNode node_2, float w_4) {
+    float _e5 = bsh_range_bound(node_2);
+    return (node_2.extent + ((w_4 * 1.001) * _e5));
+}
+
 uint mul_hi_u32_(uint a_4, uint b_3) {
     uint a_lo = (a_4 & 65535u);
     uint a_hi = (a_4 >> 16u);
@@ -632,10 +637,10 @@ vec3 onb_bitangent(vec3 n_9) {
     return vec3(((n_9.x * n_9.y) * a_13), (s_5 + ((n_9.y * n_9.y) * a_13)), -(n_9.y));
 }
 
-vec3 onb_to_local(vec3 n_10, vec3 w_4) {
+vec3 onb_to_local(vec3 n_10, vec3 w_5) {
     vec3 _e2 = onb_tangent(n_10);
     vec3 _e4 = onb_bitangent(n_10);
-    return vec3(dot(w_4, _e2), dot(w_4, _e4), dot(w_4, n_10));
+    return vec3(dot(w_5, _e2), dot(w_5, _e4), dot(w_5, n_10));
 }
 
 float ggx_d(float cos_h, float sin2_h, float alpha) {
@@ -1000,26 +1005,26 @@ float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_7, vec3 b_5, vec3 c_6, float t_min
     return -1.0;
 }
 
-vec3 light_intensity(GpuLight l_4, vec3 w_5) {
+vec3 light_intensity(GpuLight l_4, vec3 w_6) {
     switch(l_4.kind) {
         case 0u: {
             return l_4.intensity;
         }
         case 1u: {
-            float _e11 = spot_falloff(dot(l_4.p1_, w_5), l_4.a, l_4.b, l_4.p2_.x);
+            float _e11 = spot_falloff(dot(l_4.p1_, w_6), l_4.a, l_4.b, l_4.p2_.x);
             return (l_4.intensity * _e11);
         }
         case 2u: {
-            float _e18 = ies_light_candela(0u, l_4.ies_base, l_4.p1_, l_4.p2_, w_5);
+            float _e18 = ies_light_candela(0u, l_4.ies_base, l_4.p1_, l_4.p2_, w_6);
             return (l_4.intensity * _e18);
         }
         case 3u: {
             vec3 _e24 = triangle_normal(l_4.p0_, l_4.p1_, l_4.p2_);
-            float _e26 = triangle_lobe(_e24, l_4.a, w_5);
+            float _e26 = triangle_lobe(_e24, l_4.a, w_6);
             return (l_4.intensity * _e26);
         }
         case 4u: {
-            float _e30 = vpl_lobe(l_4.p1_, w_5);
+            float _e30 = vpl_lobe(l_4.p1_, w_6);
             return (l_4.intensity * _e30);
         }
         default: {
@@ -1055,7 +1060,7 @@ GeoHit trace(vec3 o_2, vec3 d_4, float t_min_1, float t_max_2, bool any_hit) {
     GeoHit hit = GeoHit(0.0, 0u);
     uint stack[64] = uint[64](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
     uint sp = 0u;
-    uint node_2 = 0u;
+    uint node_3 = 0u;
     uint i_1 = 0u;
     hit.t = t_max_2;
     hit.tri = NO_LIGHT;
@@ -1065,7 +1070,7 @@ GeoHit trace(vec3 o_2, vec3 d_4, float t_min_1, float t_max_2, bool any_hit) {
     }
     vec3 _e14 = ray_inverse3_(d_4);
     while(true) {
-        uint _e21 = node_2;
+        uint _e21 = node_3;
         GpuGeoNode n_22 = _group_0_binding_6_cs[_e21];
         float _e27 = hit.t;
         float _e28 = ray_aabb(o_2, _e14, n_22.bmin, n_22.bmax, _e27);
@@ -1108,7 +1113,7 @@ GeoHit trace(vec3 o_2, vec3 d_4, float t_min_1, float t_max_2, bool any_hit) {
                     uint _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_2 = n_22.first;
+                node_3 = n_22.first;
                 continue;
             }
         }
@@ -1120,7 +1125,7 @@ GeoHit trace(vec3 o_2, vec3 d_4, float t_min_1, float t_max_2, bool any_hit) {
         sp = (_e75 - 1u);
         uint _e78 = sp;
         uint _e80 = stack[_e78];
-        node_2 = _e80;
+        node_3 = _e80;
     }
     GeoHit _e81 = hit;
     return _e81;
@@ -1160,15 +1165,15 @@ float bsh_inner_scale(float a_9, vec3 v_7, float d2_8, vec3 r_2, vec4 rl_2) {
     return _e8;
 }
 
-bool bsh_reaches(BshNode node_3, vec3 x_9, vec3 r_3, vec4 rl_3) {
+bool bsh_reaches(BshNode node_4, vec3 x_9, vec3 r_3, vec4 rl_3) {
     bool local_20 = false;
     bool local_21 = false;
-    bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_9);
+    bool _e6 = sphere_contains_point(node_4.center, node_4.radius, x_9);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
-        bool _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001)), x_9);
+        bool _e20 = sphere_contains_point(node_4.center, (node_4.radius * (rl_3.w * 1.0001)), x_9);
         local_20 = !(_e20);
     } else {
         local_20 = true;
@@ -1177,29 +1182,29 @@ bool bsh_reaches(BshNode node_3, vec3 x_9, vec3 r_3, vec4 rl_3) {
     if (_e23) {
         return false;
     }
-    float _e25 = bsh_range_bound(node_3);
-    vec3 v_12 = (x_9 - node_3.center);
+    vec3 v_12 = (x_9 - node_4.center);
     float d2_10 = dot(v_12, v_12);
-    float reach_max = (node_3.extent + ((rl_3.w * 1.001) * _e25));
-    if ((d2_10 > (reach_max * reach_max))) {
+    float _e29 = bsh_reach_bound(node_4, rl_3.w);
+    if ((d2_10 > (_e29 * _e29))) {
         return false;
     }
-    if ((node_3.child == BSH_NONE)) {
-        float _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_9, r_3);
-        float _e46 = bsh_scaled_radius(node_3, sqrt(_e43));
-        bool _e47 = sphere_contains_point(node_3.center, _e46, x_9);
-        return _e47;
+    if ((node_4.child == BSH_NONE)) {
+        float _e38 = range_scale_toward(rl_3, node_4.center, node_4.extent, x_9, r_3);
+        float _e41 = bsh_scaled_radius(node_4, sqrt(_e38));
+        bool _e42 = sphere_contains_point(node_4.center, _e41, x_9);
+        return _e42;
     }
-    float _e50 = bsh_inner_scale(node_3.extent, -(v_12), d2_10, r_3, rl_3);
-    float s_c = (_e50 * 1.001);
-    float reach = (node_3.extent + (sqrt(s_c) * _e25));
-    if ((d2_10 <= ((node_3.radius * node_3.radius) * s_c))) {
+    float _e45 = bsh_inner_scale(node_4.extent, -(v_12), d2_10, r_3, rl_3);
+    float s_c = (_e45 * 1.001);
+    float _e50 = bsh_range_bound(node_4);
+    float reach = (node_4.extent + (sqrt(s_c) * _e50));
+    if ((d2_10 <= ((node_4.radius * node_4.radius) * s_c))) {
         local_21 = (d2_10 <= (reach * reach));
     } else {
         local_21 = false;
     }
-    bool _e67 = local_21;
-    return _e67;
+    bool _e63 = local_21;
+    return _e63;
 }
 
 uint bsh_next_leaf_lobe(uint nodes_3, uint start_1, vec3 x_10, vec3 r_4, vec4 rl_4) {
@@ -1381,11 +1386,11 @@ float light_pdf(uint li_5, vec3 x_18, vec3 n_19, vec3 r_9, vec4 lobe_6, vec4 rl_
     return _e10;
 }
 
-vec3 shade_pick(uint li_6, vec3 x_19, vec3 n_20, vec3 ng_4, GpuMaterial m, vec3 wo_1, vec3 r_10, vec4 lobe_7, vec4 rl_10, float w_6, uint nee_2, float u1_5, float u2_5) {
+vec3 shade_pick(uint li_6, vec3 x_19, vec3 n_20, vec3 ng_4, GpuMaterial m, vec3 wo_1, vec3 r_10, vec4 lobe_7, vec4 rl_10, float w_7, uint nee_2, float u1_5, float u2_5) {
     float mis = 1.0;
     float _e13 = light_range_scale(li_6, x_19, r_10, rl_10);
     float _e16 = _group_0_binding_0_cs.eps;
-    Connection _e17 = connect(li_6, x_19, n_20, ng_4, _e13, w_6, u1_5, u2_5, _e16);
+    Connection _e17 = connect(li_6, x_19, n_20, ng_4, _e13, w_7, u1_5, u2_5, _e16);
     if ((_e17.cos_x <= 0.0)) {
         return vec3(0.0);
     }

@@ -271,6 +271,11 @@ float bsh_range_bound(BshNode node_1) {
     return _e8;
 }
 
+float bsh_reach_bound(BshNode node_2, float w_1) {
+    float _e5 = bsh_range_bound(node_2);
+    return (node_2.extent + ((w_1 * 1.001) * _e5));
+}
+
 float reservoir_weight(uint n, uint k) {
     float _e2 = to_f32_(n);
     float _e3 = to_f32_(k);
@@ -349,10 +354,10 @@ vec3 onb_to_world(vec3 n_3, vec3 d) {
     return (((_e2 * d.x) + (_e5 * d.y)) + (n_3 * d.z));
 }
 
-vec3 onb_to_local(vec3 n_4, vec3 w_1) {
+vec3 onb_to_local(vec3 n_4, vec3 w_2) {
     vec3 _e2 = onb_tangent(n_4);
     vec3 _e4 = onb_bitangent(n_4);
-    return vec3(dot(w_1, _e2), dot(w_1, _e4), dot(w_1, n_4));
+    return vec3(dot(w_2, _e2), dot(w_2, _e4), dot(w_2, n_4));
 }
 
 vec3 cosine_direction(vec3 n_5, float u1_, float u2_) {
@@ -719,9 +724,9 @@ vec3 barycentric(vec3 p_2, vec3 a_4, vec3 b_3, vec3 c_3) {
     return vec3(((1.0 - w1_) - w2_), w1_, w2_);
 }
 
-vec3 shading_normal(vec3 n0_, vec3 n1_, vec3 n2_, vec3 w_2, vec3 facing) {
+vec3 shading_normal(vec3 n0_, vec3 n1_, vec3 n2_, vec3 w_3, vec3 facing) {
     bool local_17 = false;
-    vec3 s_4 = (((n0_ * w_2.x) + (n1_ * w_2.y)) + (n2_ * w_2.z));
+    vec3 s_4 = (((n0_ * w_3.x) + (n1_ * w_3.y)) + (n2_ * w_3.z));
     float l2_1 = dot(s_4, s_4);
     if (!(!((l2_1 > 1e-12)))) {
         local_17 = !((l2_1 < 3e38));
@@ -783,8 +788,8 @@ float ray_triangle(vec3 o_1, vec3 d_4, vec3 a_5, vec3 b_4, vec3 c_4, float t_min
     return -1.0;
 }
 
-vec3 camera_dir(vec3 forward, vec3 right, vec3 up, float px, float py, float w_3, float h_1) {
-    float sx = (((2.0 * px) / w_3) - 1.0);
+vec3 camera_dir(vec3 forward, vec3 right, vec3 up, float px, float py, float w_4, float h_1) {
+    float sx = (((2.0 * px) / w_4) - 1.0);
     float sy = (1.0 - ((2.0 * py) / h_1));
     return normalize(((forward + (right * sx)) + (up * sy)));
 }
@@ -836,7 +841,7 @@ GeoHit trace(vec3 o_2, vec3 d_5, float t_min_1, float t_max_2, bool any_hit) {
     GeoHit hit = GeoHit(0.0, 0u);
     uint stack[64] = uint[64](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
     uint sp = 0u;
-    uint node_2 = 0u;
+    uint node_3 = 0u;
     uint i = 0u;
     hit.t = t_max_2;
     hit.tri = NO_LIGHT;
@@ -846,7 +851,7 @@ GeoHit trace(vec3 o_2, vec3 d_5, float t_min_1, float t_max_2, bool any_hit) {
     }
     vec3 _e14 = ray_inverse3_(d_5);
     while(true) {
-        uint _e21 = node_2;
+        uint _e21 = node_3;
         GpuGeoNode n_17 = _group_0_binding_5_cs[_e21];
         float _e27 = hit.t;
         float _e28 = ray_aabb(o_2, _e14, n_17.bmin, n_17.bmax, _e27);
@@ -889,7 +894,7 @@ GeoHit trace(vec3 o_2, vec3 d_5, float t_min_1, float t_max_2, bool any_hit) {
                     uint _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_2 = n_17.first;
+                node_3 = n_17.first;
                 continue;
             }
         }
@@ -901,7 +906,7 @@ GeoHit trace(vec3 o_2, vec3 d_5, float t_min_1, float t_max_2, bool any_hit) {
         sp = (_e75 - 1u);
         uint _e78 = sp;
         uint _e80 = stack[_e78];
-        node_2 = _e80;
+        node_3 = _e80;
     }
     GeoHit _e81 = hit;
     return _e81;
@@ -953,15 +958,15 @@ float bsh_inner_scale(float a_6, vec3 v_9, float d2_4, vec3 r_6, vec4 rl_6) {
     return _e8;
 }
 
-bool bsh_reaches(BshNode node_3, vec3 x_7, vec3 r_7, vec4 rl_7) {
+bool bsh_reaches(BshNode node_4, vec3 x_7, vec3 r_7, vec4 rl_7) {
     bool local_22 = false;
     bool local_23 = false;
-    bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_7);
+    bool _e6 = sphere_contains_point(node_4.center, node_4.radius, x_7);
     if (_e6) {
         return true;
     }
     if (!((rl_7.w <= 1.0))) {
-        bool _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_7.w * 1.0001)), x_7);
+        bool _e20 = sphere_contains_point(node_4.center, (node_4.radius * (rl_7.w * 1.0001)), x_7);
         local_22 = !(_e20);
     } else {
         local_22 = true;
@@ -970,29 +975,29 @@ bool bsh_reaches(BshNode node_3, vec3 x_7, vec3 r_7, vec4 rl_7) {
     if (_e23) {
         return false;
     }
-    float _e25 = bsh_range_bound(node_3);
-    vec3 v_14 = (x_7 - node_3.center);
+    vec3 v_14 = (x_7 - node_4.center);
     float d2_6 = dot(v_14, v_14);
-    float reach_max = (node_3.extent + ((rl_7.w * 1.001) * _e25));
-    if ((d2_6 > (reach_max * reach_max))) {
+    float _e29 = bsh_reach_bound(node_4, rl_7.w);
+    if ((d2_6 > (_e29 * _e29))) {
         return false;
     }
-    if ((node_3.child == BSH_NONE)) {
-        float _e43 = range_scale_toward(rl_7, node_3.center, node_3.extent, x_7, r_7);
-        float _e46 = bsh_scaled_radius(node_3, sqrt(_e43));
-        bool _e47 = sphere_contains_point(node_3.center, _e46, x_7);
-        return _e47;
+    if ((node_4.child == BSH_NONE)) {
+        float _e38 = range_scale_toward(rl_7, node_4.center, node_4.extent, x_7, r_7);
+        float _e41 = bsh_scaled_radius(node_4, sqrt(_e38));
+        bool _e42 = sphere_contains_point(node_4.center, _e41, x_7);
+        return _e42;
     }
-    float _e50 = bsh_inner_scale(node_3.extent, -(v_14), d2_6, r_7, rl_7);
-    float s_c = (_e50 * 1.001);
-    float reach = (node_3.extent + (sqrt(s_c) * _e25));
-    if ((d2_6 <= ((node_3.radius * node_3.radius) * s_c))) {
+    float _e45 = bsh_inner_scale(node_4.extent, -(v_14), d2_6, r_7, rl_7);
+    float s_c = (_e45 * 1.001);
+    float _e50 = bsh_range_bound(node_4);
+    float reach = (node_4.extent + (sqrt(s_c) * _e50));
+    if ((d2_6 <= ((node_4.radius * node_4.radius) * s_c))) {
         local_23 = (d2_6 <= (reach * reach));
     } else {
         local_23 = false;
     }
-    bool _e67 = local_23;
-    return _e67;
+    bool _e63 = local_23;
+    return _e63;
 }
 
 BshNode bsh_range_leaf(uint nodes_1, uint i_2) {

@@ -206,10 +206,10 @@ float connection_cosine(float3 x_2, float3 y, float3 n, float3 ng, float r2_1)
     if (_e16) {
         return 0.0;
     }
-    float3 w_3 = (v_3 / (sqrt(d2_6)).xxx);
-    float cos_x_1 = -(dot(n, w_3));
+    float3 w_4 = (v_3 / (sqrt(d2_6)).xxx);
+    float cos_x_1 = -(dot(n, w_4));
     if (!((cos_x_1 <= 0.0))) {
-        local_1 = (dot(ng, w_3) >= 0.0);
+        local_1 = (dot(ng, w_4) >= 0.0);
     } else {
         local_1 = true;
     }
@@ -251,6 +251,12 @@ float bsh_range_bound(BshNode node_1)
     }
     const float _e8 = f32_from_bits(node_1.light);
     return _e8;
+}
+
+float bsh_reach_bound(BshNode node_2, float w_2)
+{
+    const float _e5 = bsh_range_bound(node_2);
+    return (node_2.extent + ((w_2 * 1.001) * _e5));
 }
 
 uint mul_hi_u32_(uint a_3, uint b_3)
@@ -369,7 +375,7 @@ float3 triangle_normal(float3 a_5, float3 b_4, float3 c_2)
     return (n_9 / (sqrt(l2_)).xxx);
 }
 
-float3 light_intensity(GpuLight l, float3 w_2)
+float3 light_intensity(GpuLight l, float3 w_3)
 {
     switch(l.kind) {
         case 0u: {
@@ -377,7 +383,7 @@ float3 light_intensity(GpuLight l, float3 w_2)
         }
         case 3u: {
             const float3 _e8 = triangle_normal(l.p0_, l.p1_, l.p2_);
-            const float _e10 = triangle_lobe(_e8, l.a, w_2);
+            const float _e10 = triangle_lobe(_e8, l.a, w_3);
             return (l.intensity * _e10);
         }
         default: {
@@ -446,17 +452,17 @@ float bsh_inner_scale(float a_7, float3 v_1, float d2_5, float3 r_2, float4 rl_2
     return _e8;
 }
 
-bool bsh_reaches(BshNode node_2, float3 x_3, float3 r_3, float4 rl_3)
+bool bsh_reaches(BshNode node_3, float3 x_3, float3 r_3, float4 rl_3)
 {
     bool local_5 = (bool)0;
     bool local_6 = (bool)0;
 
-    const bool _e6 = sphere_contains_point(node_2.center_, node_2.radius, x_3);
+    const bool _e6 = sphere_contains_point(node_3.center_, node_3.radius, x_3);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
-        const bool _e20 = sphere_contains_point(node_2.center_, (node_2.radius * (rl_3.w * 1.0001)), x_3);
+        const bool _e20 = sphere_contains_point(node_3.center_, (node_3.radius * (rl_3.w * 1.0001)), x_3);
         local_5 = !(_e20);
     } else {
         local_5 = true;
@@ -465,29 +471,29 @@ bool bsh_reaches(BshNode node_2, float3 x_3, float3 r_3, float4 rl_3)
     if (_e23) {
         return false;
     }
-    const float _e25 = bsh_range_bound(node_2);
-    float3 v_5 = (x_3 - node_2.center_);
+    float3 v_5 = (x_3 - node_3.center_);
     float d2_7 = dot(v_5, v_5);
-    float reach_max = (node_2.extent + ((rl_3.w * 1.001) * _e25));
-    if ((d2_7 > (reach_max * reach_max))) {
+    const float _e29 = bsh_reach_bound(node_3, rl_3.w);
+    if ((d2_7 > (_e29 * _e29))) {
         return false;
     }
-    if ((node_2.child == BSH_NONE)) {
-        const float _e43 = range_scale_toward(rl_3, node_2.center_, node_2.extent, x_3, r_3);
-        const float _e46 = bsh_scaled_radius(node_2, sqrt(_e43));
-        const bool _e47 = sphere_contains_point(node_2.center_, _e46, x_3);
-        return _e47;
+    if ((node_3.child == BSH_NONE)) {
+        const float _e38 = range_scale_toward(rl_3, node_3.center_, node_3.extent, x_3, r_3);
+        const float _e41 = bsh_scaled_radius(node_3, sqrt(_e38));
+        const bool _e42 = sphere_contains_point(node_3.center_, _e41, x_3);
+        return _e42;
     }
-    const float _e50 = bsh_inner_scale(node_2.extent, -(v_5), d2_7, r_3, rl_3);
-    float s_c = (_e50 * 1.001);
-    float reach = (node_2.extent + (sqrt(s_c) * _e25));
-    if ((d2_7 <= ((node_2.radius * node_2.radius) * s_c))) {
+    const float _e45 = bsh_inner_scale(node_3.extent, -(v_5), d2_7, r_3, rl_3);
+    float s_c = (_e45 * 1.001);
+    const float _e50 = bsh_range_bound(node_3);
+    float reach = (node_3.extent + (sqrt(s_c) * _e50));
+    if ((d2_7 <= ((node_3.radius * node_3.radius) * s_c))) {
         local_6 = (d2_7 <= (reach * reach));
     } else {
         local_6 = false;
     }
-    bool _e67 = local_6;
-    return _e67;
+    bool _e63 = local_6;
+    return _e63;
 }
 
 uint bsh_next_leaf_lobe(uint nodes_3, uint start, float3 x_4, float3 r_4, float4 rl_4)

@@ -289,10 +289,10 @@ float connection_cosine(float3 x_3, float3 y, float3 n_1, float3 ng, float r2_1)
     if (_e16) {
         return 0.0;
     }
-    float3 w_9 = (v_4 / (sqrt(d2_6)).xxx);
-    float cos_x_1 = -(dot(n_1, w_9));
+    float3 w_10 = (v_4 / (sqrt(d2_6)).xxx);
+    float cos_x_1 = -(dot(n_1, w_10));
     if (!((cos_x_1 <= 0.0))) {
-        local_6 = (dot(ng, w_9) >= 0.0);
+        local_6 = (dot(ng, w_10) >= 0.0);
     } else {
         local_6 = true;
     }
@@ -547,6 +547,12 @@ float bsh_range_bound(BshNode node_1)
     return _e8;
 }
 
+float bsh_reach_bound(BshNode node_2, float w_3)
+{
+    const float _e5 = bsh_range_bound(node_2);
+    return (node_2.extent + ((w_3 * 1.001) * _e5));
+}
+
 uint mul_hi_u32_(uint a_4, uint b_3)
 {
     uint a_lo = (a_4 & 65535u);
@@ -700,23 +706,23 @@ float3 triangle_normal(float3 a_6, float3 b_4, float3 c_5)
     return (n_13 / (sqrt(l2_)).xxx);
 }
 
-float3 light_intensity(GpuLight l, float3 w_3)
+float3 light_intensity(GpuLight l, float3 w_4)
 {
     switch(l.kind) {
         case 0u: {
             return l.intensity;
         }
         case 1u: {
-            const float _e11 = spot_falloff(dot(l.p1_, w_3), l.a, l.b, l.p2_.x);
+            const float _e11 = spot_falloff(dot(l.p1_, w_4), l.a, l.b, l.p2_.x);
             return (l.intensity * _e11);
         }
         case 2u: {
-            const float _e18 = ies_light_candela(0u, l.ies_base, l.p1_, l.p2_, w_3);
+            const float _e18 = ies_light_candela(0u, l.ies_base, l.p1_, l.p2_, w_4);
             return (l.intensity * _e18);
         }
         case 3u: {
             const float3 _e24 = triangle_normal(l.p0_, l.p1_, l.p2_);
-            const float _e26 = triangle_lobe(_e24, l.a, w_3);
+            const float _e26 = triangle_lobe(_e24, l.a, w_4);
             return (l.intensity * _e26);
         }
         default: {
@@ -785,17 +791,17 @@ float bsh_inner_scale(float a_8, float3 v_1, float d2_5, float3 r_4, float4 rl_2
     return _e8;
 }
 
-bool bsh_reaches(BshNode node_2, float3 x_8, float3 r_5, float4 rl_3)
+bool bsh_reaches(BshNode node_3, float3 x_8, float3 r_5, float4 rl_3)
 {
     bool local_11 = (bool)0;
     bool local_12 = (bool)0;
 
-    const bool _e6 = sphere_contains_point(node_2.center_, node_2.radius, x_8);
+    const bool _e6 = sphere_contains_point(node_3.center_, node_3.radius, x_8);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
-        const bool _e20 = sphere_contains_point(node_2.center_, (node_2.radius * (rl_3.w * 1.0001)), x_8);
+        const bool _e20 = sphere_contains_point(node_3.center_, (node_3.radius * (rl_3.w * 1.0001)), x_8);
         local_11 = !(_e20);
     } else {
         local_11 = true;
@@ -804,34 +810,34 @@ bool bsh_reaches(BshNode node_2, float3 x_8, float3 r_5, float4 rl_3)
     if (_e23) {
         return false;
     }
-    const float _e25 = bsh_range_bound(node_2);
-    float3 v_6 = (x_8 - node_2.center_);
+    float3 v_6 = (x_8 - node_3.center_);
     float d2_7 = dot(v_6, v_6);
-    float reach_max = (node_2.extent + ((rl_3.w * 1.001) * _e25));
-    if ((d2_7 > (reach_max * reach_max))) {
+    const float _e29 = bsh_reach_bound(node_3, rl_3.w);
+    if ((d2_7 > (_e29 * _e29))) {
         return false;
     }
-    if ((node_2.child == BSH_NONE)) {
-        const float _e43 = range_scale_toward(rl_3, node_2.center_, node_2.extent, x_8, r_5);
-        const float _e46 = bsh_scaled_radius(node_2, sqrt(_e43));
-        const bool _e47 = sphere_contains_point(node_2.center_, _e46, x_8);
-        return _e47;
+    if ((node_3.child == BSH_NONE)) {
+        const float _e38 = range_scale_toward(rl_3, node_3.center_, node_3.extent, x_8, r_5);
+        const float _e41 = bsh_scaled_radius(node_3, sqrt(_e38));
+        const bool _e42 = sphere_contains_point(node_3.center_, _e41, x_8);
+        return _e42;
     }
-    const float _e50 = bsh_inner_scale(node_2.extent, -(v_6), d2_7, r_5, rl_3);
-    float s_c = (_e50 * 1.001);
-    float reach = (node_2.extent + (sqrt(s_c) * _e25));
-    if ((d2_7 <= ((node_2.radius * node_2.radius) * s_c))) {
+    const float _e45 = bsh_inner_scale(node_3.extent, -(v_6), d2_7, r_5, rl_3);
+    float s_c = (_e45 * 1.001);
+    const float _e50 = bsh_range_bound(node_3);
+    float reach = (node_3.extent + (sqrt(s_c) * _e50));
+    if ((d2_7 <= ((node_3.radius * node_3.radius) * s_c))) {
         local_12 = (d2_7 <= (reach * reach));
     } else {
         local_12 = false;
     }
-    bool _e67 = local_12;
-    return _e67;
+    bool _e63 = local_12;
+    return _e63;
 }
 
-bool bsh_reaches_box(BshNode node_3, float3 lo_3, float3 hi_3, float w_4)
+bool bsh_reaches_box(BshNode node_4, float3 lo_3, float3 hi_3, float w_5)
 {
-    const bool _e13 = sphere_overlaps_aabb(node_3.center_, (node_3.radius * (max(1.0, (w_4 * 1.0001)) * 1.0001)), lo_3, hi_3);
+    const bool _e13 = sphere_overlaps_aabb(node_4.center_, (node_4.radius * (max(1.0, (w_5 * 1.0001)) * 1.0001)), lo_3, hi_3);
     return _e13;
 }
 
@@ -885,7 +891,7 @@ uint bsh_subtree(uint nodes_3, uint s_1, uint depth)
     return _e44;
 }
 
-uint bsh_next_leaf_box(uint nodes_4, uint start_2, uint end, float3 lo_4, float3 hi_4, float w_5)
+uint bsh_next_leaf_box(uint nodes_4, uint start_2, uint end, float3 lo_4, float3 hi_4, float w_6)
 {
     uint i_3 = (uint)0;
 
@@ -902,7 +908,7 @@ uint bsh_next_leaf_box(uint nodes_4, uint start_2, uint end, float3 lo_4, float3
         {
             uint _e9 = i_3;
             const BshNode _e10 = bsh_node(nodes_4, _e9);
-            const bool _e11 = bsh_reaches_box(_e10, lo_4, hi_4, w_5);
+            const bool _e11 = bsh_reaches_box(_e10, lo_4, hi_4, w_6);
             if (_e11) {
                 if ((_e10.child == BSH_NONE)) {
                     if (((_e10.light & BSH_TAIL) == 0u)) {
@@ -1170,7 +1176,7 @@ TileWalk ConstructTileWalk(float3 arg0, float3 arg1, float arg2, uint arg3) {
     return ret;
 }
 
-TileWalk tile_walk_begin(uint li_3, float3 x_11, float w_6, bool has_1)
+TileWalk tile_walk_begin(uint li_3, float3 x_11, float w_7, bool has_1)
 {
     bool local_19 = (bool)0;
     TileWalk t_3 = (TileWalk)0;
@@ -1179,12 +1185,12 @@ TileWalk tile_walk_begin(uint li_3, float3 x_11, float w_6, bool has_1)
     uint s_5 = 0u;
 
     if (has_1) {
-        local_19 = (w_6 >= 0.0);
+        local_19 = (w_7 >= 0.0);
     } else {
         local_19 = false;
     }
     bool _e12 = local_19;
-    uint _e14; InterlockedMax(tile_scale, (_e12 ? asuint(w_6) : 0u), _e14);
+    uint _e14; InterlockedMax(tile_scale, (_e12 ? asuint(w_7) : 0u), _e14);
     const WorkgroupBox _e15 = workgroup_box(li_3, x_11, has_1);
     GroupMemoryBarrierWithGroupSync();
     uint _e19 = tile_scale;
@@ -1321,17 +1327,17 @@ Shaded shade_connection(Connection c_7, float3 x_12, float3 n_10, Material m_1)
     return shaded;
 }
 
-Shaded shade_pick_traced(uint li_5, float3 x_13, float3 n_11, float3 r_6, float4 rl_4, Material m_2, float w_7, float u1_4, float u2_4, float eps_2, bool trace_2)
+Shaded shade_pick_traced(uint li_5, float3 x_13, float3 n_11, float3 r_6, float4 rl_4, Material m_2, float w_8, float u1_4, float u2_4, float eps_2, bool trace_2)
 {
-    const Connection _e12 = connect_traced(li_5, x_13, n_11, n_11, 1.0, w_7, u1_4, u2_4, eps_2, trace_2);
+    const Connection _e12 = connect_traced(li_5, x_13, n_11, n_11, 1.0, w_8, u1_4, u2_4, eps_2, trace_2);
     const Shaded _e13 = shade_connection(_e12, x_13, n_11, m_2);
     const Shaded shaded_1 = _e13;
     return shaded_1;
 }
 
-Shaded shade_pick(uint li_6, float3 x_14, float3 n_12, float3 r_7, float4 rl_5, Material m_3, float w_8, float u1_5, float u2_5, float eps_3)
+Shaded shade_pick(uint li_6, float3 x_14, float3 n_12, float3 r_7, float4 rl_5, Material m_3, float w_9, float u1_5, float u2_5, float eps_3)
 {
-    const Shaded _e11 = shade_pick_traced(li_6, x_14, n_12, r_7, rl_5, m_3, w_8, u1_5, u2_5, eps_3, true);
+    const Shaded _e11 = shade_pick_traced(li_6, x_14, n_12, r_7, rl_5, m_3, w_9, u1_5, u2_5, eps_3, true);
     const Shaded shaded_2 = _e11;
     return shaded_2;
 }

@@ -295,10 +295,10 @@ float connection_cosine(float3 x_2, float3 y, float3 n_1, float3 ng, float r2_1)
     if (_e16) {
         return 0.0;
     }
-    float3 w_9 = (v_4 / (sqrt(d2_6)).xxx);
-    float cos_x_1 = -(dot(n_1, w_9));
+    float3 w_10 = (v_4 / (sqrt(d2_6)).xxx);
+    float cos_x_1 = -(dot(n_1, w_10));
     if (!((cos_x_1 <= 0.0))) {
-        local_8 = (dot(ng, w_9) >= 0.0);
+        local_8 = (dot(ng, w_10) >= 0.0);
     } else {
         local_8 = true;
     }
@@ -336,6 +336,12 @@ float bsh_range_bound(BshNode node_1)
     }
     const float _e8 = f32_from_bits(node_1.light);
     return _e8;
+}
+
+float bsh_reach_bound(BshNode node_2, float w_2)
+{
+    const float _e5 = bsh_range_bound(node_2);
+    return (node_2.extent + ((w_2 * 1.001) * _e5));
 }
 
 float weighted_threshold(float w_sum, float u_2)
@@ -376,19 +382,19 @@ float3 slot_share(uint slot_1, uint k_3)
 {
     if ((k_3 < 3u)) {
         const float _e4 = to_f32_(k_3);
-        float w_10 = (1.0 / _e4);
-        return float3(w_10, w_10, w_10);
+        float w_11 = (1.0 / _e4);
+        return float3(w_11, w_11, w_11);
     }
     uint j_4 = naga_mod(slot_1, 3u);
     const float _e15 = to_f32_(naga_div(((k_3 + 2u) - j_4), 3u));
-    float w_11 = (1.0 / _e15);
+    float w_12 = (1.0 / _e15);
     if ((j_4 == 0u)) {
-        return float3(w_11, 0.0, 0.0);
+        return float3(w_12, 0.0, 0.0);
     }
     if ((j_4 == 1u)) {
-        return float3(0.0, w_11, 0.0);
+        return float3(0.0, w_12, 0.0);
     }
-    return float3(0.0, 0.0, w_11);
+    return float3(0.0, 0.0, w_12);
 }
 
 float smith_root(float cos_, float alpha)
@@ -558,14 +564,14 @@ float ray_triangle(float3 o_1, float3 d_3, float3 a_3, float3 b_2, float3 c_4, f
     return -1.0;
 }
 
-float3 light_intensity(GpuLight l, float3 w_2)
+float3 light_intensity(GpuLight l, float3 w_3)
 {
     switch(l.kind) {
         case 0u: {
             return l.intensity;
         }
         case 1u: {
-            const float _e11 = spot_falloff(dot(l.p1_, w_2), l.a, l.b, l.p2_.x);
+            const float _e11 = spot_falloff(dot(l.p1_, w_3), l.a, l.b, l.p2_.x);
             return (l.intensity * _e11);
         }
         default: {
@@ -611,7 +617,7 @@ GeoHit trace(float3 o_2, float3 d_4, float t_min_1, float t_max_2, bool any_hit)
     GeoHit hit = (GeoHit)0;
     uint stack[64] = (uint[64])0;
     uint sp = 0u;
-    uint node_2 = 0u;
+    uint node_3 = 0u;
     uint i = (uint)0;
 
     hit.t = t_max_2;
@@ -626,7 +632,7 @@ GeoHit trace(float3 o_2, float3 d_4, float t_min_1, float t_max_2, bool any_hit)
     while(true) {
         if (all(loop_bound == uint2(0u, 0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        uint _e21 = node_2;
+        uint _e21 = node_3;
         GpuGeoNode n_8 = ConstructGpuGeoNode(asfloat(geo_nodes.Load3(_e21*32+0)), asuint(geo_nodes.Load(_e21*32+12)), asfloat(geo_nodes.Load3(_e21*32+16)), asuint(geo_nodes.Load(_e21*32+28)));
         uint _e25 = nodes_visited;
         nodes_visited = (_e25 + 1u);
@@ -675,7 +681,7 @@ GeoHit trace(float3 o_2, float3 d_4, float t_min_1, float t_max_2, bool any_hit)
                     uint _e72 = sp;
                     sp = (_e72 + 1u);
                 }
-                node_2 = n_8.first;
+                node_3 = n_8.first;
                 continue;
             }
         }
@@ -687,7 +693,7 @@ GeoHit trace(float3 o_2, float3 d_4, float t_min_1, float t_max_2, bool any_hit)
         sp = (_e79 - 1u);
         uint _e82 = sp;
         uint _e84 = stack[min(uint(_e82), 63u)];
-        node_2 = _e84;
+        node_3 = _e84;
     }
     GeoHit _e85 = hit;
     const GeoHit geohit_2 = _e85;
@@ -747,17 +753,17 @@ float bsh_inner_scale(float a_5, float3 v_1, float d2_5, float3 r_4, float4 rl_2
     return _e8;
 }
 
-bool bsh_reaches(BshNode node_3, float3 x_4, float3 r_5, float4 rl_3)
+bool bsh_reaches(BshNode node_4, float3 x_4, float3 r_5, float4 rl_3)
 {
     bool local_14 = (bool)0;
     bool local_15 = (bool)0;
 
-    const bool _e6 = sphere_contains_point(node_3.center_, node_3.radius, x_4);
+    const bool _e6 = sphere_contains_point(node_4.center_, node_4.radius, x_4);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
-        const bool _e20 = sphere_contains_point(node_3.center_, (node_3.radius * (rl_3.w * 1.0001)), x_4);
+        const bool _e20 = sphere_contains_point(node_4.center_, (node_4.radius * (rl_3.w * 1.0001)), x_4);
         local_14 = !(_e20);
     } else {
         local_14 = true;
@@ -766,34 +772,34 @@ bool bsh_reaches(BshNode node_3, float3 x_4, float3 r_5, float4 rl_3)
     if (_e23) {
         return false;
     }
-    const float _e25 = bsh_range_bound(node_3);
-    float3 v_7 = (x_4 - node_3.center_);
+    float3 v_7 = (x_4 - node_4.center_);
     float d2_7 = dot(v_7, v_7);
-    float reach_max = (node_3.extent + ((rl_3.w * 1.001) * _e25));
-    if ((d2_7 > (reach_max * reach_max))) {
+    const float _e29 = bsh_reach_bound(node_4, rl_3.w);
+    if ((d2_7 > (_e29 * _e29))) {
         return false;
     }
-    if ((node_3.child == BSH_NONE)) {
-        const float _e43 = range_scale_toward(rl_3, node_3.center_, node_3.extent, x_4, r_5);
-        const float _e46 = bsh_scaled_radius(node_3, sqrt(_e43));
-        const bool _e47 = sphere_contains_point(node_3.center_, _e46, x_4);
-        return _e47;
+    if ((node_4.child == BSH_NONE)) {
+        const float _e38 = range_scale_toward(rl_3, node_4.center_, node_4.extent, x_4, r_5);
+        const float _e41 = bsh_scaled_radius(node_4, sqrt(_e38));
+        const bool _e42 = sphere_contains_point(node_4.center_, _e41, x_4);
+        return _e42;
     }
-    const float _e50 = bsh_inner_scale(node_3.extent, -(v_7), d2_7, r_5, rl_3);
-    float s_c = (_e50 * 1.001);
-    float reach = (node_3.extent + (sqrt(s_c) * _e25));
-    if ((d2_7 <= ((node_3.radius * node_3.radius) * s_c))) {
+    const float _e45 = bsh_inner_scale(node_4.extent, -(v_7), d2_7, r_5, rl_3);
+    float s_c = (_e45 * 1.001);
+    const float _e50 = bsh_range_bound(node_4);
+    float reach = (node_4.extent + (sqrt(s_c) * _e50));
+    if ((d2_7 <= ((node_4.radius * node_4.radius) * s_c))) {
         local_15 = (d2_7 <= (reach * reach));
     } else {
         local_15 = false;
     }
-    bool _e67 = local_15;
-    return _e67;
+    bool _e63 = local_15;
+    return _e63;
 }
 
-bool bsh_reaches_box(BshNode node_4, float3 lo, float3 hi, float w_3)
+bool bsh_reaches_box(BshNode node_5, float3 lo, float3 hi, float w_4)
 {
-    const bool _e13 = sphere_overlaps_aabb(node_4.center_, (node_4.radius * (max(1.0, (w_3 * 1.0001)) * 1.0001)), lo, hi);
+    const bool _e13 = sphere_overlaps_aabb(node_5.center_, (node_5.radius * (max(1.0, (w_4 * 1.0001)) * 1.0001)), lo, hi);
     return _e13;
 }
 
@@ -847,7 +853,7 @@ uint bsh_subtree(uint nodes_3, uint s_1, uint depth)
     return _e44;
 }
 
-uint bsh_next_leaf_box(uint nodes_4, uint start_1, uint end, float3 lo_1, float3 hi_1, float w_4)
+uint bsh_next_leaf_box(uint nodes_4, uint start_1, uint end, float3 lo_1, float3 hi_1, float w_5)
 {
     uint i_3 = (uint)0;
 
@@ -864,7 +870,7 @@ uint bsh_next_leaf_box(uint nodes_4, uint start_1, uint end, float3 lo_1, float3
         {
             uint _e9 = i_3;
             const BshNode _e10 = bsh_node(nodes_4, _e9);
-            const bool _e11 = bsh_reaches_box(_e10, lo_1, hi_1, w_4);
+            const bool _e11 = bsh_reaches_box(_e10, lo_1, hi_1, w_5);
             if (_e11) {
                 if ((_e10.child == BSH_NONE)) {
                     if (((_e10.light & BSH_TAIL) == 0u)) {
@@ -1111,7 +1117,7 @@ TileWalk ConstructTileWalk(float3 arg0, float3 arg1, float arg2, uint arg3) {
     return ret;
 }
 
-TileWalk tile_walk_begin(uint li_3, float3 x_7, float w_5, bool has_1)
+TileWalk tile_walk_begin(uint li_3, float3 x_7, float w_6, bool has_1)
 {
     bool local_22 = (bool)0;
     TileWalk t_2 = (TileWalk)0;
@@ -1120,12 +1126,12 @@ TileWalk tile_walk_begin(uint li_3, float3 x_7, float w_5, bool has_1)
     uint s_5 = 0u;
 
     if (has_1) {
-        local_22 = (w_5 >= 0.0);
+        local_22 = (w_6 >= 0.0);
     } else {
         local_22 = false;
     }
     bool _e12 = local_22;
-    uint _e14; InterlockedMax(tile_scale, (_e12 ? asuint(w_5) : 0u), _e14);
+    uint _e14; InterlockedMax(tile_scale, (_e12 ? asuint(w_6) : 0u), _e14);
     const WorkgroupBox _e15 = workgroup_box(li_3, x_7, has_1);
     GroupMemoryBarrierWithGroupSync();
     uint _e19 = tile_scale;
@@ -1273,17 +1279,17 @@ Shaded shade_connection(Connection c_6, float3 x_8, float3 n_5, Material m_1)
     return shaded;
 }
 
-Shaded shade_pick_traced(uint li_5, float3 x_9, float3 n_6, float3 r_6, float4 rl_4, Material m_2, float w_6, float u1_3, float u2_3, float eps_2, bool trace_3)
+Shaded shade_pick_traced(uint li_5, float3 x_9, float3 n_6, float3 r_6, float4 rl_4, Material m_2, float w_7, float u1_3, float u2_3, float eps_2, bool trace_3)
 {
-    const Connection _e12 = connect_traced(li_5, x_9, n_6, n_6, 1.0, w_6, u1_3, u2_3, eps_2, trace_3);
+    const Connection _e12 = connect_traced(li_5, x_9, n_6, n_6, 1.0, w_7, u1_3, u2_3, eps_2, trace_3);
     const Shaded _e13 = shade_connection(_e12, x_9, n_6, m_2);
     const Shaded shaded_1 = _e13;
     return shaded_1;
 }
 
-Shaded shade_pick(uint li_6, float3 x_10, float3 n_7, float3 r_7, float4 rl_5, Material m_3, float w_7, float u1_4, float u2_4, float eps_3)
+Shaded shade_pick(uint li_6, float3 x_10, float3 n_7, float3 r_7, float4 rl_5, Material m_3, float w_8, float u1_4, float u2_4, float eps_3)
 {
-    const Shaded _e11 = shade_pick_traced(li_6, x_10, n_7, r_7, rl_5, m_3, w_7, u1_4, u2_4, eps_3, true);
+    const Shaded _e11 = shade_pick_traced(li_6, x_10, n_7, r_7, rl_5, m_3, w_8, u1_4, u2_4, eps_3, true);
     const Shaded shaded_2 = _e11;
     return shaded_2;
 }
@@ -1302,9 +1308,9 @@ Shaded add(Shaded a_6, Shaded b_6)
     return shaded_3;
 }
 
-Shaded scaled(Shaded s_8, float3 w_8)
+Shaded scaled(Shaded s_8, float3 w_9)
 {
-    const Shaded shaded_4 = ConstructShaded((s_8.e * w_8), (s_8.diffuse * w_8), (s_8.specular * w_8));
+    const Shaded shaded_4 = ConstructShaded((s_8.e * w_9), (s_8.diffuse * w_9), (s_8.specular * w_9));
     return shaded_4;
 }
 

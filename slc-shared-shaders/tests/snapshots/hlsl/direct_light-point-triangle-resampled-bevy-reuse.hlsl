@@ -368,10 +368,10 @@ float connection_cosine(float3 x_2, float3 y, float3 n_1, float3 ng, float r2_1)
     if (_e16) {
         return 0.0;
     }
-    float3 w_11 = (v_7 / (sqrt(d2_6)).xxx);
-    float cos_x_1 = -(dot(n_1, w_11));
+    float3 w_12 = (v_7 / (sqrt(d2_6)).xxx);
+    float cos_x_1 = -(dot(n_1, w_12));
     if (!((cos_x_1 <= 0.0))) {
-        local_9 = (dot(ng, w_11) >= 0.0);
+        local_9 = (dot(ng, w_12) >= 0.0);
     } else {
         local_9 = true;
     }
@@ -415,9 +415,15 @@ float bsh_range_bound(BshNode node_1)
     return _e8;
 }
 
-bool weighted_replace(float w_3, float w_sum, float u_2)
+float bsh_reach_bound(BshNode node_2, float w_3)
 {
-    return ((u_2 * w_sum) < w_3);
+    const float _e5 = bsh_range_bound(node_2);
+    return (node_2.extent + ((w_3 * 1.001) * _e5));
+}
+
+bool weighted_replace(float w_4, float w_sum, float u_2)
+{
+    return ((u_2 * w_sum) < w_4);
 }
 
 float weighted_threshold(float w_sum_1, float u_3)
@@ -458,19 +464,19 @@ float3 slot_share(uint slot_1, uint k_3)
 {
     if ((k_3 < 3u)) {
         const float _e4 = to_f32_(k_3);
-        float w_12 = (1.0 / _e4);
-        return float3(w_12, w_12, w_12);
+        float w_13 = (1.0 / _e4);
+        return float3(w_13, w_13, w_13);
     }
     uint j_7 = naga_mod(slot_1, 3u);
     const float _e15 = to_f32_(naga_div(((k_3 + 2u) - j_7), 3u));
-    float w_13 = (1.0 / _e15);
+    float w_14 = (1.0 / _e15);
     if ((j_7 == 0u)) {
-        return float3(w_13, 0.0, 0.0);
+        return float3(w_14, 0.0, 0.0);
     }
     if ((j_7 == 1u)) {
-        return float3(0.0, w_13, 0.0);
+        return float3(0.0, w_14, 0.0);
     }
-    return float3(0.0, 0.0, w_13);
+    return float3(0.0, 0.0, w_14);
 }
 
 float grid_coordinate(uint bits_1)
@@ -490,12 +496,12 @@ float2 disk_offset(float r_3, float u1_1, float u2_1)
     return (float2(cos(a_9), sin(a_9)) * (r_3 * sqrt(u1_1)));
 }
 
-float gris_weight(float own, float all_, float p_hat, float w_4)
+float gris_weight(float own, float all_, float p_hat, float w_5)
 {
     if (!((all_ > 0.0))) {
         return 0.0;
     }
-    return (((own / all_) * p_hat) * w_4);
+    return (((own / all_) * p_hat) * w_5);
 }
 
 float gris_contribution_weight(float w_sum_2, float p_hat_1)
@@ -855,7 +861,7 @@ bool history_matches(float3 n_5, float3 nh, float3 p_3, float oh, float d_4)
     return _e17;
 }
 
-float3 light_intensity(GpuLight l_1, float3 w_5)
+float3 light_intensity(GpuLight l_1, float3 w_6)
 {
     switch(l_1.kind) {
         case 0u: {
@@ -863,7 +869,7 @@ float3 light_intensity(GpuLight l_1, float3 w_5)
         }
         case 3u: {
             const float3 _e8 = triangle_normal(l_1.p0_, l_1.p1_, l_1.p2_);
-            const float _e10 = triangle_lobe(_e8, l_1.a, w_5);
+            const float _e10 = triangle_lobe(_e8, l_1.a, w_6);
             return (l_1.intensity * _e10);
         }
         default: {
@@ -913,7 +919,7 @@ GeoHit trace(float3 o_2, float3 d_5, float t_min_1, float t_max_2, bool any_hit)
     GeoHit hit = (GeoHit)0;
     uint stack[64] = (uint[64])0;
     uint sp = 0u;
-    uint node_2 = 0u;
+    uint node_3 = 0u;
     uint i = (uint)0;
 
     hit.t = t_max_2;
@@ -928,7 +934,7 @@ GeoHit trace(float3 o_2, float3 d_5, float t_min_1, float t_max_2, bool any_hit)
     while(true) {
         if (all(loop_bound == uint2(0u, 0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        uint _e21 = node_2;
+        uint _e21 = node_3;
         GpuGeoNode n_15 = ConstructGpuGeoNode(asfloat(geo_nodes.Load3(_e21*32+0)), asuint(geo_nodes.Load(_e21*32+12)), asfloat(geo_nodes.Load3(_e21*32+16)), asuint(geo_nodes.Load(_e21*32+28)));
         float _e27 = hit.t;
         const float _e28 = ray_aabb(o_2, _e14, n_15.bmin, n_15.bmax, _e27);
@@ -975,7 +981,7 @@ GeoHit trace(float3 o_2, float3 d_5, float t_min_1, float t_max_2, bool any_hit)
                     uint _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_2 = n_15.first;
+                node_3 = n_15.first;
                 continue;
             }
         }
@@ -987,7 +993,7 @@ GeoHit trace(float3 o_2, float3 d_5, float t_min_1, float t_max_2, bool any_hit)
         sp = (_e75 - 1u);
         uint _e78 = sp;
         uint _e80 = stack[min(uint(_e78), 63u)];
-        node_2 = _e80;
+        node_3 = _e80;
     }
     GeoHit _e81 = hit;
     const GeoHit geohit_2 = _e81;
@@ -1045,17 +1051,17 @@ float bsh_inner_scale(float a_7, float3 v_3, float d2_5, float3 r_7, float4 rl_2
     return _e8;
 }
 
-bool bsh_reaches(BshNode node_3, float3 x_4, float3 r_8, float4 rl_3)
+bool bsh_reaches(BshNode node_4, float3 x_4, float3 r_8, float4 rl_3)
 {
     bool local_21 = (bool)0;
     bool local_22 = (bool)0;
 
-    const bool _e6 = sphere_contains_point(node_3.center_, node_3.radius, x_4);
+    const bool _e6 = sphere_contains_point(node_4.center_, node_4.radius, x_4);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
-        const bool _e20 = sphere_contains_point(node_3.center_, (node_3.radius * (rl_3.w * 1.0001)), x_4);
+        const bool _e20 = sphere_contains_point(node_4.center_, (node_4.radius * (rl_3.w * 1.0001)), x_4);
         local_21 = !(_e20);
     } else {
         local_21 = true;
@@ -1064,34 +1070,34 @@ bool bsh_reaches(BshNode node_3, float3 x_4, float3 r_8, float4 rl_3)
     if (_e23) {
         return false;
     }
-    const float _e25 = bsh_range_bound(node_3);
-    float3 v_10 = (x_4 - node_3.center_);
+    float3 v_10 = (x_4 - node_4.center_);
     float d2_7 = dot(v_10, v_10);
-    float reach_max = (node_3.extent + ((rl_3.w * 1.001) * _e25));
-    if ((d2_7 > (reach_max * reach_max))) {
+    const float _e29 = bsh_reach_bound(node_4, rl_3.w);
+    if ((d2_7 > (_e29 * _e29))) {
         return false;
     }
-    if ((node_3.child == BSH_NONE)) {
-        const float _e43 = range_scale_toward(rl_3, node_3.center_, node_3.extent, x_4, r_8);
-        const float _e46 = bsh_scaled_radius(node_3, sqrt(_e43));
-        const bool _e47 = sphere_contains_point(node_3.center_, _e46, x_4);
-        return _e47;
+    if ((node_4.child == BSH_NONE)) {
+        const float _e38 = range_scale_toward(rl_3, node_4.center_, node_4.extent, x_4, r_8);
+        const float _e41 = bsh_scaled_radius(node_4, sqrt(_e38));
+        const bool _e42 = sphere_contains_point(node_4.center_, _e41, x_4);
+        return _e42;
     }
-    const float _e50 = bsh_inner_scale(node_3.extent, -(v_10), d2_7, r_8, rl_3);
-    float s_c = (_e50 * 1.001);
-    float reach = (node_3.extent + (sqrt(s_c) * _e25));
-    if ((d2_7 <= ((node_3.radius * node_3.radius) * s_c))) {
+    const float _e45 = bsh_inner_scale(node_4.extent, -(v_10), d2_7, r_8, rl_3);
+    float s_c = (_e45 * 1.001);
+    const float _e50 = bsh_range_bound(node_4);
+    float reach = (node_4.extent + (sqrt(s_c) * _e50));
+    if ((d2_7 <= ((node_4.radius * node_4.radius) * s_c))) {
         local_22 = (d2_7 <= (reach * reach));
     } else {
         local_22 = false;
     }
-    bool _e67 = local_22;
-    return _e67;
+    bool _e63 = local_22;
+    return _e63;
 }
 
-bool bsh_reaches_box(BshNode node_4, float3 lo, float3 hi, float w_6)
+bool bsh_reaches_box(BshNode node_5, float3 lo, float3 hi, float w_7)
 {
-    const bool _e13 = sphere_overlaps_aabb(node_4.center_, (node_4.radius * (max(1.0, (w_6 * 1.0001)) * 1.0001)), lo, hi);
+    const bool _e13 = sphere_overlaps_aabb(node_5.center_, (node_5.radius * (max(1.0, (w_7 * 1.0001)) * 1.0001)), lo, hi);
     return _e13;
 }
 
@@ -1145,7 +1151,7 @@ uint bsh_subtree(uint nodes_3, uint s_1, uint depth)
     return _e44;
 }
 
-uint bsh_next_leaf_box(uint nodes_4, uint start_1, uint end, float3 lo_1, float3 hi_1, float w_7)
+uint bsh_next_leaf_box(uint nodes_4, uint start_1, uint end, float3 lo_1, float3 hi_1, float w_8)
 {
     uint i_3 = (uint)0;
 
@@ -1162,7 +1168,7 @@ uint bsh_next_leaf_box(uint nodes_4, uint start_1, uint end, float3 lo_1, float3
         {
             uint _e9 = i_3;
             const BshNode _e10 = bsh_node(nodes_4, _e9);
-            const bool _e11 = bsh_reaches_box(_e10, lo_1, hi_1, w_7);
+            const bool _e11 = bsh_reaches_box(_e10, lo_1, hi_1, w_8);
             if (_e11) {
                 if ((_e10.child == BSH_NONE)) {
                     if (((_e10.light & BSH_TAIL) == 0u)) {
@@ -1429,7 +1435,7 @@ TileWalk ConstructTileWalk(float3 arg0, float3 arg1, float arg2, uint arg3) {
     return ret;
 }
 
-TileWalk tile_walk_begin(uint li_4, float3 x_8, float w_8, bool has_1)
+TileWalk tile_walk_begin(uint li_4, float3 x_8, float w_9, bool has_1)
 {
     bool local_29 = (bool)0;
     TileWalk t_2 = (TileWalk)0;
@@ -1438,12 +1444,12 @@ TileWalk tile_walk_begin(uint li_4, float3 x_8, float w_8, bool has_1)
     uint s_5 = 0u;
 
     if (has_1) {
-        local_29 = (w_8 >= 0.0);
+        local_29 = (w_9 >= 0.0);
     } else {
         local_29 = false;
     }
     bool _e12 = local_29;
-    uint _e14; InterlockedMax(tile_scale, (_e12 ? asuint(w_8) : 0u), _e14);
+    uint _e14; InterlockedMax(tile_scale, (_e12 ? asuint(w_9) : 0u), _e14);
     const WorkgroupBox _e15 = workgroup_box(li_4, x_8, has_1);
     GroupMemoryBarrierWithGroupSync();
     uint _e19 = tile_scale;
@@ -1584,10 +1590,10 @@ Shaded shade_connection(Connection c_9, float3 x_9, float3 n_8, Material m_1)
     return shaded;
 }
 
-Shaded shade_pick_traced(uint li_6, float3 x_10, float3 n_9, float3 r_10, float4 rl_5, Material m_2, float w_9, float u1_5, float u2_5, float eps_2, bool trace_3)
+Shaded shade_pick_traced(uint li_6, float3 x_10, float3 n_9, float3 r_10, float4 rl_5, Material m_2, float w_10, float u1_5, float u2_5, float eps_2, bool trace_3)
 {
     const float _e11 = light_range_scale(li_6, x_10, r_10, rl_5);
-    const Connection _e12 = connect_traced(li_6, x_10, n_9, n_9, _e11, w_9, u1_5, u2_5, eps_2, trace_3);
+    const Connection _e12 = connect_traced(li_6, x_10, n_9, n_9, _e11, w_10, u1_5, u2_5, eps_2, trace_3);
     const Shaded _e13 = shade_connection(_e12, x_10, n_9, m_2);
     const Shaded shaded_1 = _e13;
     return shaded_1;
@@ -1625,9 +1631,9 @@ Shaded add(Shaded a_8, Shaded b_8)
     return shaded_2;
 }
 
-Shaded scaled(Shaded s_8, float3 w_10)
+Shaded scaled(Shaded s_8, float3 w_11)
 {
-    const Shaded shaded_3 = ConstructShaded((s_8.e * w_10), (s_8.diffuse * w_10), (s_8.specular * w_10));
+    const Shaded shaded_3 = ConstructShaded((s_8.e * w_11), (s_8.diffuse * w_11), (s_8.specular * w_11));
     return shaded_3;
 }
 

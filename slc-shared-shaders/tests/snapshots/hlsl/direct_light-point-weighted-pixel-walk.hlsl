@@ -277,10 +277,10 @@ float connection_cosine(float3 x_2, float3 y, float3 n_1, float3 ng, float r2_1)
     if (_e16) {
         return 0.0;
     }
-    float3 w_6 = (v_3 / (sqrt(d2_7)).xxx);
-    float cos_x_1 = -(dot(n_1, w_6));
+    float3 w_7 = (v_3 / (sqrt(d2_7)).xxx);
+    float cos_x_1 = -(dot(n_1, w_7));
     if (!((cos_x_1 <= 0.0))) {
-        local_5 = (dot(ng, w_6) >= 0.0);
+        local_5 = (dot(ng, w_7) >= 0.0);
     } else {
         local_5 = true;
     }
@@ -311,15 +311,21 @@ float bsh_range_bound(BshNode node_1)
     return _e8;
 }
 
+float bsh_reach_bound(BshNode node_2, float w_1)
+{
+    const float _e5 = bsh_range_bound(node_2);
+    return (node_2.extent + ((w_1 * 1.001) * _e5));
+}
+
 float weighted_threshold(float w_sum, float u_2)
 {
     return (w_sum / (1.0 - u_2));
 }
 
-float weighted_pick_weight(float w_sum_1, float w_1, uint k_2)
+float weighted_pick_weight(float w_sum_1, float w_2, uint k_2)
 {
     const float _e3 = to_f32_(k_2);
-    return (w_sum_1 / (_e3 * w_1));
+    return (w_sum_1 / (_e3 * w_2));
 }
 
 float ggx_d(float cos_h, float sin2_h, float alpha)
@@ -617,7 +623,7 @@ float ray_triangle(float3 o_1, float3 d_3, float3 a_3, float3 b_3, float3 c_1, f
     return -1.0;
 }
 
-float3 light_intensity(GpuLight l, float3 w_2)
+float3 light_intensity(GpuLight l, float3 w_3)
 {
     switch(l.kind) {
         case 0u: {
@@ -666,7 +672,7 @@ GeoHit trace(float3 o_2, float3 d_4, float t_min_1, float t_max_2, bool any_hit)
     GeoHit hit = (GeoHit)0;
     uint stack[64] = (uint[64])0;
     uint sp = 0u;
-    uint node_2 = 0u;
+    uint node_3 = 0u;
     uint i = (uint)0;
 
     hit.t = t_max_2;
@@ -681,7 +687,7 @@ GeoHit trace(float3 o_2, float3 d_4, float t_min_1, float t_max_2, bool any_hit)
     while(true) {
         if (all(loop_bound == uint2(0u, 0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        uint _e21 = node_2;
+        uint _e21 = node_3;
         GpuGeoNode n_11 = ConstructGpuGeoNode(asfloat(geo_nodes.Load3(_e21*32+0)), asuint(geo_nodes.Load(_e21*32+12)), asfloat(geo_nodes.Load3(_e21*32+16)), asuint(geo_nodes.Load(_e21*32+28)));
         float _e27 = hit.t;
         const float _e28 = ray_aabb(o_2, _e14, n_11.bmin, n_11.bmax, _e27);
@@ -728,7 +734,7 @@ GeoHit trace(float3 o_2, float3 d_4, float t_min_1, float t_max_2, bool any_hit)
                     uint _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_2 = n_11.first;
+                node_3 = n_11.first;
                 continue;
             }
         }
@@ -740,7 +746,7 @@ GeoHit trace(float3 o_2, float3 d_4, float t_min_1, float t_max_2, bool any_hit)
         sp = (_e75 - 1u);
         uint _e78 = sp;
         uint _e80 = stack[min(uint(_e78), 63u)];
-        node_2 = _e80;
+        node_3 = _e80;
     }
     GeoHit _e81 = hit;
     const GeoHit geohit_2 = _e81;
@@ -798,17 +804,17 @@ float bsh_inner_scale(float a_5, float3 v_1, float d2_6, float3 r_5, float4 rl_2
     return _e8;
 }
 
-bool bsh_reaches(BshNode node_3, float3 x_5, float3 r_6, float4 rl_3)
+bool bsh_reaches(BshNode node_4, float3 x_5, float3 r_6, float4 rl_3)
 {
     bool local_12 = (bool)0;
     bool local_13 = (bool)0;
 
-    const bool _e6 = sphere_contains_point(node_3.center_, node_3.radius, x_5);
+    const bool _e6 = sphere_contains_point(node_4.center_, node_4.radius, x_5);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
-        const bool _e20 = sphere_contains_point(node_3.center_, (node_3.radius * (rl_3.w * 1.0001)), x_5);
+        const bool _e20 = sphere_contains_point(node_4.center_, (node_4.radius * (rl_3.w * 1.0001)), x_5);
         local_12 = !(_e20);
     } else {
         local_12 = true;
@@ -817,29 +823,29 @@ bool bsh_reaches(BshNode node_3, float3 x_5, float3 r_6, float4 rl_3)
     if (_e23) {
         return false;
     }
-    const float _e25 = bsh_range_bound(node_3);
-    float3 v_9 = (x_5 - node_3.center_);
+    float3 v_9 = (x_5 - node_4.center_);
     float d2_9 = dot(v_9, v_9);
-    float reach_max = (node_3.extent + ((rl_3.w * 1.001) * _e25));
-    if ((d2_9 > (reach_max * reach_max))) {
+    const float _e29 = bsh_reach_bound(node_4, rl_3.w);
+    if ((d2_9 > (_e29 * _e29))) {
         return false;
     }
-    if ((node_3.child == BSH_NONE)) {
-        const float _e43 = range_scale_toward(rl_3, node_3.center_, node_3.extent, x_5, r_6);
-        const float _e46 = bsh_scaled_radius(node_3, sqrt(_e43));
-        const bool _e47 = sphere_contains_point(node_3.center_, _e46, x_5);
-        return _e47;
+    if ((node_4.child == BSH_NONE)) {
+        const float _e38 = range_scale_toward(rl_3, node_4.center_, node_4.extent, x_5, r_6);
+        const float _e41 = bsh_scaled_radius(node_4, sqrt(_e38));
+        const bool _e42 = sphere_contains_point(node_4.center_, _e41, x_5);
+        return _e42;
     }
-    const float _e50 = bsh_inner_scale(node_3.extent, -(v_9), d2_9, r_6, rl_3);
-    float s_c = (_e50 * 1.001);
-    float reach = (node_3.extent + (sqrt(s_c) * _e25));
-    if ((d2_9 <= ((node_3.radius * node_3.radius) * s_c))) {
+    const float _e45 = bsh_inner_scale(node_4.extent, -(v_9), d2_9, r_6, rl_3);
+    float s_c = (_e45 * 1.001);
+    const float _e50 = bsh_range_bound(node_4);
+    float reach = (node_4.extent + (sqrt(s_c) * _e50));
+    if ((d2_9 <= ((node_4.radius * node_4.radius) * s_c))) {
         local_13 = (d2_9 <= (reach * reach));
     } else {
         local_13 = false;
     }
-    bool _e67 = local_13;
-    return _e67;
+    bool _e63 = local_13;
+    return _e63;
 }
 
 uint bsh_next_leaf_lobe(uint nodes_3, uint start, float3 x_6, float3 r_7, float4 rl_4)
@@ -997,16 +1003,16 @@ WeightedPicks weighted_picks(uint h_2)
     return weightedpicks;
 }
 
-void weighted_offer(inout WeightedPicks picks_2, uint li_3, float w_3)
+void weighted_offer(inout WeightedPicks picks_2, uint li_3, float w_4)
 {
     uint h_3 = (uint)0;
     uint s_2 = 0u;
 
     uint _e4 = picks_2.n;
     picks_2.n = (_e4 + 1u);
-    if ((w_3 > 0.0)) {
+    if ((w_4 > 0.0)) {
         float _e10 = picks_2.w_sum;
-        picks_2.w_sum = (_e10 + w_3);
+        picks_2.w_sum = (_e10 + w_4);
         uint _e13 = picks_2.h;
         h_3 = _e13;
         uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
@@ -1032,7 +1038,7 @@ void weighted_offer(inout WeightedPicks picks_2, uint li_3, float w_3)
                     uint _e28 = s_2;
                     picks_2.light[min(uint(_e28), 7u)] = li_3;
                     uint _e31 = s_2;
-                    picks_2.w[min(uint(_e31), 7u)] = w_3;
+                    picks_2.w[min(uint(_e31), 7u)] = w_4;
                     uint _e34 = s_2;
                     float _e37 = picks_2.w_sum;
                     const float _e38 = next_threshold(_e37, h_3);
@@ -1066,17 +1072,17 @@ Shaded shade_connection(Connection c_3, float3 x_11, float3 n_8, Material m_1)
     return shaded;
 }
 
-Shaded shade_pick_traced(uint li_4, float3 x_12, float3 n_9, float3 r_10, float4 rl_7, Material m_2, float w_4, float u1_3, float u2_3, float eps_2, bool trace_3)
+Shaded shade_pick_traced(uint li_4, float3 x_12, float3 n_9, float3 r_10, float4 rl_7, Material m_2, float w_5, float u1_3, float u2_3, float eps_2, bool trace_3)
 {
-    const Connection _e12 = connect_traced(li_4, x_12, n_9, n_9, 1.0, w_4, u1_3, u2_3, eps_2, trace_3);
+    const Connection _e12 = connect_traced(li_4, x_12, n_9, n_9, 1.0, w_5, u1_3, u2_3, eps_2, trace_3);
     const Shaded _e13 = shade_connection(_e12, x_12, n_9, m_2);
     const Shaded shaded_1 = _e13;
     return shaded_1;
 }
 
-Shaded shade_pick(uint li_5, float3 x_13, float3 n_10, float3 r_11, float4 rl_8, Material m_3, float w_5, float u1_4, float u2_4, float eps_3)
+Shaded shade_pick(uint li_5, float3 x_13, float3 n_10, float3 r_11, float4 rl_8, Material m_3, float w_6, float u1_4, float u2_4, float eps_3)
 {
-    const Shaded _e11 = shade_pick_traced(li_5, x_13, n_10, r_11, rl_8, m_3, w_5, u1_4, u2_4, eps_3, true);
+    const Shaded _e11 = shade_pick_traced(li_5, x_13, n_10, r_11, rl_8, m_3, w_6, u1_4, u2_4, eps_3, true);
     const Shaded shaded_2 = _e11;
     return shaded_2;
 }

@@ -315,10 +315,10 @@ float connection_cosine(float3 x_2, float3 y, float3 n_1, float3 ng, float r2_1)
     if (_e16) {
         return 0.0;
     }
-    float3 w_10 = (v_8 / (sqrt(d2_7)).xxx);
-    float cos_x_1 = -(dot(n_1, w_10));
+    float3 w_11 = (v_8 / (sqrt(d2_7)).xxx);
+    float cos_x_1 = -(dot(n_1, w_11));
     if (!((cos_x_1 <= 0.0))) {
-        local_6 = (dot(ng, w_10) >= 0.0);
+        local_6 = (dot(ng, w_11) >= 0.0);
     } else {
         local_6 = true;
     }
@@ -362,15 +362,21 @@ float bsh_range_bound(BshNode node_1)
     return _e8;
 }
 
+float bsh_reach_bound(BshNode node_2, float w_2)
+{
+    const float _e5 = bsh_range_bound(node_2);
+    return (node_2.extent + ((w_2 * 1.001) * _e5));
+}
+
 float weighted_threshold(float w_sum, float u_2)
 {
     return (w_sum / (1.0 - u_2));
 }
 
-float weighted_pick_weight(float w_sum_1, float w_2, uint k_2)
+float weighted_pick_weight(float w_sum_1, float w_3, uint k_2)
 {
     const float _e3 = to_f32_(k_2);
-    return (w_sum_1 / (_e3 * w_2));
+    return (w_sum_1 / (_e3 * w_3));
 }
 
 float ggx_alpha(float roughness)
@@ -815,12 +821,12 @@ float ray_triangle(float3 o_1, float3 d_3, float3 a_5, float3 b_4, float3 c_5, f
     return -1.0;
 }
 
-float3 light_intensity(GpuLight l_2, float3 w_3)
+float3 light_intensity(GpuLight l_2, float3 w_4)
 {
     switch(l_2.kind) {
         case 3u: {
             const float3 _e7 = triangle_normal(l_2.p0_, l_2.p1_, l_2.p2_);
-            const float _e9 = triangle_lobe(_e7, l_2.a, w_3);
+            const float _e9 = triangle_lobe(_e7, l_2.a, w_4);
             return (l_2.intensity * _e9);
         }
         default: {
@@ -870,7 +876,7 @@ GeoHit trace(float3 o_2, float3 d_4, float t_min_1, float t_max_2, bool any_hit)
     GeoHit hit = (GeoHit)0;
     uint stack[64] = (uint[64])0;
     uint sp = 0u;
-    uint node_2 = 0u;
+    uint node_3 = 0u;
     uint i = (uint)0;
 
     hit.t = t_max_2;
@@ -885,7 +891,7 @@ GeoHit trace(float3 o_2, float3 d_4, float t_min_1, float t_max_2, bool any_hit)
     while(true) {
         if (all(loop_bound == uint2(0u, 0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        uint _e21 = node_2;
+        uint _e21 = node_3;
         GpuGeoNode n_15 = ConstructGpuGeoNode(asfloat(geo_nodes.Load3(_e21*32+0)), asuint(geo_nodes.Load(_e21*32+12)), asfloat(geo_nodes.Load3(_e21*32+16)), asuint(geo_nodes.Load(_e21*32+28)));
         float _e27 = hit.t;
         const float _e28 = ray_aabb(o_2, _e14, n_15.bmin, n_15.bmax, _e27);
@@ -932,7 +938,7 @@ GeoHit trace(float3 o_2, float3 d_4, float t_min_1, float t_max_2, bool any_hit)
                     uint _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_2 = n_15.first;
+                node_3 = n_15.first;
                 continue;
             }
         }
@@ -944,7 +950,7 @@ GeoHit trace(float3 o_2, float3 d_4, float t_min_1, float t_max_2, bool any_hit)
         sp = (_e75 - 1u);
         uint _e78 = sp;
         uint _e80 = stack[min(uint(_e78), 63u)];
-        node_2 = _e80;
+        node_3 = _e80;
     }
     GeoHit _e81 = hit;
     const GeoHit geohit_2 = _e81;
@@ -1002,17 +1008,17 @@ float bsh_inner_scale(float a_7, float3 v_4, float d2_6, float3 r_6, float4 rl_2
     return _e8;
 }
 
-bool bsh_reaches(BshNode node_3, float3 x_5, float3 r_7, float4 rl_3)
+bool bsh_reaches(BshNode node_4, float3 x_5, float3 r_7, float4 rl_3)
 {
     bool local_19 = (bool)0;
     bool local_20 = (bool)0;
 
-    const bool _e6 = sphere_contains_point(node_3.center_, node_3.radius, x_5);
+    const bool _e6 = sphere_contains_point(node_4.center_, node_4.radius, x_5);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
-        const bool _e20 = sphere_contains_point(node_3.center_, (node_3.radius * (rl_3.w * 1.0001)), x_5);
+        const bool _e20 = sphere_contains_point(node_4.center_, (node_4.radius * (rl_3.w * 1.0001)), x_5);
         local_19 = !(_e20);
     } else {
         local_19 = true;
@@ -1021,34 +1027,34 @@ bool bsh_reaches(BshNode node_3, float3 x_5, float3 r_7, float4 rl_3)
     if (_e23) {
         return false;
     }
-    const float _e25 = bsh_range_bound(node_3);
-    float3 v_14 = (x_5 - node_3.center_);
+    float3 v_14 = (x_5 - node_4.center_);
     float d2_9 = dot(v_14, v_14);
-    float reach_max = (node_3.extent + ((rl_3.w * 1.001) * _e25));
-    if ((d2_9 > (reach_max * reach_max))) {
+    const float _e29 = bsh_reach_bound(node_4, rl_3.w);
+    if ((d2_9 > (_e29 * _e29))) {
         return false;
     }
-    if ((node_3.child == BSH_NONE)) {
-        const float _e43 = range_scale_toward(rl_3, node_3.center_, node_3.extent, x_5, r_7);
-        const float _e46 = bsh_scaled_radius(node_3, sqrt(_e43));
-        const bool _e47 = sphere_contains_point(node_3.center_, _e46, x_5);
-        return _e47;
+    if ((node_4.child == BSH_NONE)) {
+        const float _e38 = range_scale_toward(rl_3, node_4.center_, node_4.extent, x_5, r_7);
+        const float _e41 = bsh_scaled_radius(node_4, sqrt(_e38));
+        const bool _e42 = sphere_contains_point(node_4.center_, _e41, x_5);
+        return _e42;
     }
-    const float _e50 = bsh_inner_scale(node_3.extent, -(v_14), d2_9, r_7, rl_3);
-    float s_c = (_e50 * 1.001);
-    float reach = (node_3.extent + (sqrt(s_c) * _e25));
-    if ((d2_9 <= ((node_3.radius * node_3.radius) * s_c))) {
+    const float _e45 = bsh_inner_scale(node_4.extent, -(v_14), d2_9, r_7, rl_3);
+    float s_c = (_e45 * 1.001);
+    const float _e50 = bsh_range_bound(node_4);
+    float reach = (node_4.extent + (sqrt(s_c) * _e50));
+    if ((d2_9 <= ((node_4.radius * node_4.radius) * s_c))) {
         local_20 = (d2_9 <= (reach * reach));
     } else {
         local_20 = false;
     }
-    bool _e67 = local_20;
-    return _e67;
+    bool _e63 = local_20;
+    return _e63;
 }
 
-bool bsh_reaches_box(BshNode node_4, float3 lo, float3 hi, float w_4)
+bool bsh_reaches_box(BshNode node_5, float3 lo, float3 hi, float w_5)
 {
-    const bool _e13 = sphere_overlaps_aabb(node_4.center_, (node_4.radius * (max(1.0, (w_4 * 1.0001)) * 1.0001)), lo, hi);
+    const bool _e13 = sphere_overlaps_aabb(node_5.center_, (node_5.radius * (max(1.0, (w_5 * 1.0001)) * 1.0001)), lo, hi);
     return _e13;
 }
 
@@ -1102,7 +1108,7 @@ uint bsh_subtree(uint nodes_3, uint s_1, uint depth)
     return _e44;
 }
 
-uint bsh_next_leaf_box(uint nodes_4, uint start_1, uint end, float3 lo_1, float3 hi_1, float w_5)
+uint bsh_next_leaf_box(uint nodes_4, uint start_1, uint end, float3 lo_1, float3 hi_1, float w_6)
 {
     uint i_3 = (uint)0;
 
@@ -1119,7 +1125,7 @@ uint bsh_next_leaf_box(uint nodes_4, uint start_1, uint end, float3 lo_1, float3
         {
             uint _e9 = i_3;
             const BshNode _e10 = bsh_node(nodes_4, _e9);
-            const bool _e11 = bsh_reaches_box(_e10, lo_1, hi_1, w_5);
+            const bool _e11 = bsh_reaches_box(_e10, lo_1, hi_1, w_6);
             if (_e11) {
                 if ((_e10.child == BSH_NONE)) {
                     if (((_e10.light & BSH_TAIL) == 0u)) {
@@ -1257,16 +1263,16 @@ WeightedPicks weighted_picks(uint h_2)
     return weightedpicks;
 }
 
-void weighted_offer(inout WeightedPicks picks_2, uint li_3, float w_6)
+void weighted_offer(inout WeightedPicks picks_2, uint li_3, float w_7)
 {
     uint h_3 = (uint)0;
     uint s_3 = 0u;
 
     uint _e4 = picks_2.n;
     picks_2.n = (_e4 + 1u);
-    if ((w_6 > 0.0)) {
+    if ((w_7 > 0.0)) {
         float _e10 = picks_2.w_sum;
-        picks_2.w_sum = (_e10 + w_6);
+        picks_2.w_sum = (_e10 + w_7);
         uint _e13 = picks_2.h;
         h_3 = _e13;
         uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
@@ -1292,7 +1298,7 @@ void weighted_offer(inout WeightedPicks picks_2, uint li_3, float w_6)
                     uint _e28 = s_3;
                     picks_2.light[min(uint(_e28), 7u)] = li_3;
                     uint _e31 = s_3;
-                    picks_2.w[min(uint(_e31), 7u)] = w_6;
+                    picks_2.w[min(uint(_e31), 7u)] = w_7;
                     uint _e34 = s_3;
                     float _e37 = picks_2.w_sum;
                     const float _e38 = next_threshold(_e37, h_3);
@@ -1462,7 +1468,7 @@ TileWalk ConstructTileWalk(float3 arg0, float3 arg1, float arg2, uint arg3) {
     return ret;
 }
 
-TileWalk tile_walk_begin(uint li_6, float3 x_10, float w_7, bool has_1)
+TileWalk tile_walk_begin(uint li_6, float3 x_10, float w_8, bool has_1)
 {
     bool local_27 = (bool)0;
     TileWalk t_2 = (TileWalk)0;
@@ -1471,12 +1477,12 @@ TileWalk tile_walk_begin(uint li_6, float3 x_10, float w_7, bool has_1)
     uint s_6 = 0u;
 
     if (has_1) {
-        local_27 = (w_7 >= 0.0);
+        local_27 = (w_8 >= 0.0);
     } else {
         local_27 = false;
     }
     bool _e12 = local_27;
-    uint _e14; InterlockedMax(tile_scale, (_e12 ? asuint(w_7) : 0u), _e14);
+    uint _e14; InterlockedMax(tile_scale, (_e12 ? asuint(w_8) : 0u), _e14);
     const WorkgroupBox _e15 = workgroup_box(li_6, x_10, has_1);
     GroupMemoryBarrierWithGroupSync();
     uint _e19 = tile_scale;
@@ -1625,18 +1631,18 @@ Shaded shade_connection(Connection c_7, float3 x_11, float3 n_11, Material m_1)
     return shaded;
 }
 
-Shaded shade_pick_traced(uint li_8, float3 x_12, float3 n_12, float3 r_10, float4 rl_6, Material m_2, float w_8, float u1_4, float u2_4, float eps_2, bool trace_3)
+Shaded shade_pick_traced(uint li_8, float3 x_12, float3 n_12, float3 r_10, float4 rl_6, Material m_2, float w_9, float u1_4, float u2_4, float eps_2, bool trace_3)
 {
     const float _e11 = light_range_scale(li_8, x_12, r_10, rl_6);
-    const Connection _e12 = connect_traced(li_8, x_12, n_12, n_12, _e11, w_8, u1_4, u2_4, eps_2, trace_3);
+    const Connection _e12 = connect_traced(li_8, x_12, n_12, n_12, _e11, w_9, u1_4, u2_4, eps_2, trace_3);
     const Shaded _e13 = shade_connection(_e12, x_12, n_12, m_2);
     const Shaded shaded_1 = _e13;
     return shaded_1;
 }
 
-Shaded shade_pick(uint li_9, float3 x_13, float3 n_13, float3 r_11, float4 rl_7, Material m_3, float w_9, float u1_5, float u2_5, float eps_3)
+Shaded shade_pick(uint li_9, float3 x_13, float3 n_13, float3 r_11, float4 rl_7, Material m_3, float w_10, float u1_5, float u2_5, float eps_3)
 {
-    const Shaded _e11 = shade_pick_traced(li_9, x_13, n_13, r_11, rl_7, m_3, w_9, u1_5, u2_5, eps_3, true);
+    const Shaded _e11 = shade_pick_traced(li_9, x_13, n_13, r_11, rl_7, m_3, w_10, u1_5, u2_5, eps_3, true);
     const Shaded shaded_2 = _e11;
     return shaded_2;
 }

@@ -289,10 +289,10 @@ float connection_cosine(float3 x_3, float3 y, float3 n, float3 ng, float r2_1)
     if (_e16) {
         return 0.0;
     }
-    float3 w_7 = (v_9 / (sqrt(d2_9)).xxx);
-    float cos_x_1 = -(dot(n, w_7));
+    float3 w_8 = (v_9 / (sqrt(d2_9)).xxx);
+    float cos_x_1 = -(dot(n, w_8));
     if (!((cos_x_1 <= 0.0))) {
-        local_1 = (dot(ng, w_7) >= 0.0);
+        local_1 = (dot(ng, w_8) >= 0.0);
     } else {
         local_1 = true;
     }
@@ -561,6 +561,12 @@ float bsh_range_bound(BshNode node_1)
     return _e8;
 }
 
+float bsh_reach_bound(BshNode node_2, float w_4)
+{
+    const float _e5 = bsh_range_bound(node_2);
+    return (node_2.extent + ((w_4 * 1.001) * _e5));
+}
+
 uint mul_hi_u32_(uint a_4, uint b_3)
 {
     uint a_lo = (a_4 & 65535u);
@@ -683,11 +689,11 @@ float3 onb_bitangent(float3 n_9)
     return float3(((n_9.x * n_9.y) * a_13), (s_5 + ((n_9.y * n_9.y) * a_13)), -(n_9.y));
 }
 
-float3 onb_to_local(float3 n_10, float3 w_4)
+float3 onb_to_local(float3 n_10, float3 w_5)
 {
     const float3 _e2 = onb_tangent(n_10);
     const float3 _e4 = onb_bitangent(n_10);
-    return float3(dot(w_4, _e2), dot(w_4, _e4), dot(w_4, n_10));
+    return float3(dot(w_5, _e2), dot(w_5, _e4), dot(w_5, n_10));
 }
 
 float ggx_d(float cos_h, float sin2_h, float alpha)
@@ -1093,27 +1099,27 @@ float ray_triangle(float3 o_1, float3 d_3, float3 a_7, float3 b_5, float3 c_6, f
     return -1.0;
 }
 
-float3 light_intensity(GpuLight l_4, float3 w_5)
+float3 light_intensity(GpuLight l_4, float3 w_6)
 {
     switch(l_4.kind) {
         case 0u: {
             return l_4.intensity;
         }
         case 1u: {
-            const float _e11 = spot_falloff(dot(l_4.p1_, w_5), l_4.a, l_4.b, l_4.p2_.x);
+            const float _e11 = spot_falloff(dot(l_4.p1_, w_6), l_4.a, l_4.b, l_4.p2_.x);
             return (l_4.intensity * _e11);
         }
         case 2u: {
-            const float _e18 = ies_light_candela(0u, l_4.ies_base, l_4.p1_, l_4.p2_, w_5);
+            const float _e18 = ies_light_candela(0u, l_4.ies_base, l_4.p1_, l_4.p2_, w_6);
             return (l_4.intensity * _e18);
         }
         case 3u: {
             const float3 _e24 = triangle_normal(l_4.p0_, l_4.p1_, l_4.p2_);
-            const float _e26 = triangle_lobe(_e24, l_4.a, w_5);
+            const float _e26 = triangle_lobe(_e24, l_4.a, w_6);
             return (l_4.intensity * _e26);
         }
         case 4u: {
-            const float _e30 = vpl_lobe(l_4.p1_, w_5);
+            const float _e30 = vpl_lobe(l_4.p1_, w_6);
             return (l_4.intensity * _e30);
         }
         default: {
@@ -1180,7 +1186,7 @@ GeoHit trace(float3 o_2, float3 d_4, float t_min_1, float t_max_2, bool any_hit)
     GeoHit hit = (GeoHit)0;
     uint stack[64] = (uint[64])0;
     uint sp = 0u;
-    uint node_2 = 0u;
+    uint node_3 = 0u;
     uint i_1 = (uint)0;
 
     hit.t = t_max_2;
@@ -1195,7 +1201,7 @@ GeoHit trace(float3 o_2, float3 d_4, float t_min_1, float t_max_2, bool any_hit)
     while(true) {
         if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
         loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
-        uint _e21 = node_2;
+        uint _e21 = node_3;
         GpuGeoNode n_22 = ConstructGpuGeoNode(asfloat(geo_nodes.Load3(_e21*32+0)), asuint(geo_nodes.Load(_e21*32+12)), asfloat(geo_nodes.Load3(_e21*32+16)), asuint(geo_nodes.Load(_e21*32+28)));
         float _e27 = hit.t;
         const float _e28 = ray_aabb(o_2, _e14, n_22.bmin, n_22.bmax, _e27);
@@ -1242,7 +1248,7 @@ GeoHit trace(float3 o_2, float3 d_4, float t_min_1, float t_max_2, bool any_hit)
                     uint _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_2 = n_22.first;
+                node_3 = n_22.first;
                 continue;
             }
         }
@@ -1254,7 +1260,7 @@ GeoHit trace(float3 o_2, float3 d_4, float t_min_1, float t_max_2, bool any_hit)
         sp = (_e75 - 1u);
         uint _e78 = sp;
         uint _e80 = stack[min(uint(_e78), 63u)];
-        node_2 = _e80;
+        node_3 = _e80;
     }
     GeoHit _e81 = hit;
     const GeoHit geohit_2 = _e81;
@@ -1312,17 +1318,17 @@ float bsh_inner_scale(float a_9, float3 v_7, float d2_8, float3 r_2, float4 rl_2
     return _e8;
 }
 
-bool bsh_reaches(BshNode node_3, float3 x_9, float3 r_3, float4 rl_3)
+bool bsh_reaches(BshNode node_4, float3 x_9, float3 r_3, float4 rl_3)
 {
     bool local_20 = (bool)0;
     bool local_21 = (bool)0;
 
-    const bool _e6 = sphere_contains_point(node_3.center_, node_3.radius, x_9);
+    const bool _e6 = sphere_contains_point(node_4.center_, node_4.radius, x_9);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
-        const bool _e20 = sphere_contains_point(node_3.center_, (node_3.radius * (rl_3.w * 1.0001)), x_9);
+        const bool _e20 = sphere_contains_point(node_4.center_, (node_4.radius * (rl_3.w * 1.0001)), x_9);
         local_20 = !(_e20);
     } else {
         local_20 = true;
@@ -1331,29 +1337,29 @@ bool bsh_reaches(BshNode node_3, float3 x_9, float3 r_3, float4 rl_3)
     if (_e23) {
         return false;
     }
-    const float _e25 = bsh_range_bound(node_3);
-    float3 v_12 = (x_9 - node_3.center_);
+    float3 v_12 = (x_9 - node_4.center_);
     float d2_10 = dot(v_12, v_12);
-    float reach_max = (node_3.extent + ((rl_3.w * 1.001) * _e25));
-    if ((d2_10 > (reach_max * reach_max))) {
+    const float _e29 = bsh_reach_bound(node_4, rl_3.w);
+    if ((d2_10 > (_e29 * _e29))) {
         return false;
     }
-    if ((node_3.child == BSH_NONE)) {
-        const float _e43 = range_scale_toward(rl_3, node_3.center_, node_3.extent, x_9, r_3);
-        const float _e46 = bsh_scaled_radius(node_3, sqrt(_e43));
-        const bool _e47 = sphere_contains_point(node_3.center_, _e46, x_9);
-        return _e47;
+    if ((node_4.child == BSH_NONE)) {
+        const float _e38 = range_scale_toward(rl_3, node_4.center_, node_4.extent, x_9, r_3);
+        const float _e41 = bsh_scaled_radius(node_4, sqrt(_e38));
+        const bool _e42 = sphere_contains_point(node_4.center_, _e41, x_9);
+        return _e42;
     }
-    const float _e50 = bsh_inner_scale(node_3.extent, -(v_12), d2_10, r_3, rl_3);
-    float s_c = (_e50 * 1.001);
-    float reach = (node_3.extent + (sqrt(s_c) * _e25));
-    if ((d2_10 <= ((node_3.radius * node_3.radius) * s_c))) {
+    const float _e45 = bsh_inner_scale(node_4.extent, -(v_12), d2_10, r_3, rl_3);
+    float s_c = (_e45 * 1.001);
+    const float _e50 = bsh_range_bound(node_4);
+    float reach = (node_4.extent + (sqrt(s_c) * _e50));
+    if ((d2_10 <= ((node_4.radius * node_4.radius) * s_c))) {
         local_21 = (d2_10 <= (reach * reach));
     } else {
         local_21 = false;
     }
-    bool _e67 = local_21;
-    return _e67;
+    bool _e63 = local_21;
+    return _e63;
 }
 
 uint bsh_next_leaf_lobe(uint nodes_3, uint start_1, float3 x_10, float3 r_4, float4 rl_4)
@@ -1586,13 +1592,13 @@ float light_pdf(uint li_5, float3 x_18, float3 n_19, float3 r_9, float4 lobe_6, 
     return _e10;
 }
 
-float3 shade_pick(uint li_6, float3 x_19, float3 n_20, float3 ng_4, GpuMaterial m, float3 wo_1, float3 r_10, float4 lobe_7, float4 rl_10, float w_6, uint nee_2, float u1_5, float u2_5)
+float3 shade_pick(uint li_6, float3 x_19, float3 n_20, float3 ng_4, GpuMaterial m, float3 wo_1, float3 r_10, float4 lobe_7, float4 rl_10, float w_7, uint nee_2, float u1_5, float u2_5)
 {
     float mis = 1.0;
 
     const float _e13 = light_range_scale(li_6, x_19, r_10, rl_10);
     float _e16 = params.eps;
-    const Connection _e17 = connect(li_6, x_19, n_20, ng_4, _e13, w_6, u1_5, u2_5, _e16);
+    const Connection _e17 = connect(li_6, x_19, n_20, ng_4, _e13, w_7, u1_5, u2_5, _e16);
     if ((_e17.cos_x <= 0.0)) {
         return (0.0).xxx;
     }

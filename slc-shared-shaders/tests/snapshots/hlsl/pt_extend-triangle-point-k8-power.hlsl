@@ -275,6 +275,12 @@ float bsh_range_bound(BshNode node_1)
     return _e8;
 }
 
+float bsh_reach_bound(BshNode node_2, float w_1)
+{
+    const float _e5 = bsh_range_bound(node_2);
+    return (node_2.extent + ((w_1 * 1.001) * _e5));
+}
+
 float reservoir_weight(uint n, uint k)
 {
     const float _e2 = to_f32_(n);
@@ -363,11 +369,11 @@ float3 onb_to_world(float3 n_3, float3 d)
     return (((_e2 * d.x) + (_e5 * d.y)) + (n_3 * d.z));
 }
 
-float3 onb_to_local(float3 n_4, float3 w_1)
+float3 onb_to_local(float3 n_4, float3 w_2)
 {
     const float3 _e2 = onb_tangent(n_4);
     const float3 _e4 = onb_bitangent(n_4);
-    return float3(dot(w_1, _e2), dot(w_1, _e4), dot(w_1, n_4));
+    return float3(dot(w_2, _e2), dot(w_2, _e4), dot(w_2, n_4));
 }
 
 float3 cosine_direction(float3 n_5, float u1_, float u2_)
@@ -777,11 +783,11 @@ float3 barycentric(float3 p_2, float3 a_4, float3 b_3, float3 c_3)
     return float3(((1.0 - w1_) - w2_), w1_, w2_);
 }
 
-float3 shading_normal(float3 n0_, float3 n1_, float3 n2_, float3 w_2, float3 facing)
+float3 shading_normal(float3 n0_, float3 n1_, float3 n2_, float3 w_3, float3 facing)
 {
     bool local_17 = (bool)0;
 
-    float3 s_4 = (((n0_ * w_2.x) + (n1_ * w_2.y)) + (n2_ * w_2.z));
+    float3 s_4 = (((n0_ * w_3.x) + (n1_ * w_3.y)) + (n2_ * w_3.z));
     float l2_1 = dot(s_4, s_4);
     if (!(!((l2_1 > 1e-12)))) {
         local_17 = !((l2_1 < 3e38));
@@ -845,9 +851,9 @@ float ray_triangle(float3 o_1, float3 d_4, float3 a_5, float3 b_4, float3 c_4, f
     return -1.0;
 }
 
-float3 camera_dir(float3 forward, float3 right, float3 up, float px, float py, float w_3, float h_1)
+float3 camera_dir(float3 forward, float3 right, float3 up, float px, float py, float w_4, float h_1)
 {
-    float sx = (((2.0 * px) / w_3) - 1.0);
+    float sx = (((2.0 * px) / w_4) - 1.0);
     float sy = (1.0 - ((2.0 * py) / h_1));
     return normalize(((forward + (right * sx)) + (up * sy)));
 }
@@ -935,7 +941,7 @@ GeoHit trace(float3 o_2, float3 d_5, float t_min_1, float t_max_2, bool any_hit)
     GeoHit hit = (GeoHit)0;
     uint stack[64] = (uint[64])0;
     uint sp = 0u;
-    uint node_2 = 0u;
+    uint node_3 = 0u;
     uint i = (uint)0;
 
     hit.t = t_max_2;
@@ -950,7 +956,7 @@ GeoHit trace(float3 o_2, float3 d_5, float t_min_1, float t_max_2, bool any_hit)
     while(true) {
         if (all(loop_bound == uint2(0u, 0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        uint _e21 = node_2;
+        uint _e21 = node_3;
         GpuGeoNode n_17 = ConstructGpuGeoNode(asfloat(geo_nodes.Load3(_e21*32+0)), asuint(geo_nodes.Load(_e21*32+12)), asfloat(geo_nodes.Load3(_e21*32+16)), asuint(geo_nodes.Load(_e21*32+28)));
         float _e27 = hit.t;
         const float _e28 = ray_aabb(o_2, _e14, n_17.bmin, n_17.bmax, _e27);
@@ -997,7 +1003,7 @@ GeoHit trace(float3 o_2, float3 d_5, float t_min_1, float t_max_2, bool any_hit)
                     uint _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_2 = n_17.first;
+                node_3 = n_17.first;
                 continue;
             }
         }
@@ -1009,7 +1015,7 @@ GeoHit trace(float3 o_2, float3 d_5, float t_min_1, float t_max_2, bool any_hit)
         sp = (_e75 - 1u);
         uint _e78 = sp;
         uint _e80 = stack[min(uint(_e78), 63u)];
-        node_2 = _e80;
+        node_3 = _e80;
     }
     GeoHit _e81 = hit;
     const GeoHit geohit_2 = _e81;
@@ -1107,17 +1113,17 @@ float bsh_inner_scale(float a_6, float3 v_9, float d2_4, float3 r_6, float4 rl_6
     return _e8;
 }
 
-bool bsh_reaches(BshNode node_3, float3 x_7, float3 r_7, float4 rl_7)
+bool bsh_reaches(BshNode node_4, float3 x_7, float3 r_7, float4 rl_7)
 {
     bool local_22 = (bool)0;
     bool local_23 = (bool)0;
 
-    const bool _e6 = sphere_contains_point(node_3.center_, node_3.radius, x_7);
+    const bool _e6 = sphere_contains_point(node_4.center_, node_4.radius, x_7);
     if (_e6) {
         return true;
     }
     if (!((rl_7.w <= 1.0))) {
-        const bool _e20 = sphere_contains_point(node_3.center_, (node_3.radius * (rl_7.w * 1.0001)), x_7);
+        const bool _e20 = sphere_contains_point(node_4.center_, (node_4.radius * (rl_7.w * 1.0001)), x_7);
         local_22 = !(_e20);
     } else {
         local_22 = true;
@@ -1126,29 +1132,29 @@ bool bsh_reaches(BshNode node_3, float3 x_7, float3 r_7, float4 rl_7)
     if (_e23) {
         return false;
     }
-    const float _e25 = bsh_range_bound(node_3);
-    float3 v_14 = (x_7 - node_3.center_);
+    float3 v_14 = (x_7 - node_4.center_);
     float d2_6 = dot(v_14, v_14);
-    float reach_max = (node_3.extent + ((rl_7.w * 1.001) * _e25));
-    if ((d2_6 > (reach_max * reach_max))) {
+    const float _e29 = bsh_reach_bound(node_4, rl_7.w);
+    if ((d2_6 > (_e29 * _e29))) {
         return false;
     }
-    if ((node_3.child == BSH_NONE)) {
-        const float _e43 = range_scale_toward(rl_7, node_3.center_, node_3.extent, x_7, r_7);
-        const float _e46 = bsh_scaled_radius(node_3, sqrt(_e43));
-        const bool _e47 = sphere_contains_point(node_3.center_, _e46, x_7);
-        return _e47;
+    if ((node_4.child == BSH_NONE)) {
+        const float _e38 = range_scale_toward(rl_7, node_4.center_, node_4.extent, x_7, r_7);
+        const float _e41 = bsh_scaled_radius(node_4, sqrt(_e38));
+        const bool _e42 = sphere_contains_point(node_4.center_, _e41, x_7);
+        return _e42;
     }
-    const float _e50 = bsh_inner_scale(node_3.extent, -(v_14), d2_6, r_7, rl_7);
-    float s_c = (_e50 * 1.001);
-    float reach = (node_3.extent + (sqrt(s_c) * _e25));
-    if ((d2_6 <= ((node_3.radius * node_3.radius) * s_c))) {
+    const float _e45 = bsh_inner_scale(node_4.extent, -(v_14), d2_6, r_7, rl_7);
+    float s_c = (_e45 * 1.001);
+    const float _e50 = bsh_range_bound(node_4);
+    float reach = (node_4.extent + (sqrt(s_c) * _e50));
+    if ((d2_6 <= ((node_4.radius * node_4.radius) * s_c))) {
         local_23 = (d2_6 <= (reach * reach));
     } else {
         local_23 = false;
     }
-    bool _e67 = local_23;
-    return _e67;
+    bool _e63 = local_23;
+    return _e63;
 }
 
 BshNode bsh_range_leaf(uint nodes_1, uint i_2)

@@ -290,10 +290,10 @@ float connection_cosine(
     if (_e16) {
         return 0.0;
     }
-    metal::float3 w_3 = v_3 / metal::float3(metal::sqrt(d2_6));
-    float cos_x_1 = -(metal::dot(n, w_3));
+    metal::float3 w_4 = v_3 / metal::float3(metal::sqrt(d2_6));
+    float cos_x_1 = -(metal::dot(n, w_4));
     if (!((cos_x_1 <= 0.0))) {
-        local_1 = metal::dot(ng, w_3) >= 0.0;
+        local_1 = metal::dot(ng, w_4) >= 0.0;
     } else {
         local_1 = true;
     }
@@ -573,6 +573,14 @@ float bsh_range_bound(
     return _e8;
 }
 
+float bsh_reach_bound(
+    BshNode node_2,
+    float w_2
+) {
+    float _e5 = bsh_range_bound(node_2);
+    return node_2.extent + ((w_2 * 1.001) * _e5);
+}
+
 uint mul_hi_u32_(
     uint a_3,
     uint b_2
@@ -794,7 +802,7 @@ float ray_triangle(
 
 metal::float3 light_intensity(
     GpuLight l,
-    metal::float3 w_2,
+    metal::float3 w_3,
     device type_4 const& slc_table,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -803,11 +811,11 @@ metal::float3 light_intensity(
             return l.intensity;
         }
         case 1u: {
-            float _e11 = spot_falloff(metal::dot(l.p1_, w_2), l.a, l.b, l.p2_[0]);
+            float _e11 = spot_falloff(metal::dot(l.p1_, w_3), l.a, l.b, l.p2_[0]);
             return l.intensity * _e11;
         }
         case 2u: {
-            float _e18 = ies_light_candela(0u, l.ies_base, l.p1_, l.p2_, w_2, slc_table, _buffer_sizes);
+            float _e18 = ies_light_candela(0u, l.ies_base, l.p1_, l.p2_, w_3, slc_table, _buffer_sizes);
             return l.intensity * _e18;
         }
         default: {
@@ -837,7 +845,7 @@ GeoHit trace(
     GeoHit hit = {};
     type_8 stack = {};
     uint sp = 0u;
-    uint node_2 = 0u;
+    uint node_3 = 0u;
     uint i_1 = {};
     hit.t = t_max_2;
     hit.tri = NO_LIGHT;
@@ -850,7 +858,7 @@ GeoHit trace(
     while(true) {
         if (metal::all(loop_bound_1 == uint2(0u))) { break; }
         loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
-        uint _e21 = node_2;
+        uint _e21 = node_3;
         GpuGeoNode n_9 = geo_nodes[_e21];
         float _e27 = hit.t;
         float _e28 = ray_aabb(o_2, _e14, n_9.bmin, n_9.bmax, _e27);
@@ -896,7 +904,7 @@ GeoHit trace(
                     uint _e68 = sp;
                     sp = _e68 + 1u;
                 }
-                node_2 = n_9.first;
+                node_3 = n_9.first;
                 continue;
             }
         }
@@ -908,7 +916,7 @@ GeoHit trace(
         sp = _e75 - 1u;
         uint _e78 = sp;
         uint _e80 = stack.inner[_e78];
-        node_2 = _e80;
+        node_3 = _e80;
     }
     GeoHit _e81 = hit;
     return _e81;
@@ -974,19 +982,19 @@ float bsh_inner_scale(
 }
 
 bool bsh_reaches(
-    BshNode node_3,
+    BshNode node_4,
     metal::float3 x_9,
     metal::float3 r_3,
     metal::float4 rl_3
 ) {
     bool local_8 = {};
     bool local_9 = {};
-    bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_9);
+    bool _e6 = sphere_contains_point(node_4.center, node_4.radius, x_9);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
-        bool _e20 = sphere_contains_point(node_3.center, node_3.radius * (rl_3.w * 1.0001), x_9);
+        bool _e20 = sphere_contains_point(node_4.center, node_4.radius * (rl_3.w * 1.0001), x_9);
         local_8 = !(_e20);
     } else {
         local_8 = true;
@@ -995,29 +1003,29 @@ bool bsh_reaches(
     if (_e23) {
         return false;
     }
-    float _e25 = bsh_range_bound(node_3);
-    metal::float3 v_6 = x_9 - node_3.center;
+    metal::float3 v_6 = x_9 - node_4.center;
     float d2_7 = metal::dot(v_6, v_6);
-    float reach_max = node_3.extent + ((rl_3.w * 1.001) * _e25);
-    if (d2_7 > (reach_max * reach_max)) {
+    float _e29 = bsh_reach_bound(node_4, rl_3.w);
+    if (d2_7 > (_e29 * _e29)) {
         return false;
     }
-    if (node_3.child == BSH_NONE) {
-        float _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_9, r_3);
-        float _e46 = bsh_scaled_radius(node_3, metal::sqrt(_e43));
-        bool _e47 = sphere_contains_point(node_3.center, _e46, x_9);
-        return _e47;
+    if (node_4.child == BSH_NONE) {
+        float _e38 = range_scale_toward(rl_3, node_4.center, node_4.extent, x_9, r_3);
+        float _e41 = bsh_scaled_radius(node_4, metal::sqrt(_e38));
+        bool _e42 = sphere_contains_point(node_4.center, _e41, x_9);
+        return _e42;
     }
-    float _e50 = bsh_inner_scale(node_3.extent, -(v_6), d2_7, r_3, rl_3);
-    float s_c = _e50 * 1.001;
-    float reach = node_3.extent + (metal::sqrt(s_c) * _e25);
-    if (d2_7 <= ((node_3.radius * node_3.radius) * s_c)) {
+    float _e45 = bsh_inner_scale(node_4.extent, -(v_6), d2_7, r_3, rl_3);
+    float s_c = _e45 * 1.001;
+    float _e50 = bsh_range_bound(node_4);
+    float reach = node_4.extent + (metal::sqrt(s_c) * _e50);
+    if (d2_7 <= ((node_4.radius * node_4.radius) * s_c)) {
         local_9 = d2_7 <= (reach * reach);
     } else {
         local_9 = false;
     }
-    bool _e67 = local_9;
-    return _e67;
+    bool _e63 = local_9;
+    return _e63;
 }
 
 uint bsh_next_leaf_lobe(

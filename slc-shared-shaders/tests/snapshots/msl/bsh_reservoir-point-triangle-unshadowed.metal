@@ -243,10 +243,10 @@ float connection_cosine(
     if (_e16) {
         return 0.0;
     }
-    metal::float3 w_3 = v_3 / metal::float3(metal::sqrt(d2_6));
-    float cos_x_1 = -(metal::dot(n, w_3));
+    metal::float3 w_4 = v_3 / metal::float3(metal::sqrt(d2_6));
+    float cos_x_1 = -(metal::dot(n, w_4));
     if (!((cos_x_1 <= 0.0))) {
-        local_1 = metal::dot(ng, w_3) >= 0.0;
+        local_1 = metal::dot(ng, w_4) >= 0.0;
     } else {
         local_1 = true;
     }
@@ -299,6 +299,14 @@ float bsh_range_bound(
     }
     float _e8 = f32_from_bits(node_1.light);
     return _e8;
+}
+
+float bsh_reach_bound(
+    BshNode node_2,
+    float w_2
+) {
+    float _e5 = bsh_range_bound(node_2);
+    return node_2.extent + ((w_2 * 1.001) * _e5);
 }
 
 uint mul_hi_u32_(
@@ -447,7 +455,7 @@ metal::float3 triangle_normal(
 
 metal::float3 light_intensity(
     GpuLight l,
-    metal::float3 w_2
+    metal::float3 w_3
 ) {
     switch(l.kind) {
         case 0u: {
@@ -455,7 +463,7 @@ metal::float3 light_intensity(
         }
         case 3u: {
             metal::float3 _e8 = triangle_normal(l.p0_, l.p1_, l.p2_);
-            float _e10 = triangle_lobe(_e8, l.a, w_2);
+            float _e10 = triangle_lobe(_e8, l.a, w_3);
             return l.intensity * _e10;
         }
         default: {
@@ -526,19 +534,19 @@ float bsh_inner_scale(
 }
 
 bool bsh_reaches(
-    BshNode node_2,
+    BshNode node_3,
     metal::float3 x_3,
     metal::float3 r_3,
     metal::float4 rl_3
 ) {
     bool local_5 = {};
     bool local_6 = {};
-    bool _e6 = sphere_contains_point(node_2.center, node_2.radius, x_3);
+    bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_3);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
-        bool _e20 = sphere_contains_point(node_2.center, node_2.radius * (rl_3.w * 1.0001), x_3);
+        bool _e20 = sphere_contains_point(node_3.center, node_3.radius * (rl_3.w * 1.0001), x_3);
         local_5 = !(_e20);
     } else {
         local_5 = true;
@@ -547,29 +555,29 @@ bool bsh_reaches(
     if (_e23) {
         return false;
     }
-    float _e25 = bsh_range_bound(node_2);
-    metal::float3 v_5 = x_3 - node_2.center;
+    metal::float3 v_5 = x_3 - node_3.center;
     float d2_7 = metal::dot(v_5, v_5);
-    float reach_max = node_2.extent + ((rl_3.w * 1.001) * _e25);
-    if (d2_7 > (reach_max * reach_max)) {
+    float _e29 = bsh_reach_bound(node_3, rl_3.w);
+    if (d2_7 > (_e29 * _e29)) {
         return false;
     }
-    if (node_2.child == BSH_NONE) {
-        float _e43 = range_scale_toward(rl_3, node_2.center, node_2.extent, x_3, r_3);
-        float _e46 = bsh_scaled_radius(node_2, metal::sqrt(_e43));
-        bool _e47 = sphere_contains_point(node_2.center, _e46, x_3);
-        return _e47;
+    if (node_3.child == BSH_NONE) {
+        float _e38 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_3, r_3);
+        float _e41 = bsh_scaled_radius(node_3, metal::sqrt(_e38));
+        bool _e42 = sphere_contains_point(node_3.center, _e41, x_3);
+        return _e42;
     }
-    float _e50 = bsh_inner_scale(node_2.extent, -(v_5), d2_7, r_3, rl_3);
-    float s_c = _e50 * 1.001;
-    float reach = node_2.extent + (metal::sqrt(s_c) * _e25);
-    if (d2_7 <= ((node_2.radius * node_2.radius) * s_c)) {
+    float _e45 = bsh_inner_scale(node_3.extent, -(v_5), d2_7, r_3, rl_3);
+    float s_c = _e45 * 1.001;
+    float _e50 = bsh_range_bound(node_3);
+    float reach = node_3.extent + (metal::sqrt(s_c) * _e50);
+    if (d2_7 <= ((node_3.radius * node_3.radius) * s_c)) {
         local_6 = d2_7 <= (reach * reach);
     } else {
         local_6 = false;
     }
-    bool _e67 = local_6;
-    return _e67;
+    bool _e63 = local_6;
+    return _e63;
 }
 
 uint bsh_next_leaf_lobe(

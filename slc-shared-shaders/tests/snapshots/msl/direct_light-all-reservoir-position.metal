@@ -318,10 +318,10 @@ float connection_cosine(
     if (_e16) {
         return 0.0;
     }
-    metal::float3 w_9 = v_4 / metal::float3(metal::sqrt(d2_6));
-    float cos_x_1 = -(metal::dot(n_1, w_9));
+    metal::float3 w_10 = v_4 / metal::float3(metal::sqrt(d2_6));
+    float cos_x_1 = -(metal::dot(n_1, w_10));
     if (!((cos_x_1 <= 0.0))) {
-        local_6 = metal::dot(ng, w_9) >= 0.0;
+        local_6 = metal::dot(ng, w_10) >= 0.0;
     } else {
         local_6 = true;
     }
@@ -622,6 +622,14 @@ float bsh_range_bound(
     return _e8;
 }
 
+float bsh_reach_bound(
+    BshNode node_2,
+    float w_3
+) {
+    float _e5 = bsh_range_bound(node_2);
+    return node_2.extent + ((w_3 * 1.001) * _e5);
+}
+
 uint mul_hi_u32_(
     uint a_4,
     uint b_3
@@ -811,7 +819,7 @@ metal::float3 triangle_normal(
 
 metal::float3 light_intensity(
     GpuLight l,
-    metal::float3 w_3,
+    metal::float3 w_4,
     device type_4 const& slc_table,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -820,16 +828,16 @@ metal::float3 light_intensity(
             return l.intensity;
         }
         case 1u: {
-            float _e11 = spot_falloff(metal::dot(l.p1_, w_3), l.a, l.b, l.p2_[0]);
+            float _e11 = spot_falloff(metal::dot(l.p1_, w_4), l.a, l.b, l.p2_[0]);
             return l.intensity * _e11;
         }
         case 2u: {
-            float _e18 = ies_light_candela(0u, l.ies_base, l.p1_, l.p2_, w_3, slc_table, _buffer_sizes);
+            float _e18 = ies_light_candela(0u, l.ies_base, l.p1_, l.p2_, w_4, slc_table, _buffer_sizes);
             return l.intensity * _e18;
         }
         case 3u: {
             metal::float3 _e24 = triangle_normal(l.p0_, l.p1_, l.p2_);
-            float _e26 = triangle_lobe(_e24, l.a, w_3);
+            float _e26 = triangle_lobe(_e24, l.a, w_4);
             return l.intensity * _e26;
         }
         default: {
@@ -900,19 +908,19 @@ float bsh_inner_scale(
 }
 
 bool bsh_reaches(
-    BshNode node_2,
+    BshNode node_3,
     metal::float3 x_8,
     metal::float3 r_5,
     metal::float4 rl_3
 ) {
     bool local_11 = {};
     bool local_12 = {};
-    bool _e6 = sphere_contains_point(node_2.center, node_2.radius, x_8);
+    bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_8);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
-        bool _e20 = sphere_contains_point(node_2.center, node_2.radius * (rl_3.w * 1.0001), x_8);
+        bool _e20 = sphere_contains_point(node_3.center, node_3.radius * (rl_3.w * 1.0001), x_8);
         local_11 = !(_e20);
     } else {
         local_11 = true;
@@ -921,38 +929,38 @@ bool bsh_reaches(
     if (_e23) {
         return false;
     }
-    float _e25 = bsh_range_bound(node_2);
-    metal::float3 v_6 = x_8 - node_2.center;
+    metal::float3 v_6 = x_8 - node_3.center;
     float d2_7 = metal::dot(v_6, v_6);
-    float reach_max = node_2.extent + ((rl_3.w * 1.001) * _e25);
-    if (d2_7 > (reach_max * reach_max)) {
+    float _e29 = bsh_reach_bound(node_3, rl_3.w);
+    if (d2_7 > (_e29 * _e29)) {
         return false;
     }
-    if (node_2.child == BSH_NONE) {
-        float _e43 = range_scale_toward(rl_3, node_2.center, node_2.extent, x_8, r_5);
-        float _e46 = bsh_scaled_radius(node_2, metal::sqrt(_e43));
-        bool _e47 = sphere_contains_point(node_2.center, _e46, x_8);
-        return _e47;
+    if (node_3.child == BSH_NONE) {
+        float _e38 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_8, r_5);
+        float _e41 = bsh_scaled_radius(node_3, metal::sqrt(_e38));
+        bool _e42 = sphere_contains_point(node_3.center, _e41, x_8);
+        return _e42;
     }
-    float _e50 = bsh_inner_scale(node_2.extent, -(v_6), d2_7, r_5, rl_3);
-    float s_c = _e50 * 1.001;
-    float reach = node_2.extent + (metal::sqrt(s_c) * _e25);
-    if (d2_7 <= ((node_2.radius * node_2.radius) * s_c)) {
+    float _e45 = bsh_inner_scale(node_3.extent, -(v_6), d2_7, r_5, rl_3);
+    float s_c = _e45 * 1.001;
+    float _e50 = bsh_range_bound(node_3);
+    float reach = node_3.extent + (metal::sqrt(s_c) * _e50);
+    if (d2_7 <= ((node_3.radius * node_3.radius) * s_c)) {
         local_12 = d2_7 <= (reach * reach);
     } else {
         local_12 = false;
     }
-    bool _e67 = local_12;
-    return _e67;
+    bool _e63 = local_12;
+    return _e63;
 }
 
 bool bsh_reaches_box(
-    BshNode node_3,
+    BshNode node_4,
     metal::float3 lo_3,
     metal::float3 hi_3,
-    float w_4
+    float w_5
 ) {
-    bool _e13 = sphere_overlaps_aabb(node_3.center, node_3.radius * (metal::max(1.0, w_4 * 1.0001) * 1.0001), lo_3, hi_3);
+    bool _e13 = sphere_overlaps_aabb(node_4.center, node_4.radius * (metal::max(1.0, w_5 * 1.0001) * 1.0001), lo_3, hi_3);
     return _e13;
 }
 
@@ -1016,7 +1024,7 @@ uint bsh_next_leaf_box(
     uint end,
     metal::float3 lo_4,
     metal::float3 hi_4,
-    float w_5,
+    float w_6,
     device type_9 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1034,7 +1042,7 @@ uint bsh_next_leaf_box(
         {
             uint _e9 = i_3;
             BshNode _e10 = bsh_node(nodes_4, _e9, bsh_nodes, _buffer_sizes);
-            bool _e11 = bsh_reaches_box(_e10, lo_4, hi_4, w_5);
+            bool _e11 = bsh_reaches_box(_e10, lo_4, hi_4, w_6);
             if (_e11) {
                 if (_e10.child == BSH_NONE) {
                     if ((_e10.light & BSH_TAIL) == 0u) {
@@ -1323,7 +1331,7 @@ uint tile_subtree(
 TileWalk tile_walk_begin(
     uint li_3,
     metal::float3 x_11,
-    float w_6,
+    float w_7,
     bool has_1,
     device type_9 const& bsh_nodes,
     threadgroup type_14& wg_lo,
@@ -1341,12 +1349,12 @@ TileWalk tile_walk_begin(
     uint sum = 0u;
     uint s_5 = 0u;
     if (has_1) {
-        local_19 = w_6 >= 0.0;
+        local_19 = w_7 >= 0.0;
     } else {
         local_19 = false;
     }
     bool _e12 = local_19;
-    uint _e14 = metal::atomic_fetch_max_explicit(&tile_scale, _e12 ? as_type<uint>(w_6) : 0u, metal::memory_order_relaxed);
+    uint _e14 = metal::atomic_fetch_max_explicit(&tile_scale, _e12 ? as_type<uint>(w_7) : 0u, metal::memory_order_relaxed);
     WorkgroupBox _e15 = workgroup_box(li_3, x_11, has_1, wg_lo, wg_hi, wg_box);
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
     uint unnamed_1 = metal::atomic_load_explicit(&tile_scale, metal::memory_order_relaxed);
@@ -1496,7 +1504,7 @@ Shaded shade_pick_traced(
     metal::float3 r_6,
     metal::float4 rl_4,
     Material m_2,
-    float w_7,
+    float w_8,
     float u1_4,
     float u2_4,
     float eps_2,
@@ -1507,7 +1515,7 @@ Shaded shade_pick_traced(
     device type_4 const& r2_3,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Connection _e12 = connect_traced(li_5, x_13, n_11, n_11, 1.0, w_7, u1_4, u2_4, eps_2, trace_2, slc_table, lights, rt2_3, r2_3, _buffer_sizes);
+    Connection _e12 = connect_traced(li_5, x_13, n_11, n_11, 1.0, w_8, u1_4, u2_4, eps_2, trace_2, slc_table, lights, rt2_3, r2_3, _buffer_sizes);
     Shaded _e13 = shade_connection(_e12, x_13, n_11, m_2);
     return _e13;
 }
@@ -1519,7 +1527,7 @@ Shaded shade_pick(
     metal::float3 r_7,
     metal::float4 rl_5,
     Material m_3,
-    float w_8,
+    float w_9,
     float u1_5,
     float u2_5,
     float eps_3,
@@ -1529,7 +1537,7 @@ Shaded shade_pick(
     device type_4 const& r2_3,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Shaded _e11 = shade_pick_traced(li_6, x_14, n_12, r_7, rl_5, m_3, w_8, u1_5, u2_5, eps_3, true, slc_table, lights, rt2_3, r2_3, _buffer_sizes);
+    Shaded _e11 = shade_pick_traced(li_6, x_14, n_12, r_7, rl_5, m_3, w_9, u1_5, u2_5, eps_3, true, slc_table, lights, rt2_3, r2_3, _buffer_sizes);
     return _e11;
 }
 

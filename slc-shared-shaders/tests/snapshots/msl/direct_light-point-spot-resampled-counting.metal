@@ -331,10 +331,10 @@ float connection_cosine(
     if (_e16) {
         return 0.0;
     }
-    metal::float3 w_9 = v_4 / metal::float3(metal::sqrt(d2_6));
-    float cos_x_1 = -(metal::dot(n_1, w_9));
+    metal::float3 w_10 = v_4 / metal::float3(metal::sqrt(d2_6));
+    float cos_x_1 = -(metal::dot(n_1, w_10));
     if (!((cos_x_1 <= 0.0))) {
-        local_8 = metal::dot(ng, w_9) >= 0.0;
+        local_8 = metal::dot(ng, w_10) >= 0.0;
     } else {
         local_8 = true;
     }
@@ -379,6 +379,14 @@ float bsh_range_bound(
     }
     float _e8 = f32_from_bits(node_1.light);
     return _e8;
+}
+
+float bsh_reach_bound(
+    BshNode node_2,
+    float w_2
+) {
+    float _e5 = bsh_range_bound(node_2);
+    return node_2.extent + ((w_2 * 1.001) * _e5);
 }
 
 float weighted_threshold(
@@ -427,19 +435,19 @@ metal::float3 slot_share(
 ) {
     if (k_3 < 3u) {
         float _e4 = to_f32_(k_3);
-        float w_10 = 1.0 / _e4;
-        return metal::float3(w_10, w_10, w_10);
+        float w_11 = 1.0 / _e4;
+        return metal::float3(w_11, w_11, w_11);
     }
     uint j_4 = naga_mod(slot_1, 3u);
     float _e15 = to_f32_(naga_div((k_3 + 2u) - j_4, 3u));
-    float w_11 = 1.0 / _e15;
+    float w_12 = 1.0 / _e15;
     if (j_4 == 0u) {
-        return metal::float3(w_11, 0.0, 0.0);
+        return metal::float3(w_12, 0.0, 0.0);
     }
     if (j_4 == 1u) {
-        return metal::float3(0.0, w_11, 0.0);
+        return metal::float3(0.0, w_12, 0.0);
     }
-    return metal::float3(0.0, 0.0, w_11);
+    return metal::float3(0.0, 0.0, w_12);
 }
 
 float smith_root(
@@ -645,14 +653,14 @@ float ray_triangle(
 
 metal::float3 light_intensity(
     GpuLight l,
-    metal::float3 w_2
+    metal::float3 w_3
 ) {
     switch(l.kind) {
         case 0u: {
             return l.intensity;
         }
         case 1u: {
-            float _e11 = spot_falloff(metal::dot(l.p1_, w_2), l.a, l.b, l.p2_[0]);
+            float _e11 = spot_falloff(metal::dot(l.p1_, w_3), l.a, l.b, l.p2_[0]);
             return l.intensity * _e11;
         }
         default: {
@@ -683,7 +691,7 @@ GeoHit trace(
     GeoHit hit = {};
     type_9 stack = {};
     uint sp = 0u;
-    uint node_2 = 0u;
+    uint node_3 = 0u;
     uint i = {};
     hit.t = t_max_2;
     hit.tri = NO_LIGHT;
@@ -696,7 +704,7 @@ GeoHit trace(
     while(true) {
         if (metal::all(loop_bound == uint2(0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        uint _e21 = node_2;
+        uint _e21 = node_3;
         GpuGeoNode n_8 = geo_nodes[_e21];
         uint _e25 = nodes_visited;
         nodes_visited = _e25 + 1u;
@@ -744,7 +752,7 @@ GeoHit trace(
                     uint _e72 = sp;
                     sp = _e72 + 1u;
                 }
-                node_2 = n_8.first;
+                node_3 = n_8.first;
                 continue;
             }
         }
@@ -756,7 +764,7 @@ GeoHit trace(
         sp = _e79 - 1u;
         uint _e82 = sp;
         uint _e84 = stack.inner[_e82];
-        node_2 = _e84;
+        node_3 = _e84;
     }
     GeoHit _e85 = hit;
     return _e85;
@@ -826,19 +834,19 @@ float bsh_inner_scale(
 }
 
 bool bsh_reaches(
-    BshNode node_3,
+    BshNode node_4,
     metal::float3 x_4,
     metal::float3 r_5,
     metal::float4 rl_3
 ) {
     bool local_14 = {};
     bool local_15 = {};
-    bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_4);
+    bool _e6 = sphere_contains_point(node_4.center, node_4.radius, x_4);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
-        bool _e20 = sphere_contains_point(node_3.center, node_3.radius * (rl_3.w * 1.0001), x_4);
+        bool _e20 = sphere_contains_point(node_4.center, node_4.radius * (rl_3.w * 1.0001), x_4);
         local_14 = !(_e20);
     } else {
         local_14 = true;
@@ -847,38 +855,38 @@ bool bsh_reaches(
     if (_e23) {
         return false;
     }
-    float _e25 = bsh_range_bound(node_3);
-    metal::float3 v_7 = x_4 - node_3.center;
+    metal::float3 v_7 = x_4 - node_4.center;
     float d2_7 = metal::dot(v_7, v_7);
-    float reach_max = node_3.extent + ((rl_3.w * 1.001) * _e25);
-    if (d2_7 > (reach_max * reach_max)) {
+    float _e29 = bsh_reach_bound(node_4, rl_3.w);
+    if (d2_7 > (_e29 * _e29)) {
         return false;
     }
-    if (node_3.child == BSH_NONE) {
-        float _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_4, r_5);
-        float _e46 = bsh_scaled_radius(node_3, metal::sqrt(_e43));
-        bool _e47 = sphere_contains_point(node_3.center, _e46, x_4);
-        return _e47;
+    if (node_4.child == BSH_NONE) {
+        float _e38 = range_scale_toward(rl_3, node_4.center, node_4.extent, x_4, r_5);
+        float _e41 = bsh_scaled_radius(node_4, metal::sqrt(_e38));
+        bool _e42 = sphere_contains_point(node_4.center, _e41, x_4);
+        return _e42;
     }
-    float _e50 = bsh_inner_scale(node_3.extent, -(v_7), d2_7, r_5, rl_3);
-    float s_c = _e50 * 1.001;
-    float reach = node_3.extent + (metal::sqrt(s_c) * _e25);
-    if (d2_7 <= ((node_3.radius * node_3.radius) * s_c)) {
+    float _e45 = bsh_inner_scale(node_4.extent, -(v_7), d2_7, r_5, rl_3);
+    float s_c = _e45 * 1.001;
+    float _e50 = bsh_range_bound(node_4);
+    float reach = node_4.extent + (metal::sqrt(s_c) * _e50);
+    if (d2_7 <= ((node_4.radius * node_4.radius) * s_c)) {
         local_15 = d2_7 <= (reach * reach);
     } else {
         local_15 = false;
     }
-    bool _e67 = local_15;
-    return _e67;
+    bool _e63 = local_15;
+    return _e63;
 }
 
 bool bsh_reaches_box(
-    BshNode node_4,
+    BshNode node_5,
     metal::float3 lo,
     metal::float3 hi,
-    float w_3
+    float w_4
 ) {
-    bool _e13 = sphere_overlaps_aabb(node_4.center, node_4.radius * (metal::max(1.0, w_3 * 1.0001) * 1.0001), lo, hi);
+    bool _e13 = sphere_overlaps_aabb(node_5.center, node_5.radius * (metal::max(1.0, w_4 * 1.0001) * 1.0001), lo, hi);
     return _e13;
 }
 
@@ -942,7 +950,7 @@ uint bsh_next_leaf_box(
     uint end,
     metal::float3 lo_1,
     metal::float3 hi_1,
-    float w_4,
+    float w_5,
     device type_13 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -960,7 +968,7 @@ uint bsh_next_leaf_box(
         {
             uint _e9 = i_3;
             BshNode _e10 = bsh_node(nodes_4, _e9, bsh_nodes, _buffer_sizes);
-            bool _e11 = bsh_reaches_box(_e10, lo_1, hi_1, w_4);
+            bool _e11 = bsh_reaches_box(_e10, lo_1, hi_1, w_5);
             if (_e11) {
                 if (_e10.child == BSH_NONE) {
                     if ((_e10.light & BSH_TAIL) == 0u) {
@@ -1233,7 +1241,7 @@ uint tile_subtree(
 TileWalk tile_walk_begin(
     uint li_3,
     metal::float3 x_7,
-    float w_5,
+    float w_6,
     bool has_1,
     device type_13 const& bsh_nodes,
     threadgroup type_19& wg_lo,
@@ -1251,12 +1259,12 @@ TileWalk tile_walk_begin(
     uint sum_1 = 0u;
     uint s_5 = 0u;
     if (has_1) {
-        local_22 = w_5 >= 0.0;
+        local_22 = w_6 >= 0.0;
     } else {
         local_22 = false;
     }
     bool _e12 = local_22;
-    uint _e14 = metal::atomic_fetch_max_explicit(&tile_scale, _e12 ? as_type<uint>(w_5) : 0u, metal::memory_order_relaxed);
+    uint _e14 = metal::atomic_fetch_max_explicit(&tile_scale, _e12 ? as_type<uint>(w_6) : 0u, metal::memory_order_relaxed);
     WorkgroupBox _e15 = workgroup_box(li_3, x_7, has_1, wg_lo, wg_hi, wg_box);
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
     uint unnamed_1 = metal::atomic_load_explicit(&tile_scale, metal::memory_order_relaxed);
@@ -1421,7 +1429,7 @@ Shaded shade_pick_traced(
     metal::float3 r_6,
     metal::float4 rl_4,
     Material m_2,
-    float w_6,
+    float w_7,
     float u1_3,
     float u2_3,
     float eps_2,
@@ -1435,7 +1443,7 @@ Shaded shade_pick_traced(
     device type_4 const& r2_3,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Connection _e12 = connect_traced(li_5, x_9, n_6, n_6, 1.0, w_6, u1_3, u2_3, eps_2, trace_3, rays_cast, nodes_visited, geo_nodes, geo_tris, lights, rt2_3, r2_3, _buffer_sizes);
+    Connection _e12 = connect_traced(li_5, x_9, n_6, n_6, 1.0, w_7, u1_3, u2_3, eps_2, trace_3, rays_cast, nodes_visited, geo_nodes, geo_tris, lights, rt2_3, r2_3, _buffer_sizes);
     Shaded _e13 = shade_connection(_e12, x_9, n_6, m_2);
     return _e13;
 }
@@ -1447,7 +1455,7 @@ Shaded shade_pick(
     metal::float3 r_7,
     metal::float4 rl_5,
     Material m_3,
-    float w_7,
+    float w_8,
     float u1_4,
     float u2_4,
     float eps_3,
@@ -1460,7 +1468,7 @@ Shaded shade_pick(
     device type_4 const& r2_3,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Shaded _e11 = shade_pick_traced(li_6, x_10, n_7, r_7, rl_5, m_3, w_7, u1_4, u2_4, eps_3, true, rays_cast, nodes_visited, geo_nodes, geo_tris, lights, rt2_3, r2_3, _buffer_sizes);
+    Shaded _e11 = shade_pick_traced(li_6, x_10, n_7, r_7, rl_5, m_3, w_8, u1_4, u2_4, eps_3, true, rays_cast, nodes_visited, geo_nodes, geo_tris, lights, rt2_3, r2_3, _buffer_sizes);
     return _e11;
 }
 
@@ -1473,9 +1481,9 @@ Shaded add(
 
 Shaded scaled(
     Shaded s_8,
-    metal::float3 w_8
+    metal::float3 w_9
 ) {
-    return Shaded {s_8.e * w_8, s_8.diffuse * w_8, s_8.specular * w_8};
+    return Shaded {s_8.e * w_9, s_8.diffuse * w_9, s_8.specular * w_9};
 }
 
 type_16 first_holders(

@@ -402,10 +402,10 @@ float connection_cosine(
     if (_e16) {
         return 0.0;
     }
-    metal::float3 w_11 = v_7 / metal::float3(metal::sqrt(d2_6));
-    float cos_x_1 = -(metal::dot(n_1, w_11));
+    metal::float3 w_12 = v_7 / metal::float3(metal::sqrt(d2_6));
+    float cos_x_1 = -(metal::dot(n_1, w_12));
     if (!((cos_x_1 <= 0.0))) {
-        local_9 = metal::dot(ng, w_11) >= 0.0;
+        local_9 = metal::dot(ng, w_12) >= 0.0;
     } else {
         local_9 = true;
     }
@@ -460,12 +460,20 @@ float bsh_range_bound(
     return _e8;
 }
 
+float bsh_reach_bound(
+    BshNode node_2,
+    float w_3
+) {
+    float _e5 = bsh_range_bound(node_2);
+    return node_2.extent + ((w_3 * 1.001) * _e5);
+}
+
 bool weighted_replace(
-    float w_3,
+    float w_4,
     float w_sum,
     float u_2
 ) {
-    return (u_2 * w_sum) < w_3;
+    return (u_2 * w_sum) < w_4;
 }
 
 float weighted_threshold(
@@ -514,19 +522,19 @@ metal::float3 slot_share(
 ) {
     if (k_3 < 3u) {
         float _e4 = to_f32_(k_3);
-        float w_12 = 1.0 / _e4;
-        return metal::float3(w_12, w_12, w_12);
+        float w_13 = 1.0 / _e4;
+        return metal::float3(w_13, w_13, w_13);
     }
     uint j_7 = naga_mod(slot_1, 3u);
     float _e15 = to_f32_(naga_div((k_3 + 2u) - j_7, 3u));
-    float w_13 = 1.0 / _e15;
+    float w_14 = 1.0 / _e15;
     if (j_7 == 0u) {
-        return metal::float3(w_13, 0.0, 0.0);
+        return metal::float3(w_14, 0.0, 0.0);
     }
     if (j_7 == 1u) {
-        return metal::float3(0.0, w_13, 0.0);
+        return metal::float3(0.0, w_14, 0.0);
     }
-    return metal::float3(0.0, 0.0, w_13);
+    return metal::float3(0.0, 0.0, w_14);
 }
 
 float grid_coordinate(
@@ -556,12 +564,12 @@ float gris_weight(
     float own,
     float all,
     float p_hat,
-    float w_4
+    float w_5
 ) {
     if (!((all > 0.0))) {
         return 0.0;
     }
-    return ((own / all) * p_hat) * w_4;
+    return ((own / all) * p_hat) * w_5;
 }
 
 float gris_contribution_weight(
@@ -1006,7 +1014,7 @@ bool history_matches(
 
 metal::float3 light_intensity(
     GpuLight l_1,
-    metal::float3 w_5
+    metal::float3 w_6
 ) {
     switch(l_1.kind) {
         case 0u: {
@@ -1014,7 +1022,7 @@ metal::float3 light_intensity(
         }
         case 3u: {
             metal::float3 _e8 = triangle_normal(l_1.p0_, l_1.p1_, l_1.p2_);
-            float _e10 = triangle_lobe(_e8, l_1.a, w_5);
+            float _e10 = triangle_lobe(_e8, l_1.a, w_6);
             return l_1.intensity * _e10;
         }
         default: {
@@ -1048,7 +1056,7 @@ GeoHit trace(
     GeoHit hit = {};
     type_9 stack = {};
     uint sp = 0u;
-    uint node_2 = 0u;
+    uint node_3 = 0u;
     uint i = {};
     hit.t = t_max_2;
     hit.tri = NO_LIGHT;
@@ -1061,7 +1069,7 @@ GeoHit trace(
     while(true) {
         if (metal::all(loop_bound == uint2(0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        uint _e21 = node_2;
+        uint _e21 = node_3;
         GpuGeoNode n_15 = geo_nodes[_e21];
         float _e27 = hit.t;
         float _e28 = ray_aabb(o_2, _e14, n_15.bmin, n_15.bmax, _e27);
@@ -1107,7 +1115,7 @@ GeoHit trace(
                     uint _e68 = sp;
                     sp = _e68 + 1u;
                 }
-                node_2 = n_15.first;
+                node_3 = n_15.first;
                 continue;
             }
         }
@@ -1119,7 +1127,7 @@ GeoHit trace(
         sp = _e75 - 1u;
         uint _e78 = sp;
         uint _e80 = stack.inner[_e78];
-        node_2 = _e80;
+        node_3 = _e80;
     }
     GeoHit _e81 = hit;
     return _e81;
@@ -1185,19 +1193,19 @@ float bsh_inner_scale(
 }
 
 bool bsh_reaches(
-    BshNode node_3,
+    BshNode node_4,
     metal::float3 x_4,
     metal::float3 r_8,
     metal::float4 rl_3
 ) {
     bool local_21 = {};
     bool local_22 = {};
-    bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_4);
+    bool _e6 = sphere_contains_point(node_4.center, node_4.radius, x_4);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
-        bool _e20 = sphere_contains_point(node_3.center, node_3.radius * (rl_3.w * 1.0001), x_4);
+        bool _e20 = sphere_contains_point(node_4.center, node_4.radius * (rl_3.w * 1.0001), x_4);
         local_21 = !(_e20);
     } else {
         local_21 = true;
@@ -1206,38 +1214,38 @@ bool bsh_reaches(
     if (_e23) {
         return false;
     }
-    float _e25 = bsh_range_bound(node_3);
-    metal::float3 v_10 = x_4 - node_3.center;
+    metal::float3 v_10 = x_4 - node_4.center;
     float d2_7 = metal::dot(v_10, v_10);
-    float reach_max = node_3.extent + ((rl_3.w * 1.001) * _e25);
-    if (d2_7 > (reach_max * reach_max)) {
+    float _e29 = bsh_reach_bound(node_4, rl_3.w);
+    if (d2_7 > (_e29 * _e29)) {
         return false;
     }
-    if (node_3.child == BSH_NONE) {
-        float _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_4, r_8);
-        float _e46 = bsh_scaled_radius(node_3, metal::sqrt(_e43));
-        bool _e47 = sphere_contains_point(node_3.center, _e46, x_4);
-        return _e47;
+    if (node_4.child == BSH_NONE) {
+        float _e38 = range_scale_toward(rl_3, node_4.center, node_4.extent, x_4, r_8);
+        float _e41 = bsh_scaled_radius(node_4, metal::sqrt(_e38));
+        bool _e42 = sphere_contains_point(node_4.center, _e41, x_4);
+        return _e42;
     }
-    float _e50 = bsh_inner_scale(node_3.extent, -(v_10), d2_7, r_8, rl_3);
-    float s_c = _e50 * 1.001;
-    float reach = node_3.extent + (metal::sqrt(s_c) * _e25);
-    if (d2_7 <= ((node_3.radius * node_3.radius) * s_c)) {
+    float _e45 = bsh_inner_scale(node_4.extent, -(v_10), d2_7, r_8, rl_3);
+    float s_c = _e45 * 1.001;
+    float _e50 = bsh_range_bound(node_4);
+    float reach = node_4.extent + (metal::sqrt(s_c) * _e50);
+    if (d2_7 <= ((node_4.radius * node_4.radius) * s_c)) {
         local_22 = d2_7 <= (reach * reach);
     } else {
         local_22 = false;
     }
-    bool _e67 = local_22;
-    return _e67;
+    bool _e63 = local_22;
+    return _e63;
 }
 
 bool bsh_reaches_box(
-    BshNode node_4,
+    BshNode node_5,
     metal::float3 lo,
     metal::float3 hi,
-    float w_6
+    float w_7
 ) {
-    bool _e13 = sphere_overlaps_aabb(node_4.center, node_4.radius * (metal::max(1.0, w_6 * 1.0001) * 1.0001), lo, hi);
+    bool _e13 = sphere_overlaps_aabb(node_5.center, node_5.radius * (metal::max(1.0, w_7 * 1.0001) * 1.0001), lo, hi);
     return _e13;
 }
 
@@ -1301,7 +1309,7 @@ uint bsh_next_leaf_box(
     uint end,
     metal::float3 lo_1,
     metal::float3 hi_1,
-    float w_7,
+    float w_8,
     device type_13 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1319,7 +1327,7 @@ uint bsh_next_leaf_box(
         {
             uint _e9 = i_3;
             BshNode _e10 = bsh_node(nodes_4, _e9, bsh_nodes, _buffer_sizes);
-            bool _e11 = bsh_reaches_box(_e10, lo_1, hi_1, w_7);
+            bool _e11 = bsh_reaches_box(_e10, lo_1, hi_1, w_8);
             if (_e11) {
                 if (_e10.child == BSH_NONE) {
                     if ((_e10.light & BSH_TAIL) == 0u) {
@@ -1601,7 +1609,7 @@ uint tile_subtree(
 TileWalk tile_walk_begin(
     uint li_4,
     metal::float3 x_8,
-    float w_8,
+    float w_9,
     bool has_1,
     device type_13 const& bsh_nodes,
     threadgroup type_20& wg_lo,
@@ -1619,12 +1627,12 @@ TileWalk tile_walk_begin(
     uint sum_1 = 0u;
     uint s_5 = 0u;
     if (has_1) {
-        local_29 = w_8 >= 0.0;
+        local_29 = w_9 >= 0.0;
     } else {
         local_29 = false;
     }
     bool _e12 = local_29;
-    uint _e14 = metal::atomic_fetch_max_explicit(&tile_scale, _e12 ? as_type<uint>(w_8) : 0u, metal::memory_order_relaxed);
+    uint _e14 = metal::atomic_fetch_max_explicit(&tile_scale, _e12 ? as_type<uint>(w_9) : 0u, metal::memory_order_relaxed);
     WorkgroupBox _e15 = workgroup_box(li_4, x_8, has_1, wg_lo, wg_hi, wg_box);
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
     uint unnamed_1 = metal::atomic_load_explicit(&tile_scale, metal::memory_order_relaxed);
@@ -1778,7 +1786,7 @@ Shaded shade_pick_traced(
     metal::float3 r_10,
     metal::float4 rl_5,
     Material m_2,
-    float w_9,
+    float w_10,
     float u1_5,
     float u2_5,
     float eps_2,
@@ -1792,7 +1800,7 @@ Shaded shade_pick_traced(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     float _e11 = light_range_scale(li_6, x_10, r_10, rl_5, light_cones, _buffer_sizes);
-    Connection _e12 = connect_traced(li_6, x_10, n_9, n_9, _e11, w_9, u1_5, u2_5, eps_2, trace_3, geo_nodes, geo_tris, lights, rt2_3, r2_3, _buffer_sizes);
+    Connection _e12 = connect_traced(li_6, x_10, n_9, n_9, _e11, w_10, u1_5, u2_5, eps_2, trace_3, geo_nodes, geo_tris, lights, rt2_3, r2_3, _buffer_sizes);
     Shaded _e13 = shade_connection(_e12, x_10, n_9, m_2);
     return _e13;
 }
@@ -1817,9 +1825,9 @@ Shaded add(
 
 Shaded scaled(
     Shaded s_8,
-    metal::float3 w_10
+    metal::float3 w_11
 ) {
-    return Shaded {s_8.e * w_10, s_8.diffuse * w_10, s_8.specular * w_10};
+    return Shaded {s_8.e * w_11, s_8.diffuse * w_11, s_8.specular * w_11};
 }
 
 type_17 first_holders(

@@ -341,10 +341,10 @@ float connection_cosine(
     if (_e16) {
         return 0.0;
     }
-    metal::float3 w_10 = v_7 / metal::float3(metal::sqrt(d2_6));
-    float cos_x_1 = -(metal::dot(n_1, w_10));
+    metal::float3 w_11 = v_7 / metal::float3(metal::sqrt(d2_6));
+    float cos_x_1 = -(metal::dot(n_1, w_11));
     if (!((cos_x_1 <= 0.0))) {
-        local_8 = metal::dot(ng, w_10) >= 0.0;
+        local_8 = metal::dot(ng, w_11) >= 0.0;
     } else {
         local_8 = true;
     }
@@ -399,6 +399,14 @@ float bsh_range_bound(
     return _e8;
 }
 
+float bsh_reach_bound(
+    BshNode node_2,
+    float w_3
+) {
+    float _e5 = bsh_range_bound(node_2);
+    return node_2.extent + ((w_3 * 1.001) * _e5);
+}
+
 float weighted_threshold(
     float w_sum,
     float u_2
@@ -445,19 +453,19 @@ metal::float3 slot_share(
 ) {
     if (k_3 < 3u) {
         float _e4 = to_f32_(k_3);
-        float w_11 = 1.0 / _e4;
-        return metal::float3(w_11, w_11, w_11);
+        float w_12 = 1.0 / _e4;
+        return metal::float3(w_12, w_12, w_12);
     }
     uint j_4 = naga_mod(slot_1, 3u);
     float _e15 = to_f32_(naga_div((k_3 + 2u) - j_4, 3u));
-    float w_12 = 1.0 / _e15;
+    float w_13 = 1.0 / _e15;
     if (j_4 == 0u) {
-        return metal::float3(w_12, 0.0, 0.0);
+        return metal::float3(w_13, 0.0, 0.0);
     }
     if (j_4 == 1u) {
-        return metal::float3(0.0, w_12, 0.0);
+        return metal::float3(0.0, w_13, 0.0);
     }
-    return metal::float3(0.0, 0.0, w_12);
+    return metal::float3(0.0, 0.0, w_13);
 }
 
 float ggx_d(
@@ -857,7 +865,7 @@ float ray_triangle(
 
 metal::float3 light_intensity(
     GpuLight l_1,
-    metal::float3 w_3
+    metal::float3 w_4
 ) {
     switch(l_1.kind) {
         case 0u: {
@@ -865,7 +873,7 @@ metal::float3 light_intensity(
         }
         case 3u: {
             metal::float3 _e8 = triangle_normal(l_1.p0_, l_1.p1_, l_1.p2_);
-            float _e10 = triangle_lobe(_e8, l_1.a, w_3);
+            float _e10 = triangle_lobe(_e8, l_1.a, w_4);
             return l_1.intensity * _e10;
         }
         default: {
@@ -899,7 +907,7 @@ GeoHit trace(
     GeoHit hit = {};
     type_9 stack = {};
     uint sp = 0u;
-    uint node_2 = 0u;
+    uint node_3 = 0u;
     uint i = {};
     hit.t = t_max_2;
     hit.tri = NO_LIGHT;
@@ -912,7 +920,7 @@ GeoHit trace(
     while(true) {
         if (metal::all(loop_bound == uint2(0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        uint _e21 = node_2;
+        uint _e21 = node_3;
         GpuGeoNode n_11 = geo_nodes[_e21];
         float _e27 = hit.t;
         float _e28 = ray_aabb(o_2, _e14, n_11.bmin, n_11.bmax, _e27);
@@ -958,7 +966,7 @@ GeoHit trace(
                     uint _e68 = sp;
                     sp = _e68 + 1u;
                 }
-                node_2 = n_11.first;
+                node_3 = n_11.first;
                 continue;
             }
         }
@@ -970,7 +978,7 @@ GeoHit trace(
         sp = _e75 - 1u;
         uint _e78 = sp;
         uint _e80 = stack.inner[_e78];
-        node_2 = _e80;
+        node_3 = _e80;
     }
     GeoHit _e81 = hit;
     return _e81;
@@ -1036,19 +1044,19 @@ float bsh_inner_scale(
 }
 
 bool bsh_reaches(
-    BshNode node_3,
+    BshNode node_4,
     metal::float3 x_4,
     metal::float3 r_7,
     metal::float4 rl_3
 ) {
     bool local_19 = {};
     bool local_20 = {};
-    bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_4);
+    bool _e6 = sphere_contains_point(node_4.center, node_4.radius, x_4);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
-        bool _e20 = sphere_contains_point(node_3.center, node_3.radius * (rl_3.w * 1.0001), x_4);
+        bool _e20 = sphere_contains_point(node_4.center, node_4.radius * (rl_3.w * 1.0001), x_4);
         local_19 = !(_e20);
     } else {
         local_19 = true;
@@ -1057,38 +1065,38 @@ bool bsh_reaches(
     if (_e23) {
         return false;
     }
-    float _e25 = bsh_range_bound(node_3);
-    metal::float3 v_10 = x_4 - node_3.center;
+    metal::float3 v_10 = x_4 - node_4.center;
     float d2_7 = metal::dot(v_10, v_10);
-    float reach_max = node_3.extent + ((rl_3.w * 1.001) * _e25);
-    if (d2_7 > (reach_max * reach_max)) {
+    float _e29 = bsh_reach_bound(node_4, rl_3.w);
+    if (d2_7 > (_e29 * _e29)) {
         return false;
     }
-    if (node_3.child == BSH_NONE) {
-        float _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_4, r_7);
-        float _e46 = bsh_scaled_radius(node_3, metal::sqrt(_e43));
-        bool _e47 = sphere_contains_point(node_3.center, _e46, x_4);
-        return _e47;
+    if (node_4.child == BSH_NONE) {
+        float _e38 = range_scale_toward(rl_3, node_4.center, node_4.extent, x_4, r_7);
+        float _e41 = bsh_scaled_radius(node_4, metal::sqrt(_e38));
+        bool _e42 = sphere_contains_point(node_4.center, _e41, x_4);
+        return _e42;
     }
-    float _e50 = bsh_inner_scale(node_3.extent, -(v_10), d2_7, r_7, rl_3);
-    float s_c = _e50 * 1.001;
-    float reach = node_3.extent + (metal::sqrt(s_c) * _e25);
-    if (d2_7 <= ((node_3.radius * node_3.radius) * s_c)) {
+    float _e45 = bsh_inner_scale(node_4.extent, -(v_10), d2_7, r_7, rl_3);
+    float s_c = _e45 * 1.001;
+    float _e50 = bsh_range_bound(node_4);
+    float reach = node_4.extent + (metal::sqrt(s_c) * _e50);
+    if (d2_7 <= ((node_4.radius * node_4.radius) * s_c)) {
         local_20 = d2_7 <= (reach * reach);
     } else {
         local_20 = false;
     }
-    bool _e67 = local_20;
-    return _e67;
+    bool _e63 = local_20;
+    return _e63;
 }
 
 bool bsh_reaches_box(
-    BshNode node_4,
+    BshNode node_5,
     metal::float3 lo,
     metal::float3 hi,
-    float w_4
+    float w_5
 ) {
-    bool _e13 = sphere_overlaps_aabb(node_4.center, node_4.radius * (metal::max(1.0, w_4 * 1.0001) * 1.0001), lo, hi);
+    bool _e13 = sphere_overlaps_aabb(node_5.center, node_5.radius * (metal::max(1.0, w_5 * 1.0001) * 1.0001), lo, hi);
     return _e13;
 }
 
@@ -1152,7 +1160,7 @@ uint bsh_next_leaf_box(
     uint end,
     metal::float3 lo_1,
     metal::float3 hi_1,
-    float w_5,
+    float w_6,
     device type_13 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1170,7 +1178,7 @@ uint bsh_next_leaf_box(
         {
             uint _e9 = i_3;
             BshNode _e10 = bsh_node(nodes_4, _e9, bsh_nodes, _buffer_sizes);
-            bool _e11 = bsh_reaches_box(_e10, lo_1, hi_1, w_5);
+            bool _e11 = bsh_reaches_box(_e10, lo_1, hi_1, w_6);
             if (_e11) {
                 if (_e10.child == BSH_NONE) {
                     if ((_e10.light & BSH_TAIL) == 0u) {
@@ -1452,7 +1460,7 @@ uint tile_subtree(
 TileWalk tile_walk_begin(
     uint li_4,
     metal::float3 x_8,
-    float w_6,
+    float w_7,
     bool has_1,
     device type_13 const& bsh_nodes,
     threadgroup type_18& wg_lo,
@@ -1470,12 +1478,12 @@ TileWalk tile_walk_begin(
     uint sum_1 = 0u;
     uint s_5 = 0u;
     if (has_1) {
-        local_27 = w_6 >= 0.0;
+        local_27 = w_7 >= 0.0;
     } else {
         local_27 = false;
     }
     bool _e12 = local_27;
-    uint _e14 = metal::atomic_fetch_max_explicit(&tile_scale, _e12 ? as_type<uint>(w_6) : 0u, metal::memory_order_relaxed);
+    uint _e14 = metal::atomic_fetch_max_explicit(&tile_scale, _e12 ? as_type<uint>(w_7) : 0u, metal::memory_order_relaxed);
     WorkgroupBox _e15 = workgroup_box(li_4, x_8, has_1, wg_lo, wg_hi, wg_box);
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
     uint unnamed_1 = metal::atomic_load_explicit(&tile_scale, metal::memory_order_relaxed);
@@ -1629,7 +1637,7 @@ Shaded shade_pick_traced(
     metal::float3 r_9,
     metal::float4 rl_5,
     Material m_2,
-    float w_7,
+    float w_8,
     float u1_4,
     float u2_4,
     float eps_2,
@@ -1643,7 +1651,7 @@ Shaded shade_pick_traced(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     float _e11 = light_range_scale(li_6, x_10, r_9, rl_5, light_cones, _buffer_sizes);
-    Connection _e12 = connect_traced(li_6, x_10, n_8, n_8, _e11, w_7, u1_4, u2_4, eps_2, trace_3, geo_nodes, geo_tris, lights, rt2_3, r2_3, _buffer_sizes);
+    Connection _e12 = connect_traced(li_6, x_10, n_8, n_8, _e11, w_8, u1_4, u2_4, eps_2, trace_3, geo_nodes, geo_tris, lights, rt2_3, r2_3, _buffer_sizes);
     Shaded _e13 = shade_connection(_e12, x_10, n_8, m_2);
     return _e13;
 }
@@ -1655,7 +1663,7 @@ Shaded shade_pick(
     metal::float3 r_10,
     metal::float4 rl_6,
     Material m_3,
-    float w_8,
+    float w_9,
     float u1_5,
     float u2_5,
     float eps_3,
@@ -1667,7 +1675,7 @@ Shaded shade_pick(
     device type_14 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Shaded _e11 = shade_pick_traced(li_7, x_11, n_9, r_10, rl_6, m_3, w_8, u1_5, u2_5, eps_3, true, geo_nodes, geo_tris, lights, rt2_3, r2_3, light_cones, _buffer_sizes);
+    Shaded _e11 = shade_pick_traced(li_7, x_11, n_9, r_10, rl_6, m_3, w_9, u1_5, u2_5, eps_3, true, geo_nodes, geo_tris, lights, rt2_3, r2_3, light_cones, _buffer_sizes);
     return _e11;
 }
 
@@ -1691,9 +1699,9 @@ Shaded add(
 
 Shaded scaled(
     Shaded s_8,
-    metal::float3 w_9
+    metal::float3 w_10
 ) {
-    return Shaded {s_8.e * w_9, s_8.diffuse * w_9, s_8.specular * w_9};
+    return Shaded {s_8.e * w_10, s_8.diffuse * w_10, s_8.specular * w_10};
 }
 
 type_15 first_holders(

@@ -312,10 +312,10 @@ float connection_cosine(
     if (_e16) {
         return 0.0;
     }
-    metal::float3 w_6 = v_3 / metal::float3(metal::sqrt(d2_7));
-    float cos_x_1 = -(metal::dot(n_1, w_6));
+    metal::float3 w_7 = v_3 / metal::float3(metal::sqrt(d2_7));
+    float cos_x_1 = -(metal::dot(n_1, w_7));
     if (!((cos_x_1 <= 0.0))) {
-        local_5 = metal::dot(ng, w_6) >= 0.0;
+        local_5 = metal::dot(ng, w_7) >= 0.0;
     } else {
         local_5 = true;
     }
@@ -349,6 +349,14 @@ float bsh_range_bound(
     return _e8;
 }
 
+float bsh_reach_bound(
+    BshNode node_2,
+    float w_1
+) {
+    float _e5 = bsh_range_bound(node_2);
+    return node_2.extent + ((w_1 * 1.001) * _e5);
+}
+
 float weighted_threshold(
     float w_sum,
     float u_2
@@ -358,11 +366,11 @@ float weighted_threshold(
 
 float weighted_pick_weight(
     float w_sum_1,
-    float w_1,
+    float w_2,
     uint k_2
 ) {
     float _e3 = to_f32_(k_2);
-    return w_sum_1 / (_e3 * w_1);
+    return w_sum_1 / (_e3 * w_2);
 }
 
 float ggx_d(
@@ -752,7 +760,7 @@ float ray_triangle(
 
 metal::float3 light_intensity(
     GpuLight l,
-    metal::float3 w_2
+    metal::float3 w_3
 ) {
     switch(l.kind) {
         case 0u: {
@@ -785,7 +793,7 @@ GeoHit trace(
     GeoHit hit = {};
     type_8 stack = {};
     uint sp = 0u;
-    uint node_2 = 0u;
+    uint node_3 = 0u;
     uint i = {};
     hit.t = t_max_2;
     hit.tri = NO_LIGHT;
@@ -798,7 +806,7 @@ GeoHit trace(
     while(true) {
         if (metal::all(loop_bound == uint2(0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        uint _e21 = node_2;
+        uint _e21 = node_3;
         GpuGeoNode n_11 = geo_nodes[_e21];
         float _e27 = hit.t;
         float _e28 = ray_aabb(o_2, _e14, n_11.bmin, n_11.bmax, _e27);
@@ -844,7 +852,7 @@ GeoHit trace(
                     uint _e68 = sp;
                     sp = _e68 + 1u;
                 }
-                node_2 = n_11.first;
+                node_3 = n_11.first;
                 continue;
             }
         }
@@ -856,7 +864,7 @@ GeoHit trace(
         sp = _e75 - 1u;
         uint _e78 = sp;
         uint _e80 = stack.inner[_e78];
-        node_2 = _e80;
+        node_3 = _e80;
     }
     GeoHit _e81 = hit;
     return _e81;
@@ -922,19 +930,19 @@ float bsh_inner_scale(
 }
 
 bool bsh_reaches(
-    BshNode node_3,
+    BshNode node_4,
     metal::float3 x_5,
     metal::float3 r_6,
     metal::float4 rl_3
 ) {
     bool local_12 = {};
     bool local_13 = {};
-    bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_5);
+    bool _e6 = sphere_contains_point(node_4.center, node_4.radius, x_5);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
-        bool _e20 = sphere_contains_point(node_3.center, node_3.radius * (rl_3.w * 1.0001), x_5);
+        bool _e20 = sphere_contains_point(node_4.center, node_4.radius * (rl_3.w * 1.0001), x_5);
         local_12 = !(_e20);
     } else {
         local_12 = true;
@@ -943,29 +951,29 @@ bool bsh_reaches(
     if (_e23) {
         return false;
     }
-    float _e25 = bsh_range_bound(node_3);
-    metal::float3 v_9 = x_5 - node_3.center;
+    metal::float3 v_9 = x_5 - node_4.center;
     float d2_9 = metal::dot(v_9, v_9);
-    float reach_max = node_3.extent + ((rl_3.w * 1.001) * _e25);
-    if (d2_9 > (reach_max * reach_max)) {
+    float _e29 = bsh_reach_bound(node_4, rl_3.w);
+    if (d2_9 > (_e29 * _e29)) {
         return false;
     }
-    if (node_3.child == BSH_NONE) {
-        float _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_5, r_6);
-        float _e46 = bsh_scaled_radius(node_3, metal::sqrt(_e43));
-        bool _e47 = sphere_contains_point(node_3.center, _e46, x_5);
-        return _e47;
+    if (node_4.child == BSH_NONE) {
+        float _e38 = range_scale_toward(rl_3, node_4.center, node_4.extent, x_5, r_6);
+        float _e41 = bsh_scaled_radius(node_4, metal::sqrt(_e38));
+        bool _e42 = sphere_contains_point(node_4.center, _e41, x_5);
+        return _e42;
     }
-    float _e50 = bsh_inner_scale(node_3.extent, -(v_9), d2_9, r_6, rl_3);
-    float s_c = _e50 * 1.001;
-    float reach = node_3.extent + (metal::sqrt(s_c) * _e25);
-    if (d2_9 <= ((node_3.radius * node_3.radius) * s_c)) {
+    float _e45 = bsh_inner_scale(node_4.extent, -(v_9), d2_9, r_6, rl_3);
+    float s_c = _e45 * 1.001;
+    float _e50 = bsh_range_bound(node_4);
+    float reach = node_4.extent + (metal::sqrt(s_c) * _e50);
+    if (d2_9 <= ((node_4.radius * node_4.radius) * s_c)) {
         local_13 = d2_9 <= (reach * reach);
     } else {
         local_13 = false;
     }
-    bool _e67 = local_13;
-    return _e67;
+    bool _e63 = local_13;
+    return _e63;
 }
 
 uint bsh_next_leaf_lobe(
@@ -1148,15 +1156,15 @@ WeightedPicks weighted_picks(
 void weighted_offer(
     thread WeightedPicks& picks_2,
     uint li_3,
-    float w_3
+    float w_4
 ) {
     uint h_3 = {};
     uint s_2 = 0u;
     uint _e4 = picks_2.n;
     picks_2.n = _e4 + 1u;
-    if (w_3 > 0.0) {
+    if (w_4 > 0.0) {
         float _e10 = picks_2.w_sum;
-        picks_2.w_sum = _e10 + w_3;
+        picks_2.w_sum = _e10 + w_4;
         uint _e13 = picks_2.h;
         h_3 = _e13;
         uint2 loop_bound_3 = uint2(4294967295u);
@@ -1182,7 +1190,7 @@ void weighted_offer(
                     uint _e28 = s_2;
                     picks_2.light.inner[_e28] = li_3;
                     uint _e31 = s_2;
-                    picks_2.w.inner[_e31] = w_3;
+                    picks_2.w.inner[_e31] = w_4;
                     uint _e34 = s_2;
                     float _e37 = picks_2.w_sum;
                     float _e38 = next_threshold(_e37, h_3);
@@ -1227,7 +1235,7 @@ Shaded shade_pick_traced(
     metal::float3 r_10,
     metal::float4 rl_7,
     Material m_2,
-    float w_4,
+    float w_5,
     float u1_3,
     float u2_3,
     float eps_2,
@@ -1239,7 +1247,7 @@ Shaded shade_pick_traced(
     device type_4 const& r2_4,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Connection _e12 = connect_traced(li_4, x_12, n_9, n_9, 1.0, w_4, u1_3, u2_3, eps_2, trace_3, geo_nodes, geo_tris, lights, rt2_5, r2_4, _buffer_sizes);
+    Connection _e12 = connect_traced(li_4, x_12, n_9, n_9, 1.0, w_5, u1_3, u2_3, eps_2, trace_3, geo_nodes, geo_tris, lights, rt2_5, r2_4, _buffer_sizes);
     Shaded _e13 = shade_connection(_e12, x_12, n_9, m_2);
     return _e13;
 }
@@ -1251,7 +1259,7 @@ Shaded shade_pick(
     metal::float3 r_11,
     metal::float4 rl_8,
     Material m_3,
-    float w_5,
+    float w_6,
     float u1_4,
     float u2_4,
     float eps_3,
@@ -1262,7 +1270,7 @@ Shaded shade_pick(
     device type_4 const& r2_4,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Shaded _e11 = shade_pick_traced(li_5, x_13, n_10, r_11, rl_8, m_3, w_5, u1_4, u2_4, eps_3, true, geo_nodes, geo_tris, lights, rt2_5, r2_4, _buffer_sizes);
+    Shaded _e11 = shade_pick_traced(li_5, x_13, n_10, r_11, rl_8, m_3, w_6, u1_4, u2_4, eps_3, true, geo_nodes, geo_tris, lights, rt2_5, r2_4, _buffer_sizes);
     return _e11;
 }
 

@@ -338,10 +338,10 @@ float connection_cosine(
     if (_e16) {
         return 0.0;
     }
-    metal::float3 w_7 = v_9 / metal::float3(metal::sqrt(d2_9));
-    float cos_x_1 = -(metal::dot(n, w_7));
+    metal::float3 w_8 = v_9 / metal::float3(metal::sqrt(d2_9));
+    float cos_x_1 = -(metal::dot(n, w_8));
     if (!((cos_x_1 <= 0.0))) {
-        local_1 = metal::dot(ng, w_7) >= 0.0;
+        local_1 = metal::dot(ng, w_8) >= 0.0;
     } else {
         local_1 = true;
     }
@@ -661,6 +661,14 @@ float bsh_range_bound(
     return _e8;
 }
 
+float bsh_reach_bound(
+    BshNode node_2,
+    float w_4
+) {
+    float _e5 = bsh_range_bound(node_2);
+    return node_2.extent + ((w_4 * 1.001) * _e5);
+}
+
 uint mul_hi_u32_(
     uint a_4,
     uint b_3
@@ -808,11 +816,11 @@ metal::float3 onb_bitangent(
 
 metal::float3 onb_to_local(
     metal::float3 n_10,
-    metal::float3 w_4
+    metal::float3 w_5
 ) {
     metal::float3 _e2 = onb_tangent(n_10);
     metal::float3 _e4 = onb_bitangent(n_10);
-    return metal::float3(metal::dot(w_4, _e2), metal::dot(w_4, _e4), metal::dot(w_4, n_10));
+    return metal::float3(metal::dot(w_5, _e2), metal::dot(w_5, _e4), metal::dot(w_5, n_10));
 }
 
 float ggx_d(
@@ -1311,7 +1319,7 @@ float ray_triangle(
 
 metal::float3 light_intensity(
     GpuLight l_4,
-    metal::float3 w_5,
+    metal::float3 w_6,
     device type_4 const& slc_table,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1320,20 +1328,20 @@ metal::float3 light_intensity(
             return l_4.intensity;
         }
         case 1u: {
-            float _e11 = spot_falloff(metal::dot(l_4.p1_, w_5), l_4.a, l_4.b, l_4.p2_[0]);
+            float _e11 = spot_falloff(metal::dot(l_4.p1_, w_6), l_4.a, l_4.b, l_4.p2_[0]);
             return l_4.intensity * _e11;
         }
         case 2u: {
-            float _e18 = ies_light_candela(0u, l_4.ies_base, l_4.p1_, l_4.p2_, w_5, slc_table, _buffer_sizes);
+            float _e18 = ies_light_candela(0u, l_4.ies_base, l_4.p1_, l_4.p2_, w_6, slc_table, _buffer_sizes);
             return l_4.intensity * _e18;
         }
         case 3u: {
             metal::float3 _e24 = triangle_normal(l_4.p0_, l_4.p1_, l_4.p2_);
-            float _e26 = triangle_lobe(_e24, l_4.a, w_5);
+            float _e26 = triangle_lobe(_e24, l_4.a, w_6);
             return l_4.intensity * _e26;
         }
         case 4u: {
-            float _e30 = vpl_lobe(l_4.p1_, w_5);
+            float _e30 = vpl_lobe(l_4.p1_, w_6);
             return l_4.intensity * _e30;
         }
         default: {
@@ -1386,7 +1394,7 @@ GeoHit trace(
     GeoHit hit = {};
     type_8 stack = {};
     uint sp = 0u;
-    uint node_2 = 0u;
+    uint node_3 = 0u;
     uint i_1 = {};
     hit.t = t_max_2;
     hit.tri = NO_LIGHT;
@@ -1399,7 +1407,7 @@ GeoHit trace(
     while(true) {
         if (metal::all(loop_bound_1 == uint2(0u))) { break; }
         loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
-        uint _e21 = node_2;
+        uint _e21 = node_3;
         GpuGeoNode n_22 = geo_nodes[_e21];
         float _e27 = hit.t;
         float _e28 = ray_aabb(o_2, _e14, n_22.bmin, n_22.bmax, _e27);
@@ -1445,7 +1453,7 @@ GeoHit trace(
                     uint _e68 = sp;
                     sp = _e68 + 1u;
                 }
-                node_2 = n_22.first;
+                node_3 = n_22.first;
                 continue;
             }
         }
@@ -1457,7 +1465,7 @@ GeoHit trace(
         sp = _e75 - 1u;
         uint _e78 = sp;
         uint _e80 = stack.inner[_e78];
-        node_2 = _e80;
+        node_3 = _e80;
     }
     GeoHit _e81 = hit;
     return _e81;
@@ -1523,19 +1531,19 @@ float bsh_inner_scale(
 }
 
 bool bsh_reaches(
-    BshNode node_3,
+    BshNode node_4,
     metal::float3 x_9,
     metal::float3 r_3,
     metal::float4 rl_3
 ) {
     bool local_20 = {};
     bool local_21 = {};
-    bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_9);
+    bool _e6 = sphere_contains_point(node_4.center, node_4.radius, x_9);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
-        bool _e20 = sphere_contains_point(node_3.center, node_3.radius * (rl_3.w * 1.0001), x_9);
+        bool _e20 = sphere_contains_point(node_4.center, node_4.radius * (rl_3.w * 1.0001), x_9);
         local_20 = !(_e20);
     } else {
         local_20 = true;
@@ -1544,29 +1552,29 @@ bool bsh_reaches(
     if (_e23) {
         return false;
     }
-    float _e25 = bsh_range_bound(node_3);
-    metal::float3 v_12 = x_9 - node_3.center;
+    metal::float3 v_12 = x_9 - node_4.center;
     float d2_10 = metal::dot(v_12, v_12);
-    float reach_max = node_3.extent + ((rl_3.w * 1.001) * _e25);
-    if (d2_10 > (reach_max * reach_max)) {
+    float _e29 = bsh_reach_bound(node_4, rl_3.w);
+    if (d2_10 > (_e29 * _e29)) {
         return false;
     }
-    if (node_3.child == BSH_NONE) {
-        float _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_9, r_3);
-        float _e46 = bsh_scaled_radius(node_3, metal::sqrt(_e43));
-        bool _e47 = sphere_contains_point(node_3.center, _e46, x_9);
-        return _e47;
+    if (node_4.child == BSH_NONE) {
+        float _e38 = range_scale_toward(rl_3, node_4.center, node_4.extent, x_9, r_3);
+        float _e41 = bsh_scaled_radius(node_4, metal::sqrt(_e38));
+        bool _e42 = sphere_contains_point(node_4.center, _e41, x_9);
+        return _e42;
     }
-    float _e50 = bsh_inner_scale(node_3.extent, -(v_12), d2_10, r_3, rl_3);
-    float s_c = _e50 * 1.001;
-    float reach = node_3.extent + (metal::sqrt(s_c) * _e25);
-    if (d2_10 <= ((node_3.radius * node_3.radius) * s_c)) {
+    float _e45 = bsh_inner_scale(node_4.extent, -(v_12), d2_10, r_3, rl_3);
+    float s_c = _e45 * 1.001;
+    float _e50 = bsh_range_bound(node_4);
+    float reach = node_4.extent + (metal::sqrt(s_c) * _e50);
+    if (d2_10 <= ((node_4.radius * node_4.radius) * s_c)) {
         local_21 = d2_10 <= (reach * reach);
     } else {
         local_21 = false;
     }
-    bool _e67 = local_21;
-    return _e67;
+    bool _e63 = local_21;
+    return _e63;
 }
 
 uint bsh_next_leaf_lobe(
@@ -1878,7 +1886,7 @@ metal::float3 shade_pick(
     metal::float3 r_10,
     metal::float4 lobe_7,
     metal::float4 rl_10,
-    float w_6,
+    float w_7,
     uint nee_2,
     float u1_5,
     float u2_5,
@@ -1895,7 +1903,7 @@ metal::float3 shade_pick(
     float mis = 1.0;
     float _e13 = light_range_scale(li_6, x_19, r_10, rl_10, light_cones, _buffer_sizes);
     float _e16 = params.eps;
-    Connection _e17 = connect(li_6, x_19, n_20, ng_4, _e13, w_6, u1_5, u2_5, _e16, slc_table, geo_nodes, geo_tris, lights, r2_3, rt2_5, _buffer_sizes);
+    Connection _e17 = connect(li_6, x_19, n_20, ng_4, _e13, w_7, u1_5, u2_5, _e16, slc_table, geo_nodes, geo_tris, lights, r2_3, rt2_5, _buffer_sizes);
     if (_e17.cos_x <= 0.0) {
         return metal::float3(0.0);
     }

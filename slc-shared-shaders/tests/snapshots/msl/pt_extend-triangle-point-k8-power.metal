@@ -313,6 +313,14 @@ float bsh_range_bound(
     return _e8;
 }
 
+float bsh_reach_bound(
+    BshNode node_2,
+    float w_1
+) {
+    float _e5 = bsh_range_bound(node_2);
+    return node_2.extent + ((w_1 * 1.001) * _e5);
+}
+
 float reservoir_weight(
     uint n,
     uint k
@@ -418,11 +426,11 @@ metal::float3 onb_to_world(
 
 metal::float3 onb_to_local(
     metal::float3 n_4,
-    metal::float3 w_1
+    metal::float3 w_2
 ) {
     metal::float3 _e2 = onb_tangent(n_4);
     metal::float3 _e4 = onb_bitangent(n_4);
-    return metal::float3(metal::dot(w_1, _e2), metal::dot(w_1, _e4), metal::dot(w_1, n_4));
+    return metal::float3(metal::dot(w_2, _e2), metal::dot(w_2, _e4), metal::dot(w_2, n_4));
 }
 
 metal::float3 cosine_direction(
@@ -939,11 +947,11 @@ metal::float3 shading_normal(
     metal::float3 n0_,
     metal::float3 n1_,
     metal::float3 n2_,
-    metal::float3 w_2,
+    metal::float3 w_3,
     metal::float3 facing
 ) {
     bool local_17 = {};
-    metal::float3 s_4 = ((n0_ * w_2.x) + (n1_ * w_2.y)) + (n2_ * w_2.z);
+    metal::float3 s_4 = ((n0_ * w_3.x) + (n1_ * w_3.y)) + (n2_ * w_3.z);
     float l2_1 = metal::dot(s_4, s_4);
     if (!(!((l2_1 > 0.000000000001)))) {
         local_17 = !((l2_1 < 300000000000000000000000000000000000000.0));
@@ -1019,10 +1027,10 @@ metal::float3 camera_dir(
     metal::float3 up,
     float px,
     float py,
-    float w_3,
+    float w_4,
     float h_1
 ) {
-    float sx = ((2.0 * px) / w_3) - 1.0;
+    float sx = ((2.0 * px) / w_4) - 1.0;
     float sy = 1.0 - ((2.0 * py) / h_1);
     return metal::normalize((forward + (right * sx)) + (up * sy));
 }
@@ -1101,7 +1109,7 @@ GeoHit trace(
     GeoHit hit = {};
     type_8 stack = {};
     uint sp = 0u;
-    uint node_2 = 0u;
+    uint node_3 = 0u;
     uint i = {};
     hit.t = t_max_2;
     hit.tri = NO_LIGHT;
@@ -1114,7 +1122,7 @@ GeoHit trace(
     while(true) {
         if (metal::all(loop_bound == uint2(0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        uint _e21 = node_2;
+        uint _e21 = node_3;
         GpuGeoNode n_17 = geo_nodes[_e21];
         float _e27 = hit.t;
         float _e28 = ray_aabb(o_2, _e14, n_17.bmin, n_17.bmax, _e27);
@@ -1160,7 +1168,7 @@ GeoHit trace(
                     uint _e68 = sp;
                     sp = _e68 + 1u;
                 }
-                node_2 = n_17.first;
+                node_3 = n_17.first;
                 continue;
             }
         }
@@ -1172,7 +1180,7 @@ GeoHit trace(
         sp = _e75 - 1u;
         uint _e78 = sp;
         uint _e80 = stack.inner[_e78];
-        node_2 = _e80;
+        node_3 = _e80;
     }
     GeoHit _e81 = hit;
     return _e81;
@@ -1280,19 +1288,19 @@ float bsh_inner_scale(
 }
 
 bool bsh_reaches(
-    BshNode node_3,
+    BshNode node_4,
     metal::float3 x_7,
     metal::float3 r_7,
     metal::float4 rl_7
 ) {
     bool local_22 = {};
     bool local_23 = {};
-    bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_7);
+    bool _e6 = sphere_contains_point(node_4.center, node_4.radius, x_7);
     if (_e6) {
         return true;
     }
     if (!((rl_7.w <= 1.0))) {
-        bool _e20 = sphere_contains_point(node_3.center, node_3.radius * (rl_7.w * 1.0001), x_7);
+        bool _e20 = sphere_contains_point(node_4.center, node_4.radius * (rl_7.w * 1.0001), x_7);
         local_22 = !(_e20);
     } else {
         local_22 = true;
@@ -1301,29 +1309,29 @@ bool bsh_reaches(
     if (_e23) {
         return false;
     }
-    float _e25 = bsh_range_bound(node_3);
-    metal::float3 v_14 = x_7 - node_3.center;
+    metal::float3 v_14 = x_7 - node_4.center;
     float d2_6 = metal::dot(v_14, v_14);
-    float reach_max = node_3.extent + ((rl_7.w * 1.001) * _e25);
-    if (d2_6 > (reach_max * reach_max)) {
+    float _e29 = bsh_reach_bound(node_4, rl_7.w);
+    if (d2_6 > (_e29 * _e29)) {
         return false;
     }
-    if (node_3.child == BSH_NONE) {
-        float _e43 = range_scale_toward(rl_7, node_3.center, node_3.extent, x_7, r_7);
-        float _e46 = bsh_scaled_radius(node_3, metal::sqrt(_e43));
-        bool _e47 = sphere_contains_point(node_3.center, _e46, x_7);
-        return _e47;
+    if (node_4.child == BSH_NONE) {
+        float _e38 = range_scale_toward(rl_7, node_4.center, node_4.extent, x_7, r_7);
+        float _e41 = bsh_scaled_radius(node_4, metal::sqrt(_e38));
+        bool _e42 = sphere_contains_point(node_4.center, _e41, x_7);
+        return _e42;
     }
-    float _e50 = bsh_inner_scale(node_3.extent, -(v_14), d2_6, r_7, rl_7);
-    float s_c = _e50 * 1.001;
-    float reach = node_3.extent + (metal::sqrt(s_c) * _e25);
-    if (d2_6 <= ((node_3.radius * node_3.radius) * s_c)) {
+    float _e45 = bsh_inner_scale(node_4.extent, -(v_14), d2_6, r_7, rl_7);
+    float s_c = _e45 * 1.001;
+    float _e50 = bsh_range_bound(node_4);
+    float reach = node_4.extent + (metal::sqrt(s_c) * _e50);
+    if (d2_6 <= ((node_4.radius * node_4.radius) * s_c)) {
         local_23 = d2_6 <= (reach * reach);
     } else {
         local_23 = false;
     }
-    bool _e67 = local_23;
-    return _e67;
+    bool _e63 = local_23;
+    return _e63;
 }
 
 BshNode bsh_range_leaf(
