@@ -8,20 +8,20 @@
 //! to find the same lights in the same order at every point. Times:
 //! machine-dependent.
 //!
-//! With `--glossy ALPHA,METALLIC`, every point is a glossy receiver of that
-//! GGX `α` (base colour 0.8, F0 0.04) seen from a random direction above its
-//! surface, and the grids are built for reaches `w` of 2, 4 and 8
+//! With `--glossy ROUGHNESS,METALLIC`, every point is a glossy receiver of
+//! that glTF material (`Material::gltf`, base colour 0.8) seen from a random
+//! direction above its surface, and the grids are built for reaches `w` of 2, 4 and 8
 //! (`BshGrid::build_reaching`) against the lobe-scaled walk: `held` is the
 //! share of receivers whose lobe the grid holds (`rl.w ≤ w`; the others
 //! walk the tree, and are timed so); `list` is what a held receiver's cell
 //! lists.
 //!
-//!     cargo run --release -p slc-scene --example grid_walk -- [--glossy A,M] SCENE.toml [SCENE.toml ...]
+//!     cargo run --release -p slc-scene --example grid_walk -- [--glossy R,M] SCENE.toml [SCENE.toml ...]
 
 use glam::{Vec3, Vec4};
-use slc_core::brdf::{mirror_dir, range_lobe, receiver_lobe};
 use slc_core::bsh::BshGrid;
 use slc_scene::placement::Stream;
+use slc_scene::scene::Material;
 use std::time::Instant;
 
 mod common;
@@ -35,10 +35,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         Some(i) if i + 1 < args.len() => {
             let v = args.remove(i + 1);
             args.remove(i);
-            let (a, m) = v.split_once(',').ok_or("--glossy takes ALPHA,METALLIC")?;
+            let (a, m) = v.split_once(',').ok_or("--glossy takes ROUGHNESS,METALLIC")?;
             Some((a.parse::<f32>()?, m.parse::<f32>()?))
         }
-        Some(_) => return Err("--glossy takes ALPHA,METALLIC".into()),
+        Some(_) => return Err("--glossy takes ROUGHNESS,METALLIC".into()),
         None => None,
     };
     println!(
@@ -67,19 +67,13 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             .enumerate()
             .map(|(k, &(x, n))| match glossy {
                 None => (x, n, Vec4::new(1.0, 0.0, 1.0, 1.0)),
-                Some((alpha, metallic)) => {
+                Some((roughness, metallic)) => {
                     let mut s = Stream::new(0x5678, k as u32);
                     let d = Vec3::new(s.uniform(), s.uniform(), s.uniform()) * 2.0 - 1.0;
                     let v = (d.normalize_or_zero() + n * 1.01).normalize();
-                    let lobe = receiver_lobe(
-                        Vec3::splat(0.8),
-                        metallic,
-                        Vec3::splat(0.04),
-                        1.0,
-                        alpha,
-                        n.dot(v),
-                    );
-                    (x, mirror_dir(n, v), range_lobe(lobe))
+                    let rc =
+                        Material::gltf(Vec3::splat(0.8), metallic, roughness).receiver(x, n, v);
+                    (x, rc.r, rc.range_lobe())
                 }
             })
             .collect();

@@ -171,7 +171,7 @@ impl LazyGrid {
 /// candidates in 0.43 of the walk's time, its gold (α 0.16) 75% in 0.50;
 /// at 2 the floor's share falls to 68%, and at 8 a cell lists 758 spheres
 /// and takes longer than the walk (`cargo run --release -p slc-scene
-/// --example grid_walk -- --glossy 0.09,0 scenes/suite/glossy-facing-49152.toml`).
+/// --example grid_walk -- --glossy 0.3,0 scenes/suite/glossy-facing-49152.toml`).
 pub const GLOSSY_REACH: f32 = 4.0;
 
 impl CpuPathTracer {
