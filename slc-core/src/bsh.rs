@@ -959,10 +959,12 @@ fn refit_wide(nodes: &mut [BshNode], leaf: &LeafRefit) {
     }
 }
 
-mod grid;
+pub mod grid;
 mod layout;
 mod split;
-pub use grid::{BshGrid, GRID_ENTRIES_PER_LIGHT, GRID_RES_LIMIT, GRID_RES_MAX, GRID_RES_MIN};
+pub use grid::{
+    BshGrid, GRID_ENTRIES_PER_LIGHT, GRID_RES_LIMIT, GRID_RES_MAX, GRID_RES_MIN, GridFrame,
+};
 pub use layout::{BSH_MAX_WIDTH, BshShape};
 pub use split::{BSH_MAX_DEPTH, BshSplit};
 

@@ -22,16 +22,182 @@
 //! than `w²` only in a narrow cone around its mirror direction; its
 //! cell's lights below `w²` plus a walk that skips every node whose scale
 //! bound is at most `w²` took 1.3–1.7 of the plain walk's time: tried,
-//! not kept, docs/results/bsh-walk-visits.md.) The GPU keeps the
-//! stackless walk (a grid per pass there is a counting sort the kernels
-//! do not have yet).
+//! not kept, docs/results/bsh-walk-visits.md.)
+//!
+//! The GPU path tracer builds the same grid each pass with a counting sort
+//! (slc-shared-shaders' `bsh_grid`), from the same frames
+//! ([`GridFrame::levels`]) and the same cover and cell steps ([`WGSL`]:
+//! [`bsh_grid_reach`], [`bsh_grid_pad`], [`bsh_grid_axis`],
+//! [`bsh_grid_cell`]).
 
 use super::walk::bsh_reaches;
 use super::{BSH_NONE, BSH_TAIL, Bsh, BshNode, bsh_reach_bound};
 use crate::sphere::sphere_contains_point;
+use crate::wgsl::*;
 use alloc::vec;
 use alloc::vec::Vec;
 use glam::{UVec3, Vec3, Vec4};
+
+crate::shared! {
+    /// Most entries a grid may hold per light in the tree (plus one per cell;
+    /// 20 bytes each): past it the resolution halves, and below
+    /// [`GRID_RES_MIN`] there is no grid (ranges as large as the scene: the
+    /// tree is as good). The suite's scenes take 2–5 at their own resolution.
+    pub const GRID_ENTRIES_PER_LIGHT: u32 = 8;
+
+    /// The most entries a grid of `cells` cells may hold for `leaves`
+    /// leaves in the tree: [`GRID_ENTRIES_PER_LIGHT`] per leaf plus one
+    /// per cell, at most `2³² − 1`.
+    pub fn bsh_grid_budget(leaves: u32, cells: u32) -> u32 {
+        if leaves > 536870911 {
+            return 4294967295;
+        }
+        let e: u32 = leaves * GRID_ENTRIES_PER_LIGHT;
+        let t: u32 = add_wrap_u32(e, cells);
+        return select(t, 4294967295, t < e);
+    }
+
+    /// A grid's cells: the box `(lo, hi)`, `inv` cells per unit length
+    /// along each axis and `(nx, ny, nz)` cells (cell `(x, y, z)` is
+    /// `(z·ny + y)·nx + x`); 48 bytes, the same layout in Rust and WGSL.
+    pub struct GridFrame {
+        /// The box's lower corner.
+        pub lo: vec3f,
+        /// Cells along x.
+        pub nx: u32,
+        /// The box's upper corner.
+        pub hi: vec3f,
+        /// Cells along y.
+        pub ny: u32,
+        /// Cells per unit length along each axis.
+        pub inv: vec3f,
+        /// Cells along z.
+        pub nz: u32,
+    }
+
+    /// The farthest from its centre that leaf `node`'s test reaches for a
+    /// receiver whose range lobe is at most `w` ([`crate::bsh::walk::bsh_reaches`]):
+    /// its sphere, and for `w > 1` also the walk's own glossy bound
+    /// [`bsh_reach_bound`].
+    pub fn bsh_grid_reach(node: BshNode, w: f32) -> f32 {
+        if w > 1.0 {
+            return max(node.radius, bsh_reach_bound(node, w));
+        }
+        return node.radius;
+    }
+
+    /// A leaf's reach padded for its box of cells: the leaf test rounds,
+    /// the box must not (a relative 1e-5), and squares underflow, so a
+    /// point within ~5e-23 of a centre passes even a zero radius. A reach
+    /// above 1e19 (its square may overflow, and the test then holds
+    /// everywhere) becomes the largest f32: every cell.
+    pub fn bsh_grid_pad(reach: f32) -> f32 {
+        if reach > 1e19 {
+            return 3.4028235e38;
+        }
+        return reach * (1.0 + 1e-5) + 1e-22;
+    }
+
+    /// The cell along one axis (from `lo`, `inv` cells per unit, `n`
+    /// cells) holding the coordinate `v`: `⌊(v − lo)·inv⌋` kept in
+    /// `[0, n − 1]` (a NaN coordinate lands in the range too).
+    pub fn bsh_grid_axis(v: f32, lo: f32, inv: f32, n: u32) -> u32 {
+        return min(to_u32(max(floor((v - lo) * inv), 0.0)), n - 1);
+    }
+
+    /// The cell of frame `f` holding the point `x`, or `BSH_NONE` outside
+    /// its box (or for a NaN point).
+    pub fn bsh_grid_cell(f: GridFrame, x: vec3f) -> u32 {
+        let inside: bool = x.x >= f.lo.x && x.y >= f.lo.y && x.z >= f.lo.z && x.x <= f.hi.x && x.y <= f.hi.y && x.z <= f.hi.z;
+        if !inside {
+            return BSH_NONE;
+        }
+        let cx: u32 = bsh_grid_axis(x.x, f.lo.x, f.inv.x, f.nx);
+        let cy: u32 = bsh_grid_axis(x.y, f.lo.y, f.inv.y, f.ny);
+        let cz: u32 = bsh_grid_axis(x.z, f.lo.z, f.inv.z, f.nz);
+        return (cz * f.ny + cy) * f.nx + cx;
+    }
+}
+
+impl GridFrame {
+    /// The frames a grid over the box `(lo, hi)` (the scene's) tries for
+    /// `n` lights in the tree: `∛(n/2)` cells along the box's longest axis
+    /// within [`GRID_RES_MIN`]`..=`[`GRID_RES_MAX`], then halved down to
+    /// [`GRID_RES_MIN`] ([`BshGrid::build`] takes the first whose entries
+    /// fit [`GridFrame::budget`]). Empty for a box that is not finite and
+    /// positive.
+    pub fn levels(lo: Vec3, hi: Vec3, n: usize) -> Vec<GridFrame> {
+        let res = libm::cbrtf(n as f32 / 2.0) as u32;
+        Self::levels_at(lo, hi, res.clamp(GRID_RES_MIN, GRID_RES_MAX))
+    }
+
+    /// [`GridFrame::levels`] from `res` cells along the longest axis
+    /// (within [`GRID_RES_MIN`]`..=`[`GRID_RES_LIMIT`]). The box is padded:
+    /// a flat one (a single wall) gets a thickness, so no axis's cells are
+    /// narrower than 10⁻³ of the longest, and every side a margin of 10⁻⁴
+    /// of it, for points on the surfaces that rounding put outside.
+    pub fn levels_at(lo: Vec3, hi: Vec3, res: u32) -> Vec<GridFrame> {
+        let ext = hi - lo;
+        if !(lo.is_finite() && ext.is_finite() && ext.min_element() > 0.0) {
+            return Vec::new();
+        }
+        let pad = Vec3::splat(ext.max_element() * 1e-4);
+        let lo = lo - pad;
+        let ext = ext.max(Vec3::splat(ext.max_element() * 1e-3)) + 2.0 * pad;
+        let hi = lo + ext;
+        let mut res = res.clamp(GRID_RES_MIN, GRID_RES_LIMIT);
+        let mut levels = Vec::new();
+        loop {
+            let cell = ext.max_element() / res as f32;
+            let n = (ext / cell).ceil().as_uvec3().max(UVec3::ONE);
+            let inv = n.as_vec3() / ext;
+            if !inv.is_finite() {
+                return levels;
+            }
+            levels.push(GridFrame { lo, nx: n.x, hi, ny: n.y, inv, nz: n.z });
+            if res / 2 < GRID_RES_MIN {
+                return levels;
+            }
+            res /= 2;
+        }
+    }
+
+    /// Cells along each axis.
+    pub fn dims(&self) -> UVec3 {
+        UVec3::new(self.nx, self.ny, self.nz)
+    }
+
+    /// Cells in all.
+    pub fn cells(&self) -> u64 {
+        self.nx as u64 * self.ny as u64 * self.nz as u64
+    }
+
+    /// The most entries the frame may hold for `lights` leaves in the
+    /// tree ([`bsh_grid_budget`]).
+    pub fn budget(&self, lights: u64) -> u64 {
+        let (l, c) = (lights.min(u32::MAX as u64) as u32, self.cells().min(u32::MAX as u64) as u32);
+        bsh_grid_budget(l, c) as u64
+    }
+
+    /// The cells `(first, last)` along each axis that leaf `node`'s test
+    /// can reach for range lobes up to `w` ([`bsh_grid_reach`], padded by
+    /// [`bsh_grid_pad`]).
+    pub fn cover(&self, node: BshNode, w: f32) -> (UVec3, UVec3) {
+        let r = bsh_grid_pad(bsh_grid_reach(node, w));
+        let (c, lo, inv, n) = (node.center, self.lo, self.inv, self.dims());
+        let a = UVec3::new(
+            bsh_grid_axis(c.x - r, lo.x, inv.x, n.x),
+            bsh_grid_axis(c.y - r, lo.y, inv.y, n.y),
+            bsh_grid_axis(c.z - r, lo.z, inv.z, n.z),
+        );
+        let b = UVec3::new(
+            bsh_grid_axis(c.x + r, lo.x, inv.x, n.x),
+            bsh_grid_axis(c.y + r, lo.y, inv.y, n.y),
+            bsh_grid_axis(c.z + r, lo.z, inv.z, n.z),
+        );
+        (a, b)
+    }
+}
 
 /// Fewest cells along the grid's longest axis: [`BshGrid::build`] takes
 /// `∛(n/2)` for `n` lights, within these bounds (32 for 49,152 lights, 16 for
@@ -45,19 +211,30 @@ pub const GRID_RES_MAX: u32 = 64;
 /// cells at most).
 pub const GRID_RES_LIMIT: u32 = 256;
 
-/// Most entries a grid may hold per light in the tree (plus one per cell;
-/// 20 bytes each): past it the resolution halves, and below
-/// [`GRID_RES_MIN`] there is no grid (ranges as large as the scene: the
-/// tree is as good). The suite's scenes take 2–5 at their own resolution.
-pub const GRID_ENTRIES_PER_LIGHT: u64 = 8;
+/// The tree's leaves (node indices) in the order the stackless walk
+/// visits them, the range tail's copies left out: a wide tree's node order
+/// is not the walk's (its families sit side by side). What a grid lists in
+/// each cell, in this order, on both backends.
+pub fn walk_leaves(bsh: &Bsh) -> Vec<u32> {
+    let (nodes, tree) = (bsh.nodes(), bsh.tree_len());
+    let mut leaves = Vec::with_capacity(bsh.len());
+    let mut i = if tree > 0 { 0u32 } else { BSH_NONE };
+    while i != BSH_NONE && (i as usize) < tree {
+        let n = nodes[i as usize];
+        if n.child != BSH_NONE {
+            i = n.child;
+        } else {
+            leaves.push(i);
+            i = n.next;
+        }
+    }
+    leaves
+}
 
 /// A grid of one refit's leaf spheres (see the module docs).
 #[derive(Clone, Debug)]
 pub struct BshGrid {
-    lo: Vec3,
-    hi: Vec3,
-    inv: Vec3,
-    n: UVec3,
+    frame: GridFrame,
     /// The largest range lobe `rl.w` the cells hold (1: the plain spheres).
     reach: f32,
     /// Cell `c`'s entries are `start[c]..start[c + 1]`.
@@ -88,8 +265,7 @@ impl BshGrid {
     /// its sphere scaled by `w` can touch. `w ≤ 1` is [`Self::build`]'s
     /// grid; `None` also for a `w` that is not finite.
     pub fn build_reaching(bsh: &Bsh, lo: Vec3, hi: Vec3, w: f32) -> Option<BshGrid> {
-        let res = libm::cbrtf(bsh.len() as f32 / 2.0) as u32;
-        Self::build_reaching_at(bsh, lo, hi, res.clamp(GRID_RES_MIN, GRID_RES_MAX), w)
+        Self::build_in(bsh, GridFrame::levels(lo, hi, bsh.len()), w)
     }
 
     /// [`Self::build`] at `res` cells along the box's longest axis, halved
@@ -103,94 +279,49 @@ impl BshGrid {
     /// [`Self::build_reaching`] at `res` cells along the box's longest
     /// axis, halved as [`Self::build_at`] halves it.
     pub fn build_reaching_at(bsh: &Bsh, lo: Vec3, hi: Vec3, res: u32, w: f32) -> Option<BshGrid> {
-        let ext = hi - lo;
-        if !(lo.is_finite() && ext.is_finite() && ext.min_element() > 0.0) || bsh.is_empty() {
-            return None;
-        }
-        if !w.is_finite() {
+        Self::build_in(bsh, GridFrame::levels_at(lo, hi, res), w)
+    }
+
+    /// The grid in the first of `levels` whose entries fit its
+    /// [`GridFrame::budget`].
+    fn build_in(bsh: &Bsh, levels: Vec<GridFrame>, w: f32) -> Option<BshGrid> {
+        if bsh.is_empty() || !w.is_finite() {
             return None;
         }
         let w = w.max(1.0);
-        // A flat box (a single wall) gets a thickness, so no axis's cells
-        // are narrower than 10⁻³ of the longest; and every side a margin of
-        // 10⁻⁴ of it, for points on the surfaces that rounding put outside.
-        let pad = Vec3::splat(ext.max_element() * 1e-4);
-        let lo = lo - pad;
-        let ext = ext.max(Vec3::splat(ext.max_element() * 1e-3)) + 2.0 * pad;
-        let hi = lo + ext;
-        // The walk's leaves in its order: the tree's, then the tail's copies.
+        // The walk's leaves in its order: the tree's (a marked leaf is
+        // never found), then the tail's copies, chained from the root's
+        // `next`.
         let nodes = bsh.nodes();
-        let tree = bsh.tree_len();
-        let (mut inside, mut tail_spheres, mut tail_lights, mut tail_extents) =
-            (Vec::new(), Vec::new(), Vec::new(), Vec::new());
-        let mut i = 0u32;
+        let inside: Vec<u32> = walk_leaves(bsh)
+            .into_iter()
+            .filter(|&i| nodes[i as usize].light & BSH_TAIL == 0)
+            .collect();
+        let (mut tail_spheres, mut tail_lights, mut tail_extents) =
+            (Vec::new(), Vec::new(), Vec::new());
+        let mut i = nodes[0].next;
         while i != BSH_NONE {
             let n = nodes[i as usize];
-            if n.child != BSH_NONE {
-                i = n.child;
-                continue;
-            }
-            // The walk's own choice: a marked leaf is never found.
-            if n.light & BSH_TAIL == 0 {
-                if (i as usize) < tree {
-                    inside.push(i);
-                } else {
-                    tail_spheres.push(n.center.extend(n.radius));
-                    tail_lights.push(n.light);
-                    if w > 1.0 {
-                        tail_extents.push(n.extent);
-                    }
-                }
+            tail_spheres.push(n.center.extend(n.radius));
+            tail_lights.push(n.light);
+            if w > 1.0 {
+                tail_extents.push(n.extent);
             }
             i = n.next;
         }
         let lights_in = inside.len() as u64;
-        let mut res = res.clamp(GRID_RES_MIN, GRID_RES_LIMIT);
-        loop {
-            let cell = ext.max_element() / res as f32;
-            let n = (ext / cell).ceil().as_uvec3().max(UVec3::ONE);
-            let inv = n.as_vec3() / ext;
-            if !inv.is_finite() {
-                return None;
-            }
-            let cells = (n.x * n.y * n.z) as usize;
-            let cover = |i: u32| {
-                let s = nodes[i as usize];
-                // The farthest the leaf test reaches: the sphere, or for a
-                // lobe up to `w` the walk's own bound.
-                let reach = if w > 1.0 { s.radius.max(bsh_reach_bound(s, w)) } else { s.radius };
-                // A reach whose square overflows holds every point (the
-                // leaf test's `d² ≤ ∞`): every cell.
-                if reach * reach == f32::INFINITY {
-                    return (UVec3::ZERO, n - 1);
-                }
-                // Padded: the leaf test rounds, the box must not; and
-                // squares underflow, so a point within ~5e-23 of a centre
-                // passes even a zero radius.
-                let r = reach * (1.0 + 1e-5) + 1e-22;
-                let a = ((s.center - r - lo) * inv).floor().max(Vec3::ZERO);
-                let b = ((s.center + r - lo) * inv).floor().max(Vec3::ZERO);
-                let top = (n - 1).as_vec3();
-                // NaN spheres (never found) cover nothing.
-                if a.is_nan() || b.is_nan() {
-                    return (UVec3::ONE, UVec3::ZERO);
-                }
-                (a.min(top).as_uvec3(), b.min(top).as_uvec3())
-            };
+        for frame in levels {
+            let n = frame.dims();
+            let cells = frame.cells() as usize;
             // Each leaf's cells, once: counted, then filled.
-            let covers: Vec<(UVec3, UVec3)> = inside.iter().map(|&i| cover(i)).collect();
+            let covers: Vec<(UVec3, UVec3)> =
+                inside.iter().map(|&i| frame.cover(nodes[i as usize], w)).collect();
             let mut total = 0u64;
             for &(a, b) in &covers {
-                if a.x <= b.x && a.y <= b.y && a.z <= b.z {
-                    let d = b - a + 1;
-                    total += d.x as u64 * d.y as u64 * d.z as u64;
-                }
+                let d = b - a + 1;
+                total += d.x as u64 * d.y as u64 * d.z as u64;
             }
-            if total > (GRID_ENTRIES_PER_LIGHT * lights_in + cells as u64).min(u32::MAX as u64) {
-                if res / 2 < GRID_RES_MIN {
-                    return None;
-                }
-                res /= 2;
+            if total > frame.budget(lights_in) {
                 continue;
             }
             let each = |(a, b): (UVec3, UVec3), f: &mut dyn FnMut(usize)| {
@@ -227,10 +358,7 @@ impl BshGrid {
                 });
             }
             return Some(BshGrid {
-                lo,
-                hi,
-                inv,
-                n,
+                frame,
                 reach: w,
                 start,
                 spheres,
@@ -241,6 +369,7 @@ impl BshGrid {
                 tail_extents,
             });
         }
+        None
     }
 
     /// Calls `visit(light)` for each light whose range sphere contains `x`,
@@ -323,11 +452,8 @@ impl BshGrid {
 
     /// The cell holding `x`, or `None` outside the grid's box (or NaN).
     fn cell(&self, x: Vec3) -> Option<usize> {
-        if !(x.cmpge(self.lo).all() && x.cmple(self.hi).all()) {
-            return None;
-        }
-        let c = ((x - self.lo) * self.inv).floor().min((self.n - 1).as_vec3()).as_uvec3();
-        Some(((c.z * self.n.y + c.y) * self.n.x + c.x) as usize)
+        let c = bsh_grid_cell(self.frame, x);
+        (c != BSH_NONE).then_some(c as usize)
     }
 
     /// Entries in all cells (each light once per cell its box overlaps).
@@ -337,6 +463,11 @@ impl BshGrid {
 
     /// Cells along each axis.
     pub fn cells(&self) -> UVec3 {
-        self.n
+        self.frame.dims()
+    }
+
+    /// The grid's frame (its box and cells).
+    pub fn frame(&self) -> GridFrame {
+        self.frame
     }
 }
