@@ -34,6 +34,7 @@ struct Input {
     reuse_domains: u8,
     tile_walk: bool,
     ray_query: bool,
+    bsh_grid: bool,
 }
 
 fuzz_target!(|i: Input| {
@@ -74,6 +75,7 @@ fuzz_target!(|i: Input| {
         reuse_domains: i.reuse_domains as u32 % 10,
         tile_walk: i.tile_walk,
         ray_query: i.ray_query,
+        bsh_grid: i.bsh_grid,
     };
     match generate(kernel, &features) {
         Ok(wgsl) => assert!(wgsl.contains("fn "), "{kernel:?}: empty source"),

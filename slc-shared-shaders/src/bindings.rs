@@ -230,6 +230,15 @@ pub fn bindings(kernel: Kernel, f: &Features) -> Vec<Binding> {
             write(4, "tail", "array<atomic<u32>>", "the range tail: its histogram cut, length and lights"),
             b(0, 5, "bsh_nodes", Resource::ReadWrite("array<BshNode>"), "the BSH", "host (build), `bsh_refit`, this kernel (the tail's leaves and links)"),
         ],
+        Kernel::BshGrid => vec![
+            uniform(0, "params", "GridParams", true, "the stage, leaf count, frames tried, entries' capacity, reach"),
+            read(1, "bsh_nodes", "array<BshNode>", "the refitted BSH", "`bsh_refit`"),
+            read(2, "grid_leaves", "array<u32>", "the tree's leaves in the walk's order", "host"),
+            read(3, "grid_levels", "array<GridFrame>", "the frames tried, finest first (slc-core's `GridFrame::levels`)", "host"),
+            write(4, "grid", "array<atomic<u32>>", "the pass's frame and reach, the counts, then each cell's first entry (`GRID_HEADER` on)"),
+            write(5, "grid_fill", "array<atomic<u32>>", "each cell's entries counted, then filled (zero between passes)"),
+            write(6, "grid_entries", "array<u32>", "the cells' leaves, cell after cell, each in the walk's order"),
+        ],
         Kernel::VplTiled => {
             let mut v = vec![uniform(0, "params", "VplParams", true, "image size, slots per subset, clamp distance, near field, the culling grids")];
             v.extend(gbuffer_in(1, f.surface));
@@ -385,6 +394,10 @@ pub fn bindings(kernel: Kernel, f: &Features) -> Vec<Binding> {
                 write(9, "radiance", vec4, "accumulated radiance"),
                 write(10, "candidates", "array<u32>", "what the traversal found per vertex (MIS)"),
             ]);
+            if f.bsh_grid {
+                v.push(read(11, "grid", "array<u32>", "the pass's grid: frame, reach, each cell's first entry", "`bsh_grid`"));
+                v.push(read(12, "grid_entries", "array<u32>", "the cells' leaves in node order", "`bsh_grid`"));
+            }
             v.extend(pt_tables(ies));
             return v;
         }

@@ -227,6 +227,40 @@ slc_core::shared! {
         pub tree: u32,
     }
 
+    /// Words before the cell starts in `bsh_grid`'s `grid` buffer: the
+    /// chosen frame (slc-core's `GridFrame`, 12 words; no cells along x:
+    /// no grid this pass), the reach it serves (13th word, f32 bits), the
+    /// leaves counted, then each level's entry count (64-bit: low, high).
+    pub const GRID_HEADER: u32 = 32;
+
+    /// Most frames `bsh_grid` tries (slc-core's `GridFrame::levels`: 64
+    /// cells down to 4 is five).
+    pub const GRID_LEVELS_MAX: u32 = 8;
+
+    /// Uniforms of one `bsh_grid` dispatch: its stage (0 each level's
+    /// entries counted, 1 the level chosen, 2 each cell's entries counted,
+    /// 3 their starts, 4 the leaves scattered, 5 each cell sorted), the
+    /// tree's leaf count, the frames tried, the entries' capacity and the largest
+    /// range lobe the grid serves.
+    pub struct GridParams {
+        /// Stage.
+        pub stage: u32,
+        /// Leaves in the tree.
+        pub count: u32,
+        /// Frames in `grid_levels`.
+        pub levels: u32,
+        /// Entries `grid_entries` holds.
+        pub capacity: u32,
+        /// The largest range lobe `rl.w` the grid serves (1: the plain spheres).
+        pub reach: f32,
+        /// Cells of the largest frame (the per-cell stages' extent).
+        pub cells: u32,
+        /// Padding.
+        pub pad0: u32,
+        /// Padding.
+        pub pad1: u32,
+    }
+
     /// Uniforms of `vpl_tiled`, `vpl_near`, `vpl_denoise`, `vpl_clusters`
     /// and `vpl_groups`, 80 bytes. `boxes` holds the far field's cluster
     /// boxes (subset after subset), its group boxes, the near field's

@@ -174,6 +174,10 @@ pub enum Kernel {
     /// radii, its cut, the lights above it and their leaves after the
     /// tree.
     BshTail,
+    /// A uniform grid over the refitted BSH's leaves for the pass (slc-core's
+    /// `BshGrid`), by a counting sort in six stages: what `pt_connect`
+    /// tests instead of walking the tree where [`Features::bsh_grid`].
+    BshGrid,
     /// Tiled culling + VPL shading per interleaved sub-image.
     VplTiled,
     /// BSH traversal into a k-slot reservoir + shading with shadow rays.
@@ -220,10 +224,11 @@ pub enum Kernel {
 
 impl Kernel {
     /// All kernels.
-    pub const ALL: [Kernel; 19] = [
+    pub const ALL: [Kernel; 20] = [
         Kernel::LightUpdate,
         Kernel::BshRefit,
         Kernel::BshTail,
+        Kernel::BshGrid,
         Kernel::VplTiled,
         Kernel::VplDenoise,
         Kernel::VplNear,
@@ -248,6 +253,7 @@ impl Kernel {
             Kernel::LightUpdate => "light_update",
             Kernel::BshRefit => "bsh_refit",
             Kernel::BshTail => "bsh_tail",
+            Kernel::BshGrid => "bsh_grid",
             Kernel::VplTiled => "vpl_tiled",
             Kernel::BshReservoir => "bsh_reservoir",
             Kernel::PtConnect => "pt_connect",
@@ -476,6 +482,12 @@ pub struct Features {
     /// same end margins. Needs `shadows`; not with `counters` (a ray
     /// query counts no node).
     pub ray_query: bool,
+    /// `pt_connect` finds a vertex's candidates in the pass's grid
+    /// (`bsh_grid`; bindings 0.11 `grid` and 0.12 `grid_entries`) where it
+    /// has one and the vertex's range lobe is within the grid's reach,
+    /// else by the walk: the same lights in the same order. Other kernels
+    /// ignore it.
+    pub bsh_grid: bool,
 }
 
 impl Default for Features {
@@ -501,11 +513,12 @@ impl Default for Features {
             reuse_domains: 0,
             tile_walk: true,
             ray_query: false,
+            bsh_grid: false,
         }
     }
 }
 
-const TEMPLATES: [(&str, &str); 37] = [
+const TEMPLATES: [(&str, &str); 39] = [
     ("header.wgsl", include_str!("templates/header.wgsl")),
     ("workgroup_box.wgsl", include_str!("templates/workgroup_box.wgsl")),
     ("lights.wgsl", include_str!("templates/lights.wgsl")),
@@ -516,6 +529,8 @@ const TEMPLATES: [(&str, &str); 37] = [
     ("light_update", include_str!("templates/light_update.wgsl")),
     ("bsh_refit", include_str!("templates/bsh_refit.wgsl")),
     ("bsh_tail", include_str!("templates/bsh_tail.wgsl")),
+    ("bsh_grid", include_str!("templates/bsh_grid.wgsl")),
+    ("bsh_grid_frame.wgsl", include_str!("templates/bsh_grid_frame.wgsl")),
     ("vpl_tiled", include_str!("templates/vpl_tiled.wgsl")),
     ("vpl_denoise", include_str!("templates/vpl_denoise.wgsl")),
     ("vpl_near", include_str!("templates/vpl_near.wgsl")),
@@ -766,6 +781,8 @@ pub fn generate_module(kernel: Kernel, features: &Features) -> Result<Generated,
         core => slc_core::wgsl::library(),
         bsh_walk => slc_core::wgsl::translate(slc_core::bsh::walk::WGSL),
         bsh_tail => slc_core::wgsl::translate(slc_core::bsh::tail::WGSL),
+        bsh_grid => slc_core::wgsl::translate(slc_core::bsh::grid::WGSL),
+        grid => features.bsh_grid && kernel == Kernel::PtConnect,
         bvh_walk => slc_core::wgsl::translate(slc_core::light_bvh::walk::WGSL) + slc_core::light_bvh::WALK_WGSL_PRELUDE,
         layout => slc_core::wgsl::translate(layout::WGSL),
         light_names => l.names().join(", "),

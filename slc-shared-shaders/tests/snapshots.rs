@@ -19,6 +19,7 @@ fn variants() -> Vec<(&'static str, Kernel, Features)> {
         ("light_update", Kernel::LightUpdate, Features::default()),
         ("bsh_refit", Kernel::BshRefit, Features::default()),
         ("bsh_tail", Kernel::BshTail, Features::default()),
+        ("bsh_grid", Kernel::BshGrid, Features::default()),
         (
             "vpl_tiled-slc-tile8-p8",
             Kernel::VplTiled,
@@ -103,6 +104,11 @@ fn variants() -> Vec<(&'static str, Kernel, Features)> {
                 selection: Selection::LightBvh,
                 ..Features::default()
             },
+        ),
+        (
+            "pt_connect-weighted-grid",
+            Kernel::PtConnect,
+            Features { selection: Selection::Weighted, bsh_grid: true, ..Features::default() },
         ),
         (
             "pt_connect-all-k16-balance",

@@ -61,13 +61,22 @@ fn every_bsh_variant_validates() {
         }
     }
     for wg in [1, 32, 64, 256] {
-        for kernel in [Kernel::LightUpdate, Kernel::BshRefit, Kernel::BshTail] {
+        for kernel in [Kernel::LightUpdate, Kernel::BshRefit, Kernel::BshTail, Kernel::BshGrid] {
             generate_module(kernel, &Features { workgroup_size: wg, ..Features::default() })
                 .unwrap();
             n += 1;
         }
     }
-    assert_eq!(n, 31 * 3 * 2 * 11 + 12);
+    // pt_connect's grid variant, for the selections that walk the BSH.
+    for selection in [Selection::Reservoir, Selection::All, Selection::Weighted] {
+        for lights in [LightTypes::ALL, LightTypes::parse("triangle").unwrap()] {
+            let f = Features { lights, selection, bsh_grid: true, ..Features::default() };
+            let g = generate_module(Kernel::PtConnect, &f).unwrap();
+            assert!(g.source.contains("grid_entries"), "{f:?}");
+            n += 1;
+        }
+    }
+    assert_eq!(n, 31 * 3 * 2 * 11 + 16 + 6);
 }
 
 #[test]

@@ -55,6 +55,7 @@ pub(crate) fn check_kernels(
             | Kernel::LightRanges
             | Kernel::BshRefit
             | Kernel::BshTail
+            | Kernel::BshGrid
             | Kernel::BshReservoir
             | Kernel::PtConnect
             | Kernel::PtExtend => (f.workgroup_size, 1),

@@ -52,6 +52,7 @@
 
 pub mod context;
 pub mod frame;
+mod grid;
 mod kernel;
 mod lights;
 pub mod occluders;

@@ -31,6 +31,7 @@
 //! lavapipe does not on a few segments toward thin triangle lights:
 //! docs/results/pt-ray-queries.md).
 
+use crate::grid::GpuGrid;
 use crate::kernel::{KernelLayout, UniformSlots, pipeline, read_back, storage, zeroed};
 use crate::lights::{GpuLightSet, WG};
 use crate::occluders::{self, GpuAccel};
@@ -141,6 +142,8 @@ pub struct GpuPt {
     /// The scene's triangles as an acceleration structure, where
     /// `pt_connect` casts ray queries.
     accel: Option<GpuAccel>,
+    /// The pass's grid over the BSH's leaves (Lambertian receivers).
+    grid: GpuGrid,
 }
 
 impl GpuPt {
@@ -187,7 +190,7 @@ impl GpuPt {
             pixels * std::mem::size_of::<GpuPathState>() as u64,
             max_binding,
         )?;
-        // pt_extend: 12 in group 0 (pt_connect: 10); the IES, power and
+        // pt_extend: 12 in group 0 (pt_connect: 12 with the grid); the IES, power and
         // cone tables and the light BVH in group 1.
         gpu.require(
             "max_storage_buffers_per_shader_stage",
@@ -214,6 +217,7 @@ impl GpuPt {
             ls.cones(),
             Some(pts.light_bvh()),
         )?;
+        let grid = GpuGrid::new(gpu, &set, pts.bsh(), pts.scene().bounds(), 1.0)?;
         let base = Features {
             lights: set.types,
             workgroup_size: WG,
@@ -268,6 +272,8 @@ impl GpuPt {
             ("paths", whole(&paths)),
             ("vertices", whole(&vertices)),
             ("radiance", whole(&radiance)),
+            ("grid", whole(&grid.grid)),
+            ("grid_entries", whole(&grid.entries)),
         ];
         if let Some(a) = &accel {
             resources.push(("geo_tlas", wgpu::BindingResource::AccelerationStructure(&a.tlas)));
@@ -289,7 +295,11 @@ impl GpuPt {
             Ok::<_, GpuError>(Kernels { name: k.name(), layout, wgsl, pipelines, bind_group })
         };
         let extend = kernel(Kernel::PtExtend, &base, &pt_params)?;
-        let connect = kernel(Kernel::PtConnect, &Features { ray_query, ..base }, &shade_params)?;
+        let connect = kernel(
+            Kernel::PtConnect,
+            &Features { ray_query, bsh_grid: true, ..base },
+            &shade_params,
+        )?;
         let cam = &pts.scene().camera;
         let (f, r, u) = cam.scaled_basis(width, height);
         let g = GpuPt {
@@ -306,6 +316,7 @@ impl GpuPt {
             extend,
             connect,
             accel,
+            grid,
         };
         gpu.wait()?;
         Ok(g)
@@ -401,6 +412,7 @@ impl GpuPt {
                 // pass (written once per call), and no BSH is walked.
                 if s.method.culls() {
                     self.set.encode(&mut cp);
+                    self.grid.encode(&mut cp);
                 } else if k == 0 {
                     self.set.encode_update(&mut cp);
                 } else {
@@ -444,6 +456,15 @@ impl GpuPt {
 }
 
 impl GpuPt {
+    /// Whether the SLC methods' passes build a grid over the BSH's leaves
+    /// and find a Lambertian vertex's lights in its cell (`true`, the
+    /// default: slc-core's `BshGrid`, built on the GPU each pass) or walk
+    /// the tree for every vertex. The same lights in the same order either
+    /// way, so the same image: a switch for tests and measurements.
+    pub fn set_grid(&mut self, on: bool) {
+        self.grid.set_enabled(&self.gpu, on);
+    }
+
     /// The BSH as the last render's refit left it, range tail included,
     /// read back: for the tests that compare it with the CPU's refit.
     #[doc(hidden)]
@@ -455,6 +476,17 @@ impl GpuPt {
             mapped_at_creation: false,
         });
         read_back(gpu, &self.set.bsh, &staging)
+    }
+
+    /// The last render's grid read back: its frame (no cells along x where
+    /// it had none) and each cell's leaves (node indices): for the tests
+    /// that check it against the walk.
+    #[doc(hidden)]
+    pub fn read_grid(
+        &self,
+        gpu: &GpuContext,
+    ) -> Result<(slc_core::bsh::GridFrame, Vec<Vec<u32>>), GpuError> {
+        self.grid.read(gpu)
     }
 }
 

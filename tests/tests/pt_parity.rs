@@ -476,8 +476,99 @@ fn gpu_range_tail_matches_the_cpu_refit() {
     g.take_errors().unwrap();
 }
 
+/// The GPU's grid (`bsh_grid`) lists, in every cell, in the walk's order, each
+/// tree leaf the walk can find (not in the range tail) whose sphere holds
+/// a point of the cell (checked at 2,000 points drawn in the scene's box,
+/// against every leaf), and `slc-weighted`, `slc-reservoir` and `slc`
+/// render the same image bit for bit with and without it (the walk's
+/// lights in its order). Over the scene suite's 2,048-light points
+/// (volume, clusters) and triangles, two passes at depth 3.
+fn gpu_grid_gives_the_walks_image() {
+    use slc_core::bsh::grid::bsh_grid_cell;
+    use slc_core::bsh::{BSH_NONE, BSH_TAIL};
+    let Some(g) = gpu() else { return };
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../scenes/suite");
+    for name in ["points-volume-2048", "points-clusters-2048", "tri-away-2048"] {
+        let f = slc_scene::scene_file::SceneFile::load(&dir.join(format!("{name}.toml"))).unwrap();
+        let pts = PtScene::new(&f.scene, &f.lights).unwrap();
+        let mut gpt = GpuPt::new(g, &pts, W, H).unwrap();
+        let tree = pts.bsh().tree_len();
+        let mut rank = vec![u32::MAX; pts.bsh().nodes().len()];
+        for (r, &i) in slc_core::bsh::grid::walk_leaves(pts.bsh()).iter().enumerate() {
+            rank[i as usize] = r as u32;
+        }
+        for method in [PtMethod::SlcWeighted, PtMethod::SlcReservoir, PtMethod::Slc] {
+            let set = PtSettings { method, seed: 3, max_depth: 3, ..PtSettings::default() };
+            let mut images = Vec::new();
+            for on in [true, false] {
+                gpt.set_grid(on);
+                let mut acc = PtRender::new(W, H);
+                gpt.render(&mut acc, &set, 2).unwrap();
+                images.push(acc.image().data);
+                if !on || method != PtMethod::SlcWeighted {
+                    continue;
+                }
+                let (frame, cells) = gpt.read_grid(g).unwrap();
+                let nodes = gpt.read_bsh(g).unwrap();
+                assert!(frame.nx > 0 && cells.len() as u64 == frame.cells(), "{name}: no grid");
+                let listed: usize = cells.iter().map(Vec::len).sum();
+                for cell in &cells {
+                    let ranks: Vec<u32> = cell.iter().map(|&b| rank[b as usize]).collect();
+                    assert!(ranks.windows(2).all(|w| w[0] < w[1]), "{name}: a cell out of order");
+                    for &b in cell {
+                        let n = nodes[b as usize];
+                        assert!(
+                            (b as usize) < tree && n.child == BSH_NONE && n.light & BSH_TAIL == 0
+                        );
+                    }
+                }
+                let found = |p: Vec3| {
+                    (0..tree)
+                        .filter(|&i| {
+                            let n = nodes[i];
+                            n.child == BSH_NONE
+                                && n.light & BSH_TAIL == 0
+                                && (p - n.center).length_squared() <= n.radius * n.radius
+                        })
+                        .count()
+                };
+                let (lo, hi) = pts.scene().bounds();
+                let mut h = 7u32;
+                let mut next = || {
+                    h = slc_core::xi::pcg_hash(h);
+                    slc_core::xi::xi_from_bits(h)
+                };
+                let mut held = 0;
+                for _ in 0..2000 {
+                    let u = Vec3::new(next(), next(), next());
+                    let p = lo + (hi - lo) * u;
+                    let c = bsh_grid_cell(frame, p);
+                    assert_ne!(c, BSH_NONE, "{name}: {p} outside the grid");
+                    let cell = &cells[c as usize];
+                    let inside = cell
+                        .iter()
+                        .filter(|&&b| {
+                            let n = nodes[b as usize];
+                            (p - n.center).length_squared() <= n.radius * n.radius
+                        })
+                        .count();
+                    assert_eq!(inside, found(p), "{name}: the cell of {p} misses a leaf");
+                    held += inside;
+                }
+                assert!(held > 0 && listed > 0, "{name}: {held} lights found, {listed} listed");
+            }
+            assert!(
+                images[0] == images[1],
+                "{name}, {method:?}: the grid's image differs from the walk's"
+            );
+        }
+    }
+    g.take_errors().unwrap();
+}
+
 slc_tests::harness!(
     Gpu: gpu_range_tail_matches_the_cpu_refit,
+    Gpu: gpu_grid_gives_the_walks_image,
     RayQuery: ray_query_path_tracer_equals_the_software_walk,
     Gpu: ray_query_path_tracer_without_the_feature,
     Gpu: gpu_path_tracer_matches_cpu_and_unculled_in_expectation,

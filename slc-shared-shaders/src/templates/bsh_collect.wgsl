@@ -11,6 +11,68 @@ struct Picks {
 }
 
 {% include "bsh_walk.wgsl" %}
+{% if grid %}
+{{ bsh_grid }}
+
+/// Word `i` of the pass's grid (the reader `bsh_grid_frame.wgsl` expects).
+fn grid_word(i: u32) -> u32 {
+    return grid[i];
+}
+
+{% include "bsh_grid_frame.wgsl" %}
+{% endif %}
+
+/// Where a receiver's candidates come from: its cell's entries `i..end`
+/// of the pass's grid, then the walk from node `next` (the range tail
+/// after a cell; the root without one).
+struct BshCursor {
+    i: u32,
+    end: u32,
+    next: u32,
+}
+
+/// The candidates of a receiver at `x` (mirror direction `r`, range lobe
+/// `rl`): {% if grid %}its cell's leaves and then the range tail (whose
+/// first node is the root's `next`) where the pass has a grid whose reach
+/// holds `rl.w` and `x` lies in its box, else{% endif %} the walk of the
+/// whole tree. [`bsh_cursor_next`] gives them in the walk's order.
+fn bsh_cursor(x: vec3f, r: vec3f, rl: vec4f) -> BshCursor {
+    var c: BshCursor;
+    c.i = 0u;
+    c.end = 0u;
+    c.next = bsh_first(BSH);
+{% if grid %}
+    let f = grid_frame();
+    if c.next != BSH_NONE && f.nx > 0u && rl.w <= grid_reach() {
+        let cell = bsh_grid_cell(f, x);
+        if cell != BSH_NONE {
+            c.i = grid[GRID_HEADER + cell];
+            c.end = grid[GRID_HEADER + cell + 1u];
+            c.next = bsh_nodes[0].next;
+        }
+    }
+{% endif %}
+    return c;
+}
+
+/// The next leaf of cursor `c` whose test ([`bsh_reaches`]) the receiver
+/// passes, or `BSH_NONE`.
+fn bsh_cursor_next(c: ptr<function, BshCursor>, x: vec3f, r: vec3f, rl: vec4f) -> u32 {
+{% if grid %}
+    while (*c).i < (*c).end {
+        let b = grid_entries[(*c).i];
+        (*c).i += 1u;
+        if bsh_reaches(bsh_nodes[b], x, r, rl) {
+            return b;
+        }
+    }
+{% endif %}
+    let b = bsh_next_leaf_lobe(BSH, (*c).next, x, r, rl);
+    if b != BSH_NONE {
+        (*c).next = bsh_nodes[b].next;
+    }
+    return b;
+}
 
 /// Lights whose range sphere, scaled for the receiver at `x` (mirror
 /// direction `r`, range lobe `rl`; slc-core's `bsh_reaches`), contains `x`,
@@ -19,7 +81,8 @@ fn bsh_collect(x: vec3f, r: vec3f, rl: vec4f, seed: u32) -> Picks {
     var picks: Picks;
     picks.n = 0u;
     var h = seed;
-    for (var i = bsh_next_leaf_lobe(BSH, bsh_first(BSH), x, r, rl); i != BSH_NONE; i = bsh_next_leaf_lobe(BSH, bsh_nodes[i].next, x, r, rl)) {
+    var cur = bsh_cursor(x, r, rl);
+    for (var i = bsh_cursor_next(&cur, x, r, rl); i != BSH_NONE; i = bsh_cursor_next(&cur, x, r, rl)) {
         reservoir_offer(&picks, &h, bsh_nodes[i].light);
     }
     return picks;

@@ -50,7 +50,8 @@ fn weighted_offer(picks: ptr<function, WeightedPicks>, li: u32, w: f32) {
 /// driven by the stream `h0`.
 fn bsh_weighted_collect(x: vec3f, n: vec3f, r: vec3f, lobe: vec4f, rl: vec4f, h0: u32) -> WeightedPicks {
     var picks = weighted_picks(h0);
-    for (var b = bsh_next_leaf_lobe(BSH, bsh_first(BSH), x, r, rl); b != BSH_NONE; b = bsh_next_leaf_lobe(BSH, bsh_nodes[b].next, x, r, rl)) {
+    var cur = bsh_cursor(x, r, rl);
+    for (var b = bsh_cursor_next(&cur, x, r, rl); b != BSH_NONE; b = bsh_cursor_next(&cur, x, r, rl)) {
         let li = bsh_nodes[b].light;
         weighted_offer(&picks, li, light_weight(li, x, n, r, lobe, rl));
     }

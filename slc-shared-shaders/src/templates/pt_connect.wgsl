@@ -96,7 +96,8 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
 {% elif selection == "all" %}
     // Every in-range light, each connected as the traversal finds it.
     var count = 0u;
-    for (var b = bsh_next_leaf_lobe(BSH, bsh_first(BSH), x, r, rl); b != BSH_NONE; b = bsh_next_leaf_lobe(BSH, bsh_nodes[b].next, x, r, rl)) {
+    var cur = bsh_cursor(x, r, rl);
+    for (var b = bsh_cursor_next(&cur, x, r, rl); b != BSH_NONE; b = bsh_cursor_next(&cur, x, r, rl)) {
         count += 1u;
         h = pcg_hash(h);
         let u1 = xi_from_bits(h);

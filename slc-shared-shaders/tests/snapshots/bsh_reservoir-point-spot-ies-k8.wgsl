@@ -51,6 +51,12 @@ struct Picks {
     n: u32,
 }
 
+struct BshCursor {
+    i: u32,
+    end: u32,
+    next: u32,
+}
+
 struct Connection {
     e: vec3<f32>,
     y: vec3<f32>,
@@ -63,6 +69,8 @@ const LIGHT_IES: u32 = 2u;
 const LIGHT_TRIANGLE: u32 = 3u;
 const LIGHT_VPL: u32 = 4u;
 const NO_LIGHT: u32 = 4294967295u;
+const GRID_HEADER: u32 = 32u;
+const GRID_LEVELS_MAX: u32 = 8u;
 const COUNT_TILES: u32 = 0u;
 const COUNT_GROUP_TESTS: u32 = 1u;
 const COUNT_CLUSTER_TESTS: u32 = 2u;
@@ -278,8 +286,8 @@ fn atan_portable(x_4: f32) -> f32 {
     let _e21 = base;
     let _e33 = t;
     let _e35 = t;
-    let r_6 = (_e21 + (((((((((0.080537446f * z) - 0.13877685f) * z) + 0.19977711f) * z) - 0.3333295f) * z) * _e33) + _e35));
-    return select(r_6, -(r_6), (x_4 < 0f));
+    let r_8 = (_e21 + (((((((((0.080537446f * z) - 0.13877685f) * z) + 0.19977711f) * z) - 0.3333295f) * z) * _e33) + _e35));
+    return select(r_8, -(r_8), (x_4 < 0f));
 }
 
 fn atan2_portable(y_1: f32, x_5: f32) -> f32 {
@@ -437,8 +445,8 @@ fn ies_candela_dir(tab_3: u32, base_2: u32, wn: f32, wr: f32, ws: f32) -> f32 {
     let gamma_1 = degrees(_e9);
     let on_axis = ((abs(wr) + abs(ws)) <= 0f);
     let _e16 = atan2_portable(ws, wr);
-    let c_5 = select(degrees(_e16), 0f, on_axis);
-    let _e20 = ies_candela(tab_3, base_2, gamma_1, c_5);
+    let c_7 = select(degrees(_e16), 0f, on_axis);
+    let _e20 = ies_candela(tab_3, base_2, gamma_1, c_7);
     return _e20;
 }
 
@@ -536,8 +544,8 @@ fn cone_cos_of(v: vec3<f32>, d2_4: f32, a_4: f32, d: vec3<f32>) -> f32 {
     if _e21 {
         return 1f;
     }
-    let c_6 = cross(v, d);
-    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_6, c_6)) * a_4)) / d2_4), 1f);
+    let c_8 = cross(v, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_8, c_8)) * a_4)) / d2_4), 1f);
 }
 
 fn cone_cos_toward(center: vec3<f32>, radius: f32, p: vec3<f32>, d_1: vec3<f32>) -> f32 {
@@ -842,6 +850,27 @@ fn bsh_next_leaf_lobe(nodes_3: u32, start_1: u32, x_10: vec3<f32>, r_4: vec3<f32
     return BSH_NONE;
 }
 
+fn bsh_cursor(x_11: vec3<f32>, r_5: vec3<f32>, rl_5: vec4<f32>) -> BshCursor {
+    var c_4: BshCursor;
+
+    c_4.i = 0u;
+    c_4.end = 0u;
+    let _e10 = bsh_first(BSH);
+    c_4.next = _e10;
+    let _e11 = c_4;
+    return _e11;
+}
+
+fn bsh_cursor_next(c_5: ptr<function, BshCursor>, x_12: vec3<f32>, r_6: vec3<f32>, rl_6: vec4<f32>) -> u32 {
+    let _e6 = (*c_5).next;
+    let _e7 = bsh_next_leaf_lobe(BSH, _e6, x_12, r_6, rl_6);
+    if (_e7 != BSH_NONE) {
+        let _e14 = bsh_nodes[_e7].next;
+        (*c_5).next = _e14;
+    }
+    return _e7;
+}
+
 fn reservoir_offer(picks: ptr<function, Picks>, h_1: ptr<function, u32>, light: u32) {
     let _e4 = (*picks).n;
     let _e5 = reservoir_takes(_e4);
@@ -869,54 +898,54 @@ fn reservoir_offer(picks: ptr<function, Picks>, h_1: ptr<function, u32>, light: 
     }
 }
 
-fn bsh_collect(x_11: vec3<f32>, r_5: vec3<f32>, rl_5: vec4<f32>, seed_1: u32) -> Picks {
+fn bsh_collect(x_13: vec3<f32>, r_7: vec3<f32>, rl_7: vec4<f32>, seed_1: u32) -> Picks {
     var picks_1: Picks;
     var h_2: u32;
+    var cur: BshCursor;
     var i_4: u32;
 
     picks_1.n = 0u;
     h_2 = seed_1;
-    let _e10 = bsh_first(BSH);
-    let _e11 = bsh_next_leaf_lobe(BSH, _e10, x_11, r_5, rl_5);
-    i_4 = _e11;
+    let _e8 = bsh_cursor(x_13, r_7, rl_7);
+    cur = _e8;
+    let _e10 = bsh_cursor_next((&cur), x_13, r_7, rl_7);
+    i_4 = _e10;
     loop {
-        let _e13 = i_4;
-        if (_e13 != BSH_NONE) {
+        let _e12 = i_4;
+        if (_e12 != BSH_NONE) {
         } else {
             break;
         }
         {
-            let _e17 = i_4;
-            let _e20 = bsh_nodes[_e17].light;
-            reservoir_offer((&picks_1), (&h_2), _e20);
+            let _e16 = i_4;
+            let _e19 = bsh_nodes[_e16].light;
+            reservoir_offer((&picks_1), (&h_2), _e19);
         }
         continuing {
-            let _e23 = i_4;
-            let _e26 = bsh_nodes[_e23].next;
-            let _e27 = bsh_next_leaf_lobe(BSH, _e26, x_11, r_5, rl_5);
-            i_4 = _e27;
+            let _e20 = bsh_cursor_next((&cur), x_13, r_7, rl_7);
+            i_4 = _e20;
         }
     }
-    let _e28 = picks_1;
-    return _e28;
+    let _e21 = picks_1;
+    return _e21;
 }
 
-fn connect_record(l_2: GpuLight, x_12: vec3<f32>, n_6: vec3<f32>, ng_1: vec3<f32>, r2_2: f32, rt2_2: f32, w_res: f32, u1_1: f32, u2_1: f32, eps: f32, trace_1: bool) -> Connection {
-    var c_4: Connection;
+fn connect_record(l_2: GpuLight, x_14: vec3<f32>, n_6: vec3<f32>, ng_1: vec3<f32>, r2_2: f32, rt2_2: f32, w_res: f32, u1_1: f32, u2_1: f32, eps: f32, trace_1: bool) -> Connection {
+    var c_6: Connection;
     var local_10: bool;
     var local_11: bool;
 
-    c_4.e = vec3(0f);
+    c_6.e = vec3(0f);
     let _e16 = light_point(l_2, u1_1, u2_1);
-    c_4.y = _e16;
-    let _e19 = c_4.y;
-    let _e20 = connection_cosine(x_12, _e19, n_6, ng_1, r2_2);
-    c_4.cos_x = _e20;
-    let _e22 = c_4.cos_x;
+    c_6.y = _e16;
+    let _e19 = c_6.y;
+    let _e20 = connection_cosine(x_14, _e19, n_6, ng_1, r2_2);
+    c_6.cos_x = _e20;
+    let _e22 = c_6.cos_x;
     if !((_e22 <= 0f)) {
         if trace_1 {
-            let _e33 = c_4.y;
-            let _e34 = occluded((x_12 + (ng_1 * eps)), _e33);
+            let _e33 = c_6.y;
+            let _e34 = occluded((x_14 + (ng_1 * eps)), _e33);
             local_11 = _e34;
         } else {
             local_11 = false;
@@ -928,30 +957,30 @@ fn connect_record(l_2: GpuLight, x_12: vec3<f32>, n_6: vec3<f32>, ng_1: vec3<f32
     }
     let _e38 = local_10;
     if _e38 {
-        let _e39 = c_4;
+        let _e39 = c_6;
         return _e39;
     }
-    let _e41 = c_4.y;
-    let v_7 = (x_12 - _e41);
+    let _e41 = c_6.y;
+    let v_7 = (x_14 - _e41);
     let d2_8 = dot(v_7, v_7);
     let _e48 = light_intensity(l_2, (v_7 / vec3(sqrt(d2_8))));
-    let _e50 = c_4.cos_x;
+    let _e50 = c_6.cos_x;
     let _e51 = connection_factor(_e50, d2_8, rt2_2, w_res);
-    c_4.e = (_e48 * _e51);
-    let _e53 = c_4;
+    c_6.e = (_e48 * _e51);
+    let _e53 = c_6;
     return _e53;
 }
 
-fn connect_traced(li: u32, x_13: vec3<f32>, n_7: vec3<f32>, ng_2: vec3<f32>, s_1: f32, w_res_1: f32, u1_2: f32, u2_2: f32, eps_1: f32, trace_2: bool) -> Connection {
+fn connect_traced(li: u32, x_15: vec3<f32>, n_7: vec3<f32>, ng_2: vec3<f32>, s_1: f32, w_res_1: f32, u1_2: f32, u2_2: f32, eps_1: f32, trace_2: bool) -> Connection {
     let _e12 = lights[li];
     let _e15 = r2_3[li];
     let _e19 = rt2_3[li];
-    let _e21 = connect_record(_e12, x_13, n_7, ng_2, (s_1 * _e15), (s_1 * _e19), w_res_1, u1_2, u2_2, eps_1, trace_2);
+    let _e21 = connect_record(_e12, x_15, n_7, ng_2, (s_1 * _e15), (s_1 * _e19), w_res_1, u1_2, u2_2, eps_1, trace_2);
     return _e21;
 }
 
-fn connect(li_1: u32, x_14: vec3<f32>, n_8: vec3<f32>, ng_3: vec3<f32>, s_2: f32, w_res_2: f32, u1_3: f32, u2_3: f32, eps_2: f32) -> Connection {
-    let _e10 = connect_traced(li_1, x_14, n_8, ng_3, s_2, w_res_2, u1_3, u2_3, eps_2, true);
+fn connect(li_1: u32, x_16: vec3<f32>, n_8: vec3<f32>, ng_3: vec3<f32>, s_2: f32, w_res_2: f32, u1_3: f32, u2_3: f32, eps_2: f32) -> Connection {
+    let _e10 = connect_traced(li_1, x_16, n_8, ng_3, s_2, w_res_2, u1_3, u2_3, eps_2, true);
     return _e10;
 }
 
@@ -971,13 +1000,13 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         irradiance[i_5] = vec4(0f);
         return;
     }
-    let x_15 = p_3.xyz;
+    let x_17 = p_3.xyz;
     let _e19 = normals[i_5];
     let n_10 = _e19.xyz;
     let _e23 = params.seed;
     let _e26 = params.frame;
     let _e27 = point_stream(_e23, i_5, _e26);
-    let _e33 = bsh_collect(x_15, x_15, vec4<f32>(1f, 0f, 1f, 1f), _e27);
+    let _e33 = bsh_collect(x_17, x_17, vec4<f32>(1f, 0f, 1f, 1f), _e27);
     let _e36 = reservoir_weight(_e33.n, K);
     let _e37 = pick_stream(_e27);
     h = _e37;
@@ -1001,7 +1030,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
             let _e60 = h;
             let _e61 = xi_from_bits(_e60);
             let _e64 = params.eps;
-            let _e65 = connect(_e33.light[_e57], x_15, n_10, n_10, 1f, _e36, _e52, _e61, _e64);
+            let _e65 = connect(_e33.light[_e57], x_17, n_10, n_10, 1f, _e36, _e52, _e61, _e64);
             e = (_e55 + _e65.e);
         }
         continuing {

@@ -30,6 +30,12 @@ struct Picks {
     n: u32,
 }
 
+struct BshCursor {
+    i: u32,
+    end: u32,
+    next: u32,
+}
+
 struct Connection {
     e: vec3<f32>,
     y: vec3<f32>,
@@ -42,6 +48,8 @@ const LIGHT_IES: u32 = 2u;
 const LIGHT_TRIANGLE: u32 = 3u;
 const LIGHT_VPL: u32 = 4u;
 const NO_LIGHT: u32 = 4294967295u;
+const GRID_HEADER: u32 = 32u;
+const GRID_LEVELS_MAX: u32 = 8u;
 const COUNT_TILES: u32 = 0u;
 const COUNT_GROUP_TESTS: u32 = 1u;
 const COUNT_CLUSTER_TESTS: u32 = 2u;
@@ -312,8 +320,8 @@ fn cone_cos_of(v: vec3<f32>, d2_4: f32, a_4: f32, d: vec3<f32>) -> f32 {
     if _e21 {
         return 1f;
     }
-    let c_4 = cross(v, d);
-    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_4, c_4)) * a_4)) / d2_4), 1f);
+    let c_6 = cross(v, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_6, c_6)) * a_4)) / d2_4), 1f);
 }
 
 fn cone_cos_toward(center: vec3<f32>, radius: f32, p: vec3<f32>, d_1: vec3<f32>) -> f32 {
@@ -479,6 +487,27 @@ fn bsh_next_leaf_lobe(nodes_3: u32, start: u32, x_4: vec3<f32>, r_4: vec3<f32>, 
     return BSH_NONE;
 }
 
+fn bsh_cursor(x_5: vec3<f32>, r_5: vec3<f32>, rl_5: vec4<f32>) -> BshCursor {
+    var c_3: BshCursor;
+
+    c_3.i = 0u;
+    c_3.end = 0u;
+    let _e10 = bsh_first(BSH);
+    c_3.next = _e10;
+    let _e11 = c_3;
+    return _e11;
+}
+
+fn bsh_cursor_next(c_4: ptr<function, BshCursor>, x_6: vec3<f32>, r_6: vec3<f32>, rl_6: vec4<f32>) -> u32 {
+    let _e6 = (*c_4).next;
+    let _e7 = bsh_next_leaf_lobe(BSH, _e6, x_6, r_6, rl_6);
+    if (_e7 != BSH_NONE) {
+        let _e14 = bsh_nodes[_e7].next;
+        (*c_4).next = _e14;
+    }
+    return _e7;
+}
+
 fn reservoir_offer(picks: ptr<function, Picks>, h_1: ptr<function, u32>, light: u32) {
     let _e4 = (*picks).n;
     let _e5 = reservoir_takes(_e4);
@@ -506,54 +535,54 @@ fn reservoir_offer(picks: ptr<function, Picks>, h_1: ptr<function, u32>, light: 
     }
 }
 
-fn bsh_collect(x_5: vec3<f32>, r_5: vec3<f32>, rl_5: vec4<f32>, seed_1: u32) -> Picks {
+fn bsh_collect(x_7: vec3<f32>, r_7: vec3<f32>, rl_7: vec4<f32>, seed_1: u32) -> Picks {
     var picks_1: Picks;
     var h_2: u32;
+    var cur: BshCursor;
     var i_2: u32;
 
     picks_1.n = 0u;
     h_2 = seed_1;
-    let _e10 = bsh_first(BSH);
-    let _e11 = bsh_next_leaf_lobe(BSH, _e10, x_5, r_5, rl_5);
-    i_2 = _e11;
+    let _e8 = bsh_cursor(x_7, r_7, rl_7);
+    cur = _e8;
+    let _e10 = bsh_cursor_next((&cur), x_7, r_7, rl_7);
+    i_2 = _e10;
     loop {
-        let _e13 = i_2;
-        if (_e13 != BSH_NONE) {
+        let _e12 = i_2;
+        if (_e12 != BSH_NONE) {
         } else {
             break;
         }
         {
-            let _e17 = i_2;
-            let _e20 = bsh_nodes[_e17].light;
-            reservoir_offer((&picks_1), (&h_2), _e20);
+            let _e16 = i_2;
+            let _e19 = bsh_nodes[_e16].light;
+            reservoir_offer((&picks_1), (&h_2), _e19);
         }
         continuing {
-            let _e23 = i_2;
-            let _e26 = bsh_nodes[_e23].next;
-            let _e27 = bsh_next_leaf_lobe(BSH, _e26, x_5, r_5, rl_5);
-            i_2 = _e27;
+            let _e20 = bsh_cursor_next((&cur), x_7, r_7, rl_7);
+            i_2 = _e20;
         }
     }
-    let _e28 = picks_1;
-    return _e28;
+    let _e21 = picks_1;
+    return _e21;
 }
 
-fn connect_record(l_2: GpuLight, x_6: vec3<f32>, n_6: vec3<f32>, ng_1: vec3<f32>, r2_2: f32, rt2_2: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32, trace: bool) -> Connection {
-    var c_3: Connection;
+fn connect_record(l_2: GpuLight, x_8: vec3<f32>, n_6: vec3<f32>, ng_1: vec3<f32>, r2_2: f32, rt2_2: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32, trace: bool) -> Connection {
+    var c_5: Connection;
     var local_7: bool;
     var local_8: bool;
 
-    c_3.e = vec3(0f);
+    c_5.e = vec3(0f);
     let _e16 = light_point(l_2, u1_2, u2_2);
-    c_3.y = _e16;
-    let _e19 = c_3.y;
-    let _e20 = connection_cosine(x_6, _e19, n_6, ng_1, r2_2);
-    c_3.cos_x = _e20;
-    let _e22 = c_3.cos_x;
+    c_5.y = _e16;
+    let _e19 = c_5.y;
+    let _e20 = connection_cosine(x_8, _e19, n_6, ng_1, r2_2);
+    c_5.cos_x = _e20;
+    let _e22 = c_5.cos_x;
     if !((_e22 <= 0f)) {
         if trace {
-            let _e33 = c_3.y;
-            let _e34 = occluded((x_6 + (ng_1 * eps)), _e33);
+            let _e33 = c_5.y;
+            let _e34 = occluded((x_8 + (ng_1 * eps)), _e33);
             local_8 = _e34;
         } else {
             local_8 = false;
@@ -565,30 +594,30 @@ fn connect_record(l_2: GpuLight, x_6: vec3<f32>, n_6: vec3<f32>, ng_1: vec3<f32>
     }
     let _e38 = local_7;
     if _e38 {
-        let _e39 = c_3;
+        let _e39 = c_5;
         return _e39;
     }
-    let _e41 = c_3.y;
-    let v_6 = (x_6 - _e41);
+    let _e41 = c_5.y;
+    let v_6 = (x_8 - _e41);
     let d2_8 = dot(v_6, v_6);
     let _e48 = light_intensity(l_2, (v_6 / vec3(sqrt(d2_8))));
-    let _e50 = c_3.cos_x;
+    let _e50 = c_5.cos_x;
     let _e51 = connection_factor(_e50, d2_8, rt2_2, w_res);
-    c_3.e = (_e48 * _e51);
-    let _e53 = c_3;
+    c_5.e = (_e48 * _e51);
+    let _e53 = c_5;
     return _e53;
 }
 
-fn connect_traced(li: u32, x_7: vec3<f32>, n_7: vec3<f32>, ng_2: vec3<f32>, s_1: f32, w_res_1: f32, u1_3: f32, u2_3: f32, eps_1: f32, trace_1: bool) -> Connection {
+fn connect_traced(li: u32, x_9: vec3<f32>, n_7: vec3<f32>, ng_2: vec3<f32>, s_1: f32, w_res_1: f32, u1_3: f32, u2_3: f32, eps_1: f32, trace_1: bool) -> Connection {
     let _e12 = lights[li];
     let _e15 = r2_3[li];
     let _e19 = rt2_3[li];
-    let _e21 = connect_record(_e12, x_7, n_7, ng_2, (s_1 * _e15), (s_1 * _e19), w_res_1, u1_3, u2_3, eps_1, trace_1);
+    let _e21 = connect_record(_e12, x_9, n_7, ng_2, (s_1 * _e15), (s_1 * _e19), w_res_1, u1_3, u2_3, eps_1, trace_1);
     return _e21;
 }
 
-fn connect(li_1: u32, x_8: vec3<f32>, n_8: vec3<f32>, ng_3: vec3<f32>, s_2: f32, w_res_2: f32, u1_4: f32, u2_4: f32, eps_2: f32) -> Connection {
-    let _e10 = connect_traced(li_1, x_8, n_8, ng_3, s_2, w_res_2, u1_4, u2_4, eps_2, true);
+fn connect(li_1: u32, x_10: vec3<f32>, n_8: vec3<f32>, ng_3: vec3<f32>, s_2: f32, w_res_2: f32, u1_4: f32, u2_4: f32, eps_2: f32) -> Connection {
+    let _e10 = connect_traced(li_1, x_10, n_8, ng_3, s_2, w_res_2, u1_4, u2_4, eps_2, true);
     return _e10;
 }
 
@@ -608,13 +637,13 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         irradiance[i_3] = vec4(0f);
         return;
     }
-    let x_9 = p_2.xyz;
+    let x_11 = p_2.xyz;
     let _e19 = normals[i_3];
     let n_10 = _e19.xyz;
     let _e23 = params.seed;
     let _e26 = params.frame;
     let _e27 = point_stream(_e23, i_3, _e26);
-    let _e33 = bsh_collect(x_9, x_9, vec4<f32>(1f, 0f, 1f, 1f), _e27);
+    let _e33 = bsh_collect(x_11, x_11, vec4<f32>(1f, 0f, 1f, 1f), _e27);
     let _e36 = reservoir_weight(_e33.n, K);
     let _e37 = pick_stream(_e27);
     h = _e37;
@@ -638,7 +667,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
             let _e60 = h;
             let _e61 = xi_from_bits(_e60);
             let _e64 = params.eps;
-            let _e65 = connect(_e33.light[_e57], x_9, n_10, n_10, 1f, _e36, _e52, _e61, _e64);
+            let _e65 = connect(_e33.light[_e57], x_11, n_10, n_10, 1f, _e36, _e52, _e61, _e64);
             e = (_e55 + _e65.e);
         }
         continuing {

@@ -84,6 +84,12 @@ struct Picks {
     n: u32,
 }
 
+struct BshCursor {
+    i: u32,
+    end: u32,
+    next: u32,
+}
+
 struct Connection {
     e: vec3<f32>,
     y: vec3<f32>,
@@ -96,6 +102,8 @@ const LIGHT_IES: u32 = 2u;
 const LIGHT_TRIANGLE: u32 = 3u;
 const LIGHT_VPL: u32 = 4u;
 const NO_LIGHT: u32 = 4294967295u;
+const GRID_HEADER: u32 = 32u;
+const GRID_LEVELS_MAX: u32 = 8u;
 const COUNT_TILES: u32 = 0u;
 const COUNT_GROUP_TESTS: u32 = 1u;
 const COUNT_CLUSTER_TESTS: u32 = 2u;
@@ -295,11 +303,11 @@ fn triangle_sample(a_2: vec3<f32>, b_2: vec3<f32>, c_1: vec3<f32>, u1_: f32, u2_
 }
 
 fn area_to_solid_angle_pdf(pdf_area: f32, d2_5: f32, cos_light: f32) -> f32 {
-    let c_6 = abs(cos_light);
-    if (c_6 <= 0f) {
+    let c_8 = abs(cos_light);
+    if (c_8 <= 0f) {
         return 0f;
     }
-    return ((pdf_area * d2_5) / c_6);
+    return ((pdf_area * d2_5) / c_8);
 }
 
 fn bsh_scaled_radius(node: BshNode, scale: f32) -> f32 {
@@ -475,9 +483,9 @@ fn smith_visibility(n_l: f32, n_v: f32, alpha_2: f32) -> f32 {
 }
 
 fn fresnel_schlick(f0_: vec3<f32>, f90_: f32, v_h: f32) -> vec3<f32> {
-    let c_7 = saturate((1f - v_h));
-    let c2_ = (c_7 * c_7);
-    return (f0_ + ((vec3<f32>(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_7)));
+    let c_9 = saturate((1f - v_h));
+    let c2_ = (c_9 * c_9);
+    return (f0_ + ((vec3<f32>(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_9)));
 }
 
 fn specular_fresnel(base: vec3<f32>, metallic: f32, f0_d: vec3<f32>, f90_d: f32, v_h_1: f32) -> vec3<f32> {
@@ -517,8 +525,8 @@ fn specular_brdf(base_2: vec3<f32>, metallic_2: f32, f0_d_2: vec3<f32>, f90_d_2:
     let hs = (v_1 + l_1);
     let inv = (1f / sqrt(dot(hs, hs)));
     let h_4 = (hs * inv);
-    let c_8 = cross(n_9, h_4);
-    let _e32 = ggx_d(dot(n_9, h_4), dot(c_8, c_8), alpha_3);
+    let c_10 = cross(n_9, h_4);
+    let _e32 = ggx_d(dot(n_9, h_4), dot(c_10, c_10), alpha_3);
     let _e34 = specular_fresnel(base_2, metallic_2, f0_d_2, f90_d_2, dot(v_1, h_4));
     let _e35 = smith_visibility(n_l_1, n_v_2, alpha_3);
     return (_e34 * (_e32 * _e35));
@@ -678,8 +686,8 @@ fn cone_cos_of(v_5: vec3<f32>, d2_7: f32, a_4: f32, d: vec3<f32>) -> f32 {
     if _e21 {
         return 1f;
     }
-    let c_9 = cross(v_5, d);
-    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_9, c_9)) * a_4)) / d2_7), 1f);
+    let c_11 = cross(v_5, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_11, c_11)) * a_4)) / d2_7), 1f);
 }
 
 fn cone_cos_toward(center: vec3<f32>, radius: f32, p: vec3<f32>, d_1: vec3<f32>) -> f32 {
@@ -1033,6 +1041,27 @@ fn bsh_next_leaf_lobe(nodes_3: u32, start: u32, x_5: vec3<f32>, r_4: vec3<f32>, 
     return BSH_NONE;
 }
 
+fn bsh_cursor(x_6: vec3<f32>, r_5: vec3<f32>, rl_5: vec4<f32>) -> BshCursor {
+    var c_5: BshCursor;
+
+    c_5.i = 0u;
+    c_5.end = 0u;
+    let _e10 = bsh_first(BSH);
+    c_5.next = _e10;
+    let _e11 = c_5;
+    return _e11;
+}
+
+fn bsh_cursor_next(c_6: ptr<function, BshCursor>, x_7: vec3<f32>, r_6: vec3<f32>, rl_6: vec4<f32>) -> u32 {
+    let _e6 = (*c_6).next;
+    let _e7 = bsh_next_leaf_lobe(BSH, _e6, x_7, r_6, rl_6);
+    if (_e7 != BSH_NONE) {
+        let _e14 = bsh_nodes[_e7].next;
+        (*c_6).next = _e14;
+    }
+    return _e7;
+}
+
 fn reservoir_offer(picks: ptr<function, Picks>, h_1: ptr<function, u32>, light: u32) {
     let _e4 = (*picks).n;
     let _e5 = reservoir_takes(_e4);
@@ -1060,54 +1089,54 @@ fn reservoir_offer(picks: ptr<function, Picks>, h_1: ptr<function, u32>, light: 
     }
 }
 
-fn bsh_collect(x_6: vec3<f32>, r_5: vec3<f32>, rl_5: vec4<f32>, seed_1: u32) -> Picks {
+fn bsh_collect(x_8: vec3<f32>, r_7: vec3<f32>, rl_7: vec4<f32>, seed_1: u32) -> Picks {
     var picks_1: Picks;
     var h_2: u32;
+    var cur: BshCursor;
     var i_3: u32;
 
     picks_1.n = 0u;
     h_2 = seed_1;
-    let _e10 = bsh_first(BSH);
-    let _e11 = bsh_next_leaf_lobe(BSH, _e10, x_6, r_5, rl_5);
-    i_3 = _e11;
+    let _e8 = bsh_cursor(x_8, r_7, rl_7);
+    cur = _e8;
+    let _e10 = bsh_cursor_next((&cur), x_8, r_7, rl_7);
+    i_3 = _e10;
     loop {
-        let _e13 = i_3;
-        if (_e13 != BSH_NONE) {
+        let _e12 = i_3;
+        if (_e12 != BSH_NONE) {
         } else {
             break;
         }
         {
-            let _e17 = i_3;
-            let _e20 = bsh_nodes[_e17].light;
-            reservoir_offer((&picks_1), (&h_2), _e20);
+            let _e16 = i_3;
+            let _e19 = bsh_nodes[_e16].light;
+            reservoir_offer((&picks_1), (&h_2), _e19);
         }
         continuing {
-            let _e23 = i_3;
-            let _e26 = bsh_nodes[_e23].next;
-            let _e27 = bsh_next_leaf_lobe(BSH, _e26, x_6, r_5, rl_5);
-            i_3 = _e27;
+            let _e20 = bsh_cursor_next((&cur), x_8, r_7, rl_7);
+            i_3 = _e20;
         }
     }
-    let _e28 = picks_1;
-    return _e28;
+    let _e21 = picks_1;
+    return _e21;
 }
 
-fn connect_record(l_8: GpuLight, x_7: vec3<f32>, n_13: vec3<f32>, ng_1: vec3<f32>, r2_2: f32, rt2_4: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32, trace_1: bool) -> Connection {
-    var c_5: Connection;
+fn connect_record(l_8: GpuLight, x_9: vec3<f32>, n_13: vec3<f32>, ng_1: vec3<f32>, r2_2: f32, rt2_4: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32, trace_1: bool) -> Connection {
+    var c_7: Connection;
     var local_21: bool;
     var local_22: bool;
 
-    c_5.e = vec3(0f);
+    c_7.e = vec3(0f);
     let _e16 = light_point(l_8, u1_2, u2_2);
-    c_5.y = _e16;
-    let _e19 = c_5.y;
-    let _e20 = connection_cosine(x_7, _e19, n_13, ng_1, r2_2);
-    c_5.cos_x = _e20;
-    let _e22 = c_5.cos_x;
+    c_7.y = _e16;
+    let _e19 = c_7.y;
+    let _e20 = connection_cosine(x_9, _e19, n_13, ng_1, r2_2);
+    c_7.cos_x = _e20;
+    let _e22 = c_7.cos_x;
     if !((_e22 <= 0f)) {
         if trace_1 {
-            let _e33 = c_5.y;
-            let _e34 = occluded((x_7 + (ng_1 * eps)), _e33);
+            let _e33 = c_7.y;
+            let _e34 = occluded((x_9 + (ng_1 * eps)), _e33);
             local_22 = _e34;
         } else {
             local_22 = false;
@@ -1119,30 +1148,30 @@ fn connect_record(l_8: GpuLight, x_7: vec3<f32>, n_13: vec3<f32>, ng_1: vec3<f32
     }
     let _e38 = local_21;
     if _e38 {
-        let _e39 = c_5;
+        let _e39 = c_7;
         return _e39;
     }
-    let _e41 = c_5.y;
-    let v_13 = (x_7 - _e41);
+    let _e41 = c_7.y;
+    let v_13 = (x_9 - _e41);
     let d2_11 = dot(v_13, v_13);
     let _e48 = light_intensity(l_8, (v_13 / vec3(sqrt(d2_11))));
-    let _e50 = c_5.cos_x;
+    let _e50 = c_7.cos_x;
     let _e51 = connection_factor(_e50, d2_11, rt2_4, w_res);
-    c_5.e = (_e48 * _e51);
-    let _e53 = c_5;
+    c_7.e = (_e48 * _e51);
+    let _e53 = c_7;
     return _e53;
 }
 
-fn connect_traced(li: u32, x_8: vec3<f32>, n_14: vec3<f32>, ng_2: vec3<f32>, s_1: f32, w_res_1: f32, u1_3: f32, u2_3: f32, eps_1: f32, trace_2: bool) -> Connection {
+fn connect_traced(li: u32, x_10: vec3<f32>, n_14: vec3<f32>, ng_2: vec3<f32>, s_1: f32, w_res_1: f32, u1_3: f32, u2_3: f32, eps_1: f32, trace_2: bool) -> Connection {
     let _e12 = lights[li];
     let _e15 = r2_3[li];
     let _e19 = rt2_5[li];
-    let _e21 = connect_record(_e12, x_8, n_14, ng_2, (s_1 * _e15), (s_1 * _e19), w_res_1, u1_3, u2_3, eps_1, trace_2);
+    let _e21 = connect_record(_e12, x_10, n_14, ng_2, (s_1 * _e15), (s_1 * _e19), w_res_1, u1_3, u2_3, eps_1, trace_2);
     return _e21;
 }
 
-fn connect(li_1: u32, x_9: vec3<f32>, n_15: vec3<f32>, ng_3: vec3<f32>, s_2: f32, w_res_2: f32, u1_4: f32, u2_4: f32, eps_2: f32) -> Connection {
-    let _e10 = connect_traced(li_1, x_9, n_15, ng_3, s_2, w_res_2, u1_4, u2_4, eps_2, true);
+fn connect(li_1: u32, x_11: vec3<f32>, n_15: vec3<f32>, ng_3: vec3<f32>, s_2: f32, w_res_2: f32, u1_4: f32, u2_4: f32, eps_2: f32) -> Connection {
+    let _e10 = connect_traced(li_1, x_11, n_15, ng_3, s_2, w_res_2, u1_4, u2_4, eps_2, true);
     return _e10;
 }
 
@@ -1151,50 +1180,50 @@ fn mis_weight(pdf_a_1: f32, pdf_b_1: f32) -> f32 {
     return _e2;
 }
 
-fn light_range_scale(li_2: u32, x_10: vec3<f32>, r_6: vec3<f32>, rl_6: vec4<f32>) -> f32 {
-    let c_10 = light_cones[li_2];
-    let _e9 = range_scale_toward(rl_6, c_10.center, c_10.radius, x_10, r_6);
+fn light_range_scale(li_2: u32, x_12: vec3<f32>, r_8: vec3<f32>, rl_8: vec4<f32>) -> f32 {
+    let c_12 = light_cones[li_2];
+    let _e9 = range_scale_toward(rl_8, c_12.center, c_12.radius, x_12, r_8);
     return _e9;
 }
 
-fn select_pdf(li_3: u32, x_11: vec3<f32>, n_16: vec3<f32>, r_7: vec3<f32>, lobe_5: vec4<f32>, rl_7: vec4<f32>, nee: u32, in_range_1: bool) -> f32 {
+fn select_pdf(li_3: u32, x_13: vec3<f32>, n_16: vec3<f32>, r_9: vec3<f32>, lobe_5: vec4<f32>, rl_9: vec4<f32>, nee: u32, in_range_1: bool) -> f32 {
     let _e9 = reservoir_select_pdf(nee, in_range_1, K);
     return _e9;
 }
 
-fn light_pdf_selected(li_4: u32, x_12: vec3<f32>, r_8: vec3<f32>, rl_8: vec4<f32>, y_1: vec3<f32>, sel: f32) -> f32 {
+fn light_pdf_selected(li_4: u32, x_14: vec3<f32>, r_10: vec3<f32>, rl_10: vec4<f32>, y_1: vec3<f32>, sel: f32) -> f32 {
     let l_9 = lights[li_4];
-    let v_14 = (x_12 - y_1);
+    let v_14 = (x_14 - y_1);
     let d2_12 = dot(v_14, v_14);
     let _e11 = light_normal(l_9);
     let cos_y_1 = select(0f, dot(_e11, (v_14 / vec3(sqrt(d2_12)))), (d2_12 > 0f));
-    let _e20 = light_range_scale(li_4, x_12, r_8, rl_8);
+    let _e20 = light_range_scale(li_4, x_14, r_10, rl_10);
     let _e23 = rt2_5[li_4];
     let _e25 = light_area(l_9);
     let _e26 = light_strategy_pdf(sel, (_e20 * _e23), d2_12, _e25, cos_y_1);
     return _e26;
 }
 
-fn light_pdf(li_5: u32, x_13: vec3<f32>, n_17: vec3<f32>, r_9: vec3<f32>, lobe_6: vec4<f32>, rl_9: vec4<f32>, y_2: vec3<f32>, nee_1: u32, in_range_2: bool) -> f32 {
-    let _e9 = select_pdf(li_5, x_13, n_17, r_9, lobe_6, rl_9, nee_1, in_range_2);
-    let _e10 = light_pdf_selected(li_5, x_13, r_9, rl_9, y_2, _e9);
+fn light_pdf(li_5: u32, x_15: vec3<f32>, n_17: vec3<f32>, r_11: vec3<f32>, lobe_6: vec4<f32>, rl_11: vec4<f32>, y_2: vec3<f32>, nee_1: u32, in_range_2: bool) -> f32 {
+    let _e9 = select_pdf(li_5, x_15, n_17, r_11, lobe_6, rl_11, nee_1, in_range_2);
+    let _e10 = light_pdf_selected(li_5, x_15, r_11, rl_11, y_2, _e9);
     return _e10;
 }
 
-fn shade_pick(li_6: u32, x_14: vec3<f32>, n_18: vec3<f32>, ng_4: vec3<f32>, m: GpuMaterial, wo_1: vec3<f32>, r_10: vec3<f32>, lobe_7: vec4<f32>, rl_10: vec4<f32>, w_5: f32, nee_2: u32, u1_5: f32, u2_5: f32) -> vec3<f32> {
+fn shade_pick(li_6: u32, x_16: vec3<f32>, n_18: vec3<f32>, ng_4: vec3<f32>, m: GpuMaterial, wo_1: vec3<f32>, r_12: vec3<f32>, lobe_7: vec4<f32>, rl_12: vec4<f32>, w_5: f32, nee_2: u32, u1_5: f32, u2_5: f32) -> vec3<f32> {
     var mis: f32 = 1f;
 
-    let _e13 = light_range_scale(li_6, x_14, r_10, rl_10);
+    let _e13 = light_range_scale(li_6, x_16, r_12, rl_12);
     let _e16 = params.eps;
-    let _e17 = connect(li_6, x_14, n_18, ng_4, _e13, w_5, u1_5, u2_5, _e16);
+    let _e17 = connect(li_6, x_16, n_18, ng_4, _e13, w_5, u1_5, u2_5, _e16);
     if (_e17.cos_x <= 0f) {
         return vec3(0f);
     }
-    let l_10 = normalize((_e17.y - x_14));
+    let l_10 = normalize((_e17.y - x_16));
     let _e30 = lights[li_6];
     let _e31 = light_area(_e30);
     if (_e31 > 0f) {
-        let _e36 = light_pdf(li_6, x_14, n_18, r_10, lobe_7, rl_10, _e17.y, nee_2, true);
+        let _e36 = light_pdf(li_6, x_16, n_18, r_12, lobe_7, rl_12, _e17.y, nee_2, true);
         let _e38 = specular_probability(lobe_7);
         let _e39 = bsdf_pdf(n_18, wo_1, l_10, m.alpha, _e38);
         let _e40 = mis_weight(_e36, _e39);
@@ -1221,7 +1250,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         candidates[i_4] = 0u;
         return;
     }
-    let x_15 = vtx.position;
+    let x_17 = vtx.position;
     let n_21 = vtx.normal;
     let ng_5 = vtx.gnormal;
     let m_2 = materials[vtx.material];
@@ -1234,7 +1263,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     let _e38 = point_stream(_e34, i_4, _e37);
     let _e39 = pick_stream(_e38);
     h = _e39;
-    let _e44 = bsh_collect(x_15, _e23, _e31, _e38);
+    let _e44 = bsh_collect(x_17, _e23, _e31, _e38);
     candidates[i_4] = _e44.n;
     let _e50 = reservoir_weight(_e44.n, K);
     loop {
@@ -1256,7 +1285,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
             let _e66 = s;
             let _e69 = h;
             let _e70 = xi_from_bits(_e69);
-            let _e71 = shade_pick(_e44.light[_e66], x_15, n_21, ng_5, m_2, wo_2, _e23, _e30, _e31, _e50, _e44.n, _e61, _e70);
+            let _e71 = shade_pick(_e44.light[_e66], x_17, n_21, ng_5, m_2, wo_2, _e23, _e30, _e31, _e50, _e44.n, _e61, _e70);
             sum = (_e64 + _e71);
         }
         continuing {

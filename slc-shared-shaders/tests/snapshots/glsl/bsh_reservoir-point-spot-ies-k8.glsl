@@ -49,6 +49,11 @@ struct Picks {
     uint light[8];
     uint n;
 };
+struct BshCursor {
+    uint i;
+    uint end;
+    uint next;
+};
 struct Connection {
     vec3 e;
     vec3 y;
@@ -60,6 +65,8 @@ const uint LIGHT_IES = 2u;
 const uint LIGHT_TRIANGLE = 3u;
 const uint LIGHT_VPL = 4u;
 const uint NO_LIGHT = 4294967295u;
+const uint GRID_HEADER = 32u;
+const uint GRID_LEVELS_MAX = 8u;
 const uint COUNT_TILES = 0u;
 const uint COUNT_GROUP_TESTS = 1u;
 const uint COUNT_CLUSTER_TESTS = 2u;
@@ -126,7 +133,7 @@ layout(std430) readonly buffer type_7_block_2Compute { GpuTriangle _group_0_bind
 
 layout(std430) readonly buffer type_10_block_3Compute { BshNode _group_0_binding_6_cs[]; };
 
-layout(std430) readonly buffer type_13_block_4Compute { GpuLight _group_0_binding_3_cs[]; };
+layout(std430) readonly buffer type_14_block_4Compute { GpuLight _group_0_binding_3_cs[]; };
 
 layout(std430) readonly buffer type_4_block_5Compute { float _group_0_binding_5_cs[]; };
 
@@ -134,11 +141,11 @@ layout(std430) readonly buffer type_4_block_6Compute { float _group_0_binding_4_
 
 layout(std140) uniform ShadeParams_block_7Compute { ShadeParams _group_0_binding_0_cs; };
 
-layout(std430) readonly buffer type_14_block_8Compute { vec4 _group_0_binding_1_cs[]; };
+layout(std430) readonly buffer type_15_block_8Compute { vec4 _group_0_binding_1_cs[]; };
 
-layout(std430) readonly buffer type_14_block_9Compute { vec4 _group_0_binding_2_cs[]; };
+layout(std430) readonly buffer type_15_block_9Compute { vec4 _group_0_binding_2_cs[]; };
 
-layout(std430) buffer type_14_block_10Compute { vec4 _group_0_binding_9_cs[]; };
+layout(std430) buffer type_15_block_10Compute { vec4 _group_0_binding_9_cs[]; };
 
 
 float at(uint tab, uint i) {
@@ -273,8 +280,8 @@ float atan_portable(float x_4) {
     float _e21 = base;
     float _e33 = t;
     float _e35 = t;
-    float r_6 = (_e21 + (((((((((0.080537446 * z) - 0.13877685) * z) + 0.19977711) * z) - 0.3333295) * z) * _e33) + _e35));
-    return ((x_4 < 0.0) ? -(r_6) : r_6);
+    float r_8 = (_e21 + (((((((((0.080537446 * z) - 0.13877685) * z) + 0.19977711) * z) - 0.3333295) * z) * _e33) + _e35));
+    return ((x_4 < 0.0) ? -(r_8) : r_8);
 }
 
 float atan2_portable(float y_1, float x_5) {
@@ -429,8 +436,8 @@ float ies_candela_dir(uint tab_3, uint base_2, float wn, float wr, float ws) {
     float gamma_1 = degrees(_e9);
     bool on_axis = ((abs(wr) + abs(ws)) <= 0.0);
     float _e16 = atan2_portable(ws, wr);
-    float c_5 = (on_axis ? 0.0 : degrees(_e16));
-    float _e20 = ies_candela(tab_3, base_2, gamma_1, c_5);
+    float c_7 = (on_axis ? 0.0 : degrees(_e16));
+    float _e20 = ies_candela(tab_3, base_2, gamma_1, c_7);
     return _e20;
 }
 
@@ -527,8 +534,8 @@ float cone_cos_of(vec3 v, float d2_4, float a_4, vec3 d) {
     if (_e21) {
         return 1.0;
     }
-    vec3 c_6 = cross(v, d);
-    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_6, c_6)) * a_4)) / d2_4), 1.0);
+    vec3 c_8 = cross(v, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_8, c_8)) * a_4)) / d2_4), 1.0);
 }
 
 float cone_cos_toward(vec3 center, float radius, vec3 p, vec3 d_1) {
@@ -831,6 +838,26 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start_1, vec3 x_10, vec3 r_4, vec4 rl
     return BSH_NONE;
 }
 
+BshCursor bsh_cursor(vec3 x_11, vec3 r_5, vec4 rl_5) {
+    BshCursor c_4 = BshCursor(0u, 0u, 0u);
+    c_4.i = 0u;
+    c_4.end = 0u;
+    uint _e10 = bsh_first(BSH);
+    c_4.next = _e10;
+    BshCursor _e11 = c_4;
+    return _e11;
+}
+
+uint bsh_cursor_next(inout BshCursor c_5, vec3 x_12, vec3 r_6, vec4 rl_6) {
+    uint _e6 = c_5.next;
+    uint _e7 = bsh_next_leaf_lobe(BSH, _e6, x_12, r_6, rl_6);
+    if ((_e7 != BSH_NONE)) {
+        uint _e14 = _group_0_binding_6_cs[_e7].next;
+        c_5.next = _e14;
+    }
+    return _e7;
+}
+
 void reservoir_offer(inout Picks picks, inout uint h_1, uint light) {
     uint _e4 = picks.n;
     bool _e5 = reservoir_takes(_e4);
@@ -858,54 +885,54 @@ void reservoir_offer(inout Picks picks, inout uint h_1, uint light) {
     }
 }
 
-Picks bsh_collect(vec3 x_11, vec3 r_5, vec4 rl_5, uint seed_1) {
+Picks bsh_collect(vec3 x_13, vec3 r_7, vec4 rl_7, uint seed_1) {
     Picks picks_1 = Picks(uint[8](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u), 0u);
     uint h_2 = 0u;
+    BshCursor cur = BshCursor(0u, 0u, 0u);
     uint i_4 = 0u;
     picks_1.n = 0u;
     h_2 = seed_1;
-    uint _e10 = bsh_first(BSH);
-    uint _e11 = bsh_next_leaf_lobe(BSH, _e10, x_11, r_5, rl_5);
-    i_4 = _e11;
+    BshCursor _e8 = bsh_cursor(x_13, r_7, rl_7);
+    cur = _e8;
+    uint _e10 = bsh_cursor_next(cur, x_13, r_7, rl_7);
+    i_4 = _e10;
     bool loop_init_1 = true;
     while(true) {
         if (!loop_init_1) {
-            uint _e23 = i_4;
-            uint _e26 = _group_0_binding_6_cs[_e23].next;
-            uint _e27 = bsh_next_leaf_lobe(BSH, _e26, x_11, r_5, rl_5);
-            i_4 = _e27;
+            uint _e20 = bsh_cursor_next(cur, x_13, r_7, rl_7);
+            i_4 = _e20;
         }
         loop_init_1 = false;
-        uint _e13 = i_4;
-        if ((_e13 != BSH_NONE)) {
+        uint _e12 = i_4;
+        if ((_e12 != BSH_NONE)) {
         } else {
             break;
         }
         {
-            uint _e17 = i_4;
-            uint _e20 = _group_0_binding_6_cs[_e17].light;
-            reservoir_offer(picks_1, h_2, _e20);
+            uint _e16 = i_4;
+            uint _e19 = _group_0_binding_6_cs[_e16].light;
+            reservoir_offer(picks_1, h_2, _e19);
         }
     }
-    Picks _e28 = picks_1;
-    return _e28;
+    Picks _e21 = picks_1;
+    return _e21;
 }
 
-Connection connect_record(GpuLight l_2, vec3 x_12, vec3 n_6, vec3 ng_1, float r2_2, float rt2_2, float w_res, float u1_1, float u2_1, float eps, bool trace_1) {
-    Connection c_4 = Connection(vec3(0.0), vec3(0.0), 0.0);
+Connection connect_record(GpuLight l_2, vec3 x_14, vec3 n_6, vec3 ng_1, float r2_2, float rt2_2, float w_res, float u1_1, float u2_1, float eps, bool trace_1) {
+    Connection c_6 = Connection(vec3(0.0), vec3(0.0), 0.0);
     bool local_10 = false;
     bool local_11 = false;
-    c_4.e = vec3(0.0);
+    c_6.e = vec3(0.0);
     vec3 _e16 = light_point(l_2, u1_1, u2_1);
-    c_4.y = _e16;
-    vec3 _e19 = c_4.y;
-    float _e20 = connection_cosine(x_12, _e19, n_6, ng_1, r2_2);
-    c_4.cos_x = _e20;
-    float _e22 = c_4.cos_x;
+    c_6.y = _e16;
+    vec3 _e19 = c_6.y;
+    float _e20 = connection_cosine(x_14, _e19, n_6, ng_1, r2_2);
+    c_6.cos_x = _e20;
+    float _e22 = c_6.cos_x;
     if (!((_e22 <= 0.0))) {
         if (trace_1) {
-            vec3 _e33 = c_4.y;
-            bool _e34 = occluded((x_12 + (ng_1 * eps)), _e33);
+            vec3 _e33 = c_6.y;
+            bool _e34 = occluded((x_14 + (ng_1 * eps)), _e33);
             local_11 = _e34;
         } else {
             local_11 = false;
@@ -917,30 +944,30 @@ Connection connect_record(GpuLight l_2, vec3 x_12, vec3 n_6, vec3 ng_1, float r2
     }
     bool _e38 = local_10;
     if (_e38) {
-        Connection _e39 = c_4;
+        Connection _e39 = c_6;
         return _e39;
     }
-    vec3 _e41 = c_4.y;
-    vec3 v_7 = (x_12 - _e41);
+    vec3 _e41 = c_6.y;
+    vec3 v_7 = (x_14 - _e41);
     float d2_8 = dot(v_7, v_7);
     vec3 _e48 = light_intensity(l_2, (v_7 / vec3(sqrt(d2_8))));
-    float _e50 = c_4.cos_x;
+    float _e50 = c_6.cos_x;
     float _e51 = connection_factor(_e50, d2_8, rt2_2, w_res);
-    c_4.e = (_e48 * _e51);
-    Connection _e53 = c_4;
+    c_6.e = (_e48 * _e51);
+    Connection _e53 = c_6;
     return _e53;
 }
 
-Connection connect_traced(uint li, vec3 x_13, vec3 n_7, vec3 ng_2, float s_1, float w_res_1, float u1_2, float u2_2, float eps_1, bool trace_2) {
+Connection connect_traced(uint li, vec3 x_15, vec3 n_7, vec3 ng_2, float s_1, float w_res_1, float u1_2, float u2_2, float eps_1, bool trace_2) {
     GpuLight _e12 = _group_0_binding_3_cs[li];
     float _e15 = _group_0_binding_5_cs[li];
     float _e19 = _group_0_binding_4_cs[li];
-    Connection _e21 = connect_record(_e12, x_13, n_7, ng_2, (s_1 * _e15), (s_1 * _e19), w_res_1, u1_2, u2_2, eps_1, trace_2);
+    Connection _e21 = connect_record(_e12, x_15, n_7, ng_2, (s_1 * _e15), (s_1 * _e19), w_res_1, u1_2, u2_2, eps_1, trace_2);
     return _e21;
 }
 
-Connection connect(uint li_1, vec3 x_14, vec3 n_8, vec3 ng_3, float s_2, float w_res_2, float u1_3, float u2_3, float eps_2) {
-    Connection _e10 = connect_traced(li_1, x_14, n_8, ng_3, s_2, w_res_2, u1_3, u2_3, eps_2, true);
+Connection connect(uint li_1, vec3 x_16, vec3 n_8, vec3 ng_3, float s_2, float w_res_2, float u1_3, float u2_3, float eps_2) {
+    Connection _e10 = connect_traced(li_1, x_16, n_8, ng_3, s_2, w_res_2, u1_3, u2_3, eps_2, true);
     return _e10;
 }
 
@@ -959,13 +986,13 @@ void main() {
         _group_0_binding_9_cs[i_5] = vec4(0.0);
         return;
     }
-    vec3 x_15 = p_3.xyz;
+    vec3 x_17 = p_3.xyz;
     vec4 _e19 = _group_0_binding_2_cs[i_5];
     vec3 n_10 = _e19.xyz;
     uint _e23 = _group_0_binding_0_cs.seed;
     uint _e26 = _group_0_binding_0_cs.frame;
     uint _e27 = point_stream(_e23, i_5, _e26);
-    Picks _e33 = bsh_collect(x_15, x_15, vec4(1.0, 0.0, 1.0, 1.0), _e27);
+    Picks _e33 = bsh_collect(x_17, x_17, vec4(1.0, 0.0, 1.0, 1.0), _e27);
     float _e36 = reservoir_weight(_e33.n, K);
     uint _e37 = pick_stream(_e27);
     h = _e37;
@@ -995,7 +1022,7 @@ void main() {
             uint _e60 = h;
             float _e61 = xi_from_bits(_e60);
             float _e64 = _group_0_binding_0_cs.eps;
-            Connection _e65 = connect(_e33.light[_e57], x_15, n_10, n_10, 1.0, _e36, _e52, _e61, _e64);
+            Connection _e65 = connect(_e33.light[_e57], x_17, n_10, n_10, 1.0, _e36, _e52, _e61, _e64);
             e = (_e55 + _e65.e);
         }
     }

@@ -31,6 +31,11 @@ struct Picks {
     uint light[8];
     uint n;
 };
+struct BshCursor {
+    uint i;
+    uint end;
+    uint next;
+};
 struct Connection {
     vec3 e;
     vec3 y;
@@ -42,6 +47,8 @@ const uint LIGHT_IES = 2u;
 const uint LIGHT_TRIANGLE = 3u;
 const uint LIGHT_VPL = 4u;
 const uint NO_LIGHT = 4294967295u;
+const uint GRID_HEADER = 32u;
+const uint GRID_LEVELS_MAX = 8u;
 const uint COUNT_TILES = 0u;
 const uint COUNT_GROUP_TESTS = 1u;
 const uint COUNT_CLUSTER_TESTS = 2u;
@@ -102,7 +109,7 @@ const uint BSH_TILE_SUBTREES = 256u;
 
 layout(std430) readonly buffer type_7_block_0Compute { BshNode _group_0_binding_6_cs[]; };
 
-layout(std430) readonly buffer type_10_block_1Compute { GpuLight _group_0_binding_3_cs[]; };
+layout(std430) readonly buffer type_11_block_1Compute { GpuLight _group_0_binding_3_cs[]; };
 
 layout(std430) readonly buffer type_4_block_2Compute { float _group_0_binding_5_cs[]; };
 
@@ -110,11 +117,11 @@ layout(std430) readonly buffer type_4_block_3Compute { float _group_0_binding_4_
 
 layout(std140) uniform ShadeParams_block_4Compute { ShadeParams _group_0_binding_0_cs; };
 
-layout(std430) readonly buffer type_11_block_5Compute { vec4 _group_0_binding_1_cs[]; };
+layout(std430) readonly buffer type_12_block_5Compute { vec4 _group_0_binding_1_cs[]; };
 
-layout(std430) readonly buffer type_11_block_6Compute { vec4 _group_0_binding_2_cs[]; };
+layout(std430) readonly buffer type_12_block_6Compute { vec4 _group_0_binding_2_cs[]; };
 
-layout(std430) buffer type_11_block_7Compute { vec4 _group_0_binding_9_cs[]; };
+layout(std430) buffer type_12_block_7Compute { vec4 _group_0_binding_9_cs[]; };
 
 
 float to_f32_(uint u) {
@@ -310,8 +317,8 @@ float cone_cos_of(vec3 v, float d2_4, float a_4, vec3 d) {
     if (_e21) {
         return 1.0;
     }
-    vec3 c_4 = cross(v, d);
-    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_4, c_4)) * a_4)) / d2_4), 1.0);
+    vec3 c_6 = cross(v, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_6, c_6)) * a_4)) / d2_4), 1.0);
 }
 
 float cone_cos_toward(vec3 center, float radius, vec3 p, vec3 d_1) {
@@ -474,6 +481,26 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start, vec3 x_4, vec3 r_4, vec4 rl_4)
     return BSH_NONE;
 }
 
+BshCursor bsh_cursor(vec3 x_5, vec3 r_5, vec4 rl_5) {
+    BshCursor c_3 = BshCursor(0u, 0u, 0u);
+    c_3.i = 0u;
+    c_3.end = 0u;
+    uint _e10 = bsh_first(BSH);
+    c_3.next = _e10;
+    BshCursor _e11 = c_3;
+    return _e11;
+}
+
+uint bsh_cursor_next(inout BshCursor c_4, vec3 x_6, vec3 r_6, vec4 rl_6) {
+    uint _e6 = c_4.next;
+    uint _e7 = bsh_next_leaf_lobe(BSH, _e6, x_6, r_6, rl_6);
+    if ((_e7 != BSH_NONE)) {
+        uint _e14 = _group_0_binding_6_cs[_e7].next;
+        c_4.next = _e14;
+    }
+    return _e7;
+}
+
 void reservoir_offer(inout Picks picks, inout uint h_1, uint light) {
     uint _e4 = picks.n;
     bool _e5 = reservoir_takes(_e4);
@@ -501,54 +528,54 @@ void reservoir_offer(inout Picks picks, inout uint h_1, uint light) {
     }
 }
 
-Picks bsh_collect(vec3 x_5, vec3 r_5, vec4 rl_5, uint seed_1) {
+Picks bsh_collect(vec3 x_7, vec3 r_7, vec4 rl_7, uint seed_1) {
     Picks picks_1 = Picks(uint[8](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u), 0u);
     uint h_2 = 0u;
+    BshCursor cur = BshCursor(0u, 0u, 0u);
     uint i_2 = 0u;
     picks_1.n = 0u;
     h_2 = seed_1;
-    uint _e10 = bsh_first(BSH);
-    uint _e11 = bsh_next_leaf_lobe(BSH, _e10, x_5, r_5, rl_5);
-    i_2 = _e11;
+    BshCursor _e8 = bsh_cursor(x_7, r_7, rl_7);
+    cur = _e8;
+    uint _e10 = bsh_cursor_next(cur, x_7, r_7, rl_7);
+    i_2 = _e10;
     bool loop_init = true;
     while(true) {
         if (!loop_init) {
-            uint _e23 = i_2;
-            uint _e26 = _group_0_binding_6_cs[_e23].next;
-            uint _e27 = bsh_next_leaf_lobe(BSH, _e26, x_5, r_5, rl_5);
-            i_2 = _e27;
+            uint _e20 = bsh_cursor_next(cur, x_7, r_7, rl_7);
+            i_2 = _e20;
         }
         loop_init = false;
-        uint _e13 = i_2;
-        if ((_e13 != BSH_NONE)) {
+        uint _e12 = i_2;
+        if ((_e12 != BSH_NONE)) {
         } else {
             break;
         }
         {
-            uint _e17 = i_2;
-            uint _e20 = _group_0_binding_6_cs[_e17].light;
-            reservoir_offer(picks_1, h_2, _e20);
+            uint _e16 = i_2;
+            uint _e19 = _group_0_binding_6_cs[_e16].light;
+            reservoir_offer(picks_1, h_2, _e19);
         }
     }
-    Picks _e28 = picks_1;
-    return _e28;
+    Picks _e21 = picks_1;
+    return _e21;
 }
 
-Connection connect_record(GpuLight l_2, vec3 x_6, vec3 n_6, vec3 ng_1, float r2_2, float rt2_2, float w_res, float u1_2, float u2_2, float eps, bool trace) {
-    Connection c_3 = Connection(vec3(0.0), vec3(0.0), 0.0);
+Connection connect_record(GpuLight l_2, vec3 x_8, vec3 n_6, vec3 ng_1, float r2_2, float rt2_2, float w_res, float u1_2, float u2_2, float eps, bool trace) {
+    Connection c_5 = Connection(vec3(0.0), vec3(0.0), 0.0);
     bool local_7 = false;
     bool local_8 = false;
-    c_3.e = vec3(0.0);
+    c_5.e = vec3(0.0);
     vec3 _e16 = light_point(l_2, u1_2, u2_2);
-    c_3.y = _e16;
-    vec3 _e19 = c_3.y;
-    float _e20 = connection_cosine(x_6, _e19, n_6, ng_1, r2_2);
-    c_3.cos_x = _e20;
-    float _e22 = c_3.cos_x;
+    c_5.y = _e16;
+    vec3 _e19 = c_5.y;
+    float _e20 = connection_cosine(x_8, _e19, n_6, ng_1, r2_2);
+    c_5.cos_x = _e20;
+    float _e22 = c_5.cos_x;
     if (!((_e22 <= 0.0))) {
         if (trace) {
-            vec3 _e33 = c_3.y;
-            bool _e34 = occluded((x_6 + (ng_1 * eps)), _e33);
+            vec3 _e33 = c_5.y;
+            bool _e34 = occluded((x_8 + (ng_1 * eps)), _e33);
             local_8 = _e34;
         } else {
             local_8 = false;
@@ -560,30 +587,30 @@ Connection connect_record(GpuLight l_2, vec3 x_6, vec3 n_6, vec3 ng_1, float r2_
     }
     bool _e38 = local_7;
     if (_e38) {
-        Connection _e39 = c_3;
+        Connection _e39 = c_5;
         return _e39;
     }
-    vec3 _e41 = c_3.y;
-    vec3 v_6 = (x_6 - _e41);
+    vec3 _e41 = c_5.y;
+    vec3 v_6 = (x_8 - _e41);
     float d2_8 = dot(v_6, v_6);
     vec3 _e48 = light_intensity(l_2, (v_6 / vec3(sqrt(d2_8))));
-    float _e50 = c_3.cos_x;
+    float _e50 = c_5.cos_x;
     float _e51 = connection_factor(_e50, d2_8, rt2_2, w_res);
-    c_3.e = (_e48 * _e51);
-    Connection _e53 = c_3;
+    c_5.e = (_e48 * _e51);
+    Connection _e53 = c_5;
     return _e53;
 }
 
-Connection connect_traced(uint li, vec3 x_7, vec3 n_7, vec3 ng_2, float s_1, float w_res_1, float u1_3, float u2_3, float eps_1, bool trace_1) {
+Connection connect_traced(uint li, vec3 x_9, vec3 n_7, vec3 ng_2, float s_1, float w_res_1, float u1_3, float u2_3, float eps_1, bool trace_1) {
     GpuLight _e12 = _group_0_binding_3_cs[li];
     float _e15 = _group_0_binding_5_cs[li];
     float _e19 = _group_0_binding_4_cs[li];
-    Connection _e21 = connect_record(_e12, x_7, n_7, ng_2, (s_1 * _e15), (s_1 * _e19), w_res_1, u1_3, u2_3, eps_1, trace_1);
+    Connection _e21 = connect_record(_e12, x_9, n_7, ng_2, (s_1 * _e15), (s_1 * _e19), w_res_1, u1_3, u2_3, eps_1, trace_1);
     return _e21;
 }
 
-Connection connect(uint li_1, vec3 x_8, vec3 n_8, vec3 ng_3, float s_2, float w_res_2, float u1_4, float u2_4, float eps_2) {
-    Connection _e10 = connect_traced(li_1, x_8, n_8, ng_3, s_2, w_res_2, u1_4, u2_4, eps_2, true);
+Connection connect(uint li_1, vec3 x_10, vec3 n_8, vec3 ng_3, float s_2, float w_res_2, float u1_4, float u2_4, float eps_2) {
+    Connection _e10 = connect_traced(li_1, x_10, n_8, ng_3, s_2, w_res_2, u1_4, u2_4, eps_2, true);
     return _e10;
 }
 
@@ -602,13 +629,13 @@ void main() {
         _group_0_binding_9_cs[i_3] = vec4(0.0);
         return;
     }
-    vec3 x_9 = p_2.xyz;
+    vec3 x_11 = p_2.xyz;
     vec4 _e19 = _group_0_binding_2_cs[i_3];
     vec3 n_10 = _e19.xyz;
     uint _e23 = _group_0_binding_0_cs.seed;
     uint _e26 = _group_0_binding_0_cs.frame;
     uint _e27 = point_stream(_e23, i_3, _e26);
-    Picks _e33 = bsh_collect(x_9, x_9, vec4(1.0, 0.0, 1.0, 1.0), _e27);
+    Picks _e33 = bsh_collect(x_11, x_11, vec4(1.0, 0.0, 1.0, 1.0), _e27);
     float _e36 = reservoir_weight(_e33.n, K);
     uint _e37 = pick_stream(_e27);
     h = _e37;
@@ -638,7 +665,7 @@ void main() {
             uint _e60 = h;
             float _e61 = xi_from_bits(_e60);
             float _e64 = _group_0_binding_0_cs.eps;
-            Connection _e65 = connect(_e33.light[_e57], x_9, n_10, n_10, 1.0, _e36, _e52, _e61, _e64);
+            Connection _e65 = connect(_e33.light[_e57], x_11, n_10, n_10, 1.0, _e36, _e52, _e61, _e64);
             e = (_e55 + _e65.e);
         }
     }

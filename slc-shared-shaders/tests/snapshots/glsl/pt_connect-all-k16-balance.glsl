@@ -79,6 +79,11 @@ struct Picks {
     uint light[16];
     uint n;
 };
+struct BshCursor {
+    uint i;
+    uint end;
+    uint next;
+};
 struct Connection {
     vec3 e;
     vec3 y;
@@ -90,6 +95,8 @@ const uint LIGHT_IES = 2u;
 const uint LIGHT_TRIANGLE = 3u;
 const uint LIGHT_VPL = 4u;
 const uint NO_LIGHT = 4294967295u;
+const uint GRID_HEADER = 32u;
+const uint GRID_LEVELS_MAX = 8u;
 const uint COUNT_TILES = 0u;
 const uint COUNT_GROUP_TESTS = 1u;
 const uint COUNT_CLUSTER_TESTS = 2u;
@@ -157,23 +164,23 @@ layout(std430) readonly buffer type_7_block_2Compute { GpuTriangle _group_0_bind
 
 layout(std430) readonly buffer type_10_block_3Compute { BshNode _group_0_binding_5_cs[]; };
 
-layout(std430) readonly buffer type_13_block_4Compute { GpuLight _group_0_binding_2_cs[]; };
+layout(std430) readonly buffer type_14_block_4Compute { GpuLight _group_0_binding_2_cs[]; };
 
 layout(std430) readonly buffer type_4_block_5Compute { float _group_0_binding_4_cs[]; };
 
 layout(std430) readonly buffer type_4_block_6Compute { float _group_0_binding_3_cs[]; };
 
-layout(std430) readonly buffer type_14_block_7Compute { GpuLightCone _group_1_binding_2_cs[]; };
+layout(std430) readonly buffer type_15_block_7Compute { GpuLightCone _group_1_binding_2_cs[]; };
 
 layout(std140) uniform ShadeParams_block_8Compute { ShadeParams _group_0_binding_0_cs; };
 
-layout(std430) readonly buffer type_15_block_9Compute { GpuPathVertex _group_0_binding_1_cs[]; };
+layout(std430) readonly buffer type_16_block_9Compute { GpuPathVertex _group_0_binding_1_cs[]; };
 
-layout(std430) readonly buffer type_16_block_10Compute { GpuMaterial _group_0_binding_8_cs[]; };
+layout(std430) readonly buffer type_17_block_10Compute { GpuMaterial _group_0_binding_8_cs[]; };
 
-layout(std430) buffer type_17_block_11Compute { vec4 _group_0_binding_9_cs[]; };
+layout(std430) buffer type_18_block_11Compute { vec4 _group_0_binding_9_cs[]; };
 
-layout(std430) buffer type_18_block_12Compute { uint _group_0_binding_10_cs[]; };
+layout(std430) buffer type_19_block_12Compute { uint _group_0_binding_10_cs[]; };
 
 
 float at(uint tab, uint i) {
@@ -311,11 +318,11 @@ vec3 triangle_sample(vec3 a_2, vec3 b_2, vec3 c_1, float u1_, float u2_) {
 }
 
 float area_to_solid_angle_pdf(float pdf_area, float d2_5, float cos_light) {
-    float c_8 = abs(cos_light);
-    if ((c_8 <= 0.0)) {
+    float c_10 = abs(cos_light);
+    if ((c_10 <= 0.0)) {
         return 0.0;
     }
-    return ((pdf_area * d2_5) / c_8);
+    return ((pdf_area * d2_5) / c_10);
 }
 
 float atan_portable(float x_4) {
@@ -338,8 +345,8 @@ float atan_portable(float x_4) {
     float _e21 = base;
     float _e33 = t;
     float _e35 = t;
-    float r_11 = (_e21 + (((((((((0.080537446 * z) - 0.13877685) * z) + 0.19977711) * z) - 0.3333295) * z) * _e33) + _e35));
-    return ((x_4 < 0.0) ? -(r_11) : r_11);
+    float r_13 = (_e21 + (((((((((0.080537446 * z) - 0.13877685) * z) + 0.19977711) * z) - 0.3333295) * z) * _e33) + _e35));
+    return ((x_4 < 0.0) ? -(r_13) : r_13);
 }
 
 float atan2_portable(float y_1, float x_5) {
@@ -494,8 +501,8 @@ float ies_candela_dir(uint tab_3, uint base_2, float wn, float wr, float ws) {
     float gamma_1 = degrees(_e9);
     bool on_axis = ((abs(wr) + abs(ws)) <= 0.0);
     float _e16 = atan2_portable(ws, wr);
-    float c_9 = (on_axis ? 0.0 : degrees(_e16));
-    float _e20 = ies_candela(tab_3, base_2, gamma_1, c_9);
+    float c_11 = (on_axis ? 0.0 : degrees(_e16));
+    float _e20 = ies_candela(tab_3, base_2, gamma_1, c_11);
     return _e20;
 }
 
@@ -674,9 +681,9 @@ float smith_visibility(float n_l, float n_v, float alpha_2) {
 }
 
 vec3 fresnel_schlick(vec3 f0_, float f90_, float v_h) {
-    float c_10 = clamp((1.0 - v_h), 0.0, 1.0);
-    float c2_ = (c_10 * c_10);
-    return (f0_ + ((vec3(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_10)));
+    float c_12 = clamp((1.0 - v_h), 0.0, 1.0);
+    float c2_ = (c_12 * c_12);
+    return (f0_ + ((vec3(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_12)));
 }
 
 vec3 specular_fresnel(vec3 base_4, float metallic, vec3 f0_d, float f90_d, float v_h_1) {
@@ -715,8 +722,8 @@ vec3 specular_brdf(vec3 base_6, float metallic_2, vec3 f0_d_2, float f90_d_2, fl
     vec3 hs = (v_1 + l_1);
     float inv = (1.0 / sqrt(dot(hs, hs)));
     vec3 h_4 = (hs * inv);
-    vec3 c_11 = cross(n_11, h_4);
-    float _e32 = ggx_d(dot(n_11, h_4), dot(c_11, c_11), alpha_3);
+    vec3 c_13 = cross(n_11, h_4);
+    float _e32 = ggx_d(dot(n_11, h_4), dot(c_13, c_13), alpha_3);
     vec3 _e34 = specular_fresnel(base_6, metallic_2, f0_d_2, f90_d_2, dot(v_1, h_4));
     float _e35 = smith_visibility(n_l_1, n_v_2, alpha_3);
     return (_e34 * (_e32 * _e35));
@@ -872,8 +879,8 @@ float cone_cos_of(vec3 v_5, float d2_7, float a_5, vec3 d) {
     if (_e21) {
         return 1.0;
     }
-    vec3 c_12 = cross(v_5, d);
-    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_12, c_12)) * a_5)) / d2_7), 1.0);
+    vec3 c_14 = cross(v_5, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_14, c_14)) * a_5)) / d2_7), 1.0);
 }
 
 float cone_cos_toward(vec3 center, float radius, vec3 p, vec3 d_1) {
@@ -1238,6 +1245,26 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start_1, vec3 x_10, vec3 r_4, vec4 rl
     return BSH_NONE;
 }
 
+BshCursor bsh_cursor(vec3 x_11, vec3 r_5, vec4 rl_5) {
+    BshCursor c_7 = BshCursor(0u, 0u, 0u);
+    c_7.i = 0u;
+    c_7.end = 0u;
+    uint _e10 = bsh_first(BSH);
+    c_7.next = _e10;
+    BshCursor _e11 = c_7;
+    return _e11;
+}
+
+uint bsh_cursor_next(inout BshCursor c_8, vec3 x_12, vec3 r_6, vec4 rl_6) {
+    uint _e6 = c_8.next;
+    uint _e7 = bsh_next_leaf_lobe(BSH, _e6, x_12, r_6, rl_6);
+    if ((_e7 != BSH_NONE)) {
+        uint _e14 = _group_0_binding_5_cs[_e7].next;
+        c_8.next = _e14;
+    }
+    return _e7;
+}
+
 void reservoir_offer(inout Picks picks, inout uint h_1, uint light) {
     uint _e4 = picks.n;
     bool _e5 = reservoir_takes(_e4);
@@ -1265,54 +1292,54 @@ void reservoir_offer(inout Picks picks, inout uint h_1, uint light) {
     }
 }
 
-Picks bsh_collect(vec3 x_11, vec3 r_5, vec4 rl_5, uint seed_1) {
+Picks bsh_collect(vec3 x_13, vec3 r_7, vec4 rl_7, uint seed_1) {
     Picks picks_1 = Picks(uint[16](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u), 0u);
     uint h_2 = 0u;
+    BshCursor cur = BshCursor(0u, 0u, 0u);
     uint i_4 = 0u;
     picks_1.n = 0u;
     h_2 = seed_1;
-    uint _e10 = bsh_first(BSH);
-    uint _e11 = bsh_next_leaf_lobe(BSH, _e10, x_11, r_5, rl_5);
-    i_4 = _e11;
+    BshCursor _e8 = bsh_cursor(x_13, r_7, rl_7);
+    cur = _e8;
+    uint _e10 = bsh_cursor_next(cur, x_13, r_7, rl_7);
+    i_4 = _e10;
     bool loop_init_1 = true;
     while(true) {
         if (!loop_init_1) {
-            uint _e23 = i_4;
-            uint _e26 = _group_0_binding_5_cs[_e23].next;
-            uint _e27 = bsh_next_leaf_lobe(BSH, _e26, x_11, r_5, rl_5);
-            i_4 = _e27;
+            uint _e20 = bsh_cursor_next(cur, x_13, r_7, rl_7);
+            i_4 = _e20;
         }
         loop_init_1 = false;
-        uint _e13 = i_4;
-        if ((_e13 != BSH_NONE)) {
+        uint _e12 = i_4;
+        if ((_e12 != BSH_NONE)) {
         } else {
             break;
         }
         {
-            uint _e17 = i_4;
-            uint _e20 = _group_0_binding_5_cs[_e17].light;
-            reservoir_offer(picks_1, h_2, _e20);
+            uint _e16 = i_4;
+            uint _e19 = _group_0_binding_5_cs[_e16].light;
+            reservoir_offer(picks_1, h_2, _e19);
         }
     }
-    Picks _e28 = picks_1;
-    return _e28;
+    Picks _e21 = picks_1;
+    return _e21;
 }
 
-Connection connect_record(GpuLight l_8, vec3 x_12, vec3 n_15, vec3 ng_1, float r2_2, float rt2_4, float w_res, float u1_2, float u2_2, float eps, bool trace_1) {
-    Connection c_7 = Connection(vec3(0.0), vec3(0.0), 0.0);
+Connection connect_record(GpuLight l_8, vec3 x_14, vec3 n_15, vec3 ng_1, float r2_2, float rt2_4, float w_res, float u1_2, float u2_2, float eps, bool trace_1) {
+    Connection c_9 = Connection(vec3(0.0), vec3(0.0), 0.0);
     bool local_22 = false;
     bool local_23 = false;
-    c_7.e = vec3(0.0);
+    c_9.e = vec3(0.0);
     vec3 _e16 = light_point(l_8, u1_2, u2_2);
-    c_7.y = _e16;
-    vec3 _e19 = c_7.y;
-    float _e20 = connection_cosine(x_12, _e19, n_15, ng_1, r2_2);
-    c_7.cos_x = _e20;
-    float _e22 = c_7.cos_x;
+    c_9.y = _e16;
+    vec3 _e19 = c_9.y;
+    float _e20 = connection_cosine(x_14, _e19, n_15, ng_1, r2_2);
+    c_9.cos_x = _e20;
+    float _e22 = c_9.cos_x;
     if (!((_e22 <= 0.0))) {
         if (trace_1) {
-            vec3 _e33 = c_7.y;
-            bool _e34 = occluded((x_12 + (ng_1 * eps)), _e33);
+            vec3 _e33 = c_9.y;
+            bool _e34 = occluded((x_14 + (ng_1 * eps)), _e33);
             local_23 = _e34;
         } else {
             local_23 = false;
@@ -1324,30 +1351,30 @@ Connection connect_record(GpuLight l_8, vec3 x_12, vec3 n_15, vec3 ng_1, float r
     }
     bool _e38 = local_22;
     if (_e38) {
-        Connection _e39 = c_7;
+        Connection _e39 = c_9;
         return _e39;
     }
-    vec3 _e41 = c_7.y;
-    vec3 v_13 = (x_12 - _e41);
+    vec3 _e41 = c_9.y;
+    vec3 v_13 = (x_14 - _e41);
     float d2_11 = dot(v_13, v_13);
     vec3 _e48 = light_intensity(l_8, (v_13 / vec3(sqrt(d2_11))));
-    float _e50 = c_7.cos_x;
+    float _e50 = c_9.cos_x;
     float _e51 = connection_factor(_e50, d2_11, rt2_4, w_res);
-    c_7.e = (_e48 * _e51);
-    Connection _e53 = c_7;
+    c_9.e = (_e48 * _e51);
+    Connection _e53 = c_9;
     return _e53;
 }
 
-Connection connect_traced(uint li, vec3 x_13, vec3 n_16, vec3 ng_2, float s_1, float w_res_1, float u1_3, float u2_3, float eps_1, bool trace_2) {
+Connection connect_traced(uint li, vec3 x_15, vec3 n_16, vec3 ng_2, float s_1, float w_res_1, float u1_3, float u2_3, float eps_1, bool trace_2) {
     GpuLight _e12 = _group_0_binding_2_cs[li];
     float _e15 = _group_0_binding_4_cs[li];
     float _e19 = _group_0_binding_3_cs[li];
-    Connection _e21 = connect_record(_e12, x_13, n_16, ng_2, (s_1 * _e15), (s_1 * _e19), w_res_1, u1_3, u2_3, eps_1, trace_2);
+    Connection _e21 = connect_record(_e12, x_15, n_16, ng_2, (s_1 * _e15), (s_1 * _e19), w_res_1, u1_3, u2_3, eps_1, trace_2);
     return _e21;
 }
 
-Connection connect(uint li_1, vec3 x_14, vec3 n_17, vec3 ng_3, float s_2, float w_res_2, float u1_4, float u2_4, float eps_2) {
-    Connection _e10 = connect_traced(li_1, x_14, n_17, ng_3, s_2, w_res_2, u1_4, u2_4, eps_2, true);
+Connection connect(uint li_1, vec3 x_16, vec3 n_17, vec3 ng_3, float s_2, float w_res_2, float u1_4, float u2_4, float eps_2) {
+    Connection _e10 = connect_traced(li_1, x_16, n_17, ng_3, s_2, w_res_2, u1_4, u2_4, eps_2, true);
     return _e10;
 }
 
@@ -1356,49 +1383,49 @@ float mis_weight(float pdf_a_1, float pdf_b_1) {
     return _e2;
 }
 
-float light_range_scale(uint li_2, vec3 x_15, vec3 r_6, vec4 rl_6) {
-    GpuLightCone c_13 = _group_1_binding_2_cs[li_2];
-    float _e9 = range_scale_toward(rl_6, c_13.center, c_13.radius, x_15, r_6);
+float light_range_scale(uint li_2, vec3 x_17, vec3 r_8, vec4 rl_8) {
+    GpuLightCone c_15 = _group_1_binding_2_cs[li_2];
+    float _e9 = range_scale_toward(rl_8, c_15.center, c_15.radius, x_17, r_8);
     return _e9;
 }
 
-float select_pdf(uint li_3, vec3 x_16, vec3 n_18, vec3 r_7, vec4 lobe_5, vec4 rl_7, uint nee, bool in_range_1) {
+float select_pdf(uint li_3, vec3 x_18, vec3 n_18, vec3 r_9, vec4 lobe_5, vec4 rl_9, uint nee, bool in_range_1) {
     float _e9 = reservoir_select_pdf(nee, in_range_1, K);
     return _e9;
 }
 
-float light_pdf_selected(uint li_4, vec3 x_17, vec3 r_8, vec4 rl_8, vec3 y_2, float sel) {
+float light_pdf_selected(uint li_4, vec3 x_19, vec3 r_10, vec4 rl_10, vec3 y_2, float sel) {
     GpuLight l_9 = _group_0_binding_2_cs[li_4];
-    vec3 v_14 = (x_17 - y_2);
+    vec3 v_14 = (x_19 - y_2);
     float d2_12 = dot(v_14, v_14);
     vec3 _e11 = light_normal(l_9);
     float cos_y_1 = ((d2_12 > 0.0) ? dot(_e11, (v_14 / vec3(sqrt(d2_12)))) : 0.0);
-    float _e20 = light_range_scale(li_4, x_17, r_8, rl_8);
+    float _e20 = light_range_scale(li_4, x_19, r_10, rl_10);
     float _e23 = _group_0_binding_3_cs[li_4];
     float _e25 = light_area(l_9);
     float _e26 = light_strategy_pdf(sel, (_e20 * _e23), d2_12, _e25, cos_y_1);
     return _e26;
 }
 
-float light_pdf(uint li_5, vec3 x_18, vec3 n_19, vec3 r_9, vec4 lobe_6, vec4 rl_9, vec3 y_3, uint nee_1, bool in_range_2) {
-    float _e9 = select_pdf(li_5, x_18, n_19, r_9, lobe_6, rl_9, nee_1, in_range_2);
-    float _e10 = light_pdf_selected(li_5, x_18, r_9, rl_9, y_3, _e9);
+float light_pdf(uint li_5, vec3 x_20, vec3 n_19, vec3 r_11, vec4 lobe_6, vec4 rl_11, vec3 y_3, uint nee_1, bool in_range_2) {
+    float _e9 = select_pdf(li_5, x_20, n_19, r_11, lobe_6, rl_11, nee_1, in_range_2);
+    float _e10 = light_pdf_selected(li_5, x_20, r_11, rl_11, y_3, _e9);
     return _e10;
 }
 
-vec3 shade_pick(uint li_6, vec3 x_19, vec3 n_20, vec3 ng_4, GpuMaterial m, vec3 wo_1, vec3 r_10, vec4 lobe_7, vec4 rl_10, float w_7, uint nee_2, float u1_5, float u2_5) {
+vec3 shade_pick(uint li_6, vec3 x_21, vec3 n_20, vec3 ng_4, GpuMaterial m, vec3 wo_1, vec3 r_12, vec4 lobe_7, vec4 rl_12, float w_7, uint nee_2, float u1_5, float u2_5) {
     float mis = 1.0;
-    float _e13 = light_range_scale(li_6, x_19, r_10, rl_10);
+    float _e13 = light_range_scale(li_6, x_21, r_12, rl_12);
     float _e16 = _group_0_binding_0_cs.eps;
-    Connection _e17 = connect(li_6, x_19, n_20, ng_4, _e13, w_7, u1_5, u2_5, _e16);
+    Connection _e17 = connect(li_6, x_21, n_20, ng_4, _e13, w_7, u1_5, u2_5, _e16);
     if ((_e17.cos_x <= 0.0)) {
         return vec3(0.0);
     }
-    vec3 l_10 = normalize((_e17.y - x_19));
+    vec3 l_10 = normalize((_e17.y - x_21));
     GpuLight _e30 = _group_0_binding_2_cs[li_6];
     float _e31 = light_area(_e30);
     if ((_e31 > 0.0)) {
-        float _e36 = light_pdf(li_6, x_19, n_20, r_10, lobe_7, rl_10, _e17.y, nee_2, true);
+        float _e36 = light_pdf(li_6, x_21, n_20, r_12, lobe_7, rl_12, _e17.y, nee_2, true);
         float _e38 = specular_probability(lobe_7);
         float _e39 = bsdf_pdf(n_20, wo_1, l_10, m.alpha, _e38);
         float _e40 = mis_weight(_e36, _e39);
@@ -1424,7 +1451,7 @@ void main() {
         _group_0_binding_10_cs[i_5] = 0u;
         return;
     }
-    vec3 x_20 = vtx.position;
+    vec3 x_22 = vtx.position;
     vec3 n_23 = vtx.normal;
     vec3 ng_5 = vtx.gnormal;
     GpuMaterial m_2 = _group_0_binding_8_cs[vtx.material];
@@ -1437,7 +1464,7 @@ void main() {
     uint _e38 = point_stream(_e34, i_5, _e37);
     uint _e39 = pick_stream(_e38);
     h = _e39;
-    Picks _e44 = bsh_collect(x_20, _e23, _e31, _e38);
+    Picks _e44 = bsh_collect(x_22, _e23, _e31, _e38);
     _group_0_binding_10_cs[i_5] = _e44.n;
     float _e50 = reservoir_weight(_e44.n, K);
     bool loop_init_2 = true;
@@ -1465,7 +1492,7 @@ void main() {
             uint _e66 = s;
             uint _e69 = h;
             float _e70 = xi_from_bits(_e69);
-            vec3 _e71 = shade_pick(_e44.light[_e66], x_20, n_23, ng_5, m_2, wo_2, _e23, _e30, _e31, _e50, _e44.n, _e61, _e70);
+            vec3 _e71 = shade_pick(_e44.light[_e66], x_22, n_23, ng_5, m_2, wo_2, _e23, _e30, _e31, _e50, _e44.n, _e61, _e70);
             sum = (_e64 + _e71);
         }
     }

@@ -79,6 +79,11 @@ struct Picks {
     uint light[8];
     uint n;
 };
+struct BshCursor {
+    uint i;
+    uint end;
+    uint next;
+};
 struct Connection {
     vec3 e;
     vec3 y;
@@ -90,6 +95,8 @@ const uint LIGHT_IES = 2u;
 const uint LIGHT_TRIANGLE = 3u;
 const uint LIGHT_VPL = 4u;
 const uint NO_LIGHT = 4294967295u;
+const uint GRID_HEADER = 32u;
+const uint GRID_LEVELS_MAX = 8u;
 const uint COUNT_TILES = 0u;
 const uint COUNT_GROUP_TESTS = 1u;
 const uint COUNT_CLUSTER_TESTS = 2u;
@@ -155,23 +162,23 @@ layout(std430) readonly buffer type_7_block_1Compute { GpuTriangle _group_0_bind
 
 layout(std430) readonly buffer type_10_block_2Compute { BshNode _group_0_binding_5_cs[]; };
 
-layout(std430) readonly buffer type_13_block_3Compute { GpuLight _group_0_binding_2_cs[]; };
+layout(std430) readonly buffer type_14_block_3Compute { GpuLight _group_0_binding_2_cs[]; };
 
 layout(std430) readonly buffer type_4_block_4Compute { float _group_0_binding_4_cs[]; };
 
 layout(std430) readonly buffer type_4_block_5Compute { float _group_0_binding_3_cs[]; };
 
-layout(std430) readonly buffer type_14_block_6Compute { GpuLightCone _group_1_binding_2_cs[]; };
+layout(std430) readonly buffer type_15_block_6Compute { GpuLightCone _group_1_binding_2_cs[]; };
 
 layout(std140) uniform ShadeParams_block_7Compute { ShadeParams _group_0_binding_0_cs; };
 
-layout(std430) readonly buffer type_15_block_8Compute { GpuPathVertex _group_0_binding_1_cs[]; };
+layout(std430) readonly buffer type_16_block_8Compute { GpuPathVertex _group_0_binding_1_cs[]; };
 
-layout(std430) readonly buffer type_16_block_9Compute { GpuMaterial _group_0_binding_8_cs[]; };
+layout(std430) readonly buffer type_17_block_9Compute { GpuMaterial _group_0_binding_8_cs[]; };
 
-layout(std430) buffer type_17_block_10Compute { vec4 _group_0_binding_9_cs[]; };
+layout(std430) buffer type_18_block_10Compute { vec4 _group_0_binding_9_cs[]; };
 
-layout(std430) buffer type_18_block_11Compute { uint _group_0_binding_10_cs[]; };
+layout(std430) buffer type_19_block_11Compute { uint _group_0_binding_10_cs[]; };
 
 
 float to_f32_(uint u) {
@@ -288,11 +295,11 @@ vec3 triangle_sample(vec3 a_2, vec3 b_2, vec3 c_1, float u1_, float u2_) {
 }
 
 float area_to_solid_angle_pdf(float pdf_area, float d2_5, float cos_light) {
-    float c_6 = abs(cos_light);
-    if ((c_6 <= 0.0)) {
+    float c_8 = abs(cos_light);
+    if ((c_8 <= 0.0)) {
         return 0.0;
     }
-    return ((pdf_area * d2_5) / c_6);
+    return ((pdf_area * d2_5) / c_8);
 }
 
 float bsh_scaled_radius(BshNode node, float scale) {
@@ -465,9 +472,9 @@ float smith_visibility(float n_l, float n_v, float alpha_2) {
 }
 
 vec3 fresnel_schlick(vec3 f0_, float f90_, float v_h) {
-    float c_7 = clamp((1.0 - v_h), 0.0, 1.0);
-    float c2_ = (c_7 * c_7);
-    return (f0_ + ((vec3(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_7)));
+    float c_9 = clamp((1.0 - v_h), 0.0, 1.0);
+    float c2_ = (c_9 * c_9);
+    return (f0_ + ((vec3(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_9)));
 }
 
 vec3 specular_fresnel(vec3 base, float metallic, vec3 f0_d, float f90_d, float v_h_1) {
@@ -506,8 +513,8 @@ vec3 specular_brdf(vec3 base_2, float metallic_2, vec3 f0_d_2, float f90_d_2, fl
     vec3 hs = (v_1 + l_1);
     float inv = (1.0 / sqrt(dot(hs, hs)));
     vec3 h_4 = (hs * inv);
-    vec3 c_8 = cross(n_9, h_4);
-    float _e32 = ggx_d(dot(n_9, h_4), dot(c_8, c_8), alpha_3);
+    vec3 c_10 = cross(n_9, h_4);
+    float _e32 = ggx_d(dot(n_9, h_4), dot(c_10, c_10), alpha_3);
     vec3 _e34 = specular_fresnel(base_2, metallic_2, f0_d_2, f90_d_2, dot(v_1, h_4));
     float _e35 = smith_visibility(n_l_1, n_v_2, alpha_3);
     return (_e34 * (_e32 * _e35));
@@ -663,8 +670,8 @@ float cone_cos_of(vec3 v_5, float d2_7, float a_4, vec3 d) {
     if (_e21) {
         return 1.0;
     }
-    vec3 c_9 = cross(v_5, d);
-    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_9, c_9)) * a_4)) / d2_7), 1.0);
+    vec3 c_11 = cross(v_5, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_11, c_11)) * a_4)) / d2_7), 1.0);
 }
 
 float cone_cos_toward(vec3 center, float radius, vec3 p, vec3 d_1) {
@@ -1014,6 +1021,26 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start, vec3 x_5, vec3 r_4, vec4 rl_4)
     return BSH_NONE;
 }
 
+BshCursor bsh_cursor(vec3 x_6, vec3 r_5, vec4 rl_5) {
+    BshCursor c_5 = BshCursor(0u, 0u, 0u);
+    c_5.i = 0u;
+    c_5.end = 0u;
+    uint _e10 = bsh_first(BSH);
+    c_5.next = _e10;
+    BshCursor _e11 = c_5;
+    return _e11;
+}
+
+uint bsh_cursor_next(inout BshCursor c_6, vec3 x_7, vec3 r_6, vec4 rl_6) {
+    uint _e6 = c_6.next;
+    uint _e7 = bsh_next_leaf_lobe(BSH, _e6, x_7, r_6, rl_6);
+    if ((_e7 != BSH_NONE)) {
+        uint _e14 = _group_0_binding_5_cs[_e7].next;
+        c_6.next = _e14;
+    }
+    return _e7;
+}
+
 void reservoir_offer(inout Picks picks, inout uint h_1, uint light) {
     uint _e4 = picks.n;
     bool _e5 = reservoir_takes(_e4);
@@ -1041,54 +1068,54 @@ void reservoir_offer(inout Picks picks, inout uint h_1, uint light) {
     }
 }
 
-Picks bsh_collect(vec3 x_6, vec3 r_5, vec4 rl_5, uint seed_1) {
+Picks bsh_collect(vec3 x_8, vec3 r_7, vec4 rl_7, uint seed_1) {
     Picks picks_1 = Picks(uint[8](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u), 0u);
     uint h_2 = 0u;
+    BshCursor cur = BshCursor(0u, 0u, 0u);
     uint i_3 = 0u;
     picks_1.n = 0u;
     h_2 = seed_1;
-    uint _e10 = bsh_first(BSH);
-    uint _e11 = bsh_next_leaf_lobe(BSH, _e10, x_6, r_5, rl_5);
-    i_3 = _e11;
+    BshCursor _e8 = bsh_cursor(x_8, r_7, rl_7);
+    cur = _e8;
+    uint _e10 = bsh_cursor_next(cur, x_8, r_7, rl_7);
+    i_3 = _e10;
     bool loop_init_1 = true;
     while(true) {
         if (!loop_init_1) {
-            uint _e23 = i_3;
-            uint _e26 = _group_0_binding_5_cs[_e23].next;
-            uint _e27 = bsh_next_leaf_lobe(BSH, _e26, x_6, r_5, rl_5);
-            i_3 = _e27;
+            uint _e20 = bsh_cursor_next(cur, x_8, r_7, rl_7);
+            i_3 = _e20;
         }
         loop_init_1 = false;
-        uint _e13 = i_3;
-        if ((_e13 != BSH_NONE)) {
+        uint _e12 = i_3;
+        if ((_e12 != BSH_NONE)) {
         } else {
             break;
         }
         {
-            uint _e17 = i_3;
-            uint _e20 = _group_0_binding_5_cs[_e17].light;
-            reservoir_offer(picks_1, h_2, _e20);
+            uint _e16 = i_3;
+            uint _e19 = _group_0_binding_5_cs[_e16].light;
+            reservoir_offer(picks_1, h_2, _e19);
         }
     }
-    Picks _e28 = picks_1;
-    return _e28;
+    Picks _e21 = picks_1;
+    return _e21;
 }
 
-Connection connect_record(GpuLight l_8, vec3 x_7, vec3 n_13, vec3 ng_1, float r2_2, float rt2_4, float w_res, float u1_2, float u2_2, float eps, bool trace_1) {
-    Connection c_5 = Connection(vec3(0.0), vec3(0.0), 0.0);
+Connection connect_record(GpuLight l_8, vec3 x_9, vec3 n_13, vec3 ng_1, float r2_2, float rt2_4, float w_res, float u1_2, float u2_2, float eps, bool trace_1) {
+    Connection c_7 = Connection(vec3(0.0), vec3(0.0), 0.0);
     bool local_21 = false;
     bool local_22 = false;
-    c_5.e = vec3(0.0);
+    c_7.e = vec3(0.0);
     vec3 _e16 = light_point(l_8, u1_2, u2_2);
-    c_5.y = _e16;
-    vec3 _e19 = c_5.y;
-    float _e20 = connection_cosine(x_7, _e19, n_13, ng_1, r2_2);
-    c_5.cos_x = _e20;
-    float _e22 = c_5.cos_x;
+    c_7.y = _e16;
+    vec3 _e19 = c_7.y;
+    float _e20 = connection_cosine(x_9, _e19, n_13, ng_1, r2_2);
+    c_7.cos_x = _e20;
+    float _e22 = c_7.cos_x;
     if (!((_e22 <= 0.0))) {
         if (trace_1) {
-            vec3 _e33 = c_5.y;
-            bool _e34 = occluded((x_7 + (ng_1 * eps)), _e33);
+            vec3 _e33 = c_7.y;
+            bool _e34 = occluded((x_9 + (ng_1 * eps)), _e33);
             local_22 = _e34;
         } else {
             local_22 = false;
@@ -1100,30 +1127,30 @@ Connection connect_record(GpuLight l_8, vec3 x_7, vec3 n_13, vec3 ng_1, float r2
     }
     bool _e38 = local_21;
     if (_e38) {
-        Connection _e39 = c_5;
+        Connection _e39 = c_7;
         return _e39;
     }
-    vec3 _e41 = c_5.y;
-    vec3 v_13 = (x_7 - _e41);
+    vec3 _e41 = c_7.y;
+    vec3 v_13 = (x_9 - _e41);
     float d2_11 = dot(v_13, v_13);
     vec3 _e48 = light_intensity(l_8, (v_13 / vec3(sqrt(d2_11))));
-    float _e50 = c_5.cos_x;
+    float _e50 = c_7.cos_x;
     float _e51 = connection_factor(_e50, d2_11, rt2_4, w_res);
-    c_5.e = (_e48 * _e51);
-    Connection _e53 = c_5;
+    c_7.e = (_e48 * _e51);
+    Connection _e53 = c_7;
     return _e53;
 }
 
-Connection connect_traced(uint li, vec3 x_8, vec3 n_14, vec3 ng_2, float s_1, float w_res_1, float u1_3, float u2_3, float eps_1, bool trace_2) {
+Connection connect_traced(uint li, vec3 x_10, vec3 n_14, vec3 ng_2, float s_1, float w_res_1, float u1_3, float u2_3, float eps_1, bool trace_2) {
     GpuLight _e12 = _group_0_binding_2_cs[li];
     float _e15 = _group_0_binding_4_cs[li];
     float _e19 = _group_0_binding_3_cs[li];
-    Connection _e21 = connect_record(_e12, x_8, n_14, ng_2, (s_1 * _e15), (s_1 * _e19), w_res_1, u1_3, u2_3, eps_1, trace_2);
+    Connection _e21 = connect_record(_e12, x_10, n_14, ng_2, (s_1 * _e15), (s_1 * _e19), w_res_1, u1_3, u2_3, eps_1, trace_2);
     return _e21;
 }
 
-Connection connect(uint li_1, vec3 x_9, vec3 n_15, vec3 ng_3, float s_2, float w_res_2, float u1_4, float u2_4, float eps_2) {
-    Connection _e10 = connect_traced(li_1, x_9, n_15, ng_3, s_2, w_res_2, u1_4, u2_4, eps_2, true);
+Connection connect(uint li_1, vec3 x_11, vec3 n_15, vec3 ng_3, float s_2, float w_res_2, float u1_4, float u2_4, float eps_2) {
+    Connection _e10 = connect_traced(li_1, x_11, n_15, ng_3, s_2, w_res_2, u1_4, u2_4, eps_2, true);
     return _e10;
 }
 
@@ -1132,49 +1159,49 @@ float mis_weight(float pdf_a_1, float pdf_b_1) {
     return _e2;
 }
 
-float light_range_scale(uint li_2, vec3 x_10, vec3 r_6, vec4 rl_6) {
-    GpuLightCone c_10 = _group_1_binding_2_cs[li_2];
-    float _e9 = range_scale_toward(rl_6, c_10.center, c_10.radius, x_10, r_6);
+float light_range_scale(uint li_2, vec3 x_12, vec3 r_8, vec4 rl_8) {
+    GpuLightCone c_12 = _group_1_binding_2_cs[li_2];
+    float _e9 = range_scale_toward(rl_8, c_12.center, c_12.radius, x_12, r_8);
     return _e9;
 }
 
-float select_pdf(uint li_3, vec3 x_11, vec3 n_16, vec3 r_7, vec4 lobe_5, vec4 rl_7, uint nee, bool in_range_1) {
+float select_pdf(uint li_3, vec3 x_13, vec3 n_16, vec3 r_9, vec4 lobe_5, vec4 rl_9, uint nee, bool in_range_1) {
     float _e9 = reservoir_select_pdf(nee, in_range_1, K);
     return _e9;
 }
 
-float light_pdf_selected(uint li_4, vec3 x_12, vec3 r_8, vec4 rl_8, vec3 y_1, float sel) {
+float light_pdf_selected(uint li_4, vec3 x_14, vec3 r_10, vec4 rl_10, vec3 y_1, float sel) {
     GpuLight l_9 = _group_0_binding_2_cs[li_4];
-    vec3 v_14 = (x_12 - y_1);
+    vec3 v_14 = (x_14 - y_1);
     float d2_12 = dot(v_14, v_14);
     vec3 _e11 = light_normal(l_9);
     float cos_y_1 = ((d2_12 > 0.0) ? dot(_e11, (v_14 / vec3(sqrt(d2_12)))) : 0.0);
-    float _e20 = light_range_scale(li_4, x_12, r_8, rl_8);
+    float _e20 = light_range_scale(li_4, x_14, r_10, rl_10);
     float _e23 = _group_0_binding_3_cs[li_4];
     float _e25 = light_area(l_9);
     float _e26 = light_strategy_pdf(sel, (_e20 * _e23), d2_12, _e25, cos_y_1);
     return _e26;
 }
 
-float light_pdf(uint li_5, vec3 x_13, vec3 n_17, vec3 r_9, vec4 lobe_6, vec4 rl_9, vec3 y_2, uint nee_1, bool in_range_2) {
-    float _e9 = select_pdf(li_5, x_13, n_17, r_9, lobe_6, rl_9, nee_1, in_range_2);
-    float _e10 = light_pdf_selected(li_5, x_13, r_9, rl_9, y_2, _e9);
+float light_pdf(uint li_5, vec3 x_15, vec3 n_17, vec3 r_11, vec4 lobe_6, vec4 rl_11, vec3 y_2, uint nee_1, bool in_range_2) {
+    float _e9 = select_pdf(li_5, x_15, n_17, r_11, lobe_6, rl_11, nee_1, in_range_2);
+    float _e10 = light_pdf_selected(li_5, x_15, r_11, rl_11, y_2, _e9);
     return _e10;
 }
 
-vec3 shade_pick(uint li_6, vec3 x_14, vec3 n_18, vec3 ng_4, GpuMaterial m, vec3 wo_1, vec3 r_10, vec4 lobe_7, vec4 rl_10, float w_5, uint nee_2, float u1_5, float u2_5) {
+vec3 shade_pick(uint li_6, vec3 x_16, vec3 n_18, vec3 ng_4, GpuMaterial m, vec3 wo_1, vec3 r_12, vec4 lobe_7, vec4 rl_12, float w_5, uint nee_2, float u1_5, float u2_5) {
     float mis = 1.0;
-    float _e13 = light_range_scale(li_6, x_14, r_10, rl_10);
+    float _e13 = light_range_scale(li_6, x_16, r_12, rl_12);
     float _e16 = _group_0_binding_0_cs.eps;
-    Connection _e17 = connect(li_6, x_14, n_18, ng_4, _e13, w_5, u1_5, u2_5, _e16);
+    Connection _e17 = connect(li_6, x_16, n_18, ng_4, _e13, w_5, u1_5, u2_5, _e16);
     if ((_e17.cos_x <= 0.0)) {
         return vec3(0.0);
     }
-    vec3 l_10 = normalize((_e17.y - x_14));
+    vec3 l_10 = normalize((_e17.y - x_16));
     GpuLight _e30 = _group_0_binding_2_cs[li_6];
     float _e31 = light_area(_e30);
     if ((_e31 > 0.0)) {
-        float _e36 = light_pdf(li_6, x_14, n_18, r_10, lobe_7, rl_10, _e17.y, nee_2, true);
+        float _e36 = light_pdf(li_6, x_16, n_18, r_12, lobe_7, rl_12, _e17.y, nee_2, true);
         float _e38 = specular_probability(lobe_7);
         float _e39 = bsdf_pdf(n_18, wo_1, l_10, m.alpha, _e38);
         float _e40 = mis_weight(_e36, _e39);
@@ -1200,7 +1227,7 @@ void main() {
         _group_0_binding_10_cs[i_4] = 0u;
         return;
     }
-    vec3 x_15 = vtx.position;
+    vec3 x_17 = vtx.position;
     vec3 n_21 = vtx.normal;
     vec3 ng_5 = vtx.gnormal;
     GpuMaterial m_2 = _group_0_binding_8_cs[vtx.material];
@@ -1213,7 +1240,7 @@ void main() {
     uint _e38 = point_stream(_e34, i_4, _e37);
     uint _e39 = pick_stream(_e38);
     h = _e39;
-    Picks _e44 = bsh_collect(x_15, _e23, _e31, _e38);
+    Picks _e44 = bsh_collect(x_17, _e23, _e31, _e38);
     _group_0_binding_10_cs[i_4] = _e44.n;
     float _e50 = reservoir_weight(_e44.n, K);
     bool loop_init_2 = true;
@@ -1241,7 +1268,7 @@ void main() {
             uint _e66 = s;
             uint _e69 = h;
             float _e70 = xi_from_bits(_e69);
-            vec3 _e71 = shade_pick(_e44.light[_e66], x_15, n_21, ng_5, m_2, wo_2, _e23, _e30, _e31, _e50, _e44.n, _e61, _e70);
+            vec3 _e71 = shade_pick(_e44.light[_e66], x_17, n_21, ng_5, m_2, wo_2, _e23, _e30, _e31, _e50, _e44.n, _e61, _e70);
             sum = (_e64 + _e71);
         }
     }

@@ -51,6 +51,12 @@ struct Picks {
     uint n;
 };
 
+struct BshCursor {
+    uint i;
+    uint end;
+    uint next;
+};
+
 struct Connection {
     float3 e;
     int _pad1_0;
@@ -64,6 +70,8 @@ static const uint LIGHT_IES = 2u;
 static const uint LIGHT_TRIANGLE = 3u;
 static const uint LIGHT_VPL = 4u;
 static const uint NO_LIGHT = 4294967295u;
+static const uint GRID_HEADER = 32u;
+static const uint GRID_LEVELS_MAX = 8u;
 static const uint COUNT_TILES = 0u;
 static const uint COUNT_GROUP_TESTS = 1u;
 static const uint COUNT_CLUSTER_TESTS = 2u;
@@ -290,8 +298,8 @@ float atan_portable(float x_4)
     float _e21 = base;
     float _e33 = t;
     float _e35 = t;
-    float r_6 = (_e21 + (((((((((0.080537446 * z) - 0.13877685) * z) + 0.19977711) * z) - 0.3333295) * z) * _e33) + _e35));
-    return ((x_4 < 0.0) ? -(r_6) : r_6);
+    float r_8 = (_e21 + (((((((((0.080537446 * z) - 0.13877685) * z) + 0.19977711) * z) - 0.3333295) * z) * _e33) + _e35));
+    return ((x_4 < 0.0) ? -(r_8) : r_8);
 }
 
 float atan2_portable(float y_1, float x_5)
@@ -458,8 +466,8 @@ float ies_candela_dir(uint tab_3, uint base_2, float wn, float wr, float ws)
     float gamma_1 = degrees(_e9);
     bool on_axis = ((abs(wr) + abs(ws)) <= 0.0);
     const float _e16 = atan2_portable(ws, wr);
-    float c_5 = (on_axis ? 0.0 : degrees(_e16));
-    const float _e20 = ies_candela(tab_3, base_2, gamma_1, c_5);
+    float c_7 = (on_axis ? 0.0 : degrees(_e16));
+    const float _e20 = ies_candela(tab_3, base_2, gamma_1, c_7);
     return _e20;
 }
 
@@ -567,8 +575,8 @@ float cone_cos_of(float3 v, float d2_4, float a_4, float3 d)
     if (_e21) {
         return 1.0;
     }
-    float3 c_6 = cross(v, d);
-    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_6, c_6)) * a_4)) / d2_4), 1.0);
+    float3 c_8 = cross(v, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_8, c_8)) * a_4)) / d2_4), 1.0);
 }
 
 float cone_cos_toward(float3 center_, float radius, float3 p, float3 d_1)
@@ -944,6 +952,30 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start_1, float3 x_10, float3 r_4, flo
     return BSH_NONE;
 }
 
+BshCursor bsh_cursor(float3 x_11, float3 r_5, float4 rl_5)
+{
+    BshCursor c_4 = (BshCursor)0;
+
+    c_4.i = 0u;
+    c_4.end = 0u;
+    const uint _e10 = bsh_first(BSH);
+    c_4.next = _e10;
+    BshCursor _e11 = c_4;
+    const BshCursor bshcursor = _e11;
+    return bshcursor;
+}
+
+uint bsh_cursor_next(inout BshCursor c_5, float3 x_12, float3 r_6, float4 rl_6)
+{
+    uint _e6 = c_5.next;
+    const uint _e7 = bsh_next_leaf_lobe(BSH, _e6, x_12, r_6, rl_6);
+    if ((_e7 != BSH_NONE)) {
+        uint _e14 = asuint(bsh_nodes.Load(20+_e7*32));
+        c_5.next = _e14;
+    }
+    return _e7;
+}
+
 void reservoir_offer(inout Picks picks, inout uint h_1, uint light)
 {
     uint _e4 = picks.n;
@@ -972,62 +1004,62 @@ void reservoir_offer(inout Picks picks, inout uint h_1, uint light)
     }
 }
 
-Picks bsh_collect(float3 x_11, float3 r_5, float4 rl_5, uint seed_1)
+Picks bsh_collect(float3 x_13, float3 r_7, float4 rl_7, uint seed_1)
 {
     Picks picks_1 = (Picks)0;
     uint h_2 = (uint)0;
+    BshCursor cur = (BshCursor)0;
     uint i_4 = (uint)0;
 
     picks_1.n = 0u;
     h_2 = seed_1;
-    const uint _e10 = bsh_first(BSH);
-    const uint _e11 = bsh_next_leaf_lobe(BSH, _e10, x_11, r_5, rl_5);
-    i_4 = _e11;
+    const BshCursor _e8 = bsh_cursor(x_13, r_7, rl_7);
+    cur = _e8;
+    const uint _e10 = bsh_cursor_next(cur, x_13, r_7, rl_7);
+    i_4 = _e10;
     uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
     bool loop_init_1 = true;
     while(true) {
         if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e23 = i_4;
-            uint _e26 = asuint(bsh_nodes.Load(20+_e23*32));
-            const uint _e27 = bsh_next_leaf_lobe(BSH, _e26, x_11, r_5, rl_5);
-            i_4 = _e27;
+            const uint _e20 = bsh_cursor_next(cur, x_13, r_7, rl_7);
+            i_4 = _e20;
         }
         loop_init_1 = false;
-        uint _e13 = i_4;
-        if ((_e13 != BSH_NONE)) {
+        uint _e12 = i_4;
+        if ((_e12 != BSH_NONE)) {
         } else {
             break;
         }
         {
-            uint _e17 = i_4;
-            uint _e20 = asuint(bsh_nodes.Load(24+_e17*32));
-            reservoir_offer(picks_1, h_2, _e20);
+            uint _e16 = i_4;
+            uint _e19 = asuint(bsh_nodes.Load(24+_e16*32));
+            reservoir_offer(picks_1, h_2, _e19);
         }
     }
-    Picks _e28 = picks_1;
-    const Picks picks_2 = _e28;
+    Picks _e21 = picks_1;
+    const Picks picks_2 = _e21;
     return picks_2;
 }
 
-Connection connect_record(GpuLight l_2, float3 x_12, float3 n_6, float3 ng_1, float r2_2, float rt2_2, float w_res, float u1_1, float u2_1, float eps, bool trace_1)
+Connection connect_record(GpuLight l_2, float3 x_14, float3 n_6, float3 ng_1, float r2_2, float rt2_2, float w_res, float u1_1, float u2_1, float eps, bool trace_1)
 {
-    Connection c_4 = (Connection)0;
+    Connection c_6 = (Connection)0;
     bool local_10 = (bool)0;
     bool local_11 = (bool)0;
 
-    c_4.e = (0.0).xxx;
+    c_6.e = (0.0).xxx;
     const float3 _e16 = light_point(l_2, u1_1, u2_1);
-    c_4.y = _e16;
-    float3 _e19 = c_4.y;
-    const float _e20 = connection_cosine(x_12, _e19, n_6, ng_1, r2_2);
-    c_4.cos_x = _e20;
-    float _e22 = c_4.cos_x;
+    c_6.y = _e16;
+    float3 _e19 = c_6.y;
+    const float _e20 = connection_cosine(x_14, _e19, n_6, ng_1, r2_2);
+    c_6.cos_x = _e20;
+    float _e22 = c_6.cos_x;
     if (!((_e22 <= 0.0))) {
         if (trace_1) {
-            float3 _e33 = c_4.y;
-            const bool _e34 = occluded((x_12 + (ng_1 * eps)), _e33);
+            float3 _e33 = c_6.y;
+            const bool _e34 = occluded((x_14 + (ng_1 * eps)), _e33);
             local_11 = _e34;
         } else {
             local_11 = false;
@@ -1039,18 +1071,18 @@ Connection connect_record(GpuLight l_2, float3 x_12, float3 n_6, float3 ng_1, fl
     }
     bool _e38 = local_10;
     if (_e38) {
-        Connection _e39 = c_4;
+        Connection _e39 = c_6;
         const Connection connection = _e39;
         return connection;
     }
-    float3 _e41 = c_4.y;
-    float3 v_7 = (x_12 - _e41);
+    float3 _e41 = c_6.y;
+    float3 v_7 = (x_14 - _e41);
     float d2_8 = dot(v_7, v_7);
     const float3 _e48 = light_intensity(l_2, (v_7 / (sqrt(d2_8)).xxx));
-    float _e50 = c_4.cos_x;
+    float _e50 = c_6.cos_x;
     const float _e51 = connection_factor(_e50, d2_8, rt2_2, w_res);
-    c_4.e = (_e48 * _e51);
-    Connection _e53 = c_4;
+    c_6.e = (_e48 * _e51);
+    Connection _e53 = c_6;
     const Connection connection_1 = _e53;
     return connection_1;
 }
@@ -1068,19 +1100,19 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
     return ret;
 }
 
-Connection connect_traced(uint li, float3 x_13, float3 n_7, float3 ng_2, float s_1, float w_res_1, float u1_2, float u2_2, float eps_1, bool trace_2)
+Connection connect_traced(uint li, float3 x_15, float3 n_7, float3 ng_2, float s_1, float w_res_1, float u1_2, float u2_2, float eps_1, bool trace_2)
 {
     GpuLight _e12 = ConstructGpuLight(asfloat(lights.Load3(li*64+0)), asuint(lights.Load(li*64+12)), asfloat(lights.Load3(li*64+16)), asfloat(lights.Load(li*64+28)), asfloat(lights.Load3(li*64+32)), asfloat(lights.Load(li*64+44)), asfloat(lights.Load3(li*64+48)), asuint(lights.Load(li*64+60)));
     float _e15 = asfloat(r2_3.Load(li*4));
     float _e19 = asfloat(rt2_3.Load(li*4));
-    const Connection _e21 = connect_record(_e12, x_13, n_7, ng_2, (s_1 * _e15), (s_1 * _e19), w_res_1, u1_2, u2_2, eps_1, trace_2);
+    const Connection _e21 = connect_record(_e12, x_15, n_7, ng_2, (s_1 * _e15), (s_1 * _e19), w_res_1, u1_2, u2_2, eps_1, trace_2);
     const Connection connection_2 = _e21;
     return connection_2;
 }
 
-Connection connect(uint li_1, float3 x_14, float3 n_8, float3 ng_3, float s_2, float w_res_2, float u1_3, float u2_3, float eps_2)
+Connection connect(uint li_1, float3 x_16, float3 n_8, float3 ng_3, float s_2, float w_res_2, float u1_3, float u2_3, float eps_2)
 {
-    const Connection _e10 = connect_traced(li_1, x_14, n_8, ng_3, s_2, w_res_2, u1_3, u2_3, eps_2, true);
+    const Connection _e10 = connect_traced(li_1, x_16, n_8, ng_3, s_2, w_res_2, u1_3, u2_3, eps_2, true);
     const Connection connection_3 = _e10;
     return connection_3;
 }
@@ -1102,13 +1134,13 @@ void main(uint3 gid : SV_DispatchThreadID)
         irradiance.Store4(i_5*16, asuint((0.0).xxxx));
         return;
     }
-    float3 x_15 = p_3.xyz;
+    float3 x_17 = p_3.xyz;
     float4 _e19 = asfloat(normals.Load4(i_5*16));
     float3 n_10 = _e19.xyz;
     uint _e23 = params.seed;
     uint _e26 = params.frame;
     const uint _e27 = point_stream(_e23, i_5, _e26);
-    const Picks _e33 = bsh_collect(x_15, x_15, float4(1.0, 0.0, 1.0, 1.0), _e27);
+    const Picks _e33 = bsh_collect(x_17, x_17, float4(1.0, 0.0, 1.0, 1.0), _e27);
     const float _e36 = reservoir_weight(_e33.n, K);
     const uint _e37 = pick_stream(_e27);
     h = _e37;
@@ -1141,7 +1173,7 @@ void main(uint3 gid : SV_DispatchThreadID)
             uint _e60 = h;
             const float _e61 = xi_from_bits(_e60);
             float _e64 = params.eps;
-            const Connection _e65 = connect(_e33.light[min(uint(_e57), 7u)], x_15, n_10, n_10, 1.0, _e36, _e52, _e61, _e64);
+            const Connection _e65 = connect(_e33.light[min(uint(_e57), 7u)], x_17, n_10, n_10, 1.0, _e36, _e52, _e61, _e64);
             e = (_e55 + _e65.e);
         }
     }

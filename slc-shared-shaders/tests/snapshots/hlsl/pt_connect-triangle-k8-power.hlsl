@@ -84,6 +84,12 @@ struct Picks {
     uint n;
 };
 
+struct BshCursor {
+    uint i;
+    uint end;
+    uint next;
+};
+
 struct Connection {
     float3 e;
     int _pad1_0;
@@ -97,6 +103,8 @@ static const uint LIGHT_IES = 2u;
 static const uint LIGHT_TRIANGLE = 3u;
 static const uint LIGHT_VPL = 4u;
 static const uint NO_LIGHT = 4294967295u;
+static const uint GRID_HEADER = 32u;
+static const uint GRID_LEVELS_MAX = 8u;
 static const uint COUNT_TILES = 0u;
 static const uint COUNT_GROUP_TESTS = 1u;
 static const uint COUNT_CLUSTER_TESTS = 2u;
@@ -302,11 +310,11 @@ float3 triangle_sample(float3 a_2, float3 b_2, float3 c_1, float u1_, float u2_)
 
 float area_to_solid_angle_pdf(float pdf_area, float d2_5, float cos_light)
 {
-    float c_6 = abs(cos_light);
-    if ((c_6 <= 0.0)) {
+    float c_8 = abs(cos_light);
+    if ((c_8 <= 0.0)) {
         return 0.0;
     }
-    return ((pdf_area * d2_5) / c_6);
+    return ((pdf_area * d2_5) / c_8);
 }
 
 float bsh_scaled_radius(BshNode node, float scale)
@@ -501,9 +509,9 @@ float smith_visibility(float n_l, float n_v, float alpha_2)
 
 float3 fresnel_schlick(float3 f0_, float f90_, float v_h)
 {
-    float c_7 = saturate((1.0 - v_h));
-    float c2_ = (c_7 * c_7);
-    return (f0_ + ((float3(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_7)));
+    float c_9 = saturate((1.0 - v_h));
+    float c2_ = (c_9 * c_9);
+    return (f0_ + ((float3(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_9)));
 }
 
 float3 specular_fresnel(float3 base, float metallic, float3 f0_d, float f90_d, float v_h_1)
@@ -547,8 +555,8 @@ float3 specular_brdf(float3 base_2, float metallic_2, float3 f0_d_2, float f90_d
     float3 hs = (v_1 + l_1);
     float inv = (1.0 / sqrt(dot(hs, hs)));
     float3 h_4 = (hs * inv);
-    float3 c_8 = cross(n_9, h_4);
-    const float _e32 = ggx_d(dot(n_9, h_4), dot(c_8, c_8), alpha_3);
+    float3 c_10 = cross(n_9, h_4);
+    const float _e32 = ggx_d(dot(n_9, h_4), dot(c_10, c_10), alpha_3);
     const float3 _e34 = specular_fresnel(base_2, metallic_2, f0_d_2, f90_d_2, dot(v_1, h_4));
     const float _e35 = smith_visibility(n_l_1, n_v_2, alpha_3);
     return (_e34 * (_e32 * _e35));
@@ -722,8 +730,8 @@ float cone_cos_of(float3 v_5, float d2_7, float a_4, float3 d)
     if (_e21) {
         return 1.0;
     }
-    float3 c_9 = cross(v_5, d);
-    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_9, c_9)) * a_4)) / d2_7), 1.0);
+    float3 c_11 = cross(v_5, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_11, c_11)) * a_4)) / d2_7), 1.0);
 }
 
 float cone_cos_toward(float3 center_, float radius, float3 p, float3 d_1)
@@ -1152,6 +1160,30 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start, float3 x_5, float3 r_4, float4
     return BSH_NONE;
 }
 
+BshCursor bsh_cursor(float3 x_6, float3 r_5, float4 rl_5)
+{
+    BshCursor c_5 = (BshCursor)0;
+
+    c_5.i = 0u;
+    c_5.end = 0u;
+    const uint _e10 = bsh_first(BSH);
+    c_5.next = _e10;
+    BshCursor _e11 = c_5;
+    const BshCursor bshcursor = _e11;
+    return bshcursor;
+}
+
+uint bsh_cursor_next(inout BshCursor c_6, float3 x_7, float3 r_6, float4 rl_6)
+{
+    uint _e6 = c_6.next;
+    const uint _e7 = bsh_next_leaf_lobe(BSH, _e6, x_7, r_6, rl_6);
+    if ((_e7 != BSH_NONE)) {
+        uint _e14 = asuint(bsh_nodes.Load(20+_e7*32));
+        c_6.next = _e14;
+    }
+    return _e7;
+}
+
 void reservoir_offer(inout Picks picks, inout uint h_1, uint light)
 {
     uint _e4 = picks.n;
@@ -1180,62 +1212,62 @@ void reservoir_offer(inout Picks picks, inout uint h_1, uint light)
     }
 }
 
-Picks bsh_collect(float3 x_6, float3 r_5, float4 rl_5, uint seed_1)
+Picks bsh_collect(float3 x_8, float3 r_7, float4 rl_7, uint seed_1)
 {
     Picks picks_1 = (Picks)0;
     uint h_2 = (uint)0;
+    BshCursor cur = (BshCursor)0;
     uint i_3 = (uint)0;
 
     picks_1.n = 0u;
     h_2 = seed_1;
-    const uint _e10 = bsh_first(BSH);
-    const uint _e11 = bsh_next_leaf_lobe(BSH, _e10, x_6, r_5, rl_5);
-    i_3 = _e11;
+    const BshCursor _e8 = bsh_cursor(x_8, r_7, rl_7);
+    cur = _e8;
+    const uint _e10 = bsh_cursor_next(cur, x_8, r_7, rl_7);
+    i_3 = _e10;
     uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
     bool loop_init_1 = true;
     while(true) {
         if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
         loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e23 = i_3;
-            uint _e26 = asuint(bsh_nodes.Load(20+_e23*32));
-            const uint _e27 = bsh_next_leaf_lobe(BSH, _e26, x_6, r_5, rl_5);
-            i_3 = _e27;
+            const uint _e20 = bsh_cursor_next(cur, x_8, r_7, rl_7);
+            i_3 = _e20;
         }
         loop_init_1 = false;
-        uint _e13 = i_3;
-        if ((_e13 != BSH_NONE)) {
+        uint _e12 = i_3;
+        if ((_e12 != BSH_NONE)) {
         } else {
             break;
         }
         {
-            uint _e17 = i_3;
-            uint _e20 = asuint(bsh_nodes.Load(24+_e17*32));
-            reservoir_offer(picks_1, h_2, _e20);
+            uint _e16 = i_3;
+            uint _e19 = asuint(bsh_nodes.Load(24+_e16*32));
+            reservoir_offer(picks_1, h_2, _e19);
         }
     }
-    Picks _e28 = picks_1;
-    const Picks picks_2 = _e28;
+    Picks _e21 = picks_1;
+    const Picks picks_2 = _e21;
     return picks_2;
 }
 
-Connection connect_record(GpuLight l_8, float3 x_7, float3 n_13, float3 ng_1, float r2_2, float rt2_4, float w_res, float u1_2, float u2_2, float eps, bool trace_1)
+Connection connect_record(GpuLight l_8, float3 x_9, float3 n_13, float3 ng_1, float r2_2, float rt2_4, float w_res, float u1_2, float u2_2, float eps, bool trace_1)
 {
-    Connection c_5 = (Connection)0;
+    Connection c_7 = (Connection)0;
     bool local_21 = (bool)0;
     bool local_22 = (bool)0;
 
-    c_5.e = (0.0).xxx;
+    c_7.e = (0.0).xxx;
     const float3 _e16 = light_point(l_8, u1_2, u2_2);
-    c_5.y = _e16;
-    float3 _e19 = c_5.y;
-    const float _e20 = connection_cosine(x_7, _e19, n_13, ng_1, r2_2);
-    c_5.cos_x = _e20;
-    float _e22 = c_5.cos_x;
+    c_7.y = _e16;
+    float3 _e19 = c_7.y;
+    const float _e20 = connection_cosine(x_9, _e19, n_13, ng_1, r2_2);
+    c_7.cos_x = _e20;
+    float _e22 = c_7.cos_x;
     if (!((_e22 <= 0.0))) {
         if (trace_1) {
-            float3 _e33 = c_5.y;
-            const bool _e34 = occluded((x_7 + (ng_1 * eps)), _e33);
+            float3 _e33 = c_7.y;
+            const bool _e34 = occluded((x_9 + (ng_1 * eps)), _e33);
             local_22 = _e34;
         } else {
             local_22 = false;
@@ -1247,18 +1279,18 @@ Connection connect_record(GpuLight l_8, float3 x_7, float3 n_13, float3 ng_1, fl
     }
     bool _e38 = local_21;
     if (_e38) {
-        Connection _e39 = c_5;
+        Connection _e39 = c_7;
         const Connection connection = _e39;
         return connection;
     }
-    float3 _e41 = c_5.y;
-    float3 v_13 = (x_7 - _e41);
+    float3 _e41 = c_7.y;
+    float3 v_13 = (x_9 - _e41);
     float d2_11 = dot(v_13, v_13);
     const float3 _e48 = light_intensity(l_8, (v_13 / (sqrt(d2_11)).xxx));
-    float _e50 = c_5.cos_x;
+    float _e50 = c_7.cos_x;
     const float _e51 = connection_factor(_e50, d2_11, rt2_4, w_res);
-    c_5.e = (_e48 * _e51);
-    Connection _e53 = c_5;
+    c_7.e = (_e48 * _e51);
+    Connection _e53 = c_7;
     const Connection connection_1 = _e53;
     return connection_1;
 }
@@ -1276,19 +1308,19 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
     return ret;
 }
 
-Connection connect_traced(uint li, float3 x_8, float3 n_14, float3 ng_2, float s_1, float w_res_1, float u1_3, float u2_3, float eps_1, bool trace_2)
+Connection connect_traced(uint li, float3 x_10, float3 n_14, float3 ng_2, float s_1, float w_res_1, float u1_3, float u2_3, float eps_1, bool trace_2)
 {
     GpuLight _e12 = ConstructGpuLight(asfloat(lights.Load3(li*64+0)), asuint(lights.Load(li*64+12)), asfloat(lights.Load3(li*64+16)), asfloat(lights.Load(li*64+28)), asfloat(lights.Load3(li*64+32)), asfloat(lights.Load(li*64+44)), asfloat(lights.Load3(li*64+48)), asuint(lights.Load(li*64+60)));
     float _e15 = asfloat(r2_3.Load(li*4));
     float _e19 = asfloat(rt2_5.Load(li*4));
-    const Connection _e21 = connect_record(_e12, x_8, n_14, ng_2, (s_1 * _e15), (s_1 * _e19), w_res_1, u1_3, u2_3, eps_1, trace_2);
+    const Connection _e21 = connect_record(_e12, x_10, n_14, ng_2, (s_1 * _e15), (s_1 * _e19), w_res_1, u1_3, u2_3, eps_1, trace_2);
     const Connection connection_2 = _e21;
     return connection_2;
 }
 
-Connection connect(uint li_1, float3 x_9, float3 n_15, float3 ng_3, float s_2, float w_res_2, float u1_4, float u2_4, float eps_2)
+Connection connect(uint li_1, float3 x_11, float3 n_15, float3 ng_3, float s_2, float w_res_2, float u1_4, float u2_4, float eps_2)
 {
-    const Connection _e10 = connect_traced(li_1, x_9, n_15, ng_3, s_2, w_res_2, u1_4, u2_4, eps_2, true);
+    const Connection _e10 = connect_traced(li_1, x_11, n_15, ng_3, s_2, w_res_2, u1_4, u2_4, eps_2, true);
     const Connection connection_3 = _e10;
     return connection_3;
 }
@@ -1312,55 +1344,55 @@ GpuLightCone ConstructGpuLightCone(float3 arg0, float arg1, float3 arg2, float a
     return ret;
 }
 
-float light_range_scale(uint li_2, float3 x_10, float3 r_6, float4 rl_6)
+float light_range_scale(uint li_2, float3 x_12, float3 r_8, float4 rl_8)
 {
-    GpuLightCone c_10 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_2*48+0)), asfloat(light_cones.Load(li_2*48+12)), asfloat(light_cones.Load3(li_2*48+16)), asfloat(light_cones.Load(li_2*48+28)), asfloat(light_cones.Load(li_2*48+32)), asfloat(light_cones.Load(li_2*48+36)), asuint(light_cones.Load(li_2*48+40)), asuint(light_cones.Load(li_2*48+44)));
-    const float _e9 = range_scale_toward(rl_6, c_10.center_, c_10.radius, x_10, r_6);
+    GpuLightCone c_12 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_2*48+0)), asfloat(light_cones.Load(li_2*48+12)), asfloat(light_cones.Load3(li_2*48+16)), asfloat(light_cones.Load(li_2*48+28)), asfloat(light_cones.Load(li_2*48+32)), asfloat(light_cones.Load(li_2*48+36)), asuint(light_cones.Load(li_2*48+40)), asuint(light_cones.Load(li_2*48+44)));
+    const float _e9 = range_scale_toward(rl_8, c_12.center_, c_12.radius, x_12, r_8);
     return _e9;
 }
 
-float select_pdf(uint li_3, float3 x_11, float3 n_16, float3 r_7, float4 lobe_5, float4 rl_7, uint nee, bool in_range_1)
+float select_pdf(uint li_3, float3 x_13, float3 n_16, float3 r_9, float4 lobe_5, float4 rl_9, uint nee, bool in_range_1)
 {
     const float _e9 = reservoir_select_pdf(nee, in_range_1, K);
     return _e9;
 }
 
-float light_pdf_selected(uint li_4, float3 x_12, float3 r_8, float4 rl_8, float3 y_1, float sel)
+float light_pdf_selected(uint li_4, float3 x_14, float3 r_10, float4 rl_10, float3 y_1, float sel)
 {
     GpuLight l_9 = ConstructGpuLight(asfloat(lights.Load3(li_4*64+0)), asuint(lights.Load(li_4*64+12)), asfloat(lights.Load3(li_4*64+16)), asfloat(lights.Load(li_4*64+28)), asfloat(lights.Load3(li_4*64+32)), asfloat(lights.Load(li_4*64+44)), asfloat(lights.Load3(li_4*64+48)), asuint(lights.Load(li_4*64+60)));
-    float3 v_14 = (x_12 - y_1);
+    float3 v_14 = (x_14 - y_1);
     float d2_12 = dot(v_14, v_14);
     const float3 _e11 = light_normal(l_9);
     float cos_y_1 = ((d2_12 > 0.0) ? dot(_e11, (v_14 / (sqrt(d2_12)).xxx)) : 0.0);
-    const float _e20 = light_range_scale(li_4, x_12, r_8, rl_8);
+    const float _e20 = light_range_scale(li_4, x_14, r_10, rl_10);
     float _e23 = asfloat(rt2_5.Load(li_4*4));
     const float _e25 = light_area(l_9);
     const float _e26 = light_strategy_pdf(sel, (_e20 * _e23), d2_12, _e25, cos_y_1);
     return _e26;
 }
 
-float light_pdf(uint li_5, float3 x_13, float3 n_17, float3 r_9, float4 lobe_6, float4 rl_9, float3 y_2, uint nee_1, bool in_range_2)
+float light_pdf(uint li_5, float3 x_15, float3 n_17, float3 r_11, float4 lobe_6, float4 rl_11, float3 y_2, uint nee_1, bool in_range_2)
 {
-    const float _e9 = select_pdf(li_5, x_13, n_17, r_9, lobe_6, rl_9, nee_1, in_range_2);
-    const float _e10 = light_pdf_selected(li_5, x_13, r_9, rl_9, y_2, _e9);
+    const float _e9 = select_pdf(li_5, x_15, n_17, r_11, lobe_6, rl_11, nee_1, in_range_2);
+    const float _e10 = light_pdf_selected(li_5, x_15, r_11, rl_11, y_2, _e9);
     return _e10;
 }
 
-float3 shade_pick(uint li_6, float3 x_14, float3 n_18, float3 ng_4, GpuMaterial m, float3 wo_1, float3 r_10, float4 lobe_7, float4 rl_10, float w_5, uint nee_2, float u1_5, float u2_5)
+float3 shade_pick(uint li_6, float3 x_16, float3 n_18, float3 ng_4, GpuMaterial m, float3 wo_1, float3 r_12, float4 lobe_7, float4 rl_12, float w_5, uint nee_2, float u1_5, float u2_5)
 {
     float mis = 1.0;
 
-    const float _e13 = light_range_scale(li_6, x_14, r_10, rl_10);
+    const float _e13 = light_range_scale(li_6, x_16, r_12, rl_12);
     float _e16 = params.eps;
-    const Connection _e17 = connect(li_6, x_14, n_18, ng_4, _e13, w_5, u1_5, u2_5, _e16);
+    const Connection _e17 = connect(li_6, x_16, n_18, ng_4, _e13, w_5, u1_5, u2_5, _e16);
     if ((_e17.cos_x <= 0.0)) {
         return (0.0).xxx;
     }
-    float3 l_10 = normalize((_e17.y - x_14));
+    float3 l_10 = normalize((_e17.y - x_16));
     GpuLight _e30 = ConstructGpuLight(asfloat(lights.Load3(li_6*64+0)), asuint(lights.Load(li_6*64+12)), asfloat(lights.Load3(li_6*64+16)), asfloat(lights.Load(li_6*64+28)), asfloat(lights.Load3(li_6*64+32)), asfloat(lights.Load(li_6*64+44)), asfloat(lights.Load3(li_6*64+48)), asuint(lights.Load(li_6*64+60)));
     const float _e31 = light_area(_e30);
     if ((_e31 > 0.0)) {
-        const float _e36 = light_pdf(li_6, x_14, n_18, r_10, lobe_7, rl_10, _e17.y, nee_2, true);
+        const float _e36 = light_pdf(li_6, x_16, n_18, r_12, lobe_7, rl_12, _e17.y, nee_2, true);
         const float _e38 = specular_probability(lobe_7);
         const float _e39 = bsdf_pdf(n_18, wo_1, l_10, m.alpha, _e38);
         const float _e40 = mis_weight(_e36, _e39);
@@ -1414,7 +1446,7 @@ void main(uint3 gid : SV_DispatchThreadID)
         candidates.Store(i_4*4, asuint(0u));
         return;
     }
-    float3 x_15 = vtx.position;
+    float3 x_17 = vtx.position;
     float3 n_21 = vtx.normal;
     float3 ng_5 = vtx.gnormal;
     GpuMaterial m_2 = ConstructGpuMaterial(asfloat(materials.Load3(vtx.material*48+0)), asfloat(materials.Load(vtx.material*48+12)), asfloat(materials.Load3(vtx.material*48+16)), asfloat(materials.Load(vtx.material*48+28)), asfloat(materials.Load3(vtx.material*48+32)), asfloat(materials.Load(vtx.material*48+44)));
@@ -1427,7 +1459,7 @@ void main(uint3 gid : SV_DispatchThreadID)
     const uint _e38 = point_stream(_e34, i_4, _e37);
     const uint _e39 = pick_stream(_e38);
     h = _e39;
-    const Picks _e44 = bsh_collect(x_15, _e23, _e31, _e38);
+    const Picks _e44 = bsh_collect(x_17, _e23, _e31, _e38);
     candidates.Store(i_4*4, asuint(_e44.n));
     const float _e50 = reservoir_weight(_e44.n, K);
     uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
@@ -1458,7 +1490,7 @@ void main(uint3 gid : SV_DispatchThreadID)
             uint _e66 = s;
             uint _e69 = h;
             const float _e70 = xi_from_bits(_e69);
-            const float3 _e71 = shade_pick(_e44.light[min(uint(_e66), 7u)], x_15, n_21, ng_5, m_2, wo_2, _e23, _e30, _e31, _e50, _e44.n, _e61, _e70);
+            const float3 _e71 = shade_pick(_e44.light[min(uint(_e66), 7u)], x_17, n_21, ng_5, m_2, wo_2, _e23, _e30, _e31, _e50, _e44.n, _e61, _e70);
             sum = (_e64 + _e71);
         }
     }

@@ -75,19 +75,26 @@ struct Picks {
 };
 typedef uint BshNodes;
 typedef BshNode type_10[1];
+struct BshCursor {
+    uint i;
+    uint end;
+    uint next;
+};
 struct Connection {
     metal::float3 e;
     metal::packed_float3 y;
     float cos_x;
 };
-typedef GpuLight type_13[1];
-typedef metal::float4 type_14[1];
+typedef GpuLight type_14[1];
+typedef metal::float4 type_15[1];
 constant uint LIGHT_POINT = 0u;
 constant uint LIGHT_SPOT = 1u;
 constant uint LIGHT_IES = 2u;
 constant uint LIGHT_TRIANGLE = 3u;
 constant uint LIGHT_VPL = 4u;
 constant uint NO_LIGHT = 4294967295u;
+constant uint GRID_HEADER = 32u;
+constant uint GRID_LEVELS_MAX = 8u;
 constant uint COUNT_TILES = 0u;
 constant uint COUNT_GROUP_TESTS = 1u;
 constant uint COUNT_CLUSTER_TESTS = 2u;
@@ -339,8 +346,8 @@ float atan_portable(
     float _e21 = base;
     float _e33 = t;
     float _e35 = t;
-    float r_6 = _e21 + (((((((((0.080537446 * z) - 0.13877685) * z) + 0.19977711) * z) - 0.3333295) * z) * _e33) + _e35);
-    return (x_4 < 0.0) ? -(r_6) : r_6;
+    float r_8 = _e21 + (((((((((0.080537446 * z) - 0.13877685) * z) + 0.19977711) * z) - 0.3333295) * z) * _e33) + _e35);
+    return (x_4 < 0.0) ? -(r_8) : r_8;
 }
 
 float atan2_portable(
@@ -531,8 +538,8 @@ float ies_candela_dir(
     float gamma_1 = ((_e9) * 57.295779513082322865);
     bool on_axis = (metal::abs(wr) + metal::abs(ws)) <= 0.0;
     float _e16 = atan2_portable(ws, wr);
-    float c_5 = on_axis ? 0.0 : ((_e16) * 57.295779513082322865);
-    float _e20 = ies_candela(tab_3, base_2, gamma_1, c_5, slc_table, _buffer_sizes);
+    float c_7 = on_axis ? 0.0 : ((_e16) * 57.295779513082322865);
+    float _e20 = ies_candela(tab_3, base_2, gamma_1, c_7, slc_table, _buffer_sizes);
     return _e20;
 }
 
@@ -667,8 +674,8 @@ float cone_cos_of(
     if (_e21) {
         return 1.0;
     }
-    metal::float3 c_6 = metal::cross(v, d);
-    return metal::min(((vd * metal::sqrt(h2_)) + (metal::sqrt(metal::dot(c_6, c_6)) * a_4)) / d2_4, 1.0);
+    metal::float3 c_8 = metal::cross(v, d);
+    return metal::min(((vd * metal::sqrt(h2_)) + (metal::sqrt(metal::dot(c_8, c_8)) * a_4)) / d2_4, 1.0);
 }
 
 float cone_cos_toward(
@@ -1070,6 +1077,39 @@ uint bsh_next_leaf_lobe(
     return BSH_NONE;
 }
 
+BshCursor bsh_cursor(
+    metal::float3 x_11,
+    metal::float3 r_5,
+    metal::float4 rl_5,
+    device type_10 const& bsh_nodes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    BshCursor c_4 = {};
+    c_4.i = 0u;
+    c_4.end = 0u;
+    uint _e10 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
+    c_4.next = _e10;
+    BshCursor _e11 = c_4;
+    return _e11;
+}
+
+uint bsh_cursor_next(
+    thread BshCursor& c_5,
+    metal::float3 x_12,
+    metal::float3 r_6,
+    metal::float4 rl_6,
+    device type_10 const& bsh_nodes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e6 = c_5.next;
+    uint _e7 = bsh_next_leaf_lobe(BSH, _e6, x_12, r_6, rl_6, bsh_nodes, _buffer_sizes);
+    if (_e7 != BSH_NONE) {
+        uint _e14 = bsh_nodes[_e7].next;
+        c_5.next = _e14;
+    }
+    return _e7;
+}
+
 void reservoir_offer(
     thread Picks& picks,
     thread uint& h_1,
@@ -1102,51 +1142,51 @@ void reservoir_offer(
 }
 
 Picks bsh_collect(
-    metal::float3 x_11,
-    metal::float3 r_5,
-    metal::float4 rl_5,
+    metal::float3 x_13,
+    metal::float3 r_7,
+    metal::float4 rl_7,
     uint seed_1,
     device type_10 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Picks picks_1 = {};
     uint h_2 = {};
+    BshCursor cur = {};
     uint i_4 = {};
     picks_1.n = 0u;
     h_2 = seed_1;
-    uint _e10 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
-    uint _e11 = bsh_next_leaf_lobe(BSH, _e10, x_11, r_5, rl_5, bsh_nodes, _buffer_sizes);
-    i_4 = _e11;
+    BshCursor _e8 = bsh_cursor(x_13, r_7, rl_7, bsh_nodes, _buffer_sizes);
+    cur = _e8;
+    uint _e10 = bsh_cursor_next(cur, x_13, r_7, rl_7, bsh_nodes, _buffer_sizes);
+    i_4 = _e10;
     uint2 loop_bound_4 = uint2(4294967295u);
     bool loop_init_1 = true;
     while(true) {
         if (metal::all(loop_bound_4 == uint2(0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e23 = i_4;
-            uint _e26 = bsh_nodes[_e23].next;
-            uint _e27 = bsh_next_leaf_lobe(BSH, _e26, x_11, r_5, rl_5, bsh_nodes, _buffer_sizes);
-            i_4 = _e27;
+            uint _e20 = bsh_cursor_next(cur, x_13, r_7, rl_7, bsh_nodes, _buffer_sizes);
+            i_4 = _e20;
         }
         loop_init_1 = false;
-        uint _e13 = i_4;
-        if (_e13 != BSH_NONE) {
+        uint _e12 = i_4;
+        if (_e12 != BSH_NONE) {
         } else {
             break;
         }
         {
-            uint _e17 = i_4;
-            uint _e20 = bsh_nodes[_e17].light;
-            reservoir_offer(picks_1, h_2, _e20);
+            uint _e16 = i_4;
+            uint _e19 = bsh_nodes[_e16].light;
+            reservoir_offer(picks_1, h_2, _e19);
         }
     }
-    Picks _e28 = picks_1;
-    return _e28;
+    Picks _e21 = picks_1;
+    return _e21;
 }
 
 Connection connect_record(
     GpuLight l_2,
-    metal::float3 x_12,
+    metal::float3 x_14,
     metal::float3 n_6,
     metal::float3 ng_1,
     float r2_2,
@@ -1161,20 +1201,20 @@ Connection connect_record(
     device type_7 const& geo_tris,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Connection c_4 = {};
+    Connection c_6 = {};
     bool local_10 = {};
     bool local_11 = {};
-    c_4.e = metal::float3(0.0);
+    c_6.e = metal::float3(0.0);
     metal::float3 _e16 = light_point(l_2, u1_1, u2_1);
-    c_4.y = _e16;
-    metal::float3 _e19 = c_4.y;
-    float _e20 = connection_cosine(x_12, _e19, n_6, ng_1, r2_2);
-    c_4.cos_x = _e20;
-    float _e22 = c_4.cos_x;
+    c_6.y = _e16;
+    metal::float3 _e19 = c_6.y;
+    float _e20 = connection_cosine(x_14, _e19, n_6, ng_1, r2_2);
+    c_6.cos_x = _e20;
+    float _e22 = c_6.cos_x;
     if (!((_e22 <= 0.0))) {
         if (trace_1) {
-            metal::float3 _e33 = c_4.y;
-            bool _e34 = occluded(x_12 + (ng_1 * eps), _e33, geo_nodes, geo_tris, _buffer_sizes);
+            metal::float3 _e33 = c_6.y;
+            bool _e34 = occluded(x_14 + (ng_1 * eps), _e33, geo_nodes, geo_tris, _buffer_sizes);
             local_11 = _e34;
         } else {
             local_11 = false;
@@ -1186,23 +1226,23 @@ Connection connect_record(
     }
     bool _e38 = local_10;
     if (_e38) {
-        Connection _e39 = c_4;
+        Connection _e39 = c_6;
         return _e39;
     }
-    metal::float3 _e41 = c_4.y;
-    metal::float3 v_7 = x_12 - _e41;
+    metal::float3 _e41 = c_6.y;
+    metal::float3 v_7 = x_14 - _e41;
     float d2_8 = metal::dot(v_7, v_7);
     metal::float3 _e48 = light_intensity(l_2, v_7 / metal::float3(metal::sqrt(d2_8)), slc_table, _buffer_sizes);
-    float _e50 = c_4.cos_x;
+    float _e50 = c_6.cos_x;
     float _e51 = connection_factor(_e50, d2_8, rt2_2, w_res);
-    c_4.e = _e48 * _e51;
-    Connection _e53 = c_4;
+    c_6.e = _e48 * _e51;
+    Connection _e53 = c_6;
     return _e53;
 }
 
 Connection connect_traced(
     uint li,
-    metal::float3 x_13,
+    metal::float3 x_15,
     metal::float3 n_7,
     metal::float3 ng_2,
     float s_1,
@@ -1214,7 +1254,7 @@ Connection connect_traced(
     device type_4 const& slc_table,
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
-    device type_13 const& lights,
+    device type_14 const& lights,
     device type_4 const& r2_3,
     device type_4 const& rt2_3,
     constant _mslBufferSizes& _buffer_sizes
@@ -1222,13 +1262,13 @@ Connection connect_traced(
     GpuLight _e12 = lights[li];
     float _e15 = r2_3[li];
     float _e19 = rt2_3[li];
-    Connection _e21 = connect_record(_e12, x_13, n_7, ng_2, s_1 * _e15, s_1 * _e19, w_res_1, u1_2, u2_2, eps_1, trace_2, slc_table, geo_nodes, geo_tris, _buffer_sizes);
+    Connection _e21 = connect_record(_e12, x_15, n_7, ng_2, s_1 * _e15, s_1 * _e19, w_res_1, u1_2, u2_2, eps_1, trace_2, slc_table, geo_nodes, geo_tris, _buffer_sizes);
     return _e21;
 }
 
 Connection connect(
     uint li_1,
-    metal::float3 x_14,
+    metal::float3 x_16,
     metal::float3 n_8,
     metal::float3 ng_3,
     float s_2,
@@ -1239,12 +1279,12 @@ Connection connect(
     device type_4 const& slc_table,
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
-    device type_13 const& lights,
+    device type_14 const& lights,
     device type_4 const& r2_3,
     device type_4 const& rt2_3,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Connection _e10 = connect_traced(li_1, x_14, n_8, ng_3, s_2, w_res_2, u1_3, u2_3, eps_2, true, slc_table, geo_nodes, geo_tris, lights, r2_3, rt2_3, _buffer_sizes);
+    Connection _e10 = connect_traced(li_1, x_16, n_8, ng_3, s_2, w_res_2, u1_3, u2_3, eps_2, true, slc_table, geo_nodes, geo_tris, lights, r2_3, rt2_3, _buffer_sizes);
     return _e10;
 }
 
@@ -1256,13 +1296,13 @@ kernel void main_(
 , device type_6 const& geo_nodes [[user(fake0)]]
 , device type_7 const& geo_tris [[user(fake0)]]
 , device type_10 const& bsh_nodes [[user(fake0)]]
-, device type_13 const& lights [[user(fake0)]]
+, device type_14 const& lights [[user(fake0)]]
 , device type_4 const& r2_3 [[user(fake0)]]
 , device type_4 const& rt2_3 [[user(fake0)]]
 , constant ShadeParams& params [[user(fake0)]]
-, device type_14 const& points [[user(fake0)]]
-, device type_14 const& normals [[user(fake0)]]
-, device type_14& irradiance [[user(fake0)]]
+, device type_15 const& points [[user(fake0)]]
+, device type_15 const& normals [[user(fake0)]]
+, device type_15& irradiance [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
     uint h = {};
@@ -1278,13 +1318,13 @@ kernel void main_(
         irradiance[i_5] = metal::float4(0.0);
         return;
     }
-    metal::float3 x_15 = p_3.xyz;
+    metal::float3 x_17 = p_3.xyz;
     metal::float4 _e19 = normals[i_5];
     metal::float3 n_10 = _e19.xyz;
     uint _e23 = params.seed;
     uint _e26 = params.frame;
     uint _e27 = point_stream(_e23, i_5, _e26);
-    Picks _e33 = bsh_collect(x_15, x_15, metal::float4(1.0, 0.0, 1.0, 1.0), _e27, bsh_nodes, _buffer_sizes);
+    Picks _e33 = bsh_collect(x_17, x_17, metal::float4(1.0, 0.0, 1.0, 1.0), _e27, bsh_nodes, _buffer_sizes);
     float _e36 = reservoir_weight(_e33.n, K);
     uint _e37 = pick_stream(_e27);
     h = _e37;
@@ -1317,7 +1357,7 @@ kernel void main_(
             uint _e60 = h;
             float _e61 = xi_from_bits(_e60);
             float _e64 = params.eps;
-            Connection _e65 = connect(_e33.light.inner[_e57], x_15, n_10, n_10, 1.0, _e36, _e52, _e61, _e64, slc_table, geo_nodes, geo_tris, lights, r2_3, rt2_3, _buffer_sizes);
+            Connection _e65 = connect(_e33.light.inner[_e57], x_17, n_10, n_10, 1.0, _e36, _e52, _e61, _e64, slc_table, geo_nodes, geo_tris, lights, r2_3, rt2_3, _buffer_sizes);
             e = _e55 + _e65.e;
         }
     }

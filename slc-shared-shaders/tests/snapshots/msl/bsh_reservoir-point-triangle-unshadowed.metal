@@ -48,19 +48,26 @@ struct Picks {
 };
 typedef uint BshNodes;
 typedef BshNode type_7[1];
+struct BshCursor {
+    uint i;
+    uint end;
+    uint next;
+};
 struct Connection {
     metal::float3 e;
     metal::packed_float3 y;
     float cos_x;
 };
-typedef GpuLight type_10[1];
-typedef metal::float4 type_11[1];
+typedef GpuLight type_11[1];
+typedef metal::float4 type_12[1];
 constant uint LIGHT_POINT = 0u;
 constant uint LIGHT_SPOT = 1u;
 constant uint LIGHT_IES = 2u;
 constant uint LIGHT_TRIANGLE = 3u;
 constant uint LIGHT_VPL = 4u;
 constant uint NO_LIGHT = 4294967295u;
+constant uint GRID_HEADER = 32u;
+constant uint GRID_LEVELS_MAX = 8u;
 constant uint COUNT_TILES = 0u;
 constant uint COUNT_GROUP_TESTS = 1u;
 constant uint COUNT_CLUSTER_TESTS = 2u;
@@ -395,8 +402,8 @@ float cone_cos_of(
     if (_e21) {
         return 1.0;
     }
-    metal::float3 c_4 = metal::cross(v, d);
-    return metal::min(((vd * metal::sqrt(h2_)) + (metal::sqrt(metal::dot(c_4, c_4)) * a_4)) / d2_4, 1.0);
+    metal::float3 c_6 = metal::cross(v, d);
+    return metal::min(((vd * metal::sqrt(h2_)) + (metal::sqrt(metal::dot(c_6, c_6)) * a_4)) / d2_4, 1.0);
 }
 
 float cone_cos_toward(
@@ -622,6 +629,39 @@ uint bsh_next_leaf_lobe(
     return BSH_NONE;
 }
 
+BshCursor bsh_cursor(
+    metal::float3 x_5,
+    metal::float3 r_5,
+    metal::float4 rl_5,
+    device type_7 const& bsh_nodes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    BshCursor c_3 = {};
+    c_3.i = 0u;
+    c_3.end = 0u;
+    uint _e10 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
+    c_3.next = _e10;
+    BshCursor _e11 = c_3;
+    return _e11;
+}
+
+uint bsh_cursor_next(
+    thread BshCursor& c_4,
+    metal::float3 x_6,
+    metal::float3 r_6,
+    metal::float4 rl_6,
+    device type_7 const& bsh_nodes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e6 = c_4.next;
+    uint _e7 = bsh_next_leaf_lobe(BSH, _e6, x_6, r_6, rl_6, bsh_nodes, _buffer_sizes);
+    if (_e7 != BSH_NONE) {
+        uint _e14 = bsh_nodes[_e7].next;
+        c_4.next = _e14;
+    }
+    return _e7;
+}
+
 void reservoir_offer(
     thread Picks& picks,
     thread uint& h_1,
@@ -654,51 +694,51 @@ void reservoir_offer(
 }
 
 Picks bsh_collect(
-    metal::float3 x_5,
-    metal::float3 r_5,
-    metal::float4 rl_5,
+    metal::float3 x_7,
+    metal::float3 r_7,
+    metal::float4 rl_7,
     uint seed_1,
     device type_7 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Picks picks_1 = {};
     uint h_2 = {};
+    BshCursor cur = {};
     uint i_2 = {};
     picks_1.n = 0u;
     h_2 = seed_1;
-    uint _e10 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
-    uint _e11 = bsh_next_leaf_lobe(BSH, _e10, x_5, r_5, rl_5, bsh_nodes, _buffer_sizes);
-    i_2 = _e11;
+    BshCursor _e8 = bsh_cursor(x_7, r_7, rl_7, bsh_nodes, _buffer_sizes);
+    cur = _e8;
+    uint _e10 = bsh_cursor_next(cur, x_7, r_7, rl_7, bsh_nodes, _buffer_sizes);
+    i_2 = _e10;
     uint2 loop_bound_1 = uint2(4294967295u);
     bool loop_init = true;
     while(true) {
         if (metal::all(loop_bound_1 == uint2(0u))) { break; }
         loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
         if (!loop_init) {
-            uint _e23 = i_2;
-            uint _e26 = bsh_nodes[_e23].next;
-            uint _e27 = bsh_next_leaf_lobe(BSH, _e26, x_5, r_5, rl_5, bsh_nodes, _buffer_sizes);
-            i_2 = _e27;
+            uint _e20 = bsh_cursor_next(cur, x_7, r_7, rl_7, bsh_nodes, _buffer_sizes);
+            i_2 = _e20;
         }
         loop_init = false;
-        uint _e13 = i_2;
-        if (_e13 != BSH_NONE) {
+        uint _e12 = i_2;
+        if (_e12 != BSH_NONE) {
         } else {
             break;
         }
         {
-            uint _e17 = i_2;
-            uint _e20 = bsh_nodes[_e17].light;
-            reservoir_offer(picks_1, h_2, _e20);
+            uint _e16 = i_2;
+            uint _e19 = bsh_nodes[_e16].light;
+            reservoir_offer(picks_1, h_2, _e19);
         }
     }
-    Picks _e28 = picks_1;
-    return _e28;
+    Picks _e21 = picks_1;
+    return _e21;
 }
 
 Connection connect_record(
     GpuLight l_2,
-    metal::float3 x_6,
+    metal::float3 x_8,
     metal::float3 n_6,
     metal::float3 ng_1,
     float r2_2,
@@ -709,20 +749,20 @@ Connection connect_record(
     float eps,
     bool trace
 ) {
-    Connection c_3 = {};
+    Connection c_5 = {};
     bool local_7 = {};
     bool local_8 = {};
-    c_3.e = metal::float3(0.0);
+    c_5.e = metal::float3(0.0);
     metal::float3 _e16 = light_point(l_2, u1_2, u2_2);
-    c_3.y = _e16;
-    metal::float3 _e19 = c_3.y;
-    float _e20 = connection_cosine(x_6, _e19, n_6, ng_1, r2_2);
-    c_3.cos_x = _e20;
-    float _e22 = c_3.cos_x;
+    c_5.y = _e16;
+    metal::float3 _e19 = c_5.y;
+    float _e20 = connection_cosine(x_8, _e19, n_6, ng_1, r2_2);
+    c_5.cos_x = _e20;
+    float _e22 = c_5.cos_x;
     if (!((_e22 <= 0.0))) {
         if (trace) {
-            metal::float3 _e33 = c_3.y;
-            bool _e34 = occluded(x_6 + (ng_1 * eps), _e33);
+            metal::float3 _e33 = c_5.y;
+            bool _e34 = occluded(x_8 + (ng_1 * eps), _e33);
             local_8 = _e34;
         } else {
             local_8 = false;
@@ -734,23 +774,23 @@ Connection connect_record(
     }
     bool _e38 = local_7;
     if (_e38) {
-        Connection _e39 = c_3;
+        Connection _e39 = c_5;
         return _e39;
     }
-    metal::float3 _e41 = c_3.y;
-    metal::float3 v_6 = x_6 - _e41;
+    metal::float3 _e41 = c_5.y;
+    metal::float3 v_6 = x_8 - _e41;
     float d2_8 = metal::dot(v_6, v_6);
     metal::float3 _e48 = light_intensity(l_2, v_6 / metal::float3(metal::sqrt(d2_8)));
-    float _e50 = c_3.cos_x;
+    float _e50 = c_5.cos_x;
     float _e51 = connection_factor(_e50, d2_8, rt2_2, w_res);
-    c_3.e = _e48 * _e51;
-    Connection _e53 = c_3;
+    c_5.e = _e48 * _e51;
+    Connection _e53 = c_5;
     return _e53;
 }
 
 Connection connect_traced(
     uint li,
-    metal::float3 x_7,
+    metal::float3 x_9,
     metal::float3 n_7,
     metal::float3 ng_2,
     float s_1,
@@ -759,7 +799,7 @@ Connection connect_traced(
     float u2_3,
     float eps_1,
     bool trace_1,
-    device type_10 const& lights,
+    device type_11 const& lights,
     device type_4 const& r2_3,
     device type_4 const& rt2_3,
     constant _mslBufferSizes& _buffer_sizes
@@ -767,13 +807,13 @@ Connection connect_traced(
     GpuLight _e12 = lights[li];
     float _e15 = r2_3[li];
     float _e19 = rt2_3[li];
-    Connection _e21 = connect_record(_e12, x_7, n_7, ng_2, s_1 * _e15, s_1 * _e19, w_res_1, u1_3, u2_3, eps_1, trace_1);
+    Connection _e21 = connect_record(_e12, x_9, n_7, ng_2, s_1 * _e15, s_1 * _e19, w_res_1, u1_3, u2_3, eps_1, trace_1);
     return _e21;
 }
 
 Connection connect(
     uint li_1,
-    metal::float3 x_8,
+    metal::float3 x_10,
     metal::float3 n_8,
     metal::float3 ng_3,
     float s_2,
@@ -781,12 +821,12 @@ Connection connect(
     float u1_4,
     float u2_4,
     float eps_2,
-    device type_10 const& lights,
+    device type_11 const& lights,
     device type_4 const& r2_3,
     device type_4 const& rt2_3,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Connection _e10 = connect_traced(li_1, x_8, n_8, ng_3, s_2, w_res_2, u1_4, u2_4, eps_2, true, lights, r2_3, rt2_3, _buffer_sizes);
+    Connection _e10 = connect_traced(li_1, x_10, n_8, ng_3, s_2, w_res_2, u1_4, u2_4, eps_2, true, lights, r2_3, rt2_3, _buffer_sizes);
     return _e10;
 }
 
@@ -795,13 +835,13 @@ struct main_Input {
 kernel void main_(
   metal::uint3 gid [[thread_position_in_grid]]
 , device type_7 const& bsh_nodes [[user(fake0)]]
-, device type_10 const& lights [[user(fake0)]]
+, device type_11 const& lights [[user(fake0)]]
 , device type_4 const& r2_3 [[user(fake0)]]
 , device type_4 const& rt2_3 [[user(fake0)]]
 , constant ShadeParams& params [[user(fake0)]]
-, device type_11 const& points [[user(fake0)]]
-, device type_11 const& normals [[user(fake0)]]
-, device type_11& irradiance [[user(fake0)]]
+, device type_12 const& points [[user(fake0)]]
+, device type_12 const& normals [[user(fake0)]]
+, device type_12& irradiance [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
     uint h = {};
@@ -817,13 +857,13 @@ kernel void main_(
         irradiance[i_3] = metal::float4(0.0);
         return;
     }
-    metal::float3 x_9 = p_2.xyz;
+    metal::float3 x_11 = p_2.xyz;
     metal::float4 _e19 = normals[i_3];
     metal::float3 n_10 = _e19.xyz;
     uint _e23 = params.seed;
     uint _e26 = params.frame;
     uint _e27 = point_stream(_e23, i_3, _e26);
-    Picks _e33 = bsh_collect(x_9, x_9, metal::float4(1.0, 0.0, 1.0, 1.0), _e27, bsh_nodes, _buffer_sizes);
+    Picks _e33 = bsh_collect(x_11, x_11, metal::float4(1.0, 0.0, 1.0, 1.0), _e27, bsh_nodes, _buffer_sizes);
     float _e36 = reservoir_weight(_e33.n, K);
     uint _e37 = pick_stream(_e27);
     h = _e37;
@@ -856,7 +896,7 @@ kernel void main_(
             uint _e60 = h;
             float _e61 = xi_from_bits(_e60);
             float _e64 = params.eps;
-            Connection _e65 = connect(_e33.light.inner[_e57], x_9, n_10, n_10, 1.0, _e36, _e52, _e61, _e64, lights, r2_3, rt2_3, _buffer_sizes);
+            Connection _e65 = connect(_e33.light.inner[_e57], x_11, n_10, n_10, 1.0, _e36, _e52, _e61, _e64, lights, r2_3, rt2_3, _buffer_sizes);
             e = _e55 + _e65.e;
         }
     }

@@ -105,24 +105,31 @@ struct Picks {
 };
 typedef uint BshNodes;
 typedef BshNode type_10[1];
+struct BshCursor {
+    uint i;
+    uint end;
+    uint next;
+};
 struct Connection {
     metal::float3 e;
     metal::packed_float3 y;
     float cos_x;
 };
-typedef GpuLight type_13[1];
-typedef GpuLightCone type_14[1];
+typedef GpuLight type_14[1];
+typedef GpuLightCone type_15[1];
 typedef uint BvhNodes;
-typedef GpuPathVertex type_15[1];
-typedef GpuMaterial type_16[1];
-typedef metal::float4 type_17[1];
-typedef uint type_18[1];
+typedef GpuPathVertex type_16[1];
+typedef GpuMaterial type_17[1];
+typedef metal::float4 type_18[1];
+typedef uint type_19[1];
 constant uint LIGHT_POINT = 0u;
 constant uint LIGHT_SPOT = 1u;
 constant uint LIGHT_IES = 2u;
 constant uint LIGHT_TRIANGLE = 3u;
 constant uint LIGHT_VPL = 4u;
 constant uint NO_LIGHT = 4294967295u;
+constant uint GRID_HEADER = 32u;
+constant uint GRID_LEVELS_MAX = 8u;
 constant uint COUNT_TILES = 0u;
 constant uint COUNT_GROUP_TESTS = 1u;
 constant uint COUNT_CLUSTER_TESTS = 2u;
@@ -356,11 +363,11 @@ float area_to_solid_angle_pdf(
     float d2_5,
     float cos_light
 ) {
-    float c_6 = metal::abs(cos_light);
-    if (c_6 <= 0.0) {
+    float c_8 = metal::abs(cos_light);
+    if (c_8 <= 0.0) {
         return 0.0;
     }
-    return (pdf_area * d2_5) / c_6;
+    return (pdf_area * d2_5) / c_8;
 }
 
 float bsh_scaled_radius(
@@ -595,9 +602,9 @@ metal::float3 fresnel_schlick(
     float f90_,
     float v_h
 ) {
-    float c_7 = metal::saturate(1.0 - v_h);
-    float c2_ = c_7 * c_7;
-    return f0_ + ((metal::float3(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_7));
+    float c_9 = metal::saturate(1.0 - v_h);
+    float c2_ = c_9 * c_9;
+    return f0_ + ((metal::float3(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_9));
 }
 
 metal::float3 specular_fresnel(
@@ -660,8 +667,8 @@ metal::float3 specular_brdf(
     metal::float3 hs = v_1 + l_1;
     float inv = 1.0 / metal::sqrt(metal::dot(hs, hs));
     metal::float3 h_4 = hs * inv;
-    metal::float3 c_8 = metal::cross(n_9, h_4);
-    float _e32 = ggx_d(metal::dot(n_9, h_4), metal::dot(c_8, c_8), alpha_3);
+    metal::float3 c_10 = metal::cross(n_9, h_4);
+    float _e32 = ggx_d(metal::dot(n_9, h_4), metal::dot(c_10, c_10), alpha_3);
     metal::float3 _e34 = specular_fresnel(base_2, metallic_2, f0_d_2, f90_d_2, metal::dot(v_1, h_4));
     float _e35 = smith_visibility(n_l_1, n_v_2, alpha_3);
     return _e34 * (_e32 * _e35);
@@ -870,8 +877,8 @@ float cone_cos_of(
     if (_e21) {
         return 1.0;
     }
-    metal::float3 c_9 = metal::cross(v_5, d);
-    return metal::min(((vd * metal::sqrt(h2_)) + (metal::sqrt(metal::dot(c_9, c_9)) * a_4)) / d2_7, 1.0);
+    metal::float3 c_11 = metal::cross(v_5, d);
+    return metal::min(((vd * metal::sqrt(h2_)) + (metal::sqrt(metal::dot(c_11, c_11)) * a_4)) / d2_7, 1.0);
 }
 
 float cone_cos_toward(
@@ -1328,6 +1335,39 @@ uint bsh_next_leaf_lobe(
     return BSH_NONE;
 }
 
+BshCursor bsh_cursor(
+    metal::float3 x_6,
+    metal::float3 r_5,
+    metal::float4 rl_5,
+    device type_10 const& bsh_nodes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    BshCursor c_5 = {};
+    c_5.i = 0u;
+    c_5.end = 0u;
+    uint _e10 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
+    c_5.next = _e10;
+    BshCursor _e11 = c_5;
+    return _e11;
+}
+
+uint bsh_cursor_next(
+    thread BshCursor& c_6,
+    metal::float3 x_7,
+    metal::float3 r_6,
+    metal::float4 rl_6,
+    device type_10 const& bsh_nodes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e6 = c_6.next;
+    uint _e7 = bsh_next_leaf_lobe(BSH, _e6, x_7, r_6, rl_6, bsh_nodes, _buffer_sizes);
+    if (_e7 != BSH_NONE) {
+        uint _e14 = bsh_nodes[_e7].next;
+        c_6.next = _e14;
+    }
+    return _e7;
+}
+
 void reservoir_offer(
     thread Picks& picks,
     thread uint& h_1,
@@ -1360,51 +1400,51 @@ void reservoir_offer(
 }
 
 Picks bsh_collect(
-    metal::float3 x_6,
-    metal::float3 r_5,
-    metal::float4 rl_5,
+    metal::float3 x_8,
+    metal::float3 r_7,
+    metal::float4 rl_7,
     uint seed_1,
     device type_10 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Picks picks_1 = {};
     uint h_2 = {};
+    BshCursor cur = {};
     uint i_3 = {};
     picks_1.n = 0u;
     h_2 = seed_1;
-    uint _e10 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
-    uint _e11 = bsh_next_leaf_lobe(BSH, _e10, x_6, r_5, rl_5, bsh_nodes, _buffer_sizes);
-    i_3 = _e11;
+    BshCursor _e8 = bsh_cursor(x_8, r_7, rl_7, bsh_nodes, _buffer_sizes);
+    cur = _e8;
+    uint _e10 = bsh_cursor_next(cur, x_8, r_7, rl_7, bsh_nodes, _buffer_sizes);
+    i_3 = _e10;
     uint2 loop_bound_3 = uint2(4294967295u);
     bool loop_init_1 = true;
     while(true) {
         if (metal::all(loop_bound_3 == uint2(0u))) { break; }
         loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e23 = i_3;
-            uint _e26 = bsh_nodes[_e23].next;
-            uint _e27 = bsh_next_leaf_lobe(BSH, _e26, x_6, r_5, rl_5, bsh_nodes, _buffer_sizes);
-            i_3 = _e27;
+            uint _e20 = bsh_cursor_next(cur, x_8, r_7, rl_7, bsh_nodes, _buffer_sizes);
+            i_3 = _e20;
         }
         loop_init_1 = false;
-        uint _e13 = i_3;
-        if (_e13 != BSH_NONE) {
+        uint _e12 = i_3;
+        if (_e12 != BSH_NONE) {
         } else {
             break;
         }
         {
-            uint _e17 = i_3;
-            uint _e20 = bsh_nodes[_e17].light;
-            reservoir_offer(picks_1, h_2, _e20);
+            uint _e16 = i_3;
+            uint _e19 = bsh_nodes[_e16].light;
+            reservoir_offer(picks_1, h_2, _e19);
         }
     }
-    Picks _e28 = picks_1;
-    return _e28;
+    Picks _e21 = picks_1;
+    return _e21;
 }
 
 Connection connect_record(
     GpuLight l_8,
-    metal::float3 x_7,
+    metal::float3 x_9,
     metal::float3 n_13,
     metal::float3 ng_1,
     float r2_2,
@@ -1418,20 +1458,20 @@ Connection connect_record(
     device type_7 const& geo_tris,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Connection c_5 = {};
+    Connection c_7 = {};
     bool local_21 = {};
     bool local_22 = {};
-    c_5.e = metal::float3(0.0);
+    c_7.e = metal::float3(0.0);
     metal::float3 _e16 = light_point(l_8, u1_2, u2_2);
-    c_5.y = _e16;
-    metal::float3 _e19 = c_5.y;
-    float _e20 = connection_cosine(x_7, _e19, n_13, ng_1, r2_2);
-    c_5.cos_x = _e20;
-    float _e22 = c_5.cos_x;
+    c_7.y = _e16;
+    metal::float3 _e19 = c_7.y;
+    float _e20 = connection_cosine(x_9, _e19, n_13, ng_1, r2_2);
+    c_7.cos_x = _e20;
+    float _e22 = c_7.cos_x;
     if (!((_e22 <= 0.0))) {
         if (trace_1) {
-            metal::float3 _e33 = c_5.y;
-            bool _e34 = occluded(x_7 + (ng_1 * eps), _e33, geo_nodes, geo_tris, _buffer_sizes);
+            metal::float3 _e33 = c_7.y;
+            bool _e34 = occluded(x_9 + (ng_1 * eps), _e33, geo_nodes, geo_tris, _buffer_sizes);
             local_22 = _e34;
         } else {
             local_22 = false;
@@ -1443,23 +1483,23 @@ Connection connect_record(
     }
     bool _e38 = local_21;
     if (_e38) {
-        Connection _e39 = c_5;
+        Connection _e39 = c_7;
         return _e39;
     }
-    metal::float3 _e41 = c_5.y;
-    metal::float3 v_13 = x_7 - _e41;
+    metal::float3 _e41 = c_7.y;
+    metal::float3 v_13 = x_9 - _e41;
     float d2_11 = metal::dot(v_13, v_13);
     metal::float3 _e48 = light_intensity(l_8, v_13 / metal::float3(metal::sqrt(d2_11)));
-    float _e50 = c_5.cos_x;
+    float _e50 = c_7.cos_x;
     float _e51 = connection_factor(_e50, d2_11, rt2_4, w_res);
-    c_5.e = _e48 * _e51;
-    Connection _e53 = c_5;
+    c_7.e = _e48 * _e51;
+    Connection _e53 = c_7;
     return _e53;
 }
 
 Connection connect_traced(
     uint li,
-    metal::float3 x_8,
+    metal::float3 x_10,
     metal::float3 n_14,
     metal::float3 ng_2,
     float s_1,
@@ -1470,7 +1510,7 @@ Connection connect_traced(
     bool trace_2,
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
-    device type_13 const& lights,
+    device type_14 const& lights,
     device type_4 const& r2_3,
     device type_4 const& rt2_5,
     constant _mslBufferSizes& _buffer_sizes
@@ -1478,13 +1518,13 @@ Connection connect_traced(
     GpuLight _e12 = lights[li];
     float _e15 = r2_3[li];
     float _e19 = rt2_5[li];
-    Connection _e21 = connect_record(_e12, x_8, n_14, ng_2, s_1 * _e15, s_1 * _e19, w_res_1, u1_3, u2_3, eps_1, trace_2, geo_nodes, geo_tris, _buffer_sizes);
+    Connection _e21 = connect_record(_e12, x_10, n_14, ng_2, s_1 * _e15, s_1 * _e19, w_res_1, u1_3, u2_3, eps_1, trace_2, geo_nodes, geo_tris, _buffer_sizes);
     return _e21;
 }
 
 Connection connect(
     uint li_1,
-    metal::float3 x_9,
+    metal::float3 x_11,
     metal::float3 n_15,
     metal::float3 ng_3,
     float s_2,
@@ -1494,12 +1534,12 @@ Connection connect(
     float eps_2,
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
-    device type_13 const& lights,
+    device type_14 const& lights,
     device type_4 const& r2_3,
     device type_4 const& rt2_5,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Connection _e10 = connect_traced(li_1, x_9, n_15, ng_3, s_2, w_res_2, u1_4, u2_4, eps_2, true, geo_nodes, geo_tris, lights, r2_3, rt2_5, _buffer_sizes);
+    Connection _e10 = connect_traced(li_1, x_11, n_15, ng_3, s_2, w_res_2, u1_4, u2_4, eps_2, true, geo_nodes, geo_tris, lights, r2_3, rt2_5, _buffer_sizes);
     return _e10;
 }
 
@@ -1513,24 +1553,24 @@ float mis_weight(
 
 float light_range_scale(
     uint li_2,
-    metal::float3 x_10,
-    metal::float3 r_6,
-    metal::float4 rl_6,
-    device type_14 const& light_cones,
+    metal::float3 x_12,
+    metal::float3 r_8,
+    metal::float4 rl_8,
+    device type_15 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuLightCone c_10 = light_cones[li_2];
-    float _e9 = range_scale_toward(rl_6, c_10.center, c_10.radius, x_10, r_6);
+    GpuLightCone c_12 = light_cones[li_2];
+    float _e9 = range_scale_toward(rl_8, c_12.center, c_12.radius, x_12, r_8);
     return _e9;
 }
 
 float select_pdf(
     uint li_3,
-    metal::float3 x_11,
+    metal::float3 x_13,
     metal::float3 n_16,
-    metal::float3 r_7,
+    metal::float3 r_9,
     metal::float4 lobe_5,
-    metal::float4 rl_7,
+    metal::float4 rl_9,
     uint nee,
     bool in_range_1
 ) {
@@ -1540,22 +1580,22 @@ float select_pdf(
 
 float light_pdf_selected(
     uint li_4,
-    metal::float3 x_12,
-    metal::float3 r_8,
-    metal::float4 rl_8,
+    metal::float3 x_14,
+    metal::float3 r_10,
+    metal::float4 rl_10,
     metal::float3 y_1,
     float sel,
-    device type_13 const& lights,
+    device type_14 const& lights,
     device type_4 const& rt2_5,
-    device type_14 const& light_cones,
+    device type_15 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuLight l_9 = lights[li_4];
-    metal::float3 v_14 = x_12 - y_1;
+    metal::float3 v_14 = x_14 - y_1;
     float d2_12 = metal::dot(v_14, v_14);
     metal::float3 _e11 = light_normal(l_9);
     float cos_y_1 = (d2_12 > 0.0) ? metal::dot(_e11, v_14 / metal::float3(metal::sqrt(d2_12))) : 0.0;
-    float _e20 = light_range_scale(li_4, x_12, r_8, rl_8, light_cones, _buffer_sizes);
+    float _e20 = light_range_scale(li_4, x_14, r_10, rl_10, light_cones, _buffer_sizes);
     float _e23 = rt2_5[li_4];
     float _e25 = light_area(l_9);
     float _e26 = light_strategy_pdf(sel, _e20 * _e23, d2_12, _e25, cos_y_1);
@@ -1564,59 +1604,59 @@ float light_pdf_selected(
 
 float light_pdf(
     uint li_5,
-    metal::float3 x_13,
+    metal::float3 x_15,
     metal::float3 n_17,
-    metal::float3 r_9,
+    metal::float3 r_11,
     metal::float4 lobe_6,
-    metal::float4 rl_9,
+    metal::float4 rl_11,
     metal::float3 y_2,
     uint nee_1,
     bool in_range_2,
-    device type_13 const& lights,
+    device type_14 const& lights,
     device type_4 const& rt2_5,
-    device type_14 const& light_cones,
+    device type_15 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e9 = select_pdf(li_5, x_13, n_17, r_9, lobe_6, rl_9, nee_1, in_range_2);
-    float _e10 = light_pdf_selected(li_5, x_13, r_9, rl_9, y_2, _e9, lights, rt2_5, light_cones, _buffer_sizes);
+    float _e9 = select_pdf(li_5, x_15, n_17, r_11, lobe_6, rl_11, nee_1, in_range_2);
+    float _e10 = light_pdf_selected(li_5, x_15, r_11, rl_11, y_2, _e9, lights, rt2_5, light_cones, _buffer_sizes);
     return _e10;
 }
 
 metal::float3 shade_pick(
     uint li_6,
-    metal::float3 x_14,
+    metal::float3 x_16,
     metal::float3 n_18,
     metal::float3 ng_4,
     GpuMaterial m,
     metal::float3 wo_1,
-    metal::float3 r_10,
+    metal::float3 r_12,
     metal::float4 lobe_7,
-    metal::float4 rl_10,
+    metal::float4 rl_12,
     float w_5,
     uint nee_2,
     float u1_5,
     float u2_5,
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
-    device type_13 const& lights,
+    device type_14 const& lights,
     device type_4 const& r2_3,
     device type_4 const& rt2_5,
-    device type_14 const& light_cones,
+    device type_15 const& light_cones,
     constant ShadeParams& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     float mis = 1.0;
-    float _e13 = light_range_scale(li_6, x_14, r_10, rl_10, light_cones, _buffer_sizes);
+    float _e13 = light_range_scale(li_6, x_16, r_12, rl_12, light_cones, _buffer_sizes);
     float _e16 = params.eps;
-    Connection _e17 = connect(li_6, x_14, n_18, ng_4, _e13, w_5, u1_5, u2_5, _e16, geo_nodes, geo_tris, lights, r2_3, rt2_5, _buffer_sizes);
+    Connection _e17 = connect(li_6, x_16, n_18, ng_4, _e13, w_5, u1_5, u2_5, _e16, geo_nodes, geo_tris, lights, r2_3, rt2_5, _buffer_sizes);
     if (_e17.cos_x <= 0.0) {
         return metal::float3(0.0);
     }
-    metal::float3 l_10 = metal::normalize(_e17.y - x_14);
+    metal::float3 l_10 = metal::normalize(_e17.y - x_16);
     GpuLight _e30 = lights[li_6];
     float _e31 = light_area(_e30);
     if (_e31 > 0.0) {
-        float _e36 = light_pdf(li_6, x_14, n_18, r_10, lobe_7, rl_10, _e17.y, nee_2, true, lights, rt2_5, light_cones, _buffer_sizes);
+        float _e36 = light_pdf(li_6, x_16, n_18, r_12, lobe_7, rl_12, _e17.y, nee_2, true, lights, rt2_5, light_cones, _buffer_sizes);
         float _e38 = specular_probability(lobe_7);
         float _e39 = bsdf_pdf(n_18, wo_1, l_10, m.alpha, _e38);
         float _e40 = mis_weight(_e36, _e39);
@@ -1634,15 +1674,15 @@ kernel void main_(
 , device type_6 const& geo_nodes [[user(fake0)]]
 , device type_7 const& geo_tris [[user(fake0)]]
 , device type_10 const& bsh_nodes [[user(fake0)]]
-, device type_13 const& lights [[user(fake0)]]
+, device type_14 const& lights [[user(fake0)]]
 , device type_4 const& r2_3 [[user(fake0)]]
 , device type_4 const& rt2_5 [[user(fake0)]]
-, device type_14 const& light_cones [[user(fake0)]]
+, device type_15 const& light_cones [[user(fake0)]]
 , constant ShadeParams& params [[user(fake0)]]
-, device type_15 const& vertices [[user(fake0)]]
-, device type_16 const& materials [[user(fake0)]]
-, device type_17& radiance [[user(fake0)]]
-, device type_18& candidates [[user(fake0)]]
+, device type_16 const& vertices [[user(fake0)]]
+, device type_17 const& materials [[user(fake0)]]
+, device type_18& radiance [[user(fake0)]]
+, device type_19& candidates [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
     uint h = {};
@@ -1658,7 +1698,7 @@ kernel void main_(
         candidates[i_4] = 0u;
         return;
     }
-    metal::float3 x_15 = vtx.position;
+    metal::float3 x_17 = vtx.position;
     metal::float3 n_21 = vtx.normal;
     metal::float3 ng_5 = vtx.gnormal;
     GpuMaterial m_2 = materials[vtx.material];
@@ -1671,7 +1711,7 @@ kernel void main_(
     uint _e38 = point_stream(_e34, i_4, _e37);
     uint _e39 = pick_stream(_e38);
     h = _e39;
-    Picks _e44 = bsh_collect(x_15, _e23, _e31, _e38, bsh_nodes, _buffer_sizes);
+    Picks _e44 = bsh_collect(x_17, _e23, _e31, _e38, bsh_nodes, _buffer_sizes);
     candidates[i_4] = _e44.n;
     float _e50 = reservoir_weight(_e44.n, K);
     uint2 loop_bound_4 = uint2(4294967295u);
@@ -1702,7 +1742,7 @@ kernel void main_(
             uint _e66 = s;
             uint _e69 = h;
             float _e70 = xi_from_bits(_e69);
-            metal::float3 _e71 = shade_pick(_e44.light.inner[_e66], x_15, n_21, ng_5, m_2, wo_2, _e23, _e30, _e31, _e50, _e44.n, _e61, _e70, geo_nodes, geo_tris, lights, r2_3, rt2_5, light_cones, params, _buffer_sizes);
+            metal::float3 _e71 = shade_pick(_e44.light.inner[_e66], x_17, n_21, ng_5, m_2, wo_2, _e23, _e30, _e31, _e50, _e44.n, _e61, _e70, geo_nodes, geo_tris, lights, r2_3, rt2_5, light_cones, params, _buffer_sizes);
             sum = _e64 + _e71;
         }
     }

@@ -1,0 +1,1774 @@
+#version 430 core
+#extension GL_ARB_compute_shader : require
+#extension GL_ARB_shader_storage_buffer_object : require
+layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
+
+struct GpuLight {
+    vec3 p0_;
+    uint kind;
+    vec3 p1_;
+    float a;
+    vec3 p2_;
+    float b;
+    vec3 intensity;
+    uint ies_base;
+};
+struct GpuLightCone {
+    vec3 center;
+    float radius;
+    vec3 axis;
+    float cos_o;
+    float phi;
+    float cos_e;
+    uint bvh_leaf;
+    uint pad;
+};
+struct GpuGeoNode {
+    vec3 bmin;
+    uint first;
+    vec3 bmax;
+    uint count;
+};
+struct GpuTriangle {
+    vec3 v0_;
+    uint material;
+    vec3 v1_;
+    uint light;
+    vec3 v2_;
+    uint pad;
+};
+struct GpuPathVertex {
+    vec3 position;
+    uint alive;
+    vec3 normal;
+    uint material;
+    vec3 weight;
+    float pad1_;
+    vec3 gnormal;
+    float pad2_;
+    vec3 wo;
+    float pad3_;
+};
+struct GpuMaterial {
+    vec3 albedo;
+    float metallic;
+    vec3 emission;
+    float alpha;
+    vec3 f0_;
+    float f90_;
+};
+struct ShadeParams {
+    uint point_count;
+    uint seed;
+    uint frame;
+    float eps;
+};
+struct BshNode {
+    vec3 center;
+    float radius;
+    uint child;
+    uint next;
+    uint light;
+    float extent;
+};
+struct GeoHit {
+    float t;
+    uint tri;
+};
+struct GridFrame {
+    vec3 lo;
+    uint nx;
+    vec3 hi;
+    uint ny;
+    vec3 inv;
+    uint nz;
+};
+struct BshCursor {
+    uint i;
+    uint end;
+    uint next;
+};
+struct Connection {
+    vec3 e;
+    vec3 y;
+    float cos_x;
+};
+struct WeightedPicks {
+    uint light[8];
+    float w[8];
+    float threshold[8];
+    float w_sum;
+    uint n;
+    uint h;
+};
+const uint LIGHT_POINT = 0u;
+const uint LIGHT_SPOT = 1u;
+const uint LIGHT_IES = 2u;
+const uint LIGHT_TRIANGLE = 3u;
+const uint LIGHT_VPL = 4u;
+const uint NO_LIGHT = 4294967295u;
+const uint GRID_HEADER = 32u;
+const uint GRID_LEVELS_MAX = 8u;
+const uint COUNT_TILES = 0u;
+const uint COUNT_GROUP_TESTS = 1u;
+const uint COUNT_CLUSTER_TESTS = 2u;
+const uint COUNT_SPHERE_TESTS = 3u;
+const uint COUNT_TESTED = 4u;
+const uint COUNT_KEPT = 5u;
+const uint COUNT_PIXELS = 6u;
+const uint COUNT_FIELDS = 7u;
+const uint DIRECT_COUNT_PIXELS = 0u;
+const uint DIRECT_COUNT_CANDIDATES = 1u;
+const uint DIRECT_COUNT_EVALUATIONS = 2u;
+const uint DIRECT_COUNT_RAYS = 3u;
+const uint DIRECT_COUNT_NODES = 4u;
+const uint DIRECT_COUNT_FIELDS = 5u;
+const uint MAP_CAMERA = 0u;
+const uint MAP_PERSPECTIVE = 1u;
+const uint MAP_ORTHOGRAPHIC = 2u;
+const float XI_STEP = 5.9604645e-8;
+const uint PICK_STREAM = 2654435769u;
+const float TWO_PI = 6.2831855;
+const float UNRANGED = 1e38;
+const float CULL_RADIUS_SCALE = 1.000001;
+const float SPHERE_PAD = 4.7683716e-7;
+const float SPHERE_HUGE = 3.4028235e38;
+const float SPHERE_PAD_ABS = 1e-18;
+const uint CLUSTER = 64u;
+const uint GROUP_SIDE = 8u;
+const float INV_PI = 0.31830987;
+const float MIN_D2_ = 1e-12;
+const float MAX_INTENSITY = 7.2057594e16;
+const uint BSH_NONE = 4294967295u;
+const uint BSH_TAIL = 2147483648u;
+const uint BSH_TAIL_BINS = 1024u;
+const uint BSH_TAIL_MAX = 64u;
+const uint RESERVOIR_FULL = 4294967295u;
+const float GGX_ALPHA_MIN = 0.001;
+const float RANGE_SCALE_MAX = 64.0;
+const uint LIGHT_BVH_LEAF = 4294967295u;
+const float ONE_MINUS_EPSILON = 0.99999994;
+const float F32_MAX = 3.4028235e38;
+const float DEPTH_NONE = 1e30;
+const float DEPTH_SIGMA = 0.05;
+const float COVER_WEIGHT = 0.1;
+const uint ROULETTE_DEPTH = 2u;
+const float TEMPORAL_MAX_HISTORY = 32.0;
+const float TEMPORAL_DEPTH_TOLERANCE = 0.01;
+const float TEMPORAL_MOTION_DEPTH_TOLERANCE = 0.05;
+const float TEMPORAL_NORMAL_COS = 0.9;
+const float TEMPORAL_MIN_MOMENTS = 8.0;
+const float TEMPORAL_CHANGED_HISTORY = 1.0;
+const float TEMPORAL_CHANGE_LOW = 4.0;
+const float TEMPORAL_CHANGE_HIGH = 8.0;
+const float TEMPORAL_MIN_WEIGHT = 0.01;
+const uint K = 8u;
+const uint BSH = 0u;
+const uint BSH_TILE_DEPTH = 8u;
+const uint BSH_TILE_SUBTREES = 256u;
+const uint GRID_ENTRIES_PER_LIGHT = 8u;
+const uint BVH = 0u;
+
+layout(std430) readonly buffer type_4_block_0Compute { float _group_1_binding_0_cs[]; };
+
+layout(std430) readonly buffer type_6_block_1Compute { GpuGeoNode _group_0_binding_6_cs[]; };
+
+layout(std430) readonly buffer type_7_block_2Compute { GpuTriangle _group_0_binding_7_cs[]; };
+
+layout(std430) readonly buffer type_10_block_3Compute { BshNode _group_0_binding_5_cs[]; };
+
+layout(std430) readonly buffer type_11_block_4Compute { uint _group_0_binding_11_cs[]; };
+
+layout(std430) readonly buffer type_11_block_5Compute { uint _group_0_binding_12_cs[]; };
+
+layout(std430) readonly buffer type_14_block_6Compute { GpuLight _group_0_binding_2_cs[]; };
+
+layout(std430) readonly buffer type_4_block_7Compute { float _group_0_binding_4_cs[]; };
+
+layout(std430) readonly buffer type_4_block_8Compute { float _group_0_binding_3_cs[]; };
+
+layout(std430) readonly buffer type_15_block_9Compute { GpuLightCone _group_1_binding_2_cs[]; };
+
+layout(std140) uniform ShadeParams_block_10Compute { ShadeParams _group_0_binding_0_cs; };
+
+layout(std430) readonly buffer type_18_block_11Compute { GpuPathVertex _group_0_binding_1_cs[]; };
+
+layout(std430) readonly buffer type_19_block_12Compute { GpuMaterial _group_0_binding_8_cs[]; };
+
+layout(std430) buffer type_20_block_13Compute { vec4 _group_0_binding_9_cs[]; };
+
+layout(std430) buffer type_11_block_14Compute { uint _group_0_binding_10_cs[]; };
+
+
+float at(uint tab, uint i) {
+    float _e4 = _group_1_binding_0_cs[i];
+    return _e4;
+}
+
+float to_f32_(uint u) {
+    return float(u);
+}
+
+uint to_u32_(float x) {
+    return uint(x);
+}
+
+uint mul_lo_u32_(uint a, uint b) {
+    return (a * b);
+}
+
+uint add_wrap_u32_(uint a_1, uint b_1) {
+    return (a_1 + b_1);
+}
+
+float f32_from_bits(uint u_1) {
+    return uintBitsToFloat(u_1);
+}
+
+float xi_from_bits(uint bits) {
+    float _e3 = to_f32_((bits >> 8u));
+    return (_e3 * XI_STEP);
+}
+
+uint pcg_hash(uint x_1) {
+    uint _e2 = mul_lo_u32_(x_1, 747796405u);
+    uint _e4 = add_wrap_u32_(_e2, 2891336453u);
+    uint _e12 = mul_lo_u32_(((_e4 >> ((_e4 >> 28u) + 4u)) ^ _e4), 277803737u);
+    return ((_e12 >> 22u) ^ _e12);
+}
+
+uint point_stream(uint seed, uint point, uint frame) {
+    uint _e3 = pcg_hash(frame);
+    uint _e5 = pcg_hash((point ^ _e3));
+    uint _e7 = pcg_hash((seed ^ _e5));
+    return _e7;
+}
+
+uint pick_stream(uint stream) {
+    uint _e3 = pcg_hash((stream ^ PICK_STREAM));
+    return _e3;
+}
+
+float rr_probability(float rt2_, float d2_) {
+    if ((d2_ <= rt2_)) {
+        return 1.0;
+    }
+    return (rt2_ / d2_);
+}
+
+float slc_weight(float rt2_1, float d2_1) {
+    if ((d2_1 <= rt2_1)) {
+        return 1.0;
+    }
+    return (d2_1 / rt2_1);
+}
+
+bool slc_keep(float r2_, float d2_2) {
+    return (d2_2 < r2_);
+}
+
+bool sphere_contains_point(vec3 c, float r, vec3 x_2) {
+    vec3 v_9 = (x_2 - c);
+    return (dot(v_9, v_9) <= (r * r));
+}
+
+float inverse_square(float d2_3) {
+    return (1.0 / max(d2_3, MIN_D2_));
+}
+
+float connection_factor(float cos_x, float d2_4, float rt2_2, float w) {
+    float _e4 = inverse_square(d2_4);
+    float _e6 = slc_weight(rt2_2, d2_4);
+    return (((cos_x * _e4) * _e6) * w);
+}
+
+float connection_cosine(vec3 x_3, vec3 y, vec3 n, vec3 ng, float r2_1) {
+    bool local = false;
+    bool local_1 = false;
+    vec3 v_10 = (x_3 - y);
+    float d2_10 = dot(v_10, v_10);
+    bool _e7 = slc_keep(r2_1, d2_10);
+    if (!(!(_e7))) {
+        local = !((d2_10 > 0.0));
+    } else {
+        local = true;
+    }
+    bool _e16 = local;
+    if (_e16) {
+        return 0.0;
+    }
+    vec3 w_11 = (v_10 / vec3(sqrt(d2_10)));
+    float cos_x_1 = -(dot(n, w_11));
+    if (!((cos_x_1 <= 0.0))) {
+        local_1 = (dot(ng, w_11) >= 0.0);
+    } else {
+        local_1 = true;
+    }
+    bool _e32 = local_1;
+    if (_e32) {
+        return 0.0;
+    }
+    return cos_x_1;
+}
+
+float vpl_lobe(vec3 n_1, vec3 w_1) {
+    return (max(dot(n_1, w_1), 0.0) * INV_PI);
+}
+
+float spot_falloff(float cos_theta, float cos_outer, float cos_inner, float shape) {
+    if ((cos_inner <= cos_outer)) {
+        return ((cos_theta >= cos_outer) ? 1.0 : 0.0);
+    }
+    float t_1 = clamp(((cos_theta - cos_outer) / (cos_inner - cos_outer)), 0.0, 1.0);
+    return ((shape > 0.5) ? (t_1 * t_1) : ((t_1 * t_1) * (3.0 - (2.0 * t_1))));
+}
+
+float triangle_lobe(vec3 n_2, float area, vec3 w_2) {
+    return (area * max(dot(n_2, w_2), 0.0));
+}
+
+vec3 triangle_sample(vec3 a_2, vec3 b_2, vec3 c_1, float u1_, float u2_) {
+    float su = sqrt(u1_);
+    float b0_ = (1.0 - su);
+    float b1_ = (u2_ * su);
+    return (((a_2 * b0_) + (b_2 * b1_)) + (c_1 * ((1.0 - b0_) - b1_)));
+}
+
+float area_to_solid_angle_pdf(float pdf_area, float d2_5, float cos_light) {
+    float c_10 = abs(cos_light);
+    if ((c_10 <= 0.0)) {
+        return 0.0;
+    }
+    return ((pdf_area * d2_5) / c_10);
+}
+
+float atan_portable(float x_4) {
+    float base = 0.0;
+    float t = 0.0;
+    float a_9 = abs(x_4);
+    t = a_9;
+    if ((a_9 > 2.4142137)) {
+        base = 1.5707964;
+        t = (-1.0 / a_9);
+    } else {
+        if ((a_9 > 0.41421357)) {
+            base = 0.7853982;
+            t = ((a_9 - 1.0) / (a_9 + 1.0));
+        }
+    }
+    float _e18 = t;
+    float _e19 = t;
+    float z = (_e18 * _e19);
+    float _e21 = base;
+    float _e33 = t;
+    float _e35 = t;
+    float r_16 = (_e21 + (((((((((0.080537446 * z) - 0.13877685) * z) + 0.19977711) * z) - 0.3333295) * z) * _e33) + _e35));
+    return ((x_4 < 0.0) ? -(r_16) : r_16);
+}
+
+float atan2_portable(float y_1, float x_5) {
+    if ((x_5 == 0.0)) {
+        if ((y_1 > 0.0)) {
+            return 1.5707964;
+        }
+        if ((y_1 < 0.0)) {
+            return -1.5707964;
+        }
+        return 0.0;
+    }
+    float _e12 = atan_portable((y_1 / x_5));
+    if ((x_5 > 0.0)) {
+        return _e12;
+    }
+    if ((y_1 >= 0.0)) {
+        return (_e12 + 3.1415927);
+    }
+    return (_e12 - 3.1415927);
+}
+
+float ies_fold_c(float c_2, float h_first, float h_last) {
+    float a_3 = 0.0;
+    a_3 = (c_2 - (360.0 * floor((c_2 / 360.0))));
+    if ((h_last <= 0.0)) {
+        return 0.0;
+    }
+    if ((h_last <= 90.0)) {
+        float _e15 = a_3;
+        if ((_e15 > 180.0)) {
+            float _e18 = a_3;
+            a_3 = (360.0 - _e18);
+        }
+        float _e21 = a_3;
+        if ((_e21 > 90.0)) {
+            float _e24 = a_3;
+            a_3 = (180.0 - _e24);
+        }
+        float _e27 = a_3;
+        return _e27;
+    }
+    if ((h_first >= 90.0)) {
+        float _e30 = a_3;
+        if ((_e30 < 90.0)) {
+            float _e33 = a_3;
+            a_3 = (180.0 - _e33);
+        } else {
+            float _e36 = a_3;
+            if ((_e36 > 270.0)) {
+                float _e39 = a_3;
+                a_3 = (540.0 - _e39);
+            }
+        }
+        float _e42 = a_3;
+        return _e42;
+    }
+    if ((h_last <= 180.0)) {
+        float _e45 = a_3;
+        if ((_e45 > 180.0)) {
+            float _e48 = a_3;
+            a_3 = (360.0 - _e48);
+        }
+        float _e51 = a_3;
+        return _e51;
+    }
+    float _e52 = a_3;
+    return _e52;
+}
+
+uint ies_segment(uint tab_1, uint start, uint n_3, float x_6) {
+    uint lo = 0u;
+    uint hi = 0u;
+    if ((n_3 < 2u)) {
+        return 0u;
+    }
+    hi = (n_3 - 1u);
+    while(true) {
+        uint _e12 = hi;
+        uint _e13 = lo;
+        if (((_e12 - _e13) > 1u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e17 = lo;
+            uint _e18 = hi;
+            uint mid = ((_e17 + _e18) >> 1u);
+            float _e23 = at(tab_1, (start + mid));
+            if ((_e23 <= x_6)) {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+    }
+    uint _e25 = lo;
+    return _e25;
+}
+
+float ies_lerp_t(float a0_, float a1_, float x_7) {
+    if ((a1_ <= a0_)) {
+        return 0.0;
+    }
+    return clamp(((x_7 - a0_) / (a1_ - a0_)), 0.0, 1.0);
+}
+
+float ies_candela(uint tab_2, uint base_1, float gamma, float c_3) {
+    bool local_2 = false;
+    float _e4 = at(tab_2, base_1);
+    uint _e5 = to_u32_(_e4);
+    float _e8 = at(tab_2, (base_1 + 1u));
+    uint _e9 = to_u32_(_e8);
+    uint v0_ = (base_1 + 2u);
+    uint h0_1 = (v0_ + _e5);
+    uint c0_ = (h0_1 + _e9);
+    float _e14 = at(tab_2, v0_);
+    if (!((gamma < _e14))) {
+        float _e22 = at(tab_2, ((v0_ + _e5) - 1u));
+        local_2 = (gamma > _e22);
+    } else {
+        local_2 = true;
+    }
+    bool _e25 = local_2;
+    if (_e25) {
+        return 0.0;
+    }
+    float _e27 = at(tab_2, h0_1);
+    float _e31 = at(tab_2, ((h0_1 + _e9) - 1u));
+    float _e32 = ies_fold_c(c_3, _e27, _e31);
+    uint _e33 = ies_segment(tab_2, v0_, _e5, gamma);
+    uint _e34 = ies_segment(tab_2, h0_1, _e9, _e32);
+    uint iv1_ = min((_e33 + 1u), (_e5 - 1u));
+    uint ih1_ = min((_e34 + 1u), (_e9 - 1u));
+    float _e46 = at(tab_2, (v0_ + _e33));
+    float _e48 = at(tab_2, (v0_ + iv1_));
+    float _e49 = ies_lerp_t(_e46, _e48, gamma);
+    float _e51 = at(tab_2, (h0_1 + _e34));
+    float _e53 = at(tab_2, (h0_1 + ih1_));
+    float _e54 = ies_lerp_t(_e51, _e53, _e32);
+    float _e58 = at(tab_2, ((c0_ + (_e34 * _e5)) + _e33));
+    float _e65 = at(tab_2, ((c0_ + (_e34 * _e5)) + iv1_));
+    float a_10 = ((_e58 * (1.0 - _e49)) + (_e65 * _e49));
+    float _e71 = at(tab_2, ((c0_ + (ih1_ * _e5)) + _e33));
+    float _e78 = at(tab_2, ((c0_ + (ih1_ * _e5)) + iv1_));
+    float b_7 = ((_e71 * (1.0 - _e49)) + (_e78 * _e49));
+    return ((a_10 * (1.0 - _e54)) + (b_7 * _e54));
+}
+
+float ies_candela_dir(uint tab_3, uint base_2, float wn, float wr, float ws) {
+    float _e9 = atan2_portable(sqrt(((wr * wr) + (ws * ws))), wn);
+    float gamma_1 = degrees(_e9);
+    bool on_axis = ((abs(wr) + abs(ws)) <= 0.0);
+    float _e16 = atan2_portable(ws, wr);
+    float c_11 = (on_axis ? 0.0 : degrees(_e16));
+    float _e20 = ies_candela(tab_3, base_2, gamma_1, c_11);
+    return _e20;
+}
+
+float ies_light_candela(uint tab_4, uint base_3, vec3 nadir, vec3 reference, vec3 w_3) {
+    vec3 side = cross(reference, nadir);
+    float _e9 = ies_candela_dir(tab_4, base_3, dot(w_3, nadir), dot(w_3, reference), dot(w_3, side));
+    return _e9;
+}
+
+float bsh_scaled_radius(BshNode node, float scale) {
+    if ((scale == 1.0)) {
+        return node.radius;
+    }
+    if ((node.child == BSH_NONE)) {
+        return (node.extent + (scale * (node.radius - node.extent)));
+    }
+    return (node.radius * scale);
+}
+
+float bsh_range_bound(BshNode node_1) {
+    if ((node_1.child == BSH_NONE)) {
+        return (node_1.radius - node_1.extent);
+    }
+    float _e8 = f32_from_bits(node_1.light);
+    return _e8;
+}
+
+float bsh_reach_bound(BshNode node_2, float w_4) {
+    float _e5 = bsh_range_bound(node_2);
+    return (node_2.extent + ((w_4 * 1.001) * _e5));
+}
+
+float weighted_threshold(float w_sum, float u_2) {
+    return (w_sum / (1.0 - u_2));
+}
+
+float weighted_pick_weight(float w_sum_1, float w_5, uint k) {
+    float _e3 = to_f32_(k);
+    return (w_sum_1 / (_e3 * w_5));
+}
+
+float mis_power(float pdf_a, float pdf_b) {
+    float a2_ = (pdf_a * pdf_a);
+    float s_4 = (a2_ + (pdf_b * pdf_b));
+    if ((s_4 <= 0.0)) {
+        return 0.0;
+    }
+    return (a2_ / s_4);
+}
+
+float light_strategy_pdf(float select, float rt2_3, float d2_6, float area_1, float cos_y) {
+    bool local_3 = false;
+    bool local_4 = false;
+    if (!((d2_6 <= 0.0))) {
+        local_3 = (area_1 <= 0.0);
+    } else {
+        local_3 = true;
+    }
+    bool _e13 = local_3;
+    if (!(_e13)) {
+        local_4 = (cos_y <= 0.0);
+    } else {
+        local_4 = true;
+    }
+    bool _e20 = local_4;
+    if (_e20) {
+        return 0.0;
+    }
+    float _e22 = rr_probability(rt2_3, d2_6);
+    float _e26 = area_to_solid_angle_pdf((1.0 / area_1), d2_6, cos_y);
+    return ((select * _e22) * _e26);
+}
+
+float cosine_pdf(float cos_theta_1) {
+    return (max(cos_theta_1, 0.0) * INV_PI);
+}
+
+vec3 onb_tangent(vec3 n_4) {
+    float s_5 = ((n_4.z >= 0.0) ? 1.0 : -1.0);
+    float a_11 = (-1.0 / (s_5 + n_4.z));
+    return vec3((1.0 + (((s_5 * n_4.x) * n_4.x) * a_11)), (((s_5 * n_4.x) * n_4.y) * a_11), (-(s_5) * n_4.x));
+}
+
+vec3 onb_bitangent(vec3 n_5) {
+    float s_6 = ((n_5.z >= 0.0) ? 1.0 : -1.0);
+    float a_12 = (-1.0 / (s_6 + n_5.z));
+    return vec3(((n_5.x * n_5.y) * a_12), (s_6 + ((n_5.y * n_5.y) * a_12)), -(n_5.y));
+}
+
+vec3 onb_to_local(vec3 n_6, vec3 w_6) {
+    vec3 _e2 = onb_tangent(n_6);
+    vec3 _e4 = onb_bitangent(n_6);
+    return vec3(dot(w_6, _e2), dot(w_6, _e4), dot(w_6, n_6));
+}
+
+float ggx_d(float cos_h, float sin2_h, float alpha) {
+    if ((cos_h <= 0.0)) {
+        return 0.0;
+    }
+    float a2_1 = (alpha * alpha);
+    float t_2 = (((cos_h * cos_h) * a2_1) + sin2_h);
+    return ((a2_1 * INV_PI) / (t_2 * t_2));
+}
+
+float smith_root(float cos_, float alpha_1) {
+    float a2_2 = (alpha_1 * alpha_1);
+    return sqrt((((cos_ * cos_) * (1.0 - a2_2)) + a2_2));
+}
+
+float smith_visibility(float n_l, float n_v, float alpha_2) {
+    bool local_5 = false;
+    if (!((n_l <= 0.0))) {
+        local_5 = (n_v <= 0.0);
+    } else {
+        local_5 = true;
+    }
+    bool _e11 = local_5;
+    if (_e11) {
+        return 0.0;
+    }
+    float _e13 = smith_root(n_v, alpha_2);
+    float _e15 = smith_root(n_l, alpha_2);
+    return (0.5 / ((n_l * _e13) + (n_v * _e15)));
+}
+
+vec3 fresnel_schlick(vec3 f0_, float f90_, float v_h) {
+    float c_12 = clamp((1.0 - v_h), 0.0, 1.0);
+    float c2_ = (c_12 * c_12);
+    return (f0_ + ((vec3(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_12)));
+}
+
+vec3 specular_fresnel(vec3 base_4, float metallic, vec3 f0_d, float f90_d, float v_h_1) {
+    vec3 _e5 = fresnel_schlick(f0_d, f90_d, v_h_1);
+    vec3 _e10 = fresnel_schlick(base_4, 1.0, v_h_1);
+    return ((_e5 * (1.0 - metallic)) + (_e10 * metallic));
+}
+
+vec3 diffuse_brdf(vec3 base_5, float metallic_1, vec3 f0_d_1, float f90_d_1, float v_h_2) {
+    vec3 _e9 = fresnel_schlick(f0_d_1, f90_d_1, v_h_2);
+    return ((((vec3(1.0, 1.0, 1.0) - _e9) * base_5) * (1.0 - metallic_1)) * INV_PI);
+}
+
+float half_cosine(vec3 v, vec3 l) {
+    vec3 h_4 = (v + l);
+    float len2_ = dot(h_4, h_4);
+    if ((len2_ <= 0.0)) {
+        return 0.0;
+    }
+    return clamp((dot(v, h_4) / sqrt(len2_)), 0.0, 1.0);
+}
+
+vec3 specular_brdf(vec3 base_6, float metallic_2, vec3 f0_d_2, float f90_d_2, float alpha_3, vec3 n_7, vec3 v_1, vec3 l_1) {
+    bool local_6 = false;
+    float n_l_1 = dot(n_7, l_1);
+    float n_v_2 = dot(n_7, v_1);
+    if (!((n_l_1 <= 0.0))) {
+        local_6 = (n_v_2 <= 0.0);
+    } else {
+        local_6 = true;
+    }
+    bool _e18 = local_6;
+    if (_e18) {
+        return vec3(0.0, 0.0, 0.0);
+    }
+    vec3 hs = (v_1 + l_1);
+    float inv_1 = (1.0 / sqrt(dot(hs, hs)));
+    vec3 h_5 = (hs * inv_1);
+    vec3 c_13 = cross(n_7, h_5);
+    float _e32 = ggx_d(dot(n_7, h_5), dot(c_13, c_13), alpha_3);
+    vec3 _e34 = specular_fresnel(base_6, metallic_2, f0_d_2, f90_d_2, dot(v_1, h_5));
+    float _e35 = smith_visibility(n_l_1, n_v_2, alpha_3);
+    return (_e34 * (_e32 * _e35));
+}
+
+vec3 brdf_eval(vec3 base_7, float metallic_3, vec3 f0_d_3, float f90_d_3, float alpha_4, vec3 n_8, vec3 v_2, vec3 l_2) {
+    if ((dot(n_8, l_2) <= 0.0)) {
+        return vec3(0.0, 0.0, 0.0);
+    }
+    float _e15 = half_cosine(v_2, l_2);
+    vec3 _e16 = diffuse_brdf(base_7, metallic_3, f0_d_3, f90_d_3, _e15);
+    vec3 _e17 = specular_brdf(base_7, metallic_3, f0_d_3, f90_d_3, alpha_4, n_8, v_2, l_2);
+    return (_e16 + _e17);
+}
+
+bool has_specular(float metallic_4, vec3 f0_d_4, float f90_d_4) {
+    bool local_7 = false;
+    bool local_8 = false;
+    if (!((metallic_4 > 0.0))) {
+        local_7 = (f90_d_4 > 0.0);
+    } else {
+        local_7 = true;
+    }
+    bool _e11 = local_7;
+    if (!(_e11)) {
+        local_8 = (max(max(f0_d_4.x, f0_d_4.y), f0_d_4.z) > 0.0);
+    } else {
+        local_8 = true;
+    }
+    bool _e23 = local_8;
+    return _e23;
+}
+
+float channel_mean(vec3 c_4) {
+    return (((c_4.x + c_4.y) + c_4.z) * 0.33333334);
+}
+
+vec4 receiver_lobe(vec3 base_8, float metallic_5, vec3 f0_d_5, float f90_d_5, float alpha_5, float n_v_1) {
+    bool local_9 = false;
+    vec3 _e10 = fresnel_schlick(f0_d_5, f90_d_5, n_v_1);
+    float _e16 = channel_mean((((vec3(1.0, 1.0, 1.0) - _e10) * base_8) * (1.0 - metallic_5)));
+    if (!((n_v_1 <= 0.0))) {
+        bool _e22 = has_specular(metallic_5, f0_d_5, f90_d_5);
+        local_9 = !(_e22);
+    } else {
+        local_9 = true;
+    }
+    bool _e25 = local_9;
+    if (_e25) {
+        return vec4(_e16, 0.0, alpha_5, n_v_1);
+    }
+    vec3 _e28 = specular_fresnel(base_8, metallic_5, f0_d_5, f90_d_5, n_v_1);
+    float _e29 = channel_mean(_e28);
+    return vec4(_e16, _e29, alpha_5, n_v_1);
+}
+
+float specular_probability(vec4 lobe) {
+    if ((lobe.y <= 0.0)) {
+        return 0.0;
+    }
+    if ((lobe.x <= 0.0)) {
+        return 1.0;
+    }
+    return clamp((lobe.y / (lobe.y + lobe.x)), 0.1, 0.9);
+}
+
+float specular_peak_factor(vec4 lobe_1) {
+    float _e6 = smith_root(lobe_1.w, lobe_1.z);
+    return ((lobe_1.y * 0.5) / (_e6 + max(lobe_1.w, 0.0)));
+}
+
+float receiver_peak(vec4 lobe_2) {
+    float _e2 = specular_peak_factor(lobe_2);
+    return (lobe_2.x + (_e2 / (lobe_2.z * lobe_2.z)));
+}
+
+float range_scale(vec4 lobe_3) {
+    if ((lobe_3.y <= 0.0)) {
+        return 1.0;
+    }
+    float _e5 = receiver_peak(lobe_3);
+    return clamp(_e5, 1.0, RANGE_SCALE_MAX);
+}
+
+vec4 range_lobe(vec4 lobe_4) {
+    if ((lobe_4.y <= 0.0)) {
+        return vec4(1.0, 0.0, 1.0, 1.0);
+    }
+    float _e10 = specular_peak_factor(lobe_4);
+    float _e14 = range_scale(lobe_4);
+    return vec4(lobe_4.x, _e10, (lobe_4.z * lobe_4.z), sqrt(_e14));
+}
+
+vec3 mirror_dir(vec3 n_9, vec3 v_3) {
+    return ((n_9 * (2.0 * dot(n_9, v_3))) - v_3);
+}
+
+float bounded_vndf_k(vec3 wi, float alpha_6) {
+    float a_13 = clamp(alpha_6, 0.0, 1.0);
+    float s_7 = (1.0 + sqrt(((wi.x * wi.x) + (wi.y * wi.y))));
+    float a2_3 = (a_13 * a_13);
+    float s2_ = (s_7 * s_7);
+    return (((1.0 - a2_3) * s2_) / (s2_ + ((a2_3 * wi.z) * wi.z)));
+}
+
+float ggx_vndf_pdf(vec3 wi_1, vec3 wo, float alpha_7) {
+    bool local_10 = false;
+    if (!((wi_1.z <= 0.0))) {
+        local_10 = (wo.z <= 0.0);
+    } else {
+        local_10 = true;
+    }
+    bool _e13 = local_10;
+    if (_e13) {
+        return 0.0;
+    }
+    vec3 hs_1 = (wi_1 + wo);
+    vec3 m_1 = (hs_1 / vec3(sqrt(dot(hs_1, hs_1))));
+    float _e28 = ggx_d(m_1.z, ((m_1.x * m_1.x) + (m_1.y * m_1.y)), alpha_7);
+    float t_3 = sqrt((((alpha_7 * alpha_7) * ((wi_1.x * wi_1.x) + (wi_1.y * wi_1.y))) + (wi_1.z * wi_1.z)));
+    float _e43 = bounded_vndf_k(wi_1, alpha_7);
+    return (_e28 / (2.0 * ((_e43 * wi_1.z) + t_3)));
+}
+
+float bsdf_pdf(vec3 n_10, vec3 v_4, vec3 l_3, float alpha_8, float p_spec) {
+    float _e6 = cosine_pdf(dot(n_10, l_3));
+    if ((p_spec <= 0.0)) {
+        return _e6;
+    }
+    vec3 _e9 = onb_to_local(n_10, v_4);
+    vec3 _e10 = onb_to_local(n_10, l_3);
+    float _e11 = ggx_vndf_pdf(_e9, _e10, alpha_8);
+    return ((p_spec * _e11) + ((1.0 - p_spec) * _e6));
+}
+
+float cos_sub_clamped(float sin_a, float cos_a, float sin_b, float cos_b) {
+    if ((cos_a > cos_b)) {
+        return 1.0;
+    }
+    return ((cos_a * cos_b) + (sin_a * sin_b));
+}
+
+float sin_sub_clamped(float sin_a_1, float cos_a_1, float sin_b_1, float cos_b_1) {
+    if ((cos_a_1 > cos_b_1)) {
+        return 0.0;
+    }
+    return ((sin_a_1 * cos_b_1) - (cos_a_1 * sin_b_1));
+}
+
+float safe_sqrt(float x_8) {
+    return sqrt(max(x_8, 0.0));
+}
+
+float subtended_cos(float dist2_, float r2_2) {
+    float _e5 = safe_sqrt((1.0 - (r2_2 / dist2_)));
+    return ((dist2_ <= r2_2) ? -1.0 : _e5);
+}
+
+vec4 emitter_cone(vec3 center, float radius, vec3 axis, float cos_o, vec3 p) {
+    vec3 v_11 = (p - center);
+    float dist2_1 = dot(v_11, v_11);
+    float r2_5 = (radius * radius);
+    float d2_11 = max(max(dist2_1, r2_5), MIN_D2_);
+    vec3 wi_2 = ((dist2_1 > 0.0) ? (v_11 / vec3(sqrt(dist2_1))) : vec3(0.0, 0.0, 0.0));
+    float cos_w = dot(axis, wi_2);
+    float _e25 = safe_sqrt((1.0 - (cos_w * cos_w)));
+    float _e26 = subtended_cos(dist2_1, r2_5);
+    float _e30 = safe_sqrt((1.0 - (_e26 * _e26)));
+    float _e34 = safe_sqrt((1.0 - (cos_o * cos_o)));
+    float _e35 = cos_sub_clamped(_e25, cos_w, _e34, cos_o);
+    float _e36 = sin_sub_clamped(_e25, cos_w, _e34, cos_o);
+    float _e37 = cos_sub_clamped(_e36, _e35, _e30, _e26);
+    return vec4(_e37, d2_11, _e26, _e30);
+}
+
+float emitter_importance(vec3 center_1, float radius_1, float phi, vec3 axis_1, float cos_o_1, float cos_e, vec3 p_1) {
+    vec4 _e7 = emitter_cone(center_1, radius_1, axis_1, cos_o_1, p_1);
+    if ((_e7.x <= cos_e)) {
+        return 0.0;
+    }
+    return ((phi * _e7.x) / _e7.y);
+}
+
+float cone_cos_of(vec3 v_5, float d2_7, float a_4, vec3 d) {
+    bool local_11 = false;
+    bool local_12 = false;
+    float vd = dot(v_5, d);
+    float h2_ = (d2_7 - (a_4 * a_4));
+    if (!((h2_ <= 0.0))) {
+        if ((vd >= 0.0)) {
+            local_12 = ((vd * vd) >= h2_);
+        } else {
+            local_12 = false;
+        }
+        bool _e19 = local_12;
+        local_11 = _e19;
+    } else {
+        local_11 = true;
+    }
+    bool _e21 = local_11;
+    if (_e21) {
+        return 1.0;
+    }
+    vec3 c_14 = cross(v_5, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_14, c_14)) * a_4)) / d2_7), 1.0);
+}
+
+float cone_cos_toward(vec3 center_2, float radius_2, vec3 p_2, vec3 d_1) {
+    vec3 v_12 = (center_2 - p_2);
+    float _e6 = cone_cos_of(v_12, dot(v_12, v_12), radius_2, d_1);
+    return _e6;
+}
+
+float range_scale_at(vec4 rl, float cos_t) {
+    float t_4 = (((0.5 + (0.5 * cos_t)) * (rl.z - 1.0)) + 1.0);
+    return clamp((rl.x + ((rl.y * rl.z) / (t_4 * t_4))), 1.0, (rl.w * rl.w));
+}
+
+float range_scale_toward(vec4 rl_1, vec3 center_3, float radius_3, vec3 p_3, vec3 r_1) {
+    if ((rl_1.w <= 1.0)) {
+        return 1.0;
+    }
+    float _e9 = cone_cos_toward(center_3, radius_3, p_3, r_1);
+    float _e10 = range_scale_at(rl_1, _e9);
+    return _e10;
+}
+
+float light_importance(vec3 center_4, float radius_4, float phi_1, vec3 axis_2, float cos_o_2, float cos_e_1, vec3 p_4, vec3 n_11) {
+    float imp = 0.0;
+    vec4 _e8 = emitter_cone(center_4, radius_4, axis_2, cos_o_2, p_4);
+    if ((_e8.x <= cos_e_1)) {
+        return 0.0;
+    }
+    imp = ((phi_1 * _e8.x) / _e8.y);
+    if ((dot(n_11, n_11) > 0.0)) {
+        vec3 v_13 = (center_4 - p_4);
+        float dist2_2 = dot(v_13, v_13);
+        float cos_i = dot(((dist2_2 > 0.0) ? (v_13 / vec3(sqrt(dist2_2))) : vec3(0.0, 0.0, 0.0)), n_11);
+        float _e33 = imp;
+        float _e37 = safe_sqrt((1.0 - (cos_i * cos_i)));
+        float _e40 = cos_sub_clamped(_e37, cos_i, _e8.w, _e8.z);
+        imp = (_e33 * max(_e40, 0.0));
+    }
+    float _e44 = imp;
+    return max(_e44, 0.0);
+}
+
+float glossy_importance(vec3 center_5, float radius_5, float phi_2, vec3 axis_3, float cos_o_3, float cos_e_2, vec3 p_5, vec3 n_12, vec3 r_2, vec4 lobe_5) {
+    bool local_13 = false;
+    float _e10 = emitter_importance(center_5, radius_5, phi_2, axis_3, cos_o_3, cos_e_2, p_5);
+    float _e11 = cone_cos_toward(center_5, radius_5, p_5, n_12);
+    if (!((_e10 <= 0.0))) {
+        local_13 = (_e11 <= 0.0);
+    } else {
+        local_13 = true;
+    }
+    bool _e20 = local_13;
+    if (_e20) {
+        return 0.0;
+    }
+    float _e22 = cone_cos_toward(center_5, radius_5, p_5, r_2);
+    float _e27 = safe_sqrt((0.5 + (0.5 * _e22)));
+    float _e33 = ggx_d(_e27, (1.0 - (_e27 * _e27)), lobe_5.z);
+    float _e39 = smith_root(lobe_5.w, lobe_5.z);
+    float spec = (((lobe_5.y * _e33) * 0.25) / _e39);
+    return (_e10 * (((lobe_5.x * INV_PI) * _e11) + spec));
+}
+
+float candidate_weight(float importance, float rt2_4, float d2_8) {
+    float _e3 = slc_weight(rt2_4, d2_8);
+    return (importance * _e3);
+}
+
+float cone_weight(vec3 center_6, float radius_6, float phi_3, vec3 axis_4, float cos_o_4, float cos_e_3, float rt2_5, vec3 p_6, vec3 n_13, vec3 r_3, vec4 lobe_6) {
+    vec3 v_14 = (p_6 - center_6);
+    if ((lobe_6.y <= 0.0)) {
+        float _e15 = light_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_13);
+        float _e19 = candidate_weight((_e15 * INV_PI), rt2_5, dot(v_14, v_14));
+        return _e19;
+    }
+    float _e20 = glossy_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_13, r_3, lobe_6);
+    float _e22 = candidate_weight(_e20, rt2_5, dot(v_14, v_14));
+    return _e22;
+}
+
+float weighted_select_pdf(float w_7, float w_sum_2, bool in_range, uint k_1) {
+    if ((w_7 <= 0.0)) {
+        return 0.0;
+    }
+    float total = (in_range ? w_sum_2 : (w_sum_2 + w_7));
+    float _e9 = to_f32_(k_1);
+    return ((_e9 * w_7) / total);
+}
+
+bool finite3_(vec3 v_6) {
+    bool local_14 = false;
+    bool local_15 = false;
+    if ((abs(v_6.x) <= F32_MAX)) {
+        local_14 = (abs(v_6.y) <= F32_MAX);
+    } else {
+        local_14 = false;
+    }
+    bool _e12 = local_14;
+    if (_e12) {
+        local_15 = (abs(v_6.z) <= F32_MAX);
+    } else {
+        local_15 = false;
+    }
+    bool _e20 = local_15;
+    return _e20;
+}
+
+float shadow_margin(float len) {
+    return (0.0001 * len);
+}
+
+float ray_inverse(float x_9) {
+    return (1.0 / ((abs(x_9) < 1e-30) ? 1e-30 : x_9));
+}
+
+vec3 ray_inverse3_(vec3 d_2) {
+    float _e2 = ray_inverse(d_2.x);
+    float _e4 = ray_inverse(d_2.y);
+    float _e6 = ray_inverse(d_2.z);
+    return vec3(_e2, _e4, _e6);
+}
+
+float ray_aabb(vec3 o, vec3 inv_d, vec3 bmin, vec3 bmax, float t_max) {
+    vec3 t0_ = ((bmin - o) * inv_d);
+    vec3 t1_ = ((bmax - o) * inv_d);
+    vec3 lo_2 = min(t0_, t1_);
+    vec3 hi_1 = max(t0_, t1_);
+    float t_in = max(max(lo_2.x, lo_2.y), max(lo_2.z, 0.0));
+    float t_out = min(min(hi_1.x, hi_1.y), min(hi_1.z, t_max));
+    if ((t_in <= t_out)) {
+        return t_in;
+    }
+    return -1.0;
+}
+
+vec3 triangle_normal(vec3 a_5, vec3 b_3, vec3 c_5) {
+    bool local_16 = false;
+    vec3 n_23 = cross((b_3 - a_5), (c_5 - a_5));
+    float l2_ = dot(n_23, n_23);
+    if (!(!((l2_ > 0.0)))) {
+        local_16 = !((l2_ < 3e38));
+    } else {
+        local_16 = true;
+    }
+    bool _e17 = local_16;
+    if (_e17) {
+        return vec3(0.0, 0.0, 0.0);
+    }
+    return (n_23 / vec3(sqrt(l2_)));
+}
+
+float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_6, vec3 b_4, vec3 c_6, float t_min, float t_max_1) {
+    bool local_17 = false;
+    bool local_18 = false;
+    bool local_19 = false;
+    vec3 e1_ = (b_4 - a_6);
+    vec3 e2_ = (c_6 - a_6);
+    vec3 p_7 = cross(d_3, e2_);
+    float det = dot(e1_, p_7);
+    if ((abs(det) <= 0.0)) {
+        return -1.0;
+    }
+    float inv_2 = (1.0 / det);
+    vec3 s_8 = (o_1 - a_6);
+    float u_3 = (dot(s_8, p_7) * inv_2);
+    if (!((u_3 < 0.0))) {
+        local_17 = (u_3 > 1.0);
+    } else {
+        local_17 = true;
+    }
+    bool _e28 = local_17;
+    if (_e28) {
+        return -1.0;
+    }
+    vec3 q = cross(s_8, e1_);
+    float v_15 = (dot(d_3, q) * inv_2);
+    if (!((v_15 < 0.0))) {
+        local_18 = ((u_3 + v_15) > 1.0);
+    } else {
+        local_18 = true;
+    }
+    bool _e42 = local_18;
+    if (_e42) {
+        return -1.0;
+    }
+    float t_5 = (dot(e2_, q) * inv_2);
+    if ((t_5 > t_min)) {
+        local_19 = (t_5 < t_max_1);
+    } else {
+        local_19 = false;
+    }
+    bool _e51 = local_19;
+    if (_e51) {
+        return t_5;
+    }
+    return -1.0;
+}
+
+vec3 light_intensity(GpuLight l_4, vec3 w_8) {
+    switch(l_4.kind) {
+        case 0u: {
+            return l_4.intensity;
+        }
+        case 1u: {
+            float _e11 = spot_falloff(dot(l_4.p1_, w_8), l_4.a, l_4.b, l_4.p2_.x);
+            return (l_4.intensity * _e11);
+        }
+        case 2u: {
+            float _e18 = ies_light_candela(0u, l_4.ies_base, l_4.p1_, l_4.p2_, w_8);
+            return (l_4.intensity * _e18);
+        }
+        case 3u: {
+            vec3 _e24 = triangle_normal(l_4.p0_, l_4.p1_, l_4.p2_);
+            float _e26 = triangle_lobe(_e24, l_4.a, w_8);
+            return (l_4.intensity * _e26);
+        }
+        case 4u: {
+            float _e30 = vpl_lobe(l_4.p1_, w_8);
+            return (l_4.intensity * _e30);
+        }
+        default: {
+            return vec3(0.0);
+        }
+    }
+}
+
+vec3 light_point(GpuLight l_5, float u1_1, float u2_1) {
+    if ((l_5.kind == LIGHT_TRIANGLE)) {
+        vec3 _e9 = triangle_sample(l_5.p0_, l_5.p1_, l_5.p2_, u1_1, u2_1);
+        return _e9;
+    }
+    return l_5.p0_;
+}
+
+float light_area(GpuLight l_6) {
+    if ((l_6.kind == LIGHT_TRIANGLE)) {
+        return l_6.a;
+    }
+    return 0.0;
+}
+
+vec3 light_normal(GpuLight l_7) {
+    if ((l_7.kind == LIGHT_TRIANGLE)) {
+        vec3 _e7 = triangle_normal(l_7.p0_, l_7.p1_, l_7.p2_);
+        return _e7;
+    }
+    return vec3(0.0);
+}
+
+GeoHit trace(vec3 o_2, vec3 d_4, float t_min_1, float t_max_2, bool any_hit) {
+    GeoHit hit = GeoHit(0.0, 0u);
+    uint stack[64] = uint[64](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
+    uint sp = 0u;
+    uint node_3 = 0u;
+    uint i_1 = 0u;
+    hit.t = t_max_2;
+    hit.tri = NO_LIGHT;
+    if ((uint(_group_0_binding_6_cs.length()) == 0u)) {
+        GeoHit _e13 = hit;
+        return _e13;
+    }
+    vec3 _e14 = ray_inverse3_(d_4);
+    while(true) {
+        uint _e21 = node_3;
+        GpuGeoNode n_24 = _group_0_binding_6_cs[_e21];
+        float _e27 = hit.t;
+        float _e28 = ray_aabb(o_2, _e14, n_24.bmin, n_24.bmax, _e27);
+        if ((_e28 >= 0.0)) {
+            if ((n_24.count > 0u)) {
+                i_1 = n_24.first;
+                bool loop_init = true;
+                while(true) {
+                    if (!loop_init) {
+                        uint _e58 = i_1;
+                        i_1 = (_e58 + 1u);
+                    }
+                    loop_init = false;
+                    uint _e36 = i_1;
+                    if ((_e36 < (n_24.first + n_24.count))) {
+                    } else {
+                        break;
+                    }
+                    {
+                        uint _e42 = i_1;
+                        GpuTriangle t_6 = _group_0_binding_7_cs[_e42];
+                        float _e49 = hit.t;
+                        float _e50 = ray_triangle(o_2, d_4, t_6.v0_, t_6.v1_, t_6.v2_, t_min_1, _e49);
+                        if ((_e50 > 0.0)) {
+                            hit.t = _e50;
+                            uint _e55 = i_1;
+                            hit.tri = _e55;
+                            if (any_hit) {
+                                GeoHit _e56 = hit;
+                                return _e56;
+                            }
+                        }
+                    }
+                }
+            } else {
+                uint _e60 = sp;
+                if ((_e60 < 64u)) {
+                    uint _e63 = sp;
+                    stack[_e63] = (n_24.first + 1u);
+                    uint _e68 = sp;
+                    sp = (_e68 + 1u);
+                }
+                node_3 = n_24.first;
+                continue;
+            }
+        }
+        uint _e72 = sp;
+        if ((_e72 == 0u)) {
+            break;
+        }
+        uint _e75 = sp;
+        sp = (_e75 - 1u);
+        uint _e78 = sp;
+        uint _e80 = stack[_e78];
+        node_3 = _e80;
+    }
+    GeoHit _e81 = hit;
+    return _e81;
+}
+
+bool occluded(vec3 a_7, vec3 b_5) {
+    vec3 dv = (b_5 - a_7);
+    float len_1 = length(dv);
+    if ((len_1 <= 0.0)) {
+        return false;
+    }
+    float _e7 = shadow_margin(len_1);
+    GeoHit _e12 = trace(a_7, (dv / vec3(len_1)), _e7, (len_1 - _e7), true);
+    return (_e12.tri != NO_LIGHT);
+}
+
+BshNode bsh_node(uint nodes, uint i_2) {
+    BshNode _e4 = _group_0_binding_5_cs[i_2];
+    return _e4;
+}
+
+uint bsh_count(uint nodes_1) {
+    return uint(_group_0_binding_5_cs.length());
+}
+
+uint bsh_first(uint nodes_2) {
+    uint _e1 = bsh_count(nodes_2);
+    if ((_e1 > 0u)) {
+        return 0u;
+    }
+    return BSH_NONE;
+}
+
+float bsh_inner_scale(float a_8, vec3 v_7, float d2_9, vec3 r_4, vec4 rl_2) {
+    float _e5 = cone_cos_of(v_7, d2_9, a_8, r_4);
+    float _e8 = range_scale_at(rl_2, (_e5 + 2e-6));
+    return _e8;
+}
+
+bool bsh_reaches(BshNode node_4, vec3 x_10, vec3 r_5, vec4 rl_3) {
+    bool local_20 = false;
+    bool local_21 = false;
+    bool _e6 = sphere_contains_point(node_4.center, node_4.radius, x_10);
+    if (_e6) {
+        return true;
+    }
+    if (!((rl_3.w <= 1.0))) {
+        bool _e20 = sphere_contains_point(node_4.center, (node_4.radius * (rl_3.w * 1.0001)), x_10);
+        local_20 = !(_e20);
+    } else {
+        local_20 = true;
+    }
+    bool _e23 = local_20;
+    if (_e23) {
+        return false;
+    }
+    vec3 v_16 = (x_10 - node_4.center);
+    float d2_12 = dot(v_16, v_16);
+    float _e29 = bsh_reach_bound(node_4, rl_3.w);
+    if ((d2_12 > (_e29 * _e29))) {
+        return false;
+    }
+    if ((node_4.child == BSH_NONE)) {
+        float _e38 = range_scale_toward(rl_3, node_4.center, node_4.extent, x_10, r_5);
+        float _e41 = bsh_scaled_radius(node_4, sqrt(_e38));
+        bool _e42 = sphere_contains_point(node_4.center, _e41, x_10);
+        return _e42;
+    }
+    float _e45 = bsh_inner_scale(node_4.extent, -(v_16), d2_12, r_5, rl_3);
+    float s_c = (_e45 * 1.001);
+    float _e50 = bsh_range_bound(node_4);
+    float reach = (node_4.extent + (sqrt(s_c) * _e50));
+    if ((d2_12 <= ((node_4.radius * node_4.radius) * s_c))) {
+        local_21 = (d2_12 <= (reach * reach));
+    } else {
+        local_21 = false;
+    }
+    bool _e63 = local_21;
+    return _e63;
+}
+
+uint bsh_next_leaf_lobe(uint nodes_3, uint start_1, vec3 x_11, vec3 r_6, vec4 rl_4) {
+    uint i_3 = 0u;
+    i_3 = start_1;
+    while(true) {
+        uint _e6 = i_3;
+        if ((_e6 != BSH_NONE)) {
+        } else {
+            break;
+        }
+        {
+            uint _e9 = i_3;
+            BshNode _e10 = bsh_node(nodes_3, _e9);
+            bool _e11 = bsh_reaches(_e10, x_11, r_6, rl_4);
+            if (_e11) {
+                if ((_e10.child == BSH_NONE)) {
+                    if (((_e10.light & BSH_TAIL) == 0u)) {
+                        uint _e20 = i_3;
+                        return _e20;
+                    }
+                    i_3 = _e10.next;
+                } else {
+                    i_3 = _e10.child;
+                }
+            } else {
+                i_3 = _e10.next;
+            }
+        }
+    }
+    return BSH_NONE;
+}
+
+uint bsh_grid_axis(float v_8, float lo_1, float inv, uint n_14) {
+    uint _e9 = to_u32_(max(floor(((v_8 - lo_1) * inv)), 0.0));
+    return min(_e9, (n_14 - 1u));
+}
+
+uint bsh_grid_cell(GridFrame f, vec3 x_12) {
+    bool local_22 = false;
+    bool local_23 = false;
+    bool local_24 = false;
+    bool local_25 = false;
+    bool local_26 = false;
+    if ((x_12.x >= f.lo.x)) {
+        local_22 = (x_12.y >= f.lo.y);
+    } else {
+        local_22 = false;
+    }
+    bool _e13 = local_22;
+    if (_e13) {
+        local_23 = (x_12.z >= f.lo.z);
+    } else {
+        local_23 = false;
+    }
+    bool _e21 = local_23;
+    if (_e21) {
+        local_24 = (x_12.x <= f.hi.x);
+    } else {
+        local_24 = false;
+    }
+    bool _e29 = local_24;
+    if (_e29) {
+        local_25 = (x_12.y <= f.hi.y);
+    } else {
+        local_25 = false;
+    }
+    bool _e37 = local_25;
+    if (_e37) {
+        local_26 = (x_12.z <= f.hi.z);
+    } else {
+        local_26 = false;
+    }
+    bool inside = local_26;
+    if (!(inside)) {
+        return BSH_NONE;
+    }
+    uint _e54 = bsh_grid_axis(x_12.x, f.lo.x, f.inv.x, f.nx);
+    uint _e61 = bsh_grid_axis(x_12.y, f.lo.y, f.inv.y, f.ny);
+    uint _e68 = bsh_grid_axis(x_12.z, f.lo.z, f.inv.z, f.nz);
+    return ((((_e68 * f.ny) + _e61) * f.nx) + _e54);
+}
+
+uint grid_word(uint i_4) {
+    uint _e3 = _group_0_binding_11_cs[i_4];
+    return _e3;
+}
+
+GridFrame grid_frame() {
+    GridFrame f_1 = GridFrame(vec3(0.0), 0u, vec3(0.0), 0u, vec3(0.0), 0u);
+    uint _e3 = grid_word(0u);
+    uint _e6 = grid_word(1u);
+    uint _e9 = grid_word(2u);
+    f_1.lo = vec3(uintBitsToFloat(_e3), uintBitsToFloat(_e6), uintBitsToFloat(_e9));
+    uint _e14 = grid_word(3u);
+    f_1.nx = _e14;
+    uint _e17 = grid_word(4u);
+    uint _e20 = grid_word(5u);
+    uint _e23 = grid_word(6u);
+    f_1.hi = vec3(uintBitsToFloat(_e17), uintBitsToFloat(_e20), uintBitsToFloat(_e23));
+    uint _e28 = grid_word(7u);
+    f_1.ny = _e28;
+    uint _e31 = grid_word(8u);
+    uint _e34 = grid_word(9u);
+    uint _e37 = grid_word(10u);
+    f_1.inv = vec3(uintBitsToFloat(_e31), uintBitsToFloat(_e34), uintBitsToFloat(_e37));
+    uint _e42 = grid_word(11u);
+    f_1.nz = _e42;
+    GridFrame _e43 = f_1;
+    return _e43;
+}
+
+float grid_reach() {
+    uint _e1 = grid_word(12u);
+    return uintBitsToFloat(_e1);
+}
+
+BshCursor bsh_cursor(vec3 x_13, vec3 r_7, vec4 rl_5) {
+    BshCursor c_7 = BshCursor(0u, 0u, 0u);
+    bool local_27 = false;
+    bool local_28 = false;
+    c_7.i = 0u;
+    c_7.end = 0u;
+    uint _e10 = bsh_first(BSH);
+    c_7.next = _e10;
+    GridFrame _e11 = grid_frame();
+    uint _e13 = c_7.next;
+    if ((_e13 != BSH_NONE)) {
+        local_27 = (_e11.nx > 0u);
+    } else {
+        local_27 = false;
+    }
+    bool _e22 = local_27;
+    if (_e22) {
+        float _e26 = grid_reach();
+        local_28 = (rl_5.w <= _e26);
+    } else {
+        local_28 = false;
+    }
+    bool _e29 = local_28;
+    if (_e29) {
+        uint _e30 = bsh_grid_cell(_e11, x_13);
+        if ((_e30 != BSH_NONE)) {
+            uint _e38 = _group_0_binding_11_cs[(GRID_HEADER + _e30)];
+            c_7.i = _e38;
+            uint _e46 = _group_0_binding_11_cs[((GRID_HEADER + _e30) + 1u)];
+            c_7.end = _e46;
+            uint _e51 = _group_0_binding_5_cs[0].next;
+            c_7.next = _e51;
+        }
+    }
+    BshCursor _e52 = c_7;
+    return _e52;
+}
+
+uint bsh_cursor_next(inout BshCursor c_8, vec3 x_14, vec3 r_8, vec4 rl_6) {
+    while(true) {
+        uint _e5 = c_8.i;
+        uint _e7 = c_8.end;
+        if ((_e5 < _e7)) {
+        } else {
+            break;
+        }
+        {
+            uint _e11 = c_8.i;
+            uint b_8 = _group_0_binding_12_cs[_e11];
+            uint _e15 = c_8.i;
+            c_8.i = (_e15 + 1u);
+            BshNode _e20 = _group_0_binding_5_cs[b_8];
+            bool _e21 = bsh_reaches(_e20, x_14, r_8, rl_6);
+            if (_e21) {
+                return b_8;
+            }
+        }
+    }
+    uint _e24 = c_8.next;
+    uint _e25 = bsh_next_leaf_lobe(BSH, _e24, x_14, r_8, rl_6);
+    if ((_e25 != BSH_NONE)) {
+        uint _e32 = _group_0_binding_5_cs[_e25].next;
+        c_8.next = _e32;
+    }
+    return _e25;
+}
+
+float next_threshold(float sum_1, inout uint h_1) {
+    uint _e2 = h_1;
+    uint _e3 = pcg_hash(_e2);
+    h_1 = _e3;
+    uint _e4 = h_1;
+    float _e5 = xi_from_bits(_e4);
+    float _e6 = weighted_threshold(sum_1, _e5);
+    return _e6;
+}
+
+Connection connect_record(GpuLight l_8, vec3 x_15, vec3 n_15, vec3 ng_1, float r2_3, float rt2_6, float w_res, float u1_2, float u2_2, float eps, bool trace_1) {
+    Connection c_9 = Connection(vec3(0.0), vec3(0.0), 0.0);
+    bool local_29 = false;
+    bool local_30 = false;
+    c_9.e = vec3(0.0);
+    vec3 _e16 = light_point(l_8, u1_2, u2_2);
+    c_9.y = _e16;
+    vec3 _e19 = c_9.y;
+    float _e20 = connection_cosine(x_15, _e19, n_15, ng_1, r2_3);
+    c_9.cos_x = _e20;
+    float _e22 = c_9.cos_x;
+    if (!((_e22 <= 0.0))) {
+        if (trace_1) {
+            vec3 _e33 = c_9.y;
+            bool _e34 = occluded((x_15 + (ng_1 * eps)), _e33);
+            local_30 = _e34;
+        } else {
+            local_30 = false;
+        }
+        bool _e36 = local_30;
+        local_29 = _e36;
+    } else {
+        local_29 = true;
+    }
+    bool _e38 = local_29;
+    if (_e38) {
+        Connection _e39 = c_9;
+        return _e39;
+    }
+    vec3 _e41 = c_9.y;
+    vec3 v_17 = (x_15 - _e41);
+    float d2_13 = dot(v_17, v_17);
+    vec3 _e48 = light_intensity(l_8, (v_17 / vec3(sqrt(d2_13))));
+    float _e50 = c_9.cos_x;
+    float _e51 = connection_factor(_e50, d2_13, rt2_6, w_res);
+    c_9.e = (_e48 * _e51);
+    Connection _e53 = c_9;
+    return _e53;
+}
+
+Connection connect_traced(uint li, vec3 x_16, vec3 n_16, vec3 ng_2, float s_1, float w_res_1, float u1_3, float u2_3, float eps_1, bool trace_2) {
+    GpuLight _e12 = _group_0_binding_2_cs[li];
+    float _e15 = _group_0_binding_4_cs[li];
+    float _e19 = _group_0_binding_3_cs[li];
+    Connection _e21 = connect_record(_e12, x_16, n_16, ng_2, (s_1 * _e15), (s_1 * _e19), w_res_1, u1_3, u2_3, eps_1, trace_2);
+    return _e21;
+}
+
+Connection connect(uint li_1, vec3 x_17, vec3 n_17, vec3 ng_3, float s_2, float w_res_2, float u1_4, float u2_4, float eps_2) {
+    Connection _e10 = connect_traced(li_1, x_17, n_17, ng_3, s_2, w_res_2, u1_4, u2_4, eps_2, true);
+    return _e10;
+}
+
+float mis_weight(float pdf_a_1, float pdf_b_1) {
+    float _e2 = mis_power(pdf_a_1, pdf_b_1);
+    return _e2;
+}
+
+float light_range_scale(uint li_2, vec3 x_18, vec3 r_9, vec4 rl_7) {
+    GpuLightCone c_15 = _group_1_binding_2_cs[li_2];
+    float _e9 = range_scale_toward(rl_7, c_15.center, c_15.radius, x_18, r_9);
+    return _e9;
+}
+
+float light_weight(uint li_3, vec3 x_19, vec3 n_18, vec3 r_10, vec4 lobe_7, vec4 rl_8) {
+    GpuLightCone c_16 = _group_1_binding_2_cs[li_3];
+    float _e15 = light_range_scale(li_3, x_19, r_10, rl_8);
+    float _e18 = _group_0_binding_3_cs[li_3];
+    float _e20 = cone_weight(c_16.center, c_16.radius, c_16.phi, c_16.axis, c_16.cos_o, c_16.cos_e, (_e15 * _e18), x_19, n_18, r_10, lobe_7);
+    return _e20;
+}
+
+float select_pdf(uint li_4, vec3 x_20, vec3 n_19, vec3 r_11, vec4 lobe_8, vec4 rl_9, uint nee, bool in_range_1) {
+    float _e8 = light_weight(li_4, x_20, n_19, r_11, lobe_8, rl_9);
+    float _e11 = weighted_select_pdf(_e8, uintBitsToFloat(nee), in_range_1, K);
+    return _e11;
+}
+
+float light_pdf_selected(uint li_5, vec3 x_21, vec3 r_12, vec4 rl_10, vec3 y_2, float sel) {
+    GpuLight l_9 = _group_0_binding_2_cs[li_5];
+    vec3 v_18 = (x_21 - y_2);
+    float d2_14 = dot(v_18, v_18);
+    vec3 _e11 = light_normal(l_9);
+    float cos_y_1 = ((d2_14 > 0.0) ? dot(_e11, (v_18 / vec3(sqrt(d2_14)))) : 0.0);
+    float _e20 = light_range_scale(li_5, x_21, r_12, rl_10);
+    float _e23 = _group_0_binding_3_cs[li_5];
+    float _e25 = light_area(l_9);
+    float _e26 = light_strategy_pdf(sel, (_e20 * _e23), d2_14, _e25, cos_y_1);
+    return _e26;
+}
+
+float light_pdf(uint li_6, vec3 x_22, vec3 n_20, vec3 r_13, vec4 lobe_9, vec4 rl_11, vec3 y_3, uint nee_1, bool in_range_2) {
+    float _e9 = select_pdf(li_6, x_22, n_20, r_13, lobe_9, rl_11, nee_1, in_range_2);
+    float _e10 = light_pdf_selected(li_6, x_22, r_13, rl_11, y_3, _e9);
+    return _e10;
+}
+
+WeightedPicks weighted_picks(uint h_2) {
+    WeightedPicks picks = WeightedPicks(uint[8](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u), float[8](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), float[8](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0.0, 0u, 0u);
+    picks.w_sum = 0.0;
+    picks.n = 0u;
+    picks.h = h_2;
+    WeightedPicks _e7 = picks;
+    return _e7;
+}
+
+void weighted_offer(inout WeightedPicks picks_1, uint li_7, float w_9) {
+    uint h_3 = 0u;
+    uint s_3 = 0u;
+    uint _e4 = picks_1.n;
+    picks_1.n = (_e4 + 1u);
+    if ((w_9 > 0.0)) {
+        float _e10 = picks_1.w_sum;
+        picks_1.w_sum = (_e10 + w_9);
+        uint _e13 = picks_1.h;
+        h_3 = _e13;
+        bool loop_init_1 = true;
+        while(true) {
+            if (!loop_init_1) {
+                uint _e40 = s_3;
+                s_3 = (_e40 + 1u);
+            }
+            loop_init_1 = false;
+            uint _e17 = s_3;
+            if ((_e17 < K)) {
+            } else {
+                break;
+            }
+            {
+                float _e21 = picks_1.w_sum;
+                uint _e23 = s_3;
+                float _e25 = picks_1.threshold[_e23];
+                if ((_e21 > _e25)) {
+                    uint _e28 = s_3;
+                    picks_1.light[_e28] = li_7;
+                    uint _e31 = s_3;
+                    picks_1.w[_e31] = w_9;
+                    uint _e34 = s_3;
+                    float _e37 = picks_1.w_sum;
+                    float _e38 = next_threshold(_e37, h_3);
+                    picks_1.threshold[_e34] = _e38;
+                }
+            }
+        }
+        uint _e43 = h_3;
+        picks_1.h = _e43;
+        return;
+    } else {
+        return;
+    }
+}
+
+WeightedPicks bsh_weighted_collect(vec3 x_23, vec3 n_21, vec3 r_14, vec4 lobe_10, vec4 rl_12, uint h0_) {
+    WeightedPicks picks_2 = WeightedPicks(uint[8](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u), float[8](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), float[8](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0.0, 0u, 0u);
+    BshCursor cur = BshCursor(0u, 0u, 0u);
+    uint b_6 = 0u;
+    WeightedPicks _e6 = weighted_picks(h0_);
+    picks_2 = _e6;
+    BshCursor _e8 = bsh_cursor(x_23, r_14, rl_12);
+    cur = _e8;
+    uint _e10 = bsh_cursor_next(cur, x_23, r_14, rl_12);
+    b_6 = _e10;
+    bool loop_init_2 = true;
+    while(true) {
+        if (!loop_init_2) {
+            uint _e21 = bsh_cursor_next(cur, x_23, r_14, rl_12);
+            b_6 = _e21;
+        }
+        loop_init_2 = false;
+        uint _e12 = b_6;
+        if ((_e12 != BSH_NONE)) {
+        } else {
+            break;
+        }
+        {
+            uint _e16 = b_6;
+            uint li_9 = _group_0_binding_5_cs[_e16].light;
+            float _e20 = light_weight(li_9, x_23, n_21, r_14, lobe_10, rl_12);
+            weighted_offer(picks_2, li_9, _e20);
+        }
+    }
+    WeightedPicks _e22 = picks_2;
+    return _e22;
+}
+
+vec3 shade_pick(uint li_8, vec3 x_24, vec3 n_22, vec3 ng_4, GpuMaterial m, vec3 wo_1, vec3 r_15, vec4 lobe_11, vec4 rl_13, float w_10, uint nee_2, float u1_5, float u2_5) {
+    float mis = 1.0;
+    float _e13 = light_range_scale(li_8, x_24, r_15, rl_13);
+    float _e16 = _group_0_binding_0_cs.eps;
+    Connection _e17 = connect(li_8, x_24, n_22, ng_4, _e13, w_10, u1_5, u2_5, _e16);
+    if ((_e17.cos_x <= 0.0)) {
+        return vec3(0.0);
+    }
+    vec3 l_10 = normalize((_e17.y - x_24));
+    GpuLight _e30 = _group_0_binding_2_cs[li_8];
+    float _e31 = light_area(_e30);
+    if ((_e31 > 0.0)) {
+        float _e36 = light_pdf(li_8, x_24, n_22, r_15, lobe_11, rl_13, _e17.y, nee_2, true);
+        float _e38 = specular_probability(lobe_11);
+        float _e39 = bsdf_pdf(n_22, wo_1, l_10, m.alpha, _e38);
+        float _e40 = mis_weight(_e36, _e39);
+        mis = _e40;
+    }
+    vec3 _e46 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_22, wo_1, l_10);
+    float _e49 = mis;
+    return ((_e46 * _e17.e) * _e49);
+}
+
+void main() {
+    uvec3 gid = gl_GlobalInvocationID;
+    uint h = 0u;
+    vec3 sum = vec3(0.0);
+    uint s = 0u;
+    uint i_5 = gid.x;
+    uint _e4 = _group_0_binding_0_cs.point_count;
+    if ((i_5 >= _e4)) {
+        return;
+    }
+    GpuPathVertex vtx = _group_0_binding_1_cs[i_5];
+    if ((vtx.alive == 0u)) {
+        _group_0_binding_10_cs[i_5] = 0u;
+        return;
+    }
+    vec3 x_25 = vtx.position;
+    vec3 n_25 = vtx.normal;
+    vec3 ng_5 = vtx.gnormal;
+    GpuMaterial m_2 = _group_0_binding_8_cs[vtx.material];
+    vec3 wo_2 = vtx.wo;
+    vec3 _e23 = mirror_dir(n_25, wo_2);
+    vec4 _e30 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, dot(n_25, wo_2));
+    vec4 _e31 = range_lobe(_e30);
+    uint _e34 = _group_0_binding_0_cs.seed;
+    uint _e37 = _group_0_binding_0_cs.frame;
+    uint _e38 = point_stream(_e34, i_5, _e37);
+    uint _e39 = pick_stream(_e38);
+    h = _e39;
+    uint _e44 = h;
+    WeightedPicks _e45 = bsh_weighted_collect(x_25, n_25, _e23, _e30, _e31, _e44);
+    h = _e45.h;
+    float w_sum_3 = _e45.w_sum;
+    _group_0_binding_10_cs[i_5] = floatBitsToUint(w_sum_3);
+    if ((w_sum_3 > 0.0)) {
+        bool loop_init_3 = true;
+        while(true) {
+            if (!loop_init_3) {
+                uint _e79 = s;
+                s = (_e79 + 1u);
+            }
+            loop_init_3 = false;
+            uint _e55 = s;
+            if ((_e55 < K)) {
+            } else {
+                break;
+            }
+            {
+                uint _e58 = h;
+                uint _e59 = pcg_hash(_e58);
+                h = _e59;
+                uint _e60 = h;
+                float _e61 = xi_from_bits(_e60);
+                uint _e62 = h;
+                uint _e63 = pcg_hash(_e62);
+                h = _e63;
+                vec3 _e64 = sum;
+                uint _e66 = s;
+                uint _e69 = s;
+                float _e72 = weighted_pick_weight(w_sum_3, _e45.w[_e69], K);
+                uint _e74 = h;
+                float _e75 = xi_from_bits(_e74);
+                vec3 _e76 = shade_pick(_e45.light[_e66], x_25, n_25, ng_5, m_2, wo_2, _e23, _e30, _e31, _e72, floatBitsToUint(w_sum_3), _e61, _e75);
+                sum = (_e64 + _e76);
+            }
+        }
+    }
+    vec3 _e82 = sum;
+    vec3 add = (vtx.weight * _e82);
+    bool _e84 = finite3_(add);
+    if (_e84) {
+        vec4 _e87 = _group_0_binding_9_cs[i_5];
+        _group_0_binding_9_cs[i_5] = (_e87 + vec4(add, 0.0));
+        return;
+    } else {
+        return;
+    }
+}
+

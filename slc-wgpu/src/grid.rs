@@ -1,0 +1,169 @@
+//! The path tracer's grid over the BSH's leaves on the GPU (slc-core's
+//! [`BshGrid`](slc_core::bsh::BshGrid), which the CPU path tracer builds):
+//! rebuilt every pass after the refit by `bsh_grid`'s six stages (a
+//! counting sort, each cell then sorted into node order), over the frames
+//! [`GridFrame::levels`] gives for the scene's box, the first whose entries
+//! fit its budget. `pt_connect` then tests a vertex's cell and the range
+//! tail instead of walking the tree: the same lights in the same order, so
+//! the same image (`tests/pt_parity.rs`).
+//!
+//! On lavapipe, whose loops end silently after 65,535 iterations in an
+//! invocation, a leaf may cover at most that many cells and a cell hold
+//! about 360 entries (its insertion sort); the tests' scenes stay well below.
+
+use crate::kernel::{KernelLayout, UniformSlots, check_kernels, read_back, storage, whole, zeroed};
+use crate::lights::{LightBuffers, WG};
+use crate::{GpuContext, GpuError};
+use glam::Vec3;
+use slc_core::bsh::grid::walk_leaves;
+use slc_core::bsh::{Bsh, GridFrame};
+use slc_shared_shaders::layout::{GRID_HEADER, GRID_LEVELS_MAX, GridParams};
+use slc_shared_shaders::{Features, Kernel};
+
+/// The stages of `bsh_grid` (its module docs).
+const STAGES: usize = 6;
+
+/// A pass's grid: its buffers, the build's pipeline and bind group.
+pub(crate) struct GpuGrid {
+    pipeline: wgpu::ComputePipeline,
+    params: UniformSlots,
+    group: wgpu::BindGroup,
+    /// The frame, reach and counts, then each cell's first entry.
+    pub(crate) grid: wgpu::Buffer,
+    /// The cells' leaves.
+    pub(crate) entries: wgpu::Buffer,
+    /// Leaves in the tree (the per-leaf stages' extent).
+    lights: u32,
+    /// Cells of the finest frame (the per-cell stage's extent); 0 without
+    /// a frame (no grid: the walks take the tree).
+    cells: u32,
+    /// Whether passes build it ([`GpuGrid::set_enabled`]).
+    enabled: bool,
+}
+
+impl GpuGrid {
+    /// The grid for the light set `set` (its refitted BSH) whose tree is
+    /// `bsh`'s, over the scene's box `(lo, hi)`, serving receivers whose range lobe
+    /// reaches at most `reach` (1: Lambertian ones). Its entries are
+    /// capped by the device's binding size (a coarser frame, or none, is
+    /// then taken).
+    pub(crate) fn new(
+        gpu: &GpuContext,
+        set: &LightBuffers,
+        bsh: &Bsh,
+        (lo, hi): (Vec3, Vec3),
+        reach: f32,
+    ) -> Result<GpuGrid, GpuError> {
+        let f = Features { workgroup_size: WG, ..Features::default() };
+        check_kernels(gpu, &[(Kernel::BshGrid, &f, 0)])?;
+        let leaves = walk_leaves(bsh);
+        let tree_lights = leaves.len();
+        let mut levels = GridFrame::levels(lo, hi, bsh.len());
+        levels.truncate(GRID_LEVELS_MAX as usize);
+        let lim = &gpu.limits;
+        let binding = lim.max_storage_buffer_binding_size.min(lim.max_buffer_size);
+        let cells = levels.first().map_or(0, |l| l.cells());
+        // The grid's words, one start a cell and the total after them.
+        if (GRID_HEADER as u64 + cells + 1) * 4 > binding
+            || cells.div_ceil(WG as u64) > lim.max_compute_workgroups_per_dimension as u64
+        {
+            levels.clear();
+        }
+        let cells = levels.first().map_or(0, |l| l.cells()) as u32;
+        let capacity =
+            levels.first().map_or(1, |l| l.budget(tree_lights as u64)).clamp(1, binding / 4);
+        let layout = KernelLayout::new(gpu, Kernel::BshGrid, &f)?;
+        let pipeline = layout.pipeline(gpu, &f, None)?;
+        // COPY_SRC: read back by the tests.
+        let rw = wgpu::BufferUsages::STORAGE
+            | wgpu::BufferUsages::COPY_DST
+            | wgpu::BufferUsages::COPY_SRC;
+        let grid = zeroed(gpu, "bsh grid", (GRID_HEADER as u64 + cells as u64 + 1) * 4, rw);
+        let fill = zeroed(gpu, "bsh grid fill", cells.max(1) as u64 * 4, rw);
+        let entries = zeroed(gpu, "bsh grid entries", capacity * 4, rw);
+        let frames = if levels.is_empty() { vec![GridFrame::default()] } else { levels.clone() };
+        let none = wgpu::BufferUsages::empty();
+        let frames = storage(gpu, "grid levels", bytemuck::cast_slice(&frames), none);
+        let leaves = if leaves.is_empty() { vec![0] } else { leaves };
+        let leaves = storage(gpu, "grid leaves", bytemuck::cast_slice(&leaves), none);
+        let params = UniformSlots::new::<GridParams>(gpu, "grid params", STAGES as u64);
+        let values: Vec<GridParams> = (0..STAGES as u32)
+            .map(|stage| GridParams {
+                stage,
+                count: tree_lights as u32,
+                levels: levels.len() as u32,
+                capacity: capacity as u32,
+                reach,
+                cells,
+                pad0: 0,
+                pad1: 0,
+            })
+            .collect();
+        params.write(gpu, &values);
+        let group = layout.group(
+            gpu,
+            0,
+            &[
+                ("params", params.binding()),
+                ("bsh_nodes", whole(&set.bsh)),
+                ("grid_leaves", whole(&leaves)),
+                ("grid_levels", whole(&frames)),
+                ("grid", whole(&grid)),
+                ("grid_fill", whole(&fill)),
+                ("grid_entries", whole(&entries)),
+            ],
+        );
+        let lights = tree_lights as u32;
+        Ok(GpuGrid { pipeline, params, group, grid, entries, lights, cells, enabled: true })
+    }
+
+    /// Builds the grid in passes to come (`true`, the default) or not: the
+    /// walks then take the tree (the same lights in the same order).
+    pub(crate) fn set_enabled(&mut self, gpu: &GpuContext, on: bool) {
+        self.enabled = on;
+        if !on {
+            // No cells along x: no grid.
+            gpu.queue.write_buffer(&self.grid, 12, &0u32.to_le_bytes());
+        }
+    }
+
+    /// The last pass's grid read back: its frame (no cells along x: none)
+    /// and each cell's leaves (node indices).
+    pub(crate) fn read(&self, gpu: &GpuContext) -> Result<(GridFrame, Vec<Vec<u32>>), GpuError> {
+        let staging = |b: &wgpu::Buffer| {
+            gpu.device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some("grid readback"),
+                size: b.size(),
+                usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
+                mapped_at_creation: false,
+            })
+        };
+        let words: Vec<u32> = read_back(gpu, &self.grid, &staging(&self.grid))?;
+        let entries: Vec<u32> = read_back(gpu, &self.entries, &staging(&self.entries))?;
+        let frame: GridFrame = bytemuck::pod_read_unaligned(bytemuck::cast_slice(&words[..12]));
+        let start = &words[GRID_HEADER as usize..];
+        let cells = (0..frame.cells() as usize)
+            .map(|c| entries[start[c] as usize..start[c + 1] as usize].to_vec())
+            .collect();
+        Ok((frame, cells))
+    }
+
+    /// Records the build for the refitted BSH into `cp` (nothing where it
+    /// is off or the scene has no frame).
+    pub(crate) fn encode(&self, cp: &mut wgpu::ComputePass) {
+        if !self.enabled || self.cells == 0 {
+            return;
+        }
+        cp.set_pipeline(&self.pipeline);
+        let per_light = self.lights.div_ceil(WG);
+        for stage in 0..STAGES {
+            cp.set_bind_group(0, &self.group, &[self.params.offset(stage)]);
+            let groups = match stage {
+                0 | 2 | 4 => per_light,
+                5 => self.cells.div_ceil(WG),
+                _ => 1,
+            };
+            cp.dispatch_workgroups(groups, 1, 1);
+        }
+    }
+}
