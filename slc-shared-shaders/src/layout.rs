@@ -227,10 +227,13 @@ slc_core::shared! {
         pub tree: u32,
     }
 
-    /// Words before the cell starts in `bsh_grid`'s `grid` buffer: the
-    /// chosen frame (slc-core's `GridFrame`, 12 words; no cells along x:
-    /// no grid this pass), the reach it serves (13th word, f32 bits), the
-    /// leaves counted, then each level's entry count (64-bit: low, high).
+    /// Words before the cell starts of a grid in `bsh_grid`'s `grid`
+    /// buffer: the chosen frame (slc-core's `GridFrame`, 12 words; no
+    /// cells along x: no grid this pass), the reach it serves (word 12, f32
+    /// bits), the leaves counted (13), where the next grid's words start
+    /// (14; 0: none, written by the host), then each level's entry count
+    /// (64-bit: low, high) from word 16. The cell starts follow, one a cell
+    /// and the end after them, as positions in `grid_entries`.
     pub const GRID_HEADER: u32 = 32;
 
     /// Most frames `bsh_grid` tries (slc-core's `GridFrame::levels`: 64
@@ -240,8 +243,9 @@ slc_core::shared! {
     /// Uniforms of one `bsh_grid` dispatch: its stage (0 each level's
     /// entries counted, 1 the level chosen, 2 each cell's entries counted,
     /// 3 their starts, 4 the leaves scattered, 5 each cell sorted), the
-    /// tree's leaf count, the frames tried, the entries' capacity and the largest
-    /// range lobe the grid serves.
+    /// tree's leaf count, the frames tried, the largest range lobe the grid
+    /// serves, and where its words (`grid`), counts (`grid_fill`) and
+    /// entries (`grid_entries`, at most `capacity`) start; 48 bytes.
     pub struct GridParams {
         /// Stage.
         pub stage: u32,
@@ -249,16 +253,24 @@ slc_core::shared! {
         pub count: u32,
         /// Frames in `grid_levels`.
         pub levels: u32,
-        /// Entries `grid_entries` holds.
+        /// Entries the grid may take in `grid_entries`.
         pub capacity: u32,
         /// The largest range lobe `rl.w` the grid serves (1: the plain spheres).
         pub reach: f32,
         /// Cells of the largest frame (the per-cell stages' extent).
         pub cells: u32,
+        /// The grid's first word in `grid`.
+        pub header: u32,
+        /// The grid's first count in `grid_fill`.
+        pub fill: u32,
+        /// The grid's first entry in `grid_entries`.
+        pub entries: u32,
         /// Padding.
         pub pad0: u32,
         /// Padding.
         pub pad1: u32,
+        /// Padding.
+        pub pad2: u32,
     }
 
     /// Uniforms of `vpl_tiled`, `vpl_near`, `vpl_denoise`, `vpl_clusters`

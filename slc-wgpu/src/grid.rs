@@ -7,6 +7,10 @@
 //! tail instead of walking the tree: the same lights in the same order, so
 //! the same image (`tests/pt_parity.rs`).
 //!
+//! Two grids share the buffers where the scene has glossy materials: one
+//! for Lambertian receivers, one for range lobes up to
+//! [`GLOSSY_REACH`] (sharper ones walk), as the CPU's.
+//!
 //! On lavapipe, whose loops end silently after 65,535 iterations in an
 //! invocation, a leaf may cover at most that many cells and a cell hold
 //! about 360 entries (its insertion sort); the tests' scenes stay well below.
@@ -15,47 +19,55 @@ use crate::kernel::{KernelLayout, UniformSlots, check_kernels, read_back, storag
 use crate::lights::{LightBuffers, WG};
 use crate::{GpuContext, GpuError};
 use glam::Vec3;
-use slc_core::bsh::grid::walk_leaves;
+use slc_core::bsh::grid::{GLOSSY_REACH, walk_leaves};
 use slc_core::bsh::{Bsh, GridFrame};
 use slc_shared_shaders::layout::{GRID_HEADER, GRID_LEVELS_MAX, GridParams};
 use slc_shared_shaders::{Features, Kernel};
 
+/// A grid read back: its frame and each cell's leaves (node indices).
+pub type GridCells = (GridFrame, Vec<Vec<u32>>);
+
 /// The stages of `bsh_grid` (its module docs).
 const STAGES: usize = 6;
 
-/// A pass's grid: its buffers, the build's pipeline and bind group.
+/// A pass's grids: their buffers, the build's pipeline and bind group.
 pub(crate) struct GpuGrid {
     pipeline: wgpu::ComputePipeline,
+    /// Each grid's six stages' uniforms, grid after grid.
     params: UniformSlots,
     group: wgpu::BindGroup,
-    /// The frame, reach and counts, then each cell's first entry.
+    /// Each grid's frame, reach and counts, then each cell's first entry.
     pub(crate) grid: wgpu::Buffer,
     /// The cells' leaves.
     pub(crate) entries: wgpu::Buffer,
+    /// Where each grid's words start in `grid`.
+    headers: Vec<u32>,
     /// Leaves in the tree (the per-leaf stages' extent).
     lights: u32,
     /// Cells of the finest frame (the per-cell stage's extent); 0 without
     /// a frame (no grid: the walks take the tree).
     cells: u32,
-    /// Whether passes build it ([`GpuGrid::set_enabled`]).
+    /// Whether passes build them ([`GpuGrid::set_enabled`]).
     enabled: bool,
 }
 
 impl GpuGrid {
-    /// The grid for the light set `set` (its refitted BSH) whose tree is
-    /// `bsh`'s, over the scene's box `(lo, hi)`, serving receivers whose range lobe
-    /// reaches at most `reach` (1: Lambertian ones). Its entries are
-    /// capped by the device's binding size (a coarser frame, or none, is
-    /// then taken).
+    /// The grids for the light set `set` (its refitted BSH) whose tree is
+    /// `bsh`'s, over the scene's box `(lo, hi)`: for Lambertian receivers,
+    /// and with `glossy` also for range lobes up to [`GLOSSY_REACH`]. Each
+    /// grid's entries are capped by the device's binding size (a coarser
+    /// frame, or none, is then taken).
     pub(crate) fn new(
         gpu: &GpuContext,
         set: &LightBuffers,
         bsh: &Bsh,
         (lo, hi): (Vec3, Vec3),
-        reach: f32,
+        glossy: bool,
     ) -> Result<GpuGrid, GpuError> {
         let f = Features { workgroup_size: WG, ..Features::default() };
         check_kernels(gpu, &[(Kernel::BshGrid, &f, 0)])?;
+        let reaches: &[f32] = if glossy { &[1.0, GLOSSY_REACH] } else { &[1.0] };
+        let k = reaches.len() as u64;
         let leaves = walk_leaves(bsh);
         let tree_lights = leaves.len();
         let mut levels = GridFrame::levels(lo, hi, bsh.len());
@@ -63,40 +75,55 @@ impl GpuGrid {
         let lim = &gpu.limits;
         let binding = lim.max_storage_buffer_binding_size.min(lim.max_buffer_size);
         let cells = levels.first().map_or(0, |l| l.cells());
-        // The grid's words, one start a cell and the total after them.
-        if (GRID_HEADER as u64 + cells + 1) * 4 > binding
+        // Each grid's words: the header, one start a cell and the end.
+        let words = GRID_HEADER as u64 + cells + 1;
+        if k * words * 4 > binding
             || cells.div_ceil(WG as u64) > lim.max_compute_workgroups_per_dimension as u64
         {
             levels.clear();
         }
-        let cells = levels.first().map_or(0, |l| l.cells()) as u32;
+        let cells = levels.first().map_or(0, |l| l.cells());
+        let words = GRID_HEADER as u64 + cells + 1;
         let capacity =
-            levels.first().map_or(1, |l| l.budget(tree_lights as u64)).clamp(1, binding / 4);
+            levels.first().map_or(1, |l| l.budget(tree_lights as u64)).clamp(1, binding / 4 / k);
         let layout = KernelLayout::new(gpu, Kernel::BshGrid, &f)?;
         let pipeline = layout.pipeline(gpu, &f, None)?;
         // COPY_SRC: read back by the tests.
         let rw = wgpu::BufferUsages::STORAGE
             | wgpu::BufferUsages::COPY_DST
             | wgpu::BufferUsages::COPY_SRC;
-        let grid = zeroed(gpu, "bsh grid", (GRID_HEADER as u64 + cells as u64 + 1) * 4, rw);
-        let fill = zeroed(gpu, "bsh grid fill", cells.max(1) as u64 * 4, rw);
-        let entries = zeroed(gpu, "bsh grid entries", capacity * 4, rw);
+        let headers: Vec<u32> = (0..k).map(|g| (g * words) as u32).collect();
+        // No frame until the first pass; each grid's word 14 the next's start.
+        let mut init = vec![0u32; (k * words) as usize];
+        for g in 1..headers.len() {
+            init[headers[g - 1] as usize + 14] = headers[g];
+        }
+        let grid = storage(gpu, "bsh grid", bytemuck::cast_slice(&init), rw);
+        let fill = zeroed(gpu, "bsh grid fill", (k * cells).max(1) * 4, rw);
+        let entries = zeroed(gpu, "bsh grid entries", k * capacity * 4, rw);
         let frames = if levels.is_empty() { vec![GridFrame::default()] } else { levels.clone() };
         let none = wgpu::BufferUsages::empty();
         let frames = storage(gpu, "grid levels", bytemuck::cast_slice(&frames), none);
         let leaves = if leaves.is_empty() { vec![0] } else { leaves };
         let leaves = storage(gpu, "grid leaves", bytemuck::cast_slice(&leaves), none);
-        let params = UniformSlots::new::<GridParams>(gpu, "grid params", STAGES as u64);
-        let values: Vec<GridParams> = (0..STAGES as u32)
-            .map(|stage| GridParams {
-                stage,
-                count: tree_lights as u32,
-                levels: levels.len() as u32,
-                capacity: capacity as u32,
-                reach,
-                cells,
-                pad0: 0,
-                pad1: 0,
+        let params = UniformSlots::new::<GridParams>(gpu, "grid params", k * STAGES as u64);
+        let n_levels = levels.len() as u32;
+        let values: Vec<GridParams> = (0..k as u32)
+            .flat_map(|g| {
+                (0..STAGES as u32).map(move |stage| GridParams {
+                    stage,
+                    count: tree_lights as u32,
+                    levels: n_levels,
+                    capacity: capacity as u32,
+                    reach: reaches[g as usize],
+                    cells: cells as u32,
+                    header: g * words as u32,
+                    fill: g * cells as u32,
+                    entries: g * capacity as u32,
+                    pad0: 0,
+                    pad1: 0,
+                    pad2: 0,
+                })
             })
             .collect();
         params.write(gpu, &values);
@@ -113,23 +140,36 @@ impl GpuGrid {
                 ("grid_entries", whole(&entries)),
             ],
         );
-        let lights = tree_lights as u32;
-        Ok(GpuGrid { pipeline, params, group, grid, entries, lights, cells, enabled: true })
+        Ok(GpuGrid {
+            pipeline,
+            params,
+            group,
+            grid,
+            entries,
+            headers,
+            lights: tree_lights as u32,
+            cells: cells as u32,
+            enabled: true,
+        })
     }
 
-    /// Builds the grid in passes to come (`true`, the default) or not: the
-    /// walks then take the tree (the same lights in the same order).
+    /// Builds the grids in passes to come (`true`, the default) or not:
+    /// the walks then take the tree (the same lights in the same order).
     pub(crate) fn set_enabled(&mut self, gpu: &GpuContext, on: bool) {
         self.enabled = on;
         if !on {
             // No cells along x: no grid.
-            gpu.queue.write_buffer(&self.grid, 12, &0u32.to_le_bytes());
+            for &h in &self.headers {
+                gpu.queue.write_buffer(&self.grid, (h as u64 + 3) * 4, &0u32.to_le_bytes());
+            }
         }
     }
 
-    /// The last pass's grid read back: its frame (no cells along x: none)
-    /// and each cell's leaves (node indices).
-    pub(crate) fn read(&self, gpu: &GpuContext) -> Result<(GridFrame, Vec<Vec<u32>>), GpuError> {
+    /// The last pass's grid `g` (0: Lambertian, 1: glossy) read back: its
+    /// frame (no cells along x: none) and each cell's leaves (node
+    /// indices); `None` where there is no such grid.
+    pub(crate) fn read(&self, gpu: &GpuContext, g: usize) -> Result<Option<GridCells>, GpuError> {
+        let Some(&h) = self.headers.get(g) else { return Ok(None) };
         let staging = |b: &wgpu::Buffer| {
             gpu.device.create_buffer(&wgpu::BufferDescriptor {
                 label: Some("grid readback"),
@@ -140,25 +180,27 @@ impl GpuGrid {
         };
         let words: Vec<u32> = read_back(gpu, &self.grid, &staging(&self.grid))?;
         let entries: Vec<u32> = read_back(gpu, &self.entries, &staging(&self.entries))?;
-        let frame: GridFrame = bytemuck::pod_read_unaligned(bytemuck::cast_slice(&words[..12]));
-        let start = &words[GRID_HEADER as usize..];
+        let h = h as usize;
+        let frame: GridFrame =
+            bytemuck::pod_read_unaligned(bytemuck::cast_slice(&words[h..h + 12]));
+        let start = &words[h + GRID_HEADER as usize..];
         let cells = (0..frame.cells() as usize)
             .map(|c| entries[start[c] as usize..start[c + 1] as usize].to_vec())
             .collect();
-        Ok((frame, cells))
+        Ok(Some((frame, cells)))
     }
 
-    /// Records the build for the refitted BSH into `cp` (nothing where it
-    /// is off or the scene has no frame).
+    /// Records the grids' build for the refitted BSH into `cp` (nothing
+    /// where they are off or the scene has no frame).
     pub(crate) fn encode(&self, cp: &mut wgpu::ComputePass) {
         if !self.enabled || self.cells == 0 {
             return;
         }
         cp.set_pipeline(&self.pipeline);
         let per_light = self.lights.div_ceil(WG);
-        for stage in 0..STAGES {
-            cp.set_bind_group(0, &self.group, &[self.params.offset(stage)]);
-            let groups = match stage {
+        for slot in 0..self.headers.len() * STAGES {
+            cp.set_bind_group(0, &self.group, &[self.params.offset(slot)]);
+            let groups = match slot % STAGES {
                 0 | 2 | 4 => per_light,
                 5 => self.cells.div_ceil(WG),
                 _ => 1,

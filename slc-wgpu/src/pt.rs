@@ -142,7 +142,8 @@ pub struct GpuPt {
     /// The scene's triangles as an acceleration structure, where
     /// `pt_connect` casts ray queries.
     accel: Option<GpuAccel>,
-    /// The pass's grid over the BSH's leaves (Lambertian receivers).
+    /// The pass's grids over the BSH's leaves (Lambertian receivers, and
+    /// glossy ones where the scene has a specular material).
     grid: GpuGrid,
 }
 
@@ -217,7 +218,12 @@ impl GpuPt {
             ls.cones(),
             Some(pts.light_bvh()),
         )?;
-        let grid = GpuGrid::new(gpu, &set, pts.bsh(), pts.scene().bounds(), 1.0)?;
+        let glossy = pts
+            .scene()
+            .materials
+            .iter()
+            .any(|m| slc_core::brdf::has_specular(m.metallic, m.f0, m.f90));
+        let grid = GpuGrid::new(gpu, &set, pts.bsh(), pts.scene().bounds(), glossy)?;
         let base = Features {
             lights: set.types,
             workgroup_size: WG,
@@ -456,10 +462,12 @@ impl GpuPt {
 }
 
 impl GpuPt {
-    /// Whether the SLC methods' passes build a grid over the BSH's leaves
-    /// and find a Lambertian vertex's lights in its cell (`true`, the
-    /// default: slc-core's `BshGrid`, built on the GPU each pass) or walk
-    /// the tree for every vertex. The same lights in the same order either
+    /// Whether the SLC methods' passes build grids over the BSH's leaves
+    /// and find a vertex's lights in its cell (`true`, the default:
+    /// slc-core's `BshGrid`, built on the GPU each pass, for Lambertian
+    /// vertices and, in a scene with specular materials, glossy ones whose
+    /// range lobe is within `GLOSSY_REACH`) or walk the tree for every
+    /// vertex. The same lights in the same order either
     /// way, so the same image: a switch for tests and measurements.
     pub fn set_grid(&mut self, on: bool) {
         self.grid.set_enabled(&self.gpu, on);
@@ -478,15 +486,17 @@ impl GpuPt {
         read_back(gpu, &self.set.bsh, &staging)
     }
 
-    /// The last render's grid read back: its frame (no cells along x where
-    /// it had none) and each cell's leaves (node indices): for the tests
-    /// that check it against the walk.
+    /// The last render's grid `g` (0: Lambertian, 1: glossy) read back:
+    /// its frame (no cells along x where it had none) and each cell's
+    /// leaves (node indices), `None` where the scene has no such grid: for
+    /// the tests that check it against the walk.
     #[doc(hidden)]
     pub fn read_grid(
         &self,
         gpu: &GpuContext,
-    ) -> Result<(slc_core::bsh::GridFrame, Vec<Vec<u32>>), GpuError> {
-        self.grid.read(gpu)
+        g: usize,
+    ) -> Result<Option<crate::grid::GridCells>, GpuError> {
+        self.grid.read(gpu, g)
     }
 }
 

@@ -476,29 +476,46 @@ fn gpu_range_tail_matches_the_cpu_refit() {
     g.take_errors().unwrap();
 }
 
-/// The GPU's grid (`bsh_grid`) lists, in every cell, in the walk's order, each
-/// tree leaf the walk can find (not in the range tail) whose sphere holds
-/// a point of the cell (checked at 2,000 points drawn in the scene's box,
-/// against every leaf), and `slc-weighted`, `slc-reservoir` and `slc`
-/// render the same image bit for bit with and without it (the walk's
-/// lights in its order). Over the scene suite's 2,048-light points
-/// (volume, clusters) and triangles, two passes at depth 3.
+/// The GPU's grids (`bsh_grid`) list, in every cell, in the walk's order,
+/// each tree leaf the walk can find (not in the range tail) that reaches a
+/// point of the cell: at 2,000 points drawn in the scene's box, against
+/// every leaf, the Lambertian grid for the plain sphere test and the
+/// glossy one for a GGX receiver drawn at each point whose range lobe it
+/// holds (the walk's leaf test, `bsh_reaches`). And `slc-weighted`,
+/// `slc-reservoir` and `slc` render the same image bit for bit with and
+/// without them (the walk's lights in its order). Over the scene suite's
+/// 2,048-light points (volume, clusters), triangles and glossy box, two
+/// passes at depth 3 and the ε `slc render` sets for each.
 fn gpu_grid_gives_the_walks_image() {
-    use slc_core::bsh::grid::bsh_grid_cell;
+    use slc_core::brdf::{mirror_dir, range_lobe, receiver_lobe};
+    use slc_core::bsh::grid::{GLOSSY_REACH, bsh_grid_cell, walk_leaves};
+    use slc_core::bsh::walk::bsh_reaches;
     use slc_core::bsh::{BSH_NONE, BSH_TAIL};
+    use slc_scene::error_bound::{TARGET_CANDIDATES, auto_error_bound};
     let Some(g) = gpu() else { return };
     let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../scenes/suite");
-    for name in ["points-volume-2048", "points-clusters-2048", "tri-away-2048"] {
+    let mut glossy_held = 0;
+    for name in
+        ["points-volume-2048", "points-clusters-2048", "tri-away-2048", "glossy-facing-2048"]
+    {
         let f = slc_scene::scene_file::SceneFile::load(&dir.join(format!("{name}.toml"))).unwrap();
         let pts = PtScene::new(&f.scene, &f.lights).unwrap();
         let mut gpt = GpuPt::new(g, &pts, W, H).unwrap();
         let tree = pts.bsh().tree_len();
         let mut rank = vec![u32::MAX; pts.bsh().nodes().len()];
-        for (r, &i) in slc_core::bsh::grid::walk_leaves(pts.bsh()).iter().enumerate() {
+        for (r, &i) in walk_leaves(pts.bsh()).iter().enumerate() {
             rank[i as usize] = r as u32;
         }
+        // The ε `slc render` takes for the scene.
+        let eps = auto_error_bound(&pts, 1.0, TARGET_CANDIDATES).unwrap();
         for method in [PtMethod::SlcWeighted, PtMethod::SlcReservoir, PtMethod::Slc] {
-            let set = PtSettings { method, seed: 3, max_depth: 3, ..PtSettings::default() };
+            let set = PtSettings {
+                method,
+                seed: 3,
+                max_depth: 3,
+                error_bound: eps,
+                ..PtSettings::default()
+            };
             let mut images = Vec::new();
             for on in [true, false] {
                 gpt.set_grid(on);
@@ -508,54 +525,80 @@ fn gpu_grid_gives_the_walks_image() {
                 if !on || method != PtMethod::SlcWeighted {
                     continue;
                 }
-                let (frame, cells) = gpt.read_grid(g).unwrap();
                 let nodes = gpt.read_bsh(g).unwrap();
-                assert!(frame.nx > 0 && cells.len() as u64 == frame.cells(), "{name}: no grid");
-                let listed: usize = cells.iter().map(Vec::len).sum();
-                for cell in &cells {
-                    let ranks: Vec<u32> = cell.iter().map(|&b| rank[b as usize]).collect();
-                    assert!(ranks.windows(2).all(|w| w[0] < w[1]), "{name}: a cell out of order");
-                    for &b in cell {
-                        let n = nodes[b as usize];
+                let glossy = name.starts_with("glossy");
+                assert_eq!(gpt.read_grid(g, 1).unwrap().is_some(), glossy, "{name}");
+                for grid in 0..1 + glossy as usize {
+                    let (frame, cells) = gpt.read_grid(g, grid).unwrap().unwrap();
+                    assert!(
+                        frame.nx > 0 && cells.len() as u64 == frame.cells(),
+                        "{name}: no grid {grid}"
+                    );
+                    for cell in &cells {
+                        let ranks: Vec<u32> = cell.iter().map(|&b| rank[b as usize]).collect();
                         assert!(
-                            (b as usize) < tree && n.child == BSH_NONE && n.light & BSH_TAIL == 0
+                            ranks.windows(2).all(|w| w[0] < w[1]),
+                            "{name}: a cell out of order"
                         );
-                    }
-                }
-                let found = |p: Vec3| {
-                    (0..tree)
-                        .filter(|&i| {
-                            let n = nodes[i];
-                            n.child == BSH_NONE
-                                && n.light & BSH_TAIL == 0
-                                && (p - n.center).length_squared() <= n.radius * n.radius
-                        })
-                        .count()
-                };
-                let (lo, hi) = pts.scene().bounds();
-                let mut h = 7u32;
-                let mut next = || {
-                    h = slc_core::xi::pcg_hash(h);
-                    slc_core::xi::xi_from_bits(h)
-                };
-                let mut held = 0;
-                for _ in 0..2000 {
-                    let u = Vec3::new(next(), next(), next());
-                    let p = lo + (hi - lo) * u;
-                    let c = bsh_grid_cell(frame, p);
-                    assert_ne!(c, BSH_NONE, "{name}: {p} outside the grid");
-                    let cell = &cells[c as usize];
-                    let inside = cell
-                        .iter()
-                        .filter(|&&b| {
+                        for &b in cell {
                             let n = nodes[b as usize];
-                            (p - n.center).length_squared() <= n.radius * n.radius
-                        })
-                        .count();
-                    assert_eq!(inside, found(p), "{name}: the cell of {p} misses a leaf");
-                    held += inside;
+                            assert!(
+                                (b as usize) < tree
+                                    && n.child == BSH_NONE
+                                    && n.light & BSH_TAIL == 0
+                            );
+                        }
+                    }
+                    let (lo, hi) = pts.scene().bounds();
+                    let mut h = 7u32;
+                    let mut u = || {
+                        h = slc_core::xi::pcg_hash(h);
+                        slc_core::xi::xi_from_bits(h)
+                    };
+                    let mut held = 0;
+                    for _ in 0..2000 {
+                        let p = lo + (hi - lo) * Vec3::new(u(), u(), u());
+                        // A GGX receiver for the glossy grid; none (the
+                        // plain sphere test) for the Lambertian one.
+                        let (mut r, mut rl) = (Vec3::Z, glam::Vec4::new(1.0, 0.0, 1.0, 1.0));
+                        if grid == 1 {
+                            let nrm = (Vec3::new(u(), u(), u()) - 0.5).normalize();
+                            let v = (Vec3::new(u(), u(), u()) - 0.5 + nrm).normalize();
+                            let metal = if u() < 0.5 { 1.0 } else { 0.0 };
+                            let alpha = (0.05 + 0.95 * u()).powi(2);
+                            let lobe = receiver_lobe(
+                                Vec3::splat(0.8),
+                                metal,
+                                Vec3::splat(0.04),
+                                1.0,
+                                alpha,
+                                nrm.dot(v),
+                            );
+                            (r, rl) = (mirror_dir(nrm, v), range_lobe(lobe));
+                            if !(rl.w > 1.0 && rl.w <= GLOSSY_REACH) {
+                                continue;
+                            }
+                            glossy_held += 1;
+                        }
+                        let c = bsh_grid_cell(frame, p);
+                        assert_ne!(c, BSH_NONE, "{name}: {p} outside the grid");
+                        let reaches = |b: usize| bsh_reaches(nodes[b], p, r, rl);
+                        let walk = (0..tree)
+                            .filter(|&i| {
+                                nodes[i].child == BSH_NONE && nodes[i].light & BSH_TAIL == 0
+                            })
+                            .filter(|&i| reaches(i))
+                            .count();
+                        let listed =
+                            cells[c as usize].iter().filter(|&&b| reaches(b as usize)).count();
+                        assert_eq!(
+                            listed, walk,
+                            "{name}, grid {grid}: the cell of {p} misses a leaf"
+                        );
+                        held += listed;
+                    }
+                    assert!(held > 0, "{name}, grid {grid}: no light found");
                 }
-                assert!(held > 0 && listed > 0, "{name}: {held} lights found, {listed} listed");
             }
             assert!(
                 images[0] == images[1],
@@ -563,6 +606,7 @@ fn gpu_grid_gives_the_walks_image() {
             );
         }
     }
+    assert!(glossy_held > 500, "{glossy_held} glossy receivers held");
     g.take_errors().unwrap();
 }
 

@@ -35,6 +35,16 @@ pub fn vec4f(x: f32, y: f32, z: f32, w: f32) -> glam::Vec4 {
     glam::Vec4::new(x, y, z, w)
 }
 
+/// Rust spelling of WGSL's `vec3u`.
+#[allow(non_camel_case_types)]
+pub type vec3u = glam::UVec3;
+
+/// WGSL's `vec3u(x, y, z)` constructor.
+#[inline]
+pub fn vec3u(x: u32, y: u32, z: u32) -> glam::UVec3 {
+    glam::UVec3::new(x, y, z)
+}
+
 /// Rust spelling of WGSL's `vec4u`.
 #[allow(non_camel_case_types)]
 pub type vec4u = glam::UVec4;

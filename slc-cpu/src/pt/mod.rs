@@ -165,14 +165,7 @@ impl LazyGrid {
     }
 }
 
-/// The largest range lobe `rl.w` (the square root of a receiver's range
-/// scale) a pass's glossy grid holds; sharper lobes walk the tree. At 4,
-/// glossy-facing-49152's floor (GGX α 0.09) finds 92% of its receivers'
-/// candidates in 0.43 of the walk's time, its gold (α 0.16) 75% in 0.50;
-/// at 2 the floor's share falls to 68%, and at 8 a cell lists 758 spheres
-/// and takes longer than the walk (`cargo run --release -p slc-scene
-/// --example grid_walk -- --glossy 0.3,0 scenes/suite/glossy-facing-49152.toml`).
-pub const GLOSSY_REACH: f32 = 4.0;
+pub use slc_core::bsh::grid::GLOSSY_REACH;
 
 impl CpuPathTracer {
     /// Whether light `l`'s range sphere, scaled for the receiver `rc`

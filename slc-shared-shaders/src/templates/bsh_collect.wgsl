@@ -34,20 +34,26 @@ struct BshCursor {
 /// The candidates of a receiver at `x` (mirror direction `r`, range lobe
 /// `rl`): {% if grid %}its cell's leaves and then the range tail (whose
 /// first node is the root's `next`) where the pass has a grid whose reach
-/// holds `rl.w` and `x` lies in its box, else{% endif %} the walk of the
-/// whole tree. [`bsh_cursor_next`] gives them in the walk's order.
+/// holds `rl.w` (the Lambertian one at word 0 of `grid`, then the one
+/// whose words start where word 14 says, 0 for none) and `x` lies in its
+/// box, else{% endif %} the walk of the whole tree. [`bsh_cursor_next`] gives
+/// them in the walk's order.
 fn bsh_cursor(x: vec3f, r: vec3f, rl: vec4f) -> BshCursor {
     var c: BshCursor;
     c.i = 0u;
     c.end = 0u;
     c.next = bsh_first(BSH);
 {% if grid %}
-    let f = grid_frame();
-    if c.next != BSH_NONE && f.nx > 0u && rl.w <= grid_reach() {
+    var h = 0u;
+    if rl.w > grid_reach(0u) {
+        h = grid_word(14u);
+    }
+    let f = grid_frame(h);
+    if c.next != BSH_NONE && f.nx > 0u && rl.w <= grid_reach(h) {
         let cell = bsh_grid_cell(f, x);
         if cell != BSH_NONE {
-            c.i = grid[GRID_HEADER + cell];
-            c.end = grid[GRID_HEADER + cell + 1u];
+            c.i = grid[h + GRID_HEADER + cell];
+            c.end = grid[h + GRID_HEADER + cell + 1u];
             c.next = bsh_nodes[0].next;
         }
     }

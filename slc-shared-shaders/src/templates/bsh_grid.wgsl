@@ -16,6 +16,9 @@
 //   4 (per leaf) each leaf's rank scattered into its cells;
 //   5 (per cell) each cell sorted by rank, the ranks turned into node
 //     indices, its count cleared.
+// The path tracer builds two grids in the same buffers, one for Lambertian
+// receivers and one for glossy lobes up to a reach: each dispatch's
+// `params` say where its grid's words, counts and entries start.
 
 {{ bindings }}
 
@@ -38,50 +41,41 @@ fn grid_leaf(i: u32) -> u32 {
     return node;
 }
 
-/// The first cells `(x, y, z)` of leaf `node` in frame `f`.
-fn cover_first(f: GridFrame, node: BshNode, r: f32) -> vec3u {
-    let c = node.center;
-    return vec3u(bsh_grid_axis(c.x - r, f.lo.x, f.inv.x, f.nx), bsh_grid_axis(c.y - r, f.lo.y, f.inv.y, f.ny), bsh_grid_axis(c.z - r, f.lo.z, f.inv.z, f.nz));
-}
-
-/// The last cells `(x, y, z)` of leaf `node` in frame `f`.
-fn cover_last(f: GridFrame, node: BshNode, r: f32) -> vec3u {
-    let c = node.center;
-    return vec3u(bsh_grid_axis(c.x + r, f.lo.x, f.inv.x, f.nx), bsh_grid_axis(c.y + r, f.lo.y, f.inv.y, f.ny), bsh_grid_axis(c.z + r, f.lo.z, f.inv.z, f.nz));
-}
-
 /// Each invocation's running sum in stage 3.
 var<workgroup> wg_sums: array<u32, {{ wg }}>;
 
 @compute @workgroup_size({{ wg }})
 fn main(@builtin(global_invocation_id) gid: vec3u) {
     let i = gid.x;
+    // This grid's words in `grid`, its counts in `grid_fill`.
+    let h = params.header;
+    let starts = h + GRID_HEADER;
     if params.stage == 3u {
         // One workgroup: each invocation scans a run of cells, then adds
-        // the runs before it.
-        let f = grid_frame();
+        // the runs before it; the starts are positions in `grid_entries`.
+        let f = grid_frame(h);
         let cells = f.nx * f.ny * f.nz;
         let run = (cells + {{ wg }}u - 1u) / {{ wg }}u;
         let a = min(i * run, cells);
         let b = min(a + run, cells);
         var sum = 0u;
         for (var c = a; c < b; c++) {
-            sum += atomicLoad(&grid_fill[c]);
+            sum += atomicLoad(&grid_fill[params.fill + c]);
         }
         wg_sums[i] = sum;
         workgroupBarrier();
-        var start = 0u;
+        var start = params.entries;
         for (var j = 0u; j < i; j++) {
             start += wg_sums[j];
         }
         for (var c = a; c < b; c++) {
-            let n = atomicLoad(&grid_fill[c]);
-            atomicStore(&grid[GRID_HEADER + c], start);
-            atomicStore(&grid_fill[c], start);
+            let n = atomicLoad(&grid_fill[params.fill + c]);
+            atomicStore(&grid[starts + c], start);
+            atomicStore(&grid_fill[params.fill + c], start);
             start += n;
         }
         if i + 1u == {{ wg }}u {
-            atomicStore(&grid[GRID_HEADER + cells], start);
+            atomicStore(&grid[starts + cells], start);
         }
         return;
     }
@@ -94,13 +88,13 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
             if node == BSH_NONE {
                 return;
             }
-            atomicAdd(&grid[13], 1u);
+            atomicAdd(&grid[h + 13u], 1u);
             let leaf = bsh_nodes[node];
             let r = bsh_grid_pad(bsh_grid_reach(leaf, params.reach));
             for (var l = 0u; l < params.levels; l++) {
-                let d = cover_last(grid_levels[l], leaf, r) - cover_first(grid_levels[l], leaf, r) + vec3u(1u);
+                let d = bsh_grid_last(grid_levels[l], leaf.center, r) - bsh_grid_first(grid_levels[l], leaf.center, r) + vec3u(1u);
                 let n = d.x * d.y * d.z;
-                let at = 16u + 2u * l;
+                let at = h + 16u + 2u * l;
                 let old = atomicAdd(&grid[at], n);
                 if old + n < old {
                     atomicAdd(&grid[at + 1u], 1u);
@@ -111,55 +105,56 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
             if i != 0u {
                 return;
             }
-            let leaves = atomicLoad(&grid[13]);
+            let leaves = atomicLoad(&grid[h + 13u]);
             var chosen = params.levels;
             for (var l = 0u; l < params.levels; l++) {
                 let f = grid_levels[l];
                 let cells = f.nx * f.ny * f.nz;
                 let budget = min(bsh_grid_budget(leaves, cells), params.capacity);
-                if chosen == params.levels && atomicLoad(&grid[17u + 2u * l]) == 0u && atomicLoad(&grid[16u + 2u * l]) <= budget {
+                let at = h + 16u + 2u * l;
+                if chosen == params.levels && atomicLoad(&grid[at + 1u]) == 0u && atomicLoad(&grid[at]) <= budget {
                     chosen = l;
                 }
-                atomicStore(&grid[16u + 2u * l], 0u);
-                atomicStore(&grid[17u + 2u * l], 0u);
+                atomicStore(&grid[at], 0u);
+                atomicStore(&grid[at + 1u], 0u);
             }
-            atomicStore(&grid[13], 0u);
+            atomicStore(&grid[h + 13u], 0u);
             var f: GridFrame;
             if chosen < params.levels {
                 f = grid_levels[chosen];
             }
-            atomicStore(&grid[0], bitcast<u32>(f.lo.x));
-            atomicStore(&grid[1], bitcast<u32>(f.lo.y));
-            atomicStore(&grid[2], bitcast<u32>(f.lo.z));
-            atomicStore(&grid[3], f.nx);
-            atomicStore(&grid[4], bitcast<u32>(f.hi.x));
-            atomicStore(&grid[5], bitcast<u32>(f.hi.y));
-            atomicStore(&grid[6], bitcast<u32>(f.hi.z));
-            atomicStore(&grid[7], f.ny);
-            atomicStore(&grid[8], bitcast<u32>(f.inv.x));
-            atomicStore(&grid[9], bitcast<u32>(f.inv.y));
-            atomicStore(&grid[10], bitcast<u32>(f.inv.z));
-            atomicStore(&grid[11], f.nz);
-            atomicStore(&grid[12], bitcast<u32>(params.reach));
+            atomicStore(&grid[h], bitcast<u32>(f.lo.x));
+            atomicStore(&grid[h + 1u], bitcast<u32>(f.lo.y));
+            atomicStore(&grid[h + 2u], bitcast<u32>(f.lo.z));
+            atomicStore(&grid[h + 3u], f.nx);
+            atomicStore(&grid[h + 4u], bitcast<u32>(f.hi.x));
+            atomicStore(&grid[h + 5u], bitcast<u32>(f.hi.y));
+            atomicStore(&grid[h + 6u], bitcast<u32>(f.hi.z));
+            atomicStore(&grid[h + 7u], f.ny);
+            atomicStore(&grid[h + 8u], bitcast<u32>(f.inv.x));
+            atomicStore(&grid[h + 9u], bitcast<u32>(f.inv.y));
+            atomicStore(&grid[h + 10u], bitcast<u32>(f.inv.z));
+            atomicStore(&grid[h + 11u], f.nz);
+            atomicStore(&grid[h + 12u], bitcast<u32>(params.reach));
         }
         case 2u, 4u: {
             if i >= params.count {
                 return;
             }
-            let f = grid_frame();
+            let f = grid_frame(h);
             let node = grid_leaf(i);
             if f.nx == 0u || node == BSH_NONE {
                 return;
             }
             let leaf = bsh_nodes[node];
             let r = bsh_grid_pad(bsh_grid_reach(leaf, params.reach));
-            let a = cover_first(f, leaf, r);
-            let b = cover_last(f, leaf, r);
+            let a = bsh_grid_first(f, leaf.center, r);
+            let b = bsh_grid_last(f, leaf.center, r);
             for (var z = a.z; z <= b.z; z++) {
                 for (var y = a.y; y <= b.y; y++) {
                     for (var x = a.x; x <= b.x; x++) {
                         let c = (z * f.ny + y) * f.nx + x;
-                        let at = atomicAdd(&grid_fill[c], 1u);
+                        let at = atomicAdd(&grid_fill[params.fill + c], 1u);
                         if params.stage == 4u {
                             grid_entries[at] = i;
                         }
@@ -168,15 +163,15 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
             }
         }
         default: {
-            let f = grid_frame();
+            let f = grid_frame(h);
             if i >= f.nx * f.ny * f.nz {
                 return;
             }
-            atomicStore(&grid_fill[i], 0u);
+            atomicStore(&grid_fill[params.fill + i], 0u);
             // Appended in any order: insertion sort by rank, then each
             // rank's node.
-            let a = atomicLoad(&grid[GRID_HEADER + i]);
-            let b = atomicLoad(&grid[GRID_HEADER + i + 1u]);
+            let a = atomicLoad(&grid[starts + i]);
+            let b = atomicLoad(&grid[starts + i + 1u]);
             for (var s = a + 1u; s < b; s++) {
                 let v = grid_entries[s];
                 var c = s;

@@ -5,8 +5,12 @@ struct GridParams {
     capacity: u32,
     reach: f32,
     cells: u32,
+    header: u32,
+    fill: u32,
+    entries: u32,
     pad0_: u32,
     pad1_: u32,
+    pad2_: u32,
 }
 
 struct BshNode {
@@ -160,66 +164,64 @@ fn bsh_grid_axis(v: f32, lo: f32, inv: f32, n: u32) -> u32 {
     return min(_e9, (n - 1u));
 }
 
+fn bsh_grid_first(f_1: GridFrame, c_3: vec3<f32>, r: f32) -> vec3<u32> {
+    let _e10 = bsh_grid_axis((c_3.x - r), f_1.lo.x, f_1.inv.x, f_1.nx);
+    let _e18 = bsh_grid_axis((c_3.y - r), f_1.lo.y, f_1.inv.y, f_1.ny);
+    let _e26 = bsh_grid_axis((c_3.z - r), f_1.lo.z, f_1.inv.z, f_1.nz);
+    return vec3<u32>(_e10, _e18, _e26);
+}
+
+fn bsh_grid_last(f_2: GridFrame, c_4: vec3<f32>, r_1: f32) -> vec3<u32> {
+    let _e10 = bsh_grid_axis((c_4.x + r_1), f_2.lo.x, f_2.inv.x, f_2.nx);
+    let _e18 = bsh_grid_axis((c_4.y + r_1), f_2.lo.y, f_2.inv.y, f_2.ny);
+    let _e26 = bsh_grid_axis((c_4.z + r_1), f_2.lo.z, f_2.inv.z, f_2.nz);
+    return vec3<u32>(_e10, _e18, _e26);
+}
+
 fn grid_word(i: u32) -> u32 {
     let _e3 = atomicLoad((&grid[i]));
     return _e3;
 }
 
-fn grid_frame() -> GridFrame {
-    var f_1: GridFrame;
+fn grid_frame(h: u32) -> GridFrame {
+    var f_3: GridFrame;
 
-    let _e3 = grid_word(0u);
-    let _e6 = grid_word(1u);
-    let _e9 = grid_word(2u);
-    f_1.lo = vec3<f32>(bitcast<f32>(_e3), bitcast<f32>(_e6), bitcast<f32>(_e9));
-    let _e14 = grid_word(3u);
-    f_1.nx = _e14;
-    let _e17 = grid_word(4u);
-    let _e20 = grid_word(5u);
-    let _e23 = grid_word(6u);
-    f_1.hi = vec3<f32>(bitcast<f32>(_e17), bitcast<f32>(_e20), bitcast<f32>(_e23));
-    let _e28 = grid_word(7u);
-    f_1.ny = _e28;
-    let _e31 = grid_word(8u);
-    let _e34 = grid_word(9u);
-    let _e37 = grid_word(10u);
-    f_1.inv = vec3<f32>(bitcast<f32>(_e31), bitcast<f32>(_e34), bitcast<f32>(_e37));
-    let _e42 = grid_word(11u);
-    f_1.nz = _e42;
-    let _e43 = f_1;
-    return _e43;
+    let _e3 = grid_word(h);
+    let _e7 = grid_word((h + 1u));
+    let _e11 = grid_word((h + 2u));
+    f_3.lo = vec3<f32>(bitcast<f32>(_e3), bitcast<f32>(_e7), bitcast<f32>(_e11));
+    let _e17 = grid_word((h + 3u));
+    f_3.nx = _e17;
+    let _e21 = grid_word((h + 4u));
+    let _e25 = grid_word((h + 5u));
+    let _e29 = grid_word((h + 6u));
+    f_3.hi = vec3<f32>(bitcast<f32>(_e21), bitcast<f32>(_e25), bitcast<f32>(_e29));
+    let _e35 = grid_word((h + 7u));
+    f_3.ny = _e35;
+    let _e39 = grid_word((h + 8u));
+    let _e43 = grid_word((h + 9u));
+    let _e47 = grid_word((h + 10u));
+    f_3.inv = vec3<f32>(bitcast<f32>(_e39), bitcast<f32>(_e43), bitcast<f32>(_e47));
+    let _e53 = grid_word((h + 11u));
+    f_3.nz = _e53;
+    let _e54 = f_3;
+    return _e54;
 }
 
 fn grid_leaf(i_1: u32) -> u32 {
-    let node_5 = grid_leaves[i_1];
-    let _e7 = bsh_nodes[node_5].light;
+    let node_3 = grid_leaves[i_1];
+    let _e7 = bsh_nodes[node_3].light;
     if ((_e7 & BSH_TAIL) != 0u) {
         return BSH_NONE;
     }
-    return node_5;
-}
-
-fn cover_first(f_2: GridFrame, node_3: BshNode, r: f32) -> vec3<u32> {
-    let c_3 = node_3.center;
-    let _e11 = bsh_grid_axis((c_3.x - r), f_2.lo.x, f_2.inv.x, f_2.nx);
-    let _e19 = bsh_grid_axis((c_3.y - r), f_2.lo.y, f_2.inv.y, f_2.ny);
-    let _e27 = bsh_grid_axis((c_3.z - r), f_2.lo.z, f_2.inv.z, f_2.nz);
-    return vec3<u32>(_e11, _e19, _e27);
-}
-
-fn cover_last(f_3: GridFrame, node_4: BshNode, r_1: f32) -> vec3<u32> {
-    let c_4 = node_4.center;
-    let _e11 = bsh_grid_axis((c_4.x + r_1), f_3.lo.x, f_3.inv.x, f_3.nx);
-    let _e19 = bsh_grid_axis((c_4.y + r_1), f_3.lo.y, f_3.inv.y, f_3.ny);
-    let _e27 = bsh_grid_axis((c_4.z + r_1), f_3.lo.z, f_3.inv.z, f_3.nz);
-    return vec3<u32>(_e11, _e19, _e27);
+    return node_3;
 }
 
 @compute @workgroup_size(64, 1, 1) 
 fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     var sum: u32 = 0u;
     var c: u32;
-    var start: u32 = 0u;
+    var start: u32;
     var j: u32 = 0u;
     var c_1: u32;
     var l: u32 = 0u;
@@ -238,123 +240,130 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     var s_1: u32;
 
     let i_2 = gid.x;
-    let _e4 = params.stage;
-    if (_e4 == 3u) {
-        let _e7 = grid_frame();
-        let cells_1 = ((_e7.nx * _e7.ny) * _e7.nz);
+    let h_1 = params.header;
+    let starts = (h_1 + GRID_HEADER);
+    let _e9 = params.stage;
+    if (_e9 == 3u) {
+        let _e12 = grid_frame(h_1);
+        let cells_1 = ((_e12.nx * _e12.ny) * _e12.nz);
         let run = (((cells_1 + 64u) - 1u) / 64u);
         let a_1 = min((i_2 * run), cells_1);
         let b_1 = min((a_1 + run), cells_1);
         c = a_1;
         loop {
-            let _e26 = c;
-            if (_e26 < b_1) {
+            let _e31 = c;
+            if (_e31 < b_1) {
             } else {
                 break;
             }
             {
-                let _e28 = sum;
-                let _e30 = c;
-                let _e32 = atomicLoad((&grid_fill[_e30]));
-                sum = (_e28 + _e32);
+                let _e33 = sum;
+                let _e37 = params.fill;
+                let _e38 = c;
+                let _e41 = atomicLoad((&grid_fill[(_e37 + _e38)]));
+                sum = (_e33 + _e41);
             }
             continuing {
-                let _e35 = c;
-                c = (_e35 + 1u);
+                let _e44 = c;
+                c = (_e44 + 1u);
             }
         }
-        let _e39 = sum;
-        wg_sums[i_2] = _e39;
+        let _e48 = sum;
+        wg_sums[i_2] = _e48;
         workgroupBarrier();
+        let _e51 = params.entries;
+        start = _e51;
         loop {
-            let _e44 = j;
-            if (_e44 < i_2) {
+            let _e55 = j;
+            if (_e55 < i_2) {
             } else {
                 break;
             }
             {
-                let _e46 = start;
-                let _e48 = j;
-                let _e50 = wg_sums[_e48];
-                start = (_e46 + _e50);
+                let _e57 = start;
+                let _e59 = j;
+                let _e61 = wg_sums[_e59];
+                start = (_e57 + _e61);
             }
             continuing {
-                let _e53 = j;
-                j = (_e53 + 1u);
+                let _e64 = j;
+                j = (_e64 + 1u);
             }
         }
         c_1 = a_1;
         loop {
-            let _e56 = c_1;
-            if (_e56 < b_1) {
+            let _e67 = c_1;
+            if (_e67 < b_1) {
             } else {
                 break;
             }
             {
-                let _e59 = c_1;
-                let n_1 = atomicLoad((&grid_fill[_e59]));
-                let _e64 = c_1;
-                let _e67 = start;
-                atomicStore((&grid[(GRID_HEADER + _e64)]), _e67);
-                let _e69 = c_1;
-                let _e71 = start;
-                atomicStore((&grid_fill[_e69]), _e71);
-                let _e72 = start;
-                start = (_e72 + n_1);
+                let _e72 = params.fill;
+                let _e73 = c_1;
+                let n_1 = atomicLoad((&grid_fill[(_e72 + _e73)]));
+                let _e78 = c_1;
+                let _e81 = start;
+                atomicStore((&grid[(starts + _e78)]), _e81);
+                let _e85 = params.fill;
+                let _e86 = c_1;
+                let _e89 = start;
+                atomicStore((&grid_fill[(_e85 + _e86)]), _e89);
+                let _e90 = start;
+                start = (_e90 + n_1);
             }
             continuing {
-                let _e75 = c_1;
-                c_1 = (_e75 + 1u);
+                let _e93 = c_1;
+                c_1 = (_e93 + 1u);
             }
         }
         if ((i_2 + 1u) == 64u) {
-            let _e85 = start;
-            atomicStore((&grid[(GRID_HEADER + cells_1)]), _e85);
+            let _e102 = start;
+            atomicStore((&grid[(starts + cells_1)]), _e102);
         }
         return;
     }
-    let _e88 = params.stage;
-    switch _e88 {
+    let _e105 = params.stage;
+    switch _e105 {
         case 0u: {
-            let _e91 = params.count;
-            if (i_2 >= _e91) {
+            let _e108 = params.count;
+            if (i_2 >= _e108) {
                 return;
             }
-            let _e93 = grid_leaf(i_2);
-            if (_e93 == BSH_NONE) {
+            let _e110 = grid_leaf(i_2);
+            if (_e110 == BSH_NONE) {
                 return;
             }
-            let _e99 = atomicAdd((&grid[13]), 1u);
-            let leaf = bsh_nodes[_e93];
-            let _e105 = params.reach;
-            let _e106 = bsh_grid_reach(leaf, _e105);
-            let _e107 = bsh_grid_pad(_e106);
+            let _e118 = atomicAdd((&grid[(h_1 + 13u)]), 1u);
+            let leaf = bsh_nodes[_e110];
+            let _e124 = params.reach;
+            let _e125 = bsh_grid_reach(leaf, _e124);
+            let _e126 = bsh_grid_pad(_e125);
             loop {
-                let _e110 = l;
-                let _e113 = params.levels;
-                if (_e110 < _e113) {
+                let _e129 = l;
+                let _e132 = params.levels;
+                if (_e129 < _e132) {
                 } else {
                     break;
                 }
                 {
-                    let _e116 = l;
-                    let _e118 = grid_levels[_e116];
-                    let _e119 = cover_last(_e118, leaf, _e107);
-                    let _e121 = l;
-                    let _e123 = grid_levels[_e121];
-                    let _e124 = cover_first(_e123, leaf, _e107);
-                    let d = ((_e119 - _e124) + vec3(1u));
+                    let _e135 = l;
+                    let _e137 = grid_levels[_e135];
+                    let _e139 = bsh_grid_last(_e137, leaf.center, _e126);
+                    let _e141 = l;
+                    let _e143 = grid_levels[_e141];
+                    let _e145 = bsh_grid_first(_e143, leaf.center, _e126);
+                    let d = ((_e139 - _e145) + vec3(1u));
                     let n_2 = ((d.x * d.y) * d.z);
-                    let _e136 = l;
-                    let at = (16u + (2u * _e136));
-                    let _e141 = atomicAdd((&grid[at]), n_2);
-                    if ((_e141 + n_2) < _e141) {
-                        let _e149 = atomicAdd((&grid[(at + 1u)]), 1u);
+                    let _e158 = l;
+                    let at = ((h_1 + 16u) + (2u * _e158));
+                    let _e163 = atomicAdd((&grid[at]), n_2);
+                    if ((_e163 + n_2) < _e163) {
+                        let _e171 = atomicAdd((&grid[(at + 1u)]), 1u);
                     }
                 }
                 continuing {
-                    let _e151 = l;
-                    l = (_e151 + 1u);
+                    let _e173 = l;
+                    l = (_e173 + 1u);
                 }
             }
             return;
@@ -363,234 +372,234 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
             if (i_2 != 0u) {
                 return;
             }
-            let leaves_1 = atomicLoad((&grid[13]));
-            let _e160 = params.levels;
-            chosen = _e160;
+            let leaves_1 = atomicLoad((&grid[(h_1 + 13u)]));
+            let _e184 = params.levels;
+            chosen = _e184;
             loop {
-                let _e164 = l_1;
-                let _e167 = params.levels;
-                if (_e164 < _e167) {
+                let _e188 = l_1;
+                let _e191 = params.levels;
+                if (_e188 < _e191) {
                 } else {
                     break;
                 }
                 {
-                    let _e170 = l_1;
-                    let f_4 = grid_levels[_e170];
+                    let _e194 = l_1;
+                    let f_4 = grid_levels[_e194];
                     let cells_2 = ((f_4.nx * f_4.ny) * f_4.nz);
-                    let _e178 = bsh_grid_budget(leaves_1, cells_2);
-                    let _e181 = params.capacity;
-                    let budget = min(_e178, _e181);
-                    let _e183 = chosen;
-                    let _e186 = params.levels;
-                    if (_e183 == _e186) {
-                        let _e193 = l_1;
-                        let _e197 = atomicLoad((&grid[(17u + (2u * _e193))]));
-                        local = (_e197 == 0u);
+                    let _e202 = bsh_grid_budget(leaves_1, cells_2);
+                    let _e205 = params.capacity;
+                    let budget = min(_e202, _e205);
+                    let _e210 = l_1;
+                    let at_1 = ((h_1 + 16u) + (2u * _e210));
+                    let _e213 = chosen;
+                    let _e216 = params.levels;
+                    if (_e213 == _e216) {
+                        let _e224 = atomicLoad((&grid[(at_1 + 1u)]));
+                        local = (_e224 == 0u);
                     } else {
                         local = false;
                     }
-                    let _e201 = local;
-                    if _e201 {
-                        let _e207 = l_1;
-                        let _e211 = atomicLoad((&grid[(16u + (2u * _e207))]));
-                        local_1 = (_e211 <= budget);
+                    let _e228 = local;
+                    if _e228 {
+                        let _e233 = atomicLoad((&grid[at_1]));
+                        local_1 = (_e233 <= budget);
                     } else {
                         local_1 = false;
                     }
-                    let _e214 = local_1;
-                    if _e214 {
-                        let _e215 = l_1;
-                        chosen = _e215;
+                    let _e236 = local_1;
+                    if _e236 {
+                        let _e237 = l_1;
+                        chosen = _e237;
                     }
-                    let _e219 = l_1;
-                    atomicStore((&grid[(16u + (2u * _e219))]), 0u);
-                    let _e227 = l_1;
-                    atomicStore((&grid[(17u + (2u * _e227))]), 0u);
+                    atomicStore((&grid[at_1]), 0u);
+                    atomicStore((&grid[(at_1 + 1u)]), 0u);
                 }
                 continuing {
-                    let _e233 = l_1;
-                    l_1 = (_e233 + 1u);
+                    let _e247 = l_1;
+                    l_1 = (_e247 + 1u);
                 }
             }
-            atomicStore((&grid[13]), 0u);
-            let _e239 = chosen;
-            let _e242 = params.levels;
-            if (_e239 < _e242) {
-                let _e245 = chosen;
-                let _e247 = grid_levels[_e245];
-                f = _e247;
+            atomicStore((&grid[(h_1 + 13u)]), 0u);
+            let _e255 = chosen;
+            let _e258 = params.levels;
+            if (_e255 < _e258) {
+                let _e261 = chosen;
+                let _e263 = grid_levels[_e261];
+                f = _e263;
             }
-            let _e252 = f.lo.x;
-            atomicStore((&grid[0]), bitcast<u32>(_e252));
-            let _e258 = f.lo.y;
-            atomicStore((&grid[1]), bitcast<u32>(_e258));
-            let _e264 = f.lo.z;
-            atomicStore((&grid[2]), bitcast<u32>(_e264));
-            let _e269 = f.nx;
-            atomicStore((&grid[3]), _e269);
-            let _e274 = f.hi.x;
-            atomicStore((&grid[4]), bitcast<u32>(_e274));
-            let _e280 = f.hi.y;
-            atomicStore((&grid[5]), bitcast<u32>(_e280));
-            let _e286 = f.hi.z;
-            atomicStore((&grid[6]), bitcast<u32>(_e286));
-            let _e291 = f.ny;
-            atomicStore((&grid[7]), _e291);
-            let _e296 = f.inv.x;
-            atomicStore((&grid[8]), bitcast<u32>(_e296));
-            let _e302 = f.inv.y;
-            atomicStore((&grid[9]), bitcast<u32>(_e302));
-            let _e308 = f.inv.z;
-            atomicStore((&grid[10]), bitcast<u32>(_e308));
-            let _e313 = f.nz;
-            atomicStore((&grid[11]), _e313);
-            let _e318 = params.reach;
-            atomicStore((&grid[12]), bitcast<u32>(_e318));
+            let _e268 = f.lo.x;
+            atomicStore((&grid[h_1]), bitcast<u32>(_e268));
+            let _e276 = f.lo.y;
+            atomicStore((&grid[(h_1 + 1u)]), bitcast<u32>(_e276));
+            let _e284 = f.lo.z;
+            atomicStore((&grid[(h_1 + 2u)]), bitcast<u32>(_e284));
+            let _e291 = f.nx;
+            atomicStore((&grid[(h_1 + 3u)]), _e291);
+            let _e298 = f.hi.x;
+            atomicStore((&grid[(h_1 + 4u)]), bitcast<u32>(_e298));
+            let _e306 = f.hi.y;
+            atomicStore((&grid[(h_1 + 5u)]), bitcast<u32>(_e306));
+            let _e314 = f.hi.z;
+            atomicStore((&grid[(h_1 + 6u)]), bitcast<u32>(_e314));
+            let _e321 = f.ny;
+            atomicStore((&grid[(h_1 + 7u)]), _e321);
+            let _e328 = f.inv.x;
+            atomicStore((&grid[(h_1 + 8u)]), bitcast<u32>(_e328));
+            let _e336 = f.inv.y;
+            atomicStore((&grid[(h_1 + 9u)]), bitcast<u32>(_e336));
+            let _e344 = f.inv.z;
+            atomicStore((&grid[(h_1 + 10u)]), bitcast<u32>(_e344));
+            let _e351 = f.nz;
+            atomicStore((&grid[(h_1 + 11u)]), _e351);
+            let _e358 = params.reach;
+            atomicStore((&grid[(h_1 + 12u)]), bitcast<u32>(_e358));
             return;
         }
         case 2u, 4u: {
-            let _e322 = params.count;
-            if (i_2 >= _e322) {
+            let _e362 = params.count;
+            if (i_2 >= _e362) {
                 return;
             }
-            let _e324 = grid_frame();
-            let _e325 = grid_leaf(i_2);
-            if !((_e324.nx == 0u)) {
-                local_2 = (_e325 == BSH_NONE);
+            let _e364 = grid_frame(h_1);
+            let _e365 = grid_leaf(i_2);
+            if !((_e364.nx == 0u)) {
+                local_2 = (_e365 == BSH_NONE);
             } else {
                 local_2 = true;
             }
-            let _e335 = local_2;
-            if _e335 {
+            let _e375 = local_2;
+            if _e375 {
                 return;
             }
-            let leaf_1 = bsh_nodes[_e325];
-            let _e341 = params.reach;
-            let _e342 = bsh_grid_reach(leaf_1, _e341);
-            let _e343 = bsh_grid_pad(_e342);
-            let _e344 = cover_first(_e324, leaf_1, _e343);
-            let _e345 = cover_last(_e324, leaf_1, _e343);
-            z = _e344.z;
+            let leaf_1 = bsh_nodes[_e365];
+            let _e381 = params.reach;
+            let _e382 = bsh_grid_reach(leaf_1, _e381);
+            let _e383 = bsh_grid_pad(_e382);
+            let _e385 = bsh_grid_first(_e364, leaf_1.center, _e383);
+            let _e387 = bsh_grid_last(_e364, leaf_1.center, _e383);
+            z = _e385.z;
             loop {
-                let _e348 = z;
-                if (_e348 <= _e345.z) {
+                let _e390 = z;
+                if (_e390 <= _e387.z) {
                 } else {
                     break;
                 }
                 {
-                    y = _e344.y;
+                    y = _e385.y;
                     loop {
-                        let _e353 = y;
-                        if (_e353 <= _e345.y) {
+                        let _e395 = y;
+                        if (_e395 <= _e387.y) {
                         } else {
                             break;
                         }
                         {
-                            x = _e344.x;
+                            x = _e385.x;
                             loop {
-                                let _e358 = x;
-                                if (_e358 <= _e345.x) {
+                                let _e400 = x;
+                                if (_e400 <= _e387.x) {
                                 } else {
                                     break;
                                 }
                                 {
-                                    let _e361 = z;
-                                    let _e364 = y;
-                                    let _e368 = x;
-                                    let c_5 = ((((_e361 * _e324.ny) + _e364) * _e324.nx) + _e368);
-                                    let _e373 = atomicAdd((&grid_fill[c_5]), 1u);
-                                    let _e376 = params.stage;
-                                    if (_e376 == 4u) {
-                                        grid_entries[_e373] = i_2;
+                                    let _e403 = z;
+                                    let _e406 = y;
+                                    let _e410 = x;
+                                    let c_5 = ((((_e403 * _e364.ny) + _e406) * _e364.nx) + _e410);
+                                    let _e415 = params.fill;
+                                    let _e419 = atomicAdd((&grid_fill[(_e415 + c_5)]), 1u);
+                                    let _e422 = params.stage;
+                                    if (_e422 == 4u) {
+                                        grid_entries[_e419] = i_2;
                                     }
                                 }
                                 continuing {
-                                    let _e382 = x;
-                                    x = (_e382 + 1u);
+                                    let _e428 = x;
+                                    x = (_e428 + 1u);
                                 }
                             }
                         }
                         continuing {
-                            let _e385 = y;
-                            y = (_e385 + 1u);
+                            let _e431 = y;
+                            y = (_e431 + 1u);
                         }
                     }
                 }
                 continuing {
-                    let _e388 = z;
-                    z = (_e388 + 1u);
+                    let _e434 = z;
+                    z = (_e434 + 1u);
                 }
             }
             return;
         }
         default: {
-            let _e390 = grid_frame();
-            if (i_2 >= ((_e390.nx * _e390.ny) * _e390.nz)) {
+            let _e436 = grid_frame(h_1);
+            if (i_2 >= ((_e436.nx * _e436.ny) * _e436.nz)) {
                 return;
             }
-            atomicStore((&grid_fill[i_2]), 0u);
-            let a_2 = atomicLoad((&grid[(GRID_HEADER + i_2)]));
-            let b_2 = atomicLoad((&grid[((GRID_HEADER + i_2) + 1u)]));
+            let _e446 = params.fill;
+            atomicStore((&grid_fill[(_e446 + i_2)]), 0u);
+            let a_2 = atomicLoad((&grid[(starts + i_2)]));
+            let b_2 = atomicLoad((&grid[((starts + i_2) + 1u)]));
             s = (a_2 + 1u);
             loop {
-                let _e415 = s;
-                if (_e415 < b_2) {
+                let _e463 = s;
+                if (_e463 < b_2) {
                 } else {
                     break;
                 }
                 {
-                    let _e418 = s;
-                    let v_1 = grid_entries[_e418];
-                    let _e421 = s;
-                    c_2 = _e421;
+                    let _e466 = s;
+                    let v_1 = grid_entries[_e466];
+                    let _e469 = s;
+                    c_2 = _e469;
                     loop {
-                        let _e423 = c_2;
-                        if (_e423 > a_2) {
-                            let _e428 = c_2;
-                            let _e432 = grid_entries[(_e428 - 1u)];
-                            local_3 = (_e432 > v_1);
+                        let _e471 = c_2;
+                        if (_e471 > a_2) {
+                            let _e476 = c_2;
+                            let _e480 = grid_entries[(_e476 - 1u)];
+                            local_3 = (_e480 > v_1);
                         } else {
                             local_3 = false;
                         }
-                        let _e435 = local_3;
-                        if _e435 {
+                        let _e483 = local_3;
+                        if _e483 {
                         } else {
                             break;
                         }
                         {
-                            let _e437 = c_2;
-                            let _e440 = c_2;
-                            let _e444 = grid_entries[(_e440 - 1u)];
-                            grid_entries[_e437] = _e444;
-                            let _e445 = c_2;
-                            c_2 = (_e445 - 1u);
+                            let _e485 = c_2;
+                            let _e488 = c_2;
+                            let _e492 = grid_entries[(_e488 - 1u)];
+                            grid_entries[_e485] = _e492;
+                            let _e493 = c_2;
+                            c_2 = (_e493 - 1u);
                         }
                     }
-                    let _e449 = c_2;
-                    grid_entries[_e449] = v_1;
+                    let _e497 = c_2;
+                    grid_entries[_e497] = v_1;
                 }
                 continuing {
-                    let _e452 = s;
-                    s = (_e452 + 1u);
+                    let _e500 = s;
+                    s = (_e500 + 1u);
                 }
             }
             s_1 = a_2;
             loop {
-                let _e455 = s_1;
-                if (_e455 < b_2) {
+                let _e503 = s_1;
+                if (_e503 < b_2) {
                 } else {
                     break;
                 }
                 {
-                    let _e458 = s_1;
-                    let _e462 = s_1;
-                    let _e464 = grid_entries[_e462];
-                    let _e466 = grid_leaves[_e464];
-                    grid_entries[_e458] = _e466;
+                    let _e506 = s_1;
+                    let _e510 = s_1;
+                    let _e512 = grid_entries[_e510];
+                    let _e514 = grid_leaves[_e512];
+                    grid_entries[_e506] = _e514;
                 }
                 continuing {
-                    let _e468 = s_1;
-                    s_1 = (_e468 + 1u);
+                    let _e516 = s_1;
+                    s_1 = (_e516 + 1u);
                 }
             }
             return;

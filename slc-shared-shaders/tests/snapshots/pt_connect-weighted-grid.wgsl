@@ -678,12 +678,12 @@ fn diffuse_brdf(base_5: vec3<f32>, metallic_1: f32, f0_d_1: vec3<f32>, f90_d_1: 
 }
 
 fn half_cosine(v: vec3<f32>, l: vec3<f32>) -> f32 {
-    let h_4 = (v + l);
-    let len2_ = dot(h_4, h_4);
+    let h_7 = (v + l);
+    let len2_ = dot(h_7, h_7);
     if (len2_ <= 0f) {
         return 0f;
     }
-    return saturate((dot(v, h_4) / sqrt(len2_)));
+    return saturate((dot(v, h_7) / sqrt(len2_)));
 }
 
 fn specular_brdf(base_6: vec3<f32>, metallic_2: f32, f0_d_2: vec3<f32>, f90_d_2: f32, alpha_3: f32, n_7: vec3<f32>, v_1: vec3<f32>, l_1: vec3<f32>) -> vec3<f32> {
@@ -702,10 +702,10 @@ fn specular_brdf(base_6: vec3<f32>, metallic_2: f32, f0_d_2: vec3<f32>, f90_d_2:
     }
     let hs = (v_1 + l_1);
     let inv_1 = (1f / sqrt(dot(hs, hs)));
-    let h_5 = (hs * inv_1);
-    let c_13 = cross(n_7, h_5);
-    let _e32 = ggx_d(dot(n_7, h_5), dot(c_13, c_13), alpha_3);
-    let _e34 = specular_fresnel(base_6, metallic_2, f0_d_2, f90_d_2, dot(v_1, h_5));
+    let h_8 = (hs * inv_1);
+    let c_13 = cross(n_7, h_8);
+    let _e32 = ggx_d(dot(n_7, h_8), dot(c_13, c_13), alpha_3);
+    let _e34 = specular_fresnel(base_6, metallic_2, f0_d_2, f90_d_2, dot(v_1, h_8));
     let _e35 = smith_visibility(n_l_1, n_v_2, alpha_3);
     return (_e34 * (_e32 * _e35));
 }
@@ -1407,38 +1407,39 @@ fn grid_word(i_4: u32) -> u32 {
     return _e3;
 }
 
-fn grid_frame() -> GridFrame {
+fn grid_frame(h_1: u32) -> GridFrame {
     var f_1: GridFrame;
 
-    let _e3 = grid_word(0u);
-    let _e6 = grid_word(1u);
-    let _e9 = grid_word(2u);
-    f_1.lo = vec3<f32>(bitcast<f32>(_e3), bitcast<f32>(_e6), bitcast<f32>(_e9));
-    let _e14 = grid_word(3u);
-    f_1.nx = _e14;
-    let _e17 = grid_word(4u);
-    let _e20 = grid_word(5u);
-    let _e23 = grid_word(6u);
-    f_1.hi = vec3<f32>(bitcast<f32>(_e17), bitcast<f32>(_e20), bitcast<f32>(_e23));
-    let _e28 = grid_word(7u);
-    f_1.ny = _e28;
-    let _e31 = grid_word(8u);
-    let _e34 = grid_word(9u);
-    let _e37 = grid_word(10u);
-    f_1.inv = vec3<f32>(bitcast<f32>(_e31), bitcast<f32>(_e34), bitcast<f32>(_e37));
-    let _e42 = grid_word(11u);
-    f_1.nz = _e42;
-    let _e43 = f_1;
-    return _e43;
+    let _e3 = grid_word(h_1);
+    let _e7 = grid_word((h_1 + 1u));
+    let _e11 = grid_word((h_1 + 2u));
+    f_1.lo = vec3<f32>(bitcast<f32>(_e3), bitcast<f32>(_e7), bitcast<f32>(_e11));
+    let _e17 = grid_word((h_1 + 3u));
+    f_1.nx = _e17;
+    let _e21 = grid_word((h_1 + 4u));
+    let _e25 = grid_word((h_1 + 5u));
+    let _e29 = grid_word((h_1 + 6u));
+    f_1.hi = vec3<f32>(bitcast<f32>(_e21), bitcast<f32>(_e25), bitcast<f32>(_e29));
+    let _e35 = grid_word((h_1 + 7u));
+    f_1.ny = _e35;
+    let _e39 = grid_word((h_1 + 8u));
+    let _e43 = grid_word((h_1 + 9u));
+    let _e47 = grid_word((h_1 + 10u));
+    f_1.inv = vec3<f32>(bitcast<f32>(_e39), bitcast<f32>(_e43), bitcast<f32>(_e47));
+    let _e53 = grid_word((h_1 + 11u));
+    f_1.nz = _e53;
+    let _e54 = f_1;
+    return _e54;
 }
 
-fn grid_reach() -> f32 {
-    let _e1 = grid_word(12u);
-    return bitcast<f32>(_e1);
+fn grid_reach(h_2: u32) -> f32 {
+    let _e3 = grid_word((h_2 + 12u));
+    return bitcast<f32>(_e3);
 }
 
 fn bsh_cursor(x_13: vec3<f32>, r_7: vec3<f32>, rl_5: vec4<f32>) -> BshCursor {
     var c_7: BshCursor;
+    var h_3: u32 = 0u;
     var local_27: bool;
     var local_28: bool;
 
@@ -1446,34 +1447,43 @@ fn bsh_cursor(x_13: vec3<f32>, r_7: vec3<f32>, rl_5: vec4<f32>) -> BshCursor {
     c_7.end = 0u;
     let _e10 = bsh_first(BSH);
     c_7.next = _e10;
-    let _e11 = grid_frame();
-    let _e13 = c_7.next;
-    if (_e13 != BSH_NONE) {
-        local_27 = (_e11.nx > 0u);
+    let _e15 = grid_reach(0u);
+    if (rl_5.w > _e15) {
+        let _e18 = grid_word(14u);
+        h_3 = _e18;
+    }
+    let _e19 = h_3;
+    let _e20 = grid_frame(_e19);
+    let _e22 = c_7.next;
+    if (_e22 != BSH_NONE) {
+        local_27 = (_e20.nx > 0u);
     } else {
         local_27 = false;
     }
-    let _e22 = local_27;
-    if _e22 {
-        let _e26 = grid_reach();
-        local_28 = (rl_5.w <= _e26);
+    let _e31 = local_27;
+    if _e31 {
+        let _e35 = h_3;
+        let _e36 = grid_reach(_e35);
+        local_28 = (rl_5.w <= _e36);
     } else {
         local_28 = false;
     }
-    let _e29 = local_28;
-    if _e29 {
-        let _e30 = bsh_grid_cell(_e11, x_13);
-        if (_e30 != BSH_NONE) {
-            let _e38 = grid[(GRID_HEADER + _e30)];
-            c_7.i = _e38;
-            let _e46 = grid[((GRID_HEADER + _e30) + 1u)];
-            c_7.end = _e46;
-            let _e51 = bsh_nodes[0].next;
-            c_7.next = _e51;
+    let _e39 = local_28;
+    if _e39 {
+        let _e40 = bsh_grid_cell(_e20, x_13);
+        if (_e40 != BSH_NONE) {
+            let _e45 = h_3;
+            let _e50 = grid[((_e45 + GRID_HEADER) + _e40)];
+            c_7.i = _e50;
+            let _e53 = h_3;
+            let _e60 = grid[(((_e53 + GRID_HEADER) + _e40) + 1u)];
+            c_7.end = _e60;
+            let _e65 = bsh_nodes[0].next;
+            c_7.next = _e65;
         }
     }
-    let _e52 = c_7;
-    return _e52;
+    let _e66 = c_7;
+    return _e66;
 }
 
 fn bsh_cursor_next(c_8: ptr<function, BshCursor>, x_14: vec3<f32>, r_8: vec3<f32>, rl_6: vec4<f32>) -> u32 {
@@ -1505,11 +1515,11 @@ fn bsh_cursor_next(c_8: ptr<function, BshCursor>, x_14: vec3<f32>, r_8: vec3<f32
     return _e25;
 }
 
-fn next_threshold(sum_1: f32, h_1: ptr<function, u32>) -> f32 {
-    let _e2 = (*h_1);
+fn next_threshold(sum_1: f32, h_4: ptr<function, u32>) -> f32 {
+    let _e2 = (*h_4);
     let _e3 = pcg_hash(_e2);
-    (*h_1) = _e3;
-    let _e4 = (*h_1);
+    (*h_4) = _e3;
+    let _e4 = (*h_4);
     let _e5 = xi_from_bits(_e4);
     let _e6 = weighted_threshold(sum_1, _e5);
     return _e6;
@@ -1613,18 +1623,18 @@ fn light_pdf(li_6: u32, x_22: vec3<f32>, n_20: vec3<f32>, r_13: vec3<f32>, lobe_
     return _e10;
 }
 
-fn weighted_picks(h_2: u32) -> WeightedPicks {
+fn weighted_picks(h_5: u32) -> WeightedPicks {
     var picks: WeightedPicks;
 
     picks.w_sum = 0f;
     picks.n = 0u;
-    picks.h = h_2;
+    picks.h = h_5;
     let _e7 = picks;
     return _e7;
 }
 
 fn weighted_offer(picks_1: ptr<function, WeightedPicks>, li_7: u32, w_9: f32) {
-    var h_3: u32;
+    var h_6: u32;
     var s_3: u32 = 0u;
 
     let _e4 = (*picks_1).n;
@@ -1633,7 +1643,7 @@ fn weighted_offer(picks_1: ptr<function, WeightedPicks>, li_7: u32, w_9: f32) {
         let _e10 = (*picks_1).w_sum;
         (*picks_1).w_sum = (_e10 + w_9);
         let _e13 = (*picks_1).h;
-        h_3 = _e13;
+        h_6 = _e13;
         loop {
             let _e17 = s_3;
             if (_e17 < K) {
@@ -1651,7 +1661,7 @@ fn weighted_offer(picks_1: ptr<function, WeightedPicks>, li_7: u32, w_9: f32) {
                     (*picks_1).w[_e31] = w_9;
                     let _e34 = s_3;
                     let _e37 = (*picks_1).w_sum;
-                    let _e38 = next_threshold(_e37, (&h_3));
+                    let _e38 = next_threshold(_e37, (&h_6));
                     (*picks_1).threshold[_e34] = _e38;
                 }
             }
@@ -1660,7 +1670,7 @@ fn weighted_offer(picks_1: ptr<function, WeightedPicks>, li_7: u32, w_9: f32) {
                 s_3 = (_e40 + 1u);
             }
         }
-        let _e43 = h_3;
+        let _e43 = h_6;
         (*picks_1).h = _e43;
         return;
     } else {

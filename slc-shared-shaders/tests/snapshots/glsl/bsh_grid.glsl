@@ -10,8 +10,12 @@ struct GridParams {
     uint capacity;
     float reach;
     uint cells;
+    uint header;
+    uint fill;
+    uint entries;
     uint pad0_;
     uint pad1_;
+    uint pad2_;
 };
 struct BshNode {
     vec3 center;
@@ -163,58 +167,56 @@ uint bsh_grid_axis(float v, float lo, float inv, uint n) {
     return min(_e9, (n - 1u));
 }
 
+uvec3 bsh_grid_first(GridFrame f_1, vec3 c_3, float r) {
+    uint _e10 = bsh_grid_axis((c_3.x - r), f_1.lo.x, f_1.inv.x, f_1.nx);
+    uint _e18 = bsh_grid_axis((c_3.y - r), f_1.lo.y, f_1.inv.y, f_1.ny);
+    uint _e26 = bsh_grid_axis((c_3.z - r), f_1.lo.z, f_1.inv.z, f_1.nz);
+    return uvec3(_e10, _e18, _e26);
+}
+
+uvec3 bsh_grid_last(GridFrame f_2, vec3 c_4, float r_1) {
+    uint _e10 = bsh_grid_axis((c_4.x + r_1), f_2.lo.x, f_2.inv.x, f_2.nx);
+    uint _e18 = bsh_grid_axis((c_4.y + r_1), f_2.lo.y, f_2.inv.y, f_2.ny);
+    uint _e26 = bsh_grid_axis((c_4.z + r_1), f_2.lo.z, f_2.inv.z, f_2.nz);
+    return uvec3(_e10, _e18, _e26);
+}
+
 uint grid_word(uint i) {
     uint _e3 = atomicOr(_group_0_binding_4_cs[i], 0u);
     return _e3;
 }
 
-GridFrame grid_frame() {
-    GridFrame f_1 = GridFrame(vec3(0.0), 0u, vec3(0.0), 0u, vec3(0.0), 0u);
-    uint _e3 = grid_word(0u);
-    uint _e6 = grid_word(1u);
-    uint _e9 = grid_word(2u);
-    f_1.lo = vec3(uintBitsToFloat(_e3), uintBitsToFloat(_e6), uintBitsToFloat(_e9));
-    uint _e14 = grid_word(3u);
-    f_1.nx = _e14;
-    uint _e17 = grid_word(4u);
-    uint _e20 = grid_word(5u);
-    uint _e23 = grid_word(6u);
-    f_1.hi = vec3(uintBitsToFloat(_e17), uintBitsToFloat(_e20), uintBitsToFloat(_e23));
-    uint _e28 = grid_word(7u);
-    f_1.ny = _e28;
-    uint _e31 = grid_word(8u);
-    uint _e34 = grid_word(9u);
-    uint _e37 = grid_word(10u);
-    f_1.inv = vec3(uintBitsToFloat(_e31), uintBitsToFloat(_e34), uintBitsToFloat(_e37));
-    uint _e42 = grid_word(11u);
-    f_1.nz = _e42;
-    GridFrame _e43 = f_1;
-    return _e43;
+GridFrame grid_frame(uint h) {
+    GridFrame f_3 = GridFrame(vec3(0.0), 0u, vec3(0.0), 0u, vec3(0.0), 0u);
+    uint _e3 = grid_word(h);
+    uint _e7 = grid_word((h + 1u));
+    uint _e11 = grid_word((h + 2u));
+    f_3.lo = vec3(uintBitsToFloat(_e3), uintBitsToFloat(_e7), uintBitsToFloat(_e11));
+    uint _e17 = grid_word((h + 3u));
+    f_3.nx = _e17;
+    uint _e21 = grid_word((h + 4u));
+    uint _e25 = grid_word((h + 5u));
+    uint _e29 = grid_word((h + 6u));
+    f_3.hi = vec3(uintBitsToFloat(_e21), uintBitsToFloat(_e25), uintBitsToFloat(_e29));
+    uint _e35 = grid_word((h + 7u));
+    f_3.ny = _e35;
+    uint _e39 = grid_word((h + 8u));
+    uint _e43 = grid_word((h + 9u));
+    uint _e47 = grid_word((h + 10u));
+    f_3.inv = vec3(uintBitsToFloat(_e39), uintBitsToFloat(_e43), uintBitsToFloat(_e47));
+    uint _e53 = grid_word((h + 11u));
+    f_3.nz = _e53;
+    GridFrame _e54 = f_3;
+    return _e54;
 }
 
 uint grid_leaf(uint i_1) {
-    uint node_5 = _group_0_binding_2_cs[i_1];
-    uint _e7 = _group_0_binding_1_cs[node_5].light;
+    uint node_3 = _group_0_binding_2_cs[i_1];
+    uint _e7 = _group_0_binding_1_cs[node_3].light;
     if (((_e7 & BSH_TAIL) != 0u)) {
         return BSH_NONE;
     }
-    return node_5;
-}
-
-uvec3 cover_first(GridFrame f_2, BshNode node_3, float r) {
-    vec3 c_3 = node_3.center;
-    uint _e11 = bsh_grid_axis((c_3.x - r), f_2.lo.x, f_2.inv.x, f_2.nx);
-    uint _e19 = bsh_grid_axis((c_3.y - r), f_2.lo.y, f_2.inv.y, f_2.ny);
-    uint _e27 = bsh_grid_axis((c_3.z - r), f_2.lo.z, f_2.inv.z, f_2.nz);
-    return uvec3(_e11, _e19, _e27);
-}
-
-uvec3 cover_last(GridFrame f_3, BshNode node_4, float r_1) {
-    vec3 c_4 = node_4.center;
-    uint _e11 = bsh_grid_axis((c_4.x + r_1), f_3.lo.x, f_3.inv.x, f_3.nx);
-    uint _e19 = bsh_grid_axis((c_4.y + r_1), f_3.lo.y, f_3.inv.y, f_3.ny);
-    uint _e27 = bsh_grid_axis((c_4.z + r_1), f_3.lo.z, f_3.inv.z, f_3.nz);
-    return uvec3(_e11, _e19, _e27);
+    return node_3;
 }
 
 void main() {
@@ -244,10 +246,12 @@ void main() {
     bool local_3 = false;
     uint s_1 = 0u;
     uint i_2 = gid.x;
-    uint _e4 = _group_0_binding_0_cs.stage;
-    if ((_e4 == 3u)) {
-        GridFrame _e7 = grid_frame();
-        uint cells_1 = ((_e7.nx * _e7.ny) * _e7.nz);
+    uint h_1 = _group_0_binding_0_cs.header;
+    uint starts = (h_1 + GRID_HEADER);
+    uint _e9 = _group_0_binding_0_cs.stage;
+    if ((_e9 == 3u)) {
+        GridFrame _e12 = grid_frame(h_1);
+        uint cells_1 = ((_e12.nx * _e12.ny) * _e12.nz);
         uint run = (((cells_1 + 64u) - 1u) / 64u);
         uint a_1 = min((i_2 * run), cells_1);
         uint b_1 = min((a_1 + run), cells_1);
@@ -255,120 +259,125 @@ void main() {
         bool loop_init = true;
         while(true) {
             if (!loop_init) {
-                uint _e35 = c;
-                c = (_e35 + 1u);
+                uint _e44 = c;
+                c = (_e44 + 1u);
             }
             loop_init = false;
-            uint _e26 = c;
-            if ((_e26 < b_1)) {
+            uint _e31 = c;
+            if ((_e31 < b_1)) {
             } else {
                 break;
             }
             {
-                uint _e28 = sum;
-                uint _e30 = c;
-                uint _e32 = atomicOr(_group_0_binding_5_cs[_e30], 0u);
-                sum = (_e28 + _e32);
+                uint _e33 = sum;
+                uint _e37 = _group_0_binding_0_cs.fill;
+                uint _e38 = c;
+                uint _e41 = atomicOr(_group_0_binding_5_cs[(_e37 + _e38)], 0u);
+                sum = (_e33 + _e41);
             }
         }
-        uint _e39 = sum;
-        wg_sums[i_2] = _e39;
+        uint _e48 = sum;
+        wg_sums[i_2] = _e48;
         memoryBarrierShared();
         barrier();
+        uint _e51 = _group_0_binding_0_cs.entries;
+        start = _e51;
         bool loop_init_1 = true;
         while(true) {
             if (!loop_init_1) {
-                uint _e53 = j;
-                j = (_e53 + 1u);
+                uint _e64 = j;
+                j = (_e64 + 1u);
             }
             loop_init_1 = false;
-            uint _e44 = j;
-            if ((_e44 < i_2)) {
+            uint _e55 = j;
+            if ((_e55 < i_2)) {
             } else {
                 break;
             }
             {
-                uint _e46 = start;
-                uint _e48 = j;
-                uint _e50 = wg_sums[_e48];
-                start = (_e46 + _e50);
+                uint _e57 = start;
+                uint _e59 = j;
+                uint _e61 = wg_sums[_e59];
+                start = (_e57 + _e61);
             }
         }
         c_1 = a_1;
         bool loop_init_2 = true;
         while(true) {
             if (!loop_init_2) {
-                uint _e75 = c_1;
-                c_1 = (_e75 + 1u);
+                uint _e93 = c_1;
+                c_1 = (_e93 + 1u);
             }
             loop_init_2 = false;
-            uint _e56 = c_1;
-            if ((_e56 < b_1)) {
+            uint _e67 = c_1;
+            if ((_e67 < b_1)) {
             } else {
                 break;
             }
             {
-                uint _e59 = c_1;
-                uint n_1 = atomicOr(_group_0_binding_5_cs[_e59], 0u);
-                uint _e64 = c_1;
-                uint _e67 = start;
-                atomicExchange(_group_0_binding_4_cs[(GRID_HEADER + _e64)], _e67);
-                uint _e69 = c_1;
-                uint _e71 = start;
-                atomicExchange(_group_0_binding_5_cs[_e69], _e71);
-                uint _e72 = start;
-                start = (_e72 + n_1);
+                uint _e72 = _group_0_binding_0_cs.fill;
+                uint _e73 = c_1;
+                uint n_1 = atomicOr(_group_0_binding_5_cs[(_e72 + _e73)], 0u);
+                uint _e78 = c_1;
+                uint _e81 = start;
+                atomicExchange(_group_0_binding_4_cs[(starts + _e78)], _e81);
+                uint _e85 = _group_0_binding_0_cs.fill;
+                uint _e86 = c_1;
+                uint _e89 = start;
+                atomicExchange(_group_0_binding_5_cs[(_e85 + _e86)], _e89);
+                uint _e90 = start;
+                start = (_e90 + n_1);
             }
         }
         if (((i_2 + 1u) == 64u)) {
-            uint _e85 = start;
-            atomicExchange(_group_0_binding_4_cs[(GRID_HEADER + cells_1)], _e85);
+            uint _e102 = start;
+            atomicExchange(_group_0_binding_4_cs[(starts + cells_1)], _e102);
         }
         return;
     }
-    uint _e88 = _group_0_binding_0_cs.stage;
-    switch(_e88) {
+    uint _e105 = _group_0_binding_0_cs.stage;
+    switch(_e105) {
         case 0u: {
-            uint _e91 = _group_0_binding_0_cs.count;
-            if ((i_2 >= _e91)) {
+            uint _e108 = _group_0_binding_0_cs.count;
+            if ((i_2 >= _e108)) {
                 return;
             }
-            uint _e93 = grid_leaf(i_2);
-            if ((_e93 == BSH_NONE)) {
+            uint _e110 = grid_leaf(i_2);
+            if ((_e110 == BSH_NONE)) {
                 return;
             }
-            uint _e99 = atomicAdd(_group_0_binding_4_cs[13], 1u);
-            BshNode leaf = _group_0_binding_1_cs[_e93];
-            float _e105 = _group_0_binding_0_cs.reach;
-            float _e106 = bsh_grid_reach(leaf, _e105);
-            float _e107 = bsh_grid_pad(_e106);
+            uint _e118 = atomicAdd(_group_0_binding_4_cs[(h_1 + 13u)], 1u);
+            BshNode leaf = _group_0_binding_1_cs[_e110];
+            float _e124 = _group_0_binding_0_cs.reach;
+            float _e125 = bsh_grid_reach(leaf, _e124);
+            float _e126 = bsh_grid_pad(_e125);
             bool loop_init_3 = true;
             while(true) {
                 if (!loop_init_3) {
-                    uint _e151 = l;
-                    l = (_e151 + 1u);
+                    uint _e173 = l;
+                    l = (_e173 + 1u);
                 }
                 loop_init_3 = false;
-                uint _e110 = l;
-                uint _e113 = _group_0_binding_0_cs.levels;
-                if ((_e110 < _e113)) {
+                uint _e129 = l;
+                uint _e132 = _group_0_binding_0_cs.levels;
+                if ((_e129 < _e132)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e116 = l;
-                    GridFrame _e118 = _group_0_binding_3_cs[_e116];
-                    uvec3 _e119 = cover_last(_e118, leaf, _e107);
-                    uint _e121 = l;
-                    GridFrame _e123 = _group_0_binding_3_cs[_e121];
-                    uvec3 _e124 = cover_first(_e123, leaf, _e107);
-                    uvec3 d = ((_e119 - _e124) + uvec3(1u));
+                    uint _e135 = l;
+                    GridFrame _e137 = _group_0_binding_3_cs[_e135];
+                    uvec3 _e139 = bsh_grid_last(_e137, leaf.center, _e126);
+                    uint _e141 = l;
+                    GridFrame _e143 = _group_0_binding_3_cs[_e141];
+                    uvec3 _e145 = bsh_grid_first(_e143, leaf.center, _e126);
+                    uvec3 d = ((_e139 - _e145) + uvec3(1u));
                     uint n_2 = ((d.x * d.y) * d.z);
-                    uint _e136 = l;
-                    uint at = (16u + (2u * _e136));
-                    uint _e141 = atomicAdd(_group_0_binding_4_cs[at], n_2);
-                    if (((_e141 + n_2) < _e141)) {
-                        uint _e149 = atomicAdd(_group_0_binding_4_cs[(at + 1u)], 1u);
+                    uint _e158 = l;
+                    uint at = ((h_1 + 16u) + (2u * _e158));
+                    uint _e163 = atomicAdd(_group_0_binding_4_cs[at], n_2);
+                    if (((_e163 + n_2) < _e163)) {
+                        uint _e171 = atomicAdd(_group_0_binding_4_cs[(at + 1u)], 1u);
                     }
                 }
             }
@@ -378,166 +387,165 @@ void main() {
             if ((i_2 != 0u)) {
                 return;
             }
-            uint leaves_1 = atomicOr(_group_0_binding_4_cs[13], 0u);
-            uint _e160 = _group_0_binding_0_cs.levels;
-            chosen = _e160;
+            uint leaves_1 = atomicOr(_group_0_binding_4_cs[(h_1 + 13u)], 0u);
+            uint _e184 = _group_0_binding_0_cs.levels;
+            chosen = _e184;
             bool loop_init_4 = true;
             while(true) {
                 if (!loop_init_4) {
-                    uint _e233 = l_1;
-                    l_1 = (_e233 + 1u);
+                    uint _e247 = l_1;
+                    l_1 = (_e247 + 1u);
                 }
                 loop_init_4 = false;
-                uint _e164 = l_1;
-                uint _e167 = _group_0_binding_0_cs.levels;
-                if ((_e164 < _e167)) {
+                uint _e188 = l_1;
+                uint _e191 = _group_0_binding_0_cs.levels;
+                if ((_e188 < _e191)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e170 = l_1;
-                    GridFrame f_4 = _group_0_binding_3_cs[_e170];
+                    uint _e194 = l_1;
+                    GridFrame f_4 = _group_0_binding_3_cs[_e194];
                     uint cells_2 = ((f_4.nx * f_4.ny) * f_4.nz);
-                    uint _e178 = bsh_grid_budget(leaves_1, cells_2);
-                    uint _e181 = _group_0_binding_0_cs.capacity;
-                    uint budget = min(_e178, _e181);
-                    uint _e183 = chosen;
-                    uint _e186 = _group_0_binding_0_cs.levels;
-                    if ((_e183 == _e186)) {
-                        uint _e193 = l_1;
-                        uint _e197 = atomicOr(_group_0_binding_4_cs[(17u + (2u * _e193))], 0u);
-                        local = (_e197 == 0u);
+                    uint _e202 = bsh_grid_budget(leaves_1, cells_2);
+                    uint _e205 = _group_0_binding_0_cs.capacity;
+                    uint budget = min(_e202, _e205);
+                    uint _e210 = l_1;
+                    uint at_1 = ((h_1 + 16u) + (2u * _e210));
+                    uint _e213 = chosen;
+                    uint _e216 = _group_0_binding_0_cs.levels;
+                    if ((_e213 == _e216)) {
+                        uint _e224 = atomicOr(_group_0_binding_4_cs[(at_1 + 1u)], 0u);
+                        local = (_e224 == 0u);
                     } else {
                         local = false;
                     }
-                    bool _e201 = local;
-                    if (_e201) {
-                        uint _e207 = l_1;
-                        uint _e211 = atomicOr(_group_0_binding_4_cs[(16u + (2u * _e207))], 0u);
-                        local_1 = (_e211 <= budget);
+                    bool _e228 = local;
+                    if (_e228) {
+                        uint _e233 = atomicOr(_group_0_binding_4_cs[at_1], 0u);
+                        local_1 = (_e233 <= budget);
                     } else {
                         local_1 = false;
                     }
-                    bool _e214 = local_1;
-                    if (_e214) {
-                        uint _e215 = l_1;
-                        chosen = _e215;
+                    bool _e236 = local_1;
+                    if (_e236) {
+                        uint _e237 = l_1;
+                        chosen = _e237;
                     }
-                    uint _e219 = l_1;
-                    atomicExchange(_group_0_binding_4_cs[(16u + (2u * _e219))], 0u);
-                    uint _e227 = l_1;
-                    atomicExchange(_group_0_binding_4_cs[(17u + (2u * _e227))], 0u);
+                    atomicExchange(_group_0_binding_4_cs[at_1], 0u);
+                    atomicExchange(_group_0_binding_4_cs[(at_1 + 1u)], 0u);
                 }
             }
-            atomicExchange(_group_0_binding_4_cs[13], 0u);
-            uint _e239 = chosen;
-            uint _e242 = _group_0_binding_0_cs.levels;
-            if ((_e239 < _e242)) {
-                uint _e245 = chosen;
-                GridFrame _e247 = _group_0_binding_3_cs[_e245];
-                f = _e247;
+            atomicExchange(_group_0_binding_4_cs[(h_1 + 13u)], 0u);
+            uint _e255 = chosen;
+            uint _e258 = _group_0_binding_0_cs.levels;
+            if ((_e255 < _e258)) {
+                uint _e261 = chosen;
+                GridFrame _e263 = _group_0_binding_3_cs[_e261];
+                f = _e263;
             }
-            float _e252 = f.lo.x;
-            atomicExchange(_group_0_binding_4_cs[0], floatBitsToUint(_e252));
-            float _e258 = f.lo.y;
-            atomicExchange(_group_0_binding_4_cs[1], floatBitsToUint(_e258));
-            float _e264 = f.lo.z;
-            atomicExchange(_group_0_binding_4_cs[2], floatBitsToUint(_e264));
-            uint _e269 = f.nx;
-            atomicExchange(_group_0_binding_4_cs[3], _e269);
-            float _e274 = f.hi.x;
-            atomicExchange(_group_0_binding_4_cs[4], floatBitsToUint(_e274));
-            float _e280 = f.hi.y;
-            atomicExchange(_group_0_binding_4_cs[5], floatBitsToUint(_e280));
-            float _e286 = f.hi.z;
-            atomicExchange(_group_0_binding_4_cs[6], floatBitsToUint(_e286));
-            uint _e291 = f.ny;
-            atomicExchange(_group_0_binding_4_cs[7], _e291);
-            float _e296 = f.inv.x;
-            atomicExchange(_group_0_binding_4_cs[8], floatBitsToUint(_e296));
-            float _e302 = f.inv.y;
-            atomicExchange(_group_0_binding_4_cs[9], floatBitsToUint(_e302));
-            float _e308 = f.inv.z;
-            atomicExchange(_group_0_binding_4_cs[10], floatBitsToUint(_e308));
-            uint _e313 = f.nz;
-            atomicExchange(_group_0_binding_4_cs[11], _e313);
-            float _e318 = _group_0_binding_0_cs.reach;
-            atomicExchange(_group_0_binding_4_cs[12], floatBitsToUint(_e318));
+            float _e268 = f.lo.x;
+            atomicExchange(_group_0_binding_4_cs[h_1], floatBitsToUint(_e268));
+            float _e276 = f.lo.y;
+            atomicExchange(_group_0_binding_4_cs[(h_1 + 1u)], floatBitsToUint(_e276));
+            float _e284 = f.lo.z;
+            atomicExchange(_group_0_binding_4_cs[(h_1 + 2u)], floatBitsToUint(_e284));
+            uint _e291 = f.nx;
+            atomicExchange(_group_0_binding_4_cs[(h_1 + 3u)], _e291);
+            float _e298 = f.hi.x;
+            atomicExchange(_group_0_binding_4_cs[(h_1 + 4u)], floatBitsToUint(_e298));
+            float _e306 = f.hi.y;
+            atomicExchange(_group_0_binding_4_cs[(h_1 + 5u)], floatBitsToUint(_e306));
+            float _e314 = f.hi.z;
+            atomicExchange(_group_0_binding_4_cs[(h_1 + 6u)], floatBitsToUint(_e314));
+            uint _e321 = f.ny;
+            atomicExchange(_group_0_binding_4_cs[(h_1 + 7u)], _e321);
+            float _e328 = f.inv.x;
+            atomicExchange(_group_0_binding_4_cs[(h_1 + 8u)], floatBitsToUint(_e328));
+            float _e336 = f.inv.y;
+            atomicExchange(_group_0_binding_4_cs[(h_1 + 9u)], floatBitsToUint(_e336));
+            float _e344 = f.inv.z;
+            atomicExchange(_group_0_binding_4_cs[(h_1 + 10u)], floatBitsToUint(_e344));
+            uint _e351 = f.nz;
+            atomicExchange(_group_0_binding_4_cs[(h_1 + 11u)], _e351);
+            float _e358 = _group_0_binding_0_cs.reach;
+            atomicExchange(_group_0_binding_4_cs[(h_1 + 12u)], floatBitsToUint(_e358));
             return;
         }
         case 2u:
         case 4u: {
-            uint _e322 = _group_0_binding_0_cs.count;
-            if ((i_2 >= _e322)) {
+            uint _e362 = _group_0_binding_0_cs.count;
+            if ((i_2 >= _e362)) {
                 return;
             }
-            GridFrame _e324 = grid_frame();
-            uint _e325 = grid_leaf(i_2);
-            if (!((_e324.nx == 0u))) {
-                local_2 = (_e325 == BSH_NONE);
+            GridFrame _e364 = grid_frame(h_1);
+            uint _e365 = grid_leaf(i_2);
+            if (!((_e364.nx == 0u))) {
+                local_2 = (_e365 == BSH_NONE);
             } else {
                 local_2 = true;
             }
-            bool _e335 = local_2;
-            if (_e335) {
+            bool _e375 = local_2;
+            if (_e375) {
                 return;
             }
-            BshNode leaf_1 = _group_0_binding_1_cs[_e325];
-            float _e341 = _group_0_binding_0_cs.reach;
-            float _e342 = bsh_grid_reach(leaf_1, _e341);
-            float _e343 = bsh_grid_pad(_e342);
-            uvec3 _e344 = cover_first(_e324, leaf_1, _e343);
-            uvec3 _e345 = cover_last(_e324, leaf_1, _e343);
-            z = _e344.z;
+            BshNode leaf_1 = _group_0_binding_1_cs[_e365];
+            float _e381 = _group_0_binding_0_cs.reach;
+            float _e382 = bsh_grid_reach(leaf_1, _e381);
+            float _e383 = bsh_grid_pad(_e382);
+            uvec3 _e385 = bsh_grid_first(_e364, leaf_1.center, _e383);
+            uvec3 _e387 = bsh_grid_last(_e364, leaf_1.center, _e383);
+            z = _e385.z;
             bool loop_init_5 = true;
             while(true) {
                 if (!loop_init_5) {
-                    uint _e388 = z;
-                    z = (_e388 + 1u);
+                    uint _e434 = z;
+                    z = (_e434 + 1u);
                 }
                 loop_init_5 = false;
-                uint _e348 = z;
-                if ((_e348 <= _e345.z)) {
+                uint _e390 = z;
+                if ((_e390 <= _e387.z)) {
                 } else {
                     break;
                 }
                 {
-                    y = _e344.y;
+                    y = _e385.y;
                     bool loop_init_6 = true;
                     while(true) {
                         if (!loop_init_6) {
-                            uint _e385 = y;
-                            y = (_e385 + 1u);
+                            uint _e431 = y;
+                            y = (_e431 + 1u);
                         }
                         loop_init_6 = false;
-                        uint _e353 = y;
-                        if ((_e353 <= _e345.y)) {
+                        uint _e395 = y;
+                        if ((_e395 <= _e387.y)) {
                         } else {
                             break;
                         }
                         {
-                            x = _e344.x;
+                            x = _e385.x;
                             bool loop_init_7 = true;
                             while(true) {
                                 if (!loop_init_7) {
-                                    uint _e382 = x;
-                                    x = (_e382 + 1u);
+                                    uint _e428 = x;
+                                    x = (_e428 + 1u);
                                 }
                                 loop_init_7 = false;
-                                uint _e358 = x;
-                                if ((_e358 <= _e345.x)) {
+                                uint _e400 = x;
+                                if ((_e400 <= _e387.x)) {
                                 } else {
                                     break;
                                 }
                                 {
-                                    uint _e361 = z;
-                                    uint _e364 = y;
-                                    uint _e368 = x;
-                                    uint c_5 = ((((_e361 * _e324.ny) + _e364) * _e324.nx) + _e368);
-                                    uint _e373 = atomicAdd(_group_0_binding_5_cs[c_5], 1u);
-                                    uint _e376 = _group_0_binding_0_cs.stage;
-                                    if ((_e376 == 4u)) {
-                                        _group_0_binding_6_cs[_e373] = i_2;
+                                    uint _e403 = z;
+                                    uint _e406 = y;
+                                    uint _e410 = x;
+                                    uint c_5 = ((((_e403 * _e364.ny) + _e406) * _e364.nx) + _e410);
+                                    uint _e415 = _group_0_binding_0_cs.fill;
+                                    uint _e419 = atomicAdd(_group_0_binding_5_cs[(_e415 + c_5)], 1u);
+                                    uint _e422 = _group_0_binding_0_cs.stage;
+                                    if ((_e422 == 4u)) {
+                                        _group_0_binding_6_cs[_e419] = i_2;
                                     }
                                 }
                             }
@@ -548,77 +556,78 @@ void main() {
             return;
         }
         default: {
-            GridFrame _e390 = grid_frame();
-            if ((i_2 >= ((_e390.nx * _e390.ny) * _e390.nz))) {
+            GridFrame _e436 = grid_frame(h_1);
+            if ((i_2 >= ((_e436.nx * _e436.ny) * _e436.nz))) {
                 return;
             }
-            atomicExchange(_group_0_binding_5_cs[i_2], 0u);
-            uint a_2 = atomicOr(_group_0_binding_4_cs[(GRID_HEADER + i_2)], 0u);
-            uint b_2 = atomicOr(_group_0_binding_4_cs[((GRID_HEADER + i_2) + 1u)], 0u);
+            uint _e446 = _group_0_binding_0_cs.fill;
+            atomicExchange(_group_0_binding_5_cs[(_e446 + i_2)], 0u);
+            uint a_2 = atomicOr(_group_0_binding_4_cs[(starts + i_2)], 0u);
+            uint b_2 = atomicOr(_group_0_binding_4_cs[((starts + i_2) + 1u)], 0u);
             s = (a_2 + 1u);
             bool loop_init_8 = true;
             while(true) {
                 if (!loop_init_8) {
-                    uint _e452 = s;
-                    s = (_e452 + 1u);
+                    uint _e500 = s;
+                    s = (_e500 + 1u);
                 }
                 loop_init_8 = false;
-                uint _e415 = s;
-                if ((_e415 < b_2)) {
+                uint _e463 = s;
+                if ((_e463 < b_2)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e418 = s;
-                    uint v_1 = _group_0_binding_6_cs[_e418];
-                    uint _e421 = s;
-                    c_2 = _e421;
+                    uint _e466 = s;
+                    uint v_1 = _group_0_binding_6_cs[_e466];
+                    uint _e469 = s;
+                    c_2 = _e469;
                     while(true) {
-                        uint _e423 = c_2;
-                        if ((_e423 > a_2)) {
-                            uint _e428 = c_2;
-                            uint _e432 = _group_0_binding_6_cs[(_e428 - 1u)];
-                            local_3 = (_e432 > v_1);
+                        uint _e471 = c_2;
+                        if ((_e471 > a_2)) {
+                            uint _e476 = c_2;
+                            uint _e480 = _group_0_binding_6_cs[(_e476 - 1u)];
+                            local_3 = (_e480 > v_1);
                         } else {
                             local_3 = false;
                         }
-                        bool _e435 = local_3;
-                        if (_e435) {
+                        bool _e483 = local_3;
+                        if (_e483) {
                         } else {
                             break;
                         }
                         {
-                            uint _e437 = c_2;
-                            uint _e440 = c_2;
-                            uint _e444 = _group_0_binding_6_cs[(_e440 - 1u)];
-                            _group_0_binding_6_cs[_e437] = _e444;
-                            uint _e445 = c_2;
-                            c_2 = (_e445 - 1u);
+                            uint _e485 = c_2;
+                            uint _e488 = c_2;
+                            uint _e492 = _group_0_binding_6_cs[(_e488 - 1u)];
+                            _group_0_binding_6_cs[_e485] = _e492;
+                            uint _e493 = c_2;
+                            c_2 = (_e493 - 1u);
                         }
                     }
-                    uint _e449 = c_2;
-                    _group_0_binding_6_cs[_e449] = v_1;
+                    uint _e497 = c_2;
+                    _group_0_binding_6_cs[_e497] = v_1;
                 }
             }
             s_1 = a_2;
             bool loop_init_9 = true;
             while(true) {
                 if (!loop_init_9) {
-                    uint _e468 = s_1;
-                    s_1 = (_e468 + 1u);
+                    uint _e516 = s_1;
+                    s_1 = (_e516 + 1u);
                 }
                 loop_init_9 = false;
-                uint _e455 = s_1;
-                if ((_e455 < b_2)) {
+                uint _e503 = s_1;
+                if ((_e503 < b_2)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e458 = s_1;
-                    uint _e462 = s_1;
-                    uint _e464 = _group_0_binding_6_cs[_e462];
-                    uint _e466 = _group_0_binding_2_cs[_e464];
-                    _group_0_binding_6_cs[_e458] = _e466;
+                    uint _e506 = s_1;
+                    uint _e510 = s_1;
+                    uint _e512 = _group_0_binding_6_cs[_e510];
+                    uint _e514 = _group_0_binding_2_cs[_e512];
+                    _group_0_binding_6_cs[_e506] = _e514;
                 }
             }
             return;

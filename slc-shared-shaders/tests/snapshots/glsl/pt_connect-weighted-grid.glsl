@@ -177,27 +177,27 @@ layout(std430) readonly buffer type_7_block_2Compute { GpuTriangle _group_0_bind
 
 layout(std430) readonly buffer type_10_block_3Compute { BshNode _group_0_binding_5_cs[]; };
 
-layout(std430) readonly buffer type_11_block_4Compute { uint _group_0_binding_11_cs[]; };
+layout(std430) readonly buffer type_12_block_4Compute { uint _group_0_binding_11_cs[]; };
 
-layout(std430) readonly buffer type_11_block_5Compute { uint _group_0_binding_12_cs[]; };
+layout(std430) readonly buffer type_12_block_5Compute { uint _group_0_binding_12_cs[]; };
 
-layout(std430) readonly buffer type_14_block_6Compute { GpuLight _group_0_binding_2_cs[]; };
+layout(std430) readonly buffer type_15_block_6Compute { GpuLight _group_0_binding_2_cs[]; };
 
 layout(std430) readonly buffer type_4_block_7Compute { float _group_0_binding_4_cs[]; };
 
 layout(std430) readonly buffer type_4_block_8Compute { float _group_0_binding_3_cs[]; };
 
-layout(std430) readonly buffer type_15_block_9Compute { GpuLightCone _group_1_binding_2_cs[]; };
+layout(std430) readonly buffer type_16_block_9Compute { GpuLightCone _group_1_binding_2_cs[]; };
 
 layout(std140) uniform ShadeParams_block_10Compute { ShadeParams _group_0_binding_0_cs; };
 
-layout(std430) readonly buffer type_18_block_11Compute { GpuPathVertex _group_0_binding_1_cs[]; };
+layout(std430) readonly buffer type_19_block_11Compute { GpuPathVertex _group_0_binding_1_cs[]; };
 
-layout(std430) readonly buffer type_19_block_12Compute { GpuMaterial _group_0_binding_8_cs[]; };
+layout(std430) readonly buffer type_20_block_12Compute { GpuMaterial _group_0_binding_8_cs[]; };
 
-layout(std430) buffer type_20_block_13Compute { vec4 _group_0_binding_9_cs[]; };
+layout(std430) buffer type_21_block_13Compute { vec4 _group_0_binding_9_cs[]; };
 
-layout(std430) buffer type_11_block_14Compute { uint _group_0_binding_10_cs[]; };
+layout(std430) buffer type_12_block_14Compute { uint _group_0_binding_10_cs[]; };
 
 
 float at(uint tab, uint i) {
@@ -663,12 +663,12 @@ vec3 diffuse_brdf(vec3 base_5, float metallic_1, vec3 f0_d_1, float f90_d_1, flo
 }
 
 float half_cosine(vec3 v, vec3 l) {
-    vec3 h_4 = (v + l);
-    float len2_ = dot(h_4, h_4);
+    vec3 h_7 = (v + l);
+    float len2_ = dot(h_7, h_7);
     if ((len2_ <= 0.0)) {
         return 0.0;
     }
-    return clamp((dot(v, h_4) / sqrt(len2_)), 0.0, 1.0);
+    return clamp((dot(v, h_7) / sqrt(len2_)), 0.0, 1.0);
 }
 
 vec3 specular_brdf(vec3 base_6, float metallic_2, vec3 f0_d_2, float f90_d_2, float alpha_3, vec3 n_7, vec3 v_1, vec3 l_1) {
@@ -686,10 +686,10 @@ vec3 specular_brdf(vec3 base_6, float metallic_2, vec3 f0_d_2, float f90_d_2, fl
     }
     vec3 hs = (v_1 + l_1);
     float inv_1 = (1.0 / sqrt(dot(hs, hs)));
-    vec3 h_5 = (hs * inv_1);
-    vec3 c_13 = cross(n_7, h_5);
-    float _e32 = ggx_d(dot(n_7, h_5), dot(c_13, c_13), alpha_3);
-    vec3 _e34 = specular_fresnel(base_6, metallic_2, f0_d_2, f90_d_2, dot(v_1, h_5));
+    vec3 h_8 = (hs * inv_1);
+    vec3 c_13 = cross(n_7, h_8);
+    float _e32 = ggx_d(dot(n_7, h_8), dot(c_13, c_13), alpha_3);
+    vec3 _e34 = specular_fresnel(base_6, metallic_2, f0_d_2, f90_d_2, dot(v_1, h_8));
     float _e35 = smith_visibility(n_l_1, n_v_2, alpha_3);
     return (_e34 * (_e32 * _e35));
 }
@@ -1380,71 +1380,81 @@ uint grid_word(uint i_4) {
     return _e3;
 }
 
-GridFrame grid_frame() {
+GridFrame grid_frame(uint h_1) {
     GridFrame f_1 = GridFrame(vec3(0.0), 0u, vec3(0.0), 0u, vec3(0.0), 0u);
-    uint _e3 = grid_word(0u);
-    uint _e6 = grid_word(1u);
-    uint _e9 = grid_word(2u);
-    f_1.lo = vec3(uintBitsToFloat(_e3), uintBitsToFloat(_e6), uintBitsToFloat(_e9));
-    uint _e14 = grid_word(3u);
-    f_1.nx = _e14;
-    uint _e17 = grid_word(4u);
-    uint _e20 = grid_word(5u);
-    uint _e23 = grid_word(6u);
-    f_1.hi = vec3(uintBitsToFloat(_e17), uintBitsToFloat(_e20), uintBitsToFloat(_e23));
-    uint _e28 = grid_word(7u);
-    f_1.ny = _e28;
-    uint _e31 = grid_word(8u);
-    uint _e34 = grid_word(9u);
-    uint _e37 = grid_word(10u);
-    f_1.inv = vec3(uintBitsToFloat(_e31), uintBitsToFloat(_e34), uintBitsToFloat(_e37));
-    uint _e42 = grid_word(11u);
-    f_1.nz = _e42;
-    GridFrame _e43 = f_1;
-    return _e43;
+    uint _e3 = grid_word(h_1);
+    uint _e7 = grid_word((h_1 + 1u));
+    uint _e11 = grid_word((h_1 + 2u));
+    f_1.lo = vec3(uintBitsToFloat(_e3), uintBitsToFloat(_e7), uintBitsToFloat(_e11));
+    uint _e17 = grid_word((h_1 + 3u));
+    f_1.nx = _e17;
+    uint _e21 = grid_word((h_1 + 4u));
+    uint _e25 = grid_word((h_1 + 5u));
+    uint _e29 = grid_word((h_1 + 6u));
+    f_1.hi = vec3(uintBitsToFloat(_e21), uintBitsToFloat(_e25), uintBitsToFloat(_e29));
+    uint _e35 = grid_word((h_1 + 7u));
+    f_1.ny = _e35;
+    uint _e39 = grid_word((h_1 + 8u));
+    uint _e43 = grid_word((h_1 + 9u));
+    uint _e47 = grid_word((h_1 + 10u));
+    f_1.inv = vec3(uintBitsToFloat(_e39), uintBitsToFloat(_e43), uintBitsToFloat(_e47));
+    uint _e53 = grid_word((h_1 + 11u));
+    f_1.nz = _e53;
+    GridFrame _e54 = f_1;
+    return _e54;
 }
 
-float grid_reach() {
-    uint _e1 = grid_word(12u);
-    return uintBitsToFloat(_e1);
+float grid_reach(uint h_2) {
+    uint _e3 = grid_word((h_2 + 12u));
+    return uintBitsToFloat(_e3);
 }
 
 BshCursor bsh_cursor(vec3 x_13, vec3 r_7, vec4 rl_5) {
     BshCursor c_7 = BshCursor(0u, 0u, 0u);
+    uint h_3 = 0u;
     bool local_27 = false;
     bool local_28 = false;
     c_7.i = 0u;
     c_7.end = 0u;
     uint _e10 = bsh_first(BSH);
     c_7.next = _e10;
-    GridFrame _e11 = grid_frame();
-    uint _e13 = c_7.next;
-    if ((_e13 != BSH_NONE)) {
-        local_27 = (_e11.nx > 0u);
+    float _e15 = grid_reach(0u);
+    if ((rl_5.w > _e15)) {
+        uint _e18 = grid_word(14u);
+        h_3 = _e18;
+    }
+    uint _e19 = h_3;
+    GridFrame _e20 = grid_frame(_e19);
+    uint _e22 = c_7.next;
+    if ((_e22 != BSH_NONE)) {
+        local_27 = (_e20.nx > 0u);
     } else {
         local_27 = false;
     }
-    bool _e22 = local_27;
-    if (_e22) {
-        float _e26 = grid_reach();
-        local_28 = (rl_5.w <= _e26);
+    bool _e31 = local_27;
+    if (_e31) {
+        uint _e35 = h_3;
+        float _e36 = grid_reach(_e35);
+        local_28 = (rl_5.w <= _e36);
     } else {
         local_28 = false;
     }
-    bool _e29 = local_28;
-    if (_e29) {
-        uint _e30 = bsh_grid_cell(_e11, x_13);
-        if ((_e30 != BSH_NONE)) {
-            uint _e38 = _group_0_binding_11_cs[(GRID_HEADER + _e30)];
-            c_7.i = _e38;
-            uint _e46 = _group_0_binding_11_cs[((GRID_HEADER + _e30) + 1u)];
-            c_7.end = _e46;
-            uint _e51 = _group_0_binding_5_cs[0].next;
-            c_7.next = _e51;
+    bool _e39 = local_28;
+    if (_e39) {
+        uint _e40 = bsh_grid_cell(_e20, x_13);
+        if ((_e40 != BSH_NONE)) {
+            uint _e45 = h_3;
+            uint _e50 = _group_0_binding_11_cs[((_e45 + GRID_HEADER) + _e40)];
+            c_7.i = _e50;
+            uint _e53 = h_3;
+            uint _e60 = _group_0_binding_11_cs[(((_e53 + GRID_HEADER) + _e40) + 1u)];
+            c_7.end = _e60;
+            uint _e65 = _group_0_binding_5_cs[0].next;
+            c_7.next = _e65;
         }
     }
-    BshCursor _e52 = c_7;
-    return _e52;
+    BshCursor _e66 = c_7;
+    return _e66;
 }
 
 uint bsh_cursor_next(inout BshCursor c_8, vec3 x_14, vec3 r_8, vec4 rl_6) {
@@ -1476,11 +1486,11 @@ uint bsh_cursor_next(inout BshCursor c_8, vec3 x_14, vec3 r_8, vec4 rl_6) {
     return _e25;
 }
 
-float next_threshold(float sum_1, inout uint h_1) {
-    uint _e2 = h_1;
+float next_threshold(float sum_1, inout uint h_4) {
+    uint _e2 = h_4;
     uint _e3 = pcg_hash(_e2);
-    h_1 = _e3;
-    uint _e4 = h_1;
+    h_4 = _e3;
+    uint _e4 = h_4;
     float _e5 = xi_from_bits(_e4);
     float _e6 = weighted_threshold(sum_1, _e5);
     return _e6;
@@ -1583,17 +1593,17 @@ float light_pdf(uint li_6, vec3 x_22, vec3 n_20, vec3 r_13, vec4 lobe_9, vec4 rl
     return _e10;
 }
 
-WeightedPicks weighted_picks(uint h_2) {
+WeightedPicks weighted_picks(uint h_5) {
     WeightedPicks picks = WeightedPicks(uint[8](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u), float[8](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), float[8](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0.0, 0u, 0u);
     picks.w_sum = 0.0;
     picks.n = 0u;
-    picks.h = h_2;
+    picks.h = h_5;
     WeightedPicks _e7 = picks;
     return _e7;
 }
 
 void weighted_offer(inout WeightedPicks picks_1, uint li_7, float w_9) {
-    uint h_3 = 0u;
+    uint h_6 = 0u;
     uint s_3 = 0u;
     uint _e4 = picks_1.n;
     picks_1.n = (_e4 + 1u);
@@ -1601,7 +1611,7 @@ void weighted_offer(inout WeightedPicks picks_1, uint li_7, float w_9) {
         float _e10 = picks_1.w_sum;
         picks_1.w_sum = (_e10 + w_9);
         uint _e13 = picks_1.h;
-        h_3 = _e13;
+        h_6 = _e13;
         bool loop_init_1 = true;
         while(true) {
             if (!loop_init_1) {
@@ -1625,12 +1635,12 @@ void weighted_offer(inout WeightedPicks picks_1, uint li_7, float w_9) {
                     picks_1.w[_e31] = w_9;
                     uint _e34 = s_3;
                     float _e37 = picks_1.w_sum;
-                    float _e38 = next_threshold(_e37, h_3);
+                    float _e38 = next_threshold(_e37, h_6);
                     picks_1.threshold[_e34] = _e38;
                 }
             }
         }
-        uint _e43 = h_3;
+        uint _e43 = h_6;
         picks_1.h = _e43;
         return;
     } else {

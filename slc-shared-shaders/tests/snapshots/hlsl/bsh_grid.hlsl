@@ -5,8 +5,12 @@ struct GridParams {
     uint capacity;
     float reach;
     uint cells;
+    uint header;
+    uint fill;
+    uint entries;
     uint pad0_;
     uint pad1_;
+    uint pad2_;
 };
 
 struct BshNode {
@@ -166,65 +170,63 @@ uint bsh_grid_axis(float v, float lo, float inv, uint n)
     return min(_e9, (n - 1u));
 }
 
+uint3 bsh_grid_first(GridFrame f_1, float3 c_3, float r)
+{
+    const uint _e10 = bsh_grid_axis((c_3.x - r), f_1.lo.x, f_1.inv.x, f_1.nx);
+    const uint _e18 = bsh_grid_axis((c_3.y - r), f_1.lo.y, f_1.inv.y, f_1.ny);
+    const uint _e26 = bsh_grid_axis((c_3.z - r), f_1.lo.z, f_1.inv.z, f_1.nz);
+    return uint3(_e10, _e18, _e26);
+}
+
+uint3 bsh_grid_last(GridFrame f_2, float3 c_4, float r_1)
+{
+    const uint _e10 = bsh_grid_axis((c_4.x + r_1), f_2.lo.x, f_2.inv.x, f_2.nx);
+    const uint _e18 = bsh_grid_axis((c_4.y + r_1), f_2.lo.y, f_2.inv.y, f_2.ny);
+    const uint _e26 = bsh_grid_axis((c_4.z + r_1), f_2.lo.z, f_2.inv.z, f_2.nz);
+    return uint3(_e10, _e18, _e26);
+}
+
 uint grid_word(uint i)
 {
     uint _e3; grid.InterlockedOr(i*4, 0, _e3);
     return _e3;
 }
 
-GridFrame grid_frame()
+GridFrame grid_frame(uint h)
 {
-    GridFrame f_1 = (GridFrame)0;
+    GridFrame f_3 = (GridFrame)0;
 
-    const uint _e3 = grid_word(0u);
-    const uint _e6 = grid_word(1u);
-    const uint _e9 = grid_word(2u);
-    f_1.lo = float3(asfloat(_e3), asfloat(_e6), asfloat(_e9));
-    const uint _e14 = grid_word(3u);
-    f_1.nx = _e14;
-    const uint _e17 = grid_word(4u);
-    const uint _e20 = grid_word(5u);
-    const uint _e23 = grid_word(6u);
-    f_1.hi = float3(asfloat(_e17), asfloat(_e20), asfloat(_e23));
-    const uint _e28 = grid_word(7u);
-    f_1.ny = _e28;
-    const uint _e31 = grid_word(8u);
-    const uint _e34 = grid_word(9u);
-    const uint _e37 = grid_word(10u);
-    f_1.inv = float3(asfloat(_e31), asfloat(_e34), asfloat(_e37));
-    const uint _e42 = grid_word(11u);
-    f_1.nz = _e42;
-    GridFrame _e43 = f_1;
-    const GridFrame gridframe = _e43;
+    const uint _e3 = grid_word(h);
+    const uint _e7 = grid_word((h + 1u));
+    const uint _e11 = grid_word((h + 2u));
+    f_3.lo = float3(asfloat(_e3), asfloat(_e7), asfloat(_e11));
+    const uint _e17 = grid_word((h + 3u));
+    f_3.nx = _e17;
+    const uint _e21 = grid_word((h + 4u));
+    const uint _e25 = grid_word((h + 5u));
+    const uint _e29 = grid_word((h + 6u));
+    f_3.hi = float3(asfloat(_e21), asfloat(_e25), asfloat(_e29));
+    const uint _e35 = grid_word((h + 7u));
+    f_3.ny = _e35;
+    const uint _e39 = grid_word((h + 8u));
+    const uint _e43 = grid_word((h + 9u));
+    const uint _e47 = grid_word((h + 10u));
+    f_3.inv = float3(asfloat(_e39), asfloat(_e43), asfloat(_e47));
+    const uint _e53 = grid_word((h + 11u));
+    f_3.nz = _e53;
+    GridFrame _e54 = f_3;
+    const GridFrame gridframe = _e54;
     return gridframe;
 }
 
 uint grid_leaf(uint i_1)
 {
-    uint node_5 = asuint(grid_leaves.Load(i_1*4));
-    uint _e7 = asuint(bsh_nodes.Load(24+node_5*32));
+    uint node_3 = asuint(grid_leaves.Load(i_1*4));
+    uint _e7 = asuint(bsh_nodes.Load(24+node_3*32));
     if (((_e7 & BSH_TAIL) != 0u)) {
         return BSH_NONE;
     }
-    return node_5;
-}
-
-uint3 cover_first(GridFrame f_2, BshNode node_3, float r)
-{
-    float3 c_3 = node_3.center_;
-    const uint _e11 = bsh_grid_axis((c_3.x - r), f_2.lo.x, f_2.inv.x, f_2.nx);
-    const uint _e19 = bsh_grid_axis((c_3.y - r), f_2.lo.y, f_2.inv.y, f_2.ny);
-    const uint _e27 = bsh_grid_axis((c_3.z - r), f_2.lo.z, f_2.inv.z, f_2.nz);
-    return uint3(_e11, _e19, _e27);
-}
-
-uint3 cover_last(GridFrame f_3, BshNode node_4, float r_1)
-{
-    float3 c_4 = node_4.center_;
-    const uint _e11 = bsh_grid_axis((c_4.x + r_1), f_3.lo.x, f_3.inv.x, f_3.nx);
-    const uint _e19 = bsh_grid_axis((c_4.y + r_1), f_3.lo.y, f_3.inv.y, f_3.ny);
-    const uint _e27 = bsh_grid_axis((c_4.z + r_1), f_3.lo.z, f_3.inv.z, f_3.nz);
-    return uint3(_e11, _e19, _e27);
+    return node_3;
 }
 
 uint naga_div(uint lhs, uint rhs) {
@@ -262,7 +264,7 @@ void main(uint3 gid : SV_DispatchThreadID, uint local_invocation_index : SV_Grou
     GroupMemoryBarrierWithGroupSync();
     uint sum = 0u;
     uint c = (uint)0;
-    uint start = 0u;
+    uint start = (uint)0;
     uint j = 0u;
     uint c_1 = (uint)0;
     uint l = 0u;
@@ -281,10 +283,12 @@ void main(uint3 gid : SV_DispatchThreadID, uint local_invocation_index : SV_Grou
     uint s_1 = (uint)0;
 
     uint i_2 = gid.x;
-    uint _e4 = params.stage;
-    if ((_e4 == 3u)) {
-        const GridFrame _e7 = grid_frame();
-        uint cells_1 = ((_e7.nx * _e7.ny) * _e7.nz);
+    uint h_1 = params.header;
+    uint starts = (h_1 + GRID_HEADER);
+    uint _e9 = params.stage;
+    if ((_e9 == 3u)) {
+        const GridFrame _e12 = grid_frame(h_1);
+        uint cells_1 = ((_e12.nx * _e12.ny) * _e12.nz);
         uint run = naga_div(((cells_1 + 64u) - 1u), 64u);
         uint a_1 = min((i_2 * run), cells_1);
         uint b_1 = min((a_1 + run), cells_1);
@@ -295,45 +299,48 @@ void main(uint3 gid : SV_DispatchThreadID, uint local_invocation_index : SV_Grou
             if (all(loop_bound == uint2(0u, 0u))) { break; }
             loop_bound -= uint2(loop_bound.y == 0u, 1u);
             if (!loop_init) {
-                uint _e35 = c;
-                c = (_e35 + 1u);
+                uint _e44 = c;
+                c = (_e44 + 1u);
             }
             loop_init = false;
-            uint _e26 = c;
-            if ((_e26 < b_1)) {
+            uint _e31 = c;
+            if ((_e31 < b_1)) {
             } else {
                 break;
             }
             {
-                uint _e28 = sum;
-                uint _e30 = c;
-                uint _e32; grid_fill.InterlockedOr(_e30*4, 0, _e32);
-                sum = (_e28 + _e32);
+                uint _e33 = sum;
+                uint _e37 = params.fill;
+                uint _e38 = c;
+                uint _e41; grid_fill.InterlockedOr((_e37 + _e38)*4, 0, _e41);
+                sum = (_e33 + _e41);
             }
         }
-        uint _e39 = sum;
-        wg_sums[min(uint(i_2), 63u)] = _e39;
+        uint _e48 = sum;
+        wg_sums[min(uint(i_2), 63u)] = _e48;
         GroupMemoryBarrierWithGroupSync();
+        uint _e51 = params.entries;
+        start = _e51;
         uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
         bool loop_init_1 = true;
         while(true) {
             if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
             loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
             if (!loop_init_1) {
-                uint _e53 = j;
-                j = (_e53 + 1u);
+                uint _e64 = j;
+                j = (_e64 + 1u);
             }
             loop_init_1 = false;
-            uint _e44 = j;
-            if ((_e44 < i_2)) {
+            uint _e55 = j;
+            if ((_e55 < i_2)) {
             } else {
                 break;
             }
             {
-                uint _e46 = start;
-                uint _e48 = j;
-                uint _e50 = wg_sums[min(uint(_e48), 63u)];
-                start = (_e46 + _e50);
+                uint _e57 = start;
+                uint _e59 = j;
+                uint _e61 = wg_sums[min(uint(_e59), 63u)];
+                start = (_e57 + _e61);
             }
         }
         c_1 = a_1;
@@ -343,80 +350,82 @@ void main(uint3 gid : SV_DispatchThreadID, uint local_invocation_index : SV_Grou
             if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
             loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
             if (!loop_init_2) {
-                uint _e75 = c_1;
-                c_1 = (_e75 + 1u);
+                uint _e93 = c_1;
+                c_1 = (_e93 + 1u);
             }
             loop_init_2 = false;
-            uint _e56 = c_1;
-            if ((_e56 < b_1)) {
+            uint _e67 = c_1;
+            if ((_e67 < b_1)) {
             } else {
                 break;
             }
             {
-                uint _e59 = c_1;
-                uint n_1; grid_fill.InterlockedOr(_e59*4, 0, n_1);
-                uint _e64 = c_1;
-                uint _e67 = start;
-                { uint dummy = 0; grid.InterlockedExchange((GRID_HEADER + _e64)*4, _e67, dummy); }
-                uint _e69 = c_1;
-                uint _e71 = start;
-                { uint dummy_1 = 0; grid_fill.InterlockedExchange(_e69*4, _e71, dummy_1); }
-                uint _e72 = start;
-                start = (_e72 + n_1);
+                uint _e72 = params.fill;
+                uint _e73 = c_1;
+                uint n_1; grid_fill.InterlockedOr((_e72 + _e73)*4, 0, n_1);
+                uint _e78 = c_1;
+                uint _e81 = start;
+                { uint dummy = 0; grid.InterlockedExchange((starts + _e78)*4, _e81, dummy); }
+                uint _e85 = params.fill;
+                uint _e86 = c_1;
+                uint _e89 = start;
+                { uint dummy_1 = 0; grid_fill.InterlockedExchange((_e85 + _e86)*4, _e89, dummy_1); }
+                uint _e90 = start;
+                start = (_e90 + n_1);
             }
         }
         if (((i_2 + 1u) == 64u)) {
-            uint _e85 = start;
-            { uint dummy_2 = 0; grid.InterlockedExchange((GRID_HEADER + cells_1)*4, _e85, dummy_2); }
+            uint _e102 = start;
+            { uint dummy_2 = 0; grid.InterlockedExchange((starts + cells_1)*4, _e102, dummy_2); }
         }
         return;
     }
-    uint _e88 = params.stage;
-    switch(_e88) {
+    uint _e105 = params.stage;
+    switch(_e105) {
         case 0u: {
-            uint _e91 = params.count;
-            if ((i_2 >= _e91)) {
+            uint _e108 = params.count;
+            if ((i_2 >= _e108)) {
                 return;
             }
-            const uint _e93 = grid_leaf(i_2);
-            if ((_e93 == BSH_NONE)) {
+            const uint _e110 = grid_leaf(i_2);
+            if ((_e110 == BSH_NONE)) {
                 return;
             }
-            uint _e99; grid.InterlockedAdd(52, 1u, _e99);
-            BshNode leaf = ConstructBshNode(asfloat(bsh_nodes.Load3(_e93*32+0)), asfloat(bsh_nodes.Load(_e93*32+12)), asuint(bsh_nodes.Load(_e93*32+16)), asuint(bsh_nodes.Load(_e93*32+20)), asuint(bsh_nodes.Load(_e93*32+24)), asfloat(bsh_nodes.Load(_e93*32+28)));
-            float _e105 = params.reach;
-            const float _e106 = bsh_grid_reach(leaf, _e105);
-            const float _e107 = bsh_grid_pad(_e106);
+            uint _e118; grid.InterlockedAdd((h_1 + 13u)*4, 1u, _e118);
+            BshNode leaf = ConstructBshNode(asfloat(bsh_nodes.Load3(_e110*32+0)), asfloat(bsh_nodes.Load(_e110*32+12)), asuint(bsh_nodes.Load(_e110*32+16)), asuint(bsh_nodes.Load(_e110*32+20)), asuint(bsh_nodes.Load(_e110*32+24)), asfloat(bsh_nodes.Load(_e110*32+28)));
+            float _e124 = params.reach;
+            const float _e125 = bsh_grid_reach(leaf, _e124);
+            const float _e126 = bsh_grid_pad(_e125);
             uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
             bool loop_init_3 = true;
             while(true) {
                 if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
                 loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
                 if (!loop_init_3) {
-                    uint _e151 = l;
-                    l = (_e151 + 1u);
+                    uint _e173 = l;
+                    l = (_e173 + 1u);
                 }
                 loop_init_3 = false;
-                uint _e110 = l;
-                uint _e113 = params.levels;
-                if ((_e110 < _e113)) {
+                uint _e129 = l;
+                uint _e132 = params.levels;
+                if ((_e129 < _e132)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e116 = l;
-                    GridFrame _e118 = ConstructGridFrame(asfloat(grid_levels.Load3(_e116*48+0)), asuint(grid_levels.Load(_e116*48+12)), asfloat(grid_levels.Load3(_e116*48+16)), asuint(grid_levels.Load(_e116*48+28)), asfloat(grid_levels.Load3(_e116*48+32)), asuint(grid_levels.Load(_e116*48+44)));
-                    const uint3 _e119 = cover_last(_e118, leaf, _e107);
-                    uint _e121 = l;
-                    GridFrame _e123 = ConstructGridFrame(asfloat(grid_levels.Load3(_e121*48+0)), asuint(grid_levels.Load(_e121*48+12)), asfloat(grid_levels.Load3(_e121*48+16)), asuint(grid_levels.Load(_e121*48+28)), asfloat(grid_levels.Load3(_e121*48+32)), asuint(grid_levels.Load(_e121*48+44)));
-                    const uint3 _e124 = cover_first(_e123, leaf, _e107);
-                    uint3 d = ((_e119 - _e124) + (1u).xxx);
+                    uint _e135 = l;
+                    GridFrame _e137 = ConstructGridFrame(asfloat(grid_levels.Load3(_e135*48+0)), asuint(grid_levels.Load(_e135*48+12)), asfloat(grid_levels.Load3(_e135*48+16)), asuint(grid_levels.Load(_e135*48+28)), asfloat(grid_levels.Load3(_e135*48+32)), asuint(grid_levels.Load(_e135*48+44)));
+                    const uint3 _e139 = bsh_grid_last(_e137, leaf.center_, _e126);
+                    uint _e141 = l;
+                    GridFrame _e143 = ConstructGridFrame(asfloat(grid_levels.Load3(_e141*48+0)), asuint(grid_levels.Load(_e141*48+12)), asfloat(grid_levels.Load3(_e141*48+16)), asuint(grid_levels.Load(_e141*48+28)), asfloat(grid_levels.Load3(_e141*48+32)), asuint(grid_levels.Load(_e141*48+44)));
+                    const uint3 _e145 = bsh_grid_first(_e143, leaf.center_, _e126);
+                    uint3 d = ((_e139 - _e145) + (1u).xxx);
                     uint n_2 = ((d.x * d.y) * d.z);
-                    uint _e136 = l;
-                    uint at = (16u + (2u * _e136));
-                    uint _e141; grid.InterlockedAdd(at*4, n_2, _e141);
-                    if (((_e141 + n_2) < _e141)) {
-                        uint _e149; grid.InterlockedAdd((at + 1u)*4, 1u, _e149);
+                    uint _e158 = l;
+                    uint at = ((h_1 + 16u) + (2u * _e158));
+                    uint _e163; grid.InterlockedAdd(at*4, n_2, _e163);
+                    if (((_e163 + n_2) < _e163)) {
+                        uint _e171; grid.InterlockedAdd((at + 1u)*4, 1u, _e171);
                     }
                 }
             }
@@ -426,178 +435,177 @@ void main(uint3 gid : SV_DispatchThreadID, uint local_invocation_index : SV_Grou
             if ((i_2 != 0u)) {
                 return;
             }
-            uint leaves_1; grid.InterlockedOr(52, 0, leaves_1);
-            uint _e160 = params.levels;
-            chosen = _e160;
+            uint leaves_1; grid.InterlockedOr((h_1 + 13u)*4, 0, leaves_1);
+            uint _e184 = params.levels;
+            chosen = _e184;
             uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
             bool loop_init_4 = true;
             while(true) {
                 if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
                 loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
                 if (!loop_init_4) {
-                    uint _e233 = l_1;
-                    l_1 = (_e233 + 1u);
+                    uint _e247 = l_1;
+                    l_1 = (_e247 + 1u);
                 }
                 loop_init_4 = false;
-                uint _e164 = l_1;
-                uint _e167 = params.levels;
-                if ((_e164 < _e167)) {
+                uint _e188 = l_1;
+                uint _e191 = params.levels;
+                if ((_e188 < _e191)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e170 = l_1;
-                    GridFrame f_4 = ConstructGridFrame(asfloat(grid_levels.Load3(_e170*48+0)), asuint(grid_levels.Load(_e170*48+12)), asfloat(grid_levels.Load3(_e170*48+16)), asuint(grid_levels.Load(_e170*48+28)), asfloat(grid_levels.Load3(_e170*48+32)), asuint(grid_levels.Load(_e170*48+44)));
+                    uint _e194 = l_1;
+                    GridFrame f_4 = ConstructGridFrame(asfloat(grid_levels.Load3(_e194*48+0)), asuint(grid_levels.Load(_e194*48+12)), asfloat(grid_levels.Load3(_e194*48+16)), asuint(grid_levels.Load(_e194*48+28)), asfloat(grid_levels.Load3(_e194*48+32)), asuint(grid_levels.Load(_e194*48+44)));
                     uint cells_2 = ((f_4.nx * f_4.ny) * f_4.nz);
-                    const uint _e178 = bsh_grid_budget(leaves_1, cells_2);
-                    uint _e181 = params.capacity;
-                    uint budget = min(_e178, _e181);
-                    uint _e183 = chosen;
-                    uint _e186 = params.levels;
-                    if ((_e183 == _e186)) {
-                        uint _e193 = l_1;
-                        uint _e197; grid.InterlockedOr((17u + (2u * _e193))*4, 0, _e197);
-                        local = (_e197 == 0u);
+                    const uint _e202 = bsh_grid_budget(leaves_1, cells_2);
+                    uint _e205 = params.capacity;
+                    uint budget = min(_e202, _e205);
+                    uint _e210 = l_1;
+                    uint at_1 = ((h_1 + 16u) + (2u * _e210));
+                    uint _e213 = chosen;
+                    uint _e216 = params.levels;
+                    if ((_e213 == _e216)) {
+                        uint _e224; grid.InterlockedOr((at_1 + 1u)*4, 0, _e224);
+                        local = (_e224 == 0u);
                     } else {
                         local = false;
                     }
-                    bool _e201 = local;
-                    if (_e201) {
-                        uint _e207 = l_1;
-                        uint _e211; grid.InterlockedOr((16u + (2u * _e207))*4, 0, _e211);
-                        local_1 = (_e211 <= budget);
+                    bool _e228 = local;
+                    if (_e228) {
+                        uint _e233; grid.InterlockedOr(at_1*4, 0, _e233);
+                        local_1 = (_e233 <= budget);
                     } else {
                         local_1 = false;
                     }
-                    bool _e214 = local_1;
-                    if (_e214) {
-                        uint _e215 = l_1;
-                        chosen = _e215;
+                    bool _e236 = local_1;
+                    if (_e236) {
+                        uint _e237 = l_1;
+                        chosen = _e237;
                     }
-                    uint _e219 = l_1;
-                    { uint dummy_3 = 0; grid.InterlockedExchange((16u + (2u * _e219))*4, 0u, dummy_3); }
-                    uint _e227 = l_1;
-                    { uint dummy_4 = 0; grid.InterlockedExchange((17u + (2u * _e227))*4, 0u, dummy_4); }
+                    { uint dummy_3 = 0; grid.InterlockedExchange(at_1*4, 0u, dummy_3); }
+                    { uint dummy_4 = 0; grid.InterlockedExchange((at_1 + 1u)*4, 0u, dummy_4); }
                 }
             }
-            { uint dummy_5 = 0; grid.InterlockedExchange(52, 0u, dummy_5); }
-            uint _e239 = chosen;
-            uint _e242 = params.levels;
-            if ((_e239 < _e242)) {
-                uint _e245 = chosen;
-                GridFrame _e247 = ConstructGridFrame(asfloat(grid_levels.Load3(_e245*48+0)), asuint(grid_levels.Load(_e245*48+12)), asfloat(grid_levels.Load3(_e245*48+16)), asuint(grid_levels.Load(_e245*48+28)), asfloat(grid_levels.Load3(_e245*48+32)), asuint(grid_levels.Load(_e245*48+44)));
-                f = _e247;
+            { uint dummy_5 = 0; grid.InterlockedExchange((h_1 + 13u)*4, 0u, dummy_5); }
+            uint _e255 = chosen;
+            uint _e258 = params.levels;
+            if ((_e255 < _e258)) {
+                uint _e261 = chosen;
+                GridFrame _e263 = ConstructGridFrame(asfloat(grid_levels.Load3(_e261*48+0)), asuint(grid_levels.Load(_e261*48+12)), asfloat(grid_levels.Load3(_e261*48+16)), asuint(grid_levels.Load(_e261*48+28)), asfloat(grid_levels.Load3(_e261*48+32)), asuint(grid_levels.Load(_e261*48+44)));
+                f = _e263;
             }
-            float _e252 = f.lo.x;
-            { uint dummy_6 = 0; grid.InterlockedExchange(0, asuint(_e252), dummy_6); }
-            float _e258 = f.lo.y;
-            { uint dummy_7 = 0; grid.InterlockedExchange(4, asuint(_e258), dummy_7); }
-            float _e264 = f.lo.z;
-            { uint dummy_8 = 0; grid.InterlockedExchange(8, asuint(_e264), dummy_8); }
-            uint _e269 = f.nx;
-            { uint dummy_9 = 0; grid.InterlockedExchange(12, _e269, dummy_9); }
-            float _e274 = f.hi.x;
-            { uint dummy_10 = 0; grid.InterlockedExchange(16, asuint(_e274), dummy_10); }
-            float _e280 = f.hi.y;
-            { uint dummy_11 = 0; grid.InterlockedExchange(20, asuint(_e280), dummy_11); }
-            float _e286 = f.hi.z;
-            { uint dummy_12 = 0; grid.InterlockedExchange(24, asuint(_e286), dummy_12); }
-            uint _e291 = f.ny;
-            { uint dummy_13 = 0; grid.InterlockedExchange(28, _e291, dummy_13); }
-            float _e296 = f.inv.x;
-            { uint dummy_14 = 0; grid.InterlockedExchange(32, asuint(_e296), dummy_14); }
-            float _e302 = f.inv.y;
-            { uint dummy_15 = 0; grid.InterlockedExchange(36, asuint(_e302), dummy_15); }
-            float _e308 = f.inv.z;
-            { uint dummy_16 = 0; grid.InterlockedExchange(40, asuint(_e308), dummy_16); }
-            uint _e313 = f.nz;
-            { uint dummy_17 = 0; grid.InterlockedExchange(44, _e313, dummy_17); }
-            float _e318 = params.reach;
-            { uint dummy_18 = 0; grid.InterlockedExchange(48, asuint(_e318), dummy_18); }
+            float _e268 = f.lo.x;
+            { uint dummy_6 = 0; grid.InterlockedExchange(h_1*4, asuint(_e268), dummy_6); }
+            float _e276 = f.lo.y;
+            { uint dummy_7 = 0; grid.InterlockedExchange((h_1 + 1u)*4, asuint(_e276), dummy_7); }
+            float _e284 = f.lo.z;
+            { uint dummy_8 = 0; grid.InterlockedExchange((h_1 + 2u)*4, asuint(_e284), dummy_8); }
+            uint _e291 = f.nx;
+            { uint dummy_9 = 0; grid.InterlockedExchange((h_1 + 3u)*4, _e291, dummy_9); }
+            float _e298 = f.hi.x;
+            { uint dummy_10 = 0; grid.InterlockedExchange((h_1 + 4u)*4, asuint(_e298), dummy_10); }
+            float _e306 = f.hi.y;
+            { uint dummy_11 = 0; grid.InterlockedExchange((h_1 + 5u)*4, asuint(_e306), dummy_11); }
+            float _e314 = f.hi.z;
+            { uint dummy_12 = 0; grid.InterlockedExchange((h_1 + 6u)*4, asuint(_e314), dummy_12); }
+            uint _e321 = f.ny;
+            { uint dummy_13 = 0; grid.InterlockedExchange((h_1 + 7u)*4, _e321, dummy_13); }
+            float _e328 = f.inv.x;
+            { uint dummy_14 = 0; grid.InterlockedExchange((h_1 + 8u)*4, asuint(_e328), dummy_14); }
+            float _e336 = f.inv.y;
+            { uint dummy_15 = 0; grid.InterlockedExchange((h_1 + 9u)*4, asuint(_e336), dummy_15); }
+            float _e344 = f.inv.z;
+            { uint dummy_16 = 0; grid.InterlockedExchange((h_1 + 10u)*4, asuint(_e344), dummy_16); }
+            uint _e351 = f.nz;
+            { uint dummy_17 = 0; grid.InterlockedExchange((h_1 + 11u)*4, _e351, dummy_17); }
+            float _e358 = params.reach;
+            { uint dummy_18 = 0; grid.InterlockedExchange((h_1 + 12u)*4, asuint(_e358), dummy_18); }
             return;
         }
         case 2u:
         case 4u: {
-            uint _e322 = params.count;
-            if ((i_2 >= _e322)) {
+            uint _e362 = params.count;
+            if ((i_2 >= _e362)) {
                 return;
             }
-            const GridFrame _e324 = grid_frame();
-            const uint _e325 = grid_leaf(i_2);
-            if (!((_e324.nx == 0u))) {
-                local_2 = (_e325 == BSH_NONE);
+            const GridFrame _e364 = grid_frame(h_1);
+            const uint _e365 = grid_leaf(i_2);
+            if (!((_e364.nx == 0u))) {
+                local_2 = (_e365 == BSH_NONE);
             } else {
                 local_2 = true;
             }
-            bool _e335 = local_2;
-            if (_e335) {
+            bool _e375 = local_2;
+            if (_e375) {
                 return;
             }
-            BshNode leaf_1 = ConstructBshNode(asfloat(bsh_nodes.Load3(_e325*32+0)), asfloat(bsh_nodes.Load(_e325*32+12)), asuint(bsh_nodes.Load(_e325*32+16)), asuint(bsh_nodes.Load(_e325*32+20)), asuint(bsh_nodes.Load(_e325*32+24)), asfloat(bsh_nodes.Load(_e325*32+28)));
-            float _e341 = params.reach;
-            const float _e342 = bsh_grid_reach(leaf_1, _e341);
-            const float _e343 = bsh_grid_pad(_e342);
-            const uint3 _e344 = cover_first(_e324, leaf_1, _e343);
-            const uint3 _e345 = cover_last(_e324, leaf_1, _e343);
-            z = _e344.z;
+            BshNode leaf_1 = ConstructBshNode(asfloat(bsh_nodes.Load3(_e365*32+0)), asfloat(bsh_nodes.Load(_e365*32+12)), asuint(bsh_nodes.Load(_e365*32+16)), asuint(bsh_nodes.Load(_e365*32+20)), asuint(bsh_nodes.Load(_e365*32+24)), asfloat(bsh_nodes.Load(_e365*32+28)));
+            float _e381 = params.reach;
+            const float _e382 = bsh_grid_reach(leaf_1, _e381);
+            const float _e383 = bsh_grid_pad(_e382);
+            const uint3 _e385 = bsh_grid_first(_e364, leaf_1.center_, _e383);
+            const uint3 _e387 = bsh_grid_last(_e364, leaf_1.center_, _e383);
+            z = _e385.z;
             uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
             bool loop_init_5 = true;
             while(true) {
                 if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
                 loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
                 if (!loop_init_5) {
-                    uint _e388 = z;
-                    z = (_e388 + 1u);
+                    uint _e434 = z;
+                    z = (_e434 + 1u);
                 }
                 loop_init_5 = false;
-                uint _e348 = z;
-                if ((_e348 <= _e345.z)) {
+                uint _e390 = z;
+                if ((_e390 <= _e387.z)) {
                 } else {
                     break;
                 }
                 {
-                    y = _e344.y;
+                    y = _e385.y;
                     uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
                     bool loop_init_6 = true;
                     while(true) {
                         if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
                         loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
                         if (!loop_init_6) {
-                            uint _e385 = y;
-                            y = (_e385 + 1u);
+                            uint _e431 = y;
+                            y = (_e431 + 1u);
                         }
                         loop_init_6 = false;
-                        uint _e353 = y;
-                        if ((_e353 <= _e345.y)) {
+                        uint _e395 = y;
+                        if ((_e395 <= _e387.y)) {
                         } else {
                             break;
                         }
                         {
-                            x = _e344.x;
+                            x = _e385.x;
                             uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
                             bool loop_init_7 = true;
                             while(true) {
                                 if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
                                 loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
                                 if (!loop_init_7) {
-                                    uint _e382 = x;
-                                    x = (_e382 + 1u);
+                                    uint _e428 = x;
+                                    x = (_e428 + 1u);
                                 }
                                 loop_init_7 = false;
-                                uint _e358 = x;
-                                if ((_e358 <= _e345.x)) {
+                                uint _e400 = x;
+                                if ((_e400 <= _e387.x)) {
                                 } else {
                                     break;
                                 }
                                 {
-                                    uint _e361 = z;
-                                    uint _e364 = y;
-                                    uint _e368 = x;
-                                    uint c_5 = ((((_e361 * _e324.ny) + _e364) * _e324.nx) + _e368);
-                                    uint _e373; grid_fill.InterlockedAdd(c_5*4, 1u, _e373);
-                                    uint _e376 = params.stage;
-                                    if ((_e376 == 4u)) {
-                                        grid_entries.Store(_e373*4, asuint(i_2));
+                                    uint _e403 = z;
+                                    uint _e406 = y;
+                                    uint _e410 = x;
+                                    uint c_5 = ((((_e403 * _e364.ny) + _e406) * _e364.nx) + _e410);
+                                    uint _e415 = params.fill;
+                                    uint _e419; grid_fill.InterlockedAdd((_e415 + c_5)*4, 1u, _e419);
+                                    uint _e422 = params.stage;
+                                    if ((_e422 == 4u)) {
+                                        grid_entries.Store(_e419*4, asuint(i_2));
                                     }
                                 }
                             }
@@ -608,13 +616,14 @@ void main(uint3 gid : SV_DispatchThreadID, uint local_invocation_index : SV_Grou
             return;
         }
         default: {
-            const GridFrame _e390 = grid_frame();
-            if ((i_2 >= ((_e390.nx * _e390.ny) * _e390.nz))) {
+            const GridFrame _e436 = grid_frame(h_1);
+            if ((i_2 >= ((_e436.nx * _e436.ny) * _e436.nz))) {
                 return;
             }
-            { uint dummy_19 = 0; grid_fill.InterlockedExchange(i_2*4, 0u, dummy_19); }
-            uint a_2; grid.InterlockedOr((GRID_HEADER + i_2)*4, 0, a_2);
-            uint b_2; grid.InterlockedOr(((GRID_HEADER + i_2) + 1u)*4, 0, b_2);
+            uint _e446 = params.fill;
+            { uint dummy_19 = 0; grid_fill.InterlockedExchange((_e446 + i_2)*4, 0u, dummy_19); }
+            uint a_2; grid.InterlockedOr((starts + i_2)*4, 0, a_2);
+            uint b_2; grid.InterlockedOr(((starts + i_2) + 1u)*4, 0, b_2);
             s = (a_2 + 1u);
             uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
             bool loop_init_8 = true;
@@ -622,48 +631,48 @@ void main(uint3 gid : SV_DispatchThreadID, uint local_invocation_index : SV_Grou
                 if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
                 loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
                 if (!loop_init_8) {
-                    uint _e452 = s;
-                    s = (_e452 + 1u);
+                    uint _e500 = s;
+                    s = (_e500 + 1u);
                 }
                 loop_init_8 = false;
-                uint _e415 = s;
-                if ((_e415 < b_2)) {
+                uint _e463 = s;
+                if ((_e463 < b_2)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e418 = s;
-                    uint v_1 = asuint(grid_entries.Load(_e418*4));
-                    uint _e421 = s;
-                    c_2 = _e421;
+                    uint _e466 = s;
+                    uint v_1 = asuint(grid_entries.Load(_e466*4));
+                    uint _e469 = s;
+                    c_2 = _e469;
                     uint2 loop_bound_9 = uint2(4294967295u, 4294967295u);
                     while(true) {
                         if (all(loop_bound_9 == uint2(0u, 0u))) { break; }
                         loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
-                        uint _e423 = c_2;
-                        if ((_e423 > a_2)) {
-                            uint _e428 = c_2;
-                            uint _e432 = asuint(grid_entries.Load((_e428 - 1u)*4));
-                            local_3 = (_e432 > v_1);
+                        uint _e471 = c_2;
+                        if ((_e471 > a_2)) {
+                            uint _e476 = c_2;
+                            uint _e480 = asuint(grid_entries.Load((_e476 - 1u)*4));
+                            local_3 = (_e480 > v_1);
                         } else {
                             local_3 = false;
                         }
-                        bool _e435 = local_3;
-                        if (_e435) {
+                        bool _e483 = local_3;
+                        if (_e483) {
                         } else {
                             break;
                         }
                         {
-                            uint _e437 = c_2;
-                            uint _e440 = c_2;
-                            uint _e444 = asuint(grid_entries.Load((_e440 - 1u)*4));
-                            grid_entries.Store(_e437*4, asuint(_e444));
-                            uint _e445 = c_2;
-                            c_2 = (_e445 - 1u);
+                            uint _e485 = c_2;
+                            uint _e488 = c_2;
+                            uint _e492 = asuint(grid_entries.Load((_e488 - 1u)*4));
+                            grid_entries.Store(_e485*4, asuint(_e492));
+                            uint _e493 = c_2;
+                            c_2 = (_e493 - 1u);
                         }
                     }
-                    uint _e449 = c_2;
-                    grid_entries.Store(_e449*4, asuint(v_1));
+                    uint _e497 = c_2;
+                    grid_entries.Store(_e497*4, asuint(v_1));
                 }
             }
             s_1 = a_2;
@@ -673,21 +682,21 @@ void main(uint3 gid : SV_DispatchThreadID, uint local_invocation_index : SV_Grou
                 if (all(loop_bound_10 == uint2(0u, 0u))) { break; }
                 loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
                 if (!loop_init_9) {
-                    uint _e468 = s_1;
-                    s_1 = (_e468 + 1u);
+                    uint _e516 = s_1;
+                    s_1 = (_e516 + 1u);
                 }
                 loop_init_9 = false;
-                uint _e455 = s_1;
-                if ((_e455 < b_2)) {
+                uint _e503 = s_1;
+                if ((_e503 < b_2)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e458 = s_1;
-                    uint _e462 = s_1;
-                    uint _e464 = asuint(grid_entries.Load(_e462*4));
-                    uint _e466 = asuint(grid_leaves.Load(_e464*4));
-                    grid_entries.Store(_e458*4, asuint(_e466));
+                    uint _e506 = s_1;
+                    uint _e510 = s_1;
+                    uint _e512 = asuint(grid_entries.Load(_e510*4));
+                    uint _e514 = asuint(grid_leaves.Load(_e512*4));
+                    grid_entries.Store(_e506*4, asuint(_e514));
                 }
             }
             return;

@@ -719,12 +719,12 @@ float3 diffuse_brdf(float3 base_5, float metallic_1, float3 f0_d_1, float f90_d_
 
 float half_cosine(float3 v, float3 l)
 {
-    float3 h_4 = (v + l);
-    float len2_ = dot(h_4, h_4);
+    float3 h_7 = (v + l);
+    float len2_ = dot(h_7, h_7);
     if ((len2_ <= 0.0)) {
         return 0.0;
     }
-    return saturate((dot(v, h_4) / sqrt(len2_)));
+    return saturate((dot(v, h_7) / sqrt(len2_)));
 }
 
 float3 specular_brdf(float3 base_6, float metallic_2, float3 f0_d_2, float f90_d_2, float alpha_3, float3 n_7, float3 v_1, float3 l_1)
@@ -744,10 +744,10 @@ float3 specular_brdf(float3 base_6, float metallic_2, float3 f0_d_2, float f90_d
     }
     float3 hs = (v_1 + l_1);
     float inv_1 = (1.0 / sqrt(dot(hs, hs)));
-    float3 h_5 = (hs * inv_1);
-    float3 c_13 = cross(n_7, h_5);
-    const float _e32 = ggx_d(dot(n_7, h_5), dot(c_13, c_13), alpha_3);
-    const float3 _e34 = specular_fresnel(base_6, metallic_2, f0_d_2, f90_d_2, dot(v_1, h_5));
+    float3 h_8 = (hs * inv_1);
+    float3 c_13 = cross(n_7, h_8);
+    const float _e32 = ggx_d(dot(n_7, h_8), dot(c_13, c_13), alpha_3);
+    const float3 _e34 = specular_fresnel(base_6, metallic_2, f0_d_2, f90_d_2, dot(v_1, h_8));
     const float _e35 = smith_visibility(n_l_1, n_v_2, alpha_3);
     return (_e34 * (_e32 * _e35));
 }
@@ -1552,42 +1552,43 @@ uint grid_word(uint i_4)
     return _e3;
 }
 
-GridFrame grid_frame()
+GridFrame grid_frame(uint h_1)
 {
     GridFrame f_1 = (GridFrame)0;
 
-    const uint _e3 = grid_word(0u);
-    const uint _e6 = grid_word(1u);
-    const uint _e9 = grid_word(2u);
-    f_1.lo = float3(asfloat(_e3), asfloat(_e6), asfloat(_e9));
-    const uint _e14 = grid_word(3u);
-    f_1.nx = _e14;
-    const uint _e17 = grid_word(4u);
-    const uint _e20 = grid_word(5u);
-    const uint _e23 = grid_word(6u);
-    f_1.hi = float3(asfloat(_e17), asfloat(_e20), asfloat(_e23));
-    const uint _e28 = grid_word(7u);
-    f_1.ny = _e28;
-    const uint _e31 = grid_word(8u);
-    const uint _e34 = grid_word(9u);
-    const uint _e37 = grid_word(10u);
-    f_1.inv = float3(asfloat(_e31), asfloat(_e34), asfloat(_e37));
-    const uint _e42 = grid_word(11u);
-    f_1.nz = _e42;
-    GridFrame _e43 = f_1;
-    const GridFrame gridframe = _e43;
+    const uint _e3 = grid_word(h_1);
+    const uint _e7 = grid_word((h_1 + 1u));
+    const uint _e11 = grid_word((h_1 + 2u));
+    f_1.lo = float3(asfloat(_e3), asfloat(_e7), asfloat(_e11));
+    const uint _e17 = grid_word((h_1 + 3u));
+    f_1.nx = _e17;
+    const uint _e21 = grid_word((h_1 + 4u));
+    const uint _e25 = grid_word((h_1 + 5u));
+    const uint _e29 = grid_word((h_1 + 6u));
+    f_1.hi = float3(asfloat(_e21), asfloat(_e25), asfloat(_e29));
+    const uint _e35 = grid_word((h_1 + 7u));
+    f_1.ny = _e35;
+    const uint _e39 = grid_word((h_1 + 8u));
+    const uint _e43 = grid_word((h_1 + 9u));
+    const uint _e47 = grid_word((h_1 + 10u));
+    f_1.inv = float3(asfloat(_e39), asfloat(_e43), asfloat(_e47));
+    const uint _e53 = grid_word((h_1 + 11u));
+    f_1.nz = _e53;
+    GridFrame _e54 = f_1;
+    const GridFrame gridframe = _e54;
     return gridframe;
 }
 
-float grid_reach()
+float grid_reach(uint h_2)
 {
-    const uint _e1 = grid_word(12u);
-    return asfloat(_e1);
+    const uint _e3 = grid_word((h_2 + 12u));
+    return asfloat(_e3);
 }
 
 BshCursor bsh_cursor(float3 x_13, float3 r_7, float4 rl_5)
 {
     BshCursor c_7 = (BshCursor)0;
+    uint h_3 = 0u;
     bool local_27 = (bool)0;
     bool local_28 = (bool)0;
 
@@ -1595,34 +1596,43 @@ BshCursor bsh_cursor(float3 x_13, float3 r_7, float4 rl_5)
     c_7.end = 0u;
     const uint _e10 = bsh_first(BSH);
     c_7.next = _e10;
-    const GridFrame _e11 = grid_frame();
-    uint _e13 = c_7.next;
-    if ((_e13 != BSH_NONE)) {
-        local_27 = (_e11.nx > 0u);
+    const float _e15 = grid_reach(0u);
+    if ((rl_5.w > _e15)) {
+        const uint _e18 = grid_word(14u);
+        h_3 = _e18;
+    }
+    uint _e19 = h_3;
+    const GridFrame _e20 = grid_frame(_e19);
+    uint _e22 = c_7.next;
+    if ((_e22 != BSH_NONE)) {
+        local_27 = (_e20.nx > 0u);
     } else {
         local_27 = false;
     }
-    bool _e22 = local_27;
-    if (_e22) {
-        const float _e26 = grid_reach();
-        local_28 = (rl_5.w <= _e26);
+    bool _e31 = local_27;
+    if (_e31) {
+        uint _e35 = h_3;
+        const float _e36 = grid_reach(_e35);
+        local_28 = (rl_5.w <= _e36);
     } else {
         local_28 = false;
     }
-    bool _e29 = local_28;
-    if (_e29) {
-        const uint _e30 = bsh_grid_cell(_e11, x_13);
-        if ((_e30 != BSH_NONE)) {
-            uint _e38 = asuint(grid.Load((GRID_HEADER + _e30)*4));
-            c_7.i = _e38;
-            uint _e46 = asuint(grid.Load(((GRID_HEADER + _e30) + 1u)*4));
-            c_7.end = _e46;
-            uint _e51 = asuint(bsh_nodes.Load(20+0));
-            c_7.next = _e51;
+    bool _e39 = local_28;
+    if (_e39) {
+        const uint _e40 = bsh_grid_cell(_e20, x_13);
+        if ((_e40 != BSH_NONE)) {
+            uint _e45 = h_3;
+            uint _e50 = asuint(grid.Load(((_e45 + GRID_HEADER) + _e40)*4));
+            c_7.i = _e50;
+            uint _e53 = h_3;
+            uint _e60 = asuint(grid.Load((((_e53 + GRID_HEADER) + _e40) + 1u)*4));
+            c_7.end = _e60;
+            uint _e65 = asuint(bsh_nodes.Load(20+0));
+            c_7.next = _e65;
         }
     }
-    BshCursor _e52 = c_7;
-    const BshCursor bshcursor = _e52;
+    BshCursor _e66 = c_7;
+    const BshCursor bshcursor = _e66;
     return bshcursor;
 }
 
@@ -1659,12 +1669,12 @@ uint bsh_cursor_next(inout BshCursor c_8, float3 x_14, float3 r_8, float4 rl_6)
     return _e25;
 }
 
-float next_threshold(float sum_1, inout uint h_1)
+float next_threshold(float sum_1, inout uint h_4)
 {
-    uint _e2 = h_1;
+    uint _e2 = h_4;
     const uint _e3 = pcg_hash(_e2);
-    h_1 = _e3;
-    uint _e4 = h_1;
+    h_4 = _e3;
+    uint _e4 = h_4;
     const float _e5 = xi_from_bits(_e4);
     const float _e6 = weighted_threshold(sum_1, _e5);
     return _e6;
@@ -1807,13 +1817,13 @@ float light_pdf(uint li_6, float3 x_22, float3 n_20, float3 r_13, float4 lobe_9,
     return _e10;
 }
 
-WeightedPicks weighted_picks(uint h_2)
+WeightedPicks weighted_picks(uint h_5)
 {
     WeightedPicks picks = (WeightedPicks)0;
 
     picks.w_sum = 0.0;
     picks.n = 0u;
-    picks.h = h_2;
+    picks.h = h_5;
     WeightedPicks _e7 = picks;
     const WeightedPicks weightedpicks = _e7;
     return weightedpicks;
@@ -1821,7 +1831,7 @@ WeightedPicks weighted_picks(uint h_2)
 
 void weighted_offer(inout WeightedPicks picks_1, uint li_7, float w_9)
 {
-    uint h_3 = (uint)0;
+    uint h_6 = (uint)0;
     uint s_3 = 0u;
 
     uint _e4 = picks_1.n;
@@ -1830,7 +1840,7 @@ void weighted_offer(inout WeightedPicks picks_1, uint li_7, float w_9)
         float _e10 = picks_1.w_sum;
         picks_1.w_sum = (_e10 + w_9);
         uint _e13 = picks_1.h;
-        h_3 = _e13;
+        h_6 = _e13;
         uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
         bool loop_init_1 = true;
         while(true) {
@@ -1857,12 +1867,12 @@ void weighted_offer(inout WeightedPicks picks_1, uint li_7, float w_9)
                     picks_1.w[min(uint(_e31), 7u)] = w_9;
                     uint _e34 = s_3;
                     float _e37 = picks_1.w_sum;
-                    const float _e38 = next_threshold(_e37, h_3);
+                    const float _e38 = next_threshold(_e37, h_6);
                     picks_1.threshold[min(uint(_e34), 7u)] = _e38;
                 }
             }
         }
-        uint _e43 = h_3;
+        uint _e43 = h_6;
         picks_1.h = _e43;
         return;
     } else {

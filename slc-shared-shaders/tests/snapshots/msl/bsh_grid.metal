@@ -20,8 +20,12 @@ struct GridParams {
     uint capacity;
     float reach;
     uint cells;
+    uint header;
+    uint fill;
+    uint entries;
     uint pad0_;
     uint pad1_;
+    uint pad2_;
 };
 struct BshNode {
     metal::packed_float3 center;
@@ -192,6 +196,28 @@ uint bsh_grid_axis(
     return metal::min(_e9, n - 1u);
 }
 
+metal::uint3 bsh_grid_first(
+    GridFrame f_1,
+    metal::float3 c_3,
+    float r
+) {
+    uint _e10 = bsh_grid_axis(c_3.x - r, f_1.lo[0], f_1.inv[0], f_1.nx);
+    uint _e18 = bsh_grid_axis(c_3.y - r, f_1.lo[1], f_1.inv[1], f_1.ny);
+    uint _e26 = bsh_grid_axis(c_3.z - r, f_1.lo[2], f_1.inv[2], f_1.nz);
+    return metal::uint3(_e10, _e18, _e26);
+}
+
+metal::uint3 bsh_grid_last(
+    GridFrame f_2,
+    metal::float3 c_4,
+    float r_1
+) {
+    uint _e10 = bsh_grid_axis(c_4.x + r_1, f_2.lo[0], f_2.inv[0], f_2.nx);
+    uint _e18 = bsh_grid_axis(c_4.y + r_1, f_2.lo[1], f_2.inv[1], f_2.ny);
+    uint _e26 = bsh_grid_axis(c_4.z + r_1, f_2.lo[2], f_2.inv[2], f_2.nz);
+    return metal::uint3(_e10, _e18, _e26);
+}
+
 uint grid_word(
     uint i,
     device type_8 const& grid,
@@ -202,30 +228,31 @@ uint grid_word(
 }
 
 GridFrame grid_frame(
+    uint h,
     device type_8 const& grid,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GridFrame f_1 = {};
-    uint _e3 = grid_word(0u, grid, _buffer_sizes);
-    uint _e6 = grid_word(1u, grid, _buffer_sizes);
-    uint _e9 = grid_word(2u, grid, _buffer_sizes);
-    f_1.lo = metal::float3(as_type<float>(_e3), as_type<float>(_e6), as_type<float>(_e9));
-    uint _e14 = grid_word(3u, grid, _buffer_sizes);
-    f_1.nx = _e14;
-    uint _e17 = grid_word(4u, grid, _buffer_sizes);
-    uint _e20 = grid_word(5u, grid, _buffer_sizes);
-    uint _e23 = grid_word(6u, grid, _buffer_sizes);
-    f_1.hi = metal::float3(as_type<float>(_e17), as_type<float>(_e20), as_type<float>(_e23));
-    uint _e28 = grid_word(7u, grid, _buffer_sizes);
-    f_1.ny = _e28;
-    uint _e31 = grid_word(8u, grid, _buffer_sizes);
-    uint _e34 = grid_word(9u, grid, _buffer_sizes);
-    uint _e37 = grid_word(10u, grid, _buffer_sizes);
-    f_1.inv = metal::float3(as_type<float>(_e31), as_type<float>(_e34), as_type<float>(_e37));
-    uint _e42 = grid_word(11u, grid, _buffer_sizes);
-    f_1.nz = _e42;
-    GridFrame _e43 = f_1;
-    return _e43;
+    GridFrame f_3 = {};
+    uint _e3 = grid_word(h, grid, _buffer_sizes);
+    uint _e7 = grid_word(h + 1u, grid, _buffer_sizes);
+    uint _e11 = grid_word(h + 2u, grid, _buffer_sizes);
+    f_3.lo = metal::float3(as_type<float>(_e3), as_type<float>(_e7), as_type<float>(_e11));
+    uint _e17 = grid_word(h + 3u, grid, _buffer_sizes);
+    f_3.nx = _e17;
+    uint _e21 = grid_word(h + 4u, grid, _buffer_sizes);
+    uint _e25 = grid_word(h + 5u, grid, _buffer_sizes);
+    uint _e29 = grid_word(h + 6u, grid, _buffer_sizes);
+    f_3.hi = metal::float3(as_type<float>(_e21), as_type<float>(_e25), as_type<float>(_e29));
+    uint _e35 = grid_word(h + 7u, grid, _buffer_sizes);
+    f_3.ny = _e35;
+    uint _e39 = grid_word(h + 8u, grid, _buffer_sizes);
+    uint _e43 = grid_word(h + 9u, grid, _buffer_sizes);
+    uint _e47 = grid_word(h + 10u, grid, _buffer_sizes);
+    f_3.inv = metal::float3(as_type<float>(_e39), as_type<float>(_e43), as_type<float>(_e47));
+    uint _e53 = grid_word(h + 11u, grid, _buffer_sizes);
+    f_3.nz = _e53;
+    GridFrame _e54 = f_3;
+    return _e54;
 }
 
 uint grid_leaf(
@@ -234,36 +261,12 @@ uint grid_leaf(
     device type_5 const& grid_leaves,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint node_5 = grid_leaves[i_1];
-    uint _e7 = bsh_nodes[node_5].light;
+    uint node_3 = grid_leaves[i_1];
+    uint _e7 = bsh_nodes[node_3].light;
     if ((_e7 & BSH_TAIL) != 0u) {
         return BSH_NONE;
     }
-    return node_5;
-}
-
-metal::uint3 cover_first(
-    GridFrame f_2,
-    BshNode node_3,
-    float r
-) {
-    metal::float3 c_3 = node_3.center;
-    uint _e11 = bsh_grid_axis(node_3.center[0] - r, f_2.lo[0], f_2.inv[0], f_2.nx);
-    uint _e19 = bsh_grid_axis(node_3.center[1] - r, f_2.lo[1], f_2.inv[1], f_2.ny);
-    uint _e27 = bsh_grid_axis(node_3.center[2] - r, f_2.lo[2], f_2.inv[2], f_2.nz);
-    return metal::uint3(_e11, _e19, _e27);
-}
-
-metal::uint3 cover_last(
-    GridFrame f_3,
-    BshNode node_4,
-    float r_1
-) {
-    metal::float3 c_4 = node_4.center;
-    uint _e11 = bsh_grid_axis(node_4.center[0] + r_1, f_3.lo[0], f_3.inv[0], f_3.nx);
-    uint _e19 = bsh_grid_axis(node_4.center[1] + r_1, f_3.lo[1], f_3.inv[1], f_3.ny);
-    uint _e27 = bsh_grid_axis(node_4.center[2] + r_1, f_3.lo[2], f_3.inv[2], f_3.nz);
-    return metal::uint3(_e11, _e19, _e27);
+    return node_3;
 }
 uint naga_div(uint lhs, uint rhs) {
     return lhs / metal::select(rhs, 1u, rhs == 0u);
@@ -291,7 +294,7 @@ kernel void main_(
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
     uint sum = 0u;
     uint c = {};
-    uint start = 0u;
+    uint start = {};
     uint j = 0u;
     uint c_1 = {};
     uint l = 0u;
@@ -309,10 +312,12 @@ kernel void main_(
     bool local_3 = {};
     uint s_1 = {};
     uint i_2 = gid.x;
-    uint _e4 = params.stage;
-    if (_e4 == 3u) {
-        GridFrame _e7 = grid_frame(grid, _buffer_sizes);
-        uint cells_1 = (_e7.nx * _e7.ny) * _e7.nz;
+    uint h_1 = params.header;
+    uint starts = h_1 + GRID_HEADER;
+    uint _e9 = params.stage;
+    if (_e9 == 3u) {
+        GridFrame _e12 = grid_frame(h_1, grid, _buffer_sizes);
+        uint cells_1 = (_e12.nx * _e12.ny) * _e12.nz;
         uint run = naga_div((cells_1 + 64u) - 1u, 64u);
         uint a_1 = metal::min(i_2 * run, cells_1);
         uint b_1 = metal::min(a_1 + run, cells_1);
@@ -323,45 +328,48 @@ kernel void main_(
             if (metal::all(loop_bound == uint2(0u))) { break; }
             loop_bound -= uint2(loop_bound.y == 0u, 1u);
             if (!loop_init) {
-                uint _e35 = c;
-                c = _e35 + 1u;
+                uint _e44 = c;
+                c = _e44 + 1u;
             }
             loop_init = false;
-            uint _e26 = c;
-            if (_e26 < b_1) {
+            uint _e31 = c;
+            if (_e31 < b_1) {
             } else {
                 break;
             }
             {
-                uint _e28 = sum;
-                uint _e30 = c;
-                uint _e32 = metal::atomic_load_explicit(&grid_fill[_e30], metal::memory_order_relaxed);
-                sum = _e28 + _e32;
+                uint _e33 = sum;
+                uint _e37 = params.fill;
+                uint _e38 = c;
+                uint _e41 = metal::atomic_load_explicit(&grid_fill[_e37 + _e38], metal::memory_order_relaxed);
+                sum = _e33 + _e41;
             }
         }
-        uint _e39 = sum;
-        wg_sums.inner[i_2] = _e39;
+        uint _e48 = sum;
+        wg_sums.inner[i_2] = _e48;
         metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+        uint _e51 = params.entries;
+        start = _e51;
         uint2 loop_bound_1 = uint2(4294967295u);
         bool loop_init_1 = true;
         while(true) {
             if (metal::all(loop_bound_1 == uint2(0u))) { break; }
             loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
             if (!loop_init_1) {
-                uint _e53 = j;
-                j = _e53 + 1u;
+                uint _e64 = j;
+                j = _e64 + 1u;
             }
             loop_init_1 = false;
-            uint _e44 = j;
-            if (_e44 < i_2) {
+            uint _e55 = j;
+            if (_e55 < i_2) {
             } else {
                 break;
             }
             {
-                uint _e46 = start;
-                uint _e48 = j;
-                uint _e50 = wg_sums.inner[_e48];
-                start = _e46 + _e50;
+                uint _e57 = start;
+                uint _e59 = j;
+                uint _e61 = wg_sums.inner[_e59];
+                start = _e57 + _e61;
             }
         }
         c_1 = a_1;
@@ -371,80 +379,82 @@ kernel void main_(
             if (metal::all(loop_bound_2 == uint2(0u))) { break; }
             loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
             if (!loop_init_2) {
-                uint _e75 = c_1;
-                c_1 = _e75 + 1u;
+                uint _e93 = c_1;
+                c_1 = _e93 + 1u;
             }
             loop_init_2 = false;
-            uint _e56 = c_1;
-            if (_e56 < b_1) {
+            uint _e67 = c_1;
+            if (_e67 < b_1) {
             } else {
                 break;
             }
             {
-                uint _e59 = c_1;
-                uint n_1 = metal::atomic_load_explicit(&grid_fill[_e59], metal::memory_order_relaxed);
-                uint _e64 = c_1;
-                uint _e67 = start;
-                metal::atomic_store_explicit(&grid[GRID_HEADER + _e64], _e67, metal::memory_order_relaxed);
-                uint _e69 = c_1;
-                uint _e71 = start;
-                metal::atomic_store_explicit(&grid_fill[_e69], _e71, metal::memory_order_relaxed);
-                uint _e72 = start;
-                start = _e72 + n_1;
+                uint _e72 = params.fill;
+                uint _e73 = c_1;
+                uint n_1 = metal::atomic_load_explicit(&grid_fill[_e72 + _e73], metal::memory_order_relaxed);
+                uint _e78 = c_1;
+                uint _e81 = start;
+                metal::atomic_store_explicit(&grid[starts + _e78], _e81, metal::memory_order_relaxed);
+                uint _e85 = params.fill;
+                uint _e86 = c_1;
+                uint _e89 = start;
+                metal::atomic_store_explicit(&grid_fill[_e85 + _e86], _e89, metal::memory_order_relaxed);
+                uint _e90 = start;
+                start = _e90 + n_1;
             }
         }
         if ((i_2 + 1u) == 64u) {
-            uint _e85 = start;
-            metal::atomic_store_explicit(&grid[GRID_HEADER + cells_1], _e85, metal::memory_order_relaxed);
+            uint _e102 = start;
+            metal::atomic_store_explicit(&grid[starts + cells_1], _e102, metal::memory_order_relaxed);
         }
         return;
     }
-    uint _e88 = params.stage;
-    switch(_e88) {
+    uint _e105 = params.stage;
+    switch(_e105) {
         case 0u: {
-            uint _e91 = params.count;
-            if (i_2 >= _e91) {
+            uint _e108 = params.count;
+            if (i_2 >= _e108) {
                 return;
             }
-            uint _e93 = grid_leaf(i_2, bsh_nodes, grid_leaves, _buffer_sizes);
-            if (_e93 == BSH_NONE) {
+            uint _e110 = grid_leaf(i_2, bsh_nodes, grid_leaves, _buffer_sizes);
+            if (_e110 == BSH_NONE) {
                 return;
             }
-            uint _e99 = metal::atomic_fetch_add_explicit(&grid[13], 1u, metal::memory_order_relaxed);
-            BshNode leaf = bsh_nodes[_e93];
-            float _e105 = params.reach;
-            float _e106 = bsh_grid_reach(leaf, _e105);
-            float _e107 = bsh_grid_pad(_e106);
+            uint _e118 = metal::atomic_fetch_add_explicit(&grid[h_1 + 13u], 1u, metal::memory_order_relaxed);
+            BshNode leaf = bsh_nodes[_e110];
+            float _e124 = params.reach;
+            float _e125 = bsh_grid_reach(leaf, _e124);
+            float _e126 = bsh_grid_pad(_e125);
             uint2 loop_bound_3 = uint2(4294967295u);
             bool loop_init_3 = true;
             while(true) {
                 if (metal::all(loop_bound_3 == uint2(0u))) { break; }
                 loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
                 if (!loop_init_3) {
-                    uint _e151 = l;
-                    l = _e151 + 1u;
+                    uint _e173 = l;
+                    l = _e173 + 1u;
                 }
                 loop_init_3 = false;
-                uint _e110 = l;
-                uint _e113 = params.levels;
-                if (_e110 < _e113) {
+                uint _e129 = l;
+                uint _e132 = params.levels;
+                if (_e129 < _e132) {
                 } else {
                     break;
                 }
                 {
-                    uint _e116 = l;
-                    GridFrame _e118 = grid_levels[_e116];
-                    metal::uint3 _e119 = cover_last(_e118, leaf, _e107);
-                    uint _e121 = l;
-                    GridFrame _e123 = grid_levels[_e121];
-                    metal::uint3 _e124 = cover_first(_e123, leaf, _e107);
-                    metal::uint3 d = (_e119 - _e124) + metal::uint3(1u);
+                    uint _e135 = l;
+                    GridFrame _e137 = grid_levels[_e135];
+                    metal::uint3 _e139 = bsh_grid_last(_e137, leaf.center, _e126);
+                    uint _e141 = l;
+                    GridFrame _e143 = grid_levels[_e141];
+                    metal::uint3 _e145 = bsh_grid_first(_e143, leaf.center, _e126);
+                    metal::uint3 d = (_e139 - _e145) + metal::uint3(1u);
                     uint n_2 = (d.x * d.y) * d.z;
-                    uint _e136 = l;
-                    uint at = 16u + (2u * _e136);
-                    uint _e141 = metal::atomic_fetch_add_explicit(&grid[at], n_2, metal::memory_order_relaxed);
-                    if ((_e141 + n_2) < _e141) {
-                        uint _e149 = metal::atomic_fetch_add_explicit(&grid[at + 1u], 1u, metal::memory_order_relaxed);
+                    uint _e158 = l;
+                    uint at = (h_1 + 16u) + (2u * _e158);
+                    uint _e163 = metal::atomic_fetch_add_explicit(&grid[at], n_2, metal::memory_order_relaxed);
+                    if ((_e163 + n_2) < _e163) {
+                        uint _e171 = metal::atomic_fetch_add_explicit(&grid[at + 1u], 1u, metal::memory_order_relaxed);
                     }
                 }
             }
@@ -454,178 +464,177 @@ kernel void main_(
             if (i_2 != 0u) {
                 return;
             }
-            uint leaves_1 = metal::atomic_load_explicit(&grid[13], metal::memory_order_relaxed);
-            uint _e160 = params.levels;
-            chosen = _e160;
+            uint leaves_1 = metal::atomic_load_explicit(&grid[h_1 + 13u], metal::memory_order_relaxed);
+            uint _e184 = params.levels;
+            chosen = _e184;
             uint2 loop_bound_4 = uint2(4294967295u);
             bool loop_init_4 = true;
             while(true) {
                 if (metal::all(loop_bound_4 == uint2(0u))) { break; }
                 loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
                 if (!loop_init_4) {
-                    uint _e233 = l_1;
-                    l_1 = _e233 + 1u;
+                    uint _e247 = l_1;
+                    l_1 = _e247 + 1u;
                 }
                 loop_init_4 = false;
-                uint _e164 = l_1;
-                uint _e167 = params.levels;
-                if (_e164 < _e167) {
+                uint _e188 = l_1;
+                uint _e191 = params.levels;
+                if (_e188 < _e191) {
                 } else {
                     break;
                 }
                 {
-                    uint _e170 = l_1;
-                    GridFrame f_4 = grid_levels[_e170];
+                    uint _e194 = l_1;
+                    GridFrame f_4 = grid_levels[_e194];
                     uint cells_2 = (f_4.nx * f_4.ny) * f_4.nz;
-                    uint _e178 = bsh_grid_budget(leaves_1, cells_2);
-                    uint _e181 = params.capacity;
-                    uint budget = metal::min(_e178, _e181);
-                    uint _e183 = chosen;
-                    uint _e186 = params.levels;
-                    if (_e183 == _e186) {
-                        uint _e193 = l_1;
-                        uint _e197 = metal::atomic_load_explicit(&grid[17u + (2u * _e193)], metal::memory_order_relaxed);
-                        local = _e197 == 0u;
+                    uint _e202 = bsh_grid_budget(leaves_1, cells_2);
+                    uint _e205 = params.capacity;
+                    uint budget = metal::min(_e202, _e205);
+                    uint _e210 = l_1;
+                    uint at_1 = (h_1 + 16u) + (2u * _e210);
+                    uint _e213 = chosen;
+                    uint _e216 = params.levels;
+                    if (_e213 == _e216) {
+                        uint _e224 = metal::atomic_load_explicit(&grid[at_1 + 1u], metal::memory_order_relaxed);
+                        local = _e224 == 0u;
                     } else {
                         local = false;
                     }
-                    bool _e201 = local;
-                    if (_e201) {
-                        uint _e207 = l_1;
-                        uint _e211 = metal::atomic_load_explicit(&grid[16u + (2u * _e207)], metal::memory_order_relaxed);
-                        local_1 = _e211 <= budget;
+                    bool _e228 = local;
+                    if (_e228) {
+                        uint _e233 = metal::atomic_load_explicit(&grid[at_1], metal::memory_order_relaxed);
+                        local_1 = _e233 <= budget;
                     } else {
                         local_1 = false;
                     }
-                    bool _e214 = local_1;
-                    if (_e214) {
-                        uint _e215 = l_1;
-                        chosen = _e215;
+                    bool _e236 = local_1;
+                    if (_e236) {
+                        uint _e237 = l_1;
+                        chosen = _e237;
                     }
-                    uint _e219 = l_1;
-                    metal::atomic_store_explicit(&grid[16u + (2u * _e219)], 0u, metal::memory_order_relaxed);
-                    uint _e227 = l_1;
-                    metal::atomic_store_explicit(&grid[17u + (2u * _e227)], 0u, metal::memory_order_relaxed);
+                    metal::atomic_store_explicit(&grid[at_1], 0u, metal::memory_order_relaxed);
+                    metal::atomic_store_explicit(&grid[at_1 + 1u], 0u, metal::memory_order_relaxed);
                 }
             }
-            metal::atomic_store_explicit(&grid[13], 0u, metal::memory_order_relaxed);
-            uint _e239 = chosen;
-            uint _e242 = params.levels;
-            if (_e239 < _e242) {
-                uint _e245 = chosen;
-                GridFrame _e247 = grid_levels[_e245];
-                f = _e247;
+            metal::atomic_store_explicit(&grid[h_1 + 13u], 0u, metal::memory_order_relaxed);
+            uint _e255 = chosen;
+            uint _e258 = params.levels;
+            if (_e255 < _e258) {
+                uint _e261 = chosen;
+                GridFrame _e263 = grid_levels[_e261];
+                f = _e263;
             }
-            float _e252 = f.lo[0];
-            metal::atomic_store_explicit(&grid[0], as_type<uint>(_e252), metal::memory_order_relaxed);
-            float _e258 = f.lo[1];
-            metal::atomic_store_explicit(&grid[1], as_type<uint>(_e258), metal::memory_order_relaxed);
-            float _e264 = f.lo[2];
-            metal::atomic_store_explicit(&grid[2], as_type<uint>(_e264), metal::memory_order_relaxed);
-            uint _e269 = f.nx;
-            metal::atomic_store_explicit(&grid[3], _e269, metal::memory_order_relaxed);
-            float _e274 = f.hi[0];
-            metal::atomic_store_explicit(&grid[4], as_type<uint>(_e274), metal::memory_order_relaxed);
-            float _e280 = f.hi[1];
-            metal::atomic_store_explicit(&grid[5], as_type<uint>(_e280), metal::memory_order_relaxed);
-            float _e286 = f.hi[2];
-            metal::atomic_store_explicit(&grid[6], as_type<uint>(_e286), metal::memory_order_relaxed);
-            uint _e291 = f.ny;
-            metal::atomic_store_explicit(&grid[7], _e291, metal::memory_order_relaxed);
-            float _e296 = f.inv[0];
-            metal::atomic_store_explicit(&grid[8], as_type<uint>(_e296), metal::memory_order_relaxed);
-            float _e302 = f.inv[1];
-            metal::atomic_store_explicit(&grid[9], as_type<uint>(_e302), metal::memory_order_relaxed);
-            float _e308 = f.inv[2];
-            metal::atomic_store_explicit(&grid[10], as_type<uint>(_e308), metal::memory_order_relaxed);
-            uint _e313 = f.nz;
-            metal::atomic_store_explicit(&grid[11], _e313, metal::memory_order_relaxed);
-            float _e318 = params.reach;
-            metal::atomic_store_explicit(&grid[12], as_type<uint>(_e318), metal::memory_order_relaxed);
+            float _e268 = f.lo[0];
+            metal::atomic_store_explicit(&grid[h_1], as_type<uint>(_e268), metal::memory_order_relaxed);
+            float _e276 = f.lo[1];
+            metal::atomic_store_explicit(&grid[h_1 + 1u], as_type<uint>(_e276), metal::memory_order_relaxed);
+            float _e284 = f.lo[2];
+            metal::atomic_store_explicit(&grid[h_1 + 2u], as_type<uint>(_e284), metal::memory_order_relaxed);
+            uint _e291 = f.nx;
+            metal::atomic_store_explicit(&grid[h_1 + 3u], _e291, metal::memory_order_relaxed);
+            float _e298 = f.hi[0];
+            metal::atomic_store_explicit(&grid[h_1 + 4u], as_type<uint>(_e298), metal::memory_order_relaxed);
+            float _e306 = f.hi[1];
+            metal::atomic_store_explicit(&grid[h_1 + 5u], as_type<uint>(_e306), metal::memory_order_relaxed);
+            float _e314 = f.hi[2];
+            metal::atomic_store_explicit(&grid[h_1 + 6u], as_type<uint>(_e314), metal::memory_order_relaxed);
+            uint _e321 = f.ny;
+            metal::atomic_store_explicit(&grid[h_1 + 7u], _e321, metal::memory_order_relaxed);
+            float _e328 = f.inv[0];
+            metal::atomic_store_explicit(&grid[h_1 + 8u], as_type<uint>(_e328), metal::memory_order_relaxed);
+            float _e336 = f.inv[1];
+            metal::atomic_store_explicit(&grid[h_1 + 9u], as_type<uint>(_e336), metal::memory_order_relaxed);
+            float _e344 = f.inv[2];
+            metal::atomic_store_explicit(&grid[h_1 + 10u], as_type<uint>(_e344), metal::memory_order_relaxed);
+            uint _e351 = f.nz;
+            metal::atomic_store_explicit(&grid[h_1 + 11u], _e351, metal::memory_order_relaxed);
+            float _e358 = params.reach;
+            metal::atomic_store_explicit(&grid[h_1 + 12u], as_type<uint>(_e358), metal::memory_order_relaxed);
             return;
         }
         case 2u:
         case 4u: {
-            uint _e322 = params.count;
-            if (i_2 >= _e322) {
+            uint _e362 = params.count;
+            if (i_2 >= _e362) {
                 return;
             }
-            GridFrame _e324 = grid_frame(grid, _buffer_sizes);
-            uint _e325 = grid_leaf(i_2, bsh_nodes, grid_leaves, _buffer_sizes);
-            if (!((_e324.nx == 0u))) {
-                local_2 = _e325 == BSH_NONE;
+            GridFrame _e364 = grid_frame(h_1, grid, _buffer_sizes);
+            uint _e365 = grid_leaf(i_2, bsh_nodes, grid_leaves, _buffer_sizes);
+            if (!((_e364.nx == 0u))) {
+                local_2 = _e365 == BSH_NONE;
             } else {
                 local_2 = true;
             }
-            bool _e335 = local_2;
-            if (_e335) {
+            bool _e375 = local_2;
+            if (_e375) {
                 return;
             }
-            BshNode leaf_1 = bsh_nodes[_e325];
-            float _e341 = params.reach;
-            float _e342 = bsh_grid_reach(leaf_1, _e341);
-            float _e343 = bsh_grid_pad(_e342);
-            metal::uint3 _e344 = cover_first(_e324, leaf_1, _e343);
-            metal::uint3 _e345 = cover_last(_e324, leaf_1, _e343);
-            z = _e344.z;
+            BshNode leaf_1 = bsh_nodes[_e365];
+            float _e381 = params.reach;
+            float _e382 = bsh_grid_reach(leaf_1, _e381);
+            float _e383 = bsh_grid_pad(_e382);
+            metal::uint3 _e385 = bsh_grid_first(_e364, leaf_1.center, _e383);
+            metal::uint3 _e387 = bsh_grid_last(_e364, leaf_1.center, _e383);
+            z = _e385.z;
             uint2 loop_bound_5 = uint2(4294967295u);
             bool loop_init_5 = true;
             while(true) {
                 if (metal::all(loop_bound_5 == uint2(0u))) { break; }
                 loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
                 if (!loop_init_5) {
-                    uint _e388 = z;
-                    z = _e388 + 1u;
+                    uint _e434 = z;
+                    z = _e434 + 1u;
                 }
                 loop_init_5 = false;
-                uint _e348 = z;
-                if (_e348 <= _e345.z) {
+                uint _e390 = z;
+                if (_e390 <= _e387.z) {
                 } else {
                     break;
                 }
                 {
-                    y = _e344.y;
+                    y = _e385.y;
                     uint2 loop_bound_6 = uint2(4294967295u);
                     bool loop_init_6 = true;
                     while(true) {
                         if (metal::all(loop_bound_6 == uint2(0u))) { break; }
                         loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
                         if (!loop_init_6) {
-                            uint _e385 = y;
-                            y = _e385 + 1u;
+                            uint _e431 = y;
+                            y = _e431 + 1u;
                         }
                         loop_init_6 = false;
-                        uint _e353 = y;
-                        if (_e353 <= _e345.y) {
+                        uint _e395 = y;
+                        if (_e395 <= _e387.y) {
                         } else {
                             break;
                         }
                         {
-                            x = _e344.x;
+                            x = _e385.x;
                             uint2 loop_bound_7 = uint2(4294967295u);
                             bool loop_init_7 = true;
                             while(true) {
                                 if (metal::all(loop_bound_7 == uint2(0u))) { break; }
                                 loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
                                 if (!loop_init_7) {
-                                    uint _e382 = x;
-                                    x = _e382 + 1u;
+                                    uint _e428 = x;
+                                    x = _e428 + 1u;
                                 }
                                 loop_init_7 = false;
-                                uint _e358 = x;
-                                if (_e358 <= _e345.x) {
+                                uint _e400 = x;
+                                if (_e400 <= _e387.x) {
                                 } else {
                                     break;
                                 }
                                 {
-                                    uint _e361 = z;
-                                    uint _e364 = y;
-                                    uint _e368 = x;
-                                    uint c_5 = (((_e361 * _e324.ny) + _e364) * _e324.nx) + _e368;
-                                    uint _e373 = metal::atomic_fetch_add_explicit(&grid_fill[c_5], 1u, metal::memory_order_relaxed);
-                                    uint _e376 = params.stage;
-                                    if (_e376 == 4u) {
-                                        grid_entries[_e373] = i_2;
+                                    uint _e403 = z;
+                                    uint _e406 = y;
+                                    uint _e410 = x;
+                                    uint c_5 = (((_e403 * _e364.ny) + _e406) * _e364.nx) + _e410;
+                                    uint _e415 = params.fill;
+                                    uint _e419 = metal::atomic_fetch_add_explicit(&grid_fill[_e415 + c_5], 1u, metal::memory_order_relaxed);
+                                    uint _e422 = params.stage;
+                                    if (_e422 == 4u) {
+                                        grid_entries[_e419] = i_2;
                                     }
                                 }
                             }
@@ -636,13 +645,14 @@ kernel void main_(
             return;
         }
         default: {
-            GridFrame _e390 = grid_frame(grid, _buffer_sizes);
-            if (i_2 >= ((_e390.nx * _e390.ny) * _e390.nz)) {
+            GridFrame _e436 = grid_frame(h_1, grid, _buffer_sizes);
+            if (i_2 >= ((_e436.nx * _e436.ny) * _e436.nz)) {
                 return;
             }
-            metal::atomic_store_explicit(&grid_fill[i_2], 0u, metal::memory_order_relaxed);
-            uint a_2 = metal::atomic_load_explicit(&grid[GRID_HEADER + i_2], metal::memory_order_relaxed);
-            uint b_2 = metal::atomic_load_explicit(&grid[(GRID_HEADER + i_2) + 1u], metal::memory_order_relaxed);
+            uint _e446 = params.fill;
+            metal::atomic_store_explicit(&grid_fill[_e446 + i_2], 0u, metal::memory_order_relaxed);
+            uint a_2 = metal::atomic_load_explicit(&grid[starts + i_2], metal::memory_order_relaxed);
+            uint b_2 = metal::atomic_load_explicit(&grid[(starts + i_2) + 1u], metal::memory_order_relaxed);
             s = a_2 + 1u;
             uint2 loop_bound_8 = uint2(4294967295u);
             bool loop_init_8 = true;
@@ -650,48 +660,48 @@ kernel void main_(
                 if (metal::all(loop_bound_8 == uint2(0u))) { break; }
                 loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
                 if (!loop_init_8) {
-                    uint _e452 = s;
-                    s = _e452 + 1u;
+                    uint _e500 = s;
+                    s = _e500 + 1u;
                 }
                 loop_init_8 = false;
-                uint _e415 = s;
-                if (_e415 < b_2) {
+                uint _e463 = s;
+                if (_e463 < b_2) {
                 } else {
                     break;
                 }
                 {
-                    uint _e418 = s;
-                    uint v_1 = grid_entries[_e418];
-                    uint _e421 = s;
-                    c_2 = _e421;
+                    uint _e466 = s;
+                    uint v_1 = grid_entries[_e466];
+                    uint _e469 = s;
+                    c_2 = _e469;
                     uint2 loop_bound_9 = uint2(4294967295u);
                     while(true) {
                         if (metal::all(loop_bound_9 == uint2(0u))) { break; }
                         loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
-                        uint _e423 = c_2;
-                        if (_e423 > a_2) {
-                            uint _e428 = c_2;
-                            uint _e432 = grid_entries[_e428 - 1u];
-                            local_3 = _e432 > v_1;
+                        uint _e471 = c_2;
+                        if (_e471 > a_2) {
+                            uint _e476 = c_2;
+                            uint _e480 = grid_entries[_e476 - 1u];
+                            local_3 = _e480 > v_1;
                         } else {
                             local_3 = false;
                         }
-                        bool _e435 = local_3;
-                        if (_e435) {
+                        bool _e483 = local_3;
+                        if (_e483) {
                         } else {
                             break;
                         }
                         {
-                            uint _e437 = c_2;
-                            uint _e440 = c_2;
-                            uint _e444 = grid_entries[_e440 - 1u];
-                            grid_entries[_e437] = _e444;
-                            uint _e445 = c_2;
-                            c_2 = _e445 - 1u;
+                            uint _e485 = c_2;
+                            uint _e488 = c_2;
+                            uint _e492 = grid_entries[_e488 - 1u];
+                            grid_entries[_e485] = _e492;
+                            uint _e493 = c_2;
+                            c_2 = _e493 - 1u;
                         }
                     }
-                    uint _e449 = c_2;
-                    grid_entries[_e449] = v_1;
+                    uint _e497 = c_2;
+                    grid_entries[_e497] = v_1;
                 }
             }
             s_1 = a_2;
@@ -701,21 +711,21 @@ kernel void main_(
                 if (metal::all(loop_bound_10 == uint2(0u))) { break; }
                 loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
                 if (!loop_init_9) {
-                    uint _e468 = s_1;
-                    s_1 = _e468 + 1u;
+                    uint _e516 = s_1;
+                    s_1 = _e516 + 1u;
                 }
                 loop_init_9 = false;
-                uint _e455 = s_1;
-                if (_e455 < b_2) {
+                uint _e503 = s_1;
+                if (_e503 < b_2) {
                 } else {
                     break;
                 }
                 {
-                    uint _e458 = s_1;
-                    uint _e462 = s_1;
-                    uint _e464 = grid_entries[_e462];
-                    uint _e466 = grid_leaves[_e464];
-                    grid_entries[_e458] = _e466;
+                    uint _e506 = s_1;
+                    uint _e510 = s_1;
+                    uint _e512 = grid_entries[_e510];
+                    uint _e514 = grid_leaves[_e512];
+                    grid_entries[_e506] = _e514;
                 }
             }
             return;

@@ -113,7 +113,7 @@ struct GridFrame {
     metal::packed_float3 inv;
     uint nz;
 };
-typedef uint type_11[1];
+typedef uint type_12[1];
 struct BshCursor {
     uint i;
     uint end;
@@ -124,23 +124,23 @@ struct Connection {
     metal::packed_float3 y;
     float cos_x;
 };
-typedef GpuLight type_14[1];
-typedef GpuLightCone type_15[1];
+typedef GpuLight type_15[1];
+typedef GpuLightCone type_16[1];
 typedef uint BvhNodes;
-struct type_16 {
+struct type_17 {
     float inner[8];
 };
 struct WeightedPicks {
     type_9 light;
-    type_16 w;
-    type_16 threshold;
+    type_17 w;
+    type_17 threshold;
     float w_sum;
     uint n;
     uint h;
 };
-typedef GpuPathVertex type_18[1];
-typedef GpuMaterial type_19[1];
-typedef metal::float4 type_20[1];
+typedef GpuPathVertex type_19[1];
+typedef GpuMaterial type_20[1];
+typedef metal::float4 type_21[1];
 constant uint LIGHT_POINT = 0u;
 constant uint LIGHT_SPOT = 1u;
 constant uint LIGHT_IES = 2u;
@@ -860,12 +860,12 @@ float half_cosine(
     metal::float3 v,
     metal::float3 l
 ) {
-    metal::float3 h_4 = v + l;
-    float len2_ = metal::dot(h_4, h_4);
+    metal::float3 h_7 = v + l;
+    float len2_ = metal::dot(h_7, h_7);
     if (len2_ <= 0.0) {
         return 0.0;
     }
-    return metal::saturate(metal::dot(v, h_4) / metal::sqrt(len2_));
+    return metal::saturate(metal::dot(v, h_7) / metal::sqrt(len2_));
 }
 
 metal::float3 specular_brdf(
@@ -892,10 +892,10 @@ metal::float3 specular_brdf(
     }
     metal::float3 hs = v_1 + l_1;
     float inv_1 = 1.0 / metal::sqrt(metal::dot(hs, hs));
-    metal::float3 h_5 = hs * inv_1;
-    metal::float3 c_13 = metal::cross(n_7, h_5);
-    float _e32 = ggx_d(metal::dot(n_7, h_5), metal::dot(c_13, c_13), alpha_3);
-    metal::float3 _e34 = specular_fresnel(base_6, metallic_2, f0_d_2, f90_d_2, metal::dot(v_1, h_5));
+    metal::float3 h_8 = hs * inv_1;
+    metal::float3 c_13 = metal::cross(n_7, h_8);
+    float _e32 = ggx_d(metal::dot(n_7, h_8), metal::dot(c_13, c_13), alpha_3);
+    metal::float3 _e34 = specular_fresnel(base_6, metallic_2, f0_d_2, f90_d_2, metal::dot(v_1, h_8));
     float _e35 = smith_visibility(n_l_1, n_v_2, alpha_3);
     return _e34 * (_e32 * _e35);
 }
@@ -1823,7 +1823,7 @@ uint bsh_grid_cell(
 
 uint grid_word(
     uint i_4,
-    device type_11 const& grid,
+    device type_12 const& grid,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e3 = grid[i_4];
@@ -1831,38 +1831,40 @@ uint grid_word(
 }
 
 GridFrame grid_frame(
-    device type_11 const& grid,
+    uint h_1,
+    device type_12 const& grid,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GridFrame f_1 = {};
-    uint _e3 = grid_word(0u, grid, _buffer_sizes);
-    uint _e6 = grid_word(1u, grid, _buffer_sizes);
-    uint _e9 = grid_word(2u, grid, _buffer_sizes);
-    f_1.lo = metal::float3(as_type<float>(_e3), as_type<float>(_e6), as_type<float>(_e9));
-    uint _e14 = grid_word(3u, grid, _buffer_sizes);
-    f_1.nx = _e14;
-    uint _e17 = grid_word(4u, grid, _buffer_sizes);
-    uint _e20 = grid_word(5u, grid, _buffer_sizes);
-    uint _e23 = grid_word(6u, grid, _buffer_sizes);
-    f_1.hi = metal::float3(as_type<float>(_e17), as_type<float>(_e20), as_type<float>(_e23));
-    uint _e28 = grid_word(7u, grid, _buffer_sizes);
-    f_1.ny = _e28;
-    uint _e31 = grid_word(8u, grid, _buffer_sizes);
-    uint _e34 = grid_word(9u, grid, _buffer_sizes);
-    uint _e37 = grid_word(10u, grid, _buffer_sizes);
-    f_1.inv = metal::float3(as_type<float>(_e31), as_type<float>(_e34), as_type<float>(_e37));
-    uint _e42 = grid_word(11u, grid, _buffer_sizes);
-    f_1.nz = _e42;
-    GridFrame _e43 = f_1;
-    return _e43;
+    uint _e3 = grid_word(h_1, grid, _buffer_sizes);
+    uint _e7 = grid_word(h_1 + 1u, grid, _buffer_sizes);
+    uint _e11 = grid_word(h_1 + 2u, grid, _buffer_sizes);
+    f_1.lo = metal::float3(as_type<float>(_e3), as_type<float>(_e7), as_type<float>(_e11));
+    uint _e17 = grid_word(h_1 + 3u, grid, _buffer_sizes);
+    f_1.nx = _e17;
+    uint _e21 = grid_word(h_1 + 4u, grid, _buffer_sizes);
+    uint _e25 = grid_word(h_1 + 5u, grid, _buffer_sizes);
+    uint _e29 = grid_word(h_1 + 6u, grid, _buffer_sizes);
+    f_1.hi = metal::float3(as_type<float>(_e21), as_type<float>(_e25), as_type<float>(_e29));
+    uint _e35 = grid_word(h_1 + 7u, grid, _buffer_sizes);
+    f_1.ny = _e35;
+    uint _e39 = grid_word(h_1 + 8u, grid, _buffer_sizes);
+    uint _e43 = grid_word(h_1 + 9u, grid, _buffer_sizes);
+    uint _e47 = grid_word(h_1 + 10u, grid, _buffer_sizes);
+    f_1.inv = metal::float3(as_type<float>(_e39), as_type<float>(_e43), as_type<float>(_e47));
+    uint _e53 = grid_word(h_1 + 11u, grid, _buffer_sizes);
+    f_1.nz = _e53;
+    GridFrame _e54 = f_1;
+    return _e54;
 }
 
 float grid_reach(
-    device type_11 const& grid,
+    uint h_2,
+    device type_12 const& grid,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint _e1 = grid_word(12u, grid, _buffer_sizes);
-    return as_type<float>(_e1);
+    uint _e3 = grid_word(h_2 + 12u, grid, _buffer_sizes);
+    return as_type<float>(_e3);
 }
 
 BshCursor bsh_cursor(
@@ -1870,44 +1872,54 @@ BshCursor bsh_cursor(
     metal::float3 r_7,
     metal::float4 rl_5,
     device type_10 const& bsh_nodes,
-    device type_11 const& grid,
+    device type_12 const& grid,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     BshCursor c_7 = {};
+    uint h_3 = 0u;
     bool local_27 = {};
     bool local_28 = {};
     c_7.i = 0u;
     c_7.end = 0u;
     uint _e10 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
     c_7.next = _e10;
-    GridFrame _e11 = grid_frame(grid, _buffer_sizes);
-    uint _e13 = c_7.next;
-    if (_e13 != BSH_NONE) {
-        local_27 = _e11.nx > 0u;
+    float _e15 = grid_reach(0u, grid, _buffer_sizes);
+    if (rl_5.w > _e15) {
+        uint _e18 = grid_word(14u, grid, _buffer_sizes);
+        h_3 = _e18;
+    }
+    uint _e19 = h_3;
+    GridFrame _e20 = grid_frame(_e19, grid, _buffer_sizes);
+    uint _e22 = c_7.next;
+    if (_e22 != BSH_NONE) {
+        local_27 = _e20.nx > 0u;
     } else {
         local_27 = false;
     }
-    bool _e22 = local_27;
-    if (_e22) {
-        float _e26 = grid_reach(grid, _buffer_sizes);
-        local_28 = rl_5.w <= _e26;
+    bool _e31 = local_27;
+    if (_e31) {
+        uint _e35 = h_3;
+        float _e36 = grid_reach(_e35, grid, _buffer_sizes);
+        local_28 = rl_5.w <= _e36;
     } else {
         local_28 = false;
     }
-    bool _e29 = local_28;
-    if (_e29) {
-        uint _e30 = bsh_grid_cell(_e11, x_13);
-        if (_e30 != BSH_NONE) {
-            uint _e38 = grid[GRID_HEADER + _e30];
-            c_7.i = _e38;
-            uint _e46 = grid[(GRID_HEADER + _e30) + 1u];
-            c_7.end = _e46;
-            uint _e51 = bsh_nodes[0].next;
-            c_7.next = _e51;
+    bool _e39 = local_28;
+    if (_e39) {
+        uint _e40 = bsh_grid_cell(_e20, x_13);
+        if (_e40 != BSH_NONE) {
+            uint _e45 = h_3;
+            uint _e50 = grid[(_e45 + GRID_HEADER) + _e40];
+            c_7.i = _e50;
+            uint _e53 = h_3;
+            uint _e60 = grid[((_e53 + GRID_HEADER) + _e40) + 1u];
+            c_7.end = _e60;
+            uint _e65 = bsh_nodes[0].next;
+            c_7.next = _e65;
         }
     }
-    BshCursor _e52 = c_7;
-    return _e52;
+    BshCursor _e66 = c_7;
+    return _e66;
 }
 
 uint bsh_cursor_next(
@@ -1916,7 +1928,7 @@ uint bsh_cursor_next(
     metal::float3 r_8,
     metal::float4 rl_6,
     device type_10 const& bsh_nodes,
-    device type_11 const& grid_entries,
+    device type_12 const& grid_entries,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint2 loop_bound_4 = uint2(4294967295u);
@@ -1952,12 +1964,12 @@ uint bsh_cursor_next(
 
 float next_threshold(
     float sum_1,
-    thread uint& h_1
+    thread uint& h_4
 ) {
-    uint _e2 = h_1;
+    uint _e2 = h_4;
     uint _e3 = pcg_hash(_e2);
-    h_1 = _e3;
-    uint _e4 = h_1;
+    h_4 = _e3;
+    uint _e4 = h_4;
     float _e5 = xi_from_bits(_e4);
     float _e6 = weighted_threshold(sum_1, _e5);
     return _e6;
@@ -2033,7 +2045,7 @@ Connection connect_traced(
     device type_4 const& slc_table,
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
-    device type_14 const& lights,
+    device type_15 const& lights,
     device type_4 const& r2_4,
     device type_4 const& rt2_7,
     constant _mslBufferSizes& _buffer_sizes
@@ -2058,7 +2070,7 @@ Connection connect(
     device type_4 const& slc_table,
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
-    device type_14 const& lights,
+    device type_15 const& lights,
     device type_4 const& r2_4,
     device type_4 const& rt2_7,
     constant _mslBufferSizes& _buffer_sizes
@@ -2080,7 +2092,7 @@ float light_range_scale(
     metal::float3 x_18,
     metal::float3 r_9,
     metal::float4 rl_7,
-    device type_15 const& light_cones,
+    device type_16 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuLightCone c_15 = light_cones[li_2];
@@ -2096,7 +2108,7 @@ float light_weight(
     metal::float4 lobe_7,
     metal::float4 rl_8,
     device type_4 const& rt2_7,
-    device type_15 const& light_cones,
+    device type_16 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuLightCone c_16 = light_cones[li_3];
@@ -2116,7 +2128,7 @@ float select_pdf(
     uint nee,
     bool in_range_1,
     device type_4 const& rt2_7,
-    device type_15 const& light_cones,
+    device type_16 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     float _e8 = light_weight(li_4, x_20, n_19, r_11, lobe_8, rl_9, rt2_7, light_cones, _buffer_sizes);
@@ -2131,9 +2143,9 @@ float light_pdf_selected(
     metal::float4 rl_10,
     metal::float3 y_2,
     float sel,
-    device type_14 const& lights,
+    device type_15 const& lights,
     device type_4 const& rt2_7,
-    device type_15 const& light_cones,
+    device type_16 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuLight l_9 = lights[li_5];
@@ -2158,9 +2170,9 @@ float light_pdf(
     metal::float3 y_3,
     uint nee_1,
     bool in_range_2,
-    device type_14 const& lights,
+    device type_15 const& lights,
     device type_4 const& rt2_7,
-    device type_15 const& light_cones,
+    device type_16 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     float _e9 = select_pdf(li_6, x_22, n_20, r_13, lobe_9, rl_11, nee_1, in_range_2, rt2_7, light_cones, _buffer_sizes);
@@ -2169,12 +2181,12 @@ float light_pdf(
 }
 
 WeightedPicks weighted_picks(
-    uint h_2
+    uint h_5
 ) {
     WeightedPicks picks = {};
     picks.w_sum = 0.0;
     picks.n = 0u;
-    picks.h = h_2;
+    picks.h = h_5;
     WeightedPicks _e7 = picks;
     return _e7;
 }
@@ -2184,7 +2196,7 @@ void weighted_offer(
     uint li_7,
     float w_9
 ) {
-    uint h_3 = {};
+    uint h_6 = {};
     uint s_3 = 0u;
     uint _e4 = picks_1.n;
     picks_1.n = _e4 + 1u;
@@ -2192,7 +2204,7 @@ void weighted_offer(
         float _e10 = picks_1.w_sum;
         picks_1.w_sum = _e10 + w_9;
         uint _e13 = picks_1.h;
-        h_3 = _e13;
+        h_6 = _e13;
         uint2 loop_bound_5 = uint2(4294967295u);
         bool loop_init_1 = true;
         while(true) {
@@ -2219,12 +2231,12 @@ void weighted_offer(
                     picks_1.w.inner[_e31] = w_9;
                     uint _e34 = s_3;
                     float _e37 = picks_1.w_sum;
-                    float _e38 = next_threshold(_e37, h_3);
+                    float _e38 = next_threshold(_e37, h_6);
                     picks_1.threshold.inner[_e34] = _e38;
                 }
             }
         }
-        uint _e43 = h_3;
+        uint _e43 = h_6;
         picks_1.h = _e43;
         return;
     } else {
@@ -2240,10 +2252,10 @@ WeightedPicks bsh_weighted_collect(
     metal::float4 rl_12,
     uint h0_,
     device type_10 const& bsh_nodes,
-    device type_11 const& grid,
-    device type_11 const& grid_entries,
+    device type_12 const& grid,
+    device type_12 const& grid_entries,
     device type_4 const& rt2_7,
-    device type_15 const& light_cones,
+    device type_16 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     WeightedPicks picks_2 = {};
@@ -2298,10 +2310,10 @@ metal::float3 shade_pick(
     device type_4 const& slc_table,
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
-    device type_14 const& lights,
+    device type_15 const& lights,
     device type_4 const& r2_4,
     device type_4 const& rt2_7,
-    device type_15 const& light_cones,
+    device type_16 const& light_cones,
     constant ShadeParams& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -2335,17 +2347,17 @@ kernel void main_(
 , device type_6 const& geo_nodes [[user(fake0)]]
 , device type_7 const& geo_tris [[user(fake0)]]
 , device type_10 const& bsh_nodes [[user(fake0)]]
-, device type_11 const& grid [[user(fake0)]]
-, device type_11 const& grid_entries [[user(fake0)]]
-, device type_14 const& lights [[user(fake0)]]
+, device type_12 const& grid [[user(fake0)]]
+, device type_12 const& grid_entries [[user(fake0)]]
+, device type_15 const& lights [[user(fake0)]]
 , device type_4 const& r2_4 [[user(fake0)]]
 , device type_4 const& rt2_7 [[user(fake0)]]
-, device type_15 const& light_cones [[user(fake0)]]
+, device type_16 const& light_cones [[user(fake0)]]
 , constant ShadeParams& params [[user(fake0)]]
-, device type_18 const& vertices [[user(fake0)]]
-, device type_19 const& materials [[user(fake0)]]
-, device type_20& radiance [[user(fake0)]]
-, device type_11& candidates [[user(fake0)]]
+, device type_19 const& vertices [[user(fake0)]]
+, device type_20 const& materials [[user(fake0)]]
+, device type_21& radiance [[user(fake0)]]
+, device type_12& candidates [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
     uint h = {};
