@@ -40,20 +40,31 @@ pub fn gpu_context_with(backend: Backend, ray_query: bool) -> anyhow::Result<Opt
 
 /// The path tracer of `pts` at `width × height`: the GPU's when `gpu`
 /// holds a context (its shadow rays as ray queries when `ray_query`), else
-/// the CPU's.
+/// the CPU's; `grid` turns its grids over the light hierarchy on or off
+/// (`--grid`; `None`: the backend's default).
 pub fn path_tracer(
     gpu: Option<&GpuContext>,
     pts: &PtScene,
-    width: u32,
-    height: u32,
+    (width, height): (u32, u32),
     ray_query: bool,
+    grid: Option<bool>,
 ) -> anyhow::Result<Box<dyn DynPathTracer>> {
     let rays = if ray_query { ShadowRays::RayQuery } else { ShadowRays::Software };
     match gpu {
         Some(g) => {
-            Ok(Box::new(slc_wgpu::pt::GpuPt::with_shadow_rays(g, pts, width, height, rays)?))
+            let mut t = slc_wgpu::pt::GpuPt::with_shadow_rays(g, pts, width, height, rays)?;
+            if let Some(on) = grid {
+                t.set_grid(on);
+            }
+            Ok(Box::new(t))
         }
-        None => Ok(Box::new(CpuPathTracer::new(pts))),
+        None => {
+            let mut t = CpuPathTracer::new(pts);
+            if let Some(on) = grid {
+                t.set_grid(on);
+            }
+            Ok(Box::new(t))
+        }
     }
 }
 

@@ -381,7 +381,7 @@ fn render_pt(a: RenderArgs) -> anyhow::Result<()> {
         ..d
     };
     let ctx = gpu_context_with(a.scene.backend, a.scene.ray_query)?;
-    let mut tracer = path_tracer(ctx.as_ref(), &pts, w, h, a.scene.ray_query)?;
+    let mut tracer = path_tracer(ctx.as_ref(), &pts, (w, h), a.scene.ray_query, a.scene.grid_on())?;
     let batch = if on_gpu { GPU_BATCH } else { 1 };
     let mut acc = PtRender::new(w, h);
     let bar = indicatif::ProgressBar::new(0);

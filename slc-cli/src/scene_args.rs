@@ -20,6 +20,16 @@ pub enum App {
     Pt,
 }
 
+/// Whether the path tracers look up each pass's grids over the light
+/// hierarchy (`--grid`).
+#[derive(Clone, Copy, Debug, ValueEnum, PartialEq, Eq)]
+pub enum Grid {
+    /// Look in the grids.
+    On,
+    /// Walk the hierarchy at every vertex.
+    Off,
+}
+
 /// Scene and image options shared by render and bench. Values resolve as:
 /// command-line flag, else the scene file's `[render]`, else the default.
 #[derive(Args, Clone, Debug)]
@@ -60,6 +70,9 @@ pub struct SceneArgs {
     /// GPU path tracer: cast the light connections' shadow rays as the adapter's ray queries (wgpu's experimental ray queries: GPUs with ray tracing, Mesa 25's lavapipe) instead of the WGSL BVH walk; the closest hits still walk it.
     #[arg(long)]
     pub ray_query: bool,
+    /// Path tracers: find a vertex's lights in each pass's grids over the light hierarchy, or walk it at every vertex (the same lights in the same order, so the same image) [default: on for the CPU; off for the GPU, where lavapipe measured it slower and a real GPU has not measured it yet].
+    #[arg(long, value_enum)]
+    pub grid: Option<Grid>,
 }
 
 /// The resolved scene and sizes of the VPL application.
@@ -121,12 +134,20 @@ impl SceneArgs {
         Ok(loaded)
     }
 
+    /// `--grid` as the path tracers take it (`None`: the backend's default).
+    pub fn grid_on(&self) -> Option<bool> {
+        self.grid.map(|g| g == Grid::On)
+    }
+
     /// Refuses the path tracer's flags for the VPL application.
     pub fn pt_only_flags(&self) -> anyhow::Result<()> {
         if self.ray_query {
             anyhow::bail!(
                 "--ray-query: only the GPU path tracer (--app pt --backend gpu) casts ray queries"
             );
+        }
+        if self.grid.is_some() {
+            anyhow::bail!("--grid: only the path tracers (--app pt) build grids");
         }
         Ok(())
     }

@@ -78,6 +78,7 @@ pub fn run(a: ViewArgs) -> anyhow::Result<()> {
         tile: VplSettings::default().tile,
         shadow_size: a.shadow_size,
         ray_query: false,
+        grid: None,
     };
     let r = scene_args.resolve()?;
     let flags = crate::methods::MethodFlags {

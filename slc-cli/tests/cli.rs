@@ -240,6 +240,7 @@ fn bad_input_is_one_line_error() {
         vec!["render", "--width", "0"],
         vec!["render", "--app", "pt", "--spp", "0", "--width", "8", "--height", "8"],
         vec!["bench", "--repeat", "0", "--width", "8", "--height", "8", "--vpls", "64"],
+        vec!["render", "--grid", "on", "--width", "8", "--height", "8", "--vpls", "64"],
     ] {
         let out = slc(&d, &args);
         assert!(!out.status.success(), "{args:?} succeeded");
@@ -719,6 +720,33 @@ fn path_tracer_renders() {
         ],
     );
     assert!(text.contains("error bound ε = 0.5000 (given)"), "{text}");
+    // `--grid off` walks the light hierarchy at every vertex: the same
+    // lights in the same order as the grids' lookups, so the same image.
+    let grid = |g: &str| {
+        let out = format!("pt-grid-{g}.exr");
+        ok(
+            &d,
+            &[
+                "render",
+                "--app",
+                "pt",
+                "--method",
+                "slc-weighted",
+                "--width",
+                "16",
+                "--height",
+                "16",
+                "--spp",
+                "2",
+                "--grid",
+                g,
+                "--out",
+                &out,
+            ],
+        );
+        std::fs::read(d.join(&out)).unwrap()
+    };
+    assert!(grid("on") == grid("off"), "--grid off changed the image");
     // `auto:C` sets ε for C expected candidates (more candidates: a smaller
     // ε), on a scene with lights enough (2,048) that neither target is
     // capped at half the light count.

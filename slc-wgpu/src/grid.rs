@@ -5,7 +5,9 @@
 //! [`GridFrame::levels`] gives for the scene's box, the first whose entries
 //! fit its budget. `pt_connect` then tests a vertex's cell and the range
 //! tail instead of walking the tree: the same lights in the same order, so
-//! the same image (`tests/pt_parity.rs`).
+//! the same image (`tests/pt_parity.rs`). Off unless
+//! [`GpuPt::set_grid`](crate::pt::GpuPt::set_grid) turns it on: on
+//! lavapipe the build costs more than the lookups save.
 //!
 //! Two grids share the buffers where the scene has glossy materials: one
 //! for Lambertian receivers, one for range lobes up to
@@ -149,11 +151,11 @@ impl GpuGrid {
             headers,
             lights: tree_lights as u32,
             cells: cells as u32,
-            enabled: true,
+            enabled: false,
         })
     }
 
-    /// Builds the grids in passes to come (`true`, the default) or not:
+    /// Builds the grids in passes to come (`true`) or not (the default):
     /// the walks then take the tree (the same lights in the same order).
     pub(crate) fn set_enabled(&mut self, gpu: &GpuContext, on: bool) {
         self.enabled = on;

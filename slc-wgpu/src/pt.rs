@@ -5,7 +5,10 @@
 //!    same `ξ = xi_for(seed, pass, light)` as the CPU path tracer;
 //! 2. `bsh_tail`, then `bsh_refit`: the BSH's range tail for those ranges
 //!    (the largest spheres, tested flat after the tree: `Bsh::with_tail`)
-//!    and the tree refitted to them, one dispatch per level, deepest first;
+//!    and the tree refitted to them, one dispatch per level, deepest first.
+//!    With [`GpuPt::set_grid`], `bsh_grid` then lists the refitted leaves
+//!    in a uniform grid (slc-core's `BshGrid`) that `pt_connect` looks up
+//!    instead of walking the tree (the same lights in the same order);
 //! 3. per bounce, `pt_extend` (camera or BSDF ray, closest hit through the
 //!    geometry BVH, emission with MIS, next ray, Russian roulette) and
 //!    `pt_connect` (BSH traversal into a k-slot reservoir, RR test at the
@@ -143,7 +146,8 @@ pub struct GpuPt {
     /// `pt_connect` casts ray queries.
     accel: Option<GpuAccel>,
     /// The pass's grids over the BSH's leaves (Lambertian receivers, and
-    /// glossy ones where the scene has a specular material).
+    /// glossy ones where the scene has a specular material), where
+    /// [`GpuPt::set_grid`] turns them on.
     grid: GpuGrid,
 }
 
@@ -463,12 +467,15 @@ impl GpuPt {
 
 impl GpuPt {
     /// Whether the SLC methods' passes build grids over the BSH's leaves
-    /// and find a vertex's lights in its cell (`true`, the default:
-    /// slc-core's `BshGrid`, built on the GPU each pass, for Lambertian
-    /// vertices and, in a scene with specular materials, glossy ones whose
-    /// range lobe is within `GLOSSY_REACH`) or walk the tree for every
-    /// vertex. The same lights in the same order either
-    /// way, so the same image: a switch for tests and measurements.
+    /// and find a vertex's lights in its cell (slc-core's `BshGrid`, built
+    /// on the GPU each pass, for Lambertian vertices and, in a scene with
+    /// specular materials, glossy ones whose range lobe is within
+    /// `GLOSSY_REACH`) or walk the tree for every vertex (`false`, the
+    /// default). The same lights in the same order either way, so the same
+    /// image. Off by default: on lavapipe the build (12 dispatches a pass,
+    /// two of them one workgroup, and each cell's sort) costs more than the
+    /// lookups save (docs/results/bsh-walk-visits.md); a real GPU has not
+    /// measured it yet.
     pub fn set_grid(&mut self, on: bool) {
         self.grid.set_enabled(&self.gpu, on);
     }

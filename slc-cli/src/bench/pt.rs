@@ -78,7 +78,7 @@ pub(super) fn pt_equal_time(
     };
     // The reference stays on the CPU; the methods run on the chosen backend.
     let ctx = gpu_context_with(a.scene.backend, a.scene.ray_query)?;
-    let mut tracer = path_tracer(ctx.as_ref(), &pts, w, h, a.scene.ray_query)?;
+    let mut tracer = path_tracer(ctx.as_ref(), &pts, (w, h), a.scene.ray_query, a.scene.grid_on())?;
     let batch = if ctx.is_some() { GPU_BATCH } else { 1 };
     let methods = PtMethod::ALL;
     let mut runs = Vec::new();
@@ -136,6 +136,10 @@ pub(super) fn pt_equal_time(
                 c.describe(),
                 if c.timestamps { "GPU timestamps" } else { "wall clock" }
             ),
+        } + match a.scene.grid {
+            Some(crate::scene_args::Grid::On) => ", grid on",
+            Some(crate::scene_args::Grid::Off) => ", grid off",
+            None => "",
         },
         scene: scene.name.clone(),
         width: w,

@@ -75,6 +75,8 @@ pub struct CpuPathTracer {
     diag: f32,
     /// The scene's bounding box (each pass's [`BshGrid`] covers it).
     bounds: (Vec3, Vec3),
+    /// Whether passes look in their grids ([`CpuPathTracer::set_grid`]).
+    grid: bool,
 }
 
 impl CpuPathTracer {
@@ -88,7 +90,17 @@ impl CpuPathTracer {
             diag: scene.diagonal(),
             bounds: scene.bounds(),
             pts: pts.clone(),
+            grid: true,
         }
+    }
+
+    /// Whether the SLC methods find a vertex's lights in the pass's grids
+    /// (`true`, the default: [`BshGrid`]s for Lambertian vertices and
+    /// glossy ones within [`GLOSSY_REACH`]) or by walking the tree at
+    /// every vertex. The same lights in the same order either way, so the
+    /// same image: a switch for measurements.
+    pub fn set_grid(&mut self, on: bool) {
+        self.grid = on;
     }
 
     /// The prepared scene.
@@ -222,12 +234,12 @@ impl CpuPathTracer {
         mut visit: impl FnMut(u32),
     ) {
         let (lo, hi) = self.bounds;
-        if rl.w <= 1.0 {
+        if self.grid && rl.w <= 1.0 {
             let grid = st.grid.get(|| BshGrid::build(&self.bsh, lo, hi));
             if grid.is_some_and(|g| g.for_each_containing(x, &mut visit)) {
                 return;
             }
-        } else if rl.w <= GLOSSY_REACH {
+        } else if self.grid && rl.w <= GLOSSY_REACH {
             let grid = st.glossy.get(|| BshGrid::build_reaching(&self.bsh, lo, hi, GLOSSY_REACH));
             if grid.is_some_and(|g| g.for_each_reaching(x, r, rl, &mut visit)) {
                 return;
