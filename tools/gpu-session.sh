@@ -15,9 +15,11 @@
 # - issue 48: the path-tracing suite at 512x512, noise from seed pairs (since 97f020f with the BSH's range tail,
 #   since f8d059e and 72832ff with the path tracers' tree split by the sphere-area heuristic and 4 wide: against
 #   docs/results/gpu-h200/pt-suite-512.json, d001e5f, it measures the three on the GPU); then the losing
-#   scenes again with the light connections' shadow rays as hardware ray queries (--ray-query).
-# About 530 s on an NVIDIA H200 (the last call's steps: docs/results/gpu-h200-b/log.txt, 490 s, before the
-# ray-query suite); give the run timeout_s 600. Results land
+#   scenes again with the light connections' shadow rays as hardware ray queries (--ray-query), and five 49,152-light
+#   scenes with the BSH grids on (--grid on: off by default on the GPU until this measures them; against the same
+#   scenes in pt-suite-512.json, the grids' time per sample).
+# About 570 s on an NVIDIA H200 (the last call's steps: docs/results/gpu-h200-b/log.txt, 490 s, before the
+# ray-query and grid suites; if time is short, drop the eps 0.03 step); give the run timeout_s 600. Results land
 # in the call's $OUT; copy them to docs/results/ with the adapter's name and the date.
 set -euo pipefail
 cd "$(git rev-parse --show-toplevel)"
@@ -45,6 +47,8 @@ step 120 env SLC_BEVY_BENCH_FRAMES=32 SLC_BEVY_BENCH_MODES=slc,default SLC_BEVY_
 step 150 $S bench --app pt --backend gpu --suite scenes/suite --width 512 --height 512 --seconds 0.3 --noise seeds --json $OUT/pt-suite-512.json
 mkdir -p rq-suite && cp scenes/suite/tri-*-49152.toml scenes/suite/tri-away-2048.toml scenes/suite/points-clusters-49152.toml rq-suite/
 step 60 $S bench --app pt --backend gpu --ray-query --suite rq-suite --width 512 --height 512 --seconds 0.3 --noise seeds --json $OUT/pt-suite-512-ray-query.json
+mkdir -p grid-suite && cp scenes/suite/{points-clusters,points-volume,tri-away,tri-facing,glossy-facing}-49152.toml grid-suite/
+step 60 $S bench --app pt --backend gpu --grid on --suite grid-suite --width 512 --height 512 --seconds 0.3 --noise seeds --json $OUT/pt-suite-512-grid.json
 CMDS
 du -sh .gpu
 echo "prepared: run 'bash .gpu/gpu-bench.sh run' on the device, carry [\".gpu\"], timeout_s 600"

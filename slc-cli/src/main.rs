@@ -474,7 +474,8 @@ pub fn write_outputs(img: &Image, out: &Path, exposure: f32) -> anyhow::Result<(
 }
 
 /// Writes `name.{wgsl,spv,glsl,hlsl,metal}` for every kernel: the BSH,
-/// path-tracing and update kernels for `lights`, the direct pass's
+/// path-tracing and update kernels for `lights` (and `pt_connect_grid`,
+/// the light connection that looks up `bsh_grid`'s grids), the direct pass's
 /// `light_ranges` and `direct_light` for `lights` (as `DirectPassDesc::new`
 /// builds them, weighted picks of `reservoir_k`, irradiance out, but the
 /// depth in an `R32Float` texture: naga's GLSL backend cannot load from a
@@ -497,6 +498,7 @@ fn shaders(out: &Path, lights: &str, reservoir_k: u32) -> anyhow::Result<()> {
         Kernel::LightUpdate,
         Kernel::BshRefit,
         Kernel::BshTail,
+        Kernel::BshGrid,
         Kernel::BshReservoir,
         Kernel::PtConnect,
         Kernel::PtExtend,
@@ -504,6 +506,7 @@ fn shaders(out: &Path, lights: &str, reservoir_k: u32) -> anyhow::Result<()> {
     .into_iter()
     .map(|k| (k.name().to_string(), k, base))
     .collect();
+    jobs.push(("pt_connect_grid".into(), Kernel::PtConnect, Features { bsh_grid: true, ..base }));
     let direct = Features {
         selection: Selection::Weighted,
         surface: SurfaceSource::R32Depth,

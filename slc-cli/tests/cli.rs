@@ -389,7 +389,7 @@ fn gltf_and_glossy_scenes_render() {
 fn shaders_command_exports_every_kernel() {
     let d = tempdir("shaders");
     let text = ok(&d, &["shaders", "--out", "k", "--lights", "point,triangle"]);
-    assert!(text.contains("28 kernels"), "{text}");
+    assert!(text.contains("30 kernels"), "{text}");
     for entry in ["vs_main", "fs_gbuffer", "fs_rsm", "fs_shadow"] {
         let p = d.join("k").join(format!("scene_raster.{entry}.glsl"));
         assert!(
@@ -402,8 +402,10 @@ fn shaders_command_exports_every_kernel() {
         "light_update",
         "bsh_refit",
         "bsh_tail",
+        "bsh_grid",
         "bsh_reservoir",
         "pt_connect",
+        "pt_connect_grid",
         "pt_extend",
         "light_ranges",
         "direct_light",
