@@ -436,16 +436,9 @@ const CONFIGS: [(&str, Mode, bool, bool, bool); 6] = [
     ("Bevy, unbounded ranges", Mode::BevyUnbounded, false, true, true),
 ];
 
-/// The median of `v`: the middle value, or the mean of the middle two for
-/// an even count (0 for none).
-fn median(mut v: Vec<f64>) -> f64 {
-    v.sort_by(f64::total_cmp);
-    let n = v.len();
-    match n {
-        0 => 0.0,
-        _ if n % 2 == 1 => v[n / 2],
-        _ => 0.5 * (v[n / 2 - 1] + v[n / 2]),
-    }
+/// The median of `v` (slc-scene's, shared with `slc bench`), 0 for none.
+fn median(v: Vec<f64>) -> f64 {
+    slc_scene::stats::median(&v).unwrap_or(0.0)
 }
 
 /// One frame of the bench, then a wait until the GPU has run everything

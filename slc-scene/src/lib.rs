@@ -55,6 +55,7 @@ pub mod scene;
 #[cfg(feature = "io")]
 pub mod scene_file;
 pub mod shapes;
+pub mod stats;
 pub mod temporal;
 pub mod vpl;
 

@@ -19,6 +19,7 @@ use crate::report::{PtReport, SuiteRow};
 use anyhow::{Context, anyhow};
 use serde::Serialize;
 use slc_scene::scene_file::SceneFile;
+use slc_scene::stats::median;
 use std::path::{Path, PathBuf};
 
 /// The methods slc-weighted is judged against.
@@ -115,19 +116,6 @@ pub fn against_best_peer(rows: &[SuiteRow], scene: &str) -> Option<AgainstBest> 
         noise_per_sample: w.noise_per_sample / best.noise_per_sample,
         time_per_sample: w.time_per_sample_vs_uniform / best.time_per_sample_vs_uniform,
     })
-}
-
-/// The median of `v`: the middle value, or the mean of the two middle
-/// values for an even count; `None` for none.
-pub fn median(v: &[f64]) -> Option<f64> {
-    let mut s = v.to_vec();
-    s.sort_by(f64::total_cmp);
-    let n = s.len();
-    match n {
-        0 => None,
-        _ if n % 2 == 1 => Some(s[n / 2]),
-        _ => Some(0.5 * (s[n / 2 - 1] + s[n / 2])),
-    }
 }
 
 pub fn run(a: &BenchArgs, dir: &Path) -> anyhow::Result<()> {
@@ -266,14 +254,6 @@ mod tests {
             time_per_sample_vs_uniform: tps,
             rmse_vs_uniform: f64::NAN,
         }
-    }
-
-    #[test]
-    fn median_of_an_even_count_is_the_mean_of_the_middle_two() {
-        assert_eq!(median(&[]), None);
-        assert_eq!(median(&[3.0]), Some(3.0));
-        assert_eq!(median(&[4.0, 1.0, 3.0]), Some(3.0));
-        assert_eq!(median(&[0.71, 0.58, 2.0, 0.1]), Some(0.645));
     }
 
     #[test]

@@ -64,7 +64,7 @@ impl FrameSequence {
     /// Median, fastest and slowest over the frames of each frame's summed
     /// time of `stages` (ms); every stage when `stages` is empty.
     pub fn spread(&self, stages: &[Stage]) -> (f64, f64, f64) {
-        let mut per_frame: Vec<f64> = self
+        let per_frame: Vec<f64> = self
             .frames
             .iter()
             .map(|f| {
@@ -74,17 +74,13 @@ impl FrameSequence {
                     .sum()
             })
             .collect();
-        per_frame.sort_by(f64::total_cmp);
-        let n = per_frame.len();
-        if n == 0 {
+        let Some(median) = slc_scene::stats::median(&per_frame) else {
             return (0.0, 0.0, 0.0);
-        }
-        let median = if n % 2 == 1 {
-            per_frame[n / 2]
-        } else {
-            0.5 * (per_frame[n / 2 - 1] + per_frame[n / 2])
         };
-        (median, per_frame[0], per_frame[n - 1])
+        let (min, max) = per_frame
+            .iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &t| (a.min(t), b.max(t)));
+        (median, min, max)
     }
 }
 
