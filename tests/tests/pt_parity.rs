@@ -487,11 +487,11 @@ fn gpu_range_tail_matches_the_cpu_refit() {
 /// 2,048-light points (volume, clusters), triangles and glossy box, two
 /// passes at depth 3 and the ε `slc render` sets for each.
 fn gpu_grid_gives_the_walks_image() {
-    use slc_core::brdf::{mirror_dir, range_lobe, receiver_lobe};
     use slc_core::bsh::grid::{GLOSSY_REACH, bsh_grid_cell, walk_leaves};
     use slc_core::bsh::walk::bsh_reaches;
     use slc_core::bsh::{BSH_NONE, BSH_TAIL};
     use slc_scene::error_bound::{TARGET_CANDIDATES, auto_error_bound};
+    use slc_scene::scene::Material;
     let Some(g) = gpu() else { return };
     let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../scenes/suite");
     let mut glossy_held = 0;
@@ -565,16 +565,10 @@ fn gpu_grid_gives_the_walks_image() {
                             let nrm = (Vec3::new(u(), u(), u()) - 0.5).normalize();
                             let v = (Vec3::new(u(), u(), u()) - 0.5 + nrm).normalize();
                             let metal = if u() < 0.5 { 1.0 } else { 0.0 };
-                            let alpha = (0.05 + 0.95 * u()).powi(2);
-                            let lobe = receiver_lobe(
-                                Vec3::splat(0.8),
-                                metal,
-                                Vec3::splat(0.04),
-                                1.0,
-                                alpha,
-                                nrm.dot(v),
-                            );
-                            (r, rl) = (mirror_dir(nrm, v), range_lobe(lobe));
+                            let roughness = 0.05 + 0.95 * u();
+                            let rc = Material::gltf(Vec3::splat(0.8), metal, roughness)
+                                .receiver(p, nrm, v);
+                            (r, rl) = (rc.r, rc.range_lobe());
                             if !(rl.w > 1.0 && rl.w <= GLOSSY_REACH) {
                                 continue;
                             }
