@@ -26,9 +26,10 @@
 //!
 //! The GPU path tracer builds the same grid each pass with a counting sort
 //! (slc-shared-shaders' `bsh_grid`), from the same frames
-//! ([`GridFrame::levels`]) and the same cover and cell steps ([`WGSL`]:
+//! ([`GridFrame::levels`]), the same leaf order ([`walk_leaves`]) and the
+//! same budget, cover and cell steps ([`WGSL`]: [`bsh_grid_budget`],
 //! [`bsh_grid_reach`], [`bsh_grid_pad`], [`bsh_grid_axis`],
-//! [`bsh_grid_cell`]).
+//! [`bsh_grid_first`], [`bsh_grid_last`], [`bsh_grid_cell`]).
 
 use super::walk::bsh_reaches;
 use super::{BSH_NONE, BSH_TAIL, Bsh, BshNode, bsh_reach_bound};

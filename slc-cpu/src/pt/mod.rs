@@ -62,6 +62,10 @@ use std::sync::OnceLock;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Instant;
 
+/// The largest range lobe a pass's glossy grid holds (slc-core's, shared
+/// with the GPU path tracer).
+pub use slc_core::bsh::grid::GLOSSY_REACH;
+
 /// The CPU path tracer over a [`PtScene`]: the scene's geometry in a BVH,
 /// and a BSH of its own that each pass refits to that pass's ranges.
 pub struct CpuPathTracer {
@@ -176,8 +180,6 @@ impl LazyGrid {
         self.grid.get().map(Option::is_some)
     }
 }
-
-pub use slc_core::bsh::grid::GLOSSY_REACH;
 
 impl CpuPathTracer {
     /// Whether light `l`'s range sphere, scaled for the receiver `rc`
