@@ -372,9 +372,16 @@ fn render_pt(a: RenderArgs) -> anyhow::Result<()> {
     let d = PtSettings::default();
     let on_gpu = a.scene.backend == Backend::Gpu;
     let exposure = a.scene.exposure.or(f.exposure).unwrap_or(1.0);
-    let (eps, eps_note) = methods::pt_error_bound(a.error_bound, f.error_bound, &pts, exposure)?;
+    let method = pt_method(a.method.as_deref().or(f.method.as_deref()).unwrap_or("slc"))?;
+    // A method that culls nothing has no use for ε: the automatic one (a
+    // bisection over the scene's surfaces) is not computed for it.
+    let (eps, eps_note) = if method.culls() || a.error_bound.is_some() {
+        methods::pt_error_bound(a.error_bound, f.error_bound, &pts, exposure)?
+    } else {
+        (d.error_bound, "unused".into())
+    };
     let settings = PtSettings {
-        method: pt_method(a.method.as_deref().or(f.method.as_deref()).unwrap_or("slc"))?,
+        method,
         error_bound: eps,
         exposure,
         seed: a.seed.or(f.seed).unwrap_or(d.seed),

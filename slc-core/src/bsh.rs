@@ -563,12 +563,10 @@ impl Bsh {
         Self::build_with(bounds, BshShape::BALANCED)
     }
 
-    /// [`Bsh::build`] in the shape `shape` ([`BshShape`]: the split rule and
-    /// the children per node).
-    pub fn build_with(bounds: &[LightBound], shape: BshShape) -> Result<Self, BshError> {
-        if !(2..=BSH_MAX_WIDTH).contains(&shape.width) {
-            return Err(BshError::BadWidth(shape.width));
-        }
+    /// Whether [`Bsh::build`] takes `bounds`: fewer lights than 32-bit links
+    /// address, every centre finite, every extent finite and `≥ 0`; the
+    /// first bound that is not, as the build's error.
+    pub fn check(bounds: &[LightBound]) -> Result<(), BshError> {
         if bounds.len() >= BSH_NONE as usize / 2 {
             return Err(BshError::TooManyLights(bounds.len()));
         }
@@ -580,6 +578,16 @@ impl Bsh {
                 return Err(BshError::BadExtent(i, b.extent));
             }
         }
+        Ok(())
+    }
+
+    /// [`Bsh::build`] in the shape `shape` ([`BshShape`]: the split rule and
+    /// the children per node).
+    pub fn build_with(bounds: &[LightBound], shape: BshShape) -> Result<Self, BshError> {
+        if !(2..=BSH_MAX_WIDTH).contains(&shape.width) {
+            return Err(BshError::BadWidth(shape.width));
+        }
+        Self::check(bounds)?;
         let mut bsh = Bsh {
             nodes: Vec::with_capacity(2 * bounds.len()),
             bounds: bounds.to_vec(),

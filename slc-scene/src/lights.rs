@@ -53,13 +53,15 @@ pub struct Direct {
     pub in_range: u32,
 }
 
-/// Lights with their bounds, BSH (as built; backends refit their own copy
-/// per frame) and power distribution.
+/// Lights with their bounds, BSH (as built, on first use; backends refit
+/// their own copy per frame) and power distribution.
 #[derive(Clone, Debug)]
 pub struct LightSet {
     lights: Vec<Light>,
     bounds: Vec<LightBound>,
-    bsh: Bsh,
+    /// The balanced BSH the direct pass refits, built on the first
+    /// [`LightSet::bsh`] (the path tracers build their own wide one).
+    bsh: std::sync::OnceLock<Bsh>,
     /// Emitted power per light ([`Light::power`]).
     power: Vec<Vec3>,
     alias: AliasTable,
@@ -68,13 +70,16 @@ pub struct LightSet {
 }
 
 impl LightSet {
-    /// Builds the BSH and the power table over `lights` (at least one).
+    /// The power table over `lights` (at least one), their bounds checked
+    /// for the BSH ([`Bsh::check`]; the tree itself is built on the first
+    /// [`LightSet::bsh`]).
     pub fn new(lights: Vec<Light>) -> Result<LightSet, RenderError> {
         if lights.is_empty() {
             return Err(RenderError::Setting("no lights to shade with".into()));
         }
         let bounds: Vec<LightBound> = lights.iter().map(Light::bound).collect();
-        let bsh = Bsh::build(&bounds).map_err(|e| RenderError::Setting(e.to_string()))?;
+        Bsh::check(&bounds).map_err(|e| RenderError::Setting(e.to_string()))?;
+        let bsh = std::sync::OnceLock::new();
         let power = emitted_powers(&lights);
         let alias =
             AliasTable::new(&power.iter().map(|p| p.max_element() as f64).collect::<Vec<f64>>());
@@ -102,9 +107,12 @@ impl LightSet {
         &self.bounds
     }
 
-    /// The BSH over the lights, as built.
+    /// The balanced BSH over the lights ([`Bsh::build`]), as built: on
+    /// the first call.
     pub fn bsh(&self) -> &Bsh {
-        &self.bsh
+        self.bsh.get_or_init(|| {
+            Bsh::build(&self.bounds).expect("LightSet::new checked the bounds (Bsh::check)")
+        })
     }
 
     /// Each light's emitted RGB power, the quantity power sampling weighs
