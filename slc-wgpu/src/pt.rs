@@ -475,7 +475,10 @@ impl GpuPt {
     /// image. Off by default: on lavapipe the build (12 dispatches a pass,
     /// two of them one workgroup, and each cell's sort) costs more than the
     /// lookups save (docs/results/bsh-walk-visits.md); a real GPU has not
-    /// measured it yet.
+    /// measured it yet. The grids' buffers are made with the path tracer,
+    /// on or off: at most 8 entries of 4 bytes a light and one a cell
+    /// (`slc_core::bsh::GRID_ENTRIES_PER_LIGHT`), per grid (3.4 MB for
+    /// both at 49,152 lights).
     pub fn set_grid(&mut self, on: bool) {
         self.grid.set_enabled(&self.gpu, on);
     }

@@ -137,8 +137,9 @@ impl GridFrame {
     /// `n` lights in the tree: `∛(n/2)` cells along the box's longest axis
     /// within [`GRID_RES_MIN`]`..=`[`GRID_RES_MAX`], then halved down to
     /// [`GRID_RES_MIN`] ([`BshGrid::build`] takes the first whose entries
-    /// fit [`GridFrame::budget`]). Empty for a box that is not finite and
-    /// positive.
+    /// fit [`GridFrame::budget`]). Empty for a box that is not finite, is
+    /// inverted or is a single point (a flat one, a floor, gets a
+    /// thickness).
     pub fn levels(lo: Vec3, hi: Vec3, n: usize) -> Vec<GridFrame> {
         let res = libm::cbrtf(n as f32 / 2.0) as u32;
         Self::levels_at(lo, hi, res.clamp(GRID_RES_MIN, GRID_RES_MAX))
@@ -146,12 +147,16 @@ impl GridFrame {
 
     /// [`GridFrame::levels`] from `res` cells along the longest axis
     /// (within [`GRID_RES_MIN`]`..=`[`GRID_RES_LIMIT`]). The box is padded:
-    /// a flat one (a single wall) gets a thickness, so no axis's cells are
-    /// narrower than 10⁻³ of the longest, and every side a margin of 10⁻⁴
+    /// a flat one (a single wall or floor) gets a thickness, so no axis's
+    /// cells are narrower than 10⁻³ of the longest, and every side a margin of 10⁻⁴
     /// of it, for points on the surfaces that rounding put outside.
     pub fn levels_at(lo: Vec3, hi: Vec3, res: u32) -> Vec<GridFrame> {
         let ext = hi - lo;
-        if !(lo.is_finite() && ext.is_finite() && ext.min_element() > 0.0) {
+        if !(lo.is_finite()
+            && ext.is_finite()
+            && ext.min_element() >= 0.0
+            && ext.max_element() > 0.0)
+        {
             return Vec::new();
         }
         let pad = Vec3::splat(ext.max_element() * 1e-4);

@@ -602,9 +602,9 @@ fn wide_tree_links() {
 /// range tail, zero, huge and infinite ranges, points in and outside its
 /// box, scales from 10⁻⁶ to 10⁶; and so does a grid built for glossy
 /// receivers' lobes up to a reach `w`, for every receiver whose lobe it
-/// holds (the others, `rl.w > w`, are refused). A box that is not finite
-/// and positive, an empty tree, or ranges as large as the scene give no
-/// grid.
+/// holds (the others, `rl.w > w`, are refused). A box that is not finite,
+/// inverted or a point, an empty tree, or ranges as large as the scene give
+/// no grid; a flat box (a floor) gets one.
 #[test]
 fn grid_finds_what_the_walk_finds_in_its_order() {
     use crate::brdf::{mirror_dir, range_lobe, receiver_lobe};
@@ -691,12 +691,34 @@ fn grid_finds_what_the_walk_finds_in_its_order() {
     t.refit(&[0.0; 64]).unwrap();
     for (lo, hi) in [
         (Vec3::ONE, Vec3::ZERO),
-        (Vec3::ZERO, Vec3::new(1.0, 0.0, 1.0)),
+        (Vec3::ONE, Vec3::ONE),
         (Vec3::ZERO, Vec3::INFINITY),
         (Vec3::NAN, Vec3::ONE),
     ] {
         assert!(BshGrid::build(&t, lo, hi).is_none());
     }
+    // A flat box (a floor) gets a thickness: its points, and those a
+    // little off it, find the walk's lights (64 above it, ranges 0.1).
+    let above: Vec<LightBound> = (0..64)
+        .map(|i| pt((i % 8) as f32 / 8.0 + 0.0625, 0.05, (i / 8) as f32 / 8.0 + 0.0625))
+        .collect();
+    let mut lit = Bsh::build(&above).unwrap();
+    lit.refit(&[0.01; 64]).unwrap();
+    let floor = BshGrid::build(&lit, Vec3::ZERO, Vec3::new(1.0, 0.0, 1.0)).unwrap();
+    let mut floor_found = 0;
+    for k in 0..400 {
+        let x = Vec3::new(
+            (k % 20) as f32 / 20.0,
+            if k % 3 == 0 { 1e-5 } else { 0.0 },
+            (k / 20) as f32 / 20.0,
+        );
+        let (mut walk, mut grid) = (Vec::new(), Vec::new());
+        lit.for_each_containing(x, |l| walk.push(l));
+        assert!(floor.for_each_containing(x, |l| grid.push(l)), "{x} outside the floor's grid");
+        assert_eq!(grid, walk, "at {x}");
+        floor_found += walk.len();
+    }
+    assert!(floor_found > 100, "{floor_found} lights found on the floor");
     assert!(BshGrid::build(&t, Vec3::ZERO, Vec3::ONE).is_some());
     assert!(BshGrid::build(&Bsh::build(&[]).unwrap(), Vec3::ZERO, Vec3::ONE).is_none());
     t.refit(&[4.0; 64]).unwrap();
