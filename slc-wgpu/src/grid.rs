@@ -76,16 +76,17 @@ impl GpuGrid {
         levels.truncate(GRID_LEVELS_MAX as usize);
         let lim = &gpu.limits;
         let binding = lim.max_storage_buffer_binding_size.min(lim.max_buffer_size);
-        let cells = levels.first().map_or(0, |l| l.cells());
-        // Each grid's words: the header, one start a cell and the end.
-        let words = GRID_HEADER as u64 + cells + 1;
-        if k * words * 4 > binding
-            || cells.div_ceil(WG as u64) > lim.max_compute_workgroups_per_dimension as u64
-        {
+        // Each grid's words: the header, one start a cell and the end. No
+        // frame where the finest one's would pass the device's limits.
+        let words_of = |cells: u64| GRID_HEADER as u64 + cells + 1;
+        if levels.first().is_some_and(|l| {
+            k * words_of(l.cells()) * 4 > binding
+                || l.cells().div_ceil(WG as u64) > lim.max_compute_workgroups_per_dimension as u64
+        }) {
             levels.clear();
         }
         let cells = levels.first().map_or(0, |l| l.cells());
-        let words = GRID_HEADER as u64 + cells + 1;
+        let words = words_of(cells);
         let capacity =
             levels.first().map_or(1, |l| l.budget(tree_lights as u64)).clamp(1, binding / 4 / k);
         let layout = KernelLayout::new(gpu, Kernel::BshGrid, &f)?;

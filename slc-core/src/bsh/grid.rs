@@ -28,7 +28,7 @@
 //! (slc-shared-shaders' `bsh_grid`), from the same frames
 //! ([`GridFrame::levels`]), the same leaf order ([`walk_leaves`]) and the
 //! same budget, cover and cell steps ([`WGSL`]: [`bsh_grid_budget`],
-//! [`bsh_grid_reach`], [`bsh_grid_pad`], [`bsh_grid_axis`],
+//! [`bsh_grid_reach`], [`bsh_grid_pad`], [`bsh_grid_radius`], [`bsh_grid_axis`],
 //! [`bsh_grid_first`], [`bsh_grid_last`], [`bsh_grid_cell`]).
 
 use super::walk::bsh_reaches;
@@ -106,8 +106,15 @@ crate::shared! {
         return min(to_u32(max(floor((v - lo) * inv), 0.0)), n - 1);
     }
 
+    /// The radius about leaf `node`'s centre whose box of cells a grid for
+    /// range lobes up to `w` lists it in: [`bsh_grid_reach`] padded by
+    /// [`bsh_grid_pad`].
+    pub fn bsh_grid_radius(node: BshNode, w: f32) -> f32 {
+        return bsh_grid_pad(bsh_grid_reach(node, w));
+    }
+
     /// The first cell along each axis of frame `f` that a leaf centred at
-    /// `c` reaching `r` ([`bsh_grid_pad`]) covers.
+    /// `c` reaching `r` ([`bsh_grid_radius`]) covers.
     pub fn bsh_grid_first(f: GridFrame, c: vec3f, r: f32) -> vec3u {
         return vec3u(bsh_grid_axis(c.x - r, f.lo.x, f.inv.x, f.nx), bsh_grid_axis(c.y - r, f.lo.y, f.inv.y, f.ny), bsh_grid_axis(c.z - r, f.lo.z, f.inv.z, f.nz));
     }
@@ -198,10 +205,10 @@ impl GridFrame {
     }
 
     /// The cells `(first, last)` along each axis that leaf `node`'s test
-    /// can reach for range lobes up to `w` ([`bsh_grid_reach`], padded by
-    /// [`bsh_grid_pad`]; [`bsh_grid_first`], [`bsh_grid_last`]).
+    /// can reach for range lobes up to `w` ([`bsh_grid_radius`];
+    /// [`bsh_grid_first`], [`bsh_grid_last`]).
     pub fn cover(&self, node: BshNode, w: f32) -> (UVec3, UVec3) {
-        let r = bsh_grid_pad(bsh_grid_reach(node, w));
+        let r = bsh_grid_radius(node, w);
         (bsh_grid_first(*self, node.center, r), bsh_grid_last(*self, node.center, r))
     }
 }

@@ -90,7 +90,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
             }
             atomicAdd(&grid[h + 13u], 1u);
             let leaf = bsh_nodes[node];
-            let r = bsh_grid_pad(bsh_grid_reach(leaf, params.reach));
+            let r = bsh_grid_radius(leaf, params.reach);
             for (var l = 0u; l < params.levels; l++) {
                 let d = bsh_grid_last(grid_levels[l], leaf.center, r) - bsh_grid_first(grid_levels[l], leaf.center, r) + vec3u(1u);
                 let n = d.x * d.y * d.z;
@@ -147,7 +147,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
                 return;
             }
             let leaf = bsh_nodes[node];
-            let r = bsh_grid_pad(bsh_grid_reach(leaf, params.reach));
+            let r = bsh_grid_radius(leaf, params.reach);
             let a = bsh_grid_first(f, leaf.center, r);
             let b = bsh_grid_last(f, leaf.center, r);
             for (var z = a.z; z <= b.z; z++) {

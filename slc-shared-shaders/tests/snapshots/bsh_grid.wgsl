@@ -164,6 +164,12 @@ fn bsh_grid_axis(v: f32, lo: f32, inv: f32, n: u32) -> u32 {
     return min(_e9, (n - 1u));
 }
 
+fn bsh_grid_radius(node_3: BshNode, w_2: f32) -> f32 {
+    let _e2 = bsh_grid_reach(node_3, w_2);
+    let _e3 = bsh_grid_pad(_e2);
+    return _e3;
+}
+
 fn bsh_grid_first(f_1: GridFrame, c_3: vec3<f32>, r: f32) -> vec3<u32> {
     let _e10 = bsh_grid_axis((c_3.x - r), f_1.lo.x, f_1.inv.x, f_1.nx);
     let _e18 = bsh_grid_axis((c_3.y - r), f_1.lo.y, f_1.inv.y, f_1.ny);
@@ -209,12 +215,12 @@ fn grid_frame(h: u32) -> GridFrame {
 }
 
 fn grid_leaf(i_1: u32) -> u32 {
-    let node_3 = grid_leaves[i_1];
-    let _e7 = bsh_nodes[node_3].light;
+    let node_4 = grid_leaves[i_1];
+    let _e7 = bsh_nodes[node_4].light;
     if ((_e7 & BSH_TAIL) != 0u) {
         return BSH_NONE;
     }
-    return node_3;
+    return node_4;
 }
 
 @compute @workgroup_size(64, 1, 1) 
@@ -336,34 +342,33 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
             let _e118 = atomicAdd((&grid[(h_1 + 13u)]), 1u);
             let leaf = bsh_nodes[_e110];
             let _e124 = params.reach;
-            let _e125 = bsh_grid_reach(leaf, _e124);
-            let _e126 = bsh_grid_pad(_e125);
+            let _e125 = bsh_grid_radius(leaf, _e124);
             loop {
-                let _e129 = l;
-                let _e132 = params.levels;
-                if (_e129 < _e132) {
+                let _e128 = l;
+                let _e131 = params.levels;
+                if (_e128 < _e131) {
                 } else {
                     break;
                 }
                 {
-                    let _e135 = l;
-                    let _e137 = grid_levels[_e135];
-                    let _e139 = bsh_grid_last(_e137, leaf.center, _e126);
-                    let _e141 = l;
-                    let _e143 = grid_levels[_e141];
-                    let _e145 = bsh_grid_first(_e143, leaf.center, _e126);
-                    let d = ((_e139 - _e145) + vec3(1u));
+                    let _e134 = l;
+                    let _e136 = grid_levels[_e134];
+                    let _e138 = bsh_grid_last(_e136, leaf.center, _e125);
+                    let _e140 = l;
+                    let _e142 = grid_levels[_e140];
+                    let _e144 = bsh_grid_first(_e142, leaf.center, _e125);
+                    let d = ((_e138 - _e144) + vec3(1u));
                     let n_2 = ((d.x * d.y) * d.z);
-                    let _e158 = l;
-                    let at = ((h_1 + 16u) + (2u * _e158));
-                    let _e163 = atomicAdd((&grid[at]), n_2);
-                    if ((_e163 + n_2) < _e163) {
-                        let _e171 = atomicAdd((&grid[(at + 1u)]), 1u);
+                    let _e157 = l;
+                    let at = ((h_1 + 16u) + (2u * _e157));
+                    let _e162 = atomicAdd((&grid[at]), n_2);
+                    if ((_e162 + n_2) < _e162) {
+                        let _e170 = atomicAdd((&grid[(at + 1u)]), 1u);
                     }
                 }
                 continuing {
-                    let _e173 = l;
-                    l = (_e173 + 1u);
+                    let _e172 = l;
+                    l = (_e172 + 1u);
                 }
             }
             return;
@@ -373,233 +378,232 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
                 return;
             }
             let leaves_1 = atomicLoad((&grid[(h_1 + 13u)]));
-            let _e184 = params.levels;
-            chosen = _e184;
+            let _e183 = params.levels;
+            chosen = _e183;
             loop {
-                let _e188 = l_1;
-                let _e191 = params.levels;
-                if (_e188 < _e191) {
+                let _e187 = l_1;
+                let _e190 = params.levels;
+                if (_e187 < _e190) {
                 } else {
                     break;
                 }
                 {
-                    let _e194 = l_1;
-                    let f_4 = grid_levels[_e194];
+                    let _e193 = l_1;
+                    let f_4 = grid_levels[_e193];
                     let cells_2 = ((f_4.nx * f_4.ny) * f_4.nz);
-                    let _e202 = bsh_grid_budget(leaves_1, cells_2);
-                    let _e205 = params.capacity;
-                    let budget = min(_e202, _e205);
-                    let _e210 = l_1;
-                    let at_1 = ((h_1 + 16u) + (2u * _e210));
-                    let _e213 = chosen;
-                    let _e216 = params.levels;
-                    if (_e213 == _e216) {
-                        let _e224 = atomicLoad((&grid[(at_1 + 1u)]));
-                        local = (_e224 == 0u);
+                    let _e201 = bsh_grid_budget(leaves_1, cells_2);
+                    let _e204 = params.capacity;
+                    let budget = min(_e201, _e204);
+                    let _e209 = l_1;
+                    let at_1 = ((h_1 + 16u) + (2u * _e209));
+                    let _e212 = chosen;
+                    let _e215 = params.levels;
+                    if (_e212 == _e215) {
+                        let _e223 = atomicLoad((&grid[(at_1 + 1u)]));
+                        local = (_e223 == 0u);
                     } else {
                         local = false;
                     }
-                    let _e228 = local;
-                    if _e228 {
-                        let _e233 = atomicLoad((&grid[at_1]));
-                        local_1 = (_e233 <= budget);
+                    let _e227 = local;
+                    if _e227 {
+                        let _e232 = atomicLoad((&grid[at_1]));
+                        local_1 = (_e232 <= budget);
                     } else {
                         local_1 = false;
                     }
-                    let _e236 = local_1;
-                    if _e236 {
-                        let _e237 = l_1;
-                        chosen = _e237;
+                    let _e235 = local_1;
+                    if _e235 {
+                        let _e236 = l_1;
+                        chosen = _e236;
                     }
                     atomicStore((&grid[at_1]), 0u);
                     atomicStore((&grid[(at_1 + 1u)]), 0u);
                 }
                 continuing {
-                    let _e247 = l_1;
-                    l_1 = (_e247 + 1u);
+                    let _e246 = l_1;
+                    l_1 = (_e246 + 1u);
                 }
             }
             atomicStore((&grid[(h_1 + 13u)]), 0u);
-            let _e255 = chosen;
-            let _e258 = params.levels;
-            if (_e255 < _e258) {
-                let _e261 = chosen;
-                let _e263 = grid_levels[_e261];
-                f = _e263;
+            let _e254 = chosen;
+            let _e257 = params.levels;
+            if (_e254 < _e257) {
+                let _e260 = chosen;
+                let _e262 = grid_levels[_e260];
+                f = _e262;
             }
-            let _e268 = f.lo.x;
-            atomicStore((&grid[h_1]), bitcast<u32>(_e268));
-            let _e276 = f.lo.y;
-            atomicStore((&grid[(h_1 + 1u)]), bitcast<u32>(_e276));
-            let _e284 = f.lo.z;
-            atomicStore((&grid[(h_1 + 2u)]), bitcast<u32>(_e284));
-            let _e291 = f.nx;
-            atomicStore((&grid[(h_1 + 3u)]), _e291);
-            let _e298 = f.hi.x;
-            atomicStore((&grid[(h_1 + 4u)]), bitcast<u32>(_e298));
-            let _e306 = f.hi.y;
-            atomicStore((&grid[(h_1 + 5u)]), bitcast<u32>(_e306));
-            let _e314 = f.hi.z;
-            atomicStore((&grid[(h_1 + 6u)]), bitcast<u32>(_e314));
-            let _e321 = f.ny;
-            atomicStore((&grid[(h_1 + 7u)]), _e321);
-            let _e328 = f.inv.x;
-            atomicStore((&grid[(h_1 + 8u)]), bitcast<u32>(_e328));
-            let _e336 = f.inv.y;
-            atomicStore((&grid[(h_1 + 9u)]), bitcast<u32>(_e336));
-            let _e344 = f.inv.z;
-            atomicStore((&grid[(h_1 + 10u)]), bitcast<u32>(_e344));
-            let _e351 = f.nz;
-            atomicStore((&grid[(h_1 + 11u)]), _e351);
-            let _e358 = params.reach;
-            atomicStore((&grid[(h_1 + 12u)]), bitcast<u32>(_e358));
+            let _e267 = f.lo.x;
+            atomicStore((&grid[h_1]), bitcast<u32>(_e267));
+            let _e275 = f.lo.y;
+            atomicStore((&grid[(h_1 + 1u)]), bitcast<u32>(_e275));
+            let _e283 = f.lo.z;
+            atomicStore((&grid[(h_1 + 2u)]), bitcast<u32>(_e283));
+            let _e290 = f.nx;
+            atomicStore((&grid[(h_1 + 3u)]), _e290);
+            let _e297 = f.hi.x;
+            atomicStore((&grid[(h_1 + 4u)]), bitcast<u32>(_e297));
+            let _e305 = f.hi.y;
+            atomicStore((&grid[(h_1 + 5u)]), bitcast<u32>(_e305));
+            let _e313 = f.hi.z;
+            atomicStore((&grid[(h_1 + 6u)]), bitcast<u32>(_e313));
+            let _e320 = f.ny;
+            atomicStore((&grid[(h_1 + 7u)]), _e320);
+            let _e327 = f.inv.x;
+            atomicStore((&grid[(h_1 + 8u)]), bitcast<u32>(_e327));
+            let _e335 = f.inv.y;
+            atomicStore((&grid[(h_1 + 9u)]), bitcast<u32>(_e335));
+            let _e343 = f.inv.z;
+            atomicStore((&grid[(h_1 + 10u)]), bitcast<u32>(_e343));
+            let _e350 = f.nz;
+            atomicStore((&grid[(h_1 + 11u)]), _e350);
+            let _e357 = params.reach;
+            atomicStore((&grid[(h_1 + 12u)]), bitcast<u32>(_e357));
             return;
         }
         case 2u, 4u: {
-            let _e362 = params.count;
-            if (i_2 >= _e362) {
+            let _e361 = params.count;
+            if (i_2 >= _e361) {
                 return;
             }
-            let _e364 = grid_frame(h_1);
-            let _e365 = grid_leaf(i_2);
-            if !((_e364.nx == 0u)) {
-                local_2 = (_e365 == BSH_NONE);
+            let _e363 = grid_frame(h_1);
+            let _e364 = grid_leaf(i_2);
+            if !((_e363.nx == 0u)) {
+                local_2 = (_e364 == BSH_NONE);
             } else {
                 local_2 = true;
             }
-            let _e375 = local_2;
-            if _e375 {
+            let _e374 = local_2;
+            if _e374 {
                 return;
             }
-            let leaf_1 = bsh_nodes[_e365];
-            let _e381 = params.reach;
-            let _e382 = bsh_grid_reach(leaf_1, _e381);
-            let _e383 = bsh_grid_pad(_e382);
-            let _e385 = bsh_grid_first(_e364, leaf_1.center, _e383);
-            let _e387 = bsh_grid_last(_e364, leaf_1.center, _e383);
-            z = _e385.z;
+            let leaf_1 = bsh_nodes[_e364];
+            let _e380 = params.reach;
+            let _e381 = bsh_grid_radius(leaf_1, _e380);
+            let _e383 = bsh_grid_first(_e363, leaf_1.center, _e381);
+            let _e385 = bsh_grid_last(_e363, leaf_1.center, _e381);
+            z = _e383.z;
             loop {
-                let _e390 = z;
-                if (_e390 <= _e387.z) {
+                let _e388 = z;
+                if (_e388 <= _e385.z) {
                 } else {
                     break;
                 }
                 {
-                    y = _e385.y;
+                    y = _e383.y;
                     loop {
-                        let _e395 = y;
-                        if (_e395 <= _e387.y) {
+                        let _e393 = y;
+                        if (_e393 <= _e385.y) {
                         } else {
                             break;
                         }
                         {
-                            x = _e385.x;
+                            x = _e383.x;
                             loop {
-                                let _e400 = x;
-                                if (_e400 <= _e387.x) {
+                                let _e398 = x;
+                                if (_e398 <= _e385.x) {
                                 } else {
                                     break;
                                 }
                                 {
-                                    let _e403 = z;
-                                    let _e406 = y;
-                                    let _e410 = x;
-                                    let c_5 = ((((_e403 * _e364.ny) + _e406) * _e364.nx) + _e410);
-                                    let _e415 = params.fill;
-                                    let _e419 = atomicAdd((&grid_fill[(_e415 + c_5)]), 1u);
-                                    let _e422 = params.stage;
-                                    if (_e422 == 4u) {
-                                        grid_entries[_e419] = i_2;
+                                    let _e401 = z;
+                                    let _e404 = y;
+                                    let _e408 = x;
+                                    let c_5 = ((((_e401 * _e363.ny) + _e404) * _e363.nx) + _e408);
+                                    let _e413 = params.fill;
+                                    let _e417 = atomicAdd((&grid_fill[(_e413 + c_5)]), 1u);
+                                    let _e420 = params.stage;
+                                    if (_e420 == 4u) {
+                                        grid_entries[_e417] = i_2;
                                     }
                                 }
                                 continuing {
-                                    let _e428 = x;
-                                    x = (_e428 + 1u);
+                                    let _e426 = x;
+                                    x = (_e426 + 1u);
                                 }
                             }
                         }
                         continuing {
-                            let _e431 = y;
-                            y = (_e431 + 1u);
+                            let _e429 = y;
+                            y = (_e429 + 1u);
                         }
                     }
                 }
                 continuing {
-                    let _e434 = z;
-                    z = (_e434 + 1u);
+                    let _e432 = z;
+                    z = (_e432 + 1u);
                 }
             }
             return;
         }
         default: {
-            let _e436 = grid_frame(h_1);
-            if (i_2 >= ((_e436.nx * _e436.ny) * _e436.nz)) {
+            let _e434 = grid_frame(h_1);
+            if (i_2 >= ((_e434.nx * _e434.ny) * _e434.nz)) {
                 return;
             }
-            let _e446 = params.fill;
-            atomicStore((&grid_fill[(_e446 + i_2)]), 0u);
+            let _e444 = params.fill;
+            atomicStore((&grid_fill[(_e444 + i_2)]), 0u);
             let a_2 = atomicLoad((&grid[(starts + i_2)]));
             let b_2 = atomicLoad((&grid[((starts + i_2) + 1u)]));
             s = (a_2 + 1u);
             loop {
-                let _e463 = s;
-                if (_e463 < b_2) {
+                let _e461 = s;
+                if (_e461 < b_2) {
                 } else {
                     break;
                 }
                 {
-                    let _e466 = s;
-                    let v_1 = grid_entries[_e466];
-                    let _e469 = s;
-                    c_2 = _e469;
+                    let _e464 = s;
+                    let v_1 = grid_entries[_e464];
+                    let _e467 = s;
+                    c_2 = _e467;
                     loop {
-                        let _e471 = c_2;
-                        if (_e471 > a_2) {
-                            let _e476 = c_2;
-                            let _e480 = grid_entries[(_e476 - 1u)];
-                            local_3 = (_e480 > v_1);
+                        let _e469 = c_2;
+                        if (_e469 > a_2) {
+                            let _e474 = c_2;
+                            let _e478 = grid_entries[(_e474 - 1u)];
+                            local_3 = (_e478 > v_1);
                         } else {
                             local_3 = false;
                         }
-                        let _e483 = local_3;
-                        if _e483 {
+                        let _e481 = local_3;
+                        if _e481 {
                         } else {
                             break;
                         }
                         {
-                            let _e485 = c_2;
-                            let _e488 = c_2;
-                            let _e492 = grid_entries[(_e488 - 1u)];
-                            grid_entries[_e485] = _e492;
-                            let _e493 = c_2;
-                            c_2 = (_e493 - 1u);
+                            let _e483 = c_2;
+                            let _e486 = c_2;
+                            let _e490 = grid_entries[(_e486 - 1u)];
+                            grid_entries[_e483] = _e490;
+                            let _e491 = c_2;
+                            c_2 = (_e491 - 1u);
                         }
                     }
-                    let _e497 = c_2;
-                    grid_entries[_e497] = v_1;
+                    let _e495 = c_2;
+                    grid_entries[_e495] = v_1;
                 }
                 continuing {
-                    let _e500 = s;
-                    s = (_e500 + 1u);
+                    let _e498 = s;
+                    s = (_e498 + 1u);
                 }
             }
             s_1 = a_2;
             loop {
-                let _e503 = s_1;
-                if (_e503 < b_2) {
+                let _e501 = s_1;
+                if (_e501 < b_2) {
                 } else {
                     break;
                 }
                 {
-                    let _e506 = s_1;
-                    let _e510 = s_1;
-                    let _e512 = grid_entries[_e510];
-                    let _e514 = grid_leaves[_e512];
-                    grid_entries[_e506] = _e514;
+                    let _e504 = s_1;
+                    let _e508 = s_1;
+                    let _e510 = grid_entries[_e508];
+                    let _e512 = grid_leaves[_e510];
+                    grid_entries[_e504] = _e512;
                 }
                 continuing {
-                    let _e516 = s_1;
-                    s_1 = (_e516 + 1u);
+                    let _e514 = s_1;
+                    s_1 = (_e514 + 1u);
                 }
             }
             return;

@@ -167,6 +167,12 @@ uint bsh_grid_axis(float v, float lo, float inv, uint n) {
     return min(_e9, (n - 1u));
 }
 
+float bsh_grid_radius(BshNode node_3, float w_2) {
+    float _e2 = bsh_grid_reach(node_3, w_2);
+    float _e3 = bsh_grid_pad(_e2);
+    return _e3;
+}
+
 uvec3 bsh_grid_first(GridFrame f_1, vec3 c_3, float r) {
     uint _e10 = bsh_grid_axis((c_3.x - r), f_1.lo.x, f_1.inv.x, f_1.nx);
     uint _e18 = bsh_grid_axis((c_3.y - r), f_1.lo.y, f_1.inv.y, f_1.ny);
@@ -211,12 +217,12 @@ GridFrame grid_frame(uint h) {
 }
 
 uint grid_leaf(uint i_1) {
-    uint node_3 = _group_0_binding_2_cs[i_1];
-    uint _e7 = _group_0_binding_1_cs[node_3].light;
+    uint node_4 = _group_0_binding_2_cs[i_1];
+    uint _e7 = _group_0_binding_1_cs[node_4].light;
     if (((_e7 & BSH_TAIL) != 0u)) {
         return BSH_NONE;
     }
-    return node_3;
+    return node_4;
 }
 
 void main() {
@@ -349,35 +355,34 @@ void main() {
             uint _e118 = atomicAdd(_group_0_binding_4_cs[(h_1 + 13u)], 1u);
             BshNode leaf = _group_0_binding_1_cs[_e110];
             float _e124 = _group_0_binding_0_cs.reach;
-            float _e125 = bsh_grid_reach(leaf, _e124);
-            float _e126 = bsh_grid_pad(_e125);
+            float _e125 = bsh_grid_radius(leaf, _e124);
             bool loop_init_3 = true;
             while(true) {
                 if (!loop_init_3) {
-                    uint _e173 = l;
-                    l = (_e173 + 1u);
+                    uint _e172 = l;
+                    l = (_e172 + 1u);
                 }
                 loop_init_3 = false;
-                uint _e129 = l;
-                uint _e132 = _group_0_binding_0_cs.levels;
-                if ((_e129 < _e132)) {
+                uint _e128 = l;
+                uint _e131 = _group_0_binding_0_cs.levels;
+                if ((_e128 < _e131)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e135 = l;
-                    GridFrame _e137 = _group_0_binding_3_cs[_e135];
-                    uvec3 _e139 = bsh_grid_last(_e137, leaf.center, _e126);
-                    uint _e141 = l;
-                    GridFrame _e143 = _group_0_binding_3_cs[_e141];
-                    uvec3 _e145 = bsh_grid_first(_e143, leaf.center, _e126);
-                    uvec3 d = ((_e139 - _e145) + uvec3(1u));
+                    uint _e134 = l;
+                    GridFrame _e136 = _group_0_binding_3_cs[_e134];
+                    uvec3 _e138 = bsh_grid_last(_e136, leaf.center, _e125);
+                    uint _e140 = l;
+                    GridFrame _e142 = _group_0_binding_3_cs[_e140];
+                    uvec3 _e144 = bsh_grid_first(_e142, leaf.center, _e125);
+                    uvec3 d = ((_e138 - _e144) + uvec3(1u));
                     uint n_2 = ((d.x * d.y) * d.z);
-                    uint _e158 = l;
-                    uint at = ((h_1 + 16u) + (2u * _e158));
-                    uint _e163 = atomicAdd(_group_0_binding_4_cs[at], n_2);
-                    if (((_e163 + n_2) < _e163)) {
-                        uint _e171 = atomicAdd(_group_0_binding_4_cs[(at + 1u)], 1u);
+                    uint _e157 = l;
+                    uint at = ((h_1 + 16u) + (2u * _e157));
+                    uint _e162 = atomicAdd(_group_0_binding_4_cs[at], n_2);
+                    if (((_e162 + n_2) < _e162)) {
+                        uint _e170 = atomicAdd(_group_0_binding_4_cs[(at + 1u)], 1u);
                     }
                 }
             }
@@ -388,164 +393,163 @@ void main() {
                 return;
             }
             uint leaves_1 = atomicOr(_group_0_binding_4_cs[(h_1 + 13u)], 0u);
-            uint _e184 = _group_0_binding_0_cs.levels;
-            chosen = _e184;
+            uint _e183 = _group_0_binding_0_cs.levels;
+            chosen = _e183;
             bool loop_init_4 = true;
             while(true) {
                 if (!loop_init_4) {
-                    uint _e247 = l_1;
-                    l_1 = (_e247 + 1u);
+                    uint _e246 = l_1;
+                    l_1 = (_e246 + 1u);
                 }
                 loop_init_4 = false;
-                uint _e188 = l_1;
-                uint _e191 = _group_0_binding_0_cs.levels;
-                if ((_e188 < _e191)) {
+                uint _e187 = l_1;
+                uint _e190 = _group_0_binding_0_cs.levels;
+                if ((_e187 < _e190)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e194 = l_1;
-                    GridFrame f_4 = _group_0_binding_3_cs[_e194];
+                    uint _e193 = l_1;
+                    GridFrame f_4 = _group_0_binding_3_cs[_e193];
                     uint cells_2 = ((f_4.nx * f_4.ny) * f_4.nz);
-                    uint _e202 = bsh_grid_budget(leaves_1, cells_2);
-                    uint _e205 = _group_0_binding_0_cs.capacity;
-                    uint budget = min(_e202, _e205);
-                    uint _e210 = l_1;
-                    uint at_1 = ((h_1 + 16u) + (2u * _e210));
-                    uint _e213 = chosen;
-                    uint _e216 = _group_0_binding_0_cs.levels;
-                    if ((_e213 == _e216)) {
-                        uint _e224 = atomicOr(_group_0_binding_4_cs[(at_1 + 1u)], 0u);
-                        local = (_e224 == 0u);
+                    uint _e201 = bsh_grid_budget(leaves_1, cells_2);
+                    uint _e204 = _group_0_binding_0_cs.capacity;
+                    uint budget = min(_e201, _e204);
+                    uint _e209 = l_1;
+                    uint at_1 = ((h_1 + 16u) + (2u * _e209));
+                    uint _e212 = chosen;
+                    uint _e215 = _group_0_binding_0_cs.levels;
+                    if ((_e212 == _e215)) {
+                        uint _e223 = atomicOr(_group_0_binding_4_cs[(at_1 + 1u)], 0u);
+                        local = (_e223 == 0u);
                     } else {
                         local = false;
                     }
-                    bool _e228 = local;
-                    if (_e228) {
-                        uint _e233 = atomicOr(_group_0_binding_4_cs[at_1], 0u);
-                        local_1 = (_e233 <= budget);
+                    bool _e227 = local;
+                    if (_e227) {
+                        uint _e232 = atomicOr(_group_0_binding_4_cs[at_1], 0u);
+                        local_1 = (_e232 <= budget);
                     } else {
                         local_1 = false;
                     }
-                    bool _e236 = local_1;
-                    if (_e236) {
-                        uint _e237 = l_1;
-                        chosen = _e237;
+                    bool _e235 = local_1;
+                    if (_e235) {
+                        uint _e236 = l_1;
+                        chosen = _e236;
                     }
                     atomicExchange(_group_0_binding_4_cs[at_1], 0u);
                     atomicExchange(_group_0_binding_4_cs[(at_1 + 1u)], 0u);
                 }
             }
             atomicExchange(_group_0_binding_4_cs[(h_1 + 13u)], 0u);
-            uint _e255 = chosen;
-            uint _e258 = _group_0_binding_0_cs.levels;
-            if ((_e255 < _e258)) {
-                uint _e261 = chosen;
-                GridFrame _e263 = _group_0_binding_3_cs[_e261];
-                f = _e263;
+            uint _e254 = chosen;
+            uint _e257 = _group_0_binding_0_cs.levels;
+            if ((_e254 < _e257)) {
+                uint _e260 = chosen;
+                GridFrame _e262 = _group_0_binding_3_cs[_e260];
+                f = _e262;
             }
-            float _e268 = f.lo.x;
-            atomicExchange(_group_0_binding_4_cs[h_1], floatBitsToUint(_e268));
-            float _e276 = f.lo.y;
-            atomicExchange(_group_0_binding_4_cs[(h_1 + 1u)], floatBitsToUint(_e276));
-            float _e284 = f.lo.z;
-            atomicExchange(_group_0_binding_4_cs[(h_1 + 2u)], floatBitsToUint(_e284));
-            uint _e291 = f.nx;
-            atomicExchange(_group_0_binding_4_cs[(h_1 + 3u)], _e291);
-            float _e298 = f.hi.x;
-            atomicExchange(_group_0_binding_4_cs[(h_1 + 4u)], floatBitsToUint(_e298));
-            float _e306 = f.hi.y;
-            atomicExchange(_group_0_binding_4_cs[(h_1 + 5u)], floatBitsToUint(_e306));
-            float _e314 = f.hi.z;
-            atomicExchange(_group_0_binding_4_cs[(h_1 + 6u)], floatBitsToUint(_e314));
-            uint _e321 = f.ny;
-            atomicExchange(_group_0_binding_4_cs[(h_1 + 7u)], _e321);
-            float _e328 = f.inv.x;
-            atomicExchange(_group_0_binding_4_cs[(h_1 + 8u)], floatBitsToUint(_e328));
-            float _e336 = f.inv.y;
-            atomicExchange(_group_0_binding_4_cs[(h_1 + 9u)], floatBitsToUint(_e336));
-            float _e344 = f.inv.z;
-            atomicExchange(_group_0_binding_4_cs[(h_1 + 10u)], floatBitsToUint(_e344));
-            uint _e351 = f.nz;
-            atomicExchange(_group_0_binding_4_cs[(h_1 + 11u)], _e351);
-            float _e358 = _group_0_binding_0_cs.reach;
-            atomicExchange(_group_0_binding_4_cs[(h_1 + 12u)], floatBitsToUint(_e358));
+            float _e267 = f.lo.x;
+            atomicExchange(_group_0_binding_4_cs[h_1], floatBitsToUint(_e267));
+            float _e275 = f.lo.y;
+            atomicExchange(_group_0_binding_4_cs[(h_1 + 1u)], floatBitsToUint(_e275));
+            float _e283 = f.lo.z;
+            atomicExchange(_group_0_binding_4_cs[(h_1 + 2u)], floatBitsToUint(_e283));
+            uint _e290 = f.nx;
+            atomicExchange(_group_0_binding_4_cs[(h_1 + 3u)], _e290);
+            float _e297 = f.hi.x;
+            atomicExchange(_group_0_binding_4_cs[(h_1 + 4u)], floatBitsToUint(_e297));
+            float _e305 = f.hi.y;
+            atomicExchange(_group_0_binding_4_cs[(h_1 + 5u)], floatBitsToUint(_e305));
+            float _e313 = f.hi.z;
+            atomicExchange(_group_0_binding_4_cs[(h_1 + 6u)], floatBitsToUint(_e313));
+            uint _e320 = f.ny;
+            atomicExchange(_group_0_binding_4_cs[(h_1 + 7u)], _e320);
+            float _e327 = f.inv.x;
+            atomicExchange(_group_0_binding_4_cs[(h_1 + 8u)], floatBitsToUint(_e327));
+            float _e335 = f.inv.y;
+            atomicExchange(_group_0_binding_4_cs[(h_1 + 9u)], floatBitsToUint(_e335));
+            float _e343 = f.inv.z;
+            atomicExchange(_group_0_binding_4_cs[(h_1 + 10u)], floatBitsToUint(_e343));
+            uint _e350 = f.nz;
+            atomicExchange(_group_0_binding_4_cs[(h_1 + 11u)], _e350);
+            float _e357 = _group_0_binding_0_cs.reach;
+            atomicExchange(_group_0_binding_4_cs[(h_1 + 12u)], floatBitsToUint(_e357));
             return;
         }
         case 2u:
         case 4u: {
-            uint _e362 = _group_0_binding_0_cs.count;
-            if ((i_2 >= _e362)) {
+            uint _e361 = _group_0_binding_0_cs.count;
+            if ((i_2 >= _e361)) {
                 return;
             }
-            GridFrame _e364 = grid_frame(h_1);
-            uint _e365 = grid_leaf(i_2);
-            if (!((_e364.nx == 0u))) {
-                local_2 = (_e365 == BSH_NONE);
+            GridFrame _e363 = grid_frame(h_1);
+            uint _e364 = grid_leaf(i_2);
+            if (!((_e363.nx == 0u))) {
+                local_2 = (_e364 == BSH_NONE);
             } else {
                 local_2 = true;
             }
-            bool _e375 = local_2;
-            if (_e375) {
+            bool _e374 = local_2;
+            if (_e374) {
                 return;
             }
-            BshNode leaf_1 = _group_0_binding_1_cs[_e365];
-            float _e381 = _group_0_binding_0_cs.reach;
-            float _e382 = bsh_grid_reach(leaf_1, _e381);
-            float _e383 = bsh_grid_pad(_e382);
-            uvec3 _e385 = bsh_grid_first(_e364, leaf_1.center, _e383);
-            uvec3 _e387 = bsh_grid_last(_e364, leaf_1.center, _e383);
-            z = _e385.z;
+            BshNode leaf_1 = _group_0_binding_1_cs[_e364];
+            float _e380 = _group_0_binding_0_cs.reach;
+            float _e381 = bsh_grid_radius(leaf_1, _e380);
+            uvec3 _e383 = bsh_grid_first(_e363, leaf_1.center, _e381);
+            uvec3 _e385 = bsh_grid_last(_e363, leaf_1.center, _e381);
+            z = _e383.z;
             bool loop_init_5 = true;
             while(true) {
                 if (!loop_init_5) {
-                    uint _e434 = z;
-                    z = (_e434 + 1u);
+                    uint _e432 = z;
+                    z = (_e432 + 1u);
                 }
                 loop_init_5 = false;
-                uint _e390 = z;
-                if ((_e390 <= _e387.z)) {
+                uint _e388 = z;
+                if ((_e388 <= _e385.z)) {
                 } else {
                     break;
                 }
                 {
-                    y = _e385.y;
+                    y = _e383.y;
                     bool loop_init_6 = true;
                     while(true) {
                         if (!loop_init_6) {
-                            uint _e431 = y;
-                            y = (_e431 + 1u);
+                            uint _e429 = y;
+                            y = (_e429 + 1u);
                         }
                         loop_init_6 = false;
-                        uint _e395 = y;
-                        if ((_e395 <= _e387.y)) {
+                        uint _e393 = y;
+                        if ((_e393 <= _e385.y)) {
                         } else {
                             break;
                         }
                         {
-                            x = _e385.x;
+                            x = _e383.x;
                             bool loop_init_7 = true;
                             while(true) {
                                 if (!loop_init_7) {
-                                    uint _e428 = x;
-                                    x = (_e428 + 1u);
+                                    uint _e426 = x;
+                                    x = (_e426 + 1u);
                                 }
                                 loop_init_7 = false;
-                                uint _e400 = x;
-                                if ((_e400 <= _e387.x)) {
+                                uint _e398 = x;
+                                if ((_e398 <= _e385.x)) {
                                 } else {
                                     break;
                                 }
                                 {
-                                    uint _e403 = z;
-                                    uint _e406 = y;
-                                    uint _e410 = x;
-                                    uint c_5 = ((((_e403 * _e364.ny) + _e406) * _e364.nx) + _e410);
-                                    uint _e415 = _group_0_binding_0_cs.fill;
-                                    uint _e419 = atomicAdd(_group_0_binding_5_cs[(_e415 + c_5)], 1u);
-                                    uint _e422 = _group_0_binding_0_cs.stage;
-                                    if ((_e422 == 4u)) {
-                                        _group_0_binding_6_cs[_e419] = i_2;
+                                    uint _e401 = z;
+                                    uint _e404 = y;
+                                    uint _e408 = x;
+                                    uint c_5 = ((((_e401 * _e363.ny) + _e404) * _e363.nx) + _e408);
+                                    uint _e413 = _group_0_binding_0_cs.fill;
+                                    uint _e417 = atomicAdd(_group_0_binding_5_cs[(_e413 + c_5)], 1u);
+                                    uint _e420 = _group_0_binding_0_cs.stage;
+                                    if ((_e420 == 4u)) {
+                                        _group_0_binding_6_cs[_e417] = i_2;
                                     }
                                 }
                             }
@@ -556,78 +560,78 @@ void main() {
             return;
         }
         default: {
-            GridFrame _e436 = grid_frame(h_1);
-            if ((i_2 >= ((_e436.nx * _e436.ny) * _e436.nz))) {
+            GridFrame _e434 = grid_frame(h_1);
+            if ((i_2 >= ((_e434.nx * _e434.ny) * _e434.nz))) {
                 return;
             }
-            uint _e446 = _group_0_binding_0_cs.fill;
-            atomicExchange(_group_0_binding_5_cs[(_e446 + i_2)], 0u);
+            uint _e444 = _group_0_binding_0_cs.fill;
+            atomicExchange(_group_0_binding_5_cs[(_e444 + i_2)], 0u);
             uint a_2 = atomicOr(_group_0_binding_4_cs[(starts + i_2)], 0u);
             uint b_2 = atomicOr(_group_0_binding_4_cs[((starts + i_2) + 1u)], 0u);
             s = (a_2 + 1u);
             bool loop_init_8 = true;
             while(true) {
                 if (!loop_init_8) {
-                    uint _e500 = s;
-                    s = (_e500 + 1u);
+                    uint _e498 = s;
+                    s = (_e498 + 1u);
                 }
                 loop_init_8 = false;
-                uint _e463 = s;
-                if ((_e463 < b_2)) {
+                uint _e461 = s;
+                if ((_e461 < b_2)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e466 = s;
-                    uint v_1 = _group_0_binding_6_cs[_e466];
-                    uint _e469 = s;
-                    c_2 = _e469;
+                    uint _e464 = s;
+                    uint v_1 = _group_0_binding_6_cs[_e464];
+                    uint _e467 = s;
+                    c_2 = _e467;
                     while(true) {
-                        uint _e471 = c_2;
-                        if ((_e471 > a_2)) {
-                            uint _e476 = c_2;
-                            uint _e480 = _group_0_binding_6_cs[(_e476 - 1u)];
-                            local_3 = (_e480 > v_1);
+                        uint _e469 = c_2;
+                        if ((_e469 > a_2)) {
+                            uint _e474 = c_2;
+                            uint _e478 = _group_0_binding_6_cs[(_e474 - 1u)];
+                            local_3 = (_e478 > v_1);
                         } else {
                             local_3 = false;
                         }
-                        bool _e483 = local_3;
-                        if (_e483) {
+                        bool _e481 = local_3;
+                        if (_e481) {
                         } else {
                             break;
                         }
                         {
-                            uint _e485 = c_2;
-                            uint _e488 = c_2;
-                            uint _e492 = _group_0_binding_6_cs[(_e488 - 1u)];
-                            _group_0_binding_6_cs[_e485] = _e492;
-                            uint _e493 = c_2;
-                            c_2 = (_e493 - 1u);
+                            uint _e483 = c_2;
+                            uint _e486 = c_2;
+                            uint _e490 = _group_0_binding_6_cs[(_e486 - 1u)];
+                            _group_0_binding_6_cs[_e483] = _e490;
+                            uint _e491 = c_2;
+                            c_2 = (_e491 - 1u);
                         }
                     }
-                    uint _e497 = c_2;
-                    _group_0_binding_6_cs[_e497] = v_1;
+                    uint _e495 = c_2;
+                    _group_0_binding_6_cs[_e495] = v_1;
                 }
             }
             s_1 = a_2;
             bool loop_init_9 = true;
             while(true) {
                 if (!loop_init_9) {
-                    uint _e516 = s_1;
-                    s_1 = (_e516 + 1u);
+                    uint _e514 = s_1;
+                    s_1 = (_e514 + 1u);
                 }
                 loop_init_9 = false;
-                uint _e503 = s_1;
-                if ((_e503 < b_2)) {
+                uint _e501 = s_1;
+                if ((_e501 < b_2)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e506 = s_1;
-                    uint _e510 = s_1;
-                    uint _e512 = _group_0_binding_6_cs[_e510];
-                    uint _e514 = _group_0_binding_2_cs[_e512];
-                    _group_0_binding_6_cs[_e506] = _e514;
+                    uint _e504 = s_1;
+                    uint _e508 = s_1;
+                    uint _e510 = _group_0_binding_6_cs[_e508];
+                    uint _e512 = _group_0_binding_2_cs[_e510];
+                    _group_0_binding_6_cs[_e504] = _e512;
                 }
             }
             return;

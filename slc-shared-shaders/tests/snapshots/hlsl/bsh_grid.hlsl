@@ -170,6 +170,13 @@ uint bsh_grid_axis(float v, float lo, float inv, uint n)
     return min(_e9, (n - 1u));
 }
 
+float bsh_grid_radius(BshNode node_3, float w_2)
+{
+    const float _e2 = bsh_grid_reach(node_3, w_2);
+    const float _e3 = bsh_grid_pad(_e2);
+    return _e3;
+}
+
 uint3 bsh_grid_first(GridFrame f_1, float3 c_3, float r)
 {
     const uint _e10 = bsh_grid_axis((c_3.x - r), f_1.lo.x, f_1.inv.x, f_1.nx);
@@ -221,12 +228,12 @@ GridFrame grid_frame(uint h)
 
 uint grid_leaf(uint i_1)
 {
-    uint node_3 = asuint(grid_leaves.Load(i_1*4));
-    uint _e7 = asuint(bsh_nodes.Load(24+node_3*32));
+    uint node_4 = asuint(grid_leaves.Load(i_1*4));
+    uint _e7 = asuint(bsh_nodes.Load(24+node_4*32));
     if (((_e7 & BSH_TAIL) != 0u)) {
         return BSH_NONE;
     }
-    return node_3;
+    return node_4;
 }
 
 uint naga_div(uint lhs, uint rhs) {
@@ -394,38 +401,37 @@ void main(uint3 gid : SV_DispatchThreadID, uint local_invocation_index : SV_Grou
             uint _e118; grid.InterlockedAdd((h_1 + 13u)*4, 1u, _e118);
             BshNode leaf = ConstructBshNode(asfloat(bsh_nodes.Load3(_e110*32+0)), asfloat(bsh_nodes.Load(_e110*32+12)), asuint(bsh_nodes.Load(_e110*32+16)), asuint(bsh_nodes.Load(_e110*32+20)), asuint(bsh_nodes.Load(_e110*32+24)), asfloat(bsh_nodes.Load(_e110*32+28)));
             float _e124 = params.reach;
-            const float _e125 = bsh_grid_reach(leaf, _e124);
-            const float _e126 = bsh_grid_pad(_e125);
+            const float _e125 = bsh_grid_radius(leaf, _e124);
             uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
             bool loop_init_3 = true;
             while(true) {
                 if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
                 loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
                 if (!loop_init_3) {
-                    uint _e173 = l;
-                    l = (_e173 + 1u);
+                    uint _e172 = l;
+                    l = (_e172 + 1u);
                 }
                 loop_init_3 = false;
-                uint _e129 = l;
-                uint _e132 = params.levels;
-                if ((_e129 < _e132)) {
+                uint _e128 = l;
+                uint _e131 = params.levels;
+                if ((_e128 < _e131)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e135 = l;
-                    GridFrame _e137 = ConstructGridFrame(asfloat(grid_levels.Load3(_e135*48+0)), asuint(grid_levels.Load(_e135*48+12)), asfloat(grid_levels.Load3(_e135*48+16)), asuint(grid_levels.Load(_e135*48+28)), asfloat(grid_levels.Load3(_e135*48+32)), asuint(grid_levels.Load(_e135*48+44)));
-                    const uint3 _e139 = bsh_grid_last(_e137, leaf.center_, _e126);
-                    uint _e141 = l;
-                    GridFrame _e143 = ConstructGridFrame(asfloat(grid_levels.Load3(_e141*48+0)), asuint(grid_levels.Load(_e141*48+12)), asfloat(grid_levels.Load3(_e141*48+16)), asuint(grid_levels.Load(_e141*48+28)), asfloat(grid_levels.Load3(_e141*48+32)), asuint(grid_levels.Load(_e141*48+44)));
-                    const uint3 _e145 = bsh_grid_first(_e143, leaf.center_, _e126);
-                    uint3 d = ((_e139 - _e145) + (1u).xxx);
+                    uint _e134 = l;
+                    GridFrame _e136 = ConstructGridFrame(asfloat(grid_levels.Load3(_e134*48+0)), asuint(grid_levels.Load(_e134*48+12)), asfloat(grid_levels.Load3(_e134*48+16)), asuint(grid_levels.Load(_e134*48+28)), asfloat(grid_levels.Load3(_e134*48+32)), asuint(grid_levels.Load(_e134*48+44)));
+                    const uint3 _e138 = bsh_grid_last(_e136, leaf.center_, _e125);
+                    uint _e140 = l;
+                    GridFrame _e142 = ConstructGridFrame(asfloat(grid_levels.Load3(_e140*48+0)), asuint(grid_levels.Load(_e140*48+12)), asfloat(grid_levels.Load3(_e140*48+16)), asuint(grid_levels.Load(_e140*48+28)), asfloat(grid_levels.Load3(_e140*48+32)), asuint(grid_levels.Load(_e140*48+44)));
+                    const uint3 _e144 = bsh_grid_first(_e142, leaf.center_, _e125);
+                    uint3 d = ((_e138 - _e144) + (1u).xxx);
                     uint n_2 = ((d.x * d.y) * d.z);
-                    uint _e158 = l;
-                    uint at = ((h_1 + 16u) + (2u * _e158));
-                    uint _e163; grid.InterlockedAdd(at*4, n_2, _e163);
-                    if (((_e163 + n_2) < _e163)) {
-                        uint _e171; grid.InterlockedAdd((at + 1u)*4, 1u, _e171);
+                    uint _e157 = l;
+                    uint at = ((h_1 + 16u) + (2u * _e157));
+                    uint _e162; grid.InterlockedAdd(at*4, n_2, _e162);
+                    if (((_e162 + n_2) < _e162)) {
+                        uint _e170; grid.InterlockedAdd((at + 1u)*4, 1u, _e170);
                     }
                 }
             }
@@ -436,176 +442,175 @@ void main(uint3 gid : SV_DispatchThreadID, uint local_invocation_index : SV_Grou
                 return;
             }
             uint leaves_1; grid.InterlockedOr((h_1 + 13u)*4, 0, leaves_1);
-            uint _e184 = params.levels;
-            chosen = _e184;
+            uint _e183 = params.levels;
+            chosen = _e183;
             uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
             bool loop_init_4 = true;
             while(true) {
                 if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
                 loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
                 if (!loop_init_4) {
-                    uint _e247 = l_1;
-                    l_1 = (_e247 + 1u);
+                    uint _e246 = l_1;
+                    l_1 = (_e246 + 1u);
                 }
                 loop_init_4 = false;
-                uint _e188 = l_1;
-                uint _e191 = params.levels;
-                if ((_e188 < _e191)) {
+                uint _e187 = l_1;
+                uint _e190 = params.levels;
+                if ((_e187 < _e190)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e194 = l_1;
-                    GridFrame f_4 = ConstructGridFrame(asfloat(grid_levels.Load3(_e194*48+0)), asuint(grid_levels.Load(_e194*48+12)), asfloat(grid_levels.Load3(_e194*48+16)), asuint(grid_levels.Load(_e194*48+28)), asfloat(grid_levels.Load3(_e194*48+32)), asuint(grid_levels.Load(_e194*48+44)));
+                    uint _e193 = l_1;
+                    GridFrame f_4 = ConstructGridFrame(asfloat(grid_levels.Load3(_e193*48+0)), asuint(grid_levels.Load(_e193*48+12)), asfloat(grid_levels.Load3(_e193*48+16)), asuint(grid_levels.Load(_e193*48+28)), asfloat(grid_levels.Load3(_e193*48+32)), asuint(grid_levels.Load(_e193*48+44)));
                     uint cells_2 = ((f_4.nx * f_4.ny) * f_4.nz);
-                    const uint _e202 = bsh_grid_budget(leaves_1, cells_2);
-                    uint _e205 = params.capacity;
-                    uint budget = min(_e202, _e205);
-                    uint _e210 = l_1;
-                    uint at_1 = ((h_1 + 16u) + (2u * _e210));
-                    uint _e213 = chosen;
-                    uint _e216 = params.levels;
-                    if ((_e213 == _e216)) {
-                        uint _e224; grid.InterlockedOr((at_1 + 1u)*4, 0, _e224);
-                        local = (_e224 == 0u);
+                    const uint _e201 = bsh_grid_budget(leaves_1, cells_2);
+                    uint _e204 = params.capacity;
+                    uint budget = min(_e201, _e204);
+                    uint _e209 = l_1;
+                    uint at_1 = ((h_1 + 16u) + (2u * _e209));
+                    uint _e212 = chosen;
+                    uint _e215 = params.levels;
+                    if ((_e212 == _e215)) {
+                        uint _e223; grid.InterlockedOr((at_1 + 1u)*4, 0, _e223);
+                        local = (_e223 == 0u);
                     } else {
                         local = false;
                     }
-                    bool _e228 = local;
-                    if (_e228) {
-                        uint _e233; grid.InterlockedOr(at_1*4, 0, _e233);
-                        local_1 = (_e233 <= budget);
+                    bool _e227 = local;
+                    if (_e227) {
+                        uint _e232; grid.InterlockedOr(at_1*4, 0, _e232);
+                        local_1 = (_e232 <= budget);
                     } else {
                         local_1 = false;
                     }
-                    bool _e236 = local_1;
-                    if (_e236) {
-                        uint _e237 = l_1;
-                        chosen = _e237;
+                    bool _e235 = local_1;
+                    if (_e235) {
+                        uint _e236 = l_1;
+                        chosen = _e236;
                     }
                     { uint dummy_3 = 0; grid.InterlockedExchange(at_1*4, 0u, dummy_3); }
                     { uint dummy_4 = 0; grid.InterlockedExchange((at_1 + 1u)*4, 0u, dummy_4); }
                 }
             }
             { uint dummy_5 = 0; grid.InterlockedExchange((h_1 + 13u)*4, 0u, dummy_5); }
-            uint _e255 = chosen;
-            uint _e258 = params.levels;
-            if ((_e255 < _e258)) {
-                uint _e261 = chosen;
-                GridFrame _e263 = ConstructGridFrame(asfloat(grid_levels.Load3(_e261*48+0)), asuint(grid_levels.Load(_e261*48+12)), asfloat(grid_levels.Load3(_e261*48+16)), asuint(grid_levels.Load(_e261*48+28)), asfloat(grid_levels.Load3(_e261*48+32)), asuint(grid_levels.Load(_e261*48+44)));
-                f = _e263;
+            uint _e254 = chosen;
+            uint _e257 = params.levels;
+            if ((_e254 < _e257)) {
+                uint _e260 = chosen;
+                GridFrame _e262 = ConstructGridFrame(asfloat(grid_levels.Load3(_e260*48+0)), asuint(grid_levels.Load(_e260*48+12)), asfloat(grid_levels.Load3(_e260*48+16)), asuint(grid_levels.Load(_e260*48+28)), asfloat(grid_levels.Load3(_e260*48+32)), asuint(grid_levels.Load(_e260*48+44)));
+                f = _e262;
             }
-            float _e268 = f.lo.x;
-            { uint dummy_6 = 0; grid.InterlockedExchange(h_1*4, asuint(_e268), dummy_6); }
-            float _e276 = f.lo.y;
-            { uint dummy_7 = 0; grid.InterlockedExchange((h_1 + 1u)*4, asuint(_e276), dummy_7); }
-            float _e284 = f.lo.z;
-            { uint dummy_8 = 0; grid.InterlockedExchange((h_1 + 2u)*4, asuint(_e284), dummy_8); }
-            uint _e291 = f.nx;
-            { uint dummy_9 = 0; grid.InterlockedExchange((h_1 + 3u)*4, _e291, dummy_9); }
-            float _e298 = f.hi.x;
-            { uint dummy_10 = 0; grid.InterlockedExchange((h_1 + 4u)*4, asuint(_e298), dummy_10); }
-            float _e306 = f.hi.y;
-            { uint dummy_11 = 0; grid.InterlockedExchange((h_1 + 5u)*4, asuint(_e306), dummy_11); }
-            float _e314 = f.hi.z;
-            { uint dummy_12 = 0; grid.InterlockedExchange((h_1 + 6u)*4, asuint(_e314), dummy_12); }
-            uint _e321 = f.ny;
-            { uint dummy_13 = 0; grid.InterlockedExchange((h_1 + 7u)*4, _e321, dummy_13); }
-            float _e328 = f.inv.x;
-            { uint dummy_14 = 0; grid.InterlockedExchange((h_1 + 8u)*4, asuint(_e328), dummy_14); }
-            float _e336 = f.inv.y;
-            { uint dummy_15 = 0; grid.InterlockedExchange((h_1 + 9u)*4, asuint(_e336), dummy_15); }
-            float _e344 = f.inv.z;
-            { uint dummy_16 = 0; grid.InterlockedExchange((h_1 + 10u)*4, asuint(_e344), dummy_16); }
-            uint _e351 = f.nz;
-            { uint dummy_17 = 0; grid.InterlockedExchange((h_1 + 11u)*4, _e351, dummy_17); }
-            float _e358 = params.reach;
-            { uint dummy_18 = 0; grid.InterlockedExchange((h_1 + 12u)*4, asuint(_e358), dummy_18); }
+            float _e267 = f.lo.x;
+            { uint dummy_6 = 0; grid.InterlockedExchange(h_1*4, asuint(_e267), dummy_6); }
+            float _e275 = f.lo.y;
+            { uint dummy_7 = 0; grid.InterlockedExchange((h_1 + 1u)*4, asuint(_e275), dummy_7); }
+            float _e283 = f.lo.z;
+            { uint dummy_8 = 0; grid.InterlockedExchange((h_1 + 2u)*4, asuint(_e283), dummy_8); }
+            uint _e290 = f.nx;
+            { uint dummy_9 = 0; grid.InterlockedExchange((h_1 + 3u)*4, _e290, dummy_9); }
+            float _e297 = f.hi.x;
+            { uint dummy_10 = 0; grid.InterlockedExchange((h_1 + 4u)*4, asuint(_e297), dummy_10); }
+            float _e305 = f.hi.y;
+            { uint dummy_11 = 0; grid.InterlockedExchange((h_1 + 5u)*4, asuint(_e305), dummy_11); }
+            float _e313 = f.hi.z;
+            { uint dummy_12 = 0; grid.InterlockedExchange((h_1 + 6u)*4, asuint(_e313), dummy_12); }
+            uint _e320 = f.ny;
+            { uint dummy_13 = 0; grid.InterlockedExchange((h_1 + 7u)*4, _e320, dummy_13); }
+            float _e327 = f.inv.x;
+            { uint dummy_14 = 0; grid.InterlockedExchange((h_1 + 8u)*4, asuint(_e327), dummy_14); }
+            float _e335 = f.inv.y;
+            { uint dummy_15 = 0; grid.InterlockedExchange((h_1 + 9u)*4, asuint(_e335), dummy_15); }
+            float _e343 = f.inv.z;
+            { uint dummy_16 = 0; grid.InterlockedExchange((h_1 + 10u)*4, asuint(_e343), dummy_16); }
+            uint _e350 = f.nz;
+            { uint dummy_17 = 0; grid.InterlockedExchange((h_1 + 11u)*4, _e350, dummy_17); }
+            float _e357 = params.reach;
+            { uint dummy_18 = 0; grid.InterlockedExchange((h_1 + 12u)*4, asuint(_e357), dummy_18); }
             return;
         }
         case 2u:
         case 4u: {
-            uint _e362 = params.count;
-            if ((i_2 >= _e362)) {
+            uint _e361 = params.count;
+            if ((i_2 >= _e361)) {
                 return;
             }
-            const GridFrame _e364 = grid_frame(h_1);
-            const uint _e365 = grid_leaf(i_2);
-            if (!((_e364.nx == 0u))) {
-                local_2 = (_e365 == BSH_NONE);
+            const GridFrame _e363 = grid_frame(h_1);
+            const uint _e364 = grid_leaf(i_2);
+            if (!((_e363.nx == 0u))) {
+                local_2 = (_e364 == BSH_NONE);
             } else {
                 local_2 = true;
             }
-            bool _e375 = local_2;
-            if (_e375) {
+            bool _e374 = local_2;
+            if (_e374) {
                 return;
             }
-            BshNode leaf_1 = ConstructBshNode(asfloat(bsh_nodes.Load3(_e365*32+0)), asfloat(bsh_nodes.Load(_e365*32+12)), asuint(bsh_nodes.Load(_e365*32+16)), asuint(bsh_nodes.Load(_e365*32+20)), asuint(bsh_nodes.Load(_e365*32+24)), asfloat(bsh_nodes.Load(_e365*32+28)));
-            float _e381 = params.reach;
-            const float _e382 = bsh_grid_reach(leaf_1, _e381);
-            const float _e383 = bsh_grid_pad(_e382);
-            const uint3 _e385 = bsh_grid_first(_e364, leaf_1.center_, _e383);
-            const uint3 _e387 = bsh_grid_last(_e364, leaf_1.center_, _e383);
-            z = _e385.z;
+            BshNode leaf_1 = ConstructBshNode(asfloat(bsh_nodes.Load3(_e364*32+0)), asfloat(bsh_nodes.Load(_e364*32+12)), asuint(bsh_nodes.Load(_e364*32+16)), asuint(bsh_nodes.Load(_e364*32+20)), asuint(bsh_nodes.Load(_e364*32+24)), asfloat(bsh_nodes.Load(_e364*32+28)));
+            float _e380 = params.reach;
+            const float _e381 = bsh_grid_radius(leaf_1, _e380);
+            const uint3 _e383 = bsh_grid_first(_e363, leaf_1.center_, _e381);
+            const uint3 _e385 = bsh_grid_last(_e363, leaf_1.center_, _e381);
+            z = _e383.z;
             uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
             bool loop_init_5 = true;
             while(true) {
                 if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
                 loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
                 if (!loop_init_5) {
-                    uint _e434 = z;
-                    z = (_e434 + 1u);
+                    uint _e432 = z;
+                    z = (_e432 + 1u);
                 }
                 loop_init_5 = false;
-                uint _e390 = z;
-                if ((_e390 <= _e387.z)) {
+                uint _e388 = z;
+                if ((_e388 <= _e385.z)) {
                 } else {
                     break;
                 }
                 {
-                    y = _e385.y;
+                    y = _e383.y;
                     uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
                     bool loop_init_6 = true;
                     while(true) {
                         if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
                         loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
                         if (!loop_init_6) {
-                            uint _e431 = y;
-                            y = (_e431 + 1u);
+                            uint _e429 = y;
+                            y = (_e429 + 1u);
                         }
                         loop_init_6 = false;
-                        uint _e395 = y;
-                        if ((_e395 <= _e387.y)) {
+                        uint _e393 = y;
+                        if ((_e393 <= _e385.y)) {
                         } else {
                             break;
                         }
                         {
-                            x = _e385.x;
+                            x = _e383.x;
                             uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
                             bool loop_init_7 = true;
                             while(true) {
                                 if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
                                 loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
                                 if (!loop_init_7) {
-                                    uint _e428 = x;
-                                    x = (_e428 + 1u);
+                                    uint _e426 = x;
+                                    x = (_e426 + 1u);
                                 }
                                 loop_init_7 = false;
-                                uint _e400 = x;
-                                if ((_e400 <= _e387.x)) {
+                                uint _e398 = x;
+                                if ((_e398 <= _e385.x)) {
                                 } else {
                                     break;
                                 }
                                 {
-                                    uint _e403 = z;
-                                    uint _e406 = y;
-                                    uint _e410 = x;
-                                    uint c_5 = ((((_e403 * _e364.ny) + _e406) * _e364.nx) + _e410);
-                                    uint _e415 = params.fill;
-                                    uint _e419; grid_fill.InterlockedAdd((_e415 + c_5)*4, 1u, _e419);
-                                    uint _e422 = params.stage;
-                                    if ((_e422 == 4u)) {
-                                        grid_entries.Store(_e419*4, asuint(i_2));
+                                    uint _e401 = z;
+                                    uint _e404 = y;
+                                    uint _e408 = x;
+                                    uint c_5 = ((((_e401 * _e363.ny) + _e404) * _e363.nx) + _e408);
+                                    uint _e413 = params.fill;
+                                    uint _e417; grid_fill.InterlockedAdd((_e413 + c_5)*4, 1u, _e417);
+                                    uint _e420 = params.stage;
+                                    if ((_e420 == 4u)) {
+                                        grid_entries.Store(_e417*4, asuint(i_2));
                                     }
                                 }
                             }
@@ -616,12 +621,12 @@ void main(uint3 gid : SV_DispatchThreadID, uint local_invocation_index : SV_Grou
             return;
         }
         default: {
-            const GridFrame _e436 = grid_frame(h_1);
-            if ((i_2 >= ((_e436.nx * _e436.ny) * _e436.nz))) {
+            const GridFrame _e434 = grid_frame(h_1);
+            if ((i_2 >= ((_e434.nx * _e434.ny) * _e434.nz))) {
                 return;
             }
-            uint _e446 = params.fill;
-            { uint dummy_19 = 0; grid_fill.InterlockedExchange((_e446 + i_2)*4, 0u, dummy_19); }
+            uint _e444 = params.fill;
+            { uint dummy_19 = 0; grid_fill.InterlockedExchange((_e444 + i_2)*4, 0u, dummy_19); }
             uint a_2; grid.InterlockedOr((starts + i_2)*4, 0, a_2);
             uint b_2; grid.InterlockedOr(((starts + i_2) + 1u)*4, 0, b_2);
             s = (a_2 + 1u);
@@ -631,48 +636,48 @@ void main(uint3 gid : SV_DispatchThreadID, uint local_invocation_index : SV_Grou
                 if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
                 loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
                 if (!loop_init_8) {
-                    uint _e500 = s;
-                    s = (_e500 + 1u);
+                    uint _e498 = s;
+                    s = (_e498 + 1u);
                 }
                 loop_init_8 = false;
-                uint _e463 = s;
-                if ((_e463 < b_2)) {
+                uint _e461 = s;
+                if ((_e461 < b_2)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e466 = s;
-                    uint v_1 = asuint(grid_entries.Load(_e466*4));
-                    uint _e469 = s;
-                    c_2 = _e469;
+                    uint _e464 = s;
+                    uint v_1 = asuint(grid_entries.Load(_e464*4));
+                    uint _e467 = s;
+                    c_2 = _e467;
                     uint2 loop_bound_9 = uint2(4294967295u, 4294967295u);
                     while(true) {
                         if (all(loop_bound_9 == uint2(0u, 0u))) { break; }
                         loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
-                        uint _e471 = c_2;
-                        if ((_e471 > a_2)) {
-                            uint _e476 = c_2;
-                            uint _e480 = asuint(grid_entries.Load((_e476 - 1u)*4));
-                            local_3 = (_e480 > v_1);
+                        uint _e469 = c_2;
+                        if ((_e469 > a_2)) {
+                            uint _e474 = c_2;
+                            uint _e478 = asuint(grid_entries.Load((_e474 - 1u)*4));
+                            local_3 = (_e478 > v_1);
                         } else {
                             local_3 = false;
                         }
-                        bool _e483 = local_3;
-                        if (_e483) {
+                        bool _e481 = local_3;
+                        if (_e481) {
                         } else {
                             break;
                         }
                         {
-                            uint _e485 = c_2;
-                            uint _e488 = c_2;
-                            uint _e492 = asuint(grid_entries.Load((_e488 - 1u)*4));
-                            grid_entries.Store(_e485*4, asuint(_e492));
-                            uint _e493 = c_2;
-                            c_2 = (_e493 - 1u);
+                            uint _e483 = c_2;
+                            uint _e486 = c_2;
+                            uint _e490 = asuint(grid_entries.Load((_e486 - 1u)*4));
+                            grid_entries.Store(_e483*4, asuint(_e490));
+                            uint _e491 = c_2;
+                            c_2 = (_e491 - 1u);
                         }
                     }
-                    uint _e497 = c_2;
-                    grid_entries.Store(_e497*4, asuint(v_1));
+                    uint _e495 = c_2;
+                    grid_entries.Store(_e495*4, asuint(v_1));
                 }
             }
             s_1 = a_2;
@@ -682,21 +687,21 @@ void main(uint3 gid : SV_DispatchThreadID, uint local_invocation_index : SV_Grou
                 if (all(loop_bound_10 == uint2(0u, 0u))) { break; }
                 loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
                 if (!loop_init_9) {
-                    uint _e516 = s_1;
-                    s_1 = (_e516 + 1u);
+                    uint _e514 = s_1;
+                    s_1 = (_e514 + 1u);
                 }
                 loop_init_9 = false;
-                uint _e503 = s_1;
-                if ((_e503 < b_2)) {
+                uint _e501 = s_1;
+                if ((_e501 < b_2)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e506 = s_1;
-                    uint _e510 = s_1;
-                    uint _e512 = asuint(grid_entries.Load(_e510*4));
-                    uint _e514 = asuint(grid_leaves.Load(_e512*4));
-                    grid_entries.Store(_e506*4, asuint(_e514));
+                    uint _e504 = s_1;
+                    uint _e508 = s_1;
+                    uint _e510 = asuint(grid_entries.Load(_e508*4));
+                    uint _e512 = asuint(grid_leaves.Load(_e510*4));
+                    grid_entries.Store(_e504*4, asuint(_e512));
                 }
             }
             return;

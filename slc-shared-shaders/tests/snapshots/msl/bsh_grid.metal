@@ -196,6 +196,15 @@ uint bsh_grid_axis(
     return metal::min(_e9, n - 1u);
 }
 
+float bsh_grid_radius(
+    BshNode node_3,
+    float w_2
+) {
+    float _e2 = bsh_grid_reach(node_3, w_2);
+    float _e3 = bsh_grid_pad(_e2);
+    return _e3;
+}
+
 metal::uint3 bsh_grid_first(
     GridFrame f_1,
     metal::float3 c_3,
@@ -261,12 +270,12 @@ uint grid_leaf(
     device type_5 const& grid_leaves,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint node_3 = grid_leaves[i_1];
-    uint _e7 = bsh_nodes[node_3].light;
+    uint node_4 = grid_leaves[i_1];
+    uint _e7 = bsh_nodes[node_4].light;
     if ((_e7 & BSH_TAIL) != 0u) {
         return BSH_NONE;
     }
-    return node_3;
+    return node_4;
 }
 uint naga_div(uint lhs, uint rhs) {
     return lhs / metal::select(rhs, 1u, rhs == 0u);
@@ -423,38 +432,37 @@ kernel void main_(
             uint _e118 = metal::atomic_fetch_add_explicit(&grid[h_1 + 13u], 1u, metal::memory_order_relaxed);
             BshNode leaf = bsh_nodes[_e110];
             float _e124 = params.reach;
-            float _e125 = bsh_grid_reach(leaf, _e124);
-            float _e126 = bsh_grid_pad(_e125);
+            float _e125 = bsh_grid_radius(leaf, _e124);
             uint2 loop_bound_3 = uint2(4294967295u);
             bool loop_init_3 = true;
             while(true) {
                 if (metal::all(loop_bound_3 == uint2(0u))) { break; }
                 loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
                 if (!loop_init_3) {
-                    uint _e173 = l;
-                    l = _e173 + 1u;
+                    uint _e172 = l;
+                    l = _e172 + 1u;
                 }
                 loop_init_3 = false;
-                uint _e129 = l;
-                uint _e132 = params.levels;
-                if (_e129 < _e132) {
+                uint _e128 = l;
+                uint _e131 = params.levels;
+                if (_e128 < _e131) {
                 } else {
                     break;
                 }
                 {
-                    uint _e135 = l;
-                    GridFrame _e137 = grid_levels[_e135];
-                    metal::uint3 _e139 = bsh_grid_last(_e137, leaf.center, _e126);
-                    uint _e141 = l;
-                    GridFrame _e143 = grid_levels[_e141];
-                    metal::uint3 _e145 = bsh_grid_first(_e143, leaf.center, _e126);
-                    metal::uint3 d = (_e139 - _e145) + metal::uint3(1u);
+                    uint _e134 = l;
+                    GridFrame _e136 = grid_levels[_e134];
+                    metal::uint3 _e138 = bsh_grid_last(_e136, leaf.center, _e125);
+                    uint _e140 = l;
+                    GridFrame _e142 = grid_levels[_e140];
+                    metal::uint3 _e144 = bsh_grid_first(_e142, leaf.center, _e125);
+                    metal::uint3 d = (_e138 - _e144) + metal::uint3(1u);
                     uint n_2 = (d.x * d.y) * d.z;
-                    uint _e158 = l;
-                    uint at = (h_1 + 16u) + (2u * _e158);
-                    uint _e163 = metal::atomic_fetch_add_explicit(&grid[at], n_2, metal::memory_order_relaxed);
-                    if ((_e163 + n_2) < _e163) {
-                        uint _e171 = metal::atomic_fetch_add_explicit(&grid[at + 1u], 1u, metal::memory_order_relaxed);
+                    uint _e157 = l;
+                    uint at = (h_1 + 16u) + (2u * _e157);
+                    uint _e162 = metal::atomic_fetch_add_explicit(&grid[at], n_2, metal::memory_order_relaxed);
+                    if ((_e162 + n_2) < _e162) {
+                        uint _e170 = metal::atomic_fetch_add_explicit(&grid[at + 1u], 1u, metal::memory_order_relaxed);
                     }
                 }
             }
@@ -465,176 +473,175 @@ kernel void main_(
                 return;
             }
             uint leaves_1 = metal::atomic_load_explicit(&grid[h_1 + 13u], metal::memory_order_relaxed);
-            uint _e184 = params.levels;
-            chosen = _e184;
+            uint _e183 = params.levels;
+            chosen = _e183;
             uint2 loop_bound_4 = uint2(4294967295u);
             bool loop_init_4 = true;
             while(true) {
                 if (metal::all(loop_bound_4 == uint2(0u))) { break; }
                 loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
                 if (!loop_init_4) {
-                    uint _e247 = l_1;
-                    l_1 = _e247 + 1u;
+                    uint _e246 = l_1;
+                    l_1 = _e246 + 1u;
                 }
                 loop_init_4 = false;
-                uint _e188 = l_1;
-                uint _e191 = params.levels;
-                if (_e188 < _e191) {
+                uint _e187 = l_1;
+                uint _e190 = params.levels;
+                if (_e187 < _e190) {
                 } else {
                     break;
                 }
                 {
-                    uint _e194 = l_1;
-                    GridFrame f_4 = grid_levels[_e194];
+                    uint _e193 = l_1;
+                    GridFrame f_4 = grid_levels[_e193];
                     uint cells_2 = (f_4.nx * f_4.ny) * f_4.nz;
-                    uint _e202 = bsh_grid_budget(leaves_1, cells_2);
-                    uint _e205 = params.capacity;
-                    uint budget = metal::min(_e202, _e205);
-                    uint _e210 = l_1;
-                    uint at_1 = (h_1 + 16u) + (2u * _e210);
-                    uint _e213 = chosen;
-                    uint _e216 = params.levels;
-                    if (_e213 == _e216) {
-                        uint _e224 = metal::atomic_load_explicit(&grid[at_1 + 1u], metal::memory_order_relaxed);
-                        local = _e224 == 0u;
+                    uint _e201 = bsh_grid_budget(leaves_1, cells_2);
+                    uint _e204 = params.capacity;
+                    uint budget = metal::min(_e201, _e204);
+                    uint _e209 = l_1;
+                    uint at_1 = (h_1 + 16u) + (2u * _e209);
+                    uint _e212 = chosen;
+                    uint _e215 = params.levels;
+                    if (_e212 == _e215) {
+                        uint _e223 = metal::atomic_load_explicit(&grid[at_1 + 1u], metal::memory_order_relaxed);
+                        local = _e223 == 0u;
                     } else {
                         local = false;
                     }
-                    bool _e228 = local;
-                    if (_e228) {
-                        uint _e233 = metal::atomic_load_explicit(&grid[at_1], metal::memory_order_relaxed);
-                        local_1 = _e233 <= budget;
+                    bool _e227 = local;
+                    if (_e227) {
+                        uint _e232 = metal::atomic_load_explicit(&grid[at_1], metal::memory_order_relaxed);
+                        local_1 = _e232 <= budget;
                     } else {
                         local_1 = false;
                     }
-                    bool _e236 = local_1;
-                    if (_e236) {
-                        uint _e237 = l_1;
-                        chosen = _e237;
+                    bool _e235 = local_1;
+                    if (_e235) {
+                        uint _e236 = l_1;
+                        chosen = _e236;
                     }
                     metal::atomic_store_explicit(&grid[at_1], 0u, metal::memory_order_relaxed);
                     metal::atomic_store_explicit(&grid[at_1 + 1u], 0u, metal::memory_order_relaxed);
                 }
             }
             metal::atomic_store_explicit(&grid[h_1 + 13u], 0u, metal::memory_order_relaxed);
-            uint _e255 = chosen;
-            uint _e258 = params.levels;
-            if (_e255 < _e258) {
-                uint _e261 = chosen;
-                GridFrame _e263 = grid_levels[_e261];
-                f = _e263;
+            uint _e254 = chosen;
+            uint _e257 = params.levels;
+            if (_e254 < _e257) {
+                uint _e260 = chosen;
+                GridFrame _e262 = grid_levels[_e260];
+                f = _e262;
             }
-            float _e268 = f.lo[0];
-            metal::atomic_store_explicit(&grid[h_1], as_type<uint>(_e268), metal::memory_order_relaxed);
-            float _e276 = f.lo[1];
-            metal::atomic_store_explicit(&grid[h_1 + 1u], as_type<uint>(_e276), metal::memory_order_relaxed);
-            float _e284 = f.lo[2];
-            metal::atomic_store_explicit(&grid[h_1 + 2u], as_type<uint>(_e284), metal::memory_order_relaxed);
-            uint _e291 = f.nx;
-            metal::atomic_store_explicit(&grid[h_1 + 3u], _e291, metal::memory_order_relaxed);
-            float _e298 = f.hi[0];
-            metal::atomic_store_explicit(&grid[h_1 + 4u], as_type<uint>(_e298), metal::memory_order_relaxed);
-            float _e306 = f.hi[1];
-            metal::atomic_store_explicit(&grid[h_1 + 5u], as_type<uint>(_e306), metal::memory_order_relaxed);
-            float _e314 = f.hi[2];
-            metal::atomic_store_explicit(&grid[h_1 + 6u], as_type<uint>(_e314), metal::memory_order_relaxed);
-            uint _e321 = f.ny;
-            metal::atomic_store_explicit(&grid[h_1 + 7u], _e321, metal::memory_order_relaxed);
-            float _e328 = f.inv[0];
-            metal::atomic_store_explicit(&grid[h_1 + 8u], as_type<uint>(_e328), metal::memory_order_relaxed);
-            float _e336 = f.inv[1];
-            metal::atomic_store_explicit(&grid[h_1 + 9u], as_type<uint>(_e336), metal::memory_order_relaxed);
-            float _e344 = f.inv[2];
-            metal::atomic_store_explicit(&grid[h_1 + 10u], as_type<uint>(_e344), metal::memory_order_relaxed);
-            uint _e351 = f.nz;
-            metal::atomic_store_explicit(&grid[h_1 + 11u], _e351, metal::memory_order_relaxed);
-            float _e358 = params.reach;
-            metal::atomic_store_explicit(&grid[h_1 + 12u], as_type<uint>(_e358), metal::memory_order_relaxed);
+            float _e267 = f.lo[0];
+            metal::atomic_store_explicit(&grid[h_1], as_type<uint>(_e267), metal::memory_order_relaxed);
+            float _e275 = f.lo[1];
+            metal::atomic_store_explicit(&grid[h_1 + 1u], as_type<uint>(_e275), metal::memory_order_relaxed);
+            float _e283 = f.lo[2];
+            metal::atomic_store_explicit(&grid[h_1 + 2u], as_type<uint>(_e283), metal::memory_order_relaxed);
+            uint _e290 = f.nx;
+            metal::atomic_store_explicit(&grid[h_1 + 3u], _e290, metal::memory_order_relaxed);
+            float _e297 = f.hi[0];
+            metal::atomic_store_explicit(&grid[h_1 + 4u], as_type<uint>(_e297), metal::memory_order_relaxed);
+            float _e305 = f.hi[1];
+            metal::atomic_store_explicit(&grid[h_1 + 5u], as_type<uint>(_e305), metal::memory_order_relaxed);
+            float _e313 = f.hi[2];
+            metal::atomic_store_explicit(&grid[h_1 + 6u], as_type<uint>(_e313), metal::memory_order_relaxed);
+            uint _e320 = f.ny;
+            metal::atomic_store_explicit(&grid[h_1 + 7u], _e320, metal::memory_order_relaxed);
+            float _e327 = f.inv[0];
+            metal::atomic_store_explicit(&grid[h_1 + 8u], as_type<uint>(_e327), metal::memory_order_relaxed);
+            float _e335 = f.inv[1];
+            metal::atomic_store_explicit(&grid[h_1 + 9u], as_type<uint>(_e335), metal::memory_order_relaxed);
+            float _e343 = f.inv[2];
+            metal::atomic_store_explicit(&grid[h_1 + 10u], as_type<uint>(_e343), metal::memory_order_relaxed);
+            uint _e350 = f.nz;
+            metal::atomic_store_explicit(&grid[h_1 + 11u], _e350, metal::memory_order_relaxed);
+            float _e357 = params.reach;
+            metal::atomic_store_explicit(&grid[h_1 + 12u], as_type<uint>(_e357), metal::memory_order_relaxed);
             return;
         }
         case 2u:
         case 4u: {
-            uint _e362 = params.count;
-            if (i_2 >= _e362) {
+            uint _e361 = params.count;
+            if (i_2 >= _e361) {
                 return;
             }
-            GridFrame _e364 = grid_frame(h_1, grid, _buffer_sizes);
-            uint _e365 = grid_leaf(i_2, bsh_nodes, grid_leaves, _buffer_sizes);
-            if (!((_e364.nx == 0u))) {
-                local_2 = _e365 == BSH_NONE;
+            GridFrame _e363 = grid_frame(h_1, grid, _buffer_sizes);
+            uint _e364 = grid_leaf(i_2, bsh_nodes, grid_leaves, _buffer_sizes);
+            if (!((_e363.nx == 0u))) {
+                local_2 = _e364 == BSH_NONE;
             } else {
                 local_2 = true;
             }
-            bool _e375 = local_2;
-            if (_e375) {
+            bool _e374 = local_2;
+            if (_e374) {
                 return;
             }
-            BshNode leaf_1 = bsh_nodes[_e365];
-            float _e381 = params.reach;
-            float _e382 = bsh_grid_reach(leaf_1, _e381);
-            float _e383 = bsh_grid_pad(_e382);
-            metal::uint3 _e385 = bsh_grid_first(_e364, leaf_1.center, _e383);
-            metal::uint3 _e387 = bsh_grid_last(_e364, leaf_1.center, _e383);
-            z = _e385.z;
+            BshNode leaf_1 = bsh_nodes[_e364];
+            float _e380 = params.reach;
+            float _e381 = bsh_grid_radius(leaf_1, _e380);
+            metal::uint3 _e383 = bsh_grid_first(_e363, leaf_1.center, _e381);
+            metal::uint3 _e385 = bsh_grid_last(_e363, leaf_1.center, _e381);
+            z = _e383.z;
             uint2 loop_bound_5 = uint2(4294967295u);
             bool loop_init_5 = true;
             while(true) {
                 if (metal::all(loop_bound_5 == uint2(0u))) { break; }
                 loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
                 if (!loop_init_5) {
-                    uint _e434 = z;
-                    z = _e434 + 1u;
+                    uint _e432 = z;
+                    z = _e432 + 1u;
                 }
                 loop_init_5 = false;
-                uint _e390 = z;
-                if (_e390 <= _e387.z) {
+                uint _e388 = z;
+                if (_e388 <= _e385.z) {
                 } else {
                     break;
                 }
                 {
-                    y = _e385.y;
+                    y = _e383.y;
                     uint2 loop_bound_6 = uint2(4294967295u);
                     bool loop_init_6 = true;
                     while(true) {
                         if (metal::all(loop_bound_6 == uint2(0u))) { break; }
                         loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
                         if (!loop_init_6) {
-                            uint _e431 = y;
-                            y = _e431 + 1u;
+                            uint _e429 = y;
+                            y = _e429 + 1u;
                         }
                         loop_init_6 = false;
-                        uint _e395 = y;
-                        if (_e395 <= _e387.y) {
+                        uint _e393 = y;
+                        if (_e393 <= _e385.y) {
                         } else {
                             break;
                         }
                         {
-                            x = _e385.x;
+                            x = _e383.x;
                             uint2 loop_bound_7 = uint2(4294967295u);
                             bool loop_init_7 = true;
                             while(true) {
                                 if (metal::all(loop_bound_7 == uint2(0u))) { break; }
                                 loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
                                 if (!loop_init_7) {
-                                    uint _e428 = x;
-                                    x = _e428 + 1u;
+                                    uint _e426 = x;
+                                    x = _e426 + 1u;
                                 }
                                 loop_init_7 = false;
-                                uint _e400 = x;
-                                if (_e400 <= _e387.x) {
+                                uint _e398 = x;
+                                if (_e398 <= _e385.x) {
                                 } else {
                                     break;
                                 }
                                 {
-                                    uint _e403 = z;
-                                    uint _e406 = y;
-                                    uint _e410 = x;
-                                    uint c_5 = (((_e403 * _e364.ny) + _e406) * _e364.nx) + _e410;
-                                    uint _e415 = params.fill;
-                                    uint _e419 = metal::atomic_fetch_add_explicit(&grid_fill[_e415 + c_5], 1u, metal::memory_order_relaxed);
-                                    uint _e422 = params.stage;
-                                    if (_e422 == 4u) {
-                                        grid_entries[_e419] = i_2;
+                                    uint _e401 = z;
+                                    uint _e404 = y;
+                                    uint _e408 = x;
+                                    uint c_5 = (((_e401 * _e363.ny) + _e404) * _e363.nx) + _e408;
+                                    uint _e413 = params.fill;
+                                    uint _e417 = metal::atomic_fetch_add_explicit(&grid_fill[_e413 + c_5], 1u, metal::memory_order_relaxed);
+                                    uint _e420 = params.stage;
+                                    if (_e420 == 4u) {
+                                        grid_entries[_e417] = i_2;
                                     }
                                 }
                             }
@@ -645,12 +652,12 @@ kernel void main_(
             return;
         }
         default: {
-            GridFrame _e436 = grid_frame(h_1, grid, _buffer_sizes);
-            if (i_2 >= ((_e436.nx * _e436.ny) * _e436.nz)) {
+            GridFrame _e434 = grid_frame(h_1, grid, _buffer_sizes);
+            if (i_2 >= ((_e434.nx * _e434.ny) * _e434.nz)) {
                 return;
             }
-            uint _e446 = params.fill;
-            metal::atomic_store_explicit(&grid_fill[_e446 + i_2], 0u, metal::memory_order_relaxed);
+            uint _e444 = params.fill;
+            metal::atomic_store_explicit(&grid_fill[_e444 + i_2], 0u, metal::memory_order_relaxed);
             uint a_2 = metal::atomic_load_explicit(&grid[starts + i_2], metal::memory_order_relaxed);
             uint b_2 = metal::atomic_load_explicit(&grid[(starts + i_2) + 1u], metal::memory_order_relaxed);
             s = a_2 + 1u;
@@ -660,48 +667,48 @@ kernel void main_(
                 if (metal::all(loop_bound_8 == uint2(0u))) { break; }
                 loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
                 if (!loop_init_8) {
-                    uint _e500 = s;
-                    s = _e500 + 1u;
+                    uint _e498 = s;
+                    s = _e498 + 1u;
                 }
                 loop_init_8 = false;
-                uint _e463 = s;
-                if (_e463 < b_2) {
+                uint _e461 = s;
+                if (_e461 < b_2) {
                 } else {
                     break;
                 }
                 {
-                    uint _e466 = s;
-                    uint v_1 = grid_entries[_e466];
-                    uint _e469 = s;
-                    c_2 = _e469;
+                    uint _e464 = s;
+                    uint v_1 = grid_entries[_e464];
+                    uint _e467 = s;
+                    c_2 = _e467;
                     uint2 loop_bound_9 = uint2(4294967295u);
                     while(true) {
                         if (metal::all(loop_bound_9 == uint2(0u))) { break; }
                         loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
-                        uint _e471 = c_2;
-                        if (_e471 > a_2) {
-                            uint _e476 = c_2;
-                            uint _e480 = grid_entries[_e476 - 1u];
-                            local_3 = _e480 > v_1;
+                        uint _e469 = c_2;
+                        if (_e469 > a_2) {
+                            uint _e474 = c_2;
+                            uint _e478 = grid_entries[_e474 - 1u];
+                            local_3 = _e478 > v_1;
                         } else {
                             local_3 = false;
                         }
-                        bool _e483 = local_3;
-                        if (_e483) {
+                        bool _e481 = local_3;
+                        if (_e481) {
                         } else {
                             break;
                         }
                         {
-                            uint _e485 = c_2;
-                            uint _e488 = c_2;
-                            uint _e492 = grid_entries[_e488 - 1u];
-                            grid_entries[_e485] = _e492;
-                            uint _e493 = c_2;
-                            c_2 = _e493 - 1u;
+                            uint _e483 = c_2;
+                            uint _e486 = c_2;
+                            uint _e490 = grid_entries[_e486 - 1u];
+                            grid_entries[_e483] = _e490;
+                            uint _e491 = c_2;
+                            c_2 = _e491 - 1u;
                         }
                     }
-                    uint _e497 = c_2;
-                    grid_entries[_e497] = v_1;
+                    uint _e495 = c_2;
+                    grid_entries[_e495] = v_1;
                 }
             }
             s_1 = a_2;
@@ -711,21 +718,21 @@ kernel void main_(
                 if (metal::all(loop_bound_10 == uint2(0u))) { break; }
                 loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
                 if (!loop_init_9) {
-                    uint _e516 = s_1;
-                    s_1 = _e516 + 1u;
+                    uint _e514 = s_1;
+                    s_1 = _e514 + 1u;
                 }
                 loop_init_9 = false;
-                uint _e503 = s_1;
-                if (_e503 < b_2) {
+                uint _e501 = s_1;
+                if (_e501 < b_2) {
                 } else {
                     break;
                 }
                 {
-                    uint _e506 = s_1;
-                    uint _e510 = s_1;
-                    uint _e512 = grid_entries[_e510];
-                    uint _e514 = grid_leaves[_e512];
-                    grid_entries[_e506] = _e514;
+                    uint _e504 = s_1;
+                    uint _e508 = s_1;
+                    uint _e510 = grid_entries[_e508];
+                    uint _e512 = grid_leaves[_e510];
+                    grid_entries[_e504] = _e512;
                 }
             }
             return;
