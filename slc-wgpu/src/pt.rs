@@ -222,11 +222,7 @@ impl GpuPt {
             ls.cones(),
             Some(pts.light_bvh()),
         )?;
-        let glossy = pts
-            .scene()
-            .materials
-            .iter()
-            .any(|m| slc_core::brdf::has_specular(m.metallic, m.f0, m.f90));
+        let glossy = pts.scene().materials.iter().any(Material::has_specular);
         let grid = GpuGrid::new(gpu, &set, pts.bsh(), pts.scene().bounds(), glossy)?;
         let base = Features {
             lights: set.types,
