@@ -570,7 +570,8 @@ pub fn templates() -> impl Iterator<Item = (&'static str, &'static str)> {
 /// other kernel) specialised to `f`: two `vec3f` (16 bytes each) per
 /// invocation and the box for the tile's box; with culling (always in
 /// `vpl_near`) the light list of `max_tile_lights` slots, the hits of a
-/// group's clusters and two counters; the counting variant's 7 counts
+/// group's clusters and two counters; `vpl_near`'s four quarter boxes
+/// (two `vec3f` each); the counting variant's 7 counts
 /// (checked against naga's layout of the generated kernels in the tests).
 pub fn vpl_workgroup_bytes(kernel: Kernel, f: &Features) -> u64 {
     let threads = f.tile_size as u64 * f.tile_size as u64;
@@ -578,10 +579,18 @@ pub fn vpl_workgroup_bytes(kernel: Kernel, f: &Features) -> u64 {
     let list = if culled { 4 * f.max_tile_lights as u64 + 4 + 4 * CLUSTER as u64 + 4 } else { 0 };
     let counts = if f.counters { 4 * 7 } else { 0 };
     match kernel {
-        Kernel::VplTiled | Kernel::VplNear => 32 * threads + 32 + list + counts,
+        Kernel::VplTiled => 32 * threads + 32 + list + counts,
+        // and the four quarters' boxes
+        Kernel::VplNear => 32 * threads + 32 + list + counts + 4 * 32,
         _ => 0,
     }
 }
+
+/// The bit from which `vpl_near`'s list entries hold the quarters a light's
+/// sphere meets (its light slot below): a storage binding of at most 4 GiB
+/// holds fewer than 2^27 [`layout::GpuLight`]s, so every slot fits below.
+pub const QUARTER_SHIFT: u32 = 28;
+const _: () = assert!((std::mem::size_of::<layout::GpuLight>() as u64) << QUARTER_SHIFT > 1 << 32);
 
 /// Workgroup memory in bytes of `direct_light` specialised to `f`: with
 /// the tile walk, its box reduction (two `vec3f` per invocation and the
@@ -792,6 +801,7 @@ pub fn generate_module(kernel: Kernel, features: &Features) -> Result<Generated,
         tile => features.tile_size,
         period => features.interleave,
         max_tile_lights => features.max_tile_lights,
+        quarter_shift => QUARTER_SHIFT,
         method => method,
         heuristic => heuristic,
         selection => selection,

@@ -4,7 +4,7 @@
 
 use super::VplContext;
 use super::shade::{self, Cull, Glossy, LightList};
-use super::tiling::{NO_RECEIVER, PartTiles, Tiling};
+use super::tiling::{NO_RECEIVER, PartTiles, Tile, Tiling};
 use glam::Vec3;
 use rayon::prelude::*;
 use slc_core::cluster::{CLUSTER, ClusterGrid, map_x, map_y};
@@ -314,7 +314,7 @@ fn shade_part(
     spec: &mut [Vec3],
     lists: &mut CullLists,
 ) -> WorkCounts {
-    let CullLists { fine, hits, shaded } = lists;
+    let CullLists { fine, quarter, hits, shaded } = lists;
     let mut work = WorkCounts::default();
     for tile in &part.tiles {
         let lights = if cull_lists {
@@ -323,18 +323,47 @@ fn shade_part(
         } else {
             all
         };
-        let r = tile.receivers.clone();
-        shaded.clear();
-        shade::shade_all(lights, &part.points[r.clone()], min_d2, near_r2, cull, shaded);
-        out[r.clone()].copy_from_slice(shaded);
-        for (k, g) in &part.glossy[tile.glossy.clone()] {
-            spec[*k] = shade::shade_specular(lights, g, min_d2, near_r2, cull);
+        if tile.quarters.is_empty() {
+            work = work + shade_tile(part, tile, lights, cull, min_d2, near_r2, out, spec, shaded);
+            continue;
         }
-        work.tested += (lights.len_unpadded() * r.len()) as u64;
-        work.kept += shaded.iter().map(|s| s.1 as u64).sum::<u64>();
-        work.pixels += r.len() as u64;
+        // The near field's quarters: each shades the tile's lights whose
+        // sphere meets its own box.
+        for q in &part.quarters[tile.quarters.clone()] {
+            work = work + lights.cull_into(q.lo, q.hi, hits, quarter);
+            work = work + shade_tile(part, q, quarter, cull, min_d2, near_r2, out, spec, shaded);
+        }
     }
     work
+}
+
+/// Shades the receivers of `tile` (of `part`) with `lights` into `out` and
+/// `spec` (as [`shade_part`]); returns the loops' work.
+#[allow(clippy::too_many_arguments)]
+fn shade_tile(
+    part: &PartTiles,
+    tile: &Tile,
+    lights: &LightList,
+    cull: Cull,
+    min_d2: f32,
+    near_r2: f32,
+    out: &mut [(Vec3, u32)],
+    spec: &mut [Vec3],
+    shaded: &mut Vec<(Vec3, u32)>,
+) -> WorkCounts {
+    let r = tile.receivers.clone();
+    shaded.clear();
+    shade::shade_all(lights, &part.points[r.clone()], min_d2, near_r2, cull, shaded);
+    out[r.clone()].copy_from_slice(shaded);
+    for (k, g) in &part.glossy[tile.glossy.clone()] {
+        spec[*k] = shade::shade_specular(lights, g, min_d2, near_r2, cull);
+    }
+    WorkCounts {
+        tested: (lights.len_unpadded() * r.len()) as u64,
+        kept: shaded.iter().map(|s| s.1 as u64).sum::<u64>(),
+        pixels: r.len() as u64,
+        ..WorkCounts::default()
+    }
 }
 
 /// Builds `all` (emptied first) as a box hierarchy over a `side × side`
@@ -366,10 +395,12 @@ pub(super) struct Scratch {
     lists: CullLists,
 }
 
-/// [`shade_part`]'s culled list, hit indices and loop results, reused.
+/// [`shade_part`]'s culled lists (a tile's, a quarter's), hit indices
+/// and loop results, reused.
 #[derive(Default)]
 struct CullLists {
     fine: LightList,
+    quarter: LightList,
     hits: Vec<u32>,
     shaded: Vec<(Vec3, u32)>,
 }

@@ -203,6 +203,26 @@ impl LightList {
         counts
     }
 
+    /// Replaces `out` with the lights of this flat list (a tile's, culled
+    /// by [`LightList::cull_tree_into`]) whose culling sphere overlaps the
+    /// box `[lo, hi]`, in the list's order; returns the sphere tests (one
+    /// a light). `hits` is scratch memory.
+    pub fn cull_into(
+        &self,
+        lo: Vec3,
+        hi: Vec3,
+        hits: &mut Vec<u32>,
+        out: &mut LightList,
+    ) -> WorkCounts {
+        let n = self.len_unpadded();
+        if hits.len() <= n {
+            hits.resize(n + 1, 0);
+        }
+        let k = SimdPath::best().run(FlatCullOp { list: self, lo, hi, hits: &mut *hits });
+        self.gather_into(&hits[..k], out);
+        WorkCounts { sphere_tests: n as u64, ..WorkCounts::default() }
+    }
+
     /// Appends one light; its culling sphere has radius
     /// [`slc_core::range::cull_radius`]`(r²)`.
     pub fn push(&mut self, p: Vec3, n: Vec3, flux: Vec3, rt2: f32, r2: f32) {
@@ -338,6 +358,24 @@ impl pulp::WithSimd for TreeCullOp<'_> {
             }
         }
         (k, counts)
+    }
+}
+
+/// [`LightList::cull_into`]'s [`cull_range`] over a flat list's real
+/// lights as a pulp operation.
+struct FlatCullOp<'a> {
+    list: &'a LightList,
+    lo: Vec3,
+    hi: Vec3,
+    hits: &'a mut Vec<u32>,
+}
+
+impl pulp::WithSimd for FlatCullOp<'_> {
+    type Output = usize;
+
+    #[inline(always)]
+    fn with_simd<S: pulp::Simd>(self, _: S) -> usize {
+        cull_range(self.list, 0..self.list.len_unpadded(), self.lo, self.hi, self.hits, 0)
     }
 }
 

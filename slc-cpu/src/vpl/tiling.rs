@@ -23,13 +23,16 @@ use std::sync::atomic::{AtomicU32, Ordering};
 /// Marks a pixel without a receiver in [`Tiling::receiver`].
 pub(crate) const NO_RECEIVER: u32 = u32::MAX;
 
-/// A tile: its box, receivers and glossy receivers (ranges of its part).
+/// A tile: its box, receivers and glossy receivers (ranges of its part),
+/// and, in the near field's tiling, its quarters (a range of
+/// [`PartTiles::quarters`]; empty in the far field's).
 #[derive(Clone, Debug)]
 pub(crate) struct Tile {
     pub lo: Vec3,
     pub hi: Vec3,
     pub receivers: Range<usize>,
     pub glossy: Range<usize>,
+    pub quarters: Range<usize>,
 }
 
 /// One part's tiles and receivers (indices local to the part).
@@ -42,6 +45,10 @@ pub(crate) struct PartTiles {
     pub points: Vec<(Vec3, Vec3)>,
     /// The receivers with a specular lobe: receiver index and lobe.
     pub glossy: Vec<(usize, Glossy)>,
+    /// The near field's quarter tiles ([`Tiling::regions`]): each a
+    /// [`Tile`] of its own receivers (those of its tile, in quarter order),
+    /// its own `quarters` empty.
+    pub quarters: Vec<Tile>,
 }
 
 /// See the module documentation.
@@ -86,7 +93,10 @@ impl Tiling {
     /// The near field's tiling: one part per `region²` pixels of the image
     /// (`region` a multiple of `tile`, so the tiles are the image's, from
     /// the origin: the GPU's workgroups at the same tile size), cut into
-    /// tiles of `tile²` pixels.
+    /// tiles of `tile²` pixels, each cut into four quarters of `(tile/2)²`
+    /// pixels (those that see a surface), the receivers numbered quarter by
+    /// quarter: a tile culls the near field's lights to its box, each
+    /// quarter that list to its own (the GPU's `vpl_near` masks).
     #[cfg(test)]
     pub fn regions(gb: &GBuffer, region: usize, tile: usize) -> Tiling {
         let mut t = Tiling::default();
@@ -101,14 +111,31 @@ impl Tiling {
         self.fill_parts(gb, across * h.div_ceil(region), |k, t| {
             let (x0, y0) = ((k % across) * region, (k / across) * region);
             let (x1, y1) = ((x0 + region).min(w), (y0 + region).min(h));
+            let half = tile.div_ceil(2);
             for ty in (y0..y1).step_by(tile) {
                 for tx in (x0..x1).step_by(tile) {
-                    t.push_tile(
-                        gb,
-                        (ty..(ty + tile).min(y1)).map(|y| y * w),
-                        tx..(tx + tile).min(x1),
-                        1,
-                    );
+                    let (r0, s0, q0) = (t.pixel.len(), t.glossy.len(), t.quarters.len());
+                    for (qx, qy) in [(0, 0), (half, 0), (0, half), (half, half)] {
+                        let (qx0, qy0) = ((tx + qx).min(x1), (ty + qy).min(y1));
+                        let rows = (qy0..(qy0 + half).min(ty + tile).min(y1)).map(|y| y * w);
+                        if let Some(q) =
+                            t.push_pixels(gb, rows, qx0..(qx0 + half).min(tx + tile).min(x1), 1)
+                        {
+                            t.quarters.push(q);
+                        }
+                    }
+                    if let Some(&Tile { lo, hi, .. }) = t.quarters.get(q0) {
+                        let (lo, hi) = t.quarters[q0..]
+                            .iter()
+                            .fold((lo, hi), |(lo, hi), q| (lo.min(q.lo), hi.max(q.hi)));
+                        t.tiles.push(Tile {
+                            lo,
+                            hi,
+                            receivers: r0..t.pixel.len(),
+                            glossy: s0..t.glossy.len(),
+                            quarters: q0..t.quarters.len(),
+                        });
+                    }
                 }
             }
         });
@@ -196,6 +223,7 @@ impl PartTiles {
         self.pixel.clear();
         self.points.clear();
         self.glossy.clear();
+        self.quarters.clear();
     }
 
     /// Appends a tile of the pixels `row + i·step` (each `row` start of
@@ -207,6 +235,21 @@ impl PartTiles {
         cols: Range<usize>,
         step: usize,
     ) {
+        if let Some(t) = self.push_pixels(gb, rows, cols, step) {
+            self.tiles.push(t);
+        }
+    }
+
+    /// Appends the receivers of [`PartTiles::push_tile`]'s pixels and
+    /// returns their tile (without quarters), or `None` where none sees a
+    /// surface.
+    fn push_pixels(
+        &mut self,
+        gb: &GBuffer,
+        rows: impl Iterator<Item = usize>,
+        cols: Range<usize>,
+        step: usize,
+    ) -> Option<Tile> {
         let (r0, s0) = (self.pixel.len(), self.glossy.len());
         let (mut lo, mut hi) = (Vec3::INFINITY, Vec3::NEG_INFINITY);
         let glossy = !gb.specular.is_empty();
@@ -224,15 +267,13 @@ impl PartTiles {
                 self.points.push((x, gb.normal[i]));
             }
         }
-        if self.pixel.len() == r0 {
-            return;
-        }
-        self.tiles.push(Tile {
+        (self.pixel.len() > r0).then(|| Tile {
             lo,
             hi,
             receivers: r0..self.pixel.len(),
             glossy: s0..self.glossy.len(),
-        });
+            quarters: 0..0,
+        })
     }
 }
 
@@ -243,17 +284,60 @@ mod tests {
     use slc_scene::scene::Scene;
 
     /// Every pixel that sees a surface is exactly one receiver, each tile's
-    /// box holds its receivers, and the ranges cover in order.
+    /// box holds its receivers, and the ranges cover in order; the near
+    /// field's tiles are cut into quarters that cover their receivers and
+    /// glossy receivers in order, each quarter's box the box of its pixels,
+    /// which lie in one `⌈tile/2⌉²` square of the tile (the GPU's
+    /// `vpl_near` quarters), and the tile's box the quarters' union.
     #[test]
     fn tilings_cover_every_surface_pixel_once_with_boxes_that_hold_them() {
         let ctx = VplContext::new(&Scene::cornell_box_glossy(), 37, 29, 64, None).unwrap();
         let gb = ctx.gbuffer();
-        for t in [
-            Tiling::interleaved(gb, 8, 4),
-            Tiling::interleaved(gb, 8, 3),
-            Tiling::regions(gb, 32, 8),
-            Tiling::regions(gb, 9, 3),
+        let w = gb.width as usize;
+        for (t, quarters) in [
+            (Tiling::interleaved(gb, 8, 4), None),
+            (Tiling::interleaved(gb, 8, 3), None),
+            (Tiling::regions(gb, 32, 8), Some(8usize)),
+            (Tiling::regions(gb, 9, 3), Some(3)),
         ] {
+            let mut cut = 0;
+            for p in &t.parts {
+                for tile in &p.tiles {
+                    let q = &p.quarters[tile.quarters.clone()];
+                    let Some(size) = quarters else {
+                        assert!(q.is_empty());
+                        continue;
+                    };
+                    cut += (q.len() > 1) as usize;
+                    assert_eq!(q.first().map(|q| q.receivers.start), Some(tile.receivers.start));
+                    assert_eq!(q.last().map(|q| q.receivers.end), Some(tile.receivers.end));
+                    assert_eq!(q.first().map(|q| q.glossy.start), Some(tile.glossy.start));
+                    assert_eq!(q.last().map(|q| q.glossy.end), Some(tile.glossy.end));
+                    let (mut lo, mut hi) = (Vec3::INFINITY, Vec3::NEG_INFINITY);
+                    for (a, b) in q.iter().zip(q.iter().skip(1)) {
+                        assert_eq!(
+                            (a.receivers.end, a.glossy.end),
+                            (b.receivers.start, b.glossy.start)
+                        );
+                    }
+                    for quarter in q {
+                        let (mut qlo, mut qhi) = (Vec3::INFINITY, Vec3::NEG_INFINITY);
+                        let half = size.div_ceil(2);
+                        let square = |i: u32| {
+                            ((i as usize % w) % size / half, (i as usize / w) % size / half)
+                        };
+                        let first = square(p.pixel[quarter.receivers.start]);
+                        for k in quarter.receivers.clone() {
+                            assert_eq!(square(p.pixel[k]), first, "one quarter's pixels");
+                            (qlo, qhi) = (qlo.min(p.points[k].0), qhi.max(p.points[k].0));
+                        }
+                        assert_eq!((qlo, qhi), (quarter.lo, quarter.hi));
+                        (lo, hi) = (lo.min(qlo), hi.max(qhi));
+                    }
+                    assert_eq!((lo, hi), (tile.lo, tile.hi));
+                }
+            }
+            assert!(quarters.is_none() || cut > 0, "some tile has several quarters");
             let valid = (0..gb.position.len()).filter(|&i| gb.valid(i)).count();
             assert_eq!(t.len(), valid);
             for (p, &o) in t.parts.iter().zip(&t.offsets) {

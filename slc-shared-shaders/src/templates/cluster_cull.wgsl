@@ -13,6 +13,9 @@
 //   fn cluster_slot(c: u32, k: u32) -> u32   slot of light k of the cluster
 //                                            whose box is boxes[c]
 //   fn cull_r2_of(slot: u32) -> f32          its culling sphere's radius^2
+//   fn list_entry(slot: u32, p: vec3f, radius: f32) -> u32
+//                                            the list entry of a light whose
+//                                            sphere (p, radius) meets the tile
 //   fn shade_list(count: u32)                shades tile_lights[..count]
 {% if counters %}
 // Counting variant: every test is counted (work_counters.wgsl).
@@ -72,8 +75,9 @@ fn cull_tile(li: u32, lo: vec3f, hi: vec3f, grid: vec4u, clusters_at: u32, group
 {% if counters %}
                 count_one(COUNT_SPHERE_TESTS);
 {% endif %}
-                if sphere_overlaps_aabb(l.p0, cull_radius(cull_r2_of(slot)), lo, hi) {
-                    tile_lights[atomicAdd(&list_count, 1u)] = slot;
+                let radius = cull_radius(cull_r2_of(slot));
+                if sphere_overlaps_aabb(l.p0, radius, lo, hi) {
+                    tile_lights[atomicAdd(&list_count, 1u)] = list_entry(slot, l.p0, radius);
                 }
             }
         }

@@ -18,7 +18,10 @@
 // near field's box hierarchy over the whole RSM in map order (near_slots;
 // vpl_clusters, vpl_groups) is culled against it (cluster_cull.wgsl), each
 // VPL's culling sphere of radius min(r, R_n) (vpl_ranges.wgsl): a tile
-// visits the clusters its box meets, not every VPL of the frame.
+// visits the clusters its box meets, not every VPL of the frame. Each listed
+// light carries the quarters of the tile (four (TILE/2)^2 squares) whose own
+// box its sphere meets, and an invocation shades only its quarter's lights
+// (the CPU's near tiling culls the tile's list to each quarter's box).
 {% if glossy %}
 // Glossy variant: the near field's specular correction S is added to
 // `specular` as its irradiance is to `irradiance` (vpl_tiled's glossy
@@ -52,14 +55,81 @@ fn cull_r2_of(slot: u32) -> f32 {
     return near_cull_r2_of(slot, params.near_r2);
 }
 
+/// Side of a quarter, and where a list entry keeps its quarters' bits
+/// (slc-shared-shaders' QUARTER_SHIFT: every light slot stays below it).
+const HALF: u32 = (TILE + 1u) / 2u;
+const QUARTER_SHIFT: u32 = {{ quarter_shift }}u;
+const SLOT_BITS: u32 = (1u << QUARTER_SHIFT) - 1u;
+var<workgroup> quarter_lo: array<vec3f, 4>;
+var<workgroup> quarter_hi: array<vec3f, 4>;
+/// This invocation's quarter's bit in a list entry.
+var<private> quarter_bit: u32;
+
+/// The box of each quarter's surfaces (quarter q: columns from (q % 2)
+/// HALF, rows from (q / 2) HALF; empty where none), into quarter_lo/hi, and
+/// this invocation's quarter_bit. Every invocation calls it, after
+/// load_receiver (it reuses workgroup_box.wgsl's arrays).
+fn quarter_boxes(li: u32, lid: vec3u) {
+    quarter_bit = 1u << (QUARTER_SHIFT + select(0u, 1u, lid.x >= HALF) + select(0u, 2u, lid.y >= HALF));
+    wg_lo[li] = select(vec3f(F32_MAX), pos, valid);
+    wg_hi[li] = select(vec3f(-F32_MAX), pos, valid);
+    workgroupBarrier();
+    if li < 4u {
+        var lo = vec3f(F32_MAX);
+        var hi = vec3f(-F32_MAX);
+        let x0 = (li % 2u) * HALF;
+        let y0 = (li / 2u) * HALF;
+        for (var y = y0; y < min(y0 + HALF, TILE); y++) {
+            for (var x = x0; x < min(x0 + HALF, TILE); x++) {
+                lo = min(lo, wg_lo[y * TILE + x]);
+                hi = max(hi, wg_hi[y * TILE + x]);
+            }
+        }
+        quarter_lo[li] = lo;
+        quarter_hi[li] = hi;
+    }
+    workgroupBarrier();
+}
+
+/// Quarter q's bit where it has surfaces and the sphere (p, radius) meets
+/// their box (a test, counted), else 0. Called four times, not looped:
+/// lavapipe counts every loop iteration against its limit.
+fn quarter_meets(q: u32, p: vec3f, radius: f32) -> u32 {
+    let lo = quarter_lo[q];
+    let hi = quarter_hi[q];
+    if lo.x > hi.x {
+        return 0u;
+    }
+{% if counters %}
+    count_one(COUNT_SPHERE_TESTS);
+{% endif %}
+    return select(0u, 1u << (QUARTER_SHIFT + q), sphere_overlaps_aabb(p, radius, lo, hi));
+}
+
+/// The list entry of a light whose sphere meets the tile: its slot and
+/// the quarters its sphere meets.
+fn list_entry(slot: u32, p: vec3f, radius: f32) -> u32 {
+    return slot | quarter_meets(0u, p, radius) | quarter_meets(1u, p, radius) | quarter_meets(2u, p, radius) | quarter_meets(3u, p, radius);
+}
+
 fn shade_list(count: u32) {
     if !valid {
         return;
     }
     // The flux the light buffer holds is P^2 times the VPL's own.
     let unscale = 1.0 / interleave_flux_scale(P);
+{% if counters %}
+    var tested = 0u;
+{% endif %}
     for (var m = 0u; m < count; m++) {
-        let slot = tile_lights[m];
+        let entry = tile_lights[m];
+        if (entry & quarter_bit) == 0u {
+            continue;
+        }
+{% if counters %}
+        tested += 1u;
+{% endif %}
+        let slot = entry & SLOT_BITS;
         let l = lights[slot];
         let v = pos - l.p0;
 {% if method == "slc" %}
@@ -77,7 +147,7 @@ fn shade_list(count: u32) {
         }
     }
 {% if counters %}
-    count_add(COUNT_TESTED, count);
+    count_add(COUNT_TESTED, tested);
 {% endif %}
 }
 
@@ -95,6 +165,7 @@ fn main(
     let pix = py * params.width + px;
     let tile_box = load_receiver(li, pix, inside);
     if !box_is_empty(tile_box) {
+        quarter_boxes(li, lid);
 {% if counters %}
         count_tests(li, COUNT_TILES, 1u);
 {% endif %}

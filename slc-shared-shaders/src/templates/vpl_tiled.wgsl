@@ -71,6 +71,11 @@ fn cull_r2_of(slot: u32) -> f32 {
     return r2[slot];
 }
 
+/// Every invocation shades every listed light: the entry is its slot.
+fn list_entry(slot: u32, p: vec3f, radius: f32) -> u32 {
+    return slot;
+}
+
 fn shade_list(count: u32) {
     if valid {
         for (var k = 0u; k < count; k++) {

@@ -124,6 +124,9 @@ const TILE: u32 = 8u;
 const THREADS: u32 = 64u;
 const BOX_THREADS: u32 = 64u;
 const MAX_TILE_LIGHTS: u32 = 1024u;
+const HALF: u32 = 4u;
+const QUARTER_SHIFT: u32 = 28u;
+const SLOT_BITS: u32 = 268435455u;
 
 var<workgroup> wg_lo: array<vec3<f32>, 64>;
 var<workgroup> wg_hi: array<vec3<f32>, 64>;
@@ -151,6 +154,9 @@ var<private> nrm: vec3<f32>;
 var<private> valid: bool;
 var<private> e: vec3<f32>;
 var<private> kept: u32;
+var<workgroup> quarter_lo: array<vec3<f32>, 4>;
+var<workgroup> quarter_hi: array<vec3<f32>, 4>;
+var<private> quarter_bit: u32;
 var<workgroup> tile_lights: array<u32, 1024>;
 var<workgroup> list_count: atomic<u32>;
 var<workgroup> cluster_hits: array<u32, 64>;
@@ -169,8 +175,8 @@ fn cull_radius(r2_: f32) -> f32 {
 }
 
 fn sphere_overlaps_aabb(c: vec3<f32>, r: f32, bmin: vec3<f32>, bmax: vec3<f32>) -> bool {
-    let q = clamp(c, bmin, bmax);
-    let v_1 = (q - c);
+    let q_1 = clamp(c, bmin, bmax);
+    let v_1 = (q_1 - c);
     return (dot(v_1, v_1) <= (r * r));
 }
 
@@ -317,8 +323,8 @@ fn box_is_empty(b: WorkgroupBox) -> bool {
 }
 
 fn surface_at(texel: vec2<i32>) -> vec4<f32> {
-    let p_2 = textureLoad(position_tex, texel, 0i);
-    return select(vec4(0f), vec4<f32>(p_2.xyz, 1f), (p_2.w > 0f));
+    let p_4 = textureLoad(position_tex, texel, 0i);
+    return select(vec4(0f), vec4<f32>(p_4.xyz, 1f), (p_4.w > 0f));
 }
 
 fn gbuffer_at(i: u32) -> GbTexel {
@@ -392,6 +398,88 @@ fn cull_r2_of(slot_2: u32) -> f32 {
     return _e4;
 }
 
+fn quarter_boxes(li_4: u32, lid_1: vec3<u32>) {
+    var lo_1: vec3<f32> = vec3(340282350000000000000000000000000000000f);
+    var hi_1: vec3<f32> = vec3(-340282350000000000000000000000000000000f);
+    var y: u32;
+    var x: u32;
+
+    quarter_bit = (1u << ((QUARTER_SHIFT + select(0u, 1u, (lid_1.x >= HALF))) + select(0u, 2u, (lid_1.y >= HALF))));
+    let _e25 = pos;
+    let _e27 = valid;
+    wg_lo[li_4] = select(vec3(340282350000000000000000000000000000000f), _e25, _e27);
+    let _e34 = pos;
+    let _e36 = valid;
+    wg_hi[li_4] = select(vec3(-340282350000000000000000000000000000000f), _e34, _e36);
+    workgroupBarrier();
+    if (li_4 < 4u) {
+        let x0_ = ((li_4 % 2u) * HALF);
+        let y0_ = ((li_4 / 2u) * HALF);
+        y = y0_;
+        loop {
+            let _e55 = y;
+            if (_e55 < min((y0_ + HALF), TILE)) {
+            } else {
+                break;
+            }
+            {
+                x = x0_;
+                loop {
+                    let _e62 = x;
+                    if (_e62 < min((x0_ + HALF), TILE)) {
+                    } else {
+                        break;
+                    }
+                    {
+                        let _e68 = lo_1;
+                        let _e70 = y;
+                        let _e73 = x;
+                        let _e76 = wg_lo[((_e70 * TILE) + _e73)];
+                        lo_1 = min(_e68, _e76);
+                        let _e78 = hi_1;
+                        let _e80 = y;
+                        let _e83 = x;
+                        let _e86 = wg_hi[((_e80 * TILE) + _e83)];
+                        hi_1 = max(_e78, _e86);
+                    }
+                    continuing {
+                        let _e89 = x;
+                        x = (_e89 + 1u);
+                    }
+                }
+            }
+            continuing {
+                let _e92 = y;
+                y = (_e92 + 1u);
+            }
+        }
+        let _e96 = lo_1;
+        quarter_lo[li_4] = _e96;
+        let _e99 = hi_1;
+        quarter_hi[li_4] = _e99;
+    }
+    workgroupBarrier();
+    return;
+}
+
+fn quarter_meets(q: u32, p_2: vec3<f32>, radius: f32) -> u32 {
+    let lo_3 = quarter_lo[q];
+    let hi_3 = quarter_hi[q];
+    if (lo_3.x > hi_3.x) {
+        return 0u;
+    }
+    let _e18 = sphere_overlaps_aabb(p_2, radius, lo_3, hi_3);
+    return select(0u, (1u << (QUARTER_SHIFT + q)), _e18);
+}
+
+fn list_entry(slot_3: u32, p_3: vec3<f32>, radius_1: f32) -> u32 {
+    let _e4 = quarter_meets(0u, p_3, radius_1);
+    let _e7 = quarter_meets(1u, p_3, radius_1);
+    let _e10 = quarter_meets(2u, p_3, radius_1);
+    let _e13 = quarter_meets(3u, p_3, radius_1);
+    return ((((slot_3 | _e4) | _e7) | _e10) | _e13);
+}
+
 fn shade_list(count: u32) {
     var m: u32 = 0u;
 
@@ -409,37 +497,42 @@ fn shade_list(count: u32) {
         }
         {
             let _e13 = m;
-            let slot_3 = tile_lights[_e13];
-            let l = lights[slot_3];
-            let _e20 = pos;
-            let v_3 = (_e20 - l.p0_);
-            let _e25 = r2_2[slot_3];
-            let _e29 = params.near_r2_;
-            let _e30 = vpl_near_fixed_share(_e25, dot(v_3, v_3), _e29);
-            if (_e30 > 0f) {
-                let _e35 = nrm;
-                let _e38 = params.min_d2_;
-                let _e39 = vpl_transfer(l.p1_, _e35, v_3, _e38);
-                let t_1 = ((_e39 * _e30) * unscale);
-                let _e43 = e;
-                e = (_e43 + (l.intensity * t_1));
-                let _e48 = kept;
-                kept = (_e48 + 1u);
+            let entry = tile_lights[_e13];
+            let _e17 = quarter_bit;
+            if ((entry & _e17) == 0u) {
+                continue;
+            }
+            let slot_4 = (entry & SLOT_BITS);
+            let l = lights[slot_4];
+            let _e27 = pos;
+            let v_3 = (_e27 - l.p0_);
+            let _e32 = r2_2[slot_4];
+            let _e36 = params.near_r2_;
+            let _e37 = vpl_near_fixed_share(_e32, dot(v_3, v_3), _e36);
+            if (_e37 > 0f) {
+                let _e42 = nrm;
+                let _e45 = params.min_d2_;
+                let _e46 = vpl_transfer(l.p1_, _e42, v_3, _e45);
+                let t_1 = ((_e46 * _e37) * unscale);
+                let _e50 = e;
+                e = (_e50 + (l.intensity * t_1));
+                let _e55 = kept;
+                kept = (_e55 + 1u);
             }
         }
         continuing {
-            let _e52 = m;
-            m = (_e52 + 1u);
+            let _e59 = m;
+            m = (_e59 + 1u);
         }
     }
     return;
 }
 
-fn cull_tile(li_4: u32, lo_1: vec3<f32>, hi_1: vec3<f32>, grid: vec4<u32>, clusters_at: u32, groups_at: u32) {
+fn cull_tile(li_5: u32, lo_2: vec3<f32>, hi_2: vec3<f32>, grid: vec4<u32>, clusters_at: u32, groups_at: u32) {
     var g_2: u32 = 0u;
     var h: u32;
 
-    if (li_4 == 0u) {
+    if (li_5 == 0u) {
         atomicStore((&list_count), 0u);
     }
     let _e14 = group_count(grid.x, grid.y, grid.z, grid.w);
@@ -452,7 +545,7 @@ fn cull_tile(li_4: u32, lo_1: vec3<f32>, hi_1: vec3<f32>, grid: vec4<u32>, clust
         {
             let _e20 = g_2;
             let gb = boxes[(groups_at + _e20)];
-            let _e26 = box_overlaps_box(gb.lo, gb.hi, lo_1, hi_1);
+            let _e26 = box_overlaps_box(gb.lo, gb.hi, lo_2, hi_2);
             if !(_e26) {
                 continue;
             }
@@ -461,16 +554,16 @@ fn cull_tile(li_4: u32, lo_1: vec3<f32>, hi_1: vec3<f32>, grid: vec4<u32>, clust
             let first = (clusters_at + _e33);
             let _e35 = g_2;
             let _e40 = group_clusters(_e35, grid.x, grid.y, grid.z, grid.w);
-            if (li_4 == 0u) {
+            if (li_5 == 0u) {
                 atomicStore((&hit_count), 0u);
             }
             workgroupBarrier();
-            if (li_4 < _e40) {
-                let cb = boxes[(first + li_4)];
-                let _e52 = box_overlaps_box(cb.lo, cb.hi, lo_1, hi_1);
+            if (li_5 < _e40) {
+                let cb = boxes[(first + li_5)];
+                let _e52 = box_overlaps_box(cb.lo, cb.hi, lo_2, hi_2);
                 if _e52 {
                     let _e56 = atomicAdd((&hit_count), 1u);
-                    cluster_hits[_e56] = (first + li_4);
+                    cluster_hits[_e56] = (first + li_5);
                 }
             }
             let _e60 = workgroupUniformLoad((&hit_count));
@@ -486,39 +579,40 @@ fn cull_tile(li_4: u32, lo_1: vec3<f32>, hi_1: vec3<f32>, grid: vec4<u32>, clust
                     if ((_e66 + CLUSTER) > MAX_TILE_LIGHTS) {
                         shade_list(_e66);
                         workgroupBarrier();
-                        if (li_4 == 0u) {
+                        if (li_5 == 0u) {
                             atomicStore((&list_count), 0u);
                         }
                         workgroupBarrier();
                     }
                     let _e76 = h;
                     let _e78 = cluster_hits[_e76];
-                    let _e79 = cluster_slot(_e78, li_4);
+                    let _e79 = cluster_slot(_e78, li_5);
                     let l_1 = lights[_e79];
                     if any((l_1.intensity != vec3(0f))) {
-                        let _e89 = cull_r2_of(_e79);
-                        let _e90 = cull_radius(_e89);
-                        let _e91 = sphere_overlaps_aabb(l_1.p0_, _e90, lo_1, hi_1);
+                        let _e88 = cull_r2_of(_e79);
+                        let _e89 = cull_radius(_e88);
+                        let _e91 = sphere_overlaps_aabb(l_1.p0_, _e89, lo_2, hi_2);
                         if _e91 {
                             let _e95 = atomicAdd((&list_count), 1u);
-                            tile_lights[_e95] = _e79;
+                            let _e98 = list_entry(_e79, l_1.p0_, _e89);
+                            tile_lights[_e95] = _e98;
                         }
                     }
                 }
                 continuing {
-                    let _e98 = h;
-                    h = (_e98 + 1u);
+                    let _e100 = h;
+                    h = (_e100 + 1u);
                 }
             }
             workgroupBarrier();
         }
         continuing {
-            let _e101 = g_2;
-            g_2 = (_e101 + 1u);
+            let _e103 = g_2;
+            g_2 = (_e103 + 1u);
         }
     }
-    let _e104 = workgroupUniformLoad((&list_count));
-    shade_list(_e104);
+    let _e106 = workgroupUniformLoad((&list_count));
+    shade_list(_e106);
     return;
 }
 
@@ -541,6 +635,7 @@ fn main(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id) lid:
     let _e30 = load_receiver(li, pix_1, inside_1);
     let _e31 = box_is_empty(_e30);
     if !(_e31) {
+        quarter_boxes(li, lid);
         let _e37 = params.near_grid;
         let _e40 = params.near_clusters_at;
         let _e43 = params.near_groups_at;

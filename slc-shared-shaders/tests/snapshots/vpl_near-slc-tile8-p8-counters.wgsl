@@ -124,6 +124,9 @@ const TILE: u32 = 8u;
 const THREADS: u32 = 64u;
 const BOX_THREADS: u32 = 64u;
 const MAX_TILE_LIGHTS: u32 = 1024u;
+const HALF: u32 = 4u;
+const QUARTER_SHIFT: u32 = 28u;
+const SLOT_BITS: u32 = 268435455u;
 
 var<workgroup> wg_lo: array<vec3<f32>, 64>;
 var<workgroup> wg_hi: array<vec3<f32>, 64>;
@@ -156,6 +159,9 @@ var<private> nrm: vec3<f32>;
 var<private> valid: bool;
 var<private> e: vec3<f32>;
 var<private> kept: u32;
+var<workgroup> quarter_lo: array<vec3<f32>, 4>;
+var<workgroup> quarter_hi: array<vec3<f32>, 4>;
+var<private> quarter_bit: u32;
 var<workgroup> tile_lights: array<u32, 1024>;
 var<workgroup> list_count: atomic<u32>;
 var<workgroup> cluster_hits: array<u32, 64>;
@@ -181,8 +187,8 @@ fn cull_radius(r2_1: f32) -> f32 {
 }
 
 fn sphere_overlaps_aabb(c: vec3<f32>, r: f32, bmin: vec3<f32>, bmax: vec3<f32>) -> bool {
-    let q = clamp(c, bmin, bmax);
-    let v_1 = (q - c);
+    let q_1 = clamp(c, bmin, bmax);
+    let v_1 = (q_1 - c);
     return (dot(v_1, v_1) <= (r * r));
 }
 
@@ -335,8 +341,8 @@ fn box_is_empty(b: WorkgroupBox) -> bool {
 }
 
 fn surface_at(texel: vec2<i32>) -> vec4<f32> {
-    let p_2 = textureLoad(position_tex, texel, 0i);
-    return select(vec4(0f), vec4<f32>(p_2.xyz, 1f), (p_2.w > 0f));
+    let p_4 = textureLoad(position_tex, texel, 0i);
+    return select(vec4(0f), vec4<f32>(p_4.xyz, 1f), (p_4.w > 0f));
 }
 
 fn gbuffer_at(i: u32) -> GbTexel {
@@ -474,7 +480,91 @@ fn cull_r2_of(slot_2: u32) -> f32 {
     return _e4;
 }
 
+fn quarter_boxes(li_8: u32, lid_1: vec3<u32>) {
+    var lo_1: vec3<f32> = vec3(340282350000000000000000000000000000000f);
+    var hi_1: vec3<f32> = vec3(-340282350000000000000000000000000000000f);
+    var y: u32;
+    var x: u32;
+
+    quarter_bit = (1u << ((QUARTER_SHIFT + select(0u, 1u, (lid_1.x >= HALF))) + select(0u, 2u, (lid_1.y >= HALF))));
+    let _e25 = pos;
+    let _e27 = valid;
+    wg_lo[li_8] = select(vec3(340282350000000000000000000000000000000f), _e25, _e27);
+    let _e34 = pos;
+    let _e36 = valid;
+    wg_hi[li_8] = select(vec3(-340282350000000000000000000000000000000f), _e34, _e36);
+    workgroupBarrier();
+    if (li_8 < 4u) {
+        let x0_ = ((li_8 % 2u) * HALF);
+        let y0_ = ((li_8 / 2u) * HALF);
+        y = y0_;
+        loop {
+            let _e55 = y;
+            if (_e55 < min((y0_ + HALF), TILE)) {
+            } else {
+                break;
+            }
+            {
+                x = x0_;
+                loop {
+                    let _e62 = x;
+                    if (_e62 < min((x0_ + HALF), TILE)) {
+                    } else {
+                        break;
+                    }
+                    {
+                        let _e68 = lo_1;
+                        let _e70 = y;
+                        let _e73 = x;
+                        let _e76 = wg_lo[((_e70 * TILE) + _e73)];
+                        lo_1 = min(_e68, _e76);
+                        let _e78 = hi_1;
+                        let _e80 = y;
+                        let _e83 = x;
+                        let _e86 = wg_hi[((_e80 * TILE) + _e83)];
+                        hi_1 = max(_e78, _e86);
+                    }
+                    continuing {
+                        let _e89 = x;
+                        x = (_e89 + 1u);
+                    }
+                }
+            }
+            continuing {
+                let _e92 = y;
+                y = (_e92 + 1u);
+            }
+        }
+        let _e96 = lo_1;
+        quarter_lo[li_8] = _e96;
+        let _e99 = hi_1;
+        quarter_hi[li_8] = _e99;
+    }
+    workgroupBarrier();
+    return;
+}
+
+fn quarter_meets(q: u32, p_2: vec3<f32>, radius: f32) -> u32 {
+    let lo_3 = quarter_lo[q];
+    let hi_3 = quarter_hi[q];
+    if (lo_3.x > hi_3.x) {
+        return 0u;
+    }
+    count_one(COUNT_SPHERE_TESTS);
+    let _e19 = sphere_overlaps_aabb(p_2, radius, lo_3, hi_3);
+    return select(0u, (1u << (QUARTER_SHIFT + q)), _e19);
+}
+
+fn list_entry(slot_3: u32, p_3: vec3<f32>, radius_1: f32) -> u32 {
+    let _e4 = quarter_meets(0u, p_3, radius_1);
+    let _e7 = quarter_meets(1u, p_3, radius_1);
+    let _e10 = quarter_meets(2u, p_3, radius_1);
+    let _e13 = quarter_meets(3u, p_3, radius_1);
+    return ((((slot_3 | _e4) | _e7) | _e10) | _e13);
+}
+
 fn shade_list(count: u32) {
+    var tested: u32 = 0u;
     var m: u32 = 0u;
 
     let _e2 = valid;
@@ -484,51 +574,59 @@ fn shade_list(count: u32) {
     let _e5 = interleave_flux_scale(P);
     let unscale = (1f / _e5);
     loop {
-        let _e10 = m;
-        if (_e10 < count) {
+        let _e12 = m;
+        if (_e12 < count) {
         } else {
             break;
         }
         {
-            let _e13 = m;
-            let slot_3 = tile_lights[_e13];
-            let l = lights[slot_3];
-            let _e20 = pos;
-            let v_3 = (_e20 - l.p0_);
-            let _e25 = rt2_2[slot_3];
-            let _e27 = vpl_near_range2_(_e25, P);
-            let _e28 = near_r2_of(slot_3);
-            let _e32 = params.near_r2_;
-            let _e33 = vpl_near_slc_share(_e27, _e28, dot(v_3, v_3), _e32);
-            if (_e33 > 0f) {
-                let _e38 = nrm;
-                let _e41 = params.min_d2_;
-                let _e42 = vpl_transfer(l.p1_, _e38, v_3, _e41);
-                let t_1 = ((_e42 * _e33) * unscale);
-                let _e46 = e;
-                e = (_e46 + (l.intensity * t_1));
-                let _e51 = kept;
-                kept = (_e51 + 1u);
+            let _e15 = m;
+            let entry = tile_lights[_e15];
+            let _e19 = quarter_bit;
+            if ((entry & _e19) == 0u) {
+                continue;
+            }
+            let _e23 = tested;
+            tested = (_e23 + 1u);
+            let slot_4 = (entry & SLOT_BITS);
+            let l = lights[slot_4];
+            let _e32 = pos;
+            let v_3 = (_e32 - l.p0_);
+            let _e37 = rt2_2[slot_4];
+            let _e39 = vpl_near_range2_(_e37, P);
+            let _e40 = near_r2_of(slot_4);
+            let _e44 = params.near_r2_;
+            let _e45 = vpl_near_slc_share(_e39, _e40, dot(v_3, v_3), _e44);
+            if (_e45 > 0f) {
+                let _e50 = nrm;
+                let _e53 = params.min_d2_;
+                let _e54 = vpl_transfer(l.p1_, _e50, v_3, _e53);
+                let t_1 = ((_e54 * _e45) * unscale);
+                let _e58 = e;
+                e = (_e58 + (l.intensity * t_1));
+                let _e63 = kept;
+                kept = (_e63 + 1u);
             }
         }
         continuing {
-            let _e55 = m;
-            m = (_e55 + 1u);
+            let _e67 = m;
+            m = (_e67 + 1u);
         }
     }
-    count_add(COUNT_TESTED, count);
+    let _e70 = tested;
+    count_add(COUNT_TESTED, _e70);
     return;
 }
 
-fn cull_tile(li_8: u32, lo_1: vec3<f32>, hi_1: vec3<f32>, grid: vec4<u32>, clusters_at: u32, groups_at: u32) {
+fn cull_tile(li_9: u32, lo_2: vec3<f32>, hi_2: vec3<f32>, grid: vec4<u32>, clusters_at: u32, groups_at: u32) {
     var g_2: u32 = 0u;
     var h: u32;
 
-    if (li_8 == 0u) {
+    if (li_9 == 0u) {
         atomicStore((&list_count), 0u);
     }
     let _e14 = group_count(grid.x, grid.y, grid.z, grid.w);
-    count_tests(li_8, COUNT_GROUP_TESTS, _e14);
+    count_tests(li_9, COUNT_GROUP_TESTS, _e14);
     loop {
         let _e18 = g_2;
         if (_e18 < _e14) {
@@ -538,7 +636,7 @@ fn cull_tile(li_8: u32, lo_1: vec3<f32>, hi_1: vec3<f32>, grid: vec4<u32>, clust
         {
             let _e21 = g_2;
             let gb = boxes[(groups_at + _e21)];
-            let _e27 = box_overlaps_box(gb.lo, gb.hi, lo_1, hi_1);
+            let _e27 = box_overlaps_box(gb.lo, gb.hi, lo_2, hi_2);
             if !(_e27) {
                 continue;
             }
@@ -547,17 +645,17 @@ fn cull_tile(li_8: u32, lo_1: vec3<f32>, hi_1: vec3<f32>, grid: vec4<u32>, clust
             let first = (clusters_at + _e34);
             let _e36 = g_2;
             let _e41 = group_clusters(_e36, grid.x, grid.y, grid.z, grid.w);
-            count_tests(li_8, COUNT_CLUSTER_TESTS, _e41);
-            if (li_8 == 0u) {
+            count_tests(li_9, COUNT_CLUSTER_TESTS, _e41);
+            if (li_9 == 0u) {
                 atomicStore((&hit_count), 0u);
             }
             workgroupBarrier();
-            if (li_8 < _e41) {
-                let cb = boxes[(first + li_8)];
-                let _e54 = box_overlaps_box(cb.lo, cb.hi, lo_1, hi_1);
+            if (li_9 < _e41) {
+                let cb = boxes[(first + li_9)];
+                let _e54 = box_overlaps_box(cb.lo, cb.hi, lo_2, hi_2);
                 if _e54 {
                     let _e58 = atomicAdd((&hit_count), 1u);
-                    cluster_hits[_e58] = (first + li_8);
+                    cluster_hits[_e58] = (first + li_9);
                 }
             }
             let _e62 = workgroupUniformLoad((&hit_count));
@@ -573,40 +671,41 @@ fn cull_tile(li_8: u32, lo_1: vec3<f32>, hi_1: vec3<f32>, grid: vec4<u32>, clust
                     if ((_e68 + CLUSTER) > MAX_TILE_LIGHTS) {
                         shade_list(_e68);
                         workgroupBarrier();
-                        if (li_8 == 0u) {
+                        if (li_9 == 0u) {
                             atomicStore((&list_count), 0u);
                         }
                         workgroupBarrier();
                     }
                     let _e78 = h;
                     let _e80 = cluster_hits[_e78];
-                    let _e81 = cluster_slot(_e80, li_8);
+                    let _e81 = cluster_slot(_e80, li_9);
                     let l_1 = lights[_e81];
                     if any((l_1.intensity != vec3(0f))) {
                         count_one(COUNT_SPHERE_TESTS);
-                        let _e92 = cull_r2_of(_e81);
-                        let _e93 = cull_radius(_e92);
-                        let _e94 = sphere_overlaps_aabb(l_1.p0_, _e93, lo_1, hi_1);
+                        let _e91 = cull_r2_of(_e81);
+                        let _e92 = cull_radius(_e91);
+                        let _e94 = sphere_overlaps_aabb(l_1.p0_, _e92, lo_2, hi_2);
                         if _e94 {
                             let _e98 = atomicAdd((&list_count), 1u);
-                            tile_lights[_e98] = _e81;
+                            let _e101 = list_entry(_e81, l_1.p0_, _e92);
+                            tile_lights[_e98] = _e101;
                         }
                     }
                 }
                 continuing {
-                    let _e101 = h;
-                    h = (_e101 + 1u);
+                    let _e103 = h;
+                    h = (_e103 + 1u);
                 }
             }
             workgroupBarrier();
         }
         continuing {
-            let _e104 = g_2;
-            g_2 = (_e104 + 1u);
+            let _e106 = g_2;
+            g_2 = (_e106 + 1u);
         }
     }
-    let _e107 = workgroupUniformLoad((&list_count));
-    shade_list(_e107);
+    let _e109 = workgroupUniformLoad((&list_count));
+    shade_list(_e109);
     return;
 }
 
@@ -629,6 +728,7 @@ fn main(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id) lid:
     let _e30 = load_receiver(li, pix_1, inside_1);
     let _e31 = box_is_empty(_e30);
     if !(_e31) {
+        quarter_boxes(li, lid);
         count_tests(li, COUNT_TILES, 1u);
         let _e39 = params.near_grid;
         let _e42 = params.near_clusters_at;

@@ -324,8 +324,8 @@ fn box_is_empty(b: WorkgroupBox) -> bool {
 }
 
 fn surface_at(texel: vec2<i32>) -> vec4<f32> {
-    let p_2 = textureLoad(position_tex, texel, 0i);
-    return select(vec4(0f), vec4<f32>(p_2.xyz, 1f), (p_2.w > 0f));
+    let p_3 = textureLoad(position_tex, texel, 0i);
+    return select(vec4(0f), vec4<f32>(p_3.xyz, 1f), (p_3.w > 0f));
 }
 
 fn gbuffer_at(i: u32) -> GbTexel {
@@ -471,6 +471,10 @@ fn cull_r2_of(slot: u32) -> f32 {
     return _e3;
 }
 
+fn list_entry(slot_1: u32, p_2: vec3<f32>, radius: f32) -> u32 {
+    return slot_1;
+}
+
 fn shade_list(count: u32) {
     var k_1: u32 = 0u;
 
@@ -563,29 +567,30 @@ fn cull_tile(li_8: u32, lo_1: vec3<f32>, hi_1: vec3<f32>, grid: vec4<u32>, clust
                     let l_1 = lights[_e81];
                     if any((l_1.intensity != vec3(0f))) {
                         count_one(COUNT_SPHERE_TESTS);
-                        let _e92 = cull_r2_of(_e81);
-                        let _e93 = cull_radius(_e92);
-                        let _e94 = sphere_overlaps_aabb(l_1.p0_, _e93, lo_1, hi_1);
+                        let _e91 = cull_r2_of(_e81);
+                        let _e92 = cull_radius(_e91);
+                        let _e94 = sphere_overlaps_aabb(l_1.p0_, _e92, lo_1, hi_1);
                         if _e94 {
                             let _e98 = atomicAdd((&list_count), 1u);
-                            tile_lights[_e98] = _e81;
+                            let _e101 = list_entry(_e81, l_1.p0_, _e92);
+                            tile_lights[_e98] = _e101;
                         }
                     }
                 }
                 continuing {
-                    let _e101 = h;
-                    h = (_e101 + 1u);
+                    let _e103 = h;
+                    h = (_e103 + 1u);
                 }
             }
             workgroupBarrier();
         }
         continuing {
-            let _e104 = g_2;
-            g_2 = (_e104 + 1u);
+            let _e106 = g_2;
+            g_2 = (_e106 + 1u);
         }
     }
-    let _e107 = workgroupUniformLoad((&list_count));
-    shade_list(_e107);
+    let _e109 = workgroupUniformLoad((&list_count));
+    shade_list(_e109);
     return;
 }
 

@@ -321,8 +321,8 @@ fn box_is_empty(b: WorkgroupBox) -> bool {
 }
 
 fn surface_at(texel: vec2<i32>) -> vec4<f32> {
-    let p_2 = textureLoad(position_tex, texel, 0i);
-    return select(vec4(0f), vec4<f32>(p_2.xyz, 1f), (p_2.w > 0f));
+    let p_3 = textureLoad(position_tex, texel, 0i);
+    return select(vec4(0f), vec4<f32>(p_3.xyz, 1f), (p_3.w > 0f));
 }
 
 fn gbuffer_at(i: u32) -> GbTexel {
@@ -403,6 +403,10 @@ fn cluster_slot(c_1: u32, k: u32) -> u32 {
 fn cull_r2_of(slot: u32) -> f32 {
     let _e3 = r2_3[slot];
     return _e3;
+}
+
+fn list_entry(slot_1: u32, p_2: vec3<f32>, radius: f32) -> u32 {
+    return slot_1;
 }
 
 fn shade_list(count: u32) {
@@ -493,29 +497,30 @@ fn cull_tile(li_4: u32, lo_1: vec3<f32>, hi_1: vec3<f32>, grid: vec4<u32>, clust
                     let _e79 = cluster_slot(_e78, li_4);
                     let l_1 = lights[_e79];
                     if any((l_1.intensity != vec3(0f))) {
-                        let _e89 = cull_r2_of(_e79);
-                        let _e90 = cull_radius(_e89);
-                        let _e91 = sphere_overlaps_aabb(l_1.p0_, _e90, lo_1, hi_1);
+                        let _e88 = cull_r2_of(_e79);
+                        let _e89 = cull_radius(_e88);
+                        let _e91 = sphere_overlaps_aabb(l_1.p0_, _e89, lo_1, hi_1);
                         if _e91 {
                             let _e95 = atomicAdd((&list_count), 1u);
-                            tile_lights[_e95] = _e79;
+                            let _e98 = list_entry(_e79, l_1.p0_, _e89);
+                            tile_lights[_e95] = _e98;
                         }
                     }
                 }
                 continuing {
-                    let _e98 = h;
-                    h = (_e98 + 1u);
+                    let _e100 = h;
+                    h = (_e100 + 1u);
                 }
             }
             workgroupBarrier();
         }
         continuing {
-            let _e101 = g_2;
-            g_2 = (_e101 + 1u);
+            let _e103 = g_2;
+            g_2 = (_e103 + 1u);
         }
     }
-    let _e104 = workgroupUniformLoad((&list_count));
-    shade_list(_e104);
+    let _e106 = workgroupUniformLoad((&list_count));
+    shade_list(_e106);
     return;
 }
 

@@ -123,6 +123,9 @@ const uint TILE = 8u;
 const uint THREADS = 64u;
 const uint BOX_THREADS = 64u;
 const uint MAX_TILE_LIGHTS = 1024u;
+const uint HALF = 4u;
+const uint QUARTER_SHIFT = 28u;
+const uint SLOT_BITS = 268435455u;
 
 shared vec3 wg_lo[64];
 
@@ -158,6 +161,12 @@ vec3 e = vec3(0.0);
 
 uint kept = 0u;
 
+shared vec3 quarter_lo[4];
+
+shared vec3 quarter_hi[4];
+
+uint quarter_bit = 0u;
+
 shared uint tile_lights[1024];
 
 shared uint list_count;
@@ -180,8 +189,8 @@ float cull_radius(float r2_) {
 }
 
 bool sphere_overlaps_aabb(vec3 c, float r, vec3 bmin, vec3 bmax) {
-    vec3 q = clamp(c, bmin, bmax);
-    vec3 v_1 = (q - c);
+    vec3 q_1 = clamp(c, bmin, bmax);
+    vec3 v_1 = (q_1 - c);
     return (dot(v_1, v_1) <= (r * r));
 }
 
@@ -334,8 +343,8 @@ bool box_is_empty(WorkgroupBox b) {
 }
 
 vec4 surface_at(ivec2 texel) {
-    vec4 p_2 = texelFetch(_group_0_binding_2_cs, texel, 0);
-    return ((p_2.w > 0.0) ? vec4(p_2.xyz, 1.0) : vec4(0.0));
+    vec4 p_4 = texelFetch(_group_0_binding_2_cs, texel, 0);
+    return ((p_4.w > 0.0) ? vec4(p_4.xyz, 1.0) : vec4(0.0));
 }
 
 GbTexel gbuffer_at(uint i) {
@@ -407,6 +416,93 @@ float cull_r2_of(uint slot_2) {
     return _e4;
 }
 
+void quarter_boxes(uint li_4, uvec3 lid_1) {
+    vec3 lo_1 = vec3(3.4028235e38);
+    vec3 hi_1 = vec3(-3.4028235e38);
+    uint y = 0u;
+    uint x = 0u;
+    quarter_bit = (1u << ((QUARTER_SHIFT + ((lid_1.x >= HALF) ? 1u : 0u)) + ((lid_1.y >= HALF) ? 2u : 0u)));
+    vec3 _e25 = pos;
+    bool _e27 = valid;
+    wg_lo[li_4] = (_e27 ? _e25 : vec3(3.4028235e38));
+    vec3 _e34 = pos;
+    bool _e36 = valid;
+    wg_hi[li_4] = (_e36 ? _e34 : vec3(-3.4028235e38));
+    memoryBarrierShared();
+    barrier();
+    if ((li_4 < 4u)) {
+        uint x0_ = ((li_4 % 2u) * HALF);
+        uint y0_ = ((li_4 / 2u) * HALF);
+        y = y0_;
+        bool loop_init_1 = true;
+        while(true) {
+            if (!loop_init_1) {
+                uint _e92 = y;
+                y = (_e92 + 1u);
+            }
+            loop_init_1 = false;
+            uint _e55 = y;
+            if ((_e55 < min((y0_ + HALF), TILE))) {
+            } else {
+                break;
+            }
+            {
+                x = x0_;
+                bool loop_init_2 = true;
+                while(true) {
+                    if (!loop_init_2) {
+                        uint _e89 = x;
+                        x = (_e89 + 1u);
+                    }
+                    loop_init_2 = false;
+                    uint _e62 = x;
+                    if ((_e62 < min((x0_ + HALF), TILE))) {
+                    } else {
+                        break;
+                    }
+                    {
+                        vec3 _e68 = lo_1;
+                        uint _e70 = y;
+                        uint _e73 = x;
+                        vec3 _e76 = wg_lo[((_e70 * TILE) + _e73)];
+                        lo_1 = min(_e68, _e76);
+                        vec3 _e78 = hi_1;
+                        uint _e80 = y;
+                        uint _e83 = x;
+                        vec3 _e86 = wg_hi[((_e80 * TILE) + _e83)];
+                        hi_1 = max(_e78, _e86);
+                    }
+                }
+            }
+        }
+        vec3 _e96 = lo_1;
+        quarter_lo[li_4] = _e96;
+        vec3 _e99 = hi_1;
+        quarter_hi[li_4] = _e99;
+    }
+    memoryBarrierShared();
+    barrier();
+    return;
+}
+
+uint quarter_meets(uint q, vec3 p_2, float radius) {
+    vec3 lo_3 = quarter_lo[q];
+    vec3 hi_3 = quarter_hi[q];
+    if ((lo_3.x > hi_3.x)) {
+        return 0u;
+    }
+    bool _e18 = sphere_overlaps_aabb(p_2, radius, lo_3, hi_3);
+    return (_e18 ? (1u << (QUARTER_SHIFT + q)) : 0u);
+}
+
+uint list_entry(uint slot_3, vec3 p_3, float radius_1) {
+    uint _e4 = quarter_meets(0u, p_3, radius_1);
+    uint _e7 = quarter_meets(1u, p_3, radius_1);
+    uint _e10 = quarter_meets(2u, p_3, radius_1);
+    uint _e13 = quarter_meets(3u, p_3, radius_1);
+    return ((((slot_3 | _e4) | _e7) | _e10) | _e13);
+}
+
 void shade_list(uint count) {
     uint m = 0u;
     bool _e2 = valid;
@@ -415,13 +511,13 @@ void shade_list(uint count) {
     }
     float _e5 = interleave_flux_scale(P);
     float unscale = (1.0 / _e5);
-    bool loop_init_1 = true;
+    bool loop_init_3 = true;
     while(true) {
-        if (!loop_init_1) {
-            uint _e52 = m;
-            m = (_e52 + 1u);
+        if (!loop_init_3) {
+            uint _e59 = m;
+            m = (_e59 + 1u);
         }
-        loop_init_1 = false;
+        loop_init_3 = false;
         uint _e10 = m;
         if ((_e10 < count)) {
         } else {
@@ -429,42 +525,47 @@ void shade_list(uint count) {
         }
         {
             uint _e13 = m;
-            uint slot_3 = tile_lights[_e13];
-            GpuLight l = _group_0_binding_4_cs[slot_3];
-            vec3 _e20 = pos;
-            vec3 v_3 = (_e20 - l.p0_);
-            float _e25 = _group_0_binding_8_cs[slot_3];
-            float _e29 = _group_0_binding_0_cs.near_r2_;
-            float _e30 = vpl_near_fixed_share(_e25, dot(v_3, v_3), _e29);
-            if ((_e30 > 0.0)) {
-                vec3 _e35 = nrm;
-                float _e38 = _group_0_binding_0_cs.min_d2_;
-                float _e39 = vpl_transfer(l.p1_, _e35, v_3, _e38);
-                float t_1 = ((_e39 * _e30) * unscale);
-                vec3 _e43 = e;
-                e = (_e43 + (l.intensity * t_1));
-                uint _e48 = kept;
-                kept = (_e48 + 1u);
+            uint entry = tile_lights[_e13];
+            uint _e17 = quarter_bit;
+            if (((entry & _e17) == 0u)) {
+                continue;
+            }
+            uint slot_4 = (entry & SLOT_BITS);
+            GpuLight l = _group_0_binding_4_cs[slot_4];
+            vec3 _e27 = pos;
+            vec3 v_3 = (_e27 - l.p0_);
+            float _e32 = _group_0_binding_8_cs[slot_4];
+            float _e36 = _group_0_binding_0_cs.near_r2_;
+            float _e37 = vpl_near_fixed_share(_e32, dot(v_3, v_3), _e36);
+            if ((_e37 > 0.0)) {
+                vec3 _e42 = nrm;
+                float _e45 = _group_0_binding_0_cs.min_d2_;
+                float _e46 = vpl_transfer(l.p1_, _e42, v_3, _e45);
+                float t_1 = ((_e46 * _e37) * unscale);
+                vec3 _e50 = e;
+                e = (_e50 + (l.intensity * t_1));
+                uint _e55 = kept;
+                kept = (_e55 + 1u);
             }
         }
     }
     return;
 }
 
-void cull_tile(uint li_4, vec3 lo_1, vec3 hi_1, uvec4 grid, uint clusters_at, uint groups_at) {
+void cull_tile(uint li_5, vec3 lo_2, vec3 hi_2, uvec4 grid, uint clusters_at, uint groups_at) {
     uint g_2 = 0u;
     uint h = 0u;
-    if ((li_4 == 0u)) {
+    if ((li_5 == 0u)) {
         atomicExchange(list_count, 0u);
     }
     uint _e14 = group_count(grid.x, grid.y, grid.z, grid.w);
-    bool loop_init_2 = true;
+    bool loop_init_4 = true;
     while(true) {
-        if (!loop_init_2) {
-            uint _e101 = g_2;
-            g_2 = (_e101 + 1u);
+        if (!loop_init_4) {
+            uint _e103 = g_2;
+            g_2 = (_e103 + 1u);
         }
-        loop_init_2 = false;
+        loop_init_4 = false;
         uint _e17 = g_2;
         if ((_e17 < _e14)) {
         } else {
@@ -473,7 +574,7 @@ void cull_tile(uint li_4, vec3 lo_1, vec3 hi_1, uvec4 grid, uint clusters_at, ui
         {
             uint _e20 = g_2;
             GpuBox gb = _group_0_binding_6_cs[(groups_at + _e20)];
-            bool _e26 = box_overlaps_box(gb.lo, gb.hi, lo_1, hi_1);
+            bool _e26 = box_overlaps_box(gb.lo, gb.hi, lo_2, hi_2);
             if (!(_e26)) {
                 continue;
             }
@@ -482,17 +583,17 @@ void cull_tile(uint li_4, vec3 lo_1, vec3 hi_1, uvec4 grid, uint clusters_at, ui
             uint first = (clusters_at + _e33);
             uint _e35 = g_2;
             uint _e40 = group_clusters(_e35, grid.x, grid.y, grid.z, grid.w);
-            if ((li_4 == 0u)) {
+            if ((li_5 == 0u)) {
                 atomicExchange(hit_count, 0u);
             }
             memoryBarrierShared();
             barrier();
-            if ((li_4 < _e40)) {
-                GpuBox cb = _group_0_binding_6_cs[(first + li_4)];
-                bool _e52 = box_overlaps_box(cb.lo, cb.hi, lo_1, hi_1);
+            if ((li_5 < _e40)) {
+                GpuBox cb = _group_0_binding_6_cs[(first + li_5)];
+                bool _e52 = box_overlaps_box(cb.lo, cb.hi, lo_2, hi_2);
                 if (_e52) {
                     uint _e56 = atomicAdd(hit_count, 1u);
-                    cluster_hits[_e56] = (first + li_4);
+                    cluster_hits[_e56] = (first + li_5);
                 }
             }
             memoryBarrierShared();
@@ -501,13 +602,13 @@ void cull_tile(uint li_4, vec3 lo_1, vec3 hi_1, uvec4 grid, uint clusters_at, ui
             memoryBarrierShared();
             barrier();
             h = 0u;
-            bool loop_init_3 = true;
+            bool loop_init_5 = true;
             while(true) {
-                if (!loop_init_3) {
-                    uint _e98 = h;
-                    h = (_e98 + 1u);
+                if (!loop_init_5) {
+                    uint _e100 = h;
+                    h = (_e100 + 1u);
                 }
-                loop_init_3 = false;
+                loop_init_5 = false;
                 uint _e63 = h;
                 if ((_e63 < _e60)) {
                 } else {
@@ -523,7 +624,7 @@ void cull_tile(uint li_4, vec3 lo_1, vec3 hi_1, uvec4 grid, uint clusters_at, ui
                         shade_list(_e66);
                         memoryBarrierShared();
                         barrier();
-                        if ((li_4 == 0u)) {
+                        if ((li_5 == 0u)) {
                             atomicExchange(list_count, 0u);
                         }
                         memoryBarrierShared();
@@ -531,15 +632,16 @@ void cull_tile(uint li_4, vec3 lo_1, vec3 hi_1, uvec4 grid, uint clusters_at, ui
                     }
                     uint _e76 = h;
                     uint _e78 = cluster_hits[_e76];
-                    uint _e79 = cluster_slot(_e78, li_4);
+                    uint _e79 = cluster_slot(_e78, li_5);
                     GpuLight l_1 = _group_0_binding_4_cs[_e79];
                     if (any(notEqual(l_1.intensity, vec3(0.0)))) {
-                        float _e89 = cull_r2_of(_e79);
-                        float _e90 = cull_radius(_e89);
-                        bool _e91 = sphere_overlaps_aabb(l_1.p0_, _e90, lo_1, hi_1);
+                        float _e88 = cull_r2_of(_e79);
+                        float _e89 = cull_radius(_e88);
+                        bool _e91 = sphere_overlaps_aabb(l_1.p0_, _e89, lo_2, hi_2);
                         if (_e91) {
                             uint _e95 = atomicAdd(list_count, 1u);
-                            tile_lights[_e95] = _e79;
+                            uint _e98 = list_entry(_e79, l_1.p0_, _e89);
+                            tile_lights[_e95] = _e98;
                         }
                     }
                 }
@@ -550,10 +652,10 @@ void cull_tile(uint li_4, vec3 lo_1, vec3 hi_1, uvec4 grid, uint clusters_at, ui
     }
     memoryBarrierShared();
     barrier();
-    uint _e104 = list_count;
+    uint _e106 = list_count;
     memoryBarrierShared();
     barrier();
-    shade_list(_e104);
+    shade_list(_e106);
     return;
 }
 
@@ -562,6 +664,8 @@ void main() {
         wg_lo = vec3[64](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
         wg_hi = vec3[64](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
         wg_box = WorkgroupBox(vec3(0.0), vec3(0.0));
+        quarter_lo = vec3[4](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
+        quarter_hi = vec3[4](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
         tile_lights = uint[1024](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
         list_count = 0u;
         cluster_hits = uint[64](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
@@ -588,6 +692,7 @@ void main() {
     WorkgroupBox _e30 = load_receiver(li, pix_1, inside_1);
     bool _e31 = box_is_empty(_e30);
     if (!(_e31)) {
+        quarter_boxes(li, lid);
         uvec4 _e37 = _group_0_binding_0_cs.near_grid;
         uint _e40 = _group_0_binding_0_cs.near_clusters_at;
         uint _e43 = _group_0_binding_0_cs.near_groups_at;

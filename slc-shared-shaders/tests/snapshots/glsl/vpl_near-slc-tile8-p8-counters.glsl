@@ -123,6 +123,9 @@ const uint TILE = 8u;
 const uint THREADS = 64u;
 const uint BOX_THREADS = 64u;
 const uint MAX_TILE_LIGHTS = 1024u;
+const uint HALF = 4u;
+const uint QUARTER_SHIFT = 28u;
+const uint SLOT_BITS = 268435455u;
 
 shared vec3 wg_lo[64];
 
@@ -164,6 +167,12 @@ vec3 e = vec3(0.0);
 
 uint kept = 0u;
 
+shared vec3 quarter_lo[4];
+
+shared vec3 quarter_hi[4];
+
+uint quarter_bit = 0u;
+
 shared uint tile_lights[1024];
 
 shared uint list_count;
@@ -193,8 +202,8 @@ float cull_radius(float r2_1) {
 }
 
 bool sphere_overlaps_aabb(vec3 c, float r, vec3 bmin, vec3 bmax) {
-    vec3 q = clamp(c, bmin, bmax);
-    vec3 v_1 = (q - c);
+    vec3 q_1 = clamp(c, bmin, bmax);
+    vec3 v_1 = (q_1 - c);
     return (dot(v_1, v_1) <= (r * r));
 }
 
@@ -353,8 +362,8 @@ bool box_is_empty(WorkgroupBox b) {
 }
 
 vec4 surface_at(ivec2 texel) {
-    vec4 p_2 = texelFetch(_group_0_binding_2_cs, texel, 0);
-    return ((p_2.w > 0.0) ? vec4(p_2.xyz, 1.0) : vec4(0.0));
+    vec4 p_4 = texelFetch(_group_0_binding_2_cs, texel, 0);
+    return ((p_4.w > 0.0) ? vec4(p_4.xyz, 1.0) : vec4(0.0));
 }
 
 GbTexel gbuffer_at(uint i) {
@@ -492,7 +501,96 @@ float cull_r2_of(uint slot_2) {
     return _e4;
 }
 
+void quarter_boxes(uint li_8, uvec3 lid_1) {
+    vec3 lo_1 = vec3(3.4028235e38);
+    vec3 hi_1 = vec3(-3.4028235e38);
+    uint y = 0u;
+    uint x = 0u;
+    quarter_bit = (1u << ((QUARTER_SHIFT + ((lid_1.x >= HALF) ? 1u : 0u)) + ((lid_1.y >= HALF) ? 2u : 0u)));
+    vec3 _e25 = pos;
+    bool _e27 = valid;
+    wg_lo[li_8] = (_e27 ? _e25 : vec3(3.4028235e38));
+    vec3 _e34 = pos;
+    bool _e36 = valid;
+    wg_hi[li_8] = (_e36 ? _e34 : vec3(-3.4028235e38));
+    memoryBarrierShared();
+    barrier();
+    if ((li_8 < 4u)) {
+        uint x0_ = ((li_8 % 2u) * HALF);
+        uint y0_ = ((li_8 / 2u) * HALF);
+        y = y0_;
+        bool loop_init_1 = true;
+        while(true) {
+            if (!loop_init_1) {
+                uint _e92 = y;
+                y = (_e92 + 1u);
+            }
+            loop_init_1 = false;
+            uint _e55 = y;
+            if ((_e55 < min((y0_ + HALF), TILE))) {
+            } else {
+                break;
+            }
+            {
+                x = x0_;
+                bool loop_init_2 = true;
+                while(true) {
+                    if (!loop_init_2) {
+                        uint _e89 = x;
+                        x = (_e89 + 1u);
+                    }
+                    loop_init_2 = false;
+                    uint _e62 = x;
+                    if ((_e62 < min((x0_ + HALF), TILE))) {
+                    } else {
+                        break;
+                    }
+                    {
+                        vec3 _e68 = lo_1;
+                        uint _e70 = y;
+                        uint _e73 = x;
+                        vec3 _e76 = wg_lo[((_e70 * TILE) + _e73)];
+                        lo_1 = min(_e68, _e76);
+                        vec3 _e78 = hi_1;
+                        uint _e80 = y;
+                        uint _e83 = x;
+                        vec3 _e86 = wg_hi[((_e80 * TILE) + _e83)];
+                        hi_1 = max(_e78, _e86);
+                    }
+                }
+            }
+        }
+        vec3 _e96 = lo_1;
+        quarter_lo[li_8] = _e96;
+        vec3 _e99 = hi_1;
+        quarter_hi[li_8] = _e99;
+    }
+    memoryBarrierShared();
+    barrier();
+    return;
+}
+
+uint quarter_meets(uint q, vec3 p_2, float radius) {
+    vec3 lo_3 = quarter_lo[q];
+    vec3 hi_3 = quarter_hi[q];
+    if ((lo_3.x > hi_3.x)) {
+        return 0u;
+    }
+    count_one(COUNT_SPHERE_TESTS);
+    bool _e19 = sphere_overlaps_aabb(p_2, radius, lo_3, hi_3);
+    return (_e19 ? (1u << (QUARTER_SHIFT + q)) : 0u);
+}
+
+uint list_entry(uint slot_3, vec3 p_3, float radius_1) {
+    uint _e4 = quarter_meets(0u, p_3, radius_1);
+    uint _e7 = quarter_meets(1u, p_3, radius_1);
+    uint _e10 = quarter_meets(2u, p_3, radius_1);
+    uint _e13 = quarter_meets(3u, p_3, radius_1);
+    return ((((slot_3 | _e4) | _e7) | _e10) | _e13);
+}
+
 void shade_list(uint count) {
+    uint tested = 0u;
     uint m = 0u;
     bool _e2 = valid;
     if (!(_e2)) {
@@ -500,60 +598,68 @@ void shade_list(uint count) {
     }
     float _e5 = interleave_flux_scale(P);
     float unscale = (1.0 / _e5);
-    bool loop_init_1 = true;
+    bool loop_init_3 = true;
     while(true) {
-        if (!loop_init_1) {
-            uint _e55 = m;
-            m = (_e55 + 1u);
+        if (!loop_init_3) {
+            uint _e67 = m;
+            m = (_e67 + 1u);
         }
-        loop_init_1 = false;
-        uint _e10 = m;
-        if ((_e10 < count)) {
+        loop_init_3 = false;
+        uint _e12 = m;
+        if ((_e12 < count)) {
         } else {
             break;
         }
         {
-            uint _e13 = m;
-            uint slot_3 = tile_lights[_e13];
-            GpuLight l = _group_0_binding_4_cs[slot_3];
-            vec3 _e20 = pos;
-            vec3 v_3 = (_e20 - l.p0_);
-            float _e25 = _group_0_binding_7_cs[slot_3];
-            float _e27 = vpl_near_range2_(_e25, P);
-            float _e28 = near_r2_of(slot_3);
-            float _e32 = _group_0_binding_0_cs.near_r2_;
-            float _e33 = vpl_near_slc_share(_e27, _e28, dot(v_3, v_3), _e32);
-            if ((_e33 > 0.0)) {
-                vec3 _e38 = nrm;
-                float _e41 = _group_0_binding_0_cs.min_d2_;
-                float _e42 = vpl_transfer(l.p1_, _e38, v_3, _e41);
-                float t_1 = ((_e42 * _e33) * unscale);
-                vec3 _e46 = e;
-                e = (_e46 + (l.intensity * t_1));
-                uint _e51 = kept;
-                kept = (_e51 + 1u);
+            uint _e15 = m;
+            uint entry = tile_lights[_e15];
+            uint _e19 = quarter_bit;
+            if (((entry & _e19) == 0u)) {
+                continue;
+            }
+            uint _e23 = tested;
+            tested = (_e23 + 1u);
+            uint slot_4 = (entry & SLOT_BITS);
+            GpuLight l = _group_0_binding_4_cs[slot_4];
+            vec3 _e32 = pos;
+            vec3 v_3 = (_e32 - l.p0_);
+            float _e37 = _group_0_binding_7_cs[slot_4];
+            float _e39 = vpl_near_range2_(_e37, P);
+            float _e40 = near_r2_of(slot_4);
+            float _e44 = _group_0_binding_0_cs.near_r2_;
+            float _e45 = vpl_near_slc_share(_e39, _e40, dot(v_3, v_3), _e44);
+            if ((_e45 > 0.0)) {
+                vec3 _e50 = nrm;
+                float _e53 = _group_0_binding_0_cs.min_d2_;
+                float _e54 = vpl_transfer(l.p1_, _e50, v_3, _e53);
+                float t_1 = ((_e54 * _e45) * unscale);
+                vec3 _e58 = e;
+                e = (_e58 + (l.intensity * t_1));
+                uint _e63 = kept;
+                kept = (_e63 + 1u);
             }
         }
     }
-    count_add(COUNT_TESTED, count);
+    uint _e70 = tested;
+    count_add(COUNT_TESTED, _e70);
     return;
 }
 
-void cull_tile(uint li_8, vec3 lo_1, vec3 hi_1, uvec4 grid, uint clusters_at, uint groups_at) {
+void cull_tile(uint li_9, vec3 lo_2, vec3 hi_2, uvec4 grid, uint clusters_at, uint groups_at) {
     uint g_2 = 0u;
     uint h = 0u;
-    if ((li_8 == 0u)) {
+    if ((li_9 == 0u)) {
         atomicExchange(list_count, 0u);
     }
     uint _e14 = group_count(grid.x, grid.y, grid.z, grid.w);
-    count_tests(li_8, COUNT_GROUP_TESTS, _e14);
-    bool loop_init_2 = true;
+    count_tests(li_9, COUNT_GROUP_TESTS, _e14);
+    bool loop_init_4 = true;
     while(true) {
-        if (!loop_init_2) {
-            uint _e104 = g_2;
-            g_2 = (_e104 + 1u);
+        if (!loop_init_4) {
+            uint _e106 = g_2;
+            g_2 = (_e106 + 1u);
         }
-        loop_init_2 = false;
+        loop_init_4 = false;
         uint _e18 = g_2;
         if ((_e18 < _e14)) {
         } else {
@@ -562,7 +668,7 @@ void cull_tile(uint li_8, vec3 lo_1, vec3 hi_1, uvec4 grid, uint clusters_at, ui
         {
             uint _e21 = g_2;
             GpuBox gb = _group_0_binding_6_cs[(groups_at + _e21)];
-            bool _e27 = box_overlaps_box(gb.lo, gb.hi, lo_1, hi_1);
+            bool _e27 = box_overlaps_box(gb.lo, gb.hi, lo_2, hi_2);
             if (!(_e27)) {
                 continue;
             }
@@ -571,18 +677,18 @@ void cull_tile(uint li_8, vec3 lo_1, vec3 hi_1, uvec4 grid, uint clusters_at, ui
             uint first = (clusters_at + _e34);
             uint _e36 = g_2;
             uint _e41 = group_clusters(_e36, grid.x, grid.y, grid.z, grid.w);
-            count_tests(li_8, COUNT_CLUSTER_TESTS, _e41);
-            if ((li_8 == 0u)) {
+            count_tests(li_9, COUNT_CLUSTER_TESTS, _e41);
+            if ((li_9 == 0u)) {
                 atomicExchange(hit_count, 0u);
             }
             memoryBarrierShared();
             barrier();
-            if ((li_8 < _e41)) {
-                GpuBox cb = _group_0_binding_6_cs[(first + li_8)];
-                bool _e54 = box_overlaps_box(cb.lo, cb.hi, lo_1, hi_1);
+            if ((li_9 < _e41)) {
+                GpuBox cb = _group_0_binding_6_cs[(first + li_9)];
+                bool _e54 = box_overlaps_box(cb.lo, cb.hi, lo_2, hi_2);
                 if (_e54) {
                     uint _e58 = atomicAdd(hit_count, 1u);
-                    cluster_hits[_e58] = (first + li_8);
+                    cluster_hits[_e58] = (first + li_9);
                 }
             }
             memoryBarrierShared();
@@ -591,13 +697,13 @@ void cull_tile(uint li_8, vec3 lo_1, vec3 hi_1, uvec4 grid, uint clusters_at, ui
             memoryBarrierShared();
             barrier();
             h = 0u;
-            bool loop_init_3 = true;
+            bool loop_init_5 = true;
             while(true) {
-                if (!loop_init_3) {
-                    uint _e101 = h;
-                    h = (_e101 + 1u);
+                if (!loop_init_5) {
+                    uint _e103 = h;
+                    h = (_e103 + 1u);
                 }
-                loop_init_3 = false;
+                loop_init_5 = false;
                 uint _e65 = h;
                 if ((_e65 < _e62)) {
                 } else {
@@ -613,7 +719,7 @@ void cull_tile(uint li_8, vec3 lo_1, vec3 hi_1, uvec4 grid, uint clusters_at, ui
                         shade_list(_e68);
                         memoryBarrierShared();
                         barrier();
-                        if ((li_8 == 0u)) {
+                        if ((li_9 == 0u)) {
                             atomicExchange(list_count, 0u);
                         }
                         memoryBarrierShared();
@@ -621,16 +727,17 @@ void cull_tile(uint li_8, vec3 lo_1, vec3 hi_1, uvec4 grid, uint clusters_at, ui
                     }
                     uint _e78 = h;
                     uint _e80 = cluster_hits[_e78];
-                    uint _e81 = cluster_slot(_e80, li_8);
+                    uint _e81 = cluster_slot(_e80, li_9);
                     GpuLight l_1 = _group_0_binding_4_cs[_e81];
                     if (any(notEqual(l_1.intensity, vec3(0.0)))) {
                         count_one(COUNT_SPHERE_TESTS);
-                        float _e92 = cull_r2_of(_e81);
-                        float _e93 = cull_radius(_e92);
-                        bool _e94 = sphere_overlaps_aabb(l_1.p0_, _e93, lo_1, hi_1);
+                        float _e91 = cull_r2_of(_e81);
+                        float _e92 = cull_radius(_e91);
+                        bool _e94 = sphere_overlaps_aabb(l_1.p0_, _e92, lo_2, hi_2);
                         if (_e94) {
                             uint _e98 = atomicAdd(list_count, 1u);
-                            tile_lights[_e98] = _e81;
+                            uint _e101 = list_entry(_e81, l_1.p0_, _e92);
+                            tile_lights[_e98] = _e101;
                         }
                     }
                 }
@@ -641,10 +748,10 @@ void cull_tile(uint li_8, vec3 lo_1, vec3 hi_1, uvec4 grid, uint clusters_at, ui
     }
     memoryBarrierShared();
     barrier();
-    uint _e107 = list_count;
+    uint _e109 = list_count;
     memoryBarrierShared();
     barrier();
-    shade_list(_e107);
+    shade_list(_e109);
     return;
 }
 
@@ -654,6 +761,8 @@ void main() {
         wg_hi = vec3[64](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
         wg_box = WorkgroupBox(vec3(0.0), vec3(0.0));
         wg_counts = uint[7](0u, 0u, 0u, 0u, 0u, 0u, 0u);
+        quarter_lo = vec3[4](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
+        quarter_hi = vec3[4](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
         tile_lights = uint[1024](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
         list_count = 0u;
         cluster_hits = uint[64](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
@@ -680,6 +789,7 @@ void main() {
     WorkgroupBox _e30 = load_receiver(li, pix_1, inside_1);
     bool _e31 = box_is_empty(_e30);
     if (!(_e31)) {
+        quarter_boxes(li, lid);
         count_tests(li, COUNT_TILES, 1u);
         uvec4 _e39 = _group_0_binding_0_cs.near_grid;
         uint _e42 = _group_0_binding_0_cs.near_clusters_at;

@@ -123,6 +123,9 @@ const uint TILE = 8u;
 const uint THREADS = 64u;
 const uint BOX_THREADS = 64u;
 const uint MAX_TILE_LIGHTS = 1024u;
+const uint HALF = 4u;
+const uint QUARTER_SHIFT = 28u;
+const uint SLOT_BITS = 268435455u;
 
 shared vec3 wg_lo[64];
 
@@ -160,6 +163,12 @@ vec3 e = vec3(0.0);
 
 uint kept = 0u;
 
+shared vec3 quarter_lo[4];
+
+shared vec3 quarter_hi[4];
+
+uint quarter_bit = 0u;
+
 shared uint tile_lights[1024];
 
 shared uint list_count;
@@ -189,8 +198,8 @@ float cull_radius(float r2_1) {
 }
 
 bool sphere_overlaps_aabb(vec3 c, float r, vec3 bmin, vec3 bmax) {
-    vec3 q = clamp(c, bmin, bmax);
-    vec3 v_1 = (q - c);
+    vec3 q_1 = clamp(c, bmin, bmax);
+    vec3 v_1 = (q_1 - c);
     return (dot(v_1, v_1) <= (r * r));
 }
 
@@ -349,8 +358,8 @@ bool box_is_empty(WorkgroupBox b) {
 }
 
 vec4 surface_at(ivec2 texel) {
-    vec4 p_2 = texelFetch(_group_0_binding_2_cs, texel, 0);
-    return ((p_2.w > 0.0) ? vec4(p_2.xyz, 1.0) : vec4(0.0));
+    vec4 p_4 = texelFetch(_group_0_binding_2_cs, texel, 0);
+    return ((p_4.w > 0.0) ? vec4(p_4.xyz, 1.0) : vec4(0.0));
 }
 
 GbTexel gbuffer_at(uint i) {
@@ -423,6 +432,93 @@ float cull_r2_of(uint slot_2) {
     return _e4;
 }
 
+void quarter_boxes(uint li_4, uvec3 lid_1) {
+    vec3 lo_1 = vec3(3.4028235e38);
+    vec3 hi_1 = vec3(-3.4028235e38);
+    uint y = 0u;
+    uint x = 0u;
+    quarter_bit = (1u << ((QUARTER_SHIFT + ((lid_1.x >= HALF) ? 1u : 0u)) + ((lid_1.y >= HALF) ? 2u : 0u)));
+    vec3 _e25 = pos;
+    bool _e27 = valid;
+    wg_lo[li_4] = (_e27 ? _e25 : vec3(3.4028235e38));
+    vec3 _e34 = pos;
+    bool _e36 = valid;
+    wg_hi[li_4] = (_e36 ? _e34 : vec3(-3.4028235e38));
+    memoryBarrierShared();
+    barrier();
+    if ((li_4 < 4u)) {
+        uint x0_ = ((li_4 % 2u) * HALF);
+        uint y0_ = ((li_4 / 2u) * HALF);
+        y = y0_;
+        bool loop_init_1 = true;
+        while(true) {
+            if (!loop_init_1) {
+                uint _e92 = y;
+                y = (_e92 + 1u);
+            }
+            loop_init_1 = false;
+            uint _e55 = y;
+            if ((_e55 < min((y0_ + HALF), TILE))) {
+            } else {
+                break;
+            }
+            {
+                x = x0_;
+                bool loop_init_2 = true;
+                while(true) {
+                    if (!loop_init_2) {
+                        uint _e89 = x;
+                        x = (_e89 + 1u);
+                    }
+                    loop_init_2 = false;
+                    uint _e62 = x;
+                    if ((_e62 < min((x0_ + HALF), TILE))) {
+                    } else {
+                        break;
+                    }
+                    {
+                        vec3 _e68 = lo_1;
+                        uint _e70 = y;
+                        uint _e73 = x;
+                        vec3 _e76 = wg_lo[((_e70 * TILE) + _e73)];
+                        lo_1 = min(_e68, _e76);
+                        vec3 _e78 = hi_1;
+                        uint _e80 = y;
+                        uint _e83 = x;
+                        vec3 _e86 = wg_hi[((_e80 * TILE) + _e83)];
+                        hi_1 = max(_e78, _e86);
+                    }
+                }
+            }
+        }
+        vec3 _e96 = lo_1;
+        quarter_lo[li_4] = _e96;
+        vec3 _e99 = hi_1;
+        quarter_hi[li_4] = _e99;
+    }
+    memoryBarrierShared();
+    barrier();
+    return;
+}
+
+uint quarter_meets(uint q, vec3 p_2, float radius) {
+    vec3 lo_3 = quarter_lo[q];
+    vec3 hi_3 = quarter_hi[q];
+    if ((lo_3.x > hi_3.x)) {
+        return 0u;
+    }
+    bool _e18 = sphere_overlaps_aabb(p_2, radius, lo_3, hi_3);
+    return (_e18 ? (1u << (QUARTER_SHIFT + q)) : 0u);
+}
+
+uint list_entry(uint slot_3, vec3 p_3, float radius_1) {
+    uint _e4 = quarter_meets(0u, p_3, radius_1);
+    uint _e7 = quarter_meets(1u, p_3, radius_1);
+    uint _e10 = quarter_meets(2u, p_3, radius_1);
+    uint _e13 = quarter_meets(3u, p_3, radius_1);
+    return ((((slot_3 | _e4) | _e7) | _e10) | _e13);
+}
+
 void shade_list(uint count) {
     uint m = 0u;
     bool _e2 = valid;
@@ -431,13 +527,13 @@ void shade_list(uint count) {
     }
     float _e5 = interleave_flux_scale(P);
     float unscale = (1.0 / _e5);
-    bool loop_init_1 = true;
+    bool loop_init_3 = true;
     while(true) {
-        if (!loop_init_1) {
-            uint _e55 = m;
-            m = (_e55 + 1u);
+        if (!loop_init_3) {
+            uint _e62 = m;
+            m = (_e62 + 1u);
         }
-        loop_init_1 = false;
+        loop_init_3 = false;
         uint _e10 = m;
         if ((_e10 < count)) {
         } else {
@@ -445,44 +541,49 @@ void shade_list(uint count) {
         }
         {
             uint _e13 = m;
-            uint slot_3 = tile_lights[_e13];
-            GpuLight l = _group_0_binding_4_cs[slot_3];
-            vec3 _e20 = pos;
-            vec3 v_3 = (_e20 - l.p0_);
-            float _e25 = _group_0_binding_7_cs[slot_3];
-            float _e27 = vpl_near_range2_(_e25, P);
-            float _e28 = near_r2_of(slot_3);
-            float _e32 = _group_0_binding_0_cs.near_r2_;
-            float _e33 = vpl_near_slc_share(_e27, _e28, dot(v_3, v_3), _e32);
-            if ((_e33 > 0.0)) {
-                vec3 _e38 = nrm;
-                float _e41 = _group_0_binding_0_cs.min_d2_;
-                float _e42 = vpl_transfer(l.p1_, _e38, v_3, _e41);
-                float t_1 = ((_e42 * _e33) * unscale);
-                vec3 _e46 = e;
-                e = (_e46 + (l.intensity * t_1));
-                uint _e51 = kept;
-                kept = (_e51 + 1u);
+            uint entry = tile_lights[_e13];
+            uint _e17 = quarter_bit;
+            if (((entry & _e17) == 0u)) {
+                continue;
+            }
+            uint slot_4 = (entry & SLOT_BITS);
+            GpuLight l = _group_0_binding_4_cs[slot_4];
+            vec3 _e27 = pos;
+            vec3 v_3 = (_e27 - l.p0_);
+            float _e32 = _group_0_binding_7_cs[slot_4];
+            float _e34 = vpl_near_range2_(_e32, P);
+            float _e35 = near_r2_of(slot_4);
+            float _e39 = _group_0_binding_0_cs.near_r2_;
+            float _e40 = vpl_near_slc_share(_e34, _e35, dot(v_3, v_3), _e39);
+            if ((_e40 > 0.0)) {
+                vec3 _e45 = nrm;
+                float _e48 = _group_0_binding_0_cs.min_d2_;
+                float _e49 = vpl_transfer(l.p1_, _e45, v_3, _e48);
+                float t_1 = ((_e49 * _e40) * unscale);
+                vec3 _e53 = e;
+                e = (_e53 + (l.intensity * t_1));
+                uint _e58 = kept;
+                kept = (_e58 + 1u);
             }
         }
     }
     return;
 }
 
-void cull_tile(uint li_4, vec3 lo_1, vec3 hi_1, uvec4 grid, uint clusters_at, uint groups_at) {
+void cull_tile(uint li_5, vec3 lo_2, vec3 hi_2, uvec4 grid, uint clusters_at, uint groups_at) {
     uint g_2 = 0u;
     uint h = 0u;
-    if ((li_4 == 0u)) {
+    if ((li_5 == 0u)) {
         atomicExchange(list_count, 0u);
     }
     uint _e14 = group_count(grid.x, grid.y, grid.z, grid.w);
-    bool loop_init_2 = true;
+    bool loop_init_4 = true;
     while(true) {
-        if (!loop_init_2) {
-            uint _e101 = g_2;
-            g_2 = (_e101 + 1u);
+        if (!loop_init_4) {
+            uint _e103 = g_2;
+            g_2 = (_e103 + 1u);
         }
-        loop_init_2 = false;
+        loop_init_4 = false;
         uint _e17 = g_2;
         if ((_e17 < _e14)) {
         } else {
@@ -491,7 +592,7 @@ void cull_tile(uint li_4, vec3 lo_1, vec3 hi_1, uvec4 grid, uint clusters_at, ui
         {
             uint _e20 = g_2;
             GpuBox gb = _group_0_binding_6_cs[(groups_at + _e20)];
-            bool _e26 = box_overlaps_box(gb.lo, gb.hi, lo_1, hi_1);
+            bool _e26 = box_overlaps_box(gb.lo, gb.hi, lo_2, hi_2);
             if (!(_e26)) {
                 continue;
             }
@@ -500,17 +601,17 @@ void cull_tile(uint li_4, vec3 lo_1, vec3 hi_1, uvec4 grid, uint clusters_at, ui
             uint first = (clusters_at + _e33);
             uint _e35 = g_2;
             uint _e40 = group_clusters(_e35, grid.x, grid.y, grid.z, grid.w);
-            if ((li_4 == 0u)) {
+            if ((li_5 == 0u)) {
                 atomicExchange(hit_count, 0u);
             }
             memoryBarrierShared();
             barrier();
-            if ((li_4 < _e40)) {
-                GpuBox cb = _group_0_binding_6_cs[(first + li_4)];
-                bool _e52 = box_overlaps_box(cb.lo, cb.hi, lo_1, hi_1);
+            if ((li_5 < _e40)) {
+                GpuBox cb = _group_0_binding_6_cs[(first + li_5)];
+                bool _e52 = box_overlaps_box(cb.lo, cb.hi, lo_2, hi_2);
                 if (_e52) {
                     uint _e56 = atomicAdd(hit_count, 1u);
-                    cluster_hits[_e56] = (first + li_4);
+                    cluster_hits[_e56] = (first + li_5);
                 }
             }
             memoryBarrierShared();
@@ -519,13 +620,13 @@ void cull_tile(uint li_4, vec3 lo_1, vec3 hi_1, uvec4 grid, uint clusters_at, ui
             memoryBarrierShared();
             barrier();
             h = 0u;
-            bool loop_init_3 = true;
+            bool loop_init_5 = true;
             while(true) {
-                if (!loop_init_3) {
-                    uint _e98 = h;
-                    h = (_e98 + 1u);
+                if (!loop_init_5) {
+                    uint _e100 = h;
+                    h = (_e100 + 1u);
                 }
-                loop_init_3 = false;
+                loop_init_5 = false;
                 uint _e63 = h;
                 if ((_e63 < _e60)) {
                 } else {
@@ -541,7 +642,7 @@ void cull_tile(uint li_4, vec3 lo_1, vec3 hi_1, uvec4 grid, uint clusters_at, ui
                         shade_list(_e66);
                         memoryBarrierShared();
                         barrier();
-                        if ((li_4 == 0u)) {
+                        if ((li_5 == 0u)) {
                             atomicExchange(list_count, 0u);
                         }
                         memoryBarrierShared();
@@ -549,15 +650,16 @@ void cull_tile(uint li_4, vec3 lo_1, vec3 hi_1, uvec4 grid, uint clusters_at, ui
                     }
                     uint _e76 = h;
                     uint _e78 = cluster_hits[_e76];
-                    uint _e79 = cluster_slot(_e78, li_4);
+                    uint _e79 = cluster_slot(_e78, li_5);
                     GpuLight l_1 = _group_0_binding_4_cs[_e79];
                     if (any(notEqual(l_1.intensity, vec3(0.0)))) {
-                        float _e89 = cull_r2_of(_e79);
-                        float _e90 = cull_radius(_e89);
-                        bool _e91 = sphere_overlaps_aabb(l_1.p0_, _e90, lo_1, hi_1);
+                        float _e88 = cull_r2_of(_e79);
+                        float _e89 = cull_radius(_e88);
+                        bool _e91 = sphere_overlaps_aabb(l_1.p0_, _e89, lo_2, hi_2);
                         if (_e91) {
                             uint _e95 = atomicAdd(list_count, 1u);
-                            tile_lights[_e95] = _e79;
+                            uint _e98 = list_entry(_e79, l_1.p0_, _e89);
+                            tile_lights[_e95] = _e98;
                         }
                     }
                 }
@@ -568,10 +670,10 @@ void cull_tile(uint li_4, vec3 lo_1, vec3 hi_1, uvec4 grid, uint clusters_at, ui
     }
     memoryBarrierShared();
     barrier();
-    uint _e104 = list_count;
+    uint _e106 = list_count;
     memoryBarrierShared();
     barrier();
-    shade_list(_e104);
+    shade_list(_e106);
     return;
 }
 
@@ -580,6 +682,8 @@ void main() {
         wg_lo = vec3[64](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
         wg_hi = vec3[64](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
         wg_box = WorkgroupBox(vec3(0.0), vec3(0.0));
+        quarter_lo = vec3[4](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
+        quarter_hi = vec3[4](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
         tile_lights = uint[1024](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
         list_count = 0u;
         cluster_hits = uint[64](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
@@ -606,6 +710,7 @@ void main() {
     WorkgroupBox _e30 = load_receiver(li, pix_1, inside_1);
     bool _e31 = box_is_empty(_e30);
     if (!(_e31)) {
+        quarter_boxes(li, lid);
         uvec4 _e37 = _group_0_binding_0_cs.near_grid;
         uint _e40 = _group_0_binding_0_cs.near_clusters_at;
         uint _e43 = _group_0_binding_0_cs.near_groups_at;

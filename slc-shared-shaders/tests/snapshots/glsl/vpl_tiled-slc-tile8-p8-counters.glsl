@@ -342,8 +342,8 @@ bool box_is_empty(WorkgroupBox b) {
 }
 
 vec4 surface_at(ivec2 texel) {
-    vec4 p_2 = texelFetch(_group_0_binding_2_cs, texel, 0);
-    return ((p_2.w > 0.0) ? vec4(p_2.xyz, 1.0) : vec4(0.0));
+    vec4 p_3 = texelFetch(_group_0_binding_2_cs, texel, 0);
+    return ((p_3.w > 0.0) ? vec4(p_3.xyz, 1.0) : vec4(0.0));
 }
 
 GbTexel gbuffer_at(uint i) {
@@ -489,6 +489,10 @@ float cull_r2_of(uint slot) {
     return _e3;
 }
 
+uint list_entry(uint slot_1, vec3 p_2, float radius) {
+    return slot_1;
+}
+
 void shade_list(uint count) {
     uint k_1 = 0u;
     bool _e2 = valid;
@@ -529,8 +533,8 @@ void cull_tile(uint li_8, vec3 lo_1, vec3 hi_1, uvec4 grid, uint clusters_at, ui
     bool loop_init_2 = true;
     while(true) {
         if (!loop_init_2) {
-            uint _e104 = g_2;
-            g_2 = (_e104 + 1u);
+            uint _e106 = g_2;
+            g_2 = (_e106 + 1u);
         }
         loop_init_2 = false;
         uint _e18 = g_2;
@@ -573,8 +577,8 @@ void cull_tile(uint li_8, vec3 lo_1, vec3 hi_1, uvec4 grid, uint clusters_at, ui
             bool loop_init_3 = true;
             while(true) {
                 if (!loop_init_3) {
-                    uint _e101 = h;
-                    h = (_e101 + 1u);
+                    uint _e103 = h;
+                    h = (_e103 + 1u);
                 }
                 loop_init_3 = false;
                 uint _e65 = h;
@@ -604,12 +608,13 @@ void cull_tile(uint li_8, vec3 lo_1, vec3 hi_1, uvec4 grid, uint clusters_at, ui
                     GpuLight l_1 = _group_0_binding_4_cs[_e81];
                     if (any(notEqual(l_1.intensity, vec3(0.0)))) {
                         count_one(COUNT_SPHERE_TESTS);
-                        float _e92 = cull_r2_of(_e81);
-                        float _e93 = cull_radius(_e92);
-                        bool _e94 = sphere_overlaps_aabb(l_1.p0_, _e93, lo_1, hi_1);
+                        float _e91 = cull_r2_of(_e81);
+                        float _e92 = cull_radius(_e91);
+                        bool _e94 = sphere_overlaps_aabb(l_1.p0_, _e92, lo_1, hi_1);
                         if (_e94) {
                             uint _e98 = atomicAdd(list_count, 1u);
-                            tile_lights[_e98] = _e81;
+                            uint _e101 = list_entry(_e81, l_1.p0_, _e92);
+                            tile_lights[_e98] = _e101;
                         }
                     }
                 }
@@ -620,10 +625,10 @@ void cull_tile(uint li_8, vec3 lo_1, vec3 hi_1, uvec4 grid, uint clusters_at, ui
     }
     memoryBarrierShared();
     barrier();
-    uint _e107 = list_count;
+    uint _e109 = list_count;
     memoryBarrierShared();
     barrier();
-    shade_list(_e107);
+    shade_list(_e109);
     return;
 }
 

@@ -338,8 +338,8 @@ bool box_is_empty(WorkgroupBox b) {
 }
 
 vec4 surface_at(ivec2 texel) {
-    vec4 p_2 = texelFetch(_group_0_binding_2_cs, texel, 0);
-    return ((p_2.w > 0.0) ? vec4(p_2.xyz, 1.0) : vec4(0.0));
+    vec4 p_3 = texelFetch(_group_0_binding_2_cs, texel, 0);
+    return ((p_3.w > 0.0) ? vec4(p_3.xyz, 1.0) : vec4(0.0));
 }
 
 GbTexel gbuffer_at(uint i) {
@@ -420,6 +420,10 @@ float cull_r2_of(uint slot) {
     return _e3;
 }
 
+uint list_entry(uint slot_1, vec3 p_2, float radius) {
+    return slot_1;
+}
+
 void shade_list(uint count) {
     uint k_1 = 0u;
     bool _e2 = valid;
@@ -458,8 +462,8 @@ void cull_tile(uint li_4, vec3 lo_1, vec3 hi_1, uvec4 grid, uint clusters_at, ui
     bool loop_init_2 = true;
     while(true) {
         if (!loop_init_2) {
-            uint _e101 = g_2;
-            g_2 = (_e101 + 1u);
+            uint _e103 = g_2;
+            g_2 = (_e103 + 1u);
         }
         loop_init_2 = false;
         uint _e17 = g_2;
@@ -501,8 +505,8 @@ void cull_tile(uint li_4, vec3 lo_1, vec3 hi_1, uvec4 grid, uint clusters_at, ui
             bool loop_init_3 = true;
             while(true) {
                 if (!loop_init_3) {
-                    uint _e98 = h;
-                    h = (_e98 + 1u);
+                    uint _e100 = h;
+                    h = (_e100 + 1u);
                 }
                 loop_init_3 = false;
                 uint _e63 = h;
@@ -531,12 +535,13 @@ void cull_tile(uint li_4, vec3 lo_1, vec3 hi_1, uvec4 grid, uint clusters_at, ui
                     uint _e79 = cluster_slot(_e78, li_4);
                     GpuLight l_1 = _group_0_binding_4_cs[_e79];
                     if (any(notEqual(l_1.intensity, vec3(0.0)))) {
-                        float _e89 = cull_r2_of(_e79);
-                        float _e90 = cull_radius(_e89);
-                        bool _e91 = sphere_overlaps_aabb(l_1.p0_, _e90, lo_1, hi_1);
+                        float _e88 = cull_r2_of(_e79);
+                        float _e89 = cull_radius(_e88);
+                        bool _e91 = sphere_overlaps_aabb(l_1.p0_, _e89, lo_1, hi_1);
                         if (_e91) {
                             uint _e95 = atomicAdd(list_count, 1u);
-                            tile_lights[_e95] = _e79;
+                            uint _e98 = list_entry(_e79, l_1.p0_, _e89);
+                            tile_lights[_e95] = _e98;
                         }
                     }
                 }
@@ -547,10 +552,10 @@ void cull_tile(uint li_4, vec3 lo_1, vec3 hi_1, uvec4 grid, uint clusters_at, ui
     }
     memoryBarrierShared();
     barrier();
-    uint _e104 = list_count;
+    uint _e106 = list_count;
     memoryBarrierShared();
     barrier();
-    shade_list(_e104);
+    shade_list(_e106);
     return;
 }
 

@@ -126,6 +126,9 @@ static const uint TILE = 8u;
 static const uint THREADS = 64u;
 static const uint BOX_THREADS = 64u;
 static const uint MAX_TILE_LIGHTS = 1024u;
+static const uint HALF = 4u;
+static const uint QUARTER_SHIFT = 28u;
+static const uint SLOT_BITS = 268435455u;
 
 groupshared float3 wg_lo[64];
 groupshared float3 wg_hi[64];
@@ -147,6 +150,9 @@ static float3 nrm = (float3)0;
 static bool valid = (bool)0;
 static float3 e = (float3)0;
 static uint kept = (uint)0;
+groupshared float3 quarter_lo[4];
+groupshared float3 quarter_hi[4];
+static uint quarter_bit = (uint)0;
 groupshared uint tile_lights[1024];
 groupshared uint list_count;
 groupshared uint cluster_hits[64];
@@ -177,8 +183,8 @@ float cull_radius(float r2_1)
 
 bool sphere_overlaps_aabb(float3 c, float r, float3 bmin, float3 bmax)
 {
-    float3 q = clamp(c, bmin, bmax);
-    float3 v_1 = (q - c);
+    float3 q_1 = clamp(c, bmin, bmax);
+    float3 v_1 = (q_1 - c);
     return (dot(v_1, v_1) <= (r * r));
 }
 
@@ -370,8 +376,8 @@ bool box_is_empty(WorkgroupBox b)
 
 float4 surface_at(int2 texel)
 {
-    float4 p_2 = position_tex.Load(int3(texel, int(0)));
-    return ((p_2.w > 0.0) ? float4(p_2.xyz, 1.0) : (0.0).xxxx);
+    float4 p_4 = position_tex.Load(int3(texel, int(0)));
+    return ((p_4.w > 0.0) ? float4(p_4.xyz, 1.0) : (0.0).xxxx);
 }
 
 GbTexel ConstructGbTexel(float4 arg0, float4 arg1) {
@@ -531,6 +537,102 @@ float cull_r2_of(uint slot_2)
     return _e4;
 }
 
+void quarter_boxes(uint li_8, uint3 lid_1)
+{
+    float3 lo_1 = (3.4028235e38).xxx;
+    float3 hi_1 = (-3.4028235e38).xxx;
+    uint y = (uint)0;
+    uint x = (uint)0;
+
+    quarter_bit = (1u << ((QUARTER_SHIFT + ((lid_1.x >= HALF) ? 1u : 0u)) + ((lid_1.y >= HALF) ? 2u : 0u)));
+    float3 _e25 = pos;
+    bool _e27 = valid;
+    wg_lo[min(uint(li_8), 63u)] = (_e27 ? _e25 : (3.4028235e38).xxx);
+    float3 _e34 = pos;
+    bool _e36 = valid;
+    wg_hi[min(uint(li_8), 63u)] = (_e36 ? _e34 : (-3.4028235e38).xxx);
+    GroupMemoryBarrierWithGroupSync();
+    if ((li_8 < 4u)) {
+        uint x0_ = (naga_mod(li_8, 2u) * HALF);
+        uint y0_ = (naga_div(li_8, 2u) * HALF);
+        y = y0_;
+        uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
+        bool loop_init_1 = true;
+        while(true) {
+            if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
+            loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+            if (!loop_init_1) {
+                uint _e92 = y;
+                y = (_e92 + 1u);
+            }
+            loop_init_1 = false;
+            uint _e55 = y;
+            if ((_e55 < min((y0_ + HALF), TILE))) {
+            } else {
+                break;
+            }
+            {
+                x = x0_;
+                uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
+                bool loop_init_2 = true;
+                while(true) {
+                    if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
+                    loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
+                    if (!loop_init_2) {
+                        uint _e89 = x;
+                        x = (_e89 + 1u);
+                    }
+                    loop_init_2 = false;
+                    uint _e62 = x;
+                    if ((_e62 < min((x0_ + HALF), TILE))) {
+                    } else {
+                        break;
+                    }
+                    {
+                        float3 _e68 = lo_1;
+                        uint _e70 = y;
+                        uint _e73 = x;
+                        float3 _e76 = wg_lo[min(uint(((_e70 * TILE) + _e73)), 63u)];
+                        lo_1 = min(_e68, _e76);
+                        float3 _e78 = hi_1;
+                        uint _e80 = y;
+                        uint _e83 = x;
+                        float3 _e86 = wg_hi[min(uint(((_e80 * TILE) + _e83)), 63u)];
+                        hi_1 = max(_e78, _e86);
+                    }
+                }
+            }
+        }
+        float3 _e96 = lo_1;
+        quarter_lo[min(uint(li_8), 3u)] = _e96;
+        float3 _e99 = hi_1;
+        quarter_hi[min(uint(li_8), 3u)] = _e99;
+    }
+    GroupMemoryBarrierWithGroupSync();
+    return;
+}
+
+uint quarter_meets(uint q, float3 p_2, float radius)
+{
+    float3 lo_3 = quarter_lo[min(uint(q), 3u)];
+    float3 hi_3 = quarter_hi[min(uint(q), 3u)];
+    if ((lo_3.x > hi_3.x)) {
+        return 0u;
+    }
+    count_one(COUNT_SPHERE_TESTS);
+    const bool _e19 = sphere_overlaps_aabb(p_2, radius, lo_3, hi_3);
+    return (_e19 ? (1u << (QUARTER_SHIFT + q)) : 0u);
+}
+
+uint list_entry(uint slot_3, float3 p_3, float radius_1)
+{
+    const uint _e4 = quarter_meets(0u, p_3, radius_1);
+    const uint _e7 = quarter_meets(1u, p_3, radius_1);
+    const uint _e10 = quarter_meets(2u, p_3, radius_1);
+    const uint _e13 = quarter_meets(3u, p_3, radius_1);
+    return ((((slot_3 | _e4) | _e7) | _e10) | _e13);
+}
+
 GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, float3 arg4, float arg5, float3 arg6, uint arg7) {
     GpuLight ret = (GpuLight)0;
     ret.p0_ = arg0;
@@ -546,6 +648,7 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
 
 void shade_list(uint count)
 {
+    uint tested = 0u;
     uint m = 0u;
 
     bool _e2 = valid;
@@ -554,45 +657,53 @@ void shade_list(uint count)
     }
     const float _e5 = interleave_flux_scale(P);
     float unscale = (1.0 / _e5);
-    uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
-    bool loop_init_1 = true;
+    uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
+    bool loop_init_3 = true;
     while(true) {
-        if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
-        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
-        if (!loop_init_1) {
-            uint _e55 = m;
-            m = (_e55 + 1u);
+        if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
+        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+        if (!loop_init_3) {
+            uint _e67 = m;
+            m = (_e67 + 1u);
         }
-        loop_init_1 = false;
-        uint _e10 = m;
-        if ((_e10 < count)) {
+        loop_init_3 = false;
+        uint _e12 = m;
+        if ((_e12 < count)) {
         } else {
             break;
         }
         {
-            uint _e13 = m;
-            uint slot_3 = tile_lights[min(uint(_e13), 1023u)];
-            GpuLight l = ConstructGpuLight(asfloat(lights.Load3(slot_3*64+0)), asuint(lights.Load(slot_3*64+12)), asfloat(lights.Load3(slot_3*64+16)), asfloat(lights.Load(slot_3*64+28)), asfloat(lights.Load3(slot_3*64+32)), asfloat(lights.Load(slot_3*64+44)), asfloat(lights.Load3(slot_3*64+48)), asuint(lights.Load(slot_3*64+60)));
-            float3 _e20 = pos;
-            float3 v_3 = (_e20 - l.p0_);
-            float _e25 = asfloat(rt2_2.Load(slot_3*4));
-            const float _e27 = vpl_near_range2_(_e25, P);
-            const float _e28 = near_r2_of(slot_3);
-            float _e32 = params.near_r2_;
-            const float _e33 = vpl_near_slc_share(_e27, _e28, dot(v_3, v_3), _e32);
-            if ((_e33 > 0.0)) {
-                float3 _e38 = nrm;
-                float _e41 = params.min_d2_;
-                const float _e42 = vpl_transfer(l.p1_, _e38, v_3, _e41);
-                float t_1 = ((_e42 * _e33) * unscale);
-                float3 _e46 = e;
-                e = (_e46 + (l.intensity * t_1));
-                uint _e51 = kept;
-                kept = (_e51 + 1u);
+            uint _e15 = m;
+            uint entry = tile_lights[min(uint(_e15), 1023u)];
+            uint _e19 = quarter_bit;
+            if (((entry & _e19) == 0u)) {
+                continue;
+            }
+            uint _e23 = tested;
+            tested = (_e23 + 1u);
+            uint slot_4 = (entry & SLOT_BITS);
+            GpuLight l = ConstructGpuLight(asfloat(lights.Load3(slot_4*64+0)), asuint(lights.Load(slot_4*64+12)), asfloat(lights.Load3(slot_4*64+16)), asfloat(lights.Load(slot_4*64+28)), asfloat(lights.Load3(slot_4*64+32)), asfloat(lights.Load(slot_4*64+44)), asfloat(lights.Load3(slot_4*64+48)), asuint(lights.Load(slot_4*64+60)));
+            float3 _e32 = pos;
+            float3 v_3 = (_e32 - l.p0_);
+            float _e37 = asfloat(rt2_2.Load(slot_4*4));
+            const float _e39 = vpl_near_range2_(_e37, P);
+            const float _e40 = near_r2_of(slot_4);
+            float _e44 = params.near_r2_;
+            const float _e45 = vpl_near_slc_share(_e39, _e40, dot(v_3, v_3), _e44);
+            if ((_e45 > 0.0)) {
+                float3 _e50 = nrm;
+                float _e53 = params.min_d2_;
+                const float _e54 = vpl_transfer(l.p1_, _e50, v_3, _e53);
+                float t_1 = ((_e54 * _e45) * unscale);
+                float3 _e58 = e;
+                e = (_e58 + (l.intensity * t_1));
+                uint _e63 = kept;
+                kept = (_e63 + 1u);
             }
         }
     }
-    count_add(COUNT_TESTED, count);
+    uint _e70 = tested;
+    count_add(COUNT_TESTED, _e70);
     return;
 }
 
@@ -605,26 +716,26 @@ GpuBox ConstructGpuBox(float3 arg0, float arg1, float3 arg2, float arg3) {
     return ret;
 }
 
-void cull_tile(uint li_8, float3 lo_1, float3 hi_1, uint4 grid, uint clusters_at, uint groups_at)
+void cull_tile(uint li_9, float3 lo_2, float3 hi_2, uint4 grid, uint clusters_at, uint groups_at)
 {
     uint g_2 = 0u;
     uint h = (uint)0;
 
-    if ((li_8 == 0u)) {
+    if ((li_9 == 0u)) {
         { uint dummy_1 = 0; InterlockedExchange(list_count, 0u, dummy_1); }
     }
     const uint _e14 = group_count(grid.x, grid.y, grid.z, grid.w);
-    count_tests(li_8, COUNT_GROUP_TESTS, _e14);
-    uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
-    bool loop_init_2 = true;
+    count_tests(li_9, COUNT_GROUP_TESTS, _e14);
+    uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
+    bool loop_init_4 = true;
     while(true) {
-        if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
-        loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
-        if (!loop_init_2) {
-            uint _e104 = g_2;
-            g_2 = (_e104 + 1u);
+        if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
+        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+        if (!loop_init_4) {
+            uint _e106 = g_2;
+            g_2 = (_e106 + 1u);
         }
-        loop_init_2 = false;
+        loop_init_4 = false;
         uint _e18 = g_2;
         if ((_e18 < _e14)) {
         } else {
@@ -633,7 +744,7 @@ void cull_tile(uint li_8, float3 lo_1, float3 hi_1, uint4 grid, uint clusters_at
         {
             uint _e21 = g_2;
             GpuBox gb = ConstructGpuBox(asfloat(boxes.Load3((groups_at + _e21)*32+0)), asfloat(boxes.Load((groups_at + _e21)*32+12)), asfloat(boxes.Load3((groups_at + _e21)*32+16)), asfloat(boxes.Load((groups_at + _e21)*32+28)));
-            const bool _e27 = box_overlaps_box(gb.lo, gb.hi, lo_1, hi_1);
+            const bool _e27 = box_overlaps_box(gb.lo, gb.hi, lo_2, hi_2);
             if (!(_e27)) {
                 continue;
             }
@@ -642,33 +753,33 @@ void cull_tile(uint li_8, float3 lo_1, float3 hi_1, uint4 grid, uint clusters_at
             uint first = (clusters_at + _e34);
             uint _e36 = g_2;
             const uint _e41 = group_clusters(_e36, grid.x, grid.y, grid.z, grid.w);
-            count_tests(li_8, COUNT_CLUSTER_TESTS, _e41);
-            if ((li_8 == 0u)) {
+            count_tests(li_9, COUNT_CLUSTER_TESTS, _e41);
+            if ((li_9 == 0u)) {
                 { uint dummy_2 = 0; InterlockedExchange(hit_count, 0u, dummy_2); }
             }
             GroupMemoryBarrierWithGroupSync();
-            if ((li_8 < _e41)) {
-                GpuBox cb = ConstructGpuBox(asfloat(boxes.Load3((first + li_8)*32+0)), asfloat(boxes.Load((first + li_8)*32+12)), asfloat(boxes.Load3((first + li_8)*32+16)), asfloat(boxes.Load((first + li_8)*32+28)));
-                const bool _e54 = box_overlaps_box(cb.lo, cb.hi, lo_1, hi_1);
+            if ((li_9 < _e41)) {
+                GpuBox cb = ConstructGpuBox(asfloat(boxes.Load3((first + li_9)*32+0)), asfloat(boxes.Load((first + li_9)*32+12)), asfloat(boxes.Load3((first + li_9)*32+16)), asfloat(boxes.Load((first + li_9)*32+28)));
+                const bool _e54 = box_overlaps_box(cb.lo, cb.hi, lo_2, hi_2);
                 if (_e54) {
                     uint _e58; InterlockedAdd(hit_count, 1u, _e58);
-                    cluster_hits[min(uint(_e58), 63u)] = (first + li_8);
+                    cluster_hits[min(uint(_e58), 63u)] = (first + li_9);
                 }
             }
             GroupMemoryBarrierWithGroupSync();
             uint _e62 = hit_count;
             GroupMemoryBarrierWithGroupSync();
             h = 0u;
-            uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
-            bool loop_init_3 = true;
+            uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
+            bool loop_init_5 = true;
             while(true) {
-                if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
-                loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-                if (!loop_init_3) {
-                    uint _e101 = h;
-                    h = (_e101 + 1u);
+                if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
+                loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+                if (!loop_init_5) {
+                    uint _e103 = h;
+                    h = (_e103 + 1u);
                 }
-                loop_init_3 = false;
+                loop_init_5 = false;
                 uint _e65 = h;
                 if ((_e65 < _e62)) {
                 } else {
@@ -681,23 +792,24 @@ void cull_tile(uint li_8, float3 lo_1, float3 hi_1, uint4 grid, uint clusters_at
                     if (((_e68 + CLUSTER) > MAX_TILE_LIGHTS)) {
                         shade_list(_e68);
                         GroupMemoryBarrierWithGroupSync();
-                        if ((li_8 == 0u)) {
+                        if ((li_9 == 0u)) {
                             { uint dummy_3 = 0; InterlockedExchange(list_count, 0u, dummy_3); }
                         }
                         GroupMemoryBarrierWithGroupSync();
                     }
                     uint _e78 = h;
                     uint _e80 = cluster_hits[min(uint(_e78), 63u)];
-                    const uint _e81 = cluster_slot(_e80, li_8);
+                    const uint _e81 = cluster_slot(_e80, li_9);
                     GpuLight l_1 = ConstructGpuLight(asfloat(lights.Load3(_e81*64+0)), asuint(lights.Load(_e81*64+12)), asfloat(lights.Load3(_e81*64+16)), asfloat(lights.Load(_e81*64+28)), asfloat(lights.Load3(_e81*64+32)), asfloat(lights.Load(_e81*64+44)), asfloat(lights.Load3(_e81*64+48)), asuint(lights.Load(_e81*64+60)));
                     if (any((l_1.intensity != (0.0).xxx))) {
                         count_one(COUNT_SPHERE_TESTS);
-                        const float _e92 = cull_r2_of(_e81);
-                        const float _e93 = cull_radius(_e92);
-                        const bool _e94 = sphere_overlaps_aabb(l_1.p0_, _e93, lo_1, hi_1);
+                        const float _e91 = cull_r2_of(_e81);
+                        const float _e92 = cull_radius(_e91);
+                        const bool _e94 = sphere_overlaps_aabb(l_1.p0_, _e92, lo_2, hi_2);
                         if (_e94) {
                             uint _e98; InterlockedAdd(list_count, 1u, _e98);
-                            tile_lights[min(uint(_e98), 1023u)] = _e81;
+                            const uint _e101 = list_entry(_e81, l_1.p0_, _e92);
+                            tile_lights[min(uint(_e98), 1023u)] = _e101;
                         }
                     }
                 }
@@ -706,9 +818,9 @@ void cull_tile(uint li_8, float3 lo_1, float3 hi_1, uint4 grid, uint clusters_at
         }
     }
     GroupMemoryBarrierWithGroupSync();
-    uint _e107 = list_count;
+    uint _e109 = list_count;
     GroupMemoryBarrierWithGroupSync();
-    shade_list(_e107);
+    shade_list(_e109);
     return;
 }
 
@@ -720,6 +832,8 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
         wg_hi = (float3[64])0;
         wg_box = (WorkgroupBox)0;
         wg_counts = (uint[7])0;
+        quarter_lo = (float3[4])0;
+        quarter_hi = (float3[4])0;
         tile_lights = (uint[1024])0;
         list_count = (uint)0;
         cluster_hits = (uint[64])0;
@@ -743,6 +857,7 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
     const WorkgroupBox _e30 = load_receiver(li, pix_1, inside_1);
     const bool _e31 = box_is_empty(_e30);
     if (!(_e31)) {
+        quarter_boxes(li, lid);
         count_tests(li, COUNT_TILES, 1u);
         uint4 _e39 = params.near_grid;
         uint _e42 = params.near_clusters_at;

@@ -126,6 +126,9 @@ static const uint TILE = 8u;
 static const uint THREADS = 64u;
 static const uint BOX_THREADS = 64u;
 static const uint MAX_TILE_LIGHTS = 1024u;
+static const uint HALF = 4u;
+static const uint QUARTER_SHIFT = 28u;
+static const uint SLOT_BITS = 268435455u;
 
 groupshared float3 wg_lo[64];
 groupshared float3 wg_hi[64];
@@ -145,6 +148,9 @@ static float3 nrm = (float3)0;
 static bool valid = (bool)0;
 static float3 e = (float3)0;
 static uint kept = (uint)0;
+groupshared float3 quarter_lo[4];
+groupshared float3 quarter_hi[4];
+static uint quarter_bit = (uint)0;
 groupshared uint tile_lights[1024];
 groupshared uint list_count;
 groupshared uint cluster_hits[64];
@@ -175,8 +181,8 @@ float cull_radius(float r2_1)
 
 bool sphere_overlaps_aabb(float3 c, float r, float3 bmin, float3 bmax)
 {
-    float3 q = clamp(c, bmin, bmax);
-    float3 v_1 = (q - c);
+    float3 q_1 = clamp(c, bmin, bmax);
+    float3 v_1 = (q_1 - c);
     return (dot(v_1, v_1) <= (r * r));
 }
 
@@ -368,8 +374,8 @@ bool box_is_empty(WorkgroupBox b)
 
 float4 surface_at(int2 texel)
 {
-    float4 p_2 = position_tex.Load(int3(texel, int(0)));
-    return ((p_2.w > 0.0) ? float4(p_2.xyz, 1.0) : (0.0).xxxx);
+    float4 p_4 = position_tex.Load(int3(texel, int(0)));
+    return ((p_4.w > 0.0) ? float4(p_4.xyz, 1.0) : (0.0).xxxx);
 }
 
 GbTexel ConstructGbTexel(float4 arg0, float4 arg1) {
@@ -459,6 +465,101 @@ float cull_r2_of(uint slot_2)
     return _e4;
 }
 
+void quarter_boxes(uint li_4, uint3 lid_1)
+{
+    float3 lo_1 = (3.4028235e38).xxx;
+    float3 hi_1 = (-3.4028235e38).xxx;
+    uint y = (uint)0;
+    uint x = (uint)0;
+
+    quarter_bit = (1u << ((QUARTER_SHIFT + ((lid_1.x >= HALF) ? 1u : 0u)) + ((lid_1.y >= HALF) ? 2u : 0u)));
+    float3 _e25 = pos;
+    bool _e27 = valid;
+    wg_lo[min(uint(li_4), 63u)] = (_e27 ? _e25 : (3.4028235e38).xxx);
+    float3 _e34 = pos;
+    bool _e36 = valid;
+    wg_hi[min(uint(li_4), 63u)] = (_e36 ? _e34 : (-3.4028235e38).xxx);
+    GroupMemoryBarrierWithGroupSync();
+    if ((li_4 < 4u)) {
+        uint x0_ = (naga_mod(li_4, 2u) * HALF);
+        uint y0_ = (naga_div(li_4, 2u) * HALF);
+        y = y0_;
+        uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
+        bool loop_init_1 = true;
+        while(true) {
+            if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
+            loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+            if (!loop_init_1) {
+                uint _e92 = y;
+                y = (_e92 + 1u);
+            }
+            loop_init_1 = false;
+            uint _e55 = y;
+            if ((_e55 < min((y0_ + HALF), TILE))) {
+            } else {
+                break;
+            }
+            {
+                x = x0_;
+                uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
+                bool loop_init_2 = true;
+                while(true) {
+                    if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
+                    loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
+                    if (!loop_init_2) {
+                        uint _e89 = x;
+                        x = (_e89 + 1u);
+                    }
+                    loop_init_2 = false;
+                    uint _e62 = x;
+                    if ((_e62 < min((x0_ + HALF), TILE))) {
+                    } else {
+                        break;
+                    }
+                    {
+                        float3 _e68 = lo_1;
+                        uint _e70 = y;
+                        uint _e73 = x;
+                        float3 _e76 = wg_lo[min(uint(((_e70 * TILE) + _e73)), 63u)];
+                        lo_1 = min(_e68, _e76);
+                        float3 _e78 = hi_1;
+                        uint _e80 = y;
+                        uint _e83 = x;
+                        float3 _e86 = wg_hi[min(uint(((_e80 * TILE) + _e83)), 63u)];
+                        hi_1 = max(_e78, _e86);
+                    }
+                }
+            }
+        }
+        float3 _e96 = lo_1;
+        quarter_lo[min(uint(li_4), 3u)] = _e96;
+        float3 _e99 = hi_1;
+        quarter_hi[min(uint(li_4), 3u)] = _e99;
+    }
+    GroupMemoryBarrierWithGroupSync();
+    return;
+}
+
+uint quarter_meets(uint q, float3 p_2, float radius)
+{
+    float3 lo_3 = quarter_lo[min(uint(q), 3u)];
+    float3 hi_3 = quarter_hi[min(uint(q), 3u)];
+    if ((lo_3.x > hi_3.x)) {
+        return 0u;
+    }
+    const bool _e18 = sphere_overlaps_aabb(p_2, radius, lo_3, hi_3);
+    return (_e18 ? (1u << (QUARTER_SHIFT + q)) : 0u);
+}
+
+uint list_entry(uint slot_3, float3 p_3, float radius_1)
+{
+    const uint _e4 = quarter_meets(0u, p_3, radius_1);
+    const uint _e7 = quarter_meets(1u, p_3, radius_1);
+    const uint _e10 = quarter_meets(2u, p_3, radius_1);
+    const uint _e13 = quarter_meets(3u, p_3, radius_1);
+    return ((((slot_3 | _e4) | _e7) | _e10) | _e13);
+}
+
 GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, float3 arg4, float arg5, float3 arg6, uint arg7) {
     GpuLight ret = (GpuLight)0;
     ret.p0_ = arg0;
@@ -482,16 +583,16 @@ void shade_list(uint count)
     }
     const float _e5 = interleave_flux_scale(P);
     float unscale = (1.0 / _e5);
-    uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
-    bool loop_init_1 = true;
+    uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
+    bool loop_init_3 = true;
     while(true) {
-        if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
-        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
-        if (!loop_init_1) {
-            uint _e55 = m;
-            m = (_e55 + 1u);
+        if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
+        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+        if (!loop_init_3) {
+            uint _e62 = m;
+            m = (_e62 + 1u);
         }
-        loop_init_1 = false;
+        loop_init_3 = false;
         uint _e10 = m;
         if ((_e10 < count)) {
         } else {
@@ -499,24 +600,29 @@ void shade_list(uint count)
         }
         {
             uint _e13 = m;
-            uint slot_3 = tile_lights[min(uint(_e13), 1023u)];
-            GpuLight l = ConstructGpuLight(asfloat(lights.Load3(slot_3*64+0)), asuint(lights.Load(slot_3*64+12)), asfloat(lights.Load3(slot_3*64+16)), asfloat(lights.Load(slot_3*64+28)), asfloat(lights.Load3(slot_3*64+32)), asfloat(lights.Load(slot_3*64+44)), asfloat(lights.Load3(slot_3*64+48)), asuint(lights.Load(slot_3*64+60)));
-            float3 _e20 = pos;
-            float3 v_3 = (_e20 - l.p0_);
-            float _e25 = asfloat(rt2_2.Load(slot_3*4));
-            const float _e27 = vpl_near_range2_(_e25, P);
-            const float _e28 = near_r2_of(slot_3);
-            float _e32 = params.near_r2_;
-            const float _e33 = vpl_near_slc_share(_e27, _e28, dot(v_3, v_3), _e32);
-            if ((_e33 > 0.0)) {
-                float3 _e38 = nrm;
-                float _e41 = params.min_d2_;
-                const float _e42 = vpl_transfer(l.p1_, _e38, v_3, _e41);
-                float t_1 = ((_e42 * _e33) * unscale);
-                float3 _e46 = e;
-                e = (_e46 + (l.intensity * t_1));
-                uint _e51 = kept;
-                kept = (_e51 + 1u);
+            uint entry = tile_lights[min(uint(_e13), 1023u)];
+            uint _e17 = quarter_bit;
+            if (((entry & _e17) == 0u)) {
+                continue;
+            }
+            uint slot_4 = (entry & SLOT_BITS);
+            GpuLight l = ConstructGpuLight(asfloat(lights.Load3(slot_4*64+0)), asuint(lights.Load(slot_4*64+12)), asfloat(lights.Load3(slot_4*64+16)), asfloat(lights.Load(slot_4*64+28)), asfloat(lights.Load3(slot_4*64+32)), asfloat(lights.Load(slot_4*64+44)), asfloat(lights.Load3(slot_4*64+48)), asuint(lights.Load(slot_4*64+60)));
+            float3 _e27 = pos;
+            float3 v_3 = (_e27 - l.p0_);
+            float _e32 = asfloat(rt2_2.Load(slot_4*4));
+            const float _e34 = vpl_near_range2_(_e32, P);
+            const float _e35 = near_r2_of(slot_4);
+            float _e39 = params.near_r2_;
+            const float _e40 = vpl_near_slc_share(_e34, _e35, dot(v_3, v_3), _e39);
+            if ((_e40 > 0.0)) {
+                float3 _e45 = nrm;
+                float _e48 = params.min_d2_;
+                const float _e49 = vpl_transfer(l.p1_, _e45, v_3, _e48);
+                float t_1 = ((_e49 * _e40) * unscale);
+                float3 _e53 = e;
+                e = (_e53 + (l.intensity * t_1));
+                uint _e58 = kept;
+                kept = (_e58 + 1u);
             }
         }
     }
@@ -532,25 +638,25 @@ GpuBox ConstructGpuBox(float3 arg0, float arg1, float3 arg2, float arg3) {
     return ret;
 }
 
-void cull_tile(uint li_4, float3 lo_1, float3 hi_1, uint4 grid, uint clusters_at, uint groups_at)
+void cull_tile(uint li_5, float3 lo_2, float3 hi_2, uint4 grid, uint clusters_at, uint groups_at)
 {
     uint g_2 = 0u;
     uint h = (uint)0;
 
-    if ((li_4 == 0u)) {
+    if ((li_5 == 0u)) {
         { uint dummy = 0; InterlockedExchange(list_count, 0u, dummy); }
     }
     const uint _e14 = group_count(grid.x, grid.y, grid.z, grid.w);
-    uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
-    bool loop_init_2 = true;
+    uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
+    bool loop_init_4 = true;
     while(true) {
-        if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
-        loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
-        if (!loop_init_2) {
-            uint _e101 = g_2;
-            g_2 = (_e101 + 1u);
+        if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
+        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+        if (!loop_init_4) {
+            uint _e103 = g_2;
+            g_2 = (_e103 + 1u);
         }
-        loop_init_2 = false;
+        loop_init_4 = false;
         uint _e17 = g_2;
         if ((_e17 < _e14)) {
         } else {
@@ -559,7 +665,7 @@ void cull_tile(uint li_4, float3 lo_1, float3 hi_1, uint4 grid, uint clusters_at
         {
             uint _e20 = g_2;
             GpuBox gb = ConstructGpuBox(asfloat(boxes.Load3((groups_at + _e20)*32+0)), asfloat(boxes.Load((groups_at + _e20)*32+12)), asfloat(boxes.Load3((groups_at + _e20)*32+16)), asfloat(boxes.Load((groups_at + _e20)*32+28)));
-            const bool _e26 = box_overlaps_box(gb.lo, gb.hi, lo_1, hi_1);
+            const bool _e26 = box_overlaps_box(gb.lo, gb.hi, lo_2, hi_2);
             if (!(_e26)) {
                 continue;
             }
@@ -568,32 +674,32 @@ void cull_tile(uint li_4, float3 lo_1, float3 hi_1, uint4 grid, uint clusters_at
             uint first = (clusters_at + _e33);
             uint _e35 = g_2;
             const uint _e40 = group_clusters(_e35, grid.x, grid.y, grid.z, grid.w);
-            if ((li_4 == 0u)) {
+            if ((li_5 == 0u)) {
                 { uint dummy_1 = 0; InterlockedExchange(hit_count, 0u, dummy_1); }
             }
             GroupMemoryBarrierWithGroupSync();
-            if ((li_4 < _e40)) {
-                GpuBox cb = ConstructGpuBox(asfloat(boxes.Load3((first + li_4)*32+0)), asfloat(boxes.Load((first + li_4)*32+12)), asfloat(boxes.Load3((first + li_4)*32+16)), asfloat(boxes.Load((first + li_4)*32+28)));
-                const bool _e52 = box_overlaps_box(cb.lo, cb.hi, lo_1, hi_1);
+            if ((li_5 < _e40)) {
+                GpuBox cb = ConstructGpuBox(asfloat(boxes.Load3((first + li_5)*32+0)), asfloat(boxes.Load((first + li_5)*32+12)), asfloat(boxes.Load3((first + li_5)*32+16)), asfloat(boxes.Load((first + li_5)*32+28)));
+                const bool _e52 = box_overlaps_box(cb.lo, cb.hi, lo_2, hi_2);
                 if (_e52) {
                     uint _e56; InterlockedAdd(hit_count, 1u, _e56);
-                    cluster_hits[min(uint(_e56), 63u)] = (first + li_4);
+                    cluster_hits[min(uint(_e56), 63u)] = (first + li_5);
                 }
             }
             GroupMemoryBarrierWithGroupSync();
             uint _e60 = hit_count;
             GroupMemoryBarrierWithGroupSync();
             h = 0u;
-            uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
-            bool loop_init_3 = true;
+            uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
+            bool loop_init_5 = true;
             while(true) {
-                if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
-                loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-                if (!loop_init_3) {
-                    uint _e98 = h;
-                    h = (_e98 + 1u);
+                if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
+                loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+                if (!loop_init_5) {
+                    uint _e100 = h;
+                    h = (_e100 + 1u);
                 }
-                loop_init_3 = false;
+                loop_init_5 = false;
                 uint _e63 = h;
                 if ((_e63 < _e60)) {
                 } else {
@@ -606,22 +712,23 @@ void cull_tile(uint li_4, float3 lo_1, float3 hi_1, uint4 grid, uint clusters_at
                     if (((_e66 + CLUSTER) > MAX_TILE_LIGHTS)) {
                         shade_list(_e66);
                         GroupMemoryBarrierWithGroupSync();
-                        if ((li_4 == 0u)) {
+                        if ((li_5 == 0u)) {
                             { uint dummy_2 = 0; InterlockedExchange(list_count, 0u, dummy_2); }
                         }
                         GroupMemoryBarrierWithGroupSync();
                     }
                     uint _e76 = h;
                     uint _e78 = cluster_hits[min(uint(_e76), 63u)];
-                    const uint _e79 = cluster_slot(_e78, li_4);
+                    const uint _e79 = cluster_slot(_e78, li_5);
                     GpuLight l_1 = ConstructGpuLight(asfloat(lights.Load3(_e79*64+0)), asuint(lights.Load(_e79*64+12)), asfloat(lights.Load3(_e79*64+16)), asfloat(lights.Load(_e79*64+28)), asfloat(lights.Load3(_e79*64+32)), asfloat(lights.Load(_e79*64+44)), asfloat(lights.Load3(_e79*64+48)), asuint(lights.Load(_e79*64+60)));
                     if (any((l_1.intensity != (0.0).xxx))) {
-                        const float _e89 = cull_r2_of(_e79);
-                        const float _e90 = cull_radius(_e89);
-                        const bool _e91 = sphere_overlaps_aabb(l_1.p0_, _e90, lo_1, hi_1);
+                        const float _e88 = cull_r2_of(_e79);
+                        const float _e89 = cull_radius(_e88);
+                        const bool _e91 = sphere_overlaps_aabb(l_1.p0_, _e89, lo_2, hi_2);
                         if (_e91) {
                             uint _e95; InterlockedAdd(list_count, 1u, _e95);
-                            tile_lights[min(uint(_e95), 1023u)] = _e79;
+                            const uint _e98 = list_entry(_e79, l_1.p0_, _e89);
+                            tile_lights[min(uint(_e95), 1023u)] = _e98;
                         }
                     }
                 }
@@ -630,9 +737,9 @@ void cull_tile(uint li_4, float3 lo_1, float3 hi_1, uint4 grid, uint clusters_at
         }
     }
     GroupMemoryBarrierWithGroupSync();
-    uint _e104 = list_count;
+    uint _e106 = list_count;
     GroupMemoryBarrierWithGroupSync();
-    shade_list(_e104);
+    shade_list(_e106);
     return;
 }
 
@@ -643,6 +750,8 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
         wg_lo = (float3[64])0;
         wg_hi = (float3[64])0;
         wg_box = (WorkgroupBox)0;
+        quarter_lo = (float3[4])0;
+        quarter_hi = (float3[4])0;
         tile_lights = (uint[1024])0;
         list_count = (uint)0;
         cluster_hits = (uint[64])0;
@@ -666,6 +775,7 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
     const WorkgroupBox _e30 = load_receiver(li, pix_1, inside_1);
     const bool _e31 = box_is_empty(_e30);
     if (!(_e31)) {
+        quarter_boxes(li, lid);
         uint4 _e37 = params.near_grid;
         uint _e40 = params.near_clusters_at;
         uint _e43 = params.near_groups_at;

@@ -358,8 +358,8 @@ bool box_is_empty(WorkgroupBox b)
 
 float4 surface_at(int2 texel)
 {
-    float4 p_2 = position_tex.Load(int3(texel, int(0)));
-    return ((p_2.w > 0.0) ? float4(p_2.xyz, 1.0) : (0.0).xxxx);
+    float4 p_3 = position_tex.Load(int3(texel, int(0)));
+    return ((p_3.w > 0.0) ? float4(p_3.xyz, 1.0) : (0.0).xxxx);
 }
 
 GbTexel ConstructGbTexel(float4 arg0, float4 arg1) {
@@ -539,6 +539,11 @@ float cull_r2_of(uint slot)
     return _e3;
 }
 
+uint list_entry(uint slot_1, float3 p_2, float radius)
+{
+    return slot_1;
+}
+
 void shade_list(uint count)
 {
     uint k_1 = 0u;
@@ -598,8 +603,8 @@ void cull_tile(uint li_8, float3 lo_1, float3 hi_1, uint4 grid, uint clusters_at
         if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
         loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e104 = g_2;
-            g_2 = (_e104 + 1u);
+            uint _e106 = g_2;
+            g_2 = (_e106 + 1u);
         }
         loop_init_2 = false;
         uint _e18 = g_2;
@@ -642,8 +647,8 @@ void cull_tile(uint li_8, float3 lo_1, float3 hi_1, uint4 grid, uint clusters_at
                 if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
                 loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
                 if (!loop_init_3) {
-                    uint _e101 = h;
-                    h = (_e101 + 1u);
+                    uint _e103 = h;
+                    h = (_e103 + 1u);
                 }
                 loop_init_3 = false;
                 uint _e65 = h;
@@ -669,12 +674,13 @@ void cull_tile(uint li_8, float3 lo_1, float3 hi_1, uint4 grid, uint clusters_at
                     GpuLight l_1 = ConstructGpuLight(asfloat(lights.Load3(_e81*64+0)), asuint(lights.Load(_e81*64+12)), asfloat(lights.Load3(_e81*64+16)), asfloat(lights.Load(_e81*64+28)), asfloat(lights.Load3(_e81*64+32)), asfloat(lights.Load(_e81*64+44)), asfloat(lights.Load3(_e81*64+48)), asuint(lights.Load(_e81*64+60)));
                     if (any((l_1.intensity != (0.0).xxx))) {
                         count_one(COUNT_SPHERE_TESTS);
-                        const float _e92 = cull_r2_of(_e81);
-                        const float _e93 = cull_radius(_e92);
-                        const bool _e94 = sphere_overlaps_aabb(l_1.p0_, _e93, lo_1, hi_1);
+                        const float _e91 = cull_r2_of(_e81);
+                        const float _e92 = cull_radius(_e91);
+                        const bool _e94 = sphere_overlaps_aabb(l_1.p0_, _e92, lo_1, hi_1);
                         if (_e94) {
                             uint _e98; InterlockedAdd(list_count, 1u, _e98);
-                            tile_lights[min(uint(_e98), 1023u)] = _e81;
+                            const uint _e101 = list_entry(_e81, l_1.p0_, _e92);
+                            tile_lights[min(uint(_e98), 1023u)] = _e101;
                         }
                     }
                 }
@@ -683,9 +689,9 @@ void cull_tile(uint li_8, float3 lo_1, float3 hi_1, uint4 grid, uint clusters_at
         }
     }
     GroupMemoryBarrierWithGroupSync();
-    uint _e107 = list_count;
+    uint _e109 = list_count;
     GroupMemoryBarrierWithGroupSync();
-    shade_list(_e107);
+    shade_list(_e109);
     return;
 }
 

@@ -507,8 +507,8 @@ bool box_is_empty(WorkgroupBox b)
 
 float4 surface_at(int2 texel)
 {
-    float4 p_2 = position_tex.Load(int3(texel, int(0)));
-    return ((p_2.w > 0.0) ? float4(p_2.xyz, 1.0) : (0.0).xxxx);
+    float4 p_3 = position_tex.Load(int3(texel, int(0)));
+    return ((p_3.w > 0.0) ? float4(p_3.xyz, 1.0) : (0.0).xxxx);
 }
 
 GbTexel ConstructGbTexel(float4 arg0, float4 arg1) {
@@ -682,6 +682,11 @@ float cull_r2_of(uint slot)
     return _e3;
 }
 
+uint list_entry(uint slot_1, float3 p_2, float radius)
+{
+    return slot_1;
+}
+
 void shade_list(uint count)
 {
     uint k_1 = 0u;
@@ -739,8 +744,8 @@ void cull_tile(uint li_4, float3 lo_1, float3 hi_1, uint4 grid, uint clusters_at
         if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
         loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e101 = g_3;
-            g_3 = (_e101 + 1u);
+            uint _e103 = g_3;
+            g_3 = (_e103 + 1u);
         }
         loop_init_2 = false;
         uint _e17 = g_3;
@@ -782,8 +787,8 @@ void cull_tile(uint li_4, float3 lo_1, float3 hi_1, uint4 grid, uint clusters_at
                 if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
                 loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
                 if (!loop_init_3) {
-                    uint _e98 = h;
-                    h = (_e98 + 1u);
+                    uint _e100 = h;
+                    h = (_e100 + 1u);
                 }
                 loop_init_3 = false;
                 uint _e63 = h;
@@ -808,12 +813,13 @@ void cull_tile(uint li_4, float3 lo_1, float3 hi_1, uint4 grid, uint clusters_at
                     const uint _e79 = cluster_slot(_e78, li_4);
                     GpuLight l_6 = ConstructGpuLight(asfloat(lights.Load3(_e79*64+0)), asuint(lights.Load(_e79*64+12)), asfloat(lights.Load3(_e79*64+16)), asfloat(lights.Load(_e79*64+28)), asfloat(lights.Load3(_e79*64+32)), asfloat(lights.Load(_e79*64+44)), asfloat(lights.Load3(_e79*64+48)), asuint(lights.Load(_e79*64+60)));
                     if (any((l_6.intensity != (0.0).xxx))) {
-                        const float _e89 = cull_r2_of(_e79);
-                        const float _e90 = cull_radius(_e89);
-                        const bool _e91 = sphere_overlaps_aabb(l_6.p0_, _e90, lo_1, hi_1);
+                        const float _e88 = cull_r2_of(_e79);
+                        const float _e89 = cull_radius(_e88);
+                        const bool _e91 = sphere_overlaps_aabb(l_6.p0_, _e89, lo_1, hi_1);
                         if (_e91) {
                             uint _e95; InterlockedAdd(list_count, 1u, _e95);
-                            tile_lights[min(uint(_e95), 1023u)] = _e79;
+                            const uint _e98 = list_entry(_e79, l_6.p0_, _e89);
+                            tile_lights[min(uint(_e95), 1023u)] = _e98;
                         }
                     }
                 }
@@ -822,9 +828,9 @@ void cull_tile(uint li_4, float3 lo_1, float3 hi_1, uint4 grid, uint clusters_at
         }
     }
     GroupMemoryBarrierWithGroupSync();
-    uint _e104 = list_count;
+    uint _e106 = list_count;
     GroupMemoryBarrierWithGroupSync();
-    shade_list(_e104);
+    shade_list(_e106);
     return;
 }
 

@@ -75,9 +75,12 @@ struct GbTexel {
     metal::float4 normal;
 };
 struct type_14 {
-    uint inner[1024];
+    metal::float3 inner[4];
 };
 struct type_16 {
+    uint inner[1024];
+};
+struct type_18 {
     uint inner[64];
 };
 constant uint LIGHT_POINT = 0u;
@@ -146,6 +149,9 @@ constant uint TILE = 8u;
 constant uint THREADS = 64u;
 constant uint BOX_THREADS = 64u;
 constant uint MAX_TILE_LIGHTS = 1024u;
+constant uint HALF = 4u;
+constant uint QUARTER_SHIFT = 28u;
+constant uint SLOT_BITS = 268435455u;
 
 float to_f32_(
     uint u
@@ -172,8 +178,8 @@ bool sphere_overlaps_aabb(
     metal::float3 bmin,
     metal::float3 bmax
 ) {
-    metal::float3 q = metal::clamp(c, bmin, bmax);
-    metal::float3 v_1 = q - c;
+    metal::float3 q_1 = metal::clamp(c, bmin, bmax);
+    metal::float3 v_1 = q_1 - c;
     return metal::dot(v_1, v_1) <= (r * r);
 }
 
@@ -394,8 +400,8 @@ metal::float4 surface_at(
     metal::int2 texel,
     metal::texture2d<float, metal::access::sample> position_tex
 ) {
-    metal::float4 p_2 = position_tex.read(metal::uint2(texel), 0);
-    return (p_2.w > 0.0) ? metal::float4(p_2.xyz, 1.0) : metal::float4(0.0);
+    metal::float4 p_4 = position_tex.read(metal::uint2(texel), 0);
+    return (p_4.w > 0.0) ? metal::float4(p_4.xyz, 1.0) : metal::float4(0.0);
 }
 
 GbTexel gbuffer_at(
@@ -505,6 +511,119 @@ float cull_r2_of(
     return _e4;
 }
 
+void quarter_boxes(
+    uint li_4,
+    metal::uint3 lid_1,
+    threadgroup type_7& wg_lo,
+    threadgroup type_7& wg_hi,
+    thread metal::float3& pos,
+    thread bool& valid,
+    threadgroup type_14& quarter_lo,
+    threadgroup type_14& quarter_hi,
+    thread uint& quarter_bit
+) {
+    metal::float3 lo_1 = metal::float3(340282350000000000000000000000000000000.0);
+    metal::float3 hi_1 = metal::float3(-340282350000000000000000000000000000000.0);
+    uint y = {};
+    uint x = {};
+    quarter_bit = 1u << ((QUARTER_SHIFT + ((lid_1.x >= HALF) ? 1u : 0u)) + ((lid_1.y >= HALF) ? 2u : 0u));
+    metal::float3 _e25 = pos;
+    bool _e27 = valid;
+    wg_lo.inner[li_4] = _e27 ? _e25 : metal::float3(340282350000000000000000000000000000000.0);
+    metal::float3 _e34 = pos;
+    bool _e36 = valid;
+    wg_hi.inner[li_4] = _e36 ? _e34 : metal::float3(-340282350000000000000000000000000000000.0);
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    if (li_4 < 4u) {
+        uint x0_ = naga_mod(li_4, 2u) * HALF;
+        uint y0_ = naga_div(li_4, 2u) * HALF;
+        y = y0_;
+        uint2 loop_bound_1 = uint2(4294967295u);
+        bool loop_init_1 = true;
+        while(true) {
+            if (metal::all(loop_bound_1 == uint2(0u))) { break; }
+            loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+            if (!loop_init_1) {
+                uint _e92 = y;
+                y = _e92 + 1u;
+            }
+            loop_init_1 = false;
+            uint _e55 = y;
+            if (_e55 < metal::min(y0_ + HALF, TILE)) {
+            } else {
+                break;
+            }
+            {
+                x = x0_;
+                uint2 loop_bound_2 = uint2(4294967295u);
+                bool loop_init_2 = true;
+                while(true) {
+                    if (metal::all(loop_bound_2 == uint2(0u))) { break; }
+                    loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
+                    if (!loop_init_2) {
+                        uint _e89 = x;
+                        x = _e89 + 1u;
+                    }
+                    loop_init_2 = false;
+                    uint _e62 = x;
+                    if (_e62 < metal::min(x0_ + HALF, TILE)) {
+                    } else {
+                        break;
+                    }
+                    {
+                        metal::float3 _e68 = lo_1;
+                        uint _e70 = y;
+                        uint _e73 = x;
+                        metal::float3 _e76 = wg_lo.inner[(_e70 * TILE) + _e73];
+                        lo_1 = metal::min(_e68, _e76);
+                        metal::float3 _e78 = hi_1;
+                        uint _e80 = y;
+                        uint _e83 = x;
+                        metal::float3 _e86 = wg_hi.inner[(_e80 * TILE) + _e83];
+                        hi_1 = metal::max(_e78, _e86);
+                    }
+                }
+            }
+        }
+        metal::float3 _e96 = lo_1;
+        quarter_lo.inner[li_4] = _e96;
+        metal::float3 _e99 = hi_1;
+        quarter_hi.inner[li_4] = _e99;
+    }
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    return;
+}
+
+uint quarter_meets(
+    uint q,
+    metal::float3 p_2,
+    float radius,
+    threadgroup type_14& quarter_lo,
+    threadgroup type_14& quarter_hi
+) {
+    metal::float3 lo_3 = quarter_lo.inner[q];
+    metal::float3 hi_3 = quarter_hi.inner[q];
+    if (lo_3.x > hi_3.x) {
+        return 0u;
+    }
+    bool _e18 = sphere_overlaps_aabb(p_2, radius, lo_3, hi_3);
+    return _e18 ? (1u << (QUARTER_SHIFT + q)) : 0u;
+}
+
+uint list_entry(
+    uint slot_3,
+    metal::float3 p_3,
+    float radius_1,
+    threadgroup type_14& quarter_lo,
+    threadgroup type_14& quarter_hi
+) {
+    uint _e4 = quarter_meets(0u, p_3, radius_1, quarter_lo, quarter_hi);
+    uint _e7 = quarter_meets(1u, p_3, radius_1, quarter_lo, quarter_hi);
+    uint _e10 = quarter_meets(2u, p_3, radius_1, quarter_lo, quarter_hi);
+    uint _e13 = quarter_meets(3u, p_3, radius_1, quarter_lo, quarter_hi);
+    return (((slot_3 | _e4) | _e7) | _e10) | _e13;
+}
+
 void shade_list(
     uint count,
     constant VplParams& params,
@@ -515,7 +634,8 @@ void shade_list(
     thread bool& valid,
     thread metal::float3& e,
     thread uint& kept,
-    threadgroup type_14& tile_lights,
+    thread uint& quarter_bit,
+    threadgroup type_16& tile_lights,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint m = 0u;
@@ -525,16 +645,16 @@ void shade_list(
     }
     float _e5 = interleave_flux_scale(P);
     float unscale = 1.0 / _e5;
-    uint2 loop_bound_1 = uint2(4294967295u);
-    bool loop_init_1 = true;
+    uint2 loop_bound_3 = uint2(4294967295u);
+    bool loop_init_3 = true;
     while(true) {
-        if (metal::all(loop_bound_1 == uint2(0u))) { break; }
-        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
-        if (!loop_init_1) {
-            uint _e52 = m;
-            m = _e52 + 1u;
+        if (metal::all(loop_bound_3 == uint2(0u))) { break; }
+        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+        if (!loop_init_3) {
+            uint _e59 = m;
+            m = _e59 + 1u;
         }
-        loop_init_1 = false;
+        loop_init_3 = false;
         uint _e10 = m;
         if (_e10 < count) {
         } else {
@@ -542,22 +662,27 @@ void shade_list(
         }
         {
             uint _e13 = m;
-            uint slot_3 = tile_lights.inner[_e13];
-            GpuLight l = lights[slot_3];
-            metal::float3 _e20 = pos;
-            metal::float3 v_3 = _e20 - l.p0_;
-            float _e25 = r2_2[slot_3];
-            float _e29 = params.near_r2_;
-            float _e30 = vpl_near_fixed_share(_e25, metal::dot(v_3, v_3), _e29);
-            if (_e30 > 0.0) {
-                metal::float3 _e35 = nrm;
-                float _e38 = params.min_d2_;
-                float _e39 = vpl_transfer(l.p1_, _e35, v_3, _e38);
-                float t_1 = (_e39 * _e30) * unscale;
-                metal::float3 _e43 = e;
-                e = _e43 + (l.intensity * t_1);
-                uint _e48 = kept;
-                kept = _e48 + 1u;
+            uint entry = tile_lights.inner[_e13];
+            uint _e17 = quarter_bit;
+            if ((entry & _e17) == 0u) {
+                continue;
+            }
+            uint slot_4 = entry & SLOT_BITS;
+            GpuLight l = lights[slot_4];
+            metal::float3 _e27 = pos;
+            metal::float3 v_3 = _e27 - l.p0_;
+            float _e32 = r2_2[slot_4];
+            float _e36 = params.near_r2_;
+            float _e37 = vpl_near_fixed_share(_e32, metal::dot(v_3, v_3), _e36);
+            if (_e37 > 0.0) {
+                metal::float3 _e42 = nrm;
+                float _e45 = params.min_d2_;
+                float _e46 = vpl_transfer(l.p1_, _e42, v_3, _e45);
+                float t_1 = (_e46 * _e37) * unscale;
+                metal::float3 _e50 = e;
+                e = _e50 + (l.intensity * t_1);
+                uint _e55 = kept;
+                kept = _e55 + 1u;
             }
         }
     }
@@ -565,9 +690,9 @@ void shade_list(
 }
 
 void cull_tile(
-    uint li_4,
-    metal::float3 lo_1,
-    metal::float3 hi_1,
+    uint li_5,
+    metal::float3 lo_2,
+    metal::float3 hi_2,
     metal::uint4 grid,
     uint clusters_at,
     uint groups_at,
@@ -581,28 +706,31 @@ void cull_tile(
     thread bool& valid,
     thread metal::float3& e,
     thread uint& kept,
-    threadgroup type_14& tile_lights,
+    threadgroup type_14& quarter_lo,
+    threadgroup type_14& quarter_hi,
+    thread uint& quarter_bit,
+    threadgroup type_16& tile_lights,
     threadgroup metal::atomic_uint& list_count,
-    threadgroup type_16& cluster_hits,
+    threadgroup type_18& cluster_hits,
     threadgroup metal::atomic_uint& hit_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint g_2 = 0u;
     uint h = {};
-    if (li_4 == 0u) {
+    if (li_5 == 0u) {
         metal::atomic_store_explicit(&list_count, 0u, metal::memory_order_relaxed);
     }
     uint _e14 = group_count(grid.x, grid.y, grid.z, grid.w);
-    uint2 loop_bound_2 = uint2(4294967295u);
-    bool loop_init_2 = true;
+    uint2 loop_bound_4 = uint2(4294967295u);
+    bool loop_init_4 = true;
     while(true) {
-        if (metal::all(loop_bound_2 == uint2(0u))) { break; }
-        loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
-        if (!loop_init_2) {
-            uint _e101 = g_2;
-            g_2 = _e101 + 1u;
+        if (metal::all(loop_bound_4 == uint2(0u))) { break; }
+        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+        if (!loop_init_4) {
+            uint _e103 = g_2;
+            g_2 = _e103 + 1u;
         }
-        loop_init_2 = false;
+        loop_init_4 = false;
         uint _e17 = g_2;
         if (_e17 < _e14) {
         } else {
@@ -611,7 +739,7 @@ void cull_tile(
         {
             uint _e20 = g_2;
             GpuBox gb = boxes[groups_at + _e20];
-            bool _e26 = box_overlaps_box(gb.lo, gb.hi, lo_1, hi_1);
+            bool _e26 = box_overlaps_box(gb.lo, gb.hi, lo_2, hi_2);
             if (!(_e26)) {
                 continue;
             }
@@ -620,32 +748,32 @@ void cull_tile(
             uint first = clusters_at + _e33;
             uint _e35 = g_2;
             uint _e40 = group_clusters(_e35, grid.x, grid.y, grid.z, grid.w);
-            if (li_4 == 0u) {
+            if (li_5 == 0u) {
                 metal::atomic_store_explicit(&hit_count, 0u, metal::memory_order_relaxed);
             }
             metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-            if (li_4 < _e40) {
-                GpuBox cb = boxes[first + li_4];
-                bool _e52 = box_overlaps_box(cb.lo, cb.hi, lo_1, hi_1);
+            if (li_5 < _e40) {
+                GpuBox cb = boxes[first + li_5];
+                bool _e52 = box_overlaps_box(cb.lo, cb.hi, lo_2, hi_2);
                 if (_e52) {
                     uint _e56 = metal::atomic_fetch_add_explicit(&hit_count, 1u, metal::memory_order_relaxed);
-                    cluster_hits.inner[_e56] = first + li_4;
+                    cluster_hits.inner[_e56] = first + li_5;
                 }
             }
             metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
             uint unnamed_1 = metal::atomic_load_explicit(&hit_count, metal::memory_order_relaxed);
             metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
             h = 0u;
-            uint2 loop_bound_3 = uint2(4294967295u);
-            bool loop_init_3 = true;
+            uint2 loop_bound_5 = uint2(4294967295u);
+            bool loop_init_5 = true;
             while(true) {
-                if (metal::all(loop_bound_3 == uint2(0u))) { break; }
-                loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-                if (!loop_init_3) {
-                    uint _e98 = h;
-                    h = _e98 + 1u;
+                if (metal::all(loop_bound_5 == uint2(0u))) { break; }
+                loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+                if (!loop_init_5) {
+                    uint _e100 = h;
+                    h = _e100 + 1u;
                 }
-                loop_init_3 = false;
+                loop_init_5 = false;
                 uint _e63 = h;
                 if (_e63 < unnamed_1) {
                 } else {
@@ -656,24 +784,25 @@ void cull_tile(
                     uint unnamed_2 = metal::atomic_load_explicit(&list_count, metal::memory_order_relaxed);
                     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
                     if ((unnamed_2 + CLUSTER) > MAX_TILE_LIGHTS) {
-                        shade_list(unnamed_2, params, lights, r2_2, pos, nrm, valid, e, kept, tile_lights, _buffer_sizes);
+                        shade_list(unnamed_2, params, lights, r2_2, pos, nrm, valid, e, kept, quarter_bit, tile_lights, _buffer_sizes);
                         metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-                        if (li_4 == 0u) {
+                        if (li_5 == 0u) {
                             metal::atomic_store_explicit(&list_count, 0u, metal::memory_order_relaxed);
                         }
                         metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
                     }
                     uint _e76 = h;
                     uint _e78 = cluster_hits.inner[_e76];
-                    uint _e79 = cluster_slot(_e78, li_4, params, near_slots, _buffer_sizes);
+                    uint _e79 = cluster_slot(_e78, li_5, params, near_slots, _buffer_sizes);
                     GpuLight l_1 = lights[_e79];
                     if (metal::any(l_1.intensity != metal::float3(0.0))) {
-                        float _e89 = cull_r2_of(_e79, params, r2_2, _buffer_sizes);
-                        float _e90 = cull_radius(_e89);
-                        bool _e91 = sphere_overlaps_aabb(l_1.p0_, _e90, lo_1, hi_1);
+                        float _e88 = cull_r2_of(_e79, params, r2_2, _buffer_sizes);
+                        float _e89 = cull_radius(_e88);
+                        bool _e91 = sphere_overlaps_aabb(l_1.p0_, _e89, lo_2, hi_2);
                         if (_e91) {
                             uint _e95 = metal::atomic_fetch_add_explicit(&list_count, 1u, metal::memory_order_relaxed);
-                            tile_lights.inner[_e95] = _e79;
+                            uint _e98 = list_entry(_e79, l_1.p0_, _e89, quarter_lo, quarter_hi);
+                            tile_lights.inner[_e95] = _e98;
                         }
                     }
                 }
@@ -684,7 +813,7 @@ void cull_tile(
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
     uint unnamed_3 = metal::atomic_load_explicit(&list_count, metal::memory_order_relaxed);
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-    shade_list(unnamed_3, params, lights, r2_2, pos, nrm, valid, e, kept, tile_lights, _buffer_sizes);
+    shade_list(unnamed_3, params, lights, r2_2, pos, nrm, valid, e, kept, quarter_bit, tile_lights, _buffer_sizes);
     return;
 }
 
@@ -706,9 +835,11 @@ kernel void main_(
 , device type_11 const& boxes [[user(fake0)]]
 , device type_5 const& r2_2 [[user(fake0)]]
 , device type_12& irradiance [[user(fake0)]]
-, threadgroup type_14& tile_lights
+, threadgroup type_14& quarter_lo
+, threadgroup type_14& quarter_hi
+, threadgroup type_16& tile_lights
 , threadgroup metal::atomic_uint& list_count
-, threadgroup type_16& cluster_hits
+, threadgroup type_18& cluster_hits
 , threadgroup metal::atomic_uint& hit_count
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
@@ -717,10 +848,13 @@ kernel void main_(
     bool valid = {};
     metal::float3 e = {};
     uint kept = {};
+    uint quarter_bit = {};
     if (li == 0u) {
         wg_lo = {};
         wg_hi = {};
         wg_box = {};
+        quarter_lo = {};
+        quarter_hi = {};
         tile_lights = {};
         metal::atomic_store_explicit(&list_count, 0, metal::memory_order_relaxed);
         cluster_hits = {};
@@ -743,10 +877,11 @@ kernel void main_(
     WorkgroupBox _e30 = load_receiver(li, pix_1, inside_1, wg_lo, wg_hi, wg_box, view, position_tex, normal_tex, pos, nrm, valid);
     bool _e31 = box_is_empty(_e30);
     if (!(_e31)) {
+        quarter_boxes(li, lid, wg_lo, wg_hi, pos, valid, quarter_lo, quarter_hi, quarter_bit);
         metal::uint4 _e37 = params.near_grid;
         uint _e40 = params.near_clusters_at;
         uint _e43 = params.near_groups_at;
-        cull_tile(li, _e30.lo, _e30.hi, _e37, _e40, _e43, params, lights, near_slots, boxes, r2_2, pos, nrm, valid, e, kept, tile_lights, list_count, cluster_hits, hit_count, _buffer_sizes);
+        cull_tile(li, _e30.lo, _e30.hi, _e37, _e40, _e43, params, lights, near_slots, boxes, r2_2, pos, nrm, valid, e, kept, quarter_lo, quarter_hi, quarter_bit, tile_lights, list_count, cluster_hits, hit_count, _buffer_sizes);
     }
     bool _e45 = valid;
     if (_e45) {

@@ -81,9 +81,12 @@ struct type_16 {
     metal::atomic_uint inner[7];
 };
 struct type_17 {
+    metal::float3 inner[4];
+};
+struct type_19 {
     uint inner[1024];
 };
-struct type_18 {
+struct type_20 {
     uint inner[64];
 };
 constant uint LIGHT_POINT = 0u;
@@ -152,6 +155,9 @@ constant uint TILE = 8u;
 constant uint THREADS = 64u;
 constant uint BOX_THREADS = 64u;
 constant uint MAX_TILE_LIGHTS = 1024u;
+constant uint HALF = 4u;
+constant uint QUARTER_SHIFT = 28u;
+constant uint SLOT_BITS = 268435455u;
 
 float to_f32_(
     uint u
@@ -188,8 +194,8 @@ bool sphere_overlaps_aabb(
     metal::float3 bmin,
     metal::float3 bmax
 ) {
-    metal::float3 q = metal::clamp(c, bmin, bmax);
-    metal::float3 v_1 = q - c;
+    metal::float3 q_1 = metal::clamp(c, bmin, bmax);
+    metal::float3 v_1 = q_1 - c;
     return metal::dot(v_1, v_1) <= (r * r);
 }
 
@@ -420,8 +426,8 @@ metal::float4 surface_at(
     metal::int2 texel,
     metal::texture2d<float, metal::access::sample> position_tex
 ) {
-    metal::float4 p_2 = position_tex.read(metal::uint2(texel), 0);
-    return (p_2.w > 0.0) ? metal::float4(p_2.xyz, 1.0) : metal::float4(0.0);
+    metal::float4 p_4 = position_tex.read(metal::uint2(texel), 0);
+    return (p_4.w > 0.0) ? metal::float4(p_4.xyz, 1.0) : metal::float4(0.0);
 }
 
 GbTexel gbuffer_at(
@@ -628,6 +634,122 @@ float cull_r2_of(
     return _e4;
 }
 
+void quarter_boxes(
+    uint li_8,
+    metal::uint3 lid_1,
+    threadgroup type_7& wg_lo,
+    threadgroup type_7& wg_hi,
+    thread metal::float3& pos,
+    thread bool& valid,
+    threadgroup type_17& quarter_lo,
+    threadgroup type_17& quarter_hi,
+    thread uint& quarter_bit
+) {
+    metal::float3 lo_1 = metal::float3(340282350000000000000000000000000000000.0);
+    metal::float3 hi_1 = metal::float3(-340282350000000000000000000000000000000.0);
+    uint y = {};
+    uint x = {};
+    quarter_bit = 1u << ((QUARTER_SHIFT + ((lid_1.x >= HALF) ? 1u : 0u)) + ((lid_1.y >= HALF) ? 2u : 0u));
+    metal::float3 _e25 = pos;
+    bool _e27 = valid;
+    wg_lo.inner[li_8] = _e27 ? _e25 : metal::float3(340282350000000000000000000000000000000.0);
+    metal::float3 _e34 = pos;
+    bool _e36 = valid;
+    wg_hi.inner[li_8] = _e36 ? _e34 : metal::float3(-340282350000000000000000000000000000000.0);
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    if (li_8 < 4u) {
+        uint x0_ = naga_mod(li_8, 2u) * HALF;
+        uint y0_ = naga_div(li_8, 2u) * HALF;
+        y = y0_;
+        uint2 loop_bound_1 = uint2(4294967295u);
+        bool loop_init_1 = true;
+        while(true) {
+            if (metal::all(loop_bound_1 == uint2(0u))) { break; }
+            loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+            if (!loop_init_1) {
+                uint _e92 = y;
+                y = _e92 + 1u;
+            }
+            loop_init_1 = false;
+            uint _e55 = y;
+            if (_e55 < metal::min(y0_ + HALF, TILE)) {
+            } else {
+                break;
+            }
+            {
+                x = x0_;
+                uint2 loop_bound_2 = uint2(4294967295u);
+                bool loop_init_2 = true;
+                while(true) {
+                    if (metal::all(loop_bound_2 == uint2(0u))) { break; }
+                    loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
+                    if (!loop_init_2) {
+                        uint _e89 = x;
+                        x = _e89 + 1u;
+                    }
+                    loop_init_2 = false;
+                    uint _e62 = x;
+                    if (_e62 < metal::min(x0_ + HALF, TILE)) {
+                    } else {
+                        break;
+                    }
+                    {
+                        metal::float3 _e68 = lo_1;
+                        uint _e70 = y;
+                        uint _e73 = x;
+                        metal::float3 _e76 = wg_lo.inner[(_e70 * TILE) + _e73];
+                        lo_1 = metal::min(_e68, _e76);
+                        metal::float3 _e78 = hi_1;
+                        uint _e80 = y;
+                        uint _e83 = x;
+                        metal::float3 _e86 = wg_hi.inner[(_e80 * TILE) + _e83];
+                        hi_1 = metal::max(_e78, _e86);
+                    }
+                }
+            }
+        }
+        metal::float3 _e96 = lo_1;
+        quarter_lo.inner[li_8] = _e96;
+        metal::float3 _e99 = hi_1;
+        quarter_hi.inner[li_8] = _e99;
+    }
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    return;
+}
+
+uint quarter_meets(
+    uint q,
+    metal::float3 p_2,
+    float radius,
+    threadgroup type_16& wg_counts,
+    threadgroup type_17& quarter_lo,
+    threadgroup type_17& quarter_hi
+) {
+    metal::float3 lo_3 = quarter_lo.inner[q];
+    metal::float3 hi_3 = quarter_hi.inner[q];
+    if (lo_3.x > hi_3.x) {
+        return 0u;
+    }
+    count_one(COUNT_SPHERE_TESTS, wg_counts);
+    bool _e19 = sphere_overlaps_aabb(p_2, radius, lo_3, hi_3);
+    return _e19 ? (1u << (QUARTER_SHIFT + q)) : 0u;
+}
+
+uint list_entry(
+    uint slot_3,
+    metal::float3 p_3,
+    float radius_1,
+    threadgroup type_16& wg_counts,
+    threadgroup type_17& quarter_lo,
+    threadgroup type_17& quarter_hi
+) {
+    uint _e4 = quarter_meets(0u, p_3, radius_1, wg_counts, quarter_lo, quarter_hi);
+    uint _e7 = quarter_meets(1u, p_3, radius_1, wg_counts, quarter_lo, quarter_hi);
+    uint _e10 = quarter_meets(2u, p_3, radius_1, wg_counts, quarter_lo, quarter_hi);
+    uint _e13 = quarter_meets(3u, p_3, radius_1, wg_counts, quarter_lo, quarter_hi);
+    return (((slot_3 | _e4) | _e7) | _e10) | _e13;
+}
+
 void shade_list(
     uint count,
     constant VplParams& params,
@@ -640,9 +762,11 @@ void shade_list(
     thread bool& valid,
     thread metal::float3& e,
     thread uint& kept,
-    threadgroup type_17& tile_lights,
+    thread uint& quarter_bit,
+    threadgroup type_19& tile_lights,
     constant _mslBufferSizes& _buffer_sizes
 ) {
+    uint tested = 0u;
     uint m = 0u;
     bool _e2 = valid;
     if (!(_e2)) {
@@ -650,52 +774,60 @@ void shade_list(
     }
     float _e5 = interleave_flux_scale(P);
     float unscale = 1.0 / _e5;
-    uint2 loop_bound_1 = uint2(4294967295u);
-    bool loop_init_1 = true;
+    uint2 loop_bound_3 = uint2(4294967295u);
+    bool loop_init_3 = true;
     while(true) {
-        if (metal::all(loop_bound_1 == uint2(0u))) { break; }
-        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
-        if (!loop_init_1) {
-            uint _e55 = m;
-            m = _e55 + 1u;
+        if (metal::all(loop_bound_3 == uint2(0u))) { break; }
+        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+        if (!loop_init_3) {
+            uint _e67 = m;
+            m = _e67 + 1u;
         }
-        loop_init_1 = false;
-        uint _e10 = m;
-        if (_e10 < count) {
+        loop_init_3 = false;
+        uint _e12 = m;
+        if (_e12 < count) {
         } else {
             break;
         }
         {
-            uint _e13 = m;
-            uint slot_3 = tile_lights.inner[_e13];
-            GpuLight l = lights[slot_3];
-            metal::float3 _e20 = pos;
-            metal::float3 v_3 = _e20 - l.p0_;
-            float _e25 = rt2_2[slot_3];
-            float _e27 = vpl_near_range2_(_e25, P);
-            float _e28 = near_r2_of(slot_3, r2_5, _buffer_sizes);
-            float _e32 = params.near_r2_;
-            float _e33 = vpl_near_slc_share(_e27, _e28, metal::dot(v_3, v_3), _e32);
-            if (_e33 > 0.0) {
-                metal::float3 _e38 = nrm;
-                float _e41 = params.min_d2_;
-                float _e42 = vpl_transfer(l.p1_, _e38, v_3, _e41);
-                float t_1 = (_e42 * _e33) * unscale;
-                metal::float3 _e46 = e;
-                e = _e46 + (l.intensity * t_1);
-                uint _e51 = kept;
-                kept = _e51 + 1u;
+            uint _e15 = m;
+            uint entry = tile_lights.inner[_e15];
+            uint _e19 = quarter_bit;
+            if ((entry & _e19) == 0u) {
+                continue;
+            }
+            uint _e23 = tested;
+            tested = _e23 + 1u;
+            uint slot_4 = entry & SLOT_BITS;
+            GpuLight l = lights[slot_4];
+            metal::float3 _e32 = pos;
+            metal::float3 v_3 = _e32 - l.p0_;
+            float _e37 = rt2_2[slot_4];
+            float _e39 = vpl_near_range2_(_e37, P);
+            float _e40 = near_r2_of(slot_4, r2_5, _buffer_sizes);
+            float _e44 = params.near_r2_;
+            float _e45 = vpl_near_slc_share(_e39, _e40, metal::dot(v_3, v_3), _e44);
+            if (_e45 > 0.0) {
+                metal::float3 _e50 = nrm;
+                float _e53 = params.min_d2_;
+                float _e54 = vpl_transfer(l.p1_, _e50, v_3, _e53);
+                float t_1 = (_e54 * _e45) * unscale;
+                metal::float3 _e58 = e;
+                e = _e58 + (l.intensity * t_1);
+                uint _e63 = kept;
+                kept = _e63 + 1u;
             }
         }
     }
-    count_add(COUNT_TESTED, count, wg_counts);
+    uint _e70 = tested;
+    count_add(COUNT_TESTED, _e70, wg_counts);
     return;
 }
 
 void cull_tile(
-    uint li_8,
-    metal::float3 lo_1,
-    metal::float3 hi_1,
+    uint li_9,
+    metal::float3 lo_2,
+    metal::float3 hi_2,
     metal::uint4 grid,
     uint clusters_at,
     uint groups_at,
@@ -711,29 +843,32 @@ void cull_tile(
     thread bool& valid,
     thread metal::float3& e,
     thread uint& kept,
-    threadgroup type_17& tile_lights,
+    threadgroup type_17& quarter_lo,
+    threadgroup type_17& quarter_hi,
+    thread uint& quarter_bit,
+    threadgroup type_19& tile_lights,
     threadgroup metal::atomic_uint& list_count,
-    threadgroup type_18& cluster_hits,
+    threadgroup type_20& cluster_hits,
     threadgroup metal::atomic_uint& hit_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint g_2 = 0u;
     uint h = {};
-    if (li_8 == 0u) {
+    if (li_9 == 0u) {
         metal::atomic_store_explicit(&list_count, 0u, metal::memory_order_relaxed);
     }
     uint _e14 = group_count(grid.x, grid.y, grid.z, grid.w);
-    count_tests(li_8, COUNT_GROUP_TESTS, _e14, wg_counts);
-    uint2 loop_bound_2 = uint2(4294967295u);
-    bool loop_init_2 = true;
+    count_tests(li_9, COUNT_GROUP_TESTS, _e14, wg_counts);
+    uint2 loop_bound_4 = uint2(4294967295u);
+    bool loop_init_4 = true;
     while(true) {
-        if (metal::all(loop_bound_2 == uint2(0u))) { break; }
-        loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
-        if (!loop_init_2) {
-            uint _e104 = g_2;
-            g_2 = _e104 + 1u;
+        if (metal::all(loop_bound_4 == uint2(0u))) { break; }
+        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+        if (!loop_init_4) {
+            uint _e106 = g_2;
+            g_2 = _e106 + 1u;
         }
-        loop_init_2 = false;
+        loop_init_4 = false;
         uint _e18 = g_2;
         if (_e18 < _e14) {
         } else {
@@ -742,7 +877,7 @@ void cull_tile(
         {
             uint _e21 = g_2;
             GpuBox gb = boxes[groups_at + _e21];
-            bool _e27 = box_overlaps_box(gb.lo, gb.hi, lo_1, hi_1);
+            bool _e27 = box_overlaps_box(gb.lo, gb.hi, lo_2, hi_2);
             if (!(_e27)) {
                 continue;
             }
@@ -751,33 +886,33 @@ void cull_tile(
             uint first = clusters_at + _e34;
             uint _e36 = g_2;
             uint _e41 = group_clusters(_e36, grid.x, grid.y, grid.z, grid.w);
-            count_tests(li_8, COUNT_CLUSTER_TESTS, _e41, wg_counts);
-            if (li_8 == 0u) {
+            count_tests(li_9, COUNT_CLUSTER_TESTS, _e41, wg_counts);
+            if (li_9 == 0u) {
                 metal::atomic_store_explicit(&hit_count, 0u, metal::memory_order_relaxed);
             }
             metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-            if (li_8 < _e41) {
-                GpuBox cb = boxes[first + li_8];
-                bool _e54 = box_overlaps_box(cb.lo, cb.hi, lo_1, hi_1);
+            if (li_9 < _e41) {
+                GpuBox cb = boxes[first + li_9];
+                bool _e54 = box_overlaps_box(cb.lo, cb.hi, lo_2, hi_2);
                 if (_e54) {
                     uint _e58 = metal::atomic_fetch_add_explicit(&hit_count, 1u, metal::memory_order_relaxed);
-                    cluster_hits.inner[_e58] = first + li_8;
+                    cluster_hits.inner[_e58] = first + li_9;
                 }
             }
             metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
             uint unnamed_1 = metal::atomic_load_explicit(&hit_count, metal::memory_order_relaxed);
             metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
             h = 0u;
-            uint2 loop_bound_3 = uint2(4294967295u);
-            bool loop_init_3 = true;
+            uint2 loop_bound_5 = uint2(4294967295u);
+            bool loop_init_5 = true;
             while(true) {
-                if (metal::all(loop_bound_3 == uint2(0u))) { break; }
-                loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-                if (!loop_init_3) {
-                    uint _e101 = h;
-                    h = _e101 + 1u;
+                if (metal::all(loop_bound_5 == uint2(0u))) { break; }
+                loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+                if (!loop_init_5) {
+                    uint _e103 = h;
+                    h = _e103 + 1u;
                 }
-                loop_init_3 = false;
+                loop_init_5 = false;
                 uint _e65 = h;
                 if (_e65 < unnamed_1) {
                 } else {
@@ -788,25 +923,26 @@ void cull_tile(
                     uint unnamed_2 = metal::atomic_load_explicit(&list_count, metal::memory_order_relaxed);
                     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
                     if ((unnamed_2 + CLUSTER) > MAX_TILE_LIGHTS) {
-                        shade_list(unnamed_2, params, lights, rt2_2, r2_5, wg_counts, pos, nrm, valid, e, kept, tile_lights, _buffer_sizes);
+                        shade_list(unnamed_2, params, lights, rt2_2, r2_5, wg_counts, pos, nrm, valid, e, kept, quarter_bit, tile_lights, _buffer_sizes);
                         metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-                        if (li_8 == 0u) {
+                        if (li_9 == 0u) {
                             metal::atomic_store_explicit(&list_count, 0u, metal::memory_order_relaxed);
                         }
                         metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
                     }
                     uint _e78 = h;
                     uint _e80 = cluster_hits.inner[_e78];
-                    uint _e81 = cluster_slot(_e80, li_8, params, near_slots, _buffer_sizes);
+                    uint _e81 = cluster_slot(_e80, li_9, params, near_slots, _buffer_sizes);
                     GpuLight l_1 = lights[_e81];
                     if (metal::any(l_1.intensity != metal::float3(0.0))) {
                         count_one(COUNT_SPHERE_TESTS, wg_counts);
-                        float _e92 = cull_r2_of(_e81, params, r2_5, _buffer_sizes);
-                        float _e93 = cull_radius(_e92);
-                        bool _e94 = sphere_overlaps_aabb(l_1.p0_, _e93, lo_1, hi_1);
+                        float _e91 = cull_r2_of(_e81, params, r2_5, _buffer_sizes);
+                        float _e92 = cull_radius(_e91);
+                        bool _e94 = sphere_overlaps_aabb(l_1.p0_, _e92, lo_2, hi_2);
                         if (_e94) {
                             uint _e98 = metal::atomic_fetch_add_explicit(&list_count, 1u, metal::memory_order_relaxed);
-                            tile_lights.inner[_e98] = _e81;
+                            uint _e101 = list_entry(_e81, l_1.p0_, _e92, wg_counts, quarter_lo, quarter_hi);
+                            tile_lights.inner[_e98] = _e101;
                         }
                     }
                 }
@@ -817,7 +953,7 @@ void cull_tile(
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
     uint unnamed_3 = metal::atomic_load_explicit(&list_count, metal::memory_order_relaxed);
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-    shade_list(unnamed_3, params, lights, rt2_2, r2_5, wg_counts, pos, nrm, valid, e, kept, tile_lights, _buffer_sizes);
+    shade_list(unnamed_3, params, lights, rt2_2, r2_5, wg_counts, pos, nrm, valid, e, kept, quarter_bit, tile_lights, _buffer_sizes);
     return;
 }
 
@@ -842,9 +978,11 @@ kernel void main_(
 , device type_12& irradiance [[user(fake0)]]
 , device type_14& counters [[user(fake0)]]
 , threadgroup type_16& wg_counts
-, threadgroup type_17& tile_lights
+, threadgroup type_17& quarter_lo
+, threadgroup type_17& quarter_hi
+, threadgroup type_19& tile_lights
 , threadgroup metal::atomic_uint& list_count
-, threadgroup type_18& cluster_hits
+, threadgroup type_20& cluster_hits
 , threadgroup metal::atomic_uint& hit_count
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
@@ -853,6 +991,7 @@ kernel void main_(
     bool valid = {};
     metal::float3 e = {};
     uint kept = {};
+    uint quarter_bit = {};
     if (li == 0u) {
         wg_lo = {};
         wg_hi = {};
@@ -860,6 +999,8 @@ kernel void main_(
         for (int __i0 = 0; __i0 < 7; __i0++) {
             metal::atomic_store_explicit(&wg_counts.inner[__i0], 0, metal::memory_order_relaxed);
         }
+        quarter_lo = {};
+        quarter_hi = {};
         tile_lights = {};
         metal::atomic_store_explicit(&list_count, 0, metal::memory_order_relaxed);
         cluster_hits = {};
@@ -882,11 +1023,12 @@ kernel void main_(
     WorkgroupBox _e30 = load_receiver(li, pix_1, inside_1, wg_lo, wg_hi, wg_box, view, position_tex, normal_tex, wg_counts, pos, nrm, valid);
     bool _e31 = box_is_empty(_e30);
     if (!(_e31)) {
+        quarter_boxes(li, lid, wg_lo, wg_hi, pos, valid, quarter_lo, quarter_hi, quarter_bit);
         count_tests(li, COUNT_TILES, 1u, wg_counts);
         metal::uint4 _e39 = params.near_grid;
         uint _e42 = params.near_clusters_at;
         uint _e45 = params.near_groups_at;
-        cull_tile(li, _e30.lo, _e30.hi, _e39, _e42, _e45, params, lights, near_slots, boxes, rt2_2, r2_5, wg_counts, pos, nrm, valid, e, kept, tile_lights, list_count, cluster_hits, hit_count, _buffer_sizes);
+        cull_tile(li, _e30.lo, _e30.hi, _e39, _e42, _e45, params, lights, near_slots, boxes, rt2_2, r2_5, wg_counts, pos, nrm, valid, e, kept, quarter_lo, quarter_hi, quarter_bit, tile_lights, list_count, cluster_hits, hit_count, _buffer_sizes);
     }
     count_receiver(li, counters, wg_counts, valid, kept, _buffer_sizes);
     bool _e47 = valid;

@@ -93,9 +93,12 @@ struct Glossy {
     char _pad3[3];
 };
 struct type_15 {
-    uint inner[1024];
+    metal::float3 inner[4];
 };
 struct type_17 {
+    uint inner[1024];
+};
+struct type_19 {
     uint inner[64];
 };
 constant uint LIGHT_POINT = 0u;
@@ -164,6 +167,9 @@ constant uint TILE = 8u;
 constant uint THREADS = 64u;
 constant uint BOX_THREADS = 64u;
 constant uint MAX_TILE_LIGHTS = 1024u;
+constant uint HALF = 4u;
+constant uint QUARTER_SHIFT = 28u;
+constant uint SLOT_BITS = 268435455u;
 
 float to_f32_(
     uint u
@@ -200,8 +206,8 @@ bool sphere_overlaps_aabb(
     metal::float3 bmin,
     metal::float3 bmax
 ) {
-    metal::float3 q = metal::clamp(c, bmin, bmax);
-    metal::float3 v_6 = q - c;
+    metal::float3 q_1 = metal::clamp(c, bmin, bmax);
+    metal::float3 v_6 = q_1 - c;
     return metal::dot(v_6, v_6) <= (r * r);
 }
 
@@ -613,8 +619,8 @@ metal::float4 surface_at(
     metal::int2 texel,
     metal::texture2d<float, metal::access::sample> position_tex
 ) {
-    metal::float4 p_2 = position_tex.read(metal::uint2(texel), 0);
-    return (p_2.w > 0.0) ? metal::float4(p_2.xyz, 1.0) : metal::float4(0.0);
+    metal::float4 p_4 = position_tex.read(metal::uint2(texel), 0);
+    return (p_4.w > 0.0) ? metal::float4(p_4.xyz, 1.0) : metal::float4(0.0);
 }
 
 GbTexel gbuffer_at(
@@ -777,6 +783,119 @@ float cull_r2_of(
     return _e4;
 }
 
+void quarter_boxes(
+    uint li_4,
+    metal::uint3 lid_1,
+    threadgroup type_7& wg_lo,
+    threadgroup type_7& wg_hi,
+    thread metal::float3& pos,
+    thread bool& valid,
+    threadgroup type_15& quarter_lo,
+    threadgroup type_15& quarter_hi,
+    thread uint& quarter_bit
+) {
+    metal::float3 lo_1 = metal::float3(340282350000000000000000000000000000000.0);
+    metal::float3 hi_1 = metal::float3(-340282350000000000000000000000000000000.0);
+    uint y = {};
+    uint x_1 = {};
+    quarter_bit = 1u << ((QUARTER_SHIFT + ((lid_1.x >= HALF) ? 1u : 0u)) + ((lid_1.y >= HALF) ? 2u : 0u));
+    metal::float3 _e25 = pos;
+    bool _e27 = valid;
+    wg_lo.inner[li_4] = _e27 ? _e25 : metal::float3(340282350000000000000000000000000000000.0);
+    metal::float3 _e34 = pos;
+    bool _e36 = valid;
+    wg_hi.inner[li_4] = _e36 ? _e34 : metal::float3(-340282350000000000000000000000000000000.0);
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    if (li_4 < 4u) {
+        uint x0_ = naga_mod(li_4, 2u) * HALF;
+        uint y0_ = naga_div(li_4, 2u) * HALF;
+        y = y0_;
+        uint2 loop_bound_1 = uint2(4294967295u);
+        bool loop_init_1 = true;
+        while(true) {
+            if (metal::all(loop_bound_1 == uint2(0u))) { break; }
+            loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+            if (!loop_init_1) {
+                uint _e92 = y;
+                y = _e92 + 1u;
+            }
+            loop_init_1 = false;
+            uint _e55 = y;
+            if (_e55 < metal::min(y0_ + HALF, TILE)) {
+            } else {
+                break;
+            }
+            {
+                x_1 = x0_;
+                uint2 loop_bound_2 = uint2(4294967295u);
+                bool loop_init_2 = true;
+                while(true) {
+                    if (metal::all(loop_bound_2 == uint2(0u))) { break; }
+                    loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
+                    if (!loop_init_2) {
+                        uint _e89 = x_1;
+                        x_1 = _e89 + 1u;
+                    }
+                    loop_init_2 = false;
+                    uint _e62 = x_1;
+                    if (_e62 < metal::min(x0_ + HALF, TILE)) {
+                    } else {
+                        break;
+                    }
+                    {
+                        metal::float3 _e68 = lo_1;
+                        uint _e70 = y;
+                        uint _e73 = x_1;
+                        metal::float3 _e76 = wg_lo.inner[(_e70 * TILE) + _e73];
+                        lo_1 = metal::min(_e68, _e76);
+                        metal::float3 _e78 = hi_1;
+                        uint _e80 = y;
+                        uint _e83 = x_1;
+                        metal::float3 _e86 = wg_hi.inner[(_e80 * TILE) + _e83];
+                        hi_1 = metal::max(_e78, _e86);
+                    }
+                }
+            }
+        }
+        metal::float3 _e96 = lo_1;
+        quarter_lo.inner[li_4] = _e96;
+        metal::float3 _e99 = hi_1;
+        quarter_hi.inner[li_4] = _e99;
+    }
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    return;
+}
+
+uint quarter_meets(
+    uint q,
+    metal::float3 p_2,
+    float radius,
+    threadgroup type_15& quarter_lo,
+    threadgroup type_15& quarter_hi
+) {
+    metal::float3 lo_3 = quarter_lo.inner[q];
+    metal::float3 hi_3 = quarter_hi.inner[q];
+    if (lo_3.x > hi_3.x) {
+        return 0u;
+    }
+    bool _e18 = sphere_overlaps_aabb(p_2, radius, lo_3, hi_3);
+    return _e18 ? (1u << (QUARTER_SHIFT + q)) : 0u;
+}
+
+uint list_entry(
+    uint slot_3,
+    metal::float3 p_3,
+    float radius_1,
+    threadgroup type_15& quarter_lo,
+    threadgroup type_15& quarter_hi
+) {
+    uint _e4 = quarter_meets(0u, p_3, radius_1, quarter_lo, quarter_hi);
+    uint _e7 = quarter_meets(1u, p_3, radius_1, quarter_lo, quarter_hi);
+    uint _e10 = quarter_meets(2u, p_3, radius_1, quarter_lo, quarter_hi);
+    uint _e13 = quarter_meets(3u, p_3, radius_1, quarter_lo, quarter_hi);
+    return (((slot_3 | _e4) | _e7) | _e10) | _e13;
+}
+
 void shade_list(
     uint count,
     constant VplParams& params,
@@ -790,7 +909,8 @@ void shade_list(
     thread uint& kept,
     thread metal::float3& s,
     thread Glossy& g_4,
-    threadgroup type_15& tile_lights,
+    thread uint& quarter_bit,
+    threadgroup type_17& tile_lights,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint m = 0u;
@@ -800,16 +920,16 @@ void shade_list(
     }
     float _e5 = interleave_flux_scale(P);
     float unscale = 1.0 / _e5;
-    uint2 loop_bound_1 = uint2(4294967295u);
-    bool loop_init_1 = true;
+    uint2 loop_bound_3 = uint2(4294967295u);
+    bool loop_init_3 = true;
     while(true) {
-        if (metal::all(loop_bound_1 == uint2(0u))) { break; }
-        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
-        if (!loop_init_1) {
-            uint _e63 = m;
-            m = _e63 + 1u;
+        if (metal::all(loop_bound_3 == uint2(0u))) { break; }
+        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+        if (!loop_init_3) {
+            uint _e70 = m;
+            m = _e70 + 1u;
         }
-        loop_init_1 = false;
+        loop_init_3 = false;
         uint _e10 = m;
         if (_e10 < count) {
         } else {
@@ -817,29 +937,34 @@ void shade_list(
         }
         {
             uint _e13 = m;
-            uint slot_3 = tile_lights.inner[_e13];
-            GpuLight l_5 = lights[slot_3];
-            metal::float3 _e20 = pos;
-            metal::float3 v_8 = _e20 - l_5.p0_;
-            float _e25 = rt2_2[slot_3];
-            float _e27 = vpl_near_range2_(_e25, P);
-            float _e28 = near_r2_of(slot_3, r2_5, _buffer_sizes);
-            float _e32 = params.near_r2_;
-            float _e33 = vpl_near_slc_share(_e27, _e28, metal::dot(v_8, v_8), _e32);
-            if (_e33 > 0.0) {
-                metal::float3 _e38 = nrm;
-                float _e41 = params.min_d2_;
-                float _e42 = vpl_transfer(l_5.p1_, _e38, v_8, _e41);
-                float t_3 = (_e42 * _e33) * unscale;
-                metal::float3 _e46 = e;
-                e = _e46 + (l_5.intensity * t_3);
-                metal::float3 _e51 = s;
-                Glossy _e53 = g_4;
-                metal::float3 _e55 = nrm;
-                metal::float3 _e56 = glossy_term(_e53, l_5, _e55, v_8, t_3);
-                s = _e51 + _e56;
-                uint _e59 = kept;
-                kept = _e59 + 1u;
+            uint entry = tile_lights.inner[_e13];
+            uint _e17 = quarter_bit;
+            if ((entry & _e17) == 0u) {
+                continue;
+            }
+            uint slot_4 = entry & SLOT_BITS;
+            GpuLight l_5 = lights[slot_4];
+            metal::float3 _e27 = pos;
+            metal::float3 v_8 = _e27 - l_5.p0_;
+            float _e32 = rt2_2[slot_4];
+            float _e34 = vpl_near_range2_(_e32, P);
+            float _e35 = near_r2_of(slot_4, r2_5, _buffer_sizes);
+            float _e39 = params.near_r2_;
+            float _e40 = vpl_near_slc_share(_e34, _e35, metal::dot(v_8, v_8), _e39);
+            if (_e40 > 0.0) {
+                metal::float3 _e45 = nrm;
+                float _e48 = params.min_d2_;
+                float _e49 = vpl_transfer(l_5.p1_, _e45, v_8, _e48);
+                float t_3 = (_e49 * _e40) * unscale;
+                metal::float3 _e53 = e;
+                e = _e53 + (l_5.intensity * t_3);
+                metal::float3 _e58 = s;
+                Glossy _e60 = g_4;
+                metal::float3 _e62 = nrm;
+                metal::float3 _e63 = glossy_term(_e60, l_5, _e62, v_8, t_3);
+                s = _e58 + _e63;
+                uint _e66 = kept;
+                kept = _e66 + 1u;
             }
         }
     }
@@ -847,9 +972,9 @@ void shade_list(
 }
 
 void cull_tile(
-    uint li_4,
-    metal::float3 lo_1,
-    metal::float3 hi_1,
+    uint li_5,
+    metal::float3 lo_2,
+    metal::float3 hi_2,
     metal::uint4 grid,
     uint clusters_at,
     uint groups_at,
@@ -866,28 +991,31 @@ void cull_tile(
     thread uint& kept,
     thread metal::float3& s,
     thread Glossy& g_4,
-    threadgroup type_15& tile_lights,
+    threadgroup type_15& quarter_lo,
+    threadgroup type_15& quarter_hi,
+    thread uint& quarter_bit,
+    threadgroup type_17& tile_lights,
     threadgroup metal::atomic_uint& list_count,
-    threadgroup type_17& cluster_hits,
+    threadgroup type_19& cluster_hits,
     threadgroup metal::atomic_uint& hit_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint g_3 = 0u;
     uint h = {};
-    if (li_4 == 0u) {
+    if (li_5 == 0u) {
         metal::atomic_store_explicit(&list_count, 0u, metal::memory_order_relaxed);
     }
     uint _e14 = group_count(grid.x, grid.y, grid.z, grid.w);
-    uint2 loop_bound_2 = uint2(4294967295u);
-    bool loop_init_2 = true;
+    uint2 loop_bound_4 = uint2(4294967295u);
+    bool loop_init_4 = true;
     while(true) {
-        if (metal::all(loop_bound_2 == uint2(0u))) { break; }
-        loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
-        if (!loop_init_2) {
-            uint _e101 = g_3;
-            g_3 = _e101 + 1u;
+        if (metal::all(loop_bound_4 == uint2(0u))) { break; }
+        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+        if (!loop_init_4) {
+            uint _e103 = g_3;
+            g_3 = _e103 + 1u;
         }
-        loop_init_2 = false;
+        loop_init_4 = false;
         uint _e17 = g_3;
         if (_e17 < _e14) {
         } else {
@@ -896,7 +1024,7 @@ void cull_tile(
         {
             uint _e20 = g_3;
             GpuBox gb = boxes[groups_at + _e20];
-            bool _e26 = box_overlaps_box(gb.lo, gb.hi, lo_1, hi_1);
+            bool _e26 = box_overlaps_box(gb.lo, gb.hi, lo_2, hi_2);
             if (!(_e26)) {
                 continue;
             }
@@ -905,32 +1033,32 @@ void cull_tile(
             uint first = clusters_at + _e33;
             uint _e35 = g_3;
             uint _e40 = group_clusters(_e35, grid.x, grid.y, grid.z, grid.w);
-            if (li_4 == 0u) {
+            if (li_5 == 0u) {
                 metal::atomic_store_explicit(&hit_count, 0u, metal::memory_order_relaxed);
             }
             metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-            if (li_4 < _e40) {
-                GpuBox cb = boxes[first + li_4];
-                bool _e52 = box_overlaps_box(cb.lo, cb.hi, lo_1, hi_1);
+            if (li_5 < _e40) {
+                GpuBox cb = boxes[first + li_5];
+                bool _e52 = box_overlaps_box(cb.lo, cb.hi, lo_2, hi_2);
                 if (_e52) {
                     uint _e56 = metal::atomic_fetch_add_explicit(&hit_count, 1u, metal::memory_order_relaxed);
-                    cluster_hits.inner[_e56] = first + li_4;
+                    cluster_hits.inner[_e56] = first + li_5;
                 }
             }
             metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
             uint unnamed_1 = metal::atomic_load_explicit(&hit_count, metal::memory_order_relaxed);
             metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
             h = 0u;
-            uint2 loop_bound_3 = uint2(4294967295u);
-            bool loop_init_3 = true;
+            uint2 loop_bound_5 = uint2(4294967295u);
+            bool loop_init_5 = true;
             while(true) {
-                if (metal::all(loop_bound_3 == uint2(0u))) { break; }
-                loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-                if (!loop_init_3) {
-                    uint _e98 = h;
-                    h = _e98 + 1u;
+                if (metal::all(loop_bound_5 == uint2(0u))) { break; }
+                loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+                if (!loop_init_5) {
+                    uint _e100 = h;
+                    h = _e100 + 1u;
                 }
-                loop_init_3 = false;
+                loop_init_5 = false;
                 uint _e63 = h;
                 if (_e63 < unnamed_1) {
                 } else {
@@ -941,24 +1069,25 @@ void cull_tile(
                     uint unnamed_2 = metal::atomic_load_explicit(&list_count, metal::memory_order_relaxed);
                     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
                     if ((unnamed_2 + CLUSTER) > MAX_TILE_LIGHTS) {
-                        shade_list(unnamed_2, params, lights, rt2_2, r2_5, pos, nrm, valid, e, kept, s, g_4, tile_lights, _buffer_sizes);
+                        shade_list(unnamed_2, params, lights, rt2_2, r2_5, pos, nrm, valid, e, kept, s, g_4, quarter_bit, tile_lights, _buffer_sizes);
                         metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-                        if (li_4 == 0u) {
+                        if (li_5 == 0u) {
                             metal::atomic_store_explicit(&list_count, 0u, metal::memory_order_relaxed);
                         }
                         metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
                     }
                     uint _e76 = h;
                     uint _e78 = cluster_hits.inner[_e76];
-                    uint _e79 = cluster_slot(_e78, li_4, params, near_slots, _buffer_sizes);
+                    uint _e79 = cluster_slot(_e78, li_5, params, near_slots, _buffer_sizes);
                     GpuLight l_6 = lights[_e79];
                     if (metal::any(l_6.intensity != metal::float3(0.0))) {
-                        float _e89 = cull_r2_of(_e79, params, r2_5, _buffer_sizes);
-                        float _e90 = cull_radius(_e89);
-                        bool _e91 = sphere_overlaps_aabb(l_6.p0_, _e90, lo_1, hi_1);
+                        float _e88 = cull_r2_of(_e79, params, r2_5, _buffer_sizes);
+                        float _e89 = cull_radius(_e88);
+                        bool _e91 = sphere_overlaps_aabb(l_6.p0_, _e89, lo_2, hi_2);
                         if (_e91) {
                             uint _e95 = metal::atomic_fetch_add_explicit(&list_count, 1u, metal::memory_order_relaxed);
-                            tile_lights.inner[_e95] = _e79;
+                            uint _e98 = list_entry(_e79, l_6.p0_, _e89, quarter_lo, quarter_hi);
+                            tile_lights.inner[_e95] = _e98;
                         }
                     }
                 }
@@ -969,7 +1098,7 @@ void cull_tile(
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
     uint unnamed_3 = metal::atomic_load_explicit(&list_count, metal::memory_order_relaxed);
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-    shade_list(unnamed_3, params, lights, rt2_2, r2_5, pos, nrm, valid, e, kept, s, g_4, tile_lights, _buffer_sizes);
+    shade_list(unnamed_3, params, lights, rt2_2, r2_5, pos, nrm, valid, e, kept, s, g_4, quarter_bit, tile_lights, _buffer_sizes);
     return;
 }
 
@@ -994,9 +1123,11 @@ kernel void main_(
 , device type_12& irradiance [[user(fake0)]]
 , device type_13 const& materials [[user(fake0)]]
 , device type_12& specular [[user(fake0)]]
-, threadgroup type_15& tile_lights
+, threadgroup type_15& quarter_lo
+, threadgroup type_15& quarter_hi
+, threadgroup type_17& tile_lights
 , threadgroup metal::atomic_uint& list_count
-, threadgroup type_17& cluster_hits
+, threadgroup type_19& cluster_hits
 , threadgroup metal::atomic_uint& hit_count
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
@@ -1007,10 +1138,13 @@ kernel void main_(
     uint kept = {};
     metal::float3 s = {};
     Glossy g_4 = {};
+    uint quarter_bit = {};
     if (li == 0u) {
         wg_lo = {};
         wg_hi = {};
         wg_box = {};
+        quarter_lo = {};
+        quarter_hi = {};
         tile_lights = {};
         metal::atomic_store_explicit(&list_count, 0, metal::memory_order_relaxed);
         cluster_hits = {};
@@ -1033,10 +1167,11 @@ kernel void main_(
     WorkgroupBox _e30 = load_receiver(li, pix_1, inside_1, wg_lo, wg_hi, wg_box, view, position_tex, normal_tex, materials, pos, nrm, valid, g_4, _buffer_sizes);
     bool _e31 = box_is_empty(_e30);
     if (!(_e31)) {
+        quarter_boxes(li, lid, wg_lo, wg_hi, pos, valid, quarter_lo, quarter_hi, quarter_bit);
         metal::uint4 _e37 = params.near_grid;
         uint _e40 = params.near_clusters_at;
         uint _e43 = params.near_groups_at;
-        cull_tile(li, _e30.lo, _e30.hi, _e37, _e40, _e43, params, lights, near_slots, boxes, rt2_2, r2_5, pos, nrm, valid, e, kept, s, g_4, tile_lights, list_count, cluster_hits, hit_count, _buffer_sizes);
+        cull_tile(li, _e30.lo, _e30.hi, _e37, _e40, _e43, params, lights, near_slots, boxes, rt2_2, r2_5, pos, nrm, valid, e, kept, s, g_4, quarter_lo, quarter_hi, quarter_bit, tile_lights, list_count, cluster_hits, hit_count, _buffer_sizes);
     }
     bool _e45 = valid;
     if (_e45) {

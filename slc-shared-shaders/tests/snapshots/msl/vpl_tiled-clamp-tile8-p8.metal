@@ -388,8 +388,8 @@ metal::float4 surface_at(
     metal::int2 texel,
     metal::texture2d<float, metal::access::sample> position_tex
 ) {
-    metal::float4 p_2 = position_tex.read(metal::uint2(texel), 0);
-    return (p_2.w > 0.0) ? metal::float4(p_2.xyz, 1.0) : metal::float4(0.0);
+    metal::float4 p_3 = position_tex.read(metal::uint2(texel), 0);
+    return (p_3.w > 0.0) ? metal::float4(p_3.xyz, 1.0) : metal::float4(0.0);
 }
 
 GbTexel gbuffer_at(
@@ -504,6 +504,14 @@ float cull_r2_of(
     return _e3;
 }
 
+uint list_entry(
+    uint slot_1,
+    metal::float3 p_2,
+    float radius
+) {
+    return slot_1;
+}
+
 void shade_list(
     uint count,
     constant VplParams& params,
@@ -581,8 +589,8 @@ void cull_tile(
         if (metal::all(loop_bound_2 == uint2(0u))) { break; }
         loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e101 = g_2;
-            g_2 = _e101 + 1u;
+            uint _e103 = g_2;
+            g_2 = _e103 + 1u;
         }
         loop_init_2 = false;
         uint _e17 = g_2;
@@ -624,8 +632,8 @@ void cull_tile(
                 if (metal::all(loop_bound_3 == uint2(0u))) { break; }
                 loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
                 if (!loop_init_3) {
-                    uint _e98 = h;
-                    h = _e98 + 1u;
+                    uint _e100 = h;
+                    h = _e100 + 1u;
                 }
                 loop_init_3 = false;
                 uint _e63 = h;
@@ -650,12 +658,13 @@ void cull_tile(
                     uint _e79 = cluster_slot(_e78, li_4);
                     GpuLight l_1 = lights[_e79];
                     if (metal::any(l_1.intensity != metal::float3(0.0))) {
-                        float _e89 = cull_r2_of(_e79, r2_1, _buffer_sizes);
-                        float _e90 = cull_radius(_e89);
-                        bool _e91 = sphere_overlaps_aabb(l_1.p0_, _e90, lo_1, hi_1);
+                        float _e88 = cull_r2_of(_e79, r2_1, _buffer_sizes);
+                        float _e89 = cull_radius(_e88);
+                        bool _e91 = sphere_overlaps_aabb(l_1.p0_, _e89, lo_1, hi_1);
                         if (_e91) {
                             uint _e95 = metal::atomic_fetch_add_explicit(&list_count, 1u, metal::memory_order_relaxed);
-                            tile_lights.inner[_e95] = _e79;
+                            uint _e98 = list_entry(_e79, l_1.p0_, _e89);
+                            tile_lights.inner[_e95] = _e98;
                         }
                     }
                 }

@@ -406,8 +406,8 @@ metal::float4 surface_at(
     metal::int2 texel,
     metal::texture2d<float, metal::access::sample> position_tex
 ) {
-    metal::float4 p_2 = position_tex.read(metal::uint2(texel), 0);
-    return (p_2.w > 0.0) ? metal::float4(p_2.xyz, 1.0) : metal::float4(0.0);
+    metal::float4 p_3 = position_tex.read(metal::uint2(texel), 0);
+    return (p_3.w > 0.0) ? metal::float4(p_3.xyz, 1.0) : metal::float4(0.0);
 }
 
 GbTexel gbuffer_at(
@@ -620,6 +620,14 @@ float cull_r2_of(
     return _e3;
 }
 
+uint list_entry(
+    uint slot_1,
+    metal::float3 p_2,
+    float radius
+) {
+    return slot_1;
+}
+
 void shade_list(
     uint count,
     constant VplParams& params,
@@ -703,8 +711,8 @@ void cull_tile(
         if (metal::all(loop_bound_2 == uint2(0u))) { break; }
         loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e104 = g_2;
-            g_2 = _e104 + 1u;
+            uint _e106 = g_2;
+            g_2 = _e106 + 1u;
         }
         loop_init_2 = false;
         uint _e18 = g_2;
@@ -747,8 +755,8 @@ void cull_tile(
                 if (metal::all(loop_bound_3 == uint2(0u))) { break; }
                 loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
                 if (!loop_init_3) {
-                    uint _e101 = h;
-                    h = _e101 + 1u;
+                    uint _e103 = h;
+                    h = _e103 + 1u;
                 }
                 loop_init_3 = false;
                 uint _e65 = h;
@@ -774,12 +782,13 @@ void cull_tile(
                     GpuLight l_1 = lights[_e81];
                     if (metal::any(l_1.intensity != metal::float3(0.0))) {
                         count_one(COUNT_SPHERE_TESTS, wg_counts);
-                        float _e92 = cull_r2_of(_e81, r2_3, _buffer_sizes);
-                        float _e93 = cull_radius(_e92);
-                        bool _e94 = sphere_overlaps_aabb(l_1.p0_, _e93, lo_1, hi_1);
+                        float _e91 = cull_r2_of(_e81, r2_3, _buffer_sizes);
+                        float _e92 = cull_radius(_e91);
+                        bool _e94 = sphere_overlaps_aabb(l_1.p0_, _e92, lo_1, hi_1);
                         if (_e94) {
                             uint _e98 = metal::atomic_fetch_add_explicit(&list_count, 1u, metal::memory_order_relaxed);
-                            tile_lights.inner[_e98] = _e81;
+                            uint _e101 = list_entry(_e81, l_1.p0_, _e92);
+                            tile_lights.inner[_e98] = _e101;
                         }
                     }
                 }
