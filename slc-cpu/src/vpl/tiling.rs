@@ -267,7 +267,7 @@ impl PartTiles {
                 self.points.push((x, gb.normal[i]));
             }
         }
-        (self.pixel.len() > r0).then(|| Tile {
+        (self.pixel.len() > r0).then_some(Tile {
             lo,
             hi,
             receivers: r0..self.pixel.len(),
