@@ -60,11 +60,17 @@ crate::shared! {
     /// [`light_importance`] (computed once for both halves):
     /// `(cos θ', max(d², R², MIN_D2), cos θ_b, sin θ_b)` with `θ'` the angle
     /// from the direction to `p` to the normal cone `(axis, cos_o)` less
-    /// the angle `θ_b` the sphere `(center, radius)` subtends at `p`.
+    /// the angle `θ_b` the sphere `(center, radius)` subtends at `p`. A
+    /// point bound (`radius = 0`) at `p` itself gets `cos θ' = −2`, outside
+    /// every emission cone: a light at the receiver lights nothing there
+    /// (`crate::light::connection_cosine`), so it weighs nothing.
     pub fn emitter_cone(center: vec3f, radius: f32, axis: vec3f, cos_o: f32, p: vec3f) -> vec4f {
         let v: vec3f = p - center;
         let dist2: f32 = dot(v, v);
         let r2: f32 = radius * radius;
+        if dist2 <= 0.0 && r2 <= 0.0 {
+            return vec4f(-2.0, MIN_D2, -1.0, 0.0);
+        }
         let d2: f32 = max(max(dist2, r2), MIN_D2);
         let wi: vec3f = select(vec3f(0.0, 0.0, 0.0), v / sqrt(dist2), dist2 > 0.0);
         let cos_w: f32 = dot(axis, wi);

@@ -70,7 +70,9 @@ crate::shared! {
     /// light: the roulette drops it (`slc_keep(r2, d²)` fails; `r2 = +∞`
     /// keeps all), `y = x`, or the light arrives from below the shading
     /// normal `n` or the surface itself (geometric normal `ng`, on `n`'s
-    /// side). Both backends' next-event estimation test a pick with it.
+    /// side), or either normal is not a number (the comparisons are written
+    /// so that NaN fails them). Both backends' next-event estimation test a
+    /// pick with it.
     pub fn connection_cosine(x: vec3f, y: vec3f, n: vec3f, ng: vec3f, r2: f32) -> f32 {
         let v: vec3f = x - y;
         let d2: f32 = dot(v, v);
@@ -79,7 +81,7 @@ crate::shared! {
         }
         let w: vec3f = v / sqrt(d2);
         let cos_x: f32 = -dot(n, w);
-        if cos_x <= 0.0 || dot(ng, w) >= 0.0 {
+        if !(cos_x > 0.0) || !(dot(ng, w) < 0.0) {
             return 0.0;
         }
         return cos_x;

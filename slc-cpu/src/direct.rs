@@ -117,7 +117,7 @@ impl DirectLights {
     /// Shades `points` with unit `normals` for frame `frame` of `seed`:
     /// ranges from `xi_for(seed, frame, light)`, the BSH refitted to them,
     /// then the picks `selection` makes per point ([`Direct`]; zero for a
-    /// point with a NaN coordinate).
+    /// point with a NaN coordinate or normal).
     pub fn shade_selected(
         &mut self,
         points: &[Vec3],

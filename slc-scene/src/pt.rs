@@ -146,9 +146,11 @@ pub const RANGE_TAIL: usize = 16;
 impl PtScene {
     /// Emissive triangles become triangle lights; `extra` lights (point,
     /// spot, IES) join them in one BSH. An emissive triangle of zero area is
-    /// an error, and so is a scene with no light.
+    /// an error, and so is a scene with no light. The scene's primary light
+    /// (the VPL application's) is neither used nor checked
+    /// ([`Scene::validate_surfaces`]).
     pub fn new(scene: &Scene, extra: &[Light]) -> Result<PtScene, RenderError> {
-        scene.validate()?;
+        scene.validate_surfaces()?;
         let (mut lights, light_of_triangle) = emissive_triangles(scene)?;
         lights.extend(extra.iter().cloned());
         if lights.is_empty() {
@@ -219,7 +221,8 @@ pub struct PtRender {
 }
 
 impl PtRender {
-    /// An empty accumulation.
+    /// An empty accumulation (the path tracers' `render` refuses a size
+    /// outside `1..=16384` on either side, [`crate::check_size`]).
     pub fn new(width: u32, height: u32) -> Self {
         PtRender {
             sum: vec![Vec3::ZERO; width as usize * height as usize],
@@ -259,6 +262,19 @@ impl PtRender {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The path tracers never read the primary light, so a scene of one's
+    /// own needs none that works; its surfaces are still checked.
+    #[test]
+    fn the_primary_light_is_not_the_path_tracers_business() {
+        use crate::scene::PrimaryLight;
+        let mut scene = Scene::cornell_box();
+        scene.primary = PrimaryLight::Directional { direction: Vec3::ZERO, irradiance: Vec3::ONE };
+        assert!(scene.validate().is_err());
+        assert!(PtScene::new(&scene, &[]).is_ok());
+        scene.triangles[0][1].x = f32::NAN;
+        assert!(PtScene::new(&scene, &[]).is_err());
+    }
 
     #[test]
     fn index_is_the_position_in_all() {

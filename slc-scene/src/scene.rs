@@ -426,10 +426,19 @@ impl Unsupported {
 }
 
 impl Scene {
-    /// Checks the invariants every renderer relies on: finite vertices,
-    /// valid material indices, valid materials ([`Material::validate`]), a
-    /// usable camera and primary light.
+    /// Checks the invariants every renderer relies on: those of
+    /// [`Scene::validate_surfaces`] and a usable primary light (the VPL
+    /// application's).
     pub fn validate(&self) -> Result<(), SceneError> {
+        self.validate_surfaces()?;
+        self.primary.validate()
+    }
+
+    /// Checks what the path tracers rely on, which light the scene with its
+    /// emitters and given lights and never read the primary light: finite
+    /// vertices, valid material indices, valid materials
+    /// ([`Material::validate`]), finite unit vertex normals, a usable camera.
+    pub fn validate_surfaces(&self) -> Result<(), SceneError> {
         if self.triangles.is_empty() {
             return Err(SceneError::Empty);
         }
@@ -465,8 +474,7 @@ impl Scene {
         for (i, m) in self.materials.iter().enumerate() {
             m.validate(i)?;
         }
-        self.camera.validate()?;
-        self.primary.validate()
+        self.camera.validate()
     }
 
     /// `true` when some triangle has vertex normals that differ from its

@@ -200,6 +200,15 @@ fn path_tracer_and_direct_light_settings() {
             )
         });
     }
+    for (w, h) in [(0, 8), (8, 0), (0, 0)] {
+        rejects("pt size", "size", || {
+            CpuPathTracer::new(&PtScene::new(&scene, &[]).unwrap()).render(
+                &mut PtRender::new(w, h),
+                &PtSettings::default(),
+                1,
+            )
+        });
+    }
     rejects("pt depth", "depth", || {
         CpuPathTracer::new(&PtScene::new(&scene, &[]).unwrap()).render(
             &mut PtRender::new(4, 4),
@@ -231,6 +240,63 @@ fn path_tracer_and_direct_light_settings() {
         "normals",
         AssertUnwindSafe(|| gd.shade(&[Vec3::ONE, Vec3::ZERO], &[Vec3::Y], &params, 1, 0)),
     );
+}
+
+/// Two shading points an outside program found (2026-11-29), on both
+/// backends and for every selection: one with a NaN normal lights nothing
+/// (as one with a NaN coordinate; it gave NaN), and one exactly at a point
+/// light, which lights nothing there and so weighs nothing: the weighted
+/// picks go to the other lights in range (they went to it, and the point
+/// was black in nearly every frame). Over 256 frames the weighted picks'
+/// mean there lies within 5 standard errors of every light's.
+fn degenerate_direct_points() {
+    use slc_core::light::Light;
+    use slc_cpu::direct::DirectLights;
+    use slc_scene::lights::{Direct, DirectSelection, LightSet};
+    let at = |i: usize| Vec3::new(0.05 * i as f32, 0.3 + 0.01 * i as f32, 0.0);
+    let lights: Vec<Light> =
+        (0..20).map(|i| Light::Point(PointLight::new(at(i), Vec3::ONE).unwrap())).collect();
+    let set = LightSet::new(lights).unwrap();
+    let params = RangeParams::new(2.0, 1.0).unwrap();
+    let (points, normals) = ([Vec3::new(0.5, 0.0, 0.0), at(0)], [Vec3::NAN, Vec3::Y]);
+    let selections = [
+        DirectSelection::All,
+        DirectSelection::Uniform { k: 8 },
+        DirectSelection::Weighted { k: 8 },
+        DirectSelection::Resampled { k: 8 },
+    ];
+    let check = |backend: &str, shade: &mut dyn FnMut(u32, DirectSelection) -> Vec<Direct>| {
+        let mut means = Vec::new();
+        for sel in selections {
+            let (mut sum, mut sum2, mut lit) = (0.0f64, 0.0f64, 0);
+            for frame in 0..256 {
+                let d = shade(frame, sel);
+                assert_eq!(d[0].irradiance, Vec3::ZERO, "{backend} {sel:?}: a NaN normal");
+                let e = d[1].irradiance.x as f64;
+                assert!(e.is_finite(), "{backend} {sel:?}: at a light: {e}");
+                (sum, sum2, lit) = (sum + e, sum2 + e * e, lit + (e > 0.0) as u32);
+            }
+            assert!(lit >= 192, "{backend} {sel:?}: at a light, lit in {lit} of 256 frames");
+            let mean = sum / 256.0;
+            means.push((mean, ((sum2 / 256.0 - mean * mean).max(0.0) / 256.0).sqrt()));
+        }
+        let ((all, se_all), (weighted, se_w)) = (means[0], means[2]);
+        let se = (se_all * se_all + se_w * se_w).sqrt();
+        eprintln!("{backend}: at a light, weighted {weighted} ± {se_w}, all {all} ± {se_all}");
+        assert!(
+            (weighted - all).abs() <= 5.0 * se + 1e-5 * all,
+            "{backend}: at a light, weighted {weighted} vs all {all} (standard error {se})"
+        );
+    };
+    let mut cpu = DirectLights::new(&set);
+    check("cpu", &mut |frame, sel| {
+        cpu.shade_selected(&points, &normals, &params, 3, frame, sel).unwrap()
+    });
+    let Some(g) = slc_tests::gpu() else { return };
+    let mut gpu = slc_tests::direct::GpuDirect::new(g, &set).unwrap();
+    check("gpu", &mut |frame, sel| {
+        gpu.shade_selected(&points, &normals, &params, 3, frame, sel).unwrap()
+    });
 }
 
 /// An engine's misuses of the passes, as an outside program made them
@@ -686,6 +752,7 @@ slc_tests::harness!(
     Cpu: scene_loaders,
     Cpu: renderer_settings,
     Gpu: path_tracer_and_direct_light_settings,
+    Gpu: degenerate_direct_points,
     Gpu: seventeen_records_in_one_submission,
     Gpu: overflowing_lights,
     Gpu: depth_conventions_and_the_view,

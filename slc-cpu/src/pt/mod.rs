@@ -258,6 +258,8 @@ impl CpuPathTracer {
         s: &PtSettings,
         passes: u32,
     ) -> Result<(), RenderError> {
+        let (w, h) = acc.size();
+        slc_scene::check_size(w, h)?;
         let params = RangeParams::new(s.error_bound, s.exposure)
             .map_err(|e| RenderError::Setting(e.to_string()))?;
         if !(1..=64).contains(&s.max_depth) {
@@ -272,7 +274,6 @@ impl CpuPathTracer {
         if s.method == PtMethod::LightBvh {
             self.pts.light_bvh();
         }
-        let (w, h) = acc.size();
         for _ in 0..passes {
             let t = Instant::now();
             let pass = acc.passes;

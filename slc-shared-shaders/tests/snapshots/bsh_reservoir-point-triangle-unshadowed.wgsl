@@ -209,13 +209,13 @@ fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     }
     let w_4 = (v_3 / vec3(sqrt(d2_6)));
     let cos_x_1 = -(dot(n, w_4));
-    if !((cos_x_1 <= 0f)) {
-        local_1 = (dot(ng, w_4) >= 0f);
+    if !(!((cos_x_1 > 0f))) {
+        local_1 = !((dot(ng, w_4) < 0f));
     } else {
         local_1 = true;
     }
-    let _e32 = local_1;
-    if _e32 {
+    let _e34 = local_1;
+    if _e34 {
         return 0f;
     }
     return cos_x_1;

@@ -265,13 +265,13 @@ fn connection_cosine(x_3: vec3<f32>, y: vec3<f32>, n_1: vec3<f32>, ng: vec3<f32>
     }
     let w_10 = (v_4 / vec3(sqrt(d2_6)));
     let cos_x_1 = -(dot(n_1, w_10));
-    if !((cos_x_1 <= 0f)) {
-        local_6 = (dot(ng, w_10) >= 0f);
+    if !(!((cos_x_1 > 0f))) {
+        local_6 = !((dot(ng, w_10) < 0f));
     } else {
         local_6 = true;
     }
-    let _e32 = local_6;
-    if _e32 {
+    let _e34 = local_6;
+    if _e34 {
         return 0f;
     }
     return cos_x_1;

@@ -296,13 +296,13 @@ fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n_1: vec3<f32>, ng: vec3<f32>
     }
     let w_10 = (v_5 / vec3(sqrt(d2_7)));
     let cos_x_1 = -(dot(n_1, w_10));
-    if !((cos_x_1 <= 0f)) {
-        local_6 = (dot(ng, w_10) >= 0f);
+    if !(!((cos_x_1 > 0f))) {
+        local_6 = !((dot(ng, w_10) < 0f));
     } else {
         local_6 = true;
     }
-    let _e32 = local_6;
-    if _e32 {
+    let _e34 = local_6;
+    if _e34 {
         return 0f;
     }
     return cos_x_1;
@@ -413,20 +413,31 @@ fn subtended_cos(dist2_: f32, r2_2: f32) -> f32 {
 }
 
 fn emitter_cone(center: vec3<f32>, radius: f32, axis: vec3<f32>, cos_o: f32, p: vec3<f32>) -> vec4<f32> {
+    var local_7: bool;
+
     let v_6 = (p - center);
     let dist2_1 = dot(v_6, v_6);
     let r2_5 = (radius * radius);
+    if (dist2_1 <= 0f) {
+        local_7 = (r2_5 <= 0f);
+    } else {
+        local_7 = false;
+    }
+    let _e15 = local_7;
+    if _e15 {
+        return vec4<f32>(-2f, 0.000000000001f, -1f, 0f);
+    }
     let d2_8 = max(max(dist2_1, r2_5), MIN_D2_);
     let wi = select(vec3<f32>(0f, 0f, 0f), (v_6 / vec3(sqrt(dist2_1))), (dist2_1 > 0f));
     let cos_w = dot(axis, wi);
-    let _e25 = safe_sqrt((1f - (cos_w * cos_w)));
-    let _e26 = subtended_cos(dist2_1, r2_5);
-    let _e30 = safe_sqrt((1f - (_e26 * _e26)));
-    let _e34 = safe_sqrt((1f - (cos_o * cos_o)));
-    let _e35 = cos_sub_clamped(_e25, cos_w, _e34, cos_o);
-    let _e36 = sin_sub_clamped(_e25, cos_w, _e34, cos_o);
-    let _e37 = cos_sub_clamped(_e36, _e35, _e30, _e26);
-    return vec4<f32>(_e37, d2_8, _e26, _e30);
+    let _e38 = safe_sqrt((1f - (cos_w * cos_w)));
+    let _e39 = subtended_cos(dist2_1, r2_5);
+    let _e43 = safe_sqrt((1f - (_e39 * _e39)));
+    let _e47 = safe_sqrt((1f - (cos_o * cos_o)));
+    let _e48 = cos_sub_clamped(_e38, cos_w, _e47, cos_o);
+    let _e49 = sin_sub_clamped(_e38, cos_w, _e47, cos_o);
+    let _e50 = cos_sub_clamped(_e49, _e48, _e43, _e39);
+    return vec4<f32>(_e50, d2_8, _e39, _e43);
 }
 
 fn emitter_importance(center_1: vec3<f32>, radius_1: f32, phi: f32, axis_1: vec3<f32>, cos_o_1: f32, cos_e: f32, p_1: vec3<f32>) -> f32 {
@@ -438,23 +449,23 @@ fn emitter_importance(center_1: vec3<f32>, radius_1: f32, phi: f32, axis_1: vec3
 }
 
 fn cone_cos_of(v: vec3<f32>, d2_4: f32, a_2: f32, d: vec3<f32>) -> f32 {
-    var local_7: bool;
     var local_8: bool;
+    var local_9: bool;
 
     let vd = dot(v, d);
     let h2_ = (d2_4 - (a_2 * a_2));
     if !((h2_ <= 0f)) {
         if (vd >= 0f) {
-            local_8 = ((vd * vd) >= h2_);
+            local_9 = ((vd * vd) >= h2_);
         } else {
-            local_8 = false;
+            local_9 = false;
         }
-        let _e19 = local_8;
-        local_7 = _e19;
+        let _e19 = local_9;
+        local_8 = _e19;
     } else {
-        local_7 = true;
+        local_8 = true;
     }
-    let _e21 = local_7;
+    let _e21 = local_8;
     if _e21 {
         return 1f;
     }
@@ -504,16 +515,16 @@ fn light_importance(center_4: vec3<f32>, radius_4: f32, phi_1: f32, axis_2: vec3
 }
 
 fn glossy_importance(center_5: vec3<f32>, radius_5: f32, phi_2: f32, axis_3: vec3<f32>, cos_o_3: f32, cos_e_2: f32, p_5: vec3<f32>, n_3: vec3<f32>, r_4: vec3<f32>, lobe_5: vec4<f32>) -> f32 {
-    var local_9: bool;
+    var local_10: bool;
 
     let _e10 = emitter_importance(center_5, radius_5, phi_2, axis_3, cos_o_3, cos_e_2, p_5);
     let _e11 = cone_cos_toward(center_5, radius_5, p_5, n_3);
     if !((_e10 <= 0f)) {
-        local_9 = (_e11 <= 0f);
+        local_10 = (_e11 <= 0f);
     } else {
-        local_9 = true;
+        local_10 = true;
     }
-    let _e20 = local_9;
+    let _e20 = local_10;
     if _e20 {
         return 0f;
     }
@@ -543,21 +554,21 @@ fn cone_weight(center_6: vec3<f32>, radius_6: f32, phi_3: f32, axis_4: vec3<f32>
 }
 
 fn finite3_(v_1: vec3<f32>) -> bool {
-    var local_10: bool;
     var local_11: bool;
+    var local_12: bool;
 
     if (abs(v_1.x) <= F32_MAX) {
-        local_10 = (abs(v_1.y) <= F32_MAX);
-    } else {
-        local_10 = false;
-    }
-    let _e12 = local_10;
-    if _e12 {
-        local_11 = (abs(v_1.z) <= F32_MAX);
+        local_11 = (abs(v_1.y) <= F32_MAX);
     } else {
         local_11 = false;
     }
-    let _e20 = local_11;
+    let _e12 = local_11;
+    if _e12 {
+        local_12 = (abs(v_1.z) <= F32_MAX);
+    } else {
+        local_12 = false;
+    }
+    let _e20 = local_12;
     return _e20;
 }
 
@@ -590,9 +601,9 @@ fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin_1: vec3<f32>, bmax_1: vec3<f32>
 }
 
 fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_3: vec3<f32>, b_2: vec3<f32>, c_2: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
-    var local_12: bool;
     var local_13: bool;
     var local_14: bool;
+    var local_15: bool;
 
     let e1_ = (b_2 - a_3);
     let e2_ = (c_2 - a_3);
@@ -605,32 +616,32 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_3: vec3<f32>, b_2: vec3<f32>, 
     let s_9 = (o_1 - a_3);
     let u_3 = (dot(s_9, p_9) * inv);
     if !((u_3 < 0f)) {
-        local_12 = (u_3 > 1f);
+        local_13 = (u_3 > 1f);
     } else {
-        local_12 = true;
+        local_13 = true;
     }
-    let _e28 = local_12;
+    let _e28 = local_13;
     if _e28 {
         return -1f;
     }
     let q_1 = cross(s_9, e1_);
     let v_10 = (dot(d_3, q_1) * inv);
     if !((v_10 < 0f)) {
-        local_13 = ((u_3 + v_10) > 1f);
+        local_14 = ((u_3 + v_10) > 1f);
     } else {
-        local_13 = true;
+        local_14 = true;
     }
-    let _e42 = local_13;
+    let _e42 = local_14;
     if _e42 {
         return -1f;
     }
     let t_7 = (dot(e2_, q_1) * inv);
     if (t_7 > t_min) {
-        local_14 = (t_7 < t_max_1);
+        local_15 = (t_7 < t_max_1);
     } else {
-        local_14 = false;
+        local_15 = false;
     }
-    let _e51 = local_14;
+    let _e51 = local_15;
     if _e51 {
         return t_7;
     }
@@ -765,8 +776,8 @@ fn bsh_inner_scale(a_5: f32, v_2: vec3<f32>, d2_6: f32, r_6: vec3<f32>, rl_2: ve
 }
 
 fn bsh_reaches(node_4: BshNode, x_5: vec3<f32>, r_7: vec3<f32>, rl_3: vec4<f32>) -> bool {
-    var local_15: bool;
     var local_16: bool;
+    var local_17: bool;
 
     let _e6 = sphere_contains_point(node_4.center, node_4.radius, x_5);
     if _e6 {
@@ -774,11 +785,11 @@ fn bsh_reaches(node_4: BshNode, x_5: vec3<f32>, r_7: vec3<f32>, rl_3: vec4<f32>)
     }
     if !((rl_3.w <= 1f)) {
         let _e20 = sphere_contains_point(node_4.center, (node_4.radius * (rl_3.w * 1.0001f)), x_5);
-        local_15 = !(_e20);
+        local_16 = !(_e20);
     } else {
-        local_15 = true;
+        local_16 = true;
     }
-    let _e23 = local_15;
+    let _e23 = local_16;
     if _e23 {
         return false;
     }
@@ -799,11 +810,11 @@ fn bsh_reaches(node_4: BshNode, x_5: vec3<f32>, r_7: vec3<f32>, rl_3: vec4<f32>)
     let _e50 = bsh_range_bound(node_4);
     let reach = (node_4.extent + (sqrt(s_c) * _e50));
     if (d2_9 <= ((node_4.radius * node_4.radius) * s_c)) {
-        local_16 = (d2_9 <= (reach * reach));
+        local_17 = (d2_9 <= (reach * reach));
     } else {
-        local_16 = false;
+        local_17 = false;
     }
-    let _e63 = local_16;
+    let _e63 = local_17;
     return _e63;
 }
 
@@ -815,7 +826,7 @@ fn bsh_reaches_box(node_5: BshNode, lo: vec3<f32>, hi: vec3<f32>, w_4: f32) -> b
 fn bsh_subtree(nodes_3: u32, s_1: u32, depth: u32) -> u32 {
     var i_2: u32;
     var level: u32 = 0u;
-    var local_17: bool;
+    var local_18: bool;
 
     let _e3 = bsh_first(nodes_3);
     i_2 = _e3;
@@ -823,11 +834,11 @@ fn bsh_subtree(nodes_3: u32, s_1: u32, depth: u32) -> u32 {
         let _e7 = level;
         if (_e7 < depth) {
             let _e11 = i_2;
-            local_17 = (_e11 != BSH_NONE);
+            local_18 = (_e11 != BSH_NONE);
         } else {
-            local_17 = false;
+            local_18 = false;
         }
-        let _e15 = local_17;
+        let _e15 = local_18;
         if _e15 {
         } else {
             break;
@@ -902,8 +913,8 @@ fn next_threshold(sum: f32, h_1: ptr<function, u32>) -> f32 {
 
 fn connect_record(l_2: GpuLight, x_6: vec3<f32>, n_5: vec3<f32>, ng_1: vec3<f32>, r2_3: f32, rt2_4: f32, w_res: f32, u1_1: f32, u2_1: f32, eps: f32, trace_1: bool) -> Connection {
     var c_3: Connection;
-    var local_18: bool;
     var local_19: bool;
+    var local_20: bool;
 
     c_3.e = vec3(0f);
     let _e16 = light_point(l_2, u1_1, u2_1);
@@ -916,16 +927,16 @@ fn connect_record(l_2: GpuLight, x_6: vec3<f32>, n_5: vec3<f32>, ng_1: vec3<f32>
         if trace_1 {
             let _e33 = c_3.y;
             let _e34 = occluded((x_6 + (ng_1 * eps)), _e33);
-            local_19 = _e34;
+            local_20 = _e34;
         } else {
-            local_19 = false;
+            local_20 = false;
         }
-        let _e36 = local_19;
-        local_18 = _e36;
+        let _e36 = local_20;
+        local_19 = _e36;
     } else {
-        local_18 = true;
+        local_19 = true;
     }
-    let _e38 = local_18;
+    let _e38 = local_19;
     if _e38 {
         let _e39 = c_3;
         return _e39;
@@ -1019,15 +1030,15 @@ fn weighted_offer(picks_2: ptr<function, WeightedPicks>, li_3: u32, w_6: f32) {
 }
 
 fn unproject_pixel(c0_: vec4<f32>, c1_: vec4<f32>, c2_: vec4<f32>, c3_: vec4<f32>, px: f32, py: f32, width: f32, height: f32, depth_1: f32) -> vec4<f32> {
-    var local_20: bool;
     var local_21: bool;
+    var local_22: bool;
 
     if (depth_1 > 0f) {
-        local_20 = (depth_1 < 1f);
+        local_21 = (depth_1 < 1f);
     } else {
-        local_20 = false;
+        local_21 = false;
     }
-    let _e16 = local_20;
+    let _e16 = local_21;
     if !(_e16) {
         return vec4<f32>(0f, 0f, 0f, 0f);
     }
@@ -1037,11 +1048,11 @@ fn unproject_pixel(c0_: vec4<f32>, c1_: vec4<f32>, c2_: vec4<f32>, c3_: vec4<f32
     let q_2 = vec3<f32>((p_10.x / p_10.w), (p_10.y / p_10.w), (p_10.z / p_10.w));
     if (abs(p_10.w) > 0f) {
         let _e59 = finite3_(q_2);
-        local_21 = _e59;
+        local_22 = _e59;
     } else {
-        local_21 = false;
+        local_22 = false;
     }
-    let _e61 = local_21;
+    let _e61 = local_22;
     if _e61 {
         return vec4<f32>(q_2.x, q_2.y, q_2.z, 1f);
     }
@@ -1113,9 +1124,9 @@ fn box_is_empty(b_4: WorkgroupBox) -> bool {
 fn tile_subtree(s_4: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: u32) -> u32 {
     var p_8: u32;
     var b_5: u32;
-    var local_22: bool;
     var local_23: bool;
     var local_24: bool;
+    var local_25: bool;
 
     let _e8 = bsh_subtree(BSH, s_4, BSH_TILE_DEPTH);
     if (_e8 == BSH_NONE) {
@@ -1130,16 +1141,16 @@ fn tile_subtree(s_4: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: 
         if (_e23 != end_1) {
             if !(!(list)) {
                 let _e31 = p_8;
-                local_23 = (_e31 < to);
+                local_24 = (_e31 < to);
             } else {
-                local_23 = true;
+                local_24 = true;
             }
-            let _e34 = local_23;
-            local_22 = _e34;
+            let _e34 = local_24;
+            local_23 = _e34;
         } else {
-            local_22 = false;
+            local_23 = false;
         }
-        let _e36 = local_22;
+        let _e36 = local_23;
         if _e36 {
         } else {
             break;
@@ -1147,11 +1158,11 @@ fn tile_subtree(s_4: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: 
         {
             if list {
                 let _e39 = p_8;
-                local_24 = (_e39 >= start_2);
+                local_25 = (_e39 >= start_2);
             } else {
-                local_24 = false;
+                local_25 = false;
             }
-            let _e42 = local_24;
+            let _e42 = local_25;
             if _e42 {
                 let _e44 = p_8;
                 let _e47 = b_5;
@@ -1172,18 +1183,18 @@ fn tile_subtree(s_4: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: 
 }
 
 fn tile_walk_begin(li_6: u32, x_10: vec3<f32>, w_7: f32, has_1: bool) -> TileWalk {
-    var local_25: bool;
+    var local_26: bool;
     var t_2: TileWalk;
     var s_5: u32;
     var sum_1: u32 = 0u;
     var s_6: u32 = 0u;
 
     if has_1 {
-        local_25 = (w_7 >= 0f);
+        local_26 = (w_7 >= 0f);
     } else {
-        local_25 = false;
+        local_26 = false;
     }
-    let _e12 = local_25;
+    let _e12 = local_26;
     let _e14 = atomicMax((&tile_scale), select(0u, bitcast<u32>(w_7), _e12));
     let _e15 = workgroup_box(li_6, x_10, has_1);
     let _e19 = workgroupUniformLoad((&tile_scale));
@@ -1246,7 +1257,7 @@ fn tile_walk_begin(li_6: u32, x_10: vec3<f32>, w_7: f32, has_1: bool) -> TileWal
 fn tile_walk_fill(li_7: u32, t_3: TileWalk, start_3: u32) -> u32 {
     var s_7: u32;
     var past: u32;
-    var local_26: bool;
+    var local_27: bool;
 
     let to_1 = min(t_3.total, (start_3 + TILE_LIST));
     s_7 = li_7;
@@ -1268,11 +1279,11 @@ fn tile_walk_fill(li_7: u32, t_3: TileWalk, start_3: u32) -> u32 {
             }
             if (at_1 < to_1) {
                 let _e31 = past;
-                local_26 = (_e31 > start_3);
+                local_27 = (_e31 > start_3);
             } else {
-                local_26 = false;
+                local_27 = false;
             }
-            let _e34 = local_26;
+            let _e34 = local_27;
             if _e34 {
                 let _e35 = s_7;
                 let _e37 = tile_subtree(_e35, t_3, true, at_1, start_3, to_1);
@@ -1316,8 +1327,8 @@ fn first_holders(keys_1: array<vec2<u32>, 8>, held_1: array<bool, 8>) -> array<u
     var first: array<u32, 8>;
     var k_3: u32 = 0u;
     var j_2: u32;
-    var local_27: bool;
     var local_28: bool;
+    var local_29: bool;
 
     loop {
         let _e5 = k_3;
@@ -1336,11 +1347,11 @@ fn first_holders(keys_1: array<vec2<u32>, 8>, held_1: array<bool, 8>) -> array<u
                 let _e18 = k_3;
                 if (_e17 < _e18) {
                     let _e22 = k_3;
-                    local_27 = held_1[_e22];
+                    local_28 = held_1[_e22];
                 } else {
-                    local_27 = false;
+                    local_28 = false;
                 }
-                let _e25 = local_27;
+                let _e25 = local_28;
                 if _e25 {
                 } else {
                     break;
@@ -1350,11 +1361,11 @@ fn first_holders(keys_1: array<vec2<u32>, 8>, held_1: array<bool, 8>) -> array<u
                     if held_1[_e26] {
                         let _e30 = j_2;
                         let _e32 = k_3;
-                        local_28 = all((keys_1[_e30] == keys_1[_e32]));
+                        local_29 = all((keys_1[_e30] == keys_1[_e32]));
                     } else {
-                        local_28 = false;
+                        local_29 = false;
                     }
-                    let _e37 = local_28;
+                    let _e37 = local_29;
                     if _e37 {
                         let _e38 = k_3;
                         let _e40 = j_2;

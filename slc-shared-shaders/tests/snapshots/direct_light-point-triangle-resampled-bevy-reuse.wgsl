@@ -350,13 +350,13 @@ fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n_1: vec3<f32>, ng: vec3<f32>
     }
     let w_12 = (v_7 / vec3(sqrt(d2_6)));
     let cos_x_1 = -(dot(n_1, w_12));
-    if !((cos_x_1 <= 0f)) {
-        local_9 = (dot(ng, w_12) >= 0f);
+    if !(!((cos_x_1 > 0f))) {
+        local_9 = !((dot(ng, w_12) < 0f));
     } else {
         local_9 = true;
     }
-    let _e32 = local_9;
-    if _e32 {
+    let _e34 = local_9;
+    if _e34 {
         return 0f;
     }
     return cos_x_1;

@@ -291,13 +291,13 @@ fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n_1: vec3<f32>, ng: vec3<f32>
     }
     let w_11 = (v_7 / vec3(sqrt(d2_6)));
     let cos_x_1 = -(dot(n_1, w_11));
-    if !((cos_x_1 <= 0f)) {
-        local_8 = (dot(ng, w_11) >= 0f);
+    if !(!((cos_x_1 > 0f))) {
+        local_8 = !((dot(ng, w_11) < 0f));
     } else {
         local_8 = true;
     }
-    let _e32 = local_8;
-    if _e32 {
+    let _e34 = local_8;
+    if _e34 {
         return 0f;
     }
     return cos_x_1;

@@ -268,13 +268,13 @@ fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n_1: vec3<f32>, ng: vec3<f32>
     }
     let w_7 = (v_3 / vec3(sqrt(d2_7)));
     let cos_x_1 = -(dot(n_1, w_7));
-    if !((cos_x_1 <= 0f)) {
-        local_5 = (dot(ng, w_7) >= 0f);
+    if !(!((cos_x_1 > 0f))) {
+        local_5 = !((dot(ng, w_7) < 0f));
     } else {
         local_5 = true;
     }
-    let _e32 = local_5;
-    if _e32 {
+    let _e34 = local_5;
+    if _e34 {
         return 0f;
     }
     return cos_x_1;
@@ -377,20 +377,31 @@ fn subtended_cos(dist2_: f32, r2_2: f32) -> f32 {
 }
 
 fn emitter_cone(center: vec3<f32>, radius: f32, axis: vec3<f32>, cos_o: f32, p: vec3<f32>) -> vec4<f32> {
+    var local_6: bool;
+
     let v_4 = (p - center);
     let dist2_1 = dot(v_4, v_4);
     let r2_5 = (radius * radius);
+    if (dist2_1 <= 0f) {
+        local_6 = (r2_5 <= 0f);
+    } else {
+        local_6 = false;
+    }
+    let _e15 = local_6;
+    if _e15 {
+        return vec4<f32>(-2f, 0.000000000001f, -1f, 0f);
+    }
     let d2_8 = max(max(dist2_1, r2_5), MIN_D2_);
     let wi = select(vec3<f32>(0f, 0f, 0f), (v_4 / vec3(sqrt(dist2_1))), (dist2_1 > 0f));
     let cos_w = dot(axis, wi);
-    let _e25 = safe_sqrt((1f - (cos_w * cos_w)));
-    let _e26 = subtended_cos(dist2_1, r2_5);
-    let _e30 = safe_sqrt((1f - (_e26 * _e26)));
-    let _e34 = safe_sqrt((1f - (cos_o * cos_o)));
-    let _e35 = cos_sub_clamped(_e25, cos_w, _e34, cos_o);
-    let _e36 = sin_sub_clamped(_e25, cos_w, _e34, cos_o);
-    let _e37 = cos_sub_clamped(_e36, _e35, _e30, _e26);
-    return vec4<f32>(_e37, d2_8, _e26, _e30);
+    let _e38 = safe_sqrt((1f - (cos_w * cos_w)));
+    let _e39 = subtended_cos(dist2_1, r2_5);
+    let _e43 = safe_sqrt((1f - (_e39 * _e39)));
+    let _e47 = safe_sqrt((1f - (cos_o * cos_o)));
+    let _e48 = cos_sub_clamped(_e38, cos_w, _e47, cos_o);
+    let _e49 = sin_sub_clamped(_e38, cos_w, _e47, cos_o);
+    let _e50 = cos_sub_clamped(_e49, _e48, _e43, _e39);
+    return vec4<f32>(_e50, d2_8, _e39, _e43);
 }
 
 fn emitter_importance(center_1: vec3<f32>, radius_1: f32, phi: f32, axis_1: vec3<f32>, cos_o_1: f32, cos_e: f32, p_1: vec3<f32>) -> f32 {
@@ -402,23 +413,23 @@ fn emitter_importance(center_1: vec3<f32>, radius_1: f32, phi: f32, axis_1: vec3
 }
 
 fn cone_cos_of(v: vec3<f32>, d2_4: f32, a_2: f32, d: vec3<f32>) -> f32 {
-    var local_6: bool;
     var local_7: bool;
+    var local_8: bool;
 
     let vd = dot(v, d);
     let h2_ = (d2_4 - (a_2 * a_2));
     if !((h2_ <= 0f)) {
         if (vd >= 0f) {
-            local_7 = ((vd * vd) >= h2_);
+            local_8 = ((vd * vd) >= h2_);
         } else {
-            local_7 = false;
+            local_8 = false;
         }
-        let _e19 = local_7;
-        local_6 = _e19;
+        let _e19 = local_8;
+        local_7 = _e19;
     } else {
-        local_6 = true;
+        local_7 = true;
     }
-    let _e21 = local_6;
+    let _e21 = local_7;
     if _e21 {
         return 1f;
     }
@@ -468,16 +479,16 @@ fn light_importance(center_4: vec3<f32>, radius_4: f32, phi_1: f32, axis_2: vec3
 }
 
 fn glossy_importance(center_5: vec3<f32>, radius_5: f32, phi_2: f32, axis_3: vec3<f32>, cos_o_3: f32, cos_e_2: f32, p_5: vec3<f32>, n_3: vec3<f32>, r_3: vec3<f32>, lobe_5: vec4<f32>) -> f32 {
-    var local_8: bool;
+    var local_9: bool;
 
     let _e10 = emitter_importance(center_5, radius_5, phi_2, axis_3, cos_o_3, cos_e_2, p_5);
     let _e11 = cone_cos_toward(center_5, radius_5, p_5, n_3);
     if !((_e10 <= 0f)) {
-        local_8 = (_e11 <= 0f);
+        local_9 = (_e11 <= 0f);
     } else {
-        local_8 = true;
+        local_9 = true;
     }
-    let _e20 = local_8;
+    let _e20 = local_9;
     if _e20 {
         return 0f;
     }
@@ -535,9 +546,9 @@ fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin: vec3<f32>, bmax: vec3<f32>, t_
 }
 
 fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_3: vec3<f32>, b_3: vec3<f32>, c_1: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
-    var local_9: bool;
     var local_10: bool;
     var local_11: bool;
+    var local_12: bool;
 
     let e1_ = (b_3 - a_3);
     let e2_ = (c_1 - a_3);
@@ -550,32 +561,32 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_3: vec3<f32>, b_3: vec3<f32>, 
     let s_4 = (o_1 - a_3);
     let u_3 = (dot(s_4, p_7) * inv);
     if !((u_3 < 0f)) {
-        local_9 = (u_3 > 1f);
+        local_10 = (u_3 > 1f);
     } else {
-        local_9 = true;
+        local_10 = true;
     }
-    let _e28 = local_9;
+    let _e28 = local_10;
     if _e28 {
         return -1f;
     }
     let q = cross(s_4, e1_);
     let v_8 = (dot(d_3, q) * inv);
     if !((v_8 < 0f)) {
-        local_10 = ((u_3 + v_8) > 1f);
+        local_11 = ((u_3 + v_8) > 1f);
     } else {
-        local_10 = true;
+        local_11 = true;
     }
-    let _e42 = local_10;
+    let _e42 = local_11;
     if _e42 {
         return -1f;
     }
     let t_3 = (dot(e2_, q) * inv);
     if (t_3 > t_min) {
-        local_11 = (t_3 < t_max_1);
+        local_12 = (t_3 < t_max_1);
     } else {
-        local_11 = false;
+        local_12 = false;
     }
-    let _e51 = local_11;
+    let _e51 = local_12;
     if _e51 {
         return t_3;
     }
@@ -706,8 +717,8 @@ fn bsh_inner_scale(a_5: f32, v_1: vec3<f32>, d2_6: f32, r_5: vec3<f32>, rl_2: ve
 }
 
 fn bsh_reaches(node_4: BshNode, x_5: vec3<f32>, r_6: vec3<f32>, rl_3: vec4<f32>) -> bool {
-    var local_12: bool;
     var local_13: bool;
+    var local_14: bool;
 
     let _e6 = sphere_contains_point(node_4.center, node_4.radius, x_5);
     if _e6 {
@@ -715,11 +726,11 @@ fn bsh_reaches(node_4: BshNode, x_5: vec3<f32>, r_6: vec3<f32>, rl_3: vec4<f32>)
     }
     if !((rl_3.w <= 1f)) {
         let _e20 = sphere_contains_point(node_4.center, (node_4.radius * (rl_3.w * 1.0001f)), x_5);
-        local_12 = !(_e20);
+        local_13 = !(_e20);
     } else {
-        local_12 = true;
+        local_13 = true;
     }
-    let _e23 = local_12;
+    let _e23 = local_13;
     if _e23 {
         return false;
     }
@@ -740,11 +751,11 @@ fn bsh_reaches(node_4: BshNode, x_5: vec3<f32>, r_6: vec3<f32>, rl_3: vec4<f32>)
     let _e50 = bsh_range_bound(node_4);
     let reach = (node_4.extent + (sqrt(s_c) * _e50));
     if (d2_9 <= ((node_4.radius * node_4.radius) * s_c)) {
-        local_13 = (d2_9 <= (reach * reach));
+        local_14 = (d2_9 <= (reach * reach));
     } else {
-        local_13 = false;
+        local_14 = false;
     }
-    let _e63 = local_13;
+    let _e63 = local_14;
     return _e63;
 }
 
@@ -792,8 +803,8 @@ fn next_threshold(sum: f32, h_1: ptr<function, u32>) -> f32 {
 
 fn connect_record(l_2: GpuLight, x_7: vec3<f32>, n_5: vec3<f32>, ng_1: vec3<f32>, r2_3: f32, rt2_4: f32, w_res: f32, u1_1: f32, u2_1: f32, eps: f32, trace_1: bool) -> Connection {
     var c_2: Connection;
-    var local_14: bool;
     var local_15: bool;
+    var local_16: bool;
 
     c_2.e = vec3(0f);
     let _e16 = light_point(l_2, u1_1, u2_1);
@@ -806,16 +817,16 @@ fn connect_record(l_2: GpuLight, x_7: vec3<f32>, n_5: vec3<f32>, ng_1: vec3<f32>
         if trace_1 {
             let _e33 = c_2.y;
             let _e34 = occluded((x_7 + (ng_1 * eps)), _e33);
-            local_15 = _e34;
+            local_16 = _e34;
         } else {
-            local_15 = false;
+            local_16 = false;
         }
-        let _e36 = local_15;
-        local_14 = _e36;
+        let _e36 = local_16;
+        local_15 = _e36;
     } else {
-        local_14 = true;
+        local_15 = true;
     }
-    let _e38 = local_14;
+    let _e38 = local_15;
     if _e38 {
         let _e39 = c_2;
         return _e39;
@@ -942,8 +953,8 @@ fn first_holders(keys_1: array<vec2<u32>, 8>, held_1: array<bool, 8>) -> array<u
     var first: array<u32, 8>;
     var k_3: u32 = 0u;
     var j_1: u32;
-    var local_16: bool;
     var local_17: bool;
+    var local_18: bool;
 
     loop {
         let _e5 = k_3;
@@ -962,11 +973,11 @@ fn first_holders(keys_1: array<vec2<u32>, 8>, held_1: array<bool, 8>) -> array<u
                 let _e18 = k_3;
                 if (_e17 < _e18) {
                     let _e22 = k_3;
-                    local_16 = held_1[_e22];
+                    local_17 = held_1[_e22];
                 } else {
-                    local_16 = false;
+                    local_17 = false;
                 }
-                let _e25 = local_16;
+                let _e25 = local_17;
                 if _e25 {
                 } else {
                     break;
@@ -976,11 +987,11 @@ fn first_holders(keys_1: array<vec2<u32>, 8>, held_1: array<bool, 8>) -> array<u
                     if held_1[_e26] {
                         let _e30 = j_1;
                         let _e32 = k_3;
-                        local_17 = all((keys_1[_e30] == keys_1[_e32]));
+                        local_18 = all((keys_1[_e30] == keys_1[_e32]));
                     } else {
-                        local_17 = false;
+                        local_18 = false;
                     }
-                    let _e37 = local_17;
+                    let _e37 = local_18;
                     if _e37 {
                         let _e38 = k_3;
                         let _e40 = j_1;

@@ -302,13 +302,13 @@ fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n_1: vec3<f32>, ng: vec3<f32>
     }
     let w_11 = (v_8 / vec3(sqrt(d2_7)));
     let cos_x_1 = -(dot(n_1, w_11));
-    if !((cos_x_1 <= 0f)) {
-        local_6 = (dot(ng, w_11) >= 0f);
+    if !(!((cos_x_1 > 0f))) {
+        local_6 = !((dot(ng, w_11) < 0f));
     } else {
         local_6 = true;
     }
-    let _e32 = local_6;
-    if _e32 {
+    let _e34 = local_6;
+    if _e34 {
         return 0f;
     }
     return cos_x_1;
@@ -540,20 +540,31 @@ fn subtended_cos(dist2_: f32, r2_2: f32) -> f32 {
 }
 
 fn emitter_cone(center: vec3<f32>, radius: f32, axis: vec3<f32>, cos_o: f32, p: vec3<f32>) -> vec4<f32> {
+    var local_12: bool;
+
     let v_9 = (p - center);
     let dist2_1 = dot(v_9, v_9);
     let r2_5 = (radius * radius);
+    if (dist2_1 <= 0f) {
+        local_12 = (r2_5 <= 0f);
+    } else {
+        local_12 = false;
+    }
+    let _e15 = local_12;
+    if _e15 {
+        return vec4<f32>(-2f, 0.000000000001f, -1f, 0f);
+    }
     let d2_8 = max(max(dist2_1, r2_5), MIN_D2_);
     let wi = select(vec3<f32>(0f, 0f, 0f), (v_9 / vec3(sqrt(dist2_1))), (dist2_1 > 0f));
     let cos_w = dot(axis, wi);
-    let _e25 = safe_sqrt((1f - (cos_w * cos_w)));
-    let _e26 = subtended_cos(dist2_1, r2_5);
-    let _e30 = safe_sqrt((1f - (_e26 * _e26)));
-    let _e34 = safe_sqrt((1f - (cos_o * cos_o)));
-    let _e35 = cos_sub_clamped(_e25, cos_w, _e34, cos_o);
-    let _e36 = sin_sub_clamped(_e25, cos_w, _e34, cos_o);
-    let _e37 = cos_sub_clamped(_e36, _e35, _e30, _e26);
-    return vec4<f32>(_e37, d2_8, _e26, _e30);
+    let _e38 = safe_sqrt((1f - (cos_w * cos_w)));
+    let _e39 = subtended_cos(dist2_1, r2_5);
+    let _e43 = safe_sqrt((1f - (_e39 * _e39)));
+    let _e47 = safe_sqrt((1f - (cos_o * cos_o)));
+    let _e48 = cos_sub_clamped(_e38, cos_w, _e47, cos_o);
+    let _e49 = sin_sub_clamped(_e38, cos_w, _e47, cos_o);
+    let _e50 = cos_sub_clamped(_e49, _e48, _e43, _e39);
+    return vec4<f32>(_e50, d2_8, _e39, _e43);
 }
 
 fn emitter_importance(center_1: vec3<f32>, radius_1: f32, phi: f32, axis_1: vec3<f32>, cos_o_1: f32, cos_e: f32, p_1: vec3<f32>) -> f32 {
@@ -565,23 +576,23 @@ fn emitter_importance(center_1: vec3<f32>, radius_1: f32, phi: f32, axis_1: vec3
 }
 
 fn cone_cos_of(v_3: vec3<f32>, d2_4: f32, a_3: f32, d: vec3<f32>) -> f32 {
-    var local_12: bool;
     var local_13: bool;
+    var local_14: bool;
 
     let vd = dot(v_3, d);
     let h2_ = (d2_4 - (a_3 * a_3));
     if !((h2_ <= 0f)) {
         if (vd >= 0f) {
-            local_13 = ((vd * vd) >= h2_);
+            local_14 = ((vd * vd) >= h2_);
         } else {
-            local_13 = false;
+            local_14 = false;
         }
-        let _e19 = local_13;
-        local_12 = _e19;
+        let _e19 = local_14;
+        local_13 = _e19;
     } else {
-        local_12 = true;
+        local_13 = true;
     }
-    let _e21 = local_12;
+    let _e21 = local_13;
     if _e21 {
         return 1f;
     }
@@ -631,16 +642,16 @@ fn light_importance(center_4: vec3<f32>, radius_4: f32, phi_1: f32, axis_2: vec3
 }
 
 fn glossy_importance(center_5: vec3<f32>, radius_5: f32, phi_2: f32, axis_3: vec3<f32>, cos_o_3: f32, cos_e_2: f32, p_5: vec3<f32>, n_6: vec3<f32>, r_4: vec3<f32>, lobe_5: vec4<f32>) -> f32 {
-    var local_14: bool;
+    var local_15: bool;
 
     let _e10 = emitter_importance(center_5, radius_5, phi_2, axis_3, cos_o_3, cos_e_2, p_5);
     let _e11 = cone_cos_toward(center_5, radius_5, p_5, n_6);
     if !((_e10 <= 0f)) {
-        local_14 = (_e11 <= 0f);
+        local_15 = (_e11 <= 0f);
     } else {
-        local_14 = true;
+        local_15 = true;
     }
-    let _e20 = local_14;
+    let _e20 = local_15;
     if _e20 {
         return 0f;
     }
@@ -698,16 +709,16 @@ fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin_1: vec3<f32>, bmax_1: vec3<f32>
 }
 
 fn triangle_normal(a_4: vec3<f32>, b_3: vec3<f32>, c_4: vec3<f32>) -> vec3<f32> {
-    var local_15: bool;
+    var local_16: bool;
 
     let n_14 = cross((b_3 - a_4), (c_4 - a_4));
     let l2_ = dot(n_14, n_14);
     if !(!((l2_ > 0f))) {
-        local_15 = !((l2_ < 300000000000000000000000000000000000000f));
+        local_16 = !((l2_ < 300000000000000000000000000000000000000f));
     } else {
-        local_15 = true;
+        local_16 = true;
     }
-    let _e17 = local_15;
+    let _e17 = local_16;
     if _e17 {
         return vec3<f32>(0f, 0f, 0f);
     }
@@ -715,9 +726,9 @@ fn triangle_normal(a_4: vec3<f32>, b_3: vec3<f32>, c_4: vec3<f32>) -> vec3<f32> 
 }
 
 fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_4: vec3<f32>, c_5: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
-    var local_16: bool;
     var local_17: bool;
     var local_18: bool;
+    var local_19: bool;
 
     let e1_ = (b_4 - a_5);
     let e2_ = (c_5 - a_5);
@@ -730,32 +741,32 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_4: vec3<f32>, 
     let s_9 = (o_1 - a_5);
     let u_3 = (dot(s_9, p_9) * inv_1);
     if !((u_3 < 0f)) {
-        local_16 = (u_3 > 1f);
+        local_17 = (u_3 > 1f);
     } else {
-        local_16 = true;
+        local_17 = true;
     }
-    let _e28 = local_16;
+    let _e28 = local_17;
     if _e28 {
         return -1f;
     }
     let q_1 = cross(s_9, e1_);
     let v_13 = (dot(d_3, q_1) * inv_1);
     if !((v_13 < 0f)) {
-        local_17 = ((u_3 + v_13) > 1f);
+        local_18 = ((u_3 + v_13) > 1f);
     } else {
-        local_17 = true;
+        local_18 = true;
     }
-    let _e42 = local_17;
+    let _e42 = local_18;
     if _e42 {
         return -1f;
     }
     let t_6 = (dot(e2_, q_1) * inv_1);
     if (t_6 > t_min) {
-        local_18 = (t_6 < t_max_1);
+        local_19 = (t_6 < t_max_1);
     } else {
-        local_18 = false;
+        local_19 = false;
     }
-    let _e51 = local_18;
+    let _e51 = local_19;
     if _e51 {
         return t_6;
     }
@@ -892,8 +903,8 @@ fn bsh_inner_scale(a_7: f32, v_4: vec3<f32>, d2_6: f32, r_6: vec3<f32>, rl_2: ve
 }
 
 fn bsh_reaches(node_4: BshNode, x_5: vec3<f32>, r_7: vec3<f32>, rl_3: vec4<f32>) -> bool {
-    var local_19: bool;
     var local_20: bool;
+    var local_21: bool;
 
     let _e6 = sphere_contains_point(node_4.center, node_4.radius, x_5);
     if _e6 {
@@ -901,11 +912,11 @@ fn bsh_reaches(node_4: BshNode, x_5: vec3<f32>, r_7: vec3<f32>, rl_3: vec4<f32>)
     }
     if !((rl_3.w <= 1f)) {
         let _e20 = sphere_contains_point(node_4.center, (node_4.radius * (rl_3.w * 1.0001f)), x_5);
-        local_19 = !(_e20);
+        local_20 = !(_e20);
     } else {
-        local_19 = true;
+        local_20 = true;
     }
-    let _e23 = local_19;
+    let _e23 = local_20;
     if _e23 {
         return false;
     }
@@ -926,11 +937,11 @@ fn bsh_reaches(node_4: BshNode, x_5: vec3<f32>, r_7: vec3<f32>, rl_3: vec4<f32>)
     let _e50 = bsh_range_bound(node_4);
     let reach = (node_4.extent + (sqrt(s_c) * _e50));
     if (d2_9 <= ((node_4.radius * node_4.radius) * s_c)) {
-        local_20 = (d2_9 <= (reach * reach));
+        local_21 = (d2_9 <= (reach * reach));
     } else {
-        local_20 = false;
+        local_21 = false;
     }
-    let _e63 = local_20;
+    let _e63 = local_21;
     return _e63;
 }
 
@@ -942,7 +953,7 @@ fn bsh_reaches_box(node_5: BshNode, lo: vec3<f32>, hi: vec3<f32>, w_5: f32) -> b
 fn bsh_subtree(nodes_3: u32, s_1: u32, depth: u32) -> u32 {
     var i_2: u32;
     var level: u32 = 0u;
-    var local_21: bool;
+    var local_22: bool;
 
     let _e3 = bsh_first(nodes_3);
     i_2 = _e3;
@@ -950,11 +961,11 @@ fn bsh_subtree(nodes_3: u32, s_1: u32, depth: u32) -> u32 {
         let _e7 = level;
         if (_e7 < depth) {
             let _e11 = i_2;
-            local_21 = (_e11 != BSH_NONE);
+            local_22 = (_e11 != BSH_NONE);
         } else {
-            local_21 = false;
+            local_22 = false;
         }
-        let _e15 = local_21;
+        let _e15 = local_22;
         if _e15 {
         } else {
             break;
@@ -1029,8 +1040,8 @@ fn next_threshold(sum: f32, h_1: ptr<function, u32>) -> f32 {
 
 fn connect_record(l_4: GpuLight, x_6: vec3<f32>, n_8: vec3<f32>, ng_1: vec3<f32>, r2_3: f32, rt2_4: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32, trace_1: bool) -> Connection {
     var c_6: Connection;
-    var local_22: bool;
     var local_23: bool;
+    var local_24: bool;
 
     c_6.e = vec3(0f);
     let _e16 = light_point(l_4, u1_2, u2_2);
@@ -1043,16 +1054,16 @@ fn connect_record(l_4: GpuLight, x_6: vec3<f32>, n_8: vec3<f32>, ng_1: vec3<f32>
         if trace_1 {
             let _e33 = c_6.y;
             let _e34 = occluded((x_6 + (ng_1 * eps)), _e33);
-            local_23 = _e34;
+            local_24 = _e34;
         } else {
-            local_23 = false;
+            local_24 = false;
         }
-        let _e36 = local_23;
-        local_22 = _e36;
+        let _e36 = local_24;
+        local_23 = _e36;
     } else {
-        local_22 = true;
+        local_23 = true;
     }
-    let _e38 = local_22;
+    let _e38 = local_23;
     if _e38 {
         let _e39 = c_6;
         return _e39;
@@ -1202,9 +1213,9 @@ fn box_is_empty(b_6: WorkgroupBox) -> bool {
 fn tile_subtree(s_4: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: u32) -> u32 {
     var p_8: u32;
     var b_7: u32;
-    var local_24: bool;
     var local_25: bool;
     var local_26: bool;
+    var local_27: bool;
 
     let _e8 = bsh_subtree(BSH, s_4, BSH_TILE_DEPTH);
     if (_e8 == BSH_NONE) {
@@ -1219,16 +1230,16 @@ fn tile_subtree(s_4: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: 
         if (_e23 != end_1) {
             if !(!(list)) {
                 let _e31 = p_8;
-                local_25 = (_e31 < to);
+                local_26 = (_e31 < to);
             } else {
-                local_25 = true;
+                local_26 = true;
             }
-            let _e34 = local_25;
-            local_24 = _e34;
+            let _e34 = local_26;
+            local_25 = _e34;
         } else {
-            local_24 = false;
+            local_25 = false;
         }
-        let _e36 = local_24;
+        let _e36 = local_25;
         if _e36 {
         } else {
             break;
@@ -1236,11 +1247,11 @@ fn tile_subtree(s_4: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: 
         {
             if list {
                 let _e39 = p_8;
-                local_26 = (_e39 >= start_2);
+                local_27 = (_e39 >= start_2);
             } else {
-                local_26 = false;
+                local_27 = false;
             }
-            let _e42 = local_26;
+            let _e42 = local_27;
             if _e42 {
                 let _e44 = p_8;
                 let _e47 = b_7;
@@ -1261,18 +1272,18 @@ fn tile_subtree(s_4: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: 
 }
 
 fn tile_walk_begin(li_6: u32, x_10: vec3<f32>, w_8: f32, has_1: bool) -> TileWalk {
-    var local_27: bool;
+    var local_28: bool;
     var t_2: TileWalk;
     var s_5: u32;
     var sum_1: u32 = 0u;
     var s_6: u32 = 0u;
 
     if has_1 {
-        local_27 = (w_8 >= 0f);
+        local_28 = (w_8 >= 0f);
     } else {
-        local_27 = false;
+        local_28 = false;
     }
-    let _e12 = local_27;
+    let _e12 = local_28;
     let _e14 = atomicMax((&tile_scale), select(0u, bitcast<u32>(w_8), _e12));
     let _e15 = workgroup_box(li_6, x_10, has_1);
     let _e19 = workgroupUniformLoad((&tile_scale));
@@ -1335,7 +1346,7 @@ fn tile_walk_begin(li_6: u32, x_10: vec3<f32>, w_8: f32, has_1: bool) -> TileWal
 fn tile_walk_fill(li_7: u32, t_3: TileWalk, start_3: u32) -> u32 {
     var s_7: u32;
     var past: u32;
-    var local_28: bool;
+    var local_29: bool;
 
     let to_1 = min(t_3.total, (start_3 + TILE_LIST));
     s_7 = li_7;
@@ -1357,11 +1368,11 @@ fn tile_walk_fill(li_7: u32, t_3: TileWalk, start_3: u32) -> u32 {
             }
             if (at_1 < to_1) {
                 let _e31 = past;
-                local_28 = (_e31 > start_3);
+                local_29 = (_e31 > start_3);
             } else {
-                local_28 = false;
+                local_29 = false;
             }
-            let _e34 = local_28;
+            let _e34 = local_29;
             if _e34 {
                 let _e35 = s_7;
                 let _e37 = tile_subtree(_e35, t_3, true, at_1, start_3, to_1);
@@ -1423,8 +1434,8 @@ fn first_holders(keys_1: array<vec2<u32>, 8>, held_1: array<bool, 8>) -> array<u
     var first: array<u32, 8>;
     var k_3: u32 = 0u;
     var j_2: u32;
-    var local_29: bool;
     var local_30: bool;
+    var local_31: bool;
 
     loop {
         let _e5 = k_3;
@@ -1443,11 +1454,11 @@ fn first_holders(keys_1: array<vec2<u32>, 8>, held_1: array<bool, 8>) -> array<u
                 let _e18 = k_3;
                 if (_e17 < _e18) {
                     let _e22 = k_3;
-                    local_29 = held_1[_e22];
+                    local_30 = held_1[_e22];
                 } else {
-                    local_29 = false;
+                    local_30 = false;
                 }
-                let _e25 = local_29;
+                let _e25 = local_30;
                 if _e25 {
                 } else {
                     break;
@@ -1457,11 +1468,11 @@ fn first_holders(keys_1: array<vec2<u32>, 8>, held_1: array<bool, 8>) -> array<u
                     if held_1[_e26] {
                         let _e30 = j_2;
                         let _e32 = k_3;
-                        local_30 = all((keys_1[_e30] == keys_1[_e32]));
+                        local_31 = all((keys_1[_e30] == keys_1[_e32]));
                     } else {
-                        local_30 = false;
+                        local_31 = false;
                     }
-                    let _e37 = local_30;
+                    let _e37 = local_31;
                     if _e37 {
                         let _e38 = k_3;
                         let _e40 = j_2;

@@ -450,13 +450,13 @@ fn connection_cosine(x_6: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     }
     let w_18 = (v_18 / vec3(sqrt(d2_17)));
     let cos_x_1 = -(dot(n, w_18));
-    if !((cos_x_1 <= 0f)) {
-        local_7 = (dot(ng, w_18) >= 0f);
+    if !(!((cos_x_1 > 0f))) {
+        local_7 = !((dot(ng, w_18) < 0f));
     } else {
         local_7 = true;
     }
-    let _e32 = local_7;
-    if _e32 {
+    let _e34 = local_7;
+    if _e34 {
         return 0f;
     }
     return cos_x_1;
@@ -1269,20 +1269,31 @@ fn subtended_cos(dist2_: f32, r2_6: f32) -> f32 {
 }
 
 fn emitter_cone(center: vec3<f32>, radius_1: f32, axis: vec3<f32>, cos_o: f32, p: vec3<f32>) -> vec4<f32> {
+    var local_18: bool;
+
     let v_19 = (p - center);
     let dist2_1 = dot(v_19, v_19);
     let r2_11 = (radius_1 * radius_1);
+    if (dist2_1 <= 0f) {
+        local_18 = (r2_11 <= 0f);
+    } else {
+        local_18 = false;
+    }
+    let _e15 = local_18;
+    if _e15 {
+        return vec4<f32>(-2f, 0.000000000001f, -1f, 0f);
+    }
     let d2_18 = max(max(dist2_1, r2_11), MIN_D2_);
     let wi_3 = select(vec3<f32>(0f, 0f, 0f), (v_19 / vec3(sqrt(dist2_1))), (dist2_1 > 0f));
     let cos_w = dot(axis, wi_3);
-    let _e25 = safe_sqrt((1f - (cos_w * cos_w)));
-    let _e26 = subtended_cos(dist2_1, r2_11);
-    let _e30 = safe_sqrt((1f - (_e26 * _e26)));
-    let _e34 = safe_sqrt((1f - (cos_o * cos_o)));
-    let _e35 = cos_sub_clamped(_e25, cos_w, _e34, cos_o);
-    let _e36 = sin_sub_clamped(_e25, cos_w, _e34, cos_o);
-    let _e37 = cos_sub_clamped(_e36, _e35, _e30, _e26);
-    return vec4<f32>(_e37, d2_18, _e26, _e30);
+    let _e38 = safe_sqrt((1f - (cos_w * cos_w)));
+    let _e39 = subtended_cos(dist2_1, r2_11);
+    let _e43 = safe_sqrt((1f - (_e39 * _e39)));
+    let _e47 = safe_sqrt((1f - (cos_o * cos_o)));
+    let _e48 = cos_sub_clamped(_e38, cos_w, _e47, cos_o);
+    let _e49 = sin_sub_clamped(_e38, cos_w, _e47, cos_o);
+    let _e50 = cos_sub_clamped(_e49, _e48, _e43, _e39);
+    return vec4<f32>(_e50, d2_18, _e39, _e43);
 }
 
 fn emitter_importance(center_1: vec3<f32>, radius_2: f32, phi: f32, axis_1: vec3<f32>, cos_o_1: f32, cos_e: f32, p_1: vec3<f32>) -> f32 {
@@ -1294,23 +1305,23 @@ fn emitter_importance(center_1: vec3<f32>, radius_2: f32, phi: f32, axis_1: vec3
 }
 
 fn cone_cos_of(v_11: vec3<f32>, d2_9: f32, a_5: f32, d_1: vec3<f32>) -> f32 {
-    var local_18: bool;
     var local_19: bool;
+    var local_20: bool;
 
     let vd = dot(v_11, d_1);
     let h2_1 = (d2_9 - (a_5 * a_5));
     if !((h2_1 <= 0f)) {
         if (vd >= 0f) {
-            local_19 = ((vd * vd) >= h2_1);
+            local_20 = ((vd * vd) >= h2_1);
         } else {
-            local_19 = false;
+            local_20 = false;
         }
-        let _e19 = local_19;
-        local_18 = _e19;
+        let _e19 = local_20;
+        local_19 = _e19;
     } else {
-        local_18 = true;
+        local_19 = true;
     }
-    let _e21 = local_18;
+    let _e21 = local_19;
     if _e21 {
         return 1f;
     }
@@ -1360,16 +1371,16 @@ fn light_importance(center_4: vec3<f32>, radius_5: f32, phi_1: f32, axis_2: vec3
 }
 
 fn glossy_importance(center_5: vec3<f32>, radius_6: f32, phi_2: f32, axis_3: vec3<f32>, cos_o_3: f32, cos_e_2: f32, p_5: vec3<f32>, n_22: vec3<f32>, r_7: vec3<f32>, lobe_5: vec4<f32>) -> f32 {
-    var local_20: bool;
+    var local_21: bool;
 
     let _e10 = emitter_importance(center_5, radius_6, phi_2, axis_3, cos_o_3, cos_e_2, p_5);
     let _e11 = cone_cos_toward(center_5, radius_6, p_5, n_22);
     if !((_e10 <= 0f)) {
-        local_20 = (_e11 <= 0f);
+        local_21 = (_e11 <= 0f);
     } else {
-        local_20 = true;
+        local_21 = true;
     }
-    let _e20 = local_20;
+    let _e20 = local_21;
     if _e20 {
         return 0f;
     }
@@ -1432,21 +1443,21 @@ fn bvh_remap_u(u_6: f32, p0_: f32, first: bool) -> f32 {
 }
 
 fn finite3_(v_12: vec3<f32>) -> bool {
-    var local_21: bool;
     var local_22: bool;
+    var local_23: bool;
 
     if (abs(v_12.x) <= F32_MAX) {
-        local_21 = (abs(v_12.y) <= F32_MAX);
-    } else {
-        local_21 = false;
-    }
-    let _e12 = local_21;
-    if _e12 {
-        local_22 = (abs(v_12.z) <= F32_MAX);
+        local_22 = (abs(v_12.y) <= F32_MAX);
     } else {
         local_22 = false;
     }
-    let _e20 = local_22;
+    let _e12 = local_22;
+    if _e12 {
+        local_23 = (abs(v_12.z) <= F32_MAX);
+    } else {
+        local_23 = false;
+    }
+    let _e20 = local_23;
     return _e20;
 }
 
@@ -1487,16 +1498,16 @@ fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin_1: vec3<f32>, bmax_1: vec3<f32>
 }
 
 fn triangle_normal(a_6: vec3<f32>, b_4: vec3<f32>, c_11: vec3<f32>) -> vec3<f32> {
-    var local_23: bool;
+    var local_24: bool;
 
     let n_37 = cross((b_4 - a_6), (c_11 - a_6));
     let l2_ = dot(n_37, n_37);
     if !(!((l2_ > 0f))) {
-        local_23 = !((l2_ < 300000000000000000000000000000000000000f));
+        local_24 = !((l2_ < 300000000000000000000000000000000000000f));
     } else {
-        local_23 = true;
+        local_24 = true;
     }
-    let _e17 = local_23;
+    let _e17 = local_24;
     if _e17 {
         return vec3<f32>(0f, 0f, 0f);
     }
@@ -1524,16 +1535,16 @@ fn barycentric(p_8: vec3<f32>, a_7: vec3<f32>, b_5: vec3<f32>, c_12: vec3<f32>) 
 }
 
 fn shading_normal(n0_: vec3<f32>, n1_: vec3<f32>, n2_: vec3<f32>, w_10: vec3<f32>, facing: vec3<f32>) -> vec3<f32> {
-    var local_24: bool;
+    var local_25: bool;
 
     let s_6 = (((n0_ * w_10.x) + (n1_ * w_10.y)) + (n2_ * w_10.z));
     let l2_1 = dot(s_6, s_6);
     if !(!((l2_1 > 0.000000000001f))) {
-        local_24 = !((l2_1 < 300000000000000000000000000000000000000f));
+        local_25 = !((l2_1 < 300000000000000000000000000000000000000f));
     } else {
-        local_24 = true;
+        local_25 = true;
     }
-    let _e24 = local_24;
+    let _e24 = local_25;
     if _e24 {
         return facing;
     }
@@ -1542,9 +1553,9 @@ fn shading_normal(n0_: vec3<f32>, n1_: vec3<f32>, n2_: vec3<f32>, w_10: vec3<f32
 }
 
 fn ray_triangle(o_1: vec3<f32>, d_4: vec3<f32>, a_8: vec3<f32>, b_6: vec3<f32>, c_13: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
-    var local_25: bool;
     var local_26: bool;
     var local_27: bool;
+    var local_28: bool;
 
     let e1_2 = (b_6 - a_8);
     let e2_2 = (c_13 - a_8);
@@ -1557,32 +1568,32 @@ fn ray_triangle(o_1: vec3<f32>, d_4: vec3<f32>, a_8: vec3<f32>, b_6: vec3<f32>, 
     let s_7 = (o_1 - a_8);
     let u_8 = (dot(s_7, p_12) * inv_1);
     if !((u_8 < 0f)) {
-        local_25 = (u_8 > 1f);
+        local_26 = (u_8 > 1f);
     } else {
-        local_25 = true;
+        local_26 = true;
     }
-    let _e28 = local_25;
+    let _e28 = local_26;
     if _e28 {
         return -1f;
     }
     let q_6 = cross(s_7, e1_2);
     let v_23 = (dot(d_4, q_6) * inv_1);
     if !((v_23 < 0f)) {
-        local_26 = ((u_8 + v_23) > 1f);
+        local_27 = ((u_8 + v_23) > 1f);
     } else {
-        local_26 = true;
+        local_27 = true;
     }
-    let _e42 = local_26;
+    let _e42 = local_27;
     if _e42 {
         return -1f;
     }
     let t_6 = (dot(e2_2, q_6) * inv_1);
     if (t_6 > t_min) {
-        local_27 = (t_6 < t_max_1);
+        local_28 = (t_6 < t_max_1);
     } else {
-        local_27 = false;
+        local_28 = false;
     }
-    let _e51 = local_27;
+    let _e51 = local_28;
     if _e51 {
         return t_6;
     }
@@ -1636,48 +1647,48 @@ fn shifted_subset(pixel_class: u32, shift: u32, period_3: u32) -> u32 {
 }
 
 fn vpl_record_ok(position: vec3<f32>, normal: vec3<f32>, flux_1: vec3<f32>) -> bool {
-    var local_28: bool;
     var local_29: bool;
     var local_30: bool;
     var local_31: bool;
     var local_32: bool;
+    var local_33: bool;
 
     let _e3 = finite3_(position);
     if _e3 {
         let _e6 = finite3_(normal);
-        local_28 = _e6;
-    } else {
-        local_28 = false;
-    }
-    let _e8 = local_28;
-    if _e8 {
-        let _e11 = finite3_(flux_1);
-        local_29 = _e11;
+        local_29 = _e6;
     } else {
         local_29 = false;
     }
-    let _e13 = local_29;
+    let _e8 = local_29;
+    if _e8 {
+        let _e11 = finite3_(flux_1);
+        local_30 = _e11;
+    } else {
+        local_30 = false;
+    }
+    let _e13 = local_30;
     if !(_e13) {
         return false;
     }
     if (flux_1.x >= 0f) {
-        local_30 = (flux_1.y >= 0f);
-    } else {
-        local_30 = false;
-    }
-    let _e25 = local_30;
-    if _e25 {
-        local_31 = (flux_1.z >= 0f);
+        local_31 = (flux_1.y >= 0f);
     } else {
         local_31 = false;
     }
-    let _e32 = local_31;
-    if _e32 {
-        local_32 = ((max(max(flux_1.x, flux_1.y), flux_1.z) * INV_PI) <= MAX_INTENSITY);
+    let _e25 = local_31;
+    if _e25 {
+        local_32 = (flux_1.z >= 0f);
     } else {
         local_32 = false;
     }
-    let _e45 = local_32;
+    let _e32 = local_32;
+    if _e32 {
+        local_33 = ((max(max(flux_1.x, flux_1.y), flux_1.z) * INV_PI) <= MAX_INTENSITY);
+    } else {
+        local_33 = false;
+    }
+    let _e45 = local_33;
     return _e45;
 }
 
@@ -1775,14 +1786,14 @@ fn sees_emission(gn: vec3<f32>, dir_1: vec3<f32>) -> bool {
 }
 
 fn continues_path(nd: vec3<f32>, n_27: vec3<f32>, ng_1: vec3<f32>) -> bool {
-    var local_33: bool;
+    var local_34: bool;
 
     if (dot(nd, n_27) > 0f) {
-        local_33 = (dot(nd, ng_1) > 0f);
+        local_34 = (dot(nd, ng_1) > 0f);
     } else {
-        local_33 = false;
+        local_34 = false;
     }
-    let _e12 = local_33;
+    let _e12 = local_34;
     return _e12;
 }
 
@@ -1846,14 +1857,14 @@ fn shadow_bias(texel: f32, cos_light_1: f32) -> f32 {
 }
 
 fn shadow_lit(d_6: f32, d_map: f32, bias: f32) -> bool {
-    var local_34: bool;
+    var local_35: bool;
 
     if !((d_map <= 0f)) {
-        local_34 = (d_6 <= (d_map + bias));
+        local_35 = (d_6 <= (d_map + bias));
     } else {
-        local_34 = true;
+        local_35 = true;
     }
-    let _e11 = local_34;
+    let _e11 = local_35;
     return _e11;
 }
 
@@ -1862,16 +1873,16 @@ fn diffuse_radiance(albedo: vec3<f32>, emission: vec3<f32>, e_2: vec3<f32>) -> v
 }
 
 fn primary_light_dir(x_17: vec3<f32>, origin: vec3<f32>, axis_8: vec3<f32>, perspective_2: bool) -> vec3<f32> {
-    var local_35: bool;
+    var local_36: bool;
 
     let v_25 = (origin - x_17);
     let d2_20 = dot(v_25, v_25);
     if perspective_2 {
-        local_35 = (d2_20 > 0f);
+        local_36 = (d2_20 > 0f);
     } else {
-        local_35 = false;
+        local_36 = false;
     }
-    let _e11 = local_35;
+    let _e11 = local_36;
     if _e11 {
         return (v_25 / vec3(sqrt(d2_20)));
     }
@@ -1908,10 +1919,10 @@ fn bilinear_weight(fx: f32, fy: f32, dx: u32, dy: u32) -> f32 {
 }
 
 fn history_tap(q_2: vec3<f32>, k_7: u32, width_2: f32, height_2: f32) -> vec4<f32> {
-    var local_36: bool;
     var local_37: bool;
     var local_38: bool;
     var local_39: bool;
+    var local_40: bool;
 
     let x0_ = floor(q_2.x);
     let y0_ = floor(q_2.y);
@@ -1922,29 +1933,29 @@ fn history_tap(q_2: vec3<f32>, k_7: u32, width_2: f32, height_2: f32) -> vec4<f3
     let _e14 = to_f32_(dy_1);
     let ty_2 = (y0_ + _e14);
     if (q_2.z > 0f) {
-        local_36 = (tx_2 >= 0f);
-    } else {
-        local_36 = false;
-    }
-    let _e24 = local_36;
-    if _e24 {
-        local_37 = (ty_2 >= 0f);
+        local_37 = (tx_2 >= 0f);
     } else {
         local_37 = false;
     }
-    let _e30 = local_37;
-    if _e30 {
-        local_38 = (tx_2 < width_2);
+    let _e24 = local_37;
+    if _e24 {
+        local_38 = (ty_2 >= 0f);
     } else {
         local_38 = false;
     }
-    let _e35 = local_38;
-    if _e35 {
-        local_39 = (ty_2 < height_2);
+    let _e30 = local_38;
+    if _e30 {
+        local_39 = (tx_2 < width_2);
     } else {
         local_39 = false;
     }
-    let inside = local_39;
+    let _e35 = local_39;
+    if _e35 {
+        local_40 = (ty_2 < height_2);
+    } else {
+        local_40 = false;
+    }
+    let inside = local_40;
     let _e45 = bilinear_weight((q_2.x - x0_), (q_2.y - y0_), dx_1, dy_1);
     return vec4<f32>(tx_2, ty_2, _e45, select(0f, 1f, inside));
 }
@@ -1957,14 +1968,14 @@ fn history_mean(sum_1: vec4<f32>, weight_1: f32) -> vec4<f32> {
 }
 
 fn history_matches(n_30: vec3<f32>, nh: vec3<f32>, p_10: vec3<f32>, oh: f32, d_7: f32) -> bool {
-    var local_40: bool;
+    var local_41: bool;
 
     if (abs((dot(nh, p_10) - oh)) <= (TEMPORAL_DEPTH_TOLERANCE * d_7)) {
-        local_40 = (dot(n_30, nh) >= TEMPORAL_NORMAL_COS);
+        local_41 = (dot(n_30, nh) >= TEMPORAL_NORMAL_COS);
     } else {
-        local_40 = false;
+        local_41 = false;
     }
-    let _e17 = local_40;
+    let _e17 = local_41;
     return _e17;
 }
 
@@ -1986,34 +1997,34 @@ fn temporal_alpha(n_33: f32) -> f32 {
 }
 
 fn history_tap_weight(w_12: f32, n_34: vec3<f32>, nh_1: vec3<f32>, p_11: vec3<f32>, oh_1: f32, d_8: f32, len_1: f32) -> f32 {
-    var local_41: bool;
+    var local_42: bool;
 
     if (len_1 > 0f) {
         let _e11 = history_matches(n_34, nh_1, p_11, oh_1, d_8);
-        local_41 = _e11;
+        local_42 = _e11;
     } else {
-        local_41 = false;
+        local_42 = false;
     }
-    let _e13 = local_41;
+    let _e13 = local_42;
     return select(0f, w_12, _e13);
 }
 
 fn history_tap_weight_motion(w_13: f32, n_35: vec3<f32>, nh_2: vec3<f32>, d_9: f32, dh: f32, len_2: f32) -> f32 {
-    var local_42: bool;
     var local_43: bool;
+    var local_44: bool;
 
     if (len_2 > 0f) {
-        local_42 = (abs((dh - d_9)) <= (TEMPORAL_MOTION_DEPTH_TOLERANCE * d_9));
-    } else {
-        local_42 = false;
-    }
-    let _e16 = local_42;
-    if _e16 {
-        local_43 = (dot(n_35, nh_2) >= TEMPORAL_NORMAL_COS);
+        local_43 = (abs((dh - d_9)) <= (TEMPORAL_MOTION_DEPTH_TOLERANCE * d_9));
     } else {
         local_43 = false;
     }
-    let _e23 = local_43;
+    let _e16 = local_43;
+    if _e16 {
+        local_44 = (dot(n_35, nh_2) >= TEMPORAL_NORMAL_COS);
+    } else {
+        local_44 = false;
+    }
+    let _e23 = local_44;
     return select(0f, w_13, _e23);
 }
 
@@ -2038,7 +2049,7 @@ fn temporal_color(c_15: vec3<f32>, h_1: vec4<f32>, noise_2: f32, last_1: f32, ma
 }
 
 fn temporal_moments(c_16: vec3<f32>, last_2: f32, noise_3: f32, prev_len: f32, len_3: f32, depth_1: f32) -> vec4<f32> {
-    var local_44: bool;
+    var local_45: bool;
 
     let _e6 = luminance(c_16);
     if (prev_len <= 0f) {
@@ -2048,11 +2059,11 @@ fn temporal_moments(c_16: vec3<f32>, last_2: f32, noise_3: f32, prev_len: f32, l
     let d2_21 = ((0.5f * d_12) * d_12);
     let cap = (16f * noise_3);
     if (prev_len >= TEMPORAL_MIN_MOMENTS) {
-        local_44 = (noise_3 > 0f);
+        local_45 = (noise_3 > 0f);
     } else {
-        local_44 = false;
+        local_45 = false;
     }
-    let _e26 = local_44;
+    let _e26 = local_45;
     let sample = select(d2_21, min(d2_21, cap), _e26);
     let _e31 = temporal_alpha((len_3 - 1f));
     return vec4<f32>(_e6, (noise_3 + ((sample - noise_3) * _e31)), depth_1, 0f);

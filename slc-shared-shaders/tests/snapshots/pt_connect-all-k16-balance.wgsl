@@ -290,13 +290,13 @@ fn connection_cosine(x_3: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     }
     let w_8 = (v_9 / vec3(sqrt(d2_9)));
     let cos_x_1 = -(dot(n, w_8));
-    if !((cos_x_1 <= 0f)) {
-        local_1 = (dot(ng, w_8) >= 0f);
+    if !(!((cos_x_1 > 0f))) {
+        local_1 = !((dot(ng, w_8) < 0f));
     } else {
         local_1 = true;
     }
-    let _e32 = local_1;
-    if _e32 {
+    let _e34 = local_1;
+    if _e34 {
         return 0f;
     }
     return cos_x_1;

@@ -266,13 +266,13 @@ fn connection_cosine(x_1: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     }
     let w_5 = (v_7 / vec3(sqrt(d2_8)));
     let cos_x_1 = -(dot(n, w_5));
-    if !((cos_x_1 <= 0f)) {
-        local_1 = (dot(ng, w_5) >= 0f);
+    if !(!((cos_x_1 > 0f))) {
+        local_1 = !((dot(ng, w_5) < 0f));
     } else {
         local_1 = true;
     }
-    let _e32 = local_1;
-    if _e32 {
+    let _e34 = local_1;
+    if _e34 {
         return 0f;
     }
     return cos_x_1;
@@ -590,20 +590,31 @@ fn subtended_cos(dist2_: f32, r2_2: f32) -> f32 {
 }
 
 fn emitter_cone(center: vec3<f32>, radius: f32, axis: vec3<f32>, cos_o: f32, p: vec3<f32>) -> vec4<f32> {
+    var local_10: bool;
+
     let v_8 = (p - center);
     let dist2_1 = dot(v_8, v_8);
     let r2_5 = (radius * radius);
+    if (dist2_1 <= 0f) {
+        local_10 = (r2_5 <= 0f);
+    } else {
+        local_10 = false;
+    }
+    let _e15 = local_10;
+    if _e15 {
+        return vec4<f32>(-2f, 0.000000000001f, -1f, 0f);
+    }
     let d2_9 = max(max(dist2_1, r2_5), MIN_D2_);
     let wi_2 = select(vec3<f32>(0f, 0f, 0f), (v_8 / vec3(sqrt(dist2_1))), (dist2_1 > 0f));
     let cos_w = dot(axis, wi_2);
-    let _e25 = safe_sqrt((1f - (cos_w * cos_w)));
-    let _e26 = subtended_cos(dist2_1, r2_5);
-    let _e30 = safe_sqrt((1f - (_e26 * _e26)));
-    let _e34 = safe_sqrt((1f - (cos_o * cos_o)));
-    let _e35 = cos_sub_clamped(_e25, cos_w, _e34, cos_o);
-    let _e36 = sin_sub_clamped(_e25, cos_w, _e34, cos_o);
-    let _e37 = cos_sub_clamped(_e36, _e35, _e30, _e26);
-    return vec4<f32>(_e37, d2_9, _e26, _e30);
+    let _e38 = safe_sqrt((1f - (cos_w * cos_w)));
+    let _e39 = subtended_cos(dist2_1, r2_5);
+    let _e43 = safe_sqrt((1f - (_e39 * _e39)));
+    let _e47 = safe_sqrt((1f - (cos_o * cos_o)));
+    let _e48 = cos_sub_clamped(_e38, cos_w, _e47, cos_o);
+    let _e49 = sin_sub_clamped(_e38, cos_w, _e47, cos_o);
+    let _e50 = cos_sub_clamped(_e49, _e48, _e43, _e39);
+    return vec4<f32>(_e50, d2_9, _e39, _e43);
 }
 
 fn emitter_importance(center_1: vec3<f32>, radius_1: f32, phi: f32, axis_1: vec3<f32>, cos_o_1: f32, cos_e: f32, p_1: vec3<f32>) -> f32 {
@@ -615,23 +626,23 @@ fn emitter_importance(center_1: vec3<f32>, radius_1: f32, phi: f32, axis_1: vec3
 }
 
 fn cone_cos_of(v_5: vec3<f32>, d2_7: f32, a_3: f32, d: vec3<f32>) -> f32 {
-    var local_10: bool;
     var local_11: bool;
+    var local_12: bool;
 
     let vd = dot(v_5, d);
     let h2_ = (d2_7 - (a_3 * a_3));
     if !((h2_ <= 0f)) {
         if (vd >= 0f) {
-            local_11 = ((vd * vd) >= h2_);
+            local_12 = ((vd * vd) >= h2_);
         } else {
-            local_11 = false;
+            local_12 = false;
         }
-        let _e19 = local_11;
-        local_10 = _e19;
+        let _e19 = local_12;
+        local_11 = _e19;
     } else {
-        local_10 = true;
+        local_11 = true;
     }
-    let _e21 = local_10;
+    let _e21 = local_11;
     if _e21 {
         return 1f;
     }
@@ -681,16 +692,16 @@ fn light_importance(center_4: vec3<f32>, radius_4: f32, phi_1: f32, axis_2: vec3
 }
 
 fn glossy_importance(center_5: vec3<f32>, radius_5: f32, phi_2: f32, axis_3: vec3<f32>, cos_o_3: f32, cos_e_2: f32, p_5: vec3<f32>, n_10: vec3<f32>, r_1: vec3<f32>, lobe_5: vec4<f32>) -> f32 {
-    var local_12: bool;
+    var local_13: bool;
 
     let _e10 = emitter_importance(center_5, radius_5, phi_2, axis_3, cos_o_3, cos_e_2, p_5);
     let _e11 = cone_cos_toward(center_5, radius_5, p_5, n_10);
     if !((_e10 <= 0f)) {
-        local_12 = (_e11 <= 0f);
+        local_13 = (_e11 <= 0f);
     } else {
-        local_12 = true;
+        local_13 = true;
     }
-    let _e20 = local_12;
+    let _e20 = local_13;
     if _e20 {
         return 0f;
     }
@@ -727,21 +738,21 @@ fn bvh_remap_u(u_1: f32, p0_: f32, first: bool) -> f32 {
 }
 
 fn finite3_(v_6: vec3<f32>) -> bool {
-    var local_13: bool;
     var local_14: bool;
+    var local_15: bool;
 
     if (abs(v_6.x) <= F32_MAX) {
-        local_13 = (abs(v_6.y) <= F32_MAX);
-    } else {
-        local_13 = false;
-    }
-    let _e12 = local_13;
-    if _e12 {
-        local_14 = (abs(v_6.z) <= F32_MAX);
+        local_14 = (abs(v_6.y) <= F32_MAX);
     } else {
         local_14 = false;
     }
-    let _e20 = local_14;
+    let _e12 = local_14;
+    if _e12 {
+        local_15 = (abs(v_6.z) <= F32_MAX);
+    } else {
+        local_15 = false;
+    }
+    let _e20 = local_15;
     return _e20;
 }
 
@@ -774,16 +785,16 @@ fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin: vec3<f32>, bmax: vec3<f32>, t_
 }
 
 fn triangle_normal(a_4: vec3<f32>, b_3: vec3<f32>, c_2: vec3<f32>) -> vec3<f32> {
-    var local_15: bool;
+    var local_16: bool;
 
     let n_19 = cross((b_3 - a_4), (c_2 - a_4));
     let l2_ = dot(n_19, n_19);
     if !(!((l2_ > 0f))) {
-        local_15 = !((l2_ < 300000000000000000000000000000000000000f));
+        local_16 = !((l2_ < 300000000000000000000000000000000000000f));
     } else {
-        local_15 = true;
+        local_16 = true;
     }
-    let _e17 = local_15;
+    let _e17 = local_16;
     if _e17 {
         return vec3<f32>(0f, 0f, 0f);
     }
@@ -791,9 +802,9 @@ fn triangle_normal(a_4: vec3<f32>, b_3: vec3<f32>, c_2: vec3<f32>) -> vec3<f32> 
 }
 
 fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_4: vec3<f32>, c_3: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
-    var local_16: bool;
     var local_17: bool;
     var local_18: bool;
+    var local_19: bool;
 
     let e1_ = (b_4 - a_5);
     let e2_ = (c_3 - a_5);
@@ -806,32 +817,32 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_4: vec3<f32>, 
     let s_7 = (o_1 - a_5);
     let u_3 = (dot(s_7, p_7) * inv_1);
     if !((u_3 < 0f)) {
-        local_16 = (u_3 > 1f);
+        local_17 = (u_3 > 1f);
     } else {
-        local_16 = true;
+        local_17 = true;
     }
-    let _e28 = local_16;
+    let _e28 = local_17;
     if _e28 {
         return -1f;
     }
     let q = cross(s_7, e1_);
     let v_11 = (dot(d_3, q) * inv_1);
     if !((v_11 < 0f)) {
-        local_17 = ((u_3 + v_11) > 1f);
+        local_18 = ((u_3 + v_11) > 1f);
     } else {
-        local_17 = true;
+        local_18 = true;
     }
-    let _e42 = local_17;
+    let _e42 = local_18;
     if _e42 {
         return -1f;
     }
     let t_3 = (dot(e2_, q) * inv_1);
     if (t_3 > t_min) {
-        local_18 = (t_3 < t_max_1);
+        local_19 = (t_3 < t_max_1);
     } else {
-        local_18 = false;
+        local_19 = false;
     }
-    let _e51 = local_18;
+    let _e51 = local_19;
     if _e51 {
         return t_3;
     }
@@ -961,8 +972,8 @@ fn occluded(a_6: vec3<f32>, b_5: vec3<f32>) -> bool {
 
 fn connect_record(l_8: GpuLight, x_4: vec3<f32>, n_12: vec3<f32>, ng_1: vec3<f32>, r2_3: f32, rt2_4: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32, trace_1: bool) -> Connection {
     var c_4: Connection;
-    var local_19: bool;
     var local_20: bool;
+    var local_21: bool;
 
     c_4.e = vec3(0f);
     let _e16 = light_point(l_8, u1_2, u2_2);
@@ -975,16 +986,16 @@ fn connect_record(l_8: GpuLight, x_4: vec3<f32>, n_12: vec3<f32>, ng_1: vec3<f32
         if trace_1 {
             let _e33 = c_4.y;
             let _e34 = occluded((x_4 + (ng_1 * eps)), _e33);
-            local_20 = _e34;
+            local_21 = _e34;
         } else {
-            local_20 = false;
+            local_21 = false;
         }
-        let _e36 = local_20;
-        local_19 = _e36;
+        let _e36 = local_21;
+        local_20 = _e36;
     } else {
-        local_19 = true;
+        local_20 = true;
     }
-    let _e38 = local_19;
+    let _e38 = local_20;
     if _e38 {
         let _e39 = c_4;
         return _e39;
@@ -1040,17 +1051,17 @@ fn bvh_importance(nodes_2: u32, i_2: u32, x_8: vec3<f32>, n_15: vec3<f32>, r_4: 
 }
 
 fn bvh_first(nodes_3: u32, i_3: u32, x_9: vec3<f32>, n_16: vec3<f32>, r_5: vec3<f32>, lobe_8: vec4<f32>) -> f32 {
-    var local_21: bool;
+    var local_22: bool;
 
     let _e6 = light_bvh_node(nodes_3, i_3);
     let j = _e6.second;
     if !((j <= (i_3 + 1u))) {
         let _e14 = light_bvh_count(nodes_3);
-        local_21 = (j >= _e14);
+        local_22 = (j >= _e14);
     } else {
-        local_21 = true;
+        local_22 = true;
     }
-    let _e17 = local_21;
+    let _e17 = local_22;
     if _e17 {
         return -1f;
     }
@@ -1069,7 +1080,7 @@ fn light_bvh_sample(nodes_4: u32, x_10: vec3<f32>, n_17: vec3<f32>, r_6: vec3<f3
     var u_2: f32;
     var i_4: u32 = 0u;
     var pmf: f32 = 1f;
-    var local_22: bool;
+    var local_23: bool;
 
     let _e6 = bvh_pick_none();
     pick = _e6;
@@ -1088,11 +1099,11 @@ fn light_bvh_sample(nodes_4: u32, x_10: vec3<f32>, n_17: vec3<f32>, r_6: vec3<f3
                 let _e21 = i_4;
                 if !((_e21 > 0u)) {
                     let _e28 = bvh_importance(nodes_4, 0u, x_10, n_17, r_6, lobe_9);
-                    local_22 = (_e28 > 0f);
+                    local_23 = (_e28 > 0f);
                 } else {
-                    local_22 = true;
+                    local_23 = true;
                 }
-                let _e32 = local_22;
+                let _e32 = local_23;
                 if _e32 {
                     pick.light = _e17.light;
                     let _e36 = pmf;

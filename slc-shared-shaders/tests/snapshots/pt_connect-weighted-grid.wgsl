@@ -308,13 +308,13 @@ fn connection_cosine(x_3: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     }
     let w_11 = (v_10 / vec3(sqrt(d2_10)));
     let cos_x_1 = -(dot(n, w_11));
-    if !((cos_x_1 <= 0f)) {
-        local_1 = (dot(ng, w_11) >= 0f);
+    if !(!((cos_x_1 > 0f))) {
+        local_1 = !((dot(ng, w_11) < 0f));
     } else {
         local_1 = true;
     }
-    let _e32 = local_1;
-    if _e32 {
+    let _e34 = local_1;
+    if _e34 {
         return 0f;
     }
     return cos_x_1;
@@ -867,20 +867,31 @@ fn subtended_cos(dist2_: f32, r2_2: f32) -> f32 {
 }
 
 fn emitter_cone(center: vec3<f32>, radius: f32, axis: vec3<f32>, cos_o: f32, p: vec3<f32>) -> vec4<f32> {
+    var local_11: bool;
+
     let v_11 = (p - center);
     let dist2_1 = dot(v_11, v_11);
     let r2_5 = (radius * radius);
+    if (dist2_1 <= 0f) {
+        local_11 = (r2_5 <= 0f);
+    } else {
+        local_11 = false;
+    }
+    let _e15 = local_11;
+    if _e15 {
+        return vec4<f32>(-2f, 0.000000000001f, -1f, 0f);
+    }
     let d2_11 = max(max(dist2_1, r2_5), MIN_D2_);
     let wi_2 = select(vec3<f32>(0f, 0f, 0f), (v_11 / vec3(sqrt(dist2_1))), (dist2_1 > 0f));
     let cos_w = dot(axis, wi_2);
-    let _e25 = safe_sqrt((1f - (cos_w * cos_w)));
-    let _e26 = subtended_cos(dist2_1, r2_5);
-    let _e30 = safe_sqrt((1f - (_e26 * _e26)));
-    let _e34 = safe_sqrt((1f - (cos_o * cos_o)));
-    let _e35 = cos_sub_clamped(_e25, cos_w, _e34, cos_o);
-    let _e36 = sin_sub_clamped(_e25, cos_w, _e34, cos_o);
-    let _e37 = cos_sub_clamped(_e36, _e35, _e30, _e26);
-    return vec4<f32>(_e37, d2_11, _e26, _e30);
+    let _e38 = safe_sqrt((1f - (cos_w * cos_w)));
+    let _e39 = subtended_cos(dist2_1, r2_5);
+    let _e43 = safe_sqrt((1f - (_e39 * _e39)));
+    let _e47 = safe_sqrt((1f - (cos_o * cos_o)));
+    let _e48 = cos_sub_clamped(_e38, cos_w, _e47, cos_o);
+    let _e49 = sin_sub_clamped(_e38, cos_w, _e47, cos_o);
+    let _e50 = cos_sub_clamped(_e49, _e48, _e43, _e39);
+    return vec4<f32>(_e50, d2_11, _e39, _e43);
 }
 
 fn emitter_importance(center_1: vec3<f32>, radius_1: f32, phi: f32, axis_1: vec3<f32>, cos_o_1: f32, cos_e: f32, p_1: vec3<f32>) -> f32 {
@@ -892,23 +903,23 @@ fn emitter_importance(center_1: vec3<f32>, radius_1: f32, phi: f32, axis_1: vec3
 }
 
 fn cone_cos_of(v_5: vec3<f32>, d2_7: f32, a_4: f32, d: vec3<f32>) -> f32 {
-    var local_11: bool;
     var local_12: bool;
+    var local_13: bool;
 
     let vd = dot(v_5, d);
     let h2_ = (d2_7 - (a_4 * a_4));
     if !((h2_ <= 0f)) {
         if (vd >= 0f) {
-            local_12 = ((vd * vd) >= h2_);
+            local_13 = ((vd * vd) >= h2_);
         } else {
-            local_12 = false;
+            local_13 = false;
         }
-        let _e19 = local_12;
-        local_11 = _e19;
+        let _e19 = local_13;
+        local_12 = _e19;
     } else {
-        local_11 = true;
+        local_12 = true;
     }
-    let _e21 = local_11;
+    let _e21 = local_12;
     if _e21 {
         return 1f;
     }
@@ -958,16 +969,16 @@ fn light_importance(center_4: vec3<f32>, radius_4: f32, phi_1: f32, axis_2: vec3
 }
 
 fn glossy_importance(center_5: vec3<f32>, radius_5: f32, phi_2: f32, axis_3: vec3<f32>, cos_o_3: f32, cos_e_2: f32, p_5: vec3<f32>, n_12: vec3<f32>, r_2: vec3<f32>, lobe_5: vec4<f32>) -> f32 {
-    var local_13: bool;
+    var local_14: bool;
 
     let _e10 = emitter_importance(center_5, radius_5, phi_2, axis_3, cos_o_3, cos_e_2, p_5);
     let _e11 = cone_cos_toward(center_5, radius_5, p_5, n_12);
     if !((_e10 <= 0f)) {
-        local_13 = (_e11 <= 0f);
+        local_14 = (_e11 <= 0f);
     } else {
-        local_13 = true;
+        local_14 = true;
     }
-    let _e20 = local_13;
+    let _e20 = local_14;
     if _e20 {
         return 0f;
     }
@@ -1006,21 +1017,21 @@ fn weighted_select_pdf(w_7: f32, w_sum_2: f32, in_range: bool, k_1: u32) -> f32 
 }
 
 fn finite3_(v_6: vec3<f32>) -> bool {
-    var local_14: bool;
     var local_15: bool;
+    var local_16: bool;
 
     if (abs(v_6.x) <= F32_MAX) {
-        local_14 = (abs(v_6.y) <= F32_MAX);
-    } else {
-        local_14 = false;
-    }
-    let _e12 = local_14;
-    if _e12 {
-        local_15 = (abs(v_6.z) <= F32_MAX);
+        local_15 = (abs(v_6.y) <= F32_MAX);
     } else {
         local_15 = false;
     }
-    let _e20 = local_15;
+    let _e12 = local_15;
+    if _e12 {
+        local_16 = (abs(v_6.z) <= F32_MAX);
+    } else {
+        local_16 = false;
+    }
+    let _e20 = local_16;
     return _e20;
 }
 
@@ -1053,16 +1064,16 @@ fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin: vec3<f32>, bmax: vec3<f32>, t_
 }
 
 fn triangle_normal(a_5: vec3<f32>, b_3: vec3<f32>, c_5: vec3<f32>) -> vec3<f32> {
-    var local_16: bool;
+    var local_17: bool;
 
     let n_23 = cross((b_3 - a_5), (c_5 - a_5));
     let l2_ = dot(n_23, n_23);
     if !(!((l2_ > 0f))) {
-        local_16 = !((l2_ < 300000000000000000000000000000000000000f));
+        local_17 = !((l2_ < 300000000000000000000000000000000000000f));
     } else {
-        local_16 = true;
+        local_17 = true;
     }
-    let _e17 = local_16;
+    let _e17 = local_17;
     if _e17 {
         return vec3<f32>(0f, 0f, 0f);
     }
@@ -1070,9 +1081,9 @@ fn triangle_normal(a_5: vec3<f32>, b_3: vec3<f32>, c_5: vec3<f32>) -> vec3<f32> 
 }
 
 fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_6: vec3<f32>, b_4: vec3<f32>, c_6: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
-    var local_17: bool;
     var local_18: bool;
     var local_19: bool;
+    var local_20: bool;
 
     let e1_ = (b_4 - a_6);
     let e2_ = (c_6 - a_6);
@@ -1085,32 +1096,32 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_6: vec3<f32>, b_4: vec3<f32>, 
     let s_8 = (o_1 - a_6);
     let u_3 = (dot(s_8, p_7) * inv_2);
     if !((u_3 < 0f)) {
-        local_17 = (u_3 > 1f);
+        local_18 = (u_3 > 1f);
     } else {
-        local_17 = true;
+        local_18 = true;
     }
-    let _e28 = local_17;
+    let _e28 = local_18;
     if _e28 {
         return -1f;
     }
     let q = cross(s_8, e1_);
     let v_15 = (dot(d_3, q) * inv_2);
     if !((v_15 < 0f)) {
-        local_18 = ((u_3 + v_15) > 1f);
+        local_19 = ((u_3 + v_15) > 1f);
     } else {
-        local_18 = true;
+        local_19 = true;
     }
-    let _e42 = local_18;
+    let _e42 = local_19;
     if _e42 {
         return -1f;
     }
     let t_5 = (dot(e2_, q) * inv_2);
     if (t_5 > t_min) {
-        local_19 = (t_5 < t_max_1);
+        local_20 = (t_5 < t_max_1);
     } else {
-        local_19 = false;
+        local_20 = false;
     }
-    let _e51 = local_19;
+    let _e51 = local_20;
     if _e51 {
         return t_5;
     }
@@ -1277,8 +1288,8 @@ fn bsh_inner_scale(a_8: f32, v_7: vec3<f32>, d2_9: f32, r_4: vec3<f32>, rl_2: ve
 }
 
 fn bsh_reaches(node_4: BshNode, x_10: vec3<f32>, r_5: vec3<f32>, rl_3: vec4<f32>) -> bool {
-    var local_20: bool;
     var local_21: bool;
+    var local_22: bool;
 
     let _e6 = sphere_contains_point(node_4.center, node_4.radius, x_10);
     if _e6 {
@@ -1286,11 +1297,11 @@ fn bsh_reaches(node_4: BshNode, x_10: vec3<f32>, r_5: vec3<f32>, rl_3: vec4<f32>
     }
     if !((rl_3.w <= 1f)) {
         let _e20 = sphere_contains_point(node_4.center, (node_4.radius * (rl_3.w * 1.0001f)), x_10);
-        local_20 = !(_e20);
+        local_21 = !(_e20);
     } else {
-        local_20 = true;
+        local_21 = true;
     }
-    let _e23 = local_20;
+    let _e23 = local_21;
     if _e23 {
         return false;
     }
@@ -1311,11 +1322,11 @@ fn bsh_reaches(node_4: BshNode, x_10: vec3<f32>, r_5: vec3<f32>, rl_3: vec4<f32>
     let _e50 = bsh_range_bound(node_4);
     let reach = (node_4.extent + (sqrt(s_c) * _e50));
     if (d2_12 <= ((node_4.radius * node_4.radius) * s_c)) {
-        local_21 = (d2_12 <= (reach * reach));
+        local_22 = (d2_12 <= (reach * reach));
     } else {
-        local_21 = false;
+        local_22 = false;
     }
-    let _e63 = local_21;
+    let _e63 = local_22;
     return _e63;
 }
 
@@ -1357,42 +1368,42 @@ fn bsh_grid_axis(v_8: f32, lo_1: f32, inv: f32, n_14: u32) -> u32 {
 }
 
 fn bsh_grid_cell(f: GridFrame, x_12: vec3<f32>) -> u32 {
-    var local_22: bool;
     var local_23: bool;
     var local_24: bool;
     var local_25: bool;
     var local_26: bool;
+    var local_27: bool;
 
     if (x_12.x >= f.lo.x) {
-        local_22 = (x_12.y >= f.lo.y);
-    } else {
-        local_22 = false;
-    }
-    let _e13 = local_22;
-    if _e13 {
-        local_23 = (x_12.z >= f.lo.z);
+        local_23 = (x_12.y >= f.lo.y);
     } else {
         local_23 = false;
     }
-    let _e21 = local_23;
-    if _e21 {
-        local_24 = (x_12.x <= f.hi.x);
+    let _e13 = local_23;
+    if _e13 {
+        local_24 = (x_12.z >= f.lo.z);
     } else {
         local_24 = false;
     }
-    let _e29 = local_24;
-    if _e29 {
-        local_25 = (x_12.y <= f.hi.y);
+    let _e21 = local_24;
+    if _e21 {
+        local_25 = (x_12.x <= f.hi.x);
     } else {
         local_25 = false;
     }
-    let _e37 = local_25;
-    if _e37 {
-        local_26 = (x_12.z <= f.hi.z);
+    let _e29 = local_25;
+    if _e29 {
+        local_26 = (x_12.y <= f.hi.y);
     } else {
         local_26 = false;
     }
-    let inside = local_26;
+    let _e37 = local_26;
+    if _e37 {
+        local_27 = (x_12.z <= f.hi.z);
+    } else {
+        local_27 = false;
+    }
+    let inside = local_27;
     if !(inside) {
         return BSH_NONE;
     }
@@ -1440,8 +1451,8 @@ fn grid_reach(h_2: u32) -> f32 {
 fn bsh_cursor(x_13: vec3<f32>, r_7: vec3<f32>, rl_5: vec4<f32>) -> BshCursor {
     var c_7: BshCursor;
     var h_3: u32 = 0u;
-    var local_27: bool;
     var local_28: bool;
+    var local_29: bool;
 
     c_7.i = 0u;
     c_7.end = 0u;
@@ -1456,19 +1467,19 @@ fn bsh_cursor(x_13: vec3<f32>, r_7: vec3<f32>, rl_5: vec4<f32>) -> BshCursor {
     let _e20 = grid_frame(_e19);
     let _e22 = c_7.next;
     if (_e22 != BSH_NONE) {
-        local_27 = (_e20.nx > 0u);
-    } else {
-        local_27 = false;
-    }
-    let _e31 = local_27;
-    if _e31 {
-        let _e35 = h_3;
-        let _e36 = grid_reach(_e35);
-        local_28 = (rl_5.w <= _e36);
+        local_28 = (_e20.nx > 0u);
     } else {
         local_28 = false;
     }
-    let _e39 = local_28;
+    let _e31 = local_28;
+    if _e31 {
+        let _e35 = h_3;
+        let _e36 = grid_reach(_e35);
+        local_29 = (rl_5.w <= _e36);
+    } else {
+        local_29 = false;
+    }
+    let _e39 = local_29;
     if _e39 {
         let _e40 = bsh_grid_cell(_e20, x_13);
         if (_e40 != BSH_NONE) {
@@ -1527,8 +1538,8 @@ fn next_threshold(sum_1: f32, h_4: ptr<function, u32>) -> f32 {
 
 fn connect_record(l_8: GpuLight, x_15: vec3<f32>, n_15: vec3<f32>, ng_1: vec3<f32>, r2_3: f32, rt2_6: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32, trace_1: bool) -> Connection {
     var c_9: Connection;
-    var local_29: bool;
     var local_30: bool;
+    var local_31: bool;
 
     c_9.e = vec3(0f);
     let _e16 = light_point(l_8, u1_2, u2_2);
@@ -1541,16 +1552,16 @@ fn connect_record(l_8: GpuLight, x_15: vec3<f32>, n_15: vec3<f32>, ng_1: vec3<f3
         if trace_1 {
             let _e33 = c_9.y;
             let _e34 = occluded((x_15 + (ng_1 * eps)), _e33);
-            local_30 = _e34;
+            local_31 = _e34;
         } else {
-            local_30 = false;
+            local_31 = false;
         }
-        let _e36 = local_30;
-        local_29 = _e36;
+        let _e36 = local_31;
+        local_30 = _e36;
     } else {
-        local_29 = true;
+        local_30 = true;
     }
-    let _e38 = local_29;
+    let _e38 = local_30;
     if _e38 {
         let _e39 = c_9;
         return _e39;

@@ -267,13 +267,13 @@ float connection_cosine(vec3 x_3, vec3 y, vec3 n_1, vec3 ng, float r2_1) {
     }
     vec3 w_10 = (v_4 / vec3(sqrt(d2_6)));
     float cos_x_1 = -(dot(n_1, w_10));
-    if (!((cos_x_1 <= 0.0))) {
-        local_6 = (dot(ng, w_10) >= 0.0);
+    if (!(!((cos_x_1 > 0.0)))) {
+        local_6 = !((dot(ng, w_10) < 0.0));
     } else {
         local_6 = true;
     }
-    bool _e32 = local_6;
-    if (_e32) {
+    bool _e34 = local_6;
+    if (_e34) {
         return 0.0;
     }
     return cos_x_1;

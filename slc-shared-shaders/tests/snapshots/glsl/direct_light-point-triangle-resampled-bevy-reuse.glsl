@@ -344,13 +344,13 @@ float connection_cosine(vec3 x_2, vec3 y, vec3 n_1, vec3 ng, float r2_1) {
     }
     vec3 w_12 = (v_7 / vec3(sqrt(d2_6)));
     float cos_x_1 = -(dot(n_1, w_12));
-    if (!((cos_x_1 <= 0.0))) {
-        local_9 = (dot(ng, w_12) >= 0.0);
+    if (!(!((cos_x_1 > 0.0)))) {
+        local_9 = !((dot(ng, w_12) < 0.0));
     } else {
         local_9 = true;
     }
-    bool _e32 = local_9;
-    if (_e32) {
+    bool _e34 = local_9;
+    if (_e34) {
         return 0.0;
     }
     return cos_x_1;

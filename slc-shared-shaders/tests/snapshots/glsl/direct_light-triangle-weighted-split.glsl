@@ -300,13 +300,13 @@ float connection_cosine(vec3 x_2, vec3 y, vec3 n_1, vec3 ng, float r2_1) {
     }
     vec3 w_11 = (v_8 / vec3(sqrt(d2_7)));
     float cos_x_1 = -(dot(n_1, w_11));
-    if (!((cos_x_1 <= 0.0))) {
-        local_6 = (dot(ng, w_11) >= 0.0);
+    if (!(!((cos_x_1 > 0.0)))) {
+        local_6 = !((dot(ng, w_11) < 0.0));
     } else {
         local_6 = true;
     }
-    bool _e32 = local_6;
-    if (_e32) {
+    bool _e34 = local_6;
+    if (_e34) {
         return 0.0;
     }
     return cos_x_1;
@@ -534,20 +534,30 @@ float subtended_cos(float dist2_, float r2_2) {
 }
 
 vec4 emitter_cone(vec3 center, float radius, vec3 axis, float cos_o, vec3 p) {
+    bool local_12 = false;
     vec3 v_9 = (p - center);
     float dist2_1 = dot(v_9, v_9);
     float r2_5 = (radius * radius);
+    if ((dist2_1 <= 0.0)) {
+        local_12 = (r2_5 <= 0.0);
+    } else {
+        local_12 = false;
+    }
+    bool _e15 = local_12;
+    if (_e15) {
+        return vec4(-2.0, 1e-12, -1.0, 0.0);
+    }
     float d2_8 = max(max(dist2_1, r2_5), MIN_D2_);
     vec3 wi = ((dist2_1 > 0.0) ? (v_9 / vec3(sqrt(dist2_1))) : vec3(0.0, 0.0, 0.0));
     float cos_w = dot(axis, wi);
-    float _e25 = safe_sqrt((1.0 - (cos_w * cos_w)));
-    float _e26 = subtended_cos(dist2_1, r2_5);
-    float _e30 = safe_sqrt((1.0 - (_e26 * _e26)));
-    float _e34 = safe_sqrt((1.0 - (cos_o * cos_o)));
-    float _e35 = cos_sub_clamped(_e25, cos_w, _e34, cos_o);
-    float _e36 = sin_sub_clamped(_e25, cos_w, _e34, cos_o);
-    float _e37 = cos_sub_clamped(_e36, _e35, _e30, _e26);
-    return vec4(_e37, d2_8, _e26, _e30);
+    float _e38 = safe_sqrt((1.0 - (cos_w * cos_w)));
+    float _e39 = subtended_cos(dist2_1, r2_5);
+    float _e43 = safe_sqrt((1.0 - (_e39 * _e39)));
+    float _e47 = safe_sqrt((1.0 - (cos_o * cos_o)));
+    float _e48 = cos_sub_clamped(_e38, cos_w, _e47, cos_o);
+    float _e49 = sin_sub_clamped(_e38, cos_w, _e47, cos_o);
+    float _e50 = cos_sub_clamped(_e49, _e48, _e43, _e39);
+    return vec4(_e50, d2_8, _e39, _e43);
 }
 
 float emitter_importance(vec3 center_1, float radius_1, float phi, vec3 axis_1, float cos_o_1, float cos_e, vec3 p_1) {
@@ -559,22 +569,22 @@ float emitter_importance(vec3 center_1, float radius_1, float phi, vec3 axis_1, 
 }
 
 float cone_cos_of(vec3 v_3, float d2_4, float a_3, vec3 d) {
-    bool local_12 = false;
     bool local_13 = false;
+    bool local_14 = false;
     float vd = dot(v_3, d);
     float h2_ = (d2_4 - (a_3 * a_3));
     if (!((h2_ <= 0.0))) {
         if ((vd >= 0.0)) {
-            local_13 = ((vd * vd) >= h2_);
+            local_14 = ((vd * vd) >= h2_);
         } else {
-            local_13 = false;
+            local_14 = false;
         }
-        bool _e19 = local_13;
-        local_12 = _e19;
+        bool _e19 = local_14;
+        local_13 = _e19;
     } else {
-        local_12 = true;
+        local_13 = true;
     }
-    bool _e21 = local_12;
+    bool _e21 = local_13;
     if (_e21) {
         return 1.0;
     }
@@ -623,15 +633,15 @@ float light_importance(vec3 center_4, float radius_4, float phi_1, vec3 axis_2, 
 }
 
 float glossy_importance(vec3 center_5, float radius_5, float phi_2, vec3 axis_3, float cos_o_3, float cos_e_2, vec3 p_5, vec3 n_6, vec3 r_4, vec4 lobe_5) {
-    bool local_14 = false;
+    bool local_15 = false;
     float _e10 = emitter_importance(center_5, radius_5, phi_2, axis_3, cos_o_3, cos_e_2, p_5);
     float _e11 = cone_cos_toward(center_5, radius_5, p_5, n_6);
     if (!((_e10 <= 0.0))) {
-        local_14 = (_e11 <= 0.0);
+        local_15 = (_e11 <= 0.0);
     } else {
-        local_14 = true;
+        local_15 = true;
     }
-    bool _e20 = local_14;
+    bool _e20 = local_15;
     if (_e20) {
         return 0.0;
     }
@@ -689,15 +699,15 @@ float ray_aabb(vec3 o, vec3 inv_d, vec3 bmin_1, vec3 bmax_1, float t_max) {
 }
 
 vec3 triangle_normal(vec3 a_4, vec3 b_3, vec3 c_4) {
-    bool local_15 = false;
+    bool local_16 = false;
     vec3 n_14 = cross((b_3 - a_4), (c_4 - a_4));
     float l2_ = dot(n_14, n_14);
     if (!(!((l2_ > 0.0)))) {
-        local_15 = !((l2_ < 3e38));
+        local_16 = !((l2_ < 3e38));
     } else {
-        local_15 = true;
+        local_16 = true;
     }
-    bool _e17 = local_15;
+    bool _e17 = local_16;
     if (_e17) {
         return vec3(0.0, 0.0, 0.0);
     }
@@ -705,9 +715,9 @@ vec3 triangle_normal(vec3 a_4, vec3 b_3, vec3 c_4) {
 }
 
 float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_5, vec3 b_4, vec3 c_5, float t_min, float t_max_1) {
-    bool local_16 = false;
     bool local_17 = false;
     bool local_18 = false;
+    bool local_19 = false;
     vec3 e1_ = (b_4 - a_5);
     vec3 e2_ = (c_5 - a_5);
     vec3 p_9 = cross(d_3, e2_);
@@ -719,32 +729,32 @@ float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_5, vec3 b_4, vec3 c_5, float t_min
     vec3 s_9 = (o_1 - a_5);
     float u_3 = (dot(s_9, p_9) * inv_1);
     if (!((u_3 < 0.0))) {
-        local_16 = (u_3 > 1.0);
+        local_17 = (u_3 > 1.0);
     } else {
-        local_16 = true;
+        local_17 = true;
     }
-    bool _e28 = local_16;
+    bool _e28 = local_17;
     if (_e28) {
         return -1.0;
     }
     vec3 q_1 = cross(s_9, e1_);
     float v_13 = (dot(d_3, q_1) * inv_1);
     if (!((v_13 < 0.0))) {
-        local_17 = ((u_3 + v_13) > 1.0);
+        local_18 = ((u_3 + v_13) > 1.0);
     } else {
-        local_17 = true;
+        local_18 = true;
     }
-    bool _e42 = local_17;
+    bool _e42 = local_18;
     if (_e42) {
         return -1.0;
     }
     float t_6 = (dot(e2_, q_1) * inv_1);
     if ((t_6 > t_min)) {
-        local_18 = (t_6 < t_max_1);
+        local_19 = (t_6 < t_max_1);
     } else {
-        local_18 = false;
+        local_19 = false;
     }
-    bool _e51 = local_18;
+    bool _e51 = local_19;
     if (_e51) {
         return t_6;
     }
@@ -882,19 +892,19 @@ float bsh_inner_scale(float a_7, vec3 v_4, float d2_6, vec3 r_6, vec4 rl_2) {
 }
 
 bool bsh_reaches(BshNode node_4, vec3 x_5, vec3 r_7, vec4 rl_3) {
-    bool local_19 = false;
     bool local_20 = false;
+    bool local_21 = false;
     bool _e6 = sphere_contains_point(node_4.center, node_4.radius, x_5);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
         bool _e20 = sphere_contains_point(node_4.center, (node_4.radius * (rl_3.w * 1.0001)), x_5);
-        local_19 = !(_e20);
+        local_20 = !(_e20);
     } else {
-        local_19 = true;
+        local_20 = true;
     }
-    bool _e23 = local_19;
+    bool _e23 = local_20;
     if (_e23) {
         return false;
     }
@@ -915,11 +925,11 @@ bool bsh_reaches(BshNode node_4, vec3 x_5, vec3 r_7, vec4 rl_3) {
     float _e50 = bsh_range_bound(node_4);
     float reach = (node_4.extent + (sqrt(s_c) * _e50));
     if ((d2_9 <= ((node_4.radius * node_4.radius) * s_c))) {
-        local_20 = (d2_9 <= (reach * reach));
+        local_21 = (d2_9 <= (reach * reach));
     } else {
-        local_20 = false;
+        local_21 = false;
     }
-    bool _e63 = local_20;
+    bool _e63 = local_21;
     return _e63;
 }
 
@@ -931,18 +941,18 @@ bool bsh_reaches_box(BshNode node_5, vec3 lo, vec3 hi, float w_5) {
 uint bsh_subtree(uint nodes_3, uint s_1, uint depth) {
     uint i_2 = 0u;
     uint level = 0u;
-    bool local_21 = false;
+    bool local_22 = false;
     uint _e3 = bsh_first(nodes_3);
     i_2 = _e3;
     while(true) {
         uint _e7 = level;
         if ((_e7 < depth)) {
             uint _e11 = i_2;
-            local_21 = (_e11 != BSH_NONE);
+            local_22 = (_e11 != BSH_NONE);
         } else {
-            local_21 = false;
+            local_22 = false;
         }
-        bool _e15 = local_21;
+        bool _e15 = local_22;
         if (_e15) {
         } else {
             break;
@@ -1016,8 +1026,8 @@ float next_threshold(float sum, inout uint h_1) {
 
 Connection connect_record(GpuLight l_4, vec3 x_6, vec3 n_8, vec3 ng_1, float r2_3, float rt2_4, float w_res, float u1_2, float u2_2, float eps, bool trace_1) {
     Connection c_6 = Connection(vec3(0.0), vec3(0.0), 0.0);
-    bool local_22 = false;
     bool local_23 = false;
+    bool local_24 = false;
     c_6.e = vec3(0.0);
     vec3 _e16 = light_point(l_4, u1_2, u2_2);
     c_6.y = _e16;
@@ -1029,16 +1039,16 @@ Connection connect_record(GpuLight l_4, vec3 x_6, vec3 n_8, vec3 ng_1, float r2_
         if (trace_1) {
             vec3 _e33 = c_6.y;
             bool _e34 = occluded((x_6 + (ng_1 * eps)), _e33);
-            local_23 = _e34;
+            local_24 = _e34;
         } else {
-            local_23 = false;
+            local_24 = false;
         }
-        bool _e36 = local_23;
-        local_22 = _e36;
+        bool _e36 = local_24;
+        local_23 = _e36;
     } else {
-        local_22 = true;
+        local_23 = true;
     }
-    bool _e38 = local_22;
+    bool _e38 = local_23;
     if (_e38) {
         Connection _e39 = c_6;
         return _e39;
@@ -1195,9 +1205,9 @@ bool box_is_empty(WorkgroupBox b_6) {
 uint tile_subtree(uint s_4, TileWalk t_1, bool list, uint at, uint start_2, uint to) {
     uint p_8 = 0u;
     uint b_7 = 0u;
-    bool local_24 = false;
     bool local_25 = false;
     bool local_26 = false;
+    bool local_27 = false;
     uint _e8 = bsh_subtree(BSH, s_4, BSH_TILE_DEPTH);
     if ((_e8 == BSH_NONE)) {
         return 0u;
@@ -1219,16 +1229,16 @@ uint tile_subtree(uint s_4, TileWalk t_1, bool list, uint at, uint start_2, uint
         if ((_e23 != end_1)) {
             if (!(!(list))) {
                 uint _e31 = p_8;
-                local_25 = (_e31 < to);
+                local_26 = (_e31 < to);
             } else {
-                local_25 = true;
+                local_26 = true;
             }
-            bool _e34 = local_25;
-            local_24 = _e34;
+            bool _e34 = local_26;
+            local_25 = _e34;
         } else {
-            local_24 = false;
+            local_25 = false;
         }
-        bool _e36 = local_24;
+        bool _e36 = local_25;
         if (_e36) {
         } else {
             break;
@@ -1236,11 +1246,11 @@ uint tile_subtree(uint s_4, TileWalk t_1, bool list, uint at, uint start_2, uint
         {
             if (list) {
                 uint _e39 = p_8;
-                local_26 = (_e39 >= start_2);
+                local_27 = (_e39 >= start_2);
             } else {
-                local_26 = false;
+                local_27 = false;
             }
-            bool _e42 = local_26;
+            bool _e42 = local_27;
             if (_e42) {
                 uint _e44 = p_8;
                 uint _e47 = b_7;
@@ -1255,17 +1265,17 @@ uint tile_subtree(uint s_4, TileWalk t_1, bool list, uint at, uint start_2, uint
 }
 
 TileWalk tile_walk_begin(uint li_6, vec3 x_10, float w_8, bool has_1) {
-    bool local_27 = false;
+    bool local_28 = false;
     TileWalk t_2 = TileWalk(vec3(0.0), vec3(0.0), 0.0, 0u);
     uint s_5 = 0u;
     uint sum_1 = 0u;
     uint s_6 = 0u;
     if (has_1) {
-        local_27 = (w_8 >= 0.0);
+        local_28 = (w_8 >= 0.0);
     } else {
-        local_27 = false;
+        local_28 = false;
     }
-    bool _e12 = local_27;
+    bool _e12 = local_28;
     uint _e14 = atomicMax(tile_scale, (_e12 ? floatBitsToUint(w_8) : 0u));
     WorkgroupBox _e15 = workgroup_box(li_6, x_10, has_1);
     memoryBarrierShared();
@@ -1341,7 +1351,7 @@ TileWalk tile_walk_begin(uint li_6, vec3 x_10, float w_8, bool has_1) {
 uint tile_walk_fill(uint li_7, TileWalk t_3, uint start_3) {
     uint s_7 = 0u;
     uint past = 0u;
-    bool local_28 = false;
+    bool local_29 = false;
     uint to_1 = min(t_3.total, (start_3 + TILE_LIST));
     s_7 = li_7;
     bool loop_init_6 = true;
@@ -1368,11 +1378,11 @@ uint tile_walk_fill(uint li_7, TileWalk t_3, uint start_3) {
             }
             if ((at_1 < to_1)) {
                 uint _e31 = past;
-                local_28 = (_e31 > start_3);
+                local_29 = (_e31 > start_3);
             } else {
-                local_28 = false;
+                local_29 = false;
             }
-            bool _e34 = local_28;
+            bool _e34 = local_29;
             if (_e34) {
                 uint _e35 = s_7;
                 uint _e37 = tile_subtree(_e35, t_3, true, at_1, start_3, to_1);
@@ -1430,8 +1440,8 @@ uint[8] first_holders(uvec2 keys_1[8], bool held_1[8]) {
     uint first[8] = uint[8](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
     uint k_3 = 0u;
     uint j_2 = 0u;
-    bool local_29 = false;
     bool local_30 = false;
+    bool local_31 = false;
     bool loop_init_7 = true;
     while(true) {
         if (!loop_init_7) {
@@ -1461,11 +1471,11 @@ uint[8] first_holders(uvec2 keys_1[8], bool held_1[8]) {
                 uint _e18 = k_3;
                 if ((_e17 < _e18)) {
                     uint _e22 = k_3;
-                    local_29 = held_1[_e22];
+                    local_30 = held_1[_e22];
                 } else {
-                    local_29 = false;
+                    local_30 = false;
                 }
-                bool _e25 = local_29;
+                bool _e25 = local_30;
                 if (_e25) {
                 } else {
                     break;
@@ -1475,11 +1485,11 @@ uint[8] first_holders(uvec2 keys_1[8], bool held_1[8]) {
                     if (held_1[_e26]) {
                         uint _e30 = j_2;
                         uint _e32 = k_3;
-                        local_30 = all(equal(keys_1[_e30], keys_1[_e32]));
+                        local_31 = all(equal(keys_1[_e30], keys_1[_e32]));
                     } else {
-                        local_30 = false;
+                        local_31 = false;
                     }
-                    bool _e37 = local_30;
+                    bool _e37 = local_31;
                     if (_e37) {
                         uint _e38 = k_3;
                         uint _e40 = j_2;

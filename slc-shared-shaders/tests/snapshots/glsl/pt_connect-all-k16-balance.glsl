@@ -282,13 +282,13 @@ float connection_cosine(vec3 x_3, vec3 y, vec3 n, vec3 ng, float r2_1) {
     }
     vec3 w_8 = (v_9 / vec3(sqrt(d2_9)));
     float cos_x_1 = -(dot(n, w_8));
-    if (!((cos_x_1 <= 0.0))) {
-        local_1 = (dot(ng, w_8) >= 0.0);
+    if (!(!((cos_x_1 > 0.0)))) {
+        local_1 = !((dot(ng, w_8) < 0.0));
     } else {
         local_1 = true;
     }
-    bool _e32 = local_1;
-    if (_e32) {
+    bool _e34 = local_1;
+    if (_e34) {
         return 0.0;
     }
     return cos_x_1;

@@ -299,13 +299,13 @@ float connection_cosine(float3 x_2, float3 y, float3 n_1, float3 ng, float r2_1)
     }
     float3 w_10 = (v_4 / (sqrt(d2_6)).xxx);
     float cos_x_1 = -(dot(n_1, w_10));
-    if (!((cos_x_1 <= 0.0))) {
-        local_8 = (dot(ng, w_10) >= 0.0);
+    if (!(!((cos_x_1 > 0.0)))) {
+        local_8 = !((dot(ng, w_10) < 0.0));
     } else {
         local_8 = true;
     }
-    bool _e32 = local_8;
-    if (_e32) {
+    bool _e34 = local_8;
+    if (_e34) {
         return 0.0;
     }
     return cos_x_1;

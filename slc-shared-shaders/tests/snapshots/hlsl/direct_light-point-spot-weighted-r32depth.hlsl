@@ -316,13 +316,13 @@ float connection_cosine(float3 x_2, float3 y, float3 n_1, float3 ng, float r2_1)
     }
     float3 w_10 = (v_5 / (sqrt(d2_7)).xxx);
     float cos_x_1 = -(dot(n_1, w_10));
-    if (!((cos_x_1 <= 0.0))) {
-        local_6 = (dot(ng, w_10) >= 0.0);
+    if (!(!((cos_x_1 > 0.0)))) {
+        local_6 = !((dot(ng, w_10) < 0.0));
     } else {
         local_6 = true;
     }
-    bool _e32 = local_6;
-    if (_e32) {
+    bool _e34 = local_6;
+    if (_e34) {
         return 0.0;
     }
     return cos_x_1;
@@ -450,20 +450,31 @@ float subtended_cos(float dist2_, float r2_2)
 
 float4 emitter_cone(float3 center_, float radius, float3 axis, float cos_o, float3 p)
 {
+    bool local_7 = (bool)0;
+
     float3 v_6 = (p - center_);
     float dist2_1 = dot(v_6, v_6);
     float r2_5 = (radius * radius);
+    if ((dist2_1 <= 0.0)) {
+        local_7 = (r2_5 <= 0.0);
+    } else {
+        local_7 = false;
+    }
+    bool _e15 = local_7;
+    if (_e15) {
+        return float4(-2.0, 1e-12, -1.0, 0.0);
+    }
     float d2_8 = max(max(dist2_1, r2_5), MIN_D2_);
     float3 wi = ((dist2_1 > 0.0) ? (v_6 / (sqrt(dist2_1)).xxx) : float3(0.0, 0.0, 0.0));
     float cos_w = dot(axis, wi);
-    const float _e25 = safe_sqrt((1.0 - (cos_w * cos_w)));
-    const float _e26 = subtended_cos(dist2_1, r2_5);
-    const float _e30 = safe_sqrt((1.0 - (_e26 * _e26)));
-    const float _e34 = safe_sqrt((1.0 - (cos_o * cos_o)));
-    const float _e35 = cos_sub_clamped(_e25, cos_w, _e34, cos_o);
-    const float _e36 = sin_sub_clamped(_e25, cos_w, _e34, cos_o);
-    const float _e37 = cos_sub_clamped(_e36, _e35, _e30, _e26);
-    return float4(_e37, d2_8, _e26, _e30);
+    const float _e38 = safe_sqrt((1.0 - (cos_w * cos_w)));
+    const float _e39 = subtended_cos(dist2_1, r2_5);
+    const float _e43 = safe_sqrt((1.0 - (_e39 * _e39)));
+    const float _e47 = safe_sqrt((1.0 - (cos_o * cos_o)));
+    const float _e48 = cos_sub_clamped(_e38, cos_w, _e47, cos_o);
+    const float _e49 = sin_sub_clamped(_e38, cos_w, _e47, cos_o);
+    const float _e50 = cos_sub_clamped(_e49, _e48, _e43, _e39);
+    return float4(_e50, d2_8, _e39, _e43);
 }
 
 float emitter_importance(float3 center_1, float radius_1, float phi, float3 axis_1, float cos_o_1, float cos_e, float3 p_1)
@@ -477,23 +488,23 @@ float emitter_importance(float3 center_1, float radius_1, float phi, float3 axis
 
 float cone_cos_of(float3 v, float d2_4, float a_2, float3 d)
 {
-    bool local_7 = (bool)0;
     bool local_8 = (bool)0;
+    bool local_9 = (bool)0;
 
     float vd = dot(v, d);
     float h2_ = (d2_4 - (a_2 * a_2));
     if (!((h2_ <= 0.0))) {
         if ((vd >= 0.0)) {
-            local_8 = ((vd * vd) >= h2_);
+            local_9 = ((vd * vd) >= h2_);
         } else {
-            local_8 = false;
+            local_9 = false;
         }
-        bool _e19 = local_8;
-        local_7 = _e19;
+        bool _e19 = local_9;
+        local_8 = _e19;
     } else {
-        local_7 = true;
+        local_8 = true;
     }
-    bool _e21 = local_7;
+    bool _e21 = local_8;
     if (_e21) {
         return 1.0;
     }
@@ -548,16 +559,16 @@ float light_importance(float3 center_4, float radius_4, float phi_1, float3 axis
 
 float glossy_importance(float3 center_5, float radius_5, float phi_2, float3 axis_3, float cos_o_3, float cos_e_2, float3 p_5, float3 n_3, float3 r_4, float4 lobe_5)
 {
-    bool local_9 = (bool)0;
+    bool local_10 = (bool)0;
 
     const float _e10 = emitter_importance(center_5, radius_5, phi_2, axis_3, cos_o_3, cos_e_2, p_5);
     const float _e11 = cone_cos_toward(center_5, radius_5, p_5, n_3);
     if (!((_e10 <= 0.0))) {
-        local_9 = (_e11 <= 0.0);
+        local_10 = (_e11 <= 0.0);
     } else {
-        local_9 = true;
+        local_10 = true;
     }
-    bool _e20 = local_9;
+    bool _e20 = local_10;
     if (_e20) {
         return 0.0;
     }
@@ -590,21 +601,21 @@ float cone_weight(float3 center_6, float radius_6, float phi_3, float3 axis_4, f
 
 bool finite3_(float3 v_1)
 {
-    bool local_10 = (bool)0;
     bool local_11 = (bool)0;
+    bool local_12 = (bool)0;
 
     if ((abs(v_1.x) <= F32_MAX)) {
-        local_10 = (abs(v_1.y) <= F32_MAX);
-    } else {
-        local_10 = false;
-    }
-    bool _e12 = local_10;
-    if (_e12) {
-        local_11 = (abs(v_1.z) <= F32_MAX);
+        local_11 = (abs(v_1.y) <= F32_MAX);
     } else {
         local_11 = false;
     }
-    bool _e20 = local_11;
+    bool _e12 = local_11;
+    if (_e12) {
+        local_12 = (abs(v_1.z) <= F32_MAX);
+    } else {
+        local_12 = false;
+    }
+    bool _e20 = local_12;
     return _e20;
 }
 
@@ -642,9 +653,9 @@ float ray_aabb(float3 o, float3 inv_d, float3 bmin_1, float3 bmax_1, float t_max
 
 float ray_triangle(float3 o_1, float3 d_3, float3 a_3, float3 b_2, float3 c_2, float t_min, float t_max_1)
 {
-    bool local_12 = (bool)0;
     bool local_13 = (bool)0;
     bool local_14 = (bool)0;
+    bool local_15 = (bool)0;
 
     float3 e1_ = (b_2 - a_3);
     float3 e2_ = (c_2 - a_3);
@@ -657,32 +668,32 @@ float ray_triangle(float3 o_1, float3 d_3, float3 a_3, float3 b_2, float3 c_2, f
     float3 s_9 = (o_1 - a_3);
     float u_3 = (dot(s_9, p_9) * inv);
     if (!((u_3 < 0.0))) {
-        local_12 = (u_3 > 1.0);
+        local_13 = (u_3 > 1.0);
     } else {
-        local_12 = true;
+        local_13 = true;
     }
-    bool _e28 = local_12;
+    bool _e28 = local_13;
     if (_e28) {
         return -1.0;
     }
     float3 q_1 = cross(s_9, e1_);
     float v_10 = (dot(d_3, q_1) * inv);
     if (!((v_10 < 0.0))) {
-        local_13 = ((u_3 + v_10) > 1.0);
+        local_14 = ((u_3 + v_10) > 1.0);
     } else {
-        local_13 = true;
+        local_14 = true;
     }
-    bool _e42 = local_13;
+    bool _e42 = local_14;
     if (_e42) {
         return -1.0;
     }
     float t_7 = (dot(e2_, q_1) * inv);
     if ((t_7 > t_min)) {
-        local_14 = (t_7 < t_max_1);
+        local_15 = (t_7 < t_max_1);
     } else {
-        local_14 = false;
+        local_15 = false;
     }
-    bool _e51 = local_14;
+    bool _e51 = local_15;
     if (_e51) {
         return t_7;
     }
@@ -876,8 +887,8 @@ float bsh_inner_scale(float a_5, float3 v_2, float d2_6, float3 r_6, float4 rl_2
 
 bool bsh_reaches(BshNode node_4, float3 x_5, float3 r_7, float4 rl_3)
 {
-    bool local_15 = (bool)0;
     bool local_16 = (bool)0;
+    bool local_17 = (bool)0;
 
     const bool _e6 = sphere_contains_point(node_4.center_, node_4.radius, x_5);
     if (_e6) {
@@ -885,11 +896,11 @@ bool bsh_reaches(BshNode node_4, float3 x_5, float3 r_7, float4 rl_3)
     }
     if (!((rl_3.w <= 1.0))) {
         const bool _e20 = sphere_contains_point(node_4.center_, (node_4.radius * (rl_3.w * 1.0001)), x_5);
-        local_15 = !(_e20);
+        local_16 = !(_e20);
     } else {
-        local_15 = true;
+        local_16 = true;
     }
-    bool _e23 = local_15;
+    bool _e23 = local_16;
     if (_e23) {
         return false;
     }
@@ -910,11 +921,11 @@ bool bsh_reaches(BshNode node_4, float3 x_5, float3 r_7, float4 rl_3)
     const float _e50 = bsh_range_bound(node_4);
     float reach = (node_4.extent + (sqrt(s_c) * _e50));
     if ((d2_9 <= ((node_4.radius * node_4.radius) * s_c))) {
-        local_16 = (d2_9 <= (reach * reach));
+        local_17 = (d2_9 <= (reach * reach));
     } else {
-        local_16 = false;
+        local_17 = false;
     }
-    bool _e63 = local_16;
+    bool _e63 = local_17;
     return _e63;
 }
 
@@ -928,7 +939,7 @@ uint bsh_subtree(uint nodes_3, uint s_1, uint depth)
 {
     uint i_2 = (uint)0;
     uint level = 0u;
-    bool local_17 = (bool)0;
+    bool local_18 = (bool)0;
 
     const uint _e3 = bsh_first(nodes_3);
     i_2 = _e3;
@@ -939,11 +950,11 @@ uint bsh_subtree(uint nodes_3, uint s_1, uint depth)
         uint _e7 = level;
         if ((_e7 < depth)) {
             uint _e11 = i_2;
-            local_17 = (_e11 != BSH_NONE);
+            local_18 = (_e11 != BSH_NONE);
         } else {
-            local_17 = false;
+            local_18 = false;
         }
-        bool _e15 = local_17;
+        bool _e15 = local_18;
         if (_e15) {
         } else {
             break;
@@ -1024,8 +1035,8 @@ float next_threshold(float sum, inout uint h_1)
 Connection connect_record(GpuLight l_2, float3 x_6, float3 n_5, float3 ng_1, float r2_3, float rt2_4, float w_res, float u1_1, float u2_1, float eps, bool trace_1)
 {
     Connection c_3 = (Connection)0;
-    bool local_18 = (bool)0;
     bool local_19 = (bool)0;
+    bool local_20 = (bool)0;
 
     c_3.e = (0.0).xxx;
     const float3 _e16 = light_point(l_2, u1_1, u2_1);
@@ -1038,16 +1049,16 @@ Connection connect_record(GpuLight l_2, float3 x_6, float3 n_5, float3 ng_1, flo
         if (trace_1) {
             float3 _e33 = c_3.y;
             const bool _e34 = occluded((x_6 + (ng_1 * eps)), _e33);
-            local_19 = _e34;
+            local_20 = _e34;
         } else {
-            local_19 = false;
+            local_20 = false;
         }
-        bool _e36 = local_19;
-        local_18 = _e36;
+        bool _e36 = local_20;
+        local_19 = _e36;
     } else {
-        local_18 = true;
+        local_19 = true;
     }
-    bool _e38 = local_18;
+    bool _e38 = local_19;
     if (_e38) {
         Connection _e39 = c_3;
         const Connection connection = _e39;
@@ -1182,15 +1193,15 @@ void weighted_offer(inout WeightedPicks picks_2, uint li_3, float w_6)
 
 float4 unproject_pixel(float4 c0_, float4 c1_, float4 c2_, float4 c3_, float px, float py, float width, float height, float depth_1)
 {
-    bool local_20 = (bool)0;
     bool local_21 = (bool)0;
+    bool local_22 = (bool)0;
 
     if ((depth_1 > 0.0)) {
-        local_20 = (depth_1 < 1.0);
+        local_21 = (depth_1 < 1.0);
     } else {
-        local_20 = false;
+        local_21 = false;
     }
-    bool _e16 = local_20;
+    bool _e16 = local_21;
     if (!(_e16)) {
         return float4(0.0, 0.0, 0.0, 0.0);
     }
@@ -1200,11 +1211,11 @@ float4 unproject_pixel(float4 c0_, float4 c1_, float4 c2_, float4 c3_, float px,
     float3 q_2 = float3((p_10.x / p_10.w), (p_10.y / p_10.w), (p_10.z / p_10.w));
     if ((abs(p_10.w) > 0.0)) {
         const bool _e59 = finite3_(q_2);
-        local_21 = _e59;
+        local_22 = _e59;
     } else {
-        local_21 = false;
+        local_22 = false;
     }
-    bool _e61 = local_21;
+    bool _e61 = local_22;
     if (_e61) {
         return float4(q_2.x, q_2.y, q_2.z, 1.0);
     }
@@ -1301,9 +1312,9 @@ uint tile_subtree(uint s_4, TileWalk t_1, bool list, uint at, uint start_2, uint
 {
     uint p_8 = (uint)0;
     uint b_5 = (uint)0;
-    bool local_22 = (bool)0;
     bool local_23 = (bool)0;
     bool local_24 = (bool)0;
+    bool local_25 = (bool)0;
 
     const uint _e8 = bsh_subtree(BSH, s_4, BSH_TILE_DEPTH);
     if ((_e8 == BSH_NONE)) {
@@ -1329,16 +1340,16 @@ uint tile_subtree(uint s_4, TileWalk t_1, bool list, uint at, uint start_2, uint
         if ((_e23 != end_1)) {
             if (!(!(list))) {
                 uint _e31 = p_8;
-                local_23 = (_e31 < to);
+                local_24 = (_e31 < to);
             } else {
-                local_23 = true;
+                local_24 = true;
             }
-            bool _e34 = local_23;
-            local_22 = _e34;
+            bool _e34 = local_24;
+            local_23 = _e34;
         } else {
-            local_22 = false;
+            local_23 = false;
         }
-        bool _e36 = local_22;
+        bool _e36 = local_23;
         if (_e36) {
         } else {
             break;
@@ -1346,11 +1357,11 @@ uint tile_subtree(uint s_4, TileWalk t_1, bool list, uint at, uint start_2, uint
         {
             if (list) {
                 uint _e39 = p_8;
-                local_24 = (_e39 >= start_2);
+                local_25 = (_e39 >= start_2);
             } else {
-                local_24 = false;
+                local_25 = false;
             }
-            bool _e42 = local_24;
+            bool _e42 = local_25;
             if (_e42) {
                 uint _e44 = p_8;
                 uint _e47 = b_5;
@@ -1375,18 +1386,18 @@ TileWalk ConstructTileWalk(float3 arg0, float3 arg1, float arg2, uint arg3) {
 
 TileWalk tile_walk_begin(uint li_6, float3 x_10, float w_7, bool has_1)
 {
-    bool local_25 = (bool)0;
+    bool local_26 = (bool)0;
     TileWalk t_2 = (TileWalk)0;
     uint s_5 = (uint)0;
     uint sum_1 = 0u;
     uint s_6 = 0u;
 
     if (has_1) {
-        local_25 = (w_7 >= 0.0);
+        local_26 = (w_7 >= 0.0);
     } else {
-        local_25 = false;
+        local_26 = false;
     }
-    bool _e12 = local_25;
+    bool _e12 = local_26;
     uint _e14; InterlockedMax(tile_scale, (_e12 ? asuint(w_7) : 0u), _e14);
     const WorkgroupBox _e15 = workgroup_box(li_6, x_10, has_1);
     GroupMemoryBarrierWithGroupSync();
@@ -1466,7 +1477,7 @@ uint tile_walk_fill(uint li_7, TileWalk t_3, uint start_3)
 {
     uint s_7 = (uint)0;
     uint past = (uint)0;
-    bool local_26 = (bool)0;
+    bool local_27 = (bool)0;
 
     uint to_1 = min(t_3.total, (start_3 + TILE_LIST));
     s_7 = li_7;
@@ -1497,11 +1508,11 @@ uint tile_walk_fill(uint li_7, TileWalk t_3, uint start_3)
             }
             if ((at_1 < to_1)) {
                 uint _e31 = past;
-                local_26 = (_e31 > start_3);
+                local_27 = (_e31 > start_3);
             } else {
-                local_26 = false;
+                local_27 = false;
             }
-            bool _e34 = local_26;
+            bool _e34 = local_27;
             if (_e34) {
                 uint _e35 = s_7;
                 const uint _e37 = tile_subtree(_e35, t_3, true, at_1, start_3, to_1);
@@ -1559,8 +1570,8 @@ ret_first_holders first_holders(uint2 keys_1[8], bool held_1[8])
     uint first[8] = (uint[8])0;
     uint k_3 = 0u;
     uint j_2 = (uint)0;
-    bool local_27 = (bool)0;
     bool local_28 = (bool)0;
+    bool local_29 = (bool)0;
 
     uint2 loop_bound_10 = uint2(4294967295u, 4294967295u);
     bool loop_init_7 = true;
@@ -1597,11 +1608,11 @@ ret_first_holders first_holders(uint2 keys_1[8], bool held_1[8])
                 uint _e18 = k_3;
                 if ((_e17 < _e18)) {
                     uint _e22 = k_3;
-                    local_27 = held_1[min(uint(_e22), 7u)];
+                    local_28 = held_1[min(uint(_e22), 7u)];
                 } else {
-                    local_27 = false;
+                    local_28 = false;
                 }
-                bool _e25 = local_27;
+                bool _e25 = local_28;
                 if (_e25) {
                 } else {
                     break;
@@ -1611,11 +1622,11 @@ ret_first_holders first_holders(uint2 keys_1[8], bool held_1[8])
                     if (held_1[min(uint(_e26), 7u)]) {
                         uint _e30 = j_2;
                         uint _e32 = k_3;
-                        local_28 = all((keys_1[min(uint(_e30), 7u)] == keys_1[min(uint(_e32), 7u)]));
+                        local_29 = all((keys_1[min(uint(_e30), 7u)] == keys_1[min(uint(_e32), 7u)]));
                     } else {
-                        local_28 = false;
+                        local_29 = false;
                     }
-                    bool _e37 = local_28;
+                    bool _e37 = local_29;
                     if (_e37) {
                         uint _e38 = k_3;
                         uint _e40 = j_2;

@@ -319,13 +319,13 @@ float connection_cosine(float3 x_2, float3 y, float3 n_1, float3 ng, float r2_1)
     }
     float3 w_11 = (v_8 / (sqrt(d2_7)).xxx);
     float cos_x_1 = -(dot(n_1, w_11));
-    if (!((cos_x_1 <= 0.0))) {
-        local_6 = (dot(ng, w_11) >= 0.0);
+    if (!(!((cos_x_1 > 0.0)))) {
+        local_6 = !((dot(ng, w_11) < 0.0));
     } else {
         local_6 = true;
     }
-    bool _e32 = local_6;
-    if (_e32) {
+    bool _e34 = local_6;
+    if (_e34) {
         return 0.0;
     }
     return cos_x_1;
@@ -586,20 +586,31 @@ float subtended_cos(float dist2_, float r2_2)
 
 float4 emitter_cone(float3 center_, float radius, float3 axis, float cos_o, float3 p)
 {
+    bool local_12 = (bool)0;
+
     float3 v_9 = (p - center_);
     float dist2_1 = dot(v_9, v_9);
     float r2_5 = (radius * radius);
+    if ((dist2_1 <= 0.0)) {
+        local_12 = (r2_5 <= 0.0);
+    } else {
+        local_12 = false;
+    }
+    bool _e15 = local_12;
+    if (_e15) {
+        return float4(-2.0, 1e-12, -1.0, 0.0);
+    }
     float d2_8 = max(max(dist2_1, r2_5), MIN_D2_);
     float3 wi = ((dist2_1 > 0.0) ? (v_9 / (sqrt(dist2_1)).xxx) : float3(0.0, 0.0, 0.0));
     float cos_w = dot(axis, wi);
-    const float _e25 = safe_sqrt((1.0 - (cos_w * cos_w)));
-    const float _e26 = subtended_cos(dist2_1, r2_5);
-    const float _e30 = safe_sqrt((1.0 - (_e26 * _e26)));
-    const float _e34 = safe_sqrt((1.0 - (cos_o * cos_o)));
-    const float _e35 = cos_sub_clamped(_e25, cos_w, _e34, cos_o);
-    const float _e36 = sin_sub_clamped(_e25, cos_w, _e34, cos_o);
-    const float _e37 = cos_sub_clamped(_e36, _e35, _e30, _e26);
-    return float4(_e37, d2_8, _e26, _e30);
+    const float _e38 = safe_sqrt((1.0 - (cos_w * cos_w)));
+    const float _e39 = subtended_cos(dist2_1, r2_5);
+    const float _e43 = safe_sqrt((1.0 - (_e39 * _e39)));
+    const float _e47 = safe_sqrt((1.0 - (cos_o * cos_o)));
+    const float _e48 = cos_sub_clamped(_e38, cos_w, _e47, cos_o);
+    const float _e49 = sin_sub_clamped(_e38, cos_w, _e47, cos_o);
+    const float _e50 = cos_sub_clamped(_e49, _e48, _e43, _e39);
+    return float4(_e50, d2_8, _e39, _e43);
 }
 
 float emitter_importance(float3 center_1, float radius_1, float phi, float3 axis_1, float cos_o_1, float cos_e, float3 p_1)
@@ -613,23 +624,23 @@ float emitter_importance(float3 center_1, float radius_1, float phi, float3 axis
 
 float cone_cos_of(float3 v_3, float d2_4, float a_3, float3 d)
 {
-    bool local_12 = (bool)0;
     bool local_13 = (bool)0;
+    bool local_14 = (bool)0;
 
     float vd = dot(v_3, d);
     float h2_ = (d2_4 - (a_3 * a_3));
     if (!((h2_ <= 0.0))) {
         if ((vd >= 0.0)) {
-            local_13 = ((vd * vd) >= h2_);
+            local_14 = ((vd * vd) >= h2_);
         } else {
-            local_13 = false;
+            local_14 = false;
         }
-        bool _e19 = local_13;
-        local_12 = _e19;
+        bool _e19 = local_14;
+        local_13 = _e19;
     } else {
-        local_12 = true;
+        local_13 = true;
     }
-    bool _e21 = local_12;
+    bool _e21 = local_13;
     if (_e21) {
         return 1.0;
     }
@@ -684,16 +695,16 @@ float light_importance(float3 center_4, float radius_4, float phi_1, float3 axis
 
 float glossy_importance(float3 center_5, float radius_5, float phi_2, float3 axis_3, float cos_o_3, float cos_e_2, float3 p_5, float3 n_6, float3 r_4, float4 lobe_5)
 {
-    bool local_14 = (bool)0;
+    bool local_15 = (bool)0;
 
     const float _e10 = emitter_importance(center_5, radius_5, phi_2, axis_3, cos_o_3, cos_e_2, p_5);
     const float _e11 = cone_cos_toward(center_5, radius_5, p_5, n_6);
     if (!((_e10 <= 0.0))) {
-        local_14 = (_e11 <= 0.0);
+        local_15 = (_e11 <= 0.0);
     } else {
-        local_14 = true;
+        local_15 = true;
     }
-    bool _e20 = local_14;
+    bool _e20 = local_15;
     if (_e20) {
         return 0.0;
     }
@@ -758,16 +769,16 @@ float ray_aabb(float3 o, float3 inv_d, float3 bmin_1, float3 bmax_1, float t_max
 
 float3 triangle_normal(float3 a_4, float3 b_3, float3 c_4)
 {
-    bool local_15 = (bool)0;
+    bool local_16 = (bool)0;
 
     float3 n_14 = cross((b_3 - a_4), (c_4 - a_4));
     float l2_ = dot(n_14, n_14);
     if (!(!((l2_ > 0.0)))) {
-        local_15 = !((l2_ < 3e38));
+        local_16 = !((l2_ < 3e38));
     } else {
-        local_15 = true;
+        local_16 = true;
     }
-    bool _e17 = local_15;
+    bool _e17 = local_16;
     if (_e17) {
         return float3(0.0, 0.0, 0.0);
     }
@@ -776,9 +787,9 @@ float3 triangle_normal(float3 a_4, float3 b_3, float3 c_4)
 
 float ray_triangle(float3 o_1, float3 d_3, float3 a_5, float3 b_4, float3 c_5, float t_min, float t_max_1)
 {
-    bool local_16 = (bool)0;
     bool local_17 = (bool)0;
     bool local_18 = (bool)0;
+    bool local_19 = (bool)0;
 
     float3 e1_ = (b_4 - a_5);
     float3 e2_ = (c_5 - a_5);
@@ -791,32 +802,32 @@ float ray_triangle(float3 o_1, float3 d_3, float3 a_5, float3 b_4, float3 c_5, f
     float3 s_9 = (o_1 - a_5);
     float u_3 = (dot(s_9, p_9) * inv_1);
     if (!((u_3 < 0.0))) {
-        local_16 = (u_3 > 1.0);
+        local_17 = (u_3 > 1.0);
     } else {
-        local_16 = true;
+        local_17 = true;
     }
-    bool _e28 = local_16;
+    bool _e28 = local_17;
     if (_e28) {
         return -1.0;
     }
     float3 q_1 = cross(s_9, e1_);
     float v_13 = (dot(d_3, q_1) * inv_1);
     if (!((v_13 < 0.0))) {
-        local_17 = ((u_3 + v_13) > 1.0);
+        local_18 = ((u_3 + v_13) > 1.0);
     } else {
-        local_17 = true;
+        local_18 = true;
     }
-    bool _e42 = local_17;
+    bool _e42 = local_18;
     if (_e42) {
         return -1.0;
     }
     float t_6 = (dot(e2_, q_1) * inv_1);
     if ((t_6 > t_min)) {
-        local_18 = (t_6 < t_max_1);
+        local_19 = (t_6 < t_max_1);
     } else {
-        local_18 = false;
+        local_19 = false;
     }
-    bool _e51 = local_18;
+    bool _e51 = local_19;
     if (_e51) {
         return t_6;
     }
@@ -1012,8 +1023,8 @@ float bsh_inner_scale(float a_7, float3 v_4, float d2_6, float3 r_6, float4 rl_2
 
 bool bsh_reaches(BshNode node_4, float3 x_5, float3 r_7, float4 rl_3)
 {
-    bool local_19 = (bool)0;
     bool local_20 = (bool)0;
+    bool local_21 = (bool)0;
 
     const bool _e6 = sphere_contains_point(node_4.center_, node_4.radius, x_5);
     if (_e6) {
@@ -1021,11 +1032,11 @@ bool bsh_reaches(BshNode node_4, float3 x_5, float3 r_7, float4 rl_3)
     }
     if (!((rl_3.w <= 1.0))) {
         const bool _e20 = sphere_contains_point(node_4.center_, (node_4.radius * (rl_3.w * 1.0001)), x_5);
-        local_19 = !(_e20);
+        local_20 = !(_e20);
     } else {
-        local_19 = true;
+        local_20 = true;
     }
-    bool _e23 = local_19;
+    bool _e23 = local_20;
     if (_e23) {
         return false;
     }
@@ -1046,11 +1057,11 @@ bool bsh_reaches(BshNode node_4, float3 x_5, float3 r_7, float4 rl_3)
     const float _e50 = bsh_range_bound(node_4);
     float reach = (node_4.extent + (sqrt(s_c) * _e50));
     if ((d2_9 <= ((node_4.radius * node_4.radius) * s_c))) {
-        local_20 = (d2_9 <= (reach * reach));
+        local_21 = (d2_9 <= (reach * reach));
     } else {
-        local_20 = false;
+        local_21 = false;
     }
-    bool _e63 = local_20;
+    bool _e63 = local_21;
     return _e63;
 }
 
@@ -1064,7 +1075,7 @@ uint bsh_subtree(uint nodes_3, uint s_1, uint depth)
 {
     uint i_2 = (uint)0;
     uint level = 0u;
-    bool local_21 = (bool)0;
+    bool local_22 = (bool)0;
 
     const uint _e3 = bsh_first(nodes_3);
     i_2 = _e3;
@@ -1075,11 +1086,11 @@ uint bsh_subtree(uint nodes_3, uint s_1, uint depth)
         uint _e7 = level;
         if ((_e7 < depth)) {
             uint _e11 = i_2;
-            local_21 = (_e11 != BSH_NONE);
+            local_22 = (_e11 != BSH_NONE);
         } else {
-            local_21 = false;
+            local_22 = false;
         }
-        bool _e15 = local_21;
+        bool _e15 = local_22;
         if (_e15) {
         } else {
             break;
@@ -1160,8 +1171,8 @@ float next_threshold(float sum, inout uint h_1)
 Connection connect_record(GpuLight l_4, float3 x_6, float3 n_8, float3 ng_1, float r2_3, float rt2_4, float w_res, float u1_2, float u2_2, float eps, bool trace_1)
 {
     Connection c_6 = (Connection)0;
-    bool local_22 = (bool)0;
     bool local_23 = (bool)0;
+    bool local_24 = (bool)0;
 
     c_6.e = (0.0).xxx;
     const float3 _e16 = light_point(l_4, u1_2, u2_2);
@@ -1174,16 +1185,16 @@ Connection connect_record(GpuLight l_4, float3 x_6, float3 n_8, float3 ng_1, flo
         if (trace_1) {
             float3 _e33 = c_6.y;
             const bool _e34 = occluded((x_6 + (ng_1 * eps)), _e33);
-            local_23 = _e34;
+            local_24 = _e34;
         } else {
-            local_23 = false;
+            local_24 = false;
         }
-        bool _e36 = local_23;
-        local_22 = _e36;
+        bool _e36 = local_24;
+        local_23 = _e36;
     } else {
-        local_22 = true;
+        local_23 = true;
     }
-    bool _e38 = local_22;
+    bool _e38 = local_23;
     if (_e38) {
         Connection _e39 = c_6;
         const Connection connection = _e39;
@@ -1398,9 +1409,9 @@ uint tile_subtree(uint s_4, TileWalk t_1, bool list, uint at, uint start_2, uint
 {
     uint p_8 = (uint)0;
     uint b_7 = (uint)0;
-    bool local_24 = (bool)0;
     bool local_25 = (bool)0;
     bool local_26 = (bool)0;
+    bool local_27 = (bool)0;
 
     const uint _e8 = bsh_subtree(BSH, s_4, BSH_TILE_DEPTH);
     if ((_e8 == BSH_NONE)) {
@@ -1426,16 +1437,16 @@ uint tile_subtree(uint s_4, TileWalk t_1, bool list, uint at, uint start_2, uint
         if ((_e23 != end_1)) {
             if (!(!(list))) {
                 uint _e31 = p_8;
-                local_25 = (_e31 < to);
+                local_26 = (_e31 < to);
             } else {
-                local_25 = true;
+                local_26 = true;
             }
-            bool _e34 = local_25;
-            local_24 = _e34;
+            bool _e34 = local_26;
+            local_25 = _e34;
         } else {
-            local_24 = false;
+            local_25 = false;
         }
-        bool _e36 = local_24;
+        bool _e36 = local_25;
         if (_e36) {
         } else {
             break;
@@ -1443,11 +1454,11 @@ uint tile_subtree(uint s_4, TileWalk t_1, bool list, uint at, uint start_2, uint
         {
             if (list) {
                 uint _e39 = p_8;
-                local_26 = (_e39 >= start_2);
+                local_27 = (_e39 >= start_2);
             } else {
-                local_26 = false;
+                local_27 = false;
             }
-            bool _e42 = local_26;
+            bool _e42 = local_27;
             if (_e42) {
                 uint _e44 = p_8;
                 uint _e47 = b_7;
@@ -1472,18 +1483,18 @@ TileWalk ConstructTileWalk(float3 arg0, float3 arg1, float arg2, uint arg3) {
 
 TileWalk tile_walk_begin(uint li_6, float3 x_10, float w_8, bool has_1)
 {
-    bool local_27 = (bool)0;
+    bool local_28 = (bool)0;
     TileWalk t_2 = (TileWalk)0;
     uint s_5 = (uint)0;
     uint sum_1 = 0u;
     uint s_6 = 0u;
 
     if (has_1) {
-        local_27 = (w_8 >= 0.0);
+        local_28 = (w_8 >= 0.0);
     } else {
-        local_27 = false;
+        local_28 = false;
     }
-    bool _e12 = local_27;
+    bool _e12 = local_28;
     uint _e14; InterlockedMax(tile_scale, (_e12 ? asuint(w_8) : 0u), _e14);
     const WorkgroupBox _e15 = workgroup_box(li_6, x_10, has_1);
     GroupMemoryBarrierWithGroupSync();
@@ -1563,7 +1574,7 @@ uint tile_walk_fill(uint li_7, TileWalk t_3, uint start_3)
 {
     uint s_7 = (uint)0;
     uint past = (uint)0;
-    bool local_28 = (bool)0;
+    bool local_29 = (bool)0;
 
     uint to_1 = min(t_3.total, (start_3 + TILE_LIST));
     s_7 = li_7;
@@ -1594,11 +1605,11 @@ uint tile_walk_fill(uint li_7, TileWalk t_3, uint start_3)
             }
             if ((at_1 < to_1)) {
                 uint _e31 = past;
-                local_28 = (_e31 > start_3);
+                local_29 = (_e31 > start_3);
             } else {
-                local_28 = false;
+                local_29 = false;
             }
-            bool _e34 = local_28;
+            bool _e34 = local_29;
             if (_e34) {
                 uint _e35 = s_7;
                 const uint _e37 = tile_subtree(_e35, t_3, true, at_1, start_3, to_1);
@@ -1687,8 +1698,8 @@ ret_first_holders first_holders(uint2 keys_1[8], bool held_1[8])
     uint first[8] = (uint[8])0;
     uint k_3 = 0u;
     uint j_2 = (uint)0;
-    bool local_29 = (bool)0;
     bool local_30 = (bool)0;
+    bool local_31 = (bool)0;
 
     uint2 loop_bound_10 = uint2(4294967295u, 4294967295u);
     bool loop_init_7 = true;
@@ -1725,11 +1736,11 @@ ret_first_holders first_holders(uint2 keys_1[8], bool held_1[8])
                 uint _e18 = k_3;
                 if ((_e17 < _e18)) {
                     uint _e22 = k_3;
-                    local_29 = held_1[min(uint(_e22), 7u)];
+                    local_30 = held_1[min(uint(_e22), 7u)];
                 } else {
-                    local_29 = false;
+                    local_30 = false;
                 }
-                bool _e25 = local_29;
+                bool _e25 = local_30;
                 if (_e25) {
                 } else {
                     break;
@@ -1739,11 +1750,11 @@ ret_first_holders first_holders(uint2 keys_1[8], bool held_1[8])
                     if (held_1[min(uint(_e26), 7u)]) {
                         uint _e30 = j_2;
                         uint _e32 = k_3;
-                        local_30 = all((keys_1[min(uint(_e30), 7u)] == keys_1[min(uint(_e32), 7u)]));
+                        local_31 = all((keys_1[min(uint(_e30), 7u)] == keys_1[min(uint(_e32), 7u)]));
                     } else {
-                        local_30 = false;
+                        local_31 = false;
                     }
-                    bool _e37 = local_30;
+                    bool _e37 = local_31;
                     if (_e37) {
                         uint _e38 = k_3;
                         uint _e40 = j_2;

@@ -283,13 +283,13 @@ float connection_cosine(float3 x_2, float3 y, float3 n, float3 ng, float r2_1)
     }
     float3 w_6 = (v_9 / (sqrt(d2_9)).xxx);
     float cos_x_1 = -(dot(n, w_6));
-    if (!((cos_x_1 <= 0.0))) {
-        local_1 = (dot(ng, w_6) >= 0.0);
+    if (!(!((cos_x_1 > 0.0)))) {
+        local_1 = !((dot(ng, w_6) < 0.0));
     } else {
         local_1 = true;
     }
-    bool _e32 = local_1;
-    if (_e32) {
+    bool _e34 = local_1;
+    if (_e34) {
         return 0.0;
     }
     return cos_x_1;

@@ -268,13 +268,13 @@ float connection_cosine(float3 x_1, float3 y, float3 n, float3 ng, float r2_1)
     }
     float3 w_5 = (v_7 / (sqrt(d2_8)).xxx);
     float cos_x_1 = -(dot(n, w_5));
-    if (!((cos_x_1 <= 0.0))) {
-        local_1 = (dot(ng, w_5) >= 0.0);
+    if (!(!((cos_x_1 > 0.0)))) {
+        local_1 = !((dot(ng, w_5) < 0.0));
     } else {
         local_1 = true;
     }
-    bool _e32 = local_1;
-    if (_e32) {
+    bool _e34 = local_1;
+    if (_e34) {
         return 0.0;
     }
     return cos_x_1;
@@ -627,20 +627,31 @@ float subtended_cos(float dist2_, float r2_2)
 
 float4 emitter_cone(float3 center_, float radius, float3 axis, float cos_o, float3 p)
 {
+    bool local_10 = (bool)0;
+
     float3 v_8 = (p - center_);
     float dist2_1 = dot(v_8, v_8);
     float r2_5 = (radius * radius);
+    if ((dist2_1 <= 0.0)) {
+        local_10 = (r2_5 <= 0.0);
+    } else {
+        local_10 = false;
+    }
+    bool _e15 = local_10;
+    if (_e15) {
+        return float4(-2.0, 1e-12, -1.0, 0.0);
+    }
     float d2_9 = max(max(dist2_1, r2_5), MIN_D2_);
     float3 wi_2 = ((dist2_1 > 0.0) ? (v_8 / (sqrt(dist2_1)).xxx) : float3(0.0, 0.0, 0.0));
     float cos_w = dot(axis, wi_2);
-    const float _e25 = safe_sqrt((1.0 - (cos_w * cos_w)));
-    const float _e26 = subtended_cos(dist2_1, r2_5);
-    const float _e30 = safe_sqrt((1.0 - (_e26 * _e26)));
-    const float _e34 = safe_sqrt((1.0 - (cos_o * cos_o)));
-    const float _e35 = cos_sub_clamped(_e25, cos_w, _e34, cos_o);
-    const float _e36 = sin_sub_clamped(_e25, cos_w, _e34, cos_o);
-    const float _e37 = cos_sub_clamped(_e36, _e35, _e30, _e26);
-    return float4(_e37, d2_9, _e26, _e30);
+    const float _e38 = safe_sqrt((1.0 - (cos_w * cos_w)));
+    const float _e39 = subtended_cos(dist2_1, r2_5);
+    const float _e43 = safe_sqrt((1.0 - (_e39 * _e39)));
+    const float _e47 = safe_sqrt((1.0 - (cos_o * cos_o)));
+    const float _e48 = cos_sub_clamped(_e38, cos_w, _e47, cos_o);
+    const float _e49 = sin_sub_clamped(_e38, cos_w, _e47, cos_o);
+    const float _e50 = cos_sub_clamped(_e49, _e48, _e43, _e39);
+    return float4(_e50, d2_9, _e39, _e43);
 }
 
 float emitter_importance(float3 center_1, float radius_1, float phi, float3 axis_1, float cos_o_1, float cos_e, float3 p_1)
@@ -654,23 +665,23 @@ float emitter_importance(float3 center_1, float radius_1, float phi, float3 axis
 
 float cone_cos_of(float3 v_5, float d2_7, float a_3, float3 d)
 {
-    bool local_10 = (bool)0;
     bool local_11 = (bool)0;
+    bool local_12 = (bool)0;
 
     float vd = dot(v_5, d);
     float h2_ = (d2_7 - (a_3 * a_3));
     if (!((h2_ <= 0.0))) {
         if ((vd >= 0.0)) {
-            local_11 = ((vd * vd) >= h2_);
+            local_12 = ((vd * vd) >= h2_);
         } else {
-            local_11 = false;
+            local_12 = false;
         }
-        bool _e19 = local_11;
-        local_10 = _e19;
+        bool _e19 = local_12;
+        local_11 = _e19;
     } else {
-        local_10 = true;
+        local_11 = true;
     }
-    bool _e21 = local_10;
+    bool _e21 = local_11;
     if (_e21) {
         return 1.0;
     }
@@ -725,16 +736,16 @@ float light_importance(float3 center_4, float radius_4, float phi_1, float3 axis
 
 float glossy_importance(float3 center_5, float radius_5, float phi_2, float3 axis_3, float cos_o_3, float cos_e_2, float3 p_5, float3 n_10, float3 r_1, float4 lobe_5)
 {
-    bool local_12 = (bool)0;
+    bool local_13 = (bool)0;
 
     const float _e10 = emitter_importance(center_5, radius_5, phi_2, axis_3, cos_o_3, cos_e_2, p_5);
     const float _e11 = cone_cos_toward(center_5, radius_5, p_5, n_10);
     if (!((_e10 <= 0.0))) {
-        local_12 = (_e11 <= 0.0);
+        local_13 = (_e11 <= 0.0);
     } else {
-        local_12 = true;
+        local_13 = true;
     }
-    bool _e20 = local_12;
+    bool _e20 = local_13;
     if (_e20) {
         return 0.0;
     }
@@ -775,21 +786,21 @@ float bvh_remap_u(float u_1, float p0_, bool first)
 
 bool finite3_(float3 v_6)
 {
-    bool local_13 = (bool)0;
     bool local_14 = (bool)0;
+    bool local_15 = (bool)0;
 
     if ((abs(v_6.x) <= F32_MAX)) {
-        local_13 = (abs(v_6.y) <= F32_MAX);
-    } else {
-        local_13 = false;
-    }
-    bool _e12 = local_13;
-    if (_e12) {
-        local_14 = (abs(v_6.z) <= F32_MAX);
+        local_14 = (abs(v_6.y) <= F32_MAX);
     } else {
         local_14 = false;
     }
-    bool _e20 = local_14;
+    bool _e12 = local_14;
+    if (_e12) {
+        local_15 = (abs(v_6.z) <= F32_MAX);
+    } else {
+        local_15 = false;
+    }
+    bool _e20 = local_15;
     return _e20;
 }
 
@@ -827,16 +838,16 @@ float ray_aabb(float3 o, float3 inv_d, float3 bmin, float3 bmax, float t_max)
 
 float3 triangle_normal(float3 a_4, float3 b_3, float3 c_2)
 {
-    bool local_15 = (bool)0;
+    bool local_16 = (bool)0;
 
     float3 n_19 = cross((b_3 - a_4), (c_2 - a_4));
     float l2_ = dot(n_19, n_19);
     if (!(!((l2_ > 0.0)))) {
-        local_15 = !((l2_ < 3e38));
+        local_16 = !((l2_ < 3e38));
     } else {
-        local_15 = true;
+        local_16 = true;
     }
-    bool _e17 = local_15;
+    bool _e17 = local_16;
     if (_e17) {
         return float3(0.0, 0.0, 0.0);
     }
@@ -845,9 +856,9 @@ float3 triangle_normal(float3 a_4, float3 b_3, float3 c_2)
 
 float ray_triangle(float3 o_1, float3 d_3, float3 a_5, float3 b_4, float3 c_3, float t_min, float t_max_1)
 {
-    bool local_16 = (bool)0;
     bool local_17 = (bool)0;
     bool local_18 = (bool)0;
+    bool local_19 = (bool)0;
 
     float3 e1_ = (b_4 - a_5);
     float3 e2_ = (c_3 - a_5);
@@ -860,32 +871,32 @@ float ray_triangle(float3 o_1, float3 d_3, float3 a_5, float3 b_4, float3 c_3, f
     float3 s_7 = (o_1 - a_5);
     float u_3 = (dot(s_7, p_7) * inv_1);
     if (!((u_3 < 0.0))) {
-        local_16 = (u_3 > 1.0);
+        local_17 = (u_3 > 1.0);
     } else {
-        local_16 = true;
+        local_17 = true;
     }
-    bool _e28 = local_16;
+    bool _e28 = local_17;
     if (_e28) {
         return -1.0;
     }
     float3 q = cross(s_7, e1_);
     float v_11 = (dot(d_3, q) * inv_1);
     if (!((v_11 < 0.0))) {
-        local_17 = ((u_3 + v_11) > 1.0);
+        local_18 = ((u_3 + v_11) > 1.0);
     } else {
-        local_17 = true;
+        local_18 = true;
     }
-    bool _e42 = local_17;
+    bool _e42 = local_18;
     if (_e42) {
         return -1.0;
     }
     float t_3 = (dot(e2_, q) * inv_1);
     if ((t_3 > t_min)) {
-        local_18 = (t_3 < t_max_1);
+        local_19 = (t_3 < t_max_1);
     } else {
-        local_18 = false;
+        local_19 = false;
     }
-    bool _e51 = local_18;
+    bool _e51 = local_19;
     if (_e51) {
         return t_3;
     }
@@ -1060,8 +1071,8 @@ bool occluded(float3 a_6, float3 b_5)
 Connection connect_record(GpuLight l_8, float3 x_4, float3 n_12, float3 ng_1, float r2_3, float rt2_4, float w_res, float u1_2, float u2_2, float eps, bool trace_1)
 {
     Connection c_4 = (Connection)0;
-    bool local_19 = (bool)0;
     bool local_20 = (bool)0;
+    bool local_21 = (bool)0;
 
     c_4.e = (0.0).xxx;
     const float3 _e16 = light_point(l_8, u1_2, u2_2);
@@ -1074,16 +1085,16 @@ Connection connect_record(GpuLight l_8, float3 x_4, float3 n_12, float3 ng_1, fl
         if (trace_1) {
             float3 _e33 = c_4.y;
             const bool _e34 = occluded((x_4 + (ng_1 * eps)), _e33);
-            local_20 = _e34;
+            local_21 = _e34;
         } else {
-            local_20 = false;
+            local_21 = false;
         }
-        bool _e36 = local_20;
-        local_19 = _e36;
+        bool _e36 = local_21;
+        local_20 = _e36;
     } else {
-        local_19 = true;
+        local_20 = true;
     }
-    bool _e38 = local_19;
+    bool _e38 = local_20;
     if (_e38) {
         Connection _e39 = c_4;
         const Connection connection = _e39;
@@ -1191,17 +1202,17 @@ float bvh_importance(uint nodes_2, uint i_2, float3 x_8, float3 n_15, float3 r_4
 
 float bvh_first(uint nodes_3, uint i_3, float3 x_9, float3 n_16, float3 r_5, float4 lobe_8)
 {
-    bool local_21 = (bool)0;
+    bool local_22 = (bool)0;
 
     const GpuLightBvhNode _e6 = light_bvh_node(nodes_3, i_3);
     uint j = _e6.second;
     if (!((j <= (i_3 + 1u)))) {
         const uint _e14 = light_bvh_count(nodes_3);
-        local_21 = (j >= _e14);
+        local_22 = (j >= _e14);
     } else {
-        local_21 = true;
+        local_22 = true;
     }
-    bool _e17 = local_21;
+    bool _e17 = local_22;
     if (_e17) {
         return -1.0;
     }
@@ -1230,7 +1241,7 @@ BvhPick light_bvh_sample(uint nodes_4, float3 x_10, float3 n_17, float3 r_6, flo
     float u_2 = (float)0;
     uint i_4 = 0u;
     float pmf = 1.0;
-    bool local_22 = (bool)0;
+    bool local_23 = (bool)0;
 
     const BvhPick _e6 = bvh_pick_none();
     pick = _e6;
@@ -1252,11 +1263,11 @@ BvhPick light_bvh_sample(uint nodes_4, float3 x_10, float3 n_17, float3 r_6, flo
                 uint _e21 = i_4;
                 if (!((_e21 > 0u))) {
                     const float _e28 = bvh_importance(nodes_4, 0u, x_10, n_17, r_6, lobe_9);
-                    local_22 = (_e28 > 0.0);
+                    local_23 = (_e28 > 0.0);
                 } else {
-                    local_22 = true;
+                    local_23 = true;
                 }
-                bool _e32 = local_22;
+                bool _e32 = local_23;
                 if (_e32) {
                     pick.light = _e17.light;
                     float _e36 = pmf;

@@ -315,13 +315,13 @@ float connection_cosine(float3 x_3, float3 y, float3 n, float3 ng, float r2_1)
     }
     float3 w_11 = (v_10 / (sqrt(d2_10)).xxx);
     float cos_x_1 = -(dot(n, w_11));
-    if (!((cos_x_1 <= 0.0))) {
-        local_1 = (dot(ng, w_11) >= 0.0);
+    if (!(!((cos_x_1 > 0.0)))) {
+        local_1 = !((dot(ng, w_11) < 0.0));
     } else {
         local_1 = true;
     }
-    bool _e32 = local_1;
-    if (_e32) {
+    bool _e34 = local_1;
+    if (_e34) {
         return 0.0;
     }
     return cos_x_1;
@@ -927,20 +927,31 @@ float subtended_cos(float dist2_, float r2_2)
 
 float4 emitter_cone(float3 center_, float radius, float3 axis, float cos_o, float3 p)
 {
+    bool local_11 = (bool)0;
+
     float3 v_11 = (p - center_);
     float dist2_1 = dot(v_11, v_11);
     float r2_5 = (radius * radius);
+    if ((dist2_1 <= 0.0)) {
+        local_11 = (r2_5 <= 0.0);
+    } else {
+        local_11 = false;
+    }
+    bool _e15 = local_11;
+    if (_e15) {
+        return float4(-2.0, 1e-12, -1.0, 0.0);
+    }
     float d2_11 = max(max(dist2_1, r2_5), MIN_D2_);
     float3 wi_2 = ((dist2_1 > 0.0) ? (v_11 / (sqrt(dist2_1)).xxx) : float3(0.0, 0.0, 0.0));
     float cos_w = dot(axis, wi_2);
-    const float _e25 = safe_sqrt((1.0 - (cos_w * cos_w)));
-    const float _e26 = subtended_cos(dist2_1, r2_5);
-    const float _e30 = safe_sqrt((1.0 - (_e26 * _e26)));
-    const float _e34 = safe_sqrt((1.0 - (cos_o * cos_o)));
-    const float _e35 = cos_sub_clamped(_e25, cos_w, _e34, cos_o);
-    const float _e36 = sin_sub_clamped(_e25, cos_w, _e34, cos_o);
-    const float _e37 = cos_sub_clamped(_e36, _e35, _e30, _e26);
-    return float4(_e37, d2_11, _e26, _e30);
+    const float _e38 = safe_sqrt((1.0 - (cos_w * cos_w)));
+    const float _e39 = subtended_cos(dist2_1, r2_5);
+    const float _e43 = safe_sqrt((1.0 - (_e39 * _e39)));
+    const float _e47 = safe_sqrt((1.0 - (cos_o * cos_o)));
+    const float _e48 = cos_sub_clamped(_e38, cos_w, _e47, cos_o);
+    const float _e49 = sin_sub_clamped(_e38, cos_w, _e47, cos_o);
+    const float _e50 = cos_sub_clamped(_e49, _e48, _e43, _e39);
+    return float4(_e50, d2_11, _e39, _e43);
 }
 
 float emitter_importance(float3 center_1, float radius_1, float phi, float3 axis_1, float cos_o_1, float cos_e, float3 p_1)
@@ -954,23 +965,23 @@ float emitter_importance(float3 center_1, float radius_1, float phi, float3 axis
 
 float cone_cos_of(float3 v_5, float d2_7, float a_4, float3 d)
 {
-    bool local_11 = (bool)0;
     bool local_12 = (bool)0;
+    bool local_13 = (bool)0;
 
     float vd = dot(v_5, d);
     float h2_ = (d2_7 - (a_4 * a_4));
     if (!((h2_ <= 0.0))) {
         if ((vd >= 0.0)) {
-            local_12 = ((vd * vd) >= h2_);
+            local_13 = ((vd * vd) >= h2_);
         } else {
-            local_12 = false;
+            local_13 = false;
         }
-        bool _e19 = local_12;
-        local_11 = _e19;
+        bool _e19 = local_13;
+        local_12 = _e19;
     } else {
-        local_11 = true;
+        local_12 = true;
     }
-    bool _e21 = local_11;
+    bool _e21 = local_12;
     if (_e21) {
         return 1.0;
     }
@@ -1025,16 +1036,16 @@ float light_importance(float3 center_4, float radius_4, float phi_1, float3 axis
 
 float glossy_importance(float3 center_5, float radius_5, float phi_2, float3 axis_3, float cos_o_3, float cos_e_2, float3 p_5, float3 n_12, float3 r_2, float4 lobe_5)
 {
-    bool local_13 = (bool)0;
+    bool local_14 = (bool)0;
 
     const float _e10 = emitter_importance(center_5, radius_5, phi_2, axis_3, cos_o_3, cos_e_2, p_5);
     const float _e11 = cone_cos_toward(center_5, radius_5, p_5, n_12);
     if (!((_e10 <= 0.0))) {
-        local_13 = (_e11 <= 0.0);
+        local_14 = (_e11 <= 0.0);
     } else {
-        local_13 = true;
+        local_14 = true;
     }
-    bool _e20 = local_13;
+    bool _e20 = local_14;
     if (_e20) {
         return 0.0;
     }
@@ -1077,21 +1088,21 @@ float weighted_select_pdf(float w_7, float w_sum_2, bool in_range, uint k_1)
 
 bool finite3_(float3 v_6)
 {
-    bool local_14 = (bool)0;
     bool local_15 = (bool)0;
+    bool local_16 = (bool)0;
 
     if ((abs(v_6.x) <= F32_MAX)) {
-        local_14 = (abs(v_6.y) <= F32_MAX);
-    } else {
-        local_14 = false;
-    }
-    bool _e12 = local_14;
-    if (_e12) {
-        local_15 = (abs(v_6.z) <= F32_MAX);
+        local_15 = (abs(v_6.y) <= F32_MAX);
     } else {
         local_15 = false;
     }
-    bool _e20 = local_15;
+    bool _e12 = local_15;
+    if (_e12) {
+        local_16 = (abs(v_6.z) <= F32_MAX);
+    } else {
+        local_16 = false;
+    }
+    bool _e20 = local_16;
     return _e20;
 }
 
@@ -1129,16 +1140,16 @@ float ray_aabb(float3 o, float3 inv_d, float3 bmin, float3 bmax, float t_max)
 
 float3 triangle_normal(float3 a_5, float3 b_3, float3 c_5)
 {
-    bool local_16 = (bool)0;
+    bool local_17 = (bool)0;
 
     float3 n_23 = cross((b_3 - a_5), (c_5 - a_5));
     float l2_ = dot(n_23, n_23);
     if (!(!((l2_ > 0.0)))) {
-        local_16 = !((l2_ < 3e38));
+        local_17 = !((l2_ < 3e38));
     } else {
-        local_16 = true;
+        local_17 = true;
     }
-    bool _e17 = local_16;
+    bool _e17 = local_17;
     if (_e17) {
         return float3(0.0, 0.0, 0.0);
     }
@@ -1147,9 +1158,9 @@ float3 triangle_normal(float3 a_5, float3 b_3, float3 c_5)
 
 float ray_triangle(float3 o_1, float3 d_3, float3 a_6, float3 b_4, float3 c_6, float t_min, float t_max_1)
 {
-    bool local_17 = (bool)0;
     bool local_18 = (bool)0;
     bool local_19 = (bool)0;
+    bool local_20 = (bool)0;
 
     float3 e1_ = (b_4 - a_6);
     float3 e2_ = (c_6 - a_6);
@@ -1162,32 +1173,32 @@ float ray_triangle(float3 o_1, float3 d_3, float3 a_6, float3 b_4, float3 c_6, f
     float3 s_8 = (o_1 - a_6);
     float u_3 = (dot(s_8, p_7) * inv_2);
     if (!((u_3 < 0.0))) {
-        local_17 = (u_3 > 1.0);
+        local_18 = (u_3 > 1.0);
     } else {
-        local_17 = true;
+        local_18 = true;
     }
-    bool _e28 = local_17;
+    bool _e28 = local_18;
     if (_e28) {
         return -1.0;
     }
     float3 q = cross(s_8, e1_);
     float v_15 = (dot(d_3, q) * inv_2);
     if (!((v_15 < 0.0))) {
-        local_18 = ((u_3 + v_15) > 1.0);
+        local_19 = ((u_3 + v_15) > 1.0);
     } else {
-        local_18 = true;
+        local_19 = true;
     }
-    bool _e42 = local_18;
+    bool _e42 = local_19;
     if (_e42) {
         return -1.0;
     }
     float t_5 = (dot(e2_, q) * inv_2);
     if ((t_5 > t_min)) {
-        local_19 = (t_5 < t_max_1);
+        local_20 = (t_5 < t_max_1);
     } else {
-        local_19 = false;
+        local_20 = false;
     }
-    bool _e51 = local_19;
+    bool _e51 = local_20;
     if (_e51) {
         return t_5;
     }
@@ -1415,8 +1426,8 @@ float bsh_inner_scale(float a_8, float3 v_7, float d2_9, float3 r_4, float4 rl_2
 
 bool bsh_reaches(BshNode node_4, float3 x_10, float3 r_5, float4 rl_3)
 {
-    bool local_20 = (bool)0;
     bool local_21 = (bool)0;
+    bool local_22 = (bool)0;
 
     const bool _e6 = sphere_contains_point(node_4.center_, node_4.radius, x_10);
     if (_e6) {
@@ -1424,11 +1435,11 @@ bool bsh_reaches(BshNode node_4, float3 x_10, float3 r_5, float4 rl_3)
     }
     if (!((rl_3.w <= 1.0))) {
         const bool _e20 = sphere_contains_point(node_4.center_, (node_4.radius * (rl_3.w * 1.0001)), x_10);
-        local_20 = !(_e20);
+        local_21 = !(_e20);
     } else {
-        local_20 = true;
+        local_21 = true;
     }
-    bool _e23 = local_20;
+    bool _e23 = local_21;
     if (_e23) {
         return false;
     }
@@ -1449,11 +1460,11 @@ bool bsh_reaches(BshNode node_4, float3 x_10, float3 r_5, float4 rl_3)
     const float _e50 = bsh_range_bound(node_4);
     float reach = (node_4.extent + (sqrt(s_c) * _e50));
     if ((d2_12 <= ((node_4.radius * node_4.radius) * s_c))) {
-        local_21 = (d2_12 <= (reach * reach));
+        local_22 = (d2_12 <= (reach * reach));
     } else {
-        local_21 = false;
+        local_22 = false;
     }
-    bool _e63 = local_21;
+    bool _e63 = local_22;
     return _e63;
 }
 
@@ -1501,42 +1512,42 @@ uint bsh_grid_axis(float v_8, float lo_1, float inv, uint n_14)
 
 uint bsh_grid_cell(GridFrame f, float3 x_12)
 {
-    bool local_22 = (bool)0;
     bool local_23 = (bool)0;
     bool local_24 = (bool)0;
     bool local_25 = (bool)0;
     bool local_26 = (bool)0;
+    bool local_27 = (bool)0;
 
     if ((x_12.x >= f.lo.x)) {
-        local_22 = (x_12.y >= f.lo.y);
-    } else {
-        local_22 = false;
-    }
-    bool _e13 = local_22;
-    if (_e13) {
-        local_23 = (x_12.z >= f.lo.z);
+        local_23 = (x_12.y >= f.lo.y);
     } else {
         local_23 = false;
     }
-    bool _e21 = local_23;
-    if (_e21) {
-        local_24 = (x_12.x <= f.hi.x);
+    bool _e13 = local_23;
+    if (_e13) {
+        local_24 = (x_12.z >= f.lo.z);
     } else {
         local_24 = false;
     }
-    bool _e29 = local_24;
-    if (_e29) {
-        local_25 = (x_12.y <= f.hi.y);
+    bool _e21 = local_24;
+    if (_e21) {
+        local_25 = (x_12.x <= f.hi.x);
     } else {
         local_25 = false;
     }
-    bool _e37 = local_25;
-    if (_e37) {
-        local_26 = (x_12.z <= f.hi.z);
+    bool _e29 = local_25;
+    if (_e29) {
+        local_26 = (x_12.y <= f.hi.y);
     } else {
         local_26 = false;
     }
-    bool inside = local_26;
+    bool _e37 = local_26;
+    if (_e37) {
+        local_27 = (x_12.z <= f.hi.z);
+    } else {
+        local_27 = false;
+    }
+    bool inside = local_27;
     if (!(inside)) {
         return BSH_NONE;
     }
@@ -1589,8 +1600,8 @@ BshCursor bsh_cursor(float3 x_13, float3 r_7, float4 rl_5)
 {
     BshCursor c_7 = (BshCursor)0;
     uint h_3 = 0u;
-    bool local_27 = (bool)0;
     bool local_28 = (bool)0;
+    bool local_29 = (bool)0;
 
     c_7.i = 0u;
     c_7.end = 0u;
@@ -1605,19 +1616,19 @@ BshCursor bsh_cursor(float3 x_13, float3 r_7, float4 rl_5)
     const GridFrame _e20 = grid_frame(_e19);
     uint _e22 = c_7.next;
     if ((_e22 != BSH_NONE)) {
-        local_27 = (_e20.nx > 0u);
-    } else {
-        local_27 = false;
-    }
-    bool _e31 = local_27;
-    if (_e31) {
-        uint _e35 = h_3;
-        const float _e36 = grid_reach(_e35);
-        local_28 = (rl_5.w <= _e36);
+        local_28 = (_e20.nx > 0u);
     } else {
         local_28 = false;
     }
-    bool _e39 = local_28;
+    bool _e31 = local_28;
+    if (_e31) {
+        uint _e35 = h_3;
+        const float _e36 = grid_reach(_e35);
+        local_29 = (rl_5.w <= _e36);
+    } else {
+        local_29 = false;
+    }
+    bool _e39 = local_29;
     if (_e39) {
         const uint _e40 = bsh_grid_cell(_e20, x_13);
         if ((_e40 != BSH_NONE)) {
@@ -1683,8 +1694,8 @@ float next_threshold(float sum_1, inout uint h_4)
 Connection connect_record(GpuLight l_8, float3 x_15, float3 n_15, float3 ng_1, float r2_3, float rt2_6, float w_res, float u1_2, float u2_2, float eps, bool trace_1)
 {
     Connection c_9 = (Connection)0;
-    bool local_29 = (bool)0;
     bool local_30 = (bool)0;
+    bool local_31 = (bool)0;
 
     c_9.e = (0.0).xxx;
     const float3 _e16 = light_point(l_8, u1_2, u2_2);
@@ -1697,16 +1708,16 @@ Connection connect_record(GpuLight l_8, float3 x_15, float3 n_15, float3 ng_1, f
         if (trace_1) {
             float3 _e33 = c_9.y;
             const bool _e34 = occluded((x_15 + (ng_1 * eps)), _e33);
-            local_30 = _e34;
+            local_31 = _e34;
         } else {
-            local_30 = false;
+            local_31 = false;
         }
-        bool _e36 = local_30;
-        local_29 = _e36;
+        bool _e36 = local_31;
+        local_30 = _e36;
     } else {
-        local_29 = true;
+        local_30 = true;
     }
-    bool _e38 = local_29;
+    bool _e38 = local_30;
     if (_e38) {
         Connection _e39 = c_9;
         const Connection connection = _e39;

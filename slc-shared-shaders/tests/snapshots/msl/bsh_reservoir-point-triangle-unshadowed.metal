@@ -252,13 +252,13 @@ float connection_cosine(
     }
     metal::float3 w_4 = v_3 / metal::float3(metal::sqrt(d2_6));
     float cos_x_1 = -(metal::dot(n, w_4));
-    if (!((cos_x_1 <= 0.0))) {
-        local_1 = metal::dot(ng, w_4) >= 0.0;
+    if (!(!((cos_x_1 > 0.0)))) {
+        local_1 = !((metal::dot(ng, w_4) < 0.0));
     } else {
         local_1 = true;
     }
-    bool _e32 = local_1;
-    if (_e32) {
+    bool _e34 = local_1;
+    if (_e34) {
         return 0.0;
     }
     return cos_x_1;

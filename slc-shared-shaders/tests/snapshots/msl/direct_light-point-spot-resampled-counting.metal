@@ -335,13 +335,13 @@ float connection_cosine(
     }
     metal::float3 w_10 = v_4 / metal::float3(metal::sqrt(d2_6));
     float cos_x_1 = -(metal::dot(n_1, w_10));
-    if (!((cos_x_1 <= 0.0))) {
-        local_8 = metal::dot(ng, w_10) >= 0.0;
+    if (!(!((cos_x_1 > 0.0)))) {
+        local_8 = !((metal::dot(ng, w_10) < 0.0));
     } else {
         local_8 = true;
     }
-    bool _e32 = local_8;
-    if (_e32) {
+    bool _e34 = local_8;
+    if (_e34) {
         return 0.0;
     }
     return cos_x_1;

@@ -350,13 +350,13 @@ float connection_cosine(
     }
     metal::float3 w_10 = v_5 / metal::float3(metal::sqrt(d2_7));
     float cos_x_1 = -(metal::dot(n_1, w_10));
-    if (!((cos_x_1 <= 0.0))) {
-        local_6 = metal::dot(ng, w_10) >= 0.0;
+    if (!(!((cos_x_1 > 0.0)))) {
+        local_6 = !((metal::dot(ng, w_10) < 0.0));
     } else {
         local_6 = true;
     }
-    bool _e32 = local_6;
-    if (_e32) {
+    bool _e34 = local_6;
+    if (_e34) {
         return 0.0;
     }
     return cos_x_1;
@@ -523,20 +523,30 @@ metal::float4 emitter_cone(
     float cos_o,
     metal::float3 p
 ) {
+    bool local_7 = {};
     metal::float3 v_6 = p - center;
     float dist2_1 = metal::dot(v_6, v_6);
     float r2_5 = radius * radius;
+    if (dist2_1 <= 0.0) {
+        local_7 = r2_5 <= 0.0;
+    } else {
+        local_7 = false;
+    }
+    bool _e15 = local_7;
+    if (_e15) {
+        return metal::float4(-2.0, 0.000000000001, -1.0, 0.0);
+    }
     float d2_8 = metal::max(metal::max(dist2_1, r2_5), MIN_D2_);
     metal::float3 wi = (dist2_1 > 0.0) ? (v_6 / metal::float3(metal::sqrt(dist2_1))) : metal::float3(0.0, 0.0, 0.0);
     float cos_w = metal::dot(axis, wi);
-    float _e25 = safe_sqrt(1.0 - (cos_w * cos_w));
-    float _e26 = subtended_cos(dist2_1, r2_5);
-    float _e30 = safe_sqrt(1.0 - (_e26 * _e26));
-    float _e34 = safe_sqrt(1.0 - (cos_o * cos_o));
-    float _e35 = cos_sub_clamped(_e25, cos_w, _e34, cos_o);
-    float _e36 = sin_sub_clamped(_e25, cos_w, _e34, cos_o);
-    float _e37 = cos_sub_clamped(_e36, _e35, _e30, _e26);
-    return metal::float4(_e37, d2_8, _e26, _e30);
+    float _e38 = safe_sqrt(1.0 - (cos_w * cos_w));
+    float _e39 = subtended_cos(dist2_1, r2_5);
+    float _e43 = safe_sqrt(1.0 - (_e39 * _e39));
+    float _e47 = safe_sqrt(1.0 - (cos_o * cos_o));
+    float _e48 = cos_sub_clamped(_e38, cos_w, _e47, cos_o);
+    float _e49 = sin_sub_clamped(_e38, cos_w, _e47, cos_o);
+    float _e50 = cos_sub_clamped(_e49, _e48, _e43, _e39);
+    return metal::float4(_e50, d2_8, _e39, _e43);
 }
 
 float emitter_importance(
@@ -561,22 +571,22 @@ float cone_cos_of(
     float a_2,
     metal::float3 d
 ) {
-    bool local_7 = {};
     bool local_8 = {};
+    bool local_9 = {};
     float vd = metal::dot(v, d);
     float h2_ = d2_4 - (a_2 * a_2);
     if (!((h2_ <= 0.0))) {
         if (vd >= 0.0) {
-            local_8 = (vd * vd) >= h2_;
+            local_9 = (vd * vd) >= h2_;
         } else {
-            local_8 = false;
+            local_9 = false;
         }
-        bool _e19 = local_8;
-        local_7 = _e19;
+        bool _e19 = local_9;
+        local_8 = _e19;
     } else {
-        local_7 = true;
+        local_8 = true;
     }
-    bool _e21 = local_7;
+    bool _e21 = local_8;
     if (_e21) {
         return 1.0;
     }
@@ -659,15 +669,15 @@ float glossy_importance(
     metal::float3 r_4,
     metal::float4 lobe_5
 ) {
-    bool local_9 = {};
+    bool local_10 = {};
     float _e10 = emitter_importance(center_5, radius_5, phi_2, axis_3, cos_o_3, cos_e_2, p_5);
     float _e11 = cone_cos_toward(center_5, radius_5, p_5, n_3);
     if (!((_e10 <= 0.0))) {
-        local_9 = _e11 <= 0.0;
+        local_10 = _e11 <= 0.0;
     } else {
-        local_9 = true;
+        local_10 = true;
     }
-    bool _e20 = local_9;
+    bool _e20 = local_10;
     if (_e20) {
         return 0.0;
     }
@@ -715,20 +725,20 @@ float cone_weight(
 bool finite3_(
     metal::float3 v_1
 ) {
-    bool local_10 = {};
     bool local_11 = {};
+    bool local_12 = {};
     if (metal::abs(v_1.x) <= F32_MAX) {
-        local_10 = metal::abs(v_1.y) <= F32_MAX;
-    } else {
-        local_10 = false;
-    }
-    bool _e12 = local_10;
-    if (_e12) {
-        local_11 = metal::abs(v_1.z) <= F32_MAX;
+        local_11 = metal::abs(v_1.y) <= F32_MAX;
     } else {
         local_11 = false;
     }
-    bool _e20 = local_11;
+    bool _e12 = local_11;
+    if (_e12) {
+        local_12 = metal::abs(v_1.z) <= F32_MAX;
+    } else {
+        local_12 = false;
+    }
+    bool _e20 = local_12;
     return _e20;
 }
 
@@ -781,9 +791,9 @@ float ray_triangle(
     float t_min,
     float t_max_1
 ) {
-    bool local_12 = {};
     bool local_13 = {};
     bool local_14 = {};
+    bool local_15 = {};
     metal::float3 e1_ = b_2 - a_3;
     metal::float3 e2_ = c_2 - a_3;
     metal::float3 p_9 = metal::cross(d_3, e2_);
@@ -795,32 +805,32 @@ float ray_triangle(
     metal::float3 s_9 = o_1 - a_3;
     float u_3 = metal::dot(s_9, p_9) * inv;
     if (!((u_3 < 0.0))) {
-        local_12 = u_3 > 1.0;
+        local_13 = u_3 > 1.0;
     } else {
-        local_12 = true;
+        local_13 = true;
     }
-    bool _e28 = local_12;
+    bool _e28 = local_13;
     if (_e28) {
         return -1.0;
     }
     metal::float3 q_1 = metal::cross(s_9, e1_);
     float v_10 = metal::dot(d_3, q_1) * inv;
     if (!((v_10 < 0.0))) {
-        local_13 = (u_3 + v_10) > 1.0;
+        local_14 = (u_3 + v_10) > 1.0;
     } else {
-        local_13 = true;
+        local_14 = true;
     }
-    bool _e42 = local_13;
+    bool _e42 = local_14;
     if (_e42) {
         return -1.0;
     }
     float t_7 = metal::dot(e2_, q_1) * inv;
     if (t_7 > t_min) {
-        local_14 = t_7 < t_max_1;
+        local_15 = t_7 < t_max_1;
     } else {
-        local_14 = false;
+        local_15 = false;
     }
-    bool _e51 = local_14;
+    bool _e51 = local_15;
     if (_e51) {
         return t_7;
     }
@@ -1008,19 +1018,19 @@ bool bsh_reaches(
     metal::float3 r_7,
     metal::float4 rl_3
 ) {
-    bool local_15 = {};
     bool local_16 = {};
+    bool local_17 = {};
     bool _e6 = sphere_contains_point(node_4.center, node_4.radius, x_5);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
         bool _e20 = sphere_contains_point(node_4.center, node_4.radius * (rl_3.w * 1.0001), x_5);
-        local_15 = !(_e20);
+        local_16 = !(_e20);
     } else {
-        local_15 = true;
+        local_16 = true;
     }
-    bool _e23 = local_15;
+    bool _e23 = local_16;
     if (_e23) {
         return false;
     }
@@ -1041,11 +1051,11 @@ bool bsh_reaches(
     float _e50 = bsh_range_bound(node_4);
     float reach = node_4.extent + (metal::sqrt(s_c) * _e50);
     if (d2_9 <= ((node_4.radius * node_4.radius) * s_c)) {
-        local_16 = d2_9 <= (reach * reach);
+        local_17 = d2_9 <= (reach * reach);
     } else {
-        local_16 = false;
+        local_17 = false;
     }
-    bool _e63 = local_16;
+    bool _e63 = local_17;
     return _e63;
 }
 
@@ -1068,7 +1078,7 @@ uint bsh_subtree(
 ) {
     uint i_2 = {};
     uint level = 0u;
-    bool local_17 = {};
+    bool local_18 = {};
     uint _e3 = bsh_first(nodes_3, bsh_nodes, _buffer_sizes);
     i_2 = _e3;
     uint2 loop_bound_2 = uint2(4294967295u);
@@ -1078,11 +1088,11 @@ uint bsh_subtree(
         uint _e7 = level;
         if (_e7 < depth) {
             uint _e11 = i_2;
-            local_17 = _e11 != BSH_NONE;
+            local_18 = _e11 != BSH_NONE;
         } else {
-            local_17 = false;
+            local_18 = false;
         }
-        bool _e15 = local_17;
+        bool _e15 = local_18;
         if (_e15) {
         } else {
             break;
@@ -1186,8 +1196,8 @@ Connection connect_record(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Connection c_3 = {};
-    bool local_18 = {};
     bool local_19 = {};
+    bool local_20 = {};
     c_3.e = metal::float3(0.0);
     metal::float3 _e16 = light_point(l_2, u1_1, u2_1);
     c_3.y = _e16;
@@ -1199,16 +1209,16 @@ Connection connect_record(
         if (trace_1) {
             metal::float3 _e33 = c_3.y;
             bool _e34 = occluded(x_6 + (ng_1 * eps), _e33, geo_nodes, geo_tris, _buffer_sizes);
-            local_19 = _e34;
+            local_20 = _e34;
         } else {
-            local_19 = false;
+            local_20 = false;
         }
-        bool _e36 = local_19;
-        local_18 = _e36;
+        bool _e36 = local_20;
+        local_19 = _e36;
     } else {
-        local_18 = true;
+        local_19 = true;
     }
-    bool _e38 = local_18;
+    bool _e38 = local_19;
     if (_e38) {
         Connection _e39 = c_3;
         return _e39;
@@ -1355,14 +1365,14 @@ metal::float4 unproject_pixel(
     float height,
     float depth_1
 ) {
-    bool local_20 = {};
     bool local_21 = {};
+    bool local_22 = {};
     if (depth_1 > 0.0) {
-        local_20 = depth_1 < 1.0;
+        local_21 = depth_1 < 1.0;
     } else {
-        local_20 = false;
+        local_21 = false;
     }
-    bool _e16 = local_20;
+    bool _e16 = local_21;
     if (!(_e16)) {
         return metal::float4(0.0, 0.0, 0.0, 0.0);
     }
@@ -1372,11 +1382,11 @@ metal::float4 unproject_pixel(
     metal::float3 q_2 = metal::float3(p_10.x / p_10.w, p_10.y / p_10.w, p_10.z / p_10.w);
     if (metal::abs(p_10.w) > 0.0) {
         bool _e59 = finite3_(q_2);
-        local_21 = _e59;
+        local_22 = _e59;
     } else {
-        local_21 = false;
+        local_22 = false;
     }
-    bool _e61 = local_21;
+    bool _e61 = local_22;
     if (_e61) {
         return metal::float4(q_2.x, q_2.y, q_2.z, 1.0);
     }
@@ -1488,9 +1498,9 @@ uint tile_subtree(
 ) {
     uint p_8 = {};
     uint b_5 = {};
-    bool local_22 = {};
     bool local_23 = {};
     bool local_24 = {};
+    bool local_25 = {};
     uint _e8 = bsh_subtree(BSH, s_4, BSH_TILE_DEPTH, bsh_nodes, _buffer_sizes);
     if (_e8 == BSH_NONE) {
         return 0u;
@@ -1515,16 +1525,16 @@ uint tile_subtree(
         if (_e23 != end_1) {
             if (!(!(list))) {
                 uint _e31 = p_8;
-                local_23 = _e31 < to;
+                local_24 = _e31 < to;
             } else {
-                local_23 = true;
+                local_24 = true;
             }
-            bool _e34 = local_23;
-            local_22 = _e34;
+            bool _e34 = local_24;
+            local_23 = _e34;
         } else {
-            local_22 = false;
+            local_23 = false;
         }
-        bool _e36 = local_22;
+        bool _e36 = local_23;
         if (_e36) {
         } else {
             break;
@@ -1532,11 +1542,11 @@ uint tile_subtree(
         {
             if (list) {
                 uint _e39 = p_8;
-                local_24 = _e39 >= start_2;
+                local_25 = _e39 >= start_2;
             } else {
-                local_24 = false;
+                local_25 = false;
             }
-            bool _e42 = local_24;
+            bool _e42 = local_25;
             if (_e42) {
                 uint _e44 = p_8;
                 uint _e47 = b_5;
@@ -1565,17 +1575,17 @@ TileWalk tile_walk_begin(
     threadgroup uint& tile_total,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    bool local_25 = {};
+    bool local_26 = {};
     TileWalk t_2 = {};
     uint s_5 = {};
     uint sum_1 = 0u;
     uint s_6 = 0u;
     if (has_1) {
-        local_25 = w_7 >= 0.0;
+        local_26 = w_7 >= 0.0;
     } else {
-        local_25 = false;
+        local_26 = false;
     }
-    bool _e12 = local_25;
+    bool _e12 = local_26;
     uint _e14 = metal::atomic_fetch_max_explicit(&tile_scale, _e12 ? as_type<uint>(w_7) : 0u, metal::memory_order_relaxed);
     WorkgroupBox _e15 = workgroup_box(li_6, x_10, has_1, wg_lo, wg_hi, wg_box);
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
@@ -1660,7 +1670,7 @@ uint tile_walk_fill(
 ) {
     uint s_7 = {};
     uint past = {};
-    bool local_26 = {};
+    bool local_27 = {};
     uint to_1 = metal::min(t_3.total, start_3 + TILE_LIST);
     s_7 = li_7;
     uint2 loop_bound_9 = uint2(4294967295u);
@@ -1690,11 +1700,11 @@ uint tile_walk_fill(
             }
             if (at_1 < to_1) {
                 uint _e31 = past;
-                local_26 = _e31 > start_3;
+                local_27 = _e31 > start_3;
             } else {
-                local_26 = false;
+                local_27 = false;
             }
-            bool _e34 = local_26;
+            bool _e34 = local_27;
             if (_e34) {
                 uint _e35 = s_7;
                 uint _e37 = tile_subtree(_e35, t_3, true, at_1, start_3, to_1, bsh_nodes, tile_list, _buffer_sizes);
@@ -1779,8 +1789,8 @@ type_14 first_holders(
     type_14 first = {};
     uint k_3 = 0u;
     uint j_2 = {};
-    bool local_27 = {};
     bool local_28 = {};
+    bool local_29 = {};
     uint2 loop_bound_10 = uint2(4294967295u);
     bool loop_init_7 = true;
     while(true) {
@@ -1816,11 +1826,11 @@ type_14 first_holders(
                 uint _e18 = k_3;
                 if (_e17 < _e18) {
                     uint _e22 = k_3;
-                    local_27 = held_1.inner[_e22];
+                    local_28 = held_1.inner[_e22];
                 } else {
-                    local_27 = false;
+                    local_28 = false;
                 }
-                bool _e25 = local_27;
+                bool _e25 = local_28;
                 if (_e25) {
                 } else {
                     break;
@@ -1830,11 +1840,11 @@ type_14 first_holders(
                     if (held_1.inner[_e26]) {
                         uint _e30 = j_2;
                         uint _e32 = k_3;
-                        local_28 = metal::all(keys_1.inner[_e30] == keys_1.inner[_e32]);
+                        local_29 = metal::all(keys_1.inner[_e30] == keys_1.inner[_e32]);
                     } else {
-                        local_28 = false;
+                        local_29 = false;
                     }
-                    bool _e37 = local_28;
+                    bool _e37 = local_29;
                     if (_e37) {
                         uint _e38 = k_3;
                         uint _e40 = j_2;

@@ -316,13 +316,13 @@ float connection_cosine(
     }
     metal::float3 w_7 = v_3 / metal::float3(metal::sqrt(d2_7));
     float cos_x_1 = -(metal::dot(n_1, w_7));
-    if (!((cos_x_1 <= 0.0))) {
-        local_5 = metal::dot(ng, w_7) >= 0.0;
+    if (!(!((cos_x_1 > 0.0)))) {
+        local_5 = !((metal::dot(ng, w_7) < 0.0));
     } else {
         local_5 = true;
     }
-    bool _e32 = local_5;
-    if (_e32) {
+    bool _e34 = local_5;
+    if (_e34) {
         return 0.0;
     }
     return cos_x_1;
@@ -476,20 +476,30 @@ metal::float4 emitter_cone(
     float cos_o,
     metal::float3 p
 ) {
+    bool local_6 = {};
     metal::float3 v_4 = p - center;
     float dist2_1 = metal::dot(v_4, v_4);
     float r2_5 = radius * radius;
+    if (dist2_1 <= 0.0) {
+        local_6 = r2_5 <= 0.0;
+    } else {
+        local_6 = false;
+    }
+    bool _e15 = local_6;
+    if (_e15) {
+        return metal::float4(-2.0, 0.000000000001, -1.0, 0.0);
+    }
     float d2_8 = metal::max(metal::max(dist2_1, r2_5), MIN_D2_);
     metal::float3 wi = (dist2_1 > 0.0) ? (v_4 / metal::float3(metal::sqrt(dist2_1))) : metal::float3(0.0, 0.0, 0.0);
     float cos_w = metal::dot(axis, wi);
-    float _e25 = safe_sqrt(1.0 - (cos_w * cos_w));
-    float _e26 = subtended_cos(dist2_1, r2_5);
-    float _e30 = safe_sqrt(1.0 - (_e26 * _e26));
-    float _e34 = safe_sqrt(1.0 - (cos_o * cos_o));
-    float _e35 = cos_sub_clamped(_e25, cos_w, _e34, cos_o);
-    float _e36 = sin_sub_clamped(_e25, cos_w, _e34, cos_o);
-    float _e37 = cos_sub_clamped(_e36, _e35, _e30, _e26);
-    return metal::float4(_e37, d2_8, _e26, _e30);
+    float _e38 = safe_sqrt(1.0 - (cos_w * cos_w));
+    float _e39 = subtended_cos(dist2_1, r2_5);
+    float _e43 = safe_sqrt(1.0 - (_e39 * _e39));
+    float _e47 = safe_sqrt(1.0 - (cos_o * cos_o));
+    float _e48 = cos_sub_clamped(_e38, cos_w, _e47, cos_o);
+    float _e49 = sin_sub_clamped(_e38, cos_w, _e47, cos_o);
+    float _e50 = cos_sub_clamped(_e49, _e48, _e43, _e39);
+    return metal::float4(_e50, d2_8, _e39, _e43);
 }
 
 float emitter_importance(
@@ -514,22 +524,22 @@ float cone_cos_of(
     float a_2,
     metal::float3 d
 ) {
-    bool local_6 = {};
     bool local_7 = {};
+    bool local_8 = {};
     float vd = metal::dot(v, d);
     float h2_ = d2_4 - (a_2 * a_2);
     if (!((h2_ <= 0.0))) {
         if (vd >= 0.0) {
-            local_7 = (vd * vd) >= h2_;
+            local_8 = (vd * vd) >= h2_;
         } else {
-            local_7 = false;
+            local_8 = false;
         }
-        bool _e19 = local_7;
-        local_6 = _e19;
+        bool _e19 = local_8;
+        local_7 = _e19;
     } else {
-        local_6 = true;
+        local_7 = true;
     }
-    bool _e21 = local_6;
+    bool _e21 = local_7;
     if (_e21) {
         return 1.0;
     }
@@ -612,15 +622,15 @@ float glossy_importance(
     metal::float3 r_3,
     metal::float4 lobe_5
 ) {
-    bool local_8 = {};
+    bool local_9 = {};
     float _e10 = emitter_importance(center_5, radius_5, phi_2, axis_3, cos_o_3, cos_e_2, p_5);
     float _e11 = cone_cos_toward(center_5, radius_5, p_5, n_3);
     if (!((_e10 <= 0.0))) {
-        local_8 = _e11 <= 0.0;
+        local_9 = _e11 <= 0.0;
     } else {
-        local_8 = true;
+        local_9 = true;
     }
-    bool _e20 = local_8;
+    bool _e20 = local_9;
     if (_e20) {
         return 0.0;
     }
@@ -714,9 +724,9 @@ float ray_triangle(
     float t_min,
     float t_max_1
 ) {
-    bool local_9 = {};
     bool local_10 = {};
     bool local_11 = {};
+    bool local_12 = {};
     metal::float3 e1_ = b_3 - a_3;
     metal::float3 e2_ = c_1 - a_3;
     metal::float3 p_7 = metal::cross(d_3, e2_);
@@ -728,32 +738,32 @@ float ray_triangle(
     metal::float3 s_4 = o_1 - a_3;
     float u_3 = metal::dot(s_4, p_7) * inv;
     if (!((u_3 < 0.0))) {
-        local_9 = u_3 > 1.0;
+        local_10 = u_3 > 1.0;
     } else {
-        local_9 = true;
+        local_10 = true;
     }
-    bool _e28 = local_9;
+    bool _e28 = local_10;
     if (_e28) {
         return -1.0;
     }
     metal::float3 q = metal::cross(s_4, e1_);
     float v_8 = metal::dot(d_3, q) * inv;
     if (!((v_8 < 0.0))) {
-        local_10 = (u_3 + v_8) > 1.0;
+        local_11 = (u_3 + v_8) > 1.0;
     } else {
-        local_10 = true;
+        local_11 = true;
     }
-    bool _e42 = local_10;
+    bool _e42 = local_11;
     if (_e42) {
         return -1.0;
     }
     float t_3 = metal::dot(e2_, q) * inv;
     if (t_3 > t_min) {
-        local_11 = t_3 < t_max_1;
+        local_12 = t_3 < t_max_1;
     } else {
-        local_11 = false;
+        local_12 = false;
     }
-    bool _e51 = local_11;
+    bool _e51 = local_12;
     if (_e51) {
         return t_3;
     }
@@ -937,19 +947,19 @@ bool bsh_reaches(
     metal::float3 r_6,
     metal::float4 rl_3
 ) {
-    bool local_12 = {};
     bool local_13 = {};
+    bool local_14 = {};
     bool _e6 = sphere_contains_point(node_4.center, node_4.radius, x_5);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
         bool _e20 = sphere_contains_point(node_4.center, node_4.radius * (rl_3.w * 1.0001), x_5);
-        local_12 = !(_e20);
+        local_13 = !(_e20);
     } else {
-        local_12 = true;
+        local_13 = true;
     }
-    bool _e23 = local_12;
+    bool _e23 = local_13;
     if (_e23) {
         return false;
     }
@@ -970,11 +980,11 @@ bool bsh_reaches(
     float _e50 = bsh_range_bound(node_4);
     float reach = node_4.extent + (metal::sqrt(s_c) * _e50);
     if (d2_9 <= ((node_4.radius * node_4.radius) * s_c)) {
-        local_13 = d2_9 <= (reach * reach);
+        local_14 = d2_9 <= (reach * reach);
     } else {
-        local_13 = false;
+        local_14 = false;
     }
-    bool _e63 = local_13;
+    bool _e63 = local_14;
     return _e63;
 }
 
@@ -1050,8 +1060,8 @@ Connection connect_record(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Connection c_2 = {};
-    bool local_14 = {};
     bool local_15 = {};
+    bool local_16 = {};
     c_2.e = metal::float3(0.0);
     metal::float3 _e16 = light_point(l_2, u1_1, u2_1);
     c_2.y = _e16;
@@ -1063,16 +1073,16 @@ Connection connect_record(
         if (trace_1) {
             metal::float3 _e33 = c_2.y;
             bool _e34 = occluded(x_7 + (ng_1 * eps), _e33, geo_nodes, geo_tris, _buffer_sizes);
-            local_15 = _e34;
+            local_16 = _e34;
         } else {
-            local_15 = false;
+            local_16 = false;
         }
-        bool _e36 = local_15;
-        local_14 = _e36;
+        bool _e36 = local_16;
+        local_15 = _e36;
     } else {
-        local_14 = true;
+        local_15 = true;
     }
-    bool _e38 = local_14;
+    bool _e38 = local_15;
     if (_e38) {
         Connection _e39 = c_2;
         return _e39;
@@ -1290,8 +1300,8 @@ type_14 first_holders(
     type_14 first = {};
     uint k_3 = 0u;
     uint j_1 = {};
-    bool local_16 = {};
     bool local_17 = {};
+    bool local_18 = {};
     uint2 loop_bound_4 = uint2(4294967295u);
     bool loop_init_2 = true;
     while(true) {
@@ -1327,11 +1337,11 @@ type_14 first_holders(
                 uint _e18 = k_3;
                 if (_e17 < _e18) {
                     uint _e22 = k_3;
-                    local_16 = held_1.inner[_e22];
+                    local_17 = held_1.inner[_e22];
                 } else {
-                    local_16 = false;
+                    local_17 = false;
                 }
-                bool _e25 = local_16;
+                bool _e25 = local_17;
                 if (_e25) {
                 } else {
                     break;
@@ -1341,11 +1351,11 @@ type_14 first_holders(
                     if (held_1.inner[_e26]) {
                         uint _e30 = j_1;
                         uint _e32 = k_3;
-                        local_17 = metal::all(keys_1.inner[_e30] == keys_1.inner[_e32]);
+                        local_18 = metal::all(keys_1.inner[_e30] == keys_1.inner[_e32]);
                     } else {
-                        local_17 = false;
+                        local_18 = false;
                     }
-                    bool _e37 = local_17;
+                    bool _e37 = local_18;
                     if (_e37) {
                         uint _e38 = k_3;
                         uint _e40 = j_1;

@@ -350,13 +350,13 @@ float connection_cosine(
     }
     metal::float3 w_11 = v_8 / metal::float3(metal::sqrt(d2_7));
     float cos_x_1 = -(metal::dot(n_1, w_11));
-    if (!((cos_x_1 <= 0.0))) {
-        local_6 = metal::dot(ng, w_11) >= 0.0;
+    if (!(!((cos_x_1 > 0.0)))) {
+        local_6 = !((metal::dot(ng, w_11) < 0.0));
     } else {
         local_6 = true;
     }
-    bool _e32 = local_6;
-    if (_e32) {
+    bool _e34 = local_6;
+    if (_e34) {
         return 0.0;
     }
     return cos_x_1;
@@ -695,20 +695,30 @@ metal::float4 emitter_cone(
     float cos_o,
     metal::float3 p
 ) {
+    bool local_12 = {};
     metal::float3 v_9 = p - center;
     float dist2_1 = metal::dot(v_9, v_9);
     float r2_5 = radius * radius;
+    if (dist2_1 <= 0.0) {
+        local_12 = r2_5 <= 0.0;
+    } else {
+        local_12 = false;
+    }
+    bool _e15 = local_12;
+    if (_e15) {
+        return metal::float4(-2.0, 0.000000000001, -1.0, 0.0);
+    }
     float d2_8 = metal::max(metal::max(dist2_1, r2_5), MIN_D2_);
     metal::float3 wi = (dist2_1 > 0.0) ? (v_9 / metal::float3(metal::sqrt(dist2_1))) : metal::float3(0.0, 0.0, 0.0);
     float cos_w = metal::dot(axis, wi);
-    float _e25 = safe_sqrt(1.0 - (cos_w * cos_w));
-    float _e26 = subtended_cos(dist2_1, r2_5);
-    float _e30 = safe_sqrt(1.0 - (_e26 * _e26));
-    float _e34 = safe_sqrt(1.0 - (cos_o * cos_o));
-    float _e35 = cos_sub_clamped(_e25, cos_w, _e34, cos_o);
-    float _e36 = sin_sub_clamped(_e25, cos_w, _e34, cos_o);
-    float _e37 = cos_sub_clamped(_e36, _e35, _e30, _e26);
-    return metal::float4(_e37, d2_8, _e26, _e30);
+    float _e38 = safe_sqrt(1.0 - (cos_w * cos_w));
+    float _e39 = subtended_cos(dist2_1, r2_5);
+    float _e43 = safe_sqrt(1.0 - (_e39 * _e39));
+    float _e47 = safe_sqrt(1.0 - (cos_o * cos_o));
+    float _e48 = cos_sub_clamped(_e38, cos_w, _e47, cos_o);
+    float _e49 = sin_sub_clamped(_e38, cos_w, _e47, cos_o);
+    float _e50 = cos_sub_clamped(_e49, _e48, _e43, _e39);
+    return metal::float4(_e50, d2_8, _e39, _e43);
 }
 
 float emitter_importance(
@@ -733,22 +743,22 @@ float cone_cos_of(
     float a_3,
     metal::float3 d
 ) {
-    bool local_12 = {};
     bool local_13 = {};
+    bool local_14 = {};
     float vd = metal::dot(v_3, d);
     float h2_ = d2_4 - (a_3 * a_3);
     if (!((h2_ <= 0.0))) {
         if (vd >= 0.0) {
-            local_13 = (vd * vd) >= h2_;
+            local_14 = (vd * vd) >= h2_;
         } else {
-            local_13 = false;
+            local_14 = false;
         }
-        bool _e19 = local_13;
-        local_12 = _e19;
+        bool _e19 = local_14;
+        local_13 = _e19;
     } else {
-        local_12 = true;
+        local_13 = true;
     }
-    bool _e21 = local_12;
+    bool _e21 = local_13;
     if (_e21) {
         return 1.0;
     }
@@ -831,15 +841,15 @@ float glossy_importance(
     metal::float3 r_4,
     metal::float4 lobe_5
 ) {
-    bool local_14 = {};
+    bool local_15 = {};
     float _e10 = emitter_importance(center_5, radius_5, phi_2, axis_3, cos_o_3, cos_e_2, p_5);
     float _e11 = cone_cos_toward(center_5, radius_5, p_5, n_6);
     if (!((_e10 <= 0.0))) {
-        local_14 = _e11 <= 0.0;
+        local_15 = _e11 <= 0.0;
     } else {
-        local_14 = true;
+        local_15 = true;
     }
-    bool _e20 = local_14;
+    bool _e20 = local_15;
     if (_e20) {
         return 0.0;
     }
@@ -929,15 +939,15 @@ metal::float3 triangle_normal(
     metal::float3 b_3,
     metal::float3 c_4
 ) {
-    bool local_15 = {};
+    bool local_16 = {};
     metal::float3 n_14 = metal::cross(b_3 - a_4, c_4 - a_4);
     float l2_ = metal::dot(n_14, n_14);
     if (!(!((l2_ > 0.0)))) {
-        local_15 = !((l2_ < 300000000000000000000000000000000000000.0));
+        local_16 = !((l2_ < 300000000000000000000000000000000000000.0));
     } else {
-        local_15 = true;
+        local_16 = true;
     }
-    bool _e17 = local_15;
+    bool _e17 = local_16;
     if (_e17) {
         return metal::float3(0.0, 0.0, 0.0);
     }
@@ -953,9 +963,9 @@ float ray_triangle(
     float t_min,
     float t_max_1
 ) {
-    bool local_16 = {};
     bool local_17 = {};
     bool local_18 = {};
+    bool local_19 = {};
     metal::float3 e1_ = b_4 - a_5;
     metal::float3 e2_ = c_5 - a_5;
     metal::float3 p_9 = metal::cross(d_3, e2_);
@@ -967,32 +977,32 @@ float ray_triangle(
     metal::float3 s_9 = o_1 - a_5;
     float u_3 = metal::dot(s_9, p_9) * inv_1;
     if (!((u_3 < 0.0))) {
-        local_16 = u_3 > 1.0;
+        local_17 = u_3 > 1.0;
     } else {
-        local_16 = true;
+        local_17 = true;
     }
-    bool _e28 = local_16;
+    bool _e28 = local_17;
     if (_e28) {
         return -1.0;
     }
     metal::float3 q_1 = metal::cross(s_9, e1_);
     float v_13 = metal::dot(d_3, q_1) * inv_1;
     if (!((v_13 < 0.0))) {
-        local_17 = (u_3 + v_13) > 1.0;
+        local_18 = (u_3 + v_13) > 1.0;
     } else {
-        local_17 = true;
+        local_18 = true;
     }
-    bool _e42 = local_17;
+    bool _e42 = local_18;
     if (_e42) {
         return -1.0;
     }
     float t_6 = metal::dot(e2_, q_1) * inv_1;
     if (t_6 > t_min) {
-        local_18 = t_6 < t_max_1;
+        local_19 = t_6 < t_max_1;
     } else {
-        local_18 = false;
+        local_19 = false;
     }
-    bool _e51 = local_18;
+    bool _e51 = local_19;
     if (_e51) {
         return t_6;
     }
@@ -1182,19 +1192,19 @@ bool bsh_reaches(
     metal::float3 r_7,
     metal::float4 rl_3
 ) {
-    bool local_19 = {};
     bool local_20 = {};
+    bool local_21 = {};
     bool _e6 = sphere_contains_point(node_4.center, node_4.radius, x_5);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
         bool _e20 = sphere_contains_point(node_4.center, node_4.radius * (rl_3.w * 1.0001), x_5);
-        local_19 = !(_e20);
+        local_20 = !(_e20);
     } else {
-        local_19 = true;
+        local_20 = true;
     }
-    bool _e23 = local_19;
+    bool _e23 = local_20;
     if (_e23) {
         return false;
     }
@@ -1215,11 +1225,11 @@ bool bsh_reaches(
     float _e50 = bsh_range_bound(node_4);
     float reach = node_4.extent + (metal::sqrt(s_c) * _e50);
     if (d2_9 <= ((node_4.radius * node_4.radius) * s_c)) {
-        local_20 = d2_9 <= (reach * reach);
+        local_21 = d2_9 <= (reach * reach);
     } else {
-        local_20 = false;
+        local_21 = false;
     }
-    bool _e63 = local_20;
+    bool _e63 = local_21;
     return _e63;
 }
 
@@ -1242,7 +1252,7 @@ uint bsh_subtree(
 ) {
     uint i_2 = {};
     uint level = 0u;
-    bool local_21 = {};
+    bool local_22 = {};
     uint _e3 = bsh_first(nodes_3, bsh_nodes, _buffer_sizes);
     i_2 = _e3;
     uint2 loop_bound_2 = uint2(4294967295u);
@@ -1252,11 +1262,11 @@ uint bsh_subtree(
         uint _e7 = level;
         if (_e7 < depth) {
             uint _e11 = i_2;
-            local_21 = _e11 != BSH_NONE;
+            local_22 = _e11 != BSH_NONE;
         } else {
-            local_21 = false;
+            local_22 = false;
         }
-        bool _e15 = local_21;
+        bool _e15 = local_22;
         if (_e15) {
         } else {
             break;
@@ -1360,8 +1370,8 @@ Connection connect_record(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Connection c_6 = {};
-    bool local_22 = {};
     bool local_23 = {};
+    bool local_24 = {};
     c_6.e = metal::float3(0.0);
     metal::float3 _e16 = light_point(l_4, u1_2, u2_2);
     c_6.y = _e16;
@@ -1373,16 +1383,16 @@ Connection connect_record(
         if (trace_1) {
             metal::float3 _e33 = c_6.y;
             bool _e34 = occluded(x_6 + (ng_1 * eps), _e33, geo_nodes, geo_tris, _buffer_sizes);
-            local_23 = _e34;
+            local_24 = _e34;
         } else {
-            local_23 = false;
+            local_24 = false;
         }
-        bool _e36 = local_23;
-        local_22 = _e36;
+        bool _e36 = local_24;
+        local_23 = _e36;
     } else {
-        local_22 = true;
+        local_23 = true;
     }
-    bool _e38 = local_22;
+    bool _e38 = local_23;
     if (_e38) {
         Connection _e39 = c_6;
         return _e39;
@@ -1614,9 +1624,9 @@ uint tile_subtree(
 ) {
     uint p_8 = {};
     uint b_7 = {};
-    bool local_24 = {};
     bool local_25 = {};
     bool local_26 = {};
+    bool local_27 = {};
     uint _e8 = bsh_subtree(BSH, s_4, BSH_TILE_DEPTH, bsh_nodes, _buffer_sizes);
     if (_e8 == BSH_NONE) {
         return 0u;
@@ -1641,16 +1651,16 @@ uint tile_subtree(
         if (_e23 != end_1) {
             if (!(!(list))) {
                 uint _e31 = p_8;
-                local_25 = _e31 < to;
+                local_26 = _e31 < to;
             } else {
-                local_25 = true;
+                local_26 = true;
             }
-            bool _e34 = local_25;
-            local_24 = _e34;
+            bool _e34 = local_26;
+            local_25 = _e34;
         } else {
-            local_24 = false;
+            local_25 = false;
         }
-        bool _e36 = local_24;
+        bool _e36 = local_25;
         if (_e36) {
         } else {
             break;
@@ -1658,11 +1668,11 @@ uint tile_subtree(
         {
             if (list) {
                 uint _e39 = p_8;
-                local_26 = _e39 >= start_2;
+                local_27 = _e39 >= start_2;
             } else {
-                local_26 = false;
+                local_27 = false;
             }
-            bool _e42 = local_26;
+            bool _e42 = local_27;
             if (_e42) {
                 uint _e44 = p_8;
                 uint _e47 = b_7;
@@ -1691,17 +1701,17 @@ TileWalk tile_walk_begin(
     threadgroup uint& tile_total,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    bool local_27 = {};
+    bool local_28 = {};
     TileWalk t_2 = {};
     uint s_5 = {};
     uint sum_1 = 0u;
     uint s_6 = 0u;
     if (has_1) {
-        local_27 = w_8 >= 0.0;
+        local_28 = w_8 >= 0.0;
     } else {
-        local_27 = false;
+        local_28 = false;
     }
-    bool _e12 = local_27;
+    bool _e12 = local_28;
     uint _e14 = metal::atomic_fetch_max_explicit(&tile_scale, _e12 ? as_type<uint>(w_8) : 0u, metal::memory_order_relaxed);
     WorkgroupBox _e15 = workgroup_box(li_6, x_10, has_1, wg_lo, wg_hi, wg_box);
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
@@ -1786,7 +1796,7 @@ uint tile_walk_fill(
 ) {
     uint s_7 = {};
     uint past = {};
-    bool local_28 = {};
+    bool local_29 = {};
     uint to_1 = metal::min(t_3.total, start_3 + TILE_LIST);
     s_7 = li_7;
     uint2 loop_bound_9 = uint2(4294967295u);
@@ -1816,11 +1826,11 @@ uint tile_walk_fill(
             }
             if (at_1 < to_1) {
                 uint _e31 = past;
-                local_28 = _e31 > start_3;
+                local_29 = _e31 > start_3;
             } else {
-                local_28 = false;
+                local_29 = false;
             }
-            bool _e34 = local_28;
+            bool _e34 = local_29;
             if (_e34) {
                 uint _e35 = s_7;
                 uint _e37 = tile_subtree(_e35, t_3, true, at_1, start_3, to_1, bsh_nodes, tile_list, _buffer_sizes);
@@ -1934,8 +1944,8 @@ type_14 first_holders(
     type_14 first = {};
     uint k_3 = 0u;
     uint j_2 = {};
-    bool local_29 = {};
     bool local_30 = {};
+    bool local_31 = {};
     uint2 loop_bound_10 = uint2(4294967295u);
     bool loop_init_7 = true;
     while(true) {
@@ -1971,11 +1981,11 @@ type_14 first_holders(
                 uint _e18 = k_3;
                 if (_e17 < _e18) {
                     uint _e22 = k_3;
-                    local_29 = held_1.inner[_e22];
+                    local_30 = held_1.inner[_e22];
                 } else {
-                    local_29 = false;
+                    local_30 = false;
                 }
-                bool _e25 = local_29;
+                bool _e25 = local_30;
                 if (_e25) {
                 } else {
                     break;
@@ -1985,11 +1995,11 @@ type_14 first_holders(
                     if (held_1.inner[_e26]) {
                         uint _e30 = j_2;
                         uint _e32 = k_3;
-                        local_30 = metal::all(keys_1.inner[_e30] == keys_1.inner[_e32]);
+                        local_31 = metal::all(keys_1.inner[_e30] == keys_1.inner[_e32]);
                     } else {
-                        local_30 = false;
+                        local_31 = false;
                     }
-                    bool _e37 = local_30;
+                    bool _e37 = local_31;
                     if (_e37) {
                         uint _e38 = k_3;
                         uint _e40 = j_2;

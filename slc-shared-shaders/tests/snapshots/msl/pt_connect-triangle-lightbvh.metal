@@ -304,13 +304,13 @@ float connection_cosine(
     }
     metal::float3 w_5 = v_7 / metal::float3(metal::sqrt(d2_8));
     float cos_x_1 = -(metal::dot(n, w_5));
-    if (!((cos_x_1 <= 0.0))) {
-        local_1 = metal::dot(ng, w_5) >= 0.0;
+    if (!(!((cos_x_1 > 0.0)))) {
+        local_1 = !((metal::dot(ng, w_5) < 0.0));
     } else {
         local_1 = true;
     }
-    bool _e32 = local_1;
-    if (_e32) {
+    bool _e34 = local_1;
+    if (_e34) {
         return 0.0;
     }
     return cos_x_1;
@@ -762,20 +762,30 @@ metal::float4 emitter_cone(
     float cos_o,
     metal::float3 p
 ) {
+    bool local_10 = {};
     metal::float3 v_8 = p - center;
     float dist2_1 = metal::dot(v_8, v_8);
     float r2_5 = radius * radius;
+    if (dist2_1 <= 0.0) {
+        local_10 = r2_5 <= 0.0;
+    } else {
+        local_10 = false;
+    }
+    bool _e15 = local_10;
+    if (_e15) {
+        return metal::float4(-2.0, 0.000000000001, -1.0, 0.0);
+    }
     float d2_9 = metal::max(metal::max(dist2_1, r2_5), MIN_D2_);
     metal::float3 wi_2 = (dist2_1 > 0.0) ? (v_8 / metal::float3(metal::sqrt(dist2_1))) : metal::float3(0.0, 0.0, 0.0);
     float cos_w = metal::dot(axis, wi_2);
-    float _e25 = safe_sqrt(1.0 - (cos_w * cos_w));
-    float _e26 = subtended_cos(dist2_1, r2_5);
-    float _e30 = safe_sqrt(1.0 - (_e26 * _e26));
-    float _e34 = safe_sqrt(1.0 - (cos_o * cos_o));
-    float _e35 = cos_sub_clamped(_e25, cos_w, _e34, cos_o);
-    float _e36 = sin_sub_clamped(_e25, cos_w, _e34, cos_o);
-    float _e37 = cos_sub_clamped(_e36, _e35, _e30, _e26);
-    return metal::float4(_e37, d2_9, _e26, _e30);
+    float _e38 = safe_sqrt(1.0 - (cos_w * cos_w));
+    float _e39 = subtended_cos(dist2_1, r2_5);
+    float _e43 = safe_sqrt(1.0 - (_e39 * _e39));
+    float _e47 = safe_sqrt(1.0 - (cos_o * cos_o));
+    float _e48 = cos_sub_clamped(_e38, cos_w, _e47, cos_o);
+    float _e49 = sin_sub_clamped(_e38, cos_w, _e47, cos_o);
+    float _e50 = cos_sub_clamped(_e49, _e48, _e43, _e39);
+    return metal::float4(_e50, d2_9, _e39, _e43);
 }
 
 float emitter_importance(
@@ -800,22 +810,22 @@ float cone_cos_of(
     float a_3,
     metal::float3 d
 ) {
-    bool local_10 = {};
     bool local_11 = {};
+    bool local_12 = {};
     float vd = metal::dot(v_5, d);
     float h2_ = d2_7 - (a_3 * a_3);
     if (!((h2_ <= 0.0))) {
         if (vd >= 0.0) {
-            local_11 = (vd * vd) >= h2_;
+            local_12 = (vd * vd) >= h2_;
         } else {
-            local_11 = false;
+            local_12 = false;
         }
-        bool _e19 = local_11;
-        local_10 = _e19;
+        bool _e19 = local_12;
+        local_11 = _e19;
     } else {
-        local_10 = true;
+        local_11 = true;
     }
-    bool _e21 = local_10;
+    bool _e21 = local_11;
     if (_e21) {
         return 1.0;
     }
@@ -898,15 +908,15 @@ float glossy_importance(
     metal::float3 r_1,
     metal::float4 lobe_5
 ) {
-    bool local_12 = {};
+    bool local_13 = {};
     float _e10 = emitter_importance(center_5, radius_5, phi_2, axis_3, cos_o_3, cos_e_2, p_5);
     float _e11 = cone_cos_toward(center_5, radius_5, p_5, n_10);
     if (!((_e10 <= 0.0))) {
-        local_12 = _e11 <= 0.0;
+        local_13 = _e11 <= 0.0;
     } else {
-        local_12 = true;
+        local_13 = true;
     }
-    bool _e20 = local_12;
+    bool _e20 = local_13;
     if (_e20) {
         return 0.0;
     }
@@ -963,20 +973,20 @@ float bvh_remap_u(
 bool finite3_(
     metal::float3 v_6
 ) {
-    bool local_13 = {};
     bool local_14 = {};
+    bool local_15 = {};
     if (metal::abs(v_6.x) <= F32_MAX) {
-        local_13 = metal::abs(v_6.y) <= F32_MAX;
-    } else {
-        local_13 = false;
-    }
-    bool _e12 = local_13;
-    if (_e12) {
-        local_14 = metal::abs(v_6.z) <= F32_MAX;
+        local_14 = metal::abs(v_6.y) <= F32_MAX;
     } else {
         local_14 = false;
     }
-    bool _e20 = local_14;
+    bool _e12 = local_14;
+    if (_e12) {
+        local_15 = metal::abs(v_6.z) <= F32_MAX;
+    } else {
+        local_15 = false;
+    }
+    bool _e20 = local_15;
     return _e20;
 }
 
@@ -1025,15 +1035,15 @@ metal::float3 triangle_normal(
     metal::float3 b_3,
     metal::float3 c_2
 ) {
-    bool local_15 = {};
+    bool local_16 = {};
     metal::float3 n_19 = metal::cross(b_3 - a_4, c_2 - a_4);
     float l2_ = metal::dot(n_19, n_19);
     if (!(!((l2_ > 0.0)))) {
-        local_15 = !((l2_ < 300000000000000000000000000000000000000.0));
+        local_16 = !((l2_ < 300000000000000000000000000000000000000.0));
     } else {
-        local_15 = true;
+        local_16 = true;
     }
-    bool _e17 = local_15;
+    bool _e17 = local_16;
     if (_e17) {
         return metal::float3(0.0, 0.0, 0.0);
     }
@@ -1049,9 +1059,9 @@ float ray_triangle(
     float t_min,
     float t_max_1
 ) {
-    bool local_16 = {};
     bool local_17 = {};
     bool local_18 = {};
+    bool local_19 = {};
     metal::float3 e1_ = b_4 - a_5;
     metal::float3 e2_ = c_3 - a_5;
     metal::float3 p_7 = metal::cross(d_3, e2_);
@@ -1063,32 +1073,32 @@ float ray_triangle(
     metal::float3 s_7 = o_1 - a_5;
     float u_3 = metal::dot(s_7, p_7) * inv_1;
     if (!((u_3 < 0.0))) {
-        local_16 = u_3 > 1.0;
+        local_17 = u_3 > 1.0;
     } else {
-        local_16 = true;
+        local_17 = true;
     }
-    bool _e28 = local_16;
+    bool _e28 = local_17;
     if (_e28) {
         return -1.0;
     }
     metal::float3 q = metal::cross(s_7, e1_);
     float v_11 = metal::dot(d_3, q) * inv_1;
     if (!((v_11 < 0.0))) {
-        local_17 = (u_3 + v_11) > 1.0;
+        local_18 = (u_3 + v_11) > 1.0;
     } else {
-        local_17 = true;
+        local_18 = true;
     }
-    bool _e42 = local_17;
+    bool _e42 = local_18;
     if (_e42) {
         return -1.0;
     }
     float t_3 = metal::dot(e2_, q) * inv_1;
     if (t_3 > t_min) {
-        local_18 = t_3 < t_max_1;
+        local_19 = t_3 < t_max_1;
     } else {
-        local_18 = false;
+        local_19 = false;
     }
-    bool _e51 = local_18;
+    bool _e51 = local_19;
     if (_e51) {
         return t_3;
     }
@@ -1266,8 +1276,8 @@ Connection connect_record(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Connection c_4 = {};
-    bool local_19 = {};
     bool local_20 = {};
+    bool local_21 = {};
     c_4.e = metal::float3(0.0);
     metal::float3 _e16 = light_point(l_8, u1_2, u2_2);
     c_4.y = _e16;
@@ -1279,16 +1289,16 @@ Connection connect_record(
         if (trace_1) {
             metal::float3 _e33 = c_4.y;
             bool _e34 = occluded(x_4 + (ng_1 * eps), _e33, geo_nodes, geo_tris, _buffer_sizes);
-            local_20 = _e34;
+            local_21 = _e34;
         } else {
-            local_20 = false;
+            local_21 = false;
         }
-        bool _e36 = local_20;
-        local_19 = _e36;
+        bool _e36 = local_21;
+        local_20 = _e36;
     } else {
-        local_19 = true;
+        local_20 = true;
     }
-    bool _e38 = local_19;
+    bool _e38 = local_20;
     if (_e38) {
         Connection _e39 = c_4;
         return _e39;
@@ -1414,16 +1424,16 @@ float bvh_first(
     device type_11 const& light_bvh,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    bool local_21 = {};
+    bool local_22 = {};
     GpuLightBvhNode _e6 = light_bvh_node(nodes_3, i_3, light_bvh, _buffer_sizes);
     uint j = _e6.second;
     if (!((j <= (i_3 + 1u)))) {
         uint _e14 = light_bvh_count(nodes_3, light_bvh, _buffer_sizes);
-        local_21 = j >= _e14;
+        local_22 = j >= _e14;
     } else {
-        local_21 = true;
+        local_22 = true;
     }
-    bool _e17 = local_21;
+    bool _e17 = local_22;
     if (_e17) {
         return -1.0;
     }
@@ -1452,7 +1462,7 @@ BvhPick light_bvh_sample(
     float u_2 = {};
     uint i_4 = 0u;
     float pmf = 1.0;
-    bool local_22 = {};
+    bool local_23 = {};
     BvhPick _e6 = bvh_pick_none();
     pick = _e6;
     u_2 = u_in;
@@ -1473,11 +1483,11 @@ BvhPick light_bvh_sample(
                 uint _e21 = i_4;
                 if (!((_e21 > 0u))) {
                     float _e28 = bvh_importance(nodes_4, 0u, x_10, n_17, r_6, lobe_9, light_bvh, _buffer_sizes);
-                    local_22 = _e28 > 0.0;
+                    local_23 = _e28 > 0.0;
                 } else {
-                    local_22 = true;
+                    local_23 = true;
                 }
-                bool _e32 = local_22;
+                bool _e32 = local_23;
                 if (_e32) {
                     pick.light = _e17.light;
                     float _e36 = pmf;

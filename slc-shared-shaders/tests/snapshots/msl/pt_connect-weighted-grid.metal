@@ -365,13 +365,13 @@ float connection_cosine(
     }
     metal::float3 w_11 = v_10 / metal::float3(metal::sqrt(d2_10));
     float cos_x_1 = -(metal::dot(n, w_11));
-    if (!((cos_x_1 <= 0.0))) {
-        local_1 = metal::dot(ng, w_11) >= 0.0;
+    if (!(!((cos_x_1 > 0.0)))) {
+        local_1 = !((metal::dot(ng, w_11) < 0.0));
     } else {
         local_1 = true;
     }
-    bool _e32 = local_1;
-    if (_e32) {
+    bool _e34 = local_1;
+    if (_e34) {
         return 0.0;
     }
     return cos_x_1;
@@ -1123,20 +1123,30 @@ metal::float4 emitter_cone(
     float cos_o,
     metal::float3 p
 ) {
+    bool local_11 = {};
     metal::float3 v_11 = p - center;
     float dist2_1 = metal::dot(v_11, v_11);
     float r2_5 = radius * radius;
+    if (dist2_1 <= 0.0) {
+        local_11 = r2_5 <= 0.0;
+    } else {
+        local_11 = false;
+    }
+    bool _e15 = local_11;
+    if (_e15) {
+        return metal::float4(-2.0, 0.000000000001, -1.0, 0.0);
+    }
     float d2_11 = metal::max(metal::max(dist2_1, r2_5), MIN_D2_);
     metal::float3 wi_2 = (dist2_1 > 0.0) ? (v_11 / metal::float3(metal::sqrt(dist2_1))) : metal::float3(0.0, 0.0, 0.0);
     float cos_w = metal::dot(axis, wi_2);
-    float _e25 = safe_sqrt(1.0 - (cos_w * cos_w));
-    float _e26 = subtended_cos(dist2_1, r2_5);
-    float _e30 = safe_sqrt(1.0 - (_e26 * _e26));
-    float _e34 = safe_sqrt(1.0 - (cos_o * cos_o));
-    float _e35 = cos_sub_clamped(_e25, cos_w, _e34, cos_o);
-    float _e36 = sin_sub_clamped(_e25, cos_w, _e34, cos_o);
-    float _e37 = cos_sub_clamped(_e36, _e35, _e30, _e26);
-    return metal::float4(_e37, d2_11, _e26, _e30);
+    float _e38 = safe_sqrt(1.0 - (cos_w * cos_w));
+    float _e39 = subtended_cos(dist2_1, r2_5);
+    float _e43 = safe_sqrt(1.0 - (_e39 * _e39));
+    float _e47 = safe_sqrt(1.0 - (cos_o * cos_o));
+    float _e48 = cos_sub_clamped(_e38, cos_w, _e47, cos_o);
+    float _e49 = sin_sub_clamped(_e38, cos_w, _e47, cos_o);
+    float _e50 = cos_sub_clamped(_e49, _e48, _e43, _e39);
+    return metal::float4(_e50, d2_11, _e39, _e43);
 }
 
 float emitter_importance(
@@ -1161,22 +1171,22 @@ float cone_cos_of(
     float a_4,
     metal::float3 d
 ) {
-    bool local_11 = {};
     bool local_12 = {};
+    bool local_13 = {};
     float vd = metal::dot(v_5, d);
     float h2_ = d2_7 - (a_4 * a_4);
     if (!((h2_ <= 0.0))) {
         if (vd >= 0.0) {
-            local_12 = (vd * vd) >= h2_;
+            local_13 = (vd * vd) >= h2_;
         } else {
-            local_12 = false;
+            local_13 = false;
         }
-        bool _e19 = local_12;
-        local_11 = _e19;
+        bool _e19 = local_13;
+        local_12 = _e19;
     } else {
-        local_11 = true;
+        local_12 = true;
     }
-    bool _e21 = local_11;
+    bool _e21 = local_12;
     if (_e21) {
         return 1.0;
     }
@@ -1259,15 +1269,15 @@ float glossy_importance(
     metal::float3 r_2,
     metal::float4 lobe_5
 ) {
-    bool local_13 = {};
+    bool local_14 = {};
     float _e10 = emitter_importance(center_5, radius_5, phi_2, axis_3, cos_o_3, cos_e_2, p_5);
     float _e11 = cone_cos_toward(center_5, radius_5, p_5, n_12);
     if (!((_e10 <= 0.0))) {
-        local_13 = _e11 <= 0.0;
+        local_14 = _e11 <= 0.0;
     } else {
-        local_13 = true;
+        local_14 = true;
     }
-    bool _e20 = local_13;
+    bool _e20 = local_14;
     if (_e20) {
         return 0.0;
     }
@@ -1329,20 +1339,20 @@ float weighted_select_pdf(
 bool finite3_(
     metal::float3 v_6
 ) {
-    bool local_14 = {};
     bool local_15 = {};
+    bool local_16 = {};
     if (metal::abs(v_6.x) <= F32_MAX) {
-        local_14 = metal::abs(v_6.y) <= F32_MAX;
-    } else {
-        local_14 = false;
-    }
-    bool _e12 = local_14;
-    if (_e12) {
-        local_15 = metal::abs(v_6.z) <= F32_MAX;
+        local_15 = metal::abs(v_6.y) <= F32_MAX;
     } else {
         local_15 = false;
     }
-    bool _e20 = local_15;
+    bool _e12 = local_15;
+    if (_e12) {
+        local_16 = metal::abs(v_6.z) <= F32_MAX;
+    } else {
+        local_16 = false;
+    }
+    bool _e20 = local_16;
     return _e20;
 }
 
@@ -1391,15 +1401,15 @@ metal::float3 triangle_normal(
     metal::float3 b_3,
     metal::float3 c_5
 ) {
-    bool local_16 = {};
+    bool local_17 = {};
     metal::float3 n_23 = metal::cross(b_3 - a_5, c_5 - a_5);
     float l2_ = metal::dot(n_23, n_23);
     if (!(!((l2_ > 0.0)))) {
-        local_16 = !((l2_ < 300000000000000000000000000000000000000.0));
+        local_17 = !((l2_ < 300000000000000000000000000000000000000.0));
     } else {
-        local_16 = true;
+        local_17 = true;
     }
-    bool _e17 = local_16;
+    bool _e17 = local_17;
     if (_e17) {
         return metal::float3(0.0, 0.0, 0.0);
     }
@@ -1415,9 +1425,9 @@ float ray_triangle(
     float t_min,
     float t_max_1
 ) {
-    bool local_17 = {};
     bool local_18 = {};
     bool local_19 = {};
+    bool local_20 = {};
     metal::float3 e1_ = b_4 - a_6;
     metal::float3 e2_ = c_6 - a_6;
     metal::float3 p_7 = metal::cross(d_3, e2_);
@@ -1429,32 +1439,32 @@ float ray_triangle(
     metal::float3 s_8 = o_1 - a_6;
     float u_3 = metal::dot(s_8, p_7) * inv_2;
     if (!((u_3 < 0.0))) {
-        local_17 = u_3 > 1.0;
+        local_18 = u_3 > 1.0;
     } else {
-        local_17 = true;
+        local_18 = true;
     }
-    bool _e28 = local_17;
+    bool _e28 = local_18;
     if (_e28) {
         return -1.0;
     }
     metal::float3 q = metal::cross(s_8, e1_);
     float v_15 = metal::dot(d_3, q) * inv_2;
     if (!((v_15 < 0.0))) {
-        local_18 = (u_3 + v_15) > 1.0;
+        local_19 = (u_3 + v_15) > 1.0;
     } else {
-        local_18 = true;
+        local_19 = true;
     }
-    bool _e42 = local_18;
+    bool _e42 = local_19;
     if (_e42) {
         return -1.0;
     }
     float t_5 = metal::dot(e2_, q) * inv_2;
     if (t_5 > t_min) {
-        local_19 = t_5 < t_max_1;
+        local_20 = t_5 < t_max_1;
     } else {
-        local_19 = false;
+        local_20 = false;
     }
-    bool _e51 = local_19;
+    bool _e51 = local_20;
     if (_e51) {
         return t_5;
     }
@@ -1680,19 +1690,19 @@ bool bsh_reaches(
     metal::float3 r_5,
     metal::float4 rl_3
 ) {
-    bool local_20 = {};
     bool local_21 = {};
+    bool local_22 = {};
     bool _e6 = sphere_contains_point(node_4.center, node_4.radius, x_10);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
         bool _e20 = sphere_contains_point(node_4.center, node_4.radius * (rl_3.w * 1.0001), x_10);
-        local_20 = !(_e20);
+        local_21 = !(_e20);
     } else {
-        local_20 = true;
+        local_21 = true;
     }
-    bool _e23 = local_20;
+    bool _e23 = local_21;
     if (_e23) {
         return false;
     }
@@ -1713,11 +1723,11 @@ bool bsh_reaches(
     float _e50 = bsh_range_bound(node_4);
     float reach = node_4.extent + (metal::sqrt(s_c) * _e50);
     if (d2_12 <= ((node_4.radius * node_4.radius) * s_c)) {
-        local_21 = d2_12 <= (reach * reach);
+        local_22 = d2_12 <= (reach * reach);
     } else {
-        local_21 = false;
+        local_22 = false;
     }
-    bool _e63 = local_21;
+    bool _e63 = local_22;
     return _e63;
 }
 
@@ -1777,41 +1787,41 @@ uint bsh_grid_cell(
     GridFrame f,
     metal::float3 x_12
 ) {
-    bool local_22 = {};
     bool local_23 = {};
     bool local_24 = {};
     bool local_25 = {};
     bool local_26 = {};
+    bool local_27 = {};
     if (x_12.x >= f.lo[0]) {
-        local_22 = x_12.y >= f.lo[1];
-    } else {
-        local_22 = false;
-    }
-    bool _e13 = local_22;
-    if (_e13) {
-        local_23 = x_12.z >= f.lo[2];
+        local_23 = x_12.y >= f.lo[1];
     } else {
         local_23 = false;
     }
-    bool _e21 = local_23;
-    if (_e21) {
-        local_24 = x_12.x <= f.hi[0];
+    bool _e13 = local_23;
+    if (_e13) {
+        local_24 = x_12.z >= f.lo[2];
     } else {
         local_24 = false;
     }
-    bool _e29 = local_24;
-    if (_e29) {
-        local_25 = x_12.y <= f.hi[1];
+    bool _e21 = local_24;
+    if (_e21) {
+        local_25 = x_12.x <= f.hi[0];
     } else {
         local_25 = false;
     }
-    bool _e37 = local_25;
-    if (_e37) {
-        local_26 = x_12.z <= f.hi[2];
+    bool _e29 = local_25;
+    if (_e29) {
+        local_26 = x_12.y <= f.hi[1];
     } else {
         local_26 = false;
     }
-    bool inside = local_26;
+    bool _e37 = local_26;
+    if (_e37) {
+        local_27 = x_12.z <= f.hi[2];
+    } else {
+        local_27 = false;
+    }
+    bool inside = local_27;
     if (!(inside)) {
         return BSH_NONE;
     }
@@ -1877,8 +1887,8 @@ BshCursor bsh_cursor(
 ) {
     BshCursor c_7 = {};
     uint h_3 = 0u;
-    bool local_27 = {};
     bool local_28 = {};
+    bool local_29 = {};
     c_7.i = 0u;
     c_7.end = 0u;
     uint _e10 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
@@ -1892,19 +1902,19 @@ BshCursor bsh_cursor(
     GridFrame _e20 = grid_frame(_e19, grid, _buffer_sizes);
     uint _e22 = c_7.next;
     if (_e22 != BSH_NONE) {
-        local_27 = _e20.nx > 0u;
-    } else {
-        local_27 = false;
-    }
-    bool _e31 = local_27;
-    if (_e31) {
-        uint _e35 = h_3;
-        float _e36 = grid_reach(_e35, grid, _buffer_sizes);
-        local_28 = rl_5.w <= _e36;
+        local_28 = _e20.nx > 0u;
     } else {
         local_28 = false;
     }
-    bool _e39 = local_28;
+    bool _e31 = local_28;
+    if (_e31) {
+        uint _e35 = h_3;
+        float _e36 = grid_reach(_e35, grid, _buffer_sizes);
+        local_29 = rl_5.w <= _e36;
+    } else {
+        local_29 = false;
+    }
+    bool _e39 = local_29;
     if (_e39) {
         uint _e40 = bsh_grid_cell(_e20, x_13);
         if (_e40 != BSH_NONE) {
@@ -1993,8 +2003,8 @@ Connection connect_record(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Connection c_9 = {};
-    bool local_29 = {};
     bool local_30 = {};
+    bool local_31 = {};
     c_9.e = metal::float3(0.0);
     metal::float3 _e16 = light_point(l_8, u1_2, u2_2);
     c_9.y = _e16;
@@ -2006,16 +2016,16 @@ Connection connect_record(
         if (trace_1) {
             metal::float3 _e33 = c_9.y;
             bool _e34 = occluded(x_15 + (ng_1 * eps), _e33, geo_nodes, geo_tris, _buffer_sizes);
-            local_30 = _e34;
+            local_31 = _e34;
         } else {
-            local_30 = false;
+            local_31 = false;
         }
-        bool _e36 = local_30;
-        local_29 = _e36;
+        bool _e36 = local_31;
+        local_30 = _e36;
     } else {
-        local_29 = true;
+        local_30 = true;
     }
-    bool _e38 = local_29;
+    bool _e38 = local_30;
     if (_e38) {
         Connection _e39 = c_9;
         return _e39;
