@@ -111,31 +111,9 @@ impl Tiling {
         self.fill_parts(gb, across * h.div_ceil(region), |k, t| {
             let (x0, y0) = ((k % across) * region, (k / across) * region);
             let (x1, y1) = ((x0 + region).min(w), (y0 + region).min(h));
-            let half = tile.div_ceil(2);
             for ty in (y0..y1).step_by(tile) {
                 for tx in (x0..x1).step_by(tile) {
-                    let (r0, s0, q0) = (t.pixel.len(), t.glossy.len(), t.quarters.len());
-                    for (qx, qy) in [(0, 0), (half, 0), (0, half), (half, half)] {
-                        let (qx0, qy0) = ((tx + qx).min(x1), (ty + qy).min(y1));
-                        let rows = (qy0..(qy0 + half).min(ty + tile).min(y1)).map(|y| y * w);
-                        if let Some(q) =
-                            t.push_pixels(gb, rows, qx0..(qx0 + half).min(tx + tile).min(x1), 1)
-                        {
-                            t.quarters.push(q);
-                        }
-                    }
-                    if let Some(&Tile { lo, hi, .. }) = t.quarters.get(q0) {
-                        let (lo, hi) = t.quarters[q0..]
-                            .iter()
-                            .fold((lo, hi), |(lo, hi), q| (lo.min(q.lo), hi.max(q.hi)));
-                        t.tiles.push(Tile {
-                            lo,
-                            hi,
-                            receivers: r0..t.pixel.len(),
-                            glossy: s0..t.glossy.len(),
-                            quarters: q0..t.quarters.len(),
-                        });
-                    }
+                    t.push_quartered(gb, (tx, ty), tile, (x1, y1), |y| y * w, 1);
                 }
             }
         });
@@ -224,6 +202,43 @@ impl PartTiles {
         self.points.clear();
         self.glossy.clear();
         self.quarters.clear();
+    }
+
+    /// Appends the tile of `tile²` pixels from `(tx, ty)` (clipped to `(x1,
+    /// y1)`) in four quarters of `⌈tile/2⌉²`, quarter by quarter (row-major);
+    /// pixel `(x, y)` is `row_start(y) + x·step` (none seeing a surface: no
+    /// tile, no quarter).
+    fn push_quartered(
+        &mut self,
+        gb: &GBuffer,
+        (tx, ty): (usize, usize),
+        tile: usize,
+        (x1, y1): (usize, usize),
+        row_start: impl Fn(usize) -> usize,
+        step: usize,
+    ) {
+        let half = tile.div_ceil(2);
+        let (r0, s0, q0) = (self.pixel.len(), self.glossy.len(), self.quarters.len());
+        for (qx, qy) in [(0, 0), (half, 0), (0, half), (half, half)] {
+            let (qx0, qy0) = ((tx + qx).min(x1), (ty + qy).min(y1));
+            let rows = (qy0..(qy0 + half).min(ty + tile).min(y1)).map(&row_start);
+            let cols = qx0..(qx0 + half).min(tx + tile).min(x1);
+            if let Some(q) = self.push_pixels(gb, rows, cols, step) {
+                self.quarters.push(q);
+            }
+        }
+        if let Some(&Tile { lo, hi, .. }) = self.quarters.get(q0) {
+            let (lo, hi) = self.quarters[q0..]
+                .iter()
+                .fold((lo, hi), |(lo, hi), q| (lo.min(q.lo), hi.max(q.hi)));
+            self.tiles.push(Tile {
+                lo,
+                hi,
+                receivers: r0..self.pixel.len(),
+                glossy: s0..self.glossy.len(),
+                quarters: q0..self.quarters.len(),
+            });
+        }
     }
 
     /// Appends a tile of the pixels `row + i·step` (each `row` start of
