@@ -7,7 +7,8 @@
 # Adds slc-bevy's many_lights example to .gpu/ (stripped and xz-compressed: the release binary is 90 MB,
 # over the 64 MiB a call carries; Python's lzma unpacks it there) and writes .gpu/commands.sh:
 # - issue 46: the default VPL frame at 1080p, 65,536 and 1,048,576 VPLs, twice each (two runs must agree
-#   within 5% per stage);
+#   within 5% per stage; since 887c3c6 the near field loops over quarter tiles: its stage against the
+#   H200's 3.46 ms at a million VPLs in docs/results/gpu-frame-times.md, d001e5f, measures them);
 # - issue 47: many_lights at 1080p with 4,000 lights (every configuration, then slc's alone with the walk
 #   per pixel instead of per tile, with hardware ray queries for the shadow rays, and at eps 0.03),
 #   500 and 20,000 (Bevy at unbounded ranges left out
