@@ -75,6 +75,14 @@ fn ramp(t: f32) -> [u8; 3] {
 }
 
 pub fn run(a: DiffArgs) -> anyhow::Result<()> {
+    if let Some(out) = &a.heatmap {
+        crate::png_only("--heatmap", out)?;
+    }
+    if let Some(limit) = a.max_rmse
+        && !(limit >= 0.0 && limit.is_finite())
+    {
+        return Err(anyhow!("--max-rmse {limit} must be a finite RMSE of at least 0"));
+    }
     let read = |p: &std::path::Path| {
         if p.extension().and_then(|e| e.to_str()).is_some_and(|e| e.eq_ignore_ascii_case("png")) {
             return Err(anyhow!(

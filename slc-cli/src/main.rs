@@ -371,7 +371,7 @@ fn render_pt(a: RenderArgs) -> anyhow::Result<()> {
     let pts = PtScene::new(&scene, &lights)?;
     let d = PtSettings::default();
     let on_gpu = a.scene.backend == Backend::Gpu;
-    let exposure = a.scene.exposure.or(f.exposure).unwrap_or(1.0);
+    let exposure = a.scene.exposure_of(&f)?;
     let method = pt_method(a.method.as_deref().or(f.method.as_deref()).unwrap_or("slc"))?;
     // A method that culls nothing has no use for ε: the automatic one (a
     // bisection over the scene's surfaces) is not computed for it.
@@ -458,6 +458,15 @@ pub fn spinner(msg: &'static str) -> indicatif::ProgressBar {
     s.set_message(msg);
     s.tick();
     s
+}
+
+/// Checks that the path `flag` names is a `.png` (what it writes), before
+/// any work.
+pub fn png_only(flag: &str, path: &Path) -> anyhow::Result<()> {
+    match path.extension().and_then(|e| e.to_str()) {
+        Some(e) if e.eq_ignore_ascii_case("png") => Ok(()),
+        _ => Err(anyhow!("{flag} {}: give a .png path (it writes a PNG)", path.display())),
+    }
 }
 
 /// The EXR and PNG paths of `--out`: `x.exr` gives `x.exr` and `x.png`,

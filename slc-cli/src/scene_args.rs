@@ -152,13 +152,23 @@ impl SceneArgs {
         Ok(())
     }
 
+    /// The exposure (`--exposure`, else the scene file's, else 1), checked
+    /// for every method and application (an exposure of 0 or NaN made a
+    /// black image wherever SLC's error bound did not use it).
+    pub fn exposure_of(&self, file: &RenderSettings) -> anyhow::Result<f32> {
+        let exposure = self.exposure.or(file.exposure).unwrap_or(1.0);
+        slc_scene::check_exposure(exposure)?;
+        Ok(exposure)
+    }
+
     /// Loads the scene and resolves the VPL application's sizes.
     pub fn resolve(&self) -> anyhow::Result<Resolved> {
         let (scene, _, file) = self.scene()?;
         let width = self.width.or(file.width).unwrap_or(512);
         let height = self.height.or(file.height).unwrap_or(512);
         let vpls = self.vpls.or(file.vpls).unwrap_or(65536);
-        let exposure = self.exposure.or(file.exposure).unwrap_or(1.0);
+        slc_scene::check_size(width, height)?;
+        let exposure = self.exposure_of(&file)?;
         let s = (vpls as f64).sqrt() as u64;
         if s * s != vpls || s > u32::MAX as u64 {
             return Err(RenderError::VplCount(vpls).into());

@@ -146,13 +146,22 @@ pub fn scene_files(counts: &[u32], ies: &str) -> Vec<(String, String)> {
 }
 
 /// Writes the suite's scene files into `dir` (created if missing); returns
-/// their paths.
+/// their paths. Refuses counts a scene file cannot hold and an IES path
+/// that does not name a file from `dir` (a scene file's paths are relative
+/// to it), so that every file it writes loads.
 pub fn write(dir: &Path, counts: &[u32], ies: &str) -> anyhow::Result<Vec<PathBuf>> {
-    if counts.is_empty() || counts.contains(&0) {
-        anyhow::bail!("--counts must list light counts of at least 1");
+    use slc_scene::light_cloud::MAX_CLOUD;
+    if counts.is_empty() || counts.iter().any(|n| !(1..=MAX_CLOUD).contains(n)) {
+        anyhow::bail!("--counts must list light counts in 1..={MAX_CLOUD}");
     }
     std::fs::create_dir_all(dir)
         .map_err(|e| anyhow::anyhow!("cannot create {}: {e}", dir.display()))?;
+    if !dir.join(ies).is_file() {
+        anyhow::bail!(
+            "--ies {ies}: no such file from {} (the scene files' paths are relative to them): give the profile's path from there, or an absolute one",
+            dir.display()
+        );
+    }
     let mut paths = Vec::new();
     for (name, text) in scene_files(counts, ies) {
         let p = dir.join(name);

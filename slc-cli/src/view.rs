@@ -65,6 +65,9 @@ pub struct ViewArgs {
 
 /// Opens the window; prints what ran when it closes.
 pub fn run(a: ViewArgs) -> anyhow::Result<()> {
+    if let Some(path) = &a.screenshot {
+        crate::png_only("--screenshot", path)?;
+    }
     let scene_args = SceneArgs {
         app: App::Vpl,
         backend: Backend::Gpu,

@@ -241,11 +241,57 @@ fn bad_input_is_one_line_error() {
         vec!["render", "--app", "pt", "--spp", "0", "--width", "8", "--height", "8"],
         vec!["bench", "--repeat", "0", "--width", "8", "--height", "8", "--vpls", "64"],
         vec!["render", "--grid", "on", "--width", "8", "--height", "8", "--vpls", "64"],
+        // An outside user's finds (2026-11-29): each was accepted, or failed
+        // late or with a panic, or named a flag the user had not given.
+        vec![
+            "render",
+            "--method",
+            "clamp",
+            "--exposure=nan",
+            "--width",
+            "8",
+            "--height",
+            "8",
+            "--vpls",
+            "64",
+        ],
+        vec![
+            "render",
+            "--method",
+            "none",
+            "--exposure=0",
+            "--width",
+            "8",
+            "--height",
+            "8",
+            "--vpls",
+            "64",
+        ],
+        vec![
+            "render",
+            "--app",
+            "pt",
+            "--method",
+            "uniform",
+            "--exposure=-1",
+            "--width",
+            "8",
+            "--height",
+            "8",
+        ],
+        vec!["diff", "missing-a.exr", "missing-b.exr", "--heatmap", "d.jpg"],
+        vec!["diff", "missing-a.exr", "missing-b.exr", "--max-rmse", "nan"],
+        vec!["view", "--frames", "1", "--width", "100000", "--height", "8", "--vpls", "64"],
+        vec!["view", "--frames", "1", "--screenshot", "v.jpg"],
+        vec!["bench", "--app", "pt", "--reference-spp", "0"],
     ] {
         let out = slc(&d, &args);
         assert!(!out.status.success(), "{args:?} succeeded");
         let err = String::from_utf8_lossy(&out.stderr);
         assert!(err.trim().lines().count() == 1 && err.starts_with("error: "), "{args:?}: {err}");
+        for flag in ["--repeat", "--timed-frames"] {
+            assert!(args.contains(&flag) || !err.contains(flag), "{args:?} names {flag}: {err}");
+        }
     }
 }
 
@@ -809,6 +855,20 @@ fn suite_commands() {
         ok(&d, &["suite", "--out", "s", "--counts", "16,32", "--ies", ies.to_str().unwrap()]);
     assert!(text.contains("wrote 20 scene files"), "{text}");
     assert_eq!(std::fs::read_dir(d.join("s")).unwrap().count(), 20);
+    // Files that would not load are not written: a count no scene file
+    // holds, and the default profile's path from another folder.
+    for (args, needle) in [
+        (
+            vec!["suite", "--out", "big", "--counts", "10000000", "--ies", ies.to_str().unwrap()],
+            "--counts",
+        ),
+        (vec!["suite", "--out", "elsewhere", "--counts", "16"], "--ies"),
+    ] {
+        let out = slc(&d, &args);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(!out.status.success() && err.contains(needle), "{args:?}: {err}");
+        assert!(!d.join(args[2]).join("dominant-16.toml").exists(), "{args:?} wrote files");
+    }
     // Two families at one small count keep the run short.
     let two = d.join("two");
     std::fs::create_dir_all(&two).unwrap();

@@ -111,6 +111,16 @@ pub enum RenderError {
 #[error("cannot write or read image {0}: {1}")]
 pub struct OutputError(pub String, pub String);
 
+/// Checks an exposure (the scale before tone mapping, and the SLC error
+/// bound's reference brightness): finite and positive.
+pub fn check_exposure(exposure: f32) -> Result<(), RenderError> {
+    if exposure.is_finite() && exposure > 0.0 {
+        Ok(())
+    } else {
+        Err(RenderError::Setting(format!("exposure {exposure} must be finite and positive")))
+    }
+}
+
 /// Checks an image size: `1..=16384` on each side.
 pub fn check_size(width: u32, height: u32) -> Result<(), RenderError> {
     if (1..=16384).contains(&width) && (1..=16384).contains(&height) {

@@ -178,15 +178,14 @@ pub(super) fn run_cpu(a: BenchArgs) -> anyhow::Result<()> {
 /// counting kernels (`GpuVplFrame::count_work`), outside the timed frames.
 pub(super) fn run_gpu(a: BenchArgs) -> anyhow::Result<()> {
     use slc_wgpu::frame::Stage;
+    if !(a.warmup >= 0.0 && a.warmup.is_finite()) {
+        anyhow::bail!("--warmup {} must be finite and >= 0 (seconds)", a.warmup);
+    }
+    if a.timed_frames == 0 {
+        anyhow::bail!("--timed-frames 0 must be at least 1");
+    }
     let r = a.scene.resolve()?;
     let gpu = gpu_context(Backend::Gpu)?.context("no GPU context")?;
-    if !(a.warmup >= 0.0 && a.warmup.is_finite()) || a.timed_frames == 0 {
-        anyhow::bail!(
-            "--warmup {} must be finite and >= 0, --timed-frames {} at least 1",
-            a.warmup,
-            a.timed_frames
-        );
-    }
     let mut frame = a.scene.gpu_frame(&gpu, &r)?;
     let configs = vpl_configs(&a, r.exposure)?;
     let bar = progress(configs.len())?;
