@@ -212,9 +212,22 @@ fn render(a: RenderArgs) -> anyhow::Result<()> {
     // A bad --out fails now, not after the render.
     output_paths(&a.out)?;
     if a.scene.app == App::Pt {
+        a.scene.vpl_only_flags()?;
+        if a.range.is_some() || a.no_denoise {
+            anyhow::bail!(
+                "{}: only the VPL application (--app vpl) takes it",
+                if a.no_denoise { "--no-denoise" } else { "--range" }
+            );
+        }
         return render_pt(a);
     }
     a.scene.pt_only_flags()?;
+    if a.spp.is_some() || a.seconds.is_some() {
+        anyhow::bail!(
+            "{}: only the path tracers (--app pt) take it",
+            if a.spp.is_some() { "--spp" } else { "--seconds" }
+        );
+    }
     if a.scene.backend == Backend::Gpu {
         return render_vpl_gpu(a);
     }

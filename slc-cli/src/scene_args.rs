@@ -11,6 +11,9 @@ use slc_scene::scene_file::{RenderSettings, SceneFile};
 use slc_scene::vpl::VplSettings;
 use std::path::Path;
 
+/// `--shadow-size`'s default: the edge of the GPU frame's shadow map.
+pub const DEFAULT_SHADOW_SIZE: u32 = 2048;
+
 /// Which application of the paper.
 #[derive(Clone, Copy, Debug, ValueEnum, PartialEq, Eq)]
 pub enum App {
@@ -65,7 +68,7 @@ pub struct SceneArgs {
     #[arg(long, default_value_t = VplSettings::default().tile)]
     pub tile: u32,
     /// Edge of the primary light's shadow map (GPU frame; the CPU casts shadow rays).
-    #[arg(long, default_value_t = 2048)]
+    #[arg(long, default_value_t = DEFAULT_SHADOW_SIZE)]
     pub shadow_size: u32,
     /// GPU path tracer: cast the light connections' shadow rays as the adapter's ray queries (wgpu's experimental ray queries: GPUs with ray tracing, Mesa 25's lavapipe) instead of the WGSL BVH walk; the closest hits still walk it.
     #[arg(long)]
@@ -150,6 +153,25 @@ impl SceneArgs {
             anyhow::bail!("--grid: only the path tracers (--app pt) build grids");
         }
         Ok(())
+    }
+
+    /// Refuses the VPL application's flags for the path tracers, which
+    /// would ignore them (a scene file's `[render]` values for the other
+    /// application are not flags: they stay allowed).
+    pub fn vpl_only_flags(&self) -> anyhow::Result<()> {
+        let given = [
+            ("--vpls", self.vpls.is_some()),
+            ("--min-distance", self.min_distance.is_some()),
+            ("--near-radius", self.near_radius.is_some()),
+            ("--tile", self.tile != VplSettings::default().tile),
+            ("--shadow-size", self.shadow_size != DEFAULT_SHADOW_SIZE),
+        ];
+        match given.iter().find(|(_, on)| *on) {
+            Some((flag, _)) => {
+                anyhow::bail!("{flag}: only the VPL application (--app vpl) takes it")
+            }
+            None => Ok(()),
+        }
     }
 
     /// The exposure (`--exposure`, else the scene file's, else 1), checked

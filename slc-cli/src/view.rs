@@ -32,7 +32,7 @@ pub struct ViewArgs {
     #[arg(long)]
     near_radius: Option<f32>,
     /// Edge of the primary light's shadow map.
-    #[arg(long, default_value_t = 2048)]
+    #[arg(long, default_value_t = crate::scene_args::DEFAULT_SHADOW_SIZE)]
     shadow_size: u32,
     /// Method at start: slc | clamp | none (keys 1, 2, 3) [default: slc].
     #[arg(long)]

@@ -284,6 +284,12 @@ fn bad_input_is_one_line_error() {
         vec!["view", "--frames", "1", "--width", "100000", "--height", "8", "--vpls", "64"],
         vec!["view", "--frames", "1", "--screenshot", "v.jpg"],
         vec!["bench", "--app", "pt", "--reference-spp", "0"],
+        // Flags the chosen application would ignore.
+        vec!["render", "--app", "pt", "--vpls", "4096", "--width", "8", "--height", "8"],
+        vec!["render", "--app", "pt", "--no-denoise", "--width", "8", "--height", "8"],
+        vec!["render", "--spp", "4", "--width", "8", "--height", "8", "--vpls", "64"],
+        vec!["bench", "--suite", "scenes/suite", "--width", "8", "--height", "8", "--vpls", "64"],
+        vec!["bench", "--app", "pt", "--tile", "2", "--width", "8", "--height", "8"],
     ] {
         let out = slc(&d, &args);
         assert!(!out.status.success(), "{args:?} succeeded");

@@ -42,6 +42,11 @@ pub fn run(a: BenchArgs) -> anyhow::Result<()> {
     }
     if a.scene.app != App::Pt {
         a.scene.pt_only_flags()?;
+        if a.suite.is_some() {
+            return Err(anyhow!("--suite: only the path tracers' bench (--app pt) runs a suite"));
+        }
+    } else {
+        a.scene.vpl_only_flags()?;
     }
     if a.flicker {
         if a.scene.app == App::Pt {
