@@ -520,7 +520,6 @@ fn shaders(out: &Path, lights: &str, reservoir_k: u32) -> anyhow::Result<()> {
         generate_module, translate,
     };
     let lights = LightTypes::parse(lights)?;
-    std::fs::create_dir_all(out).with_context(|| format!("cannot create {}", out.display()))?;
     let base = Features { lights, reservoir_k, ..Features::default() };
     let vpl = LightTypes { vpl: true, ..LightTypes::default() };
     let mut jobs: Vec<(String, Kernel, Features)> = [
@@ -587,13 +586,22 @@ fn shaders(out: &Path, lights: &str, reservoir_k: u32) -> anyhow::Result<()> {
         Kernel::Temporal,
         Features { motion_vectors: true, ..temporal },
     ));
+    // Every kernel generated and translated before any file is written: a
+    // light set some kernel refuses writes nothing.
+    let built = jobs
+        .iter()
+        .map(|(name, kernel, features)| {
+            let g = generate_module(*kernel, features).with_context(|| format!("kernel {name}"))?;
+            let t = translate(&g)?;
+            Ok((name, g, t))
+        })
+        .collect::<anyhow::Result<Vec<_>>>()?;
+    std::fs::create_dir_all(out).with_context(|| format!("cannot create {}", out.display()))?;
     let write = |name: &str, ext: &str, bytes: &[u8]| {
         let p = out.join(format!("{name}.{ext}"));
         std::fs::write(&p, bytes).with_context(|| format!("cannot write {}", p.display()))
     };
-    for (name, kernel, features) in &jobs {
-        let g = generate_module(*kernel, features)?;
-        let t = translate(&g)?;
+    for (name, g, t) in &built {
         write(name, "wgsl", g.source.as_bytes())?;
         write(name, "spv", &t.spv.iter().flat_map(|w| w.to_le_bytes()).collect::<Vec<u8>>())?;
         // GLSL holds one shader per file: the raster kernel's entry points apart.

@@ -290,6 +290,7 @@ fn bad_input_is_one_line_error() {
         vec!["render", "--spp", "4", "--width", "8", "--height", "8", "--vpls", "64"],
         vec!["bench", "--suite", "scenes/suite", "--width", "8", "--height", "8", "--vpls", "64"],
         vec!["bench", "--app", "pt", "--tile", "2", "--width", "8", "--height", "8"],
+        vec!["shaders", "--out", "no-kernels", "--lights", ""],
     ] {
         let out = slc(&d, &args);
         assert!(!out.status.success(), "{args:?} succeeded");
@@ -299,6 +300,7 @@ fn bad_input_is_one_line_error() {
             assert!(args.contains(&flag) || !err.contains(flag), "{args:?} names {flag}: {err}");
         }
     }
+    assert!(!d.join("no-kernels").exists(), "a refused light set wrote kernels");
 }
 
 /// Without a GPU adapter (no Vulkan driver for the child process), `--backend
