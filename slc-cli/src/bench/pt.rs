@@ -193,15 +193,17 @@ fn print_pt_report(a: &BenchArgs, report: &PtReport) {
         "method", "param", "time ms", "spp", "rmse", "rmse net", "uniform/method"
     );
     for r in &report.runs {
+        // No ratio where the reference's noise left no net error (warned below).
+        let ratio = uniform / r.rmse_net;
         println!(
-            "{:<14} {:>8} {:>10.0} {:>6} {:>10.5} {:>10.5} {:>16.2}",
+            "{:<14} {:>8} {:>10.0} {:>6} {:>10.5} {:>10.5} {:>16}",
             r.method,
             r.param.map_or("-".into(), |p| p.to_string()),
             r.time_ms,
             r.spp,
             r.rmse,
             r.rmse_net,
-            uniform / r.rmse_net
+            if ratio.is_finite() && r.rmse_net > 0.0 { format!("{ratio:.2}") } else { "-".into() }
         );
     }
     if seeds {
@@ -223,7 +225,7 @@ fn print_pt_report(a: &BenchArgs, report: &PtReport) {
     }
     for r in report.runs.iter().filter(|r| report.reference_noise > r.rmse_net / 3.0) {
         println!(
-            "warning: the reference's own noise {:.5} exceeds a third of {}'s net RMSE {:.5}: its ratio is uncertain; raise --reference-spp",
+            "warning: the reference's own noise {:.5} exceeds a third of {}'s net RMSE {:.5}: its ratio is uncertain (\"-\" where none is left); raise --reference-spp",
             report.reference_noise, r.method, r.rmse_net
         );
     }
