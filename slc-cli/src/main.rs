@@ -23,7 +23,6 @@ use clap::{Args, Parser, Subcommand};
 use methods::{MethodFlags, pt_method, vpl_settings};
 use notes::{PT_LIGHTS_NOTE, timing_note};
 use scene_args::{App, SceneArgs};
-use slc_scene::RenderError;
 use slc_scene::image::Image;
 use slc_scene::pt::{PtRender, PtScene, PtSettings};
 use slc_scene::vpl::{Culling, VplSettings};
@@ -378,9 +377,7 @@ fn render_pt(a: RenderArgs) -> anyhow::Result<()> {
     let (scene, lights, f) = a.scene.scene()?;
     let (w, h) =
         (a.scene.width.or(f.width).unwrap_or(512), a.scene.height.or(f.height).unwrap_or(512));
-    if !(1..=16384).contains(&w) || !(1..=16384).contains(&h) {
-        return Err(RenderError::Size(w, h).into());
-    }
+    slc_scene::check_size(w, h)?;
     let pts = PtScene::new(&scene, &lights)?;
     let d = PtSettings::default();
     let on_gpu = a.scene.backend == Backend::Gpu;

@@ -94,12 +94,8 @@ impl Image {
     /// Writes an 8-bit sRGB PNG preview: `exposure · L`, then Reinhard-style
     /// `x/(1+x)` per channel scaled so that 1.0 maps near white, then sRGB.
     pub fn write_png(&self, path: &Path, exposure: f32) -> Result<(), OutputError> {
-        if !(exposure.is_finite() && exposure > 0.0) {
-            return Err(OutputError(
-                path.display().to_string(),
-                format!("exposure {exposure} must be finite and positive"),
-            ));
-        }
+        crate::check_exposure(exposure)
+            .map_err(|e| OutputError(path.display().to_string(), e.to_string()))?;
         let bytes: Vec<u8> = self.data.iter().flat_map(|p| tonemap(*p * exposure)).collect();
         write_rgb8_png(path, self.width, self.height, &bytes)
     }

@@ -171,11 +171,7 @@ impl GpuPt {
         height: u32,
         rays: ShadowRays,
     ) -> Result<Self, GpuError> {
-        if !(1..=16384).contains(&width) || !(1..=16384).contains(&height) {
-            return Err(GpuError::Setting(format!(
-                "image size {width}x{height} must be within 1..=16384 on each side"
-            )));
-        }
+        slc_scene::check_size(width, height).map_err(|e| GpuError::Setting(e.to_string()))?;
         let pixels = width as u64 * height as u64;
         let occ = Occluders::from_triangles(&pts.scene().triangles)?;
         let ray_query = rays == ShadowRays::RayQuery;

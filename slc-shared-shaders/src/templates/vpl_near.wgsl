@@ -71,8 +71,9 @@ var<private> quarter_bit: u32;
 /// load_receiver (it reuses workgroup_box.wgsl's arrays).
 fn quarter_boxes(li: u32, lid: vec3u) {
     quarter_bit = 1u << (QUARTER_SHIFT + select(0u, 1u, lid.x >= HALF) + select(0u, 2u, lid.y >= HALF));
-    wg_lo[li] = select(vec3f(F32_MAX), pos, valid);
-    wg_hi[li] = select(vec3f(-F32_MAX), pos, valid);
+    let own = point_box(pos, valid);
+    wg_lo[li] = own.lo;
+    wg_hi[li] = own.hi;
     workgroupBarrier();
     if li < 4u {
         var lo = vec3f(F32_MAX);

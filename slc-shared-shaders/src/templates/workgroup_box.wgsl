@@ -35,9 +35,15 @@ fn workgroup_bounds(li: u32, lo: vec3f, hi: vec3f) -> WorkgroupBox {
     return workgroupUniformLoad(&wg_box);
 }
 
+/// The box of the point `p` where `has`, else the empty box.
+fn point_box(p: vec3f, has: bool) -> WorkgroupBox {
+    return WorkgroupBox(select(vec3f(F32_MAX), p, has), select(vec3f(-F32_MAX), p, has));
+}
+
 /// The box holding every invocation's `p` where `has` (empty if none).
 fn workgroup_box(li: u32, p: vec3f, has: bool) -> WorkgroupBox {
-    return workgroup_bounds(li, select(vec3f(F32_MAX), p, has), select(vec3f(-F32_MAX), p, has));
+    let b = point_box(p, has);
+    return workgroup_bounds(li, b.lo, b.hi);
 }
 
 /// `true` for the empty box of a reduction over no point.

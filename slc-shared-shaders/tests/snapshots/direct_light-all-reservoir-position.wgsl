@@ -910,8 +910,8 @@ fn connect_traced(li: u32, x_10: vec3<f32>, n_9: vec3<f32>, ng_2: vec3<f32>, s_2
 }
 
 fn surface_at(texel: vec2<i32>) -> vec4<f32> {
-    let p_4 = textureLoad(position_tex, texel, 0i);
-    return select(vec4(0f), vec4<f32>(p_4.xyz, 1f), (p_4.w > 0f));
+    let p_5 = textureLoad(position_tex, texel, 0i);
+    return select(vec4(0f), vec4<f32>(p_5.xyz, 1f), (p_5.w > 0f));
 }
 
 fn workgroup_bounds(li_1: u32, lo_5: vec3<f32>, hi_5: vec3<f32>) -> WorkgroupBox {
@@ -954,9 +954,14 @@ fn workgroup_bounds(li_1: u32, lo_5: vec3<f32>, hi_5: vec3<f32>) -> WorkgroupBox
     return _e50;
 }
 
-fn workgroup_box(li_2: u32, p_2: vec3<f32>, has: bool) -> WorkgroupBox {
-    let _e9 = workgroup_bounds(li_2, select(vec3(340282350000000000000000000000000000000f), p_2, has), select(vec3(-340282350000000000000000000000000000000f), p_2, has));
-    return _e9;
+fn point_box(p_2: vec3<f32>, has: bool) -> WorkgroupBox {
+    return WorkgroupBox(select(vec3(340282350000000000000000000000000000000f), p_2, has), select(vec3(-340282350000000000000000000000000000000f), p_2, has));
+}
+
+fn workgroup_box(li_2: u32, p_3: vec3<f32>, has_1: bool) -> WorkgroupBox {
+    let _e3 = point_box(p_3, has_1);
+    let _e6 = workgroup_bounds(li_2, _e3.lo, _e3.hi);
+    return _e6;
 }
 
 fn box_is_empty(b_6: WorkgroupBox) -> bool {
@@ -964,7 +969,7 @@ fn box_is_empty(b_6: WorkgroupBox) -> bool {
 }
 
 fn tile_subtree(s_3: u32, t_2: TileWalk, list: bool, at_1: u32, start_3: u32, to: u32) -> u32 {
-    var p_3: u32;
+    var p_4: u32;
     var b_7: u32;
     var local_16: bool;
     var local_17: bool;
@@ -975,14 +980,14 @@ fn tile_subtree(s_3: u32, t_2: TileWalk, list: bool, at_1: u32, start_3: u32, to
         return 0u;
     }
     let end_1 = bsh_nodes[_e8].next;
-    p_3 = at_1;
+    p_4 = at_1;
     let _e21 = bsh_next_leaf_box(BSH, _e8, end_1, t_2.lo, t_2.hi, t_2.w);
     b_7 = _e21;
     loop {
         let _e23 = b_7;
         if (_e23 != end_1) {
             if !(!(list)) {
-                let _e31 = p_3;
+                let _e31 = p_4;
                 local_17 = (_e31 < to);
             } else {
                 local_17 = true;
@@ -999,19 +1004,19 @@ fn tile_subtree(s_3: u32, t_2: TileWalk, list: bool, at_1: u32, start_3: u32, to
         }
         {
             if list {
-                let _e39 = p_3;
+                let _e39 = p_4;
                 local_18 = (_e39 >= start_3);
             } else {
                 local_18 = false;
             }
             let _e42 = local_18;
             if _e42 {
-                let _e44 = p_3;
+                let _e44 = p_4;
                 let _e47 = b_7;
                 tile_list[(_e44 - start_3)] = _e47;
             }
-            let _e48 = p_3;
-            p_3 = (_e48 + 1u);
+            let _e48 = p_4;
+            p_4 = (_e48 + 1u);
         }
         continuing {
             let _e53 = b_7;
@@ -1020,25 +1025,25 @@ fn tile_subtree(s_3: u32, t_2: TileWalk, list: bool, at_1: u32, start_3: u32, to
             b_7 = _e60;
         }
     }
-    let _e61 = p_3;
+    let _e61 = p_4;
     return (_e61 - at_1);
 }
 
-fn tile_walk_begin(li_3: u32, x_11: vec3<f32>, w_7: f32, has_1: bool) -> TileWalk {
+fn tile_walk_begin(li_3: u32, x_11: vec3<f32>, w_7: f32, has_2: bool) -> TileWalk {
     var local_19: bool;
     var t_3: TileWalk;
     var s_4: u32;
     var sum: u32 = 0u;
     var s_5: u32 = 0u;
 
-    if has_1 {
+    if has_2 {
         local_19 = (w_7 >= 0f);
     } else {
         local_19 = false;
     }
     let _e12 = local_19;
     let _e14 = atomicMax((&tile_scale), select(0u, bitcast<u32>(w_7), _e12));
-    let _e15 = workgroup_box(li_3, x_11, has_1);
+    let _e15 = workgroup_box(li_3, x_11, has_2);
     let _e19 = workgroupUniformLoad((&tile_scale));
     t_3 = TileWalk(_e15.lo, _e15.hi, bitcast<f32>(_e19), 0u);
     let _e24 = box_is_empty(_e15);
@@ -1224,8 +1229,8 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
     } else {
         local_3 = false;
     }
-    let has_2 = local_3;
-    if has_2 {
+    let has_3 = local_3;
+    if has_3 {
         let _e65 = nn;
         n = (_e65 / vec3(sqrt(len2_)));
     }
@@ -1244,7 +1249,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
     h = _e103;
     picks.n = 0u;
     hr = _e102;
-    let _e118 = tile_walk_begin(lid, x_15, _e79.w, has_2);
+    let _e118 = tile_walk_begin(lid, x_15, _e79.w, has_3);
     loop {
         let _e121 = start;
         if (_e121 < _e118.total) {
@@ -1264,7 +1269,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
                 {
                     let _e131 = j;
                     let b_10 = tile_list[_e131];
-                    if !(!(has_2)) {
+                    if !(!(has_3)) {
                         let _e140 = bsh_nodes[b_10];
                         let _e141 = r;
                         let _e142 = bsh_reaches(_e140, x_15, _e141, _e79);
@@ -1291,7 +1296,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
             start = (_e153 + TILE_LIST);
         }
     }
-    if !(has_2) {
+    if !(has_3) {
         if inside {
             textureStore(out_tex, texel_1, vec4(0f));
         }

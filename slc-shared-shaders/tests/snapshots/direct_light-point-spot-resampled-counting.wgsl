@@ -475,14 +475,14 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_3: vec3<f32>, b_2: vec3<f32>, 
 
     let e1_ = (b_2 - a_3);
     let e2_ = (c_4 - a_3);
-    let p_4 = cross(d_3, e2_);
-    let det = dot(e1_, p_4);
+    let p_5 = cross(d_3, e2_);
+    let det = dot(e1_, p_5);
     if (abs(det) <= 0f) {
         return -1f;
     }
     let inv = (1f / det);
     let s_10 = (o_1 - a_3);
-    let u_3 = (dot(s_10, p_4) * inv);
+    let u_3 = (dot(s_10, p_5) * inv);
     if !((u_3 < 0f)) {
         local_11 = (u_3 > 1f);
     } else {
@@ -833,8 +833,8 @@ fn connect_traced(li: u32, x_6: vec3<f32>, n_3: vec3<f32>, ng_2: vec3<f32>, s_2:
 }
 
 fn surface_at(texel: vec2<i32>) -> vec4<f32> {
-    let p_5 = textureLoad(position_tex, texel, 0i);
-    return select(vec4(0f), vec4<f32>(p_5.xyz, 1f), (p_5.w > 0f));
+    let p_6 = textureLoad(position_tex, texel, 0i);
+    return select(vec4(0f), vec4<f32>(p_6.xyz, 1f), (p_6.w > 0f));
 }
 
 fn workgroup_bounds(li_1: u32, lo_2: vec3<f32>, hi_2: vec3<f32>) -> WorkgroupBox {
@@ -877,9 +877,14 @@ fn workgroup_bounds(li_1: u32, lo_2: vec3<f32>, hi_2: vec3<f32>) -> WorkgroupBox
     return _e50;
 }
 
-fn workgroup_box(li_2: u32, p_2: vec3<f32>, has: bool) -> WorkgroupBox {
-    let _e9 = workgroup_bounds(li_2, select(vec3(340282350000000000000000000000000000000f), p_2, has), select(vec3(-340282350000000000000000000000000000000f), p_2, has));
-    return _e9;
+fn point_box(p_2: vec3<f32>, has: bool) -> WorkgroupBox {
+    return WorkgroupBox(select(vec3(340282350000000000000000000000000000000f), p_2, has), select(vec3(-340282350000000000000000000000000000000f), p_2, has));
+}
+
+fn workgroup_box(li_2: u32, p_3: vec3<f32>, has_1: bool) -> WorkgroupBox {
+    let _e3 = point_box(p_3, has_1);
+    let _e6 = workgroup_bounds(li_2, _e3.lo, _e3.hi);
+    return _e6;
 }
 
 fn box_is_empty(b_4: WorkgroupBox) -> bool {
@@ -887,7 +892,7 @@ fn box_is_empty(b_4: WorkgroupBox) -> bool {
 }
 
 fn tile_subtree(s_3: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: u32) -> u32 {
-    var p_3: u32;
+    var p_4: u32;
     var b_5: u32;
     var local_19: bool;
     var local_20: bool;
@@ -898,14 +903,14 @@ fn tile_subtree(s_3: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: 
         return 0u;
     }
     let end_1 = bsh_nodes[_e8].next;
-    p_3 = at;
+    p_4 = at;
     let _e21 = bsh_next_leaf_box(BSH, _e8, end_1, t_1.lo, t_1.hi, t_1.w);
     b_5 = _e21;
     loop {
         let _e23 = b_5;
         if (_e23 != end_1) {
             if !(!(list)) {
-                let _e31 = p_3;
+                let _e31 = p_4;
                 local_20 = (_e31 < to);
             } else {
                 local_20 = true;
@@ -922,19 +927,19 @@ fn tile_subtree(s_3: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: 
         }
         {
             if list {
-                let _e39 = p_3;
+                let _e39 = p_4;
                 local_21 = (_e39 >= start_2);
             } else {
                 local_21 = false;
             }
             let _e42 = local_21;
             if _e42 {
-                let _e44 = p_3;
+                let _e44 = p_4;
                 let _e47 = b_5;
                 tile_list[(_e44 - start_2)] = _e47;
             }
-            let _e48 = p_3;
-            p_3 = (_e48 + 1u);
+            let _e48 = p_4;
+            p_4 = (_e48 + 1u);
         }
         continuing {
             let _e53 = b_5;
@@ -943,25 +948,25 @@ fn tile_subtree(s_3: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: 
             b_5 = _e60;
         }
     }
-    let _e61 = p_3;
+    let _e61 = p_4;
     return (_e61 - at);
 }
 
-fn tile_walk_begin(li_3: u32, x_7: vec3<f32>, w_6: f32, has_1: bool) -> TileWalk {
+fn tile_walk_begin(li_3: u32, x_7: vec3<f32>, w_6: f32, has_2: bool) -> TileWalk {
     var local_22: bool;
     var t_2: TileWalk;
     var s_4: u32;
     var sum_1: u32 = 0u;
     var s_5: u32 = 0u;
 
-    if has_1 {
+    if has_2 {
         local_22 = (w_6 >= 0f);
     } else {
         local_22 = false;
     }
     let _e12 = local_22;
     let _e14 = atomicMax((&tile_scale), select(0u, bitcast<u32>(w_6), _e12));
-    let _e15 = workgroup_box(li_3, x_7, has_1);
+    let _e15 = workgroup_box(li_3, x_7, has_2);
     let _e19 = workgroupUniformLoad((&tile_scale));
     t_2 = TileWalk(_e15.lo, _e15.hi, bitcast<f32>(_e19), 0u);
     let _e24 = box_is_empty(_e15);
@@ -1243,8 +1248,8 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
     } else {
         local_3 = false;
     }
-    let has_2 = local_3;
-    if has_2 {
+    let has_3 = local_3;
+    if has_3 {
         let _e65 = nn;
         n = (_e65 / vec3(sqrt(len2_)));
     }
@@ -1262,7 +1267,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
     let _e103 = pick_stream(_e102);
     h = _e103;
     hc = _e102;
-    let _e124 = tile_walk_begin(lid, x_11, _e79.w, has_2);
+    let _e124 = tile_walk_begin(lid, x_11, _e79.w, has_3);
     loop {
         let _e127 = start;
         if (_e127 < _e124.total) {
@@ -1282,7 +1287,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
                 {
                     let _e137 = j;
                     let b_7 = tile_list[_e137];
-                    if !(!(has_2)) {
+                    if !(!(has_3)) {
                         let _e146 = bsh_nodes[b_7];
                         let _e147 = r;
                         let _e148 = bsh_reaches(_e146, x_11, _e147, _e79);
@@ -1371,7 +1376,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
             start = (_e223 + TILE_LIST);
         }
     }
-    if !(has_2) {
+    if !(has_3) {
         if inside {
             textureStore(out_tex, texel_1, vec4(0f));
         }

@@ -607,14 +607,14 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_3: vec3<f32>, b_2: vec3<f32>, 
 
     let e1_ = (b_2 - a_3);
     let e2_ = (c_2 - a_3);
-    let p_9 = cross(d_3, e2_);
-    let det = dot(e1_, p_9);
+    let p_10 = cross(d_3, e2_);
+    let det = dot(e1_, p_10);
     if (abs(det) <= 0f) {
         return -1f;
     }
     let inv = (1f / det);
     let s_9 = (o_1 - a_3);
-    let u_3 = (dot(s_9, p_9) * inv);
+    let u_3 = (dot(s_9, p_10) * inv);
     if !((u_3 < 0f)) {
         local_13 = (u_3 > 1f);
     } else {
@@ -1044,9 +1044,9 @@ fn unproject_pixel(c0_: vec4<f32>, c1_: vec4<f32>, c2_: vec4<f32>, c3_: vec4<f32
     }
     let x_14 = ((((px + 0.5f) / width) * 2f) - 1f);
     let y_1 = (1f - (((py + 0.5f) / height) * 2f));
-    let p_10 = ((((c0_ * x_14) + (c1_ * y_1)) + (c2_ * depth_1)) + c3_);
-    let q_2 = vec3<f32>((p_10.x / p_10.w), (p_10.y / p_10.w), (p_10.z / p_10.w));
-    if (abs(p_10.w) > 0f) {
+    let p_11 = ((((c0_ * x_14) + (c1_ * y_1)) + (c2_ * depth_1)) + c3_);
+    let q_2 = vec3<f32>((p_11.x / p_11.w), (p_11.y / p_11.w), (p_11.z / p_11.w));
+    if (abs(p_11.w) > 0f) {
         let _e59 = finite3_(q_2);
         local_22 = _e59;
     } else {
@@ -1112,9 +1112,14 @@ fn workgroup_bounds(li_4: u32, lo_2: vec3<f32>, hi_2: vec3<f32>) -> WorkgroupBox
     return _e50;
 }
 
-fn workgroup_box(li_5: u32, p_7: vec3<f32>, has: bool) -> WorkgroupBox {
-    let _e9 = workgroup_bounds(li_5, select(vec3(340282350000000000000000000000000000000f), p_7, has), select(vec3(-340282350000000000000000000000000000000f), p_7, has));
-    return _e9;
+fn point_box(p_7: vec3<f32>, has: bool) -> WorkgroupBox {
+    return WorkgroupBox(select(vec3(340282350000000000000000000000000000000f), p_7, has), select(vec3(-340282350000000000000000000000000000000f), p_7, has));
+}
+
+fn workgroup_box(li_5: u32, p_8: vec3<f32>, has_1: bool) -> WorkgroupBox {
+    let _e3 = point_box(p_8, has_1);
+    let _e6 = workgroup_bounds(li_5, _e3.lo, _e3.hi);
+    return _e6;
 }
 
 fn box_is_empty(b_4: WorkgroupBox) -> bool {
@@ -1122,7 +1127,7 @@ fn box_is_empty(b_4: WorkgroupBox) -> bool {
 }
 
 fn tile_subtree(s_4: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: u32) -> u32 {
-    var p_8: u32;
+    var p_9: u32;
     var b_5: u32;
     var local_23: bool;
     var local_24: bool;
@@ -1133,14 +1138,14 @@ fn tile_subtree(s_4: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: 
         return 0u;
     }
     let end_1 = bsh_nodes[_e8].next;
-    p_8 = at;
+    p_9 = at;
     let _e21 = bsh_next_leaf_box(BSH, _e8, end_1, t_1.lo, t_1.hi, t_1.w);
     b_5 = _e21;
     loop {
         let _e23 = b_5;
         if (_e23 != end_1) {
             if !(!(list)) {
-                let _e31 = p_8;
+                let _e31 = p_9;
                 local_24 = (_e31 < to);
             } else {
                 local_24 = true;
@@ -1157,19 +1162,19 @@ fn tile_subtree(s_4: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: 
         }
         {
             if list {
-                let _e39 = p_8;
+                let _e39 = p_9;
                 local_25 = (_e39 >= start_2);
             } else {
                 local_25 = false;
             }
             let _e42 = local_25;
             if _e42 {
-                let _e44 = p_8;
+                let _e44 = p_9;
                 let _e47 = b_5;
                 tile_list[(_e44 - start_2)] = _e47;
             }
-            let _e48 = p_8;
-            p_8 = (_e48 + 1u);
+            let _e48 = p_9;
+            p_9 = (_e48 + 1u);
         }
         continuing {
             let _e53 = b_5;
@@ -1178,25 +1183,25 @@ fn tile_subtree(s_4: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: 
             b_5 = _e60;
         }
     }
-    let _e61 = p_8;
+    let _e61 = p_9;
     return (_e61 - at);
 }
 
-fn tile_walk_begin(li_6: u32, x_10: vec3<f32>, w_7: f32, has_1: bool) -> TileWalk {
+fn tile_walk_begin(li_6: u32, x_10: vec3<f32>, w_7: f32, has_2: bool) -> TileWalk {
     var local_26: bool;
     var t_2: TileWalk;
     var s_5: u32;
     var sum_1: u32 = 0u;
     var s_6: u32 = 0u;
 
-    if has_1 {
+    if has_2 {
         local_26 = (w_7 >= 0f);
     } else {
         local_26 = false;
     }
     let _e12 = local_26;
     let _e14 = atomicMax((&tile_scale), select(0u, bitcast<u32>(w_7), _e12));
-    let _e15 = workgroup_box(li_6, x_10, has_1);
+    let _e15 = workgroup_box(li_6, x_10, has_2);
     let _e19 = workgroupUniformLoad((&tile_scale));
     t_2 = TileWalk(_e15.lo, _e15.hi, bitcast<f32>(_e19), 0u);
     let _e24 = box_is_empty(_e15);
@@ -1451,8 +1456,8 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
     } else {
         local_3 = false;
     }
-    let has_2 = local_3;
-    if has_2 {
+    let has_3 = local_3;
+    if has_3 {
         let _e65 = nn;
         n = (_e65 / vec3(sqrt(len2_)));
     }
@@ -1471,7 +1476,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
     h = _e103;
     let _e113 = weighted_picks(_e102);
     picks = _e113;
-    let _e116 = tile_walk_begin(lid, x_15, _e79.w, has_2);
+    let _e116 = tile_walk_begin(lid, x_15, _e79.w, has_3);
     loop {
         let _e119 = start;
         if (_e119 < _e116.total) {
@@ -1491,7 +1496,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
                 {
                     let _e129 = j;
                     let b_7 = tile_list[_e129];
-                    if !(!(has_2)) {
+                    if !(!(has_3)) {
                         let _e138 = bsh_nodes[b_7];
                         let _e139 = r;
                         let _e140 = bsh_reaches(_e138, x_15, _e139, _e79);
@@ -1522,7 +1527,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
             start = (_e155 + TILE_LIST);
         }
     }
-    if !(has_2) {
+    if !(has_3) {
         if inside {
             textureStore(out_tex, texel_1, vec4(0f));
         }

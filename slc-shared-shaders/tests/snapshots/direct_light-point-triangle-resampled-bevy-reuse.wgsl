@@ -726,14 +726,14 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_4: vec3<f32>, 
 
     let e1_ = (b_4 - a_5);
     let e2_ = (c_7 - a_5);
-    let p_7 = cross(d_3, e2_);
-    let det = dot(e1_, p_7);
+    let p_8 = cross(d_3, e2_);
+    let det = dot(e1_, p_8);
     if (abs(det) <= 0f) {
         return -1f;
     }
     let inv = (1f / det);
     let s_12 = (o_1 - a_5);
-    let u_4 = (dot(s_12, p_7) * inv);
+    let u_4 = (dot(s_12, p_8) * inv);
     if !((u_4 < 0f)) {
         local_17 = (u_4 > 1f);
     } else {
@@ -1113,8 +1113,8 @@ fn light_range_scale(li_1: u32, x_7: vec3<f32>, r_9: vec3<f32>, rl_4: vec4<f32>)
 }
 
 fn surface_at(texel: vec2<i32>) -> vec4<f32> {
-    let p_8 = textureLoad(position_tex, texel, 0i);
-    return select(vec4(0f), vec4<f32>(p_8.xyz, 1f), (p_8.w > 0f));
+    let p_9 = textureLoad(position_tex, texel, 0i);
+    return select(vec4(0f), vec4<f32>(p_9.xyz, 1f), (p_9.w > 0f));
 }
 
 fn workgroup_bounds(li_2: u32, lo_2: vec3<f32>, hi_2: vec3<f32>) -> WorkgroupBox {
@@ -1157,9 +1157,14 @@ fn workgroup_bounds(li_2: u32, lo_2: vec3<f32>, hi_2: vec3<f32>) -> WorkgroupBox
     return _e50;
 }
 
-fn workgroup_box(li_3: u32, p_4: vec3<f32>, has: bool) -> WorkgroupBox {
-    let _e9 = workgroup_bounds(li_3, select(vec3(340282350000000000000000000000000000000f), p_4, has), select(vec3(-340282350000000000000000000000000000000f), p_4, has));
-    return _e9;
+fn point_box(p_4: vec3<f32>, has: bool) -> WorkgroupBox {
+    return WorkgroupBox(select(vec3(340282350000000000000000000000000000000f), p_4, has), select(vec3(-340282350000000000000000000000000000000f), p_4, has));
+}
+
+fn workgroup_box(li_3: u32, p_5: vec3<f32>, has_1: bool) -> WorkgroupBox {
+    let _e3 = point_box(p_5, has_1);
+    let _e6 = workgroup_bounds(li_3, _e3.lo, _e3.hi);
+    return _e6;
 }
 
 fn box_is_empty(b_6: WorkgroupBox) -> bool {
@@ -1167,7 +1172,7 @@ fn box_is_empty(b_6: WorkgroupBox) -> bool {
 }
 
 fn tile_subtree(s_3: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: u32) -> u32 {
-    var p_5: u32;
+    var p_6: u32;
     var b_7: u32;
     var local_26: bool;
     var local_27: bool;
@@ -1178,14 +1183,14 @@ fn tile_subtree(s_3: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: 
         return 0u;
     }
     let end_1 = bsh_nodes[_e8].next;
-    p_5 = at;
+    p_6 = at;
     let _e21 = bsh_next_leaf_box(BSH, _e8, end_1, t_1.lo, t_1.hi, t_1.w);
     b_7 = _e21;
     loop {
         let _e23 = b_7;
         if (_e23 != end_1) {
             if !(!(list)) {
-                let _e31 = p_5;
+                let _e31 = p_6;
                 local_27 = (_e31 < to);
             } else {
                 local_27 = true;
@@ -1202,19 +1207,19 @@ fn tile_subtree(s_3: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: 
         }
         {
             if list {
-                let _e39 = p_5;
+                let _e39 = p_6;
                 local_28 = (_e39 >= start_2);
             } else {
                 local_28 = false;
             }
             let _e42 = local_28;
             if _e42 {
-                let _e44 = p_5;
+                let _e44 = p_6;
                 let _e47 = b_7;
                 tile_list[(_e44 - start_2)] = _e47;
             }
-            let _e48 = p_5;
-            p_5 = (_e48 + 1u);
+            let _e48 = p_6;
+            p_6 = (_e48 + 1u);
         }
         continuing {
             let _e53 = b_7;
@@ -1223,25 +1228,25 @@ fn tile_subtree(s_3: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: 
             b_7 = _e60;
         }
     }
-    let _e61 = p_5;
+    let _e61 = p_6;
     return (_e61 - at);
 }
 
-fn tile_walk_begin(li_4: u32, x_8: vec3<f32>, w_9: f32, has_1: bool) -> TileWalk {
+fn tile_walk_begin(li_4: u32, x_8: vec3<f32>, w_9: f32, has_2: bool) -> TileWalk {
     var local_29: bool;
     var t_2: TileWalk;
     var s_4: u32;
     var sum_1: u32 = 0u;
     var s_5: u32 = 0u;
 
-    if has_1 {
+    if has_2 {
         local_29 = (w_9 >= 0f);
     } else {
         local_29 = false;
     }
     let _e12 = local_29;
     let _e14 = atomicMax((&tile_scale), select(0u, bitcast<u32>(w_9), _e12));
-    let _e15 = workgroup_box(li_4, x_8, has_1);
+    let _e15 = workgroup_box(li_4, x_8, has_2);
     let _e19 = workgroupUniformLoad((&tile_scale));
     t_2 = TileWalk(_e15.lo, _e15.hi, bitcast<f32>(_e19), 0u);
     let _e24 = box_is_empty(_e15);
@@ -1471,7 +1476,7 @@ fn reuse_domains(x_13: vec3<f32>, n_12: vec3<f32>, d_6: f32, h_2: u32, doms_1: p
     var nd: u32 = 0u;
     var hr: u32;
     var j_4: u32 = 0u;
-    var p_6: vec2<f32>;
+    var p_7: vec2<f32>;
     var local_33: bool;
     var local_34: bool;
     var local_35: bool;
@@ -1503,7 +1508,7 @@ fn reuse_domains(x_13: vec3<f32>, n_12: vec3<f32>, d_6: f32, h_2: u32, doms_1: p
             break;
         }
         {
-            p_6 = _e33.xy;
+            p_7 = _e33.xy;
             let _e46 = j_4;
             if (_e46 > 0u) {
                 let _e49 = hr;
@@ -1514,14 +1519,14 @@ fn reuse_domains(x_13: vec3<f32>, n_12: vec3<f32>, d_6: f32, h_2: u32, doms_1: p
                 let _e53 = hr;
                 let _e54 = pcg_hash(_e53);
                 hr = _e54;
-                let _e55 = p_6;
+                let _e55 = p_7;
                 let _e58 = reuse.radius;
                 let _e59 = hr;
                 let _e60 = xi_from_bits(_e59);
                 let _e61 = disk_offset(_e58, _e52, _e60);
-                p_6 = (_e55 + _e61);
+                p_7 = (_e55 + _e61);
             }
-            let _e63 = p_6;
+            let _e63 = p_7;
             let t_8 = vec2<i32>(round(_e63));
             if !((t_8.x < 0i)) {
                 local_33 = (t_8.y < 0i);
@@ -1828,14 +1833,14 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
     } else {
         local_3 = false;
     }
-    let has_2 = local_3;
-    if has_2 {
+    let has_3 = local_3;
+    if has_3 {
         let _e65 = nn;
         n = (_e65 / vec3(sqrt(len2_)));
     }
     let _e76 = n;
     r = _e76;
-    if has_2 {
+    if has_3 {
         let mr = textureLoad(metal_rough_tex, texel_1, 0i);
         let _e83 = textureLoad(base_color_tex, texel_1, 0i);
         let _e90 = view.eye;
@@ -1866,7 +1871,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
     let _e138 = pick_stream(_e137);
     h = _e138;
     hc = _e137;
-    let _e160 = tile_walk_begin(lid, x_17, _e114.w, has_2);
+    let _e160 = tile_walk_begin(lid, x_17, _e114.w, has_3);
     loop {
         let _e163 = start;
         if (_e163 < _e160.total) {
@@ -1886,7 +1891,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
                 {
                     let _e173 = j;
                     let b_10 = tile_list[_e173];
-                    if !(!(has_2)) {
+                    if !(!(has_3)) {
                         let _e182 = bsh_nodes[b_10];
                         let _e183 = r;
                         let _e184 = bsh_reaches(_e182, x_17, _e183, _e114);
@@ -1977,7 +1982,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
             start = (_e259 + TILE_LIST);
         }
     }
-    if !(has_2) {
+    if !(has_3) {
         if inside {
             textureStore(out_tex, texel_1, vec4(0f));
             let _e270 = view.width;

@@ -635,14 +635,14 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_4: vec3<f32>, 
 
     let e1_ = (b_4 - a_5);
     let e2_ = (c_7 - a_5);
-    let p_4 = cross(d_3, e2_);
-    let det = dot(e1_, p_4);
+    let p_5 = cross(d_3, e2_);
+    let det = dot(e1_, p_5);
     if (abs(det) <= 0f) {
         return -1f;
     }
     let inv = (1f / det);
     let s_10 = (o_1 - a_5);
-    let u_3 = (dot(s_10, p_4) * inv);
+    let u_3 = (dot(s_10, p_5) * inv);
     if !((u_3 < 0f)) {
         local_16 = (u_3 > 1f);
     } else {
@@ -1000,8 +1000,8 @@ fn light_range_scale(li_1: u32, x_7: vec3<f32>, r_8: vec3<f32>, rl_4: vec4<f32>)
 }
 
 fn surface_at(texel: vec2<i32>) -> vec4<f32> {
-    let p_5 = textureLoad(position_tex, texel, 0i);
-    return select(vec4(0f), vec4<f32>(p_5.xyz, 1f), (p_5.w > 0f));
+    let p_6 = textureLoad(position_tex, texel, 0i);
+    return select(vec4(0f), vec4<f32>(p_6.xyz, 1f), (p_6.w > 0f));
 }
 
 fn workgroup_bounds(li_2: u32, lo_2: vec3<f32>, hi_2: vec3<f32>) -> WorkgroupBox {
@@ -1044,9 +1044,14 @@ fn workgroup_bounds(li_2: u32, lo_2: vec3<f32>, hi_2: vec3<f32>) -> WorkgroupBox
     return _e50;
 }
 
-fn workgroup_box(li_3: u32, p_2: vec3<f32>, has: bool) -> WorkgroupBox {
-    let _e9 = workgroup_bounds(li_3, select(vec3(340282350000000000000000000000000000000f), p_2, has), select(vec3(-340282350000000000000000000000000000000f), p_2, has));
-    return _e9;
+fn point_box(p_2: vec3<f32>, has: bool) -> WorkgroupBox {
+    return WorkgroupBox(select(vec3(340282350000000000000000000000000000000f), p_2, has), select(vec3(-340282350000000000000000000000000000000f), p_2, has));
+}
+
+fn workgroup_box(li_3: u32, p_3: vec3<f32>, has_1: bool) -> WorkgroupBox {
+    let _e3 = point_box(p_3, has_1);
+    let _e6 = workgroup_bounds(li_3, _e3.lo, _e3.hi);
+    return _e6;
 }
 
 fn box_is_empty(b_6: WorkgroupBox) -> bool {
@@ -1054,7 +1059,7 @@ fn box_is_empty(b_6: WorkgroupBox) -> bool {
 }
 
 fn tile_subtree(s_3: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: u32) -> u32 {
-    var p_3: u32;
+    var p_4: u32;
     var b_7: u32;
     var local_24: bool;
     var local_25: bool;
@@ -1065,14 +1070,14 @@ fn tile_subtree(s_3: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: 
         return 0u;
     }
     let end_1 = bsh_nodes[_e8].next;
-    p_3 = at;
+    p_4 = at;
     let _e21 = bsh_next_leaf_box(BSH, _e8, end_1, t_1.lo, t_1.hi, t_1.w);
     b_7 = _e21;
     loop {
         let _e23 = b_7;
         if (_e23 != end_1) {
             if !(!(list)) {
-                let _e31 = p_3;
+                let _e31 = p_4;
                 local_25 = (_e31 < to);
             } else {
                 local_25 = true;
@@ -1089,19 +1094,19 @@ fn tile_subtree(s_3: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: 
         }
         {
             if list {
-                let _e39 = p_3;
+                let _e39 = p_4;
                 local_26 = (_e39 >= start_2);
             } else {
                 local_26 = false;
             }
             let _e42 = local_26;
             if _e42 {
-                let _e44 = p_3;
+                let _e44 = p_4;
                 let _e47 = b_7;
                 tile_list[(_e44 - start_2)] = _e47;
             }
-            let _e48 = p_3;
-            p_3 = (_e48 + 1u);
+            let _e48 = p_4;
+            p_4 = (_e48 + 1u);
         }
         continuing {
             let _e53 = b_7;
@@ -1110,25 +1115,25 @@ fn tile_subtree(s_3: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: 
             b_7 = _e60;
         }
     }
-    let _e61 = p_3;
+    let _e61 = p_4;
     return (_e61 - at);
 }
 
-fn tile_walk_begin(li_4: u32, x_8: vec3<f32>, w_7: f32, has_1: bool) -> TileWalk {
+fn tile_walk_begin(li_4: u32, x_8: vec3<f32>, w_7: f32, has_2: bool) -> TileWalk {
     var local_27: bool;
     var t_2: TileWalk;
     var s_4: u32;
     var sum_1: u32 = 0u;
     var s_5: u32 = 0u;
 
-    if has_1 {
+    if has_2 {
         local_27 = (w_7 >= 0f);
     } else {
         local_27 = false;
     }
     let _e12 = local_27;
     let _e14 = atomicMax((&tile_scale), select(0u, bitcast<u32>(w_7), _e12));
-    let _e15 = workgroup_box(li_4, x_8, has_1);
+    let _e15 = workgroup_box(li_4, x_8, has_2);
     let _e19 = workgroupUniformLoad((&tile_scale));
     t_2 = TileWalk(_e15.lo, _e15.hi, bitcast<f32>(_e19), 0u);
     let _e24 = box_is_empty(_e15);
@@ -1410,14 +1415,14 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
     } else {
         local_3 = false;
     }
-    let has_2 = local_3;
-    if has_2 {
+    let has_3 = local_3;
+    if has_3 {
         let _e65 = nn;
         n = (_e65 / vec3(sqrt(len2_)));
     }
     let _e76 = n;
     r = _e76;
-    if has_2 {
+    if has_3 {
         let mr = textureLoad(metal_rough_tex, texel_1, 0i);
         let _e83 = textureLoad(base_color_tex, texel_1, 0i);
         let _e90 = view.eye;
@@ -1448,7 +1453,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
     let _e138 = pick_stream(_e137);
     h = _e138;
     hc = _e137;
-    let _e159 = tile_walk_begin(lid, x_13, _e114.w, has_2);
+    let _e159 = tile_walk_begin(lid, x_13, _e114.w, has_3);
     loop {
         let _e162 = start;
         if (_e162 < _e159.total) {
@@ -1468,7 +1473,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
                 {
                     let _e172 = j;
                     let b_9 = tile_list[_e172];
-                    if !(!(has_2)) {
+                    if !(!(has_3)) {
                         let _e181 = bsh_nodes[b_9];
                         let _e182 = r;
                         let _e183 = bsh_reaches(_e181, x_13, _e182, _e114);
@@ -1555,7 +1560,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
             start = (_e254 + TILE_LIST);
         }
     }
-    if !(has_2) {
+    if !(has_3) {
         if inside {
             textureStore(out_tex, texel_1, vec4(0f));
         }

@@ -732,14 +732,14 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_4: vec3<f32>, 
 
     let e1_ = (b_4 - a_5);
     let e2_ = (c_5 - a_5);
-    let p_9 = cross(d_3, e2_);
-    let det = dot(e1_, p_9);
+    let p_10 = cross(d_3, e2_);
+    let det = dot(e1_, p_10);
     if (abs(det) <= 0f) {
         return -1f;
     }
     let inv_1 = (1f / det);
     let s_9 = (o_1 - a_5);
-    let u_3 = (dot(s_9, p_9) * inv_1);
+    let u_3 = (dot(s_9, p_10) * inv_1);
     if !((u_3 < 0f)) {
         local_17 = (u_3 > 1f);
     } else {
@@ -1157,8 +1157,8 @@ fn weighted_offer(picks_2: ptr<function, WeightedPicks>, li_3: u32, w_7: f32) {
 }
 
 fn surface_at(texel: vec2<i32>) -> vec4<f32> {
-    let p_10 = textureLoad(position_tex, texel, 0i);
-    return select(vec4(0f), vec4<f32>(p_10.xyz, 1f), (p_10.w > 0f));
+    let p_11 = textureLoad(position_tex, texel, 0i);
+    return select(vec4(0f), vec4<f32>(p_11.xyz, 1f), (p_11.w > 0f));
 }
 
 fn workgroup_bounds(li_4: u32, lo_2: vec3<f32>, hi_2: vec3<f32>) -> WorkgroupBox {
@@ -1201,9 +1201,14 @@ fn workgroup_bounds(li_4: u32, lo_2: vec3<f32>, hi_2: vec3<f32>) -> WorkgroupBox
     return _e50;
 }
 
-fn workgroup_box(li_5: u32, p_7: vec3<f32>, has: bool) -> WorkgroupBox {
-    let _e9 = workgroup_bounds(li_5, select(vec3(340282350000000000000000000000000000000f), p_7, has), select(vec3(-340282350000000000000000000000000000000f), p_7, has));
-    return _e9;
+fn point_box(p_7: vec3<f32>, has: bool) -> WorkgroupBox {
+    return WorkgroupBox(select(vec3(340282350000000000000000000000000000000f), p_7, has), select(vec3(-340282350000000000000000000000000000000f), p_7, has));
+}
+
+fn workgroup_box(li_5: u32, p_8: vec3<f32>, has_1: bool) -> WorkgroupBox {
+    let _e3 = point_box(p_8, has_1);
+    let _e6 = workgroup_bounds(li_5, _e3.lo, _e3.hi);
+    return _e6;
 }
 
 fn box_is_empty(b_6: WorkgroupBox) -> bool {
@@ -1211,7 +1216,7 @@ fn box_is_empty(b_6: WorkgroupBox) -> bool {
 }
 
 fn tile_subtree(s_4: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: u32) -> u32 {
-    var p_8: u32;
+    var p_9: u32;
     var b_7: u32;
     var local_25: bool;
     var local_26: bool;
@@ -1222,14 +1227,14 @@ fn tile_subtree(s_4: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: 
         return 0u;
     }
     let end_1 = bsh_nodes[_e8].next;
-    p_8 = at;
+    p_9 = at;
     let _e21 = bsh_next_leaf_box(BSH, _e8, end_1, t_1.lo, t_1.hi, t_1.w);
     b_7 = _e21;
     loop {
         let _e23 = b_7;
         if (_e23 != end_1) {
             if !(!(list)) {
-                let _e31 = p_8;
+                let _e31 = p_9;
                 local_26 = (_e31 < to);
             } else {
                 local_26 = true;
@@ -1246,19 +1251,19 @@ fn tile_subtree(s_4: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: 
         }
         {
             if list {
-                let _e39 = p_8;
+                let _e39 = p_9;
                 local_27 = (_e39 >= start_2);
             } else {
                 local_27 = false;
             }
             let _e42 = local_27;
             if _e42 {
-                let _e44 = p_8;
+                let _e44 = p_9;
                 let _e47 = b_7;
                 tile_list[(_e44 - start_2)] = _e47;
             }
-            let _e48 = p_8;
-            p_8 = (_e48 + 1u);
+            let _e48 = p_9;
+            p_9 = (_e48 + 1u);
         }
         continuing {
             let _e53 = b_7;
@@ -1267,25 +1272,25 @@ fn tile_subtree(s_4: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: 
             b_7 = _e60;
         }
     }
-    let _e61 = p_8;
+    let _e61 = p_9;
     return (_e61 - at);
 }
 
-fn tile_walk_begin(li_6: u32, x_10: vec3<f32>, w_8: f32, has_1: bool) -> TileWalk {
+fn tile_walk_begin(li_6: u32, x_10: vec3<f32>, w_8: f32, has_2: bool) -> TileWalk {
     var local_28: bool;
     var t_2: TileWalk;
     var s_5: u32;
     var sum_1: u32 = 0u;
     var s_6: u32 = 0u;
 
-    if has_1 {
+    if has_2 {
         local_28 = (w_8 >= 0f);
     } else {
         local_28 = false;
     }
     let _e12 = local_28;
     let _e14 = atomicMax((&tile_scale), select(0u, bitcast<u32>(w_8), _e12));
-    let _e15 = workgroup_box(li_6, x_10, has_1);
+    let _e15 = workgroup_box(li_6, x_10, has_2);
     let _e19 = workgroupUniformLoad((&tile_scale));
     t_2 = TileWalk(_e15.lo, _e15.hi, bitcast<f32>(_e19), 0u);
     let _e24 = box_is_empty(_e15);
@@ -1558,14 +1563,14 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
     } else {
         local_3 = false;
     }
-    let has_2 = local_3;
-    if has_2 {
+    let has_3 = local_3;
+    if has_3 {
         let _e65 = nn;
         n = (_e65 / vec3(sqrt(len2_1)));
     }
     let _e76 = n;
     r = _e76;
-    if has_2 {
+    if has_3 {
         let mr = textureLoad(metal_rough_tex, texel_1, 0i);
         let _e83 = textureLoad(base_color_tex, texel_1, 0i);
         let _e90 = view.eye;
@@ -1598,7 +1603,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
     h = _e140;
     let _e150 = weighted_picks(_e139);
     picks = _e150;
-    let _e153 = tile_walk_begin(lid, x_14, _e116.w, has_2);
+    let _e153 = tile_walk_begin(lid, x_14, _e116.w, has_3);
     loop {
         let _e156 = start;
         if (_e156 < _e153.total) {
@@ -1618,7 +1623,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
                 {
                     let _e166 = j;
                     let b_9 = tile_list[_e166];
-                    if !(!(has_2)) {
+                    if !(!(has_3)) {
                         let _e175 = bsh_nodes[b_9];
                         let _e176 = r;
                         let _e177 = bsh_reaches(_e175, x_14, _e176, _e116);
@@ -1649,7 +1654,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
             start = (_e192 + TILE_LIST);
         }
     }
-    if !(has_2) {
+    if !(has_3) {
         if inside {
             textureStore(out_tex, texel_1, vec4(0f));
             textureStore(specular_tex, texel_1, vec4(0f));

@@ -313,9 +313,14 @@ fn workgroup_bounds(li_1: u32, lo: vec3<f32>, hi: vec3<f32>) -> WorkgroupBox {
     return _e50;
 }
 
-fn workgroup_box(li_2: u32, p: vec3<f32>, has: bool) -> WorkgroupBox {
-    let _e9 = workgroup_bounds(li_2, select(vec3(340282350000000000000000000000000000000f), p, has), select(vec3(-340282350000000000000000000000000000000f), p, has));
-    return _e9;
+fn point_box(p: vec3<f32>, has: bool) -> WorkgroupBox {
+    return WorkgroupBox(select(vec3(340282350000000000000000000000000000000f), p, has), select(vec3(-340282350000000000000000000000000000000f), p, has));
+}
+
+fn workgroup_box(li_2: u32, p_1: vec3<f32>, has_1: bool) -> WorkgroupBox {
+    let _e3 = point_box(p_1, has_1);
+    let _e6 = workgroup_bounds(li_2, _e3.lo, _e3.hi);
+    return _e6;
 }
 
 fn box_is_empty(b: WorkgroupBox) -> bool {
@@ -323,8 +328,8 @@ fn box_is_empty(b: WorkgroupBox) -> bool {
 }
 
 fn surface_at(texel: vec2<i32>) -> vec4<f32> {
-    let p_4 = textureLoad(position_tex, texel, 0i);
-    return select(vec4(0f), vec4<f32>(p_4.xyz, 1f), (p_4.w > 0f));
+    let p_5 = textureLoad(position_tex, texel, 0i);
+    return select(vec4(0f), vec4<f32>(p_5.xyz, 1f), (p_5.w > 0f));
 }
 
 fn gbuffer_at(i: u32) -> GbTexel {
@@ -362,18 +367,18 @@ fn near_cull_r2_of(slot_1: u32, near_r2_3: f32) -> f32 {
 }
 
 fn load_receiver(li_3: u32, pix: u32, inside: bool) -> WorkgroupBox {
-    var p_1: vec4<f32> = vec4(0f);
+    var p_2: vec4<f32> = vec4(0f);
     var local_7: bool;
 
     if inside {
         let _e6 = gbuffer_at(pix);
-        p_1 = _e6.position;
+        p_2 = _e6.position;
         nrm = _e6.normal.xyz;
     }
-    let _e12 = p_1;
+    let _e12 = p_2;
     pos = _e12.xyz;
     if inside {
-        let _e18 = p_1.w;
+        let _e18 = p_2.w;
         local_7 = (_e18 > 0f);
     } else {
         local_7 = false;
@@ -405,78 +410,77 @@ fn quarter_boxes(li_4: u32, lid_1: vec3<u32>) {
     var x: u32;
 
     quarter_bit = (1u << ((QUARTER_SHIFT + select(0u, 1u, (lid_1.x >= HALF))) + select(0u, 2u, (lid_1.y >= HALF))));
-    let _e25 = pos;
-    let _e27 = valid;
-    wg_lo[li_4] = select(vec3(340282350000000000000000000000000000000f), _e25, _e27);
-    let _e34 = pos;
-    let _e36 = valid;
-    wg_hi[li_4] = select(vec3(-340282350000000000000000000000000000000f), _e34, _e36);
+    let _e21 = pos;
+    let _e23 = valid;
+    let _e24 = point_box(_e21, _e23);
+    wg_lo[li_4] = _e24.lo;
+    wg_hi[li_4] = _e24.hi;
     workgroupBarrier();
     if (li_4 < 4u) {
         let x0_ = ((li_4 % 2u) * HALF);
         let y0_ = ((li_4 / 2u) * HALF);
         y = y0_;
         loop {
-            let _e55 = y;
-            if (_e55 < min((y0_ + HALF), TILE)) {
+            let _e48 = y;
+            if (_e48 < min((y0_ + HALF), TILE)) {
             } else {
                 break;
             }
             {
                 x = x0_;
                 loop {
-                    let _e62 = x;
-                    if (_e62 < min((x0_ + HALF), TILE)) {
+                    let _e55 = x;
+                    if (_e55 < min((x0_ + HALF), TILE)) {
                     } else {
                         break;
                     }
                     {
-                        let _e68 = lo_1;
-                        let _e70 = y;
-                        let _e73 = x;
-                        let _e76 = wg_lo[((_e70 * TILE) + _e73)];
-                        lo_1 = min(_e68, _e76);
-                        let _e78 = hi_1;
-                        let _e80 = y;
-                        let _e83 = x;
-                        let _e86 = wg_hi[((_e80 * TILE) + _e83)];
-                        hi_1 = max(_e78, _e86);
+                        let _e61 = lo_1;
+                        let _e63 = y;
+                        let _e66 = x;
+                        let _e69 = wg_lo[((_e63 * TILE) + _e66)];
+                        lo_1 = min(_e61, _e69);
+                        let _e71 = hi_1;
+                        let _e73 = y;
+                        let _e76 = x;
+                        let _e79 = wg_hi[((_e73 * TILE) + _e76)];
+                        hi_1 = max(_e71, _e79);
                     }
                     continuing {
-                        let _e89 = x;
-                        x = (_e89 + 1u);
+                        let _e82 = x;
+                        x = (_e82 + 1u);
                     }
                 }
             }
             continuing {
-                let _e92 = y;
-                y = (_e92 + 1u);
+                let _e85 = y;
+                y = (_e85 + 1u);
             }
         }
-        let _e96 = lo_1;
-        quarter_lo[li_4] = _e96;
-        let _e99 = hi_1;
-        quarter_hi[li_4] = _e99;
+        let _e89 = lo_1;
+        quarter_lo[li_4] = _e89;
+        let _e92 = hi_1;
+        quarter_hi[li_4] = _e92;
     }
     workgroupBarrier();
     return;
 }
 
-fn quarter_meets(q: u32, p_2: vec3<f32>, radius: f32) -> u32 {
+fn quarter_meets(q: u32, p_3: vec3<f32>, radius: f32) -> u32 {
     let lo_3 = quarter_lo[q];
     let hi_3 = quarter_hi[q];
     if (lo_3.x > hi_3.x) {
         return 0u;
     }
-    let _e18 = sphere_overlaps_aabb(p_2, radius, lo_3, hi_3);
+    let _e18 = sphere_overlaps_aabb(p_3, radius, lo_3, hi_3);
     return select(0u, (1u << (QUARTER_SHIFT + q)), _e18);
 }
 
-fn list_entry(slot_3: u32, p_3: vec3<f32>, radius_1: f32) -> u32 {
-    let _e4 = quarter_meets(0u, p_3, radius_1);
-    let _e7 = quarter_meets(1u, p_3, radius_1);
-    let _e10 = quarter_meets(2u, p_3, radius_1);
-    let _e13 = quarter_meets(3u, p_3, radius_1);
+fn list_entry(slot_3: u32, p_4: vec3<f32>, radius_1: f32) -> u32 {
+    let _e4 = quarter_meets(0u, p_4, radius_1);
+    let _e7 = quarter_meets(1u, p_4, radius_1);
+    let _e10 = quarter_meets(2u, p_4, radius_1);
+    let _e13 = quarter_meets(3u, p_4, radius_1);
     return ((((slot_3 | _e4) | _e7) | _e10) | _e13);
 }
 

@@ -342,14 +342,19 @@ fn workgroup_bounds(li_1: u32, lo: vec3<f32>, hi: vec3<f32>) -> WorkgroupBox {
     return _e50;
 }
 
-fn workgroup_box(li_2: u32, p: vec3<f32>, has: bool) -> WorkgroupBox {
-    let _e9 = workgroup_bounds(li_2, select(vec3(340282350000000000000000000000000000000f), p, has), select(vec3(-340282350000000000000000000000000000000f), p, has));
-    return _e9;
+fn point_box(p: vec3<f32>, has: bool) -> WorkgroupBox {
+    return WorkgroupBox(select(vec3(340282350000000000000000000000000000000f), p, has), select(vec3(-340282350000000000000000000000000000000f), p, has));
+}
+
+fn workgroup_box(li_2: u32, p_1: vec3<f32>, has_1: bool) -> WorkgroupBox {
+    let _e3 = point_box(p_1, has_1);
+    let _e6 = workgroup_bounds(li_2, _e3.lo, _e3.hi);
+    return _e6;
 }
 
 fn surface_at(texel: vec2<i32>) -> vec4<f32> {
-    let p_2 = textureLoad(position_tex, texel, 0i);
-    return select(vec4(0f), vec4<f32>(p_2.xyz, 1f), (p_2.w > 0f));
+    let p_3 = textureLoad(position_tex, texel, 0i);
+    return select(vec4(0f), vec4<f32>(p_3.xyz, 1f), (p_3.w > 0f));
 }
 
 fn gbuffer_at(i: u32) -> GbTexel {
@@ -403,18 +408,18 @@ fn glossy_term(g: Glossy, l_4: GpuLight, n_3: vec3<f32>, v_5: vec3<f32>, t: f32)
 }
 
 fn load_receiver(li_3: u32, pix: u32, inside: bool) -> WorkgroupBox {
-    var p_1: vec4<f32> = vec4(0f);
+    var p_2: vec4<f32> = vec4(0f);
     var local_7: bool;
 
     if inside {
         let _e6 = gbuffer_at(pix);
-        p_1 = _e6.position;
+        p_2 = _e6.position;
         nrm = _e6.normal.xyz;
     }
-    let _e12 = p_1;
+    let _e12 = p_2;
     pos = _e12.xyz;
     if inside {
-        let _e18 = p_1.w;
+        let _e18 = p_2.w;
         local_7 = (_e18 > 0f);
     } else {
         local_7 = false;

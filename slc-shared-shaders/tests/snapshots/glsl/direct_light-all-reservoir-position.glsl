@@ -902,8 +902,8 @@ Connection connect_traced(uint li, vec3 x_10, vec3 n_9, vec3 ng_2, float s_2, fl
 }
 
 vec4 surface_at(ivec2 texel) {
-    vec4 p_4 = texelFetch(_group_0_binding_1_cs, texel, 0);
-    return ((p_4.w > 0.0) ? vec4(p_4.xyz, 1.0) : vec4(0.0));
+    vec4 p_5 = texelFetch(_group_0_binding_1_cs, texel, 0);
+    return ((p_5.w > 0.0) ? vec4(p_5.xyz, 1.0) : vec4(0.0));
 }
 
 WorkgroupBox workgroup_bounds(uint li_1, vec3 lo_5, vec3 hi_5) {
@@ -953,9 +953,14 @@ WorkgroupBox workgroup_bounds(uint li_1, vec3 lo_5, vec3 hi_5) {
     return _e50;
 }
 
-WorkgroupBox workgroup_box(uint li_2, vec3 p_2, bool has) {
-    WorkgroupBox _e9 = workgroup_bounds(li_2, (has ? p_2 : vec3(3.4028235e38)), (has ? p_2 : vec3(-3.4028235e38)));
-    return _e9;
+WorkgroupBox point_box(vec3 p_2, bool has) {
+    return WorkgroupBox((has ? p_2 : vec3(3.4028235e38)), (has ? p_2 : vec3(-3.4028235e38)));
+}
+
+WorkgroupBox workgroup_box(uint li_2, vec3 p_3, bool has_1) {
+    WorkgroupBox _e3 = point_box(p_3, has_1);
+    WorkgroupBox _e6 = workgroup_bounds(li_2, _e3.lo, _e3.hi);
+    return _e6;
 }
 
 bool box_is_empty(WorkgroupBox b_6) {
@@ -963,7 +968,7 @@ bool box_is_empty(WorkgroupBox b_6) {
 }
 
 uint tile_subtree(uint s_3, TileWalk t_2, bool list, uint at_1, uint start_3, uint to) {
-    uint p_3 = 0u;
+    uint p_4 = 0u;
     uint b_7 = 0u;
     bool local_16 = false;
     bool local_17 = false;
@@ -973,7 +978,7 @@ uint tile_subtree(uint s_3, TileWalk t_2, bool list, uint at_1, uint start_3, ui
         return 0u;
     }
     uint end_1 = _group_1_binding_4_cs[_e8].next;
-    p_3 = at_1;
+    p_4 = at_1;
     uint _e21 = bsh_next_leaf_box(BSH, _e8, end_1, t_2.lo, t_2.hi, t_2.w);
     b_7 = _e21;
     bool loop_init_1 = true;
@@ -988,7 +993,7 @@ uint tile_subtree(uint s_3, TileWalk t_2, bool list, uint at_1, uint start_3, ui
         uint _e23 = b_7;
         if ((_e23 != end_1)) {
             if (!(!(list))) {
-                uint _e31 = p_3;
+                uint _e31 = p_4;
                 local_17 = (_e31 < to);
             } else {
                 local_17 = true;
@@ -1005,39 +1010,39 @@ uint tile_subtree(uint s_3, TileWalk t_2, bool list, uint at_1, uint start_3, ui
         }
         {
             if (list) {
-                uint _e39 = p_3;
+                uint _e39 = p_4;
                 local_18 = (_e39 >= start_3);
             } else {
                 local_18 = false;
             }
             bool _e42 = local_18;
             if (_e42) {
-                uint _e44 = p_3;
+                uint _e44 = p_4;
                 uint _e47 = b_7;
                 tile_list[(_e44 - start_3)] = _e47;
             }
-            uint _e48 = p_3;
-            p_3 = (_e48 + 1u);
+            uint _e48 = p_4;
+            p_4 = (_e48 + 1u);
         }
     }
-    uint _e61 = p_3;
+    uint _e61 = p_4;
     return (_e61 - at_1);
 }
 
-TileWalk tile_walk_begin(uint li_3, vec3 x_11, float w_7, bool has_1) {
+TileWalk tile_walk_begin(uint li_3, vec3 x_11, float w_7, bool has_2) {
     bool local_19 = false;
     TileWalk t_3 = TileWalk(vec3(0.0), vec3(0.0), 0.0, 0u);
     uint s_4 = 0u;
     uint sum = 0u;
     uint s_5 = 0u;
-    if (has_1) {
+    if (has_2) {
         local_19 = (w_7 >= 0.0);
     } else {
         local_19 = false;
     }
     bool _e12 = local_19;
     uint _e14 = atomicMax(tile_scale, (_e12 ? floatBitsToUint(w_7) : 0u));
-    WorkgroupBox _e15 = workgroup_box(li_3, x_11, has_1);
+    WorkgroupBox _e15 = workgroup_box(li_3, x_11, has_2);
     memoryBarrierShared();
     barrier();
     uint _e19 = tile_scale;
@@ -1248,8 +1253,8 @@ void main() {
     } else {
         local_3 = false;
     }
-    bool has_2 = local_3;
-    if (has_2) {
+    bool has_3 = local_3;
+    if (has_3) {
         vec3 _e65 = nn;
         n = (_e65 / vec3(sqrt(len2_)));
     }
@@ -1268,7 +1273,7 @@ void main() {
     h = _e103;
     picks.n = 0u;
     hr = _e102;
-    TileWalk _e118 = tile_walk_begin(lid, x_15, _e79.w, has_2);
+    TileWalk _e118 = tile_walk_begin(lid, x_15, _e79.w, has_3);
     bool loop_init_5 = true;
     while(true) {
         if (!loop_init_5) {
@@ -1300,7 +1305,7 @@ void main() {
                 {
                     uint _e131 = j;
                     uint b_10 = tile_list[_e131];
-                    if (!(!(has_2))) {
+                    if (!(!(has_3))) {
                         BshNode _e140 = _group_1_binding_4_cs[b_10];
                         vec3 _e141 = r;
                         bool _e142 = bsh_reaches(_e140, x_15, _e141, _e79);
@@ -1320,7 +1325,7 @@ void main() {
             barrier();
         }
     }
-    if (!(has_2)) {
+    if (!(has_3)) {
         if (inside) {
             imageStore(_group_0_binding_3_cs, texel_1, vec4(0.0));
         }

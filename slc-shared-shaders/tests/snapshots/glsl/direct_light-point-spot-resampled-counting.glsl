@@ -476,14 +476,14 @@ float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_3, vec3 b_2, vec3 c_4, float t_min
     bool local_13 = false;
     vec3 e1_ = (b_2 - a_3);
     vec3 e2_ = (c_4 - a_3);
-    vec3 p_4 = cross(d_3, e2_);
-    float det = dot(e1_, p_4);
+    vec3 p_5 = cross(d_3, e2_);
+    float det = dot(e1_, p_5);
     if ((abs(det) <= 0.0)) {
         return -1.0;
     }
     float inv = (1.0 / det);
     vec3 s_10 = (o_1 - a_3);
-    float u_3 = (dot(s_10, p_4) * inv);
+    float u_3 = (dot(s_10, p_5) * inv);
     if (!((u_3 < 0.0))) {
         local_11 = (u_3 > 1.0);
     } else {
@@ -831,8 +831,8 @@ Connection connect_traced(uint li, vec3 x_6, vec3 n_3, vec3 ng_2, float s_2, flo
 }
 
 vec4 surface_at(ivec2 texel) {
-    vec4 p_5 = texelFetch(_group_0_binding_1_cs, texel, 0);
-    return ((p_5.w > 0.0) ? vec4(p_5.xyz, 1.0) : vec4(0.0));
+    vec4 p_6 = texelFetch(_group_0_binding_1_cs, texel, 0);
+    return ((p_6.w > 0.0) ? vec4(p_6.xyz, 1.0) : vec4(0.0));
 }
 
 WorkgroupBox workgroup_bounds(uint li_1, vec3 lo_2, vec3 hi_2) {
@@ -882,9 +882,14 @@ WorkgroupBox workgroup_bounds(uint li_1, vec3 lo_2, vec3 hi_2) {
     return _e50;
 }
 
-WorkgroupBox workgroup_box(uint li_2, vec3 p_2, bool has) {
-    WorkgroupBox _e9 = workgroup_bounds(li_2, (has ? p_2 : vec3(3.4028235e38)), (has ? p_2 : vec3(-3.4028235e38)));
-    return _e9;
+WorkgroupBox point_box(vec3 p_2, bool has) {
+    return WorkgroupBox((has ? p_2 : vec3(3.4028235e38)), (has ? p_2 : vec3(-3.4028235e38)));
+}
+
+WorkgroupBox workgroup_box(uint li_2, vec3 p_3, bool has_1) {
+    WorkgroupBox _e3 = point_box(p_3, has_1);
+    WorkgroupBox _e6 = workgroup_bounds(li_2, _e3.lo, _e3.hi);
+    return _e6;
 }
 
 bool box_is_empty(WorkgroupBox b_4) {
@@ -892,7 +897,7 @@ bool box_is_empty(WorkgroupBox b_4) {
 }
 
 uint tile_subtree(uint s_3, TileWalk t_1, bool list, uint at, uint start_2, uint to) {
-    uint p_3 = 0u;
+    uint p_4 = 0u;
     uint b_5 = 0u;
     bool local_19 = false;
     bool local_20 = false;
@@ -902,7 +907,7 @@ uint tile_subtree(uint s_3, TileWalk t_1, bool list, uint at, uint start_2, uint
         return 0u;
     }
     uint end_1 = _group_1_binding_4_cs[_e8].next;
-    p_3 = at;
+    p_4 = at;
     uint _e21 = bsh_next_leaf_box(BSH, _e8, end_1, t_1.lo, t_1.hi, t_1.w);
     b_5 = _e21;
     bool loop_init_2 = true;
@@ -917,7 +922,7 @@ uint tile_subtree(uint s_3, TileWalk t_1, bool list, uint at, uint start_2, uint
         uint _e23 = b_5;
         if ((_e23 != end_1)) {
             if (!(!(list))) {
-                uint _e31 = p_3;
+                uint _e31 = p_4;
                 local_20 = (_e31 < to);
             } else {
                 local_20 = true;
@@ -934,39 +939,39 @@ uint tile_subtree(uint s_3, TileWalk t_1, bool list, uint at, uint start_2, uint
         }
         {
             if (list) {
-                uint _e39 = p_3;
+                uint _e39 = p_4;
                 local_21 = (_e39 >= start_2);
             } else {
                 local_21 = false;
             }
             bool _e42 = local_21;
             if (_e42) {
-                uint _e44 = p_3;
+                uint _e44 = p_4;
                 uint _e47 = b_5;
                 tile_list[(_e44 - start_2)] = _e47;
             }
-            uint _e48 = p_3;
-            p_3 = (_e48 + 1u);
+            uint _e48 = p_4;
+            p_4 = (_e48 + 1u);
         }
     }
-    uint _e61 = p_3;
+    uint _e61 = p_4;
     return (_e61 - at);
 }
 
-TileWalk tile_walk_begin(uint li_3, vec3 x_7, float w_6, bool has_1) {
+TileWalk tile_walk_begin(uint li_3, vec3 x_7, float w_6, bool has_2) {
     bool local_22 = false;
     TileWalk t_2 = TileWalk(vec3(0.0), vec3(0.0), 0.0, 0u);
     uint s_4 = 0u;
     uint sum_1 = 0u;
     uint s_5 = 0u;
-    if (has_1) {
+    if (has_2) {
         local_22 = (w_6 >= 0.0);
     } else {
         local_22 = false;
     }
     bool _e12 = local_22;
     uint _e14 = atomicMax(tile_scale, (_e12 ? floatBitsToUint(w_6) : 0u));
-    WorkgroupBox _e15 = workgroup_box(li_3, x_7, has_1);
+    WorkgroupBox _e15 = workgroup_box(li_3, x_7, has_2);
     memoryBarrierShared();
     barrier();
     uint _e19 = tile_scale;
@@ -1276,8 +1281,8 @@ void main() {
     } else {
         local_3 = false;
     }
-    bool has_2 = local_3;
-    if (has_2) {
+    bool has_3 = local_3;
+    if (has_3) {
         vec3 _e65 = nn;
         n = (_e65 / vec3(sqrt(len2_)));
     }
@@ -1295,7 +1300,7 @@ void main() {
     uint _e103 = pick_stream(_e102);
     h = _e103;
     hc = _e102;
-    TileWalk _e124 = tile_walk_begin(lid, x_11, _e79.w, has_2);
+    TileWalk _e124 = tile_walk_begin(lid, x_11, _e79.w, has_3);
     bool loop_init_8 = true;
     while(true) {
         if (!loop_init_8) {
@@ -1327,7 +1332,7 @@ void main() {
                 {
                     uint _e137 = j;
                     uint b_7 = tile_list[_e137];
-                    if (!(!(has_2))) {
+                    if (!(!(has_3))) {
                         BshNode _e146 = _group_1_binding_4_cs[b_7];
                         vec3 _e147 = r;
                         bool _e148 = bsh_reaches(_e146, x_11, _e147, _e79);
@@ -1411,7 +1416,7 @@ void main() {
             barrier();
         }
     }
-    if (!(has_2)) {
+    if (!(has_3)) {
         if (inside) {
             imageStore(_group_0_binding_3_cs, texel_1, vec4(0.0));
         }

@@ -599,14 +599,14 @@ float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_3, vec3 b_2, vec3 c_2, float t_min
     bool local_15 = false;
     vec3 e1_ = (b_2 - a_3);
     vec3 e2_ = (c_2 - a_3);
-    vec3 p_9 = cross(d_3, e2_);
-    float det = dot(e1_, p_9);
+    vec3 p_10 = cross(d_3, e2_);
+    float det = dot(e1_, p_10);
     if ((abs(det) <= 0.0)) {
         return -1.0;
     }
     float inv = (1.0 / det);
     vec3 s_9 = (o_1 - a_3);
-    float u_3 = (dot(s_9, p_9) * inv);
+    float u_3 = (dot(s_9, p_10) * inv);
     if (!((u_3 < 0.0))) {
         local_13 = (u_3 > 1.0);
     } else {
@@ -1032,9 +1032,9 @@ vec4 unproject_pixel(vec4 c0_, vec4 c1_, vec4 c2_, vec4 c3_, float px, float py,
     }
     float x_14 = ((((px + 0.5) / width) * 2.0) - 1.0);
     float y_1 = (1.0 - (((py + 0.5) / height) * 2.0));
-    vec4 p_10 = ((((c0_ * x_14) + (c1_ * y_1)) + (c2_ * depth_1)) + c3_);
-    vec3 q_2 = vec3((p_10.x / p_10.w), (p_10.y / p_10.w), (p_10.z / p_10.w));
-    if ((abs(p_10.w) > 0.0)) {
+    vec4 p_11 = ((((c0_ * x_14) + (c1_ * y_1)) + (c2_ * depth_1)) + c3_);
+    vec3 q_2 = vec3((p_11.x / p_11.w), (p_11.y / p_11.w), (p_11.z / p_11.w));
+    if ((abs(p_11.w) > 0.0)) {
         bool _e59 = finite3_(q_2);
         local_22 = _e59;
     } else {
@@ -1107,9 +1107,14 @@ WorkgroupBox workgroup_bounds(uint li_4, vec3 lo_2, vec3 hi_2) {
     return _e50;
 }
 
-WorkgroupBox workgroup_box(uint li_5, vec3 p_7, bool has) {
-    WorkgroupBox _e9 = workgroup_bounds(li_5, (has ? p_7 : vec3(3.4028235e38)), (has ? p_7 : vec3(-3.4028235e38)));
-    return _e9;
+WorkgroupBox point_box(vec3 p_7, bool has) {
+    return WorkgroupBox((has ? p_7 : vec3(3.4028235e38)), (has ? p_7 : vec3(-3.4028235e38)));
+}
+
+WorkgroupBox workgroup_box(uint li_5, vec3 p_8, bool has_1) {
+    WorkgroupBox _e3 = point_box(p_8, has_1);
+    WorkgroupBox _e6 = workgroup_bounds(li_5, _e3.lo, _e3.hi);
+    return _e6;
 }
 
 bool box_is_empty(WorkgroupBox b_4) {
@@ -1117,7 +1122,7 @@ bool box_is_empty(WorkgroupBox b_4) {
 }
 
 uint tile_subtree(uint s_4, TileWalk t_1, bool list, uint at, uint start_2, uint to) {
-    uint p_8 = 0u;
+    uint p_9 = 0u;
     uint b_5 = 0u;
     bool local_23 = false;
     bool local_24 = false;
@@ -1127,7 +1132,7 @@ uint tile_subtree(uint s_4, TileWalk t_1, bool list, uint at, uint start_2, uint
         return 0u;
     }
     uint end_1 = _group_1_binding_4_cs[_e8].next;
-    p_8 = at;
+    p_9 = at;
     uint _e21 = bsh_next_leaf_box(BSH, _e8, end_1, t_1.lo, t_1.hi, t_1.w);
     b_5 = _e21;
     bool loop_init_3 = true;
@@ -1142,7 +1147,7 @@ uint tile_subtree(uint s_4, TileWalk t_1, bool list, uint at, uint start_2, uint
         uint _e23 = b_5;
         if ((_e23 != end_1)) {
             if (!(!(list))) {
-                uint _e31 = p_8;
+                uint _e31 = p_9;
                 local_24 = (_e31 < to);
             } else {
                 local_24 = true;
@@ -1159,39 +1164,39 @@ uint tile_subtree(uint s_4, TileWalk t_1, bool list, uint at, uint start_2, uint
         }
         {
             if (list) {
-                uint _e39 = p_8;
+                uint _e39 = p_9;
                 local_25 = (_e39 >= start_2);
             } else {
                 local_25 = false;
             }
             bool _e42 = local_25;
             if (_e42) {
-                uint _e44 = p_8;
+                uint _e44 = p_9;
                 uint _e47 = b_5;
                 tile_list[(_e44 - start_2)] = _e47;
             }
-            uint _e48 = p_8;
-            p_8 = (_e48 + 1u);
+            uint _e48 = p_9;
+            p_9 = (_e48 + 1u);
         }
     }
-    uint _e61 = p_8;
+    uint _e61 = p_9;
     return (_e61 - at);
 }
 
-TileWalk tile_walk_begin(uint li_6, vec3 x_10, float w_7, bool has_1) {
+TileWalk tile_walk_begin(uint li_6, vec3 x_10, float w_7, bool has_2) {
     bool local_26 = false;
     TileWalk t_2 = TileWalk(vec3(0.0), vec3(0.0), 0.0, 0u);
     uint s_5 = 0u;
     uint sum_1 = 0u;
     uint s_6 = 0u;
-    if (has_1) {
+    if (has_2) {
         local_26 = (w_7 >= 0.0);
     } else {
         local_26 = false;
     }
     bool _e12 = local_26;
     uint _e14 = atomicMax(tile_scale, (_e12 ? floatBitsToUint(w_7) : 0u));
-    WorkgroupBox _e15 = workgroup_box(li_6, x_10, has_1);
+    WorkgroupBox _e15 = workgroup_box(li_6, x_10, has_2);
     memoryBarrierShared();
     barrier();
     uint _e19 = tile_scale;
@@ -1474,8 +1479,8 @@ void main() {
     } else {
         local_3 = false;
     }
-    bool has_2 = local_3;
-    if (has_2) {
+    bool has_3 = local_3;
+    if (has_3) {
         vec3 _e65 = nn;
         n = (_e65 / vec3(sqrt(len2_)));
     }
@@ -1494,7 +1499,7 @@ void main() {
     h = _e103;
     WeightedPicks _e113 = weighted_picks(_e102);
     picks = _e113;
-    TileWalk _e116 = tile_walk_begin(lid, x_15, _e79.w, has_2);
+    TileWalk _e116 = tile_walk_begin(lid, x_15, _e79.w, has_3);
     bool loop_init_9 = true;
     while(true) {
         if (!loop_init_9) {
@@ -1526,7 +1531,7 @@ void main() {
                 {
                     uint _e129 = j;
                     uint b_7 = tile_list[_e129];
-                    if (!(!(has_2))) {
+                    if (!(!(has_3))) {
                         BshNode _e138 = _group_1_binding_4_cs[b_7];
                         vec3 _e139 = r;
                         bool _e140 = bsh_reaches(_e138, x_15, _e139, _e79);
@@ -1550,7 +1555,7 @@ void main() {
             barrier();
         }
     }
-    if (!(has_2)) {
+    if (!(has_3)) {
         if (inside) {
             imageStore(_group_0_binding_3_cs, texel_1, vec4(0.0));
         }

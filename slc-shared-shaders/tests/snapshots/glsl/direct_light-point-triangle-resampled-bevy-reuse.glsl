@@ -714,14 +714,14 @@ float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_5, vec3 b_4, vec3 c_7, float t_min
     bool local_19 = false;
     vec3 e1_ = (b_4 - a_5);
     vec3 e2_ = (c_7 - a_5);
-    vec3 p_7 = cross(d_3, e2_);
-    float det = dot(e1_, p_7);
+    vec3 p_8 = cross(d_3, e2_);
+    float det = dot(e1_, p_8);
     if ((abs(det) <= 0.0)) {
         return -1.0;
     }
     float inv = (1.0 / det);
     vec3 s_12 = (o_1 - a_5);
-    float u_4 = (dot(s_12, p_7) * inv);
+    float u_4 = (dot(s_12, p_8) * inv);
     if (!((u_4 < 0.0))) {
         local_17 = (u_4 > 1.0);
     } else {
@@ -1097,8 +1097,8 @@ float light_range_scale(uint li_1, vec3 x_7, vec3 r_9, vec4 rl_4) {
 }
 
 vec4 surface_at(ivec2 texel) {
-    vec4 p_8 = texelFetch(_group_0_binding_1_cs, texel, 0);
-    return ((p_8.w > 0.0) ? vec4(p_8.xyz, 1.0) : vec4(0.0));
+    vec4 p_9 = texelFetch(_group_0_binding_1_cs, texel, 0);
+    return ((p_9.w > 0.0) ? vec4(p_9.xyz, 1.0) : vec4(0.0));
 }
 
 WorkgroupBox workgroup_bounds(uint li_2, vec3 lo_2, vec3 hi_2) {
@@ -1148,9 +1148,14 @@ WorkgroupBox workgroup_bounds(uint li_2, vec3 lo_2, vec3 hi_2) {
     return _e50;
 }
 
-WorkgroupBox workgroup_box(uint li_3, vec3 p_4, bool has) {
-    WorkgroupBox _e9 = workgroup_bounds(li_3, (has ? p_4 : vec3(3.4028235e38)), (has ? p_4 : vec3(-3.4028235e38)));
-    return _e9;
+WorkgroupBox point_box(vec3 p_4, bool has) {
+    return WorkgroupBox((has ? p_4 : vec3(3.4028235e38)), (has ? p_4 : vec3(-3.4028235e38)));
+}
+
+WorkgroupBox workgroup_box(uint li_3, vec3 p_5, bool has_1) {
+    WorkgroupBox _e3 = point_box(p_5, has_1);
+    WorkgroupBox _e6 = workgroup_bounds(li_3, _e3.lo, _e3.hi);
+    return _e6;
 }
 
 bool box_is_empty(WorkgroupBox b_6) {
@@ -1158,7 +1163,7 @@ bool box_is_empty(WorkgroupBox b_6) {
 }
 
 uint tile_subtree(uint s_3, TileWalk t_1, bool list, uint at, uint start_2, uint to) {
-    uint p_5 = 0u;
+    uint p_6 = 0u;
     uint b_7 = 0u;
     bool local_26 = false;
     bool local_27 = false;
@@ -1168,7 +1173,7 @@ uint tile_subtree(uint s_3, TileWalk t_1, bool list, uint at, uint start_2, uint
         return 0u;
     }
     uint end_1 = _group_1_binding_4_cs[_e8].next;
-    p_5 = at;
+    p_6 = at;
     uint _e21 = bsh_next_leaf_box(BSH, _e8, end_1, t_1.lo, t_1.hi, t_1.w);
     b_7 = _e21;
     bool loop_init_2 = true;
@@ -1183,7 +1188,7 @@ uint tile_subtree(uint s_3, TileWalk t_1, bool list, uint at, uint start_2, uint
         uint _e23 = b_7;
         if ((_e23 != end_1)) {
             if (!(!(list))) {
-                uint _e31 = p_5;
+                uint _e31 = p_6;
                 local_27 = (_e31 < to);
             } else {
                 local_27 = true;
@@ -1200,39 +1205,39 @@ uint tile_subtree(uint s_3, TileWalk t_1, bool list, uint at, uint start_2, uint
         }
         {
             if (list) {
-                uint _e39 = p_5;
+                uint _e39 = p_6;
                 local_28 = (_e39 >= start_2);
             } else {
                 local_28 = false;
             }
             bool _e42 = local_28;
             if (_e42) {
-                uint _e44 = p_5;
+                uint _e44 = p_6;
                 uint _e47 = b_7;
                 tile_list[(_e44 - start_2)] = _e47;
             }
-            uint _e48 = p_5;
-            p_5 = (_e48 + 1u);
+            uint _e48 = p_6;
+            p_6 = (_e48 + 1u);
         }
     }
-    uint _e61 = p_5;
+    uint _e61 = p_6;
     return (_e61 - at);
 }
 
-TileWalk tile_walk_begin(uint li_4, vec3 x_8, float w_9, bool has_1) {
+TileWalk tile_walk_begin(uint li_4, vec3 x_8, float w_9, bool has_2) {
     bool local_29 = false;
     TileWalk t_2 = TileWalk(vec3(0.0), vec3(0.0), 0.0, 0u);
     uint s_4 = 0u;
     uint sum_1 = 0u;
     uint s_5 = 0u;
-    if (has_1) {
+    if (has_2) {
         local_29 = (w_9 >= 0.0);
     } else {
         local_29 = false;
     }
     bool _e12 = local_29;
     uint _e14 = atomicMax(tile_scale, (_e12 ? floatBitsToUint(w_9) : 0u));
-    WorkgroupBox _e15 = workgroup_box(li_4, x_8, has_1);
+    WorkgroupBox _e15 = workgroup_box(li_4, x_8, has_2);
     memoryBarrierShared();
     barrier();
     uint _e19 = tile_scale;
@@ -1479,7 +1484,7 @@ uint reuse_domains(vec3 x_13, vec3 n_12, float d_6, uint h_2, inout Domain doms_
     uint nd = 0u;
     uint hr = 0u;
     uint j_4 = 0u;
-    vec2 p_6 = vec2(0.0);
+    vec2 p_7 = vec2(0.0);
     bool local_33 = false;
     bool local_34 = false;
     bool local_35 = false;
@@ -1516,7 +1521,7 @@ uint reuse_domains(vec3 x_13, vec3 n_12, float d_6, uint h_2, inout Domain doms_
             break;
         }
         {
-            p_6 = _e33.xy;
+            p_7 = _e33.xy;
             uint _e46 = j_4;
             if ((_e46 > 0u)) {
                 uint _e49 = hr;
@@ -1527,14 +1532,14 @@ uint reuse_domains(vec3 x_13, vec3 n_12, float d_6, uint h_2, inout Domain doms_
                 uint _e53 = hr;
                 uint _e54 = pcg_hash(_e53);
                 hr = _e54;
-                vec2 _e55 = p_6;
+                vec2 _e55 = p_7;
                 float _e58 = _group_0_binding_7_cs.radius;
                 uint _e59 = hr;
                 float _e60 = xi_from_bits(_e59);
                 vec2 _e61 = disk_offset(_e58, _e52, _e60);
-                p_6 = (_e55 + _e61);
+                p_7 = (_e55 + _e61);
             }
-            vec2 _e63 = p_6;
+            vec2 _e63 = p_7;
             ivec2 t_8 = ivec2(roundEven(_e63));
             if (!((t_8.x < 0))) {
                 local_33 = (t_8.y < 0);
@@ -1853,14 +1858,14 @@ void main() {
     } else {
         local_3 = false;
     }
-    bool has_2 = local_3;
-    if (has_2) {
+    bool has_3 = local_3;
+    if (has_3) {
         vec3 _e65 = nn;
         n = (_e65 / vec3(sqrt(len2_)));
     }
     vec3 _e76 = n;
     r = _e76;
-    if (has_2) {
+    if (has_3) {
         vec4 mr = texelFetch(_group_0_binding_5_cs, texel_1, 0);
         vec4 _e83 = texelFetch(_group_0_binding_4_cs, texel_1, 0);
         vec3 _e90 = _group_0_binding_0_cs.eye;
@@ -1891,7 +1896,7 @@ void main() {
     uint _e138 = pick_stream(_e137);
     h = _e138;
     hc = _e137;
-    TileWalk _e160 = tile_walk_begin(lid, x_17, _e114.w, has_2);
+    TileWalk _e160 = tile_walk_begin(lid, x_17, _e114.w, has_3);
     bool loop_init_12 = true;
     while(true) {
         if (!loop_init_12) {
@@ -1923,7 +1928,7 @@ void main() {
                 {
                     uint _e173 = j;
                     uint b_10 = tile_list[_e173];
-                    if (!(!(has_2))) {
+                    if (!(!(has_3))) {
                         BshNode _e182 = _group_1_binding_4_cs[b_10];
                         vec3 _e183 = r;
                         bool _e184 = bsh_reaches(_e182, x_17, _e183, _e114);
@@ -2009,7 +2014,7 @@ void main() {
             barrier();
         }
     }
-    if (!(has_2)) {
+    if (!(has_3)) {
         if (inside) {
             imageStore(_group_0_binding_3_cs, texel_1, vec4(0.0));
             uint _e270 = _group_0_binding_0_cs.width;

@@ -628,14 +628,14 @@ float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_5, vec3 b_4, vec3 c_7, float t_min
     bool local_18 = false;
     vec3 e1_ = (b_4 - a_5);
     vec3 e2_ = (c_7 - a_5);
-    vec3 p_4 = cross(d_3, e2_);
-    float det = dot(e1_, p_4);
+    vec3 p_5 = cross(d_3, e2_);
+    float det = dot(e1_, p_5);
     if ((abs(det) <= 0.0)) {
         return -1.0;
     }
     float inv = (1.0 / det);
     vec3 s_10 = (o_1 - a_5);
-    float u_3 = (dot(s_10, p_4) * inv);
+    float u_3 = (dot(s_10, p_5) * inv);
     if (!((u_3 < 0.0))) {
         local_16 = (u_3 > 1.0);
     } else {
@@ -990,8 +990,8 @@ float light_range_scale(uint li_1, vec3 x_7, vec3 r_8, vec4 rl_4) {
 }
 
 vec4 surface_at(ivec2 texel) {
-    vec4 p_5 = texelFetch(_group_0_binding_1_cs, texel, 0);
-    return ((p_5.w > 0.0) ? vec4(p_5.xyz, 1.0) : vec4(0.0));
+    vec4 p_6 = texelFetch(_group_0_binding_1_cs, texel, 0);
+    return ((p_6.w > 0.0) ? vec4(p_6.xyz, 1.0) : vec4(0.0));
 }
 
 WorkgroupBox workgroup_bounds(uint li_2, vec3 lo_2, vec3 hi_2) {
@@ -1041,9 +1041,14 @@ WorkgroupBox workgroup_bounds(uint li_2, vec3 lo_2, vec3 hi_2) {
     return _e50;
 }
 
-WorkgroupBox workgroup_box(uint li_3, vec3 p_2, bool has) {
-    WorkgroupBox _e9 = workgroup_bounds(li_3, (has ? p_2 : vec3(3.4028235e38)), (has ? p_2 : vec3(-3.4028235e38)));
-    return _e9;
+WorkgroupBox point_box(vec3 p_2, bool has) {
+    return WorkgroupBox((has ? p_2 : vec3(3.4028235e38)), (has ? p_2 : vec3(-3.4028235e38)));
+}
+
+WorkgroupBox workgroup_box(uint li_3, vec3 p_3, bool has_1) {
+    WorkgroupBox _e3 = point_box(p_3, has_1);
+    WorkgroupBox _e6 = workgroup_bounds(li_3, _e3.lo, _e3.hi);
+    return _e6;
 }
 
 bool box_is_empty(WorkgroupBox b_6) {
@@ -1051,7 +1056,7 @@ bool box_is_empty(WorkgroupBox b_6) {
 }
 
 uint tile_subtree(uint s_3, TileWalk t_1, bool list, uint at, uint start_2, uint to) {
-    uint p_3 = 0u;
+    uint p_4 = 0u;
     uint b_7 = 0u;
     bool local_24 = false;
     bool local_25 = false;
@@ -1061,7 +1066,7 @@ uint tile_subtree(uint s_3, TileWalk t_1, bool list, uint at, uint start_2, uint
         return 0u;
     }
     uint end_1 = _group_1_binding_4_cs[_e8].next;
-    p_3 = at;
+    p_4 = at;
     uint _e21 = bsh_next_leaf_box(BSH, _e8, end_1, t_1.lo, t_1.hi, t_1.w);
     b_7 = _e21;
     bool loop_init_2 = true;
@@ -1076,7 +1081,7 @@ uint tile_subtree(uint s_3, TileWalk t_1, bool list, uint at, uint start_2, uint
         uint _e23 = b_7;
         if ((_e23 != end_1)) {
             if (!(!(list))) {
-                uint _e31 = p_3;
+                uint _e31 = p_4;
                 local_25 = (_e31 < to);
             } else {
                 local_25 = true;
@@ -1093,39 +1098,39 @@ uint tile_subtree(uint s_3, TileWalk t_1, bool list, uint at, uint start_2, uint
         }
         {
             if (list) {
-                uint _e39 = p_3;
+                uint _e39 = p_4;
                 local_26 = (_e39 >= start_2);
             } else {
                 local_26 = false;
             }
             bool _e42 = local_26;
             if (_e42) {
-                uint _e44 = p_3;
+                uint _e44 = p_4;
                 uint _e47 = b_7;
                 tile_list[(_e44 - start_2)] = _e47;
             }
-            uint _e48 = p_3;
-            p_3 = (_e48 + 1u);
+            uint _e48 = p_4;
+            p_4 = (_e48 + 1u);
         }
     }
-    uint _e61 = p_3;
+    uint _e61 = p_4;
     return (_e61 - at);
 }
 
-TileWalk tile_walk_begin(uint li_4, vec3 x_8, float w_7, bool has_1) {
+TileWalk tile_walk_begin(uint li_4, vec3 x_8, float w_7, bool has_2) {
     bool local_27 = false;
     TileWalk t_2 = TileWalk(vec3(0.0), vec3(0.0), 0.0, 0u);
     uint s_4 = 0u;
     uint sum_1 = 0u;
     uint s_5 = 0u;
-    if (has_1) {
+    if (has_2) {
         local_27 = (w_7 >= 0.0);
     } else {
         local_27 = false;
     }
     bool _e12 = local_27;
     uint _e14 = atomicMax(tile_scale, (_e12 ? floatBitsToUint(w_7) : 0u));
-    WorkgroupBox _e15 = workgroup_box(li_4, x_8, has_1);
+    WorkgroupBox _e15 = workgroup_box(li_4, x_8, has_2);
     memoryBarrierShared();
     barrier();
     uint _e19 = tile_scale;
@@ -1435,14 +1440,14 @@ void main() {
     } else {
         local_3 = false;
     }
-    bool has_2 = local_3;
-    if (has_2) {
+    bool has_3 = local_3;
+    if (has_3) {
         vec3 _e65 = nn;
         n = (_e65 / vec3(sqrt(len2_)));
     }
     vec3 _e76 = n;
     r = _e76;
-    if (has_2) {
+    if (has_3) {
         vec4 mr = texelFetch(_group_0_binding_5_cs, texel_1, 0);
         vec4 _e83 = texelFetch(_group_0_binding_4_cs, texel_1, 0);
         vec3 _e90 = _group_0_binding_0_cs.eye;
@@ -1473,7 +1478,7 @@ void main() {
     uint _e138 = pick_stream(_e137);
     h = _e138;
     hc = _e137;
-    TileWalk _e159 = tile_walk_begin(lid, x_13, _e114.w, has_2);
+    TileWalk _e159 = tile_walk_begin(lid, x_13, _e114.w, has_3);
     bool loop_init_8 = true;
     while(true) {
         if (!loop_init_8) {
@@ -1505,7 +1510,7 @@ void main() {
                 {
                     uint _e172 = j;
                     uint b_9 = tile_list[_e172];
-                    if (!(!(has_2))) {
+                    if (!(!(has_3))) {
                         BshNode _e181 = _group_1_binding_4_cs[b_9];
                         vec3 _e182 = r;
                         bool _e183 = bsh_reaches(_e181, x_13, _e182, _e114);
@@ -1587,7 +1592,7 @@ void main() {
             barrier();
         }
     }
-    if (!(has_2)) {
+    if (!(has_3)) {
         if (inside) {
             imageStore(_group_0_binding_3_cs, texel_1, vec4(0.0));
         }

@@ -720,14 +720,14 @@ float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_5, vec3 b_4, vec3 c_5, float t_min
     bool local_19 = false;
     vec3 e1_ = (b_4 - a_5);
     vec3 e2_ = (c_5 - a_5);
-    vec3 p_9 = cross(d_3, e2_);
-    float det = dot(e1_, p_9);
+    vec3 p_10 = cross(d_3, e2_);
+    float det = dot(e1_, p_10);
     if ((abs(det) <= 0.0)) {
         return -1.0;
     }
     float inv_1 = (1.0 / det);
     vec3 s_9 = (o_1 - a_5);
-    float u_3 = (dot(s_9, p_9) * inv_1);
+    float u_3 = (dot(s_9, p_10) * inv_1);
     if (!((u_3 < 0.0))) {
         local_17 = (u_3 > 1.0);
     } else {
@@ -1142,8 +1142,8 @@ void weighted_offer(inout WeightedPicks picks_2, uint li_3, float w_7) {
 }
 
 vec4 surface_at(ivec2 texel) {
-    vec4 p_10 = texelFetch(_group_0_binding_1_cs, texel, 0);
-    return ((p_10.w > 0.0) ? vec4(p_10.xyz, 1.0) : vec4(0.0));
+    vec4 p_11 = texelFetch(_group_0_binding_1_cs, texel, 0);
+    return ((p_11.w > 0.0) ? vec4(p_11.xyz, 1.0) : vec4(0.0));
 }
 
 WorkgroupBox workgroup_bounds(uint li_4, vec3 lo_2, vec3 hi_2) {
@@ -1193,9 +1193,14 @@ WorkgroupBox workgroup_bounds(uint li_4, vec3 lo_2, vec3 hi_2) {
     return _e50;
 }
 
-WorkgroupBox workgroup_box(uint li_5, vec3 p_7, bool has) {
-    WorkgroupBox _e9 = workgroup_bounds(li_5, (has ? p_7 : vec3(3.4028235e38)), (has ? p_7 : vec3(-3.4028235e38)));
-    return _e9;
+WorkgroupBox point_box(vec3 p_7, bool has) {
+    return WorkgroupBox((has ? p_7 : vec3(3.4028235e38)), (has ? p_7 : vec3(-3.4028235e38)));
+}
+
+WorkgroupBox workgroup_box(uint li_5, vec3 p_8, bool has_1) {
+    WorkgroupBox _e3 = point_box(p_8, has_1);
+    WorkgroupBox _e6 = workgroup_bounds(li_5, _e3.lo, _e3.hi);
+    return _e6;
 }
 
 bool box_is_empty(WorkgroupBox b_6) {
@@ -1203,7 +1208,7 @@ bool box_is_empty(WorkgroupBox b_6) {
 }
 
 uint tile_subtree(uint s_4, TileWalk t_1, bool list, uint at, uint start_2, uint to) {
-    uint p_8 = 0u;
+    uint p_9 = 0u;
     uint b_7 = 0u;
     bool local_25 = false;
     bool local_26 = false;
@@ -1213,7 +1218,7 @@ uint tile_subtree(uint s_4, TileWalk t_1, bool list, uint at, uint start_2, uint
         return 0u;
     }
     uint end_1 = _group_1_binding_4_cs[_e8].next;
-    p_8 = at;
+    p_9 = at;
     uint _e21 = bsh_next_leaf_box(BSH, _e8, end_1, t_1.lo, t_1.hi, t_1.w);
     b_7 = _e21;
     bool loop_init_3 = true;
@@ -1228,7 +1233,7 @@ uint tile_subtree(uint s_4, TileWalk t_1, bool list, uint at, uint start_2, uint
         uint _e23 = b_7;
         if ((_e23 != end_1)) {
             if (!(!(list))) {
-                uint _e31 = p_8;
+                uint _e31 = p_9;
                 local_26 = (_e31 < to);
             } else {
                 local_26 = true;
@@ -1245,39 +1250,39 @@ uint tile_subtree(uint s_4, TileWalk t_1, bool list, uint at, uint start_2, uint
         }
         {
             if (list) {
-                uint _e39 = p_8;
+                uint _e39 = p_9;
                 local_27 = (_e39 >= start_2);
             } else {
                 local_27 = false;
             }
             bool _e42 = local_27;
             if (_e42) {
-                uint _e44 = p_8;
+                uint _e44 = p_9;
                 uint _e47 = b_7;
                 tile_list[(_e44 - start_2)] = _e47;
             }
-            uint _e48 = p_8;
-            p_8 = (_e48 + 1u);
+            uint _e48 = p_9;
+            p_9 = (_e48 + 1u);
         }
     }
-    uint _e61 = p_8;
+    uint _e61 = p_9;
     return (_e61 - at);
 }
 
-TileWalk tile_walk_begin(uint li_6, vec3 x_10, float w_8, bool has_1) {
+TileWalk tile_walk_begin(uint li_6, vec3 x_10, float w_8, bool has_2) {
     bool local_28 = false;
     TileWalk t_2 = TileWalk(vec3(0.0), vec3(0.0), 0.0, 0u);
     uint s_5 = 0u;
     uint sum_1 = 0u;
     uint s_6 = 0u;
-    if (has_1) {
+    if (has_2) {
         local_28 = (w_8 >= 0.0);
     } else {
         local_28 = false;
     }
     bool _e12 = local_28;
     uint _e14 = atomicMax(tile_scale, (_e12 ? floatBitsToUint(w_8) : 0u));
-    WorkgroupBox _e15 = workgroup_box(li_6, x_10, has_1);
+    WorkgroupBox _e15 = workgroup_box(li_6, x_10, has_2);
     memoryBarrierShared();
     barrier();
     uint _e19 = tile_scale;
@@ -1578,14 +1583,14 @@ void main() {
     } else {
         local_3 = false;
     }
-    bool has_2 = local_3;
-    if (has_2) {
+    bool has_3 = local_3;
+    if (has_3) {
         vec3 _e65 = nn;
         n = (_e65 / vec3(sqrt(len2_1)));
     }
     vec3 _e76 = n;
     r = _e76;
-    if (has_2) {
+    if (has_3) {
         vec4 mr = texelFetch(_group_0_binding_5_cs, texel_1, 0);
         vec4 _e83 = texelFetch(_group_0_binding_4_cs, texel_1, 0);
         vec3 _e90 = _group_0_binding_0_cs.eye;
@@ -1618,7 +1623,7 @@ void main() {
     h = _e140;
     WeightedPicks _e150 = weighted_picks(_e139);
     picks = _e150;
-    TileWalk _e153 = tile_walk_begin(lid, x_14, _e116.w, has_2);
+    TileWalk _e153 = tile_walk_begin(lid, x_14, _e116.w, has_3);
     bool loop_init_9 = true;
     while(true) {
         if (!loop_init_9) {
@@ -1650,7 +1655,7 @@ void main() {
                 {
                     uint _e166 = j;
                     uint b_9 = tile_list[_e166];
-                    if (!(!(has_2))) {
+                    if (!(!(has_3))) {
                         BshNode _e175 = _group_1_binding_4_cs[b_9];
                         vec3 _e176 = r;
                         bool _e177 = bsh_reaches(_e175, x_14, _e176, _e116);
@@ -1674,7 +1679,7 @@ void main() {
             barrier();
         }
     }
-    if (!(has_2)) {
+    if (!(has_3)) {
         if (inside) {
             imageStore(_group_0_binding_3_cs, texel_1, vec4(0.0));
             imageStore(_group_0_binding_6_cs, texel_1, vec4(0.0));

@@ -348,9 +348,14 @@ WorkgroupBox workgroup_bounds(uint li_1, vec3 lo, vec3 hi) {
     return _e50;
 }
 
-WorkgroupBox workgroup_box(uint li_2, vec3 p, bool has) {
-    WorkgroupBox _e9 = workgroup_bounds(li_2, (has ? p : vec3(3.4028235e38)), (has ? p : vec3(-3.4028235e38)));
-    return _e9;
+WorkgroupBox point_box(vec3 p, bool has) {
+    return WorkgroupBox((has ? p : vec3(3.4028235e38)), (has ? p : vec3(-3.4028235e38)));
+}
+
+WorkgroupBox workgroup_box(uint li_2, vec3 p_1, bool has_1) {
+    WorkgroupBox _e3 = point_box(p_1, has_1);
+    WorkgroupBox _e6 = workgroup_bounds(li_2, _e3.lo, _e3.hi);
+    return _e6;
 }
 
 bool box_is_empty(WorkgroupBox b) {
@@ -358,8 +363,8 @@ bool box_is_empty(WorkgroupBox b) {
 }
 
 vec4 surface_at(ivec2 texel) {
-    vec4 p_4 = texelFetch(_group_0_binding_2_cs, texel, 0);
-    return ((p_4.w > 0.0) ? vec4(p_4.xyz, 1.0) : vec4(0.0));
+    vec4 p_5 = texelFetch(_group_0_binding_2_cs, texel, 0);
+    return ((p_5.w > 0.0) ? vec4(p_5.xyz, 1.0) : vec4(0.0));
 }
 
 GbTexel gbuffer_at(uint i) {
@@ -397,17 +402,17 @@ float near_cull_r2_of(uint slot_1, float near_r2_3) {
 }
 
 WorkgroupBox load_receiver(uint li_3, uint pix, bool inside) {
-    vec4 p_1 = vec4(0.0);
+    vec4 p_2 = vec4(0.0);
     bool local_7 = false;
     if (inside) {
         GbTexel _e6 = gbuffer_at(pix);
-        p_1 = _e6.position;
+        p_2 = _e6.position;
         nrm = _e6.normal.xyz;
     }
-    vec4 _e12 = p_1;
+    vec4 _e12 = p_2;
     pos = _e12.xyz;
     if (inside) {
-        float _e18 = p_1.w;
+        float _e18 = p_2.w;
         local_7 = (_e18 > 0.0);
     } else {
         local_7 = false;
@@ -438,12 +443,11 @@ void quarter_boxes(uint li_4, uvec3 lid_1) {
     uint y = 0u;
     uint x = 0u;
     quarter_bit = (1u << ((QUARTER_SHIFT + ((lid_1.x >= HALF) ? 1u : 0u)) + ((lid_1.y >= HALF) ? 2u : 0u)));
-    vec3 _e25 = pos;
-    bool _e27 = valid;
-    wg_lo[li_4] = (_e27 ? _e25 : vec3(3.4028235e38));
-    vec3 _e34 = pos;
-    bool _e36 = valid;
-    wg_hi[li_4] = (_e36 ? _e34 : vec3(-3.4028235e38));
+    vec3 _e21 = pos;
+    bool _e23 = valid;
+    WorkgroupBox _e24 = point_box(_e21, _e23);
+    wg_lo[li_4] = _e24.lo;
+    wg_hi[li_4] = _e24.hi;
     memoryBarrierShared();
     barrier();
     if ((li_4 < 4u)) {
@@ -453,12 +457,12 @@ void quarter_boxes(uint li_4, uvec3 lid_1) {
         bool loop_init_1 = true;
         while(true) {
             if (!loop_init_1) {
-                uint _e92 = y;
-                y = (_e92 + 1u);
+                uint _e85 = y;
+                y = (_e85 + 1u);
             }
             loop_init_1 = false;
-            uint _e55 = y;
-            if ((_e55 < min((y0_ + HALF), TILE))) {
+            uint _e48 = y;
+            if ((_e48 < min((y0_ + HALF), TILE))) {
             } else {
                 break;
             }
@@ -467,55 +471,55 @@ void quarter_boxes(uint li_4, uvec3 lid_1) {
                 bool loop_init_2 = true;
                 while(true) {
                     if (!loop_init_2) {
-                        uint _e89 = x;
-                        x = (_e89 + 1u);
+                        uint _e82 = x;
+                        x = (_e82 + 1u);
                     }
                     loop_init_2 = false;
-                    uint _e62 = x;
-                    if ((_e62 < min((x0_ + HALF), TILE))) {
+                    uint _e55 = x;
+                    if ((_e55 < min((x0_ + HALF), TILE))) {
                     } else {
                         break;
                     }
                     {
-                        vec3 _e68 = lo_1;
-                        uint _e70 = y;
-                        uint _e73 = x;
-                        vec3 _e76 = wg_lo[((_e70 * TILE) + _e73)];
-                        lo_1 = min(_e68, _e76);
-                        vec3 _e78 = hi_1;
-                        uint _e80 = y;
-                        uint _e83 = x;
-                        vec3 _e86 = wg_hi[((_e80 * TILE) + _e83)];
-                        hi_1 = max(_e78, _e86);
+                        vec3 _e61 = lo_1;
+                        uint _e63 = y;
+                        uint _e66 = x;
+                        vec3 _e69 = wg_lo[((_e63 * TILE) + _e66)];
+                        lo_1 = min(_e61, _e69);
+                        vec3 _e71 = hi_1;
+                        uint _e73 = y;
+                        uint _e76 = x;
+                        vec3 _e79 = wg_hi[((_e73 * TILE) + _e76)];
+                        hi_1 = max(_e71, _e79);
                     }
                 }
             }
         }
-        vec3 _e96 = lo_1;
-        quarter_lo[li_4] = _e96;
-        vec3 _e99 = hi_1;
-        quarter_hi[li_4] = _e99;
+        vec3 _e89 = lo_1;
+        quarter_lo[li_4] = _e89;
+        vec3 _e92 = hi_1;
+        quarter_hi[li_4] = _e92;
     }
     memoryBarrierShared();
     barrier();
     return;
 }
 
-uint quarter_meets(uint q, vec3 p_2, float radius) {
+uint quarter_meets(uint q, vec3 p_3, float radius) {
     vec3 lo_3 = quarter_lo[q];
     vec3 hi_3 = quarter_hi[q];
     if ((lo_3.x > hi_3.x)) {
         return 0u;
     }
-    bool _e18 = sphere_overlaps_aabb(p_2, radius, lo_3, hi_3);
+    bool _e18 = sphere_overlaps_aabb(p_3, radius, lo_3, hi_3);
     return (_e18 ? (1u << (QUARTER_SHIFT + q)) : 0u);
 }
 
-uint list_entry(uint slot_3, vec3 p_3, float radius_1) {
-    uint _e4 = quarter_meets(0u, p_3, radius_1);
-    uint _e7 = quarter_meets(1u, p_3, radius_1);
-    uint _e10 = quarter_meets(2u, p_3, radius_1);
-    uint _e13 = quarter_meets(3u, p_3, radius_1);
+uint list_entry(uint slot_3, vec3 p_4, float radius_1) {
+    uint _e4 = quarter_meets(0u, p_4, radius_1);
+    uint _e7 = quarter_meets(1u, p_4, radius_1);
+    uint _e10 = quarter_meets(2u, p_4, radius_1);
+    uint _e13 = quarter_meets(3u, p_4, radius_1);
     return ((((slot_3 | _e4) | _e7) | _e10) | _e13);
 }
 

@@ -332,9 +332,14 @@ WorkgroupBox workgroup_bounds(uint li_1, vec3 lo, vec3 hi) {
     return _e50;
 }
 
-WorkgroupBox workgroup_box(uint li_2, vec3 p, bool has) {
-    WorkgroupBox _e9 = workgroup_bounds(li_2, (has ? p : vec3(3.4028235e38)), (has ? p : vec3(-3.4028235e38)));
-    return _e9;
+WorkgroupBox point_box(vec3 p, bool has) {
+    return WorkgroupBox((has ? p : vec3(3.4028235e38)), (has ? p : vec3(-3.4028235e38)));
+}
+
+WorkgroupBox workgroup_box(uint li_2, vec3 p_1, bool has_1) {
+    WorkgroupBox _e3 = point_box(p_1, has_1);
+    WorkgroupBox _e6 = workgroup_bounds(li_2, _e3.lo, _e3.hi);
+    return _e6;
 }
 
 bool box_is_empty(WorkgroupBox b) {
@@ -342,8 +347,8 @@ bool box_is_empty(WorkgroupBox b) {
 }
 
 vec4 surface_at(ivec2 texel) {
-    vec4 p_3 = texelFetch(_group_0_binding_2_cs, texel, 0);
-    return ((p_3.w > 0.0) ? vec4(p_3.xyz, 1.0) : vec4(0.0));
+    vec4 p_4 = texelFetch(_group_0_binding_2_cs, texel, 0);
+    return ((p_4.w > 0.0) ? vec4(p_4.xyz, 1.0) : vec4(0.0));
 }
 
 GbTexel gbuffer_at(uint i) {
@@ -419,17 +424,17 @@ void counts_end(uint li_5) {
 }
 
 WorkgroupBox load_receiver(uint li_6, uint pix, bool inside) {
-    vec4 p_1 = vec4(0.0);
+    vec4 p_2 = vec4(0.0);
     bool local_7 = false;
     if (inside) {
         GbTexel _e6 = gbuffer_at(pix);
-        p_1 = _e6.position;
+        p_2 = _e6.position;
         nrm = _e6.normal.xyz;
     }
-    vec4 _e12 = p_1;
+    vec4 _e12 = p_2;
     pos = _e12.xyz;
     if (inside) {
-        float _e18 = p_1.w;
+        float _e18 = p_2.w;
         local_7 = (_e18 > 0.0);
     } else {
         local_7 = false;
@@ -489,7 +494,7 @@ float cull_r2_of(uint slot) {
     return _e3;
 }
 
-uint list_entry(uint slot_1, vec3 p_2, float radius) {
+uint list_entry(uint slot_1, vec3 p_3, float radius) {
     return slot_1;
 }
 

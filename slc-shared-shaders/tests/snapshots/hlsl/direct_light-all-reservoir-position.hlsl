@@ -1026,8 +1026,8 @@ Connection connect_traced(uint li, float3 x_10, float3 n_9, float3 ng_2, float s
 
 float4 surface_at(int2 texel)
 {
-    float4 p_4 = position_tex.Load(int3(texel, int(0)));
-    return ((p_4.w > 0.0) ? float4(p_4.xyz, 1.0) : (0.0).xxxx);
+    float4 p_5 = position_tex.Load(int3(texel, int(0)));
+    return ((p_5.w > 0.0) ? float4(p_5.xyz, 1.0) : (0.0).xxxx);
 }
 
 uint naga_div(uint lhs, uint rhs) {
@@ -1090,11 +1090,18 @@ WorkgroupBox workgroup_bounds(uint li_1, float3 lo_5, float3 hi_5)
     return workgroupbox;
 }
 
-WorkgroupBox workgroup_box(uint li_2, float3 p_2, bool has)
+WorkgroupBox point_box(float3 p_2, bool has)
 {
-    const WorkgroupBox _e9 = workgroup_bounds(li_2, (has ? p_2 : (3.4028235e38).xxx), (has ? p_2 : (-3.4028235e38).xxx));
-    const WorkgroupBox workgroupbox_1 = _e9;
+    const WorkgroupBox workgroupbox_1 = ConstructWorkgroupBox((has ? p_2 : (3.4028235e38).xxx), (has ? p_2 : (-3.4028235e38).xxx));
     return workgroupbox_1;
+}
+
+WorkgroupBox workgroup_box(uint li_2, float3 p_3, bool has_1)
+{
+    const WorkgroupBox _e3 = point_box(p_3, has_1);
+    const WorkgroupBox _e6 = workgroup_bounds(li_2, _e3.lo, _e3.hi);
+    const WorkgroupBox workgroupbox_2 = _e6;
+    return workgroupbox_2;
 }
 
 bool box_is_empty(WorkgroupBox b_6)
@@ -1104,7 +1111,7 @@ bool box_is_empty(WorkgroupBox b_6)
 
 uint tile_subtree(uint s_3, TileWalk t_2, bool list, uint at_1, uint start_3, uint to)
 {
-    uint p_3 = (uint)0;
+    uint p_4 = (uint)0;
     uint b_7 = (uint)0;
     bool local_16 = (bool)0;
     bool local_17 = (bool)0;
@@ -1115,7 +1122,7 @@ uint tile_subtree(uint s_3, TileWalk t_2, bool list, uint at_1, uint start_3, ui
         return 0u;
     }
     uint end_1 = asuint(bsh_nodes.Load(20+_e8*32));
-    p_3 = at_1;
+    p_4 = at_1;
     const uint _e21 = bsh_next_leaf_box(BSH, _e8, end_1, t_2.lo, t_2.hi, t_2.w);
     b_7 = _e21;
     uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
@@ -1133,7 +1140,7 @@ uint tile_subtree(uint s_3, TileWalk t_2, bool list, uint at_1, uint start_3, ui
         uint _e23 = b_7;
         if ((_e23 != end_1)) {
             if (!(!(list))) {
-                uint _e31 = p_3;
+                uint _e31 = p_4;
                 local_17 = (_e31 < to);
             } else {
                 local_17 = true;
@@ -1150,22 +1157,22 @@ uint tile_subtree(uint s_3, TileWalk t_2, bool list, uint at_1, uint start_3, ui
         }
         {
             if (list) {
-                uint _e39 = p_3;
+                uint _e39 = p_4;
                 local_18 = (_e39 >= start_3);
             } else {
                 local_18 = false;
             }
             bool _e42 = local_18;
             if (_e42) {
-                uint _e44 = p_3;
+                uint _e44 = p_4;
                 uint _e47 = b_7;
                 tile_list[min(uint((_e44 - start_3)), 1023u)] = _e47;
             }
-            uint _e48 = p_3;
-            p_3 = (_e48 + 1u);
+            uint _e48 = p_4;
+            p_4 = (_e48 + 1u);
         }
     }
-    uint _e61 = p_3;
+    uint _e61 = p_4;
     return (_e61 - at_1);
 }
 
@@ -1178,7 +1185,7 @@ TileWalk ConstructTileWalk(float3 arg0, float3 arg1, float arg2, uint arg3) {
     return ret;
 }
 
-TileWalk tile_walk_begin(uint li_3, float3 x_11, float w_7, bool has_1)
+TileWalk tile_walk_begin(uint li_3, float3 x_11, float w_7, bool has_2)
 {
     bool local_19 = (bool)0;
     TileWalk t_3 = (TileWalk)0;
@@ -1186,14 +1193,14 @@ TileWalk tile_walk_begin(uint li_3, float3 x_11, float w_7, bool has_1)
     uint sum = 0u;
     uint s_5 = 0u;
 
-    if (has_1) {
+    if (has_2) {
         local_19 = (w_7 >= 0.0);
     } else {
         local_19 = false;
     }
     bool _e12 = local_19;
     uint _e14; InterlockedMax(tile_scale, (_e12 ? asuint(w_7) : 0u), _e14);
-    const WorkgroupBox _e15 = workgroup_box(li_3, x_11, has_1);
+    const WorkgroupBox _e15 = workgroup_box(li_3, x_11, has_2);
     GroupMemoryBarrierWithGroupSync();
     uint _e19 = tile_scale;
     GroupMemoryBarrierWithGroupSync();
@@ -1428,8 +1435,8 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
     } else {
         local_3 = false;
     }
-    bool has_2 = local_3;
-    if (has_2) {
+    bool has_3 = local_3;
+    if (has_3) {
         float3 _e65 = nn;
         n = (_e65 / (sqrt(len2_)).xxx);
     }
@@ -1448,7 +1455,7 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
     h = _e103;
     picks.n = 0u;
     hr = _e102;
-    const TileWalk _e118 = tile_walk_begin(lid, x_15, _e79.w, has_2);
+    const TileWalk _e118 = tile_walk_begin(lid, x_15, _e79.w, has_3);
     uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
     bool loop_init_5 = true;
     while(true) {
@@ -1486,7 +1493,7 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
                 {
                     uint _e131 = j;
                     uint b_10 = tile_list[min(uint(_e131), 1023u)];
-                    if (!(!(has_2))) {
+                    if (!(!(has_3))) {
                         BshNode _e140 = ConstructBshNode(asfloat(bsh_nodes.Load3(b_10*32+0)), asfloat(bsh_nodes.Load(b_10*32+12)), asuint(bsh_nodes.Load(b_10*32+16)), asuint(bsh_nodes.Load(b_10*32+20)), asuint(bsh_nodes.Load(b_10*32+24)), asfloat(bsh_nodes.Load(b_10*32+28)));
                         float3 _e141 = r;
                         const bool _e142 = bsh_reaches(_e140, x_15, _e141, _e79);
@@ -1505,7 +1512,7 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
             GroupMemoryBarrierWithGroupSync();
         }
     }
-    if (!(has_2)) {
+    if (!(has_3)) {
         if (inside) {
             out_tex[texel_1] = (0.0).xxxx;
         }

@@ -525,14 +525,14 @@ float ray_triangle(float3 o_1, float3 d_3, float3 a_3, float3 b_2, float3 c_4, f
 
     float3 e1_ = (b_2 - a_3);
     float3 e2_ = (c_4 - a_3);
-    float3 p_4 = cross(d_3, e2_);
-    float det = dot(e1_, p_4);
+    float3 p_5 = cross(d_3, e2_);
+    float det = dot(e1_, p_5);
     if ((abs(det) <= 0.0)) {
         return -1.0;
     }
     float inv = (1.0 / det);
     float3 s_10 = (o_1 - a_3);
-    float u_3 = (dot(s_10, p_4) * inv);
+    float u_3 = (dot(s_10, p_5) * inv);
     if (!((u_3 < 0.0))) {
         local_11 = (u_3 > 1.0);
     } else {
@@ -971,8 +971,8 @@ Connection connect_traced(uint li, float3 x_6, float3 n_3, float3 ng_2, float s_
 
 float4 surface_at(int2 texel)
 {
-    float4 p_5 = position_tex.Load(int3(texel, int(0)));
-    return ((p_5.w > 0.0) ? float4(p_5.xyz, 1.0) : (0.0).xxxx);
+    float4 p_6 = position_tex.Load(int3(texel, int(0)));
+    return ((p_6.w > 0.0) ? float4(p_6.xyz, 1.0) : (0.0).xxxx);
 }
 
 WorkgroupBox ConstructWorkgroupBox(float3 arg0, float3 arg1) {
@@ -1031,11 +1031,18 @@ WorkgroupBox workgroup_bounds(uint li_1, float3 lo_2, float3 hi_2)
     return workgroupbox;
 }
 
-WorkgroupBox workgroup_box(uint li_2, float3 p_2, bool has)
+WorkgroupBox point_box(float3 p_2, bool has)
 {
-    const WorkgroupBox _e9 = workgroup_bounds(li_2, (has ? p_2 : (3.4028235e38).xxx), (has ? p_2 : (-3.4028235e38).xxx));
-    const WorkgroupBox workgroupbox_1 = _e9;
+    const WorkgroupBox workgroupbox_1 = ConstructWorkgroupBox((has ? p_2 : (3.4028235e38).xxx), (has ? p_2 : (-3.4028235e38).xxx));
     return workgroupbox_1;
+}
+
+WorkgroupBox workgroup_box(uint li_2, float3 p_3, bool has_1)
+{
+    const WorkgroupBox _e3 = point_box(p_3, has_1);
+    const WorkgroupBox _e6 = workgroup_bounds(li_2, _e3.lo, _e3.hi);
+    const WorkgroupBox workgroupbox_2 = _e6;
+    return workgroupbox_2;
 }
 
 bool box_is_empty(WorkgroupBox b_4)
@@ -1045,7 +1052,7 @@ bool box_is_empty(WorkgroupBox b_4)
 
 uint tile_subtree(uint s_3, TileWalk t_1, bool list, uint at, uint start_2, uint to)
 {
-    uint p_3 = (uint)0;
+    uint p_4 = (uint)0;
     uint b_5 = (uint)0;
     bool local_19 = (bool)0;
     bool local_20 = (bool)0;
@@ -1056,7 +1063,7 @@ uint tile_subtree(uint s_3, TileWalk t_1, bool list, uint at, uint start_2, uint
         return 0u;
     }
     uint end_1 = asuint(bsh_nodes.Load(20+_e8*32));
-    p_3 = at;
+    p_4 = at;
     const uint _e21 = bsh_next_leaf_box(BSH, _e8, end_1, t_1.lo, t_1.hi, t_1.w);
     b_5 = _e21;
     uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
@@ -1074,7 +1081,7 @@ uint tile_subtree(uint s_3, TileWalk t_1, bool list, uint at, uint start_2, uint
         uint _e23 = b_5;
         if ((_e23 != end_1)) {
             if (!(!(list))) {
-                uint _e31 = p_3;
+                uint _e31 = p_4;
                 local_20 = (_e31 < to);
             } else {
                 local_20 = true;
@@ -1091,22 +1098,22 @@ uint tile_subtree(uint s_3, TileWalk t_1, bool list, uint at, uint start_2, uint
         }
         {
             if (list) {
-                uint _e39 = p_3;
+                uint _e39 = p_4;
                 local_21 = (_e39 >= start_2);
             } else {
                 local_21 = false;
             }
             bool _e42 = local_21;
             if (_e42) {
-                uint _e44 = p_3;
+                uint _e44 = p_4;
                 uint _e47 = b_5;
                 tile_list[min(uint((_e44 - start_2)), 1023u)] = _e47;
             }
-            uint _e48 = p_3;
-            p_3 = (_e48 + 1u);
+            uint _e48 = p_4;
+            p_4 = (_e48 + 1u);
         }
     }
-    uint _e61 = p_3;
+    uint _e61 = p_4;
     return (_e61 - at);
 }
 
@@ -1119,7 +1126,7 @@ TileWalk ConstructTileWalk(float3 arg0, float3 arg1, float arg2, uint arg3) {
     return ret;
 }
 
-TileWalk tile_walk_begin(uint li_3, float3 x_7, float w_6, bool has_1)
+TileWalk tile_walk_begin(uint li_3, float3 x_7, float w_6, bool has_2)
 {
     bool local_22 = (bool)0;
     TileWalk t_2 = (TileWalk)0;
@@ -1127,14 +1134,14 @@ TileWalk tile_walk_begin(uint li_3, float3 x_7, float w_6, bool has_1)
     uint sum_1 = 0u;
     uint s_5 = 0u;
 
-    if (has_1) {
+    if (has_2) {
         local_22 = (w_6 >= 0.0);
     } else {
         local_22 = false;
     }
     bool _e12 = local_22;
     uint _e14; InterlockedMax(tile_scale, (_e12 ? asuint(w_6) : 0u), _e14);
-    const WorkgroupBox _e15 = workgroup_box(li_3, x_7, has_1);
+    const WorkgroupBox _e15 = workgroup_box(li_3, x_7, has_2);
     GroupMemoryBarrierWithGroupSync();
     uint _e19 = tile_scale;
     GroupMemoryBarrierWithGroupSync();
@@ -1481,8 +1488,8 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
     } else {
         local_3 = false;
     }
-    bool has_2 = local_3;
-    if (has_2) {
+    bool has_3 = local_3;
+    if (has_3) {
         float3 _e65 = nn;
         n = (_e65 / (sqrt(len2_)).xxx);
     }
@@ -1500,7 +1507,7 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
     const uint _e103 = pick_stream(_e102);
     h = _e103;
     hc = _e102;
-    const TileWalk _e124 = tile_walk_begin(lid, x_11, _e79.w, has_2);
+    const TileWalk _e124 = tile_walk_begin(lid, x_11, _e79.w, has_3);
     uint2 loop_bound_11 = uint2(4294967295u, 4294967295u);
     bool loop_init_8 = true;
     while(true) {
@@ -1538,7 +1545,7 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
                 {
                     uint _e137 = j;
                     uint b_7 = tile_list[min(uint(_e137), 1023u)];
-                    if (!(!(has_2))) {
+                    if (!(!(has_3))) {
                         BshNode _e146 = ConstructBshNode(asfloat(bsh_nodes.Load3(b_7*32+0)), asfloat(bsh_nodes.Load(b_7*32+12)), asuint(bsh_nodes.Load(b_7*32+16)), asuint(bsh_nodes.Load(b_7*32+20)), asuint(bsh_nodes.Load(b_7*32+24)), asfloat(bsh_nodes.Load(b_7*32+28)));
                         float3 _e147 = r;
                         const bool _e148 = bsh_reaches(_e146, x_11, _e147, _e79);
@@ -1624,7 +1631,7 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
             GroupMemoryBarrierWithGroupSync();
         }
     }
-    if (!(has_2)) {
+    if (!(has_3)) {
         if (inside) {
             out_tex[texel_1] = (0.0).xxxx;
         }

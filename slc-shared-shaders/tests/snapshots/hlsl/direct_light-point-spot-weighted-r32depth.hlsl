@@ -659,14 +659,14 @@ float ray_triangle(float3 o_1, float3 d_3, float3 a_3, float3 b_2, float3 c_2, f
 
     float3 e1_ = (b_2 - a_3);
     float3 e2_ = (c_2 - a_3);
-    float3 p_9 = cross(d_3, e2_);
-    float det = dot(e1_, p_9);
+    float3 p_10 = cross(d_3, e2_);
+    float det = dot(e1_, p_10);
     if ((abs(det) <= 0.0)) {
         return -1.0;
     }
     float inv = (1.0 / det);
     float3 s_9 = (o_1 - a_3);
-    float u_3 = (dot(s_9, p_9) * inv);
+    float u_3 = (dot(s_9, p_10) * inv);
     if (!((u_3 < 0.0))) {
         local_13 = (u_3 > 1.0);
     } else {
@@ -1207,9 +1207,9 @@ float4 unproject_pixel(float4 c0_, float4 c1_, float4 c2_, float4 c3_, float px,
     }
     float x_14 = ((((px + 0.5) / width) * 2.0) - 1.0);
     float y_1 = (1.0 - (((py + 0.5) / height) * 2.0));
-    float4 p_10 = ((((c0_ * x_14) + (c1_ * y_1)) + (c2_ * depth_1)) + c3_);
-    float3 q_2 = float3((p_10.x / p_10.w), (p_10.y / p_10.w), (p_10.z / p_10.w));
-    if ((abs(p_10.w) > 0.0)) {
+    float4 p_11 = ((((c0_ * x_14) + (c1_ * y_1)) + (c2_ * depth_1)) + c3_);
+    float3 q_2 = float3((p_11.x / p_11.w), (p_11.y / p_11.w), (p_11.z / p_11.w));
+    if ((abs(p_11.w) > 0.0)) {
         const bool _e59 = finite3_(q_2);
         local_22 = _e59;
     } else {
@@ -1296,11 +1296,18 @@ WorkgroupBox workgroup_bounds(uint li_4, float3 lo_2, float3 hi_2)
     return workgroupbox;
 }
 
-WorkgroupBox workgroup_box(uint li_5, float3 p_7, bool has)
+WorkgroupBox point_box(float3 p_7, bool has)
 {
-    const WorkgroupBox _e9 = workgroup_bounds(li_5, (has ? p_7 : (3.4028235e38).xxx), (has ? p_7 : (-3.4028235e38).xxx));
-    const WorkgroupBox workgroupbox_1 = _e9;
+    const WorkgroupBox workgroupbox_1 = ConstructWorkgroupBox((has ? p_7 : (3.4028235e38).xxx), (has ? p_7 : (-3.4028235e38).xxx));
     return workgroupbox_1;
+}
+
+WorkgroupBox workgroup_box(uint li_5, float3 p_8, bool has_1)
+{
+    const WorkgroupBox _e3 = point_box(p_8, has_1);
+    const WorkgroupBox _e6 = workgroup_bounds(li_5, _e3.lo, _e3.hi);
+    const WorkgroupBox workgroupbox_2 = _e6;
+    return workgroupbox_2;
 }
 
 bool box_is_empty(WorkgroupBox b_4)
@@ -1310,7 +1317,7 @@ bool box_is_empty(WorkgroupBox b_4)
 
 uint tile_subtree(uint s_4, TileWalk t_1, bool list, uint at, uint start_2, uint to)
 {
-    uint p_8 = (uint)0;
+    uint p_9 = (uint)0;
     uint b_5 = (uint)0;
     bool local_23 = (bool)0;
     bool local_24 = (bool)0;
@@ -1321,7 +1328,7 @@ uint tile_subtree(uint s_4, TileWalk t_1, bool list, uint at, uint start_2, uint
         return 0u;
     }
     uint end_1 = asuint(bsh_nodes.Load(20+_e8*32));
-    p_8 = at;
+    p_9 = at;
     const uint _e21 = bsh_next_leaf_box(BSH, _e8, end_1, t_1.lo, t_1.hi, t_1.w);
     b_5 = _e21;
     uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
@@ -1339,7 +1346,7 @@ uint tile_subtree(uint s_4, TileWalk t_1, bool list, uint at, uint start_2, uint
         uint _e23 = b_5;
         if ((_e23 != end_1)) {
             if (!(!(list))) {
-                uint _e31 = p_8;
+                uint _e31 = p_9;
                 local_24 = (_e31 < to);
             } else {
                 local_24 = true;
@@ -1356,22 +1363,22 @@ uint tile_subtree(uint s_4, TileWalk t_1, bool list, uint at, uint start_2, uint
         }
         {
             if (list) {
-                uint _e39 = p_8;
+                uint _e39 = p_9;
                 local_25 = (_e39 >= start_2);
             } else {
                 local_25 = false;
             }
             bool _e42 = local_25;
             if (_e42) {
-                uint _e44 = p_8;
+                uint _e44 = p_9;
                 uint _e47 = b_5;
                 tile_list[min(uint((_e44 - start_2)), 1023u)] = _e47;
             }
-            uint _e48 = p_8;
-            p_8 = (_e48 + 1u);
+            uint _e48 = p_9;
+            p_9 = (_e48 + 1u);
         }
     }
-    uint _e61 = p_8;
+    uint _e61 = p_9;
     return (_e61 - at);
 }
 
@@ -1384,7 +1391,7 @@ TileWalk ConstructTileWalk(float3 arg0, float3 arg1, float arg2, uint arg3) {
     return ret;
 }
 
-TileWalk tile_walk_begin(uint li_6, float3 x_10, float w_7, bool has_1)
+TileWalk tile_walk_begin(uint li_6, float3 x_10, float w_7, bool has_2)
 {
     bool local_26 = (bool)0;
     TileWalk t_2 = (TileWalk)0;
@@ -1392,14 +1399,14 @@ TileWalk tile_walk_begin(uint li_6, float3 x_10, float w_7, bool has_1)
     uint sum_1 = 0u;
     uint s_6 = 0u;
 
-    if (has_1) {
+    if (has_2) {
         local_26 = (w_7 >= 0.0);
     } else {
         local_26 = false;
     }
     bool _e12 = local_26;
     uint _e14; InterlockedMax(tile_scale, (_e12 ? asuint(w_7) : 0u), _e14);
-    const WorkgroupBox _e15 = workgroup_box(li_6, x_10, has_1);
+    const WorkgroupBox _e15 = workgroup_box(li_6, x_10, has_2);
     GroupMemoryBarrierWithGroupSync();
     uint _e19 = tile_scale;
     GroupMemoryBarrierWithGroupSync();
@@ -1715,8 +1722,8 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
     } else {
         local_3 = false;
     }
-    bool has_2 = local_3;
-    if (has_2) {
+    bool has_3 = local_3;
+    if (has_3) {
         float3 _e65 = nn;
         n = (_e65 / (sqrt(len2_)).xxx);
     }
@@ -1735,7 +1742,7 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
     h = _e103;
     const WeightedPicks _e113 = weighted_picks(_e102);
     picks = _e113;
-    const TileWalk _e116 = tile_walk_begin(lid, x_15, _e79.w, has_2);
+    const TileWalk _e116 = tile_walk_begin(lid, x_15, _e79.w, has_3);
     uint2 loop_bound_12 = uint2(4294967295u, 4294967295u);
     bool loop_init_9 = true;
     while(true) {
@@ -1773,7 +1780,7 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
                 {
                     uint _e129 = j;
                     uint b_7 = tile_list[min(uint(_e129), 1023u)];
-                    if (!(!(has_2))) {
+                    if (!(!(has_3))) {
                         BshNode _e138 = ConstructBshNode(asfloat(bsh_nodes.Load3(b_7*32+0)), asfloat(bsh_nodes.Load(b_7*32+12)), asuint(bsh_nodes.Load(b_7*32+16)), asuint(bsh_nodes.Load(b_7*32+20)), asuint(bsh_nodes.Load(b_7*32+24)), asfloat(bsh_nodes.Load(b_7*32+28)));
                         float3 _e139 = r;
                         const bool _e140 = bsh_reaches(_e138, x_15, _e139, _e79);
@@ -1796,7 +1803,7 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
             GroupMemoryBarrierWithGroupSync();
         }
     }
-    if (!(has_2)) {
+    if (!(has_3)) {
         if (inside) {
             out_tex[texel_1] = (0.0).xxxx;
         }

@@ -798,14 +798,14 @@ float ray_triangle(float3 o_1, float3 d_3, float3 a_5, float3 b_4, float3 c_7, f
 
     float3 e1_ = (b_4 - a_5);
     float3 e2_ = (c_7 - a_5);
-    float3 p_7 = cross(d_3, e2_);
-    float det = dot(e1_, p_7);
+    float3 p_8 = cross(d_3, e2_);
+    float det = dot(e1_, p_8);
     if ((abs(det) <= 0.0)) {
         return -1.0;
     }
     float inv = (1.0 / det);
     float3 s_12 = (o_1 - a_5);
-    float u_4 = (dot(s_12, p_7) * inv);
+    float u_4 = (dot(s_12, p_8) * inv);
     if (!((u_4 < 0.0))) {
         local_17 = (u_4 > 1.0);
     } else {
@@ -1289,8 +1289,8 @@ float light_range_scale(uint li_1, float3 x_7, float3 r_9, float4 rl_4)
 
 float4 surface_at(int2 texel)
 {
-    float4 p_8 = position_tex.Load(int3(texel, int(0)));
-    return ((p_8.w > 0.0) ? float4(p_8.xyz, 1.0) : (0.0).xxxx);
+    float4 p_9 = position_tex.Load(int3(texel, int(0)));
+    return ((p_9.w > 0.0) ? float4(p_9.xyz, 1.0) : (0.0).xxxx);
 }
 
 WorkgroupBox ConstructWorkgroupBox(float3 arg0, float3 arg1) {
@@ -1349,11 +1349,18 @@ WorkgroupBox workgroup_bounds(uint li_2, float3 lo_2, float3 hi_2)
     return workgroupbox;
 }
 
-WorkgroupBox workgroup_box(uint li_3, float3 p_4, bool has)
+WorkgroupBox point_box(float3 p_4, bool has)
 {
-    const WorkgroupBox _e9 = workgroup_bounds(li_3, (has ? p_4 : (3.4028235e38).xxx), (has ? p_4 : (-3.4028235e38).xxx));
-    const WorkgroupBox workgroupbox_1 = _e9;
+    const WorkgroupBox workgroupbox_1 = ConstructWorkgroupBox((has ? p_4 : (3.4028235e38).xxx), (has ? p_4 : (-3.4028235e38).xxx));
     return workgroupbox_1;
+}
+
+WorkgroupBox workgroup_box(uint li_3, float3 p_5, bool has_1)
+{
+    const WorkgroupBox _e3 = point_box(p_5, has_1);
+    const WorkgroupBox _e6 = workgroup_bounds(li_3, _e3.lo, _e3.hi);
+    const WorkgroupBox workgroupbox_2 = _e6;
+    return workgroupbox_2;
 }
 
 bool box_is_empty(WorkgroupBox b_6)
@@ -1363,7 +1370,7 @@ bool box_is_empty(WorkgroupBox b_6)
 
 uint tile_subtree(uint s_3, TileWalk t_1, bool list, uint at, uint start_2, uint to)
 {
-    uint p_5 = (uint)0;
+    uint p_6 = (uint)0;
     uint b_7 = (uint)0;
     bool local_26 = (bool)0;
     bool local_27 = (bool)0;
@@ -1374,7 +1381,7 @@ uint tile_subtree(uint s_3, TileWalk t_1, bool list, uint at, uint start_2, uint
         return 0u;
     }
     uint end_1 = asuint(bsh_nodes.Load(20+_e8*32));
-    p_5 = at;
+    p_6 = at;
     const uint _e21 = bsh_next_leaf_box(BSH, _e8, end_1, t_1.lo, t_1.hi, t_1.w);
     b_7 = _e21;
     uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
@@ -1392,7 +1399,7 @@ uint tile_subtree(uint s_3, TileWalk t_1, bool list, uint at, uint start_2, uint
         uint _e23 = b_7;
         if ((_e23 != end_1)) {
             if (!(!(list))) {
-                uint _e31 = p_5;
+                uint _e31 = p_6;
                 local_27 = (_e31 < to);
             } else {
                 local_27 = true;
@@ -1409,22 +1416,22 @@ uint tile_subtree(uint s_3, TileWalk t_1, bool list, uint at, uint start_2, uint
         }
         {
             if (list) {
-                uint _e39 = p_5;
+                uint _e39 = p_6;
                 local_28 = (_e39 >= start_2);
             } else {
                 local_28 = false;
             }
             bool _e42 = local_28;
             if (_e42) {
-                uint _e44 = p_5;
+                uint _e44 = p_6;
                 uint _e47 = b_7;
                 tile_list[min(uint((_e44 - start_2)), 1023u)] = _e47;
             }
-            uint _e48 = p_5;
-            p_5 = (_e48 + 1u);
+            uint _e48 = p_6;
+            p_6 = (_e48 + 1u);
         }
     }
-    uint _e61 = p_5;
+    uint _e61 = p_6;
     return (_e61 - at);
 }
 
@@ -1437,7 +1444,7 @@ TileWalk ConstructTileWalk(float3 arg0, float3 arg1, float arg2, uint arg3) {
     return ret;
 }
 
-TileWalk tile_walk_begin(uint li_4, float3 x_8, float w_9, bool has_1)
+TileWalk tile_walk_begin(uint li_4, float3 x_8, float w_9, bool has_2)
 {
     bool local_29 = (bool)0;
     TileWalk t_2 = (TileWalk)0;
@@ -1445,14 +1452,14 @@ TileWalk tile_walk_begin(uint li_4, float3 x_8, float w_9, bool has_1)
     uint sum_1 = 0u;
     uint s_5 = 0u;
 
-    if (has_1) {
+    if (has_2) {
         local_29 = (w_9 >= 0.0);
     } else {
         local_29 = false;
     }
     bool _e12 = local_29;
     uint _e14; InterlockedMax(tile_scale, (_e12 ? asuint(w_9) : 0u), _e14);
-    const WorkgroupBox _e15 = workgroup_box(li_4, x_8, has_1);
+    const WorkgroupBox _e15 = workgroup_box(li_4, x_8, has_2);
     GroupMemoryBarrierWithGroupSync();
     uint _e19 = tile_scale;
     GroupMemoryBarrierWithGroupSync();
@@ -1784,7 +1791,7 @@ uint reuse_domains(float3 x_13, float3 n_12, float d_6, uint h_2, inout Domain d
     uint nd = 0u;
     uint hr = (uint)0;
     uint j_4 = 0u;
-    float2 p_6 = (float2)0;
+    float2 p_7 = (float2)0;
     bool local_33 = (bool)0;
     bool local_34 = (bool)0;
     bool local_35 = (bool)0;
@@ -1825,7 +1832,7 @@ uint reuse_domains(float3 x_13, float3 n_12, float d_6, uint h_2, inout Domain d
             break;
         }
         {
-            p_6 = _e33.xy;
+            p_7 = _e33.xy;
             uint _e46 = j_4;
             if ((_e46 > 0u)) {
                 uint _e49 = hr;
@@ -1836,14 +1843,14 @@ uint reuse_domains(float3 x_13, float3 n_12, float d_6, uint h_2, inout Domain d
                 uint _e53 = hr;
                 const uint _e54 = pcg_hash(_e53);
                 hr = _e54;
-                float2 _e55 = p_6;
+                float2 _e55 = p_7;
                 float _e58 = reuse.radius;
                 uint _e59 = hr;
                 const float _e60 = xi_from_bits(_e59);
                 const float2 _e61 = disk_offset(_e58, _e52, _e60);
-                p_6 = (_e55 + _e61);
+                p_7 = (_e55 + _e61);
             }
-            float2 _e63 = p_6;
+            float2 _e63 = p_7;
             int2 t_8 = naga_f2i32(round(_e63));
             if (!((t_8.x < int(0)))) {
                 local_33 = (t_8.y < int(0));
@@ -2182,14 +2189,14 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
     } else {
         local_3 = false;
     }
-    bool has_2 = local_3;
-    if (has_2) {
+    bool has_3 = local_3;
+    if (has_3) {
         float3 _e65 = nn;
         n = (_e65 / (sqrt(len2_)).xxx);
     }
     float3 _e76 = n;
     r = _e76;
-    if (has_2) {
+    if (has_3) {
         float4 mr = metal_rough_tex.Load(int3(texel_1, int(0)));
         float4 _e83 = base_color_tex.Load(int3(texel_1, int(0)));
         float3 _e90 = view.eye;
@@ -2220,7 +2227,7 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
     const uint _e138 = pick_stream(_e137);
     h = _e138;
     hc = _e137;
-    const TileWalk _e160 = tile_walk_begin(lid, x_17, _e114.w, has_2);
+    const TileWalk _e160 = tile_walk_begin(lid, x_17, _e114.w, has_3);
     uint2 loop_bound_15 = uint2(4294967295u, 4294967295u);
     bool loop_init_12 = true;
     while(true) {
@@ -2258,7 +2265,7 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
                 {
                     uint _e173 = j;
                     uint b_10 = tile_list[min(uint(_e173), 1023u)];
-                    if (!(!(has_2))) {
+                    if (!(!(has_3))) {
                         BshNode _e182 = ConstructBshNode(asfloat(bsh_nodes.Load3(b_10*32+0)), asfloat(bsh_nodes.Load(b_10*32+12)), asuint(bsh_nodes.Load(b_10*32+16)), asuint(bsh_nodes.Load(b_10*32+20)), asuint(bsh_nodes.Load(b_10*32+24)), asfloat(bsh_nodes.Load(b_10*32+28)));
                         float3 _e183 = r;
                         const bool _e184 = bsh_reaches(_e182, x_17, _e183, _e114);
@@ -2346,7 +2353,7 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
             GroupMemoryBarrierWithGroupSync();
         }
     }
-    if (!(has_2)) {
+    if (!(has_3)) {
         if (inside) {
             out_tex[texel_1] = (0.0).xxxx;
             uint _e270 = view.width;

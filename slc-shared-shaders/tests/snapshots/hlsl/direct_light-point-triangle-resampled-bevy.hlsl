@@ -697,14 +697,14 @@ float ray_triangle(float3 o_1, float3 d_3, float3 a_5, float3 b_4, float3 c_7, f
 
     float3 e1_ = (b_4 - a_5);
     float3 e2_ = (c_7 - a_5);
-    float3 p_4 = cross(d_3, e2_);
-    float det = dot(e1_, p_4);
+    float3 p_5 = cross(d_3, e2_);
+    float det = dot(e1_, p_5);
     if ((abs(det) <= 0.0)) {
         return -1.0;
     }
     float inv = (1.0 / det);
     float3 s_10 = (o_1 - a_5);
-    float u_3 = (dot(s_10, p_4) * inv);
+    float u_3 = (dot(s_10, p_5) * inv);
     if (!((u_3 < 0.0))) {
         local_16 = (u_3 > 1.0);
     } else {
@@ -1164,8 +1164,8 @@ float light_range_scale(uint li_1, float3 x_7, float3 r_8, float4 rl_4)
 
 float4 surface_at(int2 texel)
 {
-    float4 p_5 = position_tex.Load(int3(texel, int(0)));
-    return ((p_5.w > 0.0) ? float4(p_5.xyz, 1.0) : (0.0).xxxx);
+    float4 p_6 = position_tex.Load(int3(texel, int(0)));
+    return ((p_6.w > 0.0) ? float4(p_6.xyz, 1.0) : (0.0).xxxx);
 }
 
 WorkgroupBox ConstructWorkgroupBox(float3 arg0, float3 arg1) {
@@ -1224,11 +1224,18 @@ WorkgroupBox workgroup_bounds(uint li_2, float3 lo_2, float3 hi_2)
     return workgroupbox;
 }
 
-WorkgroupBox workgroup_box(uint li_3, float3 p_2, bool has)
+WorkgroupBox point_box(float3 p_2, bool has)
 {
-    const WorkgroupBox _e9 = workgroup_bounds(li_3, (has ? p_2 : (3.4028235e38).xxx), (has ? p_2 : (-3.4028235e38).xxx));
-    const WorkgroupBox workgroupbox_1 = _e9;
+    const WorkgroupBox workgroupbox_1 = ConstructWorkgroupBox((has ? p_2 : (3.4028235e38).xxx), (has ? p_2 : (-3.4028235e38).xxx));
     return workgroupbox_1;
+}
+
+WorkgroupBox workgroup_box(uint li_3, float3 p_3, bool has_1)
+{
+    const WorkgroupBox _e3 = point_box(p_3, has_1);
+    const WorkgroupBox _e6 = workgroup_bounds(li_3, _e3.lo, _e3.hi);
+    const WorkgroupBox workgroupbox_2 = _e6;
+    return workgroupbox_2;
 }
 
 bool box_is_empty(WorkgroupBox b_6)
@@ -1238,7 +1245,7 @@ bool box_is_empty(WorkgroupBox b_6)
 
 uint tile_subtree(uint s_3, TileWalk t_1, bool list, uint at, uint start_2, uint to)
 {
-    uint p_3 = (uint)0;
+    uint p_4 = (uint)0;
     uint b_7 = (uint)0;
     bool local_24 = (bool)0;
     bool local_25 = (bool)0;
@@ -1249,7 +1256,7 @@ uint tile_subtree(uint s_3, TileWalk t_1, bool list, uint at, uint start_2, uint
         return 0u;
     }
     uint end_1 = asuint(bsh_nodes.Load(20+_e8*32));
-    p_3 = at;
+    p_4 = at;
     const uint _e21 = bsh_next_leaf_box(BSH, _e8, end_1, t_1.lo, t_1.hi, t_1.w);
     b_7 = _e21;
     uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
@@ -1267,7 +1274,7 @@ uint tile_subtree(uint s_3, TileWalk t_1, bool list, uint at, uint start_2, uint
         uint _e23 = b_7;
         if ((_e23 != end_1)) {
             if (!(!(list))) {
-                uint _e31 = p_3;
+                uint _e31 = p_4;
                 local_25 = (_e31 < to);
             } else {
                 local_25 = true;
@@ -1284,22 +1291,22 @@ uint tile_subtree(uint s_3, TileWalk t_1, bool list, uint at, uint start_2, uint
         }
         {
             if (list) {
-                uint _e39 = p_3;
+                uint _e39 = p_4;
                 local_26 = (_e39 >= start_2);
             } else {
                 local_26 = false;
             }
             bool _e42 = local_26;
             if (_e42) {
-                uint _e44 = p_3;
+                uint _e44 = p_4;
                 uint _e47 = b_7;
                 tile_list[min(uint((_e44 - start_2)), 1023u)] = _e47;
             }
-            uint _e48 = p_3;
-            p_3 = (_e48 + 1u);
+            uint _e48 = p_4;
+            p_4 = (_e48 + 1u);
         }
     }
-    uint _e61 = p_3;
+    uint _e61 = p_4;
     return (_e61 - at);
 }
 
@@ -1312,7 +1319,7 @@ TileWalk ConstructTileWalk(float3 arg0, float3 arg1, float arg2, uint arg3) {
     return ret;
 }
 
-TileWalk tile_walk_begin(uint li_4, float3 x_8, float w_7, bool has_1)
+TileWalk tile_walk_begin(uint li_4, float3 x_8, float w_7, bool has_2)
 {
     bool local_27 = (bool)0;
     TileWalk t_2 = (TileWalk)0;
@@ -1320,14 +1327,14 @@ TileWalk tile_walk_begin(uint li_4, float3 x_8, float w_7, bool has_1)
     uint sum_1 = 0u;
     uint s_5 = 0u;
 
-    if (has_1) {
+    if (has_2) {
         local_27 = (w_7 >= 0.0);
     } else {
         local_27 = false;
     }
     bool _e12 = local_27;
     uint _e14; InterlockedMax(tile_scale, (_e12 ? asuint(w_7) : 0u), _e14);
-    const WorkgroupBox _e15 = workgroup_box(li_4, x_8, has_1);
+    const WorkgroupBox _e15 = workgroup_box(li_4, x_8, has_2);
     GroupMemoryBarrierWithGroupSync();
     uint _e19 = tile_scale;
     GroupMemoryBarrierWithGroupSync();
@@ -1686,14 +1693,14 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
     } else {
         local_3 = false;
     }
-    bool has_2 = local_3;
-    if (has_2) {
+    bool has_3 = local_3;
+    if (has_3) {
         float3 _e65 = nn;
         n = (_e65 / (sqrt(len2_)).xxx);
     }
     float3 _e76 = n;
     r = _e76;
-    if (has_2) {
+    if (has_3) {
         float4 mr = metal_rough_tex.Load(int3(texel_1, int(0)));
         float4 _e83 = base_color_tex.Load(int3(texel_1, int(0)));
         float3 _e90 = view.eye;
@@ -1724,7 +1731,7 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
     const uint _e138 = pick_stream(_e137);
     h = _e138;
     hc = _e137;
-    const TileWalk _e159 = tile_walk_begin(lid, x_13, _e114.w, has_2);
+    const TileWalk _e159 = tile_walk_begin(lid, x_13, _e114.w, has_3);
     uint2 loop_bound_11 = uint2(4294967295u, 4294967295u);
     bool loop_init_8 = true;
     while(true) {
@@ -1762,7 +1769,7 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
                 {
                     uint _e172 = j;
                     uint b_9 = tile_list[min(uint(_e172), 1023u)];
-                    if (!(!(has_2))) {
+                    if (!(!(has_3))) {
                         BshNode _e181 = ConstructBshNode(asfloat(bsh_nodes.Load3(b_9*32+0)), asfloat(bsh_nodes.Load(b_9*32+12)), asuint(bsh_nodes.Load(b_9*32+16)), asuint(bsh_nodes.Load(b_9*32+20)), asuint(bsh_nodes.Load(b_9*32+24)), asfloat(bsh_nodes.Load(b_9*32+28)));
                         float3 _e182 = r;
                         const bool _e183 = bsh_reaches(_e181, x_13, _e182, _e114);
@@ -1846,7 +1853,7 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
             GroupMemoryBarrierWithGroupSync();
         }
     }
-    if (!(has_2)) {
+    if (!(has_3)) {
         if (inside) {
             out_tex[texel_1] = (0.0).xxxx;
         }

@@ -793,14 +793,14 @@ float ray_triangle(float3 o_1, float3 d_3, float3 a_5, float3 b_4, float3 c_5, f
 
     float3 e1_ = (b_4 - a_5);
     float3 e2_ = (c_5 - a_5);
-    float3 p_9 = cross(d_3, e2_);
-    float det = dot(e1_, p_9);
+    float3 p_10 = cross(d_3, e2_);
+    float det = dot(e1_, p_10);
     if ((abs(det) <= 0.0)) {
         return -1.0;
     }
     float inv_1 = (1.0 / det);
     float3 s_9 = (o_1 - a_5);
-    float u_3 = (dot(s_9, p_9) * inv_1);
+    float u_3 = (dot(s_9, p_10) * inv_1);
     if (!((u_3 < 0.0))) {
         local_17 = (u_3 > 1.0);
     } else {
@@ -1329,8 +1329,8 @@ void weighted_offer(inout WeightedPicks picks_2, uint li_3, float w_7)
 
 float4 surface_at(int2 texel)
 {
-    float4 p_10 = position_tex.Load(int3(texel, int(0)));
-    return ((p_10.w > 0.0) ? float4(p_10.xyz, 1.0) : (0.0).xxxx);
+    float4 p_11 = position_tex.Load(int3(texel, int(0)));
+    return ((p_11.w > 0.0) ? float4(p_11.xyz, 1.0) : (0.0).xxxx);
 }
 
 uint naga_div(uint lhs, uint rhs) {
@@ -1393,11 +1393,18 @@ WorkgroupBox workgroup_bounds(uint li_4, float3 lo_2, float3 hi_2)
     return workgroupbox;
 }
 
-WorkgroupBox workgroup_box(uint li_5, float3 p_7, bool has)
+WorkgroupBox point_box(float3 p_7, bool has)
 {
-    const WorkgroupBox _e9 = workgroup_bounds(li_5, (has ? p_7 : (3.4028235e38).xxx), (has ? p_7 : (-3.4028235e38).xxx));
-    const WorkgroupBox workgroupbox_1 = _e9;
+    const WorkgroupBox workgroupbox_1 = ConstructWorkgroupBox((has ? p_7 : (3.4028235e38).xxx), (has ? p_7 : (-3.4028235e38).xxx));
     return workgroupbox_1;
+}
+
+WorkgroupBox workgroup_box(uint li_5, float3 p_8, bool has_1)
+{
+    const WorkgroupBox _e3 = point_box(p_8, has_1);
+    const WorkgroupBox _e6 = workgroup_bounds(li_5, _e3.lo, _e3.hi);
+    const WorkgroupBox workgroupbox_2 = _e6;
+    return workgroupbox_2;
 }
 
 bool box_is_empty(WorkgroupBox b_6)
@@ -1407,7 +1414,7 @@ bool box_is_empty(WorkgroupBox b_6)
 
 uint tile_subtree(uint s_4, TileWalk t_1, bool list, uint at, uint start_2, uint to)
 {
-    uint p_8 = (uint)0;
+    uint p_9 = (uint)0;
     uint b_7 = (uint)0;
     bool local_25 = (bool)0;
     bool local_26 = (bool)0;
@@ -1418,7 +1425,7 @@ uint tile_subtree(uint s_4, TileWalk t_1, bool list, uint at, uint start_2, uint
         return 0u;
     }
     uint end_1 = asuint(bsh_nodes.Load(20+_e8*32));
-    p_8 = at;
+    p_9 = at;
     const uint _e21 = bsh_next_leaf_box(BSH, _e8, end_1, t_1.lo, t_1.hi, t_1.w);
     b_7 = _e21;
     uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
@@ -1436,7 +1443,7 @@ uint tile_subtree(uint s_4, TileWalk t_1, bool list, uint at, uint start_2, uint
         uint _e23 = b_7;
         if ((_e23 != end_1)) {
             if (!(!(list))) {
-                uint _e31 = p_8;
+                uint _e31 = p_9;
                 local_26 = (_e31 < to);
             } else {
                 local_26 = true;
@@ -1453,22 +1460,22 @@ uint tile_subtree(uint s_4, TileWalk t_1, bool list, uint at, uint start_2, uint
         }
         {
             if (list) {
-                uint _e39 = p_8;
+                uint _e39 = p_9;
                 local_27 = (_e39 >= start_2);
             } else {
                 local_27 = false;
             }
             bool _e42 = local_27;
             if (_e42) {
-                uint _e44 = p_8;
+                uint _e44 = p_9;
                 uint _e47 = b_7;
                 tile_list[min(uint((_e44 - start_2)), 1023u)] = _e47;
             }
-            uint _e48 = p_8;
-            p_8 = (_e48 + 1u);
+            uint _e48 = p_9;
+            p_9 = (_e48 + 1u);
         }
     }
-    uint _e61 = p_8;
+    uint _e61 = p_9;
     return (_e61 - at);
 }
 
@@ -1481,7 +1488,7 @@ TileWalk ConstructTileWalk(float3 arg0, float3 arg1, float arg2, uint arg3) {
     return ret;
 }
 
-TileWalk tile_walk_begin(uint li_6, float3 x_10, float w_8, bool has_1)
+TileWalk tile_walk_begin(uint li_6, float3 x_10, float w_8, bool has_2)
 {
     bool local_28 = (bool)0;
     TileWalk t_2 = (TileWalk)0;
@@ -1489,14 +1496,14 @@ TileWalk tile_walk_begin(uint li_6, float3 x_10, float w_8, bool has_1)
     uint sum_1 = 0u;
     uint s_6 = 0u;
 
-    if (has_1) {
+    if (has_2) {
         local_28 = (w_8 >= 0.0);
     } else {
         local_28 = false;
     }
     bool _e12 = local_28;
     uint _e14; InterlockedMax(tile_scale, (_e12 ? asuint(w_8) : 0u), _e14);
-    const WorkgroupBox _e15 = workgroup_box(li_6, x_10, has_1);
+    const WorkgroupBox _e15 = workgroup_box(li_6, x_10, has_2);
     GroupMemoryBarrierWithGroupSync();
     uint _e19 = tile_scale;
     GroupMemoryBarrierWithGroupSync();
@@ -1843,14 +1850,14 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
     } else {
         local_3 = false;
     }
-    bool has_2 = local_3;
-    if (has_2) {
+    bool has_3 = local_3;
+    if (has_3) {
         float3 _e65 = nn;
         n = (_e65 / (sqrt(len2_1)).xxx);
     }
     float3 _e76 = n;
     r = _e76;
-    if (has_2) {
+    if (has_3) {
         float4 mr = metal_rough_tex.Load(int3(texel_1, int(0)));
         float4 _e83 = base_color_tex.Load(int3(texel_1, int(0)));
         float3 _e90 = view.eye;
@@ -1883,7 +1890,7 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
     h = _e140;
     const WeightedPicks _e150 = weighted_picks(_e139);
     picks = _e150;
-    const TileWalk _e153 = tile_walk_begin(lid, x_14, _e116.w, has_2);
+    const TileWalk _e153 = tile_walk_begin(lid, x_14, _e116.w, has_3);
     uint2 loop_bound_12 = uint2(4294967295u, 4294967295u);
     bool loop_init_9 = true;
     while(true) {
@@ -1921,7 +1928,7 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
                 {
                     uint _e166 = j;
                     uint b_9 = tile_list[min(uint(_e166), 1023u)];
-                    if (!(!(has_2))) {
+                    if (!(!(has_3))) {
                         BshNode _e175 = ConstructBshNode(asfloat(bsh_nodes.Load3(b_9*32+0)), asfloat(bsh_nodes.Load(b_9*32+12)), asuint(bsh_nodes.Load(b_9*32+16)), asuint(bsh_nodes.Load(b_9*32+20)), asuint(bsh_nodes.Load(b_9*32+24)), asfloat(bsh_nodes.Load(b_9*32+28)));
                         float3 _e176 = r;
                         const bool _e177 = bsh_reaches(_e175, x_14, _e176, _e116);
@@ -1944,7 +1951,7 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
             GroupMemoryBarrierWithGroupSync();
         }
     }
-    if (!(has_2)) {
+    if (!(has_3)) {
         if (inside) {
             out_tex[texel_1] = (0.0).xxxx;
             specular_tex[texel_1] = (0.0).xxxx;

@@ -511,11 +511,18 @@ WorkgroupBox workgroup_bounds(uint li_1, float3 lo, float3 hi)
     return workgroupbox;
 }
 
-WorkgroupBox workgroup_box(uint li_2, float3 p, bool has)
+WorkgroupBox point_box(float3 p, bool has)
 {
-    const WorkgroupBox _e9 = workgroup_bounds(li_2, (has ? p : (3.4028235e38).xxx), (has ? p : (-3.4028235e38).xxx));
-    const WorkgroupBox workgroupbox_1 = _e9;
+    const WorkgroupBox workgroupbox_1 = ConstructWorkgroupBox((has ? p : (3.4028235e38).xxx), (has ? p : (-3.4028235e38).xxx));
     return workgroupbox_1;
+}
+
+WorkgroupBox workgroup_box(uint li_2, float3 p_1, bool has_1)
+{
+    const WorkgroupBox _e3 = point_box(p_1, has_1);
+    const WorkgroupBox _e6 = workgroup_bounds(li_2, _e3.lo, _e3.hi);
+    const WorkgroupBox workgroupbox_2 = _e6;
+    return workgroupbox_2;
 }
 
 bool box_is_empty(WorkgroupBox b)
@@ -525,8 +532,8 @@ bool box_is_empty(WorkgroupBox b)
 
 float4 surface_at(int2 texel)
 {
-    float4 p_4 = position_tex.Load(int3(texel, int(0)));
-    return ((p_4.w > 0.0) ? float4(p_4.xyz, 1.0) : (0.0).xxxx);
+    float4 p_5 = position_tex.Load(int3(texel, int(0)));
+    return ((p_5.w > 0.0) ? float4(p_5.xyz, 1.0) : (0.0).xxxx);
 }
 
 GbTexel ConstructGbTexel(float4 arg0, float4 arg1) {
@@ -630,18 +637,18 @@ float near_cull_r2_of(uint slot_1, float near_r2_3)
 
 WorkgroupBox load_receiver(uint li_3, uint pix, bool inside)
 {
-    float4 p_1 = (0.0).xxxx;
+    float4 p_2 = (0.0).xxxx;
     bool local_12 = (bool)0;
 
     if (inside) {
         const GbTexel _e6 = gbuffer_at(pix);
-        p_1 = _e6.position;
+        p_2 = _e6.position;
         nrm = _e6.normal.xyz;
     }
-    float4 _e12 = p_1;
+    float4 _e12 = p_2;
     pos = _e12.xyz;
     if (inside) {
-        float _e18 = p_1.w;
+        float _e18 = p_2.w;
         local_12 = (_e18 > 0.0);
     } else {
         local_12 = false;
@@ -657,8 +664,8 @@ WorkgroupBox load_receiver(uint li_3, uint pix, bool inside)
     float3 _e30 = pos;
     bool _e32 = valid;
     const WorkgroupBox _e33 = workgroup_box(li_3, _e30, _e32);
-    const WorkgroupBox workgroupbox_2 = _e33;
-    return workgroupbox_2;
+    const WorkgroupBox workgroupbox_3 = _e33;
+    return workgroupbox_3;
 }
 
 uint cluster_slot(uint c_1, uint k)
@@ -683,12 +690,11 @@ void quarter_boxes(uint li_4, uint3 lid_1)
     uint x_1 = (uint)0;
 
     quarter_bit = (1u << ((QUARTER_SHIFT + ((lid_1.x >= HALF) ? 1u : 0u)) + ((lid_1.y >= HALF) ? 2u : 0u)));
-    float3 _e25 = pos;
-    bool _e27 = valid;
-    wg_lo[min(uint(li_4), 63u)] = (_e27 ? _e25 : (3.4028235e38).xxx);
-    float3 _e34 = pos;
-    bool _e36 = valid;
-    wg_hi[min(uint(li_4), 63u)] = (_e36 ? _e34 : (-3.4028235e38).xxx);
+    float3 _e21 = pos;
+    bool _e23 = valid;
+    const WorkgroupBox _e24 = point_box(_e21, _e23);
+    wg_lo[min(uint(li_4), 63u)] = _e24.lo;
+    wg_hi[min(uint(li_4), 63u)] = _e24.hi;
     GroupMemoryBarrierWithGroupSync();
     if ((li_4 < 4u)) {
         uint x0_ = (naga_mod(li_4, 2u) * HALF);
@@ -700,12 +706,12 @@ void quarter_boxes(uint li_4, uint3 lid_1)
             if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
             loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
             if (!loop_init_1) {
-                uint _e92 = y;
-                y = (_e92 + 1u);
+                uint _e85 = y;
+                y = (_e85 + 1u);
             }
             loop_init_1 = false;
-            uint _e55 = y;
-            if ((_e55 < min((y0_ + HALF), TILE))) {
+            uint _e48 = y;
+            if ((_e48 < min((y0_ + HALF), TILE))) {
             } else {
                 break;
             }
@@ -717,56 +723,56 @@ void quarter_boxes(uint li_4, uint3 lid_1)
                     if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
                     loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
                     if (!loop_init_2) {
-                        uint _e89 = x_1;
-                        x_1 = (_e89 + 1u);
+                        uint _e82 = x_1;
+                        x_1 = (_e82 + 1u);
                     }
                     loop_init_2 = false;
-                    uint _e62 = x_1;
-                    if ((_e62 < min((x0_ + HALF), TILE))) {
+                    uint _e55 = x_1;
+                    if ((_e55 < min((x0_ + HALF), TILE))) {
                     } else {
                         break;
                     }
                     {
-                        float3 _e68 = lo_1;
-                        uint _e70 = y;
-                        uint _e73 = x_1;
-                        float3 _e76 = wg_lo[min(uint(((_e70 * TILE) + _e73)), 63u)];
-                        lo_1 = min(_e68, _e76);
-                        float3 _e78 = hi_1;
-                        uint _e80 = y;
-                        uint _e83 = x_1;
-                        float3 _e86 = wg_hi[min(uint(((_e80 * TILE) + _e83)), 63u)];
-                        hi_1 = max(_e78, _e86);
+                        float3 _e61 = lo_1;
+                        uint _e63 = y;
+                        uint _e66 = x_1;
+                        float3 _e69 = wg_lo[min(uint(((_e63 * TILE) + _e66)), 63u)];
+                        lo_1 = min(_e61, _e69);
+                        float3 _e71 = hi_1;
+                        uint _e73 = y;
+                        uint _e76 = x_1;
+                        float3 _e79 = wg_hi[min(uint(((_e73 * TILE) + _e76)), 63u)];
+                        hi_1 = max(_e71, _e79);
                     }
                 }
             }
         }
-        float3 _e96 = lo_1;
-        quarter_lo[min(uint(li_4), 3u)] = _e96;
-        float3 _e99 = hi_1;
-        quarter_hi[min(uint(li_4), 3u)] = _e99;
+        float3 _e89 = lo_1;
+        quarter_lo[min(uint(li_4), 3u)] = _e89;
+        float3 _e92 = hi_1;
+        quarter_hi[min(uint(li_4), 3u)] = _e92;
     }
     GroupMemoryBarrierWithGroupSync();
     return;
 }
 
-uint quarter_meets(uint q, float3 p_2, float radius)
+uint quarter_meets(uint q, float3 p_3, float radius)
 {
     float3 lo_3 = quarter_lo[min(uint(q), 3u)];
     float3 hi_3 = quarter_hi[min(uint(q), 3u)];
     if ((lo_3.x > hi_3.x)) {
         return 0u;
     }
-    const bool _e18 = sphere_overlaps_aabb(p_2, radius, lo_3, hi_3);
+    const bool _e18 = sphere_overlaps_aabb(p_3, radius, lo_3, hi_3);
     return (_e18 ? (1u << (QUARTER_SHIFT + q)) : 0u);
 }
 
-uint list_entry(uint slot_3, float3 p_3, float radius_1)
+uint list_entry(uint slot_3, float3 p_4, float radius_1)
 {
-    const uint _e4 = quarter_meets(0u, p_3, radius_1);
-    const uint _e7 = quarter_meets(1u, p_3, radius_1);
-    const uint _e10 = quarter_meets(2u, p_3, radius_1);
-    const uint _e13 = quarter_meets(3u, p_3, radius_1);
+    const uint _e4 = quarter_meets(0u, p_4, radius_1);
+    const uint _e7 = quarter_meets(1u, p_4, radius_1);
+    const uint _e10 = quarter_meets(2u, p_4, radius_1);
+    const uint _e13 = quarter_meets(3u, p_4, radius_1);
     return ((((slot_3 | _e4) | _e7) | _e10) | _e13);
 }
 

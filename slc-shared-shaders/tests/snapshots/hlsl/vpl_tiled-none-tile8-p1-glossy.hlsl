@@ -376,17 +376,24 @@ WorkgroupBox workgroup_bounds(uint li_1, float3 lo, float3 hi)
     return workgroupbox;
 }
 
-WorkgroupBox workgroup_box(uint li_2, float3 p, bool has)
+WorkgroupBox point_box(float3 p, bool has)
 {
-    const WorkgroupBox _e9 = workgroup_bounds(li_2, (has ? p : (3.4028235e38).xxx), (has ? p : (-3.4028235e38).xxx));
-    const WorkgroupBox workgroupbox_1 = _e9;
+    const WorkgroupBox workgroupbox_1 = ConstructWorkgroupBox((has ? p : (3.4028235e38).xxx), (has ? p : (-3.4028235e38).xxx));
     return workgroupbox_1;
+}
+
+WorkgroupBox workgroup_box(uint li_2, float3 p_1, bool has_1)
+{
+    const WorkgroupBox _e3 = point_box(p_1, has_1);
+    const WorkgroupBox _e6 = workgroup_bounds(li_2, _e3.lo, _e3.hi);
+    const WorkgroupBox workgroupbox_2 = _e6;
+    return workgroupbox_2;
 }
 
 float4 surface_at(int2 texel)
 {
-    float4 p_2 = position_tex.Load(int3(texel, int(0)));
-    return ((p_2.w > 0.0) ? float4(p_2.xyz, 1.0) : (0.0).xxxx);
+    float4 p_3 = position_tex.Load(int3(texel, int(0)));
+    return ((p_3.w > 0.0) ? float4(p_3.xyz, 1.0) : (0.0).xxxx);
 }
 
 GbTexel ConstructGbTexel(float4 arg0, float4 arg1) {
@@ -476,18 +483,18 @@ float3 glossy_term(Glossy g, GpuLight l_4, float3 n_3, float3 v_5, float t)
 
 WorkgroupBox load_receiver(uint li_3, uint pix, bool inside)
 {
-    float4 p_1 = (0.0).xxxx;
+    float4 p_2 = (0.0).xxxx;
     bool local_7 = (bool)0;
 
     if (inside) {
         const GbTexel _e6 = gbuffer_at(pix);
-        p_1 = _e6.position;
+        p_2 = _e6.position;
         nrm = _e6.normal.xyz;
     }
-    float4 _e12 = p_1;
+    float4 _e12 = p_2;
     pos = _e12.xyz;
     if (inside) {
-        float _e18 = p_1.w;
+        float _e18 = p_2.w;
         local_7 = (_e18 > 0.0);
     } else {
         local_7 = false;
@@ -503,8 +510,8 @@ WorkgroupBox load_receiver(uint li_3, uint pix, bool inside)
     float3 _e30 = pos;
     bool _e32 = valid;
     const WorkgroupBox _e33 = workgroup_box(li_3, _e30, _e32);
-    const WorkgroupBox workgroupbox_2 = _e33;
-    return workgroupbox_2;
+    const WorkgroupBox workgroupbox_3 = _e33;
+    return workgroupbox_3;
 }
 
 GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, float3 arg4, float arg5, float3 arg6, uint arg7) {

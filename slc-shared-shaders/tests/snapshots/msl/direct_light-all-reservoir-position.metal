@@ -1176,8 +1176,8 @@ metal::float4 surface_at(
     metal::int2 texel,
     metal::texture2d<float, metal::access::sample> position_tex
 ) {
-    metal::float4 p_4 = position_tex.read(metal::uint2(texel), 0);
-    return (p_4.w > 0.0) ? metal::float4(p_4.xyz, 1.0) : metal::float4(0.0);
+    metal::float4 p_5 = position_tex.read(metal::uint2(texel), 0);
+    return (p_5.w > 0.0) ? metal::float4(p_5.xyz, 1.0) : metal::float4(0.0);
 }
 
 uint naga_div(uint lhs, uint rhs) {
@@ -1237,16 +1237,24 @@ WorkgroupBox workgroup_bounds(
     return unnamed;
 }
 
+WorkgroupBox point_box(
+    metal::float3 p_2,
+    bool has
+) {
+    return WorkgroupBox {has ? p_2 : metal::float3(340282350000000000000000000000000000000.0), has ? p_2 : metal::float3(-340282350000000000000000000000000000000.0)};
+}
+
 WorkgroupBox workgroup_box(
     uint li_2,
-    metal::float3 p_2,
-    bool has,
+    metal::float3 p_3,
+    bool has_1,
     threadgroup type_14& wg_lo,
     threadgroup type_14& wg_hi,
     threadgroup WorkgroupBox& wg_box
 ) {
-    WorkgroupBox _e9 = workgroup_bounds(li_2, has ? p_2 : metal::float3(340282350000000000000000000000000000000.0), has ? p_2 : metal::float3(-340282350000000000000000000000000000000.0), wg_lo, wg_hi, wg_box);
-    return _e9;
+    WorkgroupBox _e3 = point_box(p_3, has_1);
+    WorkgroupBox _e6 = workgroup_bounds(li_2, _e3.lo, _e3.hi, wg_lo, wg_hi, wg_box);
+    return _e6;
 }
 
 bool box_is_empty(
@@ -1266,7 +1274,7 @@ uint tile_subtree(
     threadgroup type_15& tile_list,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint p_3 = {};
+    uint p_4 = {};
     uint b_7 = {};
     bool local_16 = {};
     bool local_17 = {};
@@ -1276,7 +1284,7 @@ uint tile_subtree(
         return 0u;
     }
     uint end_1 = bsh_nodes[_e8].next;
-    p_3 = at_1;
+    p_4 = at_1;
     uint _e21 = bsh_next_leaf_box(BSH, _e8, end_1, t_2.lo, t_2.hi, t_2.w, bsh_nodes, _buffer_sizes);
     b_7 = _e21;
     uint2 loop_bound_4 = uint2(4294967295u);
@@ -1294,7 +1302,7 @@ uint tile_subtree(
         uint _e23 = b_7;
         if (_e23 != end_1) {
             if (!(!(list))) {
-                uint _e31 = p_3;
+                uint _e31 = p_4;
                 local_17 = _e31 < to;
             } else {
                 local_17 = true;
@@ -1311,22 +1319,22 @@ uint tile_subtree(
         }
         {
             if (list) {
-                uint _e39 = p_3;
+                uint _e39 = p_4;
                 local_18 = _e39 >= start_3;
             } else {
                 local_18 = false;
             }
             bool _e42 = local_18;
             if (_e42) {
-                uint _e44 = p_3;
+                uint _e44 = p_4;
                 uint _e47 = b_7;
                 tile_list.inner[_e44 - start_3] = _e47;
             }
-            uint _e48 = p_3;
-            p_3 = _e48 + 1u;
+            uint _e48 = p_4;
+            p_4 = _e48 + 1u;
         }
     }
-    uint _e61 = p_3;
+    uint _e61 = p_4;
     return _e61 - at_1;
 }
 
@@ -1334,7 +1342,7 @@ TileWalk tile_walk_begin(
     uint li_3,
     metal::float3 x_11,
     float w_7,
-    bool has_1,
+    bool has_2,
     device type_9 const& bsh_nodes,
     threadgroup type_14& wg_lo,
     threadgroup type_14& wg_hi,
@@ -1350,14 +1358,14 @@ TileWalk tile_walk_begin(
     uint s_4 = {};
     uint sum = 0u;
     uint s_5 = 0u;
-    if (has_1) {
+    if (has_2) {
         local_19 = w_7 >= 0.0;
     } else {
         local_19 = false;
     }
     bool _e12 = local_19;
     uint _e14 = metal::atomic_fetch_max_explicit(&tile_scale, _e12 ? as_type<uint>(w_7) : 0u, metal::memory_order_relaxed);
-    WorkgroupBox _e15 = workgroup_box(li_3, x_11, has_1, wg_lo, wg_hi, wg_box);
+    WorkgroupBox _e15 = workgroup_box(li_3, x_11, has_2, wg_lo, wg_hi, wg_box);
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
     uint unnamed_1 = metal::atomic_load_explicit(&tile_scale, metal::memory_order_relaxed);
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
@@ -1639,8 +1647,8 @@ kernel void main_(
     } else {
         local_3 = false;
     }
-    bool has_2 = local_3;
-    if (has_2) {
+    bool has_3 = local_3;
+    if (has_3) {
         metal::float3 _e65 = nn;
         n = _e65 / metal::float3(metal::sqrt(len2_));
     }
@@ -1659,7 +1667,7 @@ kernel void main_(
     h = _e103;
     picks.n = 0u;
     hr = _e102;
-    TileWalk _e118 = tile_walk_begin(lid, x_15, _e79.w, has_2, bsh_nodes, wg_lo, wg_hi, wg_box, tile_list, subtree_at, tile_scale, tile_total, _buffer_sizes);
+    TileWalk _e118 = tile_walk_begin(lid, x_15, _e79.w, has_3, bsh_nodes, wg_lo, wg_hi, wg_box, tile_list, subtree_at, tile_scale, tile_total, _buffer_sizes);
     uint2 loop_bound_8 = uint2(4294967295u);
     bool loop_init_5 = true;
     while(true) {
@@ -1697,7 +1705,7 @@ kernel void main_(
                 {
                     uint _e131 = j;
                     uint b_10 = tile_list.inner[_e131];
-                    if (!(!(has_2))) {
+                    if (!(!(has_3))) {
                         BshNode _e140 = bsh_nodes[b_10];
                         metal::float3 _e141 = r;
                         bool _e142 = bsh_reaches(_e140, x_15, _e141, _e79);
@@ -1716,7 +1724,7 @@ kernel void main_(
             metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
         }
     }
-    if (!(has_2)) {
+    if (!(has_3)) {
         if (inside) {
             out_tex.write(metal::float4(0.0), metal::uint2(texel_1));
         }

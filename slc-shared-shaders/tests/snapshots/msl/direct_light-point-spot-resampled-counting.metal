@@ -612,14 +612,14 @@ float ray_triangle(
     bool local_13 = {};
     metal::float3 e1_ = b_2 - a_3;
     metal::float3 e2_ = c_4 - a_3;
-    metal::float3 p_4 = metal::cross(d_3, e2_);
-    float det = metal::dot(e1_, p_4);
+    metal::float3 p_5 = metal::cross(d_3, e2_);
+    float det = metal::dot(e1_, p_5);
     if (metal::abs(det) <= 0.0) {
         return -1.0;
     }
     float inv = 1.0 / det;
     metal::float3 s_10 = o_1 - a_3;
-    float u_3 = metal::dot(s_10, p_4) * inv;
+    float u_3 = metal::dot(s_10, p_5) * inv;
     if (!((u_3 < 0.0))) {
         local_11 = u_3 > 1.0;
     } else {
@@ -1090,8 +1090,8 @@ metal::float4 surface_at(
     metal::int2 texel,
     metal::texture2d<float, metal::access::sample> position_tex
 ) {
-    metal::float4 p_5 = position_tex.read(metal::uint2(texel), 0);
-    return (p_5.w > 0.0) ? metal::float4(p_5.xyz, 1.0) : metal::float4(0.0);
+    metal::float4 p_6 = position_tex.read(metal::uint2(texel), 0);
+    return (p_6.w > 0.0) ? metal::float4(p_6.xyz, 1.0) : metal::float4(0.0);
 }
 
 WorkgroupBox workgroup_bounds(
@@ -1147,16 +1147,24 @@ WorkgroupBox workgroup_bounds(
     return unnamed;
 }
 
+WorkgroupBox point_box(
+    metal::float3 p_2,
+    bool has
+) {
+    return WorkgroupBox {has ? p_2 : metal::float3(340282350000000000000000000000000000000.0), has ? p_2 : metal::float3(-340282350000000000000000000000000000000.0)};
+}
+
 WorkgroupBox workgroup_box(
     uint li_2,
-    metal::float3 p_2,
-    bool has,
+    metal::float3 p_3,
+    bool has_1,
     threadgroup type_19& wg_lo,
     threadgroup type_19& wg_hi,
     threadgroup WorkgroupBox& wg_box
 ) {
-    WorkgroupBox _e9 = workgroup_bounds(li_2, has ? p_2 : metal::float3(340282350000000000000000000000000000000.0), has ? p_2 : metal::float3(-340282350000000000000000000000000000000.0), wg_lo, wg_hi, wg_box);
-    return _e9;
+    WorkgroupBox _e3 = point_box(p_3, has_1);
+    WorkgroupBox _e6 = workgroup_bounds(li_2, _e3.lo, _e3.hi, wg_lo, wg_hi, wg_box);
+    return _e6;
 }
 
 bool box_is_empty(
@@ -1176,7 +1184,7 @@ uint tile_subtree(
     threadgroup type_20& tile_list,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint p_3 = {};
+    uint p_4 = {};
     uint b_5 = {};
     bool local_19 = {};
     bool local_20 = {};
@@ -1186,7 +1194,7 @@ uint tile_subtree(
         return 0u;
     }
     uint end_1 = bsh_nodes[_e8].next;
-    p_3 = at;
+    p_4 = at;
     uint _e21 = bsh_next_leaf_box(BSH, _e8, end_1, t_1.lo, t_1.hi, t_1.w, bsh_nodes, _buffer_sizes);
     b_5 = _e21;
     uint2 loop_bound_5 = uint2(4294967295u);
@@ -1204,7 +1212,7 @@ uint tile_subtree(
         uint _e23 = b_5;
         if (_e23 != end_1) {
             if (!(!(list))) {
-                uint _e31 = p_3;
+                uint _e31 = p_4;
                 local_20 = _e31 < to;
             } else {
                 local_20 = true;
@@ -1221,22 +1229,22 @@ uint tile_subtree(
         }
         {
             if (list) {
-                uint _e39 = p_3;
+                uint _e39 = p_4;
                 local_21 = _e39 >= start_2;
             } else {
                 local_21 = false;
             }
             bool _e42 = local_21;
             if (_e42) {
-                uint _e44 = p_3;
+                uint _e44 = p_4;
                 uint _e47 = b_5;
                 tile_list.inner[_e44 - start_2] = _e47;
             }
-            uint _e48 = p_3;
-            p_3 = _e48 + 1u;
+            uint _e48 = p_4;
+            p_4 = _e48 + 1u;
         }
     }
-    uint _e61 = p_3;
+    uint _e61 = p_4;
     return _e61 - at;
 }
 
@@ -1244,7 +1252,7 @@ TileWalk tile_walk_begin(
     uint li_3,
     metal::float3 x_7,
     float w_6,
-    bool has_1,
+    bool has_2,
     device type_13 const& bsh_nodes,
     threadgroup type_19& wg_lo,
     threadgroup type_19& wg_hi,
@@ -1260,14 +1268,14 @@ TileWalk tile_walk_begin(
     uint s_4 = {};
     uint sum_1 = 0u;
     uint s_5 = 0u;
-    if (has_1) {
+    if (has_2) {
         local_22 = w_6 >= 0.0;
     } else {
         local_22 = false;
     }
     bool _e12 = local_22;
     uint _e14 = metal::atomic_fetch_max_explicit(&tile_scale, _e12 ? as_type<uint>(w_6) : 0u, metal::memory_order_relaxed);
-    WorkgroupBox _e15 = workgroup_box(li_3, x_7, has_1, wg_lo, wg_hi, wg_box);
+    WorkgroupBox _e15 = workgroup_box(li_3, x_7, has_2, wg_lo, wg_hi, wg_box);
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
     uint unnamed_1 = metal::atomic_load_explicit(&tile_scale, metal::memory_order_relaxed);
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
@@ -1678,8 +1686,8 @@ kernel void main_(
     } else {
         local_3 = false;
     }
-    bool has_2 = local_3;
-    if (has_2) {
+    bool has_3 = local_3;
+    if (has_3) {
         metal::float3 _e65 = nn;
         n = _e65 / metal::float3(metal::sqrt(len2_));
     }
@@ -1697,7 +1705,7 @@ kernel void main_(
     uint _e103 = pick_stream(_e102);
     h = _e103;
     hc = _e102;
-    TileWalk _e124 = tile_walk_begin(lid, x_11, _e79.w, has_2, bsh_nodes, wg_lo, wg_hi, wg_box, tile_list, subtree_at, tile_scale, tile_total, _buffer_sizes);
+    TileWalk _e124 = tile_walk_begin(lid, x_11, _e79.w, has_3, bsh_nodes, wg_lo, wg_hi, wg_box, tile_list, subtree_at, tile_scale, tile_total, _buffer_sizes);
     uint2 loop_bound_11 = uint2(4294967295u);
     bool loop_init_8 = true;
     while(true) {
@@ -1735,7 +1743,7 @@ kernel void main_(
                 {
                     uint _e137 = j;
                     uint b_7 = tile_list.inner[_e137];
-                    if (!(!(has_2))) {
+                    if (!(!(has_3))) {
                         BshNode _e146 = bsh_nodes[b_7];
                         metal::float3 _e147 = r;
                         bool _e148 = bsh_reaches(_e146, x_11, _e147, _e79);
@@ -1821,7 +1829,7 @@ kernel void main_(
             metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
         }
     }
-    if (!(has_2)) {
+    if (!(has_3)) {
         if (inside) {
             out_tex.write(metal::float4(0.0), metal::uint2(texel_1));
         }

@@ -796,14 +796,14 @@ float ray_triangle(
     bool local_15 = {};
     metal::float3 e1_ = b_2 - a_3;
     metal::float3 e2_ = c_2 - a_3;
-    metal::float3 p_9 = metal::cross(d_3, e2_);
-    float det = metal::dot(e1_, p_9);
+    metal::float3 p_10 = metal::cross(d_3, e2_);
+    float det = metal::dot(e1_, p_10);
     if (metal::abs(det) <= 0.0) {
         return -1.0;
     }
     float inv = 1.0 / det;
     metal::float3 s_9 = o_1 - a_3;
-    float u_3 = metal::dot(s_9, p_9) * inv;
+    float u_3 = metal::dot(s_9, p_10) * inv;
     if (!((u_3 < 0.0))) {
         local_13 = u_3 > 1.0;
     } else {
@@ -1378,9 +1378,9 @@ metal::float4 unproject_pixel(
     }
     float x_14 = (((px + 0.5) / width) * 2.0) - 1.0;
     float y_1 = 1.0 - (((py + 0.5) / height) * 2.0);
-    metal::float4 p_10 = (((c0_ * x_14) + (c1_ * y_1)) + (c2_ * depth_1)) + c3_;
-    metal::float3 q_2 = metal::float3(p_10.x / p_10.w, p_10.y / p_10.w, p_10.z / p_10.w);
-    if (metal::abs(p_10.w) > 0.0) {
+    metal::float4 p_11 = (((c0_ * x_14) + (c1_ * y_1)) + (c2_ * depth_1)) + c3_;
+    metal::float3 q_2 = metal::float3(p_11.x / p_11.w, p_11.y / p_11.w, p_11.z / p_11.w);
+    if (metal::abs(p_11.w) > 0.0) {
         bool _e59 = finite3_(q_2);
         local_22 = _e59;
     } else {
@@ -1467,16 +1467,24 @@ WorkgroupBox workgroup_bounds(
     return unnamed;
 }
 
+WorkgroupBox point_box(
+    metal::float3 p_7,
+    bool has
+) {
+    return WorkgroupBox {has ? p_7 : metal::float3(340282350000000000000000000000000000000.0), has ? p_7 : metal::float3(-340282350000000000000000000000000000000.0)};
+}
+
 WorkgroupBox workgroup_box(
     uint li_5,
-    metal::float3 p_7,
-    bool has,
+    metal::float3 p_8,
+    bool has_1,
     threadgroup type_19& wg_lo,
     threadgroup type_19& wg_hi,
     threadgroup WorkgroupBox& wg_box
 ) {
-    WorkgroupBox _e9 = workgroup_bounds(li_5, has ? p_7 : metal::float3(340282350000000000000000000000000000000.0), has ? p_7 : metal::float3(-340282350000000000000000000000000000000.0), wg_lo, wg_hi, wg_box);
-    return _e9;
+    WorkgroupBox _e3 = point_box(p_8, has_1);
+    WorkgroupBox _e6 = workgroup_bounds(li_5, _e3.lo, _e3.hi, wg_lo, wg_hi, wg_box);
+    return _e6;
 }
 
 bool box_is_empty(
@@ -1496,7 +1504,7 @@ uint tile_subtree(
     threadgroup type_20& tile_list,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint p_8 = {};
+    uint p_9 = {};
     uint b_5 = {};
     bool local_23 = {};
     bool local_24 = {};
@@ -1506,7 +1514,7 @@ uint tile_subtree(
         return 0u;
     }
     uint end_1 = bsh_nodes[_e8].next;
-    p_8 = at;
+    p_9 = at;
     uint _e21 = bsh_next_leaf_box(BSH, _e8, end_1, t_1.lo, t_1.hi, t_1.w, bsh_nodes, _buffer_sizes);
     b_5 = _e21;
     uint2 loop_bound_6 = uint2(4294967295u);
@@ -1524,7 +1532,7 @@ uint tile_subtree(
         uint _e23 = b_5;
         if (_e23 != end_1) {
             if (!(!(list))) {
-                uint _e31 = p_8;
+                uint _e31 = p_9;
                 local_24 = _e31 < to;
             } else {
                 local_24 = true;
@@ -1541,22 +1549,22 @@ uint tile_subtree(
         }
         {
             if (list) {
-                uint _e39 = p_8;
+                uint _e39 = p_9;
                 local_25 = _e39 >= start_2;
             } else {
                 local_25 = false;
             }
             bool _e42 = local_25;
             if (_e42) {
-                uint _e44 = p_8;
+                uint _e44 = p_9;
                 uint _e47 = b_5;
                 tile_list.inner[_e44 - start_2] = _e47;
             }
-            uint _e48 = p_8;
-            p_8 = _e48 + 1u;
+            uint _e48 = p_9;
+            p_9 = _e48 + 1u;
         }
     }
-    uint _e61 = p_8;
+    uint _e61 = p_9;
     return _e61 - at;
 }
 
@@ -1564,7 +1572,7 @@ TileWalk tile_walk_begin(
     uint li_6,
     metal::float3 x_10,
     float w_7,
-    bool has_1,
+    bool has_2,
     device type_12 const& bsh_nodes,
     threadgroup type_19& wg_lo,
     threadgroup type_19& wg_hi,
@@ -1580,14 +1588,14 @@ TileWalk tile_walk_begin(
     uint s_5 = {};
     uint sum_1 = 0u;
     uint s_6 = 0u;
-    if (has_1) {
+    if (has_2) {
         local_26 = w_7 >= 0.0;
     } else {
         local_26 = false;
     }
     bool _e12 = local_26;
     uint _e14 = metal::atomic_fetch_max_explicit(&tile_scale, _e12 ? as_type<uint>(w_7) : 0u, metal::memory_order_relaxed);
-    WorkgroupBox _e15 = workgroup_box(li_6, x_10, has_1, wg_lo, wg_hi, wg_box);
+    WorkgroupBox _e15 = workgroup_box(li_6, x_10, has_2, wg_lo, wg_hi, wg_box);
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
     uint unnamed_1 = metal::atomic_load_explicit(&tile_scale, metal::memory_order_relaxed);
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
@@ -1954,8 +1962,8 @@ kernel void main_(
     } else {
         local_3 = false;
     }
-    bool has_2 = local_3;
-    if (has_2) {
+    bool has_3 = local_3;
+    if (has_3) {
         metal::float3 _e65 = nn;
         n = _e65 / metal::float3(metal::sqrt(len2_));
     }
@@ -1974,7 +1982,7 @@ kernel void main_(
     h = _e103;
     WeightedPicks _e113 = weighted_picks(_e102);
     picks = _e113;
-    TileWalk _e116 = tile_walk_begin(lid, x_15, _e79.w, has_2, bsh_nodes, wg_lo, wg_hi, wg_box, tile_list, subtree_at, tile_scale, tile_total, _buffer_sizes);
+    TileWalk _e116 = tile_walk_begin(lid, x_15, _e79.w, has_3, bsh_nodes, wg_lo, wg_hi, wg_box, tile_list, subtree_at, tile_scale, tile_total, _buffer_sizes);
     uint2 loop_bound_12 = uint2(4294967295u);
     bool loop_init_9 = true;
     while(true) {
@@ -2012,7 +2020,7 @@ kernel void main_(
                 {
                     uint _e129 = j;
                     uint b_7 = tile_list.inner[_e129];
-                    if (!(!(has_2))) {
+                    if (!(!(has_3))) {
                         BshNode _e138 = bsh_nodes[b_7];
                         metal::float3 _e139 = r;
                         bool _e140 = bsh_reaches(_e138, x_15, _e139, _e79);
@@ -2035,7 +2043,7 @@ kernel void main_(
             metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
         }
     }
-    if (!(has_2)) {
+    if (!(has_3)) {
         if (inside) {
             out_tex.write(metal::float4(0.0), metal::uint2(texel_1));
         }

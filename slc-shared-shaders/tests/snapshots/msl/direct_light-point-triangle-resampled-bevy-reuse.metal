@@ -938,14 +938,14 @@ float ray_triangle(
     bool local_19 = {};
     metal::float3 e1_ = b_4 - a_5;
     metal::float3 e2_ = c_7 - a_5;
-    metal::float3 p_7 = metal::cross(d_3, e2_);
-    float det = metal::dot(e1_, p_7);
+    metal::float3 p_8 = metal::cross(d_3, e2_);
+    float det = metal::dot(e1_, p_8);
     if (metal::abs(det) <= 0.0) {
         return -1.0;
     }
     float inv = 1.0 / det;
     metal::float3 s_12 = o_1 - a_5;
-    float u_4 = metal::dot(s_12, p_7) * inv;
+    float u_4 = metal::dot(s_12, p_8) * inv;
     if (!((u_4 < 0.0))) {
         local_17 = u_4 > 1.0;
     } else {
@@ -1458,8 +1458,8 @@ metal::float4 surface_at(
     metal::int2 texel,
     metal::texture2d<float, metal::access::sample> position_tex
 ) {
-    metal::float4 p_8 = position_tex.read(metal::uint2(texel), 0);
-    return (p_8.w > 0.0) ? metal::float4(p_8.xyz, 1.0) : metal::float4(0.0);
+    metal::float4 p_9 = position_tex.read(metal::uint2(texel), 0);
+    return (p_9.w > 0.0) ? metal::float4(p_9.xyz, 1.0) : metal::float4(0.0);
 }
 
 WorkgroupBox workgroup_bounds(
@@ -1515,16 +1515,24 @@ WorkgroupBox workgroup_bounds(
     return unnamed;
 }
 
+WorkgroupBox point_box(
+    metal::float3 p_4,
+    bool has
+) {
+    return WorkgroupBox {has ? p_4 : metal::float3(340282350000000000000000000000000000000.0), has ? p_4 : metal::float3(-340282350000000000000000000000000000000.0)};
+}
+
 WorkgroupBox workgroup_box(
     uint li_3,
-    metal::float3 p_4,
-    bool has,
+    metal::float3 p_5,
+    bool has_1,
     threadgroup type_20& wg_lo,
     threadgroup type_20& wg_hi,
     threadgroup WorkgroupBox& wg_box
 ) {
-    WorkgroupBox _e9 = workgroup_bounds(li_3, has ? p_4 : metal::float3(340282350000000000000000000000000000000.0), has ? p_4 : metal::float3(-340282350000000000000000000000000000000.0), wg_lo, wg_hi, wg_box);
-    return _e9;
+    WorkgroupBox _e3 = point_box(p_5, has_1);
+    WorkgroupBox _e6 = workgroup_bounds(li_3, _e3.lo, _e3.hi, wg_lo, wg_hi, wg_box);
+    return _e6;
 }
 
 bool box_is_empty(
@@ -1544,7 +1552,7 @@ uint tile_subtree(
     threadgroup type_21& tile_list,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint p_5 = {};
+    uint p_6 = {};
     uint b_7 = {};
     bool local_26 = {};
     bool local_27 = {};
@@ -1554,7 +1562,7 @@ uint tile_subtree(
         return 0u;
     }
     uint end_1 = bsh_nodes[_e8].next;
-    p_5 = at;
+    p_6 = at;
     uint _e21 = bsh_next_leaf_box(BSH, _e8, end_1, t_1.lo, t_1.hi, t_1.w, bsh_nodes, _buffer_sizes);
     b_7 = _e21;
     uint2 loop_bound_5 = uint2(4294967295u);
@@ -1572,7 +1580,7 @@ uint tile_subtree(
         uint _e23 = b_7;
         if (_e23 != end_1) {
             if (!(!(list))) {
-                uint _e31 = p_5;
+                uint _e31 = p_6;
                 local_27 = _e31 < to;
             } else {
                 local_27 = true;
@@ -1589,22 +1597,22 @@ uint tile_subtree(
         }
         {
             if (list) {
-                uint _e39 = p_5;
+                uint _e39 = p_6;
                 local_28 = _e39 >= start_2;
             } else {
                 local_28 = false;
             }
             bool _e42 = local_28;
             if (_e42) {
-                uint _e44 = p_5;
+                uint _e44 = p_6;
                 uint _e47 = b_7;
                 tile_list.inner[_e44 - start_2] = _e47;
             }
-            uint _e48 = p_5;
-            p_5 = _e48 + 1u;
+            uint _e48 = p_6;
+            p_6 = _e48 + 1u;
         }
     }
-    uint _e61 = p_5;
+    uint _e61 = p_6;
     return _e61 - at;
 }
 
@@ -1612,7 +1620,7 @@ TileWalk tile_walk_begin(
     uint li_4,
     metal::float3 x_8,
     float w_9,
-    bool has_1,
+    bool has_2,
     device type_13 const& bsh_nodes,
     threadgroup type_20& wg_lo,
     threadgroup type_20& wg_hi,
@@ -1628,14 +1636,14 @@ TileWalk tile_walk_begin(
     uint s_4 = {};
     uint sum_1 = 0u;
     uint s_5 = 0u;
-    if (has_1) {
+    if (has_2) {
         local_29 = w_9 >= 0.0;
     } else {
         local_29 = false;
     }
     bool _e12 = local_29;
     uint _e14 = metal::atomic_fetch_max_explicit(&tile_scale, _e12 ? as_type<uint>(w_9) : 0u, metal::memory_order_relaxed);
-    WorkgroupBox _e15 = workgroup_box(li_4, x_8, has_1, wg_lo, wg_hi, wg_box);
+    WorkgroupBox _e15 = workgroup_box(li_4, x_8, has_2, wg_lo, wg_hi, wg_box);
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
     uint unnamed_1 = metal::atomic_load_explicit(&tile_scale, metal::memory_order_relaxed);
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
@@ -1972,7 +1980,7 @@ uint reuse_domains(
     uint nd = 0u;
     uint hr = {};
     uint j_4 = 0u;
-    metal::float2 p_6 = {};
+    metal::float2 p_7 = {};
     bool local_33 = {};
     bool local_34 = {};
     bool local_35 = {};
@@ -2012,7 +2020,7 @@ uint reuse_domains(
             break;
         }
         {
-            p_6 = _e33.xy;
+            p_7 = _e33.xy;
             uint _e46 = j_4;
             if (_e46 > 0u) {
                 uint _e49 = hr;
@@ -2023,14 +2031,14 @@ uint reuse_domains(
                 uint _e53 = hr;
                 uint _e54 = pcg_hash(_e53);
                 hr = _e54;
-                metal::float2 _e55 = p_6;
+                metal::float2 _e55 = p_7;
                 float _e58 = reuse.radius;
                 uint _e59 = hr;
                 float _e60 = xi_from_bits(_e59);
                 metal::float2 _e61 = disk_offset(_e58, _e52, _e60);
-                p_6 = _e55 + _e61;
+                p_7 = _e55 + _e61;
             }
-            metal::float2 _e63 = p_6;
+            metal::float2 _e63 = p_7;
             metal::int2 t_8 = naga_f2i32(metal::rint(_e63));
             if (!((t_8.x < 0))) {
                 local_33 = t_8.y < 0;
@@ -2403,14 +2411,14 @@ kernel void main_(
     } else {
         local_3 = false;
     }
-    bool has_2 = local_3;
-    if (has_2) {
+    bool has_3 = local_3;
+    if (has_3) {
         metal::float3 _e65 = nn;
         n = _e65 / metal::float3(metal::sqrt(len2_));
     }
     metal::float3 _e76 = n;
     r = _e76;
-    if (has_2) {
+    if (has_3) {
         metal::float4 mr = metal_rough_tex.read(metal::uint2(texel_1), 0);
         metal::float4 _e83 = base_color_tex.read(metal::uint2(texel_1), 0);
         metal::float3 _e90 = view.eye;
@@ -2441,7 +2449,7 @@ kernel void main_(
     uint _e138 = pick_stream(_e137);
     h = _e138;
     hc = _e137;
-    TileWalk _e160 = tile_walk_begin(lid, x_17, _e114.w, has_2, bsh_nodes, wg_lo, wg_hi, wg_box, tile_list, subtree_at, tile_scale, tile_total, _buffer_sizes);
+    TileWalk _e160 = tile_walk_begin(lid, x_17, _e114.w, has_3, bsh_nodes, wg_lo, wg_hi, wg_box, tile_list, subtree_at, tile_scale, tile_total, _buffer_sizes);
     uint2 loop_bound_15 = uint2(4294967295u);
     bool loop_init_12 = true;
     while(true) {
@@ -2479,7 +2487,7 @@ kernel void main_(
                 {
                     uint _e173 = j;
                     uint b_10 = tile_list.inner[_e173];
-                    if (!(!(has_2))) {
+                    if (!(!(has_3))) {
                         BshNode _e182 = bsh_nodes[b_10];
                         metal::float3 _e183 = r;
                         bool _e184 = bsh_reaches(_e182, x_17, _e183, _e114);
@@ -2567,7 +2575,7 @@ kernel void main_(
             metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
         }
     }
-    if (!(has_2)) {
+    if (!(has_3)) {
         if (inside) {
             out_tex.write(metal::float4(0.0), metal::uint2(texel_1));
             uint _e270 = view.width;

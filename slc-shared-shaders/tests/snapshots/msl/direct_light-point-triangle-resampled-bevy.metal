@@ -824,14 +824,14 @@ float ray_triangle(
     bool local_18 = {};
     metal::float3 e1_ = b_4 - a_5;
     metal::float3 e2_ = c_7 - a_5;
-    metal::float3 p_4 = metal::cross(d_3, e2_);
-    float det = metal::dot(e1_, p_4);
+    metal::float3 p_5 = metal::cross(d_3, e2_);
+    float det = metal::dot(e1_, p_5);
     if (metal::abs(det) <= 0.0) {
         return -1.0;
     }
     float inv = 1.0 / det;
     metal::float3 s_10 = o_1 - a_5;
-    float u_3 = metal::dot(s_10, p_4) * inv;
+    float u_3 = metal::dot(s_10, p_5) * inv;
     if (!((u_3 < 0.0))) {
         local_16 = u_3 > 1.0;
     } else {
@@ -1309,8 +1309,8 @@ metal::float4 surface_at(
     metal::int2 texel,
     metal::texture2d<float, metal::access::sample> position_tex
 ) {
-    metal::float4 p_5 = position_tex.read(metal::uint2(texel), 0);
-    return (p_5.w > 0.0) ? metal::float4(p_5.xyz, 1.0) : metal::float4(0.0);
+    metal::float4 p_6 = position_tex.read(metal::uint2(texel), 0);
+    return (p_6.w > 0.0) ? metal::float4(p_6.xyz, 1.0) : metal::float4(0.0);
 }
 
 WorkgroupBox workgroup_bounds(
@@ -1366,16 +1366,24 @@ WorkgroupBox workgroup_bounds(
     return unnamed;
 }
 
+WorkgroupBox point_box(
+    metal::float3 p_2,
+    bool has
+) {
+    return WorkgroupBox {has ? p_2 : metal::float3(340282350000000000000000000000000000000.0), has ? p_2 : metal::float3(-340282350000000000000000000000000000000.0)};
+}
+
 WorkgroupBox workgroup_box(
     uint li_3,
-    metal::float3 p_2,
-    bool has,
+    metal::float3 p_3,
+    bool has_1,
     threadgroup type_18& wg_lo,
     threadgroup type_18& wg_hi,
     threadgroup WorkgroupBox& wg_box
 ) {
-    WorkgroupBox _e9 = workgroup_bounds(li_3, has ? p_2 : metal::float3(340282350000000000000000000000000000000.0), has ? p_2 : metal::float3(-340282350000000000000000000000000000000.0), wg_lo, wg_hi, wg_box);
-    return _e9;
+    WorkgroupBox _e3 = point_box(p_3, has_1);
+    WorkgroupBox _e6 = workgroup_bounds(li_3, _e3.lo, _e3.hi, wg_lo, wg_hi, wg_box);
+    return _e6;
 }
 
 bool box_is_empty(
@@ -1395,7 +1403,7 @@ uint tile_subtree(
     threadgroup type_19& tile_list,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint p_3 = {};
+    uint p_4 = {};
     uint b_7 = {};
     bool local_24 = {};
     bool local_25 = {};
@@ -1405,7 +1413,7 @@ uint tile_subtree(
         return 0u;
     }
     uint end_1 = bsh_nodes[_e8].next;
-    p_3 = at;
+    p_4 = at;
     uint _e21 = bsh_next_leaf_box(BSH, _e8, end_1, t_1.lo, t_1.hi, t_1.w, bsh_nodes, _buffer_sizes);
     b_7 = _e21;
     uint2 loop_bound_5 = uint2(4294967295u);
@@ -1423,7 +1431,7 @@ uint tile_subtree(
         uint _e23 = b_7;
         if (_e23 != end_1) {
             if (!(!(list))) {
-                uint _e31 = p_3;
+                uint _e31 = p_4;
                 local_25 = _e31 < to;
             } else {
                 local_25 = true;
@@ -1440,22 +1448,22 @@ uint tile_subtree(
         }
         {
             if (list) {
-                uint _e39 = p_3;
+                uint _e39 = p_4;
                 local_26 = _e39 >= start_2;
             } else {
                 local_26 = false;
             }
             bool _e42 = local_26;
             if (_e42) {
-                uint _e44 = p_3;
+                uint _e44 = p_4;
                 uint _e47 = b_7;
                 tile_list.inner[_e44 - start_2] = _e47;
             }
-            uint _e48 = p_3;
-            p_3 = _e48 + 1u;
+            uint _e48 = p_4;
+            p_4 = _e48 + 1u;
         }
     }
-    uint _e61 = p_3;
+    uint _e61 = p_4;
     return _e61 - at;
 }
 
@@ -1463,7 +1471,7 @@ TileWalk tile_walk_begin(
     uint li_4,
     metal::float3 x_8,
     float w_7,
-    bool has_1,
+    bool has_2,
     device type_13 const& bsh_nodes,
     threadgroup type_18& wg_lo,
     threadgroup type_18& wg_hi,
@@ -1479,14 +1487,14 @@ TileWalk tile_walk_begin(
     uint s_4 = {};
     uint sum_1 = 0u;
     uint s_5 = 0u;
-    if (has_1) {
+    if (has_2) {
         local_27 = w_7 >= 0.0;
     } else {
         local_27 = false;
     }
     bool _e12 = local_27;
     uint _e14 = metal::atomic_fetch_max_explicit(&tile_scale, _e12 ? as_type<uint>(w_7) : 0u, metal::memory_order_relaxed);
-    WorkgroupBox _e15 = workgroup_box(li_4, x_8, has_1, wg_lo, wg_hi, wg_box);
+    WorkgroupBox _e15 = workgroup_box(li_4, x_8, has_2, wg_lo, wg_hi, wg_box);
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
     uint unnamed_1 = metal::atomic_load_explicit(&tile_scale, metal::memory_order_relaxed);
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
@@ -1895,14 +1903,14 @@ kernel void main_(
     } else {
         local_3 = false;
     }
-    bool has_2 = local_3;
-    if (has_2) {
+    bool has_3 = local_3;
+    if (has_3) {
         metal::float3 _e65 = nn;
         n = _e65 / metal::float3(metal::sqrt(len2_));
     }
     metal::float3 _e76 = n;
     r = _e76;
-    if (has_2) {
+    if (has_3) {
         metal::float4 mr = metal_rough_tex.read(metal::uint2(texel_1), 0);
         metal::float4 _e83 = base_color_tex.read(metal::uint2(texel_1), 0);
         metal::float3 _e90 = view.eye;
@@ -1933,7 +1941,7 @@ kernel void main_(
     uint _e138 = pick_stream(_e137);
     h = _e138;
     hc = _e137;
-    TileWalk _e159 = tile_walk_begin(lid, x_13, _e114.w, has_2, bsh_nodes, wg_lo, wg_hi, wg_box, tile_list, subtree_at, tile_scale, tile_total, _buffer_sizes);
+    TileWalk _e159 = tile_walk_begin(lid, x_13, _e114.w, has_3, bsh_nodes, wg_lo, wg_hi, wg_box, tile_list, subtree_at, tile_scale, tile_total, _buffer_sizes);
     uint2 loop_bound_11 = uint2(4294967295u);
     bool loop_init_8 = true;
     while(true) {
@@ -1971,7 +1979,7 @@ kernel void main_(
                 {
                     uint _e172 = j;
                     uint b_9 = tile_list.inner[_e172];
-                    if (!(!(has_2))) {
+                    if (!(!(has_3))) {
                         BshNode _e181 = bsh_nodes[b_9];
                         metal::float3 _e182 = r;
                         bool _e183 = bsh_reaches(_e181, x_13, _e182, _e114);
@@ -2055,7 +2063,7 @@ kernel void main_(
             metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
         }
     }
-    if (!(has_2)) {
+    if (!(has_3)) {
         if (inside) {
             out_tex.write(metal::float4(0.0), metal::uint2(texel_1));
         }

@@ -968,14 +968,14 @@ float ray_triangle(
     bool local_19 = {};
     metal::float3 e1_ = b_4 - a_5;
     metal::float3 e2_ = c_5 - a_5;
-    metal::float3 p_9 = metal::cross(d_3, e2_);
-    float det = metal::dot(e1_, p_9);
+    metal::float3 p_10 = metal::cross(d_3, e2_);
+    float det = metal::dot(e1_, p_10);
     if (metal::abs(det) <= 0.0) {
         return -1.0;
     }
     float inv_1 = 1.0 / det;
     metal::float3 s_9 = o_1 - a_5;
-    float u_3 = metal::dot(s_9, p_9) * inv_1;
+    float u_3 = metal::dot(s_9, p_10) * inv_1;
     if (!((u_3 < 0.0))) {
         local_17 = u_3 > 1.0;
     } else {
@@ -1532,8 +1532,8 @@ metal::float4 surface_at(
     metal::int2 texel,
     metal::texture2d<float, metal::access::sample> position_tex
 ) {
-    metal::float4 p_10 = position_tex.read(metal::uint2(texel), 0);
-    return (p_10.w > 0.0) ? metal::float4(p_10.xyz, 1.0) : metal::float4(0.0);
+    metal::float4 p_11 = position_tex.read(metal::uint2(texel), 0);
+    return (p_11.w > 0.0) ? metal::float4(p_11.xyz, 1.0) : metal::float4(0.0);
 }
 
 uint naga_div(uint lhs, uint rhs) {
@@ -1593,16 +1593,24 @@ WorkgroupBox workgroup_bounds(
     return unnamed;
 }
 
+WorkgroupBox point_box(
+    metal::float3 p_7,
+    bool has
+) {
+    return WorkgroupBox {has ? p_7 : metal::float3(340282350000000000000000000000000000000.0), has ? p_7 : metal::float3(-340282350000000000000000000000000000000.0)};
+}
+
 WorkgroupBox workgroup_box(
     uint li_5,
-    metal::float3 p_7,
-    bool has,
+    metal::float3 p_8,
+    bool has_1,
     threadgroup type_19& wg_lo,
     threadgroup type_19& wg_hi,
     threadgroup WorkgroupBox& wg_box
 ) {
-    WorkgroupBox _e9 = workgroup_bounds(li_5, has ? p_7 : metal::float3(340282350000000000000000000000000000000.0), has ? p_7 : metal::float3(-340282350000000000000000000000000000000.0), wg_lo, wg_hi, wg_box);
-    return _e9;
+    WorkgroupBox _e3 = point_box(p_8, has_1);
+    WorkgroupBox _e6 = workgroup_bounds(li_5, _e3.lo, _e3.hi, wg_lo, wg_hi, wg_box);
+    return _e6;
 }
 
 bool box_is_empty(
@@ -1622,7 +1630,7 @@ uint tile_subtree(
     threadgroup type_20& tile_list,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint p_8 = {};
+    uint p_9 = {};
     uint b_7 = {};
     bool local_25 = {};
     bool local_26 = {};
@@ -1632,7 +1640,7 @@ uint tile_subtree(
         return 0u;
     }
     uint end_1 = bsh_nodes[_e8].next;
-    p_8 = at;
+    p_9 = at;
     uint _e21 = bsh_next_leaf_box(BSH, _e8, end_1, t_1.lo, t_1.hi, t_1.w, bsh_nodes, _buffer_sizes);
     b_7 = _e21;
     uint2 loop_bound_6 = uint2(4294967295u);
@@ -1650,7 +1658,7 @@ uint tile_subtree(
         uint _e23 = b_7;
         if (_e23 != end_1) {
             if (!(!(list))) {
-                uint _e31 = p_8;
+                uint _e31 = p_9;
                 local_26 = _e31 < to;
             } else {
                 local_26 = true;
@@ -1667,22 +1675,22 @@ uint tile_subtree(
         }
         {
             if (list) {
-                uint _e39 = p_8;
+                uint _e39 = p_9;
                 local_27 = _e39 >= start_2;
             } else {
                 local_27 = false;
             }
             bool _e42 = local_27;
             if (_e42) {
-                uint _e44 = p_8;
+                uint _e44 = p_9;
                 uint _e47 = b_7;
                 tile_list.inner[_e44 - start_2] = _e47;
             }
-            uint _e48 = p_8;
-            p_8 = _e48 + 1u;
+            uint _e48 = p_9;
+            p_9 = _e48 + 1u;
         }
     }
-    uint _e61 = p_8;
+    uint _e61 = p_9;
     return _e61 - at;
 }
 
@@ -1690,7 +1698,7 @@ TileWalk tile_walk_begin(
     uint li_6,
     metal::float3 x_10,
     float w_8,
-    bool has_1,
+    bool has_2,
     device type_12 const& bsh_nodes,
     threadgroup type_19& wg_lo,
     threadgroup type_19& wg_hi,
@@ -1706,14 +1714,14 @@ TileWalk tile_walk_begin(
     uint s_5 = {};
     uint sum_1 = 0u;
     uint s_6 = 0u;
-    if (has_1) {
+    if (has_2) {
         local_28 = w_8 >= 0.0;
     } else {
         local_28 = false;
     }
     bool _e12 = local_28;
     uint _e14 = metal::atomic_fetch_max_explicit(&tile_scale, _e12 ? as_type<uint>(w_8) : 0u, metal::memory_order_relaxed);
-    WorkgroupBox _e15 = workgroup_box(li_6, x_10, has_1, wg_lo, wg_hi, wg_box);
+    WorkgroupBox _e15 = workgroup_box(li_6, x_10, has_2, wg_lo, wg_hi, wg_box);
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
     uint unnamed_1 = metal::atomic_load_explicit(&tile_scale, metal::memory_order_relaxed);
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
@@ -2112,14 +2120,14 @@ kernel void main_(
     } else {
         local_3 = false;
     }
-    bool has_2 = local_3;
-    if (has_2) {
+    bool has_3 = local_3;
+    if (has_3) {
         metal::float3 _e65 = nn;
         n = _e65 / metal::float3(metal::sqrt(len2_1));
     }
     metal::float3 _e76 = n;
     r = _e76;
-    if (has_2) {
+    if (has_3) {
         metal::float4 mr = metal_rough_tex.read(metal::uint2(texel_1), 0);
         metal::float4 _e83 = base_color_tex.read(metal::uint2(texel_1), 0);
         metal::float3 _e90 = view.eye;
@@ -2152,7 +2160,7 @@ kernel void main_(
     h = _e140;
     WeightedPicks _e150 = weighted_picks(_e139);
     picks = _e150;
-    TileWalk _e153 = tile_walk_begin(lid, x_14, _e116.w, has_2, bsh_nodes, wg_lo, wg_hi, wg_box, tile_list, subtree_at, tile_scale, tile_total, _buffer_sizes);
+    TileWalk _e153 = tile_walk_begin(lid, x_14, _e116.w, has_3, bsh_nodes, wg_lo, wg_hi, wg_box, tile_list, subtree_at, tile_scale, tile_total, _buffer_sizes);
     uint2 loop_bound_12 = uint2(4294967295u);
     bool loop_init_9 = true;
     while(true) {
@@ -2190,7 +2198,7 @@ kernel void main_(
                 {
                     uint _e166 = j;
                     uint b_9 = tile_list.inner[_e166];
-                    if (!(!(has_2))) {
+                    if (!(!(has_3))) {
                         BshNode _e175 = bsh_nodes[b_9];
                         metal::float3 _e176 = r;
                         bool _e177 = bsh_reaches(_e175, x_14, _e176, _e116);
@@ -2213,7 +2221,7 @@ kernel void main_(
             metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
         }
     }
-    if (!(has_2)) {
+    if (!(has_3)) {
         if (inside) {
             out_tex.write(metal::float4(0.0), metal::uint2(texel_1));
             specular_tex.write(metal::float4(0.0), metal::uint2(texel_1));

@@ -378,16 +378,24 @@ WorkgroupBox workgroup_bounds(
     return unnamed;
 }
 
+WorkgroupBox point_box(
+    metal::float3 p,
+    bool has
+) {
+    return WorkgroupBox {has ? p : metal::float3(340282350000000000000000000000000000000.0), has ? p : metal::float3(-340282350000000000000000000000000000000.0)};
+}
+
 WorkgroupBox workgroup_box(
     uint li_2,
-    metal::float3 p,
-    bool has,
+    metal::float3 p_1,
+    bool has_1,
     threadgroup type_7& wg_lo,
     threadgroup type_7& wg_hi,
     threadgroup WorkgroupBox& wg_box
 ) {
-    WorkgroupBox _e9 = workgroup_bounds(li_2, has ? p : metal::float3(340282350000000000000000000000000000000.0), has ? p : metal::float3(-340282350000000000000000000000000000000.0), wg_lo, wg_hi, wg_box);
-    return _e9;
+    WorkgroupBox _e3 = point_box(p_1, has_1);
+    WorkgroupBox _e6 = workgroup_bounds(li_2, _e3.lo, _e3.hi, wg_lo, wg_hi, wg_box);
+    return _e6;
 }
 
 bool box_is_empty(
@@ -400,8 +408,8 @@ metal::float4 surface_at(
     metal::int2 texel,
     metal::texture2d<float, metal::access::sample> position_tex
 ) {
-    metal::float4 p_4 = position_tex.read(metal::uint2(texel), 0);
-    return (p_4.w > 0.0) ? metal::float4(p_4.xyz, 1.0) : metal::float4(0.0);
+    metal::float4 p_5 = position_tex.read(metal::uint2(texel), 0);
+    return (p_5.w > 0.0) ? metal::float4(p_5.xyz, 1.0) : metal::float4(0.0);
 }
 
 GbTexel gbuffer_at(
@@ -465,17 +473,17 @@ WorkgroupBox load_receiver(
     thread metal::float3& nrm,
     thread bool& valid
 ) {
-    metal::float4 p_1 = metal::float4(0.0);
+    metal::float4 p_2 = metal::float4(0.0);
     bool local_7 = {};
     if (inside) {
         GbTexel _e6 = gbuffer_at(pix, view, position_tex, normal_tex);
-        p_1 = _e6.position;
+        p_2 = _e6.position;
         nrm = _e6.normal.xyz;
     }
-    metal::float4 _e12 = p_1;
+    metal::float4 _e12 = p_2;
     pos = _e12.xyz;
     if (inside) {
-        float _e18 = p_1.w;
+        float _e18 = p_2.w;
         local_7 = _e18 > 0.0;
     } else {
         local_7 = false;
@@ -527,12 +535,11 @@ void quarter_boxes(
     uint y = {};
     uint x = {};
     quarter_bit = 1u << ((QUARTER_SHIFT + ((lid_1.x >= HALF) ? 1u : 0u)) + ((lid_1.y >= HALF) ? 2u : 0u));
-    metal::float3 _e25 = pos;
-    bool _e27 = valid;
-    wg_lo.inner[li_4] = _e27 ? _e25 : metal::float3(340282350000000000000000000000000000000.0);
-    metal::float3 _e34 = pos;
-    bool _e36 = valid;
-    wg_hi.inner[li_4] = _e36 ? _e34 : metal::float3(-340282350000000000000000000000000000000.0);
+    metal::float3 _e21 = pos;
+    bool _e23 = valid;
+    WorkgroupBox _e24 = point_box(_e21, _e23);
+    wg_lo.inner[li_4] = _e24.lo;
+    wg_hi.inner[li_4] = _e24.hi;
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
     if (li_4 < 4u) {
         uint x0_ = naga_mod(li_4, 2u) * HALF;
@@ -544,12 +551,12 @@ void quarter_boxes(
             if (metal::all(loop_bound_1 == uint2(0u))) { break; }
             loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
             if (!loop_init_1) {
-                uint _e92 = y;
-                y = _e92 + 1u;
+                uint _e85 = y;
+                y = _e85 + 1u;
             }
             loop_init_1 = false;
-            uint _e55 = y;
-            if (_e55 < metal::min(y0_ + HALF, TILE)) {
+            uint _e48 = y;
+            if (_e48 < metal::min(y0_ + HALF, TILE)) {
             } else {
                 break;
             }
@@ -561,34 +568,34 @@ void quarter_boxes(
                     if (metal::all(loop_bound_2 == uint2(0u))) { break; }
                     loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
                     if (!loop_init_2) {
-                        uint _e89 = x;
-                        x = _e89 + 1u;
+                        uint _e82 = x;
+                        x = _e82 + 1u;
                     }
                     loop_init_2 = false;
-                    uint _e62 = x;
-                    if (_e62 < metal::min(x0_ + HALF, TILE)) {
+                    uint _e55 = x;
+                    if (_e55 < metal::min(x0_ + HALF, TILE)) {
                     } else {
                         break;
                     }
                     {
-                        metal::float3 _e68 = lo_1;
-                        uint _e70 = y;
-                        uint _e73 = x;
-                        metal::float3 _e76 = wg_lo.inner[(_e70 * TILE) + _e73];
-                        lo_1 = metal::min(_e68, _e76);
-                        metal::float3 _e78 = hi_1;
-                        uint _e80 = y;
-                        uint _e83 = x;
-                        metal::float3 _e86 = wg_hi.inner[(_e80 * TILE) + _e83];
-                        hi_1 = metal::max(_e78, _e86);
+                        metal::float3 _e61 = lo_1;
+                        uint _e63 = y;
+                        uint _e66 = x;
+                        metal::float3 _e69 = wg_lo.inner[(_e63 * TILE) + _e66];
+                        lo_1 = metal::min(_e61, _e69);
+                        metal::float3 _e71 = hi_1;
+                        uint _e73 = y;
+                        uint _e76 = x;
+                        metal::float3 _e79 = wg_hi.inner[(_e73 * TILE) + _e76];
+                        hi_1 = metal::max(_e71, _e79);
                     }
                 }
             }
         }
-        metal::float3 _e96 = lo_1;
-        quarter_lo.inner[li_4] = _e96;
-        metal::float3 _e99 = hi_1;
-        quarter_hi.inner[li_4] = _e99;
+        metal::float3 _e89 = lo_1;
+        quarter_lo.inner[li_4] = _e89;
+        metal::float3 _e92 = hi_1;
+        quarter_hi.inner[li_4] = _e92;
     }
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
     return;
@@ -596,7 +603,7 @@ void quarter_boxes(
 
 uint quarter_meets(
     uint q,
-    metal::float3 p_2,
+    metal::float3 p_3,
     float radius,
     threadgroup type_14& quarter_lo,
     threadgroup type_14& quarter_hi
@@ -606,21 +613,21 @@ uint quarter_meets(
     if (lo_3.x > hi_3.x) {
         return 0u;
     }
-    bool _e18 = sphere_overlaps_aabb(p_2, radius, lo_3, hi_3);
+    bool _e18 = sphere_overlaps_aabb(p_3, radius, lo_3, hi_3);
     return _e18 ? (1u << (QUARTER_SHIFT + q)) : 0u;
 }
 
 uint list_entry(
     uint slot_3,
-    metal::float3 p_3,
+    metal::float3 p_4,
     float radius_1,
     threadgroup type_14& quarter_lo,
     threadgroup type_14& quarter_hi
 ) {
-    uint _e4 = quarter_meets(0u, p_3, radius_1, quarter_lo, quarter_hi);
-    uint _e7 = quarter_meets(1u, p_3, radius_1, quarter_lo, quarter_hi);
-    uint _e10 = quarter_meets(2u, p_3, radius_1, quarter_lo, quarter_hi);
-    uint _e13 = quarter_meets(3u, p_3, radius_1, quarter_lo, quarter_hi);
+    uint _e4 = quarter_meets(0u, p_4, radius_1, quarter_lo, quarter_hi);
+    uint _e7 = quarter_meets(1u, p_4, radius_1, quarter_lo, quarter_hi);
+    uint _e10 = quarter_meets(2u, p_4, radius_1, quarter_lo, quarter_hi);
+    uint _e13 = quarter_meets(3u, p_4, radius_1, quarter_lo, quarter_hi);
     return (((slot_3 | _e4) | _e7) | _e10) | _e13;
 }
 

@@ -577,16 +577,24 @@ WorkgroupBox workgroup_bounds(
     return unnamed;
 }
 
+WorkgroupBox point_box(
+    metal::float3 p,
+    bool has
+) {
+    return WorkgroupBox {has ? p : metal::float3(340282350000000000000000000000000000000.0), has ? p : metal::float3(-340282350000000000000000000000000000000.0)};
+}
+
 WorkgroupBox workgroup_box(
     uint li_2,
-    metal::float3 p,
-    bool has,
+    metal::float3 p_1,
+    bool has_1,
     threadgroup type_7& wg_lo,
     threadgroup type_7& wg_hi,
     threadgroup WorkgroupBox& wg_box
 ) {
-    WorkgroupBox _e9 = workgroup_bounds(li_2, has ? p : metal::float3(340282350000000000000000000000000000000.0), has ? p : metal::float3(-340282350000000000000000000000000000000.0), wg_lo, wg_hi, wg_box);
-    return _e9;
+    WorkgroupBox _e3 = point_box(p_1, has_1);
+    WorkgroupBox _e6 = workgroup_bounds(li_2, _e3.lo, _e3.hi, wg_lo, wg_hi, wg_box);
+    return _e6;
 }
 
 bool box_is_empty(
@@ -599,8 +607,8 @@ metal::float4 surface_at(
     metal::int2 texel,
     metal::texture2d<float, metal::access::sample> position_tex
 ) {
-    metal::float4 p_3 = position_tex.read(metal::uint2(texel), 0);
-    return (p_3.w > 0.0) ? metal::float4(p_3.xyz, 1.0) : metal::float4(0.0);
+    metal::float4 p_4 = position_tex.read(metal::uint2(texel), 0);
+    return (p_4.w > 0.0) ? metal::float4(p_4.xyz, 1.0) : metal::float4(0.0);
 }
 
 GbTexel gbuffer_at(
@@ -690,17 +698,17 @@ WorkgroupBox load_receiver(
     thread Glossy& g_4,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float4 p_1 = metal::float4(0.0);
+    metal::float4 p_2 = metal::float4(0.0);
     bool local_12 = {};
     if (inside) {
         GbTexel _e6 = gbuffer_at(pix, view, position_tex, normal_tex);
-        p_1 = _e6.position;
+        p_2 = _e6.position;
         nrm = _e6.normal.xyz;
     }
-    metal::float4 _e12 = p_1;
+    metal::float4 _e12 = p_2;
     pos = _e12.xyz;
     if (inside) {
-        float _e18 = p_1.w;
+        float _e18 = p_2.w;
         local_12 = _e18 > 0.0;
     } else {
         local_12 = false;
@@ -778,7 +786,7 @@ float cull_r2_of(
 
 uint list_entry(
     uint slot_1,
-    metal::float3 p_2,
+    metal::float3 p_3,
     float radius
 ) {
     return slot_1;
