@@ -269,12 +269,7 @@ fn render(a: RenderArgs) -> anyhow::Result<()> {
             speed_vs_none(none_ms, st.shading_ms)
         );
     }
-    println!(
-        "  wrote       {} and {} ({:.1} s)",
-        written.0.display(),
-        written.1.display(),
-        t0.elapsed().as_secs_f64()
-    );
+    print_written(&written, &frame.image, t0);
     Ok(())
 }
 
@@ -351,12 +346,7 @@ fn render_vpl_gpu(a: RenderArgs) -> anyhow::Result<()> {
             speed_vs_none(none_ms, st.shading_ms)
         );
     }
-    println!(
-        "  wrote       {} and {} ({:.1} s)",
-        written.0.display(),
-        written.1.display(),
-        t0.elapsed().as_secs_f64()
-    );
+    print_written(&written, &out.image, t0);
     Ok(())
 }
 
@@ -451,12 +441,7 @@ fn render_pt(a: RenderArgs) -> anyhow::Result<()> {
         acc.passes,
         acc.passes as f64 / (acc.time_ms * 1e-3)
     );
-    println!(
-        "  wrote       {} and {} ({:.1} s)",
-        written.0.display(),
-        written.1.display(),
-        t0.elapsed().as_secs_f64()
-    );
+    print_written(&written, &image, t0);
     Ok(())
 }
 
@@ -473,21 +458,51 @@ pub fn spinner(msg: &'static str) -> indicatif::ProgressBar {
 /// Checks that the path `flag` names is a `.png` (what it writes), before
 /// any work.
 pub fn png_only(flag: &str, path: &Path) -> anyhow::Result<()> {
+    output_folder(flag, path)?;
     match path.extension().and_then(|e| e.to_str()) {
         Some(e) if e.eq_ignore_ascii_case("png") => Ok(()),
         _ => Err(anyhow!("{flag} {}: give a .png path (it writes a PNG)", path.display())),
     }
 }
 
+/// Checks, before any work, that the folder `flag`'s file goes into exists
+/// (a long bench would otherwise fail at its end).
+pub fn output_folder(flag: &str, path: &Path) -> anyhow::Result<()> {
+    let dir = path.parent().filter(|d| !d.as_os_str().is_empty()).unwrap_or(Path::new("."));
+    if dir.is_dir() {
+        Ok(())
+    } else {
+        Err(anyhow!("{flag} {}: folder {} does not exist", path.display(), dir.display()))
+    }
+}
+
 /// The EXR and PNG paths of `--out`: `x.exr` gives `x.exr` and `x.png`,
-/// and so does `x.png`; any other extension is an error.
+/// and so does `x.png` (the path given is kept as written, `X.EXR`
+/// included); any other extension or a missing folder is an error.
 pub fn output_paths(out: &Path) -> anyhow::Result<(PathBuf, PathBuf)> {
+    output_folder("--out", out)?;
     match out.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase).as_deref() {
-        Some("exr") | Some("png") => Ok((out.with_extension("exr"), out.with_extension("png"))),
+        Some("exr") => Ok((out.to_path_buf(), out.with_extension("png"))),
+        Some("png") => Ok((out.with_extension("exr"), out.to_path_buf())),
         _ => Err(anyhow!(
             "--out {}: give a .exr path (the PNG preview is written beside it) or a .png one (the EXR is written beside it)",
             out.display()
         )),
+    }
+}
+
+/// Prints the paths [`write_outputs`] wrote and the time since `t0`, and
+/// says so when the image is black (a scene whose lights emit nothing, or
+/// none that reaches the camera: not an error, but rarely meant).
+fn print_written(written: &(PathBuf, PathBuf), img: &Image, t0: Instant) {
+    println!(
+        "  wrote       {} and {} ({:.1} s)",
+        written.0.display(),
+        written.1.display(),
+        t0.elapsed().as_secs_f64()
+    );
+    if img.data.iter().all(|p| *p == glam::Vec3::ZERO) {
+        println!("  note        the image is black: no light the scene emits reaches the camera");
     }
 }
 
@@ -740,8 +755,15 @@ mod tests {
 
     #[test]
     fn out_paths_pair_exr_and_png() {
-        let (e, p) = output_paths(Path::new("a/x.png")).unwrap();
-        assert_eq!((e.to_str().unwrap(), p.to_str().unwrap()), ("a/x.exr", "a/x.png"));
+        let dir = std::env::temp_dir();
+        let (e, p) = output_paths(&dir.join("x.png")).unwrap();
+        assert_eq!((e, p), (dir.join("x.exr"), dir.join("x.png")));
+        // The name given is kept as written.
+        assert_eq!(
+            output_paths(&dir.join("x.EXR")).unwrap(),
+            (dir.join("x.EXR"), dir.join("x.png"))
+        );
         assert!(output_paths(Path::new("x.jpg")).is_err() && output_paths(Path::new("x")).is_err());
+        assert!(output_paths(&dir.join("no-such-folder-of-slc").join("x.exr")).is_err());
     }
 }

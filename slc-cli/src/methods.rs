@@ -90,7 +90,7 @@ pub fn bound_arg(s: &str) -> anyhow::Result<BoundArg> {
 
 /// The path tracer's ε and how it was set: the flag's number, else the
 /// scene file's, else (or with `auto`/`auto:C`) the automatic bound of `pts`
-/// (PtSettings' fixed default where the scene has no lights or surfaces).
+/// (PtSettings' fixed default where no light reaches a surface).
 pub fn pt_error_bound(
     flag: Option<BoundArg>,
     file: Option<f32>,
@@ -112,7 +112,7 @@ pub fn pt_error_bound(
         Some(e) => (e, format!("automatic: {target} expected candidates per surface point")),
         None => (
             PtSettings::default().error_bound,
-            "the fixed default: no lights or surfaces to set it from".into(),
+            "the fixed default: no light reaches a surface to set it from".into(),
         ),
     })
 }

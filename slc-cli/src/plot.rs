@@ -32,7 +32,8 @@ fn with_backend(
 ) -> anyhow::Result<()> {
     // Both backends measure text with the registered font.
     register_font();
-    match path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase).as_deref() {
+    check_path("plot file", path)?;
+    match extension(path).as_deref() {
         Some("svg") => {
             let root = SVGBackend::new(path, size).into_drawing_area();
             draw(&root)?;
@@ -43,7 +44,21 @@ fn with_backend(
             draw_png(&root)?;
             root.present().with_context(|| format!("cannot write {}", path.display()))
         }
-        _ => Err(anyhow!("plot file {} must end in .svg or .png", path.display())),
+        _ => unreachable!("check_path"),
+    }
+}
+
+fn extension(path: &Path) -> Option<String> {
+    path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase)
+}
+
+/// Checks, before any work, that `flag`'s plot path ends in `.svg` or
+/// `.png` and that its folder exists.
+pub fn check_path(flag: &str, path: &Path) -> anyhow::Result<()> {
+    crate::output_folder(flag, path)?;
+    match extension(path).as_deref() {
+        Some("svg" | "png") => Ok(()),
+        _ => Err(anyhow!("{flag} {}: a plot must end in .svg or .png", path.display())),
     }
 }
 

@@ -113,18 +113,20 @@ impl SceneArgs {
     /// Material features the renderer ignores get one warning line per
     /// material on stderr.
     pub fn scene(&self) -> anyhow::Result<(Scene, Vec<slc_core::light::Light>, RenderSettings)> {
+        let path = Path::new(&self.scene);
         let loaded = if self.scene == "cornell" {
             (Scene::cornell_box(), Vec::new(), RenderSettings::default())
         } else if self.scene == "cornell-glossy" {
             (Scene::cornell_box_glossy(), Vec::new(), RenderSettings::default())
         } else if self.scene.ends_with(".toml") {
-            let f = SceneFile::load(Path::new(&self.scene))?;
+            let f = SceneFile::load(path)?;
             (f.scene, f.lights, f.render)
         } else if self.scene.ends_with(".gltf") || self.scene.ends_with(".glb") {
-            let g = GltfScene::load(Path::new(&self.scene))?;
+            let g = GltfScene::load(path).map_err(|e| e.in_file(path))?;
             (g.scene, g.lights, RenderSettings::default())
         } else {
-            (Scene::load_obj(Path::new(&self.scene))?, Vec::new(), RenderSettings::default())
+            let s = Scene::load_obj(path).map_err(|e| e.in_file(path))?;
+            (s, Vec::new(), RenderSettings::default())
         };
         let mut said = Vec::new();
         for u in &loaded.0.unsupported {

@@ -224,6 +224,17 @@ fn out_paths() {
         slc(&d, &["render", "--width", "16", "--height", "16", "--vpls", "64", "--out", "x.jpg"]);
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(!out.status.success() && err.contains(".exr"), "{err}");
+    // The name given is the name written; its twin takes a lowercase kind.
+    ok(&d, &["render", "--width", "16", "--height", "16", "--vpls", "64", "--out", "Y.EXR"]);
+    let names: Vec<String> = std::fs::read_dir(&*d)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .filter(|n| n.starts_with('Y'))
+        .collect();
+    assert!(
+        names.len() == 2 && names.contains(&"Y.EXR".into()) && names.contains(&"Y.png".into()),
+        "{names:?}"
+    );
 }
 
 /// Bad input: a one-line error on stderr and a non-zero exit status.
@@ -291,6 +302,21 @@ fn bad_input_is_one_line_error() {
         vec!["bench", "--suite", "scenes/suite", "--width", "8", "--height", "8", "--vpls", "64"],
         vec!["bench", "--app", "pt", "--tile", "2", "--width", "8", "--height", "8"],
         vec!["shaders", "--out", "no-kernels", "--lights", ""],
+        // Output files whose folder is missing or whose plot kind is unknown
+        // fail before the work, not after it.
+        vec!["render", "--out", "no-folder/x.exr", "--width", "8", "--height", "8", "--vpls", "64"],
+        vec![
+            "bench",
+            "--json",
+            "no-folder/b.json",
+            "--width",
+            "8",
+            "--height",
+            "8",
+            "--vpls",
+            "64",
+        ],
+        vec!["bench", "--plot", "b.txt", "--width", "8", "--height", "8", "--vpls", "64"],
     ] {
         let out = slc(&d, &args);
         assert!(!out.status.success(), "{args:?} succeeded");

@@ -106,9 +106,13 @@ impl CandidateModel {
 /// The ε whose mean expected candidates per point are `target` (halved to
 /// half the light count when that is less; see the module docs), to 1%,
 /// by bisection on `ln ε` over `[10⁻¹², 10¹²]`. `None` when the scene has
-/// no lights or no surfaces (the caller keeps its fixed default).
+/// no lights or no surfaces, or no light reaches a surface (all emit
+/// nothing: any ε gives no candidates; the caller keeps its fixed default).
 pub fn auto_error_bound(pts: &PtScene, exposure: f32, target: f64) -> Option<f32> {
     let model = CandidateModel::new(pts, exposure)?;
+    if model.mean_candidates(1e-12) == 0.0 {
+        return None;
+    }
     let target = target.min(0.5 * model.lights() as f64);
     let (mut lo, mut hi) = ((1e-12f64).ln(), (1e12f64).ln());
     // C falls as ε grows: move the bracket toward the target.
@@ -206,5 +210,12 @@ mod tests {
         let eps = auto_error_bound(&pts, 1.0, 8.0).unwrap();
         let c = CandidateModel::new(&pts, 1.0).unwrap().mean_candidates(eps);
         assert!((c - 3.0).abs() < 0.06, "{c}");
+    }
+
+    /// Lights that emit nothing are never candidates: no ε is automatic
+    /// (the bisection would run to its lower end, 10⁻¹²).
+    #[test]
+    fn dark_lights_set_no_bound() {
+        assert_eq!(auto_error_bound(&scene_with(grid(8, 0.0)), 1.0, 1.5), None);
     }
 }

@@ -87,6 +87,20 @@ pub enum SceneError {
     File(String, String),
 }
 
+impl SceneError {
+    /// The error with the file it came from named: a scene error that does
+    /// not name one (no triangles, a bad vertex, an invalid value) becomes
+    /// [`SceneError::File`] of `path`; the others already name theirs.
+    pub fn in_file(self, path: &std::path::Path) -> SceneError {
+        match self {
+            SceneError::Empty | SceneError::NonFiniteVertex(_) | SceneError::Invalid(_) => {
+                SceneError::File(path.display().to_string(), self.to_string())
+            }
+            named => named,
+        }
+    }
+}
+
 /// Invalid render settings.
 #[derive(Debug, Error, PartialEq)]
 pub enum RenderError {

@@ -258,9 +258,9 @@ impl PrimaryLight {
     /// non-negative irradiance.
     pub fn validate(&self) -> Result<(), SceneError> {
         match *self {
-            PrimaryLight::Spot { outer, .. } => {
-                self.spot()
-                    .ok_or_else(|| SceneError::Invalid("primary spot light is invalid".into()))?;
+            PrimaryLight::Spot { position, direction, intensity, inner, outer } => {
+                SpotLight::new(position, direction, intensity, inner, outer)
+                    .map_err(|e| SceneError::Invalid(format!("primary spot light: {e}")))?;
                 if outer >= 85f32.to_radians() {
                     return Err(SceneError::Invalid(
                         "primary spot outer angle must be below 85 degrees".into(),
@@ -273,7 +273,10 @@ impl PrimaryLight {
                     && irradiance.is_finite()
                     && irradiance.min_element() >= 0.0)
                 {
-                    return Err(SceneError::Invalid("primary directional light is invalid".into()));
+                    return Err(SceneError::Invalid(format!(
+                        "primary directional light: direction {direction} must be finite and \
+                         non-zero, irradiance {irradiance} finite and >= 0"
+                    )));
                 }
             }
         }
@@ -473,6 +476,14 @@ impl Scene {
         }
         for (i, m) in self.materials.iter().enumerate() {
             m.validate(i)?;
+        }
+        // Nothing to see or to bound: a camera framed on it would sit at its
+        // one point, and a render would be black.
+        if self.triangles.iter().all(|t| (t[1] - t[0]).cross(t[2] - t[0]) == Vec3::ZERO) {
+            return Err(SceneError::Invalid(format!(
+                "all {} triangles have zero area (repeated or collinear vertices)",
+                self.triangles.len()
+            )));
         }
         self.camera.validate()
     }

@@ -66,6 +66,7 @@ use crate::scene::{Camera, Material, PrimaryLight, Scene};
 use crate::shapes::{subdivide, subdivide_normals};
 use glam::Vec3;
 use serde::Deserialize;
+use slc_core::LightError;
 use slc_core::ies::IesProfile;
 use slc_core::light::{IesLight, Light, PointLight, SpotLight};
 use std::path::{Path, PathBuf};
@@ -353,6 +354,18 @@ pub struct SceneFile {
     pub render: RenderSettings,
 }
 
+/// A light's error as the file states it: a spot's cone angles in the
+/// degrees it was given (`inner`, `outer`), not the radians
+/// [`SpotLight::new`] reports.
+fn in_degrees(e: LightError, inner: f32, outer: f32) -> String {
+    match e {
+        LightError::ConeAngles { .. } => format!(
+            "spot cone angles must satisfy 0 <= inner <= outer <= 180 degrees, got inner {inner}, outer {outer}"
+        ),
+        e => e.to_string(),
+    }
+}
+
 fn v3(a: [f32; 3]) -> Vec3 {
     Vec3::from(a)
 }
@@ -411,9 +424,13 @@ impl SceneFile {
                         "geometry {i}: unknown builtin '{b}' (known: cornell, cornell-glossy, sphere)"
                     )));
                 }
-                (None, Some(p), None) => Scene::load_obj(&dir.join(p))?,
+                (None, Some(p), None) => {
+                    let p = dir.join(p);
+                    Scene::load_obj(&p).map_err(|e| e.in_file(&p))?
+                }
                 (None, None, Some(p)) => {
-                    let g = GltfScene::load(&dir.join(p))?;
+                    let p = dir.join(p);
+                    let g = GltfScene::load(&p).map_err(|e| e.in_file(&p))?;
                     gltf_lights.extend(g.lights.iter().map(|l| (l.clone(), i)));
                     g.scene
                 }
@@ -444,7 +461,8 @@ impl SceneFile {
             if !(emission.is_finite() && emission.min_element() >= 0.0) {
                 return Err(bad(format!("emissive_mesh {i}: emission must be finite and >= 0")));
             }
-            let mut mesh = Scene::load_obj(&dir.join(&e.obj))?;
+            let p = dir.join(&e.obj);
+            let mut mesh = Scene::load_obj(&p).map_err(|e| e.in_file(&p))?;
             if mesh.has_vertex_normals() {
                 mesh.normals = subdivide_normals(&mesh.normals, e.subdivide);
             }
@@ -507,13 +525,28 @@ impl SceneFile {
                 let w = "[primary]";
                 l.unused(w, &["position", "direction", "intensity", "inner", "outer"])
                     .map_err(bad)?;
+                let (position, direction, intensity) = (
+                    v3(l.need(w, "position", &l.position).map_err(bad)?),
+                    v3(l.need(w, "direction", &l.direction).map_err(bad)?),
+                    v3(l.need(w, "intensity", &l.intensity).map_err(bad)?),
+                );
+                let (inner, outer) =
+                    (l.inner.unwrap_or(0.0), l.need(w, "outer", &l.outer).map_err(bad)?);
+                // The light's own checks, reported in the file's degrees.
+                SpotLight::new(
+                    position,
+                    direction,
+                    intensity,
+                    inner.to_radians(),
+                    outer.to_radians(),
+                )
+                .map_err(|e| bad(format!("{w}: {}", in_degrees(e, inner, outer))))?;
                 scene.primary = PrimaryLight::Spot {
-                    position: v3(l.need(w, "position", &l.position).map_err(bad)?),
-                    direction: v3(l.need(w, "direction", &l.direction).map_err(bad)?)
-                        .normalize_or_zero(),
-                    intensity: v3(l.need(w, "intensity", &l.intensity).map_err(bad)?),
-                    inner: l.inner.unwrap_or(0.0).to_radians(),
-                    outer: l.need(w, "outer", &l.outer).map_err(bad)?.to_radians(),
+                    position,
+                    direction: direction.normalize_or_zero(),
+                    intensity,
+                    inner: inner.to_radians(),
+                    outer: outer.to_radians(),
                 }
             }
             Some(l) if l.kind == "directional" => {
@@ -567,16 +600,17 @@ impl SceneFile {
                 "spot" => {
                     l.unused(&w, &["position", "direction", "intensity", "inner", "outer"])
                         .map_err(bad)?;
-                    let outer = l.need(&w, "outer", &l.outer).map_err(bad)?;
+                    let (inner, outer) =
+                        (l.inner.unwrap_or(0.0), l.need(&w, "outer", &l.outer).map_err(bad)?);
                     Light::Spot(
                         SpotLight::new(
                             need3("position", &l.position)?,
                             need3("direction", &l.direction)?,
                             need3("intensity", &l.intensity)?,
-                            l.inner.unwrap_or(0.0).to_radians(),
+                            inner.to_radians(),
                             outer.to_radians(),
                         )
-                        .map_err(err)?,
+                        .map_err(|e| bad(format!("{w}: {}", in_degrees(e, inner, outer))))?,
                     )
                 }
                 "ies" => {
@@ -648,6 +682,45 @@ mod tests {
                 SceneFile::parse(text, Path::new("."), "t.toml").is_err(),
                 "{text:?} was accepted"
             );
+        }
+    }
+
+    /// Errors say what is wrong in the file's terms: a spot's cone in the
+    /// degrees it was written in, the primary light's actual fault, a mesh
+    /// with no area (which a default camera cannot frame) by its file.
+    #[test]
+    fn errors_speak_the_files_terms() {
+        let cornell = "[[geometry]]\nbuiltin = \"cornell\"\n";
+        let spot = "position = [0, 1, 0]\ndirection = [0, -1, 0]\nintensity = [1, 1, 1]\n";
+        let dir = tempfile::tempdir().unwrap();
+        std::fs::write(dir.path().join("flat.obj"), "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n")
+            .unwrap();
+        for (text, says) in [
+            (
+                format!("{cornell}[[light]]\ntype = \"spot\"\n{spot}inner = 50\nouter = 40\n"),
+                "[[light]] 0: spot cone angles must satisfy 0 <= inner <= outer <= 180 degrees, \
+                 got inner 50, outer 40",
+            ),
+            (
+                format!("{cornell}[primary]\ntype = \"spot\"\n{spot}outer = 190\n"),
+                "[primary]: spot cone angles must satisfy 0 <= inner <= outer <= 180 degrees, \
+                 got inner 0, outer 190",
+            ),
+            (
+                format!(
+                    "{cornell}[primary]\ntype = \"spot\"\n{}outer = 30\n",
+                    spot.replace("[0, -1, 0]", "[0, 0, 0]")
+                ),
+                "[primary]: light direction has zero length",
+            ),
+            (
+                "[[geometry]]\nobj = \"flat.obj\"\n".into(),
+                "flat.obj: invalid scene: all 1 triangles have zero area",
+            ),
+        ] {
+            let e =
+                SceneFile::parse(&text, dir.path(), "t.toml").err().expect("accepted").to_string();
+            assert!(e.contains(says), "{text:?}: {e}");
         }
     }
 

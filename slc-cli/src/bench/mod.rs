@@ -40,6 +40,15 @@ pub fn run(a: BenchArgs) -> anyhow::Result<()> {
             slc_cpu::simd::SimdPath::best().name()
         ));
     }
+    // The report's files: a bad path fails now, not after the bench.
+    for (flag, path) in [("--json", &a.json), ("--csv", &a.csv)] {
+        if let Some(path) = path {
+            crate::output_folder(flag, path)?;
+        }
+    }
+    if let Some(path) = &a.plot {
+        crate::plot::check_path("--plot", path)?;
+    }
     if a.scene.app != App::Pt {
         a.scene.pt_only_flags()?;
         if a.suite.is_some() {
