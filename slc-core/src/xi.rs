@@ -67,16 +67,63 @@ crate::shared! {
         return xi_from_bits(add_wrap_u32(o, laine_karras(reverse_bits(frame), s) ^ laine_karras(0, s)));
     }
 
-    /// The ξ a light takes in a frame: [`xi_for`]`(seed, frame, light)`,
-    /// or `fixed` for every light where `fixed ≥ 0` (a fixed ξ in `[0, 1)`:
-    /// not an estimator on its own, but averaging frames over a grid of
-    /// fixed ξ is quadrature of the expectation over ξ, how the tests prove
-    /// a pipeline unbiased; a negative `fixed` means none).
-    pub fn frame_xi(seed: u32, frame: u32, light: u32, fixed: f32) -> f32 {
+    /// The flag of a ξ key ([`light_xi`]) whose light draws its ξ by
+    /// [`xi_rotated`]; bits 26–30 of the key hold the set's `bits`, bits
+    /// 0–25 the light's index.
+    pub const XI_ROTATED: u32 = 2147483648;
+
+    /// ξ of light `light` (`< 2^bits`, `1 ≤ bits ≤ 31`) of a set whose
+    /// lights share one rotation: `xi_from_bits(o + t (mod 2³²))` with the
+    /// light's offset `o = (LK(light, k) mod 2^bits) · 2^(32−bits) + (h(k ⊕
+    /// light) >> bits)` and the set's frame point `t = LK(rev(frame), s) ⊕
+    /// LK(0, s)`, `k = h(h(seed) ⊕ 0x3c6ef35f)`, `s = h(k)` (`h` =
+    /// [`pcg_hash`], `LK` [`laine_karras`]).
+    ///
+    /// In every frame each ξ is uniform, and the set's ξ are stratified
+    /// across its lights: `LK(·, k)` permutes the `2^bits` strata, so no two
+    /// lights share one, and one rotation `t` moves them all. So the number
+    /// of lights whose ξ falls below a threshold `p` (the candidates of
+    /// lights at similar distance: a cluster, a fixture) stays within one
+    /// of its mean instead of varying as a sum of independent draws; with
+    /// 1.5 expected candidates, independent ξ leave about a fifth of the
+    /// points with none. Over frames `0..2ᵐ` each light's ξ falls once in
+    /// each of `2ᵐ` strata (`t` is [`xi_for`]'s shuffled sequence, one for
+    /// the set). The lights keep their ξ differences from frame to frame:
+    /// an estimate that is a sum over lights of terms each depending on one
+    /// light's ξ (the candidates' importance-weighted sum, and a pick among
+    /// the candidates made with its own random numbers) stays unbiased for
+    /// every seed, but one whose weights depend on other lights' ξ (the
+    /// path tracers' MIS weights of area lights) would not: area lights
+    /// keep [`xi_for`] ([`xi_keys`]).
+    pub fn xi_rotated(seed: u32, frame: u32, light: u32, bits: u32) -> f32 {
+        let k: u32 = pcg_hash(pcg_hash(seed) ^ 1013904223);
+        let o: u32 = (laine_karras(light, k) << (32 - bits)) | (pcg_hash(k ^ light) >> bits);
+        let s: u32 = pcg_hash(k);
+        let t: u32 = laine_karras(reverse_bits(frame), s) ^ laine_karras(0, s);
+        return xi_from_bits(add_wrap_u32(o, t));
+    }
+
+    /// ξ of the light with key `key` in frame `frame`: [`xi_rotated`] for a
+    /// key with [`XI_ROTATED`] set (its index and `bits` from the key), else
+    /// [`xi_for`]`(seed, frame, key)`.
+    pub fn light_xi(seed: u32, frame: u32, key: u32) -> f32 {
+        if key >= XI_ROTATED {
+            return xi_rotated(seed, frame, key & 67108863, max((key >> 26) & 31, 1));
+        }
+        return xi_for(seed, frame, key);
+    }
+
+    /// The ξ a light takes in a frame: [`light_xi`]`(seed, frame, key)`
+    /// (a plain index as key: [`xi_for`]), or `fixed` for every light where
+    /// `fixed ≥ 0` (a fixed ξ in `[0, 1)`: not an estimator on its own, but
+    /// averaging frames over a grid of fixed ξ is quadrature of the
+    /// expectation over ξ, how the tests prove a pipeline unbiased; a
+    /// negative `fixed` means none).
+    pub fn frame_xi(seed: u32, frame: u32, key: u32, fixed: f32) -> f32 {
         if fixed >= 0.0 {
             return fixed;
         }
-        return xi_for(seed, frame, light);
+        return light_xi(seed, frame, key);
     }
 
     /// `⌊2³²/φ⌋`, the golden-ratio increment: xored into a point's stream it
@@ -127,6 +174,30 @@ crate::shared! {
     }
 }
 
+/// The most lights a set whose ξ rotate together may hold (an index fits
+/// bits 0–25 of a key).
+pub const MAX_ROTATED: usize = 1 << 26;
+
+/// The ξ keys ([`light_xi`]) of the path tracers' lights: point, spot and
+/// IES lights share one rotation ([`xi_rotated`], stratified across the
+/// set, their index `i` among all `lights`), area lights draw their own
+/// ([`xi_for`], key `i`: their MIS weights depend on the other lights'
+/// candidacy, which must stay independent of theirs). A set of more than
+/// [`MAX_ROTATED`] lights keeps [`xi_for`] for every light.
+pub fn xi_keys(lights: &[crate::light::Light]) -> alloc::vec::Vec<u32> {
+    let n = lights.len();
+    let bits = (usize::BITS - n.saturating_sub(1).leading_zeros()).max(1);
+    lights
+        .iter()
+        .enumerate()
+        .map(|(i, l)| match l {
+            crate::light::Light::Triangle(_) => i as u32,
+            _ if n > MAX_ROTATED => i as u32,
+            _ => XI_ROTATED | (bits << 26) | i as u32,
+        })
+        .collect()
+}
+
 /// Fills `out` with one ξ per light from `rng`, using [`xi_from_bits`].
 pub fn fill_xi<R: RngCore + ?Sized>(rng: &mut R, out: &mut [f32]) {
     for x in out {
@@ -163,6 +234,64 @@ mod tests {
                 assert!((b as f64 - expect).abs() < 5.0 * sd, "frame {frame}: bins {bins:?}");
             }
         }
+    }
+
+    /// A rotated set's ξ in one frame are stratified across its lights:
+    /// for a set filling its `2^bits` strata the count below any threshold
+    /// `p` is within 2 of `p · 2^bits` (independent ξ: ±5σ ≈ ±110 here);
+    /// over frames `0..2ᵐ` each light's ξ falls once in each stratum, and
+    /// in every frame each light's ξ over seeds is uniform.
+    #[test]
+    fn rotated_xi_are_stratified_across_lights_and_over_frames() {
+        let bits = 11u32;
+        let n = 1u32 << bits;
+        for frame in [0u32, 1, 5, 1000, 0x8000_0001] {
+            let xi: alloc::vec::Vec<f32> = (0..n).map(|l| xi_rotated(7, frame, l, bits)).collect();
+            for p in [0.0001f32, 0.001, 0.01, 0.1, 0.37, 0.5, 0.93] {
+                let count = xi.iter().filter(|&&x| x < p).count() as f32;
+                assert!((count - p * n as f32).abs() <= 2.0, "frame {frame}, p {p}: {count}");
+            }
+        }
+        for light in [0u32, 1, 77, n - 1] {
+            let mut hit = [false; 1024];
+            for frame in 0..1024 {
+                let s = (xi_rotated(9, frame, light, bits) * 1024.0) as usize;
+                assert!(!hit[s], "light {light} frame {frame}: stratum {s} twice");
+                hit[s] = true;
+            }
+        }
+        for (light, frame) in [(0u32, 0u32), (5, 3), (2047, 1000)] {
+            let mut bins = [0u32; 16];
+            for seed in 0..65_536 {
+                bins[(xi_rotated(seed, frame, light, bits) * 16.0) as usize] += 1;
+            }
+            let (expect, sd) = (4096.0f64, (65_536.0f64 * (1.0 / 16.0) * (15.0 / 16.0)).sqrt());
+            for b in bins {
+                assert!((b as f64 - expect).abs() < 5.0 * sd, "light {light}: bins {bins:?}");
+            }
+        }
+    }
+
+    /// The keys: area lights keep their own ξ ([`xi_for`] of their index),
+    /// the others rotate with the set's bits; [`light_xi`] decodes both.
+    #[test]
+    fn keys_choose_each_lights_xi() {
+        use crate::light::{Light, PointLight, TriangleLight};
+        use glam::Vec3;
+        let point = Light::Point(PointLight::new(Vec3::ZERO, Vec3::ONE).unwrap());
+        let tri =
+            Light::Triangle(TriangleLight::new(Vec3::ZERO, Vec3::X, Vec3::Y, Vec3::ONE).unwrap());
+        let lights = [tri.clone(), point.clone(), point.clone(), tri, point];
+        let keys = xi_keys(&lights);
+        assert_eq!((keys[0], keys[3]), (0, 3));
+        for i in [1usize, 2, 4] {
+            assert_eq!(keys[i], XI_ROTATED | (3 << 26) | i as u32);
+            assert_eq!(light_xi(4, 9, keys[i]), xi_rotated(4, 9, i as u32, 3));
+        }
+        assert_eq!(light_xi(4, 9, 3), xi_for(4, 9, 3));
+        assert_eq!(frame_xi(4, 9, keys[1], 0.25), 0.25);
+        // A single light: one bit.
+        assert_eq!(xi_keys(&lights[1..2]), [XI_ROTATED | (1 << 26)]);
     }
 
     /// The lights' ξ over a seed's frames are jointly uniform, not tied to

@@ -59,6 +59,8 @@ fn library_validates_with_naga() {
         "weighted_replace",
         "weighted_threshold",
         "xi_for",
+        "xi_rotated",
+        "light_xi",
         "cull_radius",
         "range_radius",
         "sphere_union",

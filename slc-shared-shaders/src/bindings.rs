@@ -204,7 +204,7 @@ pub fn bindings(kernel: Kernel, f: &Features) -> Vec<Binding> {
     let mut v = match kernel {
         Kernel::LightUpdate => vec![
             uniform(0, "params", "FrameParams", true, "light count, seed, frame"),
-            read(1, "ids", "array<u32>", "ξ id of each light", "host or `vpl_pack`"),
+            read(1, "ids", "array<u32>", "ξ key of each light (`light_xi`)", "host or `vpl_pack`"),
             read(2, "rt2", "array<f32>", "threshold range² `r_t²`", "host or `vpl_pack`"),
             write(3, "r2", "array<f32>", "random range² `r² = r_t²/(1−ξ)`"),
         ],

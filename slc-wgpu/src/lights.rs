@@ -13,6 +13,7 @@ use slc_core::bsh::{BSH_TAIL_BINS, Bsh};
 use slc_core::importance::LightCone;
 use slc_core::light::{Light, LightBound};
 use slc_core::range::RangeParams;
+use slc_core::xi::xi_keys;
 use slc_scene::light_bvh::LightBvh;
 use slc_shared_shaders::layout::{
     FrameParams, GpuLight, GpuLightCone, RefitParams, TailParams, pack_cones, pack_light_bvh,
@@ -99,6 +100,10 @@ pub(crate) struct LightBuffers {
     pub(crate) peaks: wgpu::Buffer,
     pub(crate) rt2: wgpu::Buffer,
     pub(crate) r2: wgpu::Buffer,
+    /// Each light's ξ key ([`slc_core::xi::xi_keys`]), `light_update`'s
+    /// `ids`: the point, spot and IES lights' ξ rotate together, the area
+    /// lights draw their own (the direct pass runs no update).
+    keys: wgpu::Buffer,
     pub(crate) bsh: wgpu::Buffer,
     /// BSH leaf of each light.
     pub(crate) leaf: wgpu::Buffer,
@@ -267,6 +272,7 @@ impl GpuLightSet {
         q.write_buffer(&b.bounds, 0, bytemuck::cast_slice(&pack_bounds(&bounds)));
         q.write_buffer(&b.peaks, 0, bytemuck::cast_slice(&pack_peaks(lights)));
         q.write_buffer(&b.cones, 0, bytemuck::cast_slice(&pack_cones(&cones, &[])));
+        q.write_buffer(&b.keys, 0, bytemuck::cast_slice(&xi_keys(lights)));
         b.peaks_host = lights.iter().map(Light::peak).collect();
         let table_bytes: &[u8] = bytemuck::cast_slice(&table);
         let replaced = table_bytes.len() as u64 != b.table_buf.size();
@@ -366,7 +372,6 @@ impl LightBuffers {
         let dst = wgpu::BufferUsages::COPY_DST;
         let s = |label: &str, bytes: &[u8]| storage(gpu, label, bytes, wgpu::BufferUsages::empty());
         let leaf = s("light leaf", bytemuck::cast_slice(bsh.leaf_indices()));
-        let ids: Vec<u32> = (0..n as u32).collect();
         let cones = if cones.is_empty() {
             vec![GpuLightCone::default()]
         } else {
@@ -381,7 +386,8 @@ impl LightBuffers {
         refit_params.write(gpu, &values);
         let rt2 = zeroed(gpu, "rt2", n * 4, wgpu::BufferUsages::STORAGE | dst);
         let r2 = zeroed(gpu, "r2", n * 4, wgpu::BufferUsages::STORAGE);
-        let ids = s("ids", bytemuck::cast_slice(&ids));
+        // `light_update`'s ids: each light's ξ key (the CPU path tracer's).
+        let keys = storage(gpu, "xi keys", bytemuck::cast_slice(&xi_keys(lights)), dst);
         let order = s("bsh order", bytemuck::cast_slice(&order));
         let bounds = storage(gpu, "light bounds", bytemuck::cast_slice(&pack_bounds(bounds)), dst);
         // The range tail: its cut (none until `bsh_tail` runs: the CPU's
@@ -413,7 +419,7 @@ impl LightBuffers {
             0,
             &[
                 ("params", frame_params.binding()),
-                ("ids", res(&ids)),
+                ("ids", res(&keys)),
                 ("rt2", res(&rt2)),
                 ("r2", res(&r2)),
             ],
@@ -468,6 +474,7 @@ impl LightBuffers {
             peaks: storage(gpu, "light peaks", bytemuck::cast_slice(&pack_peaks(lights)), dst),
             rt2,
             r2,
+            keys,
             bsh,
             leaf,
             bounds,

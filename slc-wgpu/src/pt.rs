@@ -2,7 +2,8 @@
 //! slc-shared-shaders' kernels only. Per pass (one sample per pixel):
 //!
 //! 1. `light_update`: every light's random range `r² = r_t²/(1−ξ)` from the
-//!    same `ξ = xi_for(seed, pass, light)` as the CPU path tracer;
+//!    same `ξ = light_xi(seed, pass, key)` as the CPU path tracer (its key from
+//!    `slc_core::xi::xi_keys`: point, spot and IES lights rotate together);
 //! 2. `bsh_tail`, then `bsh_refit`: the BSH's range tail for those ranges
 //!    (the largest spheres, tested flat after the tree: `Bsh::with_tail`)
 //!    and the tree refitted to them, one dispatch per level, deepest first.

@@ -52,7 +52,7 @@ use slc_core::path::{
 use slc_core::range::{RangeParams, random_range2};
 use slc_core::ray::{face_against, ray_t_min, surface_offset};
 use slc_core::reservoir::{Reservoir, WeightedReservoir, reservoir_select_pdf, uniform_light};
-use slc_core::xi::{xi_for, xi_from_bits};
+use slc_core::xi::{light_xi, xi_from_bits, xi_keys};
 use slc_scene::RenderError;
 use slc_scene::backend::{PathTracer, Timing};
 use slc_scene::pt::{PtMethod, PtRender, PtScene, PtSettings, RESERVOIR_K, WEIGHTED_K};
@@ -75,6 +75,9 @@ pub struct CpuPathTracer {
     /// Each light's `r_t²` and the range parameters it was computed for
     /// (shared with each pass's [`Pass`]).
     rt2: Option<(RangeParams, Arc<[f32]>)>,
+    /// Each light's ξ key ([`slc_core::xi::xi_keys`]): the point, spot and
+    /// IES lights' ξ rotate together, the area lights draw their own.
+    xi_keys: Vec<u32>,
     /// The scene's bounding-box diagonal (ray offsets scale with it).
     diag: f32,
     /// The scene's bounding box (each pass's [`BshGrid`] covers it).
@@ -91,6 +94,7 @@ impl CpuPathTracer {
             geo: Geometry::new(&scene.triangles),
             bsh: pts.bsh().clone(),
             rt2: None,
+            xi_keys: xi_keys(pts.lights()),
             diag: scene.diagonal(),
             bounds: scene.bounds(),
             pts: pts.clone(),
@@ -212,7 +216,7 @@ impl CpuPathTracer {
         let r2: Vec<f32> = rt2
             .par_iter()
             .enumerate()
-            .map(|(i, &t)| random_range2(t, xi_for(seed, pass, i as u32)))
+            .map(|(i, &t)| random_range2(t, light_xi(seed, pass, self.xi_keys[i])))
             .collect();
         self.bsh
             .refit_split(&r2, REFIT_GRAIN, &|a, b| _ = rayon::join(a, b))

@@ -1,7 +1,8 @@
 {% include "header.wgsl" %}
-// Per frame (or pass): the random squared range of every light from its own
-// ξ = xi_for(seed, frame, id), the same numbers the CPU draws (or from a
-// fixed ξ every light shares: frame_xi).
+// Per frame (or pass): the random squared range of every light from its ξ,
+// light_xi(seed, frame, key) with the light's key in `ids` (a VPL's id; a
+// path-tracer light's xi_keys entry), the same numbers the CPU draws (or
+// from a fixed ξ every light shares: frame_xi).
 
 {{ bindings }}
 

@@ -19,6 +19,7 @@ struct GpuLightBvhNode {
 }
 
 const XI_STEP: f32 = 0.000000059604645f;
+const XI_ROTATED: u32 = 2147483648u;
 const PICK_STREAM: u32 = 2654435769u;
 const TWO_PI: f32 = 6.2831855f;
 const UNRANGED: f32 = 100000000000000000000000000000000000000f;
@@ -157,18 +158,43 @@ fn xi_for(seed_1: u32, frame: u32, light: u32) -> f32 {
     return _e14;
 }
 
-fn frame_xi(seed_2: u32, frame_1: u32, light_1: u32, fixed: f32) -> f32 {
+fn xi_rotated(seed_2: u32, frame_1: u32, light_1: u32, bits_1: u32) -> f32 {
+    let _e4 = pcg_hash(seed_2);
+    let _e7 = pcg_hash((_e4 ^ 1013904223u));
+    let _e8 = laine_karras(light_1, _e7);
+    let _e13 = pcg_hash((_e7 ^ light_1));
+    let o_2 = ((_e8 << (32u - bits_1)) | (_e13 >> bits_1));
+    let _e16 = pcg_hash(_e7);
+    let _e17 = reverse_bits(frame_1);
+    let _e18 = laine_karras(_e17, _e16);
+    let _e20 = laine_karras(0u, _e16);
+    let t_2 = (_e18 ^ _e20);
+    let _e22 = add_wrap_u32_(o_2, t_2);
+    let _e23 = xi_from_bits(_e22);
+    return _e23;
+}
+
+fn light_xi(seed_3: u32, frame_2: u32, key: u32) -> f32 {
+    if (key >= XI_ROTATED) {
+        let _e13 = xi_rotated(seed_3, frame_2, (key & 67108863u), max(((key >> 26u) & 31u), 1u));
+        return _e13;
+    }
+    let _e14 = xi_for(seed_3, frame_2, key);
+    return _e14;
+}
+
+fn frame_xi(seed_4: u32, frame_3: u32, key_1: u32, fixed: f32) -> f32 {
     if (fixed >= 0f) {
         return fixed;
     }
-    let _e6 = xi_for(seed_2, frame_1, light_1);
+    let _e6 = light_xi(seed_4, frame_3, key_1);
     return _e6;
 }
 
-fn point_stream(seed_3: u32, point: u32, frame_2: u32) -> u32 {
-    let _e3 = pcg_hash(frame_2);
+fn point_stream(seed_5: u32, point: u32, frame_4: u32) -> u32 {
+    let _e3 = pcg_hash(frame_4);
     let _e5 = pcg_hash((point ^ _e3));
-    let _e7 = pcg_hash((seed_3 ^ _e5));
+    let _e7 = pcg_hash((seed_5 ^ _e5));
     return _e7;
 }
 
@@ -183,9 +209,9 @@ fn reuse_stream(stream_1: u32, which: u32) -> u32 {
     return _e6;
 }
 
-fn path_stream(seed_4: u32, pixel: u32, pass_index: u32) -> u32 {
+fn path_stream(seed_6: u32, pixel: u32, pass_index: u32) -> u32 {
     let _e4 = add_wrap_u32_(pass_index, PICK_STREAM);
-    let _e5 = point_stream(seed_4, pixel, _e4);
+    let _e5 = point_stream(seed_6, pixel, _e4);
     return _e5;
 }
 
@@ -475,8 +501,8 @@ fn spot_falloff(cos_theta: f32, cos_outer: f32, cos_inner: f32, shape: f32) -> f
     if (cos_inner <= cos_outer) {
         return select(0f, 1f, (cos_theta >= cos_outer));
     }
-    let t_2 = saturate(((cos_theta - cos_outer) / (cos_inner - cos_outer)));
-    return select(((t_2 * t_2) * (3f - (2f * t_2))), (t_2 * t_2), (shape > 0.5f));
+    let t_3 = saturate(((cos_theta - cos_outer) / (cos_inner - cos_outer)));
+    return select(((t_3 * t_3) * (3f - (2f * t_3))), (t_3 * t_3), (shape > 0.5f));
 }
 
 fn triangle_lobe(n_2: vec3<f32>, area: f32, w_2: vec3<f32>) -> f32 {
@@ -830,8 +856,8 @@ fn slot_share(slot_1: u32, k_5: u32) -> vec3<f32> {
     return vec3<f32>(0f, 0f, w_20);
 }
 
-fn grid_coordinate(bits_1: u32) -> f32 {
-    let _e3 = to_f32_((bits_1 >> 16u));
+fn grid_coordinate(bits_2: u32) -> f32 {
+    let _e3 = to_f32_((bits_2 >> 16u));
     return ((_e3 + 0.5f) / 65536f);
 }
 
@@ -957,8 +983,8 @@ fn ggx_d(cos_h: f32, sin2_h: f32, alpha: f32) -> f32 {
         return 0f;
     }
     let a2_1 = (alpha * alpha);
-    let t_3 = (((cos_h * cos_h) * a2_1) + sin2_h);
-    return ((a2_1 * INV_PI) / (t_3 * t_3));
+    let t_4 = (((cos_h * cos_h) * a2_1) + sin2_h);
+    return ((a2_1 * INV_PI) / (t_4 * t_4));
 }
 
 fn smith_root(cos_: f32, alpha_1: f32) -> f32 {
@@ -1172,9 +1198,9 @@ fn ggx_vndf_pdf(wi_2: vec3<f32>, wo: vec3<f32>, alpha_9: f32) -> f32 {
     let hs_1 = (wi_2 + wo);
     let m_2 = (hs_1 / vec3(sqrt(dot(hs_1, hs_1))));
     let _e28 = ggx_d(m_2.z, ((m_2.x * m_2.x) + (m_2.y * m_2.y)), alpha_9);
-    let t_4 = sqrt((((alpha_9 * alpha_9) * ((wi_2.x * wi_2.x) + (wi_2.y * wi_2.y))) + (wi_2.z * wi_2.z)));
+    let t_5 = sqrt((((alpha_9 * alpha_9) * ((wi_2.x * wi_2.x) + (wi_2.y * wi_2.y))) + (wi_2.z * wi_2.z)));
     let _e43 = bounded_vndf_k(wi_2, alpha_9);
-    return (_e28 / (2f * ((_e43 * wi_2.z) + t_4)));
+    return (_e28 / (2f * ((_e43 * wi_2.z) + t_5)));
 }
 
 fn bsdf_sample(n_18: vec3<f32>, v_8: vec3<f32>, alpha_10: f32, p_spec: f32, u1_4: f32, u2_4: f32) -> vec3<f32> {
@@ -1336,8 +1362,8 @@ fn cone_cos_toward(center_2: vec3<f32>, radius_3: f32, p_2: vec3<f32>, d_2: vec3
 }
 
 fn range_scale_at(rl: vec4<f32>, cos_t: f32) -> f32 {
-    let t_5 = (((0.5f + (0.5f * cos_t)) * (rl.z - 1f)) + 1f);
-    return clamp((rl.x + ((rl.y * rl.z) / (t_5 * t_5))), 1f, (rl.w * rl.w));
+    let t_6 = (((0.5f + (0.5f * cos_t)) * (rl.z - 1f)) + 1f);
+    return clamp((rl.x + ((rl.y * rl.z) / (t_6 * t_6))), 1f, (rl.w * rl.w));
 }
 
 fn range_scale_toward(rl_1: vec4<f32>, center_3: vec3<f32>, radius_4: f32, p_3: vec3<f32>, r_6: vec3<f32>) -> f32 {
@@ -1587,15 +1613,15 @@ fn ray_triangle(o_1: vec3<f32>, d_4: vec3<f32>, a_8: vec3<f32>, b_6: vec3<f32>, 
     if _e42 {
         return -1f;
     }
-    let t_6 = (dot(e2_2, q_6) * inv_1);
-    if (t_6 > t_min) {
-        local_28 = (t_6 < t_max_1);
+    let t_7 = (dot(e2_2, q_6) * inv_1);
+    if (t_7 > t_min) {
+        local_28 = (t_7 < t_max_1);
     } else {
         local_28 = false;
     }
     let _e51 = local_28;
     if _e51 {
-        return t_6;
+        return t_7;
     }
     return -1f;
 }
@@ -1634,8 +1660,8 @@ fn bilateral_weight(n_26: vec3<f32>, nj: vec3<f32>, z_1: f32, zj: f32, inv_sz: f
     let dn4_ = (dn2_ * dn2_);
     let dn8_ = (dn4_ * dn4_);
     let d_11 = ((zj - z_1) * inv_sz);
-    let t_7 = max((1f - (d_11 * d_11)), 0f);
-    return (((dn8_ * dn8_) * t_7) * t_7);
+    let t_8 = max((1f - (d_11 * d_11)), 0f);
+    return (((dn8_ * dn8_) * t_8) * t_8);
 }
 
 fn interleave_subset(x_15: u32, y_2: u32, period_2: u32) -> u32 {
@@ -1722,8 +1748,8 @@ fn vpl_near_weight(d2_11: f32, near_r2_: f32) -> f32 {
     if (near_r2_ <= 0f) {
         return 0f;
     }
-    let t_8 = clamp(((near_r2_ - d2_11) / (0.75f * near_r2_)), 0f, 1f);
-    return ((t_8 * t_8) * (3f - (2f * t_8)));
+    let t_9 = clamp(((near_r2_ - d2_11) / (0.75f * near_r2_)), 0f, 1f);
+    return ((t_9 * t_9) * (3f - (2f * t_9)));
 }
 
 fn vpl_far_weight(d2_12: f32, near_r2_1: f32) -> f32 {
@@ -1820,8 +1846,8 @@ fn light_map_coord_at(rel: vec3<f32>, dir_2: vec3<f32>, axis_6: vec3<f32>, exten
 
 fn display_encode(x_16: f32) -> f32 {
     let v_24 = max(x_16, 0f);
-    let t_9 = ((2f * v_24) / (1f + (2f * v_24)));
-    return select(((1.055f * pow(t_9, 0.41666666f)) - 0.055f), (12.92f * t_9), (t_9 <= 0.0031308f));
+    let t_10 = ((2f * v_24) / (1f + (2f * v_24)));
+    return select(((1.055f * pow(t_10, 0.41666666f)) - 0.055f), (12.92f * t_10), (t_10 <= 0.0031308f));
 }
 
 fn light_map_depth(rel_1: vec3<f32>, axis_7: vec3<f32>, perspective_1: bool) -> f32 {
@@ -1984,8 +2010,8 @@ fn temporal_change(l_6: f32, m1_: f32, noise: f32, n_31: f32) -> f32 {
         return 0f;
     }
     let sigma = sqrt((max(noise, 0f) * (1f + (1f / n_31))));
-    let t_10 = (abs((l_6 - m1_)) / ((sigma + (0.001f * max(abs(l_6), abs(m1_)))) + 0.00000000000000000001f));
-    return clamp(((t_10 - TEMPORAL_CHANGE_LOW) / 4f), 0f, 1f);
+    let t_11 = (abs((l_6 - m1_)) / ((sigma + (0.001f * max(abs(l_6), abs(m1_)))) + 0.00000000000000000001f));
+    return clamp(((t_11 - TEMPORAL_CHANGE_LOW) / 4f), 0f, 1f);
 }
 
 fn next_history_length(n_32: f32, lambda: f32, max_history: f32) -> f32 {

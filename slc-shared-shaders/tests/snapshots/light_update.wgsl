@@ -31,6 +31,7 @@ const MAP_CAMERA: u32 = 0u;
 const MAP_PERSPECTIVE: u32 = 1u;
 const MAP_ORTHOGRAPHIC: u32 = 2u;
 const XI_STEP: f32 = 0.000000059604645f;
+const XI_ROTATED: u32 = 2147483648u;
 const PICK_STREAM: u32 = 2654435769u;
 const TWO_PI: f32 = 6.2831855f;
 const UNRANGED: f32 = 100000000000000000000000000000000000000f;
@@ -158,11 +159,36 @@ fn xi_for(seed_1: u32, frame: u32, light: u32) -> f32 {
     return _e14;
 }
 
-fn frame_xi(seed_2: u32, frame_1: u32, light_1: u32, fixed: f32) -> f32 {
+fn xi_rotated(seed_2: u32, frame_1: u32, light_1: u32, bits_1: u32) -> f32 {
+    let _e4 = pcg_hash(seed_2);
+    let _e7 = pcg_hash((_e4 ^ 1013904223u));
+    let _e8 = laine_karras(light_1, _e7);
+    let _e13 = pcg_hash((_e7 ^ light_1));
+    let o = ((_e8 << (32u - bits_1)) | (_e13 >> bits_1));
+    let _e16 = pcg_hash(_e7);
+    let _e17 = reverse_bits(frame_1);
+    let _e18 = laine_karras(_e17, _e16);
+    let _e20 = laine_karras(0u, _e16);
+    let t = (_e18 ^ _e20);
+    let _e22 = add_wrap_u32_(o, t);
+    let _e23 = xi_from_bits(_e22);
+    return _e23;
+}
+
+fn light_xi(seed_3: u32, frame_2: u32, key: u32) -> f32 {
+    if (key >= XI_ROTATED) {
+        let _e13 = xi_rotated(seed_3, frame_2, (key & 67108863u), max(((key >> 26u) & 31u), 1u));
+        return _e13;
+    }
+    let _e14 = xi_for(seed_3, frame_2, key);
+    return _e14;
+}
+
+fn frame_xi(seed_4: u32, frame_3: u32, key_1: u32, fixed: f32) -> f32 {
     if (fixed >= 0f) {
         return fixed;
     }
-    let _e6 = xi_for(seed_2, frame_1, light_1);
+    let _e6 = light_xi(seed_4, frame_3, key_1);
     return _e6;
 }
 

@@ -35,6 +35,7 @@ const uint MAP_CAMERA = 0u;
 const uint MAP_PERSPECTIVE = 1u;
 const uint MAP_ORTHOGRAPHIC = 2u;
 const float XI_STEP = 5.9604645e-8;
+const uint XI_ROTATED = 2147483648u;
 const uint PICK_STREAM = 2654435769u;
 const float TWO_PI = 6.2831855;
 const float UNRANGED = 1e38;
@@ -160,11 +161,36 @@ float xi_for(uint seed_1, uint frame, uint light) {
     return _e14;
 }
 
-float frame_xi(uint seed_2, uint frame_1, uint light_1, float fixed_) {
+float xi_rotated(uint seed_2, uint frame_1, uint light_1, uint bits_1) {
+    uint _e4 = pcg_hash(seed_2);
+    uint _e7 = pcg_hash((_e4 ^ 1013904223u));
+    uint _e8 = laine_karras(light_1, _e7);
+    uint _e13 = pcg_hash((_e7 ^ light_1));
+    uint o = ((_e8 << (32u - bits_1)) | (_e13 >> bits_1));
+    uint _e16 = pcg_hash(_e7);
+    uint _e17 = reverse_bits(frame_1);
+    uint _e18 = laine_karras(_e17, _e16);
+    uint _e20 = laine_karras(0u, _e16);
+    uint t = (_e18 ^ _e20);
+    uint _e22 = add_wrap_u32_(o, t);
+    float _e23 = xi_from_bits(_e22);
+    return _e23;
+}
+
+float light_xi(uint seed_3, uint frame_2, uint key) {
+    if ((key >= XI_ROTATED)) {
+        float _e13 = xi_rotated(seed_3, frame_2, (key & 67108863u), max(((key >> 26u) & 31u), 1u));
+        return _e13;
+    }
+    float _e14 = xi_for(seed_3, frame_2, key);
+    return _e14;
+}
+
+float frame_xi(uint seed_4, uint frame_3, uint key_1, float fixed_) {
     if ((fixed_ >= 0.0)) {
         return fixed_;
     }
-    float _e6 = xi_for(seed_2, frame_1, light_1);
+    float _e6 = light_xi(seed_4, frame_3, key_1);
     return _e6;
 }
 

@@ -83,6 +83,7 @@ const uint MAP_CAMERA = 0u;
 const uint MAP_PERSPECTIVE = 1u;
 const uint MAP_ORTHOGRAPHIC = 2u;
 const float XI_STEP = 5.9604645e-8;
+const uint XI_ROTATED = 2147483648u;
 const uint PICK_STREAM = 2654435769u;
 const float TWO_PI = 6.2831855;
 const float UNRANGED = 1e38;

@@ -129,6 +129,7 @@ static const uint MAP_CAMERA = 0u;
 static const uint MAP_PERSPECTIVE = 1u;
 static const uint MAP_ORTHOGRAPHIC = 2u;
 static const float XI_STEP = 5.9604645e-8;
+static const uint XI_ROTATED = 2147483648u;
 static const uint PICK_STREAM = 2654435769u;
 static const float TWO_PI = 6.2831855;
 static const float UNRANGED = 1e38;

@@ -65,6 +65,7 @@ constant uint MAP_CAMERA = 0u;
 constant uint MAP_PERSPECTIVE = 1u;
 constant uint MAP_ORTHOGRAPHIC = 2u;
 constant float XI_STEP = 0.000000059604645;
+constant uint XI_ROTATED = 2147483648u;
 constant uint PICK_STREAM = 2654435769u;
 constant float TWO_PI = 6.2831855;
 constant float UNRANGED = 100000000000000000000000000000000000000.0;
