@@ -83,7 +83,7 @@ crate::shared! {
     /// across its lights: `LK(·, k)` permutes the `2^bits` strata, so no two
     /// lights share one, and one rotation `t` moves them all. So the number
     /// of lights whose ξ falls below a threshold `p` (the candidates of
-    /// lights at similar distance: a cluster, a fixture) stays within one
+    /// lights at similar distance: a cluster, a fixture) stays within two
     /// of its mean instead of varying as a sum of independent draws; with
     /// 1.5 expected candidates, independent ξ leave about a fifth of the
     /// points with none. Over frames `0..2ᵐ` each light's ξ falls once in
