@@ -60,11 +60,7 @@ pub struct Temporal {
 impl Temporal {
     /// An empty history for `width × height` images (each in `1..=16384`).
     pub fn new(width: u32, height: u32) -> Result<Temporal, RenderError> {
-        if !(1..=16384).contains(&width) || !(1..=16384).contains(&height) {
-            return Err(RenderError::Setting(format!(
-                "temporal history of {width}x{height}: each side must be in 1..=16384"
-            )));
-        }
+        slc_scene::check_size(width, height)?;
         let n = (width * height) as usize;
         Ok(Temporal {
             width,
@@ -487,7 +483,7 @@ mod tests {
         let gb = &ctx.inputs().gbuffer;
         let view = TemporalView::of_camera(&ctx.scene().camera, 64, 64);
         let ts = TemporalSettings::default();
-        assert!(Temporal::new(0, 4).is_err());
+        assert_eq!(Temporal::new(0, 4).err(), Some(RenderError::Size(0, 4)));
         let mut t = Temporal::new(32, 32).unwrap();
         assert!(
             t.accumulate(&vec![Vec3::ZERO; 32 * 32], gb, &view, &ts).is_err(),
