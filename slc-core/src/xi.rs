@@ -68,9 +68,15 @@ crate::shared! {
     }
 
     /// The flag of a ξ key ([`light_xi`]) whose light draws its ξ by
-    /// [`xi_rotated`]; bits 26–30 of the key hold the set's `bits`, bits
-    /// 0–25 the light's index.
+    /// [`xi_rotated`]; bits 26–30 of the key hold the set's `bits`
+    /// ([`XI_BITS_SHIFT`]), bits 0–25 the light's index ([`XI_INDEX_MASK`]).
     pub const XI_ROTATED: u32 = 2147483648;
+
+    /// Where a rotated key's `bits` start.
+    pub const XI_BITS_SHIFT: u32 = 26;
+
+    /// A rotated key's index bits: `2^26 − 1`.
+    pub const XI_INDEX_MASK: u32 = 67108863;
 
     /// ξ of light `light` (`< 2^bits`, `1 ≤ bits ≤ 31`) of a set whose
     /// lights share one rotation: `xi_from_bits(o + t (mod 2³²))` with the
@@ -108,7 +114,7 @@ crate::shared! {
     /// [`xi_for`]`(seed, frame, key)`.
     pub fn light_xi(seed: u32, frame: u32, key: u32) -> f32 {
         if key >= XI_ROTATED {
-            return xi_rotated(seed, frame, key & 67108863, max((key >> 26) & 31, 1));
+            return xi_rotated(seed, frame, key & XI_INDEX_MASK, max((key >> XI_BITS_SHIFT) & 31, 1));
         }
         return xi_for(seed, frame, key);
     }
@@ -176,7 +182,7 @@ crate::shared! {
 
 /// The most lights a set whose ξ rotate together may hold (an index fits
 /// bits 0–25 of a key).
-pub const MAX_ROTATED: usize = 1 << 26;
+pub const MAX_ROTATED: usize = 1 << XI_BITS_SHIFT;
 
 /// The ξ keys ([`light_xi`]) of the path tracers' lights: point, spot and
 /// IES lights share one rotation ([`xi_rotated`], stratified across the
@@ -193,7 +199,7 @@ pub fn xi_keys(lights: &[crate::light::Light]) -> alloc::vec::Vec<u32> {
         .map(|(i, l)| match l {
             crate::light::Light::Triangle(_) => i as u32,
             _ if n > MAX_ROTATED => i as u32,
-            _ => XI_ROTATED | (bits << 26) | i as u32,
+            _ => XI_ROTATED | (bits << XI_BITS_SHIFT) | i as u32,
         })
         .collect()
 }
@@ -285,13 +291,13 @@ mod tests {
         let keys = xi_keys(&lights);
         assert_eq!((keys[0], keys[3]), (0, 3));
         for i in [1usize, 2, 4] {
-            assert_eq!(keys[i], XI_ROTATED | (3 << 26) | i as u32);
+            assert_eq!(keys[i], XI_ROTATED | (3 << XI_BITS_SHIFT) | i as u32);
             assert_eq!(light_xi(4, 9, keys[i]), xi_rotated(4, 9, i as u32, 3));
         }
         assert_eq!(light_xi(4, 9, 3), xi_for(4, 9, 3));
         assert_eq!(frame_xi(4, 9, keys[1], 0.25), 0.25);
         // A single light: one bit.
-        assert_eq!(xi_keys(&lights[1..2]), [XI_ROTATED | (1 << 26)]);
+        assert_eq!(xi_keys(&lights[1..2]), [XI_ROTATED | (1 << XI_BITS_SHIFT)]);
     }
 
     /// The lights' ξ over a seed's frames are jointly uniform, not tied to

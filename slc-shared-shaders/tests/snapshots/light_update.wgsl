@@ -32,6 +32,8 @@ const MAP_PERSPECTIVE: u32 = 1u;
 const MAP_ORTHOGRAPHIC: u32 = 2u;
 const XI_STEP: f32 = 0.000000059604645f;
 const XI_ROTATED: u32 = 2147483648u;
+const XI_BITS_SHIFT: u32 = 26u;
+const XI_INDEX_MASK: u32 = 67108863u;
 const PICK_STREAM: u32 = 2654435769u;
 const TWO_PI: f32 = 6.2831855f;
 const UNRANGED: f32 = 100000000000000000000000000000000000000f;
@@ -177,7 +179,7 @@ fn xi_rotated(seed_2: u32, frame_1: u32, light_1: u32, bits_1: u32) -> f32 {
 
 fn light_xi(seed_3: u32, frame_2: u32, key: u32) -> f32 {
     if (key >= XI_ROTATED) {
-        let _e13 = xi_rotated(seed_3, frame_2, (key & 67108863u), max(((key >> 26u) & 31u), 1u));
+        let _e13 = xi_rotated(seed_3, frame_2, (key & XI_INDEX_MASK), max(((key >> XI_BITS_SHIFT) & 31u), 1u));
         return _e13;
     }
     let _e14 = xi_for(seed_3, frame_2, key);

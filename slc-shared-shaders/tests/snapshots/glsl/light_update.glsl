@@ -36,6 +36,8 @@ const uint MAP_PERSPECTIVE = 1u;
 const uint MAP_ORTHOGRAPHIC = 2u;
 const float XI_STEP = 5.9604645e-8;
 const uint XI_ROTATED = 2147483648u;
+const uint XI_BITS_SHIFT = 26u;
+const uint XI_INDEX_MASK = 67108863u;
 const uint PICK_STREAM = 2654435769u;
 const float TWO_PI = 6.2831855;
 const float UNRANGED = 1e38;
@@ -179,7 +181,7 @@ float xi_rotated(uint seed_2, uint frame_1, uint light_1, uint bits_1) {
 
 float light_xi(uint seed_3, uint frame_2, uint key) {
     if ((key >= XI_ROTATED)) {
-        float _e13 = xi_rotated(seed_3, frame_2, (key & 67108863u), max(((key >> 26u) & 31u), 1u));
+        float _e13 = xi_rotated(seed_3, frame_2, (key & XI_INDEX_MASK), max(((key >> XI_BITS_SHIFT) & 31u), 1u));
         return _e13;
     }
     float _e14 = xi_for(seed_3, frame_2, key);

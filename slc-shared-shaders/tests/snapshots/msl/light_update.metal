@@ -45,6 +45,8 @@ constant uint MAP_PERSPECTIVE = 1u;
 constant uint MAP_ORTHOGRAPHIC = 2u;
 constant float XI_STEP = 0.000000059604645;
 constant uint XI_ROTATED = 2147483648u;
+constant uint XI_BITS_SHIFT = 26u;
+constant uint XI_INDEX_MASK = 67108863u;
 constant uint PICK_STREAM = 2654435769u;
 constant float TWO_PI = 6.2831855;
 constant float UNRANGED = 100000000000000000000000000000000000000.0;
@@ -209,7 +211,7 @@ float light_xi(
     uint key
 ) {
     if (key >= XI_ROTATED) {
-        float _e13 = xi_rotated(seed_3, frame_2, key & 67108863u, metal::max((key >> 26u) & 31u, 1u));
+        float _e13 = xi_rotated(seed_3, frame_2, key & XI_INDEX_MASK, metal::max((key >> XI_BITS_SHIFT) & 31u, 1u));
         return _e13;
     }
     float _e14 = xi_for(seed_3, frame_2, key);
