@@ -166,43 +166,63 @@ fn all_finite(p: &[Vec<f64>]) -> bool {
     p.iter().flatten().all(|v| v.is_finite())
 }
 
-/// Per-pass statistics of `method` on the GPU and on the CPU (same seed),
-/// and of the CPU's unculled `uniform` estimator (its own seed).
-fn run(
-    method: PtMethod,
-    eps: f32,
-    intensity: f32,
-    glossy: bool,
-    n: u32,
-) -> Option<(Stats, Stats, Stats)> {
-    let (s, lights) = scene(intensity, glossy);
-    run_on(&PtScene::new(&s, &lights).unwrap(), method, eps, n, (W, H), DEPTH)
-}
-
-/// [`run`] on a prepared scene at `size` pixels, paths of up to
-/// `max_depth` bounces.
-fn run_on(
-    scene: &PtScene,
-    method: PtMethod,
-    eps: f32,
-    n: u32,
+/// One scene's GPU and CPU path tracers, made once and shared by every
+/// method the test runs on it (a `GpuPt` compiles its pipelines: on
+/// lavapipe most of a small test's time; a baseline after an SLC method
+/// renders as on a fresh one, `gpu_baselines_after_an_slc_method_are_unchanged`).
+struct Parity {
+    gpt: GpuPt,
+    cpu: CpuPathTracer,
+    passes: u32,
     size: (u32, u32),
     max_depth: u32,
-) -> Option<(Stats, Stats, Stats)> {
-    let g = gpu()?;
-    let mut gpt = GpuPt::new(g, scene, size.0, size.1).unwrap();
-    let mut pts = CpuPathTracer::new(scene);
-    let set = PtSettings { method, error_bound: eps, seed: 3, max_depth, ..PtSettings::default() };
-    let gp = passes(|acc| _ = gpt.render(acc, &set, 1).unwrap(), n, size);
-    let cp = passes(|acc| pts.render(acc, &set, 1).unwrap(), n, size);
-    let uniform = PtSettings { method: PtMethod::Uniform, seed: 77, ..set };
-    let up = passes(|acc| pts.render(acc, &uniform, 1).unwrap(), n, size);
-    assert!(
-        all_finite(&gp) && all_finite(&cp),
-        "{} at ε = {eps}: a pass is NaN or infinite",
-        method.name()
-    );
-    Some((stats(&gp), stats(&cp), stats(&up)))
+}
+
+impl Parity {
+    /// `passes` independent passes per run at `size` pixels, paths of up to
+    /// `max_depth` bounces; `None` without a GPU.
+    fn new(scene: &PtScene, passes: u32, size: (u32, u32), max_depth: u32) -> Option<Self> {
+        let gpt = GpuPt::new(gpu()?, scene, size.0, size.1).unwrap();
+        Some(Parity { gpt, cpu: CpuPathTracer::new(scene), passes, size, max_depth })
+    }
+
+    fn settings(&self, method: PtMethod, eps: f32, seed: u32) -> PtSettings {
+        PtSettings {
+            method,
+            error_bound: eps,
+            seed,
+            max_depth: self.max_depth,
+            ..PtSettings::default()
+        }
+    }
+
+    /// Per-pass statistics of `method` on the GPU and on the CPU (same seed).
+    fn run(&mut self, method: PtMethod, eps: f32) -> (Stats, Stats) {
+        let set = self.settings(method, eps, 3);
+        let (n, size) = (self.passes, self.size);
+        let gp = passes(|acc| _ = self.gpt.render(acc, &set, 1).unwrap(), n, size);
+        let cp = passes(|acc| self.cpu.render(acc, &set, 1).unwrap(), n, size);
+        assert!(
+            all_finite(&gp) && all_finite(&cp),
+            "{} at ε = {eps}: a pass is NaN or infinite",
+            method.name()
+        );
+        (stats(&gp), stats(&cp))
+    }
+
+    /// Per-pass statistics of the CPU's unculled `uniform` estimator (its
+    /// own seed), the reference every method's mean must match.
+    fn unculled(&mut self) -> Stats {
+        let set = self.settings(PtMethod::Uniform, 0.05, 77);
+        let cpu = &mut self.cpu;
+        stats(&passes(|acc| cpu.render(acc, &set, 1).unwrap(), self.passes, self.size))
+    }
+}
+
+/// The test scene ([`scene`]) prepared for the path tracers.
+fn pt_scene(intensity: f32, glossy: bool) -> PtScene {
+    let (s, lights) = scene(intensity, glossy);
+    PtScene::new(&s, &lights).unwrap()
 }
 
 /// Every method (slc, slc-reservoir, slc-weighted, uniform, power,
@@ -220,10 +240,13 @@ fn gpu_path_tracer_matches_cpu_on_glossy_surfaces() {
 }
 
 fn matches_cpu_and_unculled(glossy: bool) {
+    let scene = pt_scene(1.0, glossy);
+    let Some(mut parity) = Parity::new(&scene, PASSES[glossy as usize], (W, H), DEPTH) else {
+        return;
+    };
+    let u = parity.unculled();
     for method in PtMethod::ALL {
-        let Some((g, c, u)) = run(method, 0.05, 1.0, glossy, PASSES[glossy as usize]) else {
-            return;
-        };
+        let (g, c) = parity.run(method, 0.05);
         let name = method.name();
         assert!(g.image_mean.iter().all(|&m| m > 0.0));
         assert_means_agree(&format!("GPU vs CPU {name}"), &g, &c);
@@ -272,8 +295,10 @@ fn gpu_path_tracer_matches_cpu_on_the_scene_suite() {
         )
         .unwrap();
         let name = file.file_stem().unwrap().to_string_lossy().into_owned();
+        let mut parity = Parity::new(&scene, 32, (6, 6), 3).unwrap();
+        let u = parity.unculled();
         for method in PtMethod::ALL {
-            let Some((g, c, u)) = run_on(&scene, method, eps, 32, (6, 6), 3) else { return };
+            let (g, c) = parity.run(method, eps);
             let what = format!("{name} {}", method.name());
             assert_means_agree(&format!("{what}: GPU vs CPU"), &g, &c);
             assert_means_agree(&format!("{what}: GPU vs CPU uniform (unculled)"), &g, &u);
@@ -285,9 +310,9 @@ fn gpu_path_tracer_matches_cpu_on_the_scene_suite() {
 /// subnormal intensities: finite, non-negative, and the same mean as the CPU.
 fn gpu_path_tracer_hard_cases() {
     for (eps, intensity) in [(1e-30f32, 1.0f32), (1e30, 1.0), (0.05, 1e17), (0.05, 1e-40)] {
-        let Some((g, c, _)) = run(PtMethod::SlcReservoir, eps, intensity, false, 40) else {
-            return;
-        };
+        let scene = pt_scene(intensity, false);
+        let Some(mut parity) = Parity::new(&scene, 40, (W, H), DEPTH) else { return };
+        let (g, c) = parity.run(PtMethod::SlcReservoir, eps);
         assert!(g.image_mean.iter().all(|m| m.is_finite()));
         assert_means_agree(&format!("ε = {eps:e}, intensity ×{intensity:e}"), &g, &c);
     }
