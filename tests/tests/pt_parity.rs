@@ -383,6 +383,10 @@ fn ray_query_path_tracer_equals_the_software_walk() {
     for (what, scene, exact) in [("point lights", &dark, true), ("with triangle lights", &s, false)]
     {
         let pts = PtScene::new(scene, &lights).unwrap();
+        // One path tracer per kind of shadow ray, both rendering the same
+        // methods in the same order.
+        let mut hw_pt = GpuPt::with_shadow_rays(g, &pts, W, H, ShadowRays::RayQuery).unwrap();
+        let mut sw_pt = GpuPt::with_shadow_rays(g, &pts, W, H, ShadowRays::Software).unwrap();
         for method in [PtMethod::SlcWeighted, PtMethod::Uniform, PtMethod::LightBvh] {
             let set = PtSettings {
                 method,
@@ -391,13 +395,12 @@ fn ray_query_path_tracer_equals_the_software_walk() {
                 max_depth: DEPTH,
                 ..PtSettings::default()
             };
-            let render = |rays| {
-                let mut gpt = GpuPt::with_shadow_rays(g, &pts, W, H, rays).unwrap();
+            let render = |gpt: &mut GpuPt| {
                 let mut acc = PtRender::new(W, H);
                 gpt.render(&mut acc, &set, 4).unwrap();
                 acc.image().data
             };
-            let (hw, sw) = (render(ShadowRays::RayQuery), render(ShadowRays::Software));
+            let (hw, sw) = (render(&mut hw_pt), render(&mut sw_pt));
             let differ = hw.iter().zip(&sw).filter(|(a, b)| a != b).count();
             let lit = sw.iter().filter(|p| p.max_element() > 0.0).count();
             eprintln!("{what}, {}: {differ} of {} pixels differ", method.name(), sw.len());
