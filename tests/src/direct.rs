@@ -33,6 +33,10 @@ pub struct GpuDirect {
     shadows: Option<(Occluders, f32)>,
     /// How the pass finds each point's lights (tile walk by default).
     pub walk: DirectWalk,
+    /// The light types the pass compiles: `None` (the default) for the
+    /// lights' own; more let [`GpuDirect::set_lights`] keep the pass for
+    /// lights of other types.
+    pub light_types: Option<LightTypes>,
 }
 
 /// The light types of `lights` (what the pass compiles).
@@ -47,6 +51,12 @@ fn light_types(lights: &[Light]) -> LightTypes {
     }
 }
 
+/// Whether every type of `t` is one of `compiled`'s.
+fn within(t: LightTypes, compiled: LightTypes) -> bool {
+    let flags = |l: LightTypes| [l.point, l.spot, l.ies, l.triangle, l.vpl];
+    flags(t).into_iter().zip(flags(compiled)).all(|(a, b)| !a || b)
+}
+
 impl GpuDirect {
     /// Keeps the lights; the pass is built at the first [`GpuDirect::shade`]
     /// (and again when the number of rows of points changes), checking the
@@ -58,7 +68,21 @@ impl GpuDirect {
             pass: None,
             shadows: None,
             walk: DirectWalk::default(),
+            light_types: None,
         })
+    }
+
+    /// Replaces the lights. A built pass keeps its pipelines and takes
+    /// them ([`DirectPass::set_lights`]) where it compiles their types;
+    /// otherwise the next shade builds a new one.
+    pub fn set_lights(&mut self, lights: &LightSet) -> Result<(), GpuError> {
+        let (t, pass) = (light_types(lights.lights()), self.pass.as_mut());
+        match pass {
+            Some(pass) if within(t, pass.desc().light_types) => pass.set_lights(lights)?,
+            _ => self.pass = None,
+        }
+        self.lights = lights.clone();
+        Ok(())
     }
 
     /// Shadows every pick against `occluders` (a ray's origin offset along
@@ -127,7 +151,7 @@ impl GpuDirect {
                 surface: SurfaceDesc::Position,
                 output_format: wgpu::TextureFormat::Rgba32Float,
                 selection,
-                light_types: light_types(self.lights.lights()),
+                light_types: self.light_types.unwrap_or_else(|| light_types(self.lights.lights())),
                 walk: self.walk,
                 ..DirectPassDesc::new(w, h)
             };

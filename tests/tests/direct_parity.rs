@@ -9,7 +9,9 @@
 //! 30–60% in most cases). Every case runs with both of the pass's walks
 //! ([`DirectWalk`]: one per 8×8 tile, shared, and one per pixel), and a
 //! case with 1,500 lights in range makes a tile list longer than its
-//! 1,024 entries.
+//! 1,024 entries. The GPU keeps one pass per selection, shadowing and walk
+//! across a test's cases and hands it each case's lights
+//! (`DirectPass::set_lights`).
 //!
 //! Both backends draw the same random numbers (ξ per light, the reservoir's
 //! and the sampled points' hashes), so they agree number for number, except
@@ -43,8 +45,10 @@ use slc_scene::lights::{DirectSelection, LightSet};
 use slc_scene::occluders::{Instance, Occluders};
 use slc_tests::direct::{GpuDirect, unit_cube};
 use slc_tests::{gpu, shared_data};
+use slc_wgpu::LightTypes;
 use slc_wgpu::passes::DirectWalk;
-use std::sync::{Arc, OnceLock};
+use std::collections::HashMap;
+use std::sync::{Arc, LazyLock, Mutex, OnceLock};
 
 fn ies() -> Arc<IesProfile> {
     static P: OnceLock<Arc<IesProfile>> = OnceLock::new();
@@ -148,8 +152,19 @@ fn compare(
     let params = RangeParams::new(eps, 1.0).unwrap();
     let set = LightSet::new(lights).unwrap();
     let mut cpu = DirectLights::new(&set);
-    let mut gpu_lights = GpuDirect::new(g, &set).unwrap();
-    gpu_lights.walk = walk;
+    let key = format!("{selection:?}, shadowed: {shadowed}, {walk:?}");
+    let mut gpu_lights = match PASSES.lock().unwrap().remove(&key) {
+        Some(mut d) => {
+            d.set_lights(&set).unwrap();
+            d
+        }
+        None => {
+            let mut d = GpuDirect::new(g, &set).unwrap();
+            d.walk = walk;
+            d.light_types = Some(LightTypes { vpl: false, ..LightTypes::ALL });
+            d
+        }
+    };
     // Points: random ones, and ones on a light's threshold sphere r_t (where
     // p = 1 turns into p < 1) and at 0.999× and 1.001× of it; shadowed, only
     // random ones (a point on a small threshold sphere is too close to its
@@ -224,8 +239,18 @@ fn compare(
             o.worst_rel = o.worst_rel.max(d / m);
         }
     }
+    PASSES.lock().unwrap().insert(key, gpu_lights);
     Some(o)
 }
+
+/// The GPU's passes, one per selection, shadowing and walk, compiled for
+/// point, spot, IES and triangle lights and kept from case to case: each
+/// case takes its pass out, hands it its lights (`DirectPass::set_lights`,
+/// the pass's way to swap a light set) and puts it back, so lavapipe
+/// compiles a dozen passes instead of one per case. A static, never
+/// dropped: wgpu's objects cannot be dropped from a thread-local's
+/// destructor.
+static PASSES: LazyLock<Mutex<HashMap<String, GpuDirect>>> = LazyLock::new(Default::default);
 
 fn check(o: &Outcome, what: &str) {
     eprintln!(
