@@ -160,6 +160,25 @@ impl LightTypes {
     pub fn is_empty(&self) -> bool {
         !self.flags().iter().any(|f| *f)
     }
+
+    /// The types present in `lights`.
+    pub fn of(lights: &[slc_core::light::Light]) -> LightTypes {
+        use slc_core::light::Light;
+        let has = |f: fn(&Light) -> bool| lights.iter().any(f);
+        LightTypes {
+            point: has(|l| matches!(l, Light::Point(_))),
+            spot: has(|l| matches!(l, Light::Spot(_))),
+            ies: has(|l| matches!(l, Light::Ies(_))),
+            triangle: has(|l| matches!(l, Light::Triangle(_))),
+            vpl: has(|l| matches!(l, Light::Vpl(_))),
+        }
+    }
+
+    /// `true` when every type of this set is in `outer` (a pass compiled
+    /// for `outer` shades these lights).
+    pub fn within(&self, outer: LightTypes) -> bool {
+        self.flags().into_iter().zip(outer.flags()).all(|(a, b)| !a || b)
+    }
 }
 
 /// The GPU kernels.
@@ -897,4 +916,35 @@ pub fn all_kernels(features: &Features) -> Result<Vec<Generated>, ShaderError> {
         })
         .map(|&k| generate_module(k, features))
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::LightTypes;
+    use slc_core::light::{Light, PointLight, TriangleLight};
+    use slc_core::wgsl::vec3f;
+
+    /// `within` is inclusion of sets, over all 32 × 32 pairs; `of` finds
+    /// exactly the types present.
+    #[test]
+    fn light_type_sets() {
+        for a in 0..32 {
+            for b in 0..32 {
+                let (ta, tb) = (LightTypes::from_bits(a), LightTypes::from_bits(b));
+                assert_eq!(ta.within(tb), a & !b == 0, "{:?} within {:?}", ta.names(), tb.names());
+            }
+        }
+        let p = Light::Point(PointLight::new(vec3f(0.0, 1.0, 0.0), vec3f(1.0, 1.0, 1.0)).unwrap());
+        let t = Light::Triangle(
+            TriangleLight::new(
+                vec3f(0.0, 0.0, 0.0),
+                vec3f(1.0, 0.0, 0.0),
+                vec3f(0.0, 1.0, 0.0),
+                vec3f(1.0, 1.0, 1.0),
+            )
+            .unwrap(),
+        );
+        assert_eq!(LightTypes::of(&[p.clone(), t, p]), LightTypes::from_bits(1 | 8));
+        assert!(LightTypes::of(&[]).is_empty());
+    }
 }

@@ -24,24 +24,6 @@ use slc_shared_shaders::{Features, Kernel, LightTypes};
 /// Workgroup size of the 1-D kernels.
 pub(crate) const WG: u32 = 64;
 
-/// The light types present in `lights`.
-pub(crate) fn light_set(lights: &[Light]) -> LightTypes {
-    let has = |f: fn(&Light) -> bool| lights.iter().any(f);
-    LightTypes {
-        point: has(|l| matches!(l, Light::Point(_))),
-        spot: has(|l| matches!(l, Light::Spot(_))),
-        ies: has(|l| matches!(l, Light::Ies(_))),
-        triangle: has(|l| matches!(l, Light::Triangle(_))),
-        vpl: has(|l| matches!(l, Light::Vpl(_))),
-    }
-}
-
-/// `true` when every type of `inner` is in `outer`.
-pub(crate) fn types_within(inner: LightTypes, outer: LightTypes) -> bool {
-    let (a, b) = (inner.names(), outer.names());
-    a.iter().all(|n| b.contains(n))
-}
-
 /// BSH node indices level by level, deepest level first, and each level's
 /// `(first, count)` in that list (the tree's nodes; the range tail's slots
 /// after it are `bsh_tail`'s).
@@ -283,7 +265,7 @@ impl GpuLightSet {
         } else {
             q.write_buffer(&b.table_buf, 0, table_bytes);
         }
-        b.types = light_set(lights);
+        b.types = LightTypes::of(lights);
         Ok(replaced)
     }
 
@@ -461,7 +443,7 @@ impl LightBuffers {
         Ok(LightBuffers {
             n: n as u32,
             peaks_host: lights.iter().map(Light::peak).collect(),
-            types: light_set(lights),
+            types: LightTypes::of(lights),
             // COPY_SRC: the direct pass's reuse keeps the previous record's lights.
             lights: storage(
                 gpu,

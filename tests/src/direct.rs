@@ -9,7 +9,6 @@
 //! which draws the same random numbers.
 
 use crate::engine;
-use slc_core::light::Light;
 use slc_core::range::RangeParams;
 use slc_scene::lights::{DIRECT_K, Direct, DirectSelection, LightSet};
 use slc_scene::occluders::Occluders;
@@ -39,24 +38,6 @@ pub struct GpuDirect {
     pub light_types: Option<LightTypes>,
 }
 
-/// The light types of `lights` (what the pass compiles).
-fn light_types(lights: &[Light]) -> LightTypes {
-    let has = |f: fn(&Light) -> bool| lights.iter().any(f);
-    LightTypes {
-        point: has(|l| matches!(l, Light::Point(_))),
-        spot: has(|l| matches!(l, Light::Spot(_))),
-        ies: has(|l| matches!(l, Light::Ies(_))),
-        triangle: has(|l| matches!(l, Light::Triangle(_))),
-        vpl: has(|l| matches!(l, Light::Vpl(_))),
-    }
-}
-
-/// Whether every type of `t` is one of `compiled`'s.
-fn within(t: LightTypes, compiled: LightTypes) -> bool {
-    let flags = |l: LightTypes| [l.point, l.spot, l.ies, l.triangle, l.vpl];
-    flags(t).into_iter().zip(flags(compiled)).all(|(a, b)| !a || b)
-}
-
 impl GpuDirect {
     /// Keeps the lights; the pass is built at the first [`GpuDirect::shade`]
     /// (and again when the number of rows of points changes), checking the
@@ -76,9 +57,10 @@ impl GpuDirect {
     /// them ([`DirectPass::set_lights`]) where it compiles their types;
     /// otherwise the next shade builds a new one.
     pub fn set_lights(&mut self, lights: &LightSet) -> Result<(), GpuError> {
-        let (t, pass) = (light_types(lights.lights()), self.pass.as_mut());
-        match pass {
-            Some(pass) if within(t, pass.desc().light_types) => pass.set_lights(lights)?,
+        match self.pass.as_mut() {
+            Some(pass) if LightTypes::of(lights.lights()).within(pass.desc().light_types) => {
+                pass.set_lights(lights)?
+            }
             _ => self.pass = None,
         }
         self.lights = lights.clone();
@@ -151,7 +133,9 @@ impl GpuDirect {
                 surface: SurfaceDesc::Position,
                 output_format: wgpu::TextureFormat::Rgba32Float,
                 selection,
-                light_types: self.light_types.unwrap_or_else(|| light_types(self.lights.lights())),
+                light_types: self
+                    .light_types
+                    .unwrap_or_else(|| LightTypes::of(self.lights.lights())),
                 walk: self.walk,
                 ..DirectPassDesc::new(w, h)
             };

@@ -179,7 +179,7 @@ use super::{
     Culling, GBuffer, SurfaceDesc, ViewCache, check_size, check_view, kernel_form, output_format,
 };
 use crate::kernel::{KernelLayout, UniformSlots, check_kernels, zeroed};
-use crate::lights::{GpuLightSet, WG, check_light_limits, light_set, types_within};
+use crate::lights::{GpuLightSet, WG, check_light_limits};
 use crate::occluders::{GpuOccluders, check_accel_limits, check_limits};
 use crate::record::Uploads;
 use crate::{GpuContext, GpuError};
@@ -584,11 +584,11 @@ impl DirectPass {
             return Err(GpuError::Setting(format!("direct pass: k = {k} picks must be in 1..=64")));
         }
         if desc.light_types.is_empty()
-            || !types_within(light_set(lights.lights()), desc.light_types)
+            || !slc_shared_shaders::LightTypes::of(lights.lights()).within(desc.light_types)
         {
             return Err(GpuError::Setting(format!(
                 "direct pass: the lights are [{}], the pass compiles [{}]",
-                light_set(lights.lights()).names().join(", "),
+                slc_shared_shaders::LightTypes::of(lights.lights()).names().join(", "),
                 desc.light_types.names().join(", ")
             )));
         }
@@ -762,8 +762,8 @@ impl DirectPass {
     }
 
     fn check_types(&self, lights: &[Light]) -> Result<(), GpuError> {
-        let types = light_set(lights);
-        if !types_within(types, self.desc.light_types) {
+        let types = slc_shared_shaders::LightTypes::of(lights);
+        if !types.within(self.desc.light_types) {
             return Err(GpuError::Setting(format!(
                 "direct pass: lights of types [{}], the pass compiles [{}] (DirectPassDesc::light_types)",
                 types.names().join(", "),
