@@ -192,7 +192,7 @@ use slc_shared_shaders::layout::{
     DIRECT_COUNT_NODES, DIRECT_COUNT_PIXELS, DIRECT_COUNT_RAYS, ReuseParams, ReuseSlot,
     ReuseSurface, ViewParams,
 };
-use slc_shared_shaders::{DirectOutput, Features, Kernel, Selection};
+use slc_shared_shaders::{DirectOutput, Features, Kernel, LightTypes, Selection};
 
 /// Tile edge of the 2-D kernels, in pixels.
 const TILE: u32 = 8;
@@ -270,7 +270,7 @@ pub struct DirectPassDesc {
     /// The light types compiled in: lights given later
     /// ([`DirectPass::update_lights`], [`DirectPass::set_lights`]) must be
     /// of these types.
-    pub light_types: slc_shared_shaders::LightTypes,
+    pub light_types: LightTypes,
     /// What the pass writes.
     pub outputs: DirectOutputs,
     /// Reuse of the resampled picks across frames and pixels
@@ -388,7 +388,7 @@ impl DirectPassDesc {
             surface: SurfaceDesc::Depth { format: wgpu::TextureFormat::Depth32Float },
             output_format: wgpu::TextureFormat::Rgba16Float,
             selection: DirectSelection::Weighted { k: 8 },
-            light_types: slc_shared_shaders::LightTypes {
+            light_types: LightTypes {
                 point: true,
                 spot: true,
                 ies: true,
@@ -583,15 +583,12 @@ impl DirectPass {
         if !(1..=64).contains(&k) {
             return Err(GpuError::Setting(format!("direct pass: k = {k} picks must be in 1..=64")));
         }
-        if desc.light_types.is_empty()
-            || !slc_shared_shaders::LightTypes::of(lights.lights()).within(desc.light_types)
-        {
-            return Err(GpuError::Setting(format!(
-                "direct pass: the lights are [{}], the pass compiles [{}]",
-                slc_shared_shaders::LightTypes::of(lights.lights()).names().join(", "),
-                desc.light_types.names().join(", ")
-            )));
+        if desc.light_types.is_empty() {
+            return Err(GpuError::Setting(
+                "direct pass: DirectPassDesc::light_types compiles no light type".into(),
+            ));
         }
+        check_types(lights.lights(), desc.light_types)?;
         let direct_output = match desc.outputs {
             DirectOutputs::Irradiance => DirectOutput::Irradiance,
             DirectOutputs::BevyRadiance => DirectOutput::BevyRadiance,
@@ -739,7 +736,7 @@ impl DirectPass {
     /// make it looser (slower, never wrong): [`DirectPass::set_lights`]
     /// builds it anew.
     pub fn update_lights(&mut self, lights: &[Light]) -> Result<(), GpuError> {
-        self.check_types(lights)?;
+        check_types(lights, self.desc.light_types)?;
         if self.set.update(&self.gpu, lights)? {
             self.remake_groups();
         }
@@ -750,7 +747,7 @@ impl DirectPass {
     /// BSH (built on the CPU by [`LightSet::new`]), new bind groups, the
     /// same pipelines.
     pub fn set_lights(&mut self, lights: &LightSet) -> Result<(), GpuError> {
-        self.check_types(lights.lights())?;
+        check_types(lights.lights(), self.desc.light_types)?;
         check_light_limits(&self.gpu, lights.len() as u64, 0)?;
         self.set.replace(&self.gpu, lights)?;
         if let Some(r) = self.reuse.as_mut() {
@@ -758,18 +755,6 @@ impl DirectPass {
             r.previous = None;
         }
         self.remake_groups();
-        Ok(())
-    }
-
-    fn check_types(&self, lights: &[Light]) -> Result<(), GpuError> {
-        let types = slc_shared_shaders::LightTypes::of(lights);
-        if !types.within(self.desc.light_types) {
-            return Err(GpuError::Setting(format!(
-                "direct pass: lights of types [{}], the pass compiles [{}] (DirectPassDesc::light_types)",
-                types.names().join(", "),
-                self.desc.light_types.names().join(", ")
-            )));
-        }
         Ok(())
     }
 
@@ -1262,4 +1247,19 @@ fn view_projection(inputs: &DirectInputs) -> Result<Mat4, GpuError> {
         )));
     }
     Ok(m)
+}
+
+/// A typed error unless the pass's compiled light types `compiled` hold
+/// every type of `lights` (what `DirectPass::new`, `set_lights` and
+/// `update_lights` check).
+fn check_types(lights: &[Light], compiled: LightTypes) -> Result<(), GpuError> {
+    let types = LightTypes::of(lights);
+    if !types.within(compiled) {
+        return Err(GpuError::Setting(format!(
+            "direct pass: lights of types [{}], the pass compiles [{}] (DirectPassDesc::light_types)",
+            types.names().join(", "),
+            compiled.names().join(", ")
+        )));
+    }
+    Ok(())
 }
