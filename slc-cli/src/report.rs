@@ -118,8 +118,34 @@ pub struct PtRun {
     /// `√max(rmse² − noise², 0)` (the two errors are independent).
     #[serde(default)]
     pub rmse_net: f64,
-    /// (time ms, spp, RMSE) after each pass: RMSE against time.
+    /// (time ms, spp, RMSE) after each pass: RMSE against time (the first
+    /// seed pair's, with `--noise seeds`).
     pub series: Vec<(f64, u32, f64)>,
+    /// `--noise seeds`: each seed pair's σ² = RMSE(one, other)²/2 at `spp`
+    /// passes; `rmse` is the root of their mean. Empty against a reference.
+    #[serde(default)]
+    pub pair_variances: Vec<f64>,
+}
+
+impl PtRun {
+    /// The standard error of `rmse` from the seed pairs' spread: that of
+    /// their mean σ², `sd(σ²ₖ)/√K`, over `2σ` (the root's derivative);
+    /// NaN for fewer than two pairs.
+    pub fn rmse_se(&self) -> f64 {
+        mean_se(&self.pair_variances) / (2.0 * self.rmse)
+    }
+}
+
+/// The standard error of the mean of `v` (`sd/√n`, the sample standard
+/// deviation), NaN for fewer than two values.
+pub fn mean_se(v: &[f64]) -> f64 {
+    let n = v.len();
+    if n < 2 {
+        return f64::NAN;
+    }
+    let mean = v.iter().sum::<f64>() / n as f64;
+    let var = v.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / (n - 1) as f64;
+    (var / n as f64).sqrt()
 }
 
 /// The JSON of `slc bench --app pt`.
@@ -287,6 +313,9 @@ pub struct SuiteRow {
     pub time_per_sample_vs_uniform: f64,
     /// Net RMSE over uniform sampling's on the same scene.
     pub rmse_vs_uniform: f64,
+    /// The standard error of `rmse_net` from the seed pairs
+    /// ([`PtRun::rmse_se`]; NaN for one pair or against a reference).
+    pub rmse_se: f64,
 }
 
 /// One field's work per shaded pixel (`slc_scene::vpl::WorkCounts` divided

@@ -251,6 +251,10 @@ fn bad_input_is_one_line_error() {
         vec!["render", "--width", "0"],
         vec!["render", "--app", "pt", "--spp", "0", "--width", "8", "--height", "8"],
         vec!["bench", "--repeat", "0", "--width", "8", "--height", "8", "--vpls", "64"],
+        vec!["bench", "--app", "pt", "--noise", "seeds", "--pairs", "0", "--width", "8"],
+        vec!["bench", "--app", "pt", "--noise", "seeds", "--pairs", "5000", "--width", "8"],
+        vec!["bench", "--app", "pt", "--pairs", "2", "--width", "8", "--height", "8"],
+        vec!["bench", "--pairs", "2", "--width", "8", "--height", "8", "--vpls", "64"],
         vec!["render", "--grid", "on", "--width", "8", "--height", "8", "--vpls", "64"],
         // An outside user's finds (2026-11-29): each was accepted, or failed
         // late or with a panic, or named a flag the user had not given.
@@ -949,6 +953,41 @@ fn suite_commands() {
     }
     assert_eq!(std::fs::read_to_string(d.join("s.csv")).unwrap().lines().count(), 13);
     assert!(std::fs::read_to_string(d.join("s.svg")).unwrap().contains("suite scene"));
+    // Seed pairs: every ratio gets a standard error, the median an interval.
+    let text = ok(
+        &d,
+        &[
+            "bench",
+            "--app",
+            "pt",
+            "--suite",
+            "two",
+            "--width",
+            "8",
+            "--height",
+            "8",
+            "--seconds",
+            "0.05",
+            "--noise",
+            "seeds",
+            "--pairs",
+            "3",
+            "--json",
+            "p.json",
+        ],
+    );
+    assert!(text.contains("90% interval over the seed pairs"), "{text}");
+    assert!(text.contains("beyond 2 standard errors"), "{text}");
+    let json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(d.join("p.json")).unwrap()).unwrap();
+    let (lo, hi) = (
+        json["median_interval"][0].as_f64().unwrap(),
+        json["median_interval"][1].as_f64().unwrap(),
+    );
+    assert!(lo > 0.0 && lo <= hi, "{lo} {hi}");
+    for b in json["against_best"].as_array().unwrap() {
+        assert!(b["rmse_se"].as_f64().unwrap() >= 0.0, "{b}");
+    }
     // A folder without scene files is a one-line error that says how to make one.
     std::fs::create_dir_all(d.join("empty")).unwrap();
     let out = std::process::Command::new(env!("CARGO_BIN_EXE_slc"))
@@ -1060,6 +1099,39 @@ fn path_tracer_bench_noise_from_seeds() {
         let (rmse, net) = (r["rmse"].as_f64().unwrap(), r["rmse_net"].as_f64().unwrap());
         assert!(rmse.is_finite() && rmse > 0.0 && net == rmse, "{r}");
         assert!(r["spp"].as_u64().unwrap() >= 1, "{r}");
+        assert_eq!(r["pair_variances"].as_array().unwrap().len(), 1, "{r}");
+    }
+    assert!(text.contains("one pair: --pairs K"), "{text}");
+    // Three pairs: σ² is their mean, with a standard error from their spread.
+    let text = ok(
+        &d,
+        &[
+            "bench",
+            "--app",
+            "pt",
+            "--noise",
+            "seeds",
+            "--pairs",
+            "3",
+            "--width",
+            "12",
+            "--height",
+            "12",
+            "--seconds",
+            "0.05",
+            "--json",
+            "q.json",
+        ],
+    );
+    assert!(text.contains("3 seed pairs, seeds 1 to 6") && text.contains("± se"), "{text}");
+    let json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(d.join("q.json")).unwrap()).unwrap();
+    for r in json["runs"].as_array().unwrap() {
+        let v: Vec<f64> =
+            r["pair_variances"].as_array().unwrap().iter().map(|v| v.as_f64().unwrap()).collect();
+        assert_eq!(v.len(), 3, "{r}");
+        let rmse = r["rmse"].as_f64().unwrap();
+        assert!((rmse * rmse - v.iter().sum::<f64>() / 3.0).abs() <= 1e-9 * rmse * rmse, "{r}");
     }
 }
 

@@ -58,6 +58,15 @@ pub struct BenchArgs {
     /// method is unbiased: the tests check it).
     #[arg(long, value_enum, default_value_t = Noise::Reference)]
     pub noise: Noise,
+    /// Path tracing, `--noise seeds`: independent seed pairs per method
+    /// (seeds `--seed + 2k` and `+ 2k + 1`), each rendering the passes the
+    /// first pair reached in `--seconds`; σ² is their mean, and with two or
+    /// more its standard error comes from their spread (the table's `±`;
+    /// the suite also gives its median's interval). One pair's σ can be off
+    /// by 2× or more where rare bright paths (point lights near surfaces)
+    /// decide the error: docs/results/pt-noise-from-seeds.md.
+    #[arg(long, default_value_t = 1)]
+    pub pairs: u32,
     /// Path tracing: samples per pixel of the reference.
     #[arg(long, default_value_t = 1024)]
     pub reference_spp: u32,

@@ -54,6 +54,11 @@ pub fn run(a: BenchArgs) -> anyhow::Result<()> {
         if a.suite.is_some() {
             return Err(anyhow!("--suite: only the path tracers' bench (--app pt) runs a suite"));
         }
+        if a.pairs != 1 {
+            return Err(anyhow!(
+                "--pairs: only the path tracers' bench (--app pt) renders seed pairs"
+            ));
+        }
     } else {
         a.scene.vpl_only_flags()?;
     }
@@ -66,6 +71,15 @@ pub fn run(a: BenchArgs) -> anyhow::Result<()> {
     if a.scene.app == App::Pt {
         if !(a.seconds > 0.0 && a.seconds.is_finite()) {
             return Err(anyhow!("--seconds {} must be finite and > 0", a.seconds));
+        }
+        if !(1..=1024).contains(&a.pairs) {
+            return Err(anyhow!("--pairs {}: from 1 to 1024 seed pairs", a.pairs));
+        }
+        if a.pairs > 1 && a.noise != args::Noise::Seeds {
+            return Err(anyhow!(
+                "--pairs {}: seed pairs are the noise of --noise seeds (the reference mode renders one run per method)",
+                a.pairs
+            ));
         }
         return match &a.suite {
             Some(dir) => suite::run(&a, dir),

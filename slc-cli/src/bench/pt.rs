@@ -116,14 +116,46 @@ pub(super) fn pt_equal_time(
         }
         let last = *series.last().expect("at least one pass");
         let noise = reference.as_ref().map_or(0.0, |r| r.noise);
+        // The other seed pairs render the first pair's passes (each
+        // render's time is averaged into the run's).
+        let (mut pair_variances, mut times) = (Vec::new(), vec![acc.time_ms]);
+        if reference.is_none() {
+            pair_variances.push(last.2 * last.2);
+            times.push(twin.time_ms);
+            for pair in 1..a.pairs {
+                bar.set_message(format!(
+                    "{} ({} of {}), seed pair {} of {}",
+                    method.name(),
+                    k + 1,
+                    methods.len(),
+                    pair + 1,
+                    a.pairs
+                ));
+                let seed = a.seed.wrapping_add(2 * pair);
+                let one = PtSettings { seed, ..s };
+                let other = PtSettings { seed: seed.wrapping_add(1), ..s };
+                let (mut p, mut q) = (PtRender::new(w, h), PtRender::new(w, h));
+                while p.passes < last.1 {
+                    tracer.render(&mut p, &one, batch).map_err(|e| anyhow!(e))?;
+                    tracer.render(&mut q, &other, batch).map_err(|e| anyhow!(e))?;
+                }
+                pair_variances.push(p.image().rmse(&q.image()).powi(2) / 2.0);
+                times.extend([p.time_ms, q.time_ms]);
+            }
+        }
+        let rmse = match pair_variances.len() {
+            0 => last.2,
+            n => (pair_variances.iter().sum::<f64>() / n as f64).sqrt(),
+        };
         runs.push(PtRun {
             method: method.name().into(),
             param: method.culls().then_some(eps),
-            time_ms: last.0,
+            time_ms: times.iter().sum::<f64>() / times.len() as f64,
             spp: last.1,
-            rmse: last.2,
-            rmse_net: (last.2 * last.2 - noise * noise).max(0.0).sqrt(),
+            rmse,
+            rmse_net: (rmse * rmse - noise * noise).max(0.0).sqrt(),
             series: thin_series(&series),
+            pair_variances,
         });
     }
     bar.finish_and_clear();
@@ -147,7 +179,15 @@ pub(super) fn pt_equal_time(
         lights: pts.light_count(),
         reference: match &reference {
             Some(_) => format!("{}, {} spp", a.reference_method.name(), a.reference_spp),
-            None => format!("none: noise from seeds {} and {}", a.seed, a.seed.wrapping_add(1)),
+            None if a.pairs == 1 => {
+                format!("none: noise from seeds {} and {}", a.seed, a.seed.wrapping_add(1))
+            }
+            None => format!(
+                "none: noise from {} seed pairs, seeds {} to {}",
+                a.pairs,
+                a.seed,
+                a.seed.wrapping_add(2 * a.pairs - 1)
+            ),
         },
         reference_noise: reference.as_ref().map_or(0.0, |r| r.noise),
         reference_from_cache: reference.as_ref().is_some_and(|r| r.cached),
@@ -188,27 +228,41 @@ fn print_pt_report(a: &BenchArgs, report: &PtReport) {
         a.seconds,
         if seeds { " and seed" } else { "" }
     );
+    let spread = a.pairs > 1;
     println!(
-        "{:<14} {:>8} {:>10} {:>6} {:>10} {:>10} {:>16}",
-        "method", "param", "time ms", "spp", "rmse", "rmse net", "uniform/method"
+        "{:<14} {:>8} {:>10} {:>6} {:>10} {:>10}{} {:>16}",
+        "method",
+        "param",
+        "time ms",
+        "spp",
+        "rmse",
+        "rmse net",
+        if spread { format!(" {:>9}", "± se") } else { String::new() },
+        "uniform/method"
     );
     for r in &report.runs {
         // No ratio where the reference's noise left no net error (warned below).
         let ratio = uniform / r.rmse_net;
         println!(
-            "{:<14} {:>8} {:>10.0} {:>6} {:>10.5} {:>10.5} {:>16}",
+            "{:<14} {:>8} {:>10.0} {:>6} {:>10.5} {:>10.5}{} {:>16}",
             r.method,
             r.param.map_or("-".into(), |p| p.to_string()),
             r.time_ms,
             r.spp,
             r.rmse,
             r.rmse_net,
+            if spread { format!(" {:>9.5}", r.rmse_se()) } else { String::new() },
             if ratio.is_finite() && r.rmse_net > 0.0 { format!("{ratio:.2}") } else { "-".into() }
         );
     }
     if seeds {
         println!(
-            "(rmse, rmse net: σ, one render's RMSE against the exact image; the ratio uses it)"
+            "(rmse, rmse net: σ, one render's RMSE against the exact image{}; the ratio uses it)",
+            if spread {
+                ", the root of the pairs' mean σ²; ± se: its standard error from their spread"
+            } else {
+                "; one pair: --pairs K for its standard error"
+            }
         );
         return;
     }

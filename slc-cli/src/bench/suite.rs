@@ -17,6 +17,8 @@ use super::args::BenchArgs;
 use super::pt::pt_equal_time;
 use crate::report::{PtReport, SuiteRow};
 use anyhow::{Context, anyhow};
+use rand_core::RngCore;
+use rand_pcg::Pcg32;
 use serde::Serialize;
 use slc_scene::scene_file::SceneFile;
 use slc_scene::stats::median;
@@ -38,6 +40,9 @@ struct SuiteReport {
     /// slc-weighted against the best peer, per scene (scenes where a
     /// method is missing left out).
     against_best: Vec<AgainstBest>,
+    /// The 90% interval of the median of `against_best`'s ratios over the
+    /// seed pairs ([`median_interval`]; none for one pair).
+    median_interval: Option<(f64, f64)>,
 }
 
 /// slc-weighted against the best peer of one scene, the peer with the
@@ -56,6 +61,10 @@ pub struct AgainstBest {
     pub noise_per_sample: f64,
     /// Its time per sample over the peer's: what the selection costs.
     pub time_per_sample: f64,
+    /// The standard error of `rmse` from the two methods' seed pairs:
+    /// `rmse · ½√(s_w² + s_p²)`, `s` each one's relative standard error
+    /// of σ² (NaN for one pair).
+    pub rmse_se: f64,
 }
 
 /// The scene files of `dir`, sorted by name.
@@ -95,6 +104,7 @@ pub fn rows(scene: &str, r: &PtReport) -> Vec<SuiteRow> {
             noise_per_sample: x.rmse_net * (x.spp as f64).sqrt(),
             time_per_sample_vs_uniform: x.time_ms / x.spp.max(1) as f64 / u_tps,
             rmse_vs_uniform: x.rmse_net / u_rmse,
+            rmse_se: x.rmse_se(),
         })
         .collect()
 }
@@ -115,7 +125,57 @@ pub fn against_best_peer(rows: &[SuiteRow], scene: &str) -> Option<AgainstBest> 
         rmse: w.rmse_net / best.rmse_net,
         noise_per_sample: w.noise_per_sample / best.noise_per_sample,
         time_per_sample: w.time_per_sample_vs_uniform / best.time_per_sample_vs_uniform,
+        // σ's relative error is half σ²'s: se(σ)/σ = s/2.
+        rmse_se: w.rmse_net / best.rmse_net
+            * ((w.rmse_se / w.rmse_net).powi(2) + (best.rmse_se / best.rmse_net).powi(2)).sqrt(),
     })
+}
+
+/// Bootstrap draws of [`median_interval`].
+const BOOTSTRAP_DRAWS: usize = 2000;
+
+/// The 5th and 95th percentiles of slc-weighted's median ratio to the best
+/// peer over the suite's scenes, by the bootstrap over seed pairs: each
+/// draw resamples every method's pairs in every scene (with replacement,
+/// as many as it has), takes the root of their mean σ² as its RMSE,
+/// re-picks each scene's best peer and takes the median ratio. `None`
+/// unless every method of every scene has two or more pairs. A fixed
+/// seed: the same report gives the same interval.
+pub fn median_interval(scenes: &[PtReport]) -> Option<(f64, f64)> {
+    let usable = |s: &PtReport| {
+        s.runs.iter().any(|r| r.method == "slc-weighted")
+            && s.runs.iter().any(|r| PEERS.contains(&r.method.as_str()))
+            && s.runs.iter().all(|r| r.pair_variances.len() >= 2)
+    };
+    if scenes.is_empty() || !scenes.iter().all(usable) {
+        return None;
+    }
+    let mut rng = Pcg32::new(0xB007_57A9, 48);
+    let mut resampled = |v: &[f64]| {
+        let n = v.len();
+        let sum: f64 = (0..n).map(|_| v[(rng.next_u32() as usize) % n]).sum();
+        (sum / n as f64).sqrt()
+    };
+    let mut medians = Vec::with_capacity(BOOTSTRAP_DRAWS);
+    for _ in 0..BOOTSTRAP_DRAWS {
+        let mut ratios = Vec::with_capacity(scenes.len());
+        for s in scenes {
+            let (mut w, mut best) = (f64::NAN, f64::INFINITY);
+            for r in &s.runs {
+                let rmse = resampled(&r.pair_variances);
+                if r.method == "slc-weighted" {
+                    w = rmse;
+                } else if PEERS.contains(&r.method.as_str()) {
+                    best = best.min(rmse);
+                }
+            }
+            ratios.push(w / best);
+        }
+        medians.push(median(&ratios)?);
+    }
+    medians.sort_by(f64::total_cmp);
+    let at = |q: f64| medians[((q * (medians.len() - 1) as f64).round()) as usize];
+    Some((at(0.05), at(0.95)))
 }
 
 pub fn run(a: &BenchArgs, dir: &Path) -> anyhow::Result<()> {
@@ -142,6 +202,7 @@ pub fn run(a: &BenchArgs, dir: &Path) -> anyhow::Result<()> {
             super::args::Noise::Reference => "reference".into(),
             super::args::Noise::Seeds => "seeds".into(),
         },
+        median_interval: median_interval(&scenes),
         scenes,
         rows: all_rows,
         against_best,
@@ -181,8 +242,12 @@ fn print_summary(report: &SuiteReport) {
     for m in &methods {
         print!(" {:>16}", m);
     }
-    println!(" {:>10} {:>8} {:>8} {:>8} {:>10}", "w/best", "best", "nps", "t/spp", "w t/spp");
+    println!(" {:>12} {:>8} {:>8} {:>8} {:>10}", "w/best", "best", "nps", "t/spp", "w t/spp");
     let num = |v: f64| if v.is_finite() { format!("{v:.2}") } else { "-".into() };
+    let with_se = |v: f64, se: f64| match (v.is_finite(), se.is_finite()) {
+        (true, true) => format!("{v:.2}±{se:.2}"),
+        _ => num(v),
+    };
     for s in &report.scenes {
         print!("{:<24} {:>7}", s.scene, s.lights);
         for m in &methods {
@@ -199,14 +264,14 @@ fn print_summary(report: &SuiteReport) {
             .map_or(f64::NAN, |r| r.time_per_sample_vs_uniform);
         match report.against_best.iter().find(|b| b.scene == s.scene) {
             Some(b) => println!(
-                " {:>10} {:>8} {:>8} {:>8} {:>10}",
-                num(b.rmse),
+                " {:>12} {:>8} {:>8} {:>8} {:>10}",
+                with_se(b.rmse, b.rmse_se),
                 b.peer,
                 num(b.noise_per_sample),
                 num(b.time_per_sample),
                 num(tps)
             ),
-            None => println!(" {:>10} {:>8} {:>8} {:>8} {:>10}", "-", "-", "-", "-", num(tps)),
+            None => println!(" {:>12} {:>8} {:>8} {:>8} {:>10}", "-", "-", "-", "-", num(tps)),
         }
     }
     for s in &report.scenes {
@@ -228,11 +293,23 @@ fn print_summary(report: &SuiteReport) {
             let losses: Vec<&AgainstBest> = b.iter().filter(|b| b.rmse > 1.0).collect();
             let by_noise = losses.iter().filter(|b| b.noise_per_sample > 1.0).count();
             println!(
-                "slc-weighted / best peer (uniform, power, lightbvh): median {m:.2}, at most 1 in {wins} of {} scenes; of the {} losses, {by_noise} with more noise per sample than the peer, {} with less (lost on time per sample alone)",
+                "slc-weighted / best peer (uniform, power, lightbvh): median {m:.2}{}, at most 1 in {wins} of {} scenes; of the {} losses, {by_noise} with more noise per sample than the peer, {} with less (lost on time per sample alone)",
+                report.median_interval.map_or(String::new(), |(lo, hi)| format!(
+                    " (90% interval over the seed pairs {lo:.2}–{hi:.2})"
+                )),
                 ratios.len(),
                 losses.len(),
                 losses.len() - by_noise
             );
+            // Wins and losses the pairs' spread cannot overturn (2 se).
+            if b.iter().all(|b| b.rmse_se.is_finite()) {
+                let clear_wins = b.iter().filter(|b| b.rmse + 2.0 * b.rmse_se < 1.0).count();
+                let clear_losses = b.iter().filter(|b| b.rmse - 2.0 * b.rmse_se > 1.0).count();
+                println!(
+                    "  beyond 2 standard errors: {clear_wins} wins, {clear_losses} losses; {} scenes within them",
+                    b.len() - clear_wins - clear_losses
+                );
+            }
         }
     }
     println!(
@@ -253,6 +330,7 @@ mod tests {
             noise_per_sample: rmse_net * (spp as f64).sqrt(),
             time_per_sample_vs_uniform: tps,
             rmse_vs_uniform: f64::NAN,
+            rmse_se: f64::NAN,
         }
     }
 
@@ -274,5 +352,64 @@ mod tests {
         assert!((b.noise_per_sample - 0.03 * 200f64.sqrt() / 0.4).abs() < 1e-12);
         assert!((b.noise_per_sample * b.time_per_sample.sqrt() - b.rmse).abs() < 1e-12);
         assert_eq!(against_best_peer(&rows[..3], "s"), None);
+    }
+
+    fn run(method: &str, pairs: &[f64]) -> crate::report::PtRun {
+        let rmse = (pairs.iter().sum::<f64>() / pairs.len() as f64).sqrt();
+        crate::report::PtRun {
+            method: method.into(),
+            param: None,
+            time_ms: 1.0,
+            spp: 1,
+            rmse,
+            rmse_net: rmse,
+            series: Vec::new(),
+            pair_variances: pairs.to_vec(),
+        }
+    }
+
+    fn scene(runs: Vec<crate::report::PtRun>) -> PtReport {
+        PtReport {
+            app: "pt".into(),
+            backend: "cpu".into(),
+            scene: "s".into(),
+            width: 1,
+            height: 1,
+            lights: 1,
+            reference: "none".into(),
+            reference_noise: 0.0,
+            reference_from_cache: false,
+            error_bound_note: String::new(),
+            runs,
+        }
+    }
+
+    /// Pairs that agree give a point interval at the median ratio; pairs
+    /// that spread give an interval around it; one pair gives none.
+    #[test]
+    fn the_median_interval_comes_from_the_seed_pairs() {
+        let steady = [
+            scene(vec![run("slc-weighted", &[1.0, 1.0]), run("uniform", &[4.0, 4.0])]),
+            scene(vec![run("slc-weighted", &[1.0, 1.0, 1.0]), run("power", &[16.0; 3])]),
+            scene(vec![run("slc-weighted", &[9.0, 9.0]), run("lightbvh", &[4.0, 4.0])]),
+        ];
+        // Ratios 0.5, 0.25 and 1.5: median 0.5, exactly in every draw.
+        assert_eq!(median_interval(&steady), Some((0.5, 0.5)));
+        let spread = [
+            scene(vec![run("slc-weighted", &[0.5, 1.5, 1.0, 1.0]), run("uniform", &[4.0; 4])]),
+            scene(vec![run("slc-weighted", &[1.0; 2]), run("uniform", &[1.0, 7.0])]),
+            scene(vec![run("slc-weighted", &[1.0; 2]), run("uniform", &[0.5, 2.0])]),
+        ];
+        let (lo, hi) = median_interval(&spread).unwrap();
+        assert!(lo < 0.5 && hi > 0.5 && lo > 0.0 && hi < 1.5, "{lo} {hi}");
+        let one = [scene(vec![run("slc-weighted", &[1.0]), run("uniform", &[4.0])])];
+        assert_eq!(median_interval(&one), None);
+        assert_eq!(median_interval(&[]), None);
+        // The ratio's standard error: each σ's relative error, in quadrature.
+        let w = run("slc-weighted", &[1.0, 3.0]);
+        let u = run("uniform", &[4.0, 4.0, 4.0]);
+        assert!(u.rmse_se() == 0.0);
+        // σ² = 2 ± 1 (sd √2 over √2 pairs): σ = √2, se(σ) = 1/(2√2).
+        assert!((w.rmse_se() - 1.0 / (2.0 * 2f64.sqrt())).abs() < 1e-12);
     }
 }
