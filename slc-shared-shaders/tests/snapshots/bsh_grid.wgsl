@@ -163,8 +163,8 @@ fn bsh_grid_pad(reach: f32) -> f32 {
 }
 
 fn bsh_grid_axis(v: f32, lo: f32, inv: f32, n: u32) -> u32 {
-    let _e9 = to_u32_(max(floor(((v - lo) * inv)), 0f));
-    return min(_e9, (n - 1u));
+    let _e8 = to_u32_(max(((v - lo) * inv), 0f));
+    return min(_e8, (n - 1u));
 }
 
 fn bsh_grid_radius(node_3: BshNode, w_2: f32) -> f32 {

@@ -1366,8 +1366,8 @@ fn bsh_next_leaf_lobe(nodes_3: u32, start_1: u32, x_11: vec3<f32>, r_6: vec3<f32
 }
 
 fn bsh_grid_axis(v_8: f32, lo_1: f32, inv: f32, n_14: u32) -> u32 {
-    let _e9 = to_u32_(max(floor(((v_8 - lo_1) * inv)), 0f));
-    return min(_e9, (n_14 - 1u));
+    let _e8 = to_u32_(max(((v_8 - lo_1) * inv), 0f));
+    return min(_e8, (n_14 - 1u));
 }
 
 fn bsh_grid_cell(f: GridFrame, x_12: vec3<f32>) -> u32 {

@@ -166,8 +166,8 @@ float bsh_grid_pad(float reach) {
 }
 
 uint bsh_grid_axis(float v, float lo, float inv, uint n) {
-    uint _e9 = to_u32_(max(floor(((v - lo) * inv)), 0.0));
-    return min(_e9, (n - 1u));
+    uint _e8 = to_u32_(max(((v - lo) * inv), 0.0));
+    return min(_e8, (n - 1u));
 }
 
 float bsh_grid_radius(BshNode node_3, float w_2) {

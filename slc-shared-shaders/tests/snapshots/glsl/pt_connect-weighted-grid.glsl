@@ -1339,8 +1339,8 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start_1, vec3 x_11, vec3 r_6, vec4 rl
 }
 
 uint bsh_grid_axis(float v_8, float lo_1, float inv, uint n_14) {
-    uint _e9 = to_u32_(max(floor(((v_8 - lo_1) * inv)), 0.0));
-    return min(_e9, (n_14 - 1u));
+    uint _e8 = to_u32_(max(((v_8 - lo_1) * inv), 0.0));
+    return min(_e8, (n_14 - 1u));
 }
 
 uint bsh_grid_cell(GridFrame f, vec3 x_12) {

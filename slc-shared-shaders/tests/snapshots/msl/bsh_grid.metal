@@ -195,8 +195,8 @@ uint bsh_grid_axis(
     float inv,
     uint n
 ) {
-    uint _e9 = to_u32_(metal::max(metal::floor((v - lo) * inv), 0.0));
-    return metal::min(_e9, n - 1u);
+    uint _e8 = to_u32_(metal::max((v - lo) * inv, 0.0));
+    return metal::min(_e8, n - 1u);
 }
 
 float bsh_grid_radius(

@@ -1782,8 +1782,8 @@ uint bsh_grid_axis(
     float inv,
     uint n_14
 ) {
-    uint _e9 = to_u32_(metal::max(metal::floor((v_8 - lo_1) * inv), 0.0));
-    return metal::min(_e9, n_14 - 1u);
+    uint _e8 = to_u32_(metal::max((v_8 - lo_1) * inv, 0.0));
+    return metal::min(_e8, n_14 - 1u);
 }
 
 uint bsh_grid_cell(
