@@ -28,9 +28,12 @@ pub(super) fn run(a: BenchArgs) -> anyhow::Result<()> {
 }
 
 /// Every method on one scene for `--seconds` each on the chosen backend,
-/// RMSE against a (cached) CPU reference of `--reference-spp`, or with
-/// `--noise seeds` the noise σ from two renders of different seeds (each
-/// method then takes twice `--seconds`).
+/// the methods taking turns a batch of passes at a time, RMSE against a
+/// (cached) CPU reference of `--reference-spp`, or with `--noise seeds`
+/// the noise σ from renders of different seeds: the first pair in those
+/// turns (each method then takes twice `--seconds`), `--pairs` − 1 more at
+/// its passes, one method after another. The time per sample comes from
+/// the turns alone.
 pub(super) fn pt_equal_time(
     a: &BenchArgs,
     scene: &slc_scene::scene::Scene,
@@ -81,47 +84,73 @@ pub(super) fn pt_equal_time(
     let mut tracer = path_tracer(ctx.as_ref(), &pts, (w, h), a.scene.ray_query, a.scene.grid_on())?;
     let batch = if ctx.is_some() { GPU_BATCH } else { 1 };
     let methods = PtMethod::ALL;
-    let mut runs = Vec::new();
-    // Methods: the bar counts tenths of a second of rendering, all methods together.
+    // Each method's time-bounded render (and its seed twin), its settings
+    // and its RMSE after each batch.
+    struct Track {
+        s: PtSettings,
+        twin_s: PtSettings,
+        acc: PtRender,
+        twin: PtRender,
+        series: Vec<(f64, u32, f64)>,
+    }
+    let mut tracks: Vec<Track> = methods
+        .iter()
+        .map(|&method| {
+            let s = PtSettings { method, error_bound: eps, seed: a.seed, ..PtSettings::default() };
+            // Seed pairs: the twin renders the same passes with the next seed.
+            let twin_s = PtSettings { seed: a.seed.wrapping_add(1), ..s };
+            Track {
+                s,
+                twin_s,
+                acc: PtRender::new(w, h),
+                twin: PtRender::new(w, h),
+                series: Vec::new(),
+            }
+        })
+        .collect();
+    // The bar counts tenths of a second of rendering, all methods together.
     let tenths = (a.seconds * 10.0).ceil() as u64;
     bar.set_style(ProgressStyle::with_template("{spinner} [{bar:30}] {msg} (ETA {eta})")?);
     bar.set_length(tenths * methods.len() as u64);
     bar.set_position(0);
     bar.reset_eta();
-    for (k, method) in methods.into_iter().enumerate() {
-        bar.set_message(format!(
-            "{} ({} of {}), {} s each",
-            method.name(),
-            k + 1,
-            bar.length().unwrap_or(0) / tenths.max(1),
-            a.seconds
-        ));
-        let s = PtSettings { method, error_bound: eps, seed: a.seed, ..PtSettings::default() };
-        // Seed pairs: the twin renders the same passes with the next seed.
-        let twin_settings = PtSettings { seed: a.seed.wrapping_add(1), ..s };
-        let mut acc = PtRender::new(w, h);
-        let mut twin = PtRender::new(w, h);
-        let mut series = Vec::new();
-        while acc.time_ms < a.seconds * 1e3 {
-            tracer.render(&mut acc, &s, batch).map_err(|e| anyhow!(e))?;
+    bar.set_message(format!("{} methods in turn, {} s each", methods.len(), a.seconds));
+    // The methods take turns, a batch each, until each has rendered for
+    // --seconds: a drift of the machine's speed (a shared or throttled
+    // CPU, a GPU's clock) then touches every method alike, where one
+    // method after another would put it into their time per sample.
+    let budget = a.seconds * 1e3;
+    while tracks.iter().any(|t| t.acc.time_ms < budget) {
+        for t in tracks.iter_mut().filter(|t| t.acc.time_ms < budget) {
+            tracer.render(&mut t.acc, &t.s, batch).map_err(|e| anyhow!(e))?;
             let error = match &reference {
-                Some(r) => acc.image().rmse(&r.image),
+                Some(r) => t.acc.image().rmse(&r.image),
                 None => {
-                    tracer.render(&mut twin, &twin_settings, batch).map_err(|e| anyhow!(e))?;
-                    acc.image().rmse(&twin.image()) / std::f64::consts::SQRT_2
+                    tracer.render(&mut t.twin, &t.twin_s, batch).map_err(|e| anyhow!(e))?;
+                    t.acc.image().rmse(&t.twin.image()) / std::f64::consts::SQRT_2
                 }
             };
-            series.push((acc.time_ms, acc.passes, error));
-            bar.set_position(k as u64 * tenths + ((acc.time_ms / 100.0) as u64).min(tenths));
+            t.series.push((t.acc.time_ms, t.acc.passes, error));
         }
-        let last = *series.last().expect("at least one pass");
+        let done: f64 = tracks.iter().map(|t| t.acc.time_ms.min(budget)).sum();
+        bar.set_position((done / 100.0) as u64);
+    }
+    let mut runs = Vec::new();
+    for (k, t) in tracks.into_iter().enumerate() {
+        let (s, method) = (t.s, t.s.method);
+        let last = *t.series.last().expect("at least one pass");
         let noise = reference.as_ref().map_or(0.0, |r| r.noise);
-        // The other seed pairs render the first pair's passes (each
-        // render's time is averaged into the run's).
-        let (mut pair_variances, mut times) = (Vec::new(), vec![acc.time_ms]);
+        // Time per sample from the interleaved renders only: the twin
+        // rendered the same passes in the same turns.
+        let time_ms = match &reference {
+            Some(_) => t.acc.time_ms,
+            None => 0.5 * (t.acc.time_ms + t.twin.time_ms),
+        };
+        // The other seed pairs render the first pair's passes; they give
+        // the noise, not the time.
+        let mut pair_variances = Vec::new();
         if reference.is_none() {
             pair_variances.push(last.2 * last.2);
-            times.push(twin.time_ms);
             for pair in 1..a.pairs {
                 bar.set_message(format!(
                     "{} ({} of {}), seed pair {} of {}",
@@ -140,7 +169,6 @@ pub(super) fn pt_equal_time(
                     tracer.render(&mut q, &other, batch).map_err(|e| anyhow!(e))?;
                 }
                 pair_variances.push(p.image().rmse(&q.image()).powi(2) / 2.0);
-                times.extend([p.time_ms, q.time_ms]);
             }
         }
         let rmse = match pair_variances.len() {
@@ -150,11 +178,11 @@ pub(super) fn pt_equal_time(
         runs.push(PtRun {
             method: method.name().into(),
             param: method.culls().then_some(eps),
-            time_ms: times.iter().sum::<f64>() / times.len() as f64,
+            time_ms,
             spp: last.1,
             rmse,
             rmse_net: (rmse * rmse - noise * noise).max(0.0).sqrt(),
-            series: thin_series(&series),
+            series: thin_series(&t.series),
             pair_variances,
         });
     }
