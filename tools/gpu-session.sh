@@ -19,6 +19,9 @@
 #   scenes again with the light connections' shadow rays as hardware ray queries (--ray-query), and five 49,152-light
 #   scenes with the BSH grids on (--grid on: off by default on the GPU until this measures them; against the same
 #   scenes in pt-suite-512.json, the grids' time per sample).
+#   One seed pair per method (the call's budget): where rare bright paths decide the error, one pair's σ moves
+#   up to 5x between seeds (docs/results/pt-suite-pairs.md measures the CPU suite with --pairs 8), so read the
+#   GPU median with that uncertainty.
 # About 570 s on an NVIDIA H200 (the last call's steps: docs/results/gpu-h200-b/log.txt, 490 s, before the
 # ray-query and grid suites; if time is short, drop the eps 0.03 step); give the run timeout_s 600. Results land
 # in the call's $OUT; copy them to docs/results/ with the adapter's name and the date.

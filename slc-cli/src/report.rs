@@ -108,11 +108,14 @@ pub struct PtRun {
     pub method: String,
     /// Error bound ε for the SLC methods.
     pub param: Option<f32>,
-    /// Time spent (ms).
+    /// Time spent (ms) rendering `spp` passes (with `--noise seeds`, the
+    /// mean of the first seed pair's two renders, which took turns with
+    /// the other methods').
     pub time_ms: f64,
     /// Samples per pixel reached.
     pub spp: u32,
-    /// RMSE against the reference at the end.
+    /// RMSE against the reference at the end (with `--noise seeds`, σ: the
+    /// root of the mean of `pair_variances`).
     pub rmse: f64,
     /// That RMSE with the reference's own noise taken out,
     /// `√max(rmse² − noise², 0)` (the two errors are independent).
