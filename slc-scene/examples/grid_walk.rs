@@ -11,7 +11,8 @@
 //! With `--glossy ROUGHNESS,METALLIC`, every point is a glossy receiver of
 //! that glTF material (`Material::gltf`, base colour 0.8) seen from a random
 //! direction above its surface, and the grids are built for reaches `w` of 2, 4 and 8
-//! (`BshGrid::build_reaching`) against the lobe-scaled walk: `held` is the
+//! (`BshGrid::build_reaching`; at 8 the path tracer's sharp grid,
+//! `BshGrid::build_reaching_within` with `SHARP_GRID_ENTRIES`) against the lobe-scaled walk: `held` is the
 //! share of receivers whose lobe the grid holds (`rl.w ≤ w`; the others
 //! walk the tree, and are timed so); `list` is what a held receiver's cell
 //! lists.
@@ -20,6 +21,7 @@
 
 use glam::{Vec3, Vec4};
 use slc_core::bsh::BshGrid;
+use slc_core::bsh::grid::{SHARP_GRID_ENTRIES, SHARP_REACH};
 use slc_scene::placement::Stream;
 use slc_scene::scene::Material;
 use std::time::Instant;
@@ -84,7 +86,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         };
         for (res, reach) in runs {
             let t0 = Instant::now();
-            let grid = if res == 0 {
+            let grid = if res == 0 && reach == SHARP_REACH {
+                BshGrid::build_reaching_within(&built, lo, hi, reach, SHARP_GRID_ENTRIES)
+            } else if res == 0 {
                 BshGrid::build_reaching(&built, lo, hi, reach)
             } else {
                 BshGrid::build_reaching_at(&built, lo, hi, res, reach)

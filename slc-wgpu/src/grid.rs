@@ -11,7 +11,8 @@
 //!
 //! Two grids share the buffers where the scene has glossy materials: one
 //! for Lambertian receivers, one for range lobes up to
-//! [`GLOSSY_REACH`] (sharper ones walk), as the CPU's.
+//! [`GLOSSY_REACH`] (sharper ones walk: the CPU's third grid for them,
+//! whose scan cuts each cell to the lobe's cone, is not built here).
 //!
 //! On lavapipe, whose loops end silently after 65,535 iterations in an
 //! invocation, a leaf may cover at most that many cells and a cell hold

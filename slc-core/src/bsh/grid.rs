@@ -18,11 +18,16 @@
 //! walk's own bound), and a receiver with `rl.w ≤ w` tests its cell's
 //! leaves with the walk's leaf test: again the walk's lights in its order.
 //! Points outside the grid's box, and receivers whose lobe reaches beyond
-//! the grid's, take the tree. (A sharper lobe scales its ranges by more
-//! than `w²` only in a narrow cone around its mirror direction; its
-//! cell's lights below `w²` plus a walk that skips every node whose scale
-//! bound is at most `w²` took 1.3–1.7 of the plain walk's time: tried,
-//! not kept, docs/results/bsh-walk-visits.md.)
+//! the grid's, take the tree.
+//!
+//! A lobe scales no light's range outside a cone around its mirror
+//! direction (its scale's lower clamp, 1): the scan of a glossy
+//! receiver's cell keeps only the spheres that hold the point or whose
+//! light's bound meets that cone (`LobeCone`, a test without roots or
+//! divisions), and the walk's leaf test runs on those alone. So a grid
+//! for the sharpest lobes ([`SHARP_REACH`]), whose cells list hundreds of
+//! spheres, takes 0.27–0.38 of their walk's time
+//! (docs/results/pt-suite-pairs.md).
 //!
 //! The GPU path tracer builds the same grid each pass with a counting sort
 //! (slc-shared-shaders' `bsh_grid`), from the same frames
@@ -33,6 +38,7 @@
 
 use super::walk::bsh_reaches;
 use super::{BSH_NONE, BSH_TAIL, Bsh, BshNode, bsh_reach_bound};
+use crate::importance::range_scale_at;
 use crate::wgsl::*;
 use alloc::vec;
 use alloc::vec::Vec;
@@ -224,14 +230,28 @@ pub const GRID_RES_MIN: u32 = 4;
 pub const GRID_RES_MAX: u32 = 64;
 
 /// The largest range lobe `rl.w` (the square root of a receiver's range
-/// scale) a path tracer's glossy grid holds; sharper lobes walk the tree.
-/// At 4, glossy-facing-49152's floor (GGX α 0.09) finds 92% of its
-/// receivers' candidates in 0.43 of the walk's time, its gold (α 0.16)
-/// 75% in 0.50; at 2 the floor's share falls to 68%, and at 8 a cell lists
-/// 758 spheres and takes longer than the walk (`cargo run --release -p
+/// scale) a path tracer's glossy grid holds; sharper lobes take the sharp
+/// grid ([`SHARP_REACH`]) on the CPU and walk the tree on the GPU.
+/// At 4, glossy-facing-49152's floor (GGX α 0.09) holds 92% of its
+/// receivers (0.41 of the walk's time), its gold (α 0.16) 75% (0.41); at
+/// 2 the floor's share falls to 68%, and at 8 a cell lists 758 spheres
+/// (0.91 of the walk's time for the floor) (`cargo run --release -p
 /// slc-scene --example grid_walk -- --glossy 0.3,0
 /// scenes/suite/glossy-facing-49152.toml`).
 pub const GLOSSY_REACH: f32 = 4.0;
+
+/// The range lobe a CPU path tracer's third grid holds: every receiver's,
+/// `√`[`crate::brdf::RANGE_SCALE_MAX`] (GGX α below ~0.05 scales a
+/// light's range by up to 8 toward its mirror direction). Its cells list
+/// hundreds of spheres, which the scan's cone test
+/// ([`BshGrid::for_each_reaching`]) cuts to the few near that direction.
+pub const SHARP_REACH: f32 = 8.0;
+
+/// The entries [`BshGrid::build_reaching_within`] allows the sharp grid at
+/// least (2¹⁸, 6 MiB), above [`GRID_ENTRIES_PER_LIGHT`] per light: with a
+/// few thousand lights, spheres 8× their range leave no frame within the
+/// plain budget.
+pub const SHARP_GRID_ENTRIES: u64 = 1 << 18;
 
 /// Most cells along the longest axis [`BshGrid::build_at`] takes (2²⁴
 /// cells at most).
@@ -336,6 +356,109 @@ impl Spheres {
             at += n;
         }
     }
+
+    /// [`Spheres::scan`] for a glossy receiver at `p`: calls `hit(k)`, in
+    /// order, for each sphere `k` of `range` whose radius times `far` holds
+    /// `p` (the same test, bit for bit) and that either holds `p` itself or
+    /// whose light's bound `(c, extents[k])` meets the receiver's
+    /// [`LobeCone`] (its test: no square root, no division). What it leaves
+    /// out, [`bsh_reaches`] rejects: outside the cone the lobe scales the
+    /// light's range by exactly 1, and the plain sphere misses `p`.
+    #[inline]
+    fn scan_lobe(
+        &self,
+        range: core::ops::Range<usize>,
+        extents: &[f32],
+        p: Vec3,
+        far: f32,
+        cone: LobeCone,
+        mut hit: impl FnMut(usize),
+    ) {
+        let mut at = range.start;
+        let d = cone.axis;
+        while at < range.end {
+            let n = (range.end - at).min(SCAN_CHUNK);
+            let (x, y, z, r, e) = (
+                &self.x[at..at + n],
+                &self.y[at..at + n],
+                &self.z[at..at + n],
+                &self.r[at..at + n],
+                &extents[at..at + n],
+            );
+            let mut inside = [0u8; SCAN_CHUNK];
+            for j in 0..n {
+                let (dx, dy, dz) = (p.x - x[j], p.y - y[j], p.z - z[j]);
+                let d2 = dx * dx + dy * dy + dz * dz;
+                let (rj, fj) = (r[j], r[j] * far);
+                // The cone's apex moved back along its axis by the padded
+                // extent over sin θ: the centres of spheres that meet it.
+                let k = (e[j] * LOBE_CONE_PAD + 1e-30) * cone.inv_sin;
+                let vd = -(dx * d.x + dy * d.y + dz * d.z);
+                let (a, b) = (vd + k, d2 + k * (2.0 * vd + k));
+                let meets = a >= 0.0 && a * a >= b * cone.cos2;
+                inside[j] = (d2 <= fj * fj && (d2 <= rj * rj || meets)) as u8;
+            }
+            for (w, word) in inside[..n.next_multiple_of(8)].chunks_exact(8).enumerate() {
+                let mut bits = u64::from_le_bytes(word.try_into().unwrap_or([0; 8]));
+                while bits != 0 {
+                    hit(at + 8 * w + (bits.trailing_zeros() / 8) as usize);
+                    bits &= bits - 1;
+                }
+            }
+            at += n;
+        }
+    }
+}
+
+/// The relative padding of a light's extent in [`Spheres::scan_lobe`]'s
+/// cone test (against rounding).
+const LOBE_CONE_PAD: f32 = 1.001;
+
+/// The cone around a glossy receiver's mirror direction outside which its
+/// range lobe `rl` ([`crate::brdf::range_lobe`]) scales no light's range:
+/// [`range_scale_at`] is exactly 1 (its lower clamp) for every direction
+/// at an angle beyond `θ₁` from the mirror direction, where
+/// `k_d + c_s·α²/t² = 1`, i.e. `t₁ = √(c_s·α²/(1 − k_d))` and
+/// `cos θ₁ = 2(1 − t₁)/(1 − α²) − 1` (`t = (1 + cos θ)/2·(α² − 1) + 1`),
+/// lowered until `range_scale_at(rl, cos θ₁)` reads 1 in f32 (the function
+/// is monotone, and so is its rounded value), then widened by 10⁻³ in its
+/// cosine for the rounding of [`crate::importance::cone_cos_of`] and of the
+/// cone test. A light's bound sphere that misses it gets scale 1.
+#[derive(Clone, Copy, Debug)]
+struct LobeCone {
+    /// The mirror direction (unit).
+    axis: Vec3,
+    /// `cos² θ` of the widened cone.
+    cos2: f32,
+    /// `1 / sin θ` of the widened cone.
+    inv_sin: f32,
+}
+
+impl LobeCone {
+    /// The cone of a receiver with mirror direction `r` and range lobe
+    /// `rl`, or `None` where it would be no narrower than a half-space
+    /// (`k_d` near 1, a wide lobe) or the lobe is not finite.
+    fn of(r: Vec3, rl: Vec4) -> Option<LobeCone> {
+        let (kd, cs, a2) = (rl.x, rl.y, rl.z);
+        if !(kd < 1.0 && cs >= 0.0 && a2 > 0.0 && a2 < 1.0 && r.is_finite()) {
+            return None;
+        }
+        let t1 = libm::sqrtf(cs * a2 / (1.0 - kd));
+        let mut c = 2.0 * (1.0 - t1) / (1.0 - a2) - 1.0;
+        let mut tries = 0;
+        while !(range_scale_at(rl, c) <= 1.0) {
+            c -= 1e-4;
+            tries += 1;
+            if tries > 16 {
+                return None;
+            }
+        }
+        let c = (c.min(1.0) - 1e-3).min(0.9999);
+        if !(c > 0.0) {
+            return None;
+        }
+        Some(LobeCone { axis: r, cos2: c * c, inv_sin: 1.0 / libm::sqrtf(1.0 - c * c) })
+    }
 }
 
 /// A grid of one refit's leaf spheres (see the module docs).
@@ -372,7 +495,7 @@ impl BshGrid {
     /// its sphere scaled by `w` can touch. `w ≤ 1` is [`Self::build`]'s
     /// grid; `None` also for a `w` that is not finite.
     pub fn build_reaching(bsh: &Bsh, lo: Vec3, hi: Vec3, w: f32) -> Option<BshGrid> {
-        Self::build_in(bsh, GridFrame::levels(lo, hi, bsh.len()), w)
+        Self::build_in(bsh, GridFrame::levels(lo, hi, bsh.len()), w, 0)
     }
 
     /// [`Self::build`] at `res` cells along the box's longest axis, halved
@@ -386,12 +509,26 @@ impl BshGrid {
     /// [`Self::build_reaching`] at `res` cells along the box's longest
     /// axis, halved as [`Self::build_at`] halves it.
     pub fn build_reaching_at(bsh: &Bsh, lo: Vec3, hi: Vec3, res: u32, w: f32) -> Option<BshGrid> {
-        Self::build_in(bsh, GridFrame::levels_at(lo, hi, res), w)
+        Self::build_in(bsh, GridFrame::levels_at(lo, hi, res), w, 0)
     }
 
-    /// The grid in the first of `levels` whose entries fit its
-    /// [`GridFrame::budget`].
-    fn build_in(bsh: &Bsh, levels: Vec<GridFrame>, w: f32) -> Option<BshGrid> {
+    /// [`Self::build_reaching`] allowed at least `entries` entries (a
+    /// frame fits within the larger of them and its
+    /// [`GridFrame::budget`]): the CPU's sharp-lobe grid
+    /// ([`SHARP_GRID_ENTRIES`]). The GPU's grids keep the budget.
+    pub fn build_reaching_within(
+        bsh: &Bsh,
+        lo: Vec3,
+        hi: Vec3,
+        w: f32,
+        entries: u64,
+    ) -> Option<BshGrid> {
+        Self::build_in(bsh, GridFrame::levels(lo, hi, bsh.len()), w, entries)
+    }
+
+    /// The grid in the first of `levels` whose entries fit the larger of
+    /// its [`GridFrame::budget`] and `entries`.
+    fn build_in(bsh: &Bsh, levels: Vec<GridFrame>, w: f32, entries: u64) -> Option<BshGrid> {
         if bsh.is_empty() || !w.is_finite() {
             return None;
         }
@@ -428,7 +565,7 @@ impl BshGrid {
                 let d = b - a + 1;
                 total += d.x as u64 * d.y as u64 * d.z as u64;
             }
-            if total > frame.budget(lights_in) {
+            if total > frame.budget(lights_in).max(entries) {
                 continue;
             }
             let each = |(a, b): (UVec3, UVec3), f: &mut dyn FnMut(usize)| {
@@ -523,6 +660,7 @@ impl BshGrid {
         // misses `x` before its lobe's scale: the scan runs that test on
         // the whole cell, and only its hits take the full one.
         let far = rl.w * 1.0001;
+        let cone = LobeCone::of(r, rl);
         let mut reaches = |spheres: &Spheres, lights: &[u32], extents: &[f32], k: usize| {
             let (center, radius) = spheres.get(k);
             let leaf = BshNode {
@@ -537,11 +675,19 @@ impl BshGrid {
                 visit(lights[k]);
             }
         };
-        self.spheres.scan(a..b, x, far, |k| reaches(&self.spheres, &self.lights, &self.extents, k));
-        let tail = &self.tail_spheres;
-        tail.scan(0..tail.len(), x, far, |k| {
-            reaches(tail, &self.tail_lights, &self.tail_extents, k)
-        });
+        let (cell, tail) = (&self.spheres, &self.tail_spheres);
+        let mut on_cell = |k| reaches(cell, &self.lights, &self.extents, k);
+        match cone {
+            Some(cone) => cell.scan_lobe(a..b, &self.extents, x, far, cone, &mut on_cell),
+            None => cell.scan(a..b, x, far, &mut on_cell),
+        }
+        let mut on_tail = |k| reaches(tail, &self.tail_lights, &self.tail_extents, k);
+        match cone {
+            Some(cone) => {
+                tail.scan_lobe(0..tail.len(), &self.tail_extents, x, far, cone, &mut on_tail)
+            }
+            None => tail.scan(0..tail.len(), x, far, &mut on_tail),
+        }
         true
     }
 

@@ -597,6 +597,93 @@ fn wide_tree_links() {
     }
 }
 
+/// The sharp grid's scan cuts a glossy receiver's cell to the lights whose
+/// bound meets its lobe's cone (outside it the lobe scales no range) and
+/// still finds what the walk finds, in its order, where that cut is
+/// tightest: lights just inside the cone, whose scale toward them is barely
+/// above 1, each at a distance between its plain sphere's radius and its
+/// scaled one's (so only the scale brings it in), points and spheres, for
+/// metal and dielectric lobes of GGX α from 0.0025 to 0.25, among lights
+/// anywhere in the box.
+#[test]
+fn the_sharp_grid_finds_the_lights_at_its_cones_edge() {
+    use crate::brdf::{mirror_dir, range_lobe, receiver_lobe};
+    use crate::importance::{range_scale_at, range_scale_toward};
+    use grid::{SHARP_GRID_ENTRIES, SHARP_REACH};
+    use rand_core::{RngCore, SeedableRng};
+    let mut rng = rand_pcg::Pcg32::seed_from_u64(31);
+    let mut u = move || rng.next_u32() as f32 / 4294967296.0;
+    let (mut edge, mut edge_found, mut receivers) = (0, 0, 0);
+    for _ in 0..300 {
+        let x = Vec3::new(0.3 + 0.4 * u(), 0.3 + 0.4 * u(), 0.3 + 0.4 * u());
+        let nrm = (Vec3::new(u(), u(), u()) - 0.5).normalize();
+        let v = (Vec3::new(u(), u(), u()) - 0.5 + nrm * 1.5).normalize();
+        let alpha = (0.05 + 0.45 * u()).powi(2);
+        let metal = if u() < 0.5 { 1.0 } else { 0.0 };
+        let lobe =
+            receiver_lobe(Vec3::splat(0.8), metal, Vec3::splat(0.04), 1.0, alpha, nrm.dot(v));
+        let (r, rl) = (mirror_dir(nrm, v), range_lobe(lobe));
+        if rl.w <= 1.0 {
+            continue;
+        }
+        receivers += 1;
+        // The smallest cosine whose scale exceeds 1 (bisection: the scale
+        // is monotone in the cosine).
+        let (mut lo, mut hi) = (-1.0f32, 1.0f32);
+        for _ in 0..40 {
+            let mid = 0.5 * (lo + hi);
+            if range_scale_at(rl, mid) > 1.0 { hi = mid } else { lo = mid }
+        }
+        let p = r.any_orthonormal_vector();
+        let q = r.cross(p);
+        let (mut b, mut r2, mut at_edge) = (Vec::new(), Vec::new(), Vec::new());
+        for k in 0..48 {
+            // Just inside the cone: a cosine a little above `hi`.
+            let c = (hi + (1.0 - hi) * 0.02 * u() * u()).min(1.0);
+            let phi = core::f32::consts::TAU * u();
+            let d = 0.05 + 0.25 * u();
+            let extent = if k % 2 == 0 { 0.0 } else { 0.2 * d * u() };
+            // The centre farther off the axis by the sphere's own angle.
+            let t = c.acos() + (extent / d).asin();
+            let side = p * phi.cos() + q * phi.sin();
+            let center = x + (r * t.cos() + side * t.sin()) * d;
+            let s = range_scale_toward(rl, center, extent, x, r);
+            if !(s > 1.0) {
+                continue;
+            }
+            // Between the plain radius and the scaled one.
+            let range = (d - extent) / (0.5 + 0.5 * s.sqrt());
+            b.push(LightBound { center, extent });
+            r2.push(range * range);
+            at_edge.push(b.len() as u32 - 1);
+        }
+        for _ in 0..200 {
+            b.push(LightBound { center: Vec3::new(u(), u(), u()), extent: 0.01 * u() });
+            r2.push((0.03 * u()).powi(2));
+        }
+        let mut t = Bsh::build_with(&b, shape_of(u(), u())).unwrap();
+        t.refit(&r2).unwrap();
+        let g = BshGrid::build_reaching_within(
+            &t,
+            Vec3::ZERO,
+            Vec3::ONE,
+            SHARP_REACH,
+            SHARP_GRID_ENTRIES,
+        )
+        .expect("a sharp grid");
+        let mut walk = Vec::new();
+        t.for_each_reaching(x, r, rl, |l| walk.push(l));
+        let mut got = Vec::new();
+        assert!(g.for_each_reaching(x, r, rl, |l| got.push(l)), "held: {rl}");
+        assert_eq!(got, walk, "at {x}, lobe {rl}");
+        edge += at_edge.len();
+        edge_found += at_edge.iter().filter(|l| walk.contains(l)).count();
+    }
+    assert!(receivers > 200 && edge > 5_000, "{receivers} receivers, {edge} lights at the edge");
+    // The edge lights reach the point by their scale alone (up to rounding).
+    assert!(edge_found as f32 > 0.95 * edge as f32, "{edge_found} of {edge} found");
+}
+
 /// The grid finds what the walk finds, in the walk's order (the same
 /// candidates and random numbers for the CPU's shortcut): every shape, the
 /// range tail, zero, huge and infinite ranges, points in and outside its

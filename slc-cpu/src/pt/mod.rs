@@ -41,6 +41,7 @@ use rand_core::RngCore;
 use rand_pcg::Pcg32;
 use rayon::prelude::*;
 use slc_core::brdf::{bsdf_pdf, bsdf_sample, specular_probability};
+use slc_core::bsh::grid::SHARP_GRID_ENTRIES;
 use slc_core::bsh::{Bsh, BshGrid, walk::bsh_reaches};
 use slc_core::importance::Receiver;
 use slc_core::importance::weighted_select_pdf;
@@ -65,6 +66,8 @@ use std::time::Instant;
 /// The largest range lobe a pass's glossy grid holds (slc-core's, shared
 /// with the GPU path tracer).
 pub use slc_core::bsh::grid::GLOSSY_REACH;
+/// The largest range lobe a pass's sharp grid holds: every receiver's.
+pub use slc_core::bsh::grid::SHARP_REACH;
 
 /// The CPU path tracer over a [`PtScene`]: the scene's geometry in a BVH,
 /// and a BSH of its own that each pass refits to that pass's ranges.
@@ -152,6 +155,9 @@ struct Pass {
     /// The same for glossy receivers whose range lobe reaches at most
     /// [`GLOSSY_REACH`] ([`BshGrid::build_reaching`]).
     glossy: LazyGrid,
+    /// The same for sharper lobes, up to [`SHARP_REACH`]
+    /// ([`BshGrid::build_reaching_within`]).
+    sharp: LazyGrid,
 }
 
 /// A pass's grid, built by the first receiver that asks for it while the
@@ -227,10 +233,11 @@ impl CpuPathTracer {
     /// The lights whose range sphere, scaled for the receiver at `x`
     /// (mirror direction `r`, range lobe `rl`), reaches it, in the walk's
     /// order ([`Bsh::for_each_reaching`]): from one of the pass's grids
-    /// for a receiver inside the scene's box whose lobe reaches at most
-    /// [`GLOSSY_REACH`] (the plain grid without a range lobe, `rl.w ≤ 1`),
-    /// the same lights in the same order; else, and while another thread
-    /// builds that grid ([`LazyGrid`]), by the walk.
+    /// for a receiver inside the scene's box (the plain grid without a
+    /// range lobe, `rl.w ≤ 1`; the glossy one up to [`GLOSSY_REACH`]; the
+    /// sharp one up to [`SHARP_REACH`]), the same lights in the same order;
+    /// else, and while another thread builds that grid ([`LazyGrid`]), by
+    /// the walk.
     fn for_each_candidate(
         &self,
         st: &Pass,
@@ -247,6 +254,13 @@ impl CpuPathTracer {
             }
         } else if self.grid && rl.w <= GLOSSY_REACH {
             let grid = st.glossy.get(|| BshGrid::build_reaching(&self.bsh, lo, hi, GLOSSY_REACH));
+            if grid.is_some_and(|g| g.for_each_reaching(x, r, rl, &mut visit)) {
+                return;
+            }
+        } else if self.grid && rl.w <= SHARP_REACH {
+            let grid = st.sharp.get(|| {
+                BshGrid::build_reaching_within(&self.bsh, lo, hi, SHARP_REACH, SHARP_GRID_ENTRIES)
+            });
             if grid.is_some_and(|g| g.for_each_reaching(x, r, rl, &mut visit)) {
                 return;
             }
@@ -760,7 +774,9 @@ mod tests {
     /// grids for a receiver in the scene's box whose lobe they hold) are
     /// the walk's, in its order, at points on and off the surfaces,
     /// outside the box and NaN, for Lambertian receivers and glossy ones
-    /// within and beyond [`GLOSSY_REACH`]; and the pass built both grids.
+    /// within and beyond [`GLOSSY_REACH`] (the sharp grid's, whose scan
+    /// cuts its cells to the lobe's cone); and the pass built all three
+    /// grids.
     #[test]
     fn candidates_are_the_walks_in_its_order() {
         let mut pt =
@@ -791,6 +807,8 @@ mod tests {
                 Material::gltf(Vec3::splat(0.9), 1.0, 0.3),
                 Material::gltf(Vec3::splat(0.7), 0.0, 0.3),
                 Material::gltf(Vec3::new(1.0, 0.78, 0.34), 1.0, 0.4),
+                Material::gltf(Vec3::splat(0.97), 1.0, 0.15),
+                Material::gltf(Vec3::splat(0.8), 0.0, 0.15),
             ] {
                 let rc = mat.receiver(x, n, v);
                 let rl = rc.range_lobe();
@@ -805,7 +823,10 @@ mod tests {
         }
         assert!(found > points, "{found} candidates at {points} points");
         assert!(reach.iter().all(|&k| k > 2_000), "Lambertian, held, beyond: {reach:?}");
-        assert_eq!((st.grid.built(), st.glossy.built()), (Some(true), Some(true)));
+        assert_eq!(
+            (st.grid.built(), st.glossy.built(), st.sharp.built()),
+            (Some(true), Some(true), Some(true))
+        );
     }
 
     /// A pass's grid is built once, by the first receiver that asks; one
