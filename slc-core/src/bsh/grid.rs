@@ -554,20 +554,29 @@ impl BshGrid {
             i = n.next;
         }
         let lights_in = inside.len() as u64;
+        // Each leaf's centre and padded reach ([`bsh_grid_radius`]), the
+        // same at every level.
+        let reach: Vec<(Vec3, f32)> = inside
+            .iter()
+            .map(|&i| (nodes[i as usize].center, bsh_grid_radius(nodes[i as usize], w)))
+            .collect();
         for frame in levels {
             let n = frame.dims();
             let cells = frame.cells() as usize;
-            // Each leaf's cells, once: counted, then filled.
-            let covers: Vec<(UVec3, UVec3)> =
-                inside.iter().map(|&i| frame.cover(nodes[i as usize], w)).collect();
+            // The entries this level needs, counted before any is listed.
             let mut total = 0u64;
-            for &(a, b) in &covers {
-                let d = b - a + 1;
+            for &(c, r) in &reach {
+                let d = bsh_grid_last(frame, c, r) - bsh_grid_first(frame, c, r) + 1;
                 total += d.x as u64 * d.y as u64 * d.z as u64;
             }
             if total > frame.budget(lights_in).max(entries) {
                 continue;
             }
+            // Each leaf's cells ([`GridFrame::cover`]'s steps).
+            let covers: Vec<(UVec3, UVec3)> = reach
+                .iter()
+                .map(|&(c, r)| (bsh_grid_first(frame, c, r), bsh_grid_last(frame, c, r)))
+                .collect();
             let each = |(a, b): (UVec3, UVec3), f: &mut dyn FnMut(usize)| {
                 for z in a.z..=b.z {
                     for y in a.y..=b.y {
@@ -585,21 +594,27 @@ impl BshGrid {
             for c in 0..cells {
                 start[c + 1] += start[c];
             }
+            // Each entry's leaf (its rank in the walk's order) scattered to
+            // its cell, then the entries written in order from it: one
+            // scattered write an entry instead of six.
             let mut fill = start.clone();
+            let mut order = vec![0u32; total as usize];
+            for (rank, &c) in covers.iter().enumerate() {
+                each(c, &mut |c| {
+                    order[fill[c] as usize] = rank as u32;
+                    fill[c] += 1;
+                });
+            }
             let mut spheres = Spheres::zeroed(total as usize);
             let mut lights = vec![0u32; total as usize];
             let mut extents = vec![0f32; if w > 1.0 { total as usize } else { 0 }];
-            for (&i, &c) in inside.iter().zip(&covers) {
-                let s = nodes[i as usize];
-                each(c, &mut |c| {
-                    let at = fill[c] as usize;
-                    spheres.set(at, s.center, s.radius);
-                    lights[at] = s.light;
-                    if let Some(e) = extents.get_mut(at) {
-                        *e = s.extent;
-                    }
-                    fill[c] += 1;
-                });
+            for (at, &rank) in order.iter().enumerate() {
+                let s = nodes[inside[rank as usize] as usize];
+                spheres.set(at, s.center, s.radius);
+                lights[at] = s.light;
+                if let Some(e) = extents.get_mut(at) {
+                    *e = s.extent;
+                }
             }
             return Some(BshGrid {
                 frame,
