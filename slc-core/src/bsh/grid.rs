@@ -212,12 +212,11 @@ impl GridFrame {
         bsh_grid_budget(l, c) as u64
     }
 
-    /// The cells `(first, last)` along each axis that leaf `node`'s test
-    /// can reach for range lobes up to `w` ([`bsh_grid_radius`];
-    /// [`bsh_grid_first`], [`bsh_grid_last`]).
-    pub fn cover(&self, node: BshNode, w: f32) -> (UVec3, UVec3) {
-        let r = bsh_grid_radius(node, w);
-        (bsh_grid_first(*self, node.center, r), bsh_grid_last(*self, node.center, r))
+    /// The cells `(first, last)` along each axis that a leaf centred at
+    /// `c` reaching `r` (its [`bsh_grid_radius`]) covers
+    /// ([`bsh_grid_first`], [`bsh_grid_last`]).
+    pub fn cover(&self, c: Vec3, r: f32) -> (UVec3, UVec3) {
+        (bsh_grid_first(*self, c, r), bsh_grid_last(*self, c, r))
     }
 }
 
@@ -345,14 +344,7 @@ impl Spheres {
                 let rj = r[j] * scale;
                 inside[j] = (dx * dx + dy * dy + dz * dz <= rj * rj) as u8;
             }
-            // Eight flags a word: most words of a chunk hold no hit.
-            for (w, word) in inside[..n.next_multiple_of(8)].chunks_exact(8).enumerate() {
-                let mut bits = u64::from_le_bytes(word.try_into().unwrap_or([0; 8]));
-                while bits != 0 {
-                    hit(at + 8 * w + (bits.trailing_zeros() / 8) as usize);
-                    bits &= bits - 1;
-                }
-            }
+            hits(&inside[..n.next_multiple_of(8)], at, &mut hit);
             at += n;
         }
     }
@@ -398,14 +390,23 @@ impl Spheres {
                 let meets = a >= 0.0 && a * a >= b * cone.cos2;
                 inside[j] = (d2 <= fj * fj && (d2 <= rj * rj || meets)) as u8;
             }
-            for (w, word) in inside[..n.next_multiple_of(8)].chunks_exact(8).enumerate() {
-                let mut bits = u64::from_le_bytes(word.try_into().unwrap_or([0; 8]));
-                while bits != 0 {
-                    hit(at + 8 * w + (bits.trailing_zeros() / 8) as usize);
-                    bits &= bits - 1;
-                }
-            }
+            hits(&inside[..n.next_multiple_of(8)], at, &mut hit);
             at += n;
+        }
+    }
+}
+
+/// Calls `hit(at + j)`, in order, for each `j` whose flag `inside[j]` is
+/// set ([`Spheres::scan`]'s and [`Spheres::scan_lobe`]'s flags, one byte
+/// each, a whole number of words: zeros past the chunk): eight flags a
+/// word, since most words of a chunk hold no hit.
+#[inline]
+fn hits(inside: &[u8], at: usize, hit: &mut impl FnMut(usize)) {
+    for (w, word) in inside.chunks_exact(8).enumerate() {
+        let mut bits = u64::from_le_bytes(word.try_into().unwrap_or([0; 8]));
+        while bits != 0 {
+            hit(at + 8 * w + (bits.trailing_zeros() / 8) as usize);
+            bits &= bits - 1;
         }
     }
 }
@@ -566,17 +567,15 @@ impl BshGrid {
             // The entries this level needs, counted before any is listed.
             let mut total = 0u64;
             for &(c, r) in &reach {
-                let d = bsh_grid_last(frame, c, r) - bsh_grid_first(frame, c, r) + 1;
+                let (a, b) = frame.cover(c, r);
+                let d = b - a + 1;
                 total += d.x as u64 * d.y as u64 * d.z as u64;
             }
             if total > frame.budget(lights_in).max(entries) {
                 continue;
             }
-            // Each leaf's cells ([`GridFrame::cover`]'s steps).
-            let covers: Vec<(UVec3, UVec3)> = reach
-                .iter()
-                .map(|&(c, r)| (bsh_grid_first(frame, c, r), bsh_grid_last(frame, c, r)))
-                .collect();
+            let covers: Vec<(UVec3, UVec3)> =
+                reach.iter().map(|&(c, r)| frame.cover(c, r)).collect();
             let each = |(a, b): (UVec3, UVec3), f: &mut dyn FnMut(usize)| {
                 for z in a.z..=b.z {
                     for y in a.y..=b.y {
