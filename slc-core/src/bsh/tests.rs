@@ -49,9 +49,7 @@ fn links_form_preorder() {
 /// serially); every light's leaf is its own.
 #[test]
 fn split_refit_equals_serial_refit() {
-    use rand_core::{RngCore, SeedableRng};
-    let mut rng = rand_pcg::Pcg32::seed_from_u64(5);
-    let mut u = move || rng.next_u32() as f32 / 4294967296.0;
+    let mut u = uniforms(5);
     let b: Vec<_> = (0..300)
         .map(|_| LightBound { center: Vec3::new(u(), u(), u()) * 10.0, extent: u() * 0.1 })
         .collect();
@@ -87,9 +85,7 @@ fn split_refit_equals_serial_refit() {
 /// `with_tail(0)`, take them back. On a binary and a 4-wide tree.
 #[test]
 fn range_tail_takes_the_largest_spheres() {
-    use rand_core::{RngCore, SeedableRng};
-    let mut rng = rand_pcg::Pcg32::seed_from_u64(29);
-    let mut u = move || rng.next_u32() as f32 / 4294967296.0;
+    let mut u = uniforms(29);
     let n = 2000;
     let b: Vec<_> = (0..n)
         .map(|_| LightBound { center: Vec3::new(u(), u(), u()) * 10.0, extent: u() * 0.01 })
@@ -188,6 +184,15 @@ fn rejects_bad_input() {
     assert!(t.refit(&[f32::INFINITY]).is_ok());
 }
 
+/// A stream of uniform numbers in `[0, 1]` from a fixed seed (PCG32's
+/// draw over 2³², rounded to f32: one near 2³² reads 1): what the
+/// randomized tests draw.
+fn uniforms(seed: u64) -> impl FnMut() -> f32 {
+    use rand_core::{RngCore, SeedableRng};
+    let mut rng = rand_pcg::Pcg32::seed_from_u64(seed);
+    move || rng.next_u32() as f32 / 4294967296.0
+}
+
 /// Queries equal brute force at every scale from 10³⁸ down to
 /// subnormal spacings (regression: fuzz/bsh_vs_brute found lights
 /// 10⁻²³ apart where squares underflow and a parent missed a point its
@@ -202,9 +207,7 @@ fn sorted(query: impl FnOnce(&mut dyn FnMut(u32))) -> Vec<u32> {
 
 #[test]
 fn queries_match_brute_force_at_every_scale() {
-    use rand_core::{RngCore, SeedableRng};
-    let mut rng = rand_pcg::Pcg32::seed_from_u64(19);
-    let mut u = move || rng.next_u32() as f32 / 4294967296.0;
+    let mut u = uniforms(19);
     let mut mismatches = 0;
     for _ in 0..20_000 {
         let scale = 10f32.powf(38.0 - 83.0 * u());
@@ -244,9 +247,7 @@ fn queries_match_brute_force_at_every_scale() {
 fn inner_scale_bounds_the_exact_scale_tightly() {
     use crate::brdf::{mirror_dir, range_lobe, receiver_lobe};
     use crate::importance::range_scale_toward;
-    use rand_core::{RngCore, SeedableRng};
-    let mut rng = rand_pcg::Pcg32::seed_from_u64(29);
-    let mut u = move || rng.next_u32() as f32 / 4294967296.0;
+    let mut u = uniforms(29);
     let (mut below, mut worst, mut tested) = (0, 1.0f32, 0);
     for k in 0..200_000 {
         let nrm = (Vec3::new(u(), u(), u()) - 0.5).normalize();
@@ -298,9 +299,7 @@ fn inner_scale_bounds_the_exact_scale_tightly() {
 fn glossy_walk_matches_brute_force() {
     use crate::brdf::{range_lobe, range_scale, receiver_lobe};
     use crate::importance::range_scale_toward;
-    use rand_core::{RngCore, SeedableRng};
-    let mut rng = rand_pcg::Pcg32::seed_from_u64(23);
-    let mut u = move || rng.next_u32() as f32 / 4294967296.0;
+    let mut u = uniforms(23);
     let (mut mismatches, mut found, mut below_peak, mut at_peak) = (0, 0, 0, 0);
     for _ in 0..2_000 {
         let n = 2 + (u() * 60.0) as usize;
@@ -368,9 +367,7 @@ fn glossy_walk_matches_brute_force() {
 #[test]
 fn tile_walk_lists_every_point_walk_in_order() {
     use crate::brdf::{range_lobe, receiver_lobe};
-    use rand_core::{RngCore, SeedableRng};
-    let mut rng = rand_pcg::Pcg32::seed_from_u64(47);
-    let mut u = move || rng.next_u32() as f32 / 4294967296.0;
+    let mut u = uniforms(47);
     let (mut listed, mut found, mut pruned) = (0usize, 0usize, 0usize);
     for case in 0..400 {
         let n = 1 + (u() * 300.0) as usize;
@@ -550,9 +547,7 @@ fn sphere_area_depth_is_bounded() {
 /// wide or too narrow a shape is a typed error.
 #[test]
 fn wide_tree_links() {
-    use rand_core::{RngCore, SeedableRng};
-    let mut rng = rand_pcg::Pcg32::seed_from_u64(29);
-    let mut u = move || rng.next_u32() as f32 / 4294967296.0;
+    let mut u = uniforms(29);
     for (n, width) in [(2, 4), (3, 4), (5, 3), (100, 4), (1000, 4), (777, 8)] {
         let b: Vec<_> = (0..n)
             .map(|_| LightBound { center: Vec3::new(u(), u(), u()), extent: 0.01 * u() })
@@ -610,9 +605,7 @@ fn the_sharp_grid_finds_the_lights_at_its_cones_edge() {
     use crate::brdf::{mirror_dir, range_lobe, receiver_lobe};
     use crate::importance::{range_scale_at, range_scale_toward};
     use grid::{SHARP_GRID_ENTRIES, SHARP_REACH};
-    use rand_core::{RngCore, SeedableRng};
-    let mut rng = rand_pcg::Pcg32::seed_from_u64(31);
-    let mut u = move || rng.next_u32() as f32 / 4294967296.0;
+    let mut u = uniforms(31);
     let (mut edge, mut edge_found, mut receivers) = (0, 0, 0);
     for _ in 0..300 {
         let x = Vec3::new(0.3 + 0.4 * u(), 0.3 + 0.4 * u(), 0.3 + 0.4 * u());
@@ -695,9 +688,7 @@ fn the_sharp_grid_finds_the_lights_at_its_cones_edge() {
 #[test]
 fn grid_finds_what_the_walk_finds_in_its_order() {
     use crate::brdf::{mirror_dir, range_lobe, receiver_lobe};
-    use rand_core::{RngCore, SeedableRng};
-    let mut rng = rand_pcg::Pcg32::seed_from_u64(23);
-    let mut u = move || rng.next_u32() as f32 / 4294967296.0;
+    let mut u = uniforms(23);
     let (mut grids, mut inside, mut found) = (0, 0, 0usize);
     let (mut glossy, mut glossy_found, mut refused) = (0, 0usize, 0);
     for _ in 0..400 {
