@@ -247,20 +247,19 @@ impl CpuPathTracer {
         mut visit: impl FnMut(u32),
     ) {
         let (lo, hi) = self.bounds;
-        if self.grid && rl.w <= 1.0 {
-            let grid = st.grid.get(|| BshGrid::build(&self.bsh, lo, hi));
-            if grid.is_some_and(|g| g.for_each_containing(x, &mut visit)) {
-                return;
-            }
-        } else if self.grid && rl.w <= GLOSSY_REACH {
-            let grid = st.glossy.get(|| BshGrid::build_reaching(&self.bsh, lo, hi, GLOSSY_REACH));
-            if grid.is_some_and(|g| g.for_each_reaching(x, r, rl, &mut visit)) {
-                return;
-            }
-        } else if self.grid && rl.w <= SHARP_REACH {
-            let grid = st.sharp.get(|| {
-                BshGrid::build_reaching_within(&self.bsh, lo, hi, SHARP_REACH, SHARP_GRID_ENTRIES)
-            });
+        if self.grid {
+            let bsh = &self.bsh;
+            let grid = if rl.w <= 1.0 {
+                st.grid.get(|| BshGrid::build(bsh, lo, hi))
+            } else if rl.w <= GLOSSY_REACH {
+                st.glossy.get(|| BshGrid::build_reaching(bsh, lo, hi, GLOSSY_REACH))
+            } else if rl.w <= SHARP_REACH {
+                st.sharp.get(|| {
+                    BshGrid::build_reaching_within(bsh, lo, hi, SHARP_REACH, SHARP_GRID_ENTRIES)
+                })
+            } else {
+                None
+            };
             if grid.is_some_and(|g| g.for_each_reaching(x, r, rl, &mut visit)) {
                 return;
             }
