@@ -61,10 +61,16 @@ pub struct Pinhole {
 }
 
 impl Pinhole {
-    /// The unit direction of pixel `(x, y)`'s ray.
+    /// The unit direction of pixel `(x, y)`'s ray (through its centre).
     pub fn dir(&self, x: usize, y: usize) -> Vec3 {
+        self.dir_at(x as f32 + 0.5, y as f32 + 0.5)
+    }
+
+    /// The unit direction of the ray through image point `(sx, sy)`, in
+    /// pixels from the top-left corner ([`camera_dir`]).
+    pub fn dir_at(&self, sx: f32, sy: f32) -> Vec3 {
         let (f, r, u) = self.basis;
-        camera_dir(f, r, u, x as f32 + 0.5, y as f32 + 0.5, self.size.0 as f32, self.size.1 as f32)
+        camera_dir(f, r, u, sx, sy, self.size.0 as f32, self.size.1 as f32)
     }
 }
 

@@ -36,6 +36,7 @@
 //! are delta lights (weight 1).
 
 use crate::geometry::Geometry;
+use crate::raster::Pinhole;
 use glam::{Vec3, Vec4};
 use rand_core::RngCore;
 use rand_pcg::Pcg32;
@@ -48,7 +49,7 @@ use slc_core::importance::weighted_select_pdf;
 use slc_core::light::{Light, connection_cosine, connection_factor};
 use slc_core::mis::{light_strategy_pdf, mis_power};
 use slc_core::path::{
-    camera_dir, continues_path, jittered_pixel, path_survival, plays_roulette, sees_emission,
+    continues_path, jittered_pixel, path_survival, plays_roulette, sees_emission,
 };
 use slc_core::range::{RangeParams, random_range2};
 use slc_core::ray::{face_against, ray_t_min, surface_offset};
@@ -297,11 +298,12 @@ impl CpuPathTracer {
             let state = self.pass_state(s.method, &params, s.seed, pass)?;
             let st = &state;
             let this = &*self;
+            let view = &self.pinhole(w, h);
             let image: Vec<Vec3> = (0..w * h)
                 .into_par_iter()
                 .map(|px| {
                     let mut rng = Pcg32::new(((s.seed as u64) << 32) | pass as u64, px as u64);
-                    this.trace(px % w, px / w, w, h, s, st, &mut rng)
+                    this.trace(px % w, px / w, view, s, st, &mut rng)
                 })
                 .collect();
             acc.accumulate(&image, 1, t.elapsed().as_secs_f64() * 1e3);
@@ -511,24 +513,27 @@ impl CpuPathTracer {
         (res, seen)
     }
 
-    #[allow(clippy::too_many_arguments)]
+    /// The camera of a `w × h` image, its basis computed once a pass.
+    fn pinhole(&self, w: u32, h: u32) -> Pinhole {
+        let cam = &self.pts.scene().camera;
+        Pinhole { eye: cam.position, basis: cam.scaled_basis(w, h), size: (w as usize, h as usize) }
+    }
+
+    /// One path through pixel `(px, py)` of the image `view` shows.
     fn trace(
         &self,
         px: u32,
         py: u32,
-        w: u32,
-        h: u32,
+        view: &Pinhole,
         s: &PtSettings,
         st: &Pass,
         rng: &mut Pcg32,
     ) -> Vec3 {
         let scene = self.pts.scene();
-        let cam = &scene.camera;
         let sx = jittered_pixel(px, xi_from_bits(rng.next_u32()));
         let sy = jittered_pixel(py, xi_from_bits(rng.next_u32()));
-        let (f, r, u) = cam.scaled_basis(w, h);
-        let mut dir = camera_dir(f, r, u, sx, sy, w as f32, h as f32);
-        let mut org = cam.position;
+        let mut dir = view.dir_at(sx, sy);
+        let mut org = view.eye;
         let mut beta = Vec3::ONE;
         let mut radiance = Vec3::ZERO;
         let diag = self.diag;
