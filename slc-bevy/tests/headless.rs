@@ -43,7 +43,7 @@ use bevy::render::view::screenshot::{Screenshot, ScreenshotCaptured};
 use bevy::window::ExitCondition;
 use bevy::winit::WinitPlugin;
 use rand::{Rng, SeedableRng};
-use slc_bevy::{Culling, SlcCamera, SlcLight, SlcPlugin, SlcStatus, SlcWork};
+use slc_bevy::{Culling, DirectWalk, SlcCamera, SlcLight, SlcPlugin, SlcStatus, SlcWork};
 use std::sync::{Arc, Mutex};
 
 /// Phase 6: an emissive mesh lights the floor.
@@ -465,8 +465,16 @@ fn run() -> Result<(), String> {
                 Vec3::new(3.0, -1.0, -2.0);
         }
     }
+    // The walk switched at run time too (the view is rebuilt for it): this
+    // phase finds each pixel's lights by its own walk, phase 1 by its
+    // tile's, so both meet the same bound at no extra frames.
+    let walk = |app: &mut App, walk: DirectWalk| {
+        app.world_mut().get_mut::<SlcCamera>(camera).expect("camera").walk = walk;
+    };
+    walk(&mut app, DirectWalk::Pixel);
     let report = compare(&mut app, FRAMES, "-moved")?;
-    println!("after moving every light and despawning a third: {report}");
+    println!("after moving every light and despawning a third (one walk per pixel): {report}");
+    walk(&mut app, DirectWalk::Tile);
     // Phase 3: the plugin's own accumulation (static scene): 40 frames
     // must come closer to Bevy's unbounded image than one frame does.
     set_mode(&mut app, Mode::Unbounded);
