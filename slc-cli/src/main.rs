@@ -87,7 +87,8 @@ enum Command {
         ies: String,
     },
     /// Plot a `slc bench` JSON report again (.svg or .png): a VPL report as
-    /// speed against error, a path-tracing one as RMSE over time.
+    /// speed against error, a path-tracing one as RMSE over time, a suite's
+    /// as each scene's error over uniform sampling's.
     Plot {
         /// The JSON written by `slc bench --json`.
         json: PathBuf,
@@ -666,12 +667,22 @@ fn shaders(out: &Path, lights: &str, reservoir_k: u32) -> anyhow::Result<()> {
 }
 
 /// Plots a bench report again: a VPL report as speed against error, a
-/// path-tracing one as RMSE over time (told apart by its `app`).
+/// path-tracing one as RMSE over time (told apart by its `app`), a suite's
+/// (`bench --app pt --suite`, its `rows`) as each scene's error over
+/// uniform sampling's, as `bench --plot` draws it.
 fn replot(json: &Path, out: &Path) -> anyhow::Result<()> {
     let text =
         std::fs::read_to_string(json).with_context(|| format!("cannot read {}", json.display()))?;
-    let value: serde_json::Value =
+    let mut value: serde_json::Value =
         serde_json::from_str(&text).with_context(|| format!("{}", json.display()))?;
+    let suite = value.get("app").is_none();
+    if let Some(rows) = value.get_mut("rows").filter(|_| suite) {
+        let rows: Vec<report::SuiteRow> = serde_json::from_value(rows.take())
+            .with_context(|| format!("{} (a suite report's rows)", json.display()))?;
+        plot::suite_vs_uniform(&rows, out)?;
+        println!("wrote {}", out.display());
+        return Ok(());
+    }
     match value.get("app").and_then(|a| a.as_str()) {
         Some("pt") => {
             let report: report::PtReport = serde_json::from_value(value)

@@ -299,8 +299,14 @@ pub struct FlickerReport {
     pub sequences: Vec<SequenceReport>,
 }
 
-/// One method on one suite scene, as the summary reads it.
-#[derive(Serialize, Clone, Debug)]
+/// A number JSON wrote as `null` (serde_json's NaN and ±∞) read back as NaN.
+fn nan_if_null<'de, D: serde::Deserializer<'de>>(d: D) -> Result<f64, D::Error> {
+    Ok(Option::<f64>::deserialize(d)?.unwrap_or(f64::NAN))
+}
+
+/// One method on one suite scene, as the summary reads it (and `slc plot`
+/// reads back: its numbers NaN where JSON holds `null`).
+#[derive(Serialize, Deserialize, Clone, Debug)]
 pub struct SuiteRow {
     /// Scene file stem.
     pub scene: String,
@@ -309,15 +315,20 @@ pub struct SuiteRow {
     /// Samples per pixel reached in the time.
     pub spp: u32,
     /// Net RMSE (the reference's noise taken out).
+    #[serde(deserialize_with = "nan_if_null")]
     pub rmse_net: f64,
     /// `rmse_net · √spp`: noise per sample.
+    #[serde(deserialize_with = "nan_if_null")]
     pub noise_per_sample: f64,
     /// Time per sample over uniform sampling's on the same scene.
+    #[serde(deserialize_with = "nan_if_null")]
     pub time_per_sample_vs_uniform: f64,
     /// Net RMSE over uniform sampling's on the same scene.
+    #[serde(deserialize_with = "nan_if_null")]
     pub rmse_vs_uniform: f64,
     /// The standard error of `rmse_net` from the seed pairs
     /// ([`PtRun::rmse_se`]; NaN for one pair or against a reference).
+    #[serde(deserialize_with = "nan_if_null")]
     pub rmse_se: f64,
 }
 

@@ -953,6 +953,12 @@ fn suite_commands() {
     }
     assert_eq!(std::fs::read_to_string(d.join("s.csv")).unwrap().lines().count(), 13);
     assert!(std::fs::read_to_string(d.join("s.svg")).unwrap().contains("suite scene"));
+    // `slc plot` draws a suite's report again, as `--plot` did.
+    ok(&d, &["plot", "s.json", "--out", "s2.svg"]);
+    assert_eq!(
+        std::fs::read_to_string(d.join("s2.svg")).unwrap(),
+        std::fs::read_to_string(d.join("s.svg")).unwrap()
+    );
     // Seed pairs: every ratio gets a standard error, the median an interval.
     let text = ok(
         &d,
