@@ -675,15 +675,13 @@ fn replot(json: &Path, out: &Path) -> anyhow::Result<()> {
         std::fs::read_to_string(json).with_context(|| format!("cannot read {}", json.display()))?;
     let mut value: serde_json::Value =
         serde_json::from_str(&text).with_context(|| format!("{}", json.display()))?;
-    let suite = value.get("app").is_none();
-    if let Some(rows) = value.get_mut("rows").filter(|_| suite) {
-        let rows: Vec<report::SuiteRow> = serde_json::from_value(rows.take())
-            .with_context(|| format!("{} (a suite report's rows)", json.display()))?;
-        plot::suite_vs_uniform(&rows, out)?;
-        println!("wrote {}", out.display());
-        return Ok(());
-    }
     match value.get("app").and_then(|a| a.as_str()) {
+        // A suite's report has no `app` of its own: its scenes do.
+        None if value.get("rows").is_some() => {
+            let rows: Vec<report::SuiteRow> = serde_json::from_value(value["rows"].take())
+                .with_context(|| format!("{} (a suite report's rows)", json.display()))?;
+            plot::suite_vs_uniform(&rows, out)?;
+        }
         Some("pt") => {
             let report: report::PtReport = serde_json::from_value(value)
                 .with_context(|| format!("{} (a path-tracing report)", json.display()))?;

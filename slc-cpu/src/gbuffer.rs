@@ -45,8 +45,7 @@ pub fn render_gbuffer_into(
     let (w, h) = (gb.width as usize, gb.height as usize);
     let cam = &scene.camera;
     gb.eye = cam.position;
-    let view =
-        Pinhole { eye: cam.position, basis: cam.scaled_basis(gb.width, gb.height), size: (w, h) };
+    let view = Pinhole::of(cam, gb.width, gb.height);
     let hits = closest_hits(&view, geo, &scene.triangles);
     type Texel = ((Vec3, Vec3), ((Vec3, Vec3), (f32, Vec3)));
     let texel = |x: usize, y: usize| -> Texel {

@@ -23,7 +23,7 @@ use obvhs::ray::Ray;
 use rayon::prelude::*;
 use slc_core::frame::light_map_coord_at;
 use slc_core::path::camera_dir;
-use slc_scene::scene::LightMap;
+use slc_scene::scene::{Camera, LightMap};
 
 /// A view of `width × height` pixels: where a point projects, and the ray
 /// of a pixel.
@@ -61,6 +61,11 @@ pub struct Pinhole {
 }
 
 impl Pinhole {
+    /// The view of `cam` for a `w × h` image.
+    pub fn of(cam: &Camera, w: u32, h: u32) -> Pinhole {
+        Pinhole { eye: cam.position, basis: cam.scaled_basis(w, h), size: (w as usize, h as usize) }
+    }
+
     /// The unit direction of pixel `(x, y)`'s ray (through its centre).
     pub fn dir(&self, x: usize, y: usize) -> Vec3 {
         self.dir_at(x as f32 + 0.5, y as f32 + 0.5)
@@ -527,11 +532,7 @@ mod tests {
         }
         let scene = Scene::cornell_box();
         let cam: Camera = scene.camera;
-        projects_its_rays(&Pinhole {
-            eye: cam.position,
-            basis: cam.scaled_basis(40, 30),
-            size: (40, 30),
-        });
+        projects_its_rays(&Pinhole::of(&cam, 40, 30));
         projects_its_rays(&MapView {
             map: scene.primary.light_map(scene.bounds()),
             size: 32,

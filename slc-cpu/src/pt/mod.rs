@@ -298,7 +298,8 @@ impl CpuPathTracer {
             let state = self.pass_state(s.method, &params, s.seed, pass)?;
             let st = &state;
             let this = &*self;
-            let view = &self.pinhole(w, h);
+            // The camera's basis once a pass, not once a path.
+            let view = &Pinhole::of(&self.pts.scene().camera, w, h);
             let image: Vec<Vec3> = (0..w * h)
                 .into_par_iter()
                 .map(|px| {
@@ -511,12 +512,6 @@ impl CpuPathTracer {
             res.push(l, w, || xi_from_bits(rng.next_u32()));
         });
         (res, seen)
-    }
-
-    /// The camera of a `w × h` image, its basis computed once a pass.
-    fn pinhole(&self, w: u32, h: u32) -> Pinhole {
-        let cam = &self.pts.scene().camera;
-        Pinhole { eye: cam.position, basis: cam.scaled_basis(w, h), size: (w as usize, h as usize) }
     }
 
     /// One path through pixel `(px, py)` of the image `view` shows.
