@@ -240,6 +240,12 @@ slc_core::shared! {
     /// cells down to 4 is five).
     pub const GRID_LEVELS_MAX: u32 = 8;
 
+    /// Most entries of a cell `bsh_grid`'s stage 5 sorts in workgroup
+    /// memory (6 KiB; a larger cell is sorted by one invocation): on
+    /// lavapipe, whose loops end after 65,535 iterations in an invocation,
+    /// each of its 64 invocations then counts at most 24 × 1,536 ranks.
+    pub const GRID_SORT_MAX: u32 = 1536;
+
     /// Uniforms of one `bsh_grid` dispatch: its stage (0 each level's
     /// entries counted, 1 the level chosen, 2 each cell's entries counted,
     /// 3 their starts, 4 the leaves scattered, 5 each cell sorted), the
@@ -265,8 +271,9 @@ slc_core::shared! {
         pub fill: u32,
         /// The grid's first entry in `grid_entries`.
         pub entries: u32,
-        /// Padding.
-        pub pad0: u32,
+        /// Entries the grid may take at least, whatever its budget (slc-core's
+        /// `bsh_grid_budget`: the sharp grid's `SHARP_GRID_ENTRIES`, else 0).
+        pub least: u32,
         /// Padding.
         pub pad1: u32,
         /// Padding.

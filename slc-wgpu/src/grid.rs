@@ -1,7 +1,8 @@
 //! The path tracer's grid over the BSH's leaves on the GPU (slc-core's
 //! [`BshGrid`](slc_core::bsh::BshGrid), which the CPU path tracer builds):
 //! rebuilt every pass after the refit by `bsh_grid`'s six stages (a
-//! counting sort, each cell then sorted into node order), over the frames
+//! counting sort, each cell then sorted into node order by a workgroup of
+//! its own), over the frames
 //! [`GridFrame::levels`] gives for the scene's box, the first whose entries
 //! fit its budget. `pt_connect` then tests a vertex's cell and the range
 //! tail instead of walking the tree: the same lights in the same order, so
@@ -9,20 +10,23 @@
 //! [`GpuPt::set_grid`](crate::pt::GpuPt::set_grid) turns it on: on
 //! lavapipe the build costs more than the lookups save.
 //!
-//! Two grids share the buffers where the scene has glossy materials: one
-//! for Lambertian receivers, one for range lobes up to
-//! [`GLOSSY_REACH`] (sharper ones walk: the CPU's third grid for them,
-//! whose scan cuts each cell to the lobe's cone, is not built here).
+//! Three grids share the buffers where the scene has glossy materials, as
+//! on the CPU: one for Lambertian receivers, one for range lobes up to
+//! [`GLOSSY_REACH`] and one up to [`SHARP_REACH`] (every lobe), allowed at
+//! least [`SHARP_GRID_ENTRIES`] entries. A glossy receiver's cell is cut
+//! to the lights whose bound meets its lobe's cone (slc-core's
+//! `bsh_lobe_admits`) before the walk's leaf test.
 //!
 //! On lavapipe, whose loops end silently after 65,535 iterations in an
 //! invocation, a leaf may cover at most that many cells and a cell hold
-//! about 360 entries (its insertion sort); the tests' scenes stay well below.
+//! 1,536 entries (its sort in workgroup memory; past it one invocation's
+//! insertion sort holds about 360); the tests' scenes stay well below.
 
 use crate::kernel::{KernelLayout, UniformSlots, check_kernels, read_back, storage, whole, zeroed};
 use crate::lights::{LightBuffers, WG};
 use crate::{GpuContext, GpuError};
 use glam::Vec3;
-use slc_core::bsh::grid::{GLOSSY_REACH, walk_leaves};
+use slc_core::bsh::grid::{GLOSSY_REACH, SHARP_GRID_ENTRIES, SHARP_REACH, walk_leaves};
 use slc_core::bsh::{Bsh, GridFrame};
 use slc_shared_shaders::layout::{GRID_HEADER, GRID_LEVELS_MAX, GridParams};
 use slc_shared_shaders::{Features, Kernel};
@@ -52,6 +56,8 @@ pub(crate) struct GpuGrid {
     cells: u32,
     /// Whether passes build them ([`GpuGrid::set_enabled`]).
     enabled: bool,
+    /// The device's most workgroups along a dimension.
+    most_groups: u32,
 }
 
 impl GpuGrid {
@@ -69,8 +75,13 @@ impl GpuGrid {
     ) -> Result<GpuGrid, GpuError> {
         let f = Features { workgroup_size: WG, ..Features::default() };
         check_kernels(gpu, &[(Kernel::BshGrid, &f, 0)])?;
-        let reaches: &[f32] = if glossy { &[1.0, GLOSSY_REACH] } else { &[1.0] };
-        let k = reaches.len() as u64;
+        // Each grid's reach and the entries it may take at least.
+        let grids: &[(f32, u64)] = if glossy {
+            &[(1.0, 0), (GLOSSY_REACH, 0), (SHARP_REACH, SHARP_GRID_ENTRIES)]
+        } else {
+            &[(1.0, 0)]
+        };
+        let k = grids.len() as u64;
         let leaves = walk_leaves(bsh);
         let tree_lights = leaves.len();
         let mut levels = GridFrame::levels(lo, hi, bsh.len());
@@ -80,16 +91,32 @@ impl GpuGrid {
         // Each grid's words: the header, one start a cell and the end. No
         // frame where the finest one's would pass the device's limits.
         let words_of = |cells: u64| GRID_HEADER as u64 + cells + 1;
+        let most = lim.max_compute_workgroups_per_dimension as u64;
         if levels.first().is_some_and(|l| {
-            k * words_of(l.cells()) * 4 > binding
-                || l.cells().div_ceil(WG as u64) > lim.max_compute_workgroups_per_dimension as u64
+            k * words_of(l.cells()) * 4 > binding || l.cells().div_ceil(most) > most
         }) {
             levels.clear();
         }
         let cells = levels.first().map_or(0, |l| l.cells());
         let words = words_of(cells);
-        let capacity =
-            levels.first().map_or(1, |l| l.budget(tree_lights as u64)).clamp(1, binding / 4 / k);
+        // Each grid's entries: its finest frame's budget (a coarser one's
+        // is smaller), within its share of the binding; where they start.
+        let capacity: Vec<u64> = grids
+            .iter()
+            .map(|&(_, least)| {
+                levels
+                    .first()
+                    .map_or(1, |l| l.budget(tree_lights as u64, least))
+                    .clamp(1, binding / 4 / k)
+            })
+            .collect();
+        let first: Vec<u64> = capacity
+            .iter()
+            .scan(0, |at, &c| {
+                *at += c;
+                Some(*at - c)
+            })
+            .collect();
         let layout = KernelLayout::new(gpu, Kernel::BshGrid, &f)?;
         let pipeline = layout.pipeline(gpu, &f, None)?;
         // COPY_SRC: read back by the tests.
@@ -104,7 +131,7 @@ impl GpuGrid {
         }
         let grid = storage(gpu, "bsh grid", bytemuck::cast_slice(&init), rw);
         let fill = zeroed(gpu, "bsh grid fill", (k * cells).max(1) * 4, rw);
-        let entries = zeroed(gpu, "bsh grid entries", k * capacity * 4, rw);
+        let entries = zeroed(gpu, "bsh grid entries", capacity.iter().sum::<u64>() * 4, rw);
         let frames = if levels.is_empty() { vec![GridFrame::default()] } else { levels.clone() };
         let none = wgpu::BufferUsages::empty();
         let frames = storage(gpu, "grid levels", bytemuck::cast_slice(&frames), none);
@@ -114,17 +141,19 @@ impl GpuGrid {
         let n_levels = levels.len() as u32;
         let values: Vec<GridParams> = (0..k as u32)
             .flat_map(|g| {
+                let (reach, least) = grids[g as usize];
+                let (capacity, entries) = (capacity[g as usize], first[g as usize]);
                 (0..STAGES as u32).map(move |stage| GridParams {
                     stage,
                     count: tree_lights as u32,
                     levels: n_levels,
                     capacity: capacity as u32,
-                    reach: reaches[g as usize],
+                    reach,
                     cells: cells as u32,
                     header: g * words as u32,
                     fill: g * cells as u32,
-                    entries: g * capacity as u32,
-                    pad0: 0,
+                    entries: entries as u32,
+                    least: least as u32,
                     pad1: 0,
                     pad2: 0,
                 })
@@ -154,6 +183,7 @@ impl GpuGrid {
             lights: tree_lights as u32,
             cells: cells as u32,
             enabled: false,
+            most_groups: lim.max_compute_workgroups_per_dimension,
         })
     }
 
@@ -169,7 +199,7 @@ impl GpuGrid {
         }
     }
 
-    /// The last pass's grid `g` (0: Lambertian, 1: glossy) read back: its
+    /// The last pass's grid `g` (0: Lambertian, 1: glossy, 2: sharp) read back: its
     /// frame (no cells along x: none) and each cell's leaves (node
     /// indices); `None` where there is no such grid.
     pub(crate) fn read(&self, gpu: &GpuContext, g: usize) -> Result<Option<GridCells>, GpuError> {
@@ -202,14 +232,16 @@ impl GpuGrid {
         }
         cp.set_pipeline(&self.pipeline);
         let per_light = self.lights.div_ceil(WG);
+        // Stage 5: a workgroup per cell, rows of `per_cell.0`.
+        let per_cell = (self.cells.min(self.most_groups), self.cells.div_ceil(self.most_groups));
         for slot in 0..self.headers.len() * STAGES {
             cp.set_bind_group(0, &self.group, &[self.params.offset(slot)]);
             let groups = match slot % STAGES {
-                0 | 2 | 4 => per_light,
-                5 => self.cells.div_ceil(WG),
-                _ => 1,
+                0 | 2 | 4 => (per_light, 1),
+                5 => per_cell,
+                _ => (1, 1),
             };
-            cp.dispatch_workgroups(groups, 1, 1);
+            cp.dispatch_workgroups(groups.0, groups.1, 1);
         }
     }
 }

@@ -463,15 +463,17 @@ impl GpuPt {
     /// and find a vertex's lights in its cell (slc-core's `BshGrid`, built
     /// on the GPU each pass, for Lambertian vertices and, in a scene with
     /// specular materials, glossy ones whose range lobe is within
-    /// `GLOSSY_REACH`) or walk the tree for every vertex (`false`, the
+    /// `GLOSSY_REACH` and within `SHARP_REACH`, every lobe, as the CPU path
+    /// tracer does) or walk the tree for every vertex (`false`, the
     /// default). The same lights in the same order either way, so the same
-    /// image. Off by default: on lavapipe the build (12 dispatches a pass,
-    /// two of them one workgroup, and each cell's sort) costs more than the
-    /// lookups save (docs/results/bsh-walk-visits.md); a real GPU has not
-    /// measured it yet. The grids' buffers are made with the path tracer,
-    /// on or off: at most 8 entries of 4 bytes a light and one a cell
-    /// (`slc_core::bsh::GRID_ENTRIES_PER_LIGHT`), per grid (3.4 MB for
-    /// both at 49,152 lights).
+    /// image. Off by default: on lavapipe the build (6 dispatches a grid
+    /// and pass, two of them one workgroup, and each cell's sort) costs
+    /// more than the lookups save (docs/results/bsh-walk-visits.md); a real
+    /// GPU has not measured it yet. The grids' buffers are made with the
+    /// path tracer, on or off: at most 8 entries of 4 bytes a light and one
+    /// a cell (`slc_core::bsh::GRID_ENTRIES_PER_LIGHT`) per grid, the sharp
+    /// one at least 2¹⁸ (`SHARP_GRID_ENTRIES`; 5.1 MB for the three at
+    /// 49,152 lights).
     pub fn set_grid(&mut self, on: bool) {
         self.grid.set_enabled(&self.gpu, on);
     }
@@ -489,7 +491,8 @@ impl GpuPt {
         read_back(gpu, &self.set.bsh, &staging)
     }
 
-    /// The last render's grid `g` (0: Lambertian, 1: glossy) read back:
+    /// The last render's grid `g` (0: Lambertian, 1: glossy, 2: sharp)
+    /// read back:
     /// its frame (no cells along x where it had none) and each cell's
     /// leaves (node indices), `None` where the scene has no such grid: for
     /// the tests that check it against the walk.

@@ -510,21 +510,25 @@ fn gpu_range_tail_matches_the_cpu_refit() {
 /// each tree leaf the walk can find (not in the range tail) that reaches a
 /// point of the cell: at 2,000 points drawn in the scene's box, against
 /// every leaf, the Lambertian grid for the plain sphere test and the
-/// glossy one for a GGX receiver drawn at each point whose range lobe it
-/// holds (the walk's leaf test, `bsh_reaches`). And `slc-weighted`,
+/// glossy and sharp ones for a GGX receiver drawn at each point whose
+/// range lobe they hold (the walk's leaf test, `bsh_reaches`), where the
+/// cells' cut to the lobe's cone (`bsh_lobe_admits`) keeps every leaf
+/// that reaches the point. And `slc-weighted`,
 /// `slc-reservoir` and `slc` render the same image bit for bit with and
 /// without them (the walk's lights in its order). Over the scene suite's
 /// 2,048-light points (volume, clusters), triangles and glossy box, two
 /// passes at depth 3 and the ε `slc render` sets for each.
 fn gpu_grid_gives_the_walks_image() {
-    use slc_core::bsh::grid::{GLOSSY_REACH, bsh_grid_cell, walk_leaves};
+    use slc_core::bsh::grid::{
+        GLOSSY_REACH, SHARP_REACH, bsh_grid_cell, bsh_lobe_admits, lobe_cone, walk_leaves,
+    };
     use slc_core::bsh::walk::bsh_reaches;
     use slc_core::bsh::{BSH_NONE, BSH_TAIL};
     use slc_scene::error_bound::{TARGET_CANDIDATES, auto_error_bound};
     use slc_scene::scene::Material;
     let Some(g) = gpu() else { return };
     let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../scenes/suite");
-    let mut glossy_held = 0;
+    let mut glossy_held = [0; 3];
     for name in
         ["points-volume-2048", "points-clusters-2048", "tri-away-2048", "glossy-facing-2048"]
     {
@@ -558,7 +562,8 @@ fn gpu_grid_gives_the_walks_image() {
                 let nodes = gpt.read_bsh(g).unwrap();
                 let glossy = name.starts_with("glossy");
                 assert_eq!(gpt.read_grid(g, 1).unwrap().is_some(), glossy, "{name}");
-                for grid in 0..1 + glossy as usize {
+                assert_eq!(gpt.read_grid(g, 2).unwrap().is_some(), glossy, "{name}");
+                for grid in 0..if glossy { 3 } else { 1 } {
                     let (frame, cells) = gpt.read_grid(g, grid).unwrap().unwrap();
                     assert!(
                         frame.nx > 0 && cells.len() as u64 == frame.cells(),
@@ -591,7 +596,7 @@ fn gpu_grid_gives_the_walks_image() {
                         // A GGX receiver for the glossy grid; none (the
                         // plain sphere test) for the Lambertian one.
                         let (mut r, mut rl) = (Vec3::Z, glam::Vec4::new(1.0, 0.0, 1.0, 1.0));
-                        if grid == 1 {
+                        if grid > 0 {
                             let nrm = (Vec3::new(u(), u(), u()) - 0.5).normalize();
                             let v = (Vec3::new(u(), u(), u()) - 0.5 + nrm).normalize();
                             let metal = if u() < 0.5 { 1.0 } else { 0.0 };
@@ -599,22 +604,32 @@ fn gpu_grid_gives_the_walks_image() {
                             let rc = Material::gltf(Vec3::splat(0.8), metal, roughness)
                                 .receiver(p, nrm, v);
                             (r, rl) = (rc.r, rc.range_lobe());
-                            if !(rl.w > 1.0 && rl.w <= GLOSSY_REACH) {
+                            let (a, b) =
+                                [(1.0, GLOSSY_REACH), (GLOSSY_REACH, SHARP_REACH)][grid - 1];
+                            if !(rl.w > a && rl.w <= b) {
                                 continue;
                             }
-                            glossy_held += 1;
+                            glossy_held[grid] += 1;
                         }
                         let c = bsh_grid_cell(frame, p);
                         assert_ne!(c, BSH_NONE, "{name}: {p} outside the grid");
+                        let cone = lobe_cone(rl);
                         let reaches = |b: usize| bsh_reaches(nodes[b], p, r, rl);
+                        let admits = |b: usize| {
+                            let n = nodes[b];
+                            rl.w <= 1.0
+                                || bsh_lobe_admits(n.center, n.radius, n.extent, p, rl.w, r, cone)
+                        };
                         let walk = (0..tree)
                             .filter(|&i| {
                                 nodes[i].child == BSH_NONE && nodes[i].light & BSH_TAIL == 0
                             })
                             .filter(|&i| reaches(i))
                             .count();
-                        let listed =
-                            cells[c as usize].iter().filter(|&&b| reaches(b as usize)).count();
+                        let listed = cells[c as usize]
+                            .iter()
+                            .filter(|&&b| admits(b as usize) && reaches(b as usize))
+                            .count();
                         assert_eq!(
                             listed, walk,
                             "{name}, grid {grid}: the cell of {p} misses a leaf"
@@ -630,7 +645,10 @@ fn gpu_grid_gives_the_walks_image() {
             );
         }
     }
-    assert!(glossy_held > 500, "{glossy_held} glossy receivers held");
+    assert!(
+        glossy_held[1] > 500 && glossy_held[2] > 100,
+        "{glossy_held:?} glossy and sharp receivers held"
+    );
     g.take_errors().unwrap();
 }
 

@@ -23,18 +23,20 @@
 //! A lobe scales no light's range outside a cone around its mirror
 //! direction (its scale's lower clamp, 1): the scan of a glossy
 //! receiver's cell keeps only the spheres that hold the point or whose
-//! light's bound meets that cone (`LobeCone`, a test without roots or
-//! divisions), and the walk's leaf test runs on those alone. So a grid
+//! light's bound meets that cone ([`bsh_lobe_admits`], a test without
+//! roots or divisions), and the walk's leaf test runs on those alone. So a grid
 //! for the sharpest lobes ([`SHARP_REACH`]), whose cells list hundreds of
 //! spheres, takes 0.27–0.38 of their walk's time
 //! (docs/results/pt-suite-pairs.md).
 //!
-//! The GPU path tracer builds the same grid each pass with a counting sort
+//! The GPU path tracer builds the same grids each pass with a counting sort
 //! (slc-shared-shaders' `bsh_grid`), from the same frames
 //! ([`GridFrame::levels`]), the same leaf order ([`walk_leaves`]) and the
 //! same budget, cover and cell steps ([`WGSL`]: [`bsh_grid_budget`],
 //! [`bsh_grid_reach`], [`bsh_grid_pad`], [`bsh_grid_radius`], [`bsh_grid_axis`],
-//! [`bsh_grid_first`], [`bsh_grid_last`], [`bsh_grid_cell`]).
+//! [`bsh_grid_first`], [`bsh_grid_last`], [`bsh_grid_cell`]), and cuts a
+//! glossy receiver's cell with the same cone ([`lobe_cone`],
+//! [`bsh_lobe_admits`]).
 
 use super::walk::bsh_reaches;
 use super::{BSH_NONE, BSH_TAIL, Bsh, BshNode, bsh_reach_bound};
@@ -42,7 +44,7 @@ use crate::importance::range_scale_at;
 use crate::wgsl::*;
 use alloc::vec;
 use alloc::vec::Vec;
-use glam::{UVec3, Vec3, Vec4};
+use glam::{UVec3, Vec2, Vec3, Vec4};
 
 crate::shared! {
     /// Most entries a grid may hold per light in the tree (plus one per cell;
@@ -53,14 +55,15 @@ crate::shared! {
 
     /// The most entries a grid of `cells` cells may hold for `leaves`
     /// leaves in the tree: [`GRID_ENTRIES_PER_LIGHT`] per leaf plus one
-    /// per cell, at most `2³² − 1`.
-    pub fn bsh_grid_budget(leaves: u32, cells: u32) -> u32 {
+    /// per cell, at most `2³² − 1`, and at least `least` (the sharp grid's
+    /// [`SHARP_GRID_ENTRIES`], 0 for the others).
+    pub fn bsh_grid_budget(leaves: u32, cells: u32, least: u32) -> u32 {
         if leaves > 536870911 {
             return 4294967295;
         }
         let e: u32 = leaves * GRID_ENTRIES_PER_LIGHT;
         let t: u32 = add_wrap_u32(e, cells);
-        return select(t, 4294967295, t < e);
+        return max(select(t, 4294967295, t < e), least);
     }
 
     /// A grid's cells: the box `(lo, hi)`, `inv` cells per unit length
@@ -145,6 +148,77 @@ crate::shared! {
         let cz: u32 = bsh_grid_axis(x.z, f.lo.z, f.inv.z, f.nz);
         return (cz * f.ny + cy) * f.nx + cx;
     }
+
+    /// The relative padding of a light's extent in [`lobe_cone_meets`]
+    /// (against rounding).
+    pub const LOBE_CONE_PAD: f32 = 1.001;
+
+    /// The cone around a glossy receiver's mirror direction outside which
+    /// its range lobe `rl` ([`crate::brdf::range_lobe`]) scales no light's
+    /// range, as `(cos² θ, 1/sin θ)`, or `(0, 0)` where it would be no
+    /// narrower than a half-space (`k_d` near 1, a wide lobe) or the lobe is
+    /// not finite (no cut). [`range_scale_at`] is exactly 1 (its lower
+    /// clamp) for every direction at an angle beyond `θ₁` from the mirror
+    /// direction, where `k_d + c_s·α²/t² = 1`, i.e.
+    /// `t₁ = √(c_s·α²/(1 − k_d))` and `cos θ₁ = 2(1 − t₁)/(1 − α²) − 1`
+    /// (`t = (1 + cos θ)/2·(α² − 1) + 1`), lowered until
+    /// `range_scale_at(rl, cos θ₁)` reads 1 in f32 (the function is
+    /// monotone, and so is its rounded value), then widened by 10⁻³ in its
+    /// cosine for the rounding of [`crate::importance::cone_cos_of`] and of
+    /// [`lobe_cone_meets`]. A light's bound sphere that misses it gets
+    /// scale 1.
+    pub fn lobe_cone(rl: vec4f) -> vec2f {
+        if !(rl.x < 1.0 && rl.y >= 0.0 && rl.z > 0.0 && rl.z < 1.0) {
+            return vec2f(0.0, 0.0);
+        }
+        let t1: f32 = sqrt(rl.y * rl.z / (1.0 - rl.x));
+        let mut c: f32 = 2.0 * (1.0 - t1) / (1.0 - rl.z) - 1.0;
+        let mut tries: u32 = 0;
+        while !(range_scale_at(rl, c) <= 1.0) {
+            c -= 1e-4;
+            tries += 1;
+            if tries > 16 {
+                return vec2f(0.0, 0.0);
+            }
+        }
+        let w: f32 = min(min(c, 1.0) - 1e-3, 0.9999);
+        if !(w > 0.0) {
+            return vec2f(0.0, 0.0);
+        }
+        return vec2f(w * w, 1.0 / sqrt(1.0 - w * w));
+    }
+
+    #[inline(always)]
+    /// Whether a light's bound sphere `(c, extent)`, seen from a receiver
+    /// at `x` with `v = x − c` (`d2 = |v|²`), meets the cone
+    /// `cone` ([`lobe_cone`]) around the mirror direction `axis` (unit)
+    /// with its apex at `x`: the test of the centre against the cone with
+    /// its apex moved back along the axis by the padded extent over sin θ
+    /// (no square root, no division).
+    pub fn lobe_cone_meets(v: vec3f, d2: f32, extent: f32, axis: vec3f, cone: vec2f) -> bool {
+        let k: f32 = (extent * LOBE_CONE_PAD + 1e-30) * cone.y;
+        let vd: f32 = -dot(v, axis);
+        let a: f32 = vd + k;
+        let b: f32 = d2 + k * (2.0 * vd + k);
+        return a >= 0.0 && a * a >= b * cone.x;
+    }
+
+    #[inline(always)]
+    /// A grid's cut of a glossy receiver's cell: whether the leaf sphere
+    /// `(c, radius)` of a light bounded by `(c, extent)` may reach the
+    /// receiver at `x` (mirror direction `axis`, range lobe's `rl.w` `w`,
+    /// cone `cone` of [`lobe_cone`]): the sphere scaled by `w·1.0001`
+    /// holds `x` (the walk's own first test, bit for bit),
+    /// and the sphere itself holds `x` or the light's bound meets the cone
+    /// ([`lobe_cone_meets`]; any, for `cone.y = 0`). What it rejects,
+    /// [`bsh_reaches`] rejects: outside the cone the lobe scales the
+    /// light's range by exactly 1, and the plain sphere misses `x`.
+    pub fn bsh_lobe_admits(c: vec3f, radius: f32, extent: f32, x: vec3f, w: f32, axis: vec3f, cone: vec2f) -> bool {
+        let v: vec3f = x - c;
+        let d2: f32 = dot(v, v);
+        let f: f32 = radius * (w * 1.0001);
+        return d2 <= f * f && (cone.y == 0.0 || d2 <= radius * radius || lobe_cone_meets(v, d2, extent, axis, cone));
+    }
 }
 
 impl GridFrame {
@@ -206,10 +280,10 @@ impl GridFrame {
     }
 
     /// The most entries the frame may hold for `lights` leaves in the
-    /// tree ([`bsh_grid_budget`]).
-    pub fn budget(&self, lights: u64) -> u64 {
+    /// tree, at least `least` ([`bsh_grid_budget`]).
+    pub fn budget(&self, lights: u64, least: u64) -> u64 {
         let (l, c) = (lights.min(u32::MAX as u64) as u32, self.cells().min(u32::MAX as u64) as u32);
-        bsh_grid_budget(l, c) as u64
+        bsh_grid_budget(l, c, least.min(u32::MAX as u64) as u32) as u64
     }
 
     /// The cells `(first, last)` along each axis that a leaf centred at
@@ -230,7 +304,7 @@ pub const GRID_RES_MAX: u32 = 64;
 
 /// The largest range lobe `rl.w` (the square root of a receiver's range
 /// scale) a path tracer's glossy grid holds; sharper lobes take the sharp
-/// grid ([`SHARP_REACH`]) on the CPU and walk the tree on the GPU.
+/// grid ([`SHARP_REACH`]).
 /// At 4, glossy-facing-49152's floor (GGX α 0.09) holds 92% of its
 /// receivers (0.41 of the walk's time), its gold (α 0.16) 75% (0.41); at
 /// 2 the floor's share falls to 68%, and at 8 a cell lists 758 spheres
@@ -239,7 +313,7 @@ pub const GRID_RES_MAX: u32 = 64;
 /// scenes/suite/glossy-facing-49152.toml`).
 pub const GLOSSY_REACH: f32 = 4.0;
 
-/// The range lobe a CPU path tracer's third grid holds: every receiver's,
+/// The range lobe a path tracer's third grid holds: every receiver's,
 /// `√`[`crate::brdf::RANGE_SCALE_MAX`] (GGX α below ~0.05 scales a
 /// light's range by up to 8 toward its mirror direction). Its cells list
 /// hundreds of spheres, which the scan's cone test
@@ -349,25 +423,22 @@ impl Spheres {
         }
     }
 
-    /// [`Spheres::scan`] for a glossy receiver at `p`: calls `hit(k)`, in
-    /// order, for each sphere `k` of `range` whose radius times `far` holds
-    /// `p` (the same test, bit for bit) and that either holds `p` itself or
-    /// whose light's bound `(c, extents[k])` meets the receiver's
-    /// [`LobeCone`] (its test: no square root, no division). What it leaves
-    /// out, [`bsh_reaches`] rejects: outside the cone the lobe scales the
-    /// light's range by exactly 1, and the plain sphere misses `p`.
+    /// [`Spheres::scan`] for a glossy receiver at `p` with mirror
+    /// direction `axis` and cone `cone` ([`lobe_cone`]): calls `hit(k)`, in
+    /// order, for each sphere `k` of `range` that [`bsh_lobe_admits`] (the
+    /// light's extent `extents[k]`), in the same chunks and with the hits
+    /// in order as [`Spheres::scan`].
     #[inline]
     fn scan_lobe(
         &self,
         range: core::ops::Range<usize>,
         extents: &[f32],
         p: Vec3,
-        far: f32,
-        cone: LobeCone,
+        w: f32,
+        (axis, cone): (Vec3, Vec2),
         mut hit: impl FnMut(usize),
     ) {
         let mut at = range.start;
-        let d = cone.axis;
         while at < range.end {
             let n = (range.end - at).min(SCAN_CHUNK);
             let (x, y, z, r, e) = (
@@ -379,16 +450,8 @@ impl Spheres {
             );
             let mut inside = [0u8; SCAN_CHUNK];
             for j in 0..n {
-                let (dx, dy, dz) = (p.x - x[j], p.y - y[j], p.z - z[j]);
-                let d2 = dx * dx + dy * dy + dz * dz;
-                let (rj, fj) = (r[j], r[j] * far);
-                // The cone's apex moved back along its axis by the padded
-                // extent over sin θ: the centres of spheres that meet it.
-                let k = (e[j] * LOBE_CONE_PAD + 1e-30) * cone.inv_sin;
-                let vd = -(dx * d.x + dy * d.y + dz * d.z);
-                let (a, b) = (vd + k, d2 + k * (2.0 * vd + k));
-                let meets = a >= 0.0 && a * a >= b * cone.cos2;
-                inside[j] = (d2 <= fj * fj && (d2 <= rj * rj || meets)) as u8;
+                let c = Vec3::new(x[j], y[j], z[j]);
+                inside[j] = bsh_lobe_admits(c, r[j], e[j], p, w, axis, cone) as u8;
             }
             hits(&inside[..n.next_multiple_of(8)], at, &mut hit);
             at += n;
@@ -408,57 +471,6 @@ fn hits(inside: &[u8], at: usize, hit: &mut impl FnMut(usize)) {
             hit(at + 8 * w + (bits.trailing_zeros() / 8) as usize);
             bits &= bits - 1;
         }
-    }
-}
-
-/// The relative padding of a light's extent in [`Spheres::scan_lobe`]'s
-/// cone test (against rounding).
-const LOBE_CONE_PAD: f32 = 1.001;
-
-/// The cone around a glossy receiver's mirror direction outside which its
-/// range lobe `rl` ([`crate::brdf::range_lobe`]) scales no light's range:
-/// [`range_scale_at`] is exactly 1 (its lower clamp) for every direction
-/// at an angle beyond `θ₁` from the mirror direction, where
-/// `k_d + c_s·α²/t² = 1`, i.e. `t₁ = √(c_s·α²/(1 − k_d))` and
-/// `cos θ₁ = 2(1 − t₁)/(1 − α²) − 1` (`t = (1 + cos θ)/2·(α² − 1) + 1`),
-/// lowered until `range_scale_at(rl, cos θ₁)` reads 1 in f32 (the function
-/// is monotone, and so is its rounded value), then widened by 10⁻³ in its
-/// cosine for the rounding of [`crate::importance::cone_cos_of`] and of the
-/// cone test. A light's bound sphere that misses it gets scale 1.
-#[derive(Clone, Copy, Debug)]
-struct LobeCone {
-    /// The mirror direction (unit).
-    axis: Vec3,
-    /// `cos² θ` of the widened cone.
-    cos2: f32,
-    /// `1 / sin θ` of the widened cone.
-    inv_sin: f32,
-}
-
-impl LobeCone {
-    /// The cone of a receiver with mirror direction `r` and range lobe
-    /// `rl`, or `None` where it would be no narrower than a half-space
-    /// (`k_d` near 1, a wide lobe) or the lobe is not finite.
-    fn of(r: Vec3, rl: Vec4) -> Option<LobeCone> {
-        let (kd, cs, a2) = (rl.x, rl.y, rl.z);
-        if !(kd < 1.0 && cs >= 0.0 && a2 > 0.0 && a2 < 1.0 && r.is_finite()) {
-            return None;
-        }
-        let t1 = libm::sqrtf(cs * a2 / (1.0 - kd));
-        let mut c = 2.0 * (1.0 - t1) / (1.0 - a2) - 1.0;
-        let mut tries = 0;
-        while !(range_scale_at(rl, c) <= 1.0) {
-            c -= 1e-4;
-            tries += 1;
-            if tries > 16 {
-                return None;
-            }
-        }
-        let c = (c.min(1.0) - 1e-3).min(0.9999);
-        if !(c > 0.0) {
-            return None;
-        }
-        Some(LobeCone { axis: r, cos2: c * c, inv_sin: 1.0 / libm::sqrtf(1.0 - c * c) })
     }
 }
 
@@ -516,7 +528,7 @@ impl BshGrid {
     /// [`Self::build_reaching`] allowed at least `entries` entries (a
     /// frame fits within the larger of them and its
     /// [`GridFrame::budget`]): the CPU's sharp-lobe grid
-    /// ([`SHARP_GRID_ENTRIES`]). The GPU's grids keep the budget.
+    /// ([`SHARP_GRID_ENTRIES`]; the GPU's third grid takes the same).
     pub fn build_reaching_within(
         bsh: &Bsh,
         lo: Vec3,
@@ -571,7 +583,7 @@ impl BshGrid {
                 let d = b - a + 1;
                 total += d.x as u64 * d.y as u64 * d.z as u64;
             }
-            if total > frame.budget(lights_in).max(entries) {
+            if total > frame.budget(lights_in, entries) {
                 continue;
             }
             let covers: Vec<(UVec3, UVec3)> =
@@ -674,7 +686,7 @@ impl BshGrid {
         // misses `x` before its lobe's scale: the scan runs that test on
         // the whole cell, and only its hits take the full one.
         let far = rl.w * 1.0001;
-        let cone = LobeCone::of(r, rl);
+        let cone = (r, if r.is_finite() { lobe_cone(rl) } else { Vec2::ZERO });
         let mut reaches = |spheres: &Spheres, lights: &[u32], extents: &[f32], k: usize| {
             let (center, radius) = spheres.get(k);
             let leaf = BshNode {
@@ -691,16 +703,16 @@ impl BshGrid {
         };
         let (cell, tail) = (&self.spheres, &self.tail_spheres);
         let mut on_cell = |k| reaches(cell, &self.lights, &self.extents, k);
-        match cone {
-            Some(cone) => cell.scan_lobe(a..b, &self.extents, x, far, cone, &mut on_cell),
-            None => cell.scan(a..b, x, far, &mut on_cell),
+        if cone.1.y > 0.0 {
+            cell.scan_lobe(a..b, &self.extents, x, rl.w, cone, &mut on_cell);
+        } else {
+            cell.scan(a..b, x, far, &mut on_cell);
         }
         let mut on_tail = |k| reaches(tail, &self.tail_lights, &self.tail_extents, k);
-        match cone {
-            Some(cone) => {
-                tail.scan_lobe(0..tail.len(), &self.tail_extents, x, far, cone, &mut on_tail)
-            }
-            None => tail.scan(0..tail.len(), x, far, &mut on_tail),
+        if cone.1.y > 0.0 {
+            tail.scan_lobe(0..tail.len(), &self.tail_extents, x, rl.w, cone, &mut on_tail);
+        } else {
+            tail.scan(0..tail.len(), x, far, &mut on_tail);
         }
         true
     }

@@ -23,30 +23,33 @@ fn grid_word(i: u32) -> u32 {
 {% endif %}
 
 /// Where a receiver's candidates come from: its cell's entries `i..end`
-/// of the pass's grid, then the walk from node `next` (the range tail
-/// after a cell; the root without one).
+/// of the pass's grid, cut to its lobe's cone `cone` (slc-core's
+/// `lobe_cone`), then the walk from node `next` (the range tail after a
+/// cell; the root without one).
 struct BshCursor {
     i: u32,
     end: u32,
     next: u32,
+    cone: vec2f,
 }
 
 /// The candidates of a receiver at `x` (mirror direction `r`, range lobe
 /// `rl`): {% if grid %}its cell's leaves and then the range tail (whose
 /// first node is the root's `next`) where the pass has a grid whose reach
-/// holds `rl.w` (the Lambertian one at word 0 of `grid`, then the one
-/// whose words start where word 14 says, 0 for none) and `x` lies in its
-/// box, else{% endif %} the walk of the whole tree. [`bsh_cursor_next`] gives
-/// them in the walk's order.
+/// holds `rl.w` (the Lambertian one at word 0 of `grid`, then the glossy
+/// ones in order, each grid's word 14 where the next one's words start, 0
+/// after the last) and `x` lies in its box, else{% endif %} the walk of the
+/// whole tree. [`bsh_cursor_next`] gives them in the walk's order.
 fn bsh_cursor(x: vec3f, r: vec3f, rl: vec4f) -> BshCursor {
     var c: BshCursor;
     c.i = 0u;
     c.end = 0u;
     c.next = bsh_first(BSH);
+    c.cone = vec2f(0.0);
 {% if grid %}
     var h = 0u;
-    if rl.w > grid_reach(0u) {
-        h = grid_word(14u);
+    for (var g = 0u; g < 2u && rl.w > grid_reach(h); g++) {
+        h = grid_word(h + 14u);
     }
     let f = grid_frame(h);
     if c.next != BSH_NONE && f.nx > 0u && rl.w <= grid_reach(h) {
@@ -55,6 +58,7 @@ fn bsh_cursor(x: vec3f, r: vec3f, rl: vec4f) -> BshCursor {
             c.i = grid[h + GRID_HEADER + cell];
             c.end = grid[h + GRID_HEADER + cell + 1u];
             c.next = bsh_nodes[0].next;
+            c.cone = lobe_cone(rl);
         }
     }
 {% endif %}
@@ -62,13 +66,16 @@ fn bsh_cursor(x: vec3f, r: vec3f, rl: vec4f) -> BshCursor {
 }
 
 /// The next leaf of cursor `c` whose test ([`bsh_reaches`]) the receiver
-/// passes, or `BSH_NONE`.
+/// passes, or `BSH_NONE`{% if grid %}: a glossy receiver's cell entries
+/// first through the grid's cut (slc-core's `bsh_lobe_admits`, which
+/// rejects only what `bsh_reaches` rejects){% endif %}.
 fn bsh_cursor_next(c: ptr<function, BshCursor>, x: vec3f, r: vec3f, rl: vec4f) -> u32 {
 {% if grid %}
     while (*c).i < (*c).end {
         let b = grid_entries[(*c).i];
         (*c).i += 1u;
-        if bsh_reaches(bsh_nodes[b], x, r, rl) {
+        let n = bsh_nodes[b];
+        if (rl.w <= 1.0 || bsh_lobe_admits(n.center, n.radius, n.extent, x, rl.w, r, (*c).cone)) && bsh_reaches(n, x, r, rl) {
             return b;
         }
     }

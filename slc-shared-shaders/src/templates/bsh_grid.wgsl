@@ -14,11 +14,12 @@
 //   2 (per leaf) each cell's entries counted;
 //   3 (one workgroup) the cells' starts, an exclusive scan;
 //   4 (per leaf) each leaf's rank scattered into its cells;
-//   5 (per cell) each cell sorted by rank, the ranks turned into node
-//     indices, its count cleared.
-// The path tracer builds two grids in the same buffers, one for Lambertian
-// receivers and one for glossy lobes up to a reach: each dispatch's
-// `params` say where its grid's words, counts and entries start.
+//   5 (a workgroup per cell) each cell sorted by rank, the ranks turned
+//     into node indices, its count cleared.
+// The path tracer builds up to three grids in the same buffers, one for
+// Lambertian receivers and one for glossy lobes up to each of two reaches:
+// each dispatch's `params` say where its grid's words, counts and entries
+// start, and the entries it may take at least.
 
 {{ bindings }}
 
@@ -44,8 +45,67 @@ fn grid_leaf(i: u32) -> u32 {
 /// Each invocation's running sum in stage 3.
 var<workgroup> wg_sums: array<u32, {{ wg }}>;
 
+/// Stage 5's cell: its ranks, then its first entry and end.
+var<workgroup> wg_cell: array<u32, GRID_SORT_MAX>;
+var<workgroup> wg_span: vec2u;
+
+/// Stage 5 for cell `cell` of this dispatch's grid, by one workgroup
+/// (`li` its invocation): the ranks stage 4 appended in any order are put
+/// in order, each at the count of the cell's ranks below it (a leaf is
+/// listed once a cell), as the leaf's node index; the cell's count is
+/// cleared. A cell of more than `GRID_SORT_MAX` entries is sorted by
+/// insertion by one invocation.
+fn sort_cell(cell: u32, li: u32) {
+    let starts = params.header + GRID_HEADER;
+    if li == 0u {
+        let f = grid_frame(params.header);
+        var span = vec2u(0u);
+        if cell < f.nx * f.ny * f.nz {
+            span = vec2u(atomicLoad(&grid[starts + cell]), atomicLoad(&grid[starts + cell + 1u]));
+            atomicStore(&grid_fill[params.fill + cell], 0u);
+        }
+        wg_span = span;
+    }
+    let span = workgroupUniformLoad(&wg_span);
+    let a = span.x;
+    let n = span.y - span.x;
+    if n > GRID_SORT_MAX {
+        if li == 0u {
+            for (var s = a + 1u; s < a + n; s++) {
+                let v = grid_entries[s];
+                var c = s;
+                while c > a && grid_entries[c - 1u] > v {
+                    grid_entries[c] = grid_entries[c - 1u];
+                    c -= 1u;
+                }
+                grid_entries[c] = v;
+            }
+            for (var s = a; s < a + n; s++) {
+                grid_entries[s] = grid_leaves[grid_entries[s]];
+            }
+        }
+        return;
+    }
+    for (var j = li; j < n; j += {{ wg }}u) {
+        wg_cell[j] = grid_entries[a + j];
+    }
+    workgroupBarrier();
+    for (var j = li; j < n; j += {{ wg }}u) {
+        let v = wg_cell[j];
+        var below = 0u;
+        for (var m = 0u; m < n; m++) {
+            below += select(0u, 1u, wg_cell[m] < v);
+        }
+        grid_entries[a + below] = grid_leaves[v];
+    }
+}
+
 @compute @workgroup_size({{ wg }})
-fn main(@builtin(global_invocation_id) gid: vec3u) {
+fn main(@builtin(global_invocation_id) gid: vec3u, @builtin(workgroup_id) wid: vec3u, @builtin(num_workgroups) groups: vec3u, @builtin(local_invocation_index) li: u32) {
+    if params.stage == 5u {
+        sort_cell(wid.y * groups.x + wid.x, li);
+        return;
+    }
     let i = gid.x;
     // This grid's words in `grid`, its counts in `grid_fill`.
     let h = params.header;
@@ -110,7 +170,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
             for (var l = 0u; l < params.levels; l++) {
                 let f = grid_levels[l];
                 let cells = f.nx * f.ny * f.nz;
-                let budget = min(bsh_grid_budget(leaves, cells), params.capacity);
+                let budget = min(bsh_grid_budget(leaves, cells, params.least), params.capacity);
                 let at = h + 16u + 2u * l;
                 if chosen == params.levels && atomicLoad(&grid[at + 1u]) == 0u && atomicLoad(&grid[at]) <= budget {
                     chosen = l;
@@ -162,28 +222,6 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
                 }
             }
         }
-        default: {
-            let f = grid_frame(h);
-            if i >= f.nx * f.ny * f.nz {
-                return;
-            }
-            atomicStore(&grid_fill[params.fill + i], 0u);
-            // Appended in any order: insertion sort by rank, then each
-            // rank's node.
-            let a = atomicLoad(&grid[starts + i]);
-            let b = atomicLoad(&grid[starts + i + 1u]);
-            for (var s = a + 1u; s < b; s++) {
-                let v = grid_entries[s];
-                var c = s;
-                while c > a && grid_entries[c - 1u] > v {
-                    grid_entries[c] = grid_entries[c - 1u];
-                    c -= 1u;
-                }
-                grid_entries[c] = v;
-            }
-            for (var s = a; s < b; s++) {
-                grid_entries[s] = grid_leaves[grid_entries[s]];
-            }
-        }
+        default: {}
     }
 }

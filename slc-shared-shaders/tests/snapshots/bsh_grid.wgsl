@@ -8,7 +8,7 @@ struct GridParams {
     header: u32,
     fill: u32,
     entries: u32,
-    pad0_: u32,
+    least: u32,
     pad1_: u32,
     pad2_: u32,
 }
@@ -39,6 +39,7 @@ const LIGHT_VPL: u32 = 4u;
 const NO_LIGHT: u32 = 4294967295u;
 const GRID_HEADER: u32 = 32u;
 const GRID_LEVELS_MAX: u32 = 8u;
+const GRID_SORT_MAX: u32 = 1536u;
 const COUNT_TILES: u32 = 0u;
 const COUNT_GROUP_TESTS: u32 = 1u;
 const COUNT_CLUSTER_TESTS: u32 = 2u;
@@ -96,6 +97,7 @@ const TEMPORAL_CHANGE_LOW: f32 = 4f;
 const TEMPORAL_CHANGE_HIGH: f32 = 8f;
 const TEMPORAL_MIN_WEIGHT: f32 = 0.01f;
 const GRID_ENTRIES_PER_LIGHT: u32 = 8u;
+const LOBE_CONE_PAD: f32 = 1.001f;
 
 @group(0) @binding(0) 
 var<uniform> params: GridParams;
@@ -112,6 +114,8 @@ var<storage, read_write> grid_fill: array<atomic<u32>>;
 @group(0) @binding(6) 
 var<storage, read_write> grid_entries: array<u32>;
 var<workgroup> wg_sums: array<u32, 64>;
+var<workgroup> wg_cell: array<u32, 1536>;
+var<workgroup> wg_span: vec2<u32>;
 
 fn to_u32_(x_1: f32) -> u32 {
     return u32(x_1);
@@ -138,13 +142,13 @@ fn bsh_reach_bound(node_1: BshNode, w: f32) -> f32 {
     return (node_1.extent + ((w * 1.001f) * _e5));
 }
 
-fn bsh_grid_budget(leaves: u32, cells: u32) -> u32 {
+fn bsh_grid_budget(leaves: u32, cells: u32, least: u32) -> u32 {
     if (leaves > 536870911u) {
         return 4294967295u;
     }
     let e = (leaves * GRID_ENTRIES_PER_LIGHT);
-    let _e7 = add_wrap_u32_(e, cells);
-    return select(_e7, 4294967295u, (_e7 < e));
+    let _e8 = add_wrap_u32_(e, cells);
+    return max(select(_e8, 4294967295u, (_e8 < e)), least);
 }
 
 fn bsh_grid_reach(node_2: BshNode, w_1: f32) -> f32 {
@@ -173,17 +177,17 @@ fn bsh_grid_radius(node_3: BshNode, w_2: f32) -> f32 {
     return _e3;
 }
 
-fn bsh_grid_first(f_1: GridFrame, c_3: vec3<f32>, r: f32) -> vec3<u32> {
-    let _e10 = bsh_grid_axis((c_3.x - r), f_1.lo.x, f_1.inv.x, f_1.nx);
-    let _e18 = bsh_grid_axis((c_3.y - r), f_1.lo.y, f_1.inv.y, f_1.ny);
-    let _e26 = bsh_grid_axis((c_3.z - r), f_1.lo.z, f_1.inv.z, f_1.nz);
+fn bsh_grid_first(f_1: GridFrame, c_2: vec3<f32>, r: f32) -> vec3<u32> {
+    let _e10 = bsh_grid_axis((c_2.x - r), f_1.lo.x, f_1.inv.x, f_1.nx);
+    let _e18 = bsh_grid_axis((c_2.y - r), f_1.lo.y, f_1.inv.y, f_1.ny);
+    let _e26 = bsh_grid_axis((c_2.z - r), f_1.lo.z, f_1.inv.z, f_1.nz);
     return vec3<u32>(_e10, _e18, _e26);
 }
 
-fn bsh_grid_last(f_2: GridFrame, c_4: vec3<f32>, r_1: f32) -> vec3<u32> {
-    let _e10 = bsh_grid_axis((c_4.x + r_1), f_2.lo.x, f_2.inv.x, f_2.nx);
-    let _e18 = bsh_grid_axis((c_4.y + r_1), f_2.lo.y, f_2.inv.y, f_2.ny);
-    let _e26 = bsh_grid_axis((c_4.z + r_1), f_2.lo.z, f_2.inv.z, f_2.nz);
+fn bsh_grid_last(f_2: GridFrame, c_3: vec3<f32>, r_1: f32) -> vec3<u32> {
+    let _e10 = bsh_grid_axis((c_3.x + r_1), f_2.lo.x, f_2.inv.x, f_2.nx);
+    let _e18 = bsh_grid_axis((c_3.y + r_1), f_2.lo.y, f_2.inv.y, f_2.ny);
+    let _e26 = bsh_grid_axis((c_3.z + r_1), f_2.lo.z, f_2.inv.z, f_2.nz);
     return vec3<u32>(_e10, _e18, _e26);
 }
 
@@ -226,8 +230,164 @@ fn grid_leaf(i_1: u32) -> u32 {
     return node_4;
 }
 
+fn sort_cell(cell: u32, li_1: u32) {
+    var span: vec2<u32> = vec2(0u);
+    var s: u32;
+    var c_4: u32;
+    var local_3: bool;
+    var s_1: u32;
+    var j_1: u32;
+    var j_2: u32;
+    var below: u32;
+    var m: u32;
+
+    let _e4 = params.header;
+    let starts = (_e4 + GRID_HEADER);
+    if (li_1 == 0u) {
+        let _e11 = params.header;
+        let _e12 = grid_frame(_e11);
+        if (cell < ((_e12.nx * _e12.ny) * _e12.nz)) {
+            let _e25 = atomicLoad((&grid[(starts + cell)]));
+            let _e31 = atomicLoad((&grid[((starts + cell) + 1u)]));
+            span = vec2<u32>(_e25, _e31);
+            let _e36 = params.fill;
+            atomicStore((&grid_fill[(_e36 + cell)]), 0u);
+        }
+        let _e41 = span;
+        wg_span = _e41;
+    }
+    let _e43 = workgroupUniformLoad((&wg_span));
+    let a_1 = _e43.x;
+    let n_1 = (_e43.y - _e43.x);
+    if (n_1 > GRID_SORT_MAX) {
+        if (li_1 == 0u) {
+            s = (a_1 + 1u);
+            loop {
+                let _e55 = s;
+                if (_e55 < (a_1 + n_1)) {
+                } else {
+                    break;
+                }
+                {
+                    let _e59 = s;
+                    let v_1 = grid_entries[_e59];
+                    let _e62 = s;
+                    c_4 = _e62;
+                    loop {
+                        let _e64 = c_4;
+                        if (_e64 > a_1) {
+                            let _e69 = c_4;
+                            let _e73 = grid_entries[(_e69 - 1u)];
+                            local_3 = (_e73 > v_1);
+                        } else {
+                            local_3 = false;
+                        }
+                        let _e76 = local_3;
+                        if _e76 {
+                        } else {
+                            break;
+                        }
+                        {
+                            let _e78 = c_4;
+                            let _e81 = c_4;
+                            let _e85 = grid_entries[(_e81 - 1u)];
+                            grid_entries[_e78] = _e85;
+                            let _e86 = c_4;
+                            c_4 = (_e86 - 1u);
+                        }
+                    }
+                    let _e90 = c_4;
+                    grid_entries[_e90] = v_1;
+                }
+                continuing {
+                    let _e93 = s;
+                    s = (_e93 + 1u);
+                }
+            }
+            s_1 = a_1;
+            loop {
+                let _e96 = s_1;
+                if (_e96 < (a_1 + n_1)) {
+                } else {
+                    break;
+                }
+                {
+                    let _e100 = s_1;
+                    let _e104 = s_1;
+                    let _e106 = grid_entries[_e104];
+                    let _e108 = grid_leaves[_e106];
+                    grid_entries[_e100] = _e108;
+                }
+                continuing {
+                    let _e110 = s_1;
+                    s_1 = (_e110 + 1u);
+                }
+            }
+        }
+        return;
+    }
+    j_1 = li_1;
+    loop {
+        let _e113 = j_1;
+        if (_e113 < n_1) {
+        } else {
+            break;
+        }
+        {
+            let _e116 = j_1;
+            let _e119 = j_1;
+            let _e122 = grid_entries[(a_1 + _e119)];
+            wg_cell[_e116] = _e122;
+        }
+        continuing {
+            let _e123 = j_1;
+            j_1 = (_e123 + 64u);
+        }
+    }
+    workgroupBarrier();
+    j_2 = li_1;
+    loop {
+        let _e127 = j_2;
+        if (_e127 < n_1) {
+        } else {
+            break;
+        }
+        {
+            let _e130 = j_2;
+            let v_2 = wg_cell[_e130];
+            below = 0u;
+            m = 0u;
+            loop {
+                let _e137 = m;
+                if (_e137 < n_1) {
+                } else {
+                    break;
+                }
+                {
+                    let _e139 = below;
+                    let _e143 = m;
+                    let _e145 = wg_cell[_e143];
+                    below = (_e139 + select(0u, 1u, (_e145 < v_2)));
+                }
+                continuing {
+                    let _e150 = m;
+                    m = (_e150 + 1u);
+                }
+            }
+            let _e153 = below;
+            let _e158 = grid_leaves[v_2];
+            grid_entries[(a_1 + _e153)] = _e158;
+        }
+        continuing {
+            let _e159 = j_2;
+            j_2 = (_e159 + 64u);
+        }
+    }
+    return;
+}
+
 @compute @workgroup_size(64, 1, 1) 
-fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
+fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) groups: vec3<u32>, @builtin(local_invocation_index) li: u32) {
     var sum: u32 = 0u;
     var c: u32;
     var start: u32;
@@ -243,135 +403,136 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     var z: u32;
     var y: u32;
     var x: u32;
-    var s: u32;
-    var c_2: u32;
-    var local_3: bool;
-    var s_1: u32;
 
+    let _e6 = params.stage;
+    if (_e6 == 5u) {
+        sort_cell(((wid.y * groups.x) + wid.x), li);
+        return;
+    }
     let i_2 = gid.x;
     let h_1 = params.header;
-    let starts = (h_1 + GRID_HEADER);
-    let _e9 = params.stage;
-    if (_e9 == 3u) {
-        let _e12 = grid_frame(h_1);
-        let cells_1 = ((_e12.nx * _e12.ny) * _e12.nz);
+    let starts_1 = (h_1 + GRID_HEADER);
+    let _e22 = params.stage;
+    if (_e22 == 3u) {
+        let _e25 = grid_frame(h_1);
+        let cells_1 = ((_e25.nx * _e25.ny) * _e25.nz);
         let run = (((cells_1 + 64u) - 1u) / 64u);
-        let a_1 = min((i_2 * run), cells_1);
-        let b_1 = min((a_1 + run), cells_1);
-        c = a_1;
+        let a_2 = min((i_2 * run), cells_1);
+        let b_1 = min((a_2 + run), cells_1);
+        c = a_2;
         loop {
-            let _e31 = c;
-            if (_e31 < b_1) {
+            let _e44 = c;
+            if (_e44 < b_1) {
             } else {
                 break;
             }
             {
-                let _e33 = sum;
-                let _e37 = params.fill;
-                let _e38 = c;
-                let _e41 = atomicLoad((&grid_fill[(_e37 + _e38)]));
-                sum = (_e33 + _e41);
+                let _e46 = sum;
+                let _e50 = params.fill;
+                let _e51 = c;
+                let _e54 = atomicLoad((&grid_fill[(_e50 + _e51)]));
+                sum = (_e46 + _e54);
             }
             continuing {
-                let _e44 = c;
-                c = (_e44 + 1u);
+                let _e57 = c;
+                c = (_e57 + 1u);
             }
         }
-        let _e48 = sum;
-        wg_sums[i_2] = _e48;
+        let _e61 = sum;
+        wg_sums[i_2] = _e61;
         workgroupBarrier();
-        let _e51 = params.entries;
-        start = _e51;
+        let _e64 = params.entries;
+        start = _e64;
         loop {
-            let _e55 = j;
-            if (_e55 < i_2) {
+            let _e68 = j;
+            if (_e68 < i_2) {
             } else {
                 break;
             }
             {
-                let _e57 = start;
-                let _e59 = j;
-                let _e61 = wg_sums[_e59];
-                start = (_e57 + _e61);
+                let _e70 = start;
+                let _e72 = j;
+                let _e74 = wg_sums[_e72];
+                start = (_e70 + _e74);
             }
             continuing {
-                let _e64 = j;
-                j = (_e64 + 1u);
+                let _e77 = j;
+                j = (_e77 + 1u);
             }
         }
-        c_1 = a_1;
+        c_1 = a_2;
         loop {
-            let _e67 = c_1;
-            if (_e67 < b_1) {
+            let _e80 = c_1;
+            if (_e80 < b_1) {
             } else {
                 break;
             }
             {
-                let _e72 = params.fill;
-                let _e73 = c_1;
-                let n_1 = atomicLoad((&grid_fill[(_e72 + _e73)]));
-                let _e78 = c_1;
-                let _e81 = start;
-                atomicStore((&grid[(starts + _e78)]), _e81);
                 let _e85 = params.fill;
                 let _e86 = c_1;
-                let _e89 = start;
-                atomicStore((&grid_fill[(_e85 + _e86)]), _e89);
-                let _e90 = start;
-                start = (_e90 + n_1);
+                let n_2 = atomicLoad((&grid_fill[(_e85 + _e86)]));
+                let _e91 = c_1;
+                let _e94 = start;
+                atomicStore((&grid[(starts_1 + _e91)]), _e94);
+                let _e98 = params.fill;
+                let _e99 = c_1;
+                let _e102 = start;
+                atomicStore((&grid_fill[(_e98 + _e99)]), _e102);
+                let _e103 = start;
+                start = (_e103 + n_2);
             }
             continuing {
-                let _e93 = c_1;
-                c_1 = (_e93 + 1u);
+                let _e106 = c_1;
+                c_1 = (_e106 + 1u);
             }
         }
         if ((i_2 + 1u) == 64u) {
-            let _e102 = start;
-            atomicStore((&grid[(starts + cells_1)]), _e102);
+            let _e115 = start;
+            atomicStore((&grid[(starts_1 + cells_1)]), _e115);
         }
         return;
     }
-    let _e105 = params.stage;
-    switch _e105 {
+    let _e118 = params.stage;
+    switch _e118 {
         case 0u: {
-            let _e108 = params.count;
-            if (i_2 >= _e108) {
+            let _e121 = params.count;
+            if (i_2 >= _e121) {
                 return;
             }
-            let _e110 = grid_leaf(i_2);
-            if (_e110 == BSH_NONE) {
+            let _e123 = grid_leaf(i_2);
+            if (_e123 == BSH_NONE) {
                 return;
             }
-            let _e118 = atomicAdd((&grid[(h_1 + 13u)]), 1u);
-            let leaf = bsh_nodes[_e110];
-            let _e124 = params.reach;
-            let _e125 = bsh_grid_radius(leaf, _e124);
+            let _e131 = atomicAdd((&grid[(h_1 + 13u)]), 1u);
+            let leaf = bsh_nodes[_e123];
+            let _e137 = params.reach;
+            let _e138 = bsh_grid_radius(leaf, _e137);
             loop {
-                let _e128 = l;
-                let _e131 = params.levels;
-                if (_e128 < _e131) {
+                let _e141 = l;
+                let _e144 = params.levels;
+                if (_e141 < _e144) {
                 } else {
                     break;
                 }
                 {
-                    let _e134 = l;
-                    let _e136 = grid_levels[_e134];
-                    let _e138 = bsh_grid_last(_e136, leaf.center, _e125);
-                    let _e140 = l;
-                    let _e142 = grid_levels[_e140];
-                    let _e144 = bsh_grid_first(_e142, leaf.center, _e125);
-                    let d = ((_e138 - _e144) + vec3(1u));
-                    let n_2 = ((d.x * d.y) * d.z);
-                    let _e157 = l;
-                    let at = ((h_1 + 16u) + (2u * _e157));
-                    let _e162 = atomicAdd((&grid[at]), n_2);
-                    if ((_e162 + n_2) < _e162) {
-                        let _e170 = atomicAdd((&grid[(at + 1u)]), 1u);
+                    let _e147 = l;
+                    let _e149 = grid_levels[_e147];
+                    let _e151 = bsh_grid_last(_e149, leaf.center, _e138);
+                    let _e153 = l;
+                    let _e155 = grid_levels[_e153];
+                    let _e157 = bsh_grid_first(_e155, leaf.center, _e138);
+                    let d = ((_e151 - _e157) + vec3(1u));
+                    let n_3 = ((d.x * d.y) * d.z);
+                    let _e170 = l;
+                    let at = ((h_1 + 16u) + (2u * _e170));
+                    let _e175 = atomicAdd((&grid[at]), n_3);
+                    if ((_e175 + n_3) < _e175) {
+                        let _e183 = atomicAdd((&grid[(at + 1u)]), 1u);
                     }
                 }
                 continuing {
-                    let _e172 = l;
-                    l = (_e172 + 1u);
+                    let _e185 = l;
+                    l = (_e185 + 1u);
                 }
             }
             return;
@@ -381,234 +542,165 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
                 return;
             }
             let leaves_1 = atomicLoad((&grid[(h_1 + 13u)]));
-            let _e183 = params.levels;
-            chosen = _e183;
+            let _e196 = params.levels;
+            chosen = _e196;
             loop {
-                let _e187 = l_1;
-                let _e190 = params.levels;
-                if (_e187 < _e190) {
+                let _e200 = l_1;
+                let _e203 = params.levels;
+                if (_e200 < _e203) {
                 } else {
                     break;
                 }
                 {
-                    let _e193 = l_1;
-                    let f_4 = grid_levels[_e193];
+                    let _e206 = l_1;
+                    let f_4 = grid_levels[_e206];
                     let cells_2 = ((f_4.nx * f_4.ny) * f_4.nz);
-                    let _e201 = bsh_grid_budget(leaves_1, cells_2);
-                    let _e204 = params.capacity;
-                    let budget = min(_e201, _e204);
-                    let _e209 = l_1;
-                    let at_1 = ((h_1 + 16u) + (2u * _e209));
-                    let _e212 = chosen;
-                    let _e215 = params.levels;
-                    if (_e212 == _e215) {
-                        let _e223 = atomicLoad((&grid[(at_1 + 1u)]));
-                        local = (_e223 == 0u);
+                    let _e216 = params.least;
+                    let _e217 = bsh_grid_budget(leaves_1, cells_2, _e216);
+                    let _e220 = params.capacity;
+                    let budget = min(_e217, _e220);
+                    let _e225 = l_1;
+                    let at_1 = ((h_1 + 16u) + (2u * _e225));
+                    let _e228 = chosen;
+                    let _e231 = params.levels;
+                    if (_e228 == _e231) {
+                        let _e239 = atomicLoad((&grid[(at_1 + 1u)]));
+                        local = (_e239 == 0u);
                     } else {
                         local = false;
                     }
-                    let _e227 = local;
-                    if _e227 {
-                        let _e232 = atomicLoad((&grid[at_1]));
-                        local_1 = (_e232 <= budget);
+                    let _e243 = local;
+                    if _e243 {
+                        let _e248 = atomicLoad((&grid[at_1]));
+                        local_1 = (_e248 <= budget);
                     } else {
                         local_1 = false;
                     }
-                    let _e235 = local_1;
-                    if _e235 {
-                        let _e236 = l_1;
-                        chosen = _e236;
+                    let _e251 = local_1;
+                    if _e251 {
+                        let _e252 = l_1;
+                        chosen = _e252;
                     }
                     atomicStore((&grid[at_1]), 0u);
                     atomicStore((&grid[(at_1 + 1u)]), 0u);
                 }
                 continuing {
-                    let _e246 = l_1;
-                    l_1 = (_e246 + 1u);
+                    let _e262 = l_1;
+                    l_1 = (_e262 + 1u);
                 }
             }
             atomicStore((&grid[(h_1 + 13u)]), 0u);
-            let _e254 = chosen;
-            let _e257 = params.levels;
-            if (_e254 < _e257) {
-                let _e260 = chosen;
-                let _e262 = grid_levels[_e260];
-                f = _e262;
+            let _e270 = chosen;
+            let _e273 = params.levels;
+            if (_e270 < _e273) {
+                let _e276 = chosen;
+                let _e278 = grid_levels[_e276];
+                f = _e278;
             }
-            let _e267 = f.lo.x;
-            atomicStore((&grid[h_1]), bitcast<u32>(_e267));
-            let _e275 = f.lo.y;
-            atomicStore((&grid[(h_1 + 1u)]), bitcast<u32>(_e275));
-            let _e283 = f.lo.z;
-            atomicStore((&grid[(h_1 + 2u)]), bitcast<u32>(_e283));
-            let _e290 = f.nx;
-            atomicStore((&grid[(h_1 + 3u)]), _e290);
-            let _e297 = f.hi.x;
-            atomicStore((&grid[(h_1 + 4u)]), bitcast<u32>(_e297));
-            let _e305 = f.hi.y;
-            atomicStore((&grid[(h_1 + 5u)]), bitcast<u32>(_e305));
-            let _e313 = f.hi.z;
-            atomicStore((&grid[(h_1 + 6u)]), bitcast<u32>(_e313));
-            let _e320 = f.ny;
-            atomicStore((&grid[(h_1 + 7u)]), _e320);
-            let _e327 = f.inv.x;
-            atomicStore((&grid[(h_1 + 8u)]), bitcast<u32>(_e327));
-            let _e335 = f.inv.y;
-            atomicStore((&grid[(h_1 + 9u)]), bitcast<u32>(_e335));
-            let _e343 = f.inv.z;
-            atomicStore((&grid[(h_1 + 10u)]), bitcast<u32>(_e343));
-            let _e350 = f.nz;
-            atomicStore((&grid[(h_1 + 11u)]), _e350);
-            let _e357 = params.reach;
-            atomicStore((&grid[(h_1 + 12u)]), bitcast<u32>(_e357));
+            let _e283 = f.lo.x;
+            atomicStore((&grid[h_1]), bitcast<u32>(_e283));
+            let _e291 = f.lo.y;
+            atomicStore((&grid[(h_1 + 1u)]), bitcast<u32>(_e291));
+            let _e299 = f.lo.z;
+            atomicStore((&grid[(h_1 + 2u)]), bitcast<u32>(_e299));
+            let _e306 = f.nx;
+            atomicStore((&grid[(h_1 + 3u)]), _e306);
+            let _e313 = f.hi.x;
+            atomicStore((&grid[(h_1 + 4u)]), bitcast<u32>(_e313));
+            let _e321 = f.hi.y;
+            atomicStore((&grid[(h_1 + 5u)]), bitcast<u32>(_e321));
+            let _e329 = f.hi.z;
+            atomicStore((&grid[(h_1 + 6u)]), bitcast<u32>(_e329));
+            let _e336 = f.ny;
+            atomicStore((&grid[(h_1 + 7u)]), _e336);
+            let _e343 = f.inv.x;
+            atomicStore((&grid[(h_1 + 8u)]), bitcast<u32>(_e343));
+            let _e351 = f.inv.y;
+            atomicStore((&grid[(h_1 + 9u)]), bitcast<u32>(_e351));
+            let _e359 = f.inv.z;
+            atomicStore((&grid[(h_1 + 10u)]), bitcast<u32>(_e359));
+            let _e366 = f.nz;
+            atomicStore((&grid[(h_1 + 11u)]), _e366);
+            let _e373 = params.reach;
+            atomicStore((&grid[(h_1 + 12u)]), bitcast<u32>(_e373));
             return;
         }
         case 2u, 4u: {
-            let _e361 = params.count;
-            if (i_2 >= _e361) {
+            let _e377 = params.count;
+            if (i_2 >= _e377) {
                 return;
             }
-            let _e363 = grid_frame(h_1);
-            let _e364 = grid_leaf(i_2);
-            if !((_e363.nx == 0u)) {
-                local_2 = (_e364 == BSH_NONE);
+            let _e379 = grid_frame(h_1);
+            let _e380 = grid_leaf(i_2);
+            if !((_e379.nx == 0u)) {
+                local_2 = (_e380 == BSH_NONE);
             } else {
                 local_2 = true;
             }
-            let _e374 = local_2;
-            if _e374 {
+            let _e390 = local_2;
+            if _e390 {
                 return;
             }
-            let leaf_1 = bsh_nodes[_e364];
-            let _e380 = params.reach;
-            let _e381 = bsh_grid_radius(leaf_1, _e380);
-            let _e383 = bsh_grid_first(_e363, leaf_1.center, _e381);
-            let _e385 = bsh_grid_last(_e363, leaf_1.center, _e381);
-            z = _e383.z;
+            let leaf_1 = bsh_nodes[_e380];
+            let _e396 = params.reach;
+            let _e397 = bsh_grid_radius(leaf_1, _e396);
+            let _e399 = bsh_grid_first(_e379, leaf_1.center, _e397);
+            let _e401 = bsh_grid_last(_e379, leaf_1.center, _e397);
+            z = _e399.z;
             loop {
-                let _e388 = z;
-                if (_e388 <= _e385.z) {
+                let _e404 = z;
+                if (_e404 <= _e401.z) {
                 } else {
                     break;
                 }
                 {
-                    y = _e383.y;
+                    y = _e399.y;
                     loop {
-                        let _e393 = y;
-                        if (_e393 <= _e385.y) {
+                        let _e409 = y;
+                        if (_e409 <= _e401.y) {
                         } else {
                             break;
                         }
                         {
-                            x = _e383.x;
+                            x = _e399.x;
                             loop {
-                                let _e398 = x;
-                                if (_e398 <= _e385.x) {
+                                let _e414 = x;
+                                if (_e414 <= _e401.x) {
                                 } else {
                                     break;
                                 }
                                 {
-                                    let _e401 = z;
-                                    let _e404 = y;
-                                    let _e408 = x;
-                                    let c_5 = ((((_e401 * _e363.ny) + _e404) * _e363.nx) + _e408);
-                                    let _e413 = params.fill;
-                                    let _e417 = atomicAdd((&grid_fill[(_e413 + c_5)]), 1u);
-                                    let _e420 = params.stage;
-                                    if (_e420 == 4u) {
-                                        grid_entries[_e417] = i_2;
+                                    let _e417 = z;
+                                    let _e420 = y;
+                                    let _e424 = x;
+                                    let c_5 = ((((_e417 * _e379.ny) + _e420) * _e379.nx) + _e424);
+                                    let _e429 = params.fill;
+                                    let _e433 = atomicAdd((&grid_fill[(_e429 + c_5)]), 1u);
+                                    let _e436 = params.stage;
+                                    if (_e436 == 4u) {
+                                        grid_entries[_e433] = i_2;
                                     }
                                 }
                                 continuing {
-                                    let _e426 = x;
-                                    x = (_e426 + 1u);
+                                    let _e442 = x;
+                                    x = (_e442 + 1u);
                                 }
                             }
                         }
                         continuing {
-                            let _e429 = y;
-                            y = (_e429 + 1u);
+                            let _e445 = y;
+                            y = (_e445 + 1u);
                         }
                     }
                 }
                 continuing {
-                    let _e432 = z;
-                    z = (_e432 + 1u);
+                    let _e448 = z;
+                    z = (_e448 + 1u);
                 }
             }
             return;
         }
         default: {
-            let _e434 = grid_frame(h_1);
-            if (i_2 >= ((_e434.nx * _e434.ny) * _e434.nz)) {
-                return;
-            }
-            let _e444 = params.fill;
-            atomicStore((&grid_fill[(_e444 + i_2)]), 0u);
-            let a_2 = atomicLoad((&grid[(starts + i_2)]));
-            let b_2 = atomicLoad((&grid[((starts + i_2) + 1u)]));
-            s = (a_2 + 1u);
-            loop {
-                let _e461 = s;
-                if (_e461 < b_2) {
-                } else {
-                    break;
-                }
-                {
-                    let _e464 = s;
-                    let v_1 = grid_entries[_e464];
-                    let _e467 = s;
-                    c_2 = _e467;
-                    loop {
-                        let _e469 = c_2;
-                        if (_e469 > a_2) {
-                            let _e474 = c_2;
-                            let _e478 = grid_entries[(_e474 - 1u)];
-                            local_3 = (_e478 > v_1);
-                        } else {
-                            local_3 = false;
-                        }
-                        let _e481 = local_3;
-                        if _e481 {
-                        } else {
-                            break;
-                        }
-                        {
-                            let _e483 = c_2;
-                            let _e486 = c_2;
-                            let _e490 = grid_entries[(_e486 - 1u)];
-                            grid_entries[_e483] = _e490;
-                            let _e491 = c_2;
-                            c_2 = (_e491 - 1u);
-                        }
-                    }
-                    let _e495 = c_2;
-                    grid_entries[_e495] = v_1;
-                }
-                continuing {
-                    let _e498 = s;
-                    s = (_e498 + 1u);
-                }
-            }
-            s_1 = a_2;
-            loop {
-                let _e501 = s_1;
-                if (_e501 < b_2) {
-                } else {
-                    break;
-                }
-                {
-                    let _e504 = s_1;
-                    let _e508 = s_1;
-                    let _e510 = grid_entries[_e508];
-                    let _e512 = grid_leaves[_e510];
-                    grid_entries[_e504] = _e512;
-                }
-                continuing {
-                    let _e514 = s_1;
-                    s_1 = (_e514 + 1u);
-                }
-            }
             return;
         }
     }

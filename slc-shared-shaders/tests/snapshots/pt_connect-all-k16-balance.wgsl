@@ -88,6 +88,7 @@ struct BshCursor {
     i: u32,
     end: u32,
     next: u32,
+    cone: vec2<f32>,
 }
 
 struct Connection {
@@ -104,6 +105,7 @@ const LIGHT_VPL: u32 = 4u;
 const NO_LIGHT: u32 = 4294967295u;
 const GRID_HEADER: u32 = 32u;
 const GRID_LEVELS_MAX: u32 = 8u;
+const GRID_SORT_MAX: u32 = 1536u;
 const COUNT_TILES: u32 = 0u;
 const COUNT_GROUP_TESTS: u32 = 1u;
 const COUNT_CLUSTER_TESTS: u32 = 2u;
@@ -1279,8 +1281,9 @@ fn bsh_cursor(x_11: vec3<f32>, r_5: vec3<f32>, rl_5: vec4<f32>) -> BshCursor {
     c_7.end = 0u;
     let _e10 = bsh_first(BSH);
     c_7.next = _e10;
-    let _e11 = c_7;
-    return _e11;
+    c_7.cone = vec2(0f);
+    let _e14 = c_7;
+    return _e14;
 }
 
 fn bsh_cursor_next(c_8: ptr<function, BshCursor>, x_12: vec3<f32>, r_6: vec3<f32>, rl_6: vec4<f32>) -> u32 {

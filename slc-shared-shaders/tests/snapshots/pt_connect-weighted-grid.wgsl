@@ -92,6 +92,7 @@ struct BshCursor {
     i: u32,
     end: u32,
     next: u32,
+    cone: vec2<f32>,
 }
 
 struct Connection {
@@ -117,6 +118,7 @@ const LIGHT_VPL: u32 = 4u;
 const NO_LIGHT: u32 = 4294967295u;
 const GRID_HEADER: u32 = 32u;
 const GRID_LEVELS_MAX: u32 = 8u;
+const GRID_SORT_MAX: u32 = 1536u;
 const COUNT_TILES: u32 = 0u;
 const COUNT_GROUP_TESTS: u32 = 1u;
 const COUNT_CLUSTER_TESTS: u32 = 2u;
@@ -178,6 +180,7 @@ const BSH: u32 = 0u;
 const BSH_TILE_DEPTH: u32 = 8u;
 const BSH_TILE_SUBTREES: u32 = 256u;
 const GRID_ENTRIES_PER_LIGHT: u32 = 8u;
+const LOBE_CONE_PAD: f32 = 1.001f;
 const BVH: u32 = 0u;
 
 @group(1) @binding(0) 
@@ -279,8 +282,8 @@ fn slc_keep(r2_: f32, d2_2: f32) -> bool {
 }
 
 fn sphere_contains_point(c: vec3<f32>, r: f32, x_2: vec3<f32>) -> bool {
-    let v_9 = (x_2 - c);
-    return (dot(v_9, v_9) <= (r * r));
+    let v_10 = (x_2 - c);
+    return (dot(v_10, v_10) <= (r * r));
 }
 
 fn inverse_square(d2_3: f32) -> f32 {
@@ -297,11 +300,11 @@ fn connection_cosine(x_3: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     var local: bool;
     var local_1: bool;
 
-    let v_10 = (x_3 - y);
-    let d2_10 = dot(v_10, v_10);
-    let _e7 = slc_keep(r2_1, d2_10);
+    let v_11 = (x_3 - y);
+    let d2_11 = dot(v_11, v_11);
+    let _e7 = slc_keep(r2_1, d2_11);
     if !(!(_e7)) {
-        local = !((d2_10 > 0f));
+        local = !((d2_11 > 0f));
     } else {
         local = true;
     }
@@ -309,10 +312,10 @@ fn connection_cosine(x_3: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     if _e16 {
         return 0f;
     }
-    let w_11 = (v_10 / vec3(sqrt(d2_10)));
-    let cos_x_1 = -(dot(n, w_11));
+    let w_12 = (v_11 / vec3(sqrt(d2_11)));
+    let cos_x_1 = -(dot(n, w_12));
     if !(!((cos_x_1 > 0f))) {
-        local_1 = !((dot(ng, w_11) < 0f));
+        local_1 = !((dot(ng, w_12) < 0f));
     } else {
         local_1 = true;
     }
@@ -347,11 +350,11 @@ fn triangle_sample(a_2: vec3<f32>, b_2: vec3<f32>, c_1: vec3<f32>, u1_: f32, u2_
 }
 
 fn area_to_solid_angle_pdf(pdf_area: f32, d2_5: f32, cos_light: f32) -> f32 {
-    let c_10 = abs(cos_light);
-    if (c_10 <= 0f) {
+    let c_12 = abs(cos_light);
+    if (c_12 <= 0f) {
         return 0f;
     }
-    return ((pdf_area * d2_5) / c_10);
+    return ((pdf_area * d2_5) / c_12);
 }
 
 fn atan_portable(x_4: f32) -> f32 {
@@ -534,8 +537,8 @@ fn ies_candela_dir(tab_3: u32, base_2: u32, wn: f32, wr: f32, ws: f32) -> f32 {
     let gamma_1 = degrees(_e9);
     let on_axis = ((abs(wr) + abs(ws)) <= 0f);
     let _e16 = atan2_portable(ws, wr);
-    let c_11 = select(degrees(_e16), 0f, on_axis);
-    let _e20 = ies_candela(tab_3, base_2, gamma_1, c_11);
+    let c_13 = select(degrees(_e16), 0f, on_axis);
+    let _e20 = ies_candela(tab_3, base_2, gamma_1, c_13);
     return _e20;
 }
 
@@ -664,9 +667,9 @@ fn smith_visibility(n_l: f32, n_v: f32, alpha_2: f32) -> f32 {
 }
 
 fn fresnel_schlick(f0_: vec3<f32>, f90_: f32, v_h: f32) -> vec3<f32> {
-    let c_12 = saturate((1f - v_h));
-    let c2_ = (c_12 * c_12);
-    return (f0_ + ((vec3<f32>(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_12)));
+    let c_14 = saturate((1f - v_h));
+    let c2_ = (c_14 * c_14);
+    return (f0_ + ((vec3<f32>(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_14)));
 }
 
 fn specular_fresnel(base_4: vec3<f32>, metallic: f32, f0_d: vec3<f32>, f90_d: f32, v_h_1: f32) -> vec3<f32> {
@@ -706,8 +709,8 @@ fn specular_brdf(base_6: vec3<f32>, metallic_2: f32, f0_d_2: vec3<f32>, f90_d_2:
     let hs = (v_1 + l_1);
     let inv_1 = (1f / sqrt(dot(hs, hs)));
     let h_8 = (hs * inv_1);
-    let c_13 = cross(n_7, h_8);
-    let _e32 = ggx_d(dot(n_7, h_8), dot(c_13, c_13), alpha_3);
+    let c_15 = cross(n_7, h_8);
+    let _e32 = ggx_d(dot(n_7, h_8), dot(c_15, c_15), alpha_3);
     let _e34 = specular_fresnel(base_6, metallic_2, f0_d_2, f90_d_2, dot(v_1, h_8));
     let _e35 = smith_visibility(n_l_1, n_v_2, alpha_3);
     return (_e34 * (_e32 * _e35));
@@ -872,8 +875,8 @@ fn subtended_cos(dist2_: f32, r2_2: f32) -> f32 {
 fn emitter_cone(center: vec3<f32>, radius: f32, axis: vec3<f32>, cos_o: f32, p: vec3<f32>) -> vec4<f32> {
     var local_11: bool;
 
-    let v_11 = (p - center);
-    let dist2_1 = dot(v_11, v_11);
+    let v_12 = (p - center);
+    let dist2_1 = dot(v_12, v_12);
     let r2_5 = (radius * radius);
     if (dist2_1 <= 0f) {
         local_11 = (r2_5 <= 0f);
@@ -884,8 +887,8 @@ fn emitter_cone(center: vec3<f32>, radius: f32, axis: vec3<f32>, cos_o: f32, p: 
     if _e15 {
         return vec4<f32>(-2f, 0.000000000001f, -1f, 0f);
     }
-    let d2_11 = max(max(dist2_1, r2_5), MIN_D2_);
-    let wi_2 = select(vec3<f32>(0f, 0f, 0f), (v_11 / vec3(sqrt(dist2_1))), (dist2_1 > 0f));
+    let d2_12 = max(max(dist2_1, r2_5), MIN_D2_);
+    let wi_2 = select(vec3<f32>(0f, 0f, 0f), (v_12 / vec3(sqrt(dist2_1))), (dist2_1 > 0f));
     let cos_w = dot(axis, wi_2);
     let _e38 = safe_sqrt((1f - (cos_w * cos_w)));
     let _e39 = subtended_cos(dist2_1, r2_5);
@@ -894,7 +897,7 @@ fn emitter_cone(center: vec3<f32>, radius: f32, axis: vec3<f32>, cos_o: f32, p: 
     let _e48 = cos_sub_clamped(_e38, cos_w, _e47, cos_o);
     let _e49 = sin_sub_clamped(_e38, cos_w, _e47, cos_o);
     let _e50 = cos_sub_clamped(_e49, _e48, _e43, _e39);
-    return vec4<f32>(_e50, d2_11, _e39, _e43);
+    return vec4<f32>(_e50, d2_12, _e39, _e43);
 }
 
 fn emitter_importance(center_1: vec3<f32>, radius_1: f32, phi: f32, axis_1: vec3<f32>, cos_o_1: f32, cos_e: f32, p_1: vec3<f32>) -> f32 {
@@ -926,13 +929,13 @@ fn cone_cos_of(v_5: vec3<f32>, d2_7: f32, a_4: f32, d: vec3<f32>) -> f32 {
     if _e21 {
         return 1f;
     }
-    let c_14 = cross(v_5, d);
-    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_14, c_14)) * a_4)) / d2_7), 1f);
+    let c_16 = cross(v_5, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_16, c_16)) * a_4)) / d2_7), 1f);
 }
 
 fn cone_cos_toward(center_2: vec3<f32>, radius_2: f32, p_2: vec3<f32>, d_1: vec3<f32>) -> f32 {
-    let v_12 = (center_2 - p_2);
-    let _e6 = cone_cos_of(v_12, dot(v_12, v_12), radius_2, d_1);
+    let v_13 = (center_2 - p_2);
+    let _e6 = cone_cos_of(v_13, dot(v_13, v_13), radius_2, d_1);
     return _e6;
 }
 
@@ -959,9 +962,9 @@ fn light_importance(center_4: vec3<f32>, radius_4: f32, phi_1: f32, axis_2: vec3
     }
     imp = ((phi_1 * _e8.x) / _e8.y);
     if (dot(n_11, n_11) > 0f) {
-        let v_13 = (center_4 - p_4);
-        let dist2_2 = dot(v_13, v_13);
-        let cos_i = dot(select(vec3<f32>(0f, 0f, 0f), (v_13 / vec3(sqrt(dist2_2))), (dist2_2 > 0f)), n_11);
+        let v_14 = (center_4 - p_4);
+        let dist2_2 = dot(v_14, v_14);
+        let cos_i = dot(select(vec3<f32>(0f, 0f, 0f), (v_14 / vec3(sqrt(dist2_2))), (dist2_2 > 0f)), n_11);
         let _e33 = imp;
         let _e37 = safe_sqrt((1f - (cos_i * cos_i)));
         let _e40 = cos_sub_clamped(_e37, cos_i, _e8.w, _e8.z);
@@ -999,14 +1002,14 @@ fn candidate_weight(importance: f32, rt2_4: f32, d2_8: f32) -> f32 {
 }
 
 fn cone_weight(center_6: vec3<f32>, radius_6: f32, phi_3: f32, axis_4: vec3<f32>, cos_o_4: f32, cos_e_3: f32, rt2_5: f32, p_6: vec3<f32>, n_13: vec3<f32>, r_3: vec3<f32>, lobe_6: vec4<f32>) -> f32 {
-    let v_14 = (p_6 - center_6);
+    let v_15 = (p_6 - center_6);
     if (lobe_6.y <= 0f) {
         let _e15 = light_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_13);
-        let _e19 = candidate_weight((_e15 * INV_PI), rt2_5, dot(v_14, v_14));
+        let _e19 = candidate_weight((_e15 * INV_PI), rt2_5, dot(v_15, v_15));
         return _e19;
     }
     let _e20 = glossy_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_13, r_3, lobe_6);
-    let _e22 = candidate_weight(_e20, rt2_5, dot(v_14, v_14));
+    let _e22 = candidate_weight(_e20, rt2_5, dot(v_15, v_15));
     return _e22;
 }
 
@@ -1108,9 +1111,9 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_6: vec3<f32>, b_4: vec3<f32>, 
         return -1f;
     }
     let q = cross(s_8, e1_);
-    let v_15 = (dot(d_3, q) * inv_2);
-    if !((v_15 < 0f)) {
-        local_19 = ((u_3 + v_15) > 1f);
+    let v_16 = (dot(d_3, q) * inv_2);
+    if !((v_16 < 0f)) {
+        local_19 = ((u_3 + v_16) > 1f);
     } else {
         local_19 = true;
     }
@@ -1308,10 +1311,10 @@ fn bsh_reaches(node_4: BshNode, x_10: vec3<f32>, r_5: vec3<f32>, rl_3: vec4<f32>
     if _e23 {
         return false;
     }
-    let v_16 = (x_10 - node_4.center);
-    let d2_12 = dot(v_16, v_16);
+    let v_17 = (x_10 - node_4.center);
+    let d2_13 = dot(v_17, v_17);
     let _e29 = bsh_reach_bound(node_4, rl_3.w);
-    if (d2_12 > (_e29 * _e29)) {
+    if (d2_13 > (_e29 * _e29)) {
         return false;
     }
     if (node_4.child == BSH_NONE) {
@@ -1320,12 +1323,12 @@ fn bsh_reaches(node_4: BshNode, x_10: vec3<f32>, r_5: vec3<f32>, rl_3: vec4<f32>
         let _e42 = sphere_contains_point(node_4.center, _e41, x_10);
         return _e42;
     }
-    let _e45 = bsh_inner_scale(node_4.extent, -(v_16), d2_12, r_5, rl_3);
+    let _e45 = bsh_inner_scale(node_4.extent, -(v_17), d2_13, r_5, rl_3);
     let s_c = (_e45 * 1.001f);
     let _e50 = bsh_range_bound(node_4);
     let reach = (node_4.extent + (sqrt(s_c) * _e50));
-    if (d2_12 <= ((node_4.radius * node_4.radius) * s_c)) {
-        local_22 = (d2_12 <= (reach * reach));
+    if (d2_13 <= ((node_4.radius * node_4.radius) * s_c)) {
+        local_22 = (d2_13 <= (reach * reach));
     } else {
         local_22 = false;
     }
@@ -1416,6 +1419,108 @@ fn bsh_grid_cell(f: GridFrame, x_12: vec3<f32>) -> u32 {
     return ((((_e68 * f.ny) + _e61) * f.nx) + _e54);
 }
 
+fn lobe_cone(rl_5: vec4<f32>) -> vec2<f32> {
+    var local_28: bool;
+    var local_29: bool;
+    var local_30: bool;
+    var c_7: f32;
+    var tries: u32 = 0u;
+
+    if (rl_5.x < 1f) {
+        local_28 = (rl_5.y >= 0f);
+    } else {
+        local_28 = false;
+    }
+    let _e10 = local_28;
+    if _e10 {
+        local_29 = (rl_5.z > 0f);
+    } else {
+        local_29 = false;
+    }
+    let _e17 = local_29;
+    if _e17 {
+        local_30 = (rl_5.z < 1f);
+    } else {
+        local_30 = false;
+    }
+    let _e24 = local_30;
+    if !(_e24) {
+        return vec2<f32>(0f, 0f);
+    }
+    let t1_1 = sqrt(((rl_5.y * rl_5.z) / (1f - rl_5.x)));
+    c_7 = (((2f * (1f - t1_1)) / (1f - rl_5.z)) - 1f);
+    loop {
+        let _e50 = c_7;
+        let _e51 = range_scale_at(rl_5, _e50);
+        if !((_e51 <= 1f)) {
+        } else {
+            break;
+        }
+        {
+            let _e55 = c_7;
+            c_7 = (_e55 - 0.0001f);
+            let _e58 = tries;
+            tries = (_e58 + 1u);
+            let _e61 = tries;
+            if (_e61 > 16u) {
+                return vec2<f32>(0f, 0f);
+            }
+        }
+    }
+    let _e67 = c_7;
+    let w_13 = min((min(_e67, 1f) - 0.001f), 0.9999f);
+    if !((w_13 > 0f)) {
+        return vec2<f32>(0f, 0f);
+    }
+    return vec2<f32>((w_13 * w_13), (1f / sqrt((1f - (w_13 * w_13)))));
+}
+
+fn lobe_cone_meets(v_9: vec3<f32>, d2_10: f32, extent: f32, axis_5: vec3<f32>, cone: vec2<f32>) -> bool {
+    var local_31: bool;
+
+    let k_2 = (((extent * LOBE_CONE_PAD) + 0.000000000000000000000000000001f) * cone.y);
+    let vd_1 = -(dot(v_9, axis_5));
+    let a_14 = (vd_1 + k_2);
+    let b_8 = (d2_10 + (k_2 * ((2f * vd_1) + k_2)));
+    if (a_14 >= 0f) {
+        local_31 = ((a_14 * a_14) >= (b_8 * cone.x));
+    } else {
+        local_31 = false;
+    }
+    let _e28 = local_31;
+    return _e28;
+}
+
+fn bsh_lobe_admits(c_8: vec3<f32>, radius_7: f32, extent_1: f32, x_13: vec3<f32>, w_9: f32, axis_6: vec3<f32>, cone_1: vec2<f32>) -> bool {
+    var local_32: bool;
+    var local_33: bool;
+    var local_34: bool;
+
+    let v_18 = (x_13 - c_8);
+    let d2_14 = dot(v_18, v_18);
+    let f_2 = (radius_7 * (w_9 * 1.0001f));
+    if (d2_14 <= (f_2 * f_2)) {
+        if !((cone_1.y == 0f)) {
+            local_33 = (d2_14 <= (radius_7 * radius_7));
+        } else {
+            local_33 = true;
+        }
+        let _e25 = local_33;
+        if !(_e25) {
+            let _e29 = lobe_cone_meets(v_18, d2_14, extent_1, axis_6, cone_1);
+            local_34 = _e29;
+        } else {
+            local_34 = true;
+        }
+        let _e31 = local_34;
+        local_32 = _e31;
+    } else {
+        local_32 = false;
+    }
+    let _e33 = local_32;
+    return _e33;
+}
+
 fn grid_word(i_4: u32) -> u32 {
     let _e3 = grid[i_4];
     return _e3;
@@ -1451,82 +1556,123 @@ fn grid_reach(h_2: u32) -> f32 {
     return bitcast<f32>(_e3);
 }
 
-fn bsh_cursor(x_13: vec3<f32>, r_7: vec3<f32>, rl_5: vec4<f32>) -> BshCursor {
-    var c_7: BshCursor;
+fn bsh_cursor(x_14: vec3<f32>, r_7: vec3<f32>, rl_6: vec4<f32>) -> BshCursor {
+    var c_9: BshCursor;
     var h_3: u32 = 0u;
-    var local_28: bool;
-    var local_29: bool;
+    var g: u32 = 0u;
+    var local_35: bool;
+    var local_36: bool;
+    var local_37: bool;
 
-    c_7.i = 0u;
-    c_7.end = 0u;
+    c_9.i = 0u;
+    c_9.end = 0u;
     let _e10 = bsh_first(BSH);
-    c_7.next = _e10;
-    let _e15 = grid_reach(0u);
-    if (rl_5.w > _e15) {
-        let _e18 = grid_word(14u);
-        h_3 = _e18;
-    }
-    let _e19 = h_3;
-    let _e20 = grid_frame(_e19);
-    let _e22 = c_7.next;
-    if (_e22 != BSH_NONE) {
-        local_28 = (_e20.nx > 0u);
-    } else {
-        local_28 = false;
-    }
-    let _e31 = local_28;
-    if _e31 {
-        let _e35 = h_3;
-        let _e36 = grid_reach(_e35);
-        local_29 = (rl_5.w <= _e36);
-    } else {
-        local_29 = false;
-    }
-    let _e39 = local_29;
-    if _e39 {
-        let _e40 = bsh_grid_cell(_e20, x_13);
-        if (_e40 != BSH_NONE) {
-            let _e45 = h_3;
-            let _e50 = grid[((_e45 + GRID_HEADER) + _e40)];
-            c_7.i = _e50;
-            let _e53 = h_3;
-            let _e60 = grid[(((_e53 + GRID_HEADER) + _e40) + 1u)];
-            c_7.end = _e60;
-            let _e65 = bsh_nodes[0].next;
-            c_7.next = _e65;
+    c_9.next = _e10;
+    c_9.cone = vec2(0f);
+    loop {
+        let _e18 = g;
+        if (_e18 < 2u) {
+            let _e24 = h_3;
+            let _e25 = grid_reach(_e24);
+            local_35 = (rl_6.w > _e25);
+        } else {
+            local_35 = false;
+        }
+        let _e28 = local_35;
+        if _e28 {
+        } else {
+            break;
+        }
+        {
+            let _e29 = h_3;
+            let _e32 = grid_word((_e29 + 14u));
+            h_3 = _e32;
+        }
+        continuing {
+            let _e34 = g;
+            g = (_e34 + 1u);
         }
     }
-    let _e66 = c_7;
-    return _e66;
+    let _e36 = h_3;
+    let _e37 = grid_frame(_e36);
+    let _e39 = c_9.next;
+    if (_e39 != BSH_NONE) {
+        local_36 = (_e37.nx > 0u);
+    } else {
+        local_36 = false;
+    }
+    let _e48 = local_36;
+    if _e48 {
+        let _e52 = h_3;
+        let _e53 = grid_reach(_e52);
+        local_37 = (rl_6.w <= _e53);
+    } else {
+        local_37 = false;
+    }
+    let _e56 = local_37;
+    if _e56 {
+        let _e57 = bsh_grid_cell(_e37, x_14);
+        if (_e57 != BSH_NONE) {
+            let _e62 = h_3;
+            let _e67 = grid[((_e62 + GRID_HEADER) + _e57)];
+            c_9.i = _e67;
+            let _e70 = h_3;
+            let _e77 = grid[(((_e70 + GRID_HEADER) + _e57) + 1u)];
+            c_9.end = _e77;
+            let _e82 = bsh_nodes[0].next;
+            c_9.next = _e82;
+            let _e84 = lobe_cone(rl_6);
+            c_9.cone = _e84;
+        }
+    }
+    let _e85 = c_9;
+    return _e85;
 }
 
-fn bsh_cursor_next(c_8: ptr<function, BshCursor>, x_14: vec3<f32>, r_8: vec3<f32>, rl_6: vec4<f32>) -> u32 {
+fn bsh_cursor_next(c_10: ptr<function, BshCursor>, x_15: vec3<f32>, r_8: vec3<f32>, rl_7: vec4<f32>) -> u32 {
+    var local_38: bool;
+    var local_39: bool;
+
     loop {
-        let _e5 = (*c_8).i;
-        let _e7 = (*c_8).end;
+        let _e5 = (*c_10).i;
+        let _e7 = (*c_10).end;
         if (_e5 < _e7) {
         } else {
             break;
         }
         {
-            let _e11 = (*c_8).i;
-            let b_8 = grid_entries[_e11];
-            let _e15 = (*c_8).i;
-            (*c_8).i = (_e15 + 1u);
-            let _e20 = bsh_nodes[b_8];
-            let _e21 = bsh_reaches(_e20, x_14, r_8, rl_6);
-            if _e21 {
-                return b_8;
+            let _e11 = (*c_10).i;
+            let b_9 = grid_entries[_e11];
+            let _e15 = (*c_10).i;
+            (*c_10).i = (_e15 + 1u);
+            let n_25 = bsh_nodes[b_9];
+            if !((rl_7.w <= 1f)) {
+                let _e32 = (*c_10).cone;
+                let _e33 = bsh_lobe_admits(n_25.center, n_25.radius, n_25.extent, x_15, rl_7.w, r_8, _e32);
+                local_38 = _e33;
+            } else {
+                local_38 = true;
+            }
+            let _e35 = local_38;
+            if _e35 {
+                let _e38 = bsh_reaches(n_25, x_15, r_8, rl_7);
+                local_39 = _e38;
+            } else {
+                local_39 = false;
+            }
+            let _e40 = local_39;
+            if _e40 {
+                return b_9;
             }
         }
     }
-    let _e24 = (*c_8).next;
-    let _e25 = bsh_next_leaf_lobe(BSH, _e24, x_14, r_8, rl_6);
-    if (_e25 != BSH_NONE) {
-        let _e32 = bsh_nodes[_e25].next;
-        (*c_8).next = _e32;
+    let _e43 = (*c_10).next;
+    let _e44 = bsh_next_leaf_lobe(BSH, _e43, x_15, r_8, rl_7);
+    if (_e44 != BSH_NONE) {
+        let _e51 = bsh_nodes[_e44].next;
+        (*c_10).next = _e51;
     }
-    return _e25;
+    return _e44;
 }
 
 fn next_threshold(sum_1: f32, h_4: ptr<function, u32>) -> f32 {
@@ -1539,57 +1685,57 @@ fn next_threshold(sum_1: f32, h_4: ptr<function, u32>) -> f32 {
     return _e6;
 }
 
-fn connect_record(l_8: GpuLight, x_15: vec3<f32>, n_15: vec3<f32>, ng_1: vec3<f32>, r2_3: f32, rt2_6: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32, trace_1: bool) -> Connection {
-    var c_9: Connection;
-    var local_30: bool;
-    var local_31: bool;
+fn connect_record(l_8: GpuLight, x_16: vec3<f32>, n_15: vec3<f32>, ng_1: vec3<f32>, r2_3: f32, rt2_6: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32, trace_1: bool) -> Connection {
+    var c_11: Connection;
+    var local_40: bool;
+    var local_41: bool;
 
-    c_9.e = vec3(0f);
+    c_11.e = vec3(0f);
     let _e16 = light_point(l_8, u1_2, u2_2);
-    c_9.y = _e16;
-    let _e19 = c_9.y;
-    let _e20 = connection_cosine(x_15, _e19, n_15, ng_1, r2_3);
-    c_9.cos_x = _e20;
-    let _e22 = c_9.cos_x;
+    c_11.y = _e16;
+    let _e19 = c_11.y;
+    let _e20 = connection_cosine(x_16, _e19, n_15, ng_1, r2_3);
+    c_11.cos_x = _e20;
+    let _e22 = c_11.cos_x;
     if !((_e22 <= 0f)) {
         if trace_1 {
-            let _e33 = c_9.y;
-            let _e34 = occluded((x_15 + (ng_1 * eps)), _e33);
-            local_31 = _e34;
+            let _e33 = c_11.y;
+            let _e34 = occluded((x_16 + (ng_1 * eps)), _e33);
+            local_41 = _e34;
         } else {
-            local_31 = false;
+            local_41 = false;
         }
-        let _e36 = local_31;
-        local_30 = _e36;
+        let _e36 = local_41;
+        local_40 = _e36;
     } else {
-        local_30 = true;
+        local_40 = true;
     }
-    let _e38 = local_30;
+    let _e38 = local_40;
     if _e38 {
-        let _e39 = c_9;
+        let _e39 = c_11;
         return _e39;
     }
-    let _e41 = c_9.y;
-    let v_17 = (x_15 - _e41);
-    let d2_13 = dot(v_17, v_17);
-    let _e48 = light_intensity(l_8, (v_17 / vec3(sqrt(d2_13))));
-    let _e50 = c_9.cos_x;
-    let _e51 = connection_factor(_e50, d2_13, rt2_6, w_res);
-    c_9.e = (_e48 * _e51);
-    let _e53 = c_9;
+    let _e41 = c_11.y;
+    let v_19 = (x_16 - _e41);
+    let d2_15 = dot(v_19, v_19);
+    let _e48 = light_intensity(l_8, (v_19 / vec3(sqrt(d2_15))));
+    let _e50 = c_11.cos_x;
+    let _e51 = connection_factor(_e50, d2_15, rt2_6, w_res);
+    c_11.e = (_e48 * _e51);
+    let _e53 = c_11;
     return _e53;
 }
 
-fn connect_traced(li: u32, x_16: vec3<f32>, n_16: vec3<f32>, ng_2: vec3<f32>, s_1: f32, w_res_1: f32, u1_3: f32, u2_3: f32, eps_1: f32, trace_2: bool) -> Connection {
+fn connect_traced(li: u32, x_17: vec3<f32>, n_16: vec3<f32>, ng_2: vec3<f32>, s_1: f32, w_res_1: f32, u1_3: f32, u2_3: f32, eps_1: f32, trace_2: bool) -> Connection {
     let _e12 = lights[li];
     let _e15 = r2_4[li];
     let _e19 = rt2_7[li];
-    let _e21 = connect_record(_e12, x_16, n_16, ng_2, (s_1 * _e15), (s_1 * _e19), w_res_1, u1_3, u2_3, eps_1, trace_2);
+    let _e21 = connect_record(_e12, x_17, n_16, ng_2, (s_1 * _e15), (s_1 * _e19), w_res_1, u1_3, u2_3, eps_1, trace_2);
     return _e21;
 }
 
-fn connect(li_1: u32, x_17: vec3<f32>, n_17: vec3<f32>, ng_3: vec3<f32>, s_2: f32, w_res_2: f32, u1_4: f32, u2_4: f32, eps_2: f32) -> Connection {
-    let _e10 = connect_traced(li_1, x_17, n_17, ng_3, s_2, w_res_2, u1_4, u2_4, eps_2, true);
+fn connect(li_1: u32, x_18: vec3<f32>, n_17: vec3<f32>, ng_3: vec3<f32>, s_2: f32, w_res_2: f32, u1_4: f32, u2_4: f32, eps_2: f32) -> Connection {
+    let _e10 = connect_traced(li_1, x_18, n_17, ng_3, s_2, w_res_2, u1_4, u2_4, eps_2, true);
     return _e10;
 }
 
@@ -1598,42 +1744,42 @@ fn mis_weight(pdf_a_1: f32, pdf_b_1: f32) -> f32 {
     return _e2;
 }
 
-fn light_range_scale(li_2: u32, x_18: vec3<f32>, r_9: vec3<f32>, rl_7: vec4<f32>) -> f32 {
-    let c_15 = light_cones[li_2];
-    let _e9 = range_scale_toward(rl_7, c_15.center, c_15.radius, x_18, r_9);
+fn light_range_scale(li_2: u32, x_19: vec3<f32>, r_9: vec3<f32>, rl_8: vec4<f32>) -> f32 {
+    let c_17 = light_cones[li_2];
+    let _e9 = range_scale_toward(rl_8, c_17.center, c_17.radius, x_19, r_9);
     return _e9;
 }
 
-fn light_weight(li_3: u32, x_19: vec3<f32>, n_18: vec3<f32>, r_10: vec3<f32>, lobe_7: vec4<f32>, rl_8: vec4<f32>) -> f32 {
-    let c_16 = light_cones[li_3];
-    let _e15 = light_range_scale(li_3, x_19, r_10, rl_8);
+fn light_weight(li_3: u32, x_20: vec3<f32>, n_18: vec3<f32>, r_10: vec3<f32>, lobe_7: vec4<f32>, rl_9: vec4<f32>) -> f32 {
+    let c_18 = light_cones[li_3];
+    let _e15 = light_range_scale(li_3, x_20, r_10, rl_9);
     let _e18 = rt2_7[li_3];
-    let _e20 = cone_weight(c_16.center, c_16.radius, c_16.phi, c_16.axis, c_16.cos_o, c_16.cos_e, (_e15 * _e18), x_19, n_18, r_10, lobe_7);
+    let _e20 = cone_weight(c_18.center, c_18.radius, c_18.phi, c_18.axis, c_18.cos_o, c_18.cos_e, (_e15 * _e18), x_20, n_18, r_10, lobe_7);
     return _e20;
 }
 
-fn select_pdf(li_4: u32, x_20: vec3<f32>, n_19: vec3<f32>, r_11: vec3<f32>, lobe_8: vec4<f32>, rl_9: vec4<f32>, nee: u32, in_range_1: bool) -> f32 {
-    let _e8 = light_weight(li_4, x_20, n_19, r_11, lobe_8, rl_9);
+fn select_pdf(li_4: u32, x_21: vec3<f32>, n_19: vec3<f32>, r_11: vec3<f32>, lobe_8: vec4<f32>, rl_10: vec4<f32>, nee: u32, in_range_1: bool) -> f32 {
+    let _e8 = light_weight(li_4, x_21, n_19, r_11, lobe_8, rl_10);
     let _e11 = weighted_select_pdf(_e8, bitcast<f32>(nee), in_range_1, K);
     return _e11;
 }
 
-fn light_pdf_selected(li_5: u32, x_21: vec3<f32>, r_12: vec3<f32>, rl_10: vec4<f32>, y_2: vec3<f32>, sel: f32) -> f32 {
+fn light_pdf_selected(li_5: u32, x_22: vec3<f32>, r_12: vec3<f32>, rl_11: vec4<f32>, y_2: vec3<f32>, sel: f32) -> f32 {
     let l_9 = lights[li_5];
-    let v_18 = (x_21 - y_2);
-    let d2_14 = dot(v_18, v_18);
+    let v_20 = (x_22 - y_2);
+    let d2_16 = dot(v_20, v_20);
     let _e11 = light_normal(l_9);
-    let cos_y_1 = select(0f, dot(_e11, (v_18 / vec3(sqrt(d2_14)))), (d2_14 > 0f));
-    let _e20 = light_range_scale(li_5, x_21, r_12, rl_10);
+    let cos_y_1 = select(0f, dot(_e11, (v_20 / vec3(sqrt(d2_16)))), (d2_16 > 0f));
+    let _e20 = light_range_scale(li_5, x_22, r_12, rl_11);
     let _e23 = rt2_7[li_5];
     let _e25 = light_area(l_9);
-    let _e26 = light_strategy_pdf(sel, (_e20 * _e23), d2_14, _e25, cos_y_1);
+    let _e26 = light_strategy_pdf(sel, (_e20 * _e23), d2_16, _e25, cos_y_1);
     return _e26;
 }
 
-fn light_pdf(li_6: u32, x_22: vec3<f32>, n_20: vec3<f32>, r_13: vec3<f32>, lobe_9: vec4<f32>, rl_11: vec4<f32>, y_3: vec3<f32>, nee_1: u32, in_range_2: bool) -> f32 {
-    let _e9 = select_pdf(li_6, x_22, n_20, r_13, lobe_9, rl_11, nee_1, in_range_2);
-    let _e10 = light_pdf_selected(li_6, x_22, r_13, rl_11, y_3, _e9);
+fn light_pdf(li_6: u32, x_23: vec3<f32>, n_20: vec3<f32>, r_13: vec3<f32>, lobe_9: vec4<f32>, rl_12: vec4<f32>, y_3: vec3<f32>, nee_1: u32, in_range_2: bool) -> f32 {
+    let _e9 = select_pdf(li_6, x_23, n_20, r_13, lobe_9, rl_12, nee_1, in_range_2);
+    let _e10 = light_pdf_selected(li_6, x_23, r_13, rl_12, y_3, _e9);
     return _e10;
 }
 
@@ -1647,15 +1793,15 @@ fn weighted_picks(h_5: u32) -> WeightedPicks {
     return _e7;
 }
 
-fn weighted_offer(picks_1: ptr<function, WeightedPicks>, li_7: u32, w_9: f32) {
+fn weighted_offer(picks_1: ptr<function, WeightedPicks>, li_7: u32, w_10: f32) {
     var h_6: u32;
     var s_3: u32 = 0u;
 
     let _e4 = (*picks_1).n;
     (*picks_1).n = (_e4 + 1u);
-    if (w_9 > 0f) {
+    if (w_10 > 0f) {
         let _e10 = (*picks_1).w_sum;
-        (*picks_1).w_sum = (_e10 + w_9);
+        (*picks_1).w_sum = (_e10 + w_10);
         let _e13 = (*picks_1).h;
         h_6 = _e13;
         loop {
@@ -1672,7 +1818,7 @@ fn weighted_offer(picks_1: ptr<function, WeightedPicks>, li_7: u32, w_9: f32) {
                     let _e28 = s_3;
                     (*picks_1).light[_e28] = li_7;
                     let _e31 = s_3;
-                    (*picks_1).w[_e31] = w_9;
+                    (*picks_1).w[_e31] = w_10;
                     let _e34 = s_3;
                     let _e37 = (*picks_1).w_sum;
                     let _e38 = next_threshold(_e37, (&h_6));
@@ -1692,16 +1838,16 @@ fn weighted_offer(picks_1: ptr<function, WeightedPicks>, li_7: u32, w_9: f32) {
     }
 }
 
-fn bsh_weighted_collect(x_23: vec3<f32>, n_21: vec3<f32>, r_14: vec3<f32>, lobe_10: vec4<f32>, rl_12: vec4<f32>, h0_: u32) -> WeightedPicks {
+fn bsh_weighted_collect(x_24: vec3<f32>, n_21: vec3<f32>, r_14: vec3<f32>, lobe_10: vec4<f32>, rl_13: vec4<f32>, h0_: u32) -> WeightedPicks {
     var picks_2: WeightedPicks;
     var cur: BshCursor;
     var b_6: u32;
 
     let _e6 = weighted_picks(h0_);
     picks_2 = _e6;
-    let _e8 = bsh_cursor(x_23, r_14, rl_12);
+    let _e8 = bsh_cursor(x_24, r_14, rl_13);
     cur = _e8;
-    let _e10 = bsh_cursor_next((&cur), x_23, r_14, rl_12);
+    let _e10 = bsh_cursor_next((&cur), x_24, r_14, rl_13);
     b_6 = _e10;
     loop {
         let _e12 = b_6;
@@ -1712,11 +1858,11 @@ fn bsh_weighted_collect(x_23: vec3<f32>, n_21: vec3<f32>, r_14: vec3<f32>, lobe_
         {
             let _e16 = b_6;
             let li_9 = bsh_nodes[_e16].light;
-            let _e20 = light_weight(li_9, x_23, n_21, r_14, lobe_10, rl_12);
+            let _e20 = light_weight(li_9, x_24, n_21, r_14, lobe_10, rl_13);
             weighted_offer((&picks_2), li_9, _e20);
         }
         continuing {
-            let _e21 = bsh_cursor_next((&cur), x_23, r_14, rl_12);
+            let _e21 = bsh_cursor_next((&cur), x_24, r_14, rl_13);
             b_6 = _e21;
         }
     }
@@ -1724,20 +1870,20 @@ fn bsh_weighted_collect(x_23: vec3<f32>, n_21: vec3<f32>, r_14: vec3<f32>, lobe_
     return _e22;
 }
 
-fn shade_pick(li_8: u32, x_24: vec3<f32>, n_22: vec3<f32>, ng_4: vec3<f32>, m: GpuMaterial, wo_1: vec3<f32>, r_15: vec3<f32>, lobe_11: vec4<f32>, rl_13: vec4<f32>, w_10: f32, nee_2: u32, u1_5: f32, u2_5: f32) -> vec3<f32> {
+fn shade_pick(li_8: u32, x_25: vec3<f32>, n_22: vec3<f32>, ng_4: vec3<f32>, m: GpuMaterial, wo_1: vec3<f32>, r_15: vec3<f32>, lobe_11: vec4<f32>, rl_14: vec4<f32>, w_11: f32, nee_2: u32, u1_5: f32, u2_5: f32) -> vec3<f32> {
     var mis: f32 = 1f;
 
-    let _e13 = light_range_scale(li_8, x_24, r_15, rl_13);
+    let _e13 = light_range_scale(li_8, x_25, r_15, rl_14);
     let _e16 = params.eps;
-    let _e17 = connect(li_8, x_24, n_22, ng_4, _e13, w_10, u1_5, u2_5, _e16);
+    let _e17 = connect(li_8, x_25, n_22, ng_4, _e13, w_11, u1_5, u2_5, _e16);
     if (_e17.cos_x <= 0f) {
         return vec3(0f);
     }
-    let l_10 = normalize((_e17.y - x_24));
+    let l_10 = normalize((_e17.y - x_25));
     let _e30 = lights[li_8];
     let _e31 = light_area(_e30);
     if (_e31 > 0f) {
-        let _e36 = light_pdf(li_8, x_24, n_22, r_15, lobe_11, rl_13, _e17.y, nee_2, true);
+        let _e36 = light_pdf(li_8, x_25, n_22, r_15, lobe_11, rl_14, _e17.y, nee_2, true);
         let _e38 = specular_probability(lobe_11);
         let _e39 = bsdf_pdf(n_22, wo_1, l_10, m.alpha, _e38);
         let _e40 = mis_weight(_e36, _e39);
@@ -1764,13 +1910,13 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         candidates[i_5] = 0u;
         return;
     }
-    let x_25 = vtx.position;
-    let n_25 = vtx.normal;
+    let x_26 = vtx.position;
+    let n_26 = vtx.normal;
     let ng_5 = vtx.gnormal;
     let m_2 = materials[vtx.material];
     let wo_2 = vtx.wo;
-    let _e23 = mirror_dir(n_25, wo_2);
-    let _e30 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, dot(n_25, wo_2));
+    let _e23 = mirror_dir(n_26, wo_2);
+    let _e30 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, dot(n_26, wo_2));
     let _e31 = range_lobe(_e30);
     let _e34 = params.seed;
     let _e37 = params.frame;
@@ -1778,7 +1924,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     let _e39 = pick_stream(_e38);
     h = _e39;
     let _e44 = h;
-    let _e45 = bsh_weighted_collect(x_25, n_25, _e23, _e30, _e31, _e44);
+    let _e45 = bsh_weighted_collect(x_26, n_26, _e23, _e30, _e31, _e44);
     h = _e45.h;
     let w_sum_3 = _e45.w_sum;
     candidates[i_5] = bitcast<u32>(w_sum_3);
@@ -1804,7 +1950,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
                 let _e72 = weighted_pick_weight(w_sum_3, _e45.w[_e69], K);
                 let _e74 = h;
                 let _e75 = xi_from_bits(_e74);
-                let _e76 = shade_pick(_e45.light[_e66], x_25, n_25, ng_5, m_2, wo_2, _e23, _e30, _e31, _e72, bitcast<u32>(w_sum_3), _e61, _e75);
+                let _e76 = shade_pick(_e45.light[_e66], x_26, n_26, ng_5, m_2, wo_2, _e23, _e30, _e31, _e72, bitcast<u32>(w_sum_3), _e61, _e75);
                 sum = (_e64 + _e76);
             }
             continuing {

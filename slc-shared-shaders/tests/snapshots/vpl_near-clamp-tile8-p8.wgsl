@@ -66,6 +66,7 @@ const LIGHT_VPL: u32 = 4u;
 const NO_LIGHT: u32 = 4294967295u;
 const GRID_HEADER: u32 = 32u;
 const GRID_LEVELS_MAX: u32 = 8u;
+const GRID_SORT_MAX: u32 = 1536u;
 const COUNT_TILES: u32 = 0u;
 const COUNT_GROUP_TESTS: u32 = 1u;
 const COUNT_CLUSTER_TESTS: u32 = 2u;

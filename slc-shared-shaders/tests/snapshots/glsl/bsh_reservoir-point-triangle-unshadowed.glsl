@@ -35,6 +35,7 @@ struct BshCursor {
     uint i;
     uint end;
     uint next;
+    vec2 cone;
 };
 struct Connection {
     vec3 e;
@@ -49,6 +50,7 @@ const uint LIGHT_VPL = 4u;
 const uint NO_LIGHT = 4294967295u;
 const uint GRID_HEADER = 32u;
 const uint GRID_LEVELS_MAX = 8u;
+const uint GRID_SORT_MAX = 1536u;
 const uint COUNT_TILES = 0u;
 const uint COUNT_GROUP_TESTS = 1u;
 const uint COUNT_CLUSTER_TESTS = 2u;
@@ -110,9 +112,9 @@ const uint BSH = 0u;
 const uint BSH_TILE_DEPTH = 8u;
 const uint BSH_TILE_SUBTREES = 256u;
 
-layout(std430) readonly buffer type_7_block_0Compute { BshNode _group_0_binding_6_cs[]; };
+layout(std430) readonly buffer type_8_block_0Compute { BshNode _group_0_binding_6_cs[]; };
 
-layout(std430) readonly buffer type_11_block_1Compute { GpuLight _group_0_binding_3_cs[]; };
+layout(std430) readonly buffer type_12_block_1Compute { GpuLight _group_0_binding_3_cs[]; };
 
 layout(std430) readonly buffer type_4_block_2Compute { float _group_0_binding_5_cs[]; };
 
@@ -120,11 +122,11 @@ layout(std430) readonly buffer type_4_block_3Compute { float _group_0_binding_4_
 
 layout(std140) uniform ShadeParams_block_4Compute { ShadeParams _group_0_binding_0_cs; };
 
-layout(std430) readonly buffer type_12_block_5Compute { vec4 _group_0_binding_1_cs[]; };
+layout(std430) readonly buffer type_13_block_5Compute { vec4 _group_0_binding_1_cs[]; };
 
-layout(std430) readonly buffer type_12_block_6Compute { vec4 _group_0_binding_2_cs[]; };
+layout(std430) readonly buffer type_13_block_6Compute { vec4 _group_0_binding_2_cs[]; };
 
-layout(std430) buffer type_12_block_7Compute { vec4 _group_0_binding_9_cs[]; };
+layout(std430) buffer type_13_block_7Compute { vec4 _group_0_binding_9_cs[]; };
 
 
 float to_f32_(uint u) {
@@ -485,13 +487,14 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start, vec3 x_4, vec3 r_4, vec4 rl_4)
 }
 
 BshCursor bsh_cursor(vec3 x_5, vec3 r_5, vec4 rl_5) {
-    BshCursor c_3 = BshCursor(0u, 0u, 0u);
+    BshCursor c_3 = BshCursor(0u, 0u, 0u, vec2(0.0));
     c_3.i = 0u;
     c_3.end = 0u;
     uint _e10 = bsh_first(BSH);
     c_3.next = _e10;
-    BshCursor _e11 = c_3;
-    return _e11;
+    c_3.cone = vec2(0.0);
+    BshCursor _e14 = c_3;
+    return _e14;
 }
 
 uint bsh_cursor_next(inout BshCursor c_4, vec3 x_6, vec3 r_6, vec4 rl_6) {
@@ -534,7 +537,7 @@ void reservoir_offer(inout Picks picks, inout uint h_1, uint light) {
 Picks bsh_collect(vec3 x_7, vec3 r_7, vec4 rl_7, uint seed_1) {
     Picks picks_1 = Picks(uint[8](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u), 0u);
     uint h_2 = 0u;
-    BshCursor cur = BshCursor(0u, 0u, 0u);
+    BshCursor cur = BshCursor(0u, 0u, 0u, vec2(0.0));
     uint i_2 = 0u;
     picks_1.n = 0u;
     h_2 = seed_1;

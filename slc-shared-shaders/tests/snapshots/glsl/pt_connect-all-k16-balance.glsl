@@ -83,6 +83,7 @@ struct BshCursor {
     uint i;
     uint end;
     uint next;
+    vec2 cone;
 };
 struct Connection {
     vec3 e;
@@ -97,6 +98,7 @@ const uint LIGHT_VPL = 4u;
 const uint NO_LIGHT = 4294967295u;
 const uint GRID_HEADER = 32u;
 const uint GRID_LEVELS_MAX = 8u;
+const uint GRID_SORT_MAX = 1536u;
 const uint COUNT_TILES = 0u;
 const uint COUNT_GROUP_TESTS = 1u;
 const uint COUNT_CLUSTER_TESTS = 2u;
@@ -161,29 +163,29 @@ const uint BVH = 0u;
 
 layout(std430) readonly buffer type_4_block_0Compute { float _group_1_binding_0_cs[]; };
 
-layout(std430) readonly buffer type_6_block_1Compute { GpuGeoNode _group_0_binding_6_cs[]; };
+layout(std430) readonly buffer type_7_block_1Compute { GpuGeoNode _group_0_binding_6_cs[]; };
 
-layout(std430) readonly buffer type_7_block_2Compute { GpuTriangle _group_0_binding_7_cs[]; };
+layout(std430) readonly buffer type_8_block_2Compute { GpuTriangle _group_0_binding_7_cs[]; };
 
-layout(std430) readonly buffer type_10_block_3Compute { BshNode _group_0_binding_5_cs[]; };
+layout(std430) readonly buffer type_11_block_3Compute { BshNode _group_0_binding_5_cs[]; };
 
-layout(std430) readonly buffer type_14_block_4Compute { GpuLight _group_0_binding_2_cs[]; };
+layout(std430) readonly buffer type_15_block_4Compute { GpuLight _group_0_binding_2_cs[]; };
 
 layout(std430) readonly buffer type_4_block_5Compute { float _group_0_binding_4_cs[]; };
 
 layout(std430) readonly buffer type_4_block_6Compute { float _group_0_binding_3_cs[]; };
 
-layout(std430) readonly buffer type_15_block_7Compute { GpuLightCone _group_1_binding_2_cs[]; };
+layout(std430) readonly buffer type_16_block_7Compute { GpuLightCone _group_1_binding_2_cs[]; };
 
 layout(std140) uniform ShadeParams_block_8Compute { ShadeParams _group_0_binding_0_cs; };
 
-layout(std430) readonly buffer type_16_block_9Compute { GpuPathVertex _group_0_binding_1_cs[]; };
+layout(std430) readonly buffer type_17_block_9Compute { GpuPathVertex _group_0_binding_1_cs[]; };
 
-layout(std430) readonly buffer type_17_block_10Compute { GpuMaterial _group_0_binding_8_cs[]; };
+layout(std430) readonly buffer type_18_block_10Compute { GpuMaterial _group_0_binding_8_cs[]; };
 
-layout(std430) buffer type_18_block_11Compute { vec4 _group_0_binding_9_cs[]; };
+layout(std430) buffer type_19_block_11Compute { vec4 _group_0_binding_9_cs[]; };
 
-layout(std430) buffer type_19_block_12Compute { uint _group_0_binding_10_cs[]; };
+layout(std430) buffer type_20_block_12Compute { uint _group_0_binding_10_cs[]; };
 
 
 float at(uint tab, uint i) {
@@ -1249,13 +1251,14 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start_1, vec3 x_10, vec3 r_4, vec4 rl
 }
 
 BshCursor bsh_cursor(vec3 x_11, vec3 r_5, vec4 rl_5) {
-    BshCursor c_7 = BshCursor(0u, 0u, 0u);
+    BshCursor c_7 = BshCursor(0u, 0u, 0u, vec2(0.0));
     c_7.i = 0u;
     c_7.end = 0u;
     uint _e10 = bsh_first(BSH);
     c_7.next = _e10;
-    BshCursor _e11 = c_7;
-    return _e11;
+    c_7.cone = vec2(0.0);
+    BshCursor _e14 = c_7;
+    return _e14;
 }
 
 uint bsh_cursor_next(inout BshCursor c_8, vec3 x_12, vec3 r_6, vec4 rl_6) {
@@ -1298,7 +1301,7 @@ void reservoir_offer(inout Picks picks, inout uint h_1, uint light) {
 Picks bsh_collect(vec3 x_13, vec3 r_7, vec4 rl_7, uint seed_1) {
     Picks picks_1 = Picks(uint[16](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u), 0u);
     uint h_2 = 0u;
-    BshCursor cur = BshCursor(0u, 0u, 0u);
+    BshCursor cur = BshCursor(0u, 0u, 0u, vec2(0.0));
     uint i_4 = 0u;
     picks_1.n = 0u;
     h_2 = seed_1;

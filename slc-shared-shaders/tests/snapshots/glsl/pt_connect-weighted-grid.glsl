@@ -87,6 +87,7 @@ struct BshCursor {
     uint i;
     uint end;
     uint next;
+    vec2 cone;
 };
 struct Connection {
     vec3 e;
@@ -109,6 +110,7 @@ const uint LIGHT_VPL = 4u;
 const uint NO_LIGHT = 4294967295u;
 const uint GRID_HEADER = 32u;
 const uint GRID_LEVELS_MAX = 8u;
+const uint GRID_SORT_MAX = 1536u;
 const uint COUNT_TILES = 0u;
 const uint COUNT_GROUP_TESTS = 1u;
 const uint COUNT_CLUSTER_TESTS = 2u;
@@ -170,37 +172,38 @@ const uint BSH = 0u;
 const uint BSH_TILE_DEPTH = 8u;
 const uint BSH_TILE_SUBTREES = 256u;
 const uint GRID_ENTRIES_PER_LIGHT = 8u;
+const float LOBE_CONE_PAD = 1.001;
 const uint BVH = 0u;
 
 layout(std430) readonly buffer type_4_block_0Compute { float _group_1_binding_0_cs[]; };
 
-layout(std430) readonly buffer type_6_block_1Compute { GpuGeoNode _group_0_binding_6_cs[]; };
+layout(std430) readonly buffer type_7_block_1Compute { GpuGeoNode _group_0_binding_6_cs[]; };
 
-layout(std430) readonly buffer type_7_block_2Compute { GpuTriangle _group_0_binding_7_cs[]; };
+layout(std430) readonly buffer type_8_block_2Compute { GpuTriangle _group_0_binding_7_cs[]; };
 
-layout(std430) readonly buffer type_10_block_3Compute { BshNode _group_0_binding_5_cs[]; };
+layout(std430) readonly buffer type_11_block_3Compute { BshNode _group_0_binding_5_cs[]; };
 
-layout(std430) readonly buffer type_12_block_4Compute { uint _group_0_binding_11_cs[]; };
+layout(std430) readonly buffer type_13_block_4Compute { uint _group_0_binding_11_cs[]; };
 
-layout(std430) readonly buffer type_12_block_5Compute { uint _group_0_binding_12_cs[]; };
+layout(std430) readonly buffer type_13_block_5Compute { uint _group_0_binding_12_cs[]; };
 
-layout(std430) readonly buffer type_15_block_6Compute { GpuLight _group_0_binding_2_cs[]; };
+layout(std430) readonly buffer type_16_block_6Compute { GpuLight _group_0_binding_2_cs[]; };
 
 layout(std430) readonly buffer type_4_block_7Compute { float _group_0_binding_4_cs[]; };
 
 layout(std430) readonly buffer type_4_block_8Compute { float _group_0_binding_3_cs[]; };
 
-layout(std430) readonly buffer type_16_block_9Compute { GpuLightCone _group_1_binding_2_cs[]; };
+layout(std430) readonly buffer type_17_block_9Compute { GpuLightCone _group_1_binding_2_cs[]; };
 
 layout(std140) uniform ShadeParams_block_10Compute { ShadeParams _group_0_binding_0_cs; };
 
-layout(std430) readonly buffer type_19_block_11Compute { GpuPathVertex _group_0_binding_1_cs[]; };
+layout(std430) readonly buffer type_20_block_11Compute { GpuPathVertex _group_0_binding_1_cs[]; };
 
-layout(std430) readonly buffer type_20_block_12Compute { GpuMaterial _group_0_binding_8_cs[]; };
+layout(std430) readonly buffer type_21_block_12Compute { GpuMaterial _group_0_binding_8_cs[]; };
 
-layout(std430) buffer type_21_block_13Compute { vec4 _group_0_binding_9_cs[]; };
+layout(std430) buffer type_22_block_13Compute { vec4 _group_0_binding_9_cs[]; };
 
-layout(std430) buffer type_12_block_14Compute { uint _group_0_binding_10_cs[]; };
+layout(std430) buffer type_13_block_14Compute { uint _group_0_binding_10_cs[]; };
 
 
 float at(uint tab, uint i) {
@@ -271,8 +274,8 @@ bool slc_keep(float r2_, float d2_2) {
 }
 
 bool sphere_contains_point(vec3 c, float r, vec3 x_2) {
-    vec3 v_9 = (x_2 - c);
-    return (dot(v_9, v_9) <= (r * r));
+    vec3 v_10 = (x_2 - c);
+    return (dot(v_10, v_10) <= (r * r));
 }
 
 float inverse_square(float d2_3) {
@@ -288,11 +291,11 @@ float connection_factor(float cos_x, float d2_4, float rt2_2, float w) {
 float connection_cosine(vec3 x_3, vec3 y, vec3 n, vec3 ng, float r2_1) {
     bool local = false;
     bool local_1 = false;
-    vec3 v_10 = (x_3 - y);
-    float d2_10 = dot(v_10, v_10);
-    bool _e7 = slc_keep(r2_1, d2_10);
+    vec3 v_11 = (x_3 - y);
+    float d2_11 = dot(v_11, v_11);
+    bool _e7 = slc_keep(r2_1, d2_11);
     if (!(!(_e7))) {
-        local = !((d2_10 > 0.0));
+        local = !((d2_11 > 0.0));
     } else {
         local = true;
     }
@@ -300,10 +303,10 @@ float connection_cosine(vec3 x_3, vec3 y, vec3 n, vec3 ng, float r2_1) {
     if (_e16) {
         return 0.0;
     }
-    vec3 w_11 = (v_10 / vec3(sqrt(d2_10)));
-    float cos_x_1 = -(dot(n, w_11));
+    vec3 w_12 = (v_11 / vec3(sqrt(d2_11)));
+    float cos_x_1 = -(dot(n, w_12));
     if (!(!((cos_x_1 > 0.0)))) {
-        local_1 = !((dot(ng, w_11) < 0.0));
+        local_1 = !((dot(ng, w_12) < 0.0));
     } else {
         local_1 = true;
     }
@@ -338,11 +341,11 @@ vec3 triangle_sample(vec3 a_2, vec3 b_2, vec3 c_1, float u1_, float u2_) {
 }
 
 float area_to_solid_angle_pdf(float pdf_area, float d2_5, float cos_light) {
-    float c_10 = abs(cos_light);
-    if ((c_10 <= 0.0)) {
+    float c_12 = abs(cos_light);
+    if ((c_12 <= 0.0)) {
         return 0.0;
     }
-    return ((pdf_area * d2_5) / c_10);
+    return ((pdf_area * d2_5) / c_12);
 }
 
 float atan_portable(float x_4) {
@@ -521,8 +524,8 @@ float ies_candela_dir(uint tab_3, uint base_2, float wn, float wr, float ws) {
     float gamma_1 = degrees(_e9);
     bool on_axis = ((abs(wr) + abs(ws)) <= 0.0);
     float _e16 = atan2_portable(ws, wr);
-    float c_11 = (on_axis ? 0.0 : degrees(_e16));
-    float _e20 = ies_candela(tab_3, base_2, gamma_1, c_11);
+    float c_13 = (on_axis ? 0.0 : degrees(_e16));
+    float _e20 = ies_candela(tab_3, base_2, gamma_1, c_13);
     return _e20;
 }
 
@@ -649,9 +652,9 @@ float smith_visibility(float n_l, float n_v, float alpha_2) {
 }
 
 vec3 fresnel_schlick(vec3 f0_, float f90_, float v_h) {
-    float c_12 = clamp((1.0 - v_h), 0.0, 1.0);
-    float c2_ = (c_12 * c_12);
-    return (f0_ + ((vec3(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_12)));
+    float c_14 = clamp((1.0 - v_h), 0.0, 1.0);
+    float c2_ = (c_14 * c_14);
+    return (f0_ + ((vec3(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_14)));
 }
 
 vec3 specular_fresnel(vec3 base_4, float metallic, vec3 f0_d, float f90_d, float v_h_1) {
@@ -690,8 +693,8 @@ vec3 specular_brdf(vec3 base_6, float metallic_2, vec3 f0_d_2, float f90_d_2, fl
     vec3 hs = (v_1 + l_1);
     float inv_1 = (1.0 / sqrt(dot(hs, hs)));
     vec3 h_8 = (hs * inv_1);
-    vec3 c_13 = cross(n_7, h_8);
-    float _e32 = ggx_d(dot(n_7, h_8), dot(c_13, c_13), alpha_3);
+    vec3 c_15 = cross(n_7, h_8);
+    float _e32 = ggx_d(dot(n_7, h_8), dot(c_15, c_15), alpha_3);
     vec3 _e34 = specular_fresnel(base_6, metallic_2, f0_d_2, f90_d_2, dot(v_1, h_8));
     float _e35 = smith_visibility(n_l_1, n_v_2, alpha_3);
     return (_e34 * (_e32 * _e35));
@@ -852,8 +855,8 @@ float subtended_cos(float dist2_, float r2_2) {
 
 vec4 emitter_cone(vec3 center, float radius, vec3 axis, float cos_o, vec3 p) {
     bool local_11 = false;
-    vec3 v_11 = (p - center);
-    float dist2_1 = dot(v_11, v_11);
+    vec3 v_12 = (p - center);
+    float dist2_1 = dot(v_12, v_12);
     float r2_5 = (radius * radius);
     if ((dist2_1 <= 0.0)) {
         local_11 = (r2_5 <= 0.0);
@@ -864,8 +867,8 @@ vec4 emitter_cone(vec3 center, float radius, vec3 axis, float cos_o, vec3 p) {
     if (_e15) {
         return vec4(-2.0, 1e-12, -1.0, 0.0);
     }
-    float d2_11 = max(max(dist2_1, r2_5), MIN_D2_);
-    vec3 wi_2 = ((dist2_1 > 0.0) ? (v_11 / vec3(sqrt(dist2_1))) : vec3(0.0, 0.0, 0.0));
+    float d2_12 = max(max(dist2_1, r2_5), MIN_D2_);
+    vec3 wi_2 = ((dist2_1 > 0.0) ? (v_12 / vec3(sqrt(dist2_1))) : vec3(0.0, 0.0, 0.0));
     float cos_w = dot(axis, wi_2);
     float _e38 = safe_sqrt((1.0 - (cos_w * cos_w)));
     float _e39 = subtended_cos(dist2_1, r2_5);
@@ -874,7 +877,7 @@ vec4 emitter_cone(vec3 center, float radius, vec3 axis, float cos_o, vec3 p) {
     float _e48 = cos_sub_clamped(_e38, cos_w, _e47, cos_o);
     float _e49 = sin_sub_clamped(_e38, cos_w, _e47, cos_o);
     float _e50 = cos_sub_clamped(_e49, _e48, _e43, _e39);
-    return vec4(_e50, d2_11, _e39, _e43);
+    return vec4(_e50, d2_12, _e39, _e43);
 }
 
 float emitter_importance(vec3 center_1, float radius_1, float phi, vec3 axis_1, float cos_o_1, float cos_e, vec3 p_1) {
@@ -905,13 +908,13 @@ float cone_cos_of(vec3 v_5, float d2_7, float a_4, vec3 d) {
     if (_e21) {
         return 1.0;
     }
-    vec3 c_14 = cross(v_5, d);
-    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_14, c_14)) * a_4)) / d2_7), 1.0);
+    vec3 c_16 = cross(v_5, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_16, c_16)) * a_4)) / d2_7), 1.0);
 }
 
 float cone_cos_toward(vec3 center_2, float radius_2, vec3 p_2, vec3 d_1) {
-    vec3 v_12 = (center_2 - p_2);
-    float _e6 = cone_cos_of(v_12, dot(v_12, v_12), radius_2, d_1);
+    vec3 v_13 = (center_2 - p_2);
+    float _e6 = cone_cos_of(v_13, dot(v_13, v_13), radius_2, d_1);
     return _e6;
 }
 
@@ -937,9 +940,9 @@ float light_importance(vec3 center_4, float radius_4, float phi_1, vec3 axis_2, 
     }
     imp = ((phi_1 * _e8.x) / _e8.y);
     if ((dot(n_11, n_11) > 0.0)) {
-        vec3 v_13 = (center_4 - p_4);
-        float dist2_2 = dot(v_13, v_13);
-        float cos_i = dot(((dist2_2 > 0.0) ? (v_13 / vec3(sqrt(dist2_2))) : vec3(0.0, 0.0, 0.0)), n_11);
+        vec3 v_14 = (center_4 - p_4);
+        float dist2_2 = dot(v_14, v_14);
+        float cos_i = dot(((dist2_2 > 0.0) ? (v_14 / vec3(sqrt(dist2_2))) : vec3(0.0, 0.0, 0.0)), n_11);
         float _e33 = imp;
         float _e37 = safe_sqrt((1.0 - (cos_i * cos_i)));
         float _e40 = cos_sub_clamped(_e37, cos_i, _e8.w, _e8.z);
@@ -976,14 +979,14 @@ float candidate_weight(float importance, float rt2_4, float d2_8) {
 }
 
 float cone_weight(vec3 center_6, float radius_6, float phi_3, vec3 axis_4, float cos_o_4, float cos_e_3, float rt2_5, vec3 p_6, vec3 n_13, vec3 r_3, vec4 lobe_6) {
-    vec3 v_14 = (p_6 - center_6);
+    vec3 v_15 = (p_6 - center_6);
     if ((lobe_6.y <= 0.0)) {
         float _e15 = light_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_13);
-        float _e19 = candidate_weight((_e15 * INV_PI), rt2_5, dot(v_14, v_14));
+        float _e19 = candidate_weight((_e15 * INV_PI), rt2_5, dot(v_15, v_15));
         return _e19;
     }
     float _e20 = glossy_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_13, r_3, lobe_6);
-    float _e22 = candidate_weight(_e20, rt2_5, dot(v_14, v_14));
+    float _e22 = candidate_weight(_e20, rt2_5, dot(v_15, v_15));
     return _e22;
 }
 
@@ -1082,9 +1085,9 @@ float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_6, vec3 b_4, vec3 c_6, float t_min
         return -1.0;
     }
     vec3 q = cross(s_8, e1_);
-    float v_15 = (dot(d_3, q) * inv_2);
-    if (!((v_15 < 0.0))) {
-        local_19 = ((u_3 + v_15) > 1.0);
+    float v_16 = (dot(d_3, q) * inv_2);
+    if (!((v_16 < 0.0))) {
+        local_19 = ((u_3 + v_16) > 1.0);
     } else {
         local_19 = true;
     }
@@ -1282,10 +1285,10 @@ bool bsh_reaches(BshNode node_4, vec3 x_10, vec3 r_5, vec4 rl_3) {
     if (_e23) {
         return false;
     }
-    vec3 v_16 = (x_10 - node_4.center);
-    float d2_12 = dot(v_16, v_16);
+    vec3 v_17 = (x_10 - node_4.center);
+    float d2_13 = dot(v_17, v_17);
     float _e29 = bsh_reach_bound(node_4, rl_3.w);
-    if ((d2_12 > (_e29 * _e29))) {
+    if ((d2_13 > (_e29 * _e29))) {
         return false;
     }
     if ((node_4.child == BSH_NONE)) {
@@ -1294,12 +1297,12 @@ bool bsh_reaches(BshNode node_4, vec3 x_10, vec3 r_5, vec4 rl_3) {
         bool _e42 = sphere_contains_point(node_4.center, _e41, x_10);
         return _e42;
     }
-    float _e45 = bsh_inner_scale(node_4.extent, -(v_16), d2_12, r_5, rl_3);
+    float _e45 = bsh_inner_scale(node_4.extent, -(v_17), d2_13, r_5, rl_3);
     float s_c = (_e45 * 1.001);
     float _e50 = bsh_range_bound(node_4);
     float reach = (node_4.extent + (sqrt(s_c) * _e50));
-    if ((d2_12 <= ((node_4.radius * node_4.radius) * s_c))) {
-        local_22 = (d2_12 <= (reach * reach));
+    if ((d2_13 <= ((node_4.radius * node_4.radius) * s_c))) {
+        local_22 = (d2_13 <= (reach * reach));
     } else {
         local_22 = false;
     }
@@ -1388,6 +1391,105 @@ uint bsh_grid_cell(GridFrame f, vec3 x_12) {
     return ((((_e68 * f.ny) + _e61) * f.nx) + _e54);
 }
 
+vec2 lobe_cone(vec4 rl_5) {
+    bool local_28 = false;
+    bool local_29 = false;
+    bool local_30 = false;
+    float c_7 = 0.0;
+    uint tries = 0u;
+    if ((rl_5.x < 1.0)) {
+        local_28 = (rl_5.y >= 0.0);
+    } else {
+        local_28 = false;
+    }
+    bool _e10 = local_28;
+    if (_e10) {
+        local_29 = (rl_5.z > 0.0);
+    } else {
+        local_29 = false;
+    }
+    bool _e17 = local_29;
+    if (_e17) {
+        local_30 = (rl_5.z < 1.0);
+    } else {
+        local_30 = false;
+    }
+    bool _e24 = local_30;
+    if (!(_e24)) {
+        return vec2(0.0, 0.0);
+    }
+    float t1_1 = sqrt(((rl_5.y * rl_5.z) / (1.0 - rl_5.x)));
+    c_7 = (((2.0 * (1.0 - t1_1)) / (1.0 - rl_5.z)) - 1.0);
+    while(true) {
+        float _e50 = c_7;
+        float _e51 = range_scale_at(rl_5, _e50);
+        if (!((_e51 <= 1.0))) {
+        } else {
+            break;
+        }
+        {
+            float _e55 = c_7;
+            c_7 = (_e55 - 0.0001);
+            uint _e58 = tries;
+            tries = (_e58 + 1u);
+            uint _e61 = tries;
+            if ((_e61 > 16u)) {
+                return vec2(0.0, 0.0);
+            }
+        }
+    }
+    float _e67 = c_7;
+    float w_13 = min((min(_e67, 1.0) - 0.001), 0.9999);
+    if (!((w_13 > 0.0))) {
+        return vec2(0.0, 0.0);
+    }
+    return vec2((w_13 * w_13), (1.0 / sqrt((1.0 - (w_13 * w_13)))));
+}
+
+bool lobe_cone_meets(vec3 v_9, float d2_10, float extent, vec3 axis_5, vec2 cone) {
+    bool local_31 = false;
+    float k_2 = (((extent * LOBE_CONE_PAD) + 1e-30) * cone.y);
+    float vd_1 = -(dot(v_9, axis_5));
+    float a_14 = (vd_1 + k_2);
+    float b_8 = (d2_10 + (k_2 * ((2.0 * vd_1) + k_2)));
+    if ((a_14 >= 0.0)) {
+        local_31 = ((a_14 * a_14) >= (b_8 * cone.x));
+    } else {
+        local_31 = false;
+    }
+    bool _e28 = local_31;
+    return _e28;
+}
+
+bool bsh_lobe_admits(vec3 c_8, float radius_7, float extent_1, vec3 x_13, float w_9, vec3 axis_6, vec2 cone_1) {
+    bool local_32 = false;
+    bool local_33 = false;
+    bool local_34 = false;
+    vec3 v_18 = (x_13 - c_8);
+    float d2_14 = dot(v_18, v_18);
+    float f_2 = (radius_7 * (w_9 * 1.0001));
+    if ((d2_14 <= (f_2 * f_2))) {
+        if (!((cone_1.y == 0.0))) {
+            local_33 = (d2_14 <= (radius_7 * radius_7));
+        } else {
+            local_33 = true;
+        }
+        bool _e25 = local_33;
+        if (!(_e25)) {
+            bool _e29 = lobe_cone_meets(v_18, d2_14, extent_1, axis_6, cone_1);
+            local_34 = _e29;
+        } else {
+            local_34 = true;
+        }
+        bool _e31 = local_34;
+        local_32 = _e31;
+    } else {
+        local_32 = false;
+    }
+    bool _e33 = local_32;
+    return _e33;
+}
+
 uint grid_word(uint i_4) {
     uint _e3 = _group_0_binding_11_cs[i_4];
     return _e3;
@@ -1422,81 +1524,123 @@ float grid_reach(uint h_2) {
     return uintBitsToFloat(_e3);
 }
 
-BshCursor bsh_cursor(vec3 x_13, vec3 r_7, vec4 rl_5) {
-    BshCursor c_7 = BshCursor(0u, 0u, 0u);
+BshCursor bsh_cursor(vec3 x_14, vec3 r_7, vec4 rl_6) {
+    BshCursor c_9 = BshCursor(0u, 0u, 0u, vec2(0.0));
     uint h_3 = 0u;
-    bool local_28 = false;
-    bool local_29 = false;
-    c_7.i = 0u;
-    c_7.end = 0u;
+    uint g = 0u;
+    bool local_35 = false;
+    bool local_36 = false;
+    bool local_37 = false;
+    c_9.i = 0u;
+    c_9.end = 0u;
     uint _e10 = bsh_first(BSH);
-    c_7.next = _e10;
-    float _e15 = grid_reach(0u);
-    if ((rl_5.w > _e15)) {
-        uint _e18 = grid_word(14u);
-        h_3 = _e18;
-    }
-    uint _e19 = h_3;
-    GridFrame _e20 = grid_frame(_e19);
-    uint _e22 = c_7.next;
-    if ((_e22 != BSH_NONE)) {
-        local_28 = (_e20.nx > 0u);
-    } else {
-        local_28 = false;
-    }
-    bool _e31 = local_28;
-    if (_e31) {
-        uint _e35 = h_3;
-        float _e36 = grid_reach(_e35);
-        local_29 = (rl_5.w <= _e36);
-    } else {
-        local_29 = false;
-    }
-    bool _e39 = local_29;
-    if (_e39) {
-        uint _e40 = bsh_grid_cell(_e20, x_13);
-        if ((_e40 != BSH_NONE)) {
-            uint _e45 = h_3;
-            uint _e50 = _group_0_binding_11_cs[((_e45 + GRID_HEADER) + _e40)];
-            c_7.i = _e50;
-            uint _e53 = h_3;
-            uint _e60 = _group_0_binding_11_cs[(((_e53 + GRID_HEADER) + _e40) + 1u)];
-            c_7.end = _e60;
-            uint _e65 = _group_0_binding_5_cs[0].next;
-            c_7.next = _e65;
+    c_9.next = _e10;
+    c_9.cone = vec2(0.0);
+    bool loop_init_1 = true;
+    while(true) {
+        if (!loop_init_1) {
+            uint _e34 = g;
+            g = (_e34 + 1u);
+        }
+        loop_init_1 = false;
+        uint _e18 = g;
+        if ((_e18 < 2u)) {
+            uint _e24 = h_3;
+            float _e25 = grid_reach(_e24);
+            local_35 = (rl_6.w > _e25);
+        } else {
+            local_35 = false;
+        }
+        bool _e28 = local_35;
+        if (_e28) {
+        } else {
+            break;
+        }
+        {
+            uint _e29 = h_3;
+            uint _e32 = grid_word((_e29 + 14u));
+            h_3 = _e32;
         }
     }
-    BshCursor _e66 = c_7;
-    return _e66;
+    uint _e36 = h_3;
+    GridFrame _e37 = grid_frame(_e36);
+    uint _e39 = c_9.next;
+    if ((_e39 != BSH_NONE)) {
+        local_36 = (_e37.nx > 0u);
+    } else {
+        local_36 = false;
+    }
+    bool _e48 = local_36;
+    if (_e48) {
+        uint _e52 = h_3;
+        float _e53 = grid_reach(_e52);
+        local_37 = (rl_6.w <= _e53);
+    } else {
+        local_37 = false;
+    }
+    bool _e56 = local_37;
+    if (_e56) {
+        uint _e57 = bsh_grid_cell(_e37, x_14);
+        if ((_e57 != BSH_NONE)) {
+            uint _e62 = h_3;
+            uint _e67 = _group_0_binding_11_cs[((_e62 + GRID_HEADER) + _e57)];
+            c_9.i = _e67;
+            uint _e70 = h_3;
+            uint _e77 = _group_0_binding_11_cs[(((_e70 + GRID_HEADER) + _e57) + 1u)];
+            c_9.end = _e77;
+            uint _e82 = _group_0_binding_5_cs[0].next;
+            c_9.next = _e82;
+            vec2 _e84 = lobe_cone(rl_6);
+            c_9.cone = _e84;
+        }
+    }
+    BshCursor _e85 = c_9;
+    return _e85;
 }
 
-uint bsh_cursor_next(inout BshCursor c_8, vec3 x_14, vec3 r_8, vec4 rl_6) {
+uint bsh_cursor_next(inout BshCursor c_10, vec3 x_15, vec3 r_8, vec4 rl_7) {
+    bool local_38 = false;
+    bool local_39 = false;
     while(true) {
-        uint _e5 = c_8.i;
-        uint _e7 = c_8.end;
+        uint _e5 = c_10.i;
+        uint _e7 = c_10.end;
         if ((_e5 < _e7)) {
         } else {
             break;
         }
         {
-            uint _e11 = c_8.i;
-            uint b_8 = _group_0_binding_12_cs[_e11];
-            uint _e15 = c_8.i;
-            c_8.i = (_e15 + 1u);
-            BshNode _e20 = _group_0_binding_5_cs[b_8];
-            bool _e21 = bsh_reaches(_e20, x_14, r_8, rl_6);
-            if (_e21) {
-                return b_8;
+            uint _e11 = c_10.i;
+            uint b_9 = _group_0_binding_12_cs[_e11];
+            uint _e15 = c_10.i;
+            c_10.i = (_e15 + 1u);
+            BshNode n_25 = _group_0_binding_5_cs[b_9];
+            if (!((rl_7.w <= 1.0))) {
+                vec2 _e32 = c_10.cone;
+                bool _e33 = bsh_lobe_admits(n_25.center, n_25.radius, n_25.extent, x_15, rl_7.w, r_8, _e32);
+                local_38 = _e33;
+            } else {
+                local_38 = true;
+            }
+            bool _e35 = local_38;
+            if (_e35) {
+                bool _e38 = bsh_reaches(n_25, x_15, r_8, rl_7);
+                local_39 = _e38;
+            } else {
+                local_39 = false;
+            }
+            bool _e40 = local_39;
+            if (_e40) {
+                return b_9;
             }
         }
     }
-    uint _e24 = c_8.next;
-    uint _e25 = bsh_next_leaf_lobe(BSH, _e24, x_14, r_8, rl_6);
-    if ((_e25 != BSH_NONE)) {
-        uint _e32 = _group_0_binding_5_cs[_e25].next;
-        c_8.next = _e32;
+    uint _e43 = c_10.next;
+    uint _e44 = bsh_next_leaf_lobe(BSH, _e43, x_15, r_8, rl_7);
+    if ((_e44 != BSH_NONE)) {
+        uint _e51 = _group_0_binding_5_cs[_e44].next;
+        c_10.next = _e51;
     }
-    return _e25;
+    return _e44;
 }
 
 float next_threshold(float sum_1, inout uint h_4) {
@@ -1509,56 +1653,56 @@ float next_threshold(float sum_1, inout uint h_4) {
     return _e6;
 }
 
-Connection connect_record(GpuLight l_8, vec3 x_15, vec3 n_15, vec3 ng_1, float r2_3, float rt2_6, float w_res, float u1_2, float u2_2, float eps, bool trace_1) {
-    Connection c_9 = Connection(vec3(0.0), vec3(0.0), 0.0);
-    bool local_30 = false;
-    bool local_31 = false;
-    c_9.e = vec3(0.0);
+Connection connect_record(GpuLight l_8, vec3 x_16, vec3 n_15, vec3 ng_1, float r2_3, float rt2_6, float w_res, float u1_2, float u2_2, float eps, bool trace_1) {
+    Connection c_11 = Connection(vec3(0.0), vec3(0.0), 0.0);
+    bool local_40 = false;
+    bool local_41 = false;
+    c_11.e = vec3(0.0);
     vec3 _e16 = light_point(l_8, u1_2, u2_2);
-    c_9.y = _e16;
-    vec3 _e19 = c_9.y;
-    float _e20 = connection_cosine(x_15, _e19, n_15, ng_1, r2_3);
-    c_9.cos_x = _e20;
-    float _e22 = c_9.cos_x;
+    c_11.y = _e16;
+    vec3 _e19 = c_11.y;
+    float _e20 = connection_cosine(x_16, _e19, n_15, ng_1, r2_3);
+    c_11.cos_x = _e20;
+    float _e22 = c_11.cos_x;
     if (!((_e22 <= 0.0))) {
         if (trace_1) {
-            vec3 _e33 = c_9.y;
-            bool _e34 = occluded((x_15 + (ng_1 * eps)), _e33);
-            local_31 = _e34;
+            vec3 _e33 = c_11.y;
+            bool _e34 = occluded((x_16 + (ng_1 * eps)), _e33);
+            local_41 = _e34;
         } else {
-            local_31 = false;
+            local_41 = false;
         }
-        bool _e36 = local_31;
-        local_30 = _e36;
+        bool _e36 = local_41;
+        local_40 = _e36;
     } else {
-        local_30 = true;
+        local_40 = true;
     }
-    bool _e38 = local_30;
+    bool _e38 = local_40;
     if (_e38) {
-        Connection _e39 = c_9;
+        Connection _e39 = c_11;
         return _e39;
     }
-    vec3 _e41 = c_9.y;
-    vec3 v_17 = (x_15 - _e41);
-    float d2_13 = dot(v_17, v_17);
-    vec3 _e48 = light_intensity(l_8, (v_17 / vec3(sqrt(d2_13))));
-    float _e50 = c_9.cos_x;
-    float _e51 = connection_factor(_e50, d2_13, rt2_6, w_res);
-    c_9.e = (_e48 * _e51);
-    Connection _e53 = c_9;
+    vec3 _e41 = c_11.y;
+    vec3 v_19 = (x_16 - _e41);
+    float d2_15 = dot(v_19, v_19);
+    vec3 _e48 = light_intensity(l_8, (v_19 / vec3(sqrt(d2_15))));
+    float _e50 = c_11.cos_x;
+    float _e51 = connection_factor(_e50, d2_15, rt2_6, w_res);
+    c_11.e = (_e48 * _e51);
+    Connection _e53 = c_11;
     return _e53;
 }
 
-Connection connect_traced(uint li, vec3 x_16, vec3 n_16, vec3 ng_2, float s_1, float w_res_1, float u1_3, float u2_3, float eps_1, bool trace_2) {
+Connection connect_traced(uint li, vec3 x_17, vec3 n_16, vec3 ng_2, float s_1, float w_res_1, float u1_3, float u2_3, float eps_1, bool trace_2) {
     GpuLight _e12 = _group_0_binding_2_cs[li];
     float _e15 = _group_0_binding_4_cs[li];
     float _e19 = _group_0_binding_3_cs[li];
-    Connection _e21 = connect_record(_e12, x_16, n_16, ng_2, (s_1 * _e15), (s_1 * _e19), w_res_1, u1_3, u2_3, eps_1, trace_2);
+    Connection _e21 = connect_record(_e12, x_17, n_16, ng_2, (s_1 * _e15), (s_1 * _e19), w_res_1, u1_3, u2_3, eps_1, trace_2);
     return _e21;
 }
 
-Connection connect(uint li_1, vec3 x_17, vec3 n_17, vec3 ng_3, float s_2, float w_res_2, float u1_4, float u2_4, float eps_2) {
-    Connection _e10 = connect_traced(li_1, x_17, n_17, ng_3, s_2, w_res_2, u1_4, u2_4, eps_2, true);
+Connection connect(uint li_1, vec3 x_18, vec3 n_17, vec3 ng_3, float s_2, float w_res_2, float u1_4, float u2_4, float eps_2) {
+    Connection _e10 = connect_traced(li_1, x_18, n_17, ng_3, s_2, w_res_2, u1_4, u2_4, eps_2, true);
     return _e10;
 }
 
@@ -1567,42 +1711,42 @@ float mis_weight(float pdf_a_1, float pdf_b_1) {
     return _e2;
 }
 
-float light_range_scale(uint li_2, vec3 x_18, vec3 r_9, vec4 rl_7) {
-    GpuLightCone c_15 = _group_1_binding_2_cs[li_2];
-    float _e9 = range_scale_toward(rl_7, c_15.center, c_15.radius, x_18, r_9);
+float light_range_scale(uint li_2, vec3 x_19, vec3 r_9, vec4 rl_8) {
+    GpuLightCone c_17 = _group_1_binding_2_cs[li_2];
+    float _e9 = range_scale_toward(rl_8, c_17.center, c_17.radius, x_19, r_9);
     return _e9;
 }
 
-float light_weight(uint li_3, vec3 x_19, vec3 n_18, vec3 r_10, vec4 lobe_7, vec4 rl_8) {
-    GpuLightCone c_16 = _group_1_binding_2_cs[li_3];
-    float _e15 = light_range_scale(li_3, x_19, r_10, rl_8);
+float light_weight(uint li_3, vec3 x_20, vec3 n_18, vec3 r_10, vec4 lobe_7, vec4 rl_9) {
+    GpuLightCone c_18 = _group_1_binding_2_cs[li_3];
+    float _e15 = light_range_scale(li_3, x_20, r_10, rl_9);
     float _e18 = _group_0_binding_3_cs[li_3];
-    float _e20 = cone_weight(c_16.center, c_16.radius, c_16.phi, c_16.axis, c_16.cos_o, c_16.cos_e, (_e15 * _e18), x_19, n_18, r_10, lobe_7);
+    float _e20 = cone_weight(c_18.center, c_18.radius, c_18.phi, c_18.axis, c_18.cos_o, c_18.cos_e, (_e15 * _e18), x_20, n_18, r_10, lobe_7);
     return _e20;
 }
 
-float select_pdf(uint li_4, vec3 x_20, vec3 n_19, vec3 r_11, vec4 lobe_8, vec4 rl_9, uint nee, bool in_range_1) {
-    float _e8 = light_weight(li_4, x_20, n_19, r_11, lobe_8, rl_9);
+float select_pdf(uint li_4, vec3 x_21, vec3 n_19, vec3 r_11, vec4 lobe_8, vec4 rl_10, uint nee, bool in_range_1) {
+    float _e8 = light_weight(li_4, x_21, n_19, r_11, lobe_8, rl_10);
     float _e11 = weighted_select_pdf(_e8, uintBitsToFloat(nee), in_range_1, K);
     return _e11;
 }
 
-float light_pdf_selected(uint li_5, vec3 x_21, vec3 r_12, vec4 rl_10, vec3 y_2, float sel) {
+float light_pdf_selected(uint li_5, vec3 x_22, vec3 r_12, vec4 rl_11, vec3 y_2, float sel) {
     GpuLight l_9 = _group_0_binding_2_cs[li_5];
-    vec3 v_18 = (x_21 - y_2);
-    float d2_14 = dot(v_18, v_18);
+    vec3 v_20 = (x_22 - y_2);
+    float d2_16 = dot(v_20, v_20);
     vec3 _e11 = light_normal(l_9);
-    float cos_y_1 = ((d2_14 > 0.0) ? dot(_e11, (v_18 / vec3(sqrt(d2_14)))) : 0.0);
-    float _e20 = light_range_scale(li_5, x_21, r_12, rl_10);
+    float cos_y_1 = ((d2_16 > 0.0) ? dot(_e11, (v_20 / vec3(sqrt(d2_16)))) : 0.0);
+    float _e20 = light_range_scale(li_5, x_22, r_12, rl_11);
     float _e23 = _group_0_binding_3_cs[li_5];
     float _e25 = light_area(l_9);
-    float _e26 = light_strategy_pdf(sel, (_e20 * _e23), d2_14, _e25, cos_y_1);
+    float _e26 = light_strategy_pdf(sel, (_e20 * _e23), d2_16, _e25, cos_y_1);
     return _e26;
 }
 
-float light_pdf(uint li_6, vec3 x_22, vec3 n_20, vec3 r_13, vec4 lobe_9, vec4 rl_11, vec3 y_3, uint nee_1, bool in_range_2) {
-    float _e9 = select_pdf(li_6, x_22, n_20, r_13, lobe_9, rl_11, nee_1, in_range_2);
-    float _e10 = light_pdf_selected(li_6, x_22, r_13, rl_11, y_3, _e9);
+float light_pdf(uint li_6, vec3 x_23, vec3 n_20, vec3 r_13, vec4 lobe_9, vec4 rl_12, vec3 y_3, uint nee_1, bool in_range_2) {
+    float _e9 = select_pdf(li_6, x_23, n_20, r_13, lobe_9, rl_12, nee_1, in_range_2);
+    float _e10 = light_pdf_selected(li_6, x_23, r_13, rl_12, y_3, _e9);
     return _e10;
 }
 
@@ -1615,23 +1759,23 @@ WeightedPicks weighted_picks(uint h_5) {
     return _e7;
 }
 
-void weighted_offer(inout WeightedPicks picks_1, uint li_7, float w_9) {
+void weighted_offer(inout WeightedPicks picks_1, uint li_7, float w_10) {
     uint h_6 = 0u;
     uint s_3 = 0u;
     uint _e4 = picks_1.n;
     picks_1.n = (_e4 + 1u);
-    if ((w_9 > 0.0)) {
+    if ((w_10 > 0.0)) {
         float _e10 = picks_1.w_sum;
-        picks_1.w_sum = (_e10 + w_9);
+        picks_1.w_sum = (_e10 + w_10);
         uint _e13 = picks_1.h;
         h_6 = _e13;
-        bool loop_init_1 = true;
+        bool loop_init_2 = true;
         while(true) {
-            if (!loop_init_1) {
+            if (!loop_init_2) {
                 uint _e40 = s_3;
                 s_3 = (_e40 + 1u);
             }
-            loop_init_1 = false;
+            loop_init_2 = false;
             uint _e17 = s_3;
             if ((_e17 < K)) {
             } else {
@@ -1645,7 +1789,7 @@ void weighted_offer(inout WeightedPicks picks_1, uint li_7, float w_9) {
                     uint _e28 = s_3;
                     picks_1.light[_e28] = li_7;
                     uint _e31 = s_3;
-                    picks_1.w[_e31] = w_9;
+                    picks_1.w[_e31] = w_10;
                     uint _e34 = s_3;
                     float _e37 = picks_1.w_sum;
                     float _e38 = next_threshold(_e37, h_6);
@@ -1661,23 +1805,23 @@ void weighted_offer(inout WeightedPicks picks_1, uint li_7, float w_9) {
     }
 }
 
-WeightedPicks bsh_weighted_collect(vec3 x_23, vec3 n_21, vec3 r_14, vec4 lobe_10, vec4 rl_12, uint h0_) {
+WeightedPicks bsh_weighted_collect(vec3 x_24, vec3 n_21, vec3 r_14, vec4 lobe_10, vec4 rl_13, uint h0_) {
     WeightedPicks picks_2 = WeightedPicks(uint[8](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u), float[8](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), float[8](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0.0, 0u, 0u);
-    BshCursor cur = BshCursor(0u, 0u, 0u);
+    BshCursor cur = BshCursor(0u, 0u, 0u, vec2(0.0));
     uint b_6 = 0u;
     WeightedPicks _e6 = weighted_picks(h0_);
     picks_2 = _e6;
-    BshCursor _e8 = bsh_cursor(x_23, r_14, rl_12);
+    BshCursor _e8 = bsh_cursor(x_24, r_14, rl_13);
     cur = _e8;
-    uint _e10 = bsh_cursor_next(cur, x_23, r_14, rl_12);
+    uint _e10 = bsh_cursor_next(cur, x_24, r_14, rl_13);
     b_6 = _e10;
-    bool loop_init_2 = true;
+    bool loop_init_3 = true;
     while(true) {
-        if (!loop_init_2) {
-            uint _e21 = bsh_cursor_next(cur, x_23, r_14, rl_12);
+        if (!loop_init_3) {
+            uint _e21 = bsh_cursor_next(cur, x_24, r_14, rl_13);
             b_6 = _e21;
         }
-        loop_init_2 = false;
+        loop_init_3 = false;
         uint _e12 = b_6;
         if ((_e12 != BSH_NONE)) {
         } else {
@@ -1686,7 +1830,7 @@ WeightedPicks bsh_weighted_collect(vec3 x_23, vec3 n_21, vec3 r_14, vec4 lobe_10
         {
             uint _e16 = b_6;
             uint li_9 = _group_0_binding_5_cs[_e16].light;
-            float _e20 = light_weight(li_9, x_23, n_21, r_14, lobe_10, rl_12);
+            float _e20 = light_weight(li_9, x_24, n_21, r_14, lobe_10, rl_13);
             weighted_offer(picks_2, li_9, _e20);
         }
     }
@@ -1694,19 +1838,19 @@ WeightedPicks bsh_weighted_collect(vec3 x_23, vec3 n_21, vec3 r_14, vec4 lobe_10
     return _e22;
 }
 
-vec3 shade_pick(uint li_8, vec3 x_24, vec3 n_22, vec3 ng_4, GpuMaterial m, vec3 wo_1, vec3 r_15, vec4 lobe_11, vec4 rl_13, float w_10, uint nee_2, float u1_5, float u2_5) {
+vec3 shade_pick(uint li_8, vec3 x_25, vec3 n_22, vec3 ng_4, GpuMaterial m, vec3 wo_1, vec3 r_15, vec4 lobe_11, vec4 rl_14, float w_11, uint nee_2, float u1_5, float u2_5) {
     float mis = 1.0;
-    float _e13 = light_range_scale(li_8, x_24, r_15, rl_13);
+    float _e13 = light_range_scale(li_8, x_25, r_15, rl_14);
     float _e16 = _group_0_binding_0_cs.eps;
-    Connection _e17 = connect(li_8, x_24, n_22, ng_4, _e13, w_10, u1_5, u2_5, _e16);
+    Connection _e17 = connect(li_8, x_25, n_22, ng_4, _e13, w_11, u1_5, u2_5, _e16);
     if ((_e17.cos_x <= 0.0)) {
         return vec3(0.0);
     }
-    vec3 l_10 = normalize((_e17.y - x_24));
+    vec3 l_10 = normalize((_e17.y - x_25));
     GpuLight _e30 = _group_0_binding_2_cs[li_8];
     float _e31 = light_area(_e30);
     if ((_e31 > 0.0)) {
-        float _e36 = light_pdf(li_8, x_24, n_22, r_15, lobe_11, rl_13, _e17.y, nee_2, true);
+        float _e36 = light_pdf(li_8, x_25, n_22, r_15, lobe_11, rl_14, _e17.y, nee_2, true);
         float _e38 = specular_probability(lobe_11);
         float _e39 = bsdf_pdf(n_22, wo_1, l_10, m.alpha, _e38);
         float _e40 = mis_weight(_e36, _e39);
@@ -1732,13 +1876,13 @@ void main() {
         _group_0_binding_10_cs[i_5] = 0u;
         return;
     }
-    vec3 x_25 = vtx.position;
-    vec3 n_25 = vtx.normal;
+    vec3 x_26 = vtx.position;
+    vec3 n_26 = vtx.normal;
     vec3 ng_5 = vtx.gnormal;
     GpuMaterial m_2 = _group_0_binding_8_cs[vtx.material];
     vec3 wo_2 = vtx.wo;
-    vec3 _e23 = mirror_dir(n_25, wo_2);
-    vec4 _e30 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, dot(n_25, wo_2));
+    vec3 _e23 = mirror_dir(n_26, wo_2);
+    vec4 _e30 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, dot(n_26, wo_2));
     vec4 _e31 = range_lobe(_e30);
     uint _e34 = _group_0_binding_0_cs.seed;
     uint _e37 = _group_0_binding_0_cs.frame;
@@ -1746,18 +1890,18 @@ void main() {
     uint _e39 = pick_stream(_e38);
     h = _e39;
     uint _e44 = h;
-    WeightedPicks _e45 = bsh_weighted_collect(x_25, n_25, _e23, _e30, _e31, _e44);
+    WeightedPicks _e45 = bsh_weighted_collect(x_26, n_26, _e23, _e30, _e31, _e44);
     h = _e45.h;
     float w_sum_3 = _e45.w_sum;
     _group_0_binding_10_cs[i_5] = floatBitsToUint(w_sum_3);
     if ((w_sum_3 > 0.0)) {
-        bool loop_init_3 = true;
+        bool loop_init_4 = true;
         while(true) {
-            if (!loop_init_3) {
+            if (!loop_init_4) {
                 uint _e79 = s;
                 s = (_e79 + 1u);
             }
-            loop_init_3 = false;
+            loop_init_4 = false;
             uint _e55 = s;
             if ((_e55 < K)) {
             } else {
@@ -1778,7 +1922,7 @@ void main() {
                 float _e72 = weighted_pick_weight(w_sum_3, _e45.w[_e69], K);
                 uint _e74 = h;
                 float _e75 = xi_from_bits(_e74);
-                vec3 _e76 = shade_pick(_e45.light[_e66], x_25, n_25, ng_5, m_2, wo_2, _e23, _e30, _e31, _e72, floatBitsToUint(w_sum_3), _e61, _e75);
+                vec3 _e76 = shade_pick(_e45.light[_e66], x_26, n_26, ng_5, m_2, wo_2, _e23, _e30, _e31, _e72, floatBitsToUint(w_sum_3), _e61, _e75);
                 sum = (_e64 + _e76);
             }
         }

@@ -65,6 +65,7 @@ const uint LIGHT_VPL = 4u;
 const uint NO_LIGHT = 4294967295u;
 const uint GRID_HEADER = 32u;
 const uint GRID_LEVELS_MAX = 8u;
+const uint GRID_SORT_MAX = 1536u;
 const uint COUNT_TILES = 0u;
 const uint COUNT_GROUP_TESTS = 1u;
 const uint COUNT_CLUSTER_TESTS = 2u;

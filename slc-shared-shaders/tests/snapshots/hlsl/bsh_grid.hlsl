@@ -8,7 +8,7 @@ struct GridParams {
     uint header;
     uint fill;
     uint entries;
-    uint pad0_;
+    uint least;
     uint pad1_;
     uint pad2_;
 };
@@ -39,6 +39,7 @@ static const uint LIGHT_VPL = 4u;
 static const uint NO_LIGHT = 4294967295u;
 static const uint GRID_HEADER = 32u;
 static const uint GRID_LEVELS_MAX = 8u;
+static const uint GRID_SORT_MAX = 1536u;
 static const uint COUNT_TILES = 0u;
 static const uint COUNT_GROUP_TESTS = 1u;
 static const uint COUNT_CLUSTER_TESTS = 2u;
@@ -96,6 +97,7 @@ static const float TEMPORAL_CHANGE_LOW = 4.0;
 static const float TEMPORAL_CHANGE_HIGH = 8.0;
 static const float TEMPORAL_MIN_WEIGHT = 0.01;
 static const uint GRID_ENTRIES_PER_LIGHT = 8u;
+static const float LOBE_CONE_PAD = 1.001;
 
 cbuffer params : register(b0) { GridParams params; }
 ByteAddressBuffer bsh_nodes : register(t1);
@@ -105,6 +107,8 @@ RWByteAddressBuffer grid : register(u4);
 RWByteAddressBuffer grid_fill : register(u5);
 RWByteAddressBuffer grid_entries : register(u6);
 groupshared uint wg_sums[64];
+groupshared uint wg_cell[1536];
+groupshared uint2 wg_span;
 
 uint naga_f2u32(float value) {
     return uint(clamp(value, 0.0, 4294967000.0));
@@ -140,14 +144,14 @@ float bsh_reach_bound(BshNode node_1, float w)
     return (node_1.extent + ((w * 1.001) * _e5));
 }
 
-uint bsh_grid_budget(uint leaves, uint cells)
+uint bsh_grid_budget(uint leaves, uint cells, uint least)
 {
     if ((leaves > 536870911u)) {
         return 4294967295u;
     }
     uint e = (leaves * GRID_ENTRIES_PER_LIGHT);
-    const uint _e7 = add_wrap_u32_(e, cells);
-    return ((_e7 < e) ? 4294967295u : _e7);
+    const uint _e8 = add_wrap_u32_(e, cells);
+    return max(((_e8 < e) ? 4294967295u : _e8), least);
 }
 
 float bsh_grid_reach(BshNode node_2, float w_1)
@@ -180,19 +184,19 @@ float bsh_grid_radius(BshNode node_3, float w_2)
     return _e3;
 }
 
-uint3 bsh_grid_first(GridFrame f_1, float3 c_3, float r)
+uint3 bsh_grid_first(GridFrame f_1, float3 c_2, float r)
 {
-    const uint _e10 = bsh_grid_axis((c_3.x - r), f_1.lo.x, f_1.inv.x, f_1.nx);
-    const uint _e18 = bsh_grid_axis((c_3.y - r), f_1.lo.y, f_1.inv.y, f_1.ny);
-    const uint _e26 = bsh_grid_axis((c_3.z - r), f_1.lo.z, f_1.inv.z, f_1.nz);
+    const uint _e10 = bsh_grid_axis((c_2.x - r), f_1.lo.x, f_1.inv.x, f_1.nx);
+    const uint _e18 = bsh_grid_axis((c_2.y - r), f_1.lo.y, f_1.inv.y, f_1.ny);
+    const uint _e26 = bsh_grid_axis((c_2.z - r), f_1.lo.z, f_1.inv.z, f_1.nz);
     return uint3(_e10, _e18, _e26);
 }
 
-uint3 bsh_grid_last(GridFrame f_2, float3 c_4, float r_1)
+uint3 bsh_grid_last(GridFrame f_2, float3 c_3, float r_1)
 {
-    const uint _e10 = bsh_grid_axis((c_4.x + r_1), f_2.lo.x, f_2.inv.x, f_2.nx);
-    const uint _e18 = bsh_grid_axis((c_4.y + r_1), f_2.lo.y, f_2.inv.y, f_2.ny);
-    const uint _e26 = bsh_grid_axis((c_4.z + r_1), f_2.lo.z, f_2.inv.z, f_2.nz);
+    const uint _e10 = bsh_grid_axis((c_3.x + r_1), f_2.lo.x, f_2.inv.x, f_2.nx);
+    const uint _e18 = bsh_grid_axis((c_3.y + r_1), f_2.lo.y, f_2.inv.y, f_2.ny);
+    const uint _e26 = bsh_grid_axis((c_3.z + r_1), f_2.lo.z, f_2.inv.z, f_2.nz);
     return uint3(_e10, _e18, _e26);
 }
 
@@ -239,6 +243,193 @@ uint grid_leaf(uint i_1)
     return node_4;
 }
 
+void sort_cell(uint cell, uint li_1)
+{
+    uint2 span = (0u).xx;
+    uint s = (uint)0;
+    uint c_4 = (uint)0;
+    bool local_3 = (bool)0;
+    uint s_1 = (uint)0;
+    uint j_1 = (uint)0;
+    uint j_2 = (uint)0;
+    uint below = (uint)0;
+    uint m = (uint)0;
+
+    uint _e4 = params.header;
+    uint starts = (_e4 + GRID_HEADER);
+    if ((li_1 == 0u)) {
+        uint _e11 = params.header;
+        const GridFrame _e12 = grid_frame(_e11);
+        if ((cell < ((_e12.nx * _e12.ny) * _e12.nz))) {
+            uint _e25; grid.InterlockedOr((starts + cell)*4, 0, _e25);
+            uint _e31; grid.InterlockedOr(((starts + cell) + 1u)*4, 0, _e31);
+            span = uint2(_e25, _e31);
+            uint _e36 = params.fill;
+            { uint dummy = 0; grid_fill.InterlockedExchange((_e36 + cell)*4, 0u, dummy); }
+        }
+        uint2 _e41 = span;
+        wg_span = _e41;
+    }
+    GroupMemoryBarrierWithGroupSync();
+    uint2 _e43 = wg_span;
+    GroupMemoryBarrierWithGroupSync();
+    uint a_1 = _e43.x;
+    uint n_1 = (_e43.y - _e43.x);
+    if ((n_1 > GRID_SORT_MAX)) {
+        if ((li_1 == 0u)) {
+            s = (a_1 + 1u);
+            uint2 loop_bound = uint2(4294967295u, 4294967295u);
+            bool loop_init = true;
+            while(true) {
+                if (all(loop_bound == uint2(0u, 0u))) { break; }
+                loop_bound -= uint2(loop_bound.y == 0u, 1u);
+                if (!loop_init) {
+                    uint _e93 = s;
+                    s = (_e93 + 1u);
+                }
+                loop_init = false;
+                uint _e55 = s;
+                if ((_e55 < (a_1 + n_1))) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e59 = s;
+                    uint v_1 = asuint(grid_entries.Load(_e59*4));
+                    uint _e62 = s;
+                    c_4 = _e62;
+                    uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
+                    while(true) {
+                        if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
+                        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+                        uint _e64 = c_4;
+                        if ((_e64 > a_1)) {
+                            uint _e69 = c_4;
+                            uint _e73 = asuint(grid_entries.Load((_e69 - 1u)*4));
+                            local_3 = (_e73 > v_1);
+                        } else {
+                            local_3 = false;
+                        }
+                        bool _e76 = local_3;
+                        if (_e76) {
+                        } else {
+                            break;
+                        }
+                        {
+                            uint _e78 = c_4;
+                            uint _e81 = c_4;
+                            uint _e85 = asuint(grid_entries.Load((_e81 - 1u)*4));
+                            grid_entries.Store(_e78*4, asuint(_e85));
+                            uint _e86 = c_4;
+                            c_4 = (_e86 - 1u);
+                        }
+                    }
+                    uint _e90 = c_4;
+                    grid_entries.Store(_e90*4, asuint(v_1));
+                }
+            }
+            s_1 = a_1;
+            uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
+            bool loop_init_1 = true;
+            while(true) {
+                if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
+                loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
+                if (!loop_init_1) {
+                    uint _e110 = s_1;
+                    s_1 = (_e110 + 1u);
+                }
+                loop_init_1 = false;
+                uint _e96 = s_1;
+                if ((_e96 < (a_1 + n_1))) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e100 = s_1;
+                    uint _e104 = s_1;
+                    uint _e106 = asuint(grid_entries.Load(_e104*4));
+                    uint _e108 = asuint(grid_leaves.Load(_e106*4));
+                    grid_entries.Store(_e100*4, asuint(_e108));
+                }
+            }
+        }
+        return;
+    }
+    j_1 = li_1;
+    uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
+    bool loop_init_2 = true;
+    while(true) {
+        if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
+        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+        if (!loop_init_2) {
+            uint _e123 = j_1;
+            j_1 = (_e123 + 64u);
+        }
+        loop_init_2 = false;
+        uint _e113 = j_1;
+        if ((_e113 < n_1)) {
+        } else {
+            break;
+        }
+        {
+            uint _e116 = j_1;
+            uint _e119 = j_1;
+            uint _e122 = asuint(grid_entries.Load((a_1 + _e119)*4));
+            wg_cell[min(uint(_e116), 1535u)] = _e122;
+        }
+    }
+    GroupMemoryBarrierWithGroupSync();
+    j_2 = li_1;
+    uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
+    bool loop_init_3 = true;
+    while(true) {
+        if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
+        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+        if (!loop_init_3) {
+            uint _e159 = j_2;
+            j_2 = (_e159 + 64u);
+        }
+        loop_init_3 = false;
+        uint _e127 = j_2;
+        if ((_e127 < n_1)) {
+        } else {
+            break;
+        }
+        {
+            uint _e130 = j_2;
+            uint v_2 = wg_cell[min(uint(_e130), 1535u)];
+            below = 0u;
+            m = 0u;
+            uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
+            bool loop_init_4 = true;
+            while(true) {
+                if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
+                loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+                if (!loop_init_4) {
+                    uint _e150 = m;
+                    m = (_e150 + 1u);
+                }
+                loop_init_4 = false;
+                uint _e137 = m;
+                if ((_e137 < n_1)) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e139 = below;
+                    uint _e143 = m;
+                    uint _e145 = wg_cell[min(uint(_e143), 1535u)];
+                    below = (_e139 + ((_e145 < v_2) ? 1u : 0u));
+                }
+            }
+            uint _e153 = below;
+            uint _e158 = asuint(grid_leaves.Load(v_2*4));
+            grid_entries.Store((a_1 + _e153)*4, asuint(_e158));
+        }
+    }
+    return;
+}
+
 uint naga_div(uint lhs, uint rhs) {
     return lhs / (rhs == 0u ? 1u : rhs);
 }
@@ -266,10 +457,12 @@ GridFrame ConstructGridFrame(float3 arg0, uint arg1, float3 arg2, uint arg3, flo
 }
 
 [numthreads(64, 1, 1)]
-void main(uint3 gid : SV_DispatchThreadID, uint local_invocation_index : SV_GroupIndex)
+void main(uint3 gid : SV_DispatchThreadID, uint3 wid : SV_GroupID, uint3 groups : SV_GroupID, uint li : SV_GroupIndex)
 {
-    if (local_invocation_index == 0) {
+    if (li == 0) {
         wg_sums = (uint[64])0;
+        wg_cell = (uint[1536])0;
+        wg_span = (uint2)0;
     }
     GroupMemoryBarrierWithGroupSync();
     uint sum = 0u;
@@ -287,154 +480,155 @@ void main(uint3 gid : SV_DispatchThreadID, uint local_invocation_index : SV_Grou
     uint z = (uint)0;
     uint y = (uint)0;
     uint x = (uint)0;
-    uint s = (uint)0;
-    uint c_2 = (uint)0;
-    bool local_3 = (bool)0;
-    uint s_1 = (uint)0;
 
+    uint _e6 = params.stage;
+    if ((_e6 == 5u)) {
+        sort_cell(((wid.y * groups.x) + wid.x), li);
+        return;
+    }
     uint i_2 = gid.x;
     uint h_1 = params.header;
-    uint starts = (h_1 + GRID_HEADER);
-    uint _e9 = params.stage;
-    if ((_e9 == 3u)) {
-        const GridFrame _e12 = grid_frame(h_1);
-        uint cells_1 = ((_e12.nx * _e12.ny) * _e12.nz);
+    uint starts_1 = (h_1 + GRID_HEADER);
+    uint _e22 = params.stage;
+    if ((_e22 == 3u)) {
+        const GridFrame _e25 = grid_frame(h_1);
+        uint cells_1 = ((_e25.nx * _e25.ny) * _e25.nz);
         uint run = naga_div(((cells_1 + 64u) - 1u), 64u);
-        uint a_1 = min((i_2 * run), cells_1);
-        uint b_1 = min((a_1 + run), cells_1);
-        c = a_1;
-        uint2 loop_bound = uint2(4294967295u, 4294967295u);
-        bool loop_init = true;
+        uint a_2 = min((i_2 * run), cells_1);
+        uint b_1 = min((a_2 + run), cells_1);
+        c = a_2;
+        uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
+        bool loop_init_5 = true;
         while(true) {
-            if (all(loop_bound == uint2(0u, 0u))) { break; }
-            loop_bound -= uint2(loop_bound.y == 0u, 1u);
-            if (!loop_init) {
-                uint _e44 = c;
-                c = (_e44 + 1u);
+            if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
+            loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+            if (!loop_init_5) {
+                uint _e57 = c;
+                c = (_e57 + 1u);
             }
-            loop_init = false;
-            uint _e31 = c;
-            if ((_e31 < b_1)) {
+            loop_init_5 = false;
+            uint _e44 = c;
+            if ((_e44 < b_1)) {
             } else {
                 break;
             }
             {
-                uint _e33 = sum;
-                uint _e37 = params.fill;
-                uint _e38 = c;
-                uint _e41; grid_fill.InterlockedOr((_e37 + _e38)*4, 0, _e41);
-                sum = (_e33 + _e41);
+                uint _e46 = sum;
+                uint _e50 = params.fill;
+                uint _e51 = c;
+                uint _e54; grid_fill.InterlockedOr((_e50 + _e51)*4, 0, _e54);
+                sum = (_e46 + _e54);
             }
         }
-        uint _e48 = sum;
-        wg_sums[min(uint(i_2), 63u)] = _e48;
+        uint _e61 = sum;
+        wg_sums[min(uint(i_2), 63u)] = _e61;
         GroupMemoryBarrierWithGroupSync();
-        uint _e51 = params.entries;
-        start = _e51;
-        uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
-        bool loop_init_1 = true;
+        uint _e64 = params.entries;
+        start = _e64;
+        uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
+        bool loop_init_6 = true;
         while(true) {
-            if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
-            loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
-            if (!loop_init_1) {
-                uint _e64 = j;
-                j = (_e64 + 1u);
+            if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
+            loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+            if (!loop_init_6) {
+                uint _e77 = j;
+                j = (_e77 + 1u);
             }
-            loop_init_1 = false;
-            uint _e55 = j;
-            if ((_e55 < i_2)) {
+            loop_init_6 = false;
+            uint _e68 = j;
+            if ((_e68 < i_2)) {
             } else {
                 break;
             }
             {
-                uint _e57 = start;
-                uint _e59 = j;
-                uint _e61 = wg_sums[min(uint(_e59), 63u)];
-                start = (_e57 + _e61);
+                uint _e70 = start;
+                uint _e72 = j;
+                uint _e74 = wg_sums[min(uint(_e72), 63u)];
+                start = (_e70 + _e74);
             }
         }
-        c_1 = a_1;
-        uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
-        bool loop_init_2 = true;
+        c_1 = a_2;
+        uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
+        bool loop_init_7 = true;
         while(true) {
-            if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
-            loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
-            if (!loop_init_2) {
-                uint _e93 = c_1;
-                c_1 = (_e93 + 1u);
+            if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
+            loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
+            if (!loop_init_7) {
+                uint _e106 = c_1;
+                c_1 = (_e106 + 1u);
             }
-            loop_init_2 = false;
-            uint _e67 = c_1;
-            if ((_e67 < b_1)) {
+            loop_init_7 = false;
+            uint _e80 = c_1;
+            if ((_e80 < b_1)) {
             } else {
                 break;
             }
             {
-                uint _e72 = params.fill;
-                uint _e73 = c_1;
-                uint n_1; grid_fill.InterlockedOr((_e72 + _e73)*4, 0, n_1);
-                uint _e78 = c_1;
-                uint _e81 = start;
-                { uint dummy = 0; grid.InterlockedExchange((starts + _e78)*4, _e81, dummy); }
                 uint _e85 = params.fill;
                 uint _e86 = c_1;
-                uint _e89 = start;
-                { uint dummy_1 = 0; grid_fill.InterlockedExchange((_e85 + _e86)*4, _e89, dummy_1); }
-                uint _e90 = start;
-                start = (_e90 + n_1);
+                uint n_2; grid_fill.InterlockedOr((_e85 + _e86)*4, 0, n_2);
+                uint _e91 = c_1;
+                uint _e94 = start;
+                { uint dummy_1 = 0; grid.InterlockedExchange((starts_1 + _e91)*4, _e94, dummy_1); }
+                uint _e98 = params.fill;
+                uint _e99 = c_1;
+                uint _e102 = start;
+                { uint dummy_2 = 0; grid_fill.InterlockedExchange((_e98 + _e99)*4, _e102, dummy_2); }
+                uint _e103 = start;
+                start = (_e103 + n_2);
             }
         }
         if (((i_2 + 1u) == 64u)) {
-            uint _e102 = start;
-            { uint dummy_2 = 0; grid.InterlockedExchange((starts + cells_1)*4, _e102, dummy_2); }
+            uint _e115 = start;
+            { uint dummy_3 = 0; grid.InterlockedExchange((starts_1 + cells_1)*4, _e115, dummy_3); }
         }
         return;
     }
-    uint _e105 = params.stage;
-    switch(_e105) {
+    uint _e118 = params.stage;
+    switch(_e118) {
         case 0u: {
-            uint _e108 = params.count;
-            if ((i_2 >= _e108)) {
+            uint _e121 = params.count;
+            if ((i_2 >= _e121)) {
                 return;
             }
-            const uint _e110 = grid_leaf(i_2);
-            if ((_e110 == BSH_NONE)) {
+            const uint _e123 = grid_leaf(i_2);
+            if ((_e123 == BSH_NONE)) {
                 return;
             }
-            uint _e118; grid.InterlockedAdd((h_1 + 13u)*4, 1u, _e118);
-            BshNode leaf = ConstructBshNode(asfloat(bsh_nodes.Load3(_e110*32+0)), asfloat(bsh_nodes.Load(_e110*32+12)), asuint(bsh_nodes.Load(_e110*32+16)), asuint(bsh_nodes.Load(_e110*32+20)), asuint(bsh_nodes.Load(_e110*32+24)), asfloat(bsh_nodes.Load(_e110*32+28)));
-            float _e124 = params.reach;
-            const float _e125 = bsh_grid_radius(leaf, _e124);
-            uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
-            bool loop_init_3 = true;
+            uint _e131; grid.InterlockedAdd((h_1 + 13u)*4, 1u, _e131);
+            BshNode leaf = ConstructBshNode(asfloat(bsh_nodes.Load3(_e123*32+0)), asfloat(bsh_nodes.Load(_e123*32+12)), asuint(bsh_nodes.Load(_e123*32+16)), asuint(bsh_nodes.Load(_e123*32+20)), asuint(bsh_nodes.Load(_e123*32+24)), asfloat(bsh_nodes.Load(_e123*32+28)));
+            float _e137 = params.reach;
+            const float _e138 = bsh_grid_radius(leaf, _e137);
+            uint2 loop_bound_9 = uint2(4294967295u, 4294967295u);
+            bool loop_init_8 = true;
             while(true) {
-                if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
-                loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-                if (!loop_init_3) {
-                    uint _e172 = l;
-                    l = (_e172 + 1u);
+                if (all(loop_bound_9 == uint2(0u, 0u))) { break; }
+                loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
+                if (!loop_init_8) {
+                    uint _e185 = l;
+                    l = (_e185 + 1u);
                 }
-                loop_init_3 = false;
-                uint _e128 = l;
-                uint _e131 = params.levels;
-                if ((_e128 < _e131)) {
+                loop_init_8 = false;
+                uint _e141 = l;
+                uint _e144 = params.levels;
+                if ((_e141 < _e144)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e134 = l;
-                    GridFrame _e136 = ConstructGridFrame(asfloat(grid_levels.Load3(_e134*48+0)), asuint(grid_levels.Load(_e134*48+12)), asfloat(grid_levels.Load3(_e134*48+16)), asuint(grid_levels.Load(_e134*48+28)), asfloat(grid_levels.Load3(_e134*48+32)), asuint(grid_levels.Load(_e134*48+44)));
-                    const uint3 _e138 = bsh_grid_last(_e136, leaf.center_, _e125);
-                    uint _e140 = l;
-                    GridFrame _e142 = ConstructGridFrame(asfloat(grid_levels.Load3(_e140*48+0)), asuint(grid_levels.Load(_e140*48+12)), asfloat(grid_levels.Load3(_e140*48+16)), asuint(grid_levels.Load(_e140*48+28)), asfloat(grid_levels.Load3(_e140*48+32)), asuint(grid_levels.Load(_e140*48+44)));
-                    const uint3 _e144 = bsh_grid_first(_e142, leaf.center_, _e125);
-                    uint3 d = ((_e138 - _e144) + (1u).xxx);
-                    uint n_2 = ((d.x * d.y) * d.z);
-                    uint _e157 = l;
-                    uint at = ((h_1 + 16u) + (2u * _e157));
-                    uint _e162; grid.InterlockedAdd(at*4, n_2, _e162);
-                    if (((_e162 + n_2) < _e162)) {
-                        uint _e170; grid.InterlockedAdd((at + 1u)*4, 1u, _e170);
+                    uint _e147 = l;
+                    GridFrame _e149 = ConstructGridFrame(asfloat(grid_levels.Load3(_e147*48+0)), asuint(grid_levels.Load(_e147*48+12)), asfloat(grid_levels.Load3(_e147*48+16)), asuint(grid_levels.Load(_e147*48+28)), asfloat(grid_levels.Load3(_e147*48+32)), asuint(grid_levels.Load(_e147*48+44)));
+                    const uint3 _e151 = bsh_grid_last(_e149, leaf.center_, _e138);
+                    uint _e153 = l;
+                    GridFrame _e155 = ConstructGridFrame(asfloat(grid_levels.Load3(_e153*48+0)), asuint(grid_levels.Load(_e153*48+12)), asfloat(grid_levels.Load3(_e153*48+16)), asuint(grid_levels.Load(_e153*48+28)), asfloat(grid_levels.Load3(_e153*48+32)), asuint(grid_levels.Load(_e153*48+44)));
+                    const uint3 _e157 = bsh_grid_first(_e155, leaf.center_, _e138);
+                    uint3 d = ((_e151 - _e157) + (1u).xxx);
+                    uint n_3 = ((d.x * d.y) * d.z);
+                    uint _e170 = l;
+                    uint at = ((h_1 + 16u) + (2u * _e170));
+                    uint _e175; grid.InterlockedAdd(at*4, n_3, _e175);
+                    if (((_e175 + n_3) < _e175)) {
+                        uint _e183; grid.InterlockedAdd((at + 1u)*4, 1u, _e183);
                     }
                 }
             }
@@ -445,175 +639,176 @@ void main(uint3 gid : SV_DispatchThreadID, uint local_invocation_index : SV_Grou
                 return;
             }
             uint leaves_1; grid.InterlockedOr((h_1 + 13u)*4, 0, leaves_1);
-            uint _e183 = params.levels;
-            chosen = _e183;
-            uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
-            bool loop_init_4 = true;
+            uint _e196 = params.levels;
+            chosen = _e196;
+            uint2 loop_bound_10 = uint2(4294967295u, 4294967295u);
+            bool loop_init_9 = true;
             while(true) {
-                if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
-                loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
-                if (!loop_init_4) {
-                    uint _e246 = l_1;
-                    l_1 = (_e246 + 1u);
+                if (all(loop_bound_10 == uint2(0u, 0u))) { break; }
+                loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
+                if (!loop_init_9) {
+                    uint _e262 = l_1;
+                    l_1 = (_e262 + 1u);
                 }
-                loop_init_4 = false;
-                uint _e187 = l_1;
-                uint _e190 = params.levels;
-                if ((_e187 < _e190)) {
+                loop_init_9 = false;
+                uint _e200 = l_1;
+                uint _e203 = params.levels;
+                if ((_e200 < _e203)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e193 = l_1;
-                    GridFrame f_4 = ConstructGridFrame(asfloat(grid_levels.Load3(_e193*48+0)), asuint(grid_levels.Load(_e193*48+12)), asfloat(grid_levels.Load3(_e193*48+16)), asuint(grid_levels.Load(_e193*48+28)), asfloat(grid_levels.Load3(_e193*48+32)), asuint(grid_levels.Load(_e193*48+44)));
+                    uint _e206 = l_1;
+                    GridFrame f_4 = ConstructGridFrame(asfloat(grid_levels.Load3(_e206*48+0)), asuint(grid_levels.Load(_e206*48+12)), asfloat(grid_levels.Load3(_e206*48+16)), asuint(grid_levels.Load(_e206*48+28)), asfloat(grid_levels.Load3(_e206*48+32)), asuint(grid_levels.Load(_e206*48+44)));
                     uint cells_2 = ((f_4.nx * f_4.ny) * f_4.nz);
-                    const uint _e201 = bsh_grid_budget(leaves_1, cells_2);
-                    uint _e204 = params.capacity;
-                    uint budget = min(_e201, _e204);
-                    uint _e209 = l_1;
-                    uint at_1 = ((h_1 + 16u) + (2u * _e209));
-                    uint _e212 = chosen;
-                    uint _e215 = params.levels;
-                    if ((_e212 == _e215)) {
-                        uint _e223; grid.InterlockedOr((at_1 + 1u)*4, 0, _e223);
-                        local = (_e223 == 0u);
+                    uint _e216 = params.least;
+                    const uint _e217 = bsh_grid_budget(leaves_1, cells_2, _e216);
+                    uint _e220 = params.capacity;
+                    uint budget = min(_e217, _e220);
+                    uint _e225 = l_1;
+                    uint at_1 = ((h_1 + 16u) + (2u * _e225));
+                    uint _e228 = chosen;
+                    uint _e231 = params.levels;
+                    if ((_e228 == _e231)) {
+                        uint _e239; grid.InterlockedOr((at_1 + 1u)*4, 0, _e239);
+                        local = (_e239 == 0u);
                     } else {
                         local = false;
                     }
-                    bool _e227 = local;
-                    if (_e227) {
-                        uint _e232; grid.InterlockedOr(at_1*4, 0, _e232);
-                        local_1 = (_e232 <= budget);
+                    bool _e243 = local;
+                    if (_e243) {
+                        uint _e248; grid.InterlockedOr(at_1*4, 0, _e248);
+                        local_1 = (_e248 <= budget);
                     } else {
                         local_1 = false;
                     }
-                    bool _e235 = local_1;
-                    if (_e235) {
-                        uint _e236 = l_1;
-                        chosen = _e236;
+                    bool _e251 = local_1;
+                    if (_e251) {
+                        uint _e252 = l_1;
+                        chosen = _e252;
                     }
-                    { uint dummy_3 = 0; grid.InterlockedExchange(at_1*4, 0u, dummy_3); }
-                    { uint dummy_4 = 0; grid.InterlockedExchange((at_1 + 1u)*4, 0u, dummy_4); }
+                    { uint dummy_4 = 0; grid.InterlockedExchange(at_1*4, 0u, dummy_4); }
+                    { uint dummy_5 = 0; grid.InterlockedExchange((at_1 + 1u)*4, 0u, dummy_5); }
                 }
             }
-            { uint dummy_5 = 0; grid.InterlockedExchange((h_1 + 13u)*4, 0u, dummy_5); }
-            uint _e254 = chosen;
-            uint _e257 = params.levels;
-            if ((_e254 < _e257)) {
-                uint _e260 = chosen;
-                GridFrame _e262 = ConstructGridFrame(asfloat(grid_levels.Load3(_e260*48+0)), asuint(grid_levels.Load(_e260*48+12)), asfloat(grid_levels.Load3(_e260*48+16)), asuint(grid_levels.Load(_e260*48+28)), asfloat(grid_levels.Load3(_e260*48+32)), asuint(grid_levels.Load(_e260*48+44)));
-                f = _e262;
+            { uint dummy_6 = 0; grid.InterlockedExchange((h_1 + 13u)*4, 0u, dummy_6); }
+            uint _e270 = chosen;
+            uint _e273 = params.levels;
+            if ((_e270 < _e273)) {
+                uint _e276 = chosen;
+                GridFrame _e278 = ConstructGridFrame(asfloat(grid_levels.Load3(_e276*48+0)), asuint(grid_levels.Load(_e276*48+12)), asfloat(grid_levels.Load3(_e276*48+16)), asuint(grid_levels.Load(_e276*48+28)), asfloat(grid_levels.Load3(_e276*48+32)), asuint(grid_levels.Load(_e276*48+44)));
+                f = _e278;
             }
-            float _e267 = f.lo.x;
-            { uint dummy_6 = 0; grid.InterlockedExchange(h_1*4, asuint(_e267), dummy_6); }
-            float _e275 = f.lo.y;
-            { uint dummy_7 = 0; grid.InterlockedExchange((h_1 + 1u)*4, asuint(_e275), dummy_7); }
-            float _e283 = f.lo.z;
-            { uint dummy_8 = 0; grid.InterlockedExchange((h_1 + 2u)*4, asuint(_e283), dummy_8); }
-            uint _e290 = f.nx;
-            { uint dummy_9 = 0; grid.InterlockedExchange((h_1 + 3u)*4, _e290, dummy_9); }
-            float _e297 = f.hi.x;
-            { uint dummy_10 = 0; grid.InterlockedExchange((h_1 + 4u)*4, asuint(_e297), dummy_10); }
-            float _e305 = f.hi.y;
-            { uint dummy_11 = 0; grid.InterlockedExchange((h_1 + 5u)*4, asuint(_e305), dummy_11); }
-            float _e313 = f.hi.z;
-            { uint dummy_12 = 0; grid.InterlockedExchange((h_1 + 6u)*4, asuint(_e313), dummy_12); }
-            uint _e320 = f.ny;
-            { uint dummy_13 = 0; grid.InterlockedExchange((h_1 + 7u)*4, _e320, dummy_13); }
-            float _e327 = f.inv.x;
-            { uint dummy_14 = 0; grid.InterlockedExchange((h_1 + 8u)*4, asuint(_e327), dummy_14); }
-            float _e335 = f.inv.y;
-            { uint dummy_15 = 0; grid.InterlockedExchange((h_1 + 9u)*4, asuint(_e335), dummy_15); }
-            float _e343 = f.inv.z;
-            { uint dummy_16 = 0; grid.InterlockedExchange((h_1 + 10u)*4, asuint(_e343), dummy_16); }
-            uint _e350 = f.nz;
-            { uint dummy_17 = 0; grid.InterlockedExchange((h_1 + 11u)*4, _e350, dummy_17); }
-            float _e357 = params.reach;
-            { uint dummy_18 = 0; grid.InterlockedExchange((h_1 + 12u)*4, asuint(_e357), dummy_18); }
+            float _e283 = f.lo.x;
+            { uint dummy_7 = 0; grid.InterlockedExchange(h_1*4, asuint(_e283), dummy_7); }
+            float _e291 = f.lo.y;
+            { uint dummy_8 = 0; grid.InterlockedExchange((h_1 + 1u)*4, asuint(_e291), dummy_8); }
+            float _e299 = f.lo.z;
+            { uint dummy_9 = 0; grid.InterlockedExchange((h_1 + 2u)*4, asuint(_e299), dummy_9); }
+            uint _e306 = f.nx;
+            { uint dummy_10 = 0; grid.InterlockedExchange((h_1 + 3u)*4, _e306, dummy_10); }
+            float _e313 = f.hi.x;
+            { uint dummy_11 = 0; grid.InterlockedExchange((h_1 + 4u)*4, asuint(_e313), dummy_11); }
+            float _e321 = f.hi.y;
+            { uint dummy_12 = 0; grid.InterlockedExchange((h_1 + 5u)*4, asuint(_e321), dummy_12); }
+            float _e329 = f.hi.z;
+            { uint dummy_13 = 0; grid.InterlockedExchange((h_1 + 6u)*4, asuint(_e329), dummy_13); }
+            uint _e336 = f.ny;
+            { uint dummy_14 = 0; grid.InterlockedExchange((h_1 + 7u)*4, _e336, dummy_14); }
+            float _e343 = f.inv.x;
+            { uint dummy_15 = 0; grid.InterlockedExchange((h_1 + 8u)*4, asuint(_e343), dummy_15); }
+            float _e351 = f.inv.y;
+            { uint dummy_16 = 0; grid.InterlockedExchange((h_1 + 9u)*4, asuint(_e351), dummy_16); }
+            float _e359 = f.inv.z;
+            { uint dummy_17 = 0; grid.InterlockedExchange((h_1 + 10u)*4, asuint(_e359), dummy_17); }
+            uint _e366 = f.nz;
+            { uint dummy_18 = 0; grid.InterlockedExchange((h_1 + 11u)*4, _e366, dummy_18); }
+            float _e373 = params.reach;
+            { uint dummy_19 = 0; grid.InterlockedExchange((h_1 + 12u)*4, asuint(_e373), dummy_19); }
             return;
         }
         case 2u:
         case 4u: {
-            uint _e361 = params.count;
-            if ((i_2 >= _e361)) {
+            uint _e377 = params.count;
+            if ((i_2 >= _e377)) {
                 return;
             }
-            const GridFrame _e363 = grid_frame(h_1);
-            const uint _e364 = grid_leaf(i_2);
-            if (!((_e363.nx == 0u))) {
-                local_2 = (_e364 == BSH_NONE);
+            const GridFrame _e379 = grid_frame(h_1);
+            const uint _e380 = grid_leaf(i_2);
+            if (!((_e379.nx == 0u))) {
+                local_2 = (_e380 == BSH_NONE);
             } else {
                 local_2 = true;
             }
-            bool _e374 = local_2;
-            if (_e374) {
+            bool _e390 = local_2;
+            if (_e390) {
                 return;
             }
-            BshNode leaf_1 = ConstructBshNode(asfloat(bsh_nodes.Load3(_e364*32+0)), asfloat(bsh_nodes.Load(_e364*32+12)), asuint(bsh_nodes.Load(_e364*32+16)), asuint(bsh_nodes.Load(_e364*32+20)), asuint(bsh_nodes.Load(_e364*32+24)), asfloat(bsh_nodes.Load(_e364*32+28)));
-            float _e380 = params.reach;
-            const float _e381 = bsh_grid_radius(leaf_1, _e380);
-            const uint3 _e383 = bsh_grid_first(_e363, leaf_1.center_, _e381);
-            const uint3 _e385 = bsh_grid_last(_e363, leaf_1.center_, _e381);
-            z = _e383.z;
-            uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
-            bool loop_init_5 = true;
+            BshNode leaf_1 = ConstructBshNode(asfloat(bsh_nodes.Load3(_e380*32+0)), asfloat(bsh_nodes.Load(_e380*32+12)), asuint(bsh_nodes.Load(_e380*32+16)), asuint(bsh_nodes.Load(_e380*32+20)), asuint(bsh_nodes.Load(_e380*32+24)), asfloat(bsh_nodes.Load(_e380*32+28)));
+            float _e396 = params.reach;
+            const float _e397 = bsh_grid_radius(leaf_1, _e396);
+            const uint3 _e399 = bsh_grid_first(_e379, leaf_1.center_, _e397);
+            const uint3 _e401 = bsh_grid_last(_e379, leaf_1.center_, _e397);
+            z = _e399.z;
+            uint2 loop_bound_11 = uint2(4294967295u, 4294967295u);
+            bool loop_init_10 = true;
             while(true) {
-                if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
-                loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
-                if (!loop_init_5) {
-                    uint _e432 = z;
-                    z = (_e432 + 1u);
+                if (all(loop_bound_11 == uint2(0u, 0u))) { break; }
+                loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
+                if (!loop_init_10) {
+                    uint _e448 = z;
+                    z = (_e448 + 1u);
                 }
-                loop_init_5 = false;
-                uint _e388 = z;
-                if ((_e388 <= _e385.z)) {
+                loop_init_10 = false;
+                uint _e404 = z;
+                if ((_e404 <= _e401.z)) {
                 } else {
                     break;
                 }
                 {
-                    y = _e383.y;
-                    uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
-                    bool loop_init_6 = true;
+                    y = _e399.y;
+                    uint2 loop_bound_12 = uint2(4294967295u, 4294967295u);
+                    bool loop_init_11 = true;
                     while(true) {
-                        if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
-                        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-                        if (!loop_init_6) {
-                            uint _e429 = y;
-                            y = (_e429 + 1u);
+                        if (all(loop_bound_12 == uint2(0u, 0u))) { break; }
+                        loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
+                        if (!loop_init_11) {
+                            uint _e445 = y;
+                            y = (_e445 + 1u);
                         }
-                        loop_init_6 = false;
-                        uint _e393 = y;
-                        if ((_e393 <= _e385.y)) {
+                        loop_init_11 = false;
+                        uint _e409 = y;
+                        if ((_e409 <= _e401.y)) {
                         } else {
                             break;
                         }
                         {
-                            x = _e383.x;
-                            uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
-                            bool loop_init_7 = true;
+                            x = _e399.x;
+                            uint2 loop_bound_13 = uint2(4294967295u, 4294967295u);
+                            bool loop_init_12 = true;
                             while(true) {
-                                if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
-                                loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
-                                if (!loop_init_7) {
-                                    uint _e426 = x;
-                                    x = (_e426 + 1u);
+                                if (all(loop_bound_13 == uint2(0u, 0u))) { break; }
+                                loop_bound_13 -= uint2(loop_bound_13.y == 0u, 1u);
+                                if (!loop_init_12) {
+                                    uint _e442 = x;
+                                    x = (_e442 + 1u);
                                 }
-                                loop_init_7 = false;
-                                uint _e398 = x;
-                                if ((_e398 <= _e385.x)) {
+                                loop_init_12 = false;
+                                uint _e414 = x;
+                                if ((_e414 <= _e401.x)) {
                                 } else {
                                     break;
                                 }
                                 {
-                                    uint _e401 = z;
-                                    uint _e404 = y;
-                                    uint _e408 = x;
-                                    uint c_5 = ((((_e401 * _e363.ny) + _e404) * _e363.nx) + _e408);
-                                    uint _e413 = params.fill;
-                                    uint _e417; grid_fill.InterlockedAdd((_e413 + c_5)*4, 1u, _e417);
-                                    uint _e420 = params.stage;
-                                    if ((_e420 == 4u)) {
-                                        grid_entries.Store(_e417*4, asuint(i_2));
+                                    uint _e417 = z;
+                                    uint _e420 = y;
+                                    uint _e424 = x;
+                                    uint c_5 = ((((_e417 * _e379.ny) + _e420) * _e379.nx) + _e424);
+                                    uint _e429 = params.fill;
+                                    uint _e433; grid_fill.InterlockedAdd((_e429 + c_5)*4, 1u, _e433);
+                                    uint _e436 = params.stage;
+                                    if ((_e436 == 4u)) {
+                                        grid_entries.Store(_e433*4, asuint(i_2));
                                     }
                                 }
                             }
@@ -624,89 +819,6 @@ void main(uint3 gid : SV_DispatchThreadID, uint local_invocation_index : SV_Grou
             return;
         }
         default: {
-            const GridFrame _e434 = grid_frame(h_1);
-            if ((i_2 >= ((_e434.nx * _e434.ny) * _e434.nz))) {
-                return;
-            }
-            uint _e444 = params.fill;
-            { uint dummy_19 = 0; grid_fill.InterlockedExchange((_e444 + i_2)*4, 0u, dummy_19); }
-            uint a_2; grid.InterlockedOr((starts + i_2)*4, 0, a_2);
-            uint b_2; grid.InterlockedOr(((starts + i_2) + 1u)*4, 0, b_2);
-            s = (a_2 + 1u);
-            uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
-            bool loop_init_8 = true;
-            while(true) {
-                if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
-                loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
-                if (!loop_init_8) {
-                    uint _e498 = s;
-                    s = (_e498 + 1u);
-                }
-                loop_init_8 = false;
-                uint _e461 = s;
-                if ((_e461 < b_2)) {
-                } else {
-                    break;
-                }
-                {
-                    uint _e464 = s;
-                    uint v_1 = asuint(grid_entries.Load(_e464*4));
-                    uint _e467 = s;
-                    c_2 = _e467;
-                    uint2 loop_bound_9 = uint2(4294967295u, 4294967295u);
-                    while(true) {
-                        if (all(loop_bound_9 == uint2(0u, 0u))) { break; }
-                        loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
-                        uint _e469 = c_2;
-                        if ((_e469 > a_2)) {
-                            uint _e474 = c_2;
-                            uint _e478 = asuint(grid_entries.Load((_e474 - 1u)*4));
-                            local_3 = (_e478 > v_1);
-                        } else {
-                            local_3 = false;
-                        }
-                        bool _e481 = local_3;
-                        if (_e481) {
-                        } else {
-                            break;
-                        }
-                        {
-                            uint _e483 = c_2;
-                            uint _e486 = c_2;
-                            uint _e490 = asuint(grid_entries.Load((_e486 - 1u)*4));
-                            grid_entries.Store(_e483*4, asuint(_e490));
-                            uint _e491 = c_2;
-                            c_2 = (_e491 - 1u);
-                        }
-                    }
-                    uint _e495 = c_2;
-                    grid_entries.Store(_e495*4, asuint(v_1));
-                }
-            }
-            s_1 = a_2;
-            uint2 loop_bound_10 = uint2(4294967295u, 4294967295u);
-            bool loop_init_9 = true;
-            while(true) {
-                if (all(loop_bound_10 == uint2(0u, 0u))) { break; }
-                loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
-                if (!loop_init_9) {
-                    uint _e514 = s_1;
-                    s_1 = (_e514 + 1u);
-                }
-                loop_init_9 = false;
-                uint _e501 = s_1;
-                if ((_e501 < b_2)) {
-                } else {
-                    break;
-                }
-                {
-                    uint _e504 = s_1;
-                    uint _e508 = s_1;
-                    uint _e510 = asuint(grid_entries.Load(_e508*4));
-                    uint _e512 = asuint(grid_leaves.Load(_e510*4));
-                    grid_entries.Store(_e504*4, asuint(_e512));
-                }
-            }
             return;
         }
     }

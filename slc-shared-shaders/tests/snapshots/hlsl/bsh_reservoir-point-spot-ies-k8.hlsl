@@ -55,6 +55,8 @@ struct BshCursor {
     uint i;
     uint end;
     uint next;
+    int _pad3_0;
+    float2 cone;
 };
 
 struct Connection {
@@ -72,6 +74,7 @@ static const uint LIGHT_VPL = 4u;
 static const uint NO_LIGHT = 4294967295u;
 static const uint GRID_HEADER = 32u;
 static const uint GRID_LEVELS_MAX = 8u;
+static const uint GRID_SORT_MAX = 1536u;
 static const uint COUNT_TILES = 0u;
 static const uint COUNT_GROUP_TESTS = 1u;
 static const uint COUNT_CLUSTER_TESTS = 2u;
@@ -963,8 +966,9 @@ BshCursor bsh_cursor(float3 x_11, float3 r_5, float4 rl_5)
     c_4.end = 0u;
     const uint _e10 = bsh_first(BSH);
     c_4.next = _e10;
-    BshCursor _e11 = c_4;
-    const BshCursor bshcursor = _e11;
+    c_4.cone = (0.0).xx;
+    BshCursor _e14 = c_4;
+    const BshCursor bshcursor = _e14;
     return bshcursor;
 }
 

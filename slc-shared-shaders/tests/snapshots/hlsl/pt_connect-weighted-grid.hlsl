@@ -92,6 +92,8 @@ struct BshCursor {
     uint i;
     uint end;
     uint next;
+    int _pad3_0;
+    float2 cone;
 };
 
 struct Connection {
@@ -118,6 +120,7 @@ static const uint LIGHT_VPL = 4u;
 static const uint NO_LIGHT = 4294967295u;
 static const uint GRID_HEADER = 32u;
 static const uint GRID_LEVELS_MAX = 8u;
+static const uint GRID_SORT_MAX = 1536u;
 static const uint COUNT_TILES = 0u;
 static const uint COUNT_GROUP_TESTS = 1u;
 static const uint COUNT_CLUSTER_TESTS = 2u;
@@ -179,6 +182,7 @@ static const uint BSH = 0u;
 static const uint BSH_TILE_DEPTH = 8u;
 static const uint BSH_TILE_SUBTREES = 256u;
 static const uint GRID_ENTRIES_PER_LIGHT = 8u;
+static const float LOBE_CONE_PAD = 1.001;
 static const uint BVH = 0u;
 
 ByteAddressBuffer slc_table : register(t0, space1);
@@ -283,8 +287,8 @@ bool slc_keep(float r2_, float d2_2)
 
 bool sphere_contains_point(float3 c, float r, float3 x_2)
 {
-    float3 v_9 = (x_2 - c);
-    return (dot(v_9, v_9) <= (r * r));
+    float3 v_10 = (x_2 - c);
+    return (dot(v_10, v_10) <= (r * r));
 }
 
 float inverse_square(float d2_3)
@@ -304,11 +308,11 @@ float connection_cosine(float3 x_3, float3 y, float3 n, float3 ng, float r2_1)
     bool local = (bool)0;
     bool local_1 = (bool)0;
 
-    float3 v_10 = (x_3 - y);
-    float d2_10 = dot(v_10, v_10);
-    const bool _e7 = slc_keep(r2_1, d2_10);
+    float3 v_11 = (x_3 - y);
+    float d2_11 = dot(v_11, v_11);
+    const bool _e7 = slc_keep(r2_1, d2_11);
     if (!(!(_e7))) {
-        local = !((d2_10 > 0.0));
+        local = !((d2_11 > 0.0));
     } else {
         local = true;
     }
@@ -316,10 +320,10 @@ float connection_cosine(float3 x_3, float3 y, float3 n, float3 ng, float r2_1)
     if (_e16) {
         return 0.0;
     }
-    float3 w_11 = (v_10 / (sqrt(d2_10)).xxx);
-    float cos_x_1 = -(dot(n, w_11));
+    float3 w_12 = (v_11 / (sqrt(d2_11)).xxx);
+    float cos_x_1 = -(dot(n, w_12));
     if (!(!((cos_x_1 > 0.0)))) {
-        local_1 = !((dot(ng, w_11) < 0.0));
+        local_1 = !((dot(ng, w_12) < 0.0));
     } else {
         local_1 = true;
     }
@@ -359,11 +363,11 @@ float3 triangle_sample(float3 a_2, float3 b_2, float3 c_1, float u1_, float u2_)
 
 float area_to_solid_angle_pdf(float pdf_area, float d2_5, float cos_light)
 {
-    float c_10 = abs(cos_light);
-    if ((c_10 <= 0.0)) {
+    float c_12 = abs(cos_light);
+    if ((c_12 <= 0.0)) {
         return 0.0;
     }
-    return ((pdf_area * d2_5) / c_10);
+    return ((pdf_area * d2_5) / c_12);
 }
 
 float atan_portable(float x_4)
@@ -556,8 +560,8 @@ float ies_candela_dir(uint tab_3, uint base_2, float wn, float wr, float ws)
     float gamma_1 = degrees(_e9);
     bool on_axis = ((abs(wr) + abs(ws)) <= 0.0);
     const float _e16 = atan2_portable(ws, wr);
-    float c_11 = (on_axis ? 0.0 : degrees(_e16));
-    const float _e20 = ies_candela(tab_3, base_2, gamma_1, c_11);
+    float c_13 = (on_axis ? 0.0 : degrees(_e16));
+    const float _e20 = ies_candela(tab_3, base_2, gamma_1, c_13);
     return _e20;
 }
 
@@ -702,9 +706,9 @@ float smith_visibility(float n_l, float n_v, float alpha_2)
 
 float3 fresnel_schlick(float3 f0_, float f90_, float v_h)
 {
-    float c_12 = saturate((1.0 - v_h));
-    float c2_ = (c_12 * c_12);
-    return (f0_ + ((float3(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_12)));
+    float c_14 = saturate((1.0 - v_h));
+    float c2_ = (c_14 * c_14);
+    return (f0_ + ((float3(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_14)));
 }
 
 float3 specular_fresnel(float3 base_4, float metallic, float3 f0_d, float f90_d, float v_h_1)
@@ -748,8 +752,8 @@ float3 specular_brdf(float3 base_6, float metallic_2, float3 f0_d_2, float f90_d
     float3 hs = (v_1 + l_1);
     float inv_1 = (1.0 / sqrt(dot(hs, hs)));
     float3 h_8 = (hs * inv_1);
-    float3 c_13 = cross(n_7, h_8);
-    const float _e32 = ggx_d(dot(n_7, h_8), dot(c_13, c_13), alpha_3);
+    float3 c_15 = cross(n_7, h_8);
+    const float _e32 = ggx_d(dot(n_7, h_8), dot(c_15, c_15), alpha_3);
     const float3 _e34 = specular_fresnel(base_6, metallic_2, f0_d_2, f90_d_2, dot(v_1, h_8));
     const float _e35 = smith_visibility(n_l_1, n_v_2, alpha_3);
     return (_e34 * (_e32 * _e35));
@@ -932,8 +936,8 @@ float4 emitter_cone(float3 center_, float radius, float3 axis, float cos_o, floa
 {
     bool local_11 = (bool)0;
 
-    float3 v_11 = (p - center_);
-    float dist2_1 = dot(v_11, v_11);
+    float3 v_12 = (p - center_);
+    float dist2_1 = dot(v_12, v_12);
     float r2_5 = (radius * radius);
     if ((dist2_1 <= 0.0)) {
         local_11 = (r2_5 <= 0.0);
@@ -944,8 +948,8 @@ float4 emitter_cone(float3 center_, float radius, float3 axis, float cos_o, floa
     if (_e15) {
         return float4(-2.0, 1e-12, -1.0, 0.0);
     }
-    float d2_11 = max(max(dist2_1, r2_5), MIN_D2_);
-    float3 wi_2 = ((dist2_1 > 0.0) ? (v_11 / (sqrt(dist2_1)).xxx) : float3(0.0, 0.0, 0.0));
+    float d2_12 = max(max(dist2_1, r2_5), MIN_D2_);
+    float3 wi_2 = ((dist2_1 > 0.0) ? (v_12 / (sqrt(dist2_1)).xxx) : float3(0.0, 0.0, 0.0));
     float cos_w = dot(axis, wi_2);
     const float _e38 = safe_sqrt((1.0 - (cos_w * cos_w)));
     const float _e39 = subtended_cos(dist2_1, r2_5);
@@ -954,7 +958,7 @@ float4 emitter_cone(float3 center_, float radius, float3 axis, float cos_o, floa
     const float _e48 = cos_sub_clamped(_e38, cos_w, _e47, cos_o);
     const float _e49 = sin_sub_clamped(_e38, cos_w, _e47, cos_o);
     const float _e50 = cos_sub_clamped(_e49, _e48, _e43, _e39);
-    return float4(_e50, d2_11, _e39, _e43);
+    return float4(_e50, d2_12, _e39, _e43);
 }
 
 float emitter_importance(float3 center_1, float radius_1, float phi, float3 axis_1, float cos_o_1, float cos_e, float3 p_1)
@@ -988,14 +992,14 @@ float cone_cos_of(float3 v_5, float d2_7, float a_4, float3 d)
     if (_e21) {
         return 1.0;
     }
-    float3 c_14 = cross(v_5, d);
-    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_14, c_14)) * a_4)) / d2_7), 1.0);
+    float3 c_16 = cross(v_5, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_16, c_16)) * a_4)) / d2_7), 1.0);
 }
 
 float cone_cos_toward(float3 center_2, float radius_2, float3 p_2, float3 d_1)
 {
-    float3 v_12 = (center_2 - p_2);
-    const float _e6 = cone_cos_of(v_12, dot(v_12, v_12), radius_2, d_1);
+    float3 v_13 = (center_2 - p_2);
+    const float _e6 = cone_cos_of(v_13, dot(v_13, v_13), radius_2, d_1);
     return _e6;
 }
 
@@ -1025,9 +1029,9 @@ float light_importance(float3 center_4, float radius_4, float phi_1, float3 axis
     }
     imp = ((phi_1 * _e8.x) / _e8.y);
     if ((dot(n_11, n_11) > 0.0)) {
-        float3 v_13 = (center_4 - p_4);
-        float dist2_2 = dot(v_13, v_13);
-        float cos_i = dot(((dist2_2 > 0.0) ? (v_13 / (sqrt(dist2_2)).xxx) : float3(0.0, 0.0, 0.0)), n_11);
+        float3 v_14 = (center_4 - p_4);
+        float dist2_2 = dot(v_14, v_14);
+        float cos_i = dot(((dist2_2 > 0.0) ? (v_14 / (sqrt(dist2_2)).xxx) : float3(0.0, 0.0, 0.0)), n_11);
         float _e33 = imp;
         const float _e37 = safe_sqrt((1.0 - (cos_i * cos_i)));
         const float _e40 = cos_sub_clamped(_e37, cos_i, _e8.w, _e8.z);
@@ -1068,14 +1072,14 @@ float candidate_weight(float importance, float rt2_4, float d2_8)
 
 float cone_weight(float3 center_6, float radius_6, float phi_3, float3 axis_4, float cos_o_4, float cos_e_3, float rt2_5, float3 p_6, float3 n_13, float3 r_3, float4 lobe_6)
 {
-    float3 v_14 = (p_6 - center_6);
+    float3 v_15 = (p_6 - center_6);
     if ((lobe_6.y <= 0.0)) {
         const float _e15 = light_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_13);
-        const float _e19 = candidate_weight((_e15 * INV_PI), rt2_5, dot(v_14, v_14));
+        const float _e19 = candidate_weight((_e15 * INV_PI), rt2_5, dot(v_15, v_15));
         return _e19;
     }
     const float _e20 = glossy_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_13, r_3, lobe_6);
-    const float _e22 = candidate_weight(_e20, rt2_5, dot(v_14, v_14));
+    const float _e22 = candidate_weight(_e20, rt2_5, dot(v_15, v_15));
     return _e22;
 }
 
@@ -1185,9 +1189,9 @@ float ray_triangle(float3 o_1, float3 d_3, float3 a_6, float3 b_4, float3 c_6, f
         return -1.0;
     }
     float3 q = cross(s_8, e1_);
-    float v_15 = (dot(d_3, q) * inv_2);
-    if (!((v_15 < 0.0))) {
-        local_19 = ((u_3 + v_15) > 1.0);
+    float v_16 = (dot(d_3, q) * inv_2);
+    if (!((v_16 < 0.0))) {
+        local_19 = ((u_3 + v_16) > 1.0);
     } else {
         local_19 = true;
     }
@@ -1446,10 +1450,10 @@ bool bsh_reaches(BshNode node_4, float3 x_10, float3 r_5, float4 rl_3)
     if (_e23) {
         return false;
     }
-    float3 v_16 = (x_10 - node_4.center_);
-    float d2_12 = dot(v_16, v_16);
+    float3 v_17 = (x_10 - node_4.center_);
+    float d2_13 = dot(v_17, v_17);
     const float _e29 = bsh_reach_bound(node_4, rl_3.w);
-    if ((d2_12 > (_e29 * _e29))) {
+    if ((d2_13 > (_e29 * _e29))) {
         return false;
     }
     if ((node_4.child == BSH_NONE)) {
@@ -1458,12 +1462,12 @@ bool bsh_reaches(BshNode node_4, float3 x_10, float3 r_5, float4 rl_3)
         const bool _e42 = sphere_contains_point(node_4.center_, _e41, x_10);
         return _e42;
     }
-    const float _e45 = bsh_inner_scale(node_4.extent, -(v_16), d2_12, r_5, rl_3);
+    const float _e45 = bsh_inner_scale(node_4.extent, -(v_17), d2_13, r_5, rl_3);
     float s_c = (_e45 * 1.001);
     const float _e50 = bsh_range_bound(node_4);
     float reach = (node_4.extent + (sqrt(s_c) * _e50));
-    if ((d2_12 <= ((node_4.radius * node_4.radius) * s_c))) {
-        local_22 = (d2_12 <= (reach * reach));
+    if ((d2_13 <= ((node_4.radius * node_4.radius) * s_c))) {
+        local_22 = (d2_13 <= (reach * reach));
     } else {
         local_22 = false;
     }
@@ -1560,6 +1564,114 @@ uint bsh_grid_cell(GridFrame f, float3 x_12)
     return ((((_e68 * f.ny) + _e61) * f.nx) + _e54);
 }
 
+float2 lobe_cone(float4 rl_5)
+{
+    bool local_28 = (bool)0;
+    bool local_29 = (bool)0;
+    bool local_30 = (bool)0;
+    float c_7 = (float)0;
+    uint tries = 0u;
+
+    if ((rl_5.x < 1.0)) {
+        local_28 = (rl_5.y >= 0.0);
+    } else {
+        local_28 = false;
+    }
+    bool _e10 = local_28;
+    if (_e10) {
+        local_29 = (rl_5.z > 0.0);
+    } else {
+        local_29 = false;
+    }
+    bool _e17 = local_29;
+    if (_e17) {
+        local_30 = (rl_5.z < 1.0);
+    } else {
+        local_30 = false;
+    }
+    bool _e24 = local_30;
+    if (!(_e24)) {
+        return float2(0.0, 0.0);
+    }
+    float t1_1 = sqrt(((rl_5.y * rl_5.z) / (1.0 - rl_5.x)));
+    c_7 = (((2.0 * (1.0 - t1_1)) / (1.0 - rl_5.z)) - 1.0);
+    uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
+    while(true) {
+        if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
+        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+        float _e50 = c_7;
+        const float _e51 = range_scale_at(rl_5, _e50);
+        if (!((_e51 <= 1.0))) {
+        } else {
+            break;
+        }
+        {
+            float _e55 = c_7;
+            c_7 = (_e55 - 0.0001);
+            uint _e58 = tries;
+            tries = (_e58 + 1u);
+            uint _e61 = tries;
+            if ((_e61 > 16u)) {
+                return float2(0.0, 0.0);
+            }
+        }
+    }
+    float _e67 = c_7;
+    float w_13 = min((min(_e67, 1.0) - 0.001), 0.9999);
+    if (!((w_13 > 0.0))) {
+        return float2(0.0, 0.0);
+    }
+    return float2((w_13 * w_13), (1.0 / sqrt((1.0 - (w_13 * w_13)))));
+}
+
+bool lobe_cone_meets(float3 v_9, float d2_10, float extent, float3 axis_5, float2 cone)
+{
+    bool local_31 = (bool)0;
+
+    float k_2 = (((extent * LOBE_CONE_PAD) + 1e-30) * cone.y);
+    float vd_1 = -(dot(v_9, axis_5));
+    float a_14 = (vd_1 + k_2);
+    float b_8 = (d2_10 + (k_2 * ((2.0 * vd_1) + k_2)));
+    if ((a_14 >= 0.0)) {
+        local_31 = ((a_14 * a_14) >= (b_8 * cone.x));
+    } else {
+        local_31 = false;
+    }
+    bool _e28 = local_31;
+    return _e28;
+}
+
+bool bsh_lobe_admits(float3 c_8, float radius_7, float extent_1, float3 x_13, float w_9, float3 axis_6, float2 cone_1)
+{
+    bool local_32 = (bool)0;
+    bool local_33 = (bool)0;
+    bool local_34 = (bool)0;
+
+    float3 v_18 = (x_13 - c_8);
+    float d2_14 = dot(v_18, v_18);
+    float f_2 = (radius_7 * (w_9 * 1.0001));
+    if ((d2_14 <= (f_2 * f_2))) {
+        if (!((cone_1.y == 0.0))) {
+            local_33 = (d2_14 <= (radius_7 * radius_7));
+        } else {
+            local_33 = true;
+        }
+        bool _e25 = local_33;
+        if (!(_e25)) {
+            const bool _e29 = lobe_cone_meets(v_18, d2_14, extent_1, axis_6, cone_1);
+            local_34 = _e29;
+        } else {
+            local_34 = true;
+        }
+        bool _e31 = local_34;
+        local_32 = _e31;
+    } else {
+        local_32 = false;
+    }
+    bool _e33 = local_32;
+    return _e33;
+}
+
 uint grid_word(uint i_4)
 {
     uint _e3 = asuint(grid.Load(i_4*4));
@@ -1599,88 +1711,134 @@ float grid_reach(uint h_2)
     return asfloat(_e3);
 }
 
-BshCursor bsh_cursor(float3 x_13, float3 r_7, float4 rl_5)
+BshCursor bsh_cursor(float3 x_14, float3 r_7, float4 rl_6)
 {
-    BshCursor c_7 = (BshCursor)0;
+    BshCursor c_9 = (BshCursor)0;
     uint h_3 = 0u;
-    bool local_28 = (bool)0;
-    bool local_29 = (bool)0;
+    uint g = 0u;
+    bool local_35 = (bool)0;
+    bool local_36 = (bool)0;
+    bool local_37 = (bool)0;
 
-    c_7.i = 0u;
-    c_7.end = 0u;
+    c_9.i = 0u;
+    c_9.end = 0u;
     const uint _e10 = bsh_first(BSH);
-    c_7.next = _e10;
-    const float _e15 = grid_reach(0u);
-    if ((rl_5.w > _e15)) {
-        const uint _e18 = grid_word(14u);
-        h_3 = _e18;
-    }
-    uint _e19 = h_3;
-    const GridFrame _e20 = grid_frame(_e19);
-    uint _e22 = c_7.next;
-    if ((_e22 != BSH_NONE)) {
-        local_28 = (_e20.nx > 0u);
-    } else {
-        local_28 = false;
-    }
-    bool _e31 = local_28;
-    if (_e31) {
-        uint _e35 = h_3;
-        const float _e36 = grid_reach(_e35);
-        local_29 = (rl_5.w <= _e36);
-    } else {
-        local_29 = false;
-    }
-    bool _e39 = local_29;
-    if (_e39) {
-        const uint _e40 = bsh_grid_cell(_e20, x_13);
-        if ((_e40 != BSH_NONE)) {
-            uint _e45 = h_3;
-            uint _e50 = asuint(grid.Load(((_e45 + GRID_HEADER) + _e40)*4));
-            c_7.i = _e50;
-            uint _e53 = h_3;
-            uint _e60 = asuint(grid.Load((((_e53 + GRID_HEADER) + _e40) + 1u)*4));
-            c_7.end = _e60;
-            uint _e65 = asuint(bsh_nodes.Load(20+0));
-            c_7.next = _e65;
+    c_9.next = _e10;
+    c_9.cone = (0.0).xx;
+    uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
+    bool loop_init_1 = true;
+    while(true) {
+        if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
+        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+        if (!loop_init_1) {
+            uint _e34 = g;
+            g = (_e34 + 1u);
+        }
+        loop_init_1 = false;
+        uint _e18 = g;
+        if ((_e18 < 2u)) {
+            uint _e24 = h_3;
+            const float _e25 = grid_reach(_e24);
+            local_35 = (rl_6.w > _e25);
+        } else {
+            local_35 = false;
+        }
+        bool _e28 = local_35;
+        if (_e28) {
+        } else {
+            break;
+        }
+        {
+            uint _e29 = h_3;
+            const uint _e32 = grid_word((_e29 + 14u));
+            h_3 = _e32;
         }
     }
-    BshCursor _e66 = c_7;
-    const BshCursor bshcursor = _e66;
+    uint _e36 = h_3;
+    const GridFrame _e37 = grid_frame(_e36);
+    uint _e39 = c_9.next;
+    if ((_e39 != BSH_NONE)) {
+        local_36 = (_e37.nx > 0u);
+    } else {
+        local_36 = false;
+    }
+    bool _e48 = local_36;
+    if (_e48) {
+        uint _e52 = h_3;
+        const float _e53 = grid_reach(_e52);
+        local_37 = (rl_6.w <= _e53);
+    } else {
+        local_37 = false;
+    }
+    bool _e56 = local_37;
+    if (_e56) {
+        const uint _e57 = bsh_grid_cell(_e37, x_14);
+        if ((_e57 != BSH_NONE)) {
+            uint _e62 = h_3;
+            uint _e67 = asuint(grid.Load(((_e62 + GRID_HEADER) + _e57)*4));
+            c_9.i = _e67;
+            uint _e70 = h_3;
+            uint _e77 = asuint(grid.Load((((_e70 + GRID_HEADER) + _e57) + 1u)*4));
+            c_9.end = _e77;
+            uint _e82 = asuint(bsh_nodes.Load(20+0));
+            c_9.next = _e82;
+            const float2 _e84 = lobe_cone(rl_6);
+            c_9.cone = _e84;
+        }
+    }
+    BshCursor _e85 = c_9;
+    const BshCursor bshcursor = _e85;
     return bshcursor;
 }
 
-uint bsh_cursor_next(inout BshCursor c_8, float3 x_14, float3 r_8, float4 rl_6)
+uint bsh_cursor_next(inout BshCursor c_10, float3 x_15, float3 r_8, float4 rl_7)
 {
-    uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
+    bool local_38 = (bool)0;
+    bool local_39 = (bool)0;
+
+    uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
     while(true) {
-        if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
-        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
-        uint _e5 = c_8.i;
-        uint _e7 = c_8.end;
+        if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
+        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+        uint _e5 = c_10.i;
+        uint _e7 = c_10.end;
         if ((_e5 < _e7)) {
         } else {
             break;
         }
         {
-            uint _e11 = c_8.i;
-            uint b_8 = asuint(grid_entries.Load(_e11*4));
-            uint _e15 = c_8.i;
-            c_8.i = (_e15 + 1u);
-            BshNode _e20 = ConstructBshNode(asfloat(bsh_nodes.Load3(b_8*32+0)), asfloat(bsh_nodes.Load(b_8*32+12)), asuint(bsh_nodes.Load(b_8*32+16)), asuint(bsh_nodes.Load(b_8*32+20)), asuint(bsh_nodes.Load(b_8*32+24)), asfloat(bsh_nodes.Load(b_8*32+28)));
-            const bool _e21 = bsh_reaches(_e20, x_14, r_8, rl_6);
-            if (_e21) {
-                return b_8;
+            uint _e11 = c_10.i;
+            uint b_9 = asuint(grid_entries.Load(_e11*4));
+            uint _e15 = c_10.i;
+            c_10.i = (_e15 + 1u);
+            BshNode n_25 = ConstructBshNode(asfloat(bsh_nodes.Load3(b_9*32+0)), asfloat(bsh_nodes.Load(b_9*32+12)), asuint(bsh_nodes.Load(b_9*32+16)), asuint(bsh_nodes.Load(b_9*32+20)), asuint(bsh_nodes.Load(b_9*32+24)), asfloat(bsh_nodes.Load(b_9*32+28)));
+            if (!((rl_7.w <= 1.0))) {
+                float2 _e32 = c_10.cone;
+                const bool _e33 = bsh_lobe_admits(n_25.center_, n_25.radius, n_25.extent, x_15, rl_7.w, r_8, _e32);
+                local_38 = _e33;
+            } else {
+                local_38 = true;
+            }
+            bool _e35 = local_38;
+            if (_e35) {
+                const bool _e38 = bsh_reaches(n_25, x_15, r_8, rl_7);
+                local_39 = _e38;
+            } else {
+                local_39 = false;
+            }
+            bool _e40 = local_39;
+            if (_e40) {
+                return b_9;
             }
         }
     }
-    uint _e24 = c_8.next;
-    const uint _e25 = bsh_next_leaf_lobe(BSH, _e24, x_14, r_8, rl_6);
-    if ((_e25 != BSH_NONE)) {
-        uint _e32 = asuint(bsh_nodes.Load(20+_e25*32));
-        c_8.next = _e32;
+    uint _e43 = c_10.next;
+    const uint _e44 = bsh_next_leaf_lobe(BSH, _e43, x_15, r_8, rl_7);
+    if ((_e44 != BSH_NONE)) {
+        uint _e51 = asuint(bsh_nodes.Load(20+_e44*32));
+        c_10.next = _e51;
     }
-    return _e25;
+    return _e44;
 }
 
 float next_threshold(float sum_1, inout uint h_4)
@@ -1694,46 +1852,46 @@ float next_threshold(float sum_1, inout uint h_4)
     return _e6;
 }
 
-Connection connect_record(GpuLight l_8, float3 x_15, float3 n_15, float3 ng_1, float r2_3, float rt2_6, float w_res, float u1_2, float u2_2, float eps, bool trace_1)
+Connection connect_record(GpuLight l_8, float3 x_16, float3 n_15, float3 ng_1, float r2_3, float rt2_6, float w_res, float u1_2, float u2_2, float eps, bool trace_1)
 {
-    Connection c_9 = (Connection)0;
-    bool local_30 = (bool)0;
-    bool local_31 = (bool)0;
+    Connection c_11 = (Connection)0;
+    bool local_40 = (bool)0;
+    bool local_41 = (bool)0;
 
-    c_9.e = (0.0).xxx;
+    c_11.e = (0.0).xxx;
     const float3 _e16 = light_point(l_8, u1_2, u2_2);
-    c_9.y = _e16;
-    float3 _e19 = c_9.y;
-    const float _e20 = connection_cosine(x_15, _e19, n_15, ng_1, r2_3);
-    c_9.cos_x = _e20;
-    float _e22 = c_9.cos_x;
+    c_11.y = _e16;
+    float3 _e19 = c_11.y;
+    const float _e20 = connection_cosine(x_16, _e19, n_15, ng_1, r2_3);
+    c_11.cos_x = _e20;
+    float _e22 = c_11.cos_x;
     if (!((_e22 <= 0.0))) {
         if (trace_1) {
-            float3 _e33 = c_9.y;
-            const bool _e34 = occluded((x_15 + (ng_1 * eps)), _e33);
-            local_31 = _e34;
+            float3 _e33 = c_11.y;
+            const bool _e34 = occluded((x_16 + (ng_1 * eps)), _e33);
+            local_41 = _e34;
         } else {
-            local_31 = false;
+            local_41 = false;
         }
-        bool _e36 = local_31;
-        local_30 = _e36;
+        bool _e36 = local_41;
+        local_40 = _e36;
     } else {
-        local_30 = true;
+        local_40 = true;
     }
-    bool _e38 = local_30;
+    bool _e38 = local_40;
     if (_e38) {
-        Connection _e39 = c_9;
+        Connection _e39 = c_11;
         const Connection connection = _e39;
         return connection;
     }
-    float3 _e41 = c_9.y;
-    float3 v_17 = (x_15 - _e41);
-    float d2_13 = dot(v_17, v_17);
-    const float3 _e48 = light_intensity(l_8, (v_17 / (sqrt(d2_13)).xxx));
-    float _e50 = c_9.cos_x;
-    const float _e51 = connection_factor(_e50, d2_13, rt2_6, w_res);
-    c_9.e = (_e48 * _e51);
-    Connection _e53 = c_9;
+    float3 _e41 = c_11.y;
+    float3 v_19 = (x_16 - _e41);
+    float d2_15 = dot(v_19, v_19);
+    const float3 _e48 = light_intensity(l_8, (v_19 / (sqrt(d2_15)).xxx));
+    float _e50 = c_11.cos_x;
+    const float _e51 = connection_factor(_e50, d2_15, rt2_6, w_res);
+    c_11.e = (_e48 * _e51);
+    Connection _e53 = c_11;
     const Connection connection_1 = _e53;
     return connection_1;
 }
@@ -1751,19 +1909,19 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
     return ret;
 }
 
-Connection connect_traced(uint li, float3 x_16, float3 n_16, float3 ng_2, float s_1, float w_res_1, float u1_3, float u2_3, float eps_1, bool trace_2)
+Connection connect_traced(uint li, float3 x_17, float3 n_16, float3 ng_2, float s_1, float w_res_1, float u1_3, float u2_3, float eps_1, bool trace_2)
 {
     GpuLight _e12 = ConstructGpuLight(asfloat(lights.Load3(li*64+0)), asuint(lights.Load(li*64+12)), asfloat(lights.Load3(li*64+16)), asfloat(lights.Load(li*64+28)), asfloat(lights.Load3(li*64+32)), asfloat(lights.Load(li*64+44)), asfloat(lights.Load3(li*64+48)), asuint(lights.Load(li*64+60)));
     float _e15 = asfloat(r2_4.Load(li*4));
     float _e19 = asfloat(rt2_7.Load(li*4));
-    const Connection _e21 = connect_record(_e12, x_16, n_16, ng_2, (s_1 * _e15), (s_1 * _e19), w_res_1, u1_3, u2_3, eps_1, trace_2);
+    const Connection _e21 = connect_record(_e12, x_17, n_16, ng_2, (s_1 * _e15), (s_1 * _e19), w_res_1, u1_3, u2_3, eps_1, trace_2);
     const Connection connection_2 = _e21;
     return connection_2;
 }
 
-Connection connect(uint li_1, float3 x_17, float3 n_17, float3 ng_3, float s_2, float w_res_2, float u1_4, float u2_4, float eps_2)
+Connection connect(uint li_1, float3 x_18, float3 n_17, float3 ng_3, float s_2, float w_res_2, float u1_4, float u2_4, float eps_2)
 {
-    const Connection _e10 = connect_traced(li_1, x_17, n_17, ng_3, s_2, w_res_2, u1_4, u2_4, eps_2, true);
+    const Connection _e10 = connect_traced(li_1, x_18, n_17, ng_3, s_2, w_res_2, u1_4, u2_4, eps_2, true);
     const Connection connection_3 = _e10;
     return connection_3;
 }
@@ -1787,47 +1945,47 @@ GpuLightCone ConstructGpuLightCone(float3 arg0, float arg1, float3 arg2, float a
     return ret;
 }
 
-float light_range_scale(uint li_2, float3 x_18, float3 r_9, float4 rl_7)
+float light_range_scale(uint li_2, float3 x_19, float3 r_9, float4 rl_8)
 {
-    GpuLightCone c_15 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_2*48+0)), asfloat(light_cones.Load(li_2*48+12)), asfloat(light_cones.Load3(li_2*48+16)), asfloat(light_cones.Load(li_2*48+28)), asfloat(light_cones.Load(li_2*48+32)), asfloat(light_cones.Load(li_2*48+36)), asuint(light_cones.Load(li_2*48+40)), asuint(light_cones.Load(li_2*48+44)));
-    const float _e9 = range_scale_toward(rl_7, c_15.center_, c_15.radius, x_18, r_9);
+    GpuLightCone c_17 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_2*48+0)), asfloat(light_cones.Load(li_2*48+12)), asfloat(light_cones.Load3(li_2*48+16)), asfloat(light_cones.Load(li_2*48+28)), asfloat(light_cones.Load(li_2*48+32)), asfloat(light_cones.Load(li_2*48+36)), asuint(light_cones.Load(li_2*48+40)), asuint(light_cones.Load(li_2*48+44)));
+    const float _e9 = range_scale_toward(rl_8, c_17.center_, c_17.radius, x_19, r_9);
     return _e9;
 }
 
-float light_weight(uint li_3, float3 x_19, float3 n_18, float3 r_10, float4 lobe_7, float4 rl_8)
+float light_weight(uint li_3, float3 x_20, float3 n_18, float3 r_10, float4 lobe_7, float4 rl_9)
 {
-    GpuLightCone c_16 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_3*48+0)), asfloat(light_cones.Load(li_3*48+12)), asfloat(light_cones.Load3(li_3*48+16)), asfloat(light_cones.Load(li_3*48+28)), asfloat(light_cones.Load(li_3*48+32)), asfloat(light_cones.Load(li_3*48+36)), asuint(light_cones.Load(li_3*48+40)), asuint(light_cones.Load(li_3*48+44)));
-    const float _e15 = light_range_scale(li_3, x_19, r_10, rl_8);
+    GpuLightCone c_18 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_3*48+0)), asfloat(light_cones.Load(li_3*48+12)), asfloat(light_cones.Load3(li_3*48+16)), asfloat(light_cones.Load(li_3*48+28)), asfloat(light_cones.Load(li_3*48+32)), asfloat(light_cones.Load(li_3*48+36)), asuint(light_cones.Load(li_3*48+40)), asuint(light_cones.Load(li_3*48+44)));
+    const float _e15 = light_range_scale(li_3, x_20, r_10, rl_9);
     float _e18 = asfloat(rt2_7.Load(li_3*4));
-    const float _e20 = cone_weight(c_16.center_, c_16.radius, c_16.phi, c_16.axis, c_16.cos_o, c_16.cos_e, (_e15 * _e18), x_19, n_18, r_10, lobe_7);
+    const float _e20 = cone_weight(c_18.center_, c_18.radius, c_18.phi, c_18.axis, c_18.cos_o, c_18.cos_e, (_e15 * _e18), x_20, n_18, r_10, lobe_7);
     return _e20;
 }
 
-float select_pdf(uint li_4, float3 x_20, float3 n_19, float3 r_11, float4 lobe_8, float4 rl_9, uint nee, bool in_range_1)
+float select_pdf(uint li_4, float3 x_21, float3 n_19, float3 r_11, float4 lobe_8, float4 rl_10, uint nee, bool in_range_1)
 {
-    const float _e8 = light_weight(li_4, x_20, n_19, r_11, lobe_8, rl_9);
+    const float _e8 = light_weight(li_4, x_21, n_19, r_11, lobe_8, rl_10);
     const float _e11 = weighted_select_pdf(_e8, asfloat(nee), in_range_1, K);
     return _e11;
 }
 
-float light_pdf_selected(uint li_5, float3 x_21, float3 r_12, float4 rl_10, float3 y_2, float sel)
+float light_pdf_selected(uint li_5, float3 x_22, float3 r_12, float4 rl_11, float3 y_2, float sel)
 {
     GpuLight l_9 = ConstructGpuLight(asfloat(lights.Load3(li_5*64+0)), asuint(lights.Load(li_5*64+12)), asfloat(lights.Load3(li_5*64+16)), asfloat(lights.Load(li_5*64+28)), asfloat(lights.Load3(li_5*64+32)), asfloat(lights.Load(li_5*64+44)), asfloat(lights.Load3(li_5*64+48)), asuint(lights.Load(li_5*64+60)));
-    float3 v_18 = (x_21 - y_2);
-    float d2_14 = dot(v_18, v_18);
+    float3 v_20 = (x_22 - y_2);
+    float d2_16 = dot(v_20, v_20);
     const float3 _e11 = light_normal(l_9);
-    float cos_y_1 = ((d2_14 > 0.0) ? dot(_e11, (v_18 / (sqrt(d2_14)).xxx)) : 0.0);
-    const float _e20 = light_range_scale(li_5, x_21, r_12, rl_10);
+    float cos_y_1 = ((d2_16 > 0.0) ? dot(_e11, (v_20 / (sqrt(d2_16)).xxx)) : 0.0);
+    const float _e20 = light_range_scale(li_5, x_22, r_12, rl_11);
     float _e23 = asfloat(rt2_7.Load(li_5*4));
     const float _e25 = light_area(l_9);
-    const float _e26 = light_strategy_pdf(sel, (_e20 * _e23), d2_14, _e25, cos_y_1);
+    const float _e26 = light_strategy_pdf(sel, (_e20 * _e23), d2_16, _e25, cos_y_1);
     return _e26;
 }
 
-float light_pdf(uint li_6, float3 x_22, float3 n_20, float3 r_13, float4 lobe_9, float4 rl_11, float3 y_3, uint nee_1, bool in_range_2)
+float light_pdf(uint li_6, float3 x_23, float3 n_20, float3 r_13, float4 lobe_9, float4 rl_12, float3 y_3, uint nee_1, bool in_range_2)
 {
-    const float _e9 = select_pdf(li_6, x_22, n_20, r_13, lobe_9, rl_11, nee_1, in_range_2);
-    const float _e10 = light_pdf_selected(li_6, x_22, r_13, rl_11, y_3, _e9);
+    const float _e9 = select_pdf(li_6, x_23, n_20, r_13, lobe_9, rl_12, nee_1, in_range_2);
+    const float _e10 = light_pdf_selected(li_6, x_23, r_13, rl_12, y_3, _e9);
     return _e10;
 }
 
@@ -1843,28 +2001,28 @@ WeightedPicks weighted_picks(uint h_5)
     return weightedpicks;
 }
 
-void weighted_offer(inout WeightedPicks picks_1, uint li_7, float w_9)
+void weighted_offer(inout WeightedPicks picks_1, uint li_7, float w_10)
 {
     uint h_6 = (uint)0;
     uint s_3 = 0u;
 
     uint _e4 = picks_1.n;
     picks_1.n = (_e4 + 1u);
-    if ((w_9 > 0.0)) {
+    if ((w_10 > 0.0)) {
         float _e10 = picks_1.w_sum;
-        picks_1.w_sum = (_e10 + w_9);
+        picks_1.w_sum = (_e10 + w_10);
         uint _e13 = picks_1.h;
         h_6 = _e13;
-        uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
-        bool loop_init_1 = true;
+        uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
+        bool loop_init_2 = true;
         while(true) {
-            if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
-            loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
-            if (!loop_init_1) {
+            if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
+            loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+            if (!loop_init_2) {
                 uint _e40 = s_3;
                 s_3 = (_e40 + 1u);
             }
-            loop_init_1 = false;
+            loop_init_2 = false;
             uint _e17 = s_3;
             if ((_e17 < K)) {
             } else {
@@ -1878,7 +2036,7 @@ void weighted_offer(inout WeightedPicks picks_1, uint li_7, float w_9)
                     uint _e28 = s_3;
                     picks_1.light[min(uint(_e28), 7u)] = li_7;
                     uint _e31 = s_3;
-                    picks_1.w[min(uint(_e31), 7u)] = w_9;
+                    picks_1.w[min(uint(_e31), 7u)] = w_10;
                     uint _e34 = s_3;
                     float _e37 = picks_1.w_sum;
                     const float _e38 = next_threshold(_e37, h_6);
@@ -1894,7 +2052,7 @@ void weighted_offer(inout WeightedPicks picks_1, uint li_7, float w_9)
     }
 }
 
-WeightedPicks bsh_weighted_collect(float3 x_23, float3 n_21, float3 r_14, float4 lobe_10, float4 rl_12, uint h0_)
+WeightedPicks bsh_weighted_collect(float3 x_24, float3 n_21, float3 r_14, float4 lobe_10, float4 rl_13, uint h0_)
 {
     WeightedPicks picks_2 = (WeightedPicks)0;
     BshCursor cur = (BshCursor)0;
@@ -1902,20 +2060,20 @@ WeightedPicks bsh_weighted_collect(float3 x_23, float3 n_21, float3 r_14, float4
 
     const WeightedPicks _e6 = weighted_picks(h0_);
     picks_2 = _e6;
-    const BshCursor _e8 = bsh_cursor(x_23, r_14, rl_12);
+    const BshCursor _e8 = bsh_cursor(x_24, r_14, rl_13);
     cur = _e8;
-    const uint _e10 = bsh_cursor_next(cur, x_23, r_14, rl_12);
+    const uint _e10 = bsh_cursor_next(cur, x_24, r_14, rl_13);
     b_6 = _e10;
-    uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
-    bool loop_init_2 = true;
+    uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
+    bool loop_init_3 = true;
     while(true) {
-        if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
-        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-        if (!loop_init_2) {
-            const uint _e21 = bsh_cursor_next(cur, x_23, r_14, rl_12);
+        if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
+        loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
+        if (!loop_init_3) {
+            const uint _e21 = bsh_cursor_next(cur, x_24, r_14, rl_13);
             b_6 = _e21;
         }
-        loop_init_2 = false;
+        loop_init_3 = false;
         uint _e12 = b_6;
         if ((_e12 != BSH_NONE)) {
         } else {
@@ -1924,7 +2082,7 @@ WeightedPicks bsh_weighted_collect(float3 x_23, float3 n_21, float3 r_14, float4
         {
             uint _e16 = b_6;
             uint li_9 = asuint(bsh_nodes.Load(24+_e16*32));
-            const float _e20 = light_weight(li_9, x_23, n_21, r_14, lobe_10, rl_12);
+            const float _e20 = light_weight(li_9, x_24, n_21, r_14, lobe_10, rl_13);
             weighted_offer(picks_2, li_9, _e20);
         }
     }
@@ -1933,21 +2091,21 @@ WeightedPicks bsh_weighted_collect(float3 x_23, float3 n_21, float3 r_14, float4
     return weightedpicks_1;
 }
 
-float3 shade_pick(uint li_8, float3 x_24, float3 n_22, float3 ng_4, GpuMaterial m, float3 wo_1, float3 r_15, float4 lobe_11, float4 rl_13, float w_10, uint nee_2, float u1_5, float u2_5)
+float3 shade_pick(uint li_8, float3 x_25, float3 n_22, float3 ng_4, GpuMaterial m, float3 wo_1, float3 r_15, float4 lobe_11, float4 rl_14, float w_11, uint nee_2, float u1_5, float u2_5)
 {
     float mis = 1.0;
 
-    const float _e13 = light_range_scale(li_8, x_24, r_15, rl_13);
+    const float _e13 = light_range_scale(li_8, x_25, r_15, rl_14);
     float _e16 = params.eps;
-    const Connection _e17 = connect(li_8, x_24, n_22, ng_4, _e13, w_10, u1_5, u2_5, _e16);
+    const Connection _e17 = connect(li_8, x_25, n_22, ng_4, _e13, w_11, u1_5, u2_5, _e16);
     if ((_e17.cos_x <= 0.0)) {
         return (0.0).xxx;
     }
-    float3 l_10 = normalize((_e17.y - x_24));
+    float3 l_10 = normalize((_e17.y - x_25));
     GpuLight _e30 = ConstructGpuLight(asfloat(lights.Load3(li_8*64+0)), asuint(lights.Load(li_8*64+12)), asfloat(lights.Load3(li_8*64+16)), asfloat(lights.Load(li_8*64+28)), asfloat(lights.Load3(li_8*64+32)), asfloat(lights.Load(li_8*64+44)), asfloat(lights.Load3(li_8*64+48)), asuint(lights.Load(li_8*64+60)));
     const float _e31 = light_area(_e30);
     if ((_e31 > 0.0)) {
-        const float _e36 = light_pdf(li_8, x_24, n_22, r_15, lobe_11, rl_13, _e17.y, nee_2, true);
+        const float _e36 = light_pdf(li_8, x_25, n_22, r_15, lobe_11, rl_14, _e17.y, nee_2, true);
         const float _e38 = specular_probability(lobe_11);
         const float _e39 = bsdf_pdf(n_22, wo_1, l_10, m.alpha, _e38);
         const float _e40 = mis_weight(_e36, _e39);
@@ -2001,13 +2159,13 @@ void main(uint3 gid : SV_DispatchThreadID)
         candidates.Store(i_5*4, asuint(0u));
         return;
     }
-    float3 x_25 = vtx.position;
-    float3 n_25 = vtx.normal;
+    float3 x_26 = vtx.position;
+    float3 n_26 = vtx.normal;
     float3 ng_5 = vtx.gnormal;
     GpuMaterial m_2 = ConstructGpuMaterial(asfloat(materials.Load3(vtx.material*48+0)), asfloat(materials.Load(vtx.material*48+12)), asfloat(materials.Load3(vtx.material*48+16)), asfloat(materials.Load(vtx.material*48+28)), asfloat(materials.Load3(vtx.material*48+32)), asfloat(materials.Load(vtx.material*48+44)));
     float3 wo_2 = vtx.wo;
-    const float3 _e23 = mirror_dir(n_25, wo_2);
-    const float4 _e30 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, dot(n_25, wo_2));
+    const float3 _e23 = mirror_dir(n_26, wo_2);
+    const float4 _e30 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, dot(n_26, wo_2));
     const float4 _e31 = range_lobe(_e30);
     uint _e34 = params.seed;
     uint _e37 = params.frame;
@@ -2015,21 +2173,21 @@ void main(uint3 gid : SV_DispatchThreadID)
     const uint _e39 = pick_stream(_e38);
     h = _e39;
     uint _e44 = h;
-    const WeightedPicks _e45 = bsh_weighted_collect(x_25, n_25, _e23, _e30, _e31, _e44);
+    const WeightedPicks _e45 = bsh_weighted_collect(x_26, n_26, _e23, _e30, _e31, _e44);
     h = _e45.h;
     float w_sum_3 = _e45.w_sum;
     candidates.Store(i_5*4, asuint(asuint(w_sum_3)));
     if ((w_sum_3 > 0.0)) {
-        uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
-        bool loop_init_3 = true;
+        uint2 loop_bound_9 = uint2(4294967295u, 4294967295u);
+        bool loop_init_4 = true;
         while(true) {
-            if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
-            loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
-            if (!loop_init_3) {
+            if (all(loop_bound_9 == uint2(0u, 0u))) { break; }
+            loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
+            if (!loop_init_4) {
                 uint _e79 = s;
                 s = (_e79 + 1u);
             }
-            loop_init_3 = false;
+            loop_init_4 = false;
             uint _e55 = s;
             if ((_e55 < K)) {
             } else {
@@ -2050,7 +2208,7 @@ void main(uint3 gid : SV_DispatchThreadID)
                 const float _e72 = weighted_pick_weight(w_sum_3, _e45.w[min(uint(_e69), 7u)], K);
                 uint _e74 = h;
                 const float _e75 = xi_from_bits(_e74);
-                const float3 _e76 = shade_pick(_e45.light[min(uint(_e66), 7u)], x_25, n_25, ng_5, m_2, wo_2, _e23, _e30, _e31, _e72, asuint(w_sum_3), _e61, _e75);
+                const float3 _e76 = shade_pick(_e45.light[min(uint(_e66), 7u)], x_26, n_26, ng_5, m_2, wo_2, _e23, _e30, _e31, _e72, asuint(w_sum_3), _e61, _e75);
                 sum = (_e64 + _e76);
             }
         }

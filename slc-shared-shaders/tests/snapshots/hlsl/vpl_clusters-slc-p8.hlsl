@@ -48,6 +48,7 @@ static const uint LIGHT_VPL = 4u;
 static const uint NO_LIGHT = 4294967295u;
 static const uint GRID_HEADER = 32u;
 static const uint GRID_LEVELS_MAX = 8u;
+static const uint GRID_SORT_MAX = 1536u;
 static const uint COUNT_TILES = 0u;
 static const uint COUNT_GROUP_TESTS = 1u;
 static const uint COUNT_CLUSTER_TESTS = 2u;

@@ -23,7 +23,7 @@ struct GridParams {
     uint header;
     uint fill;
     uint entries;
-    uint pad0_;
+    uint least;
     uint pad1_;
     uint pad2_;
 };
@@ -50,6 +50,9 @@ typedef metal::atomic_uint type_8[1];
 struct type_10 {
     uint inner[64];
 };
+struct type_11 {
+    uint inner[1536];
+};
 constant uint LIGHT_POINT = 0u;
 constant uint LIGHT_SPOT = 1u;
 constant uint LIGHT_IES = 2u;
@@ -58,6 +61,7 @@ constant uint LIGHT_VPL = 4u;
 constant uint NO_LIGHT = 4294967295u;
 constant uint GRID_HEADER = 32u;
 constant uint GRID_LEVELS_MAX = 8u;
+constant uint GRID_SORT_MAX = 1536u;
 constant uint COUNT_TILES = 0u;
 constant uint COUNT_GROUP_TESTS = 1u;
 constant uint COUNT_CLUSTER_TESTS = 2u;
@@ -115,6 +119,7 @@ constant float TEMPORAL_CHANGE_LOW = 4.0;
 constant float TEMPORAL_CHANGE_HIGH = 8.0;
 constant float TEMPORAL_MIN_WEIGHT = 0.01;
 constant uint GRID_ENTRIES_PER_LIGHT = 8u;
+constant float LOBE_CONE_PAD = 1.001;
 
 uint naga_f2u32(float value) {
     return static_cast<uint>(metal::clamp(value, 0.0, 4294967000.0));
@@ -159,14 +164,15 @@ float bsh_reach_bound(
 
 uint bsh_grid_budget(
     uint leaves,
-    uint cells
+    uint cells,
+    uint least
 ) {
     if (leaves > 536870911u) {
         return 4294967295u;
     }
     uint e = leaves * GRID_ENTRIES_PER_LIGHT;
-    uint _e7 = add_wrap_u32_(e, cells);
-    return (_e7 < e) ? 4294967295u : _e7;
+    uint _e8 = add_wrap_u32_(e, cells);
+    return metal::max((_e8 < e) ? 4294967295u : _e8, least);
 }
 
 float bsh_grid_reach(
@@ -210,23 +216,23 @@ float bsh_grid_radius(
 
 metal::uint3 bsh_grid_first(
     GridFrame f_1,
-    metal::float3 c_3,
+    metal::float3 c_2,
     float r
 ) {
-    uint _e10 = bsh_grid_axis(c_3.x - r, f_1.lo[0], f_1.inv[0], f_1.nx);
-    uint _e18 = bsh_grid_axis(c_3.y - r, f_1.lo[1], f_1.inv[1], f_1.ny);
-    uint _e26 = bsh_grid_axis(c_3.z - r, f_1.lo[2], f_1.inv[2], f_1.nz);
+    uint _e10 = bsh_grid_axis(c_2.x - r, f_1.lo[0], f_1.inv[0], f_1.nx);
+    uint _e18 = bsh_grid_axis(c_2.y - r, f_1.lo[1], f_1.inv[1], f_1.ny);
+    uint _e26 = bsh_grid_axis(c_2.z - r, f_1.lo[2], f_1.inv[2], f_1.nz);
     return metal::uint3(_e10, _e18, _e26);
 }
 
 metal::uint3 bsh_grid_last(
     GridFrame f_2,
-    metal::float3 c_4,
+    metal::float3 c_3,
     float r_1
 ) {
-    uint _e10 = bsh_grid_axis(c_4.x + r_1, f_2.lo[0], f_2.inv[0], f_2.nx);
-    uint _e18 = bsh_grid_axis(c_4.y + r_1, f_2.lo[1], f_2.inv[1], f_2.ny);
-    uint _e26 = bsh_grid_axis(c_4.z + r_1, f_2.lo[2], f_2.inv[2], f_2.nz);
+    uint _e10 = bsh_grid_axis(c_3.x + r_1, f_2.lo[0], f_2.inv[0], f_2.nx);
+    uint _e18 = bsh_grid_axis(c_3.y + r_1, f_2.lo[1], f_2.inv[1], f_2.ny);
+    uint _e26 = bsh_grid_axis(c_3.z + r_1, f_2.lo[2], f_2.inv[2], f_2.nz);
     return metal::uint3(_e10, _e18, _e26);
 }
 
@@ -280,6 +286,202 @@ uint grid_leaf(
     }
     return node_4;
 }
+
+void sort_cell(
+    uint cell,
+    uint li_1,
+    constant GridParams& params,
+    device type_5 const& grid_leaves,
+    device type_8 const& grid,
+    device type_8& grid_fill,
+    device type_5& grid_entries,
+    threadgroup type_11& wg_cell,
+    threadgroup metal::uint2& wg_span,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::uint2 span = metal::uint2(0u);
+    uint s = {};
+    uint c_4 = {};
+    bool local_3 = {};
+    uint s_1 = {};
+    uint j_1 = {};
+    uint j_2 = {};
+    uint below = {};
+    uint m = {};
+    uint _e4 = params.header;
+    uint starts = _e4 + GRID_HEADER;
+    if (li_1 == 0u) {
+        uint _e11 = params.header;
+        GridFrame _e12 = grid_frame(_e11, grid, _buffer_sizes);
+        if (cell < ((_e12.nx * _e12.ny) * _e12.nz)) {
+            uint _e25 = metal::atomic_load_explicit(&grid[starts + cell], metal::memory_order_relaxed);
+            uint _e31 = metal::atomic_load_explicit(&grid[(starts + cell) + 1u], metal::memory_order_relaxed);
+            span = metal::uint2(_e25, _e31);
+            uint _e36 = params.fill;
+            metal::atomic_store_explicit(&grid_fill[_e36 + cell], 0u, metal::memory_order_relaxed);
+        }
+        metal::uint2 _e41 = span;
+        wg_span = _e41;
+    }
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    metal::uint2 unnamed = wg_span;
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    uint a_1 = unnamed.x;
+    uint n_1 = unnamed.y - unnamed.x;
+    if (n_1 > GRID_SORT_MAX) {
+        if (li_1 == 0u) {
+            s = a_1 + 1u;
+            uint2 loop_bound = uint2(4294967295u);
+            bool loop_init = true;
+            while(true) {
+                if (metal::all(loop_bound == uint2(0u))) { break; }
+                loop_bound -= uint2(loop_bound.y == 0u, 1u);
+                if (!loop_init) {
+                    uint _e93 = s;
+                    s = _e93 + 1u;
+                }
+                loop_init = false;
+                uint _e55 = s;
+                if (_e55 < (a_1 + n_1)) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e59 = s;
+                    uint v_1 = grid_entries[_e59];
+                    uint _e62 = s;
+                    c_4 = _e62;
+                    uint2 loop_bound_1 = uint2(4294967295u);
+                    while(true) {
+                        if (metal::all(loop_bound_1 == uint2(0u))) { break; }
+                        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+                        uint _e64 = c_4;
+                        if (_e64 > a_1) {
+                            uint _e69 = c_4;
+                            uint _e73 = grid_entries[_e69 - 1u];
+                            local_3 = _e73 > v_1;
+                        } else {
+                            local_3 = false;
+                        }
+                        bool _e76 = local_3;
+                        if (_e76) {
+                        } else {
+                            break;
+                        }
+                        {
+                            uint _e78 = c_4;
+                            uint _e81 = c_4;
+                            uint _e85 = grid_entries[_e81 - 1u];
+                            grid_entries[_e78] = _e85;
+                            uint _e86 = c_4;
+                            c_4 = _e86 - 1u;
+                        }
+                    }
+                    uint _e90 = c_4;
+                    grid_entries[_e90] = v_1;
+                }
+            }
+            s_1 = a_1;
+            uint2 loop_bound_2 = uint2(4294967295u);
+            bool loop_init_1 = true;
+            while(true) {
+                if (metal::all(loop_bound_2 == uint2(0u))) { break; }
+                loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
+                if (!loop_init_1) {
+                    uint _e110 = s_1;
+                    s_1 = _e110 + 1u;
+                }
+                loop_init_1 = false;
+                uint _e96 = s_1;
+                if (_e96 < (a_1 + n_1)) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e100 = s_1;
+                    uint _e104 = s_1;
+                    uint _e106 = grid_entries[_e104];
+                    uint _e108 = grid_leaves[_e106];
+                    grid_entries[_e100] = _e108;
+                }
+            }
+        }
+        return;
+    }
+    j_1 = li_1;
+    uint2 loop_bound_3 = uint2(4294967295u);
+    bool loop_init_2 = true;
+    while(true) {
+        if (metal::all(loop_bound_3 == uint2(0u))) { break; }
+        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+        if (!loop_init_2) {
+            uint _e123 = j_1;
+            j_1 = _e123 + 64u;
+        }
+        loop_init_2 = false;
+        uint _e113 = j_1;
+        if (_e113 < n_1) {
+        } else {
+            break;
+        }
+        {
+            uint _e116 = j_1;
+            uint _e119 = j_1;
+            uint _e122 = grid_entries[a_1 + _e119];
+            wg_cell.inner[_e116] = _e122;
+        }
+    }
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    j_2 = li_1;
+    uint2 loop_bound_4 = uint2(4294967295u);
+    bool loop_init_3 = true;
+    while(true) {
+        if (metal::all(loop_bound_4 == uint2(0u))) { break; }
+        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+        if (!loop_init_3) {
+            uint _e159 = j_2;
+            j_2 = _e159 + 64u;
+        }
+        loop_init_3 = false;
+        uint _e127 = j_2;
+        if (_e127 < n_1) {
+        } else {
+            break;
+        }
+        {
+            uint _e130 = j_2;
+            uint v_2 = wg_cell.inner[_e130];
+            below = 0u;
+            m = 0u;
+            uint2 loop_bound_5 = uint2(4294967295u);
+            bool loop_init_4 = true;
+            while(true) {
+                if (metal::all(loop_bound_5 == uint2(0u))) { break; }
+                loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+                if (!loop_init_4) {
+                    uint _e150 = m;
+                    m = _e150 + 1u;
+                }
+                loop_init_4 = false;
+                uint _e137 = m;
+                if (_e137 < n_1) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e139 = below;
+                    uint _e143 = m;
+                    uint _e145 = wg_cell.inner[_e143];
+                    below = _e139 + ((_e145 < v_2) ? 1u : 0u);
+                }
+            }
+            uint _e153 = below;
+            uint _e158 = grid_leaves[v_2];
+            grid_entries[a_1 + _e153] = _e158;
+        }
+    }
+    return;
+}
 uint naga_div(uint lhs, uint rhs) {
     return lhs / metal::select(rhs, 1u, rhs == 0u);
 }
@@ -289,7 +491,9 @@ struct main_Input {
 };
 kernel void main_(
   metal::uint3 gid [[thread_position_in_grid]]
-, uint __local_invocation_index [[thread_index_in_threadgroup]]
+, metal::uint3 wid [[threadgroup_position_in_grid]]
+, metal::uint3 groups [[threadgroups_per_grid]]
+, uint li [[thread_index_in_threadgroup]]
 , constant GridParams& params [[user(fake0)]]
 , device type_4 const& bsh_nodes [[user(fake0)]]
 , device type_5 const& grid_leaves [[user(fake0)]]
@@ -298,10 +502,14 @@ kernel void main_(
 , device type_8& grid_fill [[user(fake0)]]
 , device type_5& grid_entries [[user(fake0)]]
 , threadgroup type_10& wg_sums
+, threadgroup type_11& wg_cell
+, threadgroup metal::uint2& wg_span
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
-    if (__local_invocation_index == 0u) {
+    if (li == 0u) {
         wg_sums = {};
+        wg_cell = {};
+        wg_span = {};
     }
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
     uint sum = 0u;
@@ -319,153 +527,154 @@ kernel void main_(
     uint z = {};
     uint y = {};
     uint x = {};
-    uint s = {};
-    uint c_2 = {};
-    bool local_3 = {};
-    uint s_1 = {};
+    uint _e6 = params.stage;
+    if (_e6 == 5u) {
+        sort_cell((wid.y * groups.x) + wid.x, li, params, grid_leaves, grid, grid_fill, grid_entries, wg_cell, wg_span, _buffer_sizes);
+        return;
+    }
     uint i_2 = gid.x;
     uint h_1 = params.header;
-    uint starts = h_1 + GRID_HEADER;
-    uint _e9 = params.stage;
-    if (_e9 == 3u) {
-        GridFrame _e12 = grid_frame(h_1, grid, _buffer_sizes);
-        uint cells_1 = (_e12.nx * _e12.ny) * _e12.nz;
+    uint starts_1 = h_1 + GRID_HEADER;
+    uint _e22 = params.stage;
+    if (_e22 == 3u) {
+        GridFrame _e25 = grid_frame(h_1, grid, _buffer_sizes);
+        uint cells_1 = (_e25.nx * _e25.ny) * _e25.nz;
         uint run = naga_div((cells_1 + 64u) - 1u, 64u);
-        uint a_1 = metal::min(i_2 * run, cells_1);
-        uint b_1 = metal::min(a_1 + run, cells_1);
-        c = a_1;
-        uint2 loop_bound = uint2(4294967295u);
-        bool loop_init = true;
+        uint a_2 = metal::min(i_2 * run, cells_1);
+        uint b_1 = metal::min(a_2 + run, cells_1);
+        c = a_2;
+        uint2 loop_bound_6 = uint2(4294967295u);
+        bool loop_init_5 = true;
         while(true) {
-            if (metal::all(loop_bound == uint2(0u))) { break; }
-            loop_bound -= uint2(loop_bound.y == 0u, 1u);
-            if (!loop_init) {
-                uint _e44 = c;
-                c = _e44 + 1u;
+            if (metal::all(loop_bound_6 == uint2(0u))) { break; }
+            loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+            if (!loop_init_5) {
+                uint _e57 = c;
+                c = _e57 + 1u;
             }
-            loop_init = false;
-            uint _e31 = c;
-            if (_e31 < b_1) {
+            loop_init_5 = false;
+            uint _e44 = c;
+            if (_e44 < b_1) {
             } else {
                 break;
             }
             {
-                uint _e33 = sum;
-                uint _e37 = params.fill;
-                uint _e38 = c;
-                uint _e41 = metal::atomic_load_explicit(&grid_fill[_e37 + _e38], metal::memory_order_relaxed);
-                sum = _e33 + _e41;
+                uint _e46 = sum;
+                uint _e50 = params.fill;
+                uint _e51 = c;
+                uint _e54 = metal::atomic_load_explicit(&grid_fill[_e50 + _e51], metal::memory_order_relaxed);
+                sum = _e46 + _e54;
             }
         }
-        uint _e48 = sum;
-        wg_sums.inner[i_2] = _e48;
+        uint _e61 = sum;
+        wg_sums.inner[i_2] = _e61;
         metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-        uint _e51 = params.entries;
-        start = _e51;
-        uint2 loop_bound_1 = uint2(4294967295u);
-        bool loop_init_1 = true;
+        uint _e64 = params.entries;
+        start = _e64;
+        uint2 loop_bound_7 = uint2(4294967295u);
+        bool loop_init_6 = true;
         while(true) {
-            if (metal::all(loop_bound_1 == uint2(0u))) { break; }
-            loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
-            if (!loop_init_1) {
-                uint _e64 = j;
-                j = _e64 + 1u;
+            if (metal::all(loop_bound_7 == uint2(0u))) { break; }
+            loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+            if (!loop_init_6) {
+                uint _e77 = j;
+                j = _e77 + 1u;
             }
-            loop_init_1 = false;
-            uint _e55 = j;
-            if (_e55 < i_2) {
+            loop_init_6 = false;
+            uint _e68 = j;
+            if (_e68 < i_2) {
             } else {
                 break;
             }
             {
-                uint _e57 = start;
-                uint _e59 = j;
-                uint _e61 = wg_sums.inner[_e59];
-                start = _e57 + _e61;
+                uint _e70 = start;
+                uint _e72 = j;
+                uint _e74 = wg_sums.inner[_e72];
+                start = _e70 + _e74;
             }
         }
-        c_1 = a_1;
-        uint2 loop_bound_2 = uint2(4294967295u);
-        bool loop_init_2 = true;
+        c_1 = a_2;
+        uint2 loop_bound_8 = uint2(4294967295u);
+        bool loop_init_7 = true;
         while(true) {
-            if (metal::all(loop_bound_2 == uint2(0u))) { break; }
-            loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
-            if (!loop_init_2) {
-                uint _e93 = c_1;
-                c_1 = _e93 + 1u;
+            if (metal::all(loop_bound_8 == uint2(0u))) { break; }
+            loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
+            if (!loop_init_7) {
+                uint _e106 = c_1;
+                c_1 = _e106 + 1u;
             }
-            loop_init_2 = false;
-            uint _e67 = c_1;
-            if (_e67 < b_1) {
+            loop_init_7 = false;
+            uint _e80 = c_1;
+            if (_e80 < b_1) {
             } else {
                 break;
             }
             {
-                uint _e72 = params.fill;
-                uint _e73 = c_1;
-                uint n_1 = metal::atomic_load_explicit(&grid_fill[_e72 + _e73], metal::memory_order_relaxed);
-                uint _e78 = c_1;
-                uint _e81 = start;
-                metal::atomic_store_explicit(&grid[starts + _e78], _e81, metal::memory_order_relaxed);
                 uint _e85 = params.fill;
                 uint _e86 = c_1;
-                uint _e89 = start;
-                metal::atomic_store_explicit(&grid_fill[_e85 + _e86], _e89, metal::memory_order_relaxed);
-                uint _e90 = start;
-                start = _e90 + n_1;
+                uint n_2 = metal::atomic_load_explicit(&grid_fill[_e85 + _e86], metal::memory_order_relaxed);
+                uint _e91 = c_1;
+                uint _e94 = start;
+                metal::atomic_store_explicit(&grid[starts_1 + _e91], _e94, metal::memory_order_relaxed);
+                uint _e98 = params.fill;
+                uint _e99 = c_1;
+                uint _e102 = start;
+                metal::atomic_store_explicit(&grid_fill[_e98 + _e99], _e102, metal::memory_order_relaxed);
+                uint _e103 = start;
+                start = _e103 + n_2;
             }
         }
         if ((i_2 + 1u) == 64u) {
-            uint _e102 = start;
-            metal::atomic_store_explicit(&grid[starts + cells_1], _e102, metal::memory_order_relaxed);
+            uint _e115 = start;
+            metal::atomic_store_explicit(&grid[starts_1 + cells_1], _e115, metal::memory_order_relaxed);
         }
         return;
     }
-    uint _e105 = params.stage;
-    switch(_e105) {
+    uint _e118 = params.stage;
+    switch(_e118) {
         case 0u: {
-            uint _e108 = params.count;
-            if (i_2 >= _e108) {
+            uint _e121 = params.count;
+            if (i_2 >= _e121) {
                 return;
             }
-            uint _e110 = grid_leaf(i_2, bsh_nodes, grid_leaves, _buffer_sizes);
-            if (_e110 == BSH_NONE) {
+            uint _e123 = grid_leaf(i_2, bsh_nodes, grid_leaves, _buffer_sizes);
+            if (_e123 == BSH_NONE) {
                 return;
             }
-            uint _e118 = metal::atomic_fetch_add_explicit(&grid[h_1 + 13u], 1u, metal::memory_order_relaxed);
-            BshNode leaf = bsh_nodes[_e110];
-            float _e124 = params.reach;
-            float _e125 = bsh_grid_radius(leaf, _e124);
-            uint2 loop_bound_3 = uint2(4294967295u);
-            bool loop_init_3 = true;
+            uint _e131 = metal::atomic_fetch_add_explicit(&grid[h_1 + 13u], 1u, metal::memory_order_relaxed);
+            BshNode leaf = bsh_nodes[_e123];
+            float _e137 = params.reach;
+            float _e138 = bsh_grid_radius(leaf, _e137);
+            uint2 loop_bound_9 = uint2(4294967295u);
+            bool loop_init_8 = true;
             while(true) {
-                if (metal::all(loop_bound_3 == uint2(0u))) { break; }
-                loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-                if (!loop_init_3) {
-                    uint _e172 = l;
-                    l = _e172 + 1u;
+                if (metal::all(loop_bound_9 == uint2(0u))) { break; }
+                loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
+                if (!loop_init_8) {
+                    uint _e185 = l;
+                    l = _e185 + 1u;
                 }
-                loop_init_3 = false;
-                uint _e128 = l;
-                uint _e131 = params.levels;
-                if (_e128 < _e131) {
+                loop_init_8 = false;
+                uint _e141 = l;
+                uint _e144 = params.levels;
+                if (_e141 < _e144) {
                 } else {
                     break;
                 }
                 {
-                    uint _e134 = l;
-                    GridFrame _e136 = grid_levels[_e134];
-                    metal::uint3 _e138 = bsh_grid_last(_e136, leaf.center, _e125);
-                    uint _e140 = l;
-                    GridFrame _e142 = grid_levels[_e140];
-                    metal::uint3 _e144 = bsh_grid_first(_e142, leaf.center, _e125);
-                    metal::uint3 d = (_e138 - _e144) + metal::uint3(1u);
-                    uint n_2 = (d.x * d.y) * d.z;
-                    uint _e157 = l;
-                    uint at = (h_1 + 16u) + (2u * _e157);
-                    uint _e162 = metal::atomic_fetch_add_explicit(&grid[at], n_2, metal::memory_order_relaxed);
-                    if ((_e162 + n_2) < _e162) {
-                        uint _e170 = metal::atomic_fetch_add_explicit(&grid[at + 1u], 1u, metal::memory_order_relaxed);
+                    uint _e147 = l;
+                    GridFrame _e149 = grid_levels[_e147];
+                    metal::uint3 _e151 = bsh_grid_last(_e149, leaf.center, _e138);
+                    uint _e153 = l;
+                    GridFrame _e155 = grid_levels[_e153];
+                    metal::uint3 _e157 = bsh_grid_first(_e155, leaf.center, _e138);
+                    metal::uint3 d = (_e151 - _e157) + metal::uint3(1u);
+                    uint n_3 = (d.x * d.y) * d.z;
+                    uint _e170 = l;
+                    uint at = (h_1 + 16u) + (2u * _e170);
+                    uint _e175 = metal::atomic_fetch_add_explicit(&grid[at], n_3, metal::memory_order_relaxed);
+                    if ((_e175 + n_3) < _e175) {
+                        uint _e183 = metal::atomic_fetch_add_explicit(&grid[at + 1u], 1u, metal::memory_order_relaxed);
                     }
                 }
             }
@@ -476,175 +685,176 @@ kernel void main_(
                 return;
             }
             uint leaves_1 = metal::atomic_load_explicit(&grid[h_1 + 13u], metal::memory_order_relaxed);
-            uint _e183 = params.levels;
-            chosen = _e183;
-            uint2 loop_bound_4 = uint2(4294967295u);
-            bool loop_init_4 = true;
+            uint _e196 = params.levels;
+            chosen = _e196;
+            uint2 loop_bound_10 = uint2(4294967295u);
+            bool loop_init_9 = true;
             while(true) {
-                if (metal::all(loop_bound_4 == uint2(0u))) { break; }
-                loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
-                if (!loop_init_4) {
-                    uint _e246 = l_1;
-                    l_1 = _e246 + 1u;
+                if (metal::all(loop_bound_10 == uint2(0u))) { break; }
+                loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
+                if (!loop_init_9) {
+                    uint _e262 = l_1;
+                    l_1 = _e262 + 1u;
                 }
-                loop_init_4 = false;
-                uint _e187 = l_1;
-                uint _e190 = params.levels;
-                if (_e187 < _e190) {
+                loop_init_9 = false;
+                uint _e200 = l_1;
+                uint _e203 = params.levels;
+                if (_e200 < _e203) {
                 } else {
                     break;
                 }
                 {
-                    uint _e193 = l_1;
-                    GridFrame f_4 = grid_levels[_e193];
+                    uint _e206 = l_1;
+                    GridFrame f_4 = grid_levels[_e206];
                     uint cells_2 = (f_4.nx * f_4.ny) * f_4.nz;
-                    uint _e201 = bsh_grid_budget(leaves_1, cells_2);
-                    uint _e204 = params.capacity;
-                    uint budget = metal::min(_e201, _e204);
-                    uint _e209 = l_1;
-                    uint at_1 = (h_1 + 16u) + (2u * _e209);
-                    uint _e212 = chosen;
-                    uint _e215 = params.levels;
-                    if (_e212 == _e215) {
-                        uint _e223 = metal::atomic_load_explicit(&grid[at_1 + 1u], metal::memory_order_relaxed);
-                        local = _e223 == 0u;
+                    uint _e216 = params.least;
+                    uint _e217 = bsh_grid_budget(leaves_1, cells_2, _e216);
+                    uint _e220 = params.capacity;
+                    uint budget = metal::min(_e217, _e220);
+                    uint _e225 = l_1;
+                    uint at_1 = (h_1 + 16u) + (2u * _e225);
+                    uint _e228 = chosen;
+                    uint _e231 = params.levels;
+                    if (_e228 == _e231) {
+                        uint _e239 = metal::atomic_load_explicit(&grid[at_1 + 1u], metal::memory_order_relaxed);
+                        local = _e239 == 0u;
                     } else {
                         local = false;
                     }
-                    bool _e227 = local;
-                    if (_e227) {
-                        uint _e232 = metal::atomic_load_explicit(&grid[at_1], metal::memory_order_relaxed);
-                        local_1 = _e232 <= budget;
+                    bool _e243 = local;
+                    if (_e243) {
+                        uint _e248 = metal::atomic_load_explicit(&grid[at_1], metal::memory_order_relaxed);
+                        local_1 = _e248 <= budget;
                     } else {
                         local_1 = false;
                     }
-                    bool _e235 = local_1;
-                    if (_e235) {
-                        uint _e236 = l_1;
-                        chosen = _e236;
+                    bool _e251 = local_1;
+                    if (_e251) {
+                        uint _e252 = l_1;
+                        chosen = _e252;
                     }
                     metal::atomic_store_explicit(&grid[at_1], 0u, metal::memory_order_relaxed);
                     metal::atomic_store_explicit(&grid[at_1 + 1u], 0u, metal::memory_order_relaxed);
                 }
             }
             metal::atomic_store_explicit(&grid[h_1 + 13u], 0u, metal::memory_order_relaxed);
-            uint _e254 = chosen;
-            uint _e257 = params.levels;
-            if (_e254 < _e257) {
-                uint _e260 = chosen;
-                GridFrame _e262 = grid_levels[_e260];
-                f = _e262;
+            uint _e270 = chosen;
+            uint _e273 = params.levels;
+            if (_e270 < _e273) {
+                uint _e276 = chosen;
+                GridFrame _e278 = grid_levels[_e276];
+                f = _e278;
             }
-            float _e267 = f.lo[0];
-            metal::atomic_store_explicit(&grid[h_1], as_type<uint>(_e267), metal::memory_order_relaxed);
-            float _e275 = f.lo[1];
-            metal::atomic_store_explicit(&grid[h_1 + 1u], as_type<uint>(_e275), metal::memory_order_relaxed);
-            float _e283 = f.lo[2];
-            metal::atomic_store_explicit(&grid[h_1 + 2u], as_type<uint>(_e283), metal::memory_order_relaxed);
-            uint _e290 = f.nx;
-            metal::atomic_store_explicit(&grid[h_1 + 3u], _e290, metal::memory_order_relaxed);
-            float _e297 = f.hi[0];
-            metal::atomic_store_explicit(&grid[h_1 + 4u], as_type<uint>(_e297), metal::memory_order_relaxed);
-            float _e305 = f.hi[1];
-            metal::atomic_store_explicit(&grid[h_1 + 5u], as_type<uint>(_e305), metal::memory_order_relaxed);
-            float _e313 = f.hi[2];
-            metal::atomic_store_explicit(&grid[h_1 + 6u], as_type<uint>(_e313), metal::memory_order_relaxed);
-            uint _e320 = f.ny;
-            metal::atomic_store_explicit(&grid[h_1 + 7u], _e320, metal::memory_order_relaxed);
-            float _e327 = f.inv[0];
-            metal::atomic_store_explicit(&grid[h_1 + 8u], as_type<uint>(_e327), metal::memory_order_relaxed);
-            float _e335 = f.inv[1];
-            metal::atomic_store_explicit(&grid[h_1 + 9u], as_type<uint>(_e335), metal::memory_order_relaxed);
-            float _e343 = f.inv[2];
-            metal::atomic_store_explicit(&grid[h_1 + 10u], as_type<uint>(_e343), metal::memory_order_relaxed);
-            uint _e350 = f.nz;
-            metal::atomic_store_explicit(&grid[h_1 + 11u], _e350, metal::memory_order_relaxed);
-            float _e357 = params.reach;
-            metal::atomic_store_explicit(&grid[h_1 + 12u], as_type<uint>(_e357), metal::memory_order_relaxed);
+            float _e283 = f.lo[0];
+            metal::atomic_store_explicit(&grid[h_1], as_type<uint>(_e283), metal::memory_order_relaxed);
+            float _e291 = f.lo[1];
+            metal::atomic_store_explicit(&grid[h_1 + 1u], as_type<uint>(_e291), metal::memory_order_relaxed);
+            float _e299 = f.lo[2];
+            metal::atomic_store_explicit(&grid[h_1 + 2u], as_type<uint>(_e299), metal::memory_order_relaxed);
+            uint _e306 = f.nx;
+            metal::atomic_store_explicit(&grid[h_1 + 3u], _e306, metal::memory_order_relaxed);
+            float _e313 = f.hi[0];
+            metal::atomic_store_explicit(&grid[h_1 + 4u], as_type<uint>(_e313), metal::memory_order_relaxed);
+            float _e321 = f.hi[1];
+            metal::atomic_store_explicit(&grid[h_1 + 5u], as_type<uint>(_e321), metal::memory_order_relaxed);
+            float _e329 = f.hi[2];
+            metal::atomic_store_explicit(&grid[h_1 + 6u], as_type<uint>(_e329), metal::memory_order_relaxed);
+            uint _e336 = f.ny;
+            metal::atomic_store_explicit(&grid[h_1 + 7u], _e336, metal::memory_order_relaxed);
+            float _e343 = f.inv[0];
+            metal::atomic_store_explicit(&grid[h_1 + 8u], as_type<uint>(_e343), metal::memory_order_relaxed);
+            float _e351 = f.inv[1];
+            metal::atomic_store_explicit(&grid[h_1 + 9u], as_type<uint>(_e351), metal::memory_order_relaxed);
+            float _e359 = f.inv[2];
+            metal::atomic_store_explicit(&grid[h_1 + 10u], as_type<uint>(_e359), metal::memory_order_relaxed);
+            uint _e366 = f.nz;
+            metal::atomic_store_explicit(&grid[h_1 + 11u], _e366, metal::memory_order_relaxed);
+            float _e373 = params.reach;
+            metal::atomic_store_explicit(&grid[h_1 + 12u], as_type<uint>(_e373), metal::memory_order_relaxed);
             return;
         }
         case 2u:
         case 4u: {
-            uint _e361 = params.count;
-            if (i_2 >= _e361) {
+            uint _e377 = params.count;
+            if (i_2 >= _e377) {
                 return;
             }
-            GridFrame _e363 = grid_frame(h_1, grid, _buffer_sizes);
-            uint _e364 = grid_leaf(i_2, bsh_nodes, grid_leaves, _buffer_sizes);
-            if (!((_e363.nx == 0u))) {
-                local_2 = _e364 == BSH_NONE;
+            GridFrame _e379 = grid_frame(h_1, grid, _buffer_sizes);
+            uint _e380 = grid_leaf(i_2, bsh_nodes, grid_leaves, _buffer_sizes);
+            if (!((_e379.nx == 0u))) {
+                local_2 = _e380 == BSH_NONE;
             } else {
                 local_2 = true;
             }
-            bool _e374 = local_2;
-            if (_e374) {
+            bool _e390 = local_2;
+            if (_e390) {
                 return;
             }
-            BshNode leaf_1 = bsh_nodes[_e364];
-            float _e380 = params.reach;
-            float _e381 = bsh_grid_radius(leaf_1, _e380);
-            metal::uint3 _e383 = bsh_grid_first(_e363, leaf_1.center, _e381);
-            metal::uint3 _e385 = bsh_grid_last(_e363, leaf_1.center, _e381);
-            z = _e383.z;
-            uint2 loop_bound_5 = uint2(4294967295u);
-            bool loop_init_5 = true;
+            BshNode leaf_1 = bsh_nodes[_e380];
+            float _e396 = params.reach;
+            float _e397 = bsh_grid_radius(leaf_1, _e396);
+            metal::uint3 _e399 = bsh_grid_first(_e379, leaf_1.center, _e397);
+            metal::uint3 _e401 = bsh_grid_last(_e379, leaf_1.center, _e397);
+            z = _e399.z;
+            uint2 loop_bound_11 = uint2(4294967295u);
+            bool loop_init_10 = true;
             while(true) {
-                if (metal::all(loop_bound_5 == uint2(0u))) { break; }
-                loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
-                if (!loop_init_5) {
-                    uint _e432 = z;
-                    z = _e432 + 1u;
+                if (metal::all(loop_bound_11 == uint2(0u))) { break; }
+                loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
+                if (!loop_init_10) {
+                    uint _e448 = z;
+                    z = _e448 + 1u;
                 }
-                loop_init_5 = false;
-                uint _e388 = z;
-                if (_e388 <= _e385.z) {
+                loop_init_10 = false;
+                uint _e404 = z;
+                if (_e404 <= _e401.z) {
                 } else {
                     break;
                 }
                 {
-                    y = _e383.y;
-                    uint2 loop_bound_6 = uint2(4294967295u);
-                    bool loop_init_6 = true;
+                    y = _e399.y;
+                    uint2 loop_bound_12 = uint2(4294967295u);
+                    bool loop_init_11 = true;
                     while(true) {
-                        if (metal::all(loop_bound_6 == uint2(0u))) { break; }
-                        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-                        if (!loop_init_6) {
-                            uint _e429 = y;
-                            y = _e429 + 1u;
+                        if (metal::all(loop_bound_12 == uint2(0u))) { break; }
+                        loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
+                        if (!loop_init_11) {
+                            uint _e445 = y;
+                            y = _e445 + 1u;
                         }
-                        loop_init_6 = false;
-                        uint _e393 = y;
-                        if (_e393 <= _e385.y) {
+                        loop_init_11 = false;
+                        uint _e409 = y;
+                        if (_e409 <= _e401.y) {
                         } else {
                             break;
                         }
                         {
-                            x = _e383.x;
-                            uint2 loop_bound_7 = uint2(4294967295u);
-                            bool loop_init_7 = true;
+                            x = _e399.x;
+                            uint2 loop_bound_13 = uint2(4294967295u);
+                            bool loop_init_12 = true;
                             while(true) {
-                                if (metal::all(loop_bound_7 == uint2(0u))) { break; }
-                                loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
-                                if (!loop_init_7) {
-                                    uint _e426 = x;
-                                    x = _e426 + 1u;
+                                if (metal::all(loop_bound_13 == uint2(0u))) { break; }
+                                loop_bound_13 -= uint2(loop_bound_13.y == 0u, 1u);
+                                if (!loop_init_12) {
+                                    uint _e442 = x;
+                                    x = _e442 + 1u;
                                 }
-                                loop_init_7 = false;
-                                uint _e398 = x;
-                                if (_e398 <= _e385.x) {
+                                loop_init_12 = false;
+                                uint _e414 = x;
+                                if (_e414 <= _e401.x) {
                                 } else {
                                     break;
                                 }
                                 {
-                                    uint _e401 = z;
-                                    uint _e404 = y;
-                                    uint _e408 = x;
-                                    uint c_5 = (((_e401 * _e363.ny) + _e404) * _e363.nx) + _e408;
-                                    uint _e413 = params.fill;
-                                    uint _e417 = metal::atomic_fetch_add_explicit(&grid_fill[_e413 + c_5], 1u, metal::memory_order_relaxed);
-                                    uint _e420 = params.stage;
-                                    if (_e420 == 4u) {
-                                        grid_entries[_e417] = i_2;
+                                    uint _e417 = z;
+                                    uint _e420 = y;
+                                    uint _e424 = x;
+                                    uint c_5 = (((_e417 * _e379.ny) + _e420) * _e379.nx) + _e424;
+                                    uint _e429 = params.fill;
+                                    uint _e433 = metal::atomic_fetch_add_explicit(&grid_fill[_e429 + c_5], 1u, metal::memory_order_relaxed);
+                                    uint _e436 = params.stage;
+                                    if (_e436 == 4u) {
+                                        grid_entries[_e433] = i_2;
                                     }
                                 }
                             }
@@ -655,89 +865,6 @@ kernel void main_(
             return;
         }
         default: {
-            GridFrame _e434 = grid_frame(h_1, grid, _buffer_sizes);
-            if (i_2 >= ((_e434.nx * _e434.ny) * _e434.nz)) {
-                return;
-            }
-            uint _e444 = params.fill;
-            metal::atomic_store_explicit(&grid_fill[_e444 + i_2], 0u, metal::memory_order_relaxed);
-            uint a_2 = metal::atomic_load_explicit(&grid[starts + i_2], metal::memory_order_relaxed);
-            uint b_2 = metal::atomic_load_explicit(&grid[(starts + i_2) + 1u], metal::memory_order_relaxed);
-            s = a_2 + 1u;
-            uint2 loop_bound_8 = uint2(4294967295u);
-            bool loop_init_8 = true;
-            while(true) {
-                if (metal::all(loop_bound_8 == uint2(0u))) { break; }
-                loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
-                if (!loop_init_8) {
-                    uint _e498 = s;
-                    s = _e498 + 1u;
-                }
-                loop_init_8 = false;
-                uint _e461 = s;
-                if (_e461 < b_2) {
-                } else {
-                    break;
-                }
-                {
-                    uint _e464 = s;
-                    uint v_1 = grid_entries[_e464];
-                    uint _e467 = s;
-                    c_2 = _e467;
-                    uint2 loop_bound_9 = uint2(4294967295u);
-                    while(true) {
-                        if (metal::all(loop_bound_9 == uint2(0u))) { break; }
-                        loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
-                        uint _e469 = c_2;
-                        if (_e469 > a_2) {
-                            uint _e474 = c_2;
-                            uint _e478 = grid_entries[_e474 - 1u];
-                            local_3 = _e478 > v_1;
-                        } else {
-                            local_3 = false;
-                        }
-                        bool _e481 = local_3;
-                        if (_e481) {
-                        } else {
-                            break;
-                        }
-                        {
-                            uint _e483 = c_2;
-                            uint _e486 = c_2;
-                            uint _e490 = grid_entries[_e486 - 1u];
-                            grid_entries[_e483] = _e490;
-                            uint _e491 = c_2;
-                            c_2 = _e491 - 1u;
-                        }
-                    }
-                    uint _e495 = c_2;
-                    grid_entries[_e495] = v_1;
-                }
-            }
-            s_1 = a_2;
-            uint2 loop_bound_10 = uint2(4294967295u);
-            bool loop_init_9 = true;
-            while(true) {
-                if (metal::all(loop_bound_10 == uint2(0u))) { break; }
-                loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
-                if (!loop_init_9) {
-                    uint _e514 = s_1;
-                    s_1 = _e514 + 1u;
-                }
-                loop_init_9 = false;
-                uint _e501 = s_1;
-                if (_e501 < b_2) {
-                } else {
-                    break;
-                }
-                {
-                    uint _e504 = s_1;
-                    uint _e508 = s_1;
-                    uint _e510 = grid_entries[_e508];
-                    uint _e512 = grid_leaves[_e510];
-                    grid_entries[_e504] = _e512;
-                }
-            }
             return;
         }
     }

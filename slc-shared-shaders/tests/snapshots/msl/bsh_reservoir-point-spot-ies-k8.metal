@@ -61,32 +61,34 @@ struct GeoHit {
     float t;
     uint tri;
 };
-typedef GpuGeoNode type_6[1];
-typedef GpuTriangle type_7[1];
-struct type_8 {
+typedef GpuGeoNode type_7[1];
+typedef GpuTriangle type_8[1];
+struct type_9 {
     uint inner[64];
 };
-struct type_9 {
+struct type_10 {
     uint inner[8];
 };
 struct Picks {
-    type_9 light;
+    type_10 light;
     uint n;
 };
 typedef uint BshNodes;
-typedef BshNode type_10[1];
+typedef BshNode type_11[1];
 struct BshCursor {
     uint i;
     uint end;
     uint next;
+    char _pad3[4];
+    metal::float2 cone;
 };
 struct Connection {
     metal::float3 e;
     metal::packed_float3 y;
     float cos_x;
 };
-typedef GpuLight type_14[1];
-typedef metal::float4 type_15[1];
+typedef GpuLight type_15[1];
+typedef metal::float4 type_16[1];
 constant uint LIGHT_POINT = 0u;
 constant uint LIGHT_SPOT = 1u;
 constant uint LIGHT_IES = 2u;
@@ -95,6 +97,7 @@ constant uint LIGHT_VPL = 4u;
 constant uint NO_LIGHT = 4294967295u;
 constant uint GRID_HEADER = 32u;
 constant uint GRID_LEVELS_MAX = 8u;
+constant uint GRID_SORT_MAX = 1536u;
 constant uint COUNT_TILES = 0u;
 constant uint COUNT_GROUP_TESTS = 1u;
 constant uint COUNT_CLUSTER_TESTS = 2u;
@@ -848,12 +851,12 @@ GeoHit trace(
     float t_min_1,
     float t_max_2,
     bool any_hit,
-    device type_6 const& geo_nodes,
-    device type_7 const& geo_tris,
+    device type_7 const& geo_nodes,
+    device type_8 const& geo_tris,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GeoHit hit = {};
-    type_8 stack = {};
+    type_9 stack = {};
     uint sp = 0u;
     uint node_3 = 0u;
     uint i_1 = {};
@@ -935,8 +938,8 @@ GeoHit trace(
 bool occluded(
     metal::float3 a_6,
     metal::float3 b_4,
-    device type_6 const& geo_nodes,
-    device type_7 const& geo_tris,
+    device type_7 const& geo_nodes,
+    device type_8 const& geo_tris,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 dv = b_4 - a_6;
@@ -952,7 +955,7 @@ bool occluded(
 BshNode bsh_node(
     BshNodes nodes,
     uint i_2,
-    device type_10 const& bsh_nodes,
+    device type_11 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     BshNode _e4 = bsh_nodes[i_2];
@@ -961,7 +964,7 @@ BshNode bsh_node(
 
 uint bsh_count(
     BshNodes nodes_1,
-    device type_10 const& bsh_nodes,
+    device type_11 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     return 1 + (_buffer_sizes.size3 - 0 - 32) / 32;
@@ -969,7 +972,7 @@ uint bsh_count(
 
 uint bsh_first(
     BshNodes nodes_2,
-    device type_10 const& bsh_nodes,
+    device type_11 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e1 = bsh_count(nodes_2, bsh_nodes, _buffer_sizes);
@@ -1044,7 +1047,7 @@ uint bsh_next_leaf_lobe(
     metal::float3 x_10,
     metal::float3 r_4,
     metal::float4 rl_4,
-    device type_10 const& bsh_nodes,
+    device type_11 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint i_3 = {};
@@ -1084,7 +1087,7 @@ BshCursor bsh_cursor(
     metal::float3 x_11,
     metal::float3 r_5,
     metal::float4 rl_5,
-    device type_10 const& bsh_nodes,
+    device type_11 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     BshCursor c_4 = {};
@@ -1092,8 +1095,9 @@ BshCursor bsh_cursor(
     c_4.end = 0u;
     uint _e10 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
     c_4.next = _e10;
-    BshCursor _e11 = c_4;
-    return _e11;
+    c_4.cone = metal::float2(0.0);
+    BshCursor _e14 = c_4;
+    return _e14;
 }
 
 uint bsh_cursor_next(
@@ -1101,7 +1105,7 @@ uint bsh_cursor_next(
     metal::float3 x_12,
     metal::float3 r_6,
     metal::float4 rl_6,
-    device type_10 const& bsh_nodes,
+    device type_11 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e6 = c_5.next;
@@ -1149,7 +1153,7 @@ Picks bsh_collect(
     metal::float3 r_7,
     metal::float4 rl_7,
     uint seed_1,
-    device type_10 const& bsh_nodes,
+    device type_11 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Picks picks_1 = {};
@@ -1200,8 +1204,8 @@ Connection connect_record(
     float eps,
     bool trace_1,
     device type_4 const& slc_table,
-    device type_6 const& geo_nodes,
-    device type_7 const& geo_tris,
+    device type_7 const& geo_nodes,
+    device type_8 const& geo_tris,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Connection c_6 = {};
@@ -1255,9 +1259,9 @@ Connection connect_traced(
     float eps_1,
     bool trace_2,
     device type_4 const& slc_table,
-    device type_6 const& geo_nodes,
-    device type_7 const& geo_tris,
-    device type_14 const& lights,
+    device type_7 const& geo_nodes,
+    device type_8 const& geo_tris,
+    device type_15 const& lights,
     device type_4 const& r2_3,
     device type_4 const& rt2_3,
     constant _mslBufferSizes& _buffer_sizes
@@ -1280,9 +1284,9 @@ Connection connect(
     float u2_3,
     float eps_2,
     device type_4 const& slc_table,
-    device type_6 const& geo_nodes,
-    device type_7 const& geo_tris,
-    device type_14 const& lights,
+    device type_7 const& geo_nodes,
+    device type_8 const& geo_tris,
+    device type_15 const& lights,
     device type_4 const& r2_3,
     device type_4 const& rt2_3,
     constant _mslBufferSizes& _buffer_sizes
@@ -1296,16 +1300,16 @@ struct main_Input {
 kernel void main_(
   metal::uint3 gid [[thread_position_in_grid]]
 , device type_4 const& slc_table [[user(fake0)]]
-, device type_6 const& geo_nodes [[user(fake0)]]
-, device type_7 const& geo_tris [[user(fake0)]]
-, device type_10 const& bsh_nodes [[user(fake0)]]
-, device type_14 const& lights [[user(fake0)]]
+, device type_7 const& geo_nodes [[user(fake0)]]
+, device type_8 const& geo_tris [[user(fake0)]]
+, device type_11 const& bsh_nodes [[user(fake0)]]
+, device type_15 const& lights [[user(fake0)]]
 , device type_4 const& r2_3 [[user(fake0)]]
 , device type_4 const& rt2_3 [[user(fake0)]]
 , constant ShadeParams& params [[user(fake0)]]
-, device type_15 const& points [[user(fake0)]]
-, device type_15 const& normals [[user(fake0)]]
-, device type_15& irradiance [[user(fake0)]]
+, device type_16 const& points [[user(fake0)]]
+, device type_16 const& normals [[user(fake0)]]
+, device type_16& irradiance [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
     uint h = {};

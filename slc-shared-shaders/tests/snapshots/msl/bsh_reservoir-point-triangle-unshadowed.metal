@@ -39,27 +39,29 @@ struct BshNode {
     uint light;
     float extent;
 };
-struct type_6 {
+struct type_7 {
     uint inner[8];
 };
 struct Picks {
-    type_6 light;
+    type_7 light;
     uint n;
 };
 typedef uint BshNodes;
-typedef BshNode type_7[1];
+typedef BshNode type_8[1];
 struct BshCursor {
     uint i;
     uint end;
     uint next;
+    char _pad3[4];
+    metal::float2 cone;
 };
 struct Connection {
     metal::float3 e;
     metal::packed_float3 y;
     float cos_x;
 };
-typedef GpuLight type_11[1];
-typedef metal::float4 type_12[1];
+typedef GpuLight type_12[1];
+typedef metal::float4 type_13[1];
 constant uint LIGHT_POINT = 0u;
 constant uint LIGHT_SPOT = 1u;
 constant uint LIGHT_IES = 2u;
@@ -68,6 +70,7 @@ constant uint LIGHT_VPL = 4u;
 constant uint NO_LIGHT = 4294967295u;
 constant uint GRID_HEADER = 32u;
 constant uint GRID_LEVELS_MAX = 8u;
+constant uint GRID_SORT_MAX = 1536u;
 constant uint COUNT_TILES = 0u;
 constant uint COUNT_GROUP_TESTS = 1u;
 constant uint COUNT_CLUSTER_TESTS = 2u;
@@ -504,7 +507,7 @@ bool occluded(
 BshNode bsh_node(
     BshNodes nodes,
     uint i,
-    device type_7 const& bsh_nodes,
+    device type_8 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     BshNode _e4 = bsh_nodes[i];
@@ -513,7 +516,7 @@ BshNode bsh_node(
 
 uint bsh_count(
     BshNodes nodes_1,
-    device type_7 const& bsh_nodes,
+    device type_8 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     return 1 + (_buffer_sizes.size0 - 0 - 32) / 32;
@@ -521,7 +524,7 @@ uint bsh_count(
 
 uint bsh_first(
     BshNodes nodes_2,
-    device type_7 const& bsh_nodes,
+    device type_8 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e1 = bsh_count(nodes_2, bsh_nodes, _buffer_sizes);
@@ -596,7 +599,7 @@ uint bsh_next_leaf_lobe(
     metal::float3 x_4,
     metal::float3 r_4,
     metal::float4 rl_4,
-    device type_7 const& bsh_nodes,
+    device type_8 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint i_1 = {};
@@ -636,7 +639,7 @@ BshCursor bsh_cursor(
     metal::float3 x_5,
     metal::float3 r_5,
     metal::float4 rl_5,
-    device type_7 const& bsh_nodes,
+    device type_8 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     BshCursor c_3 = {};
@@ -644,8 +647,9 @@ BshCursor bsh_cursor(
     c_3.end = 0u;
     uint _e10 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
     c_3.next = _e10;
-    BshCursor _e11 = c_3;
-    return _e11;
+    c_3.cone = metal::float2(0.0);
+    BshCursor _e14 = c_3;
+    return _e14;
 }
 
 uint bsh_cursor_next(
@@ -653,7 +657,7 @@ uint bsh_cursor_next(
     metal::float3 x_6,
     metal::float3 r_6,
     metal::float4 rl_6,
-    device type_7 const& bsh_nodes,
+    device type_8 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e6 = c_4.next;
@@ -701,7 +705,7 @@ Picks bsh_collect(
     metal::float3 r_7,
     metal::float4 rl_7,
     uint seed_1,
-    device type_7 const& bsh_nodes,
+    device type_8 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Picks picks_1 = {};
@@ -802,7 +806,7 @@ Connection connect_traced(
     float u2_3,
     float eps_1,
     bool trace_1,
-    device type_11 const& lights,
+    device type_12 const& lights,
     device type_4 const& r2_3,
     device type_4 const& rt2_3,
     constant _mslBufferSizes& _buffer_sizes
@@ -824,7 +828,7 @@ Connection connect(
     float u1_4,
     float u2_4,
     float eps_2,
-    device type_11 const& lights,
+    device type_12 const& lights,
     device type_4 const& r2_3,
     device type_4 const& rt2_3,
     constant _mslBufferSizes& _buffer_sizes
@@ -837,14 +841,14 @@ struct main_Input {
 };
 kernel void main_(
   metal::uint3 gid [[thread_position_in_grid]]
-, device type_7 const& bsh_nodes [[user(fake0)]]
-, device type_11 const& lights [[user(fake0)]]
+, device type_8 const& bsh_nodes [[user(fake0)]]
+, device type_12 const& lights [[user(fake0)]]
 , device type_4 const& r2_3 [[user(fake0)]]
 , device type_4 const& rt2_3 [[user(fake0)]]
 , constant ShadeParams& params [[user(fake0)]]
-, device type_12 const& points [[user(fake0)]]
-, device type_12 const& normals [[user(fake0)]]
-, device type_12& irradiance [[user(fake0)]]
+, device type_13 const& points [[user(fake0)]]
+, device type_13 const& normals [[user(fake0)]]
+, device type_13& irradiance [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
     uint h = {};

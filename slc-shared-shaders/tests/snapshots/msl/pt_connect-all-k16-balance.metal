@@ -93,37 +93,39 @@ struct GeoHit {
     float t;
     uint tri;
 };
-typedef GpuGeoNode type_6[1];
-typedef GpuTriangle type_7[1];
-struct type_8 {
+typedef GpuGeoNode type_7[1];
+typedef GpuTriangle type_8[1];
+struct type_9 {
     uint inner[64];
 };
-struct type_9 {
+struct type_10 {
     uint inner[16];
 };
 struct Picks {
-    type_9 light;
+    type_10 light;
     uint n;
 };
 typedef uint BshNodes;
-typedef BshNode type_10[1];
+typedef BshNode type_11[1];
 struct BshCursor {
     uint i;
     uint end;
     uint next;
+    char _pad3[4];
+    metal::float2 cone;
 };
 struct Connection {
     metal::float3 e;
     metal::packed_float3 y;
     float cos_x;
 };
-typedef GpuLight type_14[1];
-typedef GpuLightCone type_15[1];
+typedef GpuLight type_15[1];
+typedef GpuLightCone type_16[1];
 typedef uint BvhNodes;
-typedef GpuPathVertex type_16[1];
-typedef GpuMaterial type_17[1];
-typedef metal::float4 type_18[1];
-typedef uint type_19[1];
+typedef GpuPathVertex type_17[1];
+typedef GpuMaterial type_18[1];
+typedef metal::float4 type_19[1];
+typedef uint type_20[1];
 constant uint LIGHT_POINT = 0u;
 constant uint LIGHT_SPOT = 1u;
 constant uint LIGHT_IES = 2u;
@@ -132,6 +134,7 @@ constant uint LIGHT_VPL = 4u;
 constant uint NO_LIGHT = 4294967295u;
 constant uint GRID_HEADER = 32u;
 constant uint GRID_LEVELS_MAX = 8u;
+constant uint GRID_SORT_MAX = 1536u;
 constant uint COUNT_TILES = 0u;
 constant uint COUNT_GROUP_TESTS = 1u;
 constant uint COUNT_CLUSTER_TESTS = 2u;
@@ -1397,12 +1400,12 @@ GeoHit trace(
     float t_min_1,
     float t_max_2,
     bool any_hit,
-    device type_6 const& geo_nodes,
-    device type_7 const& geo_tris,
+    device type_7 const& geo_nodes,
+    device type_8 const& geo_tris,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GeoHit hit = {};
-    type_8 stack = {};
+    type_9 stack = {};
     uint sp = 0u;
     uint node_3 = 0u;
     uint i_1 = {};
@@ -1484,8 +1487,8 @@ GeoHit trace(
 bool occluded(
     metal::float3 a_8,
     metal::float3 b_6,
-    device type_6 const& geo_nodes,
-    device type_7 const& geo_tris,
+    device type_7 const& geo_nodes,
+    device type_8 const& geo_tris,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 dv = b_6 - a_8;
@@ -1501,7 +1504,7 @@ bool occluded(
 BshNode bsh_node(
     BshNodes nodes,
     uint i_2,
-    device type_10 const& bsh_nodes,
+    device type_11 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     BshNode _e4 = bsh_nodes[i_2];
@@ -1510,7 +1513,7 @@ BshNode bsh_node(
 
 uint bsh_count(
     BshNodes nodes_1,
-    device type_10 const& bsh_nodes,
+    device type_11 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     return 1 + (_buffer_sizes.size3 - 0 - 32) / 32;
@@ -1518,7 +1521,7 @@ uint bsh_count(
 
 uint bsh_first(
     BshNodes nodes_2,
-    device type_10 const& bsh_nodes,
+    device type_11 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e1 = bsh_count(nodes_2, bsh_nodes, _buffer_sizes);
@@ -1593,7 +1596,7 @@ uint bsh_next_leaf_lobe(
     metal::float3 x_10,
     metal::float3 r_4,
     metal::float4 rl_4,
-    device type_10 const& bsh_nodes,
+    device type_11 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint i_3 = {};
@@ -1633,7 +1636,7 @@ BshCursor bsh_cursor(
     metal::float3 x_11,
     metal::float3 r_5,
     metal::float4 rl_5,
-    device type_10 const& bsh_nodes,
+    device type_11 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     BshCursor c_7 = {};
@@ -1641,8 +1644,9 @@ BshCursor bsh_cursor(
     c_7.end = 0u;
     uint _e10 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
     c_7.next = _e10;
-    BshCursor _e11 = c_7;
-    return _e11;
+    c_7.cone = metal::float2(0.0);
+    BshCursor _e14 = c_7;
+    return _e14;
 }
 
 uint bsh_cursor_next(
@@ -1650,7 +1654,7 @@ uint bsh_cursor_next(
     metal::float3 x_12,
     metal::float3 r_6,
     metal::float4 rl_6,
-    device type_10 const& bsh_nodes,
+    device type_11 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e6 = c_8.next;
@@ -1698,7 +1702,7 @@ Picks bsh_collect(
     metal::float3 r_7,
     metal::float4 rl_7,
     uint seed_1,
-    device type_10 const& bsh_nodes,
+    device type_11 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Picks picks_1 = {};
@@ -1749,8 +1753,8 @@ Connection connect_record(
     float eps,
     bool trace_1,
     device type_4 const& slc_table,
-    device type_6 const& geo_nodes,
-    device type_7 const& geo_tris,
+    device type_7 const& geo_nodes,
+    device type_8 const& geo_tris,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Connection c_9 = {};
@@ -1804,9 +1808,9 @@ Connection connect_traced(
     float eps_1,
     bool trace_2,
     device type_4 const& slc_table,
-    device type_6 const& geo_nodes,
-    device type_7 const& geo_tris,
-    device type_14 const& lights,
+    device type_7 const& geo_nodes,
+    device type_8 const& geo_tris,
+    device type_15 const& lights,
     device type_4 const& r2_3,
     device type_4 const& rt2_5,
     constant _mslBufferSizes& _buffer_sizes
@@ -1829,9 +1833,9 @@ Connection connect(
     float u2_4,
     float eps_2,
     device type_4 const& slc_table,
-    device type_6 const& geo_nodes,
-    device type_7 const& geo_tris,
-    device type_14 const& lights,
+    device type_7 const& geo_nodes,
+    device type_8 const& geo_tris,
+    device type_15 const& lights,
     device type_4 const& r2_3,
     device type_4 const& rt2_5,
     constant _mslBufferSizes& _buffer_sizes
@@ -1853,7 +1857,7 @@ float light_range_scale(
     metal::float3 x_17,
     metal::float3 r_8,
     metal::float4 rl_8,
-    device type_15 const& light_cones,
+    device type_16 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuLightCone c_15 = light_cones[li_2];
@@ -1882,9 +1886,9 @@ float light_pdf_selected(
     metal::float4 rl_10,
     metal::float3 y_2,
     float sel,
-    device type_14 const& lights,
+    device type_15 const& lights,
     device type_4 const& rt2_5,
-    device type_15 const& light_cones,
+    device type_16 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuLight l_9 = lights[li_4];
@@ -1909,9 +1913,9 @@ float light_pdf(
     metal::float3 y_3,
     uint nee_1,
     bool in_range_2,
-    device type_14 const& lights,
+    device type_15 const& lights,
     device type_4 const& rt2_5,
-    device type_15 const& light_cones,
+    device type_16 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     float _e9 = select_pdf(li_5, x_20, n_19, r_11, lobe_6, rl_11, nee_1, in_range_2);
@@ -1934,12 +1938,12 @@ metal::float3 shade_pick(
     float u1_5,
     float u2_5,
     device type_4 const& slc_table,
-    device type_6 const& geo_nodes,
-    device type_7 const& geo_tris,
-    device type_14 const& lights,
+    device type_7 const& geo_nodes,
+    device type_8 const& geo_tris,
+    device type_15 const& lights,
     device type_4 const& r2_3,
     device type_4 const& rt2_5,
-    device type_15 const& light_cones,
+    device type_16 const& light_cones,
     constant ShadeParams& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1970,18 +1974,18 @@ struct main_Input {
 kernel void main_(
   metal::uint3 gid [[thread_position_in_grid]]
 , device type_4 const& slc_table [[user(fake0)]]
-, device type_6 const& geo_nodes [[user(fake0)]]
-, device type_7 const& geo_tris [[user(fake0)]]
-, device type_10 const& bsh_nodes [[user(fake0)]]
-, device type_14 const& lights [[user(fake0)]]
+, device type_7 const& geo_nodes [[user(fake0)]]
+, device type_8 const& geo_tris [[user(fake0)]]
+, device type_11 const& bsh_nodes [[user(fake0)]]
+, device type_15 const& lights [[user(fake0)]]
 , device type_4 const& r2_3 [[user(fake0)]]
 , device type_4 const& rt2_5 [[user(fake0)]]
-, device type_15 const& light_cones [[user(fake0)]]
+, device type_16 const& light_cones [[user(fake0)]]
 , constant ShadeParams& params [[user(fake0)]]
-, device type_16 const& vertices [[user(fake0)]]
-, device type_17 const& materials [[user(fake0)]]
-, device type_18& radiance [[user(fake0)]]
-, device type_19& candidates [[user(fake0)]]
+, device type_17 const& vertices [[user(fake0)]]
+, device type_18 const& materials [[user(fake0)]]
+, device type_19& radiance [[user(fake0)]]
+, device type_20& candidates [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
     uint h = {};

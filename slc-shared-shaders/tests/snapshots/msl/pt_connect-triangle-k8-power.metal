@@ -91,37 +91,39 @@ struct GeoHit {
     float t;
     uint tri;
 };
-typedef GpuGeoNode type_6[1];
-typedef GpuTriangle type_7[1];
-struct type_8 {
+typedef GpuGeoNode type_7[1];
+typedef GpuTriangle type_8[1];
+struct type_9 {
     uint inner[64];
 };
-struct type_9 {
+struct type_10 {
     uint inner[8];
 };
 struct Picks {
-    type_9 light;
+    type_10 light;
     uint n;
 };
 typedef uint BshNodes;
-typedef BshNode type_10[1];
+typedef BshNode type_11[1];
 struct BshCursor {
     uint i;
     uint end;
     uint next;
+    char _pad3[4];
+    metal::float2 cone;
 };
 struct Connection {
     metal::float3 e;
     metal::packed_float3 y;
     float cos_x;
 };
-typedef GpuLight type_14[1];
-typedef GpuLightCone type_15[1];
+typedef GpuLight type_15[1];
+typedef GpuLightCone type_16[1];
 typedef uint BvhNodes;
-typedef GpuPathVertex type_16[1];
-typedef GpuMaterial type_17[1];
-typedef metal::float4 type_18[1];
-typedef uint type_19[1];
+typedef GpuPathVertex type_17[1];
+typedef GpuMaterial type_18[1];
+typedef metal::float4 type_19[1];
+typedef uint type_20[1];
 constant uint LIGHT_POINT = 0u;
 constant uint LIGHT_SPOT = 1u;
 constant uint LIGHT_IES = 2u;
@@ -130,6 +132,7 @@ constant uint LIGHT_VPL = 4u;
 constant uint NO_LIGHT = 4294967295u;
 constant uint GRID_HEADER = 32u;
 constant uint GRID_LEVELS_MAX = 8u;
+constant uint GRID_SORT_MAX = 1536u;
 constant uint COUNT_TILES = 0u;
 constant uint COUNT_GROUP_TESTS = 1u;
 constant uint COUNT_CLUSTER_TESTS = 2u;
@@ -1106,12 +1109,12 @@ GeoHit trace(
     float t_min_1,
     float t_max_2,
     bool any_hit,
-    device type_6 const& geo_nodes,
-    device type_7 const& geo_tris,
+    device type_7 const& geo_nodes,
+    device type_8 const& geo_tris,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GeoHit hit = {};
-    type_8 stack = {};
+    type_9 stack = {};
     uint sp = 0u;
     uint node_3 = 0u;
     uint i = {};
@@ -1193,8 +1196,8 @@ GeoHit trace(
 bool occluded(
     metal::float3 a_7,
     metal::float3 b_6,
-    device type_6 const& geo_nodes,
-    device type_7 const& geo_tris,
+    device type_7 const& geo_nodes,
+    device type_8 const& geo_tris,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 dv = b_6 - a_7;
@@ -1210,7 +1213,7 @@ bool occluded(
 BshNode bsh_node(
     BshNodes nodes,
     uint i_1,
-    device type_10 const& bsh_nodes,
+    device type_11 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     BshNode _e4 = bsh_nodes[i_1];
@@ -1219,7 +1222,7 @@ BshNode bsh_node(
 
 uint bsh_count(
     BshNodes nodes_1,
-    device type_10 const& bsh_nodes,
+    device type_11 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     return 1 + (_buffer_sizes.size2 - 0 - 32) / 32;
@@ -1227,7 +1230,7 @@ uint bsh_count(
 
 uint bsh_first(
     BshNodes nodes_2,
-    device type_10 const& bsh_nodes,
+    device type_11 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e1 = bsh_count(nodes_2, bsh_nodes, _buffer_sizes);
@@ -1302,7 +1305,7 @@ uint bsh_next_leaf_lobe(
     metal::float3 x_5,
     metal::float3 r_4,
     metal::float4 rl_4,
-    device type_10 const& bsh_nodes,
+    device type_11 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint i_2 = {};
@@ -1342,7 +1345,7 @@ BshCursor bsh_cursor(
     metal::float3 x_6,
     metal::float3 r_5,
     metal::float4 rl_5,
-    device type_10 const& bsh_nodes,
+    device type_11 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     BshCursor c_5 = {};
@@ -1350,8 +1353,9 @@ BshCursor bsh_cursor(
     c_5.end = 0u;
     uint _e10 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
     c_5.next = _e10;
-    BshCursor _e11 = c_5;
-    return _e11;
+    c_5.cone = metal::float2(0.0);
+    BshCursor _e14 = c_5;
+    return _e14;
 }
 
 uint bsh_cursor_next(
@@ -1359,7 +1363,7 @@ uint bsh_cursor_next(
     metal::float3 x_7,
     metal::float3 r_6,
     metal::float4 rl_6,
-    device type_10 const& bsh_nodes,
+    device type_11 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e6 = c_6.next;
@@ -1407,7 +1411,7 @@ Picks bsh_collect(
     metal::float3 r_7,
     metal::float4 rl_7,
     uint seed_1,
-    device type_10 const& bsh_nodes,
+    device type_11 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Picks picks_1 = {};
@@ -1457,8 +1461,8 @@ Connection connect_record(
     float u2_2,
     float eps,
     bool trace_1,
-    device type_6 const& geo_nodes,
-    device type_7 const& geo_tris,
+    device type_7 const& geo_nodes,
+    device type_8 const& geo_tris,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Connection c_7 = {};
@@ -1511,9 +1515,9 @@ Connection connect_traced(
     float u2_3,
     float eps_1,
     bool trace_2,
-    device type_6 const& geo_nodes,
-    device type_7 const& geo_tris,
-    device type_14 const& lights,
+    device type_7 const& geo_nodes,
+    device type_8 const& geo_tris,
+    device type_15 const& lights,
     device type_4 const& r2_3,
     device type_4 const& rt2_5,
     constant _mslBufferSizes& _buffer_sizes
@@ -1535,9 +1539,9 @@ Connection connect(
     float u1_4,
     float u2_4,
     float eps_2,
-    device type_6 const& geo_nodes,
-    device type_7 const& geo_tris,
-    device type_14 const& lights,
+    device type_7 const& geo_nodes,
+    device type_8 const& geo_tris,
+    device type_15 const& lights,
     device type_4 const& r2_3,
     device type_4 const& rt2_5,
     constant _mslBufferSizes& _buffer_sizes
@@ -1559,7 +1563,7 @@ float light_range_scale(
     metal::float3 x_12,
     metal::float3 r_8,
     metal::float4 rl_8,
-    device type_15 const& light_cones,
+    device type_16 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuLightCone c_12 = light_cones[li_2];
@@ -1588,9 +1592,9 @@ float light_pdf_selected(
     metal::float4 rl_10,
     metal::float3 y_1,
     float sel,
-    device type_14 const& lights,
+    device type_15 const& lights,
     device type_4 const& rt2_5,
-    device type_15 const& light_cones,
+    device type_16 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuLight l_9 = lights[li_4];
@@ -1615,9 +1619,9 @@ float light_pdf(
     metal::float3 y_2,
     uint nee_1,
     bool in_range_2,
-    device type_14 const& lights,
+    device type_15 const& lights,
     device type_4 const& rt2_5,
-    device type_15 const& light_cones,
+    device type_16 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     float _e9 = select_pdf(li_5, x_15, n_17, r_11, lobe_6, rl_11, nee_1, in_range_2);
@@ -1639,12 +1643,12 @@ metal::float3 shade_pick(
     uint nee_2,
     float u1_5,
     float u2_5,
-    device type_6 const& geo_nodes,
-    device type_7 const& geo_tris,
-    device type_14 const& lights,
+    device type_7 const& geo_nodes,
+    device type_8 const& geo_tris,
+    device type_15 const& lights,
     device type_4 const& r2_3,
     device type_4 const& rt2_5,
-    device type_15 const& light_cones,
+    device type_16 const& light_cones,
     constant ShadeParams& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1674,18 +1678,18 @@ struct main_Input {
 };
 kernel void main_(
   metal::uint3 gid [[thread_position_in_grid]]
-, device type_6 const& geo_nodes [[user(fake0)]]
-, device type_7 const& geo_tris [[user(fake0)]]
-, device type_10 const& bsh_nodes [[user(fake0)]]
-, device type_14 const& lights [[user(fake0)]]
+, device type_7 const& geo_nodes [[user(fake0)]]
+, device type_8 const& geo_tris [[user(fake0)]]
+, device type_11 const& bsh_nodes [[user(fake0)]]
+, device type_15 const& lights [[user(fake0)]]
 , device type_4 const& r2_3 [[user(fake0)]]
 , device type_4 const& rt2_5 [[user(fake0)]]
-, device type_15 const& light_cones [[user(fake0)]]
+, device type_16 const& light_cones [[user(fake0)]]
 , constant ShadeParams& params [[user(fake0)]]
-, device type_16 const& vertices [[user(fake0)]]
-, device type_17 const& materials [[user(fake0)]]
-, device type_18& radiance [[user(fake0)]]
-, device type_19& candidates [[user(fake0)]]
+, device type_17 const& vertices [[user(fake0)]]
+, device type_18 const& materials [[user(fake0)]]
+, device type_19& radiance [[user(fake0)]]
+, device type_20& candidates [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
     uint h = {};

@@ -95,16 +95,16 @@ struct GeoHit {
     float t;
     uint tri;
 };
-typedef GpuGeoNode type_6[1];
-typedef GpuTriangle type_7[1];
-struct type_8 {
+typedef GpuGeoNode type_7[1];
+typedef GpuTriangle type_8[1];
+struct type_9 {
     uint inner[64];
 };
-struct type_9 {
+struct type_10 {
     uint inner[8];
 };
 typedef uint BshNodes;
-typedef BshNode type_10[1];
+typedef BshNode type_11[1];
 struct GridFrame {
     metal::packed_float3 lo;
     uint nx;
@@ -113,34 +113,36 @@ struct GridFrame {
     metal::packed_float3 inv;
     uint nz;
 };
-typedef uint type_12[1];
+typedef uint type_13[1];
 struct BshCursor {
     uint i;
     uint end;
     uint next;
+    char _pad3[4];
+    metal::float2 cone;
 };
 struct Connection {
     metal::float3 e;
     metal::packed_float3 y;
     float cos_x;
 };
-typedef GpuLight type_15[1];
-typedef GpuLightCone type_16[1];
+typedef GpuLight type_16[1];
+typedef GpuLightCone type_17[1];
 typedef uint BvhNodes;
-struct type_17 {
+struct type_18 {
     float inner[8];
 };
 struct WeightedPicks {
-    type_9 light;
-    type_17 w;
-    type_17 threshold;
+    type_10 light;
+    type_18 w;
+    type_18 threshold;
     float w_sum;
     uint n;
     uint h;
 };
-typedef GpuPathVertex type_19[1];
-typedef GpuMaterial type_20[1];
-typedef metal::float4 type_21[1];
+typedef GpuPathVertex type_20[1];
+typedef GpuMaterial type_21[1];
+typedef metal::float4 type_22[1];
 constant uint LIGHT_POINT = 0u;
 constant uint LIGHT_SPOT = 1u;
 constant uint LIGHT_IES = 2u;
@@ -149,6 +151,7 @@ constant uint LIGHT_VPL = 4u;
 constant uint NO_LIGHT = 4294967295u;
 constant uint GRID_HEADER = 32u;
 constant uint GRID_LEVELS_MAX = 8u;
+constant uint GRID_SORT_MAX = 1536u;
 constant uint COUNT_TILES = 0u;
 constant uint COUNT_GROUP_TESTS = 1u;
 constant uint COUNT_CLUSTER_TESTS = 2u;
@@ -210,6 +213,7 @@ constant BshNodes BSH = 0u;
 constant uint BSH_TILE_DEPTH = 8u;
 constant uint BSH_TILE_SUBTREES = 256u;
 constant uint GRID_ENTRIES_PER_LIGHT = 8u;
+constant float LOBE_CONE_PAD = 1.001;
 constant BvhNodes BVH = 0u;
 
 float at(
@@ -324,8 +328,8 @@ bool sphere_contains_point(
     float r,
     metal::float3 x_2
 ) {
-    metal::float3 v_9 = x_2 - c;
-    return metal::dot(v_9, v_9) <= (r * r);
+    metal::float3 v_10 = x_2 - c;
+    return metal::dot(v_10, v_10) <= (r * r);
 }
 
 float inverse_square(
@@ -354,11 +358,11 @@ float connection_cosine(
 ) {
     bool local = {};
     bool local_1 = {};
-    metal::float3 v_10 = x_3 - y;
-    float d2_10 = metal::dot(v_10, v_10);
-    bool _e7 = slc_keep(r2_1, d2_10);
+    metal::float3 v_11 = x_3 - y;
+    float d2_11 = metal::dot(v_11, v_11);
+    bool _e7 = slc_keep(r2_1, d2_11);
     if (!(!(_e7))) {
-        local = !((d2_10 > 0.0));
+        local = !((d2_11 > 0.0));
     } else {
         local = true;
     }
@@ -366,10 +370,10 @@ float connection_cosine(
     if (_e16) {
         return 0.0;
     }
-    metal::float3 w_11 = v_10 / metal::float3(metal::sqrt(d2_10));
-    float cos_x_1 = -(metal::dot(n, w_11));
+    metal::float3 w_12 = v_11 / metal::float3(metal::sqrt(d2_11));
+    float cos_x_1 = -(metal::dot(n, w_12));
     if (!(!((cos_x_1 > 0.0)))) {
-        local_1 = !((metal::dot(ng, w_11) < 0.0));
+        local_1 = !((metal::dot(ng, w_12) < 0.0));
     } else {
         local_1 = true;
     }
@@ -426,11 +430,11 @@ float area_to_solid_angle_pdf(
     float d2_5,
     float cos_light
 ) {
-    float c_10 = metal::abs(cos_light);
-    if (c_10 <= 0.0) {
+    float c_12 = metal::abs(cos_light);
+    if (c_12 <= 0.0) {
         return 0.0;
     }
-    return (pdf_area * d2_5) / c_10;
+    return (pdf_area * d2_5) / c_12;
 }
 
 float atan_portable(
@@ -647,8 +651,8 @@ float ies_candela_dir(
     float gamma_1 = ((_e9) * 57.295779513082322865);
     bool on_axis = (metal::abs(wr) + metal::abs(ws)) <= 0.0;
     float _e16 = atan2_portable(ws, wr);
-    float c_11 = on_axis ? 0.0 : ((_e16) * 57.295779513082322865);
-    float _e20 = ies_candela(tab_3, base_2, gamma_1, c_11, slc_table, _buffer_sizes);
+    float c_13 = on_axis ? 0.0 : ((_e16) * 57.295779513082322865);
+    float _e20 = ies_candela(tab_3, base_2, gamma_1, c_13, slc_table, _buffer_sizes);
     return _e20;
 }
 
@@ -831,9 +835,9 @@ metal::float3 fresnel_schlick(
     float f90_,
     float v_h
 ) {
-    float c_12 = metal::saturate(1.0 - v_h);
-    float c2_ = c_12 * c_12;
-    return f0_ + ((metal::float3(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_12));
+    float c_14 = metal::saturate(1.0 - v_h);
+    float c2_ = c_14 * c_14;
+    return f0_ + ((metal::float3(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_14));
 }
 
 metal::float3 specular_fresnel(
@@ -896,8 +900,8 @@ metal::float3 specular_brdf(
     metal::float3 hs = v_1 + l_1;
     float inv_1 = 1.0 / metal::sqrt(metal::dot(hs, hs));
     metal::float3 h_8 = hs * inv_1;
-    metal::float3 c_13 = metal::cross(n_7, h_8);
-    float _e32 = ggx_d(metal::dot(n_7, h_8), metal::dot(c_13, c_13), alpha_3);
+    metal::float3 c_15 = metal::cross(n_7, h_8);
+    float _e32 = ggx_d(metal::dot(n_7, h_8), metal::dot(c_15, c_15), alpha_3);
     metal::float3 _e34 = specular_fresnel(base_6, metallic_2, f0_d_2, f90_d_2, metal::dot(v_1, h_8));
     float _e35 = smith_visibility(n_l_1, n_v_2, alpha_3);
     return _e34 * (_e32 * _e35);
@@ -1127,8 +1131,8 @@ metal::float4 emitter_cone(
     metal::float3 p
 ) {
     bool local_11 = {};
-    metal::float3 v_11 = p - center;
-    float dist2_1 = metal::dot(v_11, v_11);
+    metal::float3 v_12 = p - center;
+    float dist2_1 = metal::dot(v_12, v_12);
     float r2_5 = radius * radius;
     if (dist2_1 <= 0.0) {
         local_11 = r2_5 <= 0.0;
@@ -1139,8 +1143,8 @@ metal::float4 emitter_cone(
     if (_e15) {
         return metal::float4(-2.0, 0.000000000001, -1.0, 0.0);
     }
-    float d2_11 = metal::max(metal::max(dist2_1, r2_5), MIN_D2_);
-    metal::float3 wi_2 = (dist2_1 > 0.0) ? (v_11 / metal::float3(metal::sqrt(dist2_1))) : metal::float3(0.0, 0.0, 0.0);
+    float d2_12 = metal::max(metal::max(dist2_1, r2_5), MIN_D2_);
+    metal::float3 wi_2 = (dist2_1 > 0.0) ? (v_12 / metal::float3(metal::sqrt(dist2_1))) : metal::float3(0.0, 0.0, 0.0);
     float cos_w = metal::dot(axis, wi_2);
     float _e38 = safe_sqrt(1.0 - (cos_w * cos_w));
     float _e39 = subtended_cos(dist2_1, r2_5);
@@ -1149,7 +1153,7 @@ metal::float4 emitter_cone(
     float _e48 = cos_sub_clamped(_e38, cos_w, _e47, cos_o);
     float _e49 = sin_sub_clamped(_e38, cos_w, _e47, cos_o);
     float _e50 = cos_sub_clamped(_e49, _e48, _e43, _e39);
-    return metal::float4(_e50, d2_11, _e39, _e43);
+    return metal::float4(_e50, d2_12, _e39, _e43);
 }
 
 float emitter_importance(
@@ -1193,8 +1197,8 @@ float cone_cos_of(
     if (_e21) {
         return 1.0;
     }
-    metal::float3 c_14 = metal::cross(v_5, d);
-    return metal::min(((vd * metal::sqrt(h2_)) + (metal::sqrt(metal::dot(c_14, c_14)) * a_4)) / d2_7, 1.0);
+    metal::float3 c_16 = metal::cross(v_5, d);
+    return metal::min(((vd * metal::sqrt(h2_)) + (metal::sqrt(metal::dot(c_16, c_16)) * a_4)) / d2_7, 1.0);
 }
 
 float cone_cos_toward(
@@ -1203,8 +1207,8 @@ float cone_cos_toward(
     metal::float3 p_2,
     metal::float3 d_1
 ) {
-    metal::float3 v_12 = center_2 - p_2;
-    float _e6 = cone_cos_of(v_12, metal::dot(v_12, v_12), radius_2, d_1);
+    metal::float3 v_13 = center_2 - p_2;
+    float _e6 = cone_cos_of(v_13, metal::dot(v_13, v_13), radius_2, d_1);
     return _e6;
 }
 
@@ -1248,9 +1252,9 @@ float light_importance(
     }
     imp = (phi_1 * _e8.x) / _e8.y;
     if (metal::dot(n_11, n_11) > 0.0) {
-        metal::float3 v_13 = center_4 - p_4;
-        float dist2_2 = metal::dot(v_13, v_13);
-        float cos_i = metal::dot((dist2_2 > 0.0) ? (v_13 / metal::float3(metal::sqrt(dist2_2))) : metal::float3(0.0, 0.0, 0.0), n_11);
+        metal::float3 v_14 = center_4 - p_4;
+        float dist2_2 = metal::dot(v_14, v_14);
+        float cos_i = metal::dot((dist2_2 > 0.0) ? (v_14 / metal::float3(metal::sqrt(dist2_2))) : metal::float3(0.0, 0.0, 0.0), n_11);
         float _e33 = imp;
         float _e37 = safe_sqrt(1.0 - (cos_i * cos_i));
         float _e40 = cos_sub_clamped(_e37, cos_i, _e8.w, _e8.z);
@@ -1314,14 +1318,14 @@ float cone_weight(
     metal::float3 r_3,
     metal::float4 lobe_6
 ) {
-    metal::float3 v_14 = p_6 - center_6;
+    metal::float3 v_15 = p_6 - center_6;
     if (lobe_6.y <= 0.0) {
         float _e15 = light_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_13);
-        float _e19 = candidate_weight(_e15 * INV_PI, rt2_5, metal::dot(v_14, v_14));
+        float _e19 = candidate_weight(_e15 * INV_PI, rt2_5, metal::dot(v_15, v_15));
         return _e19;
     }
     float _e20 = glossy_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_13, r_3, lobe_6);
-    float _e22 = candidate_weight(_e20, rt2_5, metal::dot(v_14, v_14));
+    float _e22 = candidate_weight(_e20, rt2_5, metal::dot(v_15, v_15));
     return _e22;
 }
 
@@ -1451,9 +1455,9 @@ float ray_triangle(
         return -1.0;
     }
     metal::float3 q = metal::cross(s_8, e1_);
-    float v_15 = metal::dot(d_3, q) * inv_2;
-    if (!((v_15 < 0.0))) {
-        local_19 = (u_3 + v_15) > 1.0;
+    float v_16 = metal::dot(d_3, q) * inv_2;
+    if (!((v_16 < 0.0))) {
+        local_19 = (u_3 + v_16) > 1.0;
     } else {
         local_19 = true;
     }
@@ -1544,12 +1548,12 @@ GeoHit trace(
     float t_min_1,
     float t_max_2,
     bool any_hit,
-    device type_6 const& geo_nodes,
-    device type_7 const& geo_tris,
+    device type_7 const& geo_nodes,
+    device type_8 const& geo_tris,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GeoHit hit = {};
-    type_8 stack = {};
+    type_9 stack = {};
     uint sp = 0u;
     uint node_3 = 0u;
     uint i_1 = {};
@@ -1631,8 +1635,8 @@ GeoHit trace(
 bool occluded(
     metal::float3 a_7,
     metal::float3 b_5,
-    device type_6 const& geo_nodes,
-    device type_7 const& geo_tris,
+    device type_7 const& geo_nodes,
+    device type_8 const& geo_tris,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 dv = b_5 - a_7;
@@ -1648,7 +1652,7 @@ bool occluded(
 BshNode bsh_node(
     BshNodes nodes,
     uint i_2,
-    device type_10 const& bsh_nodes,
+    device type_11 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     BshNode _e4 = bsh_nodes[i_2];
@@ -1657,7 +1661,7 @@ BshNode bsh_node(
 
 uint bsh_count(
     BshNodes nodes_1,
-    device type_10 const& bsh_nodes,
+    device type_11 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     return 1 + (_buffer_sizes.size3 - 0 - 32) / 32;
@@ -1665,7 +1669,7 @@ uint bsh_count(
 
 uint bsh_first(
     BshNodes nodes_2,
-    device type_10 const& bsh_nodes,
+    device type_11 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e1 = bsh_count(nodes_2, bsh_nodes, _buffer_sizes);
@@ -1709,10 +1713,10 @@ bool bsh_reaches(
     if (_e23) {
         return false;
     }
-    metal::float3 v_16 = x_10 - node_4.center;
-    float d2_12 = metal::dot(v_16, v_16);
+    metal::float3 v_17 = x_10 - node_4.center;
+    float d2_13 = metal::dot(v_17, v_17);
     float _e29 = bsh_reach_bound(node_4, rl_3.w);
-    if (d2_12 > (_e29 * _e29)) {
+    if (d2_13 > (_e29 * _e29)) {
         return false;
     }
     if (node_4.child == BSH_NONE) {
@@ -1721,12 +1725,12 @@ bool bsh_reaches(
         bool _e42 = sphere_contains_point(node_4.center, _e41, x_10);
         return _e42;
     }
-    float _e45 = bsh_inner_scale(node_4.extent, -(v_16), d2_12, r_5, rl_3);
+    float _e45 = bsh_inner_scale(node_4.extent, -(v_17), d2_13, r_5, rl_3);
     float s_c = _e45 * 1.001;
     float _e50 = bsh_range_bound(node_4);
     float reach = node_4.extent + (metal::sqrt(s_c) * _e50);
-    if (d2_12 <= ((node_4.radius * node_4.radius) * s_c)) {
-        local_22 = d2_12 <= (reach * reach);
+    if (d2_13 <= ((node_4.radius * node_4.radius) * s_c)) {
+        local_22 = d2_13 <= (reach * reach);
     } else {
         local_22 = false;
     }
@@ -1740,7 +1744,7 @@ uint bsh_next_leaf_lobe(
     metal::float3 x_11,
     metal::float3 r_6,
     metal::float4 rl_4,
-    device type_10 const& bsh_nodes,
+    device type_11 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint i_3 = {};
@@ -1834,9 +1838,127 @@ uint bsh_grid_cell(
     return (((_e68 * f.ny) + _e61) * f.nx) + _e54;
 }
 
+metal::float2 lobe_cone(
+    metal::float4 rl_5
+) {
+    bool local_28 = {};
+    bool local_29 = {};
+    bool local_30 = {};
+    float c_7 = {};
+    uint tries = 0u;
+    if (rl_5.x < 1.0) {
+        local_28 = rl_5.y >= 0.0;
+    } else {
+        local_28 = false;
+    }
+    bool _e10 = local_28;
+    if (_e10) {
+        local_29 = rl_5.z > 0.0;
+    } else {
+        local_29 = false;
+    }
+    bool _e17 = local_29;
+    if (_e17) {
+        local_30 = rl_5.z < 1.0;
+    } else {
+        local_30 = false;
+    }
+    bool _e24 = local_30;
+    if (!(_e24)) {
+        return metal::float2(0.0, 0.0);
+    }
+    float t1_1 = metal::sqrt((rl_5.y * rl_5.z) / (1.0 - rl_5.x));
+    c_7 = ((2.0 * (1.0 - t1_1)) / (1.0 - rl_5.z)) - 1.0;
+    uint2 loop_bound_4 = uint2(4294967295u);
+    while(true) {
+        if (metal::all(loop_bound_4 == uint2(0u))) { break; }
+        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+        float _e50 = c_7;
+        float _e51 = range_scale_at(rl_5, _e50);
+        if (!((_e51 <= 1.0))) {
+        } else {
+            break;
+        }
+        {
+            float _e55 = c_7;
+            c_7 = _e55 - 0.0001;
+            uint _e58 = tries;
+            tries = _e58 + 1u;
+            uint _e61 = tries;
+            if (_e61 > 16u) {
+                return metal::float2(0.0, 0.0);
+            }
+        }
+    }
+    float _e67 = c_7;
+    float w_13 = metal::min(metal::min(_e67, 1.0) - 0.001, 0.9999);
+    if (!((w_13 > 0.0))) {
+        return metal::float2(0.0, 0.0);
+    }
+    return metal::float2(w_13 * w_13, 1.0 / metal::sqrt(1.0 - (w_13 * w_13)));
+}
+
+bool lobe_cone_meets(
+    metal::float3 v_9,
+    float d2_10,
+    float extent,
+    metal::float3 axis_5,
+    metal::float2 cone
+) {
+    bool local_31 = {};
+    float k_2 = ((extent * LOBE_CONE_PAD) + 0.000000000000000000000000000001) * cone.y;
+    float vd_1 = -(metal::dot(v_9, axis_5));
+    float a_14 = vd_1 + k_2;
+    float b_8 = d2_10 + (k_2 * ((2.0 * vd_1) + k_2));
+    if (a_14 >= 0.0) {
+        local_31 = (a_14 * a_14) >= (b_8 * cone.x);
+    } else {
+        local_31 = false;
+    }
+    bool _e28 = local_31;
+    return _e28;
+}
+
+bool bsh_lobe_admits(
+    metal::float3 c_8,
+    float radius_7,
+    float extent_1,
+    metal::float3 x_13,
+    float w_9,
+    metal::float3 axis_6,
+    metal::float2 cone_1
+) {
+    bool local_32 = {};
+    bool local_33 = {};
+    bool local_34 = {};
+    metal::float3 v_18 = x_13 - c_8;
+    float d2_14 = metal::dot(v_18, v_18);
+    float f_2 = radius_7 * (w_9 * 1.0001);
+    if (d2_14 <= (f_2 * f_2)) {
+        if (!((cone_1.y == 0.0))) {
+            local_33 = d2_14 <= (radius_7 * radius_7);
+        } else {
+            local_33 = true;
+        }
+        bool _e25 = local_33;
+        if (!(_e25)) {
+            bool _e29 = lobe_cone_meets(v_18, d2_14, extent_1, axis_6, cone_1);
+            local_34 = _e29;
+        } else {
+            local_34 = true;
+        }
+        bool _e31 = local_34;
+        local_32 = _e31;
+    } else {
+        local_32 = false;
+    }
+    bool _e33 = local_32;
+    return _e33;
+}
+
 uint grid_word(
     uint i_4,
-    device type_12 const& grid,
+    device type_13 const& grid,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e3 = grid[i_4];
@@ -1845,7 +1967,7 @@ uint grid_word(
 
 GridFrame grid_frame(
     uint h_1,
-    device type_12 const& grid,
+    device type_13 const& grid,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GridFrame f_1 = {};
@@ -1873,7 +1995,7 @@ GridFrame grid_frame(
 
 float grid_reach(
     uint h_2,
-    device type_12 const& grid,
+    device type_13 const& grid,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e3 = grid_word(h_2 + 12u, grid, _buffer_sizes);
@@ -1881,98 +2003,143 @@ float grid_reach(
 }
 
 BshCursor bsh_cursor(
-    metal::float3 x_13,
+    metal::float3 x_14,
     metal::float3 r_7,
-    metal::float4 rl_5,
-    device type_10 const& bsh_nodes,
-    device type_12 const& grid,
+    metal::float4 rl_6,
+    device type_11 const& bsh_nodes,
+    device type_13 const& grid,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    BshCursor c_7 = {};
+    BshCursor c_9 = {};
     uint h_3 = 0u;
-    bool local_28 = {};
-    bool local_29 = {};
-    c_7.i = 0u;
-    c_7.end = 0u;
+    uint g = 0u;
+    bool local_35 = {};
+    bool local_36 = {};
+    bool local_37 = {};
+    c_9.i = 0u;
+    c_9.end = 0u;
     uint _e10 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
-    c_7.next = _e10;
-    float _e15 = grid_reach(0u, grid, _buffer_sizes);
-    if (rl_5.w > _e15) {
-        uint _e18 = grid_word(14u, grid, _buffer_sizes);
-        h_3 = _e18;
-    }
-    uint _e19 = h_3;
-    GridFrame _e20 = grid_frame(_e19, grid, _buffer_sizes);
-    uint _e22 = c_7.next;
-    if (_e22 != BSH_NONE) {
-        local_28 = _e20.nx > 0u;
-    } else {
-        local_28 = false;
-    }
-    bool _e31 = local_28;
-    if (_e31) {
-        uint _e35 = h_3;
-        float _e36 = grid_reach(_e35, grid, _buffer_sizes);
-        local_29 = rl_5.w <= _e36;
-    } else {
-        local_29 = false;
-    }
-    bool _e39 = local_29;
-    if (_e39) {
-        uint _e40 = bsh_grid_cell(_e20, x_13);
-        if (_e40 != BSH_NONE) {
-            uint _e45 = h_3;
-            uint _e50 = grid[(_e45 + GRID_HEADER) + _e40];
-            c_7.i = _e50;
-            uint _e53 = h_3;
-            uint _e60 = grid[((_e53 + GRID_HEADER) + _e40) + 1u];
-            c_7.end = _e60;
-            uint _e65 = bsh_nodes[0].next;
-            c_7.next = _e65;
+    c_9.next = _e10;
+    c_9.cone = metal::float2(0.0);
+    uint2 loop_bound_5 = uint2(4294967295u);
+    bool loop_init_1 = true;
+    while(true) {
+        if (metal::all(loop_bound_5 == uint2(0u))) { break; }
+        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+        if (!loop_init_1) {
+            uint _e34 = g;
+            g = _e34 + 1u;
+        }
+        loop_init_1 = false;
+        uint _e18 = g;
+        if (_e18 < 2u) {
+            uint _e24 = h_3;
+            float _e25 = grid_reach(_e24, grid, _buffer_sizes);
+            local_35 = rl_6.w > _e25;
+        } else {
+            local_35 = false;
+        }
+        bool _e28 = local_35;
+        if (_e28) {
+        } else {
+            break;
+        }
+        {
+            uint _e29 = h_3;
+            uint _e32 = grid_word(_e29 + 14u, grid, _buffer_sizes);
+            h_3 = _e32;
         }
     }
-    BshCursor _e66 = c_7;
-    return _e66;
+    uint _e36 = h_3;
+    GridFrame _e37 = grid_frame(_e36, grid, _buffer_sizes);
+    uint _e39 = c_9.next;
+    if (_e39 != BSH_NONE) {
+        local_36 = _e37.nx > 0u;
+    } else {
+        local_36 = false;
+    }
+    bool _e48 = local_36;
+    if (_e48) {
+        uint _e52 = h_3;
+        float _e53 = grid_reach(_e52, grid, _buffer_sizes);
+        local_37 = rl_6.w <= _e53;
+    } else {
+        local_37 = false;
+    }
+    bool _e56 = local_37;
+    if (_e56) {
+        uint _e57 = bsh_grid_cell(_e37, x_14);
+        if (_e57 != BSH_NONE) {
+            uint _e62 = h_3;
+            uint _e67 = grid[(_e62 + GRID_HEADER) + _e57];
+            c_9.i = _e67;
+            uint _e70 = h_3;
+            uint _e77 = grid[((_e70 + GRID_HEADER) + _e57) + 1u];
+            c_9.end = _e77;
+            uint _e82 = bsh_nodes[0].next;
+            c_9.next = _e82;
+            metal::float2 _e84 = lobe_cone(rl_6);
+            c_9.cone = _e84;
+        }
+    }
+    BshCursor _e85 = c_9;
+    return _e85;
 }
 
 uint bsh_cursor_next(
-    thread BshCursor& c_8,
-    metal::float3 x_14,
+    thread BshCursor& c_10,
+    metal::float3 x_15,
     metal::float3 r_8,
-    metal::float4 rl_6,
-    device type_10 const& bsh_nodes,
-    device type_12 const& grid_entries,
+    metal::float4 rl_7,
+    device type_11 const& bsh_nodes,
+    device type_13 const& grid_entries,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint2 loop_bound_4 = uint2(4294967295u);
+    bool local_38 = {};
+    bool local_39 = {};
+    uint2 loop_bound_6 = uint2(4294967295u);
     while(true) {
-        if (metal::all(loop_bound_4 == uint2(0u))) { break; }
-        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
-        uint _e5 = c_8.i;
-        uint _e7 = c_8.end;
+        if (metal::all(loop_bound_6 == uint2(0u))) { break; }
+        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+        uint _e5 = c_10.i;
+        uint _e7 = c_10.end;
         if (_e5 < _e7) {
         } else {
             break;
         }
         {
-            uint _e11 = c_8.i;
-            uint b_8 = grid_entries[_e11];
-            uint _e15 = c_8.i;
-            c_8.i = _e15 + 1u;
-            BshNode _e20 = bsh_nodes[b_8];
-            bool _e21 = bsh_reaches(_e20, x_14, r_8, rl_6);
-            if (_e21) {
-                return b_8;
+            uint _e11 = c_10.i;
+            uint b_9 = grid_entries[_e11];
+            uint _e15 = c_10.i;
+            c_10.i = _e15 + 1u;
+            BshNode n_25 = bsh_nodes[b_9];
+            if (!((rl_7.w <= 1.0))) {
+                metal::float2 _e32 = c_10.cone;
+                bool _e33 = bsh_lobe_admits(n_25.center, n_25.radius, n_25.extent, x_15, rl_7.w, r_8, _e32);
+                local_38 = _e33;
+            } else {
+                local_38 = true;
+            }
+            bool _e35 = local_38;
+            if (_e35) {
+                bool _e38 = bsh_reaches(n_25, x_15, r_8, rl_7);
+                local_39 = _e38;
+            } else {
+                local_39 = false;
+            }
+            bool _e40 = local_39;
+            if (_e40) {
+                return b_9;
             }
         }
     }
-    uint _e24 = c_8.next;
-    uint _e25 = bsh_next_leaf_lobe(BSH, _e24, x_14, r_8, rl_6, bsh_nodes, _buffer_sizes);
-    if (_e25 != BSH_NONE) {
-        uint _e32 = bsh_nodes[_e25].next;
-        c_8.next = _e32;
+    uint _e43 = c_10.next;
+    uint _e44 = bsh_next_leaf_lobe(BSH, _e43, x_15, r_8, rl_7, bsh_nodes, _buffer_sizes);
+    if (_e44 != BSH_NONE) {
+        uint _e51 = bsh_nodes[_e44].next;
+        c_10.next = _e51;
     }
-    return _e25;
+    return _e44;
 }
 
 float next_threshold(
@@ -1990,7 +2157,7 @@ float next_threshold(
 
 Connection connect_record(
     GpuLight l_8,
-    metal::float3 x_15,
+    metal::float3 x_16,
     metal::float3 n_15,
     metal::float3 ng_1,
     float r2_3,
@@ -2001,52 +2168,52 @@ Connection connect_record(
     float eps,
     bool trace_1,
     device type_4 const& slc_table,
-    device type_6 const& geo_nodes,
-    device type_7 const& geo_tris,
+    device type_7 const& geo_nodes,
+    device type_8 const& geo_tris,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Connection c_9 = {};
-    bool local_30 = {};
-    bool local_31 = {};
-    c_9.e = metal::float3(0.0);
+    Connection c_11 = {};
+    bool local_40 = {};
+    bool local_41 = {};
+    c_11.e = metal::float3(0.0);
     metal::float3 _e16 = light_point(l_8, u1_2, u2_2);
-    c_9.y = _e16;
-    metal::float3 _e19 = c_9.y;
-    float _e20 = connection_cosine(x_15, _e19, n_15, ng_1, r2_3);
-    c_9.cos_x = _e20;
-    float _e22 = c_9.cos_x;
+    c_11.y = _e16;
+    metal::float3 _e19 = c_11.y;
+    float _e20 = connection_cosine(x_16, _e19, n_15, ng_1, r2_3);
+    c_11.cos_x = _e20;
+    float _e22 = c_11.cos_x;
     if (!((_e22 <= 0.0))) {
         if (trace_1) {
-            metal::float3 _e33 = c_9.y;
-            bool _e34 = occluded(x_15 + (ng_1 * eps), _e33, geo_nodes, geo_tris, _buffer_sizes);
-            local_31 = _e34;
+            metal::float3 _e33 = c_11.y;
+            bool _e34 = occluded(x_16 + (ng_1 * eps), _e33, geo_nodes, geo_tris, _buffer_sizes);
+            local_41 = _e34;
         } else {
-            local_31 = false;
+            local_41 = false;
         }
-        bool _e36 = local_31;
-        local_30 = _e36;
+        bool _e36 = local_41;
+        local_40 = _e36;
     } else {
-        local_30 = true;
+        local_40 = true;
     }
-    bool _e38 = local_30;
+    bool _e38 = local_40;
     if (_e38) {
-        Connection _e39 = c_9;
+        Connection _e39 = c_11;
         return _e39;
     }
-    metal::float3 _e41 = c_9.y;
-    metal::float3 v_17 = x_15 - _e41;
-    float d2_13 = metal::dot(v_17, v_17);
-    metal::float3 _e48 = light_intensity(l_8, v_17 / metal::float3(metal::sqrt(d2_13)), slc_table, _buffer_sizes);
-    float _e50 = c_9.cos_x;
-    float _e51 = connection_factor(_e50, d2_13, rt2_6, w_res);
-    c_9.e = _e48 * _e51;
-    Connection _e53 = c_9;
+    metal::float3 _e41 = c_11.y;
+    metal::float3 v_19 = x_16 - _e41;
+    float d2_15 = metal::dot(v_19, v_19);
+    metal::float3 _e48 = light_intensity(l_8, v_19 / metal::float3(metal::sqrt(d2_15)), slc_table, _buffer_sizes);
+    float _e50 = c_11.cos_x;
+    float _e51 = connection_factor(_e50, d2_15, rt2_6, w_res);
+    c_11.e = _e48 * _e51;
+    Connection _e53 = c_11;
     return _e53;
 }
 
 Connection connect_traced(
     uint li,
-    metal::float3 x_16,
+    metal::float3 x_17,
     metal::float3 n_16,
     metal::float3 ng_2,
     float s_1,
@@ -2056,9 +2223,9 @@ Connection connect_traced(
     float eps_1,
     bool trace_2,
     device type_4 const& slc_table,
-    device type_6 const& geo_nodes,
-    device type_7 const& geo_tris,
-    device type_15 const& lights,
+    device type_7 const& geo_nodes,
+    device type_8 const& geo_tris,
+    device type_16 const& lights,
     device type_4 const& r2_4,
     device type_4 const& rt2_7,
     constant _mslBufferSizes& _buffer_sizes
@@ -2066,13 +2233,13 @@ Connection connect_traced(
     GpuLight _e12 = lights[li];
     float _e15 = r2_4[li];
     float _e19 = rt2_7[li];
-    Connection _e21 = connect_record(_e12, x_16, n_16, ng_2, s_1 * _e15, s_1 * _e19, w_res_1, u1_3, u2_3, eps_1, trace_2, slc_table, geo_nodes, geo_tris, _buffer_sizes);
+    Connection _e21 = connect_record(_e12, x_17, n_16, ng_2, s_1 * _e15, s_1 * _e19, w_res_1, u1_3, u2_3, eps_1, trace_2, slc_table, geo_nodes, geo_tris, _buffer_sizes);
     return _e21;
 }
 
 Connection connect(
     uint li_1,
-    metal::float3 x_17,
+    metal::float3 x_18,
     metal::float3 n_17,
     metal::float3 ng_3,
     float s_2,
@@ -2081,14 +2248,14 @@ Connection connect(
     float u2_4,
     float eps_2,
     device type_4 const& slc_table,
-    device type_6 const& geo_nodes,
-    device type_7 const& geo_tris,
-    device type_15 const& lights,
+    device type_7 const& geo_nodes,
+    device type_8 const& geo_tris,
+    device type_16 const& lights,
     device type_4 const& r2_4,
     device type_4 const& rt2_7,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Connection _e10 = connect_traced(li_1, x_17, n_17, ng_3, s_2, w_res_2, u1_4, u2_4, eps_2, true, slc_table, geo_nodes, geo_tris, lights, r2_4, rt2_7, _buffer_sizes);
+    Connection _e10 = connect_traced(li_1, x_18, n_17, ng_3, s_2, w_res_2, u1_4, u2_4, eps_2, true, slc_table, geo_nodes, geo_tris, lights, r2_4, rt2_7, _buffer_sizes);
     return _e10;
 }
 
@@ -2102,94 +2269,94 @@ float mis_weight(
 
 float light_range_scale(
     uint li_2,
-    metal::float3 x_18,
+    metal::float3 x_19,
     metal::float3 r_9,
-    metal::float4 rl_7,
-    device type_16 const& light_cones,
+    metal::float4 rl_8,
+    device type_17 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuLightCone c_15 = light_cones[li_2];
-    float _e9 = range_scale_toward(rl_7, c_15.center, c_15.radius, x_18, r_9);
+    GpuLightCone c_17 = light_cones[li_2];
+    float _e9 = range_scale_toward(rl_8, c_17.center, c_17.radius, x_19, r_9);
     return _e9;
 }
 
 float light_weight(
     uint li_3,
-    metal::float3 x_19,
+    metal::float3 x_20,
     metal::float3 n_18,
     metal::float3 r_10,
     metal::float4 lobe_7,
-    metal::float4 rl_8,
+    metal::float4 rl_9,
     device type_4 const& rt2_7,
-    device type_16 const& light_cones,
+    device type_17 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuLightCone c_16 = light_cones[li_3];
-    float _e15 = light_range_scale(li_3, x_19, r_10, rl_8, light_cones, _buffer_sizes);
+    GpuLightCone c_18 = light_cones[li_3];
+    float _e15 = light_range_scale(li_3, x_20, r_10, rl_9, light_cones, _buffer_sizes);
     float _e18 = rt2_7[li_3];
-    float _e20 = cone_weight(c_16.center, c_16.radius, c_16.phi, c_16.axis, c_16.cos_o, c_16.cos_e, _e15 * _e18, x_19, n_18, r_10, lobe_7);
+    float _e20 = cone_weight(c_18.center, c_18.radius, c_18.phi, c_18.axis, c_18.cos_o, c_18.cos_e, _e15 * _e18, x_20, n_18, r_10, lobe_7);
     return _e20;
 }
 
 float select_pdf(
     uint li_4,
-    metal::float3 x_20,
+    metal::float3 x_21,
     metal::float3 n_19,
     metal::float3 r_11,
     metal::float4 lobe_8,
-    metal::float4 rl_9,
+    metal::float4 rl_10,
     uint nee,
     bool in_range_1,
     device type_4 const& rt2_7,
-    device type_16 const& light_cones,
+    device type_17 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e8 = light_weight(li_4, x_20, n_19, r_11, lobe_8, rl_9, rt2_7, light_cones, _buffer_sizes);
+    float _e8 = light_weight(li_4, x_21, n_19, r_11, lobe_8, rl_10, rt2_7, light_cones, _buffer_sizes);
     float _e11 = weighted_select_pdf(_e8, as_type<float>(nee), in_range_1, K);
     return _e11;
 }
 
 float light_pdf_selected(
     uint li_5,
-    metal::float3 x_21,
+    metal::float3 x_22,
     metal::float3 r_12,
-    metal::float4 rl_10,
+    metal::float4 rl_11,
     metal::float3 y_2,
     float sel,
-    device type_15 const& lights,
+    device type_16 const& lights,
     device type_4 const& rt2_7,
-    device type_16 const& light_cones,
+    device type_17 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuLight l_9 = lights[li_5];
-    metal::float3 v_18 = x_21 - y_2;
-    float d2_14 = metal::dot(v_18, v_18);
+    metal::float3 v_20 = x_22 - y_2;
+    float d2_16 = metal::dot(v_20, v_20);
     metal::float3 _e11 = light_normal(l_9);
-    float cos_y_1 = (d2_14 > 0.0) ? metal::dot(_e11, v_18 / metal::float3(metal::sqrt(d2_14))) : 0.0;
-    float _e20 = light_range_scale(li_5, x_21, r_12, rl_10, light_cones, _buffer_sizes);
+    float cos_y_1 = (d2_16 > 0.0) ? metal::dot(_e11, v_20 / metal::float3(metal::sqrt(d2_16))) : 0.0;
+    float _e20 = light_range_scale(li_5, x_22, r_12, rl_11, light_cones, _buffer_sizes);
     float _e23 = rt2_7[li_5];
     float _e25 = light_area(l_9);
-    float _e26 = light_strategy_pdf(sel, _e20 * _e23, d2_14, _e25, cos_y_1);
+    float _e26 = light_strategy_pdf(sel, _e20 * _e23, d2_16, _e25, cos_y_1);
     return _e26;
 }
 
 float light_pdf(
     uint li_6,
-    metal::float3 x_22,
+    metal::float3 x_23,
     metal::float3 n_20,
     metal::float3 r_13,
     metal::float4 lobe_9,
-    metal::float4 rl_11,
+    metal::float4 rl_12,
     metal::float3 y_3,
     uint nee_1,
     bool in_range_2,
-    device type_15 const& lights,
+    device type_16 const& lights,
     device type_4 const& rt2_7,
-    device type_16 const& light_cones,
+    device type_17 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e9 = select_pdf(li_6, x_22, n_20, r_13, lobe_9, rl_11, nee_1, in_range_2, rt2_7, light_cones, _buffer_sizes);
-    float _e10 = light_pdf_selected(li_6, x_22, r_13, rl_11, y_3, _e9, lights, rt2_7, light_cones, _buffer_sizes);
+    float _e9 = select_pdf(li_6, x_23, n_20, r_13, lobe_9, rl_12, nee_1, in_range_2, rt2_7, light_cones, _buffer_sizes);
+    float _e10 = light_pdf_selected(li_6, x_23, r_13, rl_12, y_3, _e9, lights, rt2_7, light_cones, _buffer_sizes);
     return _e10;
 }
 
@@ -2207,27 +2374,27 @@ WeightedPicks weighted_picks(
 void weighted_offer(
     thread WeightedPicks& picks_1,
     uint li_7,
-    float w_9
+    float w_10
 ) {
     uint h_6 = {};
     uint s_3 = 0u;
     uint _e4 = picks_1.n;
     picks_1.n = _e4 + 1u;
-    if (w_9 > 0.0) {
+    if (w_10 > 0.0) {
         float _e10 = picks_1.w_sum;
-        picks_1.w_sum = _e10 + w_9;
+        picks_1.w_sum = _e10 + w_10;
         uint _e13 = picks_1.h;
         h_6 = _e13;
-        uint2 loop_bound_5 = uint2(4294967295u);
-        bool loop_init_1 = true;
+        uint2 loop_bound_7 = uint2(4294967295u);
+        bool loop_init_2 = true;
         while(true) {
-            if (metal::all(loop_bound_5 == uint2(0u))) { break; }
-            loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
-            if (!loop_init_1) {
+            if (metal::all(loop_bound_7 == uint2(0u))) { break; }
+            loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+            if (!loop_init_2) {
                 uint _e40 = s_3;
                 s_3 = _e40 + 1u;
             }
-            loop_init_1 = false;
+            loop_init_2 = false;
             uint _e17 = s_3;
             if (_e17 < K) {
             } else {
@@ -2241,7 +2408,7 @@ void weighted_offer(
                     uint _e28 = s_3;
                     picks_1.light.inner[_e28] = li_7;
                     uint _e31 = s_3;
-                    picks_1.w.inner[_e31] = w_9;
+                    picks_1.w.inner[_e31] = w_10;
                     uint _e34 = s_3;
                     float _e37 = picks_1.w_sum;
                     float _e38 = next_threshold(_e37, h_6);
@@ -2258,17 +2425,17 @@ void weighted_offer(
 }
 
 WeightedPicks bsh_weighted_collect(
-    metal::float3 x_23,
+    metal::float3 x_24,
     metal::float3 n_21,
     metal::float3 r_14,
     metal::float4 lobe_10,
-    metal::float4 rl_12,
+    metal::float4 rl_13,
     uint h0_,
-    device type_10 const& bsh_nodes,
-    device type_12 const& grid,
-    device type_12 const& grid_entries,
+    device type_11 const& bsh_nodes,
+    device type_13 const& grid,
+    device type_13 const& grid_entries,
     device type_4 const& rt2_7,
-    device type_16 const& light_cones,
+    device type_17 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     WeightedPicks picks_2 = {};
@@ -2276,20 +2443,20 @@ WeightedPicks bsh_weighted_collect(
     uint b_6 = {};
     WeightedPicks _e6 = weighted_picks(h0_);
     picks_2 = _e6;
-    BshCursor _e8 = bsh_cursor(x_23, r_14, rl_12, bsh_nodes, grid, _buffer_sizes);
+    BshCursor _e8 = bsh_cursor(x_24, r_14, rl_13, bsh_nodes, grid, _buffer_sizes);
     cur = _e8;
-    uint _e10 = bsh_cursor_next(cur, x_23, r_14, rl_12, bsh_nodes, grid_entries, _buffer_sizes);
+    uint _e10 = bsh_cursor_next(cur, x_24, r_14, rl_13, bsh_nodes, grid_entries, _buffer_sizes);
     b_6 = _e10;
-    uint2 loop_bound_6 = uint2(4294967295u);
-    bool loop_init_2 = true;
+    uint2 loop_bound_8 = uint2(4294967295u);
+    bool loop_init_3 = true;
     while(true) {
-        if (metal::all(loop_bound_6 == uint2(0u))) { break; }
-        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-        if (!loop_init_2) {
-            uint _e21 = bsh_cursor_next(cur, x_23, r_14, rl_12, bsh_nodes, grid_entries, _buffer_sizes);
+        if (metal::all(loop_bound_8 == uint2(0u))) { break; }
+        loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
+        if (!loop_init_3) {
+            uint _e21 = bsh_cursor_next(cur, x_24, r_14, rl_13, bsh_nodes, grid_entries, _buffer_sizes);
             b_6 = _e21;
         }
-        loop_init_2 = false;
+        loop_init_3 = false;
         uint _e12 = b_6;
         if (_e12 != BSH_NONE) {
         } else {
@@ -2298,7 +2465,7 @@ WeightedPicks bsh_weighted_collect(
         {
             uint _e16 = b_6;
             uint li_9 = bsh_nodes[_e16].light;
-            float _e20 = light_weight(li_9, x_23, n_21, r_14, lobe_10, rl_12, rt2_7, light_cones, _buffer_sizes);
+            float _e20 = light_weight(li_9, x_24, n_21, r_14, lobe_10, rl_13, rt2_7, light_cones, _buffer_sizes);
             weighted_offer(picks_2, li_9, _e20);
         }
     }
@@ -2308,40 +2475,40 @@ WeightedPicks bsh_weighted_collect(
 
 metal::float3 shade_pick(
     uint li_8,
-    metal::float3 x_24,
+    metal::float3 x_25,
     metal::float3 n_22,
     metal::float3 ng_4,
     GpuMaterial m,
     metal::float3 wo_1,
     metal::float3 r_15,
     metal::float4 lobe_11,
-    metal::float4 rl_13,
-    float w_10,
+    metal::float4 rl_14,
+    float w_11,
     uint nee_2,
     float u1_5,
     float u2_5,
     device type_4 const& slc_table,
-    device type_6 const& geo_nodes,
-    device type_7 const& geo_tris,
-    device type_15 const& lights,
+    device type_7 const& geo_nodes,
+    device type_8 const& geo_tris,
+    device type_16 const& lights,
     device type_4 const& r2_4,
     device type_4 const& rt2_7,
-    device type_16 const& light_cones,
+    device type_17 const& light_cones,
     constant ShadeParams& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     float mis = 1.0;
-    float _e13 = light_range_scale(li_8, x_24, r_15, rl_13, light_cones, _buffer_sizes);
+    float _e13 = light_range_scale(li_8, x_25, r_15, rl_14, light_cones, _buffer_sizes);
     float _e16 = params.eps;
-    Connection _e17 = connect(li_8, x_24, n_22, ng_4, _e13, w_10, u1_5, u2_5, _e16, slc_table, geo_nodes, geo_tris, lights, r2_4, rt2_7, _buffer_sizes);
+    Connection _e17 = connect(li_8, x_25, n_22, ng_4, _e13, w_11, u1_5, u2_5, _e16, slc_table, geo_nodes, geo_tris, lights, r2_4, rt2_7, _buffer_sizes);
     if (_e17.cos_x <= 0.0) {
         return metal::float3(0.0);
     }
-    metal::float3 l_10 = metal::normalize(_e17.y - x_24);
+    metal::float3 l_10 = metal::normalize(_e17.y - x_25);
     GpuLight _e30 = lights[li_8];
     float _e31 = light_area(_e30);
     if (_e31 > 0.0) {
-        float _e36 = light_pdf(li_8, x_24, n_22, r_15, lobe_11, rl_13, _e17.y, nee_2, true, lights, rt2_7, light_cones, _buffer_sizes);
+        float _e36 = light_pdf(li_8, x_25, n_22, r_15, lobe_11, rl_14, _e17.y, nee_2, true, lights, rt2_7, light_cones, _buffer_sizes);
         float _e38 = specular_probability(lobe_11);
         float _e39 = bsdf_pdf(n_22, wo_1, l_10, m.alpha, _e38);
         float _e40 = mis_weight(_e36, _e39);
@@ -2357,20 +2524,20 @@ struct main_Input {
 kernel void main_(
   metal::uint3 gid [[thread_position_in_grid]]
 , device type_4 const& slc_table [[user(fake0)]]
-, device type_6 const& geo_nodes [[user(fake0)]]
-, device type_7 const& geo_tris [[user(fake0)]]
-, device type_10 const& bsh_nodes [[user(fake0)]]
-, device type_12 const& grid [[user(fake0)]]
-, device type_12 const& grid_entries [[user(fake0)]]
-, device type_15 const& lights [[user(fake0)]]
+, device type_7 const& geo_nodes [[user(fake0)]]
+, device type_8 const& geo_tris [[user(fake0)]]
+, device type_11 const& bsh_nodes [[user(fake0)]]
+, device type_13 const& grid [[user(fake0)]]
+, device type_13 const& grid_entries [[user(fake0)]]
+, device type_16 const& lights [[user(fake0)]]
 , device type_4 const& r2_4 [[user(fake0)]]
 , device type_4 const& rt2_7 [[user(fake0)]]
-, device type_16 const& light_cones [[user(fake0)]]
+, device type_17 const& light_cones [[user(fake0)]]
 , constant ShadeParams& params [[user(fake0)]]
-, device type_19 const& vertices [[user(fake0)]]
-, device type_20 const& materials [[user(fake0)]]
-, device type_21& radiance [[user(fake0)]]
-, device type_12& candidates [[user(fake0)]]
+, device type_20 const& vertices [[user(fake0)]]
+, device type_21 const& materials [[user(fake0)]]
+, device type_22& radiance [[user(fake0)]]
+, device type_13& candidates [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
     uint h = {};
@@ -2386,13 +2553,13 @@ kernel void main_(
         candidates[i_5] = 0u;
         return;
     }
-    metal::float3 x_25 = vtx.position;
-    metal::float3 n_25 = vtx.normal;
+    metal::float3 x_26 = vtx.position;
+    metal::float3 n_26 = vtx.normal;
     metal::float3 ng_5 = vtx.gnormal;
     GpuMaterial m_2 = materials[vtx.material];
     metal::float3 wo_2 = vtx.wo;
-    metal::float3 _e23 = mirror_dir(n_25, wo_2);
-    metal::float4 _e30 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, metal::dot(n_25, wo_2));
+    metal::float3 _e23 = mirror_dir(n_26, wo_2);
+    metal::float4 _e30 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, metal::dot(n_26, wo_2));
     metal::float4 _e31 = range_lobe(_e30);
     uint _e34 = params.seed;
     uint _e37 = params.frame;
@@ -2400,21 +2567,21 @@ kernel void main_(
     uint _e39 = pick_stream(_e38);
     h = _e39;
     uint _e44 = h;
-    WeightedPicks _e45 = bsh_weighted_collect(x_25, n_25, _e23, _e30, _e31, _e44, bsh_nodes, grid, grid_entries, rt2_7, light_cones, _buffer_sizes);
+    WeightedPicks _e45 = bsh_weighted_collect(x_26, n_26, _e23, _e30, _e31, _e44, bsh_nodes, grid, grid_entries, rt2_7, light_cones, _buffer_sizes);
     h = _e45.h;
     float w_sum_3 = _e45.w_sum;
     candidates[i_5] = as_type<uint>(w_sum_3);
     if (w_sum_3 > 0.0) {
-        uint2 loop_bound_7 = uint2(4294967295u);
-        bool loop_init_3 = true;
+        uint2 loop_bound_9 = uint2(4294967295u);
+        bool loop_init_4 = true;
         while(true) {
-            if (metal::all(loop_bound_7 == uint2(0u))) { break; }
-            loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
-            if (!loop_init_3) {
+            if (metal::all(loop_bound_9 == uint2(0u))) { break; }
+            loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
+            if (!loop_init_4) {
                 uint _e79 = s;
                 s = _e79 + 1u;
             }
-            loop_init_3 = false;
+            loop_init_4 = false;
             uint _e55 = s;
             if (_e55 < K) {
             } else {
@@ -2435,7 +2602,7 @@ kernel void main_(
                 float _e72 = weighted_pick_weight(w_sum_3, _e45.w.inner[_e69], K);
                 uint _e74 = h;
                 float _e75 = xi_from_bits(_e74);
-                metal::float3 _e76 = shade_pick(_e45.light.inner[_e66], x_25, n_25, ng_5, m_2, wo_2, _e23, _e30, _e31, _e72, as_type<uint>(w_sum_3), _e61, _e75, slc_table, geo_nodes, geo_tris, lights, r2_4, rt2_7, light_cones, params, _buffer_sizes);
+                metal::float3 _e76 = shade_pick(_e45.light.inner[_e66], x_26, n_26, ng_5, m_2, wo_2, _e23, _e30, _e31, _e72, as_type<uint>(w_sum_3), _e61, _e75, slc_table, geo_nodes, geo_tris, lights, r2_4, rt2_7, light_cones, params, _buffer_sizes);
                 sum = _e64 + _e76;
             }
         }
