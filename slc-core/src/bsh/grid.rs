@@ -457,6 +457,28 @@ impl Spheres {
             at += n;
         }
     }
+
+    /// [`bsh_lobe_admits`] for each sphere `k` of `range` (the light's
+    /// extent `extents[k]`), calling `hit(k)` in order for those it admits:
+    /// [`Spheres::scan_lobe`] where the lobe has a cone (`cone.1.y > 0`),
+    /// else [`Spheres::scan`] of the spheres scaled by `w·1.0001`, the
+    /// same test without the cone's terms.
+    #[inline]
+    fn scan_reaching(
+        &self,
+        range: core::ops::Range<usize>,
+        extents: &[f32],
+        p: Vec3,
+        w: f32,
+        cone: (Vec3, Vec2),
+        hit: impl FnMut(usize),
+    ) {
+        if cone.1.y > 0.0 {
+            self.scan_lobe(range, extents, p, w, cone, hit);
+        } else {
+            self.scan(range, p, w * 1.0001, hit);
+        }
+    }
 }
 
 /// Calls `hit(at + j)`, in order, for each `j` whose flag `inside[j]` is
@@ -683,9 +705,8 @@ impl BshGrid {
         let Some(c) = self.cell(x) else { return false };
         let (a, b) = (self.start[c] as usize, self.start[c + 1] as usize);
         // `bsh_reaches` rejects a leaf whose sphere scaled by `rl.w·1.0001`
-        // misses `x` before its lobe's scale: the scan runs that test on
-        // the whole cell, and only its hits take the full one.
-        let far = rl.w * 1.0001;
+        // misses `x` before its lobe's scale: the scan runs that test (and
+        // the cone's) on the whole cell, and only its hits take the full one.
         let cone = (r, if r.is_finite() { lobe_cone(rl) } else { Vec2::ZERO });
         let mut reaches = |spheres: &Spheres, lights: &[u32], extents: &[f32], k: usize| {
             let (center, radius) = spheres.get(k);
@@ -702,18 +723,12 @@ impl BshGrid {
             }
         };
         let (cell, tail) = (&self.spheres, &self.tail_spheres);
-        let mut on_cell = |k| reaches(cell, &self.lights, &self.extents, k);
-        if cone.1.y > 0.0 {
-            cell.scan_lobe(a..b, &self.extents, x, rl.w, cone, &mut on_cell);
-        } else {
-            cell.scan(a..b, x, far, &mut on_cell);
-        }
-        let mut on_tail = |k| reaches(tail, &self.tail_lights, &self.tail_extents, k);
-        if cone.1.y > 0.0 {
-            tail.scan_lobe(0..tail.len(), &self.tail_extents, x, rl.w, cone, &mut on_tail);
-        } else {
-            tail.scan(0..tail.len(), x, far, &mut on_tail);
-        }
+        cell.scan_reaching(a..b, &self.extents, x, rl.w, cone, |k| {
+            reaches(cell, &self.lights, &self.extents, k)
+        });
+        tail.scan_reaching(0..tail.len(), &self.tail_extents, x, rl.w, cone, |k| {
+            reaches(tail, &self.tail_lights, &self.tail_extents, k)
+        });
         true
     }
 
