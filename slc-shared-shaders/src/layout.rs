@@ -240,21 +240,43 @@ slc_core::shared! {
     /// cells down to 4 is five).
     pub const GRID_LEVELS_MAX: u32 = 8;
 
+    /// Most grids a path-tracing pass builds (`bsh_grid`'s `grids`): the
+    /// Lambertian one and the glossy lobes' two (slc-core's `GLOSSY_REACH`
+    /// and `SHARP_REACH`); `bsh_collect`'s cursor follows at most
+    /// `GRIDS_MAX − 1` links of the chain.
+    pub const GRIDS_MAX: u32 = 3;
+
+    /// Moves `bsh_grid`'s stage 5 makes at most sorting a cell by insertion
+    /// in one invocation, by default (past it, the workgroup sorts the
+    /// cell; `GridParams::moves`): every cell of up to 45 entries (at most
+    /// 45·44/2 moves), and larger ones that stage 4 filled almost in order.
+    pub const GRID_SORT_MOVES: u32 = 1024;
+
     /// Most entries of a cell `bsh_grid`'s stage 5 sorts in workgroup
-    /// memory (6 KiB; a larger cell is sorted by one invocation): on
-    /// lavapipe, whose loops end after 65,535 iterations in an invocation,
-    /// each of its 64 invocations then counts at most 24 × 1,536 ranks.
-    pub const GRID_SORT_MAX: u32 = 1536;
+    /// memory (4 KiB; a larger cell is sorted in place in `grid_entries`).
+    pub const GRID_SORT_MAX: u32 = 1024;
 
     /// Uniforms of one `bsh_grid` dispatch: its stage (0 each level's
     /// entries counted, 1 the level chosen, 2 each cell's entries counted,
-    /// 3 their starts, 4 the leaves scattered, 5 each cell sorted), the
-    /// tree's leaf count, the frames tried, the largest range lobe the grid
-    /// serves, and where its words (`grid`), counts (`grid_fill`) and
-    /// entries (`grid_entries`, at most `capacity`) start; 48 bytes.
-    pub struct GridParams {
+    /// 3 their starts, 4 the leaves scattered, 5 each cell sorted) for
+    /// every grid of the pass at once (grid `g` in workgroups of
+    /// `workgroup_id.z = g`, [`GridParams`] `grids[g]`); 16 bytes.
+    pub struct GridStage {
         /// Stage.
         pub stage: u32,
+        /// Padding.
+        pub pad0: u32,
+        /// Padding.
+        pub pad1: u32,
+        /// Padding.
+        pub pad2: u32,
+    }
+
+    /// One grid `bsh_grid` builds (an element of its `grids`): the tree's
+    /// leaf count, the frames tried, the largest range lobe the grid
+    /// serves, and where its words (`grid`), counts (`grid_fill`) and
+    /// entries (`grid_entries`, at most `capacity`) start; 40 bytes.
+    pub struct GridParams {
         /// Leaves in the tree.
         pub count: u32,
         /// Frames in `grid_levels`.
@@ -274,10 +296,10 @@ slc_core::shared! {
         /// Entries the grid may take at least, whatever its budget (slc-core's
         /// `bsh_grid_budget`: the sharp grid's `SHARP_GRID_ENTRIES`, else 0).
         pub least: u32,
-        /// Padding.
-        pub pad1: u32,
-        /// Padding.
-        pub pad2: u32,
+        /// Moves stage 5 may make sorting a cell by insertion before the
+        /// workgroup sorts it (`GRID_SORT_MOVES`; 0: every cell by the
+        /// workgroup).
+        pub moves: u32,
     }
 
     /// Uniforms of `vpl_tiled`, `vpl_near`, `vpl_denoise`, `vpl_clusters`

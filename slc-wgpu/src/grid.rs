@@ -1,8 +1,9 @@
 //! The path tracer's grid over the BSH's leaves on the GPU (slc-core's
 //! [`BshGrid`](slc_core::bsh::BshGrid), which the CPU path tracer builds):
-//! rebuilt every pass after the refit by `bsh_grid`'s six stages (a
-//! counting sort, each cell then sorted into node order by a workgroup of
-//! its own), over the frames
+//! rebuilt every pass after the refit by `bsh_grid`'s six stages, one
+//! dispatch each for all of a pass's grids (a counting sort, each cell then
+//! put into the walk's order by its own invocation or, past
+//! `GRID_SORT_MOVES` moves, by its workgroup), over the frames
 //! [`GridFrame::levels`] gives for the scene's box, the first whose entries
 //! fit its budget. `pt_connect` then tests a vertex's cell and the range
 //! tail instead of walking the tree: the same lights in the same order, so
@@ -18,9 +19,11 @@
 //! `bsh_lobe_admits`) before the walk's leaf test.
 //!
 //! On lavapipe, whose loops end silently after 65,535 iterations in an
-//! invocation, a leaf may cover at most that many cells and a cell hold
-//! 1,536 entries (its sort in workgroup memory; past it one invocation's
-//! insertion sort holds about 360); the tests' scenes stay well below.
+//! invocation, a leaf may cover at most that many cells, and the cells of
+//! a workgroup (64) their invocations leave to it hold at most about
+//! 30,000 entries in all (a cell of 16,384: its insertion stopped after
+//! 1,024 moves plus one more insertion, then 105 bitonic steps of 128
+//! pairs an invocation); the tests' scenes stay well below.
 
 use crate::kernel::{KernelLayout, UniformSlots, check_kernels, read_back, storage, whole, zeroed};
 use crate::lights::{LightBuffers, WG};
@@ -28,7 +31,9 @@ use crate::{GpuContext, GpuError};
 use glam::Vec3;
 use slc_core::bsh::grid::{GLOSSY_REACH, SHARP_GRID_ENTRIES, SHARP_REACH, walk_leaves};
 use slc_core::bsh::{Bsh, GridFrame};
-use slc_shared_shaders::layout::{GRID_HEADER, GRID_LEVELS_MAX, GridParams};
+use slc_shared_shaders::layout::{
+    GRID_HEADER, GRID_LEVELS_MAX, GRID_SORT_MOVES, GRIDS_MAX, GridParams, GridStage,
+};
 use slc_shared_shaders::{Features, Kernel};
 
 /// A grid read back: its frame and each cell's leaves (node indices).
@@ -40,13 +45,16 @@ const STAGES: usize = 6;
 /// A pass's grids: their buffers, the build's pipeline and bind group.
 pub(crate) struct GpuGrid {
     pipeline: wgpu::ComputePipeline,
-    /// Each grid's six stages' uniforms, grid after grid.
+    /// The six stages' uniforms (each dispatch builds every grid).
     params: UniformSlots,
     group: wgpu::BindGroup,
     /// Each grid's frame, reach and counts, then each cell's first entry.
     pub(crate) grid: wgpu::Buffer,
     /// The cells' leaves.
     pub(crate) entries: wgpu::Buffer,
+    /// Each grid's [`GridParams`], and the buffer the build reads them from.
+    specs: Vec<GridParams>,
+    specs_buffer: wgpu::Buffer,
     /// Where each grid's words start in `grid`.
     headers: Vec<u32>,
     /// Leaves in the tree (the per-leaf stages' extent).
@@ -82,6 +90,7 @@ impl GpuGrid {
             &[(1.0, 0)]
         };
         let k = grids.len() as u64;
+        debug_assert!(k <= GRIDS_MAX as u64);
         let leaves = walk_leaves(bsh);
         let tree_lights = leaves.len();
         let mut levels = GridFrame::levels(lo, hi, bsh.len());
@@ -137,29 +146,26 @@ impl GpuGrid {
         let frames = storage(gpu, "grid levels", bytemuck::cast_slice(&frames), none);
         let leaves = if leaves.is_empty() { vec![0] } else { leaves };
         let leaves = storage(gpu, "grid leaves", bytemuck::cast_slice(&leaves), none);
-        let params = UniformSlots::new::<GridParams>(gpu, "grid params", k * STAGES as u64);
-        let n_levels = levels.len() as u32;
-        let values: Vec<GridParams> = (0..k as u32)
-            .flat_map(|g| {
-                let (reach, least) = grids[g as usize];
-                let (capacity, entries) = (capacity[g as usize], first[g as usize]);
-                (0..STAGES as u32).map(move |stage| GridParams {
-                    stage,
-                    count: tree_lights as u32,
-                    levels: n_levels,
-                    capacity: capacity as u32,
-                    reach,
-                    cells: cells as u32,
-                    header: g * words as u32,
-                    fill: g * cells as u32,
-                    entries: entries as u32,
-                    least: least as u32,
-                    pad1: 0,
-                    pad2: 0,
-                })
+        let params = UniformSlots::new::<GridStage>(gpu, "grid stages", STAGES as u64);
+        let stages: Vec<GridStage> = (0..STAGES as u32)
+            .map(|stage| GridStage { stage, pad0: 0, pad1: 0, pad2: 0 })
+            .collect();
+        params.write(gpu, &stages);
+        let specs: Vec<GridParams> = (0..k as usize)
+            .map(|g| GridParams {
+                count: tree_lights as u32,
+                levels: levels.len() as u32,
+                capacity: capacity[g] as u32,
+                reach: grids[g].0,
+                cells: cells as u32,
+                header: headers[g],
+                fill: (g as u64 * cells) as u32,
+                entries: first[g] as u32,
+                least: grids[g].1 as u32,
+                moves: GRID_SORT_MOVES,
             })
             .collect();
-        params.write(gpu, &values);
+        let specs_buffer = storage(gpu, "grid specs", bytemuck::cast_slice(&specs), none);
         let group = layout.group(
             gpu,
             0,
@@ -171,6 +177,7 @@ impl GpuGrid {
                 ("grid", whole(&grid)),
                 ("grid_fill", whole(&fill)),
                 ("grid_entries", whole(&entries)),
+                ("grids", whole(&specs_buffer)),
             ],
         );
         Ok(GpuGrid {
@@ -179,6 +186,8 @@ impl GpuGrid {
             group,
             grid,
             entries,
+            specs,
+            specs_buffer,
             headers,
             lights: tree_lights as u32,
             cells: cells as u32,
@@ -197,6 +206,17 @@ impl GpuGrid {
                 gpu.queue.write_buffer(&self.grid, (h as u64 + 3) * 4, &0u32.to_le_bytes());
             }
         }
+    }
+
+    /// Sets the moves each cell's sort by insertion may make in one
+    /// invocation before its workgroup sorts it ([`GRID_SORT_MOVES`] by
+    /// default; 0: every cell of two or more entries by its workgroup).
+    /// The same cells either way.
+    pub(crate) fn set_sort_moves(&mut self, gpu: &GpuContext, moves: u32) {
+        for s in &mut self.specs {
+            s.moves = moves;
+        }
+        gpu.queue.write_buffer(&self.specs_buffer, 0, bytemuck::cast_slice(&self.specs));
     }
 
     /// The last pass's grid `g` (0: Lambertian, 1: glossy, 2: sharp) read back: its
@@ -232,16 +252,19 @@ impl GpuGrid {
         }
         cp.set_pipeline(&self.pipeline);
         let per_light = self.lights.div_ceil(WG);
-        // Stage 5: a workgroup per cell, rows of `per_cell.0`.
-        let per_cell = (self.cells.min(self.most_groups), self.cells.div_ceil(self.most_groups));
-        for slot in 0..self.headers.len() * STAGES {
-            cp.set_bind_group(0, &self.group, &[self.params.offset(slot)]);
-            let groups = match slot % STAGES {
+        // Stage 5: a workgroup per `WG` cells, rows of `per_cell.0`; every
+        // grid in its own workgroups along z.
+        let groups = self.cells.div_ceil(WG);
+        let per_cell = (groups.min(self.most_groups), groups.div_ceil(self.most_groups));
+        let grids = self.headers.len() as u32;
+        for stage in 0..STAGES {
+            cp.set_bind_group(0, &self.group, &[self.params.offset(stage)]);
+            let groups = match stage {
                 0 | 2 | 4 => (per_light, 1),
                 5 => per_cell,
                 _ => (1, 1),
             };
-            cp.dispatch_workgroups(groups.0, groups.1, 1);
+            cp.dispatch_workgroups(groups.0, groups.1, grids);
         }
     }
 }

@@ -466,9 +466,9 @@ impl GpuPt {
     /// `GLOSSY_REACH` and within `SHARP_REACH`, every lobe, as the CPU path
     /// tracer does) or walk the tree for every vertex (`false`, the
     /// default). The same lights in the same order either way, so the same
-    /// image. Off by default: on lavapipe the build (6 dispatches a grid
-    /// and pass, two of them one workgroup, and each cell's sort) costs
-    /// more than the lookups save (docs/results/bsh-walk-visits.md); a real
+    /// image. Off by default: on lavapipe the build (6 dispatches a pass
+    /// for all its grids, and each cell's sort) costs more than the
+    /// lookups save (docs/results/bsh-walk-visits.md); a real
     /// GPU has not measured it yet. The grids' buffers are made with the
     /// path tracer, on or off: at most 8 entries of 4 bytes a light and one
     /// a cell (`slc_core::bsh::GRID_ENTRIES_PER_LIGHT`) per grid, the sharp
@@ -476,6 +476,17 @@ impl GpuPt {
     /// 49,152 lights).
     pub fn set_grid(&mut self, on: bool) {
         self.grid.set_enabled(&self.gpu, on);
+    }
+
+    /// The most moves the grids' build may make sorting a cell's leaves by
+    /// insertion in one invocation before the cell's workgroup sorts it
+    /// (a bitonic sort): `slc_shared_shaders::layout::GRID_SORT_MOVES` by
+    /// default, which every cell of up to 45 leaves and every cell filled
+    /// almost in order stays within; 0 sorts every cell of two or more by
+    /// its workgroup. The same cells, and so the same image, either way:
+    /// for tests and for timing the two sorts on a device.
+    pub fn set_grid_sort_moves(&mut self, moves: u32) {
+        self.grid.set_sort_moves(&self.gpu, moves);
     }
 
     /// The BSH as the last render's refit left it, range tail included,

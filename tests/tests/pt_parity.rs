@@ -652,9 +652,71 @@ fn gpu_grid_gives_the_walks_image() {
     g.take_errors().unwrap();
 }
 
+/// `bsh_grid` lists every cell exactly as the CPU would from the GPU's
+/// refit: each leaf the walk can find in every cell its sphere covers, in
+/// the walk's order, with both of stage 5's sorts: by insertion in one
+/// invocation (the default budget: lavapipe's stage 4 fills cells almost
+/// in order), and by the workgroup's bitonic sort (no budget), where some
+/// cells hold more entries than it sorts in workgroup memory
+/// (`GRID_SORT_MAX`) and are sorted in place (points-clusters-49152's
+/// Lambertian grid: clusters of thousands of lights).
+fn gpu_grid_cells_past_workgroup_memory() {
+    use slc_core::bsh::grid::{bsh_grid_radius, walk_leaves};
+    use slc_core::bsh::{BSH_NONE, BSH_TAIL};
+    use slc_shared_shaders::layout::{GRID_SORT_MAX, GRID_SORT_MOVES};
+    let Some(g) = gpu() else { return };
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../scenes/suite");
+    let f =
+        slc_scene::scene_file::SceneFile::load(&dir.join("points-clusters-49152.toml")).unwrap();
+    let pts = PtScene::new(&f.scene, &f.lights).unwrap();
+    let mut gpt = GpuPt::new(g, &pts, 8, 8).unwrap();
+    gpt.set_grid(true);
+    let set = PtSettings {
+        method: PtMethod::SlcWeighted,
+        seed: 5,
+        max_depth: 1,
+        ..PtSettings::default()
+    };
+    for moves in [GRID_SORT_MOVES, 0] {
+        gpt.set_grid_sort_moves(moves);
+        gpt.render(&mut PtRender::new(8, 8), &set, 1).unwrap();
+        let nodes = gpt.read_bsh(g).unwrap();
+        let (frame, cells) = gpt.read_grid(g, 0).unwrap().unwrap();
+        assert!(frame.nx > 0, "no grid");
+        let d = frame.dims();
+        let mut expected = vec![Vec::new(); cells.len()];
+        for b in walk_leaves(pts.bsh()) {
+            let n = nodes[b as usize];
+            if n.child != BSH_NONE || n.light & BSH_TAIL != 0 {
+                continue;
+            }
+            let (lo, hi) = frame.cover(n.center, bsh_grid_radius(n, 1.0));
+            for z in lo.z..=hi.z {
+                for y in lo.y..=hi.y {
+                    for x in lo.x..=hi.x {
+                        expected[((z * d.y + y) * d.x + x) as usize].push(b);
+                    }
+                }
+            }
+        }
+        let most = cells.iter().map(Vec::len).max().unwrap_or(0);
+        assert!(most > GRID_SORT_MAX as usize, "the largest cell holds {most} entries");
+        for (c, (got, want)) in cells.iter().zip(&expected).enumerate() {
+            assert!(
+                got == want,
+                "moves {moves}, cell {c}: {} entries, {} expected",
+                got.len(),
+                want.len()
+            );
+        }
+    }
+    g.take_errors().unwrap();
+}
+
 slc_tests::harness!(
     Gpu: gpu_range_tail_matches_the_cpu_refit,
     Gpu: gpu_grid_gives_the_walks_image,
+    Gpu: gpu_grid_cells_past_workgroup_memory,
     RayQuery: ray_query_path_tracer_equals_the_software_walk,
     Gpu: ray_query_path_tracer_without_the_feature,
     Gpu: gpu_path_tracer_matches_cpu_and_unculled_in_expectation,

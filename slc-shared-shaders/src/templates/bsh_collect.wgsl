@@ -48,7 +48,7 @@ fn bsh_cursor(x: vec3f, r: vec3f, rl: vec4f) -> BshCursor {
     c.cone = vec2f(0.0);
 {% if grid %}
     var h = 0u;
-    for (var g = 0u; g < 2u && rl.w > grid_reach(h); g++) {
+    for (var g = 1u; g < GRIDS_MAX && rl.w > grid_reach(h); g++) {
         h = grid_word(h + 14u);
     }
     let f = grid_frame(h);

@@ -1,5 +1,11 @@
-struct GridParams {
+struct GridStage {
     stage: u32,
+    pad0_: u32,
+    pad1_: u32,
+    pad2_: u32,
+}
+
+struct GridParams {
     count: u32,
     levels: u32,
     capacity: u32,
@@ -9,8 +15,7 @@ struct GridParams {
     fill: u32,
     entries: u32,
     least: u32,
-    pad1_: u32,
-    pad2_: u32,
+    moves: u32,
 }
 
 struct BshNode {
@@ -39,7 +44,9 @@ const LIGHT_VPL: u32 = 4u;
 const NO_LIGHT: u32 = 4294967295u;
 const GRID_HEADER: u32 = 32u;
 const GRID_LEVELS_MAX: u32 = 8u;
-const GRID_SORT_MAX: u32 = 1536u;
+const GRIDS_MAX: u32 = 3u;
+const GRID_SORT_MOVES: u32 = 1024u;
+const GRID_SORT_MAX: u32 = 1024u;
 const COUNT_TILES: u32 = 0u;
 const COUNT_GROUP_TESTS: u32 = 1u;
 const COUNT_CLUSTER_TESTS: u32 = 2u;
@@ -100,7 +107,7 @@ const GRID_ENTRIES_PER_LIGHT: u32 = 8u;
 const LOBE_CONE_PAD: f32 = 1.001f;
 
 @group(0) @binding(0) 
-var<uniform> params: GridParams;
+var<uniform> params: GridStage;
 @group(0) @binding(1) 
 var<storage> bsh_nodes: array<BshNode>;
 @group(0) @binding(2) 
@@ -113,12 +120,15 @@ var<storage, read_write> grid: array<atomic<u32>>;
 var<storage, read_write> grid_fill: array<atomic<u32>>;
 @group(0) @binding(6) 
 var<storage, read_write> grid_entries: array<u32>;
+@group(0) @binding(7) 
+var<storage> grids: array<GridParams>;
 var<workgroup> wg_sums: array<u32, 64>;
-var<workgroup> wg_cell: array<u32, 1536>;
-var<workgroup> wg_span: vec2<u32>;
+var<workgroup> wg_big: array<vec2<u32>, 64>;
+var<workgroup> wg_bigs: atomic<u32>;
+var<workgroup> wg_cell: array<u32, 1024>;
 
-fn to_u32_(x_1: f32) -> u32 {
-    return u32(x_1);
+fn to_u32_(x: f32) -> u32 {
+    return u32(x);
 }
 
 fn add_wrap_u32_(a: u32, b: u32) -> u32 {
@@ -146,9 +156,9 @@ fn bsh_grid_budget(leaves: u32, cells: u32, least: u32) -> u32 {
     if (leaves > 536870911u) {
         return 4294967295u;
     }
-    let e = (leaves * GRID_ENTRIES_PER_LIGHT);
-    let _e8 = add_wrap_u32_(e, cells);
-    return max(select(_e8, 4294967295u, (_e8 < e)), least);
+    let e_1 = (leaves * GRID_ENTRIES_PER_LIGHT);
+    let _e8 = add_wrap_u32_(e_1, cells);
+    return max(select(_e8, 4294967295u, (_e8 < e_1)), least);
 }
 
 fn bsh_grid_reach(node_2: BshNode, w_1: f32) -> f32 {
@@ -177,17 +187,17 @@ fn bsh_grid_radius(node_3: BshNode, w_2: f32) -> f32 {
     return _e3;
 }
 
-fn bsh_grid_first(f_1: GridFrame, c_2: vec3<f32>, r: f32) -> vec3<u32> {
-    let _e10 = bsh_grid_axis((c_2.x - r), f_1.lo.x, f_1.inv.x, f_1.nx);
-    let _e18 = bsh_grid_axis((c_2.y - r), f_1.lo.y, f_1.inv.y, f_1.ny);
-    let _e26 = bsh_grid_axis((c_2.z - r), f_1.lo.z, f_1.inv.z, f_1.nz);
+fn bsh_grid_first(f: GridFrame, c: vec3<f32>, r: f32) -> vec3<u32> {
+    let _e10 = bsh_grid_axis((c.x - r), f.lo.x, f.inv.x, f.nx);
+    let _e18 = bsh_grid_axis((c.y - r), f.lo.y, f.inv.y, f.ny);
+    let _e26 = bsh_grid_axis((c.z - r), f.lo.z, f.inv.z, f.nz);
     return vec3<u32>(_e10, _e18, _e26);
 }
 
-fn bsh_grid_last(f_2: GridFrame, c_3: vec3<f32>, r_1: f32) -> vec3<u32> {
-    let _e10 = bsh_grid_axis((c_3.x + r_1), f_2.lo.x, f_2.inv.x, f_2.nx);
-    let _e18 = bsh_grid_axis((c_3.y + r_1), f_2.lo.y, f_2.inv.y, f_2.ny);
-    let _e26 = bsh_grid_axis((c_3.z + r_1), f_2.lo.z, f_2.inv.z, f_2.nz);
+fn bsh_grid_last(f_1: GridFrame, c_1: vec3<f32>, r_1: f32) -> vec3<u32> {
+    let _e10 = bsh_grid_axis((c_1.x + r_1), f_1.lo.x, f_1.inv.x, f_1.nx);
+    let _e18 = bsh_grid_axis((c_1.y + r_1), f_1.lo.y, f_1.inv.y, f_1.ny);
+    let _e26 = bsh_grid_axis((c_1.z + r_1), f_1.lo.z, f_1.inv.z, f_1.nz);
     return vec3<u32>(_e10, _e18, _e26);
 }
 
@@ -197,27 +207,27 @@ fn grid_word(i: u32) -> u32 {
 }
 
 fn grid_frame(h: u32) -> GridFrame {
-    var f_3: GridFrame;
+    var f_2: GridFrame;
 
     let _e3 = grid_word(h);
     let _e7 = grid_word((h + 1u));
     let _e11 = grid_word((h + 2u));
-    f_3.lo = vec3<f32>(bitcast<f32>(_e3), bitcast<f32>(_e7), bitcast<f32>(_e11));
+    f_2.lo = vec3<f32>(bitcast<f32>(_e3), bitcast<f32>(_e7), bitcast<f32>(_e11));
     let _e17 = grid_word((h + 3u));
-    f_3.nx = _e17;
+    f_2.nx = _e17;
     let _e21 = grid_word((h + 4u));
     let _e25 = grid_word((h + 5u));
     let _e29 = grid_word((h + 6u));
-    f_3.hi = vec3<f32>(bitcast<f32>(_e21), bitcast<f32>(_e25), bitcast<f32>(_e29));
+    f_2.hi = vec3<f32>(bitcast<f32>(_e21), bitcast<f32>(_e25), bitcast<f32>(_e29));
     let _e35 = grid_word((h + 7u));
-    f_3.ny = _e35;
+    f_2.ny = _e35;
     let _e39 = grid_word((h + 8u));
     let _e43 = grid_word((h + 9u));
     let _e47 = grid_word((h + 10u));
-    f_3.inv = vec3<f32>(bitcast<f32>(_e39), bitcast<f32>(_e43), bitcast<f32>(_e47));
+    f_2.inv = vec3<f32>(bitcast<f32>(_e39), bitcast<f32>(_e43), bitcast<f32>(_e47));
     let _e53 = grid_word((h + 11u));
-    f_3.nz = _e53;
-    let _e54 = f_3;
+    f_2.nz = _e53;
+    let _e54 = f_2;
     return _e54;
 }
 
@@ -230,477 +240,610 @@ fn grid_leaf(i_1: u32) -> u32 {
     return node_4;
 }
 
-fn sort_cell(cell: u32, li_1: u32) {
-    var span: vec2<u32> = vec2(0u);
-    var s: u32;
-    var c_4: u32;
-    var local_3: bool;
-    var s_1: u32;
-    var j_1: u32;
-    var j_2: u32;
-    var below: u32;
-    var m: u32;
-
-    let _e4 = params.header;
-    let starts = (_e4 + GRID_HEADER);
-    if (li_1 == 0u) {
-        let _e11 = params.header;
-        let _e12 = grid_frame(_e11);
-        if (cell < ((_e12.nx * _e12.ny) * _e12.nz)) {
-            let _e25 = atomicLoad((&grid[(starts + cell)]));
-            let _e31 = atomicLoad((&grid[((starts + cell) + 1u)]));
-            span = vec2<u32>(_e25, _e31);
-            let _e36 = params.fill;
-            atomicStore((&grid_fill[(_e36 + cell)]), 0u);
-        }
-        let _e41 = span;
-        wg_span = _e41;
+fn cell_key(big: bool, a_1: u32, j: u32) -> u32 {
+    if big {
+        let _e6 = grid_entries[(a_1 + j)];
+        return _e6;
     }
-    let _e43 = workgroupUniformLoad((&wg_span));
-    let a_1 = _e43.x;
-    let n_1 = (_e43.y - _e43.x);
-    if (n_1 > GRID_SORT_MAX) {
-        if (li_1 == 0u) {
-            s = (a_1 + 1u);
+    let _e9 = wg_cell[j];
+    return _e9;
+}
+
+fn set_cell_key(big_1: bool, a_2: u32, j_1: u32, v_1: u32) {
+    if big_1 {
+        grid_entries[(a_2 + j_1)] = v_1;
+        return;
+    } else {
+        wg_cell[j_1] = v_1;
+        return;
+    }
+}
+
+fn sort_together(b_1: u32, li_1: u32) {
+    var j_2: u32;
+    var p: u32 = 1u;
+    var local: bool;
+    var k: u32 = 2u;
+    var h_1: u32;
+    var t: u32;
+    var j_3: u32;
+
+    let _e4 = workgroupUniformLoad((&wg_big[b_1]));
+    let a_3 = _e4.x;
+    let n_1 = (_e4.y - _e4.x);
+    let big_2 = (n_1 > GRID_SORT_MAX);
+    if !(big_2) {
+        j_2 = li_1;
+        loop {
+            let _e13 = j_2;
+            if (_e13 < n_1) {
+            } else {
+                break;
+            }
+            {
+                let _e16 = j_2;
+                let _e19 = j_2;
+                let _e22 = grid_entries[(a_3 + _e19)];
+                wg_cell[_e16] = _e22;
+            }
+            continuing {
+                let _e23 = j_2;
+                j_2 = (_e23 + 64u);
+            }
+        }
+    }
+    loop {
+        let _e28 = p;
+        if (_e28 < n_1) {
+            let _e32 = p;
+            local = (_e32 < 2147483648u);
+        } else {
+            local = false;
+        }
+        let _e36 = local;
+        if _e36 {
+        } else {
+            break;
+        }
+        {
+            let _e37 = p;
+            p = (_e37 << 1u);
+        }
+    }
+    workgroupBarrier();
+    loop {
+        let _e42 = k;
+        let _e43 = p;
+        if (_e42 <= _e43) {
+        } else {
+            break;
+        }
+        {
+            let _e45 = k;
+            h_1 = (_e45 >> 1u);
             loop {
-                let _e55 = s;
-                if (_e55 < (a_1 + n_1)) {
+                let _e49 = h_1;
+                if (_e49 > 0u) {
                 } else {
                     break;
                 }
                 {
-                    let _e59 = s;
-                    let v_1 = grid_entries[_e59];
-                    let _e62 = s;
-                    c_4 = _e62;
+                    t = li_1;
                     loop {
-                        let _e64 = c_4;
-                        if (_e64 > a_1) {
-                            let _e69 = c_4;
-                            let _e73 = grid_entries[(_e69 - 1u)];
-                            local_3 = (_e73 > v_1);
-                        } else {
-                            local_3 = false;
-                        }
-                        let _e76 = local_3;
-                        if _e76 {
+                        let _e53 = t;
+                        let _e54 = p;
+                        if (_e53 < (_e54 >> 1u)) {
                         } else {
                             break;
                         }
                         {
-                            let _e78 = c_4;
-                            let _e81 = c_4;
-                            let _e85 = grid_entries[(_e81 - 1u)];
-                            grid_entries[_e78] = _e85;
-                            let _e86 = c_4;
-                            c_4 = (_e86 - 1u);
+                            let _e58 = t;
+                            let _e59 = h_1;
+                            let _e66 = t;
+                            let _e67 = h_1;
+                            let i_4 = (((_e58 & ~((_e59 - 1u))) << 1u) | (_e66 & (_e67 - 1u)));
+                            let _e72 = h_1;
+                            let _e74 = k;
+                            let _e78 = h_1;
+                            let _e79 = k;
+                            let o = select((i_4 | _e72), (i_4 ^ (_e74 - 1u)), (_e78 == (_e79 >> 1u)));
+                            if (o < n_1) {
+                                let _e85 = cell_key(big_2, a_3, i_4);
+                                let _e86 = cell_key(big_2, a_3, o);
+                                if (_e86 < _e85) {
+                                    set_cell_key(big_2, a_3, i_4, _e86);
+                                    set_cell_key(big_2, a_3, o, _e85);
+                                }
+                            }
+                        }
+                        continuing {
+                            let _e88 = t;
+                            t = (_e88 + 64u);
                         }
                     }
-                    let _e90 = c_4;
-                    grid_entries[_e90] = v_1;
+                    workgroupBarrier();
+                    storageBarrier();
                 }
                 continuing {
-                    let _e93 = s;
-                    s = (_e93 + 1u);
-                }
-            }
-            s_1 = a_1;
-            loop {
-                let _e96 = s_1;
-                if (_e96 < (a_1 + n_1)) {
-                } else {
-                    break;
-                }
-                {
-                    let _e100 = s_1;
-                    let _e104 = s_1;
-                    let _e106 = grid_entries[_e104];
-                    let _e108 = grid_leaves[_e106];
-                    grid_entries[_e100] = _e108;
-                }
-                continuing {
-                    let _e110 = s_1;
-                    s_1 = (_e110 + 1u);
+                    let _e91 = h_1;
+                    h_1 = (_e91 >> 1u);
                 }
             }
         }
-        return;
+        continuing {
+            let _e94 = k;
+            k = (_e94 << 1u);
+        }
     }
-    j_1 = li_1;
+    j_3 = li_1;
     loop {
-        let _e113 = j_1;
-        if (_e113 < n_1) {
+        let _e98 = j_3;
+        if (_e98 < n_1) {
         } else {
             break;
         }
         {
-            let _e116 = j_1;
-            let _e119 = j_1;
-            let _e122 = grid_entries[(a_1 + _e119)];
-            wg_cell[_e116] = _e122;
+            let _e101 = j_3;
+            let _e105 = j_3;
+            let _e106 = cell_key(big_2, a_3, _e105);
+            let _e108 = grid_leaves[_e106];
+            grid_entries[(a_3 + _e101)] = _e108;
         }
         continuing {
-            let _e123 = j_1;
-            j_1 = (_e123 + 64u);
+            let _e109 = j_3;
+            j_3 = (_e109 + 64u);
         }
     }
     workgroupBarrier();
-    j_2 = li_1;
+    return;
+}
+
+fn sort_cells(g: GridParams, first: u32, li_2: u32) {
+    var span: vec2<u32> = vec2(0u);
+    var s: u32;
+    var moves: u32 = 0u;
+    var local_1: bool;
+    var c_2: u32;
+    var local_2: bool;
+    var e: u32;
+    var b_2: u32 = 0u;
+
+    let starts = (g.header + GRID_HEADER);
+    let _e7 = grid_frame(g.header);
+    let cell = (first + li_2);
+    if (cell < ((_e7.nx * _e7.ny) * _e7.nz)) {
+        let _e21 = atomicLoad((&grid[(starts + cell)]));
+        let _e27 = atomicLoad((&grid[((starts + cell) + 1u)]));
+        span = vec2<u32>(_e21, _e27);
+        atomicStore((&grid_fill[(g.fill + cell)]), 0u);
+    }
+    if (li_2 == 0u) {
+        atomicStore((&wg_bigs), 0u);
+    }
+    workgroupBarrier();
+    let _e39 = span.x;
+    s = (_e39 + 1u);
     loop {
-        let _e127 = j_2;
-        if (_e127 < n_1) {
+        let _e45 = s;
+        let _e47 = span.y;
+        if (_e45 < _e47) {
+            let _e51 = moves;
+            local_1 = (_e51 < g.moves);
+        } else {
+            local_1 = false;
+        }
+        let _e55 = local_1;
+        if _e55 {
         } else {
             break;
         }
         {
-            let _e130 = j_2;
-            let v_2 = wg_cell[_e130];
-            below = 0u;
-            m = 0u;
+            let _e57 = s;
+            let v_2 = grid_entries[_e57];
+            let _e60 = s;
+            c_2 = _e60;
             loop {
-                let _e137 = m;
-                if (_e137 < n_1) {
+                let _e62 = c_2;
+                let _e64 = span.x;
+                if (_e62 > _e64) {
+                    let _e69 = c_2;
+                    let _e73 = grid_entries[(_e69 - 1u)];
+                    local_2 = (_e73 > v_2);
+                } else {
+                    local_2 = false;
+                }
+                let _e76 = local_2;
+                if _e76 {
                 } else {
                     break;
                 }
                 {
-                    let _e139 = below;
-                    let _e143 = m;
-                    let _e145 = wg_cell[_e143];
-                    below = (_e139 + select(0u, 1u, (_e145 < v_2)));
-                }
-                continuing {
-                    let _e150 = m;
-                    m = (_e150 + 1u);
+                    let _e78 = c_2;
+                    let _e81 = c_2;
+                    let _e85 = grid_entries[(_e81 - 1u)];
+                    grid_entries[_e78] = _e85;
+                    let _e86 = c_2;
+                    c_2 = (_e86 - 1u);
                 }
             }
-            let _e153 = below;
-            let _e158 = grid_leaves[v_2];
-            grid_entries[(a_1 + _e153)] = _e158;
+            let _e90 = c_2;
+            grid_entries[_e90] = v_2;
+            let _e92 = moves;
+            let _e93 = s;
+            let _e94 = c_2;
+            moves = (_e92 + (_e93 - _e94));
+            let _e97 = s;
+            s = (_e97 + 1u);
+        }
+    }
+    let _e100 = s;
+    let _e102 = span.y;
+    if (_e100 < _e102) {
+        let _e107 = atomicAdd((&wg_bigs), 1u);
+        let _e109 = span;
+        wg_big[_e107] = _e109;
+    } else {
+        let _e111 = span.x;
+        e = _e111;
+        loop {
+            let _e113 = e;
+            let _e115 = span.y;
+            if (_e113 < _e115) {
+            } else {
+                break;
+            }
+            {
+                let _e118 = e;
+                let _e122 = e;
+                let _e124 = grid_entries[_e122];
+                let _e126 = grid_leaves[_e124];
+                grid_entries[_e118] = _e126;
+            }
+            continuing {
+                let _e128 = e;
+                e = (_e128 + 1u);
+            }
+        }
+    }
+    let _e131 = workgroupUniformLoad((&wg_bigs));
+    loop {
+        let _e134 = b_2;
+        if (_e134 < _e131) {
+        } else {
+            break;
+        }
+        {
+            let _e136 = b_2;
+            sort_together(_e136, li_2);
         }
         continuing {
-            let _e159 = j_2;
-            j_2 = (_e159 + 64u);
+            let _e138 = b_2;
+            b_2 = (_e138 + 1u);
         }
     }
     return;
 }
 
-@compute @workgroup_size(64, 1, 1) 
-fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) groups: vec3<u32>, @builtin(local_invocation_index) li: u32) {
-    var sum: u32 = 0u;
-    var c: u32;
-    var start: u32;
-    var j: u32 = 0u;
-    var c_1: u32;
+fn count_levels(g_1: GridParams, i_2: u32) {
     var l: u32 = 0u;
+
+    if (i_2 >= g_1.count) {
+        return;
+    }
+    let h_2 = g_1.header;
+    let _e5 = grid_leaf(i_2);
+    if (_e5 == BSH_NONE) {
+        return;
+    }
+    let _e13 = atomicAdd((&grid[(h_2 + 13u)]), 1u);
+    let leaf = bsh_nodes[_e5];
+    let _e18 = bsh_grid_radius(leaf, g_1.reach);
+    loop {
+        let _e21 = l;
+        if (_e21 < g_1.levels) {
+        } else {
+            break;
+        }
+        {
+            let _e25 = l;
+            let _e27 = grid_levels[_e25];
+            let _e29 = bsh_grid_last(_e27, leaf.center, _e18);
+            let _e31 = l;
+            let _e33 = grid_levels[_e31];
+            let _e35 = bsh_grid_first(_e33, leaf.center, _e18);
+            let d = ((_e29 - _e35) + vec3(1u));
+            let n_2 = ((d.x * d.y) * d.z);
+            let _e48 = l;
+            let at = ((h_2 + 16u) + (2u * _e48));
+            let _e53 = atomicAdd((&grid[at]), n_2);
+            if ((_e53 + n_2) < _e53) {
+                let _e61 = atomicAdd((&grid[(at + 1u)]), 1u);
+            }
+        }
+        continuing {
+            let _e63 = l;
+            l = (_e63 + 1u);
+        }
+    }
+    return;
+}
+
+fn choose_level(g_2: GridParams) {
     var chosen: u32;
     var l_1: u32 = 0u;
-    var local: bool;
-    var local_1: bool;
-    var f: GridFrame;
-    var local_2: bool;
+    var local_3: bool;
+    var local_4: bool;
+    var f_3: GridFrame;
+
+    let h_3 = g_2.header;
+    let leaves_1 = atomicLoad((&grid[(h_3 + 13u)]));
+    chosen = g_2.levels;
+    loop {
+        let _e11 = l_1;
+        if (_e11 < g_2.levels) {
+        } else {
+            break;
+        }
+        {
+            let _e15 = l_1;
+            let f_4 = grid_levels[_e15];
+            let cells_1 = ((f_4.nx * f_4.ny) * f_4.nz);
+            let _e24 = bsh_grid_budget(leaves_1, cells_1, g_2.least);
+            let budget = min(_e24, g_2.capacity);
+            let _e30 = l_1;
+            let at_1 = ((h_3 + 16u) + (2u * _e30));
+            let _e33 = chosen;
+            if (_e33 == g_2.levels) {
+                let _e42 = atomicLoad((&grid[(at_1 + 1u)]));
+                local_3 = (_e42 == 0u);
+            } else {
+                local_3 = false;
+            }
+            let _e46 = local_3;
+            if _e46 {
+                let _e51 = atomicLoad((&grid[at_1]));
+                local_4 = (_e51 <= budget);
+            } else {
+                local_4 = false;
+            }
+            let _e54 = local_4;
+            if _e54 {
+                let _e55 = l_1;
+                chosen = _e55;
+            }
+            atomicStore((&grid[at_1]), 0u);
+            atomicStore((&grid[(at_1 + 1u)]), 0u);
+        }
+        continuing {
+            let _e65 = l_1;
+            l_1 = (_e65 + 1u);
+        }
+    }
+    atomicStore((&grid[(h_3 + 13u)]), 0u);
+    let _e73 = chosen;
+    if (_e73 < g_2.levels) {
+        let _e77 = chosen;
+        let _e79 = grid_levels[_e77];
+        f_3 = _e79;
+    }
+    let _e84 = f_3.lo.x;
+    atomicStore((&grid[h_3]), bitcast<u32>(_e84));
+    let _e92 = f_3.lo.y;
+    atomicStore((&grid[(h_3 + 1u)]), bitcast<u32>(_e92));
+    let _e100 = f_3.lo.z;
+    atomicStore((&grid[(h_3 + 2u)]), bitcast<u32>(_e100));
+    let _e107 = f_3.nx;
+    atomicStore((&grid[(h_3 + 3u)]), _e107);
+    let _e114 = f_3.hi.x;
+    atomicStore((&grid[(h_3 + 4u)]), bitcast<u32>(_e114));
+    let _e122 = f_3.hi.y;
+    atomicStore((&grid[(h_3 + 5u)]), bitcast<u32>(_e122));
+    let _e130 = f_3.hi.z;
+    atomicStore((&grid[(h_3 + 6u)]), bitcast<u32>(_e130));
+    let _e137 = f_3.ny;
+    atomicStore((&grid[(h_3 + 7u)]), _e137);
+    let _e144 = f_3.inv.x;
+    atomicStore((&grid[(h_3 + 8u)]), bitcast<u32>(_e144));
+    let _e152 = f_3.inv.y;
+    atomicStore((&grid[(h_3 + 9u)]), bitcast<u32>(_e152));
+    let _e160 = f_3.inv.z;
+    atomicStore((&grid[(h_3 + 10u)]), bitcast<u32>(_e160));
+    let _e167 = f_3.nz;
+    atomicStore((&grid[(h_3 + 11u)]), _e167);
+    atomicStore((&grid[(h_3 + 12u)]), bitcast<u32>(g_2.reach));
+    return;
+}
+
+fn fill_cells(g_3: GridParams, i_3: u32, scatter: bool) {
+    var local_5: bool;
     var z: u32;
     var y: u32;
-    var x: u32;
+    var x_1: u32;
 
-    let _e6 = params.stage;
-    if (_e6 == 5u) {
-        sort_cell(((wid.y * groups.x) + wid.x), li);
+    if (i_3 >= g_3.count) {
         return;
     }
-    let i_2 = gid.x;
-    let h_1 = params.header;
-    let starts_1 = (h_1 + GRID_HEADER);
-    let _e22 = params.stage;
-    if (_e22 == 3u) {
-        let _e25 = grid_frame(h_1);
-        let cells_1 = ((_e25.nx * _e25.ny) * _e25.nz);
-        let run = (((cells_1 + 64u) - 1u) / 64u);
-        let a_2 = min((i_2 * run), cells_1);
-        let b_1 = min((a_2 + run), cells_1);
-        c = a_2;
-        loop {
-            let _e44 = c;
-            if (_e44 < b_1) {
-            } else {
-                break;
-            }
-            {
-                let _e46 = sum;
-                let _e50 = params.fill;
-                let _e51 = c;
-                let _e54 = atomicLoad((&grid_fill[(_e50 + _e51)]));
-                sum = (_e46 + _e54);
-            }
-            continuing {
-                let _e57 = c;
-                c = (_e57 + 1u);
-            }
-        }
-        let _e61 = sum;
-        wg_sums[i_2] = _e61;
-        workgroupBarrier();
-        let _e64 = params.entries;
-        start = _e64;
-        loop {
-            let _e68 = j;
-            if (_e68 < i_2) {
-            } else {
-                break;
-            }
-            {
-                let _e70 = start;
-                let _e72 = j;
-                let _e74 = wg_sums[_e72];
-                start = (_e70 + _e74);
-            }
-            continuing {
-                let _e77 = j;
-                j = (_e77 + 1u);
-            }
-        }
-        c_1 = a_2;
-        loop {
-            let _e80 = c_1;
-            if (_e80 < b_1) {
-            } else {
-                break;
-            }
-            {
-                let _e85 = params.fill;
-                let _e86 = c_1;
-                let n_2 = atomicLoad((&grid_fill[(_e85 + _e86)]));
-                let _e91 = c_1;
-                let _e94 = start;
-                atomicStore((&grid[(starts_1 + _e91)]), _e94);
-                let _e98 = params.fill;
-                let _e99 = c_1;
-                let _e102 = start;
-                atomicStore((&grid_fill[(_e98 + _e99)]), _e102);
-                let _e103 = start;
-                start = (_e103 + n_2);
-            }
-            continuing {
-                let _e106 = c_1;
-                c_1 = (_e106 + 1u);
-            }
-        }
-        if ((i_2 + 1u) == 64u) {
-            let _e115 = start;
-            atomicStore((&grid[(starts_1 + cells_1)]), _e115);
-        }
+    let _e6 = grid_frame(g_3.header);
+    let _e7 = grid_leaf(i_3);
+    if !((_e6.nx == 0u)) {
+        local_5 = (_e7 == BSH_NONE);
+    } else {
+        local_5 = true;
+    }
+    let _e17 = local_5;
+    if _e17 {
         return;
     }
-    let _e118 = params.stage;
-    switch _e118 {
-        case 0u: {
-            let _e121 = params.count;
-            if (i_2 >= _e121) {
-                return;
-            }
-            let _e123 = grid_leaf(i_2);
-            if (_e123 == BSH_NONE) {
-                return;
-            }
-            let _e131 = atomicAdd((&grid[(h_1 + 13u)]), 1u);
-            let leaf = bsh_nodes[_e123];
-            let _e137 = params.reach;
-            let _e138 = bsh_grid_radius(leaf, _e137);
-            loop {
-                let _e141 = l;
-                let _e144 = params.levels;
-                if (_e141 < _e144) {
-                } else {
-                    break;
-                }
-                {
-                    let _e147 = l;
-                    let _e149 = grid_levels[_e147];
-                    let _e151 = bsh_grid_last(_e149, leaf.center, _e138);
-                    let _e153 = l;
-                    let _e155 = grid_levels[_e153];
-                    let _e157 = bsh_grid_first(_e155, leaf.center, _e138);
-                    let d = ((_e151 - _e157) + vec3(1u));
-                    let n_3 = ((d.x * d.y) * d.z);
-                    let _e170 = l;
-                    let at = ((h_1 + 16u) + (2u * _e170));
-                    let _e175 = atomicAdd((&grid[at]), n_3);
-                    if ((_e175 + n_3) < _e175) {
-                        let _e183 = atomicAdd((&grid[(at + 1u)]), 1u);
-                    }
-                }
-                continuing {
-                    let _e185 = l;
-                    l = (_e185 + 1u);
-                }
-            }
-            return;
+    let leaf_1 = bsh_nodes[_e7];
+    let _e22 = bsh_grid_radius(leaf_1, g_3.reach);
+    let _e24 = bsh_grid_first(_e6, leaf_1.center, _e22);
+    let _e26 = bsh_grid_last(_e6, leaf_1.center, _e22);
+    z = _e24.z;
+    loop {
+        let _e29 = z;
+        if (_e29 <= _e26.z) {
+        } else {
+            break;
         }
-        case 1u: {
-            if (i_2 != 0u) {
-                return;
-            }
-            let leaves_1 = atomicLoad((&grid[(h_1 + 13u)]));
-            let _e196 = params.levels;
-            chosen = _e196;
+        {
+            y = _e24.y;
             loop {
-                let _e200 = l_1;
-                let _e203 = params.levels;
-                if (_e200 < _e203) {
+                let _e34 = y;
+                if (_e34 <= _e26.y) {
                 } else {
                     break;
                 }
                 {
-                    let _e206 = l_1;
-                    let f_4 = grid_levels[_e206];
-                    let cells_2 = ((f_4.nx * f_4.ny) * f_4.nz);
-                    let _e216 = params.least;
-                    let _e217 = bsh_grid_budget(leaves_1, cells_2, _e216);
-                    let _e220 = params.capacity;
-                    let budget = min(_e217, _e220);
-                    let _e225 = l_1;
-                    let at_1 = ((h_1 + 16u) + (2u * _e225));
-                    let _e228 = chosen;
-                    let _e231 = params.levels;
-                    if (_e228 == _e231) {
-                        let _e239 = atomicLoad((&grid[(at_1 + 1u)]));
-                        local = (_e239 == 0u);
-                    } else {
-                        local = false;
-                    }
-                    let _e243 = local;
-                    if _e243 {
-                        let _e248 = atomicLoad((&grid[at_1]));
-                        local_1 = (_e248 <= budget);
-                    } else {
-                        local_1 = false;
-                    }
-                    let _e251 = local_1;
-                    if _e251 {
-                        let _e252 = l_1;
-                        chosen = _e252;
-                    }
-                    atomicStore((&grid[at_1]), 0u);
-                    atomicStore((&grid[(at_1 + 1u)]), 0u);
-                }
-                continuing {
-                    let _e262 = l_1;
-                    l_1 = (_e262 + 1u);
-                }
-            }
-            atomicStore((&grid[(h_1 + 13u)]), 0u);
-            let _e270 = chosen;
-            let _e273 = params.levels;
-            if (_e270 < _e273) {
-                let _e276 = chosen;
-                let _e278 = grid_levels[_e276];
-                f = _e278;
-            }
-            let _e283 = f.lo.x;
-            atomicStore((&grid[h_1]), bitcast<u32>(_e283));
-            let _e291 = f.lo.y;
-            atomicStore((&grid[(h_1 + 1u)]), bitcast<u32>(_e291));
-            let _e299 = f.lo.z;
-            atomicStore((&grid[(h_1 + 2u)]), bitcast<u32>(_e299));
-            let _e306 = f.nx;
-            atomicStore((&grid[(h_1 + 3u)]), _e306);
-            let _e313 = f.hi.x;
-            atomicStore((&grid[(h_1 + 4u)]), bitcast<u32>(_e313));
-            let _e321 = f.hi.y;
-            atomicStore((&grid[(h_1 + 5u)]), bitcast<u32>(_e321));
-            let _e329 = f.hi.z;
-            atomicStore((&grid[(h_1 + 6u)]), bitcast<u32>(_e329));
-            let _e336 = f.ny;
-            atomicStore((&grid[(h_1 + 7u)]), _e336);
-            let _e343 = f.inv.x;
-            atomicStore((&grid[(h_1 + 8u)]), bitcast<u32>(_e343));
-            let _e351 = f.inv.y;
-            atomicStore((&grid[(h_1 + 9u)]), bitcast<u32>(_e351));
-            let _e359 = f.inv.z;
-            atomicStore((&grid[(h_1 + 10u)]), bitcast<u32>(_e359));
-            let _e366 = f.nz;
-            atomicStore((&grid[(h_1 + 11u)]), _e366);
-            let _e373 = params.reach;
-            atomicStore((&grid[(h_1 + 12u)]), bitcast<u32>(_e373));
-            return;
-        }
-        case 2u, 4u: {
-            let _e377 = params.count;
-            if (i_2 >= _e377) {
-                return;
-            }
-            let _e379 = grid_frame(h_1);
-            let _e380 = grid_leaf(i_2);
-            if !((_e379.nx == 0u)) {
-                local_2 = (_e380 == BSH_NONE);
-            } else {
-                local_2 = true;
-            }
-            let _e390 = local_2;
-            if _e390 {
-                return;
-            }
-            let leaf_1 = bsh_nodes[_e380];
-            let _e396 = params.reach;
-            let _e397 = bsh_grid_radius(leaf_1, _e396);
-            let _e399 = bsh_grid_first(_e379, leaf_1.center, _e397);
-            let _e401 = bsh_grid_last(_e379, leaf_1.center, _e397);
-            z = _e399.z;
-            loop {
-                let _e404 = z;
-                if (_e404 <= _e401.z) {
-                } else {
-                    break;
-                }
-                {
-                    y = _e399.y;
+                    x_1 = _e24.x;
                     loop {
-                        let _e409 = y;
-                        if (_e409 <= _e401.y) {
+                        let _e39 = x_1;
+                        if (_e39 <= _e26.x) {
                         } else {
                             break;
                         }
                         {
-                            x = _e399.x;
-                            loop {
-                                let _e414 = x;
-                                if (_e414 <= _e401.x) {
-                                } else {
-                                    break;
-                                }
-                                {
-                                    let _e417 = z;
-                                    let _e420 = y;
-                                    let _e424 = x;
-                                    let c_5 = ((((_e417 * _e379.ny) + _e420) * _e379.nx) + _e424);
-                                    let _e429 = params.fill;
-                                    let _e433 = atomicAdd((&grid_fill[(_e429 + c_5)]), 1u);
-                                    let _e436 = params.stage;
-                                    if (_e436 == 4u) {
-                                        grid_entries[_e433] = i_2;
-                                    }
-                                }
-                                continuing {
-                                    let _e442 = x;
-                                    x = (_e442 + 1u);
-                                }
+                            let _e42 = z;
+                            let _e45 = y;
+                            let _e49 = x_1;
+                            let c_5 = ((((_e42 * _e6.ny) + _e45) * _e6.nx) + _e49);
+                            let _e56 = atomicAdd((&grid_fill[(g_3.fill + c_5)]), 1u);
+                            if scatter {
+                                grid_entries[_e56] = i_3;
                             }
                         }
                         continuing {
-                            let _e445 = y;
-                            y = (_e445 + 1u);
+                            let _e60 = x_1;
+                            x_1 = (_e60 + 1u);
                         }
                     }
                 }
                 continuing {
-                    let _e448 = z;
-                    z = (_e448 + 1u);
+                    let _e63 = y;
+                    y = (_e63 + 1u);
                 }
             }
+        }
+        continuing {
+            let _e66 = z;
+            z = (_e66 + 1u);
+        }
+    }
+    return;
+}
+
+fn scan_starts(g_4: GridParams, li_3: u32) {
+    var sum: u32 = 0u;
+    var c_3: u32;
+    var start: u32;
+    var j_4: u32 = 0u;
+    var c_4: u32;
+
+    let starts_1 = (g_4.header + GRID_HEADER);
+    let _e6 = grid_frame(g_4.header);
+    let cells_2 = ((_e6.nx * _e6.ny) * _e6.nz);
+    let run = (((cells_2 + 64u) - 1u) / 64u);
+    let a_4 = min((li_3 * run), cells_2);
+    let b_3 = min((a_4 + run), cells_2);
+    c_3 = a_4;
+    loop {
+        let _e25 = c_3;
+        if (_e25 < b_3) {
+        } else {
+            break;
+        }
+        {
+            let _e27 = sum;
+            let _e30 = c_3;
+            let _e33 = atomicLoad((&grid_fill[(g_4.fill + _e30)]));
+            sum = (_e27 + _e33);
+        }
+        continuing {
+            let _e36 = c_3;
+            c_3 = (_e36 + 1u);
+        }
+    }
+    let _e40 = sum;
+    wg_sums[li_3] = _e40;
+    workgroupBarrier();
+    start = g_4.entries;
+    loop {
+        let _e45 = j_4;
+        if (_e45 < li_3) {
+        } else {
+            break;
+        }
+        {
+            let _e47 = start;
+            let _e49 = j_4;
+            let _e51 = wg_sums[_e49];
+            start = (_e47 + _e51);
+        }
+        continuing {
+            let _e54 = j_4;
+            j_4 = (_e54 + 1u);
+        }
+    }
+    c_4 = a_4;
+    loop {
+        let _e57 = c_4;
+        if (_e57 < b_3) {
+        } else {
+            break;
+        }
+        {
+            let _e61 = c_4;
+            let n_3 = atomicLoad((&grid_fill[(g_4.fill + _e61)]));
+            let _e66 = c_4;
+            let _e69 = start;
+            atomicStore((&grid[(starts_1 + _e66)]), _e69);
+            let _e72 = c_4;
+            let _e75 = start;
+            atomicStore((&grid_fill[(g_4.fill + _e72)]), _e75);
+            let _e76 = start;
+            start = (_e76 + n_3);
+        }
+        continuing {
+            let _e79 = c_4;
+            c_4 = (_e79 + 1u);
+        }
+    }
+    if ((li_3 + 1u) == 64u) {
+        let _e88 = start;
+        atomicStore((&grid[(starts_1 + cells_2)]), _e88);
+        return;
+    } else {
+        return;
+    }
+}
+
+@compute @workgroup_size(64, 1, 1) 
+fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) groups: vec3<u32>, @builtin(local_invocation_index) li: u32) {
+    let g_5 = grids[wid.z];
+    let _e10 = params.stage;
+    switch _e10 {
+        case 0u: {
+            count_levels(g_5, gid.x);
+            return;
+        }
+        case 1u: {
+            if (li == 0u) {
+                choose_level(g_5);
+                return;
+            } else {
+                return;
+            }
+        }
+        case 3u: {
+            scan_starts(g_5, li);
+            return;
+        }
+        case 5u: {
+            sort_cells(g_5, (((wid.y * groups.x) + wid.x) * 64u), li);
             return;
         }
         default: {
+            let _e24 = params.stage;
+            fill_cells(g_5, gid.x, (_e24 == 4u));
             return;
         }
     }

@@ -118,7 +118,9 @@ const LIGHT_VPL: u32 = 4u;
 const NO_LIGHT: u32 = 4294967295u;
 const GRID_HEADER: u32 = 32u;
 const GRID_LEVELS_MAX: u32 = 8u;
-const GRID_SORT_MAX: u32 = 1536u;
+const GRIDS_MAX: u32 = 3u;
+const GRID_SORT_MOVES: u32 = 1024u;
+const GRID_SORT_MAX: u32 = 1024u;
 const COUNT_TILES: u32 = 0u;
 const COUNT_GROUP_TESTS: u32 = 1u;
 const COUNT_CLUSTER_TESTS: u32 = 2u;
@@ -1559,7 +1561,7 @@ fn grid_reach(h_2: u32) -> f32 {
 fn bsh_cursor(x_14: vec3<f32>, r_7: vec3<f32>, rl_6: vec4<f32>) -> BshCursor {
     var c_9: BshCursor;
     var h_3: u32 = 0u;
-    var g: u32 = 0u;
+    var g: u32 = 1u;
     var local_35: bool;
     var local_36: bool;
     var local_37: bool;
@@ -1571,7 +1573,7 @@ fn bsh_cursor(x_14: vec3<f32>, r_7: vec3<f32>, rl_6: vec4<f32>) -> BshCursor {
     c_9.cone = vec2(0f);
     loop {
         let _e18 = g;
-        if (_e18 < 2u) {
+        if (_e18 < GRIDS_MAX) {
             let _e24 = h_3;
             let _e25 = grid_reach(_e24);
             local_35 = (rl_6.w > _e25);

@@ -3,8 +3,13 @@
 #extension GL_ARB_shader_storage_buffer_object : require
 layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
 
-struct GridParams {
+struct GridStage {
     uint stage;
+    uint pad0_;
+    uint pad1_;
+    uint pad2_;
+};
+struct GridParams {
     uint count;
     uint levels;
     uint capacity;
@@ -14,8 +19,7 @@ struct GridParams {
     uint fill;
     uint entries;
     uint least;
-    uint pad1_;
-    uint pad2_;
+    uint moves;
 };
 struct BshNode {
     vec3 center;
@@ -41,7 +45,9 @@ const uint LIGHT_VPL = 4u;
 const uint NO_LIGHT = 4294967295u;
 const uint GRID_HEADER = 32u;
 const uint GRID_LEVELS_MAX = 8u;
-const uint GRID_SORT_MAX = 1536u;
+const uint GRIDS_MAX = 3u;
+const uint GRID_SORT_MOVES = 1024u;
+const uint GRID_SORT_MAX = 1024u;
 const uint COUNT_TILES = 0u;
 const uint COUNT_GROUP_TESTS = 1u;
 const uint COUNT_CLUSTER_TESTS = 2u;
@@ -101,7 +107,7 @@ const float TEMPORAL_MIN_WEIGHT = 0.01;
 const uint GRID_ENTRIES_PER_LIGHT = 8u;
 const float LOBE_CONE_PAD = 1.001;
 
-layout(std140) uniform GridParams_block_0Compute { GridParams _group_0_binding_0_cs; };
+layout(std140) uniform GridStage_block_0Compute { GridStage _group_0_binding_0_cs; };
 
 layout(std430) readonly buffer type_4_block_1Compute { BshNode _group_0_binding_1_cs[]; };
 
@@ -115,15 +121,19 @@ layout(std430) buffer type_8_block_5Compute { uint _group_0_binding_5_cs[]; };
 
 layout(std430) buffer type_5_block_6Compute { uint _group_0_binding_6_cs[]; };
 
+layout(std430) readonly buffer type_9_block_7Compute { GridParams _group_0_binding_7_cs[]; };
+
 shared uint wg_sums[64];
 
-shared uint wg_cell[1536];
+shared uvec2 wg_big[64];
 
-shared uvec2 wg_span;
+shared uint wg_bigs;
+
+shared uint wg_cell[1024];
 
 
-uint to_u32_(float x_1) {
-    return uint(x_1);
+uint to_u32_(float x) {
+    return uint(x);
 }
 
 uint add_wrap_u32_(uint a, uint b) {
@@ -151,9 +161,9 @@ uint bsh_grid_budget(uint leaves, uint cells, uint least) {
     if ((leaves > 536870911u)) {
         return 4294967295u;
     }
-    uint e = (leaves * GRID_ENTRIES_PER_LIGHT);
-    uint _e8 = add_wrap_u32_(e, cells);
-    return max(((_e8 < e) ? 4294967295u : _e8), least);
+    uint e_1 = (leaves * GRID_ENTRIES_PER_LIGHT);
+    uint _e8 = add_wrap_u32_(e_1, cells);
+    return max(((_e8 < e_1) ? 4294967295u : _e8), least);
 }
 
 float bsh_grid_reach(BshNode node_2, float w_1) {
@@ -182,17 +192,17 @@ float bsh_grid_radius(BshNode node_3, float w_2) {
     return _e3;
 }
 
-uvec3 bsh_grid_first(GridFrame f_1, vec3 c_2, float r) {
-    uint _e10 = bsh_grid_axis((c_2.x - r), f_1.lo.x, f_1.inv.x, f_1.nx);
-    uint _e18 = bsh_grid_axis((c_2.y - r), f_1.lo.y, f_1.inv.y, f_1.ny);
-    uint _e26 = bsh_grid_axis((c_2.z - r), f_1.lo.z, f_1.inv.z, f_1.nz);
+uvec3 bsh_grid_first(GridFrame f, vec3 c, float r) {
+    uint _e10 = bsh_grid_axis((c.x - r), f.lo.x, f.inv.x, f.nx);
+    uint _e18 = bsh_grid_axis((c.y - r), f.lo.y, f.inv.y, f.ny);
+    uint _e26 = bsh_grid_axis((c.z - r), f.lo.z, f.inv.z, f.nz);
     return uvec3(_e10, _e18, _e26);
 }
 
-uvec3 bsh_grid_last(GridFrame f_2, vec3 c_3, float r_1) {
-    uint _e10 = bsh_grid_axis((c_3.x + r_1), f_2.lo.x, f_2.inv.x, f_2.nx);
-    uint _e18 = bsh_grid_axis((c_3.y + r_1), f_2.lo.y, f_2.inv.y, f_2.ny);
-    uint _e26 = bsh_grid_axis((c_3.z + r_1), f_2.lo.z, f_2.inv.z, f_2.nz);
+uvec3 bsh_grid_last(GridFrame f_1, vec3 c_1, float r_1) {
+    uint _e10 = bsh_grid_axis((c_1.x + r_1), f_1.lo.x, f_1.inv.x, f_1.nx);
+    uint _e18 = bsh_grid_axis((c_1.y + r_1), f_1.lo.y, f_1.inv.y, f_1.ny);
+    uint _e26 = bsh_grid_axis((c_1.z + r_1), f_1.lo.z, f_1.inv.z, f_1.nz);
     return uvec3(_e10, _e18, _e26);
 }
 
@@ -202,26 +212,26 @@ uint grid_word(uint i) {
 }
 
 GridFrame grid_frame(uint h) {
-    GridFrame f_3 = GridFrame(vec3(0.0), 0u, vec3(0.0), 0u, vec3(0.0), 0u);
+    GridFrame f_2 = GridFrame(vec3(0.0), 0u, vec3(0.0), 0u, vec3(0.0), 0u);
     uint _e3 = grid_word(h);
     uint _e7 = grid_word((h + 1u));
     uint _e11 = grid_word((h + 2u));
-    f_3.lo = vec3(uintBitsToFloat(_e3), uintBitsToFloat(_e7), uintBitsToFloat(_e11));
+    f_2.lo = vec3(uintBitsToFloat(_e3), uintBitsToFloat(_e7), uintBitsToFloat(_e11));
     uint _e17 = grid_word((h + 3u));
-    f_3.nx = _e17;
+    f_2.nx = _e17;
     uint _e21 = grid_word((h + 4u));
     uint _e25 = grid_word((h + 5u));
     uint _e29 = grid_word((h + 6u));
-    f_3.hi = vec3(uintBitsToFloat(_e21), uintBitsToFloat(_e25), uintBitsToFloat(_e29));
+    f_2.hi = vec3(uintBitsToFloat(_e21), uintBitsToFloat(_e25), uintBitsToFloat(_e29));
     uint _e35 = grid_word((h + 7u));
-    f_3.ny = _e35;
+    f_2.ny = _e35;
     uint _e39 = grid_word((h + 8u));
     uint _e43 = grid_word((h + 9u));
     uint _e47 = grid_word((h + 10u));
-    f_3.inv = vec3(uintBitsToFloat(_e39), uintBitsToFloat(_e43), uintBitsToFloat(_e47));
+    f_2.inv = vec3(uintBitsToFloat(_e39), uintBitsToFloat(_e43), uintBitsToFloat(_e47));
     uint _e53 = grid_word((h + 11u));
-    f_3.nz = _e53;
-    GridFrame _e54 = f_3;
+    f_2.nz = _e53;
+    GridFrame _e54 = f_2;
     return _e54;
 }
 
@@ -234,181 +244,626 @@ uint grid_leaf(uint i_1) {
     return node_4;
 }
 
-void sort_cell(uint cell, uint li_1) {
-    uvec2 span = uvec2(0u);
-    uint s = 0u;
-    uint c_4 = 0u;
-    bool local_3 = false;
-    uint s_1 = 0u;
-    uint j_1 = 0u;
+uint cell_key(bool big, uint a_1, uint j) {
+    if (big) {
+        uint _e6 = _group_0_binding_6_cs[(a_1 + j)];
+        return _e6;
+    }
+    uint _e9 = wg_cell[j];
+    return _e9;
+}
+
+void set_cell_key(bool big_1, uint a_2, uint j_1, uint v_1) {
+    if (big_1) {
+        _group_0_binding_6_cs[(a_2 + j_1)] = v_1;
+        return;
+    } else {
+        wg_cell[j_1] = v_1;
+        return;
+    }
+}
+
+void sort_together(uint b_1, uint li_1) {
     uint j_2 = 0u;
-    uint below = 0u;
-    uint m = 0u;
-    uint _e4 = _group_0_binding_0_cs.header;
-    uint starts = (_e4 + GRID_HEADER);
-    if ((li_1 == 0u)) {
-        uint _e11 = _group_0_binding_0_cs.header;
-        GridFrame _e12 = grid_frame(_e11);
-        if ((cell < ((_e12.nx * _e12.ny) * _e12.nz))) {
-            uint _e25 = atomicOr(_group_0_binding_4_cs[(starts + cell)], 0u);
-            uint _e31 = atomicOr(_group_0_binding_4_cs[((starts + cell) + 1u)], 0u);
-            span = uvec2(_e25, _e31);
-            uint _e36 = _group_0_binding_0_cs.fill;
-            atomicExchange(_group_0_binding_5_cs[(_e36 + cell)], 0u);
+    uint p = 1u;
+    bool local = false;
+    uint k = 2u;
+    uint h_1 = 0u;
+    uint t = 0u;
+    uint j_3 = 0u;
+    memoryBarrierShared();
+    barrier();
+    uvec2 _e4 = wg_big[b_1];
+    memoryBarrierShared();
+    barrier();
+    uint a_3 = _e4.x;
+    uint n_1 = (_e4.y - _e4.x);
+    bool big_2 = (n_1 > GRID_SORT_MAX);
+    if (!(big_2)) {
+        j_2 = li_1;
+        bool loop_init = true;
+        while(true) {
+            if (!loop_init) {
+                uint _e23 = j_2;
+                j_2 = (_e23 + 64u);
+            }
+            loop_init = false;
+            uint _e13 = j_2;
+            if ((_e13 < n_1)) {
+            } else {
+                break;
+            }
+            {
+                uint _e16 = j_2;
+                uint _e19 = j_2;
+                uint _e22 = _group_0_binding_6_cs[(a_3 + _e19)];
+                wg_cell[_e16] = _e22;
+            }
         }
-        uvec2 _e41 = span;
-        wg_span = _e41;
+    }
+    while(true) {
+        uint _e28 = p;
+        if ((_e28 < n_1)) {
+            uint _e32 = p;
+            local = (_e32 < 2147483648u);
+        } else {
+            local = false;
+        }
+        bool _e36 = local;
+        if (_e36) {
+        } else {
+            break;
+        }
+        {
+            uint _e37 = p;
+            p = (_e37 << 1u);
+        }
     }
     memoryBarrierShared();
     barrier();
-    uvec2 _e43 = wg_span;
-    memoryBarrierShared();
-    barrier();
-    uint a_1 = _e43.x;
-    uint n_1 = (_e43.y - _e43.x);
-    if ((n_1 > GRID_SORT_MAX)) {
-        if ((li_1 == 0u)) {
-            s = (a_1 + 1u);
-            bool loop_init = true;
+    bool loop_init_1 = true;
+    while(true) {
+        if (!loop_init_1) {
+            uint _e94 = k;
+            k = (_e94 << 1u);
+        }
+        loop_init_1 = false;
+        uint _e42 = k;
+        uint _e43 = p;
+        if ((_e42 <= _e43)) {
+        } else {
+            break;
+        }
+        {
+            uint _e45 = k;
+            h_1 = (_e45 >> 1u);
+            bool loop_init_2 = true;
             while(true) {
-                if (!loop_init) {
-                    uint _e93 = s;
-                    s = (_e93 + 1u);
+                if (!loop_init_2) {
+                    uint _e91 = h_1;
+                    h_1 = (_e91 >> 1u);
                 }
-                loop_init = false;
-                uint _e55 = s;
-                if ((_e55 < (a_1 + n_1))) {
+                loop_init_2 = false;
+                uint _e49 = h_1;
+                if ((_e49 > 0u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e59 = s;
-                    uint v_1 = _group_0_binding_6_cs[_e59];
-                    uint _e62 = s;
-                    c_4 = _e62;
+                    t = li_1;
+                    bool loop_init_3 = true;
                     while(true) {
-                        uint _e64 = c_4;
-                        if ((_e64 > a_1)) {
-                            uint _e69 = c_4;
-                            uint _e73 = _group_0_binding_6_cs[(_e69 - 1u)];
-                            local_3 = (_e73 > v_1);
-                        } else {
-                            local_3 = false;
+                        if (!loop_init_3) {
+                            uint _e88 = t;
+                            t = (_e88 + 64u);
                         }
-                        bool _e76 = local_3;
-                        if (_e76) {
+                        loop_init_3 = false;
+                        uint _e53 = t;
+                        uint _e54 = p;
+                        if ((_e53 < (_e54 >> 1u))) {
                         } else {
                             break;
                         }
                         {
-                            uint _e78 = c_4;
-                            uint _e81 = c_4;
-                            uint _e85 = _group_0_binding_6_cs[(_e81 - 1u)];
-                            _group_0_binding_6_cs[_e78] = _e85;
-                            uint _e86 = c_4;
-                            c_4 = (_e86 - 1u);
+                            uint _e58 = t;
+                            uint _e59 = h_1;
+                            uint _e66 = t;
+                            uint _e67 = h_1;
+                            uint i_4 = (((_e58 & ~((_e59 - 1u))) << 1u) | (_e66 & (_e67 - 1u)));
+                            uint _e72 = h_1;
+                            uint _e74 = k;
+                            uint _e78 = h_1;
+                            uint _e79 = k;
+                            uint o = ((_e78 == (_e79 >> 1u)) ? (i_4 ^ (_e74 - 1u)) : (i_4 | _e72));
+                            if ((o < n_1)) {
+                                uint _e85 = cell_key(big_2, a_3, i_4);
+                                uint _e86 = cell_key(big_2, a_3, o);
+                                if ((_e86 < _e85)) {
+                                    set_cell_key(big_2, a_3, i_4, _e86);
+                                    set_cell_key(big_2, a_3, o, _e85);
+                                }
+                            }
                         }
                     }
-                    uint _e90 = c_4;
-                    _group_0_binding_6_cs[_e90] = v_1;
-                }
-            }
-            s_1 = a_1;
-            bool loop_init_1 = true;
-            while(true) {
-                if (!loop_init_1) {
-                    uint _e110 = s_1;
-                    s_1 = (_e110 + 1u);
-                }
-                loop_init_1 = false;
-                uint _e96 = s_1;
-                if ((_e96 < (a_1 + n_1))) {
-                } else {
-                    break;
-                }
-                {
-                    uint _e100 = s_1;
-                    uint _e104 = s_1;
-                    uint _e106 = _group_0_binding_6_cs[_e104];
-                    uint _e108 = _group_0_binding_2_cs[_e106];
-                    _group_0_binding_6_cs[_e100] = _e108;
+                    memoryBarrierShared();
+                    barrier();
+                    memoryBarrierBuffer();
+                    barrier();
                 }
             }
         }
-        return;
     }
-    j_1 = li_1;
-    bool loop_init_2 = true;
+    j_3 = li_1;
+    bool loop_init_4 = true;
     while(true) {
-        if (!loop_init_2) {
-            uint _e123 = j_1;
-            j_1 = (_e123 + 64u);
+        if (!loop_init_4) {
+            uint _e109 = j_3;
+            j_3 = (_e109 + 64u);
         }
-        loop_init_2 = false;
-        uint _e113 = j_1;
-        if ((_e113 < n_1)) {
+        loop_init_4 = false;
+        uint _e98 = j_3;
+        if ((_e98 < n_1)) {
         } else {
             break;
         }
         {
-            uint _e116 = j_1;
-            uint _e119 = j_1;
-            uint _e122 = _group_0_binding_6_cs[(a_1 + _e119)];
-            wg_cell[_e116] = _e122;
+            uint _e101 = j_3;
+            uint _e105 = j_3;
+            uint _e106 = cell_key(big_2, a_3, _e105);
+            uint _e108 = _group_0_binding_2_cs[_e106];
+            _group_0_binding_6_cs[(a_3 + _e101)] = _e108;
         }
     }
     memoryBarrierShared();
     barrier();
-    j_2 = li_1;
-    bool loop_init_3 = true;
+    return;
+}
+
+void sort_cells(GridParams g, uint first, uint li_2) {
+    uvec2 span = uvec2(0u);
+    uint s = 0u;
+    uint moves = 0u;
+    bool local_1 = false;
+    uint c_2 = 0u;
+    bool local_2 = false;
+    uint e = 0u;
+    uint b_2 = 0u;
+    uint starts = (g.header + GRID_HEADER);
+    GridFrame _e7 = grid_frame(g.header);
+    uint cell = (first + li_2);
+    if ((cell < ((_e7.nx * _e7.ny) * _e7.nz))) {
+        uint _e21 = atomicOr(_group_0_binding_4_cs[(starts + cell)], 0u);
+        uint _e27 = atomicOr(_group_0_binding_4_cs[((starts + cell) + 1u)], 0u);
+        span = uvec2(_e21, _e27);
+        atomicExchange(_group_0_binding_5_cs[(g.fill + cell)], 0u);
+    }
+    if ((li_2 == 0u)) {
+        atomicExchange(wg_bigs, 0u);
+    }
+    memoryBarrierShared();
+    barrier();
+    uint _e39 = span.x;
+    s = (_e39 + 1u);
     while(true) {
-        if (!loop_init_3) {
-            uint _e159 = j_2;
-            j_2 = (_e159 + 64u);
+        uint _e45 = s;
+        uint _e47 = span.y;
+        if ((_e45 < _e47)) {
+            uint _e51 = moves;
+            local_1 = (_e51 < g.moves);
+        } else {
+            local_1 = false;
         }
-        loop_init_3 = false;
-        uint _e127 = j_2;
-        if ((_e127 < n_1)) {
+        bool _e55 = local_1;
+        if (_e55) {
         } else {
             break;
         }
         {
-            uint _e130 = j_2;
-            uint v_2 = wg_cell[_e130];
-            below = 0u;
-            m = 0u;
-            bool loop_init_4 = true;
+            uint _e57 = s;
+            uint v_2 = _group_0_binding_6_cs[_e57];
+            uint _e60 = s;
+            c_2 = _e60;
             while(true) {
-                if (!loop_init_4) {
-                    uint _e150 = m;
-                    m = (_e150 + 1u);
+                uint _e62 = c_2;
+                uint _e64 = span.x;
+                if ((_e62 > _e64)) {
+                    uint _e69 = c_2;
+                    uint _e73 = _group_0_binding_6_cs[(_e69 - 1u)];
+                    local_2 = (_e73 > v_2);
+                } else {
+                    local_2 = false;
                 }
-                loop_init_4 = false;
-                uint _e137 = m;
-                if ((_e137 < n_1)) {
+                bool _e76 = local_2;
+                if (_e76) {
                 } else {
                     break;
                 }
                 {
-                    uint _e139 = below;
-                    uint _e143 = m;
-                    uint _e145 = wg_cell[_e143];
-                    below = (_e139 + ((_e145 < v_2) ? 1u : 0u));
+                    uint _e78 = c_2;
+                    uint _e81 = c_2;
+                    uint _e85 = _group_0_binding_6_cs[(_e81 - 1u)];
+                    _group_0_binding_6_cs[_e78] = _e85;
+                    uint _e86 = c_2;
+                    c_2 = (_e86 - 1u);
                 }
             }
-            uint _e153 = below;
-            uint _e158 = _group_0_binding_2_cs[v_2];
-            _group_0_binding_6_cs[(a_1 + _e153)] = _e158;
+            uint _e90 = c_2;
+            _group_0_binding_6_cs[_e90] = v_2;
+            uint _e92 = moves;
+            uint _e93 = s;
+            uint _e94 = c_2;
+            moves = (_e92 + (_e93 - _e94));
+            uint _e97 = s;
+            s = (_e97 + 1u);
+        }
+    }
+    uint _e100 = s;
+    uint _e102 = span.y;
+    if ((_e100 < _e102)) {
+        uint _e107 = atomicAdd(wg_bigs, 1u);
+        uvec2 _e109 = span;
+        wg_big[_e107] = _e109;
+    } else {
+        uint _e111 = span.x;
+        e = _e111;
+        bool loop_init_5 = true;
+        while(true) {
+            if (!loop_init_5) {
+                uint _e128 = e;
+                e = (_e128 + 1u);
+            }
+            loop_init_5 = false;
+            uint _e113 = e;
+            uint _e115 = span.y;
+            if ((_e113 < _e115)) {
+            } else {
+                break;
+            }
+            {
+                uint _e118 = e;
+                uint _e122 = e;
+                uint _e124 = _group_0_binding_6_cs[_e122];
+                uint _e126 = _group_0_binding_2_cs[_e124];
+                _group_0_binding_6_cs[_e118] = _e126;
+            }
+        }
+    }
+    memoryBarrierShared();
+    barrier();
+    uint _e131 = wg_bigs;
+    memoryBarrierShared();
+    barrier();
+    bool loop_init_6 = true;
+    while(true) {
+        if (!loop_init_6) {
+            uint _e138 = b_2;
+            b_2 = (_e138 + 1u);
+        }
+        loop_init_6 = false;
+        uint _e134 = b_2;
+        if ((_e134 < _e131)) {
+        } else {
+            break;
+        }
+        {
+            uint _e136 = b_2;
+            sort_together(_e136, li_2);
         }
     }
     return;
 }
 
+void count_levels(GridParams g_1, uint i_2) {
+    uint l = 0u;
+    if ((i_2 >= g_1.count)) {
+        return;
+    }
+    uint h_2 = g_1.header;
+    uint _e5 = grid_leaf(i_2);
+    if ((_e5 == BSH_NONE)) {
+        return;
+    }
+    uint _e13 = atomicAdd(_group_0_binding_4_cs[(h_2 + 13u)], 1u);
+    BshNode leaf = _group_0_binding_1_cs[_e5];
+    float _e18 = bsh_grid_radius(leaf, g_1.reach);
+    bool loop_init_7 = true;
+    while(true) {
+        if (!loop_init_7) {
+            uint _e63 = l;
+            l = (_e63 + 1u);
+        }
+        loop_init_7 = false;
+        uint _e21 = l;
+        if ((_e21 < g_1.levels)) {
+        } else {
+            break;
+        }
+        {
+            uint _e25 = l;
+            GridFrame _e27 = _group_0_binding_3_cs[_e25];
+            uvec3 _e29 = bsh_grid_last(_e27, leaf.center, _e18);
+            uint _e31 = l;
+            GridFrame _e33 = _group_0_binding_3_cs[_e31];
+            uvec3 _e35 = bsh_grid_first(_e33, leaf.center, _e18);
+            uvec3 d = ((_e29 - _e35) + uvec3(1u));
+            uint n_2 = ((d.x * d.y) * d.z);
+            uint _e48 = l;
+            uint at = ((h_2 + 16u) + (2u * _e48));
+            uint _e53 = atomicAdd(_group_0_binding_4_cs[at], n_2);
+            if (((_e53 + n_2) < _e53)) {
+                uint _e61 = atomicAdd(_group_0_binding_4_cs[(at + 1u)], 1u);
+            }
+        }
+    }
+    return;
+}
+
+void choose_level(GridParams g_2) {
+    uint chosen = 0u;
+    uint l_1 = 0u;
+    bool local_3 = false;
+    bool local_4 = false;
+    GridFrame f_3 = GridFrame(vec3(0.0), 0u, vec3(0.0), 0u, vec3(0.0), 0u);
+    uint h_3 = g_2.header;
+    uint leaves_1 = atomicOr(_group_0_binding_4_cs[(h_3 + 13u)], 0u);
+    chosen = g_2.levels;
+    bool loop_init_8 = true;
+    while(true) {
+        if (!loop_init_8) {
+            uint _e65 = l_1;
+            l_1 = (_e65 + 1u);
+        }
+        loop_init_8 = false;
+        uint _e11 = l_1;
+        if ((_e11 < g_2.levels)) {
+        } else {
+            break;
+        }
+        {
+            uint _e15 = l_1;
+            GridFrame f_4 = _group_0_binding_3_cs[_e15];
+            uint cells_1 = ((f_4.nx * f_4.ny) * f_4.nz);
+            uint _e24 = bsh_grid_budget(leaves_1, cells_1, g_2.least);
+            uint budget = min(_e24, g_2.capacity);
+            uint _e30 = l_1;
+            uint at_1 = ((h_3 + 16u) + (2u * _e30));
+            uint _e33 = chosen;
+            if ((_e33 == g_2.levels)) {
+                uint _e42 = atomicOr(_group_0_binding_4_cs[(at_1 + 1u)], 0u);
+                local_3 = (_e42 == 0u);
+            } else {
+                local_3 = false;
+            }
+            bool _e46 = local_3;
+            if (_e46) {
+                uint _e51 = atomicOr(_group_0_binding_4_cs[at_1], 0u);
+                local_4 = (_e51 <= budget);
+            } else {
+                local_4 = false;
+            }
+            bool _e54 = local_4;
+            if (_e54) {
+                uint _e55 = l_1;
+                chosen = _e55;
+            }
+            atomicExchange(_group_0_binding_4_cs[at_1], 0u);
+            atomicExchange(_group_0_binding_4_cs[(at_1 + 1u)], 0u);
+        }
+    }
+    atomicExchange(_group_0_binding_4_cs[(h_3 + 13u)], 0u);
+    uint _e73 = chosen;
+    if ((_e73 < g_2.levels)) {
+        uint _e77 = chosen;
+        GridFrame _e79 = _group_0_binding_3_cs[_e77];
+        f_3 = _e79;
+    }
+    float _e84 = f_3.lo.x;
+    atomicExchange(_group_0_binding_4_cs[h_3], floatBitsToUint(_e84));
+    float _e92 = f_3.lo.y;
+    atomicExchange(_group_0_binding_4_cs[(h_3 + 1u)], floatBitsToUint(_e92));
+    float _e100 = f_3.lo.z;
+    atomicExchange(_group_0_binding_4_cs[(h_3 + 2u)], floatBitsToUint(_e100));
+    uint _e107 = f_3.nx;
+    atomicExchange(_group_0_binding_4_cs[(h_3 + 3u)], _e107);
+    float _e114 = f_3.hi.x;
+    atomicExchange(_group_0_binding_4_cs[(h_3 + 4u)], floatBitsToUint(_e114));
+    float _e122 = f_3.hi.y;
+    atomicExchange(_group_0_binding_4_cs[(h_3 + 5u)], floatBitsToUint(_e122));
+    float _e130 = f_3.hi.z;
+    atomicExchange(_group_0_binding_4_cs[(h_3 + 6u)], floatBitsToUint(_e130));
+    uint _e137 = f_3.ny;
+    atomicExchange(_group_0_binding_4_cs[(h_3 + 7u)], _e137);
+    float _e144 = f_3.inv.x;
+    atomicExchange(_group_0_binding_4_cs[(h_3 + 8u)], floatBitsToUint(_e144));
+    float _e152 = f_3.inv.y;
+    atomicExchange(_group_0_binding_4_cs[(h_3 + 9u)], floatBitsToUint(_e152));
+    float _e160 = f_3.inv.z;
+    atomicExchange(_group_0_binding_4_cs[(h_3 + 10u)], floatBitsToUint(_e160));
+    uint _e167 = f_3.nz;
+    atomicExchange(_group_0_binding_4_cs[(h_3 + 11u)], _e167);
+    atomicExchange(_group_0_binding_4_cs[(h_3 + 12u)], floatBitsToUint(g_2.reach));
+    return;
+}
+
+void fill_cells(GridParams g_3, uint i_3, bool scatter) {
+    bool local_5 = false;
+    uint z = 0u;
+    uint y = 0u;
+    uint x_1 = 0u;
+    if ((i_3 >= g_3.count)) {
+        return;
+    }
+    GridFrame _e6 = grid_frame(g_3.header);
+    uint _e7 = grid_leaf(i_3);
+    if (!((_e6.nx == 0u))) {
+        local_5 = (_e7 == BSH_NONE);
+    } else {
+        local_5 = true;
+    }
+    bool _e17 = local_5;
+    if (_e17) {
+        return;
+    }
+    BshNode leaf_1 = _group_0_binding_1_cs[_e7];
+    float _e22 = bsh_grid_radius(leaf_1, g_3.reach);
+    uvec3 _e24 = bsh_grid_first(_e6, leaf_1.center, _e22);
+    uvec3 _e26 = bsh_grid_last(_e6, leaf_1.center, _e22);
+    z = _e24.z;
+    bool loop_init_9 = true;
+    while(true) {
+        if (!loop_init_9) {
+            uint _e66 = z;
+            z = (_e66 + 1u);
+        }
+        loop_init_9 = false;
+        uint _e29 = z;
+        if ((_e29 <= _e26.z)) {
+        } else {
+            break;
+        }
+        {
+            y = _e24.y;
+            bool loop_init_10 = true;
+            while(true) {
+                if (!loop_init_10) {
+                    uint _e63 = y;
+                    y = (_e63 + 1u);
+                }
+                loop_init_10 = false;
+                uint _e34 = y;
+                if ((_e34 <= _e26.y)) {
+                } else {
+                    break;
+                }
+                {
+                    x_1 = _e24.x;
+                    bool loop_init_11 = true;
+                    while(true) {
+                        if (!loop_init_11) {
+                            uint _e60 = x_1;
+                            x_1 = (_e60 + 1u);
+                        }
+                        loop_init_11 = false;
+                        uint _e39 = x_1;
+                        if ((_e39 <= _e26.x)) {
+                        } else {
+                            break;
+                        }
+                        {
+                            uint _e42 = z;
+                            uint _e45 = y;
+                            uint _e49 = x_1;
+                            uint c_5 = ((((_e42 * _e6.ny) + _e45) * _e6.nx) + _e49);
+                            uint _e56 = atomicAdd(_group_0_binding_5_cs[(g_3.fill + c_5)], 1u);
+                            if (scatter) {
+                                _group_0_binding_6_cs[_e56] = i_3;
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
+    return;
+}
+
+void scan_starts(GridParams g_4, uint li_3) {
+    uint sum = 0u;
+    uint c_3 = 0u;
+    uint start = 0u;
+    uint j_4 = 0u;
+    uint c_4 = 0u;
+    uint starts_1 = (g_4.header + GRID_HEADER);
+    GridFrame _e6 = grid_frame(g_4.header);
+    uint cells_2 = ((_e6.nx * _e6.ny) * _e6.nz);
+    uint run = (((cells_2 + 64u) - 1u) / 64u);
+    uint a_4 = min((li_3 * run), cells_2);
+    uint b_3 = min((a_4 + run), cells_2);
+    c_3 = a_4;
+    bool loop_init_12 = true;
+    while(true) {
+        if (!loop_init_12) {
+            uint _e36 = c_3;
+            c_3 = (_e36 + 1u);
+        }
+        loop_init_12 = false;
+        uint _e25 = c_3;
+        if ((_e25 < b_3)) {
+        } else {
+            break;
+        }
+        {
+            uint _e27 = sum;
+            uint _e30 = c_3;
+            uint _e33 = atomicOr(_group_0_binding_5_cs[(g_4.fill + _e30)], 0u);
+            sum = (_e27 + _e33);
+        }
+    }
+    uint _e40 = sum;
+    wg_sums[li_3] = _e40;
+    memoryBarrierShared();
+    barrier();
+    start = g_4.entries;
+    bool loop_init_13 = true;
+    while(true) {
+        if (!loop_init_13) {
+            uint _e54 = j_4;
+            j_4 = (_e54 + 1u);
+        }
+        loop_init_13 = false;
+        uint _e45 = j_4;
+        if ((_e45 < li_3)) {
+        } else {
+            break;
+        }
+        {
+            uint _e47 = start;
+            uint _e49 = j_4;
+            uint _e51 = wg_sums[_e49];
+            start = (_e47 + _e51);
+        }
+    }
+    c_4 = a_4;
+    bool loop_init_14 = true;
+    while(true) {
+        if (!loop_init_14) {
+            uint _e79 = c_4;
+            c_4 = (_e79 + 1u);
+        }
+        loop_init_14 = false;
+        uint _e57 = c_4;
+        if ((_e57 < b_3)) {
+        } else {
+            break;
+        }
+        {
+            uint _e61 = c_4;
+            uint n_3 = atomicOr(_group_0_binding_5_cs[(g_4.fill + _e61)], 0u);
+            uint _e66 = c_4;
+            uint _e69 = start;
+            atomicExchange(_group_0_binding_4_cs[(starts_1 + _e66)], _e69);
+            uint _e72 = c_4;
+            uint _e75 = start;
+            atomicExchange(_group_0_binding_5_cs[(g_4.fill + _e72)], _e75);
+            uint _e76 = start;
+            start = (_e76 + n_3);
+        }
+    }
+    if (((li_3 + 1u) == 64u)) {
+        uint _e88 = start;
+        atomicExchange(_group_0_binding_4_cs[(starts_1 + cells_2)], _e88);
+        return;
+    } else {
+        return;
+    }
+}
+
 void main() {
     if (gl_LocalInvocationID == uvec3(0u)) {
         wg_sums = uint[64](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
-        wg_cell = uint[1536](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
-        wg_span = uvec2(0u);
+        wg_big = uvec2[64](uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u));
+        wg_bigs = 0u;
+        wg_cell = uint[1024](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
     }
     memoryBarrierShared();
     barrier();
@@ -416,336 +871,33 @@ void main() {
     uvec3 wid = gl_WorkGroupID;
     uvec3 groups = gl_NumWorkGroups;
     uint li = gl_LocalInvocationIndex;
-    uint sum = 0u;
-    uint c = 0u;
-    uint start = 0u;
-    uint j = 0u;
-    uint c_1 = 0u;
-    uint l = 0u;
-    uint chosen = 0u;
-    uint l_1 = 0u;
-    bool local = false;
-    bool local_1 = false;
-    GridFrame f = GridFrame(vec3(0.0), 0u, vec3(0.0), 0u, vec3(0.0), 0u);
-    bool local_2 = false;
-    uint z = 0u;
-    uint y = 0u;
-    uint x = 0u;
-    uint _e6 = _group_0_binding_0_cs.stage;
-    if ((_e6 == 5u)) {
-        sort_cell(((wid.y * groups.x) + wid.x), li);
-        return;
-    }
-    uint i_2 = gid.x;
-    uint h_1 = _group_0_binding_0_cs.header;
-    uint starts_1 = (h_1 + GRID_HEADER);
-    uint _e22 = _group_0_binding_0_cs.stage;
-    if ((_e22 == 3u)) {
-        GridFrame _e25 = grid_frame(h_1);
-        uint cells_1 = ((_e25.nx * _e25.ny) * _e25.nz);
-        uint run = (((cells_1 + 64u) - 1u) / 64u);
-        uint a_2 = min((i_2 * run), cells_1);
-        uint b_1 = min((a_2 + run), cells_1);
-        c = a_2;
-        bool loop_init_5 = true;
-        while(true) {
-            if (!loop_init_5) {
-                uint _e57 = c;
-                c = (_e57 + 1u);
-            }
-            loop_init_5 = false;
-            uint _e44 = c;
-            if ((_e44 < b_1)) {
-            } else {
-                break;
-            }
-            {
-                uint _e46 = sum;
-                uint _e50 = _group_0_binding_0_cs.fill;
-                uint _e51 = c;
-                uint _e54 = atomicOr(_group_0_binding_5_cs[(_e50 + _e51)], 0u);
-                sum = (_e46 + _e54);
-            }
-        }
-        uint _e61 = sum;
-        wg_sums[i_2] = _e61;
-        memoryBarrierShared();
-        barrier();
-        uint _e64 = _group_0_binding_0_cs.entries;
-        start = _e64;
-        bool loop_init_6 = true;
-        while(true) {
-            if (!loop_init_6) {
-                uint _e77 = j;
-                j = (_e77 + 1u);
-            }
-            loop_init_6 = false;
-            uint _e68 = j;
-            if ((_e68 < i_2)) {
-            } else {
-                break;
-            }
-            {
-                uint _e70 = start;
-                uint _e72 = j;
-                uint _e74 = wg_sums[_e72];
-                start = (_e70 + _e74);
-            }
-        }
-        c_1 = a_2;
-        bool loop_init_7 = true;
-        while(true) {
-            if (!loop_init_7) {
-                uint _e106 = c_1;
-                c_1 = (_e106 + 1u);
-            }
-            loop_init_7 = false;
-            uint _e80 = c_1;
-            if ((_e80 < b_1)) {
-            } else {
-                break;
-            }
-            {
-                uint _e85 = _group_0_binding_0_cs.fill;
-                uint _e86 = c_1;
-                uint n_2 = atomicOr(_group_0_binding_5_cs[(_e85 + _e86)], 0u);
-                uint _e91 = c_1;
-                uint _e94 = start;
-                atomicExchange(_group_0_binding_4_cs[(starts_1 + _e91)], _e94);
-                uint _e98 = _group_0_binding_0_cs.fill;
-                uint _e99 = c_1;
-                uint _e102 = start;
-                atomicExchange(_group_0_binding_5_cs[(_e98 + _e99)], _e102);
-                uint _e103 = start;
-                start = (_e103 + n_2);
-            }
-        }
-        if (((i_2 + 1u) == 64u)) {
-            uint _e115 = start;
-            atomicExchange(_group_0_binding_4_cs[(starts_1 + cells_1)], _e115);
-        }
-        return;
-    }
-    uint _e118 = _group_0_binding_0_cs.stage;
-    switch(_e118) {
+    GridParams g_5 = _group_0_binding_7_cs[wid.z];
+    uint _e10 = _group_0_binding_0_cs.stage;
+    switch(_e10) {
         case 0u: {
-            uint _e121 = _group_0_binding_0_cs.count;
-            if ((i_2 >= _e121)) {
-                return;
-            }
-            uint _e123 = grid_leaf(i_2);
-            if ((_e123 == BSH_NONE)) {
-                return;
-            }
-            uint _e131 = atomicAdd(_group_0_binding_4_cs[(h_1 + 13u)], 1u);
-            BshNode leaf = _group_0_binding_1_cs[_e123];
-            float _e137 = _group_0_binding_0_cs.reach;
-            float _e138 = bsh_grid_radius(leaf, _e137);
-            bool loop_init_8 = true;
-            while(true) {
-                if (!loop_init_8) {
-                    uint _e185 = l;
-                    l = (_e185 + 1u);
-                }
-                loop_init_8 = false;
-                uint _e141 = l;
-                uint _e144 = _group_0_binding_0_cs.levels;
-                if ((_e141 < _e144)) {
-                } else {
-                    break;
-                }
-                {
-                    uint _e147 = l;
-                    GridFrame _e149 = _group_0_binding_3_cs[_e147];
-                    uvec3 _e151 = bsh_grid_last(_e149, leaf.center, _e138);
-                    uint _e153 = l;
-                    GridFrame _e155 = _group_0_binding_3_cs[_e153];
-                    uvec3 _e157 = bsh_grid_first(_e155, leaf.center, _e138);
-                    uvec3 d = ((_e151 - _e157) + uvec3(1u));
-                    uint n_3 = ((d.x * d.y) * d.z);
-                    uint _e170 = l;
-                    uint at = ((h_1 + 16u) + (2u * _e170));
-                    uint _e175 = atomicAdd(_group_0_binding_4_cs[at], n_3);
-                    if (((_e175 + n_3) < _e175)) {
-                        uint _e183 = atomicAdd(_group_0_binding_4_cs[(at + 1u)], 1u);
-                    }
-                }
-            }
+            count_levels(g_5, gid.x);
             return;
         }
         case 1u: {
-            if ((i_2 != 0u)) {
+            if ((li == 0u)) {
+                choose_level(g_5);
+                return;
+            } else {
                 return;
             }
-            uint leaves_1 = atomicOr(_group_0_binding_4_cs[(h_1 + 13u)], 0u);
-            uint _e196 = _group_0_binding_0_cs.levels;
-            chosen = _e196;
-            bool loop_init_9 = true;
-            while(true) {
-                if (!loop_init_9) {
-                    uint _e262 = l_1;
-                    l_1 = (_e262 + 1u);
-                }
-                loop_init_9 = false;
-                uint _e200 = l_1;
-                uint _e203 = _group_0_binding_0_cs.levels;
-                if ((_e200 < _e203)) {
-                } else {
-                    break;
-                }
-                {
-                    uint _e206 = l_1;
-                    GridFrame f_4 = _group_0_binding_3_cs[_e206];
-                    uint cells_2 = ((f_4.nx * f_4.ny) * f_4.nz);
-                    uint _e216 = _group_0_binding_0_cs.least;
-                    uint _e217 = bsh_grid_budget(leaves_1, cells_2, _e216);
-                    uint _e220 = _group_0_binding_0_cs.capacity;
-                    uint budget = min(_e217, _e220);
-                    uint _e225 = l_1;
-                    uint at_1 = ((h_1 + 16u) + (2u * _e225));
-                    uint _e228 = chosen;
-                    uint _e231 = _group_0_binding_0_cs.levels;
-                    if ((_e228 == _e231)) {
-                        uint _e239 = atomicOr(_group_0_binding_4_cs[(at_1 + 1u)], 0u);
-                        local = (_e239 == 0u);
-                    } else {
-                        local = false;
-                    }
-                    bool _e243 = local;
-                    if (_e243) {
-                        uint _e248 = atomicOr(_group_0_binding_4_cs[at_1], 0u);
-                        local_1 = (_e248 <= budget);
-                    } else {
-                        local_1 = false;
-                    }
-                    bool _e251 = local_1;
-                    if (_e251) {
-                        uint _e252 = l_1;
-                        chosen = _e252;
-                    }
-                    atomicExchange(_group_0_binding_4_cs[at_1], 0u);
-                    atomicExchange(_group_0_binding_4_cs[(at_1 + 1u)], 0u);
-                }
-            }
-            atomicExchange(_group_0_binding_4_cs[(h_1 + 13u)], 0u);
-            uint _e270 = chosen;
-            uint _e273 = _group_0_binding_0_cs.levels;
-            if ((_e270 < _e273)) {
-                uint _e276 = chosen;
-                GridFrame _e278 = _group_0_binding_3_cs[_e276];
-                f = _e278;
-            }
-            float _e283 = f.lo.x;
-            atomicExchange(_group_0_binding_4_cs[h_1], floatBitsToUint(_e283));
-            float _e291 = f.lo.y;
-            atomicExchange(_group_0_binding_4_cs[(h_1 + 1u)], floatBitsToUint(_e291));
-            float _e299 = f.lo.z;
-            atomicExchange(_group_0_binding_4_cs[(h_1 + 2u)], floatBitsToUint(_e299));
-            uint _e306 = f.nx;
-            atomicExchange(_group_0_binding_4_cs[(h_1 + 3u)], _e306);
-            float _e313 = f.hi.x;
-            atomicExchange(_group_0_binding_4_cs[(h_1 + 4u)], floatBitsToUint(_e313));
-            float _e321 = f.hi.y;
-            atomicExchange(_group_0_binding_4_cs[(h_1 + 5u)], floatBitsToUint(_e321));
-            float _e329 = f.hi.z;
-            atomicExchange(_group_0_binding_4_cs[(h_1 + 6u)], floatBitsToUint(_e329));
-            uint _e336 = f.ny;
-            atomicExchange(_group_0_binding_4_cs[(h_1 + 7u)], _e336);
-            float _e343 = f.inv.x;
-            atomicExchange(_group_0_binding_4_cs[(h_1 + 8u)], floatBitsToUint(_e343));
-            float _e351 = f.inv.y;
-            atomicExchange(_group_0_binding_4_cs[(h_1 + 9u)], floatBitsToUint(_e351));
-            float _e359 = f.inv.z;
-            atomicExchange(_group_0_binding_4_cs[(h_1 + 10u)], floatBitsToUint(_e359));
-            uint _e366 = f.nz;
-            atomicExchange(_group_0_binding_4_cs[(h_1 + 11u)], _e366);
-            float _e373 = _group_0_binding_0_cs.reach;
-            atomicExchange(_group_0_binding_4_cs[(h_1 + 12u)], floatBitsToUint(_e373));
+            break;
+        }
+        case 3u: {
+            scan_starts(g_5, li);
             return;
         }
-        case 2u:
-        case 4u: {
-            uint _e377 = _group_0_binding_0_cs.count;
-            if ((i_2 >= _e377)) {
-                return;
-            }
-            GridFrame _e379 = grid_frame(h_1);
-            uint _e380 = grid_leaf(i_2);
-            if (!((_e379.nx == 0u))) {
-                local_2 = (_e380 == BSH_NONE);
-            } else {
-                local_2 = true;
-            }
-            bool _e390 = local_2;
-            if (_e390) {
-                return;
-            }
-            BshNode leaf_1 = _group_0_binding_1_cs[_e380];
-            float _e396 = _group_0_binding_0_cs.reach;
-            float _e397 = bsh_grid_radius(leaf_1, _e396);
-            uvec3 _e399 = bsh_grid_first(_e379, leaf_1.center, _e397);
-            uvec3 _e401 = bsh_grid_last(_e379, leaf_1.center, _e397);
-            z = _e399.z;
-            bool loop_init_10 = true;
-            while(true) {
-                if (!loop_init_10) {
-                    uint _e448 = z;
-                    z = (_e448 + 1u);
-                }
-                loop_init_10 = false;
-                uint _e404 = z;
-                if ((_e404 <= _e401.z)) {
-                } else {
-                    break;
-                }
-                {
-                    y = _e399.y;
-                    bool loop_init_11 = true;
-                    while(true) {
-                        if (!loop_init_11) {
-                            uint _e445 = y;
-                            y = (_e445 + 1u);
-                        }
-                        loop_init_11 = false;
-                        uint _e409 = y;
-                        if ((_e409 <= _e401.y)) {
-                        } else {
-                            break;
-                        }
-                        {
-                            x = _e399.x;
-                            bool loop_init_12 = true;
-                            while(true) {
-                                if (!loop_init_12) {
-                                    uint _e442 = x;
-                                    x = (_e442 + 1u);
-                                }
-                                loop_init_12 = false;
-                                uint _e414 = x;
-                                if ((_e414 <= _e401.x)) {
-                                } else {
-                                    break;
-                                }
-                                {
-                                    uint _e417 = z;
-                                    uint _e420 = y;
-                                    uint _e424 = x;
-                                    uint c_5 = ((((_e417 * _e379.ny) + _e420) * _e379.nx) + _e424);
-                                    uint _e429 = _group_0_binding_0_cs.fill;
-                                    uint _e433 = atomicAdd(_group_0_binding_5_cs[(_e429 + c_5)], 1u);
-                                    uint _e436 = _group_0_binding_0_cs.stage;
-                                    if ((_e436 == 4u)) {
-                                        _group_0_binding_6_cs[_e433] = i_2;
-                                    }
-                                }
-                            }
-                        }
-                    }
-                }
-            }
+        case 5u: {
+            sort_cells(g_5, (((wid.y * groups.x) + wid.x) * 64u), li);
             return;
         }
         default: {
+            uint _e24 = _group_0_binding_0_cs.stage;
+            fill_cells(g_5, gid.x, (_e24 == 4u));
             return;
         }
     }

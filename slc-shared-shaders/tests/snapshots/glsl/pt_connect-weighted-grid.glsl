@@ -110,7 +110,9 @@ const uint LIGHT_VPL = 4u;
 const uint NO_LIGHT = 4294967295u;
 const uint GRID_HEADER = 32u;
 const uint GRID_LEVELS_MAX = 8u;
-const uint GRID_SORT_MAX = 1536u;
+const uint GRIDS_MAX = 3u;
+const uint GRID_SORT_MOVES = 1024u;
+const uint GRID_SORT_MAX = 1024u;
 const uint COUNT_TILES = 0u;
 const uint COUNT_GROUP_TESTS = 1u;
 const uint COUNT_CLUSTER_TESTS = 2u;
@@ -1527,7 +1529,7 @@ float grid_reach(uint h_2) {
 BshCursor bsh_cursor(vec3 x_14, vec3 r_7, vec4 rl_6) {
     BshCursor c_9 = BshCursor(0u, 0u, 0u, vec2(0.0));
     uint h_3 = 0u;
-    uint g = 0u;
+    uint g = 1u;
     bool local_35 = false;
     bool local_36 = false;
     bool local_37 = false;
@@ -1544,7 +1546,7 @@ BshCursor bsh_cursor(vec3 x_14, vec3 r_7, vec4 rl_6) {
         }
         loop_init_1 = false;
         uint _e18 = g;
-        if ((_e18 < 2u)) {
+        if ((_e18 < GRIDS_MAX)) {
             uint _e24 = h_3;
             float _e25 = grid_reach(_e24);
             local_35 = (rl_6.w > _e25);

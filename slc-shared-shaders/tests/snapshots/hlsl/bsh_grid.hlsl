@@ -1,5 +1,11 @@
-struct GridParams {
+struct GridStage {
     uint stage;
+    uint pad0_;
+    uint pad1_;
+    uint pad2_;
+};
+
+struct GridParams {
     uint count;
     uint levels;
     uint capacity;
@@ -9,8 +15,7 @@ struct GridParams {
     uint fill;
     uint entries;
     uint least;
-    uint pad1_;
-    uint pad2_;
+    uint moves;
 };
 
 struct BshNode {
@@ -39,7 +44,9 @@ static const uint LIGHT_VPL = 4u;
 static const uint NO_LIGHT = 4294967295u;
 static const uint GRID_HEADER = 32u;
 static const uint GRID_LEVELS_MAX = 8u;
-static const uint GRID_SORT_MAX = 1536u;
+static const uint GRIDS_MAX = 3u;
+static const uint GRID_SORT_MOVES = 1024u;
+static const uint GRID_SORT_MAX = 1024u;
 static const uint COUNT_TILES = 0u;
 static const uint COUNT_GROUP_TESTS = 1u;
 static const uint COUNT_CLUSTER_TESTS = 2u;
@@ -99,24 +106,26 @@ static const float TEMPORAL_MIN_WEIGHT = 0.01;
 static const uint GRID_ENTRIES_PER_LIGHT = 8u;
 static const float LOBE_CONE_PAD = 1.001;
 
-cbuffer params : register(b0) { GridParams params; }
+cbuffer params : register(b0) { GridStage params; }
 ByteAddressBuffer bsh_nodes : register(t1);
 ByteAddressBuffer grid_leaves : register(t2);
 ByteAddressBuffer grid_levels : register(t3);
 RWByteAddressBuffer grid : register(u4);
 RWByteAddressBuffer grid_fill : register(u5);
 RWByteAddressBuffer grid_entries : register(u6);
+ByteAddressBuffer grids : register(t7);
 groupshared uint wg_sums[64];
-groupshared uint wg_cell[1536];
-groupshared uint2 wg_span;
+groupshared uint2 wg_big[64];
+groupshared uint wg_bigs;
+groupshared uint wg_cell[1024];
 
 uint naga_f2u32(float value) {
     return uint(clamp(value, 0.0, 4294967000.0));
 }
 
-uint to_u32_(float x_1)
+uint to_u32_(float x)
 {
-    return naga_f2u32(x_1);
+    return naga_f2u32(x);
 }
 
 uint add_wrap_u32_(uint a, uint b)
@@ -149,9 +158,9 @@ uint bsh_grid_budget(uint leaves, uint cells, uint least)
     if ((leaves > 536870911u)) {
         return 4294967295u;
     }
-    uint e = (leaves * GRID_ENTRIES_PER_LIGHT);
-    const uint _e8 = add_wrap_u32_(e, cells);
-    return max(((_e8 < e) ? 4294967295u : _e8), least);
+    uint e_1 = (leaves * GRID_ENTRIES_PER_LIGHT);
+    const uint _e8 = add_wrap_u32_(e_1, cells);
+    return max(((_e8 < e_1) ? 4294967295u : _e8), least);
 }
 
 float bsh_grid_reach(BshNode node_2, float w_1)
@@ -184,19 +193,19 @@ float bsh_grid_radius(BshNode node_3, float w_2)
     return _e3;
 }
 
-uint3 bsh_grid_first(GridFrame f_1, float3 c_2, float r)
+uint3 bsh_grid_first(GridFrame f, float3 c, float r)
 {
-    const uint _e10 = bsh_grid_axis((c_2.x - r), f_1.lo.x, f_1.inv.x, f_1.nx);
-    const uint _e18 = bsh_grid_axis((c_2.y - r), f_1.lo.y, f_1.inv.y, f_1.ny);
-    const uint _e26 = bsh_grid_axis((c_2.z - r), f_1.lo.z, f_1.inv.z, f_1.nz);
+    const uint _e10 = bsh_grid_axis((c.x - r), f.lo.x, f.inv.x, f.nx);
+    const uint _e18 = bsh_grid_axis((c.y - r), f.lo.y, f.inv.y, f.ny);
+    const uint _e26 = bsh_grid_axis((c.z - r), f.lo.z, f.inv.z, f.nz);
     return uint3(_e10, _e18, _e26);
 }
 
-uint3 bsh_grid_last(GridFrame f_2, float3 c_3, float r_1)
+uint3 bsh_grid_last(GridFrame f_1, float3 c_1, float r_1)
 {
-    const uint _e10 = bsh_grid_axis((c_3.x + r_1), f_2.lo.x, f_2.inv.x, f_2.nx);
-    const uint _e18 = bsh_grid_axis((c_3.y + r_1), f_2.lo.y, f_2.inv.y, f_2.ny);
-    const uint _e26 = bsh_grid_axis((c_3.z + r_1), f_2.lo.z, f_2.inv.z, f_2.nz);
+    const uint _e10 = bsh_grid_axis((c_1.x + r_1), f_1.lo.x, f_1.inv.x, f_1.nx);
+    const uint _e18 = bsh_grid_axis((c_1.y + r_1), f_1.lo.y, f_1.inv.y, f_1.ny);
+    const uint _e26 = bsh_grid_axis((c_1.z + r_1), f_1.lo.z, f_1.inv.z, f_1.nz);
     return uint3(_e10, _e18, _e26);
 }
 
@@ -208,27 +217,27 @@ uint grid_word(uint i)
 
 GridFrame grid_frame(uint h)
 {
-    GridFrame f_3 = (GridFrame)0;
+    GridFrame f_2 = (GridFrame)0;
 
     const uint _e3 = grid_word(h);
     const uint _e7 = grid_word((h + 1u));
     const uint _e11 = grid_word((h + 2u));
-    f_3.lo = float3(asfloat(_e3), asfloat(_e7), asfloat(_e11));
+    f_2.lo = float3(asfloat(_e3), asfloat(_e7), asfloat(_e11));
     const uint _e17 = grid_word((h + 3u));
-    f_3.nx = _e17;
+    f_2.nx = _e17;
     const uint _e21 = grid_word((h + 4u));
     const uint _e25 = grid_word((h + 5u));
     const uint _e29 = grid_word((h + 6u));
-    f_3.hi = float3(asfloat(_e21), asfloat(_e25), asfloat(_e29));
+    f_2.hi = float3(asfloat(_e21), asfloat(_e25), asfloat(_e29));
     const uint _e35 = grid_word((h + 7u));
-    f_3.ny = _e35;
+    f_2.ny = _e35;
     const uint _e39 = grid_word((h + 8u));
     const uint _e43 = grid_word((h + 9u));
     const uint _e47 = grid_word((h + 10u));
-    f_3.inv = float3(asfloat(_e39), asfloat(_e43), asfloat(_e47));
+    f_2.inv = float3(asfloat(_e39), asfloat(_e43), asfloat(_e47));
     const uint _e53 = grid_word((h + 11u));
-    f_3.nz = _e53;
-    GridFrame _e54 = f_3;
+    f_2.nz = _e53;
+    GridFrame _e54 = f_2;
     const GridFrame gridframe = _e54;
     return gridframe;
 }
@@ -243,195 +252,340 @@ uint grid_leaf(uint i_1)
     return node_4;
 }
 
-void sort_cell(uint cell, uint li_1)
+uint cell_key(bool big, uint a_1, uint j)
 {
-    uint2 span = (0u).xx;
-    uint s = (uint)0;
-    uint c_4 = (uint)0;
-    bool local_3 = (bool)0;
-    uint s_1 = (uint)0;
-    uint j_1 = (uint)0;
-    uint j_2 = (uint)0;
-    uint below = (uint)0;
-    uint m = (uint)0;
+    if (big) {
+        uint _e6 = asuint(grid_entries.Load((a_1 + j)*4));
+        return _e6;
+    }
+    uint _e9 = wg_cell[min(uint(j), 1023u)];
+    return _e9;
+}
 
-    uint _e4 = params.header;
-    uint starts = (_e4 + GRID_HEADER);
-    if ((li_1 == 0u)) {
-        uint _e11 = params.header;
-        const GridFrame _e12 = grid_frame(_e11);
-        if ((cell < ((_e12.nx * _e12.ny) * _e12.nz))) {
-            uint _e25; grid.InterlockedOr((starts + cell)*4, 0, _e25);
-            uint _e31; grid.InterlockedOr(((starts + cell) + 1u)*4, 0, _e31);
-            span = uint2(_e25, _e31);
-            uint _e36 = params.fill;
-            { uint dummy = 0; grid_fill.InterlockedExchange((_e36 + cell)*4, 0u, dummy); }
+void set_cell_key(bool big_1, uint a_2, uint j_1, uint v_1)
+{
+    if (big_1) {
+        grid_entries.Store((a_2 + j_1)*4, asuint(v_1));
+        return;
+    } else {
+        wg_cell[min(uint(j_1), 1023u)] = v_1;
+        return;
+    }
+}
+
+void sort_together(uint b_1, uint li_1)
+{
+    uint j_2 = (uint)0;
+    uint p = 1u;
+    bool local = (bool)0;
+    uint k = 2u;
+    uint h_1 = (uint)0;
+    uint t = (uint)0;
+    uint j_3 = (uint)0;
+
+    GroupMemoryBarrierWithGroupSync();
+    uint2 _e4 = wg_big[min(uint(b_1), 63u)];
+    GroupMemoryBarrierWithGroupSync();
+    uint a_3 = _e4.x;
+    uint n_1 = (_e4.y - _e4.x);
+    bool big_2 = (n_1 > GRID_SORT_MAX);
+    if (!(big_2)) {
+        j_2 = li_1;
+        uint2 loop_bound = uint2(4294967295u, 4294967295u);
+        bool loop_init = true;
+        while(true) {
+            if (all(loop_bound == uint2(0u, 0u))) { break; }
+            loop_bound -= uint2(loop_bound.y == 0u, 1u);
+            if (!loop_init) {
+                uint _e23 = j_2;
+                j_2 = (_e23 + 64u);
+            }
+            loop_init = false;
+            uint _e13 = j_2;
+            if ((_e13 < n_1)) {
+            } else {
+                break;
+            }
+            {
+                uint _e16 = j_2;
+                uint _e19 = j_2;
+                uint _e22 = asuint(grid_entries.Load((a_3 + _e19)*4));
+                wg_cell[min(uint(_e16), 1023u)] = _e22;
+            }
         }
-        uint2 _e41 = span;
-        wg_span = _e41;
+    }
+    uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
+    while(true) {
+        if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
+        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+        uint _e28 = p;
+        if ((_e28 < n_1)) {
+            uint _e32 = p;
+            local = (_e32 < 2147483648u);
+        } else {
+            local = false;
+        }
+        bool _e36 = local;
+        if (_e36) {
+        } else {
+            break;
+        }
+        {
+            uint _e37 = p;
+            p = (_e37 << 1u);
+        }
     }
     GroupMemoryBarrierWithGroupSync();
-    uint2 _e43 = wg_span;
-    GroupMemoryBarrierWithGroupSync();
-    uint a_1 = _e43.x;
-    uint n_1 = (_e43.y - _e43.x);
-    if ((n_1 > GRID_SORT_MAX)) {
-        if ((li_1 == 0u)) {
-            s = (a_1 + 1u);
-            uint2 loop_bound = uint2(4294967295u, 4294967295u);
-            bool loop_init = true;
+    uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
+    bool loop_init_1 = true;
+    while(true) {
+        if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
+        loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
+        if (!loop_init_1) {
+            uint _e94 = k;
+            k = (_e94 << 1u);
+        }
+        loop_init_1 = false;
+        uint _e42 = k;
+        uint _e43 = p;
+        if ((_e42 <= _e43)) {
+        } else {
+            break;
+        }
+        {
+            uint _e45 = k;
+            h_1 = (_e45 >> 1u);
+            uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
+            bool loop_init_2 = true;
             while(true) {
-                if (all(loop_bound == uint2(0u, 0u))) { break; }
-                loop_bound -= uint2(loop_bound.y == 0u, 1u);
-                if (!loop_init) {
-                    uint _e93 = s;
-                    s = (_e93 + 1u);
+                if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
+                loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+                if (!loop_init_2) {
+                    uint _e91 = h_1;
+                    h_1 = (_e91 >> 1u);
                 }
-                loop_init = false;
-                uint _e55 = s;
-                if ((_e55 < (a_1 + n_1))) {
+                loop_init_2 = false;
+                uint _e49 = h_1;
+                if ((_e49 > 0u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e59 = s;
-                    uint v_1 = asuint(grid_entries.Load(_e59*4));
-                    uint _e62 = s;
-                    c_4 = _e62;
-                    uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
+                    t = li_1;
+                    uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
+                    bool loop_init_3 = true;
                     while(true) {
-                        if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
-                        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
-                        uint _e64 = c_4;
-                        if ((_e64 > a_1)) {
-                            uint _e69 = c_4;
-                            uint _e73 = asuint(grid_entries.Load((_e69 - 1u)*4));
-                            local_3 = (_e73 > v_1);
-                        } else {
-                            local_3 = false;
+                        if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
+                        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+                        if (!loop_init_3) {
+                            uint _e88 = t;
+                            t = (_e88 + 64u);
                         }
-                        bool _e76 = local_3;
-                        if (_e76) {
+                        loop_init_3 = false;
+                        uint _e53 = t;
+                        uint _e54 = p;
+                        if ((_e53 < (_e54 >> 1u))) {
                         } else {
                             break;
                         }
                         {
-                            uint _e78 = c_4;
-                            uint _e81 = c_4;
-                            uint _e85 = asuint(grid_entries.Load((_e81 - 1u)*4));
-                            grid_entries.Store(_e78*4, asuint(_e85));
-                            uint _e86 = c_4;
-                            c_4 = (_e86 - 1u);
+                            uint _e58 = t;
+                            uint _e59 = h_1;
+                            uint _e66 = t;
+                            uint _e67 = h_1;
+                            uint i_4 = (((_e58 & ~((_e59 - 1u))) << 1u) | (_e66 & (_e67 - 1u)));
+                            uint _e72 = h_1;
+                            uint _e74 = k;
+                            uint _e78 = h_1;
+                            uint _e79 = k;
+                            uint o = ((_e78 == (_e79 >> 1u)) ? (i_4 ^ (_e74 - 1u)) : (i_4 | _e72));
+                            if ((o < n_1)) {
+                                const uint _e85 = cell_key(big_2, a_3, i_4);
+                                const uint _e86 = cell_key(big_2, a_3, o);
+                                if ((_e86 < _e85)) {
+                                    set_cell_key(big_2, a_3, i_4, _e86);
+                                    set_cell_key(big_2, a_3, o, _e85);
+                                }
+                            }
                         }
                     }
-                    uint _e90 = c_4;
-                    grid_entries.Store(_e90*4, asuint(v_1));
-                }
-            }
-            s_1 = a_1;
-            uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
-            bool loop_init_1 = true;
-            while(true) {
-                if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
-                loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
-                if (!loop_init_1) {
-                    uint _e110 = s_1;
-                    s_1 = (_e110 + 1u);
-                }
-                loop_init_1 = false;
-                uint _e96 = s_1;
-                if ((_e96 < (a_1 + n_1))) {
-                } else {
-                    break;
-                }
-                {
-                    uint _e100 = s_1;
-                    uint _e104 = s_1;
-                    uint _e106 = asuint(grid_entries.Load(_e104*4));
-                    uint _e108 = asuint(grid_leaves.Load(_e106*4));
-                    grid_entries.Store(_e100*4, asuint(_e108));
+                    GroupMemoryBarrierWithGroupSync();
+                    DeviceMemoryBarrierWithGroupSync();
                 }
             }
         }
-        return;
     }
-    j_1 = li_1;
-    uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
-    bool loop_init_2 = true;
+    j_3 = li_1;
+    uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
+    bool loop_init_4 = true;
     while(true) {
-        if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
-        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-        if (!loop_init_2) {
-            uint _e123 = j_1;
-            j_1 = (_e123 + 64u);
+        if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
+        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+        if (!loop_init_4) {
+            uint _e109 = j_3;
+            j_3 = (_e109 + 64u);
         }
-        loop_init_2 = false;
-        uint _e113 = j_1;
-        if ((_e113 < n_1)) {
+        loop_init_4 = false;
+        uint _e98 = j_3;
+        if ((_e98 < n_1)) {
         } else {
             break;
         }
         {
-            uint _e116 = j_1;
-            uint _e119 = j_1;
-            uint _e122 = asuint(grid_entries.Load((a_1 + _e119)*4));
-            wg_cell[min(uint(_e116), 1535u)] = _e122;
+            uint _e101 = j_3;
+            uint _e105 = j_3;
+            const uint _e106 = cell_key(big_2, a_3, _e105);
+            uint _e108 = asuint(grid_leaves.Load(_e106*4));
+            grid_entries.Store((a_3 + _e101)*4, asuint(_e108));
         }
     }
     GroupMemoryBarrierWithGroupSync();
-    j_2 = li_1;
-    uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
-    bool loop_init_3 = true;
+    return;
+}
+
+void sort_cells(GridParams g, uint first, uint li_2)
+{
+    uint2 span = (0u).xx;
+    uint s = (uint)0;
+    uint moves = 0u;
+    bool local_1 = (bool)0;
+    uint c_2 = (uint)0;
+    bool local_2 = (bool)0;
+    uint e = (uint)0;
+    uint b_2 = 0u;
+
+    uint starts = (g.header + GRID_HEADER);
+    const GridFrame _e7 = grid_frame(g.header);
+    uint cell = (first + li_2);
+    if ((cell < ((_e7.nx * _e7.ny) * _e7.nz))) {
+        uint _e21; grid.InterlockedOr((starts + cell)*4, 0, _e21);
+        uint _e27; grid.InterlockedOr(((starts + cell) + 1u)*4, 0, _e27);
+        span = uint2(_e21, _e27);
+        { uint dummy = 0; grid_fill.InterlockedExchange((g.fill + cell)*4, 0u, dummy); }
+    }
+    if ((li_2 == 0u)) {
+        { uint dummy_1 = 0; InterlockedExchange(wg_bigs, 0u, dummy_1); }
+    }
+    GroupMemoryBarrierWithGroupSync();
+    uint _e39 = span.x;
+    s = (_e39 + 1u);
+    uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
     while(true) {
-        if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
-        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
-        if (!loop_init_3) {
-            uint _e159 = j_2;
-            j_2 = (_e159 + 64u);
+        if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
+        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+        uint _e45 = s;
+        uint _e47 = span.y;
+        if ((_e45 < _e47)) {
+            uint _e51 = moves;
+            local_1 = (_e51 < g.moves);
+        } else {
+            local_1 = false;
         }
-        loop_init_3 = false;
-        uint _e127 = j_2;
-        if ((_e127 < n_1)) {
+        bool _e55 = local_1;
+        if (_e55) {
         } else {
             break;
         }
         {
-            uint _e130 = j_2;
-            uint v_2 = wg_cell[min(uint(_e130), 1535u)];
-            below = 0u;
-            m = 0u;
-            uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
-            bool loop_init_4 = true;
+            uint _e57 = s;
+            uint v_2 = asuint(grid_entries.Load(_e57*4));
+            uint _e60 = s;
+            c_2 = _e60;
+            uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
             while(true) {
-                if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
-                loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
-                if (!loop_init_4) {
-                    uint _e150 = m;
-                    m = (_e150 + 1u);
+                if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
+                loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+                uint _e62 = c_2;
+                uint _e64 = span.x;
+                if ((_e62 > _e64)) {
+                    uint _e69 = c_2;
+                    uint _e73 = asuint(grid_entries.Load((_e69 - 1u)*4));
+                    local_2 = (_e73 > v_2);
+                } else {
+                    local_2 = false;
                 }
-                loop_init_4 = false;
-                uint _e137 = m;
-                if ((_e137 < n_1)) {
+                bool _e76 = local_2;
+                if (_e76) {
                 } else {
                     break;
                 }
                 {
-                    uint _e139 = below;
-                    uint _e143 = m;
-                    uint _e145 = wg_cell[min(uint(_e143), 1535u)];
-                    below = (_e139 + ((_e145 < v_2) ? 1u : 0u));
+                    uint _e78 = c_2;
+                    uint _e81 = c_2;
+                    uint _e85 = asuint(grid_entries.Load((_e81 - 1u)*4));
+                    grid_entries.Store(_e78*4, asuint(_e85));
+                    uint _e86 = c_2;
+                    c_2 = (_e86 - 1u);
                 }
             }
-            uint _e153 = below;
-            uint _e158 = asuint(grid_leaves.Load(v_2*4));
-            grid_entries.Store((a_1 + _e153)*4, asuint(_e158));
+            uint _e90 = c_2;
+            grid_entries.Store(_e90*4, asuint(v_2));
+            uint _e92 = moves;
+            uint _e93 = s;
+            uint _e94 = c_2;
+            moves = (_e92 + (_e93 - _e94));
+            uint _e97 = s;
+            s = (_e97 + 1u);
+        }
+    }
+    uint _e100 = s;
+    uint _e102 = span.y;
+    if ((_e100 < _e102)) {
+        uint _e107; InterlockedAdd(wg_bigs, 1u, _e107);
+        uint2 _e109 = span;
+        wg_big[min(uint(_e107), 63u)] = _e109;
+    } else {
+        uint _e111 = span.x;
+        e = _e111;
+        uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
+        bool loop_init_5 = true;
+        while(true) {
+            if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
+            loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
+            if (!loop_init_5) {
+                uint _e128 = e;
+                e = (_e128 + 1u);
+            }
+            loop_init_5 = false;
+            uint _e113 = e;
+            uint _e115 = span.y;
+            if ((_e113 < _e115)) {
+            } else {
+                break;
+            }
+            {
+                uint _e118 = e;
+                uint _e122 = e;
+                uint _e124 = asuint(grid_entries.Load(_e122*4));
+                uint _e126 = asuint(grid_leaves.Load(_e124*4));
+                grid_entries.Store(_e118*4, asuint(_e126));
+            }
+        }
+    }
+    GroupMemoryBarrierWithGroupSync();
+    uint _e131 = wg_bigs;
+    GroupMemoryBarrierWithGroupSync();
+    uint2 loop_bound_9 = uint2(4294967295u, 4294967295u);
+    bool loop_init_6 = true;
+    while(true) {
+        if (all(loop_bound_9 == uint2(0u, 0u))) { break; }
+        loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
+        if (!loop_init_6) {
+            uint _e138 = b_2;
+            b_2 = (_e138 + 1u);
+        }
+        loop_init_6 = false;
+        uint _e134 = b_2;
+        if ((_e134 < _e131)) {
+        } else {
+            break;
+        }
+        {
+            uint _e136 = b_2;
+            sort_together(_e136, li_2);
         }
     }
     return;
-}
-
-uint naga_div(uint lhs, uint rhs) {
-    return lhs / (rhs == 0u ? 1u : rhs);
 }
 
 BshNode ConstructBshNode(float3 arg0, float arg1, uint arg2, uint arg3, uint arg4, float arg5) {
@@ -456,369 +610,398 @@ GridFrame ConstructGridFrame(float3 arg0, uint arg1, float3 arg2, uint arg3, flo
     return ret;
 }
 
-[numthreads(64, 1, 1)]
-void main(uint3 gid : SV_DispatchThreadID, uint3 wid : SV_GroupID, uint3 groups : SV_GroupID, uint li : SV_GroupIndex)
+void count_levels(GridParams g_1, uint i_2)
 {
-    if (li == 0) {
-        wg_sums = (uint[64])0;
-        wg_cell = (uint[1536])0;
-        wg_span = (uint2)0;
-    }
-    GroupMemoryBarrierWithGroupSync();
-    uint sum = 0u;
-    uint c = (uint)0;
-    uint start = (uint)0;
-    uint j = 0u;
-    uint c_1 = (uint)0;
     uint l = 0u;
+
+    if ((i_2 >= g_1.count)) {
+        return;
+    }
+    uint h_2 = g_1.header;
+    const uint _e5 = grid_leaf(i_2);
+    if ((_e5 == BSH_NONE)) {
+        return;
+    }
+    uint _e13; grid.InterlockedAdd((h_2 + 13u)*4, 1u, _e13);
+    BshNode leaf = ConstructBshNode(asfloat(bsh_nodes.Load3(_e5*32+0)), asfloat(bsh_nodes.Load(_e5*32+12)), asuint(bsh_nodes.Load(_e5*32+16)), asuint(bsh_nodes.Load(_e5*32+20)), asuint(bsh_nodes.Load(_e5*32+24)), asfloat(bsh_nodes.Load(_e5*32+28)));
+    const float _e18 = bsh_grid_radius(leaf, g_1.reach);
+    uint2 loop_bound_10 = uint2(4294967295u, 4294967295u);
+    bool loop_init_7 = true;
+    while(true) {
+        if (all(loop_bound_10 == uint2(0u, 0u))) { break; }
+        loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
+        if (!loop_init_7) {
+            uint _e63 = l;
+            l = (_e63 + 1u);
+        }
+        loop_init_7 = false;
+        uint _e21 = l;
+        if ((_e21 < g_1.levels)) {
+        } else {
+            break;
+        }
+        {
+            uint _e25 = l;
+            GridFrame _e27 = ConstructGridFrame(asfloat(grid_levels.Load3(_e25*48+0)), asuint(grid_levels.Load(_e25*48+12)), asfloat(grid_levels.Load3(_e25*48+16)), asuint(grid_levels.Load(_e25*48+28)), asfloat(grid_levels.Load3(_e25*48+32)), asuint(grid_levels.Load(_e25*48+44)));
+            const uint3 _e29 = bsh_grid_last(_e27, leaf.center_, _e18);
+            uint _e31 = l;
+            GridFrame _e33 = ConstructGridFrame(asfloat(grid_levels.Load3(_e31*48+0)), asuint(grid_levels.Load(_e31*48+12)), asfloat(grid_levels.Load3(_e31*48+16)), asuint(grid_levels.Load(_e31*48+28)), asfloat(grid_levels.Load3(_e31*48+32)), asuint(grid_levels.Load(_e31*48+44)));
+            const uint3 _e35 = bsh_grid_first(_e33, leaf.center_, _e18);
+            uint3 d = ((_e29 - _e35) + (1u).xxx);
+            uint n_2 = ((d.x * d.y) * d.z);
+            uint _e48 = l;
+            uint at = ((h_2 + 16u) + (2u * _e48));
+            uint _e53; grid.InterlockedAdd(at*4, n_2, _e53);
+            if (((_e53 + n_2) < _e53)) {
+                uint _e61; grid.InterlockedAdd((at + 1u)*4, 1u, _e61);
+            }
+        }
+    }
+    return;
+}
+
+void choose_level(GridParams g_2)
+{
     uint chosen = (uint)0;
     uint l_1 = 0u;
-    bool local = (bool)0;
-    bool local_1 = (bool)0;
-    GridFrame f = (GridFrame)0;
-    bool local_2 = (bool)0;
+    bool local_3 = (bool)0;
+    bool local_4 = (bool)0;
+    GridFrame f_3 = (GridFrame)0;
+
+    uint h_3 = g_2.header;
+    uint leaves_1; grid.InterlockedOr((h_3 + 13u)*4, 0, leaves_1);
+    chosen = g_2.levels;
+    uint2 loop_bound_11 = uint2(4294967295u, 4294967295u);
+    bool loop_init_8 = true;
+    while(true) {
+        if (all(loop_bound_11 == uint2(0u, 0u))) { break; }
+        loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
+        if (!loop_init_8) {
+            uint _e65 = l_1;
+            l_1 = (_e65 + 1u);
+        }
+        loop_init_8 = false;
+        uint _e11 = l_1;
+        if ((_e11 < g_2.levels)) {
+        } else {
+            break;
+        }
+        {
+            uint _e15 = l_1;
+            GridFrame f_4 = ConstructGridFrame(asfloat(grid_levels.Load3(_e15*48+0)), asuint(grid_levels.Load(_e15*48+12)), asfloat(grid_levels.Load3(_e15*48+16)), asuint(grid_levels.Load(_e15*48+28)), asfloat(grid_levels.Load3(_e15*48+32)), asuint(grid_levels.Load(_e15*48+44)));
+            uint cells_1 = ((f_4.nx * f_4.ny) * f_4.nz);
+            const uint _e24 = bsh_grid_budget(leaves_1, cells_1, g_2.least);
+            uint budget = min(_e24, g_2.capacity);
+            uint _e30 = l_1;
+            uint at_1 = ((h_3 + 16u) + (2u * _e30));
+            uint _e33 = chosen;
+            if ((_e33 == g_2.levels)) {
+                uint _e42; grid.InterlockedOr((at_1 + 1u)*4, 0, _e42);
+                local_3 = (_e42 == 0u);
+            } else {
+                local_3 = false;
+            }
+            bool _e46 = local_3;
+            if (_e46) {
+                uint _e51; grid.InterlockedOr(at_1*4, 0, _e51);
+                local_4 = (_e51 <= budget);
+            } else {
+                local_4 = false;
+            }
+            bool _e54 = local_4;
+            if (_e54) {
+                uint _e55 = l_1;
+                chosen = _e55;
+            }
+            { uint dummy_2 = 0; grid.InterlockedExchange(at_1*4, 0u, dummy_2); }
+            { uint dummy_3 = 0; grid.InterlockedExchange((at_1 + 1u)*4, 0u, dummy_3); }
+        }
+    }
+    { uint dummy_4 = 0; grid.InterlockedExchange((h_3 + 13u)*4, 0u, dummy_4); }
+    uint _e73 = chosen;
+    if ((_e73 < g_2.levels)) {
+        uint _e77 = chosen;
+        GridFrame _e79 = ConstructGridFrame(asfloat(grid_levels.Load3(_e77*48+0)), asuint(grid_levels.Load(_e77*48+12)), asfloat(grid_levels.Load3(_e77*48+16)), asuint(grid_levels.Load(_e77*48+28)), asfloat(grid_levels.Load3(_e77*48+32)), asuint(grid_levels.Load(_e77*48+44)));
+        f_3 = _e79;
+    }
+    float _e84 = f_3.lo.x;
+    { uint dummy_5 = 0; grid.InterlockedExchange(h_3*4, asuint(_e84), dummy_5); }
+    float _e92 = f_3.lo.y;
+    { uint dummy_6 = 0; grid.InterlockedExchange((h_3 + 1u)*4, asuint(_e92), dummy_6); }
+    float _e100 = f_3.lo.z;
+    { uint dummy_7 = 0; grid.InterlockedExchange((h_3 + 2u)*4, asuint(_e100), dummy_7); }
+    uint _e107 = f_3.nx;
+    { uint dummy_8 = 0; grid.InterlockedExchange((h_3 + 3u)*4, _e107, dummy_8); }
+    float _e114 = f_3.hi.x;
+    { uint dummy_9 = 0; grid.InterlockedExchange((h_3 + 4u)*4, asuint(_e114), dummy_9); }
+    float _e122 = f_3.hi.y;
+    { uint dummy_10 = 0; grid.InterlockedExchange((h_3 + 5u)*4, asuint(_e122), dummy_10); }
+    float _e130 = f_3.hi.z;
+    { uint dummy_11 = 0; grid.InterlockedExchange((h_3 + 6u)*4, asuint(_e130), dummy_11); }
+    uint _e137 = f_3.ny;
+    { uint dummy_12 = 0; grid.InterlockedExchange((h_3 + 7u)*4, _e137, dummy_12); }
+    float _e144 = f_3.inv.x;
+    { uint dummy_13 = 0; grid.InterlockedExchange((h_3 + 8u)*4, asuint(_e144), dummy_13); }
+    float _e152 = f_3.inv.y;
+    { uint dummy_14 = 0; grid.InterlockedExchange((h_3 + 9u)*4, asuint(_e152), dummy_14); }
+    float _e160 = f_3.inv.z;
+    { uint dummy_15 = 0; grid.InterlockedExchange((h_3 + 10u)*4, asuint(_e160), dummy_15); }
+    uint _e167 = f_3.nz;
+    { uint dummy_16 = 0; grid.InterlockedExchange((h_3 + 11u)*4, _e167, dummy_16); }
+    { uint dummy_17 = 0; grid.InterlockedExchange((h_3 + 12u)*4, asuint(g_2.reach), dummy_17); }
+    return;
+}
+
+void fill_cells(GridParams g_3, uint i_3, bool scatter)
+{
+    bool local_5 = (bool)0;
     uint z = (uint)0;
     uint y = (uint)0;
-    uint x = (uint)0;
+    uint x_1 = (uint)0;
 
-    uint _e6 = params.stage;
-    if ((_e6 == 5u)) {
-        sort_cell(((wid.y * groups.x) + wid.x), li);
+    if ((i_3 >= g_3.count)) {
         return;
     }
-    uint i_2 = gid.x;
-    uint h_1 = params.header;
-    uint starts_1 = (h_1 + GRID_HEADER);
-    uint _e22 = params.stage;
-    if ((_e22 == 3u)) {
-        const GridFrame _e25 = grid_frame(h_1);
-        uint cells_1 = ((_e25.nx * _e25.ny) * _e25.nz);
-        uint run = naga_div(((cells_1 + 64u) - 1u), 64u);
-        uint a_2 = min((i_2 * run), cells_1);
-        uint b_1 = min((a_2 + run), cells_1);
-        c = a_2;
-        uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
-        bool loop_init_5 = true;
-        while(true) {
-            if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
-            loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-            if (!loop_init_5) {
-                uint _e57 = c;
-                c = (_e57 + 1u);
-            }
-            loop_init_5 = false;
-            uint _e44 = c;
-            if ((_e44 < b_1)) {
-            } else {
-                break;
-            }
-            {
-                uint _e46 = sum;
-                uint _e50 = params.fill;
-                uint _e51 = c;
-                uint _e54; grid_fill.InterlockedOr((_e50 + _e51)*4, 0, _e54);
-                sum = (_e46 + _e54);
-            }
-        }
-        uint _e61 = sum;
-        wg_sums[min(uint(i_2), 63u)] = _e61;
-        GroupMemoryBarrierWithGroupSync();
-        uint _e64 = params.entries;
-        start = _e64;
-        uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
-        bool loop_init_6 = true;
-        while(true) {
-            if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
-            loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
-            if (!loop_init_6) {
-                uint _e77 = j;
-                j = (_e77 + 1u);
-            }
-            loop_init_6 = false;
-            uint _e68 = j;
-            if ((_e68 < i_2)) {
-            } else {
-                break;
-            }
-            {
-                uint _e70 = start;
-                uint _e72 = j;
-                uint _e74 = wg_sums[min(uint(_e72), 63u)];
-                start = (_e70 + _e74);
-            }
-        }
-        c_1 = a_2;
-        uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
-        bool loop_init_7 = true;
-        while(true) {
-            if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
-            loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
-            if (!loop_init_7) {
-                uint _e106 = c_1;
-                c_1 = (_e106 + 1u);
-            }
-            loop_init_7 = false;
-            uint _e80 = c_1;
-            if ((_e80 < b_1)) {
-            } else {
-                break;
-            }
-            {
-                uint _e85 = params.fill;
-                uint _e86 = c_1;
-                uint n_2; grid_fill.InterlockedOr((_e85 + _e86)*4, 0, n_2);
-                uint _e91 = c_1;
-                uint _e94 = start;
-                { uint dummy_1 = 0; grid.InterlockedExchange((starts_1 + _e91)*4, _e94, dummy_1); }
-                uint _e98 = params.fill;
-                uint _e99 = c_1;
-                uint _e102 = start;
-                { uint dummy_2 = 0; grid_fill.InterlockedExchange((_e98 + _e99)*4, _e102, dummy_2); }
-                uint _e103 = start;
-                start = (_e103 + n_2);
-            }
-        }
-        if (((i_2 + 1u) == 64u)) {
-            uint _e115 = start;
-            { uint dummy_3 = 0; grid.InterlockedExchange((starts_1 + cells_1)*4, _e115, dummy_3); }
-        }
+    const GridFrame _e6 = grid_frame(g_3.header);
+    const uint _e7 = grid_leaf(i_3);
+    if (!((_e6.nx == 0u))) {
+        local_5 = (_e7 == BSH_NONE);
+    } else {
+        local_5 = true;
+    }
+    bool _e17 = local_5;
+    if (_e17) {
         return;
     }
-    uint _e118 = params.stage;
-    switch(_e118) {
-        case 0u: {
-            uint _e121 = params.count;
-            if ((i_2 >= _e121)) {
-                return;
-            }
-            const uint _e123 = grid_leaf(i_2);
-            if ((_e123 == BSH_NONE)) {
-                return;
-            }
-            uint _e131; grid.InterlockedAdd((h_1 + 13u)*4, 1u, _e131);
-            BshNode leaf = ConstructBshNode(asfloat(bsh_nodes.Load3(_e123*32+0)), asfloat(bsh_nodes.Load(_e123*32+12)), asuint(bsh_nodes.Load(_e123*32+16)), asuint(bsh_nodes.Load(_e123*32+20)), asuint(bsh_nodes.Load(_e123*32+24)), asfloat(bsh_nodes.Load(_e123*32+28)));
-            float _e137 = params.reach;
-            const float _e138 = bsh_grid_radius(leaf, _e137);
-            uint2 loop_bound_9 = uint2(4294967295u, 4294967295u);
-            bool loop_init_8 = true;
-            while(true) {
-                if (all(loop_bound_9 == uint2(0u, 0u))) { break; }
-                loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
-                if (!loop_init_8) {
-                    uint _e185 = l;
-                    l = (_e185 + 1u);
-                }
-                loop_init_8 = false;
-                uint _e141 = l;
-                uint _e144 = params.levels;
-                if ((_e141 < _e144)) {
-                } else {
-                    break;
-                }
-                {
-                    uint _e147 = l;
-                    GridFrame _e149 = ConstructGridFrame(asfloat(grid_levels.Load3(_e147*48+0)), asuint(grid_levels.Load(_e147*48+12)), asfloat(grid_levels.Load3(_e147*48+16)), asuint(grid_levels.Load(_e147*48+28)), asfloat(grid_levels.Load3(_e147*48+32)), asuint(grid_levels.Load(_e147*48+44)));
-                    const uint3 _e151 = bsh_grid_last(_e149, leaf.center_, _e138);
-                    uint _e153 = l;
-                    GridFrame _e155 = ConstructGridFrame(asfloat(grid_levels.Load3(_e153*48+0)), asuint(grid_levels.Load(_e153*48+12)), asfloat(grid_levels.Load3(_e153*48+16)), asuint(grid_levels.Load(_e153*48+28)), asfloat(grid_levels.Load3(_e153*48+32)), asuint(grid_levels.Load(_e153*48+44)));
-                    const uint3 _e157 = bsh_grid_first(_e155, leaf.center_, _e138);
-                    uint3 d = ((_e151 - _e157) + (1u).xxx);
-                    uint n_3 = ((d.x * d.y) * d.z);
-                    uint _e170 = l;
-                    uint at = ((h_1 + 16u) + (2u * _e170));
-                    uint _e175; grid.InterlockedAdd(at*4, n_3, _e175);
-                    if (((_e175 + n_3) < _e175)) {
-                        uint _e183; grid.InterlockedAdd((at + 1u)*4, 1u, _e183);
-                    }
-                }
-            }
-            return;
+    BshNode leaf_1 = ConstructBshNode(asfloat(bsh_nodes.Load3(_e7*32+0)), asfloat(bsh_nodes.Load(_e7*32+12)), asuint(bsh_nodes.Load(_e7*32+16)), asuint(bsh_nodes.Load(_e7*32+20)), asuint(bsh_nodes.Load(_e7*32+24)), asfloat(bsh_nodes.Load(_e7*32+28)));
+    const float _e22 = bsh_grid_radius(leaf_1, g_3.reach);
+    const uint3 _e24 = bsh_grid_first(_e6, leaf_1.center_, _e22);
+    const uint3 _e26 = bsh_grid_last(_e6, leaf_1.center_, _e22);
+    z = _e24.z;
+    uint2 loop_bound_12 = uint2(4294967295u, 4294967295u);
+    bool loop_init_9 = true;
+    while(true) {
+        if (all(loop_bound_12 == uint2(0u, 0u))) { break; }
+        loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
+        if (!loop_init_9) {
+            uint _e66 = z;
+            z = (_e66 + 1u);
         }
-        case 1u: {
-            if ((i_2 != 0u)) {
-                return;
-            }
-            uint leaves_1; grid.InterlockedOr((h_1 + 13u)*4, 0, leaves_1);
-            uint _e196 = params.levels;
-            chosen = _e196;
-            uint2 loop_bound_10 = uint2(4294967295u, 4294967295u);
-            bool loop_init_9 = true;
-            while(true) {
-                if (all(loop_bound_10 == uint2(0u, 0u))) { break; }
-                loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
-                if (!loop_init_9) {
-                    uint _e262 = l_1;
-                    l_1 = (_e262 + 1u);
-                }
-                loop_init_9 = false;
-                uint _e200 = l_1;
-                uint _e203 = params.levels;
-                if ((_e200 < _e203)) {
-                } else {
-                    break;
-                }
-                {
-                    uint _e206 = l_1;
-                    GridFrame f_4 = ConstructGridFrame(asfloat(grid_levels.Load3(_e206*48+0)), asuint(grid_levels.Load(_e206*48+12)), asfloat(grid_levels.Load3(_e206*48+16)), asuint(grid_levels.Load(_e206*48+28)), asfloat(grid_levels.Load3(_e206*48+32)), asuint(grid_levels.Load(_e206*48+44)));
-                    uint cells_2 = ((f_4.nx * f_4.ny) * f_4.nz);
-                    uint _e216 = params.least;
-                    const uint _e217 = bsh_grid_budget(leaves_1, cells_2, _e216);
-                    uint _e220 = params.capacity;
-                    uint budget = min(_e217, _e220);
-                    uint _e225 = l_1;
-                    uint at_1 = ((h_1 + 16u) + (2u * _e225));
-                    uint _e228 = chosen;
-                    uint _e231 = params.levels;
-                    if ((_e228 == _e231)) {
-                        uint _e239; grid.InterlockedOr((at_1 + 1u)*4, 0, _e239);
-                        local = (_e239 == 0u);
-                    } else {
-                        local = false;
-                    }
-                    bool _e243 = local;
-                    if (_e243) {
-                        uint _e248; grid.InterlockedOr(at_1*4, 0, _e248);
-                        local_1 = (_e248 <= budget);
-                    } else {
-                        local_1 = false;
-                    }
-                    bool _e251 = local_1;
-                    if (_e251) {
-                        uint _e252 = l_1;
-                        chosen = _e252;
-                    }
-                    { uint dummy_4 = 0; grid.InterlockedExchange(at_1*4, 0u, dummy_4); }
-                    { uint dummy_5 = 0; grid.InterlockedExchange((at_1 + 1u)*4, 0u, dummy_5); }
-                }
-            }
-            { uint dummy_6 = 0; grid.InterlockedExchange((h_1 + 13u)*4, 0u, dummy_6); }
-            uint _e270 = chosen;
-            uint _e273 = params.levels;
-            if ((_e270 < _e273)) {
-                uint _e276 = chosen;
-                GridFrame _e278 = ConstructGridFrame(asfloat(grid_levels.Load3(_e276*48+0)), asuint(grid_levels.Load(_e276*48+12)), asfloat(grid_levels.Load3(_e276*48+16)), asuint(grid_levels.Load(_e276*48+28)), asfloat(grid_levels.Load3(_e276*48+32)), asuint(grid_levels.Load(_e276*48+44)));
-                f = _e278;
-            }
-            float _e283 = f.lo.x;
-            { uint dummy_7 = 0; grid.InterlockedExchange(h_1*4, asuint(_e283), dummy_7); }
-            float _e291 = f.lo.y;
-            { uint dummy_8 = 0; grid.InterlockedExchange((h_1 + 1u)*4, asuint(_e291), dummy_8); }
-            float _e299 = f.lo.z;
-            { uint dummy_9 = 0; grid.InterlockedExchange((h_1 + 2u)*4, asuint(_e299), dummy_9); }
-            uint _e306 = f.nx;
-            { uint dummy_10 = 0; grid.InterlockedExchange((h_1 + 3u)*4, _e306, dummy_10); }
-            float _e313 = f.hi.x;
-            { uint dummy_11 = 0; grid.InterlockedExchange((h_1 + 4u)*4, asuint(_e313), dummy_11); }
-            float _e321 = f.hi.y;
-            { uint dummy_12 = 0; grid.InterlockedExchange((h_1 + 5u)*4, asuint(_e321), dummy_12); }
-            float _e329 = f.hi.z;
-            { uint dummy_13 = 0; grid.InterlockedExchange((h_1 + 6u)*4, asuint(_e329), dummy_13); }
-            uint _e336 = f.ny;
-            { uint dummy_14 = 0; grid.InterlockedExchange((h_1 + 7u)*4, _e336, dummy_14); }
-            float _e343 = f.inv.x;
-            { uint dummy_15 = 0; grid.InterlockedExchange((h_1 + 8u)*4, asuint(_e343), dummy_15); }
-            float _e351 = f.inv.y;
-            { uint dummy_16 = 0; grid.InterlockedExchange((h_1 + 9u)*4, asuint(_e351), dummy_16); }
-            float _e359 = f.inv.z;
-            { uint dummy_17 = 0; grid.InterlockedExchange((h_1 + 10u)*4, asuint(_e359), dummy_17); }
-            uint _e366 = f.nz;
-            { uint dummy_18 = 0; grid.InterlockedExchange((h_1 + 11u)*4, _e366, dummy_18); }
-            float _e373 = params.reach;
-            { uint dummy_19 = 0; grid.InterlockedExchange((h_1 + 12u)*4, asuint(_e373), dummy_19); }
-            return;
+        loop_init_9 = false;
+        uint _e29 = z;
+        if ((_e29 <= _e26.z)) {
+        } else {
+            break;
         }
-        case 2u:
-        case 4u: {
-            uint _e377 = params.count;
-            if ((i_2 >= _e377)) {
-                return;
-            }
-            const GridFrame _e379 = grid_frame(h_1);
-            const uint _e380 = grid_leaf(i_2);
-            if (!((_e379.nx == 0u))) {
-                local_2 = (_e380 == BSH_NONE);
-            } else {
-                local_2 = true;
-            }
-            bool _e390 = local_2;
-            if (_e390) {
-                return;
-            }
-            BshNode leaf_1 = ConstructBshNode(asfloat(bsh_nodes.Load3(_e380*32+0)), asfloat(bsh_nodes.Load(_e380*32+12)), asuint(bsh_nodes.Load(_e380*32+16)), asuint(bsh_nodes.Load(_e380*32+20)), asuint(bsh_nodes.Load(_e380*32+24)), asfloat(bsh_nodes.Load(_e380*32+28)));
-            float _e396 = params.reach;
-            const float _e397 = bsh_grid_radius(leaf_1, _e396);
-            const uint3 _e399 = bsh_grid_first(_e379, leaf_1.center_, _e397);
-            const uint3 _e401 = bsh_grid_last(_e379, leaf_1.center_, _e397);
-            z = _e399.z;
-            uint2 loop_bound_11 = uint2(4294967295u, 4294967295u);
+        {
+            y = _e24.y;
+            uint2 loop_bound_13 = uint2(4294967295u, 4294967295u);
             bool loop_init_10 = true;
             while(true) {
-                if (all(loop_bound_11 == uint2(0u, 0u))) { break; }
-                loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
+                if (all(loop_bound_13 == uint2(0u, 0u))) { break; }
+                loop_bound_13 -= uint2(loop_bound_13.y == 0u, 1u);
                 if (!loop_init_10) {
-                    uint _e448 = z;
-                    z = (_e448 + 1u);
+                    uint _e63 = y;
+                    y = (_e63 + 1u);
                 }
                 loop_init_10 = false;
-                uint _e404 = z;
-                if ((_e404 <= _e401.z)) {
+                uint _e34 = y;
+                if ((_e34 <= _e26.y)) {
                 } else {
                     break;
                 }
                 {
-                    y = _e399.y;
-                    uint2 loop_bound_12 = uint2(4294967295u, 4294967295u);
+                    x_1 = _e24.x;
+                    uint2 loop_bound_14 = uint2(4294967295u, 4294967295u);
                     bool loop_init_11 = true;
                     while(true) {
-                        if (all(loop_bound_12 == uint2(0u, 0u))) { break; }
-                        loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
+                        if (all(loop_bound_14 == uint2(0u, 0u))) { break; }
+                        loop_bound_14 -= uint2(loop_bound_14.y == 0u, 1u);
                         if (!loop_init_11) {
-                            uint _e445 = y;
-                            y = (_e445 + 1u);
+                            uint _e60 = x_1;
+                            x_1 = (_e60 + 1u);
                         }
                         loop_init_11 = false;
-                        uint _e409 = y;
-                        if ((_e409 <= _e401.y)) {
+                        uint _e39 = x_1;
+                        if ((_e39 <= _e26.x)) {
                         } else {
                             break;
                         }
                         {
-                            x = _e399.x;
-                            uint2 loop_bound_13 = uint2(4294967295u, 4294967295u);
-                            bool loop_init_12 = true;
-                            while(true) {
-                                if (all(loop_bound_13 == uint2(0u, 0u))) { break; }
-                                loop_bound_13 -= uint2(loop_bound_13.y == 0u, 1u);
-                                if (!loop_init_12) {
-                                    uint _e442 = x;
-                                    x = (_e442 + 1u);
-                                }
-                                loop_init_12 = false;
-                                uint _e414 = x;
-                                if ((_e414 <= _e401.x)) {
-                                } else {
-                                    break;
-                                }
-                                {
-                                    uint _e417 = z;
-                                    uint _e420 = y;
-                                    uint _e424 = x;
-                                    uint c_5 = ((((_e417 * _e379.ny) + _e420) * _e379.nx) + _e424);
-                                    uint _e429 = params.fill;
-                                    uint _e433; grid_fill.InterlockedAdd((_e429 + c_5)*4, 1u, _e433);
-                                    uint _e436 = params.stage;
-                                    if ((_e436 == 4u)) {
-                                        grid_entries.Store(_e433*4, asuint(i_2));
-                                    }
-                                }
+                            uint _e42 = z;
+                            uint _e45 = y;
+                            uint _e49 = x_1;
+                            uint c_5 = ((((_e42 * _e6.ny) + _e45) * _e6.nx) + _e49);
+                            uint _e56; grid_fill.InterlockedAdd((g_3.fill + c_5)*4, 1u, _e56);
+                            if (scatter) {
+                                grid_entries.Store(_e56*4, asuint(i_3));
                             }
                         }
                     }
                 }
             }
+        }
+    }
+    return;
+}
+
+uint naga_div(uint lhs, uint rhs) {
+    return lhs / (rhs == 0u ? 1u : rhs);
+}
+
+void scan_starts(GridParams g_4, uint li_3)
+{
+    uint sum = 0u;
+    uint c_3 = (uint)0;
+    uint start = (uint)0;
+    uint j_4 = 0u;
+    uint c_4 = (uint)0;
+
+    uint starts_1 = (g_4.header + GRID_HEADER);
+    const GridFrame _e6 = grid_frame(g_4.header);
+    uint cells_2 = ((_e6.nx * _e6.ny) * _e6.nz);
+    uint run = naga_div(((cells_2 + 64u) - 1u), 64u);
+    uint a_4 = min((li_3 * run), cells_2);
+    uint b_3 = min((a_4 + run), cells_2);
+    c_3 = a_4;
+    uint2 loop_bound_15 = uint2(4294967295u, 4294967295u);
+    bool loop_init_12 = true;
+    while(true) {
+        if (all(loop_bound_15 == uint2(0u, 0u))) { break; }
+        loop_bound_15 -= uint2(loop_bound_15.y == 0u, 1u);
+        if (!loop_init_12) {
+            uint _e36 = c_3;
+            c_3 = (_e36 + 1u);
+        }
+        loop_init_12 = false;
+        uint _e25 = c_3;
+        if ((_e25 < b_3)) {
+        } else {
+            break;
+        }
+        {
+            uint _e27 = sum;
+            uint _e30 = c_3;
+            uint _e33; grid_fill.InterlockedOr((g_4.fill + _e30)*4, 0, _e33);
+            sum = (_e27 + _e33);
+        }
+    }
+    uint _e40 = sum;
+    wg_sums[min(uint(li_3), 63u)] = _e40;
+    GroupMemoryBarrierWithGroupSync();
+    start = g_4.entries;
+    uint2 loop_bound_16 = uint2(4294967295u, 4294967295u);
+    bool loop_init_13 = true;
+    while(true) {
+        if (all(loop_bound_16 == uint2(0u, 0u))) { break; }
+        loop_bound_16 -= uint2(loop_bound_16.y == 0u, 1u);
+        if (!loop_init_13) {
+            uint _e54 = j_4;
+            j_4 = (_e54 + 1u);
+        }
+        loop_init_13 = false;
+        uint _e45 = j_4;
+        if ((_e45 < li_3)) {
+        } else {
+            break;
+        }
+        {
+            uint _e47 = start;
+            uint _e49 = j_4;
+            uint _e51 = wg_sums[min(uint(_e49), 63u)];
+            start = (_e47 + _e51);
+        }
+    }
+    c_4 = a_4;
+    uint2 loop_bound_17 = uint2(4294967295u, 4294967295u);
+    bool loop_init_14 = true;
+    while(true) {
+        if (all(loop_bound_17 == uint2(0u, 0u))) { break; }
+        loop_bound_17 -= uint2(loop_bound_17.y == 0u, 1u);
+        if (!loop_init_14) {
+            uint _e79 = c_4;
+            c_4 = (_e79 + 1u);
+        }
+        loop_init_14 = false;
+        uint _e57 = c_4;
+        if ((_e57 < b_3)) {
+        } else {
+            break;
+        }
+        {
+            uint _e61 = c_4;
+            uint n_3; grid_fill.InterlockedOr((g_4.fill + _e61)*4, 0, n_3);
+            uint _e66 = c_4;
+            uint _e69 = start;
+            { uint dummy_18 = 0; grid.InterlockedExchange((starts_1 + _e66)*4, _e69, dummy_18); }
+            uint _e72 = c_4;
+            uint _e75 = start;
+            { uint dummy_19 = 0; grid_fill.InterlockedExchange((g_4.fill + _e72)*4, _e75, dummy_19); }
+            uint _e76 = start;
+            start = (_e76 + n_3);
+        }
+    }
+    if (((li_3 + 1u) == 64u)) {
+        uint _e88 = start;
+        { uint dummy_20 = 0; grid.InterlockedExchange((starts_1 + cells_2)*4, _e88, dummy_20); }
+        return;
+    } else {
+        return;
+    }
+}
+
+GridParams ConstructGridParams(uint arg0, uint arg1, uint arg2, float arg3, uint arg4, uint arg5, uint arg6, uint arg7, uint arg8, uint arg9) {
+    GridParams ret = (GridParams)0;
+    ret.count = arg0;
+    ret.levels = arg1;
+    ret.capacity = arg2;
+    ret.reach = arg3;
+    ret.cells = arg4;
+    ret.header = arg5;
+    ret.fill = arg6;
+    ret.entries = arg7;
+    ret.least = arg8;
+    ret.moves = arg9;
+    return ret;
+}
+
+[numthreads(64, 1, 1)]
+void main(uint3 gid : SV_DispatchThreadID, uint3 wid : SV_GroupID, uint3 groups : SV_GroupID, uint li : SV_GroupIndex)
+{
+    if (li == 0) {
+        wg_sums = (uint[64])0;
+        wg_big = (uint2[64])0;
+        wg_bigs = (uint)0;
+        wg_cell = (uint[1024])0;
+    }
+    GroupMemoryBarrierWithGroupSync();
+    GridParams g_5 = ConstructGridParams(asuint(grids.Load(wid.z*40+0)), asuint(grids.Load(wid.z*40+4)), asuint(grids.Load(wid.z*40+8)), asfloat(grids.Load(wid.z*40+12)), asuint(grids.Load(wid.z*40+16)), asuint(grids.Load(wid.z*40+20)), asuint(grids.Load(wid.z*40+24)), asuint(grids.Load(wid.z*40+28)), asuint(grids.Load(wid.z*40+32)), asuint(grids.Load(wid.z*40+36)));
+    uint _e10 = params.stage;
+    switch(_e10) {
+        case 0u: {
+            count_levels(g_5, gid.x);
+            return;
+        }
+        case 1u: {
+            if ((li == 0u)) {
+                choose_level(g_5);
+                return;
+            } else {
+                return;
+            }
+            break;
+        }
+        case 3u: {
+            scan_starts(g_5, li);
+            return;
+        }
+        case 5u: {
+            sort_cells(g_5, (((wid.y * groups.x) + wid.x) * 64u), li);
             return;
         }
         default: {
+            uint _e24 = params.stage;
+            fill_cells(g_5, gid.x, (_e24 == 4u));
             return;
         }
     }

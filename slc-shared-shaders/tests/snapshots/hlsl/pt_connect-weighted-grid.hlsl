@@ -120,7 +120,9 @@ static const uint LIGHT_VPL = 4u;
 static const uint NO_LIGHT = 4294967295u;
 static const uint GRID_HEADER = 32u;
 static const uint GRID_LEVELS_MAX = 8u;
-static const uint GRID_SORT_MAX = 1536u;
+static const uint GRIDS_MAX = 3u;
+static const uint GRID_SORT_MOVES = 1024u;
+static const uint GRID_SORT_MAX = 1024u;
 static const uint COUNT_TILES = 0u;
 static const uint COUNT_GROUP_TESTS = 1u;
 static const uint COUNT_CLUSTER_TESTS = 2u;
@@ -1715,7 +1717,7 @@ BshCursor bsh_cursor(float3 x_14, float3 r_7, float4 rl_6)
 {
     BshCursor c_9 = (BshCursor)0;
     uint h_3 = 0u;
-    uint g = 0u;
+    uint g = 1u;
     bool local_35 = (bool)0;
     bool local_36 = (bool)0;
     bool local_37 = (bool)0;
@@ -1736,7 +1738,7 @@ BshCursor bsh_cursor(float3 x_14, float3 r_7, float4 rl_6)
         }
         loop_init_1 = false;
         uint _e18 = g;
-        if ((_e18 < 2u)) {
+        if ((_e18 < GRIDS_MAX)) {
             uint _e24 = h_3;
             const float _e25 = grid_reach(_e24);
             local_35 = (rl_6.w > _e25);

@@ -11,10 +11,16 @@ struct _mslBufferSizes {
     uint size4;
     uint size5;
     uint size6;
+    uint size7;
 };
 
-struct GridParams {
+struct GridStage {
     uint stage;
+    uint pad0_;
+    uint pad1_;
+    uint pad2_;
+};
+struct GridParams {
     uint count;
     uint levels;
     uint capacity;
@@ -24,8 +30,7 @@ struct GridParams {
     uint fill;
     uint entries;
     uint least;
-    uint pad1_;
-    uint pad2_;
+    uint moves;
 };
 struct BshNode {
     metal::packed_float3 center;
@@ -47,11 +52,15 @@ struct GridFrame {
 };
 typedef GridFrame type_6[1];
 typedef metal::atomic_uint type_8[1];
-struct type_10 {
+typedef GridParams type_9[1];
+struct type_11 {
     uint inner[64];
 };
-struct type_11 {
-    uint inner[1536];
+struct type_13 {
+    metal::uint2 inner[64];
+};
+struct type_14 {
+    uint inner[1024];
 };
 constant uint LIGHT_POINT = 0u;
 constant uint LIGHT_SPOT = 1u;
@@ -61,7 +70,9 @@ constant uint LIGHT_VPL = 4u;
 constant uint NO_LIGHT = 4294967295u;
 constant uint GRID_HEADER = 32u;
 constant uint GRID_LEVELS_MAX = 8u;
-constant uint GRID_SORT_MAX = 1536u;
+constant uint GRIDS_MAX = 3u;
+constant uint GRID_SORT_MOVES = 1024u;
+constant uint GRID_SORT_MAX = 1024u;
 constant uint COUNT_TILES = 0u;
 constant uint COUNT_GROUP_TESTS = 1u;
 constant uint COUNT_CLUSTER_TESTS = 2u;
@@ -126,9 +137,9 @@ uint naga_f2u32(float value) {
 }
 
 uint to_u32_(
-    float x_1
+    float x
 ) {
-    return naga_f2u32(x_1);
+    return naga_f2u32(x);
 }
 
 uint add_wrap_u32_(
@@ -170,9 +181,9 @@ uint bsh_grid_budget(
     if (leaves > 536870911u) {
         return 4294967295u;
     }
-    uint e = leaves * GRID_ENTRIES_PER_LIGHT;
-    uint _e8 = add_wrap_u32_(e, cells);
-    return metal::max((_e8 < e) ? 4294967295u : _e8, least);
+    uint e_1 = leaves * GRID_ENTRIES_PER_LIGHT;
+    uint _e8 = add_wrap_u32_(e_1, cells);
+    return metal::max((_e8 < e_1) ? 4294967295u : _e8, least);
 }
 
 float bsh_grid_reach(
@@ -215,24 +226,24 @@ float bsh_grid_radius(
 }
 
 metal::uint3 bsh_grid_first(
-    GridFrame f_1,
-    metal::float3 c_2,
+    GridFrame f,
+    metal::float3 c,
     float r
 ) {
-    uint _e10 = bsh_grid_axis(c_2.x - r, f_1.lo[0], f_1.inv[0], f_1.nx);
-    uint _e18 = bsh_grid_axis(c_2.y - r, f_1.lo[1], f_1.inv[1], f_1.ny);
-    uint _e26 = bsh_grid_axis(c_2.z - r, f_1.lo[2], f_1.inv[2], f_1.nz);
+    uint _e10 = bsh_grid_axis(c.x - r, f.lo[0], f.inv[0], f.nx);
+    uint _e18 = bsh_grid_axis(c.y - r, f.lo[1], f.inv[1], f.ny);
+    uint _e26 = bsh_grid_axis(c.z - r, f.lo[2], f.inv[2], f.nz);
     return metal::uint3(_e10, _e18, _e26);
 }
 
 metal::uint3 bsh_grid_last(
-    GridFrame f_2,
-    metal::float3 c_3,
+    GridFrame f_1,
+    metal::float3 c_1,
     float r_1
 ) {
-    uint _e10 = bsh_grid_axis(c_3.x + r_1, f_2.lo[0], f_2.inv[0], f_2.nx);
-    uint _e18 = bsh_grid_axis(c_3.y + r_1, f_2.lo[1], f_2.inv[1], f_2.ny);
-    uint _e26 = bsh_grid_axis(c_3.z + r_1, f_2.lo[2], f_2.inv[2], f_2.nz);
+    uint _e10 = bsh_grid_axis(c_1.x + r_1, f_1.lo[0], f_1.inv[0], f_1.nx);
+    uint _e18 = bsh_grid_axis(c_1.y + r_1, f_1.lo[1], f_1.inv[1], f_1.ny);
+    uint _e26 = bsh_grid_axis(c_1.z + r_1, f_1.lo[2], f_1.inv[2], f_1.nz);
     return metal::uint3(_e10, _e18, _e26);
 }
 
@@ -250,26 +261,26 @@ GridFrame grid_frame(
     device type_8 const& grid,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GridFrame f_3 = {};
+    GridFrame f_2 = {};
     uint _e3 = grid_word(h, grid, _buffer_sizes);
     uint _e7 = grid_word(h + 1u, grid, _buffer_sizes);
     uint _e11 = grid_word(h + 2u, grid, _buffer_sizes);
-    f_3.lo = metal::float3(as_type<float>(_e3), as_type<float>(_e7), as_type<float>(_e11));
+    f_2.lo = metal::float3(as_type<float>(_e3), as_type<float>(_e7), as_type<float>(_e11));
     uint _e17 = grid_word(h + 3u, grid, _buffer_sizes);
-    f_3.nx = _e17;
+    f_2.nx = _e17;
     uint _e21 = grid_word(h + 4u, grid, _buffer_sizes);
     uint _e25 = grid_word(h + 5u, grid, _buffer_sizes);
     uint _e29 = grid_word(h + 6u, grid, _buffer_sizes);
-    f_3.hi = metal::float3(as_type<float>(_e21), as_type<float>(_e25), as_type<float>(_e29));
+    f_2.hi = metal::float3(as_type<float>(_e21), as_type<float>(_e25), as_type<float>(_e29));
     uint _e35 = grid_word(h + 7u, grid, _buffer_sizes);
-    f_3.ny = _e35;
+    f_2.ny = _e35;
     uint _e39 = grid_word(h + 8u, grid, _buffer_sizes);
     uint _e43 = grid_word(h + 9u, grid, _buffer_sizes);
     uint _e47 = grid_word(h + 10u, grid, _buffer_sizes);
-    f_3.inv = metal::float3(as_type<float>(_e39), as_type<float>(_e43), as_type<float>(_e47));
+    f_2.inv = metal::float3(as_type<float>(_e39), as_type<float>(_e43), as_type<float>(_e47));
     uint _e53 = grid_word(h + 11u, grid, _buffer_sizes);
-    f_3.nz = _e53;
-    GridFrame _e54 = f_3;
+    f_2.nz = _e53;
+    GridFrame _e54 = f_2;
     return _e54;
 }
 
@@ -287,205 +298,732 @@ uint grid_leaf(
     return node_4;
 }
 
-void sort_cell(
-    uint cell,
-    uint li_1,
-    constant GridParams& params,
-    device type_5 const& grid_leaves,
-    device type_8 const& grid,
-    device type_8& grid_fill,
-    device type_5& grid_entries,
-    threadgroup type_11& wg_cell,
-    threadgroup metal::uint2& wg_span,
+uint cell_key(
+    bool big,
+    uint a_1,
+    uint j,
+    device type_5 const& grid_entries,
+    threadgroup type_14& wg_cell,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::uint2 span = metal::uint2(0u);
-    uint s = {};
-    uint c_4 = {};
-    bool local_3 = {};
-    uint s_1 = {};
-    uint j_1 = {};
+    if (big) {
+        uint _e6 = grid_entries[a_1 + j];
+        return _e6;
+    }
+    uint _e9 = wg_cell.inner[j];
+    return _e9;
+}
+
+void set_cell_key(
+    bool big_1,
+    uint a_2,
+    uint j_1,
+    uint v_1,
+    device type_5& grid_entries,
+    threadgroup type_14& wg_cell,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    if (big_1) {
+        grid_entries[a_2 + j_1] = v_1;
+        return;
+    } else {
+        wg_cell.inner[j_1] = v_1;
+        return;
+    }
+}
+
+void sort_together(
+    uint b_1,
+    uint li_1,
+    device type_5 const& grid_leaves,
+    device type_5& grid_entries,
+    threadgroup type_13& wg_big,
+    threadgroup type_14& wg_cell,
+    constant _mslBufferSizes& _buffer_sizes
+) {
     uint j_2 = {};
-    uint below = {};
-    uint m = {};
-    uint _e4 = params.header;
-    uint starts = _e4 + GRID_HEADER;
-    if (li_1 == 0u) {
-        uint _e11 = params.header;
-        GridFrame _e12 = grid_frame(_e11, grid, _buffer_sizes);
-        if (cell < ((_e12.nx * _e12.ny) * _e12.nz)) {
-            uint _e25 = metal::atomic_load_explicit(&grid[starts + cell], metal::memory_order_relaxed);
-            uint _e31 = metal::atomic_load_explicit(&grid[(starts + cell) + 1u], metal::memory_order_relaxed);
-            span = metal::uint2(_e25, _e31);
-            uint _e36 = params.fill;
-            metal::atomic_store_explicit(&grid_fill[_e36 + cell], 0u, metal::memory_order_relaxed);
+    uint p = 1u;
+    bool local = {};
+    uint k = 2u;
+    uint h_1 = {};
+    uint t = {};
+    uint j_3 = {};
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    metal::uint2 unnamed = wg_big.inner[b_1];
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    uint a_3 = unnamed.x;
+    uint n_1 = unnamed.y - unnamed.x;
+    bool big_2 = n_1 > GRID_SORT_MAX;
+    if (!(big_2)) {
+        j_2 = li_1;
+        uint2 loop_bound = uint2(4294967295u);
+        bool loop_init = true;
+        while(true) {
+            if (metal::all(loop_bound == uint2(0u))) { break; }
+            loop_bound -= uint2(loop_bound.y == 0u, 1u);
+            if (!loop_init) {
+                uint _e23 = j_2;
+                j_2 = _e23 + 64u;
+            }
+            loop_init = false;
+            uint _e13 = j_2;
+            if (_e13 < n_1) {
+            } else {
+                break;
+            }
+            {
+                uint _e16 = j_2;
+                uint _e19 = j_2;
+                uint _e22 = grid_entries[a_3 + _e19];
+                wg_cell.inner[_e16] = _e22;
+            }
         }
-        metal::uint2 _e41 = span;
-        wg_span = _e41;
+    }
+    uint2 loop_bound_1 = uint2(4294967295u);
+    while(true) {
+        if (metal::all(loop_bound_1 == uint2(0u))) { break; }
+        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+        uint _e28 = p;
+        if (_e28 < n_1) {
+            uint _e32 = p;
+            local = _e32 < 2147483648u;
+        } else {
+            local = false;
+        }
+        bool _e36 = local;
+        if (_e36) {
+        } else {
+            break;
+        }
+        {
+            uint _e37 = p;
+            p = _e37 << 1u;
+        }
     }
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-    metal::uint2 unnamed = wg_span;
-    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-    uint a_1 = unnamed.x;
-    uint n_1 = unnamed.y - unnamed.x;
-    if (n_1 > GRID_SORT_MAX) {
-        if (li_1 == 0u) {
-            s = a_1 + 1u;
-            uint2 loop_bound = uint2(4294967295u);
-            bool loop_init = true;
+    uint2 loop_bound_2 = uint2(4294967295u);
+    bool loop_init_1 = true;
+    while(true) {
+        if (metal::all(loop_bound_2 == uint2(0u))) { break; }
+        loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
+        if (!loop_init_1) {
+            uint _e94 = k;
+            k = _e94 << 1u;
+        }
+        loop_init_1 = false;
+        uint _e42 = k;
+        uint _e43 = p;
+        if (_e42 <= _e43) {
+        } else {
+            break;
+        }
+        {
+            uint _e45 = k;
+            h_1 = _e45 >> 1u;
+            uint2 loop_bound_3 = uint2(4294967295u);
+            bool loop_init_2 = true;
             while(true) {
-                if (metal::all(loop_bound == uint2(0u))) { break; }
-                loop_bound -= uint2(loop_bound.y == 0u, 1u);
-                if (!loop_init) {
-                    uint _e93 = s;
-                    s = _e93 + 1u;
+                if (metal::all(loop_bound_3 == uint2(0u))) { break; }
+                loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+                if (!loop_init_2) {
+                    uint _e91 = h_1;
+                    h_1 = _e91 >> 1u;
                 }
-                loop_init = false;
-                uint _e55 = s;
-                if (_e55 < (a_1 + n_1)) {
+                loop_init_2 = false;
+                uint _e49 = h_1;
+                if (_e49 > 0u) {
                 } else {
                     break;
                 }
                 {
-                    uint _e59 = s;
-                    uint v_1 = grid_entries[_e59];
-                    uint _e62 = s;
-                    c_4 = _e62;
-                    uint2 loop_bound_1 = uint2(4294967295u);
+                    t = li_1;
+                    uint2 loop_bound_4 = uint2(4294967295u);
+                    bool loop_init_3 = true;
                     while(true) {
-                        if (metal::all(loop_bound_1 == uint2(0u))) { break; }
-                        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
-                        uint _e64 = c_4;
-                        if (_e64 > a_1) {
-                            uint _e69 = c_4;
-                            uint _e73 = grid_entries[_e69 - 1u];
-                            local_3 = _e73 > v_1;
-                        } else {
-                            local_3 = false;
+                        if (metal::all(loop_bound_4 == uint2(0u))) { break; }
+                        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+                        if (!loop_init_3) {
+                            uint _e88 = t;
+                            t = _e88 + 64u;
                         }
-                        bool _e76 = local_3;
-                        if (_e76) {
+                        loop_init_3 = false;
+                        uint _e53 = t;
+                        uint _e54 = p;
+                        if (_e53 < (_e54 >> 1u)) {
                         } else {
                             break;
                         }
                         {
-                            uint _e78 = c_4;
-                            uint _e81 = c_4;
-                            uint _e85 = grid_entries[_e81 - 1u];
-                            grid_entries[_e78] = _e85;
-                            uint _e86 = c_4;
-                            c_4 = _e86 - 1u;
+                            uint _e58 = t;
+                            uint _e59 = h_1;
+                            uint _e66 = t;
+                            uint _e67 = h_1;
+                            uint i_4 = ((_e58 & ~((_e59 - 1u))) << 1u) | (_e66 & (_e67 - 1u));
+                            uint _e72 = h_1;
+                            uint _e74 = k;
+                            uint _e78 = h_1;
+                            uint _e79 = k;
+                            uint o = (_e78 == (_e79 >> 1u)) ? (i_4 ^ (_e74 - 1u)) : (i_4 | _e72);
+                            if (o < n_1) {
+                                uint _e85 = cell_key(big_2, a_3, i_4, grid_entries, wg_cell, _buffer_sizes);
+                                uint _e86 = cell_key(big_2, a_3, o, grid_entries, wg_cell, _buffer_sizes);
+                                if (_e86 < _e85) {
+                                    set_cell_key(big_2, a_3, i_4, _e86, grid_entries, wg_cell, _buffer_sizes);
+                                    set_cell_key(big_2, a_3, o, _e85, grid_entries, wg_cell, _buffer_sizes);
+                                }
+                            }
                         }
                     }
-                    uint _e90 = c_4;
-                    grid_entries[_e90] = v_1;
-                }
-            }
-            s_1 = a_1;
-            uint2 loop_bound_2 = uint2(4294967295u);
-            bool loop_init_1 = true;
-            while(true) {
-                if (metal::all(loop_bound_2 == uint2(0u))) { break; }
-                loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
-                if (!loop_init_1) {
-                    uint _e110 = s_1;
-                    s_1 = _e110 + 1u;
-                }
-                loop_init_1 = false;
-                uint _e96 = s_1;
-                if (_e96 < (a_1 + n_1)) {
-                } else {
-                    break;
-                }
-                {
-                    uint _e100 = s_1;
-                    uint _e104 = s_1;
-                    uint _e106 = grid_entries[_e104];
-                    uint _e108 = grid_leaves[_e106];
-                    grid_entries[_e100] = _e108;
+                    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+                    metal::threadgroup_barrier(metal::mem_flags::mem_device);
                 }
             }
         }
-        return;
     }
-    j_1 = li_1;
-    uint2 loop_bound_3 = uint2(4294967295u);
-    bool loop_init_2 = true;
+    j_3 = li_1;
+    uint2 loop_bound_5 = uint2(4294967295u);
+    bool loop_init_4 = true;
     while(true) {
-        if (metal::all(loop_bound_3 == uint2(0u))) { break; }
-        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-        if (!loop_init_2) {
-            uint _e123 = j_1;
-            j_1 = _e123 + 64u;
+        if (metal::all(loop_bound_5 == uint2(0u))) { break; }
+        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+        if (!loop_init_4) {
+            uint _e109 = j_3;
+            j_3 = _e109 + 64u;
         }
-        loop_init_2 = false;
-        uint _e113 = j_1;
-        if (_e113 < n_1) {
+        loop_init_4 = false;
+        uint _e98 = j_3;
+        if (_e98 < n_1) {
         } else {
             break;
         }
         {
-            uint _e116 = j_1;
-            uint _e119 = j_1;
-            uint _e122 = grid_entries[a_1 + _e119];
-            wg_cell.inner[_e116] = _e122;
+            uint _e101 = j_3;
+            uint _e105 = j_3;
+            uint _e106 = cell_key(big_2, a_3, _e105, grid_entries, wg_cell, _buffer_sizes);
+            uint _e108 = grid_leaves[_e106];
+            grid_entries[a_3 + _e101] = _e108;
         }
     }
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-    j_2 = li_1;
-    uint2 loop_bound_4 = uint2(4294967295u);
-    bool loop_init_3 = true;
+    return;
+}
+
+void sort_cells(
+    GridParams g,
+    uint first,
+    uint li_2,
+    device type_5 const& grid_leaves,
+    device type_8 const& grid,
+    device type_8& grid_fill,
+    device type_5& grid_entries,
+    threadgroup type_13& wg_big,
+    threadgroup metal::atomic_uint& wg_bigs,
+    threadgroup type_14& wg_cell,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::uint2 span = metal::uint2(0u);
+    uint s = {};
+    uint moves = 0u;
+    bool local_1 = {};
+    uint c_2 = {};
+    bool local_2 = {};
+    uint e = {};
+    uint b_2 = 0u;
+    uint starts = g.header + GRID_HEADER;
+    GridFrame _e7 = grid_frame(g.header, grid, _buffer_sizes);
+    uint cell = first + li_2;
+    if (cell < ((_e7.nx * _e7.ny) * _e7.nz)) {
+        uint _e21 = metal::atomic_load_explicit(&grid[starts + cell], metal::memory_order_relaxed);
+        uint _e27 = metal::atomic_load_explicit(&grid[(starts + cell) + 1u], metal::memory_order_relaxed);
+        span = metal::uint2(_e21, _e27);
+        metal::atomic_store_explicit(&grid_fill[g.fill + cell], 0u, metal::memory_order_relaxed);
+    }
+    if (li_2 == 0u) {
+        metal::atomic_store_explicit(&wg_bigs, 0u, metal::memory_order_relaxed);
+    }
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    uint _e39 = span.x;
+    s = _e39 + 1u;
+    uint2 loop_bound_6 = uint2(4294967295u);
     while(true) {
-        if (metal::all(loop_bound_4 == uint2(0u))) { break; }
-        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
-        if (!loop_init_3) {
-            uint _e159 = j_2;
-            j_2 = _e159 + 64u;
+        if (metal::all(loop_bound_6 == uint2(0u))) { break; }
+        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+        uint _e45 = s;
+        uint _e47 = span.y;
+        if (_e45 < _e47) {
+            uint _e51 = moves;
+            local_1 = _e51 < g.moves;
+        } else {
+            local_1 = false;
         }
-        loop_init_3 = false;
-        uint _e127 = j_2;
-        if (_e127 < n_1) {
+        bool _e55 = local_1;
+        if (_e55) {
         } else {
             break;
         }
         {
-            uint _e130 = j_2;
-            uint v_2 = wg_cell.inner[_e130];
-            below = 0u;
-            m = 0u;
-            uint2 loop_bound_5 = uint2(4294967295u);
-            bool loop_init_4 = true;
+            uint _e57 = s;
+            uint v_2 = grid_entries[_e57];
+            uint _e60 = s;
+            c_2 = _e60;
+            uint2 loop_bound_7 = uint2(4294967295u);
             while(true) {
-                if (metal::all(loop_bound_5 == uint2(0u))) { break; }
-                loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
-                if (!loop_init_4) {
-                    uint _e150 = m;
-                    m = _e150 + 1u;
+                if (metal::all(loop_bound_7 == uint2(0u))) { break; }
+                loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+                uint _e62 = c_2;
+                uint _e64 = span.x;
+                if (_e62 > _e64) {
+                    uint _e69 = c_2;
+                    uint _e73 = grid_entries[_e69 - 1u];
+                    local_2 = _e73 > v_2;
+                } else {
+                    local_2 = false;
                 }
-                loop_init_4 = false;
-                uint _e137 = m;
-                if (_e137 < n_1) {
+                bool _e76 = local_2;
+                if (_e76) {
                 } else {
                     break;
                 }
                 {
-                    uint _e139 = below;
-                    uint _e143 = m;
-                    uint _e145 = wg_cell.inner[_e143];
-                    below = _e139 + ((_e145 < v_2) ? 1u : 0u);
+                    uint _e78 = c_2;
+                    uint _e81 = c_2;
+                    uint _e85 = grid_entries[_e81 - 1u];
+                    grid_entries[_e78] = _e85;
+                    uint _e86 = c_2;
+                    c_2 = _e86 - 1u;
                 }
             }
-            uint _e153 = below;
-            uint _e158 = grid_leaves[v_2];
-            grid_entries[a_1 + _e153] = _e158;
+            uint _e90 = c_2;
+            grid_entries[_e90] = v_2;
+            uint _e92 = moves;
+            uint _e93 = s;
+            uint _e94 = c_2;
+            moves = _e92 + (_e93 - _e94);
+            uint _e97 = s;
+            s = _e97 + 1u;
+        }
+    }
+    uint _e100 = s;
+    uint _e102 = span.y;
+    if (_e100 < _e102) {
+        uint _e107 = metal::atomic_fetch_add_explicit(&wg_bigs, 1u, metal::memory_order_relaxed);
+        metal::uint2 _e109 = span;
+        wg_big.inner[_e107] = _e109;
+    } else {
+        uint _e111 = span.x;
+        e = _e111;
+        uint2 loop_bound_8 = uint2(4294967295u);
+        bool loop_init_5 = true;
+        while(true) {
+            if (metal::all(loop_bound_8 == uint2(0u))) { break; }
+            loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
+            if (!loop_init_5) {
+                uint _e128 = e;
+                e = _e128 + 1u;
+            }
+            loop_init_5 = false;
+            uint _e113 = e;
+            uint _e115 = span.y;
+            if (_e113 < _e115) {
+            } else {
+                break;
+            }
+            {
+                uint _e118 = e;
+                uint _e122 = e;
+                uint _e124 = grid_entries[_e122];
+                uint _e126 = grid_leaves[_e124];
+                grid_entries[_e118] = _e126;
+            }
+        }
+    }
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    uint unnamed_1 = metal::atomic_load_explicit(&wg_bigs, metal::memory_order_relaxed);
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    uint2 loop_bound_9 = uint2(4294967295u);
+    bool loop_init_6 = true;
+    while(true) {
+        if (metal::all(loop_bound_9 == uint2(0u))) { break; }
+        loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
+        if (!loop_init_6) {
+            uint _e138 = b_2;
+            b_2 = _e138 + 1u;
+        }
+        loop_init_6 = false;
+        uint _e134 = b_2;
+        if (_e134 < unnamed_1) {
+        } else {
+            break;
+        }
+        {
+            uint _e136 = b_2;
+            sort_together(_e136, li_2, grid_leaves, grid_entries, wg_big, wg_cell, _buffer_sizes);
         }
     }
     return;
 }
+
+void count_levels(
+    GridParams g_1,
+    uint i_2,
+    device type_4 const& bsh_nodes,
+    device type_5 const& grid_leaves,
+    device type_6 const& grid_levels,
+    device type_8& grid,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint l = 0u;
+    if (i_2 >= g_1.count) {
+        return;
+    }
+    uint h_2 = g_1.header;
+    uint _e5 = grid_leaf(i_2, bsh_nodes, grid_leaves, _buffer_sizes);
+    if (_e5 == BSH_NONE) {
+        return;
+    }
+    uint _e13 = metal::atomic_fetch_add_explicit(&grid[h_2 + 13u], 1u, metal::memory_order_relaxed);
+    BshNode leaf = bsh_nodes[_e5];
+    float _e18 = bsh_grid_radius(leaf, g_1.reach);
+    uint2 loop_bound_10 = uint2(4294967295u);
+    bool loop_init_7 = true;
+    while(true) {
+        if (metal::all(loop_bound_10 == uint2(0u))) { break; }
+        loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
+        if (!loop_init_7) {
+            uint _e63 = l;
+            l = _e63 + 1u;
+        }
+        loop_init_7 = false;
+        uint _e21 = l;
+        if (_e21 < g_1.levels) {
+        } else {
+            break;
+        }
+        {
+            uint _e25 = l;
+            GridFrame _e27 = grid_levels[_e25];
+            metal::uint3 _e29 = bsh_grid_last(_e27, leaf.center, _e18);
+            uint _e31 = l;
+            GridFrame _e33 = grid_levels[_e31];
+            metal::uint3 _e35 = bsh_grid_first(_e33, leaf.center, _e18);
+            metal::uint3 d = (_e29 - _e35) + metal::uint3(1u);
+            uint n_2 = (d.x * d.y) * d.z;
+            uint _e48 = l;
+            uint at = (h_2 + 16u) + (2u * _e48);
+            uint _e53 = metal::atomic_fetch_add_explicit(&grid[at], n_2, metal::memory_order_relaxed);
+            if ((_e53 + n_2) < _e53) {
+                uint _e61 = metal::atomic_fetch_add_explicit(&grid[at + 1u], 1u, metal::memory_order_relaxed);
+            }
+        }
+    }
+    return;
+}
+
+void choose_level(
+    GridParams g_2,
+    device type_6 const& grid_levels,
+    device type_8& grid,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint chosen = {};
+    uint l_1 = 0u;
+    bool local_3 = {};
+    bool local_4 = {};
+    GridFrame f_3 = {};
+    uint h_3 = g_2.header;
+    uint leaves_1 = metal::atomic_load_explicit(&grid[h_3 + 13u], metal::memory_order_relaxed);
+    chosen = g_2.levels;
+    uint2 loop_bound_11 = uint2(4294967295u);
+    bool loop_init_8 = true;
+    while(true) {
+        if (metal::all(loop_bound_11 == uint2(0u))) { break; }
+        loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
+        if (!loop_init_8) {
+            uint _e65 = l_1;
+            l_1 = _e65 + 1u;
+        }
+        loop_init_8 = false;
+        uint _e11 = l_1;
+        if (_e11 < g_2.levels) {
+        } else {
+            break;
+        }
+        {
+            uint _e15 = l_1;
+            GridFrame f_4 = grid_levels[_e15];
+            uint cells_1 = (f_4.nx * f_4.ny) * f_4.nz;
+            uint _e24 = bsh_grid_budget(leaves_1, cells_1, g_2.least);
+            uint budget = metal::min(_e24, g_2.capacity);
+            uint _e30 = l_1;
+            uint at_1 = (h_3 + 16u) + (2u * _e30);
+            uint _e33 = chosen;
+            if (_e33 == g_2.levels) {
+                uint _e42 = metal::atomic_load_explicit(&grid[at_1 + 1u], metal::memory_order_relaxed);
+                local_3 = _e42 == 0u;
+            } else {
+                local_3 = false;
+            }
+            bool _e46 = local_3;
+            if (_e46) {
+                uint _e51 = metal::atomic_load_explicit(&grid[at_1], metal::memory_order_relaxed);
+                local_4 = _e51 <= budget;
+            } else {
+                local_4 = false;
+            }
+            bool _e54 = local_4;
+            if (_e54) {
+                uint _e55 = l_1;
+                chosen = _e55;
+            }
+            metal::atomic_store_explicit(&grid[at_1], 0u, metal::memory_order_relaxed);
+            metal::atomic_store_explicit(&grid[at_1 + 1u], 0u, metal::memory_order_relaxed);
+        }
+    }
+    metal::atomic_store_explicit(&grid[h_3 + 13u], 0u, metal::memory_order_relaxed);
+    uint _e73 = chosen;
+    if (_e73 < g_2.levels) {
+        uint _e77 = chosen;
+        GridFrame _e79 = grid_levels[_e77];
+        f_3 = _e79;
+    }
+    float _e84 = f_3.lo[0];
+    metal::atomic_store_explicit(&grid[h_3], as_type<uint>(_e84), metal::memory_order_relaxed);
+    float _e92 = f_3.lo[1];
+    metal::atomic_store_explicit(&grid[h_3 + 1u], as_type<uint>(_e92), metal::memory_order_relaxed);
+    float _e100 = f_3.lo[2];
+    metal::atomic_store_explicit(&grid[h_3 + 2u], as_type<uint>(_e100), metal::memory_order_relaxed);
+    uint _e107 = f_3.nx;
+    metal::atomic_store_explicit(&grid[h_3 + 3u], _e107, metal::memory_order_relaxed);
+    float _e114 = f_3.hi[0];
+    metal::atomic_store_explicit(&grid[h_3 + 4u], as_type<uint>(_e114), metal::memory_order_relaxed);
+    float _e122 = f_3.hi[1];
+    metal::atomic_store_explicit(&grid[h_3 + 5u], as_type<uint>(_e122), metal::memory_order_relaxed);
+    float _e130 = f_3.hi[2];
+    metal::atomic_store_explicit(&grid[h_3 + 6u], as_type<uint>(_e130), metal::memory_order_relaxed);
+    uint _e137 = f_3.ny;
+    metal::atomic_store_explicit(&grid[h_3 + 7u], _e137, metal::memory_order_relaxed);
+    float _e144 = f_3.inv[0];
+    metal::atomic_store_explicit(&grid[h_3 + 8u], as_type<uint>(_e144), metal::memory_order_relaxed);
+    float _e152 = f_3.inv[1];
+    metal::atomic_store_explicit(&grid[h_3 + 9u], as_type<uint>(_e152), metal::memory_order_relaxed);
+    float _e160 = f_3.inv[2];
+    metal::atomic_store_explicit(&grid[h_3 + 10u], as_type<uint>(_e160), metal::memory_order_relaxed);
+    uint _e167 = f_3.nz;
+    metal::atomic_store_explicit(&grid[h_3 + 11u], _e167, metal::memory_order_relaxed);
+    metal::atomic_store_explicit(&grid[h_3 + 12u], as_type<uint>(g_2.reach), metal::memory_order_relaxed);
+    return;
+}
+
+void fill_cells(
+    GridParams g_3,
+    uint i_3,
+    bool scatter,
+    device type_4 const& bsh_nodes,
+    device type_5 const& grid_leaves,
+    device type_8 const& grid,
+    device type_8& grid_fill,
+    device type_5& grid_entries,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    bool local_5 = {};
+    uint z = {};
+    uint y = {};
+    uint x_1 = {};
+    if (i_3 >= g_3.count) {
+        return;
+    }
+    GridFrame _e6 = grid_frame(g_3.header, grid, _buffer_sizes);
+    uint _e7 = grid_leaf(i_3, bsh_nodes, grid_leaves, _buffer_sizes);
+    if (!((_e6.nx == 0u))) {
+        local_5 = _e7 == BSH_NONE;
+    } else {
+        local_5 = true;
+    }
+    bool _e17 = local_5;
+    if (_e17) {
+        return;
+    }
+    BshNode leaf_1 = bsh_nodes[_e7];
+    float _e22 = bsh_grid_radius(leaf_1, g_3.reach);
+    metal::uint3 _e24 = bsh_grid_first(_e6, leaf_1.center, _e22);
+    metal::uint3 _e26 = bsh_grid_last(_e6, leaf_1.center, _e22);
+    z = _e24.z;
+    uint2 loop_bound_12 = uint2(4294967295u);
+    bool loop_init_9 = true;
+    while(true) {
+        if (metal::all(loop_bound_12 == uint2(0u))) { break; }
+        loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
+        if (!loop_init_9) {
+            uint _e66 = z;
+            z = _e66 + 1u;
+        }
+        loop_init_9 = false;
+        uint _e29 = z;
+        if (_e29 <= _e26.z) {
+        } else {
+            break;
+        }
+        {
+            y = _e24.y;
+            uint2 loop_bound_13 = uint2(4294967295u);
+            bool loop_init_10 = true;
+            while(true) {
+                if (metal::all(loop_bound_13 == uint2(0u))) { break; }
+                loop_bound_13 -= uint2(loop_bound_13.y == 0u, 1u);
+                if (!loop_init_10) {
+                    uint _e63 = y;
+                    y = _e63 + 1u;
+                }
+                loop_init_10 = false;
+                uint _e34 = y;
+                if (_e34 <= _e26.y) {
+                } else {
+                    break;
+                }
+                {
+                    x_1 = _e24.x;
+                    uint2 loop_bound_14 = uint2(4294967295u);
+                    bool loop_init_11 = true;
+                    while(true) {
+                        if (metal::all(loop_bound_14 == uint2(0u))) { break; }
+                        loop_bound_14 -= uint2(loop_bound_14.y == 0u, 1u);
+                        if (!loop_init_11) {
+                            uint _e60 = x_1;
+                            x_1 = _e60 + 1u;
+                        }
+                        loop_init_11 = false;
+                        uint _e39 = x_1;
+                        if (_e39 <= _e26.x) {
+                        } else {
+                            break;
+                        }
+                        {
+                            uint _e42 = z;
+                            uint _e45 = y;
+                            uint _e49 = x_1;
+                            uint c_5 = (((_e42 * _e6.ny) + _e45) * _e6.nx) + _e49;
+                            uint _e56 = metal::atomic_fetch_add_explicit(&grid_fill[g_3.fill + c_5], 1u, metal::memory_order_relaxed);
+                            if (scatter) {
+                                grid_entries[_e56] = i_3;
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
+    return;
+}
+
 uint naga_div(uint lhs, uint rhs) {
     return lhs / metal::select(rhs, 1u, rhs == 0u);
 }
 
+void scan_starts(
+    GridParams g_4,
+    uint li_3,
+    device type_8& grid,
+    device type_8& grid_fill,
+    threadgroup type_11& wg_sums,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint sum = 0u;
+    uint c_3 = {};
+    uint start = {};
+    uint j_4 = 0u;
+    uint c_4 = {};
+    uint starts_1 = g_4.header + GRID_HEADER;
+    GridFrame _e6 = grid_frame(g_4.header, grid, _buffer_sizes);
+    uint cells_2 = (_e6.nx * _e6.ny) * _e6.nz;
+    uint run = naga_div((cells_2 + 64u) - 1u, 64u);
+    uint a_4 = metal::min(li_3 * run, cells_2);
+    uint b_3 = metal::min(a_4 + run, cells_2);
+    c_3 = a_4;
+    uint2 loop_bound_15 = uint2(4294967295u);
+    bool loop_init_12 = true;
+    while(true) {
+        if (metal::all(loop_bound_15 == uint2(0u))) { break; }
+        loop_bound_15 -= uint2(loop_bound_15.y == 0u, 1u);
+        if (!loop_init_12) {
+            uint _e36 = c_3;
+            c_3 = _e36 + 1u;
+        }
+        loop_init_12 = false;
+        uint _e25 = c_3;
+        if (_e25 < b_3) {
+        } else {
+            break;
+        }
+        {
+            uint _e27 = sum;
+            uint _e30 = c_3;
+            uint _e33 = metal::atomic_load_explicit(&grid_fill[g_4.fill + _e30], metal::memory_order_relaxed);
+            sum = _e27 + _e33;
+        }
+    }
+    uint _e40 = sum;
+    wg_sums.inner[li_3] = _e40;
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    start = g_4.entries;
+    uint2 loop_bound_16 = uint2(4294967295u);
+    bool loop_init_13 = true;
+    while(true) {
+        if (metal::all(loop_bound_16 == uint2(0u))) { break; }
+        loop_bound_16 -= uint2(loop_bound_16.y == 0u, 1u);
+        if (!loop_init_13) {
+            uint _e54 = j_4;
+            j_4 = _e54 + 1u;
+        }
+        loop_init_13 = false;
+        uint _e45 = j_4;
+        if (_e45 < li_3) {
+        } else {
+            break;
+        }
+        {
+            uint _e47 = start;
+            uint _e49 = j_4;
+            uint _e51 = wg_sums.inner[_e49];
+            start = _e47 + _e51;
+        }
+    }
+    c_4 = a_4;
+    uint2 loop_bound_17 = uint2(4294967295u);
+    bool loop_init_14 = true;
+    while(true) {
+        if (metal::all(loop_bound_17 == uint2(0u))) { break; }
+        loop_bound_17 -= uint2(loop_bound_17.y == 0u, 1u);
+        if (!loop_init_14) {
+            uint _e79 = c_4;
+            c_4 = _e79 + 1u;
+        }
+        loop_init_14 = false;
+        uint _e57 = c_4;
+        if (_e57 < b_3) {
+        } else {
+            break;
+        }
+        {
+            uint _e61 = c_4;
+            uint n_3 = metal::atomic_load_explicit(&grid_fill[g_4.fill + _e61], metal::memory_order_relaxed);
+            uint _e66 = c_4;
+            uint _e69 = start;
+            metal::atomic_store_explicit(&grid[starts_1 + _e66], _e69, metal::memory_order_relaxed);
+            uint _e72 = c_4;
+            uint _e75 = start;
+            metal::atomic_store_explicit(&grid_fill[g_4.fill + _e72], _e75, metal::memory_order_relaxed);
+            uint _e76 = start;
+            start = _e76 + n_3;
+        }
+    }
+    if ((li_3 + 1u) == 64u) {
+        uint _e88 = start;
+        metal::atomic_store_explicit(&grid[starts_1 + cells_2], _e88, metal::memory_order_relaxed);
+        return;
+    } else {
+        return;
+    }
+}
 
 struct main_Input {
 };
@@ -494,377 +1032,54 @@ kernel void main_(
 , metal::uint3 wid [[threadgroup_position_in_grid]]
 , metal::uint3 groups [[threadgroups_per_grid]]
 , uint li [[thread_index_in_threadgroup]]
-, constant GridParams& params [[user(fake0)]]
+, constant GridStage& params [[user(fake0)]]
 , device type_4 const& bsh_nodes [[user(fake0)]]
 , device type_5 const& grid_leaves [[user(fake0)]]
 , device type_6 const& grid_levels [[user(fake0)]]
 , device type_8& grid [[user(fake0)]]
 , device type_8& grid_fill [[user(fake0)]]
 , device type_5& grid_entries [[user(fake0)]]
-, threadgroup type_10& wg_sums
-, threadgroup type_11& wg_cell
-, threadgroup metal::uint2& wg_span
+, device type_9 const& grids [[user(fake0)]]
+, threadgroup type_11& wg_sums
+, threadgroup type_13& wg_big
+, threadgroup metal::atomic_uint& wg_bigs
+, threadgroup type_14& wg_cell
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
     if (li == 0u) {
         wg_sums = {};
+        wg_big = {};
+        metal::atomic_store_explicit(&wg_bigs, 0, metal::memory_order_relaxed);
         wg_cell = {};
-        wg_span = {};
     }
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-    uint sum = 0u;
-    uint c = {};
-    uint start = {};
-    uint j = 0u;
-    uint c_1 = {};
-    uint l = 0u;
-    uint chosen = {};
-    uint l_1 = 0u;
-    bool local = {};
-    bool local_1 = {};
-    GridFrame f = {};
-    bool local_2 = {};
-    uint z = {};
-    uint y = {};
-    uint x = {};
-    uint _e6 = params.stage;
-    if (_e6 == 5u) {
-        sort_cell((wid.y * groups.x) + wid.x, li, params, grid_leaves, grid, grid_fill, grid_entries, wg_cell, wg_span, _buffer_sizes);
-        return;
-    }
-    uint i_2 = gid.x;
-    uint h_1 = params.header;
-    uint starts_1 = h_1 + GRID_HEADER;
-    uint _e22 = params.stage;
-    if (_e22 == 3u) {
-        GridFrame _e25 = grid_frame(h_1, grid, _buffer_sizes);
-        uint cells_1 = (_e25.nx * _e25.ny) * _e25.nz;
-        uint run = naga_div((cells_1 + 64u) - 1u, 64u);
-        uint a_2 = metal::min(i_2 * run, cells_1);
-        uint b_1 = metal::min(a_2 + run, cells_1);
-        c = a_2;
-        uint2 loop_bound_6 = uint2(4294967295u);
-        bool loop_init_5 = true;
-        while(true) {
-            if (metal::all(loop_bound_6 == uint2(0u))) { break; }
-            loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-            if (!loop_init_5) {
-                uint _e57 = c;
-                c = _e57 + 1u;
-            }
-            loop_init_5 = false;
-            uint _e44 = c;
-            if (_e44 < b_1) {
-            } else {
-                break;
-            }
-            {
-                uint _e46 = sum;
-                uint _e50 = params.fill;
-                uint _e51 = c;
-                uint _e54 = metal::atomic_load_explicit(&grid_fill[_e50 + _e51], metal::memory_order_relaxed);
-                sum = _e46 + _e54;
-            }
-        }
-        uint _e61 = sum;
-        wg_sums.inner[i_2] = _e61;
-        metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-        uint _e64 = params.entries;
-        start = _e64;
-        uint2 loop_bound_7 = uint2(4294967295u);
-        bool loop_init_6 = true;
-        while(true) {
-            if (metal::all(loop_bound_7 == uint2(0u))) { break; }
-            loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
-            if (!loop_init_6) {
-                uint _e77 = j;
-                j = _e77 + 1u;
-            }
-            loop_init_6 = false;
-            uint _e68 = j;
-            if (_e68 < i_2) {
-            } else {
-                break;
-            }
-            {
-                uint _e70 = start;
-                uint _e72 = j;
-                uint _e74 = wg_sums.inner[_e72];
-                start = _e70 + _e74;
-            }
-        }
-        c_1 = a_2;
-        uint2 loop_bound_8 = uint2(4294967295u);
-        bool loop_init_7 = true;
-        while(true) {
-            if (metal::all(loop_bound_8 == uint2(0u))) { break; }
-            loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
-            if (!loop_init_7) {
-                uint _e106 = c_1;
-                c_1 = _e106 + 1u;
-            }
-            loop_init_7 = false;
-            uint _e80 = c_1;
-            if (_e80 < b_1) {
-            } else {
-                break;
-            }
-            {
-                uint _e85 = params.fill;
-                uint _e86 = c_1;
-                uint n_2 = metal::atomic_load_explicit(&grid_fill[_e85 + _e86], metal::memory_order_relaxed);
-                uint _e91 = c_1;
-                uint _e94 = start;
-                metal::atomic_store_explicit(&grid[starts_1 + _e91], _e94, metal::memory_order_relaxed);
-                uint _e98 = params.fill;
-                uint _e99 = c_1;
-                uint _e102 = start;
-                metal::atomic_store_explicit(&grid_fill[_e98 + _e99], _e102, metal::memory_order_relaxed);
-                uint _e103 = start;
-                start = _e103 + n_2;
-            }
-        }
-        if ((i_2 + 1u) == 64u) {
-            uint _e115 = start;
-            metal::atomic_store_explicit(&grid[starts_1 + cells_1], _e115, metal::memory_order_relaxed);
-        }
-        return;
-    }
-    uint _e118 = params.stage;
-    switch(_e118) {
+    GridParams g_5 = grids[wid.z];
+    uint _e10 = params.stage;
+    switch(_e10) {
         case 0u: {
-            uint _e121 = params.count;
-            if (i_2 >= _e121) {
-                return;
-            }
-            uint _e123 = grid_leaf(i_2, bsh_nodes, grid_leaves, _buffer_sizes);
-            if (_e123 == BSH_NONE) {
-                return;
-            }
-            uint _e131 = metal::atomic_fetch_add_explicit(&grid[h_1 + 13u], 1u, metal::memory_order_relaxed);
-            BshNode leaf = bsh_nodes[_e123];
-            float _e137 = params.reach;
-            float _e138 = bsh_grid_radius(leaf, _e137);
-            uint2 loop_bound_9 = uint2(4294967295u);
-            bool loop_init_8 = true;
-            while(true) {
-                if (metal::all(loop_bound_9 == uint2(0u))) { break; }
-                loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
-                if (!loop_init_8) {
-                    uint _e185 = l;
-                    l = _e185 + 1u;
-                }
-                loop_init_8 = false;
-                uint _e141 = l;
-                uint _e144 = params.levels;
-                if (_e141 < _e144) {
-                } else {
-                    break;
-                }
-                {
-                    uint _e147 = l;
-                    GridFrame _e149 = grid_levels[_e147];
-                    metal::uint3 _e151 = bsh_grid_last(_e149, leaf.center, _e138);
-                    uint _e153 = l;
-                    GridFrame _e155 = grid_levels[_e153];
-                    metal::uint3 _e157 = bsh_grid_first(_e155, leaf.center, _e138);
-                    metal::uint3 d = (_e151 - _e157) + metal::uint3(1u);
-                    uint n_3 = (d.x * d.y) * d.z;
-                    uint _e170 = l;
-                    uint at = (h_1 + 16u) + (2u * _e170);
-                    uint _e175 = metal::atomic_fetch_add_explicit(&grid[at], n_3, metal::memory_order_relaxed);
-                    if ((_e175 + n_3) < _e175) {
-                        uint _e183 = metal::atomic_fetch_add_explicit(&grid[at + 1u], 1u, metal::memory_order_relaxed);
-                    }
-                }
-            }
+            count_levels(g_5, gid.x, bsh_nodes, grid_leaves, grid_levels, grid, _buffer_sizes);
             return;
         }
         case 1u: {
-            if (i_2 != 0u) {
+            if (li == 0u) {
+                choose_level(g_5, grid_levels, grid, _buffer_sizes);
+                return;
+            } else {
                 return;
             }
-            uint leaves_1 = metal::atomic_load_explicit(&grid[h_1 + 13u], metal::memory_order_relaxed);
-            uint _e196 = params.levels;
-            chosen = _e196;
-            uint2 loop_bound_10 = uint2(4294967295u);
-            bool loop_init_9 = true;
-            while(true) {
-                if (metal::all(loop_bound_10 == uint2(0u))) { break; }
-                loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
-                if (!loop_init_9) {
-                    uint _e262 = l_1;
-                    l_1 = _e262 + 1u;
-                }
-                loop_init_9 = false;
-                uint _e200 = l_1;
-                uint _e203 = params.levels;
-                if (_e200 < _e203) {
-                } else {
-                    break;
-                }
-                {
-                    uint _e206 = l_1;
-                    GridFrame f_4 = grid_levels[_e206];
-                    uint cells_2 = (f_4.nx * f_4.ny) * f_4.nz;
-                    uint _e216 = params.least;
-                    uint _e217 = bsh_grid_budget(leaves_1, cells_2, _e216);
-                    uint _e220 = params.capacity;
-                    uint budget = metal::min(_e217, _e220);
-                    uint _e225 = l_1;
-                    uint at_1 = (h_1 + 16u) + (2u * _e225);
-                    uint _e228 = chosen;
-                    uint _e231 = params.levels;
-                    if (_e228 == _e231) {
-                        uint _e239 = metal::atomic_load_explicit(&grid[at_1 + 1u], metal::memory_order_relaxed);
-                        local = _e239 == 0u;
-                    } else {
-                        local = false;
-                    }
-                    bool _e243 = local;
-                    if (_e243) {
-                        uint _e248 = metal::atomic_load_explicit(&grid[at_1], metal::memory_order_relaxed);
-                        local_1 = _e248 <= budget;
-                    } else {
-                        local_1 = false;
-                    }
-                    bool _e251 = local_1;
-                    if (_e251) {
-                        uint _e252 = l_1;
-                        chosen = _e252;
-                    }
-                    metal::atomic_store_explicit(&grid[at_1], 0u, metal::memory_order_relaxed);
-                    metal::atomic_store_explicit(&grid[at_1 + 1u], 0u, metal::memory_order_relaxed);
-                }
-            }
-            metal::atomic_store_explicit(&grid[h_1 + 13u], 0u, metal::memory_order_relaxed);
-            uint _e270 = chosen;
-            uint _e273 = params.levels;
-            if (_e270 < _e273) {
-                uint _e276 = chosen;
-                GridFrame _e278 = grid_levels[_e276];
-                f = _e278;
-            }
-            float _e283 = f.lo[0];
-            metal::atomic_store_explicit(&grid[h_1], as_type<uint>(_e283), metal::memory_order_relaxed);
-            float _e291 = f.lo[1];
-            metal::atomic_store_explicit(&grid[h_1 + 1u], as_type<uint>(_e291), metal::memory_order_relaxed);
-            float _e299 = f.lo[2];
-            metal::atomic_store_explicit(&grid[h_1 + 2u], as_type<uint>(_e299), metal::memory_order_relaxed);
-            uint _e306 = f.nx;
-            metal::atomic_store_explicit(&grid[h_1 + 3u], _e306, metal::memory_order_relaxed);
-            float _e313 = f.hi[0];
-            metal::atomic_store_explicit(&grid[h_1 + 4u], as_type<uint>(_e313), metal::memory_order_relaxed);
-            float _e321 = f.hi[1];
-            metal::atomic_store_explicit(&grid[h_1 + 5u], as_type<uint>(_e321), metal::memory_order_relaxed);
-            float _e329 = f.hi[2];
-            metal::atomic_store_explicit(&grid[h_1 + 6u], as_type<uint>(_e329), metal::memory_order_relaxed);
-            uint _e336 = f.ny;
-            metal::atomic_store_explicit(&grid[h_1 + 7u], _e336, metal::memory_order_relaxed);
-            float _e343 = f.inv[0];
-            metal::atomic_store_explicit(&grid[h_1 + 8u], as_type<uint>(_e343), metal::memory_order_relaxed);
-            float _e351 = f.inv[1];
-            metal::atomic_store_explicit(&grid[h_1 + 9u], as_type<uint>(_e351), metal::memory_order_relaxed);
-            float _e359 = f.inv[2];
-            metal::atomic_store_explicit(&grid[h_1 + 10u], as_type<uint>(_e359), metal::memory_order_relaxed);
-            uint _e366 = f.nz;
-            metal::atomic_store_explicit(&grid[h_1 + 11u], _e366, metal::memory_order_relaxed);
-            float _e373 = params.reach;
-            metal::atomic_store_explicit(&grid[h_1 + 12u], as_type<uint>(_e373), metal::memory_order_relaxed);
+            break;
+        }
+        case 3u: {
+            scan_starts(g_5, li, grid, grid_fill, wg_sums, _buffer_sizes);
             return;
         }
-        case 2u:
-        case 4u: {
-            uint _e377 = params.count;
-            if (i_2 >= _e377) {
-                return;
-            }
-            GridFrame _e379 = grid_frame(h_1, grid, _buffer_sizes);
-            uint _e380 = grid_leaf(i_2, bsh_nodes, grid_leaves, _buffer_sizes);
-            if (!((_e379.nx == 0u))) {
-                local_2 = _e380 == BSH_NONE;
-            } else {
-                local_2 = true;
-            }
-            bool _e390 = local_2;
-            if (_e390) {
-                return;
-            }
-            BshNode leaf_1 = bsh_nodes[_e380];
-            float _e396 = params.reach;
-            float _e397 = bsh_grid_radius(leaf_1, _e396);
-            metal::uint3 _e399 = bsh_grid_first(_e379, leaf_1.center, _e397);
-            metal::uint3 _e401 = bsh_grid_last(_e379, leaf_1.center, _e397);
-            z = _e399.z;
-            uint2 loop_bound_11 = uint2(4294967295u);
-            bool loop_init_10 = true;
-            while(true) {
-                if (metal::all(loop_bound_11 == uint2(0u))) { break; }
-                loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
-                if (!loop_init_10) {
-                    uint _e448 = z;
-                    z = _e448 + 1u;
-                }
-                loop_init_10 = false;
-                uint _e404 = z;
-                if (_e404 <= _e401.z) {
-                } else {
-                    break;
-                }
-                {
-                    y = _e399.y;
-                    uint2 loop_bound_12 = uint2(4294967295u);
-                    bool loop_init_11 = true;
-                    while(true) {
-                        if (metal::all(loop_bound_12 == uint2(0u))) { break; }
-                        loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
-                        if (!loop_init_11) {
-                            uint _e445 = y;
-                            y = _e445 + 1u;
-                        }
-                        loop_init_11 = false;
-                        uint _e409 = y;
-                        if (_e409 <= _e401.y) {
-                        } else {
-                            break;
-                        }
-                        {
-                            x = _e399.x;
-                            uint2 loop_bound_13 = uint2(4294967295u);
-                            bool loop_init_12 = true;
-                            while(true) {
-                                if (metal::all(loop_bound_13 == uint2(0u))) { break; }
-                                loop_bound_13 -= uint2(loop_bound_13.y == 0u, 1u);
-                                if (!loop_init_12) {
-                                    uint _e442 = x;
-                                    x = _e442 + 1u;
-                                }
-                                loop_init_12 = false;
-                                uint _e414 = x;
-                                if (_e414 <= _e401.x) {
-                                } else {
-                                    break;
-                                }
-                                {
-                                    uint _e417 = z;
-                                    uint _e420 = y;
-                                    uint _e424 = x;
-                                    uint c_5 = (((_e417 * _e379.ny) + _e420) * _e379.nx) + _e424;
-                                    uint _e429 = params.fill;
-                                    uint _e433 = metal::atomic_fetch_add_explicit(&grid_fill[_e429 + c_5], 1u, metal::memory_order_relaxed);
-                                    uint _e436 = params.stage;
-                                    if (_e436 == 4u) {
-                                        grid_entries[_e433] = i_2;
-                                    }
-                                }
-                            }
-                        }
-                    }
-                }
-            }
+        case 5u: {
+            sort_cells(g_5, ((wid.y * groups.x) + wid.x) * 64u, li, grid_leaves, grid, grid_fill, grid_entries, wg_big, wg_bigs, wg_cell, _buffer_sizes);
             return;
         }
         default: {
+            uint _e24 = params.stage;
+            fill_cells(g_5, gid.x, _e24 == 4u, bsh_nodes, grid_leaves, grid, grid_fill, grid_entries, _buffer_sizes);
             return;
         }
     }

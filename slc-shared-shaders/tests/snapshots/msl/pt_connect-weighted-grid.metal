@@ -151,7 +151,9 @@ constant uint LIGHT_VPL = 4u;
 constant uint NO_LIGHT = 4294967295u;
 constant uint GRID_HEADER = 32u;
 constant uint GRID_LEVELS_MAX = 8u;
-constant uint GRID_SORT_MAX = 1536u;
+constant uint GRIDS_MAX = 3u;
+constant uint GRID_SORT_MOVES = 1024u;
+constant uint GRID_SORT_MAX = 1024u;
 constant uint COUNT_TILES = 0u;
 constant uint COUNT_GROUP_TESTS = 1u;
 constant uint COUNT_CLUSTER_TESTS = 2u;
@@ -2012,7 +2014,7 @@ BshCursor bsh_cursor(
 ) {
     BshCursor c_9 = {};
     uint h_3 = 0u;
-    uint g = 0u;
+    uint g = 1u;
     bool local_35 = {};
     bool local_36 = {};
     bool local_37 = {};
@@ -2032,7 +2034,7 @@ BshCursor bsh_cursor(
         }
         loop_init_1 = false;
         uint _e18 = g;
-        if (_e18 < 2u) {
+        if (_e18 < GRIDS_MAX) {
             uint _e24 = h_3;
             float _e25 = grid_reach(_e24, grid, _buffer_sizes);
             local_35 = rl_6.w > _e25;
