@@ -89,8 +89,9 @@ fn sort_together(b: u32, li: u32) {
             wg_cell[j] = grid_entries[a + j];
         }
     }
+    // A cell's entries are within `grid_entries`'s binding (below 2³⁰).
     var p = 1u;
-    while p < n && p < 0x80000000u {
+    while p < n {
         p <<= 1u;
     }
     workgroupBarrier();
@@ -161,6 +162,9 @@ fn sort_cells(g: GridParams, first: u32, li: u32) {
             grid_entries[e] = grid_leaves[grid_entries[e]];
         }
     }
+    // What an invocation's insertion moved before it stopped is read by the
+    // others in `sort_together`.
+    storageBarrier();
     let bigs = workgroupUniformLoad(&wg_bigs);
     for (var b = 0u; b < bigs; b++) {
         sort_together(b, li);

@@ -262,7 +262,6 @@ fn set_cell_key(big_1: bool, a_2: u32, j_1: u32, v_1: u32) {
 fn sort_together(b_1: u32, li_1: u32) {
     var j_2: u32;
     var p: u32 = 1u;
-    var local: bool;
     var k: u32 = 2u;
     var h_1: u32;
     var t: u32;
@@ -295,103 +294,96 @@ fn sort_together(b_1: u32, li_1: u32) {
     loop {
         let _e28 = p;
         if (_e28 < n_1) {
-            let _e32 = p;
-            local = (_e32 < 2147483648u);
-        } else {
-            local = false;
-        }
-        let _e36 = local;
-        if _e36 {
         } else {
             break;
         }
         {
-            let _e37 = p;
-            p = (_e37 << 1u);
+            let _e30 = p;
+            p = (_e30 << 1u);
         }
     }
     workgroupBarrier();
     loop {
-        let _e42 = k;
-        let _e43 = p;
-        if (_e42 <= _e43) {
+        let _e35 = k;
+        let _e36 = p;
+        if (_e35 <= _e36) {
         } else {
             break;
         }
         {
-            let _e45 = k;
-            h_1 = (_e45 >> 1u);
+            let _e38 = k;
+            h_1 = (_e38 >> 1u);
             loop {
-                let _e49 = h_1;
-                if (_e49 > 0u) {
+                let _e42 = h_1;
+                if (_e42 > 0u) {
                 } else {
                     break;
                 }
                 {
                     t = li_1;
                     loop {
-                        let _e53 = t;
-                        let _e54 = p;
-                        if (_e53 < (_e54 >> 1u)) {
+                        let _e46 = t;
+                        let _e47 = p;
+                        if (_e46 < (_e47 >> 1u)) {
                         } else {
                             break;
                         }
                         {
-                            let _e58 = t;
-                            let _e59 = h_1;
-                            let _e66 = t;
-                            let _e67 = h_1;
-                            let i_4 = (((_e58 & ~((_e59 - 1u))) << 1u) | (_e66 & (_e67 - 1u)));
-                            let _e72 = h_1;
-                            let _e74 = k;
-                            let _e78 = h_1;
-                            let _e79 = k;
-                            let o = select((i_4 | _e72), (i_4 ^ (_e74 - 1u)), (_e78 == (_e79 >> 1u)));
+                            let _e51 = t;
+                            let _e52 = h_1;
+                            let _e59 = t;
+                            let _e60 = h_1;
+                            let i_4 = (((_e51 & ~((_e52 - 1u))) << 1u) | (_e59 & (_e60 - 1u)));
+                            let _e65 = h_1;
+                            let _e67 = k;
+                            let _e71 = h_1;
+                            let _e72 = k;
+                            let o = select((i_4 | _e65), (i_4 ^ (_e67 - 1u)), (_e71 == (_e72 >> 1u)));
                             if (o < n_1) {
-                                let _e85 = cell_key(big_2, a_3, i_4);
-                                let _e86 = cell_key(big_2, a_3, o);
-                                if (_e86 < _e85) {
-                                    set_cell_key(big_2, a_3, i_4, _e86);
-                                    set_cell_key(big_2, a_3, o, _e85);
+                                let _e78 = cell_key(big_2, a_3, i_4);
+                                let _e79 = cell_key(big_2, a_3, o);
+                                if (_e79 < _e78) {
+                                    set_cell_key(big_2, a_3, i_4, _e79);
+                                    set_cell_key(big_2, a_3, o, _e78);
                                 }
                             }
                         }
                         continuing {
-                            let _e88 = t;
-                            t = (_e88 + 64u);
+                            let _e81 = t;
+                            t = (_e81 + 64u);
                         }
                     }
                     workgroupBarrier();
                     storageBarrier();
                 }
                 continuing {
-                    let _e91 = h_1;
-                    h_1 = (_e91 >> 1u);
+                    let _e84 = h_1;
+                    h_1 = (_e84 >> 1u);
                 }
             }
         }
         continuing {
-            let _e94 = k;
-            k = (_e94 << 1u);
+            let _e87 = k;
+            k = (_e87 << 1u);
         }
     }
     j_3 = li_1;
     loop {
-        let _e98 = j_3;
-        if (_e98 < n_1) {
+        let _e91 = j_3;
+        if (_e91 < n_1) {
         } else {
             break;
         }
         {
-            let _e101 = j_3;
-            let _e105 = j_3;
-            let _e106 = cell_key(big_2, a_3, _e105);
-            let _e108 = grid_leaves[_e106];
-            grid_entries[(a_3 + _e101)] = _e108;
+            let _e94 = j_3;
+            let _e98 = j_3;
+            let _e99 = cell_key(big_2, a_3, _e98);
+            let _e101 = grid_leaves[_e99];
+            grid_entries[(a_3 + _e94)] = _e101;
         }
         continuing {
-            let _e109 = j_3;
-            j_3 = (_e109 + 64u);
+            let _e102 = j_3;
+            j_3 = (_e102 + 64u);
         }
     }
     workgroupBarrier();
@@ -402,9 +394,9 @@ fn sort_cells(g: GridParams, first: u32, li_2: u32) {
     var span: vec2<u32> = vec2(0u);
     var s: u32;
     var moves: u32 = 0u;
-    var local_1: bool;
+    var local: bool;
     var c_2: u32;
-    var local_2: bool;
+    var local_1: bool;
     var e: u32;
     var b_2: u32 = 0u;
 
@@ -428,11 +420,11 @@ fn sort_cells(g: GridParams, first: u32, li_2: u32) {
         let _e47 = span.y;
         if (_e45 < _e47) {
             let _e51 = moves;
-            local_1 = (_e51 < g.moves);
+            local = (_e51 < g.moves);
         } else {
-            local_1 = false;
+            local = false;
         }
-        let _e55 = local_1;
+        let _e55 = local;
         if _e55 {
         } else {
             break;
@@ -448,11 +440,11 @@ fn sort_cells(g: GridParams, first: u32, li_2: u32) {
                 if (_e62 > _e64) {
                     let _e69 = c_2;
                     let _e73 = grid_entries[(_e69 - 1u)];
-                    local_2 = (_e73 > v_2);
+                    local_1 = (_e73 > v_2);
                 } else {
-                    local_2 = false;
+                    local_1 = false;
                 }
-                let _e76 = local_2;
+                let _e76 = local_1;
                 if _e76 {
                 } else {
                     break;
@@ -505,6 +497,7 @@ fn sort_cells(g: GridParams, first: u32, li_2: u32) {
             }
         }
     }
+    storageBarrier();
     let _e131 = workgroupUniformLoad((&wg_bigs));
     loop {
         let _e134 = b_2;
@@ -571,8 +564,8 @@ fn count_levels(g_1: GridParams, i_2: u32) {
 fn choose_level(g_2: GridParams) {
     var chosen: u32;
     var l_1: u32 = 0u;
+    var local_2: bool;
     var local_3: bool;
-    var local_4: bool;
     var f_3: GridFrame;
 
     let h_3 = g_2.header;
@@ -595,18 +588,18 @@ fn choose_level(g_2: GridParams) {
             let _e33 = chosen;
             if (_e33 == g_2.levels) {
                 let _e42 = atomicLoad((&grid[(at_1 + 1u)]));
-                local_3 = (_e42 == 0u);
+                local_2 = (_e42 == 0u);
+            } else {
+                local_2 = false;
+            }
+            let _e46 = local_2;
+            if _e46 {
+                let _e51 = atomicLoad((&grid[at_1]));
+                local_3 = (_e51 <= budget);
             } else {
                 local_3 = false;
             }
-            let _e46 = local_3;
-            if _e46 {
-                let _e51 = atomicLoad((&grid[at_1]));
-                local_4 = (_e51 <= budget);
-            } else {
-                local_4 = false;
-            }
-            let _e54 = local_4;
+            let _e54 = local_3;
             if _e54 {
                 let _e55 = l_1;
                 chosen = _e55;
@@ -655,7 +648,7 @@ fn choose_level(g_2: GridParams) {
 }
 
 fn fill_cells(g_3: GridParams, i_3: u32, scatter: bool) {
-    var local_5: bool;
+    var local_4: bool;
     var z: u32;
     var y: u32;
     var x_1: u32;
@@ -666,11 +659,11 @@ fn fill_cells(g_3: GridParams, i_3: u32, scatter: bool) {
     let _e6 = grid_frame(g_3.header);
     let _e7 = grid_leaf(i_3);
     if !((_e6.nx == 0u)) {
-        local_5 = (_e7 == BSH_NONE);
+        local_4 = (_e7 == BSH_NONE);
     } else {
-        local_5 = true;
+        local_4 = true;
     }
-    let _e17 = local_5;
+    let _e17 = local_4;
     if _e17 {
         return;
     }

@@ -277,7 +277,6 @@ void sort_together(uint b_1, uint li_1)
 {
     uint j_2 = (uint)0;
     uint p = 1u;
-    bool local = (bool)0;
     uint k = 2u;
     uint h_1 = (uint)0;
     uint t = (uint)0;
@@ -320,19 +319,12 @@ void sort_together(uint b_1, uint li_1)
         loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
         uint _e28 = p;
         if ((_e28 < n_1)) {
-            uint _e32 = p;
-            local = (_e32 < 2147483648u);
-        } else {
-            local = false;
-        }
-        bool _e36 = local;
-        if (_e36) {
         } else {
             break;
         }
         {
-            uint _e37 = p;
-            p = (_e37 << 1u);
+            uint _e30 = p;
+            p = (_e30 << 1u);
         }
     }
     GroupMemoryBarrierWithGroupSync();
@@ -342,31 +334,31 @@ void sort_together(uint b_1, uint li_1)
         if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
         loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e94 = k;
-            k = (_e94 << 1u);
+            uint _e87 = k;
+            k = (_e87 << 1u);
         }
         loop_init_1 = false;
-        uint _e42 = k;
-        uint _e43 = p;
-        if ((_e42 <= _e43)) {
+        uint _e35 = k;
+        uint _e36 = p;
+        if ((_e35 <= _e36)) {
         } else {
             break;
         }
         {
-            uint _e45 = k;
-            h_1 = (_e45 >> 1u);
+            uint _e38 = k;
+            h_1 = (_e38 >> 1u);
             uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
             bool loop_init_2 = true;
             while(true) {
                 if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
                 loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
                 if (!loop_init_2) {
-                    uint _e91 = h_1;
-                    h_1 = (_e91 >> 1u);
+                    uint _e84 = h_1;
+                    h_1 = (_e84 >> 1u);
                 }
                 loop_init_2 = false;
-                uint _e49 = h_1;
-                if ((_e49 > 0u)) {
+                uint _e42 = h_1;
+                if ((_e42 > 0u)) {
                 } else {
                     break;
                 }
@@ -378,33 +370,33 @@ void sort_together(uint b_1, uint li_1)
                         if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
                         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
                         if (!loop_init_3) {
-                            uint _e88 = t;
-                            t = (_e88 + 64u);
+                            uint _e81 = t;
+                            t = (_e81 + 64u);
                         }
                         loop_init_3 = false;
-                        uint _e53 = t;
-                        uint _e54 = p;
-                        if ((_e53 < (_e54 >> 1u))) {
+                        uint _e46 = t;
+                        uint _e47 = p;
+                        if ((_e46 < (_e47 >> 1u))) {
                         } else {
                             break;
                         }
                         {
-                            uint _e58 = t;
-                            uint _e59 = h_1;
-                            uint _e66 = t;
-                            uint _e67 = h_1;
-                            uint i_4 = (((_e58 & ~((_e59 - 1u))) << 1u) | (_e66 & (_e67 - 1u)));
-                            uint _e72 = h_1;
-                            uint _e74 = k;
-                            uint _e78 = h_1;
-                            uint _e79 = k;
-                            uint o = ((_e78 == (_e79 >> 1u)) ? (i_4 ^ (_e74 - 1u)) : (i_4 | _e72));
+                            uint _e51 = t;
+                            uint _e52 = h_1;
+                            uint _e59 = t;
+                            uint _e60 = h_1;
+                            uint i_4 = (((_e51 & ~((_e52 - 1u))) << 1u) | (_e59 & (_e60 - 1u)));
+                            uint _e65 = h_1;
+                            uint _e67 = k;
+                            uint _e71 = h_1;
+                            uint _e72 = k;
+                            uint o = ((_e71 == (_e72 >> 1u)) ? (i_4 ^ (_e67 - 1u)) : (i_4 | _e65));
                             if ((o < n_1)) {
-                                const uint _e85 = cell_key(big_2, a_3, i_4);
-                                const uint _e86 = cell_key(big_2, a_3, o);
-                                if ((_e86 < _e85)) {
-                                    set_cell_key(big_2, a_3, i_4, _e86);
-                                    set_cell_key(big_2, a_3, o, _e85);
+                                const uint _e78 = cell_key(big_2, a_3, i_4);
+                                const uint _e79 = cell_key(big_2, a_3, o);
+                                if ((_e79 < _e78)) {
+                                    set_cell_key(big_2, a_3, i_4, _e79);
+                                    set_cell_key(big_2, a_3, o, _e78);
                                 }
                             }
                         }
@@ -422,21 +414,21 @@ void sort_together(uint b_1, uint li_1)
         if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         if (!loop_init_4) {
-            uint _e109 = j_3;
-            j_3 = (_e109 + 64u);
+            uint _e102 = j_3;
+            j_3 = (_e102 + 64u);
         }
         loop_init_4 = false;
-        uint _e98 = j_3;
-        if ((_e98 < n_1)) {
+        uint _e91 = j_3;
+        if ((_e91 < n_1)) {
         } else {
             break;
         }
         {
-            uint _e101 = j_3;
-            uint _e105 = j_3;
-            const uint _e106 = cell_key(big_2, a_3, _e105);
-            uint _e108 = asuint(grid_leaves.Load(_e106*4));
-            grid_entries.Store((a_3 + _e101)*4, asuint(_e108));
+            uint _e94 = j_3;
+            uint _e98 = j_3;
+            const uint _e99 = cell_key(big_2, a_3, _e98);
+            uint _e101 = asuint(grid_leaves.Load(_e99*4));
+            grid_entries.Store((a_3 + _e94)*4, asuint(_e101));
         }
     }
     GroupMemoryBarrierWithGroupSync();
@@ -448,9 +440,9 @@ void sort_cells(GridParams g, uint first, uint li_2)
     uint2 span = (0u).xx;
     uint s = (uint)0;
     uint moves = 0u;
-    bool local_1 = (bool)0;
+    bool local = (bool)0;
     uint c_2 = (uint)0;
-    bool local_2 = (bool)0;
+    bool local_1 = (bool)0;
     uint e = (uint)0;
     uint b_2 = 0u;
 
@@ -477,11 +469,11 @@ void sort_cells(GridParams g, uint first, uint li_2)
         uint _e47 = span.y;
         if ((_e45 < _e47)) {
             uint _e51 = moves;
-            local_1 = (_e51 < g.moves);
+            local = (_e51 < g.moves);
         } else {
-            local_1 = false;
+            local = false;
         }
-        bool _e55 = local_1;
+        bool _e55 = local;
         if (_e55) {
         } else {
             break;
@@ -500,11 +492,11 @@ void sort_cells(GridParams g, uint first, uint li_2)
                 if ((_e62 > _e64)) {
                     uint _e69 = c_2;
                     uint _e73 = asuint(grid_entries.Load((_e69 - 1u)*4));
-                    local_2 = (_e73 > v_2);
+                    local_1 = (_e73 > v_2);
                 } else {
-                    local_2 = false;
+                    local_1 = false;
                 }
-                bool _e76 = local_2;
+                bool _e76 = local_1;
                 if (_e76) {
                 } else {
                     break;
@@ -562,6 +554,7 @@ void sort_cells(GridParams g, uint first, uint li_2)
             }
         }
     }
+    DeviceMemoryBarrierWithGroupSync();
     GroupMemoryBarrierWithGroupSync();
     uint _e131 = wg_bigs;
     GroupMemoryBarrierWithGroupSync();
@@ -664,8 +657,8 @@ void choose_level(GridParams g_2)
 {
     uint chosen = (uint)0;
     uint l_1 = 0u;
+    bool local_2 = (bool)0;
     bool local_3 = (bool)0;
-    bool local_4 = (bool)0;
     GridFrame f_3 = (GridFrame)0;
 
     uint h_3 = g_2.header;
@@ -697,18 +690,18 @@ void choose_level(GridParams g_2)
             uint _e33 = chosen;
             if ((_e33 == g_2.levels)) {
                 uint _e42; grid.InterlockedOr((at_1 + 1u)*4, 0, _e42);
-                local_3 = (_e42 == 0u);
+                local_2 = (_e42 == 0u);
+            } else {
+                local_2 = false;
+            }
+            bool _e46 = local_2;
+            if (_e46) {
+                uint _e51; grid.InterlockedOr(at_1*4, 0, _e51);
+                local_3 = (_e51 <= budget);
             } else {
                 local_3 = false;
             }
-            bool _e46 = local_3;
-            if (_e46) {
-                uint _e51; grid.InterlockedOr(at_1*4, 0, _e51);
-                local_4 = (_e51 <= budget);
-            } else {
-                local_4 = false;
-            }
-            bool _e54 = local_4;
+            bool _e54 = local_3;
             if (_e54) {
                 uint _e55 = l_1;
                 chosen = _e55;
@@ -754,7 +747,7 @@ void choose_level(GridParams g_2)
 
 void fill_cells(GridParams g_3, uint i_3, bool scatter)
 {
-    bool local_5 = (bool)0;
+    bool local_4 = (bool)0;
     uint z = (uint)0;
     uint y = (uint)0;
     uint x_1 = (uint)0;
@@ -765,11 +758,11 @@ void fill_cells(GridParams g_3, uint i_3, bool scatter)
     const GridFrame _e6 = grid_frame(g_3.header);
     const uint _e7 = grid_leaf(i_3);
     if (!((_e6.nx == 0u))) {
-        local_5 = (_e7 == BSH_NONE);
+        local_4 = (_e7 == BSH_NONE);
     } else {
-        local_5 = true;
+        local_4 = true;
     }
-    bool _e17 = local_5;
+    bool _e17 = local_4;
     if (_e17) {
         return;
     }
