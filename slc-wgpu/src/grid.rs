@@ -59,13 +59,14 @@ pub(crate) struct GpuGrid {
     headers: Vec<u32>,
     /// Leaves in the tree (the per-leaf stages' extent).
     lights: u32,
-    /// Cells of the finest frame (the per-cell stage's extent); 0 without
-    /// a frame (no grid: the walks take the tree).
+    /// Cells of the finest frame; 0 without a frame (no grid: the walks
+    /// take the tree).
     cells: u32,
     /// Whether passes build them ([`GpuGrid::set_enabled`]).
     enabled: bool,
-    /// The device's most workgroups along a dimension.
-    most_groups: u32,
+    /// Stage 5's workgroups, one per `WG` cells of the finest frame, in
+    /// rows of at most the device's most along x.
+    cell_groups: (u32, u32),
 }
 
 impl GpuGrid {
@@ -102,11 +103,14 @@ impl GpuGrid {
         let words_of = |cells: u64| GRID_HEADER as u64 + cells + 1;
         let most = lim.max_compute_workgroups_per_dimension as u64;
         if levels.first().is_some_and(|l| {
-            k * words_of(l.cells()) * 4 > binding || l.cells().div_ceil(most) > most
+            k * words_of(l.cells()) * 4 > binding
+                || l.cells().div_ceil(WG as u64).div_ceil(most) > most
         }) {
             levels.clear();
         }
         let cells = levels.first().map_or(0, |l| l.cells());
+        let groups = cells.div_ceil(WG as u64);
+        let cell_groups = (groups.min(most) as u32, groups.div_ceil(most) as u32);
         let words = words_of(cells);
         // Each grid's entries: its finest frame's budget (a coarser one's
         // is smaller), within its share of the binding; where they start.
@@ -192,7 +196,7 @@ impl GpuGrid {
             lights: tree_lights as u32,
             cells: cells as u32,
             enabled: false,
-            most_groups: lim.max_compute_workgroups_per_dimension,
+            cell_groups,
         })
     }
 
@@ -252,16 +256,13 @@ impl GpuGrid {
         }
         cp.set_pipeline(&self.pipeline);
         let per_light = self.lights.div_ceil(WG);
-        // Stage 5: a workgroup per `WG` cells, rows of `per_cell.0`; every
-        // grid in its own workgroups along z.
-        let groups = self.cells.div_ceil(WG);
-        let per_cell = (groups.min(self.most_groups), groups.div_ceil(self.most_groups));
+        // Every grid in its own workgroups along z.
         let grids = self.headers.len() as u32;
         for stage in 0..STAGES {
             cp.set_bind_group(0, &self.group, &[self.params.offset(stage)]);
             let groups = match stage {
                 0 | 2 | 4 => (per_light, 1),
-                5 => per_cell,
+                5 => self.cell_groups,
                 _ => (1, 1),
             };
             cp.dispatch_workgroups(groups.0, groups.1, grids);
