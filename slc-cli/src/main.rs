@@ -119,7 +119,7 @@ struct RenderArgs {
     /// that a shading point expects a fixed number of candidate lights;
     /// auto:C for C of them].
     #[arg(long, value_parser = methods::bound_arg)]
-    error_bound: Option<methods::BoundArg>,
+    error_bound: Option<slc_scene::error_bound::BoundArg>,
     /// Clamp range R (scene units) for --method clamp [default: 0.1].
     #[arg(long)]
     range: Option<f32>,
@@ -202,7 +202,7 @@ impl RenderArgs {
             range: self.range,
             seed: self.seed,
             no_denoise: self.no_denoise,
-            tile: self.scene.tile,
+            tile: self.scene.tile(),
             near_radius: self.scene.near_radius,
         }
     }
@@ -377,7 +377,7 @@ fn render_pt(a: RenderArgs) -> anyhow::Result<()> {
     // A method that culls nothing has no use for ε: the automatic one (a
     // bisection over the scene's surfaces) is not computed for it.
     let (eps, eps_note) = if method.culls() || a.error_bound.is_some() {
-        methods::pt_error_bound(a.error_bound, f.error_bound, &pts, exposure)?
+        methods::pt_error_bound(a.error_bound, f.pt_error_bound, &pts, exposure)?
     } else {
         (d.error_bound, "unused".into())
     };

@@ -3,7 +3,7 @@
 
 use anyhow::anyhow;
 use slc_scene::culling::{DEFAULT_CLAMP_RANGE, DEFAULT_ERROR_BOUND};
-use slc_scene::error_bound::{TARGET_CANDIDATES, auto_error_bound};
+use slc_scene::error_bound::{BoundArg, TARGET_CANDIDATES, auto_error_bound};
 use slc_scene::pt::{PtMethod, PtScene, PtSettings};
 use slc_scene::vpl::{Culling, VplSettings};
 
@@ -55,59 +55,34 @@ pub fn vpl_settings(
     })
 }
 
-/// `--error-bound`: a number, or `auto` / `auto:C` (path tracing: the ε
-/// whose expected SLC candidates per shading point are `C`, by default
-/// [`TARGET_CANDIDATES`]; `slc_scene::error_bound`).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum BoundArg {
-    /// Set from the scene for this many expected candidates per point.
-    Auto(f64),
-    /// This ε.
-    Value(f32),
-}
-
-/// Most expected candidates per point `auto:C` takes: every candidate
-/// costs a walk step and a weight, so more than this is no bound at all.
-pub const MAX_TARGET_CANDIDATES: f64 = 1e4;
-
-/// Parses `--error-bound`: a number, `auto`, or `auto:C` (a number C;
-/// [`pt_error_bound`] checks its range, as the range code checks ε, so bad
+/// Parses `--error-bound`: a number, `auto`, or `auto:C` ([`BoundArg`];
+/// [`pt_error_bound`] checks C's range, as the range code checks ε, so bad
 /// values get the same one-line error).
 pub fn bound_arg(s: &str) -> anyhow::Result<BoundArg> {
-    if s == "auto" {
-        return Ok(BoundArg::Auto(TARGET_CANDIDATES));
-    }
-    if let Some(c) = s.strip_prefix("auto:") {
-        return c
-            .parse::<f64>()
-            .map(BoundArg::Auto)
-            .map_err(|_| anyhow!("'{c}' in '{s}' is not a number of candidates"));
-    }
-    s.parse::<f32>()
-        .map(BoundArg::Value)
-        .map_err(|_| anyhow!("'{s}' is neither a number, auto nor auto:C"))
+    s.parse().map_err(anyhow::Error::msg)
 }
 
-/// The path tracer's ε and how it was set: the flag's number, else the
-/// scene file's, else (or with `auto`/`auto:C`) the automatic bound of `pts`
-/// (PtSettings' fixed default where no light reaches a surface).
+/// The path tracer's ε and how it was set: the flag, else the scene file's
+/// `[render] pt_error_bound`, else `auto`; a number as given, `auto`/`auto:C`
+/// the automatic bound of `pts` (PtSettings' fixed default where no light
+/// reaches a surface). The file's `error_bound` is the VPL frame's and is
+/// not read here.
 pub fn pt_error_bound(
     flag: Option<BoundArg>,
-    file: Option<f32>,
+    file: Option<BoundArg>,
     pts: &PtScene,
     exposure: f32,
 ) -> anyhow::Result<(f32, String)> {
-    let target = match (flag, file) {
-        (Some(BoundArg::Value(e)), _) => return Ok((e, "given".into())),
-        (None, Some(e)) => return Ok((e, "the scene file's".into())),
-        (Some(BoundArg::Auto(c)), _) => c,
-        (None, None) => TARGET_CANDIDATES,
+    let (bound, source, note) = match (flag, file) {
+        (Some(b), _) => (b, "--error-bound", "given"),
+        (None, Some(b)) => (b, "[render] pt_error_bound", "the scene file's"),
+        (None, None) => (BoundArg::Auto(TARGET_CANDIDATES), "--error-bound", ""),
     };
-    if !(target > 0.0 && target <= MAX_TARGET_CANDIDATES) {
-        return Err(anyhow!(
-            "--error-bound auto:{target}: the expected candidates per point must be in (0, {MAX_TARGET_CANDIDATES}]"
-        ));
+    let target = match bound {
+        BoundArg::Value(e) => return Ok((e, note.into())),
+        BoundArg::Auto(_) => bound.target().map_err(|e| anyhow!("{source} {e}"))?,
     }
+    .unwrap_or(TARGET_CANDIDATES);
     Ok(match auto_error_bound(pts, exposure, target) {
         Some(e) => (e, format!("automatic: {target} expected candidates per surface point")),
         None => (

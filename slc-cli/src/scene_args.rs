@@ -64,12 +64,12 @@ pub struct SceneArgs {
     /// Near-field radius: each pixel shades the VPLs this close itself, not interleaved, which removes the 8×8 blotches at creases; 0 turns the split off [default: 3 × the min distance, 0.0285 in the built-in box].
     #[arg(long)]
     pub near_radius: Option<f32>,
-    /// Culling tile size in sub-image pixels (CPU backend).
-    #[arg(long, default_value_t = VplSettings::default().tile)]
-    pub tile: u32,
-    /// Edge of the primary light's shadow map (GPU frame; the CPU casts shadow rays).
-    #[arg(long, default_value_t = DEFAULT_SHADOW_SIZE)]
-    pub shadow_size: u32,
+    /// Culling tile size in sub-image pixels (CPU backend) [default: 4].
+    #[arg(long)]
+    pub tile: Option<u32>,
+    /// Edge of the primary light's shadow map (GPU frame; the CPU casts shadow rays) [default: 2048].
+    #[arg(long)]
+    pub shadow_size: Option<u32>,
     /// GPU path tracer: cast the light connections' shadow rays as the adapter's ray queries (wgpu's experimental ray queries: GPUs with ray tracing, Mesa 25's lavapipe) instead of the WGSL BVH walk; the closest hits still walk it.
     #[arg(long)]
     pub ray_query: bool,
@@ -165,8 +165,8 @@ impl SceneArgs {
             ("--vpls", self.vpls.is_some()),
             ("--min-distance", self.min_distance.is_some()),
             ("--near-radius", self.near_radius.is_some()),
-            ("--tile", self.tile != VplSettings::default().tile),
-            ("--shadow-size", self.shadow_size != DEFAULT_SHADOW_SIZE),
+            ("--tile", self.tile.is_some()),
+            ("--shadow-size", self.shadow_size.is_some()),
         ];
         match given.iter().find(|(_, on)| *on) {
             Some((flag, _)) => {
@@ -174,6 +174,11 @@ impl SceneArgs {
             }
             None => Ok(()),
         }
+    }
+
+    /// `--tile`, else the default tile size.
+    pub fn tile(&self) -> u32 {
+        self.tile.unwrap_or(VplSettings::default().tile)
     }
 
     /// The exposure (`--exposure`, else the scene file's, else 1), checked
@@ -217,9 +222,36 @@ impl SceneArgs {
             width: r.width,
             height: r.height,
             rsm_size: r.rsm_size,
-            shadow_size: self.shadow_size,
+            shadow_size: self.shadow_size.unwrap_or(DEFAULT_SHADOW_SIZE),
             min_distance: self.min_distance,
         };
         slc_wgpu::frame::GpuVplFrame::new(gpu, &r.scene, &desc).map_err(anyhow::Error::from)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use clap::{CommandFactory, Parser};
+
+    #[derive(Parser)]
+    struct Flags {
+        #[command(flatten)]
+        scene: SceneArgs,
+    }
+
+    /// `--tile` and `--shadow-size` are options (so that a default value
+    /// given explicitly is still refused by the path tracer,
+    /// [`SceneArgs::vpl_only_flags`]): their help states the defaults the
+    /// code applies.
+    #[test]
+    fn help_states_the_defaults_applied() {
+        let help = Flags::command().render_help().to_string();
+        let tile = format!("(CPU backend) [default: {}]", VplSettings::default().tile);
+        let shadow = format!("shadow rays) [default: {DEFAULT_SHADOW_SIZE}]");
+        assert!(help.contains(&tile) && help.contains(&shadow), "{help}");
+        let f = Flags::parse_from(["t", "--app", "pt", "--tile", "4"]);
+        assert!(f.scene.vpl_only_flags().is_err());
+        assert_eq!(Flags::parse_from(["t"]).scene.tile(), VplSettings::default().tile);
     }
 }

@@ -78,15 +78,15 @@ pub fn run(a: ViewArgs) -> anyhow::Result<()> {
         exposure: a.exposure,
         min_distance: a.min_distance,
         near_radius: a.near_radius,
-        tile: VplSettings::default().tile,
-        shadow_size: a.shadow_size,
+        tile: None,
+        shadow_size: Some(a.shadow_size),
         ray_query: false,
         grid: None,
     };
     let r = scene_args.resolve()?;
     let flags = crate::methods::MethodFlags {
         method: a.method.as_deref(),
-        error_bound: a.error_bound.map(crate::methods::BoundArg::Value),
+        error_bound: a.error_bound.map(slc_scene::error_bound::BoundArg::Value),
         range: a.range,
         seed: None,
         no_denoise: a.no_denoise,

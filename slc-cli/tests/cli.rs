@@ -305,6 +305,9 @@ fn bad_input_is_one_line_error() {
         vec!["render", "--spp", "4", "--width", "8", "--height", "8", "--vpls", "64"],
         vec!["bench", "--suite", "scenes/suite", "--width", "8", "--height", "8", "--vpls", "64"],
         vec!["bench", "--app", "pt", "--tile", "2", "--width", "8", "--height", "8"],
+        // ... also when the value given is the default one.
+        vec!["bench", "--app", "pt", "--tile", "4", "--width", "8", "--height", "8"],
+        vec!["render", "--app", "pt", "--shadow-size", "2048", "--width", "8", "--height", "8"],
         vec!["shaders", "--out", "no-kernels", "--lights", ""],
         // Output files whose folder is missing or whose plot kind is unknown
         // fail before the work, not after it.
@@ -806,6 +809,49 @@ fn path_tracer_renders() {
         ],
     );
     assert!(text.contains("error bound ε = 0.5000 (given)"), "{text}");
+    // A scene file's `[render] error_bound` is the VPL frame's (a VPL value
+    // gives a path tracer tens of times the candidates): the path tracer
+    // reads only `pt_error_bound`, a number or `auto:C`, and the flag
+    // overrides it.
+    let file_eps = |render: &str, extra: &[&str]| {
+        std::fs::write(
+            d.join("eps.toml"),
+            format!("[[geometry]]\nbuiltin = \"cornell\"\n[render]\n{render}\n"),
+        )
+        .unwrap();
+        let mut args = vec![
+            "render",
+            "--app",
+            "pt",
+            "--scene",
+            "eps.toml",
+            "--method",
+            "slc-weighted",
+            "--width",
+            "8",
+            "--height",
+            "8",
+            "--spp",
+            "1",
+        ];
+        args.extend_from_slice(extra);
+        slc(&d, &args)
+    };
+    let said = |o: Output| String::from_utf8_lossy(&o.stdout).into_owned();
+    let vpl_eps = said(file_eps("error_bound = 0.008", &[]));
+    assert!(
+        vpl_eps.contains("(automatic: 1.5 expected candidates per surface point)"),
+        "{vpl_eps}"
+    );
+    let pt_eps = said(file_eps("error_bound = 0.008\npt_error_bound = 0.25", &[]));
+    assert!(pt_eps.contains("error bound ε = 0.2500 (the scene file's)"), "{pt_eps}");
+    let pt_auto = said(file_eps("pt_error_bound = \"auto:6\"", &[]));
+    assert!(pt_auto.contains("(automatic: 6 expected candidates per surface point)"), "{pt_auto}");
+    let flag = said(file_eps("pt_error_bound = 0.25", &["--error-bound", "0.5"]));
+    assert!(flag.contains("error bound ε = 0.5000 (given)"), "{flag}");
+    let bad = file_eps("pt_error_bound = \"auto:0\"", &[]);
+    let err = String::from_utf8_lossy(&bad.stderr);
+    assert!(!bad.status.success() && err.contains("[render] pt_error_bound auto:0"), "{err}");
     // `--grid off` walks the light hierarchy at every vertex: the same
     // lights in the same order as the grids' lookups, so the same image.
     let grid = |g: &str| {

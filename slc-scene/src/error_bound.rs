@@ -40,6 +40,57 @@ use slc_core::range::RangeParams;
 /// to scenes nobody tuned it on, instead of the tuned ε.
 pub const TARGET_CANDIDATES: f64 = 1.5;
 
+/// Most expected candidates per point `auto:C` takes: every candidate
+/// costs a walk step and a weight, so more than this is no bound at all.
+pub const MAX_TARGET_CANDIDATES: f64 = 1e4;
+
+/// The path tracer's ε as a user states it (`--error-bound`, a scene
+/// file's `[render] pt_error_bound`): a number, or `auto` / `auto:C`, the
+/// ε whose expected candidates per shading point are `C`
+/// ([`TARGET_CANDIDATES`] by default; [`auto_error_bound`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum BoundArg {
+    /// Set from the scene for this many expected candidates per point.
+    Auto(f64),
+    /// This ε.
+    Value(f32),
+}
+
+impl core::str::FromStr for BoundArg {
+    type Err = String;
+
+    /// A number, `auto`, or `auto:C` (a number C; its range is checked
+    /// where the bound is set, [`BoundArg::target`]).
+    fn from_str(s: &str) -> Result<BoundArg, String> {
+        if s == "auto" {
+            return Ok(BoundArg::Auto(TARGET_CANDIDATES));
+        }
+        if let Some(c) = s.strip_prefix("auto:") {
+            return c
+                .parse::<f64>()
+                .map(BoundArg::Auto)
+                .map_err(|_| format!("'{c}' in '{s}' is not a number of candidates"));
+        }
+        s.parse::<f32>()
+            .map(BoundArg::Value)
+            .map_err(|_| format!("'{s}' is neither a number, auto nor auto:C"))
+    }
+}
+
+impl BoundArg {
+    /// The expected candidates an `Auto` bound aims at, checked to lie in
+    /// (0, [`MAX_TARGET_CANDIDATES`]]; `None` for a number.
+    pub fn target(self) -> Result<Option<f64>, String> {
+        match self {
+            BoundArg::Value(_) => Ok(None),
+            BoundArg::Auto(c) if c > 0.0 && c <= MAX_TARGET_CANDIDATES => Ok(Some(c)),
+            BoundArg::Auto(c) => Err(format!(
+                "auto:{c}: the expected candidates per point must be in (0, {MAX_TARGET_CANDIDATES}]"
+            )),
+        }
+    }
+}
+
 /// Most shading points the mean is taken over; fewer (down to
 /// [`MIN_POINTS`]) where points × lights would pass [`MAX_PAIRS`].
 pub const SAMPLE_POINTS: u32 = 256;

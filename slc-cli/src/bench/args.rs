@@ -45,7 +45,7 @@ pub struct BenchArgs {
     /// auto: set from each scene so that a shading point expects a fixed
     /// number of candidate lights, or C of them; `slc_scene::error_bound`].
     #[arg(long, value_parser = crate::methods::bound_arg)]
-    pub error_bound: Option<crate::methods::BoundArg>,
+    pub error_bound: Option<slc_scene::error_bound::BoundArg>,
     /// Path tracing: seconds per method (equal time).
     #[arg(long, default_value_t = 10.0)]
     pub seconds: f64,

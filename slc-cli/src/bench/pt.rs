@@ -43,7 +43,8 @@ pub(super) fn pt_equal_time(
     let (w, h) =
         (a.scene.width.or(f.width).unwrap_or(128), a.scene.height.or(f.height).unwrap_or(128));
     let pts = PtScene::new(scene, lights)?;
-    let (eps, eps_note) = crate::methods::pt_error_bound(a.error_bound, f.error_bound, &pts, 1.0)?;
+    let (eps, eps_note) =
+        crate::methods::pt_error_bound(a.error_bound, f.pt_error_bound, &pts, 1.0)?;
     // A reference that culls nothing does not depend on ε: keyed without
     // it, its cache serves every --error-bound.
     let ref_eps = if a.reference_method.culls() { eps } else { PtSettings::default().error_bound };

@@ -26,7 +26,7 @@ fn vpl_configs(a: &BenchArgs, exposure: f32) -> anyhow::Result<Vec<(Option<f32>,
             let settings = VplSettings {
                 culling,
                 seed: a.seed,
-                tile: a.scene.tile,
+                tile: a.scene.tile(),
                 near_radius: a.scene.near_radius,
                 ..d
             };
