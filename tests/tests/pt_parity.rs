@@ -613,7 +613,7 @@ fn gpu_grid_gives_the_walks_image() {
                         }
                         let c = bsh_grid_cell(frame, p);
                         assert_ne!(c, BSH_NONE, "{name}: {p} outside the grid");
-                        let cone = lobe_cone(rl);
+                        let cone = lobe_cone(r, rl);
                         let reaches = |b: usize| bsh_reaches(nodes[b], p, r, rl);
                         let admits = |b: usize| {
                             let n = nodes[b];

@@ -41,6 +41,7 @@
 use super::walk::bsh_reaches;
 use super::{BSH_NONE, BSH_TAIL, Bsh, BshNode, bsh_reach_bound};
 use crate::importance::range_scale_at;
+use crate::ray::finite3;
 use crate::wgsl::*;
 use alloc::vec;
 use alloc::vec::Vec;
@@ -156,8 +157,8 @@ crate::shared! {
     /// The cone around a glossy receiver's mirror direction outside which
     /// its range lobe `rl` ([`crate::brdf::range_lobe`]) scales no light's
     /// range, as `(cos² θ, 1/sin θ)`, or `(0, 0)` where it would be no
-    /// narrower than a half-space (`k_d` near 1, a wide lobe) or the lobe is
-    /// not finite (no cut). [`range_scale_at`] is exactly 1 (its lower
+    /// narrower than a half-space (`k_d` near 1, a wide lobe), or the lobe
+    /// or the mirror direction `r` (the cone's axis) is not finite (no cut). [`range_scale_at`] is exactly 1 (its lower
     /// clamp) for every direction at an angle beyond `θ₁` from the mirror
     /// direction, where `k_d + c_s·α²/t² = 1`, i.e.
     /// `t₁ = √(c_s·α²/(1 − k_d))` and `cos θ₁ = 2(1 − t₁)/(1 − α²) − 1`
@@ -167,8 +168,8 @@ crate::shared! {
     /// cosine for the rounding of [`crate::importance::cone_cos_of`] and of
     /// [`lobe_cone_meets`]. A light's bound sphere that misses it gets
     /// scale 1.
-    pub fn lobe_cone(rl: vec4f) -> vec2f {
-        if !(rl.x < 1.0 && rl.y >= 0.0 && rl.z > 0.0 && rl.z < 1.0) {
+    pub fn lobe_cone(r: vec3f, rl: vec4f) -> vec2f {
+        if !(finite3(r) && rl.x < 1.0 && rl.y >= 0.0 && rl.z > 0.0 && rl.z < 1.0) {
             return vec2f(0.0, 0.0);
         }
         let t1: f32 = sqrt(rl.y * rl.z / (1.0 - rl.x));
@@ -707,7 +708,7 @@ impl BshGrid {
         // `bsh_reaches` rejects a leaf whose sphere scaled by `rl.w·1.0001`
         // misses `x` before its lobe's scale: the scan runs that test (and
         // the cone's) on the whole cell, and only its hits take the full one.
-        let cone = (r, if r.is_finite() { lobe_cone(rl) } else { Vec2::ZERO });
+        let cone = (r, lobe_cone(r, rl));
         let mut reaches = |spheres: &Spheres, lights: &[u32], extents: &[f32], k: usize| {
             let (center, radius) = spheres.get(k);
             let leaf = BshNode {

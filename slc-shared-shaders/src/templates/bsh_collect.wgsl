@@ -58,7 +58,7 @@ fn bsh_cursor(x: vec3f, r: vec3f, rl: vec4f) -> BshCursor {
             c.i = grid[h + GRID_HEADER + cell];
             c.end = grid[h + GRID_HEADER + cell + 1u];
             c.next = bsh_nodes[0].next;
-            c.cone = lobe_cone(rl);
+            c.cone = lobe_cone(r, rl);
         }
     }
 {% endif %}

@@ -380,8 +380,8 @@ fn atan_portable(x_4: f32) -> f32 {
     let _e21 = base;
     let _e33 = t;
     let _e35 = t;
-    let r_16 = (_e21 + (((((((((0.080537446f * z) - 0.13877685f) * z) + 0.19977711f) * z) - 0.3333295f) * z) * _e33) + _e35));
-    return select(r_16, -(r_16), (x_4 < 0f));
+    let r_17 = (_e21 + (((((((((0.080537446f * z) - 0.13877685f) * z) + 0.19977711f) * z) - 0.3333295f) * z) * _e33) + _e35));
+    return select(r_17, -(r_17), (x_4 < 0f));
 }
 
 fn atan2_portable(y_1: f32, x_5: f32) -> f32 {
@@ -1421,56 +1421,64 @@ fn bsh_grid_cell(f: GridFrame, x_12: vec3<f32>) -> u32 {
     return ((((_e68 * f.ny) + _e61) * f.nx) + _e54);
 }
 
-fn lobe_cone(rl_5: vec4<f32>) -> vec2<f32> {
+fn lobe_cone(r_7: vec3<f32>, rl_5: vec4<f32>) -> vec2<f32> {
     var local_28: bool;
     var local_29: bool;
     var local_30: bool;
+    var local_31: bool;
     var c_7: f32;
     var tries: u32 = 0u;
 
-    if (rl_5.x < 1f) {
-        local_28 = (rl_5.y >= 0f);
+    let _e2 = finite3_(r_7);
+    if _e2 {
+        local_28 = (rl_5.x < 1f);
     } else {
         local_28 = false;
     }
-    let _e10 = local_28;
-    if _e10 {
-        local_29 = (rl_5.z > 0f);
+    let _e9 = local_28;
+    if _e9 {
+        local_29 = (rl_5.y >= 0f);
     } else {
         local_29 = false;
     }
-    let _e17 = local_29;
-    if _e17 {
-        local_30 = (rl_5.z < 1f);
+    let _e16 = local_29;
+    if _e16 {
+        local_30 = (rl_5.z > 0f);
     } else {
         local_30 = false;
     }
-    let _e24 = local_30;
-    if !(_e24) {
+    let _e23 = local_30;
+    if _e23 {
+        local_31 = (rl_5.z < 1f);
+    } else {
+        local_31 = false;
+    }
+    let _e30 = local_31;
+    if !(_e30) {
         return vec2<f32>(0f, 0f);
     }
     let t1_1 = sqrt(((rl_5.y * rl_5.z) / (1f - rl_5.x)));
     c_7 = (((2f * (1f - t1_1)) / (1f - rl_5.z)) - 1f);
     loop {
-        let _e50 = c_7;
-        let _e51 = range_scale_at(rl_5, _e50);
-        if !((_e51 <= 1f)) {
+        let _e56 = c_7;
+        let _e57 = range_scale_at(rl_5, _e56);
+        if !((_e57 <= 1f)) {
         } else {
             break;
         }
         {
-            let _e55 = c_7;
-            c_7 = (_e55 - 0.0001f);
-            let _e58 = tries;
-            tries = (_e58 + 1u);
-            let _e61 = tries;
-            if (_e61 > 16u) {
+            let _e61 = c_7;
+            c_7 = (_e61 - 0.0001f);
+            let _e64 = tries;
+            tries = (_e64 + 1u);
+            let _e67 = tries;
+            if (_e67 > 16u) {
                 return vec2<f32>(0f, 0f);
             }
         }
     }
-    let _e67 = c_7;
-    let w_13 = min((min(_e67, 1f) - 0.001f), 0.9999f);
+    let _e73 = c_7;
+    let w_13 = min((min(_e73, 1f) - 0.001f), 0.9999f);
     if !((w_13 > 0f)) {
         return vec2<f32>(0f, 0f);
     }
@@ -1478,48 +1486,48 @@ fn lobe_cone(rl_5: vec4<f32>) -> vec2<f32> {
 }
 
 fn lobe_cone_meets(v_9: vec3<f32>, d2_10: f32, extent: f32, axis_5: vec3<f32>, cone: vec2<f32>) -> bool {
-    var local_31: bool;
+    var local_32: bool;
 
     let k_2 = (((extent * LOBE_CONE_PAD) + 0.000000000000000000000000000001f) * cone.y);
     let vd_1 = -(dot(v_9, axis_5));
     let a_14 = (vd_1 + k_2);
     let b_8 = (d2_10 + (k_2 * ((2f * vd_1) + k_2)));
     if (a_14 >= 0f) {
-        local_31 = ((a_14 * a_14) >= (b_8 * cone.x));
+        local_32 = ((a_14 * a_14) >= (b_8 * cone.x));
     } else {
-        local_31 = false;
+        local_32 = false;
     }
-    let _e28 = local_31;
+    let _e28 = local_32;
     return _e28;
 }
 
 fn bsh_lobe_admits(c_8: vec3<f32>, radius_7: f32, extent_1: f32, x_13: vec3<f32>, w_9: f32, axis_6: vec3<f32>, cone_1: vec2<f32>) -> bool {
-    var local_32: bool;
     var local_33: bool;
     var local_34: bool;
+    var local_35: bool;
 
     let v_18 = (x_13 - c_8);
     let d2_14 = dot(v_18, v_18);
     let f_2 = (radius_7 * (w_9 * 1.0001f));
     if (d2_14 <= (f_2 * f_2)) {
         if !((cone_1.y == 0f)) {
-            local_33 = (d2_14 <= (radius_7 * radius_7));
-        } else {
-            local_33 = true;
-        }
-        let _e25 = local_33;
-        if !(_e25) {
-            let _e29 = lobe_cone_meets(v_18, d2_14, extent_1, axis_6, cone_1);
-            local_34 = _e29;
+            local_34 = (d2_14 <= (radius_7 * radius_7));
         } else {
             local_34 = true;
         }
-        let _e31 = local_34;
-        local_32 = _e31;
+        let _e25 = local_34;
+        if !(_e25) {
+            let _e29 = lobe_cone_meets(v_18, d2_14, extent_1, axis_6, cone_1);
+            local_35 = _e29;
+        } else {
+            local_35 = true;
+        }
+        let _e31 = local_35;
+        local_33 = _e31;
     } else {
-        local_32 = false;
+        local_33 = false;
     }
-    let _e33 = local_32;
+    let _e33 = local_33;
     return _e33;
 }
 
@@ -1558,13 +1566,13 @@ fn grid_reach(h_2: u32) -> f32 {
     return bitcast<f32>(_e3);
 }
 
-fn bsh_cursor(x_14: vec3<f32>, r_7: vec3<f32>, rl_6: vec4<f32>) -> BshCursor {
+fn bsh_cursor(x_14: vec3<f32>, r_8: vec3<f32>, rl_6: vec4<f32>) -> BshCursor {
     var c_9: BshCursor;
     var h_3: u32 = 0u;
     var g: u32 = 1u;
-    var local_35: bool;
     var local_36: bool;
     var local_37: bool;
+    var local_38: bool;
 
     c_9.i = 0u;
     c_9.end = 0u;
@@ -1576,11 +1584,11 @@ fn bsh_cursor(x_14: vec3<f32>, r_7: vec3<f32>, rl_6: vec4<f32>) -> BshCursor {
         if (_e18 < GRIDS_MAX) {
             let _e24 = h_3;
             let _e25 = grid_reach(_e24);
-            local_35 = (rl_6.w > _e25);
+            local_36 = (rl_6.w > _e25);
         } else {
-            local_35 = false;
+            local_36 = false;
         }
-        let _e28 = local_35;
+        let _e28 = local_36;
         if _e28 {
         } else {
             break;
@@ -1599,19 +1607,19 @@ fn bsh_cursor(x_14: vec3<f32>, r_7: vec3<f32>, rl_6: vec4<f32>) -> BshCursor {
     let _e37 = grid_frame(_e36);
     let _e39 = c_9.next;
     if (_e39 != BSH_NONE) {
-        local_36 = (_e37.nx > 0u);
-    } else {
-        local_36 = false;
-    }
-    let _e48 = local_36;
-    if _e48 {
-        let _e52 = h_3;
-        let _e53 = grid_reach(_e52);
-        local_37 = (rl_6.w <= _e53);
+        local_37 = (_e37.nx > 0u);
     } else {
         local_37 = false;
     }
-    let _e56 = local_37;
+    let _e48 = local_37;
+    if _e48 {
+        let _e52 = h_3;
+        let _e53 = grid_reach(_e52);
+        local_38 = (rl_6.w <= _e53);
+    } else {
+        local_38 = false;
+    }
+    let _e56 = local_38;
     if _e56 {
         let _e57 = bsh_grid_cell(_e37, x_14);
         if (_e57 != BSH_NONE) {
@@ -1623,7 +1631,7 @@ fn bsh_cursor(x_14: vec3<f32>, r_7: vec3<f32>, rl_6: vec4<f32>) -> BshCursor {
             c_9.end = _e77;
             let _e82 = bsh_nodes[0].next;
             c_9.next = _e82;
-            let _e84 = lobe_cone(rl_6);
+            let _e84 = lobe_cone(r_8, rl_6);
             c_9.cone = _e84;
         }
     }
@@ -1631,9 +1639,9 @@ fn bsh_cursor(x_14: vec3<f32>, r_7: vec3<f32>, rl_6: vec4<f32>) -> BshCursor {
     return _e85;
 }
 
-fn bsh_cursor_next(c_10: ptr<function, BshCursor>, x_15: vec3<f32>, r_8: vec3<f32>, rl_7: vec4<f32>) -> u32 {
-    var local_38: bool;
+fn bsh_cursor_next(c_10: ptr<function, BshCursor>, x_15: vec3<f32>, r_9: vec3<f32>, rl_7: vec4<f32>) -> u32 {
     var local_39: bool;
+    var local_40: bool;
 
     loop {
         let _e5 = (*c_10).i;
@@ -1650,26 +1658,26 @@ fn bsh_cursor_next(c_10: ptr<function, BshCursor>, x_15: vec3<f32>, r_8: vec3<f3
             let n_25 = bsh_nodes[b_9];
             if !((rl_7.w <= 1f)) {
                 let _e32 = (*c_10).cone;
-                let _e33 = bsh_lobe_admits(n_25.center, n_25.radius, n_25.extent, x_15, rl_7.w, r_8, _e32);
-                local_38 = _e33;
+                let _e33 = bsh_lobe_admits(n_25.center, n_25.radius, n_25.extent, x_15, rl_7.w, r_9, _e32);
+                local_39 = _e33;
             } else {
-                local_38 = true;
+                local_39 = true;
             }
-            let _e35 = local_38;
+            let _e35 = local_39;
             if _e35 {
-                let _e38 = bsh_reaches(n_25, x_15, r_8, rl_7);
-                local_39 = _e38;
+                let _e38 = bsh_reaches(n_25, x_15, r_9, rl_7);
+                local_40 = _e38;
             } else {
-                local_39 = false;
+                local_40 = false;
             }
-            let _e40 = local_39;
+            let _e40 = local_40;
             if _e40 {
                 return b_9;
             }
         }
     }
     let _e43 = (*c_10).next;
-    let _e44 = bsh_next_leaf_lobe(BSH, _e43, x_15, r_8, rl_7);
+    let _e44 = bsh_next_leaf_lobe(BSH, _e43, x_15, r_9, rl_7);
     if (_e44 != BSH_NONE) {
         let _e51 = bsh_nodes[_e44].next;
         (*c_10).next = _e51;
@@ -1689,8 +1697,8 @@ fn next_threshold(sum_1: f32, h_4: ptr<function, u32>) -> f32 {
 
 fn connect_record(l_8: GpuLight, x_16: vec3<f32>, n_15: vec3<f32>, ng_1: vec3<f32>, r2_3: f32, rt2_6: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32, trace_1: bool) -> Connection {
     var c_11: Connection;
-    var local_40: bool;
     var local_41: bool;
+    var local_42: bool;
 
     c_11.e = vec3(0f);
     let _e16 = light_point(l_8, u1_2, u2_2);
@@ -1703,16 +1711,16 @@ fn connect_record(l_8: GpuLight, x_16: vec3<f32>, n_15: vec3<f32>, ng_1: vec3<f3
         if trace_1 {
             let _e33 = c_11.y;
             let _e34 = occluded((x_16 + (ng_1 * eps)), _e33);
-            local_41 = _e34;
+            local_42 = _e34;
         } else {
-            local_41 = false;
+            local_42 = false;
         }
-        let _e36 = local_41;
-        local_40 = _e36;
+        let _e36 = local_42;
+        local_41 = _e36;
     } else {
-        local_40 = true;
+        local_41 = true;
     }
-    let _e38 = local_40;
+    let _e38 = local_41;
     if _e38 {
         let _e39 = c_11;
         return _e39;
@@ -1746,42 +1754,42 @@ fn mis_weight(pdf_a_1: f32, pdf_b_1: f32) -> f32 {
     return _e2;
 }
 
-fn light_range_scale(li_2: u32, x_19: vec3<f32>, r_9: vec3<f32>, rl_8: vec4<f32>) -> f32 {
+fn light_range_scale(li_2: u32, x_19: vec3<f32>, r_10: vec3<f32>, rl_8: vec4<f32>) -> f32 {
     let c_17 = light_cones[li_2];
-    let _e9 = range_scale_toward(rl_8, c_17.center, c_17.radius, x_19, r_9);
+    let _e9 = range_scale_toward(rl_8, c_17.center, c_17.radius, x_19, r_10);
     return _e9;
 }
 
-fn light_weight(li_3: u32, x_20: vec3<f32>, n_18: vec3<f32>, r_10: vec3<f32>, lobe_7: vec4<f32>, rl_9: vec4<f32>) -> f32 {
+fn light_weight(li_3: u32, x_20: vec3<f32>, n_18: vec3<f32>, r_11: vec3<f32>, lobe_7: vec4<f32>, rl_9: vec4<f32>) -> f32 {
     let c_18 = light_cones[li_3];
-    let _e15 = light_range_scale(li_3, x_20, r_10, rl_9);
+    let _e15 = light_range_scale(li_3, x_20, r_11, rl_9);
     let _e18 = rt2_7[li_3];
-    let _e20 = cone_weight(c_18.center, c_18.radius, c_18.phi, c_18.axis, c_18.cos_o, c_18.cos_e, (_e15 * _e18), x_20, n_18, r_10, lobe_7);
+    let _e20 = cone_weight(c_18.center, c_18.radius, c_18.phi, c_18.axis, c_18.cos_o, c_18.cos_e, (_e15 * _e18), x_20, n_18, r_11, lobe_7);
     return _e20;
 }
 
-fn select_pdf(li_4: u32, x_21: vec3<f32>, n_19: vec3<f32>, r_11: vec3<f32>, lobe_8: vec4<f32>, rl_10: vec4<f32>, nee: u32, in_range_1: bool) -> f32 {
-    let _e8 = light_weight(li_4, x_21, n_19, r_11, lobe_8, rl_10);
+fn select_pdf(li_4: u32, x_21: vec3<f32>, n_19: vec3<f32>, r_12: vec3<f32>, lobe_8: vec4<f32>, rl_10: vec4<f32>, nee: u32, in_range_1: bool) -> f32 {
+    let _e8 = light_weight(li_4, x_21, n_19, r_12, lobe_8, rl_10);
     let _e11 = weighted_select_pdf(_e8, bitcast<f32>(nee), in_range_1, K);
     return _e11;
 }
 
-fn light_pdf_selected(li_5: u32, x_22: vec3<f32>, r_12: vec3<f32>, rl_11: vec4<f32>, y_2: vec3<f32>, sel: f32) -> f32 {
+fn light_pdf_selected(li_5: u32, x_22: vec3<f32>, r_13: vec3<f32>, rl_11: vec4<f32>, y_2: vec3<f32>, sel: f32) -> f32 {
     let l_9 = lights[li_5];
     let v_20 = (x_22 - y_2);
     let d2_16 = dot(v_20, v_20);
     let _e11 = light_normal(l_9);
     let cos_y_1 = select(0f, dot(_e11, (v_20 / vec3(sqrt(d2_16)))), (d2_16 > 0f));
-    let _e20 = light_range_scale(li_5, x_22, r_12, rl_11);
+    let _e20 = light_range_scale(li_5, x_22, r_13, rl_11);
     let _e23 = rt2_7[li_5];
     let _e25 = light_area(l_9);
     let _e26 = light_strategy_pdf(sel, (_e20 * _e23), d2_16, _e25, cos_y_1);
     return _e26;
 }
 
-fn light_pdf(li_6: u32, x_23: vec3<f32>, n_20: vec3<f32>, r_13: vec3<f32>, lobe_9: vec4<f32>, rl_12: vec4<f32>, y_3: vec3<f32>, nee_1: u32, in_range_2: bool) -> f32 {
-    let _e9 = select_pdf(li_6, x_23, n_20, r_13, lobe_9, rl_12, nee_1, in_range_2);
-    let _e10 = light_pdf_selected(li_6, x_23, r_13, rl_12, y_3, _e9);
+fn light_pdf(li_6: u32, x_23: vec3<f32>, n_20: vec3<f32>, r_14: vec3<f32>, lobe_9: vec4<f32>, rl_12: vec4<f32>, y_3: vec3<f32>, nee_1: u32, in_range_2: bool) -> f32 {
+    let _e9 = select_pdf(li_6, x_23, n_20, r_14, lobe_9, rl_12, nee_1, in_range_2);
+    let _e10 = light_pdf_selected(li_6, x_23, r_14, rl_12, y_3, _e9);
     return _e10;
 }
 
@@ -1840,16 +1848,16 @@ fn weighted_offer(picks_1: ptr<function, WeightedPicks>, li_7: u32, w_10: f32) {
     }
 }
 
-fn bsh_weighted_collect(x_24: vec3<f32>, n_21: vec3<f32>, r_14: vec3<f32>, lobe_10: vec4<f32>, rl_13: vec4<f32>, h0_: u32) -> WeightedPicks {
+fn bsh_weighted_collect(x_24: vec3<f32>, n_21: vec3<f32>, r_15: vec3<f32>, lobe_10: vec4<f32>, rl_13: vec4<f32>, h0_: u32) -> WeightedPicks {
     var picks_2: WeightedPicks;
     var cur: BshCursor;
     var b_6: u32;
 
     let _e6 = weighted_picks(h0_);
     picks_2 = _e6;
-    let _e8 = bsh_cursor(x_24, r_14, rl_13);
+    let _e8 = bsh_cursor(x_24, r_15, rl_13);
     cur = _e8;
-    let _e10 = bsh_cursor_next((&cur), x_24, r_14, rl_13);
+    let _e10 = bsh_cursor_next((&cur), x_24, r_15, rl_13);
     b_6 = _e10;
     loop {
         let _e12 = b_6;
@@ -1860,11 +1868,11 @@ fn bsh_weighted_collect(x_24: vec3<f32>, n_21: vec3<f32>, r_14: vec3<f32>, lobe_
         {
             let _e16 = b_6;
             let li_9 = bsh_nodes[_e16].light;
-            let _e20 = light_weight(li_9, x_24, n_21, r_14, lobe_10, rl_13);
+            let _e20 = light_weight(li_9, x_24, n_21, r_15, lobe_10, rl_13);
             weighted_offer((&picks_2), li_9, _e20);
         }
         continuing {
-            let _e21 = bsh_cursor_next((&cur), x_24, r_14, rl_13);
+            let _e21 = bsh_cursor_next((&cur), x_24, r_15, rl_13);
             b_6 = _e21;
         }
     }
@@ -1872,10 +1880,10 @@ fn bsh_weighted_collect(x_24: vec3<f32>, n_21: vec3<f32>, r_14: vec3<f32>, lobe_
     return _e22;
 }
 
-fn shade_pick(li_8: u32, x_25: vec3<f32>, n_22: vec3<f32>, ng_4: vec3<f32>, m: GpuMaterial, wo_1: vec3<f32>, r_15: vec3<f32>, lobe_11: vec4<f32>, rl_14: vec4<f32>, w_11: f32, nee_2: u32, u1_5: f32, u2_5: f32) -> vec3<f32> {
+fn shade_pick(li_8: u32, x_25: vec3<f32>, n_22: vec3<f32>, ng_4: vec3<f32>, m: GpuMaterial, wo_1: vec3<f32>, r_16: vec3<f32>, lobe_11: vec4<f32>, rl_14: vec4<f32>, w_11: f32, nee_2: u32, u1_5: f32, u2_5: f32) -> vec3<f32> {
     var mis: f32 = 1f;
 
-    let _e13 = light_range_scale(li_8, x_25, r_15, rl_14);
+    let _e13 = light_range_scale(li_8, x_25, r_16, rl_14);
     let _e16 = params.eps;
     let _e17 = connect(li_8, x_25, n_22, ng_4, _e13, w_11, u1_5, u2_5, _e16);
     if (_e17.cos_x <= 0f) {
@@ -1885,7 +1893,7 @@ fn shade_pick(li_8: u32, x_25: vec3<f32>, n_22: vec3<f32>, ng_4: vec3<f32>, m: G
     let _e30 = lights[li_8];
     let _e31 = light_area(_e30);
     if (_e31 > 0f) {
-        let _e36 = light_pdf(li_8, x_25, n_22, r_15, lobe_11, rl_14, _e17.y, nee_2, true);
+        let _e36 = light_pdf(li_8, x_25, n_22, r_16, lobe_11, rl_14, _e17.y, nee_2, true);
         let _e38 = specular_probability(lobe_11);
         let _e39 = bsdf_pdf(n_22, wo_1, l_10, m.alpha, _e38);
         let _e40 = mis_weight(_e36, _e39);

@@ -370,8 +370,8 @@ float atan_portable(float x_4) {
     float _e21 = base;
     float _e33 = t;
     float _e35 = t;
-    float r_16 = (_e21 + (((((((((0.080537446 * z) - 0.13877685) * z) + 0.19977711) * z) - 0.3333295) * z) * _e33) + _e35));
-    return ((x_4 < 0.0) ? -(r_16) : r_16);
+    float r_17 = (_e21 + (((((((((0.080537446 * z) - 0.13877685) * z) + 0.19977711) * z) - 0.3333295) * z) * _e33) + _e35));
+    return ((x_4 < 0.0) ? -(r_17) : r_17);
 }
 
 float atan2_portable(float y_1, float x_5) {
@@ -1393,55 +1393,63 @@ uint bsh_grid_cell(GridFrame f, vec3 x_12) {
     return ((((_e68 * f.ny) + _e61) * f.nx) + _e54);
 }
 
-vec2 lobe_cone(vec4 rl_5) {
+vec2 lobe_cone(vec3 r_7, vec4 rl_5) {
     bool local_28 = false;
     bool local_29 = false;
     bool local_30 = false;
+    bool local_31 = false;
     float c_7 = 0.0;
     uint tries = 0u;
-    if ((rl_5.x < 1.0)) {
-        local_28 = (rl_5.y >= 0.0);
+    bool _e2 = finite3_(r_7);
+    if (_e2) {
+        local_28 = (rl_5.x < 1.0);
     } else {
         local_28 = false;
     }
-    bool _e10 = local_28;
-    if (_e10) {
-        local_29 = (rl_5.z > 0.0);
+    bool _e9 = local_28;
+    if (_e9) {
+        local_29 = (rl_5.y >= 0.0);
     } else {
         local_29 = false;
     }
-    bool _e17 = local_29;
-    if (_e17) {
-        local_30 = (rl_5.z < 1.0);
+    bool _e16 = local_29;
+    if (_e16) {
+        local_30 = (rl_5.z > 0.0);
     } else {
         local_30 = false;
     }
-    bool _e24 = local_30;
-    if (!(_e24)) {
+    bool _e23 = local_30;
+    if (_e23) {
+        local_31 = (rl_5.z < 1.0);
+    } else {
+        local_31 = false;
+    }
+    bool _e30 = local_31;
+    if (!(_e30)) {
         return vec2(0.0, 0.0);
     }
     float t1_1 = sqrt(((rl_5.y * rl_5.z) / (1.0 - rl_5.x)));
     c_7 = (((2.0 * (1.0 - t1_1)) / (1.0 - rl_5.z)) - 1.0);
     while(true) {
-        float _e50 = c_7;
-        float _e51 = range_scale_at(rl_5, _e50);
-        if (!((_e51 <= 1.0))) {
+        float _e56 = c_7;
+        float _e57 = range_scale_at(rl_5, _e56);
+        if (!((_e57 <= 1.0))) {
         } else {
             break;
         }
         {
-            float _e55 = c_7;
-            c_7 = (_e55 - 0.0001);
-            uint _e58 = tries;
-            tries = (_e58 + 1u);
-            uint _e61 = tries;
-            if ((_e61 > 16u)) {
+            float _e61 = c_7;
+            c_7 = (_e61 - 0.0001);
+            uint _e64 = tries;
+            tries = (_e64 + 1u);
+            uint _e67 = tries;
+            if ((_e67 > 16u)) {
                 return vec2(0.0, 0.0);
             }
         }
     }
-    float _e67 = c_7;
-    float w_13 = min((min(_e67, 1.0) - 0.001), 0.9999);
+    float _e73 = c_7;
+    float w_13 = min((min(_e73, 1.0) - 0.001), 0.9999);
     if (!((w_13 > 0.0))) {
         return vec2(0.0, 0.0);
     }
@@ -1449,46 +1457,46 @@ vec2 lobe_cone(vec4 rl_5) {
 }
 
 bool lobe_cone_meets(vec3 v_9, float d2_10, float extent, vec3 axis_5, vec2 cone) {
-    bool local_31 = false;
+    bool local_32 = false;
     float k_2 = (((extent * LOBE_CONE_PAD) + 1e-30) * cone.y);
     float vd_1 = -(dot(v_9, axis_5));
     float a_14 = (vd_1 + k_2);
     float b_8 = (d2_10 + (k_2 * ((2.0 * vd_1) + k_2)));
     if ((a_14 >= 0.0)) {
-        local_31 = ((a_14 * a_14) >= (b_8 * cone.x));
+        local_32 = ((a_14 * a_14) >= (b_8 * cone.x));
     } else {
-        local_31 = false;
+        local_32 = false;
     }
-    bool _e28 = local_31;
+    bool _e28 = local_32;
     return _e28;
 }
 
 bool bsh_lobe_admits(vec3 c_8, float radius_7, float extent_1, vec3 x_13, float w_9, vec3 axis_6, vec2 cone_1) {
-    bool local_32 = false;
     bool local_33 = false;
     bool local_34 = false;
+    bool local_35 = false;
     vec3 v_18 = (x_13 - c_8);
     float d2_14 = dot(v_18, v_18);
     float f_2 = (radius_7 * (w_9 * 1.0001));
     if ((d2_14 <= (f_2 * f_2))) {
         if (!((cone_1.y == 0.0))) {
-            local_33 = (d2_14 <= (radius_7 * radius_7));
-        } else {
-            local_33 = true;
-        }
-        bool _e25 = local_33;
-        if (!(_e25)) {
-            bool _e29 = lobe_cone_meets(v_18, d2_14, extent_1, axis_6, cone_1);
-            local_34 = _e29;
+            local_34 = (d2_14 <= (radius_7 * radius_7));
         } else {
             local_34 = true;
         }
-        bool _e31 = local_34;
-        local_32 = _e31;
+        bool _e25 = local_34;
+        if (!(_e25)) {
+            bool _e29 = lobe_cone_meets(v_18, d2_14, extent_1, axis_6, cone_1);
+            local_35 = _e29;
+        } else {
+            local_35 = true;
+        }
+        bool _e31 = local_35;
+        local_33 = _e31;
     } else {
-        local_32 = false;
+        local_33 = false;
     }
-    bool _e33 = local_32;
+    bool _e33 = local_33;
     return _e33;
 }
 
@@ -1526,13 +1534,13 @@ float grid_reach(uint h_2) {
     return uintBitsToFloat(_e3);
 }
 
-BshCursor bsh_cursor(vec3 x_14, vec3 r_7, vec4 rl_6) {
+BshCursor bsh_cursor(vec3 x_14, vec3 r_8, vec4 rl_6) {
     BshCursor c_9 = BshCursor(0u, 0u, 0u, vec2(0.0));
     uint h_3 = 0u;
     uint g = 1u;
-    bool local_35 = false;
     bool local_36 = false;
     bool local_37 = false;
+    bool local_38 = false;
     c_9.i = 0u;
     c_9.end = 0u;
     uint _e10 = bsh_first(BSH);
@@ -1549,11 +1557,11 @@ BshCursor bsh_cursor(vec3 x_14, vec3 r_7, vec4 rl_6) {
         if ((_e18 < GRIDS_MAX)) {
             uint _e24 = h_3;
             float _e25 = grid_reach(_e24);
-            local_35 = (rl_6.w > _e25);
+            local_36 = (rl_6.w > _e25);
         } else {
-            local_35 = false;
+            local_36 = false;
         }
-        bool _e28 = local_35;
+        bool _e28 = local_36;
         if (_e28) {
         } else {
             break;
@@ -1568,19 +1576,19 @@ BshCursor bsh_cursor(vec3 x_14, vec3 r_7, vec4 rl_6) {
     GridFrame _e37 = grid_frame(_e36);
     uint _e39 = c_9.next;
     if ((_e39 != BSH_NONE)) {
-        local_36 = (_e37.nx > 0u);
-    } else {
-        local_36 = false;
-    }
-    bool _e48 = local_36;
-    if (_e48) {
-        uint _e52 = h_3;
-        float _e53 = grid_reach(_e52);
-        local_37 = (rl_6.w <= _e53);
+        local_37 = (_e37.nx > 0u);
     } else {
         local_37 = false;
     }
-    bool _e56 = local_37;
+    bool _e48 = local_37;
+    if (_e48) {
+        uint _e52 = h_3;
+        float _e53 = grid_reach(_e52);
+        local_38 = (rl_6.w <= _e53);
+    } else {
+        local_38 = false;
+    }
+    bool _e56 = local_38;
     if (_e56) {
         uint _e57 = bsh_grid_cell(_e37, x_14);
         if ((_e57 != BSH_NONE)) {
@@ -1592,7 +1600,7 @@ BshCursor bsh_cursor(vec3 x_14, vec3 r_7, vec4 rl_6) {
             c_9.end = _e77;
             uint _e82 = _group_0_binding_5_cs[0].next;
             c_9.next = _e82;
-            vec2 _e84 = lobe_cone(rl_6);
+            vec2 _e84 = lobe_cone(r_8, rl_6);
             c_9.cone = _e84;
         }
     }
@@ -1600,9 +1608,9 @@ BshCursor bsh_cursor(vec3 x_14, vec3 r_7, vec4 rl_6) {
     return _e85;
 }
 
-uint bsh_cursor_next(inout BshCursor c_10, vec3 x_15, vec3 r_8, vec4 rl_7) {
-    bool local_38 = false;
+uint bsh_cursor_next(inout BshCursor c_10, vec3 x_15, vec3 r_9, vec4 rl_7) {
     bool local_39 = false;
+    bool local_40 = false;
     while(true) {
         uint _e5 = c_10.i;
         uint _e7 = c_10.end;
@@ -1618,26 +1626,26 @@ uint bsh_cursor_next(inout BshCursor c_10, vec3 x_15, vec3 r_8, vec4 rl_7) {
             BshNode n_25 = _group_0_binding_5_cs[b_9];
             if (!((rl_7.w <= 1.0))) {
                 vec2 _e32 = c_10.cone;
-                bool _e33 = bsh_lobe_admits(n_25.center, n_25.radius, n_25.extent, x_15, rl_7.w, r_8, _e32);
-                local_38 = _e33;
+                bool _e33 = bsh_lobe_admits(n_25.center, n_25.radius, n_25.extent, x_15, rl_7.w, r_9, _e32);
+                local_39 = _e33;
             } else {
-                local_38 = true;
+                local_39 = true;
             }
-            bool _e35 = local_38;
+            bool _e35 = local_39;
             if (_e35) {
-                bool _e38 = bsh_reaches(n_25, x_15, r_8, rl_7);
-                local_39 = _e38;
+                bool _e38 = bsh_reaches(n_25, x_15, r_9, rl_7);
+                local_40 = _e38;
             } else {
-                local_39 = false;
+                local_40 = false;
             }
-            bool _e40 = local_39;
+            bool _e40 = local_40;
             if (_e40) {
                 return b_9;
             }
         }
     }
     uint _e43 = c_10.next;
-    uint _e44 = bsh_next_leaf_lobe(BSH, _e43, x_15, r_8, rl_7);
+    uint _e44 = bsh_next_leaf_lobe(BSH, _e43, x_15, r_9, rl_7);
     if ((_e44 != BSH_NONE)) {
         uint _e51 = _group_0_binding_5_cs[_e44].next;
         c_10.next = _e51;
@@ -1657,8 +1665,8 @@ float next_threshold(float sum_1, inout uint h_4) {
 
 Connection connect_record(GpuLight l_8, vec3 x_16, vec3 n_15, vec3 ng_1, float r2_3, float rt2_6, float w_res, float u1_2, float u2_2, float eps, bool trace_1) {
     Connection c_11 = Connection(vec3(0.0), vec3(0.0), 0.0);
-    bool local_40 = false;
     bool local_41 = false;
+    bool local_42 = false;
     c_11.e = vec3(0.0);
     vec3 _e16 = light_point(l_8, u1_2, u2_2);
     c_11.y = _e16;
@@ -1670,16 +1678,16 @@ Connection connect_record(GpuLight l_8, vec3 x_16, vec3 n_15, vec3 ng_1, float r
         if (trace_1) {
             vec3 _e33 = c_11.y;
             bool _e34 = occluded((x_16 + (ng_1 * eps)), _e33);
-            local_41 = _e34;
+            local_42 = _e34;
         } else {
-            local_41 = false;
+            local_42 = false;
         }
-        bool _e36 = local_41;
-        local_40 = _e36;
+        bool _e36 = local_42;
+        local_41 = _e36;
     } else {
-        local_40 = true;
+        local_41 = true;
     }
-    bool _e38 = local_40;
+    bool _e38 = local_41;
     if (_e38) {
         Connection _e39 = c_11;
         return _e39;
@@ -1713,42 +1721,42 @@ float mis_weight(float pdf_a_1, float pdf_b_1) {
     return _e2;
 }
 
-float light_range_scale(uint li_2, vec3 x_19, vec3 r_9, vec4 rl_8) {
+float light_range_scale(uint li_2, vec3 x_19, vec3 r_10, vec4 rl_8) {
     GpuLightCone c_17 = _group_1_binding_2_cs[li_2];
-    float _e9 = range_scale_toward(rl_8, c_17.center, c_17.radius, x_19, r_9);
+    float _e9 = range_scale_toward(rl_8, c_17.center, c_17.radius, x_19, r_10);
     return _e9;
 }
 
-float light_weight(uint li_3, vec3 x_20, vec3 n_18, vec3 r_10, vec4 lobe_7, vec4 rl_9) {
+float light_weight(uint li_3, vec3 x_20, vec3 n_18, vec3 r_11, vec4 lobe_7, vec4 rl_9) {
     GpuLightCone c_18 = _group_1_binding_2_cs[li_3];
-    float _e15 = light_range_scale(li_3, x_20, r_10, rl_9);
+    float _e15 = light_range_scale(li_3, x_20, r_11, rl_9);
     float _e18 = _group_0_binding_3_cs[li_3];
-    float _e20 = cone_weight(c_18.center, c_18.radius, c_18.phi, c_18.axis, c_18.cos_o, c_18.cos_e, (_e15 * _e18), x_20, n_18, r_10, lobe_7);
+    float _e20 = cone_weight(c_18.center, c_18.radius, c_18.phi, c_18.axis, c_18.cos_o, c_18.cos_e, (_e15 * _e18), x_20, n_18, r_11, lobe_7);
     return _e20;
 }
 
-float select_pdf(uint li_4, vec3 x_21, vec3 n_19, vec3 r_11, vec4 lobe_8, vec4 rl_10, uint nee, bool in_range_1) {
-    float _e8 = light_weight(li_4, x_21, n_19, r_11, lobe_8, rl_10);
+float select_pdf(uint li_4, vec3 x_21, vec3 n_19, vec3 r_12, vec4 lobe_8, vec4 rl_10, uint nee, bool in_range_1) {
+    float _e8 = light_weight(li_4, x_21, n_19, r_12, lobe_8, rl_10);
     float _e11 = weighted_select_pdf(_e8, uintBitsToFloat(nee), in_range_1, K);
     return _e11;
 }
 
-float light_pdf_selected(uint li_5, vec3 x_22, vec3 r_12, vec4 rl_11, vec3 y_2, float sel) {
+float light_pdf_selected(uint li_5, vec3 x_22, vec3 r_13, vec4 rl_11, vec3 y_2, float sel) {
     GpuLight l_9 = _group_0_binding_2_cs[li_5];
     vec3 v_20 = (x_22 - y_2);
     float d2_16 = dot(v_20, v_20);
     vec3 _e11 = light_normal(l_9);
     float cos_y_1 = ((d2_16 > 0.0) ? dot(_e11, (v_20 / vec3(sqrt(d2_16)))) : 0.0);
-    float _e20 = light_range_scale(li_5, x_22, r_12, rl_11);
+    float _e20 = light_range_scale(li_5, x_22, r_13, rl_11);
     float _e23 = _group_0_binding_3_cs[li_5];
     float _e25 = light_area(l_9);
     float _e26 = light_strategy_pdf(sel, (_e20 * _e23), d2_16, _e25, cos_y_1);
     return _e26;
 }
 
-float light_pdf(uint li_6, vec3 x_23, vec3 n_20, vec3 r_13, vec4 lobe_9, vec4 rl_12, vec3 y_3, uint nee_1, bool in_range_2) {
-    float _e9 = select_pdf(li_6, x_23, n_20, r_13, lobe_9, rl_12, nee_1, in_range_2);
-    float _e10 = light_pdf_selected(li_6, x_23, r_13, rl_12, y_3, _e9);
+float light_pdf(uint li_6, vec3 x_23, vec3 n_20, vec3 r_14, vec4 lobe_9, vec4 rl_12, vec3 y_3, uint nee_1, bool in_range_2) {
+    float _e9 = select_pdf(li_6, x_23, n_20, r_14, lobe_9, rl_12, nee_1, in_range_2);
+    float _e10 = light_pdf_selected(li_6, x_23, r_14, rl_12, y_3, _e9);
     return _e10;
 }
 
@@ -1807,20 +1815,20 @@ void weighted_offer(inout WeightedPicks picks_1, uint li_7, float w_10) {
     }
 }
 
-WeightedPicks bsh_weighted_collect(vec3 x_24, vec3 n_21, vec3 r_14, vec4 lobe_10, vec4 rl_13, uint h0_) {
+WeightedPicks bsh_weighted_collect(vec3 x_24, vec3 n_21, vec3 r_15, vec4 lobe_10, vec4 rl_13, uint h0_) {
     WeightedPicks picks_2 = WeightedPicks(uint[8](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u), float[8](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), float[8](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0.0, 0u, 0u);
     BshCursor cur = BshCursor(0u, 0u, 0u, vec2(0.0));
     uint b_6 = 0u;
     WeightedPicks _e6 = weighted_picks(h0_);
     picks_2 = _e6;
-    BshCursor _e8 = bsh_cursor(x_24, r_14, rl_13);
+    BshCursor _e8 = bsh_cursor(x_24, r_15, rl_13);
     cur = _e8;
-    uint _e10 = bsh_cursor_next(cur, x_24, r_14, rl_13);
+    uint _e10 = bsh_cursor_next(cur, x_24, r_15, rl_13);
     b_6 = _e10;
     bool loop_init_3 = true;
     while(true) {
         if (!loop_init_3) {
-            uint _e21 = bsh_cursor_next(cur, x_24, r_14, rl_13);
+            uint _e21 = bsh_cursor_next(cur, x_24, r_15, rl_13);
             b_6 = _e21;
         }
         loop_init_3 = false;
@@ -1832,7 +1840,7 @@ WeightedPicks bsh_weighted_collect(vec3 x_24, vec3 n_21, vec3 r_14, vec4 lobe_10
         {
             uint _e16 = b_6;
             uint li_9 = _group_0_binding_5_cs[_e16].light;
-            float _e20 = light_weight(li_9, x_24, n_21, r_14, lobe_10, rl_13);
+            float _e20 = light_weight(li_9, x_24, n_21, r_15, lobe_10, rl_13);
             weighted_offer(picks_2, li_9, _e20);
         }
     }
@@ -1840,9 +1848,9 @@ WeightedPicks bsh_weighted_collect(vec3 x_24, vec3 n_21, vec3 r_14, vec4 lobe_10
     return _e22;
 }
 
-vec3 shade_pick(uint li_8, vec3 x_25, vec3 n_22, vec3 ng_4, GpuMaterial m, vec3 wo_1, vec3 r_15, vec4 lobe_11, vec4 rl_14, float w_11, uint nee_2, float u1_5, float u2_5) {
+vec3 shade_pick(uint li_8, vec3 x_25, vec3 n_22, vec3 ng_4, GpuMaterial m, vec3 wo_1, vec3 r_16, vec4 lobe_11, vec4 rl_14, float w_11, uint nee_2, float u1_5, float u2_5) {
     float mis = 1.0;
-    float _e13 = light_range_scale(li_8, x_25, r_15, rl_14);
+    float _e13 = light_range_scale(li_8, x_25, r_16, rl_14);
     float _e16 = _group_0_binding_0_cs.eps;
     Connection _e17 = connect(li_8, x_25, n_22, ng_4, _e13, w_11, u1_5, u2_5, _e16);
     if ((_e17.cos_x <= 0.0)) {
@@ -1852,7 +1860,7 @@ vec3 shade_pick(uint li_8, vec3 x_25, vec3 n_22, vec3 ng_4, GpuMaterial m, vec3 
     GpuLight _e30 = _group_0_binding_2_cs[li_8];
     float _e31 = light_area(_e30);
     if ((_e31 > 0.0)) {
-        float _e36 = light_pdf(li_8, x_25, n_22, r_15, lobe_11, rl_14, _e17.y, nee_2, true);
+        float _e36 = light_pdf(li_8, x_25, n_22, r_16, lobe_11, rl_14, _e17.y, nee_2, true);
         float _e38 = specular_probability(lobe_11);
         float _e39 = bsdf_pdf(n_22, wo_1, l_10, m.alpha, _e38);
         float _e40 = mis_weight(_e36, _e39);

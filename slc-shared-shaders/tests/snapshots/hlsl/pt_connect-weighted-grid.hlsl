@@ -394,8 +394,8 @@ float atan_portable(float x_4)
     float _e21 = base;
     float _e33 = t;
     float _e35 = t;
-    float r_16 = (_e21 + (((((((((0.080537446 * z) - 0.13877685) * z) + 0.19977711) * z) - 0.3333295) * z) * _e33) + _e35));
-    return ((x_4 < 0.0) ? -(r_16) : r_16);
+    float r_17 = (_e21 + (((((((((0.080537446 * z) - 0.13877685) * z) + 0.19977711) * z) - 0.3333295) * z) * _e33) + _e35));
+    return ((x_4 < 0.0) ? -(r_17) : r_17);
 }
 
 float atan2_portable(float y_1, float x_5)
@@ -1566,33 +1566,41 @@ uint bsh_grid_cell(GridFrame f, float3 x_12)
     return ((((_e68 * f.ny) + _e61) * f.nx) + _e54);
 }
 
-float2 lobe_cone(float4 rl_5)
+float2 lobe_cone(float3 r_7, float4 rl_5)
 {
     bool local_28 = (bool)0;
     bool local_29 = (bool)0;
     bool local_30 = (bool)0;
+    bool local_31 = (bool)0;
     float c_7 = (float)0;
     uint tries = 0u;
 
-    if ((rl_5.x < 1.0)) {
-        local_28 = (rl_5.y >= 0.0);
+    const bool _e2 = finite3_(r_7);
+    if (_e2) {
+        local_28 = (rl_5.x < 1.0);
     } else {
         local_28 = false;
     }
-    bool _e10 = local_28;
-    if (_e10) {
-        local_29 = (rl_5.z > 0.0);
+    bool _e9 = local_28;
+    if (_e9) {
+        local_29 = (rl_5.y >= 0.0);
     } else {
         local_29 = false;
     }
-    bool _e17 = local_29;
-    if (_e17) {
-        local_30 = (rl_5.z < 1.0);
+    bool _e16 = local_29;
+    if (_e16) {
+        local_30 = (rl_5.z > 0.0);
     } else {
         local_30 = false;
     }
-    bool _e24 = local_30;
-    if (!(_e24)) {
+    bool _e23 = local_30;
+    if (_e23) {
+        local_31 = (rl_5.z < 1.0);
+    } else {
+        local_31 = false;
+    }
+    bool _e30 = local_31;
+    if (!(_e30)) {
         return float2(0.0, 0.0);
     }
     float t1_1 = sqrt(((rl_5.y * rl_5.z) / (1.0 - rl_5.x)));
@@ -1601,25 +1609,25 @@ float2 lobe_cone(float4 rl_5)
     while(true) {
         if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
-        float _e50 = c_7;
-        const float _e51 = range_scale_at(rl_5, _e50);
-        if (!((_e51 <= 1.0))) {
+        float _e56 = c_7;
+        const float _e57 = range_scale_at(rl_5, _e56);
+        if (!((_e57 <= 1.0))) {
         } else {
             break;
         }
         {
-            float _e55 = c_7;
-            c_7 = (_e55 - 0.0001);
-            uint _e58 = tries;
-            tries = (_e58 + 1u);
-            uint _e61 = tries;
-            if ((_e61 > 16u)) {
+            float _e61 = c_7;
+            c_7 = (_e61 - 0.0001);
+            uint _e64 = tries;
+            tries = (_e64 + 1u);
+            uint _e67 = tries;
+            if ((_e67 > 16u)) {
                 return float2(0.0, 0.0);
             }
         }
     }
-    float _e67 = c_7;
-    float w_13 = min((min(_e67, 1.0) - 0.001), 0.9999);
+    float _e73 = c_7;
+    float w_13 = min((min(_e73, 1.0) - 0.001), 0.9999);
     if (!((w_13 > 0.0))) {
         return float2(0.0, 0.0);
     }
@@ -1628,49 +1636,49 @@ float2 lobe_cone(float4 rl_5)
 
 bool lobe_cone_meets(float3 v_9, float d2_10, float extent, float3 axis_5, float2 cone)
 {
-    bool local_31 = (bool)0;
+    bool local_32 = (bool)0;
 
     float k_2 = (((extent * LOBE_CONE_PAD) + 1e-30) * cone.y);
     float vd_1 = -(dot(v_9, axis_5));
     float a_14 = (vd_1 + k_2);
     float b_8 = (d2_10 + (k_2 * ((2.0 * vd_1) + k_2)));
     if ((a_14 >= 0.0)) {
-        local_31 = ((a_14 * a_14) >= (b_8 * cone.x));
+        local_32 = ((a_14 * a_14) >= (b_8 * cone.x));
     } else {
-        local_31 = false;
+        local_32 = false;
     }
-    bool _e28 = local_31;
+    bool _e28 = local_32;
     return _e28;
 }
 
 bool bsh_lobe_admits(float3 c_8, float radius_7, float extent_1, float3 x_13, float w_9, float3 axis_6, float2 cone_1)
 {
-    bool local_32 = (bool)0;
     bool local_33 = (bool)0;
     bool local_34 = (bool)0;
+    bool local_35 = (bool)0;
 
     float3 v_18 = (x_13 - c_8);
     float d2_14 = dot(v_18, v_18);
     float f_2 = (radius_7 * (w_9 * 1.0001));
     if ((d2_14 <= (f_2 * f_2))) {
         if (!((cone_1.y == 0.0))) {
-            local_33 = (d2_14 <= (radius_7 * radius_7));
-        } else {
-            local_33 = true;
-        }
-        bool _e25 = local_33;
-        if (!(_e25)) {
-            const bool _e29 = lobe_cone_meets(v_18, d2_14, extent_1, axis_6, cone_1);
-            local_34 = _e29;
+            local_34 = (d2_14 <= (radius_7 * radius_7));
         } else {
             local_34 = true;
         }
-        bool _e31 = local_34;
-        local_32 = _e31;
+        bool _e25 = local_34;
+        if (!(_e25)) {
+            const bool _e29 = lobe_cone_meets(v_18, d2_14, extent_1, axis_6, cone_1);
+            local_35 = _e29;
+        } else {
+            local_35 = true;
+        }
+        bool _e31 = local_35;
+        local_33 = _e31;
     } else {
-        local_32 = false;
+        local_33 = false;
     }
-    bool _e33 = local_32;
+    bool _e33 = local_33;
     return _e33;
 }
 
@@ -1713,14 +1721,14 @@ float grid_reach(uint h_2)
     return asfloat(_e3);
 }
 
-BshCursor bsh_cursor(float3 x_14, float3 r_7, float4 rl_6)
+BshCursor bsh_cursor(float3 x_14, float3 r_8, float4 rl_6)
 {
     BshCursor c_9 = (BshCursor)0;
     uint h_3 = 0u;
     uint g = 1u;
-    bool local_35 = (bool)0;
     bool local_36 = (bool)0;
     bool local_37 = (bool)0;
+    bool local_38 = (bool)0;
 
     c_9.i = 0u;
     c_9.end = 0u;
@@ -1741,11 +1749,11 @@ BshCursor bsh_cursor(float3 x_14, float3 r_7, float4 rl_6)
         if ((_e18 < GRIDS_MAX)) {
             uint _e24 = h_3;
             const float _e25 = grid_reach(_e24);
-            local_35 = (rl_6.w > _e25);
+            local_36 = (rl_6.w > _e25);
         } else {
-            local_35 = false;
+            local_36 = false;
         }
-        bool _e28 = local_35;
+        bool _e28 = local_36;
         if (_e28) {
         } else {
             break;
@@ -1760,19 +1768,19 @@ BshCursor bsh_cursor(float3 x_14, float3 r_7, float4 rl_6)
     const GridFrame _e37 = grid_frame(_e36);
     uint _e39 = c_9.next;
     if ((_e39 != BSH_NONE)) {
-        local_36 = (_e37.nx > 0u);
-    } else {
-        local_36 = false;
-    }
-    bool _e48 = local_36;
-    if (_e48) {
-        uint _e52 = h_3;
-        const float _e53 = grid_reach(_e52);
-        local_37 = (rl_6.w <= _e53);
+        local_37 = (_e37.nx > 0u);
     } else {
         local_37 = false;
     }
-    bool _e56 = local_37;
+    bool _e48 = local_37;
+    if (_e48) {
+        uint _e52 = h_3;
+        const float _e53 = grid_reach(_e52);
+        local_38 = (rl_6.w <= _e53);
+    } else {
+        local_38 = false;
+    }
+    bool _e56 = local_38;
     if (_e56) {
         const uint _e57 = bsh_grid_cell(_e37, x_14);
         if ((_e57 != BSH_NONE)) {
@@ -1784,7 +1792,7 @@ BshCursor bsh_cursor(float3 x_14, float3 r_7, float4 rl_6)
             c_9.end = _e77;
             uint _e82 = asuint(bsh_nodes.Load(20+0));
             c_9.next = _e82;
-            const float2 _e84 = lobe_cone(rl_6);
+            const float2 _e84 = lobe_cone(r_8, rl_6);
             c_9.cone = _e84;
         }
     }
@@ -1793,10 +1801,10 @@ BshCursor bsh_cursor(float3 x_14, float3 r_7, float4 rl_6)
     return bshcursor;
 }
 
-uint bsh_cursor_next(inout BshCursor c_10, float3 x_15, float3 r_8, float4 rl_7)
+uint bsh_cursor_next(inout BshCursor c_10, float3 x_15, float3 r_9, float4 rl_7)
 {
-    bool local_38 = (bool)0;
     bool local_39 = (bool)0;
+    bool local_40 = (bool)0;
 
     uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
     while(true) {
@@ -1816,26 +1824,26 @@ uint bsh_cursor_next(inout BshCursor c_10, float3 x_15, float3 r_8, float4 rl_7)
             BshNode n_25 = ConstructBshNode(asfloat(bsh_nodes.Load3(b_9*32+0)), asfloat(bsh_nodes.Load(b_9*32+12)), asuint(bsh_nodes.Load(b_9*32+16)), asuint(bsh_nodes.Load(b_9*32+20)), asuint(bsh_nodes.Load(b_9*32+24)), asfloat(bsh_nodes.Load(b_9*32+28)));
             if (!((rl_7.w <= 1.0))) {
                 float2 _e32 = c_10.cone;
-                const bool _e33 = bsh_lobe_admits(n_25.center_, n_25.radius, n_25.extent, x_15, rl_7.w, r_8, _e32);
-                local_38 = _e33;
+                const bool _e33 = bsh_lobe_admits(n_25.center_, n_25.radius, n_25.extent, x_15, rl_7.w, r_9, _e32);
+                local_39 = _e33;
             } else {
-                local_38 = true;
+                local_39 = true;
             }
-            bool _e35 = local_38;
+            bool _e35 = local_39;
             if (_e35) {
-                const bool _e38 = bsh_reaches(n_25, x_15, r_8, rl_7);
-                local_39 = _e38;
+                const bool _e38 = bsh_reaches(n_25, x_15, r_9, rl_7);
+                local_40 = _e38;
             } else {
-                local_39 = false;
+                local_40 = false;
             }
-            bool _e40 = local_39;
+            bool _e40 = local_40;
             if (_e40) {
                 return b_9;
             }
         }
     }
     uint _e43 = c_10.next;
-    const uint _e44 = bsh_next_leaf_lobe(BSH, _e43, x_15, r_8, rl_7);
+    const uint _e44 = bsh_next_leaf_lobe(BSH, _e43, x_15, r_9, rl_7);
     if ((_e44 != BSH_NONE)) {
         uint _e51 = asuint(bsh_nodes.Load(20+_e44*32));
         c_10.next = _e51;
@@ -1857,8 +1865,8 @@ float next_threshold(float sum_1, inout uint h_4)
 Connection connect_record(GpuLight l_8, float3 x_16, float3 n_15, float3 ng_1, float r2_3, float rt2_6, float w_res, float u1_2, float u2_2, float eps, bool trace_1)
 {
     Connection c_11 = (Connection)0;
-    bool local_40 = (bool)0;
     bool local_41 = (bool)0;
+    bool local_42 = (bool)0;
 
     c_11.e = (0.0).xxx;
     const float3 _e16 = light_point(l_8, u1_2, u2_2);
@@ -1871,16 +1879,16 @@ Connection connect_record(GpuLight l_8, float3 x_16, float3 n_15, float3 ng_1, f
         if (trace_1) {
             float3 _e33 = c_11.y;
             const bool _e34 = occluded((x_16 + (ng_1 * eps)), _e33);
-            local_41 = _e34;
+            local_42 = _e34;
         } else {
-            local_41 = false;
+            local_42 = false;
         }
-        bool _e36 = local_41;
-        local_40 = _e36;
+        bool _e36 = local_42;
+        local_41 = _e36;
     } else {
-        local_40 = true;
+        local_41 = true;
     }
-    bool _e38 = local_40;
+    bool _e38 = local_41;
     if (_e38) {
         Connection _e39 = c_11;
         const Connection connection = _e39;
@@ -1947,47 +1955,47 @@ GpuLightCone ConstructGpuLightCone(float3 arg0, float arg1, float3 arg2, float a
     return ret;
 }
 
-float light_range_scale(uint li_2, float3 x_19, float3 r_9, float4 rl_8)
+float light_range_scale(uint li_2, float3 x_19, float3 r_10, float4 rl_8)
 {
     GpuLightCone c_17 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_2*48+0)), asfloat(light_cones.Load(li_2*48+12)), asfloat(light_cones.Load3(li_2*48+16)), asfloat(light_cones.Load(li_2*48+28)), asfloat(light_cones.Load(li_2*48+32)), asfloat(light_cones.Load(li_2*48+36)), asuint(light_cones.Load(li_2*48+40)), asuint(light_cones.Load(li_2*48+44)));
-    const float _e9 = range_scale_toward(rl_8, c_17.center_, c_17.radius, x_19, r_9);
+    const float _e9 = range_scale_toward(rl_8, c_17.center_, c_17.radius, x_19, r_10);
     return _e9;
 }
 
-float light_weight(uint li_3, float3 x_20, float3 n_18, float3 r_10, float4 lobe_7, float4 rl_9)
+float light_weight(uint li_3, float3 x_20, float3 n_18, float3 r_11, float4 lobe_7, float4 rl_9)
 {
     GpuLightCone c_18 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_3*48+0)), asfloat(light_cones.Load(li_3*48+12)), asfloat(light_cones.Load3(li_3*48+16)), asfloat(light_cones.Load(li_3*48+28)), asfloat(light_cones.Load(li_3*48+32)), asfloat(light_cones.Load(li_3*48+36)), asuint(light_cones.Load(li_3*48+40)), asuint(light_cones.Load(li_3*48+44)));
-    const float _e15 = light_range_scale(li_3, x_20, r_10, rl_9);
+    const float _e15 = light_range_scale(li_3, x_20, r_11, rl_9);
     float _e18 = asfloat(rt2_7.Load(li_3*4));
-    const float _e20 = cone_weight(c_18.center_, c_18.radius, c_18.phi, c_18.axis, c_18.cos_o, c_18.cos_e, (_e15 * _e18), x_20, n_18, r_10, lobe_7);
+    const float _e20 = cone_weight(c_18.center_, c_18.radius, c_18.phi, c_18.axis, c_18.cos_o, c_18.cos_e, (_e15 * _e18), x_20, n_18, r_11, lobe_7);
     return _e20;
 }
 
-float select_pdf(uint li_4, float3 x_21, float3 n_19, float3 r_11, float4 lobe_8, float4 rl_10, uint nee, bool in_range_1)
+float select_pdf(uint li_4, float3 x_21, float3 n_19, float3 r_12, float4 lobe_8, float4 rl_10, uint nee, bool in_range_1)
 {
-    const float _e8 = light_weight(li_4, x_21, n_19, r_11, lobe_8, rl_10);
+    const float _e8 = light_weight(li_4, x_21, n_19, r_12, lobe_8, rl_10);
     const float _e11 = weighted_select_pdf(_e8, asfloat(nee), in_range_1, K);
     return _e11;
 }
 
-float light_pdf_selected(uint li_5, float3 x_22, float3 r_12, float4 rl_11, float3 y_2, float sel)
+float light_pdf_selected(uint li_5, float3 x_22, float3 r_13, float4 rl_11, float3 y_2, float sel)
 {
     GpuLight l_9 = ConstructGpuLight(asfloat(lights.Load3(li_5*64+0)), asuint(lights.Load(li_5*64+12)), asfloat(lights.Load3(li_5*64+16)), asfloat(lights.Load(li_5*64+28)), asfloat(lights.Load3(li_5*64+32)), asfloat(lights.Load(li_5*64+44)), asfloat(lights.Load3(li_5*64+48)), asuint(lights.Load(li_5*64+60)));
     float3 v_20 = (x_22 - y_2);
     float d2_16 = dot(v_20, v_20);
     const float3 _e11 = light_normal(l_9);
     float cos_y_1 = ((d2_16 > 0.0) ? dot(_e11, (v_20 / (sqrt(d2_16)).xxx)) : 0.0);
-    const float _e20 = light_range_scale(li_5, x_22, r_12, rl_11);
+    const float _e20 = light_range_scale(li_5, x_22, r_13, rl_11);
     float _e23 = asfloat(rt2_7.Load(li_5*4));
     const float _e25 = light_area(l_9);
     const float _e26 = light_strategy_pdf(sel, (_e20 * _e23), d2_16, _e25, cos_y_1);
     return _e26;
 }
 
-float light_pdf(uint li_6, float3 x_23, float3 n_20, float3 r_13, float4 lobe_9, float4 rl_12, float3 y_3, uint nee_1, bool in_range_2)
+float light_pdf(uint li_6, float3 x_23, float3 n_20, float3 r_14, float4 lobe_9, float4 rl_12, float3 y_3, uint nee_1, bool in_range_2)
 {
-    const float _e9 = select_pdf(li_6, x_23, n_20, r_13, lobe_9, rl_12, nee_1, in_range_2);
-    const float _e10 = light_pdf_selected(li_6, x_23, r_13, rl_12, y_3, _e9);
+    const float _e9 = select_pdf(li_6, x_23, n_20, r_14, lobe_9, rl_12, nee_1, in_range_2);
+    const float _e10 = light_pdf_selected(li_6, x_23, r_14, rl_12, y_3, _e9);
     return _e10;
 }
 
@@ -2054,7 +2062,7 @@ void weighted_offer(inout WeightedPicks picks_1, uint li_7, float w_10)
     }
 }
 
-WeightedPicks bsh_weighted_collect(float3 x_24, float3 n_21, float3 r_14, float4 lobe_10, float4 rl_13, uint h0_)
+WeightedPicks bsh_weighted_collect(float3 x_24, float3 n_21, float3 r_15, float4 lobe_10, float4 rl_13, uint h0_)
 {
     WeightedPicks picks_2 = (WeightedPicks)0;
     BshCursor cur = (BshCursor)0;
@@ -2062,9 +2070,9 @@ WeightedPicks bsh_weighted_collect(float3 x_24, float3 n_21, float3 r_14, float4
 
     const WeightedPicks _e6 = weighted_picks(h0_);
     picks_2 = _e6;
-    const BshCursor _e8 = bsh_cursor(x_24, r_14, rl_13);
+    const BshCursor _e8 = bsh_cursor(x_24, r_15, rl_13);
     cur = _e8;
-    const uint _e10 = bsh_cursor_next(cur, x_24, r_14, rl_13);
+    const uint _e10 = bsh_cursor_next(cur, x_24, r_15, rl_13);
     b_6 = _e10;
     uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
     bool loop_init_3 = true;
@@ -2072,7 +2080,7 @@ WeightedPicks bsh_weighted_collect(float3 x_24, float3 n_21, float3 r_14, float4
         if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
         loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
         if (!loop_init_3) {
-            const uint _e21 = bsh_cursor_next(cur, x_24, r_14, rl_13);
+            const uint _e21 = bsh_cursor_next(cur, x_24, r_15, rl_13);
             b_6 = _e21;
         }
         loop_init_3 = false;
@@ -2084,7 +2092,7 @@ WeightedPicks bsh_weighted_collect(float3 x_24, float3 n_21, float3 r_14, float4
         {
             uint _e16 = b_6;
             uint li_9 = asuint(bsh_nodes.Load(24+_e16*32));
-            const float _e20 = light_weight(li_9, x_24, n_21, r_14, lobe_10, rl_13);
+            const float _e20 = light_weight(li_9, x_24, n_21, r_15, lobe_10, rl_13);
             weighted_offer(picks_2, li_9, _e20);
         }
     }
@@ -2093,11 +2101,11 @@ WeightedPicks bsh_weighted_collect(float3 x_24, float3 n_21, float3 r_14, float4
     return weightedpicks_1;
 }
 
-float3 shade_pick(uint li_8, float3 x_25, float3 n_22, float3 ng_4, GpuMaterial m, float3 wo_1, float3 r_15, float4 lobe_11, float4 rl_14, float w_11, uint nee_2, float u1_5, float u2_5)
+float3 shade_pick(uint li_8, float3 x_25, float3 n_22, float3 ng_4, GpuMaterial m, float3 wo_1, float3 r_16, float4 lobe_11, float4 rl_14, float w_11, uint nee_2, float u1_5, float u2_5)
 {
     float mis = 1.0;
 
-    const float _e13 = light_range_scale(li_8, x_25, r_15, rl_14);
+    const float _e13 = light_range_scale(li_8, x_25, r_16, rl_14);
     float _e16 = params.eps;
     const Connection _e17 = connect(li_8, x_25, n_22, ng_4, _e13, w_11, u1_5, u2_5, _e16);
     if ((_e17.cos_x <= 0.0)) {
@@ -2107,7 +2115,7 @@ float3 shade_pick(uint li_8, float3 x_25, float3 n_22, float3 ng_4, GpuMaterial 
     GpuLight _e30 = ConstructGpuLight(asfloat(lights.Load3(li_8*64+0)), asuint(lights.Load(li_8*64+12)), asfloat(lights.Load3(li_8*64+16)), asfloat(lights.Load(li_8*64+28)), asfloat(lights.Load3(li_8*64+32)), asfloat(lights.Load(li_8*64+44)), asfloat(lights.Load3(li_8*64+48)), asuint(lights.Load(li_8*64+60)));
     const float _e31 = light_area(_e30);
     if ((_e31 > 0.0)) {
-        const float _e36 = light_pdf(li_8, x_25, n_22, r_15, lobe_11, rl_14, _e17.y, nee_2, true);
+        const float _e36 = light_pdf(li_8, x_25, n_22, r_16, lobe_11, rl_14, _e17.y, nee_2, true);
         const float _e38 = specular_probability(lobe_11);
         const float _e39 = bsdf_pdf(n_22, wo_1, l_10, m.alpha, _e38);
         const float _e40 = mis_weight(_e36, _e39);

@@ -461,8 +461,8 @@ float atan_portable(
     float _e21 = base;
     float _e33 = t;
     float _e35 = t;
-    float r_16 = _e21 + (((((((((0.080537446 * z) - 0.13877685) * z) + 0.19977711) * z) - 0.3333295) * z) * _e33) + _e35);
-    return (x_4 < 0.0) ? -(r_16) : r_16;
+    float r_17 = _e21 + (((((((((0.080537446 * z) - 0.13877685) * z) + 0.19977711) * z) - 0.3333295) * z) * _e33) + _e35);
+    return (x_4 < 0.0) ? -(r_17) : r_17;
 }
 
 float atan2_portable(
@@ -1841,32 +1841,41 @@ uint bsh_grid_cell(
 }
 
 metal::float2 lobe_cone(
+    metal::float3 r_7,
     metal::float4 rl_5
 ) {
     bool local_28 = {};
     bool local_29 = {};
     bool local_30 = {};
+    bool local_31 = {};
     float c_7 = {};
     uint tries = 0u;
-    if (rl_5.x < 1.0) {
-        local_28 = rl_5.y >= 0.0;
+    bool _e2 = finite3_(r_7);
+    if (_e2) {
+        local_28 = rl_5.x < 1.0;
     } else {
         local_28 = false;
     }
-    bool _e10 = local_28;
-    if (_e10) {
-        local_29 = rl_5.z > 0.0;
+    bool _e9 = local_28;
+    if (_e9) {
+        local_29 = rl_5.y >= 0.0;
     } else {
         local_29 = false;
     }
-    bool _e17 = local_29;
-    if (_e17) {
-        local_30 = rl_5.z < 1.0;
+    bool _e16 = local_29;
+    if (_e16) {
+        local_30 = rl_5.z > 0.0;
     } else {
         local_30 = false;
     }
-    bool _e24 = local_30;
-    if (!(_e24)) {
+    bool _e23 = local_30;
+    if (_e23) {
+        local_31 = rl_5.z < 1.0;
+    } else {
+        local_31 = false;
+    }
+    bool _e30 = local_31;
+    if (!(_e30)) {
         return metal::float2(0.0, 0.0);
     }
     float t1_1 = metal::sqrt((rl_5.y * rl_5.z) / (1.0 - rl_5.x));
@@ -1875,25 +1884,25 @@ metal::float2 lobe_cone(
     while(true) {
         if (metal::all(loop_bound_4 == uint2(0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
-        float _e50 = c_7;
-        float _e51 = range_scale_at(rl_5, _e50);
-        if (!((_e51 <= 1.0))) {
+        float _e56 = c_7;
+        float _e57 = range_scale_at(rl_5, _e56);
+        if (!((_e57 <= 1.0))) {
         } else {
             break;
         }
         {
-            float _e55 = c_7;
-            c_7 = _e55 - 0.0001;
-            uint _e58 = tries;
-            tries = _e58 + 1u;
-            uint _e61 = tries;
-            if (_e61 > 16u) {
+            float _e61 = c_7;
+            c_7 = _e61 - 0.0001;
+            uint _e64 = tries;
+            tries = _e64 + 1u;
+            uint _e67 = tries;
+            if (_e67 > 16u) {
                 return metal::float2(0.0, 0.0);
             }
         }
     }
-    float _e67 = c_7;
-    float w_13 = metal::min(metal::min(_e67, 1.0) - 0.001, 0.9999);
+    float _e73 = c_7;
+    float w_13 = metal::min(metal::min(_e73, 1.0) - 0.001, 0.9999);
     if (!((w_13 > 0.0))) {
         return metal::float2(0.0, 0.0);
     }
@@ -1907,17 +1916,17 @@ bool lobe_cone_meets(
     metal::float3 axis_5,
     metal::float2 cone
 ) {
-    bool local_31 = {};
+    bool local_32 = {};
     float k_2 = ((extent * LOBE_CONE_PAD) + 0.000000000000000000000000000001) * cone.y;
     float vd_1 = -(metal::dot(v_9, axis_5));
     float a_14 = vd_1 + k_2;
     float b_8 = d2_10 + (k_2 * ((2.0 * vd_1) + k_2));
     if (a_14 >= 0.0) {
-        local_31 = (a_14 * a_14) >= (b_8 * cone.x);
+        local_32 = (a_14 * a_14) >= (b_8 * cone.x);
     } else {
-        local_31 = false;
+        local_32 = false;
     }
-    bool _e28 = local_31;
+    bool _e28 = local_32;
     return _e28;
 }
 
@@ -1930,31 +1939,31 @@ bool bsh_lobe_admits(
     metal::float3 axis_6,
     metal::float2 cone_1
 ) {
-    bool local_32 = {};
     bool local_33 = {};
     bool local_34 = {};
+    bool local_35 = {};
     metal::float3 v_18 = x_13 - c_8;
     float d2_14 = metal::dot(v_18, v_18);
     float f_2 = radius_7 * (w_9 * 1.0001);
     if (d2_14 <= (f_2 * f_2)) {
         if (!((cone_1.y == 0.0))) {
-            local_33 = d2_14 <= (radius_7 * radius_7);
-        } else {
-            local_33 = true;
-        }
-        bool _e25 = local_33;
-        if (!(_e25)) {
-            bool _e29 = lobe_cone_meets(v_18, d2_14, extent_1, axis_6, cone_1);
-            local_34 = _e29;
+            local_34 = d2_14 <= (radius_7 * radius_7);
         } else {
             local_34 = true;
         }
-        bool _e31 = local_34;
-        local_32 = _e31;
+        bool _e25 = local_34;
+        if (!(_e25)) {
+            bool _e29 = lobe_cone_meets(v_18, d2_14, extent_1, axis_6, cone_1);
+            local_35 = _e29;
+        } else {
+            local_35 = true;
+        }
+        bool _e31 = local_35;
+        local_33 = _e31;
     } else {
-        local_32 = false;
+        local_33 = false;
     }
-    bool _e33 = local_32;
+    bool _e33 = local_33;
     return _e33;
 }
 
@@ -2006,7 +2015,7 @@ float grid_reach(
 
 BshCursor bsh_cursor(
     metal::float3 x_14,
-    metal::float3 r_7,
+    metal::float3 r_8,
     metal::float4 rl_6,
     device type_11 const& bsh_nodes,
     device type_13 const& grid,
@@ -2015,9 +2024,9 @@ BshCursor bsh_cursor(
     BshCursor c_9 = {};
     uint h_3 = 0u;
     uint g = 1u;
-    bool local_35 = {};
     bool local_36 = {};
     bool local_37 = {};
+    bool local_38 = {};
     c_9.i = 0u;
     c_9.end = 0u;
     uint _e10 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
@@ -2037,11 +2046,11 @@ BshCursor bsh_cursor(
         if (_e18 < GRIDS_MAX) {
             uint _e24 = h_3;
             float _e25 = grid_reach(_e24, grid, _buffer_sizes);
-            local_35 = rl_6.w > _e25;
+            local_36 = rl_6.w > _e25;
         } else {
-            local_35 = false;
+            local_36 = false;
         }
-        bool _e28 = local_35;
+        bool _e28 = local_36;
         if (_e28) {
         } else {
             break;
@@ -2056,19 +2065,19 @@ BshCursor bsh_cursor(
     GridFrame _e37 = grid_frame(_e36, grid, _buffer_sizes);
     uint _e39 = c_9.next;
     if (_e39 != BSH_NONE) {
-        local_36 = _e37.nx > 0u;
-    } else {
-        local_36 = false;
-    }
-    bool _e48 = local_36;
-    if (_e48) {
-        uint _e52 = h_3;
-        float _e53 = grid_reach(_e52, grid, _buffer_sizes);
-        local_37 = rl_6.w <= _e53;
+        local_37 = _e37.nx > 0u;
     } else {
         local_37 = false;
     }
-    bool _e56 = local_37;
+    bool _e48 = local_37;
+    if (_e48) {
+        uint _e52 = h_3;
+        float _e53 = grid_reach(_e52, grid, _buffer_sizes);
+        local_38 = rl_6.w <= _e53;
+    } else {
+        local_38 = false;
+    }
+    bool _e56 = local_38;
     if (_e56) {
         uint _e57 = bsh_grid_cell(_e37, x_14);
         if (_e57 != BSH_NONE) {
@@ -2080,7 +2089,7 @@ BshCursor bsh_cursor(
             c_9.end = _e77;
             uint _e82 = bsh_nodes[0].next;
             c_9.next = _e82;
-            metal::float2 _e84 = lobe_cone(rl_6);
+            metal::float2 _e84 = lobe_cone(r_8, rl_6);
             c_9.cone = _e84;
         }
     }
@@ -2091,14 +2100,14 @@ BshCursor bsh_cursor(
 uint bsh_cursor_next(
     thread BshCursor& c_10,
     metal::float3 x_15,
-    metal::float3 r_8,
+    metal::float3 r_9,
     metal::float4 rl_7,
     device type_11 const& bsh_nodes,
     device type_13 const& grid_entries,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    bool local_38 = {};
     bool local_39 = {};
+    bool local_40 = {};
     uint2 loop_bound_6 = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound_6 == uint2(0u))) { break; }
@@ -2117,26 +2126,26 @@ uint bsh_cursor_next(
             BshNode n_25 = bsh_nodes[b_9];
             if (!((rl_7.w <= 1.0))) {
                 metal::float2 _e32 = c_10.cone;
-                bool _e33 = bsh_lobe_admits(n_25.center, n_25.radius, n_25.extent, x_15, rl_7.w, r_8, _e32);
-                local_38 = _e33;
+                bool _e33 = bsh_lobe_admits(n_25.center, n_25.radius, n_25.extent, x_15, rl_7.w, r_9, _e32);
+                local_39 = _e33;
             } else {
-                local_38 = true;
+                local_39 = true;
             }
-            bool _e35 = local_38;
+            bool _e35 = local_39;
             if (_e35) {
-                bool _e38 = bsh_reaches(n_25, x_15, r_8, rl_7);
-                local_39 = _e38;
+                bool _e38 = bsh_reaches(n_25, x_15, r_9, rl_7);
+                local_40 = _e38;
             } else {
-                local_39 = false;
+                local_40 = false;
             }
-            bool _e40 = local_39;
+            bool _e40 = local_40;
             if (_e40) {
                 return b_9;
             }
         }
     }
     uint _e43 = c_10.next;
-    uint _e44 = bsh_next_leaf_lobe(BSH, _e43, x_15, r_8, rl_7, bsh_nodes, _buffer_sizes);
+    uint _e44 = bsh_next_leaf_lobe(BSH, _e43, x_15, r_9, rl_7, bsh_nodes, _buffer_sizes);
     if (_e44 != BSH_NONE) {
         uint _e51 = bsh_nodes[_e44].next;
         c_10.next = _e51;
@@ -2175,8 +2184,8 @@ Connection connect_record(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Connection c_11 = {};
-    bool local_40 = {};
     bool local_41 = {};
+    bool local_42 = {};
     c_11.e = metal::float3(0.0);
     metal::float3 _e16 = light_point(l_8, u1_2, u2_2);
     c_11.y = _e16;
@@ -2188,16 +2197,16 @@ Connection connect_record(
         if (trace_1) {
             metal::float3 _e33 = c_11.y;
             bool _e34 = occluded(x_16 + (ng_1 * eps), _e33, geo_nodes, geo_tris, _buffer_sizes);
-            local_41 = _e34;
+            local_42 = _e34;
         } else {
-            local_41 = false;
+            local_42 = false;
         }
-        bool _e36 = local_41;
-        local_40 = _e36;
+        bool _e36 = local_42;
+        local_41 = _e36;
     } else {
-        local_40 = true;
+        local_41 = true;
     }
-    bool _e38 = local_40;
+    bool _e38 = local_41;
     if (_e38) {
         Connection _e39 = c_11;
         return _e39;
@@ -2272,13 +2281,13 @@ float mis_weight(
 float light_range_scale(
     uint li_2,
     metal::float3 x_19,
-    metal::float3 r_9,
+    metal::float3 r_10,
     metal::float4 rl_8,
     device type_17 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuLightCone c_17 = light_cones[li_2];
-    float _e9 = range_scale_toward(rl_8, c_17.center, c_17.radius, x_19, r_9);
+    float _e9 = range_scale_toward(rl_8, c_17.center, c_17.radius, x_19, r_10);
     return _e9;
 }
 
@@ -2286,7 +2295,7 @@ float light_weight(
     uint li_3,
     metal::float3 x_20,
     metal::float3 n_18,
-    metal::float3 r_10,
+    metal::float3 r_11,
     metal::float4 lobe_7,
     metal::float4 rl_9,
     device type_4 const& rt2_7,
@@ -2294,9 +2303,9 @@ float light_weight(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuLightCone c_18 = light_cones[li_3];
-    float _e15 = light_range_scale(li_3, x_20, r_10, rl_9, light_cones, _buffer_sizes);
+    float _e15 = light_range_scale(li_3, x_20, r_11, rl_9, light_cones, _buffer_sizes);
     float _e18 = rt2_7[li_3];
-    float _e20 = cone_weight(c_18.center, c_18.radius, c_18.phi, c_18.axis, c_18.cos_o, c_18.cos_e, _e15 * _e18, x_20, n_18, r_10, lobe_7);
+    float _e20 = cone_weight(c_18.center, c_18.radius, c_18.phi, c_18.axis, c_18.cos_o, c_18.cos_e, _e15 * _e18, x_20, n_18, r_11, lobe_7);
     return _e20;
 }
 
@@ -2304,7 +2313,7 @@ float select_pdf(
     uint li_4,
     metal::float3 x_21,
     metal::float3 n_19,
-    metal::float3 r_11,
+    metal::float3 r_12,
     metal::float4 lobe_8,
     metal::float4 rl_10,
     uint nee,
@@ -2313,7 +2322,7 @@ float select_pdf(
     device type_17 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e8 = light_weight(li_4, x_21, n_19, r_11, lobe_8, rl_10, rt2_7, light_cones, _buffer_sizes);
+    float _e8 = light_weight(li_4, x_21, n_19, r_12, lobe_8, rl_10, rt2_7, light_cones, _buffer_sizes);
     float _e11 = weighted_select_pdf(_e8, as_type<float>(nee), in_range_1, K);
     return _e11;
 }
@@ -2321,7 +2330,7 @@ float select_pdf(
 float light_pdf_selected(
     uint li_5,
     metal::float3 x_22,
-    metal::float3 r_12,
+    metal::float3 r_13,
     metal::float4 rl_11,
     metal::float3 y_2,
     float sel,
@@ -2335,7 +2344,7 @@ float light_pdf_selected(
     float d2_16 = metal::dot(v_20, v_20);
     metal::float3 _e11 = light_normal(l_9);
     float cos_y_1 = (d2_16 > 0.0) ? metal::dot(_e11, v_20 / metal::float3(metal::sqrt(d2_16))) : 0.0;
-    float _e20 = light_range_scale(li_5, x_22, r_12, rl_11, light_cones, _buffer_sizes);
+    float _e20 = light_range_scale(li_5, x_22, r_13, rl_11, light_cones, _buffer_sizes);
     float _e23 = rt2_7[li_5];
     float _e25 = light_area(l_9);
     float _e26 = light_strategy_pdf(sel, _e20 * _e23, d2_16, _e25, cos_y_1);
@@ -2346,7 +2355,7 @@ float light_pdf(
     uint li_6,
     metal::float3 x_23,
     metal::float3 n_20,
-    metal::float3 r_13,
+    metal::float3 r_14,
     metal::float4 lobe_9,
     metal::float4 rl_12,
     metal::float3 y_3,
@@ -2357,8 +2366,8 @@ float light_pdf(
     device type_17 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e9 = select_pdf(li_6, x_23, n_20, r_13, lobe_9, rl_12, nee_1, in_range_2, rt2_7, light_cones, _buffer_sizes);
-    float _e10 = light_pdf_selected(li_6, x_23, r_13, rl_12, y_3, _e9, lights, rt2_7, light_cones, _buffer_sizes);
+    float _e9 = select_pdf(li_6, x_23, n_20, r_14, lobe_9, rl_12, nee_1, in_range_2, rt2_7, light_cones, _buffer_sizes);
+    float _e10 = light_pdf_selected(li_6, x_23, r_14, rl_12, y_3, _e9, lights, rt2_7, light_cones, _buffer_sizes);
     return _e10;
 }
 
@@ -2429,7 +2438,7 @@ void weighted_offer(
 WeightedPicks bsh_weighted_collect(
     metal::float3 x_24,
     metal::float3 n_21,
-    metal::float3 r_14,
+    metal::float3 r_15,
     metal::float4 lobe_10,
     metal::float4 rl_13,
     uint h0_,
@@ -2445,9 +2454,9 @@ WeightedPicks bsh_weighted_collect(
     uint b_6 = {};
     WeightedPicks _e6 = weighted_picks(h0_);
     picks_2 = _e6;
-    BshCursor _e8 = bsh_cursor(x_24, r_14, rl_13, bsh_nodes, grid, _buffer_sizes);
+    BshCursor _e8 = bsh_cursor(x_24, r_15, rl_13, bsh_nodes, grid, _buffer_sizes);
     cur = _e8;
-    uint _e10 = bsh_cursor_next(cur, x_24, r_14, rl_13, bsh_nodes, grid_entries, _buffer_sizes);
+    uint _e10 = bsh_cursor_next(cur, x_24, r_15, rl_13, bsh_nodes, grid_entries, _buffer_sizes);
     b_6 = _e10;
     uint2 loop_bound_8 = uint2(4294967295u);
     bool loop_init_3 = true;
@@ -2455,7 +2464,7 @@ WeightedPicks bsh_weighted_collect(
         if (metal::all(loop_bound_8 == uint2(0u))) { break; }
         loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
         if (!loop_init_3) {
-            uint _e21 = bsh_cursor_next(cur, x_24, r_14, rl_13, bsh_nodes, grid_entries, _buffer_sizes);
+            uint _e21 = bsh_cursor_next(cur, x_24, r_15, rl_13, bsh_nodes, grid_entries, _buffer_sizes);
             b_6 = _e21;
         }
         loop_init_3 = false;
@@ -2467,7 +2476,7 @@ WeightedPicks bsh_weighted_collect(
         {
             uint _e16 = b_6;
             uint li_9 = bsh_nodes[_e16].light;
-            float _e20 = light_weight(li_9, x_24, n_21, r_14, lobe_10, rl_13, rt2_7, light_cones, _buffer_sizes);
+            float _e20 = light_weight(li_9, x_24, n_21, r_15, lobe_10, rl_13, rt2_7, light_cones, _buffer_sizes);
             weighted_offer(picks_2, li_9, _e20);
         }
     }
@@ -2482,7 +2491,7 @@ metal::float3 shade_pick(
     metal::float3 ng_4,
     GpuMaterial m,
     metal::float3 wo_1,
-    metal::float3 r_15,
+    metal::float3 r_16,
     metal::float4 lobe_11,
     metal::float4 rl_14,
     float w_11,
@@ -2500,7 +2509,7 @@ metal::float3 shade_pick(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     float mis = 1.0;
-    float _e13 = light_range_scale(li_8, x_25, r_15, rl_14, light_cones, _buffer_sizes);
+    float _e13 = light_range_scale(li_8, x_25, r_16, rl_14, light_cones, _buffer_sizes);
     float _e16 = params.eps;
     Connection _e17 = connect(li_8, x_25, n_22, ng_4, _e13, w_11, u1_5, u2_5, _e16, slc_table, geo_nodes, geo_tris, lights, r2_4, rt2_7, _buffer_sizes);
     if (_e17.cos_x <= 0.0) {
@@ -2510,7 +2519,7 @@ metal::float3 shade_pick(
     GpuLight _e30 = lights[li_8];
     float _e31 = light_area(_e30);
     if (_e31 > 0.0) {
-        float _e36 = light_pdf(li_8, x_25, n_22, r_15, lobe_11, rl_14, _e17.y, nee_2, true, lights, rt2_7, light_cones, _buffer_sizes);
+        float _e36 = light_pdf(li_8, x_25, n_22, r_16, lobe_11, rl_14, _e17.y, nee_2, true, lights, rt2_7, light_cones, _buffer_sizes);
         float _e38 = specular_probability(lobe_11);
         float _e39 = bsdf_pdf(n_22, wo_1, l_10, m.alpha, _e38);
         float _e40 = mis_weight(_e36, _e39);
