@@ -231,14 +231,14 @@ pub fn bindings(kernel: Kernel, f: &Features) -> Vec<Binding> {
             b(0, 5, "bsh_nodes", Resource::ReadWrite("array<BshNode>"), "the BSH", "host (build), `bsh_refit`, this kernel (the tail's leaves and links)"),
         ],
         Kernel::BshGrid => vec![
-            uniform(0, "params", "GridStage", true, "the stage"),
+            uniform(0, "params", "GridStage", true, "the stage, and the leaf count, frames tried and insertion moves every grid shares"),
             read(1, "bsh_nodes", "array<BshNode>", "the refitted BSH", "`bsh_refit`"),
             read(2, "grid_leaves", "array<u32>", "the tree's leaves in the walk's order", "host"),
             read(3, "grid_levels", "array<GridFrame>", "the frames tried, finest first (slc-core's `GridFrame::levels`)", "host"),
             write(4, "grid", "array<atomic<u32>>", "the pass's frame and reach, the counts, then each cell's first entry (`GRID_HEADER` on)"),
             write(5, "grid_fill", "array<atomic<u32>>", "each cell's entries counted, then filled (zero between passes)"),
             write(6, "grid_entries", "array<u32>", "the cells' leaves, cell after cell, each in the walk's order"),
-            read(7, "grids", "array<GridParams>", "each grid's leaf count, frames tried, entries' capacity, reach and where its words start (`workgroup_id.z` the grid)", "host"),
+            read(7, "grids", "array<GridParams>", "each grid's entries' capacity, reach and where its words start (`workgroup_id.z` the grid)", "host"),
         ],
         Kernel::VplTiled => {
             let mut v = vec![uniform(0, "params", "VplParams", true, "image size, slots per subset, clamp distance, near field, the culling grids")];

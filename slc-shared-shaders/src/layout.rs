@@ -248,7 +248,7 @@ slc_core::shared! {
 
     /// Moves `bsh_grid`'s stage 5 makes at most sorting a cell by insertion
     /// in one invocation, by default (past it, the workgroup sorts the
-    /// cell; `GridParams::moves`): every cell of up to 45 entries (at most
+    /// cell; `GridStage::moves`): every cell of up to 45 entries (at most
     /// 45·44/2 moves), and larger ones that stage 4 filled almost in order.
     pub const GRID_SORT_MOVES: u32 = 1024;
 
@@ -260,33 +260,30 @@ slc_core::shared! {
     /// entries counted, 1 the level chosen, 2 each cell's entries counted,
     /// 3 their starts, 4 the leaves scattered, 5 each cell sorted) for
     /// every grid of the pass at once (grid `g` in workgroups of
-    /// `workgroup_id.z = g`, [`GridParams`] `grids[g]`); 16 bytes.
+    /// `workgroup_id.z = g`, [`GridParams`] `grids[g]`), and what the grids
+    /// share; 16 bytes.
     pub struct GridStage {
         /// Stage.
         pub stage: u32,
-        /// Padding.
-        pub pad0: u32,
-        /// Padding.
-        pub pad1: u32,
-        /// Padding.
-        pub pad2: u32,
-    }
-
-    /// One grid `bsh_grid` builds (an element of its `grids`): the tree's
-    /// leaf count, the frames tried, the largest range lobe the grid
-    /// serves, and where its words (`grid`), counts (`grid_fill`) and
-    /// entries (`grid_entries`, at most `capacity`) start; 40 bytes.
-    pub struct GridParams {
         /// Leaves in the tree.
         pub count: u32,
         /// Frames in `grid_levels`.
         pub levels: u32,
+        /// Moves stage 5 may make sorting a cell by insertion before the
+        /// workgroup sorts it (`GRID_SORT_MOVES`; 0: every cell by the
+        /// workgroup).
+        pub moves: u32,
+    }
+
+    /// One grid `bsh_grid` builds (an element of its `grids`): the largest
+    /// range lobe the grid serves, its least entries, and where its words
+    /// (`grid`), counts (`grid_fill`) and entries (`grid_entries`, at most
+    /// `capacity`) start; 24 bytes.
+    pub struct GridParams {
         /// Entries the grid may take in `grid_entries`.
         pub capacity: u32,
         /// The largest range lobe `rl.w` the grid serves (1: the plain spheres).
         pub reach: f32,
-        /// Cells of the largest frame (the per-cell stages' extent).
-        pub cells: u32,
         /// The grid's first word in `grid`.
         pub header: u32,
         /// The grid's first count in `grid_fill`.
@@ -296,10 +293,6 @@ slc_core::shared! {
         /// Entries the grid may take at least, whatever its budget (slc-core's
         /// `bsh_grid_budget`: the sharp grid's `SHARP_GRID_ENTRIES`, else 0).
         pub least: u32,
-        /// Moves stage 5 may make sorting a cell by insertion before the
-        /// workgroup sorts it (`GRID_SORT_MOVES`; 0: every cell by the
-        /// workgroup).
-        pub moves: u32,
     }
 
     /// Uniforms of `vpl_tiled`, `vpl_near`, `vpl_denoise`, `vpl_clusters`

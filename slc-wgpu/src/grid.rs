@@ -52,9 +52,8 @@ pub(crate) struct GpuGrid {
     pub(crate) grid: wgpu::Buffer,
     /// The cells' leaves.
     pub(crate) entries: wgpu::Buffer,
-    /// Each grid's [`GridParams`], and the buffer the build reads them from.
-    specs: Vec<GridParams>,
-    specs_buffer: wgpu::Buffer,
+    /// Each stage's [`GridStage`], as `params` holds them.
+    stages: Vec<GridStage>,
     /// Where each grid's words start in `grid`.
     headers: Vec<u32>,
     /// Leaves in the tree (the per-leaf stages' extent).
@@ -152,24 +151,25 @@ impl GpuGrid {
         let leaves = storage(gpu, "grid leaves", bytemuck::cast_slice(&leaves), none);
         let params = UniformSlots::new::<GridStage>(gpu, "grid stages", STAGES as u64);
         let stages: Vec<GridStage> = (0..STAGES as u32)
-            .map(|stage| GridStage { stage, pad0: 0, pad1: 0, pad2: 0 })
+            .map(|stage| GridStage {
+                stage,
+                count: tree_lights as u32,
+                levels: levels.len() as u32,
+                moves: GRID_SORT_MOVES,
+            })
             .collect();
         params.write(gpu, &stages);
         let specs: Vec<GridParams> = (0..k as usize)
             .map(|g| GridParams {
-                count: tree_lights as u32,
-                levels: levels.len() as u32,
                 capacity: capacity[g] as u32,
                 reach: grids[g].0,
-                cells: cells as u32,
                 header: headers[g],
                 fill: (g as u64 * cells) as u32,
                 entries: first[g] as u32,
                 least: grids[g].1 as u32,
-                moves: GRID_SORT_MOVES,
             })
             .collect();
-        let specs_buffer = storage(gpu, "grid specs", bytemuck::cast_slice(&specs), none);
+        let specs = storage(gpu, "grid specs", bytemuck::cast_slice(&specs), none);
         let group = layout.group(
             gpu,
             0,
@@ -181,7 +181,7 @@ impl GpuGrid {
                 ("grid", whole(&grid)),
                 ("grid_fill", whole(&fill)),
                 ("grid_entries", whole(&entries)),
-                ("grids", whole(&specs_buffer)),
+                ("grids", whole(&specs)),
             ],
         );
         Ok(GpuGrid {
@@ -190,8 +190,7 @@ impl GpuGrid {
             group,
             grid,
             entries,
-            specs,
-            specs_buffer,
+            stages,
             headers,
             lights: tree_lights as u32,
             cells: cells as u32,
@@ -217,10 +216,10 @@ impl GpuGrid {
     /// default; 0: every cell of two or more entries by its workgroup).
     /// The same cells either way.
     pub(crate) fn set_sort_moves(&mut self, gpu: &GpuContext, moves: u32) {
-        for s in &mut self.specs {
+        for s in &mut self.stages {
             s.moves = moves;
         }
-        gpu.queue.write_buffer(&self.specs_buffer, 0, bytemuck::cast_slice(&self.specs));
+        self.params.write(gpu, &self.stages);
     }
 
     /// The last pass's grid `g` (0: Lambertian, 1: glossy, 2: sharp) read back: its

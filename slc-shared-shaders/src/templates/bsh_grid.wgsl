@@ -123,7 +123,7 @@ fn sort_together(b: u32, li: u32) {
 /// workgroup (`li` its invocation): each cell's ranks, appended by stage 4
 /// in any order, put in order and turned into the leaves' node indices,
 /// and its count cleared. Each cell is sorted by its own invocation, by
-/// insertion, unless that takes `g.moves` moves (by default
+/// insertion, unless that takes `params.moves` moves (by default
 /// `GRID_SORT_MOVES`, which a cell of up to 45 entries never takes): the
 /// cells left are then sorted by the whole workgroup, one after another
 /// ([`sort_together`]).
@@ -144,7 +144,7 @@ fn sort_cells(g: GridParams, first: u32, li: u32) {
     // filled almost in order (neighbouring leaves fill it in turn) is done.
     var s = span.x + 1u;
     var moves = 0u;
-    while s < span.y && moves < g.moves {
+    while s < span.y && moves < params.moves {
         let v = grid_entries[s];
         var c = s;
         while c > span.x && grid_entries[c - 1u] > v {
@@ -175,7 +175,7 @@ fn sort_cells(g: GridParams, first: u32, li: u32) {
 /// tried (64-bit, low and high words from word 16), the tree's leaves the
 /// walk can find in word 13.
 fn count_levels(g: GridParams, i: u32) {
-    if i >= g.count {
+    if i >= params.count {
         return;
     }
     let h = g.header;
@@ -186,7 +186,7 @@ fn count_levels(g: GridParams, i: u32) {
     atomicAdd(&grid[h + 13u], 1u);
     let leaf = bsh_nodes[node];
     let r = bsh_grid_radius(leaf, g.reach);
-    for (var l = 0u; l < g.levels; l++) {
+    for (var l = 0u; l < params.levels; l++) {
         let d = bsh_grid_last(grid_levels[l], leaf.center, r) - bsh_grid_first(grid_levels[l], leaf.center, r) + vec3u(1u);
         let n = d.x * d.y * d.z;
         let at = h + 16u + 2u * l;
@@ -203,13 +203,13 @@ fn count_levels(g: GridParams, i: u32) {
 fn choose_level(g: GridParams) {
     let h = g.header;
     let leaves = atomicLoad(&grid[h + 13u]);
-    var chosen = g.levels;
-    for (var l = 0u; l < g.levels; l++) {
+    var chosen = params.levels;
+    for (var l = 0u; l < params.levels; l++) {
         let f = grid_levels[l];
         let cells = f.nx * f.ny * f.nz;
         let budget = min(bsh_grid_budget(leaves, cells, g.least), g.capacity);
         let at = h + 16u + 2u * l;
-        if chosen == g.levels && atomicLoad(&grid[at + 1u]) == 0u && atomicLoad(&grid[at]) <= budget {
+        if chosen == params.levels && atomicLoad(&grid[at + 1u]) == 0u && atomicLoad(&grid[at]) <= budget {
             chosen = l;
         }
         atomicStore(&grid[at], 0u);
@@ -217,7 +217,7 @@ fn choose_level(g: GridParams) {
     }
     atomicStore(&grid[h + 13u], 0u);
     var f: GridFrame;
-    if chosen < g.levels {
+    if chosen < params.levels {
         f = grid_levels[chosen];
     }
     atomicStore(&grid[h], bitcast<u32>(f.lo.x));
@@ -239,7 +239,7 @@ fn choose_level(g: GridParams) {
 /// its reach covers counted, or given the leaf's rank at the cell's next
 /// free entry.
 fn fill_cells(g: GridParams, i: u32, scatter: bool) {
-    if i >= g.count {
+    if i >= params.count {
         return;
     }
     let f = grid_frame(g.header);

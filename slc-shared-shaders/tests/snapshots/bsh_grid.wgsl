@@ -1,21 +1,17 @@
 struct GridStage {
     stage: u32,
-    pad0_: u32,
-    pad1_: u32,
-    pad2_: u32,
+    count: u32,
+    levels: u32,
+    moves: u32,
 }
 
 struct GridParams {
-    count: u32,
-    levels: u32,
     capacity: u32,
     reach: f32,
-    cells: u32,
     header: u32,
     fill: u32,
     entries: u32,
     least: u32,
-    moves: u32,
 }
 
 struct BshNode {
@@ -420,98 +416,99 @@ fn sort_cells(g: GridParams, first: u32, li_2: u32) {
         let _e47 = span.y;
         if (_e45 < _e47) {
             let _e51 = moves;
-            local = (_e51 < g.moves);
+            let _e54 = params.moves;
+            local = (_e51 < _e54);
         } else {
             local = false;
         }
-        let _e55 = local;
-        if _e55 {
+        let _e57 = local;
+        if _e57 {
         } else {
             break;
         }
         {
-            let _e57 = s;
-            let v_2 = grid_entries[_e57];
-            let _e60 = s;
-            c_2 = _e60;
+            let _e59 = s;
+            let v_2 = grid_entries[_e59];
+            let _e62 = s;
+            c_2 = _e62;
             loop {
-                let _e62 = c_2;
-                let _e64 = span.x;
-                if (_e62 > _e64) {
-                    let _e69 = c_2;
-                    let _e73 = grid_entries[(_e69 - 1u)];
-                    local_1 = (_e73 > v_2);
+                let _e64 = c_2;
+                let _e66 = span.x;
+                if (_e64 > _e66) {
+                    let _e71 = c_2;
+                    let _e75 = grid_entries[(_e71 - 1u)];
+                    local_1 = (_e75 > v_2);
                 } else {
                     local_1 = false;
                 }
-                let _e76 = local_1;
-                if _e76 {
+                let _e78 = local_1;
+                if _e78 {
                 } else {
                     break;
                 }
                 {
-                    let _e78 = c_2;
-                    let _e81 = c_2;
-                    let _e85 = grid_entries[(_e81 - 1u)];
-                    grid_entries[_e78] = _e85;
-                    let _e86 = c_2;
-                    c_2 = (_e86 - 1u);
+                    let _e80 = c_2;
+                    let _e83 = c_2;
+                    let _e87 = grid_entries[(_e83 - 1u)];
+                    grid_entries[_e80] = _e87;
+                    let _e88 = c_2;
+                    c_2 = (_e88 - 1u);
                 }
             }
-            let _e90 = c_2;
-            grid_entries[_e90] = v_2;
-            let _e92 = moves;
-            let _e93 = s;
-            let _e94 = c_2;
-            moves = (_e92 + (_e93 - _e94));
-            let _e97 = s;
-            s = (_e97 + 1u);
+            let _e92 = c_2;
+            grid_entries[_e92] = v_2;
+            let _e94 = moves;
+            let _e95 = s;
+            let _e96 = c_2;
+            moves = (_e94 + (_e95 - _e96));
+            let _e99 = s;
+            s = (_e99 + 1u);
         }
     }
-    let _e100 = s;
-    let _e102 = span.y;
-    if (_e100 < _e102) {
-        let _e107 = atomicAdd((&wg_bigs), 1u);
-        let _e109 = span;
-        wg_big[_e107] = _e109;
+    let _e102 = s;
+    let _e104 = span.y;
+    if (_e102 < _e104) {
+        let _e109 = atomicAdd((&wg_bigs), 1u);
+        let _e111 = span;
+        wg_big[_e109] = _e111;
     } else {
-        let _e111 = span.x;
-        e = _e111;
+        let _e113 = span.x;
+        e = _e113;
         loop {
-            let _e113 = e;
-            let _e115 = span.y;
-            if (_e113 < _e115) {
+            let _e115 = e;
+            let _e117 = span.y;
+            if (_e115 < _e117) {
             } else {
                 break;
             }
             {
-                let _e118 = e;
-                let _e122 = e;
-                let _e124 = grid_entries[_e122];
-                let _e126 = grid_leaves[_e124];
-                grid_entries[_e118] = _e126;
+                let _e120 = e;
+                let _e124 = e;
+                let _e126 = grid_entries[_e124];
+                let _e128 = grid_leaves[_e126];
+                grid_entries[_e120] = _e128;
             }
             continuing {
-                let _e128 = e;
-                e = (_e128 + 1u);
+                let _e130 = e;
+                e = (_e130 + 1u);
             }
         }
     }
     storageBarrier();
-    let _e131 = workgroupUniformLoad((&wg_bigs));
+    let _e133 = workgroupUniformLoad((&wg_bigs));
     loop {
-        let _e134 = b_2;
-        if (_e134 < _e131) {
+        let _e136 = b_2;
+        if (_e136 < _e133) {
         } else {
             break;
         }
         {
-            let _e136 = b_2;
-            sort_together(_e136, li_2);
+            let _e138 = b_2;
+            sort_together(_e138, li_2);
         }
         continuing {
-            let _e138 = b_2;
-            b_2 = (_e138 + 1u);
+            let _e140 = b_2;
+            b_2 = (_e140 + 1u);
         }
     }
     return;
@@ -520,42 +517,44 @@ fn sort_cells(g: GridParams, first: u32, li_2: u32) {
 fn count_levels(g_1: GridParams, i_2: u32) {
     var l: u32 = 0u;
 
-    if (i_2 >= g_1.count) {
+    let _e4 = params.count;
+    if (i_2 >= _e4) {
         return;
     }
     let h_2 = g_1.header;
-    let _e5 = grid_leaf(i_2);
-    if (_e5 == BSH_NONE) {
+    let _e7 = grid_leaf(i_2);
+    if (_e7 == BSH_NONE) {
         return;
     }
-    let _e13 = atomicAdd((&grid[(h_2 + 13u)]), 1u);
-    let leaf = bsh_nodes[_e5];
-    let _e18 = bsh_grid_radius(leaf, g_1.reach);
+    let _e15 = atomicAdd((&grid[(h_2 + 13u)]), 1u);
+    let leaf = bsh_nodes[_e7];
+    let _e20 = bsh_grid_radius(leaf, g_1.reach);
     loop {
-        let _e21 = l;
-        if (_e21 < g_1.levels) {
+        let _e23 = l;
+        let _e26 = params.levels;
+        if (_e23 < _e26) {
         } else {
             break;
         }
         {
-            let _e25 = l;
-            let _e27 = grid_levels[_e25];
-            let _e29 = bsh_grid_last(_e27, leaf.center, _e18);
-            let _e31 = l;
-            let _e33 = grid_levels[_e31];
-            let _e35 = bsh_grid_first(_e33, leaf.center, _e18);
-            let d = ((_e29 - _e35) + vec3(1u));
+            let _e29 = l;
+            let _e31 = grid_levels[_e29];
+            let _e33 = bsh_grid_last(_e31, leaf.center, _e20);
+            let _e35 = l;
+            let _e37 = grid_levels[_e35];
+            let _e39 = bsh_grid_first(_e37, leaf.center, _e20);
+            let d = ((_e33 - _e39) + vec3(1u));
             let n_2 = ((d.x * d.y) * d.z);
-            let _e48 = l;
-            let at = ((h_2 + 16u) + (2u * _e48));
-            let _e53 = atomicAdd((&grid[at]), n_2);
-            if ((_e53 + n_2) < _e53) {
-                let _e61 = atomicAdd((&grid[(at + 1u)]), 1u);
+            let _e52 = l;
+            let at = ((h_2 + 16u) + (2u * _e52));
+            let _e57 = atomicAdd((&grid[at]), n_2);
+            if ((_e57 + n_2) < _e57) {
+                let _e65 = atomicAdd((&grid[(at + 1u)]), 1u);
             }
         }
         continuing {
-            let _e63 = l;
-            l = (_e63 + 1u);
+            let _e67 = l;
+            l = (_e67 + 1u);
         }
     }
     return;
@@ -570,79 +569,83 @@ fn choose_level(g_2: GridParams) {
 
     let h_3 = g_2.header;
     let leaves_1 = atomicLoad((&grid[(h_3 + 13u)]));
-    chosen = g_2.levels;
+    let _e9 = params.levels;
+    chosen = _e9;
     loop {
-        let _e11 = l_1;
-        if (_e11 < g_2.levels) {
+        let _e13 = l_1;
+        let _e16 = params.levels;
+        if (_e13 < _e16) {
         } else {
             break;
         }
         {
-            let _e15 = l_1;
-            let f_4 = grid_levels[_e15];
+            let _e19 = l_1;
+            let f_4 = grid_levels[_e19];
             let cells_1 = ((f_4.nx * f_4.ny) * f_4.nz);
-            let _e24 = bsh_grid_budget(leaves_1, cells_1, g_2.least);
-            let budget = min(_e24, g_2.capacity);
-            let _e30 = l_1;
-            let at_1 = ((h_3 + 16u) + (2u * _e30));
-            let _e33 = chosen;
-            if (_e33 == g_2.levels) {
-                let _e42 = atomicLoad((&grid[(at_1 + 1u)]));
-                local_2 = (_e42 == 0u);
+            let _e28 = bsh_grid_budget(leaves_1, cells_1, g_2.least);
+            let budget = min(_e28, g_2.capacity);
+            let _e34 = l_1;
+            let at_1 = ((h_3 + 16u) + (2u * _e34));
+            let _e37 = chosen;
+            let _e40 = params.levels;
+            if (_e37 == _e40) {
+                let _e48 = atomicLoad((&grid[(at_1 + 1u)]));
+                local_2 = (_e48 == 0u);
             } else {
                 local_2 = false;
             }
-            let _e46 = local_2;
-            if _e46 {
-                let _e51 = atomicLoad((&grid[at_1]));
-                local_3 = (_e51 <= budget);
+            let _e52 = local_2;
+            if _e52 {
+                let _e57 = atomicLoad((&grid[at_1]));
+                local_3 = (_e57 <= budget);
             } else {
                 local_3 = false;
             }
-            let _e54 = local_3;
-            if _e54 {
-                let _e55 = l_1;
-                chosen = _e55;
+            let _e60 = local_3;
+            if _e60 {
+                let _e61 = l_1;
+                chosen = _e61;
             }
             atomicStore((&grid[at_1]), 0u);
             atomicStore((&grid[(at_1 + 1u)]), 0u);
         }
         continuing {
-            let _e65 = l_1;
-            l_1 = (_e65 + 1u);
+            let _e71 = l_1;
+            l_1 = (_e71 + 1u);
         }
     }
     atomicStore((&grid[(h_3 + 13u)]), 0u);
-    let _e73 = chosen;
-    if (_e73 < g_2.levels) {
-        let _e77 = chosen;
-        let _e79 = grid_levels[_e77];
-        f_3 = _e79;
+    let _e79 = chosen;
+    let _e82 = params.levels;
+    if (_e79 < _e82) {
+        let _e85 = chosen;
+        let _e87 = grid_levels[_e85];
+        f_3 = _e87;
     }
-    let _e84 = f_3.lo.x;
-    atomicStore((&grid[h_3]), bitcast<u32>(_e84));
-    let _e92 = f_3.lo.y;
-    atomicStore((&grid[(h_3 + 1u)]), bitcast<u32>(_e92));
-    let _e100 = f_3.lo.z;
-    atomicStore((&grid[(h_3 + 2u)]), bitcast<u32>(_e100));
-    let _e107 = f_3.nx;
-    atomicStore((&grid[(h_3 + 3u)]), _e107);
-    let _e114 = f_3.hi.x;
-    atomicStore((&grid[(h_3 + 4u)]), bitcast<u32>(_e114));
-    let _e122 = f_3.hi.y;
-    atomicStore((&grid[(h_3 + 5u)]), bitcast<u32>(_e122));
-    let _e130 = f_3.hi.z;
-    atomicStore((&grid[(h_3 + 6u)]), bitcast<u32>(_e130));
-    let _e137 = f_3.ny;
-    atomicStore((&grid[(h_3 + 7u)]), _e137);
-    let _e144 = f_3.inv.x;
-    atomicStore((&grid[(h_3 + 8u)]), bitcast<u32>(_e144));
-    let _e152 = f_3.inv.y;
-    atomicStore((&grid[(h_3 + 9u)]), bitcast<u32>(_e152));
-    let _e160 = f_3.inv.z;
-    atomicStore((&grid[(h_3 + 10u)]), bitcast<u32>(_e160));
-    let _e167 = f_3.nz;
-    atomicStore((&grid[(h_3 + 11u)]), _e167);
+    let _e92 = f_3.lo.x;
+    atomicStore((&grid[h_3]), bitcast<u32>(_e92));
+    let _e100 = f_3.lo.y;
+    atomicStore((&grid[(h_3 + 1u)]), bitcast<u32>(_e100));
+    let _e108 = f_3.lo.z;
+    atomicStore((&grid[(h_3 + 2u)]), bitcast<u32>(_e108));
+    let _e115 = f_3.nx;
+    atomicStore((&grid[(h_3 + 3u)]), _e115);
+    let _e122 = f_3.hi.x;
+    atomicStore((&grid[(h_3 + 4u)]), bitcast<u32>(_e122));
+    let _e130 = f_3.hi.y;
+    atomicStore((&grid[(h_3 + 5u)]), bitcast<u32>(_e130));
+    let _e138 = f_3.hi.z;
+    atomicStore((&grid[(h_3 + 6u)]), bitcast<u32>(_e138));
+    let _e145 = f_3.ny;
+    atomicStore((&grid[(h_3 + 7u)]), _e145);
+    let _e152 = f_3.inv.x;
+    atomicStore((&grid[(h_3 + 8u)]), bitcast<u32>(_e152));
+    let _e160 = f_3.inv.y;
+    atomicStore((&grid[(h_3 + 9u)]), bitcast<u32>(_e160));
+    let _e168 = f_3.inv.z;
+    atomicStore((&grid[(h_3 + 10u)]), bitcast<u32>(_e168));
+    let _e175 = f_3.nz;
+    atomicStore((&grid[(h_3 + 11u)]), _e175);
     atomicStore((&grid[(h_3 + 12u)]), bitcast<u32>(g_2.reach));
     return;
 }
@@ -653,72 +656,73 @@ fn fill_cells(g_3: GridParams, i_3: u32, scatter: bool) {
     var y: u32;
     var x_1: u32;
 
-    if (i_3 >= g_3.count) {
+    let _e5 = params.count;
+    if (i_3 >= _e5) {
         return;
     }
-    let _e6 = grid_frame(g_3.header);
-    let _e7 = grid_leaf(i_3);
-    if !((_e6.nx == 0u)) {
-        local_4 = (_e7 == BSH_NONE);
+    let _e8 = grid_frame(g_3.header);
+    let _e9 = grid_leaf(i_3);
+    if !((_e8.nx == 0u)) {
+        local_4 = (_e9 == BSH_NONE);
     } else {
         local_4 = true;
     }
-    let _e17 = local_4;
-    if _e17 {
+    let _e19 = local_4;
+    if _e19 {
         return;
     }
-    let leaf_1 = bsh_nodes[_e7];
-    let _e22 = bsh_grid_radius(leaf_1, g_3.reach);
-    let _e24 = bsh_grid_first(_e6, leaf_1.center, _e22);
-    let _e26 = bsh_grid_last(_e6, leaf_1.center, _e22);
-    z = _e24.z;
+    let leaf_1 = bsh_nodes[_e9];
+    let _e24 = bsh_grid_radius(leaf_1, g_3.reach);
+    let _e26 = bsh_grid_first(_e8, leaf_1.center, _e24);
+    let _e28 = bsh_grid_last(_e8, leaf_1.center, _e24);
+    z = _e26.z;
     loop {
-        let _e29 = z;
-        if (_e29 <= _e26.z) {
+        let _e31 = z;
+        if (_e31 <= _e28.z) {
         } else {
             break;
         }
         {
-            y = _e24.y;
+            y = _e26.y;
             loop {
-                let _e34 = y;
-                if (_e34 <= _e26.y) {
+                let _e36 = y;
+                if (_e36 <= _e28.y) {
                 } else {
                     break;
                 }
                 {
-                    x_1 = _e24.x;
+                    x_1 = _e26.x;
                     loop {
-                        let _e39 = x_1;
-                        if (_e39 <= _e26.x) {
+                        let _e41 = x_1;
+                        if (_e41 <= _e28.x) {
                         } else {
                             break;
                         }
                         {
-                            let _e42 = z;
-                            let _e45 = y;
-                            let _e49 = x_1;
-                            let c_5 = ((((_e42 * _e6.ny) + _e45) * _e6.nx) + _e49);
-                            let _e56 = atomicAdd((&grid_fill[(g_3.fill + c_5)]), 1u);
+                            let _e44 = z;
+                            let _e47 = y;
+                            let _e51 = x_1;
+                            let c_5 = ((((_e44 * _e8.ny) + _e47) * _e8.nx) + _e51);
+                            let _e58 = atomicAdd((&grid_fill[(g_3.fill + c_5)]), 1u);
                             if scatter {
-                                grid_entries[_e56] = i_3;
+                                grid_entries[_e58] = i_3;
                             }
                         }
                         continuing {
-                            let _e60 = x_1;
-                            x_1 = (_e60 + 1u);
+                            let _e62 = x_1;
+                            x_1 = (_e62 + 1u);
                         }
                     }
                 }
                 continuing {
-                    let _e63 = y;
-                    y = (_e63 + 1u);
+                    let _e65 = y;
+                    y = (_e65 + 1u);
                 }
             }
         }
         continuing {
-            let _e66 = z;
-            z = (_e66 + 1u);
+            let _e68 = z;
+            z = (_e68 + 1u);
         }
     }
     return;

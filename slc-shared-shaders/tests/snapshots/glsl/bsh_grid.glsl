@@ -5,21 +5,17 @@ layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
 
 struct GridStage {
     uint stage;
-    uint pad0_;
-    uint pad1_;
-    uint pad2_;
-};
-struct GridParams {
     uint count;
     uint levels;
+    uint moves;
+};
+struct GridParams {
     uint capacity;
     float reach;
-    uint cells;
     uint header;
     uint fill;
     uint entries;
     uint least;
-    uint moves;
 };
 struct BshNode {
     vec3 center;
@@ -441,82 +437,83 @@ void sort_cells(GridParams g, uint first, uint li_2) {
         uint _e47 = span.y;
         if ((_e45 < _e47)) {
             uint _e51 = moves;
-            local = (_e51 < g.moves);
+            uint _e54 = _group_0_binding_0_cs.moves;
+            local = (_e51 < _e54);
         } else {
             local = false;
         }
-        bool _e55 = local;
-        if (_e55) {
+        bool _e57 = local;
+        if (_e57) {
         } else {
             break;
         }
         {
-            uint _e57 = s;
-            uint v_2 = _group_0_binding_6_cs[_e57];
-            uint _e60 = s;
-            c_2 = _e60;
+            uint _e59 = s;
+            uint v_2 = _group_0_binding_6_cs[_e59];
+            uint _e62 = s;
+            c_2 = _e62;
             while(true) {
-                uint _e62 = c_2;
-                uint _e64 = span.x;
-                if ((_e62 > _e64)) {
-                    uint _e69 = c_2;
-                    uint _e73 = _group_0_binding_6_cs[(_e69 - 1u)];
-                    local_1 = (_e73 > v_2);
+                uint _e64 = c_2;
+                uint _e66 = span.x;
+                if ((_e64 > _e66)) {
+                    uint _e71 = c_2;
+                    uint _e75 = _group_0_binding_6_cs[(_e71 - 1u)];
+                    local_1 = (_e75 > v_2);
                 } else {
                     local_1 = false;
                 }
-                bool _e76 = local_1;
-                if (_e76) {
+                bool _e78 = local_1;
+                if (_e78) {
                 } else {
                     break;
                 }
                 {
-                    uint _e78 = c_2;
-                    uint _e81 = c_2;
-                    uint _e85 = _group_0_binding_6_cs[(_e81 - 1u)];
-                    _group_0_binding_6_cs[_e78] = _e85;
-                    uint _e86 = c_2;
-                    c_2 = (_e86 - 1u);
+                    uint _e80 = c_2;
+                    uint _e83 = c_2;
+                    uint _e87 = _group_0_binding_6_cs[(_e83 - 1u)];
+                    _group_0_binding_6_cs[_e80] = _e87;
+                    uint _e88 = c_2;
+                    c_2 = (_e88 - 1u);
                 }
             }
-            uint _e90 = c_2;
-            _group_0_binding_6_cs[_e90] = v_2;
-            uint _e92 = moves;
-            uint _e93 = s;
-            uint _e94 = c_2;
-            moves = (_e92 + (_e93 - _e94));
-            uint _e97 = s;
-            s = (_e97 + 1u);
+            uint _e92 = c_2;
+            _group_0_binding_6_cs[_e92] = v_2;
+            uint _e94 = moves;
+            uint _e95 = s;
+            uint _e96 = c_2;
+            moves = (_e94 + (_e95 - _e96));
+            uint _e99 = s;
+            s = (_e99 + 1u);
         }
     }
-    uint _e100 = s;
-    uint _e102 = span.y;
-    if ((_e100 < _e102)) {
-        uint _e107 = atomicAdd(wg_bigs, 1u);
-        uvec2 _e109 = span;
-        wg_big[_e107] = _e109;
+    uint _e102 = s;
+    uint _e104 = span.y;
+    if ((_e102 < _e104)) {
+        uint _e109 = atomicAdd(wg_bigs, 1u);
+        uvec2 _e111 = span;
+        wg_big[_e109] = _e111;
     } else {
-        uint _e111 = span.x;
-        e = _e111;
+        uint _e113 = span.x;
+        e = _e113;
         bool loop_init_5 = true;
         while(true) {
             if (!loop_init_5) {
-                uint _e128 = e;
-                e = (_e128 + 1u);
+                uint _e130 = e;
+                e = (_e130 + 1u);
             }
             loop_init_5 = false;
-            uint _e113 = e;
-            uint _e115 = span.y;
-            if ((_e113 < _e115)) {
+            uint _e115 = e;
+            uint _e117 = span.y;
+            if ((_e115 < _e117)) {
             } else {
                 break;
             }
             {
-                uint _e118 = e;
-                uint _e122 = e;
-                uint _e124 = _group_0_binding_6_cs[_e122];
-                uint _e126 = _group_0_binding_2_cs[_e124];
-                _group_0_binding_6_cs[_e118] = _e126;
+                uint _e120 = e;
+                uint _e124 = e;
+                uint _e126 = _group_0_binding_6_cs[_e124];
+                uint _e128 = _group_0_binding_2_cs[_e126];
+                _group_0_binding_6_cs[_e120] = _e128;
             }
         }
     }
@@ -524,24 +521,24 @@ void sort_cells(GridParams g, uint first, uint li_2) {
     barrier();
     memoryBarrierShared();
     barrier();
-    uint _e131 = wg_bigs;
+    uint _e133 = wg_bigs;
     memoryBarrierShared();
     barrier();
     bool loop_init_6 = true;
     while(true) {
         if (!loop_init_6) {
-            uint _e138 = b_2;
-            b_2 = (_e138 + 1u);
+            uint _e140 = b_2;
+            b_2 = (_e140 + 1u);
         }
         loop_init_6 = false;
-        uint _e134 = b_2;
-        if ((_e134 < _e131)) {
+        uint _e136 = b_2;
+        if ((_e136 < _e133)) {
         } else {
             break;
         }
         {
-            uint _e136 = b_2;
-            sort_together(_e136, li_2);
+            uint _e138 = b_2;
+            sort_together(_e138, li_2);
         }
     }
     return;
@@ -549,43 +546,45 @@ void sort_cells(GridParams g, uint first, uint li_2) {
 
 void count_levels(GridParams g_1, uint i_2) {
     uint l = 0u;
-    if ((i_2 >= g_1.count)) {
+    uint _e4 = _group_0_binding_0_cs.count;
+    if ((i_2 >= _e4)) {
         return;
     }
     uint h_2 = g_1.header;
-    uint _e5 = grid_leaf(i_2);
-    if ((_e5 == BSH_NONE)) {
+    uint _e7 = grid_leaf(i_2);
+    if ((_e7 == BSH_NONE)) {
         return;
     }
-    uint _e13 = atomicAdd(_group_0_binding_4_cs[(h_2 + 13u)], 1u);
-    BshNode leaf = _group_0_binding_1_cs[_e5];
-    float _e18 = bsh_grid_radius(leaf, g_1.reach);
+    uint _e15 = atomicAdd(_group_0_binding_4_cs[(h_2 + 13u)], 1u);
+    BshNode leaf = _group_0_binding_1_cs[_e7];
+    float _e20 = bsh_grid_radius(leaf, g_1.reach);
     bool loop_init_7 = true;
     while(true) {
         if (!loop_init_7) {
-            uint _e63 = l;
-            l = (_e63 + 1u);
+            uint _e67 = l;
+            l = (_e67 + 1u);
         }
         loop_init_7 = false;
-        uint _e21 = l;
-        if ((_e21 < g_1.levels)) {
+        uint _e23 = l;
+        uint _e26 = _group_0_binding_0_cs.levels;
+        if ((_e23 < _e26)) {
         } else {
             break;
         }
         {
-            uint _e25 = l;
-            GridFrame _e27 = _group_0_binding_3_cs[_e25];
-            uvec3 _e29 = bsh_grid_last(_e27, leaf.center, _e18);
-            uint _e31 = l;
-            GridFrame _e33 = _group_0_binding_3_cs[_e31];
-            uvec3 _e35 = bsh_grid_first(_e33, leaf.center, _e18);
-            uvec3 d = ((_e29 - _e35) + uvec3(1u));
+            uint _e29 = l;
+            GridFrame _e31 = _group_0_binding_3_cs[_e29];
+            uvec3 _e33 = bsh_grid_last(_e31, leaf.center, _e20);
+            uint _e35 = l;
+            GridFrame _e37 = _group_0_binding_3_cs[_e35];
+            uvec3 _e39 = bsh_grid_first(_e37, leaf.center, _e20);
+            uvec3 d = ((_e33 - _e39) + uvec3(1u));
             uint n_2 = ((d.x * d.y) * d.z);
-            uint _e48 = l;
-            uint at = ((h_2 + 16u) + (2u * _e48));
-            uint _e53 = atomicAdd(_group_0_binding_4_cs[at], n_2);
-            if (((_e53 + n_2) < _e53)) {
-                uint _e61 = atomicAdd(_group_0_binding_4_cs[(at + 1u)], 1u);
+            uint _e52 = l;
+            uint at = ((h_2 + 16u) + (2u * _e52));
+            uint _e57 = atomicAdd(_group_0_binding_4_cs[at], n_2);
+            if (((_e57 + n_2) < _e57)) {
+                uint _e65 = atomicAdd(_group_0_binding_4_cs[(at + 1u)], 1u);
             }
         }
     }
@@ -600,81 +599,85 @@ void choose_level(GridParams g_2) {
     GridFrame f_3 = GridFrame(vec3(0.0), 0u, vec3(0.0), 0u, vec3(0.0), 0u);
     uint h_3 = g_2.header;
     uint leaves_1 = atomicOr(_group_0_binding_4_cs[(h_3 + 13u)], 0u);
-    chosen = g_2.levels;
+    uint _e9 = _group_0_binding_0_cs.levels;
+    chosen = _e9;
     bool loop_init_8 = true;
     while(true) {
         if (!loop_init_8) {
-            uint _e65 = l_1;
-            l_1 = (_e65 + 1u);
+            uint _e71 = l_1;
+            l_1 = (_e71 + 1u);
         }
         loop_init_8 = false;
-        uint _e11 = l_1;
-        if ((_e11 < g_2.levels)) {
+        uint _e13 = l_1;
+        uint _e16 = _group_0_binding_0_cs.levels;
+        if ((_e13 < _e16)) {
         } else {
             break;
         }
         {
-            uint _e15 = l_1;
-            GridFrame f_4 = _group_0_binding_3_cs[_e15];
+            uint _e19 = l_1;
+            GridFrame f_4 = _group_0_binding_3_cs[_e19];
             uint cells_1 = ((f_4.nx * f_4.ny) * f_4.nz);
-            uint _e24 = bsh_grid_budget(leaves_1, cells_1, g_2.least);
-            uint budget = min(_e24, g_2.capacity);
-            uint _e30 = l_1;
-            uint at_1 = ((h_3 + 16u) + (2u * _e30));
-            uint _e33 = chosen;
-            if ((_e33 == g_2.levels)) {
-                uint _e42 = atomicOr(_group_0_binding_4_cs[(at_1 + 1u)], 0u);
-                local_2 = (_e42 == 0u);
+            uint _e28 = bsh_grid_budget(leaves_1, cells_1, g_2.least);
+            uint budget = min(_e28, g_2.capacity);
+            uint _e34 = l_1;
+            uint at_1 = ((h_3 + 16u) + (2u * _e34));
+            uint _e37 = chosen;
+            uint _e40 = _group_0_binding_0_cs.levels;
+            if ((_e37 == _e40)) {
+                uint _e48 = atomicOr(_group_0_binding_4_cs[(at_1 + 1u)], 0u);
+                local_2 = (_e48 == 0u);
             } else {
                 local_2 = false;
             }
-            bool _e46 = local_2;
-            if (_e46) {
-                uint _e51 = atomicOr(_group_0_binding_4_cs[at_1], 0u);
-                local_3 = (_e51 <= budget);
+            bool _e52 = local_2;
+            if (_e52) {
+                uint _e57 = atomicOr(_group_0_binding_4_cs[at_1], 0u);
+                local_3 = (_e57 <= budget);
             } else {
                 local_3 = false;
             }
-            bool _e54 = local_3;
-            if (_e54) {
-                uint _e55 = l_1;
-                chosen = _e55;
+            bool _e60 = local_3;
+            if (_e60) {
+                uint _e61 = l_1;
+                chosen = _e61;
             }
             atomicExchange(_group_0_binding_4_cs[at_1], 0u);
             atomicExchange(_group_0_binding_4_cs[(at_1 + 1u)], 0u);
         }
     }
     atomicExchange(_group_0_binding_4_cs[(h_3 + 13u)], 0u);
-    uint _e73 = chosen;
-    if ((_e73 < g_2.levels)) {
-        uint _e77 = chosen;
-        GridFrame _e79 = _group_0_binding_3_cs[_e77];
-        f_3 = _e79;
+    uint _e79 = chosen;
+    uint _e82 = _group_0_binding_0_cs.levels;
+    if ((_e79 < _e82)) {
+        uint _e85 = chosen;
+        GridFrame _e87 = _group_0_binding_3_cs[_e85];
+        f_3 = _e87;
     }
-    float _e84 = f_3.lo.x;
-    atomicExchange(_group_0_binding_4_cs[h_3], floatBitsToUint(_e84));
-    float _e92 = f_3.lo.y;
-    atomicExchange(_group_0_binding_4_cs[(h_3 + 1u)], floatBitsToUint(_e92));
-    float _e100 = f_3.lo.z;
-    atomicExchange(_group_0_binding_4_cs[(h_3 + 2u)], floatBitsToUint(_e100));
-    uint _e107 = f_3.nx;
-    atomicExchange(_group_0_binding_4_cs[(h_3 + 3u)], _e107);
-    float _e114 = f_3.hi.x;
-    atomicExchange(_group_0_binding_4_cs[(h_3 + 4u)], floatBitsToUint(_e114));
-    float _e122 = f_3.hi.y;
-    atomicExchange(_group_0_binding_4_cs[(h_3 + 5u)], floatBitsToUint(_e122));
-    float _e130 = f_3.hi.z;
-    atomicExchange(_group_0_binding_4_cs[(h_3 + 6u)], floatBitsToUint(_e130));
-    uint _e137 = f_3.ny;
-    atomicExchange(_group_0_binding_4_cs[(h_3 + 7u)], _e137);
-    float _e144 = f_3.inv.x;
-    atomicExchange(_group_0_binding_4_cs[(h_3 + 8u)], floatBitsToUint(_e144));
-    float _e152 = f_3.inv.y;
-    atomicExchange(_group_0_binding_4_cs[(h_3 + 9u)], floatBitsToUint(_e152));
-    float _e160 = f_3.inv.z;
-    atomicExchange(_group_0_binding_4_cs[(h_3 + 10u)], floatBitsToUint(_e160));
-    uint _e167 = f_3.nz;
-    atomicExchange(_group_0_binding_4_cs[(h_3 + 11u)], _e167);
+    float _e92 = f_3.lo.x;
+    atomicExchange(_group_0_binding_4_cs[h_3], floatBitsToUint(_e92));
+    float _e100 = f_3.lo.y;
+    atomicExchange(_group_0_binding_4_cs[(h_3 + 1u)], floatBitsToUint(_e100));
+    float _e108 = f_3.lo.z;
+    atomicExchange(_group_0_binding_4_cs[(h_3 + 2u)], floatBitsToUint(_e108));
+    uint _e115 = f_3.nx;
+    atomicExchange(_group_0_binding_4_cs[(h_3 + 3u)], _e115);
+    float _e122 = f_3.hi.x;
+    atomicExchange(_group_0_binding_4_cs[(h_3 + 4u)], floatBitsToUint(_e122));
+    float _e130 = f_3.hi.y;
+    atomicExchange(_group_0_binding_4_cs[(h_3 + 5u)], floatBitsToUint(_e130));
+    float _e138 = f_3.hi.z;
+    atomicExchange(_group_0_binding_4_cs[(h_3 + 6u)], floatBitsToUint(_e138));
+    uint _e145 = f_3.ny;
+    atomicExchange(_group_0_binding_4_cs[(h_3 + 7u)], _e145);
+    float _e152 = f_3.inv.x;
+    atomicExchange(_group_0_binding_4_cs[(h_3 + 8u)], floatBitsToUint(_e152));
+    float _e160 = f_3.inv.y;
+    atomicExchange(_group_0_binding_4_cs[(h_3 + 9u)], floatBitsToUint(_e160));
+    float _e168 = f_3.inv.z;
+    atomicExchange(_group_0_binding_4_cs[(h_3 + 10u)], floatBitsToUint(_e168));
+    uint _e175 = f_3.nz;
+    atomicExchange(_group_0_binding_4_cs[(h_3 + 11u)], _e175);
     atomicExchange(_group_0_binding_4_cs[(h_3 + 12u)], floatBitsToUint(g_2.reach));
     return;
 }
@@ -684,73 +687,74 @@ void fill_cells(GridParams g_3, uint i_3, bool scatter) {
     uint z = 0u;
     uint y = 0u;
     uint x_1 = 0u;
-    if ((i_3 >= g_3.count)) {
+    uint _e5 = _group_0_binding_0_cs.count;
+    if ((i_3 >= _e5)) {
         return;
     }
-    GridFrame _e6 = grid_frame(g_3.header);
-    uint _e7 = grid_leaf(i_3);
-    if (!((_e6.nx == 0u))) {
-        local_4 = (_e7 == BSH_NONE);
+    GridFrame _e8 = grid_frame(g_3.header);
+    uint _e9 = grid_leaf(i_3);
+    if (!((_e8.nx == 0u))) {
+        local_4 = (_e9 == BSH_NONE);
     } else {
         local_4 = true;
     }
-    bool _e17 = local_4;
-    if (_e17) {
+    bool _e19 = local_4;
+    if (_e19) {
         return;
     }
-    BshNode leaf_1 = _group_0_binding_1_cs[_e7];
-    float _e22 = bsh_grid_radius(leaf_1, g_3.reach);
-    uvec3 _e24 = bsh_grid_first(_e6, leaf_1.center, _e22);
-    uvec3 _e26 = bsh_grid_last(_e6, leaf_1.center, _e22);
-    z = _e24.z;
+    BshNode leaf_1 = _group_0_binding_1_cs[_e9];
+    float _e24 = bsh_grid_radius(leaf_1, g_3.reach);
+    uvec3 _e26 = bsh_grid_first(_e8, leaf_1.center, _e24);
+    uvec3 _e28 = bsh_grid_last(_e8, leaf_1.center, _e24);
+    z = _e26.z;
     bool loop_init_9 = true;
     while(true) {
         if (!loop_init_9) {
-            uint _e66 = z;
-            z = (_e66 + 1u);
+            uint _e68 = z;
+            z = (_e68 + 1u);
         }
         loop_init_9 = false;
-        uint _e29 = z;
-        if ((_e29 <= _e26.z)) {
+        uint _e31 = z;
+        if ((_e31 <= _e28.z)) {
         } else {
             break;
         }
         {
-            y = _e24.y;
+            y = _e26.y;
             bool loop_init_10 = true;
             while(true) {
                 if (!loop_init_10) {
-                    uint _e63 = y;
-                    y = (_e63 + 1u);
+                    uint _e65 = y;
+                    y = (_e65 + 1u);
                 }
                 loop_init_10 = false;
-                uint _e34 = y;
-                if ((_e34 <= _e26.y)) {
+                uint _e36 = y;
+                if ((_e36 <= _e28.y)) {
                 } else {
                     break;
                 }
                 {
-                    x_1 = _e24.x;
+                    x_1 = _e26.x;
                     bool loop_init_11 = true;
                     while(true) {
                         if (!loop_init_11) {
-                            uint _e60 = x_1;
-                            x_1 = (_e60 + 1u);
+                            uint _e62 = x_1;
+                            x_1 = (_e62 + 1u);
                         }
                         loop_init_11 = false;
-                        uint _e39 = x_1;
-                        if ((_e39 <= _e26.x)) {
+                        uint _e41 = x_1;
+                        if ((_e41 <= _e28.x)) {
                         } else {
                             break;
                         }
                         {
-                            uint _e42 = z;
-                            uint _e45 = y;
-                            uint _e49 = x_1;
-                            uint c_5 = ((((_e42 * _e6.ny) + _e45) * _e6.nx) + _e49);
-                            uint _e56 = atomicAdd(_group_0_binding_5_cs[(g_3.fill + c_5)], 1u);
+                            uint _e44 = z;
+                            uint _e47 = y;
+                            uint _e51 = x_1;
+                            uint c_5 = ((((_e44 * _e8.ny) + _e47) * _e8.nx) + _e51);
+                            uint _e58 = atomicAdd(_group_0_binding_5_cs[(g_3.fill + c_5)], 1u);
                             if (scatter) {
-                                _group_0_binding_6_cs[_e56] = i_3;
+                                _group_0_binding_6_cs[_e58] = i_3;
                             }
                         }
                     }

@@ -1,21 +1,17 @@
 struct GridStage {
     uint stage;
-    uint pad0_;
-    uint pad1_;
-    uint pad2_;
+    uint count;
+    uint levels;
+    uint moves;
 };
 
 struct GridParams {
-    uint count;
-    uint levels;
     uint capacity;
     float reach;
-    uint cells;
     uint header;
     uint fill;
     uint entries;
     uint least;
-    uint moves;
 };
 
 struct BshNode {
@@ -469,94 +465,95 @@ void sort_cells(GridParams g, uint first, uint li_2)
         uint _e47 = span.y;
         if ((_e45 < _e47)) {
             uint _e51 = moves;
-            local = (_e51 < g.moves);
+            uint _e54 = params.moves;
+            local = (_e51 < _e54);
         } else {
             local = false;
         }
-        bool _e55 = local;
-        if (_e55) {
+        bool _e57 = local;
+        if (_e57) {
         } else {
             break;
         }
         {
-            uint _e57 = s;
-            uint v_2 = asuint(grid_entries.Load(_e57*4));
-            uint _e60 = s;
-            c_2 = _e60;
+            uint _e59 = s;
+            uint v_2 = asuint(grid_entries.Load(_e59*4));
+            uint _e62 = s;
+            c_2 = _e62;
             uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
             while(true) {
                 if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
                 loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
-                uint _e62 = c_2;
-                uint _e64 = span.x;
-                if ((_e62 > _e64)) {
-                    uint _e69 = c_2;
-                    uint _e73 = asuint(grid_entries.Load((_e69 - 1u)*4));
-                    local_1 = (_e73 > v_2);
+                uint _e64 = c_2;
+                uint _e66 = span.x;
+                if ((_e64 > _e66)) {
+                    uint _e71 = c_2;
+                    uint _e75 = asuint(grid_entries.Load((_e71 - 1u)*4));
+                    local_1 = (_e75 > v_2);
                 } else {
                     local_1 = false;
                 }
-                bool _e76 = local_1;
-                if (_e76) {
+                bool _e78 = local_1;
+                if (_e78) {
                 } else {
                     break;
                 }
                 {
-                    uint _e78 = c_2;
-                    uint _e81 = c_2;
-                    uint _e85 = asuint(grid_entries.Load((_e81 - 1u)*4));
-                    grid_entries.Store(_e78*4, asuint(_e85));
-                    uint _e86 = c_2;
-                    c_2 = (_e86 - 1u);
+                    uint _e80 = c_2;
+                    uint _e83 = c_2;
+                    uint _e87 = asuint(grid_entries.Load((_e83 - 1u)*4));
+                    grid_entries.Store(_e80*4, asuint(_e87));
+                    uint _e88 = c_2;
+                    c_2 = (_e88 - 1u);
                 }
             }
-            uint _e90 = c_2;
-            grid_entries.Store(_e90*4, asuint(v_2));
-            uint _e92 = moves;
-            uint _e93 = s;
-            uint _e94 = c_2;
-            moves = (_e92 + (_e93 - _e94));
-            uint _e97 = s;
-            s = (_e97 + 1u);
+            uint _e92 = c_2;
+            grid_entries.Store(_e92*4, asuint(v_2));
+            uint _e94 = moves;
+            uint _e95 = s;
+            uint _e96 = c_2;
+            moves = (_e94 + (_e95 - _e96));
+            uint _e99 = s;
+            s = (_e99 + 1u);
         }
     }
-    uint _e100 = s;
-    uint _e102 = span.y;
-    if ((_e100 < _e102)) {
-        uint _e107; InterlockedAdd(wg_bigs, 1u, _e107);
-        uint2 _e109 = span;
-        wg_big[min(uint(_e107), 63u)] = _e109;
+    uint _e102 = s;
+    uint _e104 = span.y;
+    if ((_e102 < _e104)) {
+        uint _e109; InterlockedAdd(wg_bigs, 1u, _e109);
+        uint2 _e111 = span;
+        wg_big[min(uint(_e109), 63u)] = _e111;
     } else {
-        uint _e111 = span.x;
-        e = _e111;
+        uint _e113 = span.x;
+        e = _e113;
         uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
         bool loop_init_5 = true;
         while(true) {
             if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
             loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
             if (!loop_init_5) {
-                uint _e128 = e;
-                e = (_e128 + 1u);
+                uint _e130 = e;
+                e = (_e130 + 1u);
             }
             loop_init_5 = false;
-            uint _e113 = e;
-            uint _e115 = span.y;
-            if ((_e113 < _e115)) {
+            uint _e115 = e;
+            uint _e117 = span.y;
+            if ((_e115 < _e117)) {
             } else {
                 break;
             }
             {
-                uint _e118 = e;
-                uint _e122 = e;
-                uint _e124 = asuint(grid_entries.Load(_e122*4));
-                uint _e126 = asuint(grid_leaves.Load(_e124*4));
-                grid_entries.Store(_e118*4, asuint(_e126));
+                uint _e120 = e;
+                uint _e124 = e;
+                uint _e126 = asuint(grid_entries.Load(_e124*4));
+                uint _e128 = asuint(grid_leaves.Load(_e126*4));
+                grid_entries.Store(_e120*4, asuint(_e128));
             }
         }
     }
     DeviceMemoryBarrierWithGroupSync();
     GroupMemoryBarrierWithGroupSync();
-    uint _e131 = wg_bigs;
+    uint _e133 = wg_bigs;
     GroupMemoryBarrierWithGroupSync();
     uint2 loop_bound_9 = uint2(4294967295u, 4294967295u);
     bool loop_init_6 = true;
@@ -564,18 +561,18 @@ void sort_cells(GridParams g, uint first, uint li_2)
         if (all(loop_bound_9 == uint2(0u, 0u))) { break; }
         loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
         if (!loop_init_6) {
-            uint _e138 = b_2;
-            b_2 = (_e138 + 1u);
+            uint _e140 = b_2;
+            b_2 = (_e140 + 1u);
         }
         loop_init_6 = false;
-        uint _e134 = b_2;
-        if ((_e134 < _e131)) {
+        uint _e136 = b_2;
+        if ((_e136 < _e133)) {
         } else {
             break;
         }
         {
-            uint _e136 = b_2;
-            sort_together(_e136, li_2);
+            uint _e138 = b_2;
+            sort_together(_e138, li_2);
         }
     }
     return;
@@ -607,46 +604,48 @@ void count_levels(GridParams g_1, uint i_2)
 {
     uint l = 0u;
 
-    if ((i_2 >= g_1.count)) {
+    uint _e4 = params.count;
+    if ((i_2 >= _e4)) {
         return;
     }
     uint h_2 = g_1.header;
-    const uint _e5 = grid_leaf(i_2);
-    if ((_e5 == BSH_NONE)) {
+    const uint _e7 = grid_leaf(i_2);
+    if ((_e7 == BSH_NONE)) {
         return;
     }
-    uint _e13; grid.InterlockedAdd((h_2 + 13u)*4, 1u, _e13);
-    BshNode leaf = ConstructBshNode(asfloat(bsh_nodes.Load3(_e5*32+0)), asfloat(bsh_nodes.Load(_e5*32+12)), asuint(bsh_nodes.Load(_e5*32+16)), asuint(bsh_nodes.Load(_e5*32+20)), asuint(bsh_nodes.Load(_e5*32+24)), asfloat(bsh_nodes.Load(_e5*32+28)));
-    const float _e18 = bsh_grid_radius(leaf, g_1.reach);
+    uint _e15; grid.InterlockedAdd((h_2 + 13u)*4, 1u, _e15);
+    BshNode leaf = ConstructBshNode(asfloat(bsh_nodes.Load3(_e7*32+0)), asfloat(bsh_nodes.Load(_e7*32+12)), asuint(bsh_nodes.Load(_e7*32+16)), asuint(bsh_nodes.Load(_e7*32+20)), asuint(bsh_nodes.Load(_e7*32+24)), asfloat(bsh_nodes.Load(_e7*32+28)));
+    const float _e20 = bsh_grid_radius(leaf, g_1.reach);
     uint2 loop_bound_10 = uint2(4294967295u, 4294967295u);
     bool loop_init_7 = true;
     while(true) {
         if (all(loop_bound_10 == uint2(0u, 0u))) { break; }
         loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
         if (!loop_init_7) {
-            uint _e63 = l;
-            l = (_e63 + 1u);
+            uint _e67 = l;
+            l = (_e67 + 1u);
         }
         loop_init_7 = false;
-        uint _e21 = l;
-        if ((_e21 < g_1.levels)) {
+        uint _e23 = l;
+        uint _e26 = params.levels;
+        if ((_e23 < _e26)) {
         } else {
             break;
         }
         {
-            uint _e25 = l;
-            GridFrame _e27 = ConstructGridFrame(asfloat(grid_levels.Load3(_e25*48+0)), asuint(grid_levels.Load(_e25*48+12)), asfloat(grid_levels.Load3(_e25*48+16)), asuint(grid_levels.Load(_e25*48+28)), asfloat(grid_levels.Load3(_e25*48+32)), asuint(grid_levels.Load(_e25*48+44)));
-            const uint3 _e29 = bsh_grid_last(_e27, leaf.center_, _e18);
-            uint _e31 = l;
-            GridFrame _e33 = ConstructGridFrame(asfloat(grid_levels.Load3(_e31*48+0)), asuint(grid_levels.Load(_e31*48+12)), asfloat(grid_levels.Load3(_e31*48+16)), asuint(grid_levels.Load(_e31*48+28)), asfloat(grid_levels.Load3(_e31*48+32)), asuint(grid_levels.Load(_e31*48+44)));
-            const uint3 _e35 = bsh_grid_first(_e33, leaf.center_, _e18);
-            uint3 d = ((_e29 - _e35) + (1u).xxx);
+            uint _e29 = l;
+            GridFrame _e31 = ConstructGridFrame(asfloat(grid_levels.Load3(_e29*48+0)), asuint(grid_levels.Load(_e29*48+12)), asfloat(grid_levels.Load3(_e29*48+16)), asuint(grid_levels.Load(_e29*48+28)), asfloat(grid_levels.Load3(_e29*48+32)), asuint(grid_levels.Load(_e29*48+44)));
+            const uint3 _e33 = bsh_grid_last(_e31, leaf.center_, _e20);
+            uint _e35 = l;
+            GridFrame _e37 = ConstructGridFrame(asfloat(grid_levels.Load3(_e35*48+0)), asuint(grid_levels.Load(_e35*48+12)), asfloat(grid_levels.Load3(_e35*48+16)), asuint(grid_levels.Load(_e35*48+28)), asfloat(grid_levels.Load3(_e35*48+32)), asuint(grid_levels.Load(_e35*48+44)));
+            const uint3 _e39 = bsh_grid_first(_e37, leaf.center_, _e20);
+            uint3 d = ((_e33 - _e39) + (1u).xxx);
             uint n_2 = ((d.x * d.y) * d.z);
-            uint _e48 = l;
-            uint at = ((h_2 + 16u) + (2u * _e48));
-            uint _e53; grid.InterlockedAdd(at*4, n_2, _e53);
-            if (((_e53 + n_2) < _e53)) {
-                uint _e61; grid.InterlockedAdd((at + 1u)*4, 1u, _e61);
+            uint _e52 = l;
+            uint at = ((h_2 + 16u) + (2u * _e52));
+            uint _e57; grid.InterlockedAdd(at*4, n_2, _e57);
+            if (((_e57 + n_2) < _e57)) {
+                uint _e65; grid.InterlockedAdd((at + 1u)*4, 1u, _e65);
             }
         }
     }
@@ -663,84 +662,88 @@ void choose_level(GridParams g_2)
 
     uint h_3 = g_2.header;
     uint leaves_1; grid.InterlockedOr((h_3 + 13u)*4, 0, leaves_1);
-    chosen = g_2.levels;
+    uint _e9 = params.levels;
+    chosen = _e9;
     uint2 loop_bound_11 = uint2(4294967295u, 4294967295u);
     bool loop_init_8 = true;
     while(true) {
         if (all(loop_bound_11 == uint2(0u, 0u))) { break; }
         loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
         if (!loop_init_8) {
-            uint _e65 = l_1;
-            l_1 = (_e65 + 1u);
+            uint _e71 = l_1;
+            l_1 = (_e71 + 1u);
         }
         loop_init_8 = false;
-        uint _e11 = l_1;
-        if ((_e11 < g_2.levels)) {
+        uint _e13 = l_1;
+        uint _e16 = params.levels;
+        if ((_e13 < _e16)) {
         } else {
             break;
         }
         {
-            uint _e15 = l_1;
-            GridFrame f_4 = ConstructGridFrame(asfloat(grid_levels.Load3(_e15*48+0)), asuint(grid_levels.Load(_e15*48+12)), asfloat(grid_levels.Load3(_e15*48+16)), asuint(grid_levels.Load(_e15*48+28)), asfloat(grid_levels.Load3(_e15*48+32)), asuint(grid_levels.Load(_e15*48+44)));
+            uint _e19 = l_1;
+            GridFrame f_4 = ConstructGridFrame(asfloat(grid_levels.Load3(_e19*48+0)), asuint(grid_levels.Load(_e19*48+12)), asfloat(grid_levels.Load3(_e19*48+16)), asuint(grid_levels.Load(_e19*48+28)), asfloat(grid_levels.Load3(_e19*48+32)), asuint(grid_levels.Load(_e19*48+44)));
             uint cells_1 = ((f_4.nx * f_4.ny) * f_4.nz);
-            const uint _e24 = bsh_grid_budget(leaves_1, cells_1, g_2.least);
-            uint budget = min(_e24, g_2.capacity);
-            uint _e30 = l_1;
-            uint at_1 = ((h_3 + 16u) + (2u * _e30));
-            uint _e33 = chosen;
-            if ((_e33 == g_2.levels)) {
-                uint _e42; grid.InterlockedOr((at_1 + 1u)*4, 0, _e42);
-                local_2 = (_e42 == 0u);
+            const uint _e28 = bsh_grid_budget(leaves_1, cells_1, g_2.least);
+            uint budget = min(_e28, g_2.capacity);
+            uint _e34 = l_1;
+            uint at_1 = ((h_3 + 16u) + (2u * _e34));
+            uint _e37 = chosen;
+            uint _e40 = params.levels;
+            if ((_e37 == _e40)) {
+                uint _e48; grid.InterlockedOr((at_1 + 1u)*4, 0, _e48);
+                local_2 = (_e48 == 0u);
             } else {
                 local_2 = false;
             }
-            bool _e46 = local_2;
-            if (_e46) {
-                uint _e51; grid.InterlockedOr(at_1*4, 0, _e51);
-                local_3 = (_e51 <= budget);
+            bool _e52 = local_2;
+            if (_e52) {
+                uint _e57; grid.InterlockedOr(at_1*4, 0, _e57);
+                local_3 = (_e57 <= budget);
             } else {
                 local_3 = false;
             }
-            bool _e54 = local_3;
-            if (_e54) {
-                uint _e55 = l_1;
-                chosen = _e55;
+            bool _e60 = local_3;
+            if (_e60) {
+                uint _e61 = l_1;
+                chosen = _e61;
             }
             { uint dummy_2 = 0; grid.InterlockedExchange(at_1*4, 0u, dummy_2); }
             { uint dummy_3 = 0; grid.InterlockedExchange((at_1 + 1u)*4, 0u, dummy_3); }
         }
     }
     { uint dummy_4 = 0; grid.InterlockedExchange((h_3 + 13u)*4, 0u, dummy_4); }
-    uint _e73 = chosen;
-    if ((_e73 < g_2.levels)) {
-        uint _e77 = chosen;
-        GridFrame _e79 = ConstructGridFrame(asfloat(grid_levels.Load3(_e77*48+0)), asuint(grid_levels.Load(_e77*48+12)), asfloat(grid_levels.Load3(_e77*48+16)), asuint(grid_levels.Load(_e77*48+28)), asfloat(grid_levels.Load3(_e77*48+32)), asuint(grid_levels.Load(_e77*48+44)));
-        f_3 = _e79;
+    uint _e79 = chosen;
+    uint _e82 = params.levels;
+    if ((_e79 < _e82)) {
+        uint _e85 = chosen;
+        GridFrame _e87 = ConstructGridFrame(asfloat(grid_levels.Load3(_e85*48+0)), asuint(grid_levels.Load(_e85*48+12)), asfloat(grid_levels.Load3(_e85*48+16)), asuint(grid_levels.Load(_e85*48+28)), asfloat(grid_levels.Load3(_e85*48+32)), asuint(grid_levels.Load(_e85*48+44)));
+        f_3 = _e87;
     }
-    float _e84 = f_3.lo.x;
-    { uint dummy_5 = 0; grid.InterlockedExchange(h_3*4, asuint(_e84), dummy_5); }
-    float _e92 = f_3.lo.y;
-    { uint dummy_6 = 0; grid.InterlockedExchange((h_3 + 1u)*4, asuint(_e92), dummy_6); }
-    float _e100 = f_3.lo.z;
-    { uint dummy_7 = 0; grid.InterlockedExchange((h_3 + 2u)*4, asuint(_e100), dummy_7); }
-    uint _e107 = f_3.nx;
-    { uint dummy_8 = 0; grid.InterlockedExchange((h_3 + 3u)*4, _e107, dummy_8); }
-    float _e114 = f_3.hi.x;
-    { uint dummy_9 = 0; grid.InterlockedExchange((h_3 + 4u)*4, asuint(_e114), dummy_9); }
-    float _e122 = f_3.hi.y;
-    { uint dummy_10 = 0; grid.InterlockedExchange((h_3 + 5u)*4, asuint(_e122), dummy_10); }
-    float _e130 = f_3.hi.z;
-    { uint dummy_11 = 0; grid.InterlockedExchange((h_3 + 6u)*4, asuint(_e130), dummy_11); }
-    uint _e137 = f_3.ny;
-    { uint dummy_12 = 0; grid.InterlockedExchange((h_3 + 7u)*4, _e137, dummy_12); }
-    float _e144 = f_3.inv.x;
-    { uint dummy_13 = 0; grid.InterlockedExchange((h_3 + 8u)*4, asuint(_e144), dummy_13); }
-    float _e152 = f_3.inv.y;
-    { uint dummy_14 = 0; grid.InterlockedExchange((h_3 + 9u)*4, asuint(_e152), dummy_14); }
-    float _e160 = f_3.inv.z;
-    { uint dummy_15 = 0; grid.InterlockedExchange((h_3 + 10u)*4, asuint(_e160), dummy_15); }
-    uint _e167 = f_3.nz;
-    { uint dummy_16 = 0; grid.InterlockedExchange((h_3 + 11u)*4, _e167, dummy_16); }
+    float _e92 = f_3.lo.x;
+    { uint dummy_5 = 0; grid.InterlockedExchange(h_3*4, asuint(_e92), dummy_5); }
+    float _e100 = f_3.lo.y;
+    { uint dummy_6 = 0; grid.InterlockedExchange((h_3 + 1u)*4, asuint(_e100), dummy_6); }
+    float _e108 = f_3.lo.z;
+    { uint dummy_7 = 0; grid.InterlockedExchange((h_3 + 2u)*4, asuint(_e108), dummy_7); }
+    uint _e115 = f_3.nx;
+    { uint dummy_8 = 0; grid.InterlockedExchange((h_3 + 3u)*4, _e115, dummy_8); }
+    float _e122 = f_3.hi.x;
+    { uint dummy_9 = 0; grid.InterlockedExchange((h_3 + 4u)*4, asuint(_e122), dummy_9); }
+    float _e130 = f_3.hi.y;
+    { uint dummy_10 = 0; grid.InterlockedExchange((h_3 + 5u)*4, asuint(_e130), dummy_10); }
+    float _e138 = f_3.hi.z;
+    { uint dummy_11 = 0; grid.InterlockedExchange((h_3 + 6u)*4, asuint(_e138), dummy_11); }
+    uint _e145 = f_3.ny;
+    { uint dummy_12 = 0; grid.InterlockedExchange((h_3 + 7u)*4, _e145, dummy_12); }
+    float _e152 = f_3.inv.x;
+    { uint dummy_13 = 0; grid.InterlockedExchange((h_3 + 8u)*4, asuint(_e152), dummy_13); }
+    float _e160 = f_3.inv.y;
+    { uint dummy_14 = 0; grid.InterlockedExchange((h_3 + 9u)*4, asuint(_e160), dummy_14); }
+    float _e168 = f_3.inv.z;
+    { uint dummy_15 = 0; grid.InterlockedExchange((h_3 + 10u)*4, asuint(_e168), dummy_15); }
+    uint _e175 = f_3.nz;
+    { uint dummy_16 = 0; grid.InterlockedExchange((h_3 + 11u)*4, _e175, dummy_16); }
     { uint dummy_17 = 0; grid.InterlockedExchange((h_3 + 12u)*4, asuint(g_2.reach), dummy_17); }
     return;
 }
@@ -752,82 +755,83 @@ void fill_cells(GridParams g_3, uint i_3, bool scatter)
     uint y = (uint)0;
     uint x_1 = (uint)0;
 
-    if ((i_3 >= g_3.count)) {
+    uint _e5 = params.count;
+    if ((i_3 >= _e5)) {
         return;
     }
-    const GridFrame _e6 = grid_frame(g_3.header);
-    const uint _e7 = grid_leaf(i_3);
-    if (!((_e6.nx == 0u))) {
-        local_4 = (_e7 == BSH_NONE);
+    const GridFrame _e8 = grid_frame(g_3.header);
+    const uint _e9 = grid_leaf(i_3);
+    if (!((_e8.nx == 0u))) {
+        local_4 = (_e9 == BSH_NONE);
     } else {
         local_4 = true;
     }
-    bool _e17 = local_4;
-    if (_e17) {
+    bool _e19 = local_4;
+    if (_e19) {
         return;
     }
-    BshNode leaf_1 = ConstructBshNode(asfloat(bsh_nodes.Load3(_e7*32+0)), asfloat(bsh_nodes.Load(_e7*32+12)), asuint(bsh_nodes.Load(_e7*32+16)), asuint(bsh_nodes.Load(_e7*32+20)), asuint(bsh_nodes.Load(_e7*32+24)), asfloat(bsh_nodes.Load(_e7*32+28)));
-    const float _e22 = bsh_grid_radius(leaf_1, g_3.reach);
-    const uint3 _e24 = bsh_grid_first(_e6, leaf_1.center_, _e22);
-    const uint3 _e26 = bsh_grid_last(_e6, leaf_1.center_, _e22);
-    z = _e24.z;
+    BshNode leaf_1 = ConstructBshNode(asfloat(bsh_nodes.Load3(_e9*32+0)), asfloat(bsh_nodes.Load(_e9*32+12)), asuint(bsh_nodes.Load(_e9*32+16)), asuint(bsh_nodes.Load(_e9*32+20)), asuint(bsh_nodes.Load(_e9*32+24)), asfloat(bsh_nodes.Load(_e9*32+28)));
+    const float _e24 = bsh_grid_radius(leaf_1, g_3.reach);
+    const uint3 _e26 = bsh_grid_first(_e8, leaf_1.center_, _e24);
+    const uint3 _e28 = bsh_grid_last(_e8, leaf_1.center_, _e24);
+    z = _e26.z;
     uint2 loop_bound_12 = uint2(4294967295u, 4294967295u);
     bool loop_init_9 = true;
     while(true) {
         if (all(loop_bound_12 == uint2(0u, 0u))) { break; }
         loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
         if (!loop_init_9) {
-            uint _e66 = z;
-            z = (_e66 + 1u);
+            uint _e68 = z;
+            z = (_e68 + 1u);
         }
         loop_init_9 = false;
-        uint _e29 = z;
-        if ((_e29 <= _e26.z)) {
+        uint _e31 = z;
+        if ((_e31 <= _e28.z)) {
         } else {
             break;
         }
         {
-            y = _e24.y;
+            y = _e26.y;
             uint2 loop_bound_13 = uint2(4294967295u, 4294967295u);
             bool loop_init_10 = true;
             while(true) {
                 if (all(loop_bound_13 == uint2(0u, 0u))) { break; }
                 loop_bound_13 -= uint2(loop_bound_13.y == 0u, 1u);
                 if (!loop_init_10) {
-                    uint _e63 = y;
-                    y = (_e63 + 1u);
+                    uint _e65 = y;
+                    y = (_e65 + 1u);
                 }
                 loop_init_10 = false;
-                uint _e34 = y;
-                if ((_e34 <= _e26.y)) {
+                uint _e36 = y;
+                if ((_e36 <= _e28.y)) {
                 } else {
                     break;
                 }
                 {
-                    x_1 = _e24.x;
+                    x_1 = _e26.x;
                     uint2 loop_bound_14 = uint2(4294967295u, 4294967295u);
                     bool loop_init_11 = true;
                     while(true) {
                         if (all(loop_bound_14 == uint2(0u, 0u))) { break; }
                         loop_bound_14 -= uint2(loop_bound_14.y == 0u, 1u);
                         if (!loop_init_11) {
-                            uint _e60 = x_1;
-                            x_1 = (_e60 + 1u);
+                            uint _e62 = x_1;
+                            x_1 = (_e62 + 1u);
                         }
                         loop_init_11 = false;
-                        uint _e39 = x_1;
-                        if ((_e39 <= _e26.x)) {
+                        uint _e41 = x_1;
+                        if ((_e41 <= _e28.x)) {
                         } else {
                             break;
                         }
                         {
-                            uint _e42 = z;
-                            uint _e45 = y;
-                            uint _e49 = x_1;
-                            uint c_5 = ((((_e42 * _e6.ny) + _e45) * _e6.nx) + _e49);
-                            uint _e56; grid_fill.InterlockedAdd((g_3.fill + c_5)*4, 1u, _e56);
+                            uint _e44 = z;
+                            uint _e47 = y;
+                            uint _e51 = x_1;
+                            uint c_5 = ((((_e44 * _e8.ny) + _e47) * _e8.nx) + _e51);
+                            uint _e58; grid_fill.InterlockedAdd((g_3.fill + c_5)*4, 1u, _e58);
                             if (scatter) {
-                                grid_entries.Store(_e56*4, asuint(i_3));
+                                grid_entries.Store(_e58*4, asuint(i_3));
                             }
                         }
                     }
@@ -943,18 +947,14 @@ void scan_starts(GridParams g_4, uint li_3)
     }
 }
 
-GridParams ConstructGridParams(uint arg0, uint arg1, uint arg2, float arg3, uint arg4, uint arg5, uint arg6, uint arg7, uint arg8, uint arg9) {
+GridParams ConstructGridParams(uint arg0, float arg1, uint arg2, uint arg3, uint arg4, uint arg5) {
     GridParams ret = (GridParams)0;
-    ret.count = arg0;
-    ret.levels = arg1;
-    ret.capacity = arg2;
-    ret.reach = arg3;
-    ret.cells = arg4;
-    ret.header = arg5;
-    ret.fill = arg6;
-    ret.entries = arg7;
-    ret.least = arg8;
-    ret.moves = arg9;
+    ret.capacity = arg0;
+    ret.reach = arg1;
+    ret.header = arg2;
+    ret.fill = arg3;
+    ret.entries = arg4;
+    ret.least = arg5;
     return ret;
 }
 
@@ -968,7 +968,7 @@ void main(uint3 gid : SV_DispatchThreadID, uint3 wid : SV_GroupID, uint3 groups 
         wg_cell = (uint[1024])0;
     }
     GroupMemoryBarrierWithGroupSync();
-    GridParams g_5 = ConstructGridParams(asuint(grids.Load(wid.z*40+0)), asuint(grids.Load(wid.z*40+4)), asuint(grids.Load(wid.z*40+8)), asfloat(grids.Load(wid.z*40+12)), asuint(grids.Load(wid.z*40+16)), asuint(grids.Load(wid.z*40+20)), asuint(grids.Load(wid.z*40+24)), asuint(grids.Load(wid.z*40+28)), asuint(grids.Load(wid.z*40+32)), asuint(grids.Load(wid.z*40+36)));
+    GridParams g_5 = ConstructGridParams(asuint(grids.Load(wid.z*24+0)), asfloat(grids.Load(wid.z*24+4)), asuint(grids.Load(wid.z*24+8)), asuint(grids.Load(wid.z*24+12)), asuint(grids.Load(wid.z*24+16)), asuint(grids.Load(wid.z*24+20)));
     uint _e10 = params.stage;
     switch(_e10) {
         case 0u: {

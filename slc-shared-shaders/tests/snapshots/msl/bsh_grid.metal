@@ -16,21 +16,17 @@ struct _mslBufferSizes {
 
 struct GridStage {
     uint stage;
-    uint pad0_;
-    uint pad1_;
-    uint pad2_;
-};
-struct GridParams {
     uint count;
     uint levels;
+    uint moves;
+};
+struct GridParams {
     uint capacity;
     float reach;
-    uint cells;
     uint header;
     uint fill;
     uint entries;
     uint least;
-    uint moves;
 };
 struct BshNode {
     metal::packed_float3 center;
@@ -504,6 +500,7 @@ void sort_cells(
     GridParams g,
     uint first,
     uint li_2,
+    constant GridStage& params,
     device type_5 const& grid_leaves,
     device type_8 const& grid,
     device type_8& grid_fill,
@@ -544,88 +541,89 @@ void sort_cells(
         uint _e47 = span.y;
         if (_e45 < _e47) {
             uint _e51 = moves;
-            local = _e51 < g.moves;
+            uint _e54 = params.moves;
+            local = _e51 < _e54;
         } else {
             local = false;
         }
-        bool _e55 = local;
-        if (_e55) {
+        bool _e57 = local;
+        if (_e57) {
         } else {
             break;
         }
         {
-            uint _e57 = s;
-            uint v_2 = grid_entries[_e57];
-            uint _e60 = s;
-            c_2 = _e60;
+            uint _e59 = s;
+            uint v_2 = grid_entries[_e59];
+            uint _e62 = s;
+            c_2 = _e62;
             uint2 loop_bound_7 = uint2(4294967295u);
             while(true) {
                 if (metal::all(loop_bound_7 == uint2(0u))) { break; }
                 loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
-                uint _e62 = c_2;
-                uint _e64 = span.x;
-                if (_e62 > _e64) {
-                    uint _e69 = c_2;
-                    uint _e73 = grid_entries[_e69 - 1u];
-                    local_1 = _e73 > v_2;
+                uint _e64 = c_2;
+                uint _e66 = span.x;
+                if (_e64 > _e66) {
+                    uint _e71 = c_2;
+                    uint _e75 = grid_entries[_e71 - 1u];
+                    local_1 = _e75 > v_2;
                 } else {
                     local_1 = false;
                 }
-                bool _e76 = local_1;
-                if (_e76) {
+                bool _e78 = local_1;
+                if (_e78) {
                 } else {
                     break;
                 }
                 {
-                    uint _e78 = c_2;
-                    uint _e81 = c_2;
-                    uint _e85 = grid_entries[_e81 - 1u];
-                    grid_entries[_e78] = _e85;
-                    uint _e86 = c_2;
-                    c_2 = _e86 - 1u;
+                    uint _e80 = c_2;
+                    uint _e83 = c_2;
+                    uint _e87 = grid_entries[_e83 - 1u];
+                    grid_entries[_e80] = _e87;
+                    uint _e88 = c_2;
+                    c_2 = _e88 - 1u;
                 }
             }
-            uint _e90 = c_2;
-            grid_entries[_e90] = v_2;
-            uint _e92 = moves;
-            uint _e93 = s;
-            uint _e94 = c_2;
-            moves = _e92 + (_e93 - _e94);
-            uint _e97 = s;
-            s = _e97 + 1u;
+            uint _e92 = c_2;
+            grid_entries[_e92] = v_2;
+            uint _e94 = moves;
+            uint _e95 = s;
+            uint _e96 = c_2;
+            moves = _e94 + (_e95 - _e96);
+            uint _e99 = s;
+            s = _e99 + 1u;
         }
     }
-    uint _e100 = s;
-    uint _e102 = span.y;
-    if (_e100 < _e102) {
-        uint _e107 = metal::atomic_fetch_add_explicit(&wg_bigs, 1u, metal::memory_order_relaxed);
-        metal::uint2 _e109 = span;
-        wg_big.inner[_e107] = _e109;
+    uint _e102 = s;
+    uint _e104 = span.y;
+    if (_e102 < _e104) {
+        uint _e109 = metal::atomic_fetch_add_explicit(&wg_bigs, 1u, metal::memory_order_relaxed);
+        metal::uint2 _e111 = span;
+        wg_big.inner[_e109] = _e111;
     } else {
-        uint _e111 = span.x;
-        e = _e111;
+        uint _e113 = span.x;
+        e = _e113;
         uint2 loop_bound_8 = uint2(4294967295u);
         bool loop_init_5 = true;
         while(true) {
             if (metal::all(loop_bound_8 == uint2(0u))) { break; }
             loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
             if (!loop_init_5) {
-                uint _e128 = e;
-                e = _e128 + 1u;
+                uint _e130 = e;
+                e = _e130 + 1u;
             }
             loop_init_5 = false;
-            uint _e113 = e;
-            uint _e115 = span.y;
-            if (_e113 < _e115) {
+            uint _e115 = e;
+            uint _e117 = span.y;
+            if (_e115 < _e117) {
             } else {
                 break;
             }
             {
-                uint _e118 = e;
-                uint _e122 = e;
-                uint _e124 = grid_entries[_e122];
-                uint _e126 = grid_leaves[_e124];
-                grid_entries[_e118] = _e126;
+                uint _e120 = e;
+                uint _e124 = e;
+                uint _e126 = grid_entries[_e124];
+                uint _e128 = grid_leaves[_e126];
+                grid_entries[_e120] = _e128;
             }
         }
     }
@@ -639,18 +637,18 @@ void sort_cells(
         if (metal::all(loop_bound_9 == uint2(0u))) { break; }
         loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
         if (!loop_init_6) {
-            uint _e138 = b_2;
-            b_2 = _e138 + 1u;
+            uint _e140 = b_2;
+            b_2 = _e140 + 1u;
         }
         loop_init_6 = false;
-        uint _e134 = b_2;
-        if (_e134 < unnamed_1) {
+        uint _e136 = b_2;
+        if (_e136 < unnamed_1) {
         } else {
             break;
         }
         {
-            uint _e136 = b_2;
-            sort_together(_e136, li_2, grid_leaves, grid_entries, wg_big, wg_cell, _buffer_sizes);
+            uint _e138 = b_2;
+            sort_together(_e138, li_2, grid_leaves, grid_entries, wg_big, wg_cell, _buffer_sizes);
         }
     }
     return;
@@ -659,6 +657,7 @@ void sort_cells(
 void count_levels(
     GridParams g_1,
     uint i_2,
+    constant GridStage& params,
     device type_4 const& bsh_nodes,
     device type_5 const& grid_leaves,
     device type_6 const& grid_levels,
@@ -666,46 +665,48 @@ void count_levels(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint l = 0u;
-    if (i_2 >= g_1.count) {
+    uint _e4 = params.count;
+    if (i_2 >= _e4) {
         return;
     }
     uint h_2 = g_1.header;
-    uint _e5 = grid_leaf(i_2, bsh_nodes, grid_leaves, _buffer_sizes);
-    if (_e5 == BSH_NONE) {
+    uint _e7 = grid_leaf(i_2, bsh_nodes, grid_leaves, _buffer_sizes);
+    if (_e7 == BSH_NONE) {
         return;
     }
-    uint _e13 = metal::atomic_fetch_add_explicit(&grid[h_2 + 13u], 1u, metal::memory_order_relaxed);
-    BshNode leaf = bsh_nodes[_e5];
-    float _e18 = bsh_grid_radius(leaf, g_1.reach);
+    uint _e15 = metal::atomic_fetch_add_explicit(&grid[h_2 + 13u], 1u, metal::memory_order_relaxed);
+    BshNode leaf = bsh_nodes[_e7];
+    float _e20 = bsh_grid_radius(leaf, g_1.reach);
     uint2 loop_bound_10 = uint2(4294967295u);
     bool loop_init_7 = true;
     while(true) {
         if (metal::all(loop_bound_10 == uint2(0u))) { break; }
         loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
         if (!loop_init_7) {
-            uint _e63 = l;
-            l = _e63 + 1u;
+            uint _e67 = l;
+            l = _e67 + 1u;
         }
         loop_init_7 = false;
-        uint _e21 = l;
-        if (_e21 < g_1.levels) {
+        uint _e23 = l;
+        uint _e26 = params.levels;
+        if (_e23 < _e26) {
         } else {
             break;
         }
         {
-            uint _e25 = l;
-            GridFrame _e27 = grid_levels[_e25];
-            metal::uint3 _e29 = bsh_grid_last(_e27, leaf.center, _e18);
-            uint _e31 = l;
-            GridFrame _e33 = grid_levels[_e31];
-            metal::uint3 _e35 = bsh_grid_first(_e33, leaf.center, _e18);
-            metal::uint3 d = (_e29 - _e35) + metal::uint3(1u);
+            uint _e29 = l;
+            GridFrame _e31 = grid_levels[_e29];
+            metal::uint3 _e33 = bsh_grid_last(_e31, leaf.center, _e20);
+            uint _e35 = l;
+            GridFrame _e37 = grid_levels[_e35];
+            metal::uint3 _e39 = bsh_grid_first(_e37, leaf.center, _e20);
+            metal::uint3 d = (_e33 - _e39) + metal::uint3(1u);
             uint n_2 = (d.x * d.y) * d.z;
-            uint _e48 = l;
-            uint at = (h_2 + 16u) + (2u * _e48);
-            uint _e53 = metal::atomic_fetch_add_explicit(&grid[at], n_2, metal::memory_order_relaxed);
-            if ((_e53 + n_2) < _e53) {
-                uint _e61 = metal::atomic_fetch_add_explicit(&grid[at + 1u], 1u, metal::memory_order_relaxed);
+            uint _e52 = l;
+            uint at = (h_2 + 16u) + (2u * _e52);
+            uint _e57 = metal::atomic_fetch_add_explicit(&grid[at], n_2, metal::memory_order_relaxed);
+            if ((_e57 + n_2) < _e57) {
+                uint _e65 = metal::atomic_fetch_add_explicit(&grid[at + 1u], 1u, metal::memory_order_relaxed);
             }
         }
     }
@@ -714,6 +715,7 @@ void count_levels(
 
 void choose_level(
     GridParams g_2,
+    constant GridStage& params,
     device type_6 const& grid_levels,
     device type_8& grid,
     constant _mslBufferSizes& _buffer_sizes
@@ -725,84 +727,88 @@ void choose_level(
     GridFrame f_3 = {};
     uint h_3 = g_2.header;
     uint leaves_1 = metal::atomic_load_explicit(&grid[h_3 + 13u], metal::memory_order_relaxed);
-    chosen = g_2.levels;
+    uint _e9 = params.levels;
+    chosen = _e9;
     uint2 loop_bound_11 = uint2(4294967295u);
     bool loop_init_8 = true;
     while(true) {
         if (metal::all(loop_bound_11 == uint2(0u))) { break; }
         loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
         if (!loop_init_8) {
-            uint _e65 = l_1;
-            l_1 = _e65 + 1u;
+            uint _e71 = l_1;
+            l_1 = _e71 + 1u;
         }
         loop_init_8 = false;
-        uint _e11 = l_1;
-        if (_e11 < g_2.levels) {
+        uint _e13 = l_1;
+        uint _e16 = params.levels;
+        if (_e13 < _e16) {
         } else {
             break;
         }
         {
-            uint _e15 = l_1;
-            GridFrame f_4 = grid_levels[_e15];
+            uint _e19 = l_1;
+            GridFrame f_4 = grid_levels[_e19];
             uint cells_1 = (f_4.nx * f_4.ny) * f_4.nz;
-            uint _e24 = bsh_grid_budget(leaves_1, cells_1, g_2.least);
-            uint budget = metal::min(_e24, g_2.capacity);
-            uint _e30 = l_1;
-            uint at_1 = (h_3 + 16u) + (2u * _e30);
-            uint _e33 = chosen;
-            if (_e33 == g_2.levels) {
-                uint _e42 = metal::atomic_load_explicit(&grid[at_1 + 1u], metal::memory_order_relaxed);
-                local_2 = _e42 == 0u;
+            uint _e28 = bsh_grid_budget(leaves_1, cells_1, g_2.least);
+            uint budget = metal::min(_e28, g_2.capacity);
+            uint _e34 = l_1;
+            uint at_1 = (h_3 + 16u) + (2u * _e34);
+            uint _e37 = chosen;
+            uint _e40 = params.levels;
+            if (_e37 == _e40) {
+                uint _e48 = metal::atomic_load_explicit(&grid[at_1 + 1u], metal::memory_order_relaxed);
+                local_2 = _e48 == 0u;
             } else {
                 local_2 = false;
             }
-            bool _e46 = local_2;
-            if (_e46) {
-                uint _e51 = metal::atomic_load_explicit(&grid[at_1], metal::memory_order_relaxed);
-                local_3 = _e51 <= budget;
+            bool _e52 = local_2;
+            if (_e52) {
+                uint _e57 = metal::atomic_load_explicit(&grid[at_1], metal::memory_order_relaxed);
+                local_3 = _e57 <= budget;
             } else {
                 local_3 = false;
             }
-            bool _e54 = local_3;
-            if (_e54) {
-                uint _e55 = l_1;
-                chosen = _e55;
+            bool _e60 = local_3;
+            if (_e60) {
+                uint _e61 = l_1;
+                chosen = _e61;
             }
             metal::atomic_store_explicit(&grid[at_1], 0u, metal::memory_order_relaxed);
             metal::atomic_store_explicit(&grid[at_1 + 1u], 0u, metal::memory_order_relaxed);
         }
     }
     metal::atomic_store_explicit(&grid[h_3 + 13u], 0u, metal::memory_order_relaxed);
-    uint _e73 = chosen;
-    if (_e73 < g_2.levels) {
-        uint _e77 = chosen;
-        GridFrame _e79 = grid_levels[_e77];
-        f_3 = _e79;
+    uint _e79 = chosen;
+    uint _e82 = params.levels;
+    if (_e79 < _e82) {
+        uint _e85 = chosen;
+        GridFrame _e87 = grid_levels[_e85];
+        f_3 = _e87;
     }
-    float _e84 = f_3.lo[0];
-    metal::atomic_store_explicit(&grid[h_3], as_type<uint>(_e84), metal::memory_order_relaxed);
-    float _e92 = f_3.lo[1];
-    metal::atomic_store_explicit(&grid[h_3 + 1u], as_type<uint>(_e92), metal::memory_order_relaxed);
-    float _e100 = f_3.lo[2];
-    metal::atomic_store_explicit(&grid[h_3 + 2u], as_type<uint>(_e100), metal::memory_order_relaxed);
-    uint _e107 = f_3.nx;
-    metal::atomic_store_explicit(&grid[h_3 + 3u], _e107, metal::memory_order_relaxed);
-    float _e114 = f_3.hi[0];
-    metal::atomic_store_explicit(&grid[h_3 + 4u], as_type<uint>(_e114), metal::memory_order_relaxed);
-    float _e122 = f_3.hi[1];
-    metal::atomic_store_explicit(&grid[h_3 + 5u], as_type<uint>(_e122), metal::memory_order_relaxed);
-    float _e130 = f_3.hi[2];
-    metal::atomic_store_explicit(&grid[h_3 + 6u], as_type<uint>(_e130), metal::memory_order_relaxed);
-    uint _e137 = f_3.ny;
-    metal::atomic_store_explicit(&grid[h_3 + 7u], _e137, metal::memory_order_relaxed);
-    float _e144 = f_3.inv[0];
-    metal::atomic_store_explicit(&grid[h_3 + 8u], as_type<uint>(_e144), metal::memory_order_relaxed);
-    float _e152 = f_3.inv[1];
-    metal::atomic_store_explicit(&grid[h_3 + 9u], as_type<uint>(_e152), metal::memory_order_relaxed);
-    float _e160 = f_3.inv[2];
-    metal::atomic_store_explicit(&grid[h_3 + 10u], as_type<uint>(_e160), metal::memory_order_relaxed);
-    uint _e167 = f_3.nz;
-    metal::atomic_store_explicit(&grid[h_3 + 11u], _e167, metal::memory_order_relaxed);
+    float _e92 = f_3.lo[0];
+    metal::atomic_store_explicit(&grid[h_3], as_type<uint>(_e92), metal::memory_order_relaxed);
+    float _e100 = f_3.lo[1];
+    metal::atomic_store_explicit(&grid[h_3 + 1u], as_type<uint>(_e100), metal::memory_order_relaxed);
+    float _e108 = f_3.lo[2];
+    metal::atomic_store_explicit(&grid[h_3 + 2u], as_type<uint>(_e108), metal::memory_order_relaxed);
+    uint _e115 = f_3.nx;
+    metal::atomic_store_explicit(&grid[h_3 + 3u], _e115, metal::memory_order_relaxed);
+    float _e122 = f_3.hi[0];
+    metal::atomic_store_explicit(&grid[h_3 + 4u], as_type<uint>(_e122), metal::memory_order_relaxed);
+    float _e130 = f_3.hi[1];
+    metal::atomic_store_explicit(&grid[h_3 + 5u], as_type<uint>(_e130), metal::memory_order_relaxed);
+    float _e138 = f_3.hi[2];
+    metal::atomic_store_explicit(&grid[h_3 + 6u], as_type<uint>(_e138), metal::memory_order_relaxed);
+    uint _e145 = f_3.ny;
+    metal::atomic_store_explicit(&grid[h_3 + 7u], _e145, metal::memory_order_relaxed);
+    float _e152 = f_3.inv[0];
+    metal::atomic_store_explicit(&grid[h_3 + 8u], as_type<uint>(_e152), metal::memory_order_relaxed);
+    float _e160 = f_3.inv[1];
+    metal::atomic_store_explicit(&grid[h_3 + 9u], as_type<uint>(_e160), metal::memory_order_relaxed);
+    float _e168 = f_3.inv[2];
+    metal::atomic_store_explicit(&grid[h_3 + 10u], as_type<uint>(_e168), metal::memory_order_relaxed);
+    uint _e175 = f_3.nz;
+    metal::atomic_store_explicit(&grid[h_3 + 11u], _e175, metal::memory_order_relaxed);
     metal::atomic_store_explicit(&grid[h_3 + 12u], as_type<uint>(g_2.reach), metal::memory_order_relaxed);
     return;
 }
@@ -811,6 +817,7 @@ void fill_cells(
     GridParams g_3,
     uint i_3,
     bool scatter,
+    constant GridStage& params,
     device type_4 const& bsh_nodes,
     device type_5 const& grid_leaves,
     device type_8 const& grid,
@@ -822,82 +829,83 @@ void fill_cells(
     uint z = {};
     uint y = {};
     uint x_1 = {};
-    if (i_3 >= g_3.count) {
+    uint _e5 = params.count;
+    if (i_3 >= _e5) {
         return;
     }
-    GridFrame _e6 = grid_frame(g_3.header, grid, _buffer_sizes);
-    uint _e7 = grid_leaf(i_3, bsh_nodes, grid_leaves, _buffer_sizes);
-    if (!((_e6.nx == 0u))) {
-        local_4 = _e7 == BSH_NONE;
+    GridFrame _e8 = grid_frame(g_3.header, grid, _buffer_sizes);
+    uint _e9 = grid_leaf(i_3, bsh_nodes, grid_leaves, _buffer_sizes);
+    if (!((_e8.nx == 0u))) {
+        local_4 = _e9 == BSH_NONE;
     } else {
         local_4 = true;
     }
-    bool _e17 = local_4;
-    if (_e17) {
+    bool _e19 = local_4;
+    if (_e19) {
         return;
     }
-    BshNode leaf_1 = bsh_nodes[_e7];
-    float _e22 = bsh_grid_radius(leaf_1, g_3.reach);
-    metal::uint3 _e24 = bsh_grid_first(_e6, leaf_1.center, _e22);
-    metal::uint3 _e26 = bsh_grid_last(_e6, leaf_1.center, _e22);
-    z = _e24.z;
+    BshNode leaf_1 = bsh_nodes[_e9];
+    float _e24 = bsh_grid_radius(leaf_1, g_3.reach);
+    metal::uint3 _e26 = bsh_grid_first(_e8, leaf_1.center, _e24);
+    metal::uint3 _e28 = bsh_grid_last(_e8, leaf_1.center, _e24);
+    z = _e26.z;
     uint2 loop_bound_12 = uint2(4294967295u);
     bool loop_init_9 = true;
     while(true) {
         if (metal::all(loop_bound_12 == uint2(0u))) { break; }
         loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
         if (!loop_init_9) {
-            uint _e66 = z;
-            z = _e66 + 1u;
+            uint _e68 = z;
+            z = _e68 + 1u;
         }
         loop_init_9 = false;
-        uint _e29 = z;
-        if (_e29 <= _e26.z) {
+        uint _e31 = z;
+        if (_e31 <= _e28.z) {
         } else {
             break;
         }
         {
-            y = _e24.y;
+            y = _e26.y;
             uint2 loop_bound_13 = uint2(4294967295u);
             bool loop_init_10 = true;
             while(true) {
                 if (metal::all(loop_bound_13 == uint2(0u))) { break; }
                 loop_bound_13 -= uint2(loop_bound_13.y == 0u, 1u);
                 if (!loop_init_10) {
-                    uint _e63 = y;
-                    y = _e63 + 1u;
+                    uint _e65 = y;
+                    y = _e65 + 1u;
                 }
                 loop_init_10 = false;
-                uint _e34 = y;
-                if (_e34 <= _e26.y) {
+                uint _e36 = y;
+                if (_e36 <= _e28.y) {
                 } else {
                     break;
                 }
                 {
-                    x_1 = _e24.x;
+                    x_1 = _e26.x;
                     uint2 loop_bound_14 = uint2(4294967295u);
                     bool loop_init_11 = true;
                     while(true) {
                         if (metal::all(loop_bound_14 == uint2(0u))) { break; }
                         loop_bound_14 -= uint2(loop_bound_14.y == 0u, 1u);
                         if (!loop_init_11) {
-                            uint _e60 = x_1;
-                            x_1 = _e60 + 1u;
+                            uint _e62 = x_1;
+                            x_1 = _e62 + 1u;
                         }
                         loop_init_11 = false;
-                        uint _e39 = x_1;
-                        if (_e39 <= _e26.x) {
+                        uint _e41 = x_1;
+                        if (_e41 <= _e28.x) {
                         } else {
                             break;
                         }
                         {
-                            uint _e42 = z;
-                            uint _e45 = y;
-                            uint _e49 = x_1;
-                            uint c_5 = (((_e42 * _e6.ny) + _e45) * _e6.nx) + _e49;
-                            uint _e56 = metal::atomic_fetch_add_explicit(&grid_fill[g_3.fill + c_5], 1u, metal::memory_order_relaxed);
+                            uint _e44 = z;
+                            uint _e47 = y;
+                            uint _e51 = x_1;
+                            uint c_5 = (((_e44 * _e8.ny) + _e47) * _e8.nx) + _e51;
+                            uint _e58 = metal::atomic_fetch_add_explicit(&grid_fill[g_3.fill + c_5], 1u, metal::memory_order_relaxed);
                             if (scatter) {
-                                grid_entries[_e56] = i_3;
+                                grid_entries[_e58] = i_3;
                             }
                         }
                     }
@@ -1050,12 +1058,12 @@ kernel void main_(
     uint _e10 = params.stage;
     switch(_e10) {
         case 0u: {
-            count_levels(g_5, gid.x, bsh_nodes, grid_leaves, grid_levels, grid, _buffer_sizes);
+            count_levels(g_5, gid.x, params, bsh_nodes, grid_leaves, grid_levels, grid, _buffer_sizes);
             return;
         }
         case 1u: {
             if (li == 0u) {
-                choose_level(g_5, grid_levels, grid, _buffer_sizes);
+                choose_level(g_5, params, grid_levels, grid, _buffer_sizes);
                 return;
             } else {
                 return;
@@ -1067,12 +1075,12 @@ kernel void main_(
             return;
         }
         case 5u: {
-            sort_cells(g_5, ((wid.y * groups.x) + wid.x) * 64u, li, grid_leaves, grid, grid_fill, grid_entries, wg_big, wg_bigs, wg_cell, _buffer_sizes);
+            sort_cells(g_5, ((wid.y * groups.x) + wid.x) * 64u, li, params, grid_leaves, grid, grid_fill, grid_entries, wg_big, wg_bigs, wg_cell, _buffer_sizes);
             return;
         }
         default: {
             uint _e24 = params.stage;
-            fill_cells(g_5, gid.x, _e24 == 4u, bsh_nodes, grid_leaves, grid, grid_fill, grid_entries, _buffer_sizes);
+            fill_cells(g_5, gid.x, _e24 == 4u, params, bsh_nodes, grid_leaves, grid, grid_fill, grid_entries, _buffer_sizes);
             return;
         }
     }
