@@ -362,7 +362,10 @@ fn bound_arg<'de, D: serde::Deserializer<'de>>(d: D) -> Result<Option<BoundArg>,
         Text(String),
     }
     match Raw::deserialize(d)? {
-        Raw::Number(e) => Ok(Some(BoundArg::Value(e as f32))),
+        Raw::Number(e) if e > 0.0 && (e as f32).is_finite() => Ok(Some(BoundArg::Value(e as f32))),
+        Raw::Number(e) => {
+            Err(serde::de::Error::custom(format!("an error bound must be finite and > 0, got {e:?}")))
+        }
         Raw::Text(t) => t.parse().map(Some).map_err(serde::de::Error::custom),
     }
 }
@@ -772,9 +775,12 @@ mod tests {
             "pt_error_bound = \"automatic\"",
             "pt_error_bound = \"auto:x\"",
             "pt_error_bound = [1]",
+            "pt_error_bound = -1",
+            "pt_error_bound = 1e40",
+            "pt_error_bound = nan",
         ] {
             let e = render(line).expect_err("accepted").to_string();
-            assert!(e.contains("pt_error_bound") || e.contains("line 4"), "{line}: {e}");
+            assert!(e.contains("pt_error_bound") && e.contains("line 4"), "{line}: {e}");
         }
     }
 
