@@ -108,7 +108,7 @@ pub enum RenderError {
     #[error(transparent)]
     Scene(#[from] SceneError),
     /// Image size out of range.
-    #[error("image size {0}x{1} must be within 1..=16384 on each side")]
+    #[error("image size {0}x{1} must be within 1..={MAX_IMAGE_SIDE} on each side")]
     Size(u32, u32),
     /// VPL count that is not the square of a multiple of 8.
     #[error(
@@ -135,9 +135,12 @@ pub fn check_exposure(exposure: f32) -> Result<(), RenderError> {
     }
 }
 
-/// Checks an image size: `1..=16384` on each side.
+/// The largest image side any renderer takes.
+pub const MAX_IMAGE_SIDE: u32 = 16384;
+
+/// Checks an image size: `1..=`[`MAX_IMAGE_SIDE`] on each side.
 pub fn check_size(width: u32, height: u32) -> Result<(), RenderError> {
-    if (1..=16384).contains(&width) && (1..=16384).contains(&height) {
+    if (1..=MAX_IMAGE_SIDE).contains(&width) && (1..=MAX_IMAGE_SIDE).contains(&height) {
         Ok(())
     } else {
         Err(RenderError::Size(width, height))

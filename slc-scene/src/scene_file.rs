@@ -31,8 +31,9 @@
 //! offset = 0.002                   # above the surface, on the room's side
 //! emission = [0.5, 0.45, 0.4]
 //! seed = 1
+//! face = "away"                    # or "surface" (toward it), "random"
 //!
-//! [[light_cloud]]                 # many point/spot/IES lights placed by a seed (see `light_cloud`)
+//! [[light_cloud]]                 # many point/spot/IES lights placed by a seed (every key: `light_cloud`'s docs)
 //! count = 2000
 //! placement = "volume"
 //! intensity = [0.01, 0.01, 0.01]
@@ -42,6 +43,8 @@
 //! file = "../../shared/data/ies/indoor-60w-120deg.ies"
 //! position = [0.278, 0.5, 0.279]
 //! tint = [0.001, 0.001, 0.001]     # candela → scene intensity units and colour
+//! nadir = [0.0, -1.0, 0.0]         # the profile's vertical angle 0 (default shown)
+//! reference = [1.0, 0.0, 0.0]      # its horizontal angle 0 (default shown)
 //!
 //! [primary]
 //! type = "spot"                    # or "directional" (direction, irradiance)
@@ -57,6 +60,9 @@
 //! method = "slc"
 //! error_bound = 0.008             # the VPL frame's ε
 //! pt_error_bound = "auto"         # the path tracer's: a number, "auto" or "auto:C"
+//! range = 0.1                      # method "clamp"'s range R
+//! seed = 1
+//! exposure = 1.0
 //! ```
 
 use crate::SceneError;
@@ -328,14 +334,20 @@ impl LightDef {
 #[serde(deny_unknown_fields)]
 pub struct RenderSettings {
     /// Image width.
+    #[serde(default, deserialize_with = "image_side")]
     pub width: Option<u32>,
     /// Image height.
+    #[serde(default, deserialize_with = "image_side")]
     pub height: Option<u32>,
     /// VPL count.
+    #[serde(default, deserialize_with = "vpl_count")]
     pub vpls: Option<u64>,
-    /// `slc`, `clamp`, `none` or `reference`.
+    /// `slc`, `clamp`, `none` or `reference` (the VPL frame), or a
+    /// path-tracing method ([`crate::pt::PtMethod`]).
+    #[serde(default, deserialize_with = "method")]
     pub method: Option<String>,
     /// The VPL frame's SLC error bound ε (`--app vpl`).
+    #[serde(default, deserialize_with = "vpl_error_bound")]
     pub error_bound: Option<f32>,
     /// The path tracer's ε (`--app pt`): a number, `"auto"` or `"auto:C"`
     /// ([`BoundArg`]). Separate from `error_bound`: a scene's automatic
@@ -346,11 +358,82 @@ pub struct RenderSettings {
     #[serde(default, deserialize_with = "bound_arg")]
     pub pt_error_bound: Option<BoundArg>,
     /// Clamp range R.
+    #[serde(default, deserialize_with = "clamp_range")]
     pub range: Option<f32>,
     /// Seed.
     pub seed: Option<u32>,
     /// Exposure.
+    #[serde(default, deserialize_with = "exposure")]
     pub exposure: Option<f32>,
+}
+
+// `[render]`'s values are checked where they are read, by the checks the
+// renderers run on the same values from flags, so that a bad one is
+// reported with its key and line.
+
+/// A `T` from the file, passed through `check`.
+fn checked<'de, D: serde::Deserializer<'de>, T: Deserialize<'de>, U>(
+    d: D,
+    check: impl FnOnce(T) -> Result<U, String>,
+) -> Result<Option<U>, D::Error> {
+    check(T::deserialize(d)?).map(Some).map_err(serde::de::Error::custom)
+}
+
+/// An `f32` the file writes as any number: one past `f32`'s range is
+/// reported as written, not as the `inf` it would round to.
+fn as_f32(v: f64) -> Result<f32, String> {
+    if (v as f32).is_finite() || !v.is_finite() {
+        Ok(v as f32)
+    } else {
+        Err(format!("{v:?} is beyond f32's range"))
+    }
+}
+
+fn image_side<'de, D: serde::Deserializer<'de>>(d: D) -> Result<Option<u32>, D::Error> {
+    checked(d, |n: u32| {
+        crate::check_size(n, n).map(|_| n).map_err(|_| {
+            format!("an image side must be within 1..={}, got {n}", crate::MAX_IMAGE_SIDE)
+        })
+    })
+}
+
+fn vpl_count<'de, D: serde::Deserializer<'de>>(d: D) -> Result<Option<u64>, D::Error> {
+    checked(d, |n: u64| crate::vpl::rsm_side(n).map(|_| n).map_err(|e| e.to_string()))
+}
+
+fn method<'de, D: serde::Deserializer<'de>>(d: D) -> Result<Option<String>, D::Error> {
+    checked(d, |m: String| {
+        let pt = crate::pt::PtMethod::ALL.iter().any(|p| p.name() == m);
+        if pt || crate::culling::Culling::named(&m, 1.0, 1.0, 1.0).is_ok() {
+            return Ok(m);
+        }
+        let names: Vec<&str> = crate::pt::PtMethod::ALL.iter().map(|p| p.name()).collect();
+        Err(format!(
+            "method '{m}' is neither the VPL frame's (slc, clamp, none, reference) nor a path tracer's ({})",
+            names.join(", ")
+        ))
+    })
+}
+
+fn vpl_error_bound<'de, D: serde::Deserializer<'de>>(d: D) -> Result<Option<f32>, D::Error> {
+    checked(d, |v: f64| {
+        let e = as_f32(v)?;
+        slc_core::range::RangeParams::new(e, 1.0).map(|_| e).map_err(|e| e.to_string())
+    })
+}
+
+fn clamp_range<'de, D: serde::Deserializer<'de>>(d: D) -> Result<Option<f32>, D::Error> {
+    checked(d, |v: f64| {
+        let r = as_f32(v)?;
+        crate::culling::Culling::clamped(r).map(|_| r).map_err(|e| e.to_string())
+    })
+}
+
+fn exposure<'de, D: serde::Deserializer<'de>>(d: D) -> Result<Option<f32>, D::Error> {
+    checked(d, |v: f64| {
+        let e = as_f32(v)?;
+        crate::check_exposure(e).map(|_| e).map_err(|e| e.to_string())
+    })
 }
 
 /// `[render] pt_error_bound`: a TOML number or a string [`BoundArg`] parses.
@@ -361,13 +444,15 @@ fn bound_arg<'de, D: serde::Deserializer<'de>>(d: D) -> Result<Option<BoundArg>,
         Number(f64),
         Text(String),
     }
-    match Raw::deserialize(d)? {
-        Raw::Number(e) if e > 0.0 && (e as f32).is_finite() => Ok(Some(BoundArg::Value(e as f32))),
-        Raw::Number(e) => {
-            Err(serde::de::Error::custom(format!("an error bound must be finite and > 0, got {e:?}")))
-        }
-        Raw::Text(t) => t.parse().map(Some).map_err(serde::de::Error::custom),
-    }
+    let bound = match Raw::deserialize(d)? {
+        Raw::Number(v) => as_f32(v).and_then(|e| {
+            slc_core::range::RangeParams::new(e, 1.0)
+                .map(|_| BoundArg::Value(e))
+                .map_err(|e| e.to_string())
+        }),
+        Raw::Text(t) => t.parse(),
+    };
+    bound.map(Some).map_err(serde::de::Error::custom)
 }
 
 /// A loaded scene file.
@@ -782,6 +867,56 @@ mod tests {
             let e = render(line).expect_err("accepted").to_string();
             assert!(e.contains("pt_error_bound") && e.contains("line 4"), "{line}: {e}");
         }
+    }
+
+    /// Every `[render]` value is checked where it is read, by the same
+    /// checks as the flags', so its error names the key and the line.
+    #[test]
+    fn render_values_are_checked_with_their_line() {
+        let render = |line: &str| {
+            let text = format!("[[geometry]]\nbuiltin = \"cornell\"\n[render]\n{line}\n");
+            SceneFile::parse(&text, Path::new("."), "t.toml").map(|f| f.render)
+        };
+        for (line, says) in [
+            ("width = 0", "1..=16384, got 0"),
+            ("height = 20000", "got 20000"),
+            ("vpls = 1000", "1000 VPLs"),
+            ("method = \"fast\"", "method 'fast' is neither"),
+            ("error_bound = 0.0", "error bound"),
+            ("error_bound = 1e40", "1e40 is beyond f32's range"),
+            ("range = 0.0", "clamp range 0"),
+            ("exposure = -1.0", "exposure -1"),
+        ] {
+            let e = render(line).expect_err("accepted").to_string();
+            let key = line.split(' ').next().unwrap();
+            assert!(e.contains(says) && e.contains("line 4") && e.contains(key), "{line}: {e}");
+        }
+        let ok = render("width = 64\nvpls = 4096\nmethod = \"slc-weighted\"\nerror_bound = 0.008\nrange = 0.1\nexposure = 2").unwrap();
+        assert_eq!(
+            (ok.width, ok.vpls, ok.method.as_deref(), ok.error_bound, ok.range, ok.exposure),
+            (Some(64), Some(4096), Some("slc-weighted"), Some(0.008), Some(0.1), Some(2.0))
+        );
+        assert_eq!(render("method = \"clamp\"").unwrap().method.as_deref(), Some("clamp"));
+    }
+
+    /// The module docs' example, every key it shows, loads (its paths
+    /// are relative to a file in `scenes/`, beside `../shared`).
+    #[test]
+    fn the_documented_example_loads() {
+        let doc: String = include_str!("scene_file.rs")
+            .lines()
+            .filter_map(|l| l.strip_prefix("//!"))
+            .map(|l| l.strip_prefix(' ').unwrap_or(l))
+            .skip_while(|l| !l.starts_with("```toml"))
+            .skip(1)
+            .take_while(|l| !l.starts_with("```"))
+            .map(|l| format!("{l}\n"))
+            .collect();
+        slc_test_data::shared_data("ies");
+        let dir = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../scenes");
+        let f = SceneFile::parse(&doc, &dir, "doc.toml").expect("the documented example");
+        assert!(doc.contains("pt_error_bound") && f.render.pt_error_bound.is_some(), "{doc}");
+        assert!(!f.lights.is_empty() && f.render.exposure == Some(1.0));
     }
 
     #[test]

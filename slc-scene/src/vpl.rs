@@ -90,6 +90,16 @@ impl VplSettings {
 /// Interleaving period (8×8 subsets, as in the paper).
 pub const PERIOD: u32 = 8;
 
+/// The reflective shadow map's side for `vpls` VPLs: `s` with `vpls = s²`,
+/// `s` a multiple of [`PERIOD`] up to 4096.
+pub fn rsm_side(vpls: u64) -> Result<u32, RenderError> {
+    let s = vpls.isqrt();
+    if s * s != vpls || s == 0 || !s.is_multiple_of(PERIOD as u64) || s > 4096 {
+        return Err(RenderError::VplCount(vpls));
+    }
+    Ok(s as u32)
+}
+
 /// Checks what a VPL frame is built for, as every backend's frame does:
 /// the scene, the image size (`1..=16384`), the RSM edge (a positive
 /// multiple of [`PERIOD`] up to 4096, `rsm_size²` VPLs), and the clamp
@@ -104,9 +114,7 @@ pub fn check_frame(
 ) -> Result<f32, RenderError> {
     scene.validate()?;
     crate::check_size(width, height)?;
-    if rsm_size == 0 || !rsm_size.is_multiple_of(PERIOD) || rsm_size > 4096 {
-        return Err(RenderError::VplCount((rsm_size as u64).pow(2)));
-    }
+    rsm_side((rsm_size as u64).pow(2))?;
     let min_distance = min_distance.unwrap_or(0.01 * scene.diagonal());
     if !(min_distance.is_finite() && min_distance >= 0.0) {
         return Err(RenderError::Setting(format!(
