@@ -19,7 +19,7 @@ mod suite;
 mod view;
 
 use backends::{Backend, GPU_BATCH, gpu_context, gpu_context_with, path_tracer};
-use clap::{Args, Parser, Subcommand};
+use clap::{Args, CommandFactory, FromArgMatches, Parser, Subcommand};
 use methods::{MethodFlags, pt_method, vpl_settings};
 use notes::{PT_LIGHTS_NOTE, timing_note};
 use scene_args::{App, SceneArgs};
@@ -44,11 +44,14 @@ struct Cli {
 #[derive(Subcommand)]
 enum Command {
     /// Render an image (EXR, with a PNG preview beside it).
+    #[command(allow_negative_numbers = true)]
     Render(RenderArgs),
     /// Speed against error: every method and parameter against the reference.
+    #[command(allow_negative_numbers = true)]
     Bench(bench::BenchArgs),
     /// The GPU VPL frame in a real-time window: move the light, switch
     /// slc / clamp / none, change ε and the VPL count, see each pass's GPU time.
+    #[command(allow_negative_numbers = true)]
     View(view::ViewArgs),
     /// Inspect an IES (LM-63) photometric file.
     Ies {
@@ -59,6 +62,7 @@ enum Command {
         plot: Option<PathBuf>,
     },
     /// Compare two EXR images: RMSE, relative RMSE, max difference, NaN/inf.
+    #[command(allow_negative_numbers = true)]
     Diff(diff::DiffArgs),
     /// Export every GPU kernel as WGSL, SPIR-V, GLSL, HLSL and MSL.
     Shaders {
@@ -78,8 +82,8 @@ enum Command {
         /// Output folder.
         #[arg(long, default_value = "scenes/suite")]
         out: PathBuf,
-        /// Light counts per family (comma-separated).
-        #[arg(long, value_delimiter = ',', default_values_t = suite::DEFAULT_COUNTS)]
+        /// Light counts per family (comma- or space-separated).
+        #[arg(long, value_delimiter = ',', num_args = 1.., default_values_t = suite::DEFAULT_COUNTS)]
         counts: Vec<u32>,
         /// The IES profile of the mixed family, written as given (relative
         /// to the scene files, or absolute).
@@ -160,11 +164,18 @@ fn quiet_headless_vulkan() {
 fn main() -> ExitCode {
     quiet_headless_vulkan();
     // No subcommand: the main job, `slc render` with its defaults.
-    let command = Cli::parse().command.or_else(|| Cli::parse_from(["slc", "render"]).command);
+    // The matches say which flags were given, not defaulted (`slc bench`
+    // refuses the other application's).
+    let matches = Cli::command().get_matches();
+    let cli = Cli::from_arg_matches(&matches).unwrap_or_else(|e| e.exit());
+    let command = cli.command.or_else(|| Cli::parse_from(["slc", "render"]).command);
     let result = match command {
         None => Err(anyhow!("no command")),
         Some(Command::Render(a)) => render(a),
-        Some(Command::Bench(a)) => bench::run(a),
+        Some(Command::Bench(a)) => match matches.subcommand_matches("bench") {
+            Some(given) => bench::run(a, given),
+            None => Err(anyhow!("bench without its flags")),
+        },
         Some(Command::View(a)) => view::run(a),
         Some(Command::Ies { file, plot }) => ies(&file, plot.as_deref()),
         Some(Command::Diff(a)) => diff::run(a),
@@ -222,6 +233,7 @@ fn render(a: RenderArgs) -> anyhow::Result<()> {
         return render_pt(a);
     }
     a.scene.pt_only_flags()?;
+    a.scene.backend_flags()?;
     if a.spp.is_some() || a.seconds.is_some() {
         anyhow::bail!(
             "{}: only the path tracers (--app pt) take it",

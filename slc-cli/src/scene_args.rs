@@ -4,7 +4,6 @@
 use crate::backends::Backend;
 use clap::{Args, ValueEnum};
 use slc_cpu::vpl::VplContext;
-use slc_scene::RenderError;
 use slc_scene::gltf::GltfScene;
 use slc_scene::scene::Scene;
 use slc_scene::scene_file::{RenderSettings, SceneFile};
@@ -157,6 +156,24 @@ impl SceneArgs {
         Ok(())
     }
 
+    /// Refuses the VPL frame's flags for the backend that would ignore
+    /// them: `--tile` sizes the CPU's culling tiles (the GPU's are its
+    /// workgroups), `--shadow-size` the GPU frame's shadow map (the CPU
+    /// casts shadow rays).
+    pub fn backend_flags(&self) -> anyhow::Result<()> {
+        match self.backend {
+            Backend::Gpu if self.tile.is_some() => {
+                anyhow::bail!(
+                    "--tile: only the CPU frame (--backend cpu) culls in tiles of that size"
+                )
+            }
+            Backend::Cpu if self.shadow_size.is_some() => anyhow::bail!(
+                "--shadow-size: only the GPU frame (--backend gpu) renders a shadow map; the CPU casts shadow rays"
+            ),
+            _ => Ok(()),
+        }
+    }
+
     /// Refuses the VPL application's flags for the path tracers, which
     /// would ignore them (a scene file's `[render]` values for the other
     /// application are not flags: they stay allowed).
@@ -198,11 +215,8 @@ impl SceneArgs {
         let vpls = self.vpls.or(file.vpls).unwrap_or(65536);
         slc_scene::check_size(width, height)?;
         let exposure = self.exposure_of(&file)?;
-        let s = (vpls as f64).sqrt() as u64;
-        if s * s != vpls || s > u32::MAX as u64 {
-            return Err(RenderError::VplCount(vpls).into());
-        }
-        Ok(Resolved { scene, width, height, rsm_size: s as u32, exposure, file })
+        let rsm_size = slc_scene::vpl::rsm_side(vpls)?;
+        Ok(Resolved { scene, width, height, rsm_size, exposure, file })
     }
 
     /// Loads the scene and builds the CPU's shared VPL context.

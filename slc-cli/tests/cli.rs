@@ -308,6 +308,19 @@ fn bad_input_is_one_line_error() {
         // ... also when the value given is the default one.
         vec!["bench", "--app", "pt", "--tile", "4", "--width", "8", "--height", "8"],
         vec!["render", "--app", "pt", "--shadow-size", "2048", "--width", "8", "--height", "8"],
+        // ... or the backend would ignore, and `slc bench`'s for the other
+        // application's bench.
+        vec!["render", "--shadow-size", "64", "--width", "8", "--height", "8", "--vpls", "64"],
+        vec!["render", "--backend", "gpu", "--tile", "4", "--width", "8", "--vpls", "64"],
+        vec!["bench", "--seconds", "1", "--width", "8", "--height", "8", "--vpls", "64"],
+        vec!["bench", "--noise", "seeds", "--width", "8", "--height", "8", "--vpls", "64"],
+        vec!["bench", "--app", "pt", "--error-bounds", "0.1", "--width", "8", "--height", "8"],
+        vec!["bench", "--app", "pt", "--repeat", "3", "--width", "8", "--height", "8"],
+        vec!["bench", "--warmup", "1", "--width", "8", "--height", "8", "--vpls", "64"],
+        vec!["bench", "--frames", "3", "--width", "8", "--height", "8", "--vpls", "64"],
+        // A negative value reaches the value's own check (not clap's
+        // "unexpected argument").
+        vec!["render", "--app", "pt", "--seconds", "-1", "--width", "8", "--height", "8"],
         vec!["shaders", "--out", "no-kernels", "--lights", ""],
         // Output files whose folder is missing or whose plot kind is unknown
         // fail before the work, not after it.

@@ -23,8 +23,43 @@ use crate::scene_args::App;
 use anyhow::anyhow;
 pub use args::BenchArgs;
 
-/// Runs `slc bench` with `a`: checks the flags, then the study they ask for.
-pub fn run(a: BenchArgs) -> anyhow::Result<()> {
+/// The bench flags only the path tracers' bench reads (`--suite` has its
+/// own message), by their clap ids.
+const PT_ONLY: [&str; 6] =
+    ["seconds", "error_bound", "noise", "pairs", "reference_spp", "reference_method"];
+
+/// The bench flags only the VPL frame's bench reads.
+const VPL_ONLY: [&str; 7] =
+    ["error_bounds", "ranges", "repeat", "flicker", "frames", "warmup", "timed_frames"];
+
+/// The first of `ids` given on the command line (not defaulted), as its
+/// flag: `--error-bounds` for `error_bounds`.
+fn given_flag(given: &clap::ArgMatches, ids: &[&str]) -> Option<String> {
+    ids.iter()
+        .find(|id| given.value_source(id) == Some(clap::parser::ValueSource::CommandLine))
+        .map(|id| format!("--{}", id.replace('_', "-")))
+}
+
+/// Runs `slc bench` with `a` (`given`: its matches, which say which flags
+/// the command line gave): checks the flags, then the study they ask for.
+/// A flag the chosen study would ignore is refused.
+pub fn run(a: BenchArgs, given: &clap::ArgMatches) -> anyhow::Result<()> {
+    let (app, gpu) = (a.scene.app, a.scene.backend == Backend::Gpu);
+    if let Some(flag) = given_flag(given, if app == App::Pt { &VPL_ONLY } else { &PT_ONLY }) {
+        return Err(match app {
+            App::Pt => anyhow!("{flag}: only the VPL frame's bench (--app vpl) takes it"),
+            _ => anyhow!("{flag}: only the path tracers' bench (--app pt) takes it"),
+        });
+    }
+    if app == App::Pt && a.simd.is_some() {
+        return Err(anyhow!("--simd: only the VPL frame's CPU loops (--app vpl) take it"));
+    }
+    if let Some(flag) = given_flag(given, &["warmup", "timed_frames"]).filter(|_| !gpu) {
+        return Err(anyhow!("{flag}: only the GPU bench (--backend gpu) takes it"));
+    }
+    if let Some(flag) = given_flag(given, &["frames"]).filter(|_| !a.flicker) {
+        return Err(anyhow!("{flag}: only the flicker study (--flicker) takes it"));
+    }
     if a.repeat == 0 {
         return Err(anyhow!("--repeat 0 must be at least 1"));
     }
@@ -51,13 +86,9 @@ pub fn run(a: BenchArgs) -> anyhow::Result<()> {
     }
     if a.scene.app != App::Pt {
         a.scene.pt_only_flags()?;
+        a.scene.backend_flags()?;
         if a.suite.is_some() {
             return Err(anyhow!("--suite: only the path tracers' bench (--app pt) runs a suite"));
-        }
-        if a.pairs != 1 {
-            return Err(anyhow!(
-                "--pairs: only the path tracers' bench (--app pt) renders seed pairs"
-            ));
         }
     } else {
         a.scene.vpl_only_flags()?;
