@@ -80,9 +80,8 @@ pub fn pt_error_bound(
     };
     let target = match bound {
         BoundArg::Value(e) => return Ok((e, note.into())),
-        BoundArg::Auto(_) => bound.target().map_err(|e| anyhow!("{source} {e}"))?,
-    }
-    .unwrap_or(TARGET_CANDIDATES);
+        BoundArg::Auto(c) => BoundArg::check_target(c).map_err(|e| anyhow!("{source} {e}"))?,
+    };
     Ok(match auto_error_bound(pts, exposure, target) {
         Some(e) => (e, format!("automatic: {target} expected candidates per surface point")),
         None => (

@@ -60,7 +60,7 @@ impl core::str::FromStr for BoundArg {
     type Err = String;
 
     /// A number, `auto`, or `auto:C` (a number C; its range is checked
-    /// where the bound is set, [`BoundArg::target`]).
+    /// where the bound is set, [`BoundArg::check_target`]).
     fn from_str(s: &str) -> Result<BoundArg, String> {
         if s == "auto" {
             return Ok(BoundArg::Auto(TARGET_CANDIDATES));
@@ -78,15 +78,14 @@ impl core::str::FromStr for BoundArg {
 }
 
 impl BoundArg {
-    /// The expected candidates an `Auto` bound aims at, checked to lie in
-    /// (0, [`MAX_TARGET_CANDIDATES`]]; `None` for a number.
-    pub fn target(self) -> Result<Option<f64>, String> {
-        match self {
-            BoundArg::Value(_) => Ok(None),
-            BoundArg::Auto(c) if c > 0.0 && c <= MAX_TARGET_CANDIDATES => Ok(Some(c)),
-            BoundArg::Auto(c) => Err(format!(
+    /// Checks an `auto:C` target: `C` in (0, [`MAX_TARGET_CANDIDATES`]].
+    pub fn check_target(c: f64) -> Result<f64, String> {
+        if c > 0.0 && c <= MAX_TARGET_CANDIDATES {
+            Ok(c)
+        } else {
+            Err(format!(
                 "auto:{c}: the expected candidates per point must be in (0, {MAX_TARGET_CANDIDATES}]"
-            )),
+            ))
         }
     }
 }

@@ -415,11 +415,14 @@ fn method<'de, D: serde::Deserializer<'de>>(d: D) -> Result<Option<String>, D::E
     })
 }
 
+/// An error bound ε as the file writes it, checked as `RangeParams` checks it.
+fn error_bound_value(v: f64) -> Result<f32, String> {
+    let e = as_f32(v)?;
+    slc_core::range::RangeParams::new(e, 1.0).map(|_| e).map_err(|e| e.to_string())
+}
+
 fn vpl_error_bound<'de, D: serde::Deserializer<'de>>(d: D) -> Result<Option<f32>, D::Error> {
-    checked(d, |v: f64| {
-        let e = as_f32(v)?;
-        slc_core::range::RangeParams::new(e, 1.0).map(|_| e).map_err(|e| e.to_string())
-    })
+    checked(d, error_bound_value)
 }
 
 fn clamp_range<'de, D: serde::Deserializer<'de>>(d: D) -> Result<Option<f32>, D::Error> {
@@ -445,11 +448,7 @@ fn bound_arg<'de, D: serde::Deserializer<'de>>(d: D) -> Result<Option<BoundArg>,
         Text(String),
     }
     let bound = match Raw::deserialize(d)? {
-        Raw::Number(v) => as_f32(v).and_then(|e| {
-            slc_core::range::RangeParams::new(e, 1.0)
-                .map(|_| BoundArg::Value(e))
-                .map_err(|e| e.to_string())
-        }),
+        Raw::Number(v) => error_bound_value(v).map(BoundArg::Value),
         Raw::Text(t) => t.parse(),
     };
     bound.map(Some).map_err(serde::de::Error::custom)

@@ -29,8 +29,8 @@ const PT_ONLY: [&str; 6] =
     ["seconds", "error_bound", "noise", "pairs", "reference_spp", "reference_method"];
 
 /// The bench flags only the VPL frame's bench reads.
-const VPL_ONLY: [&str; 7] =
-    ["error_bounds", "ranges", "repeat", "flicker", "frames", "warmup", "timed_frames"];
+const VPL_ONLY: [&str; 8] =
+    ["error_bounds", "ranges", "repeat", "flicker", "frames", "warmup", "timed_frames", "simd"];
 
 /// The first of `ids` given on the command line (not defaulted), as its
 /// flag: `--error-bounds` for `error_bounds`.
@@ -50,9 +50,6 @@ pub fn run(a: BenchArgs, given: &clap::ArgMatches) -> anyhow::Result<()> {
             App::Pt => anyhow!("{flag}: only the VPL frame's bench (--app vpl) takes it"),
             _ => anyhow!("{flag}: only the path tracers' bench (--app pt) takes it"),
         });
-    }
-    if app == App::Pt && a.simd.is_some() {
-        return Err(anyhow!("--simd: only the VPL frame's CPU loops (--app vpl) take it"));
     }
     if let Some(flag) = given_flag(given, &["warmup", "timed_frames"]).filter(|_| !gpu) {
         return Err(anyhow!("{flag}: only the GPU bench (--backend gpu) takes it"));
