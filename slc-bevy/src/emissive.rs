@@ -18,7 +18,7 @@ use bevy::mesh::{Mesh, UvChannel, VertexAttributeValues};
 use bevy::prelude::{Image, LinearRgba};
 
 /// Per triangle of `mesh` (in the order of `Mesh::triangles`, which
-/// [`super::mesh_triangles`] reads), the mean linear RGB of `image` over
+/// [`crate::extract::mesh_triangles`] reads), the mean linear RGB of `image` over
 /// the triangle's UVs in `channel`, mapped by `uv_transform`; or why it
 /// cannot be read (no such UVs, a compressed or unreadable format).
 pub(crate) fn triangle_means(
