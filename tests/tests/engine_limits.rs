@@ -286,6 +286,20 @@ fn ten_thousand_records_allocate_nothing() {
     eprintln!("counters after 100 records: {before:?}\ncounters after 10,000 records: {after:?}");
     assert_eq!(before, after, "records allocated GPU objects");
     gpu.take_errors().unwrap();
+    // The counting variant: its first count builds it; 20 more, the lights
+    // moved before each, keep nothing more (and count the same pixels).
+    let mut count = |frame: u32| {
+        direct.update_lights(&moved_lights(64, frame)).unwrap();
+        let settings = DirectSettings { culling, seed: 1, frame };
+        direct.count_work(&DirectInputs::new(gbuffer, &views[0]), &settings).unwrap()
+    };
+    let first = count(0);
+    let before = counters();
+    for frame in 1..=20 {
+        assert_eq!(count(frame).pixels, first.pixels, "frame {frame}");
+    }
+    assert_eq!(before, counters(), "count_work allocated GPU objects");
+    gpu.take_errors().unwrap();
     // The counters are the device's: the harness runs tests at once, so
     // GpuVpl's check runs here, after the soak, not as a test of its own.
     gpu_vpl_shades_allocate_nothing(gpu, &Scene::cornell_box());
