@@ -138,19 +138,27 @@ struct RenderArgs {
     out: PathBuf,
 }
 
-/// On a machine with no display (no `XDG_RUNTIME_DIR`, `WAYLAND_DISPLAY`
-/// or `DISPLAY`), Mesa's Vulkan device-select layer tries to reach a Wayland
-/// compositor to rank the GPUs, and libwayland prints `error:
-/// XDG_RUNTIME_DIR is invalid or not set` twice, though nothing is wrong.
-/// With no display there is nothing to rank by, so the layer is turned off
-/// (`NODEVICE_SELECT=1`, Mesa's switch) unless the user chose a device for
-/// it (`MESA_VK_DEVICE_SELECT`) or set the switch. Engines that embed
-/// slc-wgpu can set the same variable.
+/// Outside a desktop session (no `XDG_RUNTIME_DIR` and no
+/// `WAYLAND_DISPLAY`: a container, ssh, `xvfb-run`), Mesa's Vulkan
+/// device-select layer tries to reach a Wayland compositor to rank the GPUs,
+/// and libwayland prints `error: XDG_RUNTIME_DIR is invalid or not set`
+/// twice, though nothing is wrong. There is no compositor to rank by (an
+/// X display ranks only the GPU driving it first, which matters only where
+/// `DRI_PRIME` picks another), so the layer is turned off
+/// (`NODEVICE_SELECT=1`, Mesa's switch) unless the user chose a device
+/// (`MESA_VK_DEVICE_SELECT`, `DRI_PRIME`) or set the switch. Engines that
+/// embed slc-wgpu can set the same variable.
 fn quiet_headless_vulkan() {
     let unset = |k: &str| std::env::var_os(k).is_none();
-    if ["XDG_RUNTIME_DIR", "WAYLAND_DISPLAY", "DISPLAY", "MESA_VK_DEVICE_SELECT", "NODEVICE_SELECT"]
-        .iter()
-        .all(|k| unset(k))
+    if [
+        "XDG_RUNTIME_DIR",
+        "WAYLAND_DISPLAY",
+        "MESA_VK_DEVICE_SELECT",
+        "DRI_PRIME",
+        "NODEVICE_SELECT",
+    ]
+    .iter()
+    .all(|k| unset(k))
     {
         // SAFETY: called first thing in `main`, before any thread exists,
         // so nothing reads the environment concurrently.
