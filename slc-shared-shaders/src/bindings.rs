@@ -249,23 +249,26 @@ pub fn bindings(kernel: Kernel, f: &Features) -> Vec<Binding> {
                 read(6, "r2", "array<f32>", "random range² (clamp: R²)", "`light_update` or `vpl_pack`"),
                 read(7, "boxes", "array<GpuBox>", "cluster and group boxes of both fields", "`vpl_clusters`, `vpl_groups`"),
                 write(8, "irradiance", vec4, "irradiance (rgb), lights kept (w); 0 where no surface is"),
+                write(9, "guide", vec4, "the denoise's guide: unit normal (xyz) and distance from the eye (w); a zero normal and `DEPTH_NONE` where no surface is"),
             ]);
             if f.glossy {
                 v.extend([
-                    materials(9),
-                    write(10, "specular", vec4, "glossy variant: specular correction `S` (rgb); 0 where no surface with a specular lobe is"),
+                    materials(10),
+                    write(11, "specular", vec4, "glossy variant: specular correction `S` (rgb); 0 where no surface with a specular lobe is"),
                 ]);
             }
             if f.counters {
-                v.push(counters(11));
+                v.push(counters(12));
             }
             v
         }
         Kernel::VplDenoise => {
-            let mut v = vec![uniform(0, "params", "VplParams", true, "image size")];
-            v.extend(gbuffer_in(1, f.surface));
-            v.extend([read(4, "irradiance", vec4, "interleaved irradiance", "`vpl_tiled`"), write(5, "filtered", vec4, "denoised irradiance")]);
-            v
+            vec![
+                uniform(0, "params", "VplParams", true, "image size"),
+                read(1, "guide", vec4, "each pixel's unit normal and distance from the eye", "`vpl_tiled`"),
+                read(2, "irradiance", vec4, "interleaved irradiance", "`vpl_tiled`"),
+                write(3, "filtered", vec4, "denoised irradiance"),
+            ]
         }
         Kernel::VplNear => {
             let mut v = vec![uniform(0, "params", "VplParams", true, "image size, `R_n²`, the near field's grid")];

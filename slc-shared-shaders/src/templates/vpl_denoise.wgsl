@@ -3,9 +3,11 @@
 // interleaving window (one pixel of every VPL subset), weighted by the
 // core's bilateral_weight on normal and depth, widened to twice the period
 // where a VPL subset is missing from the window; the CPU's filter, per pixel.
+// Normal and depth come from vpl_tiled's guide: the G-buffer as gbuffer_at
+// reads it (unit normal and distance from the eye; a zero normal and
+// DEPTH_NONE where no surface is), one texel per tap.
 
 {{ bindings }}
-{% include "gbuffer_read.wgsl" %}
 
 const PERIOD: u32 = {{ period }}u;
 
@@ -33,9 +35,9 @@ fn window_sum(x: u32, y: u32, size: u32, n: vec3f, z: f32, inv: f32) -> Window {
     for (var yy = y0; yy < y1; yy++) {
         for (var xx = x0; xx < x1; xx++) {
             let j = yy * w + xx;
-            // The neighbour's surface, read in place (DEPTH_NONE where none is).
-            let g = gbuffer_at(j);
-            let wgt = bilateral_weight(n, g.normal.xyz, z, g.normal.w, inv);
+            // The neighbour's surface (DEPTH_NONE where none is).
+            let g = guide[j];
+            let wgt = bilateral_weight(n, g.xyz, z, g.w, inv);
             win.sum += irradiance[j].xyz * wgt;
             win.weight += wgt;
             win.covered += select(0u, 1u, wgt > COVER_WEIGHT);
@@ -53,13 +55,14 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     }
     let i = gid.y * w + gid.x;
     let e = irradiance[i];
-    let g = gbuffer_at(i);
-    if g.position.w <= 0.0 {
+    let g = guide[i];
+    // No surface: a zero normal.
+    if all(g.xyz == vec3f(0.0)) {
         filtered[i] = vec4f(0.0, 0.0, 0.0, e.w);
         return;
     }
-    let n = g.normal.xyz;
-    let z = g.normal.w;
+    let n = g.xyz;
+    let z = g.w;
     let inv = inv_sigma_z(z);
     var s = window_sum(gid.x, gid.y, PERIOD, n, z, inv);
     // A VPL subset is missing (an edge, a corner, the border): the doubled

@@ -5,7 +5,11 @@
 // the workgroup's surfaces (uniform: it decides the culling).
 
 var<private> pos: vec3f;
+/// Unit normal; zero where no surface is.
 var<private> nrm: vec3f;
+/// Distance from the eye (DEPTH_NONE where no surface is): with `nrm`, the
+/// denoise's guide (vpl_tiled writes it).
+var<private> eye_distance: f32;
 var<private> valid: bool;
 var<private> e: vec3f;
 var<private> kept: u32;
@@ -18,10 +22,12 @@ var<private> g: Glossy;
 /// returns the workgroup's box of surfaces; every invocation calls it.
 fn load_receiver(li: u32, pix: u32, inside: bool) -> WorkgroupBox {
     var p = vec4f(0.0);
+    eye_distance = DEPTH_NONE;
     if inside {
         let gb = gbuffer_at(pix);
         p = gb.position;
         nrm = gb.normal.xyz;
+        eye_distance = gb.normal.w;
     }
     pos = p.xyz;
     valid = inside && p.w > 0.0;

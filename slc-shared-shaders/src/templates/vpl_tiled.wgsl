@@ -136,9 +136,12 @@ fn main(
     count_receiver(li);
 {% endif %}
     // Every pixel is written (zero where no surface is): nothing else
-    // clears the irradiance of the last record.
+    // clears the irradiance of the last record. The guide is the G-buffer
+    // as the denoise weighs its neighbours: each of its taps then reads one
+    // texel instead of unprojecting depth and normalising a normal.
     if inside {
         irradiance[pix] = vec4f(e, f32(kept));
+        guide[pix] = vec4f(nrm, eye_distance);
 {% if glossy %}
         specular[pix] = vec4f(s, 0.0);
 {% endif %}

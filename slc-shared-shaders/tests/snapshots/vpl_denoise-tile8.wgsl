@@ -15,26 +15,6 @@ struct VplParams {
     near_grid: vec4<u32>,
 }
 
-struct ViewParams {
-    c0_: vec4<f32>,
-    c1_: vec4<f32>,
-    c2_: vec4<f32>,
-    c3_: vec4<f32>,
-    eye: vec3<f32>,
-    width: u32,
-    height: u32,
-    shadow_offset: f32,
-    seed: u32,
-    frame: u32,
-    f0_d: vec3<f32>,
-    f90_d: f32,
-}
-
-struct GbTexel {
-    position: vec4<f32>,
-    normal: vec4<f32>,
-}
-
 struct Window {
     sum: vec3<f32>,
     weight: f32,
@@ -113,14 +93,10 @@ const PERIOD: u32 = 8u;
 @group(0) @binding(0) 
 var<uniform> params: VplParams;
 @group(0) @binding(1) 
-var<uniform> view: ViewParams;
+var<storage> guide: array<vec4<f32>>;
 @group(0) @binding(2) 
-var position_tex: texture_2d<f32>;
-@group(0) @binding(3) 
-var normal_tex: texture_2d<f32>;
-@group(0) @binding(4) 
 var<storage> irradiance: array<vec4<f32>>;
-@group(0) @binding(5) 
+@group(0) @binding(3) 
 var<storage, read_write> filtered: array<vec4<f32>>;
 
 fn inv_sigma_z(z: f32) -> f32 {
@@ -161,34 +137,6 @@ fn bilateral_weight(n: vec3<f32>, nj: vec3<f32>, z_1: f32, zj: f32, inv_sz: f32)
     return (((dn8_ * dn8_) * t) * t);
 }
 
-fn surface_at(texel: vec2<i32>) -> vec4<f32> {
-    let p = textureLoad(position_tex, texel, 0i);
-    return select(vec4(0f), vec4<f32>(p.xyz, 1f), (p.w > 0f));
-}
-
-fn gbuffer_at(i: u32) -> GbTexel {
-    var local_1: bool;
-
-    let _e3 = view.width;
-    let _e8 = view.width;
-    let texel_1 = vec2<i32>(i32((i % _e3)), i32((i / _e8)));
-    let _e12 = surface_at(texel_1);
-    let _e15 = textureLoad(normal_tex, texel_1, 0i);
-    let n_2 = _e15.xyz;
-    let len2_ = dot(n_2, n_2);
-    if (_e12.w > 0f) {
-        local_1 = (len2_ > 0f);
-    } else {
-        local_1 = false;
-    }
-    let valid = local_1;
-    let _e30 = view.eye;
-    let v = (_e12.xyz - _e30);
-    let position = vec4<f32>(_e12.xyz, select(0f, 1f, valid));
-    let normal = select(vec4<f32>(0f, 0f, 0f, 1000000000000000000000000000000f), vec4<f32>((n_2 / vec3(sqrt(len2_))), sqrt(dot(v, v))), valid);
-    return GbTexel(position, normal);
-}
-
 fn window_sum(x_2: u32, y: u32, size_2: u32, n_1: vec3<f32>, z_2: f32, inv: f32) -> Window {
     var win: Window;
     var yy: u32;
@@ -222,8 +170,8 @@ fn window_sum(x_2: u32, y: u32, size_2: u32, n_1: vec3<f32>, z_2: f32, inv: f32)
                     let _e30 = yy;
                     let _e32 = xx;
                     let j = ((_e30 * w) + _e32);
-                    let _e34 = gbuffer_at(j);
-                    let _e39 = bilateral_weight(n_1, _e34.normal.xyz, z_2, _e34.normal.w, inv);
+                    let g = guide[j];
+                    let _e39 = bilateral_weight(n_1, g.xyz, z_2, g.w, inv);
                     let _e41 = win.sum;
                     let _e44 = irradiance[j];
                     win.sum = (_e41 + (_e44.xyz * _e39));
@@ -263,28 +211,28 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     if _e15 {
         return;
     }
-    let i_1 = ((gid.y * w_1) + gid.x);
-    let e_1 = irradiance[i_1];
-    let _e23 = gbuffer_at(i_1);
-    if (_e23.position.w <= 0f) {
-        filtered[i_1] = vec4<f32>(0f, 0f, 0f, e_1.w);
+    let i = ((gid.y * w_1) + gid.x);
+    let e_1 = irradiance[i];
+    let g_1 = guide[i];
+    if all((g_1.xyz == vec3(0f))) {
+        filtered[i] = vec4<f32>(0f, 0f, 0f, e_1.w);
         return;
     }
-    let n_3 = _e23.normal.xyz;
-    let z_3 = _e23.normal.w;
-    let _e39 = inv_sigma_z(z_3);
-    let _e43 = window_sum(gid.x, gid.y, PERIOD, n_3, z_3, _e39);
-    s = _e43;
-    let _e46 = s.covered;
-    let _e48 = misses_subset(_e46, PERIOD);
-    if _e48 {
-        let _e52 = wide_window(PERIOD);
-        let _e53 = window_sum(gid.x, gid.y, _e52, n_3, z_3, _e39);
-        s = _e53;
+    let n_2 = g_1.xyz;
+    let z_3 = g_1.w;
+    let _e40 = inv_sigma_z(z_3);
+    let _e44 = window_sum(gid.x, gid.y, PERIOD, n_2, z_3, _e40);
+    s = _e44;
+    let _e47 = s.covered;
+    let _e49 = misses_subset(_e47, PERIOD);
+    if _e49 {
+        let _e53 = wide_window(PERIOD);
+        let _e54 = window_sum(gid.x, gid.y, _e53, n_2, z_3, _e40);
+        s = _e54;
     }
-    let _e58 = s.sum;
-    let _e60 = s.weight;
-    let _e61 = filtered_irradiance(e_1.xyz, _e58, _e60);
-    filtered[i_1] = vec4<f32>(_e61, e_1.w);
+    let _e59 = s.sum;
+    let _e61 = s.weight;
+    let _e62 = filtered_irradiance(e_1.xyz, _e59, _e61);
+    filtered[i] = vec4<f32>(_e62, e_1.w);
     return;
 }

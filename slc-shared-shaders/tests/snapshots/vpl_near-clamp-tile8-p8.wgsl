@@ -157,6 +157,7 @@ var<storage> r2_2: array<f32>;
 var<storage, read_write> irradiance: array<vec4<f32>>;
 var<private> pos: vec3<f32>;
 var<private> nrm: vec3<f32>;
+var<private> eye_distance: f32;
 var<private> valid: bool;
 var<private> e: vec3<f32>;
 var<private> kept: u32;
@@ -376,25 +377,27 @@ fn load_receiver(li_3: u32, pix: u32, inside: bool) -> WorkgroupBox {
     var p_2: vec4<f32> = vec4(0f);
     var local_7: bool;
 
+    eye_distance = DEPTH_NONE;
     if inside {
-        let _e6 = gbuffer_at(pix);
-        p_2 = _e6.position;
-        nrm = _e6.normal.xyz;
+        let _e8 = gbuffer_at(pix);
+        p_2 = _e8.position;
+        nrm = _e8.normal.xyz;
+        eye_distance = _e8.normal.w;
     }
-    let _e12 = p_2;
-    pos = _e12.xyz;
+    let _e17 = p_2;
+    pos = _e17.xyz;
     if inside {
-        let _e18 = p_2.w;
-        local_7 = (_e18 > 0f);
+        let _e23 = p_2.w;
+        local_7 = (_e23 > 0f);
     } else {
         local_7 = false;
     }
-    let _e22 = local_7;
-    valid = _e22;
-    let _e24 = pos;
-    let _e26 = valid;
-    let _e27 = workgroup_box(li_3, _e24, _e26);
-    return _e27;
+    let _e27 = local_7;
+    valid = _e27;
+    let _e29 = pos;
+    let _e31 = valid;
+    let _e32 = workgroup_box(li_3, _e29, _e31);
+    return _e32;
 }
 
 fn cluster_slot(c_1: u32, k: u32) -> u32 {

@@ -162,6 +162,7 @@ var<storage, read_write> counters: array<atomic<u32>>;
 var<workgroup> wg_counts: array<atomic<u32>, 7>;
 var<private> pos: vec3<f32>;
 var<private> nrm: vec3<f32>;
+var<private> eye_distance: f32;
 var<private> valid: bool;
 var<private> e: vec3<f32>;
 var<private> kept: u32;
@@ -443,30 +444,32 @@ fn load_receiver(li_6: u32, pix: u32, inside: bool) -> WorkgroupBox {
     var p_2: vec4<f32> = vec4(0f);
     var local_7: bool;
 
+    eye_distance = DEPTH_NONE;
     if inside {
-        let _e6 = gbuffer_at(pix);
-        p_2 = _e6.position;
-        nrm = _e6.normal.xyz;
+        let _e8 = gbuffer_at(pix);
+        p_2 = _e8.position;
+        nrm = _e8.normal.xyz;
+        eye_distance = _e8.normal.w;
     }
-    let _e12 = p_2;
-    pos = _e12.xyz;
+    let _e17 = p_2;
+    pos = _e17.xyz;
     if inside {
-        let _e18 = p_2.w;
-        local_7 = (_e18 > 0f);
+        let _e23 = p_2.w;
+        local_7 = (_e23 > 0f);
     } else {
         local_7 = false;
     }
-    let _e22 = local_7;
-    valid = _e22;
+    let _e27 = local_7;
+    valid = _e27;
     counts_begin(li_6);
-    let _e24 = valid;
-    if _e24 {
+    let _e29 = valid;
+    if _e29 {
         count_one(COUNT_PIXELS);
     }
-    let _e27 = pos;
-    let _e29 = valid;
-    let _e30 = workgroup_box(li_6, _e27, _e29);
-    return _e30;
+    let _e32 = pos;
+    let _e34 = valid;
+    let _e35 = workgroup_box(li_6, _e32, _e34);
+    return _e35;
 }
 
 fn count_receiver(li_7: u32) {

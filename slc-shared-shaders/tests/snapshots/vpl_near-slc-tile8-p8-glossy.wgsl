@@ -178,6 +178,7 @@ var<storage> materials: array<GpuMaterial>;
 var<storage, read_write> specular: array<vec4<f32>>;
 var<private> pos: vec3<f32>;
 var<private> nrm: vec3<f32>;
+var<private> eye_distance: f32;
 var<private> valid: bool;
 var<private> e: vec3<f32>;
 var<private> kept: u32;
@@ -560,31 +561,33 @@ fn load_receiver(li_3: u32, pix: u32, inside: bool) -> WorkgroupBox {
     var p_2: vec4<f32> = vec4(0f);
     var local_12: bool;
 
+    eye_distance = DEPTH_NONE;
     if inside {
-        let _e6 = gbuffer_at(pix);
-        p_2 = _e6.position;
-        nrm = _e6.normal.xyz;
+        let _e8 = gbuffer_at(pix);
+        p_2 = _e8.position;
+        nrm = _e8.normal.xyz;
+        eye_distance = _e8.normal.w;
     }
-    let _e12 = p_2;
-    pos = _e12.xyz;
+    let _e17 = p_2;
+    pos = _e17.xyz;
     if inside {
-        let _e18 = p_2.w;
-        local_12 = (_e18 > 0f);
+        let _e23 = p_2.w;
+        local_12 = (_e23 > 0f);
     } else {
         local_12 = false;
     }
-    let _e22 = local_12;
-    valid = _e22;
-    let _e24 = valid;
-    if _e24 {
-        let _e27 = pos;
-        let _e28 = glossy_at(pix, _e27);
-        g_4 = _e28;
+    let _e27 = local_12;
+    valid = _e27;
+    let _e29 = valid;
+    if _e29 {
+        let _e32 = pos;
+        let _e33 = glossy_at(pix, _e32);
+        g_4 = _e33;
     }
-    let _e30 = pos;
-    let _e32 = valid;
-    let _e33 = workgroup_box(li_3, _e30, _e32);
-    return _e33;
+    let _e35 = pos;
+    let _e37 = valid;
+    let _e38 = workgroup_box(li_3, _e35, _e37);
+    return _e38;
 }
 
 fn cluster_slot(c_1: u32, k: u32) -> u32 {

@@ -152,8 +152,11 @@ var<storage> r2_3: array<f32>;
 var<storage> boxes: array<GpuBox>;
 @group(0) @binding(8) 
 var<storage, read_write> irradiance: array<vec4<f32>>;
+@group(0) @binding(9) 
+var<storage, read_write> guide: array<vec4<f32>>;
 var<private> pos: vec3<f32>;
 var<private> nrm: vec3<f32>;
+var<private> eye_distance: f32;
 var<private> valid: bool;
 var<private> e: vec3<f32>;
 var<private> kept: u32;
@@ -363,25 +366,27 @@ fn load_receiver(li_3: u32, pix: u32, inside: bool) -> WorkgroupBox {
     var p_2: vec4<f32> = vec4(0f);
     var local_7: bool;
 
+    eye_distance = DEPTH_NONE;
     if inside {
-        let _e6 = gbuffer_at(pix);
-        p_2 = _e6.position;
-        nrm = _e6.normal.xyz;
+        let _e8 = gbuffer_at(pix);
+        p_2 = _e8.position;
+        nrm = _e8.normal.xyz;
+        eye_distance = _e8.normal.w;
     }
-    let _e12 = p_2;
-    pos = _e12.xyz;
+    let _e17 = p_2;
+    pos = _e17.xyz;
     if inside {
-        let _e18 = p_2.w;
-        local_7 = (_e18 > 0f);
+        let _e23 = p_2.w;
+        local_7 = (_e23 > 0f);
     } else {
         local_7 = false;
     }
-    let _e22 = local_7;
-    valid = _e22;
-    let _e24 = pos;
-    let _e26 = valid;
-    let _e27 = workgroup_box(li_3, _e24, _e26);
-    return _e27;
+    let _e27 = local_7;
+    valid = _e27;
+    let _e29 = pos;
+    let _e31 = valid;
+    let _e32 = workgroup_box(li_3, _e29, _e31);
+    return _e32;
 }
 
 fn shade_light(j: u32) {
@@ -567,6 +572,9 @@ fn main(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id) lid:
         let _e73 = e;
         let _e75 = kept;
         irradiance[pix_1] = vec4<f32>(_e73, f32(_e75));
+        let _e81 = nrm;
+        let _e83 = eye_distance;
+        guide[pix_1] = vec4<f32>(_e81, _e83);
         return;
     } else {
         return;

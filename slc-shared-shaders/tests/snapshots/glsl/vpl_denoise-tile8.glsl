@@ -19,24 +19,6 @@ struct VplParams {
     uvec4 far_grid;
     uvec4 near_grid;
 };
-struct ViewParams {
-    vec4 c0_;
-    vec4 c1_;
-    vec4 c2_;
-    vec4 c3_;
-    vec3 eye;
-    uint width;
-    uint height;
-    float shadow_offset;
-    uint seed;
-    uint frame;
-    vec3 f0_d;
-    float f90_d;
-};
-struct GbTexel {
-    vec4 position;
-    vec4 normal;
-};
 struct Window {
     vec3 sum;
     float weight;
@@ -113,15 +95,11 @@ const uint PERIOD = 8u;
 
 layout(std140) uniform VplParams_block_0Compute { VplParams _group_0_binding_0_cs; };
 
-layout(std140) uniform ViewParams_block_1Compute { ViewParams _group_0_binding_1_cs; };
+layout(std430) readonly buffer type_6_block_1Compute { vec4 _group_0_binding_1_cs[]; };
 
-uniform sampler2D _group_0_binding_2_cs;
+layout(std430) readonly buffer type_6_block_2Compute { vec4 _group_0_binding_2_cs[]; };
 
-uniform sampler2D _group_0_binding_3_cs;
-
-layout(std430) readonly buffer type_7_block_2Compute { vec4 _group_0_binding_4_cs[]; };
-
-layout(std430) buffer type_7_block_3Compute { vec4 _group_0_binding_5_cs[]; };
+layout(std430) buffer type_6_block_3Compute { vec4 _group_0_binding_3_cs[]; };
 
 
 float inv_sigma_z(float z) {
@@ -160,33 +138,6 @@ float bilateral_weight(vec3 n, vec3 nj, float z_1, float zj, float inv_sz) {
     float d = ((zj - z_1) * inv_sz);
     float t = max((1.0 - (d * d)), 0.0);
     return (((dn8_ * dn8_) * t) * t);
-}
-
-vec4 surface_at(ivec2 texel) {
-    vec4 p = texelFetch(_group_0_binding_2_cs, texel, 0);
-    return ((p.w > 0.0) ? vec4(p.xyz, 1.0) : vec4(0.0));
-}
-
-GbTexel gbuffer_at(uint i) {
-    bool local_1 = false;
-    uint _e3 = _group_0_binding_1_cs.width;
-    uint _e8 = _group_0_binding_1_cs.width;
-    ivec2 texel_1 = ivec2(int((i % _e3)), int((i / _e8)));
-    vec4 _e12 = surface_at(texel_1);
-    vec4 _e15 = texelFetch(_group_0_binding_3_cs, texel_1, 0);
-    vec3 n_2 = _e15.xyz;
-    float len2_ = dot(n_2, n_2);
-    if ((_e12.w > 0.0)) {
-        local_1 = (len2_ > 0.0);
-    } else {
-        local_1 = false;
-    }
-    bool valid = local_1;
-    vec3 _e30 = _group_0_binding_1_cs.eye;
-    vec3 v = (_e12.xyz - _e30);
-    vec4 position = vec4(_e12.xyz, (valid ? 1.0 : 0.0));
-    vec4 normal = (valid ? vec4((n_2 / vec3(sqrt(len2_))), sqrt(dot(v, v))) : vec4(0.0, 0.0, 0.0, 1e30));
-    return GbTexel(position, normal);
 }
 
 Window window_sum(uint x_2, uint y, uint size_2, vec3 n_1, float z_2, float inv) {
@@ -233,10 +184,10 @@ Window window_sum(uint x_2, uint y, uint size_2, vec3 n_1, float z_2, float inv)
                     uint _e30 = yy;
                     uint _e32 = xx;
                     uint j = ((_e30 * w) + _e32);
-                    GbTexel _e34 = gbuffer_at(j);
-                    float _e39 = bilateral_weight(n_1, _e34.normal.xyz, z_2, _e34.normal.w, inv);
+                    vec4 g = _group_0_binding_1_cs[j];
+                    float _e39 = bilateral_weight(n_1, g.xyz, z_2, g.w, inv);
                     vec3 _e41 = win.sum;
-                    vec4 _e44 = _group_0_binding_4_cs[j];
+                    vec4 _e44 = _group_0_binding_2_cs[j];
                     win.sum = (_e41 + (_e44.xyz * _e39));
                     float _e49 = win.weight;
                     win.weight = (_e49 + _e39);
@@ -265,29 +216,29 @@ void main() {
     if (_e15) {
         return;
     }
-    uint i_1 = ((gid.y * w_1) + gid.x);
-    vec4 e_1 = _group_0_binding_4_cs[i_1];
-    GbTexel _e23 = gbuffer_at(i_1);
-    if ((_e23.position.w <= 0.0)) {
-        _group_0_binding_5_cs[i_1] = vec4(0.0, 0.0, 0.0, e_1.w);
+    uint i = ((gid.y * w_1) + gid.x);
+    vec4 e_1 = _group_0_binding_2_cs[i];
+    vec4 g_1 = _group_0_binding_1_cs[i];
+    if (all(equal(g_1.xyz, vec3(0.0)))) {
+        _group_0_binding_3_cs[i] = vec4(0.0, 0.0, 0.0, e_1.w);
         return;
     }
-    vec3 n_3 = _e23.normal.xyz;
-    float z_3 = _e23.normal.w;
-    float _e39 = inv_sigma_z(z_3);
-    Window _e43 = window_sum(gid.x, gid.y, PERIOD, n_3, z_3, _e39);
-    s = _e43;
-    uint _e46 = s.covered;
-    bool _e48 = misses_subset(_e46, PERIOD);
-    if (_e48) {
-        uint _e52 = wide_window(PERIOD);
-        Window _e53 = window_sum(gid.x, gid.y, _e52, n_3, z_3, _e39);
-        s = _e53;
+    vec3 n_2 = g_1.xyz;
+    float z_3 = g_1.w;
+    float _e40 = inv_sigma_z(z_3);
+    Window _e44 = window_sum(gid.x, gid.y, PERIOD, n_2, z_3, _e40);
+    s = _e44;
+    uint _e47 = s.covered;
+    bool _e49 = misses_subset(_e47, PERIOD);
+    if (_e49) {
+        uint _e53 = wide_window(PERIOD);
+        Window _e54 = window_sum(gid.x, gid.y, _e53, n_2, z_3, _e40);
+        s = _e54;
     }
-    vec3 _e58 = s.sum;
-    float _e60 = s.weight;
-    vec3 _e61 = filtered_irradiance(e_1.xyz, _e58, _e60);
-    _group_0_binding_5_cs[i_1] = vec4(_e61, e_1.w);
+    vec3 _e59 = s.sum;
+    float _e61 = s.weight;
+    vec3 _e62 = filtered_irradiance(e_1.xyz, _e59, _e61);
+    _group_0_binding_3_cs[i] = vec4(_e62, e_1.w);
     return;
 }
 

@@ -167,6 +167,8 @@ vec3 pos = vec3(0.0);
 
 vec3 nrm = vec3(0.0);
 
+float eye_distance = 0.0;
+
 bool valid = false;
 
 vec3 e = vec3(0.0);
@@ -464,30 +466,32 @@ void counts_end(uint li_5) {
 WorkgroupBox load_receiver(uint li_6, uint pix, bool inside) {
     vec4 p_2 = vec4(0.0);
     bool local_7 = false;
+    eye_distance = DEPTH_NONE;
     if (inside) {
-        GbTexel _e6 = gbuffer_at(pix);
-        p_2 = _e6.position;
-        nrm = _e6.normal.xyz;
+        GbTexel _e8 = gbuffer_at(pix);
+        p_2 = _e8.position;
+        nrm = _e8.normal.xyz;
+        eye_distance = _e8.normal.w;
     }
-    vec4 _e12 = p_2;
-    pos = _e12.xyz;
+    vec4 _e17 = p_2;
+    pos = _e17.xyz;
     if (inside) {
-        float _e18 = p_2.w;
-        local_7 = (_e18 > 0.0);
+        float _e23 = p_2.w;
+        local_7 = (_e23 > 0.0);
     } else {
         local_7 = false;
     }
-    bool _e22 = local_7;
-    valid = _e22;
+    bool _e27 = local_7;
+    valid = _e27;
     counts_begin(li_6);
-    bool _e24 = valid;
-    if (_e24) {
+    bool _e29 = valid;
+    if (_e29) {
         count_one(COUNT_PIXELS);
     }
-    vec3 _e27 = pos;
-    bool _e29 = valid;
-    WorkgroupBox _e30 = workgroup_box(li_6, _e27, _e29);
-    return _e30;
+    vec3 _e32 = pos;
+    bool _e34 = valid;
+    WorkgroupBox _e35 = workgroup_box(li_6, _e32, _e34);
+    return _e35;
 }
 
 void count_receiver(uint li_7) {

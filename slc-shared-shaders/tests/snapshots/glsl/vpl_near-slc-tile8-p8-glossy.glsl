@@ -180,6 +180,8 @@ vec3 pos = vec3(0.0);
 
 vec3 nrm = vec3(0.0);
 
+float eye_distance = 0.0;
+
 bool valid = false;
 
 vec3 e = vec3(0.0);
@@ -574,31 +576,33 @@ float near_cull_r2_of(uint slot_1, float near_r2_3) {
 WorkgroupBox load_receiver(uint li_3, uint pix, bool inside) {
     vec4 p_2 = vec4(0.0);
     bool local_12 = false;
+    eye_distance = DEPTH_NONE;
     if (inside) {
-        GbTexel _e6 = gbuffer_at(pix);
-        p_2 = _e6.position;
-        nrm = _e6.normal.xyz;
+        GbTexel _e8 = gbuffer_at(pix);
+        p_2 = _e8.position;
+        nrm = _e8.normal.xyz;
+        eye_distance = _e8.normal.w;
     }
-    vec4 _e12 = p_2;
-    pos = _e12.xyz;
+    vec4 _e17 = p_2;
+    pos = _e17.xyz;
     if (inside) {
-        float _e18 = p_2.w;
-        local_12 = (_e18 > 0.0);
+        float _e23 = p_2.w;
+        local_12 = (_e23 > 0.0);
     } else {
         local_12 = false;
     }
-    bool _e22 = local_12;
-    valid = _e22;
-    bool _e24 = valid;
-    if (_e24) {
-        vec3 _e27 = pos;
-        Glossy _e28 = glossy_at(pix, _e27);
-        g_4 = _e28;
+    bool _e27 = local_12;
+    valid = _e27;
+    bool _e29 = valid;
+    if (_e29) {
+        vec3 _e32 = pos;
+        Glossy _e33 = glossy_at(pix, _e32);
+        g_4 = _e33;
     }
-    vec3 _e30 = pos;
-    bool _e32 = valid;
-    WorkgroupBox _e33 = workgroup_box(li_3, _e30, _e32);
-    return _e33;
+    vec3 _e35 = pos;
+    bool _e37 = valid;
+    WorkgroupBox _e38 = workgroup_box(li_3, _e35, _e37);
+    return _e38;
 }
 
 uint cluster_slot(uint c_1, uint k) {

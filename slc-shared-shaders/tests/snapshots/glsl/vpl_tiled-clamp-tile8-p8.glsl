@@ -152,9 +152,13 @@ layout(std430) readonly buffer type_10_block_4Compute { GpuBox _group_0_binding_
 
 layout(std430) buffer type_11_block_5Compute { vec4 _group_0_binding_8_cs[]; };
 
+layout(std430) buffer type_11_block_6Compute { vec4 _group_0_binding_9_cs[]; };
+
 vec3 pos = vec3(0.0);
 
 vec3 nrm = vec3(0.0);
+
+float eye_distance = 0.0;
 
 bool valid = false;
 
@@ -368,25 +372,27 @@ GbTexel gbuffer_at(uint i) {
 WorkgroupBox load_receiver(uint li_3, uint pix, bool inside) {
     vec4 p_2 = vec4(0.0);
     bool local_7 = false;
+    eye_distance = DEPTH_NONE;
     if (inside) {
-        GbTexel _e6 = gbuffer_at(pix);
-        p_2 = _e6.position;
-        nrm = _e6.normal.xyz;
+        GbTexel _e8 = gbuffer_at(pix);
+        p_2 = _e8.position;
+        nrm = _e8.normal.xyz;
+        eye_distance = _e8.normal.w;
     }
-    vec4 _e12 = p_2;
-    pos = _e12.xyz;
+    vec4 _e17 = p_2;
+    pos = _e17.xyz;
     if (inside) {
-        float _e18 = p_2.w;
-        local_7 = (_e18 > 0.0);
+        float _e23 = p_2.w;
+        local_7 = (_e23 > 0.0);
     } else {
         local_7 = false;
     }
-    bool _e22 = local_7;
-    valid = _e22;
-    vec3 _e24 = pos;
-    bool _e26 = valid;
-    WorkgroupBox _e27 = workgroup_box(li_3, _e24, _e26);
-    return _e27;
+    bool _e27 = local_7;
+    valid = _e27;
+    vec3 _e29 = pos;
+    bool _e31 = valid;
+    WorkgroupBox _e32 = workgroup_box(li_3, _e29, _e31);
+    return _e32;
 }
 
 void shade_light(uint j) {
@@ -603,6 +609,9 @@ void main() {
         vec3 _e73 = e;
         uint _e75 = kept;
         _group_0_binding_8_cs[pix_1] = vec4(_e73, float(_e75));
+        vec3 _e81 = nrm;
+        float _e83 = eye_distance;
+        _group_0_binding_9_cs[pix_1] = vec4(_e81, _e83);
         return;
     } else {
         return;

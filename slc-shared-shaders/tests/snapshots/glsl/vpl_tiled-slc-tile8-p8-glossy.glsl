@@ -167,13 +167,17 @@ layout(std430) readonly buffer type_10_block_5Compute { GpuBox _group_0_binding_
 
 layout(std430) buffer type_11_block_6Compute { vec4 _group_0_binding_8_cs[]; };
 
-layout(std430) readonly buffer type_12_block_7Compute { GpuMaterial _group_0_binding_9_cs[]; };
+layout(std430) buffer type_11_block_7Compute { vec4 _group_0_binding_9_cs[]; };
 
-layout(std430) buffer type_11_block_8Compute { vec4 _group_0_binding_10_cs[]; };
+layout(std430) readonly buffer type_12_block_8Compute { GpuMaterial _group_0_binding_10_cs[]; };
+
+layout(std430) buffer type_11_block_9Compute { vec4 _group_0_binding_11_cs[]; };
 
 vec3 pos = vec3(0.0);
 
 vec3 nrm = vec3(0.0);
+
+float eye_distance = 0.0;
 
 bool valid = false;
 
@@ -518,7 +522,7 @@ Glossy glossy_at(uint i_1, vec3 x) {
     uint _e9 = _group_0_binding_1_cs.width;
     ivec2 texel_2 = ivec2(int((i_1 % _e4)), int((i_1 / _e9)));
     vec4 _e16 = texelFetch(_group_0_binding_3_cs, texel_2, 0);
-    GpuMaterial m_1 = _group_0_binding_9_cs[uint(_e16.w)];
+    GpuMaterial m_1 = _group_0_binding_10_cs[uint(_e16.w)];
     vec3 _e23 = _group_0_binding_1_cs.eye;
     bool _e29 = has_specular(m_1.metallic, m_1.f0_, m_1.f90_);
     return Glossy(m_1, normalize((_e23 - x)), _e29);
@@ -542,31 +546,33 @@ vec3 glossy_term(Glossy g_2, GpuLight l_4, vec3 n_3, vec3 v_5, float t) {
 WorkgroupBox load_receiver(uint li_3, uint pix, bool inside) {
     vec4 p_2 = vec4(0.0);
     bool local_12 = false;
+    eye_distance = DEPTH_NONE;
     if (inside) {
-        GbTexel _e6 = gbuffer_at(pix);
-        p_2 = _e6.position;
-        nrm = _e6.normal.xyz;
+        GbTexel _e8 = gbuffer_at(pix);
+        p_2 = _e8.position;
+        nrm = _e8.normal.xyz;
+        eye_distance = _e8.normal.w;
     }
-    vec4 _e12 = p_2;
-    pos = _e12.xyz;
+    vec4 _e17 = p_2;
+    pos = _e17.xyz;
     if (inside) {
-        float _e18 = p_2.w;
-        local_12 = (_e18 > 0.0);
+        float _e23 = p_2.w;
+        local_12 = (_e23 > 0.0);
     } else {
         local_12 = false;
     }
-    bool _e22 = local_12;
-    valid = _e22;
-    bool _e24 = valid;
-    if (_e24) {
-        vec3 _e27 = pos;
-        Glossy _e28 = glossy_at(pix, _e27);
-        g_4 = _e28;
+    bool _e27 = local_12;
+    valid = _e27;
+    bool _e29 = valid;
+    if (_e29) {
+        vec3 _e32 = pos;
+        Glossy _e33 = glossy_at(pix, _e32);
+        g_4 = _e33;
     }
-    vec3 _e30 = pos;
-    bool _e32 = valid;
-    WorkgroupBox _e33 = workgroup_box(li_3, _e30, _e32);
-    return _e33;
+    vec3 _e35 = pos;
+    bool _e37 = valid;
+    WorkgroupBox _e38 = workgroup_box(li_3, _e35, _e37);
+    return _e38;
 }
 
 void shade_light(uint j) {
@@ -789,8 +795,11 @@ void main() {
         vec3 _e73 = e;
         uint _e75 = kept;
         _group_0_binding_8_cs[pix_1] = vec4(_e73, float(_e75));
-        vec3 _e81 = s;
-        _group_0_binding_10_cs[pix_1] = vec4(_e81, 0.0);
+        vec3 _e81 = nrm;
+        float _e83 = eye_distance;
+        _group_0_binding_9_cs[pix_1] = vec4(_e81, _e83);
+        vec3 _e88 = s;
+        _group_0_binding_11_cs[pix_1] = vec4(_e88, 0.0);
         return;
     } else {
         return;

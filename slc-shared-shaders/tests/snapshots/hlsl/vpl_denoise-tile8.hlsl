@@ -15,26 +15,6 @@ struct VplParams {
     uint4 near_grid;
 };
 
-struct ViewParams {
-    float4 c0_;
-    float4 c1_;
-    float4 c2_;
-    float4 c3_;
-    float3 eye;
-    uint width;
-    uint height;
-    float shadow_offset;
-    uint seed;
-    uint frame;
-    float3 f0_d;
-    float f90_d;
-};
-
-struct GbTexel {
-    float4 position;
-    float4 normal;
-};
-
 struct Window {
     float3 sum;
     float weight;
@@ -114,11 +94,9 @@ static const float TEMPORAL_MIN_WEIGHT = 0.01;
 static const uint PERIOD = 8u;
 
 cbuffer params : register(b0) { VplParams params; }
-cbuffer view : register(b1) { ViewParams view; }
-Texture2D<float4> position_tex : register(t2);
-Texture2D<float4> normal_tex : register(t3);
-ByteAddressBuffer irradiance : register(t4);
-RWByteAddressBuffer filtered : register(u5);
+ByteAddressBuffer guide : register(t1);
+ByteAddressBuffer irradiance : register(t2);
+RWByteAddressBuffer filtered : register(u3);
 
 float inv_sigma_z(float z)
 {
@@ -167,48 +145,6 @@ float bilateral_weight(float3 n, float3 nj, float z_1, float zj, float inv_sz)
     float d = ((zj - z_1) * inv_sz);
     float t = max((1.0 - (d * d)), 0.0);
     return (((dn8_ * dn8_) * t) * t);
-}
-
-float4 surface_at(int2 texel)
-{
-    float4 p = position_tex.Load(int3(texel, int(0)));
-    return ((p.w > 0.0) ? float4(p.xyz, 1.0) : (0.0).xxxx);
-}
-
-uint naga_mod(uint lhs, uint rhs) {
-    return lhs % (rhs == 0u ? 1u : rhs);
-}
-
-GbTexel ConstructGbTexel(float4 arg0, float4 arg1) {
-    GbTexel ret = (GbTexel)0;
-    ret.position = arg0;
-    ret.normal = arg1;
-    return ret;
-}
-
-GbTexel gbuffer_at(uint i)
-{
-    bool local_1 = (bool)0;
-
-    uint _e3 = view.width;
-    uint _e8 = view.width;
-    int2 texel_1 = int2(int(naga_mod(i, _e3)), int(naga_div(i, _e8)));
-    const float4 _e12 = surface_at(texel_1);
-    float4 _e15 = normal_tex.Load(int3(texel_1, int(0)));
-    float3 n_2 = _e15.xyz;
-    float len2_ = dot(n_2, n_2);
-    if ((_e12.w > 0.0)) {
-        local_1 = (len2_ > 0.0);
-    } else {
-        local_1 = false;
-    }
-    bool valid = local_1;
-    float3 _e30 = view.eye;
-    float3 v = (_e12.xyz - _e30);
-    float4 position = float4(_e12.xyz, (valid ? 1.0 : 0.0));
-    float4 normal = (valid ? float4((n_2 / (sqrt(len2_)).xxx), sqrt(dot(v, v))) : float4(0.0, 0.0, 0.0, 1e30));
-    const GbTexel gbtexel = ConstructGbTexel(position, normal);
-    return gbtexel;
 }
 
 Window window_sum(uint x_2, uint y, uint size_2, float3 n_1, float z_2, float inv)
@@ -263,8 +199,8 @@ Window window_sum(uint x_2, uint y, uint size_2, float3 n_1, float z_2, float in
                     uint _e30 = yy;
                     uint _e32 = xx;
                     uint j = ((_e30 * w) + _e32);
-                    const GbTexel _e34 = gbuffer_at(j);
-                    const float _e39 = bilateral_weight(n_1, _e34.normal.xyz, z_2, _e34.normal.w, inv);
+                    float4 g = asfloat(guide.Load4(j*16));
+                    const float _e39 = bilateral_weight(n_1, g.xyz, z_2, g.w, inv);
                     float3 _e41 = win.sum;
                     float4 _e44 = asfloat(irradiance.Load4(j*16));
                     win.sum = (_e41 + (_e44.xyz * _e39));
@@ -298,28 +234,28 @@ void main(uint3 gid : SV_DispatchThreadID)
     if (_e15) {
         return;
     }
-    uint i_1 = ((gid.y * w_1) + gid.x);
-    float4 e_1 = asfloat(irradiance.Load4(i_1*16));
-    const GbTexel _e23 = gbuffer_at(i_1);
-    if ((_e23.position.w <= 0.0)) {
-        filtered.Store4(i_1*16, asuint(float4(0.0, 0.0, 0.0, e_1.w)));
+    uint i = ((gid.y * w_1) + gid.x);
+    float4 e_1 = asfloat(irradiance.Load4(i*16));
+    float4 g_1 = asfloat(guide.Load4(i*16));
+    if (all((g_1.xyz == (0.0).xxx))) {
+        filtered.Store4(i*16, asuint(float4(0.0, 0.0, 0.0, e_1.w)));
         return;
     }
-    float3 n_3 = _e23.normal.xyz;
-    float z_3 = _e23.normal.w;
-    const float _e39 = inv_sigma_z(z_3);
-    const Window _e43 = window_sum(gid.x, gid.y, PERIOD, n_3, z_3, _e39);
-    s = _e43;
-    uint _e46 = s.covered;
-    const bool _e48 = misses_subset(_e46, PERIOD);
-    if (_e48) {
-        const uint _e52 = wide_window(PERIOD);
-        const Window _e53 = window_sum(gid.x, gid.y, _e52, n_3, z_3, _e39);
-        s = _e53;
+    float3 n_2 = g_1.xyz;
+    float z_3 = g_1.w;
+    const float _e40 = inv_sigma_z(z_3);
+    const Window _e44 = window_sum(gid.x, gid.y, PERIOD, n_2, z_3, _e40);
+    s = _e44;
+    uint _e47 = s.covered;
+    const bool _e49 = misses_subset(_e47, PERIOD);
+    if (_e49) {
+        const uint _e53 = wide_window(PERIOD);
+        const Window _e54 = window_sum(gid.x, gid.y, _e53, n_2, z_3, _e40);
+        s = _e54;
     }
-    float3 _e58 = s.sum;
-    float _e60 = s.weight;
-    const float3 _e61 = filtered_irradiance(e_1.xyz, _e58, _e60);
-    filtered.Store4(i_1*16, asuint(float4(_e61, e_1.w)));
+    float3 _e59 = s.sum;
+    float _e61 = s.weight;
+    const float3 _e62 = filtered_irradiance(e_1.xyz, _e59, _e61);
+    filtered.Store4(i*16, asuint(float4(_e62, e_1.w)));
     return;
 }

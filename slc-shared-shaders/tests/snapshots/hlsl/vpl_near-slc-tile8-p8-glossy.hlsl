@@ -168,6 +168,7 @@ ByteAddressBuffer materials : register(t10);
 RWByteAddressBuffer specular : register(u11);
 static float3 pos = (float3)0;
 static float3 nrm = (float3)0;
+static float eye_distance = (float)0;
 static bool valid = (bool)0;
 static float3 e = (float3)0;
 static uint kept = (uint)0;
@@ -646,31 +647,33 @@ WorkgroupBox load_receiver(uint li_3, uint pix, bool inside)
     float4 p_2 = (0.0).xxxx;
     bool local_12 = (bool)0;
 
+    eye_distance = DEPTH_NONE;
     if (inside) {
-        const GbTexel _e6 = gbuffer_at(pix);
-        p_2 = _e6.position;
-        nrm = _e6.normal.xyz;
+        const GbTexel _e8 = gbuffer_at(pix);
+        p_2 = _e8.position;
+        nrm = _e8.normal.xyz;
+        eye_distance = _e8.normal.w;
     }
-    float4 _e12 = p_2;
-    pos = _e12.xyz;
+    float4 _e17 = p_2;
+    pos = _e17.xyz;
     if (inside) {
-        float _e18 = p_2.w;
-        local_12 = (_e18 > 0.0);
+        float _e23 = p_2.w;
+        local_12 = (_e23 > 0.0);
     } else {
         local_12 = false;
     }
-    bool _e22 = local_12;
-    valid = _e22;
-    bool _e24 = valid;
-    if (_e24) {
-        float3 _e27 = pos;
-        const Glossy _e28 = glossy_at(pix, _e27);
-        g_4 = _e28;
+    bool _e27 = local_12;
+    valid = _e27;
+    bool _e29 = valid;
+    if (_e29) {
+        float3 _e32 = pos;
+        const Glossy _e33 = glossy_at(pix, _e32);
+        g_4 = _e33;
     }
-    float3 _e30 = pos;
-    bool _e32 = valid;
-    const WorkgroupBox _e33 = workgroup_box(li_3, _e30, _e32);
-    const WorkgroupBox workgroupbox_3 = _e33;
+    float3 _e35 = pos;
+    bool _e37 = valid;
+    const WorkgroupBox _e38 = workgroup_box(li_3, _e35, _e37);
+    const WorkgroupBox workgroupbox_3 = _e38;
     return workgroupbox_3;
 }
 

@@ -150,10 +150,12 @@ Texture2D<float4> position_tex : register(t2);
 Texture2D<float4> normal_tex : register(t3);
 ByteAddressBuffer lights : register(t4);
 RWByteAddressBuffer irradiance : register(u8);
-ByteAddressBuffer materials : register(t9);
-RWByteAddressBuffer specular : register(u10);
+RWByteAddressBuffer guide : register(u9);
+ByteAddressBuffer materials : register(t10);
+RWByteAddressBuffer specular : register(u11);
 static float3 pos = (float3)0;
 static float3 nrm = (float3)0;
+static float eye_distance = (float)0;
 static bool valid = (bool)0;
 static float3 e = (float3)0;
 static uint kept = (uint)0;
@@ -492,31 +494,33 @@ WorkgroupBox load_receiver(uint li_3, uint pix, bool inside)
     float4 p_2 = (0.0).xxxx;
     bool local_7 = (bool)0;
 
+    eye_distance = DEPTH_NONE;
     if (inside) {
-        const GbTexel _e6 = gbuffer_at(pix);
-        p_2 = _e6.position;
-        nrm = _e6.normal.xyz;
+        const GbTexel _e8 = gbuffer_at(pix);
+        p_2 = _e8.position;
+        nrm = _e8.normal.xyz;
+        eye_distance = _e8.normal.w;
     }
-    float4 _e12 = p_2;
-    pos = _e12.xyz;
+    float4 _e17 = p_2;
+    pos = _e17.xyz;
     if (inside) {
-        float _e18 = p_2.w;
-        local_7 = (_e18 > 0.0);
+        float _e23 = p_2.w;
+        local_7 = (_e23 > 0.0);
     } else {
         local_7 = false;
     }
-    bool _e22 = local_7;
-    valid = _e22;
-    bool _e24 = valid;
-    if (_e24) {
-        float3 _e27 = pos;
-        const Glossy _e28 = glossy_at(pix, _e27);
-        g_1 = _e28;
+    bool _e27 = local_7;
+    valid = _e27;
+    bool _e29 = valid;
+    if (_e29) {
+        float3 _e32 = pos;
+        const Glossy _e33 = glossy_at(pix, _e32);
+        g_1 = _e33;
     }
-    float3 _e30 = pos;
-    bool _e32 = valid;
-    const WorkgroupBox _e33 = workgroup_box(li_3, _e30, _e32);
-    const WorkgroupBox workgroupbox_3 = _e33;
+    float3 _e35 = pos;
+    bool _e37 = valid;
+    const WorkgroupBox _e38 = workgroup_box(li_3, _e35, _e37);
+    const WorkgroupBox workgroupbox_3 = _e38;
     return workgroupbox_3;
 }
 
@@ -623,8 +627,11 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
         float3 _e76 = e;
         uint _e78 = kept;
         irradiance.Store4(pix_1*16, asuint(float4(_e76, float(_e78))));
-        float3 _e84 = s;
-        specular.Store4(pix_1*16, asuint(float4(_e84, 0.0)));
+        float3 _e84 = nrm;
+        float _e86 = eye_distance;
+        guide.Store4(pix_1*16, asuint(float4(_e84, _e86)));
+        float3 _e91 = s;
+        specular.Store4(pix_1*16, asuint(float4(_e91, 0.0)));
         return;
     } else {
         return;

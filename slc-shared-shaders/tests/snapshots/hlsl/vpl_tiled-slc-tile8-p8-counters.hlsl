@@ -145,10 +145,12 @@ ByteAddressBuffer rt2_2 : register(t5);
 ByteAddressBuffer r2_3 : register(t6);
 ByteAddressBuffer boxes : register(t7);
 RWByteAddressBuffer irradiance : register(u8);
-RWByteAddressBuffer counters : register(u11);
+RWByteAddressBuffer guide : register(u9);
+RWByteAddressBuffer counters : register(u12);
 groupshared uint wg_counts[7];
 static float3 pos = (float3)0;
 static float3 nrm = (float3)0;
+static float eye_distance = (float)0;
 static bool valid = (bool)0;
 static float3 e = (float3)0;
 static uint kept = (uint)0;
@@ -466,30 +468,32 @@ WorkgroupBox load_receiver(uint li_6, uint pix, bool inside)
     float4 p_2 = (0.0).xxxx;
     bool local_7 = (bool)0;
 
+    eye_distance = DEPTH_NONE;
     if (inside) {
-        const GbTexel _e6 = gbuffer_at(pix);
-        p_2 = _e6.position;
-        nrm = _e6.normal.xyz;
+        const GbTexel _e8 = gbuffer_at(pix);
+        p_2 = _e8.position;
+        nrm = _e8.normal.xyz;
+        eye_distance = _e8.normal.w;
     }
-    float4 _e12 = p_2;
-    pos = _e12.xyz;
+    float4 _e17 = p_2;
+    pos = _e17.xyz;
     if (inside) {
-        float _e18 = p_2.w;
-        local_7 = (_e18 > 0.0);
+        float _e23 = p_2.w;
+        local_7 = (_e23 > 0.0);
     } else {
         local_7 = false;
     }
-    bool _e22 = local_7;
-    valid = _e22;
+    bool _e27 = local_7;
+    valid = _e27;
     counts_begin(li_6);
-    bool _e24 = valid;
-    if (_e24) {
+    bool _e29 = valid;
+    if (_e29) {
         count_one(COUNT_PIXELS);
     }
-    float3 _e27 = pos;
-    bool _e29 = valid;
-    const WorkgroupBox _e30 = workgroup_box(li_6, _e27, _e29);
-    const WorkgroupBox workgroupbox_3 = _e30;
+    float3 _e32 = pos;
+    bool _e34 = valid;
+    const WorkgroupBox _e35 = workgroup_box(li_6, _e32, _e34);
+    const WorkgroupBox workgroupbox_3 = _e35;
     return workgroupbox_3;
 }
 
@@ -754,6 +758,9 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
         float3 _e75 = e;
         uint _e77 = kept;
         irradiance.Store4(pix_1*16, asuint(float4(_e75, float(_e77))));
+        float3 _e83 = nrm;
+        float _e85 = eye_distance;
+        guide.Store4(pix_1*16, asuint(float4(_e83, _e85)));
         return;
     } else {
         return;

@@ -145,8 +145,10 @@ ByteAddressBuffer rt2_2 : register(t5);
 ByteAddressBuffer r2_3 : register(t6);
 ByteAddressBuffer boxes : register(t7);
 RWByteAddressBuffer irradiance : register(u8);
+RWByteAddressBuffer guide : register(u9);
 static float3 pos = (float3)0;
 static float3 nrm = (float3)0;
+static float eye_distance = (float)0;
 static bool valid = (bool)0;
 static float3 e = (float3)0;
 static uint kept = (uint)0;
@@ -410,25 +412,27 @@ WorkgroupBox load_receiver(uint li_3, uint pix, bool inside)
     float4 p_2 = (0.0).xxxx;
     bool local_7 = (bool)0;
 
+    eye_distance = DEPTH_NONE;
     if (inside) {
-        const GbTexel _e6 = gbuffer_at(pix);
-        p_2 = _e6.position;
-        nrm = _e6.normal.xyz;
+        const GbTexel _e8 = gbuffer_at(pix);
+        p_2 = _e8.position;
+        nrm = _e8.normal.xyz;
+        eye_distance = _e8.normal.w;
     }
-    float4 _e12 = p_2;
-    pos = _e12.xyz;
+    float4 _e17 = p_2;
+    pos = _e17.xyz;
     if (inside) {
-        float _e18 = p_2.w;
-        local_7 = (_e18 > 0.0);
+        float _e23 = p_2.w;
+        local_7 = (_e23 > 0.0);
     } else {
         local_7 = false;
     }
-    bool _e22 = local_7;
-    valid = _e22;
-    float3 _e24 = pos;
-    bool _e26 = valid;
-    const WorkgroupBox _e27 = workgroup_box(li_3, _e24, _e26);
-    const WorkgroupBox workgroupbox_3 = _e27;
+    bool _e27 = local_7;
+    valid = _e27;
+    float3 _e29 = pos;
+    bool _e31 = valid;
+    const WorkgroupBox _e32 = workgroup_box(li_3, _e29, _e31);
+    const WorkgroupBox workgroupbox_3 = _e32;
     return workgroupbox_3;
 }
 
@@ -675,6 +679,9 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
         float3 _e73 = e;
         uint _e75 = kept;
         irradiance.Store4(pix_1*16, asuint(float4(_e73, float(_e75))));
+        float3 _e81 = nrm;
+        float _e83 = eye_distance;
+        guide.Store4(pix_1*16, asuint(float4(_e81, _e83)));
         return;
     } else {
         return;

@@ -5,8 +5,9 @@
 using metal::uint;
 
 struct _mslBufferSizes {
-    uint size4;
-    uint size5;
+    uint size1;
+    uint size2;
+    uint size3;
 };
 
 struct VplParams {
@@ -25,25 +26,7 @@ struct VplParams {
     metal::uint4 far_grid;
     metal::uint4 near_grid;
 };
-struct ViewParams {
-    metal::float4 c0_;
-    metal::float4 c1_;
-    metal::float4 c2_;
-    metal::float4 c3_;
-    metal::packed_float3 eye;
-    uint width;
-    uint height;
-    float shadow_offset;
-    uint seed;
-    uint frame;
-    metal::packed_float3 f0_d;
-    float f90_d;
-};
-typedef metal::float4 type_7[1];
-struct GbTexel {
-    metal::float4 position;
-    metal::float4 normal;
-};
+typedef metal::float4 type_6[1];
 struct Window {
     metal::packed_float3 sum;
     float weight;
@@ -185,45 +168,6 @@ float bilateral_weight(
     return ((dn8_ * dn8_) * t) * t;
 }
 
-metal::float4 surface_at(
-    metal::int2 texel,
-    metal::texture2d<float, metal::access::sample> position_tex
-) {
-    metal::float4 p = position_tex.read(metal::uint2(texel), 0);
-    return (p.w > 0.0) ? metal::float4(p.xyz, 1.0) : metal::float4(0.0);
-}
-
-uint naga_mod(uint lhs, uint rhs) {
-    return lhs % metal::select(rhs, 1u, rhs == 0u);
-}
-
-GbTexel gbuffer_at(
-    uint i,
-    constant ViewParams& view,
-    metal::texture2d<float, metal::access::sample> position_tex,
-    metal::texture2d<float, metal::access::sample> normal_tex
-) {
-    bool local_1 = {};
-    uint _e3 = view.width;
-    uint _e8 = view.width;
-    metal::int2 texel_1 = metal::int2(static_cast<int>(naga_mod(i, _e3)), static_cast<int>(naga_div(i, _e8)));
-    metal::float4 _e12 = surface_at(texel_1, position_tex);
-    metal::float4 _e15 = normal_tex.read(metal::uint2(texel_1), 0);
-    metal::float3 n_2 = _e15.xyz;
-    float len2_ = metal::dot(n_2, n_2);
-    if (_e12.w > 0.0) {
-        local_1 = len2_ > 0.0;
-    } else {
-        local_1 = false;
-    }
-    bool valid = local_1;
-    metal::float3 _e30 = view.eye;
-    metal::float3 v = _e12.xyz - _e30;
-    metal::float4 position = metal::float4(_e12.xyz, valid ? 1.0 : 0.0);
-    metal::float4 normal = valid ? metal::float4(n_2 / metal::float3(metal::sqrt(len2_)), metal::sqrt(metal::dot(v, v))) : metal::float4(0.0, 0.0, 0.0, 1000000000000000000000000000000.0);
-    return GbTexel {position, normal};
-}
-
 Window window_sum(
     uint x_2,
     uint y,
@@ -232,10 +176,8 @@ Window window_sum(
     float z_2,
     float inv,
     constant VplParams& params,
-    constant ViewParams& view,
-    metal::texture2d<float, metal::access::sample> position_tex,
-    metal::texture2d<float, metal::access::sample> normal_tex,
-    device type_7 const& irradiance,
+    device type_6 const& guide,
+    device type_6 const& irradiance,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Window win = {};
@@ -287,8 +229,8 @@ Window window_sum(
                     uint _e30 = yy;
                     uint _e32 = xx;
                     uint j = (_e30 * w) + _e32;
-                    GbTexel _e34 = gbuffer_at(j, view, position_tex, normal_tex);
-                    float _e39 = bilateral_weight(n_1, _e34.normal.xyz, z_2, _e34.normal.w, inv);
+                    metal::float4 g = guide[j];
+                    float _e39 = bilateral_weight(n_1, g.xyz, z_2, g.w, inv);
                     metal::float3 _e41 = win.sum;
                     metal::float4 _e44 = irradiance[j];
                     win.sum = _e41 + (_e44.xyz * _e39);
@@ -309,11 +251,9 @@ struct main_Input {
 kernel void main_(
   metal::uint3 gid [[thread_position_in_grid]]
 , constant VplParams& params [[user(fake0)]]
-, constant ViewParams& view [[user(fake0)]]
-, metal::texture2d<float, metal::access::sample> position_tex [[user(fake0)]]
-, metal::texture2d<float, metal::access::sample> normal_tex [[user(fake0)]]
-, device type_7 const& irradiance [[user(fake0)]]
-, device type_7& filtered [[user(fake0)]]
+, device type_6 const& guide [[user(fake0)]]
+, device type_6 const& irradiance [[user(fake0)]]
+, device type_6& filtered [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
     bool local = {};
@@ -329,28 +269,28 @@ kernel void main_(
     if (_e15) {
         return;
     }
-    uint i_1 = (gid.y * w_1) + gid.x;
-    metal::float4 e_1 = irradiance[i_1];
-    GbTexel _e23 = gbuffer_at(i_1, view, position_tex, normal_tex);
-    if (_e23.position.w <= 0.0) {
-        filtered[i_1] = metal::float4(0.0, 0.0, 0.0, e_1.w);
+    uint i = (gid.y * w_1) + gid.x;
+    metal::float4 e_1 = irradiance[i];
+    metal::float4 g_1 = guide[i];
+    if (metal::all(g_1.xyz == metal::float3(0.0))) {
+        filtered[i] = metal::float4(0.0, 0.0, 0.0, e_1.w);
         return;
     }
-    metal::float3 n_3 = _e23.normal.xyz;
-    float z_3 = _e23.normal.w;
-    float _e39 = inv_sigma_z(z_3);
-    Window _e43 = window_sum(gid.x, gid.y, PERIOD, n_3, z_3, _e39, params, view, position_tex, normal_tex, irradiance, _buffer_sizes);
-    s = _e43;
-    uint _e46 = s.covered;
-    bool _e48 = misses_subset(_e46, PERIOD);
-    if (_e48) {
-        uint _e52 = wide_window(PERIOD);
-        Window _e53 = window_sum(gid.x, gid.y, _e52, n_3, z_3, _e39, params, view, position_tex, normal_tex, irradiance, _buffer_sizes);
-        s = _e53;
+    metal::float3 n_2 = g_1.xyz;
+    float z_3 = g_1.w;
+    float _e40 = inv_sigma_z(z_3);
+    Window _e44 = window_sum(gid.x, gid.y, PERIOD, n_2, z_3, _e40, params, guide, irradiance, _buffer_sizes);
+    s = _e44;
+    uint _e47 = s.covered;
+    bool _e49 = misses_subset(_e47, PERIOD);
+    if (_e49) {
+        uint _e53 = wide_window(PERIOD);
+        Window _e54 = window_sum(gid.x, gid.y, _e53, n_2, z_3, _e40, params, guide, irradiance, _buffer_sizes);
+        s = _e54;
     }
-    metal::float3 _e58 = s.sum;
-    float _e60 = s.weight;
-    metal::float3 _e61 = filtered_irradiance(e_1.xyz, _e58, _e60);
-    filtered[i_1] = metal::float4(_e61, e_1.w);
+    metal::float3 _e59 = s.sum;
+    float _e61 = s.weight;
+    metal::float3 _e62 = filtered_irradiance(e_1.xyz, _e59, _e61);
+    filtered[i] = metal::float4(_e62, e_1.w);
     return;
 }

@@ -477,29 +477,32 @@ WorkgroupBox load_receiver(
     metal::texture2d<float, metal::access::sample> normal_tex,
     thread metal::float3& pos,
     thread metal::float3& nrm,
+    thread float& eye_distance,
     thread bool& valid
 ) {
     metal::float4 p_2 = metal::float4(0.0);
     bool local_7 = {};
+    eye_distance = DEPTH_NONE;
     if (inside) {
-        GbTexel _e6 = gbuffer_at(pix, view, position_tex, normal_tex);
-        p_2 = _e6.position;
-        nrm = _e6.normal.xyz;
+        GbTexel _e8 = gbuffer_at(pix, view, position_tex, normal_tex);
+        p_2 = _e8.position;
+        nrm = _e8.normal.xyz;
+        eye_distance = _e8.normal.w;
     }
-    metal::float4 _e12 = p_2;
-    pos = _e12.xyz;
+    metal::float4 _e17 = p_2;
+    pos = _e17.xyz;
     if (inside) {
-        float _e18 = p_2.w;
-        local_7 = _e18 > 0.0;
+        float _e23 = p_2.w;
+        local_7 = _e23 > 0.0;
     } else {
         local_7 = false;
     }
-    bool _e22 = local_7;
-    valid = _e22;
-    metal::float3 _e24 = pos;
-    bool _e26 = valid;
-    WorkgroupBox _e27 = workgroup_box(li_3, _e24, _e26, wg_lo, wg_hi, wg_box);
-    return _e27;
+    bool _e27 = local_7;
+    valid = _e27;
+    metal::float3 _e29 = pos;
+    bool _e31 = valid;
+    WorkgroupBox _e32 = workgroup_box(li_3, _e29, _e31, wg_lo, wg_hi, wg_box);
+    return _e32;
 }
 
 uint cluster_slot(
@@ -858,6 +861,7 @@ kernel void main_(
 ) {
     metal::float3 pos = {};
     metal::float3 nrm = {};
+    float eye_distance = {};
     bool valid = {};
     metal::float3 e = {};
     uint kept = {};
@@ -887,7 +891,7 @@ kernel void main_(
     bool inside_1 = local;
     uint _e27 = params.width;
     uint pix_1 = (py * _e27) + px;
-    WorkgroupBox _e30 = load_receiver(li, pix_1, inside_1, wg_lo, wg_hi, wg_box, view, position_tex, normal_tex, pos, nrm, valid);
+    WorkgroupBox _e30 = load_receiver(li, pix_1, inside_1, wg_lo, wg_hi, wg_box, view, position_tex, normal_tex, pos, nrm, eye_distance, valid);
     bool _e31 = box_is_empty(_e30);
     if (!(_e31)) {
         quarter_boxes(li, lid, wg_lo, wg_hi, pos, valid, quarter_lo, quarter_hi, quarter_bit);

@@ -741,37 +741,40 @@ WorkgroupBox load_receiver(
     device type_13 const& materials,
     thread metal::float3& pos,
     thread metal::float3& nrm,
+    thread float& eye_distance,
     thread bool& valid,
     thread Glossy& g_4,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float4 p_2 = metal::float4(0.0);
     bool local_12 = {};
+    eye_distance = DEPTH_NONE;
     if (inside) {
-        GbTexel _e6 = gbuffer_at(pix, view, position_tex, normal_tex);
-        p_2 = _e6.position;
-        nrm = _e6.normal.xyz;
+        GbTexel _e8 = gbuffer_at(pix, view, position_tex, normal_tex);
+        p_2 = _e8.position;
+        nrm = _e8.normal.xyz;
+        eye_distance = _e8.normal.w;
     }
-    metal::float4 _e12 = p_2;
-    pos = _e12.xyz;
+    metal::float4 _e17 = p_2;
+    pos = _e17.xyz;
     if (inside) {
-        float _e18 = p_2.w;
-        local_12 = _e18 > 0.0;
+        float _e23 = p_2.w;
+        local_12 = _e23 > 0.0;
     } else {
         local_12 = false;
     }
-    bool _e22 = local_12;
-    valid = _e22;
-    bool _e24 = valid;
-    if (_e24) {
-        metal::float3 _e27 = pos;
-        Glossy _e28 = glossy_at(pix, _e27, view, normal_tex, materials, _buffer_sizes);
-        g_4 = _e28;
+    bool _e27 = local_12;
+    valid = _e27;
+    bool _e29 = valid;
+    if (_e29) {
+        metal::float3 _e32 = pos;
+        Glossy _e33 = glossy_at(pix, _e32, view, normal_tex, materials, _buffer_sizes);
+        g_4 = _e33;
     }
-    metal::float3 _e30 = pos;
-    bool _e32 = valid;
-    WorkgroupBox _e33 = workgroup_box(li_3, _e30, _e32, wg_lo, wg_hi, wg_box);
-    return _e33;
+    metal::float3 _e35 = pos;
+    bool _e37 = valid;
+    WorkgroupBox _e38 = workgroup_box(li_3, _e35, _e37, wg_lo, wg_hi, wg_box);
+    return _e38;
 }
 
 uint cluster_slot(
@@ -1146,6 +1149,7 @@ kernel void main_(
 ) {
     metal::float3 pos = {};
     metal::float3 nrm = {};
+    float eye_distance = {};
     bool valid = {};
     metal::float3 e = {};
     uint kept = {};
@@ -1177,7 +1181,7 @@ kernel void main_(
     bool inside_1 = local;
     uint _e27 = params.width;
     uint pix_1 = (py * _e27) + px;
-    WorkgroupBox _e30 = load_receiver(li, pix_1, inside_1, wg_lo, wg_hi, wg_box, view, position_tex, normal_tex, materials, pos, nrm, valid, g_4, _buffer_sizes);
+    WorkgroupBox _e30 = load_receiver(li, pix_1, inside_1, wg_lo, wg_hi, wg_box, view, position_tex, normal_tex, materials, pos, nrm, eye_distance, valid, g_4, _buffer_sizes);
     bool _e31 = box_is_empty(_e30);
     if (!(_e31)) {
         quarter_boxes(li, lid, wg_lo, wg_hi, pos, valid, quarter_lo, quarter_hi, quarter_bit);

@@ -9,6 +9,7 @@ struct _mslBufferSizes {
     uint size8;
     uint size9;
     uint size10;
+    uint size11;
 };
 
 struct GpuLight {
@@ -445,29 +446,32 @@ WorkgroupBox load_receiver(
     metal::texture2d<float, metal::access::sample> normal_tex,
     thread metal::float3& pos,
     thread metal::float3& nrm,
+    thread float& eye_distance,
     thread bool& valid
 ) {
     metal::float4 p_2 = metal::float4(0.0);
     bool local_7 = {};
+    eye_distance = DEPTH_NONE;
     if (inside) {
-        GbTexel _e6 = gbuffer_at(pix, view, position_tex, normal_tex);
-        p_2 = _e6.position;
-        nrm = _e6.normal.xyz;
+        GbTexel _e8 = gbuffer_at(pix, view, position_tex, normal_tex);
+        p_2 = _e8.position;
+        nrm = _e8.normal.xyz;
+        eye_distance = _e8.normal.w;
     }
-    metal::float4 _e12 = p_2;
-    pos = _e12.xyz;
+    metal::float4 _e17 = p_2;
+    pos = _e17.xyz;
     if (inside) {
-        float _e18 = p_2.w;
-        local_7 = _e18 > 0.0;
+        float _e23 = p_2.w;
+        local_7 = _e23 > 0.0;
     } else {
         local_7 = false;
     }
-    bool _e22 = local_7;
-    valid = _e22;
-    metal::float3 _e24 = pos;
-    bool _e26 = valid;
-    WorkgroupBox _e27 = workgroup_box(li_3, _e24, _e26, wg_lo, wg_hi, wg_box);
-    return _e27;
+    bool _e27 = local_7;
+    valid = _e27;
+    metal::float3 _e29 = pos;
+    bool _e31 = valid;
+    WorkgroupBox _e32 = workgroup_box(li_3, _e29, _e31, wg_lo, wg_hi, wg_box);
+    return _e32;
 }
 
 void shade_light(
@@ -710,6 +714,7 @@ kernel void main_(
 , device type_5 const& r2_1 [[user(fake0)]]
 , device type_10 const& boxes [[user(fake0)]]
 , device type_11& irradiance [[user(fake0)]]
+, device type_11& guide [[user(fake0)]]
 , threadgroup type_13& tile_lights
 , threadgroup metal::atomic_uint& list_count
 , threadgroup type_15& cluster_hits
@@ -718,6 +723,7 @@ kernel void main_(
 ) {
     metal::float3 pos = {};
     metal::float3 nrm = {};
+    float eye_distance = {};
     bool valid = {};
     metal::float3 e = {};
     uint kept = {};
@@ -745,7 +751,7 @@ kernel void main_(
     bool inside_1 = local;
     uint _e38 = params.width;
     uint pix_1 = (py * _e38) + px;
-    WorkgroupBox _e41 = load_receiver(li, pix_1, inside_1, wg_lo, wg_hi, wg_box, view, position_tex, normal_tex, pos, nrm, valid);
+    WorkgroupBox _e41 = load_receiver(li, pix_1, inside_1, wg_lo, wg_hi, wg_box, view, position_tex, normal_tex, pos, nrm, eye_distance, valid);
     uint _e44 = params.subset_shift;
     uint _e46 = shifted_subset(sub, _e44, P);
     bool _e47 = box_is_empty(_e41);
@@ -760,6 +766,9 @@ kernel void main_(
         metal::float3 _e73 = e;
         uint _e75 = kept;
         irradiance[pix_1] = metal::float4(_e73, static_cast<float>(_e75));
+        metal::float3 _e81 = nrm;
+        float _e83 = eye_distance;
+        guide[pix_1] = metal::float4(_e81, _e83);
         return;
     } else {
         return;

@@ -9,6 +9,7 @@ struct _mslBufferSizes {
     uint size8;
     uint size9;
     uint size10;
+    uint size11;
 };
 
 struct GpuLight {
@@ -542,37 +543,40 @@ WorkgroupBox load_receiver(
     device type_10 const& materials,
     thread metal::float3& pos,
     thread metal::float3& nrm,
+    thread float& eye_distance,
     thread bool& valid,
     thread Glossy& g_1,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float4 p_2 = metal::float4(0.0);
     bool local_7 = {};
+    eye_distance = DEPTH_NONE;
     if (inside) {
-        GbTexel _e6 = gbuffer_at(pix, view, position_tex, normal_tex);
-        p_2 = _e6.position;
-        nrm = _e6.normal.xyz;
+        GbTexel _e8 = gbuffer_at(pix, view, position_tex, normal_tex);
+        p_2 = _e8.position;
+        nrm = _e8.normal.xyz;
+        eye_distance = _e8.normal.w;
     }
-    metal::float4 _e12 = p_2;
-    pos = _e12.xyz;
+    metal::float4 _e17 = p_2;
+    pos = _e17.xyz;
     if (inside) {
-        float _e18 = p_2.w;
-        local_7 = _e18 > 0.0;
+        float _e23 = p_2.w;
+        local_7 = _e23 > 0.0;
     } else {
         local_7 = false;
     }
-    bool _e22 = local_7;
-    valid = _e22;
-    bool _e24 = valid;
-    if (_e24) {
-        metal::float3 _e27 = pos;
-        Glossy _e28 = glossy_at(pix, _e27, view, normal_tex, materials, _buffer_sizes);
-        g_1 = _e28;
+    bool _e27 = local_7;
+    valid = _e27;
+    bool _e29 = valid;
+    if (_e29) {
+        metal::float3 _e32 = pos;
+        Glossy _e33 = glossy_at(pix, _e32, view, normal_tex, materials, _buffer_sizes);
+        g_1 = _e33;
     }
-    metal::float3 _e30 = pos;
-    bool _e32 = valid;
-    WorkgroupBox _e33 = workgroup_box(li_3, _e30, _e32, wg_lo, wg_hi, wg_box);
-    return _e33;
+    metal::float3 _e35 = pos;
+    bool _e37 = valid;
+    WorkgroupBox _e38 = workgroup_box(li_3, _e35, _e37, wg_lo, wg_hi, wg_box);
+    return _e38;
 }
 
 void shade_light(
@@ -627,12 +631,14 @@ kernel void main_(
 , metal::texture2d<float, metal::access::sample> normal_tex [[user(fake0)]]
 , device type_8 const& lights [[user(fake0)]]
 , device type_9& irradiance [[user(fake0)]]
+, device type_9& guide [[user(fake0)]]
 , device type_10 const& materials [[user(fake0)]]
 , device type_9& specular [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
     metal::float3 pos = {};
     metal::float3 nrm = {};
+    float eye_distance = {};
     bool valid = {};
     metal::float3 e = {};
     uint kept = {};
@@ -659,7 +665,7 @@ kernel void main_(
     bool inside_1 = local;
     uint _e38 = params.width;
     uint pix_1 = (py * _e38) + px;
-    WorkgroupBox _e41 = load_receiver(li, pix_1, inside_1, wg_lo, wg_hi, wg_box, view, position_tex, normal_tex, materials, pos, nrm, valid, g_1, _buffer_sizes);
+    WorkgroupBox _e41 = load_receiver(li, pix_1, inside_1, wg_lo, wg_hi, wg_box, view, position_tex, normal_tex, materials, pos, nrm, eye_distance, valid, g_1, _buffer_sizes);
     uint _e44 = params.subset_shift;
     uint _e46 = shifted_subset(sub, _e44, P);
     bool _e48 = valid;
@@ -697,8 +703,11 @@ kernel void main_(
         metal::float3 _e76 = e;
         uint _e78 = kept;
         irradiance[pix_1] = metal::float4(_e76, static_cast<float>(_e78));
-        metal::float3 _e84 = s;
-        specular[pix_1] = metal::float4(_e84, 0.0);
+        metal::float3 _e84 = nrm;
+        float _e86 = eye_distance;
+        guide[pix_1] = metal::float4(_e84, _e86);
+        metal::float3 _e91 = s;
+        specular[pix_1] = metal::float4(_e91, 0.0);
         return;
     } else {
         return;

@@ -11,6 +11,7 @@ struct _mslBufferSizes {
     uint size10;
     uint size11;
     uint size12;
+    uint size13;
 };
 
 struct GpuLight {
@@ -537,34 +538,37 @@ WorkgroupBox load_receiver(
     threadgroup type_15& wg_counts,
     thread metal::float3& pos,
     thread metal::float3& nrm,
+    thread float& eye_distance,
     thread bool& valid
 ) {
     metal::float4 p_2 = metal::float4(0.0);
     bool local_7 = {};
+    eye_distance = DEPTH_NONE;
     if (inside) {
-        GbTexel _e6 = gbuffer_at(pix, view, position_tex, normal_tex);
-        p_2 = _e6.position;
-        nrm = _e6.normal.xyz;
+        GbTexel _e8 = gbuffer_at(pix, view, position_tex, normal_tex);
+        p_2 = _e8.position;
+        nrm = _e8.normal.xyz;
+        eye_distance = _e8.normal.w;
     }
-    metal::float4 _e12 = p_2;
-    pos = _e12.xyz;
+    metal::float4 _e17 = p_2;
+    pos = _e17.xyz;
     if (inside) {
-        float _e18 = p_2.w;
-        local_7 = _e18 > 0.0;
+        float _e23 = p_2.w;
+        local_7 = _e23 > 0.0;
     } else {
         local_7 = false;
     }
-    bool _e22 = local_7;
-    valid = _e22;
+    bool _e27 = local_7;
+    valid = _e27;
     counts_begin(li_6, wg_counts);
-    bool _e24 = valid;
-    if (_e24) {
+    bool _e29 = valid;
+    if (_e29) {
         count_one(COUNT_PIXELS, wg_counts);
     }
-    metal::float3 _e27 = pos;
-    bool _e29 = valid;
-    WorkgroupBox _e30 = workgroup_box(li_6, _e27, _e29, wg_lo, wg_hi, wg_box);
-    return _e30;
+    metal::float3 _e32 = pos;
+    bool _e34 = valid;
+    WorkgroupBox _e35 = workgroup_box(li_6, _e32, _e34, wg_lo, wg_hi, wg_box);
+    return _e35;
 }
 
 void count_receiver(
@@ -835,6 +839,7 @@ kernel void main_(
 , device type_5 const& r2_3 [[user(fake0)]]
 , device type_10 const& boxes [[user(fake0)]]
 , device type_11& irradiance [[user(fake0)]]
+, device type_11& guide [[user(fake0)]]
 , device type_13& counters [[user(fake0)]]
 , threadgroup type_15& wg_counts
 , threadgroup type_16& tile_lights
@@ -845,6 +850,7 @@ kernel void main_(
 ) {
     metal::float3 pos = {};
     metal::float3 nrm = {};
+    float eye_distance = {};
     bool valid = {};
     metal::float3 e = {};
     uint kept = {};
@@ -875,7 +881,7 @@ kernel void main_(
     bool inside_1 = local;
     uint _e38 = params.width;
     uint pix_1 = (py * _e38) + px;
-    WorkgroupBox _e41 = load_receiver(li, pix_1, inside_1, wg_lo, wg_hi, wg_box, view, position_tex, normal_tex, wg_counts, pos, nrm, valid);
+    WorkgroupBox _e41 = load_receiver(li, pix_1, inside_1, wg_lo, wg_hi, wg_box, view, position_tex, normal_tex, wg_counts, pos, nrm, eye_distance, valid);
     uint _e44 = params.subset_shift;
     uint _e46 = shifted_subset(sub, _e44, P);
     bool _e47 = box_is_empty(_e41);
@@ -892,6 +898,9 @@ kernel void main_(
         metal::float3 _e75 = e;
         uint _e77 = kept;
         irradiance[pix_1] = metal::float4(_e75, static_cast<float>(_e77));
+        metal::float3 _e83 = nrm;
+        float _e85 = eye_distance;
+        guide[pix_1] = metal::float4(_e83, _e85);
         return;
     } else {
         return;

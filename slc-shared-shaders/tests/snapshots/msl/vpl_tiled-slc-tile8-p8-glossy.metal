@@ -12,6 +12,7 @@ struct _mslBufferSizes {
     uint size11;
     uint size12;
     uint size13;
+    uint size14;
 };
 
 struct GpuLight {
@@ -700,37 +701,40 @@ WorkgroupBox load_receiver(
     device type_12 const& materials,
     thread metal::float3& pos,
     thread metal::float3& nrm,
+    thread float& eye_distance,
     thread bool& valid,
     thread Glossy& g_4,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float4 p_2 = metal::float4(0.0);
     bool local_12 = {};
+    eye_distance = DEPTH_NONE;
     if (inside) {
-        GbTexel _e6 = gbuffer_at(pix, view, position_tex, normal_tex);
-        p_2 = _e6.position;
-        nrm = _e6.normal.xyz;
+        GbTexel _e8 = gbuffer_at(pix, view, position_tex, normal_tex);
+        p_2 = _e8.position;
+        nrm = _e8.normal.xyz;
+        eye_distance = _e8.normal.w;
     }
-    metal::float4 _e12 = p_2;
-    pos = _e12.xyz;
+    metal::float4 _e17 = p_2;
+    pos = _e17.xyz;
     if (inside) {
-        float _e18 = p_2.w;
-        local_12 = _e18 > 0.0;
+        float _e23 = p_2.w;
+        local_12 = _e23 > 0.0;
     } else {
         local_12 = false;
     }
-    bool _e22 = local_12;
-    valid = _e22;
-    bool _e24 = valid;
-    if (_e24) {
-        metal::float3 _e27 = pos;
-        Glossy _e28 = glossy_at(pix, _e27, view, normal_tex, materials, _buffer_sizes);
-        g_4 = _e28;
+    bool _e27 = local_12;
+    valid = _e27;
+    bool _e29 = valid;
+    if (_e29) {
+        metal::float3 _e32 = pos;
+        Glossy _e33 = glossy_at(pix, _e32, view, normal_tex, materials, _buffer_sizes);
+        g_4 = _e33;
     }
-    metal::float3 _e30 = pos;
-    bool _e32 = valid;
-    WorkgroupBox _e33 = workgroup_box(li_3, _e30, _e32, wg_lo, wg_hi, wg_box);
-    return _e33;
+    metal::float3 _e35 = pos;
+    bool _e37 = valid;
+    WorkgroupBox _e38 = workgroup_box(li_3, _e35, _e37, wg_lo, wg_hi, wg_box);
+    return _e38;
 }
 
 void shade_light(
@@ -989,6 +993,7 @@ kernel void main_(
 , device type_5 const& r2_3 [[user(fake0)]]
 , device type_10 const& boxes [[user(fake0)]]
 , device type_11& irradiance [[user(fake0)]]
+, device type_11& guide [[user(fake0)]]
 , device type_12 const& materials [[user(fake0)]]
 , device type_11& specular [[user(fake0)]]
 , threadgroup type_14& tile_lights
@@ -999,6 +1004,7 @@ kernel void main_(
 ) {
     metal::float3 pos = {};
     metal::float3 nrm = {};
+    float eye_distance = {};
     bool valid = {};
     metal::float3 e = {};
     uint kept = {};
@@ -1028,7 +1034,7 @@ kernel void main_(
     bool inside_1 = local;
     uint _e38 = params.width;
     uint pix_1 = (py * _e38) + px;
-    WorkgroupBox _e41 = load_receiver(li, pix_1, inside_1, wg_lo, wg_hi, wg_box, view, position_tex, normal_tex, materials, pos, nrm, valid, g_4, _buffer_sizes);
+    WorkgroupBox _e41 = load_receiver(li, pix_1, inside_1, wg_lo, wg_hi, wg_box, view, position_tex, normal_tex, materials, pos, nrm, eye_distance, valid, g_4, _buffer_sizes);
     uint _e44 = params.subset_shift;
     uint _e46 = shifted_subset(sub, _e44, P);
     bool _e47 = box_is_empty(_e41);
@@ -1043,8 +1049,11 @@ kernel void main_(
         metal::float3 _e73 = e;
         uint _e75 = kept;
         irradiance[pix_1] = metal::float4(_e73, static_cast<float>(_e75));
-        metal::float3 _e81 = s;
-        specular[pix_1] = metal::float4(_e81, 0.0);
+        metal::float3 _e81 = nrm;
+        float _e83 = eye_distance;
+        guide[pix_1] = metal::float4(_e81, _e83);
+        metal::float3 _e88 = s;
+        specular[pix_1] = metal::float4(_e88, 0.0);
         return;
     } else {
         return;

@@ -87,8 +87,8 @@ impl IndirectPass {
         let tex = wgpu::BindingResource::TextureView;
         let b = crate::kernel::whole;
         let g = inputs.gbuffer;
-        let (view_slots, vpl_slots, irradiance, filtered) =
-            (&self.view, &self.vpl_params, &self.irradiance, &self.filtered);
+        let (view_slots, vpl_slots, irradiance, filtered, guide) =
+            (&self.view, &self.vpl_params, &self.irradiance, &self.filtered, &self.guide);
         let (tiled_layout, denoise_layout, near_layout, outs) =
             (&self.tiled_layout, &self.denoise.layout, &self.near_layout, &self.pack_outputs);
         let [lights, _, rt2, r2, near_slots] = outs;
@@ -123,6 +123,7 @@ impl IndirectPass {
                 ("r2", r2),
                 ("boxes", boxes),
                 ("irradiance", irradiance),
+                ("guide", guide),
             ]
         };
         let near_rest = |k: usize| {
@@ -135,6 +136,15 @@ impl IndirectPass {
                 ("r2", r2),
                 ("irradiance", target),
             ]
+        };
+        // The denoise of `from` into `to`, guided by `vpl_tiled`'s guide.
+        let denoise = |from: &wgpu::Buffer, to: &wgpu::Buffer| {
+            let params = [("params", vpl_slots.binding())];
+            denoise_layout.group(
+                gpu,
+                0,
+                &with(&params, &[("guide", guide), ("irradiance", from), ("filtered", to)]),
+            )
         };
         // The kernels that read the G-buffer in place: bound to the
         // engine's views (and material table), cached by them.
@@ -156,18 +166,8 @@ impl IndirectPass {
                 tiled.extend(glossy(0));
                 GbufferGroups {
                     tiled: tiled_layout.group(gpu, 0, &with(&base, &tiled)),
-                    denoise: denoise_layout.group(
-                        gpu,
-                        0,
-                        &with(&base, &[("irradiance", irradiance), ("filtered", filtered)]),
-                    ),
-                    denoise_specular: specular.map(|sp| {
-                        denoise_layout.group(
-                            gpu,
-                            0,
-                            &with(&base, &[("irradiance", &sp[0]), ("filtered", &sp[1])]),
-                        )
-                    }),
+                    denoise: denoise(irradiance, filtered),
+                    denoise_specular: specular.map(|sp| denoise(&sp[0], &sp[1])),
                     near: [near(0), near(1)],
                 }
             },
@@ -311,16 +311,11 @@ impl IndirectPass {
             [sub_w.div_ceil(TILE), sub_h.div_ceil(TILE), p * p],
         ));
         if st.denoise {
-            out.push(d2(
-                Stage::Denoise,
-                &self.denoise.pipeline,
-                groups.denoise,
-                both(),
-                [gx, gy, 1],
-            ));
+            let vpl = || off(&self.vpl_params);
+            out.push(d(Stage::Denoise, &self.denoise.pipeline, groups.denoise, vpl(), [gx, gy, 1]));
             if let Some(group) = groups.denoise_specular {
                 // The same filter on the specular correction.
-                out.push(d2(Stage::Denoise, &self.denoise.pipeline, group, both(), [gx, gy, 1]));
+                out.push(d(Stage::Denoise, &self.denoise.pipeline, group, vpl(), [gx, gy, 1]));
             }
         }
         if near_field {

@@ -76,12 +76,13 @@
 //! encoder), so any number may share a submission.
 //!
 //! The G-buffer is read in place, as the [`DirectPass`](super::DirectPass)
-//! reads it: `vpl_tiled`, `vpl_denoise`, `vpl_near` and
-//! `irradiance_export` load the surface (unprojecting depth with the
-//! view's inverse view-projection) and the normal from the engine's
-//! textures wherever they need a pixel's surface (the denoise: every
-//! neighbour in its window), and take the distance from the eye as the
-//! denoise's depth. Depth input, standard and reversed Z, gives the
+//! reads it: `vpl_tiled`, `vpl_near` and `irradiance_export` load the
+//! surface (unprojecting depth with the view's inverse view-projection)
+//! and the normal from the engine's textures once per pixel; `vpl_tiled`
+//! also writes each pixel's unit normal and distance from the eye (the
+//! denoise's depth) into the pass's guide buffer, which `vpl_denoise`
+//! reads for every neighbour in its window (one texel a tap, not an
+//! unprojection). Depth input, standard and reversed Z, gives the
 //! positions' image (`tests/tests/indirect_pass.rs`).
 //!
 //! ```no_run
@@ -215,6 +216,9 @@ pub struct IndirectPass {
     )>,
     irradiance: wgpu::Buffer,
     filtered: wgpu::Buffer,
+    /// The denoise's guide (each pixel's normal and eye distance), written
+    /// by `vpl_tiled`.
+    guide: wgpu::Buffer,
     /// The specular correction, raw and denoised (glossy pass).
     specular: Option<[wgpu::Buffer; 2]>,
     pack_outputs: [wgpu::Buffer; 5],
@@ -338,6 +342,7 @@ impl IndirectPass {
         let vpl_params = UniformSlots::new::<VplParams>(gpu, "slc vpl params", 1);
         let irradiance = zeroed(gpu, "slc irradiance", pixels, rw);
         let filtered = zeroed(gpu, "slc filtered", pixels, rw);
+        let guide = zeroed(gpu, "slc denoise guide", pixels, rw);
         let specular = desc.glossy.then(|| {
             [
                 zeroed(gpu, "slc specular", pixels, rw),
@@ -411,6 +416,7 @@ impl IndirectPass {
             boxes,
             irradiance,
             filtered,
+            guide,
             specular,
         };
         gpu.take_errors()?;
