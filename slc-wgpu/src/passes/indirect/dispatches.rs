@@ -89,8 +89,8 @@ impl IndirectPass {
         let g = inputs.gbuffer;
         let (view_slots, vpl_slots, irradiance, filtered, guide) =
             (&self.view, &self.vpl_params, &self.irradiance, &self.filtered, &self.guide);
-        let (tiled_layout, denoise_layout, near_layout, outs) =
-            (&self.tiled_layout, &self.denoise.layout, &self.near_layout, &self.pack_outputs);
+        let (tiled_layout, near_layout, outs) =
+            (&self.tiled_layout, &self.near_layout, &self.pack_outputs);
         let [lights, _, rt2, r2, near_slots] = outs;
         let boxes = &self.boxes;
         let specular = self.specular.as_ref();
@@ -137,15 +137,6 @@ impl IndirectPass {
                 ("irradiance", target),
             ]
         };
-        // The denoise of `from` into `to`, guided by `vpl_tiled`'s guide.
-        let denoise = |from: &wgpu::Buffer, to: &wgpu::Buffer| {
-            let params = [("params", vpl_slots.binding())];
-            denoise_layout.group(
-                gpu,
-                0,
-                &with(&params, &[("guide", guide), ("irradiance", from), ("filtered", to)]),
-            )
-        };
         // The kernels that read the G-buffer in place: bound to the
         // engine's views (and material table), cached by them.
         let groups = self.gbuffer_cache.get(
@@ -166,8 +157,6 @@ impl IndirectPass {
                 tiled.extend(glossy(0));
                 GbufferGroups {
                     tiled: tiled_layout.group(gpu, 0, &with(&base, &tiled)),
-                    denoise: denoise(irradiance, filtered),
-                    denoise_specular: specular.map(|sp| denoise(&sp[0], &sp[1])),
                     near: [near(0), near(1)],
                 }
             },
@@ -311,11 +300,10 @@ impl IndirectPass {
             [sub_w.div_ceil(TILE), sub_h.div_ceil(TILE), p * p],
         ));
         if st.denoise {
-            let vpl = || off(&self.vpl_params);
-            out.push(d(Stage::Denoise, &self.denoise.pipeline, groups.denoise, vpl(), [gx, gy, 1]));
-            if let Some(group) = groups.denoise_specular {
-                // The same filter on the specular correction.
-                out.push(d(Stage::Denoise, &self.denoise.pipeline, group, vpl(), [gx, gy, 1]));
+            // The irradiance, then the specular correction by the same filter.
+            for group in &self.denoise_groups {
+                let (pipeline, vpl) = (&self.denoise.pipeline, off(&self.vpl_params));
+                out.push(d(Stage::Denoise, pipeline, group.clone(), vpl, [gx, gy, 1]));
             }
         }
         if near_field {

@@ -150,9 +150,6 @@ const WG: u32 = 64;
 #[derive(Clone)]
 struct GbufferGroups {
     tiled: wgpu::BindGroup,
-    denoise: wgpu::BindGroup,
-    /// The denoise of the specular correction (glossy pass).
-    denoise_specular: Option<wgpu::BindGroup>,
     /// `vpl_near` adding to the raw irradiance (0) or the denoised one (1).
     near: [wgpu::BindGroup; 2],
 }
@@ -193,6 +190,10 @@ pub struct IndirectPass {
     tiled_layout: KernelLayout,
     tiled: Vec<(CullKind, wgpu::ComputePipeline)>,
     denoise: Pipe,
+    /// The denoise's groups: of the irradiance, then (glossy pass) of the
+    /// specular correction, each into its filtered buffer, guided by the
+    /// guide buffer (none of them binds the engine's G-buffer).
+    denoise_groups: Vec<wgpu::BindGroup>,
     near_layout: KernelLayout,
     /// `vpl_near` per culling method (its ranges culled as the far field's).
     near: Vec<(CullKind, wgpu::ComputePipeline)>,
@@ -376,6 +377,20 @@ impl IndirectPass {
         );
         let groups_group =
             groups.layout.group(gpu, 0, &[("params", vpl_params.binding()), ("boxes", b(&boxes))]);
+        let denoise_of = |from: &wgpu::Buffer, to: &wgpu::Buffer| {
+            denoise.layout.group(
+                gpu,
+                0,
+                &[
+                    ("params", vpl_params.binding()),
+                    ("guide", b(&guide)),
+                    ("irradiance", b(from)),
+                    ("filtered", b(to)),
+                ],
+            )
+        };
+        let mut denoise_groups = vec![denoise_of(&irradiance, &filtered)];
+        denoise_groups.extend(specular.as_ref().map(|[raw, done]| denoise_of(raw, done)));
         let update_group = update.layout.group(
             gpu,
             0,
@@ -401,6 +416,7 @@ impl IndirectPass {
             tiled_layout,
             tiled,
             denoise,
+            denoise_groups,
             near_layout,
             near,
             export,
