@@ -537,7 +537,7 @@ impl Default for Features {
     }
 }
 
-const TEMPLATES: [(&str, &str); 39] = [
+const TEMPLATES: [(&str, &str); 40] = [
     ("header.wgsl", include_str!("templates/header.wgsl")),
     ("workgroup_box.wgsl", include_str!("templates/workgroup_box.wgsl")),
     ("lights.wgsl", include_str!("templates/lights.wgsl")),
@@ -562,6 +562,7 @@ const TEMPLATES: [(&str, &str); 39] = [
     ("vpl_groups", include_str!("templates/vpl_groups.wgsl")),
     ("vpl_ranges.wgsl", include_str!("templates/vpl_ranges.wgsl")),
     ("cluster_cull.wgsl", include_str!("templates/cluster_cull.wgsl")),
+    ("tile_list.wgsl", include_str!("templates/tile_list.wgsl")),
     ("work_counters.wgsl", include_str!("templates/work_counters.wgsl")),
     ("counter64.wgsl", include_str!("templates/counter64.wgsl")),
     ("vpl_receiver.wgsl", include_str!("templates/vpl_receiver.wgsl")),
@@ -588,28 +589,36 @@ pub fn templates() -> impl Iterator<Item = (&'static str, &'static str)> {
 /// Workgroup memory in bytes of `vpl_tiled` or `vpl_near` (0 for any
 /// other kernel) specialised to `f`: two `vec3f` (16 bytes each) per
 /// invocation and the box for the tile's box; with culling (always in
-/// `vpl_near`) the light list of `max_tile_lights` slots, the hits of a
-/// group's clusters and two counters; `vpl_near`'s four quarter boxes
-/// (two `vec3f` each); the counting variant's 7 counts
-/// (checked against naga's layout of the generated kernels in the tests).
+/// `vpl_near`) the hits of a group's clusters and their counter, and the
+/// light list: `vpl_tiled`'s of `max_tile_lights` slots and its counter,
+/// `vpl_near`'s four quarter lists of [`near_quarter_lights`] slots, their
+/// four counters and the longest's, and the four quarters' boxes (two
+/// `vec3f` each); the counting variant's 7 counts (checked against naga's
+/// layout of the generated kernels in the tests).
 pub fn vpl_workgroup_bytes(kernel: Kernel, f: &Features) -> u64 {
     let threads = f.tile_size as u64 * f.tile_size as u64;
     let culled = kernel == Kernel::VplNear || f.method != CullKind::None;
-    let list = if culled { 4 * f.max_tile_lights as u64 + 4 + 4 * CLUSTER as u64 + 4 } else { 0 };
+    let hits = if culled { 4 * CLUSTER as u64 + 4 } else { 0 };
     let counts = if f.counters { 4 * 7 } else { 0 };
     match kernel {
-        Kernel::VplTiled => 32 * threads + 32 + list + counts,
-        // and the four quarters' boxes
-        Kernel::VplNear => 32 * threads + 32 + list + counts + 4 * 32,
+        Kernel::VplTiled => {
+            let list = if culled { 4 * f.max_tile_lights as u64 + 4 } else { 0 };
+            32 * threads + 32 + hits + list + counts
+        }
+        Kernel::VplNear => {
+            let lists = 4 * 4 * near_quarter_lights(f) as u64 + 4 * 4 + 4;
+            32 * threads + 32 + hits + lists + counts + 4 * 32
+        }
         _ => 0,
     }
 }
 
-/// The bit from which `vpl_near`'s list entries hold the quarters a light's
-/// sphere meets (its light slot below): a storage binding of at most 4 GiB
-/// holds fewer than 2^27 [`layout::GpuLight`]s, so every slot fits below.
-pub const QUARTER_SHIFT: u32 = 28;
-const _: () = assert!((std::mem::size_of::<layout::GpuLight>() as u64) << QUARTER_SHIFT > 1 << 32);
+/// Capacity of each of `vpl_near`'s four quarter lists: a quarter of the
+/// tile list (`max_tile_lights`), and at least a cluster, which the
+/// culling adds at once.
+pub fn near_quarter_lights(f: &Features) -> u32 {
+    (f.max_tile_lights / 4).max(CLUSTER)
+}
 
 /// Workgroup memory in bytes of `direct_light` specialised to `f`: with
 /// the tile walk, its box reduction (two `vec3f` per invocation and the
@@ -820,7 +829,8 @@ pub fn generate_module(kernel: Kernel, features: &Features) -> Result<Generated,
         tile => features.tile_size,
         period => features.interleave,
         max_tile_lights => features.max_tile_lights,
-        quarter_shift => QUARTER_SHIFT,
+        quarter_lights => near_quarter_lights(features),
+        quarter_list => 4 * near_quarter_lights(features),
         method => method,
         heuristic => heuristic,
         selection => selection,

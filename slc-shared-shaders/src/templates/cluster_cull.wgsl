@@ -3,26 +3,30 @@
 // CPU's LightList::cull_tree_into walks it: every group box of the grid is
 // tested against the tile's box; the cluster boxes of a group that meets
 // it, one per invocation; then, cluster by cluster, the lit lights' culling
-// spheres, one per invocation, the hits appended to the workgroup's list.
-// A list that could not take one more cluster is shaded and emptied first,
-// and the rest at the end: every invocation shades every listed light
-// (the paper's tile loop, culled by all the tile's threads at once).
+// spheres, one per invocation, the hits added to the workgroup's list(s).
+// Lists that could not take one more cluster are shaded and emptied first,
+// and the rest at the end (the paper's tile loop, culled by all the tile's
+// threads at once).
 //
 // The including kernel has CLUSTER invocations (an 8x8 tile) and defines
-// MAX_TILE_LIGHTS (at least CLUSTER), the binding `boxes`, and
+// the binding `boxes`, and
 //   fn cluster_slot(c: u32, k: u32) -> u32   slot of light k of the cluster
 //                                            whose box is boxes[c]
 //   fn cull_r2_of(slot: u32) -> f32          its culling sphere's radius^2
-//   fn list_entry(slot: u32, p: vec3f, radius: f32) -> u32
-//                                            the list entry of a light whose
-//                                            sphere (p, radius) meets the tile
-//   fn shade_list(count: u32)                shades tile_lights[..count]
+// and its light list(s) (vpl_tiled: tile_list.wgsl, one list every
+// invocation shades; vpl_near: one list per quarter of the tile):
+//   fn list_clear(li: u32)                   empties them (before a barrier)
+//   fn list_full() -> bool                   uniform: one more cluster might
+//                                            not fit (every invocation calls it)
+//   fn list_add(slot: u32, p: vec3f, radius: f32)
+//                                            adds a light whose sphere
+//                                            (p, radius) meets the tile
+//   fn list_shade()                          shades what they hold (every
+//                                            invocation calls it)
 {% if counters %}
 // Counting variant: every test is counted (work_counters.wgsl).
 {% endif %}
 
-var<workgroup> tile_lights: array<u32, MAX_TILE_LIGHTS>;
-var<workgroup> list_count: atomic<u32>;
 var<workgroup> cluster_hits: array<u32, CLUSTER>;
 var<workgroup> hit_count: atomic<u32>;
 
@@ -31,9 +35,7 @@ var<workgroup> hit_count: atomic<u32>;
 /// tile's box `[lo, hi]` (uniform), shading the lights that meet it. Every
 /// invocation calls it; `li` is its local_invocation_index.
 fn cull_tile(li: u32, lo: vec3f, hi: vec3f, grid: vec4u, clusters_at: u32, groups_at: u32) {
-    if li == 0u {
-        atomicStore(&list_count, 0u);
-    }
+    list_clear(li);
     let groups = group_count(grid.x, grid.y, grid.z, grid.w);
 {% if counters %}
     count_tests(li, COUNT_GROUP_TESTS, groups);
@@ -60,13 +62,10 @@ fn cull_tile(li: u32, lo: vec3f, hi: vec3f, grid: vec4u, clusters_at: u32, group
         }
         let hits = workgroupUniformLoad(&hit_count);
         for (var h = 0u; h < hits; h++) {
-            let listed = workgroupUniformLoad(&list_count);
-            if listed + CLUSTER > MAX_TILE_LIGHTS {
-                shade_list(listed);
+            if list_full() {
+                list_shade();
                 workgroupBarrier();
-                if li == 0u {
-                    atomicStore(&list_count, 0u);
-                }
+                list_clear(li);
                 workgroupBarrier();
             }
             let slot = cluster_slot(cluster_hits[h], li);
@@ -77,12 +76,12 @@ fn cull_tile(li: u32, lo: vec3f, hi: vec3f, grid: vec4u, clusters_at: u32, group
 {% endif %}
                 let radius = cull_radius(cull_r2_of(slot));
                 if sphere_overlaps_aabb(l.p0, radius, lo, hi) {
-                    tile_lights[atomicAdd(&list_count, 1u)] = list_entry(slot, l.p0, radius);
+                    list_add(slot, l.p0, radius);
                 }
             }
         }
         // The next group refills cluster_hits.
         workgroupBarrier();
     }
-    shade_list(workgroupUniformLoad(&list_count));
+    list_shade();
 }

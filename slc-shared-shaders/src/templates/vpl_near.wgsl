@@ -19,9 +19,10 @@
 // vpl_clusters, vpl_groups) is culled against it (cluster_cull.wgsl), each
 // VPL's culling sphere of radius min(r, R_n) (vpl_ranges.wgsl): a tile
 // visits the clusters its box meets, not every VPL of the frame. Each listed
-// light carries the quarters of the tile (four (TILE/2)^2 squares) whose own
-// box its sphere meets, and an invocation shades only its quarter's lights
-// (the CPU's near tiling culls the tile's list to each quarter's box).
+// light goes to the lists of the tile's quarters (four (TILE/2)^2 squares)
+// whose own box its sphere meets, and an invocation shades only its
+// quarter's list (the CPU's near tiling culls the tile's list to each
+// quarter's box).
 {% if glossy %}
 // Glossy variant: the near field's specular correction S is added to
 // `specular` as its irradiance is to `irradiance` (vpl_tiled's glossy
@@ -33,7 +34,6 @@ const TILE: u32 = {{ tile }}u;
 const THREADS: u32 = TILE * TILE;
 const BOX_THREADS: u32 = THREADS;
 {% include "workgroup_box.wgsl" %}
-const MAX_TILE_LIGHTS: u32 = {{ max_tile_lights }}u;
 
 {{ bindings }}
 {% include "gbuffer_read.wgsl" %}
@@ -55,22 +55,28 @@ fn cull_r2_of(slot: u32) -> f32 {
     return near_cull_r2_of(slot, params.near_r2);
 }
 
-/// Side of a quarter, and where a list entry keeps its quarters' bits
-/// (slc-shared-shaders' QUARTER_SHIFT: every light slot stays below it).
+/// Side of a quarter: the tile's four (TILE/2)^2 squares, quarter q at
+/// columns from (q % 2) HALF and rows from (q / 2) HALF.
 const HALF: u32 = (TILE + 1u) / 2u;
-const QUARTER_SHIFT: u32 = {{ quarter_shift }}u;
-const SLOT_BITS: u32 = (1u << QUARTER_SHIFT) - 1u;
+/// Capacity of each quarter's list (slc-shared-shaders'
+/// near_quarter_lights: a quarter of the tile list, at least a cluster).
+const QUARTER_LIGHTS: u32 = {{ quarter_lights }}u;
 var<workgroup> quarter_lo: array<vec3f, 4>;
 var<workgroup> quarter_hi: array<vec3f, 4>;
-/// This invocation's quarter's bit in a list entry.
-var<private> quarter_bit: u32;
+/// Quarter q's list: the light slots quarter_lights[q QUARTER_LIGHTS ..]
+/// [..quarter_count[q]], in the order they were added.
+var<workgroup> quarter_lights: array<u32, {{ quarter_list }}>;
+var<workgroup> quarter_count: array<atomic<u32>, 4>;
+/// The longest quarter list.
+var<workgroup> fullest: atomic<u32>;
+/// This invocation's quarter.
+var<private> quarter: u32;
 
-/// The box of each quarter's surfaces (quarter q: columns from (q % 2)
-/// HALF, rows from (q / 2) HALF; empty where none), into quarter_lo/hi, and
-/// this invocation's quarter_bit. Every invocation calls it, after
-/// load_receiver (it reuses workgroup_box.wgsl's arrays).
+/// The box of each quarter's surfaces (empty where none), into
+/// quarter_lo/hi, and this invocation's quarter. Every invocation calls it,
+/// after load_receiver (it reuses workgroup_box.wgsl's arrays).
 fn quarter_boxes(li: u32, lid: vec3u) {
-    quarter_bit = 1u << (QUARTER_SHIFT + select(0u, 1u, lid.x >= HALF) + select(0u, 2u, lid.y >= HALF));
+    quarter = select(0u, 1u, lid.x >= HALF) + select(0u, 2u, lid.y >= HALF);
     let own = point_box(pos, valid);
     wg_lo[li] = own.lo;
     wg_hi[li] = own.hi;
@@ -92,10 +98,30 @@ fn quarter_boxes(li: u32, lid: vec3u) {
     workgroupBarrier();
 }
 
-/// Quarter q's bit where it has surfaces and the sphere (p, radius) meets
-/// their box (a test, counted), else 0. Called four times, not looped:
-/// lavapipe counts every loop iteration against its limit.
-fn quarter_meets(q: u32, p: vec3f, radius: f32) -> u32 {
+// The light lists of cluster_cull.wgsl: one per quarter, each light in the
+// lists of the quarters whose own box its sphere meets (the CPU's near
+// tiling culls the tile's list to each quarter's box). An invocation loops
+// over its own quarter's list only, so the invocations of a warp that
+// shades two quarters run the longer of their two lists, not their union.
+
+fn list_clear(li: u32) {
+    if li < 4u {
+        atomicStore(&quarter_count[li], 0u);
+    }
+    if li == 0u {
+        atomicStore(&fullest, 0u);
+    }
+}
+
+fn list_full() -> bool {
+    return workgroupUniformLoad(&fullest) + CLUSTER > QUARTER_LIGHTS;
+}
+
+/// Adds light `slot` to quarter q's list where the quarter has surfaces
+/// and the sphere (p, radius) meets their box (a test, counted): the list's
+/// new length, else 0. Called four times, not looped: lavapipe counts
+/// every loop iteration against its limit.
+fn quarter_add(q: u32, slot: u32, p: vec3f, radius: f32) -> u32 {
     let lo = quarter_lo[q];
     let hi = quarter_hi[q];
     if lo.x > hi.x {
@@ -104,33 +130,34 @@ fn quarter_meets(q: u32, p: vec3f, radius: f32) -> u32 {
 {% if counters %}
     count_one(COUNT_SPHERE_TESTS);
 {% endif %}
-    return select(0u, 1u << (QUARTER_SHIFT + q), sphere_overlaps_aabb(p, radius, lo, hi));
+    if !sphere_overlaps_aabb(p, radius, lo, hi) {
+        return 0u;
+    }
+    let n = atomicAdd(&quarter_count[q], 1u);
+    quarter_lights[q * QUARTER_LIGHTS + n] = slot;
+    return n + 1u;
 }
 
-/// The list entry of a light whose sphere meets the tile: its slot and
-/// the quarters its sphere meets.
-fn list_entry(slot: u32, p: vec3f, radius: f32) -> u32 {
-    return slot | quarter_meets(0u, p, radius) | quarter_meets(1u, p, radius) | quarter_meets(2u, p, radius) | quarter_meets(3u, p, radius);
+fn list_add(slot: u32, p: vec3f, radius: f32) {
+    let a = max(quarter_add(0u, slot, p, radius), quarter_add(1u, slot, p, radius));
+    let b = max(quarter_add(2u, slot, p, radius), quarter_add(3u, slot, p, radius));
+    atomicMax(&fullest, max(a, b));
 }
 
-fn shade_list(count: u32) {
+fn list_shade() {
+    workgroupBarrier();
+    shade_list(atomicLoad(&quarter_count[quarter]), quarter * QUARTER_LIGHTS);
+}
+
+/// Shades this invocation's quarter's list, quarter_lights[first ..][..count].
+fn shade_list(count: u32, first: u32) {
     if !valid {
         return;
     }
     // The flux the light buffer holds is P^2 times the VPL's own.
     let unscale = 1.0 / interleave_flux_scale(P);
-{% if counters %}
-    var tested = 0u;
-{% endif %}
     for (var m = 0u; m < count; m++) {
-        let entry = tile_lights[m];
-        if (entry & quarter_bit) == 0u {
-            continue;
-        }
-{% if counters %}
-        tested += 1u;
-{% endif %}
-        let slot = entry & SLOT_BITS;
+        let slot = quarter_lights[first + m];
         let l = lights[slot];
         let v = pos - l.p0;
 {% if method == "slc" %}
@@ -148,7 +175,7 @@ fn shade_list(count: u32) {
         }
     }
 {% if counters %}
-    count_add(COUNT_TESTED, tested);
+    count_add(COUNT_TESTED, count);
 {% endif %}
 }
 

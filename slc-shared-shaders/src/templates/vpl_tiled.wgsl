@@ -71,11 +71,7 @@ fn cull_r2_of(slot: u32) -> f32 {
     return r2[slot];
 }
 
-/// Every invocation shades every listed light: the entry is its slot.
-fn list_entry(slot: u32, p: vec3f, radius: f32) -> u32 {
-    return slot;
-}
-
+/// Every invocation shades every listed light.
 fn shade_list(count: u32) {
     if valid {
         for (var k = 0u; k < count; k++) {
@@ -87,6 +83,7 @@ fn shade_list(count: u32) {
     }
 }
 
+{% include "tile_list.wgsl" %}
 {% include "cluster_cull.wgsl" %}
 {% endif %}
 

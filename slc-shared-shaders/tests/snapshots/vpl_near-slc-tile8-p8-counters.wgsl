@@ -129,10 +129,8 @@ const P: u32 = 8u;
 const TILE: u32 = 8u;
 const THREADS: u32 = 64u;
 const BOX_THREADS: u32 = 64u;
-const MAX_TILE_LIGHTS: u32 = 1024u;
 const HALF: u32 = 4u;
-const QUARTER_SHIFT: u32 = 28u;
-const SLOT_BITS: u32 = 268435455u;
+const QUARTER_LIGHTS: u32 = 256u;
 
 var<workgroup> wg_lo: array<vec3<f32>, 64>;
 var<workgroup> wg_hi: array<vec3<f32>, 64>;
@@ -168,9 +166,10 @@ var<private> e: vec3<f32>;
 var<private> kept: u32;
 var<workgroup> quarter_lo: array<vec3<f32>, 4>;
 var<workgroup> quarter_hi: array<vec3<f32>, 4>;
-var<private> quarter_bit: u32;
-var<workgroup> tile_lights: array<u32, 1024>;
-var<workgroup> list_count: atomic<u32>;
+var<workgroup> quarter_lights: array<u32, 1024>;
+var<workgroup> quarter_count: array<atomic<u32>, 4>;
+var<workgroup> fullest: atomic<u32>;
+var<private> quarter: u32;
 var<workgroup> cluster_hits: array<u32, 64>;
 var<workgroup> hit_count: atomic<u32>;
 
@@ -500,225 +499,243 @@ fn quarter_boxes(li_8: u32, lid_1: vec3<u32>) {
     var y: u32;
     var x: u32;
 
-    quarter_bit = (1u << ((QUARTER_SHIFT + select(0u, 1u, (lid_1.x >= HALF))) + select(0u, 2u, (lid_1.y >= HALF))));
-    let _e21 = pos;
-    let _e23 = valid;
-    let _e24 = point_box(_e21, _e23);
-    wg_lo[li_8] = _e24.lo;
-    wg_hi[li_8] = _e24.hi;
+    quarter = (select(0u, 1u, (lid_1.x >= HALF)) + select(0u, 2u, (lid_1.y >= HALF)));
+    let _e17 = pos;
+    let _e19 = valid;
+    let _e20 = point_box(_e17, _e19);
+    wg_lo[li_8] = _e20.lo;
+    wg_hi[li_8] = _e20.hi;
     workgroupBarrier();
     if (li_8 < 4u) {
         let x0_ = ((li_8 % 2u) * HALF);
         let y0_ = ((li_8 / 2u) * HALF);
         y = y0_;
         loop {
-            let _e48 = y;
-            if (_e48 < min((y0_ + HALF), TILE)) {
+            let _e44 = y;
+            if (_e44 < min((y0_ + HALF), TILE)) {
             } else {
                 break;
             }
             {
                 x = x0_;
                 loop {
-                    let _e55 = x;
-                    if (_e55 < min((x0_ + HALF), TILE)) {
+                    let _e51 = x;
+                    if (_e51 < min((x0_ + HALF), TILE)) {
                     } else {
                         break;
                     }
                     {
-                        let _e61 = lo_1;
-                        let _e63 = y;
-                        let _e66 = x;
-                        let _e69 = wg_lo[((_e63 * TILE) + _e66)];
-                        lo_1 = min(_e61, _e69);
-                        let _e71 = hi_1;
-                        let _e73 = y;
-                        let _e76 = x;
-                        let _e79 = wg_hi[((_e73 * TILE) + _e76)];
-                        hi_1 = max(_e71, _e79);
+                        let _e57 = lo_1;
+                        let _e59 = y;
+                        let _e62 = x;
+                        let _e65 = wg_lo[((_e59 * TILE) + _e62)];
+                        lo_1 = min(_e57, _e65);
+                        let _e67 = hi_1;
+                        let _e69 = y;
+                        let _e72 = x;
+                        let _e75 = wg_hi[((_e69 * TILE) + _e72)];
+                        hi_1 = max(_e67, _e75);
                     }
                     continuing {
-                        let _e82 = x;
-                        x = (_e82 + 1u);
+                        let _e78 = x;
+                        x = (_e78 + 1u);
                     }
                 }
             }
             continuing {
-                let _e85 = y;
-                y = (_e85 + 1u);
+                let _e81 = y;
+                y = (_e81 + 1u);
             }
         }
-        let _e89 = lo_1;
-        quarter_lo[li_8] = _e89;
-        let _e92 = hi_1;
-        quarter_hi[li_8] = _e92;
+        let _e85 = lo_1;
+        quarter_lo[li_8] = _e85;
+        let _e88 = hi_1;
+        quarter_hi[li_8] = _e88;
     }
     workgroupBarrier();
     return;
 }
 
-fn quarter_meets(q: u32, p_3: vec3<f32>, radius: f32) -> u32 {
+fn list_clear(li_9: u32) {
+    if (li_9 < 4u) {
+        atomicStore((&quarter_count[li_9]), 0u);
+    }
+    if (li_9 == 0u) {
+        atomicStore((&fullest), 0u);
+        return;
+    } else {
+        return;
+    }
+}
+
+fn list_full() -> bool {
+    let _e1 = workgroupUniformLoad((&fullest));
+    return ((_e1 + CLUSTER) > QUARTER_LIGHTS);
+}
+
+fn quarter_add(q: u32, slot_3: u32, p_3: vec3<f32>, radius: f32) -> u32 {
     let lo_3 = quarter_lo[q];
     let hi_3 = quarter_hi[q];
     if (lo_3.x > hi_3.x) {
         return 0u;
     }
     count_one(COUNT_SPHERE_TESTS);
-    let _e19 = sphere_overlaps_aabb(p_3, radius, lo_3, hi_3);
-    return select(0u, (1u << (QUARTER_SHIFT + q)), _e19);
+    let _e15 = sphere_overlaps_aabb(p_3, radius, lo_3, hi_3);
+    if !(_e15) {
+        return 0u;
+    }
+    let _e21 = atomicAdd((&quarter_count[q]), 1u);
+    quarter_lights[((q * QUARTER_LIGHTS) + _e21)] = slot_3;
+    return (_e21 + 1u);
 }
 
-fn list_entry(slot_3: u32, p_4: vec3<f32>, radius_1: f32) -> u32 {
-    let _e4 = quarter_meets(0u, p_4, radius_1);
-    let _e7 = quarter_meets(1u, p_4, radius_1);
-    let _e10 = quarter_meets(2u, p_4, radius_1);
-    let _e13 = quarter_meets(3u, p_4, radius_1);
-    return ((((slot_3 | _e4) | _e7) | _e10) | _e13);
-}
-
-fn shade_list(count: u32) {
-    var tested: u32 = 0u;
-    var m: u32 = 0u;
-
-    let _e2 = valid;
-    if !(_e2) {
-        return;
-    }
-    let _e5 = interleave_flux_scale(P);
-    let unscale = (1f / _e5);
-    loop {
-        let _e12 = m;
-        if (_e12 < count) {
-        } else {
-            break;
-        }
-        {
-            let _e15 = m;
-            let entry = tile_lights[_e15];
-            let _e19 = quarter_bit;
-            if ((entry & _e19) == 0u) {
-                continue;
-            }
-            let _e23 = tested;
-            tested = (_e23 + 1u);
-            let slot_4 = (entry & SLOT_BITS);
-            let l = lights[slot_4];
-            let _e32 = pos;
-            let v_3 = (_e32 - l.p0_);
-            let _e37 = rt2_2[slot_4];
-            let _e39 = vpl_near_range2_(_e37, P);
-            let _e40 = near_r2_of(slot_4);
-            let _e44 = params.near_r2_;
-            let _e45 = vpl_near_slc_share(_e39, _e40, dot(v_3, v_3), _e44);
-            if (_e45 > 0f) {
-                let _e50 = nrm;
-                let _e53 = params.min_d2_;
-                let _e54 = vpl_transfer(l.p1_, _e50, v_3, _e53);
-                let t_1 = ((_e54 * _e45) * unscale);
-                let _e58 = e;
-                e = (_e58 + (l.intensity * t_1));
-                let _e63 = kept;
-                kept = (_e63 + 1u);
-            }
-        }
-        continuing {
-            let _e67 = m;
-            m = (_e67 + 1u);
-        }
-    }
-    let _e70 = tested;
-    count_add(COUNT_TESTED, _e70);
+fn list_add(slot_4: u32, p_4: vec3<f32>, radius_1: f32) {
+    let _e4 = quarter_add(0u, slot_4, p_4, radius_1);
+    let _e6 = quarter_add(1u, slot_4, p_4, radius_1);
+    let a = max(_e4, _e6);
+    let _e9 = quarter_add(2u, slot_4, p_4, radius_1);
+    let _e11 = quarter_add(3u, slot_4, p_4, radius_1);
+    let b_1 = max(_e9, _e11);
+    let _e15 = atomicMax((&fullest), max(a, b_1));
     return;
 }
 
-fn cull_tile(li_9: u32, lo_2: vec3<f32>, hi_2: vec3<f32>, grid: vec4<u32>, clusters_at: u32, groups_at: u32) {
-    var g_2: u32 = 0u;
-    var h: u32;
+fn shade_list(count: u32, first: u32) {
+    var m: u32 = 0u;
 
-    if (li_9 == 0u) {
-        atomicStore((&list_count), 0u);
+    let _e3 = valid;
+    if !(_e3) {
+        return;
     }
-    let _e14 = group_count(grid.x, grid.y, grid.z, grid.w);
-    count_tests(li_9, COUNT_GROUP_TESTS, _e14);
+    let _e6 = interleave_flux_scale(P);
+    let unscale = (1f / _e6);
     loop {
-        let _e18 = g_2;
-        if (_e18 < _e14) {
+        let _e11 = m;
+        if (_e11 < count) {
         } else {
             break;
         }
         {
-            let _e21 = g_2;
-            let gb = boxes[(groups_at + _e21)];
-            let _e27 = box_overlaps_box(gb.lo, gb.hi, lo_2, hi_2);
-            if !(_e27) {
+            let _e14 = m;
+            let slot_5 = quarter_lights[(first + _e14)];
+            let l = lights[slot_5];
+            let _e22 = pos;
+            let v_3 = (_e22 - l.p0_);
+            let _e27 = rt2_2[slot_5];
+            let _e29 = vpl_near_range2_(_e27, P);
+            let _e30 = near_r2_of(slot_5);
+            let _e34 = params.near_r2_;
+            let _e35 = vpl_near_slc_share(_e29, _e30, dot(v_3, v_3), _e34);
+            if (_e35 > 0f) {
+                let _e40 = nrm;
+                let _e43 = params.min_d2_;
+                let _e44 = vpl_transfer(l.p1_, _e40, v_3, _e43);
+                let t_1 = ((_e44 * _e35) * unscale);
+                let _e48 = e;
+                e = (_e48 + (l.intensity * t_1));
+                let _e53 = kept;
+                kept = (_e53 + 1u);
+            }
+        }
+        continuing {
+            let _e57 = m;
+            m = (_e57 + 1u);
+        }
+    }
+    count_add(COUNT_TESTED, count);
+    return;
+}
+
+fn list_shade() {
+    workgroupBarrier();
+    let _e2 = quarter;
+    let _e4 = atomicLoad((&quarter_count[_e2]));
+    let _e6 = quarter;
+    shade_list(_e4, (_e6 * QUARTER_LIGHTS));
+    return;
+}
+
+fn cull_tile(li_10: u32, lo_2: vec3<f32>, hi_2: vec3<f32>, grid: vec4<u32>, clusters_at: u32, groups_at: u32) {
+    var g_2: u32 = 0u;
+    var h: u32;
+
+    list_clear(li_10);
+    let _e10 = group_count(grid.x, grid.y, grid.z, grid.w);
+    count_tests(li_10, COUNT_GROUP_TESTS, _e10);
+    loop {
+        let _e14 = g_2;
+        if (_e14 < _e10) {
+        } else {
+            break;
+        }
+        {
+            let _e17 = g_2;
+            let gb = boxes[(groups_at + _e17)];
+            let _e23 = box_overlaps_box(gb.lo, gb.hi, lo_2, hi_2);
+            if !(_e23) {
                 continue;
             }
-            let _e29 = g_2;
-            let _e34 = group_first(_e29, grid.x, grid.y, grid.z, grid.w);
-            let first = (clusters_at + _e34);
-            let _e36 = g_2;
-            let _e41 = group_clusters(_e36, grid.x, grid.y, grid.z, grid.w);
-            count_tests(li_9, COUNT_CLUSTER_TESTS, _e41);
-            if (li_9 == 0u) {
+            let _e25 = g_2;
+            let _e30 = group_first(_e25, grid.x, grid.y, grid.z, grid.w);
+            let first_1 = (clusters_at + _e30);
+            let _e32 = g_2;
+            let _e37 = group_clusters(_e32, grid.x, grid.y, grid.z, grid.w);
+            count_tests(li_10, COUNT_CLUSTER_TESTS, _e37);
+            if (li_10 == 0u) {
                 atomicStore((&hit_count), 0u);
             }
             workgroupBarrier();
-            if (li_9 < _e41) {
-                let cb = boxes[(first + li_9)];
-                let _e54 = box_overlaps_box(cb.lo, cb.hi, lo_2, hi_2);
-                if _e54 {
-                    let _e58 = atomicAdd((&hit_count), 1u);
-                    cluster_hits[_e58] = (first + li_9);
+            if (li_10 < _e37) {
+                let cb = boxes[(first_1 + li_10)];
+                let _e50 = box_overlaps_box(cb.lo, cb.hi, lo_2, hi_2);
+                if _e50 {
+                    let _e54 = atomicAdd((&hit_count), 1u);
+                    cluster_hits[_e54] = (first_1 + li_10);
                 }
             }
-            let _e62 = workgroupUniformLoad((&hit_count));
+            let _e58 = workgroupUniformLoad((&hit_count));
             h = 0u;
             loop {
-                let _e65 = h;
-                if (_e65 < _e62) {
+                let _e61 = h;
+                if (_e61 < _e58) {
                 } else {
                     break;
                 }
                 {
-                    let _e68 = workgroupUniformLoad((&list_count));
-                    if ((_e68 + CLUSTER) > MAX_TILE_LIGHTS) {
-                        shade_list(_e68);
+                    let _e63 = list_full();
+                    if _e63 {
+                        list_shade();
                         workgroupBarrier();
-                        if (li_9 == 0u) {
-                            atomicStore((&list_count), 0u);
-                        }
+                        list_clear(li_10);
                         workgroupBarrier();
                     }
-                    let _e78 = h;
-                    let _e80 = cluster_hits[_e78];
-                    let _e81 = cluster_slot(_e80, li_9);
-                    let l_1 = lights[_e81];
+                    let _e65 = h;
+                    let _e67 = cluster_hits[_e65];
+                    let _e68 = cluster_slot(_e67, li_10);
+                    let l_1 = lights[_e68];
                     if any((l_1.intensity != vec3(0f))) {
                         count_one(COUNT_SPHERE_TESTS);
-                        let _e91 = cull_r2_of(_e81);
-                        let _e92 = cull_radius(_e91);
-                        let _e94 = sphere_overlaps_aabb(l_1.p0_, _e92, lo_2, hi_2);
-                        if _e94 {
-                            let _e98 = atomicAdd((&list_count), 1u);
-                            let _e101 = list_entry(_e81, l_1.p0_, _e92);
-                            tile_lights[_e98] = _e101;
+                        let _e78 = cull_r2_of(_e68);
+                        let _e79 = cull_radius(_e78);
+                        let _e81 = sphere_overlaps_aabb(l_1.p0_, _e79, lo_2, hi_2);
+                        if _e81 {
+                            list_add(_e68, l_1.p0_, _e79);
                         }
                     }
                 }
                 continuing {
-                    let _e103 = h;
-                    h = (_e103 + 1u);
+                    let _e84 = h;
+                    h = (_e84 + 1u);
                 }
             }
             workgroupBarrier();
         }
         continuing {
-            let _e106 = g_2;
-            g_2 = (_e106 + 1u);
+            let _e87 = g_2;
+            g_2 = (_e87 + 1u);
         }
     }
-    let _e109 = workgroupUniformLoad((&list_count));
-    shade_list(_e109);
+    list_shade();
     return;
 }
 

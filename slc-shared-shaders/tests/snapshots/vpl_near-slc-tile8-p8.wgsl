@@ -129,10 +129,8 @@ const P: u32 = 8u;
 const TILE: u32 = 8u;
 const THREADS: u32 = 64u;
 const BOX_THREADS: u32 = 64u;
-const MAX_TILE_LIGHTS: u32 = 1024u;
 const HALF: u32 = 4u;
-const QUARTER_SHIFT: u32 = 28u;
-const SLOT_BITS: u32 = 268435455u;
+const QUARTER_LIGHTS: u32 = 256u;
 
 var<workgroup> wg_lo: array<vec3<f32>, 64>;
 var<workgroup> wg_hi: array<vec3<f32>, 64>;
@@ -165,9 +163,10 @@ var<private> e: vec3<f32>;
 var<private> kept: u32;
 var<workgroup> quarter_lo: array<vec3<f32>, 4>;
 var<workgroup> quarter_hi: array<vec3<f32>, 4>;
-var<private> quarter_bit: u32;
-var<workgroup> tile_lights: array<u32, 1024>;
-var<workgroup> list_count: atomic<u32>;
+var<workgroup> quarter_lights: array<u32, 1024>;
+var<workgroup> quarter_count: array<atomic<u32>, 4>;
+var<workgroup> fullest: atomic<u32>;
+var<private> quarter: u32;
 var<workgroup> cluster_hits: array<u32, 64>;
 var<workgroup> hit_count: atomic<u32>;
 
@@ -434,216 +433,238 @@ fn quarter_boxes(li_4: u32, lid_1: vec3<u32>) {
     var y: u32;
     var x: u32;
 
-    quarter_bit = (1u << ((QUARTER_SHIFT + select(0u, 1u, (lid_1.x >= HALF))) + select(0u, 2u, (lid_1.y >= HALF))));
-    let _e21 = pos;
-    let _e23 = valid;
-    let _e24 = point_box(_e21, _e23);
-    wg_lo[li_4] = _e24.lo;
-    wg_hi[li_4] = _e24.hi;
+    quarter = (select(0u, 1u, (lid_1.x >= HALF)) + select(0u, 2u, (lid_1.y >= HALF)));
+    let _e17 = pos;
+    let _e19 = valid;
+    let _e20 = point_box(_e17, _e19);
+    wg_lo[li_4] = _e20.lo;
+    wg_hi[li_4] = _e20.hi;
     workgroupBarrier();
     if (li_4 < 4u) {
         let x0_ = ((li_4 % 2u) * HALF);
         let y0_ = ((li_4 / 2u) * HALF);
         y = y0_;
         loop {
-            let _e48 = y;
-            if (_e48 < min((y0_ + HALF), TILE)) {
+            let _e44 = y;
+            if (_e44 < min((y0_ + HALF), TILE)) {
             } else {
                 break;
             }
             {
                 x = x0_;
                 loop {
-                    let _e55 = x;
-                    if (_e55 < min((x0_ + HALF), TILE)) {
+                    let _e51 = x;
+                    if (_e51 < min((x0_ + HALF), TILE)) {
                     } else {
                         break;
                     }
                     {
-                        let _e61 = lo_1;
-                        let _e63 = y;
-                        let _e66 = x;
-                        let _e69 = wg_lo[((_e63 * TILE) + _e66)];
-                        lo_1 = min(_e61, _e69);
-                        let _e71 = hi_1;
-                        let _e73 = y;
-                        let _e76 = x;
-                        let _e79 = wg_hi[((_e73 * TILE) + _e76)];
-                        hi_1 = max(_e71, _e79);
+                        let _e57 = lo_1;
+                        let _e59 = y;
+                        let _e62 = x;
+                        let _e65 = wg_lo[((_e59 * TILE) + _e62)];
+                        lo_1 = min(_e57, _e65);
+                        let _e67 = hi_1;
+                        let _e69 = y;
+                        let _e72 = x;
+                        let _e75 = wg_hi[((_e69 * TILE) + _e72)];
+                        hi_1 = max(_e67, _e75);
                     }
                     continuing {
-                        let _e82 = x;
-                        x = (_e82 + 1u);
+                        let _e78 = x;
+                        x = (_e78 + 1u);
                     }
                 }
             }
             continuing {
-                let _e85 = y;
-                y = (_e85 + 1u);
+                let _e81 = y;
+                y = (_e81 + 1u);
             }
         }
-        let _e89 = lo_1;
-        quarter_lo[li_4] = _e89;
-        let _e92 = hi_1;
-        quarter_hi[li_4] = _e92;
+        let _e85 = lo_1;
+        quarter_lo[li_4] = _e85;
+        let _e88 = hi_1;
+        quarter_hi[li_4] = _e88;
     }
     workgroupBarrier();
     return;
 }
 
-fn quarter_meets(q: u32, p_3: vec3<f32>, radius: f32) -> u32 {
+fn list_clear(li_5: u32) {
+    if (li_5 < 4u) {
+        atomicStore((&quarter_count[li_5]), 0u);
+    }
+    if (li_5 == 0u) {
+        atomicStore((&fullest), 0u);
+        return;
+    } else {
+        return;
+    }
+}
+
+fn list_full() -> bool {
+    let _e1 = workgroupUniformLoad((&fullest));
+    return ((_e1 + CLUSTER) > QUARTER_LIGHTS);
+}
+
+fn quarter_add(q: u32, slot_3: u32, p_3: vec3<f32>, radius: f32) -> u32 {
     let lo_3 = quarter_lo[q];
     let hi_3 = quarter_hi[q];
     if (lo_3.x > hi_3.x) {
         return 0u;
     }
-    let _e18 = sphere_overlaps_aabb(p_3, radius, lo_3, hi_3);
-    return select(0u, (1u << (QUARTER_SHIFT + q)), _e18);
+    let _e14 = sphere_overlaps_aabb(p_3, radius, lo_3, hi_3);
+    if !(_e14) {
+        return 0u;
+    }
+    let _e20 = atomicAdd((&quarter_count[q]), 1u);
+    quarter_lights[((q * QUARTER_LIGHTS) + _e20)] = slot_3;
+    return (_e20 + 1u);
 }
 
-fn list_entry(slot_3: u32, p_4: vec3<f32>, radius_1: f32) -> u32 {
-    let _e4 = quarter_meets(0u, p_4, radius_1);
-    let _e7 = quarter_meets(1u, p_4, radius_1);
-    let _e10 = quarter_meets(2u, p_4, radius_1);
-    let _e13 = quarter_meets(3u, p_4, radius_1);
-    return ((((slot_3 | _e4) | _e7) | _e10) | _e13);
+fn list_add(slot_4: u32, p_4: vec3<f32>, radius_1: f32) {
+    let _e4 = quarter_add(0u, slot_4, p_4, radius_1);
+    let _e6 = quarter_add(1u, slot_4, p_4, radius_1);
+    let a = max(_e4, _e6);
+    let _e9 = quarter_add(2u, slot_4, p_4, radius_1);
+    let _e11 = quarter_add(3u, slot_4, p_4, radius_1);
+    let b_1 = max(_e9, _e11);
+    let _e15 = atomicMax((&fullest), max(a, b_1));
+    return;
 }
 
-fn shade_list(count: u32) {
+fn shade_list(count: u32, first: u32) {
     var m: u32 = 0u;
 
-    let _e2 = valid;
-    if !(_e2) {
+    let _e3 = valid;
+    if !(_e3) {
         return;
     }
-    let _e5 = interleave_flux_scale(P);
-    let unscale = (1f / _e5);
+    let _e6 = interleave_flux_scale(P);
+    let unscale = (1f / _e6);
     loop {
-        let _e10 = m;
-        if (_e10 < count) {
+        let _e11 = m;
+        if (_e11 < count) {
         } else {
             break;
         }
         {
-            let _e13 = m;
-            let entry = tile_lights[_e13];
-            let _e17 = quarter_bit;
-            if ((entry & _e17) == 0u) {
-                continue;
-            }
-            let slot_4 = (entry & SLOT_BITS);
-            let l = lights[slot_4];
-            let _e27 = pos;
-            let v_3 = (_e27 - l.p0_);
-            let _e32 = rt2_2[slot_4];
-            let _e34 = vpl_near_range2_(_e32, P);
-            let _e35 = near_r2_of(slot_4);
-            let _e39 = params.near_r2_;
-            let _e40 = vpl_near_slc_share(_e34, _e35, dot(v_3, v_3), _e39);
-            if (_e40 > 0f) {
-                let _e45 = nrm;
-                let _e48 = params.min_d2_;
-                let _e49 = vpl_transfer(l.p1_, _e45, v_3, _e48);
-                let t_1 = ((_e49 * _e40) * unscale);
-                let _e53 = e;
-                e = (_e53 + (l.intensity * t_1));
-                let _e58 = kept;
-                kept = (_e58 + 1u);
+            let _e14 = m;
+            let slot_5 = quarter_lights[(first + _e14)];
+            let l = lights[slot_5];
+            let _e22 = pos;
+            let v_3 = (_e22 - l.p0_);
+            let _e27 = rt2_2[slot_5];
+            let _e29 = vpl_near_range2_(_e27, P);
+            let _e30 = near_r2_of(slot_5);
+            let _e34 = params.near_r2_;
+            let _e35 = vpl_near_slc_share(_e29, _e30, dot(v_3, v_3), _e34);
+            if (_e35 > 0f) {
+                let _e40 = nrm;
+                let _e43 = params.min_d2_;
+                let _e44 = vpl_transfer(l.p1_, _e40, v_3, _e43);
+                let t_1 = ((_e44 * _e35) * unscale);
+                let _e48 = e;
+                e = (_e48 + (l.intensity * t_1));
+                let _e53 = kept;
+                kept = (_e53 + 1u);
             }
         }
         continuing {
-            let _e62 = m;
-            m = (_e62 + 1u);
+            let _e57 = m;
+            m = (_e57 + 1u);
         }
     }
     return;
 }
 
-fn cull_tile(li_5: u32, lo_2: vec3<f32>, hi_2: vec3<f32>, grid: vec4<u32>, clusters_at: u32, groups_at: u32) {
+fn list_shade() {
+    workgroupBarrier();
+    let _e2 = quarter;
+    let _e4 = atomicLoad((&quarter_count[_e2]));
+    let _e6 = quarter;
+    shade_list(_e4, (_e6 * QUARTER_LIGHTS));
+    return;
+}
+
+fn cull_tile(li_6: u32, lo_2: vec3<f32>, hi_2: vec3<f32>, grid: vec4<u32>, clusters_at: u32, groups_at: u32) {
     var g_2: u32 = 0u;
     var h: u32;
 
-    if (li_5 == 0u) {
-        atomicStore((&list_count), 0u);
-    }
-    let _e14 = group_count(grid.x, grid.y, grid.z, grid.w);
+    list_clear(li_6);
+    let _e10 = group_count(grid.x, grid.y, grid.z, grid.w);
     loop {
-        let _e17 = g_2;
-        if (_e17 < _e14) {
+        let _e13 = g_2;
+        if (_e13 < _e10) {
         } else {
             break;
         }
         {
-            let _e20 = g_2;
-            let gb = boxes[(groups_at + _e20)];
-            let _e26 = box_overlaps_box(gb.lo, gb.hi, lo_2, hi_2);
-            if !(_e26) {
+            let _e16 = g_2;
+            let gb = boxes[(groups_at + _e16)];
+            let _e22 = box_overlaps_box(gb.lo, gb.hi, lo_2, hi_2);
+            if !(_e22) {
                 continue;
             }
-            let _e28 = g_2;
-            let _e33 = group_first(_e28, grid.x, grid.y, grid.z, grid.w);
-            let first = (clusters_at + _e33);
-            let _e35 = g_2;
-            let _e40 = group_clusters(_e35, grid.x, grid.y, grid.z, grid.w);
-            if (li_5 == 0u) {
+            let _e24 = g_2;
+            let _e29 = group_first(_e24, grid.x, grid.y, grid.z, grid.w);
+            let first_1 = (clusters_at + _e29);
+            let _e31 = g_2;
+            let _e36 = group_clusters(_e31, grid.x, grid.y, grid.z, grid.w);
+            if (li_6 == 0u) {
                 atomicStore((&hit_count), 0u);
             }
             workgroupBarrier();
-            if (li_5 < _e40) {
-                let cb = boxes[(first + li_5)];
-                let _e52 = box_overlaps_box(cb.lo, cb.hi, lo_2, hi_2);
-                if _e52 {
-                    let _e56 = atomicAdd((&hit_count), 1u);
-                    cluster_hits[_e56] = (first + li_5);
+            if (li_6 < _e36) {
+                let cb = boxes[(first_1 + li_6)];
+                let _e48 = box_overlaps_box(cb.lo, cb.hi, lo_2, hi_2);
+                if _e48 {
+                    let _e52 = atomicAdd((&hit_count), 1u);
+                    cluster_hits[_e52] = (first_1 + li_6);
                 }
             }
-            let _e60 = workgroupUniformLoad((&hit_count));
+            let _e56 = workgroupUniformLoad((&hit_count));
             h = 0u;
             loop {
-                let _e63 = h;
-                if (_e63 < _e60) {
+                let _e59 = h;
+                if (_e59 < _e56) {
                 } else {
                     break;
                 }
                 {
-                    let _e66 = workgroupUniformLoad((&list_count));
-                    if ((_e66 + CLUSTER) > MAX_TILE_LIGHTS) {
-                        shade_list(_e66);
+                    let _e61 = list_full();
+                    if _e61 {
+                        list_shade();
                         workgroupBarrier();
-                        if (li_5 == 0u) {
-                            atomicStore((&list_count), 0u);
-                        }
+                        list_clear(li_6);
                         workgroupBarrier();
                     }
-                    let _e76 = h;
-                    let _e78 = cluster_hits[_e76];
-                    let _e79 = cluster_slot(_e78, li_5);
-                    let l_1 = lights[_e79];
+                    let _e63 = h;
+                    let _e65 = cluster_hits[_e63];
+                    let _e66 = cluster_slot(_e65, li_6);
+                    let l_1 = lights[_e66];
                     if any((l_1.intensity != vec3(0f))) {
-                        let _e88 = cull_r2_of(_e79);
-                        let _e89 = cull_radius(_e88);
-                        let _e91 = sphere_overlaps_aabb(l_1.p0_, _e89, lo_2, hi_2);
-                        if _e91 {
-                            let _e95 = atomicAdd((&list_count), 1u);
-                            let _e98 = list_entry(_e79, l_1.p0_, _e89);
-                            tile_lights[_e95] = _e98;
+                        let _e75 = cull_r2_of(_e66);
+                        let _e76 = cull_radius(_e75);
+                        let _e78 = sphere_overlaps_aabb(l_1.p0_, _e76, lo_2, hi_2);
+                        if _e78 {
+                            list_add(_e66, l_1.p0_, _e76);
                         }
                     }
                 }
                 continuing {
-                    let _e100 = h;
-                    h = (_e100 + 1u);
+                    let _e81 = h;
+                    h = (_e81 + 1u);
                 }
             }
             workgroupBarrier();
         }
         continuing {
-            let _e103 = g_2;
-            g_2 = (_e103 + 1u);
+            let _e84 = g_2;
+            g_2 = (_e84 + 1u);
         }
     }
-    let _e106 = workgroupUniformLoad((&list_count));
-    shade_list(_e106);
+    list_shade();
     return;
 }
 

@@ -487,10 +487,6 @@ fn cull_r2_of(slot: u32) -> f32 {
     return _e3;
 }
 
-fn list_entry(slot_1: u32, p_3: vec3<f32>, radius: f32) -> u32 {
-    return slot_1;
-}
-
 fn shade_list(count: u32) {
     var k_1: u32 = 0u;
 
@@ -519,94 +515,113 @@ fn shade_list(count: u32) {
     }
 }
 
-fn cull_tile(li_8: u32, lo_1: vec3<f32>, hi_1: vec3<f32>, grid: vec4<u32>, clusters_at: u32, groups_at: u32) {
+fn list_clear(li_8: u32) {
+    if (li_8 == 0u) {
+        atomicStore((&list_count), 0u);
+        return;
+    } else {
+        return;
+    }
+}
+
+fn list_full() -> bool {
+    let _e1 = workgroupUniformLoad((&list_count));
+    return ((_e1 + CLUSTER) > MAX_TILE_LIGHTS);
+}
+
+fn list_add(slot_1: u32, p_3: vec3<f32>, radius: f32) {
+    let _e6 = atomicAdd((&list_count), 1u);
+    tile_lights[_e6] = slot_1;
+    return;
+}
+
+fn list_shade() {
+    let _e1 = workgroupUniformLoad((&list_count));
+    shade_list(_e1);
+    return;
+}
+
+fn cull_tile(li_9: u32, lo_1: vec3<f32>, hi_1: vec3<f32>, grid: vec4<u32>, clusters_at: u32, groups_at: u32) {
     var g_2: u32 = 0u;
     var h: u32;
 
-    if (li_8 == 0u) {
-        atomicStore((&list_count), 0u);
-    }
-    let _e14 = group_count(grid.x, grid.y, grid.z, grid.w);
-    count_tests(li_8, COUNT_GROUP_TESTS, _e14);
+    list_clear(li_9);
+    let _e10 = group_count(grid.x, grid.y, grid.z, grid.w);
+    count_tests(li_9, COUNT_GROUP_TESTS, _e10);
     loop {
-        let _e18 = g_2;
-        if (_e18 < _e14) {
+        let _e14 = g_2;
+        if (_e14 < _e10) {
         } else {
             break;
         }
         {
-            let _e21 = g_2;
-            let gb = boxes[(groups_at + _e21)];
-            let _e27 = box_overlaps_box(gb.lo, gb.hi, lo_1, hi_1);
-            if !(_e27) {
+            let _e17 = g_2;
+            let gb = boxes[(groups_at + _e17)];
+            let _e23 = box_overlaps_box(gb.lo, gb.hi, lo_1, hi_1);
+            if !(_e23) {
                 continue;
             }
-            let _e29 = g_2;
-            let _e34 = group_first(_e29, grid.x, grid.y, grid.z, grid.w);
-            let first = (clusters_at + _e34);
-            let _e36 = g_2;
-            let _e41 = group_clusters(_e36, grid.x, grid.y, grid.z, grid.w);
-            count_tests(li_8, COUNT_CLUSTER_TESTS, _e41);
-            if (li_8 == 0u) {
+            let _e25 = g_2;
+            let _e30 = group_first(_e25, grid.x, grid.y, grid.z, grid.w);
+            let first = (clusters_at + _e30);
+            let _e32 = g_2;
+            let _e37 = group_clusters(_e32, grid.x, grid.y, grid.z, grid.w);
+            count_tests(li_9, COUNT_CLUSTER_TESTS, _e37);
+            if (li_9 == 0u) {
                 atomicStore((&hit_count), 0u);
             }
             workgroupBarrier();
-            if (li_8 < _e41) {
-                let cb = boxes[(first + li_8)];
-                let _e54 = box_overlaps_box(cb.lo, cb.hi, lo_1, hi_1);
-                if _e54 {
-                    let _e58 = atomicAdd((&hit_count), 1u);
-                    cluster_hits[_e58] = (first + li_8);
+            if (li_9 < _e37) {
+                let cb = boxes[(first + li_9)];
+                let _e50 = box_overlaps_box(cb.lo, cb.hi, lo_1, hi_1);
+                if _e50 {
+                    let _e54 = atomicAdd((&hit_count), 1u);
+                    cluster_hits[_e54] = (first + li_9);
                 }
             }
-            let _e62 = workgroupUniformLoad((&hit_count));
+            let _e58 = workgroupUniformLoad((&hit_count));
             h = 0u;
             loop {
-                let _e65 = h;
-                if (_e65 < _e62) {
+                let _e61 = h;
+                if (_e61 < _e58) {
                 } else {
                     break;
                 }
                 {
-                    let _e68 = workgroupUniformLoad((&list_count));
-                    if ((_e68 + CLUSTER) > MAX_TILE_LIGHTS) {
-                        shade_list(_e68);
+                    let _e63 = list_full();
+                    if _e63 {
+                        list_shade();
                         workgroupBarrier();
-                        if (li_8 == 0u) {
-                            atomicStore((&list_count), 0u);
-                        }
+                        list_clear(li_9);
                         workgroupBarrier();
                     }
-                    let _e78 = h;
-                    let _e80 = cluster_hits[_e78];
-                    let _e81 = cluster_slot(_e80, li_8);
-                    let l_1 = lights[_e81];
+                    let _e65 = h;
+                    let _e67 = cluster_hits[_e65];
+                    let _e68 = cluster_slot(_e67, li_9);
+                    let l_1 = lights[_e68];
                     if any((l_1.intensity != vec3(0f))) {
                         count_one(COUNT_SPHERE_TESTS);
-                        let _e91 = cull_r2_of(_e81);
-                        let _e92 = cull_radius(_e91);
-                        let _e94 = sphere_overlaps_aabb(l_1.p0_, _e92, lo_1, hi_1);
-                        if _e94 {
-                            let _e98 = atomicAdd((&list_count), 1u);
-                            let _e101 = list_entry(_e81, l_1.p0_, _e92);
-                            tile_lights[_e98] = _e101;
+                        let _e78 = cull_r2_of(_e68);
+                        let _e79 = cull_radius(_e78);
+                        let _e81 = sphere_overlaps_aabb(l_1.p0_, _e79, lo_1, hi_1);
+                        if _e81 {
+                            list_add(_e68, l_1.p0_, _e79);
                         }
                     }
                 }
                 continuing {
-                    let _e103 = h;
-                    h = (_e103 + 1u);
+                    let _e84 = h;
+                    h = (_e84 + 1u);
                 }
             }
             workgroupBarrier();
         }
         continuing {
-            let _e106 = g_2;
-            g_2 = (_e106 + 1u);
+            let _e87 = g_2;
+            g_2 = (_e87 + 1u);
         }
     }
-    let _e109 = workgroupUniformLoad((&list_count));
-    shade_list(_e109);
+    list_shade();
     return;
 }
 

@@ -421,10 +421,6 @@ fn cull_r2_of(slot: u32) -> f32 {
     return _e3;
 }
 
-fn list_entry(slot_1: u32, p_3: vec3<f32>, radius: f32) -> u32 {
-    return slot_1;
-}
-
 fn shade_list(count: u32) {
     var k_1: u32 = 0u;
 
@@ -452,91 +448,110 @@ fn shade_list(count: u32) {
     }
 }
 
-fn cull_tile(li_4: u32, lo_1: vec3<f32>, hi_1: vec3<f32>, grid: vec4<u32>, clusters_at: u32, groups_at: u32) {
+fn list_clear(li_4: u32) {
+    if (li_4 == 0u) {
+        atomicStore((&list_count), 0u);
+        return;
+    } else {
+        return;
+    }
+}
+
+fn list_full() -> bool {
+    let _e1 = workgroupUniformLoad((&list_count));
+    return ((_e1 + CLUSTER) > MAX_TILE_LIGHTS);
+}
+
+fn list_add(slot_1: u32, p_3: vec3<f32>, radius: f32) {
+    let _e6 = atomicAdd((&list_count), 1u);
+    tile_lights[_e6] = slot_1;
+    return;
+}
+
+fn list_shade() {
+    let _e1 = workgroupUniformLoad((&list_count));
+    shade_list(_e1);
+    return;
+}
+
+fn cull_tile(li_5: u32, lo_1: vec3<f32>, hi_1: vec3<f32>, grid: vec4<u32>, clusters_at: u32, groups_at: u32) {
     var g_2: u32 = 0u;
     var h: u32;
 
-    if (li_4 == 0u) {
-        atomicStore((&list_count), 0u);
-    }
-    let _e14 = group_count(grid.x, grid.y, grid.z, grid.w);
+    list_clear(li_5);
+    let _e10 = group_count(grid.x, grid.y, grid.z, grid.w);
     loop {
-        let _e17 = g_2;
-        if (_e17 < _e14) {
+        let _e13 = g_2;
+        if (_e13 < _e10) {
         } else {
             break;
         }
         {
-            let _e20 = g_2;
-            let gb = boxes[(groups_at + _e20)];
-            let _e26 = box_overlaps_box(gb.lo, gb.hi, lo_1, hi_1);
-            if !(_e26) {
+            let _e16 = g_2;
+            let gb = boxes[(groups_at + _e16)];
+            let _e22 = box_overlaps_box(gb.lo, gb.hi, lo_1, hi_1);
+            if !(_e22) {
                 continue;
             }
-            let _e28 = g_2;
-            let _e33 = group_first(_e28, grid.x, grid.y, grid.z, grid.w);
-            let first = (clusters_at + _e33);
-            let _e35 = g_2;
-            let _e40 = group_clusters(_e35, grid.x, grid.y, grid.z, grid.w);
-            if (li_4 == 0u) {
+            let _e24 = g_2;
+            let _e29 = group_first(_e24, grid.x, grid.y, grid.z, grid.w);
+            let first = (clusters_at + _e29);
+            let _e31 = g_2;
+            let _e36 = group_clusters(_e31, grid.x, grid.y, grid.z, grid.w);
+            if (li_5 == 0u) {
                 atomicStore((&hit_count), 0u);
             }
             workgroupBarrier();
-            if (li_4 < _e40) {
-                let cb = boxes[(first + li_4)];
-                let _e52 = box_overlaps_box(cb.lo, cb.hi, lo_1, hi_1);
-                if _e52 {
-                    let _e56 = atomicAdd((&hit_count), 1u);
-                    cluster_hits[_e56] = (first + li_4);
+            if (li_5 < _e36) {
+                let cb = boxes[(first + li_5)];
+                let _e48 = box_overlaps_box(cb.lo, cb.hi, lo_1, hi_1);
+                if _e48 {
+                    let _e52 = atomicAdd((&hit_count), 1u);
+                    cluster_hits[_e52] = (first + li_5);
                 }
             }
-            let _e60 = workgroupUniformLoad((&hit_count));
+            let _e56 = workgroupUniformLoad((&hit_count));
             h = 0u;
             loop {
-                let _e63 = h;
-                if (_e63 < _e60) {
+                let _e59 = h;
+                if (_e59 < _e56) {
                 } else {
                     break;
                 }
                 {
-                    let _e66 = workgroupUniformLoad((&list_count));
-                    if ((_e66 + CLUSTER) > MAX_TILE_LIGHTS) {
-                        shade_list(_e66);
+                    let _e61 = list_full();
+                    if _e61 {
+                        list_shade();
                         workgroupBarrier();
-                        if (li_4 == 0u) {
-                            atomicStore((&list_count), 0u);
-                        }
+                        list_clear(li_5);
                         workgroupBarrier();
                     }
-                    let _e76 = h;
-                    let _e78 = cluster_hits[_e76];
-                    let _e79 = cluster_slot(_e78, li_4);
-                    let l_1 = lights[_e79];
+                    let _e63 = h;
+                    let _e65 = cluster_hits[_e63];
+                    let _e66 = cluster_slot(_e65, li_5);
+                    let l_1 = lights[_e66];
                     if any((l_1.intensity != vec3(0f))) {
-                        let _e88 = cull_r2_of(_e79);
-                        let _e89 = cull_radius(_e88);
-                        let _e91 = sphere_overlaps_aabb(l_1.p0_, _e89, lo_1, hi_1);
-                        if _e91 {
-                            let _e95 = atomicAdd((&list_count), 1u);
-                            let _e98 = list_entry(_e79, l_1.p0_, _e89);
-                            tile_lights[_e95] = _e98;
+                        let _e75 = cull_r2_of(_e66);
+                        let _e76 = cull_radius(_e75);
+                        let _e78 = sphere_overlaps_aabb(l_1.p0_, _e76, lo_1, hi_1);
+                        if _e78 {
+                            list_add(_e66, l_1.p0_, _e76);
                         }
                     }
                 }
                 continuing {
-                    let _e100 = h;
-                    h = (_e100 + 1u);
+                    let _e81 = h;
+                    h = (_e81 + 1u);
                 }
             }
             workgroupBarrier();
         }
         continuing {
-            let _e103 = g_2;
-            g_2 = (_e103 + 1u);
+            let _e84 = g_2;
+            g_2 = (_e84 + 1u);
         }
     }
-    let _e106 = workgroupUniformLoad((&list_count));
-    shade_list(_e106);
+    list_shade();
     return;
 }
 

@@ -141,10 +141,8 @@ const uint P = 8u;
 const uint TILE = 8u;
 const uint THREADS = 64u;
 const uint BOX_THREADS = 64u;
-const uint MAX_TILE_LIGHTS = 1024u;
 const uint HALF = 4u;
-const uint QUARTER_SHIFT = 28u;
-const uint SLOT_BITS = 268435455u;
+const uint QUARTER_LIGHTS = 256u;
 
 shared vec3 wg_lo[64];
 
@@ -196,11 +194,13 @@ shared vec3 quarter_lo[4];
 
 shared vec3 quarter_hi[4];
 
-uint quarter_bit = 0u;
+shared uint quarter_lights[1024];
 
-shared uint tile_lights[1024];
+shared uint quarter_count[4];
 
-shared uint list_count;
+shared uint fullest;
+
+uint quarter = 0u;
 
 shared uint cluster_hits[64];
 
@@ -622,12 +622,12 @@ void quarter_boxes(uint li_4, uvec3 lid_1) {
     vec3 hi_1 = vec3(-3.4028235e38);
     uint y = 0u;
     uint x_1 = 0u;
-    quarter_bit = (1u << ((QUARTER_SHIFT + ((lid_1.x >= HALF) ? 1u : 0u)) + ((lid_1.y >= HALF) ? 2u : 0u)));
-    vec3 _e21 = pos;
-    bool _e23 = valid;
-    WorkgroupBox _e24 = point_box(_e21, _e23);
-    wg_lo[li_4] = _e24.lo;
-    wg_hi[li_4] = _e24.hi;
+    quarter = (((lid_1.x >= HALF) ? 1u : 0u) + ((lid_1.y >= HALF) ? 2u : 0u));
+    vec3 _e17 = pos;
+    bool _e19 = valid;
+    WorkgroupBox _e20 = point_box(_e17, _e19);
+    wg_lo[li_4] = _e20.lo;
+    wg_hi[li_4] = _e20.hi;
     memoryBarrierShared();
     barrier();
     if ((li_4 < 4u)) {
@@ -637,12 +637,12 @@ void quarter_boxes(uint li_4, uvec3 lid_1) {
         bool loop_init_1 = true;
         while(true) {
             if (!loop_init_1) {
-                uint _e85 = y;
-                y = (_e85 + 1u);
+                uint _e81 = y;
+                y = (_e81 + 1u);
             }
             loop_init_1 = false;
-            uint _e48 = y;
-            if ((_e48 < min((y0_ + HALF), TILE))) {
+            uint _e44 = y;
+            if ((_e44 < min((y0_ + HALF), TILE))) {
             } else {
                 break;
             }
@@ -651,204 +651,228 @@ void quarter_boxes(uint li_4, uvec3 lid_1) {
                 bool loop_init_2 = true;
                 while(true) {
                     if (!loop_init_2) {
-                        uint _e82 = x_1;
-                        x_1 = (_e82 + 1u);
+                        uint _e78 = x_1;
+                        x_1 = (_e78 + 1u);
                     }
                     loop_init_2 = false;
-                    uint _e55 = x_1;
-                    if ((_e55 < min((x0_ + HALF), TILE))) {
+                    uint _e51 = x_1;
+                    if ((_e51 < min((x0_ + HALF), TILE))) {
                     } else {
                         break;
                     }
                     {
-                        vec3 _e61 = lo_1;
-                        uint _e63 = y;
-                        uint _e66 = x_1;
-                        vec3 _e69 = wg_lo[((_e63 * TILE) + _e66)];
-                        lo_1 = min(_e61, _e69);
-                        vec3 _e71 = hi_1;
-                        uint _e73 = y;
-                        uint _e76 = x_1;
-                        vec3 _e79 = wg_hi[((_e73 * TILE) + _e76)];
-                        hi_1 = max(_e71, _e79);
+                        vec3 _e57 = lo_1;
+                        uint _e59 = y;
+                        uint _e62 = x_1;
+                        vec3 _e65 = wg_lo[((_e59 * TILE) + _e62)];
+                        lo_1 = min(_e57, _e65);
+                        vec3 _e67 = hi_1;
+                        uint _e69 = y;
+                        uint _e72 = x_1;
+                        vec3 _e75 = wg_hi[((_e69 * TILE) + _e72)];
+                        hi_1 = max(_e67, _e75);
                     }
                 }
             }
         }
-        vec3 _e89 = lo_1;
-        quarter_lo[li_4] = _e89;
-        vec3 _e92 = hi_1;
-        quarter_hi[li_4] = _e92;
+        vec3 _e85 = lo_1;
+        quarter_lo[li_4] = _e85;
+        vec3 _e88 = hi_1;
+        quarter_hi[li_4] = _e88;
     }
     memoryBarrierShared();
     barrier();
     return;
 }
 
-uint quarter_meets(uint q, vec3 p_3, float radius) {
+void list_clear(uint li_5) {
+    if ((li_5 < 4u)) {
+        atomicExchange(quarter_count[li_5], 0u);
+    }
+    if ((li_5 == 0u)) {
+        atomicExchange(fullest, 0u);
+        return;
+    } else {
+        return;
+    }
+}
+
+bool list_full() {
+    memoryBarrierShared();
+    barrier();
+    uint _e1 = fullest;
+    memoryBarrierShared();
+    barrier();
+    return ((_e1 + CLUSTER) > QUARTER_LIGHTS);
+}
+
+uint quarter_add(uint q, uint slot_3, vec3 p_3, float radius) {
     vec3 lo_3 = quarter_lo[q];
     vec3 hi_3 = quarter_hi[q];
     if ((lo_3.x > hi_3.x)) {
         return 0u;
     }
-    bool _e18 = sphere_overlaps_aabb(p_3, radius, lo_3, hi_3);
-    return (_e18 ? (1u << (QUARTER_SHIFT + q)) : 0u);
+    bool _e14 = sphere_overlaps_aabb(p_3, radius, lo_3, hi_3);
+    if (!(_e14)) {
+        return 0u;
+    }
+    uint _e20 = atomicAdd(quarter_count[q], 1u);
+    quarter_lights[((q * QUARTER_LIGHTS) + _e20)] = slot_3;
+    return (_e20 + 1u);
 }
 
-uint list_entry(uint slot_3, vec3 p_4, float radius_1) {
-    uint _e4 = quarter_meets(0u, p_4, radius_1);
-    uint _e7 = quarter_meets(1u, p_4, radius_1);
-    uint _e10 = quarter_meets(2u, p_4, radius_1);
-    uint _e13 = quarter_meets(3u, p_4, radius_1);
-    return ((((slot_3 | _e4) | _e7) | _e10) | _e13);
+void list_add(uint slot_4, vec3 p_4, float radius_1) {
+    uint _e4 = quarter_add(0u, slot_4, p_4, radius_1);
+    uint _e6 = quarter_add(1u, slot_4, p_4, radius_1);
+    uint a = max(_e4, _e6);
+    uint _e9 = quarter_add(2u, slot_4, p_4, radius_1);
+    uint _e11 = quarter_add(3u, slot_4, p_4, radius_1);
+    uint b_1 = max(_e9, _e11);
+    uint _e15 = atomicMax(fullest, max(a, b_1));
+    return;
 }
 
-void shade_list(uint count) {
+void shade_list(uint count, uint first) {
     uint m = 0u;
-    bool _e2 = valid;
-    if (!(_e2)) {
+    bool _e3 = valid;
+    if (!(_e3)) {
         return;
     }
-    float _e5 = interleave_flux_scale(P);
-    float unscale = (1.0 / _e5);
+    float _e6 = interleave_flux_scale(P);
+    float unscale = (1.0 / _e6);
     bool loop_init_3 = true;
     while(true) {
         if (!loop_init_3) {
-            uint _e70 = m;
-            m = (_e70 + 1u);
+            uint _e65 = m;
+            m = (_e65 + 1u);
         }
         loop_init_3 = false;
-        uint _e10 = m;
-        if ((_e10 < count)) {
+        uint _e11 = m;
+        if ((_e11 < count)) {
         } else {
             break;
         }
         {
-            uint _e13 = m;
-            uint entry = tile_lights[_e13];
-            uint _e17 = quarter_bit;
-            if (((entry & _e17) == 0u)) {
-                continue;
-            }
-            uint slot_4 = (entry & SLOT_BITS);
-            GpuLight l_5 = _group_0_binding_4_cs[slot_4];
-            vec3 _e27 = pos;
-            vec3 v_8 = (_e27 - l_5.p0_);
-            float _e32 = _group_0_binding_7_cs[slot_4];
-            float _e34 = vpl_near_range2_(_e32, P);
-            float _e35 = near_r2_of(slot_4);
-            float _e39 = _group_0_binding_0_cs.near_r2_;
-            float _e40 = vpl_near_slc_share(_e34, _e35, dot(v_8, v_8), _e39);
-            if ((_e40 > 0.0)) {
-                vec3 _e45 = nrm;
-                float _e48 = _group_0_binding_0_cs.min_d2_;
-                float _e49 = vpl_transfer(l_5.p1_, _e45, v_8, _e48);
-                float t_3 = ((_e49 * _e40) * unscale);
-                vec3 _e53 = e;
-                e = (_e53 + (l_5.intensity * t_3));
-                vec3 _e58 = s;
-                Glossy _e60 = g_4;
-                vec3 _e62 = nrm;
-                vec3 _e63 = glossy_term(_e60, l_5, _e62, v_8, t_3);
-                s = (_e58 + _e63);
-                uint _e66 = kept;
-                kept = (_e66 + 1u);
+            uint _e14 = m;
+            uint slot_5 = quarter_lights[(first + _e14)];
+            GpuLight l_5 = _group_0_binding_4_cs[slot_5];
+            vec3 _e22 = pos;
+            vec3 v_8 = (_e22 - l_5.p0_);
+            float _e27 = _group_0_binding_7_cs[slot_5];
+            float _e29 = vpl_near_range2_(_e27, P);
+            float _e30 = near_r2_of(slot_5);
+            float _e34 = _group_0_binding_0_cs.near_r2_;
+            float _e35 = vpl_near_slc_share(_e29, _e30, dot(v_8, v_8), _e34);
+            if ((_e35 > 0.0)) {
+                vec3 _e40 = nrm;
+                float _e43 = _group_0_binding_0_cs.min_d2_;
+                float _e44 = vpl_transfer(l_5.p1_, _e40, v_8, _e43);
+                float t_3 = ((_e44 * _e35) * unscale);
+                vec3 _e48 = e;
+                e = (_e48 + (l_5.intensity * t_3));
+                vec3 _e53 = s;
+                Glossy _e55 = g_4;
+                vec3 _e57 = nrm;
+                vec3 _e58 = glossy_term(_e55, l_5, _e57, v_8, t_3);
+                s = (_e53 + _e58);
+                uint _e61 = kept;
+                kept = (_e61 + 1u);
             }
         }
     }
     return;
 }
 
-void cull_tile(uint li_5, vec3 lo_2, vec3 hi_2, uvec4 grid, uint clusters_at, uint groups_at) {
+void list_shade() {
+    memoryBarrierShared();
+    barrier();
+    uint _e2 = quarter;
+    uint _e4 = atomicOr(quarter_count[_e2], 0u);
+    uint _e6 = quarter;
+    shade_list(_e4, (_e6 * QUARTER_LIGHTS));
+    return;
+}
+
+void cull_tile(uint li_6, vec3 lo_2, vec3 hi_2, uvec4 grid, uint clusters_at, uint groups_at) {
     uint g_3 = 0u;
     uint h = 0u;
-    if ((li_5 == 0u)) {
-        atomicExchange(list_count, 0u);
-    }
-    uint _e14 = group_count(grid.x, grid.y, grid.z, grid.w);
+    list_clear(li_6);
+    uint _e10 = group_count(grid.x, grid.y, grid.z, grid.w);
     bool loop_init_4 = true;
     while(true) {
         if (!loop_init_4) {
-            uint _e103 = g_3;
-            g_3 = (_e103 + 1u);
+            uint _e84 = g_3;
+            g_3 = (_e84 + 1u);
         }
         loop_init_4 = false;
-        uint _e17 = g_3;
-        if ((_e17 < _e14)) {
+        uint _e13 = g_3;
+        if ((_e13 < _e10)) {
         } else {
             break;
         }
         {
-            uint _e20 = g_3;
-            GpuBox gb = _group_0_binding_6_cs[(groups_at + _e20)];
-            bool _e26 = box_overlaps_box(gb.lo, gb.hi, lo_2, hi_2);
-            if (!(_e26)) {
+            uint _e16 = g_3;
+            GpuBox gb = _group_0_binding_6_cs[(groups_at + _e16)];
+            bool _e22 = box_overlaps_box(gb.lo, gb.hi, lo_2, hi_2);
+            if (!(_e22)) {
                 continue;
             }
-            uint _e28 = g_3;
-            uint _e33 = group_first(_e28, grid.x, grid.y, grid.z, grid.w);
-            uint first = (clusters_at + _e33);
-            uint _e35 = g_3;
-            uint _e40 = group_clusters(_e35, grid.x, grid.y, grid.z, grid.w);
-            if ((li_5 == 0u)) {
+            uint _e24 = g_3;
+            uint _e29 = group_first(_e24, grid.x, grid.y, grid.z, grid.w);
+            uint first_1 = (clusters_at + _e29);
+            uint _e31 = g_3;
+            uint _e36 = group_clusters(_e31, grid.x, grid.y, grid.z, grid.w);
+            if ((li_6 == 0u)) {
                 atomicExchange(hit_count, 0u);
             }
             memoryBarrierShared();
             barrier();
-            if ((li_5 < _e40)) {
-                GpuBox cb = _group_0_binding_6_cs[(first + li_5)];
-                bool _e52 = box_overlaps_box(cb.lo, cb.hi, lo_2, hi_2);
-                if (_e52) {
-                    uint _e56 = atomicAdd(hit_count, 1u);
-                    cluster_hits[_e56] = (first + li_5);
+            if ((li_6 < _e36)) {
+                GpuBox cb = _group_0_binding_6_cs[(first_1 + li_6)];
+                bool _e48 = box_overlaps_box(cb.lo, cb.hi, lo_2, hi_2);
+                if (_e48) {
+                    uint _e52 = atomicAdd(hit_count, 1u);
+                    cluster_hits[_e52] = (first_1 + li_6);
                 }
             }
             memoryBarrierShared();
             barrier();
-            uint _e60 = hit_count;
+            uint _e56 = hit_count;
             memoryBarrierShared();
             barrier();
             h = 0u;
             bool loop_init_5 = true;
             while(true) {
                 if (!loop_init_5) {
-                    uint _e100 = h;
-                    h = (_e100 + 1u);
+                    uint _e81 = h;
+                    h = (_e81 + 1u);
                 }
                 loop_init_5 = false;
-                uint _e63 = h;
-                if ((_e63 < _e60)) {
+                uint _e59 = h;
+                if ((_e59 < _e56)) {
                 } else {
                     break;
                 }
                 {
-                    memoryBarrierShared();
-                    barrier();
-                    uint _e66 = list_count;
-                    memoryBarrierShared();
-                    barrier();
-                    if (((_e66 + CLUSTER) > MAX_TILE_LIGHTS)) {
-                        shade_list(_e66);
+                    bool _e61 = list_full();
+                    if (_e61) {
+                        list_shade();
                         memoryBarrierShared();
                         barrier();
-                        if ((li_5 == 0u)) {
-                            atomicExchange(list_count, 0u);
-                        }
+                        list_clear(li_6);
                         memoryBarrierShared();
                         barrier();
                     }
-                    uint _e76 = h;
-                    uint _e78 = cluster_hits[_e76];
-                    uint _e79 = cluster_slot(_e78, li_5);
-                    GpuLight l_6 = _group_0_binding_4_cs[_e79];
+                    uint _e63 = h;
+                    uint _e65 = cluster_hits[_e63];
+                    uint _e66 = cluster_slot(_e65, li_6);
+                    GpuLight l_6 = _group_0_binding_4_cs[_e66];
                     if (any(notEqual(l_6.intensity, vec3(0.0)))) {
-                        float _e88 = cull_r2_of(_e79);
-                        float _e89 = cull_radius(_e88);
-                        bool _e91 = sphere_overlaps_aabb(l_6.p0_, _e89, lo_2, hi_2);
-                        if (_e91) {
-                            uint _e95 = atomicAdd(list_count, 1u);
-                            uint _e98 = list_entry(_e79, l_6.p0_, _e89);
-                            tile_lights[_e95] = _e98;
+                        float _e75 = cull_r2_of(_e66);
+                        float _e76 = cull_radius(_e75);
+                        bool _e78 = sphere_overlaps_aabb(l_6.p0_, _e76, lo_2, hi_2);
+                        if (_e78) {
+                            list_add(_e66, l_6.p0_, _e76);
                         }
                     }
                 }
@@ -857,12 +881,7 @@ void cull_tile(uint li_5, vec3 lo_2, vec3 hi_2, uvec4 grid, uint clusters_at, ui
             barrier();
         }
     }
-    memoryBarrierShared();
-    barrier();
-    uint _e106 = list_count;
-    memoryBarrierShared();
-    barrier();
-    shade_list(_e106);
+    list_shade();
     return;
 }
 
@@ -873,8 +892,9 @@ void main() {
         wg_box = WorkgroupBox(vec3(0.0), vec3(0.0));
         quarter_lo = vec3[4](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
         quarter_hi = vec3[4](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
-        tile_lights = uint[1024](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
-        list_count = 0u;
+        quarter_lights = uint[1024](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
+        quarter_count = uint[4](0u, 0u, 0u, 0u);
+        fullest = 0u;
         cluster_hits = uint[64](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
         hit_count = 0u;
     }

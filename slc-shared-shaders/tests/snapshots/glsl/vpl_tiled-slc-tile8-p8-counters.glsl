@@ -506,10 +506,6 @@ float cull_r2_of(uint slot) {
     return _e3;
 }
 
-uint list_entry(uint slot_1, vec3 p_3, float radius) {
-    return slot_1;
-}
-
 void shade_list(uint count) {
     uint k_1 = 0u;
     bool _e2 = valid;
@@ -539,99 +535,123 @@ void shade_list(uint count) {
     }
 }
 
-void cull_tile(uint li_8, vec3 lo_1, vec3 hi_1, uvec4 grid, uint clusters_at, uint groups_at) {
-    uint g_2 = 0u;
-    uint h = 0u;
+void list_clear(uint li_8) {
     if ((li_8 == 0u)) {
         atomicExchange(list_count, 0u);
+        return;
+    } else {
+        return;
     }
-    uint _e14 = group_count(grid.x, grid.y, grid.z, grid.w);
-    count_tests(li_8, COUNT_GROUP_TESTS, _e14);
+}
+
+bool list_full() {
+    memoryBarrierShared();
+    barrier();
+    uint _e1 = list_count;
+    memoryBarrierShared();
+    barrier();
+    return ((_e1 + CLUSTER) > MAX_TILE_LIGHTS);
+}
+
+void list_add(uint slot_1, vec3 p_3, float radius) {
+    uint _e6 = atomicAdd(list_count, 1u);
+    tile_lights[_e6] = slot_1;
+    return;
+}
+
+void list_shade() {
+    memoryBarrierShared();
+    barrier();
+    uint _e1 = list_count;
+    memoryBarrierShared();
+    barrier();
+    shade_list(_e1);
+    return;
+}
+
+void cull_tile(uint li_9, vec3 lo_1, vec3 hi_1, uvec4 grid, uint clusters_at, uint groups_at) {
+    uint g_2 = 0u;
+    uint h = 0u;
+    list_clear(li_9);
+    uint _e10 = group_count(grid.x, grid.y, grid.z, grid.w);
+    count_tests(li_9, COUNT_GROUP_TESTS, _e10);
     bool loop_init_2 = true;
     while(true) {
         if (!loop_init_2) {
-            uint _e106 = g_2;
-            g_2 = (_e106 + 1u);
+            uint _e87 = g_2;
+            g_2 = (_e87 + 1u);
         }
         loop_init_2 = false;
-        uint _e18 = g_2;
-        if ((_e18 < _e14)) {
+        uint _e14 = g_2;
+        if ((_e14 < _e10)) {
         } else {
             break;
         }
         {
-            uint _e21 = g_2;
-            GpuBox gb = _group_0_binding_7_cs[(groups_at + _e21)];
-            bool _e27 = box_overlaps_box(gb.lo, gb.hi, lo_1, hi_1);
-            if (!(_e27)) {
+            uint _e17 = g_2;
+            GpuBox gb = _group_0_binding_7_cs[(groups_at + _e17)];
+            bool _e23 = box_overlaps_box(gb.lo, gb.hi, lo_1, hi_1);
+            if (!(_e23)) {
                 continue;
             }
-            uint _e29 = g_2;
-            uint _e34 = group_first(_e29, grid.x, grid.y, grid.z, grid.w);
-            uint first = (clusters_at + _e34);
-            uint _e36 = g_2;
-            uint _e41 = group_clusters(_e36, grid.x, grid.y, grid.z, grid.w);
-            count_tests(li_8, COUNT_CLUSTER_TESTS, _e41);
-            if ((li_8 == 0u)) {
+            uint _e25 = g_2;
+            uint _e30 = group_first(_e25, grid.x, grid.y, grid.z, grid.w);
+            uint first = (clusters_at + _e30);
+            uint _e32 = g_2;
+            uint _e37 = group_clusters(_e32, grid.x, grid.y, grid.z, grid.w);
+            count_tests(li_9, COUNT_CLUSTER_TESTS, _e37);
+            if ((li_9 == 0u)) {
                 atomicExchange(hit_count, 0u);
             }
             memoryBarrierShared();
             barrier();
-            if ((li_8 < _e41)) {
-                GpuBox cb = _group_0_binding_7_cs[(first + li_8)];
-                bool _e54 = box_overlaps_box(cb.lo, cb.hi, lo_1, hi_1);
-                if (_e54) {
-                    uint _e58 = atomicAdd(hit_count, 1u);
-                    cluster_hits[_e58] = (first + li_8);
+            if ((li_9 < _e37)) {
+                GpuBox cb = _group_0_binding_7_cs[(first + li_9)];
+                bool _e50 = box_overlaps_box(cb.lo, cb.hi, lo_1, hi_1);
+                if (_e50) {
+                    uint _e54 = atomicAdd(hit_count, 1u);
+                    cluster_hits[_e54] = (first + li_9);
                 }
             }
             memoryBarrierShared();
             barrier();
-            uint _e62 = hit_count;
+            uint _e58 = hit_count;
             memoryBarrierShared();
             barrier();
             h = 0u;
             bool loop_init_3 = true;
             while(true) {
                 if (!loop_init_3) {
-                    uint _e103 = h;
-                    h = (_e103 + 1u);
+                    uint _e84 = h;
+                    h = (_e84 + 1u);
                 }
                 loop_init_3 = false;
-                uint _e65 = h;
-                if ((_e65 < _e62)) {
+                uint _e61 = h;
+                if ((_e61 < _e58)) {
                 } else {
                     break;
                 }
                 {
-                    memoryBarrierShared();
-                    barrier();
-                    uint _e68 = list_count;
-                    memoryBarrierShared();
-                    barrier();
-                    if (((_e68 + CLUSTER) > MAX_TILE_LIGHTS)) {
-                        shade_list(_e68);
+                    bool _e63 = list_full();
+                    if (_e63) {
+                        list_shade();
                         memoryBarrierShared();
                         barrier();
-                        if ((li_8 == 0u)) {
-                            atomicExchange(list_count, 0u);
-                        }
+                        list_clear(li_9);
                         memoryBarrierShared();
                         barrier();
                     }
-                    uint _e78 = h;
-                    uint _e80 = cluster_hits[_e78];
-                    uint _e81 = cluster_slot(_e80, li_8);
-                    GpuLight l_1 = _group_0_binding_4_cs[_e81];
+                    uint _e65 = h;
+                    uint _e67 = cluster_hits[_e65];
+                    uint _e68 = cluster_slot(_e67, li_9);
+                    GpuLight l_1 = _group_0_binding_4_cs[_e68];
                     if (any(notEqual(l_1.intensity, vec3(0.0)))) {
                         count_one(COUNT_SPHERE_TESTS);
-                        float _e91 = cull_r2_of(_e81);
-                        float _e92 = cull_radius(_e91);
-                        bool _e94 = sphere_overlaps_aabb(l_1.p0_, _e92, lo_1, hi_1);
-                        if (_e94) {
-                            uint _e98 = atomicAdd(list_count, 1u);
-                            uint _e101 = list_entry(_e81, l_1.p0_, _e92);
-                            tile_lights[_e98] = _e101;
+                        float _e78 = cull_r2_of(_e68);
+                        float _e79 = cull_radius(_e78);
+                        bool _e81 = sphere_overlaps_aabb(l_1.p0_, _e79, lo_1, hi_1);
+                        if (_e81) {
+                            list_add(_e68, l_1.p0_, _e79);
                         }
                     }
                 }
@@ -640,12 +660,7 @@ void cull_tile(uint li_8, vec3 lo_1, vec3 hi_1, uvec4 grid, uint clusters_at, ui
             barrier();
         }
     }
-    memoryBarrierShared();
-    barrier();
-    uint _e109 = list_count;
-    memoryBarrierShared();
-    barrier();
-    shade_list(_e109);
+    list_shade();
     return;
 }
 

@@ -612,10 +612,6 @@ float cull_r2_of(uint slot) {
     return _e3;
 }
 
-uint list_entry(uint slot_1, vec3 p_3, float radius) {
-    return slot_1;
-}
-
 void shade_list(uint count) {
     uint k_1 = 0u;
     bool _e2 = valid;
@@ -644,96 +640,120 @@ void shade_list(uint count) {
     }
 }
 
-void cull_tile(uint li_4, vec3 lo_1, vec3 hi_1, uvec4 grid, uint clusters_at, uint groups_at) {
-    uint g_3 = 0u;
-    uint h = 0u;
+void list_clear(uint li_4) {
     if ((li_4 == 0u)) {
         atomicExchange(list_count, 0u);
+        return;
+    } else {
+        return;
     }
-    uint _e14 = group_count(grid.x, grid.y, grid.z, grid.w);
+}
+
+bool list_full() {
+    memoryBarrierShared();
+    barrier();
+    uint _e1 = list_count;
+    memoryBarrierShared();
+    barrier();
+    return ((_e1 + CLUSTER) > MAX_TILE_LIGHTS);
+}
+
+void list_add(uint slot_1, vec3 p_3, float radius) {
+    uint _e6 = atomicAdd(list_count, 1u);
+    tile_lights[_e6] = slot_1;
+    return;
+}
+
+void list_shade() {
+    memoryBarrierShared();
+    barrier();
+    uint _e1 = list_count;
+    memoryBarrierShared();
+    barrier();
+    shade_list(_e1);
+    return;
+}
+
+void cull_tile(uint li_5, vec3 lo_1, vec3 hi_1, uvec4 grid, uint clusters_at, uint groups_at) {
+    uint g_3 = 0u;
+    uint h = 0u;
+    list_clear(li_5);
+    uint _e10 = group_count(grid.x, grid.y, grid.z, grid.w);
     bool loop_init_2 = true;
     while(true) {
         if (!loop_init_2) {
-            uint _e103 = g_3;
-            g_3 = (_e103 + 1u);
+            uint _e84 = g_3;
+            g_3 = (_e84 + 1u);
         }
         loop_init_2 = false;
-        uint _e17 = g_3;
-        if ((_e17 < _e14)) {
+        uint _e13 = g_3;
+        if ((_e13 < _e10)) {
         } else {
             break;
         }
         {
-            uint _e20 = g_3;
-            GpuBox gb = _group_0_binding_7_cs[(groups_at + _e20)];
-            bool _e26 = box_overlaps_box(gb.lo, gb.hi, lo_1, hi_1);
-            if (!(_e26)) {
+            uint _e16 = g_3;
+            GpuBox gb = _group_0_binding_7_cs[(groups_at + _e16)];
+            bool _e22 = box_overlaps_box(gb.lo, gb.hi, lo_1, hi_1);
+            if (!(_e22)) {
                 continue;
             }
-            uint _e28 = g_3;
-            uint _e33 = group_first(_e28, grid.x, grid.y, grid.z, grid.w);
-            uint first = (clusters_at + _e33);
-            uint _e35 = g_3;
-            uint _e40 = group_clusters(_e35, grid.x, grid.y, grid.z, grid.w);
-            if ((li_4 == 0u)) {
+            uint _e24 = g_3;
+            uint _e29 = group_first(_e24, grid.x, grid.y, grid.z, grid.w);
+            uint first = (clusters_at + _e29);
+            uint _e31 = g_3;
+            uint _e36 = group_clusters(_e31, grid.x, grid.y, grid.z, grid.w);
+            if ((li_5 == 0u)) {
                 atomicExchange(hit_count, 0u);
             }
             memoryBarrierShared();
             barrier();
-            if ((li_4 < _e40)) {
-                GpuBox cb = _group_0_binding_7_cs[(first + li_4)];
-                bool _e52 = box_overlaps_box(cb.lo, cb.hi, lo_1, hi_1);
-                if (_e52) {
-                    uint _e56 = atomicAdd(hit_count, 1u);
-                    cluster_hits[_e56] = (first + li_4);
+            if ((li_5 < _e36)) {
+                GpuBox cb = _group_0_binding_7_cs[(first + li_5)];
+                bool _e48 = box_overlaps_box(cb.lo, cb.hi, lo_1, hi_1);
+                if (_e48) {
+                    uint _e52 = atomicAdd(hit_count, 1u);
+                    cluster_hits[_e52] = (first + li_5);
                 }
             }
             memoryBarrierShared();
             barrier();
-            uint _e60 = hit_count;
+            uint _e56 = hit_count;
             memoryBarrierShared();
             barrier();
             h = 0u;
             bool loop_init_3 = true;
             while(true) {
                 if (!loop_init_3) {
-                    uint _e100 = h;
-                    h = (_e100 + 1u);
+                    uint _e81 = h;
+                    h = (_e81 + 1u);
                 }
                 loop_init_3 = false;
-                uint _e63 = h;
-                if ((_e63 < _e60)) {
+                uint _e59 = h;
+                if ((_e59 < _e56)) {
                 } else {
                     break;
                 }
                 {
-                    memoryBarrierShared();
-                    barrier();
-                    uint _e66 = list_count;
-                    memoryBarrierShared();
-                    barrier();
-                    if (((_e66 + CLUSTER) > MAX_TILE_LIGHTS)) {
-                        shade_list(_e66);
+                    bool _e61 = list_full();
+                    if (_e61) {
+                        list_shade();
                         memoryBarrierShared();
                         barrier();
-                        if ((li_4 == 0u)) {
-                            atomicExchange(list_count, 0u);
-                        }
+                        list_clear(li_5);
                         memoryBarrierShared();
                         barrier();
                     }
-                    uint _e76 = h;
-                    uint _e78 = cluster_hits[_e76];
-                    uint _e79 = cluster_slot(_e78, li_4);
-                    GpuLight l_6 = _group_0_binding_4_cs[_e79];
+                    uint _e63 = h;
+                    uint _e65 = cluster_hits[_e63];
+                    uint _e66 = cluster_slot(_e65, li_5);
+                    GpuLight l_6 = _group_0_binding_4_cs[_e66];
                     if (any(notEqual(l_6.intensity, vec3(0.0)))) {
-                        float _e88 = cull_r2_of(_e79);
-                        float _e89 = cull_radius(_e88);
-                        bool _e91 = sphere_overlaps_aabb(l_6.p0_, _e89, lo_1, hi_1);
-                        if (_e91) {
-                            uint _e95 = atomicAdd(list_count, 1u);
-                            uint _e98 = list_entry(_e79, l_6.p0_, _e89);
-                            tile_lights[_e95] = _e98;
+                        float _e75 = cull_r2_of(_e66);
+                        float _e76 = cull_radius(_e75);
+                        bool _e78 = sphere_overlaps_aabb(l_6.p0_, _e76, lo_1, hi_1);
+                        if (_e78) {
+                            list_add(_e66, l_6.p0_, _e76);
                         }
                     }
                 }
@@ -742,12 +762,7 @@ void cull_tile(uint li_4, vec3 lo_1, vec3 hi_1, uvec4 grid, uint clusters_at, ui
             barrier();
         }
     }
-    memoryBarrierShared();
-    barrier();
-    uint _e106 = list_count;
-    memoryBarrierShared();
-    barrier();
-    shade_list(_e106);
+    list_shade();
     return;
 }
 

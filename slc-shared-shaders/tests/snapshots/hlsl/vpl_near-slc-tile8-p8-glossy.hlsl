@@ -146,10 +146,8 @@ static const uint P = 8u;
 static const uint TILE = 8u;
 static const uint THREADS = 64u;
 static const uint BOX_THREADS = 64u;
-static const uint MAX_TILE_LIGHTS = 1024u;
 static const uint HALF = 4u;
-static const uint QUARTER_SHIFT = 28u;
-static const uint SLOT_BITS = 268435455u;
+static const uint QUARTER_LIGHTS = 256u;
 
 groupshared float3 wg_lo[64];
 groupshared float3 wg_hi[64];
@@ -176,9 +174,10 @@ static float3 s = (float3)0;
 static Glossy g_4 = (Glossy)0;
 groupshared float3 quarter_lo[4];
 groupshared float3 quarter_hi[4];
-static uint quarter_bit = (uint)0;
-groupshared uint tile_lights[1024];
-groupshared uint list_count;
+groupshared uint quarter_lights[1024];
+groupshared uint quarter_count[4];
+groupshared uint fullest;
+static uint quarter = (uint)0;
 groupshared uint cluster_hits[64];
 groupshared uint hit_count;
 
@@ -698,12 +697,12 @@ void quarter_boxes(uint li_4, uint3 lid_1)
     uint y = (uint)0;
     uint x_1 = (uint)0;
 
-    quarter_bit = (1u << ((QUARTER_SHIFT + ((lid_1.x >= HALF) ? 1u : 0u)) + ((lid_1.y >= HALF) ? 2u : 0u)));
-    float3 _e21 = pos;
-    bool _e23 = valid;
-    const WorkgroupBox _e24 = point_box(_e21, _e23);
-    wg_lo[min(uint(li_4), 63u)] = _e24.lo;
-    wg_hi[min(uint(li_4), 63u)] = _e24.hi;
+    quarter = (((lid_1.x >= HALF) ? 1u : 0u) + ((lid_1.y >= HALF) ? 2u : 0u));
+    float3 _e17 = pos;
+    bool _e19 = valid;
+    const WorkgroupBox _e20 = point_box(_e17, _e19);
+    wg_lo[min(uint(li_4), 63u)] = _e20.lo;
+    wg_hi[min(uint(li_4), 63u)] = _e20.hi;
     GroupMemoryBarrierWithGroupSync();
     if ((li_4 < 4u)) {
         uint x0_ = (naga_mod(li_4, 2u) * HALF);
@@ -715,12 +714,12 @@ void quarter_boxes(uint li_4, uint3 lid_1)
             if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
             loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
             if (!loop_init_1) {
-                uint _e85 = y;
-                y = (_e85 + 1u);
+                uint _e81 = y;
+                y = (_e81 + 1u);
             }
             loop_init_1 = false;
-            uint _e48 = y;
-            if ((_e48 < min((y0_ + HALF), TILE))) {
+            uint _e44 = y;
+            if ((_e44 < min((y0_ + HALF), TILE))) {
             } else {
                 break;
             }
@@ -732,57 +731,86 @@ void quarter_boxes(uint li_4, uint3 lid_1)
                     if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
                     loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
                     if (!loop_init_2) {
-                        uint _e82 = x_1;
-                        x_1 = (_e82 + 1u);
+                        uint _e78 = x_1;
+                        x_1 = (_e78 + 1u);
                     }
                     loop_init_2 = false;
-                    uint _e55 = x_1;
-                    if ((_e55 < min((x0_ + HALF), TILE))) {
+                    uint _e51 = x_1;
+                    if ((_e51 < min((x0_ + HALF), TILE))) {
                     } else {
                         break;
                     }
                     {
-                        float3 _e61 = lo_1;
-                        uint _e63 = y;
-                        uint _e66 = x_1;
-                        float3 _e69 = wg_lo[min(uint(((_e63 * TILE) + _e66)), 63u)];
-                        lo_1 = min(_e61, _e69);
-                        float3 _e71 = hi_1;
-                        uint _e73 = y;
-                        uint _e76 = x_1;
-                        float3 _e79 = wg_hi[min(uint(((_e73 * TILE) + _e76)), 63u)];
-                        hi_1 = max(_e71, _e79);
+                        float3 _e57 = lo_1;
+                        uint _e59 = y;
+                        uint _e62 = x_1;
+                        float3 _e65 = wg_lo[min(uint(((_e59 * TILE) + _e62)), 63u)];
+                        lo_1 = min(_e57, _e65);
+                        float3 _e67 = hi_1;
+                        uint _e69 = y;
+                        uint _e72 = x_1;
+                        float3 _e75 = wg_hi[min(uint(((_e69 * TILE) + _e72)), 63u)];
+                        hi_1 = max(_e67, _e75);
                     }
                 }
             }
         }
-        float3 _e89 = lo_1;
-        quarter_lo[min(uint(li_4), 3u)] = _e89;
-        float3 _e92 = hi_1;
-        quarter_hi[min(uint(li_4), 3u)] = _e92;
+        float3 _e85 = lo_1;
+        quarter_lo[min(uint(li_4), 3u)] = _e85;
+        float3 _e88 = hi_1;
+        quarter_hi[min(uint(li_4), 3u)] = _e88;
     }
     GroupMemoryBarrierWithGroupSync();
     return;
 }
 
-uint quarter_meets(uint q, float3 p_3, float radius)
+void list_clear(uint li_5)
+{
+    if ((li_5 < 4u)) {
+        { uint dummy = 0; InterlockedExchange(quarter_count[min(uint(li_5), 3u)], 0u, dummy); }
+    }
+    if ((li_5 == 0u)) {
+        { uint dummy_1 = 0; InterlockedExchange(fullest, 0u, dummy_1); }
+        return;
+    } else {
+        return;
+    }
+}
+
+bool list_full()
+{
+    GroupMemoryBarrierWithGroupSync();
+    uint _e1 = fullest;
+    GroupMemoryBarrierWithGroupSync();
+    return ((_e1 + CLUSTER) > QUARTER_LIGHTS);
+}
+
+uint quarter_add(uint q, uint slot_3, float3 p_3, float radius)
 {
     float3 lo_3 = quarter_lo[min(uint(q), 3u)];
     float3 hi_3 = quarter_hi[min(uint(q), 3u)];
     if ((lo_3.x > hi_3.x)) {
         return 0u;
     }
-    const bool _e18 = sphere_overlaps_aabb(p_3, radius, lo_3, hi_3);
-    return (_e18 ? (1u << (QUARTER_SHIFT + q)) : 0u);
+    const bool _e14 = sphere_overlaps_aabb(p_3, radius, lo_3, hi_3);
+    if (!(_e14)) {
+        return 0u;
+    }
+    uint _e20; InterlockedAdd(quarter_count[min(uint(q), 3u)], 1u, _e20);
+    quarter_lights[min(uint(((q * QUARTER_LIGHTS) + _e20)), 1023u)] = slot_3;
+    return (_e20 + 1u);
 }
 
-uint list_entry(uint slot_3, float3 p_4, float radius_1)
+void list_add(uint slot_4, float3 p_4, float radius_1)
 {
-    const uint _e4 = quarter_meets(0u, p_4, radius_1);
-    const uint _e7 = quarter_meets(1u, p_4, radius_1);
-    const uint _e10 = quarter_meets(2u, p_4, radius_1);
-    const uint _e13 = quarter_meets(3u, p_4, radius_1);
-    return ((((slot_3 | _e4) | _e7) | _e10) | _e13);
+    const uint _e4 = quarter_add(0u, slot_4, p_4, radius_1);
+    const uint _e6 = quarter_add(1u, slot_4, p_4, radius_1);
+    uint a = max(_e4, _e6);
+    const uint _e9 = quarter_add(2u, slot_4, p_4, radius_1);
+    const uint _e11 = quarter_add(3u, slot_4, p_4, radius_1);
+    uint b_1 = max(_e9, _e11);
+    uint _e15; InterlockedMax(fullest, max(a, b_1), _e15);
+    return;
 }
 
 GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, float3 arg4, float arg5, float3 arg6, uint arg7) {
@@ -798,64 +826,69 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
     return ret;
 }
 
-void shade_list(uint count)
+void shade_list(uint count, uint first)
 {
     uint m = 0u;
 
-    bool _e2 = valid;
-    if (!(_e2)) {
+    bool _e3 = valid;
+    if (!(_e3)) {
         return;
     }
-    const float _e5 = interleave_flux_scale(P);
-    float unscale = (1.0 / _e5);
+    const float _e6 = interleave_flux_scale(P);
+    float unscale = (1.0 / _e6);
     uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
     bool loop_init_3 = true;
     while(true) {
         if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
         loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
         if (!loop_init_3) {
-            uint _e70 = m;
-            m = (_e70 + 1u);
+            uint _e65 = m;
+            m = (_e65 + 1u);
         }
         loop_init_3 = false;
-        uint _e10 = m;
-        if ((_e10 < count)) {
+        uint _e11 = m;
+        if ((_e11 < count)) {
         } else {
             break;
         }
         {
-            uint _e13 = m;
-            uint entry = tile_lights[min(uint(_e13), 1023u)];
-            uint _e17 = quarter_bit;
-            if (((entry & _e17) == 0u)) {
-                continue;
-            }
-            uint slot_4 = (entry & SLOT_BITS);
-            GpuLight l_5 = ConstructGpuLight(asfloat(lights.Load3(slot_4*64+0)), asuint(lights.Load(slot_4*64+12)), asfloat(lights.Load3(slot_4*64+16)), asfloat(lights.Load(slot_4*64+28)), asfloat(lights.Load3(slot_4*64+32)), asfloat(lights.Load(slot_4*64+44)), asfloat(lights.Load3(slot_4*64+48)), asuint(lights.Load(slot_4*64+60)));
-            float3 _e27 = pos;
-            float3 v_8 = (_e27 - l_5.p0_);
-            float _e32 = asfloat(rt2_2.Load(slot_4*4));
-            const float _e34 = vpl_near_range2_(_e32, P);
-            const float _e35 = near_r2_of(slot_4);
-            float _e39 = params.near_r2_;
-            const float _e40 = vpl_near_slc_share(_e34, _e35, dot(v_8, v_8), _e39);
-            if ((_e40 > 0.0)) {
-                float3 _e45 = nrm;
-                float _e48 = params.min_d2_;
-                const float _e49 = vpl_transfer(l_5.p1_, _e45, v_8, _e48);
-                float t_3 = ((_e49 * _e40) * unscale);
-                float3 _e53 = e;
-                e = (_e53 + (l_5.intensity * t_3));
-                float3 _e58 = s;
-                Glossy _e60 = g_4;
-                float3 _e62 = nrm;
-                const float3 _e63 = glossy_term(_e60, l_5, _e62, v_8, t_3);
-                s = (_e58 + _e63);
-                uint _e66 = kept;
-                kept = (_e66 + 1u);
+            uint _e14 = m;
+            uint slot_5 = quarter_lights[min(uint((first + _e14)), 1023u)];
+            GpuLight l_5 = ConstructGpuLight(asfloat(lights.Load3(slot_5*64+0)), asuint(lights.Load(slot_5*64+12)), asfloat(lights.Load3(slot_5*64+16)), asfloat(lights.Load(slot_5*64+28)), asfloat(lights.Load3(slot_5*64+32)), asfloat(lights.Load(slot_5*64+44)), asfloat(lights.Load3(slot_5*64+48)), asuint(lights.Load(slot_5*64+60)));
+            float3 _e22 = pos;
+            float3 v_8 = (_e22 - l_5.p0_);
+            float _e27 = asfloat(rt2_2.Load(slot_5*4));
+            const float _e29 = vpl_near_range2_(_e27, P);
+            const float _e30 = near_r2_of(slot_5);
+            float _e34 = params.near_r2_;
+            const float _e35 = vpl_near_slc_share(_e29, _e30, dot(v_8, v_8), _e34);
+            if ((_e35 > 0.0)) {
+                float3 _e40 = nrm;
+                float _e43 = params.min_d2_;
+                const float _e44 = vpl_transfer(l_5.p1_, _e40, v_8, _e43);
+                float t_3 = ((_e44 * _e35) * unscale);
+                float3 _e48 = e;
+                e = (_e48 + (l_5.intensity * t_3));
+                float3 _e53 = s;
+                Glossy _e55 = g_4;
+                float3 _e57 = nrm;
+                const float3 _e58 = glossy_term(_e55, l_5, _e57, v_8, t_3);
+                s = (_e53 + _e58);
+                uint _e61 = kept;
+                kept = (_e61 + 1u);
             }
         }
     }
+    return;
+}
+
+void list_shade()
+{
+    GroupMemoryBarrierWithGroupSync();
+    uint _e2 = quarter;
+    uint _e4; InterlockedOr(quarter_count[min(uint(_e2), 3u)], 0, _e4);
+    uint _e6 = quarter;
+    shade_list(_e4, (_e6 * QUARTER_LIGHTS));
     return;
 }
 
@@ -868,56 +901,54 @@ GpuBox ConstructGpuBox(float3 arg0, float arg1, float3 arg2, float arg3) {
     return ret;
 }
 
-void cull_tile(uint li_5, float3 lo_2, float3 hi_2, uint4 grid, uint clusters_at, uint groups_at)
+void cull_tile(uint li_6, float3 lo_2, float3 hi_2, uint4 grid, uint clusters_at, uint groups_at)
 {
     uint g_3 = 0u;
     uint h = (uint)0;
 
-    if ((li_5 == 0u)) {
-        { uint dummy = 0; InterlockedExchange(list_count, 0u, dummy); }
-    }
-    const uint _e14 = group_count(grid.x, grid.y, grid.z, grid.w);
+    list_clear(li_6);
+    const uint _e10 = group_count(grid.x, grid.y, grid.z, grid.w);
     uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
     bool loop_init_4 = true;
     while(true) {
         if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         if (!loop_init_4) {
-            uint _e103 = g_3;
-            g_3 = (_e103 + 1u);
+            uint _e84 = g_3;
+            g_3 = (_e84 + 1u);
         }
         loop_init_4 = false;
-        uint _e17 = g_3;
-        if ((_e17 < _e14)) {
+        uint _e13 = g_3;
+        if ((_e13 < _e10)) {
         } else {
             break;
         }
         {
-            uint _e20 = g_3;
-            GpuBox gb = ConstructGpuBox(asfloat(boxes.Load3((groups_at + _e20)*32+0)), asfloat(boxes.Load((groups_at + _e20)*32+12)), asfloat(boxes.Load3((groups_at + _e20)*32+16)), asfloat(boxes.Load((groups_at + _e20)*32+28)));
-            const bool _e26 = box_overlaps_box(gb.lo, gb.hi, lo_2, hi_2);
-            if (!(_e26)) {
+            uint _e16 = g_3;
+            GpuBox gb = ConstructGpuBox(asfloat(boxes.Load3((groups_at + _e16)*32+0)), asfloat(boxes.Load((groups_at + _e16)*32+12)), asfloat(boxes.Load3((groups_at + _e16)*32+16)), asfloat(boxes.Load((groups_at + _e16)*32+28)));
+            const bool _e22 = box_overlaps_box(gb.lo, gb.hi, lo_2, hi_2);
+            if (!(_e22)) {
                 continue;
             }
-            uint _e28 = g_3;
-            const uint _e33 = group_first(_e28, grid.x, grid.y, grid.z, grid.w);
-            uint first = (clusters_at + _e33);
-            uint _e35 = g_3;
-            const uint _e40 = group_clusters(_e35, grid.x, grid.y, grid.z, grid.w);
-            if ((li_5 == 0u)) {
-                { uint dummy_1 = 0; InterlockedExchange(hit_count, 0u, dummy_1); }
+            uint _e24 = g_3;
+            const uint _e29 = group_first(_e24, grid.x, grid.y, grid.z, grid.w);
+            uint first_1 = (clusters_at + _e29);
+            uint _e31 = g_3;
+            const uint _e36 = group_clusters(_e31, grid.x, grid.y, grid.z, grid.w);
+            if ((li_6 == 0u)) {
+                { uint dummy_2 = 0; InterlockedExchange(hit_count, 0u, dummy_2); }
             }
             GroupMemoryBarrierWithGroupSync();
-            if ((li_5 < _e40)) {
-                GpuBox cb = ConstructGpuBox(asfloat(boxes.Load3((first + li_5)*32+0)), asfloat(boxes.Load((first + li_5)*32+12)), asfloat(boxes.Load3((first + li_5)*32+16)), asfloat(boxes.Load((first + li_5)*32+28)));
-                const bool _e52 = box_overlaps_box(cb.lo, cb.hi, lo_2, hi_2);
-                if (_e52) {
-                    uint _e56; InterlockedAdd(hit_count, 1u, _e56);
-                    cluster_hits[min(uint(_e56), 63u)] = (first + li_5);
+            if ((li_6 < _e36)) {
+                GpuBox cb = ConstructGpuBox(asfloat(boxes.Load3((first_1 + li_6)*32+0)), asfloat(boxes.Load((first_1 + li_6)*32+12)), asfloat(boxes.Load3((first_1 + li_6)*32+16)), asfloat(boxes.Load((first_1 + li_6)*32+28)));
+                const bool _e48 = box_overlaps_box(cb.lo, cb.hi, lo_2, hi_2);
+                if (_e48) {
+                    uint _e52; InterlockedAdd(hit_count, 1u, _e52);
+                    cluster_hits[min(uint(_e52), 63u)] = (first_1 + li_6);
                 }
             }
             GroupMemoryBarrierWithGroupSync();
-            uint _e60 = hit_count;
+            uint _e56 = hit_count;
             GroupMemoryBarrierWithGroupSync();
             h = 0u;
             uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
@@ -926,39 +957,33 @@ void cull_tile(uint li_5, float3 lo_2, float3 hi_2, uint4 grid, uint clusters_at
                 if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
                 loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
                 if (!loop_init_5) {
-                    uint _e100 = h;
-                    h = (_e100 + 1u);
+                    uint _e81 = h;
+                    h = (_e81 + 1u);
                 }
                 loop_init_5 = false;
-                uint _e63 = h;
-                if ((_e63 < _e60)) {
+                uint _e59 = h;
+                if ((_e59 < _e56)) {
                 } else {
                     break;
                 }
                 {
-                    GroupMemoryBarrierWithGroupSync();
-                    uint _e66 = list_count;
-                    GroupMemoryBarrierWithGroupSync();
-                    if (((_e66 + CLUSTER) > MAX_TILE_LIGHTS)) {
-                        shade_list(_e66);
+                    const bool _e61 = list_full();
+                    if (_e61) {
+                        list_shade();
                         GroupMemoryBarrierWithGroupSync();
-                        if ((li_5 == 0u)) {
-                            { uint dummy_2 = 0; InterlockedExchange(list_count, 0u, dummy_2); }
-                        }
+                        list_clear(li_6);
                         GroupMemoryBarrierWithGroupSync();
                     }
-                    uint _e76 = h;
-                    uint _e78 = cluster_hits[min(uint(_e76), 63u)];
-                    const uint _e79 = cluster_slot(_e78, li_5);
-                    GpuLight l_6 = ConstructGpuLight(asfloat(lights.Load3(_e79*64+0)), asuint(lights.Load(_e79*64+12)), asfloat(lights.Load3(_e79*64+16)), asfloat(lights.Load(_e79*64+28)), asfloat(lights.Load3(_e79*64+32)), asfloat(lights.Load(_e79*64+44)), asfloat(lights.Load3(_e79*64+48)), asuint(lights.Load(_e79*64+60)));
+                    uint _e63 = h;
+                    uint _e65 = cluster_hits[min(uint(_e63), 63u)];
+                    const uint _e66 = cluster_slot(_e65, li_6);
+                    GpuLight l_6 = ConstructGpuLight(asfloat(lights.Load3(_e66*64+0)), asuint(lights.Load(_e66*64+12)), asfloat(lights.Load3(_e66*64+16)), asfloat(lights.Load(_e66*64+28)), asfloat(lights.Load3(_e66*64+32)), asfloat(lights.Load(_e66*64+44)), asfloat(lights.Load3(_e66*64+48)), asuint(lights.Load(_e66*64+60)));
                     if (any((l_6.intensity != (0.0).xxx))) {
-                        const float _e88 = cull_r2_of(_e79);
-                        const float _e89 = cull_radius(_e88);
-                        const bool _e91 = sphere_overlaps_aabb(l_6.p0_, _e89, lo_2, hi_2);
-                        if (_e91) {
-                            uint _e95; InterlockedAdd(list_count, 1u, _e95);
-                            const uint _e98 = list_entry(_e79, l_6.p0_, _e89);
-                            tile_lights[min(uint(_e95), 1023u)] = _e98;
+                        const float _e75 = cull_r2_of(_e66);
+                        const float _e76 = cull_radius(_e75);
+                        const bool _e78 = sphere_overlaps_aabb(l_6.p0_, _e76, lo_2, hi_2);
+                        if (_e78) {
+                            list_add(_e66, l_6.p0_, _e76);
                         }
                     }
                 }
@@ -966,10 +991,7 @@ void cull_tile(uint li_5, float3 lo_2, float3 hi_2, uint4 grid, uint clusters_at
             GroupMemoryBarrierWithGroupSync();
         }
     }
-    GroupMemoryBarrierWithGroupSync();
-    uint _e106 = list_count;
-    GroupMemoryBarrierWithGroupSync();
-    shade_list(_e106);
+    list_shade();
     return;
 }
 
@@ -982,8 +1004,9 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
         wg_box = (WorkgroupBox)0;
         quarter_lo = (float3[4])0;
         quarter_hi = (float3[4])0;
-        tile_lights = (uint[1024])0;
-        list_count = (uint)0;
+        quarter_lights = (uint[1024])0;
+        quarter_count = (uint[4])0;
+        fullest = (uint)0;
         cluster_hits = (uint[64])0;
         hit_count = (uint)0;
     }

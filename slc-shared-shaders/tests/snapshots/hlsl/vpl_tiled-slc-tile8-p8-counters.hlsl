@@ -556,11 +556,6 @@ float cull_r2_of(uint slot)
     return _e3;
 }
 
-uint list_entry(uint slot_1, float3 p_3, float radius)
-{
-    return slot_1;
-}
-
 void shade_list(uint count)
 {
     uint k_1 = 0u;
@@ -595,6 +590,40 @@ void shade_list(uint count)
     }
 }
 
+void list_clear(uint li_8)
+{
+    if ((li_8 == 0u)) {
+        { uint dummy_1 = 0; InterlockedExchange(list_count, 0u, dummy_1); }
+        return;
+    } else {
+        return;
+    }
+}
+
+bool list_full()
+{
+    GroupMemoryBarrierWithGroupSync();
+    uint _e1 = list_count;
+    GroupMemoryBarrierWithGroupSync();
+    return ((_e1 + CLUSTER) > MAX_TILE_LIGHTS);
+}
+
+void list_add(uint slot_1, float3 p_3, float radius)
+{
+    uint _e6; InterlockedAdd(list_count, 1u, _e6);
+    tile_lights[min(uint(_e6), 1023u)] = slot_1;
+    return;
+}
+
+void list_shade()
+{
+    GroupMemoryBarrierWithGroupSync();
+    uint _e1 = list_count;
+    GroupMemoryBarrierWithGroupSync();
+    shade_list(_e1);
+    return;
+}
+
 GpuBox ConstructGpuBox(float3 arg0, float arg1, float3 arg2, float arg3) {
     GpuBox ret = (GpuBox)0;
     ret.lo = arg0;
@@ -604,58 +633,56 @@ GpuBox ConstructGpuBox(float3 arg0, float arg1, float3 arg2, float arg3) {
     return ret;
 }
 
-void cull_tile(uint li_8, float3 lo_1, float3 hi_1, uint4 grid, uint clusters_at, uint groups_at)
+void cull_tile(uint li_9, float3 lo_1, float3 hi_1, uint4 grid, uint clusters_at, uint groups_at)
 {
     uint g_2 = 0u;
     uint h = (uint)0;
 
-    if ((li_8 == 0u)) {
-        { uint dummy_1 = 0; InterlockedExchange(list_count, 0u, dummy_1); }
-    }
-    const uint _e14 = group_count(grid.x, grid.y, grid.z, grid.w);
-    count_tests(li_8, COUNT_GROUP_TESTS, _e14);
+    list_clear(li_9);
+    const uint _e10 = group_count(grid.x, grid.y, grid.z, grid.w);
+    count_tests(li_9, COUNT_GROUP_TESTS, _e10);
     uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
     bool loop_init_2 = true;
     while(true) {
         if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
         loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e106 = g_2;
-            g_2 = (_e106 + 1u);
+            uint _e87 = g_2;
+            g_2 = (_e87 + 1u);
         }
         loop_init_2 = false;
-        uint _e18 = g_2;
-        if ((_e18 < _e14)) {
+        uint _e14 = g_2;
+        if ((_e14 < _e10)) {
         } else {
             break;
         }
         {
-            uint _e21 = g_2;
-            GpuBox gb = ConstructGpuBox(asfloat(boxes.Load3((groups_at + _e21)*32+0)), asfloat(boxes.Load((groups_at + _e21)*32+12)), asfloat(boxes.Load3((groups_at + _e21)*32+16)), asfloat(boxes.Load((groups_at + _e21)*32+28)));
-            const bool _e27 = box_overlaps_box(gb.lo, gb.hi, lo_1, hi_1);
-            if (!(_e27)) {
+            uint _e17 = g_2;
+            GpuBox gb = ConstructGpuBox(asfloat(boxes.Load3((groups_at + _e17)*32+0)), asfloat(boxes.Load((groups_at + _e17)*32+12)), asfloat(boxes.Load3((groups_at + _e17)*32+16)), asfloat(boxes.Load((groups_at + _e17)*32+28)));
+            const bool _e23 = box_overlaps_box(gb.lo, gb.hi, lo_1, hi_1);
+            if (!(_e23)) {
                 continue;
             }
-            uint _e29 = g_2;
-            const uint _e34 = group_first(_e29, grid.x, grid.y, grid.z, grid.w);
-            uint first = (clusters_at + _e34);
-            uint _e36 = g_2;
-            const uint _e41 = group_clusters(_e36, grid.x, grid.y, grid.z, grid.w);
-            count_tests(li_8, COUNT_CLUSTER_TESTS, _e41);
-            if ((li_8 == 0u)) {
+            uint _e25 = g_2;
+            const uint _e30 = group_first(_e25, grid.x, grid.y, grid.z, grid.w);
+            uint first = (clusters_at + _e30);
+            uint _e32 = g_2;
+            const uint _e37 = group_clusters(_e32, grid.x, grid.y, grid.z, grid.w);
+            count_tests(li_9, COUNT_CLUSTER_TESTS, _e37);
+            if ((li_9 == 0u)) {
                 { uint dummy_2 = 0; InterlockedExchange(hit_count, 0u, dummy_2); }
             }
             GroupMemoryBarrierWithGroupSync();
-            if ((li_8 < _e41)) {
-                GpuBox cb = ConstructGpuBox(asfloat(boxes.Load3((first + li_8)*32+0)), asfloat(boxes.Load((first + li_8)*32+12)), asfloat(boxes.Load3((first + li_8)*32+16)), asfloat(boxes.Load((first + li_8)*32+28)));
-                const bool _e54 = box_overlaps_box(cb.lo, cb.hi, lo_1, hi_1);
-                if (_e54) {
-                    uint _e58; InterlockedAdd(hit_count, 1u, _e58);
-                    cluster_hits[min(uint(_e58), 63u)] = (first + li_8);
+            if ((li_9 < _e37)) {
+                GpuBox cb = ConstructGpuBox(asfloat(boxes.Load3((first + li_9)*32+0)), asfloat(boxes.Load((first + li_9)*32+12)), asfloat(boxes.Load3((first + li_9)*32+16)), asfloat(boxes.Load((first + li_9)*32+28)));
+                const bool _e50 = box_overlaps_box(cb.lo, cb.hi, lo_1, hi_1);
+                if (_e50) {
+                    uint _e54; InterlockedAdd(hit_count, 1u, _e54);
+                    cluster_hits[min(uint(_e54), 63u)] = (first + li_9);
                 }
             }
             GroupMemoryBarrierWithGroupSync();
-            uint _e62 = hit_count;
+            uint _e58 = hit_count;
             GroupMemoryBarrierWithGroupSync();
             h = 0u;
             uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
@@ -664,40 +691,34 @@ void cull_tile(uint li_8, float3 lo_1, float3 hi_1, uint4 grid, uint clusters_at
                 if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
                 loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
                 if (!loop_init_3) {
-                    uint _e103 = h;
-                    h = (_e103 + 1u);
+                    uint _e84 = h;
+                    h = (_e84 + 1u);
                 }
                 loop_init_3 = false;
-                uint _e65 = h;
-                if ((_e65 < _e62)) {
+                uint _e61 = h;
+                if ((_e61 < _e58)) {
                 } else {
                     break;
                 }
                 {
-                    GroupMemoryBarrierWithGroupSync();
-                    uint _e68 = list_count;
-                    GroupMemoryBarrierWithGroupSync();
-                    if (((_e68 + CLUSTER) > MAX_TILE_LIGHTS)) {
-                        shade_list(_e68);
+                    const bool _e63 = list_full();
+                    if (_e63) {
+                        list_shade();
                         GroupMemoryBarrierWithGroupSync();
-                        if ((li_8 == 0u)) {
-                            { uint dummy_3 = 0; InterlockedExchange(list_count, 0u, dummy_3); }
-                        }
+                        list_clear(li_9);
                         GroupMemoryBarrierWithGroupSync();
                     }
-                    uint _e78 = h;
-                    uint _e80 = cluster_hits[min(uint(_e78), 63u)];
-                    const uint _e81 = cluster_slot(_e80, li_8);
-                    GpuLight l_1 = ConstructGpuLight(asfloat(lights.Load3(_e81*64+0)), asuint(lights.Load(_e81*64+12)), asfloat(lights.Load3(_e81*64+16)), asfloat(lights.Load(_e81*64+28)), asfloat(lights.Load3(_e81*64+32)), asfloat(lights.Load(_e81*64+44)), asfloat(lights.Load3(_e81*64+48)), asuint(lights.Load(_e81*64+60)));
+                    uint _e65 = h;
+                    uint _e67 = cluster_hits[min(uint(_e65), 63u)];
+                    const uint _e68 = cluster_slot(_e67, li_9);
+                    GpuLight l_1 = ConstructGpuLight(asfloat(lights.Load3(_e68*64+0)), asuint(lights.Load(_e68*64+12)), asfloat(lights.Load3(_e68*64+16)), asfloat(lights.Load(_e68*64+28)), asfloat(lights.Load3(_e68*64+32)), asfloat(lights.Load(_e68*64+44)), asfloat(lights.Load3(_e68*64+48)), asuint(lights.Load(_e68*64+60)));
                     if (any((l_1.intensity != (0.0).xxx))) {
                         count_one(COUNT_SPHERE_TESTS);
-                        const float _e91 = cull_r2_of(_e81);
-                        const float _e92 = cull_radius(_e91);
-                        const bool _e94 = sphere_overlaps_aabb(l_1.p0_, _e92, lo_1, hi_1);
-                        if (_e94) {
-                            uint _e98; InterlockedAdd(list_count, 1u, _e98);
-                            const uint _e101 = list_entry(_e81, l_1.p0_, _e92);
-                            tile_lights[min(uint(_e98), 1023u)] = _e101;
+                        const float _e78 = cull_r2_of(_e68);
+                        const float _e79 = cull_radius(_e78);
+                        const bool _e81 = sphere_overlaps_aabb(l_1.p0_, _e79, lo_1, hi_1);
+                        if (_e81) {
+                            list_add(_e68, l_1.p0_, _e79);
                         }
                     }
                 }
@@ -705,10 +726,7 @@ void cull_tile(uint li_8, float3 lo_1, float3 hi_1, uint4 grid, uint clusters_at
             GroupMemoryBarrierWithGroupSync();
         }
     }
-    GroupMemoryBarrierWithGroupSync();
-    uint _e109 = list_count;
-    GroupMemoryBarrierWithGroupSync();
-    shade_list(_e109);
+    list_shade();
     return;
 }
 

@@ -699,11 +699,6 @@ float cull_r2_of(uint slot)
     return _e3;
 }
 
-uint list_entry(uint slot_1, float3 p_3, float radius)
-{
-    return slot_1;
-}
-
 void shade_list(uint count)
 {
     uint k_1 = 0u;
@@ -737,6 +732,40 @@ void shade_list(uint count)
     }
 }
 
+void list_clear(uint li_4)
+{
+    if ((li_4 == 0u)) {
+        { uint dummy = 0; InterlockedExchange(list_count, 0u, dummy); }
+        return;
+    } else {
+        return;
+    }
+}
+
+bool list_full()
+{
+    GroupMemoryBarrierWithGroupSync();
+    uint _e1 = list_count;
+    GroupMemoryBarrierWithGroupSync();
+    return ((_e1 + CLUSTER) > MAX_TILE_LIGHTS);
+}
+
+void list_add(uint slot_1, float3 p_3, float radius)
+{
+    uint _e6; InterlockedAdd(list_count, 1u, _e6);
+    tile_lights[min(uint(_e6), 1023u)] = slot_1;
+    return;
+}
+
+void list_shade()
+{
+    GroupMemoryBarrierWithGroupSync();
+    uint _e1 = list_count;
+    GroupMemoryBarrierWithGroupSync();
+    shade_list(_e1);
+    return;
+}
+
 GpuBox ConstructGpuBox(float3 arg0, float arg1, float3 arg2, float arg3) {
     GpuBox ret = (GpuBox)0;
     ret.lo = arg0;
@@ -746,56 +775,54 @@ GpuBox ConstructGpuBox(float3 arg0, float arg1, float3 arg2, float arg3) {
     return ret;
 }
 
-void cull_tile(uint li_4, float3 lo_1, float3 hi_1, uint4 grid, uint clusters_at, uint groups_at)
+void cull_tile(uint li_5, float3 lo_1, float3 hi_1, uint4 grid, uint clusters_at, uint groups_at)
 {
     uint g_3 = 0u;
     uint h = (uint)0;
 
-    if ((li_4 == 0u)) {
-        { uint dummy = 0; InterlockedExchange(list_count, 0u, dummy); }
-    }
-    const uint _e14 = group_count(grid.x, grid.y, grid.z, grid.w);
+    list_clear(li_5);
+    const uint _e10 = group_count(grid.x, grid.y, grid.z, grid.w);
     uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
     bool loop_init_2 = true;
     while(true) {
         if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
         loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e103 = g_3;
-            g_3 = (_e103 + 1u);
+            uint _e84 = g_3;
+            g_3 = (_e84 + 1u);
         }
         loop_init_2 = false;
-        uint _e17 = g_3;
-        if ((_e17 < _e14)) {
+        uint _e13 = g_3;
+        if ((_e13 < _e10)) {
         } else {
             break;
         }
         {
-            uint _e20 = g_3;
-            GpuBox gb = ConstructGpuBox(asfloat(boxes.Load3((groups_at + _e20)*32+0)), asfloat(boxes.Load((groups_at + _e20)*32+12)), asfloat(boxes.Load3((groups_at + _e20)*32+16)), asfloat(boxes.Load((groups_at + _e20)*32+28)));
-            const bool _e26 = box_overlaps_box(gb.lo, gb.hi, lo_1, hi_1);
-            if (!(_e26)) {
+            uint _e16 = g_3;
+            GpuBox gb = ConstructGpuBox(asfloat(boxes.Load3((groups_at + _e16)*32+0)), asfloat(boxes.Load((groups_at + _e16)*32+12)), asfloat(boxes.Load3((groups_at + _e16)*32+16)), asfloat(boxes.Load((groups_at + _e16)*32+28)));
+            const bool _e22 = box_overlaps_box(gb.lo, gb.hi, lo_1, hi_1);
+            if (!(_e22)) {
                 continue;
             }
-            uint _e28 = g_3;
-            const uint _e33 = group_first(_e28, grid.x, grid.y, grid.z, grid.w);
-            uint first = (clusters_at + _e33);
-            uint _e35 = g_3;
-            const uint _e40 = group_clusters(_e35, grid.x, grid.y, grid.z, grid.w);
-            if ((li_4 == 0u)) {
+            uint _e24 = g_3;
+            const uint _e29 = group_first(_e24, grid.x, grid.y, grid.z, grid.w);
+            uint first = (clusters_at + _e29);
+            uint _e31 = g_3;
+            const uint _e36 = group_clusters(_e31, grid.x, grid.y, grid.z, grid.w);
+            if ((li_5 == 0u)) {
                 { uint dummy_1 = 0; InterlockedExchange(hit_count, 0u, dummy_1); }
             }
             GroupMemoryBarrierWithGroupSync();
-            if ((li_4 < _e40)) {
-                GpuBox cb = ConstructGpuBox(asfloat(boxes.Load3((first + li_4)*32+0)), asfloat(boxes.Load((first + li_4)*32+12)), asfloat(boxes.Load3((first + li_4)*32+16)), asfloat(boxes.Load((first + li_4)*32+28)));
-                const bool _e52 = box_overlaps_box(cb.lo, cb.hi, lo_1, hi_1);
-                if (_e52) {
-                    uint _e56; InterlockedAdd(hit_count, 1u, _e56);
-                    cluster_hits[min(uint(_e56), 63u)] = (first + li_4);
+            if ((li_5 < _e36)) {
+                GpuBox cb = ConstructGpuBox(asfloat(boxes.Load3((first + li_5)*32+0)), asfloat(boxes.Load((first + li_5)*32+12)), asfloat(boxes.Load3((first + li_5)*32+16)), asfloat(boxes.Load((first + li_5)*32+28)));
+                const bool _e48 = box_overlaps_box(cb.lo, cb.hi, lo_1, hi_1);
+                if (_e48) {
+                    uint _e52; InterlockedAdd(hit_count, 1u, _e52);
+                    cluster_hits[min(uint(_e52), 63u)] = (first + li_5);
                 }
             }
             GroupMemoryBarrierWithGroupSync();
-            uint _e60 = hit_count;
+            uint _e56 = hit_count;
             GroupMemoryBarrierWithGroupSync();
             h = 0u;
             uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
@@ -804,39 +831,33 @@ void cull_tile(uint li_4, float3 lo_1, float3 hi_1, uint4 grid, uint clusters_at
                 if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
                 loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
                 if (!loop_init_3) {
-                    uint _e100 = h;
-                    h = (_e100 + 1u);
+                    uint _e81 = h;
+                    h = (_e81 + 1u);
                 }
                 loop_init_3 = false;
-                uint _e63 = h;
-                if ((_e63 < _e60)) {
+                uint _e59 = h;
+                if ((_e59 < _e56)) {
                 } else {
                     break;
                 }
                 {
-                    GroupMemoryBarrierWithGroupSync();
-                    uint _e66 = list_count;
-                    GroupMemoryBarrierWithGroupSync();
-                    if (((_e66 + CLUSTER) > MAX_TILE_LIGHTS)) {
-                        shade_list(_e66);
+                    const bool _e61 = list_full();
+                    if (_e61) {
+                        list_shade();
                         GroupMemoryBarrierWithGroupSync();
-                        if ((li_4 == 0u)) {
-                            { uint dummy_2 = 0; InterlockedExchange(list_count, 0u, dummy_2); }
-                        }
+                        list_clear(li_5);
                         GroupMemoryBarrierWithGroupSync();
                     }
-                    uint _e76 = h;
-                    uint _e78 = cluster_hits[min(uint(_e76), 63u)];
-                    const uint _e79 = cluster_slot(_e78, li_4);
-                    GpuLight l_6 = ConstructGpuLight(asfloat(lights.Load3(_e79*64+0)), asuint(lights.Load(_e79*64+12)), asfloat(lights.Load3(_e79*64+16)), asfloat(lights.Load(_e79*64+28)), asfloat(lights.Load3(_e79*64+32)), asfloat(lights.Load(_e79*64+44)), asfloat(lights.Load3(_e79*64+48)), asuint(lights.Load(_e79*64+60)));
+                    uint _e63 = h;
+                    uint _e65 = cluster_hits[min(uint(_e63), 63u)];
+                    const uint _e66 = cluster_slot(_e65, li_5);
+                    GpuLight l_6 = ConstructGpuLight(asfloat(lights.Load3(_e66*64+0)), asuint(lights.Load(_e66*64+12)), asfloat(lights.Load3(_e66*64+16)), asfloat(lights.Load(_e66*64+28)), asfloat(lights.Load3(_e66*64+32)), asfloat(lights.Load(_e66*64+44)), asfloat(lights.Load3(_e66*64+48)), asuint(lights.Load(_e66*64+60)));
                     if (any((l_6.intensity != (0.0).xxx))) {
-                        const float _e88 = cull_r2_of(_e79);
-                        const float _e89 = cull_radius(_e88);
-                        const bool _e91 = sphere_overlaps_aabb(l_6.p0_, _e89, lo_1, hi_1);
-                        if (_e91) {
-                            uint _e95; InterlockedAdd(list_count, 1u, _e95);
-                            const uint _e98 = list_entry(_e79, l_6.p0_, _e89);
-                            tile_lights[min(uint(_e95), 1023u)] = _e98;
+                        const float _e75 = cull_r2_of(_e66);
+                        const float _e76 = cull_radius(_e75);
+                        const bool _e78 = sphere_overlaps_aabb(l_6.p0_, _e76, lo_1, hi_1);
+                        if (_e78) {
+                            list_add(_e66, l_6.p0_, _e76);
                         }
                     }
                 }
@@ -844,10 +865,7 @@ void cull_tile(uint li_4, float3 lo_1, float3 hi_1, uint4 grid, uint clusters_at
             GroupMemoryBarrierWithGroupSync();
         }
     }
-    GroupMemoryBarrierWithGroupSync();
-    uint _e106 = list_count;
-    GroupMemoryBarrierWithGroupSync();
-    shade_list(_e106);
+    list_shade();
     return;
 }
 

@@ -83,10 +83,13 @@ struct type_16 {
 struct type_17 {
     metal::float3 inner[4];
 };
-struct type_19 {
+struct type_18 {
     uint inner[1024];
 };
-struct type_20 {
+struct type_19 {
+    metal::atomic_uint inner[4];
+};
+struct type_21 {
     uint inner[64];
 };
 constant uint LIGHT_POINT = 0u;
@@ -160,10 +163,8 @@ constant uint P = 8u;
 constant uint TILE = 8u;
 constant uint THREADS = 64u;
 constant uint BOX_THREADS = 64u;
-constant uint MAX_TILE_LIGHTS = 1024u;
 constant uint HALF = 4u;
-constant uint QUARTER_SHIFT = 28u;
-constant uint SLOT_BITS = 268435455u;
+constant uint QUARTER_LIGHTS = 256u;
 
 float to_f32_(
     uint u
@@ -660,18 +661,18 @@ void quarter_boxes(
     thread bool& valid,
     threadgroup type_17& quarter_lo,
     threadgroup type_17& quarter_hi,
-    thread uint& quarter_bit
+    thread uint& quarter
 ) {
     metal::float3 lo_1 = metal::float3(340282350000000000000000000000000000000.0);
     metal::float3 hi_1 = metal::float3(-340282350000000000000000000000000000000.0);
     uint y = {};
     uint x = {};
-    quarter_bit = 1u << ((QUARTER_SHIFT + ((lid_1.x >= HALF) ? 1u : 0u)) + ((lid_1.y >= HALF) ? 2u : 0u));
-    metal::float3 _e21 = pos;
-    bool _e23 = valid;
-    WorkgroupBox _e24 = point_box(_e21, _e23);
-    wg_lo.inner[li_8] = _e24.lo;
-    wg_hi.inner[li_8] = _e24.hi;
+    quarter = ((lid_1.x >= HALF) ? 1u : 0u) + ((lid_1.y >= HALF) ? 2u : 0u);
+    metal::float3 _e17 = pos;
+    bool _e19 = valid;
+    WorkgroupBox _e20 = point_box(_e17, _e19);
+    wg_lo.inner[li_8] = _e20.lo;
+    wg_hi.inner[li_8] = _e20.hi;
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
     if (li_8 < 4u) {
         uint x0_ = naga_mod(li_8, 2u) * HALF;
@@ -683,12 +684,12 @@ void quarter_boxes(
             if (metal::all(loop_bound_1 == uint2(0u))) { break; }
             loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
             if (!loop_init_1) {
-                uint _e85 = y;
-                y = _e85 + 1u;
+                uint _e81 = y;
+                y = _e81 + 1u;
             }
             loop_init_1 = false;
-            uint _e48 = y;
-            if (_e48 < metal::min(y0_ + HALF, TILE)) {
+            uint _e44 = y;
+            if (_e44 < metal::min(y0_ + HALF, TILE)) {
             } else {
                 break;
             }
@@ -700,46 +701,74 @@ void quarter_boxes(
                     if (metal::all(loop_bound_2 == uint2(0u))) { break; }
                     loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
                     if (!loop_init_2) {
-                        uint _e82 = x;
-                        x = _e82 + 1u;
+                        uint _e78 = x;
+                        x = _e78 + 1u;
                     }
                     loop_init_2 = false;
-                    uint _e55 = x;
-                    if (_e55 < metal::min(x0_ + HALF, TILE)) {
+                    uint _e51 = x;
+                    if (_e51 < metal::min(x0_ + HALF, TILE)) {
                     } else {
                         break;
                     }
                     {
-                        metal::float3 _e61 = lo_1;
-                        uint _e63 = y;
-                        uint _e66 = x;
-                        metal::float3 _e69 = wg_lo.inner[(_e63 * TILE) + _e66];
-                        lo_1 = metal::min(_e61, _e69);
-                        metal::float3 _e71 = hi_1;
-                        uint _e73 = y;
-                        uint _e76 = x;
-                        metal::float3 _e79 = wg_hi.inner[(_e73 * TILE) + _e76];
-                        hi_1 = metal::max(_e71, _e79);
+                        metal::float3 _e57 = lo_1;
+                        uint _e59 = y;
+                        uint _e62 = x;
+                        metal::float3 _e65 = wg_lo.inner[(_e59 * TILE) + _e62];
+                        lo_1 = metal::min(_e57, _e65);
+                        metal::float3 _e67 = hi_1;
+                        uint _e69 = y;
+                        uint _e72 = x;
+                        metal::float3 _e75 = wg_hi.inner[(_e69 * TILE) + _e72];
+                        hi_1 = metal::max(_e67, _e75);
                     }
                 }
             }
         }
-        metal::float3 _e89 = lo_1;
-        quarter_lo.inner[li_8] = _e89;
-        metal::float3 _e92 = hi_1;
-        quarter_hi.inner[li_8] = _e92;
+        metal::float3 _e85 = lo_1;
+        quarter_lo.inner[li_8] = _e85;
+        metal::float3 _e88 = hi_1;
+        quarter_hi.inner[li_8] = _e88;
     }
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
     return;
 }
 
-uint quarter_meets(
+void list_clear(
+    uint li_9,
+    threadgroup type_19& quarter_count,
+    threadgroup metal::atomic_uint& fullest
+) {
+    if (li_9 < 4u) {
+        metal::atomic_store_explicit(&quarter_count.inner[li_9], 0u, metal::memory_order_relaxed);
+    }
+    if (li_9 == 0u) {
+        metal::atomic_store_explicit(&fullest, 0u, metal::memory_order_relaxed);
+        return;
+    } else {
+        return;
+    }
+}
+
+bool list_full(
+    threadgroup metal::atomic_uint& fullest
+) {
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    uint unnamed_1 = metal::atomic_load_explicit(&fullest, metal::memory_order_relaxed);
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    return (unnamed_1 + CLUSTER) > QUARTER_LIGHTS;
+}
+
+uint quarter_add(
     uint q,
+    uint slot_3,
     metal::float3 p_3,
     float radius,
     threadgroup type_16& wg_counts,
     threadgroup type_17& quarter_lo,
-    threadgroup type_17& quarter_hi
+    threadgroup type_17& quarter_hi,
+    threadgroup type_18& quarter_lights,
+    threadgroup type_19& quarter_count
 ) {
     metal::float3 lo_3 = quarter_lo.inner[q];
     metal::float3 hi_3 = quarter_hi.inner[q];
@@ -747,27 +776,39 @@ uint quarter_meets(
         return 0u;
     }
     count_one(COUNT_SPHERE_TESTS, wg_counts);
-    bool _e19 = sphere_overlaps_aabb(p_3, radius, lo_3, hi_3);
-    return _e19 ? (1u << (QUARTER_SHIFT + q)) : 0u;
+    bool _e15 = sphere_overlaps_aabb(p_3, radius, lo_3, hi_3);
+    if (!(_e15)) {
+        return 0u;
+    }
+    uint _e21 = metal::atomic_fetch_add_explicit(&quarter_count.inner[q], 1u, metal::memory_order_relaxed);
+    quarter_lights.inner[(q * QUARTER_LIGHTS) + _e21] = slot_3;
+    return _e21 + 1u;
 }
 
-uint list_entry(
-    uint slot_3,
+void list_add(
+    uint slot_4,
     metal::float3 p_4,
     float radius_1,
     threadgroup type_16& wg_counts,
     threadgroup type_17& quarter_lo,
-    threadgroup type_17& quarter_hi
+    threadgroup type_17& quarter_hi,
+    threadgroup type_18& quarter_lights,
+    threadgroup type_19& quarter_count,
+    threadgroup metal::atomic_uint& fullest
 ) {
-    uint _e4 = quarter_meets(0u, p_4, radius_1, wg_counts, quarter_lo, quarter_hi);
-    uint _e7 = quarter_meets(1u, p_4, radius_1, wg_counts, quarter_lo, quarter_hi);
-    uint _e10 = quarter_meets(2u, p_4, radius_1, wg_counts, quarter_lo, quarter_hi);
-    uint _e13 = quarter_meets(3u, p_4, radius_1, wg_counts, quarter_lo, quarter_hi);
-    return (((slot_3 | _e4) | _e7) | _e10) | _e13;
+    uint _e4 = quarter_add(0u, slot_4, p_4, radius_1, wg_counts, quarter_lo, quarter_hi, quarter_lights, quarter_count);
+    uint _e6 = quarter_add(1u, slot_4, p_4, radius_1, wg_counts, quarter_lo, quarter_hi, quarter_lights, quarter_count);
+    uint a = metal::max(_e4, _e6);
+    uint _e9 = quarter_add(2u, slot_4, p_4, radius_1, wg_counts, quarter_lo, quarter_hi, quarter_lights, quarter_count);
+    uint _e11 = quarter_add(3u, slot_4, p_4, radius_1, wg_counts, quarter_lo, quarter_hi, quarter_lights, quarter_count);
+    uint b_1 = metal::max(_e9, _e11);
+    uint _e15 = metal::atomic_fetch_max_explicit(&fullest, metal::max(a, b_1), metal::memory_order_relaxed);
+    return;
 }
 
 void shade_list(
     uint count,
+    uint first,
     constant VplParams& params,
     device type_9 const& lights,
     device type_5 const& rt2_2,
@@ -778,70 +819,84 @@ void shade_list(
     thread bool& valid,
     thread metal::float3& e,
     thread uint& kept,
-    thread uint& quarter_bit,
-    threadgroup type_19& tile_lights,
+    threadgroup type_18& quarter_lights,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint tested = 0u;
     uint m = 0u;
-    bool _e2 = valid;
-    if (!(_e2)) {
+    bool _e3 = valid;
+    if (!(_e3)) {
         return;
     }
-    float _e5 = interleave_flux_scale(P);
-    float unscale = 1.0 / _e5;
+    float _e6 = interleave_flux_scale(P);
+    float unscale = 1.0 / _e6;
     uint2 loop_bound_3 = uint2(4294967295u);
     bool loop_init_3 = true;
     while(true) {
         if (metal::all(loop_bound_3 == uint2(0u))) { break; }
         loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
         if (!loop_init_3) {
-            uint _e67 = m;
-            m = _e67 + 1u;
+            uint _e57 = m;
+            m = _e57 + 1u;
         }
         loop_init_3 = false;
-        uint _e12 = m;
-        if (_e12 < count) {
+        uint _e11 = m;
+        if (_e11 < count) {
         } else {
             break;
         }
         {
-            uint _e15 = m;
-            uint entry = tile_lights.inner[_e15];
-            uint _e19 = quarter_bit;
-            if ((entry & _e19) == 0u) {
-                continue;
-            }
-            uint _e23 = tested;
-            tested = _e23 + 1u;
-            uint slot_4 = entry & SLOT_BITS;
-            GpuLight l = lights[slot_4];
-            metal::float3 _e32 = pos;
-            metal::float3 v_3 = _e32 - l.p0_;
-            float _e37 = rt2_2[slot_4];
-            float _e39 = vpl_near_range2_(_e37, P);
-            float _e40 = near_r2_of(slot_4, r2_5, _buffer_sizes);
-            float _e44 = params.near_r2_;
-            float _e45 = vpl_near_slc_share(_e39, _e40, metal::dot(v_3, v_3), _e44);
-            if (_e45 > 0.0) {
-                metal::float3 _e50 = nrm;
-                float _e53 = params.min_d2_;
-                float _e54 = vpl_transfer(l.p1_, _e50, v_3, _e53);
-                float t_1 = (_e54 * _e45) * unscale;
-                metal::float3 _e58 = e;
-                e = _e58 + (l.intensity * t_1);
-                uint _e63 = kept;
-                kept = _e63 + 1u;
+            uint _e14 = m;
+            uint slot_5 = quarter_lights.inner[first + _e14];
+            GpuLight l = lights[slot_5];
+            metal::float3 _e22 = pos;
+            metal::float3 v_3 = _e22 - l.p0_;
+            float _e27 = rt2_2[slot_5];
+            float _e29 = vpl_near_range2_(_e27, P);
+            float _e30 = near_r2_of(slot_5, r2_5, _buffer_sizes);
+            float _e34 = params.near_r2_;
+            float _e35 = vpl_near_slc_share(_e29, _e30, metal::dot(v_3, v_3), _e34);
+            if (_e35 > 0.0) {
+                metal::float3 _e40 = nrm;
+                float _e43 = params.min_d2_;
+                float _e44 = vpl_transfer(l.p1_, _e40, v_3, _e43);
+                float t_1 = (_e44 * _e35) * unscale;
+                metal::float3 _e48 = e;
+                e = _e48 + (l.intensity * t_1);
+                uint _e53 = kept;
+                kept = _e53 + 1u;
             }
         }
     }
-    uint _e70 = tested;
-    count_add(COUNT_TESTED, _e70, wg_counts);
+    count_add(COUNT_TESTED, count, wg_counts);
+    return;
+}
+
+void list_shade(
+    constant VplParams& params,
+    device type_9 const& lights,
+    device type_5 const& rt2_2,
+    device type_5 const& r2_5,
+    threadgroup type_16& wg_counts,
+    thread metal::float3& pos,
+    thread metal::float3& nrm,
+    thread bool& valid,
+    thread metal::float3& e,
+    thread uint& kept,
+    threadgroup type_18& quarter_lights,
+    threadgroup type_19& quarter_count,
+    thread uint& quarter,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    uint _e2 = quarter;
+    uint _e4 = metal::atomic_load_explicit(&quarter_count.inner[_e2], metal::memory_order_relaxed);
+    uint _e6 = quarter;
+    shade_list(_e4, _e6 * QUARTER_LIGHTS, params, lights, rt2_2, r2_5, wg_counts, pos, nrm, valid, e, kept, quarter_lights, _buffer_sizes);
     return;
 }
 
 void cull_tile(
-    uint li_9,
+    uint li_10,
     metal::float3 lo_2,
     metal::float3 hi_2,
     metal::uint4 grid,
@@ -861,62 +916,61 @@ void cull_tile(
     thread uint& kept,
     threadgroup type_17& quarter_lo,
     threadgroup type_17& quarter_hi,
-    thread uint& quarter_bit,
-    threadgroup type_19& tile_lights,
-    threadgroup metal::atomic_uint& list_count,
-    threadgroup type_20& cluster_hits,
+    threadgroup type_18& quarter_lights,
+    threadgroup type_19& quarter_count,
+    threadgroup metal::atomic_uint& fullest,
+    thread uint& quarter,
+    threadgroup type_21& cluster_hits,
     threadgroup metal::atomic_uint& hit_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint g_2 = 0u;
     uint h = {};
-    if (li_9 == 0u) {
-        metal::atomic_store_explicit(&list_count, 0u, metal::memory_order_relaxed);
-    }
-    uint _e14 = group_count(grid.x, grid.y, grid.z, grid.w);
-    count_tests(li_9, COUNT_GROUP_TESTS, _e14, wg_counts);
+    list_clear(li_10, quarter_count, fullest);
+    uint _e10 = group_count(grid.x, grid.y, grid.z, grid.w);
+    count_tests(li_10, COUNT_GROUP_TESTS, _e10, wg_counts);
     uint2 loop_bound_4 = uint2(4294967295u);
     bool loop_init_4 = true;
     while(true) {
         if (metal::all(loop_bound_4 == uint2(0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         if (!loop_init_4) {
-            uint _e106 = g_2;
-            g_2 = _e106 + 1u;
+            uint _e87 = g_2;
+            g_2 = _e87 + 1u;
         }
         loop_init_4 = false;
-        uint _e18 = g_2;
-        if (_e18 < _e14) {
+        uint _e14 = g_2;
+        if (_e14 < _e10) {
         } else {
             break;
         }
         {
-            uint _e21 = g_2;
-            GpuBox gb = boxes[groups_at + _e21];
-            bool _e27 = box_overlaps_box(gb.lo, gb.hi, lo_2, hi_2);
-            if (!(_e27)) {
+            uint _e17 = g_2;
+            GpuBox gb = boxes[groups_at + _e17];
+            bool _e23 = box_overlaps_box(gb.lo, gb.hi, lo_2, hi_2);
+            if (!(_e23)) {
                 continue;
             }
-            uint _e29 = g_2;
-            uint _e34 = group_first(_e29, grid.x, grid.y, grid.z, grid.w);
-            uint first = clusters_at + _e34;
-            uint _e36 = g_2;
-            uint _e41 = group_clusters(_e36, grid.x, grid.y, grid.z, grid.w);
-            count_tests(li_9, COUNT_CLUSTER_TESTS, _e41, wg_counts);
-            if (li_9 == 0u) {
+            uint _e25 = g_2;
+            uint _e30 = group_first(_e25, grid.x, grid.y, grid.z, grid.w);
+            uint first_1 = clusters_at + _e30;
+            uint _e32 = g_2;
+            uint _e37 = group_clusters(_e32, grid.x, grid.y, grid.z, grid.w);
+            count_tests(li_10, COUNT_CLUSTER_TESTS, _e37, wg_counts);
+            if (li_10 == 0u) {
                 metal::atomic_store_explicit(&hit_count, 0u, metal::memory_order_relaxed);
             }
             metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-            if (li_9 < _e41) {
-                GpuBox cb = boxes[first + li_9];
-                bool _e54 = box_overlaps_box(cb.lo, cb.hi, lo_2, hi_2);
-                if (_e54) {
-                    uint _e58 = metal::atomic_fetch_add_explicit(&hit_count, 1u, metal::memory_order_relaxed);
-                    cluster_hits.inner[_e58] = first + li_9;
+            if (li_10 < _e37) {
+                GpuBox cb = boxes[first_1 + li_10];
+                bool _e50 = box_overlaps_box(cb.lo, cb.hi, lo_2, hi_2);
+                if (_e50) {
+                    uint _e54 = metal::atomic_fetch_add_explicit(&hit_count, 1u, metal::memory_order_relaxed);
+                    cluster_hits.inner[_e54] = first_1 + li_10;
                 }
             }
             metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-            uint unnamed_1 = metal::atomic_load_explicit(&hit_count, metal::memory_order_relaxed);
+            uint unnamed_2 = metal::atomic_load_explicit(&hit_count, metal::memory_order_relaxed);
             metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
             h = 0u;
             uint2 loop_bound_5 = uint2(4294967295u);
@@ -925,40 +979,34 @@ void cull_tile(
                 if (metal::all(loop_bound_5 == uint2(0u))) { break; }
                 loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
                 if (!loop_init_5) {
-                    uint _e103 = h;
-                    h = _e103 + 1u;
+                    uint _e84 = h;
+                    h = _e84 + 1u;
                 }
                 loop_init_5 = false;
-                uint _e65 = h;
-                if (_e65 < unnamed_1) {
+                uint _e61 = h;
+                if (_e61 < unnamed_2) {
                 } else {
                     break;
                 }
                 {
-                    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-                    uint unnamed_2 = metal::atomic_load_explicit(&list_count, metal::memory_order_relaxed);
-                    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-                    if ((unnamed_2 + CLUSTER) > MAX_TILE_LIGHTS) {
-                        shade_list(unnamed_2, params, lights, rt2_2, r2_5, wg_counts, pos, nrm, valid, e, kept, quarter_bit, tile_lights, _buffer_sizes);
+                    bool _e63 = list_full(fullest);
+                    if (_e63) {
+                        list_shade(params, lights, rt2_2, r2_5, wg_counts, pos, nrm, valid, e, kept, quarter_lights, quarter_count, quarter, _buffer_sizes);
                         metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-                        if (li_9 == 0u) {
-                            metal::atomic_store_explicit(&list_count, 0u, metal::memory_order_relaxed);
-                        }
+                        list_clear(li_10, quarter_count, fullest);
                         metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
                     }
-                    uint _e78 = h;
-                    uint _e80 = cluster_hits.inner[_e78];
-                    uint _e81 = cluster_slot(_e80, li_9, params, near_slots, _buffer_sizes);
-                    GpuLight l_1 = lights[_e81];
+                    uint _e65 = h;
+                    uint _e67 = cluster_hits.inner[_e65];
+                    uint _e68 = cluster_slot(_e67, li_10, params, near_slots, _buffer_sizes);
+                    GpuLight l_1 = lights[_e68];
                     if (metal::any(l_1.intensity != metal::float3(0.0))) {
                         count_one(COUNT_SPHERE_TESTS, wg_counts);
-                        float _e91 = cull_r2_of(_e81, params, r2_5, _buffer_sizes);
-                        float _e92 = cull_radius(_e91);
-                        bool _e94 = sphere_overlaps_aabb(l_1.p0_, _e92, lo_2, hi_2);
-                        if (_e94) {
-                            uint _e98 = metal::atomic_fetch_add_explicit(&list_count, 1u, metal::memory_order_relaxed);
-                            uint _e101 = list_entry(_e81, l_1.p0_, _e92, wg_counts, quarter_lo, quarter_hi);
-                            tile_lights.inner[_e98] = _e101;
+                        float _e78 = cull_r2_of(_e68, params, r2_5, _buffer_sizes);
+                        float _e79 = cull_radius(_e78);
+                        bool _e81 = sphere_overlaps_aabb(l_1.p0_, _e79, lo_2, hi_2);
+                        if (_e81) {
+                            list_add(_e68, l_1.p0_, _e79, wg_counts, quarter_lo, quarter_hi, quarter_lights, quarter_count, fullest);
                         }
                     }
                 }
@@ -966,10 +1014,7 @@ void cull_tile(
             metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
         }
     }
-    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-    uint unnamed_3 = metal::atomic_load_explicit(&list_count, metal::memory_order_relaxed);
-    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-    shade_list(unnamed_3, params, lights, rt2_2, r2_5, wg_counts, pos, nrm, valid, e, kept, quarter_bit, tile_lights, _buffer_sizes);
+    list_shade(params, lights, rt2_2, r2_5, wg_counts, pos, nrm, valid, e, kept, quarter_lights, quarter_count, quarter, _buffer_sizes);
     return;
 }
 
@@ -996,9 +1041,10 @@ kernel void main_(
 , threadgroup type_16& wg_counts
 , threadgroup type_17& quarter_lo
 , threadgroup type_17& quarter_hi
-, threadgroup type_19& tile_lights
-, threadgroup metal::atomic_uint& list_count
-, threadgroup type_20& cluster_hits
+, threadgroup type_18& quarter_lights
+, threadgroup type_19& quarter_count
+, threadgroup metal::atomic_uint& fullest
+, threadgroup type_21& cluster_hits
 , threadgroup metal::atomic_uint& hit_count
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
@@ -1008,7 +1054,7 @@ kernel void main_(
     bool valid = {};
     metal::float3 e = {};
     uint kept = {};
-    uint quarter_bit = {};
+    uint quarter = {};
     if (li == 0u) {
         wg_lo = {};
         wg_hi = {};
@@ -1018,8 +1064,11 @@ kernel void main_(
         }
         quarter_lo = {};
         quarter_hi = {};
-        tile_lights = {};
-        metal::atomic_store_explicit(&list_count, 0, metal::memory_order_relaxed);
+        quarter_lights = {};
+        for (int __i0 = 0; __i0 < 4; __i0++) {
+            metal::atomic_store_explicit(&quarter_count.inner[__i0], 0, metal::memory_order_relaxed);
+        }
+        metal::atomic_store_explicit(&fullest, 0, metal::memory_order_relaxed);
         cluster_hits = {};
         metal::atomic_store_explicit(&hit_count, 0, metal::memory_order_relaxed);
     }
@@ -1040,12 +1089,12 @@ kernel void main_(
     WorkgroupBox _e30 = load_receiver(li, pix_1, inside_1, wg_lo, wg_hi, wg_box, view, position_tex, normal_tex, wg_counts, pos, nrm, eye_distance, valid);
     bool _e31 = box_is_empty(_e30);
     if (!(_e31)) {
-        quarter_boxes(li, lid, wg_lo, wg_hi, pos, valid, quarter_lo, quarter_hi, quarter_bit);
+        quarter_boxes(li, lid, wg_lo, wg_hi, pos, valid, quarter_lo, quarter_hi, quarter);
         count_tests(li, COUNT_TILES, 1u, wg_counts);
         metal::uint4 _e39 = params.near_grid;
         uint _e42 = params.near_clusters_at;
         uint _e45 = params.near_groups_at;
-        cull_tile(li, _e30.lo, _e30.hi, _e39, _e42, _e45, params, lights, near_slots, boxes, rt2_2, r2_5, wg_counts, pos, nrm, valid, e, kept, quarter_lo, quarter_hi, quarter_bit, tile_lights, list_count, cluster_hits, hit_count, _buffer_sizes);
+        cull_tile(li, _e30.lo, _e30.hi, _e39, _e42, _e45, params, lights, near_slots, boxes, rt2_2, r2_5, wg_counts, pos, nrm, valid, e, kept, quarter_lo, quarter_hi, quarter_lights, quarter_count, fullest, quarter, cluster_hits, hit_count, _buffer_sizes);
     }
     count_receiver(li, counters, wg_counts, valid, kept, _buffer_sizes);
     bool _e47 = valid;

@@ -95,10 +95,13 @@ struct Glossy {
 struct type_15 {
     metal::float3 inner[4];
 };
-struct type_17 {
+struct type_16 {
     uint inner[1024];
 };
-struct type_19 {
+struct type_18 {
+    metal::atomic_uint inner[4];
+};
+struct type_20 {
     uint inner[64];
 };
 constant uint LIGHT_POINT = 0u;
@@ -172,10 +175,8 @@ constant uint P = 8u;
 constant uint TILE = 8u;
 constant uint THREADS = 64u;
 constant uint BOX_THREADS = 64u;
-constant uint MAX_TILE_LIGHTS = 1024u;
 constant uint HALF = 4u;
-constant uint QUARTER_SHIFT = 28u;
-constant uint SLOT_BITS = 268435455u;
+constant uint QUARTER_LIGHTS = 256u;
 
 float to_f32_(
     uint u
@@ -809,18 +810,18 @@ void quarter_boxes(
     thread bool& valid,
     threadgroup type_15& quarter_lo,
     threadgroup type_15& quarter_hi,
-    thread uint& quarter_bit
+    thread uint& quarter
 ) {
     metal::float3 lo_1 = metal::float3(340282350000000000000000000000000000000.0);
     metal::float3 hi_1 = metal::float3(-340282350000000000000000000000000000000.0);
     uint y = {};
     uint x_1 = {};
-    quarter_bit = 1u << ((QUARTER_SHIFT + ((lid_1.x >= HALF) ? 1u : 0u)) + ((lid_1.y >= HALF) ? 2u : 0u));
-    metal::float3 _e21 = pos;
-    bool _e23 = valid;
-    WorkgroupBox _e24 = point_box(_e21, _e23);
-    wg_lo.inner[li_4] = _e24.lo;
-    wg_hi.inner[li_4] = _e24.hi;
+    quarter = ((lid_1.x >= HALF) ? 1u : 0u) + ((lid_1.y >= HALF) ? 2u : 0u);
+    metal::float3 _e17 = pos;
+    bool _e19 = valid;
+    WorkgroupBox _e20 = point_box(_e17, _e19);
+    wg_lo.inner[li_4] = _e20.lo;
+    wg_hi.inner[li_4] = _e20.hi;
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
     if (li_4 < 4u) {
         uint x0_ = naga_mod(li_4, 2u) * HALF;
@@ -832,12 +833,12 @@ void quarter_boxes(
             if (metal::all(loop_bound_1 == uint2(0u))) { break; }
             loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
             if (!loop_init_1) {
-                uint _e85 = y;
-                y = _e85 + 1u;
+                uint _e81 = y;
+                y = _e81 + 1u;
             }
             loop_init_1 = false;
-            uint _e48 = y;
-            if (_e48 < metal::min(y0_ + HALF, TILE)) {
+            uint _e44 = y;
+            if (_e44 < metal::min(y0_ + HALF, TILE)) {
             } else {
                 break;
             }
@@ -849,71 +850,111 @@ void quarter_boxes(
                     if (metal::all(loop_bound_2 == uint2(0u))) { break; }
                     loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
                     if (!loop_init_2) {
-                        uint _e82 = x_1;
-                        x_1 = _e82 + 1u;
+                        uint _e78 = x_1;
+                        x_1 = _e78 + 1u;
                     }
                     loop_init_2 = false;
-                    uint _e55 = x_1;
-                    if (_e55 < metal::min(x0_ + HALF, TILE)) {
+                    uint _e51 = x_1;
+                    if (_e51 < metal::min(x0_ + HALF, TILE)) {
                     } else {
                         break;
                     }
                     {
-                        metal::float3 _e61 = lo_1;
-                        uint _e63 = y;
-                        uint _e66 = x_1;
-                        metal::float3 _e69 = wg_lo.inner[(_e63 * TILE) + _e66];
-                        lo_1 = metal::min(_e61, _e69);
-                        metal::float3 _e71 = hi_1;
-                        uint _e73 = y;
-                        uint _e76 = x_1;
-                        metal::float3 _e79 = wg_hi.inner[(_e73 * TILE) + _e76];
-                        hi_1 = metal::max(_e71, _e79);
+                        metal::float3 _e57 = lo_1;
+                        uint _e59 = y;
+                        uint _e62 = x_1;
+                        metal::float3 _e65 = wg_lo.inner[(_e59 * TILE) + _e62];
+                        lo_1 = metal::min(_e57, _e65);
+                        metal::float3 _e67 = hi_1;
+                        uint _e69 = y;
+                        uint _e72 = x_1;
+                        metal::float3 _e75 = wg_hi.inner[(_e69 * TILE) + _e72];
+                        hi_1 = metal::max(_e67, _e75);
                     }
                 }
             }
         }
-        metal::float3 _e89 = lo_1;
-        quarter_lo.inner[li_4] = _e89;
-        metal::float3 _e92 = hi_1;
-        quarter_hi.inner[li_4] = _e92;
+        metal::float3 _e85 = lo_1;
+        quarter_lo.inner[li_4] = _e85;
+        metal::float3 _e88 = hi_1;
+        quarter_hi.inner[li_4] = _e88;
     }
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
     return;
 }
 
-uint quarter_meets(
+void list_clear(
+    uint li_5,
+    threadgroup type_18& quarter_count,
+    threadgroup metal::atomic_uint& fullest
+) {
+    if (li_5 < 4u) {
+        metal::atomic_store_explicit(&quarter_count.inner[li_5], 0u, metal::memory_order_relaxed);
+    }
+    if (li_5 == 0u) {
+        metal::atomic_store_explicit(&fullest, 0u, metal::memory_order_relaxed);
+        return;
+    } else {
+        return;
+    }
+}
+
+bool list_full(
+    threadgroup metal::atomic_uint& fullest
+) {
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    uint unnamed_1 = metal::atomic_load_explicit(&fullest, metal::memory_order_relaxed);
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    return (unnamed_1 + CLUSTER) > QUARTER_LIGHTS;
+}
+
+uint quarter_add(
     uint q,
+    uint slot_3,
     metal::float3 p_3,
     float radius,
     threadgroup type_15& quarter_lo,
-    threadgroup type_15& quarter_hi
+    threadgroup type_15& quarter_hi,
+    threadgroup type_16& quarter_lights,
+    threadgroup type_18& quarter_count
 ) {
     metal::float3 lo_3 = quarter_lo.inner[q];
     metal::float3 hi_3 = quarter_hi.inner[q];
     if (lo_3.x > hi_3.x) {
         return 0u;
     }
-    bool _e18 = sphere_overlaps_aabb(p_3, radius, lo_3, hi_3);
-    return _e18 ? (1u << (QUARTER_SHIFT + q)) : 0u;
+    bool _e14 = sphere_overlaps_aabb(p_3, radius, lo_3, hi_3);
+    if (!(_e14)) {
+        return 0u;
+    }
+    uint _e20 = metal::atomic_fetch_add_explicit(&quarter_count.inner[q], 1u, metal::memory_order_relaxed);
+    quarter_lights.inner[(q * QUARTER_LIGHTS) + _e20] = slot_3;
+    return _e20 + 1u;
 }
 
-uint list_entry(
-    uint slot_3,
+void list_add(
+    uint slot_4,
     metal::float3 p_4,
     float radius_1,
     threadgroup type_15& quarter_lo,
-    threadgroup type_15& quarter_hi
+    threadgroup type_15& quarter_hi,
+    threadgroup type_16& quarter_lights,
+    threadgroup type_18& quarter_count,
+    threadgroup metal::atomic_uint& fullest
 ) {
-    uint _e4 = quarter_meets(0u, p_4, radius_1, quarter_lo, quarter_hi);
-    uint _e7 = quarter_meets(1u, p_4, radius_1, quarter_lo, quarter_hi);
-    uint _e10 = quarter_meets(2u, p_4, radius_1, quarter_lo, quarter_hi);
-    uint _e13 = quarter_meets(3u, p_4, radius_1, quarter_lo, quarter_hi);
-    return (((slot_3 | _e4) | _e7) | _e10) | _e13;
+    uint _e4 = quarter_add(0u, slot_4, p_4, radius_1, quarter_lo, quarter_hi, quarter_lights, quarter_count);
+    uint _e6 = quarter_add(1u, slot_4, p_4, radius_1, quarter_lo, quarter_hi, quarter_lights, quarter_count);
+    uint a = metal::max(_e4, _e6);
+    uint _e9 = quarter_add(2u, slot_4, p_4, radius_1, quarter_lo, quarter_hi, quarter_lights, quarter_count);
+    uint _e11 = quarter_add(3u, slot_4, p_4, radius_1, quarter_lo, quarter_hi, quarter_lights, quarter_count);
+    uint b_1 = metal::max(_e9, _e11);
+    uint _e15 = metal::atomic_fetch_max_explicit(&fullest, metal::max(a, b_1), metal::memory_order_relaxed);
+    return;
 }
 
 void shade_list(
     uint count,
+    uint first,
     constant VplParams& params,
     device type_9 const& lights,
     device type_5 const& rt2_2,
@@ -925,70 +966,89 @@ void shade_list(
     thread uint& kept,
     thread metal::float3& s,
     thread Glossy& g_4,
-    thread uint& quarter_bit,
-    threadgroup type_17& tile_lights,
+    threadgroup type_16& quarter_lights,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint m = 0u;
-    bool _e2 = valid;
-    if (!(_e2)) {
+    bool _e3 = valid;
+    if (!(_e3)) {
         return;
     }
-    float _e5 = interleave_flux_scale(P);
-    float unscale = 1.0 / _e5;
+    float _e6 = interleave_flux_scale(P);
+    float unscale = 1.0 / _e6;
     uint2 loop_bound_3 = uint2(4294967295u);
     bool loop_init_3 = true;
     while(true) {
         if (metal::all(loop_bound_3 == uint2(0u))) { break; }
         loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
         if (!loop_init_3) {
-            uint _e70 = m;
-            m = _e70 + 1u;
+            uint _e65 = m;
+            m = _e65 + 1u;
         }
         loop_init_3 = false;
-        uint _e10 = m;
-        if (_e10 < count) {
+        uint _e11 = m;
+        if (_e11 < count) {
         } else {
             break;
         }
         {
-            uint _e13 = m;
-            uint entry = tile_lights.inner[_e13];
-            uint _e17 = quarter_bit;
-            if ((entry & _e17) == 0u) {
-                continue;
-            }
-            uint slot_4 = entry & SLOT_BITS;
-            GpuLight l_5 = lights[slot_4];
-            metal::float3 _e27 = pos;
-            metal::float3 v_8 = _e27 - l_5.p0_;
-            float _e32 = rt2_2[slot_4];
-            float _e34 = vpl_near_range2_(_e32, P);
-            float _e35 = near_r2_of(slot_4, r2_5, _buffer_sizes);
-            float _e39 = params.near_r2_;
-            float _e40 = vpl_near_slc_share(_e34, _e35, metal::dot(v_8, v_8), _e39);
-            if (_e40 > 0.0) {
-                metal::float3 _e45 = nrm;
-                float _e48 = params.min_d2_;
-                float _e49 = vpl_transfer(l_5.p1_, _e45, v_8, _e48);
-                float t_3 = (_e49 * _e40) * unscale;
-                metal::float3 _e53 = e;
-                e = _e53 + (l_5.intensity * t_3);
-                metal::float3 _e58 = s;
-                Glossy _e60 = g_4;
-                metal::float3 _e62 = nrm;
-                metal::float3 _e63 = glossy_term(_e60, l_5, _e62, v_8, t_3);
-                s = _e58 + _e63;
-                uint _e66 = kept;
-                kept = _e66 + 1u;
+            uint _e14 = m;
+            uint slot_5 = quarter_lights.inner[first + _e14];
+            GpuLight l_5 = lights[slot_5];
+            metal::float3 _e22 = pos;
+            metal::float3 v_8 = _e22 - l_5.p0_;
+            float _e27 = rt2_2[slot_5];
+            float _e29 = vpl_near_range2_(_e27, P);
+            float _e30 = near_r2_of(slot_5, r2_5, _buffer_sizes);
+            float _e34 = params.near_r2_;
+            float _e35 = vpl_near_slc_share(_e29, _e30, metal::dot(v_8, v_8), _e34);
+            if (_e35 > 0.0) {
+                metal::float3 _e40 = nrm;
+                float _e43 = params.min_d2_;
+                float _e44 = vpl_transfer(l_5.p1_, _e40, v_8, _e43);
+                float t_3 = (_e44 * _e35) * unscale;
+                metal::float3 _e48 = e;
+                e = _e48 + (l_5.intensity * t_3);
+                metal::float3 _e53 = s;
+                Glossy _e55 = g_4;
+                metal::float3 _e57 = nrm;
+                metal::float3 _e58 = glossy_term(_e55, l_5, _e57, v_8, t_3);
+                s = _e53 + _e58;
+                uint _e61 = kept;
+                kept = _e61 + 1u;
             }
         }
     }
     return;
 }
 
+void list_shade(
+    constant VplParams& params,
+    device type_9 const& lights,
+    device type_5 const& rt2_2,
+    device type_5 const& r2_5,
+    thread metal::float3& pos,
+    thread metal::float3& nrm,
+    thread bool& valid,
+    thread metal::float3& e,
+    thread uint& kept,
+    thread metal::float3& s,
+    thread Glossy& g_4,
+    threadgroup type_16& quarter_lights,
+    threadgroup type_18& quarter_count,
+    thread uint& quarter,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    uint _e2 = quarter;
+    uint _e4 = metal::atomic_load_explicit(&quarter_count.inner[_e2], metal::memory_order_relaxed);
+    uint _e6 = quarter;
+    shade_list(_e4, _e6 * QUARTER_LIGHTS, params, lights, rt2_2, r2_5, pos, nrm, valid, e, kept, s, g_4, quarter_lights, _buffer_sizes);
+    return;
+}
+
 void cull_tile(
-    uint li_5,
+    uint li_6,
     metal::float3 lo_2,
     metal::float3 hi_2,
     metal::uint4 grid,
@@ -1009,60 +1069,59 @@ void cull_tile(
     thread Glossy& g_4,
     threadgroup type_15& quarter_lo,
     threadgroup type_15& quarter_hi,
-    thread uint& quarter_bit,
-    threadgroup type_17& tile_lights,
-    threadgroup metal::atomic_uint& list_count,
-    threadgroup type_19& cluster_hits,
+    threadgroup type_16& quarter_lights,
+    threadgroup type_18& quarter_count,
+    threadgroup metal::atomic_uint& fullest,
+    thread uint& quarter,
+    threadgroup type_20& cluster_hits,
     threadgroup metal::atomic_uint& hit_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint g_3 = 0u;
     uint h = {};
-    if (li_5 == 0u) {
-        metal::atomic_store_explicit(&list_count, 0u, metal::memory_order_relaxed);
-    }
-    uint _e14 = group_count(grid.x, grid.y, grid.z, grid.w);
+    list_clear(li_6, quarter_count, fullest);
+    uint _e10 = group_count(grid.x, grid.y, grid.z, grid.w);
     uint2 loop_bound_4 = uint2(4294967295u);
     bool loop_init_4 = true;
     while(true) {
         if (metal::all(loop_bound_4 == uint2(0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         if (!loop_init_4) {
-            uint _e103 = g_3;
-            g_3 = _e103 + 1u;
+            uint _e84 = g_3;
+            g_3 = _e84 + 1u;
         }
         loop_init_4 = false;
-        uint _e17 = g_3;
-        if (_e17 < _e14) {
+        uint _e13 = g_3;
+        if (_e13 < _e10) {
         } else {
             break;
         }
         {
-            uint _e20 = g_3;
-            GpuBox gb = boxes[groups_at + _e20];
-            bool _e26 = box_overlaps_box(gb.lo, gb.hi, lo_2, hi_2);
-            if (!(_e26)) {
+            uint _e16 = g_3;
+            GpuBox gb = boxes[groups_at + _e16];
+            bool _e22 = box_overlaps_box(gb.lo, gb.hi, lo_2, hi_2);
+            if (!(_e22)) {
                 continue;
             }
-            uint _e28 = g_3;
-            uint _e33 = group_first(_e28, grid.x, grid.y, grid.z, grid.w);
-            uint first = clusters_at + _e33;
-            uint _e35 = g_3;
-            uint _e40 = group_clusters(_e35, grid.x, grid.y, grid.z, grid.w);
-            if (li_5 == 0u) {
+            uint _e24 = g_3;
+            uint _e29 = group_first(_e24, grid.x, grid.y, grid.z, grid.w);
+            uint first_1 = clusters_at + _e29;
+            uint _e31 = g_3;
+            uint _e36 = group_clusters(_e31, grid.x, grid.y, grid.z, grid.w);
+            if (li_6 == 0u) {
                 metal::atomic_store_explicit(&hit_count, 0u, metal::memory_order_relaxed);
             }
             metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-            if (li_5 < _e40) {
-                GpuBox cb = boxes[first + li_5];
-                bool _e52 = box_overlaps_box(cb.lo, cb.hi, lo_2, hi_2);
-                if (_e52) {
-                    uint _e56 = metal::atomic_fetch_add_explicit(&hit_count, 1u, metal::memory_order_relaxed);
-                    cluster_hits.inner[_e56] = first + li_5;
+            if (li_6 < _e36) {
+                GpuBox cb = boxes[first_1 + li_6];
+                bool _e48 = box_overlaps_box(cb.lo, cb.hi, lo_2, hi_2);
+                if (_e48) {
+                    uint _e52 = metal::atomic_fetch_add_explicit(&hit_count, 1u, metal::memory_order_relaxed);
+                    cluster_hits.inner[_e52] = first_1 + li_6;
                 }
             }
             metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-            uint unnamed_1 = metal::atomic_load_explicit(&hit_count, metal::memory_order_relaxed);
+            uint unnamed_2 = metal::atomic_load_explicit(&hit_count, metal::memory_order_relaxed);
             metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
             h = 0u;
             uint2 loop_bound_5 = uint2(4294967295u);
@@ -1071,39 +1130,33 @@ void cull_tile(
                 if (metal::all(loop_bound_5 == uint2(0u))) { break; }
                 loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
                 if (!loop_init_5) {
-                    uint _e100 = h;
-                    h = _e100 + 1u;
+                    uint _e81 = h;
+                    h = _e81 + 1u;
                 }
                 loop_init_5 = false;
-                uint _e63 = h;
-                if (_e63 < unnamed_1) {
+                uint _e59 = h;
+                if (_e59 < unnamed_2) {
                 } else {
                     break;
                 }
                 {
-                    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-                    uint unnamed_2 = metal::atomic_load_explicit(&list_count, metal::memory_order_relaxed);
-                    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-                    if ((unnamed_2 + CLUSTER) > MAX_TILE_LIGHTS) {
-                        shade_list(unnamed_2, params, lights, rt2_2, r2_5, pos, nrm, valid, e, kept, s, g_4, quarter_bit, tile_lights, _buffer_sizes);
+                    bool _e61 = list_full(fullest);
+                    if (_e61) {
+                        list_shade(params, lights, rt2_2, r2_5, pos, nrm, valid, e, kept, s, g_4, quarter_lights, quarter_count, quarter, _buffer_sizes);
                         metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-                        if (li_5 == 0u) {
-                            metal::atomic_store_explicit(&list_count, 0u, metal::memory_order_relaxed);
-                        }
+                        list_clear(li_6, quarter_count, fullest);
                         metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
                     }
-                    uint _e76 = h;
-                    uint _e78 = cluster_hits.inner[_e76];
-                    uint _e79 = cluster_slot(_e78, li_5, params, near_slots, _buffer_sizes);
-                    GpuLight l_6 = lights[_e79];
+                    uint _e63 = h;
+                    uint _e65 = cluster_hits.inner[_e63];
+                    uint _e66 = cluster_slot(_e65, li_6, params, near_slots, _buffer_sizes);
+                    GpuLight l_6 = lights[_e66];
                     if (metal::any(l_6.intensity != metal::float3(0.0))) {
-                        float _e88 = cull_r2_of(_e79, params, r2_5, _buffer_sizes);
-                        float _e89 = cull_radius(_e88);
-                        bool _e91 = sphere_overlaps_aabb(l_6.p0_, _e89, lo_2, hi_2);
-                        if (_e91) {
-                            uint _e95 = metal::atomic_fetch_add_explicit(&list_count, 1u, metal::memory_order_relaxed);
-                            uint _e98 = list_entry(_e79, l_6.p0_, _e89, quarter_lo, quarter_hi);
-                            tile_lights.inner[_e95] = _e98;
+                        float _e75 = cull_r2_of(_e66, params, r2_5, _buffer_sizes);
+                        float _e76 = cull_radius(_e75);
+                        bool _e78 = sphere_overlaps_aabb(l_6.p0_, _e76, lo_2, hi_2);
+                        if (_e78) {
+                            list_add(_e66, l_6.p0_, _e76, quarter_lo, quarter_hi, quarter_lights, quarter_count, fullest);
                         }
                     }
                 }
@@ -1111,10 +1164,7 @@ void cull_tile(
             metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
         }
     }
-    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-    uint unnamed_3 = metal::atomic_load_explicit(&list_count, metal::memory_order_relaxed);
-    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-    shade_list(unnamed_3, params, lights, rt2_2, r2_5, pos, nrm, valid, e, kept, s, g_4, quarter_bit, tile_lights, _buffer_sizes);
+    list_shade(params, lights, rt2_2, r2_5, pos, nrm, valid, e, kept, s, g_4, quarter_lights, quarter_count, quarter, _buffer_sizes);
     return;
 }
 
@@ -1141,9 +1191,10 @@ kernel void main_(
 , device type_12& specular [[user(fake0)]]
 , threadgroup type_15& quarter_lo
 , threadgroup type_15& quarter_hi
-, threadgroup type_17& tile_lights
-, threadgroup metal::atomic_uint& list_count
-, threadgroup type_19& cluster_hits
+, threadgroup type_16& quarter_lights
+, threadgroup type_18& quarter_count
+, threadgroup metal::atomic_uint& fullest
+, threadgroup type_20& cluster_hits
 , threadgroup metal::atomic_uint& hit_count
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
@@ -1155,15 +1206,18 @@ kernel void main_(
     uint kept = {};
     metal::float3 s = {};
     Glossy g_4 = {};
-    uint quarter_bit = {};
+    uint quarter = {};
     if (li == 0u) {
         wg_lo = {};
         wg_hi = {};
         wg_box = {};
         quarter_lo = {};
         quarter_hi = {};
-        tile_lights = {};
-        metal::atomic_store_explicit(&list_count, 0, metal::memory_order_relaxed);
+        quarter_lights = {};
+        for (int __i0 = 0; __i0 < 4; __i0++) {
+            metal::atomic_store_explicit(&quarter_count.inner[__i0], 0, metal::memory_order_relaxed);
+        }
+        metal::atomic_store_explicit(&fullest, 0, metal::memory_order_relaxed);
         cluster_hits = {};
         metal::atomic_store_explicit(&hit_count, 0, metal::memory_order_relaxed);
     }
@@ -1184,11 +1238,11 @@ kernel void main_(
     WorkgroupBox _e30 = load_receiver(li, pix_1, inside_1, wg_lo, wg_hi, wg_box, view, position_tex, normal_tex, materials, pos, nrm, eye_distance, valid, g_4, _buffer_sizes);
     bool _e31 = box_is_empty(_e30);
     if (!(_e31)) {
-        quarter_boxes(li, lid, wg_lo, wg_hi, pos, valid, quarter_lo, quarter_hi, quarter_bit);
+        quarter_boxes(li, lid, wg_lo, wg_hi, pos, valid, quarter_lo, quarter_hi, quarter);
         metal::uint4 _e37 = params.near_grid;
         uint _e40 = params.near_clusters_at;
         uint _e43 = params.near_groups_at;
-        cull_tile(li, _e30.lo, _e30.hi, _e37, _e40, _e43, params, lights, near_slots, boxes, rt2_2, r2_5, pos, nrm, valid, e, kept, s, g_4, quarter_lo, quarter_hi, quarter_bit, tile_lights, list_count, cluster_hits, hit_count, _buffer_sizes);
+        cull_tile(li, _e30.lo, _e30.hi, _e37, _e40, _e43, params, lights, near_slots, boxes, rt2_2, r2_5, pos, nrm, valid, e, kept, s, g_4, quarter_lo, quarter_hi, quarter_lights, quarter_count, fullest, quarter, cluster_hits, hit_count, _buffer_sizes);
     }
     bool _e45 = valid;
     if (_e45) {

@@ -638,14 +638,6 @@ float cull_r2_of(
     return _e3;
 }
 
-uint list_entry(
-    uint slot_1,
-    metal::float3 p_3,
-    float radius
-) {
-    return slot_1;
-}
-
 void shade_list(
     uint count,
     constant VplParams& params,
@@ -692,8 +684,63 @@ void shade_list(
     }
 }
 
-void cull_tile(
+void list_clear(
     uint li_8,
+    threadgroup metal::atomic_uint& list_count
+) {
+    if (li_8 == 0u) {
+        metal::atomic_store_explicit(&list_count, 0u, metal::memory_order_relaxed);
+        return;
+    } else {
+        return;
+    }
+}
+
+bool list_full(
+    threadgroup metal::atomic_uint& list_count
+) {
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    uint unnamed_1 = metal::atomic_load_explicit(&list_count, metal::memory_order_relaxed);
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    return (unnamed_1 + CLUSTER) > MAX_TILE_LIGHTS;
+}
+
+void list_add(
+    uint slot_1,
+    metal::float3 p_3,
+    float radius,
+    threadgroup type_16& tile_lights,
+    threadgroup metal::atomic_uint& list_count
+) {
+    uint _e6 = metal::atomic_fetch_add_explicit(&list_count, 1u, metal::memory_order_relaxed);
+    tile_lights.inner[_e6] = slot_1;
+    return;
+}
+
+void list_shade(
+    constant VplParams& params,
+    device type_9 const& lights,
+    device type_5 const& rt2_2,
+    device type_5 const& r2_3,
+    threadgroup type_15& wg_counts,
+    thread metal::float3& pos,
+    thread metal::float3& nrm,
+    thread bool& valid,
+    thread metal::float3& e,
+    thread uint& kept,
+    threadgroup type_16& tile_lights,
+    threadgroup metal::atomic_uint& list_count,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    uint unnamed_2 = metal::atomic_load_explicit(&list_count, metal::memory_order_relaxed);
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    shade_list(unnamed_2, params, lights, rt2_2, r2_3, wg_counts, pos, nrm, valid, e, kept, tile_lights, _buffer_sizes);
+    return;
+}
+
+void cull_tile(
+    uint li_9,
     metal::float3 lo_1,
     metal::float3 hi_1,
     metal::uint4 grid,
@@ -718,53 +765,51 @@ void cull_tile(
 ) {
     uint g_2 = 0u;
     uint h = {};
-    if (li_8 == 0u) {
-        metal::atomic_store_explicit(&list_count, 0u, metal::memory_order_relaxed);
-    }
-    uint _e14 = group_count(grid.x, grid.y, grid.z, grid.w);
-    count_tests(li_8, COUNT_GROUP_TESTS, _e14, wg_counts);
+    list_clear(li_9, list_count);
+    uint _e10 = group_count(grid.x, grid.y, grid.z, grid.w);
+    count_tests(li_9, COUNT_GROUP_TESTS, _e10, wg_counts);
     uint2 loop_bound_2 = uint2(4294967295u);
     bool loop_init_2 = true;
     while(true) {
         if (metal::all(loop_bound_2 == uint2(0u))) { break; }
         loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e106 = g_2;
-            g_2 = _e106 + 1u;
+            uint _e87 = g_2;
+            g_2 = _e87 + 1u;
         }
         loop_init_2 = false;
-        uint _e18 = g_2;
-        if (_e18 < _e14) {
+        uint _e14 = g_2;
+        if (_e14 < _e10) {
         } else {
             break;
         }
         {
-            uint _e21 = g_2;
-            GpuBox gb = boxes[groups_at + _e21];
-            bool _e27 = box_overlaps_box(gb.lo, gb.hi, lo_1, hi_1);
-            if (!(_e27)) {
+            uint _e17 = g_2;
+            GpuBox gb = boxes[groups_at + _e17];
+            bool _e23 = box_overlaps_box(gb.lo, gb.hi, lo_1, hi_1);
+            if (!(_e23)) {
                 continue;
             }
-            uint _e29 = g_2;
-            uint _e34 = group_first(_e29, grid.x, grid.y, grid.z, grid.w);
-            uint first = clusters_at + _e34;
-            uint _e36 = g_2;
-            uint _e41 = group_clusters(_e36, grid.x, grid.y, grid.z, grid.w);
-            count_tests(li_8, COUNT_CLUSTER_TESTS, _e41, wg_counts);
-            if (li_8 == 0u) {
+            uint _e25 = g_2;
+            uint _e30 = group_first(_e25, grid.x, grid.y, grid.z, grid.w);
+            uint first = clusters_at + _e30;
+            uint _e32 = g_2;
+            uint _e37 = group_clusters(_e32, grid.x, grid.y, grid.z, grid.w);
+            count_tests(li_9, COUNT_CLUSTER_TESTS, _e37, wg_counts);
+            if (li_9 == 0u) {
                 metal::atomic_store_explicit(&hit_count, 0u, metal::memory_order_relaxed);
             }
             metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-            if (li_8 < _e41) {
-                GpuBox cb = boxes[first + li_8];
-                bool _e54 = box_overlaps_box(cb.lo, cb.hi, lo_1, hi_1);
-                if (_e54) {
-                    uint _e58 = metal::atomic_fetch_add_explicit(&hit_count, 1u, metal::memory_order_relaxed);
-                    cluster_hits.inner[_e58] = first + li_8;
+            if (li_9 < _e37) {
+                GpuBox cb = boxes[first + li_9];
+                bool _e50 = box_overlaps_box(cb.lo, cb.hi, lo_1, hi_1);
+                if (_e50) {
+                    uint _e54 = metal::atomic_fetch_add_explicit(&hit_count, 1u, metal::memory_order_relaxed);
+                    cluster_hits.inner[_e54] = first + li_9;
                 }
             }
             metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-            uint unnamed_1 = metal::atomic_load_explicit(&hit_count, metal::memory_order_relaxed);
+            uint unnamed_3 = metal::atomic_load_explicit(&hit_count, metal::memory_order_relaxed);
             metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
             h = 0u;
             uint2 loop_bound_3 = uint2(4294967295u);
@@ -773,40 +818,34 @@ void cull_tile(
                 if (metal::all(loop_bound_3 == uint2(0u))) { break; }
                 loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
                 if (!loop_init_3) {
-                    uint _e103 = h;
-                    h = _e103 + 1u;
+                    uint _e84 = h;
+                    h = _e84 + 1u;
                 }
                 loop_init_3 = false;
-                uint _e65 = h;
-                if (_e65 < unnamed_1) {
+                uint _e61 = h;
+                if (_e61 < unnamed_3) {
                 } else {
                     break;
                 }
                 {
-                    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-                    uint unnamed_2 = metal::atomic_load_explicit(&list_count, metal::memory_order_relaxed);
-                    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-                    if ((unnamed_2 + CLUSTER) > MAX_TILE_LIGHTS) {
-                        shade_list(unnamed_2, params, lights, rt2_2, r2_3, wg_counts, pos, nrm, valid, e, kept, tile_lights, _buffer_sizes);
+                    bool _e63 = list_full(list_count);
+                    if (_e63) {
+                        list_shade(params, lights, rt2_2, r2_3, wg_counts, pos, nrm, valid, e, kept, tile_lights, list_count, _buffer_sizes);
                         metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-                        if (li_8 == 0u) {
-                            metal::atomic_store_explicit(&list_count, 0u, metal::memory_order_relaxed);
-                        }
+                        list_clear(li_9, list_count);
                         metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
                     }
-                    uint _e78 = h;
-                    uint _e80 = cluster_hits.inner[_e78];
-                    uint _e81 = cluster_slot(_e80, li_8);
-                    GpuLight l_1 = lights[_e81];
+                    uint _e65 = h;
+                    uint _e67 = cluster_hits.inner[_e65];
+                    uint _e68 = cluster_slot(_e67, li_9);
+                    GpuLight l_1 = lights[_e68];
                     if (metal::any(l_1.intensity != metal::float3(0.0))) {
                         count_one(COUNT_SPHERE_TESTS, wg_counts);
-                        float _e91 = cull_r2_of(_e81, r2_3, _buffer_sizes);
-                        float _e92 = cull_radius(_e91);
-                        bool _e94 = sphere_overlaps_aabb(l_1.p0_, _e92, lo_1, hi_1);
-                        if (_e94) {
-                            uint _e98 = metal::atomic_fetch_add_explicit(&list_count, 1u, metal::memory_order_relaxed);
-                            uint _e101 = list_entry(_e81, l_1.p0_, _e92);
-                            tile_lights.inner[_e98] = _e101;
+                        float _e78 = cull_r2_of(_e68, r2_3, _buffer_sizes);
+                        float _e79 = cull_radius(_e78);
+                        bool _e81 = sphere_overlaps_aabb(l_1.p0_, _e79, lo_1, hi_1);
+                        if (_e81) {
+                            list_add(_e68, l_1.p0_, _e79, tile_lights, list_count);
                         }
                     }
                 }
@@ -814,10 +853,7 @@ void cull_tile(
             metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
         }
     }
-    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-    uint unnamed_3 = metal::atomic_load_explicit(&list_count, metal::memory_order_relaxed);
-    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-    shade_list(unnamed_3, params, lights, rt2_2, r2_3, wg_counts, pos, nrm, valid, e, kept, tile_lights, _buffer_sizes);
+    list_shade(params, lights, rt2_2, r2_3, wg_counts, pos, nrm, valid, e, kept, tile_lights, list_count, _buffer_sizes);
     return;
 }
 

@@ -794,14 +794,6 @@ float cull_r2_of(
     return _e3;
 }
 
-uint list_entry(
-    uint slot_1,
-    metal::float3 p_3,
-    float radius
-) {
-    return slot_1;
-}
-
 void shade_list(
     uint count,
     constant VplParams& params,
@@ -848,8 +840,64 @@ void shade_list(
     }
 }
 
-void cull_tile(
+void list_clear(
     uint li_4,
+    threadgroup metal::atomic_uint& list_count
+) {
+    if (li_4 == 0u) {
+        metal::atomic_store_explicit(&list_count, 0u, metal::memory_order_relaxed);
+        return;
+    } else {
+        return;
+    }
+}
+
+bool list_full(
+    threadgroup metal::atomic_uint& list_count
+) {
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    uint unnamed_1 = metal::atomic_load_explicit(&list_count, metal::memory_order_relaxed);
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    return (unnamed_1 + CLUSTER) > MAX_TILE_LIGHTS;
+}
+
+void list_add(
+    uint slot_1,
+    metal::float3 p_3,
+    float radius,
+    threadgroup type_14& tile_lights,
+    threadgroup metal::atomic_uint& list_count
+) {
+    uint _e6 = metal::atomic_fetch_add_explicit(&list_count, 1u, metal::memory_order_relaxed);
+    tile_lights.inner[_e6] = slot_1;
+    return;
+}
+
+void list_shade(
+    constant VplParams& params,
+    device type_9 const& lights,
+    device type_5 const& rt2_2,
+    device type_5 const& r2_3,
+    thread metal::float3& pos,
+    thread metal::float3& nrm,
+    thread bool& valid,
+    thread metal::float3& e,
+    thread uint& kept,
+    thread metal::float3& s,
+    thread Glossy& g_4,
+    threadgroup type_14& tile_lights,
+    threadgroup metal::atomic_uint& list_count,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    uint unnamed_2 = metal::atomic_load_explicit(&list_count, metal::memory_order_relaxed);
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    shade_list(unnamed_2, params, lights, rt2_2, r2_3, pos, nrm, valid, e, kept, s, g_4, tile_lights, _buffer_sizes);
+    return;
+}
+
+void cull_tile(
+    uint li_5,
     metal::float3 lo_1,
     metal::float3 hi_1,
     metal::uint4 grid,
@@ -875,51 +923,49 @@ void cull_tile(
 ) {
     uint g_3 = 0u;
     uint h = {};
-    if (li_4 == 0u) {
-        metal::atomic_store_explicit(&list_count, 0u, metal::memory_order_relaxed);
-    }
-    uint _e14 = group_count(grid.x, grid.y, grid.z, grid.w);
+    list_clear(li_5, list_count);
+    uint _e10 = group_count(grid.x, grid.y, grid.z, grid.w);
     uint2 loop_bound_2 = uint2(4294967295u);
     bool loop_init_2 = true;
     while(true) {
         if (metal::all(loop_bound_2 == uint2(0u))) { break; }
         loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e103 = g_3;
-            g_3 = _e103 + 1u;
+            uint _e84 = g_3;
+            g_3 = _e84 + 1u;
         }
         loop_init_2 = false;
-        uint _e17 = g_3;
-        if (_e17 < _e14) {
+        uint _e13 = g_3;
+        if (_e13 < _e10) {
         } else {
             break;
         }
         {
-            uint _e20 = g_3;
-            GpuBox gb = boxes[groups_at + _e20];
-            bool _e26 = box_overlaps_box(gb.lo, gb.hi, lo_1, hi_1);
-            if (!(_e26)) {
+            uint _e16 = g_3;
+            GpuBox gb = boxes[groups_at + _e16];
+            bool _e22 = box_overlaps_box(gb.lo, gb.hi, lo_1, hi_1);
+            if (!(_e22)) {
                 continue;
             }
-            uint _e28 = g_3;
-            uint _e33 = group_first(_e28, grid.x, grid.y, grid.z, grid.w);
-            uint first = clusters_at + _e33;
-            uint _e35 = g_3;
-            uint _e40 = group_clusters(_e35, grid.x, grid.y, grid.z, grid.w);
-            if (li_4 == 0u) {
+            uint _e24 = g_3;
+            uint _e29 = group_first(_e24, grid.x, grid.y, grid.z, grid.w);
+            uint first = clusters_at + _e29;
+            uint _e31 = g_3;
+            uint _e36 = group_clusters(_e31, grid.x, grid.y, grid.z, grid.w);
+            if (li_5 == 0u) {
                 metal::atomic_store_explicit(&hit_count, 0u, metal::memory_order_relaxed);
             }
             metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-            if (li_4 < _e40) {
-                GpuBox cb = boxes[first + li_4];
-                bool _e52 = box_overlaps_box(cb.lo, cb.hi, lo_1, hi_1);
-                if (_e52) {
-                    uint _e56 = metal::atomic_fetch_add_explicit(&hit_count, 1u, metal::memory_order_relaxed);
-                    cluster_hits.inner[_e56] = first + li_4;
+            if (li_5 < _e36) {
+                GpuBox cb = boxes[first + li_5];
+                bool _e48 = box_overlaps_box(cb.lo, cb.hi, lo_1, hi_1);
+                if (_e48) {
+                    uint _e52 = metal::atomic_fetch_add_explicit(&hit_count, 1u, metal::memory_order_relaxed);
+                    cluster_hits.inner[_e52] = first + li_5;
                 }
             }
             metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-            uint unnamed_1 = metal::atomic_load_explicit(&hit_count, metal::memory_order_relaxed);
+            uint unnamed_3 = metal::atomic_load_explicit(&hit_count, metal::memory_order_relaxed);
             metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
             h = 0u;
             uint2 loop_bound_3 = uint2(4294967295u);
@@ -928,39 +974,33 @@ void cull_tile(
                 if (metal::all(loop_bound_3 == uint2(0u))) { break; }
                 loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
                 if (!loop_init_3) {
-                    uint _e100 = h;
-                    h = _e100 + 1u;
+                    uint _e81 = h;
+                    h = _e81 + 1u;
                 }
                 loop_init_3 = false;
-                uint _e63 = h;
-                if (_e63 < unnamed_1) {
+                uint _e59 = h;
+                if (_e59 < unnamed_3) {
                 } else {
                     break;
                 }
                 {
-                    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-                    uint unnamed_2 = metal::atomic_load_explicit(&list_count, metal::memory_order_relaxed);
-                    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-                    if ((unnamed_2 + CLUSTER) > MAX_TILE_LIGHTS) {
-                        shade_list(unnamed_2, params, lights, rt2_2, r2_3, pos, nrm, valid, e, kept, s, g_4, tile_lights, _buffer_sizes);
+                    bool _e61 = list_full(list_count);
+                    if (_e61) {
+                        list_shade(params, lights, rt2_2, r2_3, pos, nrm, valid, e, kept, s, g_4, tile_lights, list_count, _buffer_sizes);
                         metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-                        if (li_4 == 0u) {
-                            metal::atomic_store_explicit(&list_count, 0u, metal::memory_order_relaxed);
-                        }
+                        list_clear(li_5, list_count);
                         metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
                     }
-                    uint _e76 = h;
-                    uint _e78 = cluster_hits.inner[_e76];
-                    uint _e79 = cluster_slot(_e78, li_4);
-                    GpuLight l_6 = lights[_e79];
+                    uint _e63 = h;
+                    uint _e65 = cluster_hits.inner[_e63];
+                    uint _e66 = cluster_slot(_e65, li_5);
+                    GpuLight l_6 = lights[_e66];
                     if (metal::any(l_6.intensity != metal::float3(0.0))) {
-                        float _e88 = cull_r2_of(_e79, r2_3, _buffer_sizes);
-                        float _e89 = cull_radius(_e88);
-                        bool _e91 = sphere_overlaps_aabb(l_6.p0_, _e89, lo_1, hi_1);
-                        if (_e91) {
-                            uint _e95 = metal::atomic_fetch_add_explicit(&list_count, 1u, metal::memory_order_relaxed);
-                            uint _e98 = list_entry(_e79, l_6.p0_, _e89);
-                            tile_lights.inner[_e95] = _e98;
+                        float _e75 = cull_r2_of(_e66, r2_3, _buffer_sizes);
+                        float _e76 = cull_radius(_e75);
+                        bool _e78 = sphere_overlaps_aabb(l_6.p0_, _e76, lo_1, hi_1);
+                        if (_e78) {
+                            list_add(_e66, l_6.p0_, _e76, tile_lights, list_count);
                         }
                     }
                 }
@@ -968,10 +1008,7 @@ void cull_tile(
             metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
         }
     }
-    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-    uint unnamed_3 = metal::atomic_load_explicit(&list_count, metal::memory_order_relaxed);
-    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-    shade_list(unnamed_3, params, lights, rt2_2, r2_3, pos, nrm, valid, e, kept, s, g_4, tile_lights, _buffer_sizes);
+    list_shade(params, lights, rt2_2, r2_3, pos, nrm, valid, e, kept, s, g_4, tile_lights, list_count, _buffer_sizes);
     return;
 }
 

@@ -64,8 +64,10 @@ pub struct IndirectPassDesc {
     /// a reference to measure the interleaved image against.
     pub interleaved: bool,
     /// Capacity of `vpl_tiled`'s per-tile light list, in lights (at least
-    /// 1; 4 bytes of workgroup memory each): a subset with more lights
-    /// streams through it in chunks. Default [`TILE_LIST`].
+    /// 64, a cluster; 4 bytes of workgroup memory each): a subset with more
+    /// lights streams through it in chunks. The near field's `vpl_near`
+    /// splits it into one list per quarter of the tile (a quarter each, at
+    /// least 64). Default [`TILE_LIST`].
     pub tile_list: u32,
     /// Built with the material input (see the module docs): every record
     /// takes [`IndirectInputs::materials`] and also writes the specular
