@@ -209,6 +209,21 @@ fn reuse_material(s: ReuseSurface, eye: vec3f) -> Material {
     return material_of(b.xyz, b.w, r.x, r.y, normalize(eye - s.x));
 }
 
+/// The sample a reused pick of light `li` at grid cells `cells` stands
+/// for: the light, and for a triangle its point (a light without area has
+/// one point for every cell).
+fn sample_key(li: u32, cells: u32) -> vec2u {
+    return vec2u(li, select(0u, cells, lights[li].kind == LIGHT_TRIANGLE));
+}
+
+/// What the reused pick of light `li` at grid cells `cells` adds at `x`
+/// (normal `n`, material `m`), unranged, weight 1; shadowed (its ray
+/// leaving `x + eps·n`) where `trace`.
+fn shade_sample(li: u32, cells: u32, x: vec3f, n: vec3f, m: Material, eps: f32, trace: bool) -> Shaded {
+    let c = connect_record(lights[li], x, n, n, UNRANGED, UNRANGED, 1.0, grid_coordinate(cells), grid_coordinate(cells << 16u), eps, trace);
+    return shade_connection(c, x, n, m);
+}
+
 /// The previous-frame pixels pixel `x` (normal `n`, distance `d` from the
 /// eye) reuses, drawn from stream `h`: the one it reprojects to, then
 /// `DOMAINS − 1` in a disk of `reuse.radius` pixels around it, each
@@ -510,12 +525,35 @@ fn main(@builtin(global_invocation_id) gid: vec3u, @builtin(local_invocation_ind
     let first = select(0u, 1u, own_history);
     let confidence = 1.0 + select(0.0, doms[0].c, own_history);
     var hs = reuse_stream(seed, 1u);
+    // With visibility reuse (ReSTIR DI's), this frame's picks are shadowed
+    // before they meet the history: an occluded one enters with no weight,
+    // so a reservoir holds only picks that reached its pixel, and its
+    // weight averages over the frames it stands for how much of the light
+    // arrives (not only whether its last pick did). Slots holding the same
+    // sample cast one ray, and a final pick that is one of these samples
+    // is not traced again.
+    var fresh_keys: array<vec2u, K>;
+    var fresh_held: array<bool, K>;
+    for (var q = 0u; q < K; q++) {
+        fresh_keys[q] = sample_key(slot_light[q], slot_cells[q]);
+        fresh_held[q] = reuse.visibility == 1u && slot_p[q] > 0.0;
+    }
+    let fresh_firsts = first_holders(fresh_keys, fresh_held);
+    var fresh_visible: array<bool, K>;
+    for (var q = 0u; q < K; q++) {
+        if fresh_firsts[q] == q {
+            fresh_visible[q] = resample_target(output_of(shade_sample(slot_light[q], slot_cells[q], x, n, m, eps, true))) > 0.0;
+        } else if fresh_firsts[q] < K {
+            fresh_visible[q] = fresh_visible[fresh_firsts[q]];
+        }
+    }
     var kept: array<ReuseSlot, K>;
     var fin: array<ReuseSlot, K>;
     for (var q = 0u; q < K; q++) {
-        // This frame's pick (its weight the candidates' sum) and the
-        // pixel's own history.
-        kept[q] = gris_combine(q, ReuseSlot(slot_light[q], slot_cells[q], select(0.0, slot_target(total, q, K), slot_p[q] > 0.0)), true, 1.0, 0u, first, x, n, m, &doms, &hs);
+        // This frame's pick (its weight the candidates' sum; none where
+        // visibility reuse found it occluded) and the pixel's own history.
+        let fresh = slot_p[q] > 0.0 && (reuse.visibility == 0u || fresh_visible[q]);
+        kept[q] = gris_combine(q, ReuseSlot(slot_light[q], slot_cells[q], select(0.0, slot_target(total, q, K), fresh)), true, 1.0, 0u, first, x, n, m, &doms, &hs);
         // The neighbours' histories join it (confidence: the inputs each
         // stands for).
         fin[q] = kept[q];
@@ -527,11 +565,10 @@ fn main(@builtin(global_invocation_id) gid: vec3u, @builtin(local_invocation_ind
     // same sample cast one ray with their weights summed. With visibility
     // reuse a slot whose pick is occluded here keeps no pick for the next
     // frame.
-    // A light without area has one point for every grid cell.
     var keys: array<vec2u, K>;
     var held: array<bool, K>;
     for (var k = 0u; k < K; k++) {
-        keys[k] = vec2u(fin[k].light, select(0u, fin[k].u, lights[fin[k].light].kind == LIGHT_TRIANGLE));
+        keys[k] = sample_key(fin[k].light, fin[k].u);
         held[k] = fin[k].w > 0.0;
     }
     let firsts = first_holders(keys, held);
@@ -546,8 +583,19 @@ fn main(@builtin(global_invocation_id) gid: vec3u, @builtin(local_invocation_ind
                 w += fin[j].w * slot_share(j, K);
             }
         }
-        let c = connect_record(lights[fin[k].light], x, n, n, UNRANGED, UNRANGED, 1.0, grid_coordinate(fin[k].u), grid_coordinate(fin[k].u << 16u), eps, true);
-        let shaded = shade_connection(c, x, n, m);
+        // A sample this frame's picks already traced.
+        var known = false;
+        var seen = false;
+        for (var j = 0u; j < K && !known; j++) {
+            if fresh_held[j] && all(fresh_keys[j] == keys[k]) {
+                known = true;
+                seen = fresh_visible[j];
+            }
+        }
+        var shaded = shade_sample(fin[k].light, fin[k].u, x, n, m, eps, !known);
+        if known && !seen {
+            shaded = Shaded(vec3f(0.0), vec3f(0.0), vec3f(0.0));
+        }
         t = add(t, scaled(shaded, w));
         for (var j = k; j < K; j++) {
             if firsts[j] == k {

@@ -323,8 +323,8 @@ fn sphere_contains_point(c: vec3<f32>, r_1: f32, x_1: vec3<f32>) -> bool {
 }
 
 fn sphere_overlaps_aabb(c_1: vec3<f32>, r_2: f32, bmin: vec3<f32>, bmax: vec3<f32>) -> bool {
-    let q_5 = clamp(c_1, bmin, bmax);
-    let v_6 = (q_5 - c_1);
+    let q_7 = clamp(c_1, bmin, bmax);
+    let v_6 = (q_7 - c_1);
     return (dot(v_6, v_6) <= (r_2 * r_2));
 }
 
@@ -339,29 +339,29 @@ fn connection_factor(cos_x: f32, d2_3: f32, rt2_1: f32, w_1: f32) -> f32 {
 }
 
 fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n_1: vec3<f32>, ng: vec3<f32>, r2_1: f32) -> f32 {
-    var local_8: bool;
-    var local_9: bool;
+    var local_14: bool;
+    var local_15: bool;
 
     let v_7 = (x_2 - y);
     let d2_6 = dot(v_7, v_7);
     let _e7 = slc_keep(r2_1, d2_6);
     if !(!(_e7)) {
-        local_8 = !((d2_6 > 0f));
+        local_14 = !((d2_6 > 0f));
     } else {
-        local_8 = true;
+        local_14 = true;
     }
-    let _e16 = local_8;
+    let _e16 = local_14;
     if _e16 {
         return 0f;
     }
     let w_12 = (v_7 / vec3(sqrt(d2_6)));
     let cos_x_1 = -(dot(n_1, w_12));
     if !(!((cos_x_1 > 0f))) {
-        local_9 = !((dot(ng, w_12) < 0f));
+        local_15 = !((dot(ng, w_12) < 0f));
     } else {
-        local_9 = true;
+        local_15 = true;
     }
-    let _e34 = local_9;
+    let _e34 = local_15;
     if _e34 {
         return 0f;
     }
@@ -419,11 +419,11 @@ fn slot_target(c_4: vec3<f32>, slot: u32, k_2: u32) -> f32 {
         let _e5 = resample_target(c_4);
         return _e5;
     }
-    let j_6 = (slot % 3u);
-    if (j_6 == 0u) {
+    let j_7 = (slot % 3u);
+    if (j_7 == 0u) {
         return c_4.x;
     }
-    if (j_6 == 1u) {
+    if (j_7 == 1u) {
         return c_4.y;
     }
     return c_4.z;
@@ -435,13 +435,13 @@ fn slot_share(slot_1: u32, k_3: u32) -> vec3<f32> {
         let w_13 = (1f / _e4);
         return vec3<f32>(w_13, w_13, w_13);
     }
-    let j_7 = (slot_1 % 3u);
-    let _e15 = to_f32_((((k_3 + 2u) - j_7) / 3u));
+    let j_8 = (slot_1 % 3u);
+    let _e15 = to_f32_((((k_3 + 2u) - j_8) / 3u));
     let w_14 = (1f / _e15);
-    if (j_7 == 0u) {
+    if (j_8 == 0u) {
         return vec3<f32>(w_14, 0f, 0f);
     }
-    if (j_7 == 1u) {
+    if (j_8 == 1u) {
         return vec3<f32>(0f, w_14, 0f);
     }
     return vec3<f32>(0f, 0f, w_14);
@@ -490,14 +490,14 @@ fn smith_root(cos_: f32, alpha_1: f32) -> f32 {
 }
 
 fn smith_visibility(n_l: f32, n_v: f32, alpha_2: f32) -> f32 {
-    var local_10: bool;
+    var local_16: bool;
 
     if !((n_l <= 0f)) {
-        local_10 = (n_v <= 0f);
+        local_16 = (n_v <= 0f);
     } else {
-        local_10 = true;
+        local_16 = true;
     }
-    let _e11 = local_10;
+    let _e11 = local_16;
     if _e11 {
         return 0f;
     }
@@ -519,21 +519,21 @@ fn specular_fresnel(base: vec3<f32>, metallic: f32, f0_d: vec3<f32>, f90_d: f32,
 }
 
 fn has_specular(metallic_1: f32, f0_d_1: vec3<f32>, f90_d_1: f32) -> bool {
-    var local_11: bool;
-    var local_12: bool;
+    var local_17: bool;
+    var local_18: bool;
 
     if !((metallic_1 > 0f)) {
-        local_11 = (f90_d_1 > 0f);
+        local_17 = (f90_d_1 > 0f);
     } else {
-        local_11 = true;
+        local_17 = true;
     }
-    let _e11 = local_11;
+    let _e11 = local_17;
     if !(_e11) {
-        local_12 = (max(max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0f);
+        local_18 = (max(max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0f);
     } else {
-        local_12 = true;
+        local_18 = true;
     }
-    let _e23 = local_12;
+    let _e23 = local_18;
     return _e23;
 }
 
@@ -542,17 +542,17 @@ fn channel_mean(c_5: vec3<f32>) -> f32 {
 }
 
 fn receiver_lobe(base_1: vec3<f32>, metallic_2: f32, f0_d_2: vec3<f32>, f90_d_2: f32, alpha_3: f32, n_v_1: f32) -> vec4<f32> {
-    var local_13: bool;
+    var local_19: bool;
 
     let _e10 = fresnel_schlick(f0_d_2, f90_d_2, n_v_1);
     let _e16 = channel_mean((((vec3<f32>(1f, 1f, 1f) - _e10) * base_1) * (1f - metallic_2)));
     if !((n_v_1 <= 0f)) {
         let _e22 = has_specular(metallic_2, f0_d_2, f90_d_2);
-        local_13 = !(_e22);
+        local_19 = !(_e22);
     } else {
-        local_13 = true;
+        local_19 = true;
     }
-    let _e25 = local_13;
+    let _e25 = local_19;
     if _e25 {
         return vec4<f32>(_e16, 0f, alpha_3, n_v_1);
     }
@@ -604,9 +604,9 @@ fn bevy_f0_(reflectance: f32) -> f32 {
 fn bevy_dfg(r_4: f32, n_v_2: f32) -> f32 {
     let rx = (1f - r_4);
     let a004_ = ((min((rx * rx), exp2((-9.28f * n_v_2))) * rx) + (0.0425f - (0.0275f * r_4)));
-    let x_15 = max(((1.04f - (0.572f * r_4)) - (1.04f * a004_)), 0.00005f);
+    let x_16 = max(((1.04f - (0.572f * r_4)) - (1.04f * a004_)), 0.00005f);
     let y_1 = max((((0.022f * r_4) - 0.04f) + (1.04f * a004_)), 0.00005f);
-    return (x_15 + y_1);
+    return (x_16 + y_1);
 }
 
 fn bevy_brdf(base_2: vec3<f32>, metallic_3: f32, r_5: f32, reflectance_1: f32, n_4: vec3<f32>, v_1: vec3<f32>, l: vec3<f32>) -> vec3<f32> {
@@ -636,23 +636,23 @@ fn bevy_brdf(base_2: vec3<f32>, metallic_3: f32, r_5: f32, reflectance_1: f32, n
 }
 
 fn cone_cos_of(v_2: vec3<f32>, d2_4: f32, a_3: f32, d: vec3<f32>) -> f32 {
-    var local_14: bool;
-    var local_15: bool;
+    var local_20: bool;
+    var local_21: bool;
 
     let vd = dot(v_2, d);
     let h2_1 = (d2_4 - (a_3 * a_3));
     if !((h2_1 <= 0f)) {
         if (vd >= 0f) {
-            local_15 = ((vd * vd) >= h2_1);
+            local_21 = ((vd * vd) >= h2_1);
         } else {
-            local_15 = false;
+            local_21 = false;
         }
-        let _e19 = local_15;
-        local_14 = _e19;
+        let _e19 = local_21;
+        local_20 = _e19;
     } else {
-        local_14 = true;
+        local_20 = true;
     }
-    let _e21 = local_14;
+    let _e21 = local_20;
     if _e21 {
         return 1f;
     }
@@ -709,26 +709,26 @@ fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin_1: vec3<f32>, bmax_1: vec3<f32>
 }
 
 fn triangle_normal(a_4: vec3<f32>, b_3: vec3<f32>, c_6: vec3<f32>) -> vec3<f32> {
-    var local_16: bool;
+    var local_22: bool;
 
-    let n_14 = cross((b_3 - a_4), (c_6 - a_4));
-    let l2_ = dot(n_14, n_14);
+    let n_15 = cross((b_3 - a_4), (c_6 - a_4));
+    let l2_ = dot(n_15, n_15);
     if !(!((l2_ > 0f))) {
-        local_16 = !((l2_ < 300000000000000000000000000000000000000f));
+        local_22 = !((l2_ < 300000000000000000000000000000000000000f));
     } else {
-        local_16 = true;
+        local_22 = true;
     }
-    let _e17 = local_16;
+    let _e17 = local_22;
     if _e17 {
         return vec3<f32>(0f, 0f, 0f);
     }
-    return (n_14 / vec3(sqrt(l2_)));
+    return (n_15 / vec3(sqrt(l2_)));
 }
 
 fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_4: vec3<f32>, c_7: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
-    var local_17: bool;
-    var local_18: bool;
-    var local_19: bool;
+    var local_23: bool;
+    var local_24: bool;
+    var local_25: bool;
 
     let e1_ = (b_4 - a_5);
     let e2_ = (c_7 - a_5);
@@ -741,32 +741,32 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_4: vec3<f32>, 
     let s_12 = (o_1 - a_5);
     let u_4 = (dot(s_12, p_8) * inv);
     if !((u_4 < 0f)) {
-        local_17 = (u_4 > 1f);
+        local_23 = (u_4 > 1f);
     } else {
-        local_17 = true;
+        local_23 = true;
     }
-    let _e28 = local_17;
+    let _e28 = local_23;
     if _e28 {
         return -1f;
     }
-    let q_6 = cross(s_12, e1_);
-    let v_9 = (dot(d_3, q_6) * inv);
+    let q_8 = cross(s_12, e1_);
+    let v_9 = (dot(d_3, q_8) * inv);
     if !((v_9 < 0f)) {
-        local_18 = ((u_4 + v_9) > 1f);
+        local_24 = ((u_4 + v_9) > 1f);
     } else {
-        local_18 = true;
+        local_24 = true;
     }
-    let _e42 = local_18;
+    let _e42 = local_24;
     if _e42 {
         return -1f;
     }
-    let t_6 = (dot(e2_, q_6) * inv);
+    let t_6 = (dot(e2_, q_8) * inv);
     if (t_6 > t_min) {
-        local_19 = (t_6 < t_max_1);
+        local_25 = (t_6 < t_max_1);
     } else {
-        local_19 = false;
+        local_25 = false;
     }
-    let _e51 = local_19;
+    let _e51 = local_25;
     if _e51 {
         return t_6;
     }
@@ -778,20 +778,20 @@ fn reproject(c0_: vec4<f32>, c1_: vec4<f32>, c2_: vec4<f32>, c3_: vec4<f32>, p_2
     if (clip.w <= 0f) {
         return vec3<f32>(-1f, -1f, 0f);
     }
-    let x_16 = (((((clip.x / clip.w) + 1f) * 0.5f) * width) - 0.5f);
+    let x_17 = (((((clip.x / clip.w) + 1f) * 0.5f) * width) - 0.5f);
     let y_2 = ((((1f - (clip.y / clip.w)) * 0.5f) * height) - 0.5f);
-    return vec3<f32>(x_16, y_2, clip.w);
+    return vec3<f32>(x_17, y_2, clip.w);
 }
 
 fn history_matches(n_5: vec3<f32>, nh: vec3<f32>, p_3: vec3<f32>, oh: f32, d_4: f32) -> bool {
-    var local_20: bool;
+    var local_26: bool;
 
     if (abs((dot(nh, p_3) - oh)) <= (TEMPORAL_DEPTH_TOLERANCE * d_4)) {
-        local_20 = (dot(n_5, nh) >= TEMPORAL_NORMAL_COS);
+        local_26 = (dot(n_5, nh) >= TEMPORAL_NORMAL_COS);
     } else {
-        local_20 = false;
+        local_26 = false;
     }
-    let _e17 = local_20;
+    let _e17 = local_26;
     return _e17;
 }
 
@@ -835,15 +835,15 @@ fn trace(o_2: vec3<f32>, d_5: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
     let _e14 = ray_inverse3_(d_5);
     loop {
         let _e21 = node_3;
-        let n_15 = geo_nodes[_e21];
+        let n_16 = geo_nodes[_e21];
         let _e27 = hit.t;
-        let _e28 = ray_aabb(o_2, _e14, n_15.bmin, n_15.bmax, _e27);
+        let _e28 = ray_aabb(o_2, _e14, n_16.bmin, n_16.bmax, _e27);
         if (_e28 >= 0f) {
-            if (n_15.count > 0u) {
-                i = n_15.first;
+            if (n_16.count > 0u) {
+                i = n_16.first;
                 loop {
                     let _e36 = i;
-                    if (_e36 < (n_15.first + n_15.count)) {
+                    if (_e36 < (n_16.first + n_16.count)) {
                     } else {
                         break;
                     }
@@ -871,11 +871,11 @@ fn trace(o_2: vec3<f32>, d_5: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
                 let _e60 = sp;
                 if (_e60 < 64u) {
                     let _e63 = sp;
-                    stack[_e63] = (n_15.first + 1u);
+                    stack[_e63] = (n_16.first + 1u);
                     let _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_3 = n_15.first;
+                node_3 = n_16.first;
                 continue;
             }
         }
@@ -928,8 +928,8 @@ fn bsh_inner_scale(a_7: f32, v_3: vec3<f32>, d2_5: f32, r_7: vec3<f32>, rl_2: ve
 }
 
 fn bsh_reaches(node_4: BshNode, x_4: vec3<f32>, r_8: vec3<f32>, rl_3: vec4<f32>) -> bool {
-    var local_21: bool;
-    var local_22: bool;
+    var local_27: bool;
+    var local_28: bool;
 
     let _e6 = sphere_contains_point(node_4.center, node_4.radius, x_4);
     if _e6 {
@@ -937,11 +937,11 @@ fn bsh_reaches(node_4: BshNode, x_4: vec3<f32>, r_8: vec3<f32>, rl_3: vec4<f32>)
     }
     if !((rl_3.w <= 1f)) {
         let _e20 = sphere_contains_point(node_4.center, (node_4.radius * (rl_3.w * 1.0001f)), x_4);
-        local_21 = !(_e20);
+        local_27 = !(_e20);
     } else {
-        local_21 = true;
+        local_27 = true;
     }
-    let _e23 = local_21;
+    let _e23 = local_27;
     if _e23 {
         return false;
     }
@@ -962,11 +962,11 @@ fn bsh_reaches(node_4: BshNode, x_4: vec3<f32>, r_8: vec3<f32>, rl_3: vec4<f32>)
     let _e50 = bsh_range_bound(node_4);
     let reach = (node_4.extent + (sqrt(s_c) * _e50));
     if (d2_7 <= ((node_4.radius * node_4.radius) * s_c)) {
-        local_22 = (d2_7 <= (reach * reach));
+        local_28 = (d2_7 <= (reach * reach));
     } else {
-        local_22 = false;
+        local_28 = false;
     }
-    let _e63 = local_22;
+    let _e63 = local_28;
     return _e63;
 }
 
@@ -978,7 +978,7 @@ fn bsh_reaches_box(node_5: BshNode, lo: vec3<f32>, hi: vec3<f32>, w_7: f32) -> b
 fn bsh_subtree(nodes_3: u32, s_1: u32, depth: u32) -> u32 {
     var i_2: u32;
     var level: u32 = 0u;
-    var local_23: bool;
+    var local_29: bool;
 
     let _e3 = bsh_first(nodes_3);
     i_2 = _e3;
@@ -986,11 +986,11 @@ fn bsh_subtree(nodes_3: u32, s_1: u32, depth: u32) -> u32 {
         let _e7 = level;
         if (_e7 < depth) {
             let _e11 = i_2;
-            local_23 = (_e11 != BSH_NONE);
+            local_29 = (_e11 != BSH_NONE);
         } else {
-            local_23 = false;
+            local_29 = false;
         }
-        let _e15 = local_23;
+        let _e15 = local_29;
         if _e15 {
         } else {
             break;
@@ -1065,8 +1065,8 @@ fn next_threshold(sum: f32, h_1: ptr<function, u32>) -> f32 {
 
 fn connect_record(l_3: GpuLight, x_5: vec3<f32>, n_6: vec3<f32>, ng_1: vec3<f32>, r2_2: f32, rt2_2: f32, w_res: f32, u1_3: f32, u2_3: f32, eps: f32, trace_1: bool) -> Connection {
     var c_8: Connection;
-    var local_24: bool;
-    var local_25: bool;
+    var local_30: bool;
+    var local_31: bool;
 
     c_8.e = vec3(0f);
     let _e16 = light_point(l_3, u1_3, u2_3);
@@ -1079,16 +1079,16 @@ fn connect_record(l_3: GpuLight, x_5: vec3<f32>, n_6: vec3<f32>, ng_1: vec3<f32>
         if trace_1 {
             let _e33 = c_8.y;
             let _e34 = occluded((x_5 + (ng_1 * eps)), _e33);
-            local_25 = _e34;
+            local_31 = _e34;
         } else {
-            local_25 = false;
+            local_31 = false;
         }
-        let _e36 = local_25;
-        local_24 = _e36;
+        let _e36 = local_31;
+        local_30 = _e36;
     } else {
-        local_24 = true;
+        local_30 = true;
     }
-    let _e38 = local_24;
+    let _e38 = local_30;
     if _e38 {
         let _e39 = c_8;
         return _e39;
@@ -1180,9 +1180,9 @@ fn box_is_empty(b_6: WorkgroupBox) -> bool {
 fn tile_subtree(s_3: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: u32) -> u32 {
     var p_6: u32;
     var b_7: u32;
-    var local_26: bool;
-    var local_27: bool;
-    var local_28: bool;
+    var local_32: bool;
+    var local_33: bool;
+    var local_34: bool;
 
     let _e8 = bsh_subtree(BSH, s_3, BSH_TILE_DEPTH);
     if (_e8 == BSH_NONE) {
@@ -1197,16 +1197,16 @@ fn tile_subtree(s_3: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: 
         if (_e23 != end_1) {
             if !(!(list)) {
                 let _e31 = p_6;
-                local_27 = (_e31 < to);
+                local_33 = (_e31 < to);
             } else {
-                local_27 = true;
+                local_33 = true;
             }
-            let _e34 = local_27;
-            local_26 = _e34;
+            let _e34 = local_33;
+            local_32 = _e34;
         } else {
-            local_26 = false;
+            local_32 = false;
         }
-        let _e36 = local_26;
+        let _e36 = local_32;
         if _e36 {
         } else {
             break;
@@ -1214,11 +1214,11 @@ fn tile_subtree(s_3: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: 
         {
             if list {
                 let _e39 = p_6;
-                local_28 = (_e39 >= start_2);
+                local_34 = (_e39 >= start_2);
             } else {
-                local_28 = false;
+                local_34 = false;
             }
-            let _e42 = local_28;
+            let _e42 = local_34;
             if _e42 {
                 let _e44 = p_6;
                 let _e47 = b_7;
@@ -1239,18 +1239,18 @@ fn tile_subtree(s_3: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: 
 }
 
 fn tile_walk_begin(li_4: u32, x_8: vec3<f32>, w_9: f32, has_2: bool) -> TileWalk {
-    var local_29: bool;
+    var local_35: bool;
     var t_2: TileWalk;
     var s_4: u32;
     var sum_1: u32 = 0u;
     var s_5: u32 = 0u;
 
     if has_2 {
-        local_29 = (w_9 >= 0f);
+        local_35 = (w_9 >= 0f);
     } else {
-        local_29 = false;
+        local_35 = false;
     }
-    let _e12 = local_29;
+    let _e12 = local_35;
     let _e14 = atomicMax((&tile_scale), select(0u, bitcast<u32>(w_9), _e12));
     let _e15 = workgroup_box(li_4, x_8, has_2);
     let _e19 = workgroupUniformLoad((&tile_scale));
@@ -1313,7 +1313,7 @@ fn tile_walk_begin(li_4: u32, x_8: vec3<f32>, w_9: f32, has_2: bool) -> TileWalk
 fn tile_walk_fill(li_5: u32, t_3: TileWalk, start_3: u32) -> u32 {
     var s_6: u32;
     var past: u32;
-    var local_30: bool;
+    var local_36: bool;
 
     let to_1 = min(t_3.total, (start_3 + TILE_LIST));
     s_6 = li_5;
@@ -1335,11 +1335,11 @@ fn tile_walk_fill(li_5: u32, t_3: TileWalk, start_3: u32) -> u32 {
             }
             if (at_1 < to_1) {
                 let _e31 = past;
-                local_30 = (_e31 > start_3);
+                local_36 = (_e31 > start_3);
             } else {
-                local_30 = false;
+                local_36 = false;
             }
-            let _e34 = local_30;
+            let _e34 = local_36;
             if _e34 {
                 let _e35 = s_6;
                 let _e37 = tile_subtree(_e35, t_3, true, at_1, start_3, to_1);
@@ -1391,9 +1391,9 @@ fn scaled(s_8: Shaded, w_11: vec3<f32>) -> Shaded {
 fn first_holders(keys_1: array<vec2<u32>, 8>, held_1: array<bool, 8>) -> array<u32, 8> {
     var first: array<u32, 8>;
     var k_4: u32 = 0u;
-    var j_3: u32;
-    var local_31: bool;
-    var local_32: bool;
+    var j_4: u32;
+    var local_37: bool;
+    var local_38: bool;
 
     loop {
         let _e5 = k_4;
@@ -1406,41 +1406,41 @@ fn first_holders(keys_1: array<vec2<u32>, 8>, held_1: array<bool, 8>) -> array<u
             let _e11 = k_4;
             let _e12 = k_4;
             first[_e8] = select(K, _e11, held_1[_e12]);
-            j_3 = 0u;
+            j_4 = 0u;
             loop {
-                let _e17 = j_3;
+                let _e17 = j_4;
                 let _e18 = k_4;
                 if (_e17 < _e18) {
                     let _e22 = k_4;
-                    local_31 = held_1[_e22];
+                    local_37 = held_1[_e22];
                 } else {
-                    local_31 = false;
+                    local_37 = false;
                 }
-                let _e25 = local_31;
+                let _e25 = local_37;
                 if _e25 {
                 } else {
                     break;
                 }
                 {
-                    let _e26 = j_3;
+                    let _e26 = j_4;
                     if held_1[_e26] {
-                        let _e30 = j_3;
+                        let _e30 = j_4;
                         let _e32 = k_4;
-                        local_32 = all((keys_1[_e30] == keys_1[_e32]));
+                        local_38 = all((keys_1[_e30] == keys_1[_e32]));
                     } else {
-                        local_32 = false;
+                        local_38 = false;
                     }
-                    let _e37 = local_32;
+                    let _e37 = local_38;
                     if _e37 {
                         let _e38 = k_4;
-                        let _e40 = j_3;
+                        let _e40 = j_4;
                         first[_e38] = _e40;
                         break;
                     }
                 }
                 continuing {
-                    let _e42 = j_3;
-                    j_3 = (_e42 + 1u);
+                    let _e42 = j_4;
+                    j_4 = (_e42 + 1u);
                 }
             }
         }
@@ -1457,13 +1457,13 @@ fn output_of(s_9: Shaded) -> vec3<f32> {
     return (s_9.diffuse + s_9.specular);
 }
 
-fn reuse_target(q_3: u32, l_4: GpuLight, cells: u32, x_11: vec3<f32>, n_10: vec3<f32>, m_3: Material) -> f32 {
+fn reuse_target(q_5: u32, l_4: GpuLight, cells: u32, x_11: vec3<f32>, n_10: vec3<f32>, m_3: Material) -> f32 {
     let _e9 = grid_coordinate(cells);
     let _e12 = grid_coordinate((cells << 16u));
     let _e15 = connect_record(l_4, x_11, n_10, n_10, UNRANGED, UNRANGED, 1f, _e9, _e12, 0f, false);
     let _e16 = shade_connection(_e15, x_11, n_10, m_3);
     let _e17 = output_of(_e16);
-    let _e19 = slot_target(_e17, q_3, K);
+    let _e19 = slot_target(_e17, q_5, K);
     return _e19;
 }
 
@@ -1478,19 +1478,33 @@ fn reuse_material(s_10: ReuseSurface, eye: vec3<f32>) -> Material {
     return _e13;
 }
 
-fn reuse_domains(x_13: vec3<f32>, n_12: vec3<f32>, d_6: f32, h_2: u32, doms_1: ptr<function, array<Domain, 3>>) -> u32 {
+fn sample_key(li_7: u32, cells_1: u32) -> vec2<u32> {
+    let _e6 = lights[li_7].kind;
+    return vec2<u32>(li_7, select(0u, cells_1, (_e6 == LIGHT_TRIANGLE)));
+}
+
+fn shade_sample(li_8: u32, cells_2: u32, x_13: vec3<f32>, n_12: vec3<f32>, m_5: Material, eps_3: f32, trace_4: bool) -> Shaded {
+    let _e9 = lights[li_8];
+    let _e13 = grid_coordinate(cells_2);
+    let _e16 = grid_coordinate((cells_2 << 16u));
+    let _e17 = connect_record(_e9, x_13, n_12, n_12, UNRANGED, UNRANGED, 1f, _e13, _e16, eps_3, trace_4);
+    let _e18 = shade_connection(_e17, x_13, n_12, m_5);
+    return _e18;
+}
+
+fn reuse_domains(x_14: vec3<f32>, n_13: vec3<f32>, d_6: f32, h_2: u32, doms_1: ptr<function, array<Domain, 3>>) -> u32 {
     var nd: u32 = 0u;
     var hr: u32;
-    var j_4: u32 = 0u;
+    var j_5: u32 = 0u;
     var p_7: vec2<f32>;
-    var local_33: bool;
-    var local_34: bool;
-    var local_35: bool;
-    var seen: bool;
+    var local_39: bool;
+    var local_40: bool;
+    var local_41: bool;
+    var seen_1: bool;
     var k_5: u32;
-    var local_36: bool;
-    var local_37: bool;
-    var local_38: bool;
+    var local_42: bool;
+    var local_43: bool;
+    var local_44: bool;
 
     let _e9 = reuse.has_history;
     if (_e9 != 1u) {
@@ -1502,20 +1516,20 @@ fn reuse_domains(x_13: vec3<f32>, n_12: vec3<f32>, d_6: f32, h_2: u32, doms_1: p
     let _e24 = reuse.c3_;
     let _e27 = view.width;
     let _e31 = view.height;
-    let _e33 = reproject(_e15, _e18, _e21, _e24, x_13, f32(_e27), f32(_e31));
+    let _e33 = reproject(_e15, _e18, _e21, _e24, x_14, f32(_e27), f32(_e31));
     if (_e33.z <= 0f) {
         return 0u;
     }
     hr = h_2;
     loop {
-        let _e41 = j_4;
+        let _e41 = j_5;
         if (_e41 < DOMAINS) {
         } else {
             break;
         }
         {
             p_7 = _e33.xy;
-            let _e46 = j_4;
+            let _e46 = j_5;
             if (_e46 > 0u) {
                 let _e49 = hr;
                 let _e50 = pcg_hash(_e49);
@@ -1535,31 +1549,31 @@ fn reuse_domains(x_13: vec3<f32>, n_12: vec3<f32>, d_6: f32, h_2: u32, doms_1: p
             let _e63 = p_7;
             let t_8 = vec2<i32>(round(_e63));
             if !((t_8.x < 0i)) {
-                local_33 = (t_8.y < 0i);
+                local_39 = (t_8.y < 0i);
             } else {
-                local_33 = true;
+                local_39 = true;
             }
-            let _e76 = local_33;
+            let _e76 = local_39;
             if !(_e76) {
                 let _e83 = view.width;
-                local_34 = (t_8.x >= i32(_e83));
+                local_40 = (t_8.x >= i32(_e83));
             } else {
-                local_34 = true;
+                local_40 = true;
             }
-            let _e87 = local_34;
+            let _e87 = local_40;
             if !(_e87) {
                 let _e94 = view.height;
-                local_35 = (t_8.y >= i32(_e94));
+                local_41 = (t_8.y >= i32(_e94));
             } else {
-                local_35 = true;
+                local_41 = true;
             }
-            let _e98 = local_35;
+            let _e98 = local_41;
             if _e98 {
                 continue;
             }
             let _e103 = view.width;
             let pixel = ((u32(t_8.y) * _e103) + u32(t_8.x));
-            seen = false;
+            seen_1 = false;
             k_5 = 0u;
             loop {
                 let _e112 = k_5;
@@ -1569,16 +1583,16 @@ fn reuse_domains(x_13: vec3<f32>, n_12: vec3<f32>, d_6: f32, h_2: u32, doms_1: p
                     break;
                 }
                 {
-                    let _e115 = seen;
+                    let _e115 = seen_1;
                     if !(_e115) {
                         let _e119 = k_5;
                         let _e122 = (*doms_1)[_e119].pixel;
-                        local_36 = (_e122 == pixel);
+                        local_42 = (_e122 == pixel);
                     } else {
-                        local_36 = true;
+                        local_42 = true;
                     }
-                    let _e125 = local_36;
-                    seen = _e125;
+                    let _e125 = local_42;
+                    seen_1 = _e125;
                 }
                 continuing {
                     let _e127 = k_5;
@@ -1586,20 +1600,20 @@ fn reuse_domains(x_13: vec3<f32>, n_12: vec3<f32>, d_6: f32, h_2: u32, doms_1: p
                 }
             }
             let s_13 = reuse_prev[pixel].surface;
-            let _e133 = seen;
+            let _e133 = seen_1;
             if !(_e133) {
-                local_37 = !((s_13.m > 0f));
+                local_43 = !((s_13.m > 0f));
             } else {
-                local_37 = true;
+                local_43 = true;
             }
-            let _e142 = local_37;
+            let _e142 = local_43;
             if !(_e142) {
-                let _e150 = history_matches(n_12, s_13.n, x_13, dot(s_13.n, s_13.x), d_6);
-                local_38 = !(_e150);
+                let _e150 = history_matches(n_13, s_13.n, x_14, dot(s_13.n, s_13.x), d_6);
+                local_44 = !(_e150);
             } else {
-                local_38 = true;
+                local_44 = true;
             }
-            let _e153 = local_38;
+            let _e153 = local_44;
             if _e153 {
                 continue;
             }
@@ -1607,77 +1621,77 @@ fn reuse_domains(x_13: vec3<f32>, n_12: vec3<f32>, d_6: f32, h_2: u32, doms_1: p
             let _e160 = reuse.prev_eye;
             let _e161 = reuse_material(s_13, _e160);
             let _e165 = reuse.max_confidence;
-            let _e167 = j_4;
+            let _e167 = j_5;
             (*doms_1)[_e154] = Domain(pixel, s_13.x, s_13.n, _e161, min(s_13.m, _e165), (_e167 == 0u));
             let _e171 = nd;
             nd = (_e171 + 1u);
         }
         continuing {
-            let _e175 = j_4;
-            j_4 = (_e175 + 1u);
+            let _e175 = j_5;
+            j_5 = (_e175 + 1u);
         }
     }
     let _e177 = nd;
     return _e177;
 }
 
-fn gris_combine(q_4: u32, cur: ReuseSlot, cur_ris: bool, cur_c: f32, k0_: u32, k1_: u32, x_14: vec3<f32>, n_13: vec3<f32>, m_5: Material, doms_2: ptr<function, array<Domain, 3>>, hs_1: ptr<function, u32>) -> ReuseSlot {
+fn gris_combine(q_6: u32, cur: ReuseSlot, cur_ris: bool, cur_c: f32, k0_: u32, k1_: u32, x_15: vec3<f32>, n_14: vec3<f32>, m_6: Material, doms_2: ptr<function, array<Domain, 3>>, hs_1: ptr<function, u32>) -> ReuseSlot {
     var w_sum_3: f32 = 0f;
     var out: ReuseSlot = ReuseSlot(0u, 0u, 0f);
     var out_target: f32 = 0f;
-    var j_5: u32;
+    var j_6: u32;
     var s_11: ReuseSlot;
-    var local_39: bool;
+    var local_45: bool;
     var w_in: f32;
-    var local_40: bool;
+    var local_46: bool;
     var own_1: f32;
     var all_1: f32;
     var k_6: u32;
-    var local_41: bool;
+    var local_47: bool;
 
-    j_5 = k0_;
+    j_6 = k0_;
     loop {
-        let _e21 = j_5;
+        let _e21 = j_6;
         if (_e21 <= k1_) {
         } else {
             break;
         }
         {
             s_11 = cur;
-            let _e24 = j_5;
+            let _e24 = j_6;
             if (_e24 > k0_) {
-                let _e27 = j_5;
+                let _e27 = j_6;
                 let _e32 = (*doms_2)[(_e27 - 1u)].pixel;
-                let _e36 = reuse_prev[_e32].slots[q_4];
+                let _e36 = reuse_prev[_e32].slots[q_6];
                 s_11 = _e36;
             }
             let _e38 = s_11.w;
             if !(!((_e38 > 0f))) {
                 let _e46 = s_11.light;
-                local_39 = (_e46 >= arrayLength((&lights)));
+                local_45 = (_e46 >= arrayLength((&lights)));
             } else {
-                local_39 = true;
+                local_45 = true;
             }
-            let _e51 = local_39;
+            let _e51 = local_45;
             if _e51 {
                 continue;
             }
             let _e54 = s_11.light;
             let _e56 = lights[_e54];
             let _e58 = s_11.u;
-            let _e59 = reuse_target(q_4, _e56, _e58, x_14, n_13, m_5);
+            let _e59 = reuse_target(q_6, _e56, _e58, x_15, n_14, m_6);
             if !((_e59 > 0f)) {
                 continue;
             }
             let _e64 = s_11.w;
             w_in = _e64;
-            let _e66 = j_5;
+            let _e66 = j_6;
             if (_e66 == k0_) {
-                local_40 = cur_ris;
+                local_46 = cur_ris;
             } else {
-                local_40 = false;
+                local_46 = false;
             }
-            let _e71 = local_40;
+            let _e71 = local_46;
             if _e71 {
                 let _e73 = s_11.w;
                 w_in = (_e73 / _e59);
@@ -1704,12 +1718,12 @@ fn gris_combine(q_4: u32, cur: ReuseSlot, cur_ris: bool, cur_c: f32, k0_: u32, k
                     let _e100 = (*doms_2)[_e97].n;
                     let _e101 = k_6;
                     let _e104 = (*doms_2)[_e101].m;
-                    let _e105 = reuse_target(q_4, _e90, _e92, _e96, _e100, _e104);
+                    let _e105 = reuse_target(q_6, _e90, _e92, _e96, _e100, _e104);
                     let t_9 = (_e85 * _e105);
                     let _e107 = all_1;
                     all_1 = (_e107 + t_9);
                     let _e109 = k_6;
-                    let _e112 = j_5;
+                    let _e112 = j_6;
                     if ((_e109 + 1u) == _e112) {
                         own_1 = t_9;
                     }
@@ -1733,11 +1747,11 @@ fn gris_combine(q_4: u32, cur: ReuseSlot, cur_ris: bool, cur_c: f32, k0_: u32, k
                 let _e130 = (*hs_1);
                 let _e131 = xi_from_bits(_e130);
                 let _e132 = weighted_replace(_e120, _e129, _e131);
-                local_41 = _e132;
+                local_47 = _e132;
             } else {
-                local_41 = false;
+                local_47 = false;
             }
-            let _e134 = local_41;
+            let _e134 = local_47;
             if _e134 {
                 let _e135 = s_11;
                 out = _e135;
@@ -1745,8 +1759,8 @@ fn gris_combine(q_4: u32, cur: ReuseSlot, cur_ris: bool, cur_c: f32, k0_: u32, k
             }
         }
         continuing {
-            let _e137 = j_5;
-            j_5 = (_e137 + 1u);
+            let _e137 = j_6;
+            j_6 = (_e137 + 1u);
         }
     }
     let _e140 = w_sum_3;
@@ -1787,9 +1801,17 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
     var doms: array<Domain, 3>;
     var local_6: bool;
     var hs: u32;
+    var fresh_keys: array<vec2<u32>, 8>;
+    var fresh_held: array<bool, 8>;
+    var q_1: u32 = 0u;
+    var local_7: bool;
+    var fresh_visible: array<bool, 8>;
+    var q_2: u32 = 0u;
     var kept: array<ReuseSlot, 8>;
     var fin: array<ReuseSlot, 8>;
-    var q_1: u32 = 0u;
+    var q_3: u32 = 0u;
+    var local_8: bool;
+    var local_9: bool;
     var keys: array<vec2<u32>, 8>;
     var held: array<bool, 8>;
     var k: u32 = 0u;
@@ -1797,9 +1819,16 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
     var k_1: u32 = 0u;
     var w: vec3<f32>;
     var j_1: u32;
+    var known: bool;
+    var seen: bool;
     var j_2: u32;
-    var q_2: u32 = 0u;
-    var local_7: bool;
+    var local_10: bool;
+    var local_11: bool;
+    var shaded: Shaded;
+    var local_12: bool;
+    var j_3: u32;
+    var q_4: u32 = 0u;
+    var local_13: bool;
 
     let _e5 = view.width;
     if (gid.x < _e5) {
@@ -1820,7 +1849,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
     let _e33 = nn;
     let len2_ = dot(_e32, _e33);
     let _e35 = s;
-    let x_17 = _e35.xyz;
+    let x_18 = _e35.xyz;
     if inside {
         let _e40 = s.w;
         local_1 = (_e40 > 0f);
@@ -1835,7 +1864,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
     }
     let _e50 = local_2;
     if _e50 {
-        local_3 = all((abs(x_17) <= vec3(340282350000000000000000000000000000000f)));
+        local_3 = all((abs(x_18) <= vec3(340282350000000000000000000000000000000f)));
     } else {
         local_3 = false;
     }
@@ -1850,7 +1879,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
         let mr = textureLoad(metal_rough_tex, texel_1, 0i);
         let _e83 = textureLoad(base_color_tex, texel_1, 0i);
         let _e90 = view.eye;
-        let _e93 = material_of(_e83.xyz, mr.z, mr.y, mr.w, normalize((_e90 - x_17)));
+        let _e93 = material_of(_e83.xyz, mr.z, mr.y, mr.w, normalize((_e90 - x_18)));
         m = _e93;
         let _e95 = m.base;
         let _e97 = m.metallic;
@@ -1869,7 +1898,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
     let _e114 = range_lobe(_e113);
     let _e117 = view.shadow_offset;
     let _e120 = view.eye;
-    let eps_3 = (_e117 * length((_e120 - x_17)));
+    let eps_4 = (_e117 * length((_e120 - x_18)));
     let _e126 = view.seed;
     let _e130 = view.width;
     let _e136 = view.frame;
@@ -1877,7 +1906,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
     let _e138 = pick_stream(_e137);
     h = _e138;
     hc = _e137;
-    let _e160 = tile_walk_begin(lid, x_17, _e114.w, has_3);
+    let _e160 = tile_walk_begin(lid, x_18, _e114.w, has_3);
     loop {
         let _e163 = start;
         if (_e163 < _e160.total) {
@@ -1900,7 +1929,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
                     if !(!(has_3)) {
                         let _e182 = bsh_nodes[b_10];
                         let _e183 = r;
-                        let _e184 = bsh_reaches(_e182, x_17, _e183, _e114);
+                        let _e184 = bsh_reaches(_e182, x_18, _e183, _e114);
                         local_4 = !(_e184);
                     } else {
                         local_4 = true;
@@ -1909,7 +1938,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
                     if _e187 {
                         continue;
                     }
-                    let li_7 = bsh_nodes[b_10].light;
+                    let li_9 = bsh_nodes[b_10].light;
                     let _e192 = count;
                     count = (_e192 + 1u);
                     let _e195 = h;
@@ -1928,7 +1957,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
                     let _e206 = n;
                     let _e207 = r;
                     let _e208 = m;
-                    let _e213 = shade_pick_traced(li_7, x_17, _e206, _e207, _e114, _e208, 1f, u_5.x, u_5.y, eps_3, false);
+                    let _e213 = shade_pick_traced(li_9, x_18, _e206, _e207, _e114, _e208, 1f, u_5.x, u_5.y, eps_4, false);
                     let _e214 = output_of(_e213);
                     let _e215 = resample_target(_e214);
                     if (_e215 > 0f) {
@@ -1957,7 +1986,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
                                 let _e241 = local_5;
                                 if _e241 {
                                     let _e242 = q;
-                                    slot_light[_e242] = li_7;
+                                    slot_light[_e242] = li_9;
                                     let _e244 = q;
                                     slot_u[_e244] = u_5;
                                     let _e246 = q;
@@ -2001,7 +2030,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
     let _e286 = n;
     let _e289 = view.eye;
     let _e293 = reuse_stream(_e137, 0u);
-    let _e294 = reuse_domains(x_17, _e286, length((_e289 - x_17)), _e293, (&doms));
+    let _e294 = reuse_domains(x_18, _e286, length((_e289 - x_18)), _e293, (&doms));
     if (_e294 > 0u) {
         let _e301 = doms[0].temporal;
         local_6 = _e301;
@@ -2023,193 +2052,324 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
         {
             let _e324 = q_1;
             let _e326 = q_1;
-            let _e327 = q_1;
-            let _e329 = slot_light[_e327];
-            let _e330 = q_1;
-            let _e332 = slot_cells[_e330];
-            let _e333 = total;
-            let _e334 = q_1;
-            let _e336 = slot_target(_e333, _e334, K);
-            let _e337 = q_1;
-            let _e339 = slot_p[_e337];
-            let _e348 = n;
-            let _e349 = m;
-            let _e350 = gris_combine(_e326, ReuseSlot(_e329, _e332, select(0f, _e336, (_e339 > 0f))), true, 1f, 0u, first_1, x_17, _e348, _e349, (&doms), (&hs));
-            kept[_e324] = _e350;
-            let _e351 = q_1;
-            let _e353 = q_1;
-            let _e355 = kept[_e353];
-            fin[_e351] = _e355;
-            if (_e294 > first_1) {
-                let _e357 = q_1;
-                let _e359 = q_1;
-                let _e360 = q_1;
-                let _e362 = kept[_e360];
-                let _e364 = n;
-                let _e365 = m;
-                let _e366 = gris_combine(_e359, _e362, false, confidence, first_1, _e294, x_17, _e364, _e365, (&doms), (&hs));
-                fin[_e357] = _e366;
+            let _e328 = slot_light[_e326];
+            let _e329 = q_1;
+            let _e331 = slot_cells[_e329];
+            let _e332 = sample_key(_e328, _e331);
+            fresh_keys[_e324] = _e332;
+            let _e333 = q_1;
+            let _e337 = reuse.visibility;
+            if (_e337 == 1u) {
+                let _e342 = q_1;
+                let _e344 = slot_p[_e342];
+                local_7 = (_e344 > 0f);
+            } else {
+                local_7 = false;
+            }
+            let _e348 = local_7;
+            fresh_held[_e333] = _e348;
+        }
+        continuing {
+            let _e350 = q_1;
+            q_1 = (_e350 + 1u);
+        }
+    }
+    let _e352 = fresh_keys;
+    let _e353 = fresh_held;
+    let _e354 = first_holders(_e352, _e353);
+    loop {
+        let _e358 = q_2;
+        if (_e358 < K) {
+        } else {
+            break;
+        }
+        {
+            let _e361 = q_2;
+            let _e363 = q_2;
+            if (_e354[_e361] == _e363) {
+                let _e365 = q_2;
+                let _e367 = q_2;
+                let _e369 = slot_light[_e367];
+                let _e370 = q_2;
+                let _e372 = slot_cells[_e370];
+                let _e373 = n;
+                let _e374 = m;
+                let _e376 = shade_sample(_e369, _e372, x_18, _e373, _e374, eps_4, true);
+                let _e377 = output_of(_e376);
+                let _e378 = resample_target(_e377);
+                fresh_visible[_e365] = (_e378 > 0f);
+            } else {
+                let _e381 = q_2;
+                if (_e354[_e381] < K) {
+                    let _e385 = q_2;
+                    let _e387 = q_2;
+                    let _e390 = fresh_visible[_e354[_e387]];
+                    fresh_visible[_e385] = _e390;
+                }
             }
         }
         continuing {
-            let _e368 = q_1;
-            q_1 = (_e368 + 1u);
+            let _e392 = q_2;
+            q_2 = (_e392 + 1u);
         }
     }
     loop {
-        let _e374 = k;
-        if (_e374 < K) {
+        let _e398 = q_3;
+        if (_e398 < K) {
         } else {
             break;
         }
         {
-            let _e377 = k;
-            let _e379 = k;
-            let _e382 = fin[_e379].light;
-            let _e384 = k;
-            let _e387 = fin[_e384].u;
-            let _e389 = k;
-            let _e392 = fin[_e389].light;
-            let _e395 = lights[_e392].kind;
-            keys[_e377] = vec2<u32>(_e382, select(0u, _e387, (_e395 == LIGHT_TRIANGLE)));
-            let _e400 = k;
-            let _e402 = k;
-            let _e405 = fin[_e402].w;
-            held[_e400] = (_e405 > 0f);
+            let _e401 = q_3;
+            let _e403 = slot_p[_e401];
+            if (_e403 > 0f) {
+                let _e410 = reuse.visibility;
+                if !((_e410 == 0u)) {
+                    let _e416 = q_3;
+                    let _e418 = fresh_visible[_e416];
+                    local_9 = _e418;
+                } else {
+                    local_9 = true;
+                }
+                let _e420 = local_9;
+                local_8 = _e420;
+            } else {
+                local_8 = false;
+            }
+            let fresh = local_8;
+            let _e423 = q_3;
+            let _e425 = q_3;
+            let _e426 = q_3;
+            let _e428 = slot_light[_e426];
+            let _e429 = q_3;
+            let _e431 = slot_cells[_e429];
+            let _e432 = total;
+            let _e433 = q_3;
+            let _e435 = slot_target(_e432, _e433, K);
+            let _e442 = n;
+            let _e443 = m;
+            let _e444 = gris_combine(_e425, ReuseSlot(_e428, _e431, select(0f, _e435, fresh)), true, 1f, 0u, first_1, x_18, _e442, _e443, (&doms), (&hs));
+            kept[_e423] = _e444;
+            let _e445 = q_3;
+            let _e447 = q_3;
+            let _e449 = kept[_e447];
+            fin[_e445] = _e449;
+            if (_e294 > first_1) {
+                let _e451 = q_3;
+                let _e453 = q_3;
+                let _e454 = q_3;
+                let _e456 = kept[_e454];
+                let _e458 = n;
+                let _e459 = m;
+                let _e460 = gris_combine(_e453, _e456, false, confidence, first_1, _e294, x_18, _e458, _e459, (&doms), (&hs));
+                fin[_e451] = _e460;
+            }
         }
         continuing {
-            let _e409 = k;
-            k = (_e409 + 1u);
+            let _e462 = q_3;
+            q_3 = (_e462 + 1u);
         }
     }
-    let _e411 = keys;
-    let _e412 = held;
-    let _e413 = first_holders(_e411, _e412);
     loop {
-        let _e417 = k_1;
-        if (_e417 < K) {
+        let _e468 = k;
+        if (_e468 < K) {
         } else {
             break;
         }
         {
-            let _e420 = k_1;
-            let _e422 = k_1;
-            if (_e413[_e420] != _e422) {
+            let _e471 = k;
+            let _e473 = k;
+            let _e476 = fin[_e473].light;
+            let _e477 = k;
+            let _e480 = fin[_e477].u;
+            let _e481 = sample_key(_e476, _e480);
+            keys[_e471] = _e481;
+            let _e482 = k;
+            let _e484 = k;
+            let _e487 = fin[_e484].w;
+            held[_e482] = (_e487 > 0f);
+        }
+        continuing {
+            let _e491 = k;
+            k = (_e491 + 1u);
+        }
+    }
+    let _e493 = keys;
+    let _e494 = held;
+    let _e495 = first_holders(_e493, _e494);
+    loop {
+        let _e499 = k_1;
+        if (_e499 < K) {
+        } else {
+            break;
+        }
+        {
+            let _e502 = k_1;
+            let _e504 = k_1;
+            if (_e495[_e502] != _e504) {
                 continue;
             }
             w = vec3(0f);
-            let _e427 = k_1;
-            j_1 = _e427;
+            let _e509 = k_1;
+            j_1 = _e509;
             loop {
-                let _e429 = j_1;
-                if (_e429 < K) {
+                let _e511 = j_1;
+                if (_e511 < K) {
                 } else {
                     break;
                 }
                 {
-                    let _e432 = j_1;
-                    let _e434 = k_1;
-                    if (_e413[_e432] == _e434) {
-                        let _e436 = w;
-                        let _e437 = j_1;
-                        let _e440 = fin[_e437].w;
-                        let _e441 = j_1;
-                        let _e443 = slot_share(_e441, K);
-                        w = (_e436 + (_e440 * _e443));
+                    let _e514 = j_1;
+                    let _e516 = k_1;
+                    if (_e495[_e514] == _e516) {
+                        let _e518 = w;
+                        let _e519 = j_1;
+                        let _e522 = fin[_e519].w;
+                        let _e523 = j_1;
+                        let _e525 = slot_share(_e523, K);
+                        w = (_e518 + (_e522 * _e525));
                     }
                 }
                 continuing {
-                    let _e447 = j_1;
-                    j_1 = (_e447 + 1u);
+                    let _e529 = j_1;
+                    j_1 = (_e529 + 1u);
                 }
             }
-            let _e450 = k_1;
-            let _e453 = fin[_e450].light;
-            let _e455 = lights[_e453];
-            let _e456 = n;
-            let _e457 = n;
-            let _e461 = k_1;
-            let _e464 = fin[_e461].u;
-            let _e465 = grid_coordinate(_e464);
-            let _e466 = k_1;
-            let _e469 = fin[_e466].u;
-            let _e472 = grid_coordinate((_e469 << 16u));
-            let _e474 = connect_record(_e455, x_17, _e456, _e457, UNRANGED, UNRANGED, 1f, _e465, _e472, eps_3, true);
-            let _e475 = n;
-            let _e476 = m;
-            let _e477 = shade_connection(_e474, x_17, _e475, _e476);
-            let _e478 = t;
-            let _e479 = w;
-            let _e480 = scaled(_e477, _e479);
-            let _e481 = add(_e478, _e480);
-            t = _e481;
-            let _e482 = k_1;
-            j_2 = _e482;
+            known = false;
+            seen = false;
+            j_2 = 0u;
             loop {
-                let _e484 = j_2;
-                if (_e484 < K) {
+                let _e537 = j_2;
+                if (_e537 < K) {
+                    let _e542 = known;
+                    local_10 = !(_e542);
+                } else {
+                    local_10 = false;
+                }
+                let _e545 = local_10;
+                if _e545 {
                 } else {
                     break;
                 }
                 {
-                    let _e487 = j_2;
-                    let _e489 = k_1;
-                    if (_e413[_e487] == _e489) {
-                        let _e491 = j_2;
-                        let _e493 = output_of(_e477);
-                        let _e494 = resample_target(_e493);
-                        visible[_e491] = (_e494 > 0f);
+                    let _e546 = j_2;
+                    let _e548 = fresh_held[_e546];
+                    if _e548 {
+                        let _e551 = j_2;
+                        let _e553 = fresh_keys[_e551];
+                        let _e554 = k_1;
+                        let _e556 = keys[_e554];
+                        local_11 = all((_e553 == _e556));
+                    } else {
+                        local_11 = false;
+                    }
+                    let _e560 = local_11;
+                    if _e560 {
+                        known = true;
+                        let _e562 = j_2;
+                        let _e564 = fresh_visible[_e562];
+                        seen = _e564;
                     }
                 }
                 continuing {
-                    let _e498 = j_2;
-                    j_2 = (_e498 + 1u);
+                    let _e566 = j_2;
+                    j_2 = (_e566 + 1u);
+                }
+            }
+            let _e568 = k_1;
+            let _e571 = fin[_e568].light;
+            let _e572 = k_1;
+            let _e575 = fin[_e572].u;
+            let _e576 = n;
+            let _e577 = m;
+            let _e578 = known;
+            let _e580 = shade_sample(_e571, _e575, x_18, _e576, _e577, eps_4, !(_e578));
+            shaded = _e580;
+            let _e582 = known;
+            if _e582 {
+                let _e585 = seen;
+                local_12 = !(_e585);
+            } else {
+                local_12 = false;
+            }
+            let _e588 = local_12;
+            if _e588 {
+                shaded = Shaded(vec3(0f), vec3(0f), vec3(0f));
+            }
+            let _e596 = t;
+            let _e597 = shaded;
+            let _e598 = w;
+            let _e599 = scaled(_e597, _e598);
+            let _e600 = add(_e596, _e599);
+            t = _e600;
+            let _e601 = k_1;
+            j_3 = _e601;
+            loop {
+                let _e603 = j_3;
+                if (_e603 < K) {
+                } else {
+                    break;
+                }
+                {
+                    let _e606 = j_3;
+                    let _e608 = k_1;
+                    if (_e495[_e606] == _e608) {
+                        let _e610 = j_3;
+                        let _e612 = shaded;
+                        let _e613 = output_of(_e612);
+                        let _e614 = resample_target(_e613);
+                        visible[_e610] = (_e614 > 0f);
+                    }
+                }
+                continuing {
+                    let _e618 = j_3;
+                    j_3 = (_e618 + 1u);
                 }
             }
         }
         continuing {
-            let _e501 = k_1;
-            k_1 = (_e501 + 1u);
+            let _e621 = k_1;
+            k_1 = (_e621 + 1u);
         }
     }
     loop {
-        let _e505 = q_2;
-        if (_e505 < K) {
+        let _e625 = q_4;
+        if (_e625 < K) {
         } else {
             break;
         }
         {
-            let _e510 = reuse.visibility;
-            if !((_e510 == 0u)) {
-                let _e516 = q_2;
-                let _e518 = visible[_e516];
-                local_7 = _e518;
+            let _e630 = reuse.visibility;
+            if !((_e630 == 0u)) {
+                let _e636 = q_4;
+                let _e638 = visible[_e636];
+                local_13 = _e638;
             } else {
-                local_7 = true;
+                local_13 = true;
             }
-            let keep = local_7;
-            let _e524 = q_2;
-            let _e526 = q_2;
-            let _e529 = kept[_e526].light;
-            let _e530 = q_2;
-            let _e533 = kept[_e530].u;
-            let _e534 = q_2;
-            let _e537 = kept[_e534].w;
-            reuse_next[pixel_1].slots[_e524] = ReuseSlot(_e529, _e533, select(0f, _e537, keep));
+            let keep = local_13;
+            let _e644 = q_4;
+            let _e646 = q_4;
+            let _e649 = kept[_e646].light;
+            let _e650 = q_4;
+            let _e653 = kept[_e650].u;
+            let _e654 = q_4;
+            let _e657 = kept[_e654].w;
+            reuse_next[pixel_1].slots[_e644] = ReuseSlot(_e649, _e653, select(0f, _e657, keep));
         }
         continuing {
-            let _e542 = q_2;
-            q_2 = (_e542 + 1u);
+            let _e662 = q_4;
+            q_4 = (_e662 + 1u);
         }
     }
-    let _e547 = n;
-    let _e548 = m;
-    let _e551 = reuse.max_confidence;
-    let _e553 = reuse_surface(x_17, _e547, _e548, min(confidence, _e551));
-    reuse_next[pixel_1].surface = _e553;
-    let _e556 = t.diffuse;
-    let _e558 = t.specular;
-    let _e560 = count;
-    textureStore(out_tex, texel_1, vec4<f32>((_e556 + _e558), f32(_e560)));
+    let _e667 = n;
+    let _e668 = m;
+    let _e671 = reuse.max_confidence;
+    let _e673 = reuse_surface(x_18, _e667, _e668, min(confidence, _e671));
+    reuse_next[pixel_1].surface = _e673;
+    let _e676 = t.diffuse;
+    let _e678 = t.specular;
+    let _e680 = count;
+    textureStore(out_tex, texel_1, vec4<f32>((_e676 + _e678), f32(_e680)));
     return;
 }

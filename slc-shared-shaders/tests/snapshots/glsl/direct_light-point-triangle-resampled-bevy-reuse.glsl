@@ -318,8 +318,8 @@ bool sphere_contains_point(vec3 c, float r_1, vec3 x_1) {
 }
 
 bool sphere_overlaps_aabb(vec3 c_1, float r_2, vec3 bmin, vec3 bmax) {
-    vec3 q_5 = clamp(c_1, bmin, bmax);
-    vec3 v_6 = (q_5 - c_1);
+    vec3 q_7 = clamp(c_1, bmin, bmax);
+    vec3 v_6 = (q_7 - c_1);
     return (dot(v_6, v_6) <= (r_2 * r_2));
 }
 
@@ -334,28 +334,28 @@ float connection_factor(float cos_x, float d2_3, float rt2_1, float w_1) {
 }
 
 float connection_cosine(vec3 x_2, vec3 y, vec3 n_1, vec3 ng, float r2_1) {
-    bool local_8 = false;
-    bool local_9 = false;
+    bool local_14 = false;
+    bool local_15 = false;
     vec3 v_7 = (x_2 - y);
     float d2_6 = dot(v_7, v_7);
     bool _e7 = slc_keep(r2_1, d2_6);
     if (!(!(_e7))) {
-        local_8 = !((d2_6 > 0.0));
+        local_14 = !((d2_6 > 0.0));
     } else {
-        local_8 = true;
+        local_14 = true;
     }
-    bool _e16 = local_8;
+    bool _e16 = local_14;
     if (_e16) {
         return 0.0;
     }
     vec3 w_12 = (v_7 / vec3(sqrt(d2_6)));
     float cos_x_1 = -(dot(n_1, w_12));
     if (!(!((cos_x_1 > 0.0)))) {
-        local_9 = !((dot(ng, w_12) < 0.0));
+        local_15 = !((dot(ng, w_12) < 0.0));
     } else {
-        local_9 = true;
+        local_15 = true;
     }
-    bool _e34 = local_9;
+    bool _e34 = local_15;
     if (_e34) {
         return 0.0;
     }
@@ -413,11 +413,11 @@ float slot_target(vec3 c_4, uint slot, uint k_2) {
         float _e5 = resample_target(c_4);
         return _e5;
     }
-    uint j_6 = (slot % 3u);
-    if ((j_6 == 0u)) {
+    uint j_7 = (slot % 3u);
+    if ((j_7 == 0u)) {
         return c_4.x;
     }
-    if ((j_6 == 1u)) {
+    if ((j_7 == 1u)) {
         return c_4.y;
     }
     return c_4.z;
@@ -429,13 +429,13 @@ vec3 slot_share(uint slot_1, uint k_3) {
         float w_13 = (1.0 / _e4);
         return vec3(w_13, w_13, w_13);
     }
-    uint j_7 = (slot_1 % 3u);
-    float _e15 = to_f32_((((k_3 + 2u) - j_7) / 3u));
+    uint j_8 = (slot_1 % 3u);
+    float _e15 = to_f32_((((k_3 + 2u) - j_8) / 3u));
     float w_14 = (1.0 / _e15);
-    if ((j_7 == 0u)) {
+    if ((j_8 == 0u)) {
         return vec3(w_14, 0.0, 0.0);
     }
-    if ((j_7 == 1u)) {
+    if ((j_8 == 1u)) {
         return vec3(0.0, w_14, 0.0);
     }
     return vec3(0.0, 0.0, w_14);
@@ -484,13 +484,13 @@ float smith_root(float cos_, float alpha_1) {
 }
 
 float smith_visibility(float n_l, float n_v, float alpha_2) {
-    bool local_10 = false;
+    bool local_16 = false;
     if (!((n_l <= 0.0))) {
-        local_10 = (n_v <= 0.0);
+        local_16 = (n_v <= 0.0);
     } else {
-        local_10 = true;
+        local_16 = true;
     }
-    bool _e11 = local_10;
+    bool _e11 = local_16;
     if (_e11) {
         return 0.0;
     }
@@ -512,20 +512,20 @@ vec3 specular_fresnel(vec3 base, float metallic, vec3 f0_d, float f90_d, float v
 }
 
 bool has_specular(float metallic_1, vec3 f0_d_1, float f90_d_1) {
-    bool local_11 = false;
-    bool local_12 = false;
+    bool local_17 = false;
+    bool local_18 = false;
     if (!((metallic_1 > 0.0))) {
-        local_11 = (f90_d_1 > 0.0);
+        local_17 = (f90_d_1 > 0.0);
     } else {
-        local_11 = true;
+        local_17 = true;
     }
-    bool _e11 = local_11;
+    bool _e11 = local_17;
     if (!(_e11)) {
-        local_12 = (max(max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0.0);
+        local_18 = (max(max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0.0);
     } else {
-        local_12 = true;
+        local_18 = true;
     }
-    bool _e23 = local_12;
+    bool _e23 = local_18;
     return _e23;
 }
 
@@ -534,16 +534,16 @@ float channel_mean(vec3 c_5) {
 }
 
 vec4 receiver_lobe(vec3 base_1, float metallic_2, vec3 f0_d_2, float f90_d_2, float alpha_3, float n_v_1) {
-    bool local_13 = false;
+    bool local_19 = false;
     vec3 _e10 = fresnel_schlick(f0_d_2, f90_d_2, n_v_1);
     float _e16 = channel_mean((((vec3(1.0, 1.0, 1.0) - _e10) * base_1) * (1.0 - metallic_2)));
     if (!((n_v_1 <= 0.0))) {
         bool _e22 = has_specular(metallic_2, f0_d_2, f90_d_2);
-        local_13 = !(_e22);
+        local_19 = !(_e22);
     } else {
-        local_13 = true;
+        local_19 = true;
     }
-    bool _e25 = local_13;
+    bool _e25 = local_19;
     if (_e25) {
         return vec4(_e16, 0.0, alpha_3, n_v_1);
     }
@@ -595,9 +595,9 @@ float bevy_f0_(float reflectance) {
 float bevy_dfg(float r_4, float n_v_2) {
     float rx = (1.0 - r_4);
     float a004_ = ((min((rx * rx), exp2((-9.28 * n_v_2))) * rx) + (0.0425 - (0.0275 * r_4)));
-    float x_15 = max(((1.04 - (0.572 * r_4)) - (1.04 * a004_)), 5e-5);
+    float x_16 = max(((1.04 - (0.572 * r_4)) - (1.04 * a004_)), 5e-5);
     float y_1 = max((((0.022 * r_4) - 0.04) + (1.04 * a004_)), 5e-5);
-    return (x_15 + y_1);
+    return (x_16 + y_1);
 }
 
 vec3 bevy_brdf(vec3 base_2, float metallic_3, float r_5, float reflectance_1, vec3 n_4, vec3 v_1, vec3 l) {
@@ -627,22 +627,22 @@ vec3 bevy_brdf(vec3 base_2, float metallic_3, float r_5, float reflectance_1, ve
 }
 
 float cone_cos_of(vec3 v_2, float d2_4, float a_3, vec3 d) {
-    bool local_14 = false;
-    bool local_15 = false;
+    bool local_20 = false;
+    bool local_21 = false;
     float vd = dot(v_2, d);
     float h2_1 = (d2_4 - (a_3 * a_3));
     if (!((h2_1 <= 0.0))) {
         if ((vd >= 0.0)) {
-            local_15 = ((vd * vd) >= h2_1);
+            local_21 = ((vd * vd) >= h2_1);
         } else {
-            local_15 = false;
+            local_21 = false;
         }
-        bool _e19 = local_15;
-        local_14 = _e19;
+        bool _e19 = local_21;
+        local_20 = _e19;
     } else {
-        local_14 = true;
+        local_20 = true;
     }
-    bool _e21 = local_14;
+    bool _e21 = local_20;
     if (_e21) {
         return 1.0;
     }
@@ -699,25 +699,25 @@ float ray_aabb(vec3 o, vec3 inv_d, vec3 bmin_1, vec3 bmax_1, float t_max) {
 }
 
 vec3 triangle_normal(vec3 a_4, vec3 b_3, vec3 c_6) {
-    bool local_16 = false;
-    vec3 n_14 = cross((b_3 - a_4), (c_6 - a_4));
-    float l2_ = dot(n_14, n_14);
+    bool local_22 = false;
+    vec3 n_15 = cross((b_3 - a_4), (c_6 - a_4));
+    float l2_ = dot(n_15, n_15);
     if (!(!((l2_ > 0.0)))) {
-        local_16 = !((l2_ < 3e38));
+        local_22 = !((l2_ < 3e38));
     } else {
-        local_16 = true;
+        local_22 = true;
     }
-    bool _e17 = local_16;
+    bool _e17 = local_22;
     if (_e17) {
         return vec3(0.0, 0.0, 0.0);
     }
-    return (n_14 / vec3(sqrt(l2_)));
+    return (n_15 / vec3(sqrt(l2_)));
 }
 
 float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_5, vec3 b_4, vec3 c_7, float t_min, float t_max_1) {
-    bool local_17 = false;
-    bool local_18 = false;
-    bool local_19 = false;
+    bool local_23 = false;
+    bool local_24 = false;
+    bool local_25 = false;
     vec3 e1_ = (b_4 - a_5);
     vec3 e2_ = (c_7 - a_5);
     vec3 p_8 = cross(d_3, e2_);
@@ -729,32 +729,32 @@ float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_5, vec3 b_4, vec3 c_7, float t_min
     vec3 s_12 = (o_1 - a_5);
     float u_4 = (dot(s_12, p_8) * inv);
     if (!((u_4 < 0.0))) {
-        local_17 = (u_4 > 1.0);
+        local_23 = (u_4 > 1.0);
     } else {
-        local_17 = true;
+        local_23 = true;
     }
-    bool _e28 = local_17;
+    bool _e28 = local_23;
     if (_e28) {
         return -1.0;
     }
-    vec3 q_6 = cross(s_12, e1_);
-    float v_9 = (dot(d_3, q_6) * inv);
+    vec3 q_8 = cross(s_12, e1_);
+    float v_9 = (dot(d_3, q_8) * inv);
     if (!((v_9 < 0.0))) {
-        local_18 = ((u_4 + v_9) > 1.0);
+        local_24 = ((u_4 + v_9) > 1.0);
     } else {
-        local_18 = true;
+        local_24 = true;
     }
-    bool _e42 = local_18;
+    bool _e42 = local_24;
     if (_e42) {
         return -1.0;
     }
-    float t_6 = (dot(e2_, q_6) * inv);
+    float t_6 = (dot(e2_, q_8) * inv);
     if ((t_6 > t_min)) {
-        local_19 = (t_6 < t_max_1);
+        local_25 = (t_6 < t_max_1);
     } else {
-        local_19 = false;
+        local_25 = false;
     }
-    bool _e51 = local_19;
+    bool _e51 = local_25;
     if (_e51) {
         return t_6;
     }
@@ -766,19 +766,19 @@ vec3 reproject(vec4 c0_, vec4 c1_, vec4 c2_, vec4 c3_, vec3 p_2, float width, fl
     if ((clip.w <= 0.0)) {
         return vec3(-1.0, -1.0, 0.0);
     }
-    float x_16 = (((((clip.x / clip.w) + 1.0) * 0.5) * width) - 0.5);
+    float x_17 = (((((clip.x / clip.w) + 1.0) * 0.5) * width) - 0.5);
     float y_2 = ((((1.0 - (clip.y / clip.w)) * 0.5) * height) - 0.5);
-    return vec3(x_16, y_2, clip.w);
+    return vec3(x_17, y_2, clip.w);
 }
 
 bool history_matches(vec3 n_5, vec3 nh, vec3 p_3, float oh, float d_4) {
-    bool local_20 = false;
+    bool local_26 = false;
     if ((abs((dot(nh, p_3) - oh)) <= (TEMPORAL_DEPTH_TOLERANCE * d_4))) {
-        local_20 = (dot(n_5, nh) >= TEMPORAL_NORMAL_COS);
+        local_26 = (dot(n_5, nh) >= TEMPORAL_NORMAL_COS);
     } else {
-        local_20 = false;
+        local_26 = false;
     }
-    bool _e17 = local_20;
+    bool _e17 = local_26;
     return _e17;
 }
 
@@ -821,12 +821,12 @@ GeoHit trace(vec3 o_2, vec3 d_5, float t_min_1, float t_max_2, bool any_hit) {
     vec3 _e14 = ray_inverse3_(d_5);
     while(true) {
         uint _e21 = node_3;
-        GpuGeoNode n_15 = _group_1_binding_6_cs[_e21];
+        GpuGeoNode n_16 = _group_1_binding_6_cs[_e21];
         float _e27 = hit.t;
-        float _e28 = ray_aabb(o_2, _e14, n_15.bmin, n_15.bmax, _e27);
+        float _e28 = ray_aabb(o_2, _e14, n_16.bmin, n_16.bmax, _e27);
         if ((_e28 >= 0.0)) {
-            if ((n_15.count > 0u)) {
-                i = n_15.first;
+            if ((n_16.count > 0u)) {
+                i = n_16.first;
                 bool loop_init = true;
                 while(true) {
                     if (!loop_init) {
@@ -835,7 +835,7 @@ GeoHit trace(vec3 o_2, vec3 d_5, float t_min_1, float t_max_2, bool any_hit) {
                     }
                     loop_init = false;
                     uint _e36 = i;
-                    if ((_e36 < (n_15.first + n_15.count))) {
+                    if ((_e36 < (n_16.first + n_16.count))) {
                     } else {
                         break;
                     }
@@ -859,11 +859,11 @@ GeoHit trace(vec3 o_2, vec3 d_5, float t_min_1, float t_max_2, bool any_hit) {
                 uint _e60 = sp;
                 if ((_e60 < 64u)) {
                     uint _e63 = sp;
-                    stack[_e63] = (n_15.first + 1u);
+                    stack[_e63] = (n_16.first + 1u);
                     uint _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_3 = n_15.first;
+                node_3 = n_16.first;
                 continue;
             }
         }
@@ -916,19 +916,19 @@ float bsh_inner_scale(float a_7, vec3 v_3, float d2_5, vec3 r_7, vec4 rl_2) {
 }
 
 bool bsh_reaches(BshNode node_4, vec3 x_4, vec3 r_8, vec4 rl_3) {
-    bool local_21 = false;
-    bool local_22 = false;
+    bool local_27 = false;
+    bool local_28 = false;
     bool _e6 = sphere_contains_point(node_4.center, node_4.radius, x_4);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
         bool _e20 = sphere_contains_point(node_4.center, (node_4.radius * (rl_3.w * 1.0001)), x_4);
-        local_21 = !(_e20);
+        local_27 = !(_e20);
     } else {
-        local_21 = true;
+        local_27 = true;
     }
-    bool _e23 = local_21;
+    bool _e23 = local_27;
     if (_e23) {
         return false;
     }
@@ -949,11 +949,11 @@ bool bsh_reaches(BshNode node_4, vec3 x_4, vec3 r_8, vec4 rl_3) {
     float _e50 = bsh_range_bound(node_4);
     float reach = (node_4.extent + (sqrt(s_c) * _e50));
     if ((d2_7 <= ((node_4.radius * node_4.radius) * s_c))) {
-        local_22 = (d2_7 <= (reach * reach));
+        local_28 = (d2_7 <= (reach * reach));
     } else {
-        local_22 = false;
+        local_28 = false;
     }
-    bool _e63 = local_22;
+    bool _e63 = local_28;
     return _e63;
 }
 
@@ -965,18 +965,18 @@ bool bsh_reaches_box(BshNode node_5, vec3 lo, vec3 hi, float w_7) {
 uint bsh_subtree(uint nodes_3, uint s_1, uint depth) {
     uint i_2 = 0u;
     uint level = 0u;
-    bool local_23 = false;
+    bool local_29 = false;
     uint _e3 = bsh_first(nodes_3);
     i_2 = _e3;
     while(true) {
         uint _e7 = level;
         if ((_e7 < depth)) {
             uint _e11 = i_2;
-            local_23 = (_e11 != BSH_NONE);
+            local_29 = (_e11 != BSH_NONE);
         } else {
-            local_23 = false;
+            local_29 = false;
         }
-        bool _e15 = local_23;
+        bool _e15 = local_29;
         if (_e15) {
         } else {
             break;
@@ -1050,8 +1050,8 @@ float next_threshold(float sum, inout uint h_1) {
 
 Connection connect_record(GpuLight l_3, vec3 x_5, vec3 n_6, vec3 ng_1, float r2_2, float rt2_2, float w_res, float u1_3, float u2_3, float eps, bool trace_1) {
     Connection c_8 = Connection(vec3(0.0), vec3(0.0), 0.0);
-    bool local_24 = false;
-    bool local_25 = false;
+    bool local_30 = false;
+    bool local_31 = false;
     c_8.e = vec3(0.0);
     vec3 _e16 = light_point(l_3, u1_3, u2_3);
     c_8.y = _e16;
@@ -1063,16 +1063,16 @@ Connection connect_record(GpuLight l_3, vec3 x_5, vec3 n_6, vec3 ng_1, float r2_
         if (trace_1) {
             vec3 _e33 = c_8.y;
             bool _e34 = occluded((x_5 + (ng_1 * eps)), _e33);
-            local_25 = _e34;
+            local_31 = _e34;
         } else {
-            local_25 = false;
+            local_31 = false;
         }
-        bool _e36 = local_25;
-        local_24 = _e36;
+        bool _e36 = local_31;
+        local_30 = _e36;
     } else {
-        local_24 = true;
+        local_30 = true;
     }
-    bool _e38 = local_24;
+    bool _e38 = local_30;
     if (_e38) {
         Connection _e39 = c_8;
         return _e39;
@@ -1171,9 +1171,9 @@ bool box_is_empty(WorkgroupBox b_6) {
 uint tile_subtree(uint s_3, TileWalk t_1, bool list, uint at, uint start_2, uint to) {
     uint p_6 = 0u;
     uint b_7 = 0u;
-    bool local_26 = false;
-    bool local_27 = false;
-    bool local_28 = false;
+    bool local_32 = false;
+    bool local_33 = false;
+    bool local_34 = false;
     uint _e8 = bsh_subtree(BSH, s_3, BSH_TILE_DEPTH);
     if ((_e8 == BSH_NONE)) {
         return 0u;
@@ -1195,16 +1195,16 @@ uint tile_subtree(uint s_3, TileWalk t_1, bool list, uint at, uint start_2, uint
         if ((_e23 != end_1)) {
             if (!(!(list))) {
                 uint _e31 = p_6;
-                local_27 = (_e31 < to);
+                local_33 = (_e31 < to);
             } else {
-                local_27 = true;
+                local_33 = true;
             }
-            bool _e34 = local_27;
-            local_26 = _e34;
+            bool _e34 = local_33;
+            local_32 = _e34;
         } else {
-            local_26 = false;
+            local_32 = false;
         }
-        bool _e36 = local_26;
+        bool _e36 = local_32;
         if (_e36) {
         } else {
             break;
@@ -1212,11 +1212,11 @@ uint tile_subtree(uint s_3, TileWalk t_1, bool list, uint at, uint start_2, uint
         {
             if (list) {
                 uint _e39 = p_6;
-                local_28 = (_e39 >= start_2);
+                local_34 = (_e39 >= start_2);
             } else {
-                local_28 = false;
+                local_34 = false;
             }
-            bool _e42 = local_28;
+            bool _e42 = local_34;
             if (_e42) {
                 uint _e44 = p_6;
                 uint _e47 = b_7;
@@ -1231,17 +1231,17 @@ uint tile_subtree(uint s_3, TileWalk t_1, bool list, uint at, uint start_2, uint
 }
 
 TileWalk tile_walk_begin(uint li_4, vec3 x_8, float w_9, bool has_2) {
-    bool local_29 = false;
+    bool local_35 = false;
     TileWalk t_2 = TileWalk(vec3(0.0), vec3(0.0), 0.0, 0u);
     uint s_4 = 0u;
     uint sum_1 = 0u;
     uint s_5 = 0u;
     if (has_2) {
-        local_29 = (w_9 >= 0.0);
+        local_35 = (w_9 >= 0.0);
     } else {
-        local_29 = false;
+        local_35 = false;
     }
-    bool _e12 = local_29;
+    bool _e12 = local_35;
     uint _e14 = atomicMax(tile_scale, (_e12 ? floatBitsToUint(w_9) : 0u));
     WorkgroupBox _e15 = workgroup_box(li_4, x_8, has_2);
     memoryBarrierShared();
@@ -1317,7 +1317,7 @@ TileWalk tile_walk_begin(uint li_4, vec3 x_8, float w_9, bool has_2) {
 uint tile_walk_fill(uint li_5, TileWalk t_3, uint start_3) {
     uint s_6 = 0u;
     uint past = 0u;
-    bool local_30 = false;
+    bool local_36 = false;
     uint to_1 = min(t_3.total, (start_3 + TILE_LIST));
     s_6 = li_5;
     bool loop_init_5 = true;
@@ -1344,11 +1344,11 @@ uint tile_walk_fill(uint li_5, TileWalk t_3, uint start_3) {
             }
             if ((at_1 < to_1)) {
                 uint _e31 = past;
-                local_30 = (_e31 > start_3);
+                local_36 = (_e31 > start_3);
             } else {
-                local_30 = false;
+                local_36 = false;
             }
-            bool _e34 = local_30;
+            bool _e34 = local_36;
             if (_e34) {
                 uint _e35 = s_6;
                 uint _e37 = tile_subtree(_e35, t_3, true, at_1, start_3, to_1);
@@ -1396,9 +1396,9 @@ Shaded scaled(Shaded s_8, vec3 w_11) {
 uint[8] first_holders(uvec2 keys_1[8], bool held_1[8]) {
     uint first[8] = uint[8](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
     uint k_4 = 0u;
-    uint j_3 = 0u;
-    bool local_31 = false;
-    bool local_32 = false;
+    uint j_4 = 0u;
+    bool local_37 = false;
+    bool local_38 = false;
     bool loop_init_6 = true;
     while(true) {
         if (!loop_init_6) {
@@ -1416,40 +1416,40 @@ uint[8] first_holders(uvec2 keys_1[8], bool held_1[8]) {
             uint _e11 = k_4;
             uint _e12 = k_4;
             first[_e8] = (held_1[_e12] ? _e11 : K);
-            j_3 = 0u;
+            j_4 = 0u;
             bool loop_init_7 = true;
             while(true) {
                 if (!loop_init_7) {
-                    uint _e42 = j_3;
-                    j_3 = (_e42 + 1u);
+                    uint _e42 = j_4;
+                    j_4 = (_e42 + 1u);
                 }
                 loop_init_7 = false;
-                uint _e17 = j_3;
+                uint _e17 = j_4;
                 uint _e18 = k_4;
                 if ((_e17 < _e18)) {
                     uint _e22 = k_4;
-                    local_31 = held_1[_e22];
+                    local_37 = held_1[_e22];
                 } else {
-                    local_31 = false;
+                    local_37 = false;
                 }
-                bool _e25 = local_31;
+                bool _e25 = local_37;
                 if (_e25) {
                 } else {
                     break;
                 }
                 {
-                    uint _e26 = j_3;
+                    uint _e26 = j_4;
                     if (held_1[_e26]) {
-                        uint _e30 = j_3;
+                        uint _e30 = j_4;
                         uint _e32 = k_4;
-                        local_32 = all(equal(keys_1[_e30], keys_1[_e32]));
+                        local_38 = all(equal(keys_1[_e30], keys_1[_e32]));
                     } else {
-                        local_32 = false;
+                        local_38 = false;
                     }
-                    bool _e37 = local_32;
+                    bool _e37 = local_38;
                     if (_e37) {
                         uint _e38 = k_4;
-                        uint _e40 = j_3;
+                        uint _e40 = j_4;
                         first[_e38] = _e40;
                         break;
                     }
@@ -1465,13 +1465,13 @@ vec3 output_of(Shaded s_9) {
     return (s_9.diffuse + s_9.specular);
 }
 
-float reuse_target(uint q_3, GpuLight l_4, uint cells, vec3 x_11, vec3 n_10, Material m_3) {
+float reuse_target(uint q_5, GpuLight l_4, uint cells, vec3 x_11, vec3 n_10, Material m_3) {
     float _e9 = grid_coordinate(cells);
     float _e12 = grid_coordinate((cells << 16u));
     Connection _e15 = connect_record(l_4, x_11, n_10, n_10, UNRANGED, UNRANGED, 1.0, _e9, _e12, 0.0, false);
     Shaded _e16 = shade_connection(_e15, x_11, n_10, m_3);
     vec3 _e17 = output_of(_e16);
-    float _e19 = slot_target(_e17, q_3, K);
+    float _e19 = slot_target(_e17, q_5, K);
     return _e19;
 }
 
@@ -1486,19 +1486,33 @@ Material reuse_material(ReuseSurface s_10, vec3 eye) {
     return _e13;
 }
 
-uint reuse_domains(vec3 x_13, vec3 n_12, float d_6, uint h_2, inout Domain doms_1[3]) {
+uvec2 sample_key(uint li_7, uint cells_1) {
+    uint _e6 = _group_1_binding_1_cs[li_7].kind;
+    return uvec2(li_7, ((_e6 == LIGHT_TRIANGLE) ? cells_1 : 0u));
+}
+
+Shaded shade_sample(uint li_8, uint cells_2, vec3 x_13, vec3 n_12, Material m_5, float eps_3, bool trace_4) {
+    GpuLight _e9 = _group_1_binding_1_cs[li_8];
+    float _e13 = grid_coordinate(cells_2);
+    float _e16 = grid_coordinate((cells_2 << 16u));
+    Connection _e17 = connect_record(_e9, x_13, n_12, n_12, UNRANGED, UNRANGED, 1.0, _e13, _e16, eps_3, trace_4);
+    Shaded _e18 = shade_connection(_e17, x_13, n_12, m_5);
+    return _e18;
+}
+
+uint reuse_domains(vec3 x_14, vec3 n_13, float d_6, uint h_2, inout Domain doms_1[3]) {
     uint nd = 0u;
     uint hr = 0u;
-    uint j_4 = 0u;
+    uint j_5 = 0u;
     vec2 p_7 = vec2(0.0);
-    bool local_33 = false;
-    bool local_34 = false;
-    bool local_35 = false;
-    bool seen = false;
+    bool local_39 = false;
+    bool local_40 = false;
+    bool local_41 = false;
+    bool seen_1 = false;
     uint k_5 = 0u;
-    bool local_36 = false;
-    bool local_37 = false;
-    bool local_38 = false;
+    bool local_42 = false;
+    bool local_43 = false;
+    bool local_44 = false;
     uint _e9 = _group_0_binding_7_cs.has_history;
     if ((_e9 != 1u)) {
         return 0u;
@@ -1509,7 +1523,7 @@ uint reuse_domains(vec3 x_13, vec3 n_12, float d_6, uint h_2, inout Domain doms_
     vec4 _e24 = _group_0_binding_7_cs.c3_;
     uint _e27 = _group_0_binding_0_cs.width;
     uint _e31 = _group_0_binding_0_cs.height;
-    vec3 _e33 = reproject(_e15, _e18, _e21, _e24, x_13, float(_e27), float(_e31));
+    vec3 _e33 = reproject(_e15, _e18, _e21, _e24, x_14, float(_e27), float(_e31));
     if ((_e33.z <= 0.0)) {
         return 0u;
     }
@@ -1517,18 +1531,18 @@ uint reuse_domains(vec3 x_13, vec3 n_12, float d_6, uint h_2, inout Domain doms_
     bool loop_init_8 = true;
     while(true) {
         if (!loop_init_8) {
-            uint _e175 = j_4;
-            j_4 = (_e175 + 1u);
+            uint _e175 = j_5;
+            j_5 = (_e175 + 1u);
         }
         loop_init_8 = false;
-        uint _e41 = j_4;
+        uint _e41 = j_5;
         if ((_e41 < DOMAINS)) {
         } else {
             break;
         }
         {
             p_7 = _e33.xy;
-            uint _e46 = j_4;
+            uint _e46 = j_5;
             if ((_e46 > 0u)) {
                 uint _e49 = hr;
                 uint _e50 = pcg_hash(_e49);
@@ -1548,31 +1562,31 @@ uint reuse_domains(vec3 x_13, vec3 n_12, float d_6, uint h_2, inout Domain doms_
             vec2 _e63 = p_7;
             ivec2 t_8 = ivec2(roundEven(_e63));
             if (!((t_8.x < 0))) {
-                local_33 = (t_8.y < 0);
+                local_39 = (t_8.y < 0);
             } else {
-                local_33 = true;
+                local_39 = true;
             }
-            bool _e76 = local_33;
+            bool _e76 = local_39;
             if (!(_e76)) {
                 uint _e83 = _group_0_binding_0_cs.width;
-                local_34 = (t_8.x >= int(_e83));
+                local_40 = (t_8.x >= int(_e83));
             } else {
-                local_34 = true;
+                local_40 = true;
             }
-            bool _e87 = local_34;
+            bool _e87 = local_40;
             if (!(_e87)) {
                 uint _e94 = _group_0_binding_0_cs.height;
-                local_35 = (t_8.y >= int(_e94));
+                local_41 = (t_8.y >= int(_e94));
             } else {
-                local_35 = true;
+                local_41 = true;
             }
-            bool _e98 = local_35;
+            bool _e98 = local_41;
             if (_e98) {
                 continue;
             }
             uint _e103 = _group_0_binding_0_cs.width;
             uint pixel = ((uint(t_8.y) * _e103) + uint(t_8.x));
-            seen = false;
+            seen_1 = false;
             k_5 = 0u;
             bool loop_init_9 = true;
             while(true) {
@@ -1588,33 +1602,33 @@ uint reuse_domains(vec3 x_13, vec3 n_12, float d_6, uint h_2, inout Domain doms_
                     break;
                 }
                 {
-                    bool _e115 = seen;
+                    bool _e115 = seen_1;
                     if (!(_e115)) {
                         uint _e119 = k_5;
                         uint _e122 = doms_1[_e119].pixel;
-                        local_36 = (_e122 == pixel);
+                        local_42 = (_e122 == pixel);
                     } else {
-                        local_36 = true;
+                        local_42 = true;
                     }
-                    bool _e125 = local_36;
-                    seen = _e125;
+                    bool _e125 = local_42;
+                    seen_1 = _e125;
                 }
             }
             ReuseSurface s_13 = _group_1_binding_9_cs[pixel].surface;
-            bool _e133 = seen;
+            bool _e133 = seen_1;
             if (!(_e133)) {
-                local_37 = !((s_13.m > 0.0));
+                local_43 = !((s_13.m > 0.0));
             } else {
-                local_37 = true;
+                local_43 = true;
             }
-            bool _e142 = local_37;
+            bool _e142 = local_43;
             if (!(_e142)) {
-                bool _e150 = history_matches(n_12, s_13.n, x_13, dot(s_13.n, s_13.x), d_6);
-                local_38 = !(_e150);
+                bool _e150 = history_matches(n_13, s_13.n, x_14, dot(s_13.n, s_13.x), d_6);
+                local_44 = !(_e150);
             } else {
-                local_38 = true;
+                local_44 = true;
             }
-            bool _e153 = local_38;
+            bool _e153 = local_44;
             if (_e153) {
                 continue;
             }
@@ -1622,7 +1636,7 @@ uint reuse_domains(vec3 x_13, vec3 n_12, float d_6, uint h_2, inout Domain doms_
             vec3 _e160 = _group_0_binding_7_cs.prev_eye;
             Material _e161 = reuse_material(s_13, _e160);
             float _e165 = _group_0_binding_7_cs.max_confidence;
-            uint _e167 = j_4;
+            uint _e167 = j_5;
             doms_1[_e154] = Domain(pixel, s_13.x, s_13.n, _e161, min(s_13.m, _e165), (_e167 == 0u));
             uint _e171 = nd;
             nd = (_e171 + 1u);
@@ -1632,68 +1646,68 @@ uint reuse_domains(vec3 x_13, vec3 n_12, float d_6, uint h_2, inout Domain doms_
     return _e177;
 }
 
-ReuseSlot gris_combine(uint q_4, ReuseSlot cur, bool cur_ris, float cur_c, uint k0_, uint k1_, vec3 x_14, vec3 n_13, Material m_5, inout Domain doms_2[3], inout uint hs_1) {
+ReuseSlot gris_combine(uint q_6, ReuseSlot cur, bool cur_ris, float cur_c, uint k0_, uint k1_, vec3 x_15, vec3 n_14, Material m_6, inout Domain doms_2[3], inout uint hs_1) {
     float w_sum_3 = 0.0;
     ReuseSlot out_ = ReuseSlot(0u, 0u, 0.0);
     float out_target = 0.0;
-    uint j_5 = 0u;
+    uint j_6 = 0u;
     ReuseSlot s_11 = ReuseSlot(0u, 0u, 0.0);
-    bool local_39 = false;
+    bool local_45 = false;
     float w_in = 0.0;
-    bool local_40 = false;
+    bool local_46 = false;
     float own_1 = 0.0;
     float all_1 = 0.0;
     uint k_6 = 0u;
-    bool local_41 = false;
-    j_5 = k0_;
+    bool local_47 = false;
+    j_6 = k0_;
     bool loop_init_10 = true;
     while(true) {
         if (!loop_init_10) {
-            uint _e137 = j_5;
-            j_5 = (_e137 + 1u);
+            uint _e137 = j_6;
+            j_6 = (_e137 + 1u);
         }
         loop_init_10 = false;
-        uint _e21 = j_5;
+        uint _e21 = j_6;
         if ((_e21 <= k1_)) {
         } else {
             break;
         }
         {
             s_11 = cur;
-            uint _e24 = j_5;
+            uint _e24 = j_6;
             if ((_e24 > k0_)) {
-                uint _e27 = j_5;
+                uint _e27 = j_6;
                 uint _e32 = doms_2[(_e27 - 1u)].pixel;
-                ReuseSlot _e36 = _group_1_binding_9_cs[_e32].slots[q_4];
+                ReuseSlot _e36 = _group_1_binding_9_cs[_e32].slots[q_6];
                 s_11 = _e36;
             }
             float _e38 = s_11.w;
             if (!(!((_e38 > 0.0)))) {
                 uint _e46 = s_11.light;
-                local_39 = (_e46 >= uint(_group_1_binding_1_cs.length()));
+                local_45 = (_e46 >= uint(_group_1_binding_1_cs.length()));
             } else {
-                local_39 = true;
+                local_45 = true;
             }
-            bool _e51 = local_39;
+            bool _e51 = local_45;
             if (_e51) {
                 continue;
             }
             uint _e54 = s_11.light;
             GpuLight _e56 = _group_1_binding_1_cs[_e54];
             uint _e58 = s_11.u;
-            float _e59 = reuse_target(q_4, _e56, _e58, x_14, n_13, m_5);
+            float _e59 = reuse_target(q_6, _e56, _e58, x_15, n_14, m_6);
             if (!((_e59 > 0.0))) {
                 continue;
             }
             float _e64 = s_11.w;
             w_in = _e64;
-            uint _e66 = j_5;
+            uint _e66 = j_6;
             if ((_e66 == k0_)) {
-                local_40 = cur_ris;
+                local_46 = cur_ris;
             } else {
-                local_40 = false;
+                local_46 = false;
             }
-            bool _e71 = local_40;
+            bool _e71 = local_46;
             if (_e71) {
                 float _e73 = s_11.w;
                 w_in = (_e73 / _e59);
@@ -1726,12 +1740,12 @@ ReuseSlot gris_combine(uint q_4, ReuseSlot cur, bool cur_ris, float cur_c, uint 
                     vec3 _e100 = doms_2[_e97].n;
                     uint _e101 = k_6;
                     Material _e104 = doms_2[_e101].m;
-                    float _e105 = reuse_target(q_4, _e90, _e92, _e96, _e100, _e104);
+                    float _e105 = reuse_target(q_6, _e90, _e92, _e96, _e100, _e104);
                     float t_9 = (_e85 * _e105);
                     float _e107 = all_1;
                     all_1 = (_e107 + t_9);
                     uint _e109 = k_6;
-                    uint _e112 = j_5;
+                    uint _e112 = j_6;
                     if (((_e109 + 1u) == _e112)) {
                         own_1 = t_9;
                     }
@@ -1751,11 +1765,11 @@ ReuseSlot gris_combine(uint q_4, ReuseSlot cur, bool cur_ris, float cur_c, uint 
                 uint _e130 = hs_1;
                 float _e131 = xi_from_bits(_e130);
                 bool _e132 = weighted_replace(_e120, _e129, _e131);
-                local_41 = _e132;
+                local_47 = _e132;
             } else {
-                local_41 = false;
+                local_47 = false;
             }
-            bool _e134 = local_41;
+            bool _e134 = local_47;
             if (_e134) {
                 ReuseSlot _e135 = s_11;
                 out_ = _e135;
@@ -1813,9 +1827,17 @@ void main() {
     Domain doms[3] = Domain[3](Domain(0u, vec3(0.0), vec3(0.0), Material(vec3(0.0), 0.0, 0.0, vec3(0.0), 0.0, 0.0), 0.0, false), Domain(0u, vec3(0.0), vec3(0.0), Material(vec3(0.0), 0.0, 0.0, vec3(0.0), 0.0, 0.0), 0.0, false), Domain(0u, vec3(0.0), vec3(0.0), Material(vec3(0.0), 0.0, 0.0, vec3(0.0), 0.0, 0.0), 0.0, false));
     bool local_6 = false;
     uint hs = 0u;
+    uvec2 fresh_keys[8] = uvec2[8](uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u));
+    bool fresh_held[8] = bool[8](false, false, false, false, false, false, false, false);
+    uint q_1 = 0u;
+    bool local_7 = false;
+    bool fresh_visible[8] = bool[8](false, false, false, false, false, false, false, false);
+    uint q_2 = 0u;
     ReuseSlot kept[8] = ReuseSlot[8](ReuseSlot(0u, 0u, 0.0), ReuseSlot(0u, 0u, 0.0), ReuseSlot(0u, 0u, 0.0), ReuseSlot(0u, 0u, 0.0), ReuseSlot(0u, 0u, 0.0), ReuseSlot(0u, 0u, 0.0), ReuseSlot(0u, 0u, 0.0), ReuseSlot(0u, 0u, 0.0));
     ReuseSlot fin[8] = ReuseSlot[8](ReuseSlot(0u, 0u, 0.0), ReuseSlot(0u, 0u, 0.0), ReuseSlot(0u, 0u, 0.0), ReuseSlot(0u, 0u, 0.0), ReuseSlot(0u, 0u, 0.0), ReuseSlot(0u, 0u, 0.0), ReuseSlot(0u, 0u, 0.0), ReuseSlot(0u, 0u, 0.0));
-    uint q_1 = 0u;
+    uint q_3 = 0u;
+    bool local_8 = false;
+    bool local_9 = false;
     uvec2 keys[8] = uvec2[8](uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u));
     bool held[8] = bool[8](false, false, false, false, false, false, false, false);
     uint k = 0u;
@@ -1823,9 +1845,16 @@ void main() {
     uint k_1 = 0u;
     vec3 w = vec3(0.0);
     uint j_1 = 0u;
+    bool known = false;
+    bool seen = false;
     uint j_2 = 0u;
-    uint q_2 = 0u;
-    bool local_7 = false;
+    bool local_10 = false;
+    bool local_11 = false;
+    Shaded shaded = Shaded(vec3(0.0), vec3(0.0), vec3(0.0));
+    bool local_12 = false;
+    uint j_3 = 0u;
+    uint q_4 = 0u;
+    bool local_13 = false;
     uint _e5 = _group_0_binding_0_cs.width;
     if ((gid.x < _e5)) {
         uint _e12 = _group_0_binding_0_cs.height;
@@ -1845,7 +1874,7 @@ void main() {
     vec3 _e33 = nn;
     float len2_ = dot(_e32, _e33);
     vec4 _e35 = s;
-    vec3 x_17 = _e35.xyz;
+    vec3 x_18 = _e35.xyz;
     if (inside) {
         float _e40 = s.w;
         local_1 = (_e40 > 0.0);
@@ -1860,7 +1889,7 @@ void main() {
     }
     bool _e50 = local_2;
     if (_e50) {
-        local_3 = all(lessThanEqual(abs(x_17), vec3(3.4028235e38)));
+        local_3 = all(lessThanEqual(abs(x_18), vec3(3.4028235e38)));
     } else {
         local_3 = false;
     }
@@ -1875,7 +1904,7 @@ void main() {
         vec4 mr = texelFetch(_group_0_binding_5_cs, texel_1, 0);
         vec4 _e83 = texelFetch(_group_0_binding_4_cs, texel_1, 0);
         vec3 _e90 = _group_0_binding_0_cs.eye;
-        Material _e93 = material_of(_e83.xyz, mr.z, mr.y, mr.w, normalize((_e90 - x_17)));
+        Material _e93 = material_of(_e83.xyz, mr.z, mr.y, mr.w, normalize((_e90 - x_18)));
         m = _e93;
         vec3 _e95 = m.base;
         float _e97 = m.metallic;
@@ -1894,7 +1923,7 @@ void main() {
     vec4 _e114 = range_lobe(_e113);
     float _e117 = _group_0_binding_0_cs.shadow_offset;
     vec3 _e120 = _group_0_binding_0_cs.eye;
-    float eps_3 = (_e117 * length((_e120 - x_17)));
+    float eps_4 = (_e117 * length((_e120 - x_18)));
     uint _e126 = _group_0_binding_0_cs.seed;
     uint _e130 = _group_0_binding_0_cs.width;
     uint _e136 = _group_0_binding_0_cs.frame;
@@ -1902,7 +1931,7 @@ void main() {
     uint _e138 = pick_stream(_e137);
     h = _e138;
     hc = _e137;
-    TileWalk _e160 = tile_walk_begin(lid, x_17, _e114.w, has_3);
+    TileWalk _e160 = tile_walk_begin(lid, x_18, _e114.w, has_3);
     bool loop_init_12 = true;
     while(true) {
         if (!loop_init_12) {
@@ -1937,7 +1966,7 @@ void main() {
                     if (!(!(has_3))) {
                         BshNode _e182 = _group_1_binding_4_cs[b_10];
                         vec3 _e183 = r;
-                        bool _e184 = bsh_reaches(_e182, x_17, _e183, _e114);
+                        bool _e184 = bsh_reaches(_e182, x_18, _e183, _e114);
                         local_4 = !(_e184);
                     } else {
                         local_4 = true;
@@ -1946,7 +1975,7 @@ void main() {
                     if (_e187) {
                         continue;
                     }
-                    uint li_7 = _group_1_binding_4_cs[b_10].light;
+                    uint li_9 = _group_1_binding_4_cs[b_10].light;
                     uint _e192 = count;
                     count = (_e192 + 1u);
                     uint _e195 = h;
@@ -1965,7 +1994,7 @@ void main() {
                     vec3 _e206 = n;
                     vec3 _e207 = r;
                     Material _e208 = m;
-                    Shaded _e213 = shade_pick_traced(li_7, x_17, _e206, _e207, _e114, _e208, 1.0, u_5.x, u_5.y, eps_3, false);
+                    Shaded _e213 = shade_pick_traced(li_9, x_18, _e206, _e207, _e114, _e208, 1.0, u_5.x, u_5.y, eps_4, false);
                     vec3 _e214 = output_of(_e213);
                     float _e215 = resample_target(_e214);
                     if ((_e215 > 0.0)) {
@@ -2000,7 +2029,7 @@ void main() {
                                 bool _e241 = local_5;
                                 if (_e241) {
                                     uint _e242 = q;
-                                    slot_light[_e242] = li_7;
+                                    slot_light[_e242] = li_9;
                                     uint _e244 = q;
                                     slot_u[_e244] = u_5;
                                     uint _e246 = q;
@@ -2033,7 +2062,7 @@ void main() {
     vec3 _e286 = n;
     vec3 _e289 = _group_0_binding_0_cs.eye;
     uint _e293 = reuse_stream(_e137, 0u);
-    uint _e294 = reuse_domains(x_17, _e286, length((_e289 - x_17)), _e293, doms);
+    uint _e294 = reuse_domains(x_18, _e286, length((_e289 - x_18)), _e293, doms);
     if ((_e294 > 0u)) {
         bool _e301 = doms[0].temporal;
         local_6 = _e301;
@@ -2049,8 +2078,8 @@ void main() {
     bool loop_init_15 = true;
     while(true) {
         if (!loop_init_15) {
-            uint _e368 = q_1;
-            q_1 = (_e368 + 1u);
+            uint _e350 = q_1;
+            q_1 = (_e350 + 1u);
         }
         loop_init_15 = false;
         uint _e321 = q_1;
@@ -2061,200 +2090,337 @@ void main() {
         {
             uint _e324 = q_1;
             uint _e326 = q_1;
-            uint _e327 = q_1;
-            uint _e329 = slot_light[_e327];
-            uint _e330 = q_1;
-            uint _e332 = slot_cells[_e330];
-            vec3 _e333 = total;
-            uint _e334 = q_1;
-            float _e336 = slot_target(_e333, _e334, K);
-            uint _e337 = q_1;
-            float _e339 = slot_p[_e337];
-            vec3 _e348 = n;
-            Material _e349 = m;
-            ReuseSlot _e350 = gris_combine(_e326, ReuseSlot(_e329, _e332, ((_e339 > 0.0) ? _e336 : 0.0)), true, 1.0, 0u, first_1, x_17, _e348, _e349, doms, hs);
-            kept[_e324] = _e350;
-            uint _e351 = q_1;
-            uint _e353 = q_1;
-            ReuseSlot _e355 = kept[_e353];
-            fin[_e351] = _e355;
-            if ((_e294 > first_1)) {
-                uint _e357 = q_1;
-                uint _e359 = q_1;
-                uint _e360 = q_1;
-                ReuseSlot _e362 = kept[_e360];
-                vec3 _e364 = n;
-                Material _e365 = m;
-                ReuseSlot _e366 = gris_combine(_e359, _e362, false, confidence, first_1, _e294, x_17, _e364, _e365, doms, hs);
-                fin[_e357] = _e366;
+            uint _e328 = slot_light[_e326];
+            uint _e329 = q_1;
+            uint _e331 = slot_cells[_e329];
+            uvec2 _e332 = sample_key(_e328, _e331);
+            fresh_keys[_e324] = _e332;
+            uint _e333 = q_1;
+            uint _e337 = _group_0_binding_7_cs.visibility;
+            if ((_e337 == 1u)) {
+                uint _e342 = q_1;
+                float _e344 = slot_p[_e342];
+                local_7 = (_e344 > 0.0);
+            } else {
+                local_7 = false;
             }
+            bool _e348 = local_7;
+            fresh_held[_e333] = _e348;
         }
     }
+    uvec2 _e352[8] = fresh_keys;
+    bool _e353[8] = fresh_held;
+    uint _e354[8] = first_holders(_e352, _e353);
     bool loop_init_16 = true;
     while(true) {
         if (!loop_init_16) {
-            uint _e409 = k;
-            k = (_e409 + 1u);
+            uint _e392 = q_2;
+            q_2 = (_e392 + 1u);
         }
         loop_init_16 = false;
-        uint _e374 = k;
-        if ((_e374 < K)) {
+        uint _e358 = q_2;
+        if ((_e358 < K)) {
         } else {
             break;
         }
         {
-            uint _e377 = k;
-            uint _e379 = k;
-            uint _e382 = fin[_e379].light;
-            uint _e384 = k;
-            uint _e387 = fin[_e384].u;
-            uint _e389 = k;
-            uint _e392 = fin[_e389].light;
-            uint _e395 = _group_1_binding_1_cs[_e392].kind;
-            keys[_e377] = uvec2(_e382, ((_e395 == LIGHT_TRIANGLE) ? _e387 : 0u));
-            uint _e400 = k;
-            uint _e402 = k;
-            float _e405 = fin[_e402].w;
-            held[_e400] = (_e405 > 0.0);
+            uint _e361 = q_2;
+            uint _e363 = q_2;
+            if ((_e354[_e361] == _e363)) {
+                uint _e365 = q_2;
+                uint _e367 = q_2;
+                uint _e369 = slot_light[_e367];
+                uint _e370 = q_2;
+                uint _e372 = slot_cells[_e370];
+                vec3 _e373 = n;
+                Material _e374 = m;
+                Shaded _e376 = shade_sample(_e369, _e372, x_18, _e373, _e374, eps_4, true);
+                vec3 _e377 = output_of(_e376);
+                float _e378 = resample_target(_e377);
+                fresh_visible[_e365] = (_e378 > 0.0);
+            } else {
+                uint _e381 = q_2;
+                if ((_e354[_e381] < K)) {
+                    uint _e385 = q_2;
+                    uint _e387 = q_2;
+                    bool _e390 = fresh_visible[_e354[_e387]];
+                    fresh_visible[_e385] = _e390;
+                }
+            }
         }
     }
-    uvec2 _e411[8] = keys;
-    bool _e412[8] = held;
-    uint _e413[8] = first_holders(_e411, _e412);
     bool loop_init_17 = true;
     while(true) {
         if (!loop_init_17) {
-            uint _e501 = k_1;
-            k_1 = (_e501 + 1u);
+            uint _e462 = q_3;
+            q_3 = (_e462 + 1u);
         }
         loop_init_17 = false;
-        uint _e417 = k_1;
-        if ((_e417 < K)) {
+        uint _e398 = q_3;
+        if ((_e398 < K)) {
         } else {
             break;
         }
         {
-            uint _e420 = k_1;
-            uint _e422 = k_1;
-            if ((_e413[_e420] != _e422)) {
+            uint _e401 = q_3;
+            float _e403 = slot_p[_e401];
+            if ((_e403 > 0.0)) {
+                uint _e410 = _group_0_binding_7_cs.visibility;
+                if (!((_e410 == 0u))) {
+                    uint _e416 = q_3;
+                    bool _e418 = fresh_visible[_e416];
+                    local_9 = _e418;
+                } else {
+                    local_9 = true;
+                }
+                bool _e420 = local_9;
+                local_8 = _e420;
+            } else {
+                local_8 = false;
+            }
+            bool fresh = local_8;
+            uint _e423 = q_3;
+            uint _e425 = q_3;
+            uint _e426 = q_3;
+            uint _e428 = slot_light[_e426];
+            uint _e429 = q_3;
+            uint _e431 = slot_cells[_e429];
+            vec3 _e432 = total;
+            uint _e433 = q_3;
+            float _e435 = slot_target(_e432, _e433, K);
+            vec3 _e442 = n;
+            Material _e443 = m;
+            ReuseSlot _e444 = gris_combine(_e425, ReuseSlot(_e428, _e431, (fresh ? _e435 : 0.0)), true, 1.0, 0u, first_1, x_18, _e442, _e443, doms, hs);
+            kept[_e423] = _e444;
+            uint _e445 = q_3;
+            uint _e447 = q_3;
+            ReuseSlot _e449 = kept[_e447];
+            fin[_e445] = _e449;
+            if ((_e294 > first_1)) {
+                uint _e451 = q_3;
+                uint _e453 = q_3;
+                uint _e454 = q_3;
+                ReuseSlot _e456 = kept[_e454];
+                vec3 _e458 = n;
+                Material _e459 = m;
+                ReuseSlot _e460 = gris_combine(_e453, _e456, false, confidence, first_1, _e294, x_18, _e458, _e459, doms, hs);
+                fin[_e451] = _e460;
+            }
+        }
+    }
+    bool loop_init_18 = true;
+    while(true) {
+        if (!loop_init_18) {
+            uint _e491 = k;
+            k = (_e491 + 1u);
+        }
+        loop_init_18 = false;
+        uint _e468 = k;
+        if ((_e468 < K)) {
+        } else {
+            break;
+        }
+        {
+            uint _e471 = k;
+            uint _e473 = k;
+            uint _e476 = fin[_e473].light;
+            uint _e477 = k;
+            uint _e480 = fin[_e477].u;
+            uvec2 _e481 = sample_key(_e476, _e480);
+            keys[_e471] = _e481;
+            uint _e482 = k;
+            uint _e484 = k;
+            float _e487 = fin[_e484].w;
+            held[_e482] = (_e487 > 0.0);
+        }
+    }
+    uvec2 _e493[8] = keys;
+    bool _e494[8] = held;
+    uint _e495[8] = first_holders(_e493, _e494);
+    bool loop_init_19 = true;
+    while(true) {
+        if (!loop_init_19) {
+            uint _e621 = k_1;
+            k_1 = (_e621 + 1u);
+        }
+        loop_init_19 = false;
+        uint _e499 = k_1;
+        if ((_e499 < K)) {
+        } else {
+            break;
+        }
+        {
+            uint _e502 = k_1;
+            uint _e504 = k_1;
+            if ((_e495[_e502] != _e504)) {
                 continue;
             }
             w = vec3(0.0);
-            uint _e427 = k_1;
-            j_1 = _e427;
-            bool loop_init_18 = true;
+            uint _e509 = k_1;
+            j_1 = _e509;
+            bool loop_init_20 = true;
             while(true) {
-                if (!loop_init_18) {
-                    uint _e447 = j_1;
-                    j_1 = (_e447 + 1u);
+                if (!loop_init_20) {
+                    uint _e529 = j_1;
+                    j_1 = (_e529 + 1u);
                 }
-                loop_init_18 = false;
-                uint _e429 = j_1;
-                if ((_e429 < K)) {
+                loop_init_20 = false;
+                uint _e511 = j_1;
+                if ((_e511 < K)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e432 = j_1;
-                    uint _e434 = k_1;
-                    if ((_e413[_e432] == _e434)) {
-                        vec3 _e436 = w;
-                        uint _e437 = j_1;
-                        float _e440 = fin[_e437].w;
-                        uint _e441 = j_1;
-                        vec3 _e443 = slot_share(_e441, K);
-                        w = (_e436 + (_e440 * _e443));
+                    uint _e514 = j_1;
+                    uint _e516 = k_1;
+                    if ((_e495[_e514] == _e516)) {
+                        vec3 _e518 = w;
+                        uint _e519 = j_1;
+                        float _e522 = fin[_e519].w;
+                        uint _e523 = j_1;
+                        vec3 _e525 = slot_share(_e523, K);
+                        w = (_e518 + (_e522 * _e525));
                     }
                 }
             }
-            uint _e450 = k_1;
-            uint _e453 = fin[_e450].light;
-            GpuLight _e455 = _group_1_binding_1_cs[_e453];
-            vec3 _e456 = n;
-            vec3 _e457 = n;
-            uint _e461 = k_1;
-            uint _e464 = fin[_e461].u;
-            float _e465 = grid_coordinate(_e464);
-            uint _e466 = k_1;
-            uint _e469 = fin[_e466].u;
-            float _e472 = grid_coordinate((_e469 << 16u));
-            Connection _e474 = connect_record(_e455, x_17, _e456, _e457, UNRANGED, UNRANGED, 1.0, _e465, _e472, eps_3, true);
-            vec3 _e475 = n;
-            Material _e476 = m;
-            Shaded _e477 = shade_connection(_e474, x_17, _e475, _e476);
-            Shaded _e478 = t;
-            vec3 _e479 = w;
-            Shaded _e480 = scaled(_e477, _e479);
-            Shaded _e481 = add(_e478, _e480);
-            t = _e481;
-            uint _e482 = k_1;
-            j_2 = _e482;
-            bool loop_init_19 = true;
+            known = false;
+            seen = false;
+            j_2 = 0u;
+            bool loop_init_21 = true;
             while(true) {
-                if (!loop_init_19) {
-                    uint _e498 = j_2;
-                    j_2 = (_e498 + 1u);
+                if (!loop_init_21) {
+                    uint _e566 = j_2;
+                    j_2 = (_e566 + 1u);
                 }
-                loop_init_19 = false;
-                uint _e484 = j_2;
-                if ((_e484 < K)) {
+                loop_init_21 = false;
+                uint _e537 = j_2;
+                if ((_e537 < K)) {
+                    bool _e542 = known;
+                    local_10 = !(_e542);
+                } else {
+                    local_10 = false;
+                }
+                bool _e545 = local_10;
+                if (_e545) {
                 } else {
                     break;
                 }
                 {
-                    uint _e487 = j_2;
-                    uint _e489 = k_1;
-                    if ((_e413[_e487] == _e489)) {
-                        uint _e491 = j_2;
-                        vec3 _e493 = output_of(_e477);
-                        float _e494 = resample_target(_e493);
-                        visible[_e491] = (_e494 > 0.0);
+                    uint _e546 = j_2;
+                    bool _e548 = fresh_held[_e546];
+                    if (_e548) {
+                        uint _e551 = j_2;
+                        uvec2 _e553 = fresh_keys[_e551];
+                        uint _e554 = k_1;
+                        uvec2 _e556 = keys[_e554];
+                        local_11 = all(equal(_e553, _e556));
+                    } else {
+                        local_11 = false;
+                    }
+                    bool _e560 = local_11;
+                    if (_e560) {
+                        known = true;
+                        uint _e562 = j_2;
+                        bool _e564 = fresh_visible[_e562];
+                        seen = _e564;
+                    }
+                }
+            }
+            uint _e568 = k_1;
+            uint _e571 = fin[_e568].light;
+            uint _e572 = k_1;
+            uint _e575 = fin[_e572].u;
+            vec3 _e576 = n;
+            Material _e577 = m;
+            bool _e578 = known;
+            Shaded _e580 = shade_sample(_e571, _e575, x_18, _e576, _e577, eps_4, !(_e578));
+            shaded = _e580;
+            bool _e582 = known;
+            if (_e582) {
+                bool _e585 = seen;
+                local_12 = !(_e585);
+            } else {
+                local_12 = false;
+            }
+            bool _e588 = local_12;
+            if (_e588) {
+                shaded = Shaded(vec3(0.0), vec3(0.0), vec3(0.0));
+            }
+            Shaded _e596 = t;
+            Shaded _e597 = shaded;
+            vec3 _e598 = w;
+            Shaded _e599 = scaled(_e597, _e598);
+            Shaded _e600 = add(_e596, _e599);
+            t = _e600;
+            uint _e601 = k_1;
+            j_3 = _e601;
+            bool loop_init_22 = true;
+            while(true) {
+                if (!loop_init_22) {
+                    uint _e618 = j_3;
+                    j_3 = (_e618 + 1u);
+                }
+                loop_init_22 = false;
+                uint _e603 = j_3;
+                if ((_e603 < K)) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e606 = j_3;
+                    uint _e608 = k_1;
+                    if ((_e495[_e606] == _e608)) {
+                        uint _e610 = j_3;
+                        Shaded _e612 = shaded;
+                        vec3 _e613 = output_of(_e612);
+                        float _e614 = resample_target(_e613);
+                        visible[_e610] = (_e614 > 0.0);
                     }
                 }
             }
         }
     }
-    bool loop_init_20 = true;
+    bool loop_init_23 = true;
     while(true) {
-        if (!loop_init_20) {
-            uint _e542 = q_2;
-            q_2 = (_e542 + 1u);
+        if (!loop_init_23) {
+            uint _e662 = q_4;
+            q_4 = (_e662 + 1u);
         }
-        loop_init_20 = false;
-        uint _e505 = q_2;
-        if ((_e505 < K)) {
+        loop_init_23 = false;
+        uint _e625 = q_4;
+        if ((_e625 < K)) {
         } else {
             break;
         }
         {
-            uint _e510 = _group_0_binding_7_cs.visibility;
-            if (!((_e510 == 0u))) {
-                uint _e516 = q_2;
-                bool _e518 = visible[_e516];
-                local_7 = _e518;
+            uint _e630 = _group_0_binding_7_cs.visibility;
+            if (!((_e630 == 0u))) {
+                uint _e636 = q_4;
+                bool _e638 = visible[_e636];
+                local_13 = _e638;
             } else {
-                local_7 = true;
+                local_13 = true;
             }
-            bool keep = local_7;
-            uint _e524 = q_2;
-            uint _e526 = q_2;
-            uint _e529 = kept[_e526].light;
-            uint _e530 = q_2;
-            uint _e533 = kept[_e530].u;
-            uint _e534 = q_2;
-            float _e537 = kept[_e534].w;
-            _group_1_binding_10_cs[pixel_1].slots[_e524] = ReuseSlot(_e529, _e533, (keep ? _e537 : 0.0));
+            bool keep = local_13;
+            uint _e644 = q_4;
+            uint _e646 = q_4;
+            uint _e649 = kept[_e646].light;
+            uint _e650 = q_4;
+            uint _e653 = kept[_e650].u;
+            uint _e654 = q_4;
+            float _e657 = kept[_e654].w;
+            _group_1_binding_10_cs[pixel_1].slots[_e644] = ReuseSlot(_e649, _e653, (keep ? _e657 : 0.0));
         }
     }
-    vec3 _e547 = n;
-    Material _e548 = m;
-    float _e551 = _group_0_binding_7_cs.max_confidence;
-    ReuseSurface _e553 = reuse_surface(x_17, _e547, _e548, min(confidence, _e551));
-    _group_1_binding_10_cs[pixel_1].surface = _e553;
-    vec3 _e556 = t.diffuse;
-    vec3 _e558 = t.specular;
-    uint _e560 = count;
-    imageStore(_group_0_binding_3_cs, texel_1, vec4((_e556 + _e558), float(_e560)));
+    vec3 _e667 = n;
+    Material _e668 = m;
+    float _e671 = _group_0_binding_7_cs.max_confidence;
+    ReuseSurface _e673 = reuse_surface(x_18, _e667, _e668, min(confidence, _e671));
+    _group_1_binding_10_cs[pixel_1].surface = _e673;
+    vec3 _e676 = t.diffuse;
+    vec3 _e678 = t.specular;
+    uint _e680 = count;
+    imageStore(_group_0_binding_3_cs, texel_1, vec4((_e676 + _e678), float(_e680)));
     return;
 }
 

@@ -367,8 +367,8 @@ bool sphere_overlaps_aabb(
     metal::float3 bmin,
     metal::float3 bmax
 ) {
-    metal::float3 q_5 = metal::clamp(c_1, bmin, bmax);
-    metal::float3 v_6 = q_5 - c_1;
+    metal::float3 q_7 = metal::clamp(c_1, bmin, bmax);
+    metal::float3 v_6 = q_7 - c_1;
     return metal::dot(v_6, v_6) <= (r_2 * r_2);
 }
 
@@ -396,28 +396,28 @@ float connection_cosine(
     metal::float3 ng,
     float r2_1
 ) {
-    bool local_8 = {};
-    bool local_9 = {};
+    bool local_14 = {};
+    bool local_15 = {};
     metal::float3 v_7 = x_2 - y;
     float d2_6 = metal::dot(v_7, v_7);
     bool _e7 = slc_keep(r2_1, d2_6);
     if (!(!(_e7))) {
-        local_8 = !((d2_6 > 0.0));
+        local_14 = !((d2_6 > 0.0));
     } else {
-        local_8 = true;
+        local_14 = true;
     }
-    bool _e16 = local_8;
+    bool _e16 = local_14;
     if (_e16) {
         return 0.0;
     }
     metal::float3 w_12 = v_7 / metal::float3(metal::sqrt(d2_6));
     float cos_x_1 = -(metal::dot(n_1, w_12));
     if (!(!((cos_x_1 > 0.0)))) {
-        local_9 = !((metal::dot(ng, w_12) < 0.0));
+        local_15 = !((metal::dot(ng, w_12) < 0.0));
     } else {
-        local_9 = true;
+        local_15 = true;
     }
-    bool _e34 = local_9;
+    bool _e34 = local_15;
     if (_e34) {
         return 0.0;
     }
@@ -510,11 +510,11 @@ float slot_target(
         float _e5 = resample_target(c_4);
         return _e5;
     }
-    uint j_6 = naga_mod(slot, 3u);
-    if (j_6 == 0u) {
+    uint j_7 = naga_mod(slot, 3u);
+    if (j_7 == 0u) {
         return c_4.x;
     }
-    if (j_6 == 1u) {
+    if (j_7 == 1u) {
         return c_4.y;
     }
     return c_4.z;
@@ -533,13 +533,13 @@ metal::float3 slot_share(
         float w_13 = 1.0 / _e4;
         return metal::float3(w_13, w_13, w_13);
     }
-    uint j_7 = naga_mod(slot_1, 3u);
-    float _e15 = to_f32_(naga_div((k_3 + 2u) - j_7, 3u));
+    uint j_8 = naga_mod(slot_1, 3u);
+    float _e15 = to_f32_(naga_div((k_3 + 2u) - j_8, 3u));
     float w_14 = 1.0 / _e15;
-    if (j_7 == 0u) {
+    if (j_8 == 0u) {
         return metal::float3(w_14, 0.0, 0.0);
     }
-    if (j_7 == 1u) {
+    if (j_8 == 1u) {
         return metal::float3(0.0, w_14, 0.0);
     }
     return metal::float3(0.0, 0.0, w_14);
@@ -616,13 +616,13 @@ float smith_visibility(
     float n_v,
     float alpha_2
 ) {
-    bool local_10 = {};
+    bool local_16 = {};
     if (!((n_l <= 0.0))) {
-        local_10 = n_v <= 0.0;
+        local_16 = n_v <= 0.0;
     } else {
-        local_10 = true;
+        local_16 = true;
     }
-    bool _e11 = local_10;
+    bool _e11 = local_16;
     if (_e11) {
         return 0.0;
     }
@@ -658,20 +658,20 @@ bool has_specular(
     metal::float3 f0_d_1,
     float f90_d_1
 ) {
-    bool local_11 = {};
-    bool local_12 = {};
+    bool local_17 = {};
+    bool local_18 = {};
     if (!((metallic_1 > 0.0))) {
-        local_11 = f90_d_1 > 0.0;
+        local_17 = f90_d_1 > 0.0;
     } else {
-        local_11 = true;
+        local_17 = true;
     }
-    bool _e11 = local_11;
+    bool _e11 = local_17;
     if (!(_e11)) {
-        local_12 = metal::max(metal::max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0.0;
+        local_18 = metal::max(metal::max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0.0;
     } else {
-        local_12 = true;
+        local_18 = true;
     }
-    bool _e23 = local_12;
+    bool _e23 = local_18;
     return _e23;
 }
 
@@ -689,16 +689,16 @@ metal::float4 receiver_lobe(
     float alpha_3,
     float n_v_1
 ) {
-    bool local_13 = {};
+    bool local_19 = {};
     metal::float3 _e10 = fresnel_schlick(f0_d_2, f90_d_2, n_v_1);
     float _e16 = channel_mean(((metal::float3(1.0, 1.0, 1.0) - _e10) * base_1) * (1.0 - metallic_2));
     if (!((n_v_1 <= 0.0))) {
         bool _e22 = has_specular(metallic_2, f0_d_2, f90_d_2);
-        local_13 = !(_e22);
+        local_19 = !(_e22);
     } else {
-        local_13 = true;
+        local_19 = true;
     }
-    bool _e25 = local_13;
+    bool _e25 = local_19;
     if (_e25) {
         return metal::float4(_e16, 0.0, alpha_3, n_v_1);
     }
@@ -768,9 +768,9 @@ float bevy_dfg(
 ) {
     float rx = 1.0 - r_4;
     float a004_ = (metal::min(rx * rx, metal::exp2(-9.28 * n_v_2)) * rx) + (0.0425 - (0.0275 * r_4));
-    float x_15 = metal::max((1.04 - (0.572 * r_4)) - (1.04 * a004_), 0.00005);
+    float x_16 = metal::max((1.04 - (0.572 * r_4)) - (1.04 * a004_), 0.00005);
     float y_1 = metal::max(((0.022 * r_4) - 0.04) + (1.04 * a004_), 0.00005);
-    return x_15 + y_1;
+    return x_16 + y_1;
 }
 
 metal::float3 bevy_brdf(
@@ -813,22 +813,22 @@ float cone_cos_of(
     float a_3,
     metal::float3 d
 ) {
-    bool local_14 = {};
-    bool local_15 = {};
+    bool local_20 = {};
+    bool local_21 = {};
     float vd = metal::dot(v_2, d);
     float h2_1 = d2_4 - (a_3 * a_3);
     if (!((h2_1 <= 0.0))) {
         if (vd >= 0.0) {
-            local_15 = (vd * vd) >= h2_1;
+            local_21 = (vd * vd) >= h2_1;
         } else {
-            local_15 = false;
+            local_21 = false;
         }
-        bool _e19 = local_15;
-        local_14 = _e19;
+        bool _e19 = local_21;
+        local_20 = _e19;
     } else {
-        local_14 = true;
+        local_20 = true;
     }
-    bool _e21 = local_14;
+    bool _e21 = local_20;
     if (_e21) {
         return 1.0;
     }
@@ -915,19 +915,19 @@ metal::float3 triangle_normal(
     metal::float3 b_3,
     metal::float3 c_6
 ) {
-    bool local_16 = {};
-    metal::float3 n_14 = metal::cross(b_3 - a_4, c_6 - a_4);
-    float l2_ = metal::dot(n_14, n_14);
+    bool local_22 = {};
+    metal::float3 n_15 = metal::cross(b_3 - a_4, c_6 - a_4);
+    float l2_ = metal::dot(n_15, n_15);
     if (!(!((l2_ > 0.0)))) {
-        local_16 = !((l2_ < 300000000000000000000000000000000000000.0));
+        local_22 = !((l2_ < 300000000000000000000000000000000000000.0));
     } else {
-        local_16 = true;
+        local_22 = true;
     }
-    bool _e17 = local_16;
+    bool _e17 = local_22;
     if (_e17) {
         return metal::float3(0.0, 0.0, 0.0);
     }
-    return n_14 / metal::float3(metal::sqrt(l2_));
+    return n_15 / metal::float3(metal::sqrt(l2_));
 }
 
 float ray_triangle(
@@ -939,9 +939,9 @@ float ray_triangle(
     float t_min,
     float t_max_1
 ) {
-    bool local_17 = {};
-    bool local_18 = {};
-    bool local_19 = {};
+    bool local_23 = {};
+    bool local_24 = {};
+    bool local_25 = {};
     metal::float3 e1_ = b_4 - a_5;
     metal::float3 e2_ = c_7 - a_5;
     metal::float3 p_8 = metal::cross(d_3, e2_);
@@ -953,32 +953,32 @@ float ray_triangle(
     metal::float3 s_12 = o_1 - a_5;
     float u_4 = metal::dot(s_12, p_8) * inv;
     if (!((u_4 < 0.0))) {
-        local_17 = u_4 > 1.0;
+        local_23 = u_4 > 1.0;
     } else {
-        local_17 = true;
+        local_23 = true;
     }
-    bool _e28 = local_17;
+    bool _e28 = local_23;
     if (_e28) {
         return -1.0;
     }
-    metal::float3 q_6 = metal::cross(s_12, e1_);
-    float v_9 = metal::dot(d_3, q_6) * inv;
+    metal::float3 q_8 = metal::cross(s_12, e1_);
+    float v_9 = metal::dot(d_3, q_8) * inv;
     if (!((v_9 < 0.0))) {
-        local_18 = (u_4 + v_9) > 1.0;
+        local_24 = (u_4 + v_9) > 1.0;
     } else {
-        local_18 = true;
+        local_24 = true;
     }
-    bool _e42 = local_18;
+    bool _e42 = local_24;
     if (_e42) {
         return -1.0;
     }
-    float t_6 = metal::dot(e2_, q_6) * inv;
+    float t_6 = metal::dot(e2_, q_8) * inv;
     if (t_6 > t_min) {
-        local_19 = t_6 < t_max_1;
+        local_25 = t_6 < t_max_1;
     } else {
-        local_19 = false;
+        local_25 = false;
     }
-    bool _e51 = local_19;
+    bool _e51 = local_25;
     if (_e51) {
         return t_6;
     }
@@ -998,9 +998,9 @@ metal::float3 reproject(
     if (clip.w <= 0.0) {
         return metal::float3(-1.0, -1.0, 0.0);
     }
-    float x_16 = ((((clip.x / clip.w) + 1.0) * 0.5) * width) - 0.5;
+    float x_17 = ((((clip.x / clip.w) + 1.0) * 0.5) * width) - 0.5;
     float y_2 = (((1.0 - (clip.y / clip.w)) * 0.5) * height) - 0.5;
-    return metal::float3(x_16, y_2, clip.w);
+    return metal::float3(x_17, y_2, clip.w);
 }
 
 bool history_matches(
@@ -1010,13 +1010,13 @@ bool history_matches(
     float oh,
     float d_4
 ) {
-    bool local_20 = {};
+    bool local_26 = {};
     if (metal::abs(metal::dot(nh, p_3) - oh) <= (TEMPORAL_DEPTH_TOLERANCE * d_4)) {
-        local_20 = metal::dot(n_5, nh) >= TEMPORAL_NORMAL_COS;
+        local_26 = metal::dot(n_5, nh) >= TEMPORAL_NORMAL_COS;
     } else {
-        local_20 = false;
+        local_26 = false;
     }
-    bool _e17 = local_20;
+    bool _e17 = local_26;
     return _e17;
 }
 
@@ -1078,12 +1078,12 @@ GeoHit trace(
         if (metal::all(loop_bound == uint2(0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         uint _e21 = node_3;
-        GpuGeoNode n_15 = geo_nodes[_e21];
+        GpuGeoNode n_16 = geo_nodes[_e21];
         float _e27 = hit.t;
-        float _e28 = ray_aabb(o_2, _e14, n_15.bmin, n_15.bmax, _e27);
+        float _e28 = ray_aabb(o_2, _e14, n_16.bmin, n_16.bmax, _e27);
         if (_e28 >= 0.0) {
-            if (n_15.count > 0u) {
-                i = n_15.first;
+            if (n_16.count > 0u) {
+                i = n_16.first;
                 uint2 loop_bound_1 = uint2(4294967295u);
                 bool loop_init = true;
                 while(true) {
@@ -1095,7 +1095,7 @@ GeoHit trace(
                     }
                     loop_init = false;
                     uint _e36 = i;
-                    if (_e36 < (n_15.first + n_15.count)) {
+                    if (_e36 < (n_16.first + n_16.count)) {
                     } else {
                         break;
                     }
@@ -1119,11 +1119,11 @@ GeoHit trace(
                 uint _e60 = sp;
                 if (_e60 < 64u) {
                     uint _e63 = sp;
-                    stack.inner[_e63] = n_15.first + 1u;
+                    stack.inner[_e63] = n_16.first + 1u;
                     uint _e68 = sp;
                     sp = _e68 + 1u;
                 }
-                node_3 = n_15.first;
+                node_3 = n_16.first;
                 continue;
             }
         }
@@ -1206,19 +1206,19 @@ bool bsh_reaches(
     metal::float3 r_8,
     metal::float4 rl_3
 ) {
-    bool local_21 = {};
-    bool local_22 = {};
+    bool local_27 = {};
+    bool local_28 = {};
     bool _e6 = sphere_contains_point(node_4.center, node_4.radius, x_4);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
         bool _e20 = sphere_contains_point(node_4.center, node_4.radius * (rl_3.w * 1.0001), x_4);
-        local_21 = !(_e20);
+        local_27 = !(_e20);
     } else {
-        local_21 = true;
+        local_27 = true;
     }
-    bool _e23 = local_21;
+    bool _e23 = local_27;
     if (_e23) {
         return false;
     }
@@ -1239,11 +1239,11 @@ bool bsh_reaches(
     float _e50 = bsh_range_bound(node_4);
     float reach = node_4.extent + (metal::sqrt(s_c) * _e50);
     if (d2_7 <= ((node_4.radius * node_4.radius) * s_c)) {
-        local_22 = d2_7 <= (reach * reach);
+        local_28 = d2_7 <= (reach * reach);
     } else {
-        local_22 = false;
+        local_28 = false;
     }
-    bool _e63 = local_22;
+    bool _e63 = local_28;
     return _e63;
 }
 
@@ -1266,7 +1266,7 @@ uint bsh_subtree(
 ) {
     uint i_2 = {};
     uint level = 0u;
-    bool local_23 = {};
+    bool local_29 = {};
     uint _e3 = bsh_first(nodes_3, bsh_nodes, _buffer_sizes);
     i_2 = _e3;
     uint2 loop_bound_2 = uint2(4294967295u);
@@ -1276,11 +1276,11 @@ uint bsh_subtree(
         uint _e7 = level;
         if (_e7 < depth) {
             uint _e11 = i_2;
-            local_23 = _e11 != BSH_NONE;
+            local_29 = _e11 != BSH_NONE;
         } else {
-            local_23 = false;
+            local_29 = false;
         }
-        bool _e15 = local_23;
+        bool _e15 = local_29;
         if (_e15) {
         } else {
             break;
@@ -1384,8 +1384,8 @@ Connection connect_record(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Connection c_8 = {};
-    bool local_24 = {};
-    bool local_25 = {};
+    bool local_30 = {};
+    bool local_31 = {};
     c_8.e = metal::float3(0.0);
     metal::float3 _e16 = light_point(l_3, u1_3, u2_3);
     c_8.y = _e16;
@@ -1397,16 +1397,16 @@ Connection connect_record(
         if (trace_1) {
             metal::float3 _e33 = c_8.y;
             bool _e34 = occluded(x_5 + (ng_1 * eps), _e33, geo_nodes, geo_tris, _buffer_sizes);
-            local_25 = _e34;
+            local_31 = _e34;
         } else {
-            local_25 = false;
+            local_31 = false;
         }
-        bool _e36 = local_25;
-        local_24 = _e36;
+        bool _e36 = local_31;
+        local_30 = _e36;
     } else {
-        local_24 = true;
+        local_30 = true;
     }
-    bool _e38 = local_24;
+    bool _e38 = local_30;
     if (_e38) {
         Connection _e39 = c_8;
         return _e39;
@@ -1560,9 +1560,9 @@ uint tile_subtree(
 ) {
     uint p_6 = {};
     uint b_7 = {};
-    bool local_26 = {};
-    bool local_27 = {};
-    bool local_28 = {};
+    bool local_32 = {};
+    bool local_33 = {};
+    bool local_34 = {};
     uint _e8 = bsh_subtree(BSH, s_3, BSH_TILE_DEPTH, bsh_nodes, _buffer_sizes);
     if (_e8 == BSH_NONE) {
         return 0u;
@@ -1587,16 +1587,16 @@ uint tile_subtree(
         if (_e23 != end_1) {
             if (!(!(list))) {
                 uint _e31 = p_6;
-                local_27 = _e31 < to;
+                local_33 = _e31 < to;
             } else {
-                local_27 = true;
+                local_33 = true;
             }
-            bool _e34 = local_27;
-            local_26 = _e34;
+            bool _e34 = local_33;
+            local_32 = _e34;
         } else {
-            local_26 = false;
+            local_32 = false;
         }
-        bool _e36 = local_26;
+        bool _e36 = local_32;
         if (_e36) {
         } else {
             break;
@@ -1604,11 +1604,11 @@ uint tile_subtree(
         {
             if (list) {
                 uint _e39 = p_6;
-                local_28 = _e39 >= start_2;
+                local_34 = _e39 >= start_2;
             } else {
-                local_28 = false;
+                local_34 = false;
             }
-            bool _e42 = local_28;
+            bool _e42 = local_34;
             if (_e42) {
                 uint _e44 = p_6;
                 uint _e47 = b_7;
@@ -1637,17 +1637,17 @@ TileWalk tile_walk_begin(
     threadgroup uint& tile_total,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    bool local_29 = {};
+    bool local_35 = {};
     TileWalk t_2 = {};
     uint s_4 = {};
     uint sum_1 = 0u;
     uint s_5 = 0u;
     if (has_2) {
-        local_29 = w_9 >= 0.0;
+        local_35 = w_9 >= 0.0;
     } else {
-        local_29 = false;
+        local_35 = false;
     }
-    bool _e12 = local_29;
+    bool _e12 = local_35;
     uint _e14 = metal::atomic_fetch_max_explicit(&tile_scale, _e12 ? as_type<uint>(w_9) : 0u, metal::memory_order_relaxed);
     WorkgroupBox _e15 = workgroup_box(li_4, x_8, has_2, wg_lo, wg_hi, wg_box);
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
@@ -1732,7 +1732,7 @@ uint tile_walk_fill(
 ) {
     uint s_6 = {};
     uint past = {};
-    bool local_30 = {};
+    bool local_36 = {};
     uint to_1 = metal::min(t_3.total, start_3 + TILE_LIST);
     s_6 = li_5;
     uint2 loop_bound_8 = uint2(4294967295u);
@@ -1762,11 +1762,11 @@ uint tile_walk_fill(
             }
             if (at_1 < to_1) {
                 uint _e31 = past;
-                local_30 = _e31 > start_3;
+                local_36 = _e31 > start_3;
             } else {
-                local_30 = false;
+                local_36 = false;
             }
-            bool _e34 = local_30;
+            bool _e34 = local_36;
             if (_e34) {
                 uint _e35 = s_6;
                 uint _e37 = tile_subtree(_e35, t_3, true, at_1, start_3, to_1, bsh_nodes, tile_list, _buffer_sizes);
@@ -1852,9 +1852,9 @@ type_17 first_holders(
 ) {
     type_17 first = {};
     uint k_4 = 0u;
-    uint j_3 = {};
-    bool local_31 = {};
-    bool local_32 = {};
+    uint j_4 = {};
+    bool local_37 = {};
+    bool local_38 = {};
     uint2 loop_bound_9 = uint2(4294967295u);
     bool loop_init_6 = true;
     while(true) {
@@ -1875,43 +1875,43 @@ type_17 first_holders(
             uint _e11 = k_4;
             uint _e12 = k_4;
             first.inner[_e8] = held_1.inner[_e12] ? _e11 : K;
-            j_3 = 0u;
+            j_4 = 0u;
             uint2 loop_bound_10 = uint2(4294967295u);
             bool loop_init_7 = true;
             while(true) {
                 if (metal::all(loop_bound_10 == uint2(0u))) { break; }
                 loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
                 if (!loop_init_7) {
-                    uint _e42 = j_3;
-                    j_3 = _e42 + 1u;
+                    uint _e42 = j_4;
+                    j_4 = _e42 + 1u;
                 }
                 loop_init_7 = false;
-                uint _e17 = j_3;
+                uint _e17 = j_4;
                 uint _e18 = k_4;
                 if (_e17 < _e18) {
                     uint _e22 = k_4;
-                    local_31 = held_1.inner[_e22];
+                    local_37 = held_1.inner[_e22];
                 } else {
-                    local_31 = false;
+                    local_37 = false;
                 }
-                bool _e25 = local_31;
+                bool _e25 = local_37;
                 if (_e25) {
                 } else {
                     break;
                 }
                 {
-                    uint _e26 = j_3;
+                    uint _e26 = j_4;
                     if (held_1.inner[_e26]) {
-                        uint _e30 = j_3;
+                        uint _e30 = j_4;
                         uint _e32 = k_4;
-                        local_32 = metal::all(keys_1.inner[_e30] == keys_1.inner[_e32]);
+                        local_38 = metal::all(keys_1.inner[_e30] == keys_1.inner[_e32]);
                     } else {
-                        local_32 = false;
+                        local_38 = false;
                     }
-                    bool _e37 = local_32;
+                    bool _e37 = local_38;
                     if (_e37) {
                         uint _e38 = k_4;
-                        uint _e40 = j_3;
+                        uint _e40 = j_4;
                         first.inner[_e38] = _e40;
                         break;
                     }
@@ -1930,7 +1930,7 @@ metal::float3 output_of(
 }
 
 float reuse_target(
-    uint q_3,
+    uint q_5,
     GpuLight l_4,
     uint cells,
     metal::float3 x_11,
@@ -1945,7 +1945,7 @@ float reuse_target(
     Connection _e15 = connect_record(l_4, x_11, n_10, n_10, UNRANGED, UNRANGED, 1.0, _e9, _e12, 0.0, false, geo_nodes, geo_tris, _buffer_sizes);
     Shaded _e16 = shade_connection(_e15, x_11, n_10, m_3);
     metal::float3 _e17 = output_of(_e16);
-    float _e19 = slot_target(_e17, q_3, K);
+    float _e19 = slot_target(_e17, q_5, K);
     return _e19;
 }
 
@@ -1968,13 +1968,44 @@ Material reuse_material(
     return _e13;
 }
 
+metal::uint2 sample_key(
+    uint li_7,
+    uint cells_1,
+    device type_12 const& lights,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e6 = lights[li_7].kind;
+    return metal::uint2(li_7, (_e6 == LIGHT_TRIANGLE) ? cells_1 : 0u);
+}
+
+Shaded shade_sample(
+    uint li_8,
+    uint cells_2,
+    metal::float3 x_13,
+    metal::float3 n_12,
+    Material m_5,
+    float eps_3,
+    bool trace_4,
+    device type_7 const& geo_nodes,
+    device type_8 const& geo_tris,
+    device type_12 const& lights,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    GpuLight _e9 = lights[li_8];
+    float _e13 = grid_coordinate(cells_2);
+    float _e16 = grid_coordinate(cells_2 << 16u);
+    Connection _e17 = connect_record(_e9, x_13, n_12, n_12, UNRANGED, UNRANGED, 1.0, _e13, _e16, eps_3, trace_4, geo_nodes, geo_tris, _buffer_sizes);
+    Shaded _e18 = shade_connection(_e17, x_13, n_12, m_5);
+    return _e18;
+}
+
 metal::int2 naga_f2i32(metal::float2 value) {
     return static_cast<metal::int2>(metal::clamp(value, -2147483600.0, 2147483500.0));
 }
 
 uint reuse_domains(
-    metal::float3 x_13,
-    metal::float3 n_12,
+    metal::float3 x_14,
+    metal::float3 n_13,
     float d_6,
     uint h_2,
     thread type_27& doms_1,
@@ -1985,16 +2016,16 @@ uint reuse_domains(
 ) {
     uint nd = 0u;
     uint hr = {};
-    uint j_4 = 0u;
+    uint j_5 = 0u;
     metal::float2 p_7 = {};
-    bool local_33 = {};
-    bool local_34 = {};
-    bool local_35 = {};
-    bool seen = {};
+    bool local_39 = {};
+    bool local_40 = {};
+    bool local_41 = {};
+    bool seen_1 = {};
     uint k_5 = {};
-    bool local_36 = {};
-    bool local_37 = {};
-    bool local_38 = {};
+    bool local_42 = {};
+    bool local_43 = {};
+    bool local_44 = {};
     uint _e9 = reuse.has_history;
     if (_e9 != 1u) {
         return 0u;
@@ -2005,7 +2036,7 @@ uint reuse_domains(
     metal::float4 _e24 = reuse.c3_;
     uint _e27 = view.width;
     uint _e31 = view.height;
-    metal::float3 _e33 = reproject(_e15, _e18, _e21, _e24, x_13, static_cast<float>(_e27), static_cast<float>(_e31));
+    metal::float3 _e33 = reproject(_e15, _e18, _e21, _e24, x_14, static_cast<float>(_e27), static_cast<float>(_e31));
     if (_e33.z <= 0.0) {
         return 0u;
     }
@@ -2016,18 +2047,18 @@ uint reuse_domains(
         if (metal::all(loop_bound_11 == uint2(0u))) { break; }
         loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
         if (!loop_init_8) {
-            uint _e175 = j_4;
-            j_4 = _e175 + 1u;
+            uint _e175 = j_5;
+            j_5 = _e175 + 1u;
         }
         loop_init_8 = false;
-        uint _e41 = j_4;
+        uint _e41 = j_5;
         if (_e41 < DOMAINS) {
         } else {
             break;
         }
         {
             p_7 = _e33.xy;
-            uint _e46 = j_4;
+            uint _e46 = j_5;
             if (_e46 > 0u) {
                 uint _e49 = hr;
                 uint _e50 = pcg_hash(_e49);
@@ -2047,31 +2078,31 @@ uint reuse_domains(
             metal::float2 _e63 = p_7;
             metal::int2 t_8 = naga_f2i32(metal::rint(_e63));
             if (!((t_8.x < 0))) {
-                local_33 = t_8.y < 0;
+                local_39 = t_8.y < 0;
             } else {
-                local_33 = true;
+                local_39 = true;
             }
-            bool _e76 = local_33;
+            bool _e76 = local_39;
             if (!(_e76)) {
                 uint _e83 = view.width;
-                local_34 = t_8.x >= static_cast<int>(_e83);
+                local_40 = t_8.x >= static_cast<int>(_e83);
             } else {
-                local_34 = true;
+                local_40 = true;
             }
-            bool _e87 = local_34;
+            bool _e87 = local_40;
             if (!(_e87)) {
                 uint _e94 = view.height;
-                local_35 = t_8.y >= static_cast<int>(_e94);
+                local_41 = t_8.y >= static_cast<int>(_e94);
             } else {
-                local_35 = true;
+                local_41 = true;
             }
-            bool _e98 = local_35;
+            bool _e98 = local_41;
             if (_e98) {
                 continue;
             }
             uint _e103 = view.width;
             uint pixel = (static_cast<uint>(t_8.y) * _e103) + static_cast<uint>(t_8.x);
-            seen = false;
+            seen_1 = false;
             k_5 = 0u;
             uint2 loop_bound_12 = uint2(4294967295u);
             bool loop_init_9 = true;
@@ -2090,33 +2121,33 @@ uint reuse_domains(
                     break;
                 }
                 {
-                    bool _e115 = seen;
+                    bool _e115 = seen_1;
                     if (!(_e115)) {
                         uint _e119 = k_5;
                         uint _e122 = doms_1.inner[_e119].pixel;
-                        local_36 = _e122 == pixel;
+                        local_42 = _e122 == pixel;
                     } else {
-                        local_36 = true;
+                        local_42 = true;
                     }
-                    bool _e125 = local_36;
-                    seen = _e125;
+                    bool _e125 = local_42;
+                    seen_1 = _e125;
                 }
             }
             ReuseSurface s_13 = reuse_prev[pixel].surface;
-            bool _e133 = seen;
+            bool _e133 = seen_1;
             if (!(_e133)) {
-                local_37 = !((s_13.m > 0.0));
+                local_43 = !((s_13.m > 0.0));
             } else {
-                local_37 = true;
+                local_43 = true;
             }
-            bool _e142 = local_37;
+            bool _e142 = local_43;
             if (!(_e142)) {
-                bool _e150 = history_matches(n_12, s_13.n, x_13, metal::dot(s_13.n, s_13.x), d_6);
-                local_38 = !(_e150);
+                bool _e150 = history_matches(n_13, s_13.n, x_14, metal::dot(s_13.n, s_13.x), d_6);
+                local_44 = !(_e150);
             } else {
-                local_38 = true;
+                local_44 = true;
             }
-            bool _e153 = local_38;
+            bool _e153 = local_44;
             if (_e153) {
                 continue;
             }
@@ -2124,7 +2155,7 @@ uint reuse_domains(
             metal::float3 _e160 = reuse.prev_eye;
             Material _e161 = reuse_material(s_13, _e160);
             float _e165 = reuse.max_confidence;
-            uint _e167 = j_4;
+            uint _e167 = j_5;
             doms_1.inner[_e154] = Domain {pixel, {}, s_13.x, s_13.n, _e161, metal::min(s_13.m, _e165), _e167 == 0u};
             uint _e171 = nd;
             nd = _e171 + 1u;
@@ -2135,15 +2166,15 @@ uint reuse_domains(
 }
 
 ReuseSlot gris_combine(
-    uint q_4,
+    uint q_6,
     ReuseSlot cur,
     bool cur_ris,
     float cur_c,
     uint k0_,
     uint k1_,
-    metal::float3 x_14,
-    metal::float3 n_13,
-    Material m_5,
+    metal::float3 x_15,
+    metal::float3 n_14,
+    Material m_6,
     thread type_27& doms_2,
     thread uint& hs_1,
     device type_7 const& geo_nodes,
@@ -2156,67 +2187,67 @@ ReuseSlot gris_combine(
     float w_sum_3 = 0.0;
     ReuseSlot out = ReuseSlot {0u, 0u, 0.0};
     float out_target = 0.0;
-    uint j_5 = {};
+    uint j_6 = {};
     ReuseSlot s_11 = {};
-    bool local_39 = {};
+    bool local_45 = {};
     float w_in = {};
-    bool local_40 = {};
+    bool local_46 = {};
     float own_1 = {};
     float all_1 = {};
     uint k_6 = {};
-    bool local_41 = {};
-    j_5 = k0_;
+    bool local_47 = {};
+    j_6 = k0_;
     uint2 loop_bound_13 = uint2(4294967295u);
     bool loop_init_10 = true;
     while(true) {
         if (metal::all(loop_bound_13 == uint2(0u))) { break; }
         loop_bound_13 -= uint2(loop_bound_13.y == 0u, 1u);
         if (!loop_init_10) {
-            uint _e137 = j_5;
-            j_5 = _e137 + 1u;
+            uint _e137 = j_6;
+            j_6 = _e137 + 1u;
         }
         loop_init_10 = false;
-        uint _e21 = j_5;
+        uint _e21 = j_6;
         if (_e21 <= k1_) {
         } else {
             break;
         }
         {
             s_11 = cur;
-            uint _e24 = j_5;
+            uint _e24 = j_6;
             if (_e24 > k0_) {
-                uint _e27 = j_5;
+                uint _e27 = j_6;
                 uint _e32 = doms_2.inner[_e27 - 1u].pixel;
-                ReuseSlot _e36 = reuse_prev[_e32].slots.inner[q_4];
+                ReuseSlot _e36 = reuse_prev[_e32].slots.inner[q_6];
                 s_11 = _e36;
             }
             float _e38 = s_11.w;
             if (!(!((_e38 > 0.0)))) {
                 uint _e46 = s_11.light;
-                local_39 = _e46 >= (1 + (_buffer_sizes.size8 - 0 - 64) / 64);
+                local_45 = _e46 >= (1 + (_buffer_sizes.size8 - 0 - 64) / 64);
             } else {
-                local_39 = true;
+                local_45 = true;
             }
-            bool _e51 = local_39;
+            bool _e51 = local_45;
             if (_e51) {
                 continue;
             }
             uint _e54 = s_11.light;
             GpuLight _e56 = lights[_e54];
             uint _e58 = s_11.u;
-            float _e59 = reuse_target(q_4, _e56, _e58, x_14, n_13, m_5, geo_nodes, geo_tris, _buffer_sizes);
+            float _e59 = reuse_target(q_6, _e56, _e58, x_15, n_14, m_6, geo_nodes, geo_tris, _buffer_sizes);
             if (!((_e59 > 0.0))) {
                 continue;
             }
             float _e64 = s_11.w;
             w_in = _e64;
-            uint _e66 = j_5;
+            uint _e66 = j_6;
             if (_e66 == k0_) {
-                local_40 = cur_ris;
+                local_46 = cur_ris;
             } else {
-                local_40 = false;
+                local_46 = false;
             }
-            bool _e71 = local_40;
+            bool _e71 = local_46;
             if (_e71) {
                 float _e73 = s_11.w;
                 w_in = _e73 / _e59;
@@ -2252,12 +2283,12 @@ ReuseSlot gris_combine(
                     metal::float3 _e100 = doms_2.inner[_e97].n;
                     uint _e101 = k_6;
                     Material _e104 = doms_2.inner[_e101].m;
-                    float _e105 = reuse_target(q_4, _e90, _e92, _e96, _e100, _e104, geo_nodes, geo_tris, _buffer_sizes);
+                    float _e105 = reuse_target(q_6, _e90, _e92, _e96, _e100, _e104, geo_nodes, geo_tris, _buffer_sizes);
                     float t_9 = _e85 * _e105;
                     float _e107 = all_1;
                     all_1 = _e107 + t_9;
                     uint _e109 = k_6;
-                    uint _e112 = j_5;
+                    uint _e112 = j_6;
                     if ((_e109 + 1u) == _e112) {
                         own_1 = t_9;
                     }
@@ -2277,11 +2308,11 @@ ReuseSlot gris_combine(
                 uint _e130 = hs_1;
                 float _e131 = xi_from_bits(_e130);
                 bool _e132 = weighted_replace(_e120, _e129, _e131);
-                local_41 = _e132;
+                local_47 = _e132;
             } else {
-                local_41 = false;
+                local_47 = false;
             }
-            bool _e134 = local_41;
+            bool _e134 = local_47;
             if (_e134) {
                 ReuseSlot _e135 = s_11;
                 out = _e135;
@@ -2366,9 +2397,17 @@ kernel void main_(
     type_27 doms = {};
     bool local_6 = {};
     uint hs = {};
+    type_25 fresh_keys = {};
+    type_26 fresh_held = {};
+    uint q_1 = 0u;
+    bool local_7 = {};
+    type_26 fresh_visible = {};
+    uint q_2 = 0u;
     type_15 kept = {};
     type_15 fin = {};
-    uint q_1 = 0u;
+    uint q_3 = 0u;
+    bool local_8 = {};
+    bool local_9 = {};
     type_25 keys = {};
     type_26 held = {};
     uint k = 0u;
@@ -2376,9 +2415,16 @@ kernel void main_(
     uint k_1 = 0u;
     metal::float3 w = {};
     uint j_1 = {};
+    bool known = {};
+    bool seen = {};
     uint j_2 = {};
-    uint q_2 = 0u;
-    bool local_7 = {};
+    bool local_10 = {};
+    bool local_11 = {};
+    Shaded shaded = {};
+    bool local_12 = {};
+    uint j_3 = {};
+    uint q_4 = 0u;
+    bool local_13 = {};
     uint _e5 = view.width;
     if (gid.x < _e5) {
         uint _e12 = view.height;
@@ -2398,7 +2444,7 @@ kernel void main_(
     metal::float3 _e33 = nn;
     float len2_ = metal::dot(_e32, _e33);
     metal::float4 _e35 = s;
-    metal::float3 x_17 = _e35.xyz;
+    metal::float3 x_18 = _e35.xyz;
     if (inside) {
         float _e40 = s.w;
         local_1 = _e40 > 0.0;
@@ -2413,7 +2459,7 @@ kernel void main_(
     }
     bool _e50 = local_2;
     if (_e50) {
-        local_3 = metal::all(metal::abs(x_17) <= metal::float3(340282350000000000000000000000000000000.0));
+        local_3 = metal::all(metal::abs(x_18) <= metal::float3(340282350000000000000000000000000000000.0));
     } else {
         local_3 = false;
     }
@@ -2428,7 +2474,7 @@ kernel void main_(
         metal::float4 mr = metal_rough_tex.read(metal::uint2(texel_1), 0);
         metal::float4 _e83 = base_color_tex.read(metal::uint2(texel_1), 0);
         metal::float3 _e90 = view.eye;
-        Material _e93 = material_of(_e83.xyz, mr.z, mr.y, mr.w, metal::normalize(_e90 - x_17));
+        Material _e93 = material_of(_e83.xyz, mr.z, mr.y, mr.w, metal::normalize(_e90 - x_18));
         m = _e93;
         metal::float3 _e95 = m.base;
         float _e97 = m.metallic;
@@ -2447,7 +2493,7 @@ kernel void main_(
     metal::float4 _e114 = range_lobe(_e113);
     float _e117 = view.shadow_offset;
     metal::float3 _e120 = view.eye;
-    float eps_3 = _e117 * metal::length(_e120 - x_17);
+    float eps_4 = _e117 * metal::length(_e120 - x_18);
     uint _e126 = view.seed;
     uint _e130 = view.width;
     uint _e136 = view.frame;
@@ -2455,7 +2501,7 @@ kernel void main_(
     uint _e138 = pick_stream(_e137);
     h = _e138;
     hc = _e137;
-    TileWalk _e160 = tile_walk_begin(lid, x_17, _e114.w, has_3, bsh_nodes, wg_lo, wg_hi, wg_box, tile_list, subtree_at, tile_scale, tile_total, _buffer_sizes);
+    TileWalk _e160 = tile_walk_begin(lid, x_18, _e114.w, has_3, bsh_nodes, wg_lo, wg_hi, wg_box, tile_list, subtree_at, tile_scale, tile_total, _buffer_sizes);
     uint2 loop_bound_15 = uint2(4294967295u);
     bool loop_init_12 = true;
     while(true) {
@@ -2496,7 +2542,7 @@ kernel void main_(
                     if (!(!(has_3))) {
                         BshNode _e182 = bsh_nodes[b_10];
                         metal::float3 _e183 = r;
-                        bool _e184 = bsh_reaches(_e182, x_17, _e183, _e114);
+                        bool _e184 = bsh_reaches(_e182, x_18, _e183, _e114);
                         local_4 = !(_e184);
                     } else {
                         local_4 = true;
@@ -2505,7 +2551,7 @@ kernel void main_(
                     if (_e187) {
                         continue;
                     }
-                    uint li_7 = bsh_nodes[b_10].light;
+                    uint li_9 = bsh_nodes[b_10].light;
                     uint _e192 = count;
                     count = _e192 + 1u;
                     uint _e195 = h;
@@ -2524,7 +2570,7 @@ kernel void main_(
                     metal::float3 _e206 = n;
                     metal::float3 _e207 = r;
                     Material _e208 = m;
-                    Shaded _e213 = shade_pick_traced(li_7, x_17, _e206, _e207, _e114, _e208, 1.0, u_5.x, u_5.y, eps_3, false, geo_nodes, geo_tris, lights, rt2_3, r2_3, light_cones, _buffer_sizes);
+                    Shaded _e213 = shade_pick_traced(li_9, x_18, _e206, _e207, _e114, _e208, 1.0, u_5.x, u_5.y, eps_4, false, geo_nodes, geo_tris, lights, rt2_3, r2_3, light_cones, _buffer_sizes);
                     metal::float3 _e214 = output_of(_e213);
                     float _e215 = resample_target(_e214);
                     if (_e215 > 0.0) {
@@ -2562,7 +2608,7 @@ kernel void main_(
                                 bool _e241 = local_5;
                                 if (_e241) {
                                     uint _e242 = q;
-                                    slot_light.inner[_e242] = li_7;
+                                    slot_light.inner[_e242] = li_9;
                                     uint _e244 = q;
                                     slot_u.inner[_e244] = u_5;
                                     uint _e246 = q;
@@ -2594,7 +2640,7 @@ kernel void main_(
     metal::float3 _e286 = n;
     metal::float3 _e289 = view.eye;
     uint _e293 = reuse_stream(_e137, 0u);
-    uint _e294 = reuse_domains(x_17, _e286, metal::length(_e289 - x_17), _e293, doms, view, reuse, reuse_prev, _buffer_sizes);
+    uint _e294 = reuse_domains(x_18, _e286, metal::length(_e289 - x_18), _e293, doms, view, reuse, reuse_prev, _buffer_sizes);
     if (_e294 > 0u) {
         bool _e301 = doms.inner[0].temporal;
         local_6 = _e301;
@@ -2613,8 +2659,8 @@ kernel void main_(
         if (metal::all(loop_bound_18 == uint2(0u))) { break; }
         loop_bound_18 -= uint2(loop_bound_18.y == 0u, 1u);
         if (!loop_init_15) {
-            uint _e368 = q_1;
-            q_1 = _e368 + 1u;
+            uint _e350 = q_1;
+            q_1 = _e350 + 1u;
         }
         loop_init_15 = false;
         uint _e321 = q_1;
@@ -2625,214 +2671,360 @@ kernel void main_(
         {
             uint _e324 = q_1;
             uint _e326 = q_1;
-            uint _e327 = q_1;
-            uint _e329 = slot_light.inner[_e327];
-            uint _e330 = q_1;
-            uint _e332 = slot_cells.inner[_e330];
-            metal::float3 _e333 = total;
-            uint _e334 = q_1;
-            float _e336 = slot_target(_e333, _e334, K);
-            uint _e337 = q_1;
-            float _e339 = slot_p.inner[_e337];
-            metal::float3 _e348 = n;
-            Material _e349 = m;
-            ReuseSlot _e350 = gris_combine(_e326, ReuseSlot {_e329, _e332, (_e339 > 0.0) ? _e336 : 0.0}, true, 1.0, 0u, first_1, x_17, _e348, _e349, doms, hs, geo_nodes, geo_tris, lights, lights_prev, reuse_prev, _buffer_sizes);
-            kept.inner[_e324] = _e350;
-            uint _e351 = q_1;
-            uint _e353 = q_1;
-            ReuseSlot _e355 = kept.inner[_e353];
-            fin.inner[_e351] = _e355;
-            if (_e294 > first_1) {
-                uint _e357 = q_1;
-                uint _e359 = q_1;
-                uint _e360 = q_1;
-                ReuseSlot _e362 = kept.inner[_e360];
-                metal::float3 _e364 = n;
-                Material _e365 = m;
-                ReuseSlot _e366 = gris_combine(_e359, _e362, false, confidence, first_1, _e294, x_17, _e364, _e365, doms, hs, geo_nodes, geo_tris, lights, lights_prev, reuse_prev, _buffer_sizes);
-                fin.inner[_e357] = _e366;
+            uint _e328 = slot_light.inner[_e326];
+            uint _e329 = q_1;
+            uint _e331 = slot_cells.inner[_e329];
+            metal::uint2 _e332 = sample_key(_e328, _e331, lights, _buffer_sizes);
+            fresh_keys.inner[_e324] = _e332;
+            uint _e333 = q_1;
+            uint _e337 = reuse.visibility;
+            if (_e337 == 1u) {
+                uint _e342 = q_1;
+                float _e344 = slot_p.inner[_e342];
+                local_7 = _e344 > 0.0;
+            } else {
+                local_7 = false;
             }
+            bool _e348 = local_7;
+            fresh_held.inner[_e333] = _e348;
         }
     }
+    type_25 _e352 = fresh_keys;
+    type_26 _e353 = fresh_held;
+    type_17 _e354 = first_holders(_e352, _e353);
     uint2 loop_bound_19 = uint2(4294967295u);
     bool loop_init_16 = true;
     while(true) {
         if (metal::all(loop_bound_19 == uint2(0u))) { break; }
         loop_bound_19 -= uint2(loop_bound_19.y == 0u, 1u);
         if (!loop_init_16) {
-            uint _e409 = k;
-            k = _e409 + 1u;
+            uint _e392 = q_2;
+            q_2 = _e392 + 1u;
         }
         loop_init_16 = false;
-        uint _e374 = k;
-        if (_e374 < K) {
+        uint _e358 = q_2;
+        if (_e358 < K) {
         } else {
             break;
         }
         {
-            uint _e377 = k;
-            uint _e379 = k;
-            uint _e382 = fin.inner[_e379].light;
-            uint _e384 = k;
-            uint _e387 = fin.inner[_e384].u;
-            uint _e389 = k;
-            uint _e392 = fin.inner[_e389].light;
-            uint _e395 = lights[_e392].kind;
-            keys.inner[_e377] = metal::uint2(_e382, (_e395 == LIGHT_TRIANGLE) ? _e387 : 0u);
-            uint _e400 = k;
-            uint _e402 = k;
-            float _e405 = fin.inner[_e402].w;
-            held.inner[_e400] = _e405 > 0.0;
+            uint _e361 = q_2;
+            uint _e363 = q_2;
+            if (_e354.inner[_e361] == _e363) {
+                uint _e365 = q_2;
+                uint _e367 = q_2;
+                uint _e369 = slot_light.inner[_e367];
+                uint _e370 = q_2;
+                uint _e372 = slot_cells.inner[_e370];
+                metal::float3 _e373 = n;
+                Material _e374 = m;
+                Shaded _e376 = shade_sample(_e369, _e372, x_18, _e373, _e374, eps_4, true, geo_nodes, geo_tris, lights, _buffer_sizes);
+                metal::float3 _e377 = output_of(_e376);
+                float _e378 = resample_target(_e377);
+                fresh_visible.inner[_e365] = _e378 > 0.0;
+            } else {
+                uint _e381 = q_2;
+                if (_e354.inner[_e381] < K) {
+                    uint _e385 = q_2;
+                    uint _e387 = q_2;
+                    bool _e390 = fresh_visible.inner[_e354.inner[_e387]];
+                    fresh_visible.inner[_e385] = _e390;
+                }
+            }
         }
     }
-    type_25 _e411 = keys;
-    type_26 _e412 = held;
-    type_17 _e413 = first_holders(_e411, _e412);
     uint2 loop_bound_20 = uint2(4294967295u);
     bool loop_init_17 = true;
     while(true) {
         if (metal::all(loop_bound_20 == uint2(0u))) { break; }
         loop_bound_20 -= uint2(loop_bound_20.y == 0u, 1u);
         if (!loop_init_17) {
-            uint _e501 = k_1;
-            k_1 = _e501 + 1u;
+            uint _e462 = q_3;
+            q_3 = _e462 + 1u;
         }
         loop_init_17 = false;
-        uint _e417 = k_1;
-        if (_e417 < K) {
+        uint _e398 = q_3;
+        if (_e398 < K) {
         } else {
             break;
         }
         {
-            uint _e420 = k_1;
-            uint _e422 = k_1;
-            if (_e413.inner[_e420] != _e422) {
+            uint _e401 = q_3;
+            float _e403 = slot_p.inner[_e401];
+            if (_e403 > 0.0) {
+                uint _e410 = reuse.visibility;
+                if (!((_e410 == 0u))) {
+                    uint _e416 = q_3;
+                    bool _e418 = fresh_visible.inner[_e416];
+                    local_9 = _e418;
+                } else {
+                    local_9 = true;
+                }
+                bool _e420 = local_9;
+                local_8 = _e420;
+            } else {
+                local_8 = false;
+            }
+            bool fresh = local_8;
+            uint _e423 = q_3;
+            uint _e425 = q_3;
+            uint _e426 = q_3;
+            uint _e428 = slot_light.inner[_e426];
+            uint _e429 = q_3;
+            uint _e431 = slot_cells.inner[_e429];
+            metal::float3 _e432 = total;
+            uint _e433 = q_3;
+            float _e435 = slot_target(_e432, _e433, K);
+            metal::float3 _e442 = n;
+            Material _e443 = m;
+            ReuseSlot _e444 = gris_combine(_e425, ReuseSlot {_e428, _e431, fresh ? _e435 : 0.0}, true, 1.0, 0u, first_1, x_18, _e442, _e443, doms, hs, geo_nodes, geo_tris, lights, lights_prev, reuse_prev, _buffer_sizes);
+            kept.inner[_e423] = _e444;
+            uint _e445 = q_3;
+            uint _e447 = q_3;
+            ReuseSlot _e449 = kept.inner[_e447];
+            fin.inner[_e445] = _e449;
+            if (_e294 > first_1) {
+                uint _e451 = q_3;
+                uint _e453 = q_3;
+                uint _e454 = q_3;
+                ReuseSlot _e456 = kept.inner[_e454];
+                metal::float3 _e458 = n;
+                Material _e459 = m;
+                ReuseSlot _e460 = gris_combine(_e453, _e456, false, confidence, first_1, _e294, x_18, _e458, _e459, doms, hs, geo_nodes, geo_tris, lights, lights_prev, reuse_prev, _buffer_sizes);
+                fin.inner[_e451] = _e460;
+            }
+        }
+    }
+    uint2 loop_bound_21 = uint2(4294967295u);
+    bool loop_init_18 = true;
+    while(true) {
+        if (metal::all(loop_bound_21 == uint2(0u))) { break; }
+        loop_bound_21 -= uint2(loop_bound_21.y == 0u, 1u);
+        if (!loop_init_18) {
+            uint _e491 = k;
+            k = _e491 + 1u;
+        }
+        loop_init_18 = false;
+        uint _e468 = k;
+        if (_e468 < K) {
+        } else {
+            break;
+        }
+        {
+            uint _e471 = k;
+            uint _e473 = k;
+            uint _e476 = fin.inner[_e473].light;
+            uint _e477 = k;
+            uint _e480 = fin.inner[_e477].u;
+            metal::uint2 _e481 = sample_key(_e476, _e480, lights, _buffer_sizes);
+            keys.inner[_e471] = _e481;
+            uint _e482 = k;
+            uint _e484 = k;
+            float _e487 = fin.inner[_e484].w;
+            held.inner[_e482] = _e487 > 0.0;
+        }
+    }
+    type_25 _e493 = keys;
+    type_26 _e494 = held;
+    type_17 _e495 = first_holders(_e493, _e494);
+    uint2 loop_bound_22 = uint2(4294967295u);
+    bool loop_init_19 = true;
+    while(true) {
+        if (metal::all(loop_bound_22 == uint2(0u))) { break; }
+        loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
+        if (!loop_init_19) {
+            uint _e621 = k_1;
+            k_1 = _e621 + 1u;
+        }
+        loop_init_19 = false;
+        uint _e499 = k_1;
+        if (_e499 < K) {
+        } else {
+            break;
+        }
+        {
+            uint _e502 = k_1;
+            uint _e504 = k_1;
+            if (_e495.inner[_e502] != _e504) {
                 continue;
             }
             w = metal::float3(0.0);
-            uint _e427 = k_1;
-            j_1 = _e427;
-            uint2 loop_bound_21 = uint2(4294967295u);
-            bool loop_init_18 = true;
+            uint _e509 = k_1;
+            j_1 = _e509;
+            uint2 loop_bound_23 = uint2(4294967295u);
+            bool loop_init_20 = true;
             while(true) {
-                if (metal::all(loop_bound_21 == uint2(0u))) { break; }
-                loop_bound_21 -= uint2(loop_bound_21.y == 0u, 1u);
-                if (!loop_init_18) {
-                    uint _e447 = j_1;
-                    j_1 = _e447 + 1u;
+                if (metal::all(loop_bound_23 == uint2(0u))) { break; }
+                loop_bound_23 -= uint2(loop_bound_23.y == 0u, 1u);
+                if (!loop_init_20) {
+                    uint _e529 = j_1;
+                    j_1 = _e529 + 1u;
                 }
-                loop_init_18 = false;
-                uint _e429 = j_1;
-                if (_e429 < K) {
+                loop_init_20 = false;
+                uint _e511 = j_1;
+                if (_e511 < K) {
                 } else {
                     break;
                 }
                 {
-                    uint _e432 = j_1;
-                    uint _e434 = k_1;
-                    if (_e413.inner[_e432] == _e434) {
-                        metal::float3 _e436 = w;
-                        uint _e437 = j_1;
-                        float _e440 = fin.inner[_e437].w;
-                        uint _e441 = j_1;
-                        metal::float3 _e443 = slot_share(_e441, K);
-                        w = _e436 + (_e440 * _e443);
+                    uint _e514 = j_1;
+                    uint _e516 = k_1;
+                    if (_e495.inner[_e514] == _e516) {
+                        metal::float3 _e518 = w;
+                        uint _e519 = j_1;
+                        float _e522 = fin.inner[_e519].w;
+                        uint _e523 = j_1;
+                        metal::float3 _e525 = slot_share(_e523, K);
+                        w = _e518 + (_e522 * _e525);
                     }
                 }
             }
-            uint _e450 = k_1;
-            uint _e453 = fin.inner[_e450].light;
-            GpuLight _e455 = lights[_e453];
-            metal::float3 _e456 = n;
-            metal::float3 _e457 = n;
-            uint _e461 = k_1;
-            uint _e464 = fin.inner[_e461].u;
-            float _e465 = grid_coordinate(_e464);
-            uint _e466 = k_1;
-            uint _e469 = fin.inner[_e466].u;
-            float _e472 = grid_coordinate(_e469 << 16u);
-            Connection _e474 = connect_record(_e455, x_17, _e456, _e457, UNRANGED, UNRANGED, 1.0, _e465, _e472, eps_3, true, geo_nodes, geo_tris, _buffer_sizes);
-            metal::float3 _e475 = n;
-            Material _e476 = m;
-            Shaded _e477 = shade_connection(_e474, x_17, _e475, _e476);
-            Shaded _e478 = t;
-            metal::float3 _e479 = w;
-            Shaded _e480 = scaled(_e477, _e479);
-            Shaded _e481 = add(_e478, _e480);
-            t = _e481;
-            uint _e482 = k_1;
-            j_2 = _e482;
-            uint2 loop_bound_22 = uint2(4294967295u);
-            bool loop_init_19 = true;
+            known = false;
+            seen = false;
+            j_2 = 0u;
+            uint2 loop_bound_24 = uint2(4294967295u);
+            bool loop_init_21 = true;
             while(true) {
-                if (metal::all(loop_bound_22 == uint2(0u))) { break; }
-                loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
-                if (!loop_init_19) {
-                    uint _e498 = j_2;
-                    j_2 = _e498 + 1u;
+                if (metal::all(loop_bound_24 == uint2(0u))) { break; }
+                loop_bound_24 -= uint2(loop_bound_24.y == 0u, 1u);
+                if (!loop_init_21) {
+                    uint _e566 = j_2;
+                    j_2 = _e566 + 1u;
                 }
-                loop_init_19 = false;
-                uint _e484 = j_2;
-                if (_e484 < K) {
+                loop_init_21 = false;
+                uint _e537 = j_2;
+                if (_e537 < K) {
+                    bool _e542 = known;
+                    local_10 = !(_e542);
+                } else {
+                    local_10 = false;
+                }
+                bool _e545 = local_10;
+                if (_e545) {
                 } else {
                     break;
                 }
                 {
-                    uint _e487 = j_2;
-                    uint _e489 = k_1;
-                    if (_e413.inner[_e487] == _e489) {
-                        uint _e491 = j_2;
-                        metal::float3 _e493 = output_of(_e477);
-                        float _e494 = resample_target(_e493);
-                        visible.inner[_e491] = _e494 > 0.0;
+                    uint _e546 = j_2;
+                    bool _e548 = fresh_held.inner[_e546];
+                    if (_e548) {
+                        uint _e551 = j_2;
+                        metal::uint2 _e553 = fresh_keys.inner[_e551];
+                        uint _e554 = k_1;
+                        metal::uint2 _e556 = keys.inner[_e554];
+                        local_11 = metal::all(_e553 == _e556);
+                    } else {
+                        local_11 = false;
+                    }
+                    bool _e560 = local_11;
+                    if (_e560) {
+                        known = true;
+                        uint _e562 = j_2;
+                        bool _e564 = fresh_visible.inner[_e562];
+                        seen = _e564;
+                    }
+                }
+            }
+            uint _e568 = k_1;
+            uint _e571 = fin.inner[_e568].light;
+            uint _e572 = k_1;
+            uint _e575 = fin.inner[_e572].u;
+            metal::float3 _e576 = n;
+            Material _e577 = m;
+            bool _e578 = known;
+            Shaded _e580 = shade_sample(_e571, _e575, x_18, _e576, _e577, eps_4, !(_e578), geo_nodes, geo_tris, lights, _buffer_sizes);
+            shaded = _e580;
+            bool _e582 = known;
+            if (_e582) {
+                bool _e585 = seen;
+                local_12 = !(_e585);
+            } else {
+                local_12 = false;
+            }
+            bool _e588 = local_12;
+            if (_e588) {
+                shaded = Shaded {metal::float3(0.0), metal::float3(0.0), metal::float3(0.0)};
+            }
+            Shaded _e596 = t;
+            Shaded _e597 = shaded;
+            metal::float3 _e598 = w;
+            Shaded _e599 = scaled(_e597, _e598);
+            Shaded _e600 = add(_e596, _e599);
+            t = _e600;
+            uint _e601 = k_1;
+            j_3 = _e601;
+            uint2 loop_bound_25 = uint2(4294967295u);
+            bool loop_init_22 = true;
+            while(true) {
+                if (metal::all(loop_bound_25 == uint2(0u))) { break; }
+                loop_bound_25 -= uint2(loop_bound_25.y == 0u, 1u);
+                if (!loop_init_22) {
+                    uint _e618 = j_3;
+                    j_3 = _e618 + 1u;
+                }
+                loop_init_22 = false;
+                uint _e603 = j_3;
+                if (_e603 < K) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e606 = j_3;
+                    uint _e608 = k_1;
+                    if (_e495.inner[_e606] == _e608) {
+                        uint _e610 = j_3;
+                        Shaded _e612 = shaded;
+                        metal::float3 _e613 = output_of(_e612);
+                        float _e614 = resample_target(_e613);
+                        visible.inner[_e610] = _e614 > 0.0;
                     }
                 }
             }
         }
     }
-    uint2 loop_bound_23 = uint2(4294967295u);
-    bool loop_init_20 = true;
+    uint2 loop_bound_26 = uint2(4294967295u);
+    bool loop_init_23 = true;
     while(true) {
-        if (metal::all(loop_bound_23 == uint2(0u))) { break; }
-        loop_bound_23 -= uint2(loop_bound_23.y == 0u, 1u);
-        if (!loop_init_20) {
-            uint _e542 = q_2;
-            q_2 = _e542 + 1u;
+        if (metal::all(loop_bound_26 == uint2(0u))) { break; }
+        loop_bound_26 -= uint2(loop_bound_26.y == 0u, 1u);
+        if (!loop_init_23) {
+            uint _e662 = q_4;
+            q_4 = _e662 + 1u;
         }
-        loop_init_20 = false;
-        uint _e505 = q_2;
-        if (_e505 < K) {
+        loop_init_23 = false;
+        uint _e625 = q_4;
+        if (_e625 < K) {
         } else {
             break;
         }
         {
-            uint _e510 = reuse.visibility;
-            if (!((_e510 == 0u))) {
-                uint _e516 = q_2;
-                bool _e518 = visible.inner[_e516];
-                local_7 = _e518;
+            uint _e630 = reuse.visibility;
+            if (!((_e630 == 0u))) {
+                uint _e636 = q_4;
+                bool _e638 = visible.inner[_e636];
+                local_13 = _e638;
             } else {
-                local_7 = true;
+                local_13 = true;
             }
-            bool keep = local_7;
-            uint _e524 = q_2;
-            uint _e526 = q_2;
-            uint _e529 = kept.inner[_e526].light;
-            uint _e530 = q_2;
-            uint _e533 = kept.inner[_e530].u;
-            uint _e534 = q_2;
-            float _e537 = kept.inner[_e534].w;
-            reuse_next[pixel_1].slots.inner[_e524] = ReuseSlot {_e529, _e533, keep ? _e537 : 0.0};
+            bool keep = local_13;
+            uint _e644 = q_4;
+            uint _e646 = q_4;
+            uint _e649 = kept.inner[_e646].light;
+            uint _e650 = q_4;
+            uint _e653 = kept.inner[_e650].u;
+            uint _e654 = q_4;
+            float _e657 = kept.inner[_e654].w;
+            reuse_next[pixel_1].slots.inner[_e644] = ReuseSlot {_e649, _e653, keep ? _e657 : 0.0};
         }
     }
-    metal::float3 _e547 = n;
-    Material _e548 = m;
-    float _e551 = reuse.max_confidence;
-    ReuseSurface _e553 = reuse_surface(x_17, _e547, _e548, metal::min(confidence, _e551));
-    reuse_next[pixel_1].surface = _e553;
-    metal::float3 _e556 = t.diffuse;
-    metal::float3 _e558 = t.specular;
-    uint _e560 = count;
-    out_tex.write(metal::float4(_e556 + _e558, static_cast<float>(_e560)), metal::uint2(texel_1));
+    metal::float3 _e667 = n;
+    Material _e668 = m;
+    float _e671 = reuse.max_confidence;
+    ReuseSurface _e673 = reuse_surface(x_18, _e667, _e668, metal::min(confidence, _e671));
+    reuse_next[pixel_1].surface = _e673;
+    metal::float3 _e676 = t.diffuse;
+    metal::float3 _e678 = t.specular;
+    uint _e680 = count;
+    out_tex.write(metal::float4(_e676 + _e678, static_cast<float>(_e680)), metal::uint2(texel_1));
     return;
 }

@@ -147,13 +147,18 @@ pub struct DirectReuse {
     /// The largest confidence a reservoir keeps, in frames (`≥ 1`): its
     /// weight against this record's pick.
     pub max_confidence: f32,
-    /// Visibility reuse: a pick whose shadow ray is blocked keeps no
-    /// weight for the next record, so the reservoirs learn which lights
-    /// reach the pixel. Unbiased while the camera and the occluders stand
-    /// still (the reused pixel is this one, its occluded picks carry no
-    /// light here); where they move, the reprojected pixel's surface
-    /// point differs slightly and shadow edges come out a little dark
-    /// (ReSTIR's biased variant).
+    /// Visibility reuse (ReSTIR DI's): each record's own picks are
+    /// shadowed before they are combined with the history, and an occluded
+    /// one enters with no weight; a final pick whose ray is blocked keeps
+    /// no weight for the next record. A reservoir then holds only picks
+    /// that reach its pixel, and its weight averages over the records it
+    /// stands for how much of the light arrives. A final pick that is one
+    /// of the record's own is not traced again, so a slot casts one ray
+    /// where its own pick wins and two where the history's does. Unbiased
+    /// while the camera and the occluders stand still (the reused pixel is
+    /// this one, its occluded picks carry no light here); where they move,
+    /// the reprojected pixel's surface point differs slightly and shadow
+    /// edges come out a little dark (ReSTIR's biased variant).
     pub visibility: bool,
 }
 
