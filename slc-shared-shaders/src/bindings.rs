@@ -373,8 +373,7 @@ pub fn bindings(kernel: Kernel, f: &Features) -> Vec<Binding> {
             if f.reuse_domains > 0 {
                 v.push(uniform(7, "reuse", "ReuseParams", true, "the previous view-projection and eye, the confidence cap, the neighbours' radius"));
                 v.push(b(1, 8, "lights_prev", Resource::Read("array<GpuLight>"), "the previous record's lights", "copied from `lights` after each record"));
-                v.push(b(1, 9, "reuse_prev", Resource::Read("array<ReusePixel>"), "the previous record's reservoirs and surfaces", "`direct_light` (the previous record)"));
-                v.push(b(1, 10, "reuse_next", Resource::ReadWrite("array<ReusePixel>"), "this record's reservoirs and surfaces", "this kernel"));
+                v.push(b(1, 9, "reuse_pixels", Resource::ReadWrite("array<ReusePixel>"), "two halves of a pixel each: the previous record's reservoirs and surfaces (read), this record's (written; `ReuseParams::parity`)", "this kernel (the previous record's half: the previous record)"));
             }
             return v;
         }

@@ -426,7 +426,7 @@ slc_core::shared! {
     /// across frames and pixels), one slot per record: the previous
     /// frame's view-projection (where a point was) and eye, the cap on a
     /// reservoir's confidence, the spatial neighbours' disk, the visibility
-    /// reuse, 96 bytes.
+    /// reuse, which half of the reservoirs it writes, 96 bytes.
     pub struct ReuseParams {
         /// Column 0 of the previous frame's view-projection.
         pub c0: vec4f,
@@ -444,11 +444,13 @@ slc_core::shared! {
         pub has_history: u32,
         /// Radius of the disk the neighbours are drawn in, in pixels.
         pub radius: f32,
-        /// 1: a pick found occluded keeps no weight for the next frame
-        /// (visibility reuse), else 0.
+        /// 1: visibility reuse (this frame's picks shadowed before they
+        /// meet the history, a final pick found occluded keeps no weight
+        /// for the next frame), else 0.
         pub visibility: u32,
-        /// Padding.
-        pub pad0: u32,
+        /// The half of `reuse_pixels` this frame writes (0 or 1: pixel
+        /// `i`'s reservoirs at `parity·w·h + i`); it reads the other.
+        pub parity: u32,
     }
 
     /// The surface a pixel's reused reservoirs were drawn for, as the next

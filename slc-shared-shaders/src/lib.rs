@@ -487,8 +487,8 @@ pub struct Features {
     /// `direct_light`'s reuse (resampled picks only): the previous-frame
     /// pixels each pixel combines its reservoirs with, the reprojected one
     /// and `reuse_domains − 1` neighbours (1..=8); 0: no reuse. Binds the
-    /// `reuse` uniform (0.7) and `lights_prev`, `reuse_prev` and
-    /// `reuse_next` (1.8–1.10).
+    /// `reuse` uniform (0.7), `lights_prev` and `reuse_pixels` (1.8,
+    /// 1.9).
     pub reuse_domains: u32,
     /// `direct_light` walks the light hierarchy once per tile, shared by
     /// its invocations (`bsh_tile.wgsl`; the default), rather than once

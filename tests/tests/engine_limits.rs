@@ -19,7 +19,9 @@
 //!   (glossy: `vpl_near` then binds 8), as does the glossy `GpuVpl`, with
 //!   no validation error (`GpuVplFrame`, whose RSM needs 40 color bytes per
 //!   sample, is a typed error there); so does the temporal pass (4 storage
-//!   textures).
+//!   textures), and the shadowed direct pass, also with resampled picks
+//!   reused across frames for point lights (8 storage buffers; every light
+//!   type's IES table makes 9, a typed error).
 //!
 //! The counters hold what is alive now: they catch what accumulates, not
 //! an object made and dropped within one record (that none is made is by
@@ -32,11 +34,12 @@ use slc_scene::vpl::VplSettings;
 use slc_tests::engine::{self, upload};
 use slc_tests::gpu;
 use slc_wgpu::passes::{
-    Culling, DirectInputs, DirectPass, DirectPassDesc, DirectSettings, DirectWalk, GBuffer,
-    IndirectInputs, IndirectPass, IndirectPassDesc, IndirectSettings, Shadows, Surface,
-    SurfaceDesc, TemporalInputs, TemporalPass, TemporalPassDesc, VplInput, VplSourceDesc,
+    Culling, DirectInputs, DirectPass, DirectPassDesc, DirectReuse, DirectSelection,
+    DirectSettings, DirectWalk, GBuffer, IndirectInputs, IndirectPass, IndirectPassDesc,
+    IndirectSettings, Shadows, Surface, SurfaceDesc, TemporalInputs, TemporalPass,
+    TemporalPassDesc, VplInput, VplSourceDesc,
 };
-use slc_wgpu::{GpuContext, GpuError, LightSet, Occluders, RangeParams};
+use slc_wgpu::{GpuContext, GpuError, LightSet, LightTypes, Occluders, RangeParams};
 use std::sync::Arc;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
@@ -454,7 +457,12 @@ fn shadowed_direct_pass_fits_webgpu_default_limits() {
     let mean = |pass: &mut DirectPass| {
         let mut enc = device.create_command_encoder(&Default::default());
         let settings = DirectSettings { culling: Culling::None, seed: 1, frame: 0 };
-        pass.record(&mut enc, &DirectInputs::new(gbuffer, &out_view), &settings).unwrap();
+        // The camera's view-projection: the reuse reprojects with it.
+        let inputs = DirectInputs {
+            view_projection: Some(scene.camera.view_projection(16, 16, 0.01, 100.0)),
+            ..DirectInputs::new(gbuffer, &out_view)
+        };
+        pass.record(&mut enc, &inputs, &settings).unwrap();
         let img = engine::submit_and_read(&gpu, enc, &out);
         img.iter().map(|p| (p[0] + p[1] + p[2]) as f64).sum::<f64>()
     };
@@ -463,6 +471,35 @@ fn shadowed_direct_pass_fits_webgpu_default_limits() {
     pass.set_shadows(Some(Shadows::new(&occluders))).unwrap();
     let shadowed = mean(&mut pass);
     assert!(shadowed < 0.95 * open, "shadows: {shadowed} against {open} unshadowed");
+    // Resampled picks reused across frames, with visibility reuse: the
+    // previous lights and the reservoirs' two halves bind two more storage
+    // buffers, 8 in all for point lights (irradiance, no IES table)...
+    let reused = DirectPassDesc {
+        selection: DirectSelection::Resampled { k: 4 },
+        reuse: Some(DirectReuse { visibility: true, ..DirectReuse::default() }),
+        light_types: LightTypes { point: true, ..LightTypes::default() },
+        ..desc
+    };
+    let mut pass = DirectPass::new(&gpu, &point_lights(32), &reused).unwrap();
+    pass.set_shadows(Some(Shadows::new(&occluders))).unwrap();
+    let shadowed_reused = mean(&mut pass);
+    assert!(
+        shadowed_reused < 0.95 * open,
+        "reused shadows: {shadowed_reused} against {open} unshadowed"
+    );
+    // ...and with the IES table of every light type one more: its shadows
+    // are a typed error that changes nothing.
+    let every_type =
+        DirectPassDesc { light_types: DirectPassDesc::new(16, 16).light_types, ..reused };
+    let mut pass = DirectPass::new(&gpu, &point_lights(32), &every_type).unwrap();
+    match pass.set_shadows(Some(Shadows::new(&occluders))) {
+        Err(GpuError::Limit { name, need: 9, have: 8 }) => {
+            assert!(name.contains("max_storage_buffers_per_shader_stage"), "{name}")
+        }
+        Err(e) => panic!("another error: {e}"),
+        Ok(_) => panic!("every light type's reused pass shadowed within 8 storage buffers"),
+    }
+    assert!(pass.shadow_rays().is_none(), "the refused shadows were kept");
     gpu.take_errors().unwrap();
     assert_eq!(errors.load(Ordering::SeqCst), 0, "validation errors");
 }

@@ -171,12 +171,23 @@ struct ReusePixel {
     slots: array<ReuseSlot, K>,
 }
 
+/// Where pixel `i`'s reservoirs of the previous frame are in
+/// `reuse_pixels` (the half this frame does not write).
+fn previous_index(i: u32) -> u32 {
+    return (1u - reuse.parity) * view.width * view.height + i;
+}
+
+/// Where this frame writes pixel `i`'s reservoirs.
+fn next_index(i: u32) -> u32 {
+    return reuse.parity * view.width * view.height + i;
+}
+
 /// The previous-frame pixels one pixel reuses: the reprojected one and
 /// its neighbours.
 const DOMAINS: u32 = {{ reuse_domains }}u;
 
 /// A previous-frame pixel whose reservoirs are reused: where in
-/// `reuse_prev`, its surface and material, its confidence.
+/// `reuse_pixels`, its surface and material, its confidence.
 struct Domain {
     pixel: u32,
     x: vec3f,
@@ -255,7 +266,7 @@ fn reuse_domains(x: vec3f, n: vec3f, d: f32, h: u32, doms: ptr<function, array<D
         for (var k = 0u; k < nd; k++) {
             seen = seen || (*doms)[k].pixel == pixel;
         }
-        let s = reuse_prev[pixel].surface;
+        let s = reuse_pixels[previous_index(pixel)].surface;
         if seen || !(s.m > 0.0) || !history_matches(n, s.n, x, dot(s.n, s.x), d) {
             continue;
         }
@@ -282,7 +293,7 @@ fn gris_combine(q: u32, cur: ReuseSlot, cur_ris: bool, cur_c: f32, k0: u32, k1: 
         // Input k0 is this pixel's pick, input j > k0 domain j − 1's history.
         var s = cur;
         if j > k0 {
-            s = reuse_prev[(*doms)[j - 1u].pixel].slots[q];
+            s = reuse_pixels[previous_index((*doms)[j - 1u].pixel)].slots[q];
         }
         if !(s.w > 0.0) || s.light >= arrayLength(&lights) {
             continue;
@@ -473,7 +484,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u, @builtin(local_invocation_ind
             textureStore(specular_tex, texel, vec4f(0.0));
 {% endif %}
 {% if reuse %}
-            reuse_next[gid.y * view.width + gid.x].surface.m = 0.0;
+            reuse_pixels[next_index(gid.y * view.width + gid.x)].surface.m = 0.0;
 {% endif %}
         }
         return;
@@ -607,9 +618,9 @@ fn main(@builtin(global_invocation_id) gid: vec3u, @builtin(local_invocation_ind
         // Visibility reuse comes without neighbours: the kept pick is the
         // shaded one.
         let keep = reuse.visibility == 0u || visible[q];
-        reuse_next[pixel].slots[q] = ReuseSlot(kept[q].light, kept[q].u, select(0.0, kept[q].w, keep));
+        reuse_pixels[next_index(pixel)].slots[q] = ReuseSlot(kept[q].light, kept[q].u, select(0.0, kept[q].w, keep));
     }
-    reuse_next[pixel].surface = reuse_surface(x, n, m, min(confidence, reuse.max_confidence));
+    reuse_pixels[next_index(pixel)].surface = reuse_surface(x, n, m, min(confidence, reuse.max_confidence));
 {% else %}
     // A light is one candidate with one sampled point: the slots holding
     // it hold the same pick, shaded once with their weights.

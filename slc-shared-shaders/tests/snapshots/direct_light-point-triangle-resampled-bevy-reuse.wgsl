@@ -46,7 +46,7 @@ struct ReuseParams {
     has_history: u32,
     radius: f32,
     visibility: u32,
-    pad0_: u32,
+    parity: u32,
 }
 
 struct ReuseSurface {
@@ -249,9 +249,7 @@ var<uniform> reuse: ReuseParams;
 @group(1) @binding(8) 
 var<storage> lights_prev: array<GpuLight>;
 @group(1) @binding(9) 
-var<storage> reuse_prev: array<ReusePixel>;
-@group(1) @binding(10) 
-var<storage, read_write> reuse_next: array<ReusePixel>;
+var<storage, read_write> reuse_pixels: array<ReusePixel>;
 var<workgroup> wg_lo: array<vec3<f32>, 64>;
 var<workgroup> wg_hi: array<vec3<f32>, 64>;
 var<workgroup> wg_box: WorkgroupBox;
@@ -1457,6 +1455,20 @@ fn output_of(s_9: Shaded) -> vec3<f32> {
     return (s_9.diffuse + s_9.specular);
 }
 
+fn previous_index(i_4: u32) -> u32 {
+    let _e4 = reuse.parity;
+    let _e8 = view.width;
+    let _e12 = view.height;
+    return ((((1u - _e4) * _e8) * _e12) + i_4);
+}
+
+fn next_index(i_5: u32) -> u32 {
+    let _e3 = reuse.parity;
+    let _e6 = view.width;
+    let _e10 = view.height;
+    return (((_e3 * _e6) * _e10) + i_5);
+}
+
 fn reuse_target(q_5: u32, l_4: GpuLight, cells: u32, x_11: vec3<f32>, n_10: vec3<f32>, m_3: Material) -> f32 {
     let _e9 = grid_coordinate(cells);
     let _e12 = grid_coordinate((cells << 16u));
@@ -1599,40 +1611,41 @@ fn reuse_domains(x_14: vec3<f32>, n_13: vec3<f32>, d_6: f32, h_2: u32, doms_1: p
                     k_5 = (_e127 + 1u);
                 }
             }
-            let s_13 = reuse_prev[pixel].surface;
-            let _e133 = seen_1;
-            if !(_e133) {
+            let _e130 = previous_index(pixel);
+            let s_13 = reuse_pixels[_e130].surface;
+            let _e134 = seen_1;
+            if !(_e134) {
                 local_43 = !((s_13.m > 0f));
             } else {
                 local_43 = true;
             }
-            let _e142 = local_43;
-            if !(_e142) {
-                let _e150 = history_matches(n_13, s_13.n, x_14, dot(s_13.n, s_13.x), d_6);
-                local_44 = !(_e150);
+            let _e143 = local_43;
+            if !(_e143) {
+                let _e151 = history_matches(n_13, s_13.n, x_14, dot(s_13.n, s_13.x), d_6);
+                local_44 = !(_e151);
             } else {
                 local_44 = true;
             }
-            let _e153 = local_44;
-            if _e153 {
+            let _e154 = local_44;
+            if _e154 {
                 continue;
             }
-            let _e154 = nd;
-            let _e160 = reuse.prev_eye;
-            let _e161 = reuse_material(s_13, _e160);
-            let _e165 = reuse.max_confidence;
-            let _e167 = j_5;
-            (*doms_1)[_e154] = Domain(pixel, s_13.x, s_13.n, _e161, min(s_13.m, _e165), (_e167 == 0u));
-            let _e171 = nd;
-            nd = (_e171 + 1u);
+            let _e155 = nd;
+            let _e161 = reuse.prev_eye;
+            let _e162 = reuse_material(s_13, _e161);
+            let _e166 = reuse.max_confidence;
+            let _e168 = j_5;
+            (*doms_1)[_e155] = Domain(pixel, s_13.x, s_13.n, _e162, min(s_13.m, _e166), (_e168 == 0u));
+            let _e172 = nd;
+            nd = (_e172 + 1u);
         }
         continuing {
-            let _e175 = j_5;
-            j_5 = (_e175 + 1u);
+            let _e176 = j_5;
+            j_5 = (_e176 + 1u);
         }
     }
-    let _e177 = nd;
-    return _e177;
+    let _e178 = nd;
+    return _e178;
 }
 
 fn gris_combine(q_6: u32, cur: ReuseSlot, cur_ris: bool, cur_c: f32, k0_: u32, k1_: u32, x_15: vec3<f32>, n_14: vec3<f32>, m_6: Material, doms_2: ptr<function, array<Domain, 3>>, hs_1: ptr<function, u32>) -> ReuseSlot {
@@ -1662,113 +1675,114 @@ fn gris_combine(q_6: u32, cur: ReuseSlot, cur_ris: bool, cur_c: f32, k0_: u32, k
             if (_e24 > k0_) {
                 let _e27 = j_6;
                 let _e32 = (*doms_2)[(_e27 - 1u)].pixel;
-                let _e36 = reuse_prev[_e32].slots[q_6];
-                s_11 = _e36;
+                let _e33 = previous_index(_e32);
+                let _e37 = reuse_pixels[_e33].slots[q_6];
+                s_11 = _e37;
             }
-            let _e38 = s_11.w;
-            if !(!((_e38 > 0f))) {
-                let _e46 = s_11.light;
-                local_45 = (_e46 >= arrayLength((&lights)));
+            let _e39 = s_11.w;
+            if !(!((_e39 > 0f))) {
+                let _e47 = s_11.light;
+                local_45 = (_e47 >= arrayLength((&lights)));
             } else {
                 local_45 = true;
             }
-            let _e51 = local_45;
-            if _e51 {
+            let _e52 = local_45;
+            if _e52 {
                 continue;
             }
-            let _e54 = s_11.light;
-            let _e56 = lights[_e54];
-            let _e58 = s_11.u;
-            let _e59 = reuse_target(q_6, _e56, _e58, x_15, n_14, m_6);
-            if !((_e59 > 0f)) {
+            let _e55 = s_11.light;
+            let _e57 = lights[_e55];
+            let _e59 = s_11.u;
+            let _e60 = reuse_target(q_6, _e57, _e59, x_15, n_14, m_6);
+            if !((_e60 > 0f)) {
                 continue;
             }
-            let _e64 = s_11.w;
-            w_in = _e64;
-            let _e66 = j_6;
-            if (_e66 == k0_) {
+            let _e65 = s_11.w;
+            w_in = _e65;
+            let _e67 = j_6;
+            if (_e67 == k0_) {
                 local_46 = cur_ris;
             } else {
                 local_46 = false;
             }
-            let _e71 = local_46;
-            if _e71 {
-                let _e73 = s_11.w;
-                w_in = (_e73 / _e59);
+            let _e72 = local_46;
+            if _e72 {
+                let _e74 = s_11.w;
+                w_in = (_e74 / _e60);
             }
-            own_1 = (cur_c * _e59);
-            let _e77 = own_1;
-            all_1 = _e77;
+            own_1 = (cur_c * _e60);
+            let _e78 = own_1;
+            all_1 = _e78;
             k_6 = k0_;
             loop {
-                let _e80 = k_6;
-                if (_e80 < k1_) {
+                let _e81 = k_6;
+                if (_e81 < k1_) {
                 } else {
                     break;
                 }
                 {
-                    let _e82 = k_6;
-                    let _e85 = (*doms_2)[_e82].c;
-                    let _e88 = s_11.light;
-                    let _e90 = lights_prev[_e88];
-                    let _e92 = s_11.u;
-                    let _e93 = k_6;
-                    let _e96 = (*doms_2)[_e93].x;
-                    let _e97 = k_6;
-                    let _e100 = (*doms_2)[_e97].n;
-                    let _e101 = k_6;
-                    let _e104 = (*doms_2)[_e101].m;
-                    let _e105 = reuse_target(q_6, _e90, _e92, _e96, _e100, _e104);
-                    let t_9 = (_e85 * _e105);
-                    let _e107 = all_1;
-                    all_1 = (_e107 + t_9);
-                    let _e109 = k_6;
-                    let _e112 = j_6;
-                    if ((_e109 + 1u) == _e112) {
+                    let _e83 = k_6;
+                    let _e86 = (*doms_2)[_e83].c;
+                    let _e89 = s_11.light;
+                    let _e91 = lights_prev[_e89];
+                    let _e93 = s_11.u;
+                    let _e94 = k_6;
+                    let _e97 = (*doms_2)[_e94].x;
+                    let _e98 = k_6;
+                    let _e101 = (*doms_2)[_e98].n;
+                    let _e102 = k_6;
+                    let _e105 = (*doms_2)[_e102].m;
+                    let _e106 = reuse_target(q_6, _e91, _e93, _e97, _e101, _e105);
+                    let t_9 = (_e86 * _e106);
+                    let _e108 = all_1;
+                    all_1 = (_e108 + t_9);
+                    let _e110 = k_6;
+                    let _e113 = j_6;
+                    if ((_e110 + 1u) == _e113) {
                         own_1 = t_9;
                     }
                 }
                 continuing {
-                    let _e115 = k_6;
-                    k_6 = (_e115 + 1u);
+                    let _e116 = k_6;
+                    k_6 = (_e116 + 1u);
                 }
             }
-            let _e117 = own_1;
-            let _e118 = all_1;
-            let _e119 = w_in;
-            let _e120 = gris_weight(_e117, _e118, _e59, _e119);
-            let _e121 = w_sum_3;
-            w_sum_3 = (_e121 + _e120);
-            let _e123 = (*hs_1);
-            let _e124 = pcg_hash(_e123);
-            (*hs_1) = _e124;
-            if (_e120 > 0f) {
-                let _e129 = w_sum_3;
-                let _e130 = (*hs_1);
-                let _e131 = xi_from_bits(_e130);
-                let _e132 = weighted_replace(_e120, _e129, _e131);
-                local_47 = _e132;
+            let _e118 = own_1;
+            let _e119 = all_1;
+            let _e120 = w_in;
+            let _e121 = gris_weight(_e118, _e119, _e60, _e120);
+            let _e122 = w_sum_3;
+            w_sum_3 = (_e122 + _e121);
+            let _e124 = (*hs_1);
+            let _e125 = pcg_hash(_e124);
+            (*hs_1) = _e125;
+            if (_e121 > 0f) {
+                let _e130 = w_sum_3;
+                let _e131 = (*hs_1);
+                let _e132 = xi_from_bits(_e131);
+                let _e133 = weighted_replace(_e121, _e130, _e132);
+                local_47 = _e133;
             } else {
                 local_47 = false;
             }
-            let _e134 = local_47;
-            if _e134 {
-                let _e135 = s_11;
-                out = _e135;
-                out_target = _e59;
+            let _e135 = local_47;
+            if _e135 {
+                let _e136 = s_11;
+                out = _e136;
+                out_target = _e60;
             }
         }
         continuing {
-            let _e137 = j_6;
-            j_6 = (_e137 + 1u);
+            let _e138 = j_6;
+            j_6 = (_e138 + 1u);
         }
     }
-    let _e140 = w_sum_3;
-    let _e141 = out_target;
-    let _e142 = gris_contribution_weight(_e140, _e141);
-    out.w = _e142;
-    let _e143 = out;
-    return _e143;
+    let _e141 = w_sum_3;
+    let _e142 = out_target;
+    let _e143 = gris_contribution_weight(_e141, _e142);
+    out.w = _e143;
+    let _e144 = out;
+    return _e144;
 }
 
 @compute @workgroup_size(8, 8, 1) 
@@ -2021,355 +2035,358 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
         if inside {
             textureStore(out_tex, texel_1, vec4(0f));
             let _e270 = view.width;
-            reuse_next[((gid.y * _e270) + gid.x)].surface.m = 0f;
+            let _e274 = next_index(((gid.y * _e270) + gid.x));
+            reuse_pixels[_e274].surface.m = 0f;
         }
         return;
     }
-    let _e281 = view.width;
-    let pixel_1 = ((gid.y * _e281) + gid.x);
-    let _e286 = n;
-    let _e289 = view.eye;
-    let _e293 = reuse_stream(_e137, 0u);
-    let _e294 = reuse_domains(x_18, _e286, length((_e289 - x_18)), _e293, (&doms));
-    if (_e294 > 0u) {
-        let _e301 = doms[0].temporal;
-        local_6 = _e301;
+    let _e282 = view.width;
+    let pixel_1 = ((gid.y * _e282) + gid.x);
+    let _e287 = n;
+    let _e290 = view.eye;
+    let _e294 = reuse_stream(_e137, 0u);
+    let _e295 = reuse_domains(x_18, _e287, length((_e290 - x_18)), _e294, (&doms));
+    if (_e295 > 0u) {
+        let _e302 = doms[0].temporal;
+        local_6 = _e302;
     } else {
         local_6 = false;
     }
     let own_history = local_6;
     let first_1 = select(0u, 1u, own_history);
-    let _e309 = doms[0].c;
-    let confidence = (1f + select(0f, _e309, own_history));
-    let _e315 = reuse_stream(_e137, 1u);
-    hs = _e315;
+    let _e310 = doms[0].c;
+    let confidence = (1f + select(0f, _e310, own_history));
+    let _e316 = reuse_stream(_e137, 1u);
+    hs = _e316;
     loop {
-        let _e321 = q_1;
-        if (_e321 < K) {
+        let _e322 = q_1;
+        if (_e322 < K) {
         } else {
             break;
         }
         {
-            let _e324 = q_1;
-            let _e326 = q_1;
-            let _e328 = slot_light[_e326];
-            let _e329 = q_1;
-            let _e331 = slot_cells[_e329];
-            let _e332 = sample_key(_e328, _e331);
-            fresh_keys[_e324] = _e332;
-            let _e333 = q_1;
-            let _e337 = reuse.visibility;
-            if (_e337 == 1u) {
-                let _e342 = q_1;
-                let _e344 = slot_p[_e342];
-                local_7 = (_e344 > 0f);
+            let _e325 = q_1;
+            let _e327 = q_1;
+            let _e329 = slot_light[_e327];
+            let _e330 = q_1;
+            let _e332 = slot_cells[_e330];
+            let _e333 = sample_key(_e329, _e332);
+            fresh_keys[_e325] = _e333;
+            let _e334 = q_1;
+            let _e338 = reuse.visibility;
+            if (_e338 == 1u) {
+                let _e343 = q_1;
+                let _e345 = slot_p[_e343];
+                local_7 = (_e345 > 0f);
             } else {
                 local_7 = false;
             }
-            let _e348 = local_7;
-            fresh_held[_e333] = _e348;
+            let _e349 = local_7;
+            fresh_held[_e334] = _e349;
         }
         continuing {
-            let _e350 = q_1;
-            q_1 = (_e350 + 1u);
+            let _e351 = q_1;
+            q_1 = (_e351 + 1u);
         }
     }
-    let _e352 = fresh_keys;
-    let _e353 = fresh_held;
-    let _e354 = first_holders(_e352, _e353);
+    let _e353 = fresh_keys;
+    let _e354 = fresh_held;
+    let _e355 = first_holders(_e353, _e354);
     loop {
-        let _e358 = q_2;
-        if (_e358 < K) {
+        let _e359 = q_2;
+        if (_e359 < K) {
         } else {
             break;
         }
         {
-            let _e361 = q_2;
-            let _e363 = q_2;
-            if (_e354[_e361] == _e363) {
-                let _e365 = q_2;
-                let _e367 = q_2;
-                let _e369 = slot_light[_e367];
-                let _e370 = q_2;
-                let _e372 = slot_cells[_e370];
-                let _e373 = n;
-                let _e374 = m;
-                let _e376 = shade_sample(_e369, _e372, x_18, _e373, _e374, eps_4, true);
-                let _e377 = output_of(_e376);
-                let _e378 = resample_target(_e377);
-                fresh_visible[_e365] = (_e378 > 0f);
+            let _e362 = q_2;
+            let _e364 = q_2;
+            if (_e355[_e362] == _e364) {
+                let _e366 = q_2;
+                let _e368 = q_2;
+                let _e370 = slot_light[_e368];
+                let _e371 = q_2;
+                let _e373 = slot_cells[_e371];
+                let _e374 = n;
+                let _e375 = m;
+                let _e377 = shade_sample(_e370, _e373, x_18, _e374, _e375, eps_4, true);
+                let _e378 = output_of(_e377);
+                let _e379 = resample_target(_e378);
+                fresh_visible[_e366] = (_e379 > 0f);
             } else {
-                let _e381 = q_2;
-                if (_e354[_e381] < K) {
-                    let _e385 = q_2;
-                    let _e387 = q_2;
-                    let _e390 = fresh_visible[_e354[_e387]];
-                    fresh_visible[_e385] = _e390;
+                let _e382 = q_2;
+                if (_e355[_e382] < K) {
+                    let _e386 = q_2;
+                    let _e388 = q_2;
+                    let _e391 = fresh_visible[_e355[_e388]];
+                    fresh_visible[_e386] = _e391;
                 }
             }
         }
         continuing {
-            let _e392 = q_2;
-            q_2 = (_e392 + 1u);
+            let _e393 = q_2;
+            q_2 = (_e393 + 1u);
         }
     }
     loop {
-        let _e398 = q_3;
-        if (_e398 < K) {
+        let _e399 = q_3;
+        if (_e399 < K) {
         } else {
             break;
         }
         {
-            let _e401 = q_3;
-            let _e403 = slot_p[_e401];
-            if (_e403 > 0f) {
-                let _e410 = reuse.visibility;
-                if !((_e410 == 0u)) {
-                    let _e416 = q_3;
-                    let _e418 = fresh_visible[_e416];
-                    local_9 = _e418;
+            let _e402 = q_3;
+            let _e404 = slot_p[_e402];
+            if (_e404 > 0f) {
+                let _e411 = reuse.visibility;
+                if !((_e411 == 0u)) {
+                    let _e417 = q_3;
+                    let _e419 = fresh_visible[_e417];
+                    local_9 = _e419;
                 } else {
                     local_9 = true;
                 }
-                let _e420 = local_9;
-                local_8 = _e420;
+                let _e421 = local_9;
+                local_8 = _e421;
             } else {
                 local_8 = false;
             }
             let fresh = local_8;
-            let _e423 = q_3;
-            let _e425 = q_3;
+            let _e424 = q_3;
             let _e426 = q_3;
-            let _e428 = slot_light[_e426];
-            let _e429 = q_3;
-            let _e431 = slot_cells[_e429];
-            let _e432 = total;
-            let _e433 = q_3;
-            let _e435 = slot_target(_e432, _e433, K);
-            let _e442 = n;
-            let _e443 = m;
-            let _e444 = gris_combine(_e425, ReuseSlot(_e428, _e431, select(0f, _e435, fresh)), true, 1f, 0u, first_1, x_18, _e442, _e443, (&doms), (&hs));
-            kept[_e423] = _e444;
-            let _e445 = q_3;
-            let _e447 = q_3;
-            let _e449 = kept[_e447];
-            fin[_e445] = _e449;
-            if (_e294 > first_1) {
-                let _e451 = q_3;
-                let _e453 = q_3;
+            let _e427 = q_3;
+            let _e429 = slot_light[_e427];
+            let _e430 = q_3;
+            let _e432 = slot_cells[_e430];
+            let _e433 = total;
+            let _e434 = q_3;
+            let _e436 = slot_target(_e433, _e434, K);
+            let _e443 = n;
+            let _e444 = m;
+            let _e445 = gris_combine(_e426, ReuseSlot(_e429, _e432, select(0f, _e436, fresh)), true, 1f, 0u, first_1, x_18, _e443, _e444, (&doms), (&hs));
+            kept[_e424] = _e445;
+            let _e446 = q_3;
+            let _e448 = q_3;
+            let _e450 = kept[_e448];
+            fin[_e446] = _e450;
+            if (_e295 > first_1) {
+                let _e452 = q_3;
                 let _e454 = q_3;
-                let _e456 = kept[_e454];
-                let _e458 = n;
-                let _e459 = m;
-                let _e460 = gris_combine(_e453, _e456, false, confidence, first_1, _e294, x_18, _e458, _e459, (&doms), (&hs));
-                fin[_e451] = _e460;
+                let _e455 = q_3;
+                let _e457 = kept[_e455];
+                let _e459 = n;
+                let _e460 = m;
+                let _e461 = gris_combine(_e454, _e457, false, confidence, first_1, _e295, x_18, _e459, _e460, (&doms), (&hs));
+                fin[_e452] = _e461;
             }
         }
         continuing {
-            let _e462 = q_3;
-            q_3 = (_e462 + 1u);
+            let _e463 = q_3;
+            q_3 = (_e463 + 1u);
         }
     }
     loop {
-        let _e468 = k;
-        if (_e468 < K) {
+        let _e469 = k;
+        if (_e469 < K) {
         } else {
             break;
         }
         {
-            let _e471 = k;
-            let _e473 = k;
-            let _e476 = fin[_e473].light;
-            let _e477 = k;
-            let _e480 = fin[_e477].u;
-            let _e481 = sample_key(_e476, _e480);
-            keys[_e471] = _e481;
-            let _e482 = k;
-            let _e484 = k;
-            let _e487 = fin[_e484].w;
-            held[_e482] = (_e487 > 0f);
+            let _e472 = k;
+            let _e474 = k;
+            let _e477 = fin[_e474].light;
+            let _e478 = k;
+            let _e481 = fin[_e478].u;
+            let _e482 = sample_key(_e477, _e481);
+            keys[_e472] = _e482;
+            let _e483 = k;
+            let _e485 = k;
+            let _e488 = fin[_e485].w;
+            held[_e483] = (_e488 > 0f);
         }
         continuing {
-            let _e491 = k;
-            k = (_e491 + 1u);
+            let _e492 = k;
+            k = (_e492 + 1u);
         }
     }
-    let _e493 = keys;
-    let _e494 = held;
-    let _e495 = first_holders(_e493, _e494);
+    let _e494 = keys;
+    let _e495 = held;
+    let _e496 = first_holders(_e494, _e495);
     loop {
-        let _e499 = k_1;
-        if (_e499 < K) {
+        let _e500 = k_1;
+        if (_e500 < K) {
         } else {
             break;
         }
         {
-            let _e502 = k_1;
-            let _e504 = k_1;
-            if (_e495[_e502] != _e504) {
+            let _e503 = k_1;
+            let _e505 = k_1;
+            if (_e496[_e503] != _e505) {
                 continue;
             }
             w = vec3(0f);
-            let _e509 = k_1;
-            j_1 = _e509;
+            let _e510 = k_1;
+            j_1 = _e510;
             loop {
-                let _e511 = j_1;
-                if (_e511 < K) {
+                let _e512 = j_1;
+                if (_e512 < K) {
                 } else {
                     break;
                 }
                 {
-                    let _e514 = j_1;
-                    let _e516 = k_1;
-                    if (_e495[_e514] == _e516) {
-                        let _e518 = w;
-                        let _e519 = j_1;
-                        let _e522 = fin[_e519].w;
-                        let _e523 = j_1;
-                        let _e525 = slot_share(_e523, K);
-                        w = (_e518 + (_e522 * _e525));
+                    let _e515 = j_1;
+                    let _e517 = k_1;
+                    if (_e496[_e515] == _e517) {
+                        let _e519 = w;
+                        let _e520 = j_1;
+                        let _e523 = fin[_e520].w;
+                        let _e524 = j_1;
+                        let _e526 = slot_share(_e524, K);
+                        w = (_e519 + (_e523 * _e526));
                     }
                 }
                 continuing {
-                    let _e529 = j_1;
-                    j_1 = (_e529 + 1u);
+                    let _e530 = j_1;
+                    j_1 = (_e530 + 1u);
                 }
             }
             known = false;
             seen = false;
             j_2 = 0u;
             loop {
-                let _e537 = j_2;
-                if (_e537 < K) {
-                    let _e542 = known;
-                    local_10 = !(_e542);
+                let _e538 = j_2;
+                if (_e538 < K) {
+                    let _e543 = known;
+                    local_10 = !(_e543);
                 } else {
                     local_10 = false;
                 }
-                let _e545 = local_10;
-                if _e545 {
+                let _e546 = local_10;
+                if _e546 {
                 } else {
                     break;
                 }
                 {
-                    let _e546 = j_2;
-                    let _e548 = fresh_held[_e546];
-                    if _e548 {
-                        let _e551 = j_2;
-                        let _e553 = fresh_keys[_e551];
-                        let _e554 = k_1;
-                        let _e556 = keys[_e554];
-                        local_11 = all((_e553 == _e556));
+                    let _e547 = j_2;
+                    let _e549 = fresh_held[_e547];
+                    if _e549 {
+                        let _e552 = j_2;
+                        let _e554 = fresh_keys[_e552];
+                        let _e555 = k_1;
+                        let _e557 = keys[_e555];
+                        local_11 = all((_e554 == _e557));
                     } else {
                         local_11 = false;
                     }
-                    let _e560 = local_11;
-                    if _e560 {
+                    let _e561 = local_11;
+                    if _e561 {
                         known = true;
-                        let _e562 = j_2;
-                        let _e564 = fresh_visible[_e562];
-                        seen = _e564;
+                        let _e563 = j_2;
+                        let _e565 = fresh_visible[_e563];
+                        seen = _e565;
                     }
                 }
                 continuing {
-                    let _e566 = j_2;
-                    j_2 = (_e566 + 1u);
+                    let _e567 = j_2;
+                    j_2 = (_e567 + 1u);
                 }
             }
-            let _e568 = k_1;
-            let _e571 = fin[_e568].light;
-            let _e572 = k_1;
-            let _e575 = fin[_e572].u;
-            let _e576 = n;
-            let _e577 = m;
-            let _e578 = known;
-            let _e580 = shade_sample(_e571, _e575, x_18, _e576, _e577, eps_4, !(_e578));
-            shaded = _e580;
-            let _e582 = known;
-            if _e582 {
-                let _e585 = seen;
-                local_12 = !(_e585);
+            let _e569 = k_1;
+            let _e572 = fin[_e569].light;
+            let _e573 = k_1;
+            let _e576 = fin[_e573].u;
+            let _e577 = n;
+            let _e578 = m;
+            let _e579 = known;
+            let _e581 = shade_sample(_e572, _e576, x_18, _e577, _e578, eps_4, !(_e579));
+            shaded = _e581;
+            let _e583 = known;
+            if _e583 {
+                let _e586 = seen;
+                local_12 = !(_e586);
             } else {
                 local_12 = false;
             }
-            let _e588 = local_12;
-            if _e588 {
+            let _e589 = local_12;
+            if _e589 {
                 shaded = Shaded(vec3(0f), vec3(0f), vec3(0f));
             }
-            let _e596 = t;
-            let _e597 = shaded;
-            let _e598 = w;
-            let _e599 = scaled(_e597, _e598);
-            let _e600 = add(_e596, _e599);
-            t = _e600;
-            let _e601 = k_1;
-            j_3 = _e601;
+            let _e597 = t;
+            let _e598 = shaded;
+            let _e599 = w;
+            let _e600 = scaled(_e598, _e599);
+            let _e601 = add(_e597, _e600);
+            t = _e601;
+            let _e602 = k_1;
+            j_3 = _e602;
             loop {
-                let _e603 = j_3;
-                if (_e603 < K) {
+                let _e604 = j_3;
+                if (_e604 < K) {
                 } else {
                     break;
                 }
                 {
-                    let _e606 = j_3;
-                    let _e608 = k_1;
-                    if (_e495[_e606] == _e608) {
-                        let _e610 = j_3;
-                        let _e612 = shaded;
-                        let _e613 = output_of(_e612);
-                        let _e614 = resample_target(_e613);
-                        visible[_e610] = (_e614 > 0f);
+                    let _e607 = j_3;
+                    let _e609 = k_1;
+                    if (_e496[_e607] == _e609) {
+                        let _e611 = j_3;
+                        let _e613 = shaded;
+                        let _e614 = output_of(_e613);
+                        let _e615 = resample_target(_e614);
+                        visible[_e611] = (_e615 > 0f);
                     }
                 }
                 continuing {
-                    let _e618 = j_3;
-                    j_3 = (_e618 + 1u);
+                    let _e619 = j_3;
+                    j_3 = (_e619 + 1u);
                 }
             }
         }
         continuing {
-            let _e621 = k_1;
-            k_1 = (_e621 + 1u);
+            let _e622 = k_1;
+            k_1 = (_e622 + 1u);
         }
     }
     loop {
-        let _e625 = q_4;
-        if (_e625 < K) {
+        let _e626 = q_4;
+        if (_e626 < K) {
         } else {
             break;
         }
         {
-            let _e630 = reuse.visibility;
-            if !((_e630 == 0u)) {
-                let _e636 = q_4;
-                let _e638 = visible[_e636];
-                local_13 = _e638;
+            let _e631 = reuse.visibility;
+            if !((_e631 == 0u)) {
+                let _e637 = q_4;
+                let _e639 = visible[_e637];
+                local_13 = _e639;
             } else {
                 local_13 = true;
             }
             let keep = local_13;
-            let _e644 = q_4;
+            let _e643 = next_index(pixel_1);
             let _e646 = q_4;
-            let _e649 = kept[_e646].light;
-            let _e650 = q_4;
-            let _e653 = kept[_e650].u;
-            let _e654 = q_4;
-            let _e657 = kept[_e654].w;
-            reuse_next[pixel_1].slots[_e644] = ReuseSlot(_e649, _e653, select(0f, _e657, keep));
+            let _e648 = q_4;
+            let _e651 = kept[_e648].light;
+            let _e652 = q_4;
+            let _e655 = kept[_e652].u;
+            let _e656 = q_4;
+            let _e659 = kept[_e656].w;
+            reuse_pixels[_e643].slots[_e646] = ReuseSlot(_e651, _e655, select(0f, _e659, keep));
         }
         continuing {
-            let _e662 = q_4;
-            q_4 = (_e662 + 1u);
+            let _e664 = q_4;
+            q_4 = (_e664 + 1u);
         }
     }
-    let _e667 = n;
-    let _e668 = m;
-    let _e671 = reuse.max_confidence;
-    let _e673 = reuse_surface(x_18, _e667, _e668, min(confidence, _e671));
-    reuse_next[pixel_1].surface = _e673;
-    let _e676 = t.diffuse;
-    let _e678 = t.specular;
-    let _e680 = count;
-    textureStore(out_tex, texel_1, vec4<f32>((_e676 + _e678), f32(_e680)));
+    let _e667 = next_index(pixel_1);
+    let _e670 = n;
+    let _e671 = m;
+    let _e674 = reuse.max_confidence;
+    let _e676 = reuse_surface(x_18, _e670, _e671, min(confidence, _e674));
+    reuse_pixels[_e667].surface = _e676;
+    let _e679 = t.diffuse;
+    let _e681 = t.specular;
+    let _e683 = count;
+    textureStore(out_tex, texel_1, vec4<f32>((_e679 + _e681), f32(_e683)));
     return;
 }

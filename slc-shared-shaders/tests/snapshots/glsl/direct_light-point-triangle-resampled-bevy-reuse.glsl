@@ -47,7 +47,7 @@ struct ReuseParams {
     uint has_history;
     float radius;
     uint visibility;
-    uint pad0_;
+    uint parity;
 };
 struct ReuseSurface {
     vec3 x;
@@ -236,9 +236,7 @@ layout(std140) uniform ReuseParams_block_8Compute { ReuseParams _group_0_binding
 
 layout(std430) readonly buffer type_12_block_9Compute { GpuLight _group_1_binding_8_cs[]; };
 
-layout(std430) readonly buffer type_16_block_10Compute { ReusePixel _group_1_binding_9_cs[]; };
-
-layout(std430) buffer type_16_block_11Compute { ReusePixel _group_1_binding_10_cs[]; };
+layout(std430) buffer type_16_block_10Compute { ReusePixel _group_1_binding_9_cs[]; };
 
 shared vec3 wg_lo[64];
 
@@ -1465,6 +1463,20 @@ vec3 output_of(Shaded s_9) {
     return (s_9.diffuse + s_9.specular);
 }
 
+uint previous_index(uint i_4) {
+    uint _e4 = _group_0_binding_7_cs.parity;
+    uint _e8 = _group_0_binding_0_cs.width;
+    uint _e12 = _group_0_binding_0_cs.height;
+    return ((((1u - _e4) * _e8) * _e12) + i_4);
+}
+
+uint next_index(uint i_5) {
+    uint _e3 = _group_0_binding_7_cs.parity;
+    uint _e6 = _group_0_binding_0_cs.width;
+    uint _e10 = _group_0_binding_0_cs.height;
+    return (((_e3 * _e6) * _e10) + i_5);
+}
+
 float reuse_target(uint q_5, GpuLight l_4, uint cells, vec3 x_11, vec3 n_10, Material m_3) {
     float _e9 = grid_coordinate(cells);
     float _e12 = grid_coordinate((cells << 16u));
@@ -1531,8 +1543,8 @@ uint reuse_domains(vec3 x_14, vec3 n_13, float d_6, uint h_2, inout Domain doms_
     bool loop_init_8 = true;
     while(true) {
         if (!loop_init_8) {
-            uint _e175 = j_5;
-            j_5 = (_e175 + 1u);
+            uint _e176 = j_5;
+            j_5 = (_e176 + 1u);
         }
         loop_init_8 = false;
         uint _e41 = j_5;
@@ -1614,36 +1626,37 @@ uint reuse_domains(vec3 x_14, vec3 n_13, float d_6, uint h_2, inout Domain doms_
                     seen_1 = _e125;
                 }
             }
-            ReuseSurface s_13 = _group_1_binding_9_cs[pixel].surface;
-            bool _e133 = seen_1;
-            if (!(_e133)) {
+            uint _e130 = previous_index(pixel);
+            ReuseSurface s_13 = _group_1_binding_9_cs[_e130].surface;
+            bool _e134 = seen_1;
+            if (!(_e134)) {
                 local_43 = !((s_13.m > 0.0));
             } else {
                 local_43 = true;
             }
-            bool _e142 = local_43;
-            if (!(_e142)) {
-                bool _e150 = history_matches(n_13, s_13.n, x_14, dot(s_13.n, s_13.x), d_6);
-                local_44 = !(_e150);
+            bool _e143 = local_43;
+            if (!(_e143)) {
+                bool _e151 = history_matches(n_13, s_13.n, x_14, dot(s_13.n, s_13.x), d_6);
+                local_44 = !(_e151);
             } else {
                 local_44 = true;
             }
-            bool _e153 = local_44;
-            if (_e153) {
+            bool _e154 = local_44;
+            if (_e154) {
                 continue;
             }
-            uint _e154 = nd;
-            vec3 _e160 = _group_0_binding_7_cs.prev_eye;
-            Material _e161 = reuse_material(s_13, _e160);
-            float _e165 = _group_0_binding_7_cs.max_confidence;
-            uint _e167 = j_5;
-            doms_1[_e154] = Domain(pixel, s_13.x, s_13.n, _e161, min(s_13.m, _e165), (_e167 == 0u));
-            uint _e171 = nd;
-            nd = (_e171 + 1u);
+            uint _e155 = nd;
+            vec3 _e161 = _group_0_binding_7_cs.prev_eye;
+            Material _e162 = reuse_material(s_13, _e161);
+            float _e166 = _group_0_binding_7_cs.max_confidence;
+            uint _e168 = j_5;
+            doms_1[_e155] = Domain(pixel, s_13.x, s_13.n, _e162, min(s_13.m, _e166), (_e168 == 0u));
+            uint _e172 = nd;
+            nd = (_e172 + 1u);
         }
     }
-    uint _e177 = nd;
-    return _e177;
+    uint _e178 = nd;
+    return _e178;
 }
 
 ReuseSlot gris_combine(uint q_6, ReuseSlot cur, bool cur_ris, float cur_c, uint k0_, uint k1_, vec3 x_15, vec3 n_14, Material m_6, inout Domain doms_2[3], inout uint hs_1) {
@@ -1663,8 +1676,8 @@ ReuseSlot gris_combine(uint q_6, ReuseSlot cur, bool cur_ris, float cur_c, uint 
     bool loop_init_10 = true;
     while(true) {
         if (!loop_init_10) {
-            uint _e137 = j_6;
-            j_6 = (_e137 + 1u);
+            uint _e138 = j_6;
+            j_6 = (_e138 + 1u);
         }
         loop_init_10 = false;
         uint _e21 = j_6;
@@ -1678,111 +1691,112 @@ ReuseSlot gris_combine(uint q_6, ReuseSlot cur, bool cur_ris, float cur_c, uint 
             if ((_e24 > k0_)) {
                 uint _e27 = j_6;
                 uint _e32 = doms_2[(_e27 - 1u)].pixel;
-                ReuseSlot _e36 = _group_1_binding_9_cs[_e32].slots[q_6];
-                s_11 = _e36;
+                uint _e33 = previous_index(_e32);
+                ReuseSlot _e37 = _group_1_binding_9_cs[_e33].slots[q_6];
+                s_11 = _e37;
             }
-            float _e38 = s_11.w;
-            if (!(!((_e38 > 0.0)))) {
-                uint _e46 = s_11.light;
-                local_45 = (_e46 >= uint(_group_1_binding_1_cs.length()));
+            float _e39 = s_11.w;
+            if (!(!((_e39 > 0.0)))) {
+                uint _e47 = s_11.light;
+                local_45 = (_e47 >= uint(_group_1_binding_1_cs.length()));
             } else {
                 local_45 = true;
             }
-            bool _e51 = local_45;
-            if (_e51) {
+            bool _e52 = local_45;
+            if (_e52) {
                 continue;
             }
-            uint _e54 = s_11.light;
-            GpuLight _e56 = _group_1_binding_1_cs[_e54];
-            uint _e58 = s_11.u;
-            float _e59 = reuse_target(q_6, _e56, _e58, x_15, n_14, m_6);
-            if (!((_e59 > 0.0))) {
+            uint _e55 = s_11.light;
+            GpuLight _e57 = _group_1_binding_1_cs[_e55];
+            uint _e59 = s_11.u;
+            float _e60 = reuse_target(q_6, _e57, _e59, x_15, n_14, m_6);
+            if (!((_e60 > 0.0))) {
                 continue;
             }
-            float _e64 = s_11.w;
-            w_in = _e64;
-            uint _e66 = j_6;
-            if ((_e66 == k0_)) {
+            float _e65 = s_11.w;
+            w_in = _e65;
+            uint _e67 = j_6;
+            if ((_e67 == k0_)) {
                 local_46 = cur_ris;
             } else {
                 local_46 = false;
             }
-            bool _e71 = local_46;
-            if (_e71) {
-                float _e73 = s_11.w;
-                w_in = (_e73 / _e59);
+            bool _e72 = local_46;
+            if (_e72) {
+                float _e74 = s_11.w;
+                w_in = (_e74 / _e60);
             }
-            own_1 = (cur_c * _e59);
-            float _e77 = own_1;
-            all_1 = _e77;
+            own_1 = (cur_c * _e60);
+            float _e78 = own_1;
+            all_1 = _e78;
             k_6 = k0_;
             bool loop_init_11 = true;
             while(true) {
                 if (!loop_init_11) {
-                    uint _e115 = k_6;
-                    k_6 = (_e115 + 1u);
+                    uint _e116 = k_6;
+                    k_6 = (_e116 + 1u);
                 }
                 loop_init_11 = false;
-                uint _e80 = k_6;
-                if ((_e80 < k1_)) {
+                uint _e81 = k_6;
+                if ((_e81 < k1_)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e82 = k_6;
-                    float _e85 = doms_2[_e82].c;
-                    uint _e88 = s_11.light;
-                    GpuLight _e90 = _group_1_binding_8_cs[_e88];
-                    uint _e92 = s_11.u;
-                    uint _e93 = k_6;
-                    vec3 _e96 = doms_2[_e93].x;
-                    uint _e97 = k_6;
-                    vec3 _e100 = doms_2[_e97].n;
-                    uint _e101 = k_6;
-                    Material _e104 = doms_2[_e101].m;
-                    float _e105 = reuse_target(q_6, _e90, _e92, _e96, _e100, _e104);
-                    float t_9 = (_e85 * _e105);
-                    float _e107 = all_1;
-                    all_1 = (_e107 + t_9);
-                    uint _e109 = k_6;
-                    uint _e112 = j_6;
-                    if (((_e109 + 1u) == _e112)) {
+                    uint _e83 = k_6;
+                    float _e86 = doms_2[_e83].c;
+                    uint _e89 = s_11.light;
+                    GpuLight _e91 = _group_1_binding_8_cs[_e89];
+                    uint _e93 = s_11.u;
+                    uint _e94 = k_6;
+                    vec3 _e97 = doms_2[_e94].x;
+                    uint _e98 = k_6;
+                    vec3 _e101 = doms_2[_e98].n;
+                    uint _e102 = k_6;
+                    Material _e105 = doms_2[_e102].m;
+                    float _e106 = reuse_target(q_6, _e91, _e93, _e97, _e101, _e105);
+                    float t_9 = (_e86 * _e106);
+                    float _e108 = all_1;
+                    all_1 = (_e108 + t_9);
+                    uint _e110 = k_6;
+                    uint _e113 = j_6;
+                    if (((_e110 + 1u) == _e113)) {
                         own_1 = t_9;
                     }
                 }
             }
-            float _e117 = own_1;
-            float _e118 = all_1;
-            float _e119 = w_in;
-            float _e120 = gris_weight(_e117, _e118, _e59, _e119);
-            float _e121 = w_sum_3;
-            w_sum_3 = (_e121 + _e120);
-            uint _e123 = hs_1;
-            uint _e124 = pcg_hash(_e123);
-            hs_1 = _e124;
-            if ((_e120 > 0.0)) {
-                float _e129 = w_sum_3;
-                uint _e130 = hs_1;
-                float _e131 = xi_from_bits(_e130);
-                bool _e132 = weighted_replace(_e120, _e129, _e131);
-                local_47 = _e132;
+            float _e118 = own_1;
+            float _e119 = all_1;
+            float _e120 = w_in;
+            float _e121 = gris_weight(_e118, _e119, _e60, _e120);
+            float _e122 = w_sum_3;
+            w_sum_3 = (_e122 + _e121);
+            uint _e124 = hs_1;
+            uint _e125 = pcg_hash(_e124);
+            hs_1 = _e125;
+            if ((_e121 > 0.0)) {
+                float _e130 = w_sum_3;
+                uint _e131 = hs_1;
+                float _e132 = xi_from_bits(_e131);
+                bool _e133 = weighted_replace(_e121, _e130, _e132);
+                local_47 = _e133;
             } else {
                 local_47 = false;
             }
-            bool _e134 = local_47;
-            if (_e134) {
-                ReuseSlot _e135 = s_11;
-                out_ = _e135;
-                out_target = _e59;
+            bool _e135 = local_47;
+            if (_e135) {
+                ReuseSlot _e136 = s_11;
+                out_ = _e136;
+                out_target = _e60;
             }
         }
     }
-    float _e140 = w_sum_3;
-    float _e141 = out_target;
-    float _e142 = gris_contribution_weight(_e140, _e141);
-    out_.w = _e142;
-    ReuseSlot _e143 = out_;
-    return _e143;
+    float _e141 = w_sum_3;
+    float _e142 = out_target;
+    float _e143 = gris_contribution_weight(_e141, _e142);
+    out_.w = _e143;
+    ReuseSlot _e144 = out_;
+    return _e144;
 }
 
 void main() {
@@ -2053,98 +2067,99 @@ void main() {
         if (inside) {
             imageStore(_group_0_binding_3_cs, texel_1, vec4(0.0));
             uint _e270 = _group_0_binding_0_cs.width;
-            _group_1_binding_10_cs[((gid.y * _e270) + gid.x)].surface.m = 0.0;
+            uint _e274 = next_index(((gid.y * _e270) + gid.x));
+            _group_1_binding_9_cs[_e274].surface.m = 0.0;
         }
         return;
     }
-    uint _e281 = _group_0_binding_0_cs.width;
-    uint pixel_1 = ((gid.y * _e281) + gid.x);
-    vec3 _e286 = n;
-    vec3 _e289 = _group_0_binding_0_cs.eye;
-    uint _e293 = reuse_stream(_e137, 0u);
-    uint _e294 = reuse_domains(x_18, _e286, length((_e289 - x_18)), _e293, doms);
-    if ((_e294 > 0u)) {
-        bool _e301 = doms[0].temporal;
-        local_6 = _e301;
+    uint _e282 = _group_0_binding_0_cs.width;
+    uint pixel_1 = ((gid.y * _e282) + gid.x);
+    vec3 _e287 = n;
+    vec3 _e290 = _group_0_binding_0_cs.eye;
+    uint _e294 = reuse_stream(_e137, 0u);
+    uint _e295 = reuse_domains(x_18, _e287, length((_e290 - x_18)), _e294, doms);
+    if ((_e295 > 0u)) {
+        bool _e302 = doms[0].temporal;
+        local_6 = _e302;
     } else {
         local_6 = false;
     }
     bool own_history = local_6;
     uint first_1 = (own_history ? 1u : 0u);
-    float _e309 = doms[0].c;
-    float confidence = (1.0 + (own_history ? _e309 : 0.0));
-    uint _e315 = reuse_stream(_e137, 1u);
-    hs = _e315;
+    float _e310 = doms[0].c;
+    float confidence = (1.0 + (own_history ? _e310 : 0.0));
+    uint _e316 = reuse_stream(_e137, 1u);
+    hs = _e316;
     bool loop_init_15 = true;
     while(true) {
         if (!loop_init_15) {
-            uint _e350 = q_1;
-            q_1 = (_e350 + 1u);
+            uint _e351 = q_1;
+            q_1 = (_e351 + 1u);
         }
         loop_init_15 = false;
-        uint _e321 = q_1;
-        if ((_e321 < K)) {
+        uint _e322 = q_1;
+        if ((_e322 < K)) {
         } else {
             break;
         }
         {
-            uint _e324 = q_1;
-            uint _e326 = q_1;
-            uint _e328 = slot_light[_e326];
-            uint _e329 = q_1;
-            uint _e331 = slot_cells[_e329];
-            uvec2 _e332 = sample_key(_e328, _e331);
-            fresh_keys[_e324] = _e332;
-            uint _e333 = q_1;
-            uint _e337 = _group_0_binding_7_cs.visibility;
-            if ((_e337 == 1u)) {
-                uint _e342 = q_1;
-                float _e344 = slot_p[_e342];
-                local_7 = (_e344 > 0.0);
+            uint _e325 = q_1;
+            uint _e327 = q_1;
+            uint _e329 = slot_light[_e327];
+            uint _e330 = q_1;
+            uint _e332 = slot_cells[_e330];
+            uvec2 _e333 = sample_key(_e329, _e332);
+            fresh_keys[_e325] = _e333;
+            uint _e334 = q_1;
+            uint _e338 = _group_0_binding_7_cs.visibility;
+            if ((_e338 == 1u)) {
+                uint _e343 = q_1;
+                float _e345 = slot_p[_e343];
+                local_7 = (_e345 > 0.0);
             } else {
                 local_7 = false;
             }
-            bool _e348 = local_7;
-            fresh_held[_e333] = _e348;
+            bool _e349 = local_7;
+            fresh_held[_e334] = _e349;
         }
     }
-    uvec2 _e352[8] = fresh_keys;
-    bool _e353[8] = fresh_held;
-    uint _e354[8] = first_holders(_e352, _e353);
+    uvec2 _e353[8] = fresh_keys;
+    bool _e354[8] = fresh_held;
+    uint _e355[8] = first_holders(_e353, _e354);
     bool loop_init_16 = true;
     while(true) {
         if (!loop_init_16) {
-            uint _e392 = q_2;
-            q_2 = (_e392 + 1u);
+            uint _e393 = q_2;
+            q_2 = (_e393 + 1u);
         }
         loop_init_16 = false;
-        uint _e358 = q_2;
-        if ((_e358 < K)) {
+        uint _e359 = q_2;
+        if ((_e359 < K)) {
         } else {
             break;
         }
         {
-            uint _e361 = q_2;
-            uint _e363 = q_2;
-            if ((_e354[_e361] == _e363)) {
-                uint _e365 = q_2;
-                uint _e367 = q_2;
-                uint _e369 = slot_light[_e367];
-                uint _e370 = q_2;
-                uint _e372 = slot_cells[_e370];
-                vec3 _e373 = n;
-                Material _e374 = m;
-                Shaded _e376 = shade_sample(_e369, _e372, x_18, _e373, _e374, eps_4, true);
-                vec3 _e377 = output_of(_e376);
-                float _e378 = resample_target(_e377);
-                fresh_visible[_e365] = (_e378 > 0.0);
+            uint _e362 = q_2;
+            uint _e364 = q_2;
+            if ((_e355[_e362] == _e364)) {
+                uint _e366 = q_2;
+                uint _e368 = q_2;
+                uint _e370 = slot_light[_e368];
+                uint _e371 = q_2;
+                uint _e373 = slot_cells[_e371];
+                vec3 _e374 = n;
+                Material _e375 = m;
+                Shaded _e377 = shade_sample(_e370, _e373, x_18, _e374, _e375, eps_4, true);
+                vec3 _e378 = output_of(_e377);
+                float _e379 = resample_target(_e378);
+                fresh_visible[_e366] = (_e379 > 0.0);
             } else {
-                uint _e381 = q_2;
-                if ((_e354[_e381] < K)) {
-                    uint _e385 = q_2;
-                    uint _e387 = q_2;
-                    bool _e390 = fresh_visible[_e354[_e387]];
-                    fresh_visible[_e385] = _e390;
+                uint _e382 = q_2;
+                if ((_e355[_e382] < K)) {
+                    uint _e386 = q_2;
+                    uint _e388 = q_2;
+                    bool _e391 = fresh_visible[_e355[_e388]];
+                    fresh_visible[_e386] = _e391;
                 }
             }
         }
@@ -2152,134 +2167,134 @@ void main() {
     bool loop_init_17 = true;
     while(true) {
         if (!loop_init_17) {
-            uint _e462 = q_3;
-            q_3 = (_e462 + 1u);
+            uint _e463 = q_3;
+            q_3 = (_e463 + 1u);
         }
         loop_init_17 = false;
-        uint _e398 = q_3;
-        if ((_e398 < K)) {
+        uint _e399 = q_3;
+        if ((_e399 < K)) {
         } else {
             break;
         }
         {
-            uint _e401 = q_3;
-            float _e403 = slot_p[_e401];
-            if ((_e403 > 0.0)) {
-                uint _e410 = _group_0_binding_7_cs.visibility;
-                if (!((_e410 == 0u))) {
-                    uint _e416 = q_3;
-                    bool _e418 = fresh_visible[_e416];
-                    local_9 = _e418;
+            uint _e402 = q_3;
+            float _e404 = slot_p[_e402];
+            if ((_e404 > 0.0)) {
+                uint _e411 = _group_0_binding_7_cs.visibility;
+                if (!((_e411 == 0u))) {
+                    uint _e417 = q_3;
+                    bool _e419 = fresh_visible[_e417];
+                    local_9 = _e419;
                 } else {
                     local_9 = true;
                 }
-                bool _e420 = local_9;
-                local_8 = _e420;
+                bool _e421 = local_9;
+                local_8 = _e421;
             } else {
                 local_8 = false;
             }
             bool fresh = local_8;
-            uint _e423 = q_3;
-            uint _e425 = q_3;
+            uint _e424 = q_3;
             uint _e426 = q_3;
-            uint _e428 = slot_light[_e426];
-            uint _e429 = q_3;
-            uint _e431 = slot_cells[_e429];
-            vec3 _e432 = total;
-            uint _e433 = q_3;
-            float _e435 = slot_target(_e432, _e433, K);
-            vec3 _e442 = n;
-            Material _e443 = m;
-            ReuseSlot _e444 = gris_combine(_e425, ReuseSlot(_e428, _e431, (fresh ? _e435 : 0.0)), true, 1.0, 0u, first_1, x_18, _e442, _e443, doms, hs);
-            kept[_e423] = _e444;
-            uint _e445 = q_3;
-            uint _e447 = q_3;
-            ReuseSlot _e449 = kept[_e447];
-            fin[_e445] = _e449;
-            if ((_e294 > first_1)) {
-                uint _e451 = q_3;
-                uint _e453 = q_3;
+            uint _e427 = q_3;
+            uint _e429 = slot_light[_e427];
+            uint _e430 = q_3;
+            uint _e432 = slot_cells[_e430];
+            vec3 _e433 = total;
+            uint _e434 = q_3;
+            float _e436 = slot_target(_e433, _e434, K);
+            vec3 _e443 = n;
+            Material _e444 = m;
+            ReuseSlot _e445 = gris_combine(_e426, ReuseSlot(_e429, _e432, (fresh ? _e436 : 0.0)), true, 1.0, 0u, first_1, x_18, _e443, _e444, doms, hs);
+            kept[_e424] = _e445;
+            uint _e446 = q_3;
+            uint _e448 = q_3;
+            ReuseSlot _e450 = kept[_e448];
+            fin[_e446] = _e450;
+            if ((_e295 > first_1)) {
+                uint _e452 = q_3;
                 uint _e454 = q_3;
-                ReuseSlot _e456 = kept[_e454];
-                vec3 _e458 = n;
-                Material _e459 = m;
-                ReuseSlot _e460 = gris_combine(_e453, _e456, false, confidence, first_1, _e294, x_18, _e458, _e459, doms, hs);
-                fin[_e451] = _e460;
+                uint _e455 = q_3;
+                ReuseSlot _e457 = kept[_e455];
+                vec3 _e459 = n;
+                Material _e460 = m;
+                ReuseSlot _e461 = gris_combine(_e454, _e457, false, confidence, first_1, _e295, x_18, _e459, _e460, doms, hs);
+                fin[_e452] = _e461;
             }
         }
     }
     bool loop_init_18 = true;
     while(true) {
         if (!loop_init_18) {
-            uint _e491 = k;
-            k = (_e491 + 1u);
+            uint _e492 = k;
+            k = (_e492 + 1u);
         }
         loop_init_18 = false;
-        uint _e468 = k;
-        if ((_e468 < K)) {
+        uint _e469 = k;
+        if ((_e469 < K)) {
         } else {
             break;
         }
         {
-            uint _e471 = k;
-            uint _e473 = k;
-            uint _e476 = fin[_e473].light;
-            uint _e477 = k;
-            uint _e480 = fin[_e477].u;
-            uvec2 _e481 = sample_key(_e476, _e480);
-            keys[_e471] = _e481;
-            uint _e482 = k;
-            uint _e484 = k;
-            float _e487 = fin[_e484].w;
-            held[_e482] = (_e487 > 0.0);
+            uint _e472 = k;
+            uint _e474 = k;
+            uint _e477 = fin[_e474].light;
+            uint _e478 = k;
+            uint _e481 = fin[_e478].u;
+            uvec2 _e482 = sample_key(_e477, _e481);
+            keys[_e472] = _e482;
+            uint _e483 = k;
+            uint _e485 = k;
+            float _e488 = fin[_e485].w;
+            held[_e483] = (_e488 > 0.0);
         }
     }
-    uvec2 _e493[8] = keys;
-    bool _e494[8] = held;
-    uint _e495[8] = first_holders(_e493, _e494);
+    uvec2 _e494[8] = keys;
+    bool _e495[8] = held;
+    uint _e496[8] = first_holders(_e494, _e495);
     bool loop_init_19 = true;
     while(true) {
         if (!loop_init_19) {
-            uint _e621 = k_1;
-            k_1 = (_e621 + 1u);
+            uint _e622 = k_1;
+            k_1 = (_e622 + 1u);
         }
         loop_init_19 = false;
-        uint _e499 = k_1;
-        if ((_e499 < K)) {
+        uint _e500 = k_1;
+        if ((_e500 < K)) {
         } else {
             break;
         }
         {
-            uint _e502 = k_1;
-            uint _e504 = k_1;
-            if ((_e495[_e502] != _e504)) {
+            uint _e503 = k_1;
+            uint _e505 = k_1;
+            if ((_e496[_e503] != _e505)) {
                 continue;
             }
             w = vec3(0.0);
-            uint _e509 = k_1;
-            j_1 = _e509;
+            uint _e510 = k_1;
+            j_1 = _e510;
             bool loop_init_20 = true;
             while(true) {
                 if (!loop_init_20) {
-                    uint _e529 = j_1;
-                    j_1 = (_e529 + 1u);
+                    uint _e530 = j_1;
+                    j_1 = (_e530 + 1u);
                 }
                 loop_init_20 = false;
-                uint _e511 = j_1;
-                if ((_e511 < K)) {
+                uint _e512 = j_1;
+                if ((_e512 < K)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e514 = j_1;
-                    uint _e516 = k_1;
-                    if ((_e495[_e514] == _e516)) {
-                        vec3 _e518 = w;
-                        uint _e519 = j_1;
-                        float _e522 = fin[_e519].w;
-                        uint _e523 = j_1;
-                        vec3 _e525 = slot_share(_e523, K);
-                        w = (_e518 + (_e522 * _e525));
+                    uint _e515 = j_1;
+                    uint _e517 = k_1;
+                    if ((_e496[_e515] == _e517)) {
+                        vec3 _e519 = w;
+                        uint _e520 = j_1;
+                        float _e523 = fin[_e520].w;
+                        uint _e524 = j_1;
+                        vec3 _e526 = slot_share(_e524, K);
+                        w = (_e519 + (_e523 * _e526));
                     }
                 }
             }
@@ -2289,92 +2304,92 @@ void main() {
             bool loop_init_21 = true;
             while(true) {
                 if (!loop_init_21) {
-                    uint _e566 = j_2;
-                    j_2 = (_e566 + 1u);
+                    uint _e567 = j_2;
+                    j_2 = (_e567 + 1u);
                 }
                 loop_init_21 = false;
-                uint _e537 = j_2;
-                if ((_e537 < K)) {
-                    bool _e542 = known;
-                    local_10 = !(_e542);
+                uint _e538 = j_2;
+                if ((_e538 < K)) {
+                    bool _e543 = known;
+                    local_10 = !(_e543);
                 } else {
                     local_10 = false;
                 }
-                bool _e545 = local_10;
-                if (_e545) {
+                bool _e546 = local_10;
+                if (_e546) {
                 } else {
                     break;
                 }
                 {
-                    uint _e546 = j_2;
-                    bool _e548 = fresh_held[_e546];
-                    if (_e548) {
-                        uint _e551 = j_2;
-                        uvec2 _e553 = fresh_keys[_e551];
-                        uint _e554 = k_1;
-                        uvec2 _e556 = keys[_e554];
-                        local_11 = all(equal(_e553, _e556));
+                    uint _e547 = j_2;
+                    bool _e549 = fresh_held[_e547];
+                    if (_e549) {
+                        uint _e552 = j_2;
+                        uvec2 _e554 = fresh_keys[_e552];
+                        uint _e555 = k_1;
+                        uvec2 _e557 = keys[_e555];
+                        local_11 = all(equal(_e554, _e557));
                     } else {
                         local_11 = false;
                     }
-                    bool _e560 = local_11;
-                    if (_e560) {
+                    bool _e561 = local_11;
+                    if (_e561) {
                         known = true;
-                        uint _e562 = j_2;
-                        bool _e564 = fresh_visible[_e562];
-                        seen = _e564;
+                        uint _e563 = j_2;
+                        bool _e565 = fresh_visible[_e563];
+                        seen = _e565;
                     }
                 }
             }
-            uint _e568 = k_1;
-            uint _e571 = fin[_e568].light;
-            uint _e572 = k_1;
-            uint _e575 = fin[_e572].u;
-            vec3 _e576 = n;
-            Material _e577 = m;
-            bool _e578 = known;
-            Shaded _e580 = shade_sample(_e571, _e575, x_18, _e576, _e577, eps_4, !(_e578));
-            shaded = _e580;
-            bool _e582 = known;
-            if (_e582) {
-                bool _e585 = seen;
-                local_12 = !(_e585);
+            uint _e569 = k_1;
+            uint _e572 = fin[_e569].light;
+            uint _e573 = k_1;
+            uint _e576 = fin[_e573].u;
+            vec3 _e577 = n;
+            Material _e578 = m;
+            bool _e579 = known;
+            Shaded _e581 = shade_sample(_e572, _e576, x_18, _e577, _e578, eps_4, !(_e579));
+            shaded = _e581;
+            bool _e583 = known;
+            if (_e583) {
+                bool _e586 = seen;
+                local_12 = !(_e586);
             } else {
                 local_12 = false;
             }
-            bool _e588 = local_12;
-            if (_e588) {
+            bool _e589 = local_12;
+            if (_e589) {
                 shaded = Shaded(vec3(0.0), vec3(0.0), vec3(0.0));
             }
-            Shaded _e596 = t;
-            Shaded _e597 = shaded;
-            vec3 _e598 = w;
-            Shaded _e599 = scaled(_e597, _e598);
-            Shaded _e600 = add(_e596, _e599);
-            t = _e600;
-            uint _e601 = k_1;
-            j_3 = _e601;
+            Shaded _e597 = t;
+            Shaded _e598 = shaded;
+            vec3 _e599 = w;
+            Shaded _e600 = scaled(_e598, _e599);
+            Shaded _e601 = add(_e597, _e600);
+            t = _e601;
+            uint _e602 = k_1;
+            j_3 = _e602;
             bool loop_init_22 = true;
             while(true) {
                 if (!loop_init_22) {
-                    uint _e618 = j_3;
-                    j_3 = (_e618 + 1u);
+                    uint _e619 = j_3;
+                    j_3 = (_e619 + 1u);
                 }
                 loop_init_22 = false;
-                uint _e603 = j_3;
-                if ((_e603 < K)) {
+                uint _e604 = j_3;
+                if ((_e604 < K)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e606 = j_3;
-                    uint _e608 = k_1;
-                    if ((_e495[_e606] == _e608)) {
-                        uint _e610 = j_3;
-                        Shaded _e612 = shaded;
-                        vec3 _e613 = output_of(_e612);
-                        float _e614 = resample_target(_e613);
-                        visible[_e610] = (_e614 > 0.0);
+                    uint _e607 = j_3;
+                    uint _e609 = k_1;
+                    if ((_e496[_e607] == _e609)) {
+                        uint _e611 = j_3;
+                        Shaded _e613 = shaded;
+                        vec3 _e614 = output_of(_e613);
+                        float _e615 = resample_target(_e614);
+                        visible[_e611] = (_e615 > 0.0);
                     }
                 }
             }
@@ -2383,44 +2398,46 @@ void main() {
     bool loop_init_23 = true;
     while(true) {
         if (!loop_init_23) {
-            uint _e662 = q_4;
-            q_4 = (_e662 + 1u);
+            uint _e664 = q_4;
+            q_4 = (_e664 + 1u);
         }
         loop_init_23 = false;
-        uint _e625 = q_4;
-        if ((_e625 < K)) {
+        uint _e626 = q_4;
+        if ((_e626 < K)) {
         } else {
             break;
         }
         {
-            uint _e630 = _group_0_binding_7_cs.visibility;
-            if (!((_e630 == 0u))) {
-                uint _e636 = q_4;
-                bool _e638 = visible[_e636];
-                local_13 = _e638;
+            uint _e631 = _group_0_binding_7_cs.visibility;
+            if (!((_e631 == 0u))) {
+                uint _e637 = q_4;
+                bool _e639 = visible[_e637];
+                local_13 = _e639;
             } else {
                 local_13 = true;
             }
             bool keep = local_13;
-            uint _e644 = q_4;
+            uint _e643 = next_index(pixel_1);
             uint _e646 = q_4;
-            uint _e649 = kept[_e646].light;
-            uint _e650 = q_4;
-            uint _e653 = kept[_e650].u;
-            uint _e654 = q_4;
-            float _e657 = kept[_e654].w;
-            _group_1_binding_10_cs[pixel_1].slots[_e644] = ReuseSlot(_e649, _e653, (keep ? _e657 : 0.0));
+            uint _e648 = q_4;
+            uint _e651 = kept[_e648].light;
+            uint _e652 = q_4;
+            uint _e655 = kept[_e652].u;
+            uint _e656 = q_4;
+            float _e659 = kept[_e656].w;
+            _group_1_binding_9_cs[_e643].slots[_e646] = ReuseSlot(_e651, _e655, (keep ? _e659 : 0.0));
         }
     }
-    vec3 _e667 = n;
-    Material _e668 = m;
-    float _e671 = _group_0_binding_7_cs.max_confidence;
-    ReuseSurface _e673 = reuse_surface(x_18, _e667, _e668, min(confidence, _e671));
-    _group_1_binding_10_cs[pixel_1].surface = _e673;
-    vec3 _e676 = t.diffuse;
-    vec3 _e678 = t.specular;
-    uint _e680 = count;
-    imageStore(_group_0_binding_3_cs, texel_1, vec4((_e676 + _e678), float(_e680)));
+    uint _e667 = next_index(pixel_1);
+    vec3 _e670 = n;
+    Material _e671 = m;
+    float _e674 = _group_0_binding_7_cs.max_confidence;
+    ReuseSurface _e676 = reuse_surface(x_18, _e670, _e671, min(confidence, _e674));
+    _group_1_binding_9_cs[_e667].surface = _e676;
+    vec3 _e679 = t.diffuse;
+    vec3 _e681 = t.specular;
+    uint _e683 = count;
+    imageStore(_group_0_binding_3_cs, texel_1, vec4((_e679 + _e681), float(_e683)));
     return;
 }
 

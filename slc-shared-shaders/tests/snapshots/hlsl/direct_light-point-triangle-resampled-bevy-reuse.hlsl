@@ -46,7 +46,7 @@ struct ReuseParams {
     uint has_history;
     float radius;
     uint visibility;
-    uint pad0_;
+    uint parity;
 };
 
 struct ReuseSurface {
@@ -256,8 +256,7 @@ ByteAddressBuffer bsh_nodes : register(t4, space1);
 ByteAddressBuffer light_cones : register(t5, space1);
 cbuffer reuse : register(b7) { ReuseParams reuse; }
 ByteAddressBuffer lights_prev : register(t8, space1);
-ByteAddressBuffer reuse_prev : register(t9, space1);
-RWByteAddressBuffer reuse_next : register(u10, space1);
+RWByteAddressBuffer reuse_pixels : register(u9, space1);
 groupshared float3 wg_lo[64];
 groupshared float3 wg_hi[64];
 groupshared WorkgroupBox wg_box;
@@ -1734,6 +1733,22 @@ float3 output_of(Shaded s_9)
     return (s_9.diffuse + s_9.specular);
 }
 
+uint previous_index(uint i_4)
+{
+    uint _e4 = reuse.parity;
+    uint _e8 = view.width;
+    uint _e12 = view.height;
+    return ((((1u - _e4) * _e8) * _e12) + i_4);
+}
+
+uint next_index(uint i_5)
+{
+    uint _e3 = reuse.parity;
+    uint _e6 = view.width;
+    uint _e10 = view.height;
+    return (((_e3 * _e6) * _e10) + i_5);
+}
+
 float reuse_target(uint q_5, GpuLight l_4, uint cells, float3 x_11, float3 n_10, Material m_3)
 {
     const float _e9 = grid_coordinate(cells);
@@ -1845,8 +1860,8 @@ uint reuse_domains(float3 x_14, float3 n_13, float d_6, uint h_2, inout Domain d
         if (all(loop_bound_11 == uint2(0u, 0u))) { break; }
         loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
         if (!loop_init_8) {
-            uint _e175 = j_5;
-            j_5 = (_e175 + 1u);
+            uint _e176 = j_5;
+            j_5 = (_e176 + 1u);
         }
         loop_init_8 = false;
         uint _e41 = j_5;
@@ -1931,36 +1946,37 @@ uint reuse_domains(float3 x_14, float3 n_13, float d_6, uint h_2, inout Domain d
                     seen_1 = _e125;
                 }
             }
-            ReuseSurface s_13 = ConstructReuseSurface(asfloat(reuse_prev.Load3(0+pixel*144+0)), asfloat(reuse_prev.Load(0+pixel*144+12)), asfloat(reuse_prev.Load3(0+pixel*144+16)), asuint(reuse_prev.Load(0+pixel*144+28)), asuint(reuse_prev.Load(0+pixel*144+32)), asuint(reuse_prev.Load(0+pixel*144+36)), asuint(reuse_prev.Load(0+pixel*144+40)), asuint(reuse_prev.Load(0+pixel*144+44)));
-            bool _e133 = seen_1;
-            if (!(_e133)) {
+            const uint _e130 = previous_index(pixel);
+            ReuseSurface s_13 = ConstructReuseSurface(asfloat(reuse_pixels.Load3(0+_e130*144+0)), asfloat(reuse_pixels.Load(0+_e130*144+12)), asfloat(reuse_pixels.Load3(0+_e130*144+16)), asuint(reuse_pixels.Load(0+_e130*144+28)), asuint(reuse_pixels.Load(0+_e130*144+32)), asuint(reuse_pixels.Load(0+_e130*144+36)), asuint(reuse_pixels.Load(0+_e130*144+40)), asuint(reuse_pixels.Load(0+_e130*144+44)));
+            bool _e134 = seen_1;
+            if (!(_e134)) {
                 local_43 = !((s_13.m > 0.0));
             } else {
                 local_43 = true;
             }
-            bool _e142 = local_43;
-            if (!(_e142)) {
-                const bool _e150 = history_matches(n_13, s_13.n, x_14, dot(s_13.n, s_13.x), d_6);
-                local_44 = !(_e150);
+            bool _e143 = local_43;
+            if (!(_e143)) {
+                const bool _e151 = history_matches(n_13, s_13.n, x_14, dot(s_13.n, s_13.x), d_6);
+                local_44 = !(_e151);
             } else {
                 local_44 = true;
             }
-            bool _e153 = local_44;
-            if (_e153) {
+            bool _e154 = local_44;
+            if (_e154) {
                 continue;
             }
-            uint _e154 = nd;
-            float3 _e160 = reuse.prev_eye;
-            const Material _e161 = reuse_material(s_13, _e160);
-            float _e165 = reuse.max_confidence;
-            uint _e167 = j_5;
-            doms_1[min(uint(_e154), 2u)] = ConstructDomain(pixel, s_13.x, s_13.n, _e161, min(s_13.m, _e165), (_e167 == 0u));
-            uint _e171 = nd;
-            nd = (_e171 + 1u);
+            uint _e155 = nd;
+            float3 _e161 = reuse.prev_eye;
+            const Material _e162 = reuse_material(s_13, _e161);
+            float _e166 = reuse.max_confidence;
+            uint _e168 = j_5;
+            doms_1[min(uint(_e155), 2u)] = ConstructDomain(pixel, s_13.x, s_13.n, _e162, min(s_13.m, _e166), (_e168 == 0u));
+            uint _e172 = nd;
+            nd = (_e172 + 1u);
         }
     }
-    uint _e177 = nd;
-    return _e177;
+    uint _e178 = nd;
+    return _e178;
 }
 
 ReuseSlot ConstructReuseSlot(uint arg0, uint arg1, float arg2) {
@@ -1993,8 +2009,8 @@ ReuseSlot gris_combine(uint q_6, ReuseSlot cur, bool cur_ris, float cur_c, uint 
         if (all(loop_bound_13 == uint2(0u, 0u))) { break; }
         loop_bound_13 -= uint2(loop_bound_13.y == 0u, 1u);
         if (!loop_init_10) {
-            uint _e137 = j_6;
-            j_6 = (_e137 + 1u);
+            uint _e138 = j_6;
+            j_6 = (_e138 + 1u);
         }
         loop_init_10 = false;
         uint _e21 = j_6;
@@ -2008,43 +2024,44 @@ ReuseSlot gris_combine(uint q_6, ReuseSlot cur, bool cur_ris, float cur_c, uint 
             if ((_e24 > k0_)) {
                 uint _e27 = j_6;
                 uint _e32 = doms_2[min(uint((_e27 - 1u)), 2u)].pixel;
-                ReuseSlot _e36 = ConstructReuseSlot(asuint(reuse_prev.Load(q_6*12+48+_e32*144+0)), asuint(reuse_prev.Load(q_6*12+48+_e32*144+4)), asfloat(reuse_prev.Load(q_6*12+48+_e32*144+8)));
-                s_11 = _e36;
+                const uint _e33 = previous_index(_e32);
+                ReuseSlot _e37 = ConstructReuseSlot(asuint(reuse_pixels.Load(q_6*12+48+_e33*144+0)), asuint(reuse_pixels.Load(q_6*12+48+_e33*144+4)), asfloat(reuse_pixels.Load(q_6*12+48+_e33*144+8)));
+                s_11 = _e37;
             }
-            float _e38 = s_11.w;
-            if (!(!((_e38 > 0.0)))) {
-                uint _e46 = s_11.light;
-                local_45 = (_e46 >= ((NagaBufferLength(lights) - 0) / 64));
+            float _e39 = s_11.w;
+            if (!(!((_e39 > 0.0)))) {
+                uint _e47 = s_11.light;
+                local_45 = (_e47 >= ((NagaBufferLength(lights) - 0) / 64));
             } else {
                 local_45 = true;
             }
-            bool _e51 = local_45;
-            if (_e51) {
+            bool _e52 = local_45;
+            if (_e52) {
                 continue;
             }
-            uint _e54 = s_11.light;
-            GpuLight _e56 = ConstructGpuLight(asfloat(lights.Load3(_e54*64+0)), asuint(lights.Load(_e54*64+12)), asfloat(lights.Load3(_e54*64+16)), asfloat(lights.Load(_e54*64+28)), asfloat(lights.Load3(_e54*64+32)), asfloat(lights.Load(_e54*64+44)), asfloat(lights.Load3(_e54*64+48)), asuint(lights.Load(_e54*64+60)));
-            uint _e58 = s_11.u;
-            const float _e59 = reuse_target(q_6, _e56, _e58, x_15, n_14, m_6);
-            if (!((_e59 > 0.0))) {
+            uint _e55 = s_11.light;
+            GpuLight _e57 = ConstructGpuLight(asfloat(lights.Load3(_e55*64+0)), asuint(lights.Load(_e55*64+12)), asfloat(lights.Load3(_e55*64+16)), asfloat(lights.Load(_e55*64+28)), asfloat(lights.Load3(_e55*64+32)), asfloat(lights.Load(_e55*64+44)), asfloat(lights.Load3(_e55*64+48)), asuint(lights.Load(_e55*64+60)));
+            uint _e59 = s_11.u;
+            const float _e60 = reuse_target(q_6, _e57, _e59, x_15, n_14, m_6);
+            if (!((_e60 > 0.0))) {
                 continue;
             }
-            float _e64 = s_11.w;
-            w_in = _e64;
-            uint _e66 = j_6;
-            if ((_e66 == k0_)) {
+            float _e65 = s_11.w;
+            w_in = _e65;
+            uint _e67 = j_6;
+            if ((_e67 == k0_)) {
                 local_46 = cur_ris;
             } else {
                 local_46 = false;
             }
-            bool _e71 = local_46;
-            if (_e71) {
-                float _e73 = s_11.w;
-                w_in = (_e73 / _e59);
+            bool _e72 = local_46;
+            if (_e72) {
+                float _e74 = s_11.w;
+                w_in = (_e74 / _e60);
             }
-            own_1 = (cur_c * _e59);
-            float _e77 = own_1;
-            all_1 = _e77;
+            own_1 = (cur_c * _e60);
+            float _e78 = own_1;
+            all_1 = _e78;
             k_6 = k0_;
             uint2 loop_bound_14 = uint2(4294967295u, 4294967295u);
             bool loop_init_11 = true;
@@ -2052,70 +2069,70 @@ ReuseSlot gris_combine(uint q_6, ReuseSlot cur, bool cur_ris, float cur_c, uint 
                 if (all(loop_bound_14 == uint2(0u, 0u))) { break; }
                 loop_bound_14 -= uint2(loop_bound_14.y == 0u, 1u);
                 if (!loop_init_11) {
-                    uint _e115 = k_6;
-                    k_6 = (_e115 + 1u);
+                    uint _e116 = k_6;
+                    k_6 = (_e116 + 1u);
                 }
                 loop_init_11 = false;
-                uint _e80 = k_6;
-                if ((_e80 < k1_)) {
+                uint _e81 = k_6;
+                if ((_e81 < k1_)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e82 = k_6;
-                    float _e85 = doms_2[min(uint(_e82), 2u)].c;
-                    uint _e88 = s_11.light;
-                    GpuLight _e90 = ConstructGpuLight(asfloat(lights_prev.Load3(_e88*64+0)), asuint(lights_prev.Load(_e88*64+12)), asfloat(lights_prev.Load3(_e88*64+16)), asfloat(lights_prev.Load(_e88*64+28)), asfloat(lights_prev.Load3(_e88*64+32)), asfloat(lights_prev.Load(_e88*64+44)), asfloat(lights_prev.Load3(_e88*64+48)), asuint(lights_prev.Load(_e88*64+60)));
-                    uint _e92 = s_11.u;
-                    uint _e93 = k_6;
-                    float3 _e96 = doms_2[min(uint(_e93), 2u)].x;
-                    uint _e97 = k_6;
-                    float3 _e100 = doms_2[min(uint(_e97), 2u)].n;
-                    uint _e101 = k_6;
-                    Material _e104 = doms_2[min(uint(_e101), 2u)].m;
-                    const float _e105 = reuse_target(q_6, _e90, _e92, _e96, _e100, _e104);
-                    float t_9 = (_e85 * _e105);
-                    float _e107 = all_1;
-                    all_1 = (_e107 + t_9);
-                    uint _e109 = k_6;
-                    uint _e112 = j_6;
-                    if (((_e109 + 1u) == _e112)) {
+                    uint _e83 = k_6;
+                    float _e86 = doms_2[min(uint(_e83), 2u)].c;
+                    uint _e89 = s_11.light;
+                    GpuLight _e91 = ConstructGpuLight(asfloat(lights_prev.Load3(_e89*64+0)), asuint(lights_prev.Load(_e89*64+12)), asfloat(lights_prev.Load3(_e89*64+16)), asfloat(lights_prev.Load(_e89*64+28)), asfloat(lights_prev.Load3(_e89*64+32)), asfloat(lights_prev.Load(_e89*64+44)), asfloat(lights_prev.Load3(_e89*64+48)), asuint(lights_prev.Load(_e89*64+60)));
+                    uint _e93 = s_11.u;
+                    uint _e94 = k_6;
+                    float3 _e97 = doms_2[min(uint(_e94), 2u)].x;
+                    uint _e98 = k_6;
+                    float3 _e101 = doms_2[min(uint(_e98), 2u)].n;
+                    uint _e102 = k_6;
+                    Material _e105 = doms_2[min(uint(_e102), 2u)].m;
+                    const float _e106 = reuse_target(q_6, _e91, _e93, _e97, _e101, _e105);
+                    float t_9 = (_e86 * _e106);
+                    float _e108 = all_1;
+                    all_1 = (_e108 + t_9);
+                    uint _e110 = k_6;
+                    uint _e113 = j_6;
+                    if (((_e110 + 1u) == _e113)) {
                         own_1 = t_9;
                     }
                 }
             }
-            float _e117 = own_1;
-            float _e118 = all_1;
-            float _e119 = w_in;
-            const float _e120 = gris_weight(_e117, _e118, _e59, _e119);
-            float _e121 = w_sum_3;
-            w_sum_3 = (_e121 + _e120);
-            uint _e123 = hs_1;
-            const uint _e124 = pcg_hash(_e123);
-            hs_1 = _e124;
-            if ((_e120 > 0.0)) {
-                float _e129 = w_sum_3;
-                uint _e130 = hs_1;
-                const float _e131 = xi_from_bits(_e130);
-                const bool _e132 = weighted_replace(_e120, _e129, _e131);
-                local_47 = _e132;
+            float _e118 = own_1;
+            float _e119 = all_1;
+            float _e120 = w_in;
+            const float _e121 = gris_weight(_e118, _e119, _e60, _e120);
+            float _e122 = w_sum_3;
+            w_sum_3 = (_e122 + _e121);
+            uint _e124 = hs_1;
+            const uint _e125 = pcg_hash(_e124);
+            hs_1 = _e125;
+            if ((_e121 > 0.0)) {
+                float _e130 = w_sum_3;
+                uint _e131 = hs_1;
+                const float _e132 = xi_from_bits(_e131);
+                const bool _e133 = weighted_replace(_e121, _e130, _e132);
+                local_47 = _e133;
             } else {
                 local_47 = false;
             }
-            bool _e134 = local_47;
-            if (_e134) {
-                ReuseSlot _e135 = s_11;
-                out_ = _e135;
-                out_target = _e59;
+            bool _e135 = local_47;
+            if (_e135) {
+                ReuseSlot _e136 = s_11;
+                out_ = _e136;
+                out_target = _e60;
             }
         }
     }
-    float _e140 = w_sum_3;
-    float _e141 = out_target;
-    const float _e142 = gris_contribution_weight(_e140, _e141);
-    out_.w = _e142;
-    ReuseSlot _e143 = out_;
-    const ReuseSlot reuseslot = _e143;
+    float _e141 = w_sum_3;
+    float _e142 = out_target;
+    const float _e143 = gris_contribution_weight(_e141, _e142);
+    out_.w = _e143;
+    ReuseSlot _e144 = out_;
+    const ReuseSlot reuseslot = _e144;
     return reuseslot;
 }
 
@@ -2395,104 +2412,105 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
         if (inside) {
             out_tex[texel_1] = (0.0).xxxx;
             uint _e270 = view.width;
-            reuse_next.Store(12+0+((gid.y * _e270) + gid.x)*144, asuint(0.0));
+            const uint _e274 = next_index(((gid.y * _e270) + gid.x));
+            reuse_pixels.Store(12+0+_e274*144, asuint(0.0));
         }
         return;
     }
-    uint _e281 = view.width;
-    uint pixel_1 = ((gid.y * _e281) + gid.x);
-    float3 _e286 = n;
-    float3 _e289 = view.eye;
-    const uint _e293 = reuse_stream(_e137, 0u);
-    const uint _e294 = reuse_domains(x_18, _e286, length((_e289 - x_18)), _e293, doms);
-    if ((_e294 > 0u)) {
-        bool _e301 = doms[0].temporal;
-        local_6 = _e301;
+    uint _e282 = view.width;
+    uint pixel_1 = ((gid.y * _e282) + gid.x);
+    float3 _e287 = n;
+    float3 _e290 = view.eye;
+    const uint _e294 = reuse_stream(_e137, 0u);
+    const uint _e295 = reuse_domains(x_18, _e287, length((_e290 - x_18)), _e294, doms);
+    if ((_e295 > 0u)) {
+        bool _e302 = doms[0].temporal;
+        local_6 = _e302;
     } else {
         local_6 = false;
     }
     bool own_history = local_6;
     uint first_1 = (own_history ? 1u : 0u);
-    float _e309 = doms[0].c;
-    float confidence = (1.0 + (own_history ? _e309 : 0.0));
-    const uint _e315 = reuse_stream(_e137, 1u);
-    hs = _e315;
+    float _e310 = doms[0].c;
+    float confidence = (1.0 + (own_history ? _e310 : 0.0));
+    const uint _e316 = reuse_stream(_e137, 1u);
+    hs = _e316;
     uint2 loop_bound_18 = uint2(4294967295u, 4294967295u);
     bool loop_init_15 = true;
     while(true) {
         if (all(loop_bound_18 == uint2(0u, 0u))) { break; }
         loop_bound_18 -= uint2(loop_bound_18.y == 0u, 1u);
         if (!loop_init_15) {
-            uint _e350 = q_1;
-            q_1 = (_e350 + 1u);
+            uint _e351 = q_1;
+            q_1 = (_e351 + 1u);
         }
         loop_init_15 = false;
-        uint _e321 = q_1;
-        if ((_e321 < K)) {
+        uint _e322 = q_1;
+        if ((_e322 < K)) {
         } else {
             break;
         }
         {
-            uint _e324 = q_1;
-            uint _e326 = q_1;
-            uint _e328 = slot_light[min(uint(_e326), 7u)];
-            uint _e329 = q_1;
-            uint _e331 = slot_cells[min(uint(_e329), 7u)];
-            const uint2 _e332 = sample_key(_e328, _e331);
-            fresh_keys[min(uint(_e324), 7u)] = _e332;
-            uint _e333 = q_1;
-            uint _e337 = reuse.visibility;
-            if ((_e337 == 1u)) {
-                uint _e342 = q_1;
-                float _e344 = slot_p[min(uint(_e342), 7u)];
-                local_7 = (_e344 > 0.0);
+            uint _e325 = q_1;
+            uint _e327 = q_1;
+            uint _e329 = slot_light[min(uint(_e327), 7u)];
+            uint _e330 = q_1;
+            uint _e332 = slot_cells[min(uint(_e330), 7u)];
+            const uint2 _e333 = sample_key(_e329, _e332);
+            fresh_keys[min(uint(_e325), 7u)] = _e333;
+            uint _e334 = q_1;
+            uint _e338 = reuse.visibility;
+            if ((_e338 == 1u)) {
+                uint _e343 = q_1;
+                float _e345 = slot_p[min(uint(_e343), 7u)];
+                local_7 = (_e345 > 0.0);
             } else {
                 local_7 = false;
             }
-            bool _e348 = local_7;
-            fresh_held[min(uint(_e333), 7u)] = _e348;
+            bool _e349 = local_7;
+            fresh_held[min(uint(_e334), 7u)] = _e349;
         }
     }
-    uint2 _e352[8] = fresh_keys;
-    bool _e353[8] = fresh_held;
-    const uint _e354[8] = first_holders(_e352, _e353);
+    uint2 _e353[8] = fresh_keys;
+    bool _e354[8] = fresh_held;
+    const uint _e355[8] = first_holders(_e353, _e354);
     uint2 loop_bound_19 = uint2(4294967295u, 4294967295u);
     bool loop_init_16 = true;
     while(true) {
         if (all(loop_bound_19 == uint2(0u, 0u))) { break; }
         loop_bound_19 -= uint2(loop_bound_19.y == 0u, 1u);
         if (!loop_init_16) {
-            uint _e392 = q_2;
-            q_2 = (_e392 + 1u);
+            uint _e393 = q_2;
+            q_2 = (_e393 + 1u);
         }
         loop_init_16 = false;
-        uint _e358 = q_2;
-        if ((_e358 < K)) {
+        uint _e359 = q_2;
+        if ((_e359 < K)) {
         } else {
             break;
         }
         {
-            uint _e361 = q_2;
-            uint _e363 = q_2;
-            if ((_e354[min(uint(_e361), 7u)] == _e363)) {
-                uint _e365 = q_2;
-                uint _e367 = q_2;
-                uint _e369 = slot_light[min(uint(_e367), 7u)];
-                uint _e370 = q_2;
-                uint _e372 = slot_cells[min(uint(_e370), 7u)];
-                float3 _e373 = n;
-                Material _e374 = m;
-                const Shaded _e376 = shade_sample(_e369, _e372, x_18, _e373, _e374, eps_4, true);
-                const float3 _e377 = output_of(_e376);
-                const float _e378 = resample_target(_e377);
-                fresh_visible[min(uint(_e365), 7u)] = (_e378 > 0.0);
+            uint _e362 = q_2;
+            uint _e364 = q_2;
+            if ((_e355[min(uint(_e362), 7u)] == _e364)) {
+                uint _e366 = q_2;
+                uint _e368 = q_2;
+                uint _e370 = slot_light[min(uint(_e368), 7u)];
+                uint _e371 = q_2;
+                uint _e373 = slot_cells[min(uint(_e371), 7u)];
+                float3 _e374 = n;
+                Material _e375 = m;
+                const Shaded _e377 = shade_sample(_e370, _e373, x_18, _e374, _e375, eps_4, true);
+                const float3 _e378 = output_of(_e377);
+                const float _e379 = resample_target(_e378);
+                fresh_visible[min(uint(_e366), 7u)] = (_e379 > 0.0);
             } else {
-                uint _e381 = q_2;
-                if ((_e354[min(uint(_e381), 7u)] < K)) {
-                    uint _e385 = q_2;
-                    uint _e387 = q_2;
-                    bool _e390 = fresh_visible[min(uint(_e354[min(uint(_e387), 7u)]), 7u)];
-                    fresh_visible[min(uint(_e385), 7u)] = _e390;
+                uint _e382 = q_2;
+                if ((_e355[min(uint(_e382), 7u)] < K)) {
+                    uint _e386 = q_2;
+                    uint _e388 = q_2;
+                    bool _e391 = fresh_visible[min(uint(_e355[min(uint(_e388), 7u)]), 7u)];
+                    fresh_visible[min(uint(_e386), 7u)] = _e391;
                 }
             }
         }
@@ -2503,59 +2521,59 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
         if (all(loop_bound_20 == uint2(0u, 0u))) { break; }
         loop_bound_20 -= uint2(loop_bound_20.y == 0u, 1u);
         if (!loop_init_17) {
-            uint _e462 = q_3;
-            q_3 = (_e462 + 1u);
+            uint _e463 = q_3;
+            q_3 = (_e463 + 1u);
         }
         loop_init_17 = false;
-        uint _e398 = q_3;
-        if ((_e398 < K)) {
+        uint _e399 = q_3;
+        if ((_e399 < K)) {
         } else {
             break;
         }
         {
-            uint _e401 = q_3;
-            float _e403 = slot_p[min(uint(_e401), 7u)];
-            if ((_e403 > 0.0)) {
-                uint _e410 = reuse.visibility;
-                if (!((_e410 == 0u))) {
-                    uint _e416 = q_3;
-                    bool _e418 = fresh_visible[min(uint(_e416), 7u)];
-                    local_9 = _e418;
+            uint _e402 = q_3;
+            float _e404 = slot_p[min(uint(_e402), 7u)];
+            if ((_e404 > 0.0)) {
+                uint _e411 = reuse.visibility;
+                if (!((_e411 == 0u))) {
+                    uint _e417 = q_3;
+                    bool _e419 = fresh_visible[min(uint(_e417), 7u)];
+                    local_9 = _e419;
                 } else {
                     local_9 = true;
                 }
-                bool _e420 = local_9;
-                local_8 = _e420;
+                bool _e421 = local_9;
+                local_8 = _e421;
             } else {
                 local_8 = false;
             }
             bool fresh = local_8;
-            uint _e423 = q_3;
-            uint _e425 = q_3;
+            uint _e424 = q_3;
             uint _e426 = q_3;
-            uint _e428 = slot_light[min(uint(_e426), 7u)];
-            uint _e429 = q_3;
-            uint _e431 = slot_cells[min(uint(_e429), 7u)];
-            float3 _e432 = total;
-            uint _e433 = q_3;
-            const float _e435 = slot_target(_e432, _e433, K);
-            float3 _e442 = n;
-            Material _e443 = m;
-            const ReuseSlot _e444 = gris_combine(_e425, ConstructReuseSlot(_e428, _e431, (fresh ? _e435 : 0.0)), true, 1.0, 0u, first_1, x_18, _e442, _e443, doms, hs);
-            kept[min(uint(_e423), 7u)] = _e444;
-            uint _e445 = q_3;
-            uint _e447 = q_3;
-            ReuseSlot _e449 = kept[min(uint(_e447), 7u)];
-            fin[min(uint(_e445), 7u)] = _e449;
-            if ((_e294 > first_1)) {
-                uint _e451 = q_3;
-                uint _e453 = q_3;
+            uint _e427 = q_3;
+            uint _e429 = slot_light[min(uint(_e427), 7u)];
+            uint _e430 = q_3;
+            uint _e432 = slot_cells[min(uint(_e430), 7u)];
+            float3 _e433 = total;
+            uint _e434 = q_3;
+            const float _e436 = slot_target(_e433, _e434, K);
+            float3 _e443 = n;
+            Material _e444 = m;
+            const ReuseSlot _e445 = gris_combine(_e426, ConstructReuseSlot(_e429, _e432, (fresh ? _e436 : 0.0)), true, 1.0, 0u, first_1, x_18, _e443, _e444, doms, hs);
+            kept[min(uint(_e424), 7u)] = _e445;
+            uint _e446 = q_3;
+            uint _e448 = q_3;
+            ReuseSlot _e450 = kept[min(uint(_e448), 7u)];
+            fin[min(uint(_e446), 7u)] = _e450;
+            if ((_e295 > first_1)) {
+                uint _e452 = q_3;
                 uint _e454 = q_3;
-                ReuseSlot _e456 = kept[min(uint(_e454), 7u)];
-                float3 _e458 = n;
-                Material _e459 = m;
-                const ReuseSlot _e460 = gris_combine(_e453, _e456, false, confidence, first_1, _e294, x_18, _e458, _e459, doms, hs);
-                fin[min(uint(_e451), 7u)] = _e460;
+                uint _e455 = q_3;
+                ReuseSlot _e457 = kept[min(uint(_e455), 7u)];
+                float3 _e459 = n;
+                Material _e460 = m;
+                const ReuseSlot _e461 = gris_combine(_e454, _e457, false, confidence, first_1, _e295, x_18, _e459, _e460, doms, hs);
+                fin[min(uint(_e452), 7u)] = _e461;
             }
         }
     }
@@ -2565,81 +2583,81 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
         if (all(loop_bound_21 == uint2(0u, 0u))) { break; }
         loop_bound_21 -= uint2(loop_bound_21.y == 0u, 1u);
         if (!loop_init_18) {
-            uint _e491 = k;
-            k = (_e491 + 1u);
+            uint _e492 = k;
+            k = (_e492 + 1u);
         }
         loop_init_18 = false;
-        uint _e468 = k;
-        if ((_e468 < K)) {
+        uint _e469 = k;
+        if ((_e469 < K)) {
         } else {
             break;
         }
         {
-            uint _e471 = k;
-            uint _e473 = k;
-            uint _e476 = fin[min(uint(_e473), 7u)].light;
-            uint _e477 = k;
-            uint _e480 = fin[min(uint(_e477), 7u)].u;
-            const uint2 _e481 = sample_key(_e476, _e480);
-            keys[min(uint(_e471), 7u)] = _e481;
-            uint _e482 = k;
-            uint _e484 = k;
-            float _e487 = fin[min(uint(_e484), 7u)].w;
-            held[min(uint(_e482), 7u)] = (_e487 > 0.0);
+            uint _e472 = k;
+            uint _e474 = k;
+            uint _e477 = fin[min(uint(_e474), 7u)].light;
+            uint _e478 = k;
+            uint _e481 = fin[min(uint(_e478), 7u)].u;
+            const uint2 _e482 = sample_key(_e477, _e481);
+            keys[min(uint(_e472), 7u)] = _e482;
+            uint _e483 = k;
+            uint _e485 = k;
+            float _e488 = fin[min(uint(_e485), 7u)].w;
+            held[min(uint(_e483), 7u)] = (_e488 > 0.0);
         }
     }
-    uint2 _e493[8] = keys;
-    bool _e494[8] = held;
-    const uint _e495[8] = first_holders(_e493, _e494);
+    uint2 _e494[8] = keys;
+    bool _e495[8] = held;
+    const uint _e496[8] = first_holders(_e494, _e495);
     uint2 loop_bound_22 = uint2(4294967295u, 4294967295u);
     bool loop_init_19 = true;
     while(true) {
         if (all(loop_bound_22 == uint2(0u, 0u))) { break; }
         loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
         if (!loop_init_19) {
-            uint _e621 = k_1;
-            k_1 = (_e621 + 1u);
+            uint _e622 = k_1;
+            k_1 = (_e622 + 1u);
         }
         loop_init_19 = false;
-        uint _e499 = k_1;
-        if ((_e499 < K)) {
+        uint _e500 = k_1;
+        if ((_e500 < K)) {
         } else {
             break;
         }
         {
-            uint _e502 = k_1;
-            uint _e504 = k_1;
-            if ((_e495[min(uint(_e502), 7u)] != _e504)) {
+            uint _e503 = k_1;
+            uint _e505 = k_1;
+            if ((_e496[min(uint(_e503), 7u)] != _e505)) {
                 continue;
             }
             w = (0.0).xxx;
-            uint _e509 = k_1;
-            j_1 = _e509;
+            uint _e510 = k_1;
+            j_1 = _e510;
             uint2 loop_bound_23 = uint2(4294967295u, 4294967295u);
             bool loop_init_20 = true;
             while(true) {
                 if (all(loop_bound_23 == uint2(0u, 0u))) { break; }
                 loop_bound_23 -= uint2(loop_bound_23.y == 0u, 1u);
                 if (!loop_init_20) {
-                    uint _e529 = j_1;
-                    j_1 = (_e529 + 1u);
+                    uint _e530 = j_1;
+                    j_1 = (_e530 + 1u);
                 }
                 loop_init_20 = false;
-                uint _e511 = j_1;
-                if ((_e511 < K)) {
+                uint _e512 = j_1;
+                if ((_e512 < K)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e514 = j_1;
-                    uint _e516 = k_1;
-                    if ((_e495[min(uint(_e514), 7u)] == _e516)) {
-                        float3 _e518 = w;
-                        uint _e519 = j_1;
-                        float _e522 = fin[min(uint(_e519), 7u)].w;
-                        uint _e523 = j_1;
-                        const float3 _e525 = slot_share(_e523, K);
-                        w = (_e518 + (_e522 * _e525));
+                    uint _e515 = j_1;
+                    uint _e517 = k_1;
+                    if ((_e496[min(uint(_e515), 7u)] == _e517)) {
+                        float3 _e519 = w;
+                        uint _e520 = j_1;
+                        float _e523 = fin[min(uint(_e520), 7u)].w;
+                        uint _e524 = j_1;
+                        const float3 _e526 = slot_share(_e524, K);
+                        w = (_e519 + (_e523 * _e526));
                     }
                 }
             }
@@ -2652,95 +2670,95 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
                 if (all(loop_bound_24 == uint2(0u, 0u))) { break; }
                 loop_bound_24 -= uint2(loop_bound_24.y == 0u, 1u);
                 if (!loop_init_21) {
-                    uint _e566 = j_2;
-                    j_2 = (_e566 + 1u);
+                    uint _e567 = j_2;
+                    j_2 = (_e567 + 1u);
                 }
                 loop_init_21 = false;
-                uint _e537 = j_2;
-                if ((_e537 < K)) {
-                    bool _e542 = known;
-                    local_10 = !(_e542);
+                uint _e538 = j_2;
+                if ((_e538 < K)) {
+                    bool _e543 = known;
+                    local_10 = !(_e543);
                 } else {
                     local_10 = false;
                 }
-                bool _e545 = local_10;
-                if (_e545) {
+                bool _e546 = local_10;
+                if (_e546) {
                 } else {
                     break;
                 }
                 {
-                    uint _e546 = j_2;
-                    bool _e548 = fresh_held[min(uint(_e546), 7u)];
-                    if (_e548) {
-                        uint _e551 = j_2;
-                        uint2 _e553 = fresh_keys[min(uint(_e551), 7u)];
-                        uint _e554 = k_1;
-                        uint2 _e556 = keys[min(uint(_e554), 7u)];
-                        local_11 = all((_e553 == _e556));
+                    uint _e547 = j_2;
+                    bool _e549 = fresh_held[min(uint(_e547), 7u)];
+                    if (_e549) {
+                        uint _e552 = j_2;
+                        uint2 _e554 = fresh_keys[min(uint(_e552), 7u)];
+                        uint _e555 = k_1;
+                        uint2 _e557 = keys[min(uint(_e555), 7u)];
+                        local_11 = all((_e554 == _e557));
                     } else {
                         local_11 = false;
                     }
-                    bool _e560 = local_11;
-                    if (_e560) {
+                    bool _e561 = local_11;
+                    if (_e561) {
                         known = true;
-                        uint _e562 = j_2;
-                        bool _e564 = fresh_visible[min(uint(_e562), 7u)];
-                        seen = _e564;
+                        uint _e563 = j_2;
+                        bool _e565 = fresh_visible[min(uint(_e563), 7u)];
+                        seen = _e565;
                     }
                 }
             }
-            uint _e568 = k_1;
-            uint _e571 = fin[min(uint(_e568), 7u)].light;
-            uint _e572 = k_1;
-            uint _e575 = fin[min(uint(_e572), 7u)].u;
-            float3 _e576 = n;
-            Material _e577 = m;
-            bool _e578 = known;
-            const Shaded _e580 = shade_sample(_e571, _e575, x_18, _e576, _e577, eps_4, !(_e578));
-            shaded = _e580;
-            bool _e582 = known;
-            if (_e582) {
-                bool _e585 = seen;
-                local_12 = !(_e585);
+            uint _e569 = k_1;
+            uint _e572 = fin[min(uint(_e569), 7u)].light;
+            uint _e573 = k_1;
+            uint _e576 = fin[min(uint(_e573), 7u)].u;
+            float3 _e577 = n;
+            Material _e578 = m;
+            bool _e579 = known;
+            const Shaded _e581 = shade_sample(_e572, _e576, x_18, _e577, _e578, eps_4, !(_e579));
+            shaded = _e581;
+            bool _e583 = known;
+            if (_e583) {
+                bool _e586 = seen;
+                local_12 = !(_e586);
             } else {
                 local_12 = false;
             }
-            bool _e588 = local_12;
-            if (_e588) {
+            bool _e589 = local_12;
+            if (_e589) {
                 shaded = ConstructShaded((0.0).xxx, (0.0).xxx, (0.0).xxx);
             }
-            Shaded _e596 = t;
-            Shaded _e597 = shaded;
-            float3 _e598 = w;
-            const Shaded _e599 = scaled(_e597, _e598);
-            const Shaded _e600 = add(_e596, _e599);
-            t = _e600;
-            uint _e601 = k_1;
-            j_3 = _e601;
+            Shaded _e597 = t;
+            Shaded _e598 = shaded;
+            float3 _e599 = w;
+            const Shaded _e600 = scaled(_e598, _e599);
+            const Shaded _e601 = add(_e597, _e600);
+            t = _e601;
+            uint _e602 = k_1;
+            j_3 = _e602;
             uint2 loop_bound_25 = uint2(4294967295u, 4294967295u);
             bool loop_init_22 = true;
             while(true) {
                 if (all(loop_bound_25 == uint2(0u, 0u))) { break; }
                 loop_bound_25 -= uint2(loop_bound_25.y == 0u, 1u);
                 if (!loop_init_22) {
-                    uint _e618 = j_3;
-                    j_3 = (_e618 + 1u);
+                    uint _e619 = j_3;
+                    j_3 = (_e619 + 1u);
                 }
                 loop_init_22 = false;
-                uint _e603 = j_3;
-                if ((_e603 < K)) {
+                uint _e604 = j_3;
+                if ((_e604 < K)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e606 = j_3;
-                    uint _e608 = k_1;
-                    if ((_e495[min(uint(_e606), 7u)] == _e608)) {
-                        uint _e610 = j_3;
-                        Shaded _e612 = shaded;
-                        const float3 _e613 = output_of(_e612);
-                        const float _e614 = resample_target(_e613);
-                        visible[min(uint(_e610), 7u)] = (_e614 > 0.0);
+                    uint _e607 = j_3;
+                    uint _e609 = k_1;
+                    if ((_e496[min(uint(_e607), 7u)] == _e609)) {
+                        uint _e611 = j_3;
+                        Shaded _e613 = shaded;
+                        const float3 _e614 = output_of(_e613);
+                        const float _e615 = resample_target(_e614);
+                        visible[min(uint(_e611), 7u)] = (_e615 > 0.0);
                     }
                 }
             }
@@ -2752,58 +2770,60 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
         if (all(loop_bound_26 == uint2(0u, 0u))) { break; }
         loop_bound_26 -= uint2(loop_bound_26.y == 0u, 1u);
         if (!loop_init_23) {
-            uint _e662 = q_4;
-            q_4 = (_e662 + 1u);
+            uint _e664 = q_4;
+            q_4 = (_e664 + 1u);
         }
         loop_init_23 = false;
-        uint _e625 = q_4;
-        if ((_e625 < K)) {
+        uint _e626 = q_4;
+        if ((_e626 < K)) {
         } else {
             break;
         }
         {
-            uint _e630 = reuse.visibility;
-            if (!((_e630 == 0u))) {
-                uint _e636 = q_4;
-                bool _e638 = visible[min(uint(_e636), 7u)];
-                local_13 = _e638;
+            uint _e631 = reuse.visibility;
+            if (!((_e631 == 0u))) {
+                uint _e637 = q_4;
+                bool _e639 = visible[min(uint(_e637), 7u)];
+                local_13 = _e639;
             } else {
                 local_13 = true;
             }
             bool keep = local_13;
-            uint _e644 = q_4;
+            const uint _e643 = next_index(pixel_1);
             uint _e646 = q_4;
-            uint _e649 = kept[min(uint(_e646), 7u)].light;
-            uint _e650 = q_4;
-            uint _e653 = kept[min(uint(_e650), 7u)].u;
-            uint _e654 = q_4;
-            float _e657 = kept[min(uint(_e654), 7u)].w;
+            uint _e648 = q_4;
+            uint _e651 = kept[min(uint(_e648), 7u)].light;
+            uint _e652 = q_4;
+            uint _e655 = kept[min(uint(_e652), 7u)].u;
+            uint _e656 = q_4;
+            float _e659 = kept[min(uint(_e656), 7u)].w;
             {
-                ReuseSlot _value4 = ConstructReuseSlot(_e649, _e653, (keep ? _e657 : 0.0));
-                reuse_next.Store(_e644*12+48+pixel_1*144+0, asuint(_value4.light));
-                reuse_next.Store(_e644*12+48+pixel_1*144+4, asuint(_value4.u));
-                reuse_next.Store(_e644*12+48+pixel_1*144+8, asuint(_value4.w));
+                ReuseSlot _value4 = ConstructReuseSlot(_e651, _e655, (keep ? _e659 : 0.0));
+                reuse_pixels.Store(_e646*12+48+_e643*144+0, asuint(_value4.light));
+                reuse_pixels.Store(_e646*12+48+_e643*144+4, asuint(_value4.u));
+                reuse_pixels.Store(_e646*12+48+_e643*144+8, asuint(_value4.w));
             }
         }
     }
-    float3 _e667 = n;
-    Material _e668 = m;
-    float _e671 = reuse.max_confidence;
-    const ReuseSurface _e673 = reuse_surface(x_18, _e667, _e668, min(confidence, _e671));
+    const uint _e667 = next_index(pixel_1);
+    float3 _e670 = n;
+    Material _e671 = m;
+    float _e674 = reuse.max_confidence;
+    const ReuseSurface _e676 = reuse_surface(x_18, _e670, _e671, min(confidence, _e674));
     {
-        ReuseSurface _value2 = _e673;
-        reuse_next.Store3(0+pixel_1*144+0, asuint(_value2.x));
-        reuse_next.Store(0+pixel_1*144+12, asuint(_value2.m));
-        reuse_next.Store3(0+pixel_1*144+16, asuint(_value2.n));
-        reuse_next.Store(0+pixel_1*144+28, asuint(_value2.base));
-        reuse_next.Store(0+pixel_1*144+32, asuint(_value2.rough));
-        reuse_next.Store(0+pixel_1*144+36, asuint(_value2.pad0_));
-        reuse_next.Store(0+pixel_1*144+40, asuint(_value2.pad1_));
-        reuse_next.Store(0+pixel_1*144+44, asuint(_value2.pad2_));
+        ReuseSurface _value2 = _e676;
+        reuse_pixels.Store3(0+_e667*144+0, asuint(_value2.x));
+        reuse_pixels.Store(0+_e667*144+12, asuint(_value2.m));
+        reuse_pixels.Store3(0+_e667*144+16, asuint(_value2.n));
+        reuse_pixels.Store(0+_e667*144+28, asuint(_value2.base));
+        reuse_pixels.Store(0+_e667*144+32, asuint(_value2.rough));
+        reuse_pixels.Store(0+_e667*144+36, asuint(_value2.pad0_));
+        reuse_pixels.Store(0+_e667*144+40, asuint(_value2.pad1_));
+        reuse_pixels.Store(0+_e667*144+44, asuint(_value2.pad2_));
     }
-    float3 _e676 = t.diffuse;
-    float3 _e678 = t.specular;
-    uint _e680 = count;
-    out_tex[texel_1] = float4((_e676 + _e678), float(_e680));
+    float3 _e679 = t.diffuse;
+    float3 _e681 = t.specular;
+    uint _e683 = count;
+    out_tex[texel_1] = float4((_e679 + _e681), float(_e683));
     return;
 }

@@ -24,7 +24,7 @@ pub(super) struct Counting {
     staging: wgpu::Buffer,
     /// Group 1 over the pass's lights (and occluders, reuse), one per
     /// parity of the reuse's ping-pong: made again with the pass's own.
-    pub(super) lights_groups: Vec<wgpu::BindGroup>,
+    pub(super) lights_group: wgpu::BindGroup,
     /// Group 0 by the engine's views, as the pass's own cache.
     pub(super) cache: ViewCache<Vec<wgpu::TextureView>>,
 }
@@ -77,13 +77,13 @@ impl DirectPass {
                 | wgpu::BufferUsages::COPY_SRC
                 | wgpu::BufferUsages::COPY_DST;
             let read = wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST;
-            let lights_groups = self.groups_for(&pipe.1).1;
+            let lights_group = self.groups_for(&pipe.1).1;
             self.counting = Some(Counting {
                 shadows,
                 pipe,
                 counters: zeroed(&self.gpu, "slc direct counters", bytes, rw),
                 staging: zeroed(&self.gpu, "slc direct counters staging", bytes, read),
-                lights_groups,
+                lights_group,
                 cache: ViewCache::new(),
             });
         }

@@ -227,9 +227,8 @@ pub struct DirectPass {
     other: Option<(Features, Pipe)>,
     /// The occluders' buffers and the normal offset.
     occluders: Option<(GpuOccluders, f32)>,
-    /// `direct_light`'s group 1, one per parity of the reuse's ping-pong
-    /// (one without reuse).
-    lights_groups: Vec<wgpu::BindGroup>,
+    /// `direct_light`'s group 1.
+    lights_group: wgpu::BindGroup,
     cull: UniformSlots,
     view: UniformSlots,
     cache: ViewCache<Vec<wgpu::TextureView>>,
@@ -239,13 +238,14 @@ pub struct DirectPass {
     counting: Option<Counting>,
 }
 
-/// The reuse's state: its uniforms, the two reservoir buffers (this
-/// record writes `pixels[parity]` and reads the other), the previous
-/// record's lights, and its view-projection and eye (none: no history).
+/// The reuse's state: its uniforms, the reservoir buffer (two halves of a
+/// pixel each: this record writes half `parity` and reads the other), the
+/// previous record's lights, and its view-projection and eye (none: no
+/// history).
 struct Reuse {
     settings: DirectReuse,
     params: UniformSlots,
-    pixels: [wgpu::Buffer; 2],
+    pixels: wgpu::Buffer,
     lights_prev: wgpu::Buffer,
     parity: usize,
     previous: Option<(Mat4, Vec3)>,
@@ -338,7 +338,8 @@ impl DirectPass {
         )?;
         // The light set's own kernels and buffers: checked by
         // `GpuLightSet::new` before it touches the device.
-        let reuse_bytes = DirectReuse::pixel_bytes(k) * w as u64 * h as u64;
+        // Two halves: the previous record's reservoirs and this record's.
+        let reuse_bytes = 2 * DirectReuse::pixel_bytes(k) * w as u64 * h as u64;
         if desc.reuse.is_some() {
             let lim = &gpu.limits;
             gpu.require(
@@ -365,14 +366,17 @@ impl DirectPass {
         let reuse = desc.reuse.map(|settings| Reuse {
             settings,
             params: UniformSlots::new::<ReuseParams>(gpu, "slc direct reuse", 1),
-            pixels: [0, 1].map(|_| {
-                zeroed(gpu, "slc direct reuse reservoirs", reuse_bytes, wgpu::BufferUsages::STORAGE)
-            }),
+            pixels: zeroed(
+                gpu,
+                "slc direct reuse reservoirs",
+                reuse_bytes,
+                wgpu::BufferUsages::STORAGE,
+            ),
             lights_prev: previous_lights(gpu, &set),
             parity: 0,
             previous: None,
         });
-        let (ranges_group, lights_groups) = groups(
+        let (ranges_group, lights_group) = groups(
             gpu,
             &set,
             &ranges.1,
@@ -394,7 +398,7 @@ impl DirectPass {
             shade_features: features,
             other: None,
             occluders: None,
-            lights_groups,
+            lights_group,
             cull,
             view,
             cache: ViewCache::new(),
@@ -460,19 +464,19 @@ impl DirectPass {
     /// the counting variant's too where it still fits (one built with
     /// shadows on or off as they are now; else the next count builds it).
     fn remake_groups(&mut self) {
-        (self.ranges_group, self.lights_groups) = self.groups_for(&self.shade.1);
+        (self.ranges_group, self.lights_group) = self.groups_for(&self.shade.1);
         if let Some(c) = &self.counting
             && c.shadows == self.occluders.is_some()
         {
-            let lights_groups = self.groups_for(&c.pipe.1).1;
+            let lights_group = self.groups_for(&c.pipe.1).1;
             let c = self.counting.as_mut().expect("checked above");
-            (c.lights_groups, c.cache) = (lights_groups, ViewCache::new());
+            (c.lights_group, c.cache) = (lights_group, ViewCache::new());
         }
     }
 
     /// `light_ranges`' group 0 and, for the `direct_light` variant laid out
-    /// as `shade`, its group 1 per parity ([`groups`]).
-    fn groups_for(&self, shade: &KernelLayout) -> (wgpu::BindGroup, Vec<wgpu::BindGroup>) {
+    /// as `shade`, its group 1 ([`groups`]).
+    fn groups_for(&self, shade: &KernelLayout) -> (wgpu::BindGroup, wgpu::BindGroup) {
         groups(
             &self.gpu,
             &self.set,
@@ -673,7 +677,7 @@ impl DirectPass {
                 has_history: r.previous.is_some() as u32,
                 radius: r.settings.radius,
                 visibility: r.settings.visibility as u32,
-                pad0: 0,
+                parity: r.parity as u32,
             };
             uploads.push(&r.params, &params);
         }
@@ -724,7 +728,6 @@ impl DirectPass {
                 })
                 .collect()
         };
-        let parity = self.reuse.as_ref().map_or(0, |r| r.parity);
         let (pipeline, group0, group1) = match (&mut self.counting, counting) {
             (Some(c), true) => {
                 let group0 = c.cache.get(key, || {
@@ -732,11 +735,11 @@ impl DirectPass {
                     res.push(("counters", crate::kernel::whole(&c.counters)));
                     c.pipe.1.group(gpu, 0, &res)
                 });
-                (&c.pipe.0, group0, c.lights_groups[parity].clone())
+                (&c.pipe.0, group0, c.lights_group.clone())
             }
             _ => {
                 let group0 = self.cache.get(key, || shade.group(gpu, 0, &resources()));
-                (&self.shade.0, group0, self.lights_groups[parity].clone())
+                (&self.shade.0, group0, self.lights_group.clone())
             }
         };
         let (w, h) = (self.desc.width, self.desc.height);
@@ -778,7 +781,7 @@ fn groups(
     ies: bool,
     occluders: Option<&GpuOccluders>,
     reuse: Option<&Reuse>,
-) -> (wgpu::BindGroup, Vec<wgpu::BindGroup>) {
+) -> (wgpu::BindGroup, wgpu::BindGroup) {
     let res = crate::kernel::whole;
     let ranges_group = ranges.group(
         gpu,
@@ -809,20 +812,10 @@ fn groups(
         Some(o) => lights.extend([("geo_nodes", res(&o.nodes)), ("geo_tris", res(&o.tris))]),
         None => {}
     }
-    let Some(r) = reuse else {
-        return (ranges_group, vec![shade.group(gpu, 1, &lights)]);
-    };
-    // The record of parity p writes pixels[p] and reads the other.
-    let parities = (0..2).map(|p| {
-        let mut with = lights.clone();
-        with.extend([
-            ("lights_prev", res(&r.lights_prev)),
-            ("reuse_prev", res(&r.pixels[1 - p])),
-            ("reuse_next", res(&r.pixels[p])),
-        ]);
-        shade.group(gpu, 1, &with)
-    });
-    (ranges_group, parities.collect())
+    if let Some(r) = reuse {
+        lights.extend([("lights_prev", res(&r.lights_prev)), ("reuse_pixels", res(&r.pixels))]);
+    }
+    (ranges_group, shade.group(gpu, 1, &lights))
 }
 
 /// A buffer for the previous record's lights, the size of `set`'s.
