@@ -390,8 +390,8 @@ fn stochastic_mean_matches_the_brute_force() {
 /// evaluated with its own lights), and with reuse of 2 neighbours.
 ///
 /// One last frame's relative RMSE, everything still: reuse below 0.85 of
-/// resampling without it, visibility reuse below 0.85 of reuse (measured
-/// on lavapipe, 8 frames: 0.115, 0.086, 0.065; weighted picks 0.237).
+/// resampling without it, visibility reuse below half of reuse (measured
+/// on lavapipe, 8 frames: 0.115, 0.089, 0.032; weighted picks 0.237).
 fn reused_picks_match_the_brute_force() {
     let Some(gpu) = gpu() else { return };
     let s = setup(gpu);
@@ -459,7 +459,7 @@ fn reused_picks_match_the_brute_force() {
         noise[0]
     );
     assert!(
-        noise[2] < 0.85 * noise[1],
+        noise[2] < 0.5 * noise[1],
         "visibility reuse's noise {:.4} against reuse's {:.4}",
         noise[2],
         noise[1]
