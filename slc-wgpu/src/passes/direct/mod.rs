@@ -120,11 +120,17 @@
 //!   for up to `max_confidence` frames of candidates and the culling's
 //!   noise averages over them; still unbiased. Measured on lavapipe, the
 //!   8th frame (`tests/tests/direct_shadows.rs`, `engine_direct.rs`,
-//!   docs/results/reused-picks.md): the shadow test 0.088 (visibility
-//!   reuse: 0.066) against resampling's 0.115 and weighted picks' 0.237;
-//!   the engine-pass scene per channel 0.0083 against weighted picks'
-//!   0.074 (0.11), its r + g + b 0.0081 against 0.0378; slc-bevy's
-//!   luminance RMSE 0.00022 against 0.086.
+//!   docs/results/reused-picks.md): the shadow test 0.089 against
+//!   resampling's 0.115 and weighted picks' 0.237; the unshadowed
+//!   engine-pass scene per channel 0.0083 against weighted picks' 0.074
+//!   (0.11), its r + g + b 0.0081 against 0.0378; slc-bevy's luminance
+//!   RMSE 0.00022 against 0.086. Where shadows are the noise, plain reuse
+//!   barely helps (the engine-pass scene shadowed by its boxes: per
+//!   channel 0.99 of weighted picks'); [`DirectReuse::visibility`] shadows
+//!   each record's own picks before they meet the history: 4 picks reach
+//!   0.23 of 8 weighted picks' relative RMSE there after 32 still frames,
+//!   at no more rays (7.2 per pixel against 7.4), and the shadow test's 8
+//!   picks 0.032 after 8 (biased where things move: see its docs).
 //! - `Uniform { k }`: `k` picks uniform among the `n` candidates (Algorithm
 //!   R), weighted `n/k` and `1/p`: the paper's reservoir.
 //! - `All`: every candidate, weighted `1/p` (exact given ξ): for small
