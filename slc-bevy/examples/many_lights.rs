@@ -23,7 +23,9 @@
 //! bench too); `SLC_BEVY_WALK=pixel` walks the light hierarchy once per
 //! pixel instead of once per tile (`SlcCamera::walk`; the bench too);
 //! `SLC_BEVY_RAY_QUERY=1` casts slc's shadow rays as hardware ray queries
-//! where the device has them (`SlcCamera::ray_query`; the bench too).
+//! where the device has them (`SlcCamera::ray_query`; the bench too);
+//! `SLC_BEVY_VISIBILITY=1` turns on the reuse's visibility reuse
+//! (`SlcCamera::visibility_reuse`; the bench too).
 //!
 //! **Frame-time bench** (no window, no display): `SLC_BEVY_BENCH=out.json`
 //! renders into an image target at `SLC_BEVY_SIZE` (default 1920x1080)
@@ -143,6 +145,11 @@ fn ray_query() -> bool {
     std::env::var("SLC_BEVY_RAY_QUERY").as_deref() == Ok("1")
 }
 
+/// Whether the reuse is visibility reuse: `SLC_BEVY_VISIBILITY=1`.
+fn visibility_reuse() -> bool {
+    std::env::var("SLC_BEVY_VISIBILITY").as_deref() == Ok("1")
+}
+
 /// How slc finds each pixel's lights: `SLC_BEVY_WALK` (`tile`, the
 /// default, or `pixel`; another value exits with the reason).
 fn walk() -> DirectWalk {
@@ -250,6 +257,7 @@ fn setup(
                 culling: culling(),
                 walk: walk(),
                 ray_query: ray_query(),
+                visibility_reuse: visibility_reuse(),
                 ..default()
             },
             Tonemapping::AcesFitted,
@@ -556,7 +564,8 @@ fn bench(lights: usize, out: &str) -> Result<(), String> {
         _ => "a WGSL walk",
     };
     println!(
-        "many_lights bench: {lights} lights, {w}x{h}, {frames} timed frames, slc's {slc_walk} walk, shadow rays by {rays}, on {adapter}"
+        "many_lights bench: {lights} lights, {w}x{h}, {frames} timed frames, slc's {slc_walk} walk, shadow rays by {rays}, visibility reuse {}, on {adapter}",
+        if visibility_reuse() { "on" } else { "off" }
     );
     let mut results = Vec::new();
     for (name, mode, shadows, resample, reuse) in CONFIGS {

@@ -74,7 +74,8 @@ fn new_view(
     } else {
         DirectSelection::Weighted { k: settings.picks }
     };
-    desc.reuse = (settings.resample && settings.reuse).then(DirectReuse::default);
+    desc.reuse = (settings.resample && settings.reuse)
+        .then(|| DirectReuse { visibility: settings.visibility_reuse, ..DirectReuse::default() });
     desc.walk = settings.walk;
     desc.outputs = DirectOutputs::BevyRadiance;
     desc.light_types = slc_shared_lights();
@@ -204,6 +205,7 @@ pub(crate) fn prepare_views(
             v.size != size
                 || (v.settings.picks, v.settings.resample, v.settings.reuse, v.settings.walk)
                     != (settings.picks, settings.resample, settings.reuse, settings.walk)
+                || v.settings.visibility_reuse != settings.visibility_reuse
                 || v.motion != motion
         });
         if stale {

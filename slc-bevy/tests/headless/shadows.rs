@@ -15,8 +15,11 @@ use bevy::light::{PointLightShadowMap, ShadowFilteringMethod};
 /// than 0.05 within `r` pixels of it (`r` = 1 per 96 of width), and a block
 /// is checked only if no edge pixel lies within `2r` of it. Checked blocks: (b) = (a) within the bound of [`compare`](super::compare);
 /// at least 16 of them, and at least 8 where the shadows take ≥ 10% of
-/// the light (so a missing shadow fails). Then again after the tall box
-/// moves, and after its mesh asset is edited in place.
+/// the light (so a missing shadow fails). With `SlcCamera::visibility_reuse`
+/// (the scene still), one frame after 16 at most half of one independent
+/// frame's luminance RMSE against Bevy's image away from the edges. Then
+/// again, without it, after the tall box moves, and after its mesh asset
+/// is edited in place.
 pub(super) fn shadows(app: &mut App) -> Result<String, String> {
     let world = app.world_mut();
     let old: Vec<Entity> = world.query_filtered::<Entity, With<SceneLight>>().iter(world).collect();
@@ -159,6 +162,38 @@ block {i}: slc {:.5} vs Bevy shadowed {:.5} (unshadowed {:.5})",
             "{report}
 too few blocks to say much"
         ));
+    }
+    if !suffix.is_empty() {
+        return Ok(report);
+    }
+    // Visibility reuse (`SlcCamera::visibility_reuse`), the scene still:
+    // one frame after 16 against Bevy's shadow maps, away from the edges,
+    // at most half of one independent frame's error (the frames above).
+    let luminance_rmse = |img: &[[f32; 3]]| {
+        let (mut se, mut n) = (0.0f64, 0usize);
+        for i in (0..img.len()).filter(|&i| !edge[i]) {
+            se += (luminance(img[i]) - luminance(truth[i])).powi(2);
+            n += 1;
+        }
+        (se / n.max(1) as f64).sqrt()
+    };
+    let single = shots.iter().map(|f| luminance_rmse(f)).sum::<f64>() / shots.len() as f64;
+    let set_reuse = |app: &mut App, on: bool| {
+        let camera = app.world().resource::<Target>().1;
+        let mut c = app.world_mut().get_mut::<SlcCamera>(camera).expect("camera");
+        (c.reuse, c.visibility_reuse) = (on, on);
+    };
+    set_reuse(app, true);
+    let reused = capture(app, 16, 1).remove(0);
+    set_reuse(app, false);
+    write_images(&[("shadows-slc-visibility-reuse-one-frame", &reused)]);
+    let er = luminance_rmse(&reused);
+    let report = format!(
+        "{report}; one frame with visibility reuse after 16: luminance RMSE against Bevy's shadow maps away from the edges {er:.5}, one independent frame's {single:.5} ({:.3})",
+        er / single
+    );
+    if er > 0.5 * single {
+        return Err(format!("{report}\nvisibility reuse should halve one frame's error"));
     }
     Ok(report)
 }
