@@ -54,6 +54,9 @@ const LAYOUTS: usize = 4;
 const FRAMES: u32 = 256;
 const BLOCK: u32 = 16;
 const EPS: f32 = 0.02;
+/// The pass's default shadow-ray offset along the normal, a fraction of the
+/// eye distance (`Shadows::normal_offset`).
+const SHADOW_OFFSET: f32 = 1e-3;
 
 /// The engine's device: default limits, no features.
 fn engine_device() -> (wgpu::Device, wgpu::Queue) {
@@ -326,6 +329,17 @@ fn shading_points(inv: Mat4, depths: &[f32], normals: &[Vec3]) -> Vec<Option<(Ve
 
 /// Brute force at every pixel: every light, no culling, in f64.
 fn brute_force(points: &[Option<(Vec3, Vec3)>], lights: &[Light]) -> Vec<DVec3> {
+    irradiance(points, lights, None)
+}
+
+/// [`brute_force`], each light seen where `shadows`' occluders (with the
+/// eye) let a ray from the surface reach it (none: every light), the ray
+/// leaving the surface as the pass's rays do.
+fn irradiance(
+    points: &[Option<(Vec3, Vec3)>],
+    lights: &[Light],
+    shadows: Option<(&slc_cpu::geometry::Geometry, Vec3)>,
+) -> Vec<DVec3> {
     points
         .iter()
         .map(|p| {
@@ -336,7 +350,10 @@ fn brute_force(points: &[Option<(Vec3, Vec3)>], lights: &[Light]) -> Vec<DVec3> 
                 let v = x - y;
                 let d2 = v.dot(v);
                 let cos = -n.dot(v / d2.sqrt());
-                if cos > 0.0 && d2 > 0.0 {
+                let seen = |(geo, eye): (&slc_cpu::geometry::Geometry, Vec3)| {
+                    !geo.occluded(x + n * (SHADOW_OFFSET * (eye - x).length()), y)
+                };
+                if cos > 0.0 && d2 > 0.0 && shadows.is_none_or(seen) {
                     e += l.intensity(v / d2.sqrt()).as_dvec3()
                         * (cos * slc_core::light::inverse_square(d2)) as f64;
                 }
@@ -344,6 +361,34 @@ fn brute_force(points: &[Option<(Vec3, Vec3)>], lights: &[Light]) -> Vec<DVec3> 
             e
         })
         .collect()
+}
+
+/// The depth texture's depth aspect and the normal texture, as views.
+fn views(depth: &wgpu::Texture, normal: &wgpu::Texture) -> (wgpu::TextureView, wgpu::TextureView) {
+    (
+        depth.create_view(&wgpu::TextureViewDescriptor {
+            aspect: wgpu::TextureAspect::DepthOnly,
+            ..Default::default()
+        }),
+        normal.create_view(&Default::default()),
+    )
+}
+
+/// The pass's output: `Rgba32Float`, read back, and read by the temporal
+/// pass (TEXTURE_BINDING).
+fn output_texture(device: &wgpu::Device) -> wgpu::Texture {
+    device.create_texture(&wgpu::TextureDescriptor {
+        label: Some("direct"),
+        size: wgpu::Extent3d { width: W, height: H, depth_or_array_layers: 1 },
+        mip_level_count: 1,
+        sample_count: 1,
+        dimension: wgpu::TextureDimension::D2,
+        format: wgpu::TextureFormat::Rgba32Float,
+        usage: wgpu::TextureUsages::STORAGE_BINDING
+            | wgpu::TextureUsages::COPY_SRC
+            | wgpu::TextureUsages::TEXTURE_BINDING,
+        view_formats: &[],
+    })
 }
 
 fn engine_program_matches_brute_force() {
@@ -358,26 +403,8 @@ fn engine_program_matches_brute_force() {
     let layouts: Vec<Vec<Light>> = (0..LAYOUTS).map(lights).collect();
     let truth: Vec<Vec<DVec3>> = layouts.iter().map(|l| brute_force(&points, l)).collect();
 
-    let (dv, nv) = (
-        depth.create_view(&wgpu::TextureViewDescriptor {
-            aspect: wgpu::TextureAspect::DepthOnly,
-            ..Default::default()
-        }),
-        normal.create_view(&Default::default()),
-    );
-    let output = device.create_texture(&wgpu::TextureDescriptor {
-        label: Some("direct"),
-        size: wgpu::Extent3d { width: W, height: H, depth_or_array_layers: 1 },
-        mip_level_count: 1,
-        sample_count: 1,
-        dimension: wgpu::TextureDimension::D2,
-        format: wgpu::TextureFormat::Rgba32Float,
-        // TEXTURE_BINDING: the temporal pass reads it.
-        usage: wgpu::TextureUsages::STORAGE_BINDING
-            | wgpu::TextureUsages::COPY_SRC
-            | wgpu::TextureUsages::TEXTURE_BINDING,
-        view_formats: &[],
-    });
+    let (dv, nv) = views(&depth, &normal);
+    let output = output_texture(&device);
     let ov = output.create_view(&Default::default());
     let inputs = DirectInputs::new(
         GBuffer { surface: Surface::Depth { depth: &dv, inv_view_proj: inv }, normal: &nv, eye },
@@ -590,42 +617,6 @@ fn engine_program_matches_brute_force() {
     gpu.take_errors().unwrap();
 }
 
-/// The pass's default shadow-ray offset along the normal, a fraction of the
-/// eye distance (`Shadows::normal_offset`).
-const SHADOW_OFFSET: f32 = 1e-3;
-
-/// Brute force with shadows: every light at every pixel, each with one
-/// shadow ray through slc-cpu's BVH (obvhs, another traversal than the
-/// kernel's) over the floor and boxes, leaving the surface as the pass's
-/// rays do.
-fn shadowed_brute_force(
-    points: &[Option<(Vec3, Vec3)>],
-    lights: &[Light],
-    triangles: &[[Vec3; 3]],
-    eye: Vec3,
-) -> Vec<DVec3> {
-    let geo = slc_cpu::geometry::Geometry::new(triangles);
-    points
-        .iter()
-        .map(|p| {
-            let Some((x, n)) = *p else { return DVec3::ZERO };
-            let origin = x + n * (SHADOW_OFFSET * (eye - x).length());
-            let mut e = DVec3::ZERO;
-            for l in lights {
-                let y = l.bound().center;
-                let v = x - y;
-                let d2 = v.dot(v);
-                let cos = -n.dot(v / d2.sqrt());
-                if cos > 0.0 && d2 > 0.0 && !geo.occluded(origin, y) {
-                    e += l.intensity(v / d2.sqrt()).as_dvec3()
-                        * (cos * slc_core::light::inverse_square(d2)) as f64;
-                }
-            }
-            e
-        })
-        .collect()
-}
-
 /// Issue 47's noise target with shadows: the floor and boxes shadow the
 /// 3,000 still lights (the engine's triangles as slc's `Occluders`; 447 of
 /// the 5,916 shaded pixels lose a fifth of their light or more). Reused picks with visibility reuse, 4
@@ -655,7 +646,10 @@ fn shadowed_reuse_is_a_quarter_of_weighted_noise() {
         .map(|t| [0, 1, 2].map(|k| Vec3::new(t[k][0], t[k][1], t[k][2])))
         .collect();
     let still = lights(0);
-    let truth = shadowed_brute_force(&points, &still, &triangles, eye);
+    // The truth: one shadow ray per light through slc-cpu's BVH (obvhs,
+    // another traversal than the kernel's) over the floor and boxes.
+    let geo = slc_cpu::geometry::Geometry::new(&triangles);
+    let truth = irradiance(&points, &still, Some((&geo, eye)));
     let open = brute_force(&points, &still);
     // The shadows matter: pixels that lose a fifth of their light or more.
     let (shaded, dark) = truth
@@ -672,23 +666,8 @@ fn shadowed_reuse_is_a_quarter_of_weighted_noise() {
         Occluders::new(&[triangles], &[Instance { mesh: 0, transform: Affine3A::IDENTITY }])
             .unwrap();
 
-    let (dv, nv) = (
-        depth.create_view(&wgpu::TextureViewDescriptor {
-            aspect: wgpu::TextureAspect::DepthOnly,
-            ..Default::default()
-        }),
-        normal.create_view(&Default::default()),
-    );
-    let output = device.create_texture(&wgpu::TextureDescriptor {
-        label: Some("direct"),
-        size: wgpu::Extent3d { width: W, height: H, depth_or_array_layers: 1 },
-        mip_level_count: 1,
-        sample_count: 1,
-        dimension: wgpu::TextureDimension::D2,
-        format: wgpu::TextureFormat::Rgba32Float,
-        usage: wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::COPY_SRC,
-        view_formats: &[],
-    });
+    let (dv, nv) = views(&depth, &normal);
+    let output = output_texture(&device);
     let ov = output.create_view(&Default::default());
     let inputs = DirectInputs {
         // The reuse reprojects with the camera's view-projection.
