@@ -5,7 +5,7 @@
 
 use crate::extract::{ExtractedLights, ExtractedOccluders, slc_lights};
 use crate::gpu::{GBUFFER_FORMAT, Gpu, HDR_FORMAT, texture};
-use crate::{SlcCamera, SlcStatus, SlcWork};
+use crate::{DirectWalk, SlcCamera, SlcStatus, SlcWork};
 use bevy::core_pipeline::prepass::{MotionVectorPrepass, ViewPrepassTextures};
 use bevy::prelude::*;
 use bevy::render::camera::ExtractedCamera;
@@ -57,6 +57,12 @@ struct View {
 /// Per render-world camera entity.
 #[derive(Resource, Default)]
 pub(crate) struct Views(HashMap<Entity, View>);
+
+/// The camera settings a view's direct pass is built for: a change of any
+/// rebuilds the view.
+fn pass_built_for(s: &SlcCamera) -> (u32, bool, bool, bool, DirectWalk) {
+    (s.picks, s.resample, s.reuse, s.visibility_reuse, s.walk)
+}
 
 fn new_view(
     gpu: &Gpu,
@@ -203,9 +209,7 @@ pub(crate) fn prepare_views(
         }
         let stale = views.0.get(&entity).is_none_or(|v| {
             v.size != size
-                || (v.settings.picks, v.settings.resample, v.settings.reuse, v.settings.walk)
-                    != (settings.picks, settings.resample, settings.reuse, settings.walk)
-                || v.settings.visibility_reuse != settings.visibility_reuse
+                || pass_built_for(&v.settings) != pass_built_for(settings)
                 || v.motion != motion
         });
         if stale {

@@ -227,12 +227,17 @@ fn sample_key(li: u32, cells: u32) -> vec2u {
     return vec2u(li, select(0u, cells, lights[li].kind == LIGHT_TRIANGLE));
 }
 
-/// What the reused pick of light `li` at grid cells `cells` adds at `x`
-/// (normal `n`, material `m`), unranged, weight 1; shadowed (its ray
-/// leaving `x + eps·n`) where `trace`.
-fn shade_sample(li: u32, cells: u32, x: vec3f, n: vec3f, m: Material, eps: f32, trace: bool) -> Shaded {
-    let c = connect_record(lights[li], x, n, n, UNRANGED, UNRANGED, 1.0, grid_coordinate(cells), grid_coordinate(cells << 16u), eps, trace);
-    return shade_connection(c, x, n, m);
+/// The reused pick of light `li` at grid cells `cells` connected to `x`
+/// (normal `n`), unranged, weight 1; shadowed (its ray leaving
+/// `x + eps·n`) where `trace`.
+fn sample_connection(li: u32, cells: u32, x: vec3f, n: vec3f, eps: f32, trace: bool) -> Connection {
+    return connect_record(lights[li], x, n, n, UNRANGED, UNRANGED, 1.0, grid_coordinate(cells), grid_coordinate(cells << 16u), eps, trace);
+}
+
+/// Whether a pick whose unshadowed target is positive reaches `x`: its
+/// shadow ray is not blocked (its connection keeps light).
+fn sample_reaches(li: u32, cells: u32, x: vec3f, n: vec3f, eps: f32) -> bool {
+    return any(sample_connection(li, cells, x, n, eps, true).e > vec3f(0.0));
 }
 
 /// The previous-frame pixels pixel `x` (normal `n`, distance `d` from the
@@ -553,7 +558,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u, @builtin(local_invocation_ind
     var fresh_visible: array<bool, K>;
     for (var q = 0u; q < K; q++) {
         if fresh_firsts[q] == q {
-            fresh_visible[q] = resample_target(output_of(shade_sample(slot_light[q], slot_cells[q], x, n, m, eps, true))) > 0.0;
+            fresh_visible[q] = sample_reaches(slot_light[q], slot_cells[q], x, n, eps);
         } else if fresh_firsts[q] < K {
             fresh_visible[q] = fresh_visible[fresh_firsts[q]];
         }
@@ -603,9 +608,10 @@ fn main(@builtin(global_invocation_id) gid: vec3u, @builtin(local_invocation_ind
                 seen = fresh_visible[j];
             }
         }
-        var shaded = shade_sample(fin[k].light, fin[k].u, x, n, m, eps, !known);
-        if known && !seen {
-            shaded = Shaded(vec3f(0.0), vec3f(0.0), vec3f(0.0));
+        // A known occluded sample adds nothing and is not evaluated.
+        var shaded = Shaded(vec3f(0.0), vec3f(0.0), vec3f(0.0));
+        if !known || seen {
+            shaded = shade_connection(sample_connection(fin[k].light, fin[k].u, x, n, eps, !known), x, n, m);
         }
         t = add(t, scaled(shaded, w));
         for (var j = k; j < K; j++) {

@@ -602,9 +602,9 @@ fn bevy_f0_(reflectance: f32) -> f32 {
 fn bevy_dfg(r_4: f32, n_v_2: f32) -> f32 {
     let rx = (1f - r_4);
     let a004_ = ((min((rx * rx), exp2((-9.28f * n_v_2))) * rx) + (0.0425f - (0.0275f * r_4)));
-    let x_16 = max(((1.04f - (0.572f * r_4)) - (1.04f * a004_)), 0.00005f);
+    let x_17 = max(((1.04f - (0.572f * r_4)) - (1.04f * a004_)), 0.00005f);
     let y_1 = max((((0.022f * r_4) - 0.04f) + (1.04f * a004_)), 0.00005f);
-    return (x_16 + y_1);
+    return (x_17 + y_1);
 }
 
 fn bevy_brdf(base_2: vec3<f32>, metallic_3: f32, r_5: f32, reflectance_1: f32, n_4: vec3<f32>, v_1: vec3<f32>, l: vec3<f32>) -> vec3<f32> {
@@ -709,8 +709,8 @@ fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin_1: vec3<f32>, bmax_1: vec3<f32>
 fn triangle_normal(a_4: vec3<f32>, b_3: vec3<f32>, c_6: vec3<f32>) -> vec3<f32> {
     var local_22: bool;
 
-    let n_15 = cross((b_3 - a_4), (c_6 - a_4));
-    let l2_ = dot(n_15, n_15);
+    let n_16 = cross((b_3 - a_4), (c_6 - a_4));
+    let l2_ = dot(n_16, n_16);
     if !(!((l2_ > 0f))) {
         local_22 = !((l2_ < 300000000000000000000000000000000000000f));
     } else {
@@ -720,7 +720,7 @@ fn triangle_normal(a_4: vec3<f32>, b_3: vec3<f32>, c_6: vec3<f32>) -> vec3<f32> 
     if _e17 {
         return vec3<f32>(0f, 0f, 0f);
     }
-    return (n_15 / vec3(sqrt(l2_)));
+    return (n_16 / vec3(sqrt(l2_)));
 }
 
 fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_4: vec3<f32>, c_7: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
@@ -776,9 +776,9 @@ fn reproject(c0_: vec4<f32>, c1_: vec4<f32>, c2_: vec4<f32>, c3_: vec4<f32>, p_2
     if (clip.w <= 0f) {
         return vec3<f32>(-1f, -1f, 0f);
     }
-    let x_17 = (((((clip.x / clip.w) + 1f) * 0.5f) * width) - 0.5f);
+    let x_18 = (((((clip.x / clip.w) + 1f) * 0.5f) * width) - 0.5f);
     let y_2 = ((((1f - (clip.y / clip.w)) * 0.5f) * height) - 0.5f);
-    return vec3<f32>(x_17, y_2, clip.w);
+    return vec3<f32>(x_18, y_2, clip.w);
 }
 
 fn history_matches(n_5: vec3<f32>, nh: vec3<f32>, p_3: vec3<f32>, oh: f32, d_4: f32) -> bool {
@@ -833,15 +833,15 @@ fn trace(o_2: vec3<f32>, d_5: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
     let _e14 = ray_inverse3_(d_5);
     loop {
         let _e21 = node_3;
-        let n_16 = geo_nodes[_e21];
+        let n_17 = geo_nodes[_e21];
         let _e27 = hit.t;
-        let _e28 = ray_aabb(o_2, _e14, n_16.bmin, n_16.bmax, _e27);
+        let _e28 = ray_aabb(o_2, _e14, n_17.bmin, n_17.bmax, _e27);
         if (_e28 >= 0f) {
-            if (n_16.count > 0u) {
-                i = n_16.first;
+            if (n_17.count > 0u) {
+                i = n_17.first;
                 loop {
                     let _e36 = i;
-                    if (_e36 < (n_16.first + n_16.count)) {
+                    if (_e36 < (n_17.first + n_17.count)) {
                     } else {
                         break;
                     }
@@ -869,11 +869,11 @@ fn trace(o_2: vec3<f32>, d_5: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
                 let _e60 = sp;
                 if (_e60 < 64u) {
                     let _e63 = sp;
-                    stack[_e63] = (n_16.first + 1u);
+                    stack[_e63] = (n_17.first + 1u);
                     let _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_3 = n_16.first;
+                node_3 = n_17.first;
                 continue;
             }
         }
@@ -1495,16 +1495,20 @@ fn sample_key(li_7: u32, cells_1: u32) -> vec2<u32> {
     return vec2<u32>(li_7, select(0u, cells_1, (_e6 == LIGHT_TRIANGLE)));
 }
 
-fn shade_sample(li_8: u32, cells_2: u32, x_13: vec3<f32>, n_12: vec3<f32>, m_5: Material, eps_3: f32, trace_4: bool) -> Shaded {
-    let _e9 = lights[li_8];
-    let _e13 = grid_coordinate(cells_2);
-    let _e16 = grid_coordinate((cells_2 << 16u));
-    let _e17 = connect_record(_e9, x_13, n_12, n_12, UNRANGED, UNRANGED, 1f, _e13, _e16, eps_3, trace_4);
-    let _e18 = shade_connection(_e17, x_13, n_12, m_5);
-    return _e18;
+fn sample_connection(li_8: u32, cells_2: u32, x_13: vec3<f32>, n_12: vec3<f32>, eps_3: f32, trace_4: bool) -> Connection {
+    let _e8 = lights[li_8];
+    let _e12 = grid_coordinate(cells_2);
+    let _e15 = grid_coordinate((cells_2 << 16u));
+    let _e16 = connect_record(_e8, x_13, n_12, n_12, UNRANGED, UNRANGED, 1f, _e12, _e15, eps_3, trace_4);
+    return _e16;
 }
 
-fn reuse_domains(x_14: vec3<f32>, n_13: vec3<f32>, d_6: f32, h_2: u32, doms_1: ptr<function, array<Domain, 3>>) -> u32 {
+fn sample_reaches(li_9: u32, cells_3: u32, x_14: vec3<f32>, n_13: vec3<f32>, eps_4: f32) -> bool {
+    let _e6 = sample_connection(li_9, cells_3, x_14, n_13, eps_4, true);
+    return any((_e6.e > vec3(0f)));
+}
+
+fn reuse_domains(x_15: vec3<f32>, n_14: vec3<f32>, d_6: f32, h_2: u32, doms_1: ptr<function, array<Domain, 3>>) -> u32 {
     var nd: u32 = 0u;
     var hr: u32;
     var j_5: u32 = 0u;
@@ -1528,7 +1532,7 @@ fn reuse_domains(x_14: vec3<f32>, n_13: vec3<f32>, d_6: f32, h_2: u32, doms_1: p
     let _e24 = reuse.c3_;
     let _e27 = view.width;
     let _e31 = view.height;
-    let _e33 = reproject(_e15, _e18, _e21, _e24, x_14, f32(_e27), f32(_e31));
+    let _e33 = reproject(_e15, _e18, _e21, _e24, x_15, f32(_e27), f32(_e31));
     if (_e33.z <= 0f) {
         return 0u;
     }
@@ -1621,7 +1625,7 @@ fn reuse_domains(x_14: vec3<f32>, n_13: vec3<f32>, d_6: f32, h_2: u32, doms_1: p
             }
             let _e143 = local_43;
             if !(_e143) {
-                let _e151 = history_matches(n_13, s_13.n, x_14, dot(s_13.n, s_13.x), d_6);
+                let _e151 = history_matches(n_14, s_13.n, x_15, dot(s_13.n, s_13.x), d_6);
                 local_44 = !(_e151);
             } else {
                 local_44 = true;
@@ -1648,7 +1652,7 @@ fn reuse_domains(x_14: vec3<f32>, n_13: vec3<f32>, d_6: f32, h_2: u32, doms_1: p
     return _e178;
 }
 
-fn gris_combine(q_6: u32, cur: ReuseSlot, cur_ris: bool, cur_c: f32, k0_: u32, k1_: u32, x_15: vec3<f32>, n_14: vec3<f32>, m_6: Material, doms_2: ptr<function, array<Domain, 3>>, hs_1: ptr<function, u32>) -> ReuseSlot {
+fn gris_combine(q_6: u32, cur: ReuseSlot, cur_ris: bool, cur_c: f32, k0_: u32, k1_: u32, x_16: vec3<f32>, n_15: vec3<f32>, m_5: Material, doms_2: ptr<function, array<Domain, 3>>, hs_1: ptr<function, u32>) -> ReuseSlot {
     var w_sum_3: f32 = 0f;
     var out: ReuseSlot = ReuseSlot(0u, 0u, 0f);
     var out_target: f32 = 0f;
@@ -1693,7 +1697,7 @@ fn gris_combine(q_6: u32, cur: ReuseSlot, cur_ris: bool, cur_c: f32, k0_: u32, k
             let _e55 = s_11.light;
             let _e57 = lights[_e55];
             let _e59 = s_11.u;
-            let _e60 = reuse_target(q_6, _e57, _e59, x_15, n_14, m_6);
+            let _e60 = reuse_target(q_6, _e57, _e59, x_16, n_15, m_5);
             if !((_e60 > 0f)) {
                 continue;
             }
@@ -1863,7 +1867,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
     let _e33 = nn;
     let len2_ = dot(_e32, _e33);
     let _e35 = s;
-    let x_18 = _e35.xyz;
+    let x_19 = _e35.xyz;
     if inside {
         let _e40 = s.w;
         local_1 = (_e40 > 0f);
@@ -1878,7 +1882,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
     }
     let _e50 = local_2;
     if _e50 {
-        local_3 = all((abs(x_18) <= vec3(340282350000000000000000000000000000000f)));
+        local_3 = all((abs(x_19) <= vec3(340282350000000000000000000000000000000f)));
     } else {
         local_3 = false;
     }
@@ -1893,7 +1897,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
         let mr = textureLoad(metal_rough_tex, texel_1, 0i);
         let _e83 = textureLoad(base_color_tex, texel_1, 0i);
         let _e90 = view.eye;
-        let _e93 = material_of(_e83.xyz, mr.z, mr.y, mr.w, normalize((_e90 - x_18)));
+        let _e93 = material_of(_e83.xyz, mr.z, mr.y, mr.w, normalize((_e90 - x_19)));
         m = _e93;
         let _e95 = m.base;
         let _e97 = m.metallic;
@@ -1912,7 +1916,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
     let _e114 = range_lobe(_e113);
     let _e117 = view.shadow_offset;
     let _e120 = view.eye;
-    let eps_4 = (_e117 * length((_e120 - x_18)));
+    let eps_5 = (_e117 * length((_e120 - x_19)));
     let _e126 = view.seed;
     let _e130 = view.width;
     let _e136 = view.frame;
@@ -1920,7 +1924,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
     let _e138 = pick_stream(_e137);
     h = _e138;
     hc = _e137;
-    let _e160 = tile_walk_begin(lid, x_18, _e114.w, has_3);
+    let _e160 = tile_walk_begin(lid, x_19, _e114.w, has_3);
     loop {
         let _e163 = start;
         if (_e163 < _e160.total) {
@@ -1943,7 +1947,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
                     if !(!(has_3)) {
                         let _e182 = bsh_nodes[b_10];
                         let _e183 = r;
-                        let _e184 = bsh_reaches(_e182, x_18, _e183, _e114);
+                        let _e184 = bsh_reaches(_e182, x_19, _e183, _e114);
                         local_4 = !(_e184);
                     } else {
                         local_4 = true;
@@ -1952,7 +1956,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
                     if _e187 {
                         continue;
                     }
-                    let li_9 = bsh_nodes[b_10].light;
+                    let li_10 = bsh_nodes[b_10].light;
                     let _e192 = count;
                     count = (_e192 + 1u);
                     let _e195 = h;
@@ -1971,7 +1975,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
                     let _e206 = n;
                     let _e207 = r;
                     let _e208 = m;
-                    let _e213 = shade_pick_traced(li_9, x_18, _e206, _e207, _e114, _e208, 1f, u_5.x, u_5.y, eps_4, false);
+                    let _e213 = shade_pick_traced(li_10, x_19, _e206, _e207, _e114, _e208, 1f, u_5.x, u_5.y, eps_5, false);
                     let _e214 = output_of(_e213);
                     let _e215 = resample_target(_e214);
                     if (_e215 > 0f) {
@@ -2000,7 +2004,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
                                 let _e241 = local_5;
                                 if _e241 {
                                     let _e242 = q;
-                                    slot_light[_e242] = li_9;
+                                    slot_light[_e242] = li_10;
                                     let _e244 = q;
                                     slot_u[_e244] = u_5;
                                     let _e246 = q;
@@ -2045,7 +2049,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
     let _e287 = n;
     let _e290 = view.eye;
     let _e294 = reuse_stream(_e137, 0u);
-    let _e295 = reuse_domains(x_18, _e287, length((_e290 - x_18)), _e294, (&doms));
+    let _e295 = reuse_domains(x_19, _e287, length((_e290 - x_19)), _e294, (&doms));
     if (_e295 > 0u) {
         let _e302 = doms[0].temporal;
         local_6 = _e302;
@@ -2108,285 +2112,284 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
                 let _e371 = q_2;
                 let _e373 = slot_cells[_e371];
                 let _e374 = n;
-                let _e375 = m;
-                let _e377 = shade_sample(_e370, _e373, x_18, _e374, _e375, eps_4, true);
-                let _e378 = output_of(_e377);
-                let _e379 = resample_target(_e378);
-                fresh_visible[_e366] = (_e379 > 0f);
+                let _e375 = sample_reaches(_e370, _e373, x_19, _e374, eps_5);
+                fresh_visible[_e366] = _e375;
             } else {
-                let _e382 = q_2;
-                if (_e355[_e382] < K) {
-                    let _e386 = q_2;
-                    let _e388 = q_2;
-                    let _e391 = fresh_visible[_e355[_e388]];
-                    fresh_visible[_e386] = _e391;
+                let _e376 = q_2;
+                if (_e355[_e376] < K) {
+                    let _e380 = q_2;
+                    let _e382 = q_2;
+                    let _e385 = fresh_visible[_e355[_e382]];
+                    fresh_visible[_e380] = _e385;
                 }
             }
         }
         continuing {
-            let _e393 = q_2;
-            q_2 = (_e393 + 1u);
+            let _e387 = q_2;
+            q_2 = (_e387 + 1u);
         }
     }
     loop {
-        let _e399 = q_3;
-        if (_e399 < K) {
+        let _e393 = q_3;
+        if (_e393 < K) {
         } else {
             break;
         }
         {
-            let _e402 = q_3;
-            let _e404 = slot_p[_e402];
-            if (_e404 > 0f) {
-                let _e411 = reuse.visibility;
-                if !((_e411 == 0u)) {
-                    let _e417 = q_3;
-                    let _e419 = fresh_visible[_e417];
-                    local_9 = _e419;
+            let _e396 = q_3;
+            let _e398 = slot_p[_e396];
+            if (_e398 > 0f) {
+                let _e405 = reuse.visibility;
+                if !((_e405 == 0u)) {
+                    let _e411 = q_3;
+                    let _e413 = fresh_visible[_e411];
+                    local_9 = _e413;
                 } else {
                     local_9 = true;
                 }
-                let _e421 = local_9;
-                local_8 = _e421;
+                let _e415 = local_9;
+                local_8 = _e415;
             } else {
                 local_8 = false;
             }
             let fresh = local_8;
+            let _e418 = q_3;
+            let _e420 = q_3;
+            let _e421 = q_3;
+            let _e423 = slot_light[_e421];
             let _e424 = q_3;
-            let _e426 = q_3;
-            let _e427 = q_3;
-            let _e429 = slot_light[_e427];
-            let _e430 = q_3;
-            let _e432 = slot_cells[_e430];
-            let _e433 = total;
-            let _e434 = q_3;
-            let _e436 = slot_target(_e433, _e434, K);
-            let _e443 = n;
-            let _e444 = m;
-            let _e445 = gris_combine(_e426, ReuseSlot(_e429, _e432, select(0f, _e436, fresh)), true, 1f, 0u, first_1, x_18, _e443, _e444, (&doms), (&hs));
-            kept[_e424] = _e445;
-            let _e446 = q_3;
-            let _e448 = q_3;
-            let _e450 = kept[_e448];
-            fin[_e446] = _e450;
+            let _e426 = slot_cells[_e424];
+            let _e427 = total;
+            let _e428 = q_3;
+            let _e430 = slot_target(_e427, _e428, K);
+            let _e437 = n;
+            let _e438 = m;
+            let _e439 = gris_combine(_e420, ReuseSlot(_e423, _e426, select(0f, _e430, fresh)), true, 1f, 0u, first_1, x_19, _e437, _e438, (&doms), (&hs));
+            kept[_e418] = _e439;
+            let _e440 = q_3;
+            let _e442 = q_3;
+            let _e444 = kept[_e442];
+            fin[_e440] = _e444;
             if (_e295 > first_1) {
-                let _e452 = q_3;
-                let _e454 = q_3;
-                let _e455 = q_3;
-                let _e457 = kept[_e455];
-                let _e459 = n;
-                let _e460 = m;
-                let _e461 = gris_combine(_e454, _e457, false, confidence, first_1, _e295, x_18, _e459, _e460, (&doms), (&hs));
-                fin[_e452] = _e461;
+                let _e446 = q_3;
+                let _e448 = q_3;
+                let _e449 = q_3;
+                let _e451 = kept[_e449];
+                let _e453 = n;
+                let _e454 = m;
+                let _e455 = gris_combine(_e448, _e451, false, confidence, first_1, _e295, x_19, _e453, _e454, (&doms), (&hs));
+                fin[_e446] = _e455;
             }
         }
         continuing {
-            let _e463 = q_3;
-            q_3 = (_e463 + 1u);
+            let _e457 = q_3;
+            q_3 = (_e457 + 1u);
         }
     }
     loop {
-        let _e469 = k;
-        if (_e469 < K) {
+        let _e463 = k;
+        if (_e463 < K) {
         } else {
             break;
         }
         {
+            let _e466 = k;
+            let _e468 = k;
+            let _e471 = fin[_e468].light;
             let _e472 = k;
-            let _e474 = k;
-            let _e477 = fin[_e474].light;
-            let _e478 = k;
-            let _e481 = fin[_e478].u;
-            let _e482 = sample_key(_e477, _e481);
-            keys[_e472] = _e482;
-            let _e483 = k;
-            let _e485 = k;
-            let _e488 = fin[_e485].w;
-            held[_e483] = (_e488 > 0f);
+            let _e475 = fin[_e472].u;
+            let _e476 = sample_key(_e471, _e475);
+            keys[_e466] = _e476;
+            let _e477 = k;
+            let _e479 = k;
+            let _e482 = fin[_e479].w;
+            held[_e477] = (_e482 > 0f);
         }
         continuing {
-            let _e492 = k;
-            k = (_e492 + 1u);
+            let _e486 = k;
+            k = (_e486 + 1u);
         }
     }
-    let _e494 = keys;
-    let _e495 = held;
-    let _e496 = first_holders(_e494, _e495);
+    let _e488 = keys;
+    let _e489 = held;
+    let _e490 = first_holders(_e488, _e489);
     loop {
-        let _e500 = k_1;
-        if (_e500 < K) {
+        let _e494 = k_1;
+        if (_e494 < K) {
         } else {
             break;
         }
         {
-            let _e503 = k_1;
-            let _e505 = k_1;
-            if (_e496[_e503] != _e505) {
+            let _e497 = k_1;
+            let _e499 = k_1;
+            if (_e490[_e497] != _e499) {
                 continue;
             }
             w = vec3(0f);
-            let _e510 = k_1;
-            j_1 = _e510;
+            let _e504 = k_1;
+            j_1 = _e504;
             loop {
-                let _e512 = j_1;
-                if (_e512 < K) {
+                let _e506 = j_1;
+                if (_e506 < K) {
                 } else {
                     break;
                 }
                 {
-                    let _e515 = j_1;
-                    let _e517 = k_1;
-                    if (_e496[_e515] == _e517) {
-                        let _e519 = w;
-                        let _e520 = j_1;
-                        let _e523 = fin[_e520].w;
-                        let _e524 = j_1;
-                        let _e526 = slot_share(_e524, K);
-                        w = (_e519 + (_e523 * _e526));
+                    let _e509 = j_1;
+                    let _e511 = k_1;
+                    if (_e490[_e509] == _e511) {
+                        let _e513 = w;
+                        let _e514 = j_1;
+                        let _e517 = fin[_e514].w;
+                        let _e518 = j_1;
+                        let _e520 = slot_share(_e518, K);
+                        w = (_e513 + (_e517 * _e520));
                     }
                 }
                 continuing {
-                    let _e530 = j_1;
-                    j_1 = (_e530 + 1u);
+                    let _e524 = j_1;
+                    j_1 = (_e524 + 1u);
                 }
             }
             known = false;
             seen = false;
             j_2 = 0u;
             loop {
-                let _e538 = j_2;
-                if (_e538 < K) {
-                    let _e543 = known;
-                    local_10 = !(_e543);
+                let _e532 = j_2;
+                if (_e532 < K) {
+                    let _e537 = known;
+                    local_10 = !(_e537);
                 } else {
                     local_10 = false;
                 }
-                let _e546 = local_10;
-                if _e546 {
+                let _e540 = local_10;
+                if _e540 {
                 } else {
                     break;
                 }
                 {
-                    let _e547 = j_2;
-                    let _e549 = fresh_held[_e547];
-                    if _e549 {
-                        let _e552 = j_2;
-                        let _e554 = fresh_keys[_e552];
-                        let _e555 = k_1;
-                        let _e557 = keys[_e555];
-                        local_11 = all((_e554 == _e557));
+                    let _e541 = j_2;
+                    let _e543 = fresh_held[_e541];
+                    if _e543 {
+                        let _e546 = j_2;
+                        let _e548 = fresh_keys[_e546];
+                        let _e549 = k_1;
+                        let _e551 = keys[_e549];
+                        local_11 = all((_e548 == _e551));
                     } else {
                         local_11 = false;
                     }
-                    let _e561 = local_11;
-                    if _e561 {
+                    let _e555 = local_11;
+                    if _e555 {
                         known = true;
-                        let _e563 = j_2;
-                        let _e565 = fresh_visible[_e563];
-                        seen = _e565;
+                        let _e557 = j_2;
+                        let _e559 = fresh_visible[_e557];
+                        seen = _e559;
                     }
                 }
                 continuing {
-                    let _e567 = j_2;
-                    j_2 = (_e567 + 1u);
+                    let _e561 = j_2;
+                    j_2 = (_e561 + 1u);
                 }
             }
-            let _e569 = k_1;
-            let _e572 = fin[_e569].light;
-            let _e573 = k_1;
-            let _e576 = fin[_e573].u;
-            let _e577 = n;
-            let _e578 = m;
-            let _e579 = known;
-            let _e581 = shade_sample(_e572, _e576, x_18, _e577, _e578, eps_4, !(_e579));
-            shaded = _e581;
-            let _e583 = known;
-            if _e583 {
-                let _e586 = seen;
-                local_12 = !(_e586);
+            shaded = Shaded(vec3(0f), vec3(0f), vec3(0f));
+            let _e571 = known;
+            if !(!(_e571)) {
+                let _e576 = seen;
+                local_12 = _e576;
             } else {
-                local_12 = false;
+                local_12 = true;
             }
-            let _e589 = local_12;
-            if _e589 {
-                shaded = Shaded(vec3(0f), vec3(0f), vec3(0f));
+            let _e578 = local_12;
+            if _e578 {
+                let _e579 = k_1;
+                let _e582 = fin[_e579].light;
+                let _e583 = k_1;
+                let _e586 = fin[_e583].u;
+                let _e587 = n;
+                let _e588 = known;
+                let _e590 = sample_connection(_e582, _e586, x_19, _e587, eps_5, !(_e588));
+                let _e591 = n;
+                let _e592 = m;
+                let _e593 = shade_connection(_e590, x_19, _e591, _e592);
+                shaded = _e593;
             }
-            let _e597 = t;
-            let _e598 = shaded;
-            let _e599 = w;
-            let _e600 = scaled(_e598, _e599);
-            let _e601 = add(_e597, _e600);
-            t = _e601;
-            let _e602 = k_1;
-            j_3 = _e602;
+            let _e594 = t;
+            let _e595 = shaded;
+            let _e596 = w;
+            let _e597 = scaled(_e595, _e596);
+            let _e598 = add(_e594, _e597);
+            t = _e598;
+            let _e599 = k_1;
+            j_3 = _e599;
             loop {
-                let _e604 = j_3;
-                if (_e604 < K) {
+                let _e601 = j_3;
+                if (_e601 < K) {
                 } else {
                     break;
                 }
                 {
-                    let _e607 = j_3;
-                    let _e609 = k_1;
-                    if (_e496[_e607] == _e609) {
-                        let _e611 = j_3;
-                        let _e613 = shaded;
-                        let _e614 = output_of(_e613);
-                        let _e615 = resample_target(_e614);
-                        visible[_e611] = (_e615 > 0f);
+                    let _e604 = j_3;
+                    let _e606 = k_1;
+                    if (_e490[_e604] == _e606) {
+                        let _e608 = j_3;
+                        let _e610 = shaded;
+                        let _e611 = output_of(_e610);
+                        let _e612 = resample_target(_e611);
+                        visible[_e608] = (_e612 > 0f);
                     }
                 }
                 continuing {
-                    let _e619 = j_3;
-                    j_3 = (_e619 + 1u);
+                    let _e616 = j_3;
+                    j_3 = (_e616 + 1u);
                 }
             }
         }
         continuing {
-            let _e622 = k_1;
-            k_1 = (_e622 + 1u);
+            let _e619 = k_1;
+            k_1 = (_e619 + 1u);
         }
     }
     loop {
-        let _e626 = q_4;
-        if (_e626 < K) {
+        let _e623 = q_4;
+        if (_e623 < K) {
         } else {
             break;
         }
         {
-            let _e631 = reuse.visibility;
-            if !((_e631 == 0u)) {
-                let _e637 = q_4;
-                let _e639 = visible[_e637];
-                local_13 = _e639;
+            let _e628 = reuse.visibility;
+            if !((_e628 == 0u)) {
+                let _e634 = q_4;
+                let _e636 = visible[_e634];
+                local_13 = _e636;
             } else {
                 local_13 = true;
             }
             let keep = local_13;
-            let _e643 = next_index(pixel_1);
-            let _e646 = q_4;
-            let _e648 = q_4;
-            let _e651 = kept[_e648].light;
-            let _e652 = q_4;
-            let _e655 = kept[_e652].u;
-            let _e656 = q_4;
-            let _e659 = kept[_e656].w;
-            reuse_pixels[_e643].slots[_e646] = ReuseSlot(_e651, _e655, select(0f, _e659, keep));
+            let _e640 = next_index(pixel_1);
+            let _e643 = q_4;
+            let _e645 = q_4;
+            let _e648 = kept[_e645].light;
+            let _e649 = q_4;
+            let _e652 = kept[_e649].u;
+            let _e653 = q_4;
+            let _e656 = kept[_e653].w;
+            reuse_pixels[_e640].slots[_e643] = ReuseSlot(_e648, _e652, select(0f, _e656, keep));
         }
         continuing {
-            let _e664 = q_4;
-            q_4 = (_e664 + 1u);
+            let _e661 = q_4;
+            q_4 = (_e661 + 1u);
         }
     }
-    let _e667 = next_index(pixel_1);
-    let _e670 = n;
-    let _e671 = m;
-    let _e674 = reuse.max_confidence;
-    let _e676 = reuse_surface(x_18, _e670, _e671, min(confidence, _e674));
-    reuse_pixels[_e667].surface = _e676;
-    let _e679 = t.diffuse;
-    let _e681 = t.specular;
-    let _e683 = count;
-    textureStore(out_tex, texel_1, vec4<f32>((_e679 + _e681), f32(_e683)));
+    let _e664 = next_index(pixel_1);
+    let _e667 = n;
+    let _e668 = m;
+    let _e671 = reuse.max_confidence;
+    let _e673 = reuse_surface(x_19, _e667, _e668, min(confidence, _e671));
+    reuse_pixels[_e664].surface = _e673;
+    let _e676 = t.diffuse;
+    let _e678 = t.specular;
+    let _e680 = count;
+    textureStore(out_tex, texel_1, vec4<f32>((_e676 + _e678), f32(_e680)));
     return;
 }

@@ -593,9 +593,9 @@ float bevy_f0_(float reflectance) {
 float bevy_dfg(float r_4, float n_v_2) {
     float rx = (1.0 - r_4);
     float a004_ = ((min((rx * rx), exp2((-9.28 * n_v_2))) * rx) + (0.0425 - (0.0275 * r_4)));
-    float x_16 = max(((1.04 - (0.572 * r_4)) - (1.04 * a004_)), 5e-5);
+    float x_17 = max(((1.04 - (0.572 * r_4)) - (1.04 * a004_)), 5e-5);
     float y_1 = max((((0.022 * r_4) - 0.04) + (1.04 * a004_)), 5e-5);
-    return (x_16 + y_1);
+    return (x_17 + y_1);
 }
 
 vec3 bevy_brdf(vec3 base_2, float metallic_3, float r_5, float reflectance_1, vec3 n_4, vec3 v_1, vec3 l) {
@@ -698,8 +698,8 @@ float ray_aabb(vec3 o, vec3 inv_d, vec3 bmin_1, vec3 bmax_1, float t_max) {
 
 vec3 triangle_normal(vec3 a_4, vec3 b_3, vec3 c_6) {
     bool local_22 = false;
-    vec3 n_15 = cross((b_3 - a_4), (c_6 - a_4));
-    float l2_ = dot(n_15, n_15);
+    vec3 n_16 = cross((b_3 - a_4), (c_6 - a_4));
+    float l2_ = dot(n_16, n_16);
     if (!(!((l2_ > 0.0)))) {
         local_22 = !((l2_ < 3e38));
     } else {
@@ -709,7 +709,7 @@ vec3 triangle_normal(vec3 a_4, vec3 b_3, vec3 c_6) {
     if (_e17) {
         return vec3(0.0, 0.0, 0.0);
     }
-    return (n_15 / vec3(sqrt(l2_)));
+    return (n_16 / vec3(sqrt(l2_)));
 }
 
 float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_5, vec3 b_4, vec3 c_7, float t_min, float t_max_1) {
@@ -764,9 +764,9 @@ vec3 reproject(vec4 c0_, vec4 c1_, vec4 c2_, vec4 c3_, vec3 p_2, float width, fl
     if ((clip.w <= 0.0)) {
         return vec3(-1.0, -1.0, 0.0);
     }
-    float x_17 = (((((clip.x / clip.w) + 1.0) * 0.5) * width) - 0.5);
+    float x_18 = (((((clip.x / clip.w) + 1.0) * 0.5) * width) - 0.5);
     float y_2 = ((((1.0 - (clip.y / clip.w)) * 0.5) * height) - 0.5);
-    return vec3(x_17, y_2, clip.w);
+    return vec3(x_18, y_2, clip.w);
 }
 
 bool history_matches(vec3 n_5, vec3 nh, vec3 p_3, float oh, float d_4) {
@@ -819,12 +819,12 @@ GeoHit trace(vec3 o_2, vec3 d_5, float t_min_1, float t_max_2, bool any_hit) {
     vec3 _e14 = ray_inverse3_(d_5);
     while(true) {
         uint _e21 = node_3;
-        GpuGeoNode n_16 = _group_1_binding_6_cs[_e21];
+        GpuGeoNode n_17 = _group_1_binding_6_cs[_e21];
         float _e27 = hit.t;
-        float _e28 = ray_aabb(o_2, _e14, n_16.bmin, n_16.bmax, _e27);
+        float _e28 = ray_aabb(o_2, _e14, n_17.bmin, n_17.bmax, _e27);
         if ((_e28 >= 0.0)) {
-            if ((n_16.count > 0u)) {
-                i = n_16.first;
+            if ((n_17.count > 0u)) {
+                i = n_17.first;
                 bool loop_init = true;
                 while(true) {
                     if (!loop_init) {
@@ -833,7 +833,7 @@ GeoHit trace(vec3 o_2, vec3 d_5, float t_min_1, float t_max_2, bool any_hit) {
                     }
                     loop_init = false;
                     uint _e36 = i;
-                    if ((_e36 < (n_16.first + n_16.count))) {
+                    if ((_e36 < (n_17.first + n_17.count))) {
                     } else {
                         break;
                     }
@@ -857,11 +857,11 @@ GeoHit trace(vec3 o_2, vec3 d_5, float t_min_1, float t_max_2, bool any_hit) {
                 uint _e60 = sp;
                 if ((_e60 < 64u)) {
                     uint _e63 = sp;
-                    stack[_e63] = (n_16.first + 1u);
+                    stack[_e63] = (n_17.first + 1u);
                     uint _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_3 = n_16.first;
+                node_3 = n_17.first;
                 continue;
             }
         }
@@ -1503,16 +1503,20 @@ uvec2 sample_key(uint li_7, uint cells_1) {
     return uvec2(li_7, ((_e6 == LIGHT_TRIANGLE) ? cells_1 : 0u));
 }
 
-Shaded shade_sample(uint li_8, uint cells_2, vec3 x_13, vec3 n_12, Material m_5, float eps_3, bool trace_4) {
-    GpuLight _e9 = _group_1_binding_1_cs[li_8];
-    float _e13 = grid_coordinate(cells_2);
-    float _e16 = grid_coordinate((cells_2 << 16u));
-    Connection _e17 = connect_record(_e9, x_13, n_12, n_12, UNRANGED, UNRANGED, 1.0, _e13, _e16, eps_3, trace_4);
-    Shaded _e18 = shade_connection(_e17, x_13, n_12, m_5);
-    return _e18;
+Connection sample_connection(uint li_8, uint cells_2, vec3 x_13, vec3 n_12, float eps_3, bool trace_4) {
+    GpuLight _e8 = _group_1_binding_1_cs[li_8];
+    float _e12 = grid_coordinate(cells_2);
+    float _e15 = grid_coordinate((cells_2 << 16u));
+    Connection _e16 = connect_record(_e8, x_13, n_12, n_12, UNRANGED, UNRANGED, 1.0, _e12, _e15, eps_3, trace_4);
+    return _e16;
 }
 
-uint reuse_domains(vec3 x_14, vec3 n_13, float d_6, uint h_2, inout Domain doms_1[3]) {
+bool sample_reaches(uint li_9, uint cells_3, vec3 x_14, vec3 n_13, float eps_4) {
+    Connection _e6 = sample_connection(li_9, cells_3, x_14, n_13, eps_4, true);
+    return any(greaterThan(_e6.e, vec3(0.0)));
+}
+
+uint reuse_domains(vec3 x_15, vec3 n_14, float d_6, uint h_2, inout Domain doms_1[3]) {
     uint nd = 0u;
     uint hr = 0u;
     uint j_5 = 0u;
@@ -1535,7 +1539,7 @@ uint reuse_domains(vec3 x_14, vec3 n_13, float d_6, uint h_2, inout Domain doms_
     vec4 _e24 = _group_0_binding_7_cs.c3_;
     uint _e27 = _group_0_binding_0_cs.width;
     uint _e31 = _group_0_binding_0_cs.height;
-    vec3 _e33 = reproject(_e15, _e18, _e21, _e24, x_14, float(_e27), float(_e31));
+    vec3 _e33 = reproject(_e15, _e18, _e21, _e24, x_15, float(_e27), float(_e31));
     if ((_e33.z <= 0.0)) {
         return 0u;
     }
@@ -1636,7 +1640,7 @@ uint reuse_domains(vec3 x_14, vec3 n_13, float d_6, uint h_2, inout Domain doms_
             }
             bool _e143 = local_43;
             if (!(_e143)) {
-                bool _e151 = history_matches(n_13, s_13.n, x_14, dot(s_13.n, s_13.x), d_6);
+                bool _e151 = history_matches(n_14, s_13.n, x_15, dot(s_13.n, s_13.x), d_6);
                 local_44 = !(_e151);
             } else {
                 local_44 = true;
@@ -1659,7 +1663,7 @@ uint reuse_domains(vec3 x_14, vec3 n_13, float d_6, uint h_2, inout Domain doms_
     return _e178;
 }
 
-ReuseSlot gris_combine(uint q_6, ReuseSlot cur, bool cur_ris, float cur_c, uint k0_, uint k1_, vec3 x_15, vec3 n_14, Material m_6, inout Domain doms_2[3], inout uint hs_1) {
+ReuseSlot gris_combine(uint q_6, ReuseSlot cur, bool cur_ris, float cur_c, uint k0_, uint k1_, vec3 x_16, vec3 n_15, Material m_5, inout Domain doms_2[3], inout uint hs_1) {
     float w_sum_3 = 0.0;
     ReuseSlot out_ = ReuseSlot(0u, 0u, 0.0);
     float out_target = 0.0;
@@ -1709,7 +1713,7 @@ ReuseSlot gris_combine(uint q_6, ReuseSlot cur, bool cur_ris, float cur_c, uint 
             uint _e55 = s_11.light;
             GpuLight _e57 = _group_1_binding_1_cs[_e55];
             uint _e59 = s_11.u;
-            float _e60 = reuse_target(q_6, _e57, _e59, x_15, n_14, m_6);
+            float _e60 = reuse_target(q_6, _e57, _e59, x_16, n_15, m_5);
             if (!((_e60 > 0.0))) {
                 continue;
             }
@@ -1888,7 +1892,7 @@ void main() {
     vec3 _e33 = nn;
     float len2_ = dot(_e32, _e33);
     vec4 _e35 = s;
-    vec3 x_18 = _e35.xyz;
+    vec3 x_19 = _e35.xyz;
     if (inside) {
         float _e40 = s.w;
         local_1 = (_e40 > 0.0);
@@ -1903,7 +1907,7 @@ void main() {
     }
     bool _e50 = local_2;
     if (_e50) {
-        local_3 = all(lessThanEqual(abs(x_18), vec3(3.4028235e38)));
+        local_3 = all(lessThanEqual(abs(x_19), vec3(3.4028235e38)));
     } else {
         local_3 = false;
     }
@@ -1918,7 +1922,7 @@ void main() {
         vec4 mr = texelFetch(_group_0_binding_5_cs, texel_1, 0);
         vec4 _e83 = texelFetch(_group_0_binding_4_cs, texel_1, 0);
         vec3 _e90 = _group_0_binding_0_cs.eye;
-        Material _e93 = material_of(_e83.xyz, mr.z, mr.y, mr.w, normalize((_e90 - x_18)));
+        Material _e93 = material_of(_e83.xyz, mr.z, mr.y, mr.w, normalize((_e90 - x_19)));
         m = _e93;
         vec3 _e95 = m.base;
         float _e97 = m.metallic;
@@ -1937,7 +1941,7 @@ void main() {
     vec4 _e114 = range_lobe(_e113);
     float _e117 = _group_0_binding_0_cs.shadow_offset;
     vec3 _e120 = _group_0_binding_0_cs.eye;
-    float eps_4 = (_e117 * length((_e120 - x_18)));
+    float eps_5 = (_e117 * length((_e120 - x_19)));
     uint _e126 = _group_0_binding_0_cs.seed;
     uint _e130 = _group_0_binding_0_cs.width;
     uint _e136 = _group_0_binding_0_cs.frame;
@@ -1945,7 +1949,7 @@ void main() {
     uint _e138 = pick_stream(_e137);
     h = _e138;
     hc = _e137;
-    TileWalk _e160 = tile_walk_begin(lid, x_18, _e114.w, has_3);
+    TileWalk _e160 = tile_walk_begin(lid, x_19, _e114.w, has_3);
     bool loop_init_12 = true;
     while(true) {
         if (!loop_init_12) {
@@ -1980,7 +1984,7 @@ void main() {
                     if (!(!(has_3))) {
                         BshNode _e182 = _group_1_binding_4_cs[b_10];
                         vec3 _e183 = r;
-                        bool _e184 = bsh_reaches(_e182, x_18, _e183, _e114);
+                        bool _e184 = bsh_reaches(_e182, x_19, _e183, _e114);
                         local_4 = !(_e184);
                     } else {
                         local_4 = true;
@@ -1989,7 +1993,7 @@ void main() {
                     if (_e187) {
                         continue;
                     }
-                    uint li_9 = _group_1_binding_4_cs[b_10].light;
+                    uint li_10 = _group_1_binding_4_cs[b_10].light;
                     uint _e192 = count;
                     count = (_e192 + 1u);
                     uint _e195 = h;
@@ -2008,7 +2012,7 @@ void main() {
                     vec3 _e206 = n;
                     vec3 _e207 = r;
                     Material _e208 = m;
-                    Shaded _e213 = shade_pick_traced(li_9, x_18, _e206, _e207, _e114, _e208, 1.0, u_5.x, u_5.y, eps_4, false);
+                    Shaded _e213 = shade_pick_traced(li_10, x_19, _e206, _e207, _e114, _e208, 1.0, u_5.x, u_5.y, eps_5, false);
                     vec3 _e214 = output_of(_e213);
                     float _e215 = resample_target(_e214);
                     if ((_e215 > 0.0)) {
@@ -2043,7 +2047,7 @@ void main() {
                                 bool _e241 = local_5;
                                 if (_e241) {
                                     uint _e242 = q;
-                                    slot_light[_e242] = li_9;
+                                    slot_light[_e242] = li_10;
                                     uint _e244 = q;
                                     slot_u[_e244] = u_5;
                                     uint _e246 = q;
@@ -2077,7 +2081,7 @@ void main() {
     vec3 _e287 = n;
     vec3 _e290 = _group_0_binding_0_cs.eye;
     uint _e294 = reuse_stream(_e137, 0u);
-    uint _e295 = reuse_domains(x_18, _e287, length((_e290 - x_18)), _e294, doms);
+    uint _e295 = reuse_domains(x_19, _e287, length((_e290 - x_19)), _e294, doms);
     if ((_e295 > 0u)) {
         bool _e302 = doms[0].temporal;
         local_6 = _e302;
@@ -2129,8 +2133,8 @@ void main() {
     bool loop_init_16 = true;
     while(true) {
         if (!loop_init_16) {
-            uint _e393 = q_2;
-            q_2 = (_e393 + 1u);
+            uint _e387 = q_2;
+            q_2 = (_e387 + 1u);
         }
         loop_init_16 = false;
         uint _e359 = q_2;
@@ -2148,18 +2152,15 @@ void main() {
                 uint _e371 = q_2;
                 uint _e373 = slot_cells[_e371];
                 vec3 _e374 = n;
-                Material _e375 = m;
-                Shaded _e377 = shade_sample(_e370, _e373, x_18, _e374, _e375, eps_4, true);
-                vec3 _e378 = output_of(_e377);
-                float _e379 = resample_target(_e378);
-                fresh_visible[_e366] = (_e379 > 0.0);
+                bool _e375 = sample_reaches(_e370, _e373, x_19, _e374, eps_5);
+                fresh_visible[_e366] = _e375;
             } else {
-                uint _e382 = q_2;
-                if ((_e355[_e382] < K)) {
-                    uint _e386 = q_2;
-                    uint _e388 = q_2;
-                    bool _e391 = fresh_visible[_e355[_e388]];
-                    fresh_visible[_e386] = _e391;
+                uint _e376 = q_2;
+                if ((_e355[_e376] < K)) {
+                    uint _e380 = q_2;
+                    uint _e382 = q_2;
+                    bool _e385 = fresh_visible[_e355[_e382]];
+                    fresh_visible[_e380] = _e385;
                 }
             }
         }
@@ -2167,134 +2168,134 @@ void main() {
     bool loop_init_17 = true;
     while(true) {
         if (!loop_init_17) {
-            uint _e463 = q_3;
-            q_3 = (_e463 + 1u);
+            uint _e457 = q_3;
+            q_3 = (_e457 + 1u);
         }
         loop_init_17 = false;
-        uint _e399 = q_3;
-        if ((_e399 < K)) {
+        uint _e393 = q_3;
+        if ((_e393 < K)) {
         } else {
             break;
         }
         {
-            uint _e402 = q_3;
-            float _e404 = slot_p[_e402];
-            if ((_e404 > 0.0)) {
-                uint _e411 = _group_0_binding_7_cs.visibility;
-                if (!((_e411 == 0u))) {
-                    uint _e417 = q_3;
-                    bool _e419 = fresh_visible[_e417];
-                    local_9 = _e419;
+            uint _e396 = q_3;
+            float _e398 = slot_p[_e396];
+            if ((_e398 > 0.0)) {
+                uint _e405 = _group_0_binding_7_cs.visibility;
+                if (!((_e405 == 0u))) {
+                    uint _e411 = q_3;
+                    bool _e413 = fresh_visible[_e411];
+                    local_9 = _e413;
                 } else {
                     local_9 = true;
                 }
-                bool _e421 = local_9;
-                local_8 = _e421;
+                bool _e415 = local_9;
+                local_8 = _e415;
             } else {
                 local_8 = false;
             }
             bool fresh = local_8;
+            uint _e418 = q_3;
+            uint _e420 = q_3;
+            uint _e421 = q_3;
+            uint _e423 = slot_light[_e421];
             uint _e424 = q_3;
-            uint _e426 = q_3;
-            uint _e427 = q_3;
-            uint _e429 = slot_light[_e427];
-            uint _e430 = q_3;
-            uint _e432 = slot_cells[_e430];
-            vec3 _e433 = total;
-            uint _e434 = q_3;
-            float _e436 = slot_target(_e433, _e434, K);
-            vec3 _e443 = n;
-            Material _e444 = m;
-            ReuseSlot _e445 = gris_combine(_e426, ReuseSlot(_e429, _e432, (fresh ? _e436 : 0.0)), true, 1.0, 0u, first_1, x_18, _e443, _e444, doms, hs);
-            kept[_e424] = _e445;
-            uint _e446 = q_3;
-            uint _e448 = q_3;
-            ReuseSlot _e450 = kept[_e448];
-            fin[_e446] = _e450;
+            uint _e426 = slot_cells[_e424];
+            vec3 _e427 = total;
+            uint _e428 = q_3;
+            float _e430 = slot_target(_e427, _e428, K);
+            vec3 _e437 = n;
+            Material _e438 = m;
+            ReuseSlot _e439 = gris_combine(_e420, ReuseSlot(_e423, _e426, (fresh ? _e430 : 0.0)), true, 1.0, 0u, first_1, x_19, _e437, _e438, doms, hs);
+            kept[_e418] = _e439;
+            uint _e440 = q_3;
+            uint _e442 = q_3;
+            ReuseSlot _e444 = kept[_e442];
+            fin[_e440] = _e444;
             if ((_e295 > first_1)) {
-                uint _e452 = q_3;
-                uint _e454 = q_3;
-                uint _e455 = q_3;
-                ReuseSlot _e457 = kept[_e455];
-                vec3 _e459 = n;
-                Material _e460 = m;
-                ReuseSlot _e461 = gris_combine(_e454, _e457, false, confidence, first_1, _e295, x_18, _e459, _e460, doms, hs);
-                fin[_e452] = _e461;
+                uint _e446 = q_3;
+                uint _e448 = q_3;
+                uint _e449 = q_3;
+                ReuseSlot _e451 = kept[_e449];
+                vec3 _e453 = n;
+                Material _e454 = m;
+                ReuseSlot _e455 = gris_combine(_e448, _e451, false, confidence, first_1, _e295, x_19, _e453, _e454, doms, hs);
+                fin[_e446] = _e455;
             }
         }
     }
     bool loop_init_18 = true;
     while(true) {
         if (!loop_init_18) {
-            uint _e492 = k;
-            k = (_e492 + 1u);
+            uint _e486 = k;
+            k = (_e486 + 1u);
         }
         loop_init_18 = false;
-        uint _e469 = k;
-        if ((_e469 < K)) {
+        uint _e463 = k;
+        if ((_e463 < K)) {
         } else {
             break;
         }
         {
+            uint _e466 = k;
+            uint _e468 = k;
+            uint _e471 = fin[_e468].light;
             uint _e472 = k;
-            uint _e474 = k;
-            uint _e477 = fin[_e474].light;
-            uint _e478 = k;
-            uint _e481 = fin[_e478].u;
-            uvec2 _e482 = sample_key(_e477, _e481);
-            keys[_e472] = _e482;
-            uint _e483 = k;
-            uint _e485 = k;
-            float _e488 = fin[_e485].w;
-            held[_e483] = (_e488 > 0.0);
+            uint _e475 = fin[_e472].u;
+            uvec2 _e476 = sample_key(_e471, _e475);
+            keys[_e466] = _e476;
+            uint _e477 = k;
+            uint _e479 = k;
+            float _e482 = fin[_e479].w;
+            held[_e477] = (_e482 > 0.0);
         }
     }
-    uvec2 _e494[8] = keys;
-    bool _e495[8] = held;
-    uint _e496[8] = first_holders(_e494, _e495);
+    uvec2 _e488[8] = keys;
+    bool _e489[8] = held;
+    uint _e490[8] = first_holders(_e488, _e489);
     bool loop_init_19 = true;
     while(true) {
         if (!loop_init_19) {
-            uint _e622 = k_1;
-            k_1 = (_e622 + 1u);
+            uint _e619 = k_1;
+            k_1 = (_e619 + 1u);
         }
         loop_init_19 = false;
-        uint _e500 = k_1;
-        if ((_e500 < K)) {
+        uint _e494 = k_1;
+        if ((_e494 < K)) {
         } else {
             break;
         }
         {
-            uint _e503 = k_1;
-            uint _e505 = k_1;
-            if ((_e496[_e503] != _e505)) {
+            uint _e497 = k_1;
+            uint _e499 = k_1;
+            if ((_e490[_e497] != _e499)) {
                 continue;
             }
             w = vec3(0.0);
-            uint _e510 = k_1;
-            j_1 = _e510;
+            uint _e504 = k_1;
+            j_1 = _e504;
             bool loop_init_20 = true;
             while(true) {
                 if (!loop_init_20) {
-                    uint _e530 = j_1;
-                    j_1 = (_e530 + 1u);
+                    uint _e524 = j_1;
+                    j_1 = (_e524 + 1u);
                 }
                 loop_init_20 = false;
-                uint _e512 = j_1;
-                if ((_e512 < K)) {
+                uint _e506 = j_1;
+                if ((_e506 < K)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e515 = j_1;
-                    uint _e517 = k_1;
-                    if ((_e496[_e515] == _e517)) {
-                        vec3 _e519 = w;
-                        uint _e520 = j_1;
-                        float _e523 = fin[_e520].w;
-                        uint _e524 = j_1;
-                        vec3 _e526 = slot_share(_e524, K);
-                        w = (_e519 + (_e523 * _e526));
+                    uint _e509 = j_1;
+                    uint _e511 = k_1;
+                    if ((_e490[_e509] == _e511)) {
+                        vec3 _e513 = w;
+                        uint _e514 = j_1;
+                        float _e517 = fin[_e514].w;
+                        uint _e518 = j_1;
+                        vec3 _e520 = slot_share(_e518, K);
+                        w = (_e513 + (_e517 * _e520));
                     }
                 }
             }
@@ -2304,92 +2305,94 @@ void main() {
             bool loop_init_21 = true;
             while(true) {
                 if (!loop_init_21) {
-                    uint _e567 = j_2;
-                    j_2 = (_e567 + 1u);
+                    uint _e561 = j_2;
+                    j_2 = (_e561 + 1u);
                 }
                 loop_init_21 = false;
-                uint _e538 = j_2;
-                if ((_e538 < K)) {
-                    bool _e543 = known;
-                    local_10 = !(_e543);
+                uint _e532 = j_2;
+                if ((_e532 < K)) {
+                    bool _e537 = known;
+                    local_10 = !(_e537);
                 } else {
                     local_10 = false;
                 }
-                bool _e546 = local_10;
-                if (_e546) {
+                bool _e540 = local_10;
+                if (_e540) {
                 } else {
                     break;
                 }
                 {
-                    uint _e547 = j_2;
-                    bool _e549 = fresh_held[_e547];
-                    if (_e549) {
-                        uint _e552 = j_2;
-                        uvec2 _e554 = fresh_keys[_e552];
-                        uint _e555 = k_1;
-                        uvec2 _e557 = keys[_e555];
-                        local_11 = all(equal(_e554, _e557));
+                    uint _e541 = j_2;
+                    bool _e543 = fresh_held[_e541];
+                    if (_e543) {
+                        uint _e546 = j_2;
+                        uvec2 _e548 = fresh_keys[_e546];
+                        uint _e549 = k_1;
+                        uvec2 _e551 = keys[_e549];
+                        local_11 = all(equal(_e548, _e551));
                     } else {
                         local_11 = false;
                     }
-                    bool _e561 = local_11;
-                    if (_e561) {
+                    bool _e555 = local_11;
+                    if (_e555) {
                         known = true;
-                        uint _e563 = j_2;
-                        bool _e565 = fresh_visible[_e563];
-                        seen = _e565;
+                        uint _e557 = j_2;
+                        bool _e559 = fresh_visible[_e557];
+                        seen = _e559;
                     }
                 }
             }
-            uint _e569 = k_1;
-            uint _e572 = fin[_e569].light;
-            uint _e573 = k_1;
-            uint _e576 = fin[_e573].u;
-            vec3 _e577 = n;
-            Material _e578 = m;
-            bool _e579 = known;
-            Shaded _e581 = shade_sample(_e572, _e576, x_18, _e577, _e578, eps_4, !(_e579));
-            shaded = _e581;
-            bool _e583 = known;
-            if (_e583) {
-                bool _e586 = seen;
-                local_12 = !(_e586);
+            shaded = Shaded(vec3(0.0), vec3(0.0), vec3(0.0));
+            bool _e571 = known;
+            if (!(!(_e571))) {
+                bool _e576 = seen;
+                local_12 = _e576;
             } else {
-                local_12 = false;
+                local_12 = true;
             }
-            bool _e589 = local_12;
-            if (_e589) {
-                shaded = Shaded(vec3(0.0), vec3(0.0), vec3(0.0));
+            bool _e578 = local_12;
+            if (_e578) {
+                uint _e579 = k_1;
+                uint _e582 = fin[_e579].light;
+                uint _e583 = k_1;
+                uint _e586 = fin[_e583].u;
+                vec3 _e587 = n;
+                bool _e588 = known;
+                Connection _e590 = sample_connection(_e582, _e586, x_19, _e587, eps_5, !(_e588));
+                vec3 _e591 = n;
+                Material _e592 = m;
+                Shaded _e593 = shade_connection(_e590, x_19, _e591, _e592);
+                shaded = _e593;
             }
-            Shaded _e597 = t;
-            Shaded _e598 = shaded;
-            vec3 _e599 = w;
-            Shaded _e600 = scaled(_e598, _e599);
-            Shaded _e601 = add(_e597, _e600);
-            t = _e601;
-            uint _e602 = k_1;
-            j_3 = _e602;
+            Shaded _e594 = t;
+            Shaded _e595 = shaded;
+            vec3 _e596 = w;
+            Shaded _e597 = scaled(_e595, _e596);
+            Shaded _e598 = add(_e594, _e597);
+            t = _e598;
+            uint _e599 = k_1;
+            j_3 = _e599;
             bool loop_init_22 = true;
             while(true) {
                 if (!loop_init_22) {
-                    uint _e619 = j_3;
-                    j_3 = (_e619 + 1u);
+                    uint _e616 = j_3;
+                    j_3 = (_e616 + 1u);
                 }
                 loop_init_22 = false;
-                uint _e604 = j_3;
-                if ((_e604 < K)) {
+                uint _e601 = j_3;
+                if ((_e601 < K)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e607 = j_3;
-                    uint _e609 = k_1;
-                    if ((_e496[_e607] == _e609)) {
-                        uint _e611 = j_3;
-                        Shaded _e613 = shaded;
-                        vec3 _e614 = output_of(_e613);
-                        float _e615 = resample_target(_e614);
-                        visible[_e611] = (_e615 > 0.0);
+                    uint _e604 = j_3;
+                    uint _e606 = k_1;
+                    if ((_e490[_e604] == _e606)) {
+                        uint _e608 = j_3;
+                        Shaded _e610 = shaded;
+                        vec3 _e611 = output_of(_e610);
+                        float _e612 = resample_target(_e611);
+                        visible[_e608] = (_e612 > 0.0);
                     }
                 }
             }
@@ -2398,46 +2401,46 @@ void main() {
     bool loop_init_23 = true;
     while(true) {
         if (!loop_init_23) {
-            uint _e664 = q_4;
-            q_4 = (_e664 + 1u);
+            uint _e661 = q_4;
+            q_4 = (_e661 + 1u);
         }
         loop_init_23 = false;
-        uint _e626 = q_4;
-        if ((_e626 < K)) {
+        uint _e623 = q_4;
+        if ((_e623 < K)) {
         } else {
             break;
         }
         {
-            uint _e631 = _group_0_binding_7_cs.visibility;
-            if (!((_e631 == 0u))) {
-                uint _e637 = q_4;
-                bool _e639 = visible[_e637];
-                local_13 = _e639;
+            uint _e628 = _group_0_binding_7_cs.visibility;
+            if (!((_e628 == 0u))) {
+                uint _e634 = q_4;
+                bool _e636 = visible[_e634];
+                local_13 = _e636;
             } else {
                 local_13 = true;
             }
             bool keep = local_13;
-            uint _e643 = next_index(pixel_1);
-            uint _e646 = q_4;
-            uint _e648 = q_4;
-            uint _e651 = kept[_e648].light;
-            uint _e652 = q_4;
-            uint _e655 = kept[_e652].u;
-            uint _e656 = q_4;
-            float _e659 = kept[_e656].w;
-            _group_1_binding_9_cs[_e643].slots[_e646] = ReuseSlot(_e651, _e655, (keep ? _e659 : 0.0));
+            uint _e640 = next_index(pixel_1);
+            uint _e643 = q_4;
+            uint _e645 = q_4;
+            uint _e648 = kept[_e645].light;
+            uint _e649 = q_4;
+            uint _e652 = kept[_e649].u;
+            uint _e653 = q_4;
+            float _e656 = kept[_e653].w;
+            _group_1_binding_9_cs[_e640].slots[_e643] = ReuseSlot(_e648, _e652, (keep ? _e656 : 0.0));
         }
     }
-    uint _e667 = next_index(pixel_1);
-    vec3 _e670 = n;
-    Material _e671 = m;
-    float _e674 = _group_0_binding_7_cs.max_confidence;
-    ReuseSurface _e676 = reuse_surface(x_18, _e670, _e671, min(confidence, _e674));
-    _group_1_binding_9_cs[_e667].surface = _e676;
-    vec3 _e679 = t.diffuse;
-    vec3 _e681 = t.specular;
-    uint _e683 = count;
-    imageStore(_group_0_binding_3_cs, texel_1, vec4((_e679 + _e681), float(_e683)));
+    uint _e664 = next_index(pixel_1);
+    vec3 _e667 = n;
+    Material _e668 = m;
+    float _e671 = _group_0_binding_7_cs.max_confidence;
+    ReuseSurface _e673 = reuse_surface(x_19, _e667, _e668, min(confidence, _e671));
+    _group_1_binding_9_cs[_e664].surface = _e673;
+    vec3 _e676 = t.diffuse;
+    vec3 _e678 = t.specular;
+    uint _e680 = count;
+    imageStore(_group_0_binding_3_cs, texel_1, vec4((_e676 + _e678), float(_e680)));
     return;
 }
 

@@ -664,9 +664,9 @@ float bevy_dfg(float r_4, float n_v_2)
 {
     float rx = (1.0 - r_4);
     float a004_ = ((min((rx * rx), exp2((-9.28 * n_v_2))) * rx) + (0.0425 - (0.0275 * r_4)));
-    float x_16 = max(((1.04 - (0.572 * r_4)) - (1.04 * a004_)), 5e-5);
+    float x_17 = max(((1.04 - (0.572 * r_4)) - (1.04 * a004_)), 5e-5);
     float y_1 = max((((0.022 * r_4) - 0.04) + (1.04 * a004_)), 5e-5);
-    return (x_16 + y_1);
+    return (x_17 + y_1);
 }
 
 float3 bevy_brdf(float3 base_2, float metallic_3, float r_5, float reflectance_1, float3 n_4, float3 v_1, float3 l)
@@ -781,8 +781,8 @@ float3 triangle_normal(float3 a_4, float3 b_3, float3 c_6)
 {
     bool local_22 = (bool)0;
 
-    float3 n_15 = cross((b_3 - a_4), (c_6 - a_4));
-    float l2_ = dot(n_15, n_15);
+    float3 n_16 = cross((b_3 - a_4), (c_6 - a_4));
+    float l2_ = dot(n_16, n_16);
     if (!(!((l2_ > 0.0)))) {
         local_22 = !((l2_ < 3e38));
     } else {
@@ -792,7 +792,7 @@ float3 triangle_normal(float3 a_4, float3 b_3, float3 c_6)
     if (_e17) {
         return float3(0.0, 0.0, 0.0);
     }
-    return (n_15 / (sqrt(l2_)).xxx);
+    return (n_16 / (sqrt(l2_)).xxx);
 }
 
 float ray_triangle(float3 o_1, float3 d_3, float3 a_5, float3 b_4, float3 c_7, float t_min, float t_max_1)
@@ -850,9 +850,9 @@ float3 reproject(float4 c0_, float4 c1_, float4 c2_, float4 c3_, float3 p_2, flo
     if ((clip_.w <= 0.0)) {
         return float3(-1.0, -1.0, 0.0);
     }
-    float x_17 = (((((clip_.x / clip_.w) + 1.0) * 0.5) * width) - 0.5);
+    float x_18 = (((((clip_.x / clip_.w) + 1.0) * 0.5) * width) - 0.5);
     float y_2 = ((((1.0 - (clip_.y / clip_.w)) * 0.5) * height) - 0.5);
-    return float3(x_17, y_2, clip_.w);
+    return float3(x_18, y_2, clip_.w);
 }
 
 bool history_matches(float3 n_5, float3 nh, float3 p_3, float oh, float d_4)
@@ -942,12 +942,12 @@ GeoHit trace(float3 o_2, float3 d_5, float t_min_1, float t_max_2, bool any_hit)
         if (all(loop_bound == uint2(0u, 0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         uint _e21 = node_3;
-        GpuGeoNode n_16 = ConstructGpuGeoNode(asfloat(geo_nodes.Load3(_e21*32+0)), asuint(geo_nodes.Load(_e21*32+12)), asfloat(geo_nodes.Load3(_e21*32+16)), asuint(geo_nodes.Load(_e21*32+28)));
+        GpuGeoNode n_17 = ConstructGpuGeoNode(asfloat(geo_nodes.Load3(_e21*32+0)), asuint(geo_nodes.Load(_e21*32+12)), asfloat(geo_nodes.Load3(_e21*32+16)), asuint(geo_nodes.Load(_e21*32+28)));
         float _e27 = hit.t;
-        const float _e28 = ray_aabb(o_2, _e14, n_16.bmin, n_16.bmax, _e27);
+        const float _e28 = ray_aabb(o_2, _e14, n_17.bmin, n_17.bmax, _e27);
         if ((_e28 >= 0.0)) {
-            if ((n_16.count > 0u)) {
-                i = n_16.first;
+            if ((n_17.count > 0u)) {
+                i = n_17.first;
                 uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
                 bool loop_init = true;
                 while(true) {
@@ -959,7 +959,7 @@ GeoHit trace(float3 o_2, float3 d_5, float t_min_1, float t_max_2, bool any_hit)
                     }
                     loop_init = false;
                     uint _e36 = i;
-                    if ((_e36 < (n_16.first + n_16.count))) {
+                    if ((_e36 < (n_17.first + n_17.count))) {
                     } else {
                         break;
                     }
@@ -984,11 +984,11 @@ GeoHit trace(float3 o_2, float3 d_5, float t_min_1, float t_max_2, bool any_hit)
                 uint _e60 = sp;
                 if ((_e60 < 64u)) {
                     uint _e63 = sp;
-                    stack[min(uint(_e63), 63u)] = (n_16.first + 1u);
+                    stack[min(uint(_e63), 63u)] = (n_17.first + 1u);
                     uint _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_3 = n_16.first;
+                node_3 = n_17.first;
                 continue;
             }
         }
@@ -1798,15 +1798,20 @@ uint2 sample_key(uint li_7, uint cells_1)
     return uint2(li_7, ((_e6 == LIGHT_TRIANGLE) ? cells_1 : 0u));
 }
 
-Shaded shade_sample(uint li_8, uint cells_2, float3 x_13, float3 n_12, Material m_5, float eps_3, bool trace_4)
+Connection sample_connection(uint li_8, uint cells_2, float3 x_13, float3 n_12, float eps_3, bool trace_4)
 {
-    GpuLight _e9 = ConstructGpuLight(asfloat(lights.Load3(li_8*64+0)), asuint(lights.Load(li_8*64+12)), asfloat(lights.Load3(li_8*64+16)), asfloat(lights.Load(li_8*64+28)), asfloat(lights.Load3(li_8*64+32)), asfloat(lights.Load(li_8*64+44)), asfloat(lights.Load3(li_8*64+48)), asuint(lights.Load(li_8*64+60)));
-    const float _e13 = grid_coordinate(cells_2);
-    const float _e16 = grid_coordinate((cells_2 << 16u));
-    const Connection _e17 = connect_record(_e9, x_13, n_12, n_12, UNRANGED, UNRANGED, 1.0, _e13, _e16, eps_3, trace_4);
-    const Shaded _e18 = shade_connection(_e17, x_13, n_12, m_5);
-    const Shaded shaded_5 = _e18;
-    return shaded_5;
+    GpuLight _e8 = ConstructGpuLight(asfloat(lights.Load3(li_8*64+0)), asuint(lights.Load(li_8*64+12)), asfloat(lights.Load3(li_8*64+16)), asfloat(lights.Load(li_8*64+28)), asfloat(lights.Load3(li_8*64+32)), asfloat(lights.Load(li_8*64+44)), asfloat(lights.Load3(li_8*64+48)), asuint(lights.Load(li_8*64+60)));
+    const float _e12 = grid_coordinate(cells_2);
+    const float _e15 = grid_coordinate((cells_2 << 16u));
+    const Connection _e16 = connect_record(_e8, x_13, n_12, n_12, UNRANGED, UNRANGED, 1.0, _e12, _e15, eps_3, trace_4);
+    const Connection connection_3 = _e16;
+    return connection_3;
+}
+
+bool sample_reaches(uint li_9, uint cells_3, float3 x_14, float3 n_13, float eps_4)
+{
+    const Connection _e6 = sample_connection(li_9, cells_3, x_14, n_13, eps_4, true);
+    return any((_e6.e > (0.0).xxx));
 }
 
 Domain ConstructDomain(uint arg0, float3 arg1, float3 arg2, Material arg3, float arg4, bool arg5) {
@@ -1824,7 +1829,7 @@ int2 naga_f2i32(float2 value) {
     return int2(clamp(value, -2147483600.0, 2147483500.0));
 }
 
-uint reuse_domains(float3 x_14, float3 n_13, float d_6, uint h_2, inout Domain doms_1[3])
+uint reuse_domains(float3 x_15, float3 n_14, float d_6, uint h_2, inout Domain doms_1[3])
 {
     uint nd = 0u;
     uint hr = (uint)0;
@@ -1849,7 +1854,7 @@ uint reuse_domains(float3 x_14, float3 n_13, float d_6, uint h_2, inout Domain d
     float4 _e24 = reuse.c3_;
     uint _e27 = view.width;
     uint _e31 = view.height;
-    const float3 _e33 = reproject(_e15, _e18, _e21, _e24, x_14, float(_e27), float(_e31));
+    const float3 _e33 = reproject(_e15, _e18, _e21, _e24, x_15, float(_e27), float(_e31));
     if ((_e33.z <= 0.0)) {
         return 0u;
     }
@@ -1956,7 +1961,7 @@ uint reuse_domains(float3 x_14, float3 n_13, float d_6, uint h_2, inout Domain d
             }
             bool _e143 = local_43;
             if (!(_e143)) {
-                const bool _e151 = history_matches(n_13, s_13.n, x_14, dot(s_13.n, s_13.x), d_6);
+                const bool _e151 = history_matches(n_14, s_13.n, x_15, dot(s_13.n, s_13.x), d_6);
                 local_44 = !(_e151);
             } else {
                 local_44 = true;
@@ -1987,7 +1992,7 @@ ReuseSlot ConstructReuseSlot(uint arg0, uint arg1, float arg2) {
     return ret;
 }
 
-ReuseSlot gris_combine(uint q_6, ReuseSlot cur, bool cur_ris, float cur_c, uint k0_, uint k1_, float3 x_15, float3 n_14, Material m_6, inout Domain doms_2[3], inout uint hs_1)
+ReuseSlot gris_combine(uint q_6, ReuseSlot cur, bool cur_ris, float cur_c, uint k0_, uint k1_, float3 x_16, float3 n_15, Material m_5, inout Domain doms_2[3], inout uint hs_1)
 {
     float w_sum_3 = 0.0;
     ReuseSlot out_ = ConstructReuseSlot(0u, 0u, 0.0);
@@ -2042,7 +2047,7 @@ ReuseSlot gris_combine(uint q_6, ReuseSlot cur, bool cur_ris, float cur_c, uint 
             uint _e55 = s_11.light;
             GpuLight _e57 = ConstructGpuLight(asfloat(lights.Load3(_e55*64+0)), asuint(lights.Load(_e55*64+12)), asfloat(lights.Load3(_e55*64+16)), asfloat(lights.Load(_e55*64+28)), asfloat(lights.Load3(_e55*64+32)), asfloat(lights.Load(_e55*64+44)), asfloat(lights.Load3(_e55*64+48)), asuint(lights.Load(_e55*64+60)));
             uint _e59 = s_11.u;
-            const float _e60 = reuse_target(q_6, _e57, _e59, x_15, n_14, m_6);
+            const float _e60 = reuse_target(q_6, _e57, _e59, x_16, n_15, m_5);
             if (!((_e60 > 0.0))) {
                 continue;
             }
@@ -2225,7 +2230,7 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
     float3 _e33 = nn;
     float len2_ = dot(_e32, _e33);
     float4 _e35 = s;
-    float3 x_18 = _e35.xyz;
+    float3 x_19 = _e35.xyz;
     if (inside) {
         float _e40 = s.w;
         local_1 = (_e40 > 0.0);
@@ -2240,7 +2245,7 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
     }
     bool _e50 = local_2;
     if (_e50) {
-        local_3 = all((abs(x_18) <= (3.4028235e38).xxx));
+        local_3 = all((abs(x_19) <= (3.4028235e38).xxx));
     } else {
         local_3 = false;
     }
@@ -2255,7 +2260,7 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
         float4 mr = metal_rough_tex.Load(int3(texel_1, int(0)));
         float4 _e83 = base_color_tex.Load(int3(texel_1, int(0)));
         float3 _e90 = view.eye;
-        const Material _e93 = material_of(_e83.xyz, mr.z, mr.y, mr.w, normalize((_e90 - x_18)));
+        const Material _e93 = material_of(_e83.xyz, mr.z, mr.y, mr.w, normalize((_e90 - x_19)));
         m = _e93;
         float3 _e95 = m.base;
         float _e97 = m.metallic;
@@ -2274,7 +2279,7 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
     const float4 _e114 = range_lobe(_e113);
     float _e117 = view.shadow_offset;
     float3 _e120 = view.eye;
-    float eps_4 = (_e117 * length((_e120 - x_18)));
+    float eps_5 = (_e117 * length((_e120 - x_19)));
     uint _e126 = view.seed;
     uint _e130 = view.width;
     uint _e136 = view.frame;
@@ -2282,7 +2287,7 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
     const uint _e138 = pick_stream(_e137);
     h = _e138;
     hc = _e137;
-    const TileWalk _e160 = tile_walk_begin(lid, x_18, _e114.w, has_3);
+    const TileWalk _e160 = tile_walk_begin(lid, x_19, _e114.w, has_3);
     uint2 loop_bound_15 = uint2(4294967295u, 4294967295u);
     bool loop_init_12 = true;
     while(true) {
@@ -2323,7 +2328,7 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
                     if (!(!(has_3))) {
                         BshNode _e182 = ConstructBshNode(asfloat(bsh_nodes.Load3(b_10*32+0)), asfloat(bsh_nodes.Load(b_10*32+12)), asuint(bsh_nodes.Load(b_10*32+16)), asuint(bsh_nodes.Load(b_10*32+20)), asuint(bsh_nodes.Load(b_10*32+24)), asfloat(bsh_nodes.Load(b_10*32+28)));
                         float3 _e183 = r;
-                        const bool _e184 = bsh_reaches(_e182, x_18, _e183, _e114);
+                        const bool _e184 = bsh_reaches(_e182, x_19, _e183, _e114);
                         local_4 = !(_e184);
                     } else {
                         local_4 = true;
@@ -2332,7 +2337,7 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
                     if (_e187) {
                         continue;
                     }
-                    uint li_9 = asuint(bsh_nodes.Load(24+b_10*32));
+                    uint li_10 = asuint(bsh_nodes.Load(24+b_10*32));
                     uint _e192 = count;
                     count = (_e192 + 1u);
                     uint _e195 = h;
@@ -2351,7 +2356,7 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
                     float3 _e206 = n;
                     float3 _e207 = r;
                     Material _e208 = m;
-                    const Shaded _e213 = shade_pick_traced(li_9, x_18, _e206, _e207, _e114, _e208, 1.0, u_5.x, u_5.y, eps_4, false);
+                    const Shaded _e213 = shade_pick_traced(li_10, x_19, _e206, _e207, _e114, _e208, 1.0, u_5.x, u_5.y, eps_5, false);
                     const float3 _e214 = output_of(_e213);
                     const float _e215 = resample_target(_e214);
                     if ((_e215 > 0.0)) {
@@ -2389,7 +2394,7 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
                                 bool _e241 = local_5;
                                 if (_e241) {
                                     uint _e242 = q;
-                                    slot_light[min(uint(_e242), 7u)] = li_9;
+                                    slot_light[min(uint(_e242), 7u)] = li_10;
                                     uint _e244 = q;
                                     slot_u[min(uint(_e244), 7u)] = u_5;
                                     uint _e246 = q;
@@ -2422,7 +2427,7 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
     float3 _e287 = n;
     float3 _e290 = view.eye;
     const uint _e294 = reuse_stream(_e137, 0u);
-    const uint _e295 = reuse_domains(x_18, _e287, length((_e290 - x_18)), _e294, doms);
+    const uint _e295 = reuse_domains(x_19, _e287, length((_e290 - x_19)), _e294, doms);
     if ((_e295 > 0u)) {
         bool _e302 = doms[0].temporal;
         local_6 = _e302;
@@ -2480,8 +2485,8 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
         if (all(loop_bound_19 == uint2(0u, 0u))) { break; }
         loop_bound_19 -= uint2(loop_bound_19.y == 0u, 1u);
         if (!loop_init_16) {
-            uint _e393 = q_2;
-            q_2 = (_e393 + 1u);
+            uint _e387 = q_2;
+            q_2 = (_e387 + 1u);
         }
         loop_init_16 = false;
         uint _e359 = q_2;
@@ -2499,18 +2504,15 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
                 uint _e371 = q_2;
                 uint _e373 = slot_cells[min(uint(_e371), 7u)];
                 float3 _e374 = n;
-                Material _e375 = m;
-                const Shaded _e377 = shade_sample(_e370, _e373, x_18, _e374, _e375, eps_4, true);
-                const float3 _e378 = output_of(_e377);
-                const float _e379 = resample_target(_e378);
-                fresh_visible[min(uint(_e366), 7u)] = (_e379 > 0.0);
+                const bool _e375 = sample_reaches(_e370, _e373, x_19, _e374, eps_5);
+                fresh_visible[min(uint(_e366), 7u)] = _e375;
             } else {
-                uint _e382 = q_2;
-                if ((_e355[min(uint(_e382), 7u)] < K)) {
-                    uint _e386 = q_2;
-                    uint _e388 = q_2;
-                    bool _e391 = fresh_visible[min(uint(_e355[min(uint(_e388), 7u)]), 7u)];
-                    fresh_visible[min(uint(_e386), 7u)] = _e391;
+                uint _e376 = q_2;
+                if ((_e355[min(uint(_e376), 7u)] < K)) {
+                    uint _e380 = q_2;
+                    uint _e382 = q_2;
+                    bool _e385 = fresh_visible[min(uint(_e355[min(uint(_e382), 7u)]), 7u)];
+                    fresh_visible[min(uint(_e380), 7u)] = _e385;
                 }
             }
         }
@@ -2521,59 +2523,59 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
         if (all(loop_bound_20 == uint2(0u, 0u))) { break; }
         loop_bound_20 -= uint2(loop_bound_20.y == 0u, 1u);
         if (!loop_init_17) {
-            uint _e463 = q_3;
-            q_3 = (_e463 + 1u);
+            uint _e457 = q_3;
+            q_3 = (_e457 + 1u);
         }
         loop_init_17 = false;
-        uint _e399 = q_3;
-        if ((_e399 < K)) {
+        uint _e393 = q_3;
+        if ((_e393 < K)) {
         } else {
             break;
         }
         {
-            uint _e402 = q_3;
-            float _e404 = slot_p[min(uint(_e402), 7u)];
-            if ((_e404 > 0.0)) {
-                uint _e411 = reuse.visibility;
-                if (!((_e411 == 0u))) {
-                    uint _e417 = q_3;
-                    bool _e419 = fresh_visible[min(uint(_e417), 7u)];
-                    local_9 = _e419;
+            uint _e396 = q_3;
+            float _e398 = slot_p[min(uint(_e396), 7u)];
+            if ((_e398 > 0.0)) {
+                uint _e405 = reuse.visibility;
+                if (!((_e405 == 0u))) {
+                    uint _e411 = q_3;
+                    bool _e413 = fresh_visible[min(uint(_e411), 7u)];
+                    local_9 = _e413;
                 } else {
                     local_9 = true;
                 }
-                bool _e421 = local_9;
-                local_8 = _e421;
+                bool _e415 = local_9;
+                local_8 = _e415;
             } else {
                 local_8 = false;
             }
             bool fresh = local_8;
+            uint _e418 = q_3;
+            uint _e420 = q_3;
+            uint _e421 = q_3;
+            uint _e423 = slot_light[min(uint(_e421), 7u)];
             uint _e424 = q_3;
-            uint _e426 = q_3;
-            uint _e427 = q_3;
-            uint _e429 = slot_light[min(uint(_e427), 7u)];
-            uint _e430 = q_3;
-            uint _e432 = slot_cells[min(uint(_e430), 7u)];
-            float3 _e433 = total;
-            uint _e434 = q_3;
-            const float _e436 = slot_target(_e433, _e434, K);
-            float3 _e443 = n;
-            Material _e444 = m;
-            const ReuseSlot _e445 = gris_combine(_e426, ConstructReuseSlot(_e429, _e432, (fresh ? _e436 : 0.0)), true, 1.0, 0u, first_1, x_18, _e443, _e444, doms, hs);
-            kept[min(uint(_e424), 7u)] = _e445;
-            uint _e446 = q_3;
-            uint _e448 = q_3;
-            ReuseSlot _e450 = kept[min(uint(_e448), 7u)];
-            fin[min(uint(_e446), 7u)] = _e450;
+            uint _e426 = slot_cells[min(uint(_e424), 7u)];
+            float3 _e427 = total;
+            uint _e428 = q_3;
+            const float _e430 = slot_target(_e427, _e428, K);
+            float3 _e437 = n;
+            Material _e438 = m;
+            const ReuseSlot _e439 = gris_combine(_e420, ConstructReuseSlot(_e423, _e426, (fresh ? _e430 : 0.0)), true, 1.0, 0u, first_1, x_19, _e437, _e438, doms, hs);
+            kept[min(uint(_e418), 7u)] = _e439;
+            uint _e440 = q_3;
+            uint _e442 = q_3;
+            ReuseSlot _e444 = kept[min(uint(_e442), 7u)];
+            fin[min(uint(_e440), 7u)] = _e444;
             if ((_e295 > first_1)) {
-                uint _e452 = q_3;
-                uint _e454 = q_3;
-                uint _e455 = q_3;
-                ReuseSlot _e457 = kept[min(uint(_e455), 7u)];
-                float3 _e459 = n;
-                Material _e460 = m;
-                const ReuseSlot _e461 = gris_combine(_e454, _e457, false, confidence, first_1, _e295, x_18, _e459, _e460, doms, hs);
-                fin[min(uint(_e452), 7u)] = _e461;
+                uint _e446 = q_3;
+                uint _e448 = q_3;
+                uint _e449 = q_3;
+                ReuseSlot _e451 = kept[min(uint(_e449), 7u)];
+                float3 _e453 = n;
+                Material _e454 = m;
+                const ReuseSlot _e455 = gris_combine(_e448, _e451, false, confidence, first_1, _e295, x_19, _e453, _e454, doms, hs);
+                fin[min(uint(_e446), 7u)] = _e455;
             }
         }
     }
@@ -2583,81 +2585,81 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
         if (all(loop_bound_21 == uint2(0u, 0u))) { break; }
         loop_bound_21 -= uint2(loop_bound_21.y == 0u, 1u);
         if (!loop_init_18) {
-            uint _e492 = k;
-            k = (_e492 + 1u);
+            uint _e486 = k;
+            k = (_e486 + 1u);
         }
         loop_init_18 = false;
-        uint _e469 = k;
-        if ((_e469 < K)) {
+        uint _e463 = k;
+        if ((_e463 < K)) {
         } else {
             break;
         }
         {
+            uint _e466 = k;
+            uint _e468 = k;
+            uint _e471 = fin[min(uint(_e468), 7u)].light;
             uint _e472 = k;
-            uint _e474 = k;
-            uint _e477 = fin[min(uint(_e474), 7u)].light;
-            uint _e478 = k;
-            uint _e481 = fin[min(uint(_e478), 7u)].u;
-            const uint2 _e482 = sample_key(_e477, _e481);
-            keys[min(uint(_e472), 7u)] = _e482;
-            uint _e483 = k;
-            uint _e485 = k;
-            float _e488 = fin[min(uint(_e485), 7u)].w;
-            held[min(uint(_e483), 7u)] = (_e488 > 0.0);
+            uint _e475 = fin[min(uint(_e472), 7u)].u;
+            const uint2 _e476 = sample_key(_e471, _e475);
+            keys[min(uint(_e466), 7u)] = _e476;
+            uint _e477 = k;
+            uint _e479 = k;
+            float _e482 = fin[min(uint(_e479), 7u)].w;
+            held[min(uint(_e477), 7u)] = (_e482 > 0.0);
         }
     }
-    uint2 _e494[8] = keys;
-    bool _e495[8] = held;
-    const uint _e496[8] = first_holders(_e494, _e495);
+    uint2 _e488[8] = keys;
+    bool _e489[8] = held;
+    const uint _e490[8] = first_holders(_e488, _e489);
     uint2 loop_bound_22 = uint2(4294967295u, 4294967295u);
     bool loop_init_19 = true;
     while(true) {
         if (all(loop_bound_22 == uint2(0u, 0u))) { break; }
         loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
         if (!loop_init_19) {
-            uint _e622 = k_1;
-            k_1 = (_e622 + 1u);
+            uint _e619 = k_1;
+            k_1 = (_e619 + 1u);
         }
         loop_init_19 = false;
-        uint _e500 = k_1;
-        if ((_e500 < K)) {
+        uint _e494 = k_1;
+        if ((_e494 < K)) {
         } else {
             break;
         }
         {
-            uint _e503 = k_1;
-            uint _e505 = k_1;
-            if ((_e496[min(uint(_e503), 7u)] != _e505)) {
+            uint _e497 = k_1;
+            uint _e499 = k_1;
+            if ((_e490[min(uint(_e497), 7u)] != _e499)) {
                 continue;
             }
             w = (0.0).xxx;
-            uint _e510 = k_1;
-            j_1 = _e510;
+            uint _e504 = k_1;
+            j_1 = _e504;
             uint2 loop_bound_23 = uint2(4294967295u, 4294967295u);
             bool loop_init_20 = true;
             while(true) {
                 if (all(loop_bound_23 == uint2(0u, 0u))) { break; }
                 loop_bound_23 -= uint2(loop_bound_23.y == 0u, 1u);
                 if (!loop_init_20) {
-                    uint _e530 = j_1;
-                    j_1 = (_e530 + 1u);
+                    uint _e524 = j_1;
+                    j_1 = (_e524 + 1u);
                 }
                 loop_init_20 = false;
-                uint _e512 = j_1;
-                if ((_e512 < K)) {
+                uint _e506 = j_1;
+                if ((_e506 < K)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e515 = j_1;
-                    uint _e517 = k_1;
-                    if ((_e496[min(uint(_e515), 7u)] == _e517)) {
-                        float3 _e519 = w;
-                        uint _e520 = j_1;
-                        float _e523 = fin[min(uint(_e520), 7u)].w;
-                        uint _e524 = j_1;
-                        const float3 _e526 = slot_share(_e524, K);
-                        w = (_e519 + (_e523 * _e526));
+                    uint _e509 = j_1;
+                    uint _e511 = k_1;
+                    if ((_e490[min(uint(_e509), 7u)] == _e511)) {
+                        float3 _e513 = w;
+                        uint _e514 = j_1;
+                        float _e517 = fin[min(uint(_e514), 7u)].w;
+                        uint _e518 = j_1;
+                        const float3 _e520 = slot_share(_e518, K);
+                        w = (_e513 + (_e517 * _e520));
                     }
                 }
             }
@@ -2670,95 +2672,97 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
                 if (all(loop_bound_24 == uint2(0u, 0u))) { break; }
                 loop_bound_24 -= uint2(loop_bound_24.y == 0u, 1u);
                 if (!loop_init_21) {
-                    uint _e567 = j_2;
-                    j_2 = (_e567 + 1u);
+                    uint _e561 = j_2;
+                    j_2 = (_e561 + 1u);
                 }
                 loop_init_21 = false;
-                uint _e538 = j_2;
-                if ((_e538 < K)) {
-                    bool _e543 = known;
-                    local_10 = !(_e543);
+                uint _e532 = j_2;
+                if ((_e532 < K)) {
+                    bool _e537 = known;
+                    local_10 = !(_e537);
                 } else {
                     local_10 = false;
                 }
-                bool _e546 = local_10;
-                if (_e546) {
+                bool _e540 = local_10;
+                if (_e540) {
                 } else {
                     break;
                 }
                 {
-                    uint _e547 = j_2;
-                    bool _e549 = fresh_held[min(uint(_e547), 7u)];
-                    if (_e549) {
-                        uint _e552 = j_2;
-                        uint2 _e554 = fresh_keys[min(uint(_e552), 7u)];
-                        uint _e555 = k_1;
-                        uint2 _e557 = keys[min(uint(_e555), 7u)];
-                        local_11 = all((_e554 == _e557));
+                    uint _e541 = j_2;
+                    bool _e543 = fresh_held[min(uint(_e541), 7u)];
+                    if (_e543) {
+                        uint _e546 = j_2;
+                        uint2 _e548 = fresh_keys[min(uint(_e546), 7u)];
+                        uint _e549 = k_1;
+                        uint2 _e551 = keys[min(uint(_e549), 7u)];
+                        local_11 = all((_e548 == _e551));
                     } else {
                         local_11 = false;
                     }
-                    bool _e561 = local_11;
-                    if (_e561) {
+                    bool _e555 = local_11;
+                    if (_e555) {
                         known = true;
-                        uint _e563 = j_2;
-                        bool _e565 = fresh_visible[min(uint(_e563), 7u)];
-                        seen = _e565;
+                        uint _e557 = j_2;
+                        bool _e559 = fresh_visible[min(uint(_e557), 7u)];
+                        seen = _e559;
                     }
                 }
             }
-            uint _e569 = k_1;
-            uint _e572 = fin[min(uint(_e569), 7u)].light;
-            uint _e573 = k_1;
-            uint _e576 = fin[min(uint(_e573), 7u)].u;
-            float3 _e577 = n;
-            Material _e578 = m;
-            bool _e579 = known;
-            const Shaded _e581 = shade_sample(_e572, _e576, x_18, _e577, _e578, eps_4, !(_e579));
-            shaded = _e581;
-            bool _e583 = known;
-            if (_e583) {
-                bool _e586 = seen;
-                local_12 = !(_e586);
+            shaded = ConstructShaded((0.0).xxx, (0.0).xxx, (0.0).xxx);
+            bool _e571 = known;
+            if (!(!(_e571))) {
+                bool _e576 = seen;
+                local_12 = _e576;
             } else {
-                local_12 = false;
+                local_12 = true;
             }
-            bool _e589 = local_12;
-            if (_e589) {
-                shaded = ConstructShaded((0.0).xxx, (0.0).xxx, (0.0).xxx);
+            bool _e578 = local_12;
+            if (_e578) {
+                uint _e579 = k_1;
+                uint _e582 = fin[min(uint(_e579), 7u)].light;
+                uint _e583 = k_1;
+                uint _e586 = fin[min(uint(_e583), 7u)].u;
+                float3 _e587 = n;
+                bool _e588 = known;
+                const Connection _e590 = sample_connection(_e582, _e586, x_19, _e587, eps_5, !(_e588));
+                float3 _e591 = n;
+                Material _e592 = m;
+                const Shaded _e593 = shade_connection(_e590, x_19, _e591, _e592);
+                shaded = _e593;
             }
-            Shaded _e597 = t;
-            Shaded _e598 = shaded;
-            float3 _e599 = w;
-            const Shaded _e600 = scaled(_e598, _e599);
-            const Shaded _e601 = add(_e597, _e600);
-            t = _e601;
-            uint _e602 = k_1;
-            j_3 = _e602;
+            Shaded _e594 = t;
+            Shaded _e595 = shaded;
+            float3 _e596 = w;
+            const Shaded _e597 = scaled(_e595, _e596);
+            const Shaded _e598 = add(_e594, _e597);
+            t = _e598;
+            uint _e599 = k_1;
+            j_3 = _e599;
             uint2 loop_bound_25 = uint2(4294967295u, 4294967295u);
             bool loop_init_22 = true;
             while(true) {
                 if (all(loop_bound_25 == uint2(0u, 0u))) { break; }
                 loop_bound_25 -= uint2(loop_bound_25.y == 0u, 1u);
                 if (!loop_init_22) {
-                    uint _e619 = j_3;
-                    j_3 = (_e619 + 1u);
+                    uint _e616 = j_3;
+                    j_3 = (_e616 + 1u);
                 }
                 loop_init_22 = false;
-                uint _e604 = j_3;
-                if ((_e604 < K)) {
+                uint _e601 = j_3;
+                if ((_e601 < K)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e607 = j_3;
-                    uint _e609 = k_1;
-                    if ((_e496[min(uint(_e607), 7u)] == _e609)) {
-                        uint _e611 = j_3;
-                        Shaded _e613 = shaded;
-                        const float3 _e614 = output_of(_e613);
-                        const float _e615 = resample_target(_e614);
-                        visible[min(uint(_e611), 7u)] = (_e615 > 0.0);
+                    uint _e604 = j_3;
+                    uint _e606 = k_1;
+                    if ((_e490[min(uint(_e604), 7u)] == _e606)) {
+                        uint _e608 = j_3;
+                        Shaded _e610 = shaded;
+                        const float3 _e611 = output_of(_e610);
+                        const float _e612 = resample_target(_e611);
+                        visible[min(uint(_e608), 7u)] = (_e612 > 0.0);
                     }
                 }
             }
@@ -2770,60 +2774,60 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
         if (all(loop_bound_26 == uint2(0u, 0u))) { break; }
         loop_bound_26 -= uint2(loop_bound_26.y == 0u, 1u);
         if (!loop_init_23) {
-            uint _e664 = q_4;
-            q_4 = (_e664 + 1u);
+            uint _e661 = q_4;
+            q_4 = (_e661 + 1u);
         }
         loop_init_23 = false;
-        uint _e626 = q_4;
-        if ((_e626 < K)) {
+        uint _e623 = q_4;
+        if ((_e623 < K)) {
         } else {
             break;
         }
         {
-            uint _e631 = reuse.visibility;
-            if (!((_e631 == 0u))) {
-                uint _e637 = q_4;
-                bool _e639 = visible[min(uint(_e637), 7u)];
-                local_13 = _e639;
+            uint _e628 = reuse.visibility;
+            if (!((_e628 == 0u))) {
+                uint _e634 = q_4;
+                bool _e636 = visible[min(uint(_e634), 7u)];
+                local_13 = _e636;
             } else {
                 local_13 = true;
             }
             bool keep = local_13;
-            const uint _e643 = next_index(pixel_1);
-            uint _e646 = q_4;
-            uint _e648 = q_4;
-            uint _e651 = kept[min(uint(_e648), 7u)].light;
-            uint _e652 = q_4;
-            uint _e655 = kept[min(uint(_e652), 7u)].u;
-            uint _e656 = q_4;
-            float _e659 = kept[min(uint(_e656), 7u)].w;
+            const uint _e640 = next_index(pixel_1);
+            uint _e643 = q_4;
+            uint _e645 = q_4;
+            uint _e648 = kept[min(uint(_e645), 7u)].light;
+            uint _e649 = q_4;
+            uint _e652 = kept[min(uint(_e649), 7u)].u;
+            uint _e653 = q_4;
+            float _e656 = kept[min(uint(_e653), 7u)].w;
             {
-                ReuseSlot _value4 = ConstructReuseSlot(_e651, _e655, (keep ? _e659 : 0.0));
-                reuse_pixels.Store(_e646*12+48+_e643*144+0, asuint(_value4.light));
-                reuse_pixels.Store(_e646*12+48+_e643*144+4, asuint(_value4.u));
-                reuse_pixels.Store(_e646*12+48+_e643*144+8, asuint(_value4.w));
+                ReuseSlot _value4 = ConstructReuseSlot(_e648, _e652, (keep ? _e656 : 0.0));
+                reuse_pixels.Store(_e643*12+48+_e640*144+0, asuint(_value4.light));
+                reuse_pixels.Store(_e643*12+48+_e640*144+4, asuint(_value4.u));
+                reuse_pixels.Store(_e643*12+48+_e640*144+8, asuint(_value4.w));
             }
         }
     }
-    const uint _e667 = next_index(pixel_1);
-    float3 _e670 = n;
-    Material _e671 = m;
-    float _e674 = reuse.max_confidence;
-    const ReuseSurface _e676 = reuse_surface(x_18, _e670, _e671, min(confidence, _e674));
+    const uint _e664 = next_index(pixel_1);
+    float3 _e667 = n;
+    Material _e668 = m;
+    float _e671 = reuse.max_confidence;
+    const ReuseSurface _e673 = reuse_surface(x_19, _e667, _e668, min(confidence, _e671));
     {
-        ReuseSurface _value2 = _e676;
-        reuse_pixels.Store3(0+_e667*144+0, asuint(_value2.x));
-        reuse_pixels.Store(0+_e667*144+12, asuint(_value2.m));
-        reuse_pixels.Store3(0+_e667*144+16, asuint(_value2.n));
-        reuse_pixels.Store(0+_e667*144+28, asuint(_value2.base));
-        reuse_pixels.Store(0+_e667*144+32, asuint(_value2.rough));
-        reuse_pixels.Store(0+_e667*144+36, asuint(_value2.pad0_));
-        reuse_pixels.Store(0+_e667*144+40, asuint(_value2.pad1_));
-        reuse_pixels.Store(0+_e667*144+44, asuint(_value2.pad2_));
+        ReuseSurface _value2 = _e673;
+        reuse_pixels.Store3(0+_e664*144+0, asuint(_value2.x));
+        reuse_pixels.Store(0+_e664*144+12, asuint(_value2.m));
+        reuse_pixels.Store3(0+_e664*144+16, asuint(_value2.n));
+        reuse_pixels.Store(0+_e664*144+28, asuint(_value2.base));
+        reuse_pixels.Store(0+_e664*144+32, asuint(_value2.rough));
+        reuse_pixels.Store(0+_e664*144+36, asuint(_value2.pad0_));
+        reuse_pixels.Store(0+_e664*144+40, asuint(_value2.pad1_));
+        reuse_pixels.Store(0+_e664*144+44, asuint(_value2.pad2_));
     }
-    float3 _e679 = t.diffuse;
-    float3 _e681 = t.specular;
-    uint _e683 = count;
-    out_tex[texel_1] = float4((_e679 + _e681), float(_e683));
+    float3 _e676 = t.diffuse;
+    float3 _e678 = t.specular;
+    uint _e680 = count;
+    out_tex[texel_1] = float4((_e676 + _e678), float(_e680));
     return;
 }

@@ -767,9 +767,9 @@ float bevy_dfg(
 ) {
     float rx = 1.0 - r_4;
     float a004_ = (metal::min(rx * rx, metal::exp2(-9.28 * n_v_2)) * rx) + (0.0425 - (0.0275 * r_4));
-    float x_16 = metal::max((1.04 - (0.572 * r_4)) - (1.04 * a004_), 0.00005);
+    float x_17 = metal::max((1.04 - (0.572 * r_4)) - (1.04 * a004_), 0.00005);
     float y_1 = metal::max(((0.022 * r_4) - 0.04) + (1.04 * a004_), 0.00005);
-    return x_16 + y_1;
+    return x_17 + y_1;
 }
 
 metal::float3 bevy_brdf(
@@ -915,8 +915,8 @@ metal::float3 triangle_normal(
     metal::float3 c_6
 ) {
     bool local_22 = {};
-    metal::float3 n_15 = metal::cross(b_3 - a_4, c_6 - a_4);
-    float l2_ = metal::dot(n_15, n_15);
+    metal::float3 n_16 = metal::cross(b_3 - a_4, c_6 - a_4);
+    float l2_ = metal::dot(n_16, n_16);
     if (!(!((l2_ > 0.0)))) {
         local_22 = !((l2_ < 300000000000000000000000000000000000000.0));
     } else {
@@ -926,7 +926,7 @@ metal::float3 triangle_normal(
     if (_e17) {
         return metal::float3(0.0, 0.0, 0.0);
     }
-    return n_15 / metal::float3(metal::sqrt(l2_));
+    return n_16 / metal::float3(metal::sqrt(l2_));
 }
 
 float ray_triangle(
@@ -997,9 +997,9 @@ metal::float3 reproject(
     if (clip.w <= 0.0) {
         return metal::float3(-1.0, -1.0, 0.0);
     }
-    float x_17 = ((((clip.x / clip.w) + 1.0) * 0.5) * width) - 0.5;
+    float x_18 = ((((clip.x / clip.w) + 1.0) * 0.5) * width) - 0.5;
     float y_2 = (((1.0 - (clip.y / clip.w)) * 0.5) * height) - 0.5;
-    return metal::float3(x_17, y_2, clip.w);
+    return metal::float3(x_18, y_2, clip.w);
 }
 
 bool history_matches(
@@ -1077,12 +1077,12 @@ GeoHit trace(
         if (metal::all(loop_bound == uint2(0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         uint _e21 = node_3;
-        GpuGeoNode n_16 = geo_nodes[_e21];
+        GpuGeoNode n_17 = geo_nodes[_e21];
         float _e27 = hit.t;
-        float _e28 = ray_aabb(o_2, _e14, n_16.bmin, n_16.bmax, _e27);
+        float _e28 = ray_aabb(o_2, _e14, n_17.bmin, n_17.bmax, _e27);
         if (_e28 >= 0.0) {
-            if (n_16.count > 0u) {
-                i = n_16.first;
+            if (n_17.count > 0u) {
+                i = n_17.first;
                 uint2 loop_bound_1 = uint2(4294967295u);
                 bool loop_init = true;
                 while(true) {
@@ -1094,7 +1094,7 @@ GeoHit trace(
                     }
                     loop_init = false;
                     uint _e36 = i;
-                    if (_e36 < (n_16.first + n_16.count)) {
+                    if (_e36 < (n_17.first + n_17.count)) {
                     } else {
                         break;
                     }
@@ -1118,11 +1118,11 @@ GeoHit trace(
                 uint _e60 = sp;
                 if (_e60 < 64u) {
                     uint _e63 = sp;
-                    stack.inner[_e63] = n_16.first + 1u;
+                    stack.inner[_e63] = n_17.first + 1u;
                     uint _e68 = sp;
                     sp = _e68 + 1u;
                 }
-                node_3 = n_16.first;
+                node_3 = n_17.first;
                 continue;
             }
         }
@@ -1999,12 +1999,11 @@ metal::uint2 sample_key(
     return metal::uint2(li_7, (_e6 == LIGHT_TRIANGLE) ? cells_1 : 0u);
 }
 
-Shaded shade_sample(
+Connection sample_connection(
     uint li_8,
     uint cells_2,
     metal::float3 x_13,
     metal::float3 n_12,
-    Material m_5,
     float eps_3,
     bool trace_4,
     device type_7 const& geo_nodes,
@@ -2012,12 +2011,26 @@ Shaded shade_sample(
     device type_12 const& lights,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuLight _e9 = lights[li_8];
-    float _e13 = grid_coordinate(cells_2);
-    float _e16 = grid_coordinate(cells_2 << 16u);
-    Connection _e17 = connect_record(_e9, x_13, n_12, n_12, UNRANGED, UNRANGED, 1.0, _e13, _e16, eps_3, trace_4, geo_nodes, geo_tris, _buffer_sizes);
-    Shaded _e18 = shade_connection(_e17, x_13, n_12, m_5);
-    return _e18;
+    GpuLight _e8 = lights[li_8];
+    float _e12 = grid_coordinate(cells_2);
+    float _e15 = grid_coordinate(cells_2 << 16u);
+    Connection _e16 = connect_record(_e8, x_13, n_12, n_12, UNRANGED, UNRANGED, 1.0, _e12, _e15, eps_3, trace_4, geo_nodes, geo_tris, _buffer_sizes);
+    return _e16;
+}
+
+bool sample_reaches(
+    uint li_9,
+    uint cells_3,
+    metal::float3 x_14,
+    metal::float3 n_13,
+    float eps_4,
+    device type_7 const& geo_nodes,
+    device type_8 const& geo_tris,
+    device type_12 const& lights,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Connection _e6 = sample_connection(li_9, cells_3, x_14, n_13, eps_4, true, geo_nodes, geo_tris, lights, _buffer_sizes);
+    return metal::any(_e6.e > metal::float3(0.0));
 }
 
 metal::int2 naga_f2i32(metal::float2 value) {
@@ -2025,8 +2038,8 @@ metal::int2 naga_f2i32(metal::float2 value) {
 }
 
 uint reuse_domains(
-    metal::float3 x_14,
-    metal::float3 n_13,
+    metal::float3 x_15,
+    metal::float3 n_14,
     float d_6,
     uint h_2,
     thread type_27& doms_1,
@@ -2057,7 +2070,7 @@ uint reuse_domains(
     metal::float4 _e24 = reuse.c3_;
     uint _e27 = view.width;
     uint _e31 = view.height;
-    metal::float3 _e33 = reproject(_e15, _e18, _e21, _e24, x_14, static_cast<float>(_e27), static_cast<float>(_e31));
+    metal::float3 _e33 = reproject(_e15, _e18, _e21, _e24, x_15, static_cast<float>(_e27), static_cast<float>(_e31));
     if (_e33.z <= 0.0) {
         return 0u;
     }
@@ -2164,7 +2177,7 @@ uint reuse_domains(
             }
             bool _e143 = local_43;
             if (!(_e143)) {
-                bool _e151 = history_matches(n_13, s_13.n, x_14, metal::dot(s_13.n, s_13.x), d_6);
+                bool _e151 = history_matches(n_14, s_13.n, x_15, metal::dot(s_13.n, s_13.x), d_6);
                 local_44 = !(_e151);
             } else {
                 local_44 = true;
@@ -2194,9 +2207,9 @@ ReuseSlot gris_combine(
     float cur_c,
     uint k0_,
     uint k1_,
-    metal::float3 x_15,
-    metal::float3 n_14,
-    Material m_6,
+    metal::float3 x_16,
+    metal::float3 n_15,
+    Material m_5,
     thread type_27& doms_2,
     thread uint& hs_1,
     device type_7 const& geo_nodes,
@@ -2260,7 +2273,7 @@ ReuseSlot gris_combine(
             uint _e55 = s_11.light;
             GpuLight _e57 = lights[_e55];
             uint _e59 = s_11.u;
-            float _e60 = reuse_target(q_6, _e57, _e59, x_15, n_14, m_6, geo_nodes, geo_tris, _buffer_sizes);
+            float _e60 = reuse_target(q_6, _e57, _e59, x_16, n_15, m_5, geo_nodes, geo_tris, _buffer_sizes);
             if (!((_e60 > 0.0))) {
                 continue;
             }
@@ -2468,7 +2481,7 @@ kernel void main_(
     metal::float3 _e33 = nn;
     float len2_ = metal::dot(_e32, _e33);
     metal::float4 _e35 = s;
-    metal::float3 x_18 = _e35.xyz;
+    metal::float3 x_19 = _e35.xyz;
     if (inside) {
         float _e40 = s.w;
         local_1 = _e40 > 0.0;
@@ -2483,7 +2496,7 @@ kernel void main_(
     }
     bool _e50 = local_2;
     if (_e50) {
-        local_3 = metal::all(metal::abs(x_18) <= metal::float3(340282350000000000000000000000000000000.0));
+        local_3 = metal::all(metal::abs(x_19) <= metal::float3(340282350000000000000000000000000000000.0));
     } else {
         local_3 = false;
     }
@@ -2498,7 +2511,7 @@ kernel void main_(
         metal::float4 mr = metal_rough_tex.read(metal::uint2(texel_1), 0);
         metal::float4 _e83 = base_color_tex.read(metal::uint2(texel_1), 0);
         metal::float3 _e90 = view.eye;
-        Material _e93 = material_of(_e83.xyz, mr.z, mr.y, mr.w, metal::normalize(_e90 - x_18));
+        Material _e93 = material_of(_e83.xyz, mr.z, mr.y, mr.w, metal::normalize(_e90 - x_19));
         m = _e93;
         metal::float3 _e95 = m.base;
         float _e97 = m.metallic;
@@ -2517,7 +2530,7 @@ kernel void main_(
     metal::float4 _e114 = range_lobe(_e113);
     float _e117 = view.shadow_offset;
     metal::float3 _e120 = view.eye;
-    float eps_4 = _e117 * metal::length(_e120 - x_18);
+    float eps_5 = _e117 * metal::length(_e120 - x_19);
     uint _e126 = view.seed;
     uint _e130 = view.width;
     uint _e136 = view.frame;
@@ -2525,7 +2538,7 @@ kernel void main_(
     uint _e138 = pick_stream(_e137);
     h = _e138;
     hc = _e137;
-    TileWalk _e160 = tile_walk_begin(lid, x_18, _e114.w, has_3, bsh_nodes, wg_lo, wg_hi, wg_box, tile_list, subtree_at, tile_scale, tile_total, _buffer_sizes);
+    TileWalk _e160 = tile_walk_begin(lid, x_19, _e114.w, has_3, bsh_nodes, wg_lo, wg_hi, wg_box, tile_list, subtree_at, tile_scale, tile_total, _buffer_sizes);
     uint2 loop_bound_15 = uint2(4294967295u);
     bool loop_init_12 = true;
     while(true) {
@@ -2566,7 +2579,7 @@ kernel void main_(
                     if (!(!(has_3))) {
                         BshNode _e182 = bsh_nodes[b_10];
                         metal::float3 _e183 = r;
-                        bool _e184 = bsh_reaches(_e182, x_18, _e183, _e114);
+                        bool _e184 = bsh_reaches(_e182, x_19, _e183, _e114);
                         local_4 = !(_e184);
                     } else {
                         local_4 = true;
@@ -2575,7 +2588,7 @@ kernel void main_(
                     if (_e187) {
                         continue;
                     }
-                    uint li_9 = bsh_nodes[b_10].light;
+                    uint li_10 = bsh_nodes[b_10].light;
                     uint _e192 = count;
                     count = _e192 + 1u;
                     uint _e195 = h;
@@ -2594,7 +2607,7 @@ kernel void main_(
                     metal::float3 _e206 = n;
                     metal::float3 _e207 = r;
                     Material _e208 = m;
-                    Shaded _e213 = shade_pick_traced(li_9, x_18, _e206, _e207, _e114, _e208, 1.0, u_5.x, u_5.y, eps_4, false, geo_nodes, geo_tris, lights, rt2_3, r2_3, light_cones, _buffer_sizes);
+                    Shaded _e213 = shade_pick_traced(li_10, x_19, _e206, _e207, _e114, _e208, 1.0, u_5.x, u_5.y, eps_5, false, geo_nodes, geo_tris, lights, rt2_3, r2_3, light_cones, _buffer_sizes);
                     metal::float3 _e214 = output_of(_e213);
                     float _e215 = resample_target(_e214);
                     if (_e215 > 0.0) {
@@ -2632,7 +2645,7 @@ kernel void main_(
                                 bool _e241 = local_5;
                                 if (_e241) {
                                     uint _e242 = q;
-                                    slot_light.inner[_e242] = li_9;
+                                    slot_light.inner[_e242] = li_10;
                                     uint _e244 = q;
                                     slot_u.inner[_e244] = u_5;
                                     uint _e246 = q;
@@ -2665,7 +2678,7 @@ kernel void main_(
     metal::float3 _e287 = n;
     metal::float3 _e290 = view.eye;
     uint _e294 = reuse_stream(_e137, 0u);
-    uint _e295 = reuse_domains(x_18, _e287, metal::length(_e290 - x_18), _e294, doms, view, reuse, reuse_pixels, _buffer_sizes);
+    uint _e295 = reuse_domains(x_19, _e287, metal::length(_e290 - x_19), _e294, doms, view, reuse, reuse_pixels, _buffer_sizes);
     if (_e295 > 0u) {
         bool _e302 = doms.inner[0].temporal;
         local_6 = _e302;
@@ -2723,8 +2736,8 @@ kernel void main_(
         if (metal::all(loop_bound_19 == uint2(0u))) { break; }
         loop_bound_19 -= uint2(loop_bound_19.y == 0u, 1u);
         if (!loop_init_16) {
-            uint _e393 = q_2;
-            q_2 = _e393 + 1u;
+            uint _e387 = q_2;
+            q_2 = _e387 + 1u;
         }
         loop_init_16 = false;
         uint _e359 = q_2;
@@ -2742,18 +2755,15 @@ kernel void main_(
                 uint _e371 = q_2;
                 uint _e373 = slot_cells.inner[_e371];
                 metal::float3 _e374 = n;
-                Material _e375 = m;
-                Shaded _e377 = shade_sample(_e370, _e373, x_18, _e374, _e375, eps_4, true, geo_nodes, geo_tris, lights, _buffer_sizes);
-                metal::float3 _e378 = output_of(_e377);
-                float _e379 = resample_target(_e378);
-                fresh_visible.inner[_e366] = _e379 > 0.0;
+                bool _e375 = sample_reaches(_e370, _e373, x_19, _e374, eps_5, geo_nodes, geo_tris, lights, _buffer_sizes);
+                fresh_visible.inner[_e366] = _e375;
             } else {
-                uint _e382 = q_2;
-                if (_e355.inner[_e382] < K) {
-                    uint _e386 = q_2;
-                    uint _e388 = q_2;
-                    bool _e391 = fresh_visible.inner[_e355.inner[_e388]];
-                    fresh_visible.inner[_e386] = _e391;
+                uint _e376 = q_2;
+                if (_e355.inner[_e376] < K) {
+                    uint _e380 = q_2;
+                    uint _e382 = q_2;
+                    bool _e385 = fresh_visible.inner[_e355.inner[_e382]];
+                    fresh_visible.inner[_e380] = _e385;
                 }
             }
         }
@@ -2764,59 +2774,59 @@ kernel void main_(
         if (metal::all(loop_bound_20 == uint2(0u))) { break; }
         loop_bound_20 -= uint2(loop_bound_20.y == 0u, 1u);
         if (!loop_init_17) {
-            uint _e463 = q_3;
-            q_3 = _e463 + 1u;
+            uint _e457 = q_3;
+            q_3 = _e457 + 1u;
         }
         loop_init_17 = false;
-        uint _e399 = q_3;
-        if (_e399 < K) {
+        uint _e393 = q_3;
+        if (_e393 < K) {
         } else {
             break;
         }
         {
-            uint _e402 = q_3;
-            float _e404 = slot_p.inner[_e402];
-            if (_e404 > 0.0) {
-                uint _e411 = reuse.visibility;
-                if (!((_e411 == 0u))) {
-                    uint _e417 = q_3;
-                    bool _e419 = fresh_visible.inner[_e417];
-                    local_9 = _e419;
+            uint _e396 = q_3;
+            float _e398 = slot_p.inner[_e396];
+            if (_e398 > 0.0) {
+                uint _e405 = reuse.visibility;
+                if (!((_e405 == 0u))) {
+                    uint _e411 = q_3;
+                    bool _e413 = fresh_visible.inner[_e411];
+                    local_9 = _e413;
                 } else {
                     local_9 = true;
                 }
-                bool _e421 = local_9;
-                local_8 = _e421;
+                bool _e415 = local_9;
+                local_8 = _e415;
             } else {
                 local_8 = false;
             }
             bool fresh = local_8;
+            uint _e418 = q_3;
+            uint _e420 = q_3;
+            uint _e421 = q_3;
+            uint _e423 = slot_light.inner[_e421];
             uint _e424 = q_3;
-            uint _e426 = q_3;
-            uint _e427 = q_3;
-            uint _e429 = slot_light.inner[_e427];
-            uint _e430 = q_3;
-            uint _e432 = slot_cells.inner[_e430];
-            metal::float3 _e433 = total;
-            uint _e434 = q_3;
-            float _e436 = slot_target(_e433, _e434, K);
-            metal::float3 _e443 = n;
-            Material _e444 = m;
-            ReuseSlot _e445 = gris_combine(_e426, ReuseSlot {_e429, _e432, fresh ? _e436 : 0.0}, true, 1.0, 0u, first_1, x_18, _e443, _e444, doms, hs, geo_nodes, geo_tris, view, lights, reuse, lights_prev, reuse_pixels, _buffer_sizes);
-            kept.inner[_e424] = _e445;
-            uint _e446 = q_3;
-            uint _e448 = q_3;
-            ReuseSlot _e450 = kept.inner[_e448];
-            fin.inner[_e446] = _e450;
+            uint _e426 = slot_cells.inner[_e424];
+            metal::float3 _e427 = total;
+            uint _e428 = q_3;
+            float _e430 = slot_target(_e427, _e428, K);
+            metal::float3 _e437 = n;
+            Material _e438 = m;
+            ReuseSlot _e439 = gris_combine(_e420, ReuseSlot {_e423, _e426, fresh ? _e430 : 0.0}, true, 1.0, 0u, first_1, x_19, _e437, _e438, doms, hs, geo_nodes, geo_tris, view, lights, reuse, lights_prev, reuse_pixels, _buffer_sizes);
+            kept.inner[_e418] = _e439;
+            uint _e440 = q_3;
+            uint _e442 = q_3;
+            ReuseSlot _e444 = kept.inner[_e442];
+            fin.inner[_e440] = _e444;
             if (_e295 > first_1) {
-                uint _e452 = q_3;
-                uint _e454 = q_3;
-                uint _e455 = q_3;
-                ReuseSlot _e457 = kept.inner[_e455];
-                metal::float3 _e459 = n;
-                Material _e460 = m;
-                ReuseSlot _e461 = gris_combine(_e454, _e457, false, confidence, first_1, _e295, x_18, _e459, _e460, doms, hs, geo_nodes, geo_tris, view, lights, reuse, lights_prev, reuse_pixels, _buffer_sizes);
-                fin.inner[_e452] = _e461;
+                uint _e446 = q_3;
+                uint _e448 = q_3;
+                uint _e449 = q_3;
+                ReuseSlot _e451 = kept.inner[_e449];
+                metal::float3 _e453 = n;
+                Material _e454 = m;
+                ReuseSlot _e455 = gris_combine(_e448, _e451, false, confidence, first_1, _e295, x_19, _e453, _e454, doms, hs, geo_nodes, geo_tris, view, lights, reuse, lights_prev, reuse_pixels, _buffer_sizes);
+                fin.inner[_e446] = _e455;
             }
         }
     }
@@ -2826,81 +2836,81 @@ kernel void main_(
         if (metal::all(loop_bound_21 == uint2(0u))) { break; }
         loop_bound_21 -= uint2(loop_bound_21.y == 0u, 1u);
         if (!loop_init_18) {
-            uint _e492 = k;
-            k = _e492 + 1u;
+            uint _e486 = k;
+            k = _e486 + 1u;
         }
         loop_init_18 = false;
-        uint _e469 = k;
-        if (_e469 < K) {
+        uint _e463 = k;
+        if (_e463 < K) {
         } else {
             break;
         }
         {
+            uint _e466 = k;
+            uint _e468 = k;
+            uint _e471 = fin.inner[_e468].light;
             uint _e472 = k;
-            uint _e474 = k;
-            uint _e477 = fin.inner[_e474].light;
-            uint _e478 = k;
-            uint _e481 = fin.inner[_e478].u;
-            metal::uint2 _e482 = sample_key(_e477, _e481, lights, _buffer_sizes);
-            keys.inner[_e472] = _e482;
-            uint _e483 = k;
-            uint _e485 = k;
-            float _e488 = fin.inner[_e485].w;
-            held.inner[_e483] = _e488 > 0.0;
+            uint _e475 = fin.inner[_e472].u;
+            metal::uint2 _e476 = sample_key(_e471, _e475, lights, _buffer_sizes);
+            keys.inner[_e466] = _e476;
+            uint _e477 = k;
+            uint _e479 = k;
+            float _e482 = fin.inner[_e479].w;
+            held.inner[_e477] = _e482 > 0.0;
         }
     }
-    type_25 _e494 = keys;
-    type_26 _e495 = held;
-    type_17 _e496 = first_holders(_e494, _e495);
+    type_25 _e488 = keys;
+    type_26 _e489 = held;
+    type_17 _e490 = first_holders(_e488, _e489);
     uint2 loop_bound_22 = uint2(4294967295u);
     bool loop_init_19 = true;
     while(true) {
         if (metal::all(loop_bound_22 == uint2(0u))) { break; }
         loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
         if (!loop_init_19) {
-            uint _e622 = k_1;
-            k_1 = _e622 + 1u;
+            uint _e619 = k_1;
+            k_1 = _e619 + 1u;
         }
         loop_init_19 = false;
-        uint _e500 = k_1;
-        if (_e500 < K) {
+        uint _e494 = k_1;
+        if (_e494 < K) {
         } else {
             break;
         }
         {
-            uint _e503 = k_1;
-            uint _e505 = k_1;
-            if (_e496.inner[_e503] != _e505) {
+            uint _e497 = k_1;
+            uint _e499 = k_1;
+            if (_e490.inner[_e497] != _e499) {
                 continue;
             }
             w = metal::float3(0.0);
-            uint _e510 = k_1;
-            j_1 = _e510;
+            uint _e504 = k_1;
+            j_1 = _e504;
             uint2 loop_bound_23 = uint2(4294967295u);
             bool loop_init_20 = true;
             while(true) {
                 if (metal::all(loop_bound_23 == uint2(0u))) { break; }
                 loop_bound_23 -= uint2(loop_bound_23.y == 0u, 1u);
                 if (!loop_init_20) {
-                    uint _e530 = j_1;
-                    j_1 = _e530 + 1u;
+                    uint _e524 = j_1;
+                    j_1 = _e524 + 1u;
                 }
                 loop_init_20 = false;
-                uint _e512 = j_1;
-                if (_e512 < K) {
+                uint _e506 = j_1;
+                if (_e506 < K) {
                 } else {
                     break;
                 }
                 {
-                    uint _e515 = j_1;
-                    uint _e517 = k_1;
-                    if (_e496.inner[_e515] == _e517) {
-                        metal::float3 _e519 = w;
-                        uint _e520 = j_1;
-                        float _e523 = fin.inner[_e520].w;
-                        uint _e524 = j_1;
-                        metal::float3 _e526 = slot_share(_e524, K);
-                        w = _e519 + (_e523 * _e526);
+                    uint _e509 = j_1;
+                    uint _e511 = k_1;
+                    if (_e490.inner[_e509] == _e511) {
+                        metal::float3 _e513 = w;
+                        uint _e514 = j_1;
+                        float _e517 = fin.inner[_e514].w;
+                        uint _e518 = j_1;
+                        metal::float3 _e520 = slot_share(_e518, K);
+                        w = _e513 + (_e517 * _e520);
                     }
                 }
             }
@@ -2913,95 +2923,97 @@ kernel void main_(
                 if (metal::all(loop_bound_24 == uint2(0u))) { break; }
                 loop_bound_24 -= uint2(loop_bound_24.y == 0u, 1u);
                 if (!loop_init_21) {
-                    uint _e567 = j_2;
-                    j_2 = _e567 + 1u;
+                    uint _e561 = j_2;
+                    j_2 = _e561 + 1u;
                 }
                 loop_init_21 = false;
-                uint _e538 = j_2;
-                if (_e538 < K) {
-                    bool _e543 = known;
-                    local_10 = !(_e543);
+                uint _e532 = j_2;
+                if (_e532 < K) {
+                    bool _e537 = known;
+                    local_10 = !(_e537);
                 } else {
                     local_10 = false;
                 }
-                bool _e546 = local_10;
-                if (_e546) {
+                bool _e540 = local_10;
+                if (_e540) {
                 } else {
                     break;
                 }
                 {
-                    uint _e547 = j_2;
-                    bool _e549 = fresh_held.inner[_e547];
-                    if (_e549) {
-                        uint _e552 = j_2;
-                        metal::uint2 _e554 = fresh_keys.inner[_e552];
-                        uint _e555 = k_1;
-                        metal::uint2 _e557 = keys.inner[_e555];
-                        local_11 = metal::all(_e554 == _e557);
+                    uint _e541 = j_2;
+                    bool _e543 = fresh_held.inner[_e541];
+                    if (_e543) {
+                        uint _e546 = j_2;
+                        metal::uint2 _e548 = fresh_keys.inner[_e546];
+                        uint _e549 = k_1;
+                        metal::uint2 _e551 = keys.inner[_e549];
+                        local_11 = metal::all(_e548 == _e551);
                     } else {
                         local_11 = false;
                     }
-                    bool _e561 = local_11;
-                    if (_e561) {
+                    bool _e555 = local_11;
+                    if (_e555) {
                         known = true;
-                        uint _e563 = j_2;
-                        bool _e565 = fresh_visible.inner[_e563];
-                        seen = _e565;
+                        uint _e557 = j_2;
+                        bool _e559 = fresh_visible.inner[_e557];
+                        seen = _e559;
                     }
                 }
             }
-            uint _e569 = k_1;
-            uint _e572 = fin.inner[_e569].light;
-            uint _e573 = k_1;
-            uint _e576 = fin.inner[_e573].u;
-            metal::float3 _e577 = n;
-            Material _e578 = m;
-            bool _e579 = known;
-            Shaded _e581 = shade_sample(_e572, _e576, x_18, _e577, _e578, eps_4, !(_e579), geo_nodes, geo_tris, lights, _buffer_sizes);
-            shaded = _e581;
-            bool _e583 = known;
-            if (_e583) {
-                bool _e586 = seen;
-                local_12 = !(_e586);
+            shaded = Shaded {metal::float3(0.0), metal::float3(0.0), metal::float3(0.0)};
+            bool _e571 = known;
+            if (!(!(_e571))) {
+                bool _e576 = seen;
+                local_12 = _e576;
             } else {
-                local_12 = false;
+                local_12 = true;
             }
-            bool _e589 = local_12;
-            if (_e589) {
-                shaded = Shaded {metal::float3(0.0), metal::float3(0.0), metal::float3(0.0)};
+            bool _e578 = local_12;
+            if (_e578) {
+                uint _e579 = k_1;
+                uint _e582 = fin.inner[_e579].light;
+                uint _e583 = k_1;
+                uint _e586 = fin.inner[_e583].u;
+                metal::float3 _e587 = n;
+                bool _e588 = known;
+                Connection _e590 = sample_connection(_e582, _e586, x_19, _e587, eps_5, !(_e588), geo_nodes, geo_tris, lights, _buffer_sizes);
+                metal::float3 _e591 = n;
+                Material _e592 = m;
+                Shaded _e593 = shade_connection(_e590, x_19, _e591, _e592);
+                shaded = _e593;
             }
-            Shaded _e597 = t;
-            Shaded _e598 = shaded;
-            metal::float3 _e599 = w;
-            Shaded _e600 = scaled(_e598, _e599);
-            Shaded _e601 = add(_e597, _e600);
-            t = _e601;
-            uint _e602 = k_1;
-            j_3 = _e602;
+            Shaded _e594 = t;
+            Shaded _e595 = shaded;
+            metal::float3 _e596 = w;
+            Shaded _e597 = scaled(_e595, _e596);
+            Shaded _e598 = add(_e594, _e597);
+            t = _e598;
+            uint _e599 = k_1;
+            j_3 = _e599;
             uint2 loop_bound_25 = uint2(4294967295u);
             bool loop_init_22 = true;
             while(true) {
                 if (metal::all(loop_bound_25 == uint2(0u))) { break; }
                 loop_bound_25 -= uint2(loop_bound_25.y == 0u, 1u);
                 if (!loop_init_22) {
-                    uint _e619 = j_3;
-                    j_3 = _e619 + 1u;
+                    uint _e616 = j_3;
+                    j_3 = _e616 + 1u;
                 }
                 loop_init_22 = false;
-                uint _e604 = j_3;
-                if (_e604 < K) {
+                uint _e601 = j_3;
+                if (_e601 < K) {
                 } else {
                     break;
                 }
                 {
-                    uint _e607 = j_3;
-                    uint _e609 = k_1;
-                    if (_e496.inner[_e607] == _e609) {
-                        uint _e611 = j_3;
-                        Shaded _e613 = shaded;
-                        metal::float3 _e614 = output_of(_e613);
-                        float _e615 = resample_target(_e614);
-                        visible.inner[_e611] = _e615 > 0.0;
+                    uint _e604 = j_3;
+                    uint _e606 = k_1;
+                    if (_e490.inner[_e604] == _e606) {
+                        uint _e608 = j_3;
+                        Shaded _e610 = shaded;
+                        metal::float3 _e611 = output_of(_e610);
+                        float _e612 = resample_target(_e611);
+                        visible.inner[_e608] = _e612 > 0.0;
                     }
                 }
             }
@@ -3013,45 +3025,45 @@ kernel void main_(
         if (metal::all(loop_bound_26 == uint2(0u))) { break; }
         loop_bound_26 -= uint2(loop_bound_26.y == 0u, 1u);
         if (!loop_init_23) {
-            uint _e664 = q_4;
-            q_4 = _e664 + 1u;
+            uint _e661 = q_4;
+            q_4 = _e661 + 1u;
         }
         loop_init_23 = false;
-        uint _e626 = q_4;
-        if (_e626 < K) {
+        uint _e623 = q_4;
+        if (_e623 < K) {
         } else {
             break;
         }
         {
-            uint _e631 = reuse.visibility;
-            if (!((_e631 == 0u))) {
-                uint _e637 = q_4;
-                bool _e639 = visible.inner[_e637];
-                local_13 = _e639;
+            uint _e628 = reuse.visibility;
+            if (!((_e628 == 0u))) {
+                uint _e634 = q_4;
+                bool _e636 = visible.inner[_e634];
+                local_13 = _e636;
             } else {
                 local_13 = true;
             }
             bool keep = local_13;
-            uint _e643 = next_index(pixel_1, view, reuse);
-            uint _e646 = q_4;
-            uint _e648 = q_4;
-            uint _e651 = kept.inner[_e648].light;
-            uint _e652 = q_4;
-            uint _e655 = kept.inner[_e652].u;
-            uint _e656 = q_4;
-            float _e659 = kept.inner[_e656].w;
-            reuse_pixels[_e643].slots.inner[_e646] = ReuseSlot {_e651, _e655, keep ? _e659 : 0.0};
+            uint _e640 = next_index(pixel_1, view, reuse);
+            uint _e643 = q_4;
+            uint _e645 = q_4;
+            uint _e648 = kept.inner[_e645].light;
+            uint _e649 = q_4;
+            uint _e652 = kept.inner[_e649].u;
+            uint _e653 = q_4;
+            float _e656 = kept.inner[_e653].w;
+            reuse_pixels[_e640].slots.inner[_e643] = ReuseSlot {_e648, _e652, keep ? _e656 : 0.0};
         }
     }
-    uint _e667 = next_index(pixel_1, view, reuse);
-    metal::float3 _e670 = n;
-    Material _e671 = m;
-    float _e674 = reuse.max_confidence;
-    ReuseSurface _e676 = reuse_surface(x_18, _e670, _e671, metal::min(confidence, _e674));
-    reuse_pixels[_e667].surface = _e676;
-    metal::float3 _e679 = t.diffuse;
-    metal::float3 _e681 = t.specular;
-    uint _e683 = count;
-    out_tex.write(metal::float4(_e679 + _e681, static_cast<float>(_e683)), metal::uint2(texel_1));
+    uint _e664 = next_index(pixel_1, view, reuse);
+    metal::float3 _e667 = n;
+    Material _e668 = m;
+    float _e671 = reuse.max_confidence;
+    ReuseSurface _e673 = reuse_surface(x_19, _e667, _e668, metal::min(confidence, _e671));
+    reuse_pixels[_e664].surface = _e673;
+    metal::float3 _e676 = t.diffuse;
+    metal::float3 _e678 = t.specular;
+    uint _e680 = count;
+    out_tex.write(metal::float4(_e676 + _e678, static_cast<float>(_e680)), metal::uint2(texel_1));
     return;
 }

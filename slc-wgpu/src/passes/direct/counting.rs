@@ -22,8 +22,8 @@ pub(super) struct Counting {
     pub(super) pipe: Pipe,
     pub(super) counters: wgpu::Buffer,
     staging: wgpu::Buffer,
-    /// Group 1 over the pass's lights (and occluders, reuse), one per
-    /// parity of the reuse's ping-pong: made again with the pass's own.
+    /// Group 1 over the pass's lights (and occluders, reuse): made again
+    /// with the pass's own.
     pub(super) lights_group: wgpu::BindGroup,
     /// Group 0 by the engine's views, as the pass's own cache.
     pub(super) cache: ViewCache<Vec<wgpu::TextureView>>,

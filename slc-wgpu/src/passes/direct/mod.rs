@@ -244,10 +244,10 @@ pub struct DirectPass {
     counting: Option<Counting>,
 }
 
-/// The reuse's state: its uniforms, the reservoir buffer (two halves of a
-/// pixel each: this record writes half `parity` and reads the other), the
-/// previous record's lights, and its view-projection and eye (none: no
-/// history).
+/// The reuse's state: its uniforms, the reservoir buffer (two halves of
+/// one entry per pixel: this record writes half `parity` and reads the
+/// other), the previous record's lights, and its view-projection and eye
+/// (none: no history).
 struct Reuse {
     settings: DirectReuse,
     params: UniformSlots,
