@@ -426,7 +426,8 @@ slc_core::shared! {
     /// across frames and pixels), one slot per record: the previous
     /// frame's view-projection (where a point was) and eye, the cap on a
     /// reservoir's confidence, the spatial neighbours' disk, the visibility
-    /// reuse, which half of the reservoirs it writes, 96 bytes.
+    /// reuse, which half of the reservoirs it writes, where the occluders
+    /// moved since the previous record, 128 bytes.
     pub struct ReuseParams {
         /// Column 0 of the previous frame's view-projection.
         pub c0: vec4f,
@@ -451,6 +452,15 @@ slc_core::shared! {
         /// The half of `reuse_pixels` this frame writes (0 or 1: pixel
         /// `i`'s reservoirs at `parity·w·h + i`); it reads the other.
         pub parity: u32,
+        /// Minimum of the box the occluders moved in (`moved` 1).
+        pub moved_min: vec3f,
+        /// Where the occluders moved since the previous record: 0 nowhere,
+        /// 1 inside `moved_min ..= moved_max`, 2 anywhere.
+        pub moved: u32,
+        /// Maximum of the box the occluders moved in.
+        pub moved_max: vec3f,
+        /// Padding.
+        pub pad: u32,
     }
 
     /// The surface a pixel's reused reservoirs were drawn for, as the next

@@ -18,7 +18,7 @@
 
 use crate::kernel::storage;
 use crate::{GpuContext, GpuError};
-use glam::Affine3A;
+use glam::{Affine3A, Vec3};
 pub use slc_scene::occluders::*;
 use slc_shared_shaders::layout::{GpuGeoNode, GpuTriangle, NO_LIGHT};
 use wgpu::util::DeviceExt;
@@ -228,9 +228,40 @@ impl GpuAccel {
     }
 }
 
+/// Where the occluders changed between two records of a pass: the space
+/// in which a ray of the earlier record may have met other triangles than
+/// the same ray now (the direct pass's visibility reuse cannot say there
+/// what its history saw).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) enum Moved {
+    /// Nothing moved.
+    Nowhere,
+    /// Every change lies in the box `(min, max)`: each moved instance's
+    /// triangles before and after.
+    Inside(Vec3, Vec3),
+    /// Anything may have changed (a new layout, shadows switched).
+    Everywhere,
+}
+
+impl Moved {
+    /// The region holding both changes.
+    pub(crate) fn join(self, other: Moved) -> Moved {
+        match (self, other) {
+            (Moved::Everywhere, _) | (_, Moved::Everywhere) => Moved::Everywhere,
+            (Moved::Nowhere, m) | (m, Moved::Nowhere) => m,
+            (Moved::Inside(a0, a1), Moved::Inside(b0, b1)) => Moved::Inside(a0.min(b0), a1.max(b1)),
+        }
+    }
+}
+
+/// The box of triangles `tris`, `Nowhere` for none.
+fn bounds(tris: &[[Vec3; 3]]) -> Moved {
+    tris.iter().flatten().fold(Moved::Nowhere, |m, &v| m.join(Moved::Inside(v, v)))
+}
+
 /// Occluders for shadow rays, uploaded: nodes and triangles (no material,
-/// no light), with the layout and transforms they hold, and with ray
-/// queries their acceleration structures.
+/// no light), with the layout, transforms and world boxes they hold, and
+/// with ray queries their acceleration structures.
 pub(crate) struct GpuOccluders {
     pub(crate) nodes: wgpu::Buffer,
     pub(crate) tris: wgpu::Buffer,
@@ -240,6 +271,8 @@ pub(crate) struct GpuOccluders {
     layout: u64,
     /// Each instance's transform in the contents.
     transforms: Vec<Affine3A>,
+    /// Each instance's world-space box in the contents.
+    boxes: Vec<Moved>,
 }
 
 impl GpuOccluders {
@@ -257,7 +290,12 @@ impl GpuOccluders {
             accel,
             layout: o.layout_id(),
             transforms: Self::transforms_of(o),
+            boxes: Self::boxes_of(o),
         })
+    }
+
+    fn boxes_of(o: &Occluders) -> Vec<Moved> {
+        (0..o.instances().len()).map(|i| bounds(&o.triangles()[o.instance_blocks(i).1])).collect()
     }
 
     /// Triangles in the kernels' layout, no material, no light.
@@ -270,20 +308,22 @@ impl GpuOccluders {
     }
 
     /// Rewrites the buffers in place through the queue when `o` fits them
-    /// exactly; `false` when it does not and nothing was written. With the
+    /// exactly, and says where the occluders changed; `None` when it does
+    /// not fit and nothing was written. With the
     /// layout of the contents ([`Occluders::layout_id`]: the same meshes
     /// and instances, moved), only what moving changed is written: the top
     /// level and the moved instances' blocks (an engine's static scene
     /// with a few moving objects uploads a few kilobytes a frame); with
     /// another layout of the same sizes, everything. The acceleration
     /// structures, where there are, get a new top level for the same
-    /// layout; another layout is `false` (it may instance other meshes).
-    pub(crate) fn rewrite(&mut self, gpu: &GpuContext, o: &Occluders) -> bool {
+    /// layout; another layout is `None` (it may instance other meshes).
+    pub(crate) fn rewrite(&mut self, gpu: &GpuContext, o: &Occluders) -> Option<Moved> {
         if buffer_sizes(o) != (self.nodes.size(), self.tris.size())
             || (self.accel.is_some() && o.layout_id() != self.layout)
         {
-            return false;
+            return None;
         }
+        let mut changed = Moved::Nowhere;
         let node_at = |i: usize| (i * size_of::<GpuGeoNode>()) as u64;
         let tri_at = |i: usize| (i * size_of::<GpuTriangle>()) as u64;
         let transforms = Self::transforms_of(o);
@@ -300,6 +340,9 @@ impl GpuOccluders {
                 );
                 let gt = Self::untagged(&o.triangles()[tris.clone()]);
                 gpu.queue.write_buffer(&self.tris, tri_at(tris.start), bytemuck::cast_slice(&gt));
+                let now = bounds(&o.triangles()[tris]);
+                changed = changed.join(self.boxes[i]).join(now);
+                self.boxes[i] = now;
             }
             if !moved.is_empty() {
                 let top = nodes_as_gpu(&o.nodes()[..o.top_level_len()]);
@@ -313,8 +356,10 @@ impl GpuOccluders {
             gpu.queue.write_buffer(&self.nodes, 0, bytemuck::cast_slice(&gpu_nodes(o)));
             gpu.queue.write_buffer(&self.tris, 0, bytemuck::cast_slice(&tris));
             self.layout = o.layout_id();
+            self.boxes = Self::boxes_of(o);
+            changed = Moved::Everywhere;
         }
         self.transforms = transforms;
-        true
+        Some(changed)
     }
 }

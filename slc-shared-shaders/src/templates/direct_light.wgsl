@@ -240,6 +240,47 @@ fn sample_reaches(li: u32, cells: u32, x: vec3f, n: vec3f, eps: f32) -> bool {
     return any(sample_connection(li, cells, x, n, eps, true).e > vec3f(0.0));
 }
 
+/// Whether this record can tell what the previous one's shadow ray saw
+/// for the pick of light `li` at grid cells `cells` at domain `d`'s
+/// surface (from it to the light where it stood then, `lights_prev`): not
+/// where that ray crosses the space the occluders moved in since
+/// (`reuse.moved`). Visibility reuse gives the history no share of such a
+/// pick, its own or this record's (the shares still sum to 1: this
+/// record's pick takes all of it).
+fn history_vouches(li: u32, cells: u32, d: Domain) -> bool {
+    if reuse.moved == 0u {
+        return true;
+    }
+    if reuse.moved == 2u {
+        return false;
+    }
+    let a = d.x + d.n * (view.shadow_offset * length(reuse.prev_eye - d.x));
+    let b = light_point(lights_prev[li], grid_coordinate(cells), grid_coordinate(cells << 16u));
+    return ray_aabb(a, ray_inverse3(b - a), reuse.moved_min, reuse.moved_max, 1.0) < 0.0;
+}
+
+/// Whether the pick of light `li` at grid cells `cells`, which reaches
+/// `x` (normal `n`) in this record, reached the surface of domain `d` in
+/// the previous one, as far as this record can tell (`history_vouches`):
+/// its ray from there to the light where it stood then. Visibility
+/// reuse's history holds only picks that reached its pixel, so the pick's
+/// share against that history counts the history's target only where it
+/// did (ReSTIR DI's unbiased visibility reuse). Known without a ray where
+/// the surface is this one and the light has not moved.
+fn reached_before(li: u32, cells: u32, d: Domain, x: vec3f, n: vec3f) -> bool {
+    if !history_vouches(li, cells, d) {
+        return false;
+    }
+    let l = lights[li];
+    let lp = lights_prev[li];
+    if all(d.x == x) && all(d.n == n) && all(l.p0 == lp.p0) && all(l.p1 == lp.p1) && all(l.p2 == lp.p2) {
+        return true;
+    }
+    let eps = view.shadow_offset * length(reuse.prev_eye - d.x);
+    let c = connect_record(lp, d.x, d.n, d.n, UNRANGED, UNRANGED, 1.0, grid_coordinate(cells), grid_coordinate(cells << 16u), eps, true);
+    return any(c.e > vec3f(0.0));
+}
+
 /// The previous-frame pixels pixel `x` (normal `n`, distance `d` from the
 /// eye) reuses, drawn from stream `h`: the one it reprojects to, then
 /// `DOMAINS − 1` in a disk of `reuse.radius` pixels around it, each
@@ -288,9 +329,12 @@ fn reuse_domains(x: vec3f, n: vec3f, d: f32, h: u32, doms: ptr<function, array<D
 /// so `W = P / p̂(y)`) and slot `q` of the histories of domains
 /// `k0..k1` of `doms`. Each input's share is its domain's target over
 /// all of theirs: this pixel's whole unranged target here, the previous
-/// record's light at each domain's stored surface. One pick is kept with
-/// probability proportional to its weight (stream `hs`).
-fn gris_combine(q: u32, cur: ReuseSlot, cur_ris: bool, cur_c: f32, k0: u32, k1: u32, x: vec3f, n: vec3f, m: Material, doms: ptr<function, array<Domain, DOMAINS>>, hs: ptr<function, u32>) -> ReuseSlot {
+/// record's light at each domain's stored surface; with `cur_reached`
+/// false the domains could not hold `cur`'s pick (visibility reuse: it
+/// did not reach their surface), and their targets for it are 0. One
+/// pick is kept with probability proportional to its weight (stream
+/// `hs`).
+fn gris_combine(q: u32, cur: ReuseSlot, cur_ris: bool, cur_c: f32, cur_reached: bool, k0: u32, k1: u32, x: vec3f, n: vec3f, m: Material, doms: ptr<function, array<Domain, DOMAINS>>, hs: ptr<function, u32>) -> ReuseSlot {
     var w_sum = 0.0;
     var out = ReuseSlot(0u, 0u, 0.0);
     var out_target = 0.0;
@@ -301,6 +345,9 @@ fn gris_combine(q: u32, cur: ReuseSlot, cur_ris: bool, cur_c: f32, k0: u32, k1: 
             s = reuse_pixels[previous_index((*doms)[j - 1u].pixel)].slots[q];
         }
         if !(s.w > 0.0) || s.light >= arrayLength(&lights) {
+            continue;
+        }
+        if j > k0 && reuse.visibility == 1u && !history_vouches(s.light, s.u, (*doms)[j - 1u]) {
             continue;
         }
         let here = reuse_target(q, lights[s.light], s.u, x, n, m);
@@ -314,7 +361,10 @@ fn gris_combine(q: u32, cur: ReuseSlot, cur_ris: bool, cur_c: f32, k0: u32, k1: 
         var own = cur_c * here;
         var all = own;
         for (var k = k0; k < k1; k++) {
-            let t = (*doms)[k].c * reuse_target(q, lights_prev[s.light], s.u, (*doms)[k].x, (*doms)[k].n, (*doms)[k].m);
+            var t = 0.0;
+            if j > k0 || cur_reached {
+                t = (*doms)[k].c * reuse_target(q, lights_prev[s.light], s.u, (*doms)[k].x, (*doms)[k].n, (*doms)[k].m);
+            }
             all += t;
             if k + 1u == j {
                 own = t;
@@ -563,18 +613,32 @@ fn main(@builtin(global_invocation_id) gid: vec3u, @builtin(local_invocation_ind
             fresh_visible[q] = fresh_visible[fresh_firsts[q]];
         }
     }
+    // And whether a visible one could be in the history: it reached the
+    // reprojected surface in the previous record (a second ray, only where
+    // the camera or its light moved). Without it a light that came out of
+    // a shadow would be shared with a history that cannot hold it, and
+    // the image would come out dark where things move.
+    var fresh_before: array<bool, K>;
+    for (var q = 0u; q < K; q++) {
+        fresh_before[q] = true;
+        if fresh_firsts[q] == q && fresh_visible[q] && own_history {
+            fresh_before[q] = reached_before(slot_light[q], slot_cells[q], doms[0], x, n);
+        } else if fresh_firsts[q] < K {
+            fresh_before[q] = fresh_before[fresh_firsts[q]];
+        }
+    }
     var kept: array<ReuseSlot, K>;
     var fin: array<ReuseSlot, K>;
     for (var q = 0u; q < K; q++) {
         // This frame's pick (its weight the candidates' sum; none where
         // visibility reuse found it occluded) and the pixel's own history.
         let fresh = slot_p[q] > 0.0 && (reuse.visibility == 0u || fresh_visible[q]);
-        kept[q] = gris_combine(q, ReuseSlot(slot_light[q], slot_cells[q], select(0.0, slot_target(total, q, K), fresh)), true, 1.0, 0u, first, x, n, m, &doms, &hs);
+        kept[q] = gris_combine(q, ReuseSlot(slot_light[q], slot_cells[q], select(0.0, slot_target(total, q, K), fresh)), true, 1.0, fresh_before[q], 0u, first, x, n, m, &doms, &hs);
         // The neighbours' histories join it (confidence: the inputs each
         // stands for).
         fin[q] = kept[q];
         if nd > first {
-            fin[q] = gris_combine(q, kept[q], false, confidence, first, nd, x, n, m, &doms, &hs);
+            fin[q] = gris_combine(q, kept[q], false, confidence, true, first, nd, x, n, m, &doms, &hs);
         }
     }
     // The K picks, shadowed, each weighted W / K; the slots holding the

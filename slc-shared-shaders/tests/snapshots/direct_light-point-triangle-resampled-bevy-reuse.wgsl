@@ -47,6 +47,10 @@ struct ReuseParams {
     radius: f32,
     visibility: u32,
     parity: u32,
+    moved_min: vec3<f32>,
+    moved: u32,
+    moved_max: vec3<f32>,
+    pad: u32,
 }
 
 struct ReuseSurface {
@@ -321,8 +325,8 @@ fn sphere_contains_point(c: vec3<f32>, r_1: f32, x_1: vec3<f32>) -> bool {
 }
 
 fn sphere_overlaps_aabb(c_1: vec3<f32>, r_2: f32, bmin: vec3<f32>, bmax: vec3<f32>) -> bool {
-    let q_7 = clamp(c_1, bmin, bmax);
-    let v_6 = (q_7 - c_1);
+    let q_8 = clamp(c_1, bmin, bmax);
+    let v_6 = (q_8 - c_1);
     return (dot(v_6, v_6) <= (r_2 * r_2));
 }
 
@@ -337,29 +341,29 @@ fn connection_factor(cos_x: f32, d2_3: f32, rt2_1: f32, w_1: f32) -> f32 {
 }
 
 fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n_1: vec3<f32>, ng: vec3<f32>, r2_1: f32) -> f32 {
-    var local_14: bool;
-    var local_15: bool;
+    var local_16: bool;
+    var local_17: bool;
 
     let v_7 = (x_2 - y);
     let d2_6 = dot(v_7, v_7);
     let _e7 = slc_keep(r2_1, d2_6);
     if !(!(_e7)) {
-        local_14 = !((d2_6 > 0f));
+        local_16 = !((d2_6 > 0f));
     } else {
-        local_14 = true;
+        local_16 = true;
     }
-    let _e16 = local_14;
+    let _e16 = local_16;
     if _e16 {
         return 0f;
     }
     let w_12 = (v_7 / vec3(sqrt(d2_6)));
     let cos_x_1 = -(dot(n_1, w_12));
     if !(!((cos_x_1 > 0f))) {
-        local_15 = !((dot(ng, w_12) < 0f));
+        local_17 = !((dot(ng, w_12) < 0f));
     } else {
-        local_15 = true;
+        local_17 = true;
     }
-    let _e34 = local_15;
+    let _e34 = local_17;
     if _e34 {
         return 0f;
     }
@@ -478,8 +482,8 @@ fn ggx_d(cos_h: f32, sin2_h: f32, alpha: f32) -> f32 {
         return 0f;
     }
     let a2_ = (alpha * alpha);
-    let t_4 = (((cos_h * cos_h) * a2_) + sin2_h);
-    return ((a2_ * INV_PI) / (t_4 * t_4));
+    let t_5 = (((cos_h * cos_h) * a2_) + sin2_h);
+    return ((a2_ * INV_PI) / (t_5 * t_5));
 }
 
 fn smith_root(cos_: f32, alpha_1: f32) -> f32 {
@@ -488,14 +492,14 @@ fn smith_root(cos_: f32, alpha_1: f32) -> f32 {
 }
 
 fn smith_visibility(n_l: f32, n_v: f32, alpha_2: f32) -> f32 {
-    var local_16: bool;
+    var local_18: bool;
 
     if !((n_l <= 0f)) {
-        local_16 = (n_v <= 0f);
+        local_18 = (n_v <= 0f);
     } else {
-        local_16 = true;
+        local_18 = true;
     }
-    let _e11 = local_16;
+    let _e11 = local_18;
     if _e11 {
         return 0f;
     }
@@ -517,21 +521,21 @@ fn specular_fresnel(base: vec3<f32>, metallic: f32, f0_d: vec3<f32>, f90_d: f32,
 }
 
 fn has_specular(metallic_1: f32, f0_d_1: vec3<f32>, f90_d_1: f32) -> bool {
-    var local_17: bool;
-    var local_18: bool;
+    var local_19: bool;
+    var local_20: bool;
 
     if !((metallic_1 > 0f)) {
-        local_17 = (f90_d_1 > 0f);
+        local_19 = (f90_d_1 > 0f);
     } else {
-        local_17 = true;
+        local_19 = true;
     }
-    let _e11 = local_17;
+    let _e11 = local_19;
     if !(_e11) {
-        local_18 = (max(max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0f);
+        local_20 = (max(max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0f);
     } else {
-        local_18 = true;
+        local_20 = true;
     }
-    let _e23 = local_18;
+    let _e23 = local_20;
     return _e23;
 }
 
@@ -540,17 +544,17 @@ fn channel_mean(c_5: vec3<f32>) -> f32 {
 }
 
 fn receiver_lobe(base_1: vec3<f32>, metallic_2: f32, f0_d_2: vec3<f32>, f90_d_2: f32, alpha_3: f32, n_v_1: f32) -> vec4<f32> {
-    var local_19: bool;
+    var local_21: bool;
 
     let _e10 = fresnel_schlick(f0_d_2, f90_d_2, n_v_1);
     let _e16 = channel_mean((((vec3<f32>(1f, 1f, 1f) - _e10) * base_1) * (1f - metallic_2)));
     if !((n_v_1 <= 0f)) {
         let _e22 = has_specular(metallic_2, f0_d_2, f90_d_2);
-        local_19 = !(_e22);
+        local_21 = !(_e22);
     } else {
-        local_19 = true;
+        local_21 = true;
     }
-    let _e25 = local_19;
+    let _e25 = local_21;
     if _e25 {
         return vec4<f32>(_e16, 0f, alpha_3, n_v_1);
     }
@@ -602,9 +606,9 @@ fn bevy_f0_(reflectance: f32) -> f32 {
 fn bevy_dfg(r_4: f32, n_v_2: f32) -> f32 {
     let rx = (1f - r_4);
     let a004_ = ((min((rx * rx), exp2((-9.28f * n_v_2))) * rx) + (0.0425f - (0.0275f * r_4)));
-    let x_17 = max(((1.04f - (0.572f * r_4)) - (1.04f * a004_)), 0.00005f);
+    let x_18 = max(((1.04f - (0.572f * r_4)) - (1.04f * a004_)), 0.00005f);
     let y_1 = max((((0.022f * r_4) - 0.04f) + (1.04f * a004_)), 0.00005f);
-    return (x_17 + y_1);
+    return (x_18 + y_1);
 }
 
 fn bevy_brdf(base_2: vec3<f32>, metallic_3: f32, r_5: f32, reflectance_1: f32, n_4: vec3<f32>, v_1: vec3<f32>, l: vec3<f32>) -> vec3<f32> {
@@ -634,23 +638,23 @@ fn bevy_brdf(base_2: vec3<f32>, metallic_3: f32, r_5: f32, reflectance_1: f32, n
 }
 
 fn cone_cos_of(v_2: vec3<f32>, d2_4: f32, a_3: f32, d: vec3<f32>) -> f32 {
-    var local_20: bool;
-    var local_21: bool;
+    var local_22: bool;
+    var local_23: bool;
 
     let vd = dot(v_2, d);
     let h2_1 = (d2_4 - (a_3 * a_3));
     if !((h2_1 <= 0f)) {
         if (vd >= 0f) {
-            local_21 = ((vd * vd) >= h2_1);
+            local_23 = ((vd * vd) >= h2_1);
         } else {
-            local_21 = false;
+            local_23 = false;
         }
-        let _e19 = local_21;
-        local_20 = _e19;
+        let _e19 = local_23;
+        local_22 = _e19;
     } else {
-        local_20 = true;
+        local_22 = true;
     }
-    let _e21 = local_20;
+    let _e21 = local_22;
     if _e21 {
         return 1f;
     }
@@ -665,8 +669,8 @@ fn cone_cos_toward(center: vec3<f32>, radius: f32, p: vec3<f32>, d_1: vec3<f32>)
 }
 
 fn range_scale_at(rl: vec4<f32>, cos_t: f32) -> f32 {
-    let t_5 = (((0.5f + (0.5f * cos_t)) * (rl.z - 1f)) + 1f);
-    return clamp((rl.x + ((rl.y * rl.z) / (t_5 * t_5))), 1f, (rl.w * rl.w));
+    let t_6 = (((0.5f + (0.5f * cos_t)) * (rl.z - 1f)) + 1f);
+    return clamp((rl.x + ((rl.y * rl.z) / (t_6 * t_6))), 1f, (rl.w * rl.w));
 }
 
 fn range_scale_toward(rl_1: vec4<f32>, center_1: vec3<f32>, radius_1: f32, p_1: vec3<f32>, r_6: vec3<f32>) -> f32 {
@@ -707,26 +711,26 @@ fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin_1: vec3<f32>, bmax_1: vec3<f32>
 }
 
 fn triangle_normal(a_4: vec3<f32>, b_3: vec3<f32>, c_6: vec3<f32>) -> vec3<f32> {
-    var local_22: bool;
+    var local_24: bool;
 
-    let n_16 = cross((b_3 - a_4), (c_6 - a_4));
-    let l2_ = dot(n_16, n_16);
+    let n_17 = cross((b_3 - a_4), (c_6 - a_4));
+    let l2_ = dot(n_17, n_17);
     if !(!((l2_ > 0f))) {
-        local_22 = !((l2_ < 300000000000000000000000000000000000000f));
+        local_24 = !((l2_ < 300000000000000000000000000000000000000f));
     } else {
-        local_22 = true;
+        local_24 = true;
     }
-    let _e17 = local_22;
+    let _e17 = local_24;
     if _e17 {
         return vec3<f32>(0f, 0f, 0f);
     }
-    return (n_16 / vec3(sqrt(l2_)));
+    return (n_17 / vec3(sqrt(l2_)));
 }
 
 fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_4: vec3<f32>, c_7: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
-    var local_23: bool;
-    var local_24: bool;
     var local_25: bool;
+    var local_26: bool;
+    var local_27: bool;
 
     let e1_ = (b_4 - a_5);
     let e2_ = (c_7 - a_5);
@@ -739,34 +743,34 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_4: vec3<f32>, 
     let s_12 = (o_1 - a_5);
     let u_4 = (dot(s_12, p_8) * inv);
     if !((u_4 < 0f)) {
-        local_23 = (u_4 > 1f);
+        local_25 = (u_4 > 1f);
     } else {
-        local_23 = true;
+        local_25 = true;
     }
-    let _e28 = local_23;
+    let _e28 = local_25;
     if _e28 {
         return -1f;
     }
-    let q_8 = cross(s_12, e1_);
-    let v_9 = (dot(d_3, q_8) * inv);
+    let q_9 = cross(s_12, e1_);
+    let v_9 = (dot(d_3, q_9) * inv);
     if !((v_9 < 0f)) {
-        local_24 = ((u_4 + v_9) > 1f);
+        local_26 = ((u_4 + v_9) > 1f);
     } else {
-        local_24 = true;
+        local_26 = true;
     }
-    let _e42 = local_24;
+    let _e42 = local_26;
     if _e42 {
         return -1f;
     }
-    let t_6 = (dot(e2_, q_8) * inv);
-    if (t_6 > t_min) {
-        local_25 = (t_6 < t_max_1);
+    let t_7 = (dot(e2_, q_9) * inv);
+    if (t_7 > t_min) {
+        local_27 = (t_7 < t_max_1);
     } else {
-        local_25 = false;
+        local_27 = false;
     }
-    let _e51 = local_25;
+    let _e51 = local_27;
     if _e51 {
-        return t_6;
+        return t_7;
     }
     return -1f;
 }
@@ -776,20 +780,20 @@ fn reproject(c0_: vec4<f32>, c1_: vec4<f32>, c2_: vec4<f32>, c3_: vec4<f32>, p_2
     if (clip.w <= 0f) {
         return vec3<f32>(-1f, -1f, 0f);
     }
-    let x_18 = (((((clip.x / clip.w) + 1f) * 0.5f) * width) - 0.5f);
+    let x_19 = (((((clip.x / clip.w) + 1f) * 0.5f) * width) - 0.5f);
     let y_2 = ((((1f - (clip.y / clip.w)) * 0.5f) * height) - 0.5f);
-    return vec3<f32>(x_18, y_2, clip.w);
+    return vec3<f32>(x_19, y_2, clip.w);
 }
 
 fn history_matches(n_5: vec3<f32>, nh: vec3<f32>, p_3: vec3<f32>, oh: f32, d_4: f32) -> bool {
-    var local_26: bool;
+    var local_28: bool;
 
     if (abs((dot(nh, p_3) - oh)) <= (TEMPORAL_DEPTH_TOLERANCE * d_4)) {
-        local_26 = (dot(n_5, nh) >= TEMPORAL_NORMAL_COS);
+        local_28 = (dot(n_5, nh) >= TEMPORAL_NORMAL_COS);
     } else {
-        local_26 = false;
+        local_28 = false;
     }
-    let _e17 = local_26;
+    let _e17 = local_28;
     return _e17;
 }
 
@@ -833,23 +837,23 @@ fn trace(o_2: vec3<f32>, d_5: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
     let _e14 = ray_inverse3_(d_5);
     loop {
         let _e21 = node_3;
-        let n_17 = geo_nodes[_e21];
+        let n_18 = geo_nodes[_e21];
         let _e27 = hit.t;
-        let _e28 = ray_aabb(o_2, _e14, n_17.bmin, n_17.bmax, _e27);
+        let _e28 = ray_aabb(o_2, _e14, n_18.bmin, n_18.bmax, _e27);
         if (_e28 >= 0f) {
-            if (n_17.count > 0u) {
-                i = n_17.first;
+            if (n_18.count > 0u) {
+                i = n_18.first;
                 loop {
                     let _e36 = i;
-                    if (_e36 < (n_17.first + n_17.count)) {
+                    if (_e36 < (n_18.first + n_18.count)) {
                     } else {
                         break;
                     }
                     {
                         let _e42 = i;
-                        let t_7 = geo_tris[_e42];
+                        let t_8 = geo_tris[_e42];
                         let _e49 = hit.t;
-                        let _e50 = ray_triangle(o_2, d_5, t_7.v0_, t_7.v1_, t_7.v2_, t_min_1, _e49);
+                        let _e50 = ray_triangle(o_2, d_5, t_8.v0_, t_8.v1_, t_8.v2_, t_min_1, _e49);
                         if (_e50 > 0f) {
                             hit.t = _e50;
                             let _e55 = i;
@@ -869,11 +873,11 @@ fn trace(o_2: vec3<f32>, d_5: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
                 let _e60 = sp;
                 if (_e60 < 64u) {
                     let _e63 = sp;
-                    stack[_e63] = (n_17.first + 1u);
+                    stack[_e63] = (n_18.first + 1u);
                     let _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_3 = n_17.first;
+                node_3 = n_18.first;
                 continue;
             }
         }
@@ -926,8 +930,8 @@ fn bsh_inner_scale(a_7: f32, v_3: vec3<f32>, d2_5: f32, r_7: vec3<f32>, rl_2: ve
 }
 
 fn bsh_reaches(node_4: BshNode, x_4: vec3<f32>, r_8: vec3<f32>, rl_3: vec4<f32>) -> bool {
-    var local_27: bool;
-    var local_28: bool;
+    var local_29: bool;
+    var local_30: bool;
 
     let _e6 = sphere_contains_point(node_4.center, node_4.radius, x_4);
     if _e6 {
@@ -935,11 +939,11 @@ fn bsh_reaches(node_4: BshNode, x_4: vec3<f32>, r_8: vec3<f32>, rl_3: vec4<f32>)
     }
     if !((rl_3.w <= 1f)) {
         let _e20 = sphere_contains_point(node_4.center, (node_4.radius * (rl_3.w * 1.0001f)), x_4);
-        local_27 = !(_e20);
+        local_29 = !(_e20);
     } else {
-        local_27 = true;
+        local_29 = true;
     }
-    let _e23 = local_27;
+    let _e23 = local_29;
     if _e23 {
         return false;
     }
@@ -960,11 +964,11 @@ fn bsh_reaches(node_4: BshNode, x_4: vec3<f32>, r_8: vec3<f32>, rl_3: vec4<f32>)
     let _e50 = bsh_range_bound(node_4);
     let reach = (node_4.extent + (sqrt(s_c) * _e50));
     if (d2_7 <= ((node_4.radius * node_4.radius) * s_c)) {
-        local_28 = (d2_7 <= (reach * reach));
+        local_30 = (d2_7 <= (reach * reach));
     } else {
-        local_28 = false;
+        local_30 = false;
     }
-    let _e63 = local_28;
+    let _e63 = local_30;
     return _e63;
 }
 
@@ -976,7 +980,7 @@ fn bsh_reaches_box(node_5: BshNode, lo: vec3<f32>, hi: vec3<f32>, w_7: f32) -> b
 fn bsh_subtree(nodes_3: u32, s_1: u32, depth: u32) -> u32 {
     var i_2: u32;
     var level: u32 = 0u;
-    var local_29: bool;
+    var local_31: bool;
 
     let _e3 = bsh_first(nodes_3);
     i_2 = _e3;
@@ -984,11 +988,11 @@ fn bsh_subtree(nodes_3: u32, s_1: u32, depth: u32) -> u32 {
         let _e7 = level;
         if (_e7 < depth) {
             let _e11 = i_2;
-            local_29 = (_e11 != BSH_NONE);
+            local_31 = (_e11 != BSH_NONE);
         } else {
-            local_29 = false;
+            local_31 = false;
         }
-        let _e15 = local_29;
+        let _e15 = local_31;
         if _e15 {
         } else {
             break;
@@ -1063,8 +1067,8 @@ fn next_threshold(sum: f32, h_1: ptr<function, u32>) -> f32 {
 
 fn connect_record(l_3: GpuLight, x_5: vec3<f32>, n_6: vec3<f32>, ng_1: vec3<f32>, r2_2: f32, rt2_2: f32, w_res: f32, u1_3: f32, u2_3: f32, eps: f32, trace_1: bool) -> Connection {
     var c_8: Connection;
-    var local_30: bool;
-    var local_31: bool;
+    var local_32: bool;
+    var local_33: bool;
 
     c_8.e = vec3(0f);
     let _e16 = light_point(l_3, u1_3, u2_3);
@@ -1077,16 +1081,16 @@ fn connect_record(l_3: GpuLight, x_5: vec3<f32>, n_6: vec3<f32>, ng_1: vec3<f32>
         if trace_1 {
             let _e33 = c_8.y;
             let _e34 = occluded((x_5 + (ng_1 * eps)), _e33);
-            local_31 = _e34;
+            local_33 = _e34;
         } else {
-            local_31 = false;
+            local_33 = false;
         }
-        let _e36 = local_31;
-        local_30 = _e36;
+        let _e36 = local_33;
+        local_32 = _e36;
     } else {
-        local_30 = true;
+        local_32 = true;
     }
-    let _e38 = local_30;
+    let _e38 = local_32;
     if _e38 {
         let _e39 = c_8;
         return _e39;
@@ -1178,9 +1182,9 @@ fn box_is_empty(b_6: WorkgroupBox) -> bool {
 fn tile_subtree(s_3: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: u32) -> u32 {
     var p_6: u32;
     var b_7: u32;
-    var local_32: bool;
-    var local_33: bool;
     var local_34: bool;
+    var local_35: bool;
+    var local_36: bool;
 
     let _e8 = bsh_subtree(BSH, s_3, BSH_TILE_DEPTH);
     if (_e8 == BSH_NONE) {
@@ -1195,16 +1199,16 @@ fn tile_subtree(s_3: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: 
         if (_e23 != end_1) {
             if !(!(list)) {
                 let _e31 = p_6;
-                local_33 = (_e31 < to);
+                local_35 = (_e31 < to);
             } else {
-                local_33 = true;
+                local_35 = true;
             }
-            let _e34 = local_33;
-            local_32 = _e34;
+            let _e34 = local_35;
+            local_34 = _e34;
         } else {
-            local_32 = false;
+            local_34 = false;
         }
-        let _e36 = local_32;
+        let _e36 = local_34;
         if _e36 {
         } else {
             break;
@@ -1212,11 +1216,11 @@ fn tile_subtree(s_3: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: 
         {
             if list {
                 let _e39 = p_6;
-                local_34 = (_e39 >= start_2);
+                local_36 = (_e39 >= start_2);
             } else {
-                local_34 = false;
+                local_36 = false;
             }
-            let _e42 = local_34;
+            let _e42 = local_36;
             if _e42 {
                 let _e44 = p_6;
                 let _e47 = b_7;
@@ -1237,18 +1241,18 @@ fn tile_subtree(s_3: u32, t_1: TileWalk, list: bool, at: u32, start_2: u32, to: 
 }
 
 fn tile_walk_begin(li_4: u32, x_8: vec3<f32>, w_9: f32, has_2: bool) -> TileWalk {
-    var local_35: bool;
+    var local_37: bool;
     var t_2: TileWalk;
     var s_4: u32;
     var sum_1: u32 = 0u;
     var s_5: u32 = 0u;
 
     if has_2 {
-        local_35 = (w_9 >= 0f);
+        local_37 = (w_9 >= 0f);
     } else {
-        local_35 = false;
+        local_37 = false;
     }
-    let _e12 = local_35;
+    let _e12 = local_37;
     let _e14 = atomicMax((&tile_scale), select(0u, bitcast<u32>(w_9), _e12));
     let _e15 = workgroup_box(li_4, x_8, has_2);
     let _e19 = workgroupUniformLoad((&tile_scale));
@@ -1311,7 +1315,7 @@ fn tile_walk_begin(li_4: u32, x_8: vec3<f32>, w_9: f32, has_2: bool) -> TileWalk
 fn tile_walk_fill(li_5: u32, t_3: TileWalk, start_3: u32) -> u32 {
     var s_6: u32;
     var past: u32;
-    var local_36: bool;
+    var local_38: bool;
 
     let to_1 = min(t_3.total, (start_3 + TILE_LIST));
     s_6 = li_5;
@@ -1333,11 +1337,11 @@ fn tile_walk_fill(li_5: u32, t_3: TileWalk, start_3: u32) -> u32 {
             }
             if (at_1 < to_1) {
                 let _e31 = past;
-                local_36 = (_e31 > start_3);
+                local_38 = (_e31 > start_3);
             } else {
-                local_36 = false;
+                local_38 = false;
             }
-            let _e34 = local_36;
+            let _e34 = local_38;
             if _e34 {
                 let _e35 = s_6;
                 let _e37 = tile_subtree(_e35, t_3, true, at_1, start_3, to_1);
@@ -1390,8 +1394,8 @@ fn first_holders(keys_1: array<vec2<u32>, 8>, held_1: array<bool, 8>) -> array<u
     var first: array<u32, 8>;
     var k_4: u32 = 0u;
     var j_4: u32;
-    var local_37: bool;
-    var local_38: bool;
+    var local_39: bool;
+    var local_40: bool;
 
     loop {
         let _e5 = k_4;
@@ -1410,11 +1414,11 @@ fn first_holders(keys_1: array<vec2<u32>, 8>, held_1: array<bool, 8>) -> array<u
                 let _e18 = k_4;
                 if (_e17 < _e18) {
                     let _e22 = k_4;
-                    local_37 = held_1[_e22];
+                    local_39 = held_1[_e22];
                 } else {
-                    local_37 = false;
+                    local_39 = false;
                 }
-                let _e25 = local_37;
+                let _e25 = local_39;
                 if _e25 {
                 } else {
                     break;
@@ -1424,11 +1428,11 @@ fn first_holders(keys_1: array<vec2<u32>, 8>, held_1: array<bool, 8>) -> array<u
                     if held_1[_e26] {
                         let _e30 = j_4;
                         let _e32 = k_4;
-                        local_38 = all((keys_1[_e30] == keys_1[_e32]));
+                        local_40 = all((keys_1[_e30] == keys_1[_e32]));
                     } else {
-                        local_38 = false;
+                        local_40 = false;
                     }
-                    let _e37 = local_38;
+                    let _e37 = local_40;
                     if _e37 {
                         let _e38 = k_4;
                         let _e40 = j_4;
@@ -1469,13 +1473,13 @@ fn next_index(i_5: u32) -> u32 {
     return (((_e3 * _e6) * _e10) + i_5);
 }
 
-fn reuse_target(q_5: u32, l_4: GpuLight, cells: u32, x_11: vec3<f32>, n_10: vec3<f32>, m_3: Material) -> f32 {
+fn reuse_target(q_6: u32, l_4: GpuLight, cells: u32, x_11: vec3<f32>, n_10: vec3<f32>, m_3: Material) -> f32 {
     let _e9 = grid_coordinate(cells);
     let _e12 = grid_coordinate((cells << 16u));
     let _e15 = connect_record(l_4, x_11, n_10, n_10, UNRANGED, UNRANGED, 1f, _e9, _e12, 0f, false);
     let _e16 = shade_connection(_e15, x_11, n_10, m_3);
     let _e17 = output_of(_e16);
-    let _e19 = slot_target(_e17, q_5, K);
+    let _e19 = slot_target(_e17, q_6, K);
     return _e19;
 }
 
@@ -1508,19 +1512,90 @@ fn sample_reaches(li_9: u32, cells_3: u32, x_14: vec3<f32>, n_13: vec3<f32>, eps
     return any((_e6.e > vec3(0f)));
 }
 
-fn reuse_domains(x_15: vec3<f32>, n_14: vec3<f32>, d_6: f32, h_2: u32, doms_1: ptr<function, array<Domain, 3>>) -> u32 {
+fn history_vouches(li_10: u32, cells_4: u32, d_6: Domain) -> bool {
+    let _e5 = reuse.moved;
+    if (_e5 == 0u) {
+        return true;
+    }
+    let _e11 = reuse.moved;
+    if (_e11 == 2u) {
+        return false;
+    }
+    let _e19 = view.shadow_offset;
+    let _e22 = reuse.prev_eye;
+    let a_10 = (d_6.x + (d_6.n * (_e19 * length((_e22 - d_6.x)))));
+    let _e31 = lights_prev[li_10];
+    let _e32 = grid_coordinate(cells_4);
+    let _e35 = grid_coordinate((cells_4 << 16u));
+    let _e36 = light_point(_e31, _e32, _e35);
+    let _e38 = ray_inverse3_((_e36 - a_10));
+    let _e41 = reuse.moved_min;
+    let _e44 = reuse.moved_max;
+    let _e46 = ray_aabb(a_10, _e38, _e41, _e44, 1f);
+    return (_e46 < 0f);
+}
+
+fn reached_before(li_11: u32, cells_5: u32, d_7: Domain, x_15: vec3<f32>, n_14: vec3<f32>) -> bool {
+    var local_41: bool;
+    var local_42: bool;
+    var local_43: bool;
+    var local_44: bool;
+
+    let _e5 = history_vouches(li_11, cells_5, d_7);
+    if !(_e5) {
+        return false;
+    }
+    let l_5 = lights[li_11];
+    let lp = lights_prev[li_11];
+    if all((d_7.x == x_15)) {
+        local_41 = all((d_7.n == n_14));
+    } else {
+        local_41 = false;
+    }
+    let _e23 = local_41;
+    if _e23 {
+        local_42 = all((l_5.p0_ == lp.p0_));
+    } else {
+        local_42 = false;
+    }
+    let _e31 = local_42;
+    if _e31 {
+        local_43 = all((l_5.p1_ == lp.p1_));
+    } else {
+        local_43 = false;
+    }
+    let _e39 = local_43;
+    if _e39 {
+        local_44 = all((l_5.p2_ == lp.p2_));
+    } else {
+        local_44 = false;
+    }
+    let _e47 = local_44;
+    if _e47 {
+        return true;
+    }
+    let _e51 = view.shadow_offset;
+    let _e54 = reuse.prev_eye;
+    let eps_5 = (_e51 * length((_e54 - d_7.x)));
+    let _e65 = grid_coordinate(cells_5);
+    let _e68 = grid_coordinate((cells_5 << 16u));
+    let _e70 = connect_record(lp, d_7.x, d_7.n, d_7.n, UNRANGED, UNRANGED, 1f, _e65, _e68, eps_5, true);
+    return any((_e70.e > vec3(0f)));
+}
+
+fn reuse_domains(x_16: vec3<f32>, n_15: vec3<f32>, d_8: f32, h_2: u32, doms_1: ptr<function, array<Domain, 3>>) -> u32 {
     var nd: u32 = 0u;
     var hr: u32;
     var j_5: u32 = 0u;
     var p_7: vec2<f32>;
-    var local_39: bool;
-    var local_40: bool;
-    var local_41: bool;
+    var local_45: bool;
+    var local_46: bool;
+    var local_47: bool;
     var seen_1: bool;
     var k_5: u32;
-    var local_42: bool;
-    var local_43: bool;
-    var local_44: bool;
+    var local_48: bool;
+    var local_49: bool;
+    var local_50: bool;
 
     let _e9 = reuse.has_history;
     if (_e9 != 1u) {
@@ -1532,7 +1607,7 @@ fn reuse_domains(x_15: vec3<f32>, n_14: vec3<f32>, d_6: f32, h_2: u32, doms_1: p
     let _e24 = reuse.c3_;
     let _e27 = view.width;
     let _e31 = view.height;
-    let _e33 = reproject(_e15, _e18, _e21, _e24, x_15, f32(_e27), f32(_e31));
+    let _e33 = reproject(_e15, _e18, _e21, _e24, x_16, f32(_e27), f32(_e31));
     if (_e33.z <= 0f) {
         return 0u;
     }
@@ -1563,32 +1638,32 @@ fn reuse_domains(x_15: vec3<f32>, n_14: vec3<f32>, d_6: f32, h_2: u32, doms_1: p
                 p_7 = (_e55 + _e61);
             }
             let _e63 = p_7;
-            let t_8 = vec2<i32>(round(_e63));
-            if !((t_8.x < 0i)) {
-                local_39 = (t_8.y < 0i);
+            let t_9 = vec2<i32>(round(_e63));
+            if !((t_9.x < 0i)) {
+                local_45 = (t_9.y < 0i);
             } else {
-                local_39 = true;
+                local_45 = true;
             }
-            let _e76 = local_39;
+            let _e76 = local_45;
             if !(_e76) {
                 let _e83 = view.width;
-                local_40 = (t_8.x >= i32(_e83));
+                local_46 = (t_9.x >= i32(_e83));
             } else {
-                local_40 = true;
+                local_46 = true;
             }
-            let _e87 = local_40;
+            let _e87 = local_46;
             if !(_e87) {
                 let _e94 = view.height;
-                local_41 = (t_8.y >= i32(_e94));
+                local_47 = (t_9.y >= i32(_e94));
             } else {
-                local_41 = true;
+                local_47 = true;
             }
-            let _e98 = local_41;
+            let _e98 = local_47;
             if _e98 {
                 continue;
             }
             let _e103 = view.width;
-            let pixel = ((u32(t_8.y) * _e103) + u32(t_8.x));
+            let pixel = ((u32(t_9.y) * _e103) + u32(t_9.x));
             seen_1 = false;
             k_5 = 0u;
             loop {
@@ -1603,11 +1678,11 @@ fn reuse_domains(x_15: vec3<f32>, n_14: vec3<f32>, d_6: f32, h_2: u32, doms_1: p
                     if !(_e115) {
                         let _e119 = k_5;
                         let _e122 = (*doms_1)[_e119].pixel;
-                        local_42 = (_e122 == pixel);
+                        local_48 = (_e122 == pixel);
                     } else {
-                        local_42 = true;
+                        local_48 = true;
                     }
-                    let _e125 = local_42;
+                    let _e125 = local_48;
                     seen_1 = _e125;
                 }
                 continuing {
@@ -1619,18 +1694,18 @@ fn reuse_domains(x_15: vec3<f32>, n_14: vec3<f32>, d_6: f32, h_2: u32, doms_1: p
             let s_13 = reuse_pixels[_e130].surface;
             let _e134 = seen_1;
             if !(_e134) {
-                local_43 = !((s_13.m > 0f));
+                local_49 = !((s_13.m > 0f));
             } else {
-                local_43 = true;
+                local_49 = true;
             }
-            let _e143 = local_43;
+            let _e143 = local_49;
             if !(_e143) {
-                let _e151 = history_matches(n_14, s_13.n, x_15, dot(s_13.n, s_13.x), d_6);
-                local_44 = !(_e151);
+                let _e151 = history_matches(n_15, s_13.n, x_16, dot(s_13.n, s_13.x), d_8);
+                local_50 = !(_e151);
             } else {
-                local_44 = true;
+                local_50 = true;
             }
-            let _e154 = local_44;
+            let _e154 = local_50;
             if _e154 {
                 continue;
             }
@@ -1652,141 +1727,179 @@ fn reuse_domains(x_15: vec3<f32>, n_14: vec3<f32>, d_6: f32, h_2: u32, doms_1: p
     return _e178;
 }
 
-fn gris_combine(q_6: u32, cur: ReuseSlot, cur_ris: bool, cur_c: f32, k0_: u32, k1_: u32, x_16: vec3<f32>, n_15: vec3<f32>, m_5: Material, doms_2: ptr<function, array<Domain, 3>>, hs_1: ptr<function, u32>) -> ReuseSlot {
+fn gris_combine(q_7: u32, cur: ReuseSlot, cur_ris: bool, cur_c: f32, cur_reached: bool, k0_: u32, k1_: u32, x_17: vec3<f32>, n_16: vec3<f32>, m_5: Material, doms_2: ptr<function, array<Domain, 3>>, hs_1: ptr<function, u32>) -> ReuseSlot {
     var w_sum_3: f32 = 0f;
     var out: ReuseSlot = ReuseSlot(0u, 0u, 0f);
     var out_target: f32 = 0f;
     var j_6: u32;
     var s_11: ReuseSlot;
-    var local_45: bool;
+    var local_51: bool;
+    var local_52: bool;
+    var local_53: bool;
     var w_in: f32;
-    var local_46: bool;
+    var local_54: bool;
     var own_1: f32;
     var all_1: f32;
     var k_6: u32;
-    var local_47: bool;
+    var t_4: f32;
+    var local_55: bool;
+    var local_56: bool;
 
     j_6 = k0_;
     loop {
-        let _e21 = j_6;
-        if (_e21 <= k1_) {
+        let _e22 = j_6;
+        if (_e22 <= k1_) {
         } else {
             break;
         }
         {
             s_11 = cur;
-            let _e24 = j_6;
-            if (_e24 > k0_) {
-                let _e27 = j_6;
-                let _e32 = (*doms_2)[(_e27 - 1u)].pixel;
-                let _e33 = previous_index(_e32);
-                let _e37 = reuse_pixels[_e33].slots[q_6];
-                s_11 = _e37;
+            let _e25 = j_6;
+            if (_e25 > k0_) {
+                let _e28 = j_6;
+                let _e33 = (*doms_2)[(_e28 - 1u)].pixel;
+                let _e34 = previous_index(_e33);
+                let _e38 = reuse_pixels[_e34].slots[q_7];
+                s_11 = _e38;
             }
-            let _e39 = s_11.w;
-            if !(!((_e39 > 0f))) {
-                let _e47 = s_11.light;
-                local_45 = (_e47 >= arrayLength((&lights)));
+            let _e40 = s_11.w;
+            if !(!((_e40 > 0f))) {
+                let _e48 = s_11.light;
+                local_51 = (_e48 >= arrayLength((&lights)));
             } else {
-                local_45 = true;
+                local_51 = true;
             }
-            let _e52 = local_45;
-            if _e52 {
+            let _e53 = local_51;
+            if _e53 {
                 continue;
             }
-            let _e55 = s_11.light;
-            let _e57 = lights[_e55];
-            let _e59 = s_11.u;
-            let _e60 = reuse_target(q_6, _e57, _e59, x_16, n_15, m_5);
-            if !((_e60 > 0f)) {
+            let _e54 = j_6;
+            if (_e54 > k0_) {
+                let _e60 = reuse.visibility;
+                local_52 = (_e60 == 1u);
+            } else {
+                local_52 = false;
+            }
+            let _e64 = local_52;
+            if _e64 {
+                let _e68 = s_11.light;
+                let _e70 = s_11.u;
+                let _e71 = j_6;
+                let _e75 = (*doms_2)[(_e71 - 1u)];
+                let _e76 = history_vouches(_e68, _e70, _e75);
+                local_53 = !(_e76);
+            } else {
+                local_53 = false;
+            }
+            let _e79 = local_53;
+            if _e79 {
                 continue;
             }
-            let _e65 = s_11.w;
-            w_in = _e65;
-            let _e67 = j_6;
-            if (_e67 == k0_) {
-                local_46 = cur_ris;
+            let _e82 = s_11.light;
+            let _e84 = lights[_e82];
+            let _e86 = s_11.u;
+            let _e87 = reuse_target(q_7, _e84, _e86, x_17, n_16, m_5);
+            if !((_e87 > 0f)) {
+                continue;
+            }
+            let _e92 = s_11.w;
+            w_in = _e92;
+            let _e94 = j_6;
+            if (_e94 == k0_) {
+                local_54 = cur_ris;
             } else {
-                local_46 = false;
+                local_54 = false;
             }
-            let _e72 = local_46;
-            if _e72 {
-                let _e74 = s_11.w;
-                w_in = (_e74 / _e60);
+            let _e99 = local_54;
+            if _e99 {
+                let _e101 = s_11.w;
+                w_in = (_e101 / _e87);
             }
-            own_1 = (cur_c * _e60);
-            let _e78 = own_1;
-            all_1 = _e78;
+            own_1 = (cur_c * _e87);
+            let _e105 = own_1;
+            all_1 = _e105;
             k_6 = k0_;
             loop {
-                let _e81 = k_6;
-                if (_e81 < k1_) {
+                let _e108 = k_6;
+                if (_e108 < k1_) {
                 } else {
                     break;
                 }
                 {
-                    let _e83 = k_6;
-                    let _e86 = (*doms_2)[_e83].c;
-                    let _e89 = s_11.light;
-                    let _e91 = lights_prev[_e89];
-                    let _e93 = s_11.u;
-                    let _e94 = k_6;
-                    let _e97 = (*doms_2)[_e94].x;
-                    let _e98 = k_6;
-                    let _e101 = (*doms_2)[_e98].n;
-                    let _e102 = k_6;
-                    let _e105 = (*doms_2)[_e102].m;
-                    let _e106 = reuse_target(q_6, _e91, _e93, _e97, _e101, _e105);
-                    let t_9 = (_e86 * _e106);
-                    let _e108 = all_1;
-                    all_1 = (_e108 + t_9);
-                    let _e110 = k_6;
-                    let _e113 = j_6;
-                    if ((_e110 + 1u) == _e113) {
-                        own_1 = t_9;
+                    t_4 = 0f;
+                    let _e112 = j_6;
+                    if !((_e112 > k0_)) {
+                        local_55 = cur_reached;
+                    } else {
+                        local_55 = true;
+                    }
+                    let _e118 = local_55;
+                    if _e118 {
+                        let _e119 = k_6;
+                        let _e122 = (*doms_2)[_e119].c;
+                        let _e125 = s_11.light;
+                        let _e127 = lights_prev[_e125];
+                        let _e129 = s_11.u;
+                        let _e130 = k_6;
+                        let _e133 = (*doms_2)[_e130].x;
+                        let _e134 = k_6;
+                        let _e137 = (*doms_2)[_e134].n;
+                        let _e138 = k_6;
+                        let _e141 = (*doms_2)[_e138].m;
+                        let _e142 = reuse_target(q_7, _e127, _e129, _e133, _e137, _e141);
+                        t_4 = (_e122 * _e142);
+                    }
+                    let _e144 = all_1;
+                    let _e145 = t_4;
+                    all_1 = (_e144 + _e145);
+                    let _e147 = k_6;
+                    let _e150 = j_6;
+                    if ((_e147 + 1u) == _e150) {
+                        let _e152 = t_4;
+                        own_1 = _e152;
                     }
                 }
                 continuing {
-                    let _e116 = k_6;
-                    k_6 = (_e116 + 1u);
+                    let _e154 = k_6;
+                    k_6 = (_e154 + 1u);
                 }
             }
-            let _e118 = own_1;
-            let _e119 = all_1;
-            let _e120 = w_in;
-            let _e121 = gris_weight(_e118, _e119, _e60, _e120);
-            let _e122 = w_sum_3;
-            w_sum_3 = (_e122 + _e121);
-            let _e124 = (*hs_1);
-            let _e125 = pcg_hash(_e124);
-            (*hs_1) = _e125;
-            if (_e121 > 0f) {
-                let _e130 = w_sum_3;
-                let _e131 = (*hs_1);
-                let _e132 = xi_from_bits(_e131);
-                let _e133 = weighted_replace(_e121, _e130, _e132);
-                local_47 = _e133;
+            let _e156 = own_1;
+            let _e157 = all_1;
+            let _e158 = w_in;
+            let _e159 = gris_weight(_e156, _e157, _e87, _e158);
+            let _e160 = w_sum_3;
+            w_sum_3 = (_e160 + _e159);
+            let _e162 = (*hs_1);
+            let _e163 = pcg_hash(_e162);
+            (*hs_1) = _e163;
+            if (_e159 > 0f) {
+                let _e168 = w_sum_3;
+                let _e169 = (*hs_1);
+                let _e170 = xi_from_bits(_e169);
+                let _e171 = weighted_replace(_e159, _e168, _e170);
+                local_56 = _e171;
             } else {
-                local_47 = false;
+                local_56 = false;
             }
-            let _e135 = local_47;
-            if _e135 {
-                let _e136 = s_11;
-                out = _e136;
-                out_target = _e60;
+            let _e173 = local_56;
+            if _e173 {
+                let _e174 = s_11;
+                out = _e174;
+                out_target = _e87;
             }
         }
         continuing {
-            let _e138 = j_6;
-            j_6 = (_e138 + 1u);
+            let _e176 = j_6;
+            j_6 = (_e176 + 1u);
         }
     }
-    let _e141 = w_sum_3;
-    let _e142 = out_target;
-    let _e143 = gris_contribution_weight(_e141, _e142);
-    out.w = _e143;
-    let _e144 = out;
-    return _e144;
+    let _e179 = w_sum_3;
+    let _e180 = out_target;
+    let _e181 = gris_contribution_weight(_e179, _e180);
+    out.w = _e181;
+    let _e182 = out;
+    return _e182;
 }
 
 @compute @workgroup_size(8, 8, 1) 
@@ -1825,11 +1938,15 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
     var local_7: bool;
     var fresh_visible: array<bool, 8>;
     var q_2: u32 = 0u;
-    var kept: array<ReuseSlot, 8>;
-    var fin: array<ReuseSlot, 8>;
+    var fresh_before: array<bool, 8>;
     var q_3: u32 = 0u;
     var local_8: bool;
     var local_9: bool;
+    var kept: array<ReuseSlot, 8>;
+    var fin: array<ReuseSlot, 8>;
+    var q_4: u32 = 0u;
+    var local_10: bool;
+    var local_11: bool;
     var keys: array<vec2<u32>, 8>;
     var held: array<bool, 8>;
     var k: u32 = 0u;
@@ -1840,13 +1957,13 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
     var known: bool;
     var seen: bool;
     var j_2: u32;
-    var local_10: bool;
-    var local_11: bool;
-    var shaded: Shaded;
     var local_12: bool;
-    var j_3: u32;
-    var q_4: u32 = 0u;
     var local_13: bool;
+    var shaded: Shaded;
+    var local_14: bool;
+    var j_3: u32;
+    var q_5: u32 = 0u;
+    var local_15: bool;
 
     let _e5 = view.width;
     if (gid.x < _e5) {
@@ -1867,7 +1984,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
     let _e33 = nn;
     let len2_ = dot(_e32, _e33);
     let _e35 = s;
-    let x_19 = _e35.xyz;
+    let x_20 = _e35.xyz;
     if inside {
         let _e40 = s.w;
         local_1 = (_e40 > 0f);
@@ -1882,7 +1999,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
     }
     let _e50 = local_2;
     if _e50 {
-        local_3 = all((abs(x_19) <= vec3(340282350000000000000000000000000000000f)));
+        local_3 = all((abs(x_20) <= vec3(340282350000000000000000000000000000000f)));
     } else {
         local_3 = false;
     }
@@ -1897,7 +2014,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
         let mr = textureLoad(metal_rough_tex, texel_1, 0i);
         let _e83 = textureLoad(base_color_tex, texel_1, 0i);
         let _e90 = view.eye;
-        let _e93 = material_of(_e83.xyz, mr.z, mr.y, mr.w, normalize((_e90 - x_19)));
+        let _e93 = material_of(_e83.xyz, mr.z, mr.y, mr.w, normalize((_e90 - x_20)));
         m = _e93;
         let _e95 = m.base;
         let _e97 = m.metallic;
@@ -1916,7 +2033,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
     let _e114 = range_lobe(_e113);
     let _e117 = view.shadow_offset;
     let _e120 = view.eye;
-    let eps_5 = (_e117 * length((_e120 - x_19)));
+    let eps_6 = (_e117 * length((_e120 - x_20)));
     let _e126 = view.seed;
     let _e130 = view.width;
     let _e136 = view.frame;
@@ -1924,7 +2041,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
     let _e138 = pick_stream(_e137);
     h = _e138;
     hc = _e137;
-    let _e160 = tile_walk_begin(lid, x_19, _e114.w, has_3);
+    let _e160 = tile_walk_begin(lid, x_20, _e114.w, has_3);
     loop {
         let _e163 = start;
         if (_e163 < _e160.total) {
@@ -1947,7 +2064,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
                     if !(!(has_3)) {
                         let _e182 = bsh_nodes[b_10];
                         let _e183 = r;
-                        let _e184 = bsh_reaches(_e182, x_19, _e183, _e114);
+                        let _e184 = bsh_reaches(_e182, x_20, _e183, _e114);
                         local_4 = !(_e184);
                     } else {
                         local_4 = true;
@@ -1956,7 +2073,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
                     if _e187 {
                         continue;
                     }
-                    let li_10 = bsh_nodes[b_10].light;
+                    let li_12 = bsh_nodes[b_10].light;
                     let _e192 = count;
                     count = (_e192 + 1u);
                     let _e195 = h;
@@ -1975,7 +2092,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
                     let _e206 = n;
                     let _e207 = r;
                     let _e208 = m;
-                    let _e213 = shade_pick_traced(li_10, x_19, _e206, _e207, _e114, _e208, 1f, u_5.x, u_5.y, eps_5, false);
+                    let _e213 = shade_pick_traced(li_12, x_20, _e206, _e207, _e114, _e208, 1f, u_5.x, u_5.y, eps_6, false);
                     let _e214 = output_of(_e213);
                     let _e215 = resample_target(_e214);
                     if (_e215 > 0f) {
@@ -2004,7 +2121,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
                                 let _e241 = local_5;
                                 if _e241 {
                                     let _e242 = q;
-                                    slot_light[_e242] = li_10;
+                                    slot_light[_e242] = li_12;
                                     let _e244 = q;
                                     slot_u[_e244] = u_5;
                                     let _e246 = q;
@@ -2049,7 +2166,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
     let _e287 = n;
     let _e290 = view.eye;
     let _e294 = reuse_stream(_e137, 0u);
-    let _e295 = reuse_domains(x_19, _e287, length((_e290 - x_19)), _e294, (&doms));
+    let _e295 = reuse_domains(x_20, _e287, length((_e290 - x_20)), _e294, (&doms));
     if (_e295 > 0u) {
         let _e302 = doms[0].temporal;
         local_6 = _e302;
@@ -2112,7 +2229,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
                 let _e371 = q_2;
                 let _e373 = slot_cells[_e371];
                 let _e374 = n;
-                let _e375 = sample_reaches(_e370, _e373, x_19, _e374, eps_5);
+                let _e375 = sample_reaches(_e370, _e373, x_20, _e374, eps_6);
                 fresh_visible[_e366] = _e375;
             } else {
                 let _e376 = q_2;
@@ -2130,266 +2247,318 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
         }
     }
     loop {
-        let _e393 = q_3;
-        if (_e393 < K) {
+        let _e392 = q_3;
+        if (_e392 < K) {
         } else {
             break;
         }
         {
-            let _e396 = q_3;
-            let _e398 = slot_p[_e396];
-            if (_e398 > 0f) {
-                let _e405 = reuse.visibility;
-                if !((_e405 == 0u)) {
-                    let _e411 = q_3;
-                    let _e413 = fresh_visible[_e411];
-                    local_9 = _e413;
-                } else {
-                    local_9 = true;
-                }
-                let _e415 = local_9;
-                local_8 = _e415;
+            let _e395 = q_3;
+            fresh_before[_e395] = true;
+            let _e398 = q_3;
+            let _e400 = q_3;
+            if (_e355[_e398] == _e400) {
+                let _e404 = q_3;
+                let _e406 = fresh_visible[_e404];
+                local_8 = _e406;
             } else {
                 local_8 = false;
             }
-            let fresh = local_8;
-            let _e418 = q_3;
-            let _e420 = q_3;
-            let _e421 = q_3;
-            let _e423 = slot_light[_e421];
-            let _e424 = q_3;
-            let _e426 = slot_cells[_e424];
-            let _e427 = total;
-            let _e428 = q_3;
-            let _e430 = slot_target(_e427, _e428, K);
-            let _e437 = n;
-            let _e438 = m;
-            let _e439 = gris_combine(_e420, ReuseSlot(_e423, _e426, select(0f, _e430, fresh)), true, 1f, 0u, first_1, x_19, _e437, _e438, (&doms), (&hs));
-            kept[_e418] = _e439;
-            let _e440 = q_3;
-            let _e442 = q_3;
-            let _e444 = kept[_e442];
-            fin[_e440] = _e444;
-            if (_e295 > first_1) {
-                let _e446 = q_3;
-                let _e448 = q_3;
-                let _e449 = q_3;
-                let _e451 = kept[_e449];
-                let _e453 = n;
-                let _e454 = m;
-                let _e455 = gris_combine(_e448, _e451, false, confidence, first_1, _e295, x_19, _e453, _e454, (&doms), (&hs));
-                fin[_e446] = _e455;
+            let _e408 = local_8;
+            if _e408 {
+                local_9 = own_history;
+            } else {
+                local_9 = false;
+            }
+            let _e412 = local_9;
+            if _e412 {
+                let _e413 = q_3;
+                let _e415 = q_3;
+                let _e417 = slot_light[_e415];
+                let _e418 = q_3;
+                let _e420 = slot_cells[_e418];
+                let _e422 = doms[0];
+                let _e423 = n;
+                let _e424 = reached_before(_e417, _e420, _e422, x_20, _e423);
+                fresh_before[_e413] = _e424;
+            } else {
+                let _e425 = q_3;
+                if (_e355[_e425] < K) {
+                    let _e429 = q_3;
+                    let _e431 = q_3;
+                    let _e434 = fresh_before[_e355[_e431]];
+                    fresh_before[_e429] = _e434;
+                }
             }
         }
         continuing {
-            let _e457 = q_3;
-            q_3 = (_e457 + 1u);
+            let _e436 = q_3;
+            q_3 = (_e436 + 1u);
         }
     }
     loop {
-        let _e463 = k;
-        if (_e463 < K) {
+        let _e442 = q_4;
+        if (_e442 < K) {
         } else {
             break;
         }
         {
-            let _e466 = k;
-            let _e468 = k;
-            let _e471 = fin[_e468].light;
-            let _e472 = k;
-            let _e475 = fin[_e472].u;
-            let _e476 = sample_key(_e471, _e475);
-            keys[_e466] = _e476;
-            let _e477 = k;
-            let _e479 = k;
-            let _e482 = fin[_e479].w;
-            held[_e477] = (_e482 > 0f);
+            let _e445 = q_4;
+            let _e447 = slot_p[_e445];
+            if (_e447 > 0f) {
+                let _e454 = reuse.visibility;
+                if !((_e454 == 0u)) {
+                    let _e460 = q_4;
+                    let _e462 = fresh_visible[_e460];
+                    local_11 = _e462;
+                } else {
+                    local_11 = true;
+                }
+                let _e464 = local_11;
+                local_10 = _e464;
+            } else {
+                local_10 = false;
+            }
+            let fresh = local_10;
+            let _e467 = q_4;
+            let _e469 = q_4;
+            let _e470 = q_4;
+            let _e472 = slot_light[_e470];
+            let _e473 = q_4;
+            let _e475 = slot_cells[_e473];
+            let _e476 = total;
+            let _e477 = q_4;
+            let _e479 = slot_target(_e476, _e477, K);
+            let _e485 = q_4;
+            let _e487 = fresh_before[_e485];
+            let _e489 = n;
+            let _e490 = m;
+            let _e491 = gris_combine(_e469, ReuseSlot(_e472, _e475, select(0f, _e479, fresh)), true, 1f, _e487, 0u, first_1, x_20, _e489, _e490, (&doms), (&hs));
+            kept[_e467] = _e491;
+            let _e492 = q_4;
+            let _e494 = q_4;
+            let _e496 = kept[_e494];
+            fin[_e492] = _e496;
+            if (_e295 > first_1) {
+                let _e498 = q_4;
+                let _e500 = q_4;
+                let _e501 = q_4;
+                let _e503 = kept[_e501];
+                let _e506 = n;
+                let _e507 = m;
+                let _e508 = gris_combine(_e500, _e503, false, confidence, true, first_1, _e295, x_20, _e506, _e507, (&doms), (&hs));
+                fin[_e498] = _e508;
+            }
         }
         continuing {
-            let _e486 = k;
-            k = (_e486 + 1u);
+            let _e510 = q_4;
+            q_4 = (_e510 + 1u);
         }
     }
-    let _e488 = keys;
-    let _e489 = held;
-    let _e490 = first_holders(_e488, _e489);
     loop {
-        let _e494 = k_1;
-        if (_e494 < K) {
+        let _e516 = k;
+        if (_e516 < K) {
         } else {
             break;
         }
         {
-            let _e497 = k_1;
-            let _e499 = k_1;
-            if (_e490[_e497] != _e499) {
+            let _e519 = k;
+            let _e521 = k;
+            let _e524 = fin[_e521].light;
+            let _e525 = k;
+            let _e528 = fin[_e525].u;
+            let _e529 = sample_key(_e524, _e528);
+            keys[_e519] = _e529;
+            let _e530 = k;
+            let _e532 = k;
+            let _e535 = fin[_e532].w;
+            held[_e530] = (_e535 > 0f);
+        }
+        continuing {
+            let _e539 = k;
+            k = (_e539 + 1u);
+        }
+    }
+    let _e541 = keys;
+    let _e542 = held;
+    let _e543 = first_holders(_e541, _e542);
+    loop {
+        let _e547 = k_1;
+        if (_e547 < K) {
+        } else {
+            break;
+        }
+        {
+            let _e550 = k_1;
+            let _e552 = k_1;
+            if (_e543[_e550] != _e552) {
                 continue;
             }
             w = vec3(0f);
-            let _e504 = k_1;
-            j_1 = _e504;
+            let _e557 = k_1;
+            j_1 = _e557;
             loop {
-                let _e506 = j_1;
-                if (_e506 < K) {
+                let _e559 = j_1;
+                if (_e559 < K) {
                 } else {
                     break;
                 }
                 {
-                    let _e509 = j_1;
-                    let _e511 = k_1;
-                    if (_e490[_e509] == _e511) {
-                        let _e513 = w;
-                        let _e514 = j_1;
-                        let _e517 = fin[_e514].w;
-                        let _e518 = j_1;
-                        let _e520 = slot_share(_e518, K);
-                        w = (_e513 + (_e517 * _e520));
+                    let _e562 = j_1;
+                    let _e564 = k_1;
+                    if (_e543[_e562] == _e564) {
+                        let _e566 = w;
+                        let _e567 = j_1;
+                        let _e570 = fin[_e567].w;
+                        let _e571 = j_1;
+                        let _e573 = slot_share(_e571, K);
+                        w = (_e566 + (_e570 * _e573));
                     }
                 }
                 continuing {
-                    let _e524 = j_1;
-                    j_1 = (_e524 + 1u);
+                    let _e577 = j_1;
+                    j_1 = (_e577 + 1u);
                 }
             }
             known = false;
             seen = false;
             j_2 = 0u;
             loop {
-                let _e532 = j_2;
-                if (_e532 < K) {
-                    let _e537 = known;
-                    local_10 = !(_e537);
+                let _e585 = j_2;
+                if (_e585 < K) {
+                    let _e590 = known;
+                    local_12 = !(_e590);
                 } else {
-                    local_10 = false;
+                    local_12 = false;
                 }
-                let _e540 = local_10;
-                if _e540 {
+                let _e593 = local_12;
+                if _e593 {
                 } else {
                     break;
                 }
                 {
-                    let _e541 = j_2;
-                    let _e543 = fresh_held[_e541];
-                    if _e543 {
-                        let _e546 = j_2;
-                        let _e548 = fresh_keys[_e546];
-                        let _e549 = k_1;
-                        let _e551 = keys[_e549];
-                        local_11 = all((_e548 == _e551));
+                    let _e594 = j_2;
+                    let _e596 = fresh_held[_e594];
+                    if _e596 {
+                        let _e599 = j_2;
+                        let _e601 = fresh_keys[_e599];
+                        let _e602 = k_1;
+                        let _e604 = keys[_e602];
+                        local_13 = all((_e601 == _e604));
                     } else {
-                        local_11 = false;
+                        local_13 = false;
                     }
-                    let _e555 = local_11;
-                    if _e555 {
+                    let _e608 = local_13;
+                    if _e608 {
                         known = true;
-                        let _e557 = j_2;
-                        let _e559 = fresh_visible[_e557];
-                        seen = _e559;
+                        let _e610 = j_2;
+                        let _e612 = fresh_visible[_e610];
+                        seen = _e612;
                     }
                 }
                 continuing {
-                    let _e561 = j_2;
-                    j_2 = (_e561 + 1u);
+                    let _e614 = j_2;
+                    j_2 = (_e614 + 1u);
                 }
             }
             shaded = Shaded(vec3(0f), vec3(0f), vec3(0f));
-            let _e571 = known;
-            if !(!(_e571)) {
-                let _e576 = seen;
-                local_12 = _e576;
+            let _e624 = known;
+            if !(!(_e624)) {
+                let _e629 = seen;
+                local_14 = _e629;
             } else {
-                local_12 = true;
+                local_14 = true;
             }
-            let _e578 = local_12;
-            if _e578 {
-                let _e579 = k_1;
-                let _e582 = fin[_e579].light;
-                let _e583 = k_1;
-                let _e586 = fin[_e583].u;
-                let _e587 = n;
-                let _e588 = known;
-                let _e590 = sample_connection(_e582, _e586, x_19, _e587, eps_5, !(_e588));
-                let _e591 = n;
-                let _e592 = m;
-                let _e593 = shade_connection(_e590, x_19, _e591, _e592);
-                shaded = _e593;
+            let _e631 = local_14;
+            if _e631 {
+                let _e632 = k_1;
+                let _e635 = fin[_e632].light;
+                let _e636 = k_1;
+                let _e639 = fin[_e636].u;
+                let _e640 = n;
+                let _e641 = known;
+                let _e643 = sample_connection(_e635, _e639, x_20, _e640, eps_6, !(_e641));
+                let _e644 = n;
+                let _e645 = m;
+                let _e646 = shade_connection(_e643, x_20, _e644, _e645);
+                shaded = _e646;
             }
-            let _e594 = t;
-            let _e595 = shaded;
-            let _e596 = w;
-            let _e597 = scaled(_e595, _e596);
-            let _e598 = add(_e594, _e597);
-            t = _e598;
-            let _e599 = k_1;
-            j_3 = _e599;
+            let _e647 = t;
+            let _e648 = shaded;
+            let _e649 = w;
+            let _e650 = scaled(_e648, _e649);
+            let _e651 = add(_e647, _e650);
+            t = _e651;
+            let _e652 = k_1;
+            j_3 = _e652;
             loop {
-                let _e601 = j_3;
-                if (_e601 < K) {
+                let _e654 = j_3;
+                if (_e654 < K) {
                 } else {
                     break;
                 }
                 {
-                    let _e604 = j_3;
-                    let _e606 = k_1;
-                    if (_e490[_e604] == _e606) {
-                        let _e608 = j_3;
-                        let _e610 = shaded;
-                        let _e611 = output_of(_e610);
-                        let _e612 = resample_target(_e611);
-                        visible[_e608] = (_e612 > 0f);
+                    let _e657 = j_3;
+                    let _e659 = k_1;
+                    if (_e543[_e657] == _e659) {
+                        let _e661 = j_3;
+                        let _e663 = shaded;
+                        let _e664 = output_of(_e663);
+                        let _e665 = resample_target(_e664);
+                        visible[_e661] = (_e665 > 0f);
                     }
                 }
                 continuing {
-                    let _e616 = j_3;
-                    j_3 = (_e616 + 1u);
+                    let _e669 = j_3;
+                    j_3 = (_e669 + 1u);
                 }
             }
         }
         continuing {
-            let _e619 = k_1;
-            k_1 = (_e619 + 1u);
+            let _e672 = k_1;
+            k_1 = (_e672 + 1u);
         }
     }
     loop {
-        let _e623 = q_4;
-        if (_e623 < K) {
+        let _e676 = q_5;
+        if (_e676 < K) {
         } else {
             break;
         }
         {
-            let _e628 = reuse.visibility;
-            if !((_e628 == 0u)) {
-                let _e634 = q_4;
-                let _e636 = visible[_e634];
-                local_13 = _e636;
+            let _e681 = reuse.visibility;
+            if !((_e681 == 0u)) {
+                let _e687 = q_5;
+                let _e689 = visible[_e687];
+                local_15 = _e689;
             } else {
-                local_13 = true;
+                local_15 = true;
             }
-            let keep = local_13;
-            let _e640 = next_index(pixel_1);
-            let _e643 = q_4;
-            let _e645 = q_4;
-            let _e648 = kept[_e645].light;
-            let _e649 = q_4;
-            let _e652 = kept[_e649].u;
-            let _e653 = q_4;
-            let _e656 = kept[_e653].w;
-            reuse_pixels[_e640].slots[_e643] = ReuseSlot(_e648, _e652, select(0f, _e656, keep));
+            let keep = local_15;
+            let _e693 = next_index(pixel_1);
+            let _e696 = q_5;
+            let _e698 = q_5;
+            let _e701 = kept[_e698].light;
+            let _e702 = q_5;
+            let _e705 = kept[_e702].u;
+            let _e706 = q_5;
+            let _e709 = kept[_e706].w;
+            reuse_pixels[_e693].slots[_e696] = ReuseSlot(_e701, _e705, select(0f, _e709, keep));
         }
         continuing {
-            let _e661 = q_4;
-            q_4 = (_e661 + 1u);
+            let _e714 = q_5;
+            q_5 = (_e714 + 1u);
         }
     }
-    let _e664 = next_index(pixel_1);
-    let _e667 = n;
-    let _e668 = m;
-    let _e671 = reuse.max_confidence;
-    let _e673 = reuse_surface(x_19, _e667, _e668, min(confidence, _e671));
-    reuse_pixels[_e664].surface = _e673;
-    let _e676 = t.diffuse;
-    let _e678 = t.specular;
-    let _e680 = count;
-    textureStore(out_tex, texel_1, vec4<f32>((_e676 + _e678), f32(_e680)));
+    let _e717 = next_index(pixel_1);
+    let _e720 = n;
+    let _e721 = m;
+    let _e724 = reuse.max_confidence;
+    let _e726 = reuse_surface(x_20, _e720, _e721, min(confidence, _e724));
+    reuse_pixels[_e717].surface = _e726;
+    let _e729 = t.diffuse;
+    let _e731 = t.specular;
+    let _e733 = count;
+    textureStore(out_tex, texel_1, vec4<f32>((_e729 + _e731), f32(_e733)));
     return;
 }

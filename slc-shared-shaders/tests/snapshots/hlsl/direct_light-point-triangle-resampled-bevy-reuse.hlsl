@@ -47,6 +47,10 @@ struct ReuseParams {
     float radius;
     uint visibility;
     uint parity;
+    float3 moved_min;
+    uint moved;
+    float3 moved_max;
+    uint pad;
 };
 
 struct ReuseSurface {
@@ -341,8 +345,8 @@ bool sphere_contains_point(float3 c, float r_1, float3 x_1)
 
 bool sphere_overlaps_aabb(float3 c_1, float r_2, float3 bmin, float3 bmax)
 {
-    float3 q_7 = clamp(c_1, bmin, bmax);
-    float3 v_6 = (q_7 - c_1);
+    float3 q_8 = clamp(c_1, bmin, bmax);
+    float3 v_6 = (q_8 - c_1);
     return (dot(v_6, v_6) <= (r_2 * r_2));
 }
 
@@ -360,29 +364,29 @@ float connection_factor(float cos_x, float d2_3, float rt2_1, float w_1)
 
 float connection_cosine(float3 x_2, float3 y, float3 n_1, float3 ng, float r2_1)
 {
-    bool local_14 = (bool)0;
-    bool local_15 = (bool)0;
+    bool local_16 = (bool)0;
+    bool local_17 = (bool)0;
 
     float3 v_7 = (x_2 - y);
     float d2_6 = dot(v_7, v_7);
     const bool _e7 = slc_keep(r2_1, d2_6);
     if (!(!(_e7))) {
-        local_14 = !((d2_6 > 0.0));
+        local_16 = !((d2_6 > 0.0));
     } else {
-        local_14 = true;
+        local_16 = true;
     }
-    bool _e16 = local_14;
+    bool _e16 = local_16;
     if (_e16) {
         return 0.0;
     }
     float3 w_12 = (v_7 / (sqrt(d2_6)).xxx);
     float cos_x_1 = -(dot(n_1, w_12));
     if (!(!((cos_x_1 > 0.0)))) {
-        local_15 = !((dot(ng, w_12) < 0.0));
+        local_17 = !((dot(ng, w_12) < 0.0));
     } else {
-        local_15 = true;
+        local_17 = true;
     }
-    bool _e34 = local_15;
+    bool _e34 = local_17;
     if (_e34) {
         return 0.0;
     }
@@ -525,8 +529,8 @@ float ggx_d(float cos_h, float sin2_h, float alpha)
         return 0.0;
     }
     float a2_ = (alpha * alpha);
-    float t_4 = (((cos_h * cos_h) * a2_) + sin2_h);
-    return ((a2_ * INV_PI) / (t_4 * t_4));
+    float t_5 = (((cos_h * cos_h) * a2_) + sin2_h);
+    return ((a2_ * INV_PI) / (t_5 * t_5));
 }
 
 float smith_root(float cos_, float alpha_1)
@@ -537,14 +541,14 @@ float smith_root(float cos_, float alpha_1)
 
 float smith_visibility(float n_l, float n_v, float alpha_2)
 {
-    bool local_16 = (bool)0;
+    bool local_18 = (bool)0;
 
     if (!((n_l <= 0.0))) {
-        local_16 = (n_v <= 0.0);
+        local_18 = (n_v <= 0.0);
     } else {
-        local_16 = true;
+        local_18 = true;
     }
-    bool _e11 = local_16;
+    bool _e11 = local_18;
     if (_e11) {
         return 0.0;
     }
@@ -569,21 +573,21 @@ float3 specular_fresnel(float3 base, float metallic, float3 f0_d, float f90_d, f
 
 bool has_specular(float metallic_1, float3 f0_d_1, float f90_d_1)
 {
-    bool local_17 = (bool)0;
-    bool local_18 = (bool)0;
+    bool local_19 = (bool)0;
+    bool local_20 = (bool)0;
 
     if (!((metallic_1 > 0.0))) {
-        local_17 = (f90_d_1 > 0.0);
+        local_19 = (f90_d_1 > 0.0);
     } else {
-        local_17 = true;
+        local_19 = true;
     }
-    bool _e11 = local_17;
+    bool _e11 = local_19;
     if (!(_e11)) {
-        local_18 = (max(max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0.0);
+        local_20 = (max(max(f0_d_1.x, f0_d_1.y), f0_d_1.z) > 0.0);
     } else {
-        local_18 = true;
+        local_20 = true;
     }
-    bool _e23 = local_18;
+    bool _e23 = local_20;
     return _e23;
 }
 
@@ -594,17 +598,17 @@ float channel_mean(float3 c_5)
 
 float4 receiver_lobe(float3 base_1, float metallic_2, float3 f0_d_2, float f90_d_2, float alpha_3, float n_v_1)
 {
-    bool local_19 = (bool)0;
+    bool local_21 = (bool)0;
 
     const float3 _e10 = fresnel_schlick(f0_d_2, f90_d_2, n_v_1);
     const float _e16 = channel_mean((((float3(1.0, 1.0, 1.0) - _e10) * base_1) * (1.0 - metallic_2)));
     if (!((n_v_1 <= 0.0))) {
         const bool _e22 = has_specular(metallic_2, f0_d_2, f90_d_2);
-        local_19 = !(_e22);
+        local_21 = !(_e22);
     } else {
-        local_19 = true;
+        local_21 = true;
     }
-    bool _e25 = local_19;
+    bool _e25 = local_21;
     if (_e25) {
         return float4(_e16, 0.0, alpha_3, n_v_1);
     }
@@ -664,9 +668,9 @@ float bevy_dfg(float r_4, float n_v_2)
 {
     float rx = (1.0 - r_4);
     float a004_ = ((min((rx * rx), exp2((-9.28 * n_v_2))) * rx) + (0.0425 - (0.0275 * r_4)));
-    float x_17 = max(((1.04 - (0.572 * r_4)) - (1.04 * a004_)), 5e-5);
+    float x_18 = max(((1.04 - (0.572 * r_4)) - (1.04 * a004_)), 5e-5);
     float y_1 = max((((0.022 * r_4) - 0.04) + (1.04 * a004_)), 5e-5);
-    return (x_17 + y_1);
+    return (x_18 + y_1);
 }
 
 float3 bevy_brdf(float3 base_2, float metallic_3, float r_5, float reflectance_1, float3 n_4, float3 v_1, float3 l)
@@ -698,23 +702,23 @@ float3 bevy_brdf(float3 base_2, float metallic_3, float r_5, float reflectance_1
 
 float cone_cos_of(float3 v_2, float d2_4, float a_3, float3 d)
 {
-    bool local_20 = (bool)0;
-    bool local_21 = (bool)0;
+    bool local_22 = (bool)0;
+    bool local_23 = (bool)0;
 
     float vd = dot(v_2, d);
     float h2_1 = (d2_4 - (a_3 * a_3));
     if (!((h2_1 <= 0.0))) {
         if ((vd >= 0.0)) {
-            local_21 = ((vd * vd) >= h2_1);
+            local_23 = ((vd * vd) >= h2_1);
         } else {
-            local_21 = false;
+            local_23 = false;
         }
-        bool _e19 = local_21;
-        local_20 = _e19;
+        bool _e19 = local_23;
+        local_22 = _e19;
     } else {
-        local_20 = true;
+        local_22 = true;
     }
-    bool _e21 = local_20;
+    bool _e21 = local_22;
     if (_e21) {
         return 1.0;
     }
@@ -731,8 +735,8 @@ float cone_cos_toward(float3 center_, float radius, float3 p, float3 d_1)
 
 float range_scale_at(float4 rl, float cos_t)
 {
-    float t_5 = (((0.5 + (0.5 * cos_t)) * (rl.z - 1.0)) + 1.0);
-    return clamp((rl.x + ((rl.y * rl.z) / (t_5 * t_5))), 1.0, (rl.w * rl.w));
+    float t_6 = (((0.5 + (0.5 * cos_t)) * (rl.z - 1.0)) + 1.0);
+    return clamp((rl.x + ((rl.y * rl.z) / (t_6 * t_6))), 1.0, (rl.w * rl.w));
 }
 
 float range_scale_toward(float4 rl_1, float3 center_1, float radius_1, float3 p_1, float3 r_6)
@@ -779,27 +783,27 @@ float ray_aabb(float3 o, float3 inv_d, float3 bmin_1, float3 bmax_1, float t_max
 
 float3 triangle_normal(float3 a_4, float3 b_3, float3 c_6)
 {
-    bool local_22 = (bool)0;
+    bool local_24 = (bool)0;
 
-    float3 n_16 = cross((b_3 - a_4), (c_6 - a_4));
-    float l2_ = dot(n_16, n_16);
+    float3 n_17 = cross((b_3 - a_4), (c_6 - a_4));
+    float l2_ = dot(n_17, n_17);
     if (!(!((l2_ > 0.0)))) {
-        local_22 = !((l2_ < 3e38));
+        local_24 = !((l2_ < 3e38));
     } else {
-        local_22 = true;
+        local_24 = true;
     }
-    bool _e17 = local_22;
+    bool _e17 = local_24;
     if (_e17) {
         return float3(0.0, 0.0, 0.0);
     }
-    return (n_16 / (sqrt(l2_)).xxx);
+    return (n_17 / (sqrt(l2_)).xxx);
 }
 
 float ray_triangle(float3 o_1, float3 d_3, float3 a_5, float3 b_4, float3 c_7, float t_min, float t_max_1)
 {
-    bool local_23 = (bool)0;
-    bool local_24 = (bool)0;
     bool local_25 = (bool)0;
+    bool local_26 = (bool)0;
+    bool local_27 = (bool)0;
 
     float3 e1_ = (b_4 - a_5);
     float3 e2_ = (c_7 - a_5);
@@ -812,34 +816,34 @@ float ray_triangle(float3 o_1, float3 d_3, float3 a_5, float3 b_4, float3 c_7, f
     float3 s_12 = (o_1 - a_5);
     float u_4 = (dot(s_12, p_8) * inv);
     if (!((u_4 < 0.0))) {
-        local_23 = (u_4 > 1.0);
+        local_25 = (u_4 > 1.0);
     } else {
-        local_23 = true;
+        local_25 = true;
     }
-    bool _e28 = local_23;
+    bool _e28 = local_25;
     if (_e28) {
         return -1.0;
     }
-    float3 q_8 = cross(s_12, e1_);
-    float v_9 = (dot(d_3, q_8) * inv);
+    float3 q_9 = cross(s_12, e1_);
+    float v_9 = (dot(d_3, q_9) * inv);
     if (!((v_9 < 0.0))) {
-        local_24 = ((u_4 + v_9) > 1.0);
+        local_26 = ((u_4 + v_9) > 1.0);
     } else {
-        local_24 = true;
+        local_26 = true;
     }
-    bool _e42 = local_24;
+    bool _e42 = local_26;
     if (_e42) {
         return -1.0;
     }
-    float t_6 = (dot(e2_, q_8) * inv);
-    if ((t_6 > t_min)) {
-        local_25 = (t_6 < t_max_1);
+    float t_7 = (dot(e2_, q_9) * inv);
+    if ((t_7 > t_min)) {
+        local_27 = (t_7 < t_max_1);
     } else {
-        local_25 = false;
+        local_27 = false;
     }
-    bool _e51 = local_25;
+    bool _e51 = local_27;
     if (_e51) {
-        return t_6;
+        return t_7;
     }
     return -1.0;
 }
@@ -850,21 +854,21 @@ float3 reproject(float4 c0_, float4 c1_, float4 c2_, float4 c3_, float3 p_2, flo
     if ((clip_.w <= 0.0)) {
         return float3(-1.0, -1.0, 0.0);
     }
-    float x_18 = (((((clip_.x / clip_.w) + 1.0) * 0.5) * width) - 0.5);
+    float x_19 = (((((clip_.x / clip_.w) + 1.0) * 0.5) * width) - 0.5);
     float y_2 = ((((1.0 - (clip_.y / clip_.w)) * 0.5) * height) - 0.5);
-    return float3(x_18, y_2, clip_.w);
+    return float3(x_19, y_2, clip_.w);
 }
 
 bool history_matches(float3 n_5, float3 nh, float3 p_3, float oh, float d_4)
 {
-    bool local_26 = (bool)0;
+    bool local_28 = (bool)0;
 
     if ((abs((dot(nh, p_3) - oh)) <= (TEMPORAL_DEPTH_TOLERANCE * d_4))) {
-        local_26 = (dot(n_5, nh) >= TEMPORAL_NORMAL_COS);
+        local_28 = (dot(n_5, nh) >= TEMPORAL_NORMAL_COS);
     } else {
-        local_26 = false;
+        local_28 = false;
     }
-    bool _e17 = local_26;
+    bool _e17 = local_28;
     return _e17;
 }
 
@@ -942,12 +946,12 @@ GeoHit trace(float3 o_2, float3 d_5, float t_min_1, float t_max_2, bool any_hit)
         if (all(loop_bound == uint2(0u, 0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         uint _e21 = node_3;
-        GpuGeoNode n_17 = ConstructGpuGeoNode(asfloat(geo_nodes.Load3(_e21*32+0)), asuint(geo_nodes.Load(_e21*32+12)), asfloat(geo_nodes.Load3(_e21*32+16)), asuint(geo_nodes.Load(_e21*32+28)));
+        GpuGeoNode n_18 = ConstructGpuGeoNode(asfloat(geo_nodes.Load3(_e21*32+0)), asuint(geo_nodes.Load(_e21*32+12)), asfloat(geo_nodes.Load3(_e21*32+16)), asuint(geo_nodes.Load(_e21*32+28)));
         float _e27 = hit.t;
-        const float _e28 = ray_aabb(o_2, _e14, n_17.bmin, n_17.bmax, _e27);
+        const float _e28 = ray_aabb(o_2, _e14, n_18.bmin, n_18.bmax, _e27);
         if ((_e28 >= 0.0)) {
-            if ((n_17.count > 0u)) {
-                i = n_17.first;
+            if ((n_18.count > 0u)) {
+                i = n_18.first;
                 uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
                 bool loop_init = true;
                 while(true) {
@@ -959,15 +963,15 @@ GeoHit trace(float3 o_2, float3 d_5, float t_min_1, float t_max_2, bool any_hit)
                     }
                     loop_init = false;
                     uint _e36 = i;
-                    if ((_e36 < (n_17.first + n_17.count))) {
+                    if ((_e36 < (n_18.first + n_18.count))) {
                     } else {
                         break;
                     }
                     {
                         uint _e42 = i;
-                        GpuTriangle t_7 = ConstructGpuTriangle(asfloat(geo_tris.Load3(_e42*48+0)), asuint(geo_tris.Load(_e42*48+12)), asfloat(geo_tris.Load3(_e42*48+16)), asuint(geo_tris.Load(_e42*48+28)), asfloat(geo_tris.Load3(_e42*48+32)), asuint(geo_tris.Load(_e42*48+44)));
+                        GpuTriangle t_8 = ConstructGpuTriangle(asfloat(geo_tris.Load3(_e42*48+0)), asuint(geo_tris.Load(_e42*48+12)), asfloat(geo_tris.Load3(_e42*48+16)), asuint(geo_tris.Load(_e42*48+28)), asfloat(geo_tris.Load3(_e42*48+32)), asuint(geo_tris.Load(_e42*48+44)));
                         float _e49 = hit.t;
-                        const float _e50 = ray_triangle(o_2, d_5, t_7.v0_, t_7.v1_, t_7.v2_, t_min_1, _e49);
+                        const float _e50 = ray_triangle(o_2, d_5, t_8.v0_, t_8.v1_, t_8.v2_, t_min_1, _e49);
                         if ((_e50 > 0.0)) {
                             hit.t = _e50;
                             uint _e55 = i;
@@ -984,11 +988,11 @@ GeoHit trace(float3 o_2, float3 d_5, float t_min_1, float t_max_2, bool any_hit)
                 uint _e60 = sp;
                 if ((_e60 < 64u)) {
                     uint _e63 = sp;
-                    stack[min(uint(_e63), 63u)] = (n_17.first + 1u);
+                    stack[min(uint(_e63), 63u)] = (n_18.first + 1u);
                     uint _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_3 = n_17.first;
+                node_3 = n_18.first;
                 continue;
             }
         }
@@ -1060,8 +1064,8 @@ float bsh_inner_scale(float a_7, float3 v_3, float d2_5, float3 r_7, float4 rl_2
 
 bool bsh_reaches(BshNode node_4, float3 x_4, float3 r_8, float4 rl_3)
 {
-    bool local_27 = (bool)0;
-    bool local_28 = (bool)0;
+    bool local_29 = (bool)0;
+    bool local_30 = (bool)0;
 
     const bool _e6 = sphere_contains_point(node_4.center_, node_4.radius, x_4);
     if (_e6) {
@@ -1069,11 +1073,11 @@ bool bsh_reaches(BshNode node_4, float3 x_4, float3 r_8, float4 rl_3)
     }
     if (!((rl_3.w <= 1.0))) {
         const bool _e20 = sphere_contains_point(node_4.center_, (node_4.radius * (rl_3.w * 1.0001)), x_4);
-        local_27 = !(_e20);
+        local_29 = !(_e20);
     } else {
-        local_27 = true;
+        local_29 = true;
     }
-    bool _e23 = local_27;
+    bool _e23 = local_29;
     if (_e23) {
         return false;
     }
@@ -1094,11 +1098,11 @@ bool bsh_reaches(BshNode node_4, float3 x_4, float3 r_8, float4 rl_3)
     const float _e50 = bsh_range_bound(node_4);
     float reach = (node_4.extent + (sqrt(s_c) * _e50));
     if ((d2_7 <= ((node_4.radius * node_4.radius) * s_c))) {
-        local_28 = (d2_7 <= (reach * reach));
+        local_30 = (d2_7 <= (reach * reach));
     } else {
-        local_28 = false;
+        local_30 = false;
     }
-    bool _e63 = local_28;
+    bool _e63 = local_30;
     return _e63;
 }
 
@@ -1112,7 +1116,7 @@ uint bsh_subtree(uint nodes_3, uint s_1, uint depth)
 {
     uint i_2 = (uint)0;
     uint level = 0u;
-    bool local_29 = (bool)0;
+    bool local_31 = (bool)0;
 
     const uint _e3 = bsh_first(nodes_3);
     i_2 = _e3;
@@ -1123,11 +1127,11 @@ uint bsh_subtree(uint nodes_3, uint s_1, uint depth)
         uint _e7 = level;
         if ((_e7 < depth)) {
             uint _e11 = i_2;
-            local_29 = (_e11 != BSH_NONE);
+            local_31 = (_e11 != BSH_NONE);
         } else {
-            local_29 = false;
+            local_31 = false;
         }
-        bool _e15 = local_29;
+        bool _e15 = local_31;
         if (_e15) {
         } else {
             break;
@@ -1208,8 +1212,8 @@ float next_threshold(float sum, inout uint h_1)
 Connection connect_record(GpuLight l_3, float3 x_5, float3 n_6, float3 ng_1, float r2_2, float rt2_2, float w_res, float u1_3, float u2_3, float eps, bool trace_1)
 {
     Connection c_8 = (Connection)0;
-    bool local_30 = (bool)0;
-    bool local_31 = (bool)0;
+    bool local_32 = (bool)0;
+    bool local_33 = (bool)0;
 
     c_8.e = (0.0).xxx;
     const float3 _e16 = light_point(l_3, u1_3, u2_3);
@@ -1222,16 +1226,16 @@ Connection connect_record(GpuLight l_3, float3 x_5, float3 n_6, float3 ng_1, flo
         if (trace_1) {
             float3 _e33 = c_8.y;
             const bool _e34 = occluded((x_5 + (ng_1 * eps)), _e33);
-            local_31 = _e34;
+            local_33 = _e34;
         } else {
-            local_31 = false;
+            local_33 = false;
         }
-        bool _e36 = local_31;
-        local_30 = _e36;
+        bool _e36 = local_33;
+        local_32 = _e36;
     } else {
-        local_30 = true;
+        local_32 = true;
     }
-    bool _e38 = local_30;
+    bool _e38 = local_32;
     if (_e38) {
         Connection _e39 = c_8;
         const Connection connection = _e39;
@@ -1377,9 +1381,9 @@ uint tile_subtree(uint s_3, TileWalk t_1, bool list, uint at, uint start_2, uint
 {
     uint p_6 = (uint)0;
     uint b_7 = (uint)0;
-    bool local_32 = (bool)0;
-    bool local_33 = (bool)0;
     bool local_34 = (bool)0;
+    bool local_35 = (bool)0;
+    bool local_36 = (bool)0;
 
     const uint _e8 = bsh_subtree(BSH, s_3, BSH_TILE_DEPTH);
     if ((_e8 == BSH_NONE)) {
@@ -1405,16 +1409,16 @@ uint tile_subtree(uint s_3, TileWalk t_1, bool list, uint at, uint start_2, uint
         if ((_e23 != end_1)) {
             if (!(!(list))) {
                 uint _e31 = p_6;
-                local_33 = (_e31 < to);
+                local_35 = (_e31 < to);
             } else {
-                local_33 = true;
+                local_35 = true;
             }
-            bool _e34 = local_33;
-            local_32 = _e34;
+            bool _e34 = local_35;
+            local_34 = _e34;
         } else {
-            local_32 = false;
+            local_34 = false;
         }
-        bool _e36 = local_32;
+        bool _e36 = local_34;
         if (_e36) {
         } else {
             break;
@@ -1422,11 +1426,11 @@ uint tile_subtree(uint s_3, TileWalk t_1, bool list, uint at, uint start_2, uint
         {
             if (list) {
                 uint _e39 = p_6;
-                local_34 = (_e39 >= start_2);
+                local_36 = (_e39 >= start_2);
             } else {
-                local_34 = false;
+                local_36 = false;
             }
-            bool _e42 = local_34;
+            bool _e42 = local_36;
             if (_e42) {
                 uint _e44 = p_6;
                 uint _e47 = b_7;
@@ -1451,18 +1455,18 @@ TileWalk ConstructTileWalk(float3 arg0, float3 arg1, float arg2, uint arg3) {
 
 TileWalk tile_walk_begin(uint li_4, float3 x_8, float w_9, bool has_2)
 {
-    bool local_35 = (bool)0;
+    bool local_37 = (bool)0;
     TileWalk t_2 = (TileWalk)0;
     uint s_4 = (uint)0;
     uint sum_1 = 0u;
     uint s_5 = 0u;
 
     if (has_2) {
-        local_35 = (w_9 >= 0.0);
+        local_37 = (w_9 >= 0.0);
     } else {
-        local_35 = false;
+        local_37 = false;
     }
-    bool _e12 = local_35;
+    bool _e12 = local_37;
     uint _e14; InterlockedMax(tile_scale, (_e12 ? asuint(w_9) : 0u), _e14);
     const WorkgroupBox _e15 = workgroup_box(li_4, x_8, has_2);
     GroupMemoryBarrierWithGroupSync();
@@ -1542,7 +1546,7 @@ uint tile_walk_fill(uint li_5, TileWalk t_3, uint start_3)
 {
     uint s_6 = (uint)0;
     uint past = (uint)0;
-    bool local_36 = (bool)0;
+    bool local_38 = (bool)0;
 
     uint to_1 = min(t_3.total, (start_3 + TILE_LIST));
     s_6 = li_5;
@@ -1573,11 +1577,11 @@ uint tile_walk_fill(uint li_5, TileWalk t_3, uint start_3)
             }
             if ((at_1 < to_1)) {
                 uint _e31 = past;
-                local_36 = (_e31 > start_3);
+                local_38 = (_e31 > start_3);
             } else {
-                local_36 = false;
+                local_38 = false;
             }
-            bool _e34 = local_36;
+            bool _e34 = local_38;
             if (_e34) {
                 uint _e35 = s_6;
                 const uint _e37 = tile_subtree(_e35, t_3, true, at_1, start_3, to_1);
@@ -1657,8 +1661,8 @@ ret_first_holders first_holders(uint2 keys_1[8], bool held_1[8])
     uint first[8] = (uint[8])0;
     uint k_4 = 0u;
     uint j_4 = (uint)0;
-    bool local_37 = (bool)0;
-    bool local_38 = (bool)0;
+    bool local_39 = (bool)0;
+    bool local_40 = (bool)0;
 
     uint2 loop_bound_9 = uint2(4294967295u, 4294967295u);
     bool loop_init_6 = true;
@@ -1695,11 +1699,11 @@ ret_first_holders first_holders(uint2 keys_1[8], bool held_1[8])
                 uint _e18 = k_4;
                 if ((_e17 < _e18)) {
                     uint _e22 = k_4;
-                    local_37 = held_1[min(uint(_e22), 7u)];
+                    local_39 = held_1[min(uint(_e22), 7u)];
                 } else {
-                    local_37 = false;
+                    local_39 = false;
                 }
-                bool _e25 = local_37;
+                bool _e25 = local_39;
                 if (_e25) {
                 } else {
                     break;
@@ -1709,11 +1713,11 @@ ret_first_holders first_holders(uint2 keys_1[8], bool held_1[8])
                     if (held_1[min(uint(_e26), 7u)]) {
                         uint _e30 = j_4;
                         uint _e32 = k_4;
-                        local_38 = all((keys_1[min(uint(_e30), 7u)] == keys_1[min(uint(_e32), 7u)]));
+                        local_40 = all((keys_1[min(uint(_e30), 7u)] == keys_1[min(uint(_e32), 7u)]));
                     } else {
-                        local_38 = false;
+                        local_40 = false;
                     }
-                    bool _e37 = local_38;
+                    bool _e37 = local_40;
                     if (_e37) {
                         uint _e38 = k_4;
                         uint _e40 = j_4;
@@ -1749,14 +1753,14 @@ uint next_index(uint i_5)
     return (((_e3 * _e6) * _e10) + i_5);
 }
 
-float reuse_target(uint q_5, GpuLight l_4, uint cells, float3 x_11, float3 n_10, Material m_3)
+float reuse_target(uint q_6, GpuLight l_4, uint cells, float3 x_11, float3 n_10, Material m_3)
 {
     const float _e9 = grid_coordinate(cells);
     const float _e12 = grid_coordinate((cells << 16u));
     const Connection _e15 = connect_record(l_4, x_11, n_10, n_10, UNRANGED, UNRANGED, 1.0, _e9, _e12, 0.0, false);
     const Shaded _e16 = shade_connection(_e15, x_11, n_10, m_3);
     const float3 _e17 = output_of(_e16);
-    const float _e19 = slot_target(_e17, q_5, K);
+    const float _e19 = slot_target(_e17, q_6, K);
     return _e19;
 }
 
@@ -1814,6 +1818,79 @@ bool sample_reaches(uint li_9, uint cells_3, float3 x_14, float3 n_13, float eps
     return any((_e6.e > (0.0).xxx));
 }
 
+bool history_vouches(uint li_10, uint cells_4, Domain d_6)
+{
+    uint _e5 = reuse.moved;
+    if ((_e5 == 0u)) {
+        return true;
+    }
+    uint _e11 = reuse.moved;
+    if ((_e11 == 2u)) {
+        return false;
+    }
+    float _e19 = view.shadow_offset;
+    float3 _e22 = reuse.prev_eye;
+    float3 a_10 = (d_6.x + (d_6.n * (_e19 * length((_e22 - d_6.x)))));
+    GpuLight _e31 = ConstructGpuLight(asfloat(lights_prev.Load3(li_10*64+0)), asuint(lights_prev.Load(li_10*64+12)), asfloat(lights_prev.Load3(li_10*64+16)), asfloat(lights_prev.Load(li_10*64+28)), asfloat(lights_prev.Load3(li_10*64+32)), asfloat(lights_prev.Load(li_10*64+44)), asfloat(lights_prev.Load3(li_10*64+48)), asuint(lights_prev.Load(li_10*64+60)));
+    const float _e32 = grid_coordinate(cells_4);
+    const float _e35 = grid_coordinate((cells_4 << 16u));
+    const float3 _e36 = light_point(_e31, _e32, _e35);
+    const float3 _e38 = ray_inverse3_((_e36 - a_10));
+    float3 _e41 = reuse.moved_min;
+    float3 _e44 = reuse.moved_max;
+    const float _e46 = ray_aabb(a_10, _e38, _e41, _e44, 1.0);
+    return (_e46 < 0.0);
+}
+
+bool reached_before(uint li_11, uint cells_5, Domain d_7, float3 x_15, float3 n_14)
+{
+    bool local_41 = (bool)0;
+    bool local_42 = (bool)0;
+    bool local_43 = (bool)0;
+    bool local_44 = (bool)0;
+
+    const bool _e5 = history_vouches(li_11, cells_5, d_7);
+    if (!(_e5)) {
+        return false;
+    }
+    GpuLight l_5 = ConstructGpuLight(asfloat(lights.Load3(li_11*64+0)), asuint(lights.Load(li_11*64+12)), asfloat(lights.Load3(li_11*64+16)), asfloat(lights.Load(li_11*64+28)), asfloat(lights.Load3(li_11*64+32)), asfloat(lights.Load(li_11*64+44)), asfloat(lights.Load3(li_11*64+48)), asuint(lights.Load(li_11*64+60)));
+    GpuLight lp = ConstructGpuLight(asfloat(lights_prev.Load3(li_11*64+0)), asuint(lights_prev.Load(li_11*64+12)), asfloat(lights_prev.Load3(li_11*64+16)), asfloat(lights_prev.Load(li_11*64+28)), asfloat(lights_prev.Load3(li_11*64+32)), asfloat(lights_prev.Load(li_11*64+44)), asfloat(lights_prev.Load3(li_11*64+48)), asuint(lights_prev.Load(li_11*64+60)));
+    if (all((d_7.x == x_15))) {
+        local_41 = all((d_7.n == n_14));
+    } else {
+        local_41 = false;
+    }
+    bool _e23 = local_41;
+    if (_e23) {
+        local_42 = all((l_5.p0_ == lp.p0_));
+    } else {
+        local_42 = false;
+    }
+    bool _e31 = local_42;
+    if (_e31) {
+        local_43 = all((l_5.p1_ == lp.p1_));
+    } else {
+        local_43 = false;
+    }
+    bool _e39 = local_43;
+    if (_e39) {
+        local_44 = all((l_5.p2_ == lp.p2_));
+    } else {
+        local_44 = false;
+    }
+    bool _e47 = local_44;
+    if (_e47) {
+        return true;
+    }
+    float _e51 = view.shadow_offset;
+    float3 _e54 = reuse.prev_eye;
+    float eps_5 = (_e51 * length((_e54 - d_7.x)));
+    const float _e65 = grid_coordinate(cells_5);
+    const float _e68 = grid_coordinate((cells_5 << 16u));
+    const Connection _e70 = connect_record(lp, d_7.x, d_7.n, d_7.n, UNRANGED, UNRANGED, 1.0, _e65, _e68, eps_5, true);
+    return any((_e70.e > (0.0).xxx));
+}
+
 Domain ConstructDomain(uint arg0, float3 arg1, float3 arg2, Material arg3, float arg4, bool arg5) {
     Domain ret = (Domain)0;
     ret.pixel = arg0;
@@ -1829,20 +1906,20 @@ int2 naga_f2i32(float2 value) {
     return int2(clamp(value, -2147483600.0, 2147483500.0));
 }
 
-uint reuse_domains(float3 x_15, float3 n_14, float d_6, uint h_2, inout Domain doms_1[3])
+uint reuse_domains(float3 x_16, float3 n_15, float d_8, uint h_2, inout Domain doms_1[3])
 {
     uint nd = 0u;
     uint hr = (uint)0;
     uint j_5 = 0u;
     float2 p_7 = (float2)0;
-    bool local_39 = (bool)0;
-    bool local_40 = (bool)0;
-    bool local_41 = (bool)0;
+    bool local_45 = (bool)0;
+    bool local_46 = (bool)0;
+    bool local_47 = (bool)0;
     bool seen_1 = (bool)0;
     uint k_5 = (uint)0;
-    bool local_42 = (bool)0;
-    bool local_43 = (bool)0;
-    bool local_44 = (bool)0;
+    bool local_48 = (bool)0;
+    bool local_49 = (bool)0;
+    bool local_50 = (bool)0;
 
     uint _e9 = reuse.has_history;
     if ((_e9 != 1u)) {
@@ -1854,7 +1931,7 @@ uint reuse_domains(float3 x_15, float3 n_14, float d_6, uint h_2, inout Domain d
     float4 _e24 = reuse.c3_;
     uint _e27 = view.width;
     uint _e31 = view.height;
-    const float3 _e33 = reproject(_e15, _e18, _e21, _e24, x_15, float(_e27), float(_e31));
+    const float3 _e33 = reproject(_e15, _e18, _e21, _e24, x_16, float(_e27), float(_e31));
     if ((_e33.z <= 0.0)) {
         return 0u;
     }
@@ -1894,32 +1971,32 @@ uint reuse_domains(float3 x_15, float3 n_14, float d_6, uint h_2, inout Domain d
                 p_7 = (_e55 + _e61);
             }
             float2 _e63 = p_7;
-            int2 t_8 = naga_f2i32(round(_e63));
-            if (!((t_8.x < int(0)))) {
-                local_39 = (t_8.y < int(0));
+            int2 t_9 = naga_f2i32(round(_e63));
+            if (!((t_9.x < int(0)))) {
+                local_45 = (t_9.y < int(0));
             } else {
-                local_39 = true;
+                local_45 = true;
             }
-            bool _e76 = local_39;
+            bool _e76 = local_45;
             if (!(_e76)) {
                 uint _e83 = view.width;
-                local_40 = (t_8.x >= int(_e83));
+                local_46 = (t_9.x >= int(_e83));
             } else {
-                local_40 = true;
+                local_46 = true;
             }
-            bool _e87 = local_40;
+            bool _e87 = local_46;
             if (!(_e87)) {
                 uint _e94 = view.height;
-                local_41 = (t_8.y >= int(_e94));
+                local_47 = (t_9.y >= int(_e94));
             } else {
-                local_41 = true;
+                local_47 = true;
             }
-            bool _e98 = local_41;
+            bool _e98 = local_47;
             if (_e98) {
                 continue;
             }
             uint _e103 = view.width;
-            uint pixel = ((uint(t_8.y) * _e103) + uint(t_8.x));
+            uint pixel = ((uint(t_9.y) * _e103) + uint(t_9.x));
             seen_1 = false;
             k_5 = 0u;
             uint2 loop_bound_12 = uint2(4294967295u, 4294967295u);
@@ -1943,11 +2020,11 @@ uint reuse_domains(float3 x_15, float3 n_14, float d_6, uint h_2, inout Domain d
                     if (!(_e115)) {
                         uint _e119 = k_5;
                         uint _e122 = doms_1[min(uint(_e119), 2u)].pixel;
-                        local_42 = (_e122 == pixel);
+                        local_48 = (_e122 == pixel);
                     } else {
-                        local_42 = true;
+                        local_48 = true;
                     }
-                    bool _e125 = local_42;
+                    bool _e125 = local_48;
                     seen_1 = _e125;
                 }
             }
@@ -1955,18 +2032,18 @@ uint reuse_domains(float3 x_15, float3 n_14, float d_6, uint h_2, inout Domain d
             ReuseSurface s_13 = ConstructReuseSurface(asfloat(reuse_pixels.Load3(0+_e130*144+0)), asfloat(reuse_pixels.Load(0+_e130*144+12)), asfloat(reuse_pixels.Load3(0+_e130*144+16)), asuint(reuse_pixels.Load(0+_e130*144+28)), asuint(reuse_pixels.Load(0+_e130*144+32)), asuint(reuse_pixels.Load(0+_e130*144+36)), asuint(reuse_pixels.Load(0+_e130*144+40)), asuint(reuse_pixels.Load(0+_e130*144+44)));
             bool _e134 = seen_1;
             if (!(_e134)) {
-                local_43 = !((s_13.m > 0.0));
+                local_49 = !((s_13.m > 0.0));
             } else {
-                local_43 = true;
+                local_49 = true;
             }
-            bool _e143 = local_43;
+            bool _e143 = local_49;
             if (!(_e143)) {
-                const bool _e151 = history_matches(n_14, s_13.n, x_15, dot(s_13.n, s_13.x), d_6);
-                local_44 = !(_e151);
+                const bool _e151 = history_matches(n_15, s_13.n, x_16, dot(s_13.n, s_13.x), d_8);
+                local_50 = !(_e151);
             } else {
-                local_44 = true;
+                local_50 = true;
             }
-            bool _e154 = local_44;
+            bool _e154 = local_50;
             if (_e154) {
                 continue;
             }
@@ -1992,20 +2069,24 @@ ReuseSlot ConstructReuseSlot(uint arg0, uint arg1, float arg2) {
     return ret;
 }
 
-ReuseSlot gris_combine(uint q_6, ReuseSlot cur, bool cur_ris, float cur_c, uint k0_, uint k1_, float3 x_16, float3 n_15, Material m_5, inout Domain doms_2[3], inout uint hs_1)
+ReuseSlot gris_combine(uint q_7, ReuseSlot cur, bool cur_ris, float cur_c, bool cur_reached, uint k0_, uint k1_, float3 x_17, float3 n_16, Material m_5, inout Domain doms_2[3], inout uint hs_1)
 {
     float w_sum_3 = 0.0;
     ReuseSlot out_ = ConstructReuseSlot(0u, 0u, 0.0);
     float out_target = 0.0;
     uint j_6 = (uint)0;
     ReuseSlot s_11 = (ReuseSlot)0;
-    bool local_45 = (bool)0;
+    bool local_51 = (bool)0;
+    bool local_52 = (bool)0;
+    bool local_53 = (bool)0;
     float w_in = (float)0;
-    bool local_46 = (bool)0;
+    bool local_54 = (bool)0;
     float own_1 = (float)0;
     float all_1 = (float)0;
     uint k_6 = (uint)0;
-    bool local_47 = (bool)0;
+    float t_4 = (float)0;
+    bool local_55 = (bool)0;
+    bool local_56 = (bool)0;
 
     j_6 = k0_;
     uint2 loop_bound_13 = uint2(4294967295u, 4294967295u);
@@ -2014,59 +2095,81 @@ ReuseSlot gris_combine(uint q_6, ReuseSlot cur, bool cur_ris, float cur_c, uint 
         if (all(loop_bound_13 == uint2(0u, 0u))) { break; }
         loop_bound_13 -= uint2(loop_bound_13.y == 0u, 1u);
         if (!loop_init_10) {
-            uint _e138 = j_6;
-            j_6 = (_e138 + 1u);
+            uint _e176 = j_6;
+            j_6 = (_e176 + 1u);
         }
         loop_init_10 = false;
-        uint _e21 = j_6;
-        if ((_e21 <= k1_)) {
+        uint _e22 = j_6;
+        if ((_e22 <= k1_)) {
         } else {
             break;
         }
         {
             s_11 = cur;
-            uint _e24 = j_6;
-            if ((_e24 > k0_)) {
-                uint _e27 = j_6;
-                uint _e32 = doms_2[min(uint((_e27 - 1u)), 2u)].pixel;
-                const uint _e33 = previous_index(_e32);
-                ReuseSlot _e37 = ConstructReuseSlot(asuint(reuse_pixels.Load(q_6*12+48+_e33*144+0)), asuint(reuse_pixels.Load(q_6*12+48+_e33*144+4)), asfloat(reuse_pixels.Load(q_6*12+48+_e33*144+8)));
-                s_11 = _e37;
+            uint _e25 = j_6;
+            if ((_e25 > k0_)) {
+                uint _e28 = j_6;
+                uint _e33 = doms_2[min(uint((_e28 - 1u)), 2u)].pixel;
+                const uint _e34 = previous_index(_e33);
+                ReuseSlot _e38 = ConstructReuseSlot(asuint(reuse_pixels.Load(q_7*12+48+_e34*144+0)), asuint(reuse_pixels.Load(q_7*12+48+_e34*144+4)), asfloat(reuse_pixels.Load(q_7*12+48+_e34*144+8)));
+                s_11 = _e38;
             }
-            float _e39 = s_11.w;
-            if (!(!((_e39 > 0.0)))) {
-                uint _e47 = s_11.light;
-                local_45 = (_e47 >= ((NagaBufferLength(lights) - 0) / 64));
+            float _e40 = s_11.w;
+            if (!(!((_e40 > 0.0)))) {
+                uint _e48 = s_11.light;
+                local_51 = (_e48 >= ((NagaBufferLength(lights) - 0) / 64));
             } else {
-                local_45 = true;
+                local_51 = true;
             }
-            bool _e52 = local_45;
-            if (_e52) {
+            bool _e53 = local_51;
+            if (_e53) {
                 continue;
             }
-            uint _e55 = s_11.light;
-            GpuLight _e57 = ConstructGpuLight(asfloat(lights.Load3(_e55*64+0)), asuint(lights.Load(_e55*64+12)), asfloat(lights.Load3(_e55*64+16)), asfloat(lights.Load(_e55*64+28)), asfloat(lights.Load3(_e55*64+32)), asfloat(lights.Load(_e55*64+44)), asfloat(lights.Load3(_e55*64+48)), asuint(lights.Load(_e55*64+60)));
-            uint _e59 = s_11.u;
-            const float _e60 = reuse_target(q_6, _e57, _e59, x_16, n_15, m_5);
-            if (!((_e60 > 0.0))) {
+            uint _e54 = j_6;
+            if ((_e54 > k0_)) {
+                uint _e60 = reuse.visibility;
+                local_52 = (_e60 == 1u);
+            } else {
+                local_52 = false;
+            }
+            bool _e64 = local_52;
+            if (_e64) {
+                uint _e68 = s_11.light;
+                uint _e70 = s_11.u;
+                uint _e71 = j_6;
+                Domain _e75 = doms_2[min(uint((_e71 - 1u)), 2u)];
+                const bool _e76 = history_vouches(_e68, _e70, _e75);
+                local_53 = !(_e76);
+            } else {
+                local_53 = false;
+            }
+            bool _e79 = local_53;
+            if (_e79) {
                 continue;
             }
-            float _e65 = s_11.w;
-            w_in = _e65;
-            uint _e67 = j_6;
-            if ((_e67 == k0_)) {
-                local_46 = cur_ris;
+            uint _e82 = s_11.light;
+            GpuLight _e84 = ConstructGpuLight(asfloat(lights.Load3(_e82*64+0)), asuint(lights.Load(_e82*64+12)), asfloat(lights.Load3(_e82*64+16)), asfloat(lights.Load(_e82*64+28)), asfloat(lights.Load3(_e82*64+32)), asfloat(lights.Load(_e82*64+44)), asfloat(lights.Load3(_e82*64+48)), asuint(lights.Load(_e82*64+60)));
+            uint _e86 = s_11.u;
+            const float _e87 = reuse_target(q_7, _e84, _e86, x_17, n_16, m_5);
+            if (!((_e87 > 0.0))) {
+                continue;
+            }
+            float _e92 = s_11.w;
+            w_in = _e92;
+            uint _e94 = j_6;
+            if ((_e94 == k0_)) {
+                local_54 = cur_ris;
             } else {
-                local_46 = false;
+                local_54 = false;
             }
-            bool _e72 = local_46;
-            if (_e72) {
-                float _e74 = s_11.w;
-                w_in = (_e74 / _e60);
+            bool _e99 = local_54;
+            if (_e99) {
+                float _e101 = s_11.w;
+                w_in = (_e101 / _e87);
             }
-            own_1 = (cur_c * _e60);
-            float _e78 = own_1;
-            all_1 = _e78;
+            own_1 = (cur_c * _e87);
+            float _e105 = own_1;
+            all_1 = _e105;
             k_6 = k0_;
             uint2 loop_bound_14 = uint2(4294967295u, 4294967295u);
             bool loop_init_11 = true;
@@ -2074,70 +2177,82 @@ ReuseSlot gris_combine(uint q_6, ReuseSlot cur, bool cur_ris, float cur_c, uint 
                 if (all(loop_bound_14 == uint2(0u, 0u))) { break; }
                 loop_bound_14 -= uint2(loop_bound_14.y == 0u, 1u);
                 if (!loop_init_11) {
-                    uint _e116 = k_6;
-                    k_6 = (_e116 + 1u);
+                    uint _e154 = k_6;
+                    k_6 = (_e154 + 1u);
                 }
                 loop_init_11 = false;
-                uint _e81 = k_6;
-                if ((_e81 < k1_)) {
+                uint _e108 = k_6;
+                if ((_e108 < k1_)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e83 = k_6;
-                    float _e86 = doms_2[min(uint(_e83), 2u)].c;
-                    uint _e89 = s_11.light;
-                    GpuLight _e91 = ConstructGpuLight(asfloat(lights_prev.Load3(_e89*64+0)), asuint(lights_prev.Load(_e89*64+12)), asfloat(lights_prev.Load3(_e89*64+16)), asfloat(lights_prev.Load(_e89*64+28)), asfloat(lights_prev.Load3(_e89*64+32)), asfloat(lights_prev.Load(_e89*64+44)), asfloat(lights_prev.Load3(_e89*64+48)), asuint(lights_prev.Load(_e89*64+60)));
-                    uint _e93 = s_11.u;
-                    uint _e94 = k_6;
-                    float3 _e97 = doms_2[min(uint(_e94), 2u)].x;
-                    uint _e98 = k_6;
-                    float3 _e101 = doms_2[min(uint(_e98), 2u)].n;
-                    uint _e102 = k_6;
-                    Material _e105 = doms_2[min(uint(_e102), 2u)].m;
-                    const float _e106 = reuse_target(q_6, _e91, _e93, _e97, _e101, _e105);
-                    float t_9 = (_e86 * _e106);
-                    float _e108 = all_1;
-                    all_1 = (_e108 + t_9);
-                    uint _e110 = k_6;
-                    uint _e113 = j_6;
-                    if (((_e110 + 1u) == _e113)) {
-                        own_1 = t_9;
+                    t_4 = 0.0;
+                    uint _e112 = j_6;
+                    if (!((_e112 > k0_))) {
+                        local_55 = cur_reached;
+                    } else {
+                        local_55 = true;
+                    }
+                    bool _e118 = local_55;
+                    if (_e118) {
+                        uint _e119 = k_6;
+                        float _e122 = doms_2[min(uint(_e119), 2u)].c;
+                        uint _e125 = s_11.light;
+                        GpuLight _e127 = ConstructGpuLight(asfloat(lights_prev.Load3(_e125*64+0)), asuint(lights_prev.Load(_e125*64+12)), asfloat(lights_prev.Load3(_e125*64+16)), asfloat(lights_prev.Load(_e125*64+28)), asfloat(lights_prev.Load3(_e125*64+32)), asfloat(lights_prev.Load(_e125*64+44)), asfloat(lights_prev.Load3(_e125*64+48)), asuint(lights_prev.Load(_e125*64+60)));
+                        uint _e129 = s_11.u;
+                        uint _e130 = k_6;
+                        float3 _e133 = doms_2[min(uint(_e130), 2u)].x;
+                        uint _e134 = k_6;
+                        float3 _e137 = doms_2[min(uint(_e134), 2u)].n;
+                        uint _e138 = k_6;
+                        Material _e141 = doms_2[min(uint(_e138), 2u)].m;
+                        const float _e142 = reuse_target(q_7, _e127, _e129, _e133, _e137, _e141);
+                        t_4 = (_e122 * _e142);
+                    }
+                    float _e144 = all_1;
+                    float _e145 = t_4;
+                    all_1 = (_e144 + _e145);
+                    uint _e147 = k_6;
+                    uint _e150 = j_6;
+                    if (((_e147 + 1u) == _e150)) {
+                        float _e152 = t_4;
+                        own_1 = _e152;
                     }
                 }
             }
-            float _e118 = own_1;
-            float _e119 = all_1;
-            float _e120 = w_in;
-            const float _e121 = gris_weight(_e118, _e119, _e60, _e120);
-            float _e122 = w_sum_3;
-            w_sum_3 = (_e122 + _e121);
-            uint _e124 = hs_1;
-            const uint _e125 = pcg_hash(_e124);
-            hs_1 = _e125;
-            if ((_e121 > 0.0)) {
-                float _e130 = w_sum_3;
-                uint _e131 = hs_1;
-                const float _e132 = xi_from_bits(_e131);
-                const bool _e133 = weighted_replace(_e121, _e130, _e132);
-                local_47 = _e133;
+            float _e156 = own_1;
+            float _e157 = all_1;
+            float _e158 = w_in;
+            const float _e159 = gris_weight(_e156, _e157, _e87, _e158);
+            float _e160 = w_sum_3;
+            w_sum_3 = (_e160 + _e159);
+            uint _e162 = hs_1;
+            const uint _e163 = pcg_hash(_e162);
+            hs_1 = _e163;
+            if ((_e159 > 0.0)) {
+                float _e168 = w_sum_3;
+                uint _e169 = hs_1;
+                const float _e170 = xi_from_bits(_e169);
+                const bool _e171 = weighted_replace(_e159, _e168, _e170);
+                local_56 = _e171;
             } else {
-                local_47 = false;
+                local_56 = false;
             }
-            bool _e135 = local_47;
-            if (_e135) {
-                ReuseSlot _e136 = s_11;
-                out_ = _e136;
-                out_target = _e60;
+            bool _e173 = local_56;
+            if (_e173) {
+                ReuseSlot _e174 = s_11;
+                out_ = _e174;
+                out_target = _e87;
             }
         }
     }
-    float _e141 = w_sum_3;
-    float _e142 = out_target;
-    const float _e143 = gris_contribution_weight(_e141, _e142);
-    out_.w = _e143;
-    ReuseSlot _e144 = out_;
-    const ReuseSlot reuseslot = _e144;
+    float _e179 = w_sum_3;
+    float _e180 = out_target;
+    const float _e181 = gris_contribution_weight(_e179, _e180);
+    out_.w = _e181;
+    ReuseSlot _e182 = out_;
+    const ReuseSlot reuseslot = _e182;
     return reuseslot;
 }
 
@@ -2188,11 +2303,15 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
     bool local_7 = (bool)0;
     bool fresh_visible[8] = (bool[8])0;
     uint q_2 = 0u;
-    ReuseSlot kept[8] = (ReuseSlot[8])0;
-    ReuseSlot fin[8] = (ReuseSlot[8])0;
+    bool fresh_before[8] = (bool[8])0;
     uint q_3 = 0u;
     bool local_8 = (bool)0;
     bool local_9 = (bool)0;
+    ReuseSlot kept[8] = (ReuseSlot[8])0;
+    ReuseSlot fin[8] = (ReuseSlot[8])0;
+    uint q_4 = 0u;
+    bool local_10 = (bool)0;
+    bool local_11 = (bool)0;
     uint2 keys[8] = (uint2[8])0;
     bool held[8] = (bool[8])0;
     uint k = 0u;
@@ -2203,13 +2322,13 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
     bool known = (bool)0;
     bool seen = (bool)0;
     uint j_2 = (uint)0;
-    bool local_10 = (bool)0;
-    bool local_11 = (bool)0;
-    Shaded shaded = (Shaded)0;
     bool local_12 = (bool)0;
-    uint j_3 = (uint)0;
-    uint q_4 = 0u;
     bool local_13 = (bool)0;
+    Shaded shaded = (Shaded)0;
+    bool local_14 = (bool)0;
+    uint j_3 = (uint)0;
+    uint q_5 = 0u;
+    bool local_15 = (bool)0;
 
     uint _e5 = view.width;
     if ((gid.x < _e5)) {
@@ -2230,7 +2349,7 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
     float3 _e33 = nn;
     float len2_ = dot(_e32, _e33);
     float4 _e35 = s;
-    float3 x_19 = _e35.xyz;
+    float3 x_20 = _e35.xyz;
     if (inside) {
         float _e40 = s.w;
         local_1 = (_e40 > 0.0);
@@ -2245,7 +2364,7 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
     }
     bool _e50 = local_2;
     if (_e50) {
-        local_3 = all((abs(x_19) <= (3.4028235e38).xxx));
+        local_3 = all((abs(x_20) <= (3.4028235e38).xxx));
     } else {
         local_3 = false;
     }
@@ -2260,7 +2379,7 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
         float4 mr = metal_rough_tex.Load(int3(texel_1, int(0)));
         float4 _e83 = base_color_tex.Load(int3(texel_1, int(0)));
         float3 _e90 = view.eye;
-        const Material _e93 = material_of(_e83.xyz, mr.z, mr.y, mr.w, normalize((_e90 - x_19)));
+        const Material _e93 = material_of(_e83.xyz, mr.z, mr.y, mr.w, normalize((_e90 - x_20)));
         m = _e93;
         float3 _e95 = m.base;
         float _e97 = m.metallic;
@@ -2279,7 +2398,7 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
     const float4 _e114 = range_lobe(_e113);
     float _e117 = view.shadow_offset;
     float3 _e120 = view.eye;
-    float eps_5 = (_e117 * length((_e120 - x_19)));
+    float eps_6 = (_e117 * length((_e120 - x_20)));
     uint _e126 = view.seed;
     uint _e130 = view.width;
     uint _e136 = view.frame;
@@ -2287,7 +2406,7 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
     const uint _e138 = pick_stream(_e137);
     h = _e138;
     hc = _e137;
-    const TileWalk _e160 = tile_walk_begin(lid, x_19, _e114.w, has_3);
+    const TileWalk _e160 = tile_walk_begin(lid, x_20, _e114.w, has_3);
     uint2 loop_bound_15 = uint2(4294967295u, 4294967295u);
     bool loop_init_12 = true;
     while(true) {
@@ -2328,7 +2447,7 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
                     if (!(!(has_3))) {
                         BshNode _e182 = ConstructBshNode(asfloat(bsh_nodes.Load3(b_10*32+0)), asfloat(bsh_nodes.Load(b_10*32+12)), asuint(bsh_nodes.Load(b_10*32+16)), asuint(bsh_nodes.Load(b_10*32+20)), asuint(bsh_nodes.Load(b_10*32+24)), asfloat(bsh_nodes.Load(b_10*32+28)));
                         float3 _e183 = r;
-                        const bool _e184 = bsh_reaches(_e182, x_19, _e183, _e114);
+                        const bool _e184 = bsh_reaches(_e182, x_20, _e183, _e114);
                         local_4 = !(_e184);
                     } else {
                         local_4 = true;
@@ -2337,7 +2456,7 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
                     if (_e187) {
                         continue;
                     }
-                    uint li_10 = asuint(bsh_nodes.Load(24+b_10*32));
+                    uint li_12 = asuint(bsh_nodes.Load(24+b_10*32));
                     uint _e192 = count;
                     count = (_e192 + 1u);
                     uint _e195 = h;
@@ -2356,7 +2475,7 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
                     float3 _e206 = n;
                     float3 _e207 = r;
                     Material _e208 = m;
-                    const Shaded _e213 = shade_pick_traced(li_10, x_19, _e206, _e207, _e114, _e208, 1.0, u_5.x, u_5.y, eps_5, false);
+                    const Shaded _e213 = shade_pick_traced(li_12, x_20, _e206, _e207, _e114, _e208, 1.0, u_5.x, u_5.y, eps_6, false);
                     const float3 _e214 = output_of(_e213);
                     const float _e215 = resample_target(_e214);
                     if ((_e215 > 0.0)) {
@@ -2394,7 +2513,7 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
                                 bool _e241 = local_5;
                                 if (_e241) {
                                     uint _e242 = q;
-                                    slot_light[min(uint(_e242), 7u)] = li_10;
+                                    slot_light[min(uint(_e242), 7u)] = li_12;
                                     uint _e244 = q;
                                     slot_u[min(uint(_e244), 7u)] = u_5;
                                     uint _e246 = q;
@@ -2427,7 +2546,7 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
     float3 _e287 = n;
     float3 _e290 = view.eye;
     const uint _e294 = reuse_stream(_e137, 0u);
-    const uint _e295 = reuse_domains(x_19, _e287, length((_e290 - x_19)), _e294, doms);
+    const uint _e295 = reuse_domains(x_20, _e287, length((_e290 - x_20)), _e294, doms);
     if ((_e295 > 0u)) {
         bool _e302 = doms[0].temporal;
         local_6 = _e302;
@@ -2504,7 +2623,7 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
                 uint _e371 = q_2;
                 uint _e373 = slot_cells[min(uint(_e371), 7u)];
                 float3 _e374 = n;
-                const bool _e375 = sample_reaches(_e370, _e373, x_19, _e374, eps_5);
+                const bool _e375 = sample_reaches(_e370, _e373, x_20, _e374, eps_6);
                 fresh_visible[min(uint(_e366), 7u)] = _e375;
             } else {
                 uint _e376 = q_2;
@@ -2523,59 +2642,52 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
         if (all(loop_bound_20 == uint2(0u, 0u))) { break; }
         loop_bound_20 -= uint2(loop_bound_20.y == 0u, 1u);
         if (!loop_init_17) {
-            uint _e457 = q_3;
-            q_3 = (_e457 + 1u);
+            uint _e436 = q_3;
+            q_3 = (_e436 + 1u);
         }
         loop_init_17 = false;
-        uint _e393 = q_3;
-        if ((_e393 < K)) {
+        uint _e392 = q_3;
+        if ((_e392 < K)) {
         } else {
             break;
         }
         {
-            uint _e396 = q_3;
-            float _e398 = slot_p[min(uint(_e396), 7u)];
-            if ((_e398 > 0.0)) {
-                uint _e405 = reuse.visibility;
-                if (!((_e405 == 0u))) {
-                    uint _e411 = q_3;
-                    bool _e413 = fresh_visible[min(uint(_e411), 7u)];
-                    local_9 = _e413;
-                } else {
-                    local_9 = true;
-                }
-                bool _e415 = local_9;
-                local_8 = _e415;
+            uint _e395 = q_3;
+            fresh_before[min(uint(_e395), 7u)] = true;
+            uint _e398 = q_3;
+            uint _e400 = q_3;
+            if ((_e355[min(uint(_e398), 7u)] == _e400)) {
+                uint _e404 = q_3;
+                bool _e406 = fresh_visible[min(uint(_e404), 7u)];
+                local_8 = _e406;
             } else {
                 local_8 = false;
             }
-            bool fresh = local_8;
-            uint _e418 = q_3;
-            uint _e420 = q_3;
-            uint _e421 = q_3;
-            uint _e423 = slot_light[min(uint(_e421), 7u)];
-            uint _e424 = q_3;
-            uint _e426 = slot_cells[min(uint(_e424), 7u)];
-            float3 _e427 = total;
-            uint _e428 = q_3;
-            const float _e430 = slot_target(_e427, _e428, K);
-            float3 _e437 = n;
-            Material _e438 = m;
-            const ReuseSlot _e439 = gris_combine(_e420, ConstructReuseSlot(_e423, _e426, (fresh ? _e430 : 0.0)), true, 1.0, 0u, first_1, x_19, _e437, _e438, doms, hs);
-            kept[min(uint(_e418), 7u)] = _e439;
-            uint _e440 = q_3;
-            uint _e442 = q_3;
-            ReuseSlot _e444 = kept[min(uint(_e442), 7u)];
-            fin[min(uint(_e440), 7u)] = _e444;
-            if ((_e295 > first_1)) {
-                uint _e446 = q_3;
-                uint _e448 = q_3;
-                uint _e449 = q_3;
-                ReuseSlot _e451 = kept[min(uint(_e449), 7u)];
-                float3 _e453 = n;
-                Material _e454 = m;
-                const ReuseSlot _e455 = gris_combine(_e448, _e451, false, confidence, first_1, _e295, x_19, _e453, _e454, doms, hs);
-                fin[min(uint(_e446), 7u)] = _e455;
+            bool _e408 = local_8;
+            if (_e408) {
+                local_9 = own_history;
+            } else {
+                local_9 = false;
+            }
+            bool _e412 = local_9;
+            if (_e412) {
+                uint _e413 = q_3;
+                uint _e415 = q_3;
+                uint _e417 = slot_light[min(uint(_e415), 7u)];
+                uint _e418 = q_3;
+                uint _e420 = slot_cells[min(uint(_e418), 7u)];
+                Domain _e422 = doms[0];
+                float3 _e423 = n;
+                const bool _e424 = reached_before(_e417, _e420, _e422, x_20, _e423);
+                fresh_before[min(uint(_e413), 7u)] = _e424;
+            } else {
+                uint _e425 = q_3;
+                if ((_e355[min(uint(_e425), 7u)] < K)) {
+                    uint _e429 = q_3;
+                    uint _e431 = q_3;
+                    bool _e434 = fresh_before[min(uint(_e355[min(uint(_e431), 7u)]), 7u)];
+                    fresh_before[min(uint(_e429), 7u)] = _e434;
+                }
             }
         }
     }
@@ -2585,249 +2697,313 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
         if (all(loop_bound_21 == uint2(0u, 0u))) { break; }
         loop_bound_21 -= uint2(loop_bound_21.y == 0u, 1u);
         if (!loop_init_18) {
-            uint _e486 = k;
-            k = (_e486 + 1u);
+            uint _e510 = q_4;
+            q_4 = (_e510 + 1u);
         }
         loop_init_18 = false;
-        uint _e463 = k;
-        if ((_e463 < K)) {
+        uint _e442 = q_4;
+        if ((_e442 < K)) {
         } else {
             break;
         }
         {
-            uint _e466 = k;
-            uint _e468 = k;
-            uint _e471 = fin[min(uint(_e468), 7u)].light;
-            uint _e472 = k;
-            uint _e475 = fin[min(uint(_e472), 7u)].u;
-            const uint2 _e476 = sample_key(_e471, _e475);
-            keys[min(uint(_e466), 7u)] = _e476;
-            uint _e477 = k;
-            uint _e479 = k;
-            float _e482 = fin[min(uint(_e479), 7u)].w;
-            held[min(uint(_e477), 7u)] = (_e482 > 0.0);
+            uint _e445 = q_4;
+            float _e447 = slot_p[min(uint(_e445), 7u)];
+            if ((_e447 > 0.0)) {
+                uint _e454 = reuse.visibility;
+                if (!((_e454 == 0u))) {
+                    uint _e460 = q_4;
+                    bool _e462 = fresh_visible[min(uint(_e460), 7u)];
+                    local_11 = _e462;
+                } else {
+                    local_11 = true;
+                }
+                bool _e464 = local_11;
+                local_10 = _e464;
+            } else {
+                local_10 = false;
+            }
+            bool fresh = local_10;
+            uint _e467 = q_4;
+            uint _e469 = q_4;
+            uint _e470 = q_4;
+            uint _e472 = slot_light[min(uint(_e470), 7u)];
+            uint _e473 = q_4;
+            uint _e475 = slot_cells[min(uint(_e473), 7u)];
+            float3 _e476 = total;
+            uint _e477 = q_4;
+            const float _e479 = slot_target(_e476, _e477, K);
+            uint _e485 = q_4;
+            bool _e487 = fresh_before[min(uint(_e485), 7u)];
+            float3 _e489 = n;
+            Material _e490 = m;
+            const ReuseSlot _e491 = gris_combine(_e469, ConstructReuseSlot(_e472, _e475, (fresh ? _e479 : 0.0)), true, 1.0, _e487, 0u, first_1, x_20, _e489, _e490, doms, hs);
+            kept[min(uint(_e467), 7u)] = _e491;
+            uint _e492 = q_4;
+            uint _e494 = q_4;
+            ReuseSlot _e496 = kept[min(uint(_e494), 7u)];
+            fin[min(uint(_e492), 7u)] = _e496;
+            if ((_e295 > first_1)) {
+                uint _e498 = q_4;
+                uint _e500 = q_4;
+                uint _e501 = q_4;
+                ReuseSlot _e503 = kept[min(uint(_e501), 7u)];
+                float3 _e506 = n;
+                Material _e507 = m;
+                const ReuseSlot _e508 = gris_combine(_e500, _e503, false, confidence, true, first_1, _e295, x_20, _e506, _e507, doms, hs);
+                fin[min(uint(_e498), 7u)] = _e508;
+            }
         }
     }
-    uint2 _e488[8] = keys;
-    bool _e489[8] = held;
-    const uint _e490[8] = first_holders(_e488, _e489);
     uint2 loop_bound_22 = uint2(4294967295u, 4294967295u);
     bool loop_init_19 = true;
     while(true) {
         if (all(loop_bound_22 == uint2(0u, 0u))) { break; }
         loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
         if (!loop_init_19) {
-            uint _e619 = k_1;
-            k_1 = (_e619 + 1u);
+            uint _e539 = k;
+            k = (_e539 + 1u);
         }
         loop_init_19 = false;
-        uint _e494 = k_1;
-        if ((_e494 < K)) {
+        uint _e516 = k;
+        if ((_e516 < K)) {
         } else {
             break;
         }
         {
-            uint _e497 = k_1;
-            uint _e499 = k_1;
-            if ((_e490[min(uint(_e497), 7u)] != _e499)) {
+            uint _e519 = k;
+            uint _e521 = k;
+            uint _e524 = fin[min(uint(_e521), 7u)].light;
+            uint _e525 = k;
+            uint _e528 = fin[min(uint(_e525), 7u)].u;
+            const uint2 _e529 = sample_key(_e524, _e528);
+            keys[min(uint(_e519), 7u)] = _e529;
+            uint _e530 = k;
+            uint _e532 = k;
+            float _e535 = fin[min(uint(_e532), 7u)].w;
+            held[min(uint(_e530), 7u)] = (_e535 > 0.0);
+        }
+    }
+    uint2 _e541[8] = keys;
+    bool _e542[8] = held;
+    const uint _e543[8] = first_holders(_e541, _e542);
+    uint2 loop_bound_23 = uint2(4294967295u, 4294967295u);
+    bool loop_init_20 = true;
+    while(true) {
+        if (all(loop_bound_23 == uint2(0u, 0u))) { break; }
+        loop_bound_23 -= uint2(loop_bound_23.y == 0u, 1u);
+        if (!loop_init_20) {
+            uint _e672 = k_1;
+            k_1 = (_e672 + 1u);
+        }
+        loop_init_20 = false;
+        uint _e547 = k_1;
+        if ((_e547 < K)) {
+        } else {
+            break;
+        }
+        {
+            uint _e550 = k_1;
+            uint _e552 = k_1;
+            if ((_e543[min(uint(_e550), 7u)] != _e552)) {
                 continue;
             }
             w = (0.0).xxx;
-            uint _e504 = k_1;
-            j_1 = _e504;
-            uint2 loop_bound_23 = uint2(4294967295u, 4294967295u);
-            bool loop_init_20 = true;
-            while(true) {
-                if (all(loop_bound_23 == uint2(0u, 0u))) { break; }
-                loop_bound_23 -= uint2(loop_bound_23.y == 0u, 1u);
-                if (!loop_init_20) {
-                    uint _e524 = j_1;
-                    j_1 = (_e524 + 1u);
-                }
-                loop_init_20 = false;
-                uint _e506 = j_1;
-                if ((_e506 < K)) {
-                } else {
-                    break;
-                }
-                {
-                    uint _e509 = j_1;
-                    uint _e511 = k_1;
-                    if ((_e490[min(uint(_e509), 7u)] == _e511)) {
-                        float3 _e513 = w;
-                        uint _e514 = j_1;
-                        float _e517 = fin[min(uint(_e514), 7u)].w;
-                        uint _e518 = j_1;
-                        const float3 _e520 = slot_share(_e518, K);
-                        w = (_e513 + (_e517 * _e520));
-                    }
-                }
-            }
-            known = false;
-            seen = false;
-            j_2 = 0u;
+            uint _e557 = k_1;
+            j_1 = _e557;
             uint2 loop_bound_24 = uint2(4294967295u, 4294967295u);
             bool loop_init_21 = true;
             while(true) {
                 if (all(loop_bound_24 == uint2(0u, 0u))) { break; }
                 loop_bound_24 -= uint2(loop_bound_24.y == 0u, 1u);
                 if (!loop_init_21) {
-                    uint _e561 = j_2;
-                    j_2 = (_e561 + 1u);
+                    uint _e577 = j_1;
+                    j_1 = (_e577 + 1u);
                 }
                 loop_init_21 = false;
-                uint _e532 = j_2;
-                if ((_e532 < K)) {
-                    bool _e537 = known;
-                    local_10 = !(_e537);
-                } else {
-                    local_10 = false;
-                }
-                bool _e540 = local_10;
-                if (_e540) {
+                uint _e559 = j_1;
+                if ((_e559 < K)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e541 = j_2;
-                    bool _e543 = fresh_held[min(uint(_e541), 7u)];
-                    if (_e543) {
-                        uint _e546 = j_2;
-                        uint2 _e548 = fresh_keys[min(uint(_e546), 7u)];
-                        uint _e549 = k_1;
-                        uint2 _e551 = keys[min(uint(_e549), 7u)];
-                        local_11 = all((_e548 == _e551));
-                    } else {
-                        local_11 = false;
-                    }
-                    bool _e555 = local_11;
-                    if (_e555) {
-                        known = true;
-                        uint _e557 = j_2;
-                        bool _e559 = fresh_visible[min(uint(_e557), 7u)];
-                        seen = _e559;
+                    uint _e562 = j_1;
+                    uint _e564 = k_1;
+                    if ((_e543[min(uint(_e562), 7u)] == _e564)) {
+                        float3 _e566 = w;
+                        uint _e567 = j_1;
+                        float _e570 = fin[min(uint(_e567), 7u)].w;
+                        uint _e571 = j_1;
+                        const float3 _e573 = slot_share(_e571, K);
+                        w = (_e566 + (_e570 * _e573));
                     }
                 }
             }
-            shaded = ConstructShaded((0.0).xxx, (0.0).xxx, (0.0).xxx);
-            bool _e571 = known;
-            if (!(!(_e571))) {
-                bool _e576 = seen;
-                local_12 = _e576;
-            } else {
-                local_12 = true;
-            }
-            bool _e578 = local_12;
-            if (_e578) {
-                uint _e579 = k_1;
-                uint _e582 = fin[min(uint(_e579), 7u)].light;
-                uint _e583 = k_1;
-                uint _e586 = fin[min(uint(_e583), 7u)].u;
-                float3 _e587 = n;
-                bool _e588 = known;
-                const Connection _e590 = sample_connection(_e582, _e586, x_19, _e587, eps_5, !(_e588));
-                float3 _e591 = n;
-                Material _e592 = m;
-                const Shaded _e593 = shade_connection(_e590, x_19, _e591, _e592);
-                shaded = _e593;
-            }
-            Shaded _e594 = t;
-            Shaded _e595 = shaded;
-            float3 _e596 = w;
-            const Shaded _e597 = scaled(_e595, _e596);
-            const Shaded _e598 = add(_e594, _e597);
-            t = _e598;
-            uint _e599 = k_1;
-            j_3 = _e599;
+            known = false;
+            seen = false;
+            j_2 = 0u;
             uint2 loop_bound_25 = uint2(4294967295u, 4294967295u);
             bool loop_init_22 = true;
             while(true) {
                 if (all(loop_bound_25 == uint2(0u, 0u))) { break; }
                 loop_bound_25 -= uint2(loop_bound_25.y == 0u, 1u);
                 if (!loop_init_22) {
-                    uint _e616 = j_3;
-                    j_3 = (_e616 + 1u);
+                    uint _e614 = j_2;
+                    j_2 = (_e614 + 1u);
                 }
                 loop_init_22 = false;
-                uint _e601 = j_3;
-                if ((_e601 < K)) {
+                uint _e585 = j_2;
+                if ((_e585 < K)) {
+                    bool _e590 = known;
+                    local_12 = !(_e590);
+                } else {
+                    local_12 = false;
+                }
+                bool _e593 = local_12;
+                if (_e593) {
                 } else {
                     break;
                 }
                 {
-                    uint _e604 = j_3;
-                    uint _e606 = k_1;
-                    if ((_e490[min(uint(_e604), 7u)] == _e606)) {
-                        uint _e608 = j_3;
-                        Shaded _e610 = shaded;
-                        const float3 _e611 = output_of(_e610);
-                        const float _e612 = resample_target(_e611);
-                        visible[min(uint(_e608), 7u)] = (_e612 > 0.0);
+                    uint _e594 = j_2;
+                    bool _e596 = fresh_held[min(uint(_e594), 7u)];
+                    if (_e596) {
+                        uint _e599 = j_2;
+                        uint2 _e601 = fresh_keys[min(uint(_e599), 7u)];
+                        uint _e602 = k_1;
+                        uint2 _e604 = keys[min(uint(_e602), 7u)];
+                        local_13 = all((_e601 == _e604));
+                    } else {
+                        local_13 = false;
+                    }
+                    bool _e608 = local_13;
+                    if (_e608) {
+                        known = true;
+                        uint _e610 = j_2;
+                        bool _e612 = fresh_visible[min(uint(_e610), 7u)];
+                        seen = _e612;
+                    }
+                }
+            }
+            shaded = ConstructShaded((0.0).xxx, (0.0).xxx, (0.0).xxx);
+            bool _e624 = known;
+            if (!(!(_e624))) {
+                bool _e629 = seen;
+                local_14 = _e629;
+            } else {
+                local_14 = true;
+            }
+            bool _e631 = local_14;
+            if (_e631) {
+                uint _e632 = k_1;
+                uint _e635 = fin[min(uint(_e632), 7u)].light;
+                uint _e636 = k_1;
+                uint _e639 = fin[min(uint(_e636), 7u)].u;
+                float3 _e640 = n;
+                bool _e641 = known;
+                const Connection _e643 = sample_connection(_e635, _e639, x_20, _e640, eps_6, !(_e641));
+                float3 _e644 = n;
+                Material _e645 = m;
+                const Shaded _e646 = shade_connection(_e643, x_20, _e644, _e645);
+                shaded = _e646;
+            }
+            Shaded _e647 = t;
+            Shaded _e648 = shaded;
+            float3 _e649 = w;
+            const Shaded _e650 = scaled(_e648, _e649);
+            const Shaded _e651 = add(_e647, _e650);
+            t = _e651;
+            uint _e652 = k_1;
+            j_3 = _e652;
+            uint2 loop_bound_26 = uint2(4294967295u, 4294967295u);
+            bool loop_init_23 = true;
+            while(true) {
+                if (all(loop_bound_26 == uint2(0u, 0u))) { break; }
+                loop_bound_26 -= uint2(loop_bound_26.y == 0u, 1u);
+                if (!loop_init_23) {
+                    uint _e669 = j_3;
+                    j_3 = (_e669 + 1u);
+                }
+                loop_init_23 = false;
+                uint _e654 = j_3;
+                if ((_e654 < K)) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e657 = j_3;
+                    uint _e659 = k_1;
+                    if ((_e543[min(uint(_e657), 7u)] == _e659)) {
+                        uint _e661 = j_3;
+                        Shaded _e663 = shaded;
+                        const float3 _e664 = output_of(_e663);
+                        const float _e665 = resample_target(_e664);
+                        visible[min(uint(_e661), 7u)] = (_e665 > 0.0);
                     }
                 }
             }
         }
     }
-    uint2 loop_bound_26 = uint2(4294967295u, 4294967295u);
-    bool loop_init_23 = true;
+    uint2 loop_bound_27 = uint2(4294967295u, 4294967295u);
+    bool loop_init_24 = true;
     while(true) {
-        if (all(loop_bound_26 == uint2(0u, 0u))) { break; }
-        loop_bound_26 -= uint2(loop_bound_26.y == 0u, 1u);
-        if (!loop_init_23) {
-            uint _e661 = q_4;
-            q_4 = (_e661 + 1u);
+        if (all(loop_bound_27 == uint2(0u, 0u))) { break; }
+        loop_bound_27 -= uint2(loop_bound_27.y == 0u, 1u);
+        if (!loop_init_24) {
+            uint _e714 = q_5;
+            q_5 = (_e714 + 1u);
         }
-        loop_init_23 = false;
-        uint _e623 = q_4;
-        if ((_e623 < K)) {
+        loop_init_24 = false;
+        uint _e676 = q_5;
+        if ((_e676 < K)) {
         } else {
             break;
         }
         {
-            uint _e628 = reuse.visibility;
-            if (!((_e628 == 0u))) {
-                uint _e634 = q_4;
-                bool _e636 = visible[min(uint(_e634), 7u)];
-                local_13 = _e636;
+            uint _e681 = reuse.visibility;
+            if (!((_e681 == 0u))) {
+                uint _e687 = q_5;
+                bool _e689 = visible[min(uint(_e687), 7u)];
+                local_15 = _e689;
             } else {
-                local_13 = true;
+                local_15 = true;
             }
-            bool keep = local_13;
-            const uint _e640 = next_index(pixel_1);
-            uint _e643 = q_4;
-            uint _e645 = q_4;
-            uint _e648 = kept[min(uint(_e645), 7u)].light;
-            uint _e649 = q_4;
-            uint _e652 = kept[min(uint(_e649), 7u)].u;
-            uint _e653 = q_4;
-            float _e656 = kept[min(uint(_e653), 7u)].w;
+            bool keep = local_15;
+            const uint _e693 = next_index(pixel_1);
+            uint _e696 = q_5;
+            uint _e698 = q_5;
+            uint _e701 = kept[min(uint(_e698), 7u)].light;
+            uint _e702 = q_5;
+            uint _e705 = kept[min(uint(_e702), 7u)].u;
+            uint _e706 = q_5;
+            float _e709 = kept[min(uint(_e706), 7u)].w;
             {
-                ReuseSlot _value4 = ConstructReuseSlot(_e648, _e652, (keep ? _e656 : 0.0));
-                reuse_pixels.Store(_e643*12+48+_e640*144+0, asuint(_value4.light));
-                reuse_pixels.Store(_e643*12+48+_e640*144+4, asuint(_value4.u));
-                reuse_pixels.Store(_e643*12+48+_e640*144+8, asuint(_value4.w));
+                ReuseSlot _value4 = ConstructReuseSlot(_e701, _e705, (keep ? _e709 : 0.0));
+                reuse_pixels.Store(_e696*12+48+_e693*144+0, asuint(_value4.light));
+                reuse_pixels.Store(_e696*12+48+_e693*144+4, asuint(_value4.u));
+                reuse_pixels.Store(_e696*12+48+_e693*144+8, asuint(_value4.w));
             }
         }
     }
-    const uint _e664 = next_index(pixel_1);
-    float3 _e667 = n;
-    Material _e668 = m;
-    float _e671 = reuse.max_confidence;
-    const ReuseSurface _e673 = reuse_surface(x_19, _e667, _e668, min(confidence, _e671));
+    const uint _e717 = next_index(pixel_1);
+    float3 _e720 = n;
+    Material _e721 = m;
+    float _e724 = reuse.max_confidence;
+    const ReuseSurface _e726 = reuse_surface(x_20, _e720, _e721, min(confidence, _e724));
     {
-        ReuseSurface _value2 = _e673;
-        reuse_pixels.Store3(0+_e664*144+0, asuint(_value2.x));
-        reuse_pixels.Store(0+_e664*144+12, asuint(_value2.m));
-        reuse_pixels.Store3(0+_e664*144+16, asuint(_value2.n));
-        reuse_pixels.Store(0+_e664*144+28, asuint(_value2.base));
-        reuse_pixels.Store(0+_e664*144+32, asuint(_value2.rough));
-        reuse_pixels.Store(0+_e664*144+36, asuint(_value2.pad0_));
-        reuse_pixels.Store(0+_e664*144+40, asuint(_value2.pad1_));
-        reuse_pixels.Store(0+_e664*144+44, asuint(_value2.pad2_));
+        ReuseSurface _value2 = _e726;
+        reuse_pixels.Store3(0+_e717*144+0, asuint(_value2.x));
+        reuse_pixels.Store(0+_e717*144+12, asuint(_value2.m));
+        reuse_pixels.Store3(0+_e717*144+16, asuint(_value2.n));
+        reuse_pixels.Store(0+_e717*144+28, asuint(_value2.base));
+        reuse_pixels.Store(0+_e717*144+32, asuint(_value2.rough));
+        reuse_pixels.Store(0+_e717*144+36, asuint(_value2.pad0_));
+        reuse_pixels.Store(0+_e717*144+40, asuint(_value2.pad1_));
+        reuse_pixels.Store(0+_e717*144+44, asuint(_value2.pad2_));
     }
-    float3 _e676 = t.diffuse;
-    float3 _e678 = t.specular;
-    uint _e680 = count;
-    out_tex[texel_1] = float4((_e676 + _e678), float(_e680));
+    float3 _e729 = t.diffuse;
+    float3 _e731 = t.specular;
+    uint _e733 = count;
+    out_tex[texel_1] = float4((_e729 + _e731), float(_e733));
     return;
 }

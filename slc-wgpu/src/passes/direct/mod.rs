@@ -195,7 +195,7 @@ use super::SurfaceDesc;
 use super::{Culling, ViewCache, check_size, kernel_form, output_format};
 use crate::kernel::{KernelLayout, UniformSlots, check_kernels, zeroed};
 use crate::lights::{GpuLightSet, WG, check_light_limits};
-use crate::occluders::{GpuOccluders, check_accel_limits, check_limits};
+use crate::occluders::{GpuOccluders, Moved, check_accel_limits, check_limits};
 use crate::record::Uploads;
 use crate::{GpuContext, GpuError};
 use counting::Counting;
@@ -247,7 +247,7 @@ pub struct DirectPass {
 /// The reuse's state: its uniforms, the reservoir buffer (two halves of
 /// one entry per pixel: this record writes half `parity` and reads the
 /// other), the previous record's lights, and its view-projection and eye
-/// (none: no history).
+/// (none: no history), and where the occluders changed since it.
 struct Reuse {
     settings: DirectReuse,
     params: UniformSlots,
@@ -255,6 +255,7 @@ struct Reuse {
     lights_prev: wgpu::Buffer,
     parity: usize,
     previous: Option<(Mat4, Vec3)>,
+    moved: Moved,
 }
 
 impl DirectPass {
@@ -381,6 +382,7 @@ impl DirectPass {
             lights_prev: previous_lights(gpu, &set),
             parity: 0,
             previous: None,
+            moved: Moved::Nowhere,
         });
         let (ranges_group, lights_group) = groups(
             gpu,
@@ -517,6 +519,7 @@ impl DirectPass {
                 self.swap_kernel(self.features)?;
                 self.occluders = None;
                 self.remake_groups();
+                self.occluders_moved(Moved::Everywhere);
             }
             return Ok(());
         };
@@ -534,9 +537,11 @@ impl DirectPass {
         let shadowed = Features { shadows: true, ray_query, ..self.features };
         if let Some((o, offset)) = self.occluders.as_mut()
             && o.accel.is_some() == ray_query
-            && o.rewrite(&self.gpu, sh.occluders)
+            && let Some(moved) = o.rewrite(&self.gpu, sh.occluders)
         {
+            let moved = if *offset == sh.normal_offset { moved } else { Moved::Everywhere };
             *offset = sh.normal_offset;
+            self.occluders_moved(moved);
             return Ok(());
         }
         check_kernels(&self.gpu, &[(Kernel::DirectLight, &shadowed, 0)])?;
@@ -553,7 +558,16 @@ impl DirectPass {
         };
         self.occluders = Some((gpu_occ, sh.normal_offset));
         self.remake_groups();
+        self.occluders_moved(Moved::Everywhere);
         self.gpu.take_errors()
+    }
+
+    /// Notes for the reuse's next record that the occluders changed in
+    /// `m` since the last one.
+    fn occluders_moved(&mut self, m: Moved) {
+        if let Some(r) = self.reuse.as_mut() {
+            r.moved = r.moved.join(m);
+        }
     }
 
     /// How the pass casts its shadow rays, or `None` when it is
@@ -629,6 +643,7 @@ impl DirectPass {
             );
             r.previous = view_projection.map(|m| (m, inputs.gbuffer.eye));
             r.parity ^= 1;
+            r.moved = Moved::Nowhere;
         }
         Ok(())
     }
@@ -673,6 +688,16 @@ impl DirectPass {
         uploads.push(&self.view, &view);
         if let Some(r) = &self.reuse {
             let (m, prev_eye) = r.previous.unwrap_or((Mat4::ZERO, Vec3::ZERO));
+            // The box grown by a little more than a float's rounding at
+            // its size, so a ray that grazes a moved triangle meets it.
+            let (moved, moved_min, moved_max) = match r.moved {
+                Moved::Nowhere => (0, Vec3::ZERO, Vec3::ZERO),
+                Moved::Inside(a, b) => {
+                    let pad = Vec3::splat(1e-4 * a.abs().max(b.abs()).max_element() + 1e-6);
+                    (1, a - pad, b + pad)
+                }
+                Moved::Everywhere => (2, Vec3::ZERO, Vec3::ZERO),
+            };
             let params = ReuseParams {
                 c0: m.x_axis,
                 c1: m.y_axis,
@@ -684,6 +709,10 @@ impl DirectPass {
                 radius: r.settings.radius,
                 visibility: r.settings.visibility as u32,
                 parity: r.parity as u32,
+                moved_min,
+                moved: moved as u32,
+                moved_max,
+                pad: 0,
             };
             uploads.push(&r.params, &params);
         }
