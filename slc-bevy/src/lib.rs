@@ -169,7 +169,8 @@ pub struct SlcCamera {
     /// (the camera is skipped with the reason).
     pub culling: Culling,
     /// Picks per pixel among the lights in range (`1..=64`): at most this
-    /// many shadow rays (twice as many with [`Self::visibility_reuse`]).
+    /// many shadow rays (two or three times as many with
+    /// [`Self::visibility_reuse`]).
     pub picks: u32,
     /// Draw the picks in proportion to each light's unshadowed light at
     /// the pixel, every light in range evaluated without a ray
@@ -191,10 +192,12 @@ pub struct SlcCamera {
     /// still view's frames get far cleaner (the engine-pass scene of
     /// slc's tests: 4 picks a quarter of 8 weighted picks' error after 32
     /// frames at the same rays, where plain reuse barely helps). Up to two
-    /// rays a pick (its own and, where the last frame's wins, that one's).
-    /// Unbiased while the camera, the lights and the meshes stand still;
-    /// where they move, shadow edges come out slightly dark for a few
-    /// frames (ReSTIR's biased variant). Off by default.
+    /// rays a pick (its own and, where the last frame's wins, that one's),
+    /// and one more for a pick that reaches the pixel where the camera or
+    /// its light moved (did it reach the last frame's surface?). Unbiased
+    /// where the camera, the lights and the meshes move too: a moving
+    /// mesh costs the pixels whose rays cross the box it moved in their
+    /// history, not their mean. Off by default until a GPU has timed it.
     pub visibility_reuse: bool,
     /// Seed of the random ranges and picks (the frame number varies them
     /// every frame).

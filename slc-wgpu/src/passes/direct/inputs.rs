@@ -154,11 +154,19 @@ pub struct DirectReuse {
     /// that reach its pixel, and its weight averages over the records it
     /// stands for how much of the light arrives. A final pick that is one
     /// of the record's own is not traced again, so a slot casts one ray
-    /// where its own pick wins and two where the history's does. Unbiased
-    /// while the camera and the occluders stand still (the reused pixel is
-    /// this one, its occluded picks carry no light here); where they move,
-    /// the reprojected pixel's surface point differs slightly and shadow
-    /// edges come out a little dark (ReSTIR's biased variant).
+    /// where its own pick wins and two where the history's does.
+    ///
+    /// Unbiased where things move too (ReSTIR DI's unbiased form): a
+    /// record's pick shares its weight with the history only where it
+    /// reached the reprojected surface in the previous record, so where
+    /// the camera or the pick's light moved, a pick that reaches the pixel
+    /// casts one more ray, from the previous surface to where its light
+    /// stood (8 picks in the shadow test, every light moving: 15.9 rays per
+    /// pixel against 10.0 still). Where occluders moved
+    /// ([`DirectPass::set_shadows`] with moved instances), the history has
+    /// no share of a pick whose previous ray crosses the box they moved in:
+    /// the pixels behind a moving object lose some history, not their
+    /// mean.
     pub visibility: bool,
 }
 

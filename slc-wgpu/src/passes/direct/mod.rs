@@ -130,7 +130,8 @@
 //!   each record's own picks before they meet the history: 4 picks reach
 //!   0.23 of 8 weighted picks' relative RMSE there after 32 still frames,
 //!   at no more rays (7.2 per pixel against 7.4), and the shadow test's 8
-//!   picks 0.032 after 8 (biased where things move: see its docs).
+//!   picks 0.032 after 8 (unbiased where things move too, at one more
+//!   ray per pick where the camera or its light moved: see its docs).
 //! - `Uniform { k }`: `k` picks uniform among the `n` candidates (Algorithm
 //!   R), weighted `n/k` and `1/p`: the paper's reservoir.
 //! - `All`: every candidate, weighted `1/p` (exact given ξ): for small
