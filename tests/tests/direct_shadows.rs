@@ -28,7 +28,8 @@
 //!   back; a frame of 8 weighted (or 4 resampled) picks equals the
 //!   software walk's frame (the same picks) but at edge-grazing rays, and
 //!   so do four frames of visibility reuse, whose history keeps what the
-//!   rays saw; the counting variant counts what the software pass does.
+//!   rays saw, the lights moving in the last two; the counting variant
+//!   counts what the software pass does.
 //!   On a device without them the choice is a typed error that changes
 //!   nothing.
 
@@ -781,13 +782,18 @@ fn ray_query_picks_equal_the_software_walk() {
         assert!(lit > 1000, "{selection:?}: only {lit} lit pixels");
     }
     // Visibility reuse keeps what the rays saw: four frames of each kind of
-    // ray from the same start give the same images, frame after frame.
+    // ray from the same start give the same images, frame after frame, the
+    // lights moving from the second on (so the rays that ask whether a pick
+    // reached the last frame's surface are cast too).
     let reuse = Some(DirectReuse { visibility: true, ..DirectReuse::default() });
     let frames = |rays: ShadowRays| -> Vec<Vec<[f32; 4]>> {
         let mut pass = reusing_pass(gpu, &s, DirectSelection::Resampled { k: 8 }, reuse);
         pass.set_shadows(Some(Shadows { rays, ..Shadows::new(&occ) })).unwrap();
         (0..4)
             .map(|frame| {
+                if frame > 1 {
+                    pass.update_lights(&moved(&s, frame)).unwrap();
+                }
                 seeded_frame(gpu, &s, &mut pass, DirectSettings { culling, seed: 9, frame })
             })
             .collect()
