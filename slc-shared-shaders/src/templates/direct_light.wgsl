@@ -266,7 +266,8 @@ fn history_vouches(li: u32, cells: u32, d: Domain) -> bool {
 /// reuse's history holds only picks that reached its pixel, so the pick's
 /// share against that history counts the history's target only where it
 /// did (ReSTIR DI's unbiased visibility reuse). Known without a ray where
-/// the surface is this one and the light has not moved.
+/// the surface is this one and the light has not moved, or where the
+/// history holds the same sample (it kept only picks that reached it).
 fn reached_before(li: u32, cells: u32, d: Domain, x: vec3f, n: vec3f) -> bool {
     if !history_vouches(li, cells, d) {
         return false;
@@ -275,6 +276,13 @@ fn reached_before(li: u32, cells: u32, d: Domain, x: vec3f, n: vec3f) -> bool {
     let lp = lights_prev[li];
     if all(d.x == x) && all(d.n == n) && all(l.p0 == lp.p0) && all(l.p1 == lp.p1) && all(l.p2 == lp.p2) {
         return true;
+    }
+    let key = sample_key(li, cells);
+    for (var q = 0u; q < K; q++) {
+        let h = reuse_pixels[previous_index(d.pixel)].slots[q];
+        if h.w > 0.0 && h.light < arrayLength(&lights) && all(sample_key(h.light, h.u) == key) {
+            return true;
+        }
     }
     let eps = view.shadow_offset * length(reuse.prev_eye - d.x);
     let c = connect_record(lp, d.x, d.n, d.n, UNRANGED, UNRANGED, 1.0, grid_coordinate(cells), grid_coordinate(cells << 16u), eps, true);

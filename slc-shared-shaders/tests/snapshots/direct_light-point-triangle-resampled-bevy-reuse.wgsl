@@ -325,8 +325,8 @@ fn sphere_contains_point(c: vec3<f32>, r_1: f32, x_1: vec3<f32>) -> bool {
 }
 
 fn sphere_overlaps_aabb(c_1: vec3<f32>, r_2: f32, bmin: vec3<f32>, bmax: vec3<f32>) -> bool {
-    let q_8 = clamp(c_1, bmin, bmax);
-    let v_6 = (q_8 - c_1);
+    let q_9 = clamp(c_1, bmin, bmax);
+    let v_6 = (q_9 - c_1);
     return (dot(v_6, v_6) <= (r_2 * r_2));
 }
 
@@ -751,8 +751,8 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_4: vec3<f32>, 
     if _e28 {
         return -1f;
     }
-    let q_9 = cross(s_12, e1_);
-    let v_9 = (dot(d_3, q_9) * inv);
+    let q_10 = cross(s_12, e1_);
+    let v_9 = (dot(d_3, q_10) * inv);
     if !((v_9 < 0f)) {
         local_26 = ((u_4 + v_9) > 1f);
     } else {
@@ -762,7 +762,7 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_4: vec3<f32>, 
     if _e42 {
         return -1f;
     }
-    let t_7 = (dot(e2_, q_9) * inv);
+    let t_7 = (dot(e2_, q_10) * inv);
     if (t_7 > t_min) {
         local_27 = (t_7 < t_max_1);
     } else {
@@ -1540,6 +1540,9 @@ fn reached_before(li_11: u32, cells_5: u32, d_7: Domain, x_15: vec3<f32>, n_14: 
     var local_42: bool;
     var local_43: bool;
     var local_44: bool;
+    var q_7: u32 = 0u;
+    var local_45: bool;
+    var local_46: bool;
 
     let _e5 = history_vouches(li_11, cells_5, d_7);
     if !(_e5) {
@@ -1574,13 +1577,46 @@ fn reached_before(li_11: u32, cells_5: u32, d_7: Domain, x_15: vec3<f32>, n_14: 
     if _e47 {
         return true;
     }
-    let _e51 = view.shadow_offset;
-    let _e54 = reuse.prev_eye;
-    let eps_5 = (_e51 * length((_e54 - d_7.x)));
-    let _e65 = grid_coordinate(cells_5);
-    let _e68 = grid_coordinate((cells_5 << 16u));
-    let _e70 = connect_record(lp, d_7.x, d_7.n, d_7.n, UNRANGED, UNRANGED, 1f, _e65, _e68, eps_5, true);
-    return any((_e70.e > vec3(0f)));
+    let _e49 = sample_key(li_11, cells_5);
+    loop {
+        let _e52 = q_7;
+        if (_e52 < K) {
+        } else {
+            break;
+        }
+        {
+            let _e57 = previous_index(d_7.pixel);
+            let _e60 = q_7;
+            let h_4 = reuse_pixels[_e57].slots[_e60];
+            if (h_4.w > 0f) {
+                local_45 = (h_4.light < arrayLength((&lights)));
+            } else {
+                local_45 = false;
+            }
+            let _e73 = local_45;
+            if _e73 {
+                let _e78 = sample_key(h_4.light, h_4.u);
+                local_46 = all((_e78 == _e49));
+            } else {
+                local_46 = false;
+            }
+            let _e82 = local_46;
+            if _e82 {
+                return true;
+            }
+        }
+        continuing {
+            let _e85 = q_7;
+            q_7 = (_e85 + 1u);
+        }
+    }
+    let _e89 = view.shadow_offset;
+    let _e92 = reuse.prev_eye;
+    let eps_5 = (_e89 * length((_e92 - d_7.x)));
+    let _e103 = grid_coordinate(cells_5);
+    let _e106 = grid_coordinate((cells_5 << 16u));
+    let _e108 = connect_record(lp, d_7.x, d_7.n, d_7.n, UNRANGED, UNRANGED, 1f, _e103, _e106, eps_5, true);
+    return any((_e108.e > vec3(0f)));
 }
 
 fn reuse_domains(x_16: vec3<f32>, n_15: vec3<f32>, d_8: f32, h_2: u32, doms_1: ptr<function, array<Domain, 3>>) -> u32 {
@@ -1588,14 +1624,14 @@ fn reuse_domains(x_16: vec3<f32>, n_15: vec3<f32>, d_8: f32, h_2: u32, doms_1: p
     var hr: u32;
     var j_5: u32 = 0u;
     var p_7: vec2<f32>;
-    var local_45: bool;
-    var local_46: bool;
     var local_47: bool;
-    var seen_1: bool;
-    var k_5: u32;
     var local_48: bool;
     var local_49: bool;
+    var seen_1: bool;
+    var k_5: u32;
     var local_50: bool;
+    var local_51: bool;
+    var local_52: bool;
 
     let _e9 = reuse.has_history;
     if (_e9 != 1u) {
@@ -1640,25 +1676,25 @@ fn reuse_domains(x_16: vec3<f32>, n_15: vec3<f32>, d_8: f32, h_2: u32, doms_1: p
             let _e63 = p_7;
             let t_9 = vec2<i32>(round(_e63));
             if !((t_9.x < 0i)) {
-                local_45 = (t_9.y < 0i);
-            } else {
-                local_45 = true;
-            }
-            let _e76 = local_45;
-            if !(_e76) {
-                let _e83 = view.width;
-                local_46 = (t_9.x >= i32(_e83));
-            } else {
-                local_46 = true;
-            }
-            let _e87 = local_46;
-            if !(_e87) {
-                let _e94 = view.height;
-                local_47 = (t_9.y >= i32(_e94));
+                local_47 = (t_9.y < 0i);
             } else {
                 local_47 = true;
             }
-            let _e98 = local_47;
+            let _e76 = local_47;
+            if !(_e76) {
+                let _e83 = view.width;
+                local_48 = (t_9.x >= i32(_e83));
+            } else {
+                local_48 = true;
+            }
+            let _e87 = local_48;
+            if !(_e87) {
+                let _e94 = view.height;
+                local_49 = (t_9.y >= i32(_e94));
+            } else {
+                local_49 = true;
+            }
+            let _e98 = local_49;
             if _e98 {
                 continue;
             }
@@ -1678,11 +1714,11 @@ fn reuse_domains(x_16: vec3<f32>, n_15: vec3<f32>, d_8: f32, h_2: u32, doms_1: p
                     if !(_e115) {
                         let _e119 = k_5;
                         let _e122 = (*doms_1)[_e119].pixel;
-                        local_48 = (_e122 == pixel);
+                        local_50 = (_e122 == pixel);
                     } else {
-                        local_48 = true;
+                        local_50 = true;
                     }
-                    let _e125 = local_48;
+                    let _e125 = local_50;
                     seen_1 = _e125;
                 }
                 continuing {
@@ -1694,18 +1730,18 @@ fn reuse_domains(x_16: vec3<f32>, n_15: vec3<f32>, d_8: f32, h_2: u32, doms_1: p
             let s_13 = reuse_pixels[_e130].surface;
             let _e134 = seen_1;
             if !(_e134) {
-                local_49 = !((s_13.m > 0f));
+                local_51 = !((s_13.m > 0f));
             } else {
-                local_49 = true;
+                local_51 = true;
             }
-            let _e143 = local_49;
+            let _e143 = local_51;
             if !(_e143) {
                 let _e151 = history_matches(n_15, s_13.n, x_16, dot(s_13.n, s_13.x), d_8);
-                local_50 = !(_e151);
+                local_52 = !(_e151);
             } else {
-                local_50 = true;
+                local_52 = true;
             }
-            let _e154 = local_50;
+            let _e154 = local_52;
             if _e154 {
                 continue;
             }
@@ -1727,23 +1763,23 @@ fn reuse_domains(x_16: vec3<f32>, n_15: vec3<f32>, d_8: f32, h_2: u32, doms_1: p
     return _e178;
 }
 
-fn gris_combine(q_7: u32, cur: ReuseSlot, cur_ris: bool, cur_c: f32, cur_reached: bool, k0_: u32, k1_: u32, x_17: vec3<f32>, n_16: vec3<f32>, m_5: Material, doms_2: ptr<function, array<Domain, 3>>, hs_1: ptr<function, u32>) -> ReuseSlot {
+fn gris_combine(q_8: u32, cur: ReuseSlot, cur_ris: bool, cur_c: f32, cur_reached: bool, k0_: u32, k1_: u32, x_17: vec3<f32>, n_16: vec3<f32>, m_5: Material, doms_2: ptr<function, array<Domain, 3>>, hs_1: ptr<function, u32>) -> ReuseSlot {
     var w_sum_3: f32 = 0f;
     var out: ReuseSlot = ReuseSlot(0u, 0u, 0f);
     var out_target: f32 = 0f;
     var j_6: u32;
     var s_11: ReuseSlot;
-    var local_51: bool;
-    var local_52: bool;
     var local_53: bool;
-    var w_in: f32;
     var local_54: bool;
+    var local_55: bool;
+    var w_in: f32;
+    var local_56: bool;
     var own_1: f32;
     var all_1: f32;
     var k_6: u32;
     var t_4: f32;
-    var local_55: bool;
-    var local_56: bool;
+    var local_57: bool;
+    var local_58: bool;
 
     j_6 = k0_;
     loop {
@@ -1759,46 +1795,46 @@ fn gris_combine(q_7: u32, cur: ReuseSlot, cur_ris: bool, cur_c: f32, cur_reached
                 let _e28 = j_6;
                 let _e33 = (*doms_2)[(_e28 - 1u)].pixel;
                 let _e34 = previous_index(_e33);
-                let _e38 = reuse_pixels[_e34].slots[q_7];
+                let _e38 = reuse_pixels[_e34].slots[q_8];
                 s_11 = _e38;
             }
             let _e40 = s_11.w;
             if !(!((_e40 > 0f))) {
                 let _e48 = s_11.light;
-                local_51 = (_e48 >= arrayLength((&lights)));
+                local_53 = (_e48 >= arrayLength((&lights)));
             } else {
-                local_51 = true;
+                local_53 = true;
             }
-            let _e53 = local_51;
+            let _e53 = local_53;
             if _e53 {
                 continue;
             }
             let _e54 = j_6;
             if (_e54 > k0_) {
                 let _e60 = reuse.visibility;
-                local_52 = (_e60 == 1u);
+                local_54 = (_e60 == 1u);
             } else {
-                local_52 = false;
+                local_54 = false;
             }
-            let _e64 = local_52;
+            let _e64 = local_54;
             if _e64 {
                 let _e68 = s_11.light;
                 let _e70 = s_11.u;
                 let _e71 = j_6;
                 let _e75 = (*doms_2)[(_e71 - 1u)];
                 let _e76 = history_vouches(_e68, _e70, _e75);
-                local_53 = !(_e76);
+                local_55 = !(_e76);
             } else {
-                local_53 = false;
+                local_55 = false;
             }
-            let _e79 = local_53;
+            let _e79 = local_55;
             if _e79 {
                 continue;
             }
             let _e82 = s_11.light;
             let _e84 = lights[_e82];
             let _e86 = s_11.u;
-            let _e87 = reuse_target(q_7, _e84, _e86, x_17, n_16, m_5);
+            let _e87 = reuse_target(q_8, _e84, _e86, x_17, n_16, m_5);
             if !((_e87 > 0f)) {
                 continue;
             }
@@ -1806,11 +1842,11 @@ fn gris_combine(q_7: u32, cur: ReuseSlot, cur_ris: bool, cur_c: f32, cur_reached
             w_in = _e92;
             let _e94 = j_6;
             if (_e94 == k0_) {
-                local_54 = cur_ris;
+                local_56 = cur_ris;
             } else {
-                local_54 = false;
+                local_56 = false;
             }
-            let _e99 = local_54;
+            let _e99 = local_56;
             if _e99 {
                 let _e101 = s_11.w;
                 w_in = (_e101 / _e87);
@@ -1829,11 +1865,11 @@ fn gris_combine(q_7: u32, cur: ReuseSlot, cur_ris: bool, cur_c: f32, cur_reached
                     t_4 = 0f;
                     let _e112 = j_6;
                     if !((_e112 > k0_)) {
-                        local_55 = cur_reached;
+                        local_57 = cur_reached;
                     } else {
-                        local_55 = true;
+                        local_57 = true;
                     }
-                    let _e118 = local_55;
+                    let _e118 = local_57;
                     if _e118 {
                         let _e119 = k_6;
                         let _e122 = (*doms_2)[_e119].c;
@@ -1846,7 +1882,7 @@ fn gris_combine(q_7: u32, cur: ReuseSlot, cur_ris: bool, cur_c: f32, cur_reached
                         let _e137 = (*doms_2)[_e134].n;
                         let _e138 = k_6;
                         let _e141 = (*doms_2)[_e138].m;
-                        let _e142 = reuse_target(q_7, _e127, _e129, _e133, _e137, _e141);
+                        let _e142 = reuse_target(q_8, _e127, _e129, _e133, _e137, _e141);
                         t_4 = (_e122 * _e142);
                     }
                     let _e144 = all_1;
@@ -1878,11 +1914,11 @@ fn gris_combine(q_7: u32, cur: ReuseSlot, cur_ris: bool, cur_c: f32, cur_reached
                 let _e169 = (*hs_1);
                 let _e170 = xi_from_bits(_e169);
                 let _e171 = weighted_replace(_e159, _e168, _e170);
-                local_56 = _e171;
+                local_58 = _e171;
             } else {
-                local_56 = false;
+                local_58 = false;
             }
-            let _e173 = local_56;
+            let _e173 = local_58;
             if _e173 {
                 let _e174 = s_11;
                 out = _e174;

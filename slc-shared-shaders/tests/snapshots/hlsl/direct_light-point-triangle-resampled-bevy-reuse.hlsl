@@ -345,8 +345,8 @@ bool sphere_contains_point(float3 c, float r_1, float3 x_1)
 
 bool sphere_overlaps_aabb(float3 c_1, float r_2, float3 bmin, float3 bmax)
 {
-    float3 q_8 = clamp(c_1, bmin, bmax);
-    float3 v_6 = (q_8 - c_1);
+    float3 q_9 = clamp(c_1, bmin, bmax);
+    float3 v_6 = (q_9 - c_1);
     return (dot(v_6, v_6) <= (r_2 * r_2));
 }
 
@@ -824,8 +824,8 @@ float ray_triangle(float3 o_1, float3 d_3, float3 a_5, float3 b_4, float3 c_7, f
     if (_e28) {
         return -1.0;
     }
-    float3 q_9 = cross(s_12, e1_);
-    float v_9 = (dot(d_3, q_9) * inv);
+    float3 q_10 = cross(s_12, e1_);
+    float v_9 = (dot(d_3, q_10) * inv);
     if (!((v_9 < 0.0))) {
         local_26 = ((u_4 + v_9) > 1.0);
     } else {
@@ -835,7 +835,7 @@ float ray_triangle(float3 o_1, float3 d_3, float3 a_5, float3 b_4, float3 c_7, f
     if (_e42) {
         return -1.0;
     }
-    float t_7 = (dot(e2_, q_9) * inv);
+    float t_7 = (dot(e2_, q_10) * inv);
     if ((t_7 > t_min)) {
         local_27 = (t_7 < t_max_1);
     } else {
@@ -1842,12 +1842,23 @@ bool history_vouches(uint li_10, uint cells_4, Domain d_6)
     return (_e46 < 0.0);
 }
 
+ReuseSlot ConstructReuseSlot(uint arg0, uint arg1, float arg2) {
+    ReuseSlot ret = (ReuseSlot)0;
+    ret.light = arg0;
+    ret.u = arg1;
+    ret.w = arg2;
+    return ret;
+}
+
 bool reached_before(uint li_11, uint cells_5, Domain d_7, float3 x_15, float3 n_14)
 {
     bool local_41 = (bool)0;
     bool local_42 = (bool)0;
     bool local_43 = (bool)0;
     bool local_44 = (bool)0;
+    uint q_7 = 0u;
+    bool local_45 = (bool)0;
+    bool local_46 = (bool)0;
 
     const bool _e5 = history_vouches(li_11, cells_5, d_7);
     if (!(_e5)) {
@@ -1882,13 +1893,51 @@ bool reached_before(uint li_11, uint cells_5, Domain d_7, float3 x_15, float3 n_
     if (_e47) {
         return true;
     }
-    float _e51 = view.shadow_offset;
-    float3 _e54 = reuse.prev_eye;
-    float eps_5 = (_e51 * length((_e54 - d_7.x)));
-    const float _e65 = grid_coordinate(cells_5);
-    const float _e68 = grid_coordinate((cells_5 << 16u));
-    const Connection _e70 = connect_record(lp, d_7.x, d_7.n, d_7.n, UNRANGED, UNRANGED, 1.0, _e65, _e68, eps_5, true);
-    return any((_e70.e > (0.0).xxx));
+    const uint2 _e49 = sample_key(li_11, cells_5);
+    uint2 loop_bound_11 = uint2(4294967295u, 4294967295u);
+    bool loop_init_8 = true;
+    while(true) {
+        if (all(loop_bound_11 == uint2(0u, 0u))) { break; }
+        loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
+        if (!loop_init_8) {
+            uint _e85 = q_7;
+            q_7 = (_e85 + 1u);
+        }
+        loop_init_8 = false;
+        uint _e52 = q_7;
+        if ((_e52 < K)) {
+        } else {
+            break;
+        }
+        {
+            const uint _e57 = previous_index(d_7.pixel);
+            uint _e60 = q_7;
+            ReuseSlot h_4 = ConstructReuseSlot(asuint(reuse_pixels.Load(_e60*12+48+_e57*144+0)), asuint(reuse_pixels.Load(_e60*12+48+_e57*144+4)), asfloat(reuse_pixels.Load(_e60*12+48+_e57*144+8)));
+            if ((h_4.w > 0.0)) {
+                local_45 = (h_4.light < ((NagaBufferLength(lights) - 0) / 64));
+            } else {
+                local_45 = false;
+            }
+            bool _e73 = local_45;
+            if (_e73) {
+                const uint2 _e78 = sample_key(h_4.light, h_4.u);
+                local_46 = all((_e78 == _e49));
+            } else {
+                local_46 = false;
+            }
+            bool _e82 = local_46;
+            if (_e82) {
+                return true;
+            }
+        }
+    }
+    float _e89 = view.shadow_offset;
+    float3 _e92 = reuse.prev_eye;
+    float eps_5 = (_e89 * length((_e92 - d_7.x)));
+    const float _e103 = grid_coordinate(cells_5);
+    const float _e106 = grid_coordinate((cells_5 << 16u));
+    const Connection _e108 = connect_record(lp, d_7.x, d_7.n, d_7.n, UNRANGED, UNRANGED, 1.0, _e103, _e106, eps_5, true);
+    return any((_e108.e > (0.0).xxx));
 }
 
 Domain ConstructDomain(uint arg0, float3 arg1, float3 arg2, Material arg3, float arg4, bool arg5) {
@@ -1912,14 +1961,14 @@ uint reuse_domains(float3 x_16, float3 n_15, float d_8, uint h_2, inout Domain d
     uint hr = (uint)0;
     uint j_5 = 0u;
     float2 p_7 = (float2)0;
-    bool local_45 = (bool)0;
-    bool local_46 = (bool)0;
     bool local_47 = (bool)0;
-    bool seen_1 = (bool)0;
-    uint k_5 = (uint)0;
     bool local_48 = (bool)0;
     bool local_49 = (bool)0;
+    bool seen_1 = (bool)0;
+    uint k_5 = (uint)0;
     bool local_50 = (bool)0;
+    bool local_51 = (bool)0;
+    bool local_52 = (bool)0;
 
     uint _e9 = reuse.has_history;
     if ((_e9 != 1u)) {
@@ -1936,16 +1985,16 @@ uint reuse_domains(float3 x_16, float3 n_15, float d_8, uint h_2, inout Domain d
         return 0u;
     }
     hr = h_2;
-    uint2 loop_bound_11 = uint2(4294967295u, 4294967295u);
-    bool loop_init_8 = true;
+    uint2 loop_bound_12 = uint2(4294967295u, 4294967295u);
+    bool loop_init_9 = true;
     while(true) {
-        if (all(loop_bound_11 == uint2(0u, 0u))) { break; }
-        loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
-        if (!loop_init_8) {
+        if (all(loop_bound_12 == uint2(0u, 0u))) { break; }
+        loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
+        if (!loop_init_9) {
             uint _e176 = j_5;
             j_5 = (_e176 + 1u);
         }
-        loop_init_8 = false;
+        loop_init_9 = false;
         uint _e41 = j_5;
         if ((_e41 < DOMAINS)) {
         } else {
@@ -1973,25 +2022,25 @@ uint reuse_domains(float3 x_16, float3 n_15, float d_8, uint h_2, inout Domain d
             float2 _e63 = p_7;
             int2 t_9 = naga_f2i32(round(_e63));
             if (!((t_9.x < int(0)))) {
-                local_45 = (t_9.y < int(0));
-            } else {
-                local_45 = true;
-            }
-            bool _e76 = local_45;
-            if (!(_e76)) {
-                uint _e83 = view.width;
-                local_46 = (t_9.x >= int(_e83));
-            } else {
-                local_46 = true;
-            }
-            bool _e87 = local_46;
-            if (!(_e87)) {
-                uint _e94 = view.height;
-                local_47 = (t_9.y >= int(_e94));
+                local_47 = (t_9.y < int(0));
             } else {
                 local_47 = true;
             }
-            bool _e98 = local_47;
+            bool _e76 = local_47;
+            if (!(_e76)) {
+                uint _e83 = view.width;
+                local_48 = (t_9.x >= int(_e83));
+            } else {
+                local_48 = true;
+            }
+            bool _e87 = local_48;
+            if (!(_e87)) {
+                uint _e94 = view.height;
+                local_49 = (t_9.y >= int(_e94));
+            } else {
+                local_49 = true;
+            }
+            bool _e98 = local_49;
             if (_e98) {
                 continue;
             }
@@ -1999,16 +2048,16 @@ uint reuse_domains(float3 x_16, float3 n_15, float d_8, uint h_2, inout Domain d
             uint pixel = ((uint(t_9.y) * _e103) + uint(t_9.x));
             seen_1 = false;
             k_5 = 0u;
-            uint2 loop_bound_12 = uint2(4294967295u, 4294967295u);
-            bool loop_init_9 = true;
+            uint2 loop_bound_13 = uint2(4294967295u, 4294967295u);
+            bool loop_init_10 = true;
             while(true) {
-                if (all(loop_bound_12 == uint2(0u, 0u))) { break; }
-                loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
-                if (!loop_init_9) {
+                if (all(loop_bound_13 == uint2(0u, 0u))) { break; }
+                loop_bound_13 -= uint2(loop_bound_13.y == 0u, 1u);
+                if (!loop_init_10) {
                     uint _e127 = k_5;
                     k_5 = (_e127 + 1u);
                 }
-                loop_init_9 = false;
+                loop_init_10 = false;
                 uint _e112 = k_5;
                 uint _e113 = nd;
                 if ((_e112 < _e113)) {
@@ -2020,11 +2069,11 @@ uint reuse_domains(float3 x_16, float3 n_15, float d_8, uint h_2, inout Domain d
                     if (!(_e115)) {
                         uint _e119 = k_5;
                         uint _e122 = doms_1[min(uint(_e119), 2u)].pixel;
-                        local_48 = (_e122 == pixel);
+                        local_50 = (_e122 == pixel);
                     } else {
-                        local_48 = true;
+                        local_50 = true;
                     }
-                    bool _e125 = local_48;
+                    bool _e125 = local_50;
                     seen_1 = _e125;
                 }
             }
@@ -2032,18 +2081,18 @@ uint reuse_domains(float3 x_16, float3 n_15, float d_8, uint h_2, inout Domain d
             ReuseSurface s_13 = ConstructReuseSurface(asfloat(reuse_pixels.Load3(0+_e130*144+0)), asfloat(reuse_pixels.Load(0+_e130*144+12)), asfloat(reuse_pixels.Load3(0+_e130*144+16)), asuint(reuse_pixels.Load(0+_e130*144+28)), asuint(reuse_pixels.Load(0+_e130*144+32)), asuint(reuse_pixels.Load(0+_e130*144+36)), asuint(reuse_pixels.Load(0+_e130*144+40)), asuint(reuse_pixels.Load(0+_e130*144+44)));
             bool _e134 = seen_1;
             if (!(_e134)) {
-                local_49 = !((s_13.m > 0.0));
+                local_51 = !((s_13.m > 0.0));
             } else {
-                local_49 = true;
+                local_51 = true;
             }
-            bool _e143 = local_49;
+            bool _e143 = local_51;
             if (!(_e143)) {
                 const bool _e151 = history_matches(n_15, s_13.n, x_16, dot(s_13.n, s_13.x), d_8);
-                local_50 = !(_e151);
+                local_52 = !(_e151);
             } else {
-                local_50 = true;
+                local_52 = true;
             }
-            bool _e154 = local_50;
+            bool _e154 = local_52;
             if (_e154) {
                 continue;
             }
@@ -2061,44 +2110,36 @@ uint reuse_domains(float3 x_16, float3 n_15, float d_8, uint h_2, inout Domain d
     return _e178;
 }
 
-ReuseSlot ConstructReuseSlot(uint arg0, uint arg1, float arg2) {
-    ReuseSlot ret = (ReuseSlot)0;
-    ret.light = arg0;
-    ret.u = arg1;
-    ret.w = arg2;
-    return ret;
-}
-
-ReuseSlot gris_combine(uint q_7, ReuseSlot cur, bool cur_ris, float cur_c, bool cur_reached, uint k0_, uint k1_, float3 x_17, float3 n_16, Material m_5, inout Domain doms_2[3], inout uint hs_1)
+ReuseSlot gris_combine(uint q_8, ReuseSlot cur, bool cur_ris, float cur_c, bool cur_reached, uint k0_, uint k1_, float3 x_17, float3 n_16, Material m_5, inout Domain doms_2[3], inout uint hs_1)
 {
     float w_sum_3 = 0.0;
     ReuseSlot out_ = ConstructReuseSlot(0u, 0u, 0.0);
     float out_target = 0.0;
     uint j_6 = (uint)0;
     ReuseSlot s_11 = (ReuseSlot)0;
-    bool local_51 = (bool)0;
-    bool local_52 = (bool)0;
     bool local_53 = (bool)0;
-    float w_in = (float)0;
     bool local_54 = (bool)0;
+    bool local_55 = (bool)0;
+    float w_in = (float)0;
+    bool local_56 = (bool)0;
     float own_1 = (float)0;
     float all_1 = (float)0;
     uint k_6 = (uint)0;
     float t_4 = (float)0;
-    bool local_55 = (bool)0;
-    bool local_56 = (bool)0;
+    bool local_57 = (bool)0;
+    bool local_58 = (bool)0;
 
     j_6 = k0_;
-    uint2 loop_bound_13 = uint2(4294967295u, 4294967295u);
-    bool loop_init_10 = true;
+    uint2 loop_bound_14 = uint2(4294967295u, 4294967295u);
+    bool loop_init_11 = true;
     while(true) {
-        if (all(loop_bound_13 == uint2(0u, 0u))) { break; }
-        loop_bound_13 -= uint2(loop_bound_13.y == 0u, 1u);
-        if (!loop_init_10) {
+        if (all(loop_bound_14 == uint2(0u, 0u))) { break; }
+        loop_bound_14 -= uint2(loop_bound_14.y == 0u, 1u);
+        if (!loop_init_11) {
             uint _e176 = j_6;
             j_6 = (_e176 + 1u);
         }
-        loop_init_10 = false;
+        loop_init_11 = false;
         uint _e22 = j_6;
         if ((_e22 <= k1_)) {
         } else {
@@ -2111,46 +2152,46 @@ ReuseSlot gris_combine(uint q_7, ReuseSlot cur, bool cur_ris, float cur_c, bool 
                 uint _e28 = j_6;
                 uint _e33 = doms_2[min(uint((_e28 - 1u)), 2u)].pixel;
                 const uint _e34 = previous_index(_e33);
-                ReuseSlot _e38 = ConstructReuseSlot(asuint(reuse_pixels.Load(q_7*12+48+_e34*144+0)), asuint(reuse_pixels.Load(q_7*12+48+_e34*144+4)), asfloat(reuse_pixels.Load(q_7*12+48+_e34*144+8)));
+                ReuseSlot _e38 = ConstructReuseSlot(asuint(reuse_pixels.Load(q_8*12+48+_e34*144+0)), asuint(reuse_pixels.Load(q_8*12+48+_e34*144+4)), asfloat(reuse_pixels.Load(q_8*12+48+_e34*144+8)));
                 s_11 = _e38;
             }
             float _e40 = s_11.w;
             if (!(!((_e40 > 0.0)))) {
                 uint _e48 = s_11.light;
-                local_51 = (_e48 >= ((NagaBufferLength(lights) - 0) / 64));
+                local_53 = (_e48 >= ((NagaBufferLength(lights) - 0) / 64));
             } else {
-                local_51 = true;
+                local_53 = true;
             }
-            bool _e53 = local_51;
+            bool _e53 = local_53;
             if (_e53) {
                 continue;
             }
             uint _e54 = j_6;
             if ((_e54 > k0_)) {
                 uint _e60 = reuse.visibility;
-                local_52 = (_e60 == 1u);
+                local_54 = (_e60 == 1u);
             } else {
-                local_52 = false;
+                local_54 = false;
             }
-            bool _e64 = local_52;
+            bool _e64 = local_54;
             if (_e64) {
                 uint _e68 = s_11.light;
                 uint _e70 = s_11.u;
                 uint _e71 = j_6;
                 Domain _e75 = doms_2[min(uint((_e71 - 1u)), 2u)];
                 const bool _e76 = history_vouches(_e68, _e70, _e75);
-                local_53 = !(_e76);
+                local_55 = !(_e76);
             } else {
-                local_53 = false;
+                local_55 = false;
             }
-            bool _e79 = local_53;
+            bool _e79 = local_55;
             if (_e79) {
                 continue;
             }
             uint _e82 = s_11.light;
             GpuLight _e84 = ConstructGpuLight(asfloat(lights.Load3(_e82*64+0)), asuint(lights.Load(_e82*64+12)), asfloat(lights.Load3(_e82*64+16)), asfloat(lights.Load(_e82*64+28)), asfloat(lights.Load3(_e82*64+32)), asfloat(lights.Load(_e82*64+44)), asfloat(lights.Load3(_e82*64+48)), asuint(lights.Load(_e82*64+60)));
             uint _e86 = s_11.u;
-            const float _e87 = reuse_target(q_7, _e84, _e86, x_17, n_16, m_5);
+            const float _e87 = reuse_target(q_8, _e84, _e86, x_17, n_16, m_5);
             if (!((_e87 > 0.0))) {
                 continue;
             }
@@ -2158,11 +2199,11 @@ ReuseSlot gris_combine(uint q_7, ReuseSlot cur, bool cur_ris, float cur_c, bool 
             w_in = _e92;
             uint _e94 = j_6;
             if ((_e94 == k0_)) {
-                local_54 = cur_ris;
+                local_56 = cur_ris;
             } else {
-                local_54 = false;
+                local_56 = false;
             }
-            bool _e99 = local_54;
+            bool _e99 = local_56;
             if (_e99) {
                 float _e101 = s_11.w;
                 w_in = (_e101 / _e87);
@@ -2171,16 +2212,16 @@ ReuseSlot gris_combine(uint q_7, ReuseSlot cur, bool cur_ris, float cur_c, bool 
             float _e105 = own_1;
             all_1 = _e105;
             k_6 = k0_;
-            uint2 loop_bound_14 = uint2(4294967295u, 4294967295u);
-            bool loop_init_11 = true;
+            uint2 loop_bound_15 = uint2(4294967295u, 4294967295u);
+            bool loop_init_12 = true;
             while(true) {
-                if (all(loop_bound_14 == uint2(0u, 0u))) { break; }
-                loop_bound_14 -= uint2(loop_bound_14.y == 0u, 1u);
-                if (!loop_init_11) {
+                if (all(loop_bound_15 == uint2(0u, 0u))) { break; }
+                loop_bound_15 -= uint2(loop_bound_15.y == 0u, 1u);
+                if (!loop_init_12) {
                     uint _e154 = k_6;
                     k_6 = (_e154 + 1u);
                 }
-                loop_init_11 = false;
+                loop_init_12 = false;
                 uint _e108 = k_6;
                 if ((_e108 < k1_)) {
                 } else {
@@ -2190,11 +2231,11 @@ ReuseSlot gris_combine(uint q_7, ReuseSlot cur, bool cur_ris, float cur_c, bool 
                     t_4 = 0.0;
                     uint _e112 = j_6;
                     if (!((_e112 > k0_))) {
-                        local_55 = cur_reached;
+                        local_57 = cur_reached;
                     } else {
-                        local_55 = true;
+                        local_57 = true;
                     }
-                    bool _e118 = local_55;
+                    bool _e118 = local_57;
                     if (_e118) {
                         uint _e119 = k_6;
                         float _e122 = doms_2[min(uint(_e119), 2u)].c;
@@ -2207,7 +2248,7 @@ ReuseSlot gris_combine(uint q_7, ReuseSlot cur, bool cur_ris, float cur_c, bool 
                         float3 _e137 = doms_2[min(uint(_e134), 2u)].n;
                         uint _e138 = k_6;
                         Material _e141 = doms_2[min(uint(_e138), 2u)].m;
-                        const float _e142 = reuse_target(q_7, _e127, _e129, _e133, _e137, _e141);
+                        const float _e142 = reuse_target(q_8, _e127, _e129, _e133, _e137, _e141);
                         t_4 = (_e122 * _e142);
                     }
                     float _e144 = all_1;
@@ -2235,11 +2276,11 @@ ReuseSlot gris_combine(uint q_7, ReuseSlot cur, bool cur_ris, float cur_c, bool 
                 uint _e169 = hs_1;
                 const float _e170 = xi_from_bits(_e169);
                 const bool _e171 = weighted_replace(_e159, _e168, _e170);
-                local_56 = _e171;
+                local_58 = _e171;
             } else {
-                local_56 = false;
+                local_58 = false;
             }
-            bool _e173 = local_56;
+            bool _e173 = local_58;
             if (_e173) {
                 ReuseSlot _e174 = s_11;
                 out_ = _e174;
@@ -2407,16 +2448,16 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
     h = _e138;
     hc = _e137;
     const TileWalk _e160 = tile_walk_begin(lid, x_20, _e114.w, has_3);
-    uint2 loop_bound_15 = uint2(4294967295u, 4294967295u);
-    bool loop_init_12 = true;
+    uint2 loop_bound_16 = uint2(4294967295u, 4294967295u);
+    bool loop_init_13 = true;
     while(true) {
-        if (all(loop_bound_15 == uint2(0u, 0u))) { break; }
-        loop_bound_15 -= uint2(loop_bound_15.y == 0u, 1u);
-        if (!loop_init_12) {
+        if (all(loop_bound_16 == uint2(0u, 0u))) { break; }
+        loop_bound_16 -= uint2(loop_bound_16.y == 0u, 1u);
+        if (!loop_init_13) {
             uint _e259 = start;
             start = (_e259 + TILE_LIST);
         }
-        loop_init_12 = false;
+        loop_init_13 = false;
         uint _e163 = start;
         if ((_e163 < _e160.total)) {
         } else {
@@ -2426,16 +2467,16 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
             uint _e166 = start;
             const uint _e167 = tile_walk_fill(lid, _e160, _e166);
             j = 0u;
-            uint2 loop_bound_16 = uint2(4294967295u, 4294967295u);
-            bool loop_init_13 = true;
+            uint2 loop_bound_17 = uint2(4294967295u, 4294967295u);
+            bool loop_init_14 = true;
             while(true) {
-                if (all(loop_bound_16 == uint2(0u, 0u))) { break; }
-                loop_bound_16 -= uint2(loop_bound_16.y == 0u, 1u);
-                if (!loop_init_13) {
+                if (all(loop_bound_17 == uint2(0u, 0u))) { break; }
+                loop_bound_17 -= uint2(loop_bound_17.y == 0u, 1u);
+                if (!loop_init_14) {
                     uint _e257 = j;
                     j = (_e257 + 1u);
                 }
-                loop_init_13 = false;
+                loop_init_14 = false;
                 uint _e170 = j;
                 if ((_e170 < _e167)) {
                 } else {
@@ -2482,16 +2523,16 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
                         float3 _e218 = total;
                         total = (_e218 + _e214);
                         q = 0u;
-                        uint2 loop_bound_17 = uint2(4294967295u, 4294967295u);
-                        bool loop_init_14 = true;
+                        uint2 loop_bound_18 = uint2(4294967295u, 4294967295u);
+                        bool loop_init_15 = true;
                         while(true) {
-                            if (all(loop_bound_17 == uint2(0u, 0u))) { break; }
-                            loop_bound_17 -= uint2(loop_bound_17.y == 0u, 1u);
-                            if (!loop_init_14) {
+                            if (all(loop_bound_18 == uint2(0u, 0u))) { break; }
+                            loop_bound_18 -= uint2(loop_bound_18.y == 0u, 1u);
+                            if (!loop_init_15) {
                                 uint _e254 = q;
                                 q = (_e254 + 1u);
                             }
-                            loop_init_14 = false;
+                            loop_init_15 = false;
                             uint _e222 = q;
                             if ((_e222 < K)) {
                             } else {
@@ -2559,16 +2600,16 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
     float confidence = (1.0 + (own_history ? _e310 : 0.0));
     const uint _e316 = reuse_stream(_e137, 1u);
     hs = _e316;
-    uint2 loop_bound_18 = uint2(4294967295u, 4294967295u);
-    bool loop_init_15 = true;
+    uint2 loop_bound_19 = uint2(4294967295u, 4294967295u);
+    bool loop_init_16 = true;
     while(true) {
-        if (all(loop_bound_18 == uint2(0u, 0u))) { break; }
-        loop_bound_18 -= uint2(loop_bound_18.y == 0u, 1u);
-        if (!loop_init_15) {
+        if (all(loop_bound_19 == uint2(0u, 0u))) { break; }
+        loop_bound_19 -= uint2(loop_bound_19.y == 0u, 1u);
+        if (!loop_init_16) {
             uint _e351 = q_1;
             q_1 = (_e351 + 1u);
         }
-        loop_init_15 = false;
+        loop_init_16 = false;
         uint _e322 = q_1;
         if ((_e322 < K)) {
         } else {
@@ -2598,16 +2639,16 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
     uint2 _e353[8] = fresh_keys;
     bool _e354[8] = fresh_held;
     const uint _e355[8] = first_holders(_e353, _e354);
-    uint2 loop_bound_19 = uint2(4294967295u, 4294967295u);
-    bool loop_init_16 = true;
+    uint2 loop_bound_20 = uint2(4294967295u, 4294967295u);
+    bool loop_init_17 = true;
     while(true) {
-        if (all(loop_bound_19 == uint2(0u, 0u))) { break; }
-        loop_bound_19 -= uint2(loop_bound_19.y == 0u, 1u);
-        if (!loop_init_16) {
+        if (all(loop_bound_20 == uint2(0u, 0u))) { break; }
+        loop_bound_20 -= uint2(loop_bound_20.y == 0u, 1u);
+        if (!loop_init_17) {
             uint _e387 = q_2;
             q_2 = (_e387 + 1u);
         }
-        loop_init_16 = false;
+        loop_init_17 = false;
         uint _e359 = q_2;
         if ((_e359 < K)) {
         } else {
@@ -2636,16 +2677,16 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
             }
         }
     }
-    uint2 loop_bound_20 = uint2(4294967295u, 4294967295u);
-    bool loop_init_17 = true;
+    uint2 loop_bound_21 = uint2(4294967295u, 4294967295u);
+    bool loop_init_18 = true;
     while(true) {
-        if (all(loop_bound_20 == uint2(0u, 0u))) { break; }
-        loop_bound_20 -= uint2(loop_bound_20.y == 0u, 1u);
-        if (!loop_init_17) {
+        if (all(loop_bound_21 == uint2(0u, 0u))) { break; }
+        loop_bound_21 -= uint2(loop_bound_21.y == 0u, 1u);
+        if (!loop_init_18) {
             uint _e436 = q_3;
             q_3 = (_e436 + 1u);
         }
-        loop_init_17 = false;
+        loop_init_18 = false;
         uint _e392 = q_3;
         if ((_e392 < K)) {
         } else {
@@ -2691,16 +2732,16 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
             }
         }
     }
-    uint2 loop_bound_21 = uint2(4294967295u, 4294967295u);
-    bool loop_init_18 = true;
+    uint2 loop_bound_22 = uint2(4294967295u, 4294967295u);
+    bool loop_init_19 = true;
     while(true) {
-        if (all(loop_bound_21 == uint2(0u, 0u))) { break; }
-        loop_bound_21 -= uint2(loop_bound_21.y == 0u, 1u);
-        if (!loop_init_18) {
+        if (all(loop_bound_22 == uint2(0u, 0u))) { break; }
+        loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
+        if (!loop_init_19) {
             uint _e510 = q_4;
             q_4 = (_e510 + 1u);
         }
-        loop_init_18 = false;
+        loop_init_19 = false;
         uint _e442 = q_4;
         if ((_e442 < K)) {
         } else {
@@ -2755,16 +2796,16 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
             }
         }
     }
-    uint2 loop_bound_22 = uint2(4294967295u, 4294967295u);
-    bool loop_init_19 = true;
+    uint2 loop_bound_23 = uint2(4294967295u, 4294967295u);
+    bool loop_init_20 = true;
     while(true) {
-        if (all(loop_bound_22 == uint2(0u, 0u))) { break; }
-        loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
-        if (!loop_init_19) {
+        if (all(loop_bound_23 == uint2(0u, 0u))) { break; }
+        loop_bound_23 -= uint2(loop_bound_23.y == 0u, 1u);
+        if (!loop_init_20) {
             uint _e539 = k;
             k = (_e539 + 1u);
         }
-        loop_init_19 = false;
+        loop_init_20 = false;
         uint _e516 = k;
         if ((_e516 < K)) {
         } else {
@@ -2787,16 +2828,16 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
     uint2 _e541[8] = keys;
     bool _e542[8] = held;
     const uint _e543[8] = first_holders(_e541, _e542);
-    uint2 loop_bound_23 = uint2(4294967295u, 4294967295u);
-    bool loop_init_20 = true;
+    uint2 loop_bound_24 = uint2(4294967295u, 4294967295u);
+    bool loop_init_21 = true;
     while(true) {
-        if (all(loop_bound_23 == uint2(0u, 0u))) { break; }
-        loop_bound_23 -= uint2(loop_bound_23.y == 0u, 1u);
-        if (!loop_init_20) {
+        if (all(loop_bound_24 == uint2(0u, 0u))) { break; }
+        loop_bound_24 -= uint2(loop_bound_24.y == 0u, 1u);
+        if (!loop_init_21) {
             uint _e672 = k_1;
             k_1 = (_e672 + 1u);
         }
-        loop_init_20 = false;
+        loop_init_21 = false;
         uint _e547 = k_1;
         if ((_e547 < K)) {
         } else {
@@ -2811,16 +2852,16 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
             w = (0.0).xxx;
             uint _e557 = k_1;
             j_1 = _e557;
-            uint2 loop_bound_24 = uint2(4294967295u, 4294967295u);
-            bool loop_init_21 = true;
+            uint2 loop_bound_25 = uint2(4294967295u, 4294967295u);
+            bool loop_init_22 = true;
             while(true) {
-                if (all(loop_bound_24 == uint2(0u, 0u))) { break; }
-                loop_bound_24 -= uint2(loop_bound_24.y == 0u, 1u);
-                if (!loop_init_21) {
+                if (all(loop_bound_25 == uint2(0u, 0u))) { break; }
+                loop_bound_25 -= uint2(loop_bound_25.y == 0u, 1u);
+                if (!loop_init_22) {
                     uint _e577 = j_1;
                     j_1 = (_e577 + 1u);
                 }
-                loop_init_21 = false;
+                loop_init_22 = false;
                 uint _e559 = j_1;
                 if ((_e559 < K)) {
                 } else {
@@ -2842,16 +2883,16 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
             known = false;
             seen = false;
             j_2 = 0u;
-            uint2 loop_bound_25 = uint2(4294967295u, 4294967295u);
-            bool loop_init_22 = true;
+            uint2 loop_bound_26 = uint2(4294967295u, 4294967295u);
+            bool loop_init_23 = true;
             while(true) {
-                if (all(loop_bound_25 == uint2(0u, 0u))) { break; }
-                loop_bound_25 -= uint2(loop_bound_25.y == 0u, 1u);
-                if (!loop_init_22) {
+                if (all(loop_bound_26 == uint2(0u, 0u))) { break; }
+                loop_bound_26 -= uint2(loop_bound_26.y == 0u, 1u);
+                if (!loop_init_23) {
                     uint _e614 = j_2;
                     j_2 = (_e614 + 1u);
                 }
-                loop_init_22 = false;
+                loop_init_23 = false;
                 uint _e585 = j_2;
                 if ((_e585 < K)) {
                     bool _e590 = known;
@@ -2915,16 +2956,16 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
             t = _e651;
             uint _e652 = k_1;
             j_3 = _e652;
-            uint2 loop_bound_26 = uint2(4294967295u, 4294967295u);
-            bool loop_init_23 = true;
+            uint2 loop_bound_27 = uint2(4294967295u, 4294967295u);
+            bool loop_init_24 = true;
             while(true) {
-                if (all(loop_bound_26 == uint2(0u, 0u))) { break; }
-                loop_bound_26 -= uint2(loop_bound_26.y == 0u, 1u);
-                if (!loop_init_23) {
+                if (all(loop_bound_27 == uint2(0u, 0u))) { break; }
+                loop_bound_27 -= uint2(loop_bound_27.y == 0u, 1u);
+                if (!loop_init_24) {
                     uint _e669 = j_3;
                     j_3 = (_e669 + 1u);
                 }
-                loop_init_23 = false;
+                loop_init_24 = false;
                 uint _e654 = j_3;
                 if ((_e654 < K)) {
                 } else {
@@ -2944,16 +2985,16 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
             }
         }
     }
-    uint2 loop_bound_27 = uint2(4294967295u, 4294967295u);
-    bool loop_init_24 = true;
+    uint2 loop_bound_28 = uint2(4294967295u, 4294967295u);
+    bool loop_init_25 = true;
     while(true) {
-        if (all(loop_bound_27 == uint2(0u, 0u))) { break; }
-        loop_bound_27 -= uint2(loop_bound_27.y == 0u, 1u);
-        if (!loop_init_24) {
+        if (all(loop_bound_28 == uint2(0u, 0u))) { break; }
+        loop_bound_28 -= uint2(loop_bound_28.y == 0u, 1u);
+        if (!loop_init_25) {
             uint _e714 = q_5;
             q_5 = (_e714 + 1u);
         }
-        loop_init_24 = false;
+        loop_init_25 = false;
         uint _e676 = q_5;
         if ((_e676 < K)) {
         } else {

@@ -370,8 +370,8 @@ bool sphere_overlaps_aabb(
     metal::float3 bmin,
     metal::float3 bmax
 ) {
-    metal::float3 q_8 = metal::clamp(c_1, bmin, bmax);
-    metal::float3 v_6 = q_8 - c_1;
+    metal::float3 q_9 = metal::clamp(c_1, bmin, bmax);
+    metal::float3 v_6 = q_9 - c_1;
     return metal::dot(v_6, v_6) <= (r_2 * r_2);
 }
 
@@ -964,8 +964,8 @@ float ray_triangle(
     if (_e28) {
         return -1.0;
     }
-    metal::float3 q_9 = metal::cross(s_12, e1_);
-    float v_9 = metal::dot(d_3, q_9) * inv;
+    metal::float3 q_10 = metal::cross(s_12, e1_);
+    float v_9 = metal::dot(d_3, q_10) * inv;
     if (!((v_9 < 0.0))) {
         local_26 = (u_4 + v_9) > 1.0;
     } else {
@@ -975,7 +975,7 @@ float ray_triangle(
     if (_e42) {
         return -1.0;
     }
-    float t_7 = metal::dot(e2_, q_9) * inv;
+    float t_7 = metal::dot(e2_, q_10) * inv;
     if (t_7 > t_min) {
         local_27 = t_7 < t_max_1;
     } else {
@@ -2080,12 +2080,16 @@ bool reached_before(
     device type_12 const& lights,
     constant ReuseParams& reuse,
     device type_12 const& lights_prev,
+    device type_16 const& reuse_pixels,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     bool local_41 = {};
     bool local_42 = {};
     bool local_43 = {};
     bool local_44 = {};
+    uint q_7 = 0u;
+    bool local_45 = {};
+    bool local_46 = {};
     bool _e5 = history_vouches(li_11, cells_5, d_7, view, reuse, lights_prev, _buffer_sizes);
     if (!(_e5)) {
         return false;
@@ -2119,13 +2123,51 @@ bool reached_before(
     if (_e47) {
         return true;
     }
-    float _e51 = view.shadow_offset;
-    metal::float3 _e54 = reuse.prev_eye;
-    float eps_5 = _e51 * metal::length(_e54 - d_7.x);
-    float _e65 = grid_coordinate(cells_5);
-    float _e68 = grid_coordinate(cells_5 << 16u);
-    Connection _e70 = connect_record(lp, d_7.x, d_7.n, d_7.n, UNRANGED, UNRANGED, 1.0, _e65, _e68, eps_5, true, geo_nodes, geo_tris, _buffer_sizes);
-    return metal::any(_e70.e > metal::float3(0.0));
+    metal::uint2 _e49 = sample_key(li_11, cells_5, lights, _buffer_sizes);
+    uint2 loop_bound_11 = uint2(4294967295u);
+    bool loop_init_8 = true;
+    while(true) {
+        if (metal::all(loop_bound_11 == uint2(0u))) { break; }
+        loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
+        if (!loop_init_8) {
+            uint _e85 = q_7;
+            q_7 = _e85 + 1u;
+        }
+        loop_init_8 = false;
+        uint _e52 = q_7;
+        if (_e52 < K) {
+        } else {
+            break;
+        }
+        {
+            uint _e57 = previous_index(d_7.pixel, view, reuse);
+            uint _e60 = q_7;
+            ReuseSlot h_4 = reuse_pixels[_e57].slots.inner[_e60];
+            if (h_4.w > 0.0) {
+                local_45 = h_4.light < (1 + (_buffer_sizes.size8 - 0 - 64) / 64);
+            } else {
+                local_45 = false;
+            }
+            bool _e73 = local_45;
+            if (_e73) {
+                metal::uint2 _e78 = sample_key(h_4.light, h_4.u, lights, _buffer_sizes);
+                local_46 = metal::all(_e78 == _e49);
+            } else {
+                local_46 = false;
+            }
+            bool _e82 = local_46;
+            if (_e82) {
+                return true;
+            }
+        }
+    }
+    float _e89 = view.shadow_offset;
+    metal::float3 _e92 = reuse.prev_eye;
+    float eps_5 = _e89 * metal::length(_e92 - d_7.x);
+    float _e103 = grid_coordinate(cells_5);
+    float _e106 = grid_coordinate(cells_5 << 16u);
+    Connection _e108 = connect_record(lp, d_7.x, d_7.n, d_7.n, UNRANGED, UNRANGED, 1.0, _e103, _e106, eps_5, true, geo_nodes, geo_tris, _buffer_sizes);
+    return metal::any(_e108.e > metal::float3(0.0));
 }
 
 metal::int2 naga_f2i32(metal::float2 value) {
@@ -2147,14 +2189,14 @@ uint reuse_domains(
     uint hr = {};
     uint j_5 = 0u;
     metal::float2 p_7 = {};
-    bool local_45 = {};
-    bool local_46 = {};
     bool local_47 = {};
-    bool seen_1 = {};
-    uint k_5 = {};
     bool local_48 = {};
     bool local_49 = {};
+    bool seen_1 = {};
+    uint k_5 = {};
     bool local_50 = {};
+    bool local_51 = {};
+    bool local_52 = {};
     uint _e9 = reuse.has_history;
     if (_e9 != 1u) {
         return 0u;
@@ -2170,16 +2212,16 @@ uint reuse_domains(
         return 0u;
     }
     hr = h_2;
-    uint2 loop_bound_11 = uint2(4294967295u);
-    bool loop_init_8 = true;
+    uint2 loop_bound_12 = uint2(4294967295u);
+    bool loop_init_9 = true;
     while(true) {
-        if (metal::all(loop_bound_11 == uint2(0u))) { break; }
-        loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
-        if (!loop_init_8) {
+        if (metal::all(loop_bound_12 == uint2(0u))) { break; }
+        loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
+        if (!loop_init_9) {
             uint _e176 = j_5;
             j_5 = _e176 + 1u;
         }
-        loop_init_8 = false;
+        loop_init_9 = false;
         uint _e41 = j_5;
         if (_e41 < DOMAINS) {
         } else {
@@ -2207,25 +2249,25 @@ uint reuse_domains(
             metal::float2 _e63 = p_7;
             metal::int2 t_9 = naga_f2i32(metal::rint(_e63));
             if (!((t_9.x < 0))) {
-                local_45 = t_9.y < 0;
-            } else {
-                local_45 = true;
-            }
-            bool _e76 = local_45;
-            if (!(_e76)) {
-                uint _e83 = view.width;
-                local_46 = t_9.x >= static_cast<int>(_e83);
-            } else {
-                local_46 = true;
-            }
-            bool _e87 = local_46;
-            if (!(_e87)) {
-                uint _e94 = view.height;
-                local_47 = t_9.y >= static_cast<int>(_e94);
+                local_47 = t_9.y < 0;
             } else {
                 local_47 = true;
             }
-            bool _e98 = local_47;
+            bool _e76 = local_47;
+            if (!(_e76)) {
+                uint _e83 = view.width;
+                local_48 = t_9.x >= static_cast<int>(_e83);
+            } else {
+                local_48 = true;
+            }
+            bool _e87 = local_48;
+            if (!(_e87)) {
+                uint _e94 = view.height;
+                local_49 = t_9.y >= static_cast<int>(_e94);
+            } else {
+                local_49 = true;
+            }
+            bool _e98 = local_49;
             if (_e98) {
                 continue;
             }
@@ -2233,16 +2275,16 @@ uint reuse_domains(
             uint pixel = (static_cast<uint>(t_9.y) * _e103) + static_cast<uint>(t_9.x);
             seen_1 = false;
             k_5 = 0u;
-            uint2 loop_bound_12 = uint2(4294967295u);
-            bool loop_init_9 = true;
+            uint2 loop_bound_13 = uint2(4294967295u);
+            bool loop_init_10 = true;
             while(true) {
-                if (metal::all(loop_bound_12 == uint2(0u))) { break; }
-                loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
-                if (!loop_init_9) {
+                if (metal::all(loop_bound_13 == uint2(0u))) { break; }
+                loop_bound_13 -= uint2(loop_bound_13.y == 0u, 1u);
+                if (!loop_init_10) {
                     uint _e127 = k_5;
                     k_5 = _e127 + 1u;
                 }
-                loop_init_9 = false;
+                loop_init_10 = false;
                 uint _e112 = k_5;
                 uint _e113 = nd;
                 if (_e112 < _e113) {
@@ -2254,11 +2296,11 @@ uint reuse_domains(
                     if (!(_e115)) {
                         uint _e119 = k_5;
                         uint _e122 = doms_1.inner[_e119].pixel;
-                        local_48 = _e122 == pixel;
+                        local_50 = _e122 == pixel;
                     } else {
-                        local_48 = true;
+                        local_50 = true;
                     }
-                    bool _e125 = local_48;
+                    bool _e125 = local_50;
                     seen_1 = _e125;
                 }
             }
@@ -2266,18 +2308,18 @@ uint reuse_domains(
             ReuseSurface s_13 = reuse_pixels[_e130].surface;
             bool _e134 = seen_1;
             if (!(_e134)) {
-                local_49 = !((s_13.m > 0.0));
+                local_51 = !((s_13.m > 0.0));
             } else {
-                local_49 = true;
+                local_51 = true;
             }
-            bool _e143 = local_49;
+            bool _e143 = local_51;
             if (!(_e143)) {
                 bool _e151 = history_matches(n_15, s_13.n, x_16, metal::dot(s_13.n, s_13.x), d_8);
-                local_50 = !(_e151);
+                local_52 = !(_e151);
             } else {
-                local_50 = true;
+                local_52 = true;
             }
-            bool _e154 = local_50;
+            bool _e154 = local_52;
             if (_e154) {
                 continue;
             }
@@ -2296,7 +2338,7 @@ uint reuse_domains(
 }
 
 ReuseSlot gris_combine(
-    uint q_7,
+    uint q_8,
     ReuseSlot cur,
     bool cur_ris,
     float cur_c,
@@ -2322,28 +2364,28 @@ ReuseSlot gris_combine(
     float out_target = 0.0;
     uint j_6 = {};
     ReuseSlot s_11 = {};
-    bool local_51 = {};
-    bool local_52 = {};
     bool local_53 = {};
-    float w_in = {};
     bool local_54 = {};
+    bool local_55 = {};
+    float w_in = {};
+    bool local_56 = {};
     float own_1 = {};
     float all_1 = {};
     uint k_6 = {};
     float t_4 = {};
-    bool local_55 = {};
-    bool local_56 = {};
+    bool local_57 = {};
+    bool local_58 = {};
     j_6 = k0_;
-    uint2 loop_bound_13 = uint2(4294967295u);
-    bool loop_init_10 = true;
+    uint2 loop_bound_14 = uint2(4294967295u);
+    bool loop_init_11 = true;
     while(true) {
-        if (metal::all(loop_bound_13 == uint2(0u))) { break; }
-        loop_bound_13 -= uint2(loop_bound_13.y == 0u, 1u);
-        if (!loop_init_10) {
+        if (metal::all(loop_bound_14 == uint2(0u))) { break; }
+        loop_bound_14 -= uint2(loop_bound_14.y == 0u, 1u);
+        if (!loop_init_11) {
             uint _e176 = j_6;
             j_6 = _e176 + 1u;
         }
-        loop_init_10 = false;
+        loop_init_11 = false;
         uint _e22 = j_6;
         if (_e22 <= k1_) {
         } else {
@@ -2356,46 +2398,46 @@ ReuseSlot gris_combine(
                 uint _e28 = j_6;
                 uint _e33 = doms_2.inner[_e28 - 1u].pixel;
                 uint _e34 = previous_index(_e33, view, reuse);
-                ReuseSlot _e38 = reuse_pixels[_e34].slots.inner[q_7];
+                ReuseSlot _e38 = reuse_pixels[_e34].slots.inner[q_8];
                 s_11 = _e38;
             }
             float _e40 = s_11.w;
             if (!(!((_e40 > 0.0)))) {
                 uint _e48 = s_11.light;
-                local_51 = _e48 >= (1 + (_buffer_sizes.size8 - 0 - 64) / 64);
+                local_53 = _e48 >= (1 + (_buffer_sizes.size8 - 0 - 64) / 64);
             } else {
-                local_51 = true;
+                local_53 = true;
             }
-            bool _e53 = local_51;
+            bool _e53 = local_53;
             if (_e53) {
                 continue;
             }
             uint _e54 = j_6;
             if (_e54 > k0_) {
                 uint _e60 = reuse.visibility;
-                local_52 = _e60 == 1u;
+                local_54 = _e60 == 1u;
             } else {
-                local_52 = false;
+                local_54 = false;
             }
-            bool _e64 = local_52;
+            bool _e64 = local_54;
             if (_e64) {
                 uint _e68 = s_11.light;
                 uint _e70 = s_11.u;
                 uint _e71 = j_6;
                 Domain _e75 = doms_2.inner[_e71 - 1u];
                 bool _e76 = history_vouches(_e68, _e70, _e75, view, reuse, lights_prev, _buffer_sizes);
-                local_53 = !(_e76);
+                local_55 = !(_e76);
             } else {
-                local_53 = false;
+                local_55 = false;
             }
-            bool _e79 = local_53;
+            bool _e79 = local_55;
             if (_e79) {
                 continue;
             }
             uint _e82 = s_11.light;
             GpuLight _e84 = lights[_e82];
             uint _e86 = s_11.u;
-            float _e87 = reuse_target(q_7, _e84, _e86, x_17, n_16, m_5, geo_nodes, geo_tris, _buffer_sizes);
+            float _e87 = reuse_target(q_8, _e84, _e86, x_17, n_16, m_5, geo_nodes, geo_tris, _buffer_sizes);
             if (!((_e87 > 0.0))) {
                 continue;
             }
@@ -2403,11 +2445,11 @@ ReuseSlot gris_combine(
             w_in = _e92;
             uint _e94 = j_6;
             if (_e94 == k0_) {
-                local_54 = cur_ris;
+                local_56 = cur_ris;
             } else {
-                local_54 = false;
+                local_56 = false;
             }
-            bool _e99 = local_54;
+            bool _e99 = local_56;
             if (_e99) {
                 float _e101 = s_11.w;
                 w_in = _e101 / _e87;
@@ -2416,16 +2458,16 @@ ReuseSlot gris_combine(
             float _e105 = own_1;
             all_1 = _e105;
             k_6 = k0_;
-            uint2 loop_bound_14 = uint2(4294967295u);
-            bool loop_init_11 = true;
+            uint2 loop_bound_15 = uint2(4294967295u);
+            bool loop_init_12 = true;
             while(true) {
-                if (metal::all(loop_bound_14 == uint2(0u))) { break; }
-                loop_bound_14 -= uint2(loop_bound_14.y == 0u, 1u);
-                if (!loop_init_11) {
+                if (metal::all(loop_bound_15 == uint2(0u))) { break; }
+                loop_bound_15 -= uint2(loop_bound_15.y == 0u, 1u);
+                if (!loop_init_12) {
                     uint _e154 = k_6;
                     k_6 = _e154 + 1u;
                 }
-                loop_init_11 = false;
+                loop_init_12 = false;
                 uint _e108 = k_6;
                 if (_e108 < k1_) {
                 } else {
@@ -2435,11 +2477,11 @@ ReuseSlot gris_combine(
                     t_4 = 0.0;
                     uint _e112 = j_6;
                     if (!((_e112 > k0_))) {
-                        local_55 = cur_reached;
+                        local_57 = cur_reached;
                     } else {
-                        local_55 = true;
+                        local_57 = true;
                     }
-                    bool _e118 = local_55;
+                    bool _e118 = local_57;
                     if (_e118) {
                         uint _e119 = k_6;
                         float _e122 = doms_2.inner[_e119].c;
@@ -2452,7 +2494,7 @@ ReuseSlot gris_combine(
                         metal::float3 _e137 = doms_2.inner[_e134].n;
                         uint _e138 = k_6;
                         Material _e141 = doms_2.inner[_e138].m;
-                        float _e142 = reuse_target(q_7, _e127, _e129, _e133, _e137, _e141, geo_nodes, geo_tris, _buffer_sizes);
+                        float _e142 = reuse_target(q_8, _e127, _e129, _e133, _e137, _e141, geo_nodes, geo_tris, _buffer_sizes);
                         t_4 = _e122 * _e142;
                     }
                     float _e144 = all_1;
@@ -2480,11 +2522,11 @@ ReuseSlot gris_combine(
                 uint _e169 = hs_1;
                 float _e170 = xi_from_bits(_e169);
                 bool _e171 = weighted_replace(_e159, _e168, _e170);
-                local_56 = _e171;
+                local_58 = _e171;
             } else {
-                local_56 = false;
+                local_58 = false;
             }
-            bool _e173 = local_56;
+            bool _e173 = local_58;
             if (_e173) {
                 ReuseSlot _e174 = s_11;
                 out = _e174;
@@ -2677,16 +2719,16 @@ kernel void main_(
     h = _e138;
     hc = _e137;
     TileWalk _e160 = tile_walk_begin(lid, x_20, _e114.w, has_3, bsh_nodes, wg_lo, wg_hi, wg_box, tile_list, subtree_at, tile_scale, tile_total, _buffer_sizes);
-    uint2 loop_bound_15 = uint2(4294967295u);
-    bool loop_init_12 = true;
+    uint2 loop_bound_16 = uint2(4294967295u);
+    bool loop_init_13 = true;
     while(true) {
-        if (metal::all(loop_bound_15 == uint2(0u))) { break; }
-        loop_bound_15 -= uint2(loop_bound_15.y == 0u, 1u);
-        if (!loop_init_12) {
+        if (metal::all(loop_bound_16 == uint2(0u))) { break; }
+        loop_bound_16 -= uint2(loop_bound_16.y == 0u, 1u);
+        if (!loop_init_13) {
             uint _e259 = start;
             start = _e259 + TILE_LIST;
         }
-        loop_init_12 = false;
+        loop_init_13 = false;
         uint _e163 = start;
         if (_e163 < _e160.total) {
         } else {
@@ -2696,16 +2738,16 @@ kernel void main_(
             uint _e166 = start;
             uint _e167 = tile_walk_fill(lid, _e160, _e166, bsh_nodes, tile_list, subtree_at, _buffer_sizes);
             j = 0u;
-            uint2 loop_bound_16 = uint2(4294967295u);
-            bool loop_init_13 = true;
+            uint2 loop_bound_17 = uint2(4294967295u);
+            bool loop_init_14 = true;
             while(true) {
-                if (metal::all(loop_bound_16 == uint2(0u))) { break; }
-                loop_bound_16 -= uint2(loop_bound_16.y == 0u, 1u);
-                if (!loop_init_13) {
+                if (metal::all(loop_bound_17 == uint2(0u))) { break; }
+                loop_bound_17 -= uint2(loop_bound_17.y == 0u, 1u);
+                if (!loop_init_14) {
                     uint _e257 = j;
                     j = _e257 + 1u;
                 }
-                loop_init_13 = false;
+                loop_init_14 = false;
                 uint _e170 = j;
                 if (_e170 < _e167) {
                 } else {
@@ -2752,16 +2794,16 @@ kernel void main_(
                         metal::float3 _e218 = total;
                         total = _e218 + _e214;
                         q = 0u;
-                        uint2 loop_bound_17 = uint2(4294967295u);
-                        bool loop_init_14 = true;
+                        uint2 loop_bound_18 = uint2(4294967295u);
+                        bool loop_init_15 = true;
                         while(true) {
-                            if (metal::all(loop_bound_17 == uint2(0u))) { break; }
-                            loop_bound_17 -= uint2(loop_bound_17.y == 0u, 1u);
-                            if (!loop_init_14) {
+                            if (metal::all(loop_bound_18 == uint2(0u))) { break; }
+                            loop_bound_18 -= uint2(loop_bound_18.y == 0u, 1u);
+                            if (!loop_init_15) {
                                 uint _e254 = q;
                                 q = _e254 + 1u;
                             }
-                            loop_init_14 = false;
+                            loop_init_15 = false;
                             uint _e222 = q;
                             if (_e222 < K) {
                             } else {
@@ -2829,16 +2871,16 @@ kernel void main_(
     float confidence = 1.0 + (own_history ? _e310 : 0.0);
     uint _e316 = reuse_stream(_e137, 1u);
     hs = _e316;
-    uint2 loop_bound_18 = uint2(4294967295u);
-    bool loop_init_15 = true;
+    uint2 loop_bound_19 = uint2(4294967295u);
+    bool loop_init_16 = true;
     while(true) {
-        if (metal::all(loop_bound_18 == uint2(0u))) { break; }
-        loop_bound_18 -= uint2(loop_bound_18.y == 0u, 1u);
-        if (!loop_init_15) {
+        if (metal::all(loop_bound_19 == uint2(0u))) { break; }
+        loop_bound_19 -= uint2(loop_bound_19.y == 0u, 1u);
+        if (!loop_init_16) {
             uint _e351 = q_1;
             q_1 = _e351 + 1u;
         }
-        loop_init_15 = false;
+        loop_init_16 = false;
         uint _e322 = q_1;
         if (_e322 < K) {
         } else {
@@ -2868,16 +2910,16 @@ kernel void main_(
     type_25 _e353 = fresh_keys;
     type_26 _e354 = fresh_held;
     type_17 _e355 = first_holders(_e353, _e354);
-    uint2 loop_bound_19 = uint2(4294967295u);
-    bool loop_init_16 = true;
+    uint2 loop_bound_20 = uint2(4294967295u);
+    bool loop_init_17 = true;
     while(true) {
-        if (metal::all(loop_bound_19 == uint2(0u))) { break; }
-        loop_bound_19 -= uint2(loop_bound_19.y == 0u, 1u);
-        if (!loop_init_16) {
+        if (metal::all(loop_bound_20 == uint2(0u))) { break; }
+        loop_bound_20 -= uint2(loop_bound_20.y == 0u, 1u);
+        if (!loop_init_17) {
             uint _e387 = q_2;
             q_2 = _e387 + 1u;
         }
-        loop_init_16 = false;
+        loop_init_17 = false;
         uint _e359 = q_2;
         if (_e359 < K) {
         } else {
@@ -2906,16 +2948,16 @@ kernel void main_(
             }
         }
     }
-    uint2 loop_bound_20 = uint2(4294967295u);
-    bool loop_init_17 = true;
+    uint2 loop_bound_21 = uint2(4294967295u);
+    bool loop_init_18 = true;
     while(true) {
-        if (metal::all(loop_bound_20 == uint2(0u))) { break; }
-        loop_bound_20 -= uint2(loop_bound_20.y == 0u, 1u);
-        if (!loop_init_17) {
+        if (metal::all(loop_bound_21 == uint2(0u))) { break; }
+        loop_bound_21 -= uint2(loop_bound_21.y == 0u, 1u);
+        if (!loop_init_18) {
             uint _e436 = q_3;
             q_3 = _e436 + 1u;
         }
-        loop_init_17 = false;
+        loop_init_18 = false;
         uint _e392 = q_3;
         if (_e392 < K) {
         } else {
@@ -2948,7 +2990,7 @@ kernel void main_(
                 uint _e420 = slot_cells.inner[_e418];
                 Domain _e422 = doms.inner[0];
                 metal::float3 _e423 = n;
-                bool _e424 = reached_before(_e417, _e420, _e422, x_20, _e423, geo_nodes, geo_tris, view, lights, reuse, lights_prev, _buffer_sizes);
+                bool _e424 = reached_before(_e417, _e420, _e422, x_20, _e423, geo_nodes, geo_tris, view, lights, reuse, lights_prev, reuse_pixels, _buffer_sizes);
                 fresh_before.inner[_e413] = _e424;
             } else {
                 uint _e425 = q_3;
@@ -2961,16 +3003,16 @@ kernel void main_(
             }
         }
     }
-    uint2 loop_bound_21 = uint2(4294967295u);
-    bool loop_init_18 = true;
+    uint2 loop_bound_22 = uint2(4294967295u);
+    bool loop_init_19 = true;
     while(true) {
-        if (metal::all(loop_bound_21 == uint2(0u))) { break; }
-        loop_bound_21 -= uint2(loop_bound_21.y == 0u, 1u);
-        if (!loop_init_18) {
+        if (metal::all(loop_bound_22 == uint2(0u))) { break; }
+        loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
+        if (!loop_init_19) {
             uint _e510 = q_4;
             q_4 = _e510 + 1u;
         }
-        loop_init_18 = false;
+        loop_init_19 = false;
         uint _e442 = q_4;
         if (_e442 < K) {
         } else {
@@ -3025,16 +3067,16 @@ kernel void main_(
             }
         }
     }
-    uint2 loop_bound_22 = uint2(4294967295u);
-    bool loop_init_19 = true;
+    uint2 loop_bound_23 = uint2(4294967295u);
+    bool loop_init_20 = true;
     while(true) {
-        if (metal::all(loop_bound_22 == uint2(0u))) { break; }
-        loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
-        if (!loop_init_19) {
+        if (metal::all(loop_bound_23 == uint2(0u))) { break; }
+        loop_bound_23 -= uint2(loop_bound_23.y == 0u, 1u);
+        if (!loop_init_20) {
             uint _e539 = k;
             k = _e539 + 1u;
         }
-        loop_init_19 = false;
+        loop_init_20 = false;
         uint _e516 = k;
         if (_e516 < K) {
         } else {
@@ -3057,16 +3099,16 @@ kernel void main_(
     type_25 _e541 = keys;
     type_26 _e542 = held;
     type_17 _e543 = first_holders(_e541, _e542);
-    uint2 loop_bound_23 = uint2(4294967295u);
-    bool loop_init_20 = true;
+    uint2 loop_bound_24 = uint2(4294967295u);
+    bool loop_init_21 = true;
     while(true) {
-        if (metal::all(loop_bound_23 == uint2(0u))) { break; }
-        loop_bound_23 -= uint2(loop_bound_23.y == 0u, 1u);
-        if (!loop_init_20) {
+        if (metal::all(loop_bound_24 == uint2(0u))) { break; }
+        loop_bound_24 -= uint2(loop_bound_24.y == 0u, 1u);
+        if (!loop_init_21) {
             uint _e672 = k_1;
             k_1 = _e672 + 1u;
         }
-        loop_init_20 = false;
+        loop_init_21 = false;
         uint _e547 = k_1;
         if (_e547 < K) {
         } else {
@@ -3081,16 +3123,16 @@ kernel void main_(
             w = metal::float3(0.0);
             uint _e557 = k_1;
             j_1 = _e557;
-            uint2 loop_bound_24 = uint2(4294967295u);
-            bool loop_init_21 = true;
+            uint2 loop_bound_25 = uint2(4294967295u);
+            bool loop_init_22 = true;
             while(true) {
-                if (metal::all(loop_bound_24 == uint2(0u))) { break; }
-                loop_bound_24 -= uint2(loop_bound_24.y == 0u, 1u);
-                if (!loop_init_21) {
+                if (metal::all(loop_bound_25 == uint2(0u))) { break; }
+                loop_bound_25 -= uint2(loop_bound_25.y == 0u, 1u);
+                if (!loop_init_22) {
                     uint _e577 = j_1;
                     j_1 = _e577 + 1u;
                 }
-                loop_init_21 = false;
+                loop_init_22 = false;
                 uint _e559 = j_1;
                 if (_e559 < K) {
                 } else {
@@ -3112,16 +3154,16 @@ kernel void main_(
             known = false;
             seen = false;
             j_2 = 0u;
-            uint2 loop_bound_25 = uint2(4294967295u);
-            bool loop_init_22 = true;
+            uint2 loop_bound_26 = uint2(4294967295u);
+            bool loop_init_23 = true;
             while(true) {
-                if (metal::all(loop_bound_25 == uint2(0u))) { break; }
-                loop_bound_25 -= uint2(loop_bound_25.y == 0u, 1u);
-                if (!loop_init_22) {
+                if (metal::all(loop_bound_26 == uint2(0u))) { break; }
+                loop_bound_26 -= uint2(loop_bound_26.y == 0u, 1u);
+                if (!loop_init_23) {
                     uint _e614 = j_2;
                     j_2 = _e614 + 1u;
                 }
-                loop_init_22 = false;
+                loop_init_23 = false;
                 uint _e585 = j_2;
                 if (_e585 < K) {
                     bool _e590 = known;
@@ -3185,16 +3227,16 @@ kernel void main_(
             t = _e651;
             uint _e652 = k_1;
             j_3 = _e652;
-            uint2 loop_bound_26 = uint2(4294967295u);
-            bool loop_init_23 = true;
+            uint2 loop_bound_27 = uint2(4294967295u);
+            bool loop_init_24 = true;
             while(true) {
-                if (metal::all(loop_bound_26 == uint2(0u))) { break; }
-                loop_bound_26 -= uint2(loop_bound_26.y == 0u, 1u);
-                if (!loop_init_23) {
+                if (metal::all(loop_bound_27 == uint2(0u))) { break; }
+                loop_bound_27 -= uint2(loop_bound_27.y == 0u, 1u);
+                if (!loop_init_24) {
                     uint _e669 = j_3;
                     j_3 = _e669 + 1u;
                 }
-                loop_init_23 = false;
+                loop_init_24 = false;
                 uint _e654 = j_3;
                 if (_e654 < K) {
                 } else {
@@ -3214,16 +3256,16 @@ kernel void main_(
             }
         }
     }
-    uint2 loop_bound_27 = uint2(4294967295u);
-    bool loop_init_24 = true;
+    uint2 loop_bound_28 = uint2(4294967295u);
+    bool loop_init_25 = true;
     while(true) {
-        if (metal::all(loop_bound_27 == uint2(0u))) { break; }
-        loop_bound_27 -= uint2(loop_bound_27.y == 0u, 1u);
-        if (!loop_init_24) {
+        if (metal::all(loop_bound_28 == uint2(0u))) { break; }
+        loop_bound_28 -= uint2(loop_bound_28.y == 0u, 1u);
+        if (!loop_init_25) {
             uint _e714 = q_5;
             q_5 = _e714 + 1u;
         }
-        loop_init_24 = false;
+        loop_init_25 = false;
         uint _e676 = q_5;
         if (_e676 < K) {
         } else {

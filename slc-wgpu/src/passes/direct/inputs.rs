@@ -160,13 +160,13 @@ pub struct DirectReuse {
     /// record's pick shares its weight with the history only where it
     /// reached the reprojected surface in the previous record, so where
     /// the camera or the pick's light moved, a pick that reaches the pixel
-    /// casts one more ray, from the previous surface to where its light
-    /// stood (8 picks in the shadow test, every light moving: 15.9 rays per
-    /// pixel against 10.0 still). Where occluders moved
-    /// ([`DirectPass::set_shadows`] with moved instances), the history has
-    /// no share of a pick whose previous ray crosses the box they moved in:
-    /// the pixels behind a moving object lose some history, not their
-    /// mean.
+    /// and the history does not hold casts one more ray, from the previous
+    /// surface to where its light stood (8 picks in the shadow test, every
+    /// light moving: 15.2 rays per pixel against 10.0 still). Where
+    /// occluders moved ([`DirectPass::set_shadows`] with moved instances),
+    /// the history has no share of a pick whose previous ray crosses the
+    /// box they moved in: the pixels behind a moving object lose some
+    /// history, not their mean.
     pub visibility: bool,
 }
 
