@@ -40,7 +40,7 @@ use slc_core::ray::{ray_aabb, ray_inverse3, ray_triangle, shadow_margin};
 use slc_cpu::geometry::Geometry;
 use slc_scene::lights::LightSet;
 use slc_scene::occluders::{Instance, Occluders};
-use slc_scene::scene::Scene;
+use slc_scene::scene::{Camera, Scene};
 use slc_tests::direct::unit_cube;
 use slc_tests::engine;
 use slc_tests::gpu;
@@ -170,12 +170,23 @@ fn seeded_frame(
     pass: &mut DirectPass,
     settings: DirectSettings,
 ) -> Vec<[f32; 4]> {
+    let camera = Scene::cornell_box().camera;
+    seen_frame(gpu, (&s.position, &s.normal, &camera), pass, settings)
+}
+
+/// [`seeded_frame`] on the G-buffer `(position, normal)` seen by `camera`.
+fn seen_frame(
+    gpu: &GpuContext,
+    (position, normal, camera): (&wgpu::TextureView, &wgpu::TextureView, &Camera),
+    pass: &mut DirectPass,
+    settings: DirectSettings,
+) -> Vec<[f32; 4]> {
     let out = engine::output(gpu, (W, H));
     let view = out.create_view(&Default::default());
     let inputs = DirectInputs {
-        view_projection: Some(Scene::cornell_box().camera.view_projection(W, H, 0.01, 100.0)),
+        view_projection: Some(camera.view_projection(W, H, 0.01, 100.0)),
         ..DirectInputs::new(
-            GBuffer { surface: Surface::Position(&s.position), normal: &s.normal, eye: s.eye },
+            GBuffer { surface: Surface::Position(position), normal, eye: camera.position },
             &view,
         )
     };
@@ -406,6 +417,8 @@ enum Motion {
     Lights,
     /// The second cube, by up to 2.5 cm a frame along each axis.
     Cube,
+    /// The camera, by up to 2 cm a frame along each axis.
+    Camera,
 }
 
 /// Resampled picks reused across frames ([`DirectReuse`]), 8 shadowed
@@ -422,7 +435,8 @@ enum Motion {
 /// the second cube moves by up to 2.5 cm a frame along each axis (the
 /// history has no share of a pick whose ray crosses the space the cube
 /// moved in: without that, 0.9906 of the brute force, a block 187
-/// standard errors dark), and with reuse of 2 neighbours.
+/// standard errors dark), with visibility reuse while the camera moves by
+/// up to 2 cm a frame along each axis, and with reuse of 2 neighbours.
 ///
 /// One last frame's relative RMSE, everything still: reuse below 0.85 of
 /// resampling without it, visibility reuse below half of reuse (measured
@@ -446,9 +460,20 @@ fn reused_picks_match_the_brute_force() {
         ("reuse, moving lights", Some(reuse), Motion::Lights),
         ("visibility reuse, moving lights", Some(visibility), Motion::Lights),
         ("visibility reuse, moving cube", Some(visibility), Motion::Cube),
+        ("visibility reuse, moving camera", Some(visibility), Motion::Camera),
         ("reuse with 2 neighbours", Some(DirectReuse { neighbours: 2, ..reuse }), Motion::Still),
     ];
     let mut occ = occ;
+    // The views of a moving camera (the last frame's is the setup's).
+    let cameras: Vec<(engine::UploadedGBuffer, Camera)> = (0..FRAMES - 1)
+        .map(|frame| {
+            let mut scene = Scene::cornell_box();
+            let d = offsets(frame + 100, 1, 0.04)[0];
+            scene.camera.position += d;
+            scene.camera.target += d;
+            (engine::upload_gbuffer(gpu, &scene, (W, H)), scene.camera)
+        })
+        .collect();
     let (mut noise, mut per_channel) = (Vec::new(), Vec::new());
     for (what, reuse, motion) in configs {
         let mut pass = reusing_pass(gpu, &s, k8, reuse);
@@ -473,7 +498,12 @@ fn reused_picks_match_the_brute_force() {
                         pass.set_shadows(Some(Shadows::new(&occ))).unwrap();
                     }
                     let settings = DirectSettings { culling, seed: 100 + run, frame };
-                    img = seeded_frame(gpu, &s, &mut pass, settings);
+                    img = match cameras.get(frame as usize) {
+                        Some((g, camera)) if motion == Motion::Camera => {
+                            seen_frame(gpu, (&g.position, &g.normal, camera), &mut pass, settings)
+                        }
+                        _ => seeded_frame(gpu, &s, &mut pass, settings),
+                    };
                 }
                 img
             })
