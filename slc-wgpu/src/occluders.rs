@@ -244,6 +244,31 @@ pub(crate) enum Moved {
 }
 
 impl Moved {
+    /// The box of instance `i` of `o`: its root node's, which holds its
+    /// world-space triangles; `Nowhere` for an instance of no triangle.
+    fn of_instance(o: &Occluders, i: usize) -> Moved {
+        let nodes = o.instance_blocks(i).0;
+        match o.nodes().get(nodes.start) {
+            Some(root) if !nodes.is_empty() => Moved::Inside(root.bmin, root.bmax),
+            _ => Moved::Nowhere,
+        }
+    }
+
+    /// The kernel's encoding (`ReuseParams::moved`, `moved_min`,
+    /// `moved_max`): 0 nowhere, 1 inside the box grown by a little more
+    /// than a float's rounding at its size (a ray that grazes a moved
+    /// triangle meets it), 2 everywhere.
+    pub(crate) fn encoded(self) -> (u32, Vec3, Vec3) {
+        match self {
+            Moved::Nowhere => (0, Vec3::ZERO, Vec3::ZERO),
+            Moved::Inside(a, b) => {
+                let pad = Vec3::splat(1e-4 * a.abs().max(b.abs()).max_element() + 1e-6);
+                (1, a - pad, b + pad)
+            }
+            Moved::Everywhere => (2, Vec3::ZERO, Vec3::ZERO),
+        }
+    }
+
     /// The region holding both changes.
     pub(crate) fn join(self, other: Moved) -> Moved {
         match (self, other) {
@@ -252,11 +277,6 @@ impl Moved {
             (Moved::Inside(a0, a1), Moved::Inside(b0, b1)) => Moved::Inside(a0.min(b0), a1.max(b1)),
         }
     }
-}
-
-/// The box of triangles `tris`, `Nowhere` for none.
-fn bounds(tris: &[[Vec3; 3]]) -> Moved {
-    tris.iter().flatten().fold(Moved::Nowhere, |m, &v| m.join(Moved::Inside(v, v)))
 }
 
 /// Occluders for shadow rays, uploaded: nodes and triangles (no material,
@@ -295,7 +315,7 @@ impl GpuOccluders {
     }
 
     fn boxes_of(o: &Occluders) -> Vec<Moved> {
-        (0..o.instances().len()).map(|i| bounds(&o.triangles()[o.instance_blocks(i).1])).collect()
+        (0..o.instances().len()).map(|i| Moved::of_instance(o, i)).collect()
     }
 
     /// Triangles in the kernels' layout, no material, no light.
@@ -340,7 +360,7 @@ impl GpuOccluders {
                 );
                 let gt = Self::untagged(&o.triangles()[tris.clone()]);
                 gpu.queue.write_buffer(&self.tris, tri_at(tris.start), bytemuck::cast_slice(&gt));
-                let now = bounds(&o.triangles()[tris]);
+                let now = Moved::of_instance(o, i);
                 changed = changed.join(self.boxes[i]).join(now);
                 self.boxes[i] = now;
             }

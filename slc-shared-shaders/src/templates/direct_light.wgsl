@@ -204,7 +204,7 @@ fn reuse_target(q: u32, l: GpuLight, cells: u32, x: vec3f, n: vec3f, m: Material
 {% if counters %}
     evaluations += 1u;
 {% endif %}
-    let c = connect_record(l, x, n, n, UNRANGED, UNRANGED, 1.0, grid_coordinate(cells), grid_coordinate(cells << 16u), 0.0, false);
+    let c = sample_connection(l, cells, x, n, 0.0, false);
     return slot_target(output_of(shade_connection(c, x, n, m)), q, K);
 }
 
@@ -227,17 +227,23 @@ fn sample_key(li: u32, cells: u32) -> vec2u {
     return vec2u(li, select(0u, cells, lights[li].kind == LIGHT_TRIANGLE));
 }
 
-/// The reused pick of light `li` at grid cells `cells` connected to `x`
-/// (normal `n`), unranged, weight 1; shadowed (its ray leaving
+/// The reused pick of light record `l` at grid cells `cells` connected
+/// to `x` (normal `n`), unranged, weight 1; shadowed (its ray leaving
 /// `x + eps·n`) where `trace`.
-fn sample_connection(li: u32, cells: u32, x: vec3f, n: vec3f, eps: f32, trace: bool) -> Connection {
-    return connect_record(lights[li], x, n, n, UNRANGED, UNRANGED, 1.0, grid_coordinate(cells), grid_coordinate(cells << 16u), eps, trace);
+fn sample_connection(l: GpuLight, cells: u32, x: vec3f, n: vec3f, eps: f32, trace: bool) -> Connection {
+    return connect_record(l, x, n, n, UNRANGED, UNRANGED, 1.0, grid_coordinate(cells), grid_coordinate(cells << 16u), eps, trace);
 }
 
 /// Whether a pick whose unshadowed target is positive reaches `x`: its
 /// shadow ray is not blocked (its connection keeps light).
-fn sample_reaches(li: u32, cells: u32, x: vec3f, n: vec3f, eps: f32) -> bool {
-    return any(sample_connection(li, cells, x, n, eps, true).e > vec3f(0.0));
+fn sample_reaches(l: GpuLight, cells: u32, x: vec3f, n: vec3f, eps: f32) -> bool {
+    return any(sample_connection(l, cells, x, n, eps, true).e > vec3f(0.0));
+}
+
+/// The normal offset of a shadow ray from domain `d`'s surface, as its
+/// record cast them (`view.shadow_offset` × its eye distance).
+fn domain_offset(d: Domain) -> f32 {
+    return view.shadow_offset * length(reuse.prev_eye - d.x);
 }
 
 /// Whether this record can tell what the previous one's shadow ray saw
@@ -254,7 +260,7 @@ fn history_vouches(li: u32, cells: u32, d: Domain) -> bool {
     if reuse.moved == 2u {
         return false;
     }
-    let a = d.x + d.n * (view.shadow_offset * length(reuse.prev_eye - d.x));
+    let a = d.x + d.n * domain_offset(d);
     let b = light_point(lights_prev[li], grid_coordinate(cells), grid_coordinate(cells << 16u));
     return ray_aabb(a, ray_inverse3(b - a), reuse.moved_min, reuse.moved_max, 1.0) < 0.0;
 }
@@ -284,9 +290,7 @@ fn reached_before(li: u32, cells: u32, d: Domain, x: vec3f, n: vec3f) -> bool {
             return true;
         }
     }
-    let eps = view.shadow_offset * length(reuse.prev_eye - d.x);
-    let c = connect_record(lp, d.x, d.n, d.n, UNRANGED, UNRANGED, 1.0, grid_coordinate(cells), grid_coordinate(cells << 16u), eps, true);
-    return any(c.e > vec3f(0.0));
+    return sample_reaches(lp, cells, d.x, d.n, domain_offset(d));
 }
 
 /// The previous-frame pixels pixel `x` (normal `n`, distance `d` from the
@@ -616,7 +620,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u, @builtin(local_invocation_ind
     var fresh_visible: array<bool, K>;
     for (var q = 0u; q < K; q++) {
         if fresh_firsts[q] == q {
-            fresh_visible[q] = sample_reaches(slot_light[q], slot_cells[q], x, n, eps);
+            fresh_visible[q] = sample_reaches(lights[slot_light[q]], slot_cells[q], x, n, eps);
         } else if fresh_firsts[q] < K {
             fresh_visible[q] = fresh_visible[fresh_firsts[q]];
         }
@@ -683,7 +687,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u, @builtin(local_invocation_ind
         // A known occluded sample adds nothing and is not evaluated.
         var shaded = Shaded(vec3f(0.0), vec3f(0.0), vec3f(0.0));
         if !known || seen {
-            shaded = shade_connection(sample_connection(fin[k].light, fin[k].u, x, n, eps, !known), x, n, m);
+            shaded = shade_connection(sample_connection(lights[fin[k].light], fin[k].u, x, n, eps, !known), x, n, m);
         }
         t = add(t, scaled(shaded, w));
         for (var j = k; j < K; j++) {

@@ -1473,18 +1473,23 @@ fn next_index(i_5: u32) -> u32 {
     return (((_e3 * _e6) * _e10) + i_5);
 }
 
-fn reuse_target(q_6: u32, l_4: GpuLight, cells: u32, x_11: vec3<f32>, n_10: vec3<f32>, m_3: Material) -> f32 {
+fn sample_connection(l_4: GpuLight, cells: u32, x_11: vec3<f32>, n_10: vec3<f32>, eps_3: f32, trace_4: bool) -> Connection {
     let _e9 = grid_coordinate(cells);
     let _e12 = grid_coordinate((cells << 16u));
-    let _e15 = connect_record(l_4, x_11, n_10, n_10, UNRANGED, UNRANGED, 1f, _e9, _e12, 0f, false);
-    let _e16 = shade_connection(_e15, x_11, n_10, m_3);
-    let _e17 = output_of(_e16);
-    let _e19 = slot_target(_e17, q_6, K);
-    return _e19;
+    let _e13 = connect_record(l_4, x_11, n_10, n_10, UNRANGED, UNRANGED, 1f, _e9, _e12, eps_3, trace_4);
+    return _e13;
 }
 
-fn reuse_surface(x_12: vec3<f32>, n_11: vec3<f32>, m_4: Material, c_10: f32) -> ReuseSurface {
-    return ReuseSurface(x_12, c_10, n_11, pack4x8unorm(vec4<f32>(m_4.base, m_4.metallic)), pack2x16unorm(vec2<f32>(saturate(m_4.roughness), saturate(m_4.reflectance))), 0u, 0u, 0u);
+fn reuse_target(q_6: u32, l_5: GpuLight, cells_1: u32, x_12: vec3<f32>, n_11: vec3<f32>, m_3: Material) -> f32 {
+    let _e8 = sample_connection(l_5, cells_1, x_12, n_11, 0f, false);
+    let _e9 = shade_connection(_e8, x_12, n_11, m_3);
+    let _e10 = output_of(_e9);
+    let _e12 = slot_target(_e10, q_6, K);
+    return _e12;
+}
+
+fn reuse_surface(x_13: vec3<f32>, n_12: vec3<f32>, m_4: Material, c_10: f32) -> ReuseSurface {
+    return ReuseSurface(x_13, c_10, n_12, pack4x8unorm(vec4<f32>(m_4.base, m_4.metallic)), pack2x16unorm(vec2<f32>(saturate(m_4.roughness), saturate(m_4.reflectance))), 0u, 0u, 0u);
 }
 
 fn reuse_material(s_10: ReuseSurface, eye: vec3<f32>) -> Material {
@@ -1494,25 +1499,23 @@ fn reuse_material(s_10: ReuseSurface, eye: vec3<f32>) -> Material {
     return _e13;
 }
 
-fn sample_key(li_7: u32, cells_1: u32) -> vec2<u32> {
+fn sample_key(li_7: u32, cells_2: u32) -> vec2<u32> {
     let _e6 = lights[li_7].kind;
-    return vec2<u32>(li_7, select(0u, cells_1, (_e6 == LIGHT_TRIANGLE)));
+    return vec2<u32>(li_7, select(0u, cells_2, (_e6 == LIGHT_TRIANGLE)));
 }
 
-fn sample_connection(li_8: u32, cells_2: u32, x_13: vec3<f32>, n_12: vec3<f32>, eps_3: f32, trace_4: bool) -> Connection {
-    let _e8 = lights[li_8];
-    let _e12 = grid_coordinate(cells_2);
-    let _e15 = grid_coordinate((cells_2 << 16u));
-    let _e16 = connect_record(_e8, x_13, n_12, n_12, UNRANGED, UNRANGED, 1f, _e12, _e15, eps_3, trace_4);
-    return _e16;
-}
-
-fn sample_reaches(li_9: u32, cells_3: u32, x_14: vec3<f32>, n_13: vec3<f32>, eps_4: f32) -> bool {
-    let _e6 = sample_connection(li_9, cells_3, x_14, n_13, eps_4, true);
+fn sample_reaches(l_6: GpuLight, cells_3: u32, x_14: vec3<f32>, n_13: vec3<f32>, eps_4: f32) -> bool {
+    let _e6 = sample_connection(l_6, cells_3, x_14, n_13, eps_4, true);
     return any((_e6.e > vec3(0f)));
 }
 
-fn history_vouches(li_10: u32, cells_4: u32, d_6: Domain) -> bool {
+fn domain_offset(d_6: Domain) -> f32 {
+    let _e3 = view.shadow_offset;
+    let _e6 = reuse.prev_eye;
+    return (_e3 * length((_e6 - d_6.x)));
+}
+
+fn history_vouches(li_8: u32, cells_4: u32, d_7: Domain) -> bool {
     let _e5 = reuse.moved;
     if (_e5 == 0u) {
         return true;
@@ -1521,21 +1524,20 @@ fn history_vouches(li_10: u32, cells_4: u32, d_6: Domain) -> bool {
     if (_e11 == 2u) {
         return false;
     }
-    let _e19 = view.shadow_offset;
-    let _e22 = reuse.prev_eye;
-    let a_10 = (d_6.x + (d_6.n * (_e19 * length((_e22 - d_6.x)))));
-    let _e31 = lights_prev[li_10];
-    let _e32 = grid_coordinate(cells_4);
-    let _e35 = grid_coordinate((cells_4 << 16u));
-    let _e36 = light_point(_e31, _e32, _e35);
-    let _e38 = ray_inverse3_((_e36 - a_10));
-    let _e41 = reuse.moved_min;
-    let _e44 = reuse.moved_max;
-    let _e46 = ray_aabb(a_10, _e38, _e41, _e44, 1f);
-    return (_e46 < 0f);
+    let _e17 = domain_offset(d_7);
+    let a_10 = (d_7.x + (d_7.n * _e17));
+    let _e22 = lights_prev[li_8];
+    let _e23 = grid_coordinate(cells_4);
+    let _e26 = grid_coordinate((cells_4 << 16u));
+    let _e27 = light_point(_e22, _e23, _e26);
+    let _e29 = ray_inverse3_((_e27 - a_10));
+    let _e32 = reuse.moved_min;
+    let _e35 = reuse.moved_max;
+    let _e37 = ray_aabb(a_10, _e29, _e32, _e35, 1f);
+    return (_e37 < 0f);
 }
 
-fn reached_before(li_11: u32, cells_5: u32, d_7: Domain, x_15: vec3<f32>, n_14: vec3<f32>) -> bool {
+fn reached_before(li_9: u32, cells_5: u32, d_8: Domain, x_15: vec3<f32>, n_14: vec3<f32>) -> bool {
     var local_41: bool;
     var local_42: bool;
     var local_43: bool;
@@ -1544,32 +1546,32 @@ fn reached_before(li_11: u32, cells_5: u32, d_7: Domain, x_15: vec3<f32>, n_14: 
     var local_45: bool;
     var local_46: bool;
 
-    let _e5 = history_vouches(li_11, cells_5, d_7);
+    let _e5 = history_vouches(li_9, cells_5, d_8);
     if !(_e5) {
         return false;
     }
-    let l_5 = lights[li_11];
-    let lp = lights_prev[li_11];
-    if all((d_7.x == x_15)) {
-        local_41 = all((d_7.n == n_14));
+    let l_7 = lights[li_9];
+    let lp = lights_prev[li_9];
+    if all((d_8.x == x_15)) {
+        local_41 = all((d_8.n == n_14));
     } else {
         local_41 = false;
     }
     let _e23 = local_41;
     if _e23 {
-        local_42 = all((l_5.p0_ == lp.p0_));
+        local_42 = all((l_7.p0_ == lp.p0_));
     } else {
         local_42 = false;
     }
     let _e31 = local_42;
     if _e31 {
-        local_43 = all((l_5.p1_ == lp.p1_));
+        local_43 = all((l_7.p1_ == lp.p1_));
     } else {
         local_43 = false;
     }
     let _e39 = local_43;
     if _e39 {
-        local_44 = all((l_5.p2_ == lp.p2_));
+        local_44 = all((l_7.p2_ == lp.p2_));
     } else {
         local_44 = false;
     }
@@ -1577,7 +1579,7 @@ fn reached_before(li_11: u32, cells_5: u32, d_7: Domain, x_15: vec3<f32>, n_14: 
     if _e47 {
         return true;
     }
-    let _e49 = sample_key(li_11, cells_5);
+    let _e49 = sample_key(li_9, cells_5);
     loop {
         let _e52 = q_7;
         if (_e52 < K) {
@@ -1585,7 +1587,7 @@ fn reached_before(li_11: u32, cells_5: u32, d_7: Domain, x_15: vec3<f32>, n_14: 
             break;
         }
         {
-            let _e57 = previous_index(d_7.pixel);
+            let _e57 = previous_index(d_8.pixel);
             let _e60 = q_7;
             let h_4 = reuse_pixels[_e57].slots[_e60];
             if (h_4.w > 0f) {
@@ -1610,16 +1612,12 @@ fn reached_before(li_11: u32, cells_5: u32, d_7: Domain, x_15: vec3<f32>, n_14: 
             q_7 = (_e85 + 1u);
         }
     }
-    let _e89 = view.shadow_offset;
-    let _e92 = reuse.prev_eye;
-    let eps_5 = (_e89 * length((_e92 - d_7.x)));
-    let _e103 = grid_coordinate(cells_5);
-    let _e106 = grid_coordinate((cells_5 << 16u));
-    let _e108 = connect_record(lp, d_7.x, d_7.n, d_7.n, UNRANGED, UNRANGED, 1f, _e103, _e106, eps_5, true);
-    return any((_e108.e > vec3(0f)));
+    let _e89 = domain_offset(d_8);
+    let _e90 = sample_reaches(lp, cells_5, d_8.x, d_8.n, _e89);
+    return _e90;
 }
 
-fn reuse_domains(x_16: vec3<f32>, n_15: vec3<f32>, d_8: f32, h_2: u32, doms_1: ptr<function, array<Domain, 3>>) -> u32 {
+fn reuse_domains(x_16: vec3<f32>, n_15: vec3<f32>, d_9: f32, h_2: u32, doms_1: ptr<function, array<Domain, 3>>) -> u32 {
     var nd: u32 = 0u;
     var hr: u32;
     var j_5: u32 = 0u;
@@ -1736,7 +1734,7 @@ fn reuse_domains(x_16: vec3<f32>, n_15: vec3<f32>, d_8: f32, h_2: u32, doms_1: p
             }
             let _e143 = local_51;
             if !(_e143) {
-                let _e151 = history_matches(n_15, s_13.n, x_16, dot(s_13.n, s_13.x), d_8);
+                let _e151 = history_matches(n_15, s_13.n, x_16, dot(s_13.n, s_13.x), d_9);
                 local_52 = !(_e151);
             } else {
                 local_52 = true;
@@ -2069,7 +2067,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
     let _e114 = range_lobe(_e113);
     let _e117 = view.shadow_offset;
     let _e120 = view.eye;
-    let eps_6 = (_e117 * length((_e120 - x_20)));
+    let eps_5 = (_e117 * length((_e120 - x_20)));
     let _e126 = view.seed;
     let _e130 = view.width;
     let _e136 = view.frame;
@@ -2109,7 +2107,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
                     if _e187 {
                         continue;
                     }
-                    let li_12 = bsh_nodes[b_10].light;
+                    let li_10 = bsh_nodes[b_10].light;
                     let _e192 = count;
                     count = (_e192 + 1u);
                     let _e195 = h;
@@ -2128,7 +2126,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
                     let _e206 = n;
                     let _e207 = r;
                     let _e208 = m;
-                    let _e213 = shade_pick_traced(li_12, x_20, _e206, _e207, _e114, _e208, 1f, u_5.x, u_5.y, eps_6, false);
+                    let _e213 = shade_pick_traced(li_10, x_20, _e206, _e207, _e114, _e208, 1f, u_5.x, u_5.y, eps_5, false);
                     let _e214 = output_of(_e213);
                     let _e215 = resample_target(_e214);
                     if (_e215 > 0f) {
@@ -2157,7 +2155,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
                                 let _e241 = local_5;
                                 if _e241 {
                                     let _e242 = q;
-                                    slot_light[_e242] = li_12;
+                                    slot_light[_e242] = li_10;
                                     let _e244 = q;
                                     slot_u[_e244] = u_5;
                                     let _e246 = q;
@@ -2260,341 +2258,343 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(local_invocation
             let _e364 = q_2;
             if (_e355[_e362] == _e364) {
                 let _e366 = q_2;
-                let _e368 = q_2;
-                let _e370 = slot_light[_e368];
-                let _e371 = q_2;
-                let _e373 = slot_cells[_e371];
-                let _e374 = n;
-                let _e375 = sample_reaches(_e370, _e373, x_20, _e374, eps_6);
-                fresh_visible[_e366] = _e375;
+                let _e369 = q_2;
+                let _e371 = slot_light[_e369];
+                let _e373 = lights[_e371];
+                let _e374 = q_2;
+                let _e376 = slot_cells[_e374];
+                let _e377 = n;
+                let _e378 = sample_reaches(_e373, _e376, x_20, _e377, eps_5);
+                fresh_visible[_e366] = _e378;
             } else {
-                let _e376 = q_2;
-                if (_e355[_e376] < K) {
-                    let _e380 = q_2;
-                    let _e382 = q_2;
-                    let _e385 = fresh_visible[_e355[_e382]];
-                    fresh_visible[_e380] = _e385;
+                let _e379 = q_2;
+                if (_e355[_e379] < K) {
+                    let _e383 = q_2;
+                    let _e385 = q_2;
+                    let _e388 = fresh_visible[_e355[_e385]];
+                    fresh_visible[_e383] = _e388;
                 }
             }
         }
         continuing {
-            let _e387 = q_2;
-            q_2 = (_e387 + 1u);
+            let _e390 = q_2;
+            q_2 = (_e390 + 1u);
         }
     }
     loop {
-        let _e392 = q_3;
-        if (_e392 < K) {
+        let _e395 = q_3;
+        if (_e395 < K) {
         } else {
             break;
         }
         {
-            let _e395 = q_3;
-            fresh_before[_e395] = true;
             let _e398 = q_3;
-            let _e400 = q_3;
-            if (_e355[_e398] == _e400) {
-                let _e404 = q_3;
-                let _e406 = fresh_visible[_e404];
-                local_8 = _e406;
+            fresh_before[_e398] = true;
+            let _e401 = q_3;
+            let _e403 = q_3;
+            if (_e355[_e401] == _e403) {
+                let _e407 = q_3;
+                let _e409 = fresh_visible[_e407];
+                local_8 = _e409;
             } else {
                 local_8 = false;
             }
-            let _e408 = local_8;
-            if _e408 {
+            let _e411 = local_8;
+            if _e411 {
                 local_9 = own_history;
             } else {
                 local_9 = false;
             }
-            let _e412 = local_9;
-            if _e412 {
-                let _e413 = q_3;
-                let _e415 = q_3;
-                let _e417 = slot_light[_e415];
+            let _e415 = local_9;
+            if _e415 {
+                let _e416 = q_3;
                 let _e418 = q_3;
-                let _e420 = slot_cells[_e418];
-                let _e422 = doms[0];
-                let _e423 = n;
-                let _e424 = reached_before(_e417, _e420, _e422, x_20, _e423);
-                fresh_before[_e413] = _e424;
+                let _e420 = slot_light[_e418];
+                let _e421 = q_3;
+                let _e423 = slot_cells[_e421];
+                let _e425 = doms[0];
+                let _e426 = n;
+                let _e427 = reached_before(_e420, _e423, _e425, x_20, _e426);
+                fresh_before[_e416] = _e427;
             } else {
-                let _e425 = q_3;
-                if (_e355[_e425] < K) {
-                    let _e429 = q_3;
-                    let _e431 = q_3;
-                    let _e434 = fresh_before[_e355[_e431]];
-                    fresh_before[_e429] = _e434;
+                let _e428 = q_3;
+                if (_e355[_e428] < K) {
+                    let _e432 = q_3;
+                    let _e434 = q_3;
+                    let _e437 = fresh_before[_e355[_e434]];
+                    fresh_before[_e432] = _e437;
                 }
             }
         }
         continuing {
-            let _e436 = q_3;
-            q_3 = (_e436 + 1u);
+            let _e439 = q_3;
+            q_3 = (_e439 + 1u);
         }
     }
     loop {
-        let _e442 = q_4;
-        if (_e442 < K) {
+        let _e445 = q_4;
+        if (_e445 < K) {
         } else {
             break;
         }
         {
-            let _e445 = q_4;
-            let _e447 = slot_p[_e445];
-            if (_e447 > 0f) {
-                let _e454 = reuse.visibility;
-                if !((_e454 == 0u)) {
-                    let _e460 = q_4;
-                    let _e462 = fresh_visible[_e460];
-                    local_11 = _e462;
+            let _e448 = q_4;
+            let _e450 = slot_p[_e448];
+            if (_e450 > 0f) {
+                let _e457 = reuse.visibility;
+                if !((_e457 == 0u)) {
+                    let _e463 = q_4;
+                    let _e465 = fresh_visible[_e463];
+                    local_11 = _e465;
                 } else {
                     local_11 = true;
                 }
-                let _e464 = local_11;
-                local_10 = _e464;
+                let _e467 = local_11;
+                local_10 = _e467;
             } else {
                 local_10 = false;
             }
             let fresh = local_10;
-            let _e467 = q_4;
-            let _e469 = q_4;
             let _e470 = q_4;
-            let _e472 = slot_light[_e470];
+            let _e472 = q_4;
             let _e473 = q_4;
-            let _e475 = slot_cells[_e473];
-            let _e476 = total;
-            let _e477 = q_4;
-            let _e479 = slot_target(_e476, _e477, K);
-            let _e485 = q_4;
-            let _e487 = fresh_before[_e485];
-            let _e489 = n;
-            let _e490 = m;
-            let _e491 = gris_combine(_e469, ReuseSlot(_e472, _e475, select(0f, _e479, fresh)), true, 1f, _e487, 0u, first_1, x_20, _e489, _e490, (&doms), (&hs));
-            kept[_e467] = _e491;
-            let _e492 = q_4;
-            let _e494 = q_4;
-            let _e496 = kept[_e494];
-            fin[_e492] = _e496;
+            let _e475 = slot_light[_e473];
+            let _e476 = q_4;
+            let _e478 = slot_cells[_e476];
+            let _e479 = total;
+            let _e480 = q_4;
+            let _e482 = slot_target(_e479, _e480, K);
+            let _e488 = q_4;
+            let _e490 = fresh_before[_e488];
+            let _e492 = n;
+            let _e493 = m;
+            let _e494 = gris_combine(_e472, ReuseSlot(_e475, _e478, select(0f, _e482, fresh)), true, 1f, _e490, 0u, first_1, x_20, _e492, _e493, (&doms), (&hs));
+            kept[_e470] = _e494;
+            let _e495 = q_4;
+            let _e497 = q_4;
+            let _e499 = kept[_e497];
+            fin[_e495] = _e499;
             if (_e295 > first_1) {
-                let _e498 = q_4;
-                let _e500 = q_4;
                 let _e501 = q_4;
-                let _e503 = kept[_e501];
-                let _e506 = n;
-                let _e507 = m;
-                let _e508 = gris_combine(_e500, _e503, false, confidence, true, first_1, _e295, x_20, _e506, _e507, (&doms), (&hs));
-                fin[_e498] = _e508;
+                let _e503 = q_4;
+                let _e504 = q_4;
+                let _e506 = kept[_e504];
+                let _e509 = n;
+                let _e510 = m;
+                let _e511 = gris_combine(_e503, _e506, false, confidence, true, first_1, _e295, x_20, _e509, _e510, (&doms), (&hs));
+                fin[_e501] = _e511;
             }
         }
         continuing {
-            let _e510 = q_4;
-            q_4 = (_e510 + 1u);
+            let _e513 = q_4;
+            q_4 = (_e513 + 1u);
         }
     }
     loop {
-        let _e516 = k;
-        if (_e516 < K) {
+        let _e519 = k;
+        if (_e519 < K) {
         } else {
             break;
         }
         {
-            let _e519 = k;
-            let _e521 = k;
-            let _e524 = fin[_e521].light;
-            let _e525 = k;
-            let _e528 = fin[_e525].u;
-            let _e529 = sample_key(_e524, _e528);
-            keys[_e519] = _e529;
-            let _e530 = k;
-            let _e532 = k;
-            let _e535 = fin[_e532].w;
-            held[_e530] = (_e535 > 0f);
+            let _e522 = k;
+            let _e524 = k;
+            let _e527 = fin[_e524].light;
+            let _e528 = k;
+            let _e531 = fin[_e528].u;
+            let _e532 = sample_key(_e527, _e531);
+            keys[_e522] = _e532;
+            let _e533 = k;
+            let _e535 = k;
+            let _e538 = fin[_e535].w;
+            held[_e533] = (_e538 > 0f);
         }
         continuing {
-            let _e539 = k;
-            k = (_e539 + 1u);
+            let _e542 = k;
+            k = (_e542 + 1u);
         }
     }
-    let _e541 = keys;
-    let _e542 = held;
-    let _e543 = first_holders(_e541, _e542);
+    let _e544 = keys;
+    let _e545 = held;
+    let _e546 = first_holders(_e544, _e545);
     loop {
-        let _e547 = k_1;
-        if (_e547 < K) {
+        let _e550 = k_1;
+        if (_e550 < K) {
         } else {
             break;
         }
         {
-            let _e550 = k_1;
-            let _e552 = k_1;
-            if (_e543[_e550] != _e552) {
+            let _e553 = k_1;
+            let _e555 = k_1;
+            if (_e546[_e553] != _e555) {
                 continue;
             }
             w = vec3(0f);
-            let _e557 = k_1;
-            j_1 = _e557;
+            let _e560 = k_1;
+            j_1 = _e560;
             loop {
-                let _e559 = j_1;
-                if (_e559 < K) {
+                let _e562 = j_1;
+                if (_e562 < K) {
                 } else {
                     break;
                 }
                 {
-                    let _e562 = j_1;
-                    let _e564 = k_1;
-                    if (_e543[_e562] == _e564) {
-                        let _e566 = w;
-                        let _e567 = j_1;
-                        let _e570 = fin[_e567].w;
-                        let _e571 = j_1;
-                        let _e573 = slot_share(_e571, K);
-                        w = (_e566 + (_e570 * _e573));
+                    let _e565 = j_1;
+                    let _e567 = k_1;
+                    if (_e546[_e565] == _e567) {
+                        let _e569 = w;
+                        let _e570 = j_1;
+                        let _e573 = fin[_e570].w;
+                        let _e574 = j_1;
+                        let _e576 = slot_share(_e574, K);
+                        w = (_e569 + (_e573 * _e576));
                     }
                 }
                 continuing {
-                    let _e577 = j_1;
-                    j_1 = (_e577 + 1u);
+                    let _e580 = j_1;
+                    j_1 = (_e580 + 1u);
                 }
             }
             known = false;
             seen = false;
             j_2 = 0u;
             loop {
-                let _e585 = j_2;
-                if (_e585 < K) {
-                    let _e590 = known;
-                    local_12 = !(_e590);
+                let _e588 = j_2;
+                if (_e588 < K) {
+                    let _e593 = known;
+                    local_12 = !(_e593);
                 } else {
                     local_12 = false;
                 }
-                let _e593 = local_12;
-                if _e593 {
+                let _e596 = local_12;
+                if _e596 {
                 } else {
                     break;
                 }
                 {
-                    let _e594 = j_2;
-                    let _e596 = fresh_held[_e594];
-                    if _e596 {
-                        let _e599 = j_2;
-                        let _e601 = fresh_keys[_e599];
-                        let _e602 = k_1;
-                        let _e604 = keys[_e602];
-                        local_13 = all((_e601 == _e604));
+                    let _e597 = j_2;
+                    let _e599 = fresh_held[_e597];
+                    if _e599 {
+                        let _e602 = j_2;
+                        let _e604 = fresh_keys[_e602];
+                        let _e605 = k_1;
+                        let _e607 = keys[_e605];
+                        local_13 = all((_e604 == _e607));
                     } else {
                         local_13 = false;
                     }
-                    let _e608 = local_13;
-                    if _e608 {
+                    let _e611 = local_13;
+                    if _e611 {
                         known = true;
-                        let _e610 = j_2;
-                        let _e612 = fresh_visible[_e610];
-                        seen = _e612;
+                        let _e613 = j_2;
+                        let _e615 = fresh_visible[_e613];
+                        seen = _e615;
                     }
                 }
                 continuing {
-                    let _e614 = j_2;
-                    j_2 = (_e614 + 1u);
+                    let _e617 = j_2;
+                    j_2 = (_e617 + 1u);
                 }
             }
             shaded = Shaded(vec3(0f), vec3(0f), vec3(0f));
-            let _e624 = known;
-            if !(!(_e624)) {
-                let _e629 = seen;
-                local_14 = _e629;
+            let _e627 = known;
+            if !(!(_e627)) {
+                let _e632 = seen;
+                local_14 = _e632;
             } else {
                 local_14 = true;
             }
-            let _e631 = local_14;
-            if _e631 {
-                let _e632 = k_1;
-                let _e635 = fin[_e632].light;
+            let _e634 = local_14;
+            if _e634 {
                 let _e636 = k_1;
-                let _e639 = fin[_e636].u;
-                let _e640 = n;
-                let _e641 = known;
-                let _e643 = sample_connection(_e635, _e639, x_20, _e640, eps_6, !(_e641));
-                let _e644 = n;
-                let _e645 = m;
-                let _e646 = shade_connection(_e643, x_20, _e644, _e645);
-                shaded = _e646;
+                let _e639 = fin[_e636].light;
+                let _e641 = lights[_e639];
+                let _e642 = k_1;
+                let _e645 = fin[_e642].u;
+                let _e646 = n;
+                let _e647 = known;
+                let _e649 = sample_connection(_e641, _e645, x_20, _e646, eps_5, !(_e647));
+                let _e650 = n;
+                let _e651 = m;
+                let _e652 = shade_connection(_e649, x_20, _e650, _e651);
+                shaded = _e652;
             }
-            let _e647 = t;
-            let _e648 = shaded;
-            let _e649 = w;
-            let _e650 = scaled(_e648, _e649);
-            let _e651 = add(_e647, _e650);
-            t = _e651;
-            let _e652 = k_1;
-            j_3 = _e652;
+            let _e653 = t;
+            let _e654 = shaded;
+            let _e655 = w;
+            let _e656 = scaled(_e654, _e655);
+            let _e657 = add(_e653, _e656);
+            t = _e657;
+            let _e658 = k_1;
+            j_3 = _e658;
             loop {
-                let _e654 = j_3;
-                if (_e654 < K) {
+                let _e660 = j_3;
+                if (_e660 < K) {
                 } else {
                     break;
                 }
                 {
-                    let _e657 = j_3;
-                    let _e659 = k_1;
-                    if (_e543[_e657] == _e659) {
-                        let _e661 = j_3;
-                        let _e663 = shaded;
-                        let _e664 = output_of(_e663);
-                        let _e665 = resample_target(_e664);
-                        visible[_e661] = (_e665 > 0f);
+                    let _e663 = j_3;
+                    let _e665 = k_1;
+                    if (_e546[_e663] == _e665) {
+                        let _e667 = j_3;
+                        let _e669 = shaded;
+                        let _e670 = output_of(_e669);
+                        let _e671 = resample_target(_e670);
+                        visible[_e667] = (_e671 > 0f);
                     }
                 }
                 continuing {
-                    let _e669 = j_3;
-                    j_3 = (_e669 + 1u);
+                    let _e675 = j_3;
+                    j_3 = (_e675 + 1u);
                 }
             }
         }
         continuing {
-            let _e672 = k_1;
-            k_1 = (_e672 + 1u);
+            let _e678 = k_1;
+            k_1 = (_e678 + 1u);
         }
     }
     loop {
-        let _e676 = q_5;
-        if (_e676 < K) {
+        let _e682 = q_5;
+        if (_e682 < K) {
         } else {
             break;
         }
         {
-            let _e681 = reuse.visibility;
-            if !((_e681 == 0u)) {
-                let _e687 = q_5;
-                let _e689 = visible[_e687];
-                local_15 = _e689;
+            let _e687 = reuse.visibility;
+            if !((_e687 == 0u)) {
+                let _e693 = q_5;
+                let _e695 = visible[_e693];
+                local_15 = _e695;
             } else {
                 local_15 = true;
             }
             let keep = local_15;
-            let _e693 = next_index(pixel_1);
-            let _e696 = q_5;
-            let _e698 = q_5;
-            let _e701 = kept[_e698].light;
+            let _e699 = next_index(pixel_1);
             let _e702 = q_5;
-            let _e705 = kept[_e702].u;
-            let _e706 = q_5;
-            let _e709 = kept[_e706].w;
-            reuse_pixels[_e693].slots[_e696] = ReuseSlot(_e701, _e705, select(0f, _e709, keep));
+            let _e704 = q_5;
+            let _e707 = kept[_e704].light;
+            let _e708 = q_5;
+            let _e711 = kept[_e708].u;
+            let _e712 = q_5;
+            let _e715 = kept[_e712].w;
+            reuse_pixels[_e699].slots[_e702] = ReuseSlot(_e707, _e711, select(0f, _e715, keep));
         }
         continuing {
-            let _e714 = q_5;
-            q_5 = (_e714 + 1u);
+            let _e720 = q_5;
+            q_5 = (_e720 + 1u);
         }
     }
-    let _e717 = next_index(pixel_1);
-    let _e720 = n;
-    let _e721 = m;
-    let _e724 = reuse.max_confidence;
-    let _e726 = reuse_surface(x_20, _e720, _e721, min(confidence, _e724));
-    reuse_pixels[_e717].surface = _e726;
-    let _e729 = t.diffuse;
-    let _e731 = t.specular;
-    let _e733 = count;
-    textureStore(out_tex, texel_1, vec4<f32>((_e729 + _e731), f32(_e733)));
+    let _e723 = next_index(pixel_1);
+    let _e726 = n;
+    let _e727 = m;
+    let _e730 = reuse.max_confidence;
+    let _e732 = reuse_surface(x_20, _e726, _e727, min(confidence, _e730));
+    reuse_pixels[_e723].surface = _e732;
+    let _e735 = t.diffuse;
+    let _e737 = t.specular;
+    let _e739 = count;
+    textureStore(out_tex, texel_1, vec4<f32>((_e735 + _e737), f32(_e739)));
     return;
 }

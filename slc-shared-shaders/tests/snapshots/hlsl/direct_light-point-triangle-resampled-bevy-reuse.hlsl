@@ -1753,15 +1753,22 @@ uint next_index(uint i_5)
     return (((_e3 * _e6) * _e10) + i_5);
 }
 
-float reuse_target(uint q_6, GpuLight l_4, uint cells, float3 x_11, float3 n_10, Material m_3)
+Connection sample_connection(GpuLight l_4, uint cells, float3 x_11, float3 n_10, float eps_3, bool trace_4)
 {
     const float _e9 = grid_coordinate(cells);
     const float _e12 = grid_coordinate((cells << 16u));
-    const Connection _e15 = connect_record(l_4, x_11, n_10, n_10, UNRANGED, UNRANGED, 1.0, _e9, _e12, 0.0, false);
-    const Shaded _e16 = shade_connection(_e15, x_11, n_10, m_3);
-    const float3 _e17 = output_of(_e16);
-    const float _e19 = slot_target(_e17, q_6, K);
-    return _e19;
+    const Connection _e13 = connect_record(l_4, x_11, n_10, n_10, UNRANGED, UNRANGED, 1.0, _e9, _e12, eps_3, trace_4);
+    const Connection connection_3 = _e13;
+    return connection_3;
+}
+
+float reuse_target(uint q_6, GpuLight l_5, uint cells_1, float3 x_12, float3 n_11, Material m_3)
+{
+    const Connection _e8 = sample_connection(l_5, cells_1, x_12, n_11, 0.0, false);
+    const Shaded _e9 = shade_connection(_e8, x_12, n_11, m_3);
+    const float3 _e10 = output_of(_e9);
+    const float _e12 = slot_target(_e10, q_6, K);
+    return _e12;
 }
 
 ReuseSurface ConstructReuseSurface(float3 arg0, float arg1, float3 arg2, uint arg3, uint arg4, uint arg5, uint arg6, uint arg7) {
@@ -1777,11 +1784,11 @@ ReuseSurface ConstructReuseSurface(float3 arg0, float arg1, float3 arg2, uint ar
     return ret;
 }
 
-ReuseSurface reuse_surface(float3 x_12, float3 n_11, Material m_4, float c_10)
+ReuseSurface reuse_surface(float3 x_13, float3 n_12, Material m_4, float c_10)
 {
     float4 _e6 = float4(m_4.base, m_4.metallic);
     float2 _e12 = float2(saturate(m_4.roughness), saturate(m_4.reflectance));
-    const ReuseSurface reusesurface = ConstructReuseSurface(x_12, c_10, n_11, (uint(round(clamp(_e6[0], 0.0, 1.0) * 255.0)) | uint(round(clamp(_e6[1], 0.0, 1.0) * 255.0)) << 8 | uint(round(clamp(_e6[2], 0.0, 1.0) * 255.0)) << 16 | uint(round(clamp(_e6[3], 0.0, 1.0) * 255.0)) << 24), (uint(round(clamp(_e12[0], 0.0, 1.0) * 65535.0)) | uint(round(clamp(_e12[1], 0.0, 1.0) * 65535.0)) << 16), 0u, 0u, 0u);
+    const ReuseSurface reusesurface = ConstructReuseSurface(x_13, c_10, n_12, (uint(round(clamp(_e6[0], 0.0, 1.0) * 255.0)) | uint(round(clamp(_e6[1], 0.0, 1.0) * 255.0)) << 8 | uint(round(clamp(_e6[2], 0.0, 1.0) * 255.0)) << 16 | uint(round(clamp(_e6[3], 0.0, 1.0) * 255.0)) << 24), (uint(round(clamp(_e12[0], 0.0, 1.0) * 65535.0)) | uint(round(clamp(_e12[1], 0.0, 1.0) * 65535.0)) << 16), 0u, 0u, 0u);
     return reusesurface;
 }
 
@@ -1796,29 +1803,26 @@ Material reuse_material(ReuseSurface s_10, float3 eye)
     return material_1;
 }
 
-uint2 sample_key(uint li_7, uint cells_1)
+uint2 sample_key(uint li_7, uint cells_2)
 {
     uint _e6 = asuint(lights.Load(12+li_7*64));
-    return uint2(li_7, ((_e6 == LIGHT_TRIANGLE) ? cells_1 : 0u));
+    return uint2(li_7, ((_e6 == LIGHT_TRIANGLE) ? cells_2 : 0u));
 }
 
-Connection sample_connection(uint li_8, uint cells_2, float3 x_13, float3 n_12, float eps_3, bool trace_4)
+bool sample_reaches(GpuLight l_6, uint cells_3, float3 x_14, float3 n_13, float eps_4)
 {
-    GpuLight _e8 = ConstructGpuLight(asfloat(lights.Load3(li_8*64+0)), asuint(lights.Load(li_8*64+12)), asfloat(lights.Load3(li_8*64+16)), asfloat(lights.Load(li_8*64+28)), asfloat(lights.Load3(li_8*64+32)), asfloat(lights.Load(li_8*64+44)), asfloat(lights.Load3(li_8*64+48)), asuint(lights.Load(li_8*64+60)));
-    const float _e12 = grid_coordinate(cells_2);
-    const float _e15 = grid_coordinate((cells_2 << 16u));
-    const Connection _e16 = connect_record(_e8, x_13, n_12, n_12, UNRANGED, UNRANGED, 1.0, _e12, _e15, eps_3, trace_4);
-    const Connection connection_3 = _e16;
-    return connection_3;
-}
-
-bool sample_reaches(uint li_9, uint cells_3, float3 x_14, float3 n_13, float eps_4)
-{
-    const Connection _e6 = sample_connection(li_9, cells_3, x_14, n_13, eps_4, true);
+    const Connection _e6 = sample_connection(l_6, cells_3, x_14, n_13, eps_4, true);
     return any((_e6.e > (0.0).xxx));
 }
 
-bool history_vouches(uint li_10, uint cells_4, Domain d_6)
+float domain_offset(Domain d_6)
+{
+    float _e3 = view.shadow_offset;
+    float3 _e6 = reuse.prev_eye;
+    return (_e3 * length((_e6 - d_6.x)));
+}
+
+bool history_vouches(uint li_8, uint cells_4, Domain d_7)
 {
     uint _e5 = reuse.moved;
     if ((_e5 == 0u)) {
@@ -1828,18 +1832,17 @@ bool history_vouches(uint li_10, uint cells_4, Domain d_6)
     if ((_e11 == 2u)) {
         return false;
     }
-    float _e19 = view.shadow_offset;
-    float3 _e22 = reuse.prev_eye;
-    float3 a_10 = (d_6.x + (d_6.n * (_e19 * length((_e22 - d_6.x)))));
-    GpuLight _e31 = ConstructGpuLight(asfloat(lights_prev.Load3(li_10*64+0)), asuint(lights_prev.Load(li_10*64+12)), asfloat(lights_prev.Load3(li_10*64+16)), asfloat(lights_prev.Load(li_10*64+28)), asfloat(lights_prev.Load3(li_10*64+32)), asfloat(lights_prev.Load(li_10*64+44)), asfloat(lights_prev.Load3(li_10*64+48)), asuint(lights_prev.Load(li_10*64+60)));
-    const float _e32 = grid_coordinate(cells_4);
-    const float _e35 = grid_coordinate((cells_4 << 16u));
-    const float3 _e36 = light_point(_e31, _e32, _e35);
-    const float3 _e38 = ray_inverse3_((_e36 - a_10));
-    float3 _e41 = reuse.moved_min;
-    float3 _e44 = reuse.moved_max;
-    const float _e46 = ray_aabb(a_10, _e38, _e41, _e44, 1.0);
-    return (_e46 < 0.0);
+    const float _e17 = domain_offset(d_7);
+    float3 a_10 = (d_7.x + (d_7.n * _e17));
+    GpuLight _e22 = ConstructGpuLight(asfloat(lights_prev.Load3(li_8*64+0)), asuint(lights_prev.Load(li_8*64+12)), asfloat(lights_prev.Load3(li_8*64+16)), asfloat(lights_prev.Load(li_8*64+28)), asfloat(lights_prev.Load3(li_8*64+32)), asfloat(lights_prev.Load(li_8*64+44)), asfloat(lights_prev.Load3(li_8*64+48)), asuint(lights_prev.Load(li_8*64+60)));
+    const float _e23 = grid_coordinate(cells_4);
+    const float _e26 = grid_coordinate((cells_4 << 16u));
+    const float3 _e27 = light_point(_e22, _e23, _e26);
+    const float3 _e29 = ray_inverse3_((_e27 - a_10));
+    float3 _e32 = reuse.moved_min;
+    float3 _e35 = reuse.moved_max;
+    const float _e37 = ray_aabb(a_10, _e29, _e32, _e35, 1.0);
+    return (_e37 < 0.0);
 }
 
 ReuseSlot ConstructReuseSlot(uint arg0, uint arg1, float arg2) {
@@ -1850,7 +1853,7 @@ ReuseSlot ConstructReuseSlot(uint arg0, uint arg1, float arg2) {
     return ret;
 }
 
-bool reached_before(uint li_11, uint cells_5, Domain d_7, float3 x_15, float3 n_14)
+bool reached_before(uint li_9, uint cells_5, Domain d_8, float3 x_15, float3 n_14)
 {
     bool local_41 = (bool)0;
     bool local_42 = (bool)0;
@@ -1860,32 +1863,32 @@ bool reached_before(uint li_11, uint cells_5, Domain d_7, float3 x_15, float3 n_
     bool local_45 = (bool)0;
     bool local_46 = (bool)0;
 
-    const bool _e5 = history_vouches(li_11, cells_5, d_7);
+    const bool _e5 = history_vouches(li_9, cells_5, d_8);
     if (!(_e5)) {
         return false;
     }
-    GpuLight l_5 = ConstructGpuLight(asfloat(lights.Load3(li_11*64+0)), asuint(lights.Load(li_11*64+12)), asfloat(lights.Load3(li_11*64+16)), asfloat(lights.Load(li_11*64+28)), asfloat(lights.Load3(li_11*64+32)), asfloat(lights.Load(li_11*64+44)), asfloat(lights.Load3(li_11*64+48)), asuint(lights.Load(li_11*64+60)));
-    GpuLight lp = ConstructGpuLight(asfloat(lights_prev.Load3(li_11*64+0)), asuint(lights_prev.Load(li_11*64+12)), asfloat(lights_prev.Load3(li_11*64+16)), asfloat(lights_prev.Load(li_11*64+28)), asfloat(lights_prev.Load3(li_11*64+32)), asfloat(lights_prev.Load(li_11*64+44)), asfloat(lights_prev.Load3(li_11*64+48)), asuint(lights_prev.Load(li_11*64+60)));
-    if (all((d_7.x == x_15))) {
-        local_41 = all((d_7.n == n_14));
+    GpuLight l_7 = ConstructGpuLight(asfloat(lights.Load3(li_9*64+0)), asuint(lights.Load(li_9*64+12)), asfloat(lights.Load3(li_9*64+16)), asfloat(lights.Load(li_9*64+28)), asfloat(lights.Load3(li_9*64+32)), asfloat(lights.Load(li_9*64+44)), asfloat(lights.Load3(li_9*64+48)), asuint(lights.Load(li_9*64+60)));
+    GpuLight lp = ConstructGpuLight(asfloat(lights_prev.Load3(li_9*64+0)), asuint(lights_prev.Load(li_9*64+12)), asfloat(lights_prev.Load3(li_9*64+16)), asfloat(lights_prev.Load(li_9*64+28)), asfloat(lights_prev.Load3(li_9*64+32)), asfloat(lights_prev.Load(li_9*64+44)), asfloat(lights_prev.Load3(li_9*64+48)), asuint(lights_prev.Load(li_9*64+60)));
+    if (all((d_8.x == x_15))) {
+        local_41 = all((d_8.n == n_14));
     } else {
         local_41 = false;
     }
     bool _e23 = local_41;
     if (_e23) {
-        local_42 = all((l_5.p0_ == lp.p0_));
+        local_42 = all((l_7.p0_ == lp.p0_));
     } else {
         local_42 = false;
     }
     bool _e31 = local_42;
     if (_e31) {
-        local_43 = all((l_5.p1_ == lp.p1_));
+        local_43 = all((l_7.p1_ == lp.p1_));
     } else {
         local_43 = false;
     }
     bool _e39 = local_43;
     if (_e39) {
-        local_44 = all((l_5.p2_ == lp.p2_));
+        local_44 = all((l_7.p2_ == lp.p2_));
     } else {
         local_44 = false;
     }
@@ -1893,7 +1896,7 @@ bool reached_before(uint li_11, uint cells_5, Domain d_7, float3 x_15, float3 n_
     if (_e47) {
         return true;
     }
-    const uint2 _e49 = sample_key(li_11, cells_5);
+    const uint2 _e49 = sample_key(li_9, cells_5);
     uint2 loop_bound_11 = uint2(4294967295u, 4294967295u);
     bool loop_init_8 = true;
     while(true) {
@@ -1910,7 +1913,7 @@ bool reached_before(uint li_11, uint cells_5, Domain d_7, float3 x_15, float3 n_
             break;
         }
         {
-            const uint _e57 = previous_index(d_7.pixel);
+            const uint _e57 = previous_index(d_8.pixel);
             uint _e60 = q_7;
             ReuseSlot h_4 = ConstructReuseSlot(asuint(reuse_pixels.Load(_e60*12+48+_e57*144+0)), asuint(reuse_pixels.Load(_e60*12+48+_e57*144+4)), asfloat(reuse_pixels.Load(_e60*12+48+_e57*144+8)));
             if ((h_4.w > 0.0)) {
@@ -1931,13 +1934,9 @@ bool reached_before(uint li_11, uint cells_5, Domain d_7, float3 x_15, float3 n_
             }
         }
     }
-    float _e89 = view.shadow_offset;
-    float3 _e92 = reuse.prev_eye;
-    float eps_5 = (_e89 * length((_e92 - d_7.x)));
-    const float _e103 = grid_coordinate(cells_5);
-    const float _e106 = grid_coordinate((cells_5 << 16u));
-    const Connection _e108 = connect_record(lp, d_7.x, d_7.n, d_7.n, UNRANGED, UNRANGED, 1.0, _e103, _e106, eps_5, true);
-    return any((_e108.e > (0.0).xxx));
+    const float _e89 = domain_offset(d_8);
+    const bool _e90 = sample_reaches(lp, cells_5, d_8.x, d_8.n, _e89);
+    return _e90;
 }
 
 Domain ConstructDomain(uint arg0, float3 arg1, float3 arg2, Material arg3, float arg4, bool arg5) {
@@ -1955,7 +1954,7 @@ int2 naga_f2i32(float2 value) {
     return int2(clamp(value, -2147483600.0, 2147483500.0));
 }
 
-uint reuse_domains(float3 x_16, float3 n_15, float d_8, uint h_2, inout Domain doms_1[3])
+uint reuse_domains(float3 x_16, float3 n_15, float d_9, uint h_2, inout Domain doms_1[3])
 {
     uint nd = 0u;
     uint hr = (uint)0;
@@ -2087,7 +2086,7 @@ uint reuse_domains(float3 x_16, float3 n_15, float d_8, uint h_2, inout Domain d
             }
             bool _e143 = local_51;
             if (!(_e143)) {
-                const bool _e151 = history_matches(n_15, s_13.n, x_16, dot(s_13.n, s_13.x), d_8);
+                const bool _e151 = history_matches(n_15, s_13.n, x_16, dot(s_13.n, s_13.x), d_9);
                 local_52 = !(_e151);
             } else {
                 local_52 = true;
@@ -2439,7 +2438,7 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
     const float4 _e114 = range_lobe(_e113);
     float _e117 = view.shadow_offset;
     float3 _e120 = view.eye;
-    float eps_6 = (_e117 * length((_e120 - x_20)));
+    float eps_5 = (_e117 * length((_e120 - x_20)));
     uint _e126 = view.seed;
     uint _e130 = view.width;
     uint _e136 = view.frame;
@@ -2497,7 +2496,7 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
                     if (_e187) {
                         continue;
                     }
-                    uint li_12 = asuint(bsh_nodes.Load(24+b_10*32));
+                    uint li_10 = asuint(bsh_nodes.Load(24+b_10*32));
                     uint _e192 = count;
                     count = (_e192 + 1u);
                     uint _e195 = h;
@@ -2516,7 +2515,7 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
                     float3 _e206 = n;
                     float3 _e207 = r;
                     Material _e208 = m;
-                    const Shaded _e213 = shade_pick_traced(li_12, x_20, _e206, _e207, _e114, _e208, 1.0, u_5.x, u_5.y, eps_6, false);
+                    const Shaded _e213 = shade_pick_traced(li_10, x_20, _e206, _e207, _e114, _e208, 1.0, u_5.x, u_5.y, eps_5, false);
                     const float3 _e214 = output_of(_e213);
                     const float _e215 = resample_target(_e214);
                     if ((_e215 > 0.0)) {
@@ -2554,7 +2553,7 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
                                 bool _e241 = local_5;
                                 if (_e241) {
                                     uint _e242 = q;
-                                    slot_light[min(uint(_e242), 7u)] = li_12;
+                                    slot_light[min(uint(_e242), 7u)] = li_10;
                                     uint _e244 = q;
                                     slot_u[min(uint(_e244), 7u)] = u_5;
                                     uint _e246 = q;
@@ -2645,8 +2644,8 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
         if (all(loop_bound_20 == uint2(0u, 0u))) { break; }
         loop_bound_20 -= uint2(loop_bound_20.y == 0u, 1u);
         if (!loop_init_17) {
-            uint _e387 = q_2;
-            q_2 = (_e387 + 1u);
+            uint _e390 = q_2;
+            q_2 = (_e390 + 1u);
         }
         loop_init_17 = false;
         uint _e359 = q_2;
@@ -2659,20 +2658,21 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
             uint _e364 = q_2;
             if ((_e355[min(uint(_e362), 7u)] == _e364)) {
                 uint _e366 = q_2;
-                uint _e368 = q_2;
-                uint _e370 = slot_light[min(uint(_e368), 7u)];
-                uint _e371 = q_2;
-                uint _e373 = slot_cells[min(uint(_e371), 7u)];
-                float3 _e374 = n;
-                const bool _e375 = sample_reaches(_e370, _e373, x_20, _e374, eps_6);
-                fresh_visible[min(uint(_e366), 7u)] = _e375;
+                uint _e369 = q_2;
+                uint _e371 = slot_light[min(uint(_e369), 7u)];
+                GpuLight _e373 = ConstructGpuLight(asfloat(lights.Load3(_e371*64+0)), asuint(lights.Load(_e371*64+12)), asfloat(lights.Load3(_e371*64+16)), asfloat(lights.Load(_e371*64+28)), asfloat(lights.Load3(_e371*64+32)), asfloat(lights.Load(_e371*64+44)), asfloat(lights.Load3(_e371*64+48)), asuint(lights.Load(_e371*64+60)));
+                uint _e374 = q_2;
+                uint _e376 = slot_cells[min(uint(_e374), 7u)];
+                float3 _e377 = n;
+                const bool _e378 = sample_reaches(_e373, _e376, x_20, _e377, eps_5);
+                fresh_visible[min(uint(_e366), 7u)] = _e378;
             } else {
-                uint _e376 = q_2;
-                if ((_e355[min(uint(_e376), 7u)] < K)) {
-                    uint _e380 = q_2;
-                    uint _e382 = q_2;
-                    bool _e385 = fresh_visible[min(uint(_e355[min(uint(_e382), 7u)]), 7u)];
-                    fresh_visible[min(uint(_e380), 7u)] = _e385;
+                uint _e379 = q_2;
+                if ((_e355[min(uint(_e379), 7u)] < K)) {
+                    uint _e383 = q_2;
+                    uint _e385 = q_2;
+                    bool _e388 = fresh_visible[min(uint(_e355[min(uint(_e385), 7u)]), 7u)];
+                    fresh_visible[min(uint(_e383), 7u)] = _e388;
                 }
             }
         }
@@ -2683,51 +2683,51 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
         if (all(loop_bound_21 == uint2(0u, 0u))) { break; }
         loop_bound_21 -= uint2(loop_bound_21.y == 0u, 1u);
         if (!loop_init_18) {
-            uint _e436 = q_3;
-            q_3 = (_e436 + 1u);
+            uint _e439 = q_3;
+            q_3 = (_e439 + 1u);
         }
         loop_init_18 = false;
-        uint _e392 = q_3;
-        if ((_e392 < K)) {
+        uint _e395 = q_3;
+        if ((_e395 < K)) {
         } else {
             break;
         }
         {
-            uint _e395 = q_3;
-            fresh_before[min(uint(_e395), 7u)] = true;
             uint _e398 = q_3;
-            uint _e400 = q_3;
-            if ((_e355[min(uint(_e398), 7u)] == _e400)) {
-                uint _e404 = q_3;
-                bool _e406 = fresh_visible[min(uint(_e404), 7u)];
-                local_8 = _e406;
+            fresh_before[min(uint(_e398), 7u)] = true;
+            uint _e401 = q_3;
+            uint _e403 = q_3;
+            if ((_e355[min(uint(_e401), 7u)] == _e403)) {
+                uint _e407 = q_3;
+                bool _e409 = fresh_visible[min(uint(_e407), 7u)];
+                local_8 = _e409;
             } else {
                 local_8 = false;
             }
-            bool _e408 = local_8;
-            if (_e408) {
+            bool _e411 = local_8;
+            if (_e411) {
                 local_9 = own_history;
             } else {
                 local_9 = false;
             }
-            bool _e412 = local_9;
-            if (_e412) {
-                uint _e413 = q_3;
-                uint _e415 = q_3;
-                uint _e417 = slot_light[min(uint(_e415), 7u)];
+            bool _e415 = local_9;
+            if (_e415) {
+                uint _e416 = q_3;
                 uint _e418 = q_3;
-                uint _e420 = slot_cells[min(uint(_e418), 7u)];
-                Domain _e422 = doms[0];
-                float3 _e423 = n;
-                const bool _e424 = reached_before(_e417, _e420, _e422, x_20, _e423);
-                fresh_before[min(uint(_e413), 7u)] = _e424;
+                uint _e420 = slot_light[min(uint(_e418), 7u)];
+                uint _e421 = q_3;
+                uint _e423 = slot_cells[min(uint(_e421), 7u)];
+                Domain _e425 = doms[0];
+                float3 _e426 = n;
+                const bool _e427 = reached_before(_e420, _e423, _e425, x_20, _e426);
+                fresh_before[min(uint(_e416), 7u)] = _e427;
             } else {
-                uint _e425 = q_3;
-                if ((_e355[min(uint(_e425), 7u)] < K)) {
-                    uint _e429 = q_3;
-                    uint _e431 = q_3;
-                    bool _e434 = fresh_before[min(uint(_e355[min(uint(_e431), 7u)]), 7u)];
-                    fresh_before[min(uint(_e429), 7u)] = _e434;
+                uint _e428 = q_3;
+                if ((_e355[min(uint(_e428), 7u)] < K)) {
+                    uint _e432 = q_3;
+                    uint _e434 = q_3;
+                    bool _e437 = fresh_before[min(uint(_e355[min(uint(_e434), 7u)]), 7u)];
+                    fresh_before[min(uint(_e432), 7u)] = _e437;
                 }
             }
         }
@@ -2738,61 +2738,61 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
         if (all(loop_bound_22 == uint2(0u, 0u))) { break; }
         loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
         if (!loop_init_19) {
-            uint _e510 = q_4;
-            q_4 = (_e510 + 1u);
+            uint _e513 = q_4;
+            q_4 = (_e513 + 1u);
         }
         loop_init_19 = false;
-        uint _e442 = q_4;
-        if ((_e442 < K)) {
+        uint _e445 = q_4;
+        if ((_e445 < K)) {
         } else {
             break;
         }
         {
-            uint _e445 = q_4;
-            float _e447 = slot_p[min(uint(_e445), 7u)];
-            if ((_e447 > 0.0)) {
-                uint _e454 = reuse.visibility;
-                if (!((_e454 == 0u))) {
-                    uint _e460 = q_4;
-                    bool _e462 = fresh_visible[min(uint(_e460), 7u)];
-                    local_11 = _e462;
+            uint _e448 = q_4;
+            float _e450 = slot_p[min(uint(_e448), 7u)];
+            if ((_e450 > 0.0)) {
+                uint _e457 = reuse.visibility;
+                if (!((_e457 == 0u))) {
+                    uint _e463 = q_4;
+                    bool _e465 = fresh_visible[min(uint(_e463), 7u)];
+                    local_11 = _e465;
                 } else {
                     local_11 = true;
                 }
-                bool _e464 = local_11;
-                local_10 = _e464;
+                bool _e467 = local_11;
+                local_10 = _e467;
             } else {
                 local_10 = false;
             }
             bool fresh = local_10;
-            uint _e467 = q_4;
-            uint _e469 = q_4;
             uint _e470 = q_4;
-            uint _e472 = slot_light[min(uint(_e470), 7u)];
+            uint _e472 = q_4;
             uint _e473 = q_4;
-            uint _e475 = slot_cells[min(uint(_e473), 7u)];
-            float3 _e476 = total;
-            uint _e477 = q_4;
-            const float _e479 = slot_target(_e476, _e477, K);
-            uint _e485 = q_4;
-            bool _e487 = fresh_before[min(uint(_e485), 7u)];
-            float3 _e489 = n;
-            Material _e490 = m;
-            const ReuseSlot _e491 = gris_combine(_e469, ConstructReuseSlot(_e472, _e475, (fresh ? _e479 : 0.0)), true, 1.0, _e487, 0u, first_1, x_20, _e489, _e490, doms, hs);
-            kept[min(uint(_e467), 7u)] = _e491;
-            uint _e492 = q_4;
-            uint _e494 = q_4;
-            ReuseSlot _e496 = kept[min(uint(_e494), 7u)];
-            fin[min(uint(_e492), 7u)] = _e496;
+            uint _e475 = slot_light[min(uint(_e473), 7u)];
+            uint _e476 = q_4;
+            uint _e478 = slot_cells[min(uint(_e476), 7u)];
+            float3 _e479 = total;
+            uint _e480 = q_4;
+            const float _e482 = slot_target(_e479, _e480, K);
+            uint _e488 = q_4;
+            bool _e490 = fresh_before[min(uint(_e488), 7u)];
+            float3 _e492 = n;
+            Material _e493 = m;
+            const ReuseSlot _e494 = gris_combine(_e472, ConstructReuseSlot(_e475, _e478, (fresh ? _e482 : 0.0)), true, 1.0, _e490, 0u, first_1, x_20, _e492, _e493, doms, hs);
+            kept[min(uint(_e470), 7u)] = _e494;
+            uint _e495 = q_4;
+            uint _e497 = q_4;
+            ReuseSlot _e499 = kept[min(uint(_e497), 7u)];
+            fin[min(uint(_e495), 7u)] = _e499;
             if ((_e295 > first_1)) {
-                uint _e498 = q_4;
-                uint _e500 = q_4;
                 uint _e501 = q_4;
-                ReuseSlot _e503 = kept[min(uint(_e501), 7u)];
-                float3 _e506 = n;
-                Material _e507 = m;
-                const ReuseSlot _e508 = gris_combine(_e500, _e503, false, confidence, true, first_1, _e295, x_20, _e506, _e507, doms, hs);
-                fin[min(uint(_e498), 7u)] = _e508;
+                uint _e503 = q_4;
+                uint _e504 = q_4;
+                ReuseSlot _e506 = kept[min(uint(_e504), 7u)];
+                float3 _e509 = n;
+                Material _e510 = m;
+                const ReuseSlot _e511 = gris_combine(_e503, _e506, false, confidence, true, first_1, _e295, x_20, _e509, _e510, doms, hs);
+                fin[min(uint(_e501), 7u)] = _e511;
             }
         }
     }
@@ -2802,81 +2802,81 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
         if (all(loop_bound_23 == uint2(0u, 0u))) { break; }
         loop_bound_23 -= uint2(loop_bound_23.y == 0u, 1u);
         if (!loop_init_20) {
-            uint _e539 = k;
-            k = (_e539 + 1u);
+            uint _e542 = k;
+            k = (_e542 + 1u);
         }
         loop_init_20 = false;
-        uint _e516 = k;
-        if ((_e516 < K)) {
+        uint _e519 = k;
+        if ((_e519 < K)) {
         } else {
             break;
         }
         {
-            uint _e519 = k;
-            uint _e521 = k;
-            uint _e524 = fin[min(uint(_e521), 7u)].light;
-            uint _e525 = k;
-            uint _e528 = fin[min(uint(_e525), 7u)].u;
-            const uint2 _e529 = sample_key(_e524, _e528);
-            keys[min(uint(_e519), 7u)] = _e529;
-            uint _e530 = k;
-            uint _e532 = k;
-            float _e535 = fin[min(uint(_e532), 7u)].w;
-            held[min(uint(_e530), 7u)] = (_e535 > 0.0);
+            uint _e522 = k;
+            uint _e524 = k;
+            uint _e527 = fin[min(uint(_e524), 7u)].light;
+            uint _e528 = k;
+            uint _e531 = fin[min(uint(_e528), 7u)].u;
+            const uint2 _e532 = sample_key(_e527, _e531);
+            keys[min(uint(_e522), 7u)] = _e532;
+            uint _e533 = k;
+            uint _e535 = k;
+            float _e538 = fin[min(uint(_e535), 7u)].w;
+            held[min(uint(_e533), 7u)] = (_e538 > 0.0);
         }
     }
-    uint2 _e541[8] = keys;
-    bool _e542[8] = held;
-    const uint _e543[8] = first_holders(_e541, _e542);
+    uint2 _e544[8] = keys;
+    bool _e545[8] = held;
+    const uint _e546[8] = first_holders(_e544, _e545);
     uint2 loop_bound_24 = uint2(4294967295u, 4294967295u);
     bool loop_init_21 = true;
     while(true) {
         if (all(loop_bound_24 == uint2(0u, 0u))) { break; }
         loop_bound_24 -= uint2(loop_bound_24.y == 0u, 1u);
         if (!loop_init_21) {
-            uint _e672 = k_1;
-            k_1 = (_e672 + 1u);
+            uint _e678 = k_1;
+            k_1 = (_e678 + 1u);
         }
         loop_init_21 = false;
-        uint _e547 = k_1;
-        if ((_e547 < K)) {
+        uint _e550 = k_1;
+        if ((_e550 < K)) {
         } else {
             break;
         }
         {
-            uint _e550 = k_1;
-            uint _e552 = k_1;
-            if ((_e543[min(uint(_e550), 7u)] != _e552)) {
+            uint _e553 = k_1;
+            uint _e555 = k_1;
+            if ((_e546[min(uint(_e553), 7u)] != _e555)) {
                 continue;
             }
             w = (0.0).xxx;
-            uint _e557 = k_1;
-            j_1 = _e557;
+            uint _e560 = k_1;
+            j_1 = _e560;
             uint2 loop_bound_25 = uint2(4294967295u, 4294967295u);
             bool loop_init_22 = true;
             while(true) {
                 if (all(loop_bound_25 == uint2(0u, 0u))) { break; }
                 loop_bound_25 -= uint2(loop_bound_25.y == 0u, 1u);
                 if (!loop_init_22) {
-                    uint _e577 = j_1;
-                    j_1 = (_e577 + 1u);
+                    uint _e580 = j_1;
+                    j_1 = (_e580 + 1u);
                 }
                 loop_init_22 = false;
-                uint _e559 = j_1;
-                if ((_e559 < K)) {
+                uint _e562 = j_1;
+                if ((_e562 < K)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e562 = j_1;
-                    uint _e564 = k_1;
-                    if ((_e543[min(uint(_e562), 7u)] == _e564)) {
-                        float3 _e566 = w;
-                        uint _e567 = j_1;
-                        float _e570 = fin[min(uint(_e567), 7u)].w;
-                        uint _e571 = j_1;
-                        const float3 _e573 = slot_share(_e571, K);
-                        w = (_e566 + (_e570 * _e573));
+                    uint _e565 = j_1;
+                    uint _e567 = k_1;
+                    if ((_e546[min(uint(_e565), 7u)] == _e567)) {
+                        float3 _e569 = w;
+                        uint _e570 = j_1;
+                        float _e573 = fin[min(uint(_e570), 7u)].w;
+                        uint _e574 = j_1;
+                        const float3 _e576 = slot_share(_e574, K);
+                        w = (_e569 + (_e573 * _e576));
                     }
                 }
             }
@@ -2889,97 +2889,98 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
                 if (all(loop_bound_26 == uint2(0u, 0u))) { break; }
                 loop_bound_26 -= uint2(loop_bound_26.y == 0u, 1u);
                 if (!loop_init_23) {
-                    uint _e614 = j_2;
-                    j_2 = (_e614 + 1u);
+                    uint _e617 = j_2;
+                    j_2 = (_e617 + 1u);
                 }
                 loop_init_23 = false;
-                uint _e585 = j_2;
-                if ((_e585 < K)) {
-                    bool _e590 = known;
-                    local_12 = !(_e590);
+                uint _e588 = j_2;
+                if ((_e588 < K)) {
+                    bool _e593 = known;
+                    local_12 = !(_e593);
                 } else {
                     local_12 = false;
                 }
-                bool _e593 = local_12;
-                if (_e593) {
+                bool _e596 = local_12;
+                if (_e596) {
                 } else {
                     break;
                 }
                 {
-                    uint _e594 = j_2;
-                    bool _e596 = fresh_held[min(uint(_e594), 7u)];
-                    if (_e596) {
-                        uint _e599 = j_2;
-                        uint2 _e601 = fresh_keys[min(uint(_e599), 7u)];
-                        uint _e602 = k_1;
-                        uint2 _e604 = keys[min(uint(_e602), 7u)];
-                        local_13 = all((_e601 == _e604));
+                    uint _e597 = j_2;
+                    bool _e599 = fresh_held[min(uint(_e597), 7u)];
+                    if (_e599) {
+                        uint _e602 = j_2;
+                        uint2 _e604 = fresh_keys[min(uint(_e602), 7u)];
+                        uint _e605 = k_1;
+                        uint2 _e607 = keys[min(uint(_e605), 7u)];
+                        local_13 = all((_e604 == _e607));
                     } else {
                         local_13 = false;
                     }
-                    bool _e608 = local_13;
-                    if (_e608) {
+                    bool _e611 = local_13;
+                    if (_e611) {
                         known = true;
-                        uint _e610 = j_2;
-                        bool _e612 = fresh_visible[min(uint(_e610), 7u)];
-                        seen = _e612;
+                        uint _e613 = j_2;
+                        bool _e615 = fresh_visible[min(uint(_e613), 7u)];
+                        seen = _e615;
                     }
                 }
             }
             shaded = ConstructShaded((0.0).xxx, (0.0).xxx, (0.0).xxx);
-            bool _e624 = known;
-            if (!(!(_e624))) {
-                bool _e629 = seen;
-                local_14 = _e629;
+            bool _e627 = known;
+            if (!(!(_e627))) {
+                bool _e632 = seen;
+                local_14 = _e632;
             } else {
                 local_14 = true;
             }
-            bool _e631 = local_14;
-            if (_e631) {
-                uint _e632 = k_1;
-                uint _e635 = fin[min(uint(_e632), 7u)].light;
+            bool _e634 = local_14;
+            if (_e634) {
                 uint _e636 = k_1;
-                uint _e639 = fin[min(uint(_e636), 7u)].u;
-                float3 _e640 = n;
-                bool _e641 = known;
-                const Connection _e643 = sample_connection(_e635, _e639, x_20, _e640, eps_6, !(_e641));
-                float3 _e644 = n;
-                Material _e645 = m;
-                const Shaded _e646 = shade_connection(_e643, x_20, _e644, _e645);
-                shaded = _e646;
+                uint _e639 = fin[min(uint(_e636), 7u)].light;
+                GpuLight _e641 = ConstructGpuLight(asfloat(lights.Load3(_e639*64+0)), asuint(lights.Load(_e639*64+12)), asfloat(lights.Load3(_e639*64+16)), asfloat(lights.Load(_e639*64+28)), asfloat(lights.Load3(_e639*64+32)), asfloat(lights.Load(_e639*64+44)), asfloat(lights.Load3(_e639*64+48)), asuint(lights.Load(_e639*64+60)));
+                uint _e642 = k_1;
+                uint _e645 = fin[min(uint(_e642), 7u)].u;
+                float3 _e646 = n;
+                bool _e647 = known;
+                const Connection _e649 = sample_connection(_e641, _e645, x_20, _e646, eps_5, !(_e647));
+                float3 _e650 = n;
+                Material _e651 = m;
+                const Shaded _e652 = shade_connection(_e649, x_20, _e650, _e651);
+                shaded = _e652;
             }
-            Shaded _e647 = t;
-            Shaded _e648 = shaded;
-            float3 _e649 = w;
-            const Shaded _e650 = scaled(_e648, _e649);
-            const Shaded _e651 = add(_e647, _e650);
-            t = _e651;
-            uint _e652 = k_1;
-            j_3 = _e652;
+            Shaded _e653 = t;
+            Shaded _e654 = shaded;
+            float3 _e655 = w;
+            const Shaded _e656 = scaled(_e654, _e655);
+            const Shaded _e657 = add(_e653, _e656);
+            t = _e657;
+            uint _e658 = k_1;
+            j_3 = _e658;
             uint2 loop_bound_27 = uint2(4294967295u, 4294967295u);
             bool loop_init_24 = true;
             while(true) {
                 if (all(loop_bound_27 == uint2(0u, 0u))) { break; }
                 loop_bound_27 -= uint2(loop_bound_27.y == 0u, 1u);
                 if (!loop_init_24) {
-                    uint _e669 = j_3;
-                    j_3 = (_e669 + 1u);
+                    uint _e675 = j_3;
+                    j_3 = (_e675 + 1u);
                 }
                 loop_init_24 = false;
-                uint _e654 = j_3;
-                if ((_e654 < K)) {
+                uint _e660 = j_3;
+                if ((_e660 < K)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e657 = j_3;
-                    uint _e659 = k_1;
-                    if ((_e543[min(uint(_e657), 7u)] == _e659)) {
-                        uint _e661 = j_3;
-                        Shaded _e663 = shaded;
-                        const float3 _e664 = output_of(_e663);
-                        const float _e665 = resample_target(_e664);
-                        visible[min(uint(_e661), 7u)] = (_e665 > 0.0);
+                    uint _e663 = j_3;
+                    uint _e665 = k_1;
+                    if ((_e546[min(uint(_e663), 7u)] == _e665)) {
+                        uint _e667 = j_3;
+                        Shaded _e669 = shaded;
+                        const float3 _e670 = output_of(_e669);
+                        const float _e671 = resample_target(_e670);
+                        visible[min(uint(_e667), 7u)] = (_e671 > 0.0);
                     }
                 }
             }
@@ -2991,60 +2992,60 @@ void main(uint3 gid : SV_DispatchThreadID, uint lid : SV_GroupIndex)
         if (all(loop_bound_28 == uint2(0u, 0u))) { break; }
         loop_bound_28 -= uint2(loop_bound_28.y == 0u, 1u);
         if (!loop_init_25) {
-            uint _e714 = q_5;
-            q_5 = (_e714 + 1u);
+            uint _e720 = q_5;
+            q_5 = (_e720 + 1u);
         }
         loop_init_25 = false;
-        uint _e676 = q_5;
-        if ((_e676 < K)) {
+        uint _e682 = q_5;
+        if ((_e682 < K)) {
         } else {
             break;
         }
         {
-            uint _e681 = reuse.visibility;
-            if (!((_e681 == 0u))) {
-                uint _e687 = q_5;
-                bool _e689 = visible[min(uint(_e687), 7u)];
-                local_15 = _e689;
+            uint _e687 = reuse.visibility;
+            if (!((_e687 == 0u))) {
+                uint _e693 = q_5;
+                bool _e695 = visible[min(uint(_e693), 7u)];
+                local_15 = _e695;
             } else {
                 local_15 = true;
             }
             bool keep = local_15;
-            const uint _e693 = next_index(pixel_1);
-            uint _e696 = q_5;
-            uint _e698 = q_5;
-            uint _e701 = kept[min(uint(_e698), 7u)].light;
+            const uint _e699 = next_index(pixel_1);
             uint _e702 = q_5;
-            uint _e705 = kept[min(uint(_e702), 7u)].u;
-            uint _e706 = q_5;
-            float _e709 = kept[min(uint(_e706), 7u)].w;
+            uint _e704 = q_5;
+            uint _e707 = kept[min(uint(_e704), 7u)].light;
+            uint _e708 = q_5;
+            uint _e711 = kept[min(uint(_e708), 7u)].u;
+            uint _e712 = q_5;
+            float _e715 = kept[min(uint(_e712), 7u)].w;
             {
-                ReuseSlot _value4 = ConstructReuseSlot(_e701, _e705, (keep ? _e709 : 0.0));
-                reuse_pixels.Store(_e696*12+48+_e693*144+0, asuint(_value4.light));
-                reuse_pixels.Store(_e696*12+48+_e693*144+4, asuint(_value4.u));
-                reuse_pixels.Store(_e696*12+48+_e693*144+8, asuint(_value4.w));
+                ReuseSlot _value4 = ConstructReuseSlot(_e707, _e711, (keep ? _e715 : 0.0));
+                reuse_pixels.Store(_e702*12+48+_e699*144+0, asuint(_value4.light));
+                reuse_pixels.Store(_e702*12+48+_e699*144+4, asuint(_value4.u));
+                reuse_pixels.Store(_e702*12+48+_e699*144+8, asuint(_value4.w));
             }
         }
     }
-    const uint _e717 = next_index(pixel_1);
-    float3 _e720 = n;
-    Material _e721 = m;
-    float _e724 = reuse.max_confidence;
-    const ReuseSurface _e726 = reuse_surface(x_20, _e720, _e721, min(confidence, _e724));
+    const uint _e723 = next_index(pixel_1);
+    float3 _e726 = n;
+    Material _e727 = m;
+    float _e730 = reuse.max_confidence;
+    const ReuseSurface _e732 = reuse_surface(x_20, _e726, _e727, min(confidence, _e730));
     {
-        ReuseSurface _value2 = _e726;
-        reuse_pixels.Store3(0+_e717*144+0, asuint(_value2.x));
-        reuse_pixels.Store(0+_e717*144+12, asuint(_value2.m));
-        reuse_pixels.Store3(0+_e717*144+16, asuint(_value2.n));
-        reuse_pixels.Store(0+_e717*144+28, asuint(_value2.base));
-        reuse_pixels.Store(0+_e717*144+32, asuint(_value2.rough));
-        reuse_pixels.Store(0+_e717*144+36, asuint(_value2.pad0_));
-        reuse_pixels.Store(0+_e717*144+40, asuint(_value2.pad1_));
-        reuse_pixels.Store(0+_e717*144+44, asuint(_value2.pad2_));
+        ReuseSurface _value2 = _e732;
+        reuse_pixels.Store3(0+_e723*144+0, asuint(_value2.x));
+        reuse_pixels.Store(0+_e723*144+12, asuint(_value2.m));
+        reuse_pixels.Store3(0+_e723*144+16, asuint(_value2.n));
+        reuse_pixels.Store(0+_e723*144+28, asuint(_value2.base));
+        reuse_pixels.Store(0+_e723*144+32, asuint(_value2.rough));
+        reuse_pixels.Store(0+_e723*144+36, asuint(_value2.pad0_));
+        reuse_pixels.Store(0+_e723*144+40, asuint(_value2.pad1_));
+        reuse_pixels.Store(0+_e723*144+44, asuint(_value2.pad2_));
     }
-    float3 _e729 = t.diffuse;
-    float3 _e731 = t.specular;
-    uint _e733 = count;
-    out_tex[texel_1] = float4((_e729 + _e731), float(_e733));
+    float3 _e735 = t.diffuse;
+    float3 _e737 = t.specular;
+    uint _e739 = count;
+    out_tex[texel_1] = float4((_e735 + _e737), float(_e739));
     return;
 }

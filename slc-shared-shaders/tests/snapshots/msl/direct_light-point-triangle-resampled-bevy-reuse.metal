@@ -1954,33 +1954,48 @@ uint next_index(
     return ((_e3 * _e6) * _e10) + i_5;
 }
 
-float reuse_target(
-    uint q_6,
+Connection sample_connection(
     GpuLight l_4,
     uint cells,
     metal::float3 x_11,
     metal::float3 n_10,
-    Material m_3,
+    float eps_3,
+    bool trace_4,
     device type_7 const& geo_nodes,
     device type_8 const& geo_tris,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     float _e9 = grid_coordinate(cells);
     float _e12 = grid_coordinate(cells << 16u);
-    Connection _e15 = connect_record(l_4, x_11, n_10, n_10, UNRANGED, UNRANGED, 1.0, _e9, _e12, 0.0, false, geo_nodes, geo_tris, _buffer_sizes);
-    Shaded _e16 = shade_connection(_e15, x_11, n_10, m_3);
-    metal::float3 _e17 = output_of(_e16);
-    float _e19 = slot_target(_e17, q_6, K);
-    return _e19;
+    Connection _e13 = connect_record(l_4, x_11, n_10, n_10, UNRANGED, UNRANGED, 1.0, _e9, _e12, eps_3, trace_4, geo_nodes, geo_tris, _buffer_sizes);
+    return _e13;
+}
+
+float reuse_target(
+    uint q_6,
+    GpuLight l_5,
+    uint cells_1,
+    metal::float3 x_12,
+    metal::float3 n_11,
+    Material m_3,
+    device type_7 const& geo_nodes,
+    device type_8 const& geo_tris,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Connection _e8 = sample_connection(l_5, cells_1, x_12, n_11, 0.0, false, geo_nodes, geo_tris, _buffer_sizes);
+    Shaded _e9 = shade_connection(_e8, x_12, n_11, m_3);
+    metal::float3 _e10 = output_of(_e9);
+    float _e12 = slot_target(_e10, q_6, K);
+    return _e12;
 }
 
 ReuseSurface reuse_surface(
-    metal::float3 x_12,
-    metal::float3 n_11,
+    metal::float3 x_13,
+    metal::float3 n_12,
     Material m_4,
     float c_10
 ) {
-    return ReuseSurface {x_12, c_10, n_11, metal::pack_float_to_unorm4x8(metal::float4(m_4.base, m_4.metallic)), metal::pack_float_to_unorm2x16(metal::float2(metal::saturate(m_4.roughness), metal::saturate(m_4.reflectance))), 0u, 0u, 0u};
+    return ReuseSurface {x_13, c_10, n_12, metal::pack_float_to_unorm4x8(metal::float4(m_4.base, m_4.metallic)), metal::pack_float_to_unorm2x16(metal::float2(metal::saturate(m_4.roughness), metal::saturate(m_4.reflectance))), 0u, 0u, 0u};
 }
 
 Material reuse_material(
@@ -1995,52 +2010,42 @@ Material reuse_material(
 
 metal::uint2 sample_key(
     uint li_7,
-    uint cells_1,
+    uint cells_2,
     device type_12 const& lights,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e6 = lights[li_7].kind;
-    return metal::uint2(li_7, (_e6 == LIGHT_TRIANGLE) ? cells_1 : 0u);
-}
-
-Connection sample_connection(
-    uint li_8,
-    uint cells_2,
-    metal::float3 x_13,
-    metal::float3 n_12,
-    float eps_3,
-    bool trace_4,
-    device type_7 const& geo_nodes,
-    device type_8 const& geo_tris,
-    device type_12 const& lights,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    GpuLight _e8 = lights[li_8];
-    float _e12 = grid_coordinate(cells_2);
-    float _e15 = grid_coordinate(cells_2 << 16u);
-    Connection _e16 = connect_record(_e8, x_13, n_12, n_12, UNRANGED, UNRANGED, 1.0, _e12, _e15, eps_3, trace_4, geo_nodes, geo_tris, _buffer_sizes);
-    return _e16;
+    return metal::uint2(li_7, (_e6 == LIGHT_TRIANGLE) ? cells_2 : 0u);
 }
 
 bool sample_reaches(
-    uint li_9,
+    GpuLight l_6,
     uint cells_3,
     metal::float3 x_14,
     metal::float3 n_13,
     float eps_4,
     device type_7 const& geo_nodes,
     device type_8 const& geo_tris,
-    device type_12 const& lights,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Connection _e6 = sample_connection(li_9, cells_3, x_14, n_13, eps_4, true, geo_nodes, geo_tris, lights, _buffer_sizes);
+    Connection _e6 = sample_connection(l_6, cells_3, x_14, n_13, eps_4, true, geo_nodes, geo_tris, _buffer_sizes);
     return metal::any(_e6.e > metal::float3(0.0));
 }
 
-bool history_vouches(
-    uint li_10,
-    uint cells_4,
+float domain_offset(
     Domain d_6,
+    constant ViewParams& view,
+    constant ReuseParams& reuse
+) {
+    float _e3 = view.shadow_offset;
+    metal::float3 _e6 = reuse.prev_eye;
+    return _e3 * metal::length(_e6 - d_6.x);
+}
+
+bool history_vouches(
+    uint li_8,
+    uint cells_4,
+    Domain d_7,
     constant ViewParams& view,
     constant ReuseParams& reuse,
     device type_12 const& lights_prev,
@@ -2054,24 +2059,23 @@ bool history_vouches(
     if (_e11 == 2u) {
         return false;
     }
-    float _e19 = view.shadow_offset;
-    metal::float3 _e22 = reuse.prev_eye;
-    metal::float3 a_10 = d_6.x + (d_6.n * (_e19 * metal::length(_e22 - d_6.x)));
-    GpuLight _e31 = lights_prev[li_10];
-    float _e32 = grid_coordinate(cells_4);
-    float _e35 = grid_coordinate(cells_4 << 16u);
-    metal::float3 _e36 = light_point(_e31, _e32, _e35);
-    metal::float3 _e38 = ray_inverse3_(_e36 - a_10);
-    metal::float3 _e41 = reuse.moved_min;
-    metal::float3 _e44 = reuse.moved_max;
-    float _e46 = ray_aabb(a_10, _e38, _e41, _e44, 1.0);
-    return _e46 < 0.0;
+    float _e17 = domain_offset(d_7, view, reuse);
+    metal::float3 a_10 = d_7.x + (d_7.n * _e17);
+    GpuLight _e22 = lights_prev[li_8];
+    float _e23 = grid_coordinate(cells_4);
+    float _e26 = grid_coordinate(cells_4 << 16u);
+    metal::float3 _e27 = light_point(_e22, _e23, _e26);
+    metal::float3 _e29 = ray_inverse3_(_e27 - a_10);
+    metal::float3 _e32 = reuse.moved_min;
+    metal::float3 _e35 = reuse.moved_max;
+    float _e37 = ray_aabb(a_10, _e29, _e32, _e35, 1.0);
+    return _e37 < 0.0;
 }
 
 bool reached_before(
-    uint li_11,
+    uint li_9,
     uint cells_5,
-    Domain d_7,
+    Domain d_8,
     metal::float3 x_15,
     metal::float3 n_14,
     device type_7 const& geo_nodes,
@@ -2090,32 +2094,32 @@ bool reached_before(
     uint q_7 = 0u;
     bool local_45 = {};
     bool local_46 = {};
-    bool _e5 = history_vouches(li_11, cells_5, d_7, view, reuse, lights_prev, _buffer_sizes);
+    bool _e5 = history_vouches(li_9, cells_5, d_8, view, reuse, lights_prev, _buffer_sizes);
     if (!(_e5)) {
         return false;
     }
-    GpuLight l_5 = lights[li_11];
-    GpuLight lp = lights_prev[li_11];
-    if (metal::all(d_7.x == x_15)) {
-        local_41 = metal::all(d_7.n == n_14);
+    GpuLight l_7 = lights[li_9];
+    GpuLight lp = lights_prev[li_9];
+    if (metal::all(d_8.x == x_15)) {
+        local_41 = metal::all(d_8.n == n_14);
     } else {
         local_41 = false;
     }
     bool _e23 = local_41;
     if (_e23) {
-        local_42 = metal::all(l_5.p0_ == lp.p0_);
+        local_42 = metal::all(l_7.p0_ == lp.p0_);
     } else {
         local_42 = false;
     }
     bool _e31 = local_42;
     if (_e31) {
-        local_43 = metal::all(l_5.p1_ == lp.p1_);
+        local_43 = metal::all(l_7.p1_ == lp.p1_);
     } else {
         local_43 = false;
     }
     bool _e39 = local_43;
     if (_e39) {
-        local_44 = metal::all(l_5.p2_ == lp.p2_);
+        local_44 = metal::all(l_7.p2_ == lp.p2_);
     } else {
         local_44 = false;
     }
@@ -2123,7 +2127,7 @@ bool reached_before(
     if (_e47) {
         return true;
     }
-    metal::uint2 _e49 = sample_key(li_11, cells_5, lights, _buffer_sizes);
+    metal::uint2 _e49 = sample_key(li_9, cells_5, lights, _buffer_sizes);
     uint2 loop_bound_11 = uint2(4294967295u);
     bool loop_init_8 = true;
     while(true) {
@@ -2140,7 +2144,7 @@ bool reached_before(
             break;
         }
         {
-            uint _e57 = previous_index(d_7.pixel, view, reuse);
+            uint _e57 = previous_index(d_8.pixel, view, reuse);
             uint _e60 = q_7;
             ReuseSlot h_4 = reuse_pixels[_e57].slots.inner[_e60];
             if (h_4.w > 0.0) {
@@ -2161,13 +2165,9 @@ bool reached_before(
             }
         }
     }
-    float _e89 = view.shadow_offset;
-    metal::float3 _e92 = reuse.prev_eye;
-    float eps_5 = _e89 * metal::length(_e92 - d_7.x);
-    float _e103 = grid_coordinate(cells_5);
-    float _e106 = grid_coordinate(cells_5 << 16u);
-    Connection _e108 = connect_record(lp, d_7.x, d_7.n, d_7.n, UNRANGED, UNRANGED, 1.0, _e103, _e106, eps_5, true, geo_nodes, geo_tris, _buffer_sizes);
-    return metal::any(_e108.e > metal::float3(0.0));
+    float _e89 = domain_offset(d_8, view, reuse);
+    bool _e90 = sample_reaches(lp, cells_5, d_8.x, d_8.n, _e89, geo_nodes, geo_tris, _buffer_sizes);
+    return _e90;
 }
 
 metal::int2 naga_f2i32(metal::float2 value) {
@@ -2177,7 +2177,7 @@ metal::int2 naga_f2i32(metal::float2 value) {
 uint reuse_domains(
     metal::float3 x_16,
     metal::float3 n_15,
-    float d_8,
+    float d_9,
     uint h_2,
     thread type_27& doms_1,
     constant ViewParams& view,
@@ -2314,7 +2314,7 @@ uint reuse_domains(
             }
             bool _e143 = local_51;
             if (!(_e143)) {
-                bool _e151 = history_matches(n_15, s_13.n, x_16, metal::dot(s_13.n, s_13.x), d_8);
+                bool _e151 = history_matches(n_15, s_13.n, x_16, metal::dot(s_13.n, s_13.x), d_9);
                 local_52 = !(_e151);
             } else {
                 local_52 = true;
@@ -2710,7 +2710,7 @@ kernel void main_(
     metal::float4 _e114 = range_lobe(_e113);
     float _e117 = view.shadow_offset;
     metal::float3 _e120 = view.eye;
-    float eps_6 = _e117 * metal::length(_e120 - x_20);
+    float eps_5 = _e117 * metal::length(_e120 - x_20);
     uint _e126 = view.seed;
     uint _e130 = view.width;
     uint _e136 = view.frame;
@@ -2768,7 +2768,7 @@ kernel void main_(
                     if (_e187) {
                         continue;
                     }
-                    uint li_12 = bsh_nodes[b_10].light;
+                    uint li_10 = bsh_nodes[b_10].light;
                     uint _e192 = count;
                     count = _e192 + 1u;
                     uint _e195 = h;
@@ -2787,7 +2787,7 @@ kernel void main_(
                     metal::float3 _e206 = n;
                     metal::float3 _e207 = r;
                     Material _e208 = m;
-                    Shaded _e213 = shade_pick_traced(li_12, x_20, _e206, _e207, _e114, _e208, 1.0, u_5.x, u_5.y, eps_6, false, geo_nodes, geo_tris, lights, rt2_3, r2_3, light_cones, _buffer_sizes);
+                    Shaded _e213 = shade_pick_traced(li_10, x_20, _e206, _e207, _e114, _e208, 1.0, u_5.x, u_5.y, eps_5, false, geo_nodes, geo_tris, lights, rt2_3, r2_3, light_cones, _buffer_sizes);
                     metal::float3 _e214 = output_of(_e213);
                     float _e215 = resample_target(_e214);
                     if (_e215 > 0.0) {
@@ -2825,7 +2825,7 @@ kernel void main_(
                                 bool _e241 = local_5;
                                 if (_e241) {
                                     uint _e242 = q;
-                                    slot_light.inner[_e242] = li_12;
+                                    slot_light.inner[_e242] = li_10;
                                     uint _e244 = q;
                                     slot_u.inner[_e244] = u_5;
                                     uint _e246 = q;
@@ -2916,8 +2916,8 @@ kernel void main_(
         if (metal::all(loop_bound_20 == uint2(0u))) { break; }
         loop_bound_20 -= uint2(loop_bound_20.y == 0u, 1u);
         if (!loop_init_17) {
-            uint _e387 = q_2;
-            q_2 = _e387 + 1u;
+            uint _e390 = q_2;
+            q_2 = _e390 + 1u;
         }
         loop_init_17 = false;
         uint _e359 = q_2;
@@ -2930,20 +2930,21 @@ kernel void main_(
             uint _e364 = q_2;
             if (_e355.inner[_e362] == _e364) {
                 uint _e366 = q_2;
-                uint _e368 = q_2;
-                uint _e370 = slot_light.inner[_e368];
-                uint _e371 = q_2;
-                uint _e373 = slot_cells.inner[_e371];
-                metal::float3 _e374 = n;
-                bool _e375 = sample_reaches(_e370, _e373, x_20, _e374, eps_6, geo_nodes, geo_tris, lights, _buffer_sizes);
-                fresh_visible.inner[_e366] = _e375;
+                uint _e369 = q_2;
+                uint _e371 = slot_light.inner[_e369];
+                GpuLight _e373 = lights[_e371];
+                uint _e374 = q_2;
+                uint _e376 = slot_cells.inner[_e374];
+                metal::float3 _e377 = n;
+                bool _e378 = sample_reaches(_e373, _e376, x_20, _e377, eps_5, geo_nodes, geo_tris, _buffer_sizes);
+                fresh_visible.inner[_e366] = _e378;
             } else {
-                uint _e376 = q_2;
-                if (_e355.inner[_e376] < K) {
-                    uint _e380 = q_2;
-                    uint _e382 = q_2;
-                    bool _e385 = fresh_visible.inner[_e355.inner[_e382]];
-                    fresh_visible.inner[_e380] = _e385;
+                uint _e379 = q_2;
+                if (_e355.inner[_e379] < K) {
+                    uint _e383 = q_2;
+                    uint _e385 = q_2;
+                    bool _e388 = fresh_visible.inner[_e355.inner[_e385]];
+                    fresh_visible.inner[_e383] = _e388;
                 }
             }
         }
@@ -2954,51 +2955,51 @@ kernel void main_(
         if (metal::all(loop_bound_21 == uint2(0u))) { break; }
         loop_bound_21 -= uint2(loop_bound_21.y == 0u, 1u);
         if (!loop_init_18) {
-            uint _e436 = q_3;
-            q_3 = _e436 + 1u;
+            uint _e439 = q_3;
+            q_3 = _e439 + 1u;
         }
         loop_init_18 = false;
-        uint _e392 = q_3;
-        if (_e392 < K) {
+        uint _e395 = q_3;
+        if (_e395 < K) {
         } else {
             break;
         }
         {
-            uint _e395 = q_3;
-            fresh_before.inner[_e395] = true;
             uint _e398 = q_3;
-            uint _e400 = q_3;
-            if (_e355.inner[_e398] == _e400) {
-                uint _e404 = q_3;
-                bool _e406 = fresh_visible.inner[_e404];
-                local_8 = _e406;
+            fresh_before.inner[_e398] = true;
+            uint _e401 = q_3;
+            uint _e403 = q_3;
+            if (_e355.inner[_e401] == _e403) {
+                uint _e407 = q_3;
+                bool _e409 = fresh_visible.inner[_e407];
+                local_8 = _e409;
             } else {
                 local_8 = false;
             }
-            bool _e408 = local_8;
-            if (_e408) {
+            bool _e411 = local_8;
+            if (_e411) {
                 local_9 = own_history;
             } else {
                 local_9 = false;
             }
-            bool _e412 = local_9;
-            if (_e412) {
-                uint _e413 = q_3;
-                uint _e415 = q_3;
-                uint _e417 = slot_light.inner[_e415];
+            bool _e415 = local_9;
+            if (_e415) {
+                uint _e416 = q_3;
                 uint _e418 = q_3;
-                uint _e420 = slot_cells.inner[_e418];
-                Domain _e422 = doms.inner[0];
-                metal::float3 _e423 = n;
-                bool _e424 = reached_before(_e417, _e420, _e422, x_20, _e423, geo_nodes, geo_tris, view, lights, reuse, lights_prev, reuse_pixels, _buffer_sizes);
-                fresh_before.inner[_e413] = _e424;
+                uint _e420 = slot_light.inner[_e418];
+                uint _e421 = q_3;
+                uint _e423 = slot_cells.inner[_e421];
+                Domain _e425 = doms.inner[0];
+                metal::float3 _e426 = n;
+                bool _e427 = reached_before(_e420, _e423, _e425, x_20, _e426, geo_nodes, geo_tris, view, lights, reuse, lights_prev, reuse_pixels, _buffer_sizes);
+                fresh_before.inner[_e416] = _e427;
             } else {
-                uint _e425 = q_3;
-                if (_e355.inner[_e425] < K) {
-                    uint _e429 = q_3;
-                    uint _e431 = q_3;
-                    bool _e434 = fresh_before.inner[_e355.inner[_e431]];
-                    fresh_before.inner[_e429] = _e434;
+                uint _e428 = q_3;
+                if (_e355.inner[_e428] < K) {
+                    uint _e432 = q_3;
+                    uint _e434 = q_3;
+                    bool _e437 = fresh_before.inner[_e355.inner[_e434]];
+                    fresh_before.inner[_e432] = _e437;
                 }
             }
         }
@@ -3009,61 +3010,61 @@ kernel void main_(
         if (metal::all(loop_bound_22 == uint2(0u))) { break; }
         loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
         if (!loop_init_19) {
-            uint _e510 = q_4;
-            q_4 = _e510 + 1u;
+            uint _e513 = q_4;
+            q_4 = _e513 + 1u;
         }
         loop_init_19 = false;
-        uint _e442 = q_4;
-        if (_e442 < K) {
+        uint _e445 = q_4;
+        if (_e445 < K) {
         } else {
             break;
         }
         {
-            uint _e445 = q_4;
-            float _e447 = slot_p.inner[_e445];
-            if (_e447 > 0.0) {
-                uint _e454 = reuse.visibility;
-                if (!((_e454 == 0u))) {
-                    uint _e460 = q_4;
-                    bool _e462 = fresh_visible.inner[_e460];
-                    local_11 = _e462;
+            uint _e448 = q_4;
+            float _e450 = slot_p.inner[_e448];
+            if (_e450 > 0.0) {
+                uint _e457 = reuse.visibility;
+                if (!((_e457 == 0u))) {
+                    uint _e463 = q_4;
+                    bool _e465 = fresh_visible.inner[_e463];
+                    local_11 = _e465;
                 } else {
                     local_11 = true;
                 }
-                bool _e464 = local_11;
-                local_10 = _e464;
+                bool _e467 = local_11;
+                local_10 = _e467;
             } else {
                 local_10 = false;
             }
             bool fresh = local_10;
-            uint _e467 = q_4;
-            uint _e469 = q_4;
             uint _e470 = q_4;
-            uint _e472 = slot_light.inner[_e470];
+            uint _e472 = q_4;
             uint _e473 = q_4;
-            uint _e475 = slot_cells.inner[_e473];
-            metal::float3 _e476 = total;
-            uint _e477 = q_4;
-            float _e479 = slot_target(_e476, _e477, K);
-            uint _e485 = q_4;
-            bool _e487 = fresh_before.inner[_e485];
-            metal::float3 _e489 = n;
-            Material _e490 = m;
-            ReuseSlot _e491 = gris_combine(_e469, ReuseSlot {_e472, _e475, fresh ? _e479 : 0.0}, true, 1.0, _e487, 0u, first_1, x_20, _e489, _e490, doms, hs, geo_nodes, geo_tris, view, lights, reuse, lights_prev, reuse_pixels, _buffer_sizes);
-            kept.inner[_e467] = _e491;
-            uint _e492 = q_4;
-            uint _e494 = q_4;
-            ReuseSlot _e496 = kept.inner[_e494];
-            fin.inner[_e492] = _e496;
+            uint _e475 = slot_light.inner[_e473];
+            uint _e476 = q_4;
+            uint _e478 = slot_cells.inner[_e476];
+            metal::float3 _e479 = total;
+            uint _e480 = q_4;
+            float _e482 = slot_target(_e479, _e480, K);
+            uint _e488 = q_4;
+            bool _e490 = fresh_before.inner[_e488];
+            metal::float3 _e492 = n;
+            Material _e493 = m;
+            ReuseSlot _e494 = gris_combine(_e472, ReuseSlot {_e475, _e478, fresh ? _e482 : 0.0}, true, 1.0, _e490, 0u, first_1, x_20, _e492, _e493, doms, hs, geo_nodes, geo_tris, view, lights, reuse, lights_prev, reuse_pixels, _buffer_sizes);
+            kept.inner[_e470] = _e494;
+            uint _e495 = q_4;
+            uint _e497 = q_4;
+            ReuseSlot _e499 = kept.inner[_e497];
+            fin.inner[_e495] = _e499;
             if (_e295 > first_1) {
-                uint _e498 = q_4;
-                uint _e500 = q_4;
                 uint _e501 = q_4;
-                ReuseSlot _e503 = kept.inner[_e501];
-                metal::float3 _e506 = n;
-                Material _e507 = m;
-                ReuseSlot _e508 = gris_combine(_e500, _e503, false, confidence, true, first_1, _e295, x_20, _e506, _e507, doms, hs, geo_nodes, geo_tris, view, lights, reuse, lights_prev, reuse_pixels, _buffer_sizes);
-                fin.inner[_e498] = _e508;
+                uint _e503 = q_4;
+                uint _e504 = q_4;
+                ReuseSlot _e506 = kept.inner[_e504];
+                metal::float3 _e509 = n;
+                Material _e510 = m;
+                ReuseSlot _e511 = gris_combine(_e503, _e506, false, confidence, true, first_1, _e295, x_20, _e509, _e510, doms, hs, geo_nodes, geo_tris, view, lights, reuse, lights_prev, reuse_pixels, _buffer_sizes);
+                fin.inner[_e501] = _e511;
             }
         }
     }
@@ -3073,81 +3074,81 @@ kernel void main_(
         if (metal::all(loop_bound_23 == uint2(0u))) { break; }
         loop_bound_23 -= uint2(loop_bound_23.y == 0u, 1u);
         if (!loop_init_20) {
-            uint _e539 = k;
-            k = _e539 + 1u;
+            uint _e542 = k;
+            k = _e542 + 1u;
         }
         loop_init_20 = false;
-        uint _e516 = k;
-        if (_e516 < K) {
+        uint _e519 = k;
+        if (_e519 < K) {
         } else {
             break;
         }
         {
-            uint _e519 = k;
-            uint _e521 = k;
-            uint _e524 = fin.inner[_e521].light;
-            uint _e525 = k;
-            uint _e528 = fin.inner[_e525].u;
-            metal::uint2 _e529 = sample_key(_e524, _e528, lights, _buffer_sizes);
-            keys.inner[_e519] = _e529;
-            uint _e530 = k;
-            uint _e532 = k;
-            float _e535 = fin.inner[_e532].w;
-            held.inner[_e530] = _e535 > 0.0;
+            uint _e522 = k;
+            uint _e524 = k;
+            uint _e527 = fin.inner[_e524].light;
+            uint _e528 = k;
+            uint _e531 = fin.inner[_e528].u;
+            metal::uint2 _e532 = sample_key(_e527, _e531, lights, _buffer_sizes);
+            keys.inner[_e522] = _e532;
+            uint _e533 = k;
+            uint _e535 = k;
+            float _e538 = fin.inner[_e535].w;
+            held.inner[_e533] = _e538 > 0.0;
         }
     }
-    type_25 _e541 = keys;
-    type_26 _e542 = held;
-    type_17 _e543 = first_holders(_e541, _e542);
+    type_25 _e544 = keys;
+    type_26 _e545 = held;
+    type_17 _e546 = first_holders(_e544, _e545);
     uint2 loop_bound_24 = uint2(4294967295u);
     bool loop_init_21 = true;
     while(true) {
         if (metal::all(loop_bound_24 == uint2(0u))) { break; }
         loop_bound_24 -= uint2(loop_bound_24.y == 0u, 1u);
         if (!loop_init_21) {
-            uint _e672 = k_1;
-            k_1 = _e672 + 1u;
+            uint _e678 = k_1;
+            k_1 = _e678 + 1u;
         }
         loop_init_21 = false;
-        uint _e547 = k_1;
-        if (_e547 < K) {
+        uint _e550 = k_1;
+        if (_e550 < K) {
         } else {
             break;
         }
         {
-            uint _e550 = k_1;
-            uint _e552 = k_1;
-            if (_e543.inner[_e550] != _e552) {
+            uint _e553 = k_1;
+            uint _e555 = k_1;
+            if (_e546.inner[_e553] != _e555) {
                 continue;
             }
             w = metal::float3(0.0);
-            uint _e557 = k_1;
-            j_1 = _e557;
+            uint _e560 = k_1;
+            j_1 = _e560;
             uint2 loop_bound_25 = uint2(4294967295u);
             bool loop_init_22 = true;
             while(true) {
                 if (metal::all(loop_bound_25 == uint2(0u))) { break; }
                 loop_bound_25 -= uint2(loop_bound_25.y == 0u, 1u);
                 if (!loop_init_22) {
-                    uint _e577 = j_1;
-                    j_1 = _e577 + 1u;
+                    uint _e580 = j_1;
+                    j_1 = _e580 + 1u;
                 }
                 loop_init_22 = false;
-                uint _e559 = j_1;
-                if (_e559 < K) {
+                uint _e562 = j_1;
+                if (_e562 < K) {
                 } else {
                     break;
                 }
                 {
-                    uint _e562 = j_1;
-                    uint _e564 = k_1;
-                    if (_e543.inner[_e562] == _e564) {
-                        metal::float3 _e566 = w;
-                        uint _e567 = j_1;
-                        float _e570 = fin.inner[_e567].w;
-                        uint _e571 = j_1;
-                        metal::float3 _e573 = slot_share(_e571, K);
-                        w = _e566 + (_e570 * _e573);
+                    uint _e565 = j_1;
+                    uint _e567 = k_1;
+                    if (_e546.inner[_e565] == _e567) {
+                        metal::float3 _e569 = w;
+                        uint _e570 = j_1;
+                        float _e573 = fin.inner[_e570].w;
+                        uint _e574 = j_1;
+                        metal::float3 _e576 = slot_share(_e574, K);
+                        w = _e569 + (_e573 * _e576);
                     }
                 }
             }
@@ -3160,97 +3161,98 @@ kernel void main_(
                 if (metal::all(loop_bound_26 == uint2(0u))) { break; }
                 loop_bound_26 -= uint2(loop_bound_26.y == 0u, 1u);
                 if (!loop_init_23) {
-                    uint _e614 = j_2;
-                    j_2 = _e614 + 1u;
+                    uint _e617 = j_2;
+                    j_2 = _e617 + 1u;
                 }
                 loop_init_23 = false;
-                uint _e585 = j_2;
-                if (_e585 < K) {
-                    bool _e590 = known;
-                    local_12 = !(_e590);
+                uint _e588 = j_2;
+                if (_e588 < K) {
+                    bool _e593 = known;
+                    local_12 = !(_e593);
                 } else {
                     local_12 = false;
                 }
-                bool _e593 = local_12;
-                if (_e593) {
+                bool _e596 = local_12;
+                if (_e596) {
                 } else {
                     break;
                 }
                 {
-                    uint _e594 = j_2;
-                    bool _e596 = fresh_held.inner[_e594];
-                    if (_e596) {
-                        uint _e599 = j_2;
-                        metal::uint2 _e601 = fresh_keys.inner[_e599];
-                        uint _e602 = k_1;
-                        metal::uint2 _e604 = keys.inner[_e602];
-                        local_13 = metal::all(_e601 == _e604);
+                    uint _e597 = j_2;
+                    bool _e599 = fresh_held.inner[_e597];
+                    if (_e599) {
+                        uint _e602 = j_2;
+                        metal::uint2 _e604 = fresh_keys.inner[_e602];
+                        uint _e605 = k_1;
+                        metal::uint2 _e607 = keys.inner[_e605];
+                        local_13 = metal::all(_e604 == _e607);
                     } else {
                         local_13 = false;
                     }
-                    bool _e608 = local_13;
-                    if (_e608) {
+                    bool _e611 = local_13;
+                    if (_e611) {
                         known = true;
-                        uint _e610 = j_2;
-                        bool _e612 = fresh_visible.inner[_e610];
-                        seen = _e612;
+                        uint _e613 = j_2;
+                        bool _e615 = fresh_visible.inner[_e613];
+                        seen = _e615;
                     }
                 }
             }
             shaded = Shaded {metal::float3(0.0), metal::float3(0.0), metal::float3(0.0)};
-            bool _e624 = known;
-            if (!(!(_e624))) {
-                bool _e629 = seen;
-                local_14 = _e629;
+            bool _e627 = known;
+            if (!(!(_e627))) {
+                bool _e632 = seen;
+                local_14 = _e632;
             } else {
                 local_14 = true;
             }
-            bool _e631 = local_14;
-            if (_e631) {
-                uint _e632 = k_1;
-                uint _e635 = fin.inner[_e632].light;
+            bool _e634 = local_14;
+            if (_e634) {
                 uint _e636 = k_1;
-                uint _e639 = fin.inner[_e636].u;
-                metal::float3 _e640 = n;
-                bool _e641 = known;
-                Connection _e643 = sample_connection(_e635, _e639, x_20, _e640, eps_6, !(_e641), geo_nodes, geo_tris, lights, _buffer_sizes);
-                metal::float3 _e644 = n;
-                Material _e645 = m;
-                Shaded _e646 = shade_connection(_e643, x_20, _e644, _e645);
-                shaded = _e646;
+                uint _e639 = fin.inner[_e636].light;
+                GpuLight _e641 = lights[_e639];
+                uint _e642 = k_1;
+                uint _e645 = fin.inner[_e642].u;
+                metal::float3 _e646 = n;
+                bool _e647 = known;
+                Connection _e649 = sample_connection(_e641, _e645, x_20, _e646, eps_5, !(_e647), geo_nodes, geo_tris, _buffer_sizes);
+                metal::float3 _e650 = n;
+                Material _e651 = m;
+                Shaded _e652 = shade_connection(_e649, x_20, _e650, _e651);
+                shaded = _e652;
             }
-            Shaded _e647 = t;
-            Shaded _e648 = shaded;
-            metal::float3 _e649 = w;
-            Shaded _e650 = scaled(_e648, _e649);
-            Shaded _e651 = add(_e647, _e650);
-            t = _e651;
-            uint _e652 = k_1;
-            j_3 = _e652;
+            Shaded _e653 = t;
+            Shaded _e654 = shaded;
+            metal::float3 _e655 = w;
+            Shaded _e656 = scaled(_e654, _e655);
+            Shaded _e657 = add(_e653, _e656);
+            t = _e657;
+            uint _e658 = k_1;
+            j_3 = _e658;
             uint2 loop_bound_27 = uint2(4294967295u);
             bool loop_init_24 = true;
             while(true) {
                 if (metal::all(loop_bound_27 == uint2(0u))) { break; }
                 loop_bound_27 -= uint2(loop_bound_27.y == 0u, 1u);
                 if (!loop_init_24) {
-                    uint _e669 = j_3;
-                    j_3 = _e669 + 1u;
+                    uint _e675 = j_3;
+                    j_3 = _e675 + 1u;
                 }
                 loop_init_24 = false;
-                uint _e654 = j_3;
-                if (_e654 < K) {
+                uint _e660 = j_3;
+                if (_e660 < K) {
                 } else {
                     break;
                 }
                 {
-                    uint _e657 = j_3;
-                    uint _e659 = k_1;
-                    if (_e543.inner[_e657] == _e659) {
-                        uint _e661 = j_3;
-                        Shaded _e663 = shaded;
-                        metal::float3 _e664 = output_of(_e663);
-                        float _e665 = resample_target(_e664);
-                        visible.inner[_e661] = _e665 > 0.0;
+                    uint _e663 = j_3;
+                    uint _e665 = k_1;
+                    if (_e546.inner[_e663] == _e665) {
+                        uint _e667 = j_3;
+                        Shaded _e669 = shaded;
+                        metal::float3 _e670 = output_of(_e669);
+                        float _e671 = resample_target(_e670);
+                        visible.inner[_e667] = _e671 > 0.0;
                     }
                 }
             }
@@ -3262,45 +3264,45 @@ kernel void main_(
         if (metal::all(loop_bound_28 == uint2(0u))) { break; }
         loop_bound_28 -= uint2(loop_bound_28.y == 0u, 1u);
         if (!loop_init_25) {
-            uint _e714 = q_5;
-            q_5 = _e714 + 1u;
+            uint _e720 = q_5;
+            q_5 = _e720 + 1u;
         }
         loop_init_25 = false;
-        uint _e676 = q_5;
-        if (_e676 < K) {
+        uint _e682 = q_5;
+        if (_e682 < K) {
         } else {
             break;
         }
         {
-            uint _e681 = reuse.visibility;
-            if (!((_e681 == 0u))) {
-                uint _e687 = q_5;
-                bool _e689 = visible.inner[_e687];
-                local_15 = _e689;
+            uint _e687 = reuse.visibility;
+            if (!((_e687 == 0u))) {
+                uint _e693 = q_5;
+                bool _e695 = visible.inner[_e693];
+                local_15 = _e695;
             } else {
                 local_15 = true;
             }
             bool keep = local_15;
-            uint _e693 = next_index(pixel_1, view, reuse);
-            uint _e696 = q_5;
-            uint _e698 = q_5;
-            uint _e701 = kept.inner[_e698].light;
+            uint _e699 = next_index(pixel_1, view, reuse);
             uint _e702 = q_5;
-            uint _e705 = kept.inner[_e702].u;
-            uint _e706 = q_5;
-            float _e709 = kept.inner[_e706].w;
-            reuse_pixels[_e693].slots.inner[_e696] = ReuseSlot {_e701, _e705, keep ? _e709 : 0.0};
+            uint _e704 = q_5;
+            uint _e707 = kept.inner[_e704].light;
+            uint _e708 = q_5;
+            uint _e711 = kept.inner[_e708].u;
+            uint _e712 = q_5;
+            float _e715 = kept.inner[_e712].w;
+            reuse_pixels[_e699].slots.inner[_e702] = ReuseSlot {_e707, _e711, keep ? _e715 : 0.0};
         }
     }
-    uint _e717 = next_index(pixel_1, view, reuse);
-    metal::float3 _e720 = n;
-    Material _e721 = m;
-    float _e724 = reuse.max_confidence;
-    ReuseSurface _e726 = reuse_surface(x_20, _e720, _e721, metal::min(confidence, _e724));
-    reuse_pixels[_e717].surface = _e726;
-    metal::float3 _e729 = t.diffuse;
-    metal::float3 _e731 = t.specular;
-    uint _e733 = count;
-    out_tex.write(metal::float4(_e729 + _e731, static_cast<float>(_e733)), metal::uint2(texel_1));
+    uint _e723 = next_index(pixel_1, view, reuse);
+    metal::float3 _e726 = n;
+    Material _e727 = m;
+    float _e730 = reuse.max_confidence;
+    ReuseSurface _e732 = reuse_surface(x_20, _e726, _e727, metal::min(confidence, _e730));
+    reuse_pixels[_e723].surface = _e732;
+    metal::float3 _e735 = t.diffuse;
+    metal::float3 _e737 = t.specular;
+    uint _e739 = count;
+    out_tex.write(metal::float4(_e735 + _e737, static_cast<float>(_e739)), metal::uint2(texel_1));
     return;
 }

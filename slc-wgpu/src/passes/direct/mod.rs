@@ -689,16 +689,7 @@ impl DirectPass {
         uploads.push(&self.view, &view);
         if let Some(r) = &self.reuse {
             let (m, prev_eye) = r.previous.unwrap_or((Mat4::ZERO, Vec3::ZERO));
-            // The box grown by a little more than a float's rounding at
-            // its size, so a ray that grazes a moved triangle meets it.
-            let (moved, moved_min, moved_max) = match r.moved {
-                Moved::Nowhere => (0, Vec3::ZERO, Vec3::ZERO),
-                Moved::Inside(a, b) => {
-                    let pad = Vec3::splat(1e-4 * a.abs().max(b.abs()).max_element() + 1e-6);
-                    (1, a - pad, b + pad)
-                }
-                Moved::Everywhere => (2, Vec3::ZERO, Vec3::ZERO),
-            };
+            let (moved, moved_min, moved_max) = r.moved.encoded();
             let params = ReuseParams {
                 c0: m.x_axis,
                 c1: m.y_axis,
@@ -711,7 +702,7 @@ impl DirectPass {
                 visibility: r.settings.visibility as u32,
                 parity: r.parity as u32,
                 moved_min,
-                moved: moved as u32,
+                moved,
                 moved_max,
                 pad: 0,
             };
